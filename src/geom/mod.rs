@@ -1,0 +1,11 @@
+//! The geometry kernel: primitives on `glam::DVec2`, intersections as outcome enums,
+//! explicit tolerances. Knows nothing of plates, scenes or mechanisms.
+
+mod intersect;
+mod primitives;
+mod tolerance;
+
+pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};
+pub use primitives::{nearest, rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side};
+pub use tolerance::{InvalidTolerance, Tolerances};
+pub use glam::DVec2;

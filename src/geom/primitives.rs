@@ -1,0 +1,224 @@
+//! Lines, segments, rays, circles and arcs on `glam::DVec2`.
+
+use glam::DVec2;
+use std::f64::consts::TAU;
+
+/// An infinite straight line through `point` with unit `direction`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Line {
+    /// A point of the line.
+    pub point: DVec2,
+    /// Unit direction; the line is directed, so "left" and "right" have a meaning.
+    pub direction: DVec2,
+}
+
+impl Line {
+    /// The line through `point` along `direction`; `None` for a zero or non-finite direction.
+    pub fn new(point: DVec2, direction: DVec2) -> Option<Self> {
+        let direction = direction.try_normalize()?;
+        point.is_finite().then_some(Self { point, direction })
+    }
+
+    /// The directed line from `a` through `b`; `None` when the points coincide.
+    pub fn through(a: DVec2, b: DVec2) -> Option<Self> {
+        Self::new(a, b - a)
+    }
+
+    /// The point at parameter `t` (distance along the direction from `point`).
+    pub fn eval(&self, t: f64) -> DVec2 {
+        self.point + self.direction * t
+    }
+
+    /// Parameter of the foot of the perpendicular from `p`.
+    pub fn project_t(&self, p: DVec2) -> f64 {
+        (p - self.point).dot(self.direction)
+    }
+
+    /// Signed distance of `p` from the line: positive on the left.
+    pub fn signed_distance(&self, p: DVec2) -> f64 {
+        self.direction.perp_dot(p - self.point)
+    }
+
+    /// The parallel line shifted by `d` to the left (negative: to the right).
+    pub fn offset(&self, d: f64) -> Self {
+        Self { point: self.point + self.direction.perp() * d, direction: self.direction }
+    }
+
+    /// Angle of the direction, radians, counter-clockwise from +x.
+    pub fn angle(&self) -> f64 {
+        self.direction.y.atan2(self.direction.x)
+    }
+}
+
+/// A straight segment between two points.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Segment {
+    /// Start point.
+    pub from: DVec2,
+    /// End point.
+    pub to: DVec2,
+}
+
+impl Segment {
+    /// The segment from `from` to `to`.
+    pub fn new(from: DVec2, to: DVec2) -> Self {
+        Self { from, to }
+    }
+    /// Length.
+    pub fn length(&self) -> f64 {
+        self.from.distance(self.to)
+    }
+    /// The point at fraction `t` (0 = from, 1 = to).
+    pub fn eval(&self, t: f64) -> DVec2 {
+        self.from.lerp(self.to, t)
+    }
+    /// The carrying line, `None` for a zero-length segment.
+    pub fn to_line(&self) -> Option<Line> {
+        Line::through(self.from, self.to)
+    }
+}
+
+/// A half-line from `origin` along unit `direction`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ray {
+    /// Start point.
+    pub origin: DVec2,
+    /// Unit direction.
+    pub direction: DVec2,
+}
+
+impl Ray {
+    /// `None` for a zero direction.
+    pub fn new(origin: DVec2, direction: DVec2) -> Option<Self> {
+        Some(Self { origin, direction: direction.try_normalize()? })
+    }
+    /// The point at distance `t ≥ 0` from the origin.
+    pub fn eval(&self, t: f64) -> DVec2 {
+        self.origin + self.direction * t
+    }
+    /// The carrying line.
+    pub fn to_line(&self) -> Line {
+        Line { point: self.origin, direction: self.direction }
+    }
+}
+
+/// A circle (a compass setting: centre and radius ≥ 0).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Circle {
+    /// Centre.
+    pub center: DVec2,
+    /// Radius, ≥ 0.
+    pub radius: f64,
+}
+
+impl Circle {
+    /// `None` for a negative or non-finite radius or centre.
+    pub fn new(center: DVec2, radius: f64) -> Option<Self> {
+        (center.is_finite() && radius.is_finite() && radius >= 0.0)
+            .then_some(Self { center, radius })
+    }
+    /// The point at angle `a` (radians from +x).
+    pub fn eval(&self, a: f64) -> DVec2 {
+        self.center + DVec2::from_angle(a) * self.radius
+    }
+}
+
+/// A circular arc from `start` (radians) sweeping `sweep` radians (positive: counter-clockwise).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Arc {
+    /// Centre.
+    pub center: DVec2,
+    /// Radius.
+    pub radius: f64,
+    /// Start angle, radians from +x.
+    pub start: f64,
+    /// Signed sweep, radians.
+    pub sweep: f64,
+}
+
+impl Arc {
+    /// A short compass notch: an arc of `half_width` (length units) on each side of `through`.
+    pub fn notch(center: DVec2, through: DVec2, half_width: f64) -> Self {
+        let d = through - center;
+        let radius = d.length();
+        let half = if radius > 0.0 { (half_width / radius).min(std::f64::consts::PI) } else { 0.0 };
+        Self { center, radius, start: d.y.atan2(d.x) - half, sweep: 2.0 * half }
+    }
+
+    /// The arc between directions `from` and `to` around `center`, the short way.
+    pub fn between(center: DVec2, radius: f64, from: DVec2, to: DVec2) -> Self {
+        let start = from.y.atan2(from.x);
+        let sweep = from.perp_dot(to).atan2(from.dot(to));
+        Self { center, radius, start, sweep }
+    }
+
+    /// The point at fraction `t` of the sweep.
+    pub fn eval(&self, t: f64) -> DVec2 {
+        self.center + DVec2::from_angle(self.start + self.sweep * t) * self.radius
+    }
+
+    /// The end point.
+    pub fn end(&self) -> DVec2 {
+        self.eval(1.0)
+    }
+
+    /// True when the arc closes a full turn.
+    pub fn is_full(&self) -> bool {
+        self.sweep.abs() >= TAU
+    }
+}
+
+/// Which side of a directed line a point (or a compass solution) lies on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Side {
+    /// To the left (counter-clockwise) of the direction.
+    Left,
+    /// To the right (clockwise) of the direction.
+    Right,
+}
+
+impl Side {
+    /// The side of `p` relative to `line`; `None` when `p` is on it within `coincident`.
+    pub fn of(p: DVec2, line: &Line, coincident: f64) -> Option<Side> {
+        let d = line.signed_distance(p);
+        if d > coincident {
+            Some(Side::Left)
+        } else if d < -coincident {
+            Some(Side::Right)
+        } else {
+            None
+        }
+    }
+    /// The other side.
+    pub fn flip(self) -> Self {
+        match self {
+            Side::Left => Side::Right,
+            Side::Right => Side::Left,
+        }
+    }
+}
+
+/// Rotate `v` by `angle` radians counter-clockwise.
+pub fn rotate(v: DVec2, angle: f64) -> DVec2 {
+    DVec2::from_angle(angle).rotate(v)
+}
+
+/// Wrap an angle to (−π, π].
+pub fn wrap_pi(a: f64) -> f64 {
+    let w = a.rem_euclid(TAU);
+    if w > std::f64::consts::PI {
+        w - TAU
+    } else {
+        w
+    }
+}
+
+/// The index of the candidate nearest to `previous` (selection of a compass solution by
+/// continuity with the previous position). `None` for an empty slice.
+pub fn nearest(candidates: &[DVec2], previous: DVec2) -> Option<usize> {
+    candidates
+        .iter()
+        .enumerate()
+        .min_by(|a, b| a.1.distance_squared(previous).total_cmp(&b.1.distance_squared(previous)))
+        .map(|(i, _)| i)
+}

@@ -1,0 +1,15 @@
+//! `tmm` — the graphical methods of the Theory of Mechanisms and Machines (ТММ) as a
+//! geometric construction engine.
+//!
+//! Every procedure exists three times: a **construction** carried out step by step through the
+//! recorder ([`construct`]), an independent **analytic** twin, and a **check** comparing the two.
+//! Plates ([`plate`]) draw exactly what the recorder recorded, at the textbook's μ scales.
+//!
+//! Module map (dependencies point one way):
+//! `geom` ← `construct`, `scale` ← `linkage` ← `scene`, `plate` ← the `tmm` binary.
+
+pub mod construct;
+pub mod geom;
+pub mod scale;
+pub mod linkage;
+pub mod scene;

@@ -1,0 +1,291 @@
+//! The validated mechanism model: a crank plus class-II Assur groups (dyads) of the five kinds,
+//! attached in order to known points and guides. All lengths in metres, angles in radians
+//! (counter-clockwise from +x), the frame's y axis up.
+
+use crate::geom::DVec2;
+
+/// A named point fixed to the frame (a pivot, or a point a guide passes through).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FixedPoint {
+    /// The textbook letter (`A`, `C`, `O`).
+    pub name: String,
+    /// Position, m.
+    pub at: DVec2,
+}
+
+/// Sense of rotation of the crank.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Sense {
+    /// Counter-clockwise (positive angles).
+    CounterClockwise,
+    /// Clockwise.
+    Clockwise,
+}
+
+impl Sense {
+    /// +1 for counter-clockwise, −1 for clockwise.
+    pub fn sign(self) -> f64 {
+        match self {
+            Sense::CounterClockwise => 1.0,
+            Sense::Clockwise => -1.0,
+        }
+    }
+}
+
+/// The driving link: a crank turning about a fixed pivot with constant angular speed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Crank {
+    /// Link number (1 by convention).
+    pub link: u32,
+    /// Name of the fixed pivot (a [`FixedPoint`]).
+    pub centre: String,
+    /// Name of the crank pin.
+    pub pin: String,
+    /// Crank length, m (> 0).
+    pub length: f64,
+    /// |ω₁|, rad/s (> 0).
+    pub omega: f64,
+    /// Sense of rotation.
+    pub sense: Sense,
+}
+
+/// A direction: fixed to the frame, or carried by a known link (the direction from one known
+/// point to another, turned by `angle`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Dir {
+    /// A frame direction, radians.
+    Fixed(f64),
+    /// The direction `from → to` turned counter-clockwise by `angle` radians.
+    Along {
+        /// Known point.
+        from: String,
+        /// Known point on the same link.
+        to: String,
+        /// Extra turn, radians.
+        angle: f64,
+    },
+}
+
+/// A guide line: through a known point along a direction, shifted `offset` m to its left.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Guide {
+    /// A known point of the link that carries the guide.
+    pub through: String,
+    /// Its direction.
+    pub dir: Dir,
+    /// Shift to the left of the direction, m.
+    pub offset: f64,
+}
+
+/// Which of the two assemblies of a dyad to take at the first position; later positions
+/// follow by continuity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Branch {
+    /// Left of the directed line between the two arc centres (RRR).
+    Left,
+    /// Right of that line (RRR).
+    Right,
+    /// Farther along the guide's direction (RRP).
+    Forward,
+    /// Farther back along the guide's direction (RRP).
+    Backward,
+}
+
+/// The five kinds of class-II Assur groups, by their pairs outer–inner–outer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DyadKind {
+    /// Kind 1, ВВВ.
+    Rrr,
+    /// Kind 2, ВВП.
+    Rrp,
+    /// Kind 3, ВПВ.
+    Rpr,
+    /// Kind 4, ПВП.
+    Prp,
+    /// Kind 5, ВПП.
+    Rpp,
+}
+
+impl DyadKind {
+    /// The kind number of the Russian/Ukrainian textbooks (вид 1…5).
+    pub fn number(self) -> u32 {
+        match self {
+            DyadKind::Rrr => 1,
+            DyadKind::Rrp => 2,
+            DyadKind::Rpr => 3,
+            DyadKind::Prp => 4,
+            DyadKind::Rpp => 5,
+        }
+    }
+    /// Latin pair letters (`RRP`).
+    pub fn letters(self) -> &'static str {
+        match self {
+            DyadKind::Rrr => "RRR",
+            DyadKind::Rrp => "RRP",
+            DyadKind::Rpr => "RPR",
+            DyadKind::Prp => "PRP",
+            DyadKind::Rpp => "RPP",
+        }
+    }
+    /// Cyrillic pair letters (`ВВП`).
+    pub fn letters_ru(self) -> &'static str {
+        match self {
+            DyadKind::Rrr => "ВВВ",
+            DyadKind::Rrp => "ВВП",
+            DyadKind::Rpr => "ВПВ",
+            DyadKind::Prp => "ПВП",
+            DyadKind::Rpp => "ВПП",
+        }
+    }
+}
+
+/// The geometry of a dyad. Its two links are `i` (the first listed) and `j`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Dyad {
+    /// Kind 1: link i pinned at known `a`, link j pinned at known `b`, pinned together at `joint`.
+    Rrr {
+        /// Known point of link i's outer pair.
+        a: String,
+        /// |a joint|, m.
+        la: f64,
+        /// Known point of link j's outer pair.
+        b: String,
+        /// |b joint|, m.
+        lb: f64,
+        /// The new joint.
+        joint: String,
+        /// Assembly at the first position (Left or Right of a → b).
+        branch: Branch,
+    },
+    /// Kind 2: link i pinned at known `a` and at `joint`; slider j carries `joint` along `guide`.
+    Rrp {
+        /// Known point.
+        a: String,
+        /// |a joint|, m.
+        la: f64,
+        /// The line the joint moves on.
+        guide: Guide,
+        /// The new joint.
+        joint: String,
+        /// Assembly at the first position (Forward or Backward along the guide).
+        branch: Branch,
+    },
+    /// Kind 3: block i pinned at known `a` slides along link j, which turns about known `c`;
+    /// j's slide line passes at `offset` m to the left of `c` (0: through `c`).
+    Rpr {
+        /// Known point (the block's pin).
+        a: String,
+        /// Known pivot of link j.
+        c: String,
+        /// Offset of the slide line from `c`, m.
+        offset: f64,
+    },
+    /// Kind 4: link i slides along `guide_i`, link j along `guide_j`; they are pinned at `joint`.
+    Prp {
+        /// Guide of link i (the line `joint` moves along relative to it).
+        guide_i: Guide,
+        /// Guide of link j.
+        guide_j: Guide,
+        /// The new joint.
+        joint: String,
+    },
+    /// Kind 5: block i pinned at known `a` slides in link j along `slide`; link j translates
+    /// along `guide`; `joint` is where the slide line through `a` meets the guide.
+    Rpp {
+        /// Known point (the block's pin).
+        a: String,
+        /// Direction of the inner sliding pair.
+        slide: Dir,
+        /// The guide of link j.
+        guide: Guide,
+        /// The new point on link j.
+        joint: String,
+    },
+}
+
+impl Dyad {
+    /// The kind.
+    pub fn kind(&self) -> DyadKind {
+        match self {
+            Dyad::Rrr { .. } => DyadKind::Rrr,
+            Dyad::Rrp { .. } => DyadKind::Rrp,
+            Dyad::Rpr { .. } => DyadKind::Rpr,
+            Dyad::Prp { .. } => DyadKind::Prp,
+            Dyad::Rpp { .. } => DyadKind::Rpp,
+        }
+    }
+}
+
+/// A further point of a moving link, in the link's frame: `along` the link's direction from
+/// its origin and `across` to the left. Link frames: crank — origin at the centre, along the
+/// pin; RRR — each link from its outer pivot toward the joint; RRP — link i from `a` to the
+/// joint, slider j at the joint along the guide; RPR — both links along the slide line, i at
+/// `a`, j at `c`; PRP — both at the joint along their guides; RPP — block i at `a` along the
+/// slide, link j at the joint along the guide.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinkPoint {
+    /// Name (`D`, `S_3`).
+    pub name: String,
+    /// Link number.
+    pub link: u32,
+    /// Distance along the link frame, m.
+    pub along: f64,
+    /// Distance to the left, m.
+    pub across: f64,
+}
+
+/// One Assur group of class II attached to the mechanism.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Group {
+    /// Link numbers i, j.
+    pub links: [u32; 2],
+    /// Geometry.
+    pub dyad: Dyad,
+}
+
+/// A kinematic pair that repeats a constraint already imposed (a passive, redundant pair).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RedundantPair {
+    /// Its name (`E′`).
+    pub name: String,
+    /// Revolute (`false`) or prismatic (`true`).
+    pub prismatic: bool,
+    /// The two links it joins.
+    pub links: [u32; 2],
+    /// Why it is there (shown on the plate).
+    pub reason: String,
+}
+
+/// What moves at the output: defines the extreme (dead) positions and the working stroke.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Output {
+    /// A rocker: the angle of link `link` (its frame direction).
+    Rocker {
+        /// Link number.
+        link: u32,
+    },
+    /// A slider point moving along a frame direction.
+    Slider {
+        /// The point.
+        point: String,
+        /// Direction of travel, radians.
+        dir: f64,
+    },
+}
+
+/// A whole mechanism.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mechanism {
+    /// Fixed points of the frame.
+    pub fixed: Vec<FixedPoint>,
+    /// The driving link.
+    pub crank: Crank,
+    /// Assur groups in order of attachment.
+    pub groups: Vec<Group>,
+    /// Further points of links (centres of mass, rocker ends).
+    pub points: Vec<LinkPoint>,
+    /// Redundant pairs, explained.
+    pub redundant: Vec<RedundantPair>,
+    /// The output whose extremes define the working stroke; the first one listed decides.
+    pub outputs: Vec<Output>,
+}

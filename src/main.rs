@@ -1,0 +1,2 @@
+//! The `tmm` command line (placeholder until the CLI lands).
+fn main() {}

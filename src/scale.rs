@@ -1,0 +1,251 @@
+//! μ scales: physical units per drawing millimetre, with their unit, chosen the textbook way
+//! and captioned per language.
+
+use std::fmt::Write as _;
+
+/// The label language of a plate.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Lang {
+    /// Russian (the textbooks' language; default).
+    #[default]
+    Ru,
+    /// Ukrainian.
+    Uk,
+    /// English.
+    En,
+}
+
+impl Lang {
+    /// Parse `ru`, `uk` or `en`.
+    pub fn parse(s: &str) -> Option<Self> {
+        match s {
+            "ru" => Some(Lang::Ru),
+            "uk" => Some(Lang::Uk),
+            "en" => Some(Lang::En),
+            _ => None,
+        }
+    }
+    /// Decimal separator: a comma in ru/uk, a point in en.
+    pub fn decimal(self) -> char {
+        match self {
+            Lang::En => '.',
+            _ => ',',
+        }
+    }
+    /// Pick the text for this language.
+    pub fn pick<'a>(self, ru: &'a str, uk: &'a str, en: &'a str) -> &'a str {
+        match self {
+            Lang::Ru => ru,
+            Lang::Uk => uk,
+            Lang::En => en,
+        }
+    }
+}
+
+/// What a scale measures, which fixes its SI unit per millimetre.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Quantity {
+    /// Length, m/mm (μ_l).
+    Length,
+    /// Velocity, (m/s)/mm (μ_v).
+    Velocity,
+    /// Acceleration, (m/s²)/mm (μ_a).
+    Acceleration,
+    /// Angle, rad/mm (μ_φ).
+    Angle,
+    /// Time, s/mm (μ_t).
+    Time,
+    /// Force, N/mm (μ_F).
+    Force,
+    /// Moment, N·m/mm (μ_M).
+    Moment,
+    /// Work or energy, J/mm (μ_A).
+    Work,
+    /// Moment of inertia, kg·m²/mm (μ_J).
+    Inertia,
+    /// Angular velocity, (rad/s)/mm (μ_ω).
+    AngularVelocity,
+    /// Angular acceleration, (rad/s²)/mm (μ_ε).
+    AngularAcceleration,
+}
+
+impl Quantity {
+    /// Unit of the scale as written in captions, per language. `/мм` is the drawing millimetre.
+    pub fn unit(self, lang: Lang) -> &'static str {
+        use Quantity::*;
+        match (self, lang) {
+            (Length, Lang::En) => "m/mm",
+            (Length, _) => "м/мм",
+            (Velocity, Lang::En) => "m/(s·mm)",
+            (Velocity, _) => "м/(с·мм)",
+            (Acceleration, Lang::En) => "m/(s^2·mm)",
+            (Acceleration, _) => "м/(с^2·мм)",
+            (Angle, Lang::En) => "rad/mm",
+            (Angle, _) => "рад/мм",
+            (Time, Lang::En) => "s/mm",
+            (Time, _) => "с/мм",
+            (Force, Lang::En) => "N/mm",
+            (Force, _) => "Н/мм",
+            (Moment, Lang::En) => "N·m/mm",
+            (Moment, _) => "Н·м/мм",
+            (Work, Lang::En) => "J/mm",
+            (Work, Lang::Ru) => "Дж/мм",
+            (Work, Lang::Uk) => "Дж/мм",
+            (Inertia, Lang::En) => "kg·m^2/mm",
+            (Inertia, _) => "кг·м^2/мм",
+            (AngularVelocity, Lang::En) => "rad/(s·mm)",
+            (AngularVelocity, _) => "рад/(с·мм)",
+            (AngularAcceleration, Lang::En) => "rad/(s^2·mm)",
+            (AngularAcceleration, _) => "рад/(с^2·мм)",
+        }
+    }
+    /// The customary index of μ (`l`, `v`, `a`, `φ`, …).
+    pub fn symbol(self) -> &'static str {
+        use Quantity::*;
+        match self {
+            Length => "l",
+            Velocity => "v",
+            Acceleration => "a",
+            Angle => "φ",
+            Time => "t",
+            Force => "F",
+            Moment => "M",
+            Work => "A",
+            Inertia => "J",
+            AngularVelocity => "ω",
+            AngularAcceleration => "ε",
+        }
+    }
+}
+
+/// A drawing scale μ: `value` SI units of `quantity` per drawing millimetre.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scale {
+    /// SI units per mm; finite and > 0.
+    value: f64,
+    /// What is measured.
+    pub quantity: Quantity,
+}
+
+/// The textbook mantissas of a round scale: 1, 2, 2.5, 4, 5 × 10ⁿ.
+const ROUND_MANTISSAS: [f64; 6] = [1.0, 2.0, 2.5, 4.0, 5.0, 10.0];
+
+impl Scale {
+    /// A scale of `value` SI units per mm; `None` unless finite and > 0.
+    pub fn new(value: f64, quantity: Quantity) -> Option<Self> {
+        (value.is_finite() && value > 0.0).then_some(Self { value, quantity })
+    }
+
+    /// The round scale a student would choose so that `physical` is drawn close to, and not
+    /// longer than, `preferred_mm`: the smallest value of the 1–2–2.5–4–5 series that is ≥
+    /// `physical / preferred_mm`. `None` for non-positive or non-finite inputs.
+    pub fn round_for(physical: f64, preferred_mm: f64, quantity: Quantity) -> Option<Self> {
+        let exact = physical.abs() / preferred_mm;
+        if !(exact.is_finite() && exact > 0.0) {
+            return None;
+        }
+        let decade = 10f64.powf(exact.log10().floor());
+        let m = exact / decade;
+        // 1e-9 relative slack so that an exact round value stays itself.
+        let mant = ROUND_MANTISSAS.iter().copied().find(|&r| r >= m * (1.0 - 1e-9))?;
+        Self::new(round_sig(mant * decade), quantity)
+    }
+
+    /// SI units per mm.
+    pub fn value(&self) -> f64 {
+        self.value
+    }
+    /// Drawing millimetres for a physical value.
+    pub fn to_mm(&self, physical: f64) -> f64 {
+        physical / self.value
+    }
+    /// Physical value of a drawn length.
+    pub fn to_physical(&self, mm: f64) -> f64 {
+        mm * self.value
+    }
+
+    /// The caption in label markup: `μ_{l} = 0,0025 м/мм` (ru/uk), `μ_{l} = 0.0025 m/mm` (en).
+    pub fn caption(&self, lang: Lang) -> String {
+        format!(
+            "μ_{{{}}} = {} {}",
+            self.quantity.symbol(),
+            format_number(self.value, lang),
+            self.quantity.unit(lang)
+        )
+    }
+}
+
+/// Round to 12 significant digits (removes the binary noise of `mant * 10^n`).
+fn round_sig(x: f64) -> f64 {
+    let s = format!("{x:.11e}");
+    s.parse().unwrap_or(x)
+}
+
+/// Format a number the way the textbook writes it: up to 6 significant digits, no trailing
+/// zeros, the language's decimal separator, a true minus sign.
+pub fn format_number(x: f64, lang: Lang) -> String {
+    format_sig(x, 6, lang)
+}
+
+/// Format with at most `sig` significant digits (trailing zeros removed).
+pub fn format_sig(x: f64, sig: usize, lang: Lang) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return if x.is_finite() { "0".into() } else { format!("{x}") };
+    }
+    let mag = x.abs().log10().floor() as i32;
+    let decimals = (sig as i32 - 1 - mag).clamp(0, 15) as usize;
+    let mut s = format!("{:.*}", decimals, x.abs());
+    if s.contains('.') {
+        while s.ends_with('0') {
+            s.pop();
+        }
+        if s.ends_with('.') {
+            s.pop();
+        }
+    }
+    let mut out = String::new();
+    if x < 0.0 && s.chars().any(|c| c.is_ascii_digit() && c != '0') {
+        out.push('−');
+    }
+    let _ = write!(out, "{}", s.replace('.', &lang.decimal().to_string()));
+    out
+}
+
+/// Format with a fixed number of decimals, the language's separator and a true minus sign.
+pub fn format_fixed(x: f64, decimals: usize, lang: Lang) -> String {
+    let s = format!("{:.*}", decimals, x);
+    let s = if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+        s[1..].to_string()
+    } else {
+        s
+    };
+    s.replace('-', "−").replace('.', &lang.decimal().to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn round_scale_follows_the_textbook_series() {
+        // Crank 0.14 m drawn 56 mm: exactly 0.0025.
+        let s = Scale::round_for(0.14, 56.0, Quantity::Length).unwrap();
+        assert_eq!(s.value(), 0.0025);
+        // 2.199 m/s drawn at most 70 mm → 0.0314 → 0.04.
+        let s = Scale::round_for(2.199, 70.0, Quantity::Velocity).unwrap();
+        assert_eq!(s.value(), 0.04);
+        assert_eq!(Scale::round_for(0.71, 300.0, Quantity::Length).unwrap().value(), 0.0025);
+        assert!(Scale::round_for(0.0, 50.0, Quantity::Length).is_none());
+        assert!(Scale::round_for(f64::NAN, 50.0, Quantity::Length).is_none());
+    }
+
+    #[test]
+    fn captions_per_language() {
+        let s = Scale::new(0.0025, Quantity::Length).unwrap();
+        assert_eq!(s.caption(Lang::Ru), "μ_{l} = 0,0025 м/мм");
+        assert_eq!(s.caption(Lang::En), "μ_{l} = 0.0025 m/mm");
+        assert_eq!(format_number(-1.5, Lang::Ru), "−1,5");
+        assert_eq!(format_fixed(-0.0001, 2, Lang::En), "0.00");
+        assert_eq!(format_fixed(38.0016, 2, Lang::Ru), "38,00");
+    }
+}

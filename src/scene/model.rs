@@ -1,0 +1,82 @@
+//! A validated scene: everything downstream may trust (finite, positive where required).
+
+use crate::linkage::Mechanism;
+use crate::scale::Scale;
+use std::path::PathBuf;
+
+/// Where the numbered positions start.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Start {
+    /// Position 1 is the extreme position that begins the working (slower) stroke, found exactly.
+    WorkingStroke,
+    /// Position 1 at this crank angle, radians counter-clockwise from +x.
+    Angle(f64),
+}
+
+/// The positions to construct.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PositionSpec {
+    /// Number of equally spaced crank positions (≥ 1; 12 by default).
+    pub count: u32,
+    /// Where position 1 is.
+    pub start: Start,
+    /// Add the other extreme position (labelled with a prime, e.g. `8′`).
+    pub other_extreme: bool,
+}
+
+/// The plates a scene can ask for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum PlateKind {
+    /// "План положений": structural scheme, positions, trajectories, extremes.
+    Positions,
+}
+
+impl PlateKind {
+    /// File stem of the plate (`positions`).
+    pub fn stem(self) -> &'static str {
+        match self {
+            PlateKind::Positions => "positions",
+        }
+    }
+    /// All kinds, for `tmm list`.
+    pub const ALL: [PlateKind; 1] = [PlateKind::Positions];
+
+    /// Parse a stem.
+    pub fn parse(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|k| k.stem() == s)
+    }
+}
+
+/// Text of the title block (основная надпись), as the student fills it.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct TitleInfo {
+    /// Name of the task / machine (`Поперечно-строгальный станок`).
+    pub title: String,
+    /// Designation (`ТММ.КП.000`).
+    pub designation: String,
+    /// Student (Разраб.).
+    pub author: String,
+    /// Instructor (Пров.).
+    pub checked: String,
+    /// Institution / group.
+    pub organisation: String,
+}
+
+/// A validated scene file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    /// The file it came from.
+    pub path: PathBuf,
+    /// The file stem (`shaper`): the output folder name.
+    pub stem: String,
+    /// Title block text.
+    pub title: TitleInfo,
+    /// The mechanism.
+    pub mechanism: Mechanism,
+    /// μ_l of the plan of positions; `None`: chosen the textbook way from the crank length.
+    pub scale_l: Option<Scale>,
+    /// The positions.
+    pub positions: PositionSpec,
+    /// The plates wanted, in file order.
+    pub plates: Vec<PlateKind>,
+}
