@@ -1,8 +1,53 @@
-//! Linkages: structure (mobility, Assur groups), dyads of the five kinds, positions.
+//! Linkages: structure (mobility, Assur groups), dyads of the five kinds, positions as
+//! compass constructions with their analytic twin, extreme positions.
 
+mod analytic;
+mod construction;
+mod extremes;
 mod model;
+mod program;
+mod structure;
+#[cfg(test)]
+mod tests;
 
+pub use analytic::{Pose, Unassembled};
+pub use construction::{Built, Failed};
+pub use extremes::{Extremes, OutputCoord};
 pub use model::{
     Branch, Crank, Dir, Dyad, DyadKind, FixedPoint, Group, Guide, LinkPoint, Mechanism, Output,
     RedundantPair, Sense,
 };
+pub use program::{Op, PDir, PDyad, PGuide, Program};
+pub use structure::{PairInfo, Structure};
+
+use thiserror::Error;
+
+/// Why a linkage task cannot be carried out.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum LinkageError {
+    /// The model itself is inconsistent (unknown names, reused links).
+    #[error("mechanism: {0}")]
+    Model(String),
+    /// A group cannot be assembled at a position.
+    #[error(
+        "position {position} (φ₁ = {phi_deg:.4}°): group {group} cannot be assembled: {detail}"
+    )]
+    CannotAssemble {
+        /// The position's label.
+        position: String,
+        /// Crank angle, degrees.
+        phi_deg: f64,
+        /// The group (`2 (RRR, links 2, 3)`).
+        group: String,
+        /// What fails, with its numbers.
+        detail: String,
+    },
+    /// The output has no extreme positions (it turns fully or does not move).
+    #[error("output {output}: {detail}")]
+    NoExtremes {
+        /// The output.
+        output: String,
+        /// Explanation.
+        detail: String,
+    },
+}

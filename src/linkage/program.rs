@@ -1,0 +1,341 @@
+//! A mechanism compiled into an indexed program: names resolved once, so solving a position
+//! is a straight run over the operations with no lookups.
+
+use super::model::{Branch, Dir, Dyad, DyadKind, Guide, Mechanism};
+use super::LinkageError;
+use crate::geom::DVec2;
+use std::collections::HashMap;
+
+/// A direction in the program.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PDir {
+    /// Frame direction, radians.
+    Fixed(f64),
+    /// Direction of `from → to` turned by `angle`.
+    Along {
+        /// Point index.
+        from: usize,
+        /// Point index.
+        to: usize,
+        /// Extra turn, radians.
+        angle: f64,
+    },
+}
+
+/// A guide line in the program.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PGuide {
+    /// Point index the line passes through (before the offset).
+    pub through: usize,
+    /// Its direction.
+    pub dir: PDir,
+    /// Shift to the left, m.
+    pub offset: f64,
+}
+
+impl PGuide {
+    /// True when the guide belongs to the frame.
+    pub fn is_fixed(&self, fixed_count: usize) -> bool {
+        self.through < fixed_count && matches!(self.dir, PDir::Fixed(_))
+    }
+}
+
+/// A dyad with resolved indices. Fields as in [`Dyad`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[allow(missing_docs)]
+pub enum PDyad {
+    Rrr {
+        a: usize,
+        la: f64,
+        b: usize,
+        lb: f64,
+        joint: usize,
+        branch: Branch,
+    },
+    Rrp {
+        a: usize,
+        la: f64,
+        guide: PGuide,
+        joint: usize,
+        branch: Branch,
+    },
+    Rpr {
+        a: usize,
+        c: usize,
+        offset: f64,
+    },
+    Prp {
+        gi: PGuide,
+        gj: PGuide,
+        joint: usize,
+    },
+    Rpp {
+        a: usize,
+        slide: PDir,
+        guide: PGuide,
+        joint: usize,
+    },
+}
+
+impl PDyad {
+    /// The kind.
+    pub fn kind(&self) -> DyadKind {
+        match self {
+            PDyad::Rrr { .. } => DyadKind::Rrr,
+            PDyad::Rrp { .. } => DyadKind::Rrp,
+            PDyad::Rpr { .. } => DyadKind::Rpr,
+            PDyad::Prp { .. } => DyadKind::Prp,
+            PDyad::Rpp { .. } => DyadKind::Rpp,
+        }
+    }
+    /// The point the dyad creates, if any (RPR creates none).
+    pub fn joint(&self) -> Option<usize> {
+        match *self {
+            PDyad::Rrr { joint, .. }
+            | PDyad::Rrp { joint, .. }
+            | PDyad::Prp { joint, .. }
+            | PDyad::Rpp { joint, .. } => Some(joint),
+            PDyad::Rpr { .. } => None,
+        }
+    }
+}
+
+/// One operation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Op {
+    /// Place a further point of a known link.
+    Point {
+        /// Index of the new point.
+        idx: usize,
+        /// Its link.
+        link: u32,
+        /// Along the link frame, m.
+        along: f64,
+        /// Across (left), m.
+        across: f64,
+    },
+    /// Attach a dyad (group number `group` in file order).
+    Dyad {
+        /// Group index.
+        group: usize,
+        /// Links i, j.
+        links: [u32; 2],
+        /// The geometry.
+        dyad: PDyad,
+    },
+}
+
+/// The compiled mechanism.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Program {
+    /// Point names by index: fixed points first, then the crank pin, then in order of creation.
+    pub names: Vec<String>,
+    /// Positions of the fixed points (indices `0..fixed.len()`), m.
+    pub fixed: Vec<DVec2>,
+    /// Crank centre index.
+    pub centre: usize,
+    /// Crank pin index.
+    pub pin: usize,
+    /// Crank length, m.
+    pub crank_length: f64,
+    /// Crank link number.
+    pub crank_link: u32,
+    /// Operations after the crank.
+    pub ops: Vec<Op>,
+    /// Largest link number + 1.
+    pub link_count: usize,
+}
+
+impl Program {
+    /// Index of a named point.
+    pub fn index(&self, name: &str) -> Option<usize> {
+        self.names.iter().position(|n| n == name)
+    }
+
+    /// Compile a mechanism, checking every name and link reference in attachment order.
+    pub fn compile(m: &Mechanism) -> Result<Self, LinkageError> {
+        let mut names: Vec<String> = Vec::new();
+        let mut known: HashMap<String, usize> = HashMap::new();
+        let add = |names: &mut Vec<String>,
+                   known: &mut HashMap<String, usize>,
+                   n: &str|
+         -> Result<usize, LinkageError> {
+            if known.contains_key(n) {
+                return Err(LinkageError::Model(format!("point `{n}` is defined twice")));
+            }
+            names.push(n.to_string());
+            known.insert(n.to_string(), names.len() - 1);
+            Ok(names.len() - 1)
+        };
+        let fixed: Vec<DVec2> = m.fixed.iter().map(|f| f.at).collect();
+        for f in &m.fixed {
+            add(&mut names, &mut known, &f.name)?;
+        }
+        let look =
+            |known: &HashMap<String, usize>, n: &str, what: &str| -> Result<usize, LinkageError> {
+                known.get(n).copied().ok_or_else(|| {
+                    LinkageError::Model(format!("{what}: point `{n}` is not known at this stage"))
+                })
+            };
+        let centre = look(&known, &m.crank.centre, "crank centre")?;
+        if centre >= fixed.len() {
+            return Err(LinkageError::Model(format!(
+                "crank centre `{}` must be a fixed point",
+                m.crank.centre
+            )));
+        }
+        let pin = add(&mut names, &mut known, &m.crank.pin)?;
+        let mut links_known = vec![m.crank.link];
+        let mut ops = Vec::new();
+        let mut placed = vec![false; m.points.len()];
+        let mut place_points = |links_known: &[u32],
+                                names: &mut Vec<String>,
+                                known: &mut HashMap<String, usize>,
+                                ops: &mut Vec<Op>|
+         -> Result<(), LinkageError> {
+            for (k, p) in m.points.iter().enumerate() {
+                if !placed[k] && links_known.contains(&p.link) {
+                    placed[k] = true;
+                    let idx = add(names, known, &p.name)?;
+                    ops.push(Op::Point {
+                        idx,
+                        link: p.link,
+                        along: p.along,
+                        across: p.across,
+                    });
+                }
+            }
+            Ok(())
+        };
+        place_points(&links_known, &mut names, &mut known, &mut ops)?;
+        for (gi, g) in m.groups.iter().enumerate() {
+            let what = format!(
+                "group {} ({}, links {}, {})",
+                gi + 1,
+                g.dyad.kind().letters(),
+                g.links[0],
+                g.links[1]
+            );
+            let pdir = |known: &HashMap<String, usize>, d: &Dir| -> Result<PDir, LinkageError> {
+                Ok(match d {
+                    Dir::Fixed(a) => PDir::Fixed(*a),
+                    Dir::Along { from, to, angle } => PDir::Along {
+                        from: look(known, from, &what)?,
+                        to: look(known, to, &what)?,
+                        angle: *angle,
+                    },
+                })
+            };
+            let pguide =
+                |known: &HashMap<String, usize>, g: &Guide| -> Result<PGuide, LinkageError> {
+                    Ok(PGuide {
+                        through: look(known, &g.through, &what)?,
+                        dir: pdir(known, &g.dir)?,
+                        offset: g.offset,
+                    })
+                };
+            let dyad = match &g.dyad {
+                Dyad::Rrr {
+                    a,
+                    la,
+                    b,
+                    lb,
+                    joint,
+                    branch,
+                } => {
+                    let (a, b) = (look(&known, a, &what)?, look(&known, b, &what)?);
+                    PDyad::Rrr {
+                        a,
+                        la: *la,
+                        b,
+                        lb: *lb,
+                        joint: add(&mut names, &mut known, joint)?,
+                        branch: *branch,
+                    }
+                }
+                Dyad::Rrp {
+                    a,
+                    la,
+                    guide,
+                    joint,
+                    branch,
+                } => {
+                    let (a, guide) = (look(&known, a, &what)?, pguide(&known, guide)?);
+                    PDyad::Rrp {
+                        a,
+                        la: *la,
+                        guide,
+                        joint: add(&mut names, &mut known, joint)?,
+                        branch: *branch,
+                    }
+                }
+                Dyad::Rpr { a, c, offset } => PDyad::Rpr {
+                    a: look(&known, a, &what)?,
+                    c: look(&known, c, &what)?,
+                    offset: *offset,
+                },
+                Dyad::Prp {
+                    guide_i,
+                    guide_j,
+                    joint,
+                } => {
+                    let (gi, gj) = (pguide(&known, guide_i)?, pguide(&known, guide_j)?);
+                    PDyad::Prp {
+                        gi,
+                        gj,
+                        joint: add(&mut names, &mut known, joint)?,
+                    }
+                }
+                Dyad::Rpp {
+                    a,
+                    slide,
+                    guide,
+                    joint,
+                } => {
+                    let (a, slide, guide) = (
+                        look(&known, a, &what)?,
+                        pdir(&known, slide)?,
+                        pguide(&known, guide)?,
+                    );
+                    PDyad::Rpp {
+                        a,
+                        slide,
+                        guide,
+                        joint: add(&mut names, &mut known, joint)?,
+                    }
+                }
+            };
+            for l in g.links {
+                if l == 0 || links_known.contains(&l) {
+                    return Err(LinkageError::Model(format!(
+                        "{what}: link {l} is the frame or already used"
+                    )));
+                }
+                links_known.push(l);
+            }
+            ops.push(Op::Dyad {
+                group: gi,
+                links: g.links,
+                dyad,
+            });
+            place_points(&links_known, &mut names, &mut known, &mut ops)?;
+        }
+        if let Some(k) = placed.iter().position(|p| !p) {
+            return Err(LinkageError::Model(format!(
+                "point `{}` is on link {}, which no group defines",
+                m.points[k].name, m.points[k].link
+            )));
+        }
+        let link_count = links_known.iter().copied().max().unwrap_or(1) as usize + 1;
+        Ok(Self {
+            names,
+            fixed,
+            centre,
+            pin,
+            crank_length: m.crank.length,
+            crank_link: m.crank.link,
+            ops,
+            link_count,
+        })
+    }
+}

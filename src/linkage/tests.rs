@@ -1,0 +1,148 @@
+//! Unit tests of the linkage core on hand-built mechanisms.
+
+use super::*;
+use crate::construct::{Drafting, Recorder};
+use crate::geom::{DVec2, Tolerances};
+use crate::scale::{Quantity, Scale};
+
+/// The shaper of seed 000 (§000.3 geometry), built directly.
+pub(crate) fn shaper() -> Mechanism {
+    Mechanism {
+        fixed: vec![
+            FixedPoint {
+                name: "A".into(),
+                at: DVec2::new(0.0, 0.43),
+            },
+            FixedPoint {
+                name: "C".into(),
+                at: DVec2::ZERO,
+            },
+        ],
+        crank: Crank {
+            link: 1,
+            centre: "A".into(),
+            pin: "B".into(),
+            length: 0.14,
+            omega: 5.0 * std::f64::consts::PI,
+            sense: Sense::Clockwise,
+        },
+        groups: vec![
+            Group {
+                links: [2, 3],
+                dyad: Dyad::Rpr {
+                    a: "B".into(),
+                    c: "C".into(),
+                    offset: 0.0,
+                },
+            },
+            Group {
+                links: [4, 5],
+                dyad: Dyad::Rpp {
+                    a: "D".into(),
+                    slide: Dir::Fixed(std::f64::consts::FRAC_PI_2),
+                    guide: Guide {
+                        through: "C".into(),
+                        dir: Dir::Fixed(0.0),
+                        offset: 0.745,
+                    },
+                    joint: "E".into(),
+                },
+            },
+        ],
+        points: vec![
+            LinkPoint {
+                name: "D".into(),
+                link: 3,
+                along: 0.71,
+                across: 0.0,
+            },
+            LinkPoint {
+                name: "S_3".into(),
+                link: 3,
+                along: 0.29,
+                across: 0.0,
+            },
+        ],
+        redundant: vec![RedundantPair {
+            name: "E′".into(),
+            prismatic: true,
+            links: [5, 0],
+            reason: "bending".into(),
+        }],
+        outputs: vec![
+            Output::Rocker { link: 3 },
+            Output::Slider {
+                point: "E".into(),
+                dir: 0.0,
+            },
+        ],
+    }
+}
+
+#[test]
+fn shaper_structure_matches_seed() {
+    let s = Structure::analyse(&shaper());
+    assert_eq!((s.n, s.p5, s.w), (5, 7, 1));
+    assert_eq!((s.p5_all, s.w_all), (8, -1));
+    assert_eq!(s.formula(), "I(0,1) → II(2,3) → II(4,5)");
+    assert_eq!(s.groups[0].kind, DyadKind::Rpr);
+    assert_eq!(s.groups[1].kind, DyadKind::Rpp);
+    assert_eq!(s.groups[1].pairs[2].links, [5, 0]);
+}
+
+#[test]
+fn shaper_extremes_are_exact() {
+    let m = shaper();
+    let prog = Program::compile(&m).unwrap();
+    let ex = prog.extremes(&m.outputs, m.crank.sense).unwrap();
+    let theta = ex.theta.to_degrees();
+    assert!((theta - 38.0016).abs() < 1e-4, "θ = {theta}");
+    let exact = 2.0 * (0.14f64 / 0.43).asin();
+    assert!(
+        (ex.theta - exact).abs() < 1e-12,
+        "θ = {} vs {}",
+        ex.theta,
+        exact
+    );
+    assert!((ex.k - 1.5352).abs() < 1e-4, "K = {}", ex.k);
+    assert!(
+        (ex.phi_start.to_degrees() - 199.0008).abs() < 1e-3,
+        "{}",
+        ex.phi_start.to_degrees()
+    );
+    assert!((ex.phi_other.to_degrees() - (360.0 - 19.0008)).abs() < 1e-3);
+    let stroke = ex.ranges[1].max - ex.ranges[1].min;
+    assert!(
+        (stroke - 2.0 * 0.71 * 0.14 / 0.43).abs() < 1e-12,
+        "H = {stroke}"
+    );
+    assert!((ex.ranges[0].max - ex.ranges[0].min - exact).abs() < 1e-12);
+}
+
+#[test]
+fn construction_equals_analytic_on_the_shaper() {
+    let m = shaper();
+    let prog = Program::compile(&m).unwrap();
+    let mu = 0.0025;
+    let mut rec = Recorder::new(
+        "t",
+        Scale::new(mu, Quantity::Length).unwrap(),
+        Tolerances::for_model_size(400.0).unwrap(),
+        Drafting::EXACT,
+    );
+    let mut prev_b = None;
+    let mut prev_a = None;
+    for k in 0..12 {
+        let phi = (199.0 - 30.0 * k as f64).to_radians();
+        let a = prog.solve(phi, prev_a.as_ref()).unwrap();
+        let b = prog
+            .construct(&mut rec, phi, prev_b.as_ref(), &format!("{}", k + 1))
+            .unwrap();
+        for (i, (pa, pb)) in a.p.iter().zip(&b.p).enumerate() {
+            let d = (*pa - *pb * mu).length();
+            assert!(d < 1e-12, "position {k} point {}: {d}", prog.names[i]);
+        }
+        prev_a = Some(a);
+        prev_b = Some(b);
+    }
+}
