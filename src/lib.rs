@@ -10,6 +10,6 @@
 
 pub mod construct;
 pub mod geom;
-pub mod scale;
 pub mod linkage;
+pub mod scale;
 pub mod scene;

@@ -147,7 +147,10 @@ impl Scale {
         let decade = 10f64.powf(exact.log10().floor());
         let m = exact / decade;
         // 1e-9 relative slack so that an exact round value stays itself.
-        let mant = ROUND_MANTISSAS.iter().copied().find(|&r| r >= m * (1.0 - 1e-9))?;
+        let mant = ROUND_MANTISSAS
+            .iter()
+            .copied()
+            .find(|&r| r >= m * (1.0 - 1e-9))?;
         Self::new(round_sig(mant * decade), quantity)
     }
 
@@ -190,7 +193,11 @@ pub fn format_number(x: f64, lang: Lang) -> String {
 /// Format with at most `sig` significant digits (trailing zeros removed).
 pub fn format_sig(x: f64, sig: usize, lang: Lang) -> String {
     if x == 0.0 || !x.is_finite() {
-        return if x.is_finite() { "0".into() } else { format!("{x}") };
+        return if x.is_finite() {
+            "0".into()
+        } else {
+            format!("{x}")
+        };
     }
     let mag = x.abs().log10().floor() as i32;
     let decimals = (sig as i32 - 1 - mag).clamp(0, 15) as usize;
@@ -219,7 +226,8 @@ pub fn format_fixed(x: f64, decimals: usize, lang: Lang) -> String {
     } else {
         s
     };
-    s.replace('-', "−").replace('.', &lang.decimal().to_string())
+    s.replace('-', "−")
+        .replace('.', &lang.decimal().to_string())
 }
 
 #[cfg(test)]
@@ -234,7 +242,12 @@ mod tests {
         // 2.199 m/s drawn at most 70 mm → 0.0314 → 0.04.
         let s = Scale::round_for(2.199, 70.0, Quantity::Velocity).unwrap();
         assert_eq!(s.value(), 0.04);
-        assert_eq!(Scale::round_for(0.71, 300.0, Quantity::Length).unwrap().value(), 0.0025);
+        assert_eq!(
+            Scale::round_for(0.71, 300.0, Quantity::Length)
+                .unwrap()
+                .value(),
+            0.0025
+        );
         assert!(Scale::round_for(0.0, 50.0, Quantity::Length).is_none());
         assert!(Scale::round_for(f64::NAN, 50.0, Quantity::Length).is_none());
     }

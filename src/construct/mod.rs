@@ -11,4 +11,6 @@ mod error;
 mod recorder;
 
 pub use error::ConstructionError;
-pub use recorder::{Compass, Drafting, Figure, Item, Label, Measured, Pick, Recorder, Role, Step, StepId};
+pub use recorder::{
+    Compass, Drafting, Figure, Item, Label, Measured, Pick, Recorder, Role, Step, StepId,
+};

@@ -273,9 +273,18 @@ pub struct Recorder {
 
 impl Recorder {
     /// Start a figure at scale `scale` with tolerances in figure mm.
-    pub fn new(title: impl Into<String>, scale: Scale, tol: Tolerances, drafting: Drafting) -> Self {
+    pub fn new(
+        title: impl Into<String>,
+        scale: Scale,
+        tol: Tolerances,
+        drafting: Drafting,
+    ) -> Self {
         Self {
-            figure: Figure { title: title.into(), scale, steps: Vec::new() },
+            figure: Figure {
+                title: title.into(),
+                scale,
+                steps: Vec::new(),
+            },
             tol,
             drafting,
             group: 0,
@@ -313,7 +322,13 @@ impl Recorder {
     }
 
     /// Record a step.
-    pub fn draw(&mut self, note: impl Into<String>, item: Item, role: Role, from: &[StepId]) -> StepId {
+    pub fn draw(
+        &mut self,
+        note: impl Into<String>,
+        item: Item,
+        role: Role,
+        from: &[StepId],
+    ) -> StepId {
         let id = StepId(self.figure.steps.len() as u32);
         self.figure.steps.push(Step {
             id,
@@ -330,12 +345,24 @@ impl Recorder {
     /// Attach a label to a recorded step.
     pub fn label(&mut self, id: StepId, text: impl Into<String>, anchor: DVec2, toward: DVec2) {
         if let Some(step) = self.figure.steps.get_mut(id.0 as usize) {
-            step.label = Some(Label { text: text.into(), anchor, toward });
+            step.label = Some(Label {
+                text: text.into(),
+                anchor,
+                toward,
+            });
         }
     }
 
     /// Record a labelled point.
-    pub fn point(&mut self, note: impl Into<String>, at: DVec2, role: Role, label: &str, toward: DVec2, from: &[StepId]) -> StepId {
+    pub fn point(
+        &mut self,
+        note: impl Into<String>,
+        at: DVec2,
+        role: Role,
+        label: &str,
+        toward: DVec2,
+        from: &[StepId],
+    ) -> StepId {
         let id = self.draw(note, Item::Point(at), role, from);
         if !label.is_empty() {
             self.label(id, label, at, toward);
@@ -347,7 +374,11 @@ impl Recorder {
     pub fn measure(&self, from: DVec2, to: DVec2) -> Measured {
         let drawn_mm = from.distance(to);
         let read_mm = self.drafting.read(drawn_mm);
-        Measured { drawn_mm, read_mm, value: self.figure.scale.to_physical(read_mm) }
+        Measured {
+            drawn_mm,
+            read_mm,
+            value: self.figure.scale.to_physical(read_mm),
+        }
     }
 
     fn phys(&self, mm: f64) -> f64 {
@@ -359,25 +390,51 @@ impl Recorder {
 
     /// Notch both arcs at the intersection of two compass settings and return the chosen
     /// point with the id of the recorded result point.
-    pub fn meet_circles(&mut self, step: &str, a: Compass<'_>, b: Compass<'_>, pick: Pick) -> Result<(DVec2, f64, StepId), ConstructionError> {
-        let ca = Circle { center: a.center, radius: a.radius };
-        let cb = Circle { center: b.center, radius: b.radius };
+    pub fn meet_circles(
+        &mut self,
+        step: &str,
+        a: Compass<'_>,
+        b: Compass<'_>,
+        pick: Pick,
+    ) -> Result<(DVec2, f64, StepId), ConstructionError> {
+        let ca = Circle {
+            center: a.center,
+            radius: a.radius,
+        };
+        let cb = Circle {
+            center: b.center,
+            radius: b.radius,
+        };
         let (p, crossing) = match circle_circle(&ca, &cb, &self.tol) {
-            CircleCircle::Two { left, right, crossing_angle } => {
+            CircleCircle::Two {
+                left,
+                right,
+                crossing_angle,
+            } => {
                 let p = match pick {
                     Pick::Left => left,
                     Pick::Right => right,
                     Pick::Near(prev) => {
-                        if left.distance_squared(prev) <= right.distance_squared(prev) { left } else { right }
+                        if left.distance_squared(prev) <= right.distance_squared(prev) {
+                            left
+                        } else {
+                            right
+                        }
                     }
                     Pick::Forward | Pick::Backward => {
-                        return Err(ConstructionError::BadPick { step: step.into(), pick: pick.to_string(), what: "two arcs" })
+                        return Err(ConstructionError::BadPick {
+                            step: step.into(),
+                            pick: pick.to_string(),
+                            what: "two arcs",
+                        })
                     }
                 };
                 (p, crossing_angle)
             }
             CircleCircle::Tangent { point } => (point, 0.0),
-            CircleCircle::Disjoint { center_distance, .. } => {
+            CircleCircle::Disjoint {
+                center_distance, ..
+            } => {
                 return Err(ConstructionError::CirclesDoNotMeet {
                     step: step.into(),
                     a: a.name.into(),
@@ -398,25 +455,61 @@ impl Recorder {
                 })
             }
         };
-        let n1 = self.draw(format!("{step}: arc from {} r = {:.3} mm", a.name, a.radius), Item::Arc(Arc::notch(a.center, p, self.notch_mm)), Role::Construction, &[]);
-        let n2 = self.draw(format!("{step}: arc from {} r = {:.3} mm", b.name, b.radius), Item::Arc(Arc::notch(b.center, p, self.notch_mm)), Role::Construction, &[]);
-        let id = self.draw(format!("{step}: intersection of the arcs"), Item::Point(p), Role::Result, &[n1, n2]);
+        let n1 = self.draw(
+            format!("{step}: arc from {} r = {:.3} mm", a.name, a.radius),
+            Item::Arc(Arc::notch(a.center, p, self.notch_mm)),
+            Role::Construction,
+            &[],
+        );
+        let n2 = self.draw(
+            format!("{step}: arc from {} r = {:.3} mm", b.name, b.radius),
+            Item::Arc(Arc::notch(b.center, p, self.notch_mm)),
+            Role::Construction,
+            &[],
+        );
+        let id = self.draw(
+            format!("{step}: intersection of the arcs"),
+            Item::Point(p),
+            Role::Result,
+            &[n1, n2],
+        );
         Ok((p, crossing, id))
     }
 
     /// Notch a line with a compass arc and return the chosen point.
-    pub fn meet_line_circle(&mut self, step: &str, line: (&str, &Line), c: Compass<'_>, pick: Pick) -> Result<(DVec2, f64, StepId), ConstructionError> {
-        let circle = Circle { center: c.center, radius: c.radius };
+    pub fn meet_line_circle(
+        &mut self,
+        step: &str,
+        line: (&str, &Line),
+        c: Compass<'_>,
+        pick: Pick,
+    ) -> Result<(DVec2, f64, StepId), ConstructionError> {
+        let circle = Circle {
+            center: c.center,
+            radius: c.radius,
+        };
         let (p, crossing) = match line_circle(line.1, &circle, &self.tol) {
-            LineCircle::Two { backward, forward, crossing_angle } => {
+            LineCircle::Two {
+                backward,
+                forward,
+                crossing_angle,
+            } => {
                 let p = match pick {
                     Pick::Forward => forward,
                     Pick::Backward => backward,
                     Pick::Near(prev) => {
-                        if forward.distance_squared(prev) <= backward.distance_squared(prev) { forward } else { backward }
+                        if forward.distance_squared(prev) <= backward.distance_squared(prev) {
+                            forward
+                        } else {
+                            backward
+                        }
                     }
                     Pick::Left | Pick::Right => {
-                        return Err(ConstructionError::BadPick { step: step.into(), pick: pick.to_string(), what: "an arc and a line" })
+                        return Err(ConstructionError::BadPick {
+                            step: step.into(),
+                            pick: pick.to_string(),
+                            what: "an arc and a line",
+                        })
                     }
                 };
                 (p, crossing_angle)
@@ -433,16 +526,40 @@ impl Recorder {
                 })
             }
         };
-        let n = self.draw(format!("{step}: arc from {} r = {:.3} mm", c.name, c.radius), Item::Arc(Arc::notch(c.center, p, self.notch_mm)), Role::Construction, &[]);
-        let id = self.draw(format!("{step}: arc meets {}", line.0), Item::Point(p), Role::Result, &[n]);
+        let n = self.draw(
+            format!("{step}: arc from {} r = {:.3} mm", c.name, c.radius),
+            Item::Arc(Arc::notch(c.center, p, self.notch_mm)),
+            Role::Construction,
+            &[],
+        );
+        let id = self.draw(
+            format!("{step}: arc meets {}", line.0),
+            Item::Point(p),
+            Role::Result,
+            &[n],
+        );
         Ok((p, crossing, id))
     }
 
     /// Intersect two straight lines (both assumed drawn) and return the point.
-    pub fn meet_lines(&mut self, step: &str, a: (&str, &Line), b: (&str, &Line)) -> Result<(DVec2, f64, StepId), ConstructionError> {
+    pub fn meet_lines(
+        &mut self,
+        step: &str,
+        a: (&str, &Line),
+        b: (&str, &Line),
+    ) -> Result<(DVec2, f64, StepId), ConstructionError> {
         match line_line(a.1, b.1, &self.tol) {
-            LineLine::Point { point, crossing_angle, .. } => {
-                let id = self.draw(format!("{step}: {} meets {}", a.0, b.0), Item::Point(point), Role::Result, &[]);
+            LineLine::Point {
+                point,
+                crossing_angle,
+                ..
+            } => {
+                let id = self.draw(
+                    format!("{step}: {} meets {}", a.0, b.0),
+                    Item::Point(point),
+                    Role::Result,
+                    &[],
+                );
                 Ok((point, crossing_angle, id))
             }
             LineLine::Parallel { distance } => Err(ConstructionError::LinesParallel {
@@ -463,7 +580,12 @@ impl Recorder {
     }
 
     /// The straightedge line through two named points.
-    pub fn line_through(&self, step: &str, a: (&str, DVec2), b: (&str, DVec2)) -> Result<Line, ConstructionError> {
+    pub fn line_through(
+        &self,
+        step: &str,
+        a: (&str, DVec2),
+        b: (&str, DVec2),
+    ) -> Result<Line, ConstructionError> {
         Line::through(a.1, b.1).ok_or_else(|| ConstructionError::CoincidentPoints {
             step: step.into(),
             what: format!("line {}{}", a.0, b.0),
@@ -497,14 +619,32 @@ mod tests {
     use crate::scale::Quantity;
 
     fn rec() -> Recorder {
-        Recorder::new("test", Scale::new(0.0025, Quantity::Length).unwrap(), Tolerances::for_model_size(300.0).unwrap(), Drafting::new(0.5).unwrap())
+        Recorder::new(
+            "test",
+            Scale::new(0.0025, Quantity::Length).unwrap(),
+            Tolerances::for_model_size(300.0).unwrap(),
+            Drafting::new(0.5).unwrap(),
+        )
     }
 
     #[test]
     fn meet_circles_records_two_notches_and_the_point() {
         let mut r = rec();
         let (p, _, id) = r
-            .meet_circles("B", Compass { name: "A", center: DVec2::ZERO, radius: 5.0 }, Compass { name: "C", center: DVec2::new(8.0, 0.0), radius: 5.0 }, Pick::Left)
+            .meet_circles(
+                "B",
+                Compass {
+                    name: "A",
+                    center: DVec2::ZERO,
+                    radius: 5.0,
+                },
+                Compass {
+                    name: "C",
+                    center: DVec2::new(8.0, 0.0),
+                    radius: 5.0,
+                },
+                Pick::Left,
+            )
             .unwrap();
         assert!((p - DVec2::new(4.0, 3.0)).length() < 1e-12);
         assert_eq!(r.steps().len(), 3);
@@ -515,11 +655,27 @@ mod tests {
     fn meet_circles_failure_names_the_step_and_numbers_in_si() {
         let mut r = rec();
         let e = r
-            .meet_circles("position 7, B", Compass { name: "A", center: DVec2::ZERO, radius: 56.0 }, Compass { name: "C", center: DVec2::new(248.0, 0.0), radius: 172.0 }, Pick::Left)
+            .meet_circles(
+                "position 7, B",
+                Compass {
+                    name: "A",
+                    center: DVec2::ZERO,
+                    radius: 56.0,
+                },
+                Compass {
+                    name: "C",
+                    center: DVec2::new(248.0, 0.0),
+                    radius: 172.0,
+                },
+                Pick::Left,
+            )
             .unwrap_err();
         let msg = e.to_string();
         assert!(msg.contains("position 7, B"), "{msg}");
-        assert!(msg.contains("0.14000 m") && msg.contains("0.62000 m") && msg.contains("0.57000"), "{msg}");
+        assert!(
+            msg.contains("0.14000 m") && msg.contains("0.62000 m") && msg.contains("0.57000"),
+            "{msg}"
+        );
         assert!(r.steps().is_empty());
     }
 

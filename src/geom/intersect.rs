@@ -50,21 +50,35 @@ pub fn circle_circle(a: &Circle, b: &Circle, tol: &Tolerances) -> CircleCircle {
         if diff <= eps {
             return CircleCircle::Coincident;
         }
-        return CircleCircle::Disjoint { center_distance: d, radius_sum: sum, radius_diff: diff };
+        return CircleCircle::Disjoint {
+            center_distance: d,
+            radius_sum: sum,
+            radius_diff: diff,
+        };
     }
     let u = delta / d;
     if (d - sum).abs() <= eps {
         // External contact: the point divides the centre line in the ratio of the radii.
         let t = if sum > 0.0 { ra / sum } else { 0.5 };
-        return CircleCircle::Tangent { point: a.center + delta * t };
+        return CircleCircle::Tangent {
+            point: a.center + delta * t,
+        };
     }
     if (d - diff).abs() <= eps {
         // Internal contact: on the centre line, on the far side of the smaller circle.
-        let point = if ra >= rb { a.center + u * ra } else { a.center - u * ra };
+        let point = if ra >= rb {
+            a.center + u * ra
+        } else {
+            a.center - u * ra
+        };
         return CircleCircle::Tangent { point };
     }
     if d > sum || d < diff {
-        return CircleCircle::Disjoint { center_distance: d, radius_sum: sum, radius_diff: diff };
+        return CircleCircle::Disjoint {
+            center_distance: d,
+            radius_sum: sum,
+            radius_diff: diff,
+        };
     }
     // Distance from a.center to the chord, along u; half chord h.
     let along = (d * d + ra * ra - rb * rb) / (2.0 * d);
@@ -117,7 +131,10 @@ pub fn line_circle(line: &Line, c: &Circle, tol: &Tolerances) -> LineCircle {
         return LineCircle::Tangent { point: foot };
     }
     if dist > r {
-        return LineCircle::Disjoint { distance: dist, radius: r };
+        return LineCircle::Disjoint {
+            distance: dist,
+            radius: r,
+        };
     }
     let h = (r * r - dist * dist).max(0.0).sqrt();
     LineCircle::Two {
@@ -164,7 +181,12 @@ pub fn line_line(a: &Line, b: &Line, tol: &Tolerances) -> LineLine {
     let t_a = w.perp_dot(b.direction) / det;
     let t_b = w.perp_dot(a.direction) / det;
     let s = det.abs().min(1.0).asin();
-    LineLine::Point { point: a.eval(t_a), t_a, t_b, crossing_angle: s }
+    LineLine::Point {
+        point: a.eval(t_a),
+        t_a,
+        t_b,
+        crossing_angle: s,
+    }
 }
 
 #[cfg(test)]
@@ -184,7 +206,11 @@ mod tests {
         let a = c(0.0, 0.0, 5.0);
         let b = c(8.0, 0.0, 5.0);
         match circle_circle(&a, &b, &tol()) {
-            CircleCircle::Two { left, right, crossing_angle } => {
+            CircleCircle::Two {
+                left,
+                right,
+                crossing_angle,
+            } => {
                 assert!((left - DVec2::new(4.0, 3.0)).length() < 1e-12, "{left}");
                 assert!((right - DVec2::new(4.0, -3.0)).length() < 1e-12, "{right}");
                 let line = Line::through(a.center, b.center).unwrap();
@@ -200,19 +226,33 @@ mod tests {
     #[test]
     fn circle_circle_tangent_returns_single_point() {
         let out = circle_circle(&c(0.0, 0.0, 3.0), &c(5.0, 0.0, 2.0), &tol());
-        assert_eq!(out, CircleCircle::Tangent { point: DVec2::new(3.0, 0.0) });
+        assert_eq!(
+            out,
+            CircleCircle::Tangent {
+                point: DVec2::new(3.0, 0.0)
+            }
+        );
         // Nearly tangent, inside the tolerance.
         let out = circle_circle(&c(0.0, 0.0, 3.0), &c(5.0 + 1e-12, 0.0, 2.0), &tol());
         assert!(matches!(out, CircleCircle::Tangent { .. }));
         // Internal contact.
         let out = circle_circle(&c(0.0, 0.0, 5.0), &c(2.0, 0.0, 3.0), &tol());
-        assert_eq!(out, CircleCircle::Tangent { point: DVec2::new(5.0, 0.0) });
+        assert_eq!(
+            out,
+            CircleCircle::Tangent {
+                point: DVec2::new(5.0, 0.0)
+            }
+        );
     }
 
     #[test]
     fn circle_circle_near_tangent_outside_tolerance_has_small_crossing_angle() {
         match circle_circle(&c(0.0, 0.0, 3.0), &c(5.0 - 1e-6, 0.0, 2.0), &tol()) {
-            CircleCircle::Two { left, right, crossing_angle } => {
+            CircleCircle::Two {
+                left,
+                right,
+                crossing_angle,
+            } => {
                 assert!(crossing_angle < 1e-2 && crossing_angle > 0.0);
                 assert!(left.is_finite() && right.is_finite());
             }
@@ -223,12 +263,20 @@ mod tests {
     #[test]
     fn circle_circle_disjoint_and_coincident() {
         let out = circle_circle(&c(0.0, 0.0, 1.0), &c(5.0, 0.0, 1.0), &tol());
-        assert!(matches!(out, CircleCircle::Disjoint { center_distance, .. } if center_distance == 5.0));
+        assert!(
+            matches!(out, CircleCircle::Disjoint { center_distance, .. } if center_distance == 5.0)
+        );
         let out = circle_circle(&c(0.0, 0.0, 5.0), &c(1.0, 0.0, 1.0), &tol());
         assert!(matches!(out, CircleCircle::Disjoint { .. }));
-        assert_eq!(circle_circle(&c(1.0, 1.0, 2.0), &c(1.0, 1.0, 2.0), &tol()), CircleCircle::Coincident);
+        assert_eq!(
+            circle_circle(&c(1.0, 1.0, 2.0), &c(1.0, 1.0, 2.0), &tol()),
+            CircleCircle::Coincident
+        );
         // Concentric, different radii.
-        assert!(matches!(circle_circle(&c(1.0, 1.0, 2.0), &c(1.0, 1.0, 3.0), &tol()), CircleCircle::Disjoint { .. }));
+        assert!(matches!(
+            circle_circle(&c(1.0, 1.0, 2.0), &c(1.0, 1.0, 3.0), &tol()),
+            CircleCircle::Disjoint { .. }
+        ));
     }
 
     #[test]
@@ -242,7 +290,11 @@ mod tests {
     fn line_circle_cases() {
         let line = Line::new(DVec2::new(-10.0, 3.0), DVec2::X).unwrap();
         match line_circle(&line, &c(0.0, 0.0, 5.0), &tol()) {
-            LineCircle::Two { backward, forward, crossing_angle } => {
+            LineCircle::Two {
+                backward,
+                forward,
+                crossing_angle,
+            } => {
                 assert!((backward - DVec2::new(-4.0, 3.0)).length() < 1e-12);
                 assert!((forward - DVec2::new(4.0, 3.0)).length() < 1e-12);
                 assert!((crossing_angle - (0.6f64).acos()).abs() < 1e-12);
@@ -251,9 +303,14 @@ mod tests {
         }
         assert_eq!(
             line_circle(&line, &c(0.0, 0.0, 3.0), &tol()),
-            LineCircle::Tangent { point: DVec2::new(0.0, 3.0) }
+            LineCircle::Tangent {
+                point: DVec2::new(0.0, 3.0)
+            }
         );
-        assert!(matches!(line_circle(&line, &c(0.0, 0.0, 2.0), &tol()), LineCircle::Disjoint { .. }));
+        assert!(matches!(
+            line_circle(&line, &c(0.0, 0.0, 2.0), &tol()),
+            LineCircle::Disjoint { .. }
+        ));
     }
 
     #[test]
@@ -261,7 +318,12 @@ mod tests {
         let a = Line::new(DVec2::ZERO, DVec2::X).unwrap();
         let b = Line::new(DVec2::new(2.0, -1.0), DVec2::Y).unwrap();
         match line_line(&a, &b, &tol()) {
-            LineLine::Point { point, t_a, t_b, crossing_angle } => {
+            LineLine::Point {
+                point,
+                t_a,
+                t_b,
+                crossing_angle,
+            } => {
                 assert_eq!(point, DVec2::new(2.0, 0.0));
                 assert_eq!((t_a, t_b), (2.0, 1.0));
                 assert!((crossing_angle - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
@@ -269,16 +331,26 @@ mod tests {
             other => panic!("{other:?}"),
         }
         let p = Line::new(DVec2::new(0.0, 1.0), DVec2::X).unwrap();
-        assert_eq!(line_line(&a, &p, &tol()), LineLine::Parallel { distance: 1.0 });
+        assert_eq!(
+            line_line(&a, &p, &tol()),
+            LineLine::Parallel { distance: 1.0 }
+        );
         let q = Line::new(DVec2::new(5.0, 0.0), -DVec2::X).unwrap();
         assert_eq!(line_line(&a, &q, &tol()), LineLine::Coincident);
         // Nearly parallel (sin ≈ 1e-9 < parallel_sin): refused as parallel, no far-away point.
         let n = Line::new(DVec2::new(0.0, 1.0), DVec2::new(1.0, 1e-9)).unwrap();
-        assert!(matches!(line_line(&a, &n, &tol()), LineLine::Parallel { .. }));
+        assert!(matches!(
+            line_line(&a, &n, &tol()),
+            LineLine::Parallel { .. }
+        ));
         // Shallow but proper: reported with its small crossing angle.
         let s = Line::new(DVec2::new(0.0, 1.0), DVec2::new(1.0, -1e-4)).unwrap();
         match line_line(&a, &s, &tol()) {
-            LineLine::Point { point, crossing_angle, .. } => {
+            LineLine::Point {
+                point,
+                crossing_angle,
+                ..
+            } => {
                 assert!((point.x - 1e4).abs() < 1e-6);
                 assert!((crossing_angle - 1e-4).abs() < 1e-8);
             }

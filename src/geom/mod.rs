@@ -5,7 +5,7 @@ mod intersect;
 mod primitives;
 mod tolerance;
 
+pub use glam::DVec2;
 pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};
 pub use primitives::{nearest, rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side};
 pub use tolerance::{InvalidTolerance, Tolerances};
-pub use glam::DVec2;

@@ -41,7 +41,10 @@ impl Line {
 
     /// The parallel line shifted by `d` to the left (negative: to the right).
     pub fn offset(&self, d: f64) -> Self {
-        Self { point: self.point + self.direction.perp() * d, direction: self.direction }
+        Self {
+            point: self.point + self.direction.perp() * d,
+            direction: self.direction,
+        }
     }
 
     /// Angle of the direction, radians, counter-clockwise from +x.
@@ -90,7 +93,10 @@ pub struct Ray {
 impl Ray {
     /// `None` for a zero direction.
     pub fn new(origin: DVec2, direction: DVec2) -> Option<Self> {
-        Some(Self { origin, direction: direction.try_normalize()? })
+        Some(Self {
+            origin,
+            direction: direction.try_normalize()?,
+        })
     }
     /// The point at distance `t ≥ 0` from the origin.
     pub fn eval(&self, t: f64) -> DVec2 {
@@ -98,7 +104,10 @@ impl Ray {
     }
     /// The carrying line.
     pub fn to_line(&self) -> Line {
-        Line { point: self.origin, direction: self.direction }
+        Line {
+            point: self.origin,
+            direction: self.direction,
+        }
     }
 }
 
@@ -141,15 +150,29 @@ impl Arc {
     pub fn notch(center: DVec2, through: DVec2, half_width: f64) -> Self {
         let d = through - center;
         let radius = d.length();
-        let half = if radius > 0.0 { (half_width / radius).min(std::f64::consts::PI) } else { 0.0 };
-        Self { center, radius, start: d.y.atan2(d.x) - half, sweep: 2.0 * half }
+        let half = if radius > 0.0 {
+            (half_width / radius).min(std::f64::consts::PI)
+        } else {
+            0.0
+        };
+        Self {
+            center,
+            radius,
+            start: d.y.atan2(d.x) - half,
+            sweep: 2.0 * half,
+        }
     }
 
     /// The arc between directions `from` and `to` around `center`, the short way.
     pub fn between(center: DVec2, radius: f64, from: DVec2, to: DVec2) -> Self {
         let start = from.y.atan2(from.x);
         let sweep = from.perp_dot(to).atan2(from.dot(to));
-        Self { center, radius, start, sweep }
+        Self {
+            center,
+            radius,
+            start,
+            sweep,
+        }
     }
 
     /// The point at fraction `t` of the sweep.
@@ -219,6 +242,9 @@ pub fn nearest(candidates: &[DVec2], previous: DVec2) -> Option<usize> {
     candidates
         .iter()
         .enumerate()
-        .min_by(|a, b| a.1.distance_squared(previous).total_cmp(&b.1.distance_squared(previous)))
+        .min_by(|a, b| {
+            a.1.distance_squared(previous)
+                .total_cmp(&b.1.distance_squared(previous))
+        })
         .map(|(i, _)| i)
 }

@@ -51,7 +51,10 @@ impl Tolerances {
     /// Tolerances for a figure whose largest extent is `extent` (its own units).
     pub fn for_model_size(extent: f64) -> Result<Self, InvalidTolerance> {
         if !(extent.is_finite() && extent > 0.0) {
-            return Err(InvalidTolerance::NotPositive { field: "extent", value: extent });
+            return Err(InvalidTolerance::NotPositive {
+                field: "extent",
+                value: extent,
+            });
         }
         Self::new(
             extent * Self::COINCIDENT_REL,
@@ -81,7 +84,12 @@ impl Tolerances {
         if parallel_sin >= 0.1 {
             return Err(InvalidTolerance::ParallelTooLoose(parallel_sin));
         }
-        Ok(Self { coincident, parallel_sin, flatten_mm, solver_accuracy })
+        Ok(Self {
+            coincident,
+            parallel_sin,
+            flatten_mm,
+            solver_accuracy,
+        })
     }
 }
 
