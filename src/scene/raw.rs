@@ -96,7 +96,10 @@ pub(crate) struct RawGuide {
 
 /// A direction: degrees in the frame, or along two known points.
 #[derive(Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "expected a direction: degrees, or { from = \"A\", to = \"B\", angle = 0.0 }"
+)]
 pub(crate) enum RawDir {
     /// A frame direction, degrees.
     Degrees(f64),
@@ -153,7 +156,10 @@ pub(crate) struct RawPositions {
 
 /// `start = "working-stroke"` or a crank angle in degrees.
 #[derive(Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "expected \"working-stroke\" or a crank angle in degrees"
+)]
 pub(crate) enum RawStart {
     /// A word (only `working-stroke` is valid).
     Word(String),

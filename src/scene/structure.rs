@@ -178,7 +178,7 @@ impl Builder<'_> {
             Some(0) => Sense::Clockwise,
             _ => Sense::CounterClockwise,
         };
-        self.attach(link, join(base, "link"));
+        self.attach(link, join(base, "link"), link.to_string());
         self.pairs.push(Pair {
             prismatic: false,
             link,
@@ -261,10 +261,10 @@ impl Builder<'_> {
     }
 
     /// Mark `link` attached (refusing one already used) and release its points.
-    fn attach(&mut self, link: u32, key: String) {
+    fn attach(&mut self, link: u32, key: String, value: String) {
         if let Some((_, first)) = self.links.iter().find(|(l, _)| *l == link) {
             let expected = format!("expected a new link number; link {link} is already {first}");
-            self.check.push(key, Some(link.to_string()), expected);
+            self.check.push(key, Some(value), expected);
             return;
         }
         self.links.push((link, key));
@@ -343,8 +343,9 @@ impl Builder<'_> {
             DyadKind::Prp => self.prp(base, g, links),
             DyadKind::Rpp => self.rpp(base, g, links),
         };
-        self.attach(i, join(base, "links"));
-        self.attach(j, join(base, "links"));
+        for link in links {
+            self.attach(link, join(base, "links"), format!("{links:?}"));
+        }
         Some(Group {
             links: [i, j],
             dyad,
@@ -661,13 +662,12 @@ impl Builder<'_> {
         }
         let w = 3 * n - 2 * (p5 - discounted);
         if w != 1 {
-            let value = format!("3·{n} − 2·({p5} − {discounted}) = {w}");
             let expected = format!(
-                "expected W = 1 (one driving crank); a redundant pair is discounted only where it \
+                "W = 3·{n} − 2·({p5} − {discounted}) = {w}: expected W = 1 (one driving crank); a redundant pair is discounted only where it \
                  repeats a pair of the structure, and {} repeats none",
                 stray.join(", ")
             );
-            self.check.push("mechanism.W", Some(value), expected);
+            self.check.push(MECH, None, expected);
         }
     }
 }

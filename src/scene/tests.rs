@@ -213,7 +213,7 @@ fn point_before_its_link_is_attached_is_refused() {
 #[test]
 fn duplicate_link_number_is_refused() {
     let msg = shaper_error("links = [4, 5]", "links = [3, 5]");
-    assert_names(&msg, &["mechanism.group[1].links = 3: expected a new link number; link 3 is already mechanism.group[0].links"]);
+    assert_names(&msg, &["mechanism.group[1].links = [3, 5]: expected a new link number; link 3 is already mechanism.group[0].links"]);
 }
 
 #[test]
@@ -266,7 +266,7 @@ fn mobility_other_than_one_is_refused() {
     assert_names(
         &msg,
         &[
-            "mechanism.W = 3·5 − 2·(8 − 0) = -1: expected W = 1",
+            "mechanism: W = 3·5 − 2·(8 − 0) = -1: expected W = 1",
             "mechanism.redundant[0]",
         ],
     );
@@ -326,4 +326,34 @@ fn cyrillic_kind_and_start_angle_are_accepted() {
     let s = parse(&text, Path::new("x.toml")).map_err(|e| e.to_string());
     let s = s.unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(s.positions.start, Start::Angle(PI / 2.0));
+}
+
+#[test]
+fn string_for_direction_is_refused_with_the_forms() {
+    let msg = shaper_error("slide = 90.0", "slide = \"up\"");
+    assert_names(
+        &msg,
+        &["mechanism.group[1].slide = \"up\": expected a direction"],
+    );
+}
+
+#[test]
+fn crank_centre_must_be_fixed() {
+    let msg = shaper_error("centre = \"A\"", "centre = \"B\"");
+    assert_names(
+        &msg,
+        &["mechanism.crank.centre = \"B\": expected a fixed point"],
+    );
+}
+
+#[test]
+fn unreadable_file_is_reported() {
+    let msg = load(Path::new("constructions/no-such.toml"))
+        .map(|_| ())
+        .err()
+        .map(|e| e.to_string());
+    assert_names(
+        &msg.unwrap_or_default(),
+        &["constructions/no-such.toml: cannot read the scene"],
+    );
 }
