@@ -1,5 +1,15 @@
 //! Scene files (`constructions/*.toml`) → validated domain inputs.
 
+mod check;
+mod error;
+mod load;
 mod model;
+mod raw;
+mod structure;
 
+pub use error::{Problem, SceneError};
+pub use load::{load, parse};
 pub use model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,189 @@
+//! The problem collector and the conversions of the file's units (mm, degrees) to SI, each
+//! checked once with the key path it came from.
+
+use super::error::Problem;
+
+/// Metres per millimetre.
+const M_PER_MM: f64 = 1e-3;
+
+/// `base.key`.
+pub(crate) fn join(base: &str, key: &str) -> String {
+    format!("{base}.{key}")
+}
+
+/// `base[index]`.
+pub(crate) fn item(base: &str, index: usize) -> String {
+    format!("{base}[{index}]")
+}
+
+/// A number the way TOML writes it (`nan`, `inf`, `-140`).
+pub(crate) fn number(v: f64) -> String {
+    if v.is_nan() {
+        "nan".into()
+    } else if v.is_infinite() {
+        if v > 0.0 { "inf" } else { "-inf" }.into()
+    } else {
+        v.to_string()
+    }
+}
+
+/// A name quoted as in the file.
+pub(crate) fn quoted(s: &str) -> String {
+    format!("{s:?}")
+}
+
+/// Collects every problem of a scene; the conversions return a placeholder after reporting,
+/// so that validation goes on and reports all problems at once.
+#[derive(Debug, Default)]
+pub(crate) struct Checker {
+    /// The problems so far.
+    pub problems: Vec<Problem>,
+}
+
+impl Checker {
+    /// Report a problem.
+    pub fn push(
+        &mut self,
+        key: impl Into<String>,
+        value: Option<String>,
+        expected: impl Into<String>,
+    ) {
+        self.problems.push(Problem {
+            key: key.into(),
+            value,
+            expected: expected.into(),
+        });
+    }
+
+    /// The value of a required key, or a "missing" problem.
+    pub fn required<T>(&mut self, key: &str, v: Option<T>, expected: &str) -> Option<T> {
+        if v.is_none() {
+            self.push(key, None, format!("missing: expected {expected}"));
+        }
+        v
+    }
+
+    /// A required length in mm, finite and > 0, in metres.
+    pub fn length(&mut self, key: &str, v: Option<f64>) -> f64 {
+        const WANT: &str = "a length > 0 mm";
+        match self.required(key, v, WANT) {
+            Some(mm) if mm.is_finite() && mm > 0.0 => mm * M_PER_MM,
+            Some(mm) => self.bad(key, mm, WANT),
+            None => 0.0,
+        }
+    }
+
+    /// A signed distance in mm (may be 0 or negative, must be finite), in metres.
+    pub fn distance(&mut self, key: &str, v: Option<f64>, default_mm: f64) -> f64 {
+        self.finite(key, v.unwrap_or(default_mm), "a finite distance in mm") * M_PER_MM
+    }
+
+    /// A required signed coordinate in mm, in metres.
+    pub fn coordinate(&mut self, key: &str, mm: f64) -> f64 {
+        self.finite(key, mm, "a finite coordinate in mm") * M_PER_MM
+    }
+
+    /// An angle in degrees (finite), in radians.
+    pub fn angle(&mut self, key: &str, v: Option<f64>, default_deg: f64) -> f64 {
+        self.finite(key, v.unwrap_or(default_deg), "a finite angle in degrees")
+            .to_radians()
+    }
+
+    /// A finite number, or a problem and 0.
+    fn finite(&mut self, key: &str, v: f64, expected: &str) -> f64 {
+        if v.is_finite() {
+            v
+        } else {
+            self.bad(key, v, expected)
+        }
+    }
+
+    /// A positive finite number (no unit conversion), or a problem and 0.
+    pub fn positive(&mut self, key: &str, v: f64, expected: &str) -> f64 {
+        if v.is_finite() && v > 0.0 {
+            v
+        } else {
+            self.bad(key, v, expected)
+        }
+    }
+
+    /// Report `key = v: expected …` and return the placeholder 0.
+    fn bad(&mut self, key: &str, v: f64, expected: &str) -> f64 {
+        self.push(key, Some(number(v)), format!("expected {expected}"));
+        0.0
+    }
+
+    /// A required name (non-empty).
+    pub fn name(&mut self, key: &str, v: Option<&String>) -> String {
+        match self.required(key, v, "a point name") {
+            Some(s) if s.trim().is_empty() => {
+                self.push(key, Some(quoted(s)), "expected a non-empty point name");
+                String::new()
+            }
+            Some(s) => s.clone(),
+            None => String::new(),
+        }
+    }
+
+    /// A link number ≥ `min` (0 is the frame), or a problem and `None`.
+    pub fn link(&mut self, key: &str, v: i64, min: u32) -> Option<u32> {
+        match u32::try_from(v) {
+            Ok(l) if l >= min => Some(l),
+            _ => {
+                let want = if min == 0 {
+                    "a link number ≥ 0 (0: the frame)"
+                } else {
+                    "a link number ≥ 1"
+                };
+                self.push(key, Some(v.to_string()), format!("expected {want}"));
+                None
+            }
+        }
+    }
+
+    /// Two distinct link numbers ≥ `min` (`links = [i, j]`).
+    pub fn link_pair(&mut self, key: &str, v: Option<&Vec<i64>>, min: u32) -> Option<[u32; 2]> {
+        let v = self.required(key, v, "two link numbers [i, j]")?;
+        let [i, j] = v.as_slice() else {
+            self.push(
+                key,
+                Some(format!("{v:?}")),
+                "expected two link numbers [i, j]",
+            );
+            return None;
+        };
+        let (i, j) = (self.link(key, *i, min)?, self.link(key, *j, min)?);
+        if i == j {
+            self.push(
+                key,
+                Some(format!("{v:?}")),
+                "expected two different link numbers",
+            );
+            return None;
+        }
+        Some([i, j])
+    }
+
+    /// One of the `words`, matched case-insensitively; the index of the match.
+    pub fn word(&mut self, key: &str, v: Option<&String>, words: &[&str]) -> Option<usize> {
+        let expected = one_of(words);
+        let s = self.required(key, v, &expected)?;
+        let found = words
+            .iter()
+            .position(|w| w.to_lowercase() == s.to_lowercase());
+        if found.is_none() {
+            self.push(key, Some(quoted(s)), format!("expected {expected}"));
+        }
+        found
+    }
+}
+
+/// `"a", "b" or "c"`.
+pub(crate) fn one_of(words: &[&str]) -> String {
+    let quoted: Vec<String> = words.iter().map(|w| quoted(w)).collect();
+    match quoted.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        Some((last, _)) => last.clone(),
+        None => String::new(),
+    }
+}

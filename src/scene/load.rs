@@ -1,0 +1,254 @@
+//! Reading a scene file: TOML → raw structs → one validation pass → [`Scene`].
+
+use super::check::{item, number, quoted, Checker};
+use super::error::SceneError;
+use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
+use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
+use super::structure::mechanism;
+use crate::scale::{Quantity, Scale};
+use std::path::Path;
+
+/// The default number of crank positions.
+const DEFAULT_COUNT: i64 = 12;
+/// The most crank positions a scene may ask for (one per degree).
+const MAX_COUNT: i64 = 360;
+/// The word for the extreme position that begins the working stroke.
+const WORKING_STROKE: &str = "working-stroke";
+
+/// Read and validate the scene file at `path`.
+///
+/// Lengths in the file are millimetres, angles degrees, `omega` rad/s or `n` rpm; the
+/// [`Scene`] holds metres and radians. Every problem is reported with the file, the key path,
+/// the value and what was expected (see `constructions/README.md` for the format).
+pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    let text = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    parse(&text, path)
+}
+
+/// Validate the scene text `text`; `path` names it in messages and gives the default title
+/// (the file stem).
+pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
+    let raw: RawScene = toml::from_str(text).map_err(|e| toml_error(text, path, &e))?;
+    let mut check = Checker::default();
+    let stem = path
+        .file_stem()
+        .map_or_else(|| "scene".to_string(), |s| s.to_string_lossy().into_owned());
+    let title = title(raw.task.unwrap_or_default(), &stem);
+    let mechanism = mechanism(&mut check, raw.mechanism.as_ref());
+    let scale_l = scale_l(&mut check, raw.mechanism.as_ref().and_then(|m| m.scale_l));
+    let positions = positions(&mut check, raw.positions.unwrap_or_default());
+    let plates = plates(&mut check, raw.plates.unwrap_or_default());
+    match mechanism {
+        Some(mechanism) if check.problems.is_empty() => Ok(Scene {
+            path: path.to_path_buf(),
+            stem,
+            title,
+            mechanism,
+            scale_l,
+            positions,
+            plates,
+        }),
+        _ => Err(SceneError::Invalid {
+            path: path.to_path_buf(),
+            problems: check.problems,
+        }),
+    }
+}
+
+/// `[task]`, the title defaulting to the file stem.
+fn title(task: RawTask, stem: &str) -> TitleInfo {
+    TitleInfo {
+        title: task.title.unwrap_or_else(|| stem.to_string()),
+        designation: task.designation.unwrap_or_default(),
+        author: task.author.unwrap_or_default(),
+        checked: task.checked.unwrap_or_default(),
+        organisation: task.organisation.unwrap_or_default(),
+    }
+}
+
+/// `mechanism.scale_l`, m/mm, optional.
+fn scale_l(check: &mut Checker, v: Option<f64>) -> Option<Scale> {
+    let v = v?;
+    let scale = Scale::new(v, Quantity::Length);
+    if scale.is_none() {
+        check.push(
+            "mechanism.scale_l",
+            Some(number(v)),
+            "expected a scale μ_l > 0 m/mm",
+        );
+    }
+    scale
+}
+
+/// `[positions]`.
+fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
+    let count = raw.count.unwrap_or(DEFAULT_COUNT);
+    if !(1..=MAX_COUNT).contains(&count) {
+        let expected = format!("expected a number of positions from 1 to {MAX_COUNT}");
+        check.push("positions.count", Some(count.to_string()), expected);
+    }
+    let start = match raw.start {
+        None => Start::WorkingStroke,
+        Some(RawStart::Word(w)) if w == WORKING_STROKE => Start::WorkingStroke,
+        Some(RawStart::Word(w)) => {
+            let expected = format!("expected {WORKING_STROKE:?} or a crank angle in degrees");
+            check.push("positions.start", Some(quoted(&w)), expected);
+            Start::WorkingStroke
+        }
+        Some(RawStart::Degrees(d)) => Start::Angle(check.angle("positions.start", Some(d), 0.0)),
+    };
+    PositionSpec {
+        count: u32::try_from(count).unwrap_or(0),
+        start,
+        other_extreme: raw.other_extreme.unwrap_or(true),
+    }
+}
+
+/// `[plates] wanted`, default `["positions"]`.
+fn plates(check: &mut Checker, raw: RawPlates) -> Vec<PlateKind> {
+    let wanted = raw
+        .wanted
+        .unwrap_or_else(|| vec![PlateKind::Positions.stem().to_string()]);
+    let known: Vec<&str> = PlateKind::ALL.iter().map(|k| k.stem()).collect();
+    let mut out = Vec::new();
+    for (i, stem) in wanted.iter().enumerate() {
+        match PlateKind::parse(stem) {
+            Some(kind) => out.push(kind),
+            None => {
+                let key = item("plates.wanted", i);
+                let expected = format!("expected a plate kind ({})", known.join(", "));
+                check.push(key, Some(quoted(stem)), expected);
+            }
+        }
+    }
+    out
+}
+
+/// A TOML reader error with its line, column, the key path it falls in and the offending text.
+fn toml_error(text: &str, path: &Path, e: &toml::de::Error) -> SceneError {
+    let span = e.span().unwrap_or(0..0);
+    let (line, column) = line_column(text, span.start);
+    let value = text
+        .get(span.clone())
+        .map(str::trim)
+        .filter(|s| !s.is_empty() && !s.contains('\n') && s.chars().count() <= 60);
+    let mut key = key_path_at(text, span.start);
+    let is_key = text
+        .get(span.end..)
+        .is_some_and(|rest| rest.trim_start().starts_with('='));
+    let value = match value {
+        // An unknown key: the offending text is the key itself.
+        Some(k) if is_key => {
+            key = Some(key.map_or_else(|| k.to_string(), |base| format!("{base}.{k}")));
+            None
+        }
+        v => v.map(str::to_string),
+    };
+    SceneError::Toml {
+        path: path.to_path_buf(),
+        line,
+        column,
+        key,
+        value,
+        message: e.message().trim().to_string(),
+    }
+}
+
+/// 1-based line and column (in characters) of byte `offset`.
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = text.get(..offset).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}
+
+/// The key path (`mechanism.group[1].guide.dir`) of the text at byte `offset`, read from the
+/// table headers above it and the keys on its line; `None` when nothing can be told.
+fn key_path_at(text: &str, offset: usize) -> Option<String> {
+    let before = text.get(..offset)?;
+    let mut table = String::new();
+    let mut counts: Vec<(String, usize)> = Vec::new();
+    let mut lines = before.split('\n').peekable();
+    let mut current = "";
+    while let Some(line) = lines.next() {
+        if lines.peek().is_none() {
+            current = line;
+            break;
+        }
+        if let Some(header) = header(line, &mut counts) {
+            table = header;
+        }
+    }
+    let mut keys = inline_keys(current);
+    if !table.is_empty() {
+        keys.insert(0, table);
+    }
+    (!keys.is_empty()).then(|| keys.join("."))
+}
+
+/// The path of a table header line (`[a.b]`, or `[[a.b]]` counted into `a.b[n]`).
+fn header(line: &str, counts: &mut Vec<(String, usize)>) -> Option<String> {
+    let line = line.split('#').next().unwrap_or("").trim();
+    if let Some(name) = line.strip_prefix("[[").and_then(|l| l.strip_suffix("]]")) {
+        let name = name.trim().to_string();
+        let index = match counts.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, c)) => {
+                *c += 1;
+                *c - 1
+            }
+            None => {
+                counts.push((name.clone(), 1));
+                0
+            }
+        };
+        return Some(item(&name, index));
+    }
+    let name = line.strip_prefix('[').and_then(|l| l.strip_suffix(']'))?;
+    Some(name.trim().to_string())
+}
+
+/// The keys open at the end of `prefix` (a line cut at the offending text), through inline
+/// tables: `guide = { through = "C", dir = ` gives `guide.dir`.
+fn inline_keys(prefix: &str) -> Vec<String> {
+    let mut open: Vec<String> = Vec::new();
+    let mut depth = 0usize;
+    let mut word = String::new();
+    let mut in_string = false;
+    for ch in prefix.chars() {
+        match ch {
+            '"' => in_string = !in_string,
+            _ if in_string => {}
+            '{' => {
+                depth += 1;
+                word.clear();
+            }
+            '}' => depth = depth.saturating_sub(1),
+            ',' => word.clear(),
+            '=' => {
+                open.truncate(depth);
+                open.push(word.trim().to_string());
+                word.clear();
+            }
+            c => word.push(c),
+        }
+    }
+    let mut keys = open;
+    keys.retain(|k| !k.is_empty());
+    keys
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn key_path_reads_headers_and_inline_tables() {
+        let text = "[a]\nx = 1\n[[g]]\ny = 2\n[[g]]\nguide = { through = \"C\", dir = \"q\" }\n";
+        let offset = text.find("\"q\"").unwrap_or(0);
+        assert_eq!(key_path_at(text, offset).as_deref(), Some("g[1].guide.dir"));
+        assert_eq!(line_column(text, offset), (6, 32));
+    }
+}

@@ -1,0 +1,232 @@
+//! The scene file as written: serde structs in the file's units (mm, degrees, rpm), every key
+//! optional so that a missing key is reported with its full path by the validator. Unknown
+//! keys are refused by the TOML reader.
+
+use serde::Deserialize;
+use std::fmt;
+
+/// The whole file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawScene {
+    pub task: Option<RawTask>,
+    pub mechanism: Option<RawMechanism>,
+    pub positions: Option<RawPositions>,
+    pub plates: Option<RawPlates>,
+}
+
+/// `[task]`: the title block.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawTask {
+    pub title: Option<String>,
+    pub designation: Option<String>,
+    pub author: Option<String>,
+    pub checked: Option<String>,
+    pub organisation: Option<String>,
+}
+
+/// `[mechanism]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawMechanism {
+    pub scale_l: Option<f64>,
+    #[serde(default)]
+    pub fixed: Vec<RawFixed>,
+    pub crank: Option<RawCrank>,
+    #[serde(default)]
+    pub group: Vec<RawGroup>,
+    #[serde(default)]
+    pub point: Vec<RawPoint>,
+    #[serde(default)]
+    pub redundant: Vec<RawRedundant>,
+    #[serde(default)]
+    pub output: Vec<RawOutput>,
+}
+
+/// `[[mechanism.fixed]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawFixed {
+    pub name: Option<String>,
+    pub at: Option<Vec<f64>>,
+}
+
+/// `[mechanism.crank]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawCrank {
+    pub link: Option<i64>,
+    pub centre: Option<String>,
+    pub pin: Option<String>,
+    pub length: Option<f64>,
+    pub omega: Option<f64>,
+    pub n: Option<f64>,
+    pub sense: Option<String>,
+}
+
+/// `[[mechanism.group]]`: the union of the keys of all five kinds.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawGroup {
+    pub kind: Option<String>,
+    pub links: Option<Vec<i64>>,
+    pub a: Option<String>,
+    pub la: Option<f64>,
+    pub b: Option<String>,
+    pub lb: Option<f64>,
+    pub c: Option<String>,
+    pub offset: Option<f64>,
+    pub guide: Option<RawGuide>,
+    pub guide_i: Option<RawGuide>,
+    pub guide_j: Option<RawGuide>,
+    pub slide: Option<RawDir>,
+    pub joint: Option<String>,
+    pub branch: Option<String>,
+}
+
+/// A guide: `{ through = "C", dir = 0.0, offset = 745.0 }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawGuide {
+    pub through: Option<String>,
+    pub dir: Option<RawDir>,
+    pub offset: Option<f64>,
+}
+
+/// A direction: degrees in the frame, or along two known points.
+#[derive(Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "expected a direction: degrees, or { from = \"A\", to = \"B\", angle = 0.0 }"
+)]
+pub(crate) enum RawDir {
+    /// A frame direction, degrees.
+    Degrees(f64),
+    /// `{ from = "A", to = "B", angle = 0.0 }`.
+    Along(RawAlong),
+}
+
+/// The table form of a direction.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawAlong {
+    pub from: Option<String>,
+    pub to: Option<String>,
+    pub angle: Option<f64>,
+}
+
+/// `[[mechanism.point]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPoint {
+    pub name: Option<String>,
+    pub link: Option<i64>,
+    pub along: Option<f64>,
+    pub across: Option<f64>,
+}
+
+/// `[[mechanism.redundant]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawRedundant {
+    pub name: Option<String>,
+    pub kind: Option<String>,
+    pub links: Option<Vec<i64>>,
+    pub reason: Option<String>,
+}
+
+/// `[[mechanism.output]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawOutput {
+    pub rocker: Option<i64>,
+    pub slider: Option<String>,
+    pub dir: Option<f64>,
+}
+
+/// `[positions]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPositions {
+    pub count: Option<i64>,
+    pub start: Option<RawStart>,
+    pub other_extreme: Option<bool>,
+}
+
+/// `start = "working-stroke"` or a crank angle in degrees.
+#[derive(Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "expected \"working-stroke\" or a crank angle in degrees"
+)]
+pub(crate) enum RawStart {
+    /// A word (only `working-stroke` is valid).
+    Word(String),
+    /// Degrees.
+    Degrees(f64),
+}
+
+/// `[plates]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPlates {
+    pub wanted: Option<Vec<String>>,
+}
+
+impl fmt::Display for RawDir {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RawDir::Degrees(d) => write!(f, "{d}"),
+            RawDir::Along(a) => {
+                let from = a.from.as_deref().unwrap_or("?");
+                let to = a.to.as_deref().unwrap_or("?");
+                write!(
+                    f,
+                    "{{ from = {from:?}, to = {to:?}, angle = {} }}",
+                    a.angle.unwrap_or(0.0)
+                )
+            }
+        }
+    }
+}
+
+impl fmt::Display for RawGuide {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let through = self.through.as_deref().unwrap_or("?");
+        write!(f, "{{ through = {through:?}")?;
+        if let Some(dir) = &self.dir {
+            write!(f, ", dir = {dir}")?;
+        }
+        if let Some(offset) = self.offset {
+            write!(f, ", offset = {offset}")?;
+        }
+        write!(f, " }}")
+    }
+}
+
+impl RawGroup {
+    /// The keys present in this group with their values as written (`kind` excepted).
+    pub fn present(&self) -> Vec<(&'static str, String)> {
+        let mut out = Vec::new();
+        let mut text = |key: &'static str, value: Option<String>| {
+            if let Some(v) = value {
+                out.push((key, v));
+            }
+        };
+        text("links", self.links.as_ref().map(|l| format!("{l:?}")));
+        text("a", self.a.as_ref().map(|s| format!("{s:?}")));
+        text("la", self.la.map(|v| v.to_string()));
+        text("b", self.b.as_ref().map(|s| format!("{s:?}")));
+        text("lb", self.lb.map(|v| v.to_string()));
+        text("c", self.c.as_ref().map(|s| format!("{s:?}")));
+        text("offset", self.offset.map(|v| v.to_string()));
+        text("guide", self.guide.as_ref().map(|g| g.to_string()));
+        text("guide_i", self.guide_i.as_ref().map(|g| g.to_string()));
+        text("guide_j", self.guide_j.as_ref().map(|g| g.to_string()));
+        text("slide", self.slide.as_ref().map(|d| d.to_string()));
+        text("joint", self.joint.as_ref().map(|s| format!("{s:?}")));
+        text("branch", self.branch.as_ref().map(|s| format!("{s:?}")));
+        out
+    }
+}
