@@ -172,7 +172,9 @@ pub fn demo_mechanism(mu_l: Scale) -> Figure {
     .add(
         Item::Curve {
             points: (0..12)
-                .map(|k| s2 + DVec2::from_angle(k as f64 * std::f64::consts::FRAC_PI_6) * v(22.0, 9.0))
+                .map(|k| {
+                    s2 + DVec2::from_angle(k as f64 * std::f64::consts::FRAC_PI_6) * v(22.0, 9.0)
+                })
                 .collect(),
             closed: true,
         },

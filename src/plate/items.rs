@@ -64,7 +64,8 @@ pub(crate) fn step_marks(step: &Step, map: Map) -> Vec<Mark> {
             Item::Dimension { from, to, offset } => {
                 dimension_text(map, *from, *to, *offset, &label.text)
             }
-            _ => Some(label_text(label, map)),
+            Item::Joint { .. } => Some(label_text(label, map, LABEL_GAP_MM + JOINT_RADIUS_MM)),
+            _ => Some(label_text(label, map, LABEL_GAP_MM)),
         };
         out.extend(placed.map(Mark::Text));
     }
@@ -257,9 +258,10 @@ fn dimension_text(map: Map, from: DVec2, to: DVec2, offset: f64, text: &str) -> 
     let mid = map.pt((from + to) * 0.5 + u.perp() * offset);
     let s = map.dir(u);
     let mut deg = s.y.atan2(s.x).to_degrees();
-    if deg > 90.0 {
+    // ГОСТ 2.307: horizontal texts read left to right, vertical ones bottom to top.
+    if deg >= 90.0 {
         deg -= 180.0;
-    } else if deg <= -90.0 {
+    } else if deg < -90.0 {
         deg += 180.0;
     }
     let up = DVec2::new(deg.to_radians().sin(), -deg.to_radians().cos());
@@ -285,11 +287,11 @@ fn angle_mark(map: Map, a: &Arc, out: &mut Vec<Mark>) {
     out.extend(arrow.head(map, at(start), at(start) - at(start + back)));
 }
 
-/// A label beside its anchor, `LABEL_GAP_MM` toward `toward`, aligned so that the text
-/// lies on that side; centred on the anchor when `toward` is zero.
-fn label_text(label: &Label, map: Map) -> Placed {
+/// A label `gap` mm from its anchor toward `toward`, aligned so that the text lies on that
+/// side; centred on the anchor when `toward` is zero.
+fn label_text(label: &Label, map: Map, gap: f64) -> Placed {
     let t = map.dir(label.toward).normalize_or_zero();
-    let c = map.pt(label.anchor) + t * LABEL_GAP_MM;
+    let c = map.pt(label.anchor) + t * gap;
     let align = if t.x > 0.35 {
         Align::Start
     } else if t.x < -0.35 {
@@ -306,4 +308,69 @@ fn label_text(label: &Label, map: Map) -> Placed {
         c.y + h * 0.5
     };
     Placed::new(DVec2::new(c.x, baseline), &label.text, h, align)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn placed(toward: DVec2) -> Placed {
+        let label = Label {
+            text: "B".into(),
+            anchor: DVec2::new(10.0, 10.0),
+            toward,
+        };
+        label_text(&label, Map::figure(DVec2::new(100.0, 100.0)), LABEL_GAP_MM)
+    }
+
+    #[test]
+    fn labels_sit_on_the_side_they_point_to() {
+        // Anchor (10, 10) in the figure is (110, 90) on the sheet.
+        let right = placed(DVec2::X);
+        assert_eq!(
+            (right.align, right.at),
+            (Align::Start, DVec2::new(112.5, 91.75))
+        );
+        let above = placed(DVec2::Y);
+        assert_eq!(
+            (above.align, above.at),
+            (Align::Middle, DVec2::new(110.0, 87.5))
+        );
+        let below = placed(-DVec2::Y);
+        assert_eq!(
+            (below.align, below.at),
+            (Align::Middle, DVec2::new(110.0, 96.0))
+        );
+        let left = placed(-DVec2::X);
+        assert_eq!(left.align, Align::End);
+        let centred = placed(DVec2::ZERO);
+        assert_eq!(
+            (centred.align, centred.at),
+            (Align::Middle, DVec2::new(110.0, 91.75))
+        );
+    }
+
+    #[test]
+    fn dimension_text_is_readable_and_above_its_line() {
+        let t = dimension_text(
+            Map::figure(DVec2::ZERO),
+            DVec2::new(50.0, 0.0),
+            DVec2::ZERO,
+            10.0,
+            "50",
+        )
+        .unwrap();
+        // Right to left with the offset below: the text still reads left to right, above.
+        assert_eq!(t.rotate, 0.0);
+        assert!((t.at - DVec2::new(25.0, 9.0)).length() < 1e-9, "{:?}", t.at);
+        let v = dimension_text(
+            Map::figure(DVec2::ZERO),
+            DVec2::ZERO,
+            DVec2::new(0.0, 40.0),
+            5.0,
+            "40",
+        )
+        .unwrap();
+        assert_eq!(v.rotate, -90.0);
+    }
 }

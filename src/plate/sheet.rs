@@ -302,7 +302,7 @@ fn in_cell(cell: Cell, text: &str, height: f64, align: Align) -> Placed {
         DVec2::new(x, (y0 + y1) * 0.5),
         text,
         height,
-        x1 - x0 - 2.0,
+        x1 - x0 - 3.0,
         align,
     )
 }
