@@ -11,5 +11,6 @@
 pub mod construct;
 pub mod geom;
 pub mod linkage;
+pub mod plate;
 pub mod scale;
 pub mod scene;

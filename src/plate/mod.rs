@@ -1,0 +1,196 @@
+//! Plates: recorded figures drawn 1:1 on ГОСТ drawing sheets, written as SVG and PNG.
+//!
+//! A [`Plate`] is a [`Sheet`] (ГОСТ 2.301 size, frame and title block per ГОСТ 2.104) with
+//! [`View`]s — each a recorded [`Figure`] placed at a sheet position — and free [`TextBlock`]s.
+//! Figures are drawn at their own μ and never rescaled: one figure millimetre is one sheet
+//! millimetre. Line types follow ГОСТ 2.303 (see [`Pen`]), text is DejaVu Sans bundled with
+//! the program, so the output is the same on every machine.
+//!
+//! Sheet coordinates are millimetres from the top-left corner, y **down** (the SVG
+//! convention); figure coordinates are millimetres, y **up**.
+//!
+//! ```
+//! use tmm::plate::{to_svg, Plate, Sheet, SheetSize, TitleBlock};
+//! use tmm::scale::Lang;
+//! let plate = Plate {
+//!     name: "empty".into(),
+//!     sheet: Sheet { size: SheetSize::A3, landscape: true },
+//!     title_block: TitleBlock::default(),
+//!     lang: Lang::Ru,
+//!     views: Vec::new(),
+//!     texts: Vec::new(),
+//! };
+//! let svg = to_svg(&plate);
+//! assert!(svg.contains(r#"width="420mm""#));
+//! assert_eq!(svg, to_svg(&plate));
+//! ```
+
+mod demo;
+mod fonts;
+mod items;
+mod path;
+mod raster;
+mod sheet;
+mod style;
+mod svg;
+pub mod text;
+mod write;
+
+use crate::construct::Figure;
+use crate::geom::DVec2;
+use crate::scale::Lang;
+use thiserror::Error;
+
+pub use demo::{demo_mechanism, demo_plate, demo_velocity_plan};
+pub use fonts::font_database;
+pub use raster::{to_png, to_png_dpi};
+pub use sheet::{Sheet, SheetSize, TitleBlock};
+pub use style::Pen;
+pub use svg::to_svg;
+pub use write::write_atomic;
+
+/// An axis-aligned rectangle on the sheet, millimetres, origin top-left, y down.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rect {
+    /// Top-left corner.
+    pub min: DVec2,
+    /// Bottom-right corner.
+    pub max: DVec2,
+}
+
+impl Rect {
+    /// The rectangle with corners `min` and `max`.
+    pub fn new(min: DVec2, max: DVec2) -> Self {
+        Self { min, max }
+    }
+    /// Width, mm.
+    pub fn width(&self) -> f64 {
+        self.max.x - self.min.x
+    }
+    /// Height, mm.
+    pub fn height(&self) -> f64 {
+        self.max.y - self.min.y
+    }
+    /// The centre.
+    pub fn center(&self) -> DVec2 {
+        (self.min + self.max) * 0.5
+    }
+}
+
+/// A figure placed on the sheet.
+#[derive(Debug, Clone, PartialEq)]
+pub struct View {
+    /// The recorded figure, drawn 1:1 (its μ is the truth).
+    pub figure: Figure,
+    /// Where the figure's (0, 0) lands on the sheet (sheet mm, y down): a figure point `p`
+    /// is drawn at `(origin.x + p.x, origin.y − p.y)`.
+    pub origin: DVec2,
+    /// Caption in label markup, written centred under the figure's bounds.
+    pub caption: Option<String>,
+}
+
+/// Height of the band kept under a figure for its caption, mm.
+pub const CAPTION_BAND_MM: f64 = 14.0;
+
+impl View {
+    /// Place `figure` so that its bounds (plus the caption band when there is a caption) are
+    /// centred in `region` (sheet mm, y down).
+    ///
+    /// # Errors
+    /// [`PlateError::DoesNotFit`] when the figure is wider or taller than the region.
+    pub fn centred(
+        figure: Figure,
+        region: Rect,
+        caption: Option<String>,
+    ) -> Result<View, PlateError> {
+        let (lo, hi) = figure.bounds().unwrap_or((DVec2::ZERO, DVec2::ZERO));
+        let band = if caption.is_some() {
+            CAPTION_BAND_MM
+        } else {
+            0.0
+        };
+        let (need_w, need_h) = (hi.x - lo.x, hi.y - lo.y + band);
+        if need_w > region.width() || need_h > region.height() {
+            return Err(PlateError::DoesNotFit {
+                view: figure.title.clone(),
+                need_w,
+                need_h,
+                have_w: region.width(),
+                have_h: region.height(),
+            });
+        }
+        // The figure's bounds centre goes to the region centre, lifted by half the band.
+        let c = region.center() - DVec2::new(0.0, band * 0.5);
+        let mid = (lo + hi) * 0.5;
+        let origin = DVec2::new(c.x - mid.x, c.y + mid.y);
+        Ok(View {
+            figure,
+            origin,
+            caption,
+        })
+    }
+
+    /// The sheet position of a figure point.
+    pub fn to_sheet(&self, p: DVec2) -> DVec2 {
+        DVec2::new(self.origin.x + p.x, self.origin.y - p.y)
+    }
+}
+
+/// Free text on the sheet (notes, tables of results).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TextBlock {
+    /// Top-left corner of the first line, sheet mm, y down.
+    pub at: DVec2,
+    /// Lines in label markup.
+    pub lines: Vec<String>,
+    /// Text height (ГОСТ 2.304 size: the height of capitals), mm.
+    pub size_mm: f64,
+}
+
+/// A drawing sheet with its views and texts.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plate {
+    /// Name (used for file names).
+    pub name: String,
+    /// The sheet.
+    pub sheet: Sheet,
+    /// The filled title block.
+    pub title_block: TitleBlock,
+    /// Language of the title block captions.
+    pub lang: Lang,
+    /// Views, drawn in order.
+    pub views: Vec<View>,
+    /// Free texts, drawn after the views.
+    pub texts: Vec<TextBlock>,
+}
+
+/// A plate that cannot be laid out or rendered.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum PlateError {
+    /// A figure is larger than the region it was given.
+    #[error(
+        "view “{view}” does not fit: it needs {need_w:.1} × {need_h:.1} mm, \
+         the region is {have_w:.1} × {have_h:.1} mm"
+    )]
+    DoesNotFit {
+        /// The figure's title.
+        view: String,
+        /// Width needed, mm.
+        need_w: f64,
+        /// Height needed (caption band included), mm.
+        need_h: f64,
+        /// Width available, mm.
+        have_w: f64,
+        /// Height available, mm.
+        have_h: f64,
+    },
+    /// The SVG could not be parsed.
+    #[error("SVG cannot be parsed: {0}")]
+    Svg(String),
+    /// The SVG could not be rasterised or encoded.
+    #[error("PNG cannot be rendered: {0}")]
+    Raster(String),
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,250 @@
+//! SVG path data in sheet millimetres, every number rounded by [`num`].
+
+use crate::geom::{Arc, DVec2};
+use std::f64::consts::{FRAC_PI_2, TAU};
+use std::fmt::Write as _;
+
+/// Format a coordinate for the SVG: rounded to 0.01 mm, no `-0`, no exponent; a non-finite
+/// value is written as `0` so that a bad figure can never produce an unreadable file.
+pub(crate) fn num(x: f64) -> String {
+    let r = (x * 100.0).round() / 100.0;
+    if !r.is_finite() || r == 0.0 {
+        return "0".into();
+    }
+    format!("{r}")
+}
+
+/// The largest number of pieces a single drawn element is split into (hatch strokes, arc
+/// quarters); guards against absurd figures producing unbounded output.
+pub(crate) const MAX_PIECES: usize = 20_000;
+
+/// How many pieces of `spacing` fit in `length`, bounded by [`MAX_PIECES`]; 0 for
+/// non-finite or non-positive input.
+pub(crate) fn pieces(length: f64, spacing: f64) -> usize {
+    let n = length / spacing;
+    if n.is_finite() && n > 0.0 {
+        (n.floor() as usize).min(MAX_PIECES)
+    } else {
+        0
+    }
+}
+
+/// The mapping from source coordinates to the sheet: a translation, with y flipped for
+/// figures (y up) and kept for sheet furniture (y down).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Map {
+    origin: DVec2,
+    flip: bool,
+}
+
+impl Map {
+    /// Sheet coordinates as they are.
+    pub(crate) const SHEET: Map = Map {
+        origin: DVec2::ZERO,
+        flip: false,
+    };
+
+    /// Sheet coordinates (y down) whose (0, 0) lands at `origin`.
+    pub(crate) fn sheet_at(origin: DVec2) -> Self {
+        Self {
+            origin,
+            flip: false,
+        }
+    }
+    /// Figure coordinates whose (0, 0) lands at `origin` on the sheet.
+    pub(crate) fn figure(origin: DVec2) -> Self {
+        Self { origin, flip: true }
+    }
+    /// A source point on the sheet.
+    pub(crate) fn pt(&self, p: DVec2) -> DVec2 {
+        if self.flip {
+            DVec2::new(self.origin.x + p.x, self.origin.y - p.y)
+        } else {
+            self.origin + p
+        }
+    }
+    /// A source direction on the sheet.
+    pub(crate) fn dir(&self, v: DVec2) -> DVec2 {
+        if self.flip {
+            DVec2::new(v.x, -v.y)
+        } else {
+            v
+        }
+    }
+}
+
+/// Path data being built; points are given in source coordinates and mapped.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct PathData {
+    map: Map,
+    d: String,
+}
+
+impl PathData {
+    /// Empty data under `map`.
+    pub(crate) fn new(map: Map) -> Self {
+        Self {
+            map,
+            d: String::new(),
+        }
+    }
+    /// True when nothing was drawn.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.d.is_empty()
+    }
+    /// The `d` attribute.
+    pub(crate) fn into_string(self) -> String {
+        self.d
+    }
+
+    fn cmd(&mut self, c: char, pts: &[DVec2]) -> &mut Self {
+        if !self.d.is_empty() {
+            self.d.push(' ');
+        }
+        self.d.push(c);
+        for (i, p) in pts.iter().enumerate() {
+            let q = self.map.pt(*p);
+            let sep = if i == 0 { "" } else { " " };
+            let _ = write!(self.d, "{sep}{},{}", num(q.x), num(q.y));
+        }
+        self
+    }
+    /// Start a subpath.
+    pub(crate) fn move_to(&mut self, p: DVec2) -> &mut Self {
+        self.cmd('M', &[p])
+    }
+    /// A straight piece.
+    pub(crate) fn line_to(&mut self, p: DVec2) -> &mut Self {
+        self.cmd('L', &[p])
+    }
+    /// A cubic Bézier piece.
+    pub(crate) fn cubic_to(&mut self, c1: DVec2, c2: DVec2, p: DVec2) -> &mut Self {
+        self.cmd('C', &[c1, c2, p])
+    }
+    /// Close the subpath.
+    pub(crate) fn close(&mut self) -> &mut Self {
+        self.d.push_str(" Z");
+        self
+    }
+    /// A separate straight stroke.
+    pub(crate) fn segment(&mut self, a: DVec2, b: DVec2) -> &mut Self {
+        self.move_to(a).line_to(b)
+    }
+    /// A closed polygon.
+    pub(crate) fn polygon(&mut self, pts: &[DVec2]) -> &mut Self {
+        self.polyline(pts);
+        if pts.len() > 2 {
+            self.close();
+        }
+        self
+    }
+    /// An axis-aligned rectangle.
+    pub(crate) fn rect(&mut self, min: DVec2, max: DVec2) -> &mut Self {
+        self.polygon(&[min, DVec2::new(max.x, min.y), max, DVec2::new(min.x, max.y)])
+    }
+    /// An open polyline (nothing for fewer than two points).
+    pub(crate) fn polyline(&mut self, pts: &[DVec2]) -> &mut Self {
+        if let [first, rest @ ..] = pts {
+            if !rest.is_empty() {
+                self.move_to(*first);
+                rest.iter().for_each(|p| {
+                    self.line_to(*p);
+                });
+            }
+        }
+        self
+    }
+
+    /// A circular arc as SVG arc commands, in pieces of at most a quarter turn (so the
+    /// large-arc flag is always 0 and the output does not depend on flag conventions).
+    /// Sweeps beyond a full turn are clamped; degenerate arcs draw nothing.
+    pub(crate) fn arc(&mut self, arc: &Arc) -> &mut Self {
+        let sweep = arc.sweep.clamp(-TAU, TAU);
+        let ok = arc.radius.is_finite() && arc.radius > 0.0 && sweep.is_finite() && sweep != 0.0;
+        if !ok || !arc.start.is_finite() || !arc.center.is_finite() {
+            return self;
+        }
+        let n = (sweep.abs() / FRAC_PI_2).ceil().max(1.0) as usize;
+        // Counter-clockwise in source coordinates is the positive SVG sweep only when y is
+        // not flipped.
+        let flag = u8::from((sweep > 0.0) != self.map.flip);
+        let r = num(arc.radius);
+        let piece = Arc { sweep, ..*arc };
+        self.move_to(piece.eval(0.0));
+        for i in 1..=n {
+            let q = self.map.pt(piece.eval(i as f64 / n as f64));
+            let _ = write!(self.d, " A{r},{r} 0 0 {flag} {},{}", num(q.x), num(q.y));
+        }
+        self
+    }
+
+    /// A full circle.
+    pub(crate) fn circle(&mut self, center: DVec2, radius: f64) -> &mut Self {
+        self.arc(&Arc {
+            center,
+            radius,
+            start: 0.0,
+            sweep: TAU,
+        });
+        if !self.d.is_empty() {
+            self.close();
+        }
+        self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn num_rounds_to_hundredths_without_negative_zero() {
+        assert_eq!(num(1.23456), "1.23");
+        assert_eq!(num(-0.001), "0");
+        assert_eq!(num(-0.0), "0");
+        assert_eq!(num(0.1 + 0.2), "0.3");
+        assert_eq!(num(841.0), "841");
+        assert_eq!(num(-12.345_001), "-12.35");
+        assert_eq!(num(f64::NAN), "0");
+        assert_eq!(num(1e20), "100000000000000000000");
+    }
+
+    #[test]
+    fn figure_map_flips_y() {
+        let m = Map::figure(DVec2::new(100.0, 200.0));
+        assert_eq!(m.pt(DVec2::new(10.0, 20.0)), DVec2::new(110.0, 180.0));
+        let mut d = PathData::new(m);
+        d.segment(DVec2::ZERO, DVec2::new(1.006, -2.0));
+        assert_eq!(d.into_string(), "M100,200 L101.01,202");
+    }
+
+    #[test]
+    fn arcs_split_into_quarters_with_flag_by_orientation() {
+        let a = Arc {
+            center: DVec2::ZERO,
+            radius: 10.0,
+            start: 0.0,
+            sweep: std::f64::consts::PI,
+        };
+        let mut d = PathData::new(Map::figure(DVec2::ZERO));
+        d.arc(&a);
+        assert_eq!(
+            d.into_string(),
+            "M10,0 A10,10 0 0 0 0,-10 A10,10 0 0 0 -10,0"
+        );
+        let mut d = PathData::new(Map::SHEET);
+        d.arc(&Arc {
+            sweep: f64::NAN,
+            ..a
+        });
+        assert!(d.is_empty());
+    }
+
+    #[test]
+    fn pieces_are_bounded() {
+        assert_eq!(pieces(10.0, 2.5), 4);
+        assert_eq!(pieces(1e300, 2.5), MAX_PIECES);
+        assert_eq!(pieces(f64::NAN, 2.5), 0);
+        assert_eq!(pieces(-3.0, 2.5), 0);
+    }
+}

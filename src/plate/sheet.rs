@@ -1,0 +1,418 @@
+//! Sheets (ГОСТ 2.301), the frame and the main title block (ГОСТ 2.104, form 1).
+
+use super::path::{Map, PathData};
+use super::style::{Mark, Paint, Pen};
+use super::text::{Align, Placed};
+use super::Rect;
+use crate::geom::DVec2;
+use crate::scale::Lang;
+
+/// A ГОСТ 2.301 sheet format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum SheetSize {
+    /// 210 × 297 mm.
+    A4,
+    /// 297 × 420 mm.
+    A3,
+    /// 420 × 594 mm.
+    A2,
+    /// 594 × 841 mm (the course's plates).
+    #[default]
+    A1,
+    /// 841 × 1189 mm.
+    A0,
+}
+
+impl SheetSize {
+    /// (short side, long side), mm.
+    pub fn sides_mm(self) -> (f64, f64) {
+        match self {
+            SheetSize::A4 => (210.0, 297.0),
+            SheetSize::A3 => (297.0, 420.0),
+            SheetSize::A2 => (420.0, 594.0),
+            SheetSize::A1 => (594.0, 841.0),
+            SheetSize::A0 => (841.0, 1189.0),
+        }
+    }
+    /// Parse `A4` … `A0` (either case).
+    pub fn parse(s: &str) -> Option<Self> {
+        match s.to_ascii_uppercase().as_str() {
+            "A4" => Some(SheetSize::A4),
+            "A3" => Some(SheetSize::A3),
+            "A2" => Some(SheetSize::A2),
+            "A1" => Some(SheetSize::A1),
+            "A0" => Some(SheetSize::A0),
+            _ => None,
+        }
+    }
+}
+
+/// Left margin of the frame (filing edge), mm.
+pub const FRAME_LEFT_MM: f64 = 20.0;
+/// Margin of the frame on the other three sides, mm.
+pub const FRAME_MM: f64 = 5.0;
+/// Size of the main title block, mm.
+pub const TITLE_BLOCK_MM: (f64, f64) = (185.0, 55.0);
+/// Size of the rotated designation box in the top-left corner, mm.
+pub const DESIGNATION_BOX_MM: (f64, f64) = (70.0, 14.0);
+
+/// A sheet: format and orientation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Sheet {
+    /// The format.
+    pub size: SheetSize,
+    /// Long side horizontal.
+    pub landscape: bool,
+}
+
+impl Default for Sheet {
+    /// A1 landscape, the course's plate.
+    fn default() -> Self {
+        Sheet {
+            size: SheetSize::A1,
+            landscape: true,
+        }
+    }
+}
+
+impl Sheet {
+    /// (width, height), mm.
+    pub fn size_mm(&self) -> (f64, f64) {
+        let (short, long) = self.size.sides_mm();
+        if self.landscape {
+            (long, short)
+        } else {
+            (short, long)
+        }
+    }
+    /// Width, mm.
+    pub fn width_mm(&self) -> f64 {
+        self.size_mm().0
+    }
+    /// Height, mm.
+    pub fn height_mm(&self) -> f64 {
+        self.size_mm().1
+    }
+    /// The frame: 20 mm from the left edge, 5 mm from the others.
+    pub fn frame(&self) -> Rect {
+        Rect::new(
+            DVec2::new(FRAME_LEFT_MM, FRAME_MM),
+            DVec2::new(self.width_mm() - FRAME_MM, self.height_mm() - FRAME_MM),
+        )
+    }
+    /// The main title block, in the bottom-right corner inside the frame.
+    pub fn title_block(&self) -> Rect {
+        let f = self.frame();
+        Rect::new(
+            f.max - DVec2::new(TITLE_BLOCK_MM.0, TITLE_BLOCK_MM.1),
+            f.max,
+        )
+    }
+    /// The rotated designation box in the top-left corner of the frame.
+    pub fn designation_box(&self) -> Rect {
+        let f = self.frame();
+        Rect::new(
+            f.min,
+            f.min + DVec2::new(DESIGNATION_BOX_MM.0, DESIGNATION_BOX_MM.1),
+        )
+    }
+    /// The drawing field: inside the frame, below the designation box and above the title
+    /// block, full frame width.
+    pub fn field(&self) -> Rect {
+        let f = self.frame();
+        Rect::new(
+            DVec2::new(f.min.x, self.designation_box().max.y),
+            DVec2::new(f.max.x, self.title_block().min.y),
+        )
+    }
+    /// The rest of the field: left of the title block, down to the frame (empty on A4
+    /// portrait, where the title block is as wide as the frame).
+    pub fn field_beside_title_block(&self) -> Rect {
+        let (f, t) = (self.frame(), self.title_block());
+        Rect::new(DVec2::new(f.min.x, t.min.y), DVec2::new(t.min.x, f.max.y))
+    }
+}
+
+/// The filled main title block (ГОСТ 2.104, form 1). Texts are label markup.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct TitleBlock {
+    /// Title of the work (the mechanism): the big centre cell.
+    pub title: String,
+    /// Title of this sheet, under `title`.
+    pub sheet_title: String,
+    /// Document designation (top cell and the rotated box).
+    pub designation: String,
+    /// Drawn by.
+    pub author: String,
+    /// Checked by.
+    pub checked: String,
+    /// Organisation (university, group).
+    pub organisation: String,
+    /// Scale, as written in the «Масштаб» cell.
+    pub scale: String,
+    /// Number of this sheet.
+    pub sheet_no: u32,
+    /// Number of sheets.
+    pub sheets: u32,
+}
+
+/// Captions of the title block cells in one language.
+struct Captions {
+    changes: [&'static str; 5],
+    people: [&'static str; 6],
+    letter: &'static str,
+    mass: &'static str,
+    scale: &'static str,
+    sheet: &'static str,
+    sheets: &'static str,
+}
+
+fn captions(lang: Lang) -> Captions {
+    let p = |ru, uk, en| lang.pick(ru, uk, en);
+    Captions {
+        changes: [
+            p("Изм.", "Зм.", "Rev."),
+            p("Лист", "Арк.", "Sheet"),
+            p("№ докум.", "№ докум.", "Doc. No."),
+            p("Подп.", "Підпис", "Sign."),
+            p("Дата", "Дата", "Date"),
+        ],
+        people: [
+            p("Разраб.", "Розроб.", "Drawn"),
+            p("Пров.", "Перев.", "Checked"),
+            p("Т.контр.", "Т.контр.", "T.contr."),
+            "",
+            p("Н.контр.", "Н.контр.", "N.contr."),
+            p("Утв.", "Затв.", "Approved"),
+        ],
+        letter: p("Лит.", "Літ.", "Lit."),
+        mass: p("Масса", "Маса", "Mass"),
+        scale: p("Масштаб", "Масштаб", "Scale"),
+        sheet: p("Лист", "Арк.", "Sheet"),
+        sheets: p("Листов", "Аркушів", "Sheets"),
+    }
+}
+
+/// Column edges of the change and signature part, mm from the block's left edge.
+const COLUMNS: [f64; 6] = [0.0, 7.0, 17.0, 40.0, 55.0, 65.0];
+/// Row pitch of the left part, mm.
+const ROW: f64 = 5.0;
+/// Left edge of the right part (Лит., Масса, Масштаб, Лист, organisation), mm.
+const RIGHT: f64 = 135.0;
+/// ГОСТ 2.304 size of the cell captions, mm.
+const CAPTION_H: f64 = 2.5;
+
+/// The trim border, the frame and the designation box.
+pub(crate) fn frame_marks(sheet: &Sheet, tb: &TitleBlock) -> Vec<Mark> {
+    let trim = Rect::new(DVec2::ZERO, DVec2::new(sheet.width_mm(), sheet.height_mm()));
+    let boxed = sheet.designation_box();
+    let mut out: Vec<Mark> = [
+        (Pen::THIN, trim),
+        (Pen::MAIN, sheet.frame()),
+        (Pen::MAIN, boxed),
+    ]
+    .into_iter()
+    .filter_map(|(pen, r)| {
+        let mut d = PathData::new(Map::SHEET);
+        d.rect(r.min, r.max);
+        Mark::path(Paint::Stroke(pen), d)
+    })
+    .collect();
+    // Rotated half a turn about the box centre: the capitals hang from the baseline.
+    let mut text = fitted(
+        boxed.center(),
+        &tb.designation,
+        5.0,
+        boxed.width() - 4.0,
+        Align::Middle,
+    );
+    text.at.y -= text.height;
+    text.rotate = 180.0;
+    out.push(Mark::Text(text));
+    out
+}
+
+/// The title block: its grid and its texts.
+pub(crate) fn title_block_marks(sheet: &Sheet, tb: &TitleBlock, lang: Lang) -> Vec<Mark> {
+    let map = Map::sheet_at(sheet.title_block().min);
+    let mut out = Vec::new();
+    out.extend(grid(map, Pen::MAIN, &main_lines()));
+    out.extend(grid(map, Pen::THIN, &thin_lines()));
+    let c = captions(lang);
+    let mut texts = Vec::new();
+    captions_into(&c, &mut texts);
+    filling_into(tb, &mut texts);
+    texts.extend(sheet_numbers(&c, tb));
+    out.extend(texts.into_iter().map(|t| Mark::Text(t.mapped(map))));
+    out
+}
+
+type Line = ((f64, f64), (f64, f64));
+
+fn grid(map: Map, pen: Pen, lines: &[Line]) -> Option<Mark> {
+    let mut d = PathData::new(map);
+    for &((x0, y0), (x1, y1)) in lines {
+        d.segment(DVec2::new(x0, y0), DVec2::new(x1, y1));
+    }
+    Mark::path(Paint::Stroke(pen), d)
+}
+
+fn main_lines() -> Vec<Line> {
+    let (w, h) = TITLE_BLOCK_MM;
+    let mut v = vec![
+        ((0.0, 0.0), (w, 0.0)),
+        ((0.0, h), (w, h)),
+        ((0.0, 0.0), (0.0, h)),
+        ((w, 0.0), (w, h)),
+        ((0.0, 25.0), (65.0, 25.0)),
+        ((65.0, 15.0), (w, 15.0)),
+        ((RIGHT, 20.0), (w, 20.0)),
+        ((RIGHT, 35.0), (w, 35.0)),
+        ((65.0, 40.0), (w, 40.0)),
+        ((RIGHT, 15.0), (RIGHT, h)),
+        ((150.0, 15.0), (150.0, 35.0)),
+        ((167.0, 15.0), (167.0, 35.0)),
+        ((155.0, 35.0), (155.0, 40.0)),
+        ((7.0, 0.0), (7.0, 25.0)),
+    ];
+    v.extend(COLUMNS[2..].iter().map(|&x| ((x, 0.0), (x, h))));
+    v
+}
+
+fn thin_lines() -> Vec<Line> {
+    let rows = (1..11)
+        .filter(|&k| k != 5)
+        .map(|k| ((0.0, k as f64 * ROW), (65.0, k as f64 * ROW)));
+    let letters = [140.0, 145.0].map(|x| ((x, 20.0), (x, 35.0)));
+    rows.chain(letters).collect()
+}
+
+/// A cell of the block: (x0, y0, x1, y1) in block mm.
+type Cell = (f64, f64, f64, f64);
+
+/// Text in a cell, vertically centred, shrunk when it would not fit the cell's width.
+fn in_cell(cell: Cell, text: &str, height: f64, align: Align) -> Placed {
+    let (x0, y0, x1, y1) = cell;
+    let x = match align {
+        Align::Start => x0 + 1.0,
+        Align::Middle => (x0 + x1) * 0.5,
+        Align::End => x1 - 1.0,
+    };
+    fitted(
+        DVec2::new(x, (y0 + y1) * 0.5),
+        text,
+        height,
+        x1 - x0 - 3.0,
+        align,
+    )
+}
+
+/// A text with its capitals centred on `at`, at most `width` wide.
+fn fitted(at: DVec2, text: &str, height: f64, width: f64, align: Align) -> Placed {
+    Placed::centred(at, text, height, align).fit(width)
+}
+
+fn captions_into(c: &Captions, out: &mut Vec<Placed>) {
+    for (k, name) in c.changes.iter().enumerate() {
+        out.push(in_cell(
+            (COLUMNS[k], 20.0, COLUMNS[k + 1], 25.0),
+            name,
+            CAPTION_H,
+            Align::Middle,
+        ));
+    }
+    for (k, name) in c.people.iter().enumerate().filter(|(_, n)| !n.is_empty()) {
+        let y = 25.0 + k as f64 * ROW;
+        out.push(in_cell(
+            (0.0, y, 17.0, y + ROW),
+            name,
+            CAPTION_H,
+            Align::Start,
+        ));
+    }
+    let heads = [
+        (RIGHT, 150.0, c.letter),
+        (150.0, 167.0, c.mass),
+        (167.0, 185.0, c.scale),
+    ];
+    for (x0, x1, name) in heads {
+        out.push(in_cell(
+            (x0, 15.0, x1, 20.0),
+            name,
+            CAPTION_H,
+            Align::Middle,
+        ));
+    }
+}
+
+fn filling_into(tb: &TitleBlock, out: &mut Vec<Placed>) {
+    out.push(in_cell(
+        (17.0, 25.0, 40.0, 30.0),
+        &tb.author,
+        CAPTION_H,
+        Align::Start,
+    ));
+    out.push(in_cell(
+        (17.0, 30.0, 40.0, 35.0),
+        &tb.checked,
+        CAPTION_H,
+        Align::Start,
+    ));
+    out.push(in_cell(
+        (65.0, 0.0, 185.0, 15.0),
+        &tb.designation,
+        7.0,
+        Align::Middle,
+    ));
+    if tb.sheet_title.is_empty() {
+        out.push(in_cell(
+            (65.0, 15.0, RIGHT, 40.0),
+            &tb.title,
+            5.0,
+            Align::Middle,
+        ));
+    } else {
+        out.push(in_cell(
+            (65.0, 15.0, RIGHT, 29.0),
+            &tb.title,
+            5.0,
+            Align::Middle,
+        ));
+        out.push(in_cell(
+            (65.0, 28.0, RIGHT, 36.0),
+            &tb.sheet_title,
+            3.5,
+            Align::Middle,
+        ));
+    }
+    out.push(in_cell(
+        (167.0, 20.0, 185.0, 35.0),
+        &tb.scale,
+        3.5,
+        Align::Middle,
+    ));
+    out.push(in_cell(
+        (RIGHT, 40.0, 185.0, 55.0),
+        &tb.organisation,
+        3.5,
+        Align::Middle,
+    ));
+}
+
+/// The «Лист N» and «Листов M» cells (captions and numbers together).
+fn sheet_numbers(c: &Captions, tb: &TitleBlock) -> [Placed; 2] {
+    [
+        in_cell(
+            (RIGHT, 35.0, 155.0, 40.0),
+            &format!("{} {}", c.sheet, tb.sheet_no),
+            CAPTION_H,
+            Align::Middle,
+        ),
+        in_cell(
+            (155.0, 35.0, 185.0, 40.0),
+            &format!("{} {}", c.sheets, tb.sheets),
+            CAPTION_H,
+            Align::Middle,
+        ),
+    ]
+}

@@ -1,0 +1,249 @@
+//! Plate-level tests: layout, determinism, the SVG's numbers and the raster.
+
+use super::*;
+use crate::construct::{Item, Role, Step, StepId};
+use crate::geom::{Circle, Segment};
+use crate::scale::{Quantity, Scale};
+use resvg::tiny_skia::Pixmap;
+
+fn figure(items: Vec<Item>) -> Figure {
+    let steps = items
+        .into_iter()
+        .enumerate()
+        .map(|(i, item)| Step {
+            id: StepId(i as u32),
+            note: String::new(),
+            item,
+            role: Role::Given,
+            label: None,
+            from: vec![],
+            group: 0,
+        })
+        .collect();
+    Figure {
+        title: "test".into(),
+        scale: Scale::new(0.001, Quantity::Length).unwrap(),
+        steps,
+    }
+}
+
+fn plate(sheet: Sheet, lang: Lang, views: Vec<View>) -> Plate {
+    Plate {
+        name: "t".into(),
+        sheet,
+        title_block: TitleBlock::default(),
+        lang,
+        views,
+        texts: vec![],
+    }
+}
+
+#[test]
+fn a1_frame_and_title_block_geometry() {
+    let sheet = Sheet::default();
+    assert_eq!((sheet.width_mm(), sheet.height_mm()), (841.0, 594.0));
+    assert_eq!(
+        sheet.frame(),
+        Rect::new(DVec2::new(20.0, 5.0), DVec2::new(836.0, 589.0))
+    );
+    assert_eq!(
+        sheet.title_block(),
+        Rect::new(DVec2::new(651.0, 534.0), DVec2::new(836.0, 589.0))
+    );
+    assert_eq!(sheet.field().max.y, 534.0);
+    let a4 = Sheet {
+        size: SheetSize::A4,
+        landscape: false,
+    };
+    assert_eq!((a4.width_mm(), a4.height_mm()), (210.0, 297.0));
+    assert_eq!(a4.frame().width(), 185.0);
+    let svg = to_svg(&plate(sheet, Lang::Ru, vec![]));
+    assert!(svg.starts_with(r#"<svg font-family="DejaVu Sans" font-style="italic" height="594mm" viewBox="0 0 841 594" width="841mm""#), "{svg}");
+    assert!(svg.contains(r#"d="M20,5 L836,5 L836,589 L20,589 Z""#));
+}
+
+#[test]
+fn title_block_captions_follow_the_language() {
+    let svg = |lang| to_svg(&plate(Sheet::default(), lang, vec![]));
+    let ru = svg(Lang::Ru);
+    assert!(
+        ["Разраб.", "Пров.", "Масштаб", "Листов", "Лит."]
+            .iter()
+            .all(|c| ru.contains(c)),
+        "{ru}"
+    );
+    let uk = svg(Lang::Uk);
+    assert!(["Розроб.", "Перев.", "Арк.", "Аркушів", "Маса", "Літ."]
+        .iter()
+        .all(|c| uk.contains(c)));
+    let en = svg(Lang::En);
+    assert!(["Drawn", "Checked", "Sheets", "Mass", "Scale"]
+        .iter()
+        .all(|c| en.contains(c)));
+}
+
+#[test]
+fn svg_is_deterministic_with_stable_ids() {
+    let a = to_svg(&demo_plate(Lang::Ru).unwrap());
+    let b = to_svg(&demo_plate(Lang::Ru).unwrap());
+    assert_eq!(a, b);
+    assert!(a.contains(r#"id="view-0-step-0""#) && a.contains(r#"id="view-1-step-4""#));
+    assert!(a.contains(r#"id="view-0-caption""#));
+}
+
+/// Every number in the SVG has at most two decimals and none is `-0`.
+#[test]
+fn svg_coordinates_are_rounded() {
+    let third = 1.0 / 3.0;
+    let f = figure(vec![
+        Item::Segment(Segment::new(
+            DVec2::new(third, -third),
+            DVec2::new(-1e-9, 2.0 / 3.0),
+        )),
+        Item::Circle(Circle {
+            center: DVec2::splat(third),
+            radius: 7.0 / 3.0,
+        }),
+        Item::Vector {
+            from: DVec2::ZERO,
+            to: DVec2::new(10.0 * third, 7.0),
+        },
+    ]);
+    let svg = to_svg(&plate(
+        Sheet::default(),
+        Lang::Ru,
+        vec![View {
+            figure: f,
+            origin: DVec2::new(100.0 + third, 100.0),
+            caption: None,
+        }],
+    ));
+    // Attribute values are the odd pieces between quotes; ids are names, not numbers.
+    let pieces: Vec<&str> = svg.split('"').collect();
+    let values = pieces
+        .windows(2)
+        .filter(|w| !w[0].ends_with("id="))
+        .map(|w| w[1]);
+    let numbers =
+        values.flat_map(|v| v.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-')));
+    for n in numbers.filter(|t| t.chars().any(|c| c.is_ascii_digit())) {
+        let decimals = n.split_once('.').map_or(0, |(_, d)| d.len());
+        assert!(decimals <= 2, "{n} has {decimals} decimals");
+        assert!(n != "-0" && !n.starts_with("-0.00"), "negative zero {n}");
+    }
+}
+
+#[test]
+fn centred_view_reports_the_sizes_when_too_big() {
+    let f = figure(vec![Item::Segment(Segment::new(
+        DVec2::ZERO,
+        DVec2::new(300.0, 50.0),
+    ))]);
+    let region = Rect::new(DVec2::new(0.0, 0.0), DVec2::new(200.0, 100.0));
+    let err = View::centred(f.clone(), region, None).unwrap_err();
+    assert_eq!(
+        err,
+        PlateError::DoesNotFit {
+            view: "test".into(),
+            need_w: 300.0,
+            need_h: 50.0,
+            have_w: 200.0,
+            have_h: 100.0
+        }
+    );
+    assert!(err.to_string().contains("300.0 × 50.0 mm"), "{err}");
+    let wide = Rect::new(DVec2::new(10.0, 20.0), DVec2::new(410.0, 120.0));
+    let v = View::centred(f, wide, None).unwrap();
+    // Bounds (0,0)–(300,50) centred at (210, 70): origin (60, 95).
+    assert_eq!(v.origin, DVec2::new(60.0, 95.0));
+    assert_eq!(v.to_sheet(DVec2::new(300.0, 50.0)), DVec2::new(360.0, 45.0));
+    assert!(View::centred(figure(vec![]), wide, Some("c".into())).is_ok());
+}
+
+fn dark_pixels(png: &[u8]) -> (u32, u32, usize) {
+    let pixmap = Pixmap::decode_png(png).unwrap();
+    let dark = pixmap.pixels().iter().filter(|p| p.red() < 128).count();
+    (pixmap.width(), pixmap.height(), dark)
+}
+
+#[test]
+fn every_item_and_role_renders_to_png() {
+    let demo = demo_plate(Lang::Ru).unwrap();
+    let mut bare = plate(demo.sheet, Lang::Ru, vec![]);
+    let (w, h, frame_only) = dark_pixels(&to_png(&to_svg(&bare), 1000).unwrap());
+    assert_eq!((w, h), (1000, 706));
+    bare.views = demo.views.clone();
+    let svg = to_svg(&bare);
+    let png = to_png(&svg, 1000).unwrap();
+    let (_, _, with_views) = dark_pixels(&png);
+    assert!(
+        with_views > frame_only + 1000,
+        "views add only {} dark pixels",
+        with_views - frame_only
+    );
+    assert_eq!(
+        png,
+        to_png(&svg, 1000).unwrap(),
+        "PNG bytes differ between runs"
+    );
+}
+
+#[test]
+fn png_at_dpi_has_the_printed_size() {
+    let a4 = plate(
+        Sheet {
+            size: SheetSize::A4,
+            landscape: false,
+        },
+        Lang::En,
+        vec![],
+    );
+    let (w, h, _) = dark_pixels(&to_png_dpi(&to_svg(&a4), 25.4).unwrap());
+    assert_eq!((w, h), (210, 297));
+    assert!(matches!(to_png_dpi("<svg", 150.0), Err(PlateError::Svg(_))));
+    assert!(matches!(
+        to_png_dpi(&to_svg(&a4), 0.0),
+        Err(PlateError::Raster(_))
+    ));
+    assert!(matches!(
+        to_png(&to_svg(&a4), 0),
+        Err(PlateError::Raster(_))
+    ));
+}
+
+#[test]
+fn non_finite_geometry_never_panics_nor_leaks_nan() {
+    let nan = f64::NAN;
+    let f = figure(vec![
+        Item::Segment(Segment::new(DVec2::splat(nan), DVec2::ZERO)),
+        Item::Guide {
+            segment: Segment::new(DVec2::ZERO, DVec2::new(f64::INFINITY, 0.0)),
+            hatch: crate::geom::Side::Left,
+        },
+        Item::Arc(crate::geom::Arc {
+            center: DVec2::ZERO,
+            radius: 1e300,
+            start: 0.0,
+            sweep: f64::INFINITY,
+        }),
+        Item::Slider {
+            at: DVec2::ZERO,
+            angle: nan,
+        },
+        Item::Curve {
+            points: vec![DVec2::ZERO, DVec2::splat(nan), DVec2::ONE],
+            closed: true,
+        },
+    ]);
+    let svg = to_svg(&plate(
+        Sheet::default(),
+        Lang::Ru,
+        vec![View {
+            figure: f,
+            origin: DVec2::splat(100.0),
+            caption: Some("x".into()),
+        }],
+    ));
+    assert!(!svg.contains("NaN") && !svg.contains("inf"));
+    assert!(to_png(&svg, 200).is_ok());
+}

@@ -1,0 +1,371 @@
+//! Label markup and its SVG text.
+//!
+//! The markup of [`Label`](crate::construct::Label) texts: `_x` or `_{xy}` for a subscript,
+//! `^x` or `^{xy}` for a superscript, `\x` for a literal `x`. Without braces a script
+//! covers one "word": a run of digits (`b_3b_1` is b₃b₁), or a run of letters followed by
+//! digits (`V_B2`, `φ_max`). Everything else is normal text.
+
+use super::path::{num, Map};
+use crate::geom::DVec2;
+use std::fmt::Write as _;
+
+/// The vertical position of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Script {
+    /// On the baseline.
+    Normal,
+    /// Lowered, smaller (index).
+    Sub,
+    /// Raised, smaller (exponent, mark).
+    Sup,
+}
+
+/// A piece of text in one script.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Run {
+    /// The characters.
+    pub text: String,
+    /// Where they sit.
+    pub script: Script,
+}
+
+/// Split label markup into runs; adjacent runs of the same script are merged and empty runs
+/// dropped. Never fails: a marker with nothing to apply to is kept as text.
+pub fn parse(markup: &str) -> Vec<Run> {
+    let chars: Vec<char> = markup.chars().collect();
+    let mut runs = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        let script = match c {
+            '_' => Script::Sub,
+            '^' => Script::Sup,
+            '\\' if i + 1 < chars.len() => {
+                push(&mut runs, Script::Normal, &chars[i + 1..i + 2]);
+                i += 2;
+                continue;
+            }
+            _ => Script::Normal,
+        };
+        let (body, next) = match script {
+            Script::Normal => ((i, i + 1), i + 1),
+            _ => scripted(&chars, i + 1),
+        };
+        if body.0 == body.1 && script != Script::Normal {
+            push(&mut runs, Script::Normal, &[c]);
+            i = next;
+            continue;
+        }
+        push(&mut runs, script, &chars[body.0..body.1]);
+        i = next;
+    }
+    runs
+}
+
+/// The body of a script starting at `start` (after the marker): `(body range, next index)`.
+fn scripted(chars: &[char], start: usize) -> ((usize, usize), usize) {
+    match chars.get(start) {
+        Some('{') => match chars[start + 1..].iter().position(|&c| c == '}') {
+            Some(len) => ((start + 1, start + 1 + len), start + 2 + len),
+            None => ((start + 1, chars.len()), chars.len()),
+        },
+        Some(c) if c.is_ascii_digit() => {
+            let end = run_end(chars, start, |c| c.is_ascii_digit());
+            ((start, end), end)
+        }
+        Some(c) if c.is_alphabetic() => {
+            let letters = run_end(chars, start, char::is_alphabetic);
+            let end = run_end(chars, letters, |c| c.is_ascii_digit());
+            ((start, end), end)
+        }
+        _ => ((start, start), start),
+    }
+}
+
+fn run_end(chars: &[char], start: usize, keep: impl Fn(char) -> bool) -> usize {
+    chars[start..]
+        .iter()
+        .position(|&c| !keep(c))
+        .map_or(chars.len(), |n| start + n)
+}
+
+fn push(runs: &mut Vec<Run>, script: Script, chars: &[char]) {
+    if chars.is_empty() {
+        return;
+    }
+    match runs.last_mut() {
+        Some(last) if last.script == script => last.text.extend(chars),
+        _ => runs.push(Run {
+            text: chars.iter().collect(),
+            script,
+        }),
+    }
+}
+
+/// The markup with the markers removed (for widths and plain-text uses).
+pub fn plain(markup: &str) -> String {
+    parse(markup).into_iter().map(|r| r.text).collect()
+}
+
+/// Height of capitals of DejaVu Sans, in em (1493 / 2048 units).
+pub const CAP_HEIGHT_EM: f64 = 0.729;
+/// Size of sub- and superscripts relative to the text.
+pub const SCRIPT_SCALE: f64 = 0.7;
+/// Shift of a subscript below the baseline, em of the text.
+pub const SUB_SHIFT_EM: f64 = 0.3;
+/// Shift of a superscript above the baseline, em of the text.
+pub const SUP_SHIFT_EM: f64 = 0.4;
+/// Narrowest a text is condensed (`lengthAdjust="spacingAndGlyphs"`) before it is also
+/// made smaller to fit.
+pub const MIN_CONDENSE: f64 = 0.7;
+
+/// Approximate advance of a DejaVu Sans character, em, erring on the wide side (for fitting
+/// text in cells; the classes follow the font's advance widths).
+fn advance_em(c: char) -> f64 {
+    match c {
+        ' ' | '.' | ',' | ':' | ';' | '\'' | '|' | '!' | 'i' | 'j' | 'l' | 'І' | 'і' | 'ї'
+        | 'I' | 'J' => 0.33,
+        '(' | ')' | '[' | ']' | '{' | '}' | '/' | '-' | 'r' | 't' | 'f' | '‘' | '’' | '′' => {
+            0.43
+        }
+        'm' | 'w' | 'M' | 'W' | 'Ш' | 'Щ' | 'Ж' | 'Ю' | 'Ы' | 'ш' | 'щ' | 'ж' | 'ю' | 'ы' | '№'
+        | '%' | '—' => 0.9,
+        c if c.is_uppercase() => 0.74,
+        _ => 0.64,
+    }
+}
+
+/// The SVG font size (em, mm) for a ГОСТ 2.304 text size (height of capitals, mm).
+pub fn em_for_height(height_mm: f64) -> f64 {
+    height_mm / CAP_HEIGHT_EM
+}
+
+/// Approximate width of the markup at text size `height_mm`, mm.
+pub fn approx_width(markup: &str, height_mm: f64) -> f64 {
+    let em: f64 = parse(markup)
+        .iter()
+        .map(|r| {
+            let k = if r.script == Script::Normal {
+                1.0
+            } else {
+                SCRIPT_SCALE
+            };
+            r.text.chars().map(advance_em).sum::<f64>() * k
+        })
+        .sum();
+    em * em_for_height(height_mm)
+}
+
+/// Horizontal alignment of a text at its position.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Align {
+    /// The text starts at the position.
+    Start,
+    /// The text is centred on the position.
+    Middle,
+    /// The text ends at the position.
+    End,
+}
+
+/// A text placed on the sheet.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Placed {
+    /// Baseline point, sheet mm.
+    pub at: DVec2,
+    /// The markup.
+    pub markup: String,
+    /// ГОСТ size (height of capitals), mm.
+    pub height: f64,
+    /// Horizontal alignment.
+    pub align: Align,
+    /// Rotation about `at`, degrees clockwise on the sheet.
+    pub rotate: f64,
+    /// Exact width to condense the text to (`textLength`), mm.
+    pub length: Option<f64>,
+}
+
+impl Placed {
+    /// A text with its baseline at `at`.
+    pub(crate) fn new(at: DVec2, markup: &str, height: f64, align: Align) -> Self {
+        Self {
+            at,
+            markup: markup.into(),
+            height,
+            align,
+            rotate: 0.0,
+            length: None,
+        }
+    }
+
+    /// Fit the text into `width`: condensed down to [`MIN_CONDENSE`], then made smaller.
+    /// The height is reduced about the vertical centre of the capitals.
+    pub(crate) fn fit(mut self, width: f64) -> Self {
+        let natural = approx_width(&self.markup, self.height);
+        if !(natural > width && width > 0.0) {
+            return self;
+        }
+        let ratio = width / natural;
+        let k = ratio / ratio.max(MIN_CONDENSE);
+        self.at.y -= self.height * (1.0 - k) * 0.5;
+        self.height *= k;
+        self.length = Some(width);
+        self
+    }
+    /// A text whose capitals are vertically centred on `at`.
+    pub(crate) fn centred(at: DVec2, markup: &str, height: f64, align: Align) -> Self {
+        Self::new(at + DVec2::new(0.0, height * 0.5), markup, height, align)
+    }
+
+    /// The same text with its position mapped to the sheet.
+    pub(crate) fn mapped(mut self, map: Map) -> Self {
+        self.at = map.pt(self.at);
+        self
+    }
+
+    /// The `<text>` element; scripts become `<tspan>`s with a smaller size and a `dy` shift
+    /// (and the shift back), which resvg and browsers render alike.
+    pub(crate) fn to_xml(&self, id: &str) -> String {
+        let em = em_for_height(self.height);
+        let (x, y) = (num(self.at.x), num(self.at.y));
+        let anchor = match self.align {
+            Align::Start => "start",
+            Align::Middle => "middle",
+            Align::End => "end",
+        };
+        let mut s = format!(
+            r#"<text id="{id}" x="{x}" y="{y}" font-size="{}" text-anchor="{anchor}""#,
+            num(em)
+        );
+        if self.rotate != 0.0 && self.rotate.is_finite() {
+            let _ = write!(s, r#" transform="rotate({} {x} {y})""#, num(self.rotate));
+        }
+        if let Some(len) = self.length {
+            let _ = write!(
+                s,
+                r#" textLength="{}" lengthAdjust="spacingAndGlyphs""#,
+                num(len)
+            );
+        }
+        s.push('>');
+        let mut shift = 0.0;
+        for run in parse(&self.markup) {
+            let (target, size) = match run.script {
+                Script::Normal => (0.0, None),
+                Script::Sub => (SUB_SHIFT_EM * em, Some(em * SCRIPT_SCALE)),
+                Script::Sup => (-SUP_SHIFT_EM * em, Some(em * SCRIPT_SCALE)),
+            };
+            let dy = target - shift;
+            shift = target;
+            if dy == 0.0 && size.is_none() {
+                s.push_str(&escape(&run.text));
+                continue;
+            }
+            s.push_str("<tspan");
+            if dy != 0.0 {
+                let _ = write!(s, r#" dy="{}""#, num(dy));
+            }
+            if let Some(size) = size {
+                let _ = write!(s, r#" font-size="{}""#, num(size));
+            }
+            let _ = write!(s, ">{}</tspan>", escape(&run.text));
+        }
+        s.push_str("</text>");
+        s
+    }
+}
+
+/// Escape XML special characters.
+pub(crate) fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn runs(markup: &str) -> Vec<(&'static str, String)> {
+        parse(markup)
+            .into_iter()
+            .map(|r| {
+                let tag = match r.script {
+                    Script::Normal => "n",
+                    Script::Sub => "sub",
+                    Script::Sup => "sup",
+                };
+                (tag, r.text)
+            })
+            .collect()
+    }
+
+    fn expect(list: &[(&'static str, &str)]) -> Vec<(&'static str, String)> {
+        list.iter().map(|(t, s)| (*t, s.to_string())).collect()
+    }
+
+    #[test]
+    fn parse_subscript_covers_one_word() {
+        assert_eq!(
+            runs("μ_l = 0,0025"),
+            expect(&[("n", "μ"), ("sub", "l"), ("n", " = 0,0025")])
+        );
+        assert_eq!(runs("S_3"), expect(&[("n", "S"), ("sub", "3")]));
+        assert_eq!(
+            runs("b_3b_1"),
+            expect(&[("n", "b"), ("sub", "3"), ("n", "b"), ("sub", "1")])
+        );
+        assert_eq!(
+            runs("V_B2 ⊥ AB"),
+            expect(&[("n", "V"), ("sub", "B2"), ("n", " ⊥ AB")])
+        );
+    }
+
+    #[test]
+    fn parse_braces_and_superscripts() {
+        assert_eq!(runs("S_{3}"), expect(&[("n", "S"), ("sub", "3")]));
+        assert_eq!(
+            runs("a^{k}_{CB}"),
+            expect(&[("n", "a"), ("sup", "k"), ("sub", "CB")])
+        );
+        assert_eq!(runs("м/с^2"), expect(&[("n", "м/с"), ("sup", "2")]));
+        assert_eq!(runs("x_{ab"), expect(&[("n", "x"), ("sub", "ab")]));
+    }
+
+    #[test]
+    fn parse_keeps_stray_markers_and_escapes() {
+        assert_eq!(runs("a_ b"), expect(&[("n", "a_ b")]));
+        assert_eq!(runs("x^"), expect(&[("n", "x^")]));
+        assert_eq!(runs(r"a\_b"), expect(&[("n", "a_b")]));
+        assert_eq!(runs("8′"), expect(&[("n", "8′")]));
+        assert_eq!(runs("_{}"), expect(&[("n", "_")]));
+        assert!(parse("").is_empty());
+        assert_eq!(plain("μ_{l} = 1"), "μl = 1");
+    }
+
+    #[test]
+    fn scripts_shift_and_return_to_the_baseline() {
+        let t = Placed::new(DVec2::new(10.0, 20.0), "b_3b & c", 3.5, Align::Middle);
+        let xml = t.to_xml("t");
+        assert!(
+            xml.starts_with(
+                r#"<text id="t" x="10" y="20" font-size="4.8" text-anchor="middle">b<tspan"#
+            ),
+            "{xml}"
+        );
+        assert!(
+            xml.contains(
+                r#"<tspan dy="1.44" font-size="3.36">3</tspan><tspan dy="-1.44">b &amp; c</tspan>"#
+            ),
+            "{xml}"
+        );
+    }
+}
