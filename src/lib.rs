@@ -14,3 +14,4 @@ pub mod linkage;
 pub mod plate;
 pub mod scale;
 pub mod scene;
+pub mod sheets;

@@ -1,2 +1,177 @@
-//! The `tmm` command line (placeholder until the CLI lands).
-fn main() {}
+//! The `tmm` command line: parse arguments, call the library, print errors.
+//!
+//! Exit status: 0 success, 2 bad input or usage, 1 a construction that cannot be carried out.
+
+use clap::{Parser, Subcommand, ValueEnum};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use tmm::construct::Drafting;
+use tmm::scale::Lang;
+use tmm::scene::{self, PlateKind, Scene};
+use tmm::sheets::{self, RenderOptions};
+
+#[derive(Parser)]
+#[command(name = "tmm", version, about = "Graphical methods of the Theory of Mechanisms and Machines, drawn on scaled plates")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Format {
+    Svg,
+    Png,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum LangArg {
+    Ru,
+    Uk,
+    En,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render the plates of scenes to DIR/<scene>/<plate>.<ext>.
+    Render {
+        /// Scene files (constructions/*.toml).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Formats to write.
+        #[arg(long, value_delimiter = ',', default_value = "svg,png")]
+        format: Vec<Format>,
+        /// Label language.
+        #[arg(long, value_enum, default_value = "ru")]
+        lang: LangArg,
+        /// Resolution (mm) to which measured lengths are read before μ converts them; 0 = exact.
+        #[arg(long, default_value_t = 0.0)]
+        drafting: f64,
+        /// PNG resolution, dots per inch.
+        #[arg(long, default_value_t = 150)]
+        dpi: u32,
+    },
+    /// Validate scenes and carry out their constructions without writing anything.
+    Check {
+        /// Scene files.
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+    },
+    /// List the scenes in constructions/ with their plates.
+    List {
+        /// Folder to list.
+        #[arg(long, default_value = "constructions")]
+        dir: PathBuf,
+    },
+}
+
+/// A failure with its exit status.
+struct Failure {
+    code: u8,
+    message: String,
+}
+
+impl Failure {
+    fn input(message: impl Into<String>) -> Self {
+        Self { code: 2, message: message.into() }
+    }
+    fn construction(message: impl Into<String>) -> Self {
+        Self { code: 1, message: message.into() }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Render { scenes, out, format, lang, drafting, dpi } => render(&scenes, &out, &format, lang, drafting, dpi),
+        Command::Check { scenes } => check(&scenes),
+        Command::List { dir } => list(&dir),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(f) => {
+            eprintln!("error: {}", f.message);
+            ExitCode::from(f.code)
+        }
+    }
+}
+
+fn load_all(paths: &[PathBuf]) -> Result<Vec<Scene>, Failure> {
+    paths.iter().map(|p| scene::load(p).map_err(|e| Failure::input(e.to_string()))).collect()
+}
+
+fn options(lang: LangArg, drafting: f64) -> Result<RenderOptions, Failure> {
+    let drafting = Drafting::new(drafting).ok_or_else(|| Failure::input(format!("--drafting {drafting}: expected a resolution ≥ 0 mm")))?;
+    let lang = match lang {
+        LangArg::Ru => Lang::Ru,
+        LangArg::Uk => Lang::Uk,
+        LangArg::En => Lang::En,
+    };
+    Ok(RenderOptions { lang, drafting })
+}
+
+fn build_err(scene: &Scene, kind: PlateKind, e: sheets::BuildError) -> Failure {
+    Failure::construction(format!("{}: plate `{}`: {e}", scene.path.display(), kind.stem()))
+}
+
+fn render(paths: &[PathBuf], out: &Path, formats: &[Format], lang: LangArg, drafting: f64, dpi: u32) -> Result<(), Failure> {
+    let opts = options(lang, drafting)?;
+    if !(1..=2400).contains(&dpi) {
+        return Err(Failure::input(format!("--dpi {dpi}: expected 1…2400")));
+    }
+    let scenes = load_all(paths)?;
+    // Everything is built in memory first: a failed run writes nothing.
+    let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
+    for s in &scenes {
+        for &kind in &s.plates {
+            let plate = sheets::build(s, kind, &opts).map_err(|e| build_err(s, kind, e))?;
+            let svg = tmm::plate::to_svg(&plate);
+            let base = out.join(&s.stem).join(kind.stem());
+            if formats.contains(&Format::Png) {
+                let png = tmm::plate::to_png_dpi(&svg, dpi as f32).map_err(|e| Failure::construction(format!("{}: {e}", base.display())))?;
+                files.push((base.with_extension("png"), png));
+            }
+            if formats.contains(&Format::Svg) {
+                files.push((base.with_extension("svg"), svg.into_bytes()));
+            }
+        }
+    }
+    for (path, bytes) in &files {
+        tmm::plate::write_atomic(path, bytes).map_err(|e| Failure::input(format!("{}: cannot write: {e}", path.display())))?;
+        println!("{}", path.display());
+    }
+    Ok(())
+}
+
+fn check(paths: &[PathBuf]) -> Result<(), Failure> {
+    let scenes = load_all(paths)?;
+    let opts = RenderOptions::default();
+    for s in &scenes {
+        for &kind in &s.plates {
+            sheets::build(s, kind, &opts).map_err(|e| build_err(s, kind, e))?;
+        }
+        println!("{}: ok", s.path.display());
+    }
+    Ok(())
+}
+
+fn list(dir: &Path) -> Result<(), Failure> {
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| Failure::input(format!("{}: {e}", dir.display())))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    entries.sort();
+    for p in entries {
+        match scene::load(&p) {
+            Ok(s) => {
+                let plates: Vec<&str> = s.plates.iter().map(|k| k.stem()).collect();
+                println!("{}\t{}\t{}", p.display(), s.title.title, plates.join(", "));
+            }
+            Err(e) => println!("{}\tinvalid: {}", p.display(), e.to_string().lines().next().unwrap_or("")),
+        }
+    }
+    Ok(())
+}

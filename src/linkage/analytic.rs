@@ -24,6 +24,9 @@ pub struct Pose {
     pub origin: Vec<usize>,
     /// Per group: the acute crossing angle of its construction (radians; small = ill-conditioned).
     pub crossing: Vec<f64>,
+    /// A dyad at its toggle (folded) position: the position exists but its velocity analogues
+    /// are not determined; `dp` and `dangle` downstream of it are not meaningful.
+    pub toggle: Option<Unassembled>,
 }
 
 /// Why a dyad cannot be assembled at this crank angle.
@@ -83,6 +86,7 @@ impl Program {
         let mut dangle = vec![0.0; self.link_count];
         let mut origin = vec![0usize; self.link_count];
         let mut crossing = Vec::new();
+        let mut toggle = None;
         let (s, c) = phi.sin_cos();
         let r = self.crank_length;
         p[self.pin] = p[self.centre] + DVec2::new(c, s) * r;
@@ -141,12 +145,11 @@ impl Program {
                             p[joint] = jp;
                             let (ra, rb) = (jp - p[a], jp - p[b]);
                             let rhs = DVec2::new(ra.dot(dp[a]), rb.dot(dp[b]));
-                            let v = solve2(ra, rb, rhs).ok_or_else(|| {
-                                fail(format!(
-                                    "links {i} and {j} are in line at {} (toggle position)",
-                                    self.names[joint]
-                                ))
-                            })?;
+                            let v = solve2(ra, rb, rhs).unwrap_or_else(|| {
+                                let why = format!("links {i} and {j} are in line at {} (toggle position)", self.names[joint]);
+                                toggle.get_or_insert(fail(why));
+                                DVec2::ZERO
+                            });
                             dp[joint] = v;
                             angle[i] = ra.y.atan2(ra.x);
                             dangle[i] = cross(ra, v - dp[a]) / ra.length_squared();
@@ -185,10 +188,12 @@ impl Program {
                             p[joint] = jp;
                             let ra = jp - p[a];
                             let den = ra.dot(e);
-                            if den.abs() <= 1e-14 * la {
-                                return Err(fail(format!("link {i} is perpendicular to the guide of link {j} (toggle position)")));
-                            }
-                            let dt = -ra.dot(dg0 + de * t - dp[a]) / den;
+                            let dt = if den.abs() <= 1e-14 * la {
+                                toggle.get_or_insert(fail(format!("link {i} is perpendicular to the guide of link {j} (toggle position)")));
+                                0.0
+                            } else {
+                                -ra.dot(dg0 + de * t - dp[a]) / den
+                            };
                             let v = dg0 + e * dt + de * t;
                             dp[joint] = v;
                             angle[i] = ra.y.atan2(ra.x);
@@ -287,6 +292,7 @@ impl Program {
             dangle,
             origin,
             crossing,
+            toggle,
         })
     }
 }

@@ -149,6 +149,9 @@ impl Program {
         let reference = c.eval(&poses[0], 0.0).0;
         let mut roots: Vec<(f64, f64)> = Vec::new();
         for w in poses.windows(2) {
+            if w[0].toggle.is_some() || w[1].toggle.is_some() {
+                continue;
+            }
             let (_, d0) = c.eval(&w[0], reference);
             let (_, d1) = c.eval(&w[1], reference);
             if d0 == 0.0 {

@@ -5,7 +5,9 @@ mod analytic;
 mod construction;
 mod extremes;
 mod model;
+mod plan;
 mod program;
+mod scheme;
 mod structure;
 #[cfg(test)]
 mod tests;
@@ -17,8 +19,10 @@ pub use model::{
     Branch, Crank, Dir, Dyad, DyadKind, FixedPoint, Group, Guide, LinkPoint, Mechanism, Output,
     RedundantPair, Sense,
 };
+pub use plan::{draw_links, Part, fixed_pivots, group_name, plan_positions, PlanPosition, PlanRequest, PositionPlan};
 pub use program::{Op, PDir, PDyad, PGuide, Program};
-pub use structure::{PairInfo, Structure};
+pub use scheme::structure_figure;
+pub use structure::{GroupInfo, PairInfo, Structure};
 
 use thiserror::Error;
 

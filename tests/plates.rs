@@ -1,0 +1,114 @@
+//! Visual regression of every plate of every scene (DESIGN §8): each plate is rendered to PNG
+//! at a fixed width and compared with `tests/ref/<scene>-<plate>.png`. A pixel fails when any
+//! channel differs by more than 1; no failing pixel is allowed. On failure a three-panel diff
+//! (expected | mask | actual) goes to `out/diffs/`. `UPDATE_PLATES=1` rewrites the references
+//! and still fails the run.
+
+use resvg::tiny_skia::{Pixmap, PremultipliedColorU8};
+use std::path::{Path, PathBuf};
+use tmm::scene::{self, PlateKind};
+use tmm::sheets::{self, RenderOptions};
+
+/// Width of the rendered test images, px.
+const WIDTH: u32 = 1400;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn render(scene_name: &str, plate: &str) -> Vec<u8> {
+    let path = root().join("constructions").join(format!("{scene_name}.toml"));
+    let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    let kind = PlateKind::parse(plate).unwrap_or_else(|| panic!("unknown plate {plate}"));
+    let p = sheets::build(&s, kind, &RenderOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    tmm::plate::to_png(&tmm::plate::to_svg(&p), WIDTH).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Count pixels differing by more than 1 in any channel and build the mask.
+fn compare(expected: &Pixmap, actual: &Pixmap) -> (usize, Pixmap) {
+    let (w, h) = (expected.width(), expected.height());
+    let mut mask = Pixmap::new(w, h).expect("non-empty image");
+    let mut failing = 0;
+    for (k, (e, a)) in expected.pixels().iter().zip(actual.pixels()).enumerate() {
+        let differs = [(e.red(), a.red()), (e.green(), a.green()), (e.blue(), a.blue()), (e.alpha(), a.alpha())]
+            .iter()
+            .any(|(x, y)| x.abs_diff(*y) > 1);
+        let c = if differs {
+            failing += 1;
+            PremultipliedColorU8::from_rgba(255, 0, 0, 255)
+        } else {
+            PremultipliedColorU8::from_rgba(255, 255, 255, 255)
+        };
+        mask.pixels_mut()[k] = c.expect("opaque colour");
+    }
+    (failing, mask)
+}
+
+fn write_diff(name: &str, expected: &Pixmap, mask: &Pixmap, actual: &Pixmap) -> PathBuf {
+    let (w, h) = (expected.width(), expected.height());
+    let mut out = Pixmap::new(w * 3, h).expect("non-empty image");
+    for (k, img) in [expected, mask, actual].into_iter().enumerate() {
+        out.draw_pixmap((w * k as u32) as i32, 0, img.as_ref(), &Default::default(), Default::default(), None);
+    }
+    let dir = root().join("out").join("diffs");
+    let _ = std::fs::create_dir_all(&dir);
+    let path = dir.join(format!("{name}.png"));
+    let _ = out.save_png(&path);
+    path
+}
+
+fn check(scene_name: &str, plate: &str) {
+    let name = format!("{scene_name}-{plate}");
+    let png = render(scene_name, plate);
+    let ref_path = root().join("tests").join("ref").join(format!("{name}.png"));
+    if std::env::var_os("UPDATE_PLATES").is_some() {
+        std::fs::write(&ref_path, &png).expect("write reference");
+        panic!("{name}: reference rewritten at {}; run again without UPDATE_PLATES", ref_path.display());
+    }
+    let expected = Pixmap::load_png(&ref_path).unwrap_or_else(|e| panic!("{name}: no reference {} ({e}); create it with UPDATE_PLATES=1", ref_path.display()));
+    let actual = Pixmap::decode_png(&png).expect("decode rendered plate");
+    assert_eq!((expected.width(), expected.height()), (actual.width(), actual.height()), "{name}: image size changed");
+    let (failing, mask) = compare(&expected, &actual);
+    if failing > 0 {
+        let diff = write_diff(&name, &expected, &mask, &actual);
+        panic!("{name}: {failing} pixels differ by more than 1; diff at {}", diff.display());
+    }
+}
+
+macro_rules! plates {
+    ($($test:ident: $scene:literal / $plate:literal),* $(,)?) => {
+        $(
+            #[test]
+            fn $test() {
+                check($scene, $plate);
+            }
+        )*
+        const LISTED: &[(&str, &str)] = &[$(($scene, $plate)),*];
+    };
+}
+
+plates! {
+    shaper_positions: "shaper" / "positions",
+    slider_crank_positions: "slider-crank" / "positions",
+    four_bar_positions: "four-bar" / "positions",
+}
+
+/// Every plate of every scene in `constructions/` has its test above.
+#[test]
+fn every_plate_of_every_scene_is_tested() {
+    let dir = root().join("constructions");
+    let mut missing = Vec::new();
+    for entry in std::fs::read_dir(&dir).expect("constructions/") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let s = scene::load(Path::new(&path)).unwrap_or_else(|e| panic!("{e}"));
+        for k in &s.plates {
+            if !LISTED.contains(&(s.stem.as_str(), k.stem())) {
+                missing.push(format!("{}/{}", s.stem, k.stem()));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "plates without a pixel test: {missing:?}");
+}
