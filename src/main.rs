@@ -11,7 +11,11 @@ use tmm::scene::{self, PlateKind, Scene};
 use tmm::sheets::{self, RenderOptions};
 
 #[derive(Parser)]
-#[command(name = "tmm", version, about = "Graphical methods of the Theory of Mechanisms and Machines, drawn on scaled plates")]
+#[command(
+    name = "tmm",
+    version,
+    about = "Graphical methods of the Theory of Mechanisms and Machines, drawn on scaled plates"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -75,17 +79,30 @@ struct Failure {
 
 impl Failure {
     fn input(message: impl Into<String>) -> Self {
-        Self { code: 2, message: message.into() }
+        Self {
+            code: 2,
+            message: message.into(),
+        }
     }
     fn construction(message: impl Into<String>) -> Self {
-        Self { code: 1, message: message.into() }
+        Self {
+            code: 1,
+            message: message.into(),
+        }
     }
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Render { scenes, out, format, lang, drafting, dpi } => render(&scenes, &out, &format, lang, drafting, dpi),
+        Command::Render {
+            scenes,
+            out,
+            format,
+            lang,
+            drafting,
+            dpi,
+        } => render(&scenes, &out, &format, lang, drafting, dpi),
         Command::Check { scenes } => check(&scenes),
         Command::List { dir } => list(&dir),
     };
@@ -99,11 +116,18 @@ fn main() -> ExitCode {
 }
 
 fn load_all(paths: &[PathBuf]) -> Result<Vec<Scene>, Failure> {
-    paths.iter().map(|p| scene::load(p).map_err(|e| Failure::input(e.to_string()))).collect()
+    paths
+        .iter()
+        .map(|p| scene::load(p).map_err(|e| Failure::input(e.to_string())))
+        .collect()
 }
 
 fn options(lang: LangArg, drafting: f64) -> Result<RenderOptions, Failure> {
-    let drafting = Drafting::new(drafting).ok_or_else(|| Failure::input(format!("--drafting {drafting}: expected a resolution ≥ 0 mm")))?;
+    let drafting = Drafting::new(drafting).ok_or_else(|| {
+        Failure::input(format!(
+            "--drafting {drafting}: expected a resolution ≥ 0 mm"
+        ))
+    })?;
     let lang = match lang {
         LangArg::Ru => Lang::Ru,
         LangArg::Uk => Lang::Uk,
@@ -113,10 +137,21 @@ fn options(lang: LangArg, drafting: f64) -> Result<RenderOptions, Failure> {
 }
 
 fn build_err(scene: &Scene, kind: PlateKind, e: sheets::BuildError) -> Failure {
-    Failure::construction(format!("{}: plate `{}`: {e}", scene.path.display(), kind.stem()))
+    Failure::construction(format!(
+        "{}: plate `{}`: {e}",
+        scene.path.display(),
+        kind.stem()
+    ))
 }
 
-fn render(paths: &[PathBuf], out: &Path, formats: &[Format], lang: LangArg, drafting: f64, dpi: u32) -> Result<(), Failure> {
+fn render(
+    paths: &[PathBuf],
+    out: &Path,
+    formats: &[Format],
+    lang: LangArg,
+    drafting: f64,
+    dpi: u32,
+) -> Result<(), Failure> {
     let opts = options(lang, drafting)?;
     if !(1..=2400).contains(&dpi) {
         return Err(Failure::input(format!("--dpi {dpi}: expected 1…2400")));
@@ -130,7 +165,8 @@ fn render(paths: &[PathBuf], out: &Path, formats: &[Format], lang: LangArg, draf
             let svg = tmm::plate::to_svg(&plate);
             let base = out.join(&s.stem).join(kind.stem());
             if formats.contains(&Format::Png) {
-                let png = tmm::plate::to_png_dpi(&svg, dpi as f32).map_err(|e| Failure::construction(format!("{}: {e}", base.display())))?;
+                let png = tmm::plate::to_png_dpi(&svg, dpi as f32)
+                    .map_err(|e| Failure::construction(format!("{}: {e}", base.display())))?;
                 files.push((base.with_extension("png"), png));
             }
             if formats.contains(&Format::Svg) {
@@ -139,7 +175,8 @@ fn render(paths: &[PathBuf], out: &Path, formats: &[Format], lang: LangArg, draf
         }
     }
     for (path, bytes) in &files {
-        tmm::plate::write_atomic(path, bytes).map_err(|e| Failure::input(format!("{}: cannot write: {e}", path.display())))?;
+        tmm::plate::write_atomic(path, bytes)
+            .map_err(|e| Failure::input(format!("{}: cannot write: {e}", path.display())))?;
         println!("{}", path.display());
     }
     Ok(())
@@ -170,7 +207,11 @@ fn list(dir: &Path) -> Result<(), Failure> {
                 let plates: Vec<&str> = s.plates.iter().map(|k| k.stem()).collect();
                 println!("{}\t{}\t{}", p.display(), s.title.title, plates.join(", "));
             }
-            Err(e) => println!("{}\tinvalid: {}", p.display(), e.to_string().lines().next().unwrap_or("")),
+            Err(e) => println!(
+                "{}\tinvalid: {}",
+                p.display(),
+                e.to_string().lines().next().unwrap_or("")
+            ),
         }
     }
     Ok(())

@@ -9,7 +9,11 @@ fn root() -> PathBuf {
 }
 
 fn tmm(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_tmm")).args(args).current_dir(root()).output().expect("run tmm")
+    Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("run tmm")
 }
 
 /// A fresh scratch folder for one test.
@@ -41,18 +45,34 @@ fn render_writes_svg_and_png_and_is_byte_identical() {
     let dir = scratch("render");
     let (a, b) = (dir.join("a"), dir.join("b"));
     for out in [&a, &b] {
-        let o = tmm(&["render", "constructions/shaper.toml", "--out", out.to_str().unwrap()]);
+        let o = tmm(&[
+            "render",
+            "constructions/shaper.toml",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     }
     let fa = files_under(&a);
-    let names: Vec<String> = fa.iter().map(|p| p.strip_prefix(&a).unwrap().display().to_string()).collect();
+    let names: Vec<String> = fa
+        .iter()
+        .map(|p| p.strip_prefix(&a).unwrap().display().to_string())
+        .collect();
     assert_eq!(names, ["shaper/positions.png", "shaper/positions.svg"]);
     for f in &fa {
         let g = b.join(f.strip_prefix(&a).unwrap());
-        assert_eq!(std::fs::read(f).unwrap(), std::fs::read(&g).unwrap(), "{} differs between runs", f.display());
+        assert_eq!(
+            std::fs::read(f).unwrap(),
+            std::fs::read(&g).unwrap(),
+            "{} differs between runs",
+            f.display()
+        );
     }
     let svg = std::fs::read_to_string(a.join("shaper/positions.svg")).unwrap();
-    assert!(svg.contains("width=\"841mm\"") && svg.contains("height=\"594mm\""), "A1 sheet in real millimetres");
+    assert!(
+        svg.contains("width=\"841mm\"") && svg.contains("height=\"594mm\""),
+        "A1 sheet in real millimetres"
+    );
 }
 
 /// Run `render` on the shaper text edited by `edit`; return (exit code, stderr, files written).
@@ -64,8 +84,17 @@ fn render_edited(name: &str, edit: impl Fn(&str) -> String) -> (i32, String, Vec
     let scene = dir.join("bad.toml");
     std::fs::write(&scene, edited).unwrap();
     let out = dir.join("out");
-    let o = tmm(&["render", scene.to_str().unwrap(), "--out", out.to_str().unwrap()]);
-    (o.status.code().unwrap_or(-1), String::from_utf8_lossy(&o.stderr).into_owned(), files_under(&out))
+    let o = tmm(&[
+        "render",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+        files_under(&out),
+    )
 }
 
 fn assert_refused(name: &str, code: i32, needles: &[&str], edit: impl Fn(&str) -> String) {
@@ -80,48 +109,82 @@ fn assert_refused(name: &str, code: i32, needles: &[&str], edit: impl Fn(&str) -
 
 #[test]
 fn negative_length_is_refused_naming_the_key() {
-    assert_refused("negative", 2, &["mechanism.crank.length", "-140"], |t| t.replace("length = 140.0", "length = -140.0"));
+    assert_refused("negative", 2, &["mechanism.crank.length", "-140"], |t| {
+        t.replace("length = 140.0", "length = -140.0")
+    });
 }
 
 #[test]
 fn zero_length_is_refused_naming_the_key() {
-    assert_refused("zero", 2, &["mechanism.crank.length"], |t| t.replace("length = 140.0", "length = 0.0"));
+    assert_refused("zero", 2, &["mechanism.crank.length"], |t| {
+        t.replace("length = 140.0", "length = 0.0")
+    });
 }
 
 #[test]
 fn nan_is_refused_naming_the_key() {
-    assert_refused("nan", 2, &["mechanism.point[0].along", "nan"], |t| t.replace("along = 710.0", "along = nan"));
+    assert_refused("nan", 2, &["mechanism.point[0].along", "nan"], |t| {
+        t.replace("along = 710.0", "along = nan")
+    });
 }
 
 #[test]
 fn string_for_a_number_is_refused() {
-    assert_refused("string", 2, &["length"], |t| t.replace("length = 140.0", "length = \"140\""));
+    assert_refused("string", 2, &["length"], |t| {
+        t.replace("length = 140.0", "length = \"140\"")
+    });
 }
 
 #[test]
 fn missing_key_is_refused() {
-    assert_refused("missing", 2, &["length"], |t| t.replace("length = 140.0\n", ""));
+    assert_refused("missing", 2, &["length"], |t| {
+        t.replace("length = 140.0\n", "")
+    });
 }
 
 #[test]
 fn mechanism_that_cannot_be_assembled_exits_1_naming_the_step() {
     // The block's slide turned parallel to the ram guide: the two lines never meet.
-    assert_refused("assemble", 1, &["cannot be assembled", "group"], |t| t.replace("slide = 90.0", "slide = 0.0"));
+    assert_refused("assemble", 1, &["cannot be assembled", "group"], |t| {
+        t.replace("slide = 90.0", "slide = 0.0")
+    });
 }
 
 #[test]
 fn usage_errors_exit_2() {
     assert_eq!(tmm(&["render"]).status.code(), Some(2));
-    assert_eq!(tmm(&["render", "constructions/shaper.toml", "--lang", "fr"]).status.code(), Some(2));
-    let o = tmm(&["render", "constructions/shaper.toml", "--drafting", "-1", "--out", scratch("drafting").to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        tmm(&["render", "constructions/shaper.toml", "--lang", "fr"])
+            .status
+            .code(),
+        Some(2)
+    );
+    let o = tmm(&[
+        "render",
+        "constructions/shaper.toml",
+        "--drafting",
+        "-1",
+        "--out",
+        scratch("drafting").to_str().unwrap(),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let o = tmm(&["render", "no/such/scene.toml"]);
     assert_eq!(o.status.code(), Some(2));
 }
 
 #[test]
 fn check_and_list() {
-    let o = tmm(&["check", "constructions/shaper.toml", "constructions/slider-crank.toml", "constructions/four-bar.toml"]);
+    let o = tmm(&[
+        "check",
+        "constructions/shaper.toml",
+        "constructions/slider-crank.toml",
+        "constructions/four-bar.toml",
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let o = tmm(&["list"]);
     let s = String::from_utf8_lossy(&o.stdout);

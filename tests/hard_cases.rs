@@ -8,9 +8,35 @@ use tmm::scale::{Quantity, Scale};
 
 fn four_bar(r: f64, d: f64, la: f64, lb: f64) -> Mechanism {
     Mechanism {
-        fixed: vec![FixedPoint { name: "O".into(), at: DVec2::ZERO }, FixedPoint { name: "D".into(), at: DVec2::new(d, 0.0) }],
-        crank: Crank { link: 1, centre: "O".into(), pin: "A".into(), length: r, omega: 1.0, sense: Sense::CounterClockwise },
-        groups: vec![Group { links: [2, 3], dyad: Dyad::Rrr { a: "A".into(), la, b: "D".into(), lb, joint: "B".into(), branch: Branch::Left } }],
+        fixed: vec![
+            FixedPoint {
+                name: "O".into(),
+                at: DVec2::ZERO,
+            },
+            FixedPoint {
+                name: "D".into(),
+                at: DVec2::new(d, 0.0),
+            },
+        ],
+        crank: Crank {
+            link: 1,
+            centre: "O".into(),
+            pin: "A".into(),
+            length: r,
+            omega: 1.0,
+            sense: Sense::CounterClockwise,
+        },
+        groups: vec![Group {
+            links: [2, 3],
+            dyad: Dyad::Rrr {
+                a: "A".into(),
+                la,
+                b: "D".into(),
+                lb,
+                joint: "B".into(),
+                branch: Branch::Left,
+            },
+        }],
         points: vec![],
         redundant: vec![],
         outputs: vec![Output::Rocker { link: 3 }],
@@ -25,49 +51,97 @@ fn mu() -> Scale {
 fn mechanism_that_cannot_be_assembled_names_position_and_group() {
     // Assembled only for φ₁ in [19.5°, 93.3°]: from 30° in steps of 30°, position 4 (120°) fails.
     let m = four_bar(0.2, 0.3, 0.25, 0.12);
-    let req = PlanRequest { count: 12, start: Some(30f64.to_radians()), other_extreme: true };
+    let req = PlanRequest {
+        count: 12,
+        start: Some(30f64.to_radians()),
+        other_extreme: true,
+    };
     let err = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_err();
     match &err {
-        LinkageError::CannotAssemble { position, group, .. } => {
+        LinkageError::CannotAssemble {
+            position, group, ..
+        } => {
             assert_eq!(position, "4");
             assert!(group.starts_with("1 (RRR, links 2, 3)"), "{group}");
         }
         other => panic!("wanted CannotAssemble, got {other:?}"),
     }
     let msg = err.to_string();
-    assert!(msg.contains("position 4") && msg.contains("120.0000°"), "{msg}");
+    assert!(
+        msg.contains("position 4") && msg.contains("120.0000°"),
+        "{msg}"
+    );
     // The numbers of the failing compass step: |AD| = √0.19 = 0.43589 m > 0.25 + 0.12 m.
-    assert!(msg.contains("arcs from A (r = 0.25000 m) and D (r = 0.12000 m) do not meet"), "{msg}");
+    assert!(
+        msg.contains("arcs from A (r = 0.25000 m) and D (r = 0.12000 m) do not meet"),
+        "{msg}"
+    );
     assert!(msg.contains("0.43589") && msg.contains("0.37000"), "{msg}");
 }
 
 #[test]
 fn working_stroke_start_without_full_turn_is_refused_with_the_angle() {
     let m = four_bar(0.2, 0.3, 0.25, 0.12);
-    let req = PlanRequest { count: 12, start: None, other_extreme: true };
-    let msg = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_err().to_string();
-    assert!(msg.contains("cannot be assembled") && msg.contains("group 1"), "{msg}");
+    let req = PlanRequest {
+        count: 12,
+        start: None,
+        other_extreme: true,
+    };
+    let msg = plan_positions(&m, &req, mu(), Drafting::EXACT)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        msg.contains("cannot be assembled") && msg.contains("group 1"),
+        "{msg}"
+    );
 }
 
 #[test]
 fn change_point_four_bar_passes_its_folded_positions_without_nan() {
     // a + b = c + d: crank 0.1 + coupler 0.2 = rocker 0.1 + frame 0.2 (a parallelogram).
     let m = four_bar(0.1, 0.2, 0.2, 0.1);
-    let req = PlanRequest { count: 12, start: Some(0.0), other_extreme: true };
+    let req = PlanRequest {
+        count: 12,
+        start: Some(0.0),
+        other_extreme: true,
+    };
     let plan = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(plan.positions.len(), 12);
-    let (a, b, d) = (plan.program.index("A").unwrap(), plan.program.index("B").unwrap(), plan.program.index("D").unwrap());
+    let (a, b, d) = (
+        plan.program.index("A").unwrap(),
+        plan.program.index("B").unwrap(),
+        plan.program.index("D").unwrap(),
+    );
     for pos in &plan.positions {
-        assert!(pos.built.p.iter().all(|p| p.is_finite()), "position {}", pos.label);
-        assert!(pos.pose.p.iter().all(|p| p.is_finite()) && pos.pose.dp.iter().all(|p| p.is_finite()));
-        let (pa, pb, pd) = (pos.built.p[a] * 0.001, pos.built.p[b] * 0.001, pos.built.p[d] * 0.001);
-        assert!((pa.distance(pb) - 0.2).abs() < 1e-12 && (pd.distance(pb) - 0.1).abs() < 1e-12, "position {}", pos.label);
+        assert!(
+            pos.built.p.iter().all(|p| p.is_finite()),
+            "position {}",
+            pos.label
+        );
+        assert!(
+            pos.pose.p.iter().all(|p| p.is_finite()) && pos.pose.dp.iter().all(|p| p.is_finite())
+        );
+        let (pa, pb, pd) = (
+            pos.built.p[a] * 0.001,
+            pos.built.p[b] * 0.001,
+            pos.built.p[d] * 0.001,
+        );
+        assert!(
+            (pa.distance(pb) - 0.2).abs() < 1e-12 && (pd.distance(pb) - 0.1).abs() < 1e-12,
+            "position {}",
+            pos.label
+        );
     }
     // Folded at φ₁ = 0 and stretched at 180°: the arcs touch, crossing angle 0, and the
     // analytic twin reports the toggle instead of a velocity.
     for k in [0, 6] {
         let pos = &plan.positions[k];
-        assert!(pos.built.crossing[0] < 1e-6, "position {}: crossing {}", pos.label, pos.built.crossing[0]);
+        assert!(
+            pos.built.crossing[0] < 1e-6,
+            "position {}: crossing {}",
+            pos.label,
+            pos.built.crossing[0]
+        );
         assert!(pos.pose.toggle.is_some(), "position {}", pos.label);
     }
     // The parallelogram's rocker turns fully: no extremes.
@@ -81,13 +155,26 @@ fn four_bar_dead_centres_have_crank_and_coupler_in_line() {
     let ex = prog.extremes(&m.outputs, m.crank.sense).unwrap();
     for phi in [ex.phi_start, ex.phi_other] {
         let pose = prog.solve(phi, None).unwrap();
-        let (o, a, b) = (pose.p[0], pose.p[prog.index("A").unwrap()], pose.p[prog.index("B").unwrap()]);
+        let (o, a, b) = (
+            pose.p[0],
+            pose.p[prog.index("A").unwrap()],
+            pose.p[prog.index("B").unwrap()],
+        );
         let s = (a - o).perp_dot(b - a) / ((a - o).length() * (b - a).length());
-        assert!(s.abs() < 1e-12, "sin between crank and coupler at φ₁ = {}: {s}", phi.to_degrees());
+        assert!(
+            s.abs() < 1e-12,
+            "sin between crank and coupler at φ₁ = {}: {s}",
+            phi.to_degrees()
+        );
     }
     // Time ratio from the closed form: θ = ∠ between the dead-centre crank lines.
     let (l1, l2, l3, l4) = (0.08f64, 0.25f64, 0.18f64, 0.28f64);
     let ang = |c: f64| ((c * c + l4 * l4 - l3 * l3) / (2.0 * c * l4)).acos();
     let theta = (ang(l2 - l1) - ang(l2 + l1)).abs();
-    assert!((ex.theta.abs() - theta).abs() < 1e-12, "θ = {} vs {}", ex.theta, theta);
+    assert!(
+        (ex.theta.abs() - theta).abs() < 1e-12,
+        "θ = {} vs {}",
+        ex.theta,
+        theta
+    );
 }

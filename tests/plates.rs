@@ -17,7 +17,9 @@ fn root() -> PathBuf {
 }
 
 fn render(scene_name: &str, plate: &str) -> Vec<u8> {
-    let path = root().join("constructions").join(format!("{scene_name}.toml"));
+    let path = root()
+        .join("constructions")
+        .join(format!("{scene_name}.toml"));
     let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
     let kind = PlateKind::parse(plate).unwrap_or_else(|| panic!("unknown plate {plate}"));
     let p = sheets::build(&s, kind, &RenderOptions::default()).unwrap_or_else(|e| panic!("{e}"));
@@ -30,9 +32,14 @@ fn compare(expected: &Pixmap, actual: &Pixmap) -> (usize, Pixmap) {
     let mut mask = Pixmap::new(w, h).expect("non-empty image");
     let mut failing = 0;
     for (k, (e, a)) in expected.pixels().iter().zip(actual.pixels()).enumerate() {
-        let differs = [(e.red(), a.red()), (e.green(), a.green()), (e.blue(), a.blue()), (e.alpha(), a.alpha())]
-            .iter()
-            .any(|(x, y)| x.abs_diff(*y) > 1);
+        let differs = [
+            (e.red(), a.red()),
+            (e.green(), a.green()),
+            (e.blue(), a.blue()),
+            (e.alpha(), a.alpha()),
+        ]
+        .iter()
+        .any(|(x, y)| x.abs_diff(*y) > 1);
         let c = if differs {
             failing += 1;
             PremultipliedColorU8::from_rgba(255, 0, 0, 255)
@@ -48,7 +55,14 @@ fn write_diff(name: &str, expected: &Pixmap, mask: &Pixmap, actual: &Pixmap) -> 
     let (w, h) = (expected.width(), expected.height());
     let mut out = Pixmap::new(w * 3, h).expect("non-empty image");
     for (k, img) in [expected, mask, actual].into_iter().enumerate() {
-        out.draw_pixmap((w * k as u32) as i32, 0, img.as_ref(), &Default::default(), Default::default(), None);
+        out.draw_pixmap(
+            (w * k as u32) as i32,
+            0,
+            img.as_ref(),
+            &Default::default(),
+            Default::default(),
+            None,
+        );
     }
     let dir = root().join("out").join("diffs");
     let _ = std::fs::create_dir_all(&dir);
@@ -62,16 +76,32 @@ fn check(scene_name: &str, plate: &str) {
     let png = render(scene_name, plate);
     let ref_path = root().join("tests").join("ref").join(format!("{name}.png"));
     if std::env::var_os("UPDATE_PLATES").is_some() {
+        let _ = std::fs::create_dir_all(ref_path.parent().expect("tests/ref"));
         std::fs::write(&ref_path, &png).expect("write reference");
-        panic!("{name}: reference rewritten at {}; run again without UPDATE_PLATES", ref_path.display());
+        panic!(
+            "{name}: reference rewritten at {}; run again without UPDATE_PLATES",
+            ref_path.display()
+        );
     }
-    let expected = Pixmap::load_png(&ref_path).unwrap_or_else(|e| panic!("{name}: no reference {} ({e}); create it with UPDATE_PLATES=1", ref_path.display()));
+    let expected = Pixmap::load_png(&ref_path).unwrap_or_else(|e| {
+        panic!(
+            "{name}: no reference {} ({e}); create it with UPDATE_PLATES=1",
+            ref_path.display()
+        )
+    });
     let actual = Pixmap::decode_png(&png).expect("decode rendered plate");
-    assert_eq!((expected.width(), expected.height()), (actual.width(), actual.height()), "{name}: image size changed");
+    assert_eq!(
+        (expected.width(), expected.height()),
+        (actual.width(), actual.height()),
+        "{name}: image size changed"
+    );
     let (failing, mask) = compare(&expected, &actual);
     if failing > 0 {
         let diff = write_diff(&name, &expected, &mask, &actual);
-        panic!("{name}: {failing} pixels differ by more than 1; diff at {}", diff.display());
+        panic!(
+            "{name}: {failing} pixels differ by more than 1; diff at {}",
+            diff.display()
+        );
     }
 }
 
@@ -110,5 +140,8 @@ fn every_plate_of_every_scene_is_tested() {
             }
         }
     }
-    assert!(missing.is_empty(), "plates without a pixel test: {missing:?}");
+    assert!(
+        missing.is_empty(),
+        "plates without a pixel test: {missing:?}"
+    );
 }

@@ -12,15 +12,33 @@ use tmm::scale::{Quantity, Scale};
 const MU: f64 = 0.001;
 
 fn crank(r: f64) -> Crank {
-    Crank { link: 1, centre: "O".into(), pin: "B".into(), length: r, omega: 1.0, sense: Sense::CounterClockwise }
+    Crank {
+        link: 1,
+        centre: "O".into(),
+        pin: "B".into(),
+        length: r,
+        omega: 1.0,
+        sense: Sense::CounterClockwise,
+    }
 }
 
 fn mech(fixed: Vec<(&str, DVec2)>, r: f64, dyad: Dyad) -> Mechanism {
     Mechanism {
-        fixed: fixed.into_iter().map(|(n, at)| FixedPoint { name: n.into(), at }).collect(),
+        fixed: fixed
+            .into_iter()
+            .map(|(n, at)| FixedPoint { name: n.into(), at })
+            .collect(),
         crank: crank(r),
-        groups: vec![Group { links: [2, 3], dyad }],
-        points: vec![LinkPoint { name: "S".into(), link: 3, along: 0.07, across: 0.02 }],
+        groups: vec![Group {
+            links: [2, 3],
+            dyad,
+        }],
+        points: vec![LinkPoint {
+            name: "S".into(),
+            link: 3,
+            along: 0.07,
+            across: 0.02,
+        }],
         redundant: vec![],
         outputs: vec![Output::Rocker { link: 3 }],
     }
@@ -29,7 +47,12 @@ fn mech(fixed: Vec<(&str, DVec2)>, r: f64, dyad: Dyad) -> Mechanism {
 /// Construct one position; `None` when it cannot be assembled (outside the property's domain).
 fn build(m: &Mechanism, phi: f64) -> Option<(Program, Built, Pose)> {
     let prog = Program::compile(m).ok()?;
-    let mut rec = Recorder::new("p", Scale::new(MU, Quantity::Length)?, Tolerances::for_model_size(1000.0).ok()?, Drafting::EXACT);
+    let mut rec = Recorder::new(
+        "p",
+        Scale::new(MU, Quantity::Length)?,
+        Tolerances::for_model_size(1000.0).ok()?,
+        Drafting::EXACT,
+    );
     let built = prog.construct(&mut rec, phi, None, "p").ok()?;
     let pose = prog.solve(phi, None).ok()?;
     Some((prog, built, pose))
@@ -52,13 +75,47 @@ fn moved(m: &Mechanism, rot: f64, shift: DVec2) -> Mechanism {
         Dir::Fixed(a) => Dir::Fixed(a + rot),
         other => other.clone(),
     };
-    let g = |gd: &Guide| Guide { through: gd.through.clone(), dir: d(&gd.dir), offset: gd.offset };
+    let g = |gd: &Guide| Guide {
+        through: gd.through.clone(),
+        dir: d(&gd.dir),
+        offset: gd.offset,
+    };
     let mut out = m.clone();
     out.fixed.iter_mut().for_each(|f| f.at = t(f.at));
     out.groups[0].dyad = match &m.groups[0].dyad {
-        Dyad::Rrp { a, la, guide, joint, branch } => Dyad::Rrp { a: a.clone(), la: *la, guide: g(guide), joint: joint.clone(), branch: *branch },
-        Dyad::Prp { guide_i, guide_j, joint } => Dyad::Prp { guide_i: g(guide_i), guide_j: g(guide_j), joint: joint.clone() },
-        Dyad::Rpp { a, slide, guide, joint } => Dyad::Rpp { a: a.clone(), slide: d(slide), guide: g(guide), joint: joint.clone() },
+        Dyad::Rrp {
+            a,
+            la,
+            guide,
+            joint,
+            branch,
+        } => Dyad::Rrp {
+            a: a.clone(),
+            la: *la,
+            guide: g(guide),
+            joint: joint.clone(),
+            branch: *branch,
+        },
+        Dyad::Prp {
+            guide_i,
+            guide_j,
+            joint,
+        } => Dyad::Prp {
+            guide_i: g(guide_i),
+            guide_j: g(guide_j),
+            joint: joint.clone(),
+        },
+        Dyad::Rpp {
+            a,
+            slide,
+            guide,
+            joint,
+        } => Dyad::Rpp {
+            a: a.clone(),
+            slide: d(slide),
+            guide: g(guide),
+            joint: joint.clone(),
+        },
         other => other.clone(),
     };
     out
@@ -69,13 +126,20 @@ fn common_checks(m: &Mechanism, phi: f64, rot: f64, shift: DVec2) -> Result<(), 
     let (prog, b, pose) = build(m, phi).ok_or_else(|| TestCaseError::reject("not assembled"))?;
     for (k, name) in prog.names.iter().enumerate() {
         let d = (b.p[k] * MU - pose.p[k]).length();
-        prop_assert!(d <= 1e-12, "point {name}: construction and analytic differ by {d:e} m");
+        prop_assert!(
+            d <= 1e-12,
+            "point {name}: construction and analytic differ by {d:e} m"
+        );
     }
-    let (prog2, b2, _) = build(&moved(m, rot, shift), phi + rot).ok_or_else(|| TestCaseError::fail("the moved scene did not assemble"))?;
+    let (prog2, b2, _) = build(&moved(m, rot, shift), phi + rot)
+        .ok_or_else(|| TestCaseError::fail("the moved scene did not assemble"))?;
     for (k, name) in prog.names.iter().enumerate() {
         let want = DVec2::from_angle(rot).rotate(b.p[k] * MU) + shift;
         let got = b2.p[prog2.index(name).expect("same names")] * MU;
-        prop_assert!((want - got).length() <= 1e-9, "point {name} moved differently: {want} vs {got}");
+        prop_assert!(
+            (want - got).length() <= 1e-9,
+            "point {name} moved differently: {want} vs {got}"
+        );
     }
     Ok(())
 }

@@ -9,9 +9,14 @@ use tmm::scale::{Quantity, Scale};
 fn shaper_plan() -> (tmm::scene::Scene, PositionPlan) {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions/shaper.toml");
     let scene = tmm::scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
-    let req = PlanRequest { count: 12, start: None, other_extreme: true };
+    let req = PlanRequest {
+        count: 12,
+        start: None,
+        other_extreme: true,
+    };
     let scale = Scale::new(0.0025, Quantity::Length).unwrap();
-    let plan = plan_positions(&scene.mechanism, &req, scale, Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
+    let plan = plan_positions(&scene.mechanism, &req, scale, Drafting::EXACT)
+        .unwrap_or_else(|e| panic!("{e}"));
     (scene, plan)
 }
 
@@ -35,12 +40,24 @@ const TABLE5: [(&str, f64, f64, f64); 13] = [
 #[test]
 fn shaper_swing_time_ratio_and_stroke() {
     let (_, plan) = shaper_plan();
-    let ex = plan.extremes.as_ref().expect("the shaper has extreme positions");
-    assert!((ex.theta.to_degrees() - 38.0016).abs() < 5e-5, "θ = {}", ex.theta.to_degrees());
+    let ex = plan
+        .extremes
+        .as_ref()
+        .expect("the shaper has extreme positions");
+    assert!(
+        (ex.theta.to_degrees() - 38.0016).abs() < 5e-5,
+        "θ = {}",
+        ex.theta.to_degrees()
+    );
     assert!((ex.k - 1.5352).abs() < 5e-5, "K = {}", ex.k);
     // The seed rounds K to 1.5 (L14): that value must not come out.
     assert!((ex.k - 1.5).abs() > 0.03);
-    let stroke = ex.ranges.iter().find(|r| matches!(r.coord, OutputCoord::Slider(..))).map(|r| r.max - r.min).expect("ram output");
+    let stroke = ex
+        .ranges
+        .iter()
+        .find(|r| matches!(r.coord, OutputCoord::Slider(..)))
+        .map(|r| r.max - r.min)
+        .expect("ram output");
     assert!((stroke - 0.46233).abs() < 5e-6, "H = {stroke}");
     // The seed's "S = 0.93 m" (L196) is twice the stroke.
     assert!((stroke - 0.93).abs() > 0.4);
@@ -51,7 +68,11 @@ fn shaper_extreme_positions_are_exact() {
     let (_, plan) = shaper_plan();
     let ex = plan.extremes.as_ref().unwrap();
     let exact = 180.0 + (0.14f64 / 0.43).asin().to_degrees();
-    assert!((ex.phi_start.to_degrees() - exact).abs() < 1e-9, "{}", ex.phi_start.to_degrees());
+    assert!(
+        (ex.phi_start.to_degrees() - exact).abs() < 1e-9,
+        "{}",
+        ex.phi_start.to_degrees()
+    );
     assert!((ex.phi_other.to_degrees() - (540.0 - exact)).abs() < 1e-9);
     // At both extremes the rocker is tangent to the crank circle: CB ⊥ AB.
     for pos in plan.positions.iter().filter(|p| p.extreme) {
@@ -69,24 +90,46 @@ fn shaper_table5_phi3_and_l3_at_all_13_positions() {
     let labels: Vec<&str> = plan.positions.iter().map(|p| p.label.as_str()).collect();
     assert_eq!(labels, TABLE5.iter().map(|r| r.0).collect::<Vec<_>>());
     let mu = 0.0025;
-    let (b, c) = (plan.program.index("B").unwrap(), plan.program.index("C").unwrap());
+    let (b, c) = (
+        plan.program.index("B").unwrap(),
+        plan.program.index("C").unwrap(),
+    );
     for (pos, (label, phi1, phi3_table, l3_table)) in plan.positions.iter().zip(TABLE5) {
         // The positions are the seed's, at the exact extreme 199.0008° instead of 199°.
         let d_phi = (pos.phi.to_degrees() - phi1).rem_euclid(360.0);
-        assert!(d_phi.min(360.0 - d_phi) < 1e-3, "position {label}: φ₁ = {}", pos.phi.to_degrees());
+        assert!(
+            d_phi.min(360.0 - d_phi) < 1e-3,
+            "position {label}: φ₁ = {}",
+            pos.phi.to_degrees()
+        );
         // Exact closed form (§000.3): B = A + 0.14(cos φ₁, sin φ₁), C at the origin.
         let bx = DVec2::new(0.0, 0.43) + DVec2::from_angle(pos.phi) * 0.14;
         let (phi3_exact, l3_exact) = (bx.y.atan2(bx.x).to_degrees(), bx.length());
         let cb = (pos.built.p[b] - pos.built.p[c]) * mu;
         let phi3 = pos.built.angle[3].to_degrees();
         let l3 = cb.length();
-        assert!((phi3 - phi3_exact).abs() < 0.01, "position {label}: φ₃ = {phi3}, exact {phi3_exact}");
-        assert!((l3 - l3_exact).abs() * 1000.0 < 0.01, "position {label}: L₃ = {l3}, exact {l3_exact}");
+        assert!(
+            (phi3 - phi3_exact).abs() < 0.01,
+            "position {label}: φ₃ = {phi3}, exact {phi3_exact}"
+        );
+        assert!(
+            (l3 - l3_exact).abs() * 1000.0 < 0.01,
+            "position {label}: L₃ = {l3}, exact {l3_exact}"
+        );
         // Construction and closed form agree to rounding, not just to the tolerance.
-        assert!((phi3 - phi3_exact).abs() < 1e-9 && (l3 - l3_exact).abs() < 1e-12, "position {label}");
+        assert!(
+            (phi3 - phi3_exact).abs() < 1e-9 && (l3 - l3_exact).abs() < 1e-12,
+            "position {label}"
+        );
         // And the table's exact column at its printed precision.
-        assert!((phi3 - phi3_table).abs() < 6e-4, "position {label}: φ₃ = {phi3}, table {phi3_table}");
-        assert!((l3 - l3_table).abs() < 6e-5, "position {label}: L₃ = {l3}, table {l3_table}");
+        assert!(
+            (phi3 - phi3_table).abs() < 6e-4,
+            "position {label}: φ₃ = {phi3}, table {phi3_table}"
+        );
+        assert!(
+            (l3 - l3_table).abs() < 6e-5,
+            "position {label}: L₃ = {l3}, table {l3_table}"
+        );
     }
     // The seed's typo φ₃ = 106 at position 2 (exact 106.747) is not reproduced.
     assert!((plan.positions[1].built.angle[3].to_degrees() - 106.0).abs() > 0.7);

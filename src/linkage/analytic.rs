@@ -146,7 +146,10 @@ impl Program {
                             let (ra, rb) = (jp - p[a], jp - p[b]);
                             let rhs = DVec2::new(ra.dot(dp[a]), rb.dot(dp[b]));
                             let v = solve2(ra, rb, rhs).unwrap_or_else(|| {
-                                let why = format!("links {i} and {j} are in line at {} (toggle position)", self.names[joint]);
+                                let why = format!(
+                                    "links {i} and {j} are in line at {} (toggle position)",
+                                    self.names[joint]
+                                );
                                 toggle.get_or_insert(fail(why));
                                 DVec2::ZERO
                             });
@@ -255,21 +258,13 @@ impl Program {
                             let (psi, dpsi) = self.dir(&slide, &p, &dp);
                             let e1 = DVec2::from_angle(psi);
                             let (g2, e2, dg2, de2) = self.guide(&guide, &p, &dp);
-                            let (jp, v, s) = meet(
-                                p[a],
-                                e1,
-                                dp[a],
-                                e1.perp() * dpsi,
-                                g2,
-                                e2,
-                                dg2,
-                                de2,
-                            )
-                            .ok_or_else(|| {
-                                fail(format!(
+                            let (jp, v, s) =
+                                meet(p[a], e1, dp[a], e1.perp() * dpsi, g2, e2, dg2, de2)
+                                    .ok_or_else(|| {
+                                        fail(format!(
                                     "the slide of link {i} is parallel to the guide of link {j}"
                                 ))
-                            })?;
+                                    })?;
                             p[joint] = jp;
                             dp[joint] = v;
                             angle[i] = psi;

@@ -19,7 +19,10 @@ pub use model::{
     Branch, Crank, Dir, Dyad, DyadKind, FixedPoint, Group, Guide, LinkPoint, Mechanism, Output,
     RedundantPair, Sense,
 };
-pub use plan::{draw_links, Part, fixed_pivots, group_name, plan_positions, PlanPosition, PlanRequest, PositionPlan};
+pub use plan::{
+    draw_links, fixed_pivots, frame_guides, group_name, plan_positions, FrameGuide, Part,
+    PlanPosition, PlanRequest, PositionPlan,
+};
 pub use program::{Op, PDir, PDyad, PGuide, Program};
 pub use scheme::structure_figure;
 pub use structure::{GroupInfo, PairInfo, Structure};

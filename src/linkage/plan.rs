@@ -6,7 +6,7 @@ use super::analytic::Pose;
 use super::construction::Built;
 use super::extremes::{Extremes, OutputCoord};
 use super::model::{Mechanism, Sense};
-use super::program::{Op, PDyad, PGuide, Program};
+use super::program::{Op, PDir, PDyad, PGuide, Program};
 use super::LinkageError;
 use crate::construct::{Drafting, Figure, Item, Recorder, Role};
 use crate::geom::{Arc, Circle, DVec2, Segment, Side, Tolerances};
@@ -58,9 +58,23 @@ fn phi_of(start: f64, sense: Sense, k: usize, count: u32) -> f64 {
 }
 
 /// The sequence (label, φ, extreme?) in crank order.
-fn sequence(req: &PlanRequest, start: f64, sense: Sense, ex: Option<&Extremes>) -> Vec<(String, f64, bool)> {
+fn sequence(
+    req: &PlanRequest,
+    start: f64,
+    sense: Sense,
+    ex: Option<&Extremes>,
+) -> Vec<(String, f64, bool)> {
     let step = TAU / req.count as f64;
-    let mut seq: Vec<(String, f64, bool, f64)> = (0..req.count as usize).map(|k| ((k + 1).to_string(), phi_of(start, sense, k, req.count), false, step * k as f64)).collect();
+    let mut seq: Vec<(String, f64, bool, f64)> = (0..req.count as usize)
+        .map(|k| {
+            (
+                (k + 1).to_string(),
+                phi_of(start, sense, k, req.count),
+                false,
+                step * k as f64,
+            )
+        })
+        .collect();
     if let (true, Some(ex)) = (req.other_extreme, ex) {
         for phi in [ex.phi_start, ex.phi_other] {
             let travel = (sense.sign() * (phi - start)).rem_euclid(TAU);
@@ -68,7 +82,11 @@ fn sequence(req: &PlanRequest, start: f64, sense: Sense, ex: Option<&Extremes>) 
             let off = travel - step * k as f64;
             // An extreme that falls on a numbered position is that position.
             if off.min(step - off) <= 1e-9 {
-                let at = if off <= 1e-9 { k } else { (k + 1) % req.count as usize };
+                let at = if off <= 1e-9 {
+                    k
+                } else {
+                    (k + 1) % req.count as usize
+                };
                 seq[at].2 = true;
                 continue;
             }
@@ -80,7 +98,12 @@ fn sequence(req: &PlanRequest, start: f64, sense: Sense, ex: Option<&Extremes>) 
 }
 
 /// Build the plan of positions of `m` at μ_l = `scale`.
-pub fn plan_positions(m: &Mechanism, req: &PlanRequest, scale: Scale, drafting: Drafting) -> Result<PositionPlan, LinkageError> {
+pub fn plan_positions(
+    m: &Mechanism,
+    req: &PlanRequest,
+    scale: Scale,
+    drafting: Drafting,
+) -> Result<PositionPlan, LinkageError> {
     let program = Program::compile(m)?;
     // With a given start angle the extremes are optional: a mechanism whose output turns
     // fully has none, and one that cannot make a full turn fails at a named position below.
@@ -95,10 +118,14 @@ pub fn plan_positions(m: &Mechanism, req: &PlanRequest, scale: Scale, drafting: 
         (None, None) => unreachable_start()?,
     };
     let extent_mm = model_extent(&program) / scale.value();
-    let tol = Tolerances::for_model_size(extent_mm.max(1.0)).map_err(|e| LinkageError::Model(e.to_string()))?;
+    let tol = Tolerances::for_model_size(extent_mm.max(1.0))
+        .map_err(|e| LinkageError::Model(e.to_string()))?;
     let mut rec = Recorder::new("plan", scale, tol, drafting);
     let mut positions: Vec<PlanPosition> = Vec::new();
-    for (k, (label, phi, extreme)) in sequence(req, start, m.crank.sense, extremes.as_ref()).into_iter().enumerate() {
+    for (k, (label, phi, extreme)) in sequence(req, start, m.crank.sense, extremes.as_ref())
+        .into_iter()
+        .enumerate()
+    {
         rec.set_group(k as u32 + 1);
         let prev = positions.last();
         let fail_pos = |group: usize, detail: String| LinkageError::CannotAssemble {
@@ -107,22 +134,55 @@ pub fn plan_positions(m: &Mechanism, req: &PlanRequest, scale: Scale, drafting: 
             group: group_name(m, group),
             detail,
         };
-        let built = program.construct(&mut rec, phi, prev.map(|p| &p.built), &format!("position {label}")).map_err(|f| fail_pos(f.group, f.error.to_string()))?;
-        let pose = program.solve(phi, prev.map(|p| &p.pose)).map_err(|u| fail_pos(u.group, u.detail))?;
-        positions.push(PlanPosition { label, phi, extreme, built, pose });
+        let built = program
+            .construct(
+                &mut rec,
+                phi,
+                prev.map(|p| &p.built),
+                &format!("position {label}"),
+            )
+            .map_err(|f| fail_pos(f.group, f.error.to_string()))?;
+        let pose = program
+            .solve(phi, prev.map(|p| &p.pose))
+            .map_err(|u| fail_pos(u.group, u.detail))?;
+        positions.push(PlanPosition {
+            label,
+            phi,
+            extreme,
+            built,
+            pose,
+        });
     }
     rec.set_group(0);
     draw_plan(&mut rec, &program, &positions, extremes.as_ref());
-    Ok(PositionPlan { program, extremes, positions, figure: rec.finish() })
+    Ok(PositionPlan {
+        program,
+        extremes,
+        positions,
+        figure: rec.finish(),
+    })
 }
 
 fn unreachable_start() -> Result<f64, LinkageError> {
-    Err(LinkageError::Model("the start of the working stroke is not defined".into()))
+    Err(LinkageError::Model(
+        "the start of the working stroke is not defined".into(),
+    ))
 }
 
 /// `2 (RRR, links 2, 3)`.
 pub fn group_name(m: &Mechanism, g: usize) -> String {
-    m.groups.get(g).map_or_else(|| format!("{}", g + 1), |gr| format!("{} ({}, links {}, {})", g + 1, gr.dyad.kind().letters(), gr.links[0], gr.links[1]))
+    m.groups.get(g).map_or_else(
+        || format!("{}", g + 1),
+        |gr| {
+            format!(
+                "{} ({}, links {}, {})",
+                g + 1,
+                gr.dyad.kind().letters(),
+                gr.links[0],
+                gr.links[1]
+            )
+        },
+    )
 }
 
 /// Largest distance between fixed points and the crank reach, m (sets the tolerances).
@@ -154,33 +214,62 @@ pub enum Part {
 
 /// Draw one position's links with `role`; returns, per link number drawn, a point to put its
 /// number at.
-pub fn draw_links(rec: &mut Recorder, prog: &Program, b: &Built, role: Role, note: &str, part: Part) -> Vec<(u32, DVec2)> {
+pub fn draw_links(
+    rec: &mut Recorder,
+    prog: &Program,
+    b: &Built,
+    role: Role,
+    note: &str,
+    part: Part,
+) -> Vec<(u32, DVec2)> {
     let mut anchors = Vec::new();
     let mu = rec.scale().value();
     let mut joints = Vec::new();
     if matches!(part, Part::All | Part::Driver) {
         let (centre, pin) = (b.p[prog.centre], b.p[prog.pin]);
-        rec.draw(format!("{note}: crank"), Item::Segment(Segment::new(centre, pin)), role, &[]);
+        rec.draw(
+            format!("{note}: crank"),
+            Item::Segment(Segment::new(centre, pin)),
+            role,
+            &[],
+        );
         anchors.push((prog.crank_link, centre.lerp(pin, 0.5)));
         joints.extend([prog.centre, prog.pin]);
     }
     for op in &prog.ops {
-        let Op::Dyad { group, links, dyad } = op else { continue };
+        let Op::Dyad { group, links, dyad } = op else {
+            continue;
+        };
         if !matches!(part, Part::All) && part != Part::Group(*group) {
             continue;
         }
         let [i, j] = *links;
         let seg = |rec: &mut Recorder, l: u32, from: DVec2, to: DVec2| {
-            rec.draw(format!("{note}: link {l}"), Item::Segment(Segment::new(from, to)), role, &[]);
+            rec.draw(
+                format!("{note}: link {l}"),
+                Item::Segment(Segment::new(from, to)),
+                role,
+                &[],
+            );
         };
         let slider = |rec: &mut Recorder, l: u32, at: DVec2, angle: f64| {
-            rec.draw(format!("{note}: slider {l}"), Item::Slider { at, angle }, role, &[]);
+            rec.draw(
+                format!("{note}: slider {l}"),
+                Item::Slider { at, angle },
+                role,
+                &[],
+            );
         };
         match *dyad {
-            PDyad::Rrr { a, b: bb, joint, .. } => {
+            PDyad::Rrr {
+                a, b: bb, joint, ..
+            } => {
                 seg(rec, i, b.p[a], b.p[joint]);
                 seg(rec, j, b.p[bb], b.p[joint]);
-                anchors.extend([(i, b.p[a].lerp(b.p[joint], 0.5)), (j, b.p[bb].lerp(b.p[joint], 0.5))]);
+                anchors.extend([
+                    (i, b.p[a].lerp(b.p[joint], 0.5)),
+                    (j, b.p[bb].lerp(b.p[joint], 0.5)),
+                ]);
                 joints.extend([a, bb, joint]);
             }
             PDyad::Rrp { a, joint, .. } => {
@@ -219,17 +308,25 @@ pub fn draw_links(rec: &mut Recorder, prog: &Program, b: &Built, role: Role, not
     joints.dedup();
     for k in joints {
         let fixed = k < prog.fixed.len() && part == Part::Driver;
-        rec.draw(format!("{note}: joint {}", prog.names[k]), Item::Joint { at: b.p[k], fixed }, role, &[]);
+        rec.draw(
+            format!("{note}: joint {}", prog.names[k]),
+            Item::Joint { at: b.p[k], fixed },
+            role,
+            &[],
+        );
     }
     anchors
 }
 
 /// Farthest `along` of a link's points, mm.
 fn link_reach(prog: &Program, link: u32, mu: f64) -> f64 {
-    prog.ops.iter().filter_map(|op| match op {
-        Op::Point { link: l, along, .. } if *l == link => Some(*along / mu),
-        _ => None,
-    }).fold(0.0, f64::max)
+    prog.ops
+        .iter()
+        .filter_map(|op| match op {
+            Op::Point { link: l, along, .. } if *l == link => Some(*along / mu),
+            _ => None,
+        })
+        .fold(0.0, f64::max)
 }
 
 /// Fixed points that are revolute pairs with the frame.
@@ -251,49 +348,119 @@ pub fn fixed_pivots(prog: &Program) -> Vec<usize> {
     v
 }
 
-/// Fixed guides with the joint that runs on them.
-fn fixed_guides(prog: &Program) -> Vec<(PGuide, usize)> {
+/// A guide of the frame as drawn: the group it belongs to, the piece of line spanning the
+/// travel of its joint (with a margin) and the side its hatching goes on (away from the crank).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameGuide {
+    /// Group index.
+    pub group: usize,
+    /// The drawn piece of the guide line.
+    pub segment: Segment,
+    /// Side of the hatching.
+    pub hatch: Side,
+}
+
+/// The frame's guides spanning the joint positions of `built`, with `margin` mm at each end.
+pub fn frame_guides(prog: &Program, built: &[&Built], margin: f64) -> Vec<FrameGuide> {
     let n = prog.fixed.len();
     let mut v = Vec::new();
+    let Some(first) = built.first() else { return v };
+    let centre = first.p[prog.centre];
     for op in &prog.ops {
-        if let Op::Dyad { dyad, .. } = op {
-            match *dyad {
-                PDyad::Rrp { guide, joint, .. } | PDyad::Rpp { guide, joint, .. } if guide.is_fixed(n) => v.push((guide, joint)),
-                PDyad::Prp { gi, gj, joint } => {
-                    v.extend([(gi, joint), (gj, joint)].into_iter().filter(|(g, _)| g.is_fixed(n)));
-                }
-                _ => {}
+        let Op::Dyad { group, dyad, .. } = op else {
+            continue;
+        };
+        let guides: Vec<(PGuide, usize)> = match *dyad {
+            PDyad::Rrp { guide, joint, .. } | PDyad::Rpp { guide, joint, .. } => {
+                vec![(guide, joint)]
             }
+            PDyad::Prp { gi, gj, joint } => vec![(gi, joint), (gj, joint)],
+            _ => vec![],
+        };
+        for (g, joint) in guides.into_iter().filter(|(g, _)| g.is_fixed(n)) {
+            let PDir::Fixed(a) = g.dir else { continue };
+            let e = DVec2::from_angle(a);
+            let (lo, hi) = built
+                .iter()
+                .map(|b| b.p[joint].dot(e))
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), t| {
+                    (lo.min(t), hi.max(t))
+                });
+            let p0 = first.p[joint];
+            let base = p0 - e * p0.dot(e);
+            let segment = Segment::new(base + e * (lo - margin), base + e * (hi + margin));
+            let hatch = if e.perp_dot(centre - segment.from) > 0.0 {
+                Side::Right
+            } else {
+                Side::Left
+            };
+            v.push(FrameGuide {
+                group: *group,
+                segment,
+                hatch,
+            });
         }
     }
     v
 }
 
-fn draw_plan(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition], ex: Option<&Extremes>) {
-    let Some(first) = positions.first() else { return };
+fn draw_plan(
+    rec: &mut Recorder,
+    prog: &Program,
+    positions: &[PlanPosition],
+    ex: Option<&Extremes>,
+) {
+    let Some(first) = positions.first() else {
+        return;
+    };
     let centre = first.built.p[prog.centre];
     let r_mm = first.built.p[prog.pin].distance(centre);
-    rec.draw("crank circle", Item::Circle(Circle { center: centre, radius: r_mm }), Role::Construction, &[]);
+    rec.draw(
+        "crank circle",
+        Item::Circle(Circle {
+            center: centre,
+            radius: r_mm,
+        }),
+        Role::Construction,
+        &[],
+    );
     // Guides of the frame, spanning the travel of their joints.
-    for (g, joint) in fixed_guides(prog) {
-        let pts: Vec<DVec2> = positions.iter().map(|p| p.built.p[joint]).collect();
-        let e = DVec2::from_angle(match g.dir { super::program::PDir::Fixed(a) => a, _ => 0.0 });
-        let ts = pts.iter().map(|p| p.dot(e));
-        let (lo, hi) = ts.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), t| (lo.min(t), hi.max(t)));
-        let base = pts[0] - e * pts[0].dot(e);
-        let seg = Segment::new(base + e * (lo - 15.0), base + e * (hi + 15.0));
-        // Hatch on the side away from the crank centre.
-        let side = if e.perp_dot(centre - seg.from) > 0.0 { Side::Right } else { Side::Left };
-        rec.draw("guide of the frame", Item::Guide { segment: seg, hatch: side }, Role::Given, &[]);
+    let all: Vec<&Built> = positions.iter().map(|p| &p.built).collect();
+    for g in frame_guides(prog, &all, 15.0) {
+        rec.draw(
+            "guide of the frame",
+            Item::Guide {
+                segment: g.segment,
+                hatch: g.hatch,
+            },
+            Role::Given,
+            &[],
+        );
     }
     // Every position: thin; position 1 and the extremes: thick.
     for (k, pos) in positions.iter().enumerate() {
         rec.set_group(k as u32 + 1);
-        let role = if k == 0 || pos.extreme { Role::Given } else { Role::Construction };
-        draw_links(rec, prog, &pos.built, role, &format!("position {}", pos.label), Part::All);
+        let role = if k == 0 || pos.extreme {
+            Role::Given
+        } else {
+            Role::Construction
+        };
+        draw_links(
+            rec,
+            prog,
+            &pos.built,
+            role,
+            &format!("position {}", pos.label),
+            Part::All,
+        );
         let pin = pos.built.p[prog.pin];
         let out = (pin - centre).normalize_or_zero();
-        let id = rec.draw(format!("position {}: number", pos.label), Item::Text(pin), Role::Dimension, &[]);
+        let id = rec.draw(
+            format!("position {}: number", pos.label),
+            Item::Text(pin),
+            Role::Dimension,
+            &[],
+        );
         rec.label(id, pos.label.clone(), pin, out);
     }
     rec.set_group(0);
@@ -303,17 +470,40 @@ fn draw_plan(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition], ex:
             // A smooth curve through the constructed points, as on the drawing board.
             let points: Vec<DVec2> = positions.iter().map(|p| p.built.p[*idx]).collect();
             let closed = positions.len() > 2;
-            rec.draw(format!("trajectory of {}", prog.names[*idx]), Item::Curve { points, closed }, Role::Construction, &[]);
+            rec.draw(
+                format!("trajectory of {}", prog.names[*idx]),
+                Item::Curve { points, closed },
+                Role::Construction,
+                &[],
+            );
         }
     }
     // Fixed pivots and the letters of position 1.
     for k in fixed_pivots(prog) {
-        let id = rec.draw(format!("fixed pivot {}", prog.names[k]), Item::Joint { at: first.built.p[k], fixed: true }, Role::Given, &[]);
-        rec.label(id, prog.names[k].clone(), first.built.p[k], DVec2::new(-1.0, 0.6).normalize());
+        let id = rec.draw(
+            format!("fixed pivot {}", prog.names[k]),
+            Item::Joint {
+                at: first.built.p[k],
+                fixed: true,
+            },
+            Role::Given,
+            &[],
+        );
+        rec.label(
+            id,
+            prog.names[k].clone(),
+            first.built.p[k],
+            DVec2::new(-1.0, 0.6).normalize(),
+        );
     }
     for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
         let at = first.built.p[k];
-        let id = rec.draw(format!("point {name} of position 1"), Item::Point(at), Role::Given, &[]);
+        let id = rec.draw(
+            format!("point {name} of position 1"),
+            Item::Point(at),
+            Role::Given,
+            &[],
+        );
         rec.label(id, name.clone(), at, DVec2::new(0.7, 0.7).normalize());
     }
     if let Some(ex) = ex {
@@ -322,38 +512,93 @@ fn draw_plan(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition], ex:
 }
 
 fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition], ex: &Extremes) {
-    let find = |phi: f64| positions.iter().find(|p| (p.phi - phi).rem_euclid(TAU).min((phi - p.phi).rem_euclid(TAU)) < 1e-9);
-    let (Some(a), Some(b)) = (find(ex.phi_start), find(ex.phi_other)) else { return };
+    let find = |phi: f64| {
+        positions.iter().find(|p| {
+            (p.phi - phi)
+                .rem_euclid(TAU)
+                .min((phi - p.phi).rem_euclid(TAU))
+                < 1e-9
+        })
+    };
+    let (Some(a), Some(b)) = (find(ex.phi_start), find(ex.phi_other)) else {
+        return;
+    };
     for r in &ex.ranges {
         match r.coord {
             OutputCoord::Rocker(l) => {
                 let o = a.built.p[a.built.origin[l]];
-                let (ua, ub) = (DVec2::from_angle(a.built.angle[l]), DVec2::from_angle(b.built.angle[l]));
-                let reach = link_reach(prog, l as u32, rec.scale().value()).max(40.0) * 0.55;
-                let id = rec.draw("swing angle of the rocker", Item::Angle(Arc::between(o, reach, ua, ub)), Role::Dimension, &[]);
+                let (ua, ub) = (
+                    DVec2::from_angle(a.built.angle[l]),
+                    DVec2::from_angle(b.built.angle[l]),
+                );
+                let reach =
+                    (link_reach(prog, l as u32, rec.scale().value()) * 0.3).clamp(25.0, 70.0);
+                let id = rec.draw(
+                    "swing angle of the rocker",
+                    Item::Angle(Arc::between(o, reach, ua, ub)),
+                    Role::Dimension,
+                    &[],
+                );
                 let mid = (ua + ub).normalize_or_zero();
                 let swing = (r.max - r.min).abs();
-                let name = if (swing - ex.theta.abs()).abs() < 1e-9 { "θ" } else { "ψ" };
+                let name = if (swing - ex.theta.abs()).abs() < 1e-9 {
+                    "θ"
+                } else {
+                    "ψ"
+                };
                 rec.label(id, name, o + mid * (reach + 1.0), mid);
             }
             OutputCoord::Slider(i, d) => {
                 let (pa, pb) = (a.built.p[i], b.built.p[i]);
                 let n = d.perp();
-                let off = if (pa - a.built.p[prog.centre]).dot(n) > 0.0 { 14.0 } else { -14.0 };
-                let (from, to) = if (pb - pa).dot(d) >= 0.0 { (pa, pb) } else { (pb, pa) };
-                let id = rec.draw("stroke of the slider", Item::Dimension { from, to, offset: off }, Role::Dimension, &[]);
+                let off = if (pa - a.built.p[prog.centre]).dot(n) > 0.0 {
+                    14.0
+                } else {
+                    -14.0
+                };
+                let (from, to) = if (pb - pa).dot(d) >= 0.0 {
+                    (pa, pb)
+                } else {
+                    (pb, pa)
+                };
+                let id = rec.draw(
+                    "stroke of the slider",
+                    Item::Dimension {
+                        from,
+                        to,
+                        offset: off,
+                    },
+                    Role::Dimension,
+                    &[],
+                );
                 rec.label(id, "H", (from + to) * 0.5 + n * off, n * off.signum());
             }
         }
     }
-    if !ex.ranges.iter().any(|r| matches!(r.coord, OutputCoord::Rocker(_)) && ((r.max - r.min).abs() - ex.theta.abs()).abs() < 1e-9) {
+    if !ex.ranges.iter().any(|r| {
+        matches!(r.coord, OutputCoord::Rocker(_))
+            && ((r.max - r.min).abs() - ex.theta.abs()).abs() < 1e-9
+    }) {
         // θ between the crank at one extreme and the extension of the crank at the other.
         let c = a.built.p[prog.centre];
-        let (ua, ub) = ((c - a.built.p[prog.pin]).normalize_or_zero(), (b.built.p[prog.pin] - c).normalize_or_zero());
+        let (ua, ub) = (
+            (c - a.built.p[prog.pin]).normalize_or_zero(),
+            (b.built.p[prog.pin] - c).normalize_or_zero(),
+        );
         let r = b.built.p[prog.pin].distance(c) * 0.7;
-        let id = rec.draw("angle θ between the crank's extreme positions", Item::Angle(Arc::between(c, r, ua, ub)), Role::Dimension, &[]);
+        let id = rec.draw(
+            "angle θ between the crank's extreme positions",
+            Item::Angle(Arc::between(c, r, ua, ub)),
+            Role::Dimension,
+            &[],
+        );
         let mid = (ua + ub).normalize_or_zero();
         rec.label(id, "θ", c + mid * (r + 1.0), mid);
-        rec.draw("extension of the crank", Item::Segment(Segment::new(c, c + ua * r * 1.2)), Role::Construction, &[]);
+        rec.draw(
+            "extension of the crank",
+            Item::Segment(Segment::new(c, c + ua * r * 1.2)),
+            Role::Construction,
+            &[],
+        );
     }
 }

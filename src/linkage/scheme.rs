@@ -2,15 +2,17 @@
 //! the decomposition into the class-I mechanism and the Assur groups, each drawn apart.
 
 use super::construction::Built;
-use super::plan::{draw_links, fixed_pivots, Part};
+use super::plan::{draw_links, fixed_pivots, frame_guides, Part};
 use super::program::Program;
 use super::structure::Structure;
 use crate::construct::{Drafting, Figure, Item, Recorder, Role};
-use crate::geom::{DVec2, Tolerances};
+use crate::geom::{DVec2, Segment, Tolerances};
 use crate::scale::Scale;
 
 /// Gap between the parts of the decomposition, mm.
 const GAP_MM: f64 = 14.0;
+/// Half-length of a guide piece on the scheme, beyond its joint, mm.
+const GUIDE_MM: f64 = 12.0;
 
 fn shifted(b: &Built, factor: f64, shift: DVec2) -> Built {
     let mut c = b.clone();
@@ -20,44 +22,110 @@ fn shifted(b: &Built, factor: f64, shift: DVec2) -> Built {
 
 /// Bounds of the steps recorded from `start` on.
 fn bounds_from(rec: &Recorder, start: usize) -> (DVec2, DVec2) {
-    let f = Figure { title: String::new(), scale: rec.scale(), steps: rec.steps()[start..].to_vec() };
+    let f = Figure {
+        title: String::new(),
+        scale: rec.scale(),
+        steps: rec.steps()[start..].to_vec(),
+    };
     f.bounds().unwrap_or((DVec2::ZERO, DVec2::ZERO))
 }
 
 /// Draw the structural scheme of `prog` from its constructed position 1 (`first`, at μ_l =
-/// `plan_mu`) at the scale `scale`: the whole mechanism with link numbers, and under it the
-/// class-I mechanism and each Assur group drawn apart, captioned with the structure formula's
-/// terms.
-pub fn structure_figure(prog: &Program, st: &Structure, first: &Built, plan_mu: f64, scale: Scale, tol: Tolerances) -> Figure {
+/// `plan_mu`) at the scale `scale`: the whole mechanism with its link numbers and the frame's
+/// guides, and to its right the class-I mechanism and each Assur group drawn apart (their
+/// outer pairs free), captioned with the terms of the structure formula.
+pub fn structure_figure(
+    prog: &Program,
+    st: &Structure,
+    first: &Built,
+    plan_mu: f64,
+    scale: Scale,
+    tol: Tolerances,
+) -> Figure {
     let factor = plan_mu / scale.value();
     let mut rec = Recorder::new("scheme", scale, tol, Drafting::EXACT);
     let whole = shifted(first, factor, DVec2::ZERO);
     let anchors = draw_links(&mut rec, prog, &whole, Role::Given, "scheme", Part::All);
+    let guides = frame_guides(prog, &[&whole], GUIDE_MM);
+    for g in &guides {
+        rec.draw(
+            "guide of the frame",
+            Item::Guide {
+                segment: g.segment,
+                hatch: g.hatch,
+            },
+            Role::Given,
+            &[],
+        );
+    }
     for k in fixed_pivots(prog) {
-        let id = rec.draw(format!("pivot {}", prog.names[k]), Item::Joint { at: whole.p[k], fixed: true }, Role::Given, &[]);
-        rec.label(id, prog.names[k].clone(), whole.p[k], DVec2::new(-1.0, 0.5).normalize());
+        let id = rec.draw(
+            format!("pivot {}", prog.names[k]),
+            Item::Joint {
+                at: whole.p[k],
+                fixed: true,
+            },
+            Role::Given,
+            &[],
+        );
+        rec.label(
+            id,
+            prog.names[k].clone(),
+            whole.p[k],
+            DVec2::new(-1.0, 0.5).normalize(),
+        );
     }
     for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
-        let id = rec.draw(format!("point {name}"), Item::Text(whole.p[k]), Role::Dimension, &[]);
-        rec.label(id, name.clone(), whole.p[k], DVec2::new(0.8, 0.6).normalize());
+        let id = rec.draw(
+            format!("point {name}"),
+            Item::Text(whole.p[k]),
+            Role::Dimension,
+            &[],
+        );
+        rec.label(
+            id,
+            name.clone(),
+            whole.p[k],
+            DVec2::new(0.8, 0.6).normalize(),
+        );
     }
     number_links(&mut rec, &anchors);
-    let (top_lo, _) = bounds_from(&rec, 0);
-    let row_top = top_lo.y - GAP_MM;
-    let mut x = top_lo.x;
-    let parts = std::iter::once((Part::Driver, format!("I(0,{})", st.crank_link)))
-        .chain(st.groups.iter().enumerate().map(|(g, gi)| (Part::Group(g), format!("II({},{})", gi.links[0], gi.links[1]))));
+    let (_, hi0) = bounds_from(&rec, 0);
+    let mut x = hi0.x + 2.0 * GAP_MM;
+    let parts = std::iter::once((Part::Driver, format!("I(0,{})", st.crank_link))).chain(
+        st.groups.iter().enumerate().map(|(g, gi)| {
+            (
+                Part::Group(g),
+                format!("II({},{})", gi.links[0], gi.links[1]),
+            )
+        }),
+    );
     for (part, caption) in parts {
-        // Draw once to measure the part, then again in its place.
+        // Draw once to measure the part, then again in its place, top-aligned with the whole.
         let mut probe = Recorder::new("part", scale, tol, Drafting::EXACT);
         draw_links(&mut probe, prog, &whole, Role::Given, "part", part);
         let (lo, hi) = bounds_from(&probe, 0);
-        let shift = DVec2::new(x - lo.x, row_top - hi.y);
+        let shift = DVec2::new(x - lo.x, hi0.y - hi.y);
         let placed = shifted(first, factor, shift);
         let anchors = draw_links(&mut rec, prog, &placed, Role::Given, &caption, part);
+        // The frame's guide of a group is its free element: drawn thin, without hatching.
+        for g in guides.iter().filter(|g| Part::Group(g.group) == part) {
+            let seg = Segment::new(g.segment.from + shift, g.segment.to + shift);
+            rec.draw(
+                format!("{caption}: free guide element"),
+                Item::Segment(seg),
+                Role::Construction,
+                &[],
+            );
+        }
         number_links(&mut rec, &anchors);
         let cap_at = DVec2::new(x + (hi.x - lo.x) * 0.5, lo.y + shift.y - 7.0);
-        let id = rec.draw(format!("caption {caption}"), Item::Text(cap_at), Role::Dimension, &[]);
+        let id = rec.draw(
+            format!("caption {caption}"),
+            Item::Text(cap_at),
+            Role::Dimension,
+            &[],
+        );
         rec.label(id, caption, cap_at, DVec2::ZERO);
         x += (hi.x - lo.x).max(10.0) + GAP_MM;
     }
@@ -66,7 +134,12 @@ pub fn structure_figure(prog: &Program, st: &Structure, first: &Built, plan_mu: 
 
 fn number_links(rec: &mut Recorder, anchors: &[(u32, DVec2)]) {
     for (l, at) in anchors {
-        let id = rec.draw(format!("number of link {l}"), Item::Text(*at), Role::Dimension, &[]);
+        let id = rec.draw(
+            format!("number of link {l}"),
+            Item::Text(*at),
+            Role::Dimension,
+            &[],
+        );
         rec.label(id, l.to_string(), *at, DVec2::new(-0.6, 0.8).normalize());
     }
 }

@@ -20,7 +20,10 @@ pub struct RenderOptions {
 
 impl Default for RenderOptions {
     fn default() -> Self {
-        Self { lang: Lang::Ru, drafting: Drafting::EXACT }
+        Self {
+            lang: Lang::Ru,
+            drafting: Drafting::EXACT,
+        }
     }
 }
 
