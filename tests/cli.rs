@@ -145,7 +145,7 @@ fn missing_key_is_refused() {
 #[test]
 fn mechanism_that_cannot_be_assembled_exits_1_naming_the_step() {
     // The block's slide turned parallel to the ram guide: the two lines never meet.
-    assert_refused("assemble", 1, &["cannot be assembled", "group"], |t| {
+    assert_refused("assemble", 1, &["cannot be assembled", "group 2"], |t| {
         t.replace("slide = 90.0", "slide = 0.0")
     });
 }

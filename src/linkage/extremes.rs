@@ -86,15 +86,13 @@ pub struct Extremes {
 const SAMPLES: usize = 720;
 
 impl Program {
-    /// Solve at `phi` continuing from `prev`, or say which group fails.
-    fn solve_at(&self, phi: f64, prev: Option<&Pose>, why: &str) -> Result<Pose, LinkageError> {
-        self.solve(phi, prev)
-            .map_err(|u| LinkageError::CannotAssemble {
-                position: why.to_string(),
-                phi_deg: phi.to_degrees(),
-                group: format!("{}", u.group + 1),
-                detail: u.detail,
-            })
+    /// Solve at `phi` continuing from `prev`, or say which group stops the crank.
+    fn solve_turning(&self, phi: f64, prev: Option<&Pose>) -> Result<Pose, LinkageError> {
+        self.solve(phi, prev).map_err(|u| LinkageError::CannotTurn {
+            phi_deg: phi.to_degrees(),
+            group: format!("{}", u.group + 1),
+            detail: u.detail,
+        })
     }
 
     /// Find the extreme positions of the outputs over a full turn of the crank.
@@ -110,7 +108,7 @@ impl Program {
         let mut prev: Option<Pose> = None;
         for k in 0..=SAMPLES {
             let phi = TAU * k as f64 / SAMPLES as f64;
-            let pose = self.solve_at(phi, prev.as_ref(), "search for the extreme positions")?;
+            let pose = self.solve_turning(phi, prev.as_ref())?;
             prev = Some(pose.clone());
             poses.push(pose);
         }

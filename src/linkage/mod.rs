@@ -49,6 +49,16 @@ pub enum LinkageError {
         /// What fails, with its numbers.
         detail: String,
     },
+    /// The crank cannot make a full turn, so the extreme positions cannot be searched for.
+    #[error("the crank cannot make a full turn: at φ₁ = {phi_deg:.4}° group {group} cannot be assembled: {detail}; give `start` as an angle to construct the positions that exist")]
+    CannotTurn {
+        /// Crank angle, degrees.
+        phi_deg: f64,
+        /// The group.
+        group: String,
+        /// What fails.
+        detail: String,
+    },
     /// The output has no extreme positions (it turns fully or does not move).
     #[error("output {output}: {detail}")]
     NoExtremes {
