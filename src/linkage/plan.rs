@@ -404,6 +404,42 @@ pub fn frame_guides(prog: &Program, built: &[&Built], margin: f64) -> Vec<FrameG
     v
 }
 
+/// Draw the frame's guides with their hatching.
+pub fn draw_guides(rec: &mut Recorder, guides: &[FrameGuide]) {
+    for g in guides {
+        rec.draw(
+            "guide of the frame",
+            Item::Guide {
+                segment: g.segment,
+                hatch: g.hatch,
+            },
+            Role::Given,
+            &[],
+        );
+    }
+}
+
+/// Draw the fixed pivots of `b` with the ground symbol and their letters.
+pub fn draw_pivots(rec: &mut Recorder, prog: &Program, b: &Built) {
+    for k in fixed_pivots(prog) {
+        let id = rec.draw(
+            format!("fixed pivot {}", prog.names[k]),
+            Item::Joint {
+                at: b.p[k],
+                fixed: true,
+            },
+            Role::Given,
+            &[],
+        );
+        rec.label(
+            id,
+            prog.names[k].clone(),
+            b.p[k],
+            DVec2::new(-1.0, 0.6).normalize(),
+        );
+    }
+}
+
 fn draw_plan(
     rec: &mut Recorder,
     prog: &Program,
@@ -426,17 +462,7 @@ fn draw_plan(
     );
     // Guides of the frame, spanning the travel of their joints.
     let all: Vec<&Built> = positions.iter().map(|p| &p.built).collect();
-    for g in frame_guides(prog, &all, 15.0) {
-        rec.draw(
-            "guide of the frame",
-            Item::Guide {
-                segment: g.segment,
-                hatch: g.hatch,
-            },
-            Role::Given,
-            &[],
-        );
-    }
+    draw_guides(rec, &frame_guides(prog, &all, 15.0));
     // Every position: thin; position 1 and the extremes: thick.
     for (k, pos) in positions.iter().enumerate() {
         rec.set_group(k as u32 + 1);
@@ -479,23 +505,7 @@ fn draw_plan(
         }
     }
     // Fixed pivots and the letters of position 1.
-    for k in fixed_pivots(prog) {
-        let id = rec.draw(
-            format!("fixed pivot {}", prog.names[k]),
-            Item::Joint {
-                at: first.built.p[k],
-                fixed: true,
-            },
-            Role::Given,
-            &[],
-        );
-        rec.label(
-            id,
-            prog.names[k].clone(),
-            first.built.p[k],
-            DVec2::new(-1.0, 0.6).normalize(),
-        );
-    }
+    draw_pivots(rec, prog, &first.built);
     for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
         let at = first.built.p[k];
         let id = rec.draw(

@@ -2,7 +2,7 @@
 //! the decomposition into the class-I mechanism and the Assur groups, each drawn apart.
 
 use super::construction::Built;
-use super::plan::{draw_links, fixed_pivots, frame_guides, Part};
+use super::plan::{draw_guides, draw_links, draw_pivots, frame_guides, Part};
 use super::program::Program;
 use super::structure::Structure;
 use crate::construct::{Drafting, Figure, Item, Recorder, Role};
@@ -47,34 +47,8 @@ pub fn structure_figure(
     let whole = shifted(first, factor, DVec2::ZERO);
     let anchors = draw_links(&mut rec, prog, &whole, Role::Given, "scheme", Part::All);
     let guides = frame_guides(prog, &[&whole], GUIDE_MM);
-    for g in &guides {
-        rec.draw(
-            "guide of the frame",
-            Item::Guide {
-                segment: g.segment,
-                hatch: g.hatch,
-            },
-            Role::Given,
-            &[],
-        );
-    }
-    for k in fixed_pivots(prog) {
-        let id = rec.draw(
-            format!("pivot {}", prog.names[k]),
-            Item::Joint {
-                at: whole.p[k],
-                fixed: true,
-            },
-            Role::Given,
-            &[],
-        );
-        rec.label(
-            id,
-            prog.names[k].clone(),
-            whole.p[k],
-            DVec2::new(-1.0, 0.5).normalize(),
-        );
-    }
+    draw_guides(&mut rec, &guides);
+    draw_pivots(&mut rec, prog, &whole);
     for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
         let id = rec.draw(
             format!("point {name}"),
