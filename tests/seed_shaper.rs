@@ -144,3 +144,100 @@ fn shaper_structure_as_in_the_seed() {
     assert_eq!(st.formula(), "I(0,1) → II(2,3) → II(4,5)");
     assert_eq!(st.class, 2);
 }
+
+/// Table 5 exact columns in the seed's sign convention (ω₁ = +5π in its formulas):
+/// (φ₁°, ω₃ 1/s, V_B3B1 m/s, V_D m/s, ε₃ 1/s², a_D m/s²).
+const TABLE5_KIN: [(f64, f64, f64, f64, f64, f64); 13] = [
+    (199.0, 0.0001, -2.1991, 0.0001, -84.962, 60.323),
+    (169.0, 2.1467, -1.9462, 1.5241, -46.579, 33.233),
+    (139.0, 3.2744, -1.3404, 2.3248, -23.058, 18.054),
+    (109.0, 3.7758, -0.5456, 2.6808, -7.888, 11.568),
+    (79.0, 3.8307, 0.3176, 2.7198, 4.499, 10.897),
+    (49.0, 3.4586, 1.1415, 2.4556, 18.464, 15.620),
+    (19.0, 2.5266, 1.8112, 1.7939, 39.091, 28.122),
+    (-11.0, 0.7021, 2.1787, 0.4985, 73.143, 51.933),
+    (-19.0, 0.0001, 2.1991, 0.0001, 84.962, 60.323),
+    (-41.0, -2.4899, 2.0144, -1.7678, 117.633, 83.635),
+    (-71.0, -6.4662, 1.0225, -4.5910, 97.258, 75.164),
+    (-101.0, -7.1875, -0.6142, -5.1031, -62.888, 57.784),
+    (-131.0, -3.5711, -1.8404, -2.5355, -124.751, 89.035),
+];
+
+/// Table 8: (φ₁°, V_S3, V_S5 (ram), |ω₃|), magnitudes.
+const TABLE8: [(f64, f64, f64, f64); 11] = [
+    (169.0, 0.6225, 1.4595, 2.1467),
+    (139.0, 0.9496, 2.2786, 3.2744),
+    (109.0, 1.0950, 2.6720, 3.7758),
+    (79.0, 1.1109, 2.7168, 3.8307),
+    (49.0, 1.0030, 2.4203, 3.4586),
+    (19.0, 0.7327, 1.7282, 2.5266),
+    (-11.0, 0.2036, 0.4718, 0.7021),
+    (-41.0, 0.7221, 1.6874, 2.4899),
+    (-71.0, 1.8752, 4.5381, 6.4662),
+    (-101.0, 2.0844, 5.0820, 7.1875),
+    (-131.0, 1.0356, 2.4395, 3.5711),
+];
+
+fn close(got: f64, want: f64, half_ulp: f64) -> bool {
+    (got - want).abs() <= half_ulp * 1.0001 + 1e-12
+}
+
+#[test]
+fn shaper_analytic_twin_reproduces_table5_and_table8() {
+    let (scene, plan) = shaper_plan();
+    let prog = &plan.program;
+    let w1 = scene.mechanism.crank.omega; // |ω₁| = 5π
+    let seed_w1 = w1; // the seed's formulas: ω₁ = +5π although the crank turns clockwise
+    let (b, c, d, e, s3) = (
+        prog.index("B").unwrap(),
+        prog.index("C").unwrap(),
+        prog.index("D").unwrap(),
+        prog.index("E").unwrap(),
+        prog.index("S_3").unwrap(),
+    );
+    for (phi1, w3, vrel, vd, e3, ad) in TABLE5_KIN {
+        let pose = prog.solve(phi1.to_radians(), None).unwrap();
+        // Seed convention: d/dt = +ω₁·d/dφ₁.
+        let omega3 = seed_w1 * pose.dangle[3];
+        let eps3 = seed_w1 * seed_w1 * pose.ddangle[3];
+        let l3 = (pose.p[b] - pose.p[c]).length();
+        let v_rel = seed_w1 * (pose.p[b] - pose.p[c]).dot(pose.dp[b] - pose.dp[c]) / l3;
+        let a_d = (pose.ddp[d] * w1 * w1).length();
+        assert!(close(omega3, w3, 5e-5), "φ₁ = {phi1}: ω₃ {omega3} vs {w3}");
+        assert!(
+            close(v_rel, vrel, 5e-5),
+            "φ₁ = {phi1}: V_B3B1 {v_rel} vs {vrel}"
+        );
+        assert!(
+            close(0.71 * omega3, vd, 5e-5),
+            "φ₁ = {phi1}: V_D {} vs {vd}",
+            0.71 * omega3
+        );
+        assert!(close(eps3, e3, 5e-4), "φ₁ = {phi1}: ε₃ {eps3} vs {e3}");
+        assert!(close(a_d, ad, 5e-4), "φ₁ = {phi1}: a_D {a_d} vs {ad}");
+        // The physical sense (the crank turns clockwise) is the opposite of the seed's.
+        let physical = -w1 * pose.dangle[3];
+        assert!((physical + omega3).abs() < 1e-12);
+    }
+    for (phi1, vs3, vs5, w3) in TABLE8 {
+        let pose = prog.solve(phi1.to_radians(), None).unwrap();
+        assert!(
+            close(w1 * pose.dp[s3].length(), vs3, 5e-5),
+            "φ₁ = {phi1}: V_S3"
+        );
+        assert!(
+            close(w1 * pose.dp[e].length(), vs5, 5e-5),
+            "φ₁ = {phi1}: V_S5 {}",
+            w1 * pose.dp[e].length()
+        );
+        assert!(
+            close(w1 * pose.dangle[3].abs(), w3, 5e-5),
+            "φ₁ = {phi1}: ω₃"
+        );
+    }
+    // The seed's typos are not reproduced: ω₃ = −7.8 at position 11, V_S5 = 4.485 at index 9.
+    let p11 = prog.solve((-101f64).to_radians(), None).unwrap();
+    assert!((w1 * p11.dangle[3].abs() - 7.8).abs() > 0.5);
+    let p10 = prog.solve((-71f64).to_radians(), None).unwrap();
+    assert!((w1 * p10.dp[e].length() - 4.485).abs() > 0.05);
+}

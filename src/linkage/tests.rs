@@ -146,3 +146,134 @@ fn construction_equals_analytic_on_the_shaper() {
         prev_b = Some(b);
     }
 }
+
+/// One small mechanism of every dyad kind, with guides on moving links where the kind allows
+/// it, offsets, and a point carried by each new link.
+pub(crate) fn one_of_each_kind() -> Vec<Mechanism> {
+    let crank = |r: f64| Crank {
+        link: 1,
+        centre: "O".into(),
+        pin: "B".into(),
+        length: r,
+        omega: 1.0,
+        sense: Sense::CounterClockwise,
+    };
+    let fixed = |v: &[(&str, DVec2)]| {
+        v.iter()
+            .map(|(n, at)| FixedPoint {
+                name: (*n).into(),
+                at: *at,
+            })
+            .collect::<Vec<_>>()
+    };
+    let pts = || {
+        vec![
+            LinkPoint {
+                name: "S2".into(),
+                link: 2,
+                along: 0.05,
+                across: 0.01,
+            },
+            LinkPoint {
+                name: "S3".into(),
+                link: 3,
+                along: 0.08,
+                across: -0.02,
+            },
+        ]
+    };
+    let mk = |fx: Vec<FixedPoint>, r: f64, dyad: Dyad| Mechanism {
+        fixed: fx,
+        crank: crank(r),
+        groups: vec![Group {
+            links: [2, 3],
+            dyad,
+        }],
+        points: pts(),
+        redundant: vec![],
+        outputs: vec![Output::Rocker { link: 3 }],
+    };
+    let o = ("O", DVec2::ZERO);
+    vec![
+        mk(
+            fixed(&[o, ("D", DVec2::new(0.28, 0.05))]),
+            0.08,
+            Dyad::Rrr {
+                a: "B".into(),
+                la: 0.25,
+                b: "D".into(),
+                lb: 0.18,
+                joint: "C".into(),
+                branch: Branch::Left,
+            },
+        ),
+        // A slider on a guide carried by the crank (turned 70° from it, offset 0.03).
+        mk(
+            fixed(&[o]),
+            0.1,
+            Dyad::Rrp {
+                a: "B".into(),
+                la: 0.3,
+                guide: Guide {
+                    through: "O".into(),
+                    dir: Dir::Along {
+                        from: "O".into(),
+                        to: "B".into(),
+                        angle: 1.2,
+                    },
+                    offset: 0.03,
+                },
+                joint: "C".into(),
+                branch: Branch::Forward,
+            },
+        ),
+        mk(
+            fixed(&[o, ("C", DVec2::new(0.05, -0.35))]),
+            0.12,
+            Dyad::Rpr {
+                a: "B".into(),
+                c: "C".into(),
+                offset: 0.04,
+            },
+        ),
+        mk(
+            fixed(&[o]),
+            0.1,
+            Dyad::Prp {
+                guide_i: Guide {
+                    through: "B".into(),
+                    dir: Dir::Along {
+                        from: "O".into(),
+                        to: "B".into(),
+                        angle: 1.4,
+                    },
+                    offset: 0.01,
+                },
+                guide_j: Guide {
+                    through: "O".into(),
+                    dir: Dir::Fixed(0.3),
+                    offset: 0.05,
+                },
+                joint: "C".into(),
+            },
+        ),
+        mk(
+            fixed(&[o]),
+            0.1,
+            Dyad::Rpp {
+                a: "B".into(),
+                slide: Dir::Along {
+                    from: "O".into(),
+                    to: "B".into(),
+                    angle: 2.0,
+                },
+                guide: Guide {
+                    through: "O".into(),
+                    dir: Dir::Fixed(-0.4),
+                    offset: 0.2,
+                },
+                joint: "C".into(),
+            },
+        ),
+    ]
+}
