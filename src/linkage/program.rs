@@ -313,6 +313,28 @@ impl Program {
                 }
                 links_known.push(l);
             }
+            if let PDyad::Rpp {
+                a, slide, guide, ..
+            } = dyad
+            {
+                // The slide is a direction of link j, which turns with the guide's carrier.
+                let same = match (slide, guide.dir) {
+                    (PDir::Fixed(_), PDir::Fixed(_)) => true,
+                    (
+                        PDir::Along { from, to, .. },
+                        PDir::Along {
+                            from: f2, to: t2, ..
+                        },
+                    ) => (from, to) == (f2, t2),
+                    _ => false,
+                };
+                if !same {
+                    return Err(LinkageError::Model(format!(
+                        "{what}: the slide through `{}` turns with link {}, which moves along the guide: give the slide the guide's kind of direction (both fixed, or both along the same two points)",
+                        names[a], g.links[1]
+                    )));
+                }
+            }
             ops.push(Op::Dyad {
                 group: gi,
                 links: g.links,
@@ -337,5 +359,74 @@ impl Program {
             ops,
             link_count,
         })
+    }
+}
+
+impl Program {
+    /// The links each point lies on (a pivot or joint lies on several; fixed points on the
+    /// frame 0 and on the links pivoted there).
+    pub fn links_of(&self, k: usize) -> Vec<usize> {
+        let mut v = Vec::new();
+        if k < self.fixed.len() {
+            v.push(0);
+        }
+        if k == self.centre || k == self.pin {
+            v.push(self.crank_link as usize);
+        }
+        for op in &self.ops {
+            match *op {
+                Op::Point { idx, link, .. } if idx == k => v.push(link as usize),
+                Op::Dyad {
+                    links: [i, j],
+                    dyad,
+                    ..
+                } => {
+                    let (on_i, on_j) = match dyad {
+                        PDyad::Rrr { a, b, joint, .. } => {
+                            (a == k || joint == k, b == k || joint == k)
+                        }
+                        PDyad::Rrp { a, joint, .. } => (a == k || joint == k, joint == k),
+                        PDyad::Rpr { a, c, .. } => (a == k, c == k),
+                        PDyad::Prp { joint, .. } => (joint == k, joint == k),
+                        PDyad::Rpp { a, joint, .. } => (a == k, joint == k),
+                    };
+                    if on_i {
+                        v.push(i as usize);
+                    }
+                    if on_j {
+                        v.push(j as usize);
+                    }
+                }
+                _ => {}
+            }
+        }
+        v.sort_unstable();
+        v.dedup();
+        v
+    }
+
+    /// The link that carries a guide: for a direction between two points, the link holding
+    /// both (a moving one before the frame); for a frame direction, the link of the point it
+    /// passes through (the frame for a fixed point).
+    pub fn carrier(&self, g: &PGuide) -> usize {
+        match g.dir {
+            PDir::Along { from, to, .. } => {
+                let (a, b) = (self.links_of(from), self.links_of(to));
+                let common: Vec<usize> = a.iter().copied().filter(|l| b.contains(l)).collect();
+                common
+                    .iter()
+                    .copied()
+                    .find(|l| *l != 0)
+                    .or(common.first().copied())
+                    .unwrap_or_else(|| b.last().copied().unwrap_or(0))
+            }
+            PDir::Fixed(_) => {
+                if g.through < self.fixed.len() {
+                    0
+                } else {
+                    self.links_of(g.through).first().copied().unwrap_or(0)
+                }
+            }
+        }
     }
 }

@@ -257,6 +257,7 @@ pub(crate) fn one_of_each_kind() -> Vec<Mechanism> {
                 joint: "C".into(),
             },
         ),
+        // Link j slides on a guide carried by the crank; its slide turns with it.
         mk(
             fixed(&[o]),
             0.1,
@@ -269,11 +270,110 @@ pub(crate) fn one_of_each_kind() -> Vec<Mechanism> {
                 },
                 guide: Guide {
                     through: "O".into(),
-                    dir: Dir::Fixed(-0.4),
+                    dir: Dir::Along {
+                        from: "O".into(),
+                        to: "B".into(),
+                        angle: -0.4,
+                    },
                     offset: 0.2,
                 },
                 joint: "C".into(),
             },
         ),
+        // The Scotch-yoke kind: a frame guide, a fixed slide.
+        mk(
+            fixed(&[o]),
+            0.1,
+            Dyad::Rpp {
+                a: "B".into(),
+                slide: Dir::Fixed(1.3),
+                guide: Guide {
+                    through: "O".into(),
+                    dir: Dir::Fixed(-0.2),
+                    offset: 0.15,
+                },
+                joint: "C".into(),
+            },
+        ),
     ]
+}
+
+/// Velocity and acceleration plans, constructed, equal the analytic twin (every image as a
+/// vector, every link rate) for every dyad kind at many crank angles.
+#[test]
+fn plans_equal_analytic_for_every_kind() {
+    let mut mechs = one_of_each_kind();
+    mechs.push(shaper());
+    for (mi, m) in mechs.iter().enumerate() {
+        let prog = Program::compile(m).unwrap();
+        let mu_l = 0.001;
+        let w1 = m.crank.sense.sign() * 7.0;
+        for k in 0..18 {
+            let phi = 0.05 + k as f64 * 0.35;
+            let Ok(pose) = prog.solve(phi, None) else {
+                continue;
+            };
+            if pose.toggle.is_some() {
+                continue;
+            }
+            let mut rec = Recorder::new(
+                "t",
+                Scale::new(mu_l, Quantity::Length).unwrap(),
+                Tolerances::for_model_size(1000.0).unwrap(),
+                Drafting::EXACT,
+            );
+            let built = prog.construct(&mut rec, phi, None, "t").unwrap();
+            let sv = Scale::new(0.01, Quantity::Velocity).unwrap();
+            let sa = Scale::new(0.1, Quantity::Acceleration).unwrap();
+            let vp = kin_plan(
+                &prog,
+                &built,
+                mu_l,
+                w1,
+                PlanKind::Velocity,
+                sv,
+                Drafting::EXACT,
+                None,
+            )
+            .unwrap_or_else(|e| panic!("mech {mi} φ {phi}: {e:?}"));
+            let ap = kin_plan(
+                &prog,
+                &built,
+                mu_l,
+                w1,
+                PlanKind::Acceleration,
+                sa,
+                Drafting::EXACT,
+                Some(&vp),
+            )
+            .unwrap_or_else(|e| panic!("mech {mi} φ {phi}: {e:?}"));
+            let vscale = w1.abs() * 0.5 + 1.0;
+            for (idx, name) in prog.names.iter().enumerate() {
+                let v = vp.images[idx] * 0.01;
+                let want = pose.dp[idx] * w1;
+                assert!(
+                    (v - want).length() <= 1e-9 * (1.0 + want.length()) * vscale,
+                    "mech {mi} φ {phi} v_{name}: {v} vs {want}"
+                );
+                let a = ap.images[idx] * 0.1;
+                let want = pose.ddp[idx] * (w1 * w1);
+                assert!(
+                    (a - want).length() <= 1e-9 * (1.0 + want.length()) * vscale * vscale,
+                    "mech {mi} φ {phi} a_{name}: {a} vs {want}"
+                );
+            }
+            for l in 1..prog.link_count {
+                let (w, want) = (vp.rate[l], pose.dangle[l] * w1);
+                assert!(
+                    (w - want).abs() <= 1e-9 * (1.0 + want.abs()),
+                    "mech {mi} φ {phi} ω_{l}: {w} vs {want}"
+                );
+                let (e, want) = (ap.rate[l], pose.ddangle[l] * w1 * w1);
+                assert!(
+                    (e - want).abs() <= 1e-8 * (1.0 + want.abs()),
+                    "mech {mi} φ {phi} ε_{l}: {e} vs {want}"
+                );
+            }
+        }
+    }
 }

@@ -1,0 +1,722 @@
+//! Velocity and acceleration plans (планы скоростей и ускорений) as drawing-board
+//! constructions: from the pole, each Assur group's two vector equations are drawn as
+//! direction lines through known images and intersected; further points of a link follow by
+//! the similarity theorem; every value is read off the drawing (drafting model applied) and
+//! turned into a physical value with the plan's μ.
+//!
+//! Velocity plan (pole `p`): the crank pin's velocity ⊥ to the crank in the sense of ω₁;
+//! RRR: ⊥ to each link through the outer images; RRP: ⊥ to the link and ∥ to the guide through
+//! the image of the guide's coincident point; RPR: ⊥ to the line from the pivot and ∥ to the
+//! slide through the block's image (the coincident point `b₃`); PRP: ∥ to each guide through the
+//! coincident points of the carrying links; RPP: ∥ to the slide and ∥ to the guide.
+//! Acceleration plan (pole `π`): the same equations with the normal components (ends `n`) laid
+//! from the known images along the links and the Coriolis components (end `k`, 2ω·v_r turned
+//! 90° in the sense of ω of the carrying link) laid before the direction lines.
+
+use super::construction::Built;
+use super::program::{Op, PDir, PDyad, PGuide, Program};
+use crate::construct::{ConstructionError, Drafting, Figure, Item, Recorder, Role};
+use crate::geom::{DVec2, Line, Segment, Tolerances};
+use crate::scale::Scale;
+
+/// Which plan.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlanKind {
+    /// Velocities, pole `p`.
+    Velocity,
+    /// Accelerations, pole `π`.
+    Acceleration,
+}
+
+/// A value read off a plan.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reading {
+    /// Quantity name (`v_D`, `v_B3_B1`, `omega_3`, `a_S5`, `eps_3`).
+    pub quantity: String,
+    /// The physical value (magnitudes for point quantities; ω, ε signed, counter-clockwise
+    /// positive).
+    pub value: f64,
+    /// Crossing angle of the intersection that fixed it, degrees (None: not an intersection).
+    pub conditioning: Option<f64>,
+}
+
+/// A constructed plan.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KinPlan {
+    /// Which plan.
+    pub kind: PlanKind,
+    /// The recorded figure (pole at the origin), at `scale`.
+    pub figure: Figure,
+    /// Image of every point by program index, plan mm.
+    pub images: Vec<DVec2>,
+    /// Images of coincident points of sliding pairs (`B3`: point of link 3 under B).
+    pub coincident: Vec<(String, DVec2)>,
+    /// Angular velocity (velocity plan) or acceleration (acceleration plan) of every link,
+    /// as read off the plan, signed counter-clockwise.
+    pub rate: Vec<f64>,
+    /// The readings.
+    pub readings: Vec<Reading>,
+}
+
+/// The values one plan needs from the velocity plan (for the acceleration plan).
+struct Known<'a> {
+    vel: Option<&'a KinPlan>,
+    mu_v: f64,
+}
+
+/// Name of a point without markup (`S_3` → `S3`).
+pub fn plain(name: &str) -> String {
+    name.chars()
+        .filter(|c| !matches!(c, '_' | '{' | '}' | '′'))
+        .collect::<String>()
+        + if name.contains('′') { "'" } else { "" }
+}
+
+fn lower(name: &str) -> String {
+    let mut c = name.chars();
+    c.next().map_or_else(String::new, |f| {
+        f.to_lowercase().collect::<String>() + c.as_str()
+    })
+}
+
+/// Label of an image: lower-case, primed on the acceleration plan.
+fn image_label(name: &str, kind: PlanKind) -> String {
+    match kind {
+        PlanKind::Velocity => lower(name),
+        PlanKind::Acceleration => format!("{}′", lower(name)),
+    }
+}
+
+/// Per-link knowledge while a plan is built: points of the link (mechanism mm) with images.
+struct Links {
+    pts: Vec<Vec<(DVec2, DVec2)>>,
+    rate: Vec<Option<f64>>,
+}
+
+impl Links {
+    fn add(&mut self, link: usize, at: DVec2, img: DVec2) {
+        self.pts[link].push((at, img));
+    }
+}
+
+/// Everything the builder carries.
+struct Builder<'a> {
+    prog: &'a Program,
+    b: &'a Built,
+    kind: PlanKind,
+    rec: Recorder,
+    mu_l: f64,
+    img: Vec<Option<DVec2>>,
+    links: Links,
+    readings: Vec<Reading>,
+    coincident: Vec<(String, DVec2)>,
+    known: Known<'a>,
+}
+
+impl<'a> Builder<'a> {
+    fn mu(&self) -> f64 {
+        self.rec.scale().value()
+    }
+    /// Physical vector of a mechanism segment, m.
+    fn r(&self, from: usize, to: usize) -> DVec2 {
+        (self.b.p[to] - self.b.p[from]) * self.mu_l
+    }
+    fn name(&self, k: usize) -> &str {
+        &self.prog.names[k]
+    }
+    fn image(&self, k: usize) -> DVec2 {
+        self.img[k].unwrap_or(DVec2::ZERO)
+    }
+    fn set_image(&mut self, k: usize, at: DVec2, from: &[crate::construct::StepId]) {
+        self.img[k] = Some(at);
+        let label = image_label(self.name(k), self.kind);
+        let id = self.rec.draw(
+            format!("image {label}"),
+            Item::Vector {
+                from: DVec2::ZERO,
+                to: at,
+            },
+            Role::Result,
+            from,
+        );
+        let toward = at.normalize_or(DVec2::Y);
+        self.rec.label(id, label, at, toward);
+    }
+    /// The image of a point of a link at mechanism position `at` (similarity theorem).
+    fn image_on(&mut self, link: usize, at: DVec2, name: &str) -> DVec2 {
+        if link == 0 {
+            return DVec2::ZERO;
+        }
+        let pts = &self.links.pts[link];
+        let pair = pts.iter().enumerate().find_map(|(k, o)| {
+            pts[k + 1..]
+                .iter()
+                .find(|q| q.0.distance(o.0) > 1e-9)
+                .map(|q| (*o, *q))
+        });
+        let img = match (pair, pts.first(), self.links.rate[link]) {
+            // Two images: the similar, similarly oriented triangle on them.
+            (Some(((o, oi), (q, qi))), _, _) => {
+                let z = complex_div(at - o, q - o);
+                oi + complex_mul(qi - oi, z)
+            }
+            // One image and the link's rate: turn and scale the radius vector.
+            (None, Some(&(o, oi)), Some(w)) => {
+                let r = (at - o) * self.mu_l;
+                let v = match self.kind {
+                    PlanKind::Velocity => r.perp() * w,
+                    PlanKind::Acceleration => {
+                        let wv = self.known.vel.map_or(0.0, |v| v.rate[link]);
+                        r.perp() * w - r * (wv * wv)
+                    }
+                };
+                oi + v / self.mu()
+            }
+            (None, Some(&(_, oi)), None) => oi,
+            (None, None, _) => DVec2::ZERO,
+        };
+        if let Some(&(o, oi)) = self.links.pts[link].first() {
+            if o.distance(at) > 1e-9 {
+                self.rec.draw(
+                    format!("similarity: {name} from {}", link),
+                    Item::Segment(Segment::new(oi, img)),
+                    Role::Construction,
+                    &[],
+                );
+            }
+        }
+        img
+    }
+    /// A thin direction line through `through` along `dir`, drawn to `to` (and a little beyond).
+    fn dir_line(&mut self, note: &str, through: DVec2, dir: DVec2, to: DVec2) {
+        let u = dir.normalize_or_zero();
+        let (t0, t1) = (
+            0.0f64.min((to - through).dot(u)),
+            0.0f64.max((to - through).dot(u)),
+        );
+        self.rec.draw(
+            note.to_string(),
+            Item::Segment(Segment::new(
+                through + u * (t0 - 6.0),
+                through + u * (t1 + 6.0),
+            )),
+            Role::Construction,
+            &[],
+        );
+    }
+    /// Intersect two direction lines; record them; return the point and its crossing angle.
+    fn meet(
+        &mut self,
+        step: &str,
+        a: (&str, DVec2, DVec2),
+        b: (&str, DVec2, DVec2),
+    ) -> Result<(DVec2, f64), ConstructionError> {
+        let la = Line::new(a.1, a.2).ok_or_else(|| degenerate(step, a.0))?;
+        let lb = Line::new(b.1, b.2).ok_or_else(|| degenerate(step, b.0))?;
+        let (x, cr, _) = self.rec.meet_lines(step, (a.0, &la), (b.0, &lb))?;
+        self.dir_line(a.0, a.1, a.2, x);
+        self.dir_line(b.0, b.1, b.2, x);
+        Ok((x, cr))
+    }
+    /// Lay a known vector (a normal or Coriolis component) from `from`, label its end.
+    fn lay(&mut self, note: &str, from: DVec2, v: DVec2, label: &str) -> DVec2 {
+        let to = from + v / self.mu();
+        let id = self.rec.draw(
+            note.to_string(),
+            Item::Vector { from, to },
+            Role::Construction,
+            &[],
+        );
+        if !label.is_empty() {
+            self.rec
+                .label(id, label, to, (to - from).normalize_or(DVec2::X).perp());
+        }
+        to
+    }
+    /// Read a drawn segment as a physical magnitude.
+    fn read(&self, from: DVec2, to: DVec2) -> f64 {
+        self.rec.measure(from, to).value
+    }
+    fn reading(&mut self, quantity: String, value: f64, conditioning: Option<f64>) {
+        self.readings.push(Reading {
+            quantity,
+            value,
+            conditioning: conditioning.map(f64::to_degrees),
+        });
+    }
+    /// The rate of a link from a relative image vector `rel` (plan mm) of a point at radius `r` (m):
+    /// ω = r × v / |r|² (velocity plan) or ε from the tangential component (acceleration plan).
+    fn rate_from(&self, r: DVec2, from: DVec2, to: DVec2) -> f64 {
+        let v = (to - from) * self.mu();
+        let sign = r.perp_dot(v).signum();
+        let mag = self.read(from, to);
+        if r.length() == 0.0 {
+            0.0
+        } else {
+            sign * mag / r.length()
+        }
+    }
+    /// The normal component of the acceleration of a point at radius `r` about a centre on a
+    /// link turning with the velocity-plan rate `w`: ω²·r toward the centre.
+    fn normal(&self, link: usize, r: DVec2) -> DVec2 {
+        let w = self.known.vel.map_or(0.0, |v| v.rate[link]);
+        -r * (w * w)
+    }
+    /// The relative velocity of two images on the velocity plan, physical.
+    fn vel_between(&self, from: DVec2, to: DVec2) -> DVec2 {
+        (to - from) * self.known.mu_v
+    }
+    fn vel_image(&self, k: usize) -> DVec2 {
+        self.known.vel.map_or(DVec2::ZERO, |v| v.images[k])
+    }
+    fn vel_coincident(&self, name: &str) -> DVec2 {
+        self.known
+            .vel
+            .and_then(|v| v.coincident.iter().find(|c| c.0 == name).map(|c| c.1))
+            .unwrap_or(DVec2::ZERO)
+    }
+    fn dir(&self, d: &PDir) -> DVec2 {
+        match *d {
+            PDir::Fixed(a) => DVec2::from_angle(a),
+            PDir::Along { from, to, angle } => {
+                DVec2::from_angle(angle).rotate((self.b.p[to] - self.b.p[from]).normalize_or_zero())
+            }
+        }
+    }
+    /// The link carrying a guide (0 for the frame).
+    fn guide_link(&self, g: &PGuide) -> usize {
+        self.prog.carrier(g)
+    }
+    fn rate(&self, link: usize) -> f64 {
+        self.links.rate[link].unwrap_or(0.0)
+    }
+}
+
+fn degenerate(step: &str, what: &str) -> ConstructionError {
+    ConstructionError::Other {
+        step: step.into(),
+        message: format!("the direction of {what} is not defined"),
+    }
+}
+
+fn complex_mul(a: DVec2, b: DVec2) -> DVec2 {
+    DVec2::new(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x)
+}
+
+fn complex_div(a: DVec2, b: DVec2) -> DVec2 {
+    let d = b.length_squared();
+    DVec2::new(a.x * b.x + a.y * b.y, a.y * b.x - a.x * b.y) / d
+}
+
+/// The link a known point belongs to (the first that carried it; 0 for fixed points).
+pub fn owner(prog: &Program, k: usize) -> usize {
+    if k < prog.fixed.len() {
+        return 0;
+    }
+    if k == prog.pin {
+        return prog.crank_link as usize;
+    }
+    for op in &prog.ops {
+        match *op {
+            Op::Point { idx, link, .. } if idx == k => return link as usize,
+            Op::Dyad { links, dyad, .. } if dyad.joint() == Some(k) => {
+                return match dyad {
+                    PDyad::Rpp { .. } => links[1] as usize,
+                    _ => links[0] as usize,
+                }
+            }
+            _ => {}
+        }
+    }
+    0
+}
+
+/// Build a plan of `kind` for the constructed position `b` (drawing mm at μ_l = `mu_l`),
+/// crank speed `w1` (rad/s, signed counter-clockwise), at plan scale `scale`. The
+/// acceleration plan needs the velocity plan of the same position.
+pub fn kin_plan(
+    prog: &Program,
+    b: &Built,
+    mu_l: f64,
+    w1: f64,
+    kind: PlanKind,
+    scale: Scale,
+    drafting: Drafting,
+    vel: Option<&KinPlan>,
+) -> Result<KinPlan, (usize, ConstructionError)> {
+    let tol = Tolerances::for_model_size(200.0).map_err(|e| {
+        (
+            0,
+            ConstructionError::Other {
+                step: "plan".into(),
+                message: e.to_string(),
+            },
+        )
+    })?;
+    let title = match kind {
+        PlanKind::Velocity => "velocity plan",
+        PlanKind::Acceleration => "acceleration plan",
+    };
+    let n = prog.names.len();
+    let mut bl = Builder {
+        prog,
+        b,
+        kind,
+        rec: Recorder::new(title, scale, tol, drafting),
+        mu_l,
+        img: vec![None; n],
+        links: Links {
+            pts: vec![Vec::new(); prog.link_count],
+            rate: vec![None; prog.link_count],
+        },
+        readings: Vec::new(),
+        coincident: Vec::new(),
+        known: Known {
+            vel: vel.filter(|_| kind == PlanKind::Acceleration),
+            mu_v: vel.map_or(1.0, |v| v.figure.scale.value()),
+        },
+    };
+    let pole = bl.rec.point(
+        "pole",
+        DVec2::ZERO,
+        Role::Given,
+        if kind == PlanKind::Velocity {
+            "p"
+        } else {
+            "π"
+        },
+        DVec2::new(-0.7, -0.7),
+        &[],
+    );
+    for k in 0..prog.fixed.len() {
+        bl.img[k] = Some(DVec2::ZERO);
+    }
+    bl.links.rate[0] = Some(0.0);
+    // The class-I mechanism.
+    let cl = prog.crank_link as usize;
+    let r = bl.r(prog.centre, prog.pin);
+    let v_pin = match kind {
+        PlanKind::Velocity => r.perp() * w1,
+        PlanKind::Acceleration => -r * (w1 * w1),
+    };
+    let pin_img = v_pin / bl.mu();
+    bl.set_image(prog.pin, pin_img, &[pole]);
+    bl.links.rate[cl] = Some(if kind == PlanKind::Velocity { w1 } else { 0.0 });
+    bl.links.add(cl, b.p[prog.centre], DVec2::ZERO);
+    bl.links.add(cl, b.p[prog.pin], pin_img);
+    for op in &prog.ops {
+        match *op {
+            Op::Point { idx, link, .. } => {
+                let at = b.p[idx];
+                let name = prog.names[idx].clone();
+                let x = bl.image_on(link as usize, at, &name);
+                bl.set_image(idx, x, &[]);
+                bl.links.add(link as usize, at, x);
+            }
+            Op::Dyad { group, links, dyad } => bl.dyad(links, &dyad).map_err(|e| (group, e))?,
+        }
+    }
+    // Readings: every moving point, every link rate.
+    for k in prog.fixed.len()..n {
+        let x = bl.image(k);
+        let v = bl.read(DVec2::ZERO, x);
+        let q = match kind {
+            PlanKind::Velocity => format!("v_{}", plain(&prog.names[k])),
+            PlanKind::Acceleration => format!("a_{}", plain(&prog.names[k])),
+        };
+        bl.reading(q, v, None);
+    }
+    for l in 1..prog.link_count {
+        if let Some(w) = bl.links.rate[l] {
+            let q = match kind {
+                PlanKind::Velocity => format!("omega_{l}"),
+                PlanKind::Acceleration => format!("eps_{l}"),
+            };
+            bl.reading(q, w, None);
+        }
+    }
+    let rate = bl.links.rate.iter().map(|r| r.unwrap_or(0.0)).collect();
+    let images = bl.img.iter().map(|i| i.unwrap_or(DVec2::ZERO)).collect();
+    Ok(KinPlan {
+        kind,
+        figure: bl.rec.finish(),
+        images,
+        coincident: bl.coincident,
+        rate,
+        readings: bl.readings,
+    })
+}
+
+impl Builder<'_> {
+    fn dyad(&mut self, links: [u32; 2], dyad: &PDyad) -> Result<(), ConstructionError> {
+        let (i, j) = (links[0] as usize, links[1] as usize);
+        let vel = self.kind == PlanKind::Velocity;
+        let step = format!("group ({i},{j})");
+        match *dyad {
+            PDyad::Rrr { a, b, joint, .. } => {
+                let (ra, rb) = (self.r(a, joint), self.r(b, joint));
+                let (ai, bi) = (self.image(a), self.image(b));
+                let (x, cr) = if vel {
+                    self.meet(
+                        &format!("{step}: image of {}", self.name(joint)),
+                        ("⊥ link i", ai, ra.perp()),
+                        ("⊥ link j", bi, rb.perp()),
+                    )?
+                } else {
+                    let n1 = self.lay(
+                        "normal component, link i",
+                        ai,
+                        self.normal(i, ra),
+                        &format!("n_{i}"),
+                    );
+                    let n2 = self.lay(
+                        "normal component, link j",
+                        bi,
+                        self.normal(j, rb),
+                        &format!("n_{j}"),
+                    );
+                    self.meet(
+                        &format!("{step}: image of {}", self.name(joint)),
+                        ("⊥ link i", n1, ra.perp()),
+                        ("⊥ link j", n2, rb.perp()),
+                    )?
+                };
+                self.set_image(joint, x, &[]);
+                let (ri, rj) = if vel {
+                    (self.rate_from(ra, ai, x), self.rate_from(rb, bi, x))
+                } else {
+                    let n1 = ai + self.normal(i, ra) / self.mu();
+                    let n2 = bi + self.normal(j, rb) / self.mu();
+                    (self.rate_from(ra, n1, x), self.rate_from(rb, n2, x))
+                };
+                self.finish_link(i, &[(a, ai), (joint, x)], ri);
+                self.finish_link(j, &[(b, bi), (joint, x)], rj);
+                self.relative(joint, i, a, Some(cr));
+            }
+            PDyad::Rrp {
+                a, guide, joint, ..
+            } => {
+                let ra = self.r(a, joint);
+                let ai = self.image(a);
+                let k = self.guide_link(&guide);
+                let e = self.dir(&guide.dir);
+                let jk_name = format!("{}{k}", plain(self.name(joint)));
+                let jk = self.image_on(k, self.b.p[joint], &jk_name);
+                let (x, cr) = if vel {
+                    self.meet(
+                        &format!("{step}: image of {}", self.name(joint)),
+                        ("⊥ link i", ai, ra.perp()),
+                        ("∥ guide", jk, e),
+                    )?
+                } else {
+                    let n1 = self.lay(
+                        "normal component, link i",
+                        ai,
+                        self.normal(i, ra),
+                        &format!("n_{i}"),
+                    );
+                    let kk =
+                        self.coriolis(k, self.vel_coincident(&jk_name), self.vel_image(joint), jk);
+                    self.meet(
+                        &format!("{step}: image of {}", self.name(joint)),
+                        ("⊥ link i", n1, ra.perp()),
+                        ("∥ guide", kk, e),
+                    )?
+                };
+                self.set_image(joint, x, &[]);
+                self.coincident.push((jk_name, jk));
+                let ri = if vel {
+                    self.rate_from(ra, ai, x)
+                } else {
+                    self.rate_from(ra, ai + self.normal(i, ra) / self.mu(), x)
+                };
+                self.finish_link(i, &[(a, ai), (joint, x)], ri);
+                let rk = self.rate(k);
+                self.finish_link(j, &[(joint, x)], rk);
+                self.relative(joint, i, a, Some(cr));
+            }
+            PDyad::Rpr { a, c, .. } => {
+                let rc = self.r(c, a);
+                let (ai, ci) = (self.image(a), self.image(c));
+                let e = DVec2::from_angle(self.b.angle[j]);
+                let an = format!("{}{j}", plain(self.name(a)));
+                let (x, cr) = if vel {
+                    self.meet(
+                        &format!("{step}: image of {an}"),
+                        ("⊥ to the slotted link", ci, rc.perp()),
+                        ("∥ slide", ai, e),
+                    )?
+                } else {
+                    let n = self.lay(
+                        "normal component, slotted link",
+                        ci,
+                        self.normal(j, rc),
+                        &format!("n_{j}"),
+                    );
+                    let kk = self.coriolis(i, self.vel_image(a), self.vel_coincident(&an), ai);
+                    self.meet(
+                        &format!("{step}: image of {an}"),
+                        ("⊥ to the slotted link", n, rc.perp()),
+                        ("∥ slide", kk, e),
+                    )?
+                };
+                self.coincident_image(&an, a, j, x);
+                let rj = if vel {
+                    self.rate_from(rc, ci, x)
+                } else {
+                    self.rate_from(rc, ci + self.normal(j, rc) / self.mu(), x)
+                };
+                self.finish_link(j, &[(c, ci)], rj);
+                self.links.add(j, self.b.p[a], x);
+                self.finish_link(i, &[(a, ai)], rj);
+                let owner_a = owner(self.prog, a);
+                self.relative_named(
+                    &an,
+                    x,
+                    &format!("{}{owner_a}", plain(self.name(a))),
+                    ai,
+                    Some(cr),
+                );
+            }
+            PDyad::Prp { gi, gj, joint } => {
+                let (k1, k2) = (self.guide_link(&gi), self.guide_link(&gj));
+                let (e1, e2) = (self.dir(&gi.dir), self.dir(&gj.dir));
+                let n1 = format!("{}{k1}", plain(self.name(joint)));
+                let n2 = format!("{}{k2}", plain(self.name(joint)));
+                let at = self.b.p[joint];
+                let (j1, j2) = (self.image_on(k1, at, &n1), self.image_on(k2, at, &n2));
+                let (s1, s2) = if vel {
+                    (j1, j2)
+                } else {
+                    let vj = self.vel_image(joint);
+                    let (c1, c2) = (self.vel_coincident(&n1), self.vel_coincident(&n2));
+                    (self.coriolis(k1, c1, vj, j1), self.coriolis(k2, c2, vj, j2))
+                };
+                let (x, cr) = self.meet(
+                    &format!("{step}: image of {}", self.name(joint)),
+                    ("∥ guide i", s1, e1),
+                    ("∥ guide j", s2, e2),
+                )?;
+                self.set_image(joint, x, &[]);
+                self.coincident.push((n1, j1));
+                self.coincident.push((n2, j2));
+                let (r1, r2) = (self.rate(k1), self.rate(k2));
+                self.finish_link(i, &[(joint, x)], r1);
+                self.finish_link(j, &[(joint, x)], r2);
+                let _ = cr;
+            }
+            PDyad::Rpp {
+                a,
+                slide,
+                guide,
+                joint,
+            } => {
+                let k = self.guide_link(&guide);
+                let (es, eg) = (self.dir(&slide), self.dir(&guide.dir));
+                let ai = self.image(a);
+                let rk0 = self.rate(k);
+                self.links.rate[i] = Some(rk0);
+                let an = format!("{}{j}", plain(self.name(a)));
+                let ak_name = format!("{}{k}", plain(self.name(a)));
+                let ak = self.image_on(k, self.b.p[a], &ak_name);
+                self.coincident.push((ak_name.clone(), ak));
+                let (s1, s2) = if vel {
+                    (ai, ak)
+                } else {
+                    let va = self.vel_coincident(&an);
+                    let (v_a, v_k) = (self.vel_image(a), self.vel_coincident(&ak_name));
+                    (self.coriolis(i, v_a, va, ai), self.coriolis(k, v_k, va, ak))
+                };
+                let (x, cr) = self.meet(
+                    &format!("{step}: image of {an}"),
+                    ("∥ slide", s1, es),
+                    ("∥ guide", s2, eg),
+                )?;
+                self.coincident_image(&an, a, j, x);
+                let rk = self.rate(k);
+                self.links.add(j, self.b.p[a], x);
+                self.links.rate[j] = Some(rk);
+                let jx = self.image_on(j, self.b.p[joint], self.prog.names[joint].as_str());
+                self.set_image(joint, jx, &[]);
+                self.finish_link(j, &[(joint, jx)], rk);
+                self.finish_link(i, &[(a, ai)], rk);
+                let owner_a = owner(self.prog, a);
+                self.relative_named(
+                    &an,
+                    x,
+                    &format!("{}{owner_a}", plain(self.name(a))),
+                    ai,
+                    Some(cr),
+                );
+            }
+        }
+        Ok(())
+    }
+
+    /// Record a link's new known images and its rate.
+    fn finish_link(&mut self, link: usize, pts: &[(usize, DVec2)], rate: f64) {
+        for &(k, img) in pts {
+            let at = self.b.p[k];
+            if !self.links.pts[link]
+                .iter()
+                .any(|p| p.0.distance(at) <= 1e-9)
+            {
+                self.links.add(link, at, img);
+            }
+        }
+        self.links.rate[link] = Some(rate);
+    }
+
+    /// Draw and label the image of the point of `link` under the point `point` (`b₃`).
+    fn coincident_image(&mut self, name: &str, point: usize, link: usize, x: DVec2) {
+        let prime = if self.kind == PlanKind::Acceleration {
+            "′"
+        } else {
+            ""
+        };
+        let label = format!("{}_{{{link}}}{prime}", lower(self.name(point)));
+        let id = self.rec.draw(
+            format!("image {label}"),
+            Item::Vector {
+                from: DVec2::ZERO,
+                to: x,
+            },
+            Role::Result,
+            &[],
+        );
+        self.rec.label(id, label, x, x.normalize_or(DVec2::Y));
+        self.coincident.push((name.to_string(), x));
+    }
+
+    /// The Coriolis component 2ω·v_r of a point moving relative to `link`, v_r read on the
+    /// velocity plan from the image `rel_from` to `rel_to`, turned 90° in the sense of ω; laid
+    /// from `from`. Returns its end `k` (`from` itself when it vanishes).
+    fn coriolis(&mut self, link: usize, rel_from: DVec2, rel_to: DVec2, from: DVec2) -> DVec2 {
+        let w = self.known.vel.map_or(0.0, |v| v.rate[link]);
+        let ak = self.vel_between(rel_from, rel_to).perp() * (2.0 * w);
+        if ak.length() == 0.0 {
+            return from;
+        }
+        self.lay("Coriolis component", from, ak, "k")
+    }
+
+    /// Reading of the velocity of `joint` relative to the point `a` of link `i`.
+    fn relative(&mut self, joint: usize, _i: usize, a: usize, cr: Option<f64>) {
+        let (x, ai) = (self.image(joint), self.image(a));
+        let q = format!("{}_{}", plain(self.name(joint)), plain(self.name(a)));
+        self.relative_reading(&q, ai, x, cr);
+    }
+
+    fn relative_named(&mut self, p: &str, pi: DVec2, q: &str, qi: DVec2, cr: Option<f64>) {
+        self.relative_reading(&format!("{p}_{q}"), qi, pi, cr);
+    }
+
+    fn relative_reading(&mut self, pq: &str, from: DVec2, to: DVec2, cr: Option<f64>) {
+        let value = self.read(from, to);
+        let q = match self.kind {
+            PlanKind::Velocity => format!("v_{pq}"),
+            PlanKind::Acceleration => format!("a_{pq}"),
+        };
+        self.reading(q, value, cr);
+    }
+}
