@@ -331,19 +331,36 @@ pub fn owner(prog: &Program, k: usize) -> usize {
     0
 }
 
-/// Build a plan of `kind` for the constructed position `b` (drawing mm at μ_l = `mu_l`),
-/// crank speed `w1` (rad/s, signed counter-clockwise), at plan scale `scale`. The
-/// acceleration plan needs the velocity plan of the same position.
+/// A constructed position and the crank speed: what every plan of that position starts from.
+#[derive(Debug, Clone, Copy)]
+pub struct PlanSetup<'a> {
+    /// The compiled mechanism.
+    pub prog: &'a Program,
+    /// The constructed position (drawing mm).
+    pub built: &'a Built,
+    /// μ_l of the construction, m/mm.
+    pub mu_l: f64,
+    /// Crank speed ω₁, rad/s, signed counter-clockwise.
+    pub w1: f64,
+    /// The drafting model for readings.
+    pub drafting: Drafting,
+}
+
+/// Build a plan of `kind` at plan scale `scale`. The acceleration plan needs the velocity
+/// plan of the same position (`vel`). A failure names the group (file order) and the step.
 pub fn kin_plan(
-    prog: &Program,
-    b: &Built,
-    mu_l: f64,
-    w1: f64,
+    setup: &PlanSetup<'_>,
     kind: PlanKind,
     scale: Scale,
-    drafting: Drafting,
     vel: Option<&KinPlan>,
 ) -> Result<KinPlan, (usize, ConstructionError)> {
+    let PlanSetup {
+        prog,
+        built: b,
+        mu_l,
+        w1,
+        drafting,
+    } = *setup;
     let tol = Tolerances::for_model_size(200.0).map_err(|e| {
         (
             0,

@@ -325,28 +325,17 @@ fn plans_equal_analytic_for_every_kind() {
             let built = prog.construct(&mut rec, phi, None, "t").unwrap();
             let sv = Scale::new(0.01, Quantity::Velocity).unwrap();
             let sa = Scale::new(0.1, Quantity::Acceleration).unwrap();
-            let vp = kin_plan(
-                &prog,
-                &built,
+            let setup = PlanSetup {
+                prog: &prog,
+                built: &built,
                 mu_l,
                 w1,
-                PlanKind::Velocity,
-                sv,
-                Drafting::EXACT,
-                None,
-            )
-            .unwrap_or_else(|e| panic!("mech {mi} φ {phi}: {e:?}"));
-            let ap = kin_plan(
-                &prog,
-                &built,
-                mu_l,
-                w1,
-                PlanKind::Acceleration,
-                sa,
-                Drafting::EXACT,
-                Some(&vp),
-            )
-            .unwrap_or_else(|e| panic!("mech {mi} φ {phi}: {e:?}"));
+                drafting: Drafting::EXACT,
+            };
+            let vp = kin_plan(&setup, PlanKind::Velocity, sv, None)
+                .unwrap_or_else(|e| panic!("mech {mi} φ {phi}: {e:?}"));
+            let ap = kin_plan(&setup, PlanKind::Acceleration, sa, Some(&vp))
+                .unwrap_or_else(|e| panic!("mech {mi} φ {phi}: {e:?}"));
             let vscale = w1.abs() * 0.5 + 1.0;
             for (idx, name) in prog.names.iter().enumerate() {
                 let v = vp.images[idx] * 0.01;
