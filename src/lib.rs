@@ -8,6 +8,7 @@
 //! Module map (dependencies point one way):
 //! `geom` ← `construct`, `scale` ← `linkage` ← `scene`, `plate` ← the `tmm` binary.
 
+pub mod calculus;
 pub mod construct;
 pub mod geom;
 pub mod linkage;
