@@ -6,8 +6,10 @@
 //! Plates ([`plate`]) draw exactly what the recorder recorded, at the textbook's μ scales.
 //!
 //! Module map (dependencies point one way):
-//! `geom` ← `construct`, `scale` ← `linkage` ← `scene`, `plate` ← the `tmm` binary.
+//! `geom` ← `construct`, `scale` ← `calculus`, `linkage` ← `scene`, `plate` ← the `tmm` binary
+//! (`calculus`: graphical differentiation and integration of diagrams).
 
+pub mod calculus;
 pub mod construct;
 pub mod geom;
 pub mod linkage;

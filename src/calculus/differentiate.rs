@@ -1,0 +1,448 @@
+//! Graphical differentiation: the methods of chords (Fig. 9) and of tangents (Fig. 8).
+
+use super::read::{read, stencil, weights};
+use super::*;
+use crate::scale::Quantity;
+
+/// Which construction produced a derivative.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// Rays parallel to the chords; values at mid-interval points, nodes read off the curve.
+    Chords,
+    /// Rays parallel to the (draughtsman's) tangents at the nodes.
+    Tangents,
+}
+
+/// A derivative diagram as constructed and read off the drawing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Derivative {
+    /// The construction used.
+    pub method: Method,
+    /// Its ordinate scale μ_y′ = μ_y/(H·μ_x).
+    pub scale: Scale,
+    /// The pole distance H, mm.
+    pub pole_mm: f64,
+    /// The pole P, figure mm.
+    pub pole: DVec2,
+    /// Abscissa of node 0.
+    pub x0: f64,
+    /// Interval length.
+    pub dx: f64,
+    /// Abscissae of the interval midpoints (empty for the tangent method).
+    pub x_mid: Vec<f64>,
+    /// Values at the interval midpoints, physical units, as read (empty for tangents).
+    pub mid: Vec<f64>,
+    /// Abscissae of the nodes (node N of a periodic diagram is left out, as in the source).
+    pub x_node: Vec<f64>,
+    /// Values at the nodes, physical units, as read from the smooth curve.
+    pub node: Vec<f64>,
+    /// The source was periodic.
+    pub periodic: bool,
+    /// The recorded rays from the pole, one per interval (chords) or node (tangents).
+    pub rays: Vec<StepId>,
+    /// The recorded smooth curve.
+    pub curve: StepId,
+}
+
+impl Derivative {
+    /// The node values as a diagram (to differentiate again or integrate).
+    ///
+    /// # Errors
+    /// See [`Diagram::validate`].
+    pub fn diagram(&self) -> Result<Diagram, CalculusError> {
+        Diagram::new(self.x0, self.dx, self.node.clone(), self.periodic)
+    }
+}
+
+/// The derivative's ordinate scale μ_y′ = μ_y / (H·μ_x) (eq. 5 and 6 of the textbook).
+///
+/// # Errors
+/// [`CalculusError::BadPole`] for H ≤ 0, [`CalculusError::BadScale`] if the result is not
+/// a valid μ.
+pub fn derivative_scale(
+    y: Scale,
+    x: Scale,
+    pole_mm: f64,
+    quantity: Quantity,
+) -> Result<Scale, CalculusError> {
+    check_pole(pole_mm)?;
+    let value = y.value() / (pole_mm * x.value());
+    Scale::new(value, quantity).ok_or(CalculusError::BadScale { value })
+}
+
+/// The pole distance H chosen the textbook way: the steepest chord drawn from the pole
+/// cuts the ordinate axis `preferred_mm` (e.g. 40–60 mm) from the origin, H rounded to
+/// 0.5 mm (at least 0.5 mm). A flat diagram gets H = `preferred_mm` rounded. To override,
+/// pass your own H to the constructions instead.
+///
+/// # Errors
+/// An invalid diagram, or [`CalculusError::BadPreferred`].
+pub fn pole_for(src: &Diagram, scales: Scales, preferred_mm: f64) -> Result<f64, CalculusError> {
+    src.validate()?;
+    if !(preferred_mm.is_finite() && preferred_mm > 0.0) {
+        return Err(CalculusError::BadPreferred { mm: preferred_mm });
+    }
+    let run_mm = scales.x.to_mm(src.dx);
+    let steepest = (0..src.intervals())
+        .map(|k| (scales.y.to_mm(src.at(k + 1)) - scales.y.to_mm(src.at(k))).abs() / run_mm)
+        .fold(0.0f64, f64::max);
+    let h = if steepest > 0.0 && steepest.is_finite() {
+        preferred_mm / steepest
+    } else {
+        preferred_mm
+    };
+    let h = ((h * 2.0).round() / 2.0).max(0.5);
+    if h.is_finite() {
+        Ok(h)
+    } else {
+        Err(CalculusError::BadPole { pole_mm: h })
+    }
+}
+
+/// Bound of the method error at the mid-interval points: h²/24·max|y‴|.
+pub fn chord_mid_bound(dx: f64, max_d3: f64) -> f64 {
+    dx * dx / 24.0 * max_d3
+}
+
+/// Bound of the method error of the chord method at the nodes of `src`: the largest over
+/// the nodes of Λ·h²/24·max|y‴| + |Π(t − tⱼ)|/24·max|y⁽⁵⁾|, where Λ is the absolute sum of
+/// the cubic's weights and Π the product of distances to its four midpoints (Λ = 1.25,
+/// Π = 0.5625·h⁴ between midpoints; larger at the ends of a non-periodic diagram).
+pub fn chord_node_bound(src: &Diagram, max_d3: f64, max_d5: f64) -> f64 {
+    let n = src.intervals();
+    let h = src.dx;
+    let nodes = if src.periodic { n } else { n + 1 };
+    (0..nodes)
+        .map(|k| {
+            let t = k as f64;
+            let ts: Vec<f64> = stencil(n, 0.5, src.periodic, t)
+                .iter()
+                .map(|s| s.0)
+                .collect();
+            let lambda: f64 = weights(&ts, t).iter().map(|w| w.abs()).sum();
+            let pi: f64 = ts.iter().map(|tj| (t - tj).abs() * h).product();
+            lambda * chord_mid_bound(h, max_d3) + pi / 24.0 * max_d5
+        })
+        .fold(0.0, f64::max)
+}
+
+/// What both methods start from: the checked inputs and the given diagram.
+struct Start {
+    /// The derivative's scale.
+    scale: Scale,
+    /// Intervals.
+    n: usize,
+    /// Interval length on the drawing, mm.
+    run: f64,
+    /// The given diagram's nodes 0..=N, figure mm.
+    pts: Vec<DVec2>,
+}
+
+impl Start {
+    /// Check the inputs, place the given diagram's nodes and draw its curve if asked.
+    fn new(
+        rec: &mut Recorder,
+        src: &Diagram,
+        scales: Scales,
+        pole_mm: f64,
+        layout: &Layout,
+    ) -> Result<Self, CalculusError> {
+        src.validate()?;
+        check_pole(pole_mm)?;
+        let scale = check_scale(rec, scales.y.value() / (pole_mm * scales.x.value()))?;
+        let n = src.intervals();
+        let run = scales.x.to_mm(src.dx);
+        let pts = (0..=n)
+            .map(|k| {
+                let p = at_mm(
+                    layout.source_origin,
+                    k as f64 * run,
+                    scales.y.to_mm(src.at(k)),
+                );
+                finite(p, "given diagram")
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        if layout.draw_source {
+            draw_diagram(
+                rec,
+                layout.source_origin,
+                pts.clone(),
+                (6.0, run * n as f64),
+                (&layout.x_name, &layout.source_name),
+                Role::Given,
+            );
+        }
+        Ok(Self { scale, n, run, pts })
+    }
+
+    /// The derivative with its common fields filled and no values yet.
+    fn derivative(&self, method: Method, src: &Diagram, pc: &PoleCut) -> Derivative {
+        let nodes = if src.periodic { self.n } else { self.n + 1 };
+        Derivative {
+            method,
+            scale: self.scale,
+            pole_mm: pc.pole_mm,
+            pole: pc.pole,
+            x0: src.x0,
+            dx: src.dx,
+            x_mid: Vec::new(),
+            mid: Vec::new(),
+            x_node: (0..nodes).map(|k| src.x(k)).collect(),
+            node: Vec::with_capacity(nodes),
+            periodic: src.periodic,
+            rays: Vec::with_capacity(nodes),
+            curve: pc.pole_id,
+        }
+    }
+}
+
+/// The pole construction shared by both methods: for each direction, the point where the
+/// ray from P parallel to it cuts the ordinate axis. Draws the axes and the pole.
+struct PoleCut {
+    pole_mm: f64,
+    pole: DVec2,
+    pole_id: StepId,
+    axis: StepId,
+    cuts: Vec<DVec2>,
+}
+
+fn pole_cuts(
+    rec: &mut Recorder,
+    layout: &Layout,
+    pole_mm: f64,
+    dirs: &[DVec2],
+    extent: f64,
+) -> Result<PoleCut, CalculusError> {
+    let o = layout.origin;
+    let pole = o - DVec2::new(pole_mm, 0.0);
+    let axis = Line::new(o, DVec2::Y);
+    let cuts = dirs
+        .iter()
+        .enumerate()
+        .map(|(k, &d)| cut(rec, Line::new(pole, d), axis, k, "ordinate axis"))
+        .collect::<Result<Vec<_>, _>>()?;
+    let (_, axis_id) = axes_around(
+        rec,
+        o,
+        &cuts,
+        (pole_mm + 6.0, extent),
+        (&layout.x_name, &layout.name),
+    );
+    let pole_id = draw_pole(rec, pole, o, layout);
+    Ok(PoleCut {
+        pole_mm,
+        pole,
+        pole_id,
+        axis: axis_id,
+        cuts,
+    })
+}
+
+/// Draw the ray P → `cut`, project `cut` horizontally to abscissa `x` (figure mm) and mark
+/// the result point there. Returns (ray id, the point).
+fn ray_and_project(
+    rec: &mut Recorder,
+    pc: &PoleCut,
+    k: usize,
+    x: f64,
+    from: StepId,
+) -> (StepId, DVec2) {
+    let cut = pc.cuts.get(k).copied().unwrap_or(pc.pole);
+    let ray = thin(
+        rec,
+        format!("ray {k} from the pole parallel to line {k}"),
+        pc.pole,
+        cut,
+        &[pc.pole_id, from, pc.axis],
+    );
+    let target = DVec2::new(x, cut.y);
+    if (target.x - cut.x).abs() > rec.tolerances().coincident {
+        thin(rec, format!("projection {k}"), cut, target, &[ray]);
+    }
+    (ray, target)
+}
+
+/// Differentiate `src` (drawn at `scales`) by the method of chords, recording the textbook
+/// steps on `rec`, whose scale must be the derivative's μ_y/(H·μ_x) (see
+/// [`derivative_scale`]):
+/// the given curve (optional) and its chords (thin); the pole P at H left of
+/// `layout.origin` with the dimension H; for every interval a ray from P parallel to the
+/// chord, cut by the ordinate axis; the horizontal projection of the cut and the step graph
+/// (thin); the mid-interval points on the steps and the smooth curve through them (result).
+/// Mid-interval values are the drawn ordinates measured with `Recorder::measure`; node
+/// values are read from the smooth curve (the cubic through the four nearest midpoints).
+///
+/// # Errors
+/// An invalid diagram, H ≤ 0, a recorder at another scale, a vertical chord, or values
+/// too large to draw.
+pub fn differentiate_chords(
+    rec: &mut Recorder,
+    src: &Diagram,
+    scales: Scales,
+    pole_mm: f64,
+    layout: &Layout,
+) -> Result<Derivative, CalculusError> {
+    let st = Start::new(rec, src, scales, pole_mm, layout)?;
+    let (n, run, pts) = (st.n, st.run, &st.pts);
+    let chords: Vec<StepId> = pts
+        .windows(2)
+        .enumerate()
+        .map(|(k, w)| thin(rec, format!("chord {k}–{}", k + 1), w[0], w[1], &[]))
+        .collect();
+    let dirs: Vec<DVec2> = pts.windows(2).map(|w| w[1] - w[0]).collect();
+    let pc = pole_cuts(rec, layout, pole_mm, &dirs, run * n as f64)?;
+    let mut d = st.derivative(Method::Chords, src, &pc);
+    let o = layout.origin;
+    for (k, &chord) in chords.iter().enumerate() {
+        let (ray, _) = ray_and_project(rec, &pc, k, o.x + k as f64 * run, chord);
+        d.rays.push(ray);
+    }
+    let steps: Vec<DVec2> = pc
+        .cuts
+        .iter()
+        .enumerate()
+        .flat_map(|(k, c)| {
+            [
+                DVec2::new(o.x + k as f64 * run, c.y),
+                DVec2::new(o.x + (k + 1) as f64 * run, c.y),
+            ]
+        })
+        .collect();
+    let stair = rec.draw(
+        "step graph: each cut projected across its interval",
+        Item::Polyline {
+            points: steps,
+            closed: false,
+        },
+        Role::Construction,
+        &d.rays,
+    );
+    let mut mid = Vec::with_capacity(n);
+    let mut mid_pts = Vec::with_capacity(n);
+    for (k, c) in pc.cuts.iter().enumerate() {
+        let p = DVec2::new(o.x + (k as f64 + 0.5) * run, c.y);
+        rec.draw(
+            format!("mid-interval point {k}"),
+            Item::Point(p),
+            Role::Result,
+            &[stair],
+        );
+        mid.push(read_ordinate(rec, o, p).1);
+        mid_pts.push(p);
+    }
+    let drawn: Vec<f64> = mid_pts.iter().map(|p| p.y - o.y).collect();
+    let node_pts: Vec<DVec2> = (0..=n)
+        .map(|k| {
+            let y = read(&drawn, 0.5, src.periodic, k as f64);
+            DVec2::new(o.x + k as f64 * run, o.y + y)
+        })
+        .collect();
+    let node: Vec<f64> = node_pts[..d.x_node.len()]
+        .iter()
+        .map(|&p| read_ordinate(rec, o, p).1)
+        .collect();
+    let mut curve_pts = Vec::with_capacity(n + 2);
+    curve_pts.push(node_pts[0]);
+    curve_pts.extend_from_slice(&mid_pts);
+    curve_pts.push(node_pts[n]);
+    let curve = rec.draw(
+        format!(
+            "smooth curve {} through the mid-interval points",
+            layout.name
+        ),
+        Item::Curve {
+            points: curve_pts,
+            closed: false,
+        },
+        Role::Result,
+        &[stair],
+    );
+    d.x_mid = (0..n).map(|k| src.x0 + (k as f64 + 0.5) * src.dx).collect();
+    d.mid = mid;
+    d.node = node;
+    d.curve = curve;
+    finish(d)
+}
+
+/// Every value read must be finite.
+fn finish(d: Derivative) -> Result<Derivative, CalculusError> {
+    if d.mid.iter().chain(&d.node).all(|v| v.is_finite()) {
+        Ok(d)
+    } else {
+        Err(CalculusError::Overflow {
+            what: "derivative values",
+        })
+    }
+}
+
+/// Differentiate `src` by the method of tangents. The tangent at a node is the
+/// draughtsman's tangent: the line through the node parallel to the chord joining its two
+/// neighbouring nodes (wrapping for a periodic diagram; at the ends of a non-periodic one,
+/// the adjacent chord). It is drawn (thin) through the node; then, as for chords, a ray from
+/// P parallel to it cuts the ordinate axis, the cut is projected to the node's ordinate and
+/// the result point marked; the smooth curve goes through the node points. The scale of
+/// `rec` must be μ_y/(H·μ_x).
+///
+/// # Errors
+/// As [`differentiate_chords`].
+pub fn differentiate_tangents(
+    rec: &mut Recorder,
+    src: &Diagram,
+    scales: Scales,
+    pole_mm: f64,
+    layout: &Layout,
+) -> Result<Derivative, CalculusError> {
+    let st = Start::new(rec, src, scales, pole_mm, layout)?;
+    let (n, run, pts) = (st.n, st.run, &st.pts);
+    let nodes = if src.periodic { n } else { n + 1 };
+    let shift = DVec2::new(run * n as f64, 0.0);
+    let mut tangents = Vec::with_capacity(nodes);
+    let mut dirs = Vec::with_capacity(nodes);
+    for k in 0..nodes {
+        let (a, b) = match (k, src.periodic) {
+            (0, true) => (pts[n - 1] - shift, pts[1]),
+            (0, false) => (pts[0], pts[1]),
+            (k, false) if k == n => (pts[n - 1], pts[n]),
+            (k, _) => (pts[k - 1], pts[k + 1]),
+        };
+        let half = (b - a) * 0.5;
+        tangents.push(thin(
+            rec,
+            format!("tangent at node {k} ∥ chord of its neighbours"),
+            pts[k] - half,
+            pts[k] + half,
+            &[],
+        ));
+        dirs.push(b - a);
+    }
+    let pc = pole_cuts(rec, layout, pole_mm, &dirs, run * n as f64)?;
+    let mut d = st.derivative(Method::Tangents, src, &pc);
+    let o = layout.origin;
+    let mut curve_pts = Vec::with_capacity(nodes + 1);
+    for (k, &t) in tangents.iter().enumerate() {
+        let (ray, p) = ray_and_project(rec, &pc, k, o.x + k as f64 * run, t);
+        rec.draw(
+            format!("node point {k}"),
+            Item::Point(p),
+            Role::Result,
+            &[ray],
+        );
+        d.node.push(read_ordinate(rec, o, p).1);
+        curve_pts.push(p);
+        d.rays.push(ray);
+    }
+    if src.periodic {
+        let first = curve_pts[0];
+        curve_pts.push(first + shift);
+    }
+    d.curve = rec.draw(
+        format!("smooth curve {} through the node points", layout.name),
+        Item::Curve {
+            points: curve_pts,
+            closed: false,
+        },
+        Role::Result,
+        &d.rays,
+    );
+    finish(d)
+}

@@ -1,0 +1,225 @@
+//! Graphical integration (§15.3, Fig. 71): rays from the pole to the mid-interval ordinates,
+//! chords parallel to them.
+
+use super::read::read;
+use super::*;
+use crate::scale::Quantity;
+
+/// Where the integrand's samples sit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Sampling {
+    /// At the nodes `x0 + k·dx` (a [`Diagram`] as it is); the mid-interval ordinate is read
+    /// from the curve (the cubic through the four nearest nodes).
+    Nodes,
+    /// At the interval midpoints `x0 + (k + ½)·dx`, k = 0..len (e.g. [`super::Derivative::mid`]);
+    /// `len` intervals whatever `periodic` says.
+    Midpoints,
+}
+
+/// An integral diagram as constructed and read off the drawing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Integral {
+    /// Its ordinate scale μ_y = μ_y′·H·μ_x.
+    pub scale: Scale,
+    /// The pole distance H, mm.
+    pub pole_mm: f64,
+    /// The pole P, figure mm (on the integrand's abscissa axis).
+    pub pole: DVec2,
+    /// Abscissa of node 0.
+    pub x0: f64,
+    /// Interval length.
+    pub dx: f64,
+    /// Values at the nodes 0..=N, physical units, as read (node 0 is the start value).
+    pub node: Vec<f64>,
+    /// The recorded rays from the pole, one per interval.
+    pub rays: Vec<StepId>,
+    /// The recorded chords of the integral diagram, one per interval.
+    pub chords: Vec<StepId>,
+    /// The recorded smooth curve through the chord ends.
+    pub curve: StepId,
+}
+
+impl Integral {
+    /// The node values as a (non-periodic) diagram.
+    ///
+    /// # Errors
+    /// See [`Diagram::validate`].
+    pub fn diagram(&self) -> Result<Diagram, CalculusError> {
+        Diagram::new(self.x0, self.dx, self.node.clone(), false)
+    }
+}
+
+/// The integral's ordinate scale μ_y = μ_y′·H·μ_x (the inverse of the derivative's).
+///
+/// # Errors
+/// [`CalculusError::BadPole`] for H ≤ 0, [`CalculusError::BadScale`] if the result is not
+/// a valid μ.
+pub fn integral_scale(
+    integrand: Scale,
+    x: Scale,
+    pole_mm: f64,
+    quantity: Quantity,
+) -> Result<Scale, CalculusError> {
+    check_pole(pole_mm)?;
+    let value = integrand.value() * pole_mm * x.value();
+    Scale::new(value, quantity).ok_or(CalculusError::BadScale { value })
+}
+
+/// Bound of the midpoint rule over a length `length` with intervals `dx`:
+/// length·h²/24·max|y″| of the integrand (plus, for [`Sampling::Nodes`], the cubic's
+/// reading error 0.5625·h⁴/24·max|y⁗| per interval mean ordinate, times the length).
+pub fn midpoint_rule_bound(length: f64, dx: f64, max_d2: f64) -> f64 {
+    length.abs() * dx * dx / 24.0 * max_d2
+}
+
+/// Integrate the integrand `src` (drawn at `scales`) graphically, recording on `rec`, whose
+/// scale must be μ_y′·H·μ_x (see [`integral_scale`]): the integrand's curve and axes
+/// (optional) at `layout.source_origin`; the pole P on its abscissa axis at H left of its
+/// origin; for every interval the perpendicular at the middle up to the curve, its
+/// horizontal projection to the ordinate axis and the ray from P to that projection (thin);
+/// in the integral diagram at `layout.origin`, from `start` (physical, default 0) onwards,
+/// a chord across each interval parallel to its ray, starting where the previous one ended;
+/// the smooth curve through the chord ends (result). Node values are the drawn ordinates
+/// measured with `Recorder::measure`.
+///
+/// # Errors
+/// An invalid integrand, H ≤ 0, a recorder at another scale, or values too large to draw.
+pub fn integrate_chords(
+    rec: &mut Recorder,
+    src: &Diagram,
+    sampling: Sampling,
+    scales: Scales,
+    pole_mm: f64,
+    start: f64,
+    layout: &Layout,
+) -> Result<Integral, CalculusError> {
+    let (n, means) = match sampling {
+        Sampling::Nodes => {
+            src.validate()?;
+            let n = src.intervals();
+            let means = (0..n)
+                .map(|k| read(&src.y, 0.0, src.periodic, k as f64 + 0.5))
+                .collect();
+            (n, means)
+        }
+        Sampling::Midpoints => {
+            // As many intervals as samples: validate as a cycle of that length.
+            let as_cycle = Diagram {
+                periodic: true,
+                ..src.clone()
+            };
+            as_cycle.validate()?;
+            (src.y.len(), src.y.clone())
+        }
+    };
+    if !start.is_finite() {
+        return Err(CalculusError::NonFinite {
+            what: "start value",
+            index: 0,
+            value: start,
+        });
+    }
+    check_pole(pole_mm)?;
+    let scale = check_scale(rec, scales.y.value() * pole_mm * scales.x.value())?;
+    let run = scales.x.to_mm(src.dx);
+    let so = layout.source_origin;
+    let m_pts = means
+        .iter()
+        .enumerate()
+        .map(|(k, &m)| {
+            let p = at_mm(so, (k as f64 + 0.5) * run, scales.y.to_mm(m));
+            finite(p, "integrand")
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    if layout.draw_source {
+        let curve = match sampling {
+            Sampling::Nodes => (0..=n)
+                .map(|k| at_mm(so, k as f64 * run, scales.y.to_mm(src.at(k))))
+                .collect(),
+            Sampling::Midpoints => m_pts.clone(),
+        };
+        draw_diagram(
+            rec,
+            so,
+            curve,
+            (pole_mm + 6.0, run * n as f64),
+            (&layout.x_name, &layout.source_name),
+            Role::Given,
+        );
+    }
+    let pole = so - DVec2::new(pole_mm, 0.0);
+    let pole_id = draw_pole(rec, pole, so, layout);
+    let o = layout.origin;
+    let mut ends = vec![finite(at_mm(o, 0.0, scale.to_mm(start)), "start value")?];
+    let mut rays = Vec::with_capacity(n);
+    let mut chords = Vec::with_capacity(n);
+    for (k, &m) in m_pts.iter().enumerate() {
+        let foot = DVec2::new(m.x, so.y);
+        let perp = thin(rec, format!("mean ordinate {k}"), foot, m, &[]);
+        let q = DVec2::new(so.x, m.y);
+        let proj = thin(rec, format!("projection {k}"), m, q, &[perp]);
+        let ray = thin(
+            rec,
+            format!("ray {k} from the pole"),
+            pole,
+            q,
+            &[pole_id, proj],
+        );
+        let prev = ends[k];
+        let along = Line::new(prev, q - pole).ok_or(CalculusError::Overflow { what: "chord" })?;
+        let x_end = (k + 1) as f64 * run;
+        let ordinate = Line::new(at_mm(o, x_end, 0.0), DVec2::Y)
+            .ok_or(CalculusError::Overflow { what: "ordinate" })?;
+        let end = match line_line(&along, &ordinate, rec.tolerances()) {
+            LineLine::Point { point, .. } => finite(point, "chord end")?,
+            _ => {
+                return Err(CalculusError::RayMisses {
+                    interval: k,
+                    what: "interval's end ordinate",
+                })
+            }
+        };
+        chords.push(thin(
+            rec,
+            format!("chord {k}–{} ∥ ray {k}", k + 1),
+            prev,
+            end,
+            &[ray],
+        ));
+        rays.push(ray);
+        ends.push(end);
+    }
+    axes_around(
+        rec,
+        o,
+        &ends,
+        (6.0, run * n as f64),
+        (&layout.x_name, &layout.name),
+    );
+    let node: Vec<f64> = ends.iter().map(|&e| read_ordinate(rec, o, e).1).collect();
+    let curve = rec.draw(
+        format!("smooth curve {} through the chord ends", layout.name),
+        Item::Curve {
+            points: ends,
+            closed: false,
+        },
+        Role::Result,
+        &chords,
+    );
+    if !node.iter().all(|v| v.is_finite()) {
+        return Err(CalculusError::Overflow {
+            what: "integral values",
+        });
+    }
+    Ok(Integral {
+        scale,
+        pole_mm,
+        pole,
+        x0: src.x0,
+        dx: src.dx,
+        node,
+        rays,
+        chords,
+        curve,
+    })
+}
