@@ -6,12 +6,14 @@
 //! Plates ([`plate`]) draw exactly what the recorder recorded, at the textbook's μ scales.
 //!
 //! Module map (dependencies point one way):
-//! `geom` ← `construct`, `scale` ← `linkage` ← `scene`, `plate` ← the `tmm` binary.
+//! `geom` ← `construct`, `scale` ← `linkage` ← `scene`, `plate` ← the `tmm` binary;
+//! `scale`, `plate` ← `report` ← `scene` (the checks fill reports).
 
 pub mod construct;
 pub mod geom;
 pub mod linkage;
 pub mod plate;
+pub mod report;
 pub mod scale;
 pub mod scene;
 pub mod sheets;
