@@ -3,7 +3,7 @@
 
 use super::bench::{Bench, BenchRow};
 use crate::geom::DVec2;
-use crate::plate::text::{Align, Placed};
+use crate::plate::text::{approx_width, Align, Placed};
 use crate::plate::{num, FONT_FAMILY};
 use std::fmt::Write as _;
 
@@ -218,6 +218,60 @@ impl Canvas {
     }
 }
 
+/// Places the N labels of the points where they cover no marker and no other label.
+struct Labeller {
+    /// Boxes already used, `(min, max)` in mm.
+    taken: Vec<(DVec2, DVec2)>,
+}
+
+impl Labeller {
+    /// Half the size of the box kept free around a marker, mm.
+    const MARKER: f64 = 1.1;
+    /// Gap between a point and its label, mm.
+    const GAP: f64 = 1.3;
+
+    /// A labeller with every marker's box taken.
+    fn around<'a>(points: impl Iterator<Item = &'a DVec2>) -> Self {
+        let half = DVec2::splat(Self::MARKER);
+        Self {
+            taken: points.map(|&p| (p - half, p + half)).collect(),
+        }
+    }
+
+    /// The label `text` of the point `p`: above right, below right, above left or below left,
+    /// the first of these that is free and inside the plot area (above right when none is).
+    fn place(&mut self, p: DVec2, text: &str) -> Placed {
+        let (w, h, g) = (approx_width(text, POINT_H), POINT_H, Self::GAP);
+        let candidates = [
+            (DVec2::new(p.x + g, p.y - g), Align::Start),
+            (DVec2::new(p.x + g, p.y + g + h), Align::Start),
+            (DVec2::new(p.x - g, p.y - g), Align::End),
+            (DVec2::new(p.x - g, p.y + g + h), Align::End),
+        ];
+        let bbox = |(at, align): (DVec2, Align)| {
+            let x0 = if align == Align::End { at.x - w } else { at.x };
+            (DVec2::new(x0, at.y - h), DVec2::new(x0 + w, at.y))
+        };
+        let free = |b: &(DVec2, DVec2)| {
+            b.0.x >= LEFT
+                && b.1.x <= RIGHT
+                && b.0.y >= TOP
+                && b.1.y <= BOTTOM
+                && self
+                    .taken
+                    .iter()
+                    .all(|t| b.1.x <= t.0.x || b.0.x >= t.1.x || b.1.y <= t.0.y || b.0.y >= t.1.y)
+        };
+        let chosen = candidates
+            .iter()
+            .copied()
+            .find(|&c| free(&bbox(c)))
+            .unwrap_or(candidates[0]);
+        self.taken.push(bbox(chosen));
+        Placed::new(chosen.0, text, POINT_H, chosen.1)
+    }
+}
+
 /// A decade's label: `1e-6`, `1e0`, `1e3`.
 fn decade_label(d: i32) -> String {
     format!("1e{d}")
@@ -325,28 +379,28 @@ pub(crate) fn bench_plot(bench: &Bench) -> String {
     let mut legend_y = TOP + 2.0;
     match (x_dec, y_dec) {
         (Some(xd), Some(yd)) => {
-            for (k, s) in all.iter().enumerate() {
+            let drawn: Vec<Vec<DVec2>> = all
+                .iter()
+                .map(|s| {
+                    s.points
+                        .iter()
+                        .map(|&(t, e, _)| {
+                            DVec2::new(
+                                log_position(t, xd, LEFT, RIGHT),
+                                log_position(e, yd, BOTTOM, TOP),
+                            )
+                        })
+                        .collect()
+                })
+                .collect();
+            let mut labels = Labeller::around(drawn.iter().flatten());
+            for (k, (s, pts)) in all.iter().zip(&drawn).enumerate() {
                 let colour = COLOURS[k % COLOURS.len()];
                 let marker = MARKERS[(k / COLOURS.len() + k) % MARKERS.len()];
-                let pts: Vec<DVec2> = s
-                    .points
-                    .iter()
-                    .map(|&(t, e, _)| {
-                        DVec2::new(
-                            log_position(t, xd, LEFT, RIGHT),
-                            log_position(e, yd, BOTTOM, TOP),
-                        )
-                    })
-                    .collect();
-                c.polyline(&pts, colour);
+                c.polyline(pts, colour);
                 for (p, &(_, _, n)) in pts.iter().zip(&s.points) {
                     c.marker(*p, marker, colour);
-                    c.label(
-                        *p + DVec2::new(1.3, -1.3),
-                        &n.to_string(),
-                        POINT_H,
-                        Align::Start,
-                    );
+                    c.text(labels.place(*p, &n.to_string()));
                 }
                 let sample = DVec2::new(LEGEND_X, legend_y);
                 c.line(sample, sample + DVec2::new(7.0, 0.0), colour, 0.35);
