@@ -6,14 +6,16 @@
 //! Plates ([`plate`]) draw exactly what the recorder recorded, at the textbook's μ scales.
 //!
 //! Module map (dependencies point one way):
-//! `geom` ← `construct`, `scale` ← `calculus`, `linkage` ← `scene`, `plate` ← the `tmm` binary
-//! (`calculus`: graphical differentiation and integration of diagrams).
+//! `geom` ← `construct`, `scale` ← `calculus`, `linkage` ← `scene` ← `sheets` ← the `tmm`
+//! binary; `plate` draws recorded figures; `report` formats the construction-against-analytic
+//! rows (`calculus`: graphical differentiation and integration of diagrams).
 
 pub mod calculus;
 pub mod construct;
 pub mod geom;
 pub mod linkage;
 pub mod plate;
+pub mod report;
 pub mod scale;
 pub mod scene;
 pub mod sheets;

@@ -46,7 +46,11 @@ pub use fonts::font_database;
 pub use raster::{to_png, to_png_dpi};
 pub use sheet::{Sheet, SheetSize, TitleBlock};
 pub use style::Pen;
-pub use svg::to_svg;
+pub use svg::{to_svg, FONT_FAMILY};
+
+/// Formats an SVG coordinate the way every plate does (0.01 mm, no `-0`); for other writers
+/// of drawings in this crate.
+pub(crate) use path::num;
 pub use write::write_atomic;
 
 /// An axis-aligned rectangle on the sheet, millimetres, origin top-left, y down.
