@@ -13,6 +13,7 @@
 pub mod calculus;
 pub mod construct;
 pub mod geom;
+pub mod kinematics;
 pub mod linkage;
 pub mod plate;
 pub mod report;

@@ -28,6 +28,13 @@ enum Format {
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum ReportFormat {
+    Md,
+    Csv,
+    Json,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum LangArg {
     Ru,
     Uk,
@@ -56,6 +63,20 @@ enum Command {
         /// PNG resolution, dots per inch.
         #[arg(long, default_value_t = 150)]
         dpi: u32,
+    },
+    /// Compare every value read off the plans and diagrams with its analytic twin.
+    Report {
+        /// Scene file.
+        scene: PathBuf,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "md")]
+        format: ReportFormat,
+        /// Resolution (mm) to which measured lengths are read; 0 = exact.
+        #[arg(long, default_value_t = 0.0)]
+        drafting: f64,
+        /// Language of the Markdown headings.
+        #[arg(long, value_enum, default_value = "ru")]
+        lang: LangArg,
     },
     /// Validate scenes and carry out their constructions without writing anything.
     Check {
@@ -104,6 +125,12 @@ fn main() -> ExitCode {
             dpi,
         } => render(&scenes, &out, &format, lang, drafting, dpi),
         Command::Check { scenes } => check(&scenes),
+        Command::Report {
+            scene,
+            format,
+            drafting,
+            lang,
+        } => report(&scene, format, drafting, lang),
         Command::List { dir } => list(&dir),
     };
     match result {
@@ -113,6 +140,13 @@ fn main() -> ExitCode {
             ExitCode::from(f.code)
         }
     }
+}
+
+/// Print a line to standard output; a closed pipe (`tmm report … | head`) is not an error.
+fn emit(line: &str) {
+    use std::io::Write;
+    let mut so = std::io::stdout().lock();
+    let _ = writeln!(so, "{line}");
 }
 
 fn load_all(paths: &[PathBuf]) -> Result<Vec<Scene>, Failure> {
@@ -177,8 +211,29 @@ fn render(
     for (path, bytes) in &files {
         tmm::plate::write_atomic(path, bytes)
             .map_err(|e| Failure::input(format!("{}: cannot write: {e}", path.display())))?;
-        println!("{}", path.display());
+        emit(&path.display().to_string());
     }
+    Ok(())
+}
+
+fn report(path: &Path, format: ReportFormat, drafting: f64, lang: LangArg) -> Result<(), Failure> {
+    let opts = options(lang, drafting)?;
+    let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
+    let req = sheets::kin_request(&s, opts.drafting)
+        .map_err(|e| Failure::construction(format!("{}: {e}", s.path.display())))?;
+    let analysis = tmm::kinematics::analyse(&s.mechanism, &req)
+        .map_err(|e| Failure::construction(format!("{}: {e}", s.path.display())))?;
+    let rep = tmm::report::Report {
+        scene: s.stem.clone(),
+        rows: analysis.rows,
+        tables: vec![analysis.table],
+    };
+    let text = match format {
+        ReportFormat::Md => rep.to_markdown(opts.lang),
+        ReportFormat::Csv => rep.to_csv(),
+        ReportFormat::Json => rep.to_json(),
+    };
+    emit(&text);
     Ok(())
 }
 
@@ -189,7 +244,7 @@ fn check(paths: &[PathBuf]) -> Result<(), Failure> {
         for &kind in &s.plates {
             sheets::build(s, kind, &opts).map_err(|e| build_err(s, kind, e))?;
         }
-        println!("{}: ok", s.path.display());
+        emit(&format!("{}: ok", s.path.display()));
     }
     Ok(())
 }
@@ -205,13 +260,18 @@ fn list(dir: &Path) -> Result<(), Failure> {
         match scene::load(&p) {
             Ok(s) => {
                 let plates: Vec<&str> = s.plates.iter().map(|k| k.stem()).collect();
-                println!("{}\t{}\t{}", p.display(), s.title.title, plates.join(", "));
+                emit(&format!(
+                    "{}\t{}\t{}",
+                    p.display(),
+                    s.title.title,
+                    plates.join(", ")
+                ));
             }
-            Err(e) => println!(
+            Err(e) => emit(&format!(
                 "{}\tinvalid: {}",
                 p.display(),
                 e.to_string().lines().next().unwrap_or("")
-            ),
+            )),
         }
     }
     Ok(())

@@ -24,7 +24,7 @@ pub use plan::{
     draw_links, fixed_pivots, frame_guides, group_name, plan_positions, FrameGuide, Part,
     PlanPosition, PlanRequest, PositionPlan,
 };
-pub use plans::{kin_plan, owner, plain, KinPlan, PlanKind, PlanSetup, Reading};
+pub use plans::{kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading};
 pub use program::{Op, PDir, PDyad, PGuide, Program};
 pub use scheme::structure_figure;
 pub use structure::{GroupInfo, PairInfo, Structure};

@@ -33,11 +33,30 @@ pub enum PlanKind {
 pub struct Reading {
     /// Quantity name (`v_D`, `v_B3_B1`, `omega_3`, `a_S5`, `eps_3`).
     pub quantity: String,
+    /// What was read, structurally (for the analytic twin).
+    pub what: Measure,
     /// The physical value (magnitudes for point quantities; ω, ε signed, counter-clockwise
     /// positive).
     pub value: f64,
     /// Crossing angle of the intersection that fixed it, degrees (None: not an intersection).
     pub conditioning: Option<f64>,
+}
+
+/// What a reading measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Measure {
+    /// The absolute velocity (acceleration) of a point, by program index: a magnitude.
+    Point(usize),
+    /// The angular velocity (acceleration) of a link, signed counter-clockwise.
+    Rate(usize),
+    /// The velocity (acceleration) of point `p.0` carried by link `p.1` relative to point
+    /// `q.0` carried by link `q.1`: a magnitude.
+    Relative {
+        /// (point, link) of the moving point.
+        p: (usize, usize),
+        /// (point, link) of the reference point.
+        q: (usize, usize),
+    },
 }
 
 /// A constructed plan.
@@ -111,6 +130,8 @@ struct Builder<'a> {
     readings: Vec<Reading>,
     coincident: Vec<(String, DVec2)>,
     known: Known<'a>,
+    /// Crossing angle (radians) of the intersection that fixed each point's image.
+    cond: Vec<Option<f64>>,
 }
 
 impl<'a> Builder<'a> {
@@ -237,9 +258,10 @@ impl<'a> Builder<'a> {
     fn read(&self, from: DVec2, to: DVec2) -> f64 {
         self.rec.measure(from, to).value
     }
-    fn reading(&mut self, quantity: String, value: f64, conditioning: Option<f64>) {
+    fn reading(&mut self, quantity: String, what: Measure, value: f64, conditioning: Option<f64>) {
         self.readings.push(Reading {
             quantity,
+            what,
             value,
             conditioning: conditioning.map(f64::to_degrees),
         });
@@ -388,6 +410,7 @@ pub fn kin_plan(
         },
         readings: Vec::new(),
         coincident: Vec::new(),
+        cond: vec![None; n],
         known: Known {
             vel: vel.filter(|_| kind == PlanKind::Acceleration),
             mu_v: vel.map_or(1.0, |v| v.figure.scale.value()),
@@ -441,7 +464,8 @@ pub fn kin_plan(
             PlanKind::Velocity => format!("v_{}", plain(&prog.names[k])),
             PlanKind::Acceleration => format!("a_{}", plain(&prog.names[k])),
         };
-        bl.reading(q, v, None);
+        let cond = bl.cond[k];
+        bl.reading(q, Measure::Point(k), v, cond);
     }
     for l in 1..prog.link_count {
         if let Some(w) = bl.links.rate[l] {
@@ -449,7 +473,7 @@ pub fn kin_plan(
                 PlanKind::Velocity => format!("omega_{l}"),
                 PlanKind::Acceleration => format!("eps_{l}"),
             };
-            bl.reading(q, w, None);
+            bl.reading(q, Measure::Rate(l), w, None);
         }
     }
     let rate = bl.links.rate.iter().map(|r| r.unwrap_or(0.0)).collect();
@@ -508,7 +532,9 @@ impl Builder<'_> {
                 };
                 self.finish_link(i, &[(a, ai), (joint, x)], ri);
                 self.finish_link(j, &[(b, bi), (joint, x)], rj);
-                self.relative(joint, i, a, Some(cr));
+                let (x, ai) = (self.image(joint), self.image(a));
+                self.cond[joint] = Some(cr);
+                self.relative((joint, i), x, (a, i), ai, cr);
             }
             PDyad::Rrp {
                 a, guide, joint, ..
@@ -550,7 +576,9 @@ impl Builder<'_> {
                 self.finish_link(i, &[(a, ai), (joint, x)], ri);
                 let rk = self.rate(k);
                 self.finish_link(j, &[(joint, x)], rk);
-                self.relative(joint, i, a, Some(cr));
+                let (x, ai) = (self.image(joint), self.image(a));
+                self.cond[joint] = Some(cr);
+                self.relative((joint, i), x, (a, i), ai, cr);
             }
             PDyad::Rpr { a, c, .. } => {
                 let rc = self.r(c, a);
@@ -587,13 +615,7 @@ impl Builder<'_> {
                 self.links.add(j, self.b.p[a], x);
                 self.finish_link(i, &[(a, ai)], rj);
                 let owner_a = owner(self.prog, a);
-                self.relative_named(
-                    &an,
-                    x,
-                    &format!("{}{owner_a}", plain(self.name(a))),
-                    ai,
-                    Some(cr),
-                );
+                self.relative((a, j), x, (a, owner_a), ai, cr);
             }
             PDyad::Prp { gi, gj, joint } => {
                 let (k1, k2) = (self.guide_link(&gi), self.guide_link(&gj));
@@ -658,13 +680,7 @@ impl Builder<'_> {
                 self.finish_link(j, &[(joint, jx)], rk);
                 self.finish_link(i, &[(a, ai)], rk);
                 let owner_a = owner(self.prog, a);
-                self.relative_named(
-                    &an,
-                    x,
-                    &format!("{}{owner_a}", plain(self.name(a))),
-                    ai,
-                    Some(cr),
-                );
+                self.relative((a, j), x, (a, owner_a), ai, cr);
             }
         }
         Ok(())
@@ -717,23 +733,35 @@ impl Builder<'_> {
         self.lay("Coriolis component", from, ak, "k")
     }
 
-    /// Reading of the velocity of `joint` relative to the point `a` of link `i`.
-    fn relative(&mut self, joint: usize, _i: usize, a: usize, cr: Option<f64>) {
-        let (x, ai) = (self.image(joint), self.image(a));
-        let q = format!("{}_{}", plain(self.name(joint)), plain(self.name(a)));
-        self.relative_reading(&q, ai, x, cr);
-    }
-
-    fn relative_named(&mut self, p: &str, pi: DVec2, q: &str, qi: DVec2, cr: Option<f64>) {
-        self.relative_reading(&format!("{p}_{q}"), qi, pi, cr);
-    }
-
-    fn relative_reading(&mut self, pq: &str, from: DVec2, to: DVec2, cr: Option<f64>) {
-        let value = self.read(from, to);
-        let q = match self.kind {
+    /// Reading of the velocity (acceleration) of `p` carried by link `p.1` relative to `q`
+    /// carried by `q.1`: the plan segment from the image of `q` to the image of `p`.
+    fn relative(
+        &mut self,
+        p: (usize, usize),
+        p_img: DVec2,
+        q: (usize, usize),
+        q_img: DVec2,
+        cr: f64,
+    ) {
+        // Coincident points of a sliding pair carry their link's number (`B3_B1`).
+        let tag = |(k, l): (usize, usize)| {
+            let suffix = if p.0 == q.0 {
+                l.to_string()
+            } else {
+                String::new()
+            };
+            format!("{}{suffix}", plain(&self.prog.names[k]))
+        };
+        let pq = format!("{}_{}", tag(p), tag(q));
+        let value = self.read(q_img, p_img);
+        let quantity = match self.kind {
             PlanKind::Velocity => format!("v_{pq}"),
             PlanKind::Acceleration => format!("a_{pq}"),
         };
-        self.reading(q, value, cr);
+        self.cond_reading(quantity, Measure::Relative { p, q }, value, cr);
+    }
+
+    fn cond_reading(&mut self, quantity: String, what: Measure, value: f64, cr: f64) {
+        self.reading(quantity, what, value, Some(cr));
     }
 }

@@ -150,9 +150,9 @@ impl Report {
                 csv_field(&r.position),
                 csv_field(&r.unit),
                 r.method.key().to_string(),
-                r.graphical.to_string(),
-                r.analytic.to_string(),
-                r.abs_error().to_string(),
+                csv_value(r.graphical),
+                csv_value(r.analytic),
+                csv_value(r.abs_error()),
                 csv_number(rel),
                 csv_number(r.conditioning),
             ];
@@ -246,8 +246,18 @@ pub(crate) fn csv_field(s: &str) -> String {
     }
 }
 
+/// A number as JSON writes it (shortest round-trip form, exponent for very small or large
+/// magnitudes); `NaN`/`inf` literally.
+fn csv_value(x: f64) -> String {
+    if x.is_finite() {
+        serde_json::to_string(&x).unwrap_or_else(|_| x.to_string())
+    } else {
+        x.to_string()
+    }
+}
+
 fn csv_number(x: Option<f64>) -> String {
-    x.map(|x| x.to_string()).unwrap_or_default()
+    x.map(csv_value).unwrap_or_default()
 }
 
 /// Text for a Markdown table cell: `|` escaped, line breaks as spaces.

@@ -38,6 +38,40 @@ pub enum BuildError {
     Plate(#[from] PlateError),
 }
 
+/// The kinematic analysis a scene asks for, at its μ_l (or the textbook's choice for the crank).
+pub fn kin_request(
+    scene: &Scene,
+    drafting: Drafting,
+) -> Result<crate::kinematics::KinRequest, BuildError> {
+    let m = &scene.mechanism;
+    let scale_l = match scene.scale_l {
+        Some(s) => s,
+        None => {
+            crate::scale::Scale::round_for(m.crank.length, 50.0, crate::scale::Quantity::Length)
+                .ok_or_else(|| {
+                    LinkageError::Model(format!(
+                        "no drawing scale for the crank length {} m",
+                        m.crank.length
+                    ))
+                })?
+        }
+    };
+    Ok(crate::kinematics::KinRequest {
+        positions: positions::request(scene),
+        scale_l,
+        scale_v: None,
+        scale_a: None,
+        acceleration_positions: None,
+        diagram_point: None,
+        scale_s: None,
+        scale_phi: None,
+        pole_h1: None,
+        pole_h2: None,
+        hodograph: None,
+        drafting,
+    })
+}
+
 /// Build one plate of a scene.
 pub fn build(scene: &Scene, kind: PlateKind, opts: &RenderOptions) -> Result<Plate, BuildError> {
     match kind {

@@ -25,17 +25,22 @@ fn rect(r: (f64, f64, f64, f64)) -> Rect {
     Rect::new(DVec2::new(r.0, r.1), DVec2::new(r.2, r.3))
 }
 
-/// Build the plate.
-pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
-    let m = &scene.mechanism;
-    let req = PlanRequest {
+/// The positions a scene asks for.
+pub fn request(scene: &Scene) -> PlanRequest {
+    PlanRequest {
         count: scene.positions.count,
         start: match scene.positions.start {
             Start::WorkingStroke => None,
             Start::Angle(a) => Some(a),
         },
         other_extreme: scene.positions.other_extreme,
-    };
+    }
+}
+
+/// Build the plate.
+pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
+    let m = &scene.mechanism;
+    let req = request(scene);
     let region = rect(PLAN_REGION);
     let (scale, plan) = match scene.scale_l {
         Some(s) => (s, plan_positions(m, &req, s, opts.drafting)?),
