@@ -68,7 +68,7 @@ pub enum KinError {
         /// The group (file order, 1-based).
         group: usize,
         /// The diagnostic.
-        error: crate::construct::ConstructionError,
+        error: Box<crate::construct::ConstructionError>,
     },
     /// A diagram cannot be constructed.
     #[error("diagram of {what}: {error}")]
@@ -218,7 +218,7 @@ pub fn analyse(m: &Mechanism, req: &KinRequest) -> Result<Analysis, KinError> {
                     position: pos.label.clone(),
                     kind: "velocity",
                     group: group + 1,
-                    error,
+                    error: Box::new(error),
                 }
             })?;
         push_rows(&mut rows, &vp, &pos.pose, w1, &pos.label);
@@ -239,7 +239,7 @@ pub fn analyse(m: &Mechanism, req: &KinRequest) -> Result<Analysis, KinError> {
                 position: pos.label.clone(),
                 kind: "acceleration",
                 group: group + 1,
-                error,
+                error: Box::new(error),
             },
         )?;
         push_rows(&mut rows, &ap, &pos.pose, w1, &pos.label);

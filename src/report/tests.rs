@@ -148,7 +148,7 @@ fn csv_quotes_only_where_needed() {
         "quantity,position,unit,method,graphical,analytic,abs_error,rel_error,conditioning"
     );
     assert!(lines[1].starts_with("\"v_D, \"\"ram\"\"\",3,m/s,plan,2.25,2.5,0.25,-0.1,37.5"));
-    assert_eq!(lines[3], "v_D,8′,m/s,plan,0.001,0,0.001,,37.5");
+    assert_eq!(lines[3], "v_D,8′,m/s,plan,0.001,0.0,0.001,,37.5");
     assert_eq!(lines.len(), 7);
 }
 
