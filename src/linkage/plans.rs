@@ -727,7 +727,9 @@ impl Builder<'_> {
     fn coriolis(&mut self, link: usize, rel_from: DVec2, rel_to: DVec2, from: DVec2) -> DVec2 {
         let w = self.known.vel.map_or(0.0, |v| v.rate[link]);
         let ak = self.vel_between(rel_from, rel_to).perp() * (2.0 * w);
-        if ak.length() == 0.0 {
+        // Vanishes (no relative sliding, or the carrier does not turn) when it would be drawn
+        // shorter than the figure's coincidence tolerance.
+        if ak.length() / self.mu() <= self.rec.tolerances().coincident {
             return from;
         }
         self.lay("Coriolis component", from, ak, "k")
