@@ -130,6 +130,7 @@ fn main() -> Res<()> {
             view(rec3.finish()),
         ],
         texts,
+        tables: Vec::new(),
     };
     let svg = to_svg(&plate);
     write_atomic(Path::new("/tmp/calc_demo.svg"), svg.as_bytes())?;

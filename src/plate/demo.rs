@@ -265,5 +265,6 @@ pub fn demo_plate(lang: Lang) -> Result<Plate, PlateError> {
         lang,
         views,
         texts,
+        tables: Vec::new(),
     })
 }

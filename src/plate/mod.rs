@@ -19,6 +19,7 @@
 //!     lang: Lang::Ru,
 //!     views: Vec::new(),
 //!     texts: Vec::new(),
+//!     tables: Vec::new(),
 //! };
 //! let svg = to_svg(&plate);
 //! assert!(svg.contains(r#"width="420mm""#));
@@ -33,6 +34,7 @@ mod raster;
 mod sheet;
 mod style;
 mod svg;
+mod table;
 pub mod text;
 mod write;
 
@@ -47,6 +49,7 @@ pub use raster::{to_png, to_png_dpi};
 pub use sheet::{Sheet, SheetSize, TitleBlock};
 pub use style::Pen;
 pub use svg::{to_svg, FONT_FAMILY};
+pub use table::TableBlock;
 
 /// Formats an SVG coordinate the way every plate does (0.01 mm, no `-0`); for other writers
 /// of drawings in this crate.
@@ -166,6 +169,8 @@ pub struct Plate {
     pub views: Vec<View>,
     /// Free texts, drawn after the views.
     pub texts: Vec<TextBlock>,
+    /// Tables, drawn last.
+    pub tables: Vec<TableBlock>,
 }
 
 /// A plate that cannot be laid out or rendered.

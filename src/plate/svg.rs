@@ -54,6 +54,9 @@ pub fn to_svg(plate: &Plate) -> String {
         .map(Mark::Text)
         .collect();
     doc = doc.add(group("texts", texts));
+    for (k, table) in plate.tables.iter().enumerate() {
+        doc = doc.add(group(&format!("table-{k}"), super::table::table_marks(table)));
+    }
     format!("{doc}\n")
 }
 

@@ -35,6 +35,7 @@ fn plate(sheet: Sheet, lang: Lang, views: Vec<View>) -> Plate {
         lang,
         views,
         texts: vec![],
+        tables: vec![],
     }
 }
 

@@ -98,6 +98,7 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
         lang,
         views,
         texts,
+        tables: Vec::new(),
     })
 }
 
