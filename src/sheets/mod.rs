@@ -1,5 +1,6 @@
 //! Sheets: the plates a scene asks for, composed from the domain figures on ГОСТ sheets.
 
+mod kinematics;
 mod positions;
 
 use crate::construct::Drafting;
@@ -33,6 +34,9 @@ pub enum BuildError {
     /// A construction failed.
     #[error(transparent)]
     Linkage(#[from] LinkageError),
+    /// The kinematic analysis failed.
+    #[error(transparent)]
+    Kinematics(Box<crate::kinematics::KinError>),
     /// The drawing does not fit the sheet.
     #[error(transparent)]
     Plate(#[from] PlateError),

@@ -1,0 +1,226 @@
+//! Plate "Кинематический анализ" (the textbook's sheet 1): the plan of positions, a velocity
+//! plan for every position, the acceleration plans, the displacement diagram with its two
+//! chord-method derivatives, the hodograph, the analytic table and the error estimates.
+//! Every group of views has its own field; its μ is raised along the textbook series until
+//! the drawings fit (the captions state the μ actually used).
+
+use super::{kin_request, BuildError, RenderOptions};
+use crate::construct::Figure;
+use crate::geom::DVec2;
+use crate::kinematics::{analyse, Analysis, KinError, KinRequest};
+use crate::plate::{Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM};
+use crate::report::{Method, Report};
+use crate::scale::{format_sig, Lang, Quantity, Scale};
+use crate::scene::Scene;
+
+/// The fields of the A1 sheet, sheet mm (x0, y0, x1, y1), y down.
+const PLAN: [f64; 4] = [25.0, 22.0, 290.0, 300.0];
+const VELOCITY: [f64; 4] = [295.0, 22.0, 560.0, 420.0];
+const DIAGRAMS: [f64; 4] = [565.0, 22.0, 832.0, 300.0];
+const ACCELERATION: [f64; 4] = [565.0, 305.0, 832.0, 528.0];
+const HODOGRAPH: [f64; 4] = [25.0, 305.0, 290.0, 420.0];
+const TABLES_AT: (f64, f64) = (28.0, 432.0);
+/// Columns of velocity plans.
+const VEL_COLUMNS: usize = 3;
+/// Room around a plan's drawing for its labels, mm.
+const LABEL_MARGIN: f64 = 8.0;
+
+fn rect(r: [f64; 4]) -> Rect {
+    Rect::new(DVec2::new(r[0], r[1]), DVec2::new(r[2], r[3]))
+}
+
+fn size_of(f: &Figure) -> DVec2 {
+    f.bounds().map_or(DVec2::ZERO, |(lo, hi)| hi - lo) + DVec2::splat(LABEL_MARGIN)
+}
+
+/// How much a set of figures overflows cells of `cell` size (≤ 1: fits).
+fn overflow(figs: &[&Figure], cell: DVec2) -> f64 {
+    let room = cell - DVec2::new(0.0, CAPTION_BAND_MM);
+    figs.iter().map(|f| size_of(f)).fold(0.0f64, |m, s| m.max(s.x / room.x).max(s.y / room.y))
+}
+
+/// The next round scale at least `ratio` times larger.
+fn bump(s: Scale, ratio: f64) -> Option<Scale> {
+    Scale::round_for(s.value() * ratio.max(1.0001), 1.0, s.quantity)
+}
+
+/// Grid cells of `n` views in `r` with `cols` columns.
+fn cells(r: Rect, n: usize, cols: usize) -> Vec<Rect> {
+    let cols = cols.max(1);
+    let rows = n.div_ceil(cols).max(1);
+    let (w, h) = (r.width() / cols as f64, r.height() / rows as f64);
+    (0..n)
+        .map(|k| {
+            let (c, row) = ((k % cols) as f64, (k / cols) as f64);
+            Rect::new(r.min + DVec2::new(c * w, row * h), r.min + DVec2::new((c + 1.0) * w, (row + 1.0) * h))
+        })
+        .collect()
+}
+
+fn vel_cell(n: usize) -> DVec2 {
+    let r = rect(VELOCITY);
+    let rows = n.div_ceil(VEL_COLUMNS).max(1);
+    DVec2::new(r.width() / VEL_COLUMNS as f64, r.height() / rows as f64)
+}
+
+fn acc_cell(n: usize) -> DVec2 {
+    let r = rect(ACCELERATION);
+    DVec2::new(r.width() / n.max(1) as f64, r.height())
+}
+
+/// Run the analysis, raising the scales of whatever does not fit its field.
+fn fitted(m: &crate::linkage::Mechanism, mut req: KinRequest) -> Result<(KinRequest, Analysis), BuildError> {
+    let fail = |e: KinError| BuildError::Kinematics(Box::new(e));
+    for _ in 0..8 {
+        let a = analyse(m, &req).map_err(fail)?;
+        let mut changed = false;
+        let plan_over = overflow(&[&a.plan.figure], rect(PLAN).max - rect(PLAN).min);
+        if plan_over > 1.0 {
+            req.scale_l = bump(req.scale_l, plan_over).unwrap_or(req.scale_l);
+            changed = true;
+        }
+        let vel: Vec<&Figure> = a.velocity.iter().map(|p| &p.figure).collect();
+        let mut v_over = overflow(&vel, vel_cell(vel.len()));
+        if let Some((_, h)) = &a.hodograph {
+            v_over = v_over.max(overflow(&[h], rect(HODOGRAPH).max - rect(HODOGRAPH).min));
+        }
+        if v_over > 1.0 {
+            req.scale_v = bump(a.scale_v, v_over);
+            changed = true;
+        }
+        let acc: Vec<&Figure> = a.acceleration.iter().map(|p| &p.1.figure).collect();
+        let a_over = overflow(&acc, acc_cell(acc.len()));
+        if a_over > 1.0 {
+            req.scale_a = bump(a.scale_a, a_over);
+            changed = true;
+        }
+        if let Some(d) = &a.diagrams {
+            let r = rect(DIAGRAMS);
+            let half = DVec2::new(r.width(), r.height() * 0.62);
+            let rest = DVec2::new(r.width(), r.height() * 0.38);
+            let over = overflow(&[&d.first_figure], half).max(overflow(&[&d.second_figure], rest));
+            if over > 1.0 {
+                req.scale_s = bump(d.scales.y, over);
+                req.scale_phi = Scale::new(d.scales.x.value() * over.min(4.0) * 1.01, Quantity::Angle);
+                changed = true;
+            }
+        }
+        if !changed {
+            return Ok((req, a));
+        }
+    }
+    Err(BuildError::Kinematics(Box::new(KinError::Request("the kinematic sheet cannot be fitted on A1".into()))))
+}
+
+/// Build the plate.
+pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
+    let lang = opts.lang;
+    let (req, a) = fitted(&scene.mechanism, kin_request(scene, opts.drafting)?)?;
+    let mut views = Vec::new();
+    let cap = |ru: &str, uk: &str, en: &str, s: Scale| format!("{}, {}", lang.pick(ru, uk, en), s.caption(lang));
+    views.push(View::centred(a.plan.figure.clone(), rect(PLAN), Some(cap("План положений", "План положень", "Plan of positions", req.scale_l)))?);
+    let n = a.velocity.len();
+    for ((pos, vp), cell) in a.plan.positions.iter().zip(&a.velocity).zip(cells(rect(VELOCITY), n, VEL_COLUMNS)) {
+        let c = format!("{} {}", lang.pick("Пол.", "Пол.", "Pos."), pos.label);
+        views.push(View::centred(vp.figure.clone(), cell, Some(c))?);
+    }
+    for ((k, ap), cell) in a.acceleration.iter().zip(cells(rect(ACCELERATION), a.acceleration.len(), a.acceleration.len())) {
+        let label = &a.plan.positions[*k].label;
+        let c = format!("{} {label}, {}", lang.pick("План ускорений, пол.", "План прискорень, пол.", "Acceleration plan, pos."), a.scale_a.caption(lang));
+        views.push(View::centred(ap.figure.clone(), cell, Some(c))?);
+    }
+    let mut lines = vec![format!("{}: {}", lang.pick("Планы скоростей", "Плани швидкостей", "Velocity plans"), a.scale_v.caption(lang))];
+    if let Some(d) = &a.diagrams {
+        let r = rect(DIAGRAMS);
+        let split = r.min.y + r.height() * 0.62;
+        let w = a.w1.abs();
+        let mu_v = d.first.scale.value() * w;
+        let mu_a = d.second.scale.value() * w * w;
+        let dec = |x: f64| format_sig(x, 4, lang);
+        let c1 = format!("S, dS/dφ: μ_{{S}} = {} {}, μ_{{φ}} = {} {}, H_{{1}} = {} {}", dec(d.scales.y.value()), unit(lang, "м/мм", "m/mm"), dec(d.scales.x.value()), unit(lang, "рад/мм", "rad/mm"), dec(d.first.pole_mm), unit(lang, "мм", "mm"));
+        let c2 = format!("d²S/dφ²: H_{{2}} = {} {}", dec(d.second.pole_mm), unit(lang, "мм", "mm"));
+        views.push(View::centred(d.first_figure.clone(), Rect::new(r.min, DVec2::new(r.max.x, split)), Some(c1))?);
+        views.push(View::centred(d.second_figure.clone(), Rect::new(DVec2::new(r.min.x, split), r.max), Some(c2))?);
+        lines.push(format!("{} {}: μ_{{v}} = μ_{{S}}·ω_{{1}}/(H_{{1}}·μ_{{φ}}) = {} {}, μ_{{a}} = {} {}", lang.pick("Диаграммы точки", "Діаграми точки", "Diagrams of point"), d.point, dec(mu_v), Quantity::Velocity.unit(lang), dec(mu_a), Quantity::Acceleration.unit(lang)));
+    }
+    if let Some((name, h)) = &a.hodograph {
+        let c = format!("{} {name}, {}", lang.pick("Годограф скорости точки", "Годограф швидкості точки", "Velocity hodograph of"), a.scale_v.caption(lang));
+        views.push(View::centred(h.clone(), rect(HODOGRAPH), Some(c))?);
+    }
+    let texts = vec![TextBlock { at: DVec2::new(VELOCITY[0] + 2.0, VELOCITY[3] + 2.0), lines, size_mm: 3.5 }];
+    let tables = tables(&a, scene, lang);
+    let index = scene.plates.iter().position(|k| *k == crate::scene::PlateKind::Kinematics).unwrap_or(0);
+    Ok(Plate {
+        name: "kinematics".into(),
+        sheet: Sheet { size: SheetSize::A1, landscape: true },
+        title_block: TitleBlock {
+            title: scene.title.title.clone(),
+            sheet_title: lang.pick("Кинематический анализ", "Кінематичний аналіз", "Kinematic analysis").into(),
+            designation: scene.title.designation.clone(),
+            author: scene.title.author.clone(),
+            checked: scene.title.checked.clone(),
+            organisation: scene.title.organisation.clone(),
+            scale: String::new(),
+            sheet_no: index as u32 + 1,
+            sheets: scene.plates.len() as u32,
+        },
+        lang,
+        views,
+        texts,
+        tables,
+    })
+}
+
+fn unit(lang: Lang, ru: &'static str, en: &'static str) -> &'static str {
+    lang.pick(ru, ru, en)
+}
+
+/// The analytic table and the error estimates (section 1.6 of the seed), side by side.
+fn tables(a: &Analysis, scene: &Scene, lang: Lang) -> Vec<TableBlock> {
+    let size = 2.5;
+    let t = &a.table;
+    let pos_w = 9.0;
+    let avail = 615.0 - 150.0;
+    let col_w = (avail - pos_w) / t.columns.len().max(1) as f64;
+    let col_w = col_w.clamp(11.0, 22.0);
+    let shown = (((avail - pos_w) / col_w) as usize).min(t.columns.len());
+    let mut columns = vec![("№".to_string(), pos_w)];
+    columns.extend(t.columns.iter().take(shown).map(|c| (format!("{}, {}", c.name, c.unit), col_w)));
+    let rows = t
+        .rows
+        .iter()
+        .map(|(label, vals)| std::iter::once(label.clone()).chain(vals.iter().take(shown).map(|v| v.map_or(String::new(), |x| format_sig(x, 4, lang)))).collect())
+        .collect();
+    let analytic = TableBlock {
+        at: DVec2::new(TABLES_AT.0, TABLES_AT.1 + 4.0),
+        title: lang.pick("Аналитический расчёт", "Аналітичний розрахунок", "Analytic solution").into(),
+        columns,
+        rows,
+        size_mm: size,
+    };
+    let report = Report { scene: scene.stem.clone(), rows: a.rows.clone(), tables: Vec::new() };
+    let summary = report.summary();
+    let method = |m: Method| m.name(lang).to_string();
+    let err_rows: Vec<Vec<String>> = summary
+        .entries
+        .iter()
+        .filter(|e| e.quantity.starts_with("v_") || e.quantity.starts_with("a_") || e.quantity.starts_with("omega") || e.quantity.starts_with("eps"))
+        .take(22)
+        .map(|e| vec![e.quantity.replace('_', " "), method(e.method), format_sig(e.mean_abs_rel * 100.0, 3, lang), format_sig(e.max_abs_rel * 100.0, 3, lang), e.worst_position.clone()])
+        .collect();
+    let x = TABLES_AT.0 + analytic.size().x + 8.0;
+    let errors = TableBlock {
+        at: DVec2::new(x, TABLES_AT.1 + 4.0),
+        title: lang.pick("Оценка погрешности (графически / аналитически)", "Оцінка похибки (графічно / аналітично)", "Errors (graphical / analytic)").into(),
+        columns: vec![
+            (lang.pick("величина", "величина", "quantity").into(), 24.0),
+            (lang.pick("метод", "метод", "method").into(), 20.0),
+            ("δ ср., %".into(), 16.0),
+            ("δ max, %".into(), 16.0),
+            (lang.pick("пол.", "пол.", "pos.").into(), 10.0),
+        ],
+        rows: err_rows,
+        size_mm: size,
+    };
+    vec![analytic, errors]
+}
