@@ -42,5 +42,8 @@ pub enum BuildError {
 pub fn build(scene: &Scene, kind: PlateKind, opts: &RenderOptions) -> Result<Plate, BuildError> {
     match kind {
         PlateKind::Positions => positions::build(scene, opts),
+        PlateKind::Kinematics => Err(BuildError::Linkage(LinkageError::Model(
+            "the kinematics plate is not built yet".into(),
+        ))),
     }
 }
