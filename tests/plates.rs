@@ -121,6 +121,7 @@ plates! {
     shaper_positions: "shaper" / "positions",
     slider_crank_positions: "slider-crank" / "positions",
     four_bar_positions: "four-bar" / "positions",
+    tangent_positions: "tangent" / "positions",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

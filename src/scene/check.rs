@@ -2,6 +2,7 @@
 //! checked once with the key path it came from.
 
 use super::error::Problem;
+use crate::scale::{Quantity, Scale};
 
 /// Metres per millimetre.
 const M_PER_MM: f64 = 1e-3;
@@ -105,6 +106,33 @@ impl Checker {
         } else {
             self.bad(key, v, expected)
         }
+    }
+
+    /// An optional scale μ of `quantity` (finite and > 0), or a problem and `None`;
+    /// `expected` names it with its unit (`a scale μ_l > 0 m/mm`).
+    pub fn scale(
+        &mut self,
+        key: &str,
+        v: Option<f64>,
+        quantity: Quantity,
+        expected: &str,
+    ) -> Option<Scale> {
+        let v = v?;
+        let scale = Scale::new(v, quantity);
+        if scale.is_none() {
+            self.bad(key, v, expected);
+        }
+        scale
+    }
+
+    /// An optional positive finite number (no unit conversion), or a problem and `None`.
+    pub fn positive_opt(&mut self, key: &str, v: Option<f64>, expected: &str) -> Option<f64> {
+        let v = v?;
+        let ok = v.is_finite() && v > 0.0;
+        if !ok {
+            self.bad(key, v, expected);
+        }
+        ok.then_some(v)
     }
 
     /// Report `key = v: expected …` and return the placeholder 0.

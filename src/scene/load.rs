@@ -1,7 +1,8 @@
 //! Reading a scene file: TOML → raw structs → one validation pass → [`Scene`].
 
-use super::check::{item, number, quoted, Checker};
+use super::check::{item, quoted, Checker};
 use super::error::SceneError;
+use super::kinematics::kinematics;
 use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
 use super::structure::mechanism;
@@ -41,6 +42,12 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let scale_l = scale_l(&mut check, raw.mechanism.as_ref().and_then(|m| m.scale_l));
     let positions = positions(&mut check, raw.positions.unwrap_or_default());
     let plates = plates(&mut check, raw.plates.unwrap_or_default());
+    let kinematics = kinematics(
+        &mut check,
+        raw.kinematics.unwrap_or_default(),
+        mechanism.as_ref(),
+        positions.count,
+    );
     match mechanism {
         Some(mechanism) if check.problems.is_empty() => Ok(Scene {
             path: path.to_path_buf(),
@@ -50,6 +57,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             scale_l,
             positions,
             plates,
+            kinematics,
         }),
         _ => Err(SceneError::Invalid {
             path: path.to_path_buf(),
@@ -66,21 +74,18 @@ fn title(task: RawTask, stem: &str) -> TitleInfo {
         author: task.author.unwrap_or_default(),
         checked: task.checked.unwrap_or_default(),
         organisation: task.organisation.unwrap_or_default(),
+        note: task.note.unwrap_or_default(),
     }
 }
 
 /// `mechanism.scale_l`, m/mm, optional.
 fn scale_l(check: &mut Checker, v: Option<f64>) -> Option<Scale> {
-    let v = v?;
-    let scale = Scale::new(v, Quantity::Length);
-    if scale.is_none() {
-        check.push(
-            "mechanism.scale_l",
-            Some(number(v)),
-            "expected a scale μ_l > 0 m/mm",
-        );
-    }
-    scale
+    check.scale(
+        "mechanism.scale_l",
+        v,
+        Quantity::Length,
+        "a scale μ_l > 0 m/mm",
+    )
 }
 
 /// `[positions]`.

@@ -2,6 +2,7 @@
 
 mod check;
 mod error;
+mod kinematics;
 mod load;
 mod model;
 mod raw;
@@ -9,7 +10,7 @@ mod structure;
 
 pub use error::{Problem, SceneError};
 pub use load::{load, parse};
-pub use model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
+pub use model::{KinematicsSpec, PlateKind, PositionSpec, Scene, Start, TitleInfo};
 
 #[cfg(test)]
 mod tests;

@@ -29,6 +29,9 @@ pub struct PositionSpec {
 pub enum PlateKind {
     /// "План положений": structural scheme, positions, trajectories, extremes.
     Positions,
+    /// Kinematic analysis: velocity and acceleration plans, the displacement chart and its
+    /// graphical derivatives, a hodograph.
+    Kinematics,
 }
 
 impl PlateKind {
@@ -36,15 +39,42 @@ impl PlateKind {
     pub fn stem(self) -> &'static str {
         match self {
             PlateKind::Positions => "positions",
+            PlateKind::Kinematics => "kinematics",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 1] = [PlateKind::Positions];
+    pub const ALL: [PlateKind; 2] = [PlateKind::Positions, PlateKind::Kinematics];
 
     /// Parse a stem.
     pub fn parse(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|k| k.stem() == s)
     }
+}
+
+/// The `[kinematics]` section: scales and choices of the kinematic analysis. Every field is
+/// optional; `None` leaves the choice to the analysis.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct KinematicsSpec {
+    /// μ_v of the velocity plans, (m/s)/mm.
+    pub scale_v: Option<Scale>,
+    /// μ_a of the acceleration plans, (m/s²)/mm.
+    pub scale_a: Option<Scale>,
+    /// The positions whose acceleration plans are drawn, by label (`"3"`, `"8′"`); 1–4
+    /// entries. A numbered label is at most the position count; a primed (extreme) label is
+    /// checked against the plan of positions when it exists.
+    pub acceleration_positions: Option<Vec<String>>,
+    /// The point whose displacement S(φ₁) is charted and differentiated (`S_5`).
+    pub diagram_point: Option<String>,
+    /// μ_S of the displacement chart, m/mm.
+    pub scale_s: Option<Scale>,
+    /// μ_φ of the crank-angle axis of the charts, rad/mm.
+    pub scale_phi: Option<Scale>,
+    /// Pole distance H₁ of the first graphical differentiation, drawing mm.
+    pub pole_h1: Option<f64>,
+    /// Pole distance H₂ of the second graphical differentiation, drawing mm.
+    pub pole_h2: Option<f64>,
+    /// The point whose velocity hodograph is drawn (`S_3`).
+    pub hodograph: Option<String>,
 }
 
 /// Text of the title block (основная надпись), as the student fills it.
@@ -60,6 +90,8 @@ pub struct TitleInfo {
     pub checked: String,
     /// Institution / group.
     pub organisation: String,
+    /// A remark on the task's source (a reconstructed layout, say); not drawn.
+    pub note: String,
 }
 
 /// A validated scene file.
@@ -79,4 +111,6 @@ pub struct Scene {
     pub positions: PositionSpec,
     /// The plates wanted, in file order.
     pub plates: Vec<PlateKind>,
+    /// The `[kinematics]` choices (all `None` when the section is absent).
+    pub kinematics: KinematicsSpec,
 }

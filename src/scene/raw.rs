@@ -13,6 +13,7 @@ pub(crate) struct RawScene {
     pub mechanism: Option<RawMechanism>,
     pub positions: Option<RawPositions>,
     pub plates: Option<RawPlates>,
+    pub kinematics: Option<RawKinematics>,
 }
 
 /// `[task]`: the title block.
@@ -24,6 +25,7 @@ pub(crate) struct RawTask {
     pub author: Option<String>,
     pub checked: Option<String>,
     pub organisation: Option<String>,
+    pub note: Option<String>,
 }
 
 /// `[mechanism]`.
@@ -172,6 +174,21 @@ pub(crate) enum RawStart {
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawPlates {
     pub wanted: Option<Vec<String>>,
+}
+
+/// `[kinematics]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawKinematics {
+    pub scale_v: Option<f64>,
+    pub scale_a: Option<f64>,
+    pub acceleration_positions: Option<Vec<String>>,
+    pub diagram: Option<String>,
+    pub scale_s: Option<f64>,
+    pub scale_phi: Option<f64>,
+    pub pole_h1: Option<f64>,
+    pub pole_h2: Option<f64>,
+    pub hodograph: Option<String>,
 }
 
 impl fmt::Display for RawDir {

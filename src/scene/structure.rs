@@ -69,6 +69,10 @@ pub(crate) fn mechanism(check: &mut Checker, raw: Option<&RawMechanism>) -> Opti
     let fixed = b.fixed(raw);
     let crank = b.crank(raw.crank.as_ref());
     b.points = b.link_points(&raw.point);
+    // The crank was attached before its points were read: release them now.
+    if let Some(c) = &crank {
+        b.release(c.link);
+    }
     let groups = b.groups(&raw.group);
     b.unattached_points();
     let redundant = b.redundant(raw);
@@ -268,6 +272,11 @@ impl Builder<'_> {
             return;
         }
         self.links.push((link, key));
+        self.release(link);
+    }
+
+    /// Make the points of `link` known.
+    fn release(&mut self, link: u32) {
         let released: Vec<String> = self
             .points
             .iter()

@@ -80,5 +80,8 @@ pub fn kin_request(
 pub fn build(scene: &Scene, kind: PlateKind, opts: &RenderOptions) -> Result<Plate, BuildError> {
     match kind {
         PlateKind::Positions => positions::build(scene, opts),
+        PlateKind::Kinematics => Err(BuildError::Linkage(LinkageError::Model(
+            "the kinematics plate is not built yet".into(),
+        ))),
     }
 }
