@@ -60,18 +60,19 @@ pub fn kin_request(
                 })?
         }
     };
+    let k = &scene.kinematics;
     Ok(crate::kinematics::KinRequest {
         positions: positions::request(scene),
         scale_l,
-        scale_v: None,
-        scale_a: None,
-        acceleration_positions: None,
-        diagram_point: None,
-        scale_s: None,
-        scale_phi: None,
-        pole_h1: None,
-        pole_h2: None,
-        hodograph: None,
+        scale_v: k.scale_v,
+        scale_a: k.scale_a,
+        acceleration_positions: k.acceleration_positions.clone(),
+        diagram_point: k.diagram_point.clone(),
+        scale_s: k.scale_s,
+        scale_phi: k.scale_phi,
+        pole_h1: k.pole_h1,
+        pole_h2: k.pole_h2,
+        hodograph: k.hodograph.clone(),
         drafting,
     })
 }
@@ -80,8 +81,6 @@ pub fn kin_request(
 pub fn build(scene: &Scene, kind: PlateKind, opts: &RenderOptions) -> Result<Plate, BuildError> {
     match kind {
         PlateKind::Positions => positions::build(scene, opts),
-        PlateKind::Kinematics => Err(BuildError::Linkage(LinkageError::Model(
-            "the kinematics plate is not built yet".into(),
-        ))),
+        PlateKind::Kinematics => kinematics::build(scene, opts),
     }
 }
