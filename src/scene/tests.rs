@@ -357,3 +357,158 @@ fn unreadable_file_is_reported() {
         &["constructions/no-such.toml: cannot read the scene"],
     );
 }
+
+#[test]
+fn shaper_kinematics_load() {
+    let k = loaded("shaper.toml").kinematics;
+    let value = |s: Option<crate::scale::Scale>| s.map(|s| s.value());
+    assert_eq!(value(k.scale_v), Some(0.05));
+    assert_eq!(value(k.scale_a), Some(1.0));
+    assert_eq!(value(k.scale_s), Some(0.005));
+    assert_eq!(value(k.scale_phi), Some(0.052));
+    assert_eq!(
+        k.scale_v.map(|s| s.quantity),
+        Some(crate::scale::Quantity::Velocity)
+    );
+    assert_eq!(
+        k.acceleration_positions,
+        Some(vec!["3".to_string(), "10".to_string()])
+    );
+    assert_eq!(k.pole_h1, Some(28.0));
+    assert_eq!(k.pole_h2, Some(7.5));
+    assert_eq!(k.diagram_point.as_deref(), Some("S_5"));
+    assert_eq!(k.hodograph.as_deref(), Some("S_3"));
+}
+
+#[test]
+fn kinematics_defaults_to_none() {
+    assert_eq!(
+        loaded("four-bar.toml").kinematics,
+        KinematicsSpec::default()
+    );
+}
+
+#[test]
+fn ascii_prime_is_normalised() {
+    let text = shaper_text().replacen(
+        "acceleration_positions = [\"3\", \"10\"]",
+        "acceleration_positions = [\"8'\", \"10\"]",
+        1,
+    );
+    let s = parse(&text, Path::new("x.toml")).map_err(|e| e.to_string());
+    let labels = s.map(|s| s.kinematics.acceleration_positions);
+    assert_eq!(labels, Ok(Some(vec!["8′".to_string(), "10".to_string()])));
+}
+
+#[test]
+fn bad_kinematics_values_are_refused_by_key() {
+    let cases = [
+        (
+            "scale_v = 0.05",
+            "scale_v = 0.0",
+            "kinematics.scale_v = 0: expected a scale μ_v > 0",
+        ),
+        (
+            "pole_h1 = 28.0",
+            "pole_h1 = nan",
+            "kinematics.pole_h1 = nan: expected a pole distance H₁ > 0 mm",
+        ),
+        (
+            "scale_phi = 0.052",
+            "scale_phi = inf",
+            "kinematics.scale_phi = inf: expected a scale μ_φ > 0",
+        ),
+        (
+            "acceleration_positions = [\"3\", \"10\"]",
+            "acceleration_positions = [\"3\", \"13\"]",
+            "kinematics.acceleration_positions[1] = \"13\": expected a position label from \"1\" to \"12\"",
+        ),
+        (
+            "acceleration_positions = [\"3\", \"10\"]",
+            "acceleration_positions = [\"1\", \"2\", \"3\", \"4\", \"5\"]",
+            "kinematics.acceleration_positions = [\"1\", \"2\", \"3\", \"4\", \"5\"]: expected 1 to 4",
+        ),
+        (
+            "acceleration_positions = [\"3\", \"10\"]",
+            "acceleration_positions = []",
+            "kinematics.acceleration_positions = []: expected 1 to 4",
+        ),
+        (
+            "diagram = \"S_5\"",
+            "diagram = \"Z\"",
+            "kinematics.diagram = \"Z\": expected a point of the mechanism",
+        ),
+        (
+            "hodograph = \"S_3\"",
+            "hodograph = \"\"",
+            "kinematics.hodograph = \"\": expected a point of the mechanism",
+        ),
+    ];
+    for (from, to, want) in cases {
+        assert_names(&shaper_error(from, to), &[want]);
+    }
+    let msg = shaper_error("pole_h2 = 7.5", "pole_h3 = 7.5");
+    assert_names(&msg, &["kinematics.pole_h3", "unknown field"]);
+}
+
+#[test]
+fn kinematics_plate_kind_parses() {
+    assert_eq!(PlateKind::parse("kinematics"), Some(PlateKind::Kinematics));
+    assert_eq!(PlateKind::Kinematics.stem(), "kinematics");
+    assert!(PlateKind::ALL.contains(&PlateKind::Kinematics));
+    let text = shaper_text().replacen(
+        "wanted = [\"positions\"]",
+        "wanted = [\"positions\", \"kinematics\"]",
+        1,
+    );
+    let s = parse(&text, Path::new("x.toml")).map(|s| s.plates);
+    assert_eq!(
+        s.ok(),
+        Some(vec![PlateKind::Positions, PlateKind::Kinematics])
+    );
+}
+
+#[test]
+fn six_bar_loads() {
+    let s = loaded("six-bar.toml");
+    let m = &s.mechanism;
+    assert_eq!(m.crank.sense, Sense::Clockwise);
+    assert!(close(m.crank.omega, 100.0 * PI / 30.0));
+    assert_eq!(m.groups[0].dyad.kind(), crate::linkage::DyadKind::Rrr);
+    assert_eq!(m.groups[1].dyad.kind(), crate::linkage::DyadKind::Rrp);
+    let c = &m.points[0];
+    assert_eq!((c.name.as_str(), c.link), ("C", 3));
+    assert!((c.along - 0.65 / 3.0).abs() < 1e-12);
+    assert!((c.across + 0.05 * 56f64.sqrt() / 3.0).abs() < 1e-12);
+    assert_eq!(s.positions.start, Start::Angle(-PI / 6.0));
+    assert!(s.title.note.contains("реконструир"));
+    assert_eq!(s.kinematics.diagram_point.as_deref(), Some("E"));
+    assert_eq!(
+        s.kinematics.acceleration_positions,
+        Some(vec!["1".to_string()])
+    );
+}
+
+#[test]
+fn tangent_loads_with_a_crank_point_in_a_direction() {
+    let s = loaded("tangent.toml");
+    let m = &s.mechanism;
+    let Dyad::Prp {
+        guide_i, guide_j, ..
+    } = &m.groups[0].dyad
+    else {
+        panic!("group 1 should be PRP");
+    };
+    assert_eq!(guide_i.through, "A");
+    assert_eq!(
+        guide_i.dir,
+        Dir::Along {
+            from: "K".into(),
+            to: "A".into(),
+            angle: 0.0
+        }
+    );
+    assert!(close(guide_j.offset, -0.2));
+    assert_eq!(guide_j.dir, Dir::Fixed(PI / 2.0));
+    assert_eq!(s.positions.start, Start::Angle(15f64.to_radians()));
+}
