@@ -5,7 +5,7 @@
 //! off a drawing, the analytic twin and the error (the rows of `tmm report`).
 
 use crate::calculus::{self, Derivative, Diagram, Layout, Scales};
-use crate::construct::{Drafting, Figure, Item, Recorder, Role};
+use crate::construct::{ConstructionError, Drafting, Figure, Item, Recorder, Role};
 use crate::geom::{DVec2, Tolerances};
 use crate::linkage::{
     kin_plan, plan_positions, KinPlan, LinkageError, Measure, Mechanism, Output, PlanKind,
@@ -19,7 +19,11 @@ use thiserror::Error;
 /// Preferred drawn length of the crank pin's velocity and acceleration, mm (textbook 70–100).
 const PLAN_MM: f64 = 70.0;
 /// Preferred height of a diagram, mm.
-const DIAGRAM_MM: f64 = 45.0;
+const DIAGRAM_MM: f64 = 35.0;
+/// Gap between stacked diagrams, mm.
+const DIAGRAM_GAP: f64 = 16.0;
+/// Length of the longest hodograph vector, mm.
+const HODOGRAPH_MM: f64 = 45.0;
 /// Abscissa of one crank turn on a diagram when μ_φ is not given, mm.
 const TURN_MM: f64 = 240.0;
 
@@ -92,8 +96,11 @@ pub struct Diagrams {
     pub scales: Scales,
     /// The displacement diagram and the first derivative, drawn together.
     pub first_figure: Figure,
-    /// The second derivative.
+    /// The second derivative; its figure's origin lies at `second_at` of the first figure
+    /// (on the dS/dφ axes, where its chords are drawn).
     pub second_figure: Figure,
+    /// Where the second figure's origin lies in the first figure's coordinates, mm.
+    pub second_at: DVec2,
     /// dS/dφ₁ by chords.
     pub first: Derivative,
     /// d²S/dφ₁² by chords.
@@ -113,8 +120,9 @@ pub struct Analysis {
     pub scale_v: Scale,
     /// μ_a.
     pub scale_a: Scale,
-    /// One velocity plan per position of the plan, same order.
-    pub velocity: Vec<KinPlan>,
+    /// One velocity plan per position of the plan, same order; `None` where it does not exist
+    /// (a dyad at its toggle position, see `refused`).
+    pub velocity: Vec<Option<KinPlan>>,
     /// Acceleration plans: (index into the positions, plan).
     pub acceleration: Vec<(usize, KinPlan)>,
     /// The diagrams, when the mechanism has a point to chart.
@@ -125,6 +133,8 @@ pub struct Analysis {
     pub rows: Vec<Row>,
     /// The analytic table (the shape of seed 000 Table 5).
     pub table: Table,
+    /// Positions whose velocity plan is refused, with the diagnosis.
+    pub refused: Vec<(String, String)>,
 }
 
 fn tol() -> Tolerances {
@@ -179,6 +189,13 @@ fn analytic(pose: &Pose, w1: f64, what: Measure, kind: PlanKind) -> f64 {
     }
 }
 
+/// Lowest and highest drawn ordinate (mm) of physical values at scale `mu`, with 0 included.
+fn extent<'a>(values: impl Iterator<Item = &'a f64>, mu: Scale) -> (f64, f64) {
+    values.fold((0.0f64, 0.0f64), |(lo, hi), v| {
+        (lo.min(v / mu.value()), hi.max(v / mu.value()))
+    })
+}
+
 fn unit_of(quantity: &str) -> &'static str {
     match quantity.split('_').next() {
         Some("v") => "m/s",
@@ -203,6 +220,7 @@ pub fn analyse(m: &Mechanism, req: &KinRequest) -> Result<Analysis, KinError> {
     let scale_a = pick(req.scale_a, w * w * r, Quantity::Acceleration)?;
     let mu_l = req.scale_l.value();
     let mut velocity = Vec::with_capacity(plan.positions.len());
+    let mut refused = Vec::new();
     let mut rows = Vec::new();
     for pos in &plan.positions {
         let setup = PlanSetup {
@@ -212,21 +230,35 @@ pub fn analyse(m: &Mechanism, req: &KinRequest) -> Result<Analysis, KinError> {
             w1,
             drafting: req.drafting,
         };
-        let vp =
-            kin_plan(&setup, PlanKind::Velocity, scale_v, None).map_err(|(group, error)| {
-                KinError::Plan {
+        match kin_plan(&setup, PlanKind::Velocity, scale_v, None) {
+            Ok(vp) => {
+                push_rows(&mut rows, &vp, &pos.pose, w1, &pos.label);
+                velocity.push(Some(vp));
+            }
+            // A dyad at its toggle position: the plan does not exist; say why and go on.
+            Err((group, error @ ConstructionError::LinesParallel { .. })) => {
+                refused.push((pos.label.clone(), format!("group {}: {error}", group + 1)));
+                velocity.push(None);
+            }
+            Err((group, error)) => {
+                return Err(KinError::Plan {
                     position: pos.label.clone(),
                     kind: "velocity",
                     group: group + 1,
                     error: Box::new(error),
-                }
-            })?;
-        push_rows(&mut rows, &vp, &pos.pose, w1, &pos.label);
-        velocity.push(vp);
+                })
+            }
+        }
     }
     let mut acceleration = Vec::new();
     for k in acceleration_indices(&plan, req)? {
         let pos = &plan.positions[k];
+        let Some(vp) = &velocity[k] else {
+            return Err(KinError::Request(format!(
+                "acceleration_positions: position {} has no velocity plan (toggle position)",
+                pos.label
+            )));
+        };
         let setup = PlanSetup {
             prog,
             built: &pos.built,
@@ -234,7 +266,7 @@ pub fn analyse(m: &Mechanism, req: &KinRequest) -> Result<Analysis, KinError> {
             w1,
             drafting: req.drafting,
         };
-        let ap = kin_plan(&setup, PlanKind::Acceleration, scale_a, Some(&velocity[k])).map_err(
+        let ap = kin_plan(&setup, PlanKind::Acceleration, scale_a, Some(vp)).map_err(
             |(group, error)| KinError::Plan {
                 position: pos.label.clone(),
                 kind: "acceleration",
@@ -259,6 +291,7 @@ pub fn analyse(m: &Mechanism, req: &KinRequest) -> Result<Analysis, KinError> {
         hodograph,
         rows,
         table,
+        refused,
     })
 }
 
@@ -411,14 +444,21 @@ fn diagrams(
     };
     let mu1 = calculus::derivative_scale(scale_s, scale_phi, h1, Quantity::Length)
         .map_err(|e| fail("dS/dφ", e))?;
-    let height = |sc: Scale, d: &[f64]| d.iter().fold(0.0f64, |a, v| a.max(v.abs())) / sc.value();
-    let s_top = height(scale_s, &s);
+    // The textbook's stack: S on top, dS/dφ under it, d²S/dφ² under that; the second
+    // differentiation's chords are drawn on the dS/dφ curve itself (its figure's source axes
+    // coincide with the first figure's result axes). A scratch run sizes each diagram.
+    let scratch = |mu: Scale, d: &Diagram, sc: Scales, h: f64| -> Result<(f64, f64), KinError> {
+        let mut r = Recorder::new("scratch", mu, tol(), Drafting::EXACT);
+        let lay = Layout::new(DVec2::ZERO, DVec2::ZERO).with_source(false);
+        let dv = calculus::differentiate_chords(&mut r, d, sc, h, &lay)
+            .map_err(|e| fail("a diagram", e))?;
+        Ok(extent(dv.mid.iter().chain(&dv.node), mu))
+    };
+    let (s_lo, _) = extent(s.iter(), scale_s);
+    let (d1_lo, d1_hi) = scratch(mu1, &src, scales, h1)?;
     let mut rec1 = Recorder::new("dS/dφ", mu1, tol(), req.drafting);
-    let lay1 = Layout::new(
-        DVec2::new(0.0, 0.0),
-        DVec2::new(0.0, -(s_top + 20.0) - DIAGRAM_MM),
-    )
-    .pole_named("P_1", "H_1");
+    let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
+        .pole_named("P_1", "H_1");
     let first = calculus::differentiate_chords(&mut rec1, &src, scales, h1, &lay1)
         .map_err(|e| fail("dS/dφ", e))?;
     let d1 = first.diagram().map_err(|e| fail("dS/dφ", e))?;
@@ -432,8 +472,9 @@ fn diagrams(
     };
     let mu2 = calculus::derivative_scale(mu1, scale_phi, h2, Quantity::Length)
         .map_err(|e| fail("d²S/dφ²", e))?;
+    let (_, d2_hi) = scratch(mu2, &d1, scales2, h2)?;
     let mut rec2 = Recorder::new("d²S/dφ²", mu2, tol(), req.drafting);
-    let lay2 = Layout::new(DVec2::ZERO, DVec2::ZERO)
+    let lay2 = Layout::new(DVec2::ZERO, DVec2::new(0.0, d1_lo - DIAGRAM_GAP - d2_hi))
         .with_source(false)
         .named("φ", "dS/dφ", "d²S/dφ²")
         .pole_named("P_2", "H_2");
@@ -469,6 +510,7 @@ fn diagrams(
         scales,
         first_figure: rec1.finish(),
         second_figure: rec2.finish(),
+        second_at: lay1.origin,
         first,
         second,
         s,
@@ -479,7 +521,7 @@ fn diagrams(
 /// (copied from the velocity plans), their ends joined by a smooth curve.
 fn hodograph(
     plan: &PositionPlan,
-    velocity: &[KinPlan],
+    velocity: &[Option<KinPlan>],
     req: &KinRequest,
     scale_v: Scale,
 ) -> Result<Option<(String, Figure)>, KinError> {
@@ -497,7 +539,17 @@ fn hodograph(
     let k = prog
         .index(&name)
         .ok_or_else(|| KinError::Request(format!("hodograph: there is no point `{name}`")))?;
-    let mut rec = Recorder::new("hodograph", scale_v, tol(), req.drafting);
+    // The hodograph has its own μ: the longest vector drawn about HODOGRAPH_MM.
+    let longest = velocity
+        .iter()
+        .flatten()
+        .map(|vp| vp.images[k].length())
+        .fold(0.0, f64::max)
+        * scale_v.value();
+    let scale =
+        Scale::round_for(longest.max(1e-12), HODOGRAPH_MM, Quantity::Velocity).unwrap_or(scale_v);
+    let copy = scale_v.value() / scale.value();
+    let mut rec = Recorder::new("hodograph", scale, tol(), req.drafting);
     rec.point(
         "pole",
         DVec2::ZERO,
@@ -507,8 +559,14 @@ fn hodograph(
         &[],
     );
     let mut ends = Vec::new();
-    for (pos, vp) in plan.positions.iter().zip(velocity) {
-        let end = vp.images[k];
+    for (pos, vp) in plan
+        .positions
+        .iter()
+        .zip(velocity)
+        .filter_map(|(p, v)| v.as_ref().map(|v| (p, v)))
+    {
+        // The vector copied from the velocity plan, redrawn at the hodograph's μ.
+        let end = vp.images[k] * copy;
         let id = rec.draw(
             format!("v of {name}, position {}", pos.label),
             Item::Vector {

@@ -223,10 +223,16 @@ fn report(path: &Path, format: ReportFormat, drafting: f64, lang: LangArg) -> Re
         .map_err(|e| Failure::construction(format!("{}: {e}", s.path.display())))?;
     let analysis = tmm::kinematics::analyse(&s.mechanism, &req)
         .map_err(|e| Failure::construction(format!("{}: {e}", s.path.display())))?;
+    let notes = analysis
+        .refused
+        .iter()
+        .map(|(pos, why)| format!("position {pos}: no velocity plan: {why}"))
+        .collect();
     let rep = tmm::report::Report {
         scene: s.stem.clone(),
         rows: analysis.rows,
         tables: vec![analysis.table],
+        notes,
     };
     let text = match format {
         ReportFormat::Md => rep.to_markdown(opts.lang),

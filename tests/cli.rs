@@ -58,7 +58,15 @@ fn render_writes_svg_and_png_and_is_byte_identical() {
         .iter()
         .map(|p| p.strip_prefix(&a).unwrap().display().to_string())
         .collect();
-    assert_eq!(names, ["shaper/positions.png", "shaper/positions.svg"]);
+    assert_eq!(
+        names,
+        [
+            "shaper/kinematics.png",
+            "shaper/kinematics.svg",
+            "shaper/positions.png",
+            "shaper/positions.svg"
+        ]
+    );
     for f in &fa {
         let g = b.join(f.strip_prefix(&a).unwrap());
         assert_eq!(

@@ -2,46 +2,11 @@
 //! crank angle, a change-point four-bar through its folded positions, dead centres.
 
 use tmm::construct::Drafting;
-use tmm::geom::DVec2;
 use tmm::linkage::*;
-use tmm::scale::{Quantity, Scale};
 
-fn four_bar(r: f64, d: f64, la: f64, lb: f64) -> Mechanism {
-    Mechanism {
-        fixed: vec![
-            FixedPoint {
-                name: "O".into(),
-                at: DVec2::ZERO,
-            },
-            FixedPoint {
-                name: "D".into(),
-                at: DVec2::new(d, 0.0),
-            },
-        ],
-        crank: Crank {
-            link: 1,
-            centre: "O".into(),
-            pin: "A".into(),
-            length: r,
-            omega: 1.0,
-            sense: Sense::CounterClockwise,
-        },
-        groups: vec![Group {
-            links: [2, 3],
-            dyad: Dyad::Rrr {
-                a: "A".into(),
-                la,
-                b: "D".into(),
-                lb,
-                joint: "B".into(),
-                branch: Branch::Left,
-            },
-        }],
-        points: vec![],
-        redundant: vec![],
-        outputs: vec![Output::Rocker { link: 3 }],
-    }
-}
+mod common;
+use common::four_bar;
+use tmm::scale::{Quantity, Scale};
 
 fn mu() -> Scale {
     Scale::new(0.001, Quantity::Length).unwrap()
@@ -55,6 +20,7 @@ fn mechanism_that_cannot_be_assembled_names_position_and_group() {
         count: 12,
         start: Some(30f64.to_radians()),
         other_extreme: true,
+        continuity: false,
     };
     let err = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_err();
     match &err {
@@ -86,6 +52,7 @@ fn working_stroke_start_without_full_turn_is_refused_with_the_angle() {
         count: 12,
         start: None,
         other_extreme: true,
+        continuity: false,
     };
     let msg = plan_positions(&m, &req, mu(), Drafting::EXACT)
         .unwrap_err()
@@ -104,6 +71,7 @@ fn change_point_four_bar_passes_its_folded_positions_without_nan() {
         count: 12,
         start: Some(0.0),
         other_extreme: true,
+        continuity: false,
     };
     let plan = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(plan.positions.len(), 12);

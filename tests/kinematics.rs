@@ -6,6 +6,9 @@ use std::process::Command;
 use tmm::construct::{ConstructionError, Drafting, Recorder};
 use tmm::geom::{DVec2, Tolerances};
 use tmm::linkage::*;
+
+mod common;
+use common::four_bar;
 use tmm::scale::{Quantity, Scale};
 
 fn root() -> PathBuf {
@@ -27,7 +30,10 @@ fn rows(v: &serde_json::Value) -> Vec<&serde_json::Value> {
 }
 
 fn find<'a>(v: &'a serde_json::Value, q: &str, pos: &str, method: &str) -> &'a serde_json::Value {
-    rows(v).into_iter().find(|r| r["quantity"] == q && r["position"] == pos && r["method"] == method).unwrap_or_else(|| panic!("no row {q} {pos} {method}"))
+    rows(v)
+        .into_iter()
+        .find(|r| r["quantity"] == q && r["position"] == pos && r["method"] == method)
+        .unwrap_or_else(|| panic!("no row {q} {pos} {method}"))
 }
 
 fn num(r: &serde_json::Value, key: &str) -> f64 {
@@ -41,36 +47,84 @@ fn shaper_report_plans_equal_analytic_at_drafting_0() {
     let all = rows(&v);
     let mut plan_rows = 0;
     for r in &all {
-        for key in ["quantity", "position", "unit", "method", "graphical", "analytic", "abs_error", "rel_error"] {
+        for key in [
+            "quantity",
+            "position",
+            "unit",
+            "method",
+            "graphical",
+            "analytic",
+            "abs_error",
+            "rel_error",
+        ] {
             assert!(r.get(key).is_some(), "row lacks {key}: {r}");
         }
         if r["method"] == "plan" {
             plan_rows += 1;
             let (g, a) = (num(r, "graphical"), num(r, "analytic"));
-            let ok = if a.abs() < 1e-9 { (g - a).abs() <= 1e-12 } else { (g - a).abs() <= 1e-9 * a.abs() };
+            let ok = if a.abs() < 1e-9 {
+                (g - a).abs() <= 1e-12
+            } else {
+                (g - a).abs() <= 1e-9 * a.abs()
+            };
             assert!(ok, "plan ≠ analytic: {r}");
         }
     }
     assert!(plan_rows > 100, "{plan_rows} plan rows");
     // The quantities the issue names, on the plans and the diagrams.
-    for q in ["v_D", "a_D", "v_S5", "a_S5", "v_S3", "omega_3", "eps_3", "v_B3_B1"] {
-        assert!(all.iter().any(|r| r["quantity"] == q && r["method"] == "plan"), "no plan row {q}");
+    for q in [
+        "v_D", "a_D", "v_S5", "a_S5", "v_S3", "omega_3", "eps_3", "v_B3_B1",
+    ] {
+        assert!(
+            all.iter()
+                .any(|r| r["quantity"] == q && r["method"] == "plan"),
+            "no plan row {q}"
+        );
     }
     for q in ["s_S5", "v_S5", "a_S5"] {
-        assert!(all.iter().any(|r| r["quantity"] == q && r["method"] == "diagram"), "no diagram row {q}");
+        assert!(
+            all.iter()
+                .any(|r| r["quantity"] == q && r["method"] == "diagram"),
+            "no diagram row {q}"
+        );
     }
-    let labels: Vec<&str> = all.iter().filter(|r| r["quantity"] == "omega_3").map(|r| r["position"].as_str().unwrap()).collect();
-    assert_eq!(labels, ["1", "2", "3", "4", "5", "6", "7", "8", "8′", "9", "10", "11", "12"]);
+    let labels: Vec<&str> = all
+        .iter()
+        .filter(|r| r["quantity"] == "omega_3")
+        .map(|r| r["position"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        labels,
+        ["1", "2", "3", "4", "5", "6", "7", "8", "8′", "9", "10", "11", "12"]
+    );
 }
 
 /// Table 5 ω₃ (seed sign convention) and Table 8 V_S5 at positions 2…12 (exact columns).
 const OMEGA3: [(&str, f64); 11] = [
-    ("2", 2.1467), ("3", 3.2744), ("4", 3.7758), ("5", 3.8307), ("6", 3.4586), ("7", 2.5266),
-    ("8", 0.7021), ("9", -2.4899), ("10", -6.4662), ("11", -7.1875), ("12", -3.5711),
+    ("2", 2.1467),
+    ("3", 3.2744),
+    ("4", 3.7758),
+    ("5", 3.8307),
+    ("6", 3.4586),
+    ("7", 2.5266),
+    ("8", 0.7021),
+    ("9", -2.4899),
+    ("10", -6.4662),
+    ("11", -7.1875),
+    ("12", -3.5711),
 ];
 const VS5: [(&str, f64); 11] = [
-    ("2", 1.4595), ("3", 2.2786), ("4", 2.6720), ("5", 2.7168), ("6", 2.4203), ("7", 1.7282),
-    ("8", 0.4718), ("9", 1.6874), ("10", 4.5381), ("11", 5.0820), ("12", 2.4395),
+    ("2", 1.4595),
+    ("3", 2.2786),
+    ("4", 2.6720),
+    ("5", 2.7168),
+    ("6", 2.4203),
+    ("7", 1.7282),
+    ("8", 0.4718),
+    ("9", 1.6874),
+    ("10", 4.5381),
+    ("11", 5.0820),
+    ("12", 2.4395),
 ];
 
 #[test]
@@ -81,11 +135,17 @@ fn shaper_report_analytic_values_match_tables_5_and_8() {
     for (pos, w) in OMEGA3 {
         let a = num(find(&v, "omega_3", pos, "plan"), "analytic");
         // The crank turns clockwise: the physical sense is the opposite of the seed's.
-        assert!((a + w).abs() < 5e-5 + 1.2e-4, "ω₃ at {pos}: {a} vs seed {w} (opposite sign)");
+        assert!(
+            (a + w).abs() < 5e-5 + 1.2e-4,
+            "ω₃ at {pos}: {a} vs seed {w} (opposite sign)"
+        );
     }
     for (pos, s5) in VS5 {
         let a = num(find(&v, "v_S5", pos, "plan"), "analytic");
-        assert!((a - s5).abs() < 5e-5 + 1.2e-4 * 0.71 * 8.0, "V_S5 at {pos}: {a} vs {s5}");
+        assert!(
+            (a - s5).abs() < 5e-5 + 1.2e-4 * 0.71 * 8.0,
+            "V_S5 at {pos}: {a} vs {s5}"
+        );
     }
     // The seed's typos are not reproduced.
     assert!((num(find(&v, "omega_3", "11", "plan"), "analytic").abs() - 7.8).abs() > 0.5);
@@ -99,7 +159,12 @@ fn shaper_report_analytic_values_match_tables_5_and_8() {
 #[test]
 fn drafting_half_a_millimetre_gives_hand_construction_errors() {
     let v = report_json("constructions/shaper.toml", "0.5");
-    let rel: Vec<f64> = rows(&v).into_iter().filter(|r| r["method"] == "plan").filter_map(|r| r["rel_error"].as_f64()).map(f64::abs).collect();
+    let rel: Vec<f64> = rows(&v)
+        .into_iter()
+        .filter(|r| r["method"] == "plan")
+        .filter_map(|r| r["rel_error"].as_f64())
+        .map(f64::abs)
+        .collect();
     let mean = rel.iter().sum::<f64>() / rel.len() as f64;
     let max = rel.iter().copied().fold(0.0, f64::max);
     assert!(mean > 1e-3 && mean < 0.05, "mean plan error {mean}");
@@ -111,27 +176,38 @@ fn chord_diagrams_are_less_accurate_than_plans_but_close() {
     let v = report_json("constructions/shaper.toml", "0");
     let mid = find(&v, "v_S5", "4", "diagram");
     let rel = num(mid, "rel_error").abs();
-    assert!(rel > 1e-4 && rel < 0.03, "mid-stroke diagram velocity error {rel}");
+    assert!(
+        rel > 1e-4 && rel < 0.03,
+        "mid-stroke diagram velocity error {rel}"
+    );
 }
 
-fn four_bar(r: f64, d: f64, la: f64, lb: f64) -> Mechanism {
-    Mechanism {
-        fixed: vec![FixedPoint { name: "O".into(), at: DVec2::ZERO }, FixedPoint { name: "D".into(), at: DVec2::new(d, 0.0) }],
-        crank: Crank { link: 1, centre: "O".into(), pin: "A".into(), length: r, omega: 10.0, sense: Sense::CounterClockwise },
-        groups: vec![Group { links: [2, 3], dyad: Dyad::Rrr { a: "A".into(), la, b: "D".into(), lb, joint: "B".into(), branch: Branch::Left } }],
-        points: vec![],
-        redundant: vec![],
-        outputs: vec![Output::Rocker { link: 3 }],
-    }
-}
-
-fn plans_at(m: &Mechanism, phi: f64) -> (Program, Built, Result<KinPlan, (usize, ConstructionError)>) {
+fn plans_at(
+    m: &Mechanism,
+    phi: f64,
+) -> (Program, Built, Result<KinPlan, (usize, ConstructionError)>) {
     let prog = Program::compile(m).unwrap();
-    let mut rec = Recorder::new("t", Scale::new(0.001, Quantity::Length).unwrap(), Tolerances::for_model_size(1000.0).unwrap(), Drafting::EXACT);
+    let mut rec = Recorder::new(
+        "t",
+        Scale::new(0.001, Quantity::Length).unwrap(),
+        Tolerances::for_model_size(1000.0).unwrap(),
+        Drafting::EXACT,
+    );
     let built = prog.construct(&mut rec, phi, None, "t").unwrap();
     let w1 = m.crank.sense.sign() * m.crank.omega;
-    let setup = PlanSetup { prog: &prog, built: &built, mu_l: 0.001, w1, drafting: Drafting::EXACT };
-    let vp = kin_plan(&setup, PlanKind::Velocity, Scale::new(0.01, Quantity::Velocity).unwrap(), None);
+    let setup = PlanSetup {
+        prog: &prog,
+        built: &built,
+        mu_l: 0.001,
+        w1,
+        drafting: Drafting::EXACT,
+    };
+    let vp = kin_plan(
+        &setup,
+        PlanKind::Velocity,
+        Scale::new(0.01, Quantity::Velocity).unwrap(),
+        None,
+    );
     (prog, built, vp)
 }
 
@@ -142,7 +218,9 @@ fn toggle_position_is_refused_with_a_diagnosis() {
     let m = four_bar(0.1, 0.2, 0.2, 0.1);
     let (_, _, vp) = plans_at(&m, 0.0);
     match vp {
-        Err((0, e @ ConstructionError::LinesParallel { .. })) => assert!(e.to_string().contains("parallel"), "{e}"),
+        Err((0, e @ ConstructionError::LinesParallel { .. })) => {
+            assert!(e.to_string().contains("parallel"), "{e}")
+        }
         other => panic!("wanted a parallel-lines refusal, got {other:?}"),
     }
 }
@@ -153,10 +231,21 @@ fn nearly_parallel_direction_lines_report_their_conditioning() {
     let m = four_bar(0.1, 0.2, 0.2, 0.1);
     let (_, _, vp) = plans_at(&m, 0.02);
     let vp = vp.expect("still constructible");
-    let cond = vp.readings.iter().find(|r| r.quantity == "v_B_A").and_then(|r| r.conditioning).expect("conditioning");
+    let cond = vp
+        .readings
+        .iter()
+        .find(|r| r.quantity == "v_B_A")
+        .and_then(|r| r.conditioning)
+        .expect("conditioning");
     assert!(cond < 5.0 && cond > 0.0, "crossing angle {cond}°");
     let (_, _, vp) = plans_at(&m, 1.5);
-    let cond = vp.unwrap().readings.iter().find(|r| r.quantity == "v_B_A").and_then(|r| r.conditioning).unwrap();
+    let cond = vp
+        .unwrap()
+        .readings
+        .iter()
+        .find(|r| r.quantity == "v_B_A")
+        .and_then(|r| r.conditioning)
+        .unwrap();
     assert!(cond > 30.0, "well-conditioned crossing {cond}°");
 }
 
@@ -165,21 +254,79 @@ fn coriolis_vanishes_with_the_relative_sliding_velocity() {
     // Shaper-like RPR: at φ₁ = 90° the pin B is on the line AC, the crank ⊥ the slot, so the
     // block does not slide (V_B3B1 = 0) and the Coriolis component vanishes.
     let m = Mechanism {
-        fixed: vec![FixedPoint { name: "A".into(), at: DVec2::new(0.0, 0.43) }, FixedPoint { name: "C".into(), at: DVec2::ZERO }],
-        crank: Crank { link: 1, centre: "A".into(), pin: "B".into(), length: 0.14, omega: 15.7, sense: Sense::Clockwise },
-        groups: vec![Group { links: [2, 3], dyad: Dyad::Rpr { a: "B".into(), c: "C".into(), offset: 0.0 } }],
-        points: vec![LinkPoint { name: "D".into(), link: 3, along: 0.71, across: 0.0 }],
+        fixed: vec![
+            FixedPoint {
+                name: "A".into(),
+                at: DVec2::new(0.0, 0.43),
+            },
+            FixedPoint {
+                name: "C".into(),
+                at: DVec2::ZERO,
+            },
+        ],
+        crank: Crank {
+            link: 1,
+            centre: "A".into(),
+            pin: "B".into(),
+            length: 0.14,
+            omega: 15.7,
+            sense: Sense::Clockwise,
+        },
+        groups: vec![Group {
+            links: [2, 3],
+            dyad: Dyad::Rpr {
+                a: "B".into(),
+                c: "C".into(),
+                offset: 0.0,
+            },
+        }],
+        points: vec![LinkPoint {
+            name: "D".into(),
+            link: 3,
+            along: 0.71,
+            across: 0.0,
+        }],
         redundant: vec![],
         outputs: vec![Output::Rocker { link: 3 }],
     };
     for (phi, vanishes) in [(90f64, true), (120f64, false)] {
         let prog = Program::compile(&m).unwrap();
-        let mut rec = Recorder::new("t", Scale::new(0.0025, Quantity::Length).unwrap(), Tolerances::for_model_size(400.0).unwrap(), Drafting::EXACT);
-        let built = prog.construct(&mut rec, phi.to_radians(), None, "t").unwrap();
-        let setup = PlanSetup { prog: &prog, built: &built, mu_l: 0.0025, w1: -15.7, drafting: Drafting::EXACT };
-        let vp = kin_plan(&setup, PlanKind::Velocity, Scale::new(0.05, Quantity::Velocity).unwrap(), None).unwrap();
-        let ap = kin_plan(&setup, PlanKind::Acceleration, Scale::new(1.0, Quantity::Acceleration).unwrap(), Some(&vp)).unwrap();
-        let slip = vp.readings.iter().find(|r| r.quantity == "v_B3_B1").unwrap().value;
+        let mut rec = Recorder::new(
+            "t",
+            Scale::new(0.0025, Quantity::Length).unwrap(),
+            Tolerances::for_model_size(400.0).unwrap(),
+            Drafting::EXACT,
+        );
+        let built = prog
+            .construct(&mut rec, phi.to_radians(), None, "t")
+            .unwrap();
+        let setup = PlanSetup {
+            prog: &prog,
+            built: &built,
+            mu_l: 0.0025,
+            w1: -15.7,
+            drafting: Drafting::EXACT,
+        };
+        let vp = kin_plan(
+            &setup,
+            PlanKind::Velocity,
+            Scale::new(0.05, Quantity::Velocity).unwrap(),
+            None,
+        )
+        .unwrap();
+        let ap = kin_plan(
+            &setup,
+            PlanKind::Acceleration,
+            Scale::new(1.0, Quantity::Acceleration).unwrap(),
+            Some(&vp),
+        )
+        .unwrap();
+        let slip = vp
+            .readings
+            .iter()
+            .find(|r| r.quantity == "v_B3_B1")
+            .unwrap()
+            .value;
         let has_coriolis = ap.figure.steps.iter().any(|s| s.note.contains("Coriolis"));
         assert_eq!(slip.abs() < 1e-12, vanishes, "φ₁ = {phi}: slip {slip}");
         assert_eq!(has_coriolis, !vanishes, "φ₁ = {phi}");
@@ -196,6 +343,9 @@ fn extreme_positions_have_zero_rocker_velocity_on_the_plan() {
     for pos in ["1", "8′"] {
         let r = find(&v, "omega_3", pos, "plan");
         assert!(num(r, "graphical").abs() < 1e-12, "{r}");
-        assert!(r["rel_error"].is_null(), "zero analytic value: relative error undefined");
+        assert!(
+            r["rel_error"].is_null(),
+            "zero analytic value: relative error undefined"
+        );
     }
 }

@@ -119,9 +119,15 @@ macro_rules! plates {
 
 plates! {
     shaper_positions: "shaper" / "positions",
+    shaper_kinematics: "shaper" / "kinematics",
     slider_crank_positions: "slider-crank" / "positions",
+    slider_crank_kinematics: "slider-crank" / "kinematics",
     four_bar_positions: "four-bar" / "positions",
+    four_bar_kinematics: "four-bar" / "kinematics",
+    six_bar_positions: "six-bar" / "positions",
+    six_bar_kinematics: "six-bar" / "kinematics",
     tangent_positions: "tangent" / "positions",
+    tangent_kinematics: "tangent" / "kinematics",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

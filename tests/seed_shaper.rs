@@ -13,6 +13,7 @@ fn shaper_plan() -> (tmm::scene::Scene, PositionPlan) {
         count: 12,
         start: None,
         other_extreme: true,
+        continuity: false,
     };
     let scale = Scale::new(0.0025, Quantity::Length).unwrap();
     let plan = plan_positions(&scene.mechanism, &req, scale, Drafting::EXACT)

@@ -67,6 +67,10 @@ struct LineJet {
     e: Jet,
 }
 
+/// Relative slack with which a tangency survives rounding (a circle pair whose centre
+/// distance misses r₁ ± r₂ by 1e-12 of the radii touches).
+const TANGENT_REL: f64 = 1e-12;
+
 fn cross(a: DVec2, b: DVec2) -> f64 {
     a.perp_dot(b)
 }
@@ -309,7 +313,9 @@ impl Program {
                 let (ja, jb) = (st.jet(a), st.jet(b));
                 let ab = jb.p - ja.p;
                 let d = ab.length();
-                if d > la + lb || d < (la - lb).abs() || d == 0.0 {
+                // A tangency lost to rounding is still a tangency (the change point).
+                let slack = TANGENT_REL * (la + lb);
+                if d > la + lb + slack || d < (la - lb).abs() - slack || d == 0.0 {
                     return Err(fail(format!(
                         "|{}{}| = {d:.6} m is outside [|{la} − {lb}|, {la} + {lb}] m",
                         self.names[a], self.names[b]
@@ -371,14 +377,14 @@ impl Program {
                 let w = ja.p - g.p;
                 let t0 = w.dot(e.p);
                 let h = cross(e.p, w);
-                if h.abs() > la {
+                if h.abs() > la * (1.0 + TANGENT_REL) {
                     return Err(fail(format!(
                         "{} is {:.6} m from the guide, more than the link length {la} m",
                         self.names[a],
                         h.abs()
                     )));
                 }
-                let half = (la * la - h * h).sqrt();
+                let half = (la * la - h * h).max(0.0).sqrt();
                 let pick_fwd = if continuity {
                     let q = st.pose.p[joint];
                     (g.p + e.p * (t0 + half)).distance_squared(q)

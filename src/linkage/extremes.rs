@@ -86,9 +86,9 @@ pub struct Extremes {
 const SAMPLES: usize = 720;
 
 impl Program {
-    /// Solve at `phi` continuing from `prev`, or say which group stops the crank.
-    fn solve_turning(&self, phi: f64, prev: Option<&Pose>) -> Result<Pose, LinkageError> {
-        self.solve(phi, prev).map_err(|u| LinkageError::CannotTurn {
+    /// Solve at `phi` (each assembly on the scene's side), or say which group stops the crank.
+    fn solve_turning(&self, phi: f64) -> Result<Pose, LinkageError> {
+        self.solve(phi, None).map_err(|u| LinkageError::CannotTurn {
             phi_deg: phi.to_degrees(),
             group: format!("{}", u.group + 1),
             detail: u.detail,
@@ -105,12 +105,9 @@ impl Program {
             return Err(LinkageError::Model("no output is given".into()));
         }
         let mut poses = Vec::with_capacity(SAMPLES + 1);
-        let mut prev: Option<Pose> = None;
         for k in 0..=SAMPLES {
             let phi = TAU * k as f64 / SAMPLES as f64;
-            let pose = self.solve_turning(phi, prev.as_ref())?;
-            prev = Some(pose.clone());
-            poses.push(pose);
+            poses.push(self.solve_turning(phi)?);
         }
         let ranges = coords
             .iter()
@@ -156,7 +153,7 @@ impl Program {
                 roots.push((w[0].phi, c.eval(&w[0], reference).0));
             } else if d0 * d1 < 0.0 {
                 let phi = self.bisect(c, &w[0], w[1].phi, reference);
-                let pose = self.solve(phi, Some(&w[0])).ok();
+                let pose = self.solve(phi, None).ok();
                 if let Some(p) = pose {
                     roots.push((phi, c.eval(&p, reference).0));
                 }
@@ -180,7 +177,7 @@ impl Program {
             if mid <= lo || mid >= hi {
                 break;
             }
-            let Ok(p) = self.solve(mid, Some(a)) else {
+            let Ok(p) = self.solve(mid, None) else {
                 break;
             };
             let d = c.eval(&p, reference).1;

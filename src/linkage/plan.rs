@@ -22,6 +22,9 @@ pub struct PlanRequest {
     pub start: Option<f64>,
     /// Add the extreme positions that fall between the numbered ones (labelled `k′`).
     pub other_extreme: bool,
+    /// Choose each assembly by continuity with the previous position instead of by the
+    /// scene's side.
+    pub continuity: bool,
 }
 
 /// One position of the plan.
@@ -127,7 +130,7 @@ pub fn plan_positions(
         .enumerate()
     {
         rec.set_group(k as u32 + 1);
-        let prev = positions.last();
+        let prev = positions.last().filter(|_| req.continuity);
         let fail_pos = |group: usize, detail: String| LinkageError::CannotAssemble {
             position: label.clone(),
             phi_deg: phi.to_degrees(),

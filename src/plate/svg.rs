@@ -55,7 +55,10 @@ pub fn to_svg(plate: &Plate) -> String {
         .collect();
     doc = doc.add(group("texts", texts));
     for (k, table) in plate.tables.iter().enumerate() {
-        doc = doc.add(group(&format!("table-{k}"), super::table::table_marks(table)));
+        doc = doc.add(group(
+            &format!("table-{k}"),
+            super::table::table_marks(table),
+        ));
     }
     format!("{doc}\n")
 }

@@ -50,16 +50,27 @@ pub(crate) fn table_marks(t: &TableBlock) -> Vec<Mark> {
     }
     let mut marks = vec![Mark::Path(Paint::Stroke(Pen::THIN), d)];
     if !t.title.is_empty() {
-        marks.push(Mark::Text(Placed::new(t.at - DVec2::new(0.0, t.size_mm * 0.8), &t.title, t.size_mm, Align::Start)));
+        marks.push(Mark::Text(Placed::new(
+            t.at - DVec2::new(0.0, t.size_mm * 0.8),
+            &t.title,
+            t.size_mm,
+            Align::Start,
+        )));
     }
     let header = t.columns.iter().map(|c| c.0.as_str());
-    let lines = std::iter::once(header.collect::<Vec<_>>()).chain(t.rows.iter().map(|r| r.iter().map(String::as_str).collect()));
+    let lines = std::iter::once(header.collect::<Vec<_>>()).chain(
+        t.rows
+            .iter()
+            .map(|r| r.iter().map(String::as_str).collect()),
+    );
     for (k, cells) in lines.enumerate() {
         let mut x = t.at.x;
         let cy = t.at.y + rh * (k as f64 + 0.5);
         for ((_, w), cell) in t.columns.iter().zip(cells) {
             if !cell.is_empty() {
-                let p = Placed::centred(DVec2::new(x + w * 0.5, cy), cell, t.size_mm, Align::Middle).fit(w - 1.0);
+                let p =
+                    Placed::centred(DVec2::new(x + w * 0.5, cy), cell, t.size_mm, Align::Middle)
+                        .fit(w - 1.0);
                 marks.push(Mark::Text(p));
             }
             x += w;

@@ -31,6 +31,7 @@ struct JsonReport<'a> {
     rows: Vec<JsonRow<'a>>,
     summary: JsonSummary<'a>,
     tables: Vec<JsonTable<'a>>,
+    notes: &'a [String],
 }
 
 #[derive(Serialize)]
@@ -135,6 +136,7 @@ impl Report {
                     .collect(),
             },
             tables: self.tables.iter().map(json_table).collect(),
+            notes: &self.notes,
         })
     }
 
@@ -217,6 +219,9 @@ impl Report {
         }
         for t in &self.tables {
             table_markdown(&mut out, t, lang);
+        }
+        for n in &self.notes {
+            out.push_str(&format!("* {n}\n"));
         }
         out
     }

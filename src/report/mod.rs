@@ -126,6 +126,8 @@ pub struct Report {
     pub rows: Vec<Row>,
     /// Analytic tables, written after the rows.
     pub tables: Vec<Table>,
+    /// Notes: what could not be constructed, and why.
+    pub notes: Vec<String>,
 }
 
 /// The error summary of one quantity and method (one line of section 1.6 of the seed).

@@ -43,6 +43,7 @@ fn sample() -> Report {
                 ("8′".into(), vec![Some(-19.0), None]),
             ],
         }],
+        notes: Vec::new(),
     }
 }
 
@@ -67,7 +68,10 @@ fn json_has_the_exact_keys_and_null_at_an_analytic_zero() {
     let report = sample();
     let v: Value = serde_json::from_str(&report.to_json()).unwrap();
     // The order in the text is checked below.
-    assert_eq!(sorted_keys(&v), ["rows", "scene", "summary", "tables"]);
+    assert_eq!(
+        sorted_keys(&v),
+        ["notes", "rows", "scene", "summary", "tables"]
+    );
     assert_eq!(v["scene"], "shaper-000");
     let rows = v["rows"].as_array().unwrap();
     assert_eq!(rows.len(), 6);
@@ -246,6 +250,7 @@ fn an_empty_report_is_written() {
         scene: String::new(),
         rows: Vec::new(),
         tables: Vec::new(),
+        notes: Vec::new(),
     };
     let v: Value = serde_json::from_str(&r.to_json()).unwrap();
     assert_eq!(v["rows"], serde_json::json!([]));

@@ -105,10 +105,23 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
         }
         Some(RawStart::Degrees(d)) => Start::Angle(check.angle("positions.start", Some(d), 0.0)),
     };
+    let continuity = match raw.assembly.as_deref() {
+        None | Some("side") => false,
+        Some("continuity") => true,
+        Some(other) => {
+            check.push(
+                "positions.assembly",
+                Some(quoted(other)),
+                "expected \"side\" or \"continuity\"",
+            );
+            false
+        }
+    };
     PositionSpec {
         count: u32::try_from(count).unwrap_or(0),
         start,
         other_extreme: raw.other_extreme.unwrap_or(true),
+        continuity,
     }
 }
 

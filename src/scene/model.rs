@@ -22,6 +22,10 @@ pub struct PositionSpec {
     pub start: Start,
     /// Add the other extreme position (labelled with a prime, e.g. `8′`).
     pub other_extreme: bool,
+    /// Take each two-solution dyad's point nearest to the previous position (`assembly =
+    /// "continuity"`) instead of on the scene's side at every position (`"side"`, the
+    /// default: the textbook's "on the same side as B₀").
+    pub continuity: bool,
 }
 
 /// The plates a scene can ask for.

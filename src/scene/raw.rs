@@ -154,6 +154,7 @@ pub(crate) struct RawPositions {
     pub count: Option<i64>,
     pub start: Option<RawStart>,
     pub other_extreme: Option<bool>,
+    pub assembly: Option<String>,
 }
 
 /// `start = "working-stroke"` or a crank angle in degrees.

@@ -82,10 +82,11 @@ fn shaper_loads_in_si_units() {
         PositionSpec {
             count: 12,
             start: Start::WorkingStroke,
-            other_extreme: true
+            other_extreme: true,
+            continuity: false
         }
     );
-    assert_eq!(s.plates, vec![PlateKind::Positions]);
+    assert_eq!(s.plates, vec![PlateKind::Positions, PlateKind::Kinematics]);
 }
 
 #[test]

@@ -8,18 +8,26 @@ use super::{kin_request, BuildError, RenderOptions};
 use crate::construct::Figure;
 use crate::geom::DVec2;
 use crate::kinematics::{analyse, Analysis, KinError, KinRequest};
-use crate::plate::{Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM};
+use crate::plate::{
+    Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM,
+};
 use crate::report::{Method, Report};
-use crate::scale::{format_sig, Lang, Quantity, Scale};
+use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::scene::Scene;
+use std::f64::consts::TAU;
 
 /// The fields of the A1 sheet, sheet mm (x0, y0, x1, y1), y down.
 const PLAN: [f64; 4] = [25.0, 22.0, 290.0, 300.0];
 const VELOCITY: [f64; 4] = [295.0, 22.0, 560.0, 420.0];
-const DIAGRAMS: [f64; 4] = [565.0, 22.0, 832.0, 300.0];
-const ACCELERATION: [f64; 4] = [565.0, 305.0, 832.0, 528.0];
+const DIAGRAMS: [f64; 4] = [565.0, 22.0, 832.0, 372.0];
+const ACCELERATION: [f64; 4] = [565.0, 377.0, 832.0, 528.0];
 const HODOGRAPH: [f64; 4] = [25.0, 305.0, 290.0, 420.0];
-const TABLES_AT: (f64, f64) = (28.0, 432.0);
+const TEXT_AT: (f64, f64) = (28.0, 423.0);
+const TABLES_AT: (f64, f64) = (28.0, 443.0);
+/// The tables end above this line (the title block starts at 534 mm).
+const TABLES_END: f64 = 584.0;
+/// Right edge of the tables' field (the title block starts at x = 651 mm).
+const TABLES_RIGHT: f64 = 560.0;
 /// Columns of velocity plans.
 const VEL_COLUMNS: usize = 3;
 /// Room around a plan's drawing for its labels, mm.
@@ -36,7 +44,9 @@ fn size_of(f: &Figure) -> DVec2 {
 /// How much a set of figures overflows cells of `cell` size (≤ 1: fits).
 fn overflow(figs: &[&Figure], cell: DVec2) -> f64 {
     let room = cell - DVec2::new(0.0, CAPTION_BAND_MM);
-    figs.iter().map(|f| size_of(f)).fold(0.0f64, |m, s| m.max(s.x / room.x).max(s.y / room.y))
+    figs.iter()
+        .map(|f| size_of(f))
+        .fold(0.0f64, |m, s| m.max(s.x / room.x).max(s.y / room.y))
 }
 
 /// The next round scale at least `ratio` times larger.
@@ -52,7 +62,10 @@ fn cells(r: Rect, n: usize, cols: usize) -> Vec<Rect> {
     (0..n)
         .map(|k| {
             let (c, row) = ((k % cols) as f64, (k / cols) as f64);
-            Rect::new(r.min + DVec2::new(c * w, row * h), r.min + DVec2::new((c + 1.0) * w, (row + 1.0) * h))
+            Rect::new(
+                r.min + DVec2::new(c * w, row * h),
+                r.min + DVec2::new((c + 1.0) * w, (row + 1.0) * h),
+            )
         })
         .collect()
 }
@@ -69,7 +82,10 @@ fn acc_cell(n: usize) -> DVec2 {
 }
 
 /// Run the analysis, raising the scales of whatever does not fit its field.
-fn fitted(m: &crate::linkage::Mechanism, mut req: KinRequest) -> Result<(KinRequest, Analysis), BuildError> {
+fn fitted(
+    m: &crate::linkage::Mechanism,
+    mut req: KinRequest,
+) -> Result<(KinRequest, Analysis), BuildError> {
     let fail = |e: KinError| BuildError::Kinematics(Box::new(e));
     for _ in 0..8 {
         let a = analyse(m, &req).map_err(fail)?;
@@ -79,7 +95,7 @@ fn fitted(m: &crate::linkage::Mechanism, mut req: KinRequest) -> Result<(KinRequ
             req.scale_l = bump(req.scale_l, plan_over).unwrap_or(req.scale_l);
             changed = true;
         }
-        let vel: Vec<&Figure> = a.velocity.iter().map(|p| &p.figure).collect();
+        let vel: Vec<&Figure> = a.velocity.iter().flatten().map(|p| &p.figure).collect();
         let mut v_over = overflow(&vel, vel_cell(vel.len()));
         if let Some((_, h)) = &a.hodograph {
             v_over = v_over.max(overflow(&[h], rect(HODOGRAPH).max - rect(HODOGRAPH).min));
@@ -96,12 +112,27 @@ fn fitted(m: &crate::linkage::Mechanism, mut req: KinRequest) -> Result<(KinRequ
         }
         if let Some(d) = &a.diagrams {
             let r = rect(DIAGRAMS);
-            let half = DVec2::new(r.width(), r.height() * 0.62);
-            let rest = DVec2::new(r.width(), r.height() * 0.38);
-            let over = overflow(&[&d.first_figure], half).max(overflow(&[&d.second_figure], rest));
+            let (lo, hi) = stack_bounds(d);
+            let need = hi - lo + DVec2::splat(LABEL_MARGIN);
+            let room = r.max - r.min - DVec2::new(0.0, CAPTION_BAND_MM);
+            let over = (need.x / room.x).max(need.y / room.y);
             if over > 1.0 {
-                req.scale_s = bump(d.scales.y, over);
-                req.scale_phi = Scale::new(d.scales.x.value() * over.min(4.0) * 1.01, Quantity::Angle);
+                // The scene's diagram scales do not fit: take the turn from the field's width
+                // and μ_s from its height, poles chosen for them; then raise both if need be.
+                let span = d.s.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                let fresh = req.pole_h1.is_some()
+                    || req
+                        .scale_phi
+                        .is_none_or(|s| s.value() < TAU / (0.75 * r.width()));
+                let (phi, s) = if fresh {
+                    (TAU / (0.7 * r.width()), span / (0.18 * r.height()))
+                } else {
+                    (d.scales.x.value() * over, d.scales.y.value() * over)
+                };
+                req.scale_phi = Scale::new(phi, Quantity::Angle);
+                req.scale_s = Scale::round_for(s.max(1e-12), 1.0, Quantity::Length);
+                req.pole_h1 = None;
+                req.pole_h2 = None;
                 changed = true;
             }
         }
@@ -109,7 +140,19 @@ fn fitted(m: &crate::linkage::Mechanism, mut req: KinRequest) -> Result<(KinRequ
             return Ok((req, a));
         }
     }
-    Err(BuildError::Kinematics(Box::new(KinError::Request("the kinematic sheet cannot be fitted on A1".into()))))
+    Err(BuildError::Kinematics(Box::new(KinError::Request(
+        "the kinematic sheet cannot be fitted on A1".into(),
+    ))))
+}
+
+/// Bounds of the diagram stack in the first figure's coordinates.
+fn stack_bounds(d: &crate::kinematics::Diagrams) -> (DVec2, DVec2) {
+    let (lo1, hi1) = d.first_figure.bounds().unwrap_or_default();
+    let (lo2, hi2) = d
+        .second_figure
+        .bounds()
+        .map_or((lo1, hi1), |(lo, hi)| (lo + d.second_at, hi + d.second_at));
+    (lo1.min(lo2), hi1.max(hi2))
 }
 
 /// Build the plate.
@@ -117,45 +160,146 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
     let lang = opts.lang;
     let (req, a) = fitted(&scene.mechanism, kin_request(scene, opts.drafting)?)?;
     let mut views = Vec::new();
-    let cap = |ru: &str, uk: &str, en: &str, s: Scale| format!("{}, {}", lang.pick(ru, uk, en), s.caption(lang));
-    views.push(View::centred(a.plan.figure.clone(), rect(PLAN), Some(cap("План положений", "План положень", "Plan of positions", req.scale_l)))?);
+    let cap = |ru: &str, uk: &str, en: &str, s: Scale| {
+        format!("{}, {}", lang.pick(ru, uk, en), s.caption(lang))
+    };
+    views.push(View::centred(
+        a.plan.figure.clone(),
+        rect(PLAN),
+        Some(cap(
+            "План положений",
+            "План положень",
+            "Plan of positions",
+            req.scale_l,
+        )),
+    )?);
     let n = a.velocity.len();
-    for ((pos, vp), cell) in a.plan.positions.iter().zip(&a.velocity).zip(cells(rect(VELOCITY), n, VEL_COLUMNS)) {
+    let mut notes = Vec::new();
+    for ((pos, vp), cell) in
+        a.plan
+            .positions
+            .iter()
+            .zip(&a.velocity)
+            .zip(cells(rect(VELOCITY), n, VEL_COLUMNS))
+    {
         let c = format!("{} {}", lang.pick("Пол.", "Пол.", "Pos."), pos.label);
-        views.push(View::centred(vp.figure.clone(), cell, Some(c))?);
+        match vp {
+            Some(vp) => views.push(View::centred(vp.figure.clone(), cell, Some(c))?),
+            None => notes.push(TextBlock {
+                at: cell.min + DVec2::new(2.0, cell.height() * 0.4),
+                lines: vec![
+                    c,
+                    lang.pick("план не существует:", "план не існує:", "no plan:")
+                        .into(),
+                    lang.pick("особое положение", "особливе положення", "toggle position")
+                        .into(),
+                ],
+                size_mm: 3.5,
+            }),
+        }
     }
-    for ((k, ap), cell) in a.acceleration.iter().zip(cells(rect(ACCELERATION), a.acceleration.len(), a.acceleration.len())) {
+    for ((k, ap), cell) in a.acceleration.iter().zip(cells(
+        rect(ACCELERATION),
+        a.acceleration.len(),
+        a.acceleration.len(),
+    )) {
         let label = &a.plan.positions[*k].label;
-        let c = format!("{} {label}, {}", lang.pick("План ускорений, пол.", "План прискорень, пол.", "Acceleration plan, pos."), a.scale_a.caption(lang));
+        let c = format!(
+            "{} {label}",
+            lang.pick(
+                "План ускорений, пол.",
+                "План прискорень, пол.",
+                "Acceleration plan, pos."
+            )
+        );
         views.push(View::centred(ap.figure.clone(), cell, Some(c))?);
     }
-    let mut lines = vec![format!("{}: {}", lang.pick("Планы скоростей", "Плани швидкостей", "Velocity plans"), a.scale_v.caption(lang))];
+    let mut lines = vec![format!(
+        "{}: {}; {}: {}",
+        lang.pick("Планы скоростей", "Плани швидкостей", "Velocity plans"),
+        a.scale_v.caption(lang),
+        lang.pick("планы ускорений", "плани прискорень", "acceleration plans"),
+        a.scale_a.caption(lang)
+    )];
     if let Some(d) = &a.diagrams {
         let r = rect(DIAGRAMS);
-        let split = r.min.y + r.height() * 0.62;
+        let (lo, hi) = stack_bounds(d);
+        // Centre the stack in its field, leaving the caption band under it.
+        let centre = (lo + hi) * 0.5;
+        let field_centre = r.center() - DVec2::new(0.0, CAPTION_BAND_MM * 0.5);
+        let origin = DVec2::new(field_centre.x - centre.x, field_centre.y + centre.y);
         let w = a.w1.abs();
-        let mu_v = d.first.scale.value() * w;
-        let mu_a = d.second.scale.value() * w * w;
         let dec = |x: f64| format_sig(x, 4, lang);
-        let c1 = format!("S, dS/dφ: μ_{{S}} = {} {}, μ_{{φ}} = {} {}, H_{{1}} = {} {}", dec(d.scales.y.value()), unit(lang, "м/мм", "m/mm"), dec(d.scales.x.value()), unit(lang, "рад/мм", "rad/mm"), dec(d.first.pole_mm), unit(lang, "мм", "mm"));
-        let c2 = format!("d²S/dφ²: H_{{2}} = {} {}", dec(d.second.pole_mm), unit(lang, "мм", "mm"));
-        views.push(View::centred(d.first_figure.clone(), Rect::new(r.min, DVec2::new(r.max.x, split)), Some(c1))?);
-        views.push(View::centred(d.second_figure.clone(), Rect::new(DVec2::new(r.min.x, split), r.max), Some(c2))?);
-        lines.push(format!("{} {}: μ_{{v}} = μ_{{S}}·ω_{{1}}/(H_{{1}}·μ_{{φ}}) = {} {}, μ_{{a}} = {} {}", lang.pick("Диаграммы точки", "Діаграми точки", "Diagrams of point"), d.point, dec(mu_v), Quantity::Velocity.unit(lang), dec(mu_a), Quantity::Acceleration.unit(lang)));
+        let c2 = format!(
+            "d²S/dφ²: H_{{2}} = {} {}",
+            dec(d.second.pole_mm),
+            unit(lang, "мм", "mm")
+        );
+        views.push(View {
+            figure: d.first_figure.clone(),
+            origin,
+            caption: None,
+        });
+        views.push(View {
+            figure: d.second_figure.clone(),
+            origin: origin + DVec2::new(d.second_at.x, -d.second_at.y),
+            caption: Some(c2),
+        });
+        lines.push(format!(
+            "{} {}: μ_{{S}} = {} {}, μ_{{φ}} = {} {}, H_{{1}} = {} {}; μ_{{v}} = μ_{{S}}·ω_{{1}}/(H_{{1}}·μ_{{φ}}) = {} {}, μ_{{a}} = {} {}",
+            lang.pick("Диаграммы точки", "Діаграми точки", "Diagrams of point"),
+            d.point,
+            dec(d.scales.y.value()),
+            unit(lang, "м/мм", "m/mm"),
+            dec(d.scales.x.value()),
+            unit(lang, "рад/мм", "rad/mm"),
+            dec(d.first.pole_mm),
+            unit(lang, "мм", "mm"),
+            dec(d.first.scale.value() * w),
+            Quantity::Velocity.unit(lang),
+            dec(d.second.scale.value() * w * w),
+            Quantity::Acceleration.unit(lang)
+        ));
     }
     if let Some((name, h)) = &a.hodograph {
-        let c = format!("{} {name}, {}", lang.pick("Годограф скорости точки", "Годограф швидкості точки", "Velocity hodograph of"), a.scale_v.caption(lang));
+        let c = format!(
+            "{} {name}, {}",
+            lang.pick(
+                "Годограф скорости точки",
+                "Годограф швидкості точки",
+                "Velocity hodograph of"
+            ),
+            h.scale.caption(lang)
+        );
         views.push(View::centred(h.clone(), rect(HODOGRAPH), Some(c))?);
     }
-    let texts = vec![TextBlock { at: DVec2::new(VELOCITY[0] + 2.0, VELOCITY[3] + 2.0), lines, size_mm: 3.5 }];
+    let mut texts = vec![TextBlock {
+        at: DVec2::new(TEXT_AT.0, TEXT_AT.1),
+        lines,
+        size_mm: 3.5,
+    }];
+    texts.extend(notes);
     let tables = tables(&a, scene, lang);
-    let index = scene.plates.iter().position(|k| *k == crate::scene::PlateKind::Kinematics).unwrap_or(0);
+    let index = scene
+        .plates
+        .iter()
+        .position(|k| *k == crate::scene::PlateKind::Kinematics)
+        .unwrap_or(0);
     Ok(Plate {
         name: "kinematics".into(),
-        sheet: Sheet { size: SheetSize::A1, landscape: true },
+        sheet: Sheet {
+            size: SheetSize::A1,
+            landscape: true,
+        },
         title_block: TitleBlock {
             title: scene.title.title.clone(),
-            sheet_title: lang.pick("Кинематический анализ", "Кінематичний аналіз", "Kinematic analysis").into(),
+            sheet_title: lang
+                .pick(
+                    "Кинематический анализ",
+                    "Кінематичний аналіз",
+                    "Kinematic analysis",
+                )
+                .into(),
             designation: scene.title.designation.clone(),
             author: scene.title.author.clone(),
             checked: scene.title.checked.clone(),
@@ -175,43 +319,100 @@ fn unit(lang: Lang, ru: &'static str, en: &'static str) -> &'static str {
     lang.pick(ru, ru, en)
 }
 
-/// The analytic table and the error estimates (section 1.6 of the seed), side by side.
+/// A table cell: 4 significant digits; what is zero to rounding is written 0.
+fn cell(x: f64, lang: Lang) -> String {
+    if x.abs() < 1e-9 {
+        "0".into()
+    } else {
+        format_sig(x, 4, lang)
+    }
+}
+
+/// The analytic table and the error estimates (section 1.6 of the seed), side by side, kept
+/// left of the title block.
 fn tables(a: &Analysis, scene: &Scene, lang: Lang) -> Vec<TableBlock> {
     let size = 2.5;
+    let errors_w = 86.0;
     let t = &a.table;
     let pos_w = 9.0;
-    let avail = 615.0 - 150.0;
-    let col_w = (avail - pos_w) / t.columns.len().max(1) as f64;
-    let col_w = col_w.clamp(11.0, 22.0);
+    let avail = TABLES_RIGHT - TABLES_AT.0 - errors_w - 8.0;
+    let col_w = ((avail - pos_w) / t.columns.len().max(1) as f64).clamp(12.0, 22.0);
     let shown = (((avail - pos_w) / col_w) as usize).min(t.columns.len());
     let mut columns = vec![("№".to_string(), pos_w)];
-    columns.extend(t.columns.iter().take(shown).map(|c| (format!("{}, {}", c.name, c.unit), col_w)));
+    columns.extend(
+        t.columns
+            .iter()
+            .take(shown)
+            .map(|c| (format!("{}, {}", c.name, c.unit), col_w)),
+    );
     let rows = t
         .rows
         .iter()
-        .map(|(label, vals)| std::iter::once(label.clone()).chain(vals.iter().take(shown).map(|v| v.map_or(String::new(), |x| format_sig(x, 4, lang)))).collect())
+        .map(|(label, vals)| {
+            std::iter::once(label.clone())
+                .chain(
+                    vals.iter()
+                        .take(shown)
+                        .map(|v| v.map_or(String::new(), |x| cell(x, lang))),
+                )
+                .collect()
+        })
         .collect();
     let analytic = TableBlock {
-        at: DVec2::new(TABLES_AT.0, TABLES_AT.1 + 4.0),
-        title: lang.pick("Аналитический расчёт", "Аналітичний розрахунок", "Analytic solution").into(),
+        at: DVec2::new(TABLES_AT.0, TABLES_AT.1),
+        title: lang
+            .pick(
+                "Аналитический расчёт",
+                "Аналітичний розрахунок",
+                "Analytic solution",
+            )
+            .into(),
         columns,
         rows,
         size_mm: size,
     };
-    let report = Report { scene: scene.stem.clone(), rows: a.rows.clone(), tables: Vec::new() };
+    let report = Report {
+        scene: scene.stem.clone(),
+        rows: a.rows.clone(),
+        tables: Vec::new(),
+        notes: Vec::new(),
+    };
     let summary = report.summary();
     let method = |m: Method| m.name(lang).to_string();
-    let err_rows: Vec<Vec<String>> = summary
+    let room = ((TABLES_END - TABLES_AT.1) / (size * 2.0)) as usize - 1;
+    // The diagrams first (the textbook's comparison), then the plans' largest errors.
+    let mut entries: Vec<_> = summary
         .entries
         .iter()
-        .filter(|e| e.quantity.starts_with("v_") || e.quantity.starts_with("a_") || e.quantity.starts_with("omega") || e.quantity.starts_with("eps"))
-        .take(22)
-        .map(|e| vec![e.quantity.replace('_', " "), method(e.method), format_sig(e.mean_abs_rel * 100.0, 3, lang), format_sig(e.max_abs_rel * 100.0, 3, lang), e.worst_position.clone()])
+        .filter(|e| !e.quantity.starts_with("s_"))
         .collect();
-    let x = TABLES_AT.0 + analytic.size().x + 8.0;
+    entries.sort_by(|a, b| {
+        (a.method == Method::Plan)
+            .cmp(&(b.method == Method::Plan))
+            .then(b.max_abs_rel.total_cmp(&a.max_abs_rel))
+    });
+    let err_rows: Vec<Vec<String>> = entries
+        .into_iter()
+        .take(room)
+        .map(|e| {
+            vec![
+                e.quantity.replace('_', " "),
+                method(e.method),
+                format_fixed(e.mean_abs_rel * 100.0, 2, lang),
+                format_fixed(e.max_abs_rel * 100.0, 2, lang),
+                e.worst_position.clone(),
+            ]
+        })
+        .collect();
     let errors = TableBlock {
-        at: DVec2::new(x, TABLES_AT.1 + 4.0),
-        title: lang.pick("Оценка погрешности (графически / аналитически)", "Оцінка похибки (графічно / аналітично)", "Errors (graphical / analytic)").into(),
+        at: DVec2::new(TABLES_RIGHT - errors_w, TABLES_AT.1),
+        title: lang
+            .pick(
+                "Погрешность графических методов",
+                "Похибка графічних методів",
+                "Errors of the graphical methods",
+            )
+            .into(),
         columns: vec![
             (lang.pick("величина", "величина", "quantity").into(), 24.0),
             (lang.pick("метод", "метод", "method").into(), 20.0),

@@ -34,6 +34,7 @@ pub fn request(scene: &Scene) -> PlanRequest {
             Start::Angle(a) => Some(a),
         },
         other_extreme: scene.positions.other_extreme,
+        continuity: scene.positions.continuity,
     }
 }
 
