@@ -20,6 +20,10 @@ use thiserror::Error;
 const PLAN_MM: f64 = 70.0;
 /// Preferred height of a diagram, mm.
 const DIAGRAM_MM: f64 = 35.0;
+/// Preferred peak ordinates of the rocker's ω diagram and its derivative, mm.
+const ROCKER_MM: f64 = 22.0;
+/// Abscissa of one crank turn on the rocker's ω diagram, mm.
+const ROCKER_TURN_MM: f64 = 120.0;
 /// Gap between stacked diagrams, mm.
 const DIAGRAM_GAP: f64 = 16.0;
 /// Length of the longest hodograph vector, mm.
@@ -127,6 +131,9 @@ pub struct Analysis {
     pub acceleration: Vec<(usize, KinPlan)>,
     /// The diagrams, when the mechanism has a point to chart.
     pub diagrams: Option<Diagrams>,
+    /// The angular-velocity diagram of the rocker from the velocity plans and its chord
+    /// derivative (seed 000 §1.5): the link, its μ_ω, and the figure.
+    pub rocker: Option<RockerDiagram>,
     /// The hodograph figure and its point's name.
     pub hodograph: Option<(String, Figure)>,
     /// Graphical against analytic, every reading.
@@ -278,6 +285,7 @@ pub fn analyse(m: &Mechanism, req: &KinRequest) -> Result<Analysis, KinError> {
         acceleration.push((k, ap));
     }
     let diagrams = diagrams(m, &plan, req, w1, &mut rows)?;
+    let rocker = rocker_diagram(m, &plan, &velocity, req, w1, &mut rows)?;
     let hodograph = hodograph(&plan, &velocity, req, scale_v)?;
     let table = analytic_table(prog, &plan, w1);
     Ok(Analysis {
@@ -289,6 +297,7 @@ pub fn analyse(m: &Mechanism, req: &KinRequest) -> Result<Analysis, KinError> {
         acceleration,
         diagrams,
         hodograph,
+        rocker,
         rows,
         table,
         refused,
@@ -517,6 +526,97 @@ fn diagrams(
     }))
 }
 
+/// The angular-velocity analogue of a rocker: ω(φ₁) charted from the velocity plans,
+/// differentiated by chords into ε (seed 000 §1.5).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RockerDiagram {
+    /// The rocker's link number.
+    pub link: usize,
+    /// μ_ω of the chart, (rad/s)/mm.
+    pub scale: Scale,
+    /// μ_φ of the abscissa.
+    pub scale_phi: Scale,
+    /// The chord derivative dω/dφ₁ (its scale: (rad/s)/rad per mm).
+    pub derivative: Derivative,
+    /// The figure: the ω chart and its derivative.
+    pub figure: Figure,
+}
+
+/// ω of the first rocker output at the numbered positions, read off the velocity plans, then
+/// differentiated by chords: ε = |ω₁|·dω/dθ (θ the crank's travel). The seed's ε = 12·0.32
+/// = 3.8 rad/s² (L574) forgets the factor ω₁; this does not.
+fn rocker_diagram(
+    m: &Mechanism,
+    plan: &PositionPlan,
+    velocity: &[Option<KinPlan>],
+    req: &KinRequest,
+    w1: f64,
+    rows: &mut Vec<Row>,
+) -> Result<Option<RockerDiagram>, KinError> {
+    let Some(link) = m.outputs.iter().find_map(|o| match o {
+        Output::Rocker { link } => Some(*link as usize),
+        Output::Slider { .. } => None,
+    }) else {
+        return Ok(None);
+    };
+    let numbered: Vec<(usize, &crate::linkage::PlanPosition)> = plan
+        .positions
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.label.parse::<u32>().is_ok())
+        .collect();
+    let omega: Option<Vec<f64>> = numbered
+        .iter()
+        .map(|(k, _)| velocity[*k].as_ref().map(|v| v.rate[link]))
+        .collect();
+    let (Some(omega), true) = (omega, numbered.len() >= 3) else {
+        return Ok(None);
+    };
+    let fail = |error| KinError::Diagram {
+        what: format!("ω_{link}"),
+        error,
+    };
+    let n = numbered.len();
+    let src = Diagram::new(0.0, TAU / n as f64, omega.clone(), true).map_err(fail)?;
+    let peak = omega.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let scale = Scale::round_for(peak.max(1e-12), ROCKER_MM, Quantity::AngularVelocity)
+        .ok_or_else(|| KinError::Request("no μ_ω".into()))?;
+    let scale_phi = Scale::new(TAU / ROCKER_TURN_MM, Quantity::Angle)
+        .ok_or_else(|| KinError::Request("no μ_φ".into()))?;
+    let scales = Scales {
+        x: scale_phi,
+        y: scale,
+    };
+    let h = calculus::pole_for(&src, scales, ROCKER_MM).map_err(fail)?;
+    let mu =
+        calculus::derivative_scale(scale, scale_phi, h, Quantity::AngularVelocity).map_err(fail)?;
+    let (w_lo, _) = extent(omega.iter(), scale);
+    let mut rec = Recorder::new("ω", mu, tol(), req.drafting);
+    let lay = Layout::new(DVec2::ZERO, DVec2::new(0.0, w_lo - DIAGRAM_GAP - ROCKER_MM))
+        .named("φ", &format!("ω_{{{link}}}"), &format!("dω_{{{link}}}/dφ"))
+        .pole_named("P_{ω}", "H_{ω}");
+    let derivative =
+        calculus::differentiate_chords(&mut rec, &src, scales, h, &lay).map_err(fail)?;
+    for (idx, (_, p)) in numbered.iter().enumerate() {
+        rows.push(Row {
+            quantity: format!("eps_{link}"),
+            position: p.label.clone(),
+            unit: "rad/s^2".into(),
+            method: Method::Diagram,
+            graphical: derivative.node[idx] * w1.abs(),
+            analytic: p.pose.ddangle[link] * w1 * w1,
+            conditioning: None,
+        });
+    }
+    Ok(Some(RockerDiagram {
+        link,
+        scale,
+        scale_phi,
+        derivative,
+        figure: rec.finish(),
+    }))
+}
+
 /// The hodograph of a point's velocity: the velocity vectors of every position from one pole
 /// (copied from the velocity plans), their ends joined by a smooth curve.
 fn hodograph(
@@ -635,10 +735,9 @@ fn analytic_table(prog: &Program, plan: &PositionPlan, w1: f64) -> Table {
                 cols.push(Box::new(move |p: &Pose| (p.p[a] - p.p[c]).length()));
                 columns.push(Column {
                     name: format!(
-                        "V_{}{}{}",
-                        crate::linkage::plain(&prog.names[a]),
-                        j,
-                        crate::linkage::plain(&prog.names[a])
+                        "V_{a}{j}{a}{}",
+                        crate::linkage::owner(prog, a),
+                        a = crate::linkage::plain(&prog.names[a])
                     ),
                     unit: "m/s".into(),
                 });

@@ -17,13 +17,14 @@ use crate::scene::Scene;
 use std::f64::consts::TAU;
 
 /// The fields of the A1 sheet, sheet mm (x0, y0, x1, y1), y down.
-const PLAN: [f64; 4] = [25.0, 22.0, 290.0, 300.0];
+const PLAN: [f64; 4] = [25.0, 22.0, 290.0, 272.0];
 const VELOCITY: [f64; 4] = [295.0, 22.0, 560.0, 420.0];
 const DIAGRAMS: [f64; 4] = [565.0, 22.0, 832.0, 372.0];
 const ACCELERATION: [f64; 4] = [565.0, 377.0, 832.0, 528.0];
-const HODOGRAPH: [f64; 4] = [25.0, 305.0, 290.0, 420.0];
+const HODOGRAPH: [f64; 4] = [25.0, 277.0, 120.0, 420.0];
+const ROCKER: [f64; 4] = [122.0, 277.0, 292.0, 420.0];
 const TEXT_AT: (f64, f64) = (28.0, 423.0);
-const TABLES_AT: (f64, f64) = (28.0, 443.0);
+const TABLES_X: f64 = 28.0;
 /// The tables end above this line (the title block starts at 534 mm).
 const TABLES_END: f64 = 584.0;
 /// Right edge of the tables' field (the title block starts at x = 651 mm).
@@ -263,15 +264,32 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
     }
     if let Some((name, h)) = &a.hodograph {
         let c = format!(
-            "{} {name}, {}",
-            lang.pick(
-                "Годограф скорости точки",
-                "Годограф швидкості точки",
-                "Velocity hodograph of"
-            ),
-            h.scale.caption(lang)
+            "{} v_{{{}}}",
+            lang.pick("Годограф", "Годограф", "Hodograph"),
+            crate::linkage::plain(name)
         );
         views.push(View::centred(h.clone(), rect(HODOGRAPH), Some(c))?);
+        lines.push(format!(
+            "{} v_{{{}}}: {}",
+            lang.pick("Годограф", "Годограф", "Hodograph"),
+            crate::linkage::plain(name),
+            h.scale.caption(lang)
+        ));
+    }
+    if let Some(r) = &a.rocker {
+        let c = format!("ω_{{{l}}}(φ), dω_{{{l}}}/dφ", l = r.link);
+        // Drawn where it fits; its rows are in the report either way.
+        if let Ok(v) = View::centred(r.figure.clone(), rect(ROCKER), Some(c)) {
+            views.push(v);
+            lines.push(format!(
+                "ω_{{{}}}(φ): {}, {}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ",
+                r.link,
+                r.scale.caption(lang),
+                r.scale_phi.caption(lang),
+                format_sig(r.derivative.pole_mm, 3, lang),
+                unit(lang, "мм", "mm")
+            ));
+        }
     }
     let mut texts = vec![TextBlock {
         at: DVec2::new(TEXT_AT.0, TEXT_AT.1),
@@ -279,7 +297,8 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
         size_mm: 3.5,
     }];
     texts.extend(notes);
-    let tables = tables(&a, scene, lang);
+    let tables_y = TEXT_AT.1 + texts[0].lines.len() as f64 * 7.0 + 6.0;
+    let tables = tables(&a, scene, lang, tables_y);
     let index = scene
         .plates
         .iter()
@@ -330,12 +349,12 @@ fn cell(x: f64, lang: Lang) -> String {
 
 /// The analytic table and the error estimates (section 1.6 of the seed), side by side, kept
 /// left of the title block.
-fn tables(a: &Analysis, scene: &Scene, lang: Lang) -> Vec<TableBlock> {
+fn tables(a: &Analysis, scene: &Scene, lang: Lang, y: f64) -> Vec<TableBlock> {
     let size = 2.5;
     let errors_w = 86.0;
     let t = &a.table;
     let pos_w = 9.0;
-    let avail = TABLES_RIGHT - TABLES_AT.0 - errors_w - 8.0;
+    let avail = TABLES_RIGHT - TABLES_X - errors_w - 8.0;
     let col_w = ((avail - pos_w) / t.columns.len().max(1) as f64).clamp(12.0, 22.0);
     let shown = (((avail - pos_w) / col_w) as usize).min(t.columns.len());
     let mut columns = vec![("№".to_string(), pos_w)];
@@ -359,7 +378,7 @@ fn tables(a: &Analysis, scene: &Scene, lang: Lang) -> Vec<TableBlock> {
         })
         .collect();
     let analytic = TableBlock {
-        at: DVec2::new(TABLES_AT.0, TABLES_AT.1),
+        at: DVec2::new(TABLES_X, y),
         title: lang
             .pick(
                 "Аналитический расчёт",
@@ -379,7 +398,7 @@ fn tables(a: &Analysis, scene: &Scene, lang: Lang) -> Vec<TableBlock> {
     };
     let summary = report.summary();
     let method = |m: Method| m.name(lang).to_string();
-    let room = ((TABLES_END - TABLES_AT.1) / (size * 2.0)) as usize - 1;
+    let room = (((TABLES_END - y) / (size * 2.0)) as usize).saturating_sub(1);
     // The diagrams first (the textbook's comparison), then the plans' largest errors.
     let mut entries: Vec<_> = summary
         .entries
@@ -405,7 +424,7 @@ fn tables(a: &Analysis, scene: &Scene, lang: Lang) -> Vec<TableBlock> {
         })
         .collect();
     let errors = TableBlock {
-        at: DVec2::new(TABLES_RIGHT - errors_w, TABLES_AT.1),
+        at: DVec2::new(TABLES_RIGHT - errors_w, y),
         title: lang
             .pick(
                 "Погрешность графических методов",
