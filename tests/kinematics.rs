@@ -349,3 +349,15 @@ fn extreme_positions_have_zero_rocker_velocity_on_the_plan() {
         );
     }
 }
+
+#[test]
+fn rocker_angular_velocity_diagram_gives_eps_with_the_factor_omega1() {
+    // Seed 000 §1.5 (L574) writes ε₈ = 12·0.32 = 3.8 rad/s², forgetting ω₁; the exact ε₃ at
+    // position 8 is 73.14 rad/s².
+    let v = report_json("constructions/shaper.toml", "0");
+    let r = find(&v, "eps_3", "8", "diagram");
+    let (g, a) = (num(r, "graphical"), num(r, "analytic"));
+    assert!((a.abs() - 73.14).abs() < 0.5, "analytic ε₃ at 8: {a}");
+    assert!((g - a).abs() < 0.25 * a.abs(), "diagram ε₃ at 8: {g} vs {a}");
+    assert!((g.abs() - 3.8).abs() > 30.0);
+}
