@@ -10,6 +10,7 @@
 //! binary; `plate` draws recorded figures; `report` formats the construction-against-analytic
 //! rows (`calculus`: graphical differentiation and integration of diagrams).
 
+pub mod bench;
 pub mod calculus;
 pub mod construct;
 pub mod geom;
