@@ -324,14 +324,19 @@ fn chord_rows(s: &Subject, c: &Charted, reps: Reps) -> Result<Vec<BenchRow>, Ben
 /// Analytic positions per second (positions with both analogues).
 fn kernel_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
     let count = reps.kernel.max(1);
-    let step = TAU / 3600.0;
+    // The crank steps by 0.1° in its own sense, the angle kept within one turn.
+    let step = s.crank_angle(TAU / 3600.0);
     let mut pose = Pose::default();
     s.prog
         .solve_into(0.0, false, &mut pose)
         .map_err(|u| s.fail(u.detail))?;
     let t = best_time(reps.best_of.max(3), || {
-        for k in 0..count {
-            let phi = s.crank_angle((k % 3600) as f64 * step);
+        let mut phi = 0.0f64;
+        for _ in 0..count {
+            phi += step;
+            if phi.abs() >= TAU {
+                phi = 0.0;
+            }
             s.prog.solve_into(black_box(phi), true, &mut pose)?;
             black_box(&pose);
         }
@@ -339,6 +344,23 @@ fn kernel_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
     })
     .map_err(|u: linkage::Unassembled| s.fail(u.detail))?;
     Ok(count as f64 / t)
+}
+
+/// The floor under the four-bar's kernel: its transcendental calls alone (the crank's sin and
+/// cos, the two links' atan2, the crossing angle's acos) per second.
+fn libm_floor_rate(reps: Reps) -> f64 {
+    let count = reps.kernel.max(1);
+    let step = TAU / 3600.0;
+    best_time(reps.best_of.max(3), || {
+        let mut phi = 0.0f64;
+        for _ in 0..count {
+            phi += step;
+            let (s, c) = black_box(phi).sin_cos();
+            black_box((s.atan2(c + 2.0), c.atan2(s - 2.0), (0.5 * s).acos()));
+        }
+        Ok::<_, ()>(())
+    })
+    .map_or(f64::NAN, |t| count as f64 / t)
 }
 
 /// Constructed positions (with velocity and acceleration plans) per second.
@@ -459,6 +481,11 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
                 .into(),
         });
     }
+    throughput.push(Throughput {
+        name: "libm floor four-bar".into(),
+        per_second: libm_floor_rate(reps),
+        note: "its transcendental calls alone: sin_cos + 2 atan2 + acos".into(),
+    });
     for s in [&four_bar, &shaper] {
         throughput.push(Throughput {
             name: format!("construction {}", s.scene.stem),

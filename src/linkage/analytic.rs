@@ -90,11 +90,13 @@ impl AngleJet {
     }
 }
 
-/// A line with its derivatives: point `g`, unit direction `e` (both as jets).
+/// A line with its derivatives: point `g`, unit direction `e` (both as jets), and the
+/// direction's angle `t`.
 #[derive(Debug, Clone, Copy)]
 struct LineJet {
     g: Jet,
     e: Jet,
+    t: AngleJet,
 }
 
 #[inline]
@@ -202,6 +204,8 @@ fn meet(l1: LineJet, l2: LineJet) -> Option<(Jet, f64)> {
 /// Mutable state of one solve, borrowed from a [`Pose`].
 struct State<'a> {
     pose: &'a mut Pose,
+    /// The program's frame directions with their unit vectors.
+    fixed_dirs: &'a [(f64, DVec2)],
 }
 
 impl State<'_> {
@@ -239,7 +243,19 @@ impl State<'_> {
     #[inline]
     fn dir(&self, d: &PDir) -> AngleJet {
         match *d {
-            PDir::Fixed(a) => AngleJet::at(a, 0.0, 0.0),
+            PDir::Fixed(a) => match self
+                .fixed_dirs
+                .iter()
+                .find(|f| f.0.to_bits() == a.to_bits())
+            {
+                Some(&(a, e)) => AngleJet {
+                    a,
+                    d: 0.0,
+                    dd: 0.0,
+                    e,
+                },
+                None => AngleJet::at(a, 0.0, 0.0),
+            },
             PDir::Along { from, to, angle } => {
                 heading(sub(self.jet(to), self.jet(from))).turned(angle)
             }
@@ -262,6 +278,7 @@ impl State<'_> {
                 dd: through.dd + n.dd * o,
             },
             e,
+            t,
         }
     }
     fn toggle(&mut self, group: usize, detail: String) {
@@ -306,7 +323,10 @@ impl Program {
         pose.crossing.clear();
         pose.toggle = None;
         pose.phi = phi;
-        let mut st = State { pose };
+        let mut st = State {
+            pose,
+            fixed_dirs: &self.fixed_dirs,
+        };
         for (k, f) in self.fixed.iter().enumerate() {
             st.set(
                 k,
@@ -474,8 +494,7 @@ impl Program {
                 };
                 st.set(joint, jx);
                 st.set_link(i, heading(sub(jx, ja)), a);
-                let tj = st.dir(&guide.dir);
-                st.set_link(j, tj, joint);
+                st.set_link(j, gl.t, joint);
                 st.pose
                     .crossing
                     .push((h.abs() / la).clamp(-1.0, 1.0).acos());
@@ -528,9 +547,8 @@ impl Program {
                 let (x, s) = meet(l1, l2)
                     .ok_or_else(|| fail(format!("the guides of links {i} and {j} are parallel")))?;
                 st.set(joint, x);
-                let (t1, t2) = (st.dir(&gi.dir), st.dir(&gj.dir));
-                st.set_link(i, t1, joint);
-                st.set_link(j, t2, joint);
+                st.set_link(i, l1.t, joint);
+                st.set_link(j, l2.t, joint);
                 st.pose.crossing.push(s);
             }
             PDyad::Rpp {
@@ -543,6 +561,7 @@ impl Program {
                 let l1 = LineJet {
                     g: st.jet(a),
                     e: unit(ts),
+                    t: ts,
                 };
                 let l2 = st.guide(&guide);
                 let (x, s) = meet(l1, l2).ok_or_else(|| {
@@ -552,8 +571,7 @@ impl Program {
                 })?;
                 st.set(joint, x);
                 st.set_link(i, ts, a);
-                let tg = st.dir(&guide.dir);
-                st.set_link(j, tg, joint);
+                st.set_link(j, l2.t, joint);
                 st.pose.crossing.push(s);
             }
         }
