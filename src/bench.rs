@@ -518,3 +518,34 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
         throughput,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_are_max_and_mean_or_nan_when_the_lengths_differ() {
+        assert_eq!(errors(&[1.0, 2.0], &[1.5, 1.0]), (1.0, 0.75));
+        assert!(errors(&[1.0], &[1.0, 2.0]).0.is_nan());
+        assert!(errors(&[], &[]).1.is_nan());
+    }
+
+    #[test]
+    fn a_missing_scene_is_an_error_naming_the_file() {
+        let opts = BenchOptions {
+            scenes: PathBuf::from("no-such-folder"),
+            quick: true,
+        };
+        let e = run(&opts).expect_err("no scenes");
+        assert!(e.to_string().contains("shaper.toml"), "{e}");
+    }
+
+    #[test]
+    fn the_machine_names_cores_and_profile() {
+        let m = machine();
+        assert!(
+            m.contains("core(s) available") && m.contains("build"),
+            "{m}"
+        );
+    }
+}
