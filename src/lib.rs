@@ -8,8 +8,10 @@
 //! Module map (dependencies point one way):
 //! `geom` ← `construct`, `scale` ← `calculus`, `linkage` ← `scene` ← `sheets` ← the `tmm`
 //! binary; `plate` draws recorded figures; `report` formats the construction-against-analytic
-//! rows (`calculus`: graphical differentiation and integration of diagrams).
+//! rows (`calculus`: graphical differentiation and integration of diagrams); `bench` times
+//! each method against its error (`tmm bench`).
 
+pub mod bench;
 pub mod calculus;
 pub mod construct;
 pub mod geom;

@@ -84,6 +84,22 @@ enum Command {
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
     },
+    /// Speed against error: sweep each method's resolution, time it against its error, and
+    /// write DIR/bench/bench.md, bench.json and bench.svg.
+    Bench {
+        /// Print the JSON instead of the Markdown table.
+        #[arg(long)]
+        json: bool,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Small repetition counts (rough times, same errors).
+        #[arg(long)]
+        quick: bool,
+        /// Folder holding shaper.toml and four-bar.toml.
+        #[arg(long, default_value = "constructions")]
+        scenes: PathBuf,
+    },
     /// List the scenes in constructions/ with their plates.
     List {
         /// Folder to list.
@@ -132,6 +148,12 @@ fn main() -> ExitCode {
             lang,
         } => report(&scene, format, drafting, lang),
         Command::List { dir } => list(&dir),
+        Command::Bench {
+            json,
+            out,
+            quick,
+            scenes,
+        } => bench(json, &out, quick, scenes),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -252,6 +274,24 @@ fn check(paths: &[PathBuf]) -> Result<(), Failure> {
         }
         emit(&format!("{}: ok", s.path.display()));
     }
+    Ok(())
+}
+
+fn bench(json: bool, out: &Path, quick: bool, scenes: PathBuf) -> Result<(), Failure> {
+    let opts = tmm::bench::BenchOptions { scenes, quick };
+    let b = tmm::bench::run(&opts).map_err(|e| Failure::construction(e.to_string()))?;
+    let (md, js) = (b.to_markdown(), b.to_json());
+    let dir = out.join("bench");
+    for (name, text) in [
+        ("bench.md", &md),
+        ("bench.json", &js),
+        ("bench.svg", &b.to_svg_plot()),
+    ] {
+        let path = dir.join(name);
+        tmm::plate::write_atomic(&path, text.as_bytes())
+            .map_err(|e| Failure::construction(format!("{}: cannot write: {e}", path.display())))?;
+    }
+    println!("{}", if json { js } else { md });
     Ok(())
 }
 

@@ -358,6 +358,9 @@ fn rocker_angular_velocity_diagram_gives_eps_with_the_factor_omega1() {
     let r = find(&v, "eps_3", "8", "diagram");
     let (g, a) = (num(r, "graphical"), num(r, "analytic"));
     assert!((a.abs() - 73.14).abs() < 0.5, "analytic ε₃ at 8: {a}");
-    assert!((g - a).abs() < 0.25 * a.abs(), "diagram ε₃ at 8: {g} vs {a}");
+    assert!(
+        (g - a).abs() < 0.25 * a.abs(),
+        "diagram ε₃ at 8: {g} vs {a}"
+    );
     assert!((g.abs() - 3.8).abs() > 30.0);
 }

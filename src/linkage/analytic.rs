@@ -25,6 +25,8 @@ pub struct Pose {
     pub dangle: Vec<f64>,
     /// d²θ/dφ₁² by link number.
     pub ddangle: Vec<f64>,
+    /// The unit vector (cos θ, sin θ) of each link's frame angle, by link number.
+    pub dir: Vec<DVec2>,
     /// Link frame origin (point index) by link number.
     pub origin: Vec<usize>,
     /// Per group: the acute crossing angle of its construction (radians; small = ill-conditioned).
@@ -52,54 +54,107 @@ struct Jet {
     dd: DVec2,
 }
 
-/// An angle with its first and second derivatives.
+/// An angle with its first and second derivatives, and its unit vector `e` = (cos a, sin a)
+/// (kept alongside so that no angle is turned back into a vector by sin and cos).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 struct AngleJet {
     a: f64,
     d: f64,
     dd: f64,
+    e: DVec2,
 }
 
-/// A line with its derivatives: point `g`, unit direction `e` (both as jets).
+impl AngleJet {
+    /// The angle `a` with its rates, its unit vector from sin and cos.
+    #[inline]
+    fn at(a: f64, d: f64, dd: f64) -> Self {
+        Self {
+            a,
+            d,
+            dd,
+            e: DVec2::from_angle(a),
+        }
+    }
+
+    /// Turned by the constant angle `by`.
+    #[inline]
+    fn turned(self, by: f64) -> Self {
+        if by == 0.0 {
+            return self;
+        }
+        Self {
+            a: self.a + by,
+            e: DVec2::from_angle(by).rotate(self.e),
+            ..self
+        }
+    }
+}
+
+/// A line with its derivatives: point `g`, unit direction `e` (both as jets), and the
+/// direction's angle `t`.
 #[derive(Debug, Clone, Copy)]
 struct LineJet {
     g: Jet,
     e: Jet,
+    t: AngleJet,
 }
 
 /// Relative slack with which a tangency survives rounding (a circle pair whose centre
 /// distance misses r₁ ± r₂ by 1e-12 of the radii touches).
 const TANGENT_REL: f64 = 1e-12;
 
+#[inline]
 fn cross(a: DVec2, b: DVec2) -> f64 {
     a.perp_dot(b)
 }
 
-/// Solve 2×2 `[r0; r1] x = rhs`; `None` when singular (a toggle position).
-fn solve2(r0: DVec2, r1: DVec2, rhs: DVec2) -> Option<DVec2> {
-    let det = cross(r0, r1);
-    let scale = r0.length() * r1.length();
-    if scale == 0.0 || det.abs() <= 1e-14 * scale {
-        return None;
-    }
-    Some(DVec2::new(rhs.x * r1.y - rhs.y * r0.y, r0.x * rhs.y - r1.x * rhs.x) / det)
+/// The 2×2 system `[r0; r1] x = rhs`, checked once and solved for several right-hand sides.
+#[derive(Clone, Copy)]
+struct Rows {
+    r0: DVec2,
+    r1: DVec2,
+    det: f64,
 }
 
-/// Angle of a vector jet with its rates.
+impl Rows {
+    /// `None` when singular (a toggle position): |det| ≤ 1e-14·|r0|·|r1|.
+    #[inline]
+    fn new(r0: DVec2, r1: DVec2) -> Option<Self> {
+        let det = cross(r0, r1);
+        let scale = r0.length() * r1.length();
+        if scale == 0.0 || det.abs() <= 1e-14 * scale {
+            return None;
+        }
+        Some(Self { r0, r1, det })
+    }
+
+    /// The solution for `rhs`.
+    #[inline]
+    fn solve(&self, rhs: DVec2) -> DVec2 {
+        let Self { r0, r1, det } = *self;
+        DVec2::new(rhs.x * r1.y - rhs.y * r0.y, r0.x * rhs.y - r1.x * rhs.x) / det
+    }
+}
+
+/// Angle of a vector jet with its rates; its unit vector is the vector over its length.
+#[inline]
 fn heading(v: Jet) -> AngleJet {
     let q = v.p.length_squared();
-    let d = cross(v.p, v.d) / q;
-    let dd = cross(v.p, v.dd) / q - 2.0 * d * v.p.dot(v.d) / q;
+    let inv = 1.0 / q;
+    let d = cross(v.p, v.d) * inv;
+    let dd = (cross(v.p, v.dd) - 2.0 * d * v.p.dot(v.d)) * inv;
     AngleJet {
         a: v.p.y.atan2(v.p.x),
         d,
         dd,
+        e: v.p / q.sqrt(),
     }
 }
 
 /// The unit vector at an angle jet, as a jet.
+#[inline]
 fn unit(t: AngleJet) -> Jet {
-    let e = DVec2::from_angle(t.a);
+    let e = t.e;
     let n = e.perp();
     Jet {
         p: e,
@@ -108,6 +163,7 @@ fn unit(t: AngleJet) -> Jet {
     }
 }
 
+#[inline]
 fn sub(a: Jet, b: Jet) -> Jet {
     Jet {
         p: a.p - b.p,
@@ -117,8 +173,9 @@ fn sub(a: Jet, b: Jet) -> Jet {
 }
 
 /// A point fixed in a link frame: origin + R(θ)·local.
+#[inline]
 fn carried(o: Jet, t: AngleJet, local: DVec2) -> Jet {
-    let r = DVec2::from_angle(t.a).rotate(local);
+    let r = t.e.rotate(local);
     Jet {
         p: o.p + r,
         d: o.d + r.perp() * t.d,
@@ -139,20 +196,24 @@ fn meet(l1: LineJet, l2: LineJet) -> Option<(Jet, f64)> {
         dd: e.dd.perp(),
     };
     let (n1, n2) = (n(l1.e), n(l2.e));
-    let x = solve2(n1.p, n2.p, DVec2::new(n1.p.dot(l1.g.p), n2.p.dot(l2.g.p)))?;
+    let rows = Rows::new(n1.p, n2.p)?;
+    let x = rows.solve(DVec2::new(n1.p.dot(l1.g.p), n2.p.dot(l2.g.p)));
     let rhs1 = |nn: Jet, g: Jet| nn.d.dot(g.p - x) + nn.p.dot(g.d);
-    let v = solve2(n1.p, n2.p, DVec2::new(rhs1(n1, l1.g), rhs1(n2, l2.g)))?;
+    let v = rows.solve(DVec2::new(rhs1(n1, l1.g), rhs1(n2, l2.g)));
     let rhs2 = |nn: Jet, g: Jet| nn.dd.dot(g.p - x) + 2.0 * nn.d.dot(g.d - v) + nn.p.dot(g.dd);
-    let a = solve2(n1.p, n2.p, DVec2::new(rhs2(n1, l1.g), rhs2(n2, l2.g)))?;
+    let a = rows.solve(DVec2::new(rhs2(n1, l1.g), rhs2(n2, l2.g)));
     Some((Jet { p: x, d: v, dd: a }, det.abs().min(1.0).asin()))
 }
 
 /// Mutable state of one solve, borrowed from a [`Pose`].
 struct State<'a> {
     pose: &'a mut Pose,
+    /// The program's frame directions with their unit vectors.
+    fixed_dirs: &'a [(f64, DVec2)],
 }
 
 impl State<'_> {
+    #[inline]
     fn jet(&self, k: usize) -> Jet {
         Jet {
             p: self.pose.p[k],
@@ -160,31 +221,47 @@ impl State<'_> {
             dd: self.pose.ddp[k],
         }
     }
+    #[inline]
     fn set(&mut self, k: usize, j: Jet) {
         self.pose.p[k] = j.p;
         self.pose.dp[k] = j.d;
         self.pose.ddp[k] = j.dd;
     }
+    #[inline]
     fn link(&self, l: usize) -> AngleJet {
         AngleJet {
             a: self.pose.angle[l],
             d: self.pose.dangle[l],
             dd: self.pose.ddangle[l],
+            e: self.pose.dir[l],
         }
     }
+    #[inline]
     fn set_link(&mut self, l: usize, t: AngleJet, origin: usize) {
         self.pose.angle[l] = t.a;
         self.pose.dangle[l] = t.d;
         self.pose.ddangle[l] = t.dd;
+        self.pose.dir[l] = t.e;
         self.pose.origin[l] = origin;
     }
+    #[inline]
     fn dir(&self, d: &PDir) -> AngleJet {
         match *d {
-            PDir::Fixed(a) => AngleJet { a, d: 0.0, dd: 0.0 },
+            PDir::Fixed(a) => match self
+                .fixed_dirs
+                .iter()
+                .find(|f| f.0.to_bits() == a.to_bits())
+            {
+                Some(&(a, e)) => AngleJet {
+                    a,
+                    d: 0.0,
+                    dd: 0.0,
+                    e,
+                },
+                None => AngleJet::at(a, 0.0, 0.0),
+            },
             PDir::Along { from, to, angle } => {
-                let mut t = heading(sub(self.jet(to), self.jet(from)));
-                t.a += angle;
-                t
+                heading(sub(self.jet(to), self.jet(from))).turned(angle)
             }
         }
     }
@@ -205,6 +282,7 @@ impl State<'_> {
                 dd: through.dd + n.dd * o,
             },
             e,
+            t,
         }
     }
     fn toggle(&mut self, group: usize, detail: String) {
@@ -244,11 +322,15 @@ impl Program {
         for v in [&mut pose.angle, &mut pose.dangle, &mut pose.ddangle] {
             v.resize(self.link_count, 0.0);
         }
+        pose.dir.resize(self.link_count, DVec2::X);
         pose.origin.resize(self.link_count, 0);
         pose.crossing.clear();
         pose.toggle = None;
         pose.phi = phi;
-        let mut st = State { pose };
+        let mut st = State {
+            pose,
+            fixed_dirs: &self.fixed_dirs,
+        };
         for (k, f) in self.fixed.iter().enumerate() {
             st.set(
                 k,
@@ -258,11 +340,7 @@ impl Program {
                 },
             );
         }
-        let crank = AngleJet {
-            a: phi,
-            d: 1.0,
-            dd: 0.0,
-        };
+        let crank = AngleJet::at(phi, 1.0, 0.0);
         let pin = carried(
             st.jet(self.centre),
             crank,
@@ -312,7 +390,8 @@ impl Program {
             } => {
                 let (ja, jb) = (st.jet(a), st.jet(b));
                 let ab = jb.p - ja.p;
-                let d = ab.length();
+                let d2 = ab.length_squared();
+                let d = d2.sqrt();
                 // A tangency lost to rounding is still a tangency (the change point).
                 let slack = TANGENT_REL * (la + lb);
                 if d > la + lb + slack || d < (la - lb).abs() - slack || d == 0.0 {
@@ -321,13 +400,14 @@ impl Program {
                         self.names[a], self.names[b]
                     )));
                 }
-                // Law of cosines at a.
-                let alpha = ((la * la + d * d - lb * lb) / (2.0 * la * d))
-                    .clamp(-1.0, 1.0)
-                    .acos();
-                let u = ab / d;
-                let left = ja.p + DVec2::from_angle(alpha).rotate(u) * la;
-                let right = ja.p + DVec2::from_angle(-alpha).rotate(u) * la;
+                // Law of cosines at a, in fractions of ab: the foot of the joint on ab at
+                // la·cos α/d, the joint la·sin α/d across (to the left for the left branch).
+                let inv = 1.0 / d2;
+                let along = (la * la - lb * lb + d2) * 0.5 * inv;
+                let across = (la * la * inv - along * along).max(0.0).sqrt();
+                let foot = ja.p + ab * along;
+                let left = foot + ab.perp() * across;
+                let right = foot - ab.perp() * across;
                 let pick_left = if continuity {
                     let q = st.pose.p[joint];
                     left.distance_squared(q) <= right.distance_squared(q)
@@ -343,13 +423,13 @@ impl Program {
                         self.names[joint]
                     )
                 };
-                let v = solve2(ra, rb, DVec2::new(ra.dot(ja.d), rb.dot(jb.d)));
-                let acc = v.and_then(|v| {
+                let acc = Rows::new(ra, rb).map(|rows| {
+                    let v = rows.solve(DVec2::new(ra.dot(ja.d), rb.dot(jb.d)));
                     let rhs = DVec2::new(
                         ra.dot(ja.dd) - (v - ja.d).length_squared(),
                         rb.dot(jb.dd) - (v - jb.d).length_squared(),
                     );
-                    solve2(ra, rb, rhs).map(|w| (v, w))
+                    (v, rows.solve(rhs))
                 });
                 let (v, w) = acc.unwrap_or_else(|| {
                     st.toggle(group, toggle());
@@ -359,7 +439,7 @@ impl Program {
                 st.set(joint, jx);
                 st.set_link(i, heading(sub(jx, ja)), a);
                 st.set_link(j, heading(sub(jx, jb)), b);
-                let g = ((la * la + lb * lb - d * d) / (2.0 * la * lb))
+                let g = ((la * la + lb * lb - d2) / (2.0 * la * lb))
                     .clamp(-1.0, 1.0)
                     .acos();
                 st.pose.crossing.push(g.min(std::f64::consts::PI - g));
@@ -420,8 +500,7 @@ impl Program {
                 };
                 st.set(joint, jx);
                 st.set_link(i, heading(sub(jx, ja)), a);
-                let tj = st.dir(&guide.dir);
-                st.set_link(j, tj, joint);
+                st.set_link(j, gl.t, joint);
                 st.pose
                     .crossing
                     .push((h.abs() / la).clamp(-1.0, 1.0).acos());
@@ -451,15 +530,19 @@ impl Program {
                         self.names[a], self.names[c]
                     )));
                 }
+                // sin γ = u, cos γ = √k.
+                let sk = k.sqrt();
                 let gamma = AngleJet {
                     a: u.asin(),
-                    d: du / k.sqrt(),
-                    dd: ddu / k.sqrt() + u * du * du / (k * k.sqrt()),
+                    d: du / sk,
+                    dd: ddu / sk + u * du * du / (k * sk),
+                    e: DVec2::new(sk, u),
                 };
                 let th = AngleJet {
                     a: beta.a + gamma.a,
                     d: beta.d + gamma.d,
                     dd: beta.dd + gamma.dd,
+                    e: gamma.e.rotate(beta.e),
                 };
                 st.set_link(i, th, a);
                 st.set_link(j, th, c);
@@ -470,9 +553,8 @@ impl Program {
                 let (x, s) = meet(l1, l2)
                     .ok_or_else(|| fail(format!("the guides of links {i} and {j} are parallel")))?;
                 st.set(joint, x);
-                let (t1, t2) = (st.dir(&gi.dir), st.dir(&gj.dir));
-                st.set_link(i, t1, joint);
-                st.set_link(j, t2, joint);
+                st.set_link(i, l1.t, joint);
+                st.set_link(j, l2.t, joint);
                 st.pose.crossing.push(s);
             }
             PDyad::Rpp {
@@ -485,6 +567,7 @@ impl Program {
                 let l1 = LineJet {
                     g: st.jet(a),
                     e: unit(ts),
+                    t: ts,
                 };
                 let l2 = st.guide(&guide);
                 let (x, s) = meet(l1, l2).ok_or_else(|| {
@@ -494,8 +577,7 @@ impl Program {
                 })?;
                 st.set(joint, x);
                 st.set_link(i, ts, a);
-                let tg = st.dir(&guide.dir);
-                st.set_link(j, tg, joint);
+                st.set_link(j, l2.t, joint);
                 st.pose.crossing.push(s);
             }
         }

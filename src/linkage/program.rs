@@ -144,6 +144,9 @@ pub struct Program {
     pub ops: Vec<Op>,
     /// Largest link number + 1.
     pub link_count: usize,
+    /// Every frame direction of the operations with its unit vector (cos, sin), computed
+    /// once here so that solving a position does not take their sines again.
+    pub(super) fixed_dirs: Vec<(f64, DVec2)>,
 }
 
 impl Program {
@@ -349,6 +352,23 @@ impl Program {
             )));
         }
         let link_count = links_known.iter().copied().max().unwrap_or(1) as usize + 1;
+        let mut fixed_dirs: Vec<(f64, DVec2)> = Vec::new();
+        for op in &ops {
+            let Op::Dyad { dyad, .. } = op else { continue };
+            let dirs = match *dyad {
+                PDyad::Rrp { guide, .. } => [Some(guide.dir), None],
+                PDyad::Prp { gi, gj, .. } => [Some(gi.dir), Some(gj.dir)],
+                PDyad::Rpp { slide, guide, .. } => [Some(slide), Some(guide.dir)],
+                PDyad::Rrr { .. } | PDyad::Rpr { .. } => [None, None],
+            };
+            for d in dirs.into_iter().flatten() {
+                if let PDir::Fixed(a) = d {
+                    if !fixed_dirs.iter().any(|f| f.0.to_bits() == a.to_bits()) {
+                        fixed_dirs.push((a, DVec2::from_angle(a)));
+                    }
+                }
+            }
+        }
         Ok(Self {
             names,
             fixed,
@@ -358,6 +378,7 @@ impl Program {
             crank_link: m.crank.link,
             ops,
             link_count,
+            fixed_dirs,
         })
     }
 }

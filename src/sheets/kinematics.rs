@@ -400,26 +400,30 @@ fn tables(a: &Analysis, scene: &Scene, lang: Lang, y: f64) -> Vec<TableBlock> {
     let method = |m: Method| m.name(lang).to_string();
     let room = (((TABLES_END - y) / (size * 2.0)) as usize).saturating_sub(1);
     // The diagrams first (the textbook's comparison), then the plans' largest errors.
+    // Diagrams first (the textbook's comparison), then by the error as displayed (0.01 %),
+    // ties in report order: rounding noise must not reorder the table.
+    let shown_pct = |x: f64| (x * 1e4).round() as i64;
     let mut entries: Vec<_> = summary
         .entries
         .iter()
         .filter(|e| !e.quantity.starts_with("s_"))
         .collect();
-    entries.sort_by(|a, b| {
-        (a.method == Method::Plan)
-            .cmp(&(b.method == Method::Plan))
-            .then(b.max_abs_rel.total_cmp(&a.max_abs_rel))
-    });
+    entries.sort_by_key(|e| (e.method == Method::Plan, -shown_pct(e.max_abs_rel)));
     let err_rows: Vec<Vec<String>> = entries
         .into_iter()
         .take(room)
         .map(|e| {
+            let worst = if shown_pct(e.max_abs_rel) > 0 {
+                e.worst_position.clone()
+            } else {
+                "—".into()
+            };
             vec![
                 e.quantity.replace('_', " "),
                 method(e.method),
                 format_fixed(e.mean_abs_rel * 100.0, 2, lang),
                 format_fixed(e.max_abs_rel * 100.0, 2, lang),
-                e.worst_position.clone(),
+                worst,
             ]
         })
         .collect();
