@@ -38,7 +38,10 @@ use thiserror::Error;
 pub const CHORD_RESOLUTIONS: [usize; 6] = [12, 24, 48, 96, 192, 360];
 
 /// The plates timed, by scene stem: one line per plate.
-const PLATES: &[(&str, PlateKind)] = &[("shaper", PlateKind::Positions), ("shaper", PlateKind::Kinematics)];
+const PLATES: &[(&str, PlateKind)] = &[
+    ("shaper", PlateKind::Positions),
+    ("shaper", PlateKind::Kinematics),
+];
 
 /// What to run.
 #[derive(Debug, Clone, PartialEq)]

@@ -196,6 +196,22 @@ fn analytic(pose: &Pose, w1: f64, what: Measure, kind: PlanKind) -> f64 {
     }
 }
 
+/// The pole distance H (given, or chosen so the derivative's largest ordinate is about
+/// `preferred` mm) and the derivative's scale μ_y/(H·μ_x).
+fn pole_and_scale(
+    given: Option<f64>,
+    src: &Diagram,
+    scales: Scales,
+    preferred: f64,
+    q: Quantity,
+) -> Result<(f64, Scale), calculus::CalculusError> {
+    let h = match given {
+        Some(h) => h,
+        None => calculus::pole_for(src, scales, preferred)?,
+    };
+    Ok((h, calculus::derivative_scale(scales.y, scales.x, h, q)?))
+}
+
 /// Lowest and highest drawn ordinate (mm) of physical values at scale `mu`, with 0 included.
 fn extent<'a>(values: impl Iterator<Item = &'a f64>, mu: Scale) -> (f64, f64) {
     values.fold((0.0f64, 0.0f64), |(lo, hi), v| {
@@ -447,11 +463,7 @@ fn diagrams(
         x: scale_phi,
         y: scale_s,
     };
-    let h1 = match req.pole_h1 {
-        Some(h) => h,
-        None => calculus::pole_for(&src, scales, DIAGRAM_MM).map_err(|e| fail("dS/dφ", e))?,
-    };
-    let mu1 = calculus::derivative_scale(scale_s, scale_phi, h1, Quantity::Length)
+    let (h1, mu1) = pole_and_scale(req.pole_h1, &src, scales, DIAGRAM_MM, Quantity::Length)
         .map_err(|e| fail("dS/dφ", e))?;
     // The textbook's stack: S on top, dS/dφ under it, d²S/dφ² under that; the second
     // differentiation's chords are drawn on the dS/dφ curve itself (its figure's source axes
@@ -475,11 +487,7 @@ fn diagrams(
         x: scale_phi,
         y: mu1,
     };
-    let h2 = match req.pole_h2 {
-        Some(h) => h,
-        None => calculus::pole_for(&d1, scales2, DIAGRAM_MM).map_err(|e| fail("d²S/dφ²", e))?,
-    };
-    let mu2 = calculus::derivative_scale(mu1, scale_phi, h2, Quantity::Length)
+    let (h2, mu2) = pole_and_scale(req.pole_h2, &d1, scales2, DIAGRAM_MM, Quantity::Length)
         .map_err(|e| fail("d²S/dφ²", e))?;
     let (_, d2_hi) = scratch(mu2, &d1, scales2, h2)?;
     let mut rec2 = Recorder::new("d²S/dφ²", mu2, tol(), req.drafting);
@@ -587,9 +595,8 @@ fn rocker_diagram(
         x: scale_phi,
         y: scale,
     };
-    let h = calculus::pole_for(&src, scales, ROCKER_MM).map_err(fail)?;
-    let mu =
-        calculus::derivative_scale(scale, scale_phi, h, Quantity::AngularVelocity).map_err(fail)?;
+    let (h, mu) =
+        pole_and_scale(None, &src, scales, ROCKER_MM, Quantity::AngularVelocity).map_err(fail)?;
     let (w_lo, _) = extent(omega.iter(), scale);
     let mut rec = Recorder::new("ω", mu, tol(), req.drafting);
     let lay = Layout::new(DVec2::ZERO, DVec2::new(0.0, w_lo - DIAGRAM_GAP - ROCKER_MM))
