@@ -718,7 +718,7 @@ fn analytic_table(prog: &Program, plan: &PositionPlan, w1: f64) -> Table {
                 unit: "°".into(),
             });
             cols.push(Box::new(move |p: &Pose| {
-                p.angle[l].to_degrees().rem_euclid(360.0)
+                p.angle(l).to_degrees().rem_euclid(360.0)
             }));
             columns.push(Column {
                 name: format!("ω_{l}"),

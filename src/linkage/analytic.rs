@@ -19,8 +19,6 @@ pub struct Pose {
     pub dp: Vec<DVec2>,
     /// d²p/dφ₁², m/rad².
     pub ddp: Vec<DVec2>,
-    /// Link frame angle by link number, radians.
-    pub angle: Vec<f64>,
     /// dθ/dφ₁ by link number.
     pub dangle: Vec<f64>,
     /// d²θ/dφ₁² by link number.
@@ -29,11 +27,20 @@ pub struct Pose {
     pub dir: Vec<DVec2>,
     /// Link frame origin (point index) by link number.
     pub origin: Vec<usize>,
-    /// Per group: the acute crossing angle of its construction (radians; small = ill-conditioned).
-    pub crossing: Vec<f64>,
+    /// Per group: the sine of the acute crossing angle of its construction (small =
+    /// ill-conditioned; 0 at a tangency).
+    pub crossing_sin: Vec<f64>,
     /// A dyad at its toggle (folded) position: the position exists but its analogues are not
     /// determined; `dp`, `ddp` and the angle rates downstream of it are not meaningful.
     pub toggle: Option<Unassembled>,
+}
+
+impl Pose {
+    /// The frame angle of link `l`, radians in (−π, π], from its unit vector.
+    pub fn angle(&self, l: usize) -> f64 {
+        let e = self.dir[l];
+        e.y.atan2(e.x)
+    }
 }
 
 /// Why a dyad cannot be assembled at this crank angle (or, in [`Pose::toggle`], why its
@@ -58,7 +65,6 @@ struct Jet {
 /// (kept alongside so that no angle is turned back into a vector by sin and cos).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 struct AngleJet {
-    a: f64,
     d: f64,
     dd: f64,
     e: DVec2,
@@ -69,7 +75,6 @@ impl AngleJet {
     #[inline]
     fn at(a: f64, d: f64, dd: f64) -> Self {
         Self {
-            a,
             d,
             dd,
             e: DVec2::from_angle(a),
@@ -83,7 +88,6 @@ impl AngleJet {
             return self;
         }
         Self {
-            a: self.a + by,
             e: DVec2::from_angle(by).rotate(self.e),
             ..self
         }
@@ -144,7 +148,6 @@ fn heading(v: Jet) -> AngleJet {
     let d = cross(v.p, v.d) * inv;
     let dd = (cross(v.p, v.dd) - 2.0 * d * v.p.dot(v.d)) * inv;
     AngleJet {
-        a: v.p.y.atan2(v.p.x),
         d,
         dd,
         e: v.p / q.sqrt(),
@@ -183,7 +186,7 @@ fn carried(o: Jet, t: AngleJet, local: DVec2) -> Jet {
     }
 }
 
-/// Intersection of two moving lines with its rates and the sine of the crossing angle.
+/// Intersection of two moving lines with its rates and the sine of their crossing angle.
 fn meet(l1: LineJet, l2: LineJet) -> Option<(Jet, f64)> {
     let det = cross(l1.e.p, l2.e.p);
     if det.abs() <= 1e-12 {
@@ -202,7 +205,7 @@ fn meet(l1: LineJet, l2: LineJet) -> Option<(Jet, f64)> {
     let v = rows.solve(DVec2::new(rhs1(n1, l1.g), rhs1(n2, l2.g)));
     let rhs2 = |nn: Jet, g: Jet| nn.dd.dot(g.p - x) + 2.0 * nn.d.dot(g.d - v) + nn.p.dot(g.dd);
     let a = rows.solve(DVec2::new(rhs2(n1, l1.g), rhs2(n2, l2.g)));
-    Some((Jet { p: x, d: v, dd: a }, det.abs().min(1.0).asin()))
+    Some((Jet { p: x, d: v, dd: a }, det.abs().min(1.0)))
 }
 
 /// Mutable state of one solve, borrowed from a [`Pose`].
@@ -230,7 +233,6 @@ impl State<'_> {
     #[inline]
     fn link(&self, l: usize) -> AngleJet {
         AngleJet {
-            a: self.pose.angle[l],
             d: self.pose.dangle[l],
             dd: self.pose.ddangle[l],
             e: self.pose.dir[l],
@@ -238,7 +240,6 @@ impl State<'_> {
     }
     #[inline]
     fn set_link(&mut self, l: usize, t: AngleJet, origin: usize) {
-        self.pose.angle[l] = t.a;
         self.pose.dangle[l] = t.d;
         self.pose.ddangle[l] = t.dd;
         self.pose.dir[l] = t.e;
@@ -252,12 +253,7 @@ impl State<'_> {
                 .iter()
                 .find(|f| f.0.to_bits() == a.to_bits())
             {
-                Some(&(a, e)) => AngleJet {
-                    a,
-                    d: 0.0,
-                    dd: 0.0,
-                    e,
-                },
+                Some(&(_, e)) => AngleJet { d: 0.0, dd: 0.0, e },
                 None => AngleJet::at(a, 0.0, 0.0),
             },
             PDir::Along { from, to, angle } => {
@@ -316,15 +312,18 @@ impl Program {
     ) -> Result<(), Unassembled> {
         let n = self.names.len();
         let continuity = continuity && pose.p.len() == n;
-        for v in [&mut pose.p, &mut pose.dp, &mut pose.ddp] {
-            v.resize(n, DVec2::ZERO);
+        // Size the buffers once; a pose reused for the same program keeps them.
+        if pose.p.len() != n || pose.dir.len() != self.link_count {
+            for v in [&mut pose.p, &mut pose.dp, &mut pose.ddp] {
+                v.resize(n, DVec2::ZERO);
+            }
+            for v in [&mut pose.dangle, &mut pose.ddangle] {
+                v.resize(self.link_count, 0.0);
+            }
+            pose.dir.resize(self.link_count, DVec2::X);
+            pose.origin.resize(self.link_count, 0);
         }
-        for v in [&mut pose.angle, &mut pose.dangle, &mut pose.ddangle] {
-            v.resize(self.link_count, 0.0);
-        }
-        pose.dir.resize(self.link_count, DVec2::X);
-        pose.origin.resize(self.link_count, 0);
-        pose.crossing.clear();
+        pose.crossing_sin.clear();
         pose.toggle = None;
         pose.phi = phi;
         let mut st = State {
@@ -439,10 +438,9 @@ impl Program {
                 st.set(joint, jx);
                 st.set_link(i, heading(sub(jx, ja)), a);
                 st.set_link(j, heading(sub(jx, jb)), b);
-                let g = ((la * la + lb * lb - d2) / (2.0 * la * lb))
-                    .clamp(-1.0, 1.0)
-                    .acos();
-                st.pose.crossing.push(g.min(std::f64::consts::PI - g));
+                // The circles cross at the angle between the radii: cos g by the law of cosines.
+                let cos_g = ((la * la + lb * lb - d2) / (2.0 * la * lb)).clamp(-1.0, 1.0);
+                st.pose.crossing_sin.push((1.0 - cos_g * cos_g).sqrt());
             }
             PDyad::Rrp {
                 a,
@@ -501,9 +499,7 @@ impl Program {
                 st.set(joint, jx);
                 st.set_link(i, heading(sub(jx, ja)), a);
                 st.set_link(j, gl.t, joint);
-                st.pose
-                    .crossing
-                    .push((h.abs() / la).clamp(-1.0, 1.0).acos());
+                st.pose.crossing_sin.push(half / la);
             }
             PDyad::Rpr { a, c, offset } => {
                 let w = sub(st.jet(a), st.jet(c));
@@ -533,20 +529,18 @@ impl Program {
                 // sin γ = u, cos γ = √k.
                 let sk = k.sqrt();
                 let gamma = AngleJet {
-                    a: u.asin(),
                     d: du / sk,
                     dd: ddu / sk + u * du * du / (k * sk),
                     e: DVec2::new(sk, u),
                 };
                 let th = AngleJet {
-                    a: beta.a + gamma.a,
                     d: beta.d + gamma.d,
                     dd: beta.dd + gamma.dd,
                     e: gamma.e.rotate(beta.e),
                 };
                 st.set_link(i, th, a);
                 st.set_link(j, th, c);
-                st.pose.crossing.push(std::f64::consts::FRAC_PI_2);
+                st.pose.crossing_sin.push(1.0);
             }
             PDyad::Prp { gi, gj, joint } => {
                 let (l1, l2) = (st.guide(&gi), st.guide(&gj));
@@ -555,7 +549,7 @@ impl Program {
                 st.set(joint, x);
                 st.set_link(i, l1.t, joint);
                 st.set_link(j, l2.t, joint);
-                st.pose.crossing.push(s);
+                st.pose.crossing_sin.push(s);
             }
             PDyad::Rpp {
                 a,
@@ -578,7 +572,7 @@ impl Program {
                 st.set(joint, x);
                 st.set_link(i, ts, a);
                 st.set_link(j, l2.t, joint);
-                st.pose.crossing.push(s);
+                st.pose.crossing_sin.push(s);
             }
         }
         Ok(())
@@ -636,7 +630,7 @@ mod tests {
                 for l in 1..prog.link_count {
                     // Unwrap the angles around the middle one.
                     let f =
-                        |p: &Pose| q[2].angle[l] + crate::geom::wrap_pi(p.angle[l] - q[2].angle[l]);
+                        |p: &Pose| q[2].angle(l) + crate::geom::wrap_pi(p.angle(l) - q[2].angle(l));
                     assert!(close(d5(&f), q[2].dangle[l], 1e-8), "link {l} at {phi}");
                     assert!(
                         close(dd5(&f), q[2].ddangle[l], 1e-6),

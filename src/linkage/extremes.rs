@@ -42,7 +42,7 @@ impl OutputCoord {
     pub fn eval(&self, pose: &Pose, reference: f64) -> (f64, f64) {
         match *self {
             OutputCoord::Rocker(l) => (
-                reference + wrap_pi(pose.angle[l] - reference),
+                reference + wrap_pi(pose.angle(l) - reference),
                 pose.dangle[l],
             ),
             OutputCoord::Slider(i, d) => (pose.p[i].dot(d), pose.dp[i].dot(d)),
