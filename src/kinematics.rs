@@ -56,6 +56,8 @@ pub struct KinRequest {
     pub pole_h2: Option<f64>,
     /// The point whose velocity hodograph is drawn.
     pub hodograph: Option<String>,
+    /// Differentiate the diagrams by tangents instead of chords.
+    pub tangents: bool,
     /// The drafting model for every reading.
     pub drafting: Drafting,
 }
@@ -480,8 +482,12 @@ fn diagrams(
     let mut rec1 = Recorder::new("dS/dφ", mu1, tol(), req.drafting);
     let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
         .pole_named("P_1", "H_1");
-    let first = calculus::differentiate_chords(&mut rec1, &src, scales, h1, &lay1)
-        .map_err(|e| fail("dS/dφ", e))?;
+    let differentiate = if req.tangents {
+        calculus::differentiate_tangents
+    } else {
+        calculus::differentiate_chords
+    };
+    let first = differentiate(&mut rec1, &src, scales, h1, &lay1).map_err(|e| fail("dS/dφ", e))?;
     let d1 = first.diagram().map_err(|e| fail("dS/dφ", e))?;
     let scales2 = Scales {
         x: scale_phi,
@@ -495,8 +501,8 @@ fn diagrams(
         .with_source(false)
         .named("φ", "dS/dφ", "d²S/dφ²")
         .pole_named("P_2", "H_2");
-    let second = calculus::differentiate_chords(&mut rec2, &d1, scales2, h2, &lay2)
-        .map_err(|e| fail("d²S/dφ²", e))?;
+    let second =
+        differentiate(&mut rec2, &d1, scales2, h2, &lay2).map_err(|e| fail("d²S/dφ²", e))?;
     // Rows: S, v = |ω₁|·dS/dθ, a = ω₁²·d²S/dθ² at the numbered positions.
     let q = crate::linkage::plain(&name);
     for (idx, p) in numbered.iter().enumerate() {

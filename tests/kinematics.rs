@@ -364,3 +364,41 @@ fn rocker_angular_velocity_diagram_gives_eps_with_the_factor_omega1() {
     );
     assert!((g.abs() - 3.8).abs() > 30.0);
 }
+
+#[test]
+fn tangent_method_is_an_option_of_the_scene() {
+    let dir = std::env::temp_dir().join(format!("tmm-tangents-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).unwrap();
+    let scene = dir.join("shaper-tangents.toml");
+    std::fs::write(
+        &scene,
+        text.replace(
+            "[kinematics]\n",
+            "[kinematics]\ndifferentiation = \"tangents\"\n",
+        ),
+    )
+    .unwrap();
+    let v = report_json(scene.to_str().unwrap(), "0");
+    let chords = report_json("constructions/shaper.toml", "0");
+    let t = num(find(&v, "v_S5", "4", "diagram"), "graphical");
+    let c = num(find(&chords, "v_S5", "4", "diagram"), "graphical");
+    let a = num(find(&v, "v_S5", "4", "diagram"), "analytic");
+    assert!((t - a).abs() < 0.03 * a, "tangents: {t} vs {a}");
+    assert!(t != c, "the tangent method must differ from the chords");
+    // A misspelt method is refused naming the key.
+    std::fs::write(
+        &scene,
+        text.replace(
+            "[kinematics]\n",
+            "[kinematics]\ndifferentiation = \"secants\"\n",
+        ),
+    )
+    .unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .args(["check", scene.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("kinematics.differentiation"));
+}

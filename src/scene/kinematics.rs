@@ -59,6 +59,18 @@ pub(crate) fn kinematics(
         pole_h1: check.positive_opt(&key("pole_h1"), raw.pole_h1, "a pole distance H₁ > 0 mm"),
         pole_h2: check.positive_opt(&key("pole_h2"), raw.pole_h2, "a pole distance H₂ > 0 mm"),
         hodograph: point(check, &key("hodograph"), raw.hodograph, names.as_deref()),
+        tangents: match raw.differentiation.as_deref() {
+            None | Some("chords") => false,
+            Some("tangents") => true,
+            Some(other) => {
+                check.push(
+                    key("differentiation"),
+                    Some(quoted(other)),
+                    "expected \"chords\" or \"tangents\"",
+                );
+                false
+            }
+        },
     }
 }
 

@@ -79,6 +79,9 @@ pub struct KinematicsSpec {
     pub pole_h2: Option<f64>,
     /// The point whose velocity hodograph is drawn (`S_3`).
     pub hodograph: Option<String>,
+    /// Graphical differentiation by the method of tangents instead of chords
+    /// (`differentiation = "tangents"`; default `"chords"`).
+    pub tangents: bool,
 }
 
 /// Text of the title block (основная надпись), as the student fills it.

@@ -190,6 +190,7 @@ pub(crate) struct RawKinematics {
     pub pole_h1: Option<f64>,
     pub pole_h2: Option<f64>,
     pub hodograph: Option<String>,
+    pub differentiation: Option<String>,
 }
 
 impl fmt::Display for RawDir {

@@ -73,6 +73,7 @@ pub fn kin_request(
         pole_h1: k.pole_h1,
         pole_h2: k.pole_h2,
         hodograph: k.hodograph.clone(),
+        tangents: k.tangents,
         drafting,
     })
 }
