@@ -31,33 +31,44 @@ const HODOGRAPH_MM: f64 = 45.0;
 /// Abscissa of one crank turn on a diagram when μ_φ is not given, mm.
 const TURN_MM: f64 = 240.0;
 
-/// What to analyse and how to draw it; `None` fields are chosen the textbook way.
+/// The `[kinematics]` section: scales and choices of the kinematic analysis. Every field is
+/// optional; `None` leaves the choice to the analysis.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct KinematicsSpec {
+    /// μ_v of the velocity plans, (m/s)/mm.
+    pub scale_v: Option<Scale>,
+    /// μ_a of the acceleration plans, (m/s²)/mm.
+    pub scale_a: Option<Scale>,
+    /// The positions whose acceleration plans are drawn, by label (`"3"`, `"8′"`); 1–4
+    /// entries. A numbered label is at most the position count; a primed (extreme) label is
+    /// checked against the plan of positions when it exists.
+    pub acceleration_positions: Option<Vec<String>>,
+    /// The point whose displacement S(φ₁) is charted and differentiated (`S_5`).
+    pub diagram_point: Option<String>,
+    /// μ_S of the displacement chart, m/mm.
+    pub scale_s: Option<Scale>,
+    /// μ_φ of the crank-angle axis of the charts, rad/mm.
+    pub scale_phi: Option<Scale>,
+    /// Pole distance H₁ of the first graphical differentiation, drawing mm.
+    pub pole_h1: Option<f64>,
+    /// Pole distance H₂ of the second graphical differentiation, drawing mm.
+    pub pole_h2: Option<f64>,
+    /// The point whose velocity hodograph is drawn (`S_3`).
+    pub hodograph: Option<String>,
+    /// Graphical differentiation by the method of tangents instead of chords
+    /// (`differentiation = "tangents"`; default `"chords"`).
+    pub tangents: bool,
+}
+
+/// What to analyse: the positions at μ_l, the scene's choices, the drafting model.
 #[derive(Debug, Clone, PartialEq)]
 pub struct KinRequest {
     /// The positions.
     pub positions: PlanRequest,
     /// μ_l of the plan of positions.
     pub scale_l: Scale,
-    /// μ_v of the velocity plans.
-    pub scale_v: Option<Scale>,
-    /// μ_a of the acceleration plans.
-    pub scale_a: Option<Scale>,
-    /// Labels of the positions that get an acceleration plan.
-    pub acceleration_positions: Option<Vec<String>>,
-    /// The point whose displacement is charted.
-    pub diagram_point: Option<String>,
-    /// μ_s of the displacement diagram.
-    pub scale_s: Option<Scale>,
-    /// μ_φ of the diagrams' abscissa.
-    pub scale_phi: Option<Scale>,
-    /// Pole distance of the first differentiation, mm.
-    pub pole_h1: Option<f64>,
-    /// Pole distance of the second differentiation, mm.
-    pub pole_h2: Option<f64>,
-    /// The point whose velocity hodograph is drawn.
-    pub hodograph: Option<String>,
-    /// Differentiate the diagrams by tangents instead of chords.
-    pub tangents: bool,
+    /// The scene's scales and choices (`None` fields are chosen the textbook way).
+    pub spec: KinematicsSpec,
     /// The drafting model for every reading.
     pub drafting: Drafting,
 }
@@ -241,8 +252,8 @@ pub fn analyse(m: &Mechanism, req: &KinRequest) -> Result<Analysis, KinError> {
         s.or_else(|| Scale::round_for(v, PLAN_MM, q))
             .ok_or_else(|| KinError::Request(format!("no plan scale can be chosen for {v}")))
     };
-    let scale_v = pick(req.scale_v, w * r, Quantity::Velocity)?;
-    let scale_a = pick(req.scale_a, w * w * r, Quantity::Acceleration)?;
+    let scale_v = pick(req.spec.scale_v, w * r, Quantity::Velocity)?;
+    let scale_a = pick(req.spec.scale_a, w * w * r, Quantity::Acceleration)?;
     let mu_l = req.scale_l.value();
     let mut velocity = Vec::with_capacity(plan.positions.len());
     let mut refused = Vec::new();
@@ -339,7 +350,7 @@ fn push_rows(rows: &mut Vec<Row>, plan: &KinPlan, pose: &Pose, w1: f64, label: &
 /// The positions that get an acceleration plan: as asked, or one in the middle of the
 /// working stroke and one in the middle of the return.
 fn acceleration_indices(plan: &PositionPlan, req: &KinRequest) -> Result<Vec<usize>, KinError> {
-    if let Some(labels) = &req.acceleration_positions {
+    if let Some(labels) = &req.spec.acceleration_positions {
         return labels
             .iter()
             .map(|l| {
@@ -402,7 +413,7 @@ fn diagram_target(
         Output::Slider { point, dir } => Some((point.clone(), *dir)),
         Output::Rocker { .. } => None,
     });
-    let name = match (&req.diagram_point, &slider) {
+    let name = match (&req.spec.diagram_point, &slider) {
         (Some(n), _) => n.clone(),
         (None, Some((n, _))) => n.clone(),
         (None, None) => return Ok(None),
@@ -454,10 +465,12 @@ fn diagrams(
     let src = Diagram::new(0.0, TAU / n as f64, s.clone(), true).map_err(|e| fail("S", e))?;
     let span = s.iter().fold(0.0f64, |a, v| a.max(v.abs()));
     let scale_s = req
+        .spec
         .scale_s
         .or_else(|| Scale::round_for(span.max(1e-9), DIAGRAM_MM, Quantity::Length))
         .ok_or_else(|| KinError::Request("no μ_s can be chosen".into()))?;
     let scale_phi = req
+        .spec
         .scale_phi
         .or_else(|| Scale::new(TAU / TURN_MM, Quantity::Angle))
         .ok_or_else(|| KinError::Request("no μ_φ".into()))?;
@@ -465,7 +478,7 @@ fn diagrams(
         x: scale_phi,
         y: scale_s,
     };
-    let (h1, mu1) = pole_and_scale(req.pole_h1, &src, scales, DIAGRAM_MM, Quantity::Length)
+    let (h1, mu1) = pole_and_scale(req.spec.pole_h1, &src, scales, DIAGRAM_MM, Quantity::Length)
         .map_err(|e| fail("dS/dφ", e))?;
     // The textbook's stack: S on top, dS/dφ under it, d²S/dφ² under that; the second
     // differentiation's chords are drawn on the dS/dφ curve itself (its figure's source axes
@@ -482,7 +495,7 @@ fn diagrams(
     let mut rec1 = Recorder::new("dS/dφ", mu1, tol(), req.drafting);
     let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
         .pole_named("P_1", "H_1");
-    let differentiate = if req.tangents {
+    let differentiate = if req.spec.tangents {
         calculus::differentiate_tangents
     } else {
         calculus::differentiate_chords
@@ -493,7 +506,7 @@ fn diagrams(
         x: scale_phi,
         y: mu1,
     };
-    let (h2, mu2) = pole_and_scale(req.pole_h2, &d1, scales2, DIAGRAM_MM, Quantity::Length)
+    let (h2, mu2) = pole_and_scale(req.spec.pole_h2, &d1, scales2, DIAGRAM_MM, Quantity::Length)
         .map_err(|e| fail("d²S/dφ²", e))?;
     let (_, d2_hi) = scratch(mu2, &d1, scales2, h2)?;
     let mut rec2 = Recorder::new("d²S/dφ²", mu2, tol(), req.drafting);
@@ -639,7 +652,7 @@ fn hodograph(
     scale_v: Scale,
 ) -> Result<Option<(String, Figure)>, KinError> {
     let prog = &plan.program;
-    let name = match &req.hodograph {
+    let name = match &req.spec.hodograph {
         Some(n) => n.clone(),
         None => match prog.ops.iter().find_map(|op| match op {
             crate::linkage::Op::Point { idx, .. } => Some(prog.names[*idx].clone()),

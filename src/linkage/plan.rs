@@ -110,15 +110,14 @@ pub fn plan_positions(
     let program = Program::compile(m)?;
     // With a given start angle the extremes are optional: a mechanism whose output turns
     // fully has none, and one that cannot make a full turn fails at a named position below.
-    let extremes = match (req.start, program.extremes(&m.outputs, m.crank.sense)) {
-        (_, Ok(ex)) => Some(ex),
-        (Some(_), Err(_)) => None,
-        (None, Err(e)) => return Err(e),
-    };
-    let start = match (req.start, &extremes) {
-        (Some(s), _) => s,
-        (None, Some(ex)) => ex.phi_start,
-        (None, None) => unreachable_start()?,
+    let found = program.extremes(&m.outputs, m.crank.sense);
+    let (extremes, start) = match req.start {
+        Some(s) => (found.ok(), s),
+        None => {
+            let ex = found?;
+            let s = ex.phi_start;
+            (Some(ex), s)
+        }
     };
     let extent_mm = model_extent(&program) / scale.value();
     let tol = Tolerances::for_model_size(extent_mm.max(1.0))
@@ -164,12 +163,6 @@ pub fn plan_positions(
         positions,
         figure: rec.finish(),
     })
-}
-
-fn unreachable_start() -> Result<f64, LinkageError> {
-    Err(LinkageError::Model(
-        "the start of the working stroke is not defined".into(),
-    ))
 }
 
 /// `2 (RRR, links 2, 3)`.

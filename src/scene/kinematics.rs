@@ -2,8 +2,8 @@
 //! optional and checked with its key path.
 
 use super::check::{item, quoted, Checker};
-use super::model::KinematicsSpec;
 use super::raw::RawKinematics;
+use crate::kinematics::KinematicsSpec;
 use crate::linkage::{Dyad, Mechanism};
 use crate::scale::Quantity;
 

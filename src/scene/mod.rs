@@ -8,9 +8,10 @@ mod model;
 mod raw;
 mod structure;
 
+pub use crate::kinematics::KinematicsSpec;
 pub use error::{Problem, SceneError};
 pub use load::{load, parse};
-pub use model::{KinematicsSpec, PlateKind, PositionSpec, Scene, Start, TitleInfo};
+pub use model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
 
 #[cfg(test)]
 mod tests;

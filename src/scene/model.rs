@@ -1,5 +1,6 @@
 //! A validated scene: everything downstream may trust (finite, positive where required).
 
+use crate::kinematics::KinematicsSpec;
 use crate::linkage::Mechanism;
 use crate::scale::Scale;
 use std::path::PathBuf;
@@ -53,35 +54,6 @@ impl PlateKind {
     pub fn parse(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|k| k.stem() == s)
     }
-}
-
-/// The `[kinematics]` section: scales and choices of the kinematic analysis. Every field is
-/// optional; `None` leaves the choice to the analysis.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct KinematicsSpec {
-    /// μ_v of the velocity plans, (m/s)/mm.
-    pub scale_v: Option<Scale>,
-    /// μ_a of the acceleration plans, (m/s²)/mm.
-    pub scale_a: Option<Scale>,
-    /// The positions whose acceleration plans are drawn, by label (`"3"`, `"8′"`); 1–4
-    /// entries. A numbered label is at most the position count; a primed (extreme) label is
-    /// checked against the plan of positions when it exists.
-    pub acceleration_positions: Option<Vec<String>>,
-    /// The point whose displacement S(φ₁) is charted and differentiated (`S_5`).
-    pub diagram_point: Option<String>,
-    /// μ_S of the displacement chart, m/mm.
-    pub scale_s: Option<Scale>,
-    /// μ_φ of the crank-angle axis of the charts, rad/mm.
-    pub scale_phi: Option<Scale>,
-    /// Pole distance H₁ of the first graphical differentiation, drawing mm.
-    pub pole_h1: Option<f64>,
-    /// Pole distance H₂ of the second graphical differentiation, drawing mm.
-    pub pole_h2: Option<f64>,
-    /// The point whose velocity hodograph is drawn (`S_3`).
-    pub hodograph: Option<String>,
-    /// Graphical differentiation by the method of tangents instead of chords
-    /// (`differentiation = "tangents"`; default `"chords"`).
-    pub tangents: bool,
 }
 
 /// Text of the title block (основная надпись), as the student fills it.

@@ -8,9 +8,7 @@ use super::{kin_request, BuildError, RenderOptions};
 use crate::construct::Figure;
 use crate::geom::DVec2;
 use crate::kinematics::{analyse, Analysis, KinError, KinRequest};
-use crate::plate::{
-    Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM,
-};
+use crate::plate::{Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, View, CAPTION_BAND_MM};
 use crate::report::{Method, Report};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::scene::Scene;
@@ -102,13 +100,13 @@ fn fitted(
             v_over = v_over.max(overflow(&[h], rect(HODOGRAPH).max - rect(HODOGRAPH).min));
         }
         if v_over > 1.0 {
-            req.scale_v = bump(a.scale_v, v_over);
+            req.spec.scale_v = bump(a.scale_v, v_over);
             changed = true;
         }
         let acc: Vec<&Figure> = a.acceleration.iter().map(|p| &p.1.figure).collect();
         let a_over = overflow(&acc, acc_cell(acc.len()));
         if a_over > 1.0 {
-            req.scale_a = bump(a.scale_a, a_over);
+            req.spec.scale_a = bump(a.scale_a, a_over);
             changed = true;
         }
         if let Some(d) = &a.diagrams {
@@ -121,8 +119,9 @@ fn fitted(
                 // The scene's diagram scales do not fit: take the turn from the field's width
                 // and μ_s from its height, poles chosen for them; then raise both if need be.
                 let span = d.s.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-                let fresh = req.pole_h1.is_some()
+                let fresh = req.spec.pole_h1.is_some()
                     || req
+                        .spec
                         .scale_phi
                         .is_none_or(|s| s.value() < TAU / (0.75 * r.width()));
                 let (phi, s) = if fresh {
@@ -130,10 +129,10 @@ fn fitted(
                 } else {
                     (d.scales.x.value() * over, d.scales.y.value() * over)
                 };
-                req.scale_phi = Scale::new(phi, Quantity::Angle);
-                req.scale_s = Scale::round_for(s.max(1e-12), 1.0, Quantity::Length);
-                req.pole_h1 = None;
-                req.pole_h2 = None;
+                req.spec.scale_phi = Scale::new(phi, Quantity::Angle);
+                req.spec.scale_s = Scale::round_for(s.max(1e-12), 1.0, Quantity::Length);
+                req.spec.pole_h1 = None;
+                req.spec.pole_h2 = None;
                 changed = true;
             }
         }
@@ -310,23 +309,16 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
             size: SheetSize::A1,
             landscape: true,
         },
-        title_block: TitleBlock {
-            title: scene.title.title.clone(),
-            sheet_title: lang
-                .pick(
-                    "Кинематический анализ",
-                    "Кінематичний аналіз",
-                    "Kinematic analysis",
-                )
-                .into(),
-            designation: scene.title.designation.clone(),
-            author: scene.title.author.clone(),
-            checked: scene.title.checked.clone(),
-            organisation: scene.title.organisation.clone(),
-            scale: String::new(),
-            sheet_no: index as u32 + 1,
-            sheets: scene.plates.len() as u32,
-        },
+        title_block: super::title_block(
+            scene,
+            lang.pick(
+                "Кинематический анализ",
+                "Кінематичний аналіз",
+                "Kinematic analysis",
+            ),
+            index as u32 + 1,
+            scene.plates.len() as u32,
+        ),
         lang,
         views,
         texts,

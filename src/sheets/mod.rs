@@ -5,7 +5,7 @@ mod positions;
 
 use crate::construct::Drafting;
 use crate::linkage::LinkageError;
-use crate::plate::{Plate, PlateError};
+use crate::plate::{Plate, PlateError, TitleBlock};
 use crate::scale::Lang;
 use crate::scene::{PlateKind, Scene};
 use thiserror::Error;
@@ -47,35 +47,32 @@ pub fn kin_request(
     scene: &Scene,
     drafting: Drafting,
 ) -> Result<crate::kinematics::KinRequest, BuildError> {
-    let m = &scene.mechanism;
     let scale_l = match scene.scale_l {
         Some(s) => s,
-        None => {
-            crate::scale::Scale::round_for(m.crank.length, 50.0, crate::scale::Quantity::Length)
-                .ok_or_else(|| {
-                    LinkageError::Model(format!(
-                        "no drawing scale for the crank length {} m",
-                        m.crank.length
-                    ))
-                })?
-        }
+        None => positions::crank_scale(&scene.mechanism)?,
     };
-    let k = &scene.kinematics;
     Ok(crate::kinematics::KinRequest {
         positions: positions::request(scene),
         scale_l,
-        scale_v: k.scale_v,
-        scale_a: k.scale_a,
-        acceleration_positions: k.acceleration_positions.clone(),
-        diagram_point: k.diagram_point.clone(),
-        scale_s: k.scale_s,
-        scale_phi: k.scale_phi,
-        pole_h1: k.pole_h1,
-        pole_h2: k.pole_h2,
-        hodograph: k.hodograph.clone(),
-        tangents: k.tangents,
+        spec: scene.kinematics.clone(),
         drafting,
     })
+}
+
+/// The title block of a plate of `scene`, filled from its `[task]`.
+fn title_block(scene: &Scene, sheet_title: &str, sheet_no: u32, sheets: u32) -> TitleBlock {
+    let t = &scene.title;
+    TitleBlock {
+        title: t.title.clone(),
+        sheet_title: sheet_title.into(),
+        designation: t.designation.clone(),
+        author: t.author.clone(),
+        checked: t.checked.clone(),
+        organisation: t.organisation.clone(),
+        scale: String::new(),
+        sheet_no,
+        sheets,
+    }
 }
 
 /// Build one plate of a scene.

@@ -7,7 +7,7 @@ use crate::linkage::{
     plan_positions, structure_figure, DyadKind, Mechanism, OutputCoord, PlanRequest, PositionPlan,
     Structure,
 };
-use crate::plate::{Plate, Rect, Sheet, SheetSize, TextBlock, TitleBlock, View};
+use crate::plate::{Plate, Rect, Sheet, SheetSize, TextBlock, View};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::scene::{Scene, Start};
 
@@ -83,19 +83,12 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
             size: SheetSize::A1,
             landscape: true,
         },
-        title_block: TitleBlock {
-            title: scene.title.title.clone(),
-            sheet_title: lang
-                .pick("План положений", "План положень", "Plan of positions")
-                .into(),
-            designation: scene.title.designation.clone(),
-            author: scene.title.author.clone(),
-            checked: scene.title.checked.clone(),
-            organisation: scene.title.organisation.clone(),
-            scale: String::new(),
-            sheet_no: 1,
-            sheets: 1,
-        },
+        title_block: super::title_block(
+            scene,
+            lang.pick("План положений", "План положень", "Plan of positions"),
+            1,
+            1,
+        ),
         lang,
         views,
         texts,
@@ -115,8 +108,7 @@ fn fitted_plan(
         region.width(),
         region.height() - crate::plate::CAPTION_BAND_MM,
     );
-    let mut scale = Scale::round_for(m.crank.length, CRANK_MM, Quantity::Length)
-        .ok_or_else(|| bad_scale(m.crank.length))?;
+    let mut scale = crank_scale(m)?;
     let mut plan = plan_positions(m, req, scale, opts.drafting)?;
     for _ in 0..6 {
         let size = plan.figure.bounds().map_or(DVec2::ONE, |(lo, hi)| hi - lo);
@@ -169,6 +161,12 @@ fn scheme_view(
             }
         }
     }
+}
+
+/// μ_l chosen from the crank the textbook way (the crank drawn about 50 mm).
+pub(super) fn crank_scale(m: &Mechanism) -> Result<Scale, BuildError> {
+    Scale::round_for(m.crank.length, CRANK_MM, Quantity::Length)
+        .ok_or_else(|| bad_scale(m.crank.length))
 }
 
 fn bad_scale(v: f64) -> BuildError {
