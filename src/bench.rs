@@ -25,9 +25,10 @@ use crate::construct::{Drafting, Recorder};
 use crate::geom::{wrap_pi, DVec2, Tolerances};
 use crate::linkage::{self, kin_plan, PlanKind, PlanSetup, Pose, Program};
 use crate::report::{Bench, BenchRow, Throughput};
-use crate::scale::{Quantity, Scale};
+use crate::scale::{Lang, Quantity, Scale};
 use crate::scene::{self, PlateKind, Scene};
-use crate::sheets::{self, RenderOptions};
+use crate::sheets;
+use crate::study::Session;
 use std::f64::consts::TAU;
 use std::hint::black_box;
 use std::path::PathBuf;
@@ -145,6 +146,7 @@ fn best_time<T, E>(best_of: usize, mut f: impl FnMut() -> Result<T, E>) -> Resul
 /// A loaded scene with its compiled program and signed crank speed.
 struct Subject {
     scene: Scene,
+    mechanism: crate::linkage::Mechanism,
     prog: Program,
     /// ω₁, rad/s, counter-clockwise positive.
     w1: f64,
@@ -153,13 +155,23 @@ struct Subject {
 impl Subject {
     fn load(opts: &BenchOptions, stem: &str) -> Result<Self, BenchError> {
         let scene = scene::load(&opts.scenes.join(format!("{stem}.toml")))?;
-        let prog = Program::compile(&scene.mechanism).map_err(|e| BenchError::Linkage {
+        let linkage = |detail: String| BenchError::Linkage {
             scene: stem.into(),
-            detail: e.to_string(),
-        })?;
-        let c = &scene.mechanism.crank;
+            detail,
+        };
+        let mechanism = scene
+            .mechanism
+            .clone()
+            .ok_or_else(|| linkage("the scene has no [mechanism]".into()))?;
+        let prog = Program::compile(&mechanism).map_err(|e| linkage(e.to_string()))?;
+        let c = &mechanism.crank;
         let w1 = c.sense.sign() * c.omega;
-        Ok(Self { scene, prog, w1 })
+        Ok(Self {
+            scene,
+            mechanism,
+            prog,
+            w1,
+        })
     }
 
     fn fail(&self, detail: impl Into<String>) -> BenchError {
@@ -376,7 +388,7 @@ fn libm_floor_rate(reps: Reps) -> f64 {
 fn construction_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
     let count = reps.constructed.max(1);
     let mu_l = s.scene.scale_l.map_or(0.002, |m| m.value());
-    let r1 = s.scene.mechanism.crank.length;
+    let r1 = s.mechanism.crank.length;
     let w = s.w1.abs();
     let scale = |v: f64, q| Scale::new(v, q).ok_or_else(|| s.fail(format!("bad scale {v}")));
     let mu = scale(mu_l, Quantity::Length)?;
@@ -412,9 +424,10 @@ fn construction_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
 
 /// Seconds to build a plate and write it as SVG.
 fn plate_time(s: &Subject, kind: PlateKind, reps: Reps) -> Result<f64, BenchError> {
-    let opts = RenderOptions::default();
     best_time(reps.best_of, || {
-        let plate = sheets::build(&s.scene, kind, &opts)?;
+        // A fresh session each run: the time includes every construction the sheet needs.
+        let session = Session::new(&s.scene, Drafting::EXACT);
+        let plate = sheets::build(&session, kind, Lang::Ru)?;
         Ok(crate::plate::to_svg(&plate))
     })
     .map_err(|e: sheets::BuildError| BenchError::Plate {
@@ -518,7 +531,7 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
         throughput.push(Throughput {
             name: format!("plate {stem}/{}", kind.stem()),
             per_second: 1.0 / plate_time(s, kind, reps)?,
-            note: "sheets::build + plate::to_svg".into(),
+            note: "a fresh study::Session + sheets::build + plate::to_svg".into(),
         });
     }
     Ok(Bench {

@@ -13,6 +13,7 @@
 
 pub mod bench;
 pub mod calculus;
+pub mod check;
 pub mod construct;
 pub mod geom;
 pub mod kinematics;
@@ -22,3 +23,4 @@ pub mod report;
 pub mod scale;
 pub mod scene;
 pub mod sheets;
+pub mod study;

@@ -8,7 +8,8 @@ use std::process::ExitCode;
 use tmm::construct::Drafting;
 use tmm::scale::Lang;
 use tmm::scene::{self, PlateKind, Scene};
-use tmm::sheets::{self, RenderOptions};
+use tmm::sheets;
+use tmm::study::Session;
 
 #[derive(Parser)]
 #[command(
@@ -178,7 +179,7 @@ fn load_all(paths: &[PathBuf]) -> Result<Vec<Scene>, Failure> {
         .collect()
 }
 
-fn options(lang: LangArg, drafting: f64) -> Result<RenderOptions, Failure> {
+fn options(lang: LangArg, drafting: f64) -> Result<(Lang, Drafting), Failure> {
     let drafting = Drafting::new(drafting).ok_or_else(|| {
         Failure::input(format!(
             "--drafting {drafting}: expected a resolution ≥ 0 mm"
@@ -189,7 +190,24 @@ fn options(lang: LangArg, drafting: f64) -> Result<RenderOptions, Failure> {
         LangArg::Uk => Lang::Uk,
         LangArg::En => Lang::En,
     };
-    Ok(RenderOptions { lang, drafting })
+    Ok((lang, drafting))
+}
+
+/// The plates of a scene, built through one session.
+fn plates(
+    s: &Scene,
+    lang: Lang,
+    drafting: Drafting,
+) -> Result<Vec<(PlateKind, tmm::plate::Plate)>, Failure> {
+    let session = Session::new(s, drafting);
+    s.plates
+        .iter()
+        .map(|&kind| {
+            sheets::build(&session, kind, lang)
+                .map(|p| (kind, p))
+                .map_err(|e| build_err(s, kind, e))
+        })
+        .collect()
 }
 
 fn build_err(scene: &Scene, kind: PlateKind, e: sheets::BuildError) -> Failure {
@@ -208,7 +226,7 @@ fn render(
     drafting: f64,
     dpi: u32,
 ) -> Result<(), Failure> {
-    let opts = options(lang, drafting)?;
+    let (lang, drafting) = options(lang, drafting)?;
     if !(1..=2400).contains(&dpi) {
         return Err(Failure::input(format!("--dpi {dpi}: expected 1…2400")));
     }
@@ -216,8 +234,7 @@ fn render(
     // Everything is built in memory first: a failed run writes nothing.
     let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     for s in &scenes {
-        for &kind in &s.plates {
-            let plate = sheets::build(s, kind, &opts).map_err(|e| build_err(s, kind, e))?;
+        for (kind, plate) in plates(s, lang, drafting)? {
             let svg = tmm::plate::to_svg(&plate);
             let base = out.join(&s.stem).join(kind.stem());
             if formats.contains(&Format::Png) {
@@ -239,25 +256,16 @@ fn render(
 }
 
 fn report(path: &Path, format: ReportFormat, drafting: f64, lang: LangArg) -> Result<(), Failure> {
-    let opts = options(lang, drafting)?;
+    let (lang, drafting) = options(lang, drafting)?;
     let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
-    let req = sheets::kin_request(&s, opts.drafting)
+    if s.mechanism.is_none() {
+        return Err(nothing_to_construct(&s));
+    }
+    let rep = Session::new(&s, drafting)
+        .report()
         .map_err(|e| Failure::construction(format!("{}: {e}", s.path.display())))?;
-    let analysis = tmm::kinematics::analyse(&s.mechanism, &req)
-        .map_err(|e| Failure::construction(format!("{}: {e}", s.path.display())))?;
-    let notes = analysis
-        .refused
-        .iter()
-        .map(|(pos, why)| format!("position {pos}: no velocity plan: {why}"))
-        .collect();
-    let rep = tmm::report::Report {
-        scene: s.stem.clone(),
-        rows: analysis.rows,
-        tables: vec![analysis.table],
-        notes,
-    };
     let text = match format {
-        ReportFormat::Md => rep.to_markdown(opts.lang),
+        ReportFormat::Md => rep.to_markdown(lang),
         ReportFormat::Csv => rep.to_csv(),
         ReportFormat::Json => rep.to_json(),
     };
@@ -265,13 +273,21 @@ fn report(path: &Path, format: ReportFormat, drafting: f64, lang: LangArg) -> Re
     Ok(())
 }
 
+/// A scene without a study to carry out.
+fn nothing_to_construct(s: &Scene) -> Failure {
+    Failure::input(format!(
+        "{}: the scene asks for nothing to construct (no [mechanism] and no plates)",
+        s.path.display()
+    ))
+}
+
 fn check(paths: &[PathBuf]) -> Result<(), Failure> {
     let scenes = load_all(paths)?;
-    let opts = RenderOptions::default();
     for s in &scenes {
-        for &kind in &s.plates {
-            sheets::build(s, kind, &opts).map_err(|e| build_err(s, kind, e))?;
+        if s.plates.is_empty() {
+            return Err(nothing_to_construct(s));
         }
+        plates(s, Lang::Ru, Drafting::EXACT)?;
         emit(&format!("{}: ok", s.path.display()));
     }
     Ok(())

@@ -200,3 +200,22 @@ fn check_and_list() {
         assert!(s.contains(scene) && s.contains("positions"), "{s}");
     }
 }
+
+#[test]
+fn check_says_a_scene_without_a_study_asks_for_nothing() {
+    let dir = std::env::temp_dir().join(format!("tmm-task-only-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("cam.toml");
+    std::fs::write(&path, "[task]\ntitle = \"Кулачковый механизм\"\n").expect("scene");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .arg("check")
+        .arg(&path)
+        .output()
+        .expect("run tmm check");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("asks for nothing to construct"), "{err}");
+    assert!(!err.contains("missing"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

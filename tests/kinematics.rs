@@ -32,8 +32,14 @@ fn rows(v: &serde_json::Value) -> Vec<&serde_json::Value> {
 fn find<'a>(v: &'a serde_json::Value, q: &str, pos: &str, method: &str) -> &'a serde_json::Value {
     rows(v)
         .into_iter()
-        .find(|r| r["quantity"] == q && r["position"] == pos && r["method"] == method)
+        .find(|r| r["quantity"] == q && r["position"] == pos && is_method(r, method))
         .unwrap_or_else(|| panic!("no row {q} {pos} {method}"))
+}
+
+/// The row's method is `method` or, for a prefix such as `diagram`, one of its kind
+/// (`diagram-chords`, `diagram-tangents`).
+fn is_method(r: &serde_json::Value, method: &str) -> bool {
+    r["method"].as_str().is_some_and(|m| m.starts_with(method))
 }
 
 fn num(r: &serde_json::Value, key: &str) -> f64 {
@@ -84,7 +90,7 @@ fn shaper_report_plans_equal_analytic_at_drafting_0() {
     for q in ["s_S5", "v_S5", "a_S5"] {
         assert!(
             all.iter()
-                .any(|r| r["quantity"] == q && r["method"] == "diagram"),
+                .any(|r| r["quantity"] == q && r["method"] == "diagram-chords"),
             "no diagram row {q}"
         );
     }
@@ -381,8 +387,8 @@ fn tangent_method_is_an_option_of_the_scene() {
     .unwrap();
     let v = report_json(scene.to_str().unwrap(), "0");
     let chords = report_json("constructions/shaper.toml", "0");
-    let t = num(find(&v, "v_S5", "4", "diagram"), "graphical");
-    let c = num(find(&chords, "v_S5", "4", "diagram"), "graphical");
+    let t = num(find(&v, "v_S5", "4", "diagram-tangents"), "graphical");
+    let c = num(find(&chords, "v_S5", "4", "diagram-chords"), "graphical");
     let a = num(find(&v, "v_S5", "4", "diagram"), "analytic");
     assert!((t - a).abs() < 0.03 * a, "tangents: {t} vs {a}");
     assert!(t != c, "the tangent method must differ from the chords");

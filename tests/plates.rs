@@ -6,8 +6,11 @@
 
 use resvg::tiny_skia::{Pixmap, PremultipliedColorU8};
 use std::path::{Path, PathBuf};
+use tmm::construct::Drafting;
+use tmm::scale::Lang;
 use tmm::scene::{self, PlateKind};
-use tmm::sheets::{self, RenderOptions};
+use tmm::sheets;
+use tmm::study::Session;
 
 /// Width of the rendered test images, px.
 const WIDTH: u32 = 1400;
@@ -22,7 +25,8 @@ fn render(scene_name: &str, plate: &str) -> Vec<u8> {
         .join(format!("{scene_name}.toml"));
     let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
     let kind = PlateKind::parse(plate).unwrap_or_else(|| panic!("unknown plate {plate}"));
-    let p = sheets::build(&s, kind, &RenderOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let session = Session::new(&s, Drafting::EXACT);
+    let p = sheets::build(&session, kind, Lang::Ru).unwrap_or_else(|e| panic!("{e}"));
     tmm::plate::to_png(&tmm::plate::to_svg(&p), WIDTH).unwrap_or_else(|e| panic!("{e}"))
 }
 

@@ -16,8 +16,13 @@ fn shaper_plan() -> (tmm::scene::Scene, PositionPlan) {
         continuity: false,
     };
     let scale = Scale::new(0.0025, Quantity::Length).unwrap();
-    let plan = plan_positions(&scene.mechanism, &req, scale, Drafting::EXACT)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let plan = plan_positions(
+        scene.mechanism.as_ref().expect("a mechanism"),
+        &req,
+        scale,
+        Drafting::EXACT,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     (scene, plan)
 }
 
@@ -139,7 +144,7 @@ fn shaper_table5_phi3_and_l3_at_all_13_positions() {
 #[test]
 fn shaper_structure_as_in_the_seed() {
     let (scene, _) = shaper_plan();
-    let st = Structure::analyse(&scene.mechanism);
+    let st = Structure::analyse(scene.mechanism.as_ref().expect("a mechanism"));
     assert_eq!((st.n, st.p5, st.p4, st.w), (5, 7, 0, 1));
     assert_eq!((st.p5_all, st.w_all), (8, -1));
     assert_eq!(st.formula(), "I(0,1) → II(2,3) → II(4,5)");
@@ -187,7 +192,7 @@ fn close(got: f64, want: f64, half_ulp: f64) -> bool {
 fn shaper_analytic_twin_reproduces_table5_and_table8() {
     let (scene, plan) = shaper_plan();
     let prog = &plan.program;
-    let w1 = scene.mechanism.crank.omega; // |ω₁| = 5π
+    let w1 = scene.mechanism.as_ref().expect("a mechanism").crank.omega; // |ω₁| = 5π
     let seed_w1 = w1; // the seed's formulas: ω₁ = +5π although the crank turns clockwise
     let (b, c, d, e, s3) = (
         prog.index("B").unwrap(),

@@ -21,8 +21,9 @@ pub use model::{
     RedundantPair, Sense,
 };
 pub use plan::{
-    draw_links, fixed_pivots, frame_guides, group_name, plan_positions, FrameGuide, Part,
-    PlanPosition, PlanRequest, PositionPlan,
+    draw_links, fixed_pivots, frame_guides, group_name, guide_ends, plan_poses, plan_positions,
+    FrameGuide, Part, PlanPoses, PlanPosition, PlanRequest, PosePosition, PositionPlan,
+    GUIDE_MARGIN_MM,
 };
 pub use plans::{kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading};
 pub use program::{Op, PDir, PDyad, PGuide, Program};

@@ -100,6 +100,89 @@ fn sequence(
     seq.into_iter().map(|(l, p, e, _)| (l, p, e)).collect()
 }
 
+/// One position of the plan, solved analytically only (no construction).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PosePosition {
+    /// Its label (`1`…`12`, `8′`).
+    pub label: String,
+    /// Crank angle, radians.
+    pub phi: f64,
+    /// An extreme position.
+    pub extreme: bool,
+    /// The analytic twin (m, with velocity analogues).
+    pub pose: Pose,
+}
+
+/// The positions a plan of positions will construct, solved analytically: what a sheet
+/// needs to choose its scales before anything is drawn.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanPoses {
+    /// The compiled mechanism.
+    pub program: Program,
+    /// Extremes, when the outputs have them.
+    pub extremes: Option<Extremes>,
+    /// Positions in the order of crank rotation from position 1.
+    pub positions: Vec<PosePosition>,
+}
+
+/// The positions of the plan of `m` asked for by `req`, solved analytically.
+pub fn plan_poses(m: &Mechanism, req: &PlanRequest) -> Result<PlanPoses, LinkageError> {
+    let program = Program::compile(m)?;
+    let (extremes, start) = start_of(&program, m, req)?;
+    let mut positions: Vec<PosePosition> = Vec::new();
+    for (label, phi, extreme) in sequence(req, start, m.crank.sense, extremes.as_ref()) {
+        let prev = positions.last().filter(|_| req.continuity);
+        let pose = program
+            .solve(phi, prev.map(|p| &p.pose))
+            .map_err(|u| cannot_assemble(m, &label, phi, u.group, u.detail))?;
+        positions.push(PosePosition {
+            label,
+            phi,
+            extreme,
+            pose,
+        });
+    }
+    Ok(PlanPoses {
+        program,
+        extremes,
+        positions,
+    })
+}
+
+/// The extremes and the crank angle of position 1. With a given start angle the extremes
+/// are optional: a mechanism whose output turns fully has none, and one that cannot make a
+/// full turn fails at a named position later.
+fn start_of(
+    program: &Program,
+    m: &Mechanism,
+    req: &PlanRequest,
+) -> Result<(Option<Extremes>, f64), LinkageError> {
+    let found = program.extremes(&m.outputs, m.crank.sense);
+    match req.start {
+        Some(s) => Ok((found.ok(), s)),
+        None => {
+            let ex = found?;
+            let s = ex.phi_start;
+            Ok((Some(ex), s))
+        }
+    }
+}
+
+fn cannot_assemble(
+    m: &Mechanism,
+    label: &str,
+    phi: f64,
+    group: usize,
+    detail: String,
+) -> LinkageError {
+    LinkageError::CannotAssemble {
+        position: label.to_string(),
+        phi_deg: phi.to_degrees(),
+        group: group_name(m, group),
+        detail,
+    }
+}
+
 /// Build the plan of positions of `m` at μ_l = `scale`.
 pub fn plan_positions(
     m: &Mechanism,
@@ -108,17 +191,7 @@ pub fn plan_positions(
     drafting: Drafting,
 ) -> Result<PositionPlan, LinkageError> {
     let program = Program::compile(m)?;
-    // With a given start angle the extremes are optional: a mechanism whose output turns
-    // fully has none, and one that cannot make a full turn fails at a named position below.
-    let found = program.extremes(&m.outputs, m.crank.sense);
-    let (extremes, start) = match req.start {
-        Some(s) => (found.ok(), s),
-        None => {
-            let ex = found?;
-            let s = ex.phi_start;
-            (Some(ex), s)
-        }
-    };
+    let (extremes, start) = start_of(&program, m, req)?;
     let extent_mm = model_extent(&program) / scale.value();
     let tol = Tolerances::for_model_size(extent_mm.max(1.0))
         .map_err(|e| LinkageError::Model(e.to_string()))?;
@@ -130,12 +203,6 @@ pub fn plan_positions(
     {
         rec.set_group(k as u32 + 1);
         let prev = positions.last().filter(|_| req.continuity);
-        let fail_pos = |group: usize, detail: String| LinkageError::CannotAssemble {
-            position: label.clone(),
-            phi_deg: phi.to_degrees(),
-            group: group_name(m, group),
-            detail,
-        };
         let built = program
             .construct(
                 &mut rec,
@@ -143,10 +210,10 @@ pub fn plan_positions(
                 prev.map(|p| &p.built),
                 &format!("position {label}"),
             )
-            .map_err(|f| fail_pos(f.group, f.error.to_string()))?;
+            .map_err(|f| cannot_assemble(m, &label, phi, f.group, f.error.to_string()))?;
         let pose = program
             .solve(phi, prev.map(|p| &p.pose))
-            .map_err(|u| fail_pos(u.group, u.detail))?;
+            .map_err(|u| cannot_assemble(m, &label, phi, u.group, u.detail))?;
         positions.push(PlanPosition {
             label,
             phi,
@@ -400,6 +467,46 @@ pub fn frame_guides(prog: &Program, built: &[&Built], margin: f64) -> Vec<FrameG
     v
 }
 
+/// How far a frame guide is drawn past the stroke of its slider, mm.
+pub const GUIDE_MARGIN_MM: f64 = 15.0;
+
+/// The ends of the frame's guides as a plan of positions draws them, predicted from the
+/// analytic positions: for each end, the slider's extreme point (m) and the unit direction
+/// in which the guide runs on past it by [`GUIDE_MARGIN_MM`].
+pub fn guide_ends(poses: &PlanPoses) -> Vec<(DVec2, DVec2)> {
+    let prog = &poses.program;
+    let n = prog.fixed.len();
+    let mut ends = Vec::new();
+    for op in &prog.ops {
+        let Op::Dyad { dyad, .. } = op else { continue };
+        let guides: Vec<(PGuide, usize)> = match *dyad {
+            PDyad::Rrp { guide, joint, .. } | PDyad::Rpp { guide, joint, .. } => {
+                vec![(guide, joint)]
+            }
+            PDyad::Prp { gi, gj, joint } => vec![(gi, joint), (gj, joint)],
+            _ => vec![],
+        };
+        for (g, joint) in guides.into_iter().filter(|(g, _)| g.is_fixed(n)) {
+            let PDir::Fixed(a) = g.dir else { continue };
+            let e = DVec2::from_angle(a);
+            let along = |p: &&PosePosition| p.pose.p[joint].dot(e);
+            let first = poses
+                .positions
+                .iter()
+                .min_by(|a, b| along(a).total_cmp(&along(b)));
+            let last = poses
+                .positions
+                .iter()
+                .max_by(|a, b| along(a).total_cmp(&along(b)));
+            if let (Some(f), Some(l)) = (first, last) {
+                ends.push((f.pose.p[joint], -e));
+                ends.push((l.pose.p[joint], e));
+            }
+        }
+    }
+    ends
+}
+
 /// Draw the frame's guides with their hatching.
 pub fn draw_guides(rec: &mut Recorder, guides: &[FrameGuide]) {
     for g in guides {
@@ -458,7 +565,7 @@ fn draw_plan(
     );
     // Guides of the frame, spanning the travel of their joints.
     let all: Vec<&Built> = positions.iter().map(|p| &p.built).collect();
-    draw_guides(rec, &frame_guides(prog, &all, 15.0));
+    draw_guides(rec, &frame_guides(prog, &all, GUIDE_MARGIN_MM));
     // Every position: thin; position 1 and the extremes: thick.
     for (k, pos) in positions.iter().enumerate() {
         rec.set_group(k as u32 + 1);

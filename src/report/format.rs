@@ -28,17 +28,17 @@ pub(crate) fn json<T: Serialize>(value: &T) -> String {
 #[derive(Serialize)]
 struct JsonReport<'a> {
     scene: &'a str,
-    rows: Vec<JsonRow<'a>>,
+    rows: Vec<JsonRow>,
     summary: JsonSummary<'a>,
     tables: Vec<JsonTable<'a>>,
     notes: &'a [String],
 }
 
 #[derive(Serialize)]
-struct JsonRow<'a> {
-    quantity: &'a str,
-    position: &'a str,
-    unit: &'a str,
+struct JsonRow {
+    quantity: String,
+    position: Option<String>,
+    unit: &'static str,
     method: Method,
     graphical: Option<f64>,
     analytic: Option<f64>,
@@ -107,9 +107,9 @@ impl Report {
                     .map(|(name, _)| *name)
                     .collect();
                 JsonRow {
-                    quantity: &r.quantity,
-                    position: &r.position,
-                    unit: &r.unit,
+                    quantity: r.quantity(),
+                    position: r.position(),
+                    unit: r.unit(),
                     method: r.method,
                     graphical: finite(r.graphical),
                     analytic: finite(r.analytic),
@@ -148,9 +148,9 @@ impl Report {
         out.push('\n');
         for (r, rel) in self.rows.iter().zip(self.rel_errors()) {
             let fields = [
-                csv_field(&r.quantity),
-                csv_field(&r.position),
-                csv_field(&r.unit),
+                csv_field(&r.quantity()),
+                csv_field(&r.position().unwrap_or_default()),
+                csv_field(r.unit()),
                 r.method.key().to_string(),
                 csv_value(r.graphical),
                 csv_value(r.analytic),
@@ -186,9 +186,9 @@ impl Report {
             let unit = self
                 .rows
                 .iter()
-                .find(|r| r.quantity == q)
-                .map_or("", |r| r.unit.as_str());
-            let _ = writeln!(out, "## {}, {}\n", md_cell(q), md_cell(unit));
+                .find(|r| r.quantity() == q)
+                .map_or("", |r| r.unit());
+            let _ = writeln!(out, "## {}, {}\n", md_cell(&q), md_cell(unit));
             md_header(
                 &mut out,
                 &[
@@ -201,11 +201,16 @@ impl Report {
                     lang.pick("обусловленность", "обумовленість", "conditioning"),
                 ],
             );
-            for (r, d) in self.rows.iter().zip(&rel).filter(|(r, _)| r.quantity == q) {
+            for (r, d) in self
+                .rows
+                .iter()
+                .zip(&rel)
+                .filter(|(r, _)| r.quantity() == q)
+            {
                 md_row(
                     &mut out,
                     &[
-                        md_cell(&r.position),
+                        md_cell(&r.position().unwrap_or_default()),
                         r.method.name(lang).to_string(),
                         format_sig(r.graphical, VALUE_DIGITS, lang),
                         format_sig(r.analytic, VALUE_DIGITS, lang),
@@ -312,7 +317,7 @@ fn summary_markdown(out: &mut String, s: &Summary, lang: Lang) {
                 e.count.to_string(),
                 format_sig(e.mean_abs_rel * 100.0, ERROR_DIGITS, lang),
                 format_sig(e.max_abs_rel * 100.0, ERROR_DIGITS, lang),
-                md_cell(&e.worst_position),
+                md_cell(e.worst_position.as_deref().unwrap_or("")),
             ],
         );
     }

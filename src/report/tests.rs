@@ -1,16 +1,21 @@
 use super::*;
+use crate::check::{Key, Symbol};
 use crate::scale::Lang;
 use serde_json::Value;
 
 fn row(quantity: &str, position: &str, method: Method, graphical: f64, analytic: f64) -> Row {
+    let (symbol, subject) = match quantity.split_once('_') {
+        Some(("a", s)) => (Symbol::Acceleration, s),
+        Some((_, s)) => (Symbol::Velocity, s),
+        None => (Symbol::Velocity, quantity),
+    };
     Row {
-        quantity: quantity.into(),
-        position: position.into(),
-        unit: "m/s".into(),
+        key: Key::at_position(symbol, subject, position),
         method,
         graphical,
         analytic,
         conditioning: Some(37.5),
+        scale: 0.0,
     }
 }
 
@@ -22,9 +27,9 @@ fn sample() -> Report {
             row("v_D", "3", Method::Plan, 2.25, 2.5),
             row("v_D", "5", Method::Plan, 2.75, 2.5),
             row("v_D", "8′", Method::Plan, 0.001, 0.0),
-            row("a_D", "1", Method::Diagram, 54.0, 60.0),
-            row("a_D", "10", Method::Diagram, 66.0, 60.0),
-            row("a_D", "3", Method::Diagram, 18.0, 20.0),
+            row("a_D", "1", Method::DiagramChords, 54.0, 60.0),
+            row("a_D", "10", Method::DiagramChords, 66.0, 60.0),
+            row("a_D", "3", Method::DiagramChords, 18.0, 20.0),
         ],
         tables: vec![Table {
             title: "Table 5".into(),
@@ -54,7 +59,7 @@ fn errors_of_a_row() {
     assert!((r.rel_error(0.0).unwrap() - 1.9).abs() < 1e-15);
     assert_eq!(row("v_D", "1", Method::Plan, 1.0, 0.0).rel_error(0.0), None);
     assert_eq!(
-        row("v_D", "1", Method::Plan, 1.0, 1e-13).rel_error(1e-12),
+        row("v_D", "1", Method::Plan, 1.0, 1e-13).rel_error(1.0),
         None
     );
     assert_eq!(
@@ -90,7 +95,7 @@ fn json_has_the_exact_keys_and_null_at_an_analytic_zero() {
         ]
     );
     assert_eq!(rows[0]["method"], "plan");
-    assert_eq!(rows[3]["method"], "diagram");
+    assert_eq!(rows[3]["method"], "diagram-chords");
     assert_eq!(rows[2]["position"], "8′");
     assert!(rows[2]["rel_error"].is_null());
     assert_eq!(rows[2]["graphical"].as_f64(), Some(0.001));
@@ -144,7 +149,7 @@ fn json_never_contains_nan() {
 #[test]
 fn csv_quotes_only_where_needed() {
     let mut report = sample();
-    report.rows[0].quantity = "v_D, \"ram\"".into();
+    report.rows[0].key.subject = "D, \"ram\"".into();
     let csv = report.to_csv();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(
@@ -168,7 +173,7 @@ fn expect_entry(
     );
     assert!((e.mean_abs_rel - mean).abs() < 1e-12, "{e:?}");
     assert!((e.max_abs_rel - max).abs() < 1e-12, "{e:?}");
-    assert_eq!(e.worst_position, worst);
+    assert_eq!(e.worst_position.as_deref(), Some(worst));
 }
 
 /// The keys of a JSON object, sorted.
@@ -187,7 +192,12 @@ fn summary_means_of_a_hand_made_report() {
     assert_eq!(s.entries.len(), 2);
     // A tie keeps the first position.
     expect_entry(&s.entries[0], ("v_D", Method::Plan, 2), (0.1, 0.1), "3");
-    expect_entry(&s.entries[1], ("a_D", Method::Diagram, 3), (0.1, 0.1), "1");
+    expect_entry(
+        &s.entries[1],
+        ("a_D", Method::DiagramChords, 3),
+        (0.1, 0.1),
+        "1",
+    );
     assert_eq!(s.mean_by_method.len(), 2);
     assert_eq!(s.mean_by_method[0].0, Method::Plan);
     assert!((s.mean_by_method[0].1 - 0.1).abs() < 1e-12);
@@ -197,7 +207,7 @@ fn summary_means_of_a_hand_made_report() {
     let s = uneven.summary();
     expect_entry(
         &s.entries[1],
-        ("a_D", Method::Diagram, 3),
+        ("a_D", Method::DiagramChords, 3),
         (0.15, 0.25),
         "10",
     );

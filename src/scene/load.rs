@@ -38,18 +38,37 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         .file_stem()
         .map_or_else(|| "scene".to_string(), |s| s.to_string_lossy().into_owned());
     let title = title(raw.task.unwrap_or_default(), &stem);
-    let mechanism = mechanism(&mut check, raw.mechanism.as_ref());
+    // Every section is optional; a section that studies the mechanism needs `[mechanism]`.
+    let has_mechanism = raw.mechanism.is_some();
+    if !has_mechanism {
+        for (section, present) in [
+            ("positions", raw.positions.is_some()),
+            ("kinematics", raw.kinematics.is_some()),
+        ] {
+            if present {
+                check.push(
+                    section,
+                    None,
+                    format!("[{section}] studies a mechanism: expected a [mechanism] table"),
+                );
+            }
+        }
+    }
+    let mechanism = raw
+        .mechanism
+        .as_ref()
+        .and_then(|m| mechanism(&mut check, Some(m)));
     let scale_l = scale_l(&mut check, raw.mechanism.as_ref().and_then(|m| m.scale_l));
     let positions = positions(&mut check, raw.positions.unwrap_or_default());
-    let plates = plates(&mut check, raw.plates.unwrap_or_default());
+    let plates = plates(&mut check, raw.plates, has_mechanism);
     let kinematics = kinematics(
         &mut check,
         raw.kinematics.unwrap_or_default(),
         mechanism.as_ref(),
         positions.count,
     );
-    match mechanism {
-        Some(mechanism) if check.problems.is_empty() => Ok(Scene {
+    if check.problems.is_empty() {
+        Ok(Scene {
             path: path.to_path_buf(),
             stem,
             title,
@@ -58,11 +77,12 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             positions,
             plates,
             kinematics,
-        }),
-        _ => Err(SceneError::Invalid {
+        })
+    } else {
+        Err(SceneError::Invalid {
             path: path.to_path_buf(),
             problems: check.problems,
-        }),
+        })
     }
 }
 
@@ -125,15 +145,27 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
     }
 }
 
-/// `[plates] wanted`, default `["positions"]`.
-fn plates(check: &mut Checker, raw: RawPlates) -> Vec<PlateKind> {
-    let wanted = raw
-        .wanted
-        .unwrap_or_else(|| vec![PlateKind::Positions.stem().to_string()]);
+/// `[plates] wanted`, default `["positions"]` for a mechanism and none otherwise. Every
+/// plate there is studies the mechanism.
+fn plates(check: &mut Checker, raw: Option<RawPlates>, has_mechanism: bool) -> Vec<PlateKind> {
+    let defaults = if has_mechanism {
+        vec![PlateKind::Positions.stem().to_string()]
+    } else {
+        Vec::new()
+    };
+    let wanted = raw.and_then(|r| r.wanted).unwrap_or(defaults);
     let known: Vec<&str> = PlateKind::ALL.iter().map(|k| k.stem()).collect();
     let mut out = Vec::new();
     for (i, stem) in wanted.iter().enumerate() {
         match PlateKind::parse(stem) {
+            Some(_) if !has_mechanism => {
+                let key = item("plates.wanted", i);
+                check.push(
+                    key,
+                    Some(quoted(stem)),
+                    "a plate of a mechanism: expected a [mechanism] table",
+                );
+            }
             Some(kind) => out.push(kind),
             None => {
                 let key = item("plates.wanted", i);

@@ -82,13 +82,13 @@ pub struct Scene {
     pub stem: String,
     /// Title block text.
     pub title: TitleInfo,
-    /// The mechanism.
-    pub mechanism: Mechanism,
+    /// The mechanism (`[mechanism]`); `None` for a task without one (a cam, a gear pair).
+    pub mechanism: Option<Mechanism>,
     /// μ_l of the plan of positions; `None`: chosen the textbook way from the crank length.
     pub scale_l: Option<Scale>,
     /// The positions.
     pub positions: PositionSpec,
-    /// The plates wanted, in file order.
+    /// The plates wanted, in file order (none: the scene asks for nothing to construct).
     pub plates: Vec<PlateKind>,
     /// The `[kinematics]` choices (all `None` when the section is absent).
     pub kinematics: KinematicsSpec,

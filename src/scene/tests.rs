@@ -53,7 +53,7 @@ fn close(a: f64, b: f64) -> bool {
 #[test]
 fn shaper_loads_in_si_units() {
     let s = loaded("shaper.toml");
-    let m = &s.mechanism;
+    let m = s.mechanism.as_ref().expect("a mechanism");
     assert_eq!(s.stem, "shaper");
     assert_eq!(s.title.title, "Поперечно-строгальный станок");
     assert!(close(m.crank.length, 0.14));
@@ -92,7 +92,7 @@ fn shaper_loads_in_si_units() {
 #[test]
 fn slider_crank_loads_with_rpm() {
     let s = loaded("slider-crank.toml");
-    let m = &s.mechanism;
+    let m = s.mechanism.as_ref().expect("a mechanism");
     assert!(close(m.crank.omega, 10.0 * PI));
     assert_eq!(m.crank.sense, Sense::CounterClockwise);
     let Dyad::Rrp {
@@ -110,7 +110,7 @@ fn slider_crank_loads_with_rpm() {
 #[test]
 fn four_bar_loads_as_crank_rocker() {
     let s = loaded("four-bar.toml");
-    let m = &s.mechanism;
+    let m = s.mechanism.as_ref().expect("a mechanism");
     assert!(close(m.crank.omega, 10.0));
     assert_eq!(m.crank.sense, Sense::Clockwise);
     let Dyad::Rrr { la, lb, branch, .. } = &m.groups[0].dyad else {
@@ -472,7 +472,7 @@ fn kinematics_plate_kind_parses() {
 #[test]
 fn six_bar_loads() {
     let s = loaded("six-bar.toml");
-    let m = &s.mechanism;
+    let m = s.mechanism.as_ref().expect("a mechanism");
     assert_eq!(m.crank.sense, Sense::Clockwise);
     assert!(close(m.crank.omega, 100.0 * PI / 30.0));
     assert_eq!(m.groups[0].dyad.kind(), crate::linkage::DyadKind::Rrr);
@@ -493,7 +493,7 @@ fn six_bar_loads() {
 #[test]
 fn tangent_loads_with_a_crank_point_in_a_direction() {
     let s = loaded("tangent.toml");
-    let m = &s.mechanism;
+    let m = s.mechanism.as_ref().expect("a mechanism");
     let Dyad::Prp {
         guide_i, guide_j, ..
     } = &m.groups[0].dyad

@@ -4,14 +4,14 @@
 //! Every group of views has its own field; its μ is raised along the textbook series until
 //! the drawings fit (the captions state the μ actually used).
 
-use super::{kin_request, BuildError, RenderOptions};
+use super::fit::{self, figure_size, fit_scale, overflow, room, Extent, Fit};
+use super::BuildError;
 use crate::construct::Figure;
 use crate::geom::DVec2;
-use crate::kinematics::{analyse, Analysis, KinError, KinRequest};
 use crate::plate::{Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, View, CAPTION_BAND_MM};
 use crate::report::{Method, Report};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
-use crate::scene::Scene;
+use crate::study::{ChartScales, KinScales, Kinematics, Session};
 use std::f64::consts::TAU;
 
 /// The fields of the A1 sheet, sheet mm (x0, y0, x1, y1), y down.
@@ -29,28 +29,26 @@ const TABLES_END: f64 = 584.0;
 const TABLES_RIGHT: f64 = 560.0;
 /// Columns of velocity plans.
 const VEL_COLUMNS: usize = 3;
-/// Room around a plan's drawing for its labels, mm.
-const LABEL_MARGIN: f64 = 8.0;
 
 fn rect(r: [f64; 4]) -> Rect {
     Rect::new(DVec2::new(r[0], r[1]), DVec2::new(r[2], r[3]))
 }
 
-fn size_of(f: &Figure) -> DVec2 {
-    f.bounds().map_or(DVec2::ZERO, |(lo, hi)| hi - lo) + DVec2::splat(LABEL_MARGIN)
+fn field(r: [f64; 4]) -> DVec2 {
+    let r = rect(r);
+    r.max - r.min
 }
 
 /// How much a set of figures overflows cells of `cell` size (≤ 1: fits).
-fn overflow(figs: &[&Figure], cell: DVec2) -> f64 {
-    let room = cell - DVec2::new(0.0, CAPTION_BAND_MM);
-    figs.iter()
-        .map(|f| size_of(f))
-        .fold(0.0f64, |m, s| m.max(s.x / room.x).max(s.y / room.y))
+fn figures_overflow<'a>(figs: impl IntoIterator<Item = &'a Figure>, cell: DVec2) -> f64 {
+    figs.into_iter()
+        .map(|f| overflow(figure_size(f), room(cell)))
+        .fold(0.0f64, f64::max)
 }
 
 /// The next round scale at least `ratio` times larger.
-fn bump(s: Scale, ratio: f64) -> Option<Scale> {
-    Scale::round_for(s.value() * ratio.max(1.0001), 1.0, s.quantity)
+fn bump(s: Scale, ratio: f64) -> Scale {
+    Scale::round_for(s.value() * ratio.max(1.0001), 1.0, s.quantity).unwrap_or(s)
 }
 
 /// Grid cells of `n` views in `r` with `cols` columns.
@@ -80,85 +78,121 @@ fn acc_cell(n: usize) -> DVec2 {
     DVec2::new(r.width() / n.max(1) as f64, r.height())
 }
 
-/// Run the analysis, raising the scales of whatever does not fit its field.
-fn fitted(
-    m: &crate::linkage::Mechanism,
-    mut req: KinRequest,
-) -> Result<(KinRequest, Analysis), BuildError> {
-    let fail = |e: KinError| BuildError::Kinematics(Box::new(e));
+/// The largest of several predicted sizes, component-wise.
+fn largest(extents: &[Extent], mu: Scale) -> DVec2 {
+    extents
+        .iter()
+        .fold(DVec2::ZERO, |m, e| m.max(e.labelled_size_at(mu)))
+}
+
+/// The sheet's scales, chosen before anything is constructed: each view starts at the
+/// scene's μ (or the textbook's) and is raised along the round series until its drawing,
+/// predicted from the analytic twin, fits its field.
+fn predicted_scales(session: &Session<'_>) -> Result<KinScales, BuildError> {
+    let mut sc = session.kin_scales()?;
+    let poses = session.poses()?;
+    let m = session.mechanism("the kinematic sheet")?;
+    let w1 = crate::kinematics::crank_rate(&m.crank);
+    let prog = &poses.program;
+    let plan = fit::positions_extent(&poses);
+    sc.l = fit_scale(sc.l, room(field(PLAN)), Fit::Raise, |mu| {
+        plan.labelled_size_at(mu)
+    })
+    .unwrap_or(sc.l);
+    let vel: Vec<Extent> = poses
+        .positions
+        .iter()
+        .map(|p| fit::plan_extent(prog, &p.pose, w1, false))
+        .collect();
+    let cell = room(vel_cell(vel.len()));
+    sc.v = fit_scale(sc.v, cell, Fit::Raise, |mu| largest(&vel, mu)).unwrap_or(sc.v);
+    let asked = session.acceleration_positions()?;
+    let acc: Vec<Extent> = asked
+        .iter()
+        .map(|&k| fit::plan_extent(prog, &poses.positions[k].pose, w1, true))
+        .collect();
+    let cell = room(acc_cell(acc.len()));
+    sc.a = fit_scale(sc.a, cell, Fit::Raise, |mu| largest(&acc, mu)).unwrap_or(sc.a);
+    Ok(sc)
+}
+
+/// The study at the sheet's scales. The scales are predicted first, so each position and
+/// each plan is constructed once; should a constructed plan still overflow its field (the
+/// prediction allows for its construction lines, not its labels), its μ is raised and the
+/// plans are drawn again. The displacement chart is fitted to its field afterwards: it is
+/// read off the plan of positions, which does not change.
+fn fitted(session: &Session<'_>) -> Result<Kinematics, BuildError> {
+    let mut sc = predicted_scales(session)?;
     for _ in 0..8 {
-        let a = analyse(m, &req).map_err(fail)?;
+        let k = session.kinematics(&sc)?;
         let mut changed = false;
-        let plan_over = overflow(&[&a.plan.figure], rect(PLAN).max - rect(PLAN).min);
+        let plan_over = figures_overflow([&k.plan.figure], field(PLAN));
         if plan_over > 1.0 {
-            req.scale_l = bump(req.scale_l, plan_over).unwrap_or(req.scale_l);
+            sc.l = bump(sc.l, plan_over);
             changed = true;
         }
-        let vel: Vec<&Figure> = a.velocity.iter().flatten().map(|p| &p.figure).collect();
-        let mut v_over = overflow(&vel, vel_cell(vel.len()));
-        if let Some((_, h)) = &a.hodograph {
-            v_over = v_over.max(overflow(&[h], rect(HODOGRAPH).max - rect(HODOGRAPH).min));
+        let vel = k.velocity_plans();
+        let mut v_over =
+            figures_overflow(vel.iter().flatten().map(|p| &p.figure), vel_cell(vel.len()));
+        if let Some((_, h)) = &k.hodograph {
+            v_over = v_over.max(figures_overflow([h.as_ref()], field(HODOGRAPH)));
         }
         if v_over > 1.0 {
-            req.spec.scale_v = bump(a.scale_v, v_over);
+            sc.v = bump(sc.v, v_over);
             changed = true;
         }
-        let acc: Vec<&Figure> = a.acceleration.iter().map(|p| &p.1.figure).collect();
-        let a_over = overflow(&acc, acc_cell(acc.len()));
+        let acc = k.acceleration.iter().map(|p| &p.1 .0.figure);
+        let a_over = figures_overflow(acc, acc_cell(k.acceleration.len()));
         if a_over > 1.0 {
-            req.spec.scale_a = bump(a.scale_a, a_over);
+            sc.a = bump(sc.a, a_over);
             changed = true;
         }
-        if let Some(d) = &a.diagrams {
-            let r = rect(DIAGRAMS);
-            let (lo, hi) = stack_bounds(d);
-            let need = hi - lo + DVec2::splat(LABEL_MARGIN);
-            let room = r.max - r.min - DVec2::new(0.0, CAPTION_BAND_MM);
-            let over = (need.x / room.x).max(need.y / room.y);
-            if over > 1.0 {
-                // The scene's diagram scales do not fit: take the turn from the field's width
-                // and μ_s from its height, poles chosen for them; then raise both if need be.
-                let span = d.s.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-                let fresh = req.spec.pole_h1.is_some()
-                    || req
-                        .spec
-                        .scale_phi
-                        .is_none_or(|s| s.value() < TAU / (0.75 * r.width()));
-                let (phi, s) = if fresh {
-                    (TAU / (0.7 * r.width()), span / (0.18 * r.height()))
-                } else {
-                    (d.scales.x.value() * over, d.scales.y.value() * over)
-                };
-                req.spec.scale_phi = Scale::new(phi, Quantity::Angle);
-                req.spec.scale_s = Scale::round_for(s.max(1e-12), 1.0, Quantity::Length);
-                req.spec.pole_h1 = None;
-                req.spec.pole_h2 = None;
+        if let Some(d) = &k.diagrams {
+            if let Some(chart) = refit_chart(d, &sc.chart) {
+                sc.chart = chart;
                 changed = true;
             }
         }
         if !changed {
-            return Ok((req, a));
+            return Ok(k);
         }
     }
-    Err(BuildError::Kinematics(Box::new(KinError::Request(
-        "the kinematic sheet cannot be fitted on A1".into(),
-    ))))
+    Err(BuildError::NoFit("the kinematic sheet"))
 }
 
-/// Bounds of the diagram stack in the first figure's coordinates.
-fn stack_bounds(d: &crate::kinematics::Diagrams) -> (DVec2, DVec2) {
-    let (lo1, hi1) = d.first_figure.bounds().unwrap_or_default();
-    let (lo2, hi2) = d
-        .second_figure
-        .bounds()
-        .map_or((lo1, hi1), |(lo, hi)| (lo + d.second_at, hi + d.second_at));
-    (lo1.min(lo2), hi1.max(hi2))
+/// New chart scales when the diagram stack overflows its field: the turn from the field's
+/// width and μ_s from its height, poles chosen for them; or both raised if need be.
+fn refit_chart(d: &crate::kinematics::Diagrams, chart: &ChartScales) -> Option<ChartScales> {
+    let r = rect(DIAGRAMS);
+    let (lo, hi) = d.bounds();
+    let need = hi - lo + DVec2::splat(fit::LABEL_MARGIN);
+    let over = overflow(need, room(r.max - r.min));
+    if over <= 1.0 {
+        return None;
+    }
+    let span = d.s.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let fresh = chart.h1.is_some()
+        || chart
+            .phi
+            .is_none_or(|s| s.value() < TAU / (0.75 * r.width()));
+    let (phi, s) = if fresh {
+        (TAU / (0.7 * r.width()), span / (0.18 * r.height()))
+    } else {
+        (d.scales.x.value() * over, d.scales.y.value() * over)
+    };
+    Some(ChartScales {
+        phi: Scale::new(phi, Quantity::Angle),
+        s: Scale::round_for(s.max(1e-12), 1.0, Quantity::Length),
+        h1: None,
+        h2: None,
+    })
 }
 
 /// Build the plate.
-pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
-    let lang = opts.lang;
-    let (req, a) = fitted(&scene.mechanism, kin_request(scene, opts.drafting)?)?;
+pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
+    let scene = session.scene();
+    let a = fitted(session)?;
+    let req = &a.scales;
     let mut views = Vec::new();
     let cap = |ru: &str, uk: &str, en: &str, s: Scale| {
         format!("{}, {}", lang.pick(ru, uk, en), s.caption(lang))
@@ -170,16 +204,17 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
             "План положений",
             "План положень",
             "Plan of positions",
-            req.scale_l,
+            req.l,
         )),
     )?);
-    let n = a.velocity.len();
+    let velocity = a.velocity_plans();
+    let n = velocity.len();
     let mut notes = Vec::new();
     for ((pos, vp), cell) in
         a.plan
             .positions
             .iter()
-            .zip(&a.velocity)
+            .zip(&velocity)
             .zip(cells(rect(VELOCITY), n, VEL_COLUMNS))
     {
         let c = format!("{} {}", lang.pick("Пол.", "Пол.", "Pos."), pos.label);
@@ -212,18 +247,18 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
                 "Acceleration plan, pos."
             )
         );
-        views.push(View::centred(ap.figure.clone(), cell, Some(c))?);
+        views.push(View::centred(ap.0.figure.clone(), cell, Some(c))?);
     }
     let mut lines = vec![format!(
         "{}: {}; {}: {}",
         lang.pick("Планы скоростей", "Плани швидкостей", "Velocity plans"),
-        a.scale_v.caption(lang),
+        req.v.caption(lang),
         lang.pick("планы ускорений", "плани прискорень", "acceleration plans"),
-        a.scale_a.caption(lang)
+        req.a.caption(lang)
     )];
     if let Some(d) = &a.diagrams {
         let r = rect(DIAGRAMS);
-        let (lo, hi) = stack_bounds(d);
+        let (lo, hi) = d.bounds();
         // Centre the stack in its field, leaving the caption band under it.
         let centre = (lo + hi) * 0.5;
         let field_centre = r.center() - DVec2::new(0.0, CAPTION_BAND_MM * 0.5);
@@ -267,7 +302,7 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
             lang.pick("Годограф", "Годограф", "Hodograph"),
             crate::linkage::plain(name)
         );
-        views.push(View::centred(h.clone(), rect(HODOGRAPH), Some(c))?);
+        views.push(View::centred(h.as_ref().clone(), rect(HODOGRAPH), Some(c))?);
         lines.push(format!(
             "{} v_{{{}}}: {}",
             lang.pick("Годограф", "Годограф", "Hodograph"),
@@ -341,7 +376,7 @@ fn cell(x: f64, lang: Lang) -> String {
 
 /// The analytic table and the error estimates (section 1.6 of the seed), side by side, kept
 /// left of the title block.
-fn tables(a: &Analysis, scene: &Scene, lang: Lang, y: f64) -> Vec<TableBlock> {
+fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang, y: f64) -> Vec<TableBlock> {
     let size = 2.5;
     let errors_w = 86.0;
     let t = &a.table;
@@ -384,7 +419,12 @@ fn tables(a: &Analysis, scene: &Scene, lang: Lang, y: f64) -> Vec<TableBlock> {
     };
     let report = Report {
         scene: scene.stem.clone(),
-        rows: a.rows.clone(),
+        // The displacement is a reading, not a derived quantity: it has no error estimate.
+        rows: a
+            .rows()
+            .into_iter()
+            .filter(|r| r.key.symbol != crate::check::Symbol::Displacement)
+            .collect(),
         tables: Vec::new(),
         notes: Vec::new(),
     };
@@ -395,18 +435,14 @@ fn tables(a: &Analysis, scene: &Scene, lang: Lang, y: f64) -> Vec<TableBlock> {
     // Diagrams first (the textbook's comparison), then by the error as displayed (0.01 %),
     // ties in report order: rounding noise must not reorder the table.
     let shown_pct = |x: f64| (x * 1e4).round() as i64;
-    let mut entries: Vec<_> = summary
-        .entries
-        .iter()
-        .filter(|e| !e.quantity.starts_with("s_"))
-        .collect();
+    let mut entries: Vec<_> = summary.entries.iter().collect();
     entries.sort_by_key(|e| (e.method == Method::Plan, -shown_pct(e.max_abs_rel)));
     let err_rows: Vec<Vec<String>> = entries
         .into_iter()
         .take(room)
         .map(|e| {
             let worst = if shown_pct(e.max_abs_rel) > 0 {
-                e.worst_position.clone()
+                e.worst_position.clone().unwrap_or_default()
             } else {
                 "—".into()
             };

@@ -1,62 +1,40 @@
-//! Sheets: the plates a scene asks for, composed from the domain figures on ГОСТ sheets.
+//! Sheets: the plates a scene asks for, composed from the studies of its session on ГОСТ
+//! sheets.
 
+mod fit;
 mod kinematics;
 mod positions;
 
-use crate::construct::Drafting;
-use crate::linkage::LinkageError;
 use crate::plate::{Plate, PlateError, TitleBlock};
 use crate::scale::Lang;
 use crate::scene::{PlateKind, Scene};
+use crate::study::{Session, StudyError};
 use thiserror::Error;
-
-/// How to render.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RenderOptions {
-    /// Label language.
-    pub lang: Lang,
-    /// The drafting model for measured lengths.
-    pub drafting: Drafting,
-}
-
-impl Default for RenderOptions {
-    fn default() -> Self {
-        Self {
-            lang: Lang::Ru,
-            drafting: Drafting::EXACT,
-        }
-    }
-}
 
 /// Why a plate cannot be built.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum BuildError {
-    /// A construction failed.
+    /// A study of the scene failed.
     #[error(transparent)]
-    Linkage(#[from] LinkageError),
-    /// The kinematic analysis failed.
-    #[error(transparent)]
-    Kinematics(Box<crate::kinematics::KinError>),
+    Study(#[from] StudyError),
     /// The drawing does not fit the sheet.
     #[error(transparent)]
     Plate(#[from] PlateError),
+    /// No round drawing scale can be formed for a size.
+    #[error("no drawing scale can be chosen for the size {0} m")]
+    NoScale(f64),
+    /// A sheet's views cannot be fitted on it by raising their scales.
+    #[error("{0} cannot be fitted on A1")]
+    NoFit(&'static str),
+    /// The tolerances of a drawing cannot be set up.
+    #[error("tolerances: {0}")]
+    Tolerances(String),
 }
 
-/// The kinematic analysis a scene asks for, at its μ_l (or the textbook's choice for the crank).
-pub fn kin_request(
-    scene: &Scene,
-    drafting: Drafting,
-) -> Result<crate::kinematics::KinRequest, BuildError> {
-    let scale_l = match scene.scale_l {
-        Some(s) => s,
-        None => positions::crank_scale(&scene.mechanism)?,
-    };
-    Ok(crate::kinematics::KinRequest {
-        positions: positions::request(scene),
-        scale_l,
-        spec: scene.kinematics.clone(),
-        drafting,
-    })
+impl From<crate::kinematics::KinError> for BuildError {
+    fn from(e: crate::kinematics::KinError) -> Self {
+        BuildError::Study(e.into())
+    }
 }
 
 /// The title block of a plate of `scene`, filled from its `[task]`.
@@ -75,10 +53,10 @@ fn title_block(scene: &Scene, sheet_title: &str, sheet_no: u32, sheets: u32) -> 
     }
 }
 
-/// Build one plate of a scene.
-pub fn build(scene: &Scene, kind: PlateKind, opts: &RenderOptions) -> Result<Plate, BuildError> {
+/// Build one plate of the session's scene, in `lang`.
+pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Plate, BuildError> {
     match kind {
-        PlateKind::Positions => positions::build(scene, opts),
-        PlateKind::Kinematics => kinematics::build(scene, opts),
+        PlateKind::Positions => positions::build(session, lang),
+        PlateKind::Kinematics => kinematics::build(session, lang),
     }
 }

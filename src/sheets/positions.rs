@@ -1,21 +1,17 @@
 //! Plate "План положений": structural scheme and analysis, the plan of positions with its
 //! construction, trajectories and extreme positions, θ, H and K.
 
-use super::{BuildError, RenderOptions};
+use super::fit::{self, fit_scale, Fit};
+use super::BuildError;
 use crate::geom::{DVec2, Tolerances};
-use crate::linkage::{
-    plan_positions, structure_figure, DyadKind, Mechanism, OutputCoord, PlanRequest, PositionPlan,
-    Structure,
-};
+use crate::linkage::{structure_figure, DyadKind, OutputCoord, PositionPlan, Structure};
 use crate::plate::{Plate, Rect, Sheet, SheetSize, TextBlock, View};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
-use crate::scene::{Scene, Start};
+use crate::study::Session;
 
 /// Sheet A1 landscape: the field for the plan (right) and the left column.
 const PLAN_REGION: (f64, f64, f64, f64) = (300.0, 12.0, 830.0, 528.0);
 const SCHEME_REGION: (f64, f64, f64, f64) = (26.0, 12.0, 294.0, 300.0);
-/// Preferred drawn length of the crank when the scene gives no μ_l (textbook: 40–60 mm).
-const CRANK_MM: f64 = 50.0;
 /// Preferred size of the structural scheme, mm.
 const SCHEME_MM: f64 = 170.0;
 /// Largest share of its field the plan may take when μ_l is chosen automatically.
@@ -25,29 +21,25 @@ fn rect(r: (f64, f64, f64, f64)) -> Rect {
     Rect::new(DVec2::new(r.0, r.1), DVec2::new(r.2, r.3))
 }
 
-/// The positions a scene asks for.
-pub fn request(scene: &Scene) -> PlanRequest {
-    PlanRequest {
-        count: scene.positions.count,
-        start: match scene.positions.start {
-            Start::WorkingStroke => None,
-            Start::Angle(a) => Some(a),
-        },
-        other_extreme: scene.positions.other_extreme,
-        continuity: scene.positions.continuity,
-    }
-}
-
 /// Build the plate.
-pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
-    let m = &scene.mechanism;
-    let req = request(scene);
+pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
+    let scene = session.scene();
+    let m = session.mechanism("the plan of positions")?;
     let region = rect(PLAN_REGION);
-    let (scale, plan) = match scene.scale_l {
-        Some(s) => (s, plan_positions(m, &req, s, opts.drafting)?),
-        None => fitted_plan(m, &req, region, opts)?,
+    // The scene's μ_l as given; else the finest round μ_l at which the plan, predicted from
+    // the analytic positions, fills its field (a guess from the crank first, as a student
+    // chooses it).
+    let scale = match scene.scale_l {
+        Some(s) => s,
+        None => {
+            let extent = fit::positions_extent(&*session.poses()?);
+            let room = fit::room(region.max - region.min);
+            let start = session.scale_l()?;
+            fit_scale(start, room, Fit::Fill(FILL), |mu| extent.size_at(mu))
+                .ok_or(BuildError::NoScale(start.value()))?
+        }
     };
-    let lang = opts.lang;
+    let plan = session.positions(scale)?;
     let st = Structure::analyse(m);
     let plan_caption = format!(
         "{}, {}",
@@ -96,34 +88,6 @@ pub fn build(scene: &Scene, opts: &RenderOptions) -> Result<Plate, BuildError> {
     })
 }
 
-/// The plan at the finest round μ_l (1–2–2.5–4–5 series) at which it fills its field, as a
-/// student chooses it: first a guess from the crank length, then rescaled to the field.
-fn fitted_plan(
-    m: &Mechanism,
-    req: &PlanRequest,
-    region: Rect,
-    opts: &RenderOptions,
-) -> Result<(Scale, PositionPlan), BuildError> {
-    let room = DVec2::new(
-        region.width(),
-        region.height() - crate::plate::CAPTION_BAND_MM,
-    );
-    let mut scale = crank_scale(m)?;
-    let mut plan = plan_positions(m, req, scale, opts.drafting)?;
-    for _ in 0..6 {
-        let size = plan.figure.bounds().map_or(DVec2::ONE, |(lo, hi)| hi - lo);
-        let need = (size.x / room.x).max(size.y / room.y);
-        let next = Scale::round_for(scale.value() * need, FILL, Quantity::Length)
-            .ok_or_else(|| bad_scale(scale.value()))?;
-        if next == scale {
-            break;
-        }
-        scale = next;
-        plan = plan_positions(m, req, scale, opts.drafting)?;
-    }
-    Ok((scale, plan))
-}
-
 /// The structural scheme at the finest round scale whose drawing fits its field.
 fn scheme_view(
     plan: &PositionPlan,
@@ -132,47 +96,32 @@ fn scheme_view(
     extent: f64,
     lang: Lang,
 ) -> Result<View, BuildError> {
-    let tol = Tolerances::for_model_size(SCHEME_MM)
-        .map_err(|e| crate::linkage::LinkageError::Model(e.to_string()))?;
-    let mut s_scale =
-        Scale::round_for(extent, SCHEME_MM, Quantity::Length).ok_or_else(|| bad_scale(extent))?;
-    let mut tries = 0;
-    loop {
-        let scheme = structure_figure(
+    let tol =
+        Tolerances::for_model_size(SCHEME_MM).map_err(|e| BuildError::Tolerances(e.to_string()))?;
+    let scheme = |s: Scale| {
+        structure_figure(
             &plan.program,
             st,
             &plan.positions[0].built,
             plan_scale.value(),
-            s_scale,
+            s,
             tol,
-        );
-        let caption = format!(
-            "{}, {}",
-            lang.pick("Структурная схема", "Структурна схема", "Structural scheme"),
-            s_scale.caption(lang)
-        );
-        match View::centred(scheme, rect(SCHEME_REGION), Some(caption)) {
-            Ok(v) => return Ok(v),
-            Err(e) if tries >= 6 => return Err(e.into()),
-            Err(_) => {
-                tries += 1;
-                s_scale = Scale::round_for(s_scale.value() * 1.001, 1.0, Quantity::Length)
-                    .ok_or_else(|| bad_scale(extent))?;
-            }
-        }
-    }
-}
-
-/// μ_l chosen from the crank the textbook way (the crank drawn about 50 mm).
-pub(super) fn crank_scale(m: &Mechanism) -> Result<Scale, BuildError> {
-    Scale::round_for(m.crank.length, CRANK_MM, Quantity::Length)
-        .ok_or_else(|| bad_scale(m.crank.length))
-}
-
-fn bad_scale(v: f64) -> BuildError {
-    BuildError::Linkage(crate::linkage::LinkageError::Model(format!(
-        "no drawing scale can be chosen for the size {v} m"
-    )))
+        )
+    };
+    let region = rect(SCHEME_REGION);
+    let start =
+        Scale::round_for(extent, SCHEME_MM, Quantity::Length).ok_or(BuildError::NoScale(extent))?;
+    // The scheme is a drawing of position 1 (no construction): drawn at each trial μ.
+    let s_scale = fit_scale(start, fit::room(region.max - region.min), Fit::Raise, |s| {
+        scheme(s).bounds().map_or(DVec2::ZERO, |(lo, hi)| hi - lo)
+    })
+    .ok_or(BuildError::NoScale(extent))?;
+    let caption = format!(
+        "{}, {}",
+        lang.pick("Структурная схема", "Структурна схема", "Structural scheme"),
+        s_scale.caption(lang)
+    );
+    Ok(View::centred(scheme(s_scale), region, Some(caption))?)
 }
 
 fn kind_name(k: DyadKind, lang: Lang) -> String {

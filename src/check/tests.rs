@@ -1,0 +1,132 @@
+use super::*;
+
+fn row(symbol: Symbol, subject: &str, at: &str, method: Method, g: f64, a: f64, scale: f64) -> Row {
+    Row {
+        key: Key::at_position(symbol, subject, at),
+        method,
+        graphical: g,
+        analytic: a,
+        conditioning: None,
+        scale,
+    }
+}
+
+#[test]
+fn keys_name_quantities_and_units() {
+    let k = Key::at_position(Symbol::Velocity, "B3_B1", "3");
+    assert_eq!(k.quantity(), "v_B3_B1");
+    assert_eq!(k.symbol.unit(), "m/s");
+    assert_eq!(Symbol::AngularAcceleration.markup("3"), "ε_{3}");
+    let whole = Key {
+        symbol: Symbol::Displacement,
+        subject: "E".into(),
+        at: At::Scene,
+    };
+    assert_eq!(whole.at.label(), None);
+}
+
+#[test]
+fn methods_keep_the_diagram_prefix() {
+    assert_eq!(Method::DiagramChords.key(), "diagram-chords");
+    assert!(Method::DiagramTangents.key().starts_with("diagram"));
+    assert_eq!(Method::parse("diagram"), Some(Method::DiagramChords));
+    assert_eq!(
+        Method::parse("diagram-tangents"),
+        Some(Method::DiagramTangents)
+    );
+    assert_eq!(Method::parse("plan"), Some(Method::Plan));
+    assert_eq!(Method::parse("lathe"), None);
+    assert_eq!(serde_json::to_string(&Method::Lever).unwrap(), "\"lever\"");
+}
+
+/// Hard case 3 of the independent check: a relative velocity that vanishes at a dead centre
+/// (7e-15 read against 1.8e-15 analytic) is zero to rounding against the quantity's scale
+/// over the cycle, not a 312 % error; two quantities with identical values get the same
+/// verdict whatever other rows the report holds.
+#[test]
+fn zero_to_rounding_is_judged_against_the_cycle() {
+    let rows = vec![
+        row(
+            Symbol::Acceleration,
+            "B3_B1",
+            "1",
+            Method::Plan,
+            7e-15,
+            1.8e-15,
+            12.0,
+        ),
+        row(
+            Symbol::Acceleration,
+            "B3_B1",
+            "7",
+            Method::Plan,
+            7e-15,
+            -2.1e-15,
+            12.0,
+        ),
+        row(
+            Symbol::AngularAcceleration,
+            "2",
+            "1",
+            Method::Plan,
+            3e-15,
+            2e-15,
+            40.0,
+        ),
+        row(
+            Symbol::AngularAcceleration,
+            "3",
+            "1",
+            Method::Plan,
+            3e-15,
+            2e-15,
+            40.0,
+        ),
+        row(
+            Symbol::AngularAcceleration,
+            "3",
+            "2",
+            Method::DiagramChords,
+            39.0,
+            40.0,
+            40.0,
+        ),
+    ];
+    let rel = rel_errors(&rows);
+    assert_eq!(&rel[..4], &[None, None, None, None]);
+    assert!((rel[4].unwrap() + 0.025).abs() < 1e-15);
+    let s = Summary::of(&rows);
+    assert_eq!(s.entries.len(), 1);
+    assert_eq!(s.entries[0].quantity, "eps_3");
+    // Without the cycle's scale, the old rule (largest |analytic| among the rows) would
+    // have judged 1.8e-15 against 2.1e-15 and reported a 289 % error.
+    let alone = vec![
+        row(
+            Symbol::Acceleration,
+            "B3_B1",
+            "1",
+            Method::Plan,
+            7e-15,
+            1.8e-15,
+            0.0,
+        ),
+        row(
+            Symbol::Acceleration,
+            "B3_B1",
+            "7",
+            Method::Plan,
+            7e-15,
+            -2.1e-15,
+            0.0,
+        ),
+    ];
+    assert!(rel_errors(&alone)[0].is_some_and(|d| d > 2.0));
+}
+
+#[test]
+fn is_zero_is_scale_aware() {
+    assert!(is_zero(1e-13, 1.0));
+    assert!(!is_zero(1e-13, 1e-3));
+    assert!(!is_zero(f64::NAN, 1.0));
+    assert!(is_zero(0.0, 0.0));
+}

@@ -1,0 +1,228 @@
+//! The displacement diagram S(φ₁) of a point read off the plan of positions, differentiated
+//! twice graphically (chords, or tangents), and its rows against the analytic values.
+
+use super::{extent, numbered, pole_and_scale, turn_diagram, KinError, KinematicsSpec};
+use super::{DIAGRAM_GAP, DIAGRAM_MM};
+use crate::calculus::{self, Derivative, Diagram, Layout, Scales};
+use crate::check::{Key, Method, Row, Symbol};
+use crate::construct::{Drafting, Figure, Recorder};
+use crate::geom::{DVec2, Tolerances};
+use crate::linkage::{plain, Output, PositionPlan};
+use crate::scale::{Quantity, Scale};
+use std::f64::consts::TAU;
+
+/// Abscissa of one crank turn on a diagram when μ_φ is not given, mm.
+const TURN_MM: f64 = 240.0;
+
+/// The displacement diagram and its two graphical derivatives.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagrams {
+    /// The charted point's name.
+    pub point: String,
+    /// μ_φ, μ_s of the displacement diagram.
+    pub scales: Scales,
+    /// The displacement diagram and the first derivative, drawn together.
+    pub first_figure: Figure,
+    /// The second derivative; its figure's origin lies at `second_at` of the first figure
+    /// (on the dS/dφ axes, where its chords are drawn).
+    pub second_figure: Figure,
+    /// Where the second figure's origin lies in the first figure's coordinates, mm.
+    pub second_at: DVec2,
+    /// dS/dφ₁.
+    pub first: Derivative,
+    /// d²S/dφ₁².
+    pub second: Derivative,
+    /// The displacement read off the plan at the numbered positions, m.
+    pub s: Vec<f64>,
+    /// S, v = |ω₁|·dS/dφ₁, a = ω₁²·d²S/dφ₁² at the numbered positions against the twin.
+    pub rows: Vec<Row>,
+}
+
+impl Diagrams {
+    /// Bounds of the whole stack in the first figure's coordinates.
+    pub fn bounds(&self) -> (DVec2, DVec2) {
+        let (lo1, hi1) = self.first_figure.bounds().unwrap_or_default();
+        let (lo2, hi2) = self.second_figure.bounds().map_or((lo1, hi1), |(lo, hi)| {
+            (lo + self.second_at, hi + self.second_at)
+        });
+        (lo1.min(lo2), hi1.max(hi2))
+    }
+}
+
+/// The charted point (the scene's, or the first slider output) and the direction its
+/// displacement is measured along.
+pub fn target(
+    plan: &PositionPlan,
+    outputs: &[Output],
+    spec: &KinematicsSpec,
+) -> Result<Option<(usize, DVec2)>, KinError> {
+    let slider = outputs.iter().find_map(|o| match o {
+        Output::Slider { point, dir } => Some((point.clone(), *dir)),
+        Output::Rocker { .. } => None,
+    });
+    let name = match (&spec.diagram_point, &slider) {
+        (Some(n), _) => n.clone(),
+        (None, Some((n, _))) => n.clone(),
+        (None, None) => return Ok(None),
+    };
+    let k = plan.program.index(&name).ok_or(KinError::NoSuchPoint {
+        key: "diagram",
+        name,
+    })?;
+    let dir = slider.map_or(0.0, |s| s.1);
+    Ok(Some((k, DVec2::from_angle(dir))))
+}
+
+/// The chart's scales: μ_S and μ_φ as given, or chosen for the displacement's span.
+fn chart_scales(spec: &KinematicsSpec, s: &[f64]) -> Result<Scales, KinError> {
+    let span = super::peak(s.iter().copied());
+    let y = match spec.scale_s {
+        Some(s) => s,
+        None => super::round_scale(span.max(1e-9), DIAGRAM_MM, Quantity::Length)?,
+    };
+    let x = match spec.scale_phi {
+        Some(s) => s,
+        None => Scale::new(TAU / TURN_MM, Quantity::Angle).ok_or(KinError::NoScale {
+            quantity: Quantity::Angle,
+            value: TAU,
+        })?,
+    };
+    Ok(Scales { x, y })
+}
+
+/// S(φ₁) of the charted point read off the plan at the numbered positions (at μ_l =
+/// `scale_l`), its two graphical derivatives, and their rows. `None` when the mechanism has
+/// no point to chart or fewer than three numbered positions.
+pub fn diagrams(
+    plan: &PositionPlan,
+    outputs: &[Output],
+    spec: &KinematicsSpec,
+    scale_l: Scale,
+    w1: f64,
+    tol: Tolerances,
+    drafting: Drafting,
+) -> Result<Option<Diagrams>, KinError> {
+    let Some((k, dir)) = target(plan, outputs, spec)? else {
+        return Ok(None);
+    };
+    let numbered = numbered(plan);
+    if numbered.len() < 3 {
+        return Ok(None);
+    }
+    let name = plan.program.names[k].clone();
+    let fail = |what: &str, error| KinError::Diagram {
+        what: format!("{what} of {name}"),
+        error,
+    };
+    // S is read off the plan of positions: the distance from position 1, signed along the guide.
+    let reader = Recorder::new("S", scale_l, tol, drafting);
+    let p1 = numbered[0].1.built.p[k];
+    let s: Vec<f64> = numbered
+        .iter()
+        .map(|(_, p)| {
+            let d = p.built.p[k] - p1;
+            reader.measure(p1, p.built.p[k]).value * d.dot(dir).signum()
+        })
+        .collect();
+    let src = turn_diagram(s.clone()).map_err(|e| fail("S", e))?;
+    let scales = chart_scales(spec, &s)?;
+    let (h1, mu1) = pole_and_scale(spec.pole_h1, &src, scales, DIAGRAM_MM, Quantity::Length)
+        .map_err(|e| fail("dS/dφ", e))?;
+    // The textbook's stack: S on top, dS/dφ under it, d²S/dφ² under that; the second
+    // differentiation's chords are drawn on the dS/dφ curve itself (its figure's source axes
+    // coincide with the first figure's result axes). Each diagram is placed from the
+    // extent of its ordinates.
+    let differentiate = if spec.tangents {
+        calculus::differentiate_tangents
+    } else {
+        calculus::differentiate_chords
+    };
+    let method = if spec.tangents {
+        Method::DiagramTangents
+    } else {
+        Method::DiagramChords
+    };
+    let (s_lo, _) = extent(s.iter(), scales.y);
+    let (d1_lo, d1_hi) = ordinates(&src, scales, h1, mu1, tol).map_err(|e| fail("dS/dφ", e))?;
+    let mut rec1 = Recorder::new("dS/dφ", mu1, tol, drafting);
+    let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
+        .pole_named("P_1", "H_1");
+    let first = differentiate(&mut rec1, &src, scales, h1, &lay1).map_err(|e| fail("dS/dφ", e))?;
+    let d1 = first.diagram().map_err(|e| fail("dS/dφ", e))?;
+    let scales2 = Scales {
+        x: scales.x,
+        y: mu1,
+    };
+    let (h2, mu2) = pole_and_scale(spec.pole_h2, &d1, scales2, DIAGRAM_MM, Quantity::Length)
+        .map_err(|e| fail("d²S/dφ²", e))?;
+    let (_, d2_hi) = ordinates(&d1, scales2, h2, mu2, tol).map_err(|e| fail("d²S/dφ²", e))?;
+    let mut rec2 = Recorder::new("d²S/dφ²", mu2, tol, drafting);
+    let lay2 = Layout::new(DVec2::ZERO, DVec2::new(0.0, d1_lo - DIAGRAM_GAP - d2_hi))
+        .with_source(false)
+        .named("φ", "dS/dφ", "d²S/dφ²")
+        .pole_named("P_2", "H_2");
+    let second =
+        differentiate(&mut rec2, &d1, scales2, h2, &lay2).map_err(|e| fail("d²S/dφ²", e))?;
+    // Rows: S, v = |ω₁|·dS/dθ, a = ω₁²·d²S/dθ² at the numbered positions.
+    let q = plain(&name);
+    let p0 = numbered[0].1.pose.p[k];
+    let analytic: Vec<[f64; 3]> = numbered
+        .iter()
+        .map(|(_, p)| {
+            let pose = &p.pose;
+            [
+                (pose.p[k] - p0).dot(dir),
+                (pose.dp[k] * w1).length(),
+                (pose.ddp[k] * (w1 * w1)).length(),
+            ]
+        })
+        .collect();
+    let scale = |j: usize| super::peak(analytic.iter().map(|a| a[j]));
+    let (s_scale, v_scale, a_scale) = (scale(0), scale(1), scale(2));
+    let mut rows = Vec::with_capacity(3 * numbered.len());
+    for (idx, (_, p)) in numbered.iter().enumerate() {
+        let v_gr = (first.node[idx] * w1.abs()).abs();
+        let a_gr = (second.node[idx] * w1 * w1).abs();
+        for (symbol, g, a, sc) in [
+            (Symbol::Displacement, s[idx], analytic[idx][0], s_scale),
+            (Symbol::Velocity, v_gr, analytic[idx][1], v_scale),
+            (Symbol::Acceleration, a_gr, analytic[idx][2], a_scale),
+        ] {
+            rows.push(Row {
+                key: Key::at_position(symbol, q.clone(), &p.label),
+                method,
+                graphical: g,
+                analytic: a,
+                conditioning: None,
+                scale: sc,
+            });
+        }
+    }
+    Ok(Some(Diagrams {
+        point: name,
+        scales,
+        first_figure: rec1.finish(),
+        second_figure: rec2.finish(),
+        second_at: lay1.origin,
+        first,
+        second,
+        s,
+        rows,
+    }))
+}
+
+/// Lowest and highest drawn ordinate (mm) of the chord derivative of `d` at μ = `mu`, with 0
+/// included: where the next diagram of the stack goes. The chords are worked out on a
+/// scratch sheet that is not kept.
+pub(super) fn ordinates(
+    d: &Diagram,
+    scales: Scales,
+    h: f64,
+    mu: Scale,
+    tol: Tolerances,
+) -> Result<(f64, f64), calculus::CalculusError> {
+    let mut r = Recorder::new("scratch", mu, tol, Drafting::EXACT);
+    let lay = Layout::new(DVec2::ZERO, DVec2::ZERO).with_source(false);
+    let dv = calculus::differentiate_chords(&mut r, d, scales, h, &lay)?;
+    Ok(extent(dv.mid.iter().chain(&dv.node), mu))
+}

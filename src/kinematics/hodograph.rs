@@ -1,0 +1,95 @@
+//! The hodograph of a point's velocity: the velocity vectors of every position from one
+//! pole (copied from the velocity plans), their ends joined by a smooth curve.
+
+use super::KinError;
+use crate::construct::{Drafting, Figure, Item, Recorder, Role};
+use crate::geom::{DVec2, Tolerances};
+use crate::linkage::{KinPlan, Op, PositionPlan};
+use crate::scale::{Quantity, Scale};
+
+/// Length of the longest hodograph vector, mm.
+const HODOGRAPH_MM: f64 = 45.0;
+
+/// The point whose hodograph is drawn: the scene's, or the first point of a link.
+pub fn hodograph_point(
+    plan: &PositionPlan,
+    asked: Option<&str>,
+) -> Result<Option<usize>, KinError> {
+    let prog = &plan.program;
+    let name = match asked {
+        Some(n) => n.to_string(),
+        None => match prog.ops.iter().find_map(|op| match op {
+            Op::Point { idx, .. } => Some(prog.names[*idx].clone()),
+            _ => None,
+        }) {
+            Some(n) => n,
+            None => return Ok(None),
+        },
+    };
+    prog.index(&name).map(Some).ok_or(KinError::NoSuchPoint {
+        key: "hodograph",
+        name,
+    })
+}
+
+/// The hodograph of point `k` from the velocity plans (at μ_v = `scale_v`; `None` where a
+/// plan is refused), at its own μ: the longest vector drawn about 45 mm.
+pub fn hodograph(
+    plan: &PositionPlan,
+    k: usize,
+    velocity: &[Option<&KinPlan>],
+    scale_v: Scale,
+    tol: Tolerances,
+    drafting: Drafting,
+) -> Figure {
+    let name = &plan.program.names[k];
+    let longest = velocity
+        .iter()
+        .flatten()
+        .map(|vp| vp.images[k].length())
+        .fold(0.0, f64::max)
+        * scale_v.value();
+    let scale =
+        Scale::round_for(longest.max(1e-12), HODOGRAPH_MM, Quantity::Velocity).unwrap_or(scale_v);
+    let copy = scale_v.value() / scale.value();
+    let mut rec = Recorder::new("hodograph", scale, tol, drafting);
+    rec.point(
+        "pole",
+        DVec2::ZERO,
+        Role::Given,
+        "p",
+        DVec2::new(-0.7, -0.7),
+        &[],
+    );
+    let mut ends = Vec::new();
+    for (pos, vp) in plan
+        .positions
+        .iter()
+        .zip(velocity)
+        .filter_map(|(p, v)| v.map(|v| (p, v)))
+    {
+        // The vector copied from the velocity plan, redrawn at the hodograph's μ.
+        let end = vp.images[k] * copy;
+        let id = rec.draw(
+            format!("v of {name}, position {}", pos.label),
+            Item::Vector {
+                from: DVec2::ZERO,
+                to: end,
+            },
+            Role::Construction,
+            &[],
+        );
+        rec.label(id, pos.label.clone(), end, end.normalize_or(DVec2::Y));
+        ends.push(end);
+    }
+    rec.draw(
+        format!("hodograph of {name}"),
+        Item::Curve {
+            points: ends,
+            closed: true,
+        },
+        Role::Result,
+        &[],
+    );
+    rec.finish()
+}

@@ -1,0 +1,235 @@
+//! Kinematic analysis of a linkage, the graphical way and the analytic way side by side,
+//! as sub-studies the session ([`crate::study`]) asks for one at a time:
+//! - [`plans`]: a velocity plan at a position of the plan of positions, an acceleration plan
+//!   from it, and their readings against the analytic twin;
+//! - [`diagrams`]: the displacement diagram of a point over a crank turn, differentiated
+//!   twice by chords (or tangents);
+//! - [`rocker`]: the rocker's ω diagram from the velocity plans, differentiated into ε;
+//! - [`hodograph`]: the hodograph of a point's velocity;
+//! - [`table`]: the analytic table in the shape of seed 000 Table 5.
+//!
+//! Every reading comes out as a typed [`Row`]: graphical against analytic.
+
+pub mod diagrams;
+pub mod hodograph;
+pub mod plans;
+pub mod rocker;
+pub mod table;
+
+pub use diagrams::Diagrams;
+pub use plans::{acceleration_indices, Velocity};
+pub use rocker::RockerDiagram;
+
+use crate::calculus::{self, Diagram, Scales};
+use crate::check::Row;
+use crate::construct::ConstructionError;
+use crate::linkage::{LinkageError, PlanKind, PositionPlan};
+use crate::scale::{Quantity, Scale};
+use std::f64::consts::TAU;
+use thiserror::Error;
+
+/// Preferred drawn length of the crank pin's velocity and acceleration, mm (textbook 70–100).
+pub const PLAN_MM: f64 = 70.0;
+/// Preferred height of a diagram, mm.
+const DIAGRAM_MM: f64 = 35.0;
+/// Gap between stacked diagrams, mm.
+const DIAGRAM_GAP: f64 = 16.0;
+
+/// The `[kinematics]` section: scales and choices of the kinematic analysis. Every field is
+/// optional; `None` leaves the choice to the analysis.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct KinematicsSpec {
+    /// μ_v of the velocity plans, (m/s)/mm.
+    pub scale_v: Option<Scale>,
+    /// μ_a of the acceleration plans, (m/s²)/mm.
+    pub scale_a: Option<Scale>,
+    /// The positions whose acceleration plans are drawn, by label (`"3"`, `"8′"`); 1–4
+    /// entries. A numbered label is at most the position count; a primed (extreme) label is
+    /// checked against the plan of positions when it exists.
+    pub acceleration_positions: Option<Vec<String>>,
+    /// The point whose displacement S(φ₁) is charted and differentiated (`S_5`).
+    pub diagram_point: Option<String>,
+    /// μ_S of the displacement chart, m/mm.
+    pub scale_s: Option<Scale>,
+    /// μ_φ of the crank-angle axis of the charts, rad/mm.
+    pub scale_phi: Option<Scale>,
+    /// Pole distance H₁ of the first graphical differentiation, drawing mm.
+    pub pole_h1: Option<f64>,
+    /// Pole distance H₂ of the second graphical differentiation, drawing mm.
+    pub pole_h2: Option<f64>,
+    /// The point whose velocity hodograph is drawn (`S_3`).
+    pub hodograph: Option<String>,
+    /// Graphical differentiation by the method of tangents instead of chords
+    /// (`differentiation = "tangents"`; default `"chords"`).
+    pub tangents: bool,
+}
+
+/// Why a kinematic study cannot be carried out.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum KinError {
+    /// The positions cannot be constructed.
+    #[error(transparent)]
+    Linkage(#[from] LinkageError),
+    /// A plan cannot be constructed at a position.
+    #[error("position {position}: {} plan, group {group}: {error}", kind_name(*.kind))]
+    Plan {
+        /// Position label.
+        position: String,
+        /// Which plan.
+        kind: PlanKind,
+        /// The group (file order, 1-based).
+        group: usize,
+        /// The diagnostic.
+        error: Box<ConstructionError>,
+    },
+    /// A diagram cannot be constructed.
+    #[error("diagram of {what}: {error}")]
+    Diagram {
+        /// Which diagram.
+        what: String,
+        /// The diagnostic.
+        error: calculus::CalculusError,
+    },
+    /// A scene key names a point the mechanism does not have.
+    #[error("kinematics.{key}: there is no point `{name}`")]
+    NoSuchPoint {
+        /// The key (`diagram`, `hodograph`).
+        key: &'static str,
+        /// The name given.
+        name: String,
+    },
+    /// A position label that the plan of positions does not have.
+    #[error("kinematics.acceleration_positions: there is no position {label}; the positions are {}", .valid.join(", "))]
+    NoSuchPosition {
+        /// The label given.
+        label: String,
+        /// The plan's labels.
+        valid: Vec<String>,
+    },
+    /// An acceleration plan asked for at a position whose velocity plan does not exist.
+    #[error("kinematics.acceleration_positions: position {position} has no velocity plan ({why})")]
+    NoVelocityPlan {
+        /// The position.
+        position: String,
+        /// Why its velocity plan was refused.
+        why: String,
+    },
+    /// No round scale can be chosen for a size.
+    #[error("no round scale μ_{} can be chosen for the size {value}", .quantity.symbol())]
+    NoScale {
+        /// What the scale measures.
+        quantity: Quantity,
+        /// The physical size it was chosen for.
+        value: f64,
+    },
+    /// A position index outside the plan of positions.
+    #[error("there is no position number {index} (the plan has {count})")]
+    NoIndex {
+        /// The index asked for (0-based).
+        index: usize,
+        /// The plan's position count.
+        count: usize,
+    },
+}
+
+fn kind_name(kind: PlanKind) -> &'static str {
+    match kind {
+        PlanKind::Velocity => "velocity",
+        PlanKind::Acceleration => "acceleration",
+    }
+}
+
+/// The round scale that draws `value` about `preferred_mm` long (the textbook way).
+pub fn round_scale(value: f64, preferred_mm: f64, quantity: Quantity) -> Result<Scale, KinError> {
+    Scale::round_for(value, preferred_mm, quantity).ok_or(KinError::NoScale { quantity, value })
+}
+
+/// μ_v and μ_a: as the scene gives them, or the textbook's choice that draws the crank pin's
+/// velocity and acceleration about [`PLAN_MM`] long.
+pub fn plan_scales(
+    crank: &crate::linkage::Crank,
+    spec: &KinematicsSpec,
+) -> Result<(Scale, Scale), KinError> {
+    let (r, w) = (crank.length, crank.omega);
+    let v = match spec.scale_v {
+        Some(s) => s,
+        None => round_scale(w * r, PLAN_MM, Quantity::Velocity)?,
+    };
+    let a = match spec.scale_a {
+        Some(s) => s,
+        None => round_scale(w * w * r, PLAN_MM, Quantity::Acceleration)?,
+    };
+    Ok((v, a))
+}
+
+/// ω₁ of the crank, rad/s, signed counter-clockwise.
+pub fn crank_rate(crank: &crate::linkage::Crank) -> f64 {
+    crank.sense.sign() * crank.omega
+}
+
+/// The numbered positions of a plan (the extreme positions `k′` left out), with their index.
+pub fn numbered(plan: &PositionPlan) -> Vec<(usize, &crate::linkage::PlanPosition)> {
+    plan.positions
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.label.parse::<u32>().is_ok())
+        .collect()
+}
+
+/// A periodic diagram over one crank turn through `values` at the numbered positions.
+fn turn_diagram(values: Vec<f64>) -> Result<Diagram, calculus::CalculusError> {
+    let n = values.len();
+    Diagram::new(0.0, TAU / n as f64, values, true)
+}
+
+/// The pole distance H (given, or chosen so the derivative's largest ordinate is about
+/// `preferred` mm) and the derivative's scale μ_y/(H·μ_x).
+fn pole_and_scale(
+    given: Option<f64>,
+    src: &Diagram,
+    scales: Scales,
+    preferred: f64,
+    q: Quantity,
+) -> Result<(f64, Scale), calculus::CalculusError> {
+    let h = match given {
+        Some(h) => h,
+        None => calculus::pole_for(src, scales, preferred)?,
+    };
+    Ok((h, calculus::derivative_scale(scales.y, scales.x, h, q)?))
+}
+
+/// Lowest and highest drawn ordinate (mm) of physical values at scale `mu`, with 0 included.
+fn extent<'a>(values: impl Iterator<Item = &'a f64>, mu: Scale) -> (f64, f64) {
+    values.fold((0.0f64, 0.0f64), |(lo, hi), v| {
+        (lo.min(v / mu.value()), hi.max(v / mu.value()))
+    })
+}
+
+/// The largest magnitude of `values` (the scale of a quantity over the cycle).
+fn peak(values: impl IntoIterator<Item = f64>) -> f64 {
+    values
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(0.0f64, |m, v| m.max(v.abs()))
+}
+
+/// All the rows of a set of studies, in report order: the velocity plans by position, the
+/// acceleration plans, the displacement diagrams, the rocker's diagram.
+pub fn rows<'a>(
+    velocity: impl IntoIterator<Item = &'a [Row]>,
+    acceleration: impl IntoIterator<Item = &'a [Row]>,
+    diagrams: Option<&'a Diagrams>,
+    rocker: Option<&'a RockerDiagram>,
+) -> Vec<Row> {
+    let mut out: Vec<Row> = Vec::new();
+    for r in velocity.into_iter().chain(acceleration) {
+        out.extend_from_slice(r);
+    }
+    if let Some(d) = diagrams {
+        out.extend_from_slice(&d.rows);
+    }
+    if let Some(r) = rocker {
+        out.extend_from_slice(&r.rows);
+    }
+    out
+}

@@ -1,0 +1,108 @@
+//! The angular-velocity diagram of a rocker: ω(φ₁) charted from the velocity plans and
+//! differentiated by chords into ε (seed 000 §1.5).
+
+use super::{extent, numbered, pole_and_scale, round_scale, turn_diagram, KinError, DIAGRAM_GAP};
+use crate::calculus::{self, Derivative, Layout, Scales};
+use crate::check::{Key, Method, Row, Symbol};
+use crate::construct::{Drafting, Figure, Recorder};
+use crate::geom::{DVec2, Tolerances};
+use crate::linkage::{KinPlan, Output, PositionPlan};
+use crate::scale::{Quantity, Scale};
+use std::f64::consts::TAU;
+
+/// Preferred peak ordinates of the rocker's ω diagram and its derivative, mm.
+const ROCKER_MM: f64 = 22.0;
+/// Abscissa of one crank turn on the rocker's ω diagram, mm.
+const ROCKER_TURN_MM: f64 = 120.0;
+
+/// The angular-velocity analogue of a rocker and its chord derivative.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RockerDiagram {
+    /// The rocker's link number.
+    pub link: usize,
+    /// μ_ω of the chart, (rad/s)/mm.
+    pub scale: Scale,
+    /// μ_φ of the abscissa.
+    pub scale_phi: Scale,
+    /// The chord derivative dω/dφ₁ (its scale: (rad/s)/rad per mm).
+    pub derivative: Derivative,
+    /// The figure: the ω chart and its derivative.
+    pub figure: Figure,
+    /// ε = |ω₁|·dω/dφ₁ at the numbered positions against the analytic twin.
+    pub rows: Vec<Row>,
+}
+
+/// The first rocker output's link, if any.
+pub fn rocker_link(outputs: &[Output]) -> Option<usize> {
+    outputs.iter().find_map(|o| match o {
+        Output::Rocker { link } => Some(*link as usize),
+        Output::Slider { .. } => None,
+    })
+}
+
+/// ω of `link` at the numbered positions, read off the velocity plans (`velocity[k]`: the
+/// plan at position `k`, `None` where refused), then differentiated by chords: ε =
+/// |ω₁|·dω/dθ (θ the crank's travel). The seed's ε = 12·0.32 = 3.8 rad/s² (L574) forgets the
+/// factor ω₁; this does not. `None` when a numbered position has no velocity plan.
+pub fn rocker_diagram(
+    plan: &PositionPlan,
+    link: usize,
+    velocity: &[Option<&KinPlan>],
+    w1: f64,
+    tol: Tolerances,
+    drafting: Drafting,
+) -> Result<Option<RockerDiagram>, KinError> {
+    let numbered = numbered(plan);
+    let omega: Option<Vec<f64>> = numbered
+        .iter()
+        .map(|(k, _)| velocity.get(*k).copied().flatten().map(|v| v.rate[link]))
+        .collect();
+    let (Some(omega), true) = (omega, numbered.len() >= 3) else {
+        return Ok(None);
+    };
+    let fail = |error| KinError::Diagram {
+        what: format!("ω_{link}"),
+        error,
+    };
+    let src = turn_diagram(omega.clone()).map_err(fail)?;
+    let peak = super::peak(omega.iter().copied());
+    let scale = round_scale(peak.max(1e-12), ROCKER_MM, Quantity::AngularVelocity)?;
+    let scale_phi = Scale::new(TAU / ROCKER_TURN_MM, Quantity::Angle).ok_or(KinError::NoScale {
+        quantity: Quantity::Angle,
+        value: TAU,
+    })?;
+    let scales = Scales {
+        x: scale_phi,
+        y: scale,
+    };
+    let (h, mu) =
+        pole_and_scale(None, &src, scales, ROCKER_MM, Quantity::AngularVelocity).map_err(fail)?;
+    let (w_lo, _) = extent(omega.iter(), scale);
+    let mut rec = Recorder::new("ω", mu, tol, drafting);
+    let lay = Layout::new(DVec2::ZERO, DVec2::new(0.0, w_lo - DIAGRAM_GAP - ROCKER_MM))
+        .named("φ", &format!("ω_{{{link}}}"), &format!("dω_{{{link}}}/dφ"))
+        .pole_named("P_{ω}", "H_{ω}");
+    let derivative =
+        calculus::differentiate_chords(&mut rec, &src, scales, h, &lay).map_err(fail)?;
+    let eps_scale = super::peak(numbered.iter().map(|(_, p)| p.pose.ddangle[link] * w1 * w1));
+    let rows = numbered
+        .iter()
+        .enumerate()
+        .map(|(idx, (_, p))| Row {
+            key: Key::at_position(Symbol::AngularAcceleration, link.to_string(), &p.label),
+            method: Method::DiagramChords,
+            graphical: derivative.node[idx] * w1.abs(),
+            analytic: p.pose.ddangle[link] * w1 * w1,
+            conditioning: None,
+            scale: eps_scale,
+        })
+        .collect();
+    Ok(Some(RockerDiagram {
+        link,
+        scale,
+        scale_phi,
+        derivative,
+        figure: rec.finish(),
+        rows,
+    }))
+}

@@ -1,0 +1,123 @@
+//! The analytic table in the shape of seed 000 Table 5: φ₁, and per group the angle, ω and ε
+//! of its links (and the slide of a slotted link), then |v|, |a| of every named point.
+
+use crate::linkage::{owner, plain, Op, PDyad, Pose, PositionPlan};
+use crate::report::{Column, Table};
+
+type Cell = Box<dyn Fn(&Pose) -> f64>;
+
+/// The table's columns, each with the function of a pose that fills it.
+struct Columns {
+    columns: Vec<Column>,
+    cells: Vec<Cell>,
+}
+
+impl Columns {
+    fn push(&mut self, name: String, unit: &str, cell: Cell) {
+        self.columns.push(Column {
+            name,
+            unit: unit.into(),
+        });
+        self.cells.push(cell);
+    }
+
+    /// φ, ω, ε of link `l`.
+    fn link(&mut self, l: usize, w1: f64) {
+        self.push(
+            format!("φ_{l}"),
+            "°",
+            Box::new(move |p: &Pose| p.angle(l).to_degrees().rem_euclid(360.0)),
+        );
+        self.push(
+            format!("ω_{l}"),
+            "1/s",
+            Box::new(move |p: &Pose| p.dangle[l] * w1),
+        );
+        self.push(
+            format!("ε_{l}"),
+            "1/s²",
+            Box::new(move |p: &Pose| p.ddangle[l] * w1 * w1),
+        );
+    }
+}
+
+/// The slide of the block at `a` along the slot of link `j` through `c`: the slot
+/// coordinate s = (A − C)·t (t the slot's unit direction; |CA| when the slot passes through
+/// C, its offset leg otherwise), and its rate ds/dφ₁ — the sliding velocity V_{A j A …}
+/// that the velocity plan reads, so the column and the report's row mean the same thing.
+fn slide(p: &Pose, a: usize, c: usize, j: usize) -> (f64, f64) {
+    let (r, t) = (p.p[a] - p.p[c], p.dir[j]);
+    let s = r.dot(t);
+    let ds = (p.dp[a] - p.dp[c]).dot(t) + r.dot(t.perp()) * p.dangle[j];
+    // The slot coordinate is counted from the foot of the perpendicular towards the block.
+    (s.abs(), ds * s.signum())
+}
+
+/// The table of `plan` for a crank turning at ω₁ = `w1` (signed counter-clockwise).
+pub fn analytic_table(plan: &PositionPlan, w1: f64) -> Table {
+    let prog = &plan.program;
+    let mut t = Columns {
+        columns: Vec::new(),
+        cells: Vec::new(),
+    };
+    t.push(
+        "φ_1".into(),
+        "°",
+        Box::new(|p: &Pose| p.phi.to_degrees().rem_euclid(360.0)),
+    );
+    for op in &prog.ops {
+        let Op::Dyad { links, dyad, .. } = op else {
+            continue;
+        };
+        match *dyad {
+            PDyad::Rpr { a, c, .. } => {
+                let j = links[1] as usize;
+                t.link(j, w1);
+                t.push(
+                    format!("L_{j}"),
+                    "m",
+                    Box::new(move |p: &Pose| slide(p, a, c, j).0),
+                );
+                let name = plain(&prog.names[a]);
+                t.push(
+                    format!("V_{name}{j}{name}{}", owner(prog, a)),
+                    "m/s",
+                    Box::new(move |p: &Pose| slide(p, a, c, j).1 * w1),
+                );
+            }
+            PDyad::Rpp { .. } | PDyad::Prp { .. } => {}
+            _ => {
+                t.link(links[0] as usize, w1);
+                t.link(links[1] as usize, w1);
+            }
+        }
+    }
+    for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
+        let q = plain(name);
+        t.push(
+            format!("V_{q}"),
+            "m/s",
+            Box::new(move |p: &Pose| (p.dp[k] * w1).length()),
+        );
+        t.push(
+            format!("a_{q}"),
+            "m/s²",
+            Box::new(move |p: &Pose| (p.ddp[k] * w1 * w1).length()),
+        );
+    }
+    let rows = plan
+        .positions
+        .iter()
+        .map(|pos| {
+            (
+                pos.label.clone(),
+                t.cells.iter().map(|c| Some(c(&pos.pose))).collect(),
+            )
+        })
+        .collect();
+    Table {
+        title: "analytic".into(),
+        columns: t.columns,
+        rows,
+    }
+}
