@@ -8,6 +8,8 @@ mod model;
 mod plan;
 mod plans;
 mod program;
+#[cfg(test)]
+mod proptests;
 mod scheme;
 mod structure;
 #[cfg(test)]
