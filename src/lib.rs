@@ -6,10 +6,11 @@
 //! Plates ([`plate`]) draw exactly what the recorder recorded, at the textbook's μ scales.
 //!
 //! Module map (dependencies point one way):
-//! `geom` ← `construct`, `scale` ← `calculus`, `linkage` ← `scene` ← `sheets` ← the `tmm`
-//! binary; `plate` draws recorded figures; `report` formats the construction-against-analytic
-//! rows (`calculus`: graphical differentiation and integration of diagrams); `bench` times
-//! each method against its error (`tmm bench`).
+//! `geom`, `scale` ← `construct`, `calculus`, `check` ← `linkage`, `kinematics` ← `scene` ←
+//! `study` (the session over one scene: each study computed once, on demand) ← `sheets`,
+//! `report` ← the `tmm` binary. `plate` draws recorded figures; `check` holds the typed rows
+//! (graphical against analytic) every domain module emits; `report` formats them; `bench`
+//! times each method against its error (`tmm bench`).
 
 pub mod bench;
 pub mod calculus;
