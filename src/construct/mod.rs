@@ -8,7 +8,7 @@
 //! [`Recorder::meet_line_circle`], [`Recorder::meet_lines`]) record their notches and return a
 //! diagnostic error carrying the numbers when the construction cannot be carried out.
 //!
-//! * [`figure`](Figure) — the figure model: steps, items, roles, labels;
+//! * [`Figure`] — the figure model: [`Step`]s with their [`Item`], [`Role`] and [`Label`];
 //! * [`Drafting`] — how a length is read off the drawing, and [`Measured`] lengths;
 //! * [`Recorder`] — records steps into a figure; [`Compass`] and [`Pick`] — its compass steps.
 
