@@ -70,34 +70,38 @@ pub enum Quantity {
 }
 
 impl Quantity {
+    /// The units of the quantity, one row per quantity: its SI unit (diagnostics, reports;
+    /// plain text) and the unit of its μ — the SI unit per drawing millimetre — in captions
+    /// (label markup), English and Cyrillic (ru and uk write it alike).
+    fn units(self) -> Units {
+        use Quantity::*;
+        let (si, en, cyrillic) = match self {
+            Length => ("m", "m/mm", "м/мм"),
+            Velocity => ("m/s", "m/(s·mm)", "м/(с·мм)"),
+            Acceleration => ("m/s²", "m/(s^2·mm)", "м/(с^2·мм)"),
+            Angle => ("rad", "rad/mm", "рад/мм"),
+            Time => ("s", "s/mm", "с/мм"),
+            Force => ("N", "N/mm", "Н/мм"),
+            Moment => ("N·m", "N·m/mm", "Н·м/мм"),
+            Work => ("J", "J/mm", "Дж/мм"),
+            Inertia => ("kg·m²", "kg·m^2/mm", "кг·м^2/мм"),
+            AngularVelocity => ("rad/s", "rad/(s·mm)", "рад/(с·мм)"),
+            AngularAcceleration => ("rad/s²", "rad/(s^2·mm)", "рад/(с^2·мм)"),
+        };
+        Units { si, en, cyrillic }
+    }
     /// Unit of the scale as written in captions, per language. `/мм` is the drawing millimetre.
     pub fn unit(self, lang: Lang) -> &'static str {
-        use Quantity::*;
-        match (self, lang) {
-            (Length, Lang::En) => "m/mm",
-            (Length, _) => "м/мм",
-            (Velocity, Lang::En) => "m/(s·mm)",
-            (Velocity, _) => "м/(с·мм)",
-            (Acceleration, Lang::En) => "m/(s^2·mm)",
-            (Acceleration, _) => "м/(с^2·мм)",
-            (Angle, Lang::En) => "rad/mm",
-            (Angle, _) => "рад/мм",
-            (Time, Lang::En) => "s/mm",
-            (Time, _) => "с/мм",
-            (Force, Lang::En) => "N/mm",
-            (Force, _) => "Н/мм",
-            (Moment, Lang::En) => "N·m/mm",
-            (Moment, _) => "Н·м/мм",
-            (Work, Lang::En) => "J/mm",
-            (Work, Lang::Ru) => "Дж/мм",
-            (Work, Lang::Uk) => "Дж/мм",
-            (Inertia, Lang::En) => "kg·m^2/mm",
-            (Inertia, _) => "кг·м^2/мм",
-            (AngularVelocity, Lang::En) => "rad/(s·mm)",
-            (AngularVelocity, _) => "рад/(с·мм)",
-            (AngularAcceleration, Lang::En) => "rad/(s^2·mm)",
-            (AngularAcceleration, _) => "рад/(с^2·мм)",
+        let u = self.units();
+        match lang {
+            Lang::En => u.en,
+            Lang::Ru | Lang::Uk => u.cyrillic,
         }
+    }
+    /// The SI unit of the quantity itself, plain text (`m/s²`): the unit of the physical
+    /// values in diagnostics.
+    pub fn si_unit(self) -> &'static str {
+        self.units().si
     }
     /// The customary index of μ (`l`, `v`, `a`, `φ`, …).
     pub fn symbol(self) -> &'static str {
@@ -116,6 +120,16 @@ impl Quantity {
             AngularAcceleration => "ε",
         }
     }
+}
+
+/// One row of the unit table ([`Quantity::units`]).
+struct Units {
+    /// The SI unit, plain text.
+    si: &'static str,
+    /// The unit of μ in English captions, label markup.
+    en: &'static str,
+    /// The unit of μ in Russian and Ukrainian captions, label markup.
+    cyrillic: &'static str,
 }
 
 /// A drawing scale μ: `value` SI units of `quantity` per drawing millimetre.

@@ -13,6 +13,29 @@ pub enum Method {
     Tangents,
 }
 
+impl Method {
+    /// Differentiate `src` (drawn at `scales`) by this construction, the pole H = `pole_mm`
+    /// left of `layout.origin`, recording on `rec`, whose scale must be μ_y/(H·μ_x) (see
+    /// [`derivative_scale`]): [`differentiate_chords`] or [`differentiate_tangents`].
+    ///
+    /// # Errors
+    /// As [`differentiate_chords`].
+    pub fn differentiate(
+        self,
+        rec: &mut Recorder,
+        src: &Diagram,
+        scales: Scales,
+        pole_mm: f64,
+        layout: &Layout,
+    ) -> Result<Derivative, CalculusError> {
+        let st = Start::new(rec, src, scales, pole_mm, layout)?;
+        match self {
+            Method::Chords => chords(rec, &st, src, layout),
+            Method::Tangents => tangents(rec, &st, src, layout),
+        }
+    }
+}
+
 /// A derivative diagram as constructed and read off the drawing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Derivative {
@@ -136,6 +159,8 @@ struct Start {
     run: f64,
     /// The given diagram's nodes 0..=N, figure mm.
     pts: Vec<DVec2>,
+    /// The pole distance H, mm.
+    pole_mm: f64,
 }
 
 impl Start {
@@ -172,7 +197,13 @@ impl Start {
                 Role::Given,
             );
         }
-        Ok(Self { scale, n, run, pts })
+        Ok(Self {
+            scale,
+            n,
+            run,
+            pts,
+            pole_mm,
+        })
     }
 
     /// The derivative with its common fields filled and no values yet.
@@ -282,7 +313,16 @@ pub fn differentiate_chords(
     pole_mm: f64,
     layout: &Layout,
 ) -> Result<Derivative, CalculusError> {
-    let st = Start::new(rec, src, scales, pole_mm, layout)?;
+    Method::Chords.differentiate(rec, src, scales, pole_mm, layout)
+}
+
+/// The chord construction after [`Start`]: see [`differentiate_chords`].
+fn chords(
+    rec: &mut Recorder,
+    st: &Start,
+    src: &Diagram,
+    layout: &Layout,
+) -> Result<Derivative, CalculusError> {
     let (n, run, pts) = (st.n, st.run, &st.pts);
     let chords: Vec<StepId> = pts
         .windows(2)
@@ -290,7 +330,7 @@ pub fn differentiate_chords(
         .map(|(k, w)| thin(rec, format!("chord {k}–{}", k + 1), w[0], w[1], &[]))
         .collect();
     let dirs: Vec<DVec2> = pts.windows(2).map(|w| w[1] - w[0]).collect();
-    let pc = pole_cuts(rec, layout, pole_mm, &dirs, run * n as f64)?;
+    let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64)?;
     let mut d = st.derivative(Method::Chords, src, &pc);
     let o = layout.origin;
     for (k, &chord) in chords.iter().enumerate() {
@@ -392,7 +432,16 @@ pub fn differentiate_tangents(
     pole_mm: f64,
     layout: &Layout,
 ) -> Result<Derivative, CalculusError> {
-    let st = Start::new(rec, src, scales, pole_mm, layout)?;
+    Method::Tangents.differentiate(rec, src, scales, pole_mm, layout)
+}
+
+/// The tangent construction after [`Start`]: see [`differentiate_tangents`].
+fn tangents(
+    rec: &mut Recorder,
+    st: &Start,
+    src: &Diagram,
+    layout: &Layout,
+) -> Result<Derivative, CalculusError> {
     let (n, run, pts) = (st.n, st.run, &st.pts);
     let nodes = if src.periodic { n } else { n + 1 };
     let shift = DVec2::new(run * n as f64, 0.0);
@@ -415,7 +464,7 @@ pub fn differentiate_tangents(
         ));
         dirs.push(b - a);
     }
-    let pc = pole_cuts(rec, layout, pole_mm, &dirs, run * n as f64)?;
+    let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64)?;
     let mut d = st.derivative(Method::Tangents, src, &pc);
     let o = layout.origin;
     let mut curve_pts = Vec::with_capacity(nodes + 1);

@@ -4,7 +4,7 @@
 //! A [`Diagram`] is a function y(x) sampled over equal intervals of x (x is usually the crank
 //! angle φ, rad; y a displacement or one of its analogues), drawn at an abscissa scale μ_x and
 //! an ordinate scale μ_y. Every construction here is recorded step by step on a
-//! [`Recorder`](crate::construct::Recorder) whose scale is the ordinate scale of the diagram
+//! [`Recorder`] whose scale is the ordinate scale of the diagram
 //! being constructed; the numbers come out of the drawing through `Recorder::measure`, so the
 //! drafting model applies to them.
 //!

@@ -3,14 +3,25 @@
 //! it never re-derives geometry.
 //!
 //! Coordinates are **drawing millimetres** of the figure, y up; the figure's scale μ turns them
-//! into physical values. Compass steps ([`Recorder::meet_circles`], [`Recorder::meet_line_circle`],
-//! [`Recorder::meet_lines`]) record their notches and return a diagnostic error carrying the
-//! numbers when the construction cannot be carried out.
+//! into physical values. A construction starts from a [`Context`] (tolerances, drafting model)
+//! with [`Recorder::in_context`]. Compass steps ([`Recorder::meet_circles`],
+//! [`Recorder::meet_line_circle`], [`Recorder::meet_lines`]) record their notches and return a
+//! diagnostic error carrying the numbers when the construction cannot be carried out.
+//!
+//! * [`Figure`] — the figure model: [`Step`]s with their [`Item`], [`Role`] and [`Label`];
+//! * [`Drafting`] — how a length is read off the drawing, and [`Measured`] lengths;
+//! * [`Recorder`] — records steps into a figure; [`Compass`] and [`Pick`] — its compass steps.
 
+mod compass;
+mod context;
+mod drafting;
 mod error;
+mod figure;
 mod recorder;
 
+pub use compass::{Compass, Pick};
+pub use context::Context;
+pub use drafting::{Drafting, Measured};
 pub use error::ConstructionError;
-pub use recorder::{
-    Compass, Drafting, Figure, Item, Label, Measured, Pick, Recorder, Role, Step, StepId,
-};
+pub use figure::{Figure, Item, Label, Role, Step, StepId};
+pub use recorder::Recorder;

@@ -5,8 +5,8 @@ use super::{extent, numbered, pole_and_scale, turn_diagram, KinError, Kinematics
 use super::{DIAGRAM_GAP, DIAGRAM_MM};
 use crate::calculus::{self, Derivative, Diagram, Layout, Scales};
 use crate::check::{Key, Method, Row, Symbol};
-use crate::construct::{Drafting, Figure, Recorder};
-use crate::geom::{DVec2, Tolerances};
+use crate::construct::{Context, Drafting, Figure, Recorder};
+use crate::geom::DVec2;
 use crate::linkage::{plain, Output, PositionPlan};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
@@ -99,8 +99,7 @@ pub fn diagrams(
     spec: &KinematicsSpec,
     scale_l: Scale,
     w1: f64,
-    tol: Tolerances,
-    drafting: Drafting,
+    ctx: &Context,
 ) -> Result<Option<Diagrams>, KinError> {
     let Some((k, dir)) = target(plan, outputs, spec)? else {
         return Ok(None);
@@ -115,7 +114,7 @@ pub fn diagrams(
         error,
     };
     // S is read off the plan of positions: the distance from position 1, signed along the guide.
-    let reader = Recorder::new("S", scale_l, tol, drafting);
+    let reader = Recorder::in_context("S", scale_l, ctx);
     let p1 = numbered[0].1.built.p[k];
     let s: Vec<f64> = numbered
         .iter()
@@ -143,8 +142,8 @@ pub fn diagrams(
         Method::DiagramChords
     };
     let (s_lo, _) = extent(s.iter(), scales.y);
-    let (d1_lo, d1_hi) = ordinates(&src, scales, h1, mu1, tol).map_err(|e| fail("dS/dφ", e))?;
-    let mut rec1 = Recorder::new("dS/dφ", mu1, tol, drafting);
+    let (d1_lo, d1_hi) = ordinates(&src, scales, h1, mu1, ctx).map_err(|e| fail("dS/dφ", e))?;
+    let mut rec1 = Recorder::in_context("dS/dφ", mu1, ctx);
     let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
         .pole_named("P_1", "H_1");
     let first = differentiate(&mut rec1, &src, scales, h1, &lay1).map_err(|e| fail("dS/dφ", e))?;
@@ -155,8 +154,8 @@ pub fn diagrams(
     };
     let (h2, mu2) = pole_and_scale(spec.pole_h2, &d1, scales2, DIAGRAM_MM, Quantity::Length)
         .map_err(|e| fail("d²S/dφ²", e))?;
-    let (_, d2_hi) = ordinates(&d1, scales2, h2, mu2, tol).map_err(|e| fail("d²S/dφ²", e))?;
-    let mut rec2 = Recorder::new("d²S/dφ²", mu2, tol, drafting);
+    let (_, d2_hi) = ordinates(&d1, scales2, h2, mu2, ctx).map_err(|e| fail("d²S/dφ²", e))?;
+    let mut rec2 = Recorder::in_context("d²S/dφ²", mu2, ctx);
     let lay2 = Layout::new(DVec2::ZERO, DVec2::new(0.0, d1_lo - DIAGRAM_GAP - d2_hi))
         .with_source(false)
         .named("φ", "dS/dφ", "d²S/dφ²")
@@ -219,9 +218,9 @@ pub(super) fn ordinates(
     scales: Scales,
     h: f64,
     mu: Scale,
-    tol: Tolerances,
+    ctx: &Context,
 ) -> Result<(f64, f64), calculus::CalculusError> {
-    let mut r = Recorder::new("scratch", mu, tol, Drafting::EXACT);
+    let mut r = Recorder::in_context("scratch", mu, &ctx.with_drafting(Drafting::EXACT));
     let lay = Layout::new(DVec2::ZERO, DVec2::ZERO).with_source(false);
     let dv = calculus::differentiate_chords(&mut r, d, scales, h, &lay)?;
     Ok(extent(dv.mid.iter().chain(&dv.node), mu))

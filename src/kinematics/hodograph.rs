@@ -2,8 +2,8 @@
 //! pole (copied from the velocity plans), their ends joined by a smooth curve.
 
 use super::KinError;
-use crate::construct::{Drafting, Figure, Item, Recorder, Role};
-use crate::geom::{DVec2, Tolerances};
+use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::geom::DVec2;
 use crate::linkage::{KinPlan, Op, PositionPlan};
 use crate::scale::{Quantity, Scale};
 
@@ -39,8 +39,7 @@ pub fn hodograph(
     k: usize,
     velocity: &[Option<&KinPlan>],
     scale_v: Scale,
-    tol: Tolerances,
-    drafting: Drafting,
+    ctx: &Context,
 ) -> Figure {
     let name = &plan.program.names[k];
     let longest = velocity
@@ -52,7 +51,7 @@ pub fn hodograph(
     let scale =
         Scale::round_for(longest.max(1e-12), HODOGRAPH_MM, Quantity::Velocity).unwrap_or(scale_v);
     let copy = scale_v.value() / scale.value();
-    let mut rec = Recorder::new("hodograph", scale, tol, drafting);
+    let mut rec = Recorder::in_context("hodograph", scale, ctx);
     rec.point(
         "pole",
         DVec2::ZERO,

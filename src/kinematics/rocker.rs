@@ -4,8 +4,8 @@
 use super::{extent, numbered, pole_and_scale, round_scale, turn_diagram, KinError, DIAGRAM_GAP};
 use crate::calculus::{self, Derivative, Layout, Scales};
 use crate::check::{Key, Method, Row, Symbol};
-use crate::construct::{Drafting, Figure, Recorder};
-use crate::geom::{DVec2, Tolerances};
+use crate::construct::{Context, Figure, Recorder};
+use crate::geom::DVec2;
 use crate::linkage::{KinPlan, Output, PositionPlan};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
@@ -49,8 +49,7 @@ pub fn rocker_diagram(
     link: usize,
     velocity: &[Option<&KinPlan>],
     w1: f64,
-    tol: Tolerances,
-    drafting: Drafting,
+    ctx: &Context,
 ) -> Result<Option<RockerDiagram>, KinError> {
     let numbered = numbered(plan);
     let omega: Option<Vec<f64>> = numbered
@@ -78,7 +77,7 @@ pub fn rocker_diagram(
     let (h, mu) =
         pole_and_scale(None, &src, scales, ROCKER_MM, Quantity::AngularVelocity).map_err(fail)?;
     let (w_lo, _) = extent(omega.iter(), scale);
-    let mut rec = Recorder::new("ω", mu, tol, drafting);
+    let mut rec = Recorder::in_context("ω", mu, ctx);
     let lay = Layout::new(DVec2::ZERO, DVec2::new(0.0, w_lo - DIAGRAM_GAP - ROCKER_MM))
         .named("φ", &format!("ω_{{{link}}}"), &format!("dω_{{{link}}}/dφ"))
         .pole_named("P_{ω}", "H_{ω}");

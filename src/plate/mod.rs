@@ -26,6 +26,7 @@
 //! assert_eq!(svg, to_svg(&plate));
 //! ```
 
+pub mod chart;
 mod demo;
 mod fonts;
 mod items;
@@ -51,9 +52,6 @@ pub use style::Pen;
 pub use svg::{to_svg, FONT_FAMILY};
 pub use table::TableBlock;
 
-/// Formats an SVG coordinate the way every plate does (0.01 mm, no `-0`); for other writers
-/// of drawings in this crate.
-pub(crate) use path::num;
 pub use write::write_atomic;
 
 /// An axis-aligned rectangle on the sheet, millimetres, origin top-left, y down.

@@ -135,6 +135,18 @@ fn advance_em(c: char) -> f64 {
     }
 }
 
+/// Plain text as label markup: `_`, `^` and `\` kept literally (`v_B3_B1` reads as written).
+pub fn literal(plain: &str) -> String {
+    let mut out = String::with_capacity(plain.len());
+    for ch in plain.chars() {
+        if matches!(ch, '_' | '^' | '\\') {
+            out.push('\\');
+        }
+        out.push(ch);
+    }
+    out
+}
+
 /// The SVG font size (em, mm) for a ГОСТ 2.304 text size (height of capitals, mm).
 pub fn em_for_height(height_mm: f64) -> f64 {
     height_mm / CAP_HEIGHT_EM

@@ -10,8 +10,7 @@
 mod memo;
 
 use crate::check::Row;
-use crate::construct::{Drafting, Figure};
-use crate::geom::Tolerances;
+use crate::construct::{Context, Drafting, Figure};
 use crate::kinematics::{
     self, acceleration_indices, plans, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
 };
@@ -149,7 +148,7 @@ pub type Hodograph = (String, Arc<Figure>);
 pub struct Session<'s> {
     scene: &'s Scene,
     drafting: Drafting,
-    tol: Result<Tolerances, StudyError>,
+    ctx: Result<Context, StudyError>,
     poses: Memo<(), Cached<PlanPoses>>,
     positions: Memo<Scale, Cached<PositionPlan>>,
     velocity: Memo<(Scale, Scale, usize), Cached<Velocity>>,
@@ -167,7 +166,7 @@ impl<'s> Session<'s> {
         Self {
             scene,
             drafting,
-            tol: Tolerances::for_model_size(FIGURE_MM)
+            ctx: Context::for_model_size(FIGURE_MM, drafting)
                 .map_err(|e| StudyError::Tolerances(e.to_string())),
             poses: Memo::default(),
             positions: Memo::default(),
@@ -275,8 +274,8 @@ impl<'s> Session<'s> {
         ))
     }
 
-    fn tol(&self) -> Result<Tolerances, StudyError> {
-        self.tol.clone()
+    fn ctx(&self) -> Result<Context, StudyError> {
+        self.ctx.clone()
     }
 
     /// The kinematic study's scales as the scene gives them, the rest chosen the textbook way.
@@ -369,8 +368,7 @@ impl<'s> Session<'s> {
                 &spec,
                 l,
                 self.w1()?,
-                self.tol()?,
-                self.drafting,
+                &self.ctx()?,
             )?;
             Ok(d.map(Arc::new))
         })
@@ -386,14 +384,8 @@ impl<'s> Session<'s> {
             let plan = self.positions(l)?;
             let vel = self.velocities(l, v)?;
             let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
-            let r = kinematics::rocker::rocker_diagram(
-                &plan,
-                link,
-                &plans,
-                self.w1()?,
-                self.tol()?,
-                self.drafting,
-            )?;
+            let r =
+                kinematics::rocker::rocker_diagram(&plan, link, &plans, self.w1()?, &self.ctx()?)?;
             Ok(r.map(Arc::new))
         })
     }
@@ -409,8 +401,7 @@ impl<'s> Session<'s> {
             };
             let vel = self.velocities(l, v)?;
             let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
-            let fig =
-                kinematics::hodograph::hodograph(&plan, k, &plans, v, self.tol()?, self.drafting);
+            let fig = kinematics::hodograph::hodograph(&plan, k, &plans, v, &self.ctx()?);
             Ok(Some((plan.program.names[k].clone(), Arc::new(fig))))
         })
     }

@@ -1,0 +1,338 @@
+//! `tmm bench`: speed against error. Each method's resolution is swept and its error against
+//! the analytic twin is put beside its time; whole computations are timed as throughput.
+//!
+//! * **Chord method** — the displacement of the shaper's ram (point `E`, along x) and the
+//!   four-bar's rocker angle (link 3) are charted over one crank turn at N equal steps from
+//!   the analytic positions and differentiated twice by chords
+//!   ([`differentiate_chords`](crate::calculus::differentiate_chords), drafting exact). The
+//!   abscissa is the angle the crank has turned through (it grows with time whatever the sense
+//!   of ω₁), so the analogues turn into velocities and accelerations with |ω₁| and |ω₁|² and
+//!   compare, signs included, with the analytic ω₁·dX/dφ₁ and ω₁²·d²X/dφ₁² at the nodes.
+//! * **Analytic kernel** — [`Program::solve_into`] (positions, first and second analogues)
+//!   over many crank angles on one core.
+//! * **Construction route** — the recorded compass construction of a position with its
+//!   velocity and acceleration plans.
+//! * **Plates** — building a plate and writing it as SVG.
+//!
+//! Times are the best of several repetitions (the machine may be busy); they are reported,
+//! never asserted.
+
+mod chords;
+mod rates;
+
+use crate::calculus::CalculusError;
+use crate::geom::InvalidTolerance;
+use crate::linkage::{Pose, Program};
+use crate::report::{Bench, Throughput};
+use crate::scale::Quantity;
+use crate::scene::{self, PlateKind, Scene};
+use chords::{chord_rows, Charted, Coord};
+use rates::{construction_rate, kernel_rate, libm_floor_rate, plate_time};
+use std::f64::consts::TAU;
+use std::hint::black_box;
+use std::path::PathBuf;
+use std::time::Instant;
+use thiserror::Error;
+
+/// The resolutions of the chord-method sweep (positions per crank turn).
+pub const CHORD_RESOLUTIONS: [usize; 6] = [12, 24, 48, 96, 192, 360];
+
+/// The plates timed, by scene stem: one line per plate.
+const PLATES: &[(&str, PlateKind)] = &[
+    ("shaper", PlateKind::Positions),
+    ("shaper", PlateKind::Kinematics),
+];
+
+/// Largest extent of a chord-method figure (the diagram and its pole), mm: the size its
+/// tolerances are derived from.
+const DIAGRAM_EXTENT_MM: f64 = 400.0;
+/// Largest extent of a constructed position with its plans, mm.
+const CONSTRUCTION_EXTENT_MM: f64 = 1000.0;
+
+/// What to run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BenchOptions {
+    /// The folder holding `shaper.toml` and `four-bar.toml`.
+    pub scenes: PathBuf,
+    /// Small repetition counts: checks the structure and the errors in well under a second
+    /// of timing, the times themselves are rough.
+    pub quick: bool,
+}
+
+impl Default for BenchOptions {
+    fn default() -> Self {
+        Self {
+            scenes: PathBuf::from("constructions"),
+            quick: false,
+        }
+    }
+}
+
+/// Why the bench cannot run.
+#[derive(Debug, Error)]
+pub enum BenchError {
+    /// A scene file cannot be used.
+    #[error(transparent)]
+    Scene(#[from] scene::SceneError),
+    /// A mechanism cannot be compiled or solved.
+    #[error("{scene}: {detail}")]
+    Linkage {
+        /// The scene stem.
+        scene: String,
+        /// What failed.
+        detail: String,
+    },
+    /// A graphical differentiation failed.
+    #[error("{scene}, chord method at N = {n}: {source}")]
+    Calculus {
+        /// The scene stem.
+        scene: String,
+        /// Positions per turn.
+        n: usize,
+        /// The diagnostic.
+        source: CalculusError,
+    },
+    /// No tolerances can be derived for a figure of the given size.
+    #[error("tolerances: {0}")]
+    Tolerance(#[from] InvalidTolerance),
+    /// A plate cannot be built.
+    #[error("{scene}: plate `{plate}`: {detail}")]
+    Plate {
+        /// The scene stem.
+        scene: String,
+        /// The plate stem.
+        plate: String,
+        /// What failed.
+        detail: String,
+    },
+}
+
+/// Repetition counts.
+#[derive(Debug, Clone, Copy)]
+struct Reps {
+    /// Repetitions of a timing (the best is kept).
+    best_of: usize,
+    /// Chord diagrams per timing.
+    diagrams: usize,
+    /// Analytic positions per timing.
+    kernel: usize,
+    /// Constructed positions (with both plans) per timing.
+    constructed: usize,
+}
+
+impl Reps {
+    fn new(quick: bool) -> Self {
+        if quick {
+            Self {
+                best_of: 1,
+                diagrams: 1,
+                kernel: 20_000,
+                constructed: 12,
+            }
+        } else {
+            Self {
+                best_of: 5,
+                diagrams: 3,
+                kernel: 2_000_000,
+                constructed: 120,
+            }
+        }
+    }
+}
+
+/// The best (least) wall time of `best_of` runs of `f`, seconds.
+fn best_time<T, E>(best_of: usize, mut f: impl FnMut() -> Result<T, E>) -> Result<f64, E> {
+    let mut best = f64::INFINITY;
+    for _ in 0..best_of.max(1) {
+        let t = Instant::now();
+        black_box(f()?);
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    Ok(best)
+}
+
+/// A loaded scene with its compiled program and signed crank speed.
+struct Subject {
+    scene: Scene,
+    mechanism: crate::linkage::Mechanism,
+    prog: Program,
+    /// ω₁, rad/s, counter-clockwise positive.
+    w1: f64,
+}
+
+impl Subject {
+    fn load(opts: &BenchOptions, stem: &str) -> Result<Self, BenchError> {
+        let scene = scene::load(&opts.scenes.join(format!("{stem}.toml")))?;
+        let linkage = |detail: String| BenchError::Linkage {
+            scene: stem.into(),
+            detail,
+        };
+        let mechanism = scene
+            .mechanism
+            .clone()
+            .ok_or_else(|| linkage("the scene has no [mechanism]".into()))?;
+        let prog = Program::compile(&mechanism).map_err(|e| linkage(e.to_string()))?;
+        let c = &mechanism.crank;
+        let w1 = c.sense.sign() * c.omega;
+        Ok(Self {
+            scene,
+            mechanism,
+            prog,
+            w1,
+        })
+    }
+
+    fn fail(&self, detail: impl Into<String>) -> BenchError {
+        BenchError::Linkage {
+            scene: self.scene.stem.clone(),
+            detail: detail.into(),
+        }
+    }
+
+    /// Crank angle after the crank has turned through `turned` radians in its own sense.
+    fn crank_angle(&self, turned: f64) -> f64 {
+        turned * self.w1.signum()
+    }
+
+    /// The analytic poses at `n` equal steps of one crank turn, continuity kept.
+    fn poses(&self, n: usize) -> Result<Vec<Pose>, BenchError> {
+        let mut pose = Pose::default();
+        let mut out = Vec::with_capacity(n);
+        for k in 0..n {
+            let phi = self.crank_angle(k as f64 * TAU / n as f64);
+            self.prog
+                .solve_into(phi, k > 0, &mut pose)
+                .map_err(|u| self.fail(format!("group {}: {}", u.group + 1, u.detail)))?;
+            out.push(pose.clone());
+        }
+        Ok(out)
+    }
+}
+
+/// The machine: cores, CPU model (from /proc/cpuinfo when present), target, build profile.
+pub fn machine() -> String {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|t| {
+            t.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split_once(':'))
+                .map(|(_, v)| v.trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown CPU".into());
+    let profile = if cfg!(debug_assertions) {
+        "debug"
+    } else {
+        "release"
+    };
+    format!(
+        "{cpu}, {cores} core(s) available, {}-{}, {profile} build",
+        std::env::consts::ARCH,
+        std::env::consts::OS
+    )
+}
+
+/// Run the bench.
+///
+/// # Errors
+/// A scene that cannot be loaded, a mechanism that cannot be solved or constructed over the
+/// turn, a failed differentiation or plate.
+pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
+    let reps = Reps::new(opts.quick);
+    let shaper = Subject::load(opts, "shaper")?;
+    let four_bar = Subject::load(opts, "four-bar")?;
+    let ram = shaper
+        .prog
+        .index("E")
+        .ok_or_else(|| shaper.fail("no point `E` (the ram)"))?;
+    let rocker = 3usize;
+    if four_bar.prog.link_count <= rocker {
+        return Err(four_bar.fail("no link 3 (the rocker)"));
+    }
+    let ram_x = Charted {
+        names: ["v_S5", "a_S5"],
+        units: ["m/s", "m/s^2"],
+        quantity: Quantity::Length,
+        coord: Coord::PointX(ram),
+    };
+    let rocker_angle = Charted {
+        names: ["omega_3", "eps_3"],
+        units: ["rad/s", "rad/s^2"],
+        quantity: Quantity::Angle,
+        coord: Coord::LinkAngle(rocker),
+    };
+    let mut rows = chord_rows(&shaper, &ram_x, reps)?;
+    rows.extend(chord_rows(&four_bar, &rocker_angle, reps)?);
+
+    let mut throughput = Vec::new();
+    for s in [&four_bar, &shaper] {
+        let stem = &s.scene.stem;
+        throughput.push(Throughput {
+            name: format!("analytic {stem}"),
+            per_second: kernel_rate(s, reps)?,
+            note: "one position: every point and link with dX/dφ₁, d²X/dφ₁² (solve_into, 1 core)"
+                .into(),
+        });
+    }
+    throughput.push(Throughput {
+        name: "libm floor four-bar".into(),
+        per_second: libm_floor_rate(reps),
+        note: "its transcendental and root calls alone: sin_cos + 4 sqrt".into(),
+    });
+    for s in [&four_bar, &shaper] {
+        throughput.push(Throughput {
+            name: format!("construction {}", s.scene.stem),
+            per_second: construction_rate(s, reps)?,
+            note: "one position: recorded compass construction + velocity plan + acceleration plan"
+                .into(),
+        });
+    }
+    for &(stem, kind) in PLATES {
+        let loaded;
+        let s = match [&shaper, &four_bar]
+            .into_iter()
+            .find(|s| s.scene.stem == stem)
+        {
+            Some(s) => s,
+            None => {
+                loaded = Subject::load(opts, stem)?;
+                &loaded
+            }
+        };
+        throughput.push(Throughput {
+            name: format!("plate {stem}/{}", kind.stem()),
+            per_second: 1.0 / plate_time(s, kind, reps)?,
+            note: "a fresh study::Session + sheets::build + plate::to_svg".into(),
+        });
+    }
+    Ok(Bench {
+        machine: machine(),
+        rows,
+        throughput,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_missing_scene_is_an_error_naming_the_file() {
+        let opts = BenchOptions {
+            scenes: PathBuf::from("no-such-folder"),
+            quick: true,
+        };
+        let e = run(&opts).expect_err("no scenes");
+        assert!(e.to_string().contains("shaper.toml"), "{e}");
+    }
+
+    #[test]
+    fn the_machine_names_cores_and_profile() {
+        let m = machine();
+        assert!(
+            m.contains("core(s) available") && m.contains("build"),
+            "{m}"
+        );
+    }
+}

@@ -1,0 +1,113 @@
+//! Throughput: analytic positions, their libm floor, constructed positions and plates per
+//! second.
+
+use super::{best_time, BenchError, Reps, Subject, CONSTRUCTION_EXTENT_MM};
+use crate::construct::{Context, Drafting, Recorder};
+use crate::linkage::{self, kin_plan, PlanKind, PlanSetup, Pose};
+use crate::scale::{Lang, Quantity, Scale};
+use crate::scene::PlateKind;
+use crate::sheets;
+use crate::study::Session;
+use std::f64::consts::TAU;
+use std::hint::black_box;
+
+/// Analytic positions per second (positions with both analogues).
+pub(super) fn kernel_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
+    let count = reps.kernel.max(1);
+    // The crank steps by 0.1° in its own sense, the angle kept within one turn.
+    let step = s.crank_angle(TAU / 3600.0);
+    let mut pose = Pose::default();
+    s.prog
+        .solve_into(0.0, false, &mut pose)
+        .map_err(|u| s.fail(u.detail))?;
+    let t = best_time(reps.best_of.max(3), || {
+        let mut phi = 0.0f64;
+        for _ in 0..count {
+            phi += step;
+            if phi.abs() >= TAU {
+                phi = 0.0;
+            }
+            s.prog.solve_into(black_box(phi), true, &mut pose)?;
+            black_box(&pose);
+        }
+        Ok(())
+    })
+    .map_err(|u: linkage::Unassembled| s.fail(u.detail))?;
+    Ok(count as f64 / t)
+}
+
+/// The floor under the four-bar's kernel: its one transcendental call (the crank's sin and
+/// cos) and its square roots (two link lengths, the joint's offset, the crossing's sine) per
+/// second; link angles are carried as unit vectors, so no atan2 or acos remains.
+pub(super) fn libm_floor_rate(reps: Reps) -> f64 {
+    let count = reps.kernel.max(1);
+    let step = TAU / 3600.0;
+    best_time(reps.best_of.max(3), || {
+        let mut phi = 0.0f64;
+        for _ in 0..count {
+            phi += step;
+            let (s, c) = black_box(phi).sin_cos();
+            black_box((
+                (s + 2.0).sqrt(),
+                (c + 2.0).sqrt(),
+                (s * c + 1.5).sqrt(),
+                (1.0 - 0.25 * s * s).sqrt(),
+            ));
+        }
+        Ok::<_, ()>(())
+    })
+    .map_or(f64::NAN, |t| count as f64 / t)
+}
+
+/// Constructed positions (with velocity and acceleration plans) per second.
+pub(super) fn construction_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
+    let count = reps.constructed.max(1);
+    let mu_l = s.scene.scale_l.map_or(0.002, |m| m.value());
+    let r1 = s.mechanism.crank.length;
+    let w = s.w1.abs();
+    let scale = |v: f64, q| Scale::new(v, q).ok_or_else(|| s.fail(format!("bad scale {v}")));
+    let mu = scale(mu_l, Quantity::Length)?;
+    let mu_v = scale(w * r1 / 50.0, Quantity::Velocity)?;
+    let mu_a = scale(w * w * r1 / 50.0, Quantity::Acceleration)?;
+    let ctx = Context::for_model_size(CONSTRUCTION_EXTENT_MM, Drafting::EXACT)?;
+    let t = best_time(reps.best_of, || {
+        let mut prev = None;
+        for k in 0..count {
+            let phi = s.crank_angle(k as f64 * TAU / count as f64);
+            let mut rec = Recorder::in_context("bench", mu, &ctx);
+            let built = s
+                .prog
+                .construct(&mut rec, phi, prev.as_ref(), "bench")
+                .map_err(|f| s.fail(format!("group {}: {}", f.group + 1, f.error)))?;
+            let setup = PlanSetup {
+                prog: &s.prog,
+                built: &built,
+                mu_l,
+                w1: s.w1,
+                drafting: ctx.drafting,
+            };
+            let plan_err = |(g, e)| s.fail(format!("plan, group {}: {e}", g + 1));
+            let vp = kin_plan(&setup, PlanKind::Velocity, mu_v, None).map_err(plan_err)?;
+            let ap = kin_plan(&setup, PlanKind::Acceleration, mu_a, Some(&vp)).map_err(plan_err)?;
+            black_box((&vp, &ap, rec));
+            prev = Some(built);
+        }
+        Ok::<_, BenchError>(())
+    })?;
+    Ok(count as f64 / t)
+}
+
+/// Seconds to build a plate and write it as SVG.
+pub(super) fn plate_time(s: &Subject, kind: PlateKind, reps: Reps) -> Result<f64, BenchError> {
+    best_time(reps.best_of, || {
+        // A fresh session each run: the time includes every construction the sheet needs.
+        let session = Session::new(&s.scene, Drafting::EXACT);
+        let plate = sheets::build(&session, kind, Lang::Ru)?;
+        Ok(crate::plate::to_svg(&plate))
+    })
+    .map_err(|e: sheets::BuildError| BenchError::Plate {
+        scene: s.scene.stem.clone(),
+        plate: kind.stem().into(),
+        detail: e.to_string(),
+    })
+}

@@ -1,0 +1,41 @@
+//! The drafting model: how a length is read off the drawing before μ converts it.
+
+/// The drafting model: a length read off the drawing is rounded to `resolution_mm`
+/// before μ converts it (0 = exact).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Drafting {
+    resolution_mm: f64,
+}
+
+impl Drafting {
+    /// Exact reading.
+    pub const EXACT: Drafting = Drafting { resolution_mm: 0.0 };
+
+    /// `None` unless finite and ≥ 0.
+    pub fn new(resolution_mm: f64) -> Option<Self> {
+        (resolution_mm.is_finite() && resolution_mm >= 0.0).then_some(Self { resolution_mm })
+    }
+    /// The resolution, mm.
+    pub fn resolution_mm(&self) -> f64 {
+        self.resolution_mm
+    }
+    /// A length as read with this resolution.
+    pub fn read(&self, mm: f64) -> f64 {
+        if self.resolution_mm > 0.0 {
+            (mm / self.resolution_mm).round() * self.resolution_mm
+        } else {
+            mm
+        }
+    }
+}
+
+/// A measured segment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Measured {
+    /// Its exact drawn length, mm.
+    pub drawn_mm: f64,
+    /// The length as read under the drafting model, mm.
+    pub read_mm: f64,
+    /// The physical value: `read_mm × μ`.
+    pub value: f64,
+}

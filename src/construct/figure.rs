@@ -1,0 +1,181 @@
+//! The figure model: what a construction records — steps with their item, role, label and
+//! provenance — and the figure they make up.
+
+use crate::geom::{Arc, Circle, DVec2, Segment, Side};
+use crate::scale::Scale;
+
+/// Index of a step within its figure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct StepId(pub u32);
+
+/// How a step is drawn (ГОСТ 2.303 line types are applied by the plate).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Role {
+    /// Given data: links, pivots, guides (main line, thick).
+    Given,
+    /// Construction: arcs, notches, auxiliary lines (thin).
+    Construction,
+    /// A result: the constructed position or vector (thick; vectors arrowed).
+    Result,
+    /// Axis or centre line (thin dash-dot).
+    Axis,
+    /// Dimension and angle marks (thin, with arrows and text).
+    Dimension,
+    /// Hatching (thin).
+    Hatch,
+}
+
+/// What a step draws, in figure millimetres (y up).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Item {
+    /// A marked point (a small dot).
+    Point(DVec2),
+    /// A revolute pair: a small circle; `fixed` adds the ground support symbol.
+    Joint {
+        /// Centre of the pair.
+        at: DVec2,
+        /// Attached to the frame.
+        fixed: bool,
+    },
+    /// A straight piece: a link, a chord, a construction line.
+    Segment(Segment),
+    /// A full circle.
+    Circle(Circle),
+    /// An arc (compass notch, angle mark).
+    Arc(Arc),
+    /// A polyline through points.
+    Polyline {
+        /// Vertices.
+        points: Vec<DVec2>,
+        /// Join the last point to the first.
+        closed: bool,
+    },
+    /// A smooth curve through points (trajectories, diagram curves).
+    Curve {
+        /// Points the curve passes through, in order.
+        points: Vec<DVec2>,
+        /// A closed curve.
+        closed: bool,
+    },
+    /// An arrowed vector (plans, forces).
+    Vector {
+        /// Tail.
+        from: DVec2,
+        /// Head.
+        to: DVec2,
+    },
+    /// A slider block centred at `at`, its long side along `angle` (radians).
+    Slider {
+        /// Centre.
+        at: DVec2,
+        /// Direction of sliding.
+        angle: f64,
+    },
+    /// A fixed guide: the line piece with hatching on one side.
+    Guide {
+        /// The guide line piece.
+        segment: Segment,
+        /// Side of `segment` (from → to) that carries the hatching.
+        hatch: Side,
+    },
+    /// A linear dimension between two points, its line offset by `offset` mm to the left
+    /// of `from → to`; the label is the dimension text.
+    Dimension {
+        /// First point.
+        from: DVec2,
+        /// Second point.
+        to: DVec2,
+        /// Offset of the dimension line, mm (positive: left of from → to).
+        offset: f64,
+    },
+    /// An angle mark: arc with arrows at both ends; the label is the angle's name.
+    Angle(Arc),
+    /// Free text anchored at a point (the label carries the text).
+    Text(DVec2),
+}
+
+/// A textbook label. `text` uses the label markup: `_x` or `_{xy}` for a subscript,
+/// `^x` or `^{xy}` for a superscript (`b_3`, `S_{3}`, `a^{k}`, `8′`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Label {
+    /// The text, in label markup.
+    pub text: String,
+    /// The point the label belongs to.
+    pub anchor: DVec2,
+    /// Preferred direction from the anchor to the text (unit or zero for centred on the anchor).
+    pub toward: DVec2,
+}
+
+/// One recorded step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Step {
+    /// Its id (index in the figure).
+    pub id: StepId,
+    /// What the step does, in words ("arc from B, r = AB").
+    pub note: String,
+    /// What is drawn.
+    pub item: Item,
+    /// How it is drawn.
+    pub role: Role,
+    /// Its label, if any.
+    pub label: Option<Label>,
+    /// The steps it was derived from.
+    pub from: Vec<StepId>,
+    /// Group tag (e.g. the position number on a plan of positions); 0 when unused.
+    pub group: u32,
+}
+
+/// A recorded construction drawn in one view at one scale.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figure {
+    /// The figure's title (for the view caption), in label markup.
+    pub title: String,
+    /// μ of the figure's lengths.
+    pub scale: Scale,
+    /// The steps in drawing order.
+    pub steps: Vec<Step>,
+}
+
+impl Figure {
+    /// Axis-aligned bounds (min, max) of everything drawn, mm; `None` for an empty figure.
+    pub fn bounds(&self) -> Option<(DVec2, DVec2)> {
+        let mut lo = DVec2::splat(f64::INFINITY);
+        let mut hi = DVec2::splat(f64::NEG_INFINITY);
+        let mut add = |p: DVec2| {
+            lo = lo.min(p);
+            hi = hi.max(p);
+        };
+        for s in &self.steps {
+            match &s.item {
+                Item::Point(p) | Item::Text(p) => add(*p),
+                Item::Joint { at, .. } | Item::Slider { at, .. } => add(*at),
+                Item::Segment(seg) | Item::Guide { segment: seg, .. } => {
+                    add(seg.from);
+                    add(seg.to)
+                }
+                Item::Circle(c) => {
+                    add(c.center - DVec2::splat(c.radius));
+                    add(c.center + DVec2::splat(c.radius))
+                }
+                Item::Arc(a) | Item::Angle(a) => {
+                    for i in 0..=16 {
+                        add(a.eval(i as f64 / 16.0));
+                    }
+                }
+                Item::Polyline { points, .. } | Item::Curve { points, .. } => {
+                    points.iter().for_each(|p| add(*p))
+                }
+                Item::Vector { from, to } => {
+                    add(*from);
+                    add(*to)
+                }
+                Item::Dimension { from, to, offset } => {
+                    let n = (*to - *from).normalize_or_zero().perp() * *offset;
+                    add(*from + n);
+                    add(*to + n);
+                }
+            }
+        }
+        lo.is_finite().then_some((lo, hi))
+    }
+}
