@@ -261,7 +261,7 @@ pub(crate) mod gen {
         }
     }
 
-    /// A random mechanism of two groups at a random crank angle: group 1 (links 2, 3, joint C)
+    /// A random mechanism of two groups at a random crank angle, within 1 m of O: group 1 (links 2, 3, joint C)
     /// hangs on the crank pin and the frame, with guides on the frame or the crank; group 2
     /// (links 4, 5, joint F) hangs on the point S3 of link 3 and the frame, with guides on the
     /// frame, the crank or link 3 — a carrier with angular acceleration. Every link carries a
@@ -355,7 +355,10 @@ pub(crate) mod gen {
                 });
                 m.points
                     .extend([point("S4", 4, 0.04, 0.02), point("S5", 5, 0.05, -0.03)]);
-                Some((m, phi))
+                // The drawings are sized for a 1 m mechanism (1000 mm at μ_l = 1 mm/mm):
+                // guides that cross at a shallow angle put the joint far outside it.
+                let pose = Program::compile(&m).ok()?.solve(phi, None).ok()?;
+                pose.p.iter().all(|p| p.length() <= 1.0).then_some((m, phi))
             })
     }
 }
@@ -495,23 +498,30 @@ mod positions {
 /// motion of the scene.
 ///
 /// Tolerance. At drafting 0 a plan and the twin compute the same vectors by different
-/// f64 operations: each plan value is a few dozen operations on data no larger than the
-/// largest value of its kind on the plan (`Scales`), with rounding ε = 2.2e-16 per
-/// operation, amplified by the condition number 1/s of the intersection that fixes it
-/// (s = sine of the crossing angle of the two direction lines, = the twin's
-/// `crossing_sin`); the acceleration plan inherits the velocity plan's errors through ω² and
-/// the Coriolis components, so 1/s². Link lengths and offsets stay within a factor 20 of
-/// each other. Where s ≥ [`WELL`] = 1e-2 this gives ≲ 50·20·ε·10⁴ ≈ 2e-9 in the very worst
-/// alignment of all roundings and ~1e-12 in practice (√n growth), so [`REL`] = 1e-9 of the
-/// value's own magnitude plus the largest value of its kind leaves a margin of about 150
-/// over what is observed (worst of 2 600 random positions: 7e-12), while a wrong sign, a
-/// missed normal or Coriolis component or a wrong scale shows as an error of order 1 (and a
-/// Coriolis component 1e-7 too long already fails). The magnitude floor
-/// matters where a value is zero or cancels (a dead centre, v_C = v_B + v_CB).
+/// f64 operations: each plan value is a few dozen operations (rounding ε = 2.2e-16 each) on
+/// data no larger than the largest value of its kind at that position (`Scales`: the
+/// largest velocity, acceleration, ω, ε, never less than the crank's own), amplified by
+/// the condition number 1/s of the intersection that fixes it (s = sine of the crossing
+/// angle of the two direction lines = the twin's `crossing_sin`); the acceleration plan
+/// inherits the velocity plan's errors through ω² and the Coriolis components, so 1/s².
+/// Lengths within the 1 m drawing range from 0.02 m up, a factor ≤ 50 that enters the rates.
+/// Where s ≥ [`WELL`] = 1e-2 the typical (√n) growth gives ~√50·50·ε·10⁴ ≈ 1e-10 at the
+/// worst corner of that domain and ~1e-13 away from it; the worst seen in 180 000 random
+/// positions is ≈ 1e-10 (every case passes at 1e-10, some fail at 1e-11). [`REL`] = 1e-9
+/// of the value's own magnitude plus its scale keeps a margin of 10 over that, while a wrong
+/// sign, a missed normal or Coriolis component or a wrong μ shows as an error of order 1 —
+/// a Coriolis component 1e-7 too long already fails. The scale term matters where a value
+/// is zero or cancels (a dead centre; v_C = v_B + v_CB).
 /// Positions with s < 1e-2 (about 1 % of the cycle) are not compared; but the plans must
-/// still be built there unless s < [`TOGGLE`] (a refusal as parallel lines happens at
-/// sin < 2e-8 of the drawn lines, which agree with the twin's to ~1e-12; the refusals the
-/// toggle draws provoke, about one case in ten, come at twin sines ≤ 3e-8).
+/// still be built there unless s < [`TOGGLE`]. The plan refuses lines that cross at
+/// sin < 2e-8; its lines are drawn on the constructed position, which equals the twin's
+/// except where the plan of positions merges a near-tangency into a tangency: circles (or a
+/// circle and a guide) whose gap is below the coincident tolerance δ = 1e-10 m (1e-10 of
+/// the 1000 mm drawing) are drawn touching, i.e. at the toggle. A gap δ is a twin crossing
+/// of s² ≈ 2δ·(1/la + 1/lb) (RRR) or 2δ/la (RRP); with the generator's links ≥ 0.02 m,
+/// s ≤ √(2e-10·100) = 1.4e-4. So a refusal is legitimate only below TOGGLE = 2e-4.
+/// (The toggle draws provoke refusals in about one case in ten, at twin sines ≤ 3e-8;
+/// shrinking found one at 1.1e-5, merged so.)
 mod plans {
     use super::*;
 
@@ -519,8 +529,8 @@ mod plans {
     const REL: f64 = 1e-9;
     /// Crossing sine from which values are compared.
     const WELL: f64 = 1e-2;
-    /// Crossing sine below which the plans may be refused as a toggle.
-    const TOGGLE: f64 = 1e-6;
+    /// Crossing sine below which the plans may be refused as a toggle (see above).
+    const TOGGLE: f64 = 2e-4;
 
     /// Both plans of one position with the twin.
     struct Plans {

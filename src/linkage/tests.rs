@@ -150,14 +150,7 @@ fn construction_equals_analytic_on_the_shaper() {
 /// One small mechanism of every dyad kind, with guides on moving links where the kind allows
 /// it, offsets, and a point carried by each new link.
 pub(crate) fn one_of_each_kind() -> Vec<Mechanism> {
-    let crank = |r: f64| Crank {
-        link: 1,
-        centre: "O".into(),
-        pin: "B".into(),
-        length: r,
-        omega: 1.0,
-        sense: Sense::CounterClockwise,
-    };
+    use super::proptests::gen::crank;
     let fixed = |v: &[(&str, DVec2)]| {
         v.iter()
             .map(|(n, at)| FixedPoint {
