@@ -5,7 +5,9 @@ use super::KinError;
 use crate::check::{Key, Method, Row, Symbol};
 use crate::construct::{ConstructionError, Drafting};
 use crate::geom::DVec2;
-use crate::linkage::{kin_plan, plain, KinPlan, Measure, PlanKind, PlanSetup, Pose, PositionPlan};
+use crate::linkage::{
+    kin_plan, plain, KinPlan, Measure, PlanKind, PlanPoses, PlanSetup, Pose, PositionPlan,
+};
 use crate::scale::Scale;
 use std::f64::consts::TAU;
 
@@ -110,6 +112,31 @@ pub fn acceleration(
     })?;
     let rows = rows(plan, k, &ap, w1);
     Ok((ap, rows))
+}
+
+/// The points a velocity (or acceleration) plan at position `k` of `poses` draws, from the
+/// analytic twin, m/s (m/s²): the pole, every point's image and, on an acceleration plan,
+/// the end of each normal component laid from a link's origin — what a sheet sizes the plan
+/// by before constructing it.
+pub fn drawn_points(poses: &PlanPoses, k: usize, w1: f64, kind: PlanKind) -> Vec<DVec2> {
+    let Some(pose) = poses.positions.get(k).map(|p| &p.pose) else {
+        return Vec::new();
+    };
+    let mut out = vec![DVec2::ZERO];
+    for j in 0..pose.p.len() {
+        match kind {
+            PlanKind::Velocity => out.push(pose.dp[j] * w1),
+            PlanKind::Acceleration => {
+                out.push(pose.ddp[j] * (w1 * w1));
+                for l in poses.program.links_of(j).into_iter().filter(|&l| l > 0) {
+                    let o = pose.origin[l];
+                    let w = pose.dangle[l] * w1;
+                    out.push(pose.ddp[o] * (w1 * w1) - (pose.p[j] - pose.p[o]) * (w * w));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// Velocity of the point `k` carried by link `l`, and its acceleration (m/s, m/s²).

@@ -117,3 +117,24 @@ fn number_links(rec: &mut Recorder, anchors: &[(u32, DVec2)]) {
         rec.label(id, l.to_string(), *at, DVec2::new(-0.6, 0.8).normalize());
     }
 }
+
+impl super::plan::PositionPlan {
+    /// The structural scheme of the plan's mechanism drawn from its position 1 at `scale`
+    /// (see [`structure_figure`]).
+    pub fn scheme(&self, st: &Structure, scale: Scale, tol: Tolerances) -> Figure {
+        let plan_mu = self.figure.scale.value();
+        match self.positions.first() {
+            Some(first) => structure_figure(&self.program, st, &first.built, plan_mu, scale, tol),
+            None => Figure {
+                title: String::new(),
+                scale,
+                steps: Vec::new(),
+            },
+        }
+    }
+
+    /// The name of point `k` (program index), in label markup; empty for no such point.
+    pub fn point_name(&self, k: usize) -> &str {
+        self.program.names.get(k).map_or("", String::as_str)
+    }
+}

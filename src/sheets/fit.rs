@@ -5,7 +5,7 @@
 
 use crate::construct::Figure;
 use crate::geom::DVec2;
-use crate::linkage::{guide_ends, PlanPoses, Pose, Program, GUIDE_MARGIN_MM};
+use crate::linkage::{guide_ends, PlanPoses, GUIDE_MARGIN_MM};
 use crate::plate::CAPTION_BAND_MM;
 use crate::scale::Scale;
 
@@ -133,23 +133,9 @@ pub(super) fn positions_extent(poses: &PlanPoses) -> Extent {
     e
 }
 
-/// The extent of the velocity plan (`acceleration` false) or the acceleration plan of one
-/// pose, at crank rate `w1`: the pole, every point's image and, on an acceleration plan, the
-/// ends of the normal components laid from each link's origin.
-pub(super) fn plan_extent(prog: &Program, pose: &Pose, w1: f64, acceleration: bool) -> Extent {
+/// The extent of a vector plan drawn through `points` (SI).
+pub(super) fn plan_extent(points: &[DVec2]) -> Extent {
     let mut e = Extent::empty(VECTOR_PLAN_ALLOWANCE);
-    e.add(DVec2::ZERO);
-    for k in 0..pose.p.len() {
-        if acceleration {
-            e.add(pose.ddp[k] * (w1 * w1));
-            for l in prog.links_of(k).into_iter().filter(|&l| l > 0) {
-                let o = pose.origin[l];
-                let w = pose.dangle[l] * w1;
-                e.add(pose.ddp[o] * (w1 * w1) - (pose.p[k] - pose.p[o]) * (w * w));
-            }
-        } else {
-            e.add(pose.dp[k] * w1);
-        }
-    }
+    points.iter().for_each(|&p| e.add(p));
     e
 }

@@ -4,10 +4,13 @@
 //! Every group of views has its own field; its μ is raised along the textbook series until
 //! the drawings fit (the captions state the μ actually used).
 
+use super::captions::Text;
 use super::fit::{self, figure_size, fit_scale, overflow, room, Extent, Fit};
 use super::BuildError;
 use crate::construct::Figure;
 use crate::geom::DVec2;
+use crate::kinematics::plans::drawn_points;
+use crate::linkage::PlanKind;
 use crate::plate::{Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, View, CAPTION_BAND_MM};
 use crate::report::{Method, Report};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
@@ -93,23 +96,21 @@ fn predicted_scales(session: &Session<'_>) -> Result<KinScales, BuildError> {
     let poses = session.poses()?;
     let m = session.mechanism("the kinematic sheet")?;
     let w1 = crate::kinematics::crank_rate(&m.crank);
-    let prog = &poses.program;
     let plan = fit::positions_extent(&poses);
+    let points = |k: usize, kind| fit::plan_extent(&drawn_points(&poses, k, w1, kind));
     sc.l = fit_scale(sc.l, room(field(PLAN)), Fit::Raise, |mu| {
         plan.labelled_size_at(mu)
     })
     .unwrap_or(sc.l);
-    let vel: Vec<Extent> = poses
-        .positions
-        .iter()
-        .map(|p| fit::plan_extent(prog, &p.pose, w1, false))
+    let vel: Vec<Extent> = (0..poses.positions.len())
+        .map(|k| points(k, PlanKind::Velocity))
         .collect();
     let cell = room(vel_cell(vel.len()));
     sc.v = fit_scale(sc.v, cell, Fit::Raise, |mu| largest(&vel, mu)).unwrap_or(sc.v);
     let asked = session.acceleration_positions()?;
     let acc: Vec<Extent> = asked
         .iter()
-        .map(|&k| fit::plan_extent(prog, &poses.positions[k].pose, w1, true))
+        .map(|&k| points(k, PlanKind::Acceleration))
         .collect();
     let cell = room(acc_cell(acc.len()));
     sc.a = fit_scale(sc.a, cell, Fit::Raise, |mu| largest(&acc, mu)).unwrap_or(sc.a);
@@ -194,18 +195,15 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
     let a = fitted(session)?;
     let req = &a.scales;
     let mut views = Vec::new();
-    let cap = |ru: &str, uk: &str, en: &str, s: Scale| {
-        format!("{}, {}", lang.pick(ru, uk, en), s.caption(lang))
-    };
+    let caption = format!(
+        "{}, {}",
+        Text::PlanOfPositions.get(lang),
+        req.l.caption(lang)
+    );
     views.push(View::centred(
         a.plan.figure.clone(),
         rect(PLAN),
-        Some(cap(
-            "План положений",
-            "План положень",
-            "Plan of positions",
-            req.l,
-        )),
+        Some(caption),
     )?);
     let velocity = a.velocity_plans();
     let n = velocity.len();
@@ -217,17 +215,15 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
             .zip(&velocity)
             .zip(cells(rect(VELOCITY), n, VEL_COLUMNS))
     {
-        let c = format!("{} {}", lang.pick("Пол.", "Пол.", "Pos."), pos.label);
+        let c = format!("{} {}", Text::Pos.get(lang), pos.label);
         match vp {
             Some(vp) => views.push(View::centred(vp.figure.clone(), cell, Some(c))?),
             None => notes.push(TextBlock {
                 at: cell.min + DVec2::new(2.0, cell.height() * 0.4),
                 lines: vec![
                     c,
-                    lang.pick("план не существует:", "план не існує:", "no plan:")
-                        .into(),
-                    lang.pick("особое положение", "особливе положення", "toggle position")
-                        .into(),
+                    Text::NoPlan.get(lang).into(),
+                    Text::TogglePosition.get(lang).into(),
                 ],
                 size_mm: 3.5,
             }),
@@ -239,21 +235,14 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
         a.acceleration.len(),
     )) {
         let label = &a.plan.positions[*k].label;
-        let c = format!(
-            "{} {label}",
-            lang.pick(
-                "План ускорений, пол.",
-                "План прискорень, пол.",
-                "Acceleration plan, pos."
-            )
-        );
+        let c = format!("{} {label}", Text::AccelerationPlanAt.get(lang));
         views.push(View::centred(ap.0.figure.clone(), cell, Some(c))?);
     }
     let mut lines = vec![format!(
         "{}: {}; {}: {}",
-        lang.pick("Планы скоростей", "Плани швидкостей", "Velocity plans"),
+        Text::VelocityPlans.get(lang),
         req.v.caption(lang),
-        lang.pick("планы ускорений", "плани прискорень", "acceleration plans"),
+        Text::AccelerationPlans.get(lang),
         req.a.caption(lang)
     )];
     if let Some(d) = &a.diagrams {
@@ -268,7 +257,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
         let c2 = format!(
             "d²S/dφ²: H_{{2}} = {} {}",
             dec(d.second.pole_mm),
-            unit(lang, "мм", "mm")
+            Text::Millimetre.get(lang)
         );
         views.push(View {
             figure: d.first_figure.clone(),
@@ -282,14 +271,14 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
         });
         lines.push(format!(
             "{} {}: μ_{{S}} = {} {}, μ_{{φ}} = {} {}, H_{{1}} = {} {}; μ_{{v}} = μ_{{S}}·ω_{{1}}/(H_{{1}}·μ_{{φ}}) = {} {}, μ_{{a}} = {} {}",
-            lang.pick("Диаграммы точки", "Діаграми точки", "Diagrams of point"),
+            Text::DiagramsOfPoint.get(lang),
             d.point,
             dec(d.scales.y.value()),
-            unit(lang, "м/мм", "m/mm"),
+            Quantity::Length.unit(lang),
             dec(d.scales.x.value()),
-            unit(lang, "рад/мм", "rad/mm"),
+            Quantity::Angle.unit(lang),
             dec(d.first.pole_mm),
-            unit(lang, "мм", "mm"),
+            Text::Millimetre.get(lang),
             dec(d.first.scale.value() * w),
             Quantity::Velocity.unit(lang),
             dec(d.second.scale.value() * w * w),
@@ -297,16 +286,12 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
         ));
     }
     if let Some((name, h)) = &a.hodograph {
-        let c = format!(
-            "{} v_{{{}}}",
-            lang.pick("Годограф", "Годограф", "Hodograph"),
-            crate::linkage::plain(name)
-        );
+        let c = format!("{} v_{{{}}}", Text::Hodograph.get(lang), name);
         views.push(View::centred(h.as_ref().clone(), rect(HODOGRAPH), Some(c))?);
         lines.push(format!(
             "{} v_{{{}}}: {}",
-            lang.pick("Годограф", "Годограф", "Hodograph"),
-            crate::linkage::plain(name),
+            Text::Hodograph.get(lang),
+            name,
             h.scale.caption(lang)
         ));
     }
@@ -321,7 +306,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
                 r.scale.caption(lang),
                 r.scale_phi.caption(lang),
                 format_sig(r.derivative.pole_mm, 3, lang),
-                unit(lang, "мм", "mm")
+                Text::Millimetre.get(lang)
             ));
         }
     }
@@ -346,11 +331,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
         },
         title_block: super::title_block(
             scene,
-            lang.pick(
-                "Кинематический анализ",
-                "Кінематичний аналіз",
-                "Kinematic analysis",
-            ),
+            Text::KinematicAnalysis.get(lang),
             index as u32 + 1,
             scene.plates.len() as u32,
         ),
@@ -359,10 +340,6 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
         texts,
         tables,
     })
-}
-
-fn unit(lang: Lang, ru: &'static str, en: &'static str) -> &'static str {
-    lang.pick(ru, ru, en)
 }
 
 /// A table cell: 4 significant digits; what is zero to rounding is written 0.
@@ -406,13 +383,7 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang, y: f64) -> Ve
         .collect();
     let analytic = TableBlock {
         at: DVec2::new(TABLES_X, y),
-        title: lang
-            .pick(
-                "Аналитический расчёт",
-                "Аналітичний розрахунок",
-                "Analytic solution",
-            )
-            .into(),
+        title: Text::AnalyticSolution.get(lang).into(),
         columns,
         rows,
         size_mm: size,
@@ -457,19 +428,13 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang, y: f64) -> Ve
         .collect();
     let errors = TableBlock {
         at: DVec2::new(TABLES_RIGHT - errors_w, y),
-        title: lang
-            .pick(
-                "Погрешность графических методов",
-                "Похибка графічних методів",
-                "Errors of the graphical methods",
-            )
-            .into(),
+        title: Text::MethodErrors.get(lang).into(),
         columns: vec![
-            (lang.pick("величина", "величина", "quantity").into(), 24.0),
-            (lang.pick("метод", "метод", "method").into(), 20.0),
+            (Text::Quantity.get(lang).into(), 24.0),
+            (Text::Method.get(lang).into(), 20.0),
             ("δ ср., %".into(), 16.0),
             ("δ max, %".into(), 16.0),
-            (lang.pick("пол.", "пол.", "pos.").into(), 10.0),
+            (Text::PosShort.get(lang).into(), 10.0),
         ],
         rows: err_rows,
         size_mm: size,

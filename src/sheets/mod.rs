@@ -1,6 +1,7 @@
 //! Sheets: the plates a scene asks for, composed from the studies of its session on ГОСТ
 //! sheets.
 
+mod captions;
 mod fit;
 mod kinematics;
 mod positions;

@@ -1,10 +1,11 @@
 //! Plate "План положений": structural scheme and analysis, the plan of positions with its
 //! construction, trajectories and extreme positions, θ, H and K.
 
+use super::captions::Text;
 use super::fit::{self, fit_scale, Fit};
 use super::BuildError;
 use crate::geom::{DVec2, Tolerances};
-use crate::linkage::{structure_figure, DyadKind, OutputCoord, PositionPlan, Structure};
+use crate::linkage::{DyadKind, OutputCoord, PositionPlan, Structure};
 use crate::plate::{Plate, Rect, Sheet, SheetSize, TextBlock, View};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::study::Session;
@@ -43,11 +44,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
     let st = Structure::analyse(m);
     let plan_caption = format!(
         "{}, {}",
-        lang.pick(
-            "План положений механизма",
-            "План положень механізму",
-            "Plan of positions"
-        ),
+        Text::PlanOfMechanism.get(lang),
         scale.caption(lang)
     );
     let mut views = vec![View::centred(
@@ -60,7 +57,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
         .bounds()
         .map_or(1.0, |(lo, hi)| (hi - lo).max_element())
         * scale.value();
-    views.push(scheme_view(&plan, &st, scale, extent, lang)?);
+    views.push(scheme_view(&plan, &st, extent, lang)?);
     let mut lines = structure_lines(&st, m, lang);
     lines.push(String::new());
     lines.extend(extreme_lines(&plan, lang));
@@ -75,12 +72,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
             size: SheetSize::A1,
             landscape: true,
         },
-        title_block: super::title_block(
-            scene,
-            lang.pick("План положений", "План положень", "Plan of positions"),
-            1,
-            1,
-        ),
+        title_block: super::title_block(scene, Text::PlanOfPositions.get(lang), 1, 1),
         lang,
         views,
         texts,
@@ -92,22 +84,12 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
 fn scheme_view(
     plan: &PositionPlan,
     st: &Structure,
-    plan_scale: Scale,
     extent: f64,
     lang: Lang,
 ) -> Result<View, BuildError> {
     let tol =
         Tolerances::for_model_size(SCHEME_MM).map_err(|e| BuildError::Tolerances(e.to_string()))?;
-    let scheme = |s: Scale| {
-        structure_figure(
-            &plan.program,
-            st,
-            &plan.positions[0].built,
-            plan_scale.value(),
-            s,
-            tol,
-        )
-    };
+    let scheme = |s: Scale| plan.scheme(st, s, tol);
     let region = rect(SCHEME_REGION);
     let start =
         Scale::round_for(extent, SCHEME_MM, Quantity::Length).ok_or(BuildError::NoScale(extent))?;
@@ -118,7 +100,7 @@ fn scheme_view(
     .ok_or(BuildError::NoScale(extent))?;
     let caption = format!(
         "{}, {}",
-        lang.pick("Структурная схема", "Структурна схема", "Structural scheme"),
+        Text::StructuralScheme.get(lang),
         s_scale.caption(lang)
     );
     Ok(View::centred(scheme(s_scale), region, Some(caption))?)
@@ -129,7 +111,7 @@ fn kind_name(k: DyadKind, lang: Lang) -> String {
         Lang::En => format!("kind {} ({})", k.number(), k.letters()),
         _ => format!(
             "{} {} ({})",
-            lang.pick("вида", "виду", ""),
+            Text::OfKind.get(lang),
             k.number(),
             k.letters_ru()
         ),
@@ -138,13 +120,7 @@ fn kind_name(k: DyadKind, lang: Lang) -> String {
 
 /// The structural analysis as text lines (label markup).
 fn structure_lines(st: &Structure, m: &crate::linkage::Mechanism, lang: Lang) -> Vec<String> {
-    let mut v = vec![lang
-        .pick(
-            "Структурный анализ",
-            "Структурний аналіз",
-            "Structural analysis",
-        )
-        .to_string()];
+    let mut v = vec![Text::StructuralAnalysis.get(lang).to_string()];
     v.push(format!("n = {}, p_5 = {}, p_4 = {}", st.n, st.p5, st.p4));
     v.push(format!(
         "W = 3n − 2p_5 − p_4 = 3·{} − 2·{} − {} = {}",
@@ -156,7 +132,7 @@ fn structure_lines(st: &Structure, m: &crate::linkage::Mechanism, lang: Lang) ->
     for r in &m.redundant {
         v.push(format!(
             "{} {}: p_5 = {}, W = 3·{} − 2·{} − {} = {}",
-            lang.pick("С парой", "З парою", "With pair"),
+            Text::WithPair.get(lang),
             r.name,
             st.p5_all,
             st.n,
@@ -167,13 +143,13 @@ fn structure_lines(st: &Structure, m: &crate::linkage::Mechanism, lang: Lang) ->
         v.push(format!(
             "{} — {}: {}",
             r.name,
-            lang.pick("избыточная пара", "надлишкова пара", "redundant pair"),
+            Text::RedundantPair.get(lang),
             r.reason
         ));
     }
     v.push(format!(
         "{}: {}",
-        lang.pick("Формула строения", "Формула будови", "Structure formula"),
+        Text::StructureFormula.get(lang),
         st.formula()
     ));
     for g in &st.groups {
@@ -229,7 +205,7 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     let deg = |a: f64| format_fixed(a.to_degrees().rem_euclid(360.0), 2, lang);
     let mut v = vec![format!(
         "{}: {} (φ_1 = {}°), {} (φ_1 = {}°)",
-        lang.pick("Крайние положения", "Крайні положення", "Extreme positions"),
+        Text::ExtremePositions.get(lang),
         label(ex.phi_start),
         deg(ex.phi_start),
         label(ex.phi_other),
@@ -237,20 +213,16 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     )];
     v.push(format!(
         "{} {}°, {} {}°",
-        lang.pick(
-            "Рабочий ход: поворот кривошипа на",
-            "Робочий хід: поворот кривошипа на",
-            "Working stroke: crank turns"
-        ),
+        Text::WorkingStroke.get(lang),
         format_fixed(ex.work_travel.to_degrees(), 2, lang),
-        lang.pick("холостой —", "холостий —", "return —"),
+        Text::Return.get(lang),
         format_fixed(360.0 - ex.work_travel.to_degrees(), 2, lang)
     ));
     for r in &ex.ranges {
         match r.coord {
             OutputCoord::Rocker(l) => v.push(format!(
                 "{} {l}: {} = {}°",
-                lang.pick("Угол размаха звена", "Кут розмаху ланки", "Swing of link"),
+                Text::SwingOfLink.get(lang),
                 if ((r.max - r.min).abs() - ex.theta.abs()).abs() < 1e-9 {
                     "θ"
                 } else {
@@ -260,10 +232,10 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
             )),
             OutputCoord::Slider(i, _) => v.push(format!(
                 "{} {}: H = {} {}",
-                lang.pick("Ход точки", "Хід точки", "Stroke of point"),
-                plan.program.names[i],
+                Text::StrokeOfPoint.get(lang),
+                plan.point_name(i),
                 format_sig(r.max - r.min, 5, lang),
-                lang.pick("м", "м", "m")
+                Text::Metre.get(lang)
             )),
         }
     }

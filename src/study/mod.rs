@@ -15,7 +15,7 @@ use crate::kinematics::{
     self, acceleration_indices, plans, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
 };
 use crate::linkage::{
-    plan_poses, plan_positions, KinPlan, LinkageError, Mechanism, PlanPoses, PlanRequest,
+    plain, plan_poses, plan_positions, KinPlan, LinkageError, Mechanism, PlanPoses, PlanRequest,
     PositionPlan,
 };
 use crate::report::{Report, Table};
@@ -103,7 +103,7 @@ pub struct Kinematics {
     pub diagrams: Option<Arc<Diagrams>>,
     /// The rocker's ω diagram, when the mechanism has a rocker output.
     pub rocker: Option<Arc<RockerDiagram>>,
-    /// The hodograph: its point's name and figure.
+    /// The hodograph: its point's name without markup (`S3`) and its figure.
     pub hodograph: Option<Hodograph>,
     /// The analytic table (the shape of seed 000 Table 5).
     pub table: Arc<Table>,
@@ -141,7 +141,7 @@ type Cached<T> = Result<Arc<T>, StudyError>;
 type MaybeCached<T> = Result<Option<Arc<T>>, StudyError>;
 /// An acceleration plan with its rows.
 pub type Acceleration = (KinPlan, Vec<Row>);
-/// The hodograph: its point's name and figure.
+/// The hodograph: its point's name without markup (`S3`) and its figure.
 pub type Hodograph = (String, Arc<Figure>);
 
 /// The session over one scene.
@@ -402,7 +402,7 @@ impl<'s> Session<'s> {
             let vel = self.velocities(l, v)?;
             let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
             let fig = kinematics::hodograph::hodograph(&plan, k, &plans, v, &self.ctx()?);
-            Ok(Some((plan.program.names[k].clone(), Arc::new(fig))))
+            Ok(Some((plain(plan.point_name(k)), Arc::new(fig))))
         })
     }
 

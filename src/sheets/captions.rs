@@ -1,0 +1,138 @@
+//! The captions and words of the sheets in the three languages, in one catalogue.
+
+use crate::scale::Lang;
+
+/// A caption or word of a sheet.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Text {
+    /// Pos.
+    Pos,
+    /// no plan:
+    NoPlan,
+    /// toggle position
+    TogglePosition,
+    /// Acceleration plan, pos.
+    AccelerationPlanAt,
+    /// Velocity plans
+    VelocityPlans,
+    /// acceleration plans
+    AccelerationPlans,
+    /// Diagrams of point
+    DiagramsOfPoint,
+    /// Hodograph
+    Hodograph,
+    /// Kinematic analysis
+    KinematicAnalysis,
+    /// Analytic solution
+    AnalyticSolution,
+    /// Errors of the graphical methods
+    MethodErrors,
+    /// quantity
+    Quantity,
+    /// method
+    Method,
+    /// pos.
+    PosShort,
+    /// Plan of positions
+    PlanOfMechanism,
+    /// Plan of positions
+    PlanOfPositions,
+    /// Structural scheme
+    StructuralScheme,
+    /// вида
+    OfKind,
+    /// Structural analysis
+    StructuralAnalysis,
+    /// With pair
+    WithPair,
+    /// redundant pair
+    RedundantPair,
+    /// Structure formula
+    StructureFormula,
+    /// Extreme positions
+    ExtremePositions,
+    /// Working stroke: crank turns
+    WorkingStroke,
+    /// return —
+    Return,
+    /// Swing of link
+    SwingOfLink,
+    /// Stroke of point
+    StrokeOfPoint,
+    /// m
+    Metre,
+    /// mm
+    Millimetre,
+}
+
+impl Text {
+    /// The text in `lang`.
+    pub fn get(self, lang: Lang) -> &'static str {
+        let (ru, uk, en) = match self {
+            Text::Pos => ("Пол.", "Пол.", "Pos."),
+            Text::NoPlan => ("план не существует:", "план не існує:", "no plan:"),
+            Text::TogglePosition => ("особое положение", "особливе положення", "toggle position"),
+            Text::AccelerationPlanAt => (
+                "План ускорений, пол.",
+                "План прискорень, пол.",
+                "Acceleration plan, pos.",
+            ),
+            Text::VelocityPlans => ("Планы скоростей", "Плани швидкостей", "Velocity plans"),
+            Text::AccelerationPlans => {
+                ("планы ускорений", "плани прискорень", "acceleration plans")
+            }
+            Text::DiagramsOfPoint => ("Диаграммы точки", "Діаграми точки", "Diagrams of point"),
+            Text::Hodograph => ("Годограф", "Годограф", "Hodograph"),
+            Text::KinematicAnalysis => (
+                "Кинематический анализ",
+                "Кінематичний аналіз",
+                "Kinematic analysis",
+            ),
+            Text::AnalyticSolution => (
+                "Аналитический расчёт",
+                "Аналітичний розрахунок",
+                "Analytic solution",
+            ),
+            Text::MethodErrors => (
+                "Погрешность графических методов",
+                "Похибка графічних методів",
+                "Errors of the graphical methods",
+            ),
+            Text::Quantity => ("величина", "величина", "quantity"),
+            Text::Method => ("метод", "метод", "method"),
+            Text::PosShort => ("пол.", "пол.", "pos."),
+            Text::PlanOfMechanism => (
+                "План положений механизма",
+                "План положень механізму",
+                "Plan of positions",
+            ),
+            Text::PlanOfPositions => ("План положений", "План положень", "Plan of positions"),
+            Text::StructuralScheme => {
+                ("Структурная схема", "Структурна схема", "Structural scheme")
+            }
+            Text::OfKind => ("вида", "виду", ""),
+            Text::StructuralAnalysis => (
+                "Структурный анализ",
+                "Структурний аналіз",
+                "Structural analysis",
+            ),
+            Text::WithPair => ("С парой", "З парою", "With pair"),
+            Text::RedundantPair => ("избыточная пара", "надлишкова пара", "redundant pair"),
+            Text::StructureFormula => ("Формула строения", "Формула будови", "Structure formula"),
+            Text::ExtremePositions => {
+                ("Крайние положения", "Крайні положення", "Extreme positions")
+            }
+            Text::WorkingStroke => (
+                "Рабочий ход: поворот кривошипа на",
+                "Робочий хід: поворот кривошипа на",
+                "Working stroke: crank turns",
+            ),
+            Text::Return => ("холостой —", "холостий —", "return —"),
+            Text::SwingOfLink => ("Угол размаха звена", "Кут розмаху ланки", "Swing of link"),
+            Text::StrokeOfPoint => ("Ход точки", "Хід точки", "Stroke of point"),
+            Text::Metre => ("м", "м", "m"),
+            Text::Millimetre => ("мм", "мм", "mm"),
+        };
+        lang.pick(ru, uk, en)
+    }
+}
