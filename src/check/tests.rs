@@ -1,14 +1,20 @@
 use super::*;
 
-fn row(symbol: Symbol, subject: &str, at: &str, method: Method, g: f64, a: f64, scale: f64) -> Row {
-    Row {
-        key: Key::at_position(symbol, subject, at),
-        method,
-        graphical: g,
-        analytic: a,
-        conditioning: None,
-        scale,
-    }
+/// One row of a test table: symbol, subject, position, method, graphical, analytic, scale.
+type Line<'a> = (Symbol, &'a str, &'a str, Method, f64, f64, f64);
+
+fn rows(table: &[Line]) -> Vec<Row> {
+    table
+        .iter()
+        .map(|&(symbol, subject, at, method, g, a, scale)| Row {
+            key: Key::at_position(symbol, subject, at),
+            method,
+            graphical: g,
+            analytic: a,
+            conditioning: None,
+            scale,
+        })
+        .collect()
 }
 
 #[test]
@@ -45,53 +51,15 @@ fn methods_keep_the_diagram_prefix() {
 /// verdict whatever other rows the report holds.
 #[test]
 fn zero_to_rounding_is_judged_against_the_cycle() {
-    let rows = vec![
-        row(
-            Symbol::Acceleration,
-            "B3_B1",
-            "1",
-            Method::Plan,
-            7e-15,
-            1.8e-15,
-            12.0,
-        ),
-        row(
-            Symbol::Acceleration,
-            "B3_B1",
-            "7",
-            Method::Plan,
-            7e-15,
-            -2.1e-15,
-            12.0,
-        ),
-        row(
-            Symbol::AngularAcceleration,
-            "2",
-            "1",
-            Method::Plan,
-            3e-15,
-            2e-15,
-            40.0,
-        ),
-        row(
-            Symbol::AngularAcceleration,
-            "3",
-            "1",
-            Method::Plan,
-            3e-15,
-            2e-15,
-            40.0,
-        ),
-        row(
-            Symbol::AngularAcceleration,
-            "3",
-            "2",
-            Method::DiagramChords,
-            39.0,
-            40.0,
-            40.0,
-        ),
-    ];
+    use Method::{DiagramChords, Plan};
+    use Symbol::{Acceleration as A, AngularAcceleration as E};
+    let rows = rows(&[
+        (A, "B3_B1", "1", Plan, 7e-15, 1.8e-15, 12.0),
+        (A, "B3_B1", "7", Plan, 7e-15, -2.1e-15, 12.0),
+        (E, "2", "1", Plan, 3e-15, 2e-15, 40.0),
+        (E, "3", "1", Plan, 3e-15, 2e-15, 40.0),
+        (E, "3", "2", DiagramChords, 39.0, 40.0, 40.0),
+    ]);
     let rel = rel_errors(&rows);
     assert_eq!(&rel[..4], &[None, None, None, None]);
     assert!((rel[4].unwrap() + 0.025).abs() < 1e-15);
@@ -99,27 +67,15 @@ fn zero_to_rounding_is_judged_against_the_cycle() {
     assert_eq!(s.entries.len(), 1);
     assert_eq!(s.entries[0].quantity, "eps_3");
     // Without the cycle's scale, the old rule (largest |analytic| among the rows) would
-    // have judged 1.8e-15 against 2.1e-15 and reported a 289 % error.
-    let alone = vec![
-        row(
-            Symbol::Acceleration,
-            "B3_B1",
-            "1",
-            Method::Plan,
-            7e-15,
-            1.8e-15,
-            0.0,
-        ),
-        row(
-            Symbol::Acceleration,
-            "B3_B1",
-            "7",
-            Method::Plan,
-            7e-15,
-            -2.1e-15,
-            0.0,
-        ),
-    ];
+    // have judged 1.8e-15 against 2.1e-15 and reported a 289 % error: the first two rows
+    // again, with no scale.
+    let alone: Vec<Row> = rows[..2]
+        .iter()
+        .map(|r| Row {
+            scale: 0.0,
+            ..r.clone()
+        })
+        .collect();
     assert!(rel_errors(&alone)[0].is_some_and(|d| d > 2.0));
 }
 

@@ -150,46 +150,32 @@ fn construction_equals_analytic_on_the_shaper() {
 /// One small mechanism of every dyad kind, with guides on moving links where the kind allows
 /// it, offsets, and a point carried by each new link.
 pub(crate) fn one_of_each_kind() -> Vec<Mechanism> {
-    use super::proptests::gen::crank;
-    let fixed = |v: &[(&str, DVec2)]| {
-        v.iter()
-            .map(|(n, at)| FixedPoint {
-                name: (*n).into(),
-                at: *at,
-            })
-            .collect::<Vec<_>>()
+    use super::proptests::gen::{fixed, one_group, point};
+    let mk = |fx: &[(&str, DVec2)], r: f64, dyad: Dyad| {
+        let pts = vec![point("S2", 2, 0.05, 0.01), point("S3", 3, 0.08, -0.02)];
+        one_group(fixed(fx), r, dyad, pts)
     };
-    let pts = || {
-        vec![
-            LinkPoint {
-                name: "S2".into(),
-                link: 2,
-                along: 0.05,
-                across: 0.01,
-            },
-            LinkPoint {
-                name: "S3".into(),
-                link: 3,
-                along: 0.08,
-                across: -0.02,
-            },
-        ]
+    // A direction carried by the crank O–B, turned by `angle`.
+    let on_crank = |angle: f64| Dir::Along {
+        from: "O".into(),
+        to: "B".into(),
+        angle,
     };
-    let mk = |fx: Vec<FixedPoint>, r: f64, dyad: Dyad| Mechanism {
-        fixed: fx,
-        crank: crank(r),
-        groups: vec![Group {
-            links: [2, 3],
-            dyad,
-        }],
-        points: pts(),
-        redundant: vec![],
-        outputs: vec![Output::Rocker { link: 3 }],
+    let guide = |through: &str, dir: Dir, offset: f64| Guide {
+        through: through.into(),
+        dir,
+        offset,
+    };
+    let rpp = |slide: Dir, guide: Guide| Dyad::Rpp {
+        a: "B".into(),
+        slide,
+        guide,
+        joint: "C".into(),
     };
     let o = ("O", DVec2::ZERO);
     vec![
         mk(
-            fixed(&[o, ("D", DVec2::new(0.28, 0.05))]),
+            &[o, ("D", DVec2::new(0.28, 0.05))],
             0.08,
             Dyad::Rrr {
                 a: "B".into(),
@@ -202,26 +188,18 @@ pub(crate) fn one_of_each_kind() -> Vec<Mechanism> {
         ),
         // A slider on a guide carried by the crank (turned 70° from it, offset 0.03).
         mk(
-            fixed(&[o]),
+            &[o],
             0.1,
             Dyad::Rrp {
                 a: "B".into(),
                 la: 0.3,
-                guide: Guide {
-                    through: "O".into(),
-                    dir: Dir::Along {
-                        from: "O".into(),
-                        to: "B".into(),
-                        angle: 1.2,
-                    },
-                    offset: 0.03,
-                },
+                guide: guide("O", on_crank(1.2), 0.03),
                 joint: "C".into(),
                 branch: Branch::Forward,
             },
         ),
         mk(
-            fixed(&[o, ("C", DVec2::new(0.05, -0.35))]),
+            &[o, ("C", DVec2::new(0.05, -0.35))],
             0.12,
             Dyad::Rpr {
                 a: "B".into(),
@@ -230,63 +208,25 @@ pub(crate) fn one_of_each_kind() -> Vec<Mechanism> {
             },
         ),
         mk(
-            fixed(&[o]),
+            &[o],
             0.1,
             Dyad::Prp {
-                guide_i: Guide {
-                    through: "B".into(),
-                    dir: Dir::Along {
-                        from: "O".into(),
-                        to: "B".into(),
-                        angle: 1.4,
-                    },
-                    offset: 0.01,
-                },
-                guide_j: Guide {
-                    through: "O".into(),
-                    dir: Dir::Fixed(0.3),
-                    offset: 0.05,
-                },
+                guide_i: guide("B", on_crank(1.4), 0.01),
+                guide_j: guide("O", Dir::Fixed(0.3), 0.05),
                 joint: "C".into(),
             },
         ),
         // Link j slides on a guide carried by the crank; its slide turns with it.
         mk(
-            fixed(&[o]),
+            &[o],
             0.1,
-            Dyad::Rpp {
-                a: "B".into(),
-                slide: Dir::Along {
-                    from: "O".into(),
-                    to: "B".into(),
-                    angle: 2.0,
-                },
-                guide: Guide {
-                    through: "O".into(),
-                    dir: Dir::Along {
-                        from: "O".into(),
-                        to: "B".into(),
-                        angle: -0.4,
-                    },
-                    offset: 0.2,
-                },
-                joint: "C".into(),
-            },
+            rpp(on_crank(2.0), guide("O", on_crank(-0.4), 0.2)),
         ),
         // The Scotch-yoke kind: a frame guide, a fixed slide.
         mk(
-            fixed(&[o]),
+            &[o],
             0.1,
-            Dyad::Rpp {
-                a: "B".into(),
-                slide: Dir::Fixed(1.3),
-                guide: Guide {
-                    through: "O".into(),
-                    dir: Dir::Fixed(-0.2),
-                    offset: 0.15,
-                },
-                joint: "C".into(),
-            },
+            rpp(Dir::Fixed(1.3), guide("O", Dir::Fixed(-0.2), 0.15)),
         ),
     ]
 }
