@@ -1,11 +1,12 @@
 //! Named hard cases of the plan of positions: a mechanism that cannot be assembled at some
 //! crank angle, a change-point four-bar through its folded positions, dead centres.
 
-use tmm::construct::Drafting;
+use tmm::construct::{Drafting, Recorder};
+use tmm::geom::{DVec2, Tolerances};
 use tmm::linkage::*;
 
 mod common;
-use common::four_bar;
+use common::{four_bar, kulisa, slider_crank};
 use tmm::scale::{Quantity, Scale};
 
 fn mu() -> Scale {
@@ -145,4 +146,85 @@ fn four_bar_dead_centres_have_crank_and_coupler_in_line() {
         ex.theta,
         theta
     );
+}
+
+/// ω₁ of the kulisa: 5π rad/s clockwise.
+const W1: f64 = -5.0 * std::f64::consts::PI;
+
+/// The kulisa at φ₁ (degrees): the analytic ω₃, ε₃, a_D and D, and the same read off the
+/// constructed velocity and acceleration plans (μ_l = 0.0025 m/mm, drafting 0).
+fn kulisa_at(deg: f64) -> ([f64; 3], [f64; 3], DVec2, DVec2) {
+    let m = kulisa();
+    let prog = Program::compile(&m).unwrap();
+    let phi = deg.to_radians();
+    let d = prog.index("D").unwrap();
+    let pose = prog.solve(phi, None).unwrap();
+    assert!(pose.toggle.is_none(), "{:?}", pose.toggle);
+    let analytic = [
+        pose.dangle[3] * W1,
+        pose.ddangle[3] * W1 * W1,
+        (pose.ddp[d] * W1 * W1).length(),
+    ];
+    let mu_l = 0.0025;
+    let mut rec = Recorder::new(
+        "t",
+        Scale::new(mu_l, Quantity::Length).unwrap(),
+        Tolerances::for_model_size(400.0).unwrap(),
+        Drafting::EXACT,
+    );
+    let built = prog.construct(&mut rec, phi, None, "t").unwrap();
+    let setup = PlanSetup {
+        prog: &prog,
+        built: &built,
+        mu_l,
+        w1: W1,
+        drafting: Drafting::EXACT,
+    };
+    let sv = Scale::new(0.05, Quantity::Velocity).unwrap();
+    let sa = Scale::new(0.5, Quantity::Acceleration).unwrap();
+    let vp = kin_plan(&setup, PlanKind::Velocity, sv, None).unwrap();
+    let ap = kin_plan(&setup, PlanKind::Acceleration, sa, Some(&vp)).unwrap();
+    let plans = [vp.rate[3], ap.rate[3], (ap.images[d] * 0.5).length()];
+    (analytic, plans, pose.p[d], built.p[d] * mu_l)
+}
+
+#[test]
+fn kulisa_pin_through_the_pivot_takes_the_limit() {
+    // B = C at φ₁ = 270°: the slot turns at ω₃ = ω₁/2 (inscribed angle), ε₃ = 0,
+    // a_D = ω₃²·|CD| = (5π/2)²·0.71 m/s² = 43.7964 m/s².
+    let w3 = W1 / 2.0;
+    let a_d = w3 * w3 * 0.71;
+    assert!((a_d - 43.80).abs() < 5e-3);
+    let (analytic, plans, d_pose, d_built) = kulisa_at(270.0);
+    for (what, [w, e, a]) in [("analytic", analytic), ("plans", plans)] {
+        assert!(
+            (w - (-7.853_981_633_974_483)).abs() < 1e-9,
+            "{what}: ω₃ = {w}"
+        );
+        assert!(e.abs() < 1e-6, "{what}: ε₃ = {e}");
+        assert!((a - a_d).abs() < 1e-9 * a_d, "{what}: a_D = {a}");
+    }
+    // The slot is the limit of the line CB: the tangent to B's path, horizontal.
+    assert!(
+        d_pose.distance(d_built) < 1e-12 && (d_pose.length() - 0.71).abs() < 1e-12,
+        "D = {d_pose} vs {d_built}"
+    );
+    assert!(d_pose.y.abs() < 1e-12, "D = {d_pose}");
+}
+
+#[test]
+fn kulisa_beside_the_pivot_gives_no_huge_number() {
+    // The exact motion has ω₃ = ω₁/2 and ε₃ = 0 at every angle; beside the coincidence the
+    // direct formulas lose digits as 1/h³, the limit takes over where it errs less.
+    for k in 1..=12 {
+        for sign in [-1.0, 1.0] {
+            let deg = 270.0 + sign * 10f64.powi(-k);
+            let (analytic, plans, _, _) = kulisa_at(deg);
+            for [w, e, a] in [analytic, plans] {
+                assert!((w - W1 / 2.0).abs() < 1e-4, "φ₁ = {deg}: ω₃ = {w}");
+                assert!(e.abs() < 0.05, "φ₁ = {deg}: ε₃ = {e}");
+                assert!((a - 43.796_369_53).abs() < 1e-3, "φ₁ = {deg}: a_D = {a}");
+            }
+        }
+    }
 }

@@ -132,6 +132,8 @@ struct Builder<'a> {
     known: Known<'a>,
     /// Crossing angle (radians) of the intersection that fixed each point's image.
     cond: Vec<Option<f64>>,
+    /// Crank speed ω₁, rad/s, signed counter-clockwise.
+    w1: f64,
 }
 
 impl<'a> Builder<'a> {
@@ -411,6 +413,7 @@ pub fn kin_plan(
         readings: Vec::new(),
         coincident: Vec::new(),
         cond: vec![None; n],
+        w1,
         known: Known {
             vel: vel.filter(|_| kind == PlanKind::Acceleration),
             mu_v: vel.map_or(1.0, |v| v.figure.scale.value()),
@@ -580,15 +583,22 @@ impl Builder<'_> {
                 self.cond[joint] = Some(cr);
                 self.relative((joint, i), x, (a, i), ai, cr);
             }
-            PDyad::Rpr { a, c, .. } => {
+            PDyad::Rpr { a, c, offset } => {
                 let rc = self.r(c, a);
                 let (ai, ci) = (self.image(a), self.image(c));
                 let e = DVec2::from_angle(self.b.angle[j]);
                 let an = format!("{}{j}", plain(self.name(a)));
+                let limit = if offset == 0.0 {
+                    self.slot_limit(&step, (a, c), j)?
+                } else {
+                    None
+                };
+                // At the pivot the radius c → a vanishes: the slotted link's line stands for it.
+                let across = if limit.is_some() { e.perp() } else { rc.perp() };
                 let (x, cr) = if vel {
                     self.meet(
                         &format!("{step}: image of {an}"),
-                        ("⊥ to the slotted link", ci, rc.perp()),
+                        ("⊥ to the slotted link", ci, across),
                         ("∥ slide", ai, e),
                     )?
                 } else {
@@ -601,18 +611,22 @@ impl Builder<'_> {
                     let kk = self.coriolis(i, self.vel_image(a), self.vel_coincident(&an), ai);
                     self.meet(
                         &format!("{step}: image of {an}"),
-                        ("⊥ to the slotted link", n, rc.perp()),
+                        ("⊥ to the slotted link", n, across),
                         ("∥ slide", kk, e),
                     )?
                 };
                 self.coincident_image(&an, a, j, x);
-                let rj = if vel {
-                    self.rate_from(rc, ci, x)
-                } else {
-                    self.rate_from(rc, ci + self.normal(j, rc) / self.mu(), x)
+                let rj = match limit {
+                    Some(rate) => rate,
+                    None if vel => self.rate_from(rc, ci, x),
+                    None => self.rate_from(rc, ci + self.normal(j, rc) / self.mu(), x),
                 };
                 self.finish_link(j, &[(c, ci)], rj);
-                self.links.add(j, self.b.p[a], x);
+                // Beside the pivot the image of the coincident point is no base for the
+                // similarity: further points of the link follow from the rate.
+                if limit.is_none() {
+                    self.links.add(j, self.b.p[a], x);
+                }
                 self.finish_link(i, &[(a, ai)], rj);
                 let owner_a = owner(self.prog, a);
                 self.relative((a, j), x, (a, owner_a), ai, cr);
@@ -684,6 +698,81 @@ impl Builder<'_> {
             }
         }
         Ok(())
+    }
+
+    /// The slotted link's rate when the pin `a` passes through its pivot `c` (RPR without
+    /// offset): ω (velocity plan) or ε (acceleration plan) of link `j` as the limit of the
+    /// rotation of the line c → a, from the relative motion of `a` about `c`: with Δv, Δa, Δj
+    /// the relative velocity, acceleration and jerk, ω = [Δv × Δa]/(2|Δv|²) and
+    /// ε = [Δv × Δj]/(3|Δv|²) − ω·(Δv·Δa)/|Δv|². `None` away from the pivot: where the
+    /// crank travel h to the coincidence has h⁴ > 2δ/|w′| (δ the rounding of the positions,
+    /// w′ = Δv/ω₁), the reading off the plan loses fewer digits than the limit's O(h).
+    /// Refused where the relative motion is not known from the crank alone.
+    fn slot_limit(
+        &self,
+        step: &str,
+        (a, c): (usize, usize),
+        j: usize,
+    ) -> Result<Option<f64>, ConstructionError> {
+        let (w1, mu_l) = (self.w1, self.mu_l);
+        let dv = if self.kind == PlanKind::Velocity {
+            (self.image(a) - self.image(c)) * self.mu()
+        } else {
+            self.vel_between(self.vel_image(c), self.vel_image(a))
+        };
+        let v2 = dv.length_squared() / (w1 * w1);
+        let hp = self.r(c, a).length();
+        let at = (self.b.p[a].length() + self.b.p[c].length()) * mu_l;
+        let delta = f64::EPSILON * (at + v2.sqrt());
+        if !(hp.powi(4) <= 2.0 * delta * v2 * v2.sqrt()) {
+            return Ok(None);
+        }
+        let refuse = |why: String| ConstructionError::Other {
+            step: format!("{step}: rate of the slotted link {j}"),
+            message: format!(
+                "the pin {} is {:.3e} m from the pivot {} (|v_{}{}| = {:.6} m/s): {why}",
+                self.name(a),
+                hp,
+                self.name(c),
+                plain(self.name(a)),
+                plain(self.name(c)),
+                dv.length()
+            ),
+        };
+        if v2 == 0.0 {
+            return Err(refuse("the line through them is not determined".into()));
+        }
+        // Acceleration and jerk of a point of the frame or the crank (constant ω₁).
+        let crank = self.prog.crank_link as usize;
+        let motion = |k: usize| -> Option<(DVec2, DVec2)> {
+            if k < self.prog.fixed.len() {
+                Some((DVec2::ZERO, DVec2::ZERO))
+            } else if self.prog.links_of(k).contains(&crank) {
+                let v = if self.kind == PlanKind::Velocity {
+                    self.image(k) * self.mu()
+                } else {
+                    self.vel_image(k) * self.known.mu_v
+                };
+                Some((-self.r(self.prog.centre, k) * (w1 * w1), -v * (w1 * w1)))
+            } else {
+                None
+            }
+        };
+        let (Some((aa, ja)), Some((ac, jc))) = (motion(a), motion(c)) else {
+            return Err(refuse(format!(
+                "the rate of link {j} is a limit that needs the relative acceleration and jerk, known only for points of the frame and the crank"
+            )));
+        };
+        let dv2 = dv.length_squared();
+        let da = aa - ac;
+        let omega = dv.perp_dot(da) / (2.0 * dv2);
+        Ok(Some(match self.kind {
+            PlanKind::Velocity => omega,
+            PlanKind::Acceleration => {
+                let omega = self.known.vel.map_or(omega, |v| v.rate[j]);
+                dv.perp_dot(ja - jc) / (3.0 * dv2) - omega * dv.dot(da) / dv2
+            }
+        }))
     }
 
     /// Record a link's new known images and its rate.
