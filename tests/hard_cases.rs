@@ -113,8 +113,28 @@ fn change_point_four_bar_passes_its_folded_positions_without_nan() {
         );
         assert!(pos.pose.toggle.is_some(), "position {}", pos.label);
     }
-    // The parallelogram's rocker turns fully: no extremes.
-    assert!(plan.extremes.is_none());
+    // Held on the left branch at every position, the linkage is a parallelogram for
+    // φ₁ ∈ (0°, 180°) and an anti-parallelogram for (180°, 360°): the rocker swings from 0° to
+    // 180° and back, and its extremes are the two folded positions (positions 1 and 7).
+    let ex = plan
+        .extremes
+        .as_ref()
+        .expect("extremes at the folded positions");
+    let r = &ex.ranges[0];
+    assert!(
+        r.phi_min.abs() < 1e-12
+            && r.min.abs() < 1e-12
+            && (r.phi_max - std::f64::consts::PI).abs() < 1e-12
+            && (r.max - std::f64::consts::PI).abs() < 1e-12,
+        "{r:?}"
+    );
+    let marked: Vec<&str> = plan
+        .positions
+        .iter()
+        .filter(|p| p.extreme)
+        .map(|p| p.label.as_str())
+        .collect();
+    assert_eq!(marked, ["1", "7"]);
 }
 
 #[test]
@@ -227,4 +247,107 @@ fn kulisa_beside_the_pivot_gives_no_huge_number() {
             }
         }
     }
+}
+
+#[test]
+fn crank_rocker_at_toggle_has_the_toggle_as_an_extreme() {
+    // 80 + 280 = 250 + 110: at φ₁ = 180° coupler and rocker are stretched (|AD| = 360 mm).
+    // The rocker swings from ψ = 72.62° (crank and coupler stretched, |OB| = 330 mm) to the
+    // toggle ψ = 180°.
+    let m = four_bar(0.08, 0.28, 0.25, 0.11);
+    let prog = Program::compile(&m).unwrap();
+    let ex = prog
+        .extremes(&m.outputs, m.crank.sense)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let x = (0.33f64.powi(2) - 0.11f64.powi(2) + 0.28f64.powi(2)) / (2.0 * 0.28);
+    let y = (0.33f64.powi(2) - x * x).sqrt();
+    let (psi_min, phi_min) = ((y.atan2(x - 0.28)), y.atan2(x));
+    let r = &ex.ranges[0];
+    assert!(
+        (r.min - psi_min).abs() < 1e-9 && (r.phi_min - phi_min).abs() < 1e-7,
+        "ψ_min = {}° at φ₁ = {}°",
+        r.min.to_degrees(),
+        r.phi_min.to_degrees()
+    );
+    assert!((psi_min.to_degrees() - 72.62).abs() < 5e-3);
+    assert!((phi_min.to_degrees() - 18.55).abs() < 5e-3);
+    assert!(
+        (r.max - std::f64::consts::PI).abs() < 1e-12
+            && (r.phi_max - std::f64::consts::PI).abs() < 1e-12,
+        "ψ_max = {}° at φ₁ = {}°",
+        r.max.to_degrees(),
+        r.phi_max.to_degrees()
+    );
+    // Working stroke from the working-stroke start, and with a given start the extremes are
+    // listed (k′) as well.
+    for start in [None, Some(0.0)] {
+        let req = PlanRequest {
+            count: 12,
+            start,
+            other_extreme: true,
+            continuity: false,
+        };
+        let plan =
+            plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
+        let ex = plan.extremes.as_ref().expect("extremes");
+        let mut phis = [ex.phi_start, ex.phi_other];
+        phis.sort_by(f64::total_cmp);
+        assert!((phis[0] - phi_min).abs() < 1e-7 && (phis[1] - std::f64::consts::PI).abs() < 1e-12);
+        let marked: Vec<f64> = plan
+            .positions
+            .iter()
+            .filter(|p| p.extreme)
+            .map(|p| p.phi)
+            .collect();
+        assert_eq!(marked.len(), 2, "{start:?}: {marked:?}");
+    }
+}
+
+#[test]
+fn slider_crank_with_coupler_equal_to_crank_has_one_extreme_per_dwell() {
+    // l = r: B = r·cos φ₁ + r·|cos φ₁|, so the slider stands at the crank centre for
+    // φ₁ ∈ [90°, 270°]. The extremes are the far dead centre (φ₁ = 0, x = 2r) and the arrival
+    // at the stand-still in the sense of rotation (φ₁ = 90°, x = 0); nothing inside it.
+    let m = slider_crank(0.1, 0.1);
+    let prog = Program::compile(&m).unwrap();
+    let ex = prog
+        .extremes(&m.outputs, m.crank.sense)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let r = &ex.ranges[0];
+    let d0 = r.phi_max.min(std::f64::consts::TAU - r.phi_max);
+    assert!(
+        d0 < 1e-9 && (r.max - 0.2).abs() < 1e-12,
+        "max {} at {}",
+        r.max,
+        r.phi_max
+    );
+    assert!(
+        (r.phi_min - std::f64::consts::FRAC_PI_2).abs() < 1e-9 && r.min.abs() < 1e-12,
+        "min {} at {}°",
+        r.min,
+        r.phi_min.to_degrees()
+    );
+    // The dwell is in the stroke from the arrival: K = 270°/90° = 3.
+    assert!((ex.k - 3.0).abs() < 1e-8, "K = {}", ex.k);
+    let req = PlanRequest {
+        count: 12,
+        start: Some(0.0),
+        other_extreme: true,
+        continuity: false,
+    };
+    let plan = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
+    let extra: Vec<(String, f64)> = plan
+        .positions
+        .iter()
+        .filter(|p| p.label.contains('′'))
+        .map(|p| (p.label.clone(), p.phi.to_degrees()))
+        .collect();
+    assert!(extra.is_empty(), "{extra:?}");
+    let marked: Vec<&str> = plan
+        .positions
+        .iter()
+        .filter(|p| p.extreme)
+        .map(|p| p.label.as_str())
+        .collect();
+    assert_eq!(marked, ["1", "4"]);
 }
