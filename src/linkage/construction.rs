@@ -325,8 +325,7 @@ impl Program {
         p: &[DVec2],
         prev: Option<f64>,
     ) -> Result<f64, ConstructionError> {
-        let on_crank = self.links_of(a).contains(&(self.crank_link as usize));
-        if !on_crank || c >= self.fixed.len() {
+        if !self.on_frame_or_crank(a) || c >= self.fixed.len() {
             return Err(ConstructionError::Other {
                 step: format!("{s}: slide line"),
                 message: format!(

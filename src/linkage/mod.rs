@@ -27,7 +27,7 @@ pub use plan::{
 pub use plans::{kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading};
 pub use program::{Op, PDir, PDyad, PGuide, Program};
 pub use scheme::structure_figure;
-pub use structure::{GroupInfo, PairInfo, Structure};
+pub use structure::{GroupInfo, Mobility, PairInfo, Structure};
 
 use thiserror::Error;
 

@@ -332,27 +332,10 @@ fn complex_div(a: DVec2, b: DVec2) -> DVec2 {
     DVec2::new(a.x * b.x + a.y * b.y, a.y * b.x - a.x * b.y) / d
 }
 
-/// The link a known point belongs to (the first that carried it; 0 for fixed points).
+/// The link a known point belongs to (the first that carried it; 0 for fixed points):
+/// [`Program::owner`].
 pub fn owner(prog: &Program, k: usize) -> usize {
-    if k < prog.fixed.len() {
-        return 0;
-    }
-    if k == prog.pin {
-        return prog.crank_link as usize;
-    }
-    for op in &prog.ops {
-        match *op {
-            Op::Point { idx, link, .. } if idx == k => return link as usize,
-            Op::Dyad { links, dyad, .. } if dyad.joint() == Some(k) => {
-                return match dyad {
-                    PDyad::Rpp { .. } => links[1] as usize,
-                    _ => links[0] as usize,
-                }
-            }
-            _ => {}
-        }
-    }
-    0
+    prog.owner(k)
 }
 
 /// A constructed position and the crank speed: what every plan of that position starts from.
@@ -743,11 +726,10 @@ impl Builder<'_> {
             return Err(refuse("the line through them is not determined".into()));
         }
         // Acceleration and jerk of a point of the frame or the crank (constant ω₁).
-        let crank = self.prog.crank_link as usize;
         let motion = |k: usize| -> Option<(DVec2, DVec2)> {
             if k < self.prog.fixed.len() {
                 Some((DVec2::ZERO, DVec2::ZERO))
-            } else if self.prog.links_of(k).contains(&crank) {
+            } else if self.prog.on_frame_or_crank(k) {
                 let v = if self.kind == PlanKind::Velocity {
                     self.image(k) * self.mu()
                 } else {

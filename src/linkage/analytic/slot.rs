@@ -37,13 +37,7 @@ pub(super) enum Slot {
 impl Program {
     /// The third derivative of point `k` with respect to φ₁, when known.
     fn third_derivative(&self, pose: &Pose, k: usize) -> Option<DVec2> {
-        if k < self.fixed.len() {
-            Some(DVec2::ZERO)
-        } else if self.links_of(k).contains(&(self.crank_link as usize)) {
-            Some(-pose.dp[k])
-        } else {
-            None
-        }
+        self.on_frame_or_crank(k).then(|| -pose.dp[k])
     }
 
     /// The slot of an RPR group without offset at pin `a`, pivot `c`, `w` = a − c; `prev`:
