@@ -5,8 +5,9 @@ mod analytic;
 mod construction;
 mod extremes;
 mod model;
-mod plan;
 mod plans;
+mod positions;
+mod positions_draw;
 mod program;
 mod scheme;
 mod structure;
@@ -20,11 +21,9 @@ pub use model::{
     Branch, Crank, Dir, Dyad, DyadKind, FixedPoint, Group, Guide, LinkPoint, Mechanism, Output,
     RedundantPair, Sense,
 };
-pub use plan::{
-    draw_links, fixed_pivots, frame_guides, group_name, plan_positions, FrameGuide, Part,
-    PlanPosition, PlanRequest, PositionPlan,
-};
 pub use plans::{kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading};
+pub use positions::{group_name, plan_positions, PlanPosition, PlanRequest, PositionPlan};
+pub use positions_draw::{draw_links, fixed_pivots, frame_guides, FrameGuide, Part};
 pub use program::{Op, PDir, PDyad, PGuide, Program};
 pub use scheme::structure_figure;
 pub use structure::{GroupInfo, Mobility, PairInfo, Structure};

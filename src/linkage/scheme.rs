@@ -2,7 +2,7 @@
 //! the decomposition into the class-I mechanism and the Assur groups, each drawn apart.
 
 use super::construction::Built;
-use super::plan::{draw_guides, draw_links, draw_pivots, frame_guides, Part};
+use super::positions_draw::{draw_guides, draw_links, draw_pivots, frame_guides, Part};
 use super::program::Program;
 use super::structure::Structure;
 use crate::construct::{Drafting, Figure, Item, Recorder, Role};
