@@ -13,16 +13,31 @@ fn mu() -> Scale {
     Scale::new(0.001, Quantity::Length).unwrap()
 }
 
+/// Twelve positions from `start` (radians; `None`: the working stroke), with the extremes
+/// between them, each assembly on the scene's side.
+fn request(start: Option<f64>) -> PlanRequest {
+    PlanRequest {
+        count: 12,
+        start,
+        other_extreme: true,
+        continuity: false,
+    }
+}
+
+/// The labels of the positions marked as extreme.
+fn marked(plan: &PositionPlan) -> Vec<&str> {
+    plan.positions
+        .iter()
+        .filter(|p| p.extreme)
+        .map(|p| p.label.as_str())
+        .collect()
+}
+
 #[test]
 fn mechanism_that_cannot_be_assembled_names_position_and_group() {
     // Assembled only for φ₁ in [19.5°, 93.3°]: from 30° in steps of 30°, position 4 (120°) fails.
     let m = four_bar(0.2, 0.3, 0.25, 0.12);
-    let req = PlanRequest {
-        count: 12,
-        start: Some(30f64.to_radians()),
-        other_extreme: true,
-        continuity: false,
-    };
+    let req = request(Some(30f64.to_radians()));
     let err = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_err();
     match &err {
         LinkageError::CannotAssemble {
@@ -49,12 +64,7 @@ fn mechanism_that_cannot_be_assembled_names_position_and_group() {
 #[test]
 fn working_stroke_start_without_full_turn_is_refused_with_the_angle() {
     let m = four_bar(0.2, 0.3, 0.25, 0.12);
-    let req = PlanRequest {
-        count: 12,
-        start: None,
-        other_extreme: true,
-        continuity: false,
-    };
+    let req = request(None);
     let msg = plan_positions(&m, &req, mu(), Drafting::EXACT)
         .unwrap_err()
         .to_string();
@@ -68,12 +78,7 @@ fn working_stroke_start_without_full_turn_is_refused_with_the_angle() {
 fn change_point_four_bar_passes_its_folded_positions_without_nan() {
     // a + b = c + d: crank 0.1 + coupler 0.2 = rocker 0.1 + frame 0.2 (a parallelogram).
     let m = four_bar(0.1, 0.2, 0.2, 0.1);
-    let req = PlanRequest {
-        count: 12,
-        start: Some(0.0),
-        other_extreme: true,
-        continuity: false,
-    };
+    let req = request(Some(0.0));
     let plan = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(plan.positions.len(), 12);
     let (a, b, d) = (
@@ -128,13 +133,7 @@ fn change_point_four_bar_passes_its_folded_positions_without_nan() {
             && (r.max - std::f64::consts::PI).abs() < 1e-12,
         "{r:?}"
     );
-    let marked: Vec<&str> = plan
-        .positions
-        .iter()
-        .filter(|p| p.extreme)
-        .map(|p| p.label.as_str())
-        .collect();
-    assert_eq!(marked, ["1", "7"]);
+    assert_eq!(marked(&plan), ["1", "7"]);
 }
 
 #[test]
@@ -281,25 +280,14 @@ fn crank_rocker_at_toggle_has_the_toggle_as_an_extreme() {
     // Working stroke from the working-stroke start, and with a given start the extremes are
     // listed (k′) as well.
     for start in [None, Some(0.0)] {
-        let req = PlanRequest {
-            count: 12,
-            start,
-            other_extreme: true,
-            continuity: false,
-        };
+        let req = request(start);
         let plan =
             plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
         let ex = plan.extremes.as_ref().expect("extremes");
         let mut phis = [ex.phi_start, ex.phi_other];
         phis.sort_by(f64::total_cmp);
         assert!((phis[0] - phi_min).abs() < 1e-7 && (phis[1] - std::f64::consts::PI).abs() < 1e-12);
-        let marked: Vec<f64> = plan
-            .positions
-            .iter()
-            .filter(|p| p.extreme)
-            .map(|p| p.phi)
-            .collect();
-        assert_eq!(marked.len(), 2, "{start:?}: {marked:?}");
+        assert_eq!(marked(&plan).len(), 2, "{start:?}: {:?}", marked(&plan));
     }
 }
 
@@ -329,12 +317,7 @@ fn slider_crank_with_coupler_equal_to_crank_has_one_extreme_per_dwell() {
     );
     // The dwell is in the stroke from the arrival: K = 270°/90° = 3.
     assert!((ex.k - 3.0).abs() < 1e-8, "K = {}", ex.k);
-    let req = PlanRequest {
-        count: 12,
-        start: Some(0.0),
-        other_extreme: true,
-        continuity: false,
-    };
+    let req = request(Some(0.0));
     let plan = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
     let extra: Vec<(String, f64)> = plan
         .positions
@@ -343,11 +326,5 @@ fn slider_crank_with_coupler_equal_to_crank_has_one_extreme_per_dwell() {
         .map(|p| (p.label.clone(), p.phi.to_degrees()))
         .collect();
     assert!(extra.is_empty(), "{extra:?}");
-    let marked: Vec<&str> = plan
-        .positions
-        .iter()
-        .filter(|p| p.extreme)
-        .map(|p| p.label.as_str())
-        .collect();
-    assert_eq!(marked, ["1", "4"]);
+    assert_eq!(marked(&plan), ["1", "4"]);
 }

@@ -201,6 +201,21 @@ impl<'a> Builder<'a> {
         let w = self.known.vel.map_or(0.0, |v| v.rate[link]);
         -r * (w * w)
     }
+    /// Where the line ⊥ to a turning link starts: the image `from` of its known point on the
+    /// velocity plan; on the acceleration plan the end `n` of the normal component (radius
+    /// `r` from that point) laid from it. The link's rate is read from the same point.
+    pub(super) fn turning_base(&mut self, note: &str, link: usize, from: DVec2, r: DVec2) -> DVec2 {
+        match self.kind {
+            PlanKind::Velocity => from,
+            PlanKind::Acceleration => self.lay(
+                &format!("normal component, {note}"),
+                from,
+                self.normal(link, r),
+                &format!("n_{link}"),
+            ),
+        }
+    }
+
     /// The relative velocity of two images on the velocity plan, physical.
     pub(super) fn vel_between(&self, from: DVec2, to: DVec2) -> DVec2 {
         (to - from) * self.known.mu_v

@@ -17,39 +17,15 @@ impl Builder<'_> {
             PDyad::Rrr { a, b, joint, .. } => {
                 let (ra, rb) = (self.r(a, joint), self.r(b, joint));
                 let (ai, bi) = (self.image(a), self.image(b));
-                let (x, cr) = if vel {
-                    self.meet(
-                        &format!("{step}: image of {}", self.name(joint)),
-                        ("⊥ link i", ai, ra.perp()),
-                        ("⊥ link j", bi, rb.perp()),
-                    )?
-                } else {
-                    let n1 = self.lay(
-                        "normal component, link i",
-                        ai,
-                        self.normal(i, ra),
-                        &format!("n_{i}"),
-                    );
-                    let n2 = self.lay(
-                        "normal component, link j",
-                        bi,
-                        self.normal(j, rb),
-                        &format!("n_{j}"),
-                    );
-                    self.meet(
-                        &format!("{step}: image of {}", self.name(joint)),
-                        ("⊥ link i", n1, ra.perp()),
-                        ("⊥ link j", n2, rb.perp()),
-                    )?
-                };
+                let n1 = self.turning_base("link i", i, ai, ra);
+                let n2 = self.turning_base("link j", j, bi, rb);
+                let (x, cr) = self.meet(
+                    &format!("{step}: image of {}", self.name(joint)),
+                    ("⊥ link i", n1, ra.perp()),
+                    ("⊥ link j", n2, rb.perp()),
+                )?;
                 self.set_image(joint, x, &[]);
-                let (ri, rj) = if vel {
-                    (self.rate_from(ra, ai, x), self.rate_from(rb, bi, x))
-                } else {
-                    let n1 = ai + self.normal(i, ra) / self.mu();
-                    let n2 = bi + self.normal(j, rb) / self.mu();
-                    (self.rate_from(ra, n1, x), self.rate_from(rb, n2, x))
-                };
+                let (ri, rj) = (self.rate_from(ra, n1, x), self.rate_from(rb, n2, x));
                 self.finish_link(i, &[(a, ai), (joint, x)], ri);
                 self.finish_link(j, &[(b, bi), (joint, x)], rj);
                 let (x, ai) = (self.image(joint), self.image(a));
@@ -65,34 +41,20 @@ impl Builder<'_> {
                 let e = self.dir(&guide.dir);
                 let jk_name = format!("{}{k}", plain(self.name(joint)));
                 let jk = self.image_on(k, self.b.p[joint], &jk_name);
-                let (x, cr) = if vel {
-                    self.meet(
-                        &format!("{step}: image of {}", self.name(joint)),
-                        ("⊥ link i", ai, ra.perp()),
-                        ("∥ guide", jk, e),
-                    )?
+                let n1 = self.turning_base("link i", i, ai, ra);
+                let kk = if vel {
+                    jk
                 } else {
-                    let n1 = self.lay(
-                        "normal component, link i",
-                        ai,
-                        self.normal(i, ra),
-                        &format!("n_{i}"),
-                    );
-                    let kk =
-                        self.coriolis(k, self.vel_coincident(&jk_name), self.vel_image(joint), jk);
-                    self.meet(
-                        &format!("{step}: image of {}", self.name(joint)),
-                        ("⊥ link i", n1, ra.perp()),
-                        ("∥ guide", kk, e),
-                    )?
+                    self.coriolis(k, self.vel_coincident(&jk_name), self.vel_image(joint), jk)
                 };
+                let (x, cr) = self.meet(
+                    &format!("{step}: image of {}", self.name(joint)),
+                    ("⊥ link i", n1, ra.perp()),
+                    ("∥ guide", kk, e),
+                )?;
                 self.set_image(joint, x, &[]);
                 self.coincident.push((jk_name, jk));
-                let ri = if vel {
-                    self.rate_from(ra, ai, x)
-                } else {
-                    self.rate_from(ra, ai + self.normal(i, ra) / self.mu(), x)
-                };
+                let ri = self.rate_from(ra, n1, x);
                 self.finish_link(i, &[(a, ai), (joint, x)], ri);
                 let rk = self.rate(k);
                 self.finish_link(j, &[(joint, x)], rk);
@@ -112,31 +74,21 @@ impl Builder<'_> {
                 };
                 // At the pivot the radius c → a vanishes: the slotted link's line stands for it.
                 let across = if limit.is_some() { e.perp() } else { rc.perp() };
-                let (x, cr) = if vel {
-                    self.meet(
-                        &format!("{step}: image of {an}"),
-                        ("⊥ to the slotted link", ci, across),
-                        ("∥ slide", ai, e),
-                    )?
+                let n = self.turning_base("slotted link", j, ci, rc);
+                let kk = if vel {
+                    ai
                 } else {
-                    let n = self.lay(
-                        "normal component, slotted link",
-                        ci,
-                        self.normal(j, rc),
-                        &format!("n_{j}"),
-                    );
-                    let kk = self.coriolis(i, self.vel_image(a), self.vel_coincident(&an), ai);
-                    self.meet(
-                        &format!("{step}: image of {an}"),
-                        ("⊥ to the slotted link", n, across),
-                        ("∥ slide", kk, e),
-                    )?
+                    self.coriolis(i, self.vel_image(a), self.vel_coincident(&an), ai)
                 };
+                let (x, cr) = self.meet(
+                    &format!("{step}: image of {an}"),
+                    ("⊥ to the slotted link", n, across),
+                    ("∥ slide", kk, e),
+                )?;
                 self.coincident_image(&an, a, j, x);
                 let rj = match limit {
                     Some(rate) => rate,
-                    None if vel => self.rate_from(rc, ci, x),
-                    None => self.rate_from(rc, ci + self.normal(j, rc) / self.mu(), x),
+                    None => self.rate_from(rc, n, x),
                 };
                 self.finish_link(j, &[(c, ci)], rj);
                 // Beside the pivot the image of the coincident point is no base for the
