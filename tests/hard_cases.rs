@@ -1,27 +1,43 @@
 //! Named hard cases of the plan of positions: a mechanism that cannot be assembled at some
 //! crank angle, a change-point four-bar through its folded positions, dead centres.
 
-use tmm::construct::Drafting;
+use tmm::construct::{Drafting, Recorder};
+use tmm::geom::{DVec2, Tolerances};
 use tmm::linkage::*;
 
 mod common;
-use common::four_bar;
+use common::{four_bar, kulisa, slider_crank};
 use tmm::scale::{Quantity, Scale};
 
 fn mu() -> Scale {
     Scale::new(0.001, Quantity::Length).unwrap()
 }
 
+/// Twelve positions from `start` (radians; `None`: the working stroke), with the extremes
+/// between them, each assembly on the scene's side.
+fn request(start: Option<f64>) -> PlanRequest {
+    PlanRequest {
+        count: 12,
+        start,
+        other_extreme: true,
+        continuity: false,
+    }
+}
+
+/// The labels of the positions marked as extreme.
+fn marked(plan: &PositionPlan) -> Vec<&str> {
+    plan.positions
+        .iter()
+        .filter(|p| p.extreme)
+        .map(|p| p.label.as_str())
+        .collect()
+}
+
 #[test]
 fn mechanism_that_cannot_be_assembled_names_position_and_group() {
     // Assembled only for φ₁ in [19.5°, 93.3°]: from 30° in steps of 30°, position 4 (120°) fails.
     let m = four_bar(0.2, 0.3, 0.25, 0.12);
-    let req = PlanRequest {
-        count: 12,
-        start: Some(30f64.to_radians()),
-        other_extreme: true,
-        continuity: false,
-    };
+    let req = request(Some(30f64.to_radians()));
     let err = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_err();
     match &err {
         LinkageError::CannotAssemble {
@@ -48,12 +64,7 @@ fn mechanism_that_cannot_be_assembled_names_position_and_group() {
 #[test]
 fn working_stroke_start_without_full_turn_is_refused_with_the_angle() {
     let m = four_bar(0.2, 0.3, 0.25, 0.12);
-    let req = PlanRequest {
-        count: 12,
-        start: None,
-        other_extreme: true,
-        continuity: false,
-    };
+    let req = request(None);
     let msg = plan_positions(&m, &req, mu(), Drafting::EXACT)
         .unwrap_err()
         .to_string();
@@ -67,12 +78,7 @@ fn working_stroke_start_without_full_turn_is_refused_with_the_angle() {
 fn change_point_four_bar_passes_its_folded_positions_without_nan() {
     // a + b = c + d: crank 0.1 + coupler 0.2 = rocker 0.1 + frame 0.2 (a parallelogram).
     let m = four_bar(0.1, 0.2, 0.2, 0.1);
-    let req = PlanRequest {
-        count: 12,
-        start: Some(0.0),
-        other_extreme: true,
-        continuity: false,
-    };
+    let req = request(Some(0.0));
     let plan = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(plan.positions.len(), 12);
     let (a, b, d) = (
@@ -112,8 +118,22 @@ fn change_point_four_bar_passes_its_folded_positions_without_nan() {
         );
         assert!(pos.pose.toggle.is_some(), "position {}", pos.label);
     }
-    // The parallelogram's rocker turns fully: no extremes.
-    assert!(plan.extremes.is_none());
+    // Held on the left branch at every position, the linkage is a parallelogram for
+    // φ₁ ∈ (0°, 180°) and an anti-parallelogram for (180°, 360°): the rocker swings from 0° to
+    // 180° and back, and its extremes are the two folded positions (positions 1 and 7).
+    let ex = plan
+        .extremes
+        .as_ref()
+        .expect("extremes at the folded positions");
+    let r = &ex.ranges[0];
+    assert!(
+        r.phi_min.abs() < 1e-12
+            && r.min.abs() < 1e-12
+            && (r.phi_max - std::f64::consts::PI).abs() < 1e-12
+            && (r.max - std::f64::consts::PI).abs() < 1e-12,
+        "{r:?}"
+    );
+    assert_eq!(marked(&plan), ["1", "7"]);
 }
 
 #[test]
@@ -145,4 +165,166 @@ fn four_bar_dead_centres_have_crank_and_coupler_in_line() {
         ex.theta,
         theta
     );
+}
+
+/// ω₁ of the kulisa: 5π rad/s clockwise.
+const W1: f64 = -5.0 * std::f64::consts::PI;
+
+/// The kulisa at φ₁ (degrees): the analytic ω₃, ε₃, a_D and D, and the same read off the
+/// constructed velocity and acceleration plans (μ_l = 0.0025 m/mm, drafting 0).
+fn kulisa_at(deg: f64) -> ([f64; 3], [f64; 3], DVec2, DVec2) {
+    let m = kulisa();
+    let prog = Program::compile(&m).unwrap();
+    let phi = deg.to_radians();
+    let d = prog.index("D").unwrap();
+    let pose = prog.solve(phi, None).unwrap();
+    assert!(pose.toggle.is_none(), "{:?}", pose.toggle);
+    let analytic = [
+        pose.dangle[3] * W1,
+        pose.ddangle[3] * W1 * W1,
+        (pose.ddp[d] * W1 * W1).length(),
+    ];
+    let mu_l = 0.0025;
+    let mut rec = Recorder::new(
+        "t",
+        Scale::new(mu_l, Quantity::Length).unwrap(),
+        Tolerances::for_model_size(400.0).unwrap(),
+        Drafting::EXACT,
+    );
+    let built = prog.construct(&mut rec, phi, None, "t").unwrap();
+    let setup = PlanSetup {
+        prog: &prog,
+        built: &built,
+        mu_l,
+        w1: W1,
+        drafting: Drafting::EXACT,
+    };
+    let sv = Scale::new(0.05, Quantity::Velocity).unwrap();
+    let sa = Scale::new(0.5, Quantity::Acceleration).unwrap();
+    let vp = kin_plan(&setup, PlanKind::Velocity, sv, None).unwrap();
+    let ap = kin_plan(&setup, PlanKind::Acceleration, sa, Some(&vp)).unwrap();
+    let plans = [vp.rate[3], ap.rate[3], (ap.images[d] * 0.5).length()];
+    (analytic, plans, pose.p[d], built.p[d] * mu_l)
+}
+
+#[test]
+fn kulisa_pin_through_the_pivot_takes_the_limit() {
+    // B = C at φ₁ = 270°: the slot turns at ω₃ = ω₁/2 (inscribed angle), ε₃ = 0,
+    // a_D = ω₃²·|CD| = (5π/2)²·0.71 m/s² = 43.7964 m/s².
+    let w3 = W1 / 2.0;
+    let a_d = w3 * w3 * 0.71;
+    assert!((a_d - 43.80).abs() < 5e-3);
+    let (analytic, plans, d_pose, d_built) = kulisa_at(270.0);
+    for (what, [w, e, a]) in [("analytic", analytic), ("plans", plans)] {
+        assert!(
+            (w - (-7.853_981_633_974_483)).abs() < 1e-9,
+            "{what}: ω₃ = {w}"
+        );
+        assert!(e.abs() < 1e-6, "{what}: ε₃ = {e}");
+        assert!((a - a_d).abs() < 1e-9 * a_d, "{what}: a_D = {a}");
+    }
+    // The slot is the limit of the line CB: the tangent to B's path, horizontal.
+    assert!(
+        d_pose.distance(d_built) < 1e-12 && (d_pose.length() - 0.71).abs() < 1e-12,
+        "D = {d_pose} vs {d_built}"
+    );
+    assert!(d_pose.y.abs() < 1e-12, "D = {d_pose}");
+}
+
+#[test]
+fn kulisa_beside_the_pivot_gives_no_huge_number() {
+    // The exact motion has ω₃ = ω₁/2 and ε₃ = 0 at every angle; beside the coincidence the
+    // direct formulas lose digits as 1/h³, the limit takes over where it errs less.
+    for k in 1..=12 {
+        for sign in [-1.0, 1.0] {
+            let deg = 270.0 + sign * 10f64.powi(-k);
+            let (analytic, plans, _, _) = kulisa_at(deg);
+            for [w, e, a] in [analytic, plans] {
+                assert!((w - W1 / 2.0).abs() < 1e-4, "φ₁ = {deg}: ω₃ = {w}");
+                assert!(e.abs() < 0.05, "φ₁ = {deg}: ε₃ = {e}");
+                assert!((a - 43.796_369_53).abs() < 1e-3, "φ₁ = {deg}: a_D = {a}");
+            }
+        }
+    }
+}
+
+#[test]
+fn crank_rocker_at_toggle_has_the_toggle_as_an_extreme() {
+    // 80 + 280 = 250 + 110: at φ₁ = 180° coupler and rocker are stretched (|AD| = 360 mm).
+    // The rocker swings from ψ = 72.62° (crank and coupler stretched, |OB| = 330 mm) to the
+    // toggle ψ = 180°.
+    let m = four_bar(0.08, 0.28, 0.25, 0.11);
+    let prog = Program::compile(&m).unwrap();
+    let ex = prog
+        .extremes(&m.outputs, m.crank.sense)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let x = (0.33f64.powi(2) - 0.11f64.powi(2) + 0.28f64.powi(2)) / (2.0 * 0.28);
+    let y = (0.33f64.powi(2) - x * x).sqrt();
+    let (psi_min, phi_min) = ((y.atan2(x - 0.28)), y.atan2(x));
+    let r = &ex.ranges[0];
+    assert!(
+        (r.min - psi_min).abs() < 1e-9 && (r.phi_min - phi_min).abs() < 1e-7,
+        "ψ_min = {}° at φ₁ = {}°",
+        r.min.to_degrees(),
+        r.phi_min.to_degrees()
+    );
+    assert!((psi_min.to_degrees() - 72.62).abs() < 5e-3);
+    assert!((phi_min.to_degrees() - 18.55).abs() < 5e-3);
+    assert!(
+        (r.max - std::f64::consts::PI).abs() < 1e-12
+            && (r.phi_max - std::f64::consts::PI).abs() < 1e-12,
+        "ψ_max = {}° at φ₁ = {}°",
+        r.max.to_degrees(),
+        r.phi_max.to_degrees()
+    );
+    // Working stroke from the working-stroke start, and with a given start the extremes are
+    // listed (k′) as well.
+    for start in [None, Some(0.0)] {
+        let req = request(start);
+        let plan =
+            plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
+        let ex = plan.extremes.as_ref().expect("extremes");
+        let mut phis = [ex.phi_start, ex.phi_other];
+        phis.sort_by(f64::total_cmp);
+        assert!((phis[0] - phi_min).abs() < 1e-7 && (phis[1] - std::f64::consts::PI).abs() < 1e-12);
+        assert_eq!(marked(&plan).len(), 2, "{start:?}: {:?}", marked(&plan));
+    }
+}
+
+#[test]
+fn slider_crank_with_coupler_equal_to_crank_has_one_extreme_per_dwell() {
+    // l = r: B = r·cos φ₁ + r·|cos φ₁|, so the slider stands at the crank centre for
+    // φ₁ ∈ [90°, 270°]. The extremes are the far dead centre (φ₁ = 0, x = 2r) and the arrival
+    // at the stand-still in the sense of rotation (φ₁ = 90°, x = 0); nothing inside it.
+    let m = slider_crank(0.1, 0.1);
+    let prog = Program::compile(&m).unwrap();
+    let ex = prog
+        .extremes(&m.outputs, m.crank.sense)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let r = &ex.ranges[0];
+    let d0 = r.phi_max.min(std::f64::consts::TAU - r.phi_max);
+    assert!(
+        d0 < 1e-9 && (r.max - 0.2).abs() < 1e-12,
+        "max {} at {}",
+        r.max,
+        r.phi_max
+    );
+    assert!(
+        (r.phi_min - std::f64::consts::FRAC_PI_2).abs() < 1e-9 && r.min.abs() < 1e-12,
+        "min {} at {}°",
+        r.min,
+        r.phi_min.to_degrees()
+    );
+    // The dwell is in the stroke from the arrival: K = 270°/90° = 3.
+    assert!((ex.k - 3.0).abs() < 1e-8, "K = {}", ex.k);
+    let req = request(Some(0.0));
+    let plan = plan_positions(&m, &req, mu(), Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
+    let extra: Vec<(String, f64)> = plan
+        .positions
+        .iter()
+        .filter(|p| p.label.contains('′'))
+        .map(|p| (p.label.clone(), p.phi.to_degrees()))
+        .collect();
+    assert!(extra.is_empty(), "{extra:?}");
+    assert_eq!(marked(&plan), ["1", "4"]);
 }

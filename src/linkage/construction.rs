@@ -195,7 +195,12 @@ impl Program {
                             crossing.push(cr);
                         }
                         PDyad::Rpr { a, c, offset } => {
-                            let th = if offset == 0.0 {
+                            let th = if offset == 0.0
+                                && p[a].distance(p[c]) <= rec.tolerances().coincident
+                            {
+                                let prev = prev.map(|q| q.angle[j]);
+                                self.slot_tangent(rec, &s, (a, c), &p, prev).map_err(fail)?
+                            } else if offset == 0.0 {
                                 let line = rec
                                     .line_through(
                                         &format!("{s}: slide line"),
@@ -305,6 +310,52 @@ impl Program {
             crossing,
             step,
         })
+    }
+
+    /// The slide line of an RPR group without offset when the pin `a` stands on the pivot
+    /// `c`: the two points no longer fix it, its limit is the tangent to the path of `a`
+    /// (for a crank pin: perpendicular to the crank, in the sense of increasing φ₁, or the
+    /// one nearest to the previous position's slide `prev`). Refused for a pin whose path's
+    /// tangent the drawing does not give (a point not on the crank, or a moving pivot).
+    fn slot_tangent(
+        &self,
+        rec: &mut Recorder,
+        s: &str,
+        (a, c): (usize, usize),
+        p: &[DVec2],
+        prev: Option<f64>,
+    ) -> Result<f64, ConstructionError> {
+        if !self.on_frame_or_crank(a) || c >= self.fixed.len() {
+            return Err(ConstructionError::Other {
+                step: format!("{s}: slide line"),
+                message: format!(
+                    "the pin {} stands on the pivot {} (|{}{}| = {:.3e} mm ≤ {:.3e} mm): the slide line is the tangent to the path of {}, which the drawing gives only for a point of the crank about a fixed pivot",
+                    self.names[a],
+                    self.names[c],
+                    self.names[c],
+                    self.names[a],
+                    p[a].distance(p[c]),
+                    rec.tolerances().coincident,
+                    self.names[a]
+                ),
+            });
+        }
+        let radius = p[a] - p[self.centre];
+        let mut t = radius.perp().normalize_or(DVec2::X);
+        if prev.is_some_and(|q| DVec2::from_angle(q).dot(t) < 0.0) {
+            t = -t;
+        }
+        let reach = radius.length().max(1.0);
+        rec.draw(
+            format!(
+                "{s}: slide line, tangent to the path of {} at {}",
+                self.names[a], self.names[c]
+            ),
+            Item::Segment(Segment::new(p[c] - t * reach, p[c] + t * reach)),
+            Role::Construction,
+            &[],
+        );
+        Ok(heading(t))
     }
 
     fn line_or_fail(

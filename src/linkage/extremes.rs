@@ -5,7 +5,7 @@ use super::analytic::Pose;
 use super::model::{Output, Sense};
 use super::program::Program;
 use super::LinkageError;
-use crate::geom::{wrap_pi, DVec2};
+use crate::geom::{wrap_pi, DVec2, Tolerances};
 use std::f64::consts::{PI, TAU};
 
 /// An output coordinate of the program.
@@ -111,7 +111,7 @@ impl Program {
         }
         let ranges = coords
             .iter()
-            .map(|c| self.range(*c, &poses, &outputs_name(c, self)))
+            .map(|c| self.range(*c, &poses, &outputs_name(c, self), sense))
             .collect::<Result<Vec<_>, _>>()?;
         let r0 = &ranges[0];
         // Travel from the minimum to the maximum in the sense of rotation.
@@ -135,36 +135,130 @@ impl Program {
         })
     }
 
+    /// The extremes of one output over the sampled turn `poses` (φ₁ = 0 … 2π, the last
+    /// repeating the first). An extreme is where dq/dφ₁ changes sign:
+    /// - between two samples: bisected on the sign (a smooth extreme, or a toggle inside);
+    /// - at a toggle sample (a dyad folded or stretched, e.g. a change-point crank-rocker
+    ///   whose rocker stops against the stretched coupler): the toggle itself;
+    /// - across a stand-still stretch (|dq/dφ₁| within the coincidence tolerance of the
+    ///   output's span, e.g. a slider-crank with l = r waiting at the crank centre): one
+    ///   extreme, where the output arrives at the stretch in the sense of rotation — the first
+    ///   crank angle at which it stands in its extreme position, as for any extreme. A pause
+    ///   between strokes of the same sign is no extreme.
     fn range(
         &self,
         c: OutputCoord,
         poses: &[Pose],
         name: &str,
+        sense: Sense,
     ) -> Result<OutputRange, LinkageError> {
+        let none = || {
+            LinkageError::NoExtremes {
+            output: name.to_string(),
+            detail: "it has no extreme positions (it turns fully or stands still), so the working stroke is not defined; give `start` as an angle".into(),
+        }
+        };
         let reference = c.eval(&poses[0], 0.0).0;
+        let n = poses.len() - 1;
+        let q: Vec<(f64, f64)> = poses[..n].iter().map(|p| c.eval(p, reference)).collect();
+        let (lo, hi) = q
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v.0), hi.max(v.0))
+            });
+        let still = Tolerances::for_model_size(hi - lo)
+            .map_err(|_| none())?
+            .coincident;
+        // Sign of dq/dφ₁ per sample: 0 standing still, None at a toggle.
+        let sign = |k: usize| -> Option<i8> {
+            if poses[k].toggle.is_some() {
+                None
+            } else if q[k].1.abs() <= still {
+                Some(0)
+            } else {
+                Some(if q[k].1 > 0.0 { 1 } else { -1 })
+            }
+        };
+        let moving: Vec<(usize, i8)> = (0..n)
+            .filter_map(|k| sign(k).filter(|s| *s != 0).map(|s| (k, s)))
+            .collect();
+        let step = TAU / n as f64;
         let mut roots: Vec<(f64, f64)> = Vec::new();
-        for w in poses.windows(2) {
-            if w[0].toggle.is_some() || w[1].toggle.is_some() {
+        for (m, &(k1, s1)) in moving.iter().enumerate() {
+            let (k2, s2) = moving[(m + 1) % moving.len()];
+            if s1 == s2 {
                 continue;
             }
-            let (_, d0) = c.eval(&w[0], reference);
-            let (_, d1) = c.eval(&w[1], reference);
-            if d0 == 0.0 {
-                roots.push((w[0].phi, c.eval(&w[0], reference).0));
-            } else if d0 * d1 < 0.0 {
-                let phi = self.bisect(c, &w[0], w[1].phi, reference);
-                let pose = self.solve(phi, None).ok();
-                if let Some(p) = pose {
-                    roots.push((phi, c.eval(&p, reference).0));
+            // Samples strictly between (cyclically), k2 unwrapped past k1.
+            let k2u = if k2 > k1 { k2 } else { k2 + n };
+            let gap: Vec<usize> = (k1 + 1..k2u).map(|k| k % n).collect();
+            let phi1 = poses[k1].phi;
+            let phi = if gap.len() <= 1 && gap.iter().all(|k| sign(*k) == Some(0)) {
+                self.bisect(c, &poses[k1], phi1 + step * (k2u - k1) as f64, reference)
+            } else {
+                let order: Vec<usize> = match sense {
+                    Sense::CounterClockwise => gap.clone(),
+                    Sense::Clockwise => gap.iter().rev().copied().collect(),
+                };
+                let toggle = order.iter().position(|k| sign(*k).is_none());
+                let arrive = order.iter().position(|k| sign(*k) == Some(0));
+                match (toggle, arrive) {
+                    (Some(t), a) if a.is_none_or(|a| t <= a) => poses[order[t]].phi,
+                    (_, Some(a)) => {
+                        // Bisect between the last moving sample and the first still one.
+                        let first = order[a];
+                        let before = if a == 0 {
+                            match sense {
+                                Sense::CounterClockwise => k1,
+                                Sense::Clockwise => k2,
+                            }
+                        } else {
+                            order[a - 1]
+                        };
+                        self.arrival(c, poses[before].phi, poses[first].phi, reference, still)
+                    }
+                    _ => continue,
                 }
+            };
+            if let Ok(p) = self.solve(phi, None) {
+                roots.push((phi, c.eval(&p, reference).0));
             }
         }
         let max = roots.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1));
         let min = roots.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1));
         match (min, max) {
-            (Some(lo), Some(hi)) if hi.1 - lo.1 > 0.0 => Ok(OutputRange { coord: c, phi_min: lo.0.rem_euclid(TAU), phi_max: hi.0.rem_euclid(TAU), min: lo.1, max: hi.1 }),
-            _ => Err(LinkageError::NoExtremes { output: name.to_string(), detail: "it has no extreme positions (it turns fully or stands still), so the working stroke is not defined; give `start` as an angle".into() }),
+            (Some(lo), Some(hi)) if hi.1 - lo.1 > 0.0 => Ok(OutputRange {
+                coord: c,
+                phi_min: lo.0.rem_euclid(TAU),
+                phi_max: hi.0.rem_euclid(TAU),
+                min: lo.1,
+                max: hi.1,
+            }),
+            _ => Err(none()),
         }
+    }
+
+    /// The crank angle between `moving` and `still` (adjacent samples, either order) at
+    /// which the output comes to stand (|dq/dφ₁| ≤ `tol`, or a toggle), by bisection.
+    fn arrival(&self, c: OutputCoord, moving: f64, still: f64, reference: f64, tol: f64) -> f64 {
+        // Adjacent samples across 0 = 2π: unwrap `still` next to `moving`.
+        let still = moving + wrap_pi(still - moving);
+        let (mut go, mut stop) = (moving, still);
+        for _ in 0..80 {
+            let mid = 0.5 * (go + stop);
+            if mid == go || mid == stop {
+                break;
+            }
+            let stands = self.solve(mid, None).map_or(true, |p| {
+                p.toggle.is_some() || c.eval(&p, reference).1.abs() <= tol
+            });
+            if stands {
+                stop = mid;
+            } else {
+                go = mid;
+            }
+        }
+        stop
     }
 
     /// Bisection on dq/dφ between `a.phi` (a solved pose) and `b_phi`: the sign change is

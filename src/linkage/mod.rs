@@ -5,8 +5,9 @@ mod analytic;
 mod construction;
 mod extremes;
 mod model;
-mod plan;
 mod plans;
+mod positions;
+mod positions_draw;
 mod program;
 #[cfg(test)]
 mod proptests;
@@ -22,15 +23,17 @@ pub use model::{
     Branch, Crank, Dir, Dyad, DyadKind, FixedPoint, Group, Guide, LinkPoint, Mechanism, Output,
     RedundantPair, Sense,
 };
-pub use plan::{
-    draw_links, fixed_pivots, frame_guides, group_name, guide_ends, plan_poses, plan_positions,
-    FrameGuide, Part, PlanPoses, PlanPosition, PlanRequest, PosePosition, PositionPlan,
-    GUIDE_MARGIN_MM,
-};
 pub use plans::{kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading};
+pub use positions::{
+    group_name, plan_poses, plan_positions, PlanPoses, PlanPosition, PlanRequest, PosePosition,
+    PositionPlan,
+};
+pub use positions_draw::{
+    draw_links, fixed_pivots, frame_guides, guide_ends, FrameGuide, Part, GUIDE_MARGIN_MM,
+};
 pub use program::{Op, PDir, PDyad, PGuide, Program};
 pub use scheme::structure_figure;
-pub use structure::{GroupInfo, PairInfo, Structure};
+pub use structure::{GroupInfo, Mobility, PairInfo, Structure};
 
 use thiserror::Error;
 

@@ -355,11 +355,10 @@ impl Program {
         let mut fixed_dirs: Vec<(f64, DVec2)> = Vec::new();
         for op in &ops {
             let Op::Dyad { dyad, .. } = op else { continue };
+            let [g0, g1] = dyad.guides();
             let dirs = match *dyad {
-                PDyad::Rrp { guide, .. } => [Some(guide.dir), None],
-                PDyad::Prp { gi, gj, .. } => [Some(gi.dir), Some(gj.dir)],
-                PDyad::Rpp { slide, guide, .. } => [Some(slide), Some(guide.dir)],
-                PDyad::Rrr { .. } | PDyad::Rpr { .. } => [None, None],
+                PDyad::Rpp { slide, .. } => [Some(slide), g0.map(|g| g.dir)],
+                _ => [g0.map(|g| g.dir), g1.map(|g| g.dir)],
             };
             for d in dirs.into_iter().flatten() {
                 if let PDir::Fixed(a) = d {
@@ -383,7 +382,48 @@ impl Program {
     }
 }
 
+impl PDyad {
+    /// The guides of the dyad, in the order of its pairs (RRP, RPP: the guide; PRP: i, j).
+    pub fn guides(&self) -> [Option<PGuide>; 2] {
+        match *self {
+            PDyad::Rrp { guide, .. } | PDyad::Rpp { guide, .. } => [Some(guide), None],
+            PDyad::Prp { gi, gj, .. } => [Some(gi), Some(gj)],
+            PDyad::Rrr { .. } | PDyad::Rpr { .. } => [None, None],
+        }
+    }
+}
+
 impl Program {
+    /// The link a point belongs to: the first that carried it (0 for fixed points, the crank
+    /// for its pin, a point's own link, link i for a dyad's joint — link j for RPP, whose
+    /// joint is on the translating link).
+    pub fn owner(&self, k: usize) -> usize {
+        if k < self.fixed.len() {
+            return 0;
+        }
+        if k == self.pin {
+            return self.crank_link as usize;
+        }
+        for op in &self.ops {
+            match *op {
+                Op::Point { idx, link, .. } if idx == k => return link as usize,
+                Op::Dyad { links, dyad, .. } if dyad.joint() == Some(k) => {
+                    return match dyad {
+                        PDyad::Rpp { .. } => links[1] as usize,
+                        _ => links[0] as usize,
+                    }
+                }
+                _ => {}
+            }
+        }
+        0
+    }
+
+    /// Whether point `k` is fixed or carried by the crank (its motion is known from ω₁ alone).
+    pub fn on_frame_or_crank(&self, k: usize) -> bool {
+        k < self.fixed.len() || self.links_of(k).contains(&(self.crank_link as usize))
+    }
+
     /// The links each point lies on (a pivot or joint lies on several; fixed points on the
     /// frame 0 and on the links pivoted there).
     pub fn links_of(&self, k: usize) -> Vec<usize> {

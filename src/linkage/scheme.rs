@@ -2,7 +2,7 @@
 //! the decomposition into the class-I mechanism and the Assur groups, each drawn apart.
 
 use super::construction::Built;
-use super::plan::{draw_guides, draw_links, draw_pivots, frame_guides, Part};
+use super::positions_draw::{draw_guides, draw_links, draw_pivots, frame_guides, Part};
 use super::program::Program;
 use super::structure::Structure;
 use crate::construct::{Drafting, Figure, Item, Recorder, Role};
@@ -118,7 +118,7 @@ fn number_links(rec: &mut Recorder, anchors: &[(u32, DVec2)]) {
     }
 }
 
-impl super::plan::PositionPlan {
+impl super::positions::PositionPlan {
     /// The structural scheme of the plan's mechanism drawn from its position 1 at `scale`
     /// (see [`structure_figure`]).
     pub fn scheme(&self, st: &Structure, scale: Scale, tol: Tolerances) -> Figure {

@@ -1,8 +1,8 @@
 //! Structural analysis: links, kinematic pairs, mobility (Chebyshev), Assur decomposition,
 //! the structure formula and the class of the mechanism.
 
-use super::model::{Dir, Dyad, DyadKind, Guide, Mechanism};
-use std::collections::HashMap;
+use super::model::{Dyad, DyadKind, Mechanism};
+use super::program::{Op, Program};
 
 /// One kinematic pair.
 #[derive(Debug, Clone, PartialEq)]
@@ -62,62 +62,80 @@ fn pair(name: &str, prismatic: bool, a: u32, b: u32) -> PairInfo {
     }
 }
 
-impl Structure {
-    /// Analyse a mechanism.
-    pub fn analyse(m: &Mechanism) -> Self {
-        // Which link each known point belongs to (the first that carried it).
-        let mut owner: HashMap<&str, u32> = m.fixed.iter().map(|f| (f.name.as_str(), 0)).collect();
-        owner.insert(&m.crank.pin, m.crank.link);
-        for p in &m.points {
-            owner.entry(&p.name).or_insert(p.link);
+/// Chebyshev's count of a planar mechanism: W = 3n − 2p₅ − p₄.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Mobility {
+    /// Moving links.
+    pub n: u32,
+    /// Lower pairs counted.
+    pub p5: u32,
+    /// Higher pairs counted.
+    pub p4: u32,
+    /// The degree of freedom.
+    pub w: i32,
+}
+
+impl Mobility {
+    /// W = 3n − 2p₅ − p₄.
+    pub fn chebyshev(n: u32, p5: u32, p4: u32) -> Self {
+        Self {
+            n,
+            p5,
+            p4,
+            w: 3 * n as i32 - 2 * p5 as i32 - p4 as i32,
         }
+    }
+}
+
+impl Structure {
+    /// Analyse a mechanism. The link carrying each point and guide is the compiled
+    /// program's ([`Program::owner`], [`Program::carrier`]); a name the program does not
+    /// know (a mechanism that does not compile) is taken on the frame.
+    pub fn analyse(m: &Mechanism) -> Self {
+        let prog = Program::compile(m).ok();
+        let index = |n: &str| prog.as_ref().and_then(|p| p.index(n).map(|k| (p, k)));
+        let own = |n: &str| index(n).map_or(0, |(p, k)| p.owner(k) as u32);
+        let guide_owner = |gi: usize, which: usize| {
+            let carrier = |p: &Program| {
+                let guides = p.ops.iter().find_map(|op| match *op {
+                    Op::Dyad { group, dyad, .. } if group == gi => Some(dyad.guides()),
+                    _ => None,
+                })?;
+                guides[which].map(|g| p.carrier(&g) as u32)
+            };
+            prog.as_ref().and_then(carrier).unwrap_or(0)
+        };
         let mut pairs = vec![pair(&m.crank.centre, false, 0, m.crank.link)];
         let mut groups = Vec::new();
-        for g in &m.groups {
+        for (gi, g) in m.groups.iter().enumerate() {
             let [i, j] = g.links;
-            let own = |owner: &HashMap<&str, u32>, n: &str| owner.get(n).copied().unwrap_or(0);
-            let guide_owner = |owner: &HashMap<&str, u32>, g: &Guide| match &g.dir {
-                Dir::Along { from, .. } => own(owner, from),
-                Dir::Fixed(_) => own(owner, &g.through),
-            };
             let ps = match &g.dyad {
                 Dyad::Rrr { a, b, joint, .. } => [
-                    pair(a, false, own(&owner, a), i),
+                    pair(a, false, own(a), i),
                     pair(joint, false, i, j),
-                    pair(b, false, j, own(&owner, b)),
+                    pair(b, false, j, own(b)),
                 ],
-                Dyad::Rrp {
-                    a, guide, joint, ..
-                } => [
-                    pair(a, false, own(&owner, a), i),
+                Dyad::Rrp { a, joint, .. } => [
+                    pair(a, false, own(a), i),
                     pair(joint, false, i, j),
-                    pair(joint, true, j, guide_owner(&owner, guide)),
+                    pair(joint, true, j, guide_owner(gi, 0)),
                 ],
                 Dyad::Rpr { a, c, .. } => [
-                    pair(a, false, own(&owner, a), i),
+                    pair(a, false, own(a), i),
                     pair(a, true, i, j),
-                    pair(c, false, j, own(&owner, c)),
+                    pair(c, false, j, own(c)),
                 ],
-                Dyad::Prp {
-                    guide_i,
-                    guide_j,
-                    joint,
-                } => [
-                    pair(joint, true, guide_owner(&owner, guide_i), i),
+                Dyad::Prp { joint, .. } => [
+                    pair(joint, true, guide_owner(gi, 0), i),
                     pair(joint, false, i, j),
-                    pair(joint, true, j, guide_owner(&owner, guide_j)),
+                    pair(joint, true, j, guide_owner(gi, 1)),
                 ],
-                Dyad::Rpp {
-                    a, guide, joint, ..
-                } => [
-                    pair(a, false, own(&owner, a), i),
+                Dyad::Rpp { a, joint, .. } => [
+                    pair(a, false, own(a), i),
                     pair(a, true, i, j),
-                    pair(joint, true, j, guide_owner(&owner, guide)),
+                    pair(joint, true, j, guide_owner(gi, 0)),
                 ],
             };
-            if let Some(joint) = g.dyad_joint() {
-                owner.entry(joint).or_insert(i);
-            }
             pairs.extend(ps.iter().cloned());
             groups.push(GroupInfo {
                 links: g.links,
@@ -134,20 +152,42 @@ impl Structure {
         }));
         let n = 1 + 2 * m.groups.len() as u32;
         let p5_all = pairs.len() as u32;
-        let w = 3 * n as i32 - 2 * p5 as i32;
-        let w_all = 3 * n as i32 - 2 * p5_all as i32;
+        let (bare, all) = (
+            Mobility::chebyshev(n, p5, 0),
+            Mobility::chebyshev(n, p5_all, 0),
+        );
         Structure {
             n,
             pairs,
             p5,
             p4: 0,
-            w,
+            w: bare.w,
             p5_all,
-            w_all,
+            w_all: all.w,
             crank_link: m.crank.link,
             groups,
             class: if m.groups.is_empty() { 1 } else { 2 },
         }
+    }
+
+    /// Whether redundant pair `r` repeats a pair of the structure (same kind, same links).
+    pub fn repeats(&self, r: &PairInfo) -> bool {
+        let [x, y] = r.links;
+        self.pairs
+            .iter()
+            .filter(|p| !p.redundant)
+            .any(|p| p.prismatic == r.prismatic && (p.links == [x, y] || p.links == [y, x]))
+    }
+
+    /// The mobility counting the redundant pairs that repeat no pair of the structure (a
+    /// redundant pair that repeats one is discounted: it adds no constraint).
+    pub fn mobility(&self) -> Mobility {
+        let stray = self
+            .pairs
+            .iter()
+            .filter(|p| p.redundant && !self.repeats(p))
+            .count() as u32;
+        Mobility::chebyshev(self.n, self.p5 + stray, self.p4)
     }
 
     /// The structure formula: `I(0,1) → II(2,3) → II(4,5)`.

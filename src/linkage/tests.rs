@@ -299,3 +299,15 @@ fn plans_equal_analytic_for_every_kind() {
         }
     }
 }
+
+/// A guide along O → B with O fixed and B the crank pin is carried by the crank, not the frame.
+#[test]
+fn guide_along_the_crank_is_carried_by_the_crank() {
+    let m = &one_of_each_kind()[1];
+    let s = Structure::analyse(m);
+    let slide = &s.groups[0].pairs[2];
+    assert!(slide.prismatic);
+    assert_eq!(slide.links, [3, 1]);
+    assert_eq!(s.mobility(), Mobility::chebyshev(3, 4, 0));
+    assert_eq!(s.mobility().w, 1);
+}

@@ -2,9 +2,11 @@
 
 mod check;
 mod error;
+mod groups;
 mod kinematics;
 mod load;
 mod model;
+mod outputs;
 mod raw;
 mod structure;
 

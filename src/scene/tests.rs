@@ -513,3 +513,29 @@ fn tangent_loads_with_a_crank_point_in_a_direction() {
     assert_eq!(guide_j.dir, Dir::Fixed(PI / 2.0));
     assert_eq!(s.positions.start, Start::Angle(15f64.to_radians()));
 }
+
+#[test]
+fn slider_output_across_its_guide_is_refused() {
+    // E slides on the horizontal guide of group 2: along 90° its travel is 0 everywhere.
+    let msg = shaper_error("slider = \"E\"\ndir = 0.0", "slider = \"E\"\ndir = 90.0");
+    assert_names(
+        &msg,
+        &["mechanism.output[1].dir = 90: expected the direction of travel of E along its guide (mechanism.group[1], 0° or 180°)"],
+    );
+    // Along the guide, either way, it is accepted.
+    let text = shaper_text().replacen(
+        "slider = \"E\"\ndir = 0.0",
+        "slider = \"E\"\ndir = 180.0",
+        1,
+    );
+    parse(&text, Path::new("constructions/x.toml")).unwrap_or_else(|e| panic!("{e}"));
+}
+
+#[test]
+fn mobility_counts_with_the_linkage_structure() {
+    // A redundant pair that repeats the structure's E–frame prismatic pair is discounted.
+    let s = loaded("shaper.toml");
+    let st = crate::linkage::Structure::analyse(s.mechanism.as_ref().expect("a mechanism"));
+    let w = st.mobility();
+    assert_eq!((w.n, w.p5, w.p4, w.w), (5, 7, 0, 1));
+}

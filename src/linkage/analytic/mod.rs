@@ -7,6 +7,11 @@
 use super::model::Branch;
 use super::program::{Op, PDir, PDyad, PGuide, Program};
 use crate::geom::DVec2;
+use jet::{carried, cross, heading, meet, sub, unit, AngleJet, Jet, LineJet, Rows, TANGENT_REL};
+
+mod jet;
+mod slot;
+use slot::Slot;
 
 /// A solved position with its velocity and acceleration analogues.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -51,161 +56,6 @@ pub struct Unassembled {
     pub group: usize,
     /// What fails, with the numbers (m).
     pub detail: String,
-}
-
-/// A point with its first and second derivatives.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-struct Jet {
-    p: DVec2,
-    d: DVec2,
-    dd: DVec2,
-}
-
-/// An angle with its first and second derivatives, and its unit vector `e` = (cos a, sin a)
-/// (kept alongside so that no angle is turned back into a vector by sin and cos).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-struct AngleJet {
-    d: f64,
-    dd: f64,
-    e: DVec2,
-}
-
-impl AngleJet {
-    /// The angle `a` with its rates, its unit vector from sin and cos.
-    #[inline]
-    fn at(a: f64, d: f64, dd: f64) -> Self {
-        Self {
-            d,
-            dd,
-            e: DVec2::from_angle(a),
-        }
-    }
-
-    /// Turned by the constant angle `by`.
-    #[inline]
-    fn turned(self, by: f64) -> Self {
-        if by == 0.0 {
-            return self;
-        }
-        Self {
-            e: DVec2::from_angle(by).rotate(self.e),
-            ..self
-        }
-    }
-}
-
-/// A line with its derivatives: point `g`, unit direction `e` (both as jets), and the
-/// direction's angle `t`.
-#[derive(Debug, Clone, Copy)]
-struct LineJet {
-    g: Jet,
-    e: Jet,
-    t: AngleJet,
-}
-
-/// Relative slack with which a tangency survives rounding (a circle pair whose centre
-/// distance misses r₁ ± r₂ by 1e-12 of the radii touches).
-const TANGENT_REL: f64 = 1e-12;
-
-#[inline]
-fn cross(a: DVec2, b: DVec2) -> f64 {
-    a.perp_dot(b)
-}
-
-/// The 2×2 system `[r0; r1] x = rhs`, checked once and solved for several right-hand sides.
-#[derive(Clone, Copy)]
-struct Rows {
-    r0: DVec2,
-    r1: DVec2,
-    det: f64,
-}
-
-impl Rows {
-    /// `None` when singular (a toggle position): |det| ≤ 1e-14·|r0|·|r1|.
-    #[inline]
-    fn new(r0: DVec2, r1: DVec2) -> Option<Self> {
-        let det = cross(r0, r1);
-        let scale = r0.length() * r1.length();
-        if scale == 0.0 || det.abs() <= 1e-14 * scale {
-            return None;
-        }
-        Some(Self { r0, r1, det })
-    }
-
-    /// The solution for `rhs`.
-    #[inline]
-    fn solve(&self, rhs: DVec2) -> DVec2 {
-        let Self { r0, r1, det } = *self;
-        DVec2::new(rhs.x * r1.y - rhs.y * r0.y, r0.x * rhs.y - r1.x * rhs.x) / det
-    }
-}
-
-/// Angle of a vector jet with its rates; its unit vector is the vector over its length.
-#[inline]
-fn heading(v: Jet) -> AngleJet {
-    let q = v.p.length_squared();
-    let inv = 1.0 / q;
-    let d = cross(v.p, v.d) * inv;
-    let dd = (cross(v.p, v.dd) - 2.0 * d * v.p.dot(v.d)) * inv;
-    AngleJet {
-        d,
-        dd,
-        e: v.p / q.sqrt(),
-    }
-}
-
-/// The unit vector at an angle jet, as a jet.
-#[inline]
-fn unit(t: AngleJet) -> Jet {
-    let e = t.e;
-    let n = e.perp();
-    Jet {
-        p: e,
-        d: n * t.d,
-        dd: n * t.dd - e * (t.d * t.d),
-    }
-}
-
-#[inline]
-fn sub(a: Jet, b: Jet) -> Jet {
-    Jet {
-        p: a.p - b.p,
-        d: a.d - b.d,
-        dd: a.dd - b.dd,
-    }
-}
-
-/// A point fixed in a link frame: origin + R(θ)·local.
-#[inline]
-fn carried(o: Jet, t: AngleJet, local: DVec2) -> Jet {
-    let r = t.e.rotate(local);
-    Jet {
-        p: o.p + r,
-        d: o.d + r.perp() * t.d,
-        dd: o.dd + r.perp() * t.dd - r * (t.d * t.d),
-    }
-}
-
-/// Intersection of two moving lines with its rates and the sine of their crossing angle.
-fn meet(l1: LineJet, l2: LineJet) -> Option<(Jet, f64)> {
-    let det = cross(l1.e.p, l2.e.p);
-    if det.abs() <= 1e-12 {
-        return None;
-    }
-    // Each line: n·x = n·g with n = perp(e). Differentiate twice.
-    let n = |e: Jet| Jet {
-        p: e.p.perp(),
-        d: e.d.perp(),
-        dd: e.dd.perp(),
-    };
-    let (n1, n2) = (n(l1.e), n(l2.e));
-    let rows = Rows::new(n1.p, n2.p)?;
-    let x = rows.solve(DVec2::new(n1.p.dot(l1.g.p), n2.p.dot(l2.g.p)));
-    let rhs1 = |nn: Jet, g: Jet| nn.d.dot(g.p - x) + nn.p.dot(g.d);
-    let v = rows.solve(DVec2::new(rhs1(n1, l1.g), rhs1(n2, l2.g)));
-    let rhs2 = |nn: Jet, g: Jet| nn.dd.dot(g.p - x) + 2.0 * nn.d.dot(g.d - v) + nn.p.dot(g.dd);
-    let a = rows.solve(DVec2::new(rhs2(n1, l1.g), rhs2(n2, l2.g)));
-    Some((Jet { p: x, d: v, dd: a }, det.abs().min(1.0)))
 }
 
 /// Mutable state of one solve, borrowed from a [`Pose`].
@@ -503,6 +353,24 @@ impl Program {
             }
             PDyad::Rpr { a, c, offset } => {
                 let w = sub(st.jet(a), st.jet(c));
+                if offset == 0.0 {
+                    let prev = continuity.then(|| st.pose.dir[j]);
+                    let th = match self.slot(st.pose, (a, c), w, prev) {
+                        Slot::Direct => None,
+                        Slot::Limit(th) => Some(th),
+                        Slot::Undetermined { e, detail } => {
+                            let e = e.ok_or_else(|| fail(detail.clone()))?;
+                            st.toggle(group, detail);
+                            Some(AngleJet { d: 0.0, dd: 0.0, e })
+                        }
+                    };
+                    if let Some(th) = th {
+                        st.set_link(i, th, a);
+                        st.set_link(j, th, c);
+                        st.pose.crossing_sin.push(1.0);
+                        return Ok(());
+                    }
+                }
                 let d = w.p.length();
                 if d < offset.abs() || d == 0.0 {
                     return Err(fail(format!(
@@ -580,66 +448,4 @@ impl Program {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The analogues agree with 5-point central differences of the positions (a consistency
-    /// check of the differentiation, not the method: the twin itself never differentiates
-    /// numerically). Truncation O(h⁴) at h = 2.5e-4 keeps the check's own error near 1e-10
-    /// even where the analogues vary fast (the PRP case).
-    #[test]
-    fn analogues_match_finite_differences_for_every_kind() {
-        let h = 2.5e-4;
-        for m in crate::linkage::tests::one_of_each_kind() {
-            let prog = Program::compile(&m).unwrap();
-            for k in 0..24 {
-                let phi = 0.1 + k as f64 * 0.26;
-                let poses: Option<Vec<Pose>> = [-2.0, -1.0, 0.0, 1.0, 2.0]
-                    .iter()
-                    .map(|s| prog.solve(phi + s * h, None).ok())
-                    .collect();
-                let Some(q) = poses else { continue };
-                let d5 = |f: &dyn Fn(&Pose) -> f64| {
-                    (-f(&q[4]) + 8.0 * f(&q[3]) - 8.0 * f(&q[1]) + f(&q[0])) / (12.0 * h)
-                };
-                let dd5 = |f: &dyn Fn(&Pose) -> f64| {
-                    (-f(&q[4]) + 16.0 * f(&q[3]) - 30.0 * f(&q[2]) + 16.0 * f(&q[1]) - f(&q[0]))
-                        / (12.0 * h * h)
-                };
-                let close =
-                    |got: f64, want: f64, tol: f64| (got - want).abs() <= tol * (1.0 + want.abs());
-                for idx in 0..prog.names.len() {
-                    for c in 0..2 {
-                        let f = |p: &Pose| p.p[idx][c];
-                        assert!(
-                            close(d5(&f), q[2].dp[idx][c], 1e-8),
-                            "{} at {phi}: d {} vs {}",
-                            prog.names[idx],
-                            d5(&f),
-                            q[2].dp[idx][c]
-                        );
-                        assert!(
-                            close(dd5(&f), q[2].ddp[idx][c], 1e-6),
-                            "{} at {phi}: dd {} vs {}",
-                            prog.names[idx],
-                            dd5(&f),
-                            q[2].ddp[idx][c]
-                        );
-                    }
-                }
-                for l in 1..prog.link_count {
-                    // Unwrap the angles around the middle one.
-                    let f =
-                        |p: &Pose| q[2].angle(l) + crate::geom::wrap_pi(p.angle(l) - q[2].angle(l));
-                    assert!(close(d5(&f), q[2].dangle[l], 1e-8), "link {l} at {phi}");
-                    assert!(
-                        close(dd5(&f), q[2].ddangle[l], 1e-6),
-                        "link {l} at {phi}: {} vs {}",
-                        dd5(&f),
-                        q[2].ddangle[l]
-                    );
-                }
-            }
-        }
-    }
-}
+mod tests;

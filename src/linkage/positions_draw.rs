@@ -1,268 +1,13 @@
-//! The plan of positions (план положений): N crank positions plus the extreme positions,
-//! each constructed with compass and straightedge, drawn into one figure with the
-//! trajectories of the link points, the extreme positions, θ and the stroke H.
+//! Drawing the plan of positions: the links of a position (whole, the driver, or one group),
+//! the frame's pivots and guides, the trajectories and the extreme positions with θ, ψ, H.
 
-use super::analytic::Pose;
 use super::construction::Built;
 use super::extremes::{Extremes, OutputCoord};
-use super::model::{Mechanism, Sense};
-use super::program::{Op, PDir, PDyad, PGuide, Program};
-use super::LinkageError;
-use crate::construct::{Drafting, Figure, Item, Recorder, Role};
-use crate::geom::{Arc, Circle, DVec2, Segment, Side, Tolerances};
-use crate::scale::Scale;
+use super::positions::{PlanPoses, PlanPosition, PosePosition};
+use super::program::{Op, PDir, PDyad, Program};
+use crate::construct::{Item, Recorder, Role};
+use crate::geom::{Arc, Circle, DVec2, Segment, Side};
 use std::f64::consts::TAU;
-
-/// What positions to construct.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PlanRequest {
-    /// Number of equally spaced crank positions.
-    pub count: u32,
-    /// Crank angle of position 1 (radians); `None`: the start of the working stroke.
-    pub start: Option<f64>,
-    /// Add the extreme positions that fall between the numbered ones (labelled `k′`).
-    pub other_extreme: bool,
-    /// Choose each assembly by continuity with the previous position instead of by the
-    /// scene's side.
-    pub continuity: bool,
-}
-
-/// One position of the plan.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PlanPosition {
-    /// Its label (`1`…`12`, `8′`).
-    pub label: String,
-    /// Crank angle, radians.
-    pub phi: f64,
-    /// An extreme position.
-    pub extreme: bool,
-    /// As constructed (drawing mm).
-    pub built: Built,
-    /// The analytic twin (m, with velocity analogues).
-    pub pose: Pose,
-}
-
-/// The plan of positions.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PositionPlan {
-    /// The compiled mechanism.
-    pub program: Program,
-    /// Extremes, when the outputs have them.
-    pub extremes: Option<Extremes>,
-    /// Positions in the order of crank rotation from position 1.
-    pub positions: Vec<PlanPosition>,
-    /// The recorded figure at μ_l.
-    pub figure: Figure,
-}
-
-/// Crank angle of the numbered position `k` (0-based).
-fn phi_of(start: f64, sense: Sense, k: usize, count: u32) -> f64 {
-    (start + sense.sign() * TAU * k as f64 / count as f64).rem_euclid(TAU)
-}
-
-/// The sequence (label, φ, extreme?) in crank order.
-fn sequence(
-    req: &PlanRequest,
-    start: f64,
-    sense: Sense,
-    ex: Option<&Extremes>,
-) -> Vec<(String, f64, bool)> {
-    let step = TAU / req.count as f64;
-    let mut seq: Vec<(String, f64, bool, f64)> = (0..req.count as usize)
-        .map(|k| {
-            (
-                (k + 1).to_string(),
-                phi_of(start, sense, k, req.count),
-                false,
-                step * k as f64,
-            )
-        })
-        .collect();
-    if let (true, Some(ex)) = (req.other_extreme, ex) {
-        for phi in [ex.phi_start, ex.phi_other] {
-            let travel = (sense.sign() * (phi - start)).rem_euclid(TAU);
-            let k = (travel / step).floor() as usize;
-            let off = travel - step * k as f64;
-            // An extreme that falls on a numbered position is that position.
-            if off.min(step - off) <= 1e-9 {
-                let at = if off <= 1e-9 {
-                    k
-                } else {
-                    (k + 1) % req.count as usize
-                };
-                seq[at].2 = true;
-                continue;
-            }
-            seq.push((format!("{}′", k + 1), phi, true, travel));
-        }
-    }
-    seq.sort_by(|a, b| a.3.total_cmp(&b.3));
-    seq.into_iter().map(|(l, p, e, _)| (l, p, e)).collect()
-}
-
-/// One position of the plan, solved analytically only (no construction).
-#[derive(Debug, Clone, PartialEq)]
-pub struct PosePosition {
-    /// Its label (`1`…`12`, `8′`).
-    pub label: String,
-    /// Crank angle, radians.
-    pub phi: f64,
-    /// An extreme position.
-    pub extreme: bool,
-    /// The analytic twin (m, with velocity analogues).
-    pub pose: Pose,
-}
-
-/// The positions a plan of positions will construct, solved analytically: what a sheet
-/// needs to choose its scales before anything is drawn.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PlanPoses {
-    /// The compiled mechanism.
-    pub program: Program,
-    /// Extremes, when the outputs have them.
-    pub extremes: Option<Extremes>,
-    /// Positions in the order of crank rotation from position 1.
-    pub positions: Vec<PosePosition>,
-}
-
-/// The positions of the plan of `m` asked for by `req`, solved analytically.
-pub fn plan_poses(m: &Mechanism, req: &PlanRequest) -> Result<PlanPoses, LinkageError> {
-    let program = Program::compile(m)?;
-    let (extremes, start) = start_of(&program, m, req)?;
-    let mut positions: Vec<PosePosition> = Vec::new();
-    for (label, phi, extreme) in sequence(req, start, m.crank.sense, extremes.as_ref()) {
-        let prev = positions.last().filter(|_| req.continuity);
-        let pose = program
-            .solve(phi, prev.map(|p| &p.pose))
-            .map_err(|u| cannot_assemble(m, &label, phi, u.group, u.detail))?;
-        positions.push(PosePosition {
-            label,
-            phi,
-            extreme,
-            pose,
-        });
-    }
-    Ok(PlanPoses {
-        program,
-        extremes,
-        positions,
-    })
-}
-
-/// The extremes and the crank angle of position 1. With a given start angle the extremes
-/// are optional: a mechanism whose output turns fully has none, and one that cannot make a
-/// full turn fails at a named position later.
-fn start_of(
-    program: &Program,
-    m: &Mechanism,
-    req: &PlanRequest,
-) -> Result<(Option<Extremes>, f64), LinkageError> {
-    let found = program.extremes(&m.outputs, m.crank.sense);
-    match req.start {
-        Some(s) => Ok((found.ok(), s)),
-        None => {
-            let ex = found?;
-            let s = ex.phi_start;
-            Ok((Some(ex), s))
-        }
-    }
-}
-
-fn cannot_assemble(
-    m: &Mechanism,
-    label: &str,
-    phi: f64,
-    group: usize,
-    detail: String,
-) -> LinkageError {
-    LinkageError::CannotAssemble {
-        position: label.to_string(),
-        phi_deg: phi.to_degrees(),
-        group: group_name(m, group),
-        detail,
-    }
-}
-
-/// Build the plan of positions of `m` at μ_l = `scale`.
-pub fn plan_positions(
-    m: &Mechanism,
-    req: &PlanRequest,
-    scale: Scale,
-    drafting: Drafting,
-) -> Result<PositionPlan, LinkageError> {
-    let program = Program::compile(m)?;
-    let (extremes, start) = start_of(&program, m, req)?;
-    let extent_mm = model_extent(&program) / scale.value();
-    let tol = Tolerances::for_model_size(extent_mm.max(1.0))
-        .map_err(|e| LinkageError::Model(e.to_string()))?;
-    let mut rec = Recorder::new("plan", scale, tol, drafting);
-    let mut positions: Vec<PlanPosition> = Vec::new();
-    for (k, (label, phi, extreme)) in sequence(req, start, m.crank.sense, extremes.as_ref())
-        .into_iter()
-        .enumerate()
-    {
-        rec.set_group(k as u32 + 1);
-        let prev = positions.last().filter(|_| req.continuity);
-        let built = program
-            .construct(
-                &mut rec,
-                phi,
-                prev.map(|p| &p.built),
-                &format!("position {label}"),
-            )
-            .map_err(|f| cannot_assemble(m, &label, phi, f.group, f.error.to_string()))?;
-        let pose = program
-            .solve(phi, prev.map(|p| &p.pose))
-            .map_err(|u| cannot_assemble(m, &label, phi, u.group, u.detail))?;
-        positions.push(PlanPosition {
-            label,
-            phi,
-            extreme,
-            built,
-            pose,
-        });
-    }
-    rec.set_group(0);
-    draw_plan(&mut rec, &program, &positions, extremes.as_ref());
-    Ok(PositionPlan {
-        program,
-        extremes,
-        positions,
-        figure: rec.finish(),
-    })
-}
-
-/// `2 (RRR, links 2, 3)`.
-pub fn group_name(m: &Mechanism, g: usize) -> String {
-    m.groups.get(g).map_or_else(
-        || format!("{}", g + 1),
-        |gr| {
-            format!(
-                "{} ({}, links {}, {})",
-                g + 1,
-                gr.dyad.kind().letters(),
-                gr.links[0],
-                gr.links[1]
-            )
-        },
-    )
-}
-
-/// Largest distance between fixed points and the crank reach, m (sets the tolerances).
-fn model_extent(p: &Program) -> f64 {
-    let mut e = p.crank_length;
-    for a in &p.fixed {
-        for b in &p.fixed {
-            e = e.max(a.distance(*b));
-        }
-    }
-    for op in &p.ops {
-        if let Op::Point { along, across, .. } = op {
-            e = e.max(along.hypot(*across));
-        }
-    }
-    e
-}
 
 /// Which part of a mechanism to draw.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -382,7 +127,7 @@ pub fn draw_links(
 }
 
 /// Farthest `along` of a link's points, mm.
-fn link_reach(prog: &Program, link: u32, mu: f64) -> f64 {
+pub(super) fn link_reach(prog: &Program, link: u32, mu: f64) -> f64 {
     prog.ops
         .iter()
         .filter_map(|op| match op {
@@ -425,24 +170,11 @@ pub struct FrameGuide {
 
 /// The frame's guides spanning the joint positions of `built`, with `margin` mm at each end.
 pub fn frame_guides(prog: &Program, built: &[&Built], margin: f64) -> Vec<FrameGuide> {
-    let n = prog.fixed.len();
     let mut v = Vec::new();
     let Some(first) = built.first() else { return v };
     let centre = first.p[prog.centre];
-    for op in &prog.ops {
-        let Op::Dyad { group, dyad, .. } = op else {
-            continue;
-        };
-        let guides: Vec<(PGuide, usize)> = match *dyad {
-            PDyad::Rrp { guide, joint, .. } | PDyad::Rpp { guide, joint, .. } => {
-                vec![(guide, joint)]
-            }
-            PDyad::Prp { gi, gj, joint } => vec![(gi, joint), (gj, joint)],
-            _ => vec![],
-        };
-        for (g, joint) in guides.into_iter().filter(|(g, _)| g.is_fixed(n)) {
-            let PDir::Fixed(a) = g.dir else { continue };
-            let e = DVec2::from_angle(a);
+    for (group, joint, e) in fixed_guides(prog) {
+        {
             let (lo, hi) = built
                 .iter()
                 .map(|b| b.p[joint].dot(e))
@@ -458,7 +190,7 @@ pub fn frame_guides(prog: &Program, built: &[&Built], margin: f64) -> Vec<FrameG
                 Side::Left
             };
             v.push(FrameGuide {
-                group: *group,
+                group,
                 segment,
                 hatch,
             });
@@ -474,37 +206,43 @@ pub const GUIDE_MARGIN_MM: f64 = 15.0;
 /// analytic positions: for each end, the slider's extreme point (m) and the unit direction
 /// in which the guide runs on past it by [`GUIDE_MARGIN_MM`].
 pub fn guide_ends(poses: &PlanPoses) -> Vec<(DVec2, DVec2)> {
-    let prog = &poses.program;
-    let n = prog.fixed.len();
     let mut ends = Vec::new();
-    for op in &prog.ops {
-        let Op::Dyad { dyad, .. } = op else { continue };
-        let guides: Vec<(PGuide, usize)> = match *dyad {
-            PDyad::Rrp { guide, joint, .. } | PDyad::Rpp { guide, joint, .. } => {
-                vec![(guide, joint)]
-            }
-            PDyad::Prp { gi, gj, joint } => vec![(gi, joint), (gj, joint)],
-            _ => vec![],
-        };
-        for (g, joint) in guides.into_iter().filter(|(g, _)| g.is_fixed(n)) {
-            let PDir::Fixed(a) = g.dir else { continue };
-            let e = DVec2::from_angle(a);
-            let along = |p: &&PosePosition| p.pose.p[joint].dot(e);
-            let first = poses
-                .positions
-                .iter()
-                .min_by(|a, b| along(a).total_cmp(&along(b)));
-            let last = poses
-                .positions
-                .iter()
-                .max_by(|a, b| along(a).total_cmp(&along(b)));
-            if let (Some(f), Some(l)) = (first, last) {
-                ends.push((f.pose.p[joint], -e));
-                ends.push((l.pose.p[joint], e));
-            }
+    for (_, joint, e) in fixed_guides(&poses.program) {
+        let along = |p: &&PosePosition| p.pose.p[joint].dot(e);
+        let positions = poses.positions.iter();
+        let first = positions
+            .clone()
+            .min_by(|a, b| along(a).total_cmp(&along(b)));
+        let last = positions.max_by(|a, b| along(a).total_cmp(&along(b)));
+        if let (Some(f), Some(l)) = (first, last) {
+            ends.push((f.pose.p[joint], -e));
+            ends.push((l.pose.p[joint], e));
         }
     }
     ends
+}
+
+/// The frame's guides: per guide, its group, the joint sliding on it and its direction.
+fn fixed_guides(prog: &Program) -> Vec<(usize, usize, DVec2)> {
+    let n = prog.fixed.len();
+    let mut out = Vec::new();
+    for op in &prog.ops {
+        let Op::Dyad { group, dyad, .. } = op else {
+            continue;
+        };
+        let Some(joint) = dyad.joint() else { continue };
+        for g in dyad
+            .guides()
+            .into_iter()
+            .flatten()
+            .filter(|g| g.is_fixed(n))
+        {
+            if let PDir::Fixed(a) = g.dir {
+                out.push((*group, joint, DVec2::from_angle(a)));
+            }
+        }
+    }
+    out
 }
 
 /// Draw the frame's guides with their hatching.
@@ -543,7 +281,7 @@ pub fn draw_pivots(rec: &mut Recorder, prog: &Program, b: &Built) {
     }
 }
 
-fn draw_plan(
+pub(super) fn draw_plan(
     rec: &mut Recorder,
     prog: &Program,
     positions: &[PlanPosition],

@@ -1,0 +1,225 @@
+//! Velocity and acceleration plans (планы скоростей и ускорений) as drawing-board
+//! constructions: from the pole, each Assur group's two vector equations are drawn as
+//! direction lines through known images and intersected; further points of a link follow by
+//! the similarity theorem; every value is read off the drawing (drafting model applied) and
+//! turned into a physical value with the plan's μ.
+//!
+//! Velocity plan (pole `p`): the crank pin's velocity ⊥ to the crank in the sense of ω₁;
+//! RRR: ⊥ to each link through the outer images; RRP: ⊥ to the link and ∥ to the guide through
+//! the image of the guide's coincident point; RPR: ⊥ to the line from the pivot and ∥ to the
+//! slide through the block's image (the coincident point `b₃`); PRP: ∥ to each guide through the
+//! coincident points of the carrying links; RPP: ∥ to the slide and ∥ to the guide.
+//! Acceleration plan (pole `π`): the same equations with the normal components (ends `n`) laid
+//! from the known images along the links and the Coriolis components (end `k`, 2ω·v_r turned
+
+mod builder;
+mod dyads;
+mod names;
+
+use super::construction::Built;
+use super::program::{Op, Program};
+use crate::construct::{ConstructionError, Drafting, Figure, Recorder, Role};
+use crate::geom::{DVec2, Tolerances};
+use crate::scale::Scale;
+use builder::{Builder, Known, Links};
+pub use names::plain;
+
+/// Which plan.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlanKind {
+    /// Velocities, pole `p`.
+    Velocity,
+    /// Accelerations, pole `π`.
+    Acceleration,
+}
+
+/// A value read off a plan.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reading {
+    /// Quantity name (`v_D`, `v_B3_B1`, `omega_3`, `a_S5`, `eps_3`).
+    pub quantity: String,
+    /// What was read, structurally (for the analytic twin).
+    pub what: Measure,
+    /// The physical value (magnitudes for point quantities; ω, ε signed, counter-clockwise
+    /// positive).
+    pub value: f64,
+    /// Crossing angle of the intersection that fixed it, degrees (None: not an intersection).
+    pub conditioning: Option<f64>,
+}
+
+/// What a reading measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Measure {
+    /// The absolute velocity (acceleration) of a point, by program index: a magnitude.
+    Point(usize),
+    /// The angular velocity (acceleration) of a link, signed counter-clockwise.
+    Rate(usize),
+    /// The velocity (acceleration) of point `p.0` carried by link `p.1` relative to point
+    /// `q.0` carried by link `q.1`: a magnitude.
+    Relative {
+        /// (point, link) of the moving point.
+        p: (usize, usize),
+        /// (point, link) of the reference point.
+        q: (usize, usize),
+    },
+}
+
+/// A constructed plan.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KinPlan {
+    /// Which plan.
+    pub kind: PlanKind,
+    /// The recorded figure (pole at the origin), at `scale`.
+    pub figure: Figure,
+    /// Image of every point by program index, plan mm.
+    pub images: Vec<DVec2>,
+    /// Images of coincident points of sliding pairs (`B3`: point of link 3 under B).
+    pub coincident: Vec<(String, DVec2)>,
+    /// Angular velocity (velocity plan) or acceleration (acceleration plan) of every link,
+    /// as read off the plan, signed counter-clockwise.
+    pub rate: Vec<f64>,
+    /// The readings.
+    pub readings: Vec<Reading>,
+}
+
+/// The link a known point belongs to (the first that carried it; 0 for fixed points):
+/// [`Program::owner`].
+pub fn owner(prog: &Program, k: usize) -> usize {
+    prog.owner(k)
+}
+
+/// A constructed position and the crank speed: what every plan of that position starts from.
+#[derive(Debug, Clone, Copy)]
+pub struct PlanSetup<'a> {
+    /// The compiled mechanism.
+    pub prog: &'a Program,
+    /// The constructed position (drawing mm).
+    pub built: &'a Built,
+    /// μ_l of the construction, m/mm.
+    pub mu_l: f64,
+    /// Crank speed ω₁, rad/s, signed counter-clockwise.
+    pub w1: f64,
+    /// The drafting model for readings.
+    pub drafting: Drafting,
+}
+
+/// Build a plan of `kind` at plan scale `scale`. The acceleration plan needs the velocity
+/// plan of the same position (`vel`). A failure names the group (file order) and the step.
+pub fn kin_plan(
+    setup: &PlanSetup<'_>,
+    kind: PlanKind,
+    scale: Scale,
+    vel: Option<&KinPlan>,
+) -> Result<KinPlan, (usize, ConstructionError)> {
+    let PlanSetup {
+        prog,
+        built: b,
+        mu_l,
+        w1,
+        drafting,
+    } = *setup;
+    let tol = Tolerances::for_model_size(200.0).map_err(|e| {
+        (
+            0,
+            ConstructionError::Other {
+                step: "plan".into(),
+                message: e.to_string(),
+            },
+        )
+    })?;
+    let title = match kind {
+        PlanKind::Velocity => "velocity plan",
+        PlanKind::Acceleration => "acceleration plan",
+    };
+    let n = prog.names.len();
+    let mut bl = Builder {
+        prog,
+        b,
+        kind,
+        rec: Recorder::new(title, scale, tol, drafting),
+        mu_l,
+        img: vec![None; n],
+        links: Links {
+            pts: vec![Vec::new(); prog.link_count],
+            rate: vec![None; prog.link_count],
+        },
+        readings: Vec::new(),
+        coincident: Vec::new(),
+        cond: vec![None; n],
+        w1,
+        known: Known {
+            vel: vel.filter(|_| kind == PlanKind::Acceleration),
+            mu_v: vel.map_or(1.0, |v| v.figure.scale.value()),
+        },
+    };
+    let pole = bl.rec.point(
+        "pole",
+        DVec2::ZERO,
+        Role::Given,
+        if kind == PlanKind::Velocity {
+            "p"
+        } else {
+            "π"
+        },
+        DVec2::new(-0.7, -0.7),
+        &[],
+    );
+    for k in 0..prog.fixed.len() {
+        bl.img[k] = Some(DVec2::ZERO);
+    }
+    bl.links.rate[0] = Some(0.0);
+    // The class-I mechanism.
+    let cl = prog.crank_link as usize;
+    let r = bl.r(prog.centre, prog.pin);
+    let v_pin = match kind {
+        PlanKind::Velocity => r.perp() * w1,
+        PlanKind::Acceleration => -r * (w1 * w1),
+    };
+    let pin_img = v_pin / bl.mu();
+    bl.set_image(prog.pin, pin_img, &[pole]);
+    bl.links.rate[cl] = Some(if kind == PlanKind::Velocity { w1 } else { 0.0 });
+    bl.links.add(cl, b.p[prog.centre], DVec2::ZERO);
+    bl.links.add(cl, b.p[prog.pin], pin_img);
+    for op in &prog.ops {
+        match *op {
+            Op::Point { idx, link, .. } => {
+                let at = b.p[idx];
+                let name = prog.names[idx].clone();
+                let x = bl.image_on(link as usize, at, &name);
+                bl.set_image(idx, x, &[]);
+                bl.links.add(link as usize, at, x);
+            }
+            Op::Dyad { group, links, dyad } => bl.dyad(links, &dyad).map_err(|e| (group, e))?,
+        }
+    }
+    // Readings: every moving point, every link rate.
+    for k in prog.fixed.len()..n {
+        let x = bl.image(k);
+        let v = bl.read(DVec2::ZERO, x);
+        let q = match kind {
+            PlanKind::Velocity => format!("v_{}", plain(&prog.names[k])),
+            PlanKind::Acceleration => format!("a_{}", plain(&prog.names[k])),
+        };
+        let cond = bl.cond[k];
+        bl.reading(q, Measure::Point(k), v, cond);
+    }
+    for l in 1..prog.link_count {
+        if let Some(w) = bl.links.rate[l] {
+            let q = match kind {
+                PlanKind::Velocity => format!("omega_{l}"),
+                PlanKind::Acceleration => format!("eps_{l}"),
+            };
+            bl.reading(q, Measure::Rate(l), w, None);
+        }
+    }
+    let rate = bl.links.rate.iter().map(|r| r.unwrap_or(0.0)).collect();
+    let images = bl.img.iter().map(|i| i.unwrap_or(DVec2::ZERO)).collect();
+    Ok(KinPlan {
+        kind,
+        figure: bl.rec.finish(),
+        images,
+        coincident: bl.coincident,
+        rate,
+        readings: bl.readings,
+    })
+}

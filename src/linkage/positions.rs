@@ -1,0 +1,266 @@
+//! The plan of positions (план положений): N crank positions plus the extreme positions,
+//! each constructed with compass and straightedge, drawn into one figure (`positions_draw`)
+//! with the trajectories of the link points, the extreme positions, θ and the stroke H.
+
+use super::analytic::Pose;
+use super::construction::Built;
+use super::extremes::Extremes;
+use super::model::{Mechanism, Sense};
+use super::positions_draw::draw_plan;
+use super::program::{Op, Program};
+use super::LinkageError;
+use crate::construct::{Drafting, Figure, Recorder};
+use crate::geom::Tolerances;
+use crate::scale::Scale;
+use std::f64::consts::TAU;
+
+/// What positions to construct.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlanRequest {
+    /// Number of equally spaced crank positions.
+    pub count: u32,
+    /// Crank angle of position 1 (radians); `None`: the start of the working stroke.
+    pub start: Option<f64>,
+    /// Add the extreme positions that fall between the numbered ones (labelled `k′`).
+    pub other_extreme: bool,
+    /// Choose each assembly by continuity with the previous position instead of by the
+    /// scene's side.
+    pub continuity: bool,
+}
+
+/// One position of the plan.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanPosition {
+    /// Its label (`1`…`12`, `8′`).
+    pub label: String,
+    /// Crank angle, radians.
+    pub phi: f64,
+    /// An extreme position.
+    pub extreme: bool,
+    /// As constructed (drawing mm).
+    pub built: Built,
+    /// The analytic twin (m, with velocity analogues).
+    pub pose: Pose,
+}
+
+/// The plan of positions.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PositionPlan {
+    /// The compiled mechanism.
+    pub program: Program,
+    /// Extremes, when the outputs have them.
+    pub extremes: Option<Extremes>,
+    /// Positions in the order of crank rotation from position 1.
+    pub positions: Vec<PlanPosition>,
+    /// The recorded figure at μ_l.
+    pub figure: Figure,
+}
+
+/// Crank angle of the numbered position `k` (0-based).
+fn phi_of(start: f64, sense: Sense, k: usize, count: u32) -> f64 {
+    (start + sense.sign() * TAU * k as f64 / count as f64).rem_euclid(TAU)
+}
+
+/// The sequence (label, φ, extreme?) in crank order.
+fn sequence(
+    req: &PlanRequest,
+    start: f64,
+    sense: Sense,
+    ex: Option<&Extremes>,
+) -> Vec<(String, f64, bool)> {
+    let step = TAU / req.count as f64;
+    let mut seq: Vec<(String, f64, bool, f64)> = (0..req.count as usize)
+        .map(|k| {
+            (
+                (k + 1).to_string(),
+                phi_of(start, sense, k, req.count),
+                false,
+                step * k as f64,
+            )
+        })
+        .collect();
+    if let (true, Some(ex)) = (req.other_extreme, ex) {
+        for phi in [ex.phi_start, ex.phi_other] {
+            let travel = (sense.sign() * (phi - start)).rem_euclid(TAU);
+            let k = (travel / step).floor() as usize;
+            let off = travel - step * k as f64;
+            // An extreme that falls on a numbered position is that position.
+            if off.min(step - off) <= 1e-9 {
+                let at = if off <= 1e-9 {
+                    k
+                } else {
+                    (k + 1) % req.count as usize
+                };
+                seq[at].2 = true;
+                continue;
+            }
+            seq.push((format!("{}′", k + 1), phi, true, travel));
+        }
+    }
+    seq.sort_by(|a, b| a.3.total_cmp(&b.3));
+    seq.into_iter().map(|(l, p, e, _)| (l, p, e)).collect()
+}
+
+/// One position of the plan, solved analytically only (no construction).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PosePosition {
+    /// Its label (`1`…`12`, `8′`).
+    pub label: String,
+    /// Crank angle, radians.
+    pub phi: f64,
+    /// An extreme position.
+    pub extreme: bool,
+    /// The analytic twin (m, with velocity analogues).
+    pub pose: Pose,
+}
+
+/// The positions a plan of positions will construct, solved analytically: what a sheet
+/// needs to choose its scales before anything is drawn.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanPoses {
+    /// The compiled mechanism.
+    pub program: Program,
+    /// Extremes, when the outputs have them.
+    pub extremes: Option<Extremes>,
+    /// Positions in the order of crank rotation from position 1.
+    pub positions: Vec<PosePosition>,
+}
+
+/// The positions of the plan of `m` asked for by `req`, solved analytically.
+pub fn plan_poses(m: &Mechanism, req: &PlanRequest) -> Result<PlanPoses, LinkageError> {
+    let program = Program::compile(m)?;
+    let (extremes, start) = start_of(&program, m, req)?;
+    let mut positions: Vec<PosePosition> = Vec::new();
+    for (label, phi, extreme) in sequence(req, start, m.crank.sense, extremes.as_ref()) {
+        let prev = positions.last().filter(|_| req.continuity);
+        let pose = program
+            .solve(phi, prev.map(|p| &p.pose))
+            .map_err(|u| cannot_assemble(m, &label, phi, u.group, u.detail))?;
+        positions.push(PosePosition {
+            label,
+            phi,
+            extreme,
+            pose,
+        });
+    }
+    Ok(PlanPoses {
+        program,
+        extremes,
+        positions,
+    })
+}
+
+/// The extremes and the crank angle of position 1. With a given start angle the extremes
+/// are optional: a mechanism whose output turns fully has none, and one that cannot make a
+/// full turn fails at a named position later.
+fn start_of(
+    program: &Program,
+    m: &Mechanism,
+    req: &PlanRequest,
+) -> Result<(Option<Extremes>, f64), LinkageError> {
+    let found = program.extremes(&m.outputs, m.crank.sense);
+    match req.start {
+        Some(s) => Ok((found.ok(), s)),
+        None => {
+            let ex = found?;
+            let s = ex.phi_start;
+            Ok((Some(ex), s))
+        }
+    }
+}
+
+fn cannot_assemble(
+    m: &Mechanism,
+    label: &str,
+    phi: f64,
+    group: usize,
+    detail: String,
+) -> LinkageError {
+    LinkageError::CannotAssemble {
+        position: label.to_string(),
+        phi_deg: phi.to_degrees(),
+        group: group_name(m, group),
+        detail,
+    }
+}
+
+/// Build the plan of positions of `m` at μ_l = `scale`.
+pub fn plan_positions(
+    m: &Mechanism,
+    req: &PlanRequest,
+    scale: Scale,
+    drafting: Drafting,
+) -> Result<PositionPlan, LinkageError> {
+    let program = Program::compile(m)?;
+    let (extremes, start) = start_of(&program, m, req)?;
+    let extent_mm = model_extent(&program) / scale.value();
+    let tol = Tolerances::for_model_size(extent_mm.max(1.0))
+        .map_err(|e| LinkageError::Model(e.to_string()))?;
+    let mut rec = Recorder::new("plan", scale, tol, drafting);
+    let mut positions: Vec<PlanPosition> = Vec::new();
+    for (k, (label, phi, extreme)) in sequence(req, start, m.crank.sense, extremes.as_ref())
+        .into_iter()
+        .enumerate()
+    {
+        rec.set_group(k as u32 + 1);
+        let prev = positions.last().filter(|_| req.continuity);
+        let built = program
+            .construct(
+                &mut rec,
+                phi,
+                prev.map(|p| &p.built),
+                &format!("position {label}"),
+            )
+            .map_err(|f| cannot_assemble(m, &label, phi, f.group, f.error.to_string()))?;
+        let pose = program
+            .solve(phi, prev.map(|p| &p.pose))
+            .map_err(|u| cannot_assemble(m, &label, phi, u.group, u.detail))?;
+        positions.push(PlanPosition {
+            label,
+            phi,
+            extreme,
+            built,
+            pose,
+        });
+    }
+    rec.set_group(0);
+    draw_plan(&mut rec, &program, &positions, extremes.as_ref());
+    Ok(PositionPlan {
+        program,
+        extremes,
+        positions,
+        figure: rec.finish(),
+    })
+}
+
+/// `2 (RRR, links 2, 3)`.
+pub fn group_name(m: &Mechanism, g: usize) -> String {
+    m.groups.get(g).map_or_else(
+        || format!("{}", g + 1),
+        |gr| {
+            format!(
+                "{} ({}, links {}, {})",
+                g + 1,
+                gr.dyad.kind().letters(),
+                gr.links[0],
+                gr.links[1]
+            )
+        },
+    )
+}
+
+/// Largest distance between fixed points and the crank reach, m (sets the tolerances).
+fn model_extent(p: &Program) -> f64 {
+    let mut e = p.crank_length;
+    for a in &p.fixed {
+        for b in &p.fixed {
+            e = e.max(a.distance(*b));
+        }
+    }
+    for op in &p.ops {
+        if let Op::Point { along, across, .. } = op {
+            e = e.max(along.hypot(*across));
+        }
+    }
+    e
+}
