@@ -7,11 +7,11 @@
 use std::f64::consts::TAU;
 use std::path::Path;
 use tmm::calculus::{
-    derivative_scale, differentiate_chords, integral_scale, integrate_chords, pole_for, Diagram,
-    Layout, Sampling, Scales,
+    derivative_scale, integral_scale, integrate_chords, pole_for, Diagram, Layout, Method,
+    Sampling, Scales,
 };
-use tmm::construct::{Drafting, Figure, Recorder};
-use tmm::geom::{DVec2, Tolerances};
+use tmm::construct::{Context, Drafting, Figure, Recorder};
+use tmm::geom::DVec2;
 use tmm::plate::{
     to_png, to_svg, write_atomic, Plate, Sheet, SheetSize, TextBlock, TitleBlock, View,
 };
@@ -20,11 +20,10 @@ use tmm::scale::{format_number, Lang, Quantity, Scale};
 type Res<T> = Result<T, Box<dyn std::error::Error>>;
 
 fn recorder(title: &str, s: Scale) -> Res<Recorder> {
-    Ok(Recorder::new(
+    Ok(Recorder::in_context(
         title,
         s,
-        Tolerances::for_model_size(400.0)?,
-        Drafting::EXACT,
+        &Context::for_model_size(400.0, Drafting::EXACT)?,
     ))
 }
 
@@ -51,7 +50,7 @@ fn main() -> Res<()> {
     let mu_v = derivative_scale(mu_s, mu_phi, h1, Quantity::Length)?;
     let mut rec1 = recorder("dS/dφ", mu_v)?;
     let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, -44.0)).pole_named("P_1", "H_1");
-    let d1 = differentiate_chords(&mut rec1, &s, sc, h1, &lay1)?;
+    let d1 = Method::Chords.differentiate(&mut rec1, &s, sc, h1, &lay1)?;
     let v = d1.diagram()?;
     let sc2 = Scales { x: mu_phi, y: mu_v };
     let h2 = pole_for(&v, sc2, 20.0)?;
@@ -61,7 +60,7 @@ fn main() -> Res<()> {
         .named("φ", "dS/dφ", "d^2S/dφ^2")
         .pole_named("P_2", "H_2")
         .with_source(false);
-    let d2 = differentiate_chords(&mut rec2, &v, sc2, h2, &lay2)?;
+    let d2 = Method::Chords.differentiate(&mut rec2, &v, sc2, h2, &lay2)?;
 
     // Right column: dS/dφ (mid-interval values) integrated back to S.
     let x_r = 200.0;

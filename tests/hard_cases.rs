@@ -1,8 +1,8 @@
 //! Named hard cases of the plan of positions: a mechanism that cannot be assembled at some
 //! crank angle, a change-point four-bar through its folded positions, dead centres.
 
-use tmm::construct::{Drafting, Recorder};
-use tmm::geom::{DVec2, Tolerances};
+use tmm::construct::{Context, Drafting, Recorder};
+use tmm::geom::DVec2;
 use tmm::linkage::*;
 
 mod common;
@@ -185,11 +185,10 @@ fn kulisa_at(deg: f64) -> ([f64; 3], [f64; 3], DVec2, DVec2) {
         (pose.ddp[d] * W1 * W1).length(),
     ];
     let mu_l = 0.0025;
-    let mut rec = Recorder::new(
+    let mut rec = Recorder::in_context(
         "t",
         Scale::new(mu_l, Quantity::Length).unwrap(),
-        Tolerances::for_model_size(400.0).unwrap(),
-        Drafting::EXACT,
+        &Context::for_model_size(400.0, Drafting::EXACT).unwrap(),
     );
     let built = prog.construct(&mut rec, phi, None, "t").unwrap();
     let setup = PlanSetup {
@@ -197,7 +196,7 @@ fn kulisa_at(deg: f64) -> ([f64; 3], [f64; 3], DVec2, DVec2) {
         built: &built,
         mu_l,
         w1: W1,
-        drafting: Drafting::EXACT,
+        ctx: Context::for_model_size(200.0, Drafting::EXACT).expect("tolerances"),
     };
     let sv = Scale::new(0.05, Quantity::Velocity).unwrap();
     let sa = Scale::new(0.5, Quantity::Acceleration).unwrap();

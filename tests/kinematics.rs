@@ -3,8 +3,8 @@
 
 use std::path::PathBuf;
 use std::process::Command;
-use tmm::construct::{ConstructionError, Drafting, Recorder};
-use tmm::geom::{DVec2, Tolerances};
+use tmm::construct::{ConstructionError, Context, Drafting, Recorder};
+use tmm::geom::DVec2;
 use tmm::linkage::*;
 
 mod common;
@@ -257,11 +257,10 @@ fn plans_at(
     phi: f64,
 ) -> (Program, Built, Result<KinPlan, (usize, ConstructionError)>) {
     let prog = Program::compile(m).unwrap();
-    let mut rec = Recorder::new(
+    let mut rec = Recorder::in_context(
         "t",
         Scale::new(0.001, Quantity::Length).unwrap(),
-        Tolerances::for_model_size(1000.0).unwrap(),
-        Drafting::EXACT,
+        &Context::for_model_size(1000.0, Drafting::EXACT).unwrap(),
     );
     let built = prog.construct(&mut rec, phi, None, "t").unwrap();
     let w1 = m.crank.sense.sign() * m.crank.omega;
@@ -270,7 +269,7 @@ fn plans_at(
         built: &built,
         mu_l: 0.001,
         w1,
-        drafting: Drafting::EXACT,
+        ctx: Context::for_model_size(200.0, Drafting::EXACT).expect("tolerances"),
     };
     let vp = kin_plan(
         &setup,
@@ -361,11 +360,10 @@ fn coriolis_vanishes_with_the_relative_sliding_velocity() {
     };
     for (phi, vanishes) in [(90f64, true), (120f64, false)] {
         let prog = Program::compile(&m).unwrap();
-        let mut rec = Recorder::new(
+        let mut rec = Recorder::in_context(
             "t",
             Scale::new(0.0025, Quantity::Length).unwrap(),
-            Tolerances::for_model_size(400.0).unwrap(),
-            Drafting::EXACT,
+            &Context::for_model_size(400.0, Drafting::EXACT).unwrap(),
         );
         let built = prog
             .construct(&mut rec, phi.to_radians(), None, "t")
@@ -375,7 +373,7 @@ fn coriolis_vanishes_with_the_relative_sliding_velocity() {
             built: &built,
             mu_l: 0.0025,
             w1: -15.7,
-            drafting: Drafting::EXACT,
+            ctx: Context::for_model_size(200.0, Drafting::EXACT).expect("tolerances"),
         };
         let vp = kin_plan(
             &setup,

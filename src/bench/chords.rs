@@ -3,8 +3,7 @@
 
 use super::{best_time, BenchError, Reps, Subject, CHORD_RESOLUTIONS, DIAGRAM_EXTENT_MM};
 use crate::calculus::{
-    derivative_scale, differentiate_chords, pole_for, CalculusError, Derivative, Diagram, Layout,
-    Scales,
+    derivative_scale, pole_for, CalculusError, Derivative, Diagram, Layout, Method, Scales,
 };
 use crate::construct::{Context, Drafting, Recorder};
 use crate::geom::{wrap_pi, DVec2};
@@ -57,7 +56,7 @@ fn chords_once(
     let mu = derivative_scale(scales.y, scales.x, pole, q)?;
     let mut rec = Recorder::in_context("bench", mu, ctx);
     let layout = Layout::new(DVec2::new(0.0, 150.0), DVec2::ZERO);
-    differentiate_chords(&mut rec, src, scales, pole, &layout)
+    Method::Chords.differentiate(&mut rec, src, scales, pole, &layout)
 }
 
 /// Both differentiations of one diagram.

@@ -84,7 +84,7 @@ pub(super) fn construction_rate(s: &Subject, reps: Reps) -> Result<f64, BenchErr
                 built: &built,
                 mu_l,
                 w1: s.w1,
-                drafting: ctx.drafting,
+                ctx,
             };
             let plan_err = |(g, e)| s.fail(format!("plan, group {}: {e}", g + 1));
             let vp = kin_plan(&setup, PlanKind::Velocity, mu_v, None).map_err(plan_err)?;

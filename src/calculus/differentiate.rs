@@ -16,10 +16,10 @@ pub enum Method {
 impl Method {
     /// Differentiate `src` (drawn at `scales`) by this construction, the pole H = `pole_mm`
     /// left of `layout.origin`, recording on `rec`, whose scale must be μ_y/(H·μ_x) (see
-    /// [`derivative_scale`]): [`differentiate_chords`] or [`differentiate_tangents`].
+    /// [`derivative_scale`]): [`Method::Chords`] or [`Method::Tangents`].
     ///
     /// # Errors
-    /// As [`differentiate_chords`].
+    /// As for the method of chords.
     pub fn differentiate(
         self,
         rec: &mut Recorder,
@@ -306,17 +306,6 @@ fn ray_and_project(
 /// # Errors
 /// An invalid diagram, H ≤ 0, a recorder at another scale, a vertical chord, or values
 /// too large to draw.
-pub fn differentiate_chords(
-    rec: &mut Recorder,
-    src: &Diagram,
-    scales: Scales,
-    pole_mm: f64,
-    layout: &Layout,
-) -> Result<Derivative, CalculusError> {
-    Method::Chords.differentiate(rec, src, scales, pole_mm, layout)
-}
-
-/// The chord construction after [`Start`]: see [`differentiate_chords`].
 fn chords(
     rec: &mut Recorder,
     st: &Start,
@@ -424,18 +413,7 @@ fn finish(d: Derivative) -> Result<Derivative, CalculusError> {
 /// `rec` must be μ_y/(H·μ_x).
 ///
 /// # Errors
-/// As [`differentiate_chords`].
-pub fn differentiate_tangents(
-    rec: &mut Recorder,
-    src: &Diagram,
-    scales: Scales,
-    pole_mm: f64,
-    layout: &Layout,
-) -> Result<Derivative, CalculusError> {
-    Method::Tangents.differentiate(rec, src, scales, pole_mm, layout)
-}
-
-/// The tangent construction after [`Start`]: see [`differentiate_tangents`].
+/// As for the method of chords.
 fn tangents(
     rec: &mut Recorder,
     st: &Start,

@@ -8,10 +8,10 @@
 //! being constructed; the numbers come out of the drawing through `Recorder::measure`, so the
 //! drafting model applies to them.
 //!
-//! * [`differentiate_chords`] — the method of chords (Fig. 9): the pole P at distance H left of
+//! * [`Method::Chords`] — the method of chords (Fig. 9): the pole P at distance H left of
 //!   the new origin, rays from P parallel to the chords, the step graph, the smooth curve
 //!   through the mid-interval points. New scale **μ_y′ = μ_y / (H·μ_x)**.
-//! * [`differentiate_tangents`] — the method of tangents (Fig. 8), with the draughtsman's
+//! * [`Method::Tangents`] — the method of tangents (Fig. 8), with the draughtsman's
 //!   tangent (parallel to the chord through the two neighbouring nodes).
 //! * [`integrate_chords`] — graphical integration (§15.3): rays from the pole to the
 //!   mid-interval ordinates, chords parallel to them. New scale **μ_y = μ_y′·H·μ_x**.
@@ -38,8 +38,7 @@ mod read;
 mod tests;
 
 pub use differentiate::{
-    chord_mid_bound, chord_node_bound, derivative_scale, differentiate_chords,
-    differentiate_tangents, pole_for, Derivative, Method,
+    chord_mid_bound, chord_node_bound, derivative_scale, pole_for, Derivative, Method,
 };
 pub use integrate::{integral_scale, integrate_chords, midpoint_rule_bound, Integral, Sampling};
 

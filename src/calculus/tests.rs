@@ -1,8 +1,8 @@
 //! Analytic oracles for the graphical calculus.
 
 use super::*;
-use crate::construct::{Drafting, Recorder, Step};
-use crate::geom::{Line, Tolerances};
+use crate::construct::{Context, Drafting, Recorder, Step};
+use crate::geom::Line;
 use crate::scale::Quantity;
 use std::f64::consts::TAU;
 
@@ -19,11 +19,11 @@ fn sin_scales() -> Scales {
 }
 
 fn recorder(mu: f64, drafting: f64) -> Recorder {
-    Recorder::new(
+    Recorder::in_context(
         "test",
         scale(mu, Quantity::Length),
-        Tolerances::for_model_size(400.0).expect("tolerances"),
-        Drafting::new(drafting).expect("drafting"),
+        &Context::for_model_size(400.0, Drafting::new(drafting).expect("drafting"))
+            .expect("tolerances"),
     )
 }
 
@@ -35,7 +35,9 @@ fn layout() -> Layout {
 fn chords(src: &Diagram, sc: Scales, h: f64, drafting: f64) -> (Derivative, Recorder) {
     let mu = sc.y.value() / (h * sc.x.value());
     let mut rec = recorder(mu, drafting);
-    let d = differentiate_chords(&mut rec, src, sc, h, &layout()).expect("chords");
+    let d = Method::Chords
+        .differentiate(&mut rec, src, sc, h, &layout())
+        .expect("chords");
     (d, rec)
 }
 
@@ -115,7 +117,9 @@ fn tangent_method_is_the_central_difference() {
     let sc = sin_scales();
     let mu = sc.y.value() / (40.0 * sc.x.value());
     let mut rec = recorder(mu, 0.0);
-    let d = differentiate_tangents(&mut rec, &src, sc, 40.0, &layout()).expect("tangents");
+    let d = Method::Tangents
+        .differentiate(&mut rec, &src, sc, 40.0, &layout())
+        .expect("tangents");
     let h = src.dx;
     assert_eq!(d.node.len(), 24);
     assert!(d.mid.is_empty());
@@ -267,7 +271,8 @@ fn a_dwell_has_a_zero_derivative_exactly() {
 fn bad_input_is_an_error_not_a_panic() {
     let sc = sin_scales();
     let mut rec = recorder(sc.y.value() / (40.0 * sc.x.value()), 0.0);
-    let mut run = |src: Diagram, h: f64| differentiate_chords(&mut rec, &src, sc, h, &layout());
+    let mut run =
+        |src: Diagram, h: f64| Method::Chords.differentiate(&mut rec, &src, sc, h, &layout());
     let ok = sin_diagram(12);
     let nan = Diagram {
         y: vec![0.0, f64::NAN, 1.0],

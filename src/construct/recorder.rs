@@ -30,17 +30,6 @@ impl Recorder {
         }
     }
 
-    /// Start a figure at scale `scale` with tolerances in figure mm: the same as
-    /// [`Recorder::in_context`] with `Context::new(tol, drafting)`.
-    pub fn new(
-        title: impl Into<String>,
-        scale: Scale,
-        tol: Tolerances,
-        drafting: Drafting,
-    ) -> Self {
-        Self::in_context(title, scale, &Context::new(tol, drafting))
-    }
-
     /// The figure's scale.
     pub fn scale(&self) -> Scale {
         self.figure.scale
@@ -147,12 +136,13 @@ mod tests {
     }
 
     #[test]
-    fn new_is_in_context_with_default_notches() {
+    fn a_recorder_keeps_its_context() {
         let mu = Scale::new(0.0025, Quantity::Length).unwrap();
         let tol = Tolerances::for_model_size(300.0).unwrap();
-        let old = Recorder::new("t", mu, tol, Drafting::EXACT);
-        assert_eq!(old.context(), &Context::new(tol, Drafting::EXACT));
-        assert_eq!(old.context().notch_mm, Context::NOTCH_MM);
+        let ctx = Context::new(tol, Drafting::EXACT);
+        let r = Recorder::in_context("t", mu, &ctx);
+        assert_eq!(r.context(), &ctx);
+        assert_eq!(r.context().notch_mm, Context::NOTCH_MM);
     }
 
     #[test]

@@ -131,22 +131,19 @@ pub fn diagrams(
     // differentiation's chords are drawn on the dS/dφ curve itself (its figure's source axes
     // coincide with the first figure's result axes). Each diagram is placed from the
     // extent of its ordinates.
-    let differentiate = if spec.tangents {
-        calculus::differentiate_tangents
+    let (construction, method) = if spec.tangents {
+        (calculus::Method::Tangents, Method::DiagramTangents)
     } else {
-        calculus::differentiate_chords
-    };
-    let method = if spec.tangents {
-        Method::DiagramTangents
-    } else {
-        Method::DiagramChords
+        (calculus::Method::Chords, Method::DiagramChords)
     };
     let (s_lo, _) = extent(s.iter(), scales.y);
     let (d1_lo, d1_hi) = ordinates(&src, scales, h1, mu1, ctx).map_err(|e| fail("dS/dφ", e))?;
     let mut rec1 = Recorder::in_context("dS/dφ", mu1, ctx);
     let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
         .pole_named("P_1", "H_1");
-    let first = differentiate(&mut rec1, &src, scales, h1, &lay1).map_err(|e| fail("dS/dφ", e))?;
+    let first = construction
+        .differentiate(&mut rec1, &src, scales, h1, &lay1)
+        .map_err(|e| fail("dS/dφ", e))?;
     let d1 = first.diagram().map_err(|e| fail("dS/dφ", e))?;
     let scales2 = Scales {
         x: scales.x,
@@ -160,8 +157,9 @@ pub fn diagrams(
         .with_source(false)
         .named("φ", "dS/dφ", "d²S/dφ²")
         .pole_named("P_2", "H_2");
-    let second =
-        differentiate(&mut rec2, &d1, scales2, h2, &lay2).map_err(|e| fail("d²S/dφ²", e))?;
+    let second = construction
+        .differentiate(&mut rec2, &d1, scales2, h2, &lay2)
+        .map_err(|e| fail("d²S/dφ²", e))?;
     // Rows: S, v = |ω₁|·dS/dθ, a = ω₁²·d²S/dθ² at the numbered positions.
     let q = plain(&name);
     let p0 = numbered[0].1.pose.p[k];
@@ -222,6 +220,6 @@ pub(super) fn ordinates(
 ) -> Result<(f64, f64), calculus::CalculusError> {
     let mut r = Recorder::in_context("scratch", mu, &ctx.with_drafting(Drafting::EXACT));
     let lay = Layout::new(DVec2::ZERO, DVec2::ZERO).with_source(false);
-    let dv = calculus::differentiate_chords(&mut r, d, scales, h, &lay)?;
+    let dv = calculus::Method::Chords.differentiate(&mut r, d, scales, h, &lay)?;
     Ok(extent(dv.mid.iter().chain(&dv.node), mu))
 }

@@ -3,7 +3,7 @@
 
 use super::KinError;
 use crate::check::{Key, Method, Row, Symbol};
-use crate::construct::{ConstructionError, Drafting};
+use crate::construct::{ConstructionError, Context};
 use crate::geom::DVec2;
 use crate::linkage::{
     kin_plan, plain, KinPlan, Measure, PlanKind, PlanPoses, PlanSetup, Pose, PositionPlan,
@@ -42,13 +42,13 @@ impl Velocity {
     }
 }
 
-fn setup(
-    plan: &PositionPlan,
+fn setup<'a>(
+    plan: &'a PositionPlan,
     k: usize,
     mu_l: f64,
     w1: f64,
-    drafting: Drafting,
-) -> Result<PlanSetup<'_>, KinError> {
+    ctx: &Context,
+) -> Result<PlanSetup<'a>, KinError> {
     let pos = plan.positions.get(k).ok_or(KinError::NoIndex {
         index: k,
         count: plan.positions.len(),
@@ -58,7 +58,7 @@ fn setup(
         built: &pos.built,
         mu_l,
         w1,
-        drafting,
+        ctx: *ctx,
     })
 }
 
@@ -69,9 +69,9 @@ pub fn velocity(
     mu_l: f64,
     w1: f64,
     scale: Scale,
-    drafting: Drafting,
+    ctx: &Context,
 ) -> Result<Velocity, KinError> {
-    let s = setup(plan, k, mu_l, w1, drafting)?;
+    let s = setup(plan, k, mu_l, w1, ctx)?;
     let pos = &plan.positions[k];
     match kin_plan(&s, PlanKind::Velocity, scale, None) {
         Ok(vp) => {
@@ -99,9 +99,9 @@ pub fn acceleration(
     w1: f64,
     vp: &KinPlan,
     scale: Scale,
-    drafting: Drafting,
+    ctx: &Context,
 ) -> Result<(KinPlan, Vec<Row>), KinError> {
-    let s = setup(plan, k, mu_l, w1, drafting)?;
+    let s = setup(plan, k, mu_l, w1, ctx)?;
     let ap = kin_plan(&s, PlanKind::Acceleration, scale, Some(vp)).map_err(|(group, error)| {
         KinError::Plan {
             position: plan.positions[k].label.clone(),

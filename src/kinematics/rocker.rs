@@ -81,8 +81,9 @@ pub fn rocker_diagram(
     let lay = Layout::new(DVec2::ZERO, DVec2::new(0.0, w_lo - DIAGRAM_GAP - ROCKER_MM))
         .named("φ", &format!("ω_{{{link}}}"), &format!("dω_{{{link}}}/dφ"))
         .pole_named("P_{ω}", "H_{ω}");
-    let derivative =
-        calculus::differentiate_chords(&mut rec, &src, scales, h, &lay).map_err(fail)?;
+    let derivative = calculus::Method::Chords
+        .differentiate(&mut rec, &src, scales, h, &lay)
+        .map_err(fail)?;
     let eps_scale = super::peak(numbered.iter().map(|(_, p)| p.pose.ddangle[link] * w1 * w1));
     let rows = numbered
         .iter()

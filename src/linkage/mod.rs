@@ -26,7 +26,7 @@ pub use model::{
 pub use plans::{kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading};
 pub use positions::{
     group_name, plan_poses, plan_positions, PlanPoses, PlanPosition, PlanRequest, PosePosition,
-    PositionPlan,
+    Position, PositionPlan,
 };
 pub use positions_draw::{
     draw_links, fixed_pivots, frame_guides, guide_ends, FrameGuide, Part, GUIDE_MARGIN_MM,

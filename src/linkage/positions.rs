@@ -9,7 +9,7 @@ use super::model::{Mechanism, Sense};
 use super::positions_draw::draw_plan;
 use super::program::{Op, Program};
 use super::LinkageError;
-use crate::construct::{Drafting, Figure, Recorder};
+use crate::construct::{Context, Drafting, Figure, Recorder};
 use crate::geom::Tolerances;
 use crate::scale::Scale;
 use std::f64::consts::TAU;
@@ -28,9 +28,11 @@ pub struct PlanRequest {
     pub continuity: bool,
 }
 
-/// One position of the plan.
+/// One position of the plan: its label, crank angle and analytic twin, with what was
+/// constructed there — a [`Built`] position on the plan of positions ([`PlanPosition`]),
+/// nothing when the positions are only solved ([`PosePosition`]).
 #[derive(Debug, Clone, PartialEq)]
-pub struct PlanPosition {
+pub struct Position<B> {
     /// Its label (`1`…`12`, `8′`).
     pub label: String,
     /// Crank angle, radians.
@@ -38,10 +40,16 @@ pub struct PlanPosition {
     /// An extreme position.
     pub extreme: bool,
     /// As constructed (drawing mm).
-    pub built: Built,
+    pub built: B,
     /// The analytic twin (m, with velocity analogues).
     pub pose: Pose,
 }
+
+/// A constructed position of the plan of positions.
+pub type PlanPosition = Position<Built>;
+
+/// A position solved analytically only (no construction).
+pub type PosePosition = Position<()>;
 
 /// The plan of positions.
 #[derive(Debug, Clone, PartialEq)]
@@ -101,19 +109,6 @@ fn sequence(
     seq.into_iter().map(|(l, p, e, _)| (l, p, e)).collect()
 }
 
-/// One position of the plan, solved analytically only (no construction).
-#[derive(Debug, Clone, PartialEq)]
-pub struct PosePosition {
-    /// Its label (`1`…`12`, `8′`).
-    pub label: String,
-    /// Crank angle, radians.
-    pub phi: f64,
-    /// An extreme position.
-    pub extreme: bool,
-    /// The analytic twin (m, with velocity analogues).
-    pub pose: Pose,
-}
-
 /// The positions a plan of positions will construct, solved analytically: what a sheet
 /// needs to choose its scales before anything is drawn.
 #[derive(Debug, Clone, PartialEq)]
@@ -130,24 +125,41 @@ pub struct PlanPoses {
 pub fn plan_poses(m: &Mechanism, req: &PlanRequest) -> Result<PlanPoses, LinkageError> {
     let program = Program::compile(m)?;
     let (extremes, start) = start_of(&program, m, req)?;
-    let mut positions: Vec<PosePosition> = Vec::new();
-    for (label, phi, extreme) in sequence(req, start, m.crank.sense, extremes.as_ref()) {
-        let prev = positions.last().filter(|_| req.continuity);
-        let pose = program
-            .solve(phi, prev.map(|p| &p.pose))
-            .map_err(|u| cannot_assemble(m, &label, phi, u.group, u.detail))?;
-        positions.push(PosePosition {
-            label,
-            phi,
-            extreme,
-            pose,
-        });
-    }
+    let positions = walk(m, req, &program, start, extremes.as_ref(), |_, _, _| Ok(()))?;
     Ok(PlanPoses {
         program,
         extremes,
         positions,
     })
+}
+
+/// Walk the positions of the plan in crank order: at each, `build` (label, φ, the previous
+/// position when assembly goes by continuity) constructs what the plan draws, then the
+/// analytic twin is solved. A construction that fails is reported with its own diagnosis.
+fn walk<B>(
+    m: &Mechanism,
+    req: &PlanRequest,
+    program: &Program,
+    start: f64,
+    extremes: Option<&Extremes>,
+    mut build: impl FnMut(&str, f64, Option<&Position<B>>) -> Result<B, LinkageError>,
+) -> Result<Vec<Position<B>>, LinkageError> {
+    let mut positions: Vec<Position<B>> = Vec::new();
+    for (label, phi, extreme) in sequence(req, start, m.crank.sense, extremes) {
+        let prev = positions.last().filter(|_| req.continuity);
+        let built = build(&label, phi, prev)?;
+        let pose = program
+            .solve(phi, prev.map(|p| &p.pose))
+            .map_err(|u| cannot_assemble(m, &label, phi, u.group, u.detail))?;
+        positions.push(Position {
+            label,
+            phi,
+            extreme,
+            built,
+            pose,
+        });
+    }
+    Ok(positions)
 }
 
 /// The extremes and the crank angle of position 1. With a given start angle the extremes
@@ -196,33 +208,27 @@ pub fn plan_positions(
     let extent_mm = model_extent(&program) / scale.value();
     let tol = Tolerances::for_model_size(extent_mm.max(1.0))
         .map_err(|e| LinkageError::Model(e.to_string()))?;
-    let mut rec = Recorder::new("plan", scale, tol, drafting);
-    let mut positions: Vec<PlanPosition> = Vec::new();
-    for (k, (label, phi, extreme)) in sequence(req, start, m.crank.sense, extremes.as_ref())
-        .into_iter()
-        .enumerate()
-    {
-        rec.set_group(k as u32 + 1);
-        let prev = positions.last().filter(|_| req.continuity);
-        let built = program
-            .construct(
-                &mut rec,
-                phi,
-                prev.map(|p| &p.built),
-                &format!("position {label}"),
-            )
-            .map_err(|f| cannot_assemble(m, &label, phi, f.group, f.error.to_string()))?;
-        let pose = program
-            .solve(phi, prev.map(|p| &p.pose))
-            .map_err(|u| cannot_assemble(m, &label, phi, u.group, u.detail))?;
-        positions.push(PlanPosition {
-            label,
-            phi,
-            extreme,
-            built,
-            pose,
-        });
-    }
+    let mut rec = Recorder::in_context("plan", scale, &Context::new(tol, drafting));
+    let mut k = 0;
+    let positions = walk(
+        m,
+        req,
+        &program,
+        start,
+        extremes.as_ref(),
+        |label, phi, prev| {
+            k += 1;
+            rec.set_group(k);
+            program
+                .construct(
+                    &mut rec,
+                    phi,
+                    prev.map(|p| &p.built),
+                    &format!("position {label}"),
+                )
+                .map_err(|f| cannot_assemble(m, label, phi, f.group, f.error.to_string()))
+        },
+    )?;
     rec.set_group(0);
     draw_plan(&mut rec, &program, &positions, extremes.as_ref());
     Ok(PositionPlan {

@@ -5,8 +5,8 @@ use super::construction::Built;
 use super::positions_draw::{draw_guides, draw_links, draw_pivots, frame_guides, Part};
 use super::program::Program;
 use super::structure::Structure;
-use crate::construct::{Drafting, Figure, Item, Recorder, Role};
-use crate::geom::{DVec2, Segment, Tolerances};
+use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::geom::{DVec2, Segment};
 use crate::scale::Scale;
 
 /// Gap between the parts of the decomposition, mm.
@@ -40,10 +40,10 @@ pub fn structure_figure(
     first: &Built,
     plan_mu: f64,
     scale: Scale,
-    tol: Tolerances,
+    ctx: &Context,
 ) -> Figure {
     let factor = plan_mu / scale.value();
-    let mut rec = Recorder::new("scheme", scale, tol, Drafting::EXACT);
+    let mut rec = Recorder::in_context("scheme", scale, ctx);
     let whole = shifted(first, factor, DVec2::ZERO);
     let anchors = draw_links(&mut rec, prog, &whole, Role::Given, "scheme", Part::All);
     let guides = frame_guides(prog, &[&whole], GUIDE_MM);
@@ -76,7 +76,7 @@ pub fn structure_figure(
     );
     for (part, caption) in parts {
         // Draw once to measure the part, then again in its place, top-aligned with the whole.
-        let mut probe = Recorder::new("part", scale, tol, Drafting::EXACT);
+        let mut probe = Recorder::in_context("part", scale, ctx);
         draw_links(&mut probe, prog, &whole, Role::Given, "part", part);
         let (lo, hi) = bounds_from(&probe, 0);
         let shift = DVec2::new(x - lo.x, hi0.y - hi.y);
@@ -121,10 +121,10 @@ fn number_links(rec: &mut Recorder, anchors: &[(u32, DVec2)]) {
 impl super::positions::PositionPlan {
     /// The structural scheme of the plan's mechanism drawn from its position 1 at `scale`
     /// (see [`structure_figure`]).
-    pub fn scheme(&self, st: &Structure, scale: Scale, tol: Tolerances) -> Figure {
+    pub fn scheme(&self, st: &Structure, scale: Scale, ctx: &Context) -> Figure {
         let plan_mu = self.figure.scale.value();
         match self.positions.first() {
-            Some(first) => structure_figure(&self.program, st, &first.built, plan_mu, scale, tol),
+            Some(first) => structure_figure(&self.program, st, &first.built, plan_mu, scale, ctx),
             None => Figure {
                 title: String::new(),
                 scale,

@@ -1,8 +1,8 @@
 //! Unit tests of the linkage core on hand-built mechanisms.
 
 use super::*;
-use crate::construct::{Drafting, Recorder};
-use crate::geom::{DVec2, Tolerances};
+use crate::construct::{Context, Drafting, Recorder};
+use crate::geom::DVec2;
 use crate::scale::{Quantity, Scale};
 
 /// The shaper of seed 000 (§000.3 geometry), built directly.
@@ -124,11 +124,10 @@ fn construction_equals_analytic_on_the_shaper() {
     let m = shaper();
     let prog = Program::compile(&m).unwrap();
     let mu = 0.0025;
-    let mut rec = Recorder::new(
+    let mut rec = Recorder::in_context(
         "t",
         Scale::new(mu, Quantity::Length).unwrap(),
-        Tolerances::for_model_size(400.0).unwrap(),
-        Drafting::EXACT,
+        &Context::for_model_size(400.0, Drafting::EXACT).unwrap(),
     );
     let mut prev_b = None;
     let mut prev_a = None;
@@ -249,11 +248,10 @@ fn plans_equal_analytic_for_every_kind() {
             if pose.toggle.is_some() {
                 continue;
             }
-            let mut rec = Recorder::new(
+            let mut rec = Recorder::in_context(
                 "t",
                 Scale::new(mu_l, Quantity::Length).unwrap(),
-                Tolerances::for_model_size(1000.0).unwrap(),
-                Drafting::EXACT,
+                &Context::for_model_size(1000.0, Drafting::EXACT).unwrap(),
             );
             let built = prog.construct(&mut rec, phi, None, "t").unwrap();
             let sv = Scale::new(0.01, Quantity::Velocity).unwrap();
@@ -263,7 +261,7 @@ fn plans_equal_analytic_for_every_kind() {
                 built: &built,
                 mu_l,
                 w1,
-                drafting: Drafting::EXACT,
+                ctx: crate::linkage::proptests::plan_context(),
             };
             let vp = kin_plan(&setup, PlanKind::Velocity, sv, None)
                 .unwrap_or_else(|e| panic!("mech {mi} φ {phi}: {e:?}"));

@@ -4,7 +4,8 @@
 use super::captions::Text;
 use super::fit::{self, fit_scale, Fit};
 use super::BuildError;
-use crate::geom::{DVec2, Tolerances};
+use crate::construct::{Context, Drafting};
+use crate::geom::DVec2;
 use crate::linkage::{DyadKind, OutputCoord, PositionPlan, Structure};
 use crate::plate::{Plate, Rect, Sheet, SheetSize, TextBlock, View};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
@@ -87,9 +88,9 @@ fn scheme_view(
     extent: f64,
     lang: Lang,
 ) -> Result<View, BuildError> {
-    let tol =
-        Tolerances::for_model_size(SCHEME_MM).map_err(|e| BuildError::Tolerances(e.to_string()))?;
-    let scheme = |s: Scale| plan.scheme(st, s, tol);
+    let ctx = Context::for_model_size(SCHEME_MM, Drafting::EXACT)
+        .map_err(|e| BuildError::Tolerances(e.to_string()))?;
+    let scheme = |s: Scale| plan.scheme(st, s, &ctx);
     let region = rect(SCHEME_REGION);
     let start =
         Scale::round_for(extent, SCHEME_MM, Quantity::Length).ok_or(BuildError::NoScale(extent))?;

@@ -300,7 +300,7 @@ impl<'s> Session<'s> {
     pub fn velocity(&self, l: Scale, v: Scale, k: usize) -> Cached<Velocity> {
         self.velocity.get((l, v, k), || {
             let plan = self.positions(l)?;
-            let vel = plans::velocity(&plan, k, l.value(), self.w1()?, v, self.drafting)?;
+            let vel = plans::velocity(&plan, k, l.value(), self.w1()?, v, &self.ctx()?)?;
             self.logged("velocity plan", &plan.positions[k].label, v);
             Ok(Arc::new(vel))
         })
@@ -328,7 +328,7 @@ impl<'s> Session<'s> {
                 }
             };
             let w1 = self.w1()?;
-            let ap = plans::acceleration(&plan, k, sc.l.value(), w1, vp, sc.a, self.drafting)?;
+            let ap = plans::acceleration(&plan, k, sc.l.value(), w1, vp, sc.a, &self.ctx()?)?;
             self.logged("acceleration plan", &plan.positions[k].label, sc.a);
             Ok(Arc::new(ap))
         })

@@ -18,8 +18,8 @@ mod names;
 
 use super::construction::Built;
 use super::program::{Op, Program};
-use crate::construct::{ConstructionError, Drafting, Figure, Recorder, Role};
-use crate::geom::{DVec2, Tolerances};
+use crate::construct::{ConstructionError, Context, Figure, Recorder, Role};
+use crate::geom::DVec2;
 use crate::scale::Scale;
 use builder::{Builder, Known, Links};
 pub use names::plain;
@@ -99,8 +99,9 @@ pub struct PlanSetup<'a> {
     pub mu_l: f64,
     /// Crank speed ω₁, rad/s, signed counter-clockwise.
     pub w1: f64,
-    /// The drafting model for readings.
-    pub drafting: Drafting,
+    /// The construction context: the plan's tolerances and the drafting model of its
+    /// readings.
+    pub ctx: Context,
 }
 
 /// Build a plan of `kind` at plan scale `scale`. The acceleration plan needs the velocity
@@ -116,17 +117,8 @@ pub fn kin_plan(
         built: b,
         mu_l,
         w1,
-        drafting,
+        ctx,
     } = *setup;
-    let tol = Tolerances::for_model_size(200.0).map_err(|e| {
-        (
-            0,
-            ConstructionError::Other {
-                step: "plan".into(),
-                message: e.to_string(),
-            },
-        )
-    })?;
     let title = match kind {
         PlanKind::Velocity => "velocity plan",
         PlanKind::Acceleration => "acceleration plan",
@@ -136,7 +128,7 @@ pub fn kin_plan(
         prog,
         b,
         kind,
-        rec: Recorder::new(title, scale, tol, drafting),
+        rec: Recorder::in_context(title, scale, &ctx),
         mu_l,
         img: vec![None; n],
         links: Links {

@@ -7,8 +7,8 @@
 //! which need not stay on the public surface.
 
 use super::*;
-use crate::construct::{ConstructionError, Drafting, Recorder};
-use crate::geom::{DVec2, Tolerances};
+use crate::construct::{ConstructionError, Context, Drafting, Recorder};
+use crate::geom::DVec2;
 use crate::scale::{Quantity, Scale};
 use proptest::prelude::*;
 use std::f64::consts::PI;
@@ -23,13 +23,18 @@ const MU: f64 = 0.001;
 /// Construct one position; `None` when it cannot be assembled (outside the property's domain).
 fn build(m: &Mechanism, phi: f64) -> Option<(Program, Built, Pose)> {
     let prog = Program::compile(m).ok()?;
-    let mut rec = Recorder::new(
+    let mut rec = Recorder::in_context(
         "p",
         Scale::new(MU, Quantity::Length)?,
-        Tolerances::for_model_size(1000.0).ok()?,
-        Drafting::EXACT,
+        &Context::for_model_size(1000.0, Drafting::EXACT).ok()?,
     );
     let built = prog.construct(&mut rec, phi, None, "p").ok()?;
     let pose = prog.solve(phi, None).ok()?;
     Some((prog, built, pose))
+}
+
+/// The context the plans of these tests are drawn in: plan figures about 200 mm across.
+pub(crate) fn plan_context() -> crate::construct::Context {
+    crate::construct::Context::for_model_size(200.0, crate::construct::Drafting::EXACT)
+        .expect("a positive model size")
 }

@@ -134,7 +134,7 @@ fn plans(m: &Mechanism, phi: f64, w1: f64) -> Result<Plans, TestCaseError> {
         built: &built,
         mu_l: MU,
         w1,
-        drafting: Drafting::EXACT,
+        ctx: super::plan_context(),
     };
     let refused = |e: (usize, ConstructionError)| match e {
         (g, ConstructionError::LinesParallel { .. }) if pose.crossing_sin[g] < TOGGLE => {
