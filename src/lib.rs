@@ -11,6 +11,23 @@
 //! `report` ← the `tmm` binary. `plate` draws recorded figures; `check` holds the typed rows
 //! (graphical against analytic) every domain module emits; `report` formats them; `bench`
 //! times each method against its error (`tmm bench`).
+//!
+//! The way in, for a program using the library as the `tmm` binary does:
+//! ```no_run
+//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! let scene = tmm::load("constructions/shaper.toml".as_ref())?;
+//! let session = tmm::Session::new(&scene, tmm::Drafting::EXACT);
+//! for &kind in &scene.plates {
+//!     let plate = tmm::build(&session, kind, tmm::Lang::Ru)?;
+//!     let svg = tmm::plate::to_svg(&plate);
+//!     # let _ = svg;
+//! }
+//! let report = session.report()?; // every reading, graphical against analytic
+//! println!("{}", report.to_json());
+//! # Ok(()) }
+//! ```
+//! The modules below are the layers; the compiled form of a mechanism (its operations and
+//! resolved dyads) stays inside `linkage`.
 
 pub mod bench;
 pub mod calculus;
@@ -25,3 +42,11 @@ pub mod scale;
 pub mod scene;
 pub mod sheets;
 pub mod study;
+
+pub use check::{Key, Method, Row};
+pub use construct::Drafting;
+pub use report::Report;
+pub use scale::Lang;
+pub use scene::{load, PlateKind, Scene};
+pub use sheets::build;
+pub use study::Session;

@@ -327,3 +327,70 @@ fn slider_crank_with_coupler_equal_to_crank_has_one_extreme_per_dwell() {
     assert!(extra.is_empty(), "{extra:?}");
     assert_eq!(marked(&plan), ["1", "4"]);
 }
+
+/// Hard case 4 of the independent check: an RPR group whose slide line is offset from the
+/// rocker's pivot. The analytic table's `L_3` is the block's coordinate along the slot and
+/// `V_B3B1` its rate — the sliding velocity the plan reads as `v_B3_B1` — not |CB| and
+/// d|CB|/dt (0.45 % apart at an offset of 25.8 mm).
+#[test]
+fn slotted_link_with_offset_has_one_meaning_of_the_sliding_velocity() {
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("constructions/shaper.toml")).expect("shaper");
+    let text = text.replace("offset = 0.0", "offset = 25.8");
+    let scene = tmm::scene::parse(&text, &root.join("offset.toml")).expect("scene");
+    let session = tmm::study::Session::new(&scene, Drafting::EXACT);
+    let report = session.report().expect("report");
+    let table = &report.tables[0];
+    let col = |name: &str| {
+        table
+            .columns
+            .iter()
+            .position(|c| c.name == name)
+            .unwrap_or_else(|| panic!("no column {name}"))
+    };
+    let (l3, v) = (col("L_3"), col("V_B3B1"));
+    let kin = session
+        .kinematics(&session.kin_scales().expect("scales"))
+        .expect("kinematics");
+    let plan = &kin.plan;
+    let index = |name: &str| {
+        (0..plan.positions[0].pose.p.len())
+            .find(|&k| plan.point_name(k) == name)
+            .unwrap_or_else(|| panic!("no point {name}"))
+    };
+    let (b, c) = (index("B"), index("C"));
+    let w1 = kin.w1;
+    let (mut compared, mut old_meaning_off) = (0, 0.0f64);
+    for (label, values) in &table.rows {
+        let row = report
+            .rows
+            .iter()
+            .find(|r| r.quantity() == "v_B3_B1" && r.position().as_deref() == Some(label));
+        let Some(row) = row else { continue };
+        let (slide, rate) = (values[l3].expect("L_3"), values[v].expect("V_B3B1"));
+        assert!(
+            (rate.abs() - row.analytic).abs() <= 1e-12 * row.scale,
+            "position {label}: table {rate}, row {}",
+            row.analytic
+        );
+        assert!((row.graphical - row.analytic).abs() <= 1e-9 * row.scale);
+        // The slot coordinate and the offset are the legs of |CB|.
+        let pose = &plan
+            .positions
+            .iter()
+            .find(|p| &p.label == label)
+            .expect("position")
+            .pose;
+        let r = pose.p[b] - pose.p[c];
+        assert!(
+            (slide.hypot(0.0258) - r.length()).abs() < 1e-12,
+            "{slide} {r}"
+        );
+        // What the column meant before: d|CB|/dt, visibly another quantity.
+        let d_cb = r.dot(pose.dp[b] - pose.dp[c]) / r.length() * w1;
+        old_meaning_off = old_meaning_off.max((d_cb.abs() - row.analytic).abs() / row.scale);
+        compared += 1;
+    }
+    assert!(old_meaning_off > 1e-3, "{old_meaning_off}");
+    assert_eq!(compared, 13);
+}

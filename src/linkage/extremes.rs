@@ -4,7 +4,7 @@
 use super::analytic::Pose;
 use super::model::{Output, Sense};
 use super::program::Program;
-use super::LinkageError;
+use super::{LinkageError, ModelError};
 use crate::geom::{wrap_pi, DVec2, Tolerances};
 use std::f64::consts::{PI, TAU};
 
@@ -25,17 +25,13 @@ impl OutputCoord {
                 if (*link as usize) < prog.link_count {
                     Ok(OutputCoord::Rocker(*link as usize))
                 } else {
-                    Err(LinkageError::Model(format!(
-                        "output rocker {link}: no such link"
-                    )))
+                    Err(ModelError::NoSuchRocker(*link).into())
                 }
             }
             Output::Slider { point, dir } => prog
                 .index(point)
                 .map(|i| OutputCoord::Slider(i, DVec2::from_angle(*dir)))
-                .ok_or_else(|| {
-                    LinkageError::Model(format!("output slider `{point}`: no such point"))
-                }),
+                .ok_or_else(|| ModelError::NoSuchSlider(point.clone()).into()),
         }
     }
     /// Value (relative to `reference` for angles, so that it stays continuous) and dq/dφ₁.
@@ -102,7 +98,7 @@ impl Program {
             .map(|o| OutputCoord::resolve(o, self))
             .collect::<Result<_, _>>()?;
         if coords.is_empty() {
-            return Err(LinkageError::Model("no output is given".into()));
+            return Err(ModelError::NoOutput.into());
         }
         let mut poses = Vec::with_capacity(SAMPLES + 1);
         for k in 0..=SAMPLES {

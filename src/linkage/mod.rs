@@ -31,18 +31,77 @@ pub use positions::{
 pub use positions_draw::{
     draw_links, fixed_pivots, frame_guides, guide_ends, FrameGuide, Part, GUIDE_MARGIN_MM,
 };
-pub use program::{Op, PDir, PDyad, PGuide, Program};
+pub use program::Program;
+pub(crate) use program::{Op, PDyad};
 pub use scheme::structure_figure;
 pub use structure::{GroupInfo, Mobility, PairInfo, Structure};
 
 use thiserror::Error;
+
+/// What is inconsistent in a mechanism model (the scene validator reports these with their
+/// keys first; a model built in code meets them here).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ModelError {
+    /// A point name is used twice.
+    #[error("point `{0}` is defined twice")]
+    DuplicatePoint(String),
+    /// A point is referenced before it is known.
+    #[error("{what}: point `{name}` is not known at this stage")]
+    UnknownPoint {
+        /// What refers to it.
+        what: String,
+        /// The name.
+        name: String,
+    },
+    /// The crank's centre is not a fixed point.
+    #[error("crank centre `{0}` must be a fixed point")]
+    CentreNotFixed(String),
+    /// A group names the frame or a link already attached.
+    #[error("{what}: link {link} is the frame or already used")]
+    LinkReused {
+        /// The group.
+        what: String,
+        /// The link.
+        link: u32,
+    },
+    /// An RPP group's slide turns with a link that moves along its guide.
+    #[error("{what}: the slide through `{point}` turns with link {link}, which moves along the guide: give the slide the guide's kind of direction (both fixed, or both along the same two points)")]
+    SlideAcrossGuide {
+        /// The group.
+        what: String,
+        /// The slide's point.
+        point: String,
+        /// The link it turns with.
+        link: u32,
+    },
+    /// A link point on a link no group defines.
+    #[error("point `{name}` is on link {link}, which no group defines")]
+    PointOnUnknownLink {
+        /// The point.
+        name: String,
+        /// Its link.
+        link: u32,
+    },
+    /// An output rocker that is not a link of the mechanism.
+    #[error("output rocker {0}: no such link")]
+    NoSuchRocker(u32),
+    /// An output slider that is not a point of the mechanism.
+    #[error("output slider `{0}`: no such point")]
+    NoSuchSlider(String),
+    /// No output is given.
+    #[error("no output is given")]
+    NoOutput,
+    /// The tolerances of a drawing cannot be formed.
+    #[error("tolerances: {0}")]
+    Tolerances(#[from] crate::geom::InvalidTolerance),
+}
 
 /// Why a linkage task cannot be carried out.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum LinkageError {
     /// The model itself is inconsistent (unknown names, reused links).
     #[error("mechanism: {0}")]
-    Model(String),
+    Model(#[from] ModelError),
     /// A group cannot be assembled at a position.
     #[error(
         "position {position} (φ₁ = {phi_deg:.4}°): group {group} cannot be assembled: {detail}"

@@ -8,7 +8,7 @@ use super::extremes::Extremes;
 use super::model::{Mechanism, Sense};
 use super::positions_draw::draw_plan;
 use super::program::{Op, Program};
-use super::LinkageError;
+use super::{LinkageError, ModelError};
 use crate::construct::{Context, Drafting, Figure, Recorder};
 use crate::geom::Tolerances;
 use crate::scale::Scale;
@@ -206,8 +206,7 @@ pub fn plan_positions(
     let program = Program::compile(m)?;
     let (extremes, start) = start_of(&program, m, req)?;
     let extent_mm = model_extent(&program) / scale.value();
-    let tol = Tolerances::for_model_size(extent_mm.max(1.0))
-        .map_err(|e| LinkageError::Model(e.to_string()))?;
+    let tol = Tolerances::for_model_size(extent_mm.max(1.0)).map_err(ModelError::from)?;
     let mut rec = Recorder::in_context("plan", scale, &Context::new(tol, drafting));
     let mut k = 0;
     let positions = walk(

@@ -2,7 +2,7 @@
 //! is a straight run over the operations with no lookups.
 
 use super::model::{Branch, Dir, Dyad, DyadKind, Guide, Mechanism};
-use super::LinkageError;
+use super::{LinkageError, ModelError};
 use crate::geom::DVec2;
 use std::collections::HashMap;
 
@@ -129,21 +129,21 @@ pub enum Op {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Program {
     /// Point names by index: fixed points first, then the crank pin, then in order of creation.
-    pub names: Vec<String>,
+    pub(crate) names: Vec<String>,
     /// Positions of the fixed points (indices `0..fixed.len()`), m.
-    pub fixed: Vec<DVec2>,
+    pub(crate) fixed: Vec<DVec2>,
     /// Crank centre index.
-    pub centre: usize,
+    pub(crate) centre: usize,
     /// Crank pin index.
-    pub pin: usize,
+    pub(crate) pin: usize,
     /// Crank length, m.
-    pub crank_length: f64,
+    pub(crate) crank_length: f64,
     /// Crank link number.
-    pub crank_link: u32,
+    pub(crate) crank_link: u32,
     /// Operations after the crank.
-    pub ops: Vec<Op>,
+    pub(crate) ops: Vec<Op>,
     /// Largest link number + 1.
-    pub link_count: usize,
+    pub(crate) link_count: usize,
     /// Every frame direction of the operations with its unit vector (cos, sin), computed
     /// once here so that solving a position does not take their sines again.
     pub(super) fixed_dirs: Vec<(f64, DVec2)>,
@@ -164,7 +164,7 @@ impl Program {
                    n: &str|
          -> Result<usize, LinkageError> {
             if known.contains_key(n) {
-                return Err(LinkageError::Model(format!("point `{n}` is defined twice")));
+                return Err(ModelError::DuplicatePoint(n.to_string()).into());
             }
             names.push(n.to_string());
             known.insert(n.to_string(), names.len() - 1);
@@ -177,15 +177,16 @@ impl Program {
         let look =
             |known: &HashMap<String, usize>, n: &str, what: &str| -> Result<usize, LinkageError> {
                 known.get(n).copied().ok_or_else(|| {
-                    LinkageError::Model(format!("{what}: point `{n}` is not known at this stage"))
+                    ModelError::UnknownPoint {
+                        what: what.to_string(),
+                        name: n.to_string(),
+                    }
+                    .into()
                 })
             };
         let centre = look(&known, &m.crank.centre, "crank centre")?;
         if centre >= fixed.len() {
-            return Err(LinkageError::Model(format!(
-                "crank centre `{}` must be a fixed point",
-                m.crank.centre
-            )));
+            return Err(ModelError::CentreNotFixed(m.crank.centre.clone()).into());
         }
         let pin = add(&mut names, &mut known, &m.crank.pin)?;
         let mut links_known = vec![m.crank.link];
@@ -310,9 +311,11 @@ impl Program {
             };
             for l in g.links {
                 if l == 0 || links_known.contains(&l) {
-                    return Err(LinkageError::Model(format!(
-                        "{what}: link {l} is the frame or already used"
-                    )));
+                    return Err(ModelError::LinkReused {
+                        what: what.to_string(),
+                        link: l,
+                    }
+                    .into());
                 }
                 links_known.push(l);
             }
@@ -332,10 +335,12 @@ impl Program {
                     _ => false,
                 };
                 if !same {
-                    return Err(LinkageError::Model(format!(
-                        "{what}: the slide through `{}` turns with link {}, which moves along the guide: give the slide the guide's kind of direction (both fixed, or both along the same two points)",
-                        names[a], g.links[1]
-                    )));
+                    return Err(ModelError::SlideAcrossGuide {
+                        what: what.to_string(),
+                        point: names[a].clone(),
+                        link: g.links[1],
+                    }
+                    .into());
                 }
             }
             ops.push(Op::Dyad {
@@ -346,10 +351,11 @@ impl Program {
             place_points(&links_known, &mut names, &mut known, &mut ops)?;
         }
         if let Some(k) = placed.iter().position(|p| !p) {
-            return Err(LinkageError::Model(format!(
-                "point `{}` is on link {}, which no group defines",
-                m.points[k].name, m.points[k].link
-            )));
+            return Err(ModelError::PointOnUnknownLink {
+                name: m.points[k].name.clone(),
+                link: m.points[k].link,
+            }
+            .into());
         }
         let link_count = links_known.iter().copied().max().unwrap_or(1) as usize + 1;
         let mut fixed_dirs: Vec<(f64, DVec2)> = Vec::new();

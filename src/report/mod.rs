@@ -30,6 +30,7 @@ use serde::Serialize;
 
 pub use crate::check::{Method, Row, Summary, SummaryEntry};
 pub use bench::{Bench, BenchRow, Throughput};
+pub use format::CSV_HEADER;
 pub use plot::{decade_range, log_position};
 
 /// A column of an analytic table.
