@@ -394,3 +394,47 @@ fn slotted_link_with_offset_has_one_meaning_of_the_sliding_velocity() {
     assert!(old_meaning_off > 1e-3, "{old_meaning_off}");
     assert_eq!(compared, 13);
 }
+
+/// Hard case 1 through the whole report: the shaper with its crank as long as A–C, started
+/// where the pin passes through the rocker's pivot. Every row is finite and of the size of
+/// the mechanism's motion (the old report printed ε₃ = 1.3e18 and a_D = 9.5e17 there).
+#[test]
+fn report_of_a_pin_through_the_pivot_holds_no_huge_number() {
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("constructions/shaper.toml")).expect("shaper");
+    let text = text
+        .replace("length = 140.0", "length = 430.0")
+        .replace("start = \"working-stroke\"", "start = -90.0")
+        .replace(
+            "acceleration_positions = [\"3\", \"10\"]",
+            "acceleration_positions = [\"1\", \"4\"]",
+        );
+    let scene = tmm::scene::parse(&text, &root.join("pin.toml")).expect("scene");
+    let report = tmm::study::Session::new(&scene, Drafting::EXACT)
+        .report()
+        .expect("report");
+    assert!(report.rows.len() > 100);
+    for r in &report.rows {
+        assert!(
+            r.graphical.is_finite() && r.analytic.is_finite() && r.analytic.abs() < 1e3,
+            "{} at {:?}: {} / {}",
+            r.quantity(),
+            r.position(),
+            r.graphical,
+            r.analytic
+        );
+    }
+    let at1 = |q: &str, m: tmm::Method| {
+        report
+            .rows
+            .iter()
+            .find(|r| r.quantity() == q && r.position().as_deref() == Some("1") && r.method == m)
+            .unwrap_or_else(|| panic!("no {q}"))
+    };
+    let w = at1("omega_3", tmm::Method::Plan);
+    assert!((w.graphical + 7.853981633974483).abs() < 1e-9, "{w:?}");
+    assert!((w.analytic + 7.853981633974483).abs() < 1e-9, "{w:?}");
+    let a = at1("a_D", tmm::Method::Plan);
+    assert!((a.analytic - 43.7963695).abs() < 1e-6 && (a.graphical - a.analytic).abs() < 1e-9);
+    assert!(at1("eps_3", tmm::Method::Plan).analytic.abs() < 1e-6);
+}

@@ -342,9 +342,10 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
     })
 }
 
-/// A table cell: 4 significant digits; what is zero to rounding is written 0.
-fn cell(x: f64, lang: Lang) -> String {
-    if x.abs() < 1e-9 {
+/// A table cell: 4 significant digits; what is zero to rounding against its column's
+/// scale (the rule of the report, [`crate::check::is_zero`]) is written 0.
+fn cell(x: f64, scale: f64, lang: Lang) -> String {
+    if crate::check::is_zero(x, scale) {
         "0".into()
     } else {
         format_sig(x, 4, lang)
@@ -368,6 +369,16 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang, y: f64) -> Ve
             .take(shown)
             .map(|c| (format!("{}, {}", c.name, c.unit), col_w)),
     );
+    // Each column's scale: its largest magnitude over the positions.
+    let scales: Vec<f64> = (0..shown)
+        .map(|c| {
+            t.rows
+                .iter()
+                .filter_map(|(_, v)| v.get(c).copied().flatten())
+                .filter(|x| x.is_finite())
+                .fold(0.0f64, |m, x| m.max(x.abs()))
+        })
+        .collect();
     let rows = t
         .rows
         .iter()
@@ -375,8 +386,8 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang, y: f64) -> Ve
             std::iter::once(label.clone())
                 .chain(
                     vals.iter()
-                        .take(shown)
-                        .map(|v| v.map_or(String::new(), |x| cell(x, lang))),
+                        .zip(&scales)
+                        .map(|(v, &sc)| v.map_or(String::new(), |x| cell(x, sc, lang))),
                 )
                 .collect()
         })
