@@ -89,6 +89,12 @@ pub(super) fn figure_size(f: &Figure) -> DVec2 {
     f.bounds().map_or(DVec2::ZERO, |(lo, hi)| hi - lo) + DVec2::splat(LABEL_MARGIN)
 }
 
+/// The round μ next along the series that draws a drawing overflowing its room `need`
+/// times (> 1) small enough to fit.
+pub(super) fn raised(s: Scale, need: f64) -> Option<Scale> {
+    Scale::round_for(s.value() * need.max(1.0001), 1.0, s.quantity)
+}
+
 /// The μ, from `start` along the round series, at which `size_at(μ)` fits `room` as `fit`
 /// asks; `None` when no round μ can be formed.
 pub(super) fn fit_scale(
@@ -102,7 +108,7 @@ pub(super) fn fit_scale(
         let need = overflow(size_at(s), room);
         let next = match fit {
             Fit::Raise if need <= 1.0 => return Some(s),
-            Fit::Raise => Scale::round_for(s.value() * need.max(1.0001), 1.0, s.quantity)?,
+            Fit::Raise => raised(s, need)?,
             Fit::Fill(share) => Scale::round_for(s.value() * need, share, s.quantity)?,
         };
         if next == s {

@@ -51,7 +51,7 @@ fn figures_overflow<'a>(figs: impl IntoIterator<Item = &'a Figure>, cell: DVec2)
 
 /// The next round scale at least `ratio` times larger.
 fn bump(s: Scale, ratio: f64) -> Scale {
-    Scale::round_for(s.value() * ratio.max(1.0001), 1.0, s.quantity).unwrap_or(s)
+    fit::raised(s, ratio).unwrap_or(s)
 }
 
 /// Grid cells of `n` views in `r` with `cols` columns.
