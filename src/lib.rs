@@ -18,9 +18,10 @@
 //! let scene = tmm::load("constructions/shaper.toml".as_ref())?;
 //! let session = tmm::Session::new(&scene, tmm::Drafting::EXACT);
 //! for &kind in &scene.plates {
-//!     let plate = tmm::build(&session, kind, tmm::Lang::Ru)?;
-//!     let svg = tmm::plate::to_svg(&plate);
-//!     # let _ = svg;
+//!     for sheet in tmm::build(&session, kind, tmm::Lang::Ru)? {
+//!         let svg = tmm::plate::to_svg(&sheet);
+//!         # let _ = svg;
+//!     }
 //! }
 //! let report = session.report()?; // every reading, graphical against analytic
 //! println!("{}", report.to_json());

@@ -200,22 +200,16 @@ fn plates(
     drafting: Drafting,
 ) -> Result<Vec<(PlateKind, tmm::plate::Plate)>, Failure> {
     let session = Session::new(s, drafting);
-    s.plates
-        .iter()
-        .map(|&kind| {
-            sheets::build(&session, kind, lang)
-                .map(|p| (kind, p))
-                .map_err(|e| build_err(s, kind, e))
-        })
-        .collect()
+    sheets::build_all(&session, lang).map_err(|(kind, e)| build_err(s, kind, e))
 }
 
 fn build_err(scene: &Scene, kind: PlateKind, e: sheets::BuildError) -> Failure {
-    Failure::construction(format!(
-        "{}: plate `{}`: {e}",
-        scene.path.display(),
-        kind.stem()
-    ))
+    let message = format!("{}: plate `{}`: {e}", scene.path.display(), kind.stem());
+    match e {
+        // A scale the scene gives that no sheet can hold: the input is at fault.
+        sheets::BuildError::TooLarge { fits: Some(_), .. } => Failure::input(message),
+        _ => Failure::construction(message),
+    }
 }
 
 fn render(
@@ -234,9 +228,9 @@ fn render(
     // Everything is built in memory first: a failed run writes nothing.
     let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     for s in &scenes {
-        for (kind, plate) in plates(s, lang, drafting)? {
+        for (_, plate) in plates(s, lang, drafting)? {
             let svg = tmm::plate::to_svg(&plate);
-            let base = out.join(&s.stem).join(kind.stem());
+            let base = out.join(&s.stem).join(&plate.name);
             if formats.contains(&Format::Png) {
                 let png = tmm::plate::to_png_dpi(&svg, dpi as f32)
                     .map_err(|e| Failure::construction(format!("{}: {e}", base.display())))?;

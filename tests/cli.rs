@@ -219,3 +219,27 @@ fn check_says_a_scene_without_a_study_asks_for_nothing() {
     assert!(!err.contains("missing"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_given_scale_too_large_for_a_sheet_is_bad_input() {
+    let dir = std::env::temp_dir().join(format!("tmm-big-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let shaper = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions/shaper.toml"),
+    )
+    .expect("shaper");
+    let path = dir.join("big.toml");
+    std::fs::write(&path, shaper.replace("scale_v = 0.05 ", "scale_v = 0.002 ")).expect("scene");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .arg("check")
+        .arg(&path)
+        .output()
+        .expect("run tmm check");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("kinematics.scale_v") && err.contains("μ_v = 0.004"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -19,15 +19,24 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn render(scene_name: &str, plate: &str) -> Vec<u8> {
+/// The sheets of one plate of a scene, rendered: (sheet name, PNG). The sheets are built
+/// with all the scene's plates, as `tmm render` builds them, so their numbering is the same.
+fn render(scene_name: &str, plate: &str) -> Vec<(String, Vec<u8>)> {
     let path = root()
         .join("constructions")
         .join(format!("{scene_name}.toml"));
     let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
     let kind = PlateKind::parse(plate).unwrap_or_else(|| panic!("unknown plate {plate}"));
     let session = Session::new(&s, Drafting::EXACT);
-    let p = sheets::build(&session, kind, Lang::Ru).unwrap_or_else(|e| panic!("{e}"));
-    tmm::plate::to_png(&tmm::plate::to_svg(&p), WIDTH).unwrap_or_else(|e| panic!("{e}"))
+    let all = sheets::build_all(&session, Lang::Ru).unwrap_or_else(|(_, e)| panic!("{e}"));
+    all.into_iter()
+        .filter(|(k, _)| *k == kind)
+        .map(|(_, p)| {
+            let png = tmm::plate::to_png(&tmm::plate::to_svg(&p), WIDTH)
+                .unwrap_or_else(|e| panic!("{e}"));
+            (p.name, png)
+        })
+        .collect()
 }
 
 /// Count pixels differing by more than 1 in any channel and build the mask.
@@ -76,24 +85,33 @@ fn write_diff(name: &str, expected: &Pixmap, mask: &Pixmap, actual: &Pixmap) -> 
 }
 
 fn check(scene_name: &str, plate: &str) {
-    let name = format!("{scene_name}-{plate}");
-    let png = render(scene_name, plate);
-    let ref_path = root().join("tests").join("ref").join(format!("{name}.png"));
+    let sheets = render(scene_name, plate);
     if std::env::var_os("UPDATE_PLATES").is_some() {
-        let _ = std::fs::create_dir_all(ref_path.parent().expect("tests/ref"));
-        std::fs::write(&ref_path, &png).expect("write reference");
-        panic!(
-            "{name}: reference rewritten at {}; run again without UPDATE_PLATES",
-            ref_path.display()
-        );
+        for (sheet, png) in &sheets {
+            let path = ref_path(&format!("{scene_name}-{sheet}"));
+            let _ = std::fs::create_dir_all(path.parent().expect("tests/ref"));
+            std::fs::write(&path, png).expect("write reference");
+        }
+        panic!("{scene_name}-{plate}: references rewritten; run again without UPDATE_PLATES");
     }
+    for (sheet, png) in sheets {
+        check_sheet(&format!("{scene_name}-{sheet}"), &png);
+    }
+}
+
+fn ref_path(name: &str) -> PathBuf {
+    root().join("tests").join("ref").join(format!("{name}.png"))
+}
+
+fn check_sheet(name: &str, png: &[u8]) {
+    let ref_path = ref_path(name);
     let expected = Pixmap::load_png(&ref_path).unwrap_or_else(|e| {
         panic!(
             "{name}: no reference {} ({e}); create it with UPDATE_PLATES=1",
             ref_path.display()
         )
     });
-    let actual = Pixmap::decode_png(&png).expect("decode rendered plate");
+    let actual = Pixmap::decode_png(png).expect("decode rendered plate");
     assert_eq!(
         (expected.width(), expected.height()),
         (actual.width(), actual.height()),
@@ -101,7 +119,7 @@ fn check(scene_name: &str, plate: &str) {
     );
     let (failing, mask) = compare(&expected, &actual);
     if failing > 0 {
-        let diff = write_diff(&name, &expected, &mask, &actual);
+        let diff = write_diff(name, &expected, &mask, &actual);
         panic!(
             "{name}: {failing} pixels differ by more than 1; diff at {}",
             diff.display()

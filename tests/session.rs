@@ -34,17 +34,15 @@ fn shaper_render_constructs_each_position_and_plan_once() {
     // 12 numbered positions and the extreme 8′.
     assert_eq!(count("velocity plan"), 13);
     assert_eq!(count("acceleration plan"), 2);
-    // The plan of positions is drawn on each sheet at that sheet's μ_l: the scene's 0.0025
-    // on the positions sheet, 0.004 on the kinematic sheet (issue 7 will use the scene's μ_l
-    // there too); each position is constructed once per drawing.
-    let mut scales: Vec<f64> = log
+    // Both sheets draw the plan of positions at the scene's μ_l = 0.0025: each of the 13
+    // positions is constructed once.
+    let scales: Vec<f64> = log
         .iter()
         .filter(|c| c.what == "position")
         .map(|c| c.scale.value())
         .collect();
-    scales.dedup();
-    assert_eq!(scales, vec![0.0025, 0.004]);
-    assert_eq!(count("position"), 26);
+    assert!(scales.iter().all(|&s| s == 0.0025), "{scales:?}");
+    assert_eq!(count("position"), 13);
     // The plates asked again, and the report at the sheet's scales, construct nothing new.
     for &kind in &s.plates {
         sheets::build(&session, kind, Lang::En).expect("plate");

@@ -102,8 +102,8 @@ pub(super) fn plate_time(s: &Subject, kind: PlateKind, reps: Reps) -> Result<f64
     best_time(reps.best_of, || {
         // A fresh session each run: the time includes every construction the sheet needs.
         let session = Session::new(&s.scene, Drafting::EXACT);
-        let plate = sheets::build(&session, kind, Lang::Ru)?;
-        Ok(crate::plate::to_svg(&plate))
+        let plates = sheets::build(&session, kind, Lang::Ru)?;
+        Ok(plates.iter().map(crate::plate::to_svg).collect::<Vec<_>>())
     })
     .map_err(|e: sheets::BuildError| BenchError::Plate {
         scene: s.scene.stem.clone(),

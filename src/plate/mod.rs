@@ -49,7 +49,7 @@ pub use fonts::font_database;
 pub use raster::{to_png, to_png_dpi};
 pub use sheet::{Sheet, SheetSize, TitleBlock};
 pub use style::Pen;
-pub use svg::{to_svg, FONT_FAMILY};
+pub use svg::{to_svg, CAPTION_HEIGHT_MM, FONT_FAMILY};
 pub use table::TableBlock;
 
 pub use write::write_atomic;

@@ -3,10 +3,8 @@
 //! constant allowance its construction lines and symbols take), and μ moves along the round
 //! 1–2–2.5–4–5 series until the drawing fits its field.
 
-use crate::construct::Figure;
 use crate::geom::DVec2;
 use crate::linkage::{guide_ends, PlanPoses, GUIDE_MARGIN_MM};
-use crate::plate::CAPTION_BAND_MM;
 use crate::scale::Scale;
 
 /// Room around a drawing for its labels, mm.
@@ -74,19 +72,9 @@ impl Extent {
     }
 }
 
-/// The room a view has in a field of size `field` (its caption band taken off).
-pub(super) fn room(field: DVec2) -> DVec2 {
-    field - DVec2::new(0.0, CAPTION_BAND_MM)
-}
-
 /// How much a drawing of size `size` overflows `room` (≤ 1: fits).
 pub(super) fn overflow(size: DVec2, room: DVec2) -> f64 {
     (size.x / room.x).max(size.y / room.y)
-}
-
-/// The size of a constructed figure with its labels' margin, mm.
-pub(super) fn figure_size(f: &Figure) -> DVec2 {
-    f.bounds().map_or(DVec2::ZERO, |(lo, hi)| hi - lo) + DVec2::splat(LABEL_MARGIN)
 }
 
 /// The round μ next along the series that draws a drawing overflowing its room `need`
@@ -95,17 +83,13 @@ pub(super) fn raised(s: Scale, need: f64) -> Option<Scale> {
     Scale::round_for(s.value() * need.max(1.0001), 1.0, s.quantity)
 }
 
-/// The μ, from `start` along the round series, at which `size_at(μ)` fits `room` as `fit`
-/// asks; `None` when no round μ can be formed.
-pub(super) fn fit_scale(
-    start: Scale,
-    room: DVec2,
-    fit: Fit,
-    size_at: impl Fn(Scale) -> DVec2,
-) -> Option<Scale> {
+/// The μ, from `start` along the round series, at which a drawing fits as `fit` asks;
+/// `overflow(μ)` tells how much the drawing at μ overflows its room (≤ 1: it fits). `None`
+/// when no round μ can be formed.
+pub(super) fn fit_scale(start: Scale, fit: Fit, overflow: impl Fn(Scale) -> f64) -> Option<Scale> {
     let mut s = start;
     for _ in 0..8 {
-        let need = overflow(size_at(s), room);
+        let need = overflow(s);
         let next = match fit {
             Fit::Raise if need <= 1.0 => return Some(s),
             Fit::Raise => raised(s, need)?,

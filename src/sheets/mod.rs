@@ -3,11 +3,16 @@
 
 mod captions;
 mod fit;
+mod layout;
+pub use layout::ScaleKey;
 mod kinematics;
+mod pack;
 mod positions;
 
+use crate::geom::DVec2;
 use crate::plate::{Plate, PlateError, TitleBlock};
 use crate::scale::Lang;
+use crate::scale::Scale;
 use crate::scene::{PlateKind, Scene};
 use crate::study::{Session, StudyError};
 use thiserror::Error;
@@ -30,6 +35,32 @@ pub enum BuildError {
     /// The tolerances of a drawing cannot be set up.
     #[error("tolerances: {0}")]
     Tolerances(String),
+    /// A drawing is larger than an empty sheet at the scale it must be drawn at.
+    #[error("{}", too_large(.what, *.need, .fits.as_ref()))]
+    TooLarge {
+        /// The drawing.
+        what: String,
+        /// Its size with its labels and caption, mm.
+        need: DVec2,
+        /// The scene key of its scale, that scale, and the largest round scale that fits.
+        fits: Option<(layout::ScaleKey, Scale)>,
+    },
+}
+
+fn too_large(what: &str, need: DVec2, fits: Option<&(layout::ScaleKey, Scale)>) -> String {
+    let base = format!(
+        "“{what}” needs {:.0} × {:.0} mm, more than an empty sheet holds",
+        need.x, need.y
+    );
+    match fits {
+        Some((k, f)) => format!(
+            "{}: {base}; the largest scale at which it fits is μ_{} = {}",
+            k.key,
+            k.scale.quantity.symbol(),
+            crate::scale::format_sig(f.value(), 4, Lang::En)
+        ),
+        None => base,
+    }
 }
 
 impl From<crate::kinematics::KinError> for BuildError {
@@ -54,10 +85,30 @@ fn title_block(scene: &Scene, sheet_title: &str, sheet_no: u32, sheets: u32) -> 
     }
 }
 
-/// Build one plate of the session's scene, in `lang`.
-pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Plate, BuildError> {
+/// Build one plate of the session's scene, in `lang`: the sheets it takes (usually one; a
+/// plate whose views need more room continues on `name-2`, …).
+pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     match kind {
         PlateKind::Positions => positions::build(session, lang),
         PlateKind::Kinematics => kinematics::build(session, lang),
     }
+}
+
+/// Every plate the scene asks for, in order, its sheets numbered 1 … n across the scene (the
+/// title block's "sheet k of n"). A failure names the plate it happened in.
+pub fn build_all(
+    session: &Session<'_>,
+    lang: Lang,
+) -> Result<Vec<(PlateKind, Plate)>, (PlateKind, BuildError)> {
+    let mut all = Vec::new();
+    for &kind in &session.scene().plates {
+        let plates = build(session, kind, lang).map_err(|e| (kind, e))?;
+        all.extend(plates.into_iter().map(|p| (kind, p)));
+    }
+    let n = all.len() as u32;
+    for (k, (_, p)) in all.iter_mut().enumerate() {
+        p.title_block.sheet_no = k as u32 + 1;
+        p.title_block.sheets = n;
+    }
+    Ok(all)
 }

@@ -3,42 +3,40 @@
 
 use super::captions::Text;
 use super::fit::{self, fit_scale, Fit};
+use super::layout::{lay_out, Block, ScaleKey};
 use super::BuildError;
 use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
 use crate::linkage::{DyadKind, OutputCoord, PositionPlan, Structure};
-use crate::plate::{Plate, Rect, Sheet, SheetSize, TextBlock, View};
+use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::study::Session;
 
-/// Sheet A1 landscape: the field for the plan (right) and the left column.
-const PLAN_REGION: (f64, f64, f64, f64) = (300.0, 12.0, 830.0, 528.0);
-const SCHEME_REGION: (f64, f64, f64, f64) = (26.0, 12.0, 294.0, 300.0);
+/// The room the plan of positions takes when μ_l is chosen (the right part of an A1 sheet),
+/// and the structural scheme's, mm.
+const PLAN_ROOM: DVec2 = DVec2::new(530.0, 502.0);
+const SCHEME_ROOM: DVec2 = DVec2::new(268.0, 274.0);
 /// Preferred size of the structural scheme, mm.
 const SCHEME_MM: f64 = 170.0;
-/// Largest share of its field the plan may take when μ_l is chosen automatically.
+/// Largest share of its room the plan may take when μ_l is chosen automatically.
 const FILL: f64 = 0.9;
 
-fn rect(r: (f64, f64, f64, f64)) -> Rect {
-    Rect::new(DVec2::new(r.0, r.1), DVec2::new(r.2, r.3))
-}
-
-/// Build the plate.
-pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
+/// Build the sheet: the structural scheme, the plan of positions and the analysis text.
+pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
     let m = session.mechanism("the plan of positions")?;
-    let region = rect(PLAN_REGION);
     // The scene's μ_l as given; else the finest round μ_l at which the plan, predicted from
-    // the analytic positions, fills its field (a guess from the crank first, as a student
+    // the analytic positions, fills its room (a guess from the crank first, as a student
     // chooses it).
     let scale = match scene.scale_l {
         Some(s) => s,
         None => {
             let extent = fit::positions_extent(&*session.poses()?);
-            let room = fit::room(region.max - region.min);
             let start = session.scale_l()?;
-            fit_scale(start, room, Fit::Fill(FILL), |mu| extent.size_at(mu))
-                .ok_or(BuildError::NoScale(start.value()))?
+            fit_scale(start, Fit::Fill(FILL), |mu| {
+                fit::overflow(extent.size_at(mu), PLAN_ROOM)
+            })
+            .ok_or(BuildError::NoScale(start.value()))?
         }
     };
     let plan = session.positions(scale)?;
@@ -48,55 +46,49 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Plate, BuildError> {
         Text::PlanOfMechanism.get(lang),
         scale.caption(lang)
     );
-    let mut views = vec![View::centred(
-        plan.figure.clone(),
-        region,
-        Some(plan_caption),
-    )?];
     let extent = plan
         .figure
         .bounds()
         .map_or(1.0, |(lo, hi)| (hi - lo).max_element())
         * scale.value();
-    views.push(scheme_view(&plan, &st, extent, lang)?);
     let mut lines = structure_lines(&st, m, lang);
     lines.push(String::new());
     lines.extend(extreme_lines(&plan, lang));
-    let texts = vec![TextBlock {
-        at: DVec2::new(28.0, 318.0),
-        lines,
-        size_mm: 3.5,
-    }];
-    Ok(Plate {
-        name: "positions".into(),
-        sheet: Sheet {
-            size: SheetSize::A1,
-            landscape: true,
+    let blocks = vec![
+        scheme_block(&plan, &st, extent, lang)?,
+        Block::view(
+            plan.figure.clone(),
+            plan_caption,
+            Some(ScaleKey {
+                key: "mechanism.scale_l",
+                scale,
+            }),
+        ),
+        Block::Text {
+            lines,
+            size_mm: 3.5,
         },
-        title_block: super::title_block(scene, Text::PlanOfPositions.get(lang), 1, 1),
-        lang,
-        views,
-        texts,
-        tables: Vec::new(),
-    })
+    ];
+    let title = super::title_block(scene, Text::PlanOfPositions.get(lang), 1, 1);
+    lay_out(Sheet::default(), blocks, "positions", &title, lang)
 }
 
-/// The structural scheme at the finest round scale whose drawing fits its field.
-fn scheme_view(
+/// The structural scheme at the finest round scale whose drawing fits its room.
+fn scheme_block(
     plan: &PositionPlan,
     st: &Structure,
     extent: f64,
     lang: Lang,
-) -> Result<View, BuildError> {
+) -> Result<Block, BuildError> {
     let ctx = Context::for_model_size(SCHEME_MM, Drafting::EXACT)
         .map_err(|e| BuildError::Tolerances(e.to_string()))?;
     let scheme = |s: Scale| plan.scheme(st, s, &ctx);
-    let region = rect(SCHEME_REGION);
     let start =
         Scale::round_for(extent, SCHEME_MM, Quantity::Length).ok_or(BuildError::NoScale(extent))?;
     // The scheme is a drawing of position 1 (no construction): drawn at each trial μ.
-    let s_scale = fit_scale(start, fit::room(region.max - region.min), Fit::Raise, |s| {
-        scheme(s).bounds().map_or(DVec2::ZERO, |(lo, hi)| hi - lo)
+    let s_scale = fit_scale(start, Fit::Raise, |s| {
+        let size = scheme(s).bounds().map_or(DVec2::ZERO, |(lo, hi)| hi - lo);
+        fit::overflow(size, SCHEME_ROOM)
     })
     .ok_or(BuildError::NoScale(extent))?;
     let caption = format!(
@@ -104,7 +96,7 @@ fn scheme_view(
         Text::StructuralScheme.get(lang),
         s_scale.caption(lang)
     );
-    Ok(View::centred(scheme(s_scale), region, Some(caption))?)
+    Ok(Block::view(scheme(s_scale), caption, None))
 }
 
 fn kind_name(k: DyadKind, lang: Lang) -> String {

@@ -1,0 +1,216 @@
+//! What a sheet holds — views, stacks of views, text and tables — sized from what they really
+//! draw and laid out on as many sheets of a format as they need ([`super::pack`]).
+
+use super::fit::LABEL_MARGIN;
+use super::pack::{pack, sheet_overflow};
+use super::BuildError;
+use crate::construct::Figure;
+use crate::geom::DVec2;
+use crate::plate::{
+    text, Plate, Rect, Sheet, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM,
+    CAPTION_HEIGHT_MM,
+};
+use crate::scale::{Lang, Scale};
+
+/// The scale a block is drawn at and the scene key that sets it, for the message when the
+/// block does not fit a sheet.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScaleKey {
+    /// The scene key (`kinematics.scale_v`).
+    pub key: &'static str,
+    /// The scale.
+    pub scale: Scale,
+}
+
+/// One thing on a sheet.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) enum Block {
+    /// Figures drawn together (a view, or a stack such as S, dS/dφ, d²S/dφ² whose parts lie at
+    /// offsets in the first one's coordinates), with one caption under them all.
+    Views {
+        /// (figure, offset of its origin in the first figure's coordinates, mm).
+        parts: Vec<(Figure, DVec2)>,
+        /// The caption.
+        caption: Option<String>,
+        /// What sets its size.
+        scale: Option<ScaleKey>,
+    },
+    /// Lines of text.
+    Text {
+        /// Lines in label markup.
+        lines: Vec<String>,
+        /// Text height, mm.
+        size_mm: f64,
+    },
+    /// A table (its `at` is set by the layout).
+    Table(TableBlock),
+}
+
+impl Block {
+    /// One figure with a caption.
+    pub fn view(figure: Figure, caption: String, scale: Option<ScaleKey>) -> Self {
+        Block::Views {
+            parts: vec![(figure, DVec2::ZERO)],
+            caption: Some(caption),
+            scale,
+        }
+    }
+
+    /// Bounds of the figures, in the first one's coordinates (y up).
+    fn bounds(parts: &[(Figure, DVec2)]) -> (DVec2, DVec2) {
+        parts
+            .iter()
+            .filter_map(|(f, off)| f.bounds().map(|(lo, hi)| (lo + *off, hi + *off)))
+            .fold(
+                (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+                |(lo, hi), (a, b)| (lo.min(a), hi.max(b)),
+            )
+    }
+
+    /// The size the block takes on the sheet, mm: its drawing with room for labels and the
+    /// caption band.
+    fn size(&self) -> DVec2 {
+        match self {
+            Block::Views { parts, caption, .. } => {
+                let (lo, hi) = Self::bounds(parts);
+                let band = if caption.is_some() {
+                    CAPTION_BAND_MM
+                } else {
+                    0.0
+                };
+                let drawn = if lo.x <= hi.x { hi - lo } else { DVec2::ZERO };
+                // A caption wider than its drawing widens the block.
+                let caption_w = caption
+                    .as_deref()
+                    .map_or(0.0, |c| text::approx_width(c, CAPTION_HEIGHT_MM));
+                DVec2::new(
+                    (drawn.x + LABEL_MARGIN).max(caption_w),
+                    drawn.y + LABEL_MARGIN + band,
+                )
+            }
+            Block::Text { lines, size_mm } => {
+                let w = lines
+                    .iter()
+                    .map(|l| text::approx_width(l, *size_mm))
+                    .fold(0.0, f64::max);
+                DVec2::new(w, 2.0 * size_mm * lines.len() as f64)
+            }
+            Block::Table(t) => t.size() + DVec2::new(0.0, title_height(t)),
+        }
+    }
+}
+
+/// Room above a table's grid for its title, mm.
+fn title_height(t: &TableBlock) -> f64 {
+    if t.title.is_empty() {
+        0.0
+    } else {
+        t.size_mm * 1.6
+    }
+}
+
+/// The parts of a sheet, filled in place by [`lay_out`].
+#[derive(Default)]
+struct Parts {
+    views: Vec<View>,
+    texts: Vec<TextBlock>,
+    tables: Vec<TableBlock>,
+}
+
+/// Put `block` into `rect`.
+fn put(block: Block, rect: Rect, parts: &mut Parts) -> Result<(), BuildError> {
+    match block {
+        Block::Views {
+            parts: figures,
+            caption,
+            ..
+        } => {
+            let (lo, hi) = Block::bounds(&figures);
+            // The whole group's bounds go to the rectangle's centre, over the caption band.
+            let band = if caption.is_some() {
+                CAPTION_BAND_MM
+            } else {
+                0.0
+            };
+            let c = rect.center() - DVec2::new(0.0, band * 0.5);
+            let mid = (lo + hi) * 0.5;
+            let origin = DVec2::new(c.x - mid.x, c.y + mid.y);
+            // The caption goes under the last part, the bottom of a stack.
+            let last = figures.len().saturating_sub(1);
+            for (k, (figure, off)) in figures.into_iter().enumerate() {
+                parts.views.push(View {
+                    figure,
+                    origin: origin + DVec2::new(off.x, -off.y),
+                    caption: if k == last { caption.clone() } else { None },
+                });
+            }
+        }
+        Block::Text { lines, size_mm } => parts.texts.push(TextBlock {
+            at: rect.min,
+            lines,
+            size_mm,
+        }),
+        Block::Table(mut t) => {
+            t.at = rect.min + DVec2::new(0.0, title_height(&t));
+            parts.tables.push(t);
+        }
+    }
+    Ok(())
+}
+
+/// Lay `blocks` out in order on sheets of format `sheet`, as many as they need; the plates are
+/// named `name`, `name-2`, …, each with the title block `title` (numbered later, across the
+/// scene). A block larger than an empty sheet is an error naming the scene key of its scale
+/// and the largest round scale at which it would fit.
+pub(super) fn lay_out(
+    sheet: Sheet,
+    blocks: Vec<Block>,
+    name: &str,
+    title: &TitleBlock,
+    lang: Lang,
+) -> Result<Vec<Plate>, BuildError> {
+    let sizes: Vec<DVec2> = blocks.iter().map(Block::size).collect();
+    let placed = pack(&sheet, &sizes).map_err(|k| too_large(&sheet, &blocks[k], sizes[k]))?;
+    let count = placed.iter().map(|p| p.0 + 1).max().unwrap_or(1);
+    let mut pages: Vec<Parts> = (0..count).map(|_| Parts::default()).collect();
+    for (block, (page, rect)) in blocks.into_iter().zip(placed) {
+        put(block, rect, &mut pages[page])?;
+    }
+    Ok(pages
+        .into_iter()
+        .enumerate()
+        .map(|(k, p)| Plate {
+            name: if k == 0 {
+                name.to_string()
+            } else {
+                format!("{name}-{}", k + 1)
+            },
+            sheet,
+            title_block: title.clone(),
+            lang,
+            views: p.views,
+            texts: p.texts,
+            tables: p.tables,
+        })
+        .collect())
+}
+
+/// The error for a block that does not fit an empty sheet.
+fn too_large(sheet: &Sheet, block: &Block, size: DVec2) -> BuildError {
+    let over = sheet_overflow(sheet, size);
+    let (what, scale) = match block {
+        Block::Views { parts, scale, .. } => (
+            parts
+                .first()
+                .map_or_else(String::new, |p| p.0.title.clone()),
+            scale.clone(),
+        ),
+        Block::Text { .. } => ("text".into(), None),
+        Block::Table(t) => (t.title.clone(), None),
+    };
+    BuildError::TooLarge {
+        what,
+        need: size,
+        fits: scale.and_then(|s| super::fit::raised(s.scale, over).map(|f| (s, f))),
+    }
+}

@@ -1,0 +1,172 @@
+//! Laying views, texts and tables out on as many sheets as they need: each item goes to the
+//! highest, then leftmost, free place of the current sheet (inside the frame, clear of the
+//! title block and the designation box, a gap from everything placed); an item that fits
+//! nowhere there starts a further sheet. Items keep the order they are given in, so a sheet
+//! reads like the textbook's: the plan of positions first, then the plans, diagrams, tables.
+
+use crate::geom::DVec2;
+use crate::plate::{Rect, Sheet};
+
+/// Gap kept between two items, mm.
+const GAP_MM: f64 = 5.0;
+/// Margin kept from the frame, mm.
+const MARGIN_MM: f64 = 3.0;
+
+/// The free space of one sheet and what is placed on it.
+#[derive(Debug, Clone)]
+struct Page {
+    area: Rect,
+    taken: Vec<Rect>,
+}
+
+impl Page {
+    fn new(sheet: &Sheet) -> Self {
+        let f = sheet.frame();
+        let m = DVec2::splat(MARGIN_MM);
+        Page {
+            area: Rect::new(f.min + m, f.max - m),
+            taken: vec![sheet.title_block(), sheet.designation_box()],
+        }
+    }
+
+    fn free(&self, r: &Rect) -> bool {
+        let inside = r.min.x >= self.area.min.x - 1e-9
+            && r.min.y >= self.area.min.y - 1e-9
+            && r.max.x <= self.area.max.x + 1e-9
+            && r.max.y <= self.area.max.y + 1e-9;
+        inside
+            && self.taken.iter().all(|t| {
+                r.max.x + GAP_MM <= t.min.x + 1e-9
+                    || t.max.x + GAP_MM <= r.min.x + 1e-9
+                    || r.max.y + GAP_MM <= t.min.y + 1e-9
+                    || t.max.y + GAP_MM <= r.min.y + 1e-9
+            })
+    }
+
+    /// The highest, then leftmost, free place of `size`; candidates are the area's corner and
+    /// the corners just past each taken rectangle.
+    fn place(&mut self, size: DVec2) -> Option<Rect> {
+        let mut xs = vec![self.area.min.x];
+        let mut ys = vec![self.area.min.y];
+        for t in &self.taken {
+            xs.push(t.max.x + GAP_MM);
+            ys.push(t.max.y + GAP_MM);
+        }
+        xs.sort_by(f64::total_cmp);
+        ys.sort_by(f64::total_cmp);
+        for &y in &ys {
+            for &x in &xs {
+                let r = Rect::new(DVec2::new(x, y), DVec2::new(x, y) + size);
+                if self.free(&r) {
+                    self.taken.push(r);
+                    return Some(r);
+                }
+            }
+        }
+        None
+    }
+}
+
+/// Where each item went: its sheet (0-based) and its rectangle (sheet mm, y down).
+pub(super) type Placement = (usize, Rect);
+
+/// Lay out items of the given sizes (mm) on sheets of format `sheet`, in order. `Err(k)`
+/// names the first item that does not fit even an empty sheet.
+pub(super) fn pack(sheet: &Sheet, sizes: &[DVec2]) -> Result<Vec<Placement>, usize> {
+    let mut pages = vec![Page::new(sheet)];
+    let mut out = Vec::with_capacity(sizes.len());
+    for (k, &size) in sizes.iter().enumerate() {
+        let last = pages.len() - 1;
+        if let Some(r) = pages[last].place(size) {
+            out.push((last, r));
+            continue;
+        }
+        let mut page = Page::new(sheet);
+        let r = page.place(size).ok_or(k)?;
+        pages.push(page);
+        out.push((last + 1, r));
+    }
+    Ok(out)
+}
+
+/// The largest rectangles an empty sheet of format `sheet` has free (beside or above the
+/// title block, below or beside the designation box): an item fits an empty sheet when it
+/// fits one of them.
+pub(super) fn rooms(sheet: &Sheet) -> [DVec2; 4] {
+    let p = Page::new(sheet);
+    let (a, tb, d) = (p.area, sheet.title_block(), sheet.designation_box());
+    let below_box = d.max.y + GAP_MM;
+    let right_of_box = d.max.x + GAP_MM;
+    let above_tb = tb.min.y - GAP_MM;
+    let left_of_tb = tb.min.x - GAP_MM;
+    [
+        DVec2::new(a.max.x - a.min.x, above_tb - below_box),
+        DVec2::new(left_of_tb - a.min.x, a.max.y - below_box),
+        DVec2::new(a.max.x - right_of_box, above_tb - a.min.y),
+        DVec2::new(left_of_tb - right_of_box, a.max.y - a.min.y),
+    ]
+}
+
+/// How much an item of `size` overflows an empty sheet (≤ 1: it fits).
+pub(super) fn sheet_overflow(sheet: &Sheet, size: DVec2) -> f64 {
+    rooms(sheet)
+        .iter()
+        .map(|r| (size.x / r.x).max(size.y / r.y))
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn a1() -> Sheet {
+        Sheet::default()
+    }
+
+    #[test]
+    fn items_fill_rows_and_spill_onto_a_further_sheet() {
+        let s = a1();
+        let sizes = vec![DVec2::new(300.0, 200.0); 7];
+        let placed = pack(&s, &sizes).expect("fits");
+        // Two rows of two on the first A1 sheet (the title block takes the bottom right).
+        assert_eq!(placed.iter().filter(|p| p.0 == 0).count(), 4);
+        assert!(placed.iter().any(|p| p.0 == 1));
+        for (i, a) in placed.iter().enumerate() {
+            let f = s.frame();
+            assert!(a.1.min.x >= f.min.x && a.1.max.x <= f.max.x);
+            assert!(a.1.min.y >= f.min.y && a.1.max.y <= f.max.y);
+            for b in &placed[i + 1..] {
+                let apart = a.0 != b.0
+                    || a.1.max.x <= b.1.min.x
+                    || b.1.max.x <= a.1.min.x
+                    || a.1.max.y <= b.1.min.y
+                    || b.1.max.y <= a.1.min.y;
+                assert!(apart, "{a:?} overlaps {b:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn nothing_goes_over_the_title_block() {
+        let s = a1();
+        let tb = s.title_block();
+        let placed = pack(&s, &vec![DVec2::new(100.0, 100.0); 30]).expect("fits");
+        for (page, r) in placed {
+            let clear = r.max.x <= tb.min.x || r.max.y <= tb.min.y;
+            assert!(clear, "page {page}: {r:?}");
+        }
+    }
+
+    #[test]
+    fn an_item_larger_than_a_sheet_is_named() {
+        let s = a1();
+        let sizes = [DVec2::new(100.0, 100.0), DVec2::new(900.0, 100.0)];
+        assert_eq!(pack(&s, &sizes), Err(1));
+        assert!(sheet_overflow(&s, DVec2::new(900.0, 100.0)) > 1.0);
+        assert!(sheet_overflow(&s, DVec2::new(600.0, 500.0)) <= 1.0);
+        // Every room really is free on an empty sheet.
+        for r in rooms(&s) {
+            assert!(pack(&s, &[r - DVec2::splat(1e-6)]).is_ok(), "{r:?}");
+        }
+    }
+}
