@@ -86,3 +86,98 @@ fn views_that_need_more_room_continue_on_a_further_sheet() {
         assert_eq!(p.title_block.sheets, 3);
     }
 }
+
+fn report(stem: &str) -> tmm::Report {
+    let s = scene::load(&root().join(format!("constructions/{stem}.toml"))).expect("scene");
+    Session::new(&s, Drafting::EXACT).report().expect("report")
+}
+
+#[test]
+fn a_diagram_across_an_asymptote_is_refused_with_a_note() {
+    // tangent.toml: at φ₁ = 90° and 270° the guides are parallel and the slider runs off.
+    let r = report("tangent");
+    assert!(r.rows.iter().all(|row| row.method == tmm::Method::Plan));
+    assert!(
+        r.notes
+            .iter()
+            .any(|n| n.contains("φ₁ = 90.00°") && n.contains("refused")),
+        "{:?}",
+        r.notes
+    );
+    let s = scene::load(&root().join("constructions/tangent.toml")).expect("scene");
+    let session = Session::new(&s, Drafting::EXACT);
+    let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+    let text = all
+        .iter()
+        .flat_map(|(_, p)| texts(p))
+        .collect::<Vec<_>>()
+        .join("\n");
+    assert!(
+        text.contains("не строятся") && text.contains("90,0°"),
+        "{text}"
+    );
+}
+
+#[test]
+fn values_undetermined_at_the_change_point_are_null_not_zero() {
+    let r = report("six-bar");
+    for q in ["v_E", "a_E"] {
+        let row = r
+            .rows
+            .iter()
+            .find(|row| row.quantity() == q && row.position().as_deref() == Some("6"))
+            .expect("a diagram row at 6");
+        assert!(row.analytic.is_nan(), "{q}: {}", row.analytic);
+    }
+    let json: serde_json::Value = serde_json::from_str(&r.to_json()).expect("json");
+    let at6: Vec<&serde_json::Value> = json["rows"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .filter(|row| row["position"] == "6" && row["quantity"] == "v_E")
+        .collect();
+    assert!(at6.iter().all(|row| row["analytic"].is_null()));
+    assert!(
+        r.notes.iter().any(|n| n.contains("not determined")),
+        "{:?}",
+        r.notes
+    );
+    // The analytic table leaves the rates empty there, keeps the angles and the crank pin.
+    let t = &r.tables[0];
+    let (_, row6) = t.rows.iter().find(|(l, _)| l == "6").expect("row 6");
+    let col = |name: &str| t.columns.iter().position(|c| c.name == name).expect(name);
+    assert_eq!(row6[col("ω_2")], None);
+    assert_eq!(row6[col("V_E")], None);
+    assert!(row6[col("φ_2")].is_some() && row6[col("V_A")].is_some());
+}
+
+#[test]
+fn tables_use_the_textbook_notation_and_omit_a_slider_link() {
+    let s = scene::load(&root().join("constructions/shaper.toml")).expect("shaper");
+    let session = Session::new(&s, Drafting::EXACT);
+    let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+    let cells: Vec<String> = all
+        .iter()
+        .flat_map(|(_, p)| p.tables.iter())
+        .flat_map(|t| {
+            t.rows
+                .iter()
+                .flatten()
+                .cloned()
+                .chain(t.columns.iter().map(|c| c.0.clone()))
+        })
+        .collect();
+    assert!(cells.iter().any(|c| c == "ω_{1}"), "{cells:?}");
+    assert!(cells.iter().any(|c| c == "V_{B3B1}"), "{cells:?}");
+    assert!(!cells.iter().any(|c| c.contains("omega") || c == "v B3 B1"));
+    assert!(cells.iter().any(|c| c.ends_with(", м/с")), "{cells:?}");
+    assert!(!cells.iter().any(|c| c.ends_with("m/s")), "{cells:?}");
+    // The slider-crank's slider (link 3) only translates: no φ_3, ω_3, ε_3 columns.
+    let t = &report("slider-crank").tables[0];
+    assert!(
+        !t.columns.iter().any(|c| c.name.ends_with("_3")),
+        "{:?}",
+        t.columns
+    );
+    assert!(t.columns.iter().any(|c| c.name == "ω_2"));
+}

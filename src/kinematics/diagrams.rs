@@ -108,6 +108,7 @@ pub fn diagrams(
     if numbered.len() < 3 {
         return Ok(None);
     }
+    super::full_turn(plan)?;
     let name = plan.program.names[k].clone();
     let fail = |what: &str, error| KinError::Diagram {
         what: format!("{what} of {name}"),
@@ -169,8 +170,8 @@ pub fn diagrams(
             let pose = &p.pose;
             [
                 (pose.p[k] - p0).dot(dir),
-                (pose.dp[k] * w1).length(),
-                (pose.ddp[k] * (w1 * w1)).length(),
+                super::rate(pose, (pose.dp[k] * w1).length()),
+                super::rate(pose, (pose.ddp[k] * (w1 * w1)).length()),
             ]
         })
         .collect();

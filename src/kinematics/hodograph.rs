@@ -16,10 +16,16 @@ pub fn hodograph_point(
     asked: Option<&str>,
 ) -> Result<Option<usize>, KinError> {
     let prog = &plan.program;
+    // By default the first link point that moves: a point at a pivot would be a blob.
+    let moves = |k: usize| {
+        plan.positions
+            .iter()
+            .any(|p| !crate::check::is_zero(p.pose.dp[k].length(), prog.crank_length))
+    };
     let name = match asked {
         Some(n) => n.to_string(),
         None => match prog.ops.iter().find_map(|op| match op {
-            Op::Point { idx, .. } => Some(prog.names[*idx].clone()),
+            Op::Point { idx, .. } if moves(*idx) => Some(prog.names[*idx].clone()),
             _ => None,
         }) {
             Some(n) => n,

@@ -122,6 +122,14 @@ pub enum KinError {
         /// The physical size it was chosen for.
         value: f64,
     },
+    /// A diagram over the crank turn through an angle the mechanism cannot pass.
+    #[error("the diagrams over a crank turn are refused: at φ₁ = {phi_deg:.2}° {detail}; the method of chords across it is meaningless")]
+    NoFullTurn {
+        /// The crank angle, degrees.
+        phi_deg: f64,
+        /// Why the mechanism cannot pass it.
+        detail: String,
+    },
     /// A position index outside the plan of positions.
     #[error("there is no position number {index} (the plan has {count})")]
     NoIndex {
@@ -176,6 +184,25 @@ pub fn numbered(plan: &PositionPlan) -> Vec<(usize, &crate::linkage::PlanPositio
         .collect()
 }
 
+/// Samples of the crank turn checked before a quantity is charted over it.
+const TURN_SAMPLES: usize = 720;
+
+/// A diagram over the crank turn is meaningful only if the mechanism passes every crank angle:
+/// the first angle (of [`TURN_SAMPLES`]) where it cannot — guides turned parallel, a slider
+/// run off to infinity — refuses the chart with its diagnosis.
+fn full_turn(plan: &PositionPlan) -> Result<(), KinError> {
+    for i in 0..TURN_SAMPLES {
+        let phi = TAU * i as f64 / TURN_SAMPLES as f64;
+        if let Err(u) = plan.program.solve(phi, None) {
+            return Err(KinError::NoFullTurn {
+                phi_deg: phi.to_degrees(),
+                detail: format!("group {}: {}", u.group + 1, u.detail),
+            });
+        }
+    }
+    Ok(())
+}
+
 /// A periodic diagram over one crank turn through `values` at the numbered positions.
 fn turn_diagram(values: Vec<f64>) -> Result<Diagram, calculus::CalculusError> {
     let n = values.len();
@@ -203,6 +230,16 @@ fn extent<'a>(values: impl Iterator<Item = &'a f64>, mu: Scale) -> (f64, f64) {
     values.fold((0.0f64, 0.0f64), |(lo, hi), v| {
         (lo.min(v / mu.value()), hi.max(v / mu.value()))
     })
+}
+
+/// An analytic velocity or acceleration at `pose`: NaN (written `null`) where a group is at its
+/// toggle and the analogues are not determined.
+fn rate(pose: &crate::linkage::Pose, value: f64) -> f64 {
+    if pose.toggle.is_some() {
+        f64::NAN
+    } else {
+        value
+    }
 }
 
 /// The largest magnitude of `values` (the scale of a quantity over the cycle).

@@ -59,6 +59,7 @@ pub fn rocker_diagram(
     let (Some(omega), true) = (omega, numbered.len() >= 3) else {
         return Ok(None);
     };
+    super::full_turn(plan)?;
     let fail = |error| KinError::Diagram {
         what: format!("ω_{link}"),
         error,
@@ -92,7 +93,7 @@ pub fn rocker_diagram(
             key: Key::at_position(Symbol::AngularAcceleration, link.to_string(), &p.label),
             method: Method::DiagramChords,
             graphical: derivative.node[idx] * w1.abs(),
-            analytic: p.pose.ddangle[link] * w1 * w1,
+            analytic: super::rate(&p.pose, p.pose.ddangle[link] * w1 * w1),
             conditioning: None,
             scale: eps_scale,
         })

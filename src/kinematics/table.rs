@@ -6,19 +6,26 @@ use crate::report::{Column, Table};
 
 type Cell = Box<dyn Fn(&Pose) -> f64>;
 
-/// The table's columns, each with the function of a pose that fills it.
+/// The table's columns, each with the function of a pose that fills it and whether it is a
+/// rate (a velocity or acceleration, undetermined where a group is at its toggle).
 struct Columns {
     columns: Vec<Column>,
-    cells: Vec<Cell>,
+    cells: Vec<(Cell, bool)>,
 }
 
 impl Columns {
     fn push(&mut self, name: String, unit: &str, cell: Cell) {
+        let rate = unit != "°" && unit != "m";
+        self.push_as(name, unit, cell, rate);
+    }
+
+    /// A column whose cells are undetermined at a toggle when `rate`.
+    fn push_as(&mut self, name: String, unit: &str, cell: Cell, rate: bool) {
         self.columns.push(Column {
             name,
             unit: unit.into(),
         });
-        self.cells.push(cell);
+        self.cells.push((cell, rate));
     }
 
     /// φ, ω, ε of link `l`.
@@ -65,6 +72,12 @@ pub fn analytic_table(plan: &PositionPlan, w1: f64) -> Table {
         "°",
         Box::new(|p: &Pose| p.phi.to_degrees().rem_euclid(360.0)),
     );
+    // A link that only translates (a slider) has no angle, ω or ε to tabulate.
+    let turns = |l: usize| {
+        plan.positions
+            .iter()
+            .any(|p| !crate::check::is_zero(p.pose.dangle[l], 1.0))
+    };
     for op in &prog.ops {
         let Op::Dyad { links, dyad, .. } = op else {
             continue;
@@ -87,32 +100,40 @@ pub fn analytic_table(plan: &PositionPlan, w1: f64) -> Table {
             }
             PDyad::Rpp { .. } | PDyad::Prp { .. } => {}
             _ => {
-                t.link(links[0] as usize, w1);
-                t.link(links[1] as usize, w1);
+                for l in links.iter().map(|&l| l as usize).filter(|&l| turns(l)) {
+                    t.link(l, w1);
+                }
             }
         }
     }
     for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
         let q = plain(name);
-        t.push(
+        // The crank pin moves with the crank whatever the groups do.
+        let rate = k != prog.pin;
+        t.push_as(
             format!("V_{q}"),
             "m/s",
             Box::new(move |p: &Pose| (p.dp[k] * w1).length()),
+            rate,
         );
-        t.push(
+        t.push_as(
             format!("a_{q}"),
             "m/s²",
             Box::new(move |p: &Pose| (p.ddp[k] * w1 * w1).length()),
+            rate,
         );
     }
     let rows = plan
         .positions
         .iter()
         .map(|pos| {
-            (
-                pos.label.clone(),
-                t.cells.iter().map(|c| Some(c(&pos.pose))).collect(),
-            )
+            // At a toggle the analogues are not determined: their cells stay empty.
+            let toggle = pos.pose.toggle.is_some();
+            let cells = t.cells.iter().map(|(c, rate)| {
+                let v = c(&pos.pose);
+                (!(toggle && *rate) && v.is_finite()).then_some(v)
+            });
+            (pos.label.clone(), cells.collect())
         })
         .collect();
     Table {

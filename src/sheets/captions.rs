@@ -63,6 +63,12 @@ pub(super) enum Text {
     Metre,
     /// mm
     Millimetre,
+    /// No diagrams over the turn: the mechanism cannot pass φ₁ = …
+    NoDiagrams,
+    /// δ mean, %
+    MeanError,
+    /// δ max, %
+    MaxError,
 }
 
 impl Text {
@@ -132,6 +138,13 @@ impl Text {
             Text::StrokeOfPoint => ("Ход точки", "Хід точки", "Stroke of point"),
             Text::Metre => ("м", "м", "m"),
             Text::Millimetre => ("мм", "мм", "mm"),
+            Text::NoDiagrams => (
+                "Диаграммы по углу поворота не строятся: механизм не проходит положение",
+                "Діаграми за кутом повороту не будуються: механізм не проходить положення",
+                "No diagrams over the crank turn: the mechanism cannot pass",
+            ),
+            Text::MeanError => ("δ ср., %", "δ сер., %", "δ mean, %"),
+            Text::MaxError => ("δ max, %", "δ max, %", "δ max, %"),
         };
         lang.pick(ru, uk, en)
     }

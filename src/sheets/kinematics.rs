@@ -174,13 +174,39 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             h.scale.caption(lang)
         ));
     }
+    for r in &a.refusals {
+        if let crate::kinematics::KinError::NoFullTurn { phi_deg, .. } = r {
+            lines.push(format!(
+                "{} φ_{{1}} = {}°",
+                Text::NoDiagrams.get(lang),
+                format_fixed(*phi_deg, 1, lang)
+            ));
+        }
+    }
     blocks.push(Block::Text {
         lines,
         size_mm: 3.5,
     });
     blocks.extend(tables(&a, scene, lang).into_iter().map(Block::Table));
-    let title = super::title_block(scene, Text::KinematicAnalysis.get(lang), 1, 1);
+    let title = super::title_block(scene, Text::KinematicAnalysis.get(lang), sc.l, lang);
     lay_out(sheet, blocks, "kinematics", &title, lang)
+}
+
+/// A quantity of the error table in the textbook's notation (`ω_{1}`, `V_{B3B1}`), from the
+/// key of its first row.
+fn symbol_of(rows: &[crate::check::Row], quantity: &str) -> String {
+    rows.iter().find(|r| r.quantity() == quantity).map_or_else(
+        || quantity.to_string(),
+        |r| r.key.symbol.markup(&r.key.subject),
+    )
+}
+
+/// A table's unit (written in SI, `m/s²`) in `lang`.
+fn unit_in(unit: &str, lang: Lang) -> String {
+    match lang {
+        Lang::En => unit.to_string(),
+        Lang::Ru | Lang::Uk => unit.replace('m', "м").replace('s', "с"),
+    }
 }
 
 /// A table cell: 4 significant digits; what is zero to rounding against its column's
@@ -207,7 +233,7 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang) -> Vec<TableB
         t.columns
             .iter()
             .take(shown)
-            .map(|c| (format!("{}, {}", c.name, c.unit), col_w)),
+            .map(|c| (format!("{}, {}", c.name, unit_in(&c.unit, lang)), col_w)),
     );
     // Each column's scale: its largest magnitude over the positions.
     let scales: Vec<f64> = (0..shown)
@@ -252,7 +278,6 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang) -> Vec<TableB
     };
     let summary = report.summary();
     let method = |m: Method| m.name(lang).to_string();
-    // The diagrams first (the textbook's comparison), then the plans' largest errors.
     // Diagrams first (the textbook's comparison), then by the error as displayed (0.01 %),
     // ties in report order: rounding noise must not reorder the table.
     let shown_pct = |x: f64| (x * 1e4).round() as i64;
@@ -267,7 +292,7 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang) -> Vec<TableB
                 "—".into()
             };
             vec![
-                e.quantity.replace('_', " "),
+                symbol_of(&report.rows, &e.quantity),
                 method(e.method),
                 format_fixed(e.mean_abs_rel * 100.0, 2, lang),
                 format_fixed(e.max_abs_rel * 100.0, 2, lang),
@@ -281,8 +306,8 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang) -> Vec<TableB
         columns: vec![
             (Text::Quantity.get(lang).into(), 24.0),
             (Text::Method.get(lang).into(), 20.0),
-            ("δ ср., %".into(), 16.0),
-            ("δ max, %".into(), 16.0),
+            (Text::MeanError.get(lang).into(), 16.0),
+            (Text::MaxError.get(lang).into(), 16.0),
             (Text::PosShort.get(lang).into(), 10.0),
         ],
         rows: err_rows,

@@ -69,8 +69,10 @@ impl From<crate::kinematics::KinError> for BuildError {
     }
 }
 
-/// The title block of a plate of `scene`, filled from its `[task]`.
-fn title_block(scene: &Scene, sheet_title: &str, sheet_no: u32, sheets: u32) -> TitleBlock {
+/// The title block of a plate of `scene`, filled from its `[task]`; "Масштаб" is the plan of
+/// positions' μ_l as a ГОСТ 2.302 scale (μ_l = 0,0025 м/мм draws 2,5 mm of the machine in
+/// one millimetre: 1:2,5).
+fn title_block(scene: &Scene, sheet_title: &str, plan: Scale, lang: Lang) -> TitleBlock {
     let t = &scene.title;
     TitleBlock {
         title: t.title.clone(),
@@ -79,9 +81,13 @@ fn title_block(scene: &Scene, sheet_title: &str, sheet_no: u32, sheets: u32) -> 
         author: t.author.clone(),
         checked: t.checked.clone(),
         organisation: t.organisation.clone(),
-        scale: String::new(),
-        sheet_no,
-        sheets,
+        scale: format!(
+            "1:{}",
+            crate::scale::format_sig(plan.value() * 1000.0, 4, lang)
+        ),
+        // Numbered across the scene by `build_all`.
+        sheet_no: 1,
+        sheets: 1,
     }
 }
 

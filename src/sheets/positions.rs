@@ -69,7 +69,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             size_mm: 3.5,
         },
     ];
-    let title = super::title_block(scene, Text::PlanOfPositions.get(lang), 1, 1);
+    let title = super::title_block(scene, Text::PlanOfPositions.get(lang), scale, lang);
     lay_out(Sheet::default(), blocks, "positions", &title, lang)
 }
 

@@ -107,6 +107,8 @@ pub struct Kinematics {
     pub hodograph: Option<Hodograph>,
     /// The analytic table (the shape of seed 000 Table 5).
     pub table: Arc<Table>,
+    /// What was refused and why (a diagram across an angle the mechanism cannot pass).
+    pub refusals: Vec<KinError>,
 }
 
 impl Kinematics {
@@ -138,6 +140,17 @@ impl Kinematics {
 }
 
 type Cached<T> = Result<Arc<T>, StudyError>;
+
+/// A chart refused because the mechanism cannot pass part of the turn: no chart, a note.
+fn refusable<T>(r: MaybeCached<T>, refusals: &mut Vec<KinError>) -> MaybeCached<T> {
+    match r {
+        Err(StudyError::Kinematics(e @ KinError::NoFullTurn { .. })) => {
+            refusals.push(e);
+            Ok(None)
+        }
+        other => other,
+    }
+}
 type MaybeCached<T> = Result<Option<Arc<T>>, StudyError>;
 /// An acceleration plan with its rows.
 pub type Acceleration = (KinPlan, Vec<Row>);
@@ -426,11 +439,15 @@ impl<'s> Session<'s> {
             .into_iter()
             .map(|k| Ok((k, self.acceleration(sc, k)?)))
             .collect::<Result<_, StudyError>>()?;
+        let mut refusals = Vec::new();
+        let diagrams = refusable(self.diagrams(sc.l, sc.chart), &mut refusals)?;
+        let rocker = refusable(self.rocker(sc.l, sc.v), &mut refusals)?;
         Ok(Kinematics {
             scales: *sc,
             w1: self.w1()?,
-            diagrams: self.diagrams(sc.l, sc.chart)?,
-            rocker: self.rocker(sc.l, sc.v)?,
+            diagrams,
+            rocker,
+            refusals,
             hodograph: self.hodograph(sc.l, sc.v)?,
             table: self.table(sc.l)?,
             plan,
@@ -443,11 +460,21 @@ impl<'s> Session<'s> {
     /// analytic twin, the analytic table, the notes.
     pub fn report(&self) -> Result<Report, StudyError> {
         let k = self.kinematics(&self.kin_scales()?)?;
-        let notes = k
-            .refused()
-            .into_iter()
-            .map(|(pos, why)| format!("position {pos}: no velocity plan: {why}"))
-            .collect();
+        let mut notes: Vec<String> = k.refusals.iter().map(ToString::to_string).collect();
+        notes.extend(
+            k.refused()
+                .into_iter()
+                .map(|(pos, why)| format!("position {pos}: no velocity plan: {why}")),
+        );
+        notes.extend(k.plan.positions.iter().filter_map(|p| {
+            p.pose.toggle.as_ref().map(|t| {
+                format!(
+                    "position {}: the analytic velocities and accelerations are not determined (group {} at its toggle): null",
+                    p.label,
+                    t.group + 1
+                )
+            })
+        }));
         Ok(Report {
             scene: self.scene.stem.clone(),
             rows: k.rows(),
