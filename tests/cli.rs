@@ -238,7 +238,7 @@ fn a_given_scale_too_large_for_a_sheet_is_bad_input() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
-        err.contains("kinematics.scale_v") && err.contains("μ_v = 0.004"),
+        err.contains("kinematics.scale_v") && err.contains("kinematics.scale_v = 0.004"),
         "{err}"
     );
     let _ = std::fs::remove_dir_all(&dir);

@@ -69,7 +69,7 @@ fn a_view_too_large_at_its_given_scale_names_the_key_and_the_scale_that_fits() {
         .to_string();
     assert!(err.contains("kinematics.scale_v"), "{err}");
     assert!(
-        err.contains("the largest scale at which it fits is μ_v = "),
+        err.contains("the largest scale at which it fits is kinematics.scale_v = 0.004 m/(s·mm)"),
         "{err}"
     );
 }
@@ -180,4 +180,20 @@ fn tables_use_the_textbook_notation_and_omit_a_slider_link() {
         t.columns
     );
     assert!(t.columns.iter().any(|c| c.name == "ω_2"));
+}
+
+#[test]
+fn out_of_range_numbers_are_refused_when_the_scene_is_read() {
+    for (from, to, key) in [
+        ("length = 140.0", "length = 1e300", "mechanism.crank.length"),
+        ("omega = 15.707963267948966", "omega = 1e300", "mechanism.crank.omega"),
+        ("at = [0.0, 430.0]", "at = [0.0, 4.3e300]", "mechanism.fixed[0].at"),
+    ] {
+        let text = shaper_text().replace(from, to);
+        assert_ne!(text, shaper_text(), "{from}");
+        let err = scene::parse(&text, &root().join("x.toml"))
+            .expect_err("out of range")
+            .to_string();
+        assert!(err.contains(key), "{key}: {err}");
+    }
 }

@@ -7,6 +7,10 @@ use crate::scale::{Quantity, Scale};
 /// Metres per millimetre.
 const M_PER_MM: f64 = 1e-3;
 
+/// The largest length or coordinate a scene may give, mm (1 km): beyond it no drawing scale
+/// can be formed and the constructions' tolerances lose their meaning.
+pub(crate) const MAX_MM: f64 = 1e6;
+
 /// `base.key`.
 pub(crate) fn join(base: &str, key: &str) -> String {
     format!("{base}.{key}")
@@ -64,24 +68,47 @@ impl Checker {
         v
     }
 
-    /// A required length in mm, finite and > 0, in metres.
+    /// A required length in mm, finite, > 0 and at most [`MAX_MM`], in metres.
     pub fn length(&mut self, key: &str, v: Option<f64>) -> f64 {
-        const WANT: &str = "a length > 0 mm";
+        const WANT: &str = "a length > 0 mm and at most 1e6 mm (1 km)";
         match self.required(key, v, WANT) {
-            Some(mm) if mm.is_finite() && mm > 0.0 => mm * M_PER_MM,
+            Some(mm) if mm.is_finite() && mm > 0.0 && mm <= MAX_MM => mm * M_PER_MM,
             Some(mm) => self.bad(key, mm, WANT),
             None => 0.0,
         }
     }
 
-    /// A signed distance in mm (may be 0 or negative, must be finite), in metres.
+    /// A signed distance in mm (may be 0 or negative, at most [`MAX_MM`] in size), in metres.
     pub fn distance(&mut self, key: &str, v: Option<f64>, default_mm: f64) -> f64 {
-        self.finite(key, v.unwrap_or(default_mm), "a finite distance in mm") * M_PER_MM
+        self.bounded(
+            key,
+            v.unwrap_or(default_mm),
+            MAX_MM,
+            "a distance in mm within ±1e6 mm",
+        ) * M_PER_MM
     }
 
-    /// A required signed coordinate in mm, in metres.
+    /// A required signed coordinate in mm (at most [`MAX_MM`] in size), in metres.
     pub fn coordinate(&mut self, key: &str, mm: f64) -> f64 {
-        self.finite(key, mm, "a finite coordinate in mm") * M_PER_MM
+        self.bounded(key, mm, MAX_MM, "a coordinate in mm within ±1e6 mm") * M_PER_MM
+    }
+
+    /// A number in (0, `max`], or a problem and 0.
+    pub fn in_range(&mut self, key: &str, v: f64, max: f64, expected: &str) -> f64 {
+        if v.is_finite() && v > 0.0 && v <= max {
+            v
+        } else {
+            self.bad(key, v, expected)
+        }
+    }
+
+    /// A finite number of magnitude at most `max`, or a problem and 0.
+    pub fn bounded(&mut self, key: &str, v: f64, max: f64, expected: &str) -> f64 {
+        if v.is_finite() && v.abs() <= max {
+            v
+        } else {
+            self.bad(key, v, expected)
+        }
     }
 
     /// An angle in degrees (finite), in radians.
@@ -93,15 +120,6 @@ impl Checker {
     /// A finite number, or a problem and 0.
     fn finite(&mut self, key: &str, v: f64, expected: &str) -> f64 {
         if v.is_finite() {
-            v
-        } else {
-            self.bad(key, v, expected)
-        }
-    }
-
-    /// A positive finite number (no unit conversion), or a problem and 0.
-    pub fn positive(&mut self, key: &str, v: f64, expected: &str) -> f64 {
-        if v.is_finite() && v > 0.0 {
             v
         } else {
             self.bad(key, v, expected)

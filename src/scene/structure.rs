@@ -9,6 +9,9 @@ use super::raw::{RawCrank, RawMechanism, RawPoint};
 use crate::geom::DVec2;
 use crate::linkage::{Crank, FixedPoint, LinkPoint, Mechanism, Sense};
 
+/// The fastest crank a scene may give, rad/s.
+const MAX_OMEGA: f64 = 1e4;
+
 /// The key path of the mechanism table.
 pub(super) const MECH: &str = "mechanism";
 
@@ -180,11 +183,15 @@ impl Builder<'_> {
 
     /// `omega` (rad/s) or `n` (rpm), exactly one of them.
     pub(super) fn omega(&mut self, base: &str, raw: &RawCrank) -> f64 {
-        const WANT: &str = "ω > 0 rad/s";
+        const WANT: &str = "0 < ω ≤ 1e4 rad/s";
+        let max_n = MAX_OMEGA * 30.0 / std::f64::consts::PI;
         match (raw.omega, raw.n) {
-            (Some(w), None) => self.check.positive(&join(base, "omega"), w, WANT),
+            (Some(w), None) => self
+                .check
+                .in_range(&join(base, "omega"), w, MAX_OMEGA, WANT),
             (None, Some(n)) => {
-                let n = self.check.positive(&join(base, "n"), n, "n > 0 rpm");
+                let key = join(base, "n");
+                let n = self.check.in_range(&key, n, max_n, "0 < n ≤ 95 493 rpm");
                 std::f64::consts::PI * n / 30.0
             }
             (Some(w), Some(n)) => {

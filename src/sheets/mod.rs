@@ -54,10 +54,10 @@ fn too_large(what: &str, need: DVec2, fits: Option<&(layout::ScaleKey, Scale)>) 
     );
     match fits {
         Some((k, f)) => format!(
-            "{}: {base}; the largest scale at which it fits is μ_{} = {}",
-            k.key,
-            k.scale.quantity.symbol(),
-            crate::scale::format_sig(f.value(), 4, Lang::En)
+            "{key}: {base}; the largest scale at which it fits is {key} = {} {}",
+            crate::scale::format_sig(f.value(), 4, Lang::En),
+            k.scale.quantity.unit(Lang::En),
+            key = k.key,
         ),
         None => base,
     }
