@@ -186,8 +186,16 @@ fn tables_use_the_textbook_notation_and_omit_a_slider_link() {
 fn out_of_range_numbers_are_refused_when_the_scene_is_read() {
     for (from, to, key) in [
         ("length = 140.0", "length = 1e300", "mechanism.crank.length"),
-        ("omega = 15.707963267948966", "omega = 1e300", "mechanism.crank.omega"),
-        ("at = [0.0, 430.0]", "at = [0.0, 4.3e300]", "mechanism.fixed[0].at"),
+        (
+            "omega = 15.707963267948966",
+            "omega = 1e300",
+            "mechanism.crank.omega",
+        ),
+        (
+            "at = [0.0, 430.0]",
+            "at = [0.0, 4.3e300]",
+            "mechanism.fixed[0].at",
+        ),
     ] {
         let text = shaper_text().replace(from, to);
         assert_ne!(text, shaper_text(), "{from}");

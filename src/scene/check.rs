@@ -84,13 +84,13 @@ impl Checker {
             key,
             v.unwrap_or(default_mm),
             MAX_MM,
-            "a distance in mm within ±1e6 mm",
+            "a finite distance in mm, within ±1e6 mm",
         ) * M_PER_MM
     }
 
     /// A required signed coordinate in mm (at most [`MAX_MM`] in size), in metres.
     pub fn coordinate(&mut self, key: &str, mm: f64) -> f64 {
-        self.bounded(key, mm, MAX_MM, "a coordinate in mm within ±1e6 mm") * M_PER_MM
+        self.bounded(key, mm, MAX_MM, "a finite coordinate in mm, within ±1e6 mm") * M_PER_MM
     }
 
     /// A number in (0, `max`], or a problem and 0.
