@@ -80,10 +80,19 @@ pub fn circle_circle(a: &Circle, b: &Circle, tol: &Tolerances) -> CircleCircle {
             radius_diff: diff,
         };
     }
-    // Distance from a.center to the chord, along u; half chord h.
-    let along = (d * d + ra * ra - rb * rb) / (2.0 * d);
-    let h = (ra * ra - along * along).max(0.0).sqrt();
-    let base = a.center + u * along;
+    // The chord is found from the smaller circle's centre: from the larger one, its distance
+    // along u is nearly the radius and the half chord √(r² − along²) would lose the digits
+    // of a small circle's offset (a compass set to a fraction of a millimetre beside a long
+    // arc). d² − R² is formed as (d − R)(d + R) for the same reason.
+    let (base, h) = if rb < ra {
+        let along = ((d - ra) * (d + ra) + rb * rb) / (2.0 * d);
+        let h = (rb * rb - along * along).max(0.0).sqrt();
+        (b.center - u * along, h)
+    } else {
+        let along = ((d - rb) * (d + rb) + ra * ra) / (2.0 * d);
+        let h = (ra * ra - along * along).max(0.0).sqrt();
+        (a.center + u * along, h)
+    };
     let n = u.perp();
     // Angle between the radii at the point = angle between the tangents.
     let cos_g = ((ra * ra + rb * rb - d * d) / (2.0 * ra * rb)).clamp(-1.0, 1.0);
@@ -364,5 +373,38 @@ mod tests {
         assert!(Line::through(DVec2::ONE, DVec2::ONE).is_none());
         assert!(Circle::new(DVec2::ZERO, -1.0).is_none());
         assert!(Circle::new(DVec2::ZERO, f64::NAN).is_none());
+    }
+}
+
+#[cfg(test)]
+mod small_circle {
+    use super::*;
+
+    /// A compass set to a fraction of a millimetre beside a long arc through its centre (the
+    /// foot of an offset slide line on the Thales circle): both points lie on both circles to
+    /// the precision of the long arc's coordinates, not 1e-5 of the small radius.
+    #[test]
+    fn a_small_circle_on_a_large_one_keeps_its_digits() {
+        let tol = Tolerances::for_model_size(1000.0).expect("tolerances");
+        let big = Circle {
+            center: DVec2::new(-3.7, 125.0),
+            radius: 125.05472,
+        };
+        let c = big.center + DVec2::from_angle(-1.2) * big.radius;
+        for r in [4.5e-4, 2e-3, 0.5] {
+            let small = Circle {
+                center: c,
+                radius: r,
+            };
+            for (x, y) in [(&big, &small), (&small, &big)] {
+                let CircleCircle::Two { left, right, .. } = circle_circle(x, y, &tol) else {
+                    panic!("two points expected for r = {r}");
+                };
+                for p in [left, right] {
+                    assert!(((p - c).length() - r).abs() <= 1e-12 * r.max(1e-2), "{r}");
+                    assert!(((p - big.center).length() - big.radius).abs() <= 1e-12);
+                }
+            }
+        }
     }
 }

@@ -3,13 +3,15 @@
 use super::path::{pieces, Map, PathData};
 use super::style::{Mark, Paint, Pen};
 use super::text::{Align, Placed};
-use crate::construct::{Item, Label, Role, Step};
+use crate::construct::{Item, Role, Step};
 use crate::geom::{Arc, DVec2, Segment, Side};
+use std::f64::consts::TAU;
 
 /// ГОСТ 2.304 size of labels (height of capitals), mm.
 pub const LABEL_HEIGHT_MM: f64 = 3.5;
-/// Distance from a label's anchor to its text, mm.
-pub const LABEL_GAP_MM: f64 = 2.5;
+/// Least distance from a label's anchor to its text's box, mm (from a revolute pair's
+/// circle for a label of the pair).
+pub const LABEL_GAP_MM: f64 = 1.0;
 /// Radius of a revolute pair, mm.
 pub const JOINT_RADIUS_MM: f64 = 1.5;
 /// Length and spacing of hatch strokes along a guide, mm.
@@ -46,30 +48,152 @@ impl Arrow {
     /// a zero direction.
     fn head(self, map: Map, tip: DVec2, dir: DVec2) -> Option<Mark> {
         let u = dir.try_normalize()?;
+        let mut d = PathData::new(map);
+        d.polygon(&self.corners(tip, u));
+        Mark::path(Paint::Solid, d)
+    }
+
+    /// The head's triangle: the tip, then the two corners of the base (`u`: unit direction).
+    fn corners(self, tip: DVec2, u: DVec2) -> [DVec2; 3] {
         let base = tip - u * self.len;
         let side = u.perp() * (self.width * 0.5);
-        let mut d = PathData::new(map);
-        d.polygon(&[tip, base + side, base - side]);
-        Mark::path(Paint::Solid, d)
+        [tip, base + side, base - side]
     }
 }
 
-/// All marks of one step under `map`: the item, then its label.
+/// The marks of one step's item under `map` (its label is laid out with the plate's others,
+/// see [`layout`](super::layout)).
 pub(crate) fn step_marks(step: &Step, map: Map) -> Vec<Mark> {
-    let pen = Pen::for_role(step.role);
     let mut out = Vec::new();
-    item_marks(&step.item, step.role, pen, map, &mut out);
-    if let Some(label) = &step.label {
-        let placed = match &step.item {
-            Item::Dimension { from, to, offset } => {
-                dimension_text(map, *from, *to, *offset, &label.text)
-            }
-            Item::Joint { .. } => Some(label_text(label, map, LABEL_GAP_MM + JOINT_RADIUS_MM)),
-            _ => Some(label_text(label, map, LABEL_GAP_MM)),
-        };
-        out.extend(placed.map(Mark::Text));
-    }
+    item_marks(
+        &step.item,
+        step.role,
+        Pen::for_role(step.role),
+        map,
+        &mut out,
+    );
     out
+}
+
+/// What a drawn item covers on the sheet, for laying labels out clear of it and for the
+/// view's drawn bounds.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Shape {
+    /// A stroke between two points.
+    Line(DVec2, DVec2),
+    /// A filled or opaque convex area (pair symbols, blocks, arrowheads, dots).
+    Area(Vec<DVec2>),
+}
+
+/// A shape with the weight of its line: `main` for the ГОСТ main (thick) line.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Outline {
+    /// The shape, sheet mm.
+    pub shape: Shape,
+    /// Drawn with the main line.
+    pub main: bool,
+}
+
+/// The outlines of what `item` draws in `role` under `map`, following [`step_marks`]: the
+/// same symbol sizes, curves and arcs as polylines.
+pub(crate) fn item_outlines(item: &Item, role: Role, map: Map) -> Vec<Outline> {
+    let main = Pen::for_role(role).is_main();
+    let mut lines: Vec<(DVec2, DVec2)> = Vec::new();
+    let mut areas: Vec<(Vec<DVec2>, bool)> = Vec::new();
+    let chain = |pts: &[DVec2], closed: bool, lines: &mut Vec<(DVec2, DVec2)>| {
+        lines.extend(pts.windows(2).map(|w| (w[0], w[1])));
+        if closed && pts.len() > 2 {
+            lines.push((pts[pts.len() - 1], pts[0]));
+        }
+    };
+    match item {
+        Item::Point(p) => areas.push((square(*p, dot_radius(role)), main)),
+        Item::Joint { at, fixed } => {
+            if *fixed {
+                areas.push((support_outline(*at).to_vec(), true));
+            }
+            areas.push((square(*at, JOINT_RADIUS_MM), main));
+        }
+        Item::Segment(s) => lines.push((s.from, s.to)),
+        Item::Circle(c) => {
+            let full = Arc {
+                center: c.center,
+                radius: c.radius,
+                start: 0.0,
+                sweep: TAU,
+            };
+            chain(&arc_points(&full), true, &mut lines)
+        }
+        Item::Arc(a) => chain(&arc_points(a), false, &mut lines),
+        Item::Polyline { points, closed } | Item::Curve { points, closed } => {
+            chain(points, *closed, &mut lines)
+        }
+        Item::Vector { from, to } => {
+            lines.push((*from, *to));
+            if let Some(u) = (*to - *from).try_normalize() {
+                areas.push((
+                    Arrow::for_pen(Pen::for_role(role)).corners(*to, u).to_vec(),
+                    main,
+                ));
+            }
+        }
+        Item::Slider { at, angle } => areas.push((slider_corners(*at, *angle).to_vec(), main)),
+        Item::Guide { segment, hatch } => {
+            lines.push((segment.from, segment.to));
+            let lean = hatch_lean(segment, *hatch);
+            areas.push((
+                vec![
+                    segment.from,
+                    segment.to,
+                    segment.to + lean,
+                    segment.from + lean,
+                ],
+                false,
+            ));
+        }
+        Item::Dimension { from, to, offset } => {
+            let n = (*to - *from).normalize_or_zero().perp() * *offset;
+            lines.extend([(*from, *from + n), (*to, *to + n), (*from + n, *to + n)]);
+        }
+        Item::Angle(a) => chain(&arc_points(a), false, &mut lines),
+        Item::Text(_) => {}
+    }
+    let lines = lines.into_iter().map(|(a, b)| Outline {
+        shape: Shape::Line(map.pt(a), map.pt(b)),
+        main,
+    });
+    let areas = areas.into_iter().map(|(pts, main)| Outline {
+        shape: Shape::Area(pts.into_iter().map(|p| map.pt(p)).collect()),
+        main,
+    });
+    lines.chain(areas).collect()
+}
+
+/// Radius of a marked point's dot: larger for given data and results, mm.
+fn dot_radius(role: Role) -> f64 {
+    if matches!(role, Role::Given | Role::Result) {
+        0.6
+    } else {
+        0.4
+    }
+}
+
+/// The square of half-side `r` about `c`.
+fn square(c: DVec2, r: f64) -> Vec<DVec2> {
+    [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+        .map(|(x, y)| c + DVec2::new(x, y) * r)
+        .to_vec()
+}
+
+/// Points along an arc, at most 15° apart (nothing for a degenerate arc).
+fn arc_points(a: &Arc) -> Vec<DVec2> {
+    let sweep = a.sweep.clamp(-TAU, TAU);
+    if !(a.radius.is_finite() && a.radius > 0.0 && sweep.is_finite() && a.start.is_finite()) {
+        return Vec::new();
+    }
+    let n = pieces(sweep.abs(), TAU / 24.0).clamp(1, 24) + 1;
+    let piece = Arc { sweep, ..*a };
+    (0..=n).map(|i| piece.eval(i as f64 / n as f64)).collect()
 }
 
 /// Stroke whatever `build` draws with `pen`.
@@ -85,16 +209,9 @@ fn paint(map: Map, paint: Paint, build: impl FnOnce(&mut PathData)) -> Option<Ma
 
 fn item_marks(item: &Item, role: Role, pen: Pen, map: Map, out: &mut Vec<Mark>) {
     match item {
-        Item::Point(p) => {
-            let r = if matches!(role, Role::Given | Role::Result) {
-                0.6
-            } else {
-                0.4
-            };
-            out.extend(paint(map, Paint::Solid, |d| {
-                d.circle(*p, r);
-            }));
-        }
+        Item::Point(p) => out.extend(paint(map, Paint::Solid, |d| {
+            d.circle(*p, dot_radius(role));
+        })),
         Item::Joint { at, fixed } => {
             if *fixed {
                 ground_support(map, *at, out);
@@ -149,10 +266,22 @@ fn vector(map: Map, pen: Pen, from: DVec2, to: DVec2, out: &mut Vec<Mark>) {
     out.extend(arrow.head(map, to, u));
 }
 
+/// Depth of the ground line of a fixed pivot under the joint's centre, and its half-length, mm.
+const SUPPORT_MM: (f64, f64) = (6.0, 4.0);
+/// Spacing (and depth) of the hatch strokes under a fixed pivot's ground line, mm.
+const SUPPORT_HATCH_MM: f64 = 1.6;
+
+/// The box of a fixed pivot's symbol under the joint at `at` (legs, ground line, hatching).
+fn support_outline(at: DVec2) -> [DVec2; 4] {
+    let (depth, half) = SUPPORT_MM;
+    let (top, bottom) = (-JOINT_RADIUS_MM * 0.866, -depth - SUPPORT_HATCH_MM);
+    [(-half, top), (half, top), (half, bottom), (-half, bottom)].map(|(x, y)| at + DVec2::new(x, y))
+}
+
 /// The ГОСТ 2.770 fixed pivot under a joint: two legs down to a ground line, hatched below.
 fn ground_support(map: Map, at: DVec2, out: &mut Vec<Mark>) {
     let r = JOINT_RADIUS_MM;
-    let (depth, half) = (6.0, 4.0);
+    let (depth, half) = SUPPORT_MM;
     let leg = |sx: f64| {
         (
             at + DVec2::new(sx * r * 0.5, -r * 0.866),
@@ -169,7 +298,7 @@ fn ground_support(map: Map, at: DVec2, out: &mut Vec<Mark>) {
         );
     }));
     out.extend(stroke(map, Pen::THIN, |d| {
-        let step = 1.6;
+        let step = SUPPORT_HATCH_MM;
         for k in 0..=pieces(2.0 * half - step, step) {
             let top = at + DVec2::new(-half + step + k as f64 * step, -depth);
             d.segment(top, top + DVec2::new(-step, -step));
@@ -179,11 +308,16 @@ fn ground_support(map: Map, at: DVec2, out: &mut Vec<Mark>) {
 
 /// A slider block 10 × 6 mm, long side along `angle`, white inside.
 fn slider(map: Map, pen: Pen, at: DVec2, angle: f64) -> Option<Mark> {
+    paint(map, Paint::Opaque(pen), |d| {
+        d.polygon(&slider_corners(at, angle));
+    })
+}
+
+/// The corners of a slider block 10 × 6 mm centred at `at`, long side along `angle`.
+fn slider_corners(at: DVec2, angle: f64) -> [DVec2; 4] {
     let u = DVec2::from_angle(angle) * 5.0;
     let v = u.perp() * 0.6;
-    paint(map, Paint::Opaque(pen), |d| {
-        d.polygon(&[at - u - v, at + u - v, at + u + v, at - u + v]);
-    })
+    [at - u - v, at + u - v, at + u + v, at - u + v]
 }
 
 /// A guide: the line and 45° hatch strokes on the `hatch` side.
@@ -194,17 +328,24 @@ fn guide(map: Map, pen: Pen, s: &Segment, hatch: Side, out: &mut Vec<Mark>) {
     let Some(u) = (s.to - s.from).try_normalize() else {
         return;
     };
-    let n = match hatch {
-        Side::Left => u.perp(),
-        Side::Right => -u.perp(),
-    };
-    let lean = (n - u).normalize() * HATCH_MM;
+    let lean = hatch_lean(s, hatch);
     out.extend(stroke(map, Pen::THIN, |d| {
         for k in 0..pieces(s.length(), HATCH_MM) {
             let foot = s.from + u * (HATCH_MM * (k as f64 + 1.0));
             d.segment(foot, foot + lean);
         }
     }));
+}
+
+/// A hatch stroke of a guide: from its foot on the line, 45° back on the `hatch` side (zero
+/// for a degenerate guide).
+fn hatch_lean(s: &Segment, hatch: Side) -> DVec2 {
+    let u = (s.to - s.from).normalize_or_zero();
+    let n = match hatch {
+        Side::Left => u.perp(),
+        Side::Right => -u.perp(),
+    };
+    (n - u).normalize_or_zero() * HATCH_MM
 }
 
 /// A smooth curve through `pts`: Catmull–Rom pieces written as cubic Béziers.
@@ -253,7 +394,13 @@ fn dimension(map: Map, from: DVec2, to: DVec2, offset: f64, out: &mut Vec<Mark>)
 }
 
 /// The dimension text: over the middle of the dimension line, parallel to it, readable.
-fn dimension_text(map: Map, from: DVec2, to: DVec2, offset: f64, text: &str) -> Option<Placed> {
+pub(crate) fn dimension_text(
+    map: Map,
+    from: DVec2,
+    to: DVec2,
+    offset: f64,
+    text: &str,
+) -> Option<Placed> {
     let u = (to - from).try_normalize()?;
     let mid = map.pt((from + to) * 0.5 + u.perp() * offset);
     let s = map.dir(u);
@@ -287,68 +434,9 @@ fn angle_mark(map: Map, a: &Arc, out: &mut Vec<Mark>) {
     out.extend(arrow.head(map, at(start), at(start) - at(start + back)));
 }
 
-/// A label `gap` mm from its anchor toward `toward`, aligned so that the text lies on that
-/// side; centred on the anchor when `toward` is zero.
-fn label_text(label: &Label, map: Map, gap: f64) -> Placed {
-    let t = map.dir(label.toward).normalize_or_zero();
-    let c = map.pt(label.anchor) + t * gap;
-    let align = if t.x > 0.35 {
-        Align::Start
-    } else if t.x < -0.35 {
-        Align::End
-    } else {
-        Align::Middle
-    };
-    let h = LABEL_HEIGHT_MM;
-    let baseline = if t.y > 0.35 {
-        c.y + h
-    } else if t.y < -0.35 {
-        c.y
-    } else {
-        c.y + h * 0.5
-    };
-    Placed::new(DVec2::new(c.x, baseline), &label.text, h, align)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn placed(toward: DVec2) -> Placed {
-        let label = Label {
-            text: "B".into(),
-            anchor: DVec2::new(10.0, 10.0),
-            toward,
-        };
-        label_text(&label, Map::figure(DVec2::new(100.0, 100.0)), LABEL_GAP_MM)
-    }
-
-    #[test]
-    fn labels_sit_on_the_side_they_point_to() {
-        // Anchor (10, 10) in the figure is (110, 90) on the sheet.
-        let right = placed(DVec2::X);
-        assert_eq!(
-            (right.align, right.at),
-            (Align::Start, DVec2::new(112.5, 91.75))
-        );
-        let above = placed(DVec2::Y);
-        assert_eq!(
-            (above.align, above.at),
-            (Align::Middle, DVec2::new(110.0, 87.5))
-        );
-        let below = placed(-DVec2::Y);
-        assert_eq!(
-            (below.align, below.at),
-            (Align::Middle, DVec2::new(110.0, 96.0))
-        );
-        let left = placed(-DVec2::X);
-        assert_eq!(left.align, Align::End);
-        let centred = placed(DVec2::ZERO);
-        assert_eq!(
-            (centred.align, centred.at),
-            (Align::Middle, DVec2::new(110.0, 91.75))
-        );
-    }
 
     #[test]
     fn dimension_text_is_readable_and_above_its_line() {

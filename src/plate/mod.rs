@@ -30,6 +30,8 @@ pub mod chart;
 mod demo;
 mod fonts;
 mod items;
+mod labels;
+mod metrics;
 mod path;
 mod raster;
 mod sheet;
@@ -46,6 +48,7 @@ use thiserror::Error;
 
 pub use demo::{demo_mechanism, demo_plate, demo_velocity_plan};
 pub use fonts::font_database;
+pub use labels::{layout, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR};
 pub use raster::{to_png, to_png_dpi};
 pub use sheet::{Sheet, SheetSize, TitleBlock};
 pub use style::Pen;
@@ -79,6 +82,42 @@ impl Rect {
     /// The centre.
     pub fn center(&self) -> DVec2 {
         (self.min + self.max) * 0.5
+    }
+    /// (width, height), mm.
+    pub fn size(&self) -> DVec2 {
+        self.max - self.min
+    }
+    /// True when the two rectangles share interior points (touching edges do not count).
+    pub fn intersects(&self, other: &Rect) -> bool {
+        let s = self.max.min(other.max) - self.min.max(other.min);
+        s.x > 0.0 && s.y > 0.0
+    }
+    /// Area of the common part, mm².
+    pub fn overlap(&self, other: &Rect) -> f64 {
+        let s = self.max.min(other.max) - self.min.max(other.min);
+        s.x.max(0.0) * s.y.max(0.0)
+    }
+    /// True when `other` lies inside this rectangle (edges included).
+    pub fn contains(&self, other: &Rect) -> bool {
+        other.min.cmpge(self.min).all() && other.max.cmple(self.max).all()
+    }
+    /// The smallest rectangle holding both.
+    pub fn union(&self, other: &Rect) -> Rect {
+        Rect::new(self.min.min(other.min), self.max.max(other.max))
+    }
+    /// The rectangle grown by `d` on every side (shrunk for a negative `d`).
+    pub fn inflate(&self, d: f64) -> Rect {
+        Rect::new(self.min - DVec2::splat(d), self.max + DVec2::splat(d))
+    }
+    /// The box of a set of points; `None` when there is no finite one.
+    pub fn around(points: impl IntoIterator<Item = DVec2>) -> Option<Rect> {
+        let (lo, hi) = points
+            .into_iter()
+            .filter(|p| p.is_finite())
+            .fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p), hi.max(p))
+            });
+        lo.is_finite().then(|| Rect::new(lo, hi))
     }
 }
 

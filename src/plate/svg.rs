@@ -1,12 +1,11 @@
 //! The SVG writer: a plate as one deterministic SVG document printing 1:1 in millimetres.
 
 use super::items::step_marks;
+use super::labels::{layout, text_block_lines, Layout};
 use super::path::{num, Map, PathData};
 use super::sheet::{frame_marks, title_block_marks};
 use super::style::{Mark, Paint, Pen};
-use super::text::{Align, Placed};
-use super::{Plate, TextBlock, View, CAPTION_BAND_MM};
-use crate::geom::DVec2;
+use super::View;
 use svg::node::element::{Group, Path, Rectangle};
 use svg::node::Blob;
 use svg::Document;
@@ -19,8 +18,10 @@ pub const CAPTION_HEIGHT_MM: f64 = 5.0;
 
 /// The plate as an SVG document: `width`/`height` in mm and a `viewBox` in mm, so it prints
 /// 1:1. Deterministic: the same plate always gives the same bytes (stable element order,
-/// stable ids `view-{k}-step-{id}`, coordinates rounded to 0.01 mm).
-pub fn to_svg(plate: &Plate) -> String {
+/// stable ids `view-{k}-step-{id}`, coordinates rounded to 0.01 mm). The texts are written
+/// where [`layout`](super::layout) places them.
+pub fn to_svg(plate: &super::Plate) -> String {
+    let laid = layout(plate);
     let (w, h) = (num(plate.sheet.width_mm()), num(plate.sheet.height_mm()));
     let background = Rectangle::new()
         .set("id", "background")
@@ -45,12 +46,12 @@ pub fn to_svg(plate: &Plate) -> String {
             title_block_marks(&plate.sheet, &plate.title_block, plate.lang),
         ));
     for (k, view) in plate.views.iter().enumerate() {
-        doc = doc.add(view_group(k, view));
+        doc = doc.add(view_group(k, view, &laid));
     }
     let texts = plate
         .texts
         .iter()
-        .flat_map(text_block)
+        .flat_map(text_block_lines)
         .map(Mark::Text)
         .collect();
     doc = doc.add(group("texts", texts));
@@ -101,8 +102,8 @@ fn pen_attrs(p: Path, pen: Pen) -> Path {
     }
 }
 
-/// A view: one group per step (in order), then the caption under the figure's bounds.
-fn view_group(k: usize, view: &View) -> Group {
+/// A view: one group per step (in order), its labels, then its caption.
+fn view_group(k: usize, view: &View, laid: &Layout) -> Group {
     let map = Map::figure(view.origin);
     let mut g = Group::new().set("id", format!("view-{k}"));
     for step in &view.figure.steps {
@@ -111,36 +112,20 @@ fn view_group(k: usize, view: &View) -> Group {
             step_marks(step, map),
         ));
     }
-    if let (Some(caption), Some((lo, hi))) = (&view.caption, view.figure.bounds()) {
-        let bottom = view.to_sheet(DVec2::new((lo.x + hi.x) * 0.5, lo.y));
-        let at = bottom + DVec2::new(0.0, CAPTION_BAND_MM - CAPTION_HEIGHT_MM);
+    let labels: Vec<Mark> = laid
+        .labels
+        .iter()
+        .filter(|l| l.view == k)
+        .map(|l| Mark::Text(l.placed.clone()))
+        .collect();
+    if !labels.is_empty() {
+        g = g.add(group(&format!("view-{k}-labels"), labels));
+    }
+    if let Some(caption) = &laid.views[k].caption_text {
         g = g.add(group(
             &format!("view-{k}-caption"),
-            vec![Mark::Text(Placed::centred(
-                at,
-                caption,
-                CAPTION_HEIGHT_MM,
-                Align::Middle,
-            ))],
+            vec![Mark::Text(caption.clone())],
         ));
     }
     g
-}
-
-/// The lines of a text block, two text heights apart.
-fn text_block(block: &TextBlock) -> Vec<Placed> {
-    let h = block.size_mm;
-    block
-        .lines
-        .iter()
-        .enumerate()
-        .map(|(i, line)| {
-            Placed::new(
-                block.at + DVec2::new(0.0, h * (1.0 + 2.0 * i as f64)),
-                line,
-                h,
-                Align::Start,
-            )
-        })
-        .collect()
 }

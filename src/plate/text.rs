@@ -5,7 +5,9 @@
 //! covers one "word": a run of digits (`b_3b_1` is b₃b₁), or a run of letters followed by
 //! digits (`V_B2`, `φ_max`). Everything else is normal text.
 
+use super::metrics::glyph;
 use super::path::{num, Map};
+use super::Rect;
 use crate::geom::DVec2;
 use std::fmt::Write as _;
 
@@ -168,6 +170,50 @@ pub fn approx_width(markup: &str, height_mm: f64) -> f64 {
     em * em_for_height(height_mm)
 }
 
+/// What a text covers, relative to the start of its baseline, mm, y down: the advance (how
+/// far the pen moves, which `text-anchor` aligns) and the box of its ink, widened to the
+/// advance and to the band from the baseline up to the height of capitals, so that every
+/// text occupies at least its line.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Extent {
+    /// Sum of the advances, mm.
+    pub advance: f64,
+    /// Top-left corner of the box.
+    pub min: DVec2,
+    /// Bottom-right corner of the box.
+    pub max: DVec2,
+}
+
+/// The extent of the markup at text size `height_mm` (height of capitals), measured with the
+/// bundled face's metrics, scripts at their size and shift as [`Placed`] writes them.
+pub fn measure(markup: &str, height_mm: f64) -> Extent {
+    let em = em_for_height(height_mm);
+    let mut pen = 0.0;
+    let mut min = DVec2::new(0.0, -height_mm);
+    let mut max = DVec2::ZERO;
+    for run in parse(markup) {
+        let (size, dy) = match run.script {
+            Script::Normal => (em, 0.0),
+            Script::Sub => (em * SCRIPT_SCALE, SUB_SHIFT_EM * em),
+            Script::Sup => (em * SCRIPT_SCALE, -SUP_SHIFT_EM * em),
+        };
+        for c in run.text.chars() {
+            let g = glyph(c);
+            if let Some((x0, y0, x1, y1)) = g.ink {
+                min = min.min(DVec2::new(pen + x0 * size, dy - y1 * size));
+                max = max.max(DVec2::new(pen + x1 * size, dy - y0 * size));
+            }
+            pen += g.advance * size;
+        }
+    }
+    max.x = max.x.max(pen);
+    Extent {
+        advance: pen,
+        min,
+        max,
+    }
+}
+
 /// Horizontal alignment of a text at its position.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Align {
@@ -223,6 +269,33 @@ impl Placed {
         self.length = Some(width);
         self
     }
+    /// The box the text covers on the sheet ([`measure`] aligned, condensed to `length`
+    /// and rotated as written); the axis-aligned box of the rotated box when rotated.
+    pub(crate) fn bounds(&self) -> Rect {
+        let e = measure(&self.markup, self.height);
+        let k = match self.length {
+            Some(len) if e.advance > 0.0 => len / e.advance,
+            _ => 1.0,
+        };
+        let shift = match self.align {
+            Align::Start => 0.0,
+            Align::Middle => -0.5 * e.advance * k,
+            Align::End => -e.advance * k,
+        };
+        let (x0, x1) = (e.min.x * k + shift, e.max.x * k + shift);
+        let corners = [
+            DVec2::new(x0, e.min.y),
+            DVec2::new(x1, e.min.y),
+            DVec2::new(x1, e.max.y),
+            DVec2::new(x0, e.max.y),
+        ];
+        let turn = DVec2::from_angle(self.rotate.to_radians());
+        let turned = corners.map(|c| self.at + turn.rotate(c));
+        let lo = turned.iter().fold(DVec2::INFINITY, |m, p| m.min(*p));
+        let hi = turned.iter().fold(DVec2::NEG_INFINITY, |m, p| m.max(*p));
+        Rect::new(lo, hi)
+    }
+
     /// A text whose capitals are vertically centred on `at`.
     pub(crate) fn centred(at: DVec2, markup: &str, height: f64, align: Align) -> Self {
         Self::new(at + DVec2::new(0.0, height * 0.5), markup, height, align)
@@ -361,6 +434,61 @@ mod tests {
         assert_eq!(runs("_{}"), expect(&[("n", "_")]));
         assert!(parse("").is_empty());
         assert_eq!(plain("μ_{l} = 1"), "μl = 1");
+    }
+
+    /// The box of a text as resvg draws it (the ink of its glyphs), sheet mm.
+    fn rendered_box(t: &Placed) -> Rect {
+        use resvg::usvg::{Node, Options, Tree};
+        let svg = format!(
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="200" height="100" viewBox="0 0 200 100" font-family="DejaVu Sans" font-style="italic">{}</svg>"#,
+            t.to_xml("t")
+        );
+        let opt = Options {
+            fontdb: super::super::font_database(),
+            ..Options::default()
+        };
+        let tree = Tree::from_str(&svg, &opt).expect("svg");
+        fn first_text(g: &resvg::usvg::Group) -> Option<&resvg::usvg::Text> {
+            g.children().iter().find_map(|n| match n {
+                Node::Text(t) => Some(t.as_ref()),
+                Node::Group(g) => first_text(g),
+                _ => None,
+            })
+        }
+        let text = first_text(tree.root()).expect("a text");
+        let b = text.flattened().abs_bounding_box();
+        Rect::new(
+            DVec2::new(b.left().into(), b.top().into()),
+            DVec2::new(b.right().into(), b.bottom().into()),
+        )
+    }
+
+    #[test]
+    fn measured_boxes_hold_what_is_rendered() {
+        let texts = [
+            ("p ≡ b_3 ≡ d", Align::Start, 0.0),
+            ("s^{″}_{3}", Align::Middle, 0.0),
+            ("e^{′}_5", Align::End, 0.0),
+            ("План положений, μ_l = 0,004 м/мм", Align::Middle, 0.0),
+            ("8′", Align::Start, -90.0),
+            ("ω_{3}(φ), dω_{3}/dφ", Align::Start, 30.0),
+        ];
+        for (markup, align, rotate) in texts {
+            let mut t = Placed::new(DVec2::new(100.0, 50.0), markup, 3.5, align);
+            t.rotate = rotate;
+            let (ours, drawn) = (t.bounds(), rendered_box(&t));
+            // Ours holds the ink (kerning moves glyphs by hundredths of a mm) and, unless
+            // turned obliquely, is no more than the line's band larger.
+            assert!(
+                ours.inflate(0.1).contains(&drawn),
+                "{markup}: {ours:?} does not hold {drawn:?}"
+            );
+            let slack = ours.size() - drawn.size();
+            assert!(
+                rotate % 90.0 != 0.0 || slack.max_element() < 1.5,
+                "{markup}: {ours:?} vs {drawn:?}"
+            );
+        }
     }
 
     #[test]

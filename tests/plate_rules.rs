@@ -1,0 +1,257 @@
+//! Rules every plate of every scene in `constructions/` must meet (issue 7), checked on the
+//! plate's layout ([`tmm::plate::layout`]) — the same boxes the SVG writer writes from:
+//! - no two texts of the drawing overlap: labels (a joint label `p ≡ b₃ ≡ d` is one box) and
+//!   view captions among themselves, and labels with the text blocks and tables;
+//! - everything drawn (every view's items, its caption and labels, the text blocks, the
+//!   tables) lies inside the frame and off the title block and the designation box.
+
+use glam::DVec2;
+use std::path::PathBuf;
+use tmm::construct::Drafting;
+use tmm::plate::{layout, Layout, Plate, Rect};
+use tmm::scale::Lang;
+use tmm::scene::{self, PlateKind};
+use tmm::study::Session;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The sheets of plate `plate` of the scene `constructions/<scene_name>.toml`, in Russian.
+fn sheets_of(scene_name: &str, plate: &str) -> Vec<Plate> {
+    let file = format!("constructions/{scene_name}.toml");
+    let built = tmm::load(&root().join(file)).map(|s| {
+        let kind = PlateKind::parse(plate).expect("a plate kind");
+        tmm::build(&Session::new(&s, Drafting::EXACT), kind, Lang::Ru)
+    });
+    match built {
+        Ok(Ok(p)) => p,
+        Ok(Err(e)) => panic!("{scene_name}/{plate}: {e}"),
+        Err(e) => panic!("{scene_name}: {e}"),
+    }
+}
+
+/// The first sheet of a plate.
+fn plate_of(scene_name: &str, plate: &str) -> Plate {
+    sheets_of(scene_name, plate).remove(0)
+}
+
+/// The layout of every sheet of a plate, with the sheet's name.
+fn laid_out(scene_name: &str, plate: &str) -> Vec<(String, Layout)> {
+    sheets_of(scene_name, plate)
+        .iter()
+        .map(|p| (p.name.clone(), layout(p)))
+        .collect()
+}
+
+/// A named box of the layout.
+struct Item {
+    name: String,
+    rect: Rect,
+}
+
+fn labels(l: &Layout) -> Vec<Item> {
+    l.labels
+        .iter()
+        .map(|x| Item {
+            name: format!("view {} label “{}”", x.view, x.text),
+            rect: x.rect,
+        })
+        .collect()
+}
+
+fn captions(l: &Layout) -> Vec<Item> {
+    l.views
+        .iter()
+        .enumerate()
+        .filter_map(|(k, v)| {
+            v.caption.map(|rect| Item {
+                name: format!("view {k} caption"),
+                rect,
+            })
+        })
+        .collect()
+}
+
+fn blocks(l: &Layout) -> Vec<Item> {
+    let texts = l.texts.iter().enumerate().map(|(k, &rect)| Item {
+        name: format!("text block {k}"),
+        rect,
+    });
+    let tables = l.tables.iter().enumerate().map(|(k, &rect)| Item {
+        name: format!("table {k}"),
+        rect,
+    });
+    texts.chain(tables).collect()
+}
+
+/// Every pair of overlapping texts, described.
+fn overlaps(l: &Layout) -> Vec<String> {
+    let texts: Vec<Item> = labels(l).into_iter().chain(captions(l)).collect();
+    let mut out = Vec::new();
+    for (i, a) in texts.iter().enumerate() {
+        for b in texts[..i].iter().chain(&blocks(l)) {
+            if a.rect.intersects(&b.rect) {
+                out.push(format!("{} / {}", a.name, b.name));
+            }
+        }
+    }
+    out
+}
+
+/// Everything drawn outside the frame or over the title block or the designation box.
+fn outside(l: &Layout) -> Vec<String> {
+    let drawn = l.views.iter().enumerate().filter_map(|(k, v)| {
+        v.drawn.map(|rect| Item {
+            name: format!("view {k}"),
+            rect,
+        })
+    });
+    let all = drawn.chain(captions(l)).chain(labels(l)).chain(blocks(l));
+    all.filter_map(|x| {
+        let mut why = Vec::new();
+        if !l.frame.contains(&x.rect) {
+            why.push("leaves the frame");
+        }
+        if x.rect.intersects(&l.title_block) {
+            why.push("covers the title block");
+        }
+        if x.rect.intersects(&l.designation_box) {
+            why.push("covers the designation box");
+        }
+        (!why.is_empty()).then(|| format!("{} {} ({:?})", x.name, why.join(", "), x.rect))
+    })
+    .collect()
+}
+
+fn assert_none(what: &str, scene: &str, plate: &str, found: Vec<String>) {
+    assert!(
+        found.is_empty(),
+        "{scene}/{plate}: {} {what}:\n  {}",
+        found.len(),
+        found.join("\n  ")
+    );
+}
+
+fn no_overlaps(scene: &str, plate: &str) {
+    for (sheet, l) in laid_out(scene, plate) {
+        assert_none("overlapping texts", scene, &sheet, overlaps(&l));
+    }
+}
+
+fn inside_frame(scene: &str, plate: &str) {
+    for (sheet, l) in laid_out(scene, plate) {
+        assert_none("items off the field", scene, &sheet, outside(&l));
+    }
+}
+
+macro_rules! rules {
+    ($($overlap:ident, $frame:ident: $scene:literal / $plate:literal),* $(,)?) => {
+        $(
+            #[test]
+            fn $overlap() {
+                no_overlaps($scene, $plate);
+            }
+            #[test]
+            fn $frame() {
+                inside_frame($scene, $plate);
+            }
+        )*
+        const LISTED: &[(&str, &str)] = &[$(($scene, $plate)),*];
+    };
+}
+
+rules! {
+    shaper_positions_texts_apart, shaper_positions_inside_frame: "shaper" / "positions",
+    shaper_kinematics_texts_apart, shaper_kinematics_inside_frame: "shaper" / "kinematics",
+    slider_crank_positions_texts_apart, slider_crank_positions_inside_frame: "slider-crank" / "positions",
+    slider_crank_kinematics_texts_apart, slider_crank_kinematics_inside_frame: "slider-crank" / "kinematics",
+    four_bar_positions_texts_apart, four_bar_positions_inside_frame: "four-bar" / "positions",
+    four_bar_kinematics_texts_apart, four_bar_kinematics_inside_frame: "four-bar" / "kinematics",
+    six_bar_positions_texts_apart, six_bar_positions_inside_frame: "six-bar" / "positions",
+    six_bar_kinematics_texts_apart, six_bar_kinematics_inside_frame: "six-bar" / "kinematics",
+    tangent_positions_texts_apart, tangent_positions_inside_frame: "tangent" / "positions",
+    tangent_kinematics_texts_apart, tangent_kinematics_inside_frame: "tangent" / "kinematics",
+}
+
+/// Every plate of every scene in `constructions/` is checked above.
+#[test]
+fn every_plate_of_every_scene_is_checked() {
+    let mut missing = Vec::new();
+    for entry in std::fs::read_dir(root().join("constructions")).expect("constructions/") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+        for k in &s.plates {
+            if !LISTED.contains(&(s.stem.as_str(), k.stem())) {
+                missing.push(format!("{}/{}", s.stem, k.stem()));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "plates not checked: {missing:?}");
+}
+
+/// The rules see what they are meant to: a view moved off the sheet and onto another one
+/// breaks both.
+#[test]
+fn the_rules_catch_a_misplaced_view() {
+    let mut p = plate_of("shaper", "kinematics");
+    let l = layout(&p);
+    assert!(l.views.iter().all(|v| v.drawn.is_some()));
+    assert!(l.labels.len() > 100 && !l.texts.is_empty() && !l.tables.is_empty());
+    // Two velocity plans (views 3 and 4, after the plan of positions and the diagram stack)
+    // drawn at one place: their captions collide.
+    let mut copy = p.views[3].clone();
+    copy.origin = p.views[4].origin;
+    p.views.push(copy);
+    p.views[0].origin -= DVec2::new(100.0, 0.0);
+    let l = layout(&p);
+    assert!(!overlaps(&l).is_empty());
+    let out = outside(&l);
+    assert!(out.iter().any(|x| x.starts_with("view 0 ")), "{out:?}");
+}
+
+/// Every label of every step is written once: coincident ones in one joint label, the pole
+/// first, and the SVG writes exactly the layout's labels.
+#[test]
+fn every_label_is_written_once() {
+    let p = plate_of("shaper", "kinematics");
+    let l = layout(&p);
+    let svg = tmm::plate::to_svg(&p);
+    for (k, view) in p.views.iter().enumerate() {
+        let mut labelled: Vec<_> = view
+            .figure
+            .steps
+            .iter()
+            .filter(|s| s.label.is_some())
+            .map(|s| s.id)
+            .collect();
+        let mut written: Vec<_> = l
+            .labels
+            .iter()
+            .filter(|x| x.view == k)
+            .flat_map(|x| x.steps.iter().copied())
+            .collect();
+        labelled.sort();
+        written.sort();
+        assert_eq!(labelled, written, "view {k}");
+        let texts = svg
+            .matches(&format!(r#"id="view-{k}-labels-text-"#))
+            .count();
+        assert_eq!(texts, l.labels.iter().filter(|x| x.view == k).count());
+    }
+    let joint: Vec<_> = l.labels.iter().filter(|x| x.steps.len() > 1).collect();
+    assert!(
+        !joint.is_empty(),
+        "the shaper's plans have coincident images"
+    );
+    for x in joint {
+        let names: Vec<_> = x.text.split(tmm::plate::JOINT_SEPARATOR).collect();
+        assert_eq!(names.len(), x.steps.len(), "{}", x.text);
+        if names.contains(&"p") {
+            assert_eq!(names[0], "p", "{}", x.text);
+        }
+    }
+}
