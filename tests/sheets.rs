@@ -205,3 +205,46 @@ fn out_of_range_numbers_are_refused_when_the_scene_is_read() {
         assert!(err.contains(key), "{key}: {err}");
     }
 }
+
+#[test]
+fn an_unknown_position_label_names_the_valid_ones() {
+    let text = shaper_text().replace(
+        "acceleration_positions = [\"3\", \"10\"]",
+        "acceleration_positions = [\"3\", \"7′\"]",
+    );
+    let s = scene::parse(&text, &root().join("x.toml")).expect("scene");
+    let err = Session::new(&s, Drafting::EXACT)
+        .report()
+        .expect_err("no 7′")
+        .to_string();
+    assert!(
+        err.contains("there is no position 7′; the positions are 1…12, 8′"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_long_table_goes_on_inside_the_frame() {
+    // 24 and 36 positions: the analytic table grows; every item stays inside the frame.
+    for count in [24, 36] {
+        let text = shaper_text().replace("count = 12", &format!("count = {count}"));
+        let s = scene::parse(&text, &root().join("x.toml")).expect("scene");
+        let session = Session::new(&s, Drafting::EXACT);
+        let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+        for (_, p) in &all {
+            let l = tmm::plate::layout(p);
+            let f = l.frame;
+            let inside = |r: &tmm::plate::Rect| {
+                r.min.x >= f.min.x && r.min.y >= f.min.y && r.max.x <= f.max.x && r.max.y <= f.max.y
+            };
+            for r in l.tables.iter().chain(&l.texts) {
+                assert!(inside(r), "count {count}, {}: {r:?}", p.name);
+                assert!(
+                    !r.intersects(&l.title_block),
+                    "count {count}, {}: {r:?}",
+                    p.name
+                );
+            }
+        }
+    }
+}

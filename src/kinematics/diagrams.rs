@@ -5,7 +5,7 @@ use super::{extent, numbered, pole_and_scale, turn_diagram, KinError, Kinematics
 use super::{DIAGRAM_GAP, DIAGRAM_MM};
 use crate::calculus::{self, Derivative, Diagram, Layout, Scales};
 use crate::check::{Key, Method, Row, Symbol};
-use crate::construct::{Context, Drafting, Figure, Recorder};
+use crate::construct::{Context, Drafting, Figure, Item, Recorder, Role};
 use crate::geom::DVec2;
 use crate::linkage::{plain, Output, PositionPlan};
 use crate::scale::{Quantity, Scale};
@@ -146,6 +146,17 @@ pub fn diagrams(
         .differentiate(&mut rec1, &src, scales, h1, &lay1)
         .map_err(|e| fail("dS/dφ", e))?;
     let d1 = first.diagram().map_err(|e| fail("dS/dφ", e))?;
+    // The positions' numbers under the S diagram's φ axis, as on the plan of positions.
+    for (idx, (_, p)) in numbered.iter().enumerate() {
+        let at = DVec2::new(scales.x.to_mm(src.x(idx)), 0.0);
+        let id = rec1.draw(
+            format!("position {} on the φ axis", p.label),
+            Item::Text(at),
+            Role::Dimension,
+            &[],
+        );
+        rec1.label(id, p.label.clone(), at, DVec2::new(0.0, -1.0));
+    }
     let scales2 = Scales {
         x: scales.x,
         y: mu1,

@@ -99,7 +99,7 @@ pub enum KinError {
         name: String,
     },
     /// A position label that the plan of positions does not have.
-    #[error("kinematics.acceleration_positions: there is no position {label}; the positions are {}", .valid.join(", "))]
+    #[error("kinematics.acceleration_positions: there is no position {label}; the positions are {}", position_list(.valid))]
     NoSuchPosition {
         /// The label given.
         label: String,
@@ -138,6 +138,19 @@ pub enum KinError {
         /// The plan's position count.
         count: usize,
     },
+}
+
+/// Position labels as a reader lists them: the numbered run `1…12`, then the others (`8′`).
+fn position_list(labels: &[String]) -> String {
+    let numbers: Vec<u32> = labels.iter().filter_map(|l| l.parse().ok()).collect();
+    let run = numbers.len() > 2 && numbers.iter().zip(1..).all(|(&n, k)| n == k);
+    let mut parts: Vec<String> = if run {
+        vec![format!("1…{}", numbers.len())]
+    } else {
+        numbers.iter().map(u32::to_string).collect()
+    };
+    parts.extend(labels.iter().filter(|l| l.parse::<u32>().is_err()).cloned());
+    parts.join(", ")
 }
 
 fn kind_name(kind: PlanKind) -> &'static str {

@@ -119,11 +119,32 @@ fn number_links(rec: &mut Recorder, anchors: &[(u32, DVec2)]) {
 }
 
 impl super::positions::PositionPlan {
-    /// The structural scheme of the plan's mechanism drawn from its position 1 at `scale`
-    /// (see [`structure_figure`]).
+    /// The structural scheme of the plan's mechanism drawn at `scale` (see
+    /// [`structure_figure`]) from the position that shows its links best: not an extreme
+    /// position (where a crank and its rocker or slot fold into line), and of those the one
+    /// whose construction crossed at the widest angle (first on a tie).
     pub fn scheme(&self, st: &Structure, scale: Scale, ctx: &Context) -> Figure {
         let plan_mu = self.figure.scale.value();
-        match self.positions.first() {
+        let openness = |p: &&super::positions::PlanPosition| {
+            p.built
+                .crossing
+                .iter()
+                .copied()
+                .fold(f64::INFINITY, f64::min)
+        };
+        let shown = self
+            .positions
+            .iter()
+            .filter(|p| !p.extreme)
+            .fold(
+                None,
+                |best: Option<&super::positions::PlanPosition>, p| match best {
+                    Some(b) if openness(&b) >= openness(&p) => Some(b),
+                    _ => Some(p),
+                },
+            )
+            .or(self.positions.first());
+        match shown {
             Some(first) => structure_figure(&self.program, st, &first.built, plan_mu, scale, ctx),
             None => Figure {
                 title: String::new(),

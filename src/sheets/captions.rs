@@ -65,6 +65,10 @@ pub(super) enum Text {
     Millimetre,
     /// No diagrams over the turn: the mechanism cannot pass φ₁ = …
     NoDiagrams,
+    /// Lengths read off the drawing to …
+    ReadTo,
+    /// Lengths read off the drawing exactly
+    ReadExactly,
     /// δ mean, %
     MeanError,
     /// δ max, %
@@ -142,6 +146,16 @@ impl Text {
                 "Диаграммы по углу поворота не строятся: механизм не проходит положение",
                 "Діаграми за кутом повороту не будуються: механізм не проходить положення",
                 "No diagrams over the crank turn: the mechanism cannot pass",
+            ),
+            Text::ReadTo => (
+                "Длины считаны с чертежа с точностью",
+                "Довжини зчитано з креслення з точністю",
+                "Lengths read off the drawing to",
+            ),
+            Text::ReadExactly => (
+                "Длины считаны с чертежа точно (без округления)",
+                "Довжини зчитано з креслення точно (без округлення)",
+                "Lengths read off the drawing exactly (no rounding)",
             ),
             Text::MeanError => ("δ ср., %", "δ сер., %", "δ mean, %"),
             Text::MaxError => ("δ max, %", "δ max, %", "δ max, %"),

@@ -91,13 +91,16 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         caption,
         keyed("mechanism.scale_l", sc.l),
     ));
-    let mut lines = vec![format!(
-        "{}: {}; {}: {}",
-        Text::VelocityPlans.get(lang),
-        sc.v.caption(lang),
-        Text::AccelerationPlans.get(lang),
-        sc.a.caption(lang)
-    )];
+    let mut lines = vec![
+        super::drafting_line(session.drafting(), lang),
+        format!(
+            "{}: {}; {}: {}",
+            Text::VelocityPlans.get(lang),
+            sc.v.caption(lang),
+            Text::AccelerationPlans.get(lang),
+            sc.a.caption(lang)
+        ),
+    ];
     if let Some(d) = &a.diagrams {
         let w = a.w1.abs();
         let dec = |x: f64| format_sig(x, 4, lang);

@@ -91,6 +91,21 @@ fn title_block(scene: &Scene, sheet_title: &str, plan: Scale, lang: Lang) -> Tit
     }
 }
 
+/// The line that states how lengths were read off the drawing (the drafting model).
+fn drafting_line(d: crate::construct::Drafting, lang: Lang) -> String {
+    let r = d.resolution_mm();
+    if r > 0.0 {
+        format!(
+            "{} {} {}",
+            captions::Text::ReadTo.get(lang),
+            crate::scale::format_sig(r, 3, lang),
+            captions::Text::Millimetre.get(lang)
+        )
+    } else {
+        captions::Text::ReadExactly.get(lang).to_string()
+    }
+}
+
 /// Build one plate of the session's scene, in `lang`: the sheets it takes (usually one; a
 /// plate whose views need more room continues on `name-2`, …).
 pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<Plate>, BuildError> {

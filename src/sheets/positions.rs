@@ -54,6 +54,8 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let mut lines = structure_lines(&st, m, lang);
     lines.push(String::new());
     lines.extend(extreme_lines(&plan, lang));
+    lines.push(String::new());
+    lines.push(super::drafting_line(session.drafting(), lang));
     let blocks = vec![
         scheme_block(&plan, &st, extent, lang)?,
         Block::view(
