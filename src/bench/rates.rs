@@ -111,3 +111,31 @@ pub(super) fn plate_time(s: &Subject, kind: PlateKind, reps: Reps) -> Result<f64
         detail: e.to_string(),
     })
 }
+
+/// PNG resolution of the scene timing, dots per inch (the `render` default).
+pub(super) const PNG_DPI: u32 = 150;
+
+/// Seconds to turn every plate of a scene, already written as SVG, into PNG at
+/// [`PNG_DPI`] — what `tmm render` spends on PNGs.
+pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
+    let session = Session::new(&s.scene, Drafting::EXACT);
+    let mut svgs = Vec::new();
+    for &kind in &s.scene.plates {
+        let plate = sheets::build(&session, kind, Lang::Ru).map_err(|e| BenchError::Plate {
+            scene: s.scene.stem.clone(),
+            plate: kind.stem().into(),
+            detail: e.to_string(),
+        })?;
+        svgs.push(crate::plate::to_svg(&plate));
+    }
+    best_time(reps.best_of.min(3), || {
+        svgs.iter()
+            .map(|svg| crate::plate::to_png_dpi(svg, PNG_DPI as f32))
+            .collect::<Result<Vec<_>, _>>()
+    })
+    .map_err(|e| BenchError::Plate {
+        scene: s.scene.stem.clone(),
+        plate: "png".into(),
+        detail: e.to_string(),
+    })
+}
