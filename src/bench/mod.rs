@@ -311,7 +311,7 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
         name: format!("png {} at {PNG_DPI} dpi", shaper.scene.stem),
         per_second: 1.0 / png_time(&shaper, reps)?,
         note: format!(
-            "every plate of the scene ({}), SVG → PNG as `tmm render` writes them",
+            "every plate of the scene ({}), SVG → PNG in parallel, as `tmm render` writes them",
             shaper.scene.plates.len()
         ),
     });

@@ -116,7 +116,7 @@ pub(super) fn plate_time(s: &Subject, kind: PlateKind, reps: Reps) -> Result<f64
 pub(super) const PNG_DPI: u32 = 150;
 
 /// Seconds to turn every plate of a scene, already written as SVG, into PNG at
-/// [`PNG_DPI`] — what `tmm render` spends on PNGs.
+/// [`PNG_DPI`], the plates in parallel — what `tmm render` spends on PNGs.
 pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
     let session = Session::new(&s.scene, Drafting::EXACT);
     let mut svgs = Vec::new();
@@ -129,8 +129,8 @@ pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
         svgs.push(crate::plate::to_svg(&plate));
     }
     best_time(reps.best_of.min(3), || {
-        svgs.iter()
-            .map(|svg| crate::plate::to_png_dpi(svg, PNG_DPI as f32))
+        crate::plate::to_png_dpi_all(&svgs, PNG_DPI as f32)
+            .into_iter()
             .collect::<Result<Vec<_>, _>>()
     })
     .map_err(|e| BenchError::Plate {
