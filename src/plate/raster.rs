@@ -27,7 +27,8 @@ struct Tiling {
     /// Largest tile side, px: tiny-skia anti-aliases a path only within 8191 px of the canvas
     /// origin (it draws it aliased beyond), so no tile is larger.
     side: u32,
-    /// Largest tile, pixels (2²⁵ ≈ 128 MiB of RGBA): a 150 dpi A1 sheet is one tile.
+    /// Largest band (a row of tiles), pixels (2²⁵ ≈ 128 MiB of RGBA): a 150 dpi A1 sheet is
+    /// one tile.
     pixels: u64,
 }
 
@@ -42,7 +43,7 @@ impl Tiling {
     fn tile(self, w: u32, h: u32) -> (u32, u32) {
         let side = self.side.max(1);
         let tw = w.div_ceil(w.div_ceil(side).max(1)).max(1);
-        let th = (self.pixels / u64::from(tw)).clamp(1, u64::from(side.min(h.max(1))));
+        let th = (self.pixels / u64::from(w.max(1))).clamp(1, u64::from(side.min(h.max(1))));
         (tw, th as u32)
     }
 }
@@ -310,11 +311,11 @@ mod tests {
             side: 100,
             pixels: 2_000,
         };
-        assert_eq!(t.tile(250, 80), (84, 23));
+        assert_eq!(t.tile(250, 80), (84, 8));
         assert_eq!(t.tile(50, 10), (50, 10));
         assert_eq!(TILING.tile(4967, 3508), (4967, 3508));
         let (tw, th) = TILING.tile(19866, 14031);
-        assert!(tw <= 8191 && th <= 8191 && u64::from(tw) * u64::from(th) <= 1 << 25);
+        assert!(tw <= 8191 && th <= 8191 && 19866 * u64::from(th) <= 1 << 25);
         assert_eq!(t.tile(1, 1), (1, 1));
     }
 
@@ -328,7 +329,7 @@ mod tests {
             300.0,
             Tiling {
                 side: 128,
-                pixels: 128 * 50,
+                pixels: 709 * 50,
             },
         )
         .unwrap();
