@@ -187,7 +187,10 @@ impl Job<'_> {
             Channels::Rgb => png::ColorType::Rgb,
         });
         encoder.set_depth(png::BitDepth::Eight);
+        // fdeflate with the Sub filter: a line drawing compresses about as well as with the
+        // adaptive filter (≈ 30 % larger) in half the time.
         encoder.set_compression(png::Compression::Fast);
+        encoder.set_filter(png::Filter::Sub);
         // pHYs: the print resolution, so the PNG prints 1:1 too.
         let per_metre = (f64::from(self.scale.0 * CSS_DPI) / 0.0254).round() as u32;
         encoder.set_pixel_dims(Some(png::PixelDimensions {
@@ -258,18 +261,16 @@ const ROWS_AT_ONCE: usize = 16;
 /// Premultiplied RGBA `src` composited on white into `dst`, as gray or RGB; `false` when a
 /// pixel is not gray and gray was asked for.
 fn convert(src: &[u8], dst: &mut [u8], channels: Channels) -> bool {
+    if channels == Channels::Gray && opaque_gray(src, dst) {
+        return true;
+    }
     // Over white: c + (1 − α)·255; a premultiplied channel never exceeds α.
+    let over_white = |p: &[u8], k: usize| p[k].saturating_add(255 - p[3]);
     match channels {
         Channels::Gray => {
-            // No early exit: the loop stays branch-free.
             let mut colour = 0u8;
             for (p, o) in src.chunks_exact(4).zip(dst.iter_mut()) {
-                let white = 255 - p[3];
-                let (r, g, b) = (
-                    p[0].saturating_add(white),
-                    p[1].saturating_add(white),
-                    p[2].saturating_add(white),
-                );
+                let (r, g, b) = (over_white(p, 0), over_white(p, 1), over_white(p, 2));
                 colour |= (r ^ g) | (g ^ b);
                 *o = r;
             }
@@ -277,14 +278,26 @@ fn convert(src: &[u8], dst: &mut [u8], channels: Channels) -> bool {
         }
         Channels::Rgb => {
             for (p, o) in src.chunks_exact(4).zip(dst.chunks_exact_mut(3)) {
-                let white = 255 - p[3];
-                for k in 0..3 {
-                    o[k] = p[k].saturating_add(white);
+                for (k, c) in o.iter_mut().enumerate() {
+                    *c = over_white(p, k);
                 }
             }
             true
         }
     }
+}
+
+/// The fast path of a plate, which paints its white sheet first: every pixel opaque and
+/// gray, its red channel is its gray. `false` (and `dst` to be rewritten) otherwise.
+fn opaque_gray(src: &[u8], dst: &mut [u8]) -> bool {
+    // Whole words, no early exit: the loop vectorises.
+    let mut odd = 0u32;
+    for (p, o) in src.chunks_exact(4).zip(dst.iter_mut()) {
+        let v = <[u8; 4]>::try_from(p).map_or(0, u32::from_le_bytes);
+        odd |= ((v >> 24) ^ 0xff) | ((v ^ (v >> 8)) & 0xffff);
+        *o = v as u8;
+    }
+    odd == 0
 }
 
 #[cfg(test)]
