@@ -59,9 +59,10 @@ enum Command {
         #[arg(long, value_enum, default_value = "ru")]
         lang: LangArg,
         /// Resolution (mm) to which measured lengths are read before μ converts them; 0 = exact.
-        #[arg(long, default_value_t = 0.0)]
+        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
         drafting: f64,
-        /// PNG resolution, dots per inch.
+        /// PNG resolution, dots per inch: 1…2400, within 2^30 pixels per image (an A1 sheet up
+        /// to 1177 dpi, A0 up to 832 dpi).
         #[arg(long, default_value_t = 150)]
         dpi: u32,
     },
@@ -73,7 +74,7 @@ enum Command {
         #[arg(long, value_enum, default_value = "md")]
         format: ReportFormat,
         /// Resolution (mm) to which measured lengths are read; 0 = exact.
-        #[arg(long, default_value_t = 0.0)]
+        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
         drafting: f64,
         /// Language of the Markdown headings.
         #[arg(long, value_enum, default_value = "ru")]
@@ -109,7 +110,7 @@ enum Command {
     },
 }
 
-/// A failure with its exit status.
+/// A failure with its exit status; an empty message has been reported already.
 struct Failure {
     code: u8,
     message: String,
@@ -159,7 +160,9 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(f) => {
-            eprintln!("error: {}", f.message);
+            if !f.message.is_empty() {
+                eprintln!("error: {}", f.message);
+            }
             ExitCode::from(f.code)
         }
     }
@@ -225,26 +228,56 @@ fn render(
         return Err(Failure::input(format!("--dpi {dpi}: expected 1…2400")));
     }
     let scenes = load_all(paths)?;
+    distinct_stems(&scenes, out)?;
     // Everything is built in memory first: a failed run writes nothing.
-    let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
+    let mut svgs: Vec<(PathBuf, String)> = Vec::new();
     for s in &scenes {
         for (_, plate) in plates(s, lang, drafting)? {
-            let svg = tmm::plate::to_svg(&plate);
             let base = out.join(&s.stem).join(&plate.name);
             if formats.contains(&Format::Png) {
-                let png = tmm::plate::to_png_dpi(&svg, dpi as f32)
-                    .map_err(|e| Failure::construction(format!("{}: {e}", base.display())))?;
-                files.push((base.with_extension("png"), png));
+                let (w, h) = (plate.sheet.width_mm(), plate.sheet.height_mm());
+                tmm::plate::png_size(w, h, dpi as f32)
+                    .map_err(|e| Failure::input(format!("--dpi {dpi}: {}: {e}", base.display())))?;
             }
-            if formats.contains(&Format::Svg) {
-                files.push((base.with_extension("svg"), svg.into_bytes()));
-            }
+            svgs.push((base, tmm::plate::to_svg(&plate)));
         }
     }
-    for (path, bytes) in &files {
-        tmm::plate::write_atomic(path, bytes)
-            .map_err(|e| Failure::input(format!("{}: cannot write: {e}", path.display())))?;
+    let pngs = if formats.contains(&Format::Png) {
+        let texts: Vec<String> = svgs.iter().map(|(_, svg)| svg.clone()).collect();
+        tmm::plate::to_png_dpi_all(&texts, dpi as f32)
+    } else {
+        Vec::new()
+    };
+    let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
+    let mut pngs = pngs.into_iter();
+    for (base, svg) in svgs {
+        if let Some(png) = pngs.next() {
+            let png = png.map_err(|e| Failure::construction(format!("{}: {e}", base.display())))?;
+            files.push((base.with_extension("png"), png));
+        }
+        if formats.contains(&Format::Svg) {
+            files.push((base.with_extension("svg"), svg.into_bytes()));
+        }
+    }
+    tmm::plate::write_all_atomic(&files)
+        .map_err(|(path, e)| Failure::input(format!("{}: cannot write: {e}", path.display())))?;
+    for (path, _) in &files {
         emit(&path.display().to_string());
+    }
+    Ok(())
+}
+
+/// Two scenes of one run must not write the same folder.
+fn distinct_stems(scenes: &[Scene], out: &Path) -> Result<(), Failure> {
+    for (k, a) in scenes.iter().enumerate() {
+        if let Some(b) = scenes[..k].iter().find(|b| b.stem == a.stem) {
+            return Err(Failure::input(format!(
+                "{} and {}: both would write {}; render them in separate runs with different --out",
+                b.path.display(),
+                a.path.display(),
+                out.join(&a.stem).display()
+            )));
+        }
     }
     Ok(())
 }
@@ -275,16 +308,36 @@ fn nothing_to_construct(s: &Scene) -> Failure {
     ))
 }
 
+/// Check every scene: a line for each (`path: ok` on standard output, `error: …` on standard
+/// error); the worst status (2 bad input > 1 construction > 0).
 fn check(paths: &[PathBuf]) -> Result<(), Failure> {
-    let scenes = load_all(paths)?;
-    for s in &scenes {
-        if s.plates.is_empty() {
-            return Err(nothing_to_construct(s));
+    let mut worst: Option<Failure> = None;
+    for path in paths {
+        let result = scene::load(path)
+            .map_err(|e| Failure::input(e.to_string()))
+            .and_then(|s| {
+                if s.plates.is_empty() {
+                    return Err(nothing_to_construct(&s));
+                }
+                plates(&s, Lang::Ru, Drafting::EXACT).map(|_| ())
+            });
+        match result {
+            Ok(()) => emit(&format!("{}: ok", path.display())),
+            Err(f) => {
+                eprintln!("error: {}", f.message);
+                if worst.as_ref().is_none_or(|w| f.code > w.code) {
+                    worst = Some(f);
+                }
+            }
         }
-        plates(s, Lang::Ru, Drafting::EXACT)?;
-        emit(&format!("{}: ok", s.path.display()));
     }
-    Ok(())
+    // Every failure has been printed on its own line.
+    worst.map_or(Ok(()), |w| {
+        Err(Failure {
+            code: w.code,
+            message: String::new(),
+        })
+    })
 }
 
 fn bench(json: bool, out: &Path, quick: bool, scenes: PathBuf) -> Result<(), Failure> {

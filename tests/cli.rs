@@ -243,3 +243,143 @@ fn a_given_scale_too_large_for_a_sheet_is_bad_input() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A scene file in `dir` edited from the shaper's.
+fn edited_scene(dir: &Path, name: &str, edit: impl Fn(&str) -> String) -> PathBuf {
+    let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, edit(&text)).unwrap();
+    path
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+#[test]
+fn check_checks_every_file_and_exits_with_the_worst_status() {
+    let dir = scratch("check-all");
+    let construction = edited_scene(&dir, "parallel.toml", |t| {
+        t.replace("slide = 90.0", "slide = 0.0")
+    });
+    let input = edited_scene(&dir, "negative.toml", |t| {
+        t.replace("length = 140.0", "length = -140.0")
+    });
+    let (c, i) = (construction.to_str().unwrap(), input.to_str().unwrap());
+
+    let o = tmm(&["check", c, "constructions/four-bar.toml"]);
+    let (out, err) = (text(&o.stdout), text(&o.stderr));
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert_eq!(out, "constructions/four-bar.toml: ok\n");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("error: ") && err.contains("parallel.toml"),
+        "{err}"
+    );
+
+    // Bad input outranks a construction failure, wherever it comes in the list.
+    let o = tmm(&["check", i, c, "constructions/shaper.toml"]);
+    let (out, err) = (text(&o.stdout), text(&o.stderr));
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(out, "constructions/shaper.toml: ok\n");
+    assert!(err.contains("negative.toml") && err.contains("mechanism.crank.length"));
+    assert!(err.contains("parallel.toml") && err.contains("cannot be assembled"));
+    assert!(!err.contains("panicked"), "{err}");
+
+    let o = tmm(&["check", c, i]);
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o.stderr));
+}
+
+#[test]
+fn a_destination_that_is_a_directory_leaves_nothing_behind() {
+    let dir = scratch("dest-dir");
+    let out = dir.join("out");
+    std::fs::create_dir_all(out.join("shaper/positions.svg")).unwrap();
+    let o = tmm(&[
+        "render",
+        "constructions/shaper.toml",
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "svg",
+    ]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("positions.svg") && err.contains("is a directory"),
+        "{err}"
+    );
+    assert_eq!(files_under(&out), Vec::<PathBuf>::new());
+    let names: Vec<_> = std::fs::read_dir(out.join("shaper"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, [std::ffi::OsString::from("positions.svg")]);
+
+    // A file where a folder is needed: nothing is created, not even the folders.
+    let blocked = dir.join("blocked");
+    std::fs::write(&blocked, b"a file").unwrap();
+    let o = tmm(&[
+        "render",
+        "constructions/shaper.toml",
+        "--out",
+        blocked.join("deeper").to_str().unwrap(),
+        "--format",
+        "svg",
+    ]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("not a directory"), "{err}");
+    assert_eq!(std::fs::read(&blocked).unwrap(), b"a file");
+}
+
+#[test]
+fn two_scenes_with_one_stem_are_refused() {
+    let dir = scratch("same-stem");
+    let other = dir.join("other");
+    std::fs::create_dir_all(&other).unwrap();
+    let twin = edited_scene(&other, "shaper.toml", |t| t.to_string());
+    let out = dir.join("out");
+    for args in [
+        vec!["constructions/shaper.toml", twin.to_str().unwrap()],
+        vec!["constructions/shaper.toml", "constructions/shaper.toml"],
+    ] {
+        let mut all = vec!["render"];
+        all.extend(args);
+        all.extend(["--out", out.to_str().unwrap(), "--format", "svg"]);
+        let o = tmm(&all);
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(
+            err.contains("shaper.toml") && err.contains("both would write"),
+            "{err}"
+        );
+        assert!(!out.exists(), "a refused run wrote {:?}", files_under(&out));
+    }
+}
+
+#[test]
+fn bad_numbers_on_the_command_line_are_one_line_naming_the_flag() {
+    let out = scratch("flags");
+    for (args, needle) in [
+        (vec!["--drafting", "-1"], "--drafting -1"),
+        (vec!["--drafting", "nan"], "--drafting NaN"),
+        (vec!["--dpi", "0"], "--dpi 0"),
+        (vec!["--dpi", "2401"], "--dpi 2401"),
+        (vec!["--dpi", "2400"], "at most 1177 dpi"),
+    ] {
+        let mut all = vec!["render", "constructions/shaper.toml", "--out"];
+        all.push(out.to_str().unwrap());
+        all.extend(args.iter().copied());
+        let o = tmm(&all);
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+    assert_eq!(files_under(&out), Vec::<PathBuf>::new());
+    let help = text(&tmm(&["render", "--help"]).stdout);
+    assert!(help.contains("2^30") && help.contains("1177 dpi"), "{help}");
+}

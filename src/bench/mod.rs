@@ -12,7 +12,8 @@
 //!   over many crank angles on one core.
 //! * **Construction route** — the recorded compass construction of a position with its
 //!   velocity and acceleration plans.
-//! * **Plates** — building a plate and writing it as SVG.
+//! * **Plates** — building a plate and writing it as SVG; a scene's plates (already SVG)
+//!   rasterised to PNG at 150 dpi, as `tmm render` does.
 //!
 //! Times are the best of several repetitions (the machine may be busy); they are reported,
 //! never asserted.
@@ -27,7 +28,7 @@ use crate::report::{Bench, Throughput};
 use crate::scale::Quantity;
 use crate::scene::{self, PlateKind, Scene};
 use chords::{chord_rows, Charted, Coord};
-use rates::{construction_rate, kernel_rate, libm_floor_rate, plate_time};
+use rates::{construction_rate, kernel_rate, libm_floor_rate, plate_time, png_time, PNG_DPI};
 use std::f64::consts::TAU;
 use std::hint::black_box;
 use std::path::PathBuf;
@@ -306,6 +307,14 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
             note: "a fresh study::Session + sheets::build + plate::to_svg".into(),
         });
     }
+    throughput.push(Throughput {
+        name: format!("png {} at {PNG_DPI} dpi", shaper.scene.stem),
+        per_second: 1.0 / png_time(&shaper, reps)?,
+        note: format!(
+            "every plate of the scene ({}), SVG → PNG in parallel, as `tmm render` writes them",
+            shaper.scene.plates.len()
+        ),
+    });
     Ok(Bench {
         machine: machine(),
         rows,

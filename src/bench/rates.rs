@@ -111,3 +111,31 @@ pub(super) fn plate_time(s: &Subject, kind: PlateKind, reps: Reps) -> Result<f64
         detail: e.to_string(),
     })
 }
+
+/// PNG resolution of the scene timing, dots per inch (the `render` default).
+pub(super) const PNG_DPI: u32 = 150;
+
+/// Seconds to turn every plate of a scene, already written as SVG, into PNG at
+/// [`PNG_DPI`], the plates in parallel — what `tmm render` spends on PNGs.
+pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
+    let session = Session::new(&s.scene, Drafting::EXACT);
+    let mut svgs = Vec::new();
+    for &kind in &s.scene.plates {
+        let plates = sheets::build(&session, kind, Lang::Ru).map_err(|e| BenchError::Plate {
+            scene: s.scene.stem.clone(),
+            plate: kind.stem().into(),
+            detail: e.to_string(),
+        })?;
+        svgs.extend(plates.iter().map(crate::plate::to_svg));
+    }
+    best_time(reps.best_of.min(3), || {
+        crate::plate::to_png_dpi_all(&svgs, PNG_DPI as f32)
+            .into_iter()
+            .collect::<Result<Vec<_>, _>>()
+    })
+    .map_err(|e| BenchError::Plate {
+        scene: s.scene.stem.clone(),
+        plate: "png".into(),
+        detail: e.to_string(),
+    })
+}

@@ -1,0 +1,124 @@
+//! The files `tmm render` writes: PNGs in grayscale at the very pixels of the drawing, tiled
+//! rendering beyond tiny-skia's 8191 px anti-aliasing limit, and the bench's PNG timing.
+
+use resvg::tiny_skia::{Color, Pixmap, Transform};
+use std::path::PathBuf;
+use std::process::Command;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("tmm-output-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    dir
+}
+
+fn tmm(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("run tmm")
+}
+
+/// The PNG's IHDR colour type (0 gray, 2 RGB, 6 RGBA) and its pHYs pixels per metre.
+fn header(png: &[u8]) -> (u8, Option<u32>) {
+    let phys = png
+        .windows(4)
+        .position(|w| w == b"pHYs")
+        .map(|at| u32::from_be_bytes(png[at + 4..at + 8].try_into().unwrap()));
+    (png[25], phys)
+}
+
+/// The SVG drawn the plain way: a white canvas of `w` × `h` px, resvg over it.
+fn plain_render(svg: &str, w: u32, h: u32) -> Pixmap {
+    let mut opt = resvg::usvg::Options {
+        fontdb: tmm::plate::font_database(),
+        ..Default::default()
+    };
+    opt.font_family = tmm::plate::FONT_FAMILY.into();
+    let tree = resvg::usvg::Tree::from_str(svg, &opt).expect("parse");
+    let mut canvas = Pixmap::new(w, h).expect("canvas");
+    canvas.fill(Color::WHITE);
+    let size = tree.size();
+    let ts = Transform::from_scale(w as f32 / size.width(), h as f32 / size.height());
+    resvg::render(&tree, ts, &mut canvas.as_mut());
+    canvas
+}
+
+#[test]
+fn render_writes_grayscale_pngs_with_the_drawings_pixels_and_their_resolution() {
+    let out = scratch("gray");
+    let o = tmm(&[
+        "render",
+        "constructions/four-bar.toml",
+        "--out",
+        out.to_str().unwrap(),
+        "--dpi",
+        "100",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let png = std::fs::read(out.join("four-bar/positions.png")).unwrap();
+    // 100 dpi = 3937 px per metre.
+    assert_eq!(header(&png), (0, Some(3937)));
+    let got = Pixmap::decode_png(&png).expect("decode");
+    assert_eq!((got.width(), got.height()), (3311, 2339), "A1 at 100 dpi");
+    let svg = std::fs::read_to_string(out.join("four-bar/positions.svg")).unwrap();
+    let want = plain_render(&svg, got.width(), got.height());
+    assert!(
+        got.data() == want.data(),
+        "the grayscale PNG must decode to the pixels resvg draws"
+    );
+}
+
+#[test]
+fn a_png_wider_than_8191_px_is_tiled_and_anti_aliased_throughout() {
+    // 100 × 60 mm at 2400 dpi: 9449 × 5669 px, two columns of tiles and several bands.
+    let svg = r##"<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm" viewBox="0 0 100 60">
+        <rect width="100" height="60" fill="#fff"/>
+        <path d="M1 1 L99 59 M1 59 L99 1" stroke="#000" stroke-width="0.25" fill="none"/>
+        <circle cx="88" cy="30" r="9" stroke="#000" stroke-width="0.7" fill="none"/>
+    </svg>"##;
+    let png = tmm::plate::to_png_dpi(svg, 2400.0).expect("a tiled PNG");
+    assert_eq!(header(&png).0, 0);
+    let img = Pixmap::decode_png(&png).expect("decode");
+    assert_eq!((img.width(), img.height()), (9449, 5669));
+    // Right of x = 8191 the diagonal's edges are still grey ramps, not hard steps.
+    let mut levels = [false; 256];
+    for y in 0..img.height() {
+        for x in 8300..img.width() {
+            levels[img.pixel(x, y).unwrap().red() as usize] = true;
+        }
+    }
+    let used = levels.iter().filter(|&&l| l).count();
+    // Aliased (one canvas past 8191 px) would be 2 levels; a 4 × 4 sub-sampled edge has 17.
+    assert!(used > 8, "only {used} gray levels right of 8191 px");
+    // The circle at the right edge is closed across the band seams: its ink is symmetric.
+    let ink = |y0: u32, y1: u32| {
+        (y0..y1)
+            .flat_map(|y| (8000..img.width()).map(move |x| (x, y)))
+            .filter(|&(x, y)| img.pixel(x, y).unwrap().red() < 128)
+            .count() as f64
+    };
+    let (top, bottom) = (ink(0, 2834), ink(2835, 5669));
+    assert!((top - bottom).abs() < 0.01 * top, "{top} vs {bottom}");
+}
+
+#[test]
+fn the_bench_times_a_scenes_plates_as_png() {
+    let out = scratch("bench");
+    let o = tmm(&["bench", "--quick", "--json", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+    let row = v["throughput"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["name"] == "png shaper at 150 dpi")
+        .expect("a PNG row");
+    assert!(row["per_second"].as_f64().unwrap() > 0.0);
+    assert!(row["note"].as_str().unwrap().contains("(2)"), "{row}");
+}
