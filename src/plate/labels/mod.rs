@@ -1,0 +1,334 @@
+//! The plate's layout: where every text goes and what every item covers, in sheet mm.
+//!
+//! Labels are placed by the plate, not at a fixed offset from their point. Labels of one view
+//! whose points coincide on the sheet (within [`COINCIDENT_MM`]) become one joint label written
+//! as the textbook does, `p ≡ b₃ ≡ d` (the figure's order, the pole first). Every label then
+//! tries positions around its point — its preferred direction first, then sixteen directions
+//! at two distances — and keeps the one that collides least with what is already placed
+//! (labels, captions, text blocks, tables) and with the lines and symbols of the drawing (the
+//! main lines weigh most), never leaving the frame nor entering the title block when it can
+//! help it. Crowded labels are placed first; the order is deterministic, so is the layout.
+//! The SVG writer writes the texts from this layout, and the tests check its boxes.
+
+use super::items::{dimension_text, item_outlines, Outline, Shape, JOINT_RADIUS_MM};
+use super::items::{LABEL_GAP_MM, LABEL_HEIGHT_MM};
+use super::path::Map;
+use super::style::{Mark, Pen};
+use super::svg::CAPTION_HEIGHT_MM;
+use super::table::table_marks;
+use super::text::{measure, plain, Align, Extent, Placed};
+use super::{Plate, Rect, TextBlock, View, CAPTION_BAND_MM};
+use crate::construct::{Item, Label, StepId};
+use crate::geom::DVec2;
+use std::f64::consts::{FRAC_PI_4, TAU};
+
+/// Label points closer than this on the sheet are one point: their labels are joined, mm.
+pub const COINCIDENT_MM: f64 = 0.3;
+/// How a joint label joins its names.
+pub const JOINT_SEPARATOR: &str = " ≡ ";
+/// The second ring of candidate positions lies this much further from the point, mm.
+pub const SECOND_RING_MM: f64 = 3.0;
+/// Clearance kept between a label and other texts while placing, mm.
+const CLEARANCE_MM: f64 = 1.0;
+/// Directions tried around a point.
+const DIRECTIONS: usize = 16;
+
+/// A label as placed on the sheet.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlacedLabel {
+    /// Index of its view in [`Plate::views`].
+    pub view: usize,
+    /// The steps whose labels it writes (several for a joint label), in the figure's order.
+    pub steps: Vec<StepId>,
+    /// The text in label markup (names joined by [`JOINT_SEPARATOR`]).
+    pub text: String,
+    /// The point it labels, sheet mm.
+    pub anchor: DVec2,
+    /// The box its text covers, sheet mm.
+    pub rect: Rect,
+    /// The text as written.
+    pub(crate) placed: Placed,
+}
+
+/// A view as laid out.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ViewLayout {
+    /// The box of everything its figure draws (line widths and symbols included), sheet mm;
+    /// `None` for an empty figure.
+    pub drawn: Option<Rect>,
+    /// The box of its caption.
+    pub caption: Option<Rect>,
+    /// The caption as written.
+    pub(crate) caption_text: Option<Placed>,
+}
+
+/// A plate laid out: every placed text and every drawn item's box, sheet mm (y down).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Layout {
+    /// The inner edge of the frame: everything is drawn inside it.
+    pub frame: Rect,
+    /// The main title block: nothing else is drawn over it.
+    pub title_block: Rect,
+    /// The rotated designation box in the frame's corner: nothing else is drawn over it.
+    pub designation_box: Rect,
+    /// The views, as [`Plate::views`].
+    pub views: Vec<ViewLayout>,
+    /// Every label of every view, in the order they are written.
+    pub labels: Vec<PlacedLabel>,
+    /// The boxes of the free text blocks, as [`Plate::texts`].
+    pub texts: Vec<Rect>,
+    /// The boxes of the tables (grid, title and texts), as [`Plate::tables`].
+    pub tables: Vec<Rect>,
+}
+
+/// Lay the plate out: its views' drawn boxes and captions, its text blocks and tables, and
+/// every label placed (see the module documentation).
+pub fn layout(plate: &Plate) -> Layout {
+    let sheet = &plate.sheet;
+    let outlines: Vec<Vec<Outline>> = plate.views.iter().map(view_outlines).collect();
+    let views: Vec<ViewLayout> = plate
+        .views
+        .iter()
+        .zip(&outlines)
+        .map(|(v, o)| {
+            let caption_text = caption(v);
+            ViewLayout {
+                drawn: drawn_bounds(o),
+                caption: caption_text.as_ref().map(Placed::bounds),
+                caption_text,
+            }
+        })
+        .collect();
+    let texts: Vec<Rect> = plate
+        .texts
+        .iter()
+        .map(|b| {
+            let lines = text_block_lines(b);
+            Rect::around(lines.iter().flat_map(|p| corners(p.bounds())))
+                .unwrap_or(Rect::new(b.at, b.at))
+        })
+        .collect();
+    let tables: Vec<Rect> = plate
+        .tables
+        .iter()
+        .map(|t| {
+            let grid = Rect::new(t.at, t.at + t.size());
+            table_marks(t)
+                .iter()
+                .filter_map(|m| match m {
+                    Mark::Text(p) => Some(p.bounds()),
+                    Mark::Path(..) => None,
+                })
+                .fold(grid, |r, b| r.union(&b))
+        })
+        .collect();
+    let mut out = Layout {
+        frame: sheet.frame().inflate(-Pen::MAIN.width * 0.5),
+        title_block: sheet.title_block(),
+        designation_box: sheet.designation_box(),
+        views,
+        labels: Vec::new(),
+        texts,
+        tables,
+    };
+    out.labels = Placer::new(&out, &outlines).place(plate);
+    out
+}
+
+/// The outlines of everything a view draws, sheet mm.
+fn view_outlines(view: &View) -> Vec<Outline> {
+    let map = Map::figure(view.origin);
+    view.figure
+        .steps
+        .iter()
+        .flat_map(|s| item_outlines(&s.item, s.role, map))
+        .collect()
+}
+
+/// The box of the outlines, grown by half the width of their lines.
+fn drawn_bounds(outlines: &[Outline]) -> Option<Rect> {
+    outlines
+        .iter()
+        .filter_map(|o| {
+            let half = if o.main { Pen::MAIN } else { Pen::THIN }.width * 0.5;
+            shape_box(&o.shape).map(|b| b.inflate(half))
+        })
+        .reduce(|a, b| a.union(&b))
+}
+
+fn shape_box(s: &Shape) -> Option<Rect> {
+    match s {
+        Shape::Line(a, b) => Rect::around([*a, *b]),
+        Shape::Area(pts) => Rect::around(pts.iter().copied()),
+    }
+}
+
+fn corners(r: Rect) -> [DVec2; 2] {
+    [r.min, r.max]
+}
+
+/// A view's caption: centred under the figure's bounds, in the band kept for it.
+fn caption(view: &View) -> Option<Placed> {
+    let text = view.caption.as_ref()?;
+    let (lo, hi) = view.figure.bounds()?;
+    let bottom = view.to_sheet(DVec2::new((lo.x + hi.x) * 0.5, lo.y));
+    let at = bottom + DVec2::new(0.0, CAPTION_BAND_MM - CAPTION_HEIGHT_MM);
+    Some(Placed::centred(at, text, CAPTION_HEIGHT_MM, Align::Middle))
+}
+
+/// The lines of a text block, two text heights apart.
+pub(crate) fn text_block_lines(block: &TextBlock) -> Vec<Placed> {
+    let h = block.size_mm;
+    block
+        .lines
+        .iter()
+        .enumerate()
+        .map(|(i, line)| {
+            Placed::new(
+                block.at + DVec2::new(0.0, h * (1.0 + 2.0 * i as f64)),
+                line,
+                h,
+                Align::Start,
+            )
+        })
+        .collect()
+}
+
+/// A label to place: one point's names (several for a joint label).
+#[derive(Debug, Clone)]
+struct Request {
+    view: usize,
+    steps: Vec<StepId>,
+    names: Vec<String>,
+    anchor: DVec2,
+    /// Preferred direction on the sheet (unit, or zero: centred on the point).
+    toward: DVec2,
+    /// Least distance from the point to the text's box.
+    gap: f64,
+}
+
+impl Request {
+    fn text(&self) -> String {
+        self.names.join(JOINT_SEPARATOR)
+    }
+}
+
+/// A pole of a plan: written first in a joint label.
+fn is_pole(name: &str) -> bool {
+    matches!(plain(name).as_str(), "p" | "π")
+}
+
+/// A position number (`7`, `8′`) rather than a point's name: the two are not joined (the
+/// crank pin at position 1 is `B` and `1`, not `1 ≡ B`).
+fn is_number(name: &str) -> bool {
+    plain(name).starts_with(|c: char| c.is_ascii_digit())
+}
+
+/// The labels of a view to place, coincident ones joined; and the fixed texts of its
+/// dimensions.
+fn requests(k: usize, view: &View) -> (Vec<Request>, Vec<PlacedLabel>) {
+    let map = Map::figure(view.origin);
+    let mut fixed = Vec::new();
+    let mut single: Vec<Request> = Vec::new();
+    for step in &view.figure.steps {
+        let Some(Label {
+            text,
+            anchor,
+            toward,
+        }) = &step.label
+        else {
+            continue;
+        };
+        if let Item::Dimension { from, to, offset } = &step.item {
+            if let Some(placed) = dimension_text(map, *from, *to, *offset, text) {
+                fixed.push(PlacedLabel {
+                    view: k,
+                    steps: vec![step.id],
+                    text: text.clone(),
+                    anchor: map.pt((*from + *to) * 0.5),
+                    rect: placed.bounds(),
+                    placed,
+                });
+            }
+            continue;
+        }
+        let gap = match step.item {
+            Item::Joint { .. } => LABEL_GAP_MM + JOINT_RADIUS_MM,
+            _ => LABEL_GAP_MM,
+        };
+        single.push(Request {
+            view: k,
+            steps: vec![step.id],
+            names: vec![text.clone()],
+            anchor: map.pt(*anchor),
+            toward: map.dir(*toward).normalize_or_zero(),
+            gap,
+        });
+    }
+    (join_coincident(single), fixed)
+}
+
+/// Join the requests whose points coincide (transitively; names with names, position
+/// numbers with position numbers), keeping the figure's order with the pole first; a name
+/// repeated at one point is written once.
+fn join_coincident(single: Vec<Request>) -> Vec<Request> {
+    let n = single.len();
+    let mut root: Vec<usize> = (0..n).collect();
+    fn find(root: &mut [usize], mut i: usize) -> usize {
+        while root[i] != i {
+            root[i] = root[root[i]];
+            i = root[i];
+        }
+        i
+    }
+    for i in 0..n {
+        for j in 0..i {
+            let (a, b) = (&single[i], &single[j]);
+            if a.anchor.distance(b.anchor) <= COINCIDENT_MM
+                && is_number(&a.names[0]) == is_number(&b.names[0])
+            {
+                let (a, b) = (find(&mut root, i), find(&mut root, j));
+                root[a.max(b)] = a.min(b);
+            }
+        }
+    }
+    let mut joined: Vec<Request> = Vec::new();
+    let mut slot: Vec<Option<usize>> = vec![None; n];
+    for (i, r) in single.into_iter().enumerate() {
+        let g = find(&mut root, i);
+        match slot[g] {
+            None => {
+                slot[g] = Some(joined.len());
+                joined.push(r);
+            }
+            Some(at) => {
+                let j = &mut joined[at];
+                j.steps.extend(r.steps);
+                j.gap = j.gap.max(r.gap);
+                if j.toward == DVec2::ZERO {
+                    j.toward = r.toward;
+                }
+                for name in r.names {
+                    if !j.names.contains(&name) {
+                        j.names.push(name);
+                    }
+                }
+            }
+        }
+    }
+    for j in &mut joined {
+        if let Some(p) = j.names.iter().position(|s| is_pole(s)) {
+            let pole = j.names.remove(p);
+            j.names.insert(0, pole);
+        }
+    }
+    joined
+}
+
+/// Places labels one by one against what is already on the sheet, then moves those still
+/// colliding (alone, or together with a label in their way) while that lowers the collisions.
+mod place;
+#[cfg(test)]
+mod tests;
+
+use place::Placer;

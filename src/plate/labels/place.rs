@@ -1,0 +1,369 @@
+//! Placing labels: candidate boxes around each anchor, scored against text, points and
+//! lines already on the view, in a fixed order with repair rounds.
+
+use super::*;
+
+pub(super) struct Placer<'a> {
+    frame: Rect,
+    forbidden: [Rect; 2],
+    /// Boxes of the texts that do not move (captions, text blocks, tables, dimensions).
+    fixed: Vec<Rect>,
+    /// Every view's outlines.
+    outlines: &'a [Vec<Outline>],
+}
+
+/// Cost of a box leaving the frame or entering the title block.
+const OUTSIDE: f64 = 1e5;
+/// Cost of a box over another text, plus its overlap area (mm²) times [`TEXT_AREA`].
+const OVER_TEXT: f64 = 1e3;
+const TEXT_AREA: f64 = 100.0;
+/// Cost of covering another label's point.
+const OVER_POINT: f64 = 60.0;
+/// Cost per mm of a main line crossing the box; of a thin line.
+const MAIN_LINE: f64 = 20.0;
+const THIN_LINE: f64 = 4.0;
+/// Cost of touching a main symbol (pair, block, arrowhead, dot), and per mm² of it covered;
+/// the same for a thin one.
+const MAIN_AREA: f64 = 40.0;
+const THIN_AREA: f64 = 6.0;
+/// Cost per rank of the candidate (the preferred position is rank 0).
+const RANK: f64 = 0.5;
+/// Rounds of moving the labels that still collide.
+const REPAIR_ROUNDS: usize = 4;
+
+/// A request with what lies near its point: its text, the outlines, the other labels' points.
+struct Job<'a> {
+    request: Request,
+    text: String,
+    extent: Extent,
+    candidates: Vec<Rect>,
+    near: Rect,
+    lines: Vec<&'a Outline>,
+    points: Vec<DVec2>,
+}
+
+/// Where a label is: its box and the rank of that candidate.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Slot {
+    rect: Rect,
+    rank: usize,
+}
+
+impl<'a> Placer<'a> {
+    pub(super) fn new(layout: &Layout, outlines: &'a [Vec<Outline>]) -> Self {
+        let fixed = layout
+            .views
+            .iter()
+            .filter_map(|v| v.caption)
+            .chain(layout.texts.iter().copied())
+            .chain(layout.tables.iter().copied())
+            .collect();
+        Placer {
+            frame: layout.frame,
+            forbidden: [layout.title_block, layout.designation_box],
+            fixed,
+            outlines,
+        }
+    }
+
+    pub(super) fn place(mut self, plate: &Plate) -> Vec<PlacedLabel> {
+        let mut out = Vec::new();
+        let mut todo = Vec::new();
+        for (k, view) in plate.views.iter().enumerate() {
+            let (r, f) = requests(k, view);
+            out.extend(f);
+            todo.extend(r);
+        }
+        self.fixed.extend(out.iter().map(|l| l.rect));
+        let points: Vec<(usize, DVec2)> = todo.iter().map(|r| (r.view, r.anchor)).collect();
+        let jobs: Vec<Job> = todo.into_iter().map(|r| self.job(r, &points)).collect();
+        // The most crowded first: they have the fewest free places.
+        let crowd = |j: &Job| {
+            let r = &j.request;
+            points
+                .iter()
+                .filter(|(v, p)| *v == r.view && p.distance(r.anchor) < 8.0)
+                .count()
+        };
+        let mut order: Vec<(usize, usize, usize)> = jobs
+            .iter()
+            .enumerate()
+            .map(|(i, j)| (j.request.view, usize::MAX - crowd(j), i))
+            .collect();
+        order.sort_unstable();
+        let order: Vec<usize> = order.into_iter().map(|o| o.2).collect();
+        let mut slots: Vec<Option<Slot>> = vec![None; jobs.len()];
+        for &i in &order {
+            slots[i] = Some(self.best(&jobs, &slots, i).0);
+        }
+        for _ in 0..REPAIR_ROUNDS {
+            let mut moved = false;
+            for &i in &order {
+                moved |= self.repair(&jobs, &mut slots, i);
+            }
+            if !moved {
+                break;
+            }
+        }
+        out.extend(jobs.into_iter().zip(slots).filter_map(|(j, s)| {
+            let rect = s?.rect;
+            Some(PlacedLabel {
+                view: j.request.view,
+                steps: j.request.steps,
+                anchor: j.request.anchor,
+                placed: written(&j.text, &j.extent, rect),
+                rect,
+                text: j.text,
+            })
+        }));
+        out
+    }
+
+    /// A request with its candidates and what lies near them.
+    fn job(&self, request: Request, points: &[(usize, DVec2)]) -> Job<'a> {
+        let text = request.text();
+        let extent = measure(&text, LABEL_HEIGHT_MM);
+        let candidates = candidates(&request, extent.max - extent.min);
+        let near = candidates
+            .iter()
+            .fold(Rect::new(request.anchor, request.anchor), |r, c| r.union(c))
+            .inflate(CLEARANCE_MM);
+        let lines = self.outlines[request.view]
+            .iter()
+            .filter(|o| shape_box(&o.shape).is_some_and(|b| b.intersects(&near)))
+            .collect();
+        let points = points
+            .iter()
+            .filter(|(v, p)| {
+                *v == request.view && *p != request.anchor && near.contains(&Rect::new(*p, *p))
+            })
+            .map(|(_, p)| *p)
+            .collect();
+        Job {
+            request,
+            text,
+            extent,
+            candidates,
+            near,
+            lines,
+            points,
+        }
+    }
+
+    /// The least colliding candidate of job `i` with the other labels where `slots` has them
+    /// (the first of equals), and its cost.
+    fn best(&self, jobs: &[Job], slots: &[Option<Slot>], i: usize) -> (Slot, f64) {
+        let job = &jobs[i];
+        let others = self.texts_near(jobs, slots, i);
+        let mut best = (
+            Slot {
+                rect: job.candidates[0],
+                rank: 0,
+            },
+            f64::INFINITY,
+        );
+        for (rank, &rect) in job.candidates.iter().enumerate() {
+            let slot = Slot { rect, rank };
+            let cost = self.cost(job, &slot, &others);
+            if cost < best.1 {
+                best = (slot, cost);
+            }
+        }
+        best
+    }
+
+    /// The boxes of texts near job `i`: the fixed ones and the other placed labels.
+    fn texts_near(&self, jobs: &[Job], slots: &[Option<Slot>], i: usize) -> Vec<Rect> {
+        let near = jobs[i].near;
+        let placed = slots
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| *j != i)
+            .filter_map(|(_, s)| s.map(|s| s.rect));
+        self.fixed
+            .iter()
+            .copied()
+            .chain(placed)
+            .filter(|t| t.intersects(&near))
+            .collect()
+    }
+
+    /// Move label `i` if it collides with another text and a better place is found for it
+    /// alone, or for it and one of the labels it collides with; true when something moved.
+    fn repair(&self, jobs: &[Job], slots: &mut [Option<Slot>], i: usize) -> bool {
+        let Some(now) = slots[i] else {
+            return false;
+        };
+        let padded = now.rect.inflate(CLEARANCE_MM);
+        let blockers: Vec<usize> = (0..slots.len())
+            .filter(|&j| j != i && slots[j].is_some_and(|s| s.rect.intersects(&padded)))
+            .collect();
+        let against_fixed = self.fixed.iter().any(|f| f.intersects(&padded));
+        if blockers.is_empty() && !against_fixed {
+            return false;
+        }
+        let cost_now = self.cost(&jobs[i], &now, &self.texts_near(jobs, slots, i));
+        let (alone, cost) = self.best(jobs, slots, i);
+        if cost < cost_now - 1e-9 {
+            slots[i] = Some(alone);
+            return true;
+        }
+        for j in blockers {
+            let before = cost_now + {
+                let mut without = slots.to_vec();
+                without[i] = None;
+                let s = slots[j].expect("placed");
+                self.cost(&jobs[j], &s, &self.texts_near(jobs, &without, j))
+            };
+            let mut trial = slots.to_vec();
+            trial[i] = None;
+            trial[j] = None;
+            let (si, ci) = self.best(jobs, &trial, i);
+            trial[i] = Some(si);
+            let (sj, cj) = self.best(jobs, &trial, j);
+            if ci + cj < before - 1e-9 {
+                slots[i] = Some(si);
+                slots[j] = Some(sj);
+                return true;
+            }
+        }
+        false
+    }
+
+    /// What placing `job` at `slot` costs among the texts `others`.
+    fn cost(&self, job: &Job, slot: &Slot, others: &[Rect]) -> f64 {
+        let rect = &slot.rect;
+        let mut cost = slot.rank as f64 * RANK;
+        if !self.frame.contains(rect) || self.forbidden.iter().any(|f| f.intersects(rect)) {
+            cost += OUTSIDE;
+        }
+        let padded = rect.inflate(CLEARANCE_MM * 0.5);
+        for t in others {
+            let a = t.inflate(CLEARANCE_MM * 0.5).overlap(&padded);
+            if a > 0.0 {
+                cost += OVER_TEXT + TEXT_AREA * a;
+            }
+        }
+        for p in &job.points {
+            if padded.contains(&Rect::new(*p, *p)) {
+                cost += OVER_POINT;
+            }
+        }
+        for o in &job.lines {
+            cost += match &o.shape {
+                Shape::Line(a, b) => {
+                    clipped_length(*a, *b, &padded) * if o.main { MAIN_LINE } else { THIN_LINE }
+                }
+                Shape::Area(pts) => {
+                    let per = if o.main { MAIN_AREA } else { THIN_AREA };
+                    let a = clipped_area(pts, &padded);
+                    if a > 0.0 {
+                        per * (1.0 + a)
+                    } else {
+                        0.0
+                    }
+                }
+            };
+        }
+        cost
+    }
+}
+
+/// The candidate boxes of a request in order of preference: centred on the point when it has
+/// no preferred direction; then sixteen directions, the preferred one first and the others
+/// alternating about it, at the request's gap and [`SECOND_RING_MM`] further.
+pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
+    let half = size * 0.5;
+    let mut out = Vec::with_capacity(2 * DIRECTIONS + 1);
+    let start = if r.toward == DVec2::ZERO {
+        out.push(Rect::new(r.anchor - half, r.anchor + half));
+        -FRAC_PI_4
+    } else {
+        r.toward.y.atan2(r.toward.x)
+    };
+    let step = TAU / DIRECTIONS as f64;
+    for gap in [r.gap, r.gap + SECOND_RING_MM] {
+        for k in 0..DIRECTIONS {
+            // 0, +1, −1, +2, −2, …, +8.
+            let turn = (k.div_ceil(2)) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };
+            let t = DVec2::from_angle(start + turn * step);
+            // From the centre to the box's edge along t.
+            let reach = [(half.x, t.x), (half.y, t.y)]
+                .iter()
+                .filter(|(_, c)| c.abs() > 1e-9)
+                .map(|(h, c)| h / c.abs())
+                .fold(f64::INFINITY, f64::min);
+            let c = r.anchor + t * (gap + reach);
+            out.push(Rect::new(c - half, c + half));
+        }
+    }
+    out
+}
+
+/// The text written so that its box is `rect`.
+fn written(text: &str, e: &Extent, rect: Rect) -> Placed {
+    Placed::new(rect.min - e.min, text, LABEL_HEIGHT_MM, Align::Start)
+}
+
+/// Length of the segment `a`–`b` inside `r` (Liang–Barsky clipping).
+pub(super) fn clipped_length(a: DVec2, b: DVec2, r: &Rect) -> f64 {
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-d.x, a.x - r.min.x),
+        (d.x, r.max.x - a.x),
+        (-d.y, a.y - r.min.y),
+        (d.y, r.max.y - a.y),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return 0.0;
+            }
+        } else {
+            let t = q / p;
+            if p < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+        }
+    }
+    if t1 > t0 {
+        (t1 - t0) * d.length()
+    } else {
+        0.0
+    }
+}
+
+/// Area of the convex polygon `pts` inside `r` (Sutherland–Hodgman clipping).
+pub(super) fn clipped_area(pts: &[DVec2], r: &Rect) -> f64 {
+    let mut poly = pts.to_vec();
+    let edges: [(usize, f64, f64); 4] = [
+        (0, r.min.x, 1.0),
+        (0, r.max.x, -1.0),
+        (1, r.min.y, 1.0),
+        (1, r.max.y, -1.0),
+    ];
+    for (axis, at, sign) in edges {
+        let inside = |p: DVec2| (p[axis] - at) * sign >= 0.0;
+        let mut next = Vec::with_capacity(poly.len() + 2);
+        for (i, &p) in poly.iter().enumerate() {
+            let q = poly[(i + 1) % poly.len()];
+            if inside(p) {
+                next.push(p);
+            }
+            if inside(p) != inside(q) {
+                let t = (at - p[axis]) / (q[axis] - p[axis]);
+                next.push(p + (q - p) * t);
+            }
+        }
+        poly = next;
+        if poly.is_empty() {
+            return 0.0;
+        }
+    }
+    let twice: f64 = (0..poly.len())
+        .map(|i| poly[i].perp_dot(poly[(i + 1) % poly.len()]))
+        .sum();
+    twice.abs() * 0.5
+}

@@ -1,0 +1,81 @@
+use super::place::{candidates, clipped_area, clipped_length};
+use super::*;
+
+fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Rect {
+    Rect::new(DVec2::new(x0, y0), DVec2::new(x1, y1))
+}
+
+#[test]
+fn clipping_measures_what_lies_inside() {
+    let r = rect(0.0, 0.0, 10.0, 10.0);
+    let l = clipped_length(DVec2::new(-5.0, 5.0), DVec2::new(15.0, 5.0), &r);
+    assert!((l - 10.0).abs() < 1e-9);
+    assert_eq!(
+        clipped_length(DVec2::new(-5.0, 11.0), DVec2::new(15.0, 11.0), &r),
+        0.0
+    );
+    let square = [
+        DVec2::new(5.0, 5.0),
+        DVec2::new(15.0, 5.0),
+        DVec2::new(15.0, 15.0),
+        DVec2::new(5.0, 15.0),
+    ];
+    assert!((clipped_area(&square, &r) - 25.0).abs() < 1e-9);
+    assert_eq!(clipped_area(&square, &rect(20.0, 20.0, 30.0, 30.0)), 0.0);
+}
+
+#[test]
+fn rectangles_touching_do_not_intersect() {
+    let a = rect(0.0, 0.0, 1.0, 1.0);
+    assert!(!a.intersects(&rect(1.0, 0.0, 2.0, 1.0)));
+    assert!(a.intersects(&rect(0.5, 0.5, 2.0, 2.0)));
+    assert!(a.inflate(1.0).contains(&a));
+}
+
+fn request(name: &str, at: DVec2, step: u32) -> Request {
+    Request {
+        view: 0,
+        steps: vec![StepId(step)],
+        names: vec![name.into()],
+        anchor: at,
+        toward: DVec2::X,
+        gap: LABEL_GAP_MM,
+    }
+}
+
+#[test]
+fn coincident_labels_join_with_the_pole_first() {
+    let o = DVec2::new(10.0, 10.0);
+    let joined = join_coincident(vec![
+        request("b_3", o, 1),
+        request("c", o + DVec2::new(5.0, 0.0), 2),
+        request("d", o + DVec2::new(0.2, 0.0), 3),
+        request("p", o + DVec2::new(0.1, 0.1), 4),
+        request("d", o, 5),
+        request("1", o, 6),
+    ]);
+    assert_eq!(joined.len(), 3);
+    assert_eq!(joined[0].text(), "p ≡ b_3 ≡ d");
+    assert_eq!(joined[0].steps.len(), 4);
+    assert_eq!(joined[1].text(), "c");
+    assert_eq!(joined[2].text(), "1");
+}
+
+#[test]
+fn candidates_keep_the_gap_and_start_with_the_preferred_side() {
+    let r = request("B", DVec2::new(50.0, 50.0), 0);
+    let size = DVec2::new(3.0, 4.0);
+    let c = candidates(&r, size);
+    assert_eq!(c.len(), 2 * DIRECTIONS);
+    assert!(
+        (c[0].min.x - 50.0 - LABEL_GAP_MM).abs() < 1e-9,
+        "{:?}",
+        c[0]
+    );
+    assert!((c[0].center().y - 50.0).abs() < 1e-9);
+    for b in &c {
+        assert!((b.size() - size).length() < 1e-9);
+        let gap = (b.min - r.anchor).max(r.anchor - b.max).max(DVec2::ZERO);
+        assert!(gap.length() >= LABEL_GAP_MM * 0.7 - 1e-9, "{b:?}");
+    }
+}
