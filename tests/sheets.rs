@@ -248,3 +248,33 @@ fn a_long_table_goes_on_inside_the_frame() {
         }
     }
 }
+
+/// The example of constructions/README.md: a guide along a moving link, from its pivot.
+#[test]
+fn a_guide_along_a_moving_link_is_written_directly() {
+    let readme = std::fs::read_to_string(root().join("constructions/README.md")).expect("readme");
+    let start = readme
+        .find("```toml\n[[mechanism.point]]\nname = \"D\"")
+        .expect("the example");
+    let example = &readme[start + 8..];
+    let example = &example[..example.find("```").expect("its end")];
+    let four_bar =
+        std::fs::read_to_string(root().join("constructions/four-bar.toml")).expect("four-bar");
+    let text = four_bar.replace(
+        "[[mechanism.output]]",
+        &format!("{example}\n[[mechanism.output]]"),
+    );
+    let s = scene::parse(&text, &root().join("moving.toml")).expect("the example is valid");
+    let session = Session::new(&s, Drafting::EXACT);
+    let all = sheets::build_all(&session, Lang::Ru).expect("it is constructed and drawn");
+    assert!(!all.is_empty());
+    let report = session.report().expect("report");
+    let plan_rows = report.rows.iter().filter(|r| r.method == tmm::Method::Plan);
+    assert!(plan_rows.clone().any(|r| r.quantity() == "v_C"));
+    for r in plan_rows {
+        assert!(
+            (r.graphical - r.analytic).abs() <= 1e-9 * r.scale.max(1.0),
+            "{r:?}"
+        );
+    }
+}

@@ -96,6 +96,8 @@ impl Builder<'_> {
         let lb = self.check.length(&join(base, "lb"), g.lb);
         let branch = self.branch(base, g, DyadKind::Rrr);
         let joint = self.joint(base, g, &links);
+        self.also_on(&a, links[0]);
+        self.also_on(&b, links[1]);
         Dyad::Rrr {
             a,
             la,
@@ -113,6 +115,7 @@ impl Builder<'_> {
         let guide = self.guide(&join(base, "guide"), g.guide.as_ref());
         let branch = self.branch(base, g, DyadKind::Rrp);
         let joint = self.joint(base, g, &links);
+        self.also_on(&a, links[0]);
         Dyad::Rrp {
             a,
             la,

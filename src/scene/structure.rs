@@ -279,6 +279,16 @@ impl Builder<'_> {
         }
     }
 
+    /// A known point is also on `link` (an outer pair of a group: the group's link turns
+    /// about it), so a later direction may run from it along that link.
+    pub(super) fn also_on(&mut self, name: &str, link: u32) {
+        if let Some(k) = self.known.iter_mut().find(|k| k.name == name) {
+            if !k.links.contains(&link) {
+                k.links.push(link);
+            }
+        }
+    }
+
     /// The names known so far, for messages.
     pub(super) fn known_names(&self) -> String {
         let names: Vec<&str> = self.known.iter().map(|k| k.name.as_str()).collect();
