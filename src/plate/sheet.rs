@@ -307,6 +307,40 @@ fn in_cell(cell: Cell, text: &str, height: f64, align: Align) -> Placed {
     )
 }
 
+/// A long text in a cell: on one line while fitting it keeps at least `min_height`, else
+/// wrapped at the space nearest its middle into two lines (ГОСТ 2.104 fills a title so,
+/// rather than shrinking it out of legibility).
+fn wrapped_in_cell(
+    (x0, y0, x1, y1): (f64, f64, f64, f64),
+    text: &str,
+    height: f64,
+    min_height: f64,
+    align: Align,
+    out: &mut Vec<Placed>,
+) {
+    let width = x1 - x0 - 3.0;
+    let one_line = super::text::approx_width(text, height);
+    let split = text
+        .char_indices()
+        .filter(|(_, c)| *c == ' ')
+        .map(|(i, _)| i)
+        .min_by_key(|&i| (i as i64 - text.len() as i64 / 2).abs());
+    match split {
+        Some(i) if one_line > 0.0 && width / one_line * height < min_height => {
+            let (a, b) = (text[..i].trim(), text[i..].trim());
+            let h = (y1 - y0) / 4.0;
+            let line_h = height.min((y1 - y0) / 2.6);
+            out.push(in_cell((x0, y0, x1, y0 + 2.0 * h), a, line_h, align));
+            out.push(in_cell((x0, y0 + 2.0 * h, x1, y1), b, line_h, align));
+        }
+        _ => out.push(in_cell((x0, y0, x1, y1), text, height, align)),
+    }
+}
+
+/// The smallest height a title block's title is shrunk to before it is wrapped, mm (ГОСТ
+/// 2.304 size 3.5).
+const TITLE_MIN_MM: f64 = 3.5;
+
 /// A text with its capitals centred on `at`, at most `width` wide.
 fn fitted(at: DVec2, text: &str, height: f64, width: f64, align: Align) -> Placed {
     Placed::centred(at, text, height, align).fit(width)
@@ -365,19 +399,11 @@ fn filling_into(tb: &TitleBlock, out: &mut Vec<Placed>) {
         Align::Middle,
     ));
     if tb.sheet_title.is_empty() {
-        out.push(in_cell(
-            (65.0, 15.0, RIGHT, 40.0),
-            &tb.title,
-            5.0,
-            Align::Middle,
-        ));
+        let cell = (65.0, 15.0, RIGHT, 40.0);
+        wrapped_in_cell(cell, &tb.title, 5.0, TITLE_MIN_MM, Align::Middle, out);
     } else {
-        out.push(in_cell(
-            (65.0, 15.0, RIGHT, 29.0),
-            &tb.title,
-            5.0,
-            Align::Middle,
-        ));
+        let cell = (65.0, 15.0, RIGHT, 29.0);
+        wrapped_in_cell(cell, &tb.title, 5.0, TITLE_MIN_MM, Align::Middle, out);
         out.push(in_cell(
             (65.0, 28.0, RIGHT, 36.0),
             &tb.sheet_title,
@@ -415,4 +441,33 @@ fn sheet_numbers(c: &Captions, tb: &TitleBlock) -> [Placed; 2] {
             Align::Middle,
         ),
     ]
+}
+
+#[cfg(test)]
+mod title_tests {
+    use super::*;
+
+    /// A title too long for its cell is wrapped into two legible lines instead of being
+    /// shrunk to 1.5 mm; a short one stays on one line at 5 mm.
+    #[test]
+    fn a_long_title_wraps_instead_of_shrinking() {
+        let cell = (65.0, 15.0, RIGHT, 29.0);
+        let mut out = Vec::new();
+        let long = "Шестизвенный шарнирный механизм (W1, реконструкция)";
+        wrapped_in_cell(cell, long, 5.0, TITLE_MIN_MM, Align::Middle, &mut out);
+        assert_eq!(out.len(), 2);
+        assert!(out.iter().all(|p| p.height >= 3.0), "{out:?}");
+        assert!(out[0].at.y < out[1].at.y);
+        let mut short = Vec::new();
+        wrapped_in_cell(
+            cell,
+            "Кулачок",
+            5.0,
+            TITLE_MIN_MM,
+            Align::Middle,
+            &mut short,
+        );
+        assert_eq!(short.len(), 1);
+        assert_eq!(short[0].height, 5.0);
+    }
 }
