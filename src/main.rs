@@ -26,6 +26,8 @@ struct Cli {
 enum Format {
     Svg,
     Png,
+    /// One PDF per scene, DIR/<scene>/<scene>.pdf: every sheet a page, 1:1.
+    Pdf,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -44,7 +46,7 @@ enum LangArg {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Render the plates of scenes to DIR/<scene>/<plate>.<ext>.
+    /// Render the plates of scenes to DIR/<scene>/<plate>.<ext> (PDF: DIR/<scene>/<scene>.pdf).
     Render {
         /// Scene files (constructions/*.toml).
         #[arg(required = true)]
@@ -231,7 +233,9 @@ fn render(
     distinct_stems(&scenes, out)?;
     // Everything is built in memory first: a failed run writes nothing.
     let mut svgs: Vec<(PathBuf, String)> = Vec::new();
+    let mut pdfs: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     for s in &scenes {
+        let first = svgs.len();
         for (_, plate) in plates(s, lang, drafting)? {
             let base = out.join(&s.stem).join(&plate.name);
             if formats.contains(&Format::Png) {
@@ -240,6 +244,13 @@ fn render(
                     .map_err(|e| Failure::input(format!("--dpi {dpi}: {}: {e}", base.display())))?;
             }
             svgs.push((base, tmm::plate::to_svg(&plate)));
+        }
+        if formats.contains(&Format::Pdf) {
+            let path = out.join(&s.stem).join(format!("{}.pdf", s.stem));
+            let pages: Vec<String> = svgs[first..].iter().map(|(_, svg)| svg.clone()).collect();
+            let pdf = tmm::plate::to_pdf(&pages)
+                .map_err(|e| Failure::construction(format!("{}: {e}", path.display())))?;
+            pdfs.push((path, pdf));
         }
     }
     let pngs = if formats.contains(&Format::Png) {
@@ -259,6 +270,7 @@ fn render(
             files.push((base.with_extension("svg"), svg.into_bytes()));
         }
     }
+    files.extend(pdfs);
     tmm::plate::write_all_atomic(&files)
         .map_err(|(path, e)| Failure::input(format!("{}: cannot write: {e}", path.display())))?;
     for (path, _) in &files {

@@ -122,3 +122,91 @@ fn the_bench_times_a_scenes_plates_as_png() {
     assert!(row["per_second"].as_f64().unwrap() > 0.0);
     assert!(row["note"].as_str().unwrap().contains("(2)"), "{row}");
 }
+
+/// The `/MediaBox [x0 y0 x1 y1]` of every page of a PDF written without object streams, in
+/// millimetres (width, height), in file order.
+fn media_boxes_mm(pdf: &[u8]) -> Vec<(f64, f64)> {
+    let text = String::from_utf8_lossy(pdf);
+    text.match_indices("/MediaBox [")
+        .map(|(at, m)| {
+            let rest = &text[at + m.len()..];
+            let nums: Vec<f64> = rest[..rest.find(']').unwrap()]
+                .split_whitespace()
+                .map(|n| n.parse().unwrap())
+                .collect();
+            let mm = 25.4 / 72.0;
+            ((nums[2] - nums[0]) * mm, (nums[3] - nums[1]) * mm)
+        })
+        .collect()
+}
+
+#[test]
+fn render_writes_one_pdf_per_scene_with_every_sheet_a_page_at_1_to_1() {
+    let out = scratch("pdf");
+    let dir = out.to_str().unwrap();
+    let o = tmm(&[
+        "render",
+        "constructions/shaper.toml",
+        "--out",
+        dir,
+        "--format",
+        "pdf",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let files: Vec<_> = std::fs::read_dir(out.join("shaper"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    assert_eq!(files, ["shaper.pdf"], "--format pdf writes the PDF alone");
+    let pdf = std::fs::read(out.join("shaper/shaper.pdf")).unwrap();
+    assert!(pdf.starts_with(b"%PDF-"));
+    let text = String::from_utf8_lossy(&pdf);
+    assert_eq!(
+        text.matches("/Type /Page\n").count(),
+        2,
+        "two sheets, two pages"
+    );
+    assert!(text.contains("/Count 2"));
+    let boxes = media_boxes_mm(&pdf);
+    assert_eq!(boxes.len(), 2, "{boxes:?}");
+    for (w, h) in &boxes {
+        assert!(
+            (w - 841.0).abs() < 0.5 && (h - 594.0).abs() < 0.5,
+            "A1: {w} × {h} mm"
+        );
+    }
+    assert!(
+        text.contains("/FontFile2") || text.contains("/FontFile3"),
+        "font embedded"
+    );
+    assert!(text.contains("DejaVuSans"), "the bundled DejaVu");
+    assert!(
+        !text.contains("/CreationDate") && !text.contains("/ID ["),
+        "no date, no ID"
+    );
+
+    // Deterministic, and written with the SVGs and PNGs in one run.
+    let again = scratch("pdf-again");
+    let o = tmm(&[
+        "render",
+        "constructions/shaper.toml",
+        "--out",
+        again.to_str().unwrap(),
+        "--format",
+        "svg,png,pdf",
+        "--dpi",
+        "20",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(std::fs::read(again.join("shaper/shaper.pdf")).unwrap(), pdf);
+    let mut files: Vec<_> = std::fs::read_dir(again.join("shaper"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    files.sort();
+    assert_eq!(files.len(), 5, "{files:?}");
+    assert!(
+        files.iter().filter(|f| f.ends_with(".svg")).count() == 2,
+        "{files:?}"
+    );
+}

@@ -14,12 +14,7 @@ pub fn font_database() -> Arc<Database> {
     static DB: OnceLock<Arc<Database>> = OnceLock::new();
     DB.get_or_init(|| {
         let mut db = Database::new();
-        for face in [
-            dejavu::sans::regular(),
-            dejavu::sans::oblique(),
-            dejavu::sans::bold(),
-            dejavu::sans::bold_oblique(),
-        ] {
+        for face in faces() {
             db.load_font_data(face.to_vec());
         }
         db.set_serif_family(FAMILY);
@@ -30,6 +25,16 @@ pub fn font_database() -> Arc<Database> {
         Arc::new(db)
     })
     .clone()
+}
+
+/// The bundled faces: DejaVu Sans regular, oblique, bold, bold oblique.
+pub(crate) fn faces() -> [&'static [u8]; 4] {
+    [
+        dejavu::sans::regular(),
+        dejavu::sans::oblique(),
+        dejavu::sans::bold(),
+        dejavu::sans::bold_oblique(),
+    ]
 }
 
 /// The family name the database answers to.
