@@ -17,6 +17,9 @@ const MARGIN_MM: f64 = 3.0;
 struct Page {
     area: Rect,
     taken: Vec<Rect>,
+    /// The top-left corner of the last item placed: the next one goes after it in reading
+    /// order (lower, or level with it and to its right), so the plans follow their numbers.
+    last: Option<DVec2>,
 }
 
 impl Page {
@@ -26,6 +29,7 @@ impl Page {
         Page {
             area: Rect::new(f.min + m, f.max - m),
             taken: vec![sheet.title_block(), sheet.designation_box()],
+            last: None,
         }
     }
 
@@ -46,6 +50,17 @@ impl Page {
     /// The highest, then leftmost, free place of `size`; candidates are the area's corner and
     /// the corners just past each taken rectangle.
     fn place(&mut self, size: DVec2) -> Option<Rect> {
+        // The first item starts at the frame's left edge, under the designation box: a
+        // strip left of it would collect stray small items out of their order.
+        if self.last.is_none() {
+            let at = DVec2::new(self.area.min.x, below_box(self) + GAP_MM);
+            let r = Rect::new(at, at + size);
+            if self.free(&r) {
+                self.taken.push(r);
+                self.last = Some(r.min);
+                return Some(r);
+            }
+        }
         let mut xs = vec![self.area.min.x];
         let mut ys = vec![self.area.min.y];
         for t in &self.taken {
@@ -54,17 +69,27 @@ impl Page {
         }
         xs.sort_by(f64::total_cmp);
         ys.sort_by(f64::total_cmp);
+        let after = |x: f64, y: f64| {
+            self.last
+                .is_none_or(|l| y > l.y + 1e-9 || (y >= l.y - 1e-9 && x > l.x + 1e-9))
+        };
         for &y in &ys {
             for &x in &xs {
                 let r = Rect::new(DVec2::new(x, y), DVec2::new(x, y) + size);
-                if self.free(&r) {
+                if after(x, y) && self.free(&r) {
                     self.taken.push(r);
+                    self.last = Some(r.min);
                     return Some(r);
                 }
             }
         }
         None
     }
+}
+
+/// The bottom of the designation box (the second rectangle a page starts with).
+fn below_box(p: &Page) -> f64 {
+    p.taken.get(1).map_or(p.area.min.y, |r| r.max.y)
 }
 
 /// Where each item went: its sheet (0-based) and its rectangle (sheet mm, y down).
