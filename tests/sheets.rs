@@ -278,3 +278,34 @@ fn a_guide_along_a_moving_link_is_written_directly() {
         );
     }
 }
+
+/// Every scale any scene of constructions/ gives is printed on its sheets as given.
+#[test]
+fn every_scene_prints_the_scales_it_gives() {
+    for entry in std::fs::read_dir(root().join("constructions")).expect("constructions/") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let s = scene::load(&path).expect("scene");
+        let k = &s.kinematics;
+        let given = [s.scale_l, k.scale_v, k.scale_a, k.scale_s, k.scale_phi];
+        let session = Session::new(&s, Drafting::EXACT);
+        let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+        let text = all
+            .iter()
+            .flat_map(|(_, p)| texts(p))
+            .collect::<Vec<_>>()
+            .join("\n");
+        for scale in given.into_iter().flatten() {
+            let caption = scale.caption(Lang::Ru);
+            // The chart's μ_S and μ_φ are written in the diagrams' line with their own symbols.
+            let value = caption.split(" = ").nth(1).expect("μ = value unit");
+            assert!(
+                text.contains(value),
+                "{}: {caption} not printed:\n{text}",
+                s.stem
+            );
+        }
+    }
+}
