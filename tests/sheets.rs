@@ -24,6 +24,16 @@ fn texts(p: &tmm::plate::Plate) -> Vec<String> {
     out
 }
 
+/// Every text of every sheet of a scene, in Russian.
+fn sheet_text(s: &tmm::Scene) -> String {
+    let session = Session::new(s, Drafting::EXACT);
+    let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+    all.iter()
+        .flat_map(|(_, p)| texts(p))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 #[test]
 fn the_shaper_sheets_print_the_scene_scales_as_given() {
     let s = scene::load(&root().join("constructions/shaper.toml")).expect("shaper");
@@ -105,13 +115,7 @@ fn a_diagram_across_an_asymptote_is_refused_with_a_note() {
         r.notes
     );
     let s = scene::load(&root().join("constructions/tangent.toml")).expect("scene");
-    let session = Session::new(&s, Drafting::EXACT);
-    let all = sheets::build_all(&session, Lang::Ru).expect("plates");
-    let text = all
-        .iter()
-        .flat_map(|(_, p)| texts(p))
-        .collect::<Vec<_>>()
-        .join("\n");
+    let text = sheet_text(&s);
     assert!(
         text.contains("не строятся") && text.contains("90,0°"),
         "{text}"
@@ -290,13 +294,7 @@ fn every_scene_prints_the_scales_it_gives() {
         let s = scene::load(&path).expect("scene");
         let k = &s.kinematics;
         let given = [s.scale_l, k.scale_v, k.scale_a, k.scale_s, k.scale_phi];
-        let session = Session::new(&s, Drafting::EXACT);
-        let all = sheets::build_all(&session, Lang::Ru).expect("plates");
-        let text = all
-            .iter()
-            .flat_map(|(_, p)| texts(p))
-            .collect::<Vec<_>>()
-            .join("\n");
+        let text = sheet_text(&s);
         for scale in given.into_iter().flatten() {
             let caption = scale.caption(Lang::Ru);
             // The chart's μ_S and μ_φ are written in the diagrams' line with their own symbols.
