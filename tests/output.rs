@@ -2,27 +2,8 @@
 //! rendering beyond tiny-skia's 8191 px anti-aliasing limit, and the bench's PNG timing.
 
 use resvg::tiny_skia::{Color, Pixmap, Transform};
-use std::path::PathBuf;
-use std::process::Command;
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("tmm-output-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch dir");
-    dir
-}
-
-fn tmm(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_tmm"))
-        .args(args)
-        .current_dir(root())
-        .output()
-        .expect("run tmm")
-}
+mod support;
+use support::{scratch, tmm};
 
 /// The PNG's IHDR colour type (0 gray, 2 RGB, 6 RGBA) and its pHYs pixels per metre.
 fn header(png: &[u8]) -> (u8, Option<u32>) {

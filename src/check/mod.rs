@@ -278,11 +278,21 @@ impl Row {
 /// The zero reference of every row: its own scale or, when larger, the largest finite
 /// |analytic| among the rows of the same quantity.
 pub fn scales(rows: &[Row]) -> Vec<f64> {
+    // The largest finite |analytic| of each quantity, in one pass.
+    let mut largest: Vec<(&Key, f64)> = Vec::new();
+    for r in rows.iter().filter(|r| r.analytic.is_finite()) {
+        match largest.iter_mut().find(|(k, _)| k.same_quantity(&r.key)) {
+            Some((_, m)) => *m = m.max(r.analytic.abs()),
+            None => largest.push((&r.key, r.analytic.abs())),
+        }
+    }
     rows.iter()
         .map(|r| {
-            rows.iter()
-                .filter(|o| o.key.same_quantity(&r.key) && o.analytic.is_finite())
-                .fold(r.scale.abs(), |m, o| m.max(o.analytic.abs()))
+            let column = largest
+                .iter()
+                .find(|(k, _)| k.same_quantity(&r.key))
+                .map_or(0.0, |q| q.1);
+            r.scale.abs().max(column)
         })
         .collect()
 }

@@ -38,17 +38,6 @@ pub struct Diagrams {
     pub rows: Vec<Row>,
 }
 
-impl Diagrams {
-    /// Bounds of the whole stack in the first figure's coordinates.
-    pub fn bounds(&self) -> (DVec2, DVec2) {
-        let (lo1, hi1) = self.first_figure.bounds().unwrap_or_default();
-        let (lo2, hi2) = self.second_figure.bounds().map_or((lo1, hi1), |(lo, hi)| {
-            (lo + self.second_at, hi + self.second_at)
-        });
-        (lo1.min(lo2), hi1.max(hi2))
-    }
-}
-
 /// The charted point (the scene's, or the first slider output) and the direction its
 /// displacement is measured along.
 pub fn target(

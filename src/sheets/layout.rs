@@ -118,7 +118,7 @@ struct Parts {
 }
 
 /// Put `block` into `rect`.
-fn put(block: Block, rect: Rect, parts: &mut Parts) -> Result<(), BuildError> {
+fn put(block: Block, rect: Rect, parts: &mut Parts) {
     match block {
         Block::Views {
             parts: figures,
@@ -155,7 +155,6 @@ fn put(block: Block, rect: Rect, parts: &mut Parts) -> Result<(), BuildError> {
             parts.tables.push(t);
         }
     }
-    Ok(())
 }
 
 /// Lay `blocks` out in order on sheets of format `sheet`, as many as they need; the plates are
@@ -174,7 +173,7 @@ pub(super) fn lay_out(
     let count = placed.iter().map(|p| p.0 + 1).max().unwrap_or(1);
     let mut pages: Vec<Parts> = (0..count).map(|_| Parts::default()).collect();
     for (block, (page, rect)) in blocks.into_iter().zip(placed) {
-        put(block, rect, &mut pages[page])?;
+        put(block, rect, &mut pages[page]);
     }
     Ok(pages
         .into_iter()

@@ -17,50 +17,42 @@ const MARGIN_MM: f64 = 3.0;
 struct Page {
     area: Rect,
     taken: Vec<Rect>,
+    /// Where the first item goes: the frame's left edge under the designation box (a strip
+    /// left of it would collect stray small items out of their order).
+    first: DVec2,
     /// The top-left corner of the last item placed: the next one goes after it in reading
     /// order (lower, or level with it and to its right), so the plans follow their numbers.
     last: Option<DVec2>,
 }
 
+/// Slack of the comparisons, mm.
+const EPS_MM: f64 = 1e-9;
+
 impl Page {
     fn new(sheet: &Sheet) -> Self {
         let f = sheet.frame();
         let m = DVec2::splat(MARGIN_MM);
+        let area = Rect::new(f.min + m, f.max - m);
+        let boxed = sheet.designation_box();
         Page {
-            area: Rect::new(f.min + m, f.max - m),
-            taken: vec![sheet.title_block(), sheet.designation_box()],
+            area,
+            taken: vec![sheet.title_block(), boxed],
+            first: DVec2::new(area.min.x, boxed.max.y + GAP_MM),
             last: None,
         }
     }
 
     fn free(&self, r: &Rect) -> bool {
-        let inside = r.min.x >= self.area.min.x - 1e-9
-            && r.min.y >= self.area.min.y - 1e-9
-            && r.max.x <= self.area.max.x + 1e-9
-            && r.max.y <= self.area.max.y + 1e-9;
-        inside
-            && self.taken.iter().all(|t| {
-                r.max.x + GAP_MM <= t.min.x + 1e-9
-                    || t.max.x + GAP_MM <= r.min.x + 1e-9
-                    || r.max.y + GAP_MM <= t.min.y + 1e-9
-                    || t.max.y + GAP_MM <= r.min.y + 1e-9
-            })
+        self.area.inflate(EPS_MM).contains(r)
+            && self
+                .taken
+                .iter()
+                .all(|t| !r.inflate(GAP_MM - EPS_MM).intersects(t))
     }
 
-    /// The highest, then leftmost, free place of `size`; candidates are the area's corner and
-    /// the corners just past each taken rectangle.
+    /// The highest, then leftmost, free place of `size` after the last item; candidates are
+    /// the area's corner and the corners just past each taken rectangle.
     fn place(&mut self, size: DVec2) -> Option<Rect> {
-        // The first item starts at the frame's left edge, under the designation box: a
-        // strip left of it would collect stray small items out of their order.
-        if self.last.is_none() {
-            let at = DVec2::new(self.area.min.x, below_box(self) + GAP_MM);
-            let r = Rect::new(at, at + size);
-            if self.free(&r) {
-                self.taken.push(r);
-                self.last = Some(r.min);
-                return Some(r);
-            }
-        }
         let mut xs = vec![self.area.min.x];
         let mut ys = vec![self.area.min.y];
         for t in &self.taken {
@@ -69,27 +61,23 @@ impl Page {
         }
         xs.sort_by(f64::total_cmp);
         ys.sort_by(f64::total_cmp);
-        let after = |x: f64, y: f64| {
+        let after = |c: &DVec2| {
             self.last
-                .is_none_or(|l| y > l.y + 1e-9 || (y >= l.y - 1e-9 && x > l.x + 1e-9))
+                .is_none_or(|l| c.y > l.y + EPS_MM || (c.y >= l.y - EPS_MM && c.x > l.x + EPS_MM))
         };
-        for &y in &ys {
-            for &x in &xs {
-                let r = Rect::new(DVec2::new(x, y), DVec2::new(x, y) + size);
-                if after(x, y) && self.free(&r) {
-                    self.taken.push(r);
-                    self.last = Some(r.min);
-                    return Some(r);
-                }
-            }
-        }
-        None
+        let grid = ys
+            .iter()
+            .flat_map(|&y| xs.iter().map(move |&x| DVec2::new(x, y)));
+        let start = self.last.is_none().then_some(self.first);
+        let r = start
+            .into_iter()
+            .chain(grid.filter(after))
+            .map(|c| Rect::new(c, c + size))
+            .find(|r| self.free(r))?;
+        self.taken.push(r);
+        self.last = Some(r.min);
+        Some(r)
     }
-}
-
-/// The bottom of the designation box (the second rectangle a page starts with).
-fn below_box(p: &Page) -> f64 {
-    p.taken.get(1).map_or(p.area.min.y, |r| r.max.y)
 }
 
 /// Where each item went: its sheet (0-based) and its rectangle (sheet mm, y down).
@@ -136,7 +124,7 @@ pub(super) fn rooms(sheet: &Sheet) -> [DVec2; 4] {
 pub(super) fn sheet_overflow(sheet: &Sheet, size: DVec2) -> f64 {
     rooms(sheet)
         .iter()
-        .map(|r| (size.x / r.x).max(size.y / r.y))
+        .map(|&r| super::fit::overflow(size, r))
         .fold(f64::INFINITY, f64::min)
 }
 

@@ -151,6 +151,7 @@ fn refusable<T>(r: MaybeCached<T>, refusals: &mut Vec<KinError>) -> MaybeCached<
         other => other,
     }
 }
+
 type MaybeCached<T> = Result<Option<Arc<T>>, StudyError>;
 /// An acceleration plan with its rows.
 pub type Acceleration = (KinPlan, Vec<Row>);
