@@ -44,6 +44,26 @@ pub enum Symbol {
     AngularVelocity,
     /// Angular acceleration ε of a link, rad/s².
     AngularAcceleration,
+    /// A force (inertia force, balancing force, a load), N.
+    Force,
+    /// A reaction in a kinematic pair (force of one link on another), N.
+    Reaction,
+    /// A moment (balancing moment, inertia moment, a friction moment), N·m.
+    Moment,
+    /// A mass (a correcting mass), kg.
+    Mass,
+    /// A static moment of mass m·ρ (an unbalance), kg·m.
+    StaticMoment,
+    /// A moment of an unbalance about a plane, m·ρ·z, kg·m².
+    UnbalanceMoment,
+    /// A length read off a force drawing (an arm, a point of application, a radius), m.
+    Length,
+    /// An angle (a friction angle, the direction of a correcting mass), rad.
+    Angle,
+    /// An efficiency or another ratio, 1.
+    Ratio,
+    /// A power, W.
+    Power,
 }
 
 impl Symbol {
@@ -55,6 +75,16 @@ impl Symbol {
             Symbol::Acceleration => "a",
             Symbol::AngularVelocity => "omega",
             Symbol::AngularAcceleration => "eps",
+            Symbol::Force => "F",
+            Symbol::Reaction => "R",
+            Symbol::Moment => "M",
+            Symbol::Mass => "m",
+            Symbol::StaticMoment => "mr",
+            Symbol::UnbalanceMoment => "mrz",
+            Symbol::Length => "h",
+            Symbol::Angle => "angle",
+            Symbol::Ratio => "eta",
+            Symbol::Power => "P",
         }
     }
     /// The SI unit as the report writes it.
@@ -65,9 +95,19 @@ impl Symbol {
             Symbol::Acceleration => "m/s^2",
             Symbol::AngularVelocity => "rad/s",
             Symbol::AngularAcceleration => "rad/s^2",
+            Symbol::Force | Symbol::Reaction => "N",
+            Symbol::Moment => "N*m",
+            Symbol::Mass => "kg",
+            Symbol::StaticMoment => "kg*m",
+            Symbol::UnbalanceMoment => "kg*m^2",
+            Symbol::Length => "m",
+            Symbol::Angle => "rad",
+            Symbol::Ratio => "1",
+            Symbol::Power => "W",
         }
     }
-    /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`): the textbook spelling.
+    /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{12}`): the
+    /// textbook spelling.
     pub fn markup(self, subject: &str) -> String {
         let letter = match self {
             Symbol::Displacement => "S",
@@ -75,8 +115,20 @@ impl Symbol {
             Symbol::Acceleration => "a",
             Symbol::AngularVelocity => "ω",
             Symbol::AngularAcceleration => "ε",
+            Symbol::Force => "F",
+            Symbol::Reaction => "R",
+            Symbol::Moment => "M",
+            Symbol::Mass => "m",
+            Symbol::StaticMoment => "mρ",
+            Symbol::UnbalanceMoment => "mρz",
+            Symbol::Length => "h",
+            Symbol::Angle => "α",
+            Symbol::Ratio => "η",
+            Symbol::Power => "P",
         };
-        format!("{letter}_{{{}}}", subject.replace('_', ""))
+        // A reaction names two links, written apart as the textbooks do: R_{1-2}.
+        let sep = if self == Symbol::Reaction { "-" } else { "" };
+        format!("{letter}_{{{}}}", subject.replace('_', sep))
     }
 }
 

@@ -1,0 +1,3 @@
+//! Force analysis: kinetostatics of Assur groups by force polygons, the driving link,
+//! Zhukovsky's lever, friction and rotor balancing — each a construction, an analytic twin
+//! and a check.
