@@ -402,6 +402,8 @@ fn slotted_link_with_offset_has_one_meaning_of_the_sliding_velocity() {
 fn report_of_a_pin_through_the_pivot_holds_no_huge_number() {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(root.join("constructions/shaper.toml")).expect("shaper");
+    // The kinematics only: the loads of the force analysis come last in the file.
+    let text = text.split("\n[forces]").next().unwrap_or_default();
     let text = text
         .replace("length = 140.0", "length = 430.0")
         .replace("start = \"working-stroke\"", "start = -90.0")

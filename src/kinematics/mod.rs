@@ -141,7 +141,7 @@ pub enum KinError {
 }
 
 /// Position labels as a reader lists them: the numbered run `1…12`, then the others (`8′`).
-fn position_list(labels: &[String]) -> String {
+pub fn position_list(labels: &[String]) -> String {
     let numbers: Vec<u32> = labels.iter().filter_map(|l| l.parse().ok()).collect();
     let run = numbers.len() > 2 && numbers.iter().zip(1..).all(|(&n, k)| n == k);
     let mut parts: Vec<String> = if run {

@@ -40,9 +40,10 @@ pub(crate) fn kinematics(
             Quantity::Acceleration,
             "a scale μ_a > 0 (m/s²)/mm",
         ),
-        acceleration_positions: raw
-            .acceleration_positions
-            .map(|labels| position_labels(check, &key("acceleration_positions"), &labels, count)),
+        acceleration_positions: raw.acceleration_positions.map(|labels| {
+            let key = key("acceleration_positions");
+            position_labels(check, &key, &labels, count, MAX_ACCELERATION_POSITIONS)
+        }),
         diagram_point: point(check, &key("diagram"), raw.diagram, names.as_deref()),
         scale_s: check.scale(
             &key("scale_s"),
@@ -75,7 +76,7 @@ pub(crate) fn kinematics(
 }
 
 /// Every point name of the mechanism: fixed points, the crank pin, the joints, link points.
-fn point_names(m: &Mechanism) -> Vec<String> {
+pub(super) fn point_names(m: &Mechanism) -> Vec<String> {
     let joints = m.groups.iter().filter_map(|g| match &g.dyad {
         Dyad::Rrr { joint, .. }
         | Dyad::Rrp { joint, .. }
@@ -94,7 +95,7 @@ fn point_names(m: &Mechanism) -> Vec<String> {
 }
 
 /// An optional point name that must be one of `names` (unchecked when `names` is `None`).
-fn point(
+pub(super) fn point(
     check: &mut Checker,
     key: &str,
     v: Option<String>,
@@ -111,12 +112,17 @@ fn point(
     }
 }
 
-/// `acceleration_positions`: 1–4 distinct labels `k` or `k′` (an ASCII `'` becomes `′`) with
+/// A list of 1–`max` distinct labels `k` or `k′` (an ASCII `'` becomes `′`) with
 /// 1 ≤ k ≤ `count`. Whether an extreme `k′` exists is known only once the plan is built.
-fn position_labels(check: &mut Checker, key: &str, labels: &[String], count: u32) -> Vec<String> {
-    if !(1..=MAX_ACCELERATION_POSITIONS).contains(&labels.len()) {
-        let expected =
-            format!("expected 1 to {MAX_ACCELERATION_POSITIONS} position labels (\"3\", \"8′\")");
+pub(super) fn position_labels(
+    check: &mut Checker,
+    key: &str,
+    labels: &[String],
+    count: u32,
+    max: usize,
+) -> Vec<String> {
+    if !(1..=max).contains(&labels.len()) {
+        let expected = format!("expected 1 to {max} position labels (\"3\", \"8′\")");
         check.push(key, Some(format!("{labels:?}")), expected);
     }
     let mut out: Vec<String> = Vec::new();

@@ -2,6 +2,7 @@
 
 use super::check::{item, quoted, Checker};
 use super::error::SceneError;
+use super::forces::forces;
 use super::kinematics::kinematics;
 use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
@@ -44,6 +45,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         for (section, present) in [
             ("positions", raw.positions.is_some()),
             ("kinematics", raw.kinematics.is_some()),
+            ("forces", raw.forces.is_some()),
         ] {
             if present {
                 check.push(
@@ -67,6 +69,9 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         mechanism.as_ref(),
         positions.count,
     );
+    let forces = raw
+        .forces
+        .map(|f| forces(&mut check, f, mechanism.as_ref(), positions.count));
     if check.problems.is_empty() {
         Ok(Scene {
             path: path.to_path_buf(),
@@ -77,6 +82,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             positions,
             plates,
             kinematics,
+            forces,
         })
     } else {
         Err(SceneError::Invalid {

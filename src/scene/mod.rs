@@ -2,6 +2,7 @@
 
 mod check;
 mod error;
+mod forces;
 mod groups;
 mod kinematics;
 mod load;

@@ -37,6 +37,9 @@ pub enum PlateKind {
     /// Kinematic analysis: velocity and acceleration plans, the displacement chart and its
     /// graphical derivatives, a hodograph.
     Kinematics,
+    /// Force analysis (one sheet per position): the groups with their loads, the force
+    /// polygons, the driving link, Zhukovsky's lever.
+    Forces,
 }
 
 impl PlateKind {
@@ -45,10 +48,15 @@ impl PlateKind {
         match self {
             PlateKind::Positions => "positions",
             PlateKind::Kinematics => "kinematics",
+            PlateKind::Forces => "forces",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 2] = [PlateKind::Positions, PlateKind::Kinematics];
+    pub const ALL: [PlateKind; 3] = [
+        PlateKind::Positions,
+        PlateKind::Kinematics,
+        PlateKind::Forces,
+    ];
 
     /// Parse a stem.
     pub fn parse(s: &str) -> Option<Self> {
@@ -92,4 +100,6 @@ pub struct Scene {
     pub plates: Vec<PlateKind>,
     /// The `[kinematics]` choices (all `None` when the section is absent).
     pub kinematics: KinematicsSpec,
+    /// The `[forces]` loads (`None` when the section is absent).
+    pub forces: Option<crate::forces::ForceSpec>,
 }

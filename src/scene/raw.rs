@@ -14,6 +14,7 @@ pub(crate) struct RawScene {
     pub positions: Option<RawPositions>,
     pub plates: Option<RawPlates>,
     pub kinematics: Option<RawKinematics>,
+    pub forces: Option<RawForces>,
 }
 
 /// `[task]`: the title block.
@@ -248,4 +249,55 @@ impl RawGroup {
         text("branch", self.branch.as_ref().map(|s| format!("{s:?}")));
         out
     }
+}
+
+/// `[forces]`: the loads of the force analysis.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawForces {
+    pub g: Option<f64>,
+    pub gravity: Option<f64>,
+    pub positions: Option<Vec<String>>,
+    pub scale_f: Option<f64>,
+    #[serde(default)]
+    pub link: Vec<RawLinkLoad>,
+    #[serde(default)]
+    pub resistance: Vec<RawResistance>,
+    pub drive: Option<RawDrive>,
+}
+
+/// `[[forces.link]]`: a link's mass, centre of mass and moment of inertia.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawLinkLoad {
+    pub link: Option<i64>,
+    pub mass: Option<f64>,
+    pub centre: Option<String>,
+    pub inertia: Option<f64>,
+    pub rod: Option<f64>,
+    pub length: Option<f64>,
+}
+
+/// `[[forces.resistance]]`: a force on a point or a moment on a link.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawResistance {
+    pub point: Option<String>,
+    pub force: Option<f64>,
+    pub dir: Option<f64>,
+    pub link: Option<i64>,
+    pub moment: Option<f64>,
+    pub stroke: Option<String>,
+}
+
+/// `[forces.drive]`: a coupling or a gear pair.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawDrive {
+    pub kind: Option<String>,
+    pub module: Option<f64>,
+    pub teeth: Option<i64>,
+    pub mate_teeth: Option<i64>,
+    pub pressure_angle: Option<f64>,
+    pub towards: Option<f64>,
 }

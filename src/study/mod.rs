@@ -11,6 +11,7 @@ mod memo;
 
 use crate::check::Row;
 use crate::construct::{Context, Drafting, Figure};
+use crate::forces::{ForceError, ForceSpec, PositionForces};
 use crate::kinematics::{
     self, acceleration_indices, plans, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
 };
@@ -45,6 +46,12 @@ pub enum StudyError {
     /// The tolerances of the figures cannot be set up.
     #[error("tolerances: {0}")]
     Tolerances(String),
+    /// The force analysis cannot be carried out.
+    #[error(transparent)]
+    Forces(#[from] ForceError),
+    /// The scene has no `[forces]` and the study needs it.
+    #[error("the scene has no [forces]: {0} needs the loads")]
+    NoForces(&'static str),
 }
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -171,6 +178,7 @@ pub struct Session<'s> {
     rocker: Memo<(Scale, Scale), MaybeCached<RockerDiagram>>,
     hodograph: Memo<(Scale, Scale), Result<Option<Hodograph>, StudyError>>,
     table: Memo<Scale, Cached<Table>>,
+    forces: Memo<(Scale, Scale, Scale, usize), Cached<PositionForces>>,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -190,6 +198,7 @@ impl<'s> Session<'s> {
             rocker: Memo::default(),
             hodograph: Memo::default(),
             table: Memo::default(),
+            forces: Memo::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -431,6 +440,56 @@ impl<'s> Session<'s> {
         })
     }
 
+    /// The `[forces]` loads, for a study that needs them.
+    pub fn force_spec(&self, study: &'static str) -> Result<&'s ForceSpec, StudyError> {
+        self.scene
+            .forces
+            .as_ref()
+            .ok_or(StudyError::NoForces(study))
+    }
+
+    /// The positions the force analysis asks for, as indices into the plan's positions.
+    pub fn force_positions(&self) -> Result<Vec<usize>, StudyError> {
+        let spec = self.force_spec("the force analysis")?;
+        let poses = self.poses()?;
+        let labels: Vec<&str> = poses.positions.iter().map(|p| p.label.as_str()).collect();
+        spec.positions
+            .iter()
+            .map(|l| {
+                labels.iter().position(|p| p == l).ok_or_else(|| {
+                    StudyError::Forces(ForceError::NoSuchPosition {
+                        label: l.clone(),
+                        valid: crate::kinematics::position_list(
+                            &labels.iter().map(|s| s.to_string()).collect::<Vec<_>>(),
+                        ),
+                    })
+                })
+            })
+            .collect()
+    }
+
+    /// The force analysis of position `k` at the kinematic scales `sc` (its velocity and
+    /// acceleration plans at μ_v and μ_a).
+    pub fn forces(&self, sc: &KinScales, k: usize) -> Cached<PositionForces> {
+        self.forces.get((sc.l, sc.v, sc.a, k), || {
+            let spec = self.force_spec("the force analysis")?;
+            let plan = self.positions(sc.l)?;
+            let vel = self.velocity(sc.l, sc.v, k)?;
+            let Some(vp) = vel.plan() else {
+                return Err(KinError::NoVelocityPlan {
+                    position: plan.positions[k].label.clone(),
+                    why: "the force analysis needs it".into(),
+                }
+                .into());
+            };
+            let ap = self.acceleration(sc, k)?;
+            let w1 = self.w1()?;
+            let f = crate::forces::analyse(spec, &plan, k, sc.l, vp, &ap.0, w1, &self.ctx()?)?;
+            self.logged("force polygons", &plan.positions[k].label, f.scale_f);
+            Ok(Arc::new(f))
+        })
+    }
+
     /// The whole kinematic study at `sc`: every part the sheet and the report show.
     pub fn kinematics(&self, sc: &KinScales) -> Result<Kinematics, StudyError> {
         let plan = self.positions(sc.l)?;
@@ -476,9 +535,22 @@ impl<'s> Session<'s> {
                 )
             })
         }));
+        let mut rows = k.rows();
+        if self.scene.forces.is_some() {
+            for i in self.force_positions()? {
+                let f = self.forces(&k.scales, i)?;
+                rows.extend(f.rows.iter().cloned());
+                notes.push(format!(
+                    "position {}: the balancing moment by the power balance Σ F·v + Σ M·ω + M_bal·ω₁ = 0 is {} N·m; the linear solve of the links' equilibrium gives {} N·m",
+                    f.label,
+                    crate::scale::format_sig(f.m_power, 10, crate::scale::Lang::En),
+                    crate::scale::format_sig(f.twin.m_bal, 10, crate::scale::Lang::En),
+                ));
+            }
+        }
         Ok(Report {
             scene: self.scene.stem.clone(),
-            rows: k.rows(),
+            rows,
             tables: vec![k.table.as_ref().clone()],
             notes,
         })

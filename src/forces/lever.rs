@@ -1,0 +1,160 @@
+//! Zhukovsky's lever (рычаг Жуковского) as a construction: the velocity plan turned 90°
+//! clockwise, every force applied at the image of its point, every couple replaced by two
+//! forces at two points of its link, the moments about the pole with their arms measured on
+//! the drawing; the balancing moment (or force at the image of the pitch point) from
+//! Σ M_p = 0. The lever's moment of a force is its power divided by μ_v, so the lever is the
+//! power balance drawn.
+
+use super::loads::{Load, LoadKind};
+use super::spec::Drive;
+use super::twin::line_of_action;
+use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::geom::{DVec2, Segment};
+use crate::linkage::{Built, KinPlan, Program};
+use crate::scale::Scale;
+
+/// Length of a force's arrow on the lever, mm.
+const ARROW_MM: f64 = 12.0;
+
+/// The lever as drawn and what it gives.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lever {
+    /// The turned plan with the forces and their arms, at μ_v.
+    pub figure: Figure,
+    /// The balancing moment, N·m.
+    pub m_bal: f64,
+    /// The balancing force (gear drive), N.
+    pub f_bal: Option<f64>,
+}
+
+/// The velocity plan's image of a drawing point `x` (mm) of link `l`, plan mm, by the
+/// similarity of the link's images: the image of its origin plus ω × r.
+fn image(b: &Built, vp: &KinPlan, l: usize, x: DVec2, mu_l: f64) -> DVec2 {
+    let o = b.origin[l];
+    let w = vp.rate.get(l).copied().unwrap_or(0.0);
+    vp.images[o] + (x - b.p[o]).perp() * (w * mu_l / vp.figure.scale.value())
+}
+
+/// Turn a plan vector 90° clockwise.
+fn turn(v: DVec2) -> DVec2 {
+    DVec2::new(v.y, -v.x)
+}
+
+/// Build the lever from the velocity plan `vp` of the position `b` (at μ_l) and its loads.
+#[allow(clippy::too_many_arguments)]
+pub fn lever(
+    prog: &Program,
+    b: &Built,
+    mu_l: Scale,
+    vp: &KinPlan,
+    loads: &[Load],
+    drive: &Drive,
+    w1: f64,
+    ctx: &Context,
+) -> Lever {
+    let mu_v = vp.figure.scale;
+    let mut rec = Recorder::in_context("Zhukovsky's lever", mu_v, ctx);
+    let pole = rec.point(
+        "pole",
+        DVec2::ZERO,
+        Role::Given,
+        "p",
+        DVec2::new(-0.7, -0.7),
+        &[],
+    );
+    // The turned plan: a ray from the pole to every point's image.
+    for k in prog.fixed.len()..prog.names.len() {
+        let x = turn(vp.images[k]);
+        if x.length() > 0.5 {
+            rec.draw(
+                "turned plan",
+                Item::Segment(Segment::new(DVec2::ZERO, x)),
+                Role::Construction,
+                &[pole],
+            );
+            let name = crate::linkage::plain(&prog.names[k]).to_lowercase();
+            let id = rec.draw("image", Item::Point(x), Role::Given, &[]);
+            rec.label(id, name, x, x.normalize_or_zero());
+        }
+    }
+    let mut arms = 0;
+    let mut moment = |rec: &mut Recorder, x: DVec2, f: DVec2, name: &str| -> f64 {
+        let Some(e) = f.try_normalize() else {
+            return 0.0;
+        };
+        let id = rec.draw(
+            format!("{name} at its image"),
+            Item::Vector {
+                from: x,
+                to: x + e * ARROW_MM,
+            },
+            Role::Result,
+            &[],
+        );
+        rec.label(id, name, x + e * ARROW_MM, e);
+        let foot = x + e * (-x).dot(e);
+        let arm = rec.measure(DVec2::ZERO, foot);
+        if arm.drawn_mm > 0.5 {
+            arms += 1;
+            let id = rec.draw(
+                format!("arm of {name}"),
+                Item::Segment(Segment::new(DVec2::ZERO, foot)),
+                Role::Construction,
+                &[],
+            );
+            rec.label(
+                id,
+                format!("h_{{{arms}}}"),
+                foot * 0.5,
+                foot.perp().normalize_or_zero(),
+            );
+        }
+        // Moment about the pole in plan mm × N, turned into power with μ_v.
+        x.perp_dot(e).signum() * f.length() * arm.value
+    };
+    let mu = mu_l.value();
+    let mut power = 0.0;
+    for l in loads {
+        if l.kind == LoadKind::InertiaMoment || l.is_couple() {
+            // A couple as two forces ⊥ to the link at its origin and its farthest point.
+            let o = b.origin[l.link];
+            let far = (0..prog.names.len())
+                .filter(|&k| prog.links_of(k).contains(&l.link))
+                .max_by(|&x, &y| b.p[x].distance(b.p[o]).total_cmp(&b.p[y].distance(b.p[o])));
+            let Some(far) = far.filter(|&f| b.p[f] != b.p[o]) else {
+                continue;
+            };
+            let len = rec.measure(b.p[o], b.p[far]).read_mm * mu;
+            let e = (b.p[far] - b.p[o]).normalize().perp();
+            let f = e * (l.moment / len);
+            let name = l.name.replacen('M', "F", 1);
+            power += moment(&mut rec, turn(vp.images[far]), f, &name);
+            power += moment(&mut rec, turn(vp.images[o]), -f, &name);
+        } else {
+            let x = if l.shift == DVec2::ZERO {
+                vp.images[l.at]
+            } else {
+                image(b, vp, l.link, b.p[l.at] + l.shift / mu, mu)
+            };
+            power += moment(&mut rec, turn(x), l.force, &l.name);
+        }
+    }
+    let crank = prog.crank_link as usize;
+    let (m_bal, f_bal) = match drive {
+        Drive::Coupling => (-power / w1, None),
+        Drive::Gear(g) => {
+            let o = b.p[prog.centre];
+            let (p, d) =
+                line_of_action(o, g.radius() / mu, g.towards, g.pressure_angle, w1.signum());
+            let x = turn(image(b, vp, crank, p, mu));
+            let unit = moment(&mut rec, x, d, "F_{у}");
+            let f = -power / unit;
+            (-power / w1, Some(f))
+        }
+    };
+    Lever {
+        figure: rec.finish(),
+        m_bal,
+        f_bal,
+    }
+}

@@ -1,0 +1,207 @@
+//! The loads of one position: weights, inertia forces −m·a_S at the centres of mass, inertia
+//! moments −I_S·ε and the working resistance in its stroke, from the motion of the position
+//! as one route knows it (the plans, or the analytic twin).
+
+use super::spec::{Action, ForceSpec, Stroke};
+use super::ForceError;
+use crate::geom::DVec2;
+use crate::linkage::{Pose, Program};
+
+/// The motion of one position, SI, by program point index and by link number.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Motion {
+    /// Positions, m.
+    pub p: Vec<DVec2>,
+    /// Velocities, m/s.
+    pub v: Vec<DVec2>,
+    /// Accelerations, m/s².
+    pub a: Vec<DVec2>,
+    /// Angular velocities, rad/s, counter-clockwise.
+    pub omega: Vec<f64>,
+    /// Angular accelerations, rad/s², counter-clockwise.
+    pub eps: Vec<f64>,
+}
+
+impl Motion {
+    /// The analytic twin's motion at `pose` with the crank turning at `w1` (constant).
+    pub fn analytic(pose: &Pose, w1: f64) -> Self {
+        Self {
+            p: pose.p.clone(),
+            v: pose.dp.iter().map(|d| *d * w1).collect(),
+            a: pose.ddp.iter().map(|d| *d * (w1 * w1)).collect(),
+            omega: pose.dangle.iter().map(|d| d * w1).collect(),
+            eps: pose.ddangle.iter().map(|d| d * (w1 * w1)).collect(),
+        }
+    }
+}
+
+/// What a load is, for its label and its row.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoadKind {
+    /// The weight G = m·g.
+    Weight,
+    /// The inertia force F_и = −m·a_S.
+    Inertia,
+    /// The inertia moment M_и = −I_S·ε.
+    InertiaMoment,
+    /// A working resistance.
+    Resistance,
+    /// A reaction of a link already analysed.
+    Reaction,
+}
+
+/// A load on a link.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Load {
+    /// The link it acts on.
+    pub link: usize,
+    /// What it is.
+    pub kind: LoadKind,
+    /// Its label (markup): `G_{3}`, `F_{и3}`, `M_{и3}`, `F_{пс}`, `R_{4-3}`.
+    pub name: String,
+    /// The force, N (zero for a couple).
+    pub force: DVec2,
+    /// Its point of application, by program index (a couple: unused) …
+    pub at: usize,
+    /// … shifted by this much, m (a guide's reaction acts off its reference point).
+    pub shift: DVec2,
+    /// The moment of a couple, N·m, counter-clockwise (zero for a force).
+    pub moment: f64,
+}
+
+impl Load {
+    /// A force `f` at point `at` on `link`.
+    pub fn force(link: usize, kind: LoadKind, name: String, f: DVec2, at: usize) -> Self {
+        Self {
+            link,
+            kind,
+            name,
+            force: f,
+            at,
+            shift: DVec2::ZERO,
+            moment: 0.0,
+        }
+    }
+    /// A couple `m` on `link`.
+    pub fn couple(link: usize, kind: LoadKind, name: String, m: f64) -> Self {
+        Self {
+            link,
+            kind,
+            name,
+            force: DVec2::ZERO,
+            at: 0,
+            shift: DVec2::ZERO,
+            moment: m,
+        }
+    }
+    /// A couple (no force).
+    pub fn is_couple(&self) -> bool {
+        self.force == DVec2::ZERO && self.moment != 0.0
+    }
+}
+
+/// Which stroke a position is on: `Some(true)` on the working stroke, `Some(false)` on the
+/// return, `None` at an extreme or without extremes.
+pub type Phase = Option<bool>;
+
+/// The loads of one position from `motion`: for every link with a mass its weight and its
+/// inertia force at the centre of mass, for every link with a moment of inertia its inertia
+/// moment, and every resistance acting on the position's stroke. Zero loads are left out.
+pub fn loads(
+    spec: &ForceSpec,
+    prog: &Program,
+    motion: &Motion,
+    phase: Phase,
+) -> Result<Vec<Load>, ForceError> {
+    let mut out = Vec::new();
+    let down = DVec2::from_angle(spec.gravity_dir);
+    for lm in &spec.links {
+        let l = lm.link as usize;
+        let s = point_on(prog, &lm.centre, l)?;
+        let sub = l.to_string();
+        if lm.mass > 0.0 {
+            let g = down * (lm.mass * spec.g);
+            out.push(Load::force(
+                l,
+                LoadKind::Weight,
+                format!("G_{{{sub}}}"),
+                g,
+                s,
+            ));
+            let f = -motion.a[s] * lm.mass;
+            if f != DVec2::ZERO {
+                let name = format!("F_{{и{sub}}}");
+                out.push(Load::force(l, LoadKind::Inertia, name, f, s));
+            }
+        }
+        let m = -lm.inertia * motion.eps.get(l).copied().unwrap_or(0.0);
+        if m != 0.0 {
+            let name = format!("M_{{и{sub}}}");
+            out.push(Load::couple(l, LoadKind::InertiaMoment, name, m));
+        }
+    }
+    for r in &spec.resistances {
+        let acts = match r.stroke {
+            Stroke::Always => true,
+            Stroke::Working => phase == Some(true),
+            Stroke::Return => phase == Some(false),
+        };
+        if !acts {
+            continue;
+        }
+        match &r.action {
+            Action::Force {
+                point,
+                magnitude,
+                dir,
+            } => {
+                let k = prog.index(point).ok_or_else(|| ForceError::NoPoint {
+                    key: "resistance.point",
+                    name: point.clone(),
+                })?;
+                // A joint is loaded through the link that owns it (a slider's joint: the slider).
+                let l = prog.owner(k);
+                let e = match dir {
+                    Some(a) => Some(DVec2::from_angle(*a)),
+                    None => (-motion.v[k]).try_normalize(),
+                };
+                if let Some(e) = e {
+                    let name = "F_{пс}".to_string();
+                    out.push(Load::force(
+                        l,
+                        LoadKind::Resistance,
+                        name,
+                        e * *magnitude,
+                        k,
+                    ));
+                }
+            }
+            Action::Moment { link, magnitude } => {
+                let l = *link as usize;
+                let w = motion.omega.get(l).copied().unwrap_or(0.0);
+                if w != 0.0 {
+                    let name = "M_{пс}".to_string();
+                    let m = -w.signum() * magnitude;
+                    out.push(Load::couple(l, LoadKind::Resistance, name, m));
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The point `name`, which must lie on link `l`.
+fn point_on(prog: &Program, name: &str, l: usize) -> Result<usize, ForceError> {
+    let k = prog.index(name).ok_or_else(|| ForceError::NoPoint {
+        key: "link.centre",
+        name: name.to_string(),
+    })?;
+    if prog.links_of(k).contains(&l) {
+        Ok(k)
+    } else {
+        Err(ForceError::NotOnLink {
+            name: name.to_string(),
+            link: l,
+        })
+    }
+}

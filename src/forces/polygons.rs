@@ -1,0 +1,662 @@
+//! Force polygons (планы сил) as drawing-board constructions, group by group from the group
+//! farthest from the driving link, then the driving link. Every arm is measured on the
+//! group's drawing at μ_l and every reaction read off its polygon at μ_F, both under the
+//! drafting model.
+//!
+//! Per kind (i, j the group's links; A, C the outer pairs, B the inner):
+//! * RRR — F^τ of each outer reaction from the moments of its link about B; the polygon
+//!   F^τ_A, loads of i, loads of j, F^τ_C is closed by lines ∥ AB and ∥ CB; the inner
+//!   reaction joins the end of i's loads to the closing point.
+//! * RRP — F^τ_A as above; closed by the line ∥ AB and the normal to the guide; the guide's
+//!   reaction acts at h = −ΣM_B(j)/R from B.
+//! * RPR — the inner reaction (normal to the slide) from the moments of link j about its
+//!   pivot with the block's moment carried over; each link's polygon closes on it.
+//! * PRP — closed by the two guides' normals; each reaction's point from its link's moments.
+//! * RPP — link j's polygon closed by the normals to the slide and to the guide; the block's
+//!   triangle gives the outer reaction.
+//!
+//! The driving link: through a coupling the balancing moment M_у = −ΣM_O; through a gear the
+//! balancing force along the line of action at the pitch point from ΣM_O = 0 (its arm
+//! measured), and the frame's reaction closes the triangle.
+
+use super::loads::{Load, LoadKind};
+use super::spec::Drive;
+use super::twin::{line_of_action, Pair, PairKind, Reaction};
+use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role};
+use crate::geom::{Circle, DVec2, Line, Segment};
+use crate::linkage::{draw_links, Built, Op, PDyad, Part, Program};
+use crate::scale::Scale;
+
+/// Length of a load's arrow on a group's drawing, mm (the drawing shows where and which
+/// way; the polygon shows how much).
+const ARROW_MM: f64 = 14.0;
+
+/// One group's force analysis as drawn.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GroupPolygon {
+    /// Group index (file order).
+    pub group: usize,
+    /// Its links.
+    pub links: [usize; 2],
+    /// The group drawn apart at μ_l with its loads, reactions and measured arms.
+    pub scheme: Figure,
+    /// Its force polygon at μ_F.
+    pub polygon: Figure,
+    /// The reactions read off the polygon: the two outer pairs, then the inner.
+    pub reactions: Vec<Reaction>,
+}
+
+/// The driving link's analysis as drawn.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DriverPolygon {
+    /// The crank (with its wheel and line of action) at μ_l.
+    pub scheme: Figure,
+    /// Its force triangle at μ_F.
+    pub polygon: Figure,
+    /// The frame's reaction on the crank.
+    pub reaction: Reaction,
+    /// The balancing moment, N·m.
+    pub m_bal: f64,
+    /// The balancing force (gear drive), N.
+    pub f_bal: Option<f64>,
+}
+
+/// Everything one position's polygons give.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Polygons {
+    /// The groups, from the last attached to the first.
+    pub groups: Vec<GroupPolygon>,
+    /// The driving link.
+    pub driver: DriverPolygon,
+}
+
+/// What every drawing of a position starts from.
+pub struct Board<'a> {
+    /// The mechanism.
+    pub prog: &'a Program,
+    /// The constructed position, drawing mm.
+    pub built: &'a Built,
+    /// μ_l of `built`.
+    pub mu_l: Scale,
+    /// μ_F of the polygons.
+    pub mu_f: Scale,
+    /// Tolerances and drafting.
+    pub ctx: Context,
+    /// The crank's sense, +1 counter-clockwise.
+    pub sense: f64,
+}
+
+/// A link's loads and its arms measured on a drawing.
+struct Scheme<'a> {
+    board: &'a Board<'a>,
+    rec: Recorder,
+    arms: usize,
+}
+
+impl<'a> Scheme<'a> {
+    fn new(board: &'a Board<'a>, title: String) -> Self {
+        Self {
+            board,
+            rec: Recorder::in_context(title, board.mu_l, &board.ctx),
+            arms: 0,
+        }
+    }
+
+    /// Where a load acts on the drawing, mm.
+    fn at(&self, l: &Load) -> DVec2 {
+        self.board.built.p[l.at] + l.shift / self.board.mu_l.value()
+    }
+
+    /// Draw a load: an arrow at its point (a couple: an arc arrow about the link's origin).
+    fn show(&mut self, l: &Load) {
+        if l.is_couple() {
+            let o = self.board.built.p[self.board.built.origin[l.link]];
+            let (a0, sweep) = if l.moment > 0.0 {
+                (0.3, 1.6)
+            } else {
+                (1.9, -1.6)
+            };
+            let arc = crate::geom::Arc {
+                center: o,
+                radius: 9.0,
+                start: a0,
+                sweep,
+            };
+            let id = self
+                .rec
+                .draw(l.name.clone(), Item::Angle(arc), Role::Result, &[]);
+            let mid = o + DVec2::from_angle(a0 + sweep / 2.0) * 9.0;
+            self.rec
+                .label(id, &l.name, mid, DVec2::from_angle(a0 + sweep / 2.0));
+            return;
+        }
+        let Some(e) = l.force.try_normalize() else {
+            return;
+        };
+        let x = self.at(l);
+        let id = self.rec.draw(
+            format!("load {}", l.name),
+            Item::Vector {
+                from: x,
+                to: x + e * ARROW_MM,
+            },
+            Role::Result,
+            &[],
+        );
+        self.rec.label(id, &l.name, x + e * ARROW_MM, e);
+    }
+
+    /// The moment of `l` about `c` (mm), N·m: the arm measured on the drawing.
+    fn moment(&mut self, c: DVec2, l: &Load) -> f64 {
+        if l.force == DVec2::ZERO {
+            return l.moment;
+        }
+        let x = self.at(l);
+        let e = l.force.normalize();
+        let foot = x + e * (c - x).dot(e);
+        let arm = self.rec.measure(c, foot);
+        let sign = (x - c).perp_dot(e).signum();
+        if arm.drawn_mm > 0.5 {
+            self.arms += 1;
+            let id = self.rec.draw(
+                format!("arm of {} about the moment centre", l.name),
+                Item::Segment(Segment::new(c, foot)),
+                Role::Construction,
+                &[],
+            );
+            self.rec.label(
+                id,
+                format!("h_{{{}}}", self.arms),
+                c.lerp(foot, 0.5),
+                (foot - c).perp().normalize_or_zero(),
+            );
+        }
+        sign * l.force.length() * arm.value
+    }
+
+    /// Σ moments of `loads` about `c`.
+    fn moments(&mut self, c: DVec2, loads: &[&Load]) -> f64 {
+        loads.iter().map(|l| self.moment(c, l)).sum()
+    }
+
+    /// A length measured on the drawing, m.
+    fn length(&self, a: DVec2, b: DVec2) -> f64 {
+        self.rec.measure(a, b).value
+    }
+}
+
+/// A force polygon being laid off.
+struct Polygon {
+    rec: Recorder,
+    tip: DVec2,
+}
+
+impl Polygon {
+    fn new(title: String, mu_f: Scale, ctx: &Context) -> Self {
+        Self {
+            rec: Recorder::in_context(title, mu_f, ctx),
+            tip: DVec2::ZERO,
+        }
+    }
+    /// Lay off a force head to tail; returns its end.
+    fn lay(&mut self, name: &str, f: DVec2) -> DVec2 {
+        let to = self.tip + f / self.rec.scale().value();
+        if to != self.tip {
+            let id = self.rec.draw(
+                format!("lay off {name}"),
+                Item::Vector { from: self.tip, to },
+                Role::Given,
+                &[],
+            );
+            self.rec.label(
+                id,
+                name,
+                self.tip.lerp(to, 0.5),
+                (to - self.tip).perp().normalize_or_zero(),
+            );
+        }
+        self.tip = to;
+        to
+    }
+    fn lay_all(&mut self, loads: &[&Load]) -> DVec2 {
+        for l in loads {
+            if !l.is_couple() {
+                self.lay(&l.name, l.force);
+            }
+        }
+        self.tip
+    }
+    /// A direction line through `p` along `d` (thin), for closing.
+    fn line(&mut self, what: &str, p: DVec2, d: DVec2) -> Result<Line, ConstructionError> {
+        let line = Line::new(p, d).ok_or_else(|| ConstructionError::CoincidentPoints {
+            step: what.into(),
+            what: format!("direction of {what}"),
+            a: what.into(),
+            b: what.into(),
+        })?;
+        Ok(line)
+    }
+    /// Intersect two closing lines.
+    fn meet(
+        &mut self,
+        step: &str,
+        a: (&str, Line),
+        b: (&str, Line),
+    ) -> Result<DVec2, ConstructionError> {
+        let (h, _, _) = self.rec.meet_lines(step, (a.0, &a.1), (b.0, &b.1))?;
+        for (_, l) in [&a, &b] {
+            let from = l.eval(l.project_t(h) - 8.0);
+            let to = l.eval(l.project_t(h) + 8.0);
+            self.rec.draw(
+                format!("{step}: closing direction"),
+                Item::Segment(Segment::new(from, to)),
+                Role::Construction,
+                &[],
+            );
+        }
+        Ok(h)
+    }
+    /// Read a reaction off the polygon: the vector from `from` to `to`, its length read
+    /// under the drafting model; drawn and labelled `name`.
+    fn read(&mut self, name: &str, from: DVec2, to: DVec2) -> DVec2 {
+        let m = self.rec.measure(from, to);
+        if m.drawn_mm > 0.0 {
+            let id = self.rec.draw(
+                format!("read {name}"),
+                Item::Vector { from, to },
+                Role::Result,
+                &[],
+            );
+            self.rec.label(
+                id,
+                name,
+                from.lerp(to, 0.5),
+                (to - from).perp().normalize_or_zero(),
+            );
+        }
+        (to - from).normalize_or_zero() * m.value
+    }
+}
+
+/// The markup name of the force of link `a` on link `b`.
+pub fn reaction_name(a: usize, b: usize) -> String {
+    format!("R_{{{a}-{b}}}")
+}
+
+fn revolute(from: usize, to: usize, k: usize, force: DVec2) -> Reaction {
+    Reaction {
+        pair: Pair {
+            from,
+            to,
+            kind: PairKind::Revolute(k),
+        },
+        force,
+        offset: None,
+    }
+}
+
+fn prismatic(
+    from: usize,
+    to: usize,
+    reference: usize,
+    dir_link: usize,
+    force: DVec2,
+    offset: Option<f64>,
+) -> Reaction {
+    Reaction {
+        pair: Pair {
+            from,
+            to,
+            kind: PairKind::Prismatic {
+                reference,
+                dir_link,
+            },
+        },
+        force,
+        offset,
+    }
+}
+
+/// The loads (and the reactions already found) on link `l`.
+fn on(loads: &[Load], l: usize) -> Vec<&Load> {
+    loads.iter().filter(|x| x.link == l).collect()
+}
+
+/// The signed magnitude of `f` along the unit normal `n` and the offset `s` that makes its
+/// moment about the reference `k` (N·m) vanish: N·s + k = 0.
+fn offset(f: DVec2, n: DVec2, k: f64) -> Option<f64> {
+    let big_n = f.dot(n);
+    (big_n != 0.0).then(|| -k / big_n)
+}
+
+/// The polygons of every group, last first, then the driving link. `loads` are the
+/// position's external loads.
+pub fn polygons(
+    board: &Board<'_>,
+    loads: &[Load],
+    drive: &Drive,
+) -> Result<Polygons, (usize, ConstructionError)> {
+    let prog = board.prog;
+    let b = board.built;
+    let mut applied: Vec<Load> = loads.to_vec();
+    let mut groups = Vec::new();
+    let dir = |l: usize| DVec2::from_angle(b.angle[l]);
+    for op in prog.ops.iter().rev() {
+        let Op::Dyad { group, links, dyad } = op else {
+            continue;
+        };
+        let (i, j) = (links[0] as usize, links[1] as usize);
+        let title = format!("group {} ({}, {})", group + 1, i, j);
+        let mut sch = Scheme::new(board, title.clone());
+        draw_links(
+            &mut sch.rec,
+            prog,
+            b,
+            Role::Given,
+            "group",
+            Part::Group(*group),
+        );
+        let li = on(&applied, i);
+        let lj = on(&applied, j);
+        for l in li.iter().chain(&lj) {
+            sch.show(l);
+        }
+        let mut pol = Polygon::new(format!("force polygon of {title}"), board.mu_f, &board.ctx);
+        let p = |k: usize| b.p[k];
+        let err = |e| (*group, e);
+        let reactions = match *dyad {
+            PDyad::Rrr { a, b: c, joint, .. } => {
+                let (pa, pc, pb) = (p(a), p(c), p(joint));
+                let tau_i = sch.moments(pb, &li) / sch.length(pa, pb);
+                let tau_j = sch.moments(pb, &lj) / sch.length(pc, pb);
+                let (oa, oc) = (prog.owner(a), prog.owner(c));
+                let t_a = (pb - pa).normalize().perp() * tau_i;
+                let t_c = (pb - pc).normalize().perp() * tau_j;
+                let p0 = pol.tip;
+                let p1 = pol.lay(&format!("R^τ_{{{oa}-{i}}}"), t_a);
+                let pi = pol.lay_all(&li);
+                pol.lay_all(&lj);
+                let pbj = pol.tip;
+                let e = pol.lay(&format!("R^τ_{{{oc}-{j}}}"), t_c);
+                let l1 = pol.line("R^n", e, pb - pc).map_err(err)?;
+                let l2 = pol.line("R^n", p0, pb - pa).map_err(err)?;
+                let h = pol
+                    .meet("closing the polygon", ("∥ CB", l1), ("∥ AB", l2))
+                    .map_err(err)?;
+                let r_a = pol.read(&reaction_name(oa, i), h, p1);
+                let r_c = pol.read(&reaction_name(oc, j), pbj, h);
+                let r_ji = pol.read(&reaction_name(j, i), pi, h);
+                vec![
+                    revolute(oa, i, a, r_a),
+                    revolute(oc, j, c, r_c),
+                    revolute(i, j, joint, -r_ji),
+                ]
+            }
+            PDyad::Rrp {
+                a, guide, joint, ..
+            } => {
+                let (pa, pb) = (p(a), p(joint));
+                let oa = prog.owner(a);
+                let og = prog.carrier(&guide);
+                let tau_i = sch.moments(pb, &li) / sch.length(pa, pb);
+                let t_a = (pb - pa).normalize().perp() * tau_i;
+                let n_g = dir(j).perp();
+                let p0 = pol.tip;
+                let p1 = pol.lay(&format!("R^τ_{{{oa}-{i}}}"), t_a);
+                let pi = pol.lay_all(&li);
+                let e = pol.lay_all(&lj);
+                let l1 = pol.line("guide", e, n_g).map_err(err)?;
+                let l2 = pol.line("R^n", p0, pb - pa).map_err(err)?;
+                let h = pol
+                    .meet("closing the polygon", ("⊥ guide", l1), ("∥ AB", l2))
+                    .map_err(err)?;
+                let r_a = pol.read(&reaction_name(oa, i), h, p1);
+                let r_g = pol.read(&reaction_name(og, j), e, h);
+                let r_ji = pol.read(&reaction_name(j, i), pi, h);
+                let k = sch.moments(pb, &lj);
+                vec![
+                    revolute(oa, i, a, r_a),
+                    prismatic(og, j, joint, j, r_g, offset(r_g, n_g, k)),
+                    revolute(i, j, joint, -r_ji),
+                ]
+            }
+            PDyad::Rpr { a, c, .. } => {
+                let (pa, pc) = (p(a), p(c));
+                let (oa, oc) = (prog.owner(a), prog.owner(c));
+                let u = dir(j);
+                let n = u.perp();
+                let k_i = sch.moments(pa, &li);
+                let k_j = sch.moments(pc, &lj);
+                // The inner reaction N·n brought to A: its arm about C is measured.
+                let probe = Load::force(j, LoadKind::Reaction, reaction_name(i, j), n, a);
+                let arm = sch.moment(pc, &probe);
+                let big_n = -(k_j + k_i) / arm;
+                let p0 = pol.tip;
+                let pi = pol.lay_all(&li);
+                let pj = pol.lay_all(&lj);
+                let q = pi - n * big_n / board.mu_f.value();
+                pol.rec.draw(
+                    "R_{ij} laid from the end of i's loads",
+                    Item::Segment(Segment::new(pi, q)),
+                    Role::Construction,
+                    &[],
+                );
+                let r_ji = pol.read(&reaction_name(j, i), pi, q);
+                let r_oj = pol.read(&reaction_name(oc, j), pj, q);
+                let r_oi = pol.read(&reaction_name(oa, i), q, p0);
+                let r_ij = -r_ji;
+                vec![
+                    revolute(oa, i, a, r_oi),
+                    revolute(oc, j, c, r_oj),
+                    prismatic(i, j, a, j, r_ij, offset(r_ij, n, -k_i)),
+                ]
+            }
+            PDyad::Prp { gi, gj, joint } => {
+                let pb = p(joint);
+                let (ci, cj) = (prog.carrier(&gi), prog.carrier(&gj));
+                let (n_i, n_j) = (dir(i).perp(), dir(j).perp());
+                let p0 = pol.tip;
+                let pi = pol.lay_all(&li);
+                let e = pol.lay_all(&lj);
+                let l1 = pol.line("guide j", e, n_j).map_err(err)?;
+                let l2 = pol.line("guide i", p0, n_i).map_err(err)?;
+                let h = pol
+                    .meet("closing the polygon", ("⊥ guide j", l1), ("⊥ guide i", l2))
+                    .map_err(err)?;
+                let r_j = pol.read(&reaction_name(cj, j), e, h);
+                let r_i = pol.read(&reaction_name(ci, i), h, p0);
+                let r_ji = pol.read(&reaction_name(j, i), pi, h);
+                let (k_i, k_j) = (sch.moments(pb, &li), sch.moments(pb, &lj));
+                vec![
+                    prismatic(ci, i, joint, i, r_i, offset(r_i, n_i, k_i)),
+                    prismatic(cj, j, joint, j, r_j, offset(r_j, n_j, k_j)),
+                    revolute(i, j, joint, -r_ji),
+                ]
+            }
+            PDyad::Rpp {
+                a, guide, joint, ..
+            } => {
+                let (pa, pj_) = (p(a), p(joint));
+                let oa = prog.owner(a);
+                let og = prog.carrier(&guide);
+                let (n_s, n_g) = (dir(i).perp(), dir(j).perp());
+                let p0 = pol.tip;
+                let pj = pol.lay_all(&lj);
+                let l1 = pol.line("guide", pj, n_g).map_err(err)?;
+                let l2 = pol.line("slide", p0, n_s).map_err(err)?;
+                let h = pol
+                    .meet("closing the polygon", ("⊥ guide", l1), ("⊥ slide", l2))
+                    .map_err(err)?;
+                let r_g = pol.read(&reaction_name(og, j), pj, h);
+                let r_ij = pol.read(&reaction_name(i, j), h, p0);
+                pol.tip = h;
+                let q = pol.lay_all(&li);
+                let r_oi = pol.read(&reaction_name(oa, i), q, p0);
+                // The block about A: where the inner reaction acts on the slide.
+                let k_i = sch.moments(pa, &li);
+                let s = offset(r_ij, n_s, -k_i);
+                // Link j about its joint, with the inner reaction at its point.
+                let shift = dir(i) * s.unwrap_or(0.0) * board.mu_l.value();
+                let mut inner = Load::force(j, LoadKind::Reaction, reaction_name(i, j), r_ij, a);
+                inner.shift = shift;
+                let k_j = sch.moments(pj_, &lj) + sch.moment(pj_, &inner);
+                vec![
+                    revolute(oa, i, a, r_oi),
+                    prismatic(og, j, joint, j, r_g, offset(r_g, n_g, k_j)),
+                    prismatic(i, j, a, i, r_ij, s),
+                ]
+            }
+        };
+        // The reactions on earlier links become their loads.
+        for r in &reactions[..2] {
+            if r.pair.from != 0 {
+                let (at, shift) = point_of(r, b, board.mu_l.value());
+                let mut l = Load::force(
+                    r.pair.from,
+                    LoadKind::Reaction,
+                    reaction_name(r.pair.to, r.pair.from),
+                    -r.force,
+                    at,
+                );
+                l.shift = shift;
+                applied.push(l);
+            }
+        }
+        for r in &reactions {
+            show_reaction(&mut sch, r);
+        }
+        groups.push(GroupPolygon {
+            group: *group,
+            links: [i, j],
+            scheme: sch.rec.finish(),
+            polygon: pol.rec.finish(),
+            reactions,
+        });
+    }
+    let driver = driver(board, &applied, drive).map_err(|e| (usize::MAX, e))?;
+    Ok(Polygons { groups, driver })
+}
+
+/// Where a reaction acts: its pair's point, shifted along the slide by its offset.
+fn point_of(r: &Reaction, b: &Built, mu_l: f64) -> (usize, DVec2) {
+    match r.pair.kind {
+        PairKind::Revolute(k) => (k, DVec2::ZERO),
+        PairKind::Prismatic {
+            reference,
+            dir_link,
+        } => {
+            let u = DVec2::from_angle(b.angle[dir_link]);
+            (reference, u * r.offset.unwrap_or(0.0) * mu_l)
+        }
+    }
+}
+
+/// Draw a reaction found on the group's drawing, at its point.
+fn show_reaction(sch: &mut Scheme<'_>, r: &Reaction) {
+    let (at, shift) = point_of(r, sch.board.built, sch.board.mu_l.value());
+    let l = Load::force(
+        r.pair.to,
+        LoadKind::Reaction,
+        reaction_name(r.pair.from, r.pair.to),
+        r.force,
+        at,
+    );
+    let l = Load { shift, ..l };
+    sch.show(&l);
+}
+
+/// The driving link: the balancing moment (coupling) or force (gear) and the frame's reaction.
+fn driver(
+    board: &Board<'_>,
+    applied: &[Load],
+    drive: &Drive,
+) -> Result<DriverPolygon, ConstructionError> {
+    let prog = board.prog;
+    let b = board.built;
+    let crank = prog.crank_link as usize;
+    let mut sch = Scheme::new(board, format!("driving link {crank}"));
+    draw_links(&mut sch.rec, prog, b, Role::Given, "crank", Part::Driver);
+    let loads = on(applied, crank);
+    for l in &loads {
+        sch.show(l);
+    }
+    let o = b.p[prog.centre];
+    let k = sch.moments(o, &loads);
+    let mut pol = Polygon::new(
+        format!("force triangle of link {crank}"),
+        board.mu_f,
+        &board.ctx,
+    );
+    let p0 = pol.tip;
+    pol.lay_all(&loads);
+    let (m_bal, f_bal) = match drive {
+        Drive::Coupling => (-k, None),
+        Drive::Gear(g) => {
+            let mu = board.mu_l.value();
+            let r = g.radius() / mu;
+            let (p, d) = line_of_action(o, r, g.towards, g.pressure_angle, board.sense);
+            if let Some(c) = Circle::new(o, r) {
+                sch.rec.draw(
+                    "pitch circle of the wheel",
+                    Item::Circle(c),
+                    Role::Axis,
+                    &[],
+                );
+            }
+            let mate = g.mate_radius().map(|rm| rm / mu);
+            if let Some(c) =
+                mate.and_then(|rm| Circle::new(o + DVec2::from_angle(g.towards) * (r + rm), rm))
+            {
+                sch.rec.draw(
+                    "pitch circle of the pinion",
+                    Item::Circle(c),
+                    Role::Axis,
+                    &[],
+                );
+            }
+            let pid = sch.rec.point(
+                "pitch point",
+                p,
+                Role::Given,
+                "P",
+                DVec2::from_angle(g.towards),
+                &[],
+            );
+            let from = p - d * (r * 0.6);
+            sch.rec.draw(
+                "line of action at α_w",
+                Item::Segment(Segment::new(from, p + d * (r * 0.6))),
+                Role::Axis,
+                &[pid],
+            );
+            // The balancing force's arm about O, measured.
+            let unit = Load::force(crank, LoadKind::Reaction, "F_{у}".into(), d, prog.centre);
+            let unit = Load {
+                shift: (p - o) * mu,
+                ..unit
+            };
+            let arm = sch.moment(o, &unit);
+            let f = -k / arm;
+            sch.show(&Load {
+                force: d * f,
+                ..unit
+            });
+            (-k, Some(f))
+        }
+    };
+    if let (Drive::Gear(g), Some(f)) = (drive, f_bal) {
+        let (_, d) = line_of_action(o, 1.0, g.towards, g.pressure_angle, board.sense);
+        pol.lay("F_{у}", d * f);
+    }
+    let e = pol.tip;
+    let r01 = pol.read(&reaction_name(0, crank), e, p0);
+    let reaction = revolute(0, crank, prog.centre, r01);
+    show_reaction(&mut sch, &reaction);
+    Ok(DriverPolygon {
+        scheme: sch.rec.finish(),
+        polygon: pol.rec.finish(),
+        reaction,
+        m_bal,
+        f_bal,
+    })
+}

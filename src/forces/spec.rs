@@ -1,0 +1,122 @@
+//! The `[forces]` section as the force analysis takes it: masses, centres of mass and
+//! moments of inertia of the links, gravity, the working resistance with the stroke it acts
+//! on, the drive of the crank and the positions to analyse. SI units.
+
+use crate::scale::Scale;
+
+/// Standard gravity, m/s².
+pub const G_STANDARD: f64 = 9.81;
+
+/// The mass properties of one link.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinkMass {
+    /// Link number.
+    pub link: u32,
+    /// Mass, kg (≥ 0).
+    pub mass: f64,
+    /// The point of the mechanism at the centre of mass (`S_3`; a pivot for a crank balanced
+    /// about its axis).
+    pub centre: String,
+    /// Central moment of inertia I_S, kg·m² (≥ 0).
+    pub inertia: f64,
+    /// Length of a slider along its guide, m: where the guide's reaction may act.
+    pub length: Option<f64>,
+}
+
+/// On which stroke a resistance acts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stroke {
+    /// The working (slower) stroke only, extreme positions excluded — the cutting force of a
+    /// shaper.
+    Working,
+    /// The return stroke only.
+    Return,
+    /// At every position.
+    Always,
+}
+
+/// What a resistance is.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Action {
+    /// A force of `magnitude` N at `point`, along `dir` (radians) or, when `None`, against
+    /// the point's velocity.
+    Force {
+        /// The point of application.
+        point: String,
+        /// Magnitude, N (> 0).
+        magnitude: f64,
+        /// A fixed direction, radians; `None`: against the velocity.
+        dir: Option<f64>,
+    },
+    /// A moment of `magnitude` N·m on `link`, against its angular velocity.
+    Moment {
+        /// The link.
+        link: u32,
+        /// Magnitude, N·m (> 0).
+        magnitude: f64,
+    },
+}
+
+/// A working resistance (сила полезного сопротивления).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Resistance {
+    /// The force or moment.
+    pub action: Action,
+    /// When it acts.
+    pub stroke: Stroke,
+}
+
+/// How the crank is driven.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Drive {
+    /// Through a coupling: a balancing moment on the crank.
+    Coupling,
+    /// Through a gear pair: the wheel on the crank's shaft is driven by a pinion; the
+    /// balancing force acts at the pitch point along the line of action.
+    Gear(GearDrive),
+}
+
+/// The gear pair that drives the crank.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GearDrive {
+    /// Module, m.
+    pub module: f64,
+    /// Teeth of the wheel on the crank's shaft.
+    pub teeth: u32,
+    /// Teeth of the driving pinion (drawn when given).
+    pub mate_teeth: Option<u32>,
+    /// Pressure angle α_w, radians.
+    pub pressure_angle: f64,
+    /// Direction from the crank's centre to the pitch point (towards the pinion), radians.
+    pub towards: f64,
+}
+
+impl GearDrive {
+    /// Pitch radius of the crank's wheel r = m·z/2, m.
+    pub fn radius(&self) -> f64 {
+        self.module * f64::from(self.teeth) / 2.0
+    }
+    /// Pitch radius of the pinion, m.
+    pub fn mate_radius(&self) -> Option<f64> {
+        self.mate_teeth.map(|z| self.module * f64::from(z) / 2.0)
+    }
+}
+
+/// The validated `[forces]` section.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ForceSpec {
+    /// g, m/s².
+    pub g: f64,
+    /// Direction of gravity, radians (−π/2: down the drawing).
+    pub gravity_dir: f64,
+    /// Labels of the positions to analyse (`3`, `10`).
+    pub positions: Vec<String>,
+    /// μ_F of the force polygons, N/mm; `None`: chosen the textbook way.
+    pub scale_f: Option<Scale>,
+    /// The links' masses.
+    pub links: Vec<LinkMass>,
+    /// The working resistances.
+    pub resistances: Vec<Resistance>,
+    /// The drive.
+    pub drive: Drive,
+}

@@ -1,0 +1,306 @@
+//! The analytic twin of the force analysis: every joint reaction and the balancing moment (or
+//! force) from one linear solve of the equilibrium equations of every moving link — three
+//! per link, ΣF = 0 and ΣM = 0 — and the balancing moment a second way from the power
+//! balance Σ F·v + Σ M·ω + M_bal·ω₁ = 0. Shares nothing with the polygons but the loads.
+
+use super::loads::{Load, Motion};
+use super::spec::Drive;
+use super::ForceError;
+use crate::geom::DVec2;
+use crate::linkage::{Op, PDyad, Pose, Program};
+
+/// A kinematic pair as the equilibrium equations see it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PairKind {
+    /// A revolute pair at a point (program index).
+    Revolute(usize),
+    /// A prismatic pair: the reaction is normal to the sliding direction, which is the frame
+    /// direction of link `dir_link`; `reference` is the point the offset of its line of
+    /// action is measured from (along the sliding direction).
+    Prismatic {
+        /// The point of reference on the line of sliding.
+        reference: usize,
+        /// The link whose frame direction is the sliding direction.
+        dir_link: usize,
+    },
+}
+
+/// A pair between link `from` (the link known first, 0 the frame) and link `to` (a link of
+/// the group that attaches it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pair {
+    /// The link that acts.
+    pub from: usize,
+    /// The link acted on.
+    pub to: usize,
+    /// Revolute or prismatic.
+    pub kind: PairKind,
+}
+
+/// The pairs of a mechanism in the order of its groups: the crank's pivot, then per group
+/// its two outer pairs and its inner pair.
+pub fn pairs(prog: &Program) -> Vec<Pair> {
+    let crank = prog.crank_link as usize;
+    let mut v = vec![Pair {
+        from: 0,
+        to: crank,
+        kind: PairKind::Revolute(prog.centre),
+    }];
+    for op in &prog.ops {
+        let Op::Dyad { links, dyad, .. } = op else {
+            continue;
+        };
+        let (i, j) = (links[0] as usize, links[1] as usize);
+        let rev = |from: usize, to: usize, k: usize| Pair {
+            from,
+            to,
+            kind: PairKind::Revolute(k),
+        };
+        let pri = |from: usize, to: usize, reference: usize, dir_link: usize| Pair {
+            from,
+            to,
+            kind: PairKind::Prismatic {
+                reference,
+                dir_link,
+            },
+        };
+        match *dyad {
+            PDyad::Rrr { a, b, joint, .. } => v.extend([
+                rev(prog.owner(a), i, a),
+                rev(prog.owner(b), j, b),
+                rev(i, j, joint),
+            ]),
+            PDyad::Rrp {
+                a, guide, joint, ..
+            } => v.extend([
+                rev(prog.owner(a), i, a),
+                pri(prog.carrier(&guide), j, joint, j),
+                rev(i, j, joint),
+            ]),
+            PDyad::Rpr { a, c, .. } => v.extend([
+                rev(prog.owner(a), i, a),
+                rev(prog.owner(c), j, c),
+                pri(i, j, a, j),
+            ]),
+            PDyad::Prp { gi, gj, joint } => v.extend([
+                pri(prog.carrier(&gi), i, joint, i),
+                pri(prog.carrier(&gj), j, joint, j),
+                rev(i, j, joint),
+            ]),
+            PDyad::Rpp {
+                a, guide, joint, ..
+            } => v.extend([
+                rev(prog.owner(a), i, a),
+                pri(prog.carrier(&guide), j, joint, j),
+                pri(i, j, a, i),
+            ]),
+        }
+    }
+    v
+}
+
+/// A reaction found: the force of `pair.from` on `pair.to` and where its line of action
+/// passes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reaction {
+    /// The pair.
+    pub pair: Pair,
+    /// The force on `pair.to`, N.
+    pub force: DVec2,
+    /// A prismatic pair's point of application: its offset from the reference point along
+    /// the sliding direction, m (`None` for a revolute pair, or when the reaction vanishes).
+    pub offset: Option<f64>,
+}
+
+/// The result of the force analysis of one position.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Equilibrium {
+    /// Every pair's reaction, in the order of [`pairs`].
+    pub reactions: Vec<Reaction>,
+    /// The balancing moment on the crank, N·m, counter-clockwise.
+    pub m_bal: f64,
+    /// The balancing force at the pitch point along the line of action (gear drive), N;
+    /// positive in the sense that drives the crank in its sense of rotation.
+    pub f_bal: Option<f64>,
+}
+
+/// The gear drive's line of action: the pitch point P (m) and the unit direction of the force
+/// the pinion exerts on the crank's wheel when it drives it in the sense `sense` (+1
+/// counter-clockwise): its tangential component along the rotation, its radial component
+/// towards the wheel's centre.
+pub fn line_of_action(
+    centre: DVec2,
+    r: f64,
+    towards: f64,
+    alpha: f64,
+    sense: f64,
+) -> (DVec2, DVec2) {
+    let e = DVec2::from_angle(towards);
+    let p = centre + e * r;
+    let d = e.perp() * (sense * alpha.cos()) - e * alpha.sin();
+    (p, d)
+}
+
+/// The reactions and the balancing moment of `loads` at `pose`: one linear solve.
+pub fn solve(
+    prog: &Program,
+    pose: &Pose,
+    loads: &[Load],
+    drive: &Drive,
+    sense: f64,
+) -> Result<Equilibrium, ForceError> {
+    let pairs = pairs(prog);
+    let moving: Vec<usize> = std::iter::once(prog.crank_link as usize)
+        .chain(
+            prog.ops
+                .iter()
+                .filter_map(|op| match op {
+                    Op::Dyad { links, .. } => Some(links.map(|l| l as usize)),
+                    Op::Point { .. } => None,
+                })
+                .flatten(),
+        )
+        .collect();
+    let row_of = |l: usize| moving.iter().position(|&m| m == l);
+    let n = 3 * moving.len();
+    let cols = 2 * pairs.len() + 1;
+    if cols != n {
+        return Err(ForceError::NotDeterminate {
+            equations: n,
+            unknowns: cols,
+        });
+    }
+    let origin = pose.p[prog.centre];
+    let mut a = vec![vec![0.0; n + 1]; n];
+    // Adds force `f` (per unit unknown) at `x` and couple `m` to link `l`'s rows in column `c`.
+    let put = |a: &mut Vec<Vec<f64>>, l: usize, c: usize, f: DVec2, x: DVec2, m: f64| {
+        if let Some(r) = row_of(l) {
+            a[3 * r][c] += f.x;
+            a[3 * r + 1][c] += f.y;
+            a[3 * r + 2][c] += (x - origin).perp_dot(f) + m;
+        }
+    };
+    for (k, pair) in pairs.iter().enumerate() {
+        let (cx, cy) = (2 * k, 2 * k + 1);
+        match pair.kind {
+            PairKind::Revolute(x) => {
+                let x = pose.p[x];
+                for (c, e) in [(cx, DVec2::X), (cy, DVec2::Y)] {
+                    put(&mut a, pair.to, c, e, x, 0.0);
+                    put(&mut a, pair.from, c, -e, x, 0.0);
+                }
+            }
+            PairKind::Prismatic {
+                reference,
+                dir_link,
+            } => {
+                let x = pose.p[reference];
+                let nrm = pose.dir[dir_link].perp();
+                put(&mut a, pair.to, cx, nrm, x, 0.0);
+                put(&mut a, pair.from, cx, -nrm, x, 0.0);
+                put(&mut a, pair.to, cy, DVec2::ZERO, x, 1.0);
+                put(&mut a, pair.from, cy, DVec2::ZERO, x, -1.0);
+            }
+        }
+    }
+    let crank = prog.crank_link as usize;
+    let bal = cols - 1;
+    let gear = match drive {
+        Drive::Coupling => {
+            put(&mut a, crank, bal, DVec2::ZERO, origin, 1.0);
+            None
+        }
+        Drive::Gear(g) => {
+            let (p, d) = line_of_action(origin, g.radius(), g.towards, g.pressure_angle, sense);
+            put(&mut a, crank, bal, d, p, 0.0);
+            Some((p, d))
+        }
+    };
+    for load in loads {
+        if let Some(r) = row_of(load.link) {
+            let x = pose.p[load.at];
+            a[3 * r][n] -= load.force.x;
+            a[3 * r + 1][n] -= load.force.y;
+            a[3 * r + 2][n] -= (x - origin).perp_dot(load.force) + load.moment;
+        }
+    }
+    let x = gauss(a).ok_or(ForceError::Singular)?;
+    let reactions = pairs
+        .iter()
+        .enumerate()
+        .map(|(k, &pair)| {
+            let (u, v) = (x[2 * k], x[2 * k + 1]);
+            match pair.kind {
+                PairKind::Revolute(_) => Reaction {
+                    pair,
+                    force: DVec2::new(u, v),
+                    offset: None,
+                },
+                PairKind::Prismatic { dir_link, .. } => Reaction {
+                    pair,
+                    force: pose.dir[dir_link].perp() * u,
+                    // Couple v about the reference point = N·s.
+                    offset: (u != 0.0).then(|| v / u),
+                },
+            }
+        })
+        .collect();
+    let (m_bal, f_bal) = match gear {
+        None => (x[bal], None),
+        Some((p, d)) => ((p - origin).perp_dot(d) * x[bal], Some(x[bal])),
+    };
+    Ok(Equilibrium {
+        reactions,
+        m_bal,
+        f_bal,
+    })
+}
+
+/// The balancing moment from the power balance: M_bal·ω₁ + Σ F·v + Σ M·ω = 0 (the ideal
+/// pairs' reactions do no work).
+pub fn power_balance(loads: &[Load], motion: &Motion, w1: f64) -> f64 {
+    let power: f64 = loads
+        .iter()
+        .map(|l| {
+            l.force.dot(motion.v[l.at])
+                + l.moment * motion.omega.get(l.link).copied().unwrap_or(0.0)
+        })
+        .sum();
+    -power / w1
+}
+
+/// Solve the augmented system `a` (n rows of n + 1) by Gaussian elimination with partial
+/// pivoting; `None` when it is singular to rounding.
+fn gauss(mut a: Vec<Vec<f64>>) -> Option<Vec<f64>> {
+    let n = a.len();
+    let big = a
+        .iter()
+        .flat_map(|r| r[..n].iter())
+        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    if !(big > 0.0 && big.is_finite()) {
+        return None;
+    }
+    for c in 0..n {
+        let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
+        if a[p][c].abs() <= 1e-12 * big {
+            return None;
+        }
+        a.swap(c, p);
+        let (top, rest) = a.split_at_mut(c + 1);
+        let pivot = &top[c];
+        for row in rest {
+            let f = row[c] / pivot[c];
+            if f != 0.0 {
+                for (x, p) in row[c..].iter_mut().zip(&pivot[c..]) {
+                    *x -= f * p;
+                }
+            }
+        }
+    }
+    let mut x = vec![0.0; n];
+    for c in (0..n).rev() {
+        let s: f64 = (c + 1..n).map(|k| a[c][k] * x[k]).sum();
+        x[c] = (a[c][n] - s) / a[c][c];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
