@@ -12,6 +12,8 @@
 //!   over many crank angles on one core.
 //! * **Construction route** — the recorded compass construction of a position with its
 //!   velocity and acceleration plans.
+//! * **Force route** — one position's force polygons and Zhukovsky's lever from its plans,
+//!   against the analytic twin's loads and linear solve.
 //! * **Plates** — building a plate and writing it as SVG; a scene's plates (already SVG)
 //!   rasterised to PNG at 150 dpi, as `tmm render` does.
 //!
@@ -28,7 +30,9 @@ use crate::report::{Bench, Throughput};
 use crate::scale::Quantity;
 use crate::scene::{self, PlateKind, Scene};
 use chords::{chord_rows, Charted, Coord};
-use rates::{construction_rate, kernel_rate, libm_floor_rate, plate_time, png_time, PNG_DPI};
+use rates::{
+    construction_rate, force_rates, kernel_rate, libm_floor_rate, plate_time, png_time, PNG_DPI,
+};
 use std::f64::consts::TAU;
 use std::hint::black_box;
 use std::path::PathBuf;
@@ -289,6 +293,18 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
                 .into(),
         });
     }
+    let (constructed, analytic) = force_rates(&shaper, reps)?;
+    throughput.push(Throughput {
+        name: format!("forces {} (construction)", shaper.scene.stem),
+        per_second: constructed,
+        note: "one position from its plans: the force polygons of every group and the driving link with measured arms, and Zhukovsky's lever".into(),
+    });
+    throughput.push(Throughput {
+        name: format!("forces {} (analytic)", shaper.scene.stem),
+        per_second: analytic,
+        note: "one position: the loads and one linear solve of every link's equilibrium (1 core)"
+            .into(),
+    });
     for &(stem, kind) in PLATES {
         let loaded;
         let s = match [&shaper, &four_bar]

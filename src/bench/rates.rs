@@ -139,3 +139,52 @@ pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
         detail: e.to_string(),
     })
 }
+
+/// The force route of `s` at its first analysed position: (constructed, analytic) positions
+/// per second. Constructed: the force polygons of every group and the driving link and
+/// Zhukovsky's lever, from the position's plans (built once, outside the timing). Analytic:
+/// the loads and one linear solve of every link's equilibrium, at positions around the turn.
+pub(super) fn force_rates(s: &Subject, reps: Reps) -> Result<(f64, f64), BenchError> {
+    let study = |e: crate::study::StudyError| s.fail(e.to_string());
+    let forces = |e: crate::forces::ForceError| s.fail(e.to_string());
+    let session = Session::new(&s.scene, Drafting::EXACT);
+    let spec = session.force_spec("the bench").map_err(study)?;
+    let sc = session.kin_scales().map_err(study)?;
+    let k = *session
+        .force_positions()
+        .map_err(study)?
+        .first()
+        .ok_or_else(|| s.fail("no position to analyse"))?;
+    let plan = session.positions(sc.l).map_err(study)?;
+    let vel = session.velocity(sc.l, sc.v, k).map_err(study)?;
+    let vp = vel.plan().ok_or_else(|| s.fail("no velocity plan"))?;
+    let ap = session.acceleration(&sc, k).map_err(study)?;
+    let ctx = Context::for_model_size(CONSTRUCTION_EXTENT_MM, Drafting::EXACT)?;
+    let count = reps.constructed.max(1);
+    let constructed = best_time(reps.best_of, || {
+        for _ in 0..count {
+            black_box(crate::forces::analyse(
+                spec, &plan, k, sc.l, vp, &ap.0, s.w1, &ctx,
+            )?);
+        }
+        Ok(())
+    })
+    .map_err(forces)?;
+    let poses = s.poses(360)?;
+    let analytic = best_time(reps.best_of, || {
+        for pose in &poses {
+            let motion = crate::forces::Motion::analytic(pose, s.w1);
+            let loads = crate::forces::loads::loads(spec, &s.prog, &motion, Some(true))?;
+            black_box(crate::forces::twin::solve(
+                &s.prog,
+                pose,
+                &loads,
+                &spec.drive,
+                s.w1.signum(),
+            )?);
+        }
+        Ok(())
+    })
+    .map_err(forces)?;
+    Ok((count as f64 / constructed, poses.len() as f64 / analytic))
+}

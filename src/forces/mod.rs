@@ -15,6 +15,8 @@ pub mod lever;
 pub mod loads;
 pub mod polygons;
 mod spec;
+#[cfg(test)]
+mod tests;
 pub mod twin;
 
 pub use spec::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke, G_STANDARD};
@@ -108,8 +110,38 @@ pub struct PositionForces {
     pub m_power: f64,
     /// μ_F of the polygons.
     pub scale_f: Scale,
+    /// The guides' reactions on sliders of known length, by the twin.
+    pub sliders: Vec<SliderEnds>,
     /// The rows.
     pub rows: Vec<Row>,
+}
+
+/// Where a guide's reaction acts on a slider of known length (seed 001 §7.2, Fig. 28): when
+/// its point falls outside the slider, the reaction is a force at the slider's centre plus a
+/// couple carried by the slider's two ends.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SliderEnds {
+    /// The pair (guide → slider).
+    pub pair: Pair,
+    /// The reaction's magnitude, N.
+    pub force: f64,
+    /// Its point's offset from the slider's centre along the guide, m.
+    pub offset: f64,
+    /// The slider's length, m.
+    pub length: f64,
+}
+
+impl SliderEnds {
+    /// The point falls outside the slider.
+    pub fn outside(&self) -> bool {
+        self.offset.abs() > self.length / 2.0
+    }
+    /// The loads on the slider's two ends, N: R/2 + R·h/l and R/2 − R·h/l (a negative load
+    /// presses on the guide's other face).
+    pub fn ends(&self) -> [f64; 2] {
+        let couple = self.force * self.offset / self.length;
+        [self.force / 2.0 + couple, self.force / 2.0 - couple]
+    }
 }
 
 /// The stroke at crank angle `phi` of `plan`: on the working stroke strictly between its
@@ -208,6 +240,24 @@ pub fn analyse(
     })?;
     let lever = lever::lever(prog, &pos.built, mu_l, vp, &loads, &spec.drive, w1, ctx);
     let rows = rows(&pos.label, &polygons, &lever, &twin, &loads, &loads_exact);
+    let sliders = twin
+        .reactions
+        .iter()
+        .filter_map(|r| {
+            let length = spec
+                .links
+                .iter()
+                .find(|l| l.link as usize == r.pair.to)?
+                .length?;
+            let is_guide = matches!(r.pair.kind, PairKind::Prismatic { .. });
+            Some(SliderEnds {
+                pair: r.pair,
+                force: r.force.length(),
+                offset: r.offset.filter(|_| is_guide)?,
+                length,
+            })
+        })
+        .collect();
     Ok(PositionForces {
         label: pos.label.clone(),
         loads,
@@ -217,6 +267,7 @@ pub fn analyse(
         twin,
         m_power,
         scale_f,
+        sliders,
         rows,
     })
 }
@@ -330,4 +381,27 @@ pub fn reaction(eq: &Equilibrium, from: usize, to: usize) -> Option<DVec2> {
         .iter()
         .find(|r| r.pair.from == from && r.pair.to == to)
         .map(|r| r.force)
+}
+
+/// The notes of one position for the report: the polygon against the lever (the seed's
+/// «погрешность»), and every slider whose guide reaction falls outside it.
+pub fn notes(f: &PositionForces) -> Vec<String> {
+    use crate::scale::{format_sig, Lang};
+    let n = |x: f64| format_sig(x, 6, Lang::En);
+    let (p, l) = (f.polygons.driver.m_bal, f.lever.m_bal);
+    let mut out = vec![format!(
+        "position {}: M_bal by the force polygons {} N·m, by Zhukovsky's lever {} N·m: they differ by {} % of the polygons' value",
+        f.label,
+        n(p),
+        n(l),
+        format_sig(if p != 0.0 { (p - l).abs() / p.abs() * 100.0 } else { 0.0 }, 3, Lang::En),
+    )];
+    for s in f.sliders.iter().filter(|s| s.outside()) {
+        let [a, b] = s.ends();
+        out.push(format!(
+            "position {}: the reaction R_{}_{} = {} N acts {} m from the slider's centre, outside the slider (length {} m): a force at the centre and a couple on the ends, which carry {} N and {} N",
+            f.label, s.pair.from, s.pair.to, n(s.force), n(s.offset), n(s.length), n(a), n(b)
+        ));
+    }
+    out
 }

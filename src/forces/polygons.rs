@@ -496,7 +496,7 @@ pub fn polygons(
                 let k_i = sch.moments(pa, &li);
                 let s = offset(r_ij, n_s, -k_i);
                 // Link j about its joint, with the inner reaction at its point.
-                let shift = dir(i) * s.unwrap_or(0.0) * board.mu_l.value();
+                let shift = dir(i) * s.unwrap_or(0.0);
                 let mut inner = Load::force(j, LoadKind::Reaction, reaction_name(i, j), r_ij, a);
                 inner.shift = shift;
                 let k_j = sch.moments(pj_, &lj) + sch.moment(pj_, &inner);
@@ -510,7 +510,7 @@ pub fn polygons(
         // The reactions on earlier links become their loads.
         for r in &reactions[..2] {
             if r.pair.from != 0 {
-                let (at, shift) = point_of(r, b, board.mu_l.value());
+                let (at, shift) = point_of(r, b);
                 let mut l = Load::force(
                     r.pair.from,
                     LoadKind::Reaction,
@@ -538,7 +538,7 @@ pub fn polygons(
 }
 
 /// Where a reaction acts: its pair's point, shifted along the slide by its offset.
-fn point_of(r: &Reaction, b: &Built, mu_l: f64) -> (usize, DVec2) {
+fn point_of(r: &Reaction, b: &Built) -> (usize, DVec2) {
     match r.pair.kind {
         PairKind::Revolute(k) => (k, DVec2::ZERO),
         PairKind::Prismatic {
@@ -546,14 +546,14 @@ fn point_of(r: &Reaction, b: &Built, mu_l: f64) -> (usize, DVec2) {
             dir_link,
         } => {
             let u = DVec2::from_angle(b.angle[dir_link]);
-            (reference, u * r.offset.unwrap_or(0.0) * mu_l)
+            (reference, u * r.offset.unwrap_or(0.0))
         }
     }
 }
 
 /// Draw a reaction found on the group's drawing, at its point.
 fn show_reaction(sch: &mut Scheme<'_>, r: &Reaction) {
-    let (at, shift) = point_of(r, sch.board.built, sch.board.mu_l.value());
+    let (at, shift) = point_of(r, sch.board.built);
     let l = Load::force(
         r.pair.to,
         LoadKind::Reaction,

@@ -10,7 +10,7 @@ mod positions;
 mod positions_draw;
 mod program;
 #[cfg(test)]
-mod proptests;
+pub(crate) mod proptests;
 mod scheme;
 mod structure;
 #[cfg(test)]

@@ -546,6 +546,7 @@ impl<'s> Session<'s> {
                     crate::scale::format_sig(f.m_power, 10, crate::scale::Lang::En),
                     crate::scale::format_sig(f.twin.m_bal, 10, crate::scale::Lang::En),
                 ));
+                notes.extend(crate::forces::notes(&f));
             }
         }
         Ok(Report {

@@ -21,7 +21,7 @@ mod positions;
 const MU: f64 = 0.001;
 
 /// Construct one position; `None` when it cannot be assembled (outside the property's domain).
-fn build(m: &Mechanism, phi: f64) -> Option<(Program, Built, Pose)> {
+pub(crate) fn build(m: &Mechanism, phi: f64) -> Option<(Program, Built, Pose)> {
     let prog = Program::compile(m).ok()?;
     let mut rec = Recorder::in_context(
         "p",

@@ -1,0 +1,166 @@
+//! The force polygons and the lever against the linear solve over random mechanisms of
+//! every pair of dyad kinds with random loads, and the twin against the power balance.
+
+use super::loads::{loads, Motion};
+use super::polygons::{polygons, Board};
+use super::twin::{power_balance, solve};
+use super::*;
+use crate::linkage::proptests::{build, gen, plan_context};
+use crate::linkage::{kin_plan, Mechanism, PlanKind, PlanSetup};
+use proptest::prelude::*;
+
+/// Relative tolerance of polygon = lever = twin at drafting 0 (the plans' own, see
+/// `linkage::proptests::plans`).
+const REL: f64 = 1e-9;
+/// Crossing sine from which positions are compared (as the plans' properties).
+const WELL: f64 = 1e-2;
+
+fn spec(masses: &[(f64, f64)], f5: (f64, f64), gear: Option<f64>) -> ForceSpec {
+    ForceSpec {
+        g: G_STANDARD,
+        gravity_dir: -std::f64::consts::FRAC_PI_2,
+        positions: vec!["1".into()],
+        scale_f: None,
+        links: masses
+            .iter()
+            .enumerate()
+            .map(|(i, &(m, inertia))| LinkMass {
+                link: i as u32 + 2,
+                mass: m,
+                centre: format!("S{}", i + 2),
+                inertia,
+                length: None,
+            })
+            .collect(),
+        resistances: vec![Resistance {
+            action: Action::Force {
+                point: "S5".into(),
+                magnitude: f5.0,
+                dir: Some(f5.1),
+            },
+            stroke: Stroke::Always,
+        }],
+        drive: match gear {
+            None => Drive::Coupling,
+            Some(towards) => Drive::Gear(GearDrive {
+                module: 0.004,
+                teeth: 40,
+                mate_teeth: Some(20),
+                pressure_angle: 20f64.to_radians(),
+                towards,
+            }),
+        },
+    }
+}
+
+/// Everything one random position gives: the twin, the polygons, the lever, the power.
+fn analyse_random(
+    m: &Mechanism,
+    phi: f64,
+    spec: &ForceSpec,
+) -> Result<(Equilibrium, Polygons, lever::Lever, f64), TestCaseError> {
+    let (prog, built, pose) =
+        build(m, phi).ok_or_else(|| TestCaseError::reject("not assembled"))?;
+    let s = pose.crossing_sin.iter().copied().fold(1.0, f64::min);
+    prop_assume!(s >= WELL);
+    let w1: f64 = -7.0;
+    let r = prog.crank_length;
+    let mu_l = Scale::new(0.001, Quantity::Length).unwrap();
+    let sv = Scale::new(w1.abs() * r / 50.0, Quantity::Velocity).unwrap();
+    let sa = Scale::new(w1 * w1 * r / 50.0, Quantity::Acceleration).unwrap();
+    let ctx = plan_context();
+    let setup = PlanSetup {
+        prog: &prog,
+        built: &built,
+        mu_l: mu_l.value(),
+        w1,
+        ctx,
+    };
+    let vp = kin_plan(&setup, PlanKind::Velocity, sv, None)
+        .map_err(|_| TestCaseError::reject("plan refused"))?;
+    let ap = kin_plan(&setup, PlanKind::Acceleration, sa, Some(&vp))
+        .map_err(|_| TestCaseError::reject("plan refused"))?;
+    let exact = Motion::analytic(&pose, w1);
+    let ph = None;
+    let le = loads(spec, &prog, &exact, ph).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let twin = match solve(&prog, &pose, &le, &spec.drive, w1.signum()) {
+        Ok(t) => t,
+        Err(ForceError::Singular) => return Err(TestCaseError::reject("singular")),
+        Err(e) => return Err(TestCaseError::fail(e.to_string())),
+    };
+    let power = power_balance(&le, &exact, w1);
+    let drawn = Motion {
+        p: built.p.iter().map(|x| *x * mu_l.value()).collect(),
+        v: vp.images.iter().map(|x| *x * sv.value()).collect(),
+        a: ap.images.iter().map(|x| *x * sa.value()).collect(),
+        omega: vp.rate.clone(),
+        eps: ap.rate.clone(),
+    };
+    let lg = loads(spec, &prog, &drawn, ph).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let big = twin
+        .reactions
+        .iter()
+        .map(|r| r.force.length())
+        .fold(1e-3, f64::max);
+    let mu_f = Scale::round_for(big, 100.0, Quantity::Force).unwrap();
+    let board = Board {
+        prog: &prog,
+        built: &built,
+        mu_l,
+        mu_f,
+        ctx,
+        sense: w1.signum(),
+    };
+    let pol = polygons(&board, &lg, &spec.drive)
+        .map_err(|(g, e)| TestCaseError::fail(format!("group {g}: {e}")))?;
+    let lev = lever::lever(&prog, &built, mu_l, &vp, &lg, &spec.drive, w1, &ctx);
+    Ok((twin, pol, lev, power))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// Every group's polygon gives the linear solve's reactions, the driving link its
+    /// balancing moment, the lever the same, and the power balance the same.
+    #[test]
+    fn polygons_and_lever_equal_the_linear_solve(
+        (m, phi) in gen::mechanism(),
+        masses in proptest::collection::vec((0.1..20.0f64, 0.0..0.5f64), 4),
+        f5 in (1.0..500.0f64, -3.2..3.2f64),
+        gear in proptest::option::of(-3.2..3.2f64),
+    ) {
+        let spec = spec(&masses, f5, gear);
+        let (twin, pol, lev, power) = analyse_random(&m, phi, &spec)?;
+        let big = twin.reactions.iter().map(|r| r.force.length()).fold(0.0, f64::max);
+        let mut compared = 0;
+        let graphical = pol.groups.iter().flat_map(|g| g.reactions.iter()).chain([&pol.driver.reaction]);
+        for g in graphical {
+            let t = reaction(&twin, g.pair.from, g.pair.to).expect("the same pair in the twin");
+            prop_assert!((g.force - t).length() <= REL * (big + t.length()), "R_{}_{}: {} vs {}", g.pair.from, g.pair.to, g.force, t);
+            compared += 1;
+        }
+        prop_assert_eq!(compared, twin.reactions.len());
+        let mb = twin.m_bal.abs() + big * 0.2;
+        prop_assert!((pol.driver.m_bal - twin.m_bal).abs() <= REL * mb, "polygon {} vs {} (lever {}, power {}) {:?}", pol.driver.m_bal, twin.m_bal, lev.m_bal, power, twin.reactions.iter().map(|r| (r.pair.from, r.pair.to, r.offset)).collect::<Vec<_>>());
+        prop_assert!((lev.m_bal - twin.m_bal).abs() <= REL * mb, "lever {} vs {}", lev.m_bal, twin.m_bal);
+        prop_assert!((power - twin.m_bal).abs() <= REL * mb, "power {} vs {}", power, twin.m_bal);
+        if let (Some(f), Some(t)) = (pol.driver.f_bal, twin.f_bal) {
+            prop_assert!((f - t).abs() <= REL * (t.abs() + big));
+        }
+    }
+
+    /// With every load zero, every reaction and the balancing moment are zero.
+    #[test]
+    fn a_group_without_loads_has_no_reactions((m, phi) in gen::mechanism()) {
+        let mut spec = spec(&[], (1.0, 0.0), None);
+        spec.resistances.clear();
+        let (twin, pol, lev, power) = analyse_random(&m, phi, &spec)?;
+        for r in twin.reactions.iter().chain(pol.groups.iter().flat_map(|g| g.reactions.iter())) {
+            prop_assert_eq!(r.force, crate::geom::DVec2::ZERO);
+        }
+        prop_assert_eq!(twin.m_bal, 0.0);
+        prop_assert_eq!(pol.driver.m_bal, 0.0);
+        prop_assert_eq!(lev.m_bal, 0.0);
+        prop_assert_eq!(power, 0.0);
+    }
+}
