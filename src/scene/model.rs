@@ -1,5 +1,6 @@
 //! A validated scene: everything downstream may trust (finite, positive where required).
 
+use crate::forces::balancing::BalancingSpec;
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::Mechanism;
 use crate::scale::Scale;
@@ -37,6 +38,9 @@ pub enum PlateKind {
     /// Kinematic analysis: velocity and acceleration plans, the displacement chart and its
     /// graphical derivatives, a hodograph.
     Kinematics,
+    /// Balancing of a rotor: the rotor, the polygons of static moments (and of moments) and
+    /// the corrections against their analytic twin.
+    Balancing,
 }
 
 impl PlateKind {
@@ -45,10 +49,15 @@ impl PlateKind {
         match self {
             PlateKind::Positions => "positions",
             PlateKind::Kinematics => "kinematics",
+            PlateKind::Balancing => "balancing",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 2] = [PlateKind::Positions, PlateKind::Kinematics];
+    pub const ALL: [PlateKind; 3] = [
+        PlateKind::Positions,
+        PlateKind::Kinematics,
+        PlateKind::Balancing,
+    ];
 
     /// Parse a stem.
     pub fn parse(s: &str) -> Option<Self> {
@@ -92,4 +101,6 @@ pub struct Scene {
     pub plates: Vec<PlateKind>,
     /// The `[kinematics]` choices (all `None` when the section is absent).
     pub kinematics: KinematicsSpec,
+    /// The rotor to balance (`[balancing]`), when the scene has one.
+    pub balancing: Option<BalancingSpec>,
 }
