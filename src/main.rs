@@ -297,7 +297,7 @@ fn distinct_stems(scenes: &[Scene], out: &Path) -> Result<(), Failure> {
 fn report(path: &Path, format: ReportFormat, drafting: f64, lang: LangArg) -> Result<(), Failure> {
     let (lang, drafting) = options(lang, drafting)?;
     let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
-    if s.mechanism.is_none() {
+    if s.mechanism.is_none() && s.balancing.is_none() {
         return Err(nothing_to_construct(&s));
     }
     let rep = Session::new(&s, drafting)
@@ -315,7 +315,7 @@ fn report(path: &Path, format: ReportFormat, drafting: f64, lang: LangArg) -> Re
 /// A scene without a study to carry out.
 fn nothing_to_construct(s: &Scene) -> Failure {
     Failure::input(format!(
-        "{}: the scene asks for nothing to construct (no [mechanism] and no plates)",
+        "{}: the scene asks for nothing to construct (no [mechanism], no [balancing] and no plates)",
         s.path.display()
     ))
 }

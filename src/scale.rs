@@ -67,6 +67,10 @@ pub enum Quantity {
     AngularVelocity,
     /// Angular acceleration, (rad/s²)/mm (μ_ε).
     AngularAcceleration,
+    /// Static moment of a mass m·ρ (an unbalance), kg·m/mm (μ_mρ, the textbook's K_mρ).
+    StaticMoment,
+    /// Moment of an unbalance about a plane m·ρ·z, kg·m²/mm (μ_mρz).
+    UnbalanceMoment,
 }
 
 impl Quantity {
@@ -87,6 +91,8 @@ impl Quantity {
             Inertia => ("kg·m²", "kg·m^2/mm", "кг·м^2/мм"),
             AngularVelocity => ("rad/s", "rad/(s·mm)", "рад/(с·мм)"),
             AngularAcceleration => ("rad/s²", "rad/(s^2·mm)", "рад/(с^2·мм)"),
+            StaticMoment => ("kg·m", "kg·m/mm", "кг·м/мм"),
+            UnbalanceMoment => ("kg·m²", "kg·m^2/mm", "кг·м^2/мм"),
         };
         Units { si, en, cyrillic }
     }
@@ -118,6 +124,8 @@ impl Quantity {
             Inertia => "J",
             AngularVelocity => "ω",
             AngularAcceleration => "ε",
+            StaticMoment => "mρ",
+            UnbalanceMoment => "mρz",
         }
     }
 }

@@ -172,6 +172,8 @@ rules! {
     six_bar_kinematics_texts_apart, six_bar_kinematics_inside_frame: "six-bar" / "kinematics",
     tangent_positions_texts_apart, tangent_positions_inside_frame: "tangent" / "positions",
     tangent_kinematics_texts_apart, tangent_kinematics_inside_frame: "tangent" / "kinematics",
+    rotor_static_balancing_texts_apart, rotor_static_balancing_inside_frame: "rotor-static" / "balancing",
+    rotor_dynamic_balancing_texts_apart, rotor_dynamic_balancing_inside_frame: "rotor-dynamic" / "balancing",
 }
 
 /// Every plate of every scene in `constructions/` is checked above.

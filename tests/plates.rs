@@ -150,6 +150,8 @@ plates! {
     six_bar_kinematics: "six-bar" / "kinematics",
     tangent_positions: "tangent" / "positions",
     tangent_kinematics: "tangent" / "kinematics",
+    rotor_static_balancing: "rotor-static" / "balancing",
+    rotor_dynamic_balancing: "rotor-dynamic" / "balancing",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

@@ -1,5 +1,6 @@
 //! Reading a scene file: TOML → raw structs → one validation pass → [`Scene`].
 
+use super::balancing::balancing;
 use super::check::{item, quoted, Checker};
 use super::error::SceneError;
 use super::forces::forces;
@@ -62,7 +63,12 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         .and_then(|m| mechanism(&mut check, Some(m)));
     let scale_l = scale_l(&mut check, raw.mechanism.as_ref().and_then(|m| m.scale_l));
     let positions = positions(&mut check, raw.positions.unwrap_or_default());
-    let plates = plates(&mut check, raw.plates, has_mechanism);
+    let has_balancing = raw.balancing.is_some();
+    let balancing = raw
+        .balancing
+        .as_ref()
+        .and_then(|b| balancing(&mut check, b));
+    let plates = plates(&mut check, raw.plates, has_mechanism, has_balancing);
     let kinematics = kinematics(
         &mut check,
         raw.kinematics.unwrap_or_default(),
@@ -83,6 +89,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             plates,
             kinematics,
             forces,
+            balancing,
         })
     } else {
         Err(SceneError::Invalid {
@@ -151,19 +158,36 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
     }
 }
 
-/// `[plates] wanted`, default `["positions"]` for a mechanism and none otherwise. Every
-/// plate there is studies the mechanism.
-fn plates(check: &mut Checker, raw: Option<RawPlates>, has_mechanism: bool) -> Vec<PlateKind> {
-    let defaults = if has_mechanism {
-        vec![PlateKind::Positions.stem().to_string()]
-    } else {
-        Vec::new()
-    };
+/// `[plates] wanted`, default `["positions"]` for a mechanism, `["balancing"]` for a rotor
+/// (both for a scene with both) and none otherwise. The balancing plate needs `[balancing]`,
+/// every other plate the mechanism.
+fn plates(
+    check: &mut Checker,
+    raw: Option<RawPlates>,
+    has_mechanism: bool,
+    has_balancing: bool,
+) -> Vec<PlateKind> {
+    let mut defaults = Vec::new();
+    if has_mechanism {
+        defaults.push(PlateKind::Positions.stem().to_string());
+    }
+    if has_balancing {
+        defaults.push(PlateKind::Balancing.stem().to_string());
+    }
     let wanted = raw.and_then(|r| r.wanted).unwrap_or(defaults);
     let known: Vec<&str> = PlateKind::ALL.iter().map(|k| k.stem()).collect();
     let mut out = Vec::new();
     for (i, stem) in wanted.iter().enumerate() {
         match PlateKind::parse(stem) {
+            Some(PlateKind::Balancing) if !has_balancing => {
+                let key = item("plates.wanted", i);
+                check.push(
+                    key,
+                    Some(quoted(stem)),
+                    "a plate of a rotor's balancing: expected a [balancing] table",
+                );
+            }
+            Some(PlateKind::Balancing) => out.push(PlateKind::Balancing),
             Some(_) if !has_mechanism => {
                 let key = item("plates.wanted", i);
                 check.push(

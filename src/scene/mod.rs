@@ -1,5 +1,6 @@
 //! Scene files (`constructions/*.toml`) → validated domain inputs.
 
+mod balancing;
 mod check;
 mod error;
 mod forces;

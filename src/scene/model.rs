@@ -1,5 +1,6 @@
 //! A validated scene: everything downstream may trust (finite, positive where required).
 
+use crate::forces::balancing::BalancingSpec;
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::Mechanism;
 use crate::scale::Scale;
@@ -40,6 +41,9 @@ pub enum PlateKind {
     /// Force analysis (one sheet per position): the groups with their loads, the force
     /// polygons, the driving link, Zhukovsky's lever.
     Forces,
+    /// Balancing of a rotor: the rotor, the polygons of static moments (and of moments) and
+    /// the corrections against their analytic twin.
+    Balancing,
 }
 
 impl PlateKind {
@@ -49,13 +53,15 @@ impl PlateKind {
             PlateKind::Positions => "positions",
             PlateKind::Kinematics => "kinematics",
             PlateKind::Forces => "forces",
+            PlateKind::Balancing => "balancing",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 3] = [
+    pub const ALL: [PlateKind; 4] = [
         PlateKind::Positions,
         PlateKind::Kinematics,
         PlateKind::Forces,
+        PlateKind::Balancing,
     ];
 
     /// Parse a stem.
@@ -102,4 +108,6 @@ pub struct Scene {
     pub kinematics: KinematicsSpec,
     /// The `[forces]` loads (`None` when the section is absent).
     pub forces: Option<crate::forces::ForceSpec>,
+    /// The rotor to balance (`[balancing]`), when the scene has one.
+    pub balancing: Option<BalancingSpec>,
 }

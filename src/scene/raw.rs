@@ -15,6 +15,7 @@ pub(crate) struct RawScene {
     pub plates: Option<RawPlates>,
     pub kinematics: Option<RawKinematics>,
     pub forces: Option<RawForces>,
+    pub balancing: Option<RawBalancing>,
 }
 
 /// `[task]`: the title block.
@@ -192,6 +193,32 @@ pub(crate) struct RawKinematics {
     pub pole_h2: Option<f64>,
     pub hodograph: Option<String>,
     pub differentiation: Option<String>,
+}
+
+/// `[balancing]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawBalancing {
+    pub kind: Option<String>,
+    pub omega: Option<f64>,
+    pub radius: Option<f64>,
+    pub radii: Option<Vec<f64>>,
+    pub planes: Option<Vec<f64>>,
+    pub scale_mr: Option<f64>,
+    pub scale_mrz: Option<f64>,
+    pub scale_l: Option<f64>,
+    #[serde(default)]
+    pub mass: Vec<RawMass>,
+}
+
+/// `[[balancing.mass]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawMass {
+    pub mass: Option<f64>,
+    pub radius: Option<f64>,
+    pub angle: Option<f64>,
+    pub z: Option<f64>,
 }
 
 impl fmt::Display for RawDir {

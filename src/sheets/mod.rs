@@ -1,6 +1,7 @@
 //! Sheets: the plates a scene asks for, composed from the studies of its session on ГОСТ
 //! sheets.
 
+mod balancing;
 mod captions;
 mod fit;
 mod forces;
@@ -114,6 +115,7 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
         PlateKind::Positions => positions::build(session, lang),
         PlateKind::Kinematics => kinematics::build(session, lang),
         PlateKind::Forces => forces::build(session, lang),
+        PlateKind::Balancing => balancing::build(session, lang),
     }
 }
 

@@ -11,6 +11,7 @@ mod memo;
 
 use crate::check::Row;
 use crate::construct::{Context, Drafting, Figure};
+use crate::forces::balancing::{self, Balancing, BalancingError};
 use crate::forces::{ForceError, ForceSpec, PositionForces};
 use crate::kinematics::{
     self, acceleration_indices, plans, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
@@ -52,6 +53,12 @@ pub enum StudyError {
     /// The scene has no `[forces]` and the study needs it.
     #[error("the scene has no [forces]: {0} needs the loads")]
     NoForces(&'static str),
+    /// The scene has no `[balancing]` and the study needs one.
+    #[error("the scene has no [balancing]: {0} needs one")]
+    NoBalancing(&'static str),
+    /// The balancing cannot be carried out.
+    #[error(transparent)]
+    Balancing(#[from] BalancingError),
 }
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -179,6 +186,7 @@ pub struct Session<'s> {
     hodograph: Memo<(Scale, Scale), Result<Option<Hodograph>, StudyError>>,
     table: Memo<Scale, Cached<Table>>,
     forces: Memo<(Scale, Scale, Scale, usize), Cached<PositionForces>>,
+    balancing: Memo<(), Cached<Balancing>>,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -199,6 +207,7 @@ impl<'s> Session<'s> {
             hodograph: Memo::default(),
             table: Memo::default(),
             forces: Memo::default(),
+            balancing: Memo::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -516,9 +525,44 @@ impl<'s> Session<'s> {
         })
     }
 
+    /// The balancing of the scene's rotor (`[balancing]`), constructed once.
+    pub fn balancing(&self) -> Cached<Balancing> {
+        self.balancing.get((), || {
+            let spec = self
+                .scene
+                .balancing
+                .as_ref()
+                .ok_or(StudyError::NoBalancing("the balancing of a rotor"))?;
+            let b = balancing::balance(spec, &self.ctx()?)?;
+            self.logged("polygon of static moments", "", b.scale_mr);
+            Ok(Arc::new(b))
+        })
+    }
+
+    /// The report of every study of the scene: the kinematic study of its mechanism and the
+    /// balancing of its rotor, each that the scene has, rows and notes in that order. A scene
+    /// with neither is refused for want of a mechanism.
+    pub fn report(&self) -> Result<Report, StudyError> {
+        let mut rep = match (&self.scene.mechanism, &self.scene.balancing) {
+            (None, Some(_)) => Report {
+                scene: self.scene.stem.clone(),
+                rows: Vec::new(),
+                tables: Vec::new(),
+                notes: Vec::new(),
+            },
+            _ => self.kinematics_report()?,
+        };
+        if self.scene.balancing.is_some() {
+            let b = self.balancing()?;
+            rep.rows.extend(b.rows());
+            rep.notes.extend(b.notes());
+        }
+        Ok(rep)
+    }
+
     /// The report of the kinematic study at the scene's scales: every reading against its
     /// analytic twin, the analytic table, the notes.
-    pub fn report(&self) -> Result<Report, StudyError> {
+    fn kinematics_report(&self) -> Result<Report, StudyError> {
         let k = self.kinematics(&self.kin_scales()?)?;
         let mut notes: Vec<String> = k.refusals.iter().map(ToString::to_string).collect();
         notes.extend(

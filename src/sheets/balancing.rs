@@ -1,0 +1,310 @@
+//! Plate "Уравновешивание ротора" (lecture 19 of seed 001): the rotor drawn with its masses
+//! and correcting masses, the polygon of static moments (and, for a long rotor, the polygon
+//! of moments), the data and results, and a table of the corrections read off the polygons
+//! against their analytic twin. The smallest landscape sheet from A3 up that holds it all.
+
+use super::layout::{lay_out, Block, ScaleKey};
+use super::BuildError;
+use crate::check::{Row, Symbol};
+use crate::forces::balancing::{Balancing, Correction, Plane};
+use crate::geom::DVec2;
+use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
+use crate::scale::{format_fixed, format_sig, Lang, Scale};
+use crate::study::Session;
+
+/// The sheets tried, smallest first.
+const SIZES: [SheetSize; 3] = [SheetSize::A3, SheetSize::A2, SheetSize::A1];
+/// Text height of the data lines and the table, mm.
+const TEXT_MM: f64 = 3.5;
+const TABLE_MM: f64 = 2.5;
+
+/// A word of the sheet in ru, uk, en.
+fn tr(lang: Lang, ru: &'static str, uk: &'static str, en: &'static str) -> &'static str {
+    lang.pick(ru, uk, en)
+}
+
+/// Build the sheet of the scene's rotor.
+pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
+    let scene = session.scene();
+    let b = session.balancing()?;
+    let dynamic = matches!(b.spec.correction, Correction::Dynamic { .. });
+    let mut blocks = rotor_blocks(&b, lang);
+    if let (Some(fig), Some(mu)) = (&b.moments, b.scale_mrz) {
+        let caption = format!(
+            "{}, {}",
+            tr(
+                lang,
+                "План моментов m·ρ·z",
+                "План моментів m·ρ·z",
+                "Polygon of moments m·ρ·z"
+            ),
+            mu.caption(lang)
+        );
+        blocks.push(Block::view(
+            fig.clone(),
+            caption,
+            keyed("balancing.scale_mrz", mu),
+        ));
+    }
+    let caption = format!(
+        "{}, {}",
+        tr(
+            lang,
+            "План статических моментов m·ρ",
+            "План статичних моментів m·ρ",
+            "Polygon of static moments m·ρ"
+        ),
+        b.scale_mr.caption(lang)
+    );
+    blocks.push(Block::view(
+        b.statics.clone(),
+        caption,
+        keyed("balancing.scale_mr", b.scale_mr),
+    ));
+    let mut lines = data_lines(&b, lang);
+    lines.push(String::new());
+    lines.push(super::drafting_line(session.drafting(), lang));
+    blocks.push(Block::Text {
+        lines,
+        size_mm: TEXT_MM,
+    });
+    blocks.push(Block::Table(table(&b.rows(), lang)));
+    let sheet_title = if dynamic {
+        tr(
+            lang,
+            "Полное уравновешивание ротора",
+            "Повне зрівноваження ротора",
+            "Complete balancing of a rotor",
+        )
+    } else {
+        tr(
+            lang,
+            "Статическое уравновешивание ротора",
+            "Статичне зрівноваження ротора",
+            "Static balancing of a rotor",
+        )
+    };
+    let title = super::title_block(scene, sheet_title, b.scale_l, lang);
+    // The smallest sheet that holds everything on one page; A1 (over pages) otherwise.
+    let mut last = None;
+    for size in SIZES {
+        let sheet = Sheet {
+            size,
+            landscape: true,
+        };
+        match lay_out(sheet, blocks.clone(), "balancing", &title, lang) {
+            Ok(plates) if plates.len() == 1 => return Ok(plates),
+            other => last = Some(other),
+        }
+    }
+    last.unwrap_or_else(|| Ok(Vec::new()))
+}
+
+/// The scene key of a scale and the scale, for a block's message.
+fn keyed(key: &'static str, scale: Scale) -> Option<ScaleKey> {
+    Some(ScaleKey { key, scale })
+}
+
+/// The rotor's views with their captions: the end view of a thin rotor; the side view and
+/// the end view of a long one.
+fn rotor_blocks(b: &Balancing, lang: Lang) -> Vec<Block> {
+    let mu = b.scale_l;
+    let n = b.rotor.len();
+    b.rotor
+        .iter()
+        .enumerate()
+        .map(|(k, fig)| {
+            let what = if k + 1 < n {
+                tr(lang, "Ротор", "Ротор", "Rotor")
+            } else if n > 1 {
+                tr(
+                    lang,
+                    "Вид вдоль оси",
+                    "Вид уздовж осі",
+                    "View along the axis",
+                )
+            } else {
+                tr(lang, "Ротор (диск)", "Ротор (диск)", "Rotor (disc)")
+            };
+            let caption = format!("{what}, {}", mu.caption(lang));
+            Block::view(fig.clone(), caption, keyed("balancing.scale_l", mu))
+        })
+        .collect()
+}
+
+/// A number of the sheet: 4 significant digits.
+fn num(x: f64, lang: Lang) -> String {
+    format_sig(x, 4, lang)
+}
+
+/// The data of the task and the correcting masses found, as text lines (label markup).
+fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
+    let (kg, mm) = (tr(lang, "кг", "кг", "kg"), tr(lang, "мм", "мм", "mm"));
+    let mut out = vec![tr(lang, "Исходные данные", "Вихідні дані", "Data").to_string()];
+    let dynamic = matches!(b.spec.correction, Correction::Dynamic { .. });
+    for (i, m) in b.spec.masses.iter().enumerate() {
+        let k = i + 1;
+        let mut line = format!(
+            "m_{{{k}}} = {} {kg}, ρ_{{{k}}} = {} {mm}, α_{{{k}}} = {}°",
+            num(m.mass, lang),
+            num(m.radius * 1e3, lang),
+            num(m.angle.to_degrees(), lang)
+        );
+        if dynamic {
+            line.push_str(&format!(", z_{{{k}}} = {} {mm}", num(m.z * 1e3, lang)));
+        }
+        out.push(line);
+    }
+    match b.spec.correction {
+        Correction::Static { radius } => {
+            out.push(format!("ρ_{{у}} = {} {mm}", num(radius * 1e3, lang)))
+        }
+        Correction::Dynamic { planes, radii } => {
+            out.push(format!(
+                "z_{{I}} = {} {mm}, z_{{II}} = {} {mm}; ρ_{{уI}} = {} {mm}, ρ_{{уII}} = {} {mm}",
+                num(planes[0] * 1e3, lang),
+                num(planes[1] * 1e3, lang),
+                num(radii[0] * 1e3, lang),
+                num(radii[1] * 1e3, lang)
+            ));
+        }
+    }
+    if let Some(w) = b.spec.omega {
+        out.push(format!(
+            "ω = {} {}",
+            num(w, lang),
+            tr(lang, "рад/с", "рад/с", "rad/s")
+        ));
+    }
+    out.push(String::new());
+    out.push(
+        tr(
+            lang,
+            "Уравновешивающие массы",
+            "Зрівноважувальні маси",
+            "Correcting masses",
+        )
+        .into(),
+    );
+    for c in &b.graphical {
+        let idx = c.plane.index();
+        let u = c.unbalance.length();
+        let angle = c.angle().map_or_else(
+            || "—".to_string(),
+            |a| format_fixed(a.to_degrees(), 1, lang),
+        );
+        out.push(format!(
+            "m_{{{idx}}} = m_{{{idx}}}ρ_{{{idx}}}/ρ_{{{idx}}} = {}/{} = {} {kg}, α_{{{idx}}} = {}°",
+            num(u, lang),
+            num(c.radius, lang),
+            num(c.mass(), lang),
+            angle
+        ));
+    }
+    if let Some(w) = b.spec.omega {
+        let n = tr(lang, "Н", "Н", "N");
+        let p = tr(lang, "и", "і", "in");
+        for (i, m) in b.spec.masses.iter().enumerate() {
+            let f = crate::forces::balancing::inertia_force(m, w);
+            let g = m.mass * crate::forces::balancing::COURSE_G;
+            out.push(format!(
+                "P_{{{p}{k}}} = m_{{{k}}}ω^2ρ_{{{k}}} = {} {n}, P_{{{p}{k}}}/G_{{{k}}} = {}",
+                num(f, lang),
+                num(f / g, lang),
+                k = i + 1
+            ));
+        }
+    }
+    out
+}
+
+/// The index of a plane's correcting mass from its report subject (`y`, `I`, `II`).
+fn plane_index(subject: &str) -> &'static str {
+    match subject {
+        "I" => Plane::First.index(),
+        "II" => Plane::Second.index(),
+        _ => Plane::Disc.index(),
+    }
+}
+
+/// A row's quantity in the textbook's notation and its unit, in `lang`.
+fn quantity(r: &Row, lang: Lang) -> (String, &'static str) {
+    let idx = plane_index(&r.key.subject);
+    let after = r.key.subject == "res";
+    let stage = if after {
+        tr(lang, "после", "після", "after")
+    } else {
+        tr(lang, "до", "до", "before")
+    };
+    let p = tr(lang, "и", "і", "in");
+    match r.key.symbol {
+        Symbol::StaticMoment => (
+            format!("m_{{{idx}}}ρ_{{{idx}}}"),
+            tr(lang, "кг·м", "кг·м", "kg·m"),
+        ),
+        Symbol::UnbalanceMoment => (
+            format!("m_{{{idx}}}ρ_{{{idx}}}z_{{II}}"),
+            tr(lang, "кг·м^2", "кг·м^2", "kg·m^2"),
+        ),
+        Symbol::Mass => (format!("m_{{{idx}}}"), tr(lang, "кг", "кг", "kg")),
+        Symbol::Angle => (format!("α_{{{idx}}}"), "°"),
+        Symbol::Force => (format!("F_{{{p}}} {stage}"), tr(lang, "Н", "Н", "N")),
+        Symbol::Moment => (format!("M_{{{p}}} {stage}"), tr(lang, "Н·м", "Н·м", "N·m")),
+        other => (other.markup(&r.key.subject), ""),
+    }
+}
+
+/// The table graphical | analytic | error of the rows (angles in degrees).
+fn table(rows: &[Row], lang: Lang) -> TableBlock {
+    let errors = crate::check::rel_errors(rows);
+    let scales = crate::check::scales(rows);
+    let body = rows
+        .iter()
+        .zip(errors)
+        .zip(scales)
+        .map(|((r, e), s)| {
+            let (name, unit) = quantity(r, lang);
+            let k = if r.key.symbol == Symbol::Angle {
+                180.0 / std::f64::consts::PI
+            } else {
+                1.0
+            };
+            let cell = |x: f64| {
+                if crate::check::is_zero(x, s) {
+                    "0".to_string()
+                } else {
+                    num(x * k, lang)
+                }
+            };
+            vec![
+                name,
+                unit.to_string(),
+                cell(r.graphical),
+                cell(r.analytic),
+                e.map_or_else(|| "—".into(), |e| format_fixed(e * 100.0, 3, lang)),
+            ]
+        })
+        .collect();
+    TableBlock {
+        at: DVec2::ZERO,
+        title: tr(
+            lang,
+            "Графическое решение и аналитический расчёт",
+            "Графічний розв'язок і аналітичний розрахунок",
+            "Graphical against analytic",
+        )
+        .into(),
+        columns: vec![
+            (tr(lang, "величина", "величина", "quantity").into(), 30.0),
+            (tr(lang, "ед.", "од.", "unit").into(), 14.0),
+            (tr(lang, "графически", "графічно", "graphical").into(), 26.0),
+            (
+                tr(lang, "аналитически", "аналітично", "analytic").into(),
+                28.0,
+            ),
+            ("δ, %".into(), 16.0),
+        ],
+        rows: body,
+        size_mm: TABLE_MM,
+    }
+}
