@@ -210,3 +210,34 @@ fn bad_forces_input_names_the_key() {
         assert!(err.contains(key), "{key}: {err}");
     }
 }
+
+/// W2 of seed 001 on the reconstructed six-bar (seed-001-digest §8): the linear solve gives
+/// the digest's independent values F₃₋₄ ≈ 465 N, F₁₋₂ ≈ 673 N, M_у ≈ 53 N·m — not the seed's
+/// printed 414 N, 408 N and 22.6 N·m, which come from its lost drawings.
+#[test]
+fn w2_reconstruction_gives_the_independent_values_not_the_seeds() {
+    let out = tmm(&["report", "constructions/six-bar.toml", "--format", "json"]);
+    assert!(out.status.success());
+    let v: Value = serde_json::from_slice(&out.stdout).expect("json");
+    let rows = rows_at(&v, "1");
+    let analytic = |q: &str| {
+        let r = rows
+            .iter()
+            .find(|r| r["quantity"] == q && r["method"] == "polygon")
+            .expect(q);
+        num(r, "analytic")
+    };
+    for (q, want, seed) in [("R_3_4", 465.0, 414.0), ("R_1_2", 673.0, 408.0)] {
+        let a = analytic(q);
+        assert!((a - want).abs() < 0.01 * want, "{q} = {a}");
+        assert!(
+            (a - seed).abs() > 0.05 * seed,
+            "{q} = {a} is the seed's {seed}"
+        );
+    }
+    let m = analytic("M_bal").abs();
+    assert!(
+        (m - 53.0).abs() < 0.01 * 53.0 && (m - 22.6).abs() > 10.0,
+        "M_bal = {m}"
+    );
+}
