@@ -283,3 +283,23 @@ fn the_scene_converts_to_si_at_the_boundary() {
     assert_eq!((m.mass, m.radius, m.z), (0.15, 0.1, 0.2));
     assert!((m.angle - 150f64.to_radians()).abs() < 1e-15);
 }
+
+#[test]
+fn extreme_but_valid_rotors_are_drawn_or_refused_with_the_key() {
+    let masses = "[[balancing.mass]]\nmass = 1e-300\nradius = 1e-6\nangle = 0\n\
+                  [[balancing.mass]]\nmass = 1e6\nradius = 1e6\nangle = 1e300\n";
+    let (ok, _, out, err) = run_scene(
+        "extreme",
+        &format!("[balancing]\nomega = 1e6\n{masses}"),
+        &["check"],
+    );
+    assert!(ok, "{out}{err}");
+    let text = format!("[balancing]\nscale_mr = 1e-9\n{masses}");
+    let (ok, code, _, err) = run_scene("extreme-scale", &text, &["check"]);
+    assert!(!ok && code == 2, "{err}");
+    assert!(
+        err.contains("balancing.scale_mr") && err.contains("largest scale"),
+        "{err}"
+    );
+    assert!(!err.contains("panicked"), "{err}");
+}
