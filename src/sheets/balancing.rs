@@ -132,9 +132,21 @@ fn rotor_blocks(b: &Balancing, lang: Lang) -> Vec<Block> {
         .collect()
 }
 
-/// A number of the sheet: 4 significant digits.
+/// A number of the sheet: 4 significant digits; beyond 10⁶ or under 10⁻⁴ as `1,5·10^{7}`,
+/// so that no value widens a line past the sheet.
 fn num(x: f64, lang: Lang) -> String {
-    format_sig(x, 4, lang)
+    let a = x.abs();
+    if a != 0.0 && a.is_finite() && !(1e-4..1e6).contains(&a) {
+        let e = a.log10().floor();
+        format!(
+            "{}·10^{{{}}}",
+            format_sig(x / 10f64.powf(e), 4, lang),
+            e as i32
+        )
+        .replace("{-", "{−")
+    } else {
+        format_sig(x, 4, lang)
+    }
 }
 
 /// The data of the task and the correcting masses found, as text lines (label markup).
@@ -148,7 +160,7 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
             "m_{{{k}}} = {} {kg}, ρ_{{{k}}} = {} {mm}, α_{{{k}}} = {}°",
             num(m.mass, lang),
             num(m.radius * 1e3, lang),
-            num(m.angle.to_degrees(), lang)
+            num(m.angle.to_degrees().rem_euclid(360.0), lang)
         );
         if dynamic {
             line.push_str(&format!(", z_{{{k}}} = {} {mm}", num(m.z * 1e3, lang)));

@@ -101,7 +101,8 @@ pub fn balance(spec: &BalancingSpec, ctx: &Context) -> Result<Balancing, Balanci
     };
     // The polygon of static moments: the masses', then the known correction (plane II),
     // closing to the correction of the disc (static) or of plane I (dynamic).
-    let mut vectors = statics.clone();
+    let count = statics.len();
+    let mut vectors = statics;
     let mut names = labels;
     for k in &known {
         vectors.push(k.unbalance);
@@ -113,7 +114,7 @@ pub fn balance(spec: &BalancingSpec, ctx: &Context) -> Result<Balancing, Balanci
     let scale_mr = chosen(spec.scale_mr, &sizing, Quantity::StaticMoment, "μ_mρ")?;
     let mut p = Polygon::start("polygon of static moments m·ρ", scale_mr, ctx);
     p.lay_all(&vectors, &names, &sizing);
-    let masses_end = sizing.get(statics.len()).copied().unwrap_or(DVec2::ZERO) / scale_mr.value();
+    let masses_end = sizing.get(count).copied().unwrap_or(DVec2::ZERO) / scale_mr.value();
     let unbalance_read = p.rec.measure(DVec2::ZERO, masses_end).value;
     let idx = closing_plane.plane.index();
     let closing = p.close(&format!("m_{{{idx}}}ρ_{{{idx}}}"), &sizing);
