@@ -12,6 +12,7 @@
 //!   inertia loads `F_in<l>`, `M_in<l>`, graphical against analytic.
 
 pub mod balancing;
+pub mod friction;
 pub mod lever;
 pub mod loads;
 pub mod polygons;

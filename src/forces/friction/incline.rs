@@ -1,0 +1,320 @@
+//! Uniform motion on an inclined plane under a force P at β′ above the horizontal (seed 001
+//! §10.4, Fig. 47–48): the scheme with the friction cone, and the force triangle
+//! Q + P + R = 0 with R turned from the normal by φ against the motion; beside it the same
+//! triangle without friction, whose P₀ gives the efficiency.
+
+use super::draw::{angle_mark, arrow, cone, triangle, turned, Triangle};
+use super::{
+    choose_scale, friction_angle, reading, schematic, subject, Drawing, DrawingKind, FrictionCase,
+    FrictionError, Incline, Motion, Reading, Solved, POLYGON_MM,
+};
+use crate::check::Symbol;
+use crate::construct::{ConstructionError, Context, Item, Recorder, Role};
+use crate::geom::{DVec2, Segment, Side};
+use crate::scale::Quantity;
+
+/// The smallest angle, degrees, between the lines of P and R that still closes a triangle a
+/// hand can draw; below it P would exceed ~29 Q and the motion is refused.
+pub(super) const MIN_CROSSING_DEG: f64 = 2.0;
+
+/// The closed form of uniform motion on an inclined plane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InclineTwin {
+    /// The friction angle φ = arctg f, rad.
+    pub phi: f64,
+    /// The driving (up) or holding (down) force P, N: `Q·sin(α ± φ)/cos(α ± φ − β′)`;
+    /// negative when the body must be pushed down (self-braking).
+    pub p: f64,
+    /// The total reaction |R|, N.
+    pub r: f64,
+    /// P without friction, `Q·sin α/cos(α − β′)`, N.
+    pub p0: f64,
+    /// |R| without friction, N.
+    pub r0: f64,
+    /// The efficiency: P₀/P up the plane; P/P₀ down it (≤ 0: self-braking); 0 on a level
+    /// plane (no work is done against the load).
+    pub eta: f64,
+    /// Down the plane with α ≤ φ: the body stays put under any load.
+    pub self_braking: bool,
+}
+
+/// The twin of an inclined plane: the explicit vector solution of Q + P + R = 0 (the
+/// printed `cos(α + β + φ)` of the seed is an erratum).
+pub fn incline_twin(c: &Incline) -> InclineTwin {
+    let phi = friction_angle(c.f);
+    let s = c.motion.sign();
+    let q = c.load;
+    let p = q * (c.alpha + s * phi).sin() / (c.alpha + s * phi - c.beta).cos();
+    let p0 = q * c.alpha.sin() / (c.alpha - c.beta).cos();
+    // R = −(Q + P) with Q = (0, −q) and P along (cos β′, sin β′).
+    let reaction = |p: f64| DVec2::new(-p * c.beta.cos(), q - p * c.beta.sin()).length();
+    let eta = match c.motion {
+        _ if p0 == 0.0 => 0.0,
+        Motion::Up => p0 / p,
+        Motion::Down => p / p0,
+    };
+    InclineTwin {
+        phi,
+        p,
+        r: reaction(p),
+        p0,
+        r0: reaction(p0),
+        eta,
+        self_braking: c.motion == Motion::Down && c.alpha <= phi,
+    }
+}
+
+/// The directions of P and of R (acting on the body) and the plane's rise `u`.
+fn directions(c: &Incline, phi: f64) -> (DVec2, DVec2, DVec2) {
+    let u = DVec2::from_angle(c.alpha);
+    let n = u.perp();
+    let p_dir = DVec2::from_angle(c.beta);
+    // Against the motion: up the plane R leans back (counter-clockwise from n).
+    let r_dir = turned(n, c.motion.sign() * phi);
+    (p_dir, r_dir, u)
+}
+
+/// Refuse a motion whose P and R lines (nearly) coincide in direction.
+pub(super) fn feasible(case: &str, c: &Incline, phi: f64) -> Result<(), FrictionError> {
+    let s = c.motion.sign();
+    let lean = c.alpha + s * phi - c.beta;
+    if lean.cos() < MIN_CROSSING_DEG.to_radians().sin() {
+        return Err(FrictionError::Impossible {
+            case: case.to_string(),
+            why: format!(
+                "α {} φ − β′ = {:.2}°: the force P at β′ = {:.2}° cannot move the body uniformly \
+                 (the lines of P and R cross at less than {MIN_CROSSING_DEG}°)",
+                if s > 0.0 { "+" } else { "−" },
+                lean.to_degrees(),
+                c.beta.to_degrees()
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// The scheme: the plane, the body, the loads, the friction cone and the reaction. Returns
+/// the drawing and the friction angle as read off the cone.
+pub(super) fn scheme(
+    case: &FrictionCase,
+    c: &Incline,
+    ctx: &Context,
+) -> Result<(Drawing, f64), FrictionError> {
+    let u = DVec2::from_angle(c.alpha);
+    let mut rec = Recorder::in_context(&case.name, schematic(&case.name)?, ctx);
+    let foot = -u * 40.0;
+    rec.draw(
+        "the inclined plane",
+        Item::Guide {
+            segment: Segment::new(foot, u * 40.0),
+            hatch: Side::Right,
+        },
+        Role::Given,
+        &[],
+    );
+    if c.alpha > 0.0 {
+        rec.draw(
+            "the horizontal",
+            Item::Segment(Segment::new(foot, foot + DVec2::X * 50.0)),
+            Role::Construction,
+            &[],
+        );
+        angle_mark(&mut rec, "α", foot, 16.0, (DVec2::X, u), "α");
+    }
+    let phi_read = body_on_plane(&mut rec, c, DVec2::ZERO);
+    Ok((
+        Drawing {
+            kind: DrawingKind::Scheme,
+            figure: rec.finish(),
+            scaled: false,
+            also: Vec::new(),
+        },
+        phi_read,
+    ))
+}
+
+/// The body on the plane at the contact `at`: the block, its velocity, Q and P, the friction
+/// cone and the total reaction R with its angle φ. Returns φ as read off the cone (arctg of
+/// f·N over N, both measured).
+pub(super) fn body_on_plane(rec: &mut Recorder, c: &Incline, at: DVec2) -> f64 {
+    let phi = friction_angle(c.f);
+    let (p_dir, r_dir, u) = directions(c, phi);
+    let n = u.perp();
+    let g = at + n * 3.0;
+    rec.draw(
+        "the body",
+        Item::Slider {
+            at: g,
+            angle: c.alpha,
+        },
+        Role::Given,
+        &[],
+    );
+    let s = c.motion.sign();
+    let v_from = g + n * 8.0 - u * (6.0 * s);
+    let v = (v_from, v_from + u * (12.0 * s));
+    arrow(rec, "the velocity", v, Role::Dimension, "v", n);
+    arrow(
+        rec,
+        "the load",
+        (g, g - DVec2::Y * 24.0),
+        Role::Given,
+        "Q",
+        DVec2::X,
+    );
+    arrow(
+        rec,
+        "the force",
+        (g, g + p_dir * 24.0),
+        Role::Given,
+        "P",
+        -DVec2::Y,
+    );
+    let (left, right, top) = cone(rec, at, n, c.f, 36.0);
+    let (edge, side) = if s > 0.0 {
+        (left, n.perp())
+    } else {
+        (right, -n.perp())
+    };
+    let r = (at, at + r_dir * 40.0);
+    arrow(rec, "the total reaction R", r, Role::Result, "R", side);
+    angle_mark(rec, "φ", at, 24.0, (n, r_dir), "φ");
+    let across = rec.measure(top, edge).read_mm;
+    let along = rec.measure(at, top).read_mm;
+    across.atan2(along)
+}
+
+/// The force triangles with and without friction, at μ_F.
+pub(super) fn polygon(
+    case: &FrictionCase,
+    c: &Incline,
+    twin: &InclineTwin,
+    ctx: &Context,
+    wrap: &dyn Fn(ConstructionError) -> FrictionError,
+) -> Result<(Drawing, Triangle, Option<Triangle>), FrictionError> {
+    let largest = [c.load, twin.p, twin.r, twin.p0, twin.r0]
+        .into_iter()
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    let mu = choose_scale(
+        &case.name,
+        case.scale_f,
+        largest,
+        POLYGON_MM,
+        Quantity::Force,
+    )?;
+    let mut rec = Recorder::in_context(&case.name, mu, ctx);
+    let (p_dir, r_dir, u) = directions(c, twin.phi);
+    let q = DVec2::new(0.0, -c.load);
+    let with = triangle(
+        &mut rec,
+        DVec2::ZERO,
+        q,
+        (p_dir, r_dir),
+        ["Q", "P", "R"],
+        Role::Result,
+    )
+    .map_err(wrap)?;
+    // Without friction (η): on a level plane nothing is lifted, no triangle.
+    let without = if c.alpha > 0.0 {
+        let right = [with.a, with.b, with.c]
+            .into_iter()
+            .fold(f64::NEG_INFINITY, |m, p| m.max(p.x));
+        let at = DVec2::new(right + 25.0, 0.0);
+        let t = triangle(
+            &mut rec,
+            at,
+            q,
+            (p_dir, u.perp()),
+            ["Q", "P_{0}", "R_{0}"],
+            Role::Result,
+        )
+        .map_err(wrap)?;
+        Some(t)
+    } else {
+        None
+    };
+    Ok((
+        Drawing {
+            kind: DrawingKind::Polygon,
+            figure: rec.finish(),
+            scaled: true,
+            also: Vec::new(),
+        },
+        with,
+        without,
+    ))
+}
+
+/// The efficiency read off the two triangles (the twin's rule).
+pub(super) fn eta_read(motion: Motion, p: f64, p0: Option<f64>) -> f64 {
+    match (motion, p0) {
+        (_, None | Some(0.0)) => 0.0,
+        (Motion::Up, Some(p0)) => p0 / p,
+        (Motion::Down, Some(p0)) => p / p0,
+    }
+}
+
+/// The readings of an incline-like case (shared with the screw, whose P is tangential).
+pub(super) fn readings(name: &str, twin: &InclineTwin, with: &Triangle, eta: f64) -> Vec<Reading> {
+    let cond = Some(with.crossing_deg);
+    vec![
+        reading(
+            "P",
+            (Symbol::Force, subject("P", name)),
+            with.p,
+            twin.p,
+            cond,
+        ),
+        reading(
+            "R",
+            (Symbol::Reaction, subject("", name)),
+            with.r,
+            twin.r,
+            cond,
+        ),
+        reading("η", (Symbol::Ratio, subject("", name)), eta, twin.eta, cond),
+    ]
+}
+
+/// Construct the case and read it.
+pub(super) fn solve(
+    case: &FrictionCase,
+    c: &Incline,
+    ctx: &Context,
+    wrap: &dyn Fn(ConstructionError) -> FrictionError,
+) -> Result<Solved, FrictionError> {
+    let twin = incline_twin(c);
+    feasible(&case.name, c, twin.phi)?;
+    let (scheme, phi_read) = scheme(case, c, ctx)?;
+    let (poly, with, without) = polygon(case, c, &twin, ctx, wrap)?;
+    let eta = eta_read(c.motion, with.p, without.map(|t| t.p));
+    let mut out = vec![reading(
+        "φ",
+        (Symbol::Angle, subject("phi", &case.name)),
+        phi_read,
+        twin.phi,
+        None,
+    )];
+    out.extend(readings(&case.name, &twin, &with, eta));
+    let mut notes = vec![format!(
+        "{}: twin P = Q·sin(α {} φ)/cos(α {} φ − β′) from the vector solution of Q + P + R = 0; \
+         the seed's printed P = Q·sin(α + φ)/cos(α + β + φ) is an erratum (sin[π − x] is not cos x)",
+        case.name,
+        if c.motion == Motion::Up { "+" } else { "−" },
+        if c.motion == Motion::Up { "+" } else { "−" },
+    )];
+    if twin.self_braking {
+        notes.push(format!(
+            "{}: self-braking: α = {:.2}° ≤ φ = {:.2}°, the body must be pushed down (P < 0)",
+            case.name,
+            c.alpha.to_degrees(),
+            twin.phi.to_degrees()
+        ));
+    }
+    Ok(Solved {
+        case: case.clone(),
+        drawings: vec![scheme, poly],
+        readings: out,
+        notes,
+    })
+}

@@ -1,0 +1,221 @@
+//! The revolute pair (seed 001 §12, Fig. 53–54): the shaft rolls up its bore until the
+//! total reaction at the contact A₁ — the normal turned by φ against the slip — balances the
+//! load Q. The reaction's line is then tangent to the friction circle of radius
+//! `ρ = r·sin φ` (the textbook writes `ρ ≈ r·f` for small φ), and the friction moment is
+//! `M_f = Q·ρ`.
+
+use super::draw::{angle_mark, arrow, thin_line, turned};
+use super::{
+    choose_scale, friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase,
+    FrictionError, Journal, Solved,
+};
+use crate::check::Symbol;
+use crate::construct::{Compass, ConstructionError, Context, Item, Pick, Recorder, Role};
+use crate::geom::{Arc, Circle, DVec2, Line};
+use crate::scale::Quantity;
+use std::f64::consts::PI;
+
+/// Preferred drawn radius of the journal, mm.
+const RADIUS_MM: f64 = 35.0;
+
+/// The closed form of a revolute pair.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JournalTwin {
+    /// The friction angle φ, rad.
+    pub phi: f64,
+    /// The friction circle's radius `r·sin φ`, m.
+    pub rho: f64,
+    /// The textbook's radius `r·f`, m.
+    pub rho_textbook: f64,
+    /// The friction moment `Q·r·sin φ`, N·m.
+    pub moment: f64,
+    /// The textbook's moment `f·Q·r`, N·m.
+    pub moment_textbook: f64,
+}
+
+/// The twin of a revolute pair.
+pub fn journal_twin(c: &Journal) -> JournalTwin {
+    let phi = friction_angle(c.f);
+    let rho = c.radius * phi.sin();
+    JournalTwin {
+        phi,
+        rho,
+        rho_textbook: c.radius * c.f,
+        moment: c.load * rho,
+        moment_textbook: c.f * c.load * c.radius,
+    }
+}
+
+/// Construct the case and read it.
+pub(super) fn solve(
+    case: &FrictionCase,
+    c: &Journal,
+    ctx: &Context,
+    wrap: &dyn Fn(ConstructionError) -> FrictionError,
+) -> Result<Solved, FrictionError> {
+    let twin = journal_twin(c);
+    let mu = choose_scale(&case.name, None, c.radius, RADIUS_MM, Quantity::Length)?;
+    let mut rec = Recorder::in_context(&case.name, mu, ctx);
+    let r = mu.to_mm(c.radius);
+    let o = DVec2::ZERO;
+    let centre = rec.draw(
+        "the journal's centre",
+        Item::Joint {
+            at: o,
+            fixed: false,
+        },
+        Role::Given,
+        &[],
+    );
+    rec.label(centre, "O", o, DVec2::new(1.0, 1.0).normalize());
+    rec.draw(
+        "the journal",
+        Item::Circle(Circle {
+            center: o,
+            radius: r,
+        }),
+        Role::Given,
+        &[],
+    );
+    rec.draw(
+        "the bearing",
+        Item::Arc(Arc {
+            center: o,
+            radius: r * 1.3,
+            start: PI * 1.1,
+            sweep: PI * 0.8,
+        }),
+        Role::Given,
+        &[],
+    );
+    arrow(
+        &mut rec,
+        "the load",
+        (o, o - DVec2::Y * (r * 0.75)),
+        Role::Given,
+        "Q",
+        DVec2::X,
+    );
+    // ω: an arc with an arrow in the sense of rotation.
+    let s = c.sense.signum();
+    let w = Arc {
+        center: o,
+        radius: r * 0.45,
+        start: PI * 0.25,
+        sweep: PI * 0.5 * s,
+    };
+    let id = rec.draw("ω", Item::Arc(w), Role::Dimension, &[]);
+    let tip = w.end();
+    let tangent = (tip - o).perp() * s;
+    rec.draw(
+        "the sense of ω",
+        Item::Vector {
+            from: tip - tangent.normalize_or(DVec2::X) * 3.0,
+            to: tip,
+        },
+        Role::Dimension,
+        &[],
+    );
+    rec.label(
+        id,
+        "ω",
+        w.eval(0.5),
+        (w.eval(0.5) - o).normalize_or(DVec2::Y),
+    );
+    // The contact A₁: the radius at φ from the load's line, on the side the shaft climbs.
+    let toward = turned(-DVec2::Y, -s * twin.phi);
+    let radius_line = Line {
+        point: o,
+        direction: toward,
+    };
+    let (a1, _, a1_id) = rec
+        .meet_line_circle(
+            "A₁",
+            ("the radius at φ", &radius_line),
+            Compass {
+                name: "O",
+                center: o,
+                radius: r,
+            },
+            Pick::Forward,
+        )
+        .map_err(wrap)?;
+    rec.label(a1_id, "A_{1}", a1, toward);
+    thin_line(&mut rec, "the normal at A₁", o, a1);
+    let rho_mm = mu.to_mm(twin.rho);
+    let fc = rec.draw(
+        "the friction circle",
+        Item::Circle(Circle {
+            center: o,
+            radius: rho_mm,
+        }),
+        Role::Construction,
+        &[],
+    );
+    rec.label(
+        fc,
+        "ρ",
+        o + DVec2::new(0.0, rho_mm),
+        DVec2::new(-1.0, 1.0).normalize(),
+    );
+    // R balances Q: through A₁, upward, tangent to the friction circle.
+    let top = a1 + DVec2::Y * (r * 1.9);
+    arrow(
+        &mut rec,
+        "the total reaction R",
+        (a1, top),
+        Role::Result,
+        "R",
+        DVec2::X * -s,
+    );
+    angle_mark(&mut rec, "φ", a1, r * 0.5, (o - a1, DVec2::Y), "φ");
+    let foot = DVec2::new(a1.x, o.y);
+    let dim = rec.draw(
+        "the arm of R about O",
+        Item::Dimension {
+            from: o,
+            to: foot,
+            offset: 0.0,
+        },
+        Role::Dimension,
+        &[],
+    );
+    rec.label(dim, "ρ", (o + foot) / 2.0, DVec2::Y);
+    let arm = rec.measure(o, foot).value;
+    let readings = vec![
+        reading(
+            "ρ",
+            (Symbol::Length, subject("rho", &case.name)),
+            arm,
+            twin.rho,
+            None,
+        ),
+        reading(
+            "M_{f}",
+            (Symbol::Moment, subject("f", &case.name)),
+            c.load * arm,
+            twin.moment,
+            None,
+        ),
+    ];
+    let notes = vec![format!(
+        "{}: the friction circle drawn and read is ρ = r·sin φ = {:.6} m; the textbook's \
+         ρ = f·r = {:.6} m (M_f = f·Q·r = {:.4} N·m) is {:.3}% larger",
+        case.name,
+        twin.rho,
+        twin.rho_textbook,
+        twin.moment_textbook,
+        (twin.rho_textbook / twin.rho - 1.0) * 100.0
+    )];
+    Ok(Solved {
+        case: case.clone(),
+        drawings: vec![Drawing {
+            kind: DrawingKind::Scheme,
+            figure: rec.finish(),
+            scaled: true,
+            also: Vec::new(),
+        }],
+        readings,
+        notes,
+    })
+}

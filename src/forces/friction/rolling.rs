@@ -1,0 +1,336 @@
+//! Rolling friction, worked example W3 of seed 001 (§13, Fig. 58–60): a load Q on two
+//! rollers of weight G and diameter d. The normal reactions are shifted forward by the
+//! coefficients of rolling friction k₁ (load/rollers) and k₂ (rollers/plane); the moments
+//! about the rollers' contact with the plane give `P·d = Q·k₁ + (Q + 2G)·k₂`. Rolling is pure
+//! when `k/h < f` at each contact. Without rollers the load slides: `P = Q·f₂`.
+//!
+//! The seed writes the plane's reaction as `R_n1`; it is `R_n2 = Q + 2G` (an erratum).
+//!
+//! The moment balance is drawn by the intercept theorem: on the lever of height d (at μ_l)
+//! the arm k is laid across at a magnified μ_k, the load down the lever at μ_F; the parallel
+//! through the load's end cuts off the force `L·k/d` at μ_P = μ_F·μ_k/μ_l.
+
+use super::draw::{arrow, thin_line};
+use super::incline::{incline_twin, polygon};
+use super::{
+    choose_scale, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Incline,
+    Motion, Rolling, Solved,
+};
+use crate::check::Symbol;
+use crate::construct::{ConstructionError, Context, Item, Recorder, Role};
+use crate::geom::{Circle, DVec2, Line, Segment, Side};
+use crate::scale::{Quantity, Scale};
+
+/// Preferred drawn diameter of a roller in the scheme, mm.
+const ROLLER_MM: f64 = 30.0;
+/// Preferred drawn lever (the diameter d) of the moment balance, mm.
+const LEVER_MM: f64 = 60.0;
+/// Preferred drawn arm k of the moment balance, mm.
+const ARM_MM: f64 = 40.0;
+
+/// The closed form of W3.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RollingTwin {
+    /// The reaction of the load on a roller's top, `R_n1 = Q`, N.
+    pub r_n1: f64,
+    /// The reaction of the plane, `R_n2 = Q + 2G`, N.
+    pub r_n2: f64,
+    /// `k₁/h` with h = d.
+    pub ratio1: f64,
+    /// `k₂/h`.
+    pub ratio2: f64,
+    /// Pure rolling at both contacts: `k₁/h < f₁` and `k₂/h < f₂`.
+    pub pure: bool,
+    /// The force to move the load on rollers, `(Q·k₁ + (Q + 2G)·k₂)/d`, N.
+    pub p: f64,
+    /// The force to slide it without rollers, `Q·f₂`, N.
+    pub p_sliding: f64,
+}
+
+/// The twin of W3.
+pub fn rolling_twin(c: &Rolling) -> RollingTwin {
+    let r_n2 = c.load + 2.0 * c.roller_weight;
+    let ratio1 = c.k1 / c.diameter;
+    let ratio2 = c.k2 / c.diameter;
+    RollingTwin {
+        r_n1: c.load,
+        r_n2,
+        ratio1,
+        ratio2,
+        pure: ratio1 < c.f1 && ratio2 < c.f2,
+        p: (c.load * c.k1 + r_n2 * c.k2) / c.diameter,
+        p_sliding: c.load * c.f2,
+    }
+}
+
+/// The scheme at μ_l: the plane, two rollers, the load on them, the loads and the normal
+/// reactions of the right roller shifted by k (the shifts exaggerated: they are labelled,
+/// not drawn to scale).
+fn scheme(case: &FrictionCase, c: &Rolling, ctx: &Context) -> Result<Drawing, FrictionError> {
+    let mu = choose_scale(&case.name, None, c.diameter, ROLLER_MM, Quantity::Length)?;
+    let mut rec = Recorder::in_context(&case.name, mu, ctx);
+    let d = mu.to_mm(c.diameter);
+    let half = 1.9 * d;
+    rec.draw(
+        "the plane",
+        Item::Guide {
+            segment: Segment::new(DVec2::new(-half - 8.0, 0.0), DVec2::new(half + 8.0, 0.0)),
+            hatch: Side::Right,
+        },
+        Role::Given,
+        &[],
+    );
+    let centres = [DVec2::new(-d, d / 2.0), DVec2::new(d, d / 2.0)];
+    for (k, &at) in centres.iter().enumerate() {
+        rec.draw(
+            format!("roller {}", k + 1),
+            Item::Circle(Circle {
+                center: at,
+                radius: d / 2.0,
+            }),
+            Role::Given,
+            &[],
+        );
+        let g = format!("G, roller {}", k + 1);
+        arrow(
+            &mut rec,
+            &g,
+            (at, at - DVec2::Y * (d * 0.35)),
+            Role::Given,
+            "G",
+            -DVec2::X,
+        );
+    }
+    let slab = d * 0.35;
+    rec.draw(
+        "the load",
+        Item::Polyline {
+            points: vec![
+                DVec2::new(-half, d),
+                DVec2::new(half, d),
+                DVec2::new(half, d + slab),
+                DVec2::new(-half, d + slab),
+            ],
+            closed: true,
+        },
+        Role::Given,
+        &[],
+    );
+    let top = DVec2::new(0.0, d + slab);
+    arrow(
+        &mut rec,
+        "the load Q",
+        (top + DVec2::Y * 16.0, top),
+        Role::Given,
+        "Q",
+        DVec2::X,
+    );
+    let mid = DVec2::new(-half, d + slab / 2.0);
+    arrow(
+        &mut rec,
+        "the force P",
+        (mid - DVec2::X * 18.0, mid),
+        Role::Given,
+        "P",
+        DVec2::Y,
+    );
+    // The right roller's reactions, the shifts exaggerated to 3 mm.
+    let shift = 3.0;
+    let c2 = centres[1];
+    let n1_at = DVec2::new(c2.x - shift, d);
+    arrow(
+        &mut rec,
+        "R_n1",
+        (n1_at + DVec2::Y * 12.0, n1_at),
+        Role::Result,
+        "R_{n1}",
+        -DVec2::X,
+    );
+    let n2_at = DVec2::new(c2.x + shift, 0.0);
+    arrow(
+        &mut rec,
+        "R_n2",
+        (n2_at - DVec2::Y * 12.0, n2_at),
+        Role::Result,
+        "R_{n2}",
+        DVec2::X,
+    );
+    for (from, to, name, toward) in [
+        (DVec2::new(c2.x, d), n1_at, "k_{1}", DVec2::new(-1.0, 1.0)),
+        (DVec2::new(c2.x, 0.0), n2_at, "k_{2}", DVec2::new(1.0, -1.0)),
+    ] {
+        let id = rec.draw(
+            format!("the shift {name} (not to scale)"),
+            Item::Segment(Segment::new(from, to)),
+            Role::Dimension,
+            &[],
+        );
+        rec.label(id, name, (from + to) / 2.0, toward.normalize());
+    }
+    let v_at = DVec2::new(half - 14.0, d + slab + 5.0);
+    arrow(
+        &mut rec,
+        "v",
+        (v_at, v_at + DVec2::X * 12.0),
+        Role::Dimension,
+        "v",
+        DVec2::Y,
+    );
+    Ok(Drawing {
+        kind: DrawingKind::Scheme,
+        figure: rec.finish(),
+        scaled: true,
+        also: Vec::new(),
+    })
+}
+
+/// One term `L·k/d` of the moment balance by the intercept theorem on the lever AB; `side`
+/// +1 lays k to the right, −1 to the left. Returns the force read.
+fn term(
+    rec: &mut Recorder,
+    (lever_mm, q_mm, k_mm): (f64, f64, f64),
+    side: f64,
+    names: (&str, &str),
+) -> Result<f64, ConstructionError> {
+    let b = DVec2::new(0.0, lever_mm);
+    let kc = DVec2::new(side * k_mm, 0.0);
+    let id = rec.draw(
+        format!("the arm {} at μ_k", names.0),
+        Item::Segment(Segment::new(DVec2::ZERO, kc)),
+        Role::Given,
+        &[],
+    );
+    rec.label(id, names.0, kc / 2.0, -DVec2::Y);
+    thin_line(rec, &format!("B to the end of {}", names.0), b, kc);
+    let dpt = b - DVec2::Y * q_mm;
+    let hline = Line {
+        point: dpt,
+        direction: DVec2::X * side,
+    };
+    let bc = Line {
+        point: b,
+        direction: (kc - b).normalize_or(DVec2::X),
+    };
+    let (e, _, _) = rec.meet_lines(
+        &format!("the parallel to {}", names.0),
+        ("the parallel", &hline),
+        ("B–k", &bc),
+    )?;
+    arrow(rec, names.1, (dpt, e), Role::Result, names.1, DVec2::Y);
+    Ok(rec.measure(dpt, e).value)
+}
+
+/// Construct W3 and read it.
+pub(super) fn solve(
+    case: &FrictionCase,
+    c: &Rolling,
+    ctx: &Context,
+    wrap: &dyn Fn(ConstructionError) -> FrictionError,
+) -> Result<Solved, FrictionError> {
+    let twin = rolling_twin(c);
+    let scheme = scheme(case, c, ctx)?;
+    // The moment balance: lever d at μ_l, arms at μ_k, loads at μ_F.
+    let name = &case.name;
+    let mu_l = choose_scale(name, None, c.diameter, LEVER_MM, Quantity::Length)?;
+    let lever_mm = mu_l.to_mm(c.diameter);
+    let mu_k = choose_scale(name, None, c.k1.max(c.k2), ARM_MM, Quantity::Length)?;
+    let mu_f = choose_scale(name, case.scale_f, twin.r_n2, lever_mm, Quantity::Force)?;
+    let mu_p = mu_f.value() * mu_k.value() / mu_l.value();
+    let mu_p = Scale::new(mu_p, Quantity::Force).ok_or(FrictionError::NoScale {
+        case: name.clone(),
+        value: mu_p,
+        unit: "N",
+    })?;
+    let mut rec = Recorder::in_context(name, mu_p, ctx);
+    let lever = rec.draw(
+        "the lever AB = d at μ_l",
+        Item::Segment(Segment::new(DVec2::ZERO, DVec2::new(0.0, lever_mm))),
+        Role::Given,
+        &[],
+    );
+    rec.label(lever, "d", DVec2::new(0.0, lever_mm / 2.0), -DVec2::X);
+    let b = rec.draw(
+        "B",
+        Item::Point(DVec2::new(0.0, lever_mm)),
+        Role::Given,
+        &[],
+    );
+    rec.label(b, "B", DVec2::new(0.0, lever_mm), DVec2::Y);
+    let a = rec.draw("A", Item::Point(DVec2::ZERO), Role::Given, &[]);
+    rec.label(a, "A", DVec2::ZERO, -DVec2::Y);
+    let p1 = term(
+        &mut rec,
+        (lever_mm, mu_f.to_mm(twin.r_n1), mu_k.to_mm(c.k1)),
+        -1.0,
+        ("k_{1}", "P_{1}"),
+    )
+    .map_err(wrap)?;
+    let p2 = term(
+        &mut rec,
+        (lever_mm, mu_f.to_mm(twin.r_n2), mu_k.to_mm(c.k2)),
+        1.0,
+        ("k_{2}", "P_{2}"),
+    )
+    .map_err(wrap)?;
+    let balance = Drawing {
+        kind: DrawingKind::Balance,
+        figure: rec.finish(),
+        scaled: true,
+        also: vec![mu_f, mu_k, mu_l],
+    };
+    // Without rollers: the load slides on the plane, a level incline with f₂.
+    let plane = Incline {
+        load: c.load,
+        f: c.f2,
+        alpha: 0.0,
+        beta: 0.0,
+        motion: Motion::Up,
+    };
+    let (mut sliding, slid, _) = polygon(case, &plane, &incline_twin(&plane), ctx, wrap)?;
+    sliding.kind = DrawingKind::Sliding;
+    let readings = vec![
+        reading(
+            "P",
+            (Symbol::Force, subject("P", name)),
+            p1 + p2,
+            twin.p,
+            None,
+        ),
+        reading(
+            "P_{ск}",
+            (Symbol::Force, subject("Pslide", name)),
+            slid.p,
+            twin.p_sliding,
+            Some(slid.crossing_deg),
+        ),
+    ];
+    let verdict = |ratio: f64, f: f64| if ratio < f { "<" } else { "≥" };
+    let notes = vec![
+        format!(
+            "{name}: k₁/h = {:.3e} {} f₁ = {}, k₂/h = {:.3e} {} f₂ = {}: {}",
+            twin.ratio1,
+            verdict(twin.ratio1, c.f1),
+            c.f1,
+            twin.ratio2,
+            verdict(twin.ratio2, c.f2),
+            c.f2,
+            if twin.pure {
+                "pure rolling"
+            } else {
+                "the rollers slide"
+            }
+        ),
+        format!(
+            "{name}: R_n1 = Q, R_n2 = Q + 2G = {} N (the seed misprints the second as R_n1); \
+             without rollers P = Q·f₂ is {:.1} times larger",
+            twin.r_n2,
+            twin.p_sliding / twin.p
+        ),
+    ];
+    Ok(Solved {
+        case: case.clone(),
+        drawings: vec![scheme, balance, sliding],
+        readings,
+        notes,
+    })
+}

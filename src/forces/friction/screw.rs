@@ -1,0 +1,175 @@
+//! The screw pair (seed 001 §11): the nut element is a body on the unrolled thread, an
+//! inclined plane of the lead angle λ, pushed by the tangential force P at the mean radius
+//! r₁; a triangular or trapezoidal thread acts as a V-groove slider with the reduced
+//! coefficient f′ = f/cos(δ/2). The wrench moment is M = P·r₁.
+
+use super::draw::angle_mark;
+use super::incline::{body_on_plane, eta_read, feasible, incline_twin, polygon, readings};
+use super::{
+    choose_scale, friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase,
+    FrictionError, Incline, Motion, Screw, Solved,
+};
+use crate::check::Symbol;
+use crate::construct::{ConstructionError, Context, Item, Recorder, Role};
+use crate::geom::{DVec2, Segment, Side};
+use crate::scale::Quantity;
+use std::f64::consts::TAU;
+
+/// Preferred drawn length of the unrolled turn 2πr₁, mm.
+const UNROLLED_MM: f64 = 80.0;
+
+/// The closed form of a screw pair.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ScrewTwin {
+    /// The reduced coefficient f′ = f/cos(δ/2) (f itself for a rectangular thread).
+    pub f_reduced: f64,
+    /// The reduced friction angle φ′ = arctg f′, rad.
+    pub phi_reduced: f64,
+    /// The tangential force at r₁, `Q·tg(λ ± φ′)`, N (negative: the load does not lower
+    /// itself).
+    pub p: f64,
+    /// The wrench moment `M = Q·r₁·tg(λ ± φ′)`, N·m.
+    pub moment: f64,
+    /// The efficiency: `tg λ / tg(λ + φ′)` screwing, `tg(λ − φ′)/tg λ` unscrewing.
+    pub eta: f64,
+    /// Self-locking: λ ≤ φ′ (the load cannot turn the screw back).
+    pub self_locking: bool,
+}
+
+/// The screw as an inclined plane: α = λ, P horizontal, f′ for the friction.
+pub(super) fn as_incline(c: &Screw) -> Incline {
+    Incline {
+        load: c.load,
+        f: c.f / (c.profile / 2.0).cos(),
+        alpha: c.lead,
+        beta: 0.0,
+        motion: c.motion,
+    }
+}
+
+/// The twin of a screw pair.
+pub fn screw_twin(c: &Screw) -> ScrewTwin {
+    let f_reduced = c.f / (c.profile / 2.0).cos();
+    let phi = friction_angle(f_reduced);
+    let s = c.motion.sign();
+    let p = c.load * (c.lead + s * phi).tan();
+    let eta = match c.motion {
+        Motion::Up => c.lead.tan() / (c.lead + phi).tan(),
+        Motion::Down => (c.lead - phi).tan() / c.lead.tan(),
+    };
+    ScrewTwin {
+        f_reduced,
+        phi_reduced: phi,
+        p,
+        moment: p * c.radius,
+        eta,
+        self_locking: c.lead <= phi,
+    }
+}
+
+/// The unrolled thread at μ_l: one turn 2πr₁ along the base, the lead over it, the nut
+/// element on the helix with its loads, friction cone and reaction.
+fn scheme(case: &FrictionCase, c: &Screw, ctx: &Context) -> Result<(Drawing, f64), FrictionError> {
+    let turn = TAU * c.radius;
+    let mu = choose_scale(&case.name, None, turn, UNROLLED_MM, Quantity::Length)?;
+    let mut rec = Recorder::in_context(&case.name, mu, ctx);
+    let base = mu.to_mm(turn);
+    let start = DVec2::new(-base / 2.0, 0.0);
+    let end = DVec2::new(base / 2.0, base * c.lead.tan());
+    let corner = DVec2::new(base / 2.0, 0.0);
+    rec.draw(
+        "the unrolled helix at the mean radius",
+        Item::Guide {
+            segment: Segment::new(start, end),
+            hatch: Side::Right,
+        },
+        Role::Given,
+        &[],
+    );
+    let id = rec.draw(
+        "one turn unrolled: πd₁",
+        Item::Dimension {
+            from: start,
+            to: corner,
+            offset: -6.0,
+        },
+        Role::Dimension,
+        &[],
+    );
+    rec.label(
+        id,
+        "πd_{1}",
+        (start + corner) / 2.0 - DVec2::Y * 6.0,
+        -DVec2::Y,
+    );
+    let lead = rec.draw(
+        "the lead",
+        Item::Segment(Segment::new(corner, end)),
+        Role::Construction,
+        &[],
+    );
+    rec.label(lead, "p_{h}", (corner + end) / 2.0, DVec2::X);
+    angle_mark(&mut rec, "λ", start, 18.0, (DVec2::X, end - start), "λ");
+    let phi_read = body_on_plane(&mut rec, &as_incline(c), (start + end) / 2.0);
+    Ok((
+        Drawing {
+            kind: DrawingKind::Scheme,
+            figure: rec.finish(),
+            scaled: true,
+            also: Vec::new(),
+        },
+        phi_read,
+    ))
+}
+
+/// Construct the case and read it.
+pub(super) fn solve(
+    case: &FrictionCase,
+    c: &Screw,
+    ctx: &Context,
+    wrap: &dyn Fn(ConstructionError) -> FrictionError,
+) -> Result<Solved, FrictionError> {
+    let twin = screw_twin(c);
+    let plane = as_incline(c);
+    let plane_twin = incline_twin(&plane);
+    feasible(&case.name, &plane, twin.phi_reduced)?;
+    let (scheme, phi_read) = scheme(case, c, ctx)?;
+    let (poly, with, without) = polygon(case, &plane, &plane_twin, ctx, wrap)?;
+    let eta = eta_read(c.motion, with.p, without.map(|t| t.p));
+    let cond = Some(with.crossing_deg);
+    let mut out = vec![reading(
+        "φ′",
+        (Symbol::Angle, subject("phi", &case.name)),
+        phi_read,
+        twin.phi_reduced,
+        None,
+    )];
+    out.extend(readings(&case.name, &plane_twin, &with, eta));
+    out.push(reading(
+        "M",
+        (Symbol::Moment, subject("", &case.name)),
+        with.p * c.radius,
+        twin.moment,
+        cond,
+    ));
+    let mut notes = vec![format!(
+        "{}: screw as an inclined plane of the lead angle, P = Q·tg(λ {} φ′), f′ = f/cos(δ/2); \
+         the seed's substitution cos(λ + π/2 + φ) = cos(λ + φ) is false as written",
+        case.name,
+        if c.motion == Motion::Up { "+" } else { "−" }
+    )];
+    if twin.self_locking {
+        notes.push(format!(
+            "{}: self-locking: λ = {:.2}° ≤ φ′ = {:.2}°",
+            case.name,
+            c.lead.to_degrees(),
+            twin.phi_reduced.to_degrees()
+        ));
+    }
+    Ok(Solved {
+        case: case.clone(),
+        drawings: vec![scheme, poly],
+        readings: out,
+        notes,
+    })
+}

@@ -1,0 +1,321 @@
+//! Tests of the friction cases: the twins against hand-computed values, the constructions
+//! against the twins, and the properties of friction.
+
+use super::*;
+use crate::construct::Drafting;
+use proptest::prelude::*;
+
+fn ctx(drafting: f64) -> Context {
+    let d = Drafting::new(drafting).expect("a valid drafting resolution");
+    Context::for_model_size(300.0, d).expect("valid tolerances")
+}
+
+fn case(name: &str, kind: CaseKind) -> FrictionCase {
+    FrictionCase {
+        name: name.into(),
+        kind,
+        scale_f: None,
+    }
+}
+
+fn incline(alpha_deg: f64, beta_deg: f64, f: f64, motion: Motion) -> Incline {
+    Incline {
+        load: 1000.0,
+        f,
+        alpha: alpha_deg.to_radians(),
+        beta: beta_deg.to_radians(),
+        motion,
+    }
+}
+
+fn w3() -> Rolling {
+    Rolling {
+        load: 10_000.0,
+        roller_weight: 50.0,
+        diameter: 0.1,
+        k1: 0.05e-3,
+        k2: 0.1e-3,
+        f1: 0.1,
+        f2: 0.15,
+    }
+}
+
+fn screw(motion: Motion) -> Screw {
+    Screw {
+        load: 10_000.0,
+        f: 0.15,
+        lead: 2.5f64.to_radians(),
+        profile: 60f64.to_radians(),
+        radius: 0.009,
+        motion,
+    }
+}
+
+fn journal(sense: f64) -> Journal {
+    Journal {
+        load: 5000.0,
+        f: 0.1,
+        radius: 0.05,
+        sense,
+    }
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * b.abs().max(1e-300)
+}
+
+/// Every reading of a solved case agrees with its twin to `rel`.
+fn agrees(s: &Solved, rel: f64) {
+    for r in &s.readings {
+        assert!(
+            close(r.row.graphical, r.row.analytic, rel),
+            "{}: {} vs {}",
+            r.row.quantity(),
+            r.row.graphical,
+            r.row.analytic
+        );
+    }
+}
+
+#[test]
+fn incline_twin_matches_hand_values() {
+    // α = 20°, f = 0.15 (φ = 8.5308°), P horizontal: P = Q·tg(α ± φ).
+    let up = incline_twin(&incline(20.0, 0.0, 0.15, Motion::Up));
+    assert!(close(up.p, 543.651_160_291_776, 1e-12), "{}", up.p);
+    assert!(close(up.eta, 0.669_492_242_177_614, 1e-12), "{}", up.eta);
+    let down = incline_twin(&incline(20.0, 0.0, 0.15, Motion::Down));
+    assert!(close(down.p, 202.893_172_914_687, 1e-12), "{}", down.p);
+    assert!(!down.self_braking);
+    // P raised by β′ = 15°: Q·sin(α + φ)/cos(α + φ − β′).
+    let raised = incline_twin(&incline(20.0, 15.0, 0.15, Motion::Up));
+    assert!(close(raised.p, 491.265_948_997_461, 1e-12), "{}", raised.p);
+    // α ≤ φ down the plane: self-braking, P pushes down.
+    let braking = incline_twin(&incline(5.0, 0.0, 0.15, Motion::Down));
+    assert!(braking.self_braking && braking.p < 0.0 && braking.eta < 0.0);
+}
+
+#[test]
+fn wedge_twin_matches_hand_values() {
+    // β = 60°: sin(β/2) = 1/2, N = Q, P = 2fQ, f′ = 2f.
+    let t = wedge_twin(&Wedge {
+        load: 1000.0,
+        f: 0.15,
+        groove: 60f64.to_radians(),
+    });
+    assert!(close(t.n, 1000.0, 1e-12) && close(t.p, 300.0, 1e-12));
+    assert!(close(t.f_reduced, 0.3, 1e-12));
+    assert!(close(t.phi_reduced, 0.3f64.atan(), 1e-15));
+}
+
+#[test]
+fn screw_twin_matches_hand_values() {
+    // Metric thread δ = 60°: f′ = 0.15/cos 30° = 0.173205, φ′ = 9.8264°; λ = 2.5°, r₁ = 9 mm.
+    let up = screw_twin(&screw(Motion::Up));
+    assert!(close(up.f_reduced, 0.173_205_080_756_888, 1e-12));
+    assert!(
+        close(up.moment, 19.666_667_311_899_1, 1e-12),
+        "{}",
+        up.moment
+    );
+    assert!(close(up.eta, 0.199_804_308_449_790, 1e-12), "{}", up.eta);
+    assert!(up.self_locking);
+    let down = screw_twin(&screw(Motion::Down));
+    assert!(
+        close(down.moment, -11.571_465_545_525_6, 1e-12),
+        "{}",
+        down.moment
+    );
+    // A rectangular thread: f′ = f, M = Q·r₁·tg(λ + φ).
+    let rect = screw_twin(&Screw {
+        profile: 0.0,
+        ..screw(Motion::Up)
+    });
+    let m = 10_000.0 * 0.009 * (2.5f64.to_radians() + 0.15f64.atan()).tan();
+    assert!(close(rect.moment, m, 1e-12));
+}
+
+#[test]
+fn journal_twin_reports_both_radii() {
+    let t = journal_twin(&journal(1.0));
+    assert!(close(t.rho, 0.05 * 0.1f64.atan().sin(), 1e-15));
+    assert!(close(t.rho_textbook, 0.005, 1e-15));
+    assert!(close(t.moment, 24.875_929_755_249_7, 1e-12));
+    assert!(close(t.moment_textbook, 25.0, 1e-12));
+}
+
+#[test]
+fn w3_is_exactly_the_seeds_numbers() {
+    let t = rolling_twin(&w3());
+    assert!(close(t.p, 15.1, 1e-12), "{}", t.p);
+    assert!(close(t.p_sliding, 1500.0, 1e-12));
+    assert!(close(t.ratio1, 5e-4, 1e-12) && close(t.ratio2, 1e-3, 1e-12));
+    assert!(t.pure);
+    assert!(close(t.r_n2, 10_100.0, 1e-12));
+}
+
+#[test]
+fn every_construction_equals_its_twin_at_drafting_zero() {
+    let cases = [
+        case(
+            "up",
+            CaseKind::Incline(incline(20.0, 0.0, 0.15, Motion::Up)),
+        ),
+        case(
+            "down",
+            CaseKind::Incline(incline(20.0, 10.0, 0.15, Motion::Down)),
+        ),
+        case(
+            "wedge",
+            CaseKind::Wedge(Wedge {
+                load: 1000.0,
+                f: 0.15,
+                groove: 60f64.to_radians(),
+            }),
+        ),
+        case("m20", CaseKind::Screw(screw(Motion::Up))),
+        case("m20down", CaseKind::Screw(screw(Motion::Down))),
+        case("shaft", CaseKind::Journal(journal(1.0))),
+        case("shaftcw", CaseKind::Journal(journal(-1.0))),
+        case("w3", CaseKind::Rolling(w3())),
+    ];
+    for c in &cases {
+        let s = solve(c, &ctx(0.0)).unwrap_or_else(|e| panic!("{e}"));
+        agrees(&s, 1e-9);
+        assert!(!s.drawings.is_empty());
+    }
+}
+
+#[test]
+fn w3_read_at_half_a_millimetre_shows_a_percent_level_error() {
+    let s =
+        solve(&case("w3", CaseKind::Rolling(w3())), &ctx(0.5)).unwrap_or_else(|e| panic!("{e}"));
+    let p = &s.readings[0].row;
+    let rel = (p.graphical - p.analytic).abs() / p.analytic;
+    assert!(rel > 0.0 && rel < 0.05, "{rel}");
+    assert!(s.notes.iter().any(|n| n.contains("R_n1")));
+}
+
+#[test]
+fn the_journals_reaction_is_the_helpers_tangent() {
+    for sense in [1.0, -1.0] {
+        let c = journal(sense);
+        let t = journal_twin(&c);
+        let line = friction_circle_tangent(DVec2::ZERO, DVec2::Y, sense, t.rho).expect("a line");
+        // A₁ = r·(∓sin φ, −cos φ) lies on the line.
+        let a1 = DVec2::new(-sense * t.phi.sin(), -t.phi.cos()) * c.radius;
+        assert!(line.signed_distance(a1).abs() < 1e-15);
+    }
+}
+
+#[test]
+fn an_impossible_push_is_refused_with_its_numbers() {
+    let c = case(
+        "steep",
+        CaseKind::Incline(incline(80.0, -5.0, 0.3, Motion::Up)),
+    );
+    let e = solve(&c, &ctx(0.0)).unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.contains("steep") && msg.contains("cannot move"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn tilt_reaction_refuses_bad_input_and_keeps_the_normal_at_rest() {
+    assert!(tilt_reaction(DVec2::ZERO, DVec2::X, 0.1).is_none());
+    assert!(tilt_reaction(DVec2::Y, DVec2::X, -0.1).is_none());
+    assert!(tilt_reaction(DVec2::Y, DVec2::X, f64::NAN).is_none());
+    assert_eq!(
+        tilt_reaction(DVec2::Y * 3.0, DVec2::Y, 0.2),
+        Some(DVec2::Y * 3.0)
+    );
+    assert!(friction_circle_tangent(DVec2::ZERO, DVec2::ZERO, 1.0, 1.0).is_none());
+    assert!(friction_circle_tangent(DVec2::ZERO, DVec2::X, 1.0, -1.0).is_none());
+    let through = friction_circle_tangent(DVec2::ONE, DVec2::X, 0.0, 1.0).expect("a line");
+    assert!(through.signed_distance(DVec2::ONE).abs() < 1e-15);
+}
+
+proptest! {
+    /// The total reaction turns from the normal by exactly φ = arctg f, against the motion.
+    #[test]
+    fn reactions_turn_by_exactly_the_friction_angle(
+        n_angle in -3.2f64..3.2, n_len in 0.1f64..1e4, v_angle in -3.2f64..3.2,
+        v_len in 1e-3f64..1e3, f in 0.01f64..1.5,
+    ) {
+        let normal = DVec2::from_angle(n_angle) * n_len;
+        let velocity = DVec2::from_angle(v_angle) * v_len;
+        let tangential = velocity - normal.normalize() * velocity.dot(normal.normalize());
+        prop_assume!(tangential.length() > 1e-6 * v_len);
+        let r = tilt_reaction(normal, velocity, f).expect("a reaction");
+        let angle = normal.angle_to(r).abs();
+        prop_assert!((angle - f.atan()).abs() < 1e-12, "{} vs {}", angle, f.atan());
+        prop_assert!(r.dot(tangential) < 0.0);
+        prop_assert!((r.dot(normal.normalize()) - n_len).abs() < 1e-9 * n_len);
+    }
+
+    /// The reaction line of a revolute pair is tangent to the friction circle and its moment
+    /// opposes the relative rotation.
+    #[test]
+    fn the_friction_circle_tangent_opposes_the_rotation(
+        cx in -1e3f64..1e3, cy in -1e3f64..1e3, d_angle in -3.2f64..3.2,
+        omega in prop_oneof![-50.0f64..-0.01, 0.01f64..50.0], rho in 1e-4f64..10.0,
+    ) {
+        let centre = DVec2::new(cx, cy);
+        let d = DVec2::from_angle(d_angle);
+        let line = friction_circle_tangent(centre, d, omega, rho).expect("a line");
+        prop_assert!((line.signed_distance(centre).abs() - rho).abs() < 1e-9 * (1.0 + cx.abs() + cy.abs()));
+        let moment = (line.point - centre).perp_dot(d);
+        prop_assert!(moment * omega < 0.0);
+    }
+
+    /// Friction lowers the efficiency of raising a load: η < 1, and less as f grows.
+    #[test]
+    fn friction_reduces_efficiency(
+        alpha in 1.0f64..60.0, beta in -20.0f64..30.0, f in 0.01f64..0.6, df in 0.001f64..0.2,
+    ) {
+        let a = incline(alpha, beta, f, Motion::Up);
+        let b = incline(alpha, beta, f + df, Motion::Up);
+        prop_assume!(feasible_up(&b));
+        let (ea, eb) = (incline_twin(&a).eta, incline_twin(&b).eta);
+        prop_assert!(ea < 1.0 && ea > 0.0);
+        prop_assert!(eb < ea, "η({}) = {} ≥ η({}) = {}", f + df, eb, f, ea);
+        let s = |f| screw_twin(&Screw { f, lead: alpha.min(40.0).to_radians(), ..screw(Motion::Up) }).eta;
+        prop_assert!(s(f) < 1.0 && s(f + df) < s(f));
+    }
+
+    /// The constructions equal their twins at drafting 0 over random data.
+    #[test]
+    fn constructions_equal_twins(
+        load in 1.0f64..1e6, f in 0.02f64..0.8, alpha in 0.0f64..60.0, beta in -30.0f64..30.0,
+        up in any::<bool>(), groove in 10.0f64..170.0, lead in 1.0f64..30.0,
+        profile in 0.0f64..100.0, radius in 1e-3f64..1.0,
+    ) {
+        let motion = if up { Motion::Up } else { Motion::Down };
+        let plane = Incline { load, ..incline(alpha, beta, f, motion) };
+        let mut kinds = vec![
+            CaseKind::Wedge(Wedge { load, f, groove: groove.to_radians() }),
+            CaseKind::Journal(Journal { load, f, radius, sense: if up { 1.0 } else { -1.0 } }),
+        ];
+        if feasible_up(&plane) && (up || alpha > 0.0) {
+            kinds.push(CaseKind::Incline(plane));
+        }
+        let sc = Screw { load, f, lead: lead.to_radians(), profile: profile.to_radians(), radius, motion };
+        if feasible_up(&screw::as_incline(&sc)) {
+            kinds.push(CaseKind::Screw(sc));
+        }
+        for kind in kinds {
+            let s = solve(&case("c", kind), &ctx(0.0)).map_err(|e| TestCaseError::fail(e.to_string()))?;
+            for r in &s.readings {
+                let scale = r.row.analytic.abs().max(1e-9 * load);
+                prop_assert!((r.row.graphical - r.row.analytic).abs() <= 1e-9 * scale,
+                    "{}: {} vs {}", r.row.quantity(), r.row.graphical, r.row.analytic);
+            }
+        }
+    }
+}
+
+/// The incline's motion can be drawn (its P and R lines cross at a drawable angle).
+fn feasible_up(c: &Incline) -> bool {
+    incline::feasible("c", c, friction_angle(c.f)).is_ok()
+}
