@@ -189,9 +189,9 @@ fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
         &[
             (Text::Quantity, 26.0),
             (Text::Method, 42.0),
-            (Text::Graphical, 28.0),
-            (Text::Analytic, 30.0),
-            (Text::ErrorPct, 30.0),
+            (Text::Graphical, 32.0),
+            (Text::Analytic, 34.0),
+            (Text::ErrorPct, 36.0),
         ],
         body,
         TABLE_MM,
