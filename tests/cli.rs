@@ -43,6 +43,10 @@ fn render_writes_svg_and_png_and_is_byte_identical() {
     assert_eq!(
         names,
         [
+            "shaper/forces-2.png",
+            "shaper/forces-2.svg",
+            "shaper/forces.png",
+            "shaper/forces.svg",
             "shaper/kinematics.png",
             "shaper/kinematics.svg",
             "shaper/positions.png",

@@ -142,6 +142,7 @@ macro_rules! plates {
 plates! {
     shaper_positions: "shaper" / "positions",
     shaper_kinematics: "shaper" / "kinematics",
+    shaper_forces: "shaper" / "forces",
     slider_crank_positions: "slider-crank" / "positions",
     slider_crank_kinematics: "slider-crank" / "kinematics",
     four_bar_positions: "four-bar" / "positions",

@@ -39,7 +39,11 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
     let s = scene::load(&root().join("constructions/shaper.toml")).expect("shaper");
     let session = Session::new(&s, Drafting::EXACT);
     let all = sheets::build_all(&session, Lang::Ru).expect("plates");
-    assert_eq!(all.len(), 2, "one A1 sheet per plate");
+    assert_eq!(
+        all.len(),
+        4,
+        "one A1 sheet per plate, the force analysis one per position"
+    );
     let text = all
         .iter()
         .flat_map(|(_, p)| texts(p))
@@ -54,6 +58,7 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
         "μ_{φ} = 0,052",
         "H_{1} = 28",
         "H_{2} = 7,5",
+        "μ_{F} = 20 Н/мм",
     ] {
         assert!(text.contains(given), "{given} not on the sheets:\n{text}");
     }
@@ -65,7 +70,63 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
         .iter()
         .map(|(_, p)| (p.title_block.sheet_no, p.title_block.sheets))
         .collect();
-    assert_eq!(numbers, vec![(1, 2), (2, 2)]);
+    assert_eq!(numbers, vec![(1, 4), (2, 4), (3, 4), (4, 4)]);
+}
+
+#[test]
+fn the_force_sheets_take_one_position_each_with_its_table_and_the_balancing_moment() {
+    let s = scene::load(&root().join("constructions/shaper.toml")).expect("shaper");
+    let session = Session::new(&s, Drafting::EXACT);
+    let plates = sheets::build(&session, scene::PlateKind::Forces, Lang::Ru).expect("forces");
+    let names: Vec<&str> = plates.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["forces", "forces-2"]);
+    for (p, label) in plates.iter().zip(["3", "10"]) {
+        let title = &p.title_block.sheet_title;
+        assert!(
+            title.starts_with(&format!("Силовой анализ, положение {label}, φ₁ = ")),
+            "{title}"
+        );
+        let text = texts(p).join("\n");
+        for caption in [
+            "Группа 4–5 (ВПП), μ_{l} = 0,0025 м/мм",
+            "План сил группы 4–5, μ_{F} = 20 Н/мм",
+            "Группа 2–3 (ВПВ)",
+            "План сил группы 2–3",
+            "Ведущее звено 1",
+            "План сил ведущего звена",
+            "Рычаг Жуковского, μ_{v} = 0,05 м/(с·мм)",
+            "M_{у}: по плану сил",
+            "F_{у}: по плану сил",
+        ] {
+            assert!(
+                text.contains(caption),
+                "{caption} not on {}:\n{text}",
+                p.name
+            );
+        }
+        let table = &p.tables[0];
+        let quantities: Vec<&str> = table.rows.iter().map(|r| r[0].as_str()).collect();
+        for q in [
+            "F_{и3}, Н",
+            "M_{и3}, Н·м",
+            "R_{0-3}, Н",
+            "R_{4-5}, Н",
+            "M_{у}, Н·м",
+        ] {
+            assert!(quantities.contains(&q), "{q} not in {quantities:?}");
+        }
+    }
+}
+
+#[test]
+fn a_force_polygon_too_large_at_the_given_scale_names_forces_scale_f() {
+    let text = shaper_text().replace("scale_f = 20.0 ", "scale_f = 0.5 ");
+    let s = scene::parse(&text, &root().join("big.toml")).expect("scene");
+    let session = Session::new(&s, Drafting::EXACT);
+    let err = sheets::build(&session, scene::PlateKind::Forces, Lang::Ru)
+        .expect_err("too large")
+        .to_string();
+    assert!(err.contains("forces.scale_f"), "{err}");
 }
 
 #[test]

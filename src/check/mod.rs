@@ -106,8 +106,8 @@ impl Symbol {
             Symbol::Power => "W",
         }
     }
-    /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{12}`): the
-    /// textbook spelling.
+    /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{1-2}`, `F_{и3}`,
+    /// `M_{у}`): the textbook spelling.
     pub fn markup(self, subject: &str) -> String {
         let letter = match self {
             Symbol::Displacement => "S",
@@ -128,7 +128,16 @@ impl Symbol {
         };
         // A reaction names two links, written apart as the textbooks do: R_{1-2}.
         let sep = if self == Symbol::Reaction { "-" } else { "" };
-        format!("{letter}_{{{}}}", subject.replace('_', sep))
+        let mut subject = subject.replace('_', sep);
+        // Inertia loads and the balancing load in the textbooks' Russian: F_{и3}, M_{у}.
+        if matches!(self, Symbol::Force | Symbol::Moment) {
+            if let Some(link) = subject.strip_prefix("in") {
+                subject = format!("и{link}");
+            } else if subject == "bal" {
+                subject = "у".into();
+            }
+        }
+        format!("{letter}_{{{subject}}}")
     }
 }
 

@@ -127,9 +127,10 @@ pub fn lever(
             let len = rec.measure(b.p[o], b.p[far]).read_mm * mu;
             let e = (b.p[far] - b.p[o]).normalize().perp();
             let f = e * (l.moment / len);
-            let name = l.name.replacen('M', "F", 1);
-            power += moment(&mut rec, turn(vp.images[far]), f, &name);
-            power += moment(&mut rec, turn(vp.images[o]), -f, &name);
+            // The couple's two forces, primed apart from the link's inertia force.
+            let name = |prime: &str| l.name.replacen('M', &format!("F{prime}"), 1);
+            power += moment(&mut rec, turn(vp.images[far]), f, &name("′"));
+            power += moment(&mut rec, turn(vp.images[o]), -f, &name("″"));
         } else {
             let x = if l.shift == DVec2::ZERO {
                 vp.images[l.at]

@@ -26,10 +26,39 @@ use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role}
 use crate::geom::{Circle, DVec2, Line, Segment};
 use crate::linkage::{draw_links, Built, Op, PDyad, Part, Program};
 use crate::scale::Scale;
+use std::f64::consts::{PI, TAU};
 
 /// Length of a load's arrow on a group's drawing, mm (the drawing shows where and which
 /// way; the polygon shows how much).
 const ARROW_MM: f64 = 14.0;
+
+/// The longest piece of a pitch circle drawn about the pitch point, mm: a wheel larger than
+/// its crank shows as an arc through P, not a circle filling the sheet.
+const PITCH_ARC_MM: f64 = 80.0;
+
+/// Half the length of the line of action drawn through the pitch point, mm.
+const LINE_OF_ACTION_MM: f64 = 30.0;
+
+/// A wheel's pitch circle about `c` of radius `r` (mm), whole when small, else the arc of
+/// [`PITCH_ARC_MM`] centred on the direction `at` (radians) to the pitch point.
+fn pitch_circle(rec: &mut Recorder, what: &str, c: DVec2, r: f64, at: f64) {
+    let sweep = PITCH_ARC_MM / r;
+    let item = if sweep >= TAU * 0.5 {
+        Circle::new(c, r).map(Item::Circle)
+    } else {
+        (r > 0.0).then(|| {
+            Item::Arc(crate::geom::Arc {
+                center: c,
+                radius: r,
+                start: at - sweep / 2.0,
+                sweep,
+            })
+        })
+    };
+    if let Some(item) = item {
+        rec.draw(what, item, Role::Axis, &[]);
+    }
+}
 
 /// One group's force analysis as drawn.
 #[derive(Debug, Clone, PartialEq)]
@@ -595,37 +624,31 @@ fn driver(
             let mu = board.mu_l.value();
             let r = g.radius() / mu;
             let (p, d) = line_of_action(o, r, g.towards, g.pressure_angle, board.sense);
-            if let Some(c) = Circle::new(o, r) {
-                sch.rec.draw(
-                    "pitch circle of the wheel",
-                    Item::Circle(c),
-                    Role::Axis,
-                    &[],
-                );
-            }
-            let mate = g.mate_radius().map(|rm| rm / mu);
-            if let Some(c) =
-                mate.and_then(|rm| Circle::new(o + DVec2::from_angle(g.towards) * (r + rm), rm))
-            {
-                sch.rec.draw(
+            let towards = DVec2::from_angle(g.towards);
+            pitch_circle(&mut sch.rec, "pitch circle of the wheel", o, r, g.towards);
+            if let Some(rm) = g.mate_radius().map(|rm| rm / mu) {
+                let c = o + towards * (r + rm);
+                pitch_circle(
+                    &mut sch.rec,
                     "pitch circle of the pinion",
-                    Item::Circle(c),
-                    Role::Axis,
-                    &[],
+                    c,
+                    rm,
+                    g.towards + PI,
                 );
             }
-            let pid = sch.rec.point(
-                "pitch point",
-                p,
-                Role::Given,
-                "P",
-                DVec2::from_angle(g.towards),
+            sch.rec.draw(
+                "line of centres",
+                Item::Segment(Segment::new(o, p)),
+                Role::Axis,
                 &[],
             );
-            let from = p - d * (r * 0.6);
+            let pid = sch
+                .rec
+                .point("pitch point", p, Role::Given, "P", towards, &[]);
+            let half = (r * 0.6).min(LINE_OF_ACTION_MM);
             sch.rec.draw(
                 "line of action at α_w",
-                Item::Segment(Segment::new(from, p + d * (r * 0.6))),
+                Item::Segment(Segment::new(p - d * half, p + d * half)),
                 Role::Axis,
                 &[pid],
             );

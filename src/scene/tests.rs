@@ -86,7 +86,14 @@ fn shaper_loads_in_si_units() {
             continuity: false
         }
     );
-    assert_eq!(s.plates, vec![PlateKind::Positions, PlateKind::Kinematics]);
+    assert_eq!(
+        s.plates,
+        vec![
+            PlateKind::Positions,
+            PlateKind::Kinematics,
+            PlateKind::Forces
+        ]
+    );
 }
 
 #[test]
@@ -458,7 +465,7 @@ fn kinematics_plate_kind_parses() {
     assert_eq!(PlateKind::Kinematics.stem(), "kinematics");
     assert!(PlateKind::ALL.contains(&PlateKind::Kinematics));
     let text = shaper_text().replacen(
-        "wanted = [\"positions\"]",
+        "wanted = [\"positions\", \"kinematics\", \"forces\"]",
         "wanted = [\"positions\", \"kinematics\"]",
         1,
     );

@@ -73,6 +73,34 @@ pub(super) enum Text {
     MeanError,
     /// δ max, %
     MaxError,
+    /// Force analysis
+    ForceAnalysis,
+    /// position
+    Position,
+    /// Group
+    Group,
+    /// Force polygon of group
+    ForcePolygonOfGroup,
+    /// Driving link
+    DrivingLink,
+    /// Force polygon of the driving link
+    ForcePolygonOfDriver,
+    /// Zhukovsky's lever
+    ZhukovskyLever,
+    /// Inertia loads and reactions
+    LoadsAndReactions,
+    /// graphical
+    Graphical,
+    /// analytic
+    Analytic,
+    /// error, %
+    ErrorPct,
+    /// by the force polygon
+    ByPolygon,
+    /// by Zhukovsky's lever
+    ByLever,
+    /// difference
+    Difference,
 }
 
 impl Text {
@@ -159,7 +187,51 @@ impl Text {
             ),
             Text::MeanError => ("δ ср., %", "δ сер., %", "δ mean, %"),
             Text::MaxError => ("δ max, %", "δ max, %", "δ max, %"),
+            Text::ForceAnalysis => ("Силовой анализ", "Силовий аналіз", "Force analysis"),
+            Text::Position => ("положение", "положення", "position"),
+            Text::Group => ("Группа", "Група", "Group"),
+            Text::ForcePolygonOfGroup => (
+                "План сил группы",
+                "План сил групи",
+                "Force polygon of group",
+            ),
+            Text::DrivingLink => ("Ведущее звено", "Ведуча ланка", "Driving link"),
+            Text::ForcePolygonOfDriver => (
+                "План сил ведущего звена",
+                "План сил ведучої ланки",
+                "Force polygon of the driving link",
+            ),
+            Text::ZhukovskyLever => (
+                "Рычаг Жуковского",
+                "Важіль Жуковського",
+                "Zhukovsky's lever",
+            ),
+            Text::LoadsAndReactions => (
+                "Силы инерции и реакции в кинематических парах",
+                "Сили інерції та реакції в кінематичних парах",
+                "Inertia loads and reactions in the pairs",
+            ),
+            Text::Graphical => ("графически", "графічно", "graphical"),
+            Text::Analytic => ("аналитически", "аналітично", "analytic"),
+            Text::ErrorPct => ("погрешность, %", "похибка, %", "error, %"),
+            Text::ByPolygon => ("по плану сил", "за планом сил", "by the force polygon"),
+            Text::ByLever => (
+                "по рычагу Жуковского",
+                "за важелем Жуковського",
+                "by Zhukovsky's lever",
+            ),
+            Text::Difference => ("расхождение", "розбіжність", "difference"),
         };
         lang.pick(ru, uk, en)
+    }
+}
+
+/// A unit written in SI (`m/s^2`, `N*m`) in `lang`: `·` for the product, Cyrillic letters in
+/// Russian and Ukrainian (`Н·м`, `м/с^2`).
+pub(super) fn unit_in(unit: &str, lang: Lang) -> String {
+    let si = unit.replace('*', "·");
+    match lang {
+        Lang::En => si,
+        Lang::Ru | Lang::Uk => si.replace('N', "Н").replace('m', "м").replace('s', "с"),
     }
 }

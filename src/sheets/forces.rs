@@ -1,10 +1,232 @@
-//! The force-analysis sheet (placeholder while it is built).
-use super::BuildError;
-use crate::plate::Plate;
-use crate::scale::Lang;
-use crate::study::Session;
+//! Plate "Силовой анализ" (the textbook's sheet 2): one A1 sheet for every position the
+//! scene's `[forces]` analyses. On it: every Assur group drawn apart at μ_l with its loads,
+//! reactions and measured arms, next to its force polygon at μ_F; the driving link with its
+//! gear and its force triangle; Zhukovsky's lever on the turned velocity plan at μ_v; the
+//! table of inertia loads and reactions (graphical | analytic | error) and the balancing
+//! moment by the polygon against the lever.
 
-/// Build the force-analysis sheets.
-pub fn build(_session: &Session<'_>, _lang: Lang) -> Result<Vec<Plate>, BuildError> {
-    Ok(Vec::new())
+use super::captions::{unit_in, Text};
+use super::layout::{lay_out, table, Block, ScaleKey};
+use super::BuildError;
+use crate::check::{Method, Row, Symbol};
+use crate::construct::Figure;
+use crate::forces::PositionForces;
+use crate::linkage::Structure;
+use crate::plate::{Plate, Sheet, TableBlock};
+use crate::scale::{format_fixed, format_sig, Lang, Scale};
+use crate::study::{KinScales, Session};
+
+/// Height of the sheet's text and table, mm.
+const TEXT_MM: f64 = 3.5;
+/// Height of the table's text, mm.
+const TABLE_MM: f64 = 3.0;
+
+/// Build the sheets: one per analysed position, named `forces`, `forces-2`, … in the order
+/// of `[forces] positions` (a position whose views need more room continues on the next
+/// name).
+pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
+    let sc = session.kin_scales()?;
+    let m = session.mechanism("the force analysis")?;
+    let st = Structure::analyse(m);
+    let plan = session.positions(sc.l)?;
+    let mut plates = Vec::new();
+    for k in session.force_positions()? {
+        let f = session.forces(&sc, k)?;
+        let pos = &plan.positions[k];
+        let phi = pos.phi.to_degrees().rem_euclid(360.0);
+        plates.extend(position_sheet(session, &st, &sc, &f, phi, lang)?);
+    }
+    for (n, p) in plates.iter_mut().enumerate() {
+        p.name = if n == 0 {
+            "forces".into()
+        } else {
+            format!("forces-{}", n + 1)
+        };
+    }
+    Ok(plates)
+}
+
+/// An angle in degrees as the sheet writes it: whole degrees when it is one, else tenths.
+fn degrees(a: f64, lang: Lang) -> String {
+    let whole = a.round();
+    if (a - whole).abs() < 0.05 {
+        format_fixed(whole, 0, lang)
+    } else {
+        format_fixed(a, 1, lang)
+    }
+}
+
+/// A view captioned "`what`, μ = …" at `scale`, set by the scene key `key`.
+fn view(figure: &Figure, what: String, (key, scale): (&'static str, Scale), lang: Lang) -> Block {
+    let caption = format!("{what}, {}", scale.caption(lang));
+    Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))
+}
+
+/// The sheet (or sheets) of one position.
+fn position_sheet(
+    session: &Session<'_>,
+    st: &Structure,
+    sc: &KinScales,
+    f: &PositionForces,
+    phi: f64,
+    lang: Lang,
+) -> Result<Vec<Plate>, BuildError> {
+    let scene = session.scene();
+    let mut blocks = Vec::new();
+    for g in &f.polygons.groups {
+        let [i, j] = g.links;
+        let kind = st
+            .groups
+            .get(g.group)
+            .map(|x| match lang {
+                Lang::En => x.kind.letters(),
+                Lang::Ru | Lang::Uk => x.kind.letters_ru(),
+            })
+            .unwrap_or_default();
+        blocks.push(view(
+            &g.scheme,
+            format!("{} {i}–{j} ({kind})", Text::Group.get(lang)),
+            ("mechanism.scale_l", sc.l),
+            lang,
+        ));
+        blocks.push(view(
+            &g.polygon,
+            format!("{} {i}–{j}", Text::ForcePolygonOfGroup.get(lang)),
+            ("forces.scale_f", f.scale_f),
+            lang,
+        ));
+    }
+    let d = &f.polygons.driver;
+    let driving = format!("{} {}", Text::DrivingLink.get(lang), st.crank_link);
+    blocks.push(view(&d.scheme, driving, ("mechanism.scale_l", sc.l), lang));
+    let triangle = Text::ForcePolygonOfDriver.get(lang).to_string();
+    blocks.push(view(
+        &d.polygon,
+        triangle,
+        ("forces.scale_f", f.scale_f),
+        lang,
+    ));
+    let lever = &f.lever.figure;
+    let zhukovsky = Text::ZhukovskyLever.get(lang).to_string();
+    blocks.push(view(
+        lever,
+        zhukovsky,
+        ("kinematics.scale_v", lever.scale),
+        lang,
+    ));
+    // The title block's cell takes plain text (φ₁), the sheet's text block markup (φ_{1}).
+    let title = |phi1: &str| {
+        format!(
+            "{}, {} {}, {phi1} = {}°",
+            Text::ForceAnalysis.get(lang),
+            Text::Position.get(lang),
+            f.label,
+            degrees(phi, lang)
+        )
+    };
+    let mut lines = vec![
+        title("φ_{1}"),
+        super::drafting_line(session.drafting(), lang),
+    ];
+    lines.extend(balance_lines(&f.rows, lang));
+    blocks.push(Block::Text {
+        lines,
+        size_mm: TEXT_MM,
+    });
+    blocks.push(Block::Table(loads_table(&f.rows, lang)));
+    let tb = super::title_block(scene, &title("φ₁"), sc.l, lang);
+    lay_out(Sheet::default(), blocks, "forces", &tb, lang)
+}
+
+/// A value: 4 significant digits, an undefined one a dash.
+fn value(x: f64, lang: Lang) -> String {
+    if x.is_finite() {
+        format_sig(x, 4, lang)
+    } else {
+        "—".into()
+    }
+}
+
+/// A table cell: a value, or 0 when it is zero to rounding against `scale`
+/// ([`crate::check::is_zero`]).
+fn cell(x: f64, scale: f64, lang: Lang) -> String {
+    if x.is_finite() {
+        super::kinematics::cell(x, scale, lang)
+    } else {
+        value(x, lang)
+    }
+}
+
+/// The table of the inertia loads, reactions, their points and the balancing load:
+/// quantity | method | graphical | analytic | error, %.
+fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
+    // Zero to rounding against the largest value of its kind (a guide reaction's point on
+    // the guide's reference point): no relative error.
+    let scale = |s: Symbol| {
+        rows.iter()
+            .filter(|r| r.key.symbol == s && r.analytic.is_finite())
+            .fold(0.0f64, |m, r| m.max(r.analytic.abs()))
+    };
+    let body = rows
+        .iter()
+        .map(|r| {
+            let e = r.rel_error(scale(r.key.symbol));
+            vec![
+                format!(
+                    "{}, {}",
+                    r.key.symbol.markup(&r.key.subject),
+                    unit_in(r.key.symbol.unit(), lang)
+                ),
+                r.method.name(lang).to_string(),
+                cell(r.graphical, scale(r.key.symbol), lang),
+                cell(r.analytic, scale(r.key.symbol), lang),
+                e.map_or_else(|| "—".into(), |e| format_fixed(e * 100.0, 2, lang)),
+            ]
+        })
+        .collect();
+    table(
+        Text::LoadsAndReactions,
+        &[
+            (Text::Quantity, 26.0),
+            (Text::Method, 42.0),
+            (Text::Graphical, 32.0),
+            (Text::Analytic, 34.0),
+            (Text::ErrorPct, 36.0),
+        ],
+        body,
+        TABLE_MM,
+        lang,
+    )
+}
+
+/// The balancing load by the polygon against the lever (the seed's «погрешность»):
+/// "M_у: по плану сил …, по рычагу Жуковского …, расхождение … %", and F_у likewise
+/// through a gear.
+fn balance_lines(rows: &[Row], lang: Lang) -> Vec<String> {
+    [Symbol::Moment, Symbol::Force]
+        .into_iter()
+        .filter_map(|symbol| {
+            let of = |m: Method| {
+                rows.iter()
+                    .find(|r| r.key.symbol == symbol && r.key.subject == "bal" && r.method == m)
+                    .map(|r| r.graphical)
+            };
+            let (p, l) = (of(Method::Polygon)?, of(Method::Lever)?);
+            let unit = unit_in(symbol.unit(), lang);
+            let diff = if l != 0.0 && p.is_finite() && l.is_finite() {
+                format_fixed((p - l).abs() / l.abs() * 100.0, 2, lang)
+            } else {
+                "—".into()
+            };
+            Some(format!(
+                "{}: {} {} {unit}, {} {} {unit}, {} {diff} %",
+                symbol.markup("bal"),
+                Text::ByPolygon.get(lang),
+                value(p, lang),
+                Text::ByLever.get(lang),
+                value(l, lang),
+                Text::Difference.get(lang),
+            ))
+        })
+        .collect()
 }

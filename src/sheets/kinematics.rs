@@ -4,9 +4,9 @@
 //! Every group of views has its own field; its μ is raised along the textbook series until
 //! the drawings fit (the captions state the μ actually used).
 
-use super::captions::Text;
+use super::captions::{unit_in, Text};
 use super::fit::{self, fit_scale, Extent, Fit};
-use super::layout::{lay_out, Block, ScaleKey};
+use super::layout::{lay_out, table, Block, ScaleKey};
 use super::pack::sheet_overflow;
 use super::BuildError;
 use crate::geom::DVec2;
@@ -204,17 +204,9 @@ fn symbol_of(rows: &[crate::check::Row], quantity: &str) -> String {
     )
 }
 
-/// A table's unit (written in SI, `m/s²`) in `lang`.
-fn unit_in(unit: &str, lang: Lang) -> String {
-    match lang {
-        Lang::En => unit.to_string(),
-        Lang::Ru | Lang::Uk => unit.replace('m', "м").replace('s', "с"),
-    }
-}
-
 /// A table cell: 4 significant digits; what is zero to rounding against its column's
 /// scale (the rule of the report, [`crate::check::is_zero`]) is written 0.
-fn cell(x: f64, scale: f64, lang: Lang) -> String {
+pub(super) fn cell(x: f64, scale: f64, lang: Lang) -> String {
     if crate::check::is_zero(x, scale) {
         "0".into()
     } else {
@@ -303,18 +295,18 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang) -> Vec<TableB
             ]
         })
         .collect();
-    let errors = TableBlock {
-        at: DVec2::ZERO,
-        title: Text::MethodErrors.get(lang).into(),
-        columns: vec![
-            (Text::Quantity.get(lang).into(), 24.0),
-            (Text::Method.get(lang).into(), 20.0),
-            (Text::MeanError.get(lang).into(), 16.0),
-            (Text::MaxError.get(lang).into(), 16.0),
-            (Text::PosShort.get(lang).into(), 10.0),
+    let errors = table(
+        Text::MethodErrors,
+        &[
+            (Text::Quantity, 24.0),
+            (Text::Method, 20.0),
+            (Text::MeanError, 16.0),
+            (Text::MaxError, 16.0),
+            (Text::PosShort, 10.0),
         ],
-        rows: err_rows,
-        size_mm: size,
-    };
+        err_rows,
+        size,
+        lang,
+    );
     vec![analytic, errors]
 }

@@ -1,6 +1,7 @@
 //! What a sheet holds — views, stacks of views, text and tables — sized from what they really
 //! draw and laid out on as many sheets of a format as they need ([`super::pack`]).
 
+use super::captions::Text;
 use super::fit::LABEL_MARGIN;
 use super::pack::{pack, sheet_overflow};
 use super::BuildError;
@@ -97,6 +98,27 @@ impl Block {
             }
             Block::Table(t) => t.size() + DVec2::new(0.0, title_height(t)),
         }
+    }
+}
+
+/// A table titled `title` with the columns (heading, width in mm) and `rows`, its text
+/// `size_mm` high, in `lang` (its `at` is set by the layout).
+pub(super) fn table(
+    title: Text,
+    columns: &[(Text, f64)],
+    rows: Vec<Vec<String>>,
+    size_mm: f64,
+    lang: Lang,
+) -> TableBlock {
+    TableBlock {
+        at: DVec2::ZERO,
+        title: title.get(lang).into(),
+        columns: columns
+            .iter()
+            .map(|&(c, w)| (c.get(lang).into(), w))
+            .collect(),
+        rows,
+        size_mm,
     }
 }
 
