@@ -112,6 +112,18 @@ impl Recorder {
         id
     }
 
+    /// Record the pole of a plan (`p`, `π`) at the figure's origin, its label down-left.
+    pub fn pole(&mut self, label: &str) -> StepId {
+        self.point(
+            "pole",
+            DVec2::ZERO,
+            Role::Given,
+            label,
+            DVec2::new(-0.7, -0.7),
+            &[],
+        )
+    }
+
     /// Measure a drawn segment: exact length, length as read, physical value.
     pub fn measure(&self, from: DVec2, to: DVec2) -> Measured {
         let drawn_mm = from.distance(to);

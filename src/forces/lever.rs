@@ -5,7 +5,7 @@
 //! Σ M_p = 0. The lever's moment of a force is its power divided by μ_v, so the lever is the
 //! power balance drawn.
 
-use super::loads::{Load, LoadKind};
+use super::loads::Load;
 use super::spec::Drive;
 use super::twin::line_of_action;
 use crate::construct::{Context, Figure, Item, Recorder, Role};
@@ -54,14 +54,7 @@ pub fn lever(
 ) -> Lever {
     let mu_v = vp.figure.scale;
     let mut rec = Recorder::in_context("Zhukovsky's lever", mu_v, ctx);
-    let pole = rec.point(
-        "pole",
-        DVec2::ZERO,
-        Role::Given,
-        "p",
-        DVec2::new(-0.7, -0.7),
-        &[],
-    );
+    let pole = rec.pole("p");
     // The turned plan: a ray from the pole to every point's image.
     for k in prog.fixed.len()..prog.names.len() {
         let x = turn(vp.images[k]);
@@ -115,7 +108,7 @@ pub fn lever(
     let mu = mu_l.value();
     let mut power = 0.0;
     for l in loads {
-        if l.kind == LoadKind::InertiaMoment || l.is_couple() {
+        if l.is_couple() {
             // A couple as two forces ⊥ to the link at its origin and its farthest point.
             let o = b.origin[l.link];
             let far = (0..prog.names.len())

@@ -29,7 +29,6 @@ pub use twin::{Equilibrium, Pair, PairKind, Reaction};
 
 use crate::check::{Key, Method, Row, Symbol};
 use crate::construct::{ConstructionError, Context};
-use crate::geom::DVec2;
 use crate::linkage::{KinPlan, PositionPlan};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
@@ -374,15 +373,18 @@ fn rows(
             f,
         );
     }
+    // A value's zero reference is the largest of its kind at the position (a guide
+    // reaction's point on its reference point is zero against the other points).
+    let largest = |s: Symbol, rows: &[Row]| {
+        rows.iter()
+            .filter(|r| r.key.symbol == s && r.analytic.is_finite())
+            .fold(0.0f64, |m, r| m.max(r.analytic.abs()))
+    };
+    let scales: Vec<f64> = rows.iter().map(|r| largest(r.key.symbol, &rows)).collect();
+    for (r, s) in rows.iter_mut().zip(scales) {
+        r.scale = s;
+    }
     rows
-}
-
-/// The force of link `from` on link `to` at the twin's solution, for tests and tables.
-pub fn reaction(eq: &Equilibrium, from: usize, to: usize) -> Option<DVec2> {
-    eq.reactions
-        .iter()
-        .find(|r| r.pair.from == from && r.pair.to == to)
-        .map(|r| r.force)
 }
 
 /// The notes of one position for the report: the polygon against the lever (the seed's

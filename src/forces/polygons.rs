@@ -255,29 +255,29 @@ impl Polygon {
         }
         self.tip
     }
-    /// A direction line through `p` along `d` (thin), for closing.
-    fn line(&mut self, what: &str, p: DVec2, d: DVec2) -> Result<Line, ConstructionError> {
-        let line = Line::new(p, d).ok_or_else(|| ConstructionError::CoincidentPoints {
-            step: what.into(),
-            what: format!("direction of {what}"),
-            a: what.into(),
-            b: what.into(),
-        })?;
-        Ok(line)
-    }
-    /// Intersect two closing lines.
-    fn meet(
+    /// Close the polygon: the line through `a.1` along `a.2` meets the line through `b.1`
+    /// along `b.2` (each named `.0`); both drawn thin about the closing point.
+    fn close(
         &mut self,
-        step: &str,
-        a: (&str, Line),
-        b: (&str, Line),
+        a: (&str, DVec2, DVec2),
+        b: (&str, DVec2, DVec2),
     ) -> Result<DVec2, ConstructionError> {
-        let (h, _, _) = self.rec.meet_lines(step, (a.0, &a.1), (b.0, &b.1))?;
-        for (_, l) in [&a, &b] {
+        const STEP: &str = "closing the polygon";
+        let line = |(name, p, d): (&str, DVec2, DVec2)| {
+            Line::new(p, d).ok_or_else(|| ConstructionError::CoincidentPoints {
+                step: STEP.into(),
+                what: format!("direction {name}"),
+                a: name.into(),
+                b: name.into(),
+            })
+        };
+        let (la, lb) = (line(a)?, line(b)?);
+        let (h, _, _) = self.rec.meet_lines(STEP, (a.0, &la), (b.0, &lb))?;
+        for l in [la, lb] {
             let from = l.eval(l.project_t(h) - 8.0);
             let to = l.eval(l.project_t(h) + 8.0);
             self.rec.draw(
-                format!("{step}: closing direction"),
+                format!("{STEP}: closing direction"),
                 Item::Segment(Segment::new(from, to)),
                 Role::Construction,
                 &[],
@@ -407,10 +407,8 @@ pub fn polygons(
                 pol.lay_all(&lj);
                 let pbj = pol.tip;
                 let e = pol.lay(&format!("R^τ_{{{oc}-{j}}}"), t_c);
-                let l1 = pol.line("R^n", e, pb - pc).map_err(err)?;
-                let l2 = pol.line("R^n", p0, pb - pa).map_err(err)?;
                 let h = pol
-                    .meet("closing the polygon", ("∥ CB", l1), ("∥ AB", l2))
+                    .close(("∥ CB", e, pb - pc), ("∥ AB", p0, pb - pa))
                     .map_err(err)?;
                 let r_a = pol.read(&reaction_name(oa, i), h, p1);
                 let r_c = pol.read(&reaction_name(oc, j), pbj, h);
@@ -434,10 +432,8 @@ pub fn polygons(
                 let p1 = pol.lay(&format!("R^τ_{{{oa}-{i}}}"), t_a);
                 let pi = pol.lay_all(&li);
                 let e = pol.lay_all(&lj);
-                let l1 = pol.line("guide", e, n_g).map_err(err)?;
-                let l2 = pol.line("R^n", p0, pb - pa).map_err(err)?;
                 let h = pol
-                    .meet("closing the polygon", ("⊥ guide", l1), ("∥ AB", l2))
+                    .close(("⊥ guide", e, n_g), ("∥ AB", p0, pb - pa))
                     .map_err(err)?;
                 let r_a = pol.read(&reaction_name(oa, i), h, p1);
                 let r_g = pol.read(&reaction_name(og, j), e, h);
@@ -487,10 +483,8 @@ pub fn polygons(
                 let p0 = pol.tip;
                 let pi = pol.lay_all(&li);
                 let e = pol.lay_all(&lj);
-                let l1 = pol.line("guide j", e, n_j).map_err(err)?;
-                let l2 = pol.line("guide i", p0, n_i).map_err(err)?;
                 let h = pol
-                    .meet("closing the polygon", ("⊥ guide j", l1), ("⊥ guide i", l2))
+                    .close(("⊥ guide j", e, n_j), ("⊥ guide i", p0, n_i))
                     .map_err(err)?;
                 let r_j = pol.read(&reaction_name(cj, j), e, h);
                 let r_i = pol.read(&reaction_name(ci, i), h, p0);
@@ -511,10 +505,8 @@ pub fn polygons(
                 let (n_s, n_g) = (dir(i).perp(), dir(j).perp());
                 let p0 = pol.tip;
                 let pj = pol.lay_all(&lj);
-                let l1 = pol.line("guide", pj, n_g).map_err(err)?;
-                let l2 = pol.line("slide", p0, n_s).map_err(err)?;
                 let h = pol
-                    .meet("closing the polygon", ("⊥ guide", l1), ("⊥ slide", l2))
+                    .close(("⊥ guide", pj, n_g), ("⊥ slide", p0, n_s))
                     .map_err(err)?;
                 let r_g = pol.read(&reaction_name(og, j), pj, h);
                 let r_ij = pol.read(&reaction_name(i, j), h, p0);
@@ -664,13 +656,10 @@ fn driver(
                 force: d * f,
                 ..unit
             });
+            pol.lay("F_{у}", d * f);
             (-k, Some(f))
         }
     };
-    if let (Drive::Gear(g), Some(f)) = (drive, f_bal) {
-        let (_, d) = line_of_action(o, 1.0, g.towards, g.pressure_angle, board.sense);
-        pol.lay("F_{у}", d * f);
-    }
     let e = pol.tip;
     let r01 = pol.read(&reaction_name(0, crank), e, p0);
     let reaction = revolute(0, crank, prog.centre, r01);

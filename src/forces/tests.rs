@@ -135,7 +135,7 @@ proptest! {
         let mut compared = 0;
         let graphical = pol.groups.iter().flat_map(|g| g.reactions.iter()).chain([&pol.driver.reaction]);
         for g in graphical {
-            let t = reaction(&twin, g.pair.from, g.pair.to).expect("the same pair in the twin");
+            let t = twin.reaction(g.pair.from, g.pair.to).expect("the same pair in the twin");
             prop_assert!((g.force - t).length() <= REL * (big + t.length()), "R_{}_{}: {} vs {}", g.pair.from, g.pair.to, g.force, t);
             compared += 1;
         }

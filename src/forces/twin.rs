@@ -124,6 +124,16 @@ pub struct Equilibrium {
     pub f_bal: Option<f64>,
 }
 
+impl Equilibrium {
+    /// The force of link `from` on link `to`.
+    pub fn reaction(&self, from: usize, to: usize) -> Option<DVec2> {
+        self.reactions
+            .iter()
+            .find(|r| r.pair.from == from && r.pair.to == to)
+            .map(|r| r.force)
+    }
+}
+
 /// The gear drive's line of action: the pitch point P (m) and the unit direction of the force
 /// the pinion exerts on the crank's wheel when it drives it in the sense `sense` (+1
 /// counter-clockwise): its tangential component along the rotation, its radial component

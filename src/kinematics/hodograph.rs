@@ -58,14 +58,7 @@ pub fn hodograph(
         Scale::round_for(longest.max(1e-12), HODOGRAPH_MM, Quantity::Velocity).unwrap_or(scale_v);
     let copy = scale_v.value() / scale.value();
     let mut rec = Recorder::in_context("hodograph", scale, ctx);
-    rec.point(
-        "pole",
-        DVec2::ZERO,
-        Role::Given,
-        "p",
-        DVec2::new(-0.7, -0.7),
-        &[],
-    );
+    rec.pole("p");
     let mut ends = Vec::new();
     for (pos, vp) in plan
         .positions

@@ -274,20 +274,23 @@ fn drive(check: &mut Checker, base: &str, raw: &RawDrive) -> Drive {
     let k = |s: &str| join(base, s);
     let kind = check.word(&k("kind"), raw.kind.as_ref(), &["coupling", "gear"]);
     if kind != Some(1) {
-        for (name, present) in [
+        // A coupling (or a kind already refused) takes no gear data.
+        let gear_keys = [
             ("module", raw.module.is_some()),
             ("teeth", raw.teeth.is_some()),
             ("mate_teeth", raw.mate_teeth.is_some()),
             ("pressure_angle", raw.pressure_angle.is_some()),
             ("towards", raw.towards.is_some()),
-        ] {
-            if present && kind == Some(0) {
-                check.push(
-                    k(name),
-                    None,
-                    "expected no gear data for kind = \"coupling\"",
-                );
-            }
+        ];
+        for (name, _) in gear_keys
+            .iter()
+            .filter(|(_, present)| *present && kind == Some(0))
+        {
+            check.push(
+                k(name),
+                None,
+                "expected no gear data for kind = \"coupling\"",
+            );
         }
         return Drive::Coupling;
     }

@@ -160,17 +160,13 @@ fn cell(x: f64, scale: f64, lang: Lang) -> String {
 /// The table of the inertia loads, reactions, their points and the balancing load:
 /// quantity | method | graphical | analytic | error, %.
 fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
-    // Zero to rounding against the largest value of its kind (a guide reaction's point on
-    // the guide's reference point): no relative error.
-    let scale = |s: Symbol| {
-        rows.iter()
-            .filter(|r| r.key.symbol == s && r.analytic.is_finite())
-            .fold(0.0f64, |m, r| m.max(r.analytic.abs()))
-    };
+    // The rows carry their zero references (the largest of their kind at the position).
+    let scales = crate::check::scales(rows);
+    let errors = crate::check::rel_errors(rows);
     let body = rows
         .iter()
-        .map(|r| {
-            let e = r.rel_error(scale(r.key.symbol));
+        .zip(scales.into_iter().zip(errors))
+        .map(|(r, (scale, e))| {
             vec![
                 format!(
                     "{}, {}",
@@ -178,8 +174,8 @@ fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
                     unit_in(r.key.symbol.unit(), lang)
                 ),
                 r.method.name(lang).to_string(),
-                cell(r.graphical, scale(r.key.symbol), lang),
-                cell(r.analytic, scale(r.key.symbol), lang),
+                cell(r.graphical, scale, lang),
+                cell(r.analytic, scale, lang),
                 e.map_or_else(|| "—".into(), |e| format_fixed(e * 100.0, 2, lang)),
             ]
         })

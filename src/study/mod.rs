@@ -461,17 +461,16 @@ impl<'s> Session<'s> {
     pub fn force_positions(&self) -> Result<Vec<usize>, StudyError> {
         let spec = self.force_spec("the force analysis")?;
         let poses = self.poses()?;
-        let labels: Vec<&str> = poses.positions.iter().map(|p| p.label.as_str()).collect();
+        let labels: Vec<String> = poses.positions.iter().map(|p| p.label.clone()).collect();
         spec.positions
             .iter()
             .map(|l| {
                 labels.iter().position(|p| p == l).ok_or_else(|| {
-                    StudyError::Forces(ForceError::NoSuchPosition {
+                    ForceError::NoSuchPosition {
                         label: l.clone(),
-                        valid: crate::kinematics::position_list(
-                            &labels.iter().map(|s| s.to_string()).collect::<Vec<_>>(),
-                        ),
-                    })
+                        valid: crate::kinematics::position_list(&labels),
+                    }
+                    .into()
                 })
             })
             .collect()

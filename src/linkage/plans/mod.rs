@@ -18,7 +18,7 @@ mod names;
 
 use super::construction::Built;
 use super::program::{Op, Program};
-use crate::construct::{ConstructionError, Context, Figure, Recorder, Role};
+use crate::construct::{ConstructionError, Context, Figure, Recorder};
 use crate::geom::DVec2;
 use crate::scale::Scale;
 use builder::{Builder, Known, Links};
@@ -144,18 +144,11 @@ pub fn kin_plan(
             mu_v: vel.map_or(1.0, |v| v.figure.scale.value()),
         },
     };
-    let pole = bl.rec.point(
-        "pole",
-        DVec2::ZERO,
-        Role::Given,
-        if kind == PlanKind::Velocity {
-            "p"
-        } else {
-            "π"
-        },
-        DVec2::new(-0.7, -0.7),
-        &[],
-    );
+    let pole = bl.rec.pole(if kind == PlanKind::Velocity {
+        "p"
+    } else {
+        "π"
+    });
     for k in 0..prog.fixed.len() {
         bl.img[k] = Some(DVec2::ZERO);
     }
