@@ -172,6 +172,7 @@ rules! {
     six_bar_kinematics_texts_apart, six_bar_kinematics_inside_frame: "six-bar" / "kinematics",
     tangent_positions_texts_apart, tangent_positions_inside_frame: "tangent" / "positions",
     tangent_kinematics_texts_apart, tangent_kinematics_inside_frame: "tangent" / "kinematics",
+    friction_texts_apart, friction_inside_frame: "friction" / "friction",
 }
 
 /// Every plate of every scene in `constructions/` is checked above.

@@ -150,6 +150,7 @@ plates! {
     six_bar_kinematics: "six-bar" / "kinematics",
     tangent_positions: "tangent" / "positions",
     tangent_kinematics: "tangent" / "kinematics",
+    friction_friction: "friction" / "friction",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

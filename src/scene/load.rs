@@ -2,6 +2,7 @@
 
 use super::check::{item, quoted, Checker};
 use super::error::SceneError;
+use super::friction::friction;
 use super::kinematics::kinematics;
 use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
@@ -60,7 +61,13 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         .and_then(|m| mechanism(&mut check, Some(m)));
     let scale_l = scale_l(&mut check, raw.mechanism.as_ref().and_then(|m| m.scale_l));
     let positions = positions(&mut check, raw.positions.unwrap_or_default());
-    let plates = plates(&mut check, raw.plates, has_mechanism);
+    let has_friction = raw.friction.is_some();
+    let plates = plates(&mut check, raw.plates, |section| match section {
+        "mechanism" => has_mechanism,
+        "friction" => has_friction,
+        _ => false,
+    });
+    let friction = friction(&mut check, raw.friction);
     let kinematics = kinematics(
         &mut check,
         raw.kinematics.unwrap_or_default(),
@@ -77,6 +84,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             positions,
             plates,
             kinematics,
+            friction,
         })
     } else {
         Err(SceneError::Invalid {
@@ -145,25 +153,31 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
     }
 }
 
-/// `[plates] wanted`, default `["positions"]` for a mechanism and none otherwise. Every
-/// plate there is studies the mechanism.
-fn plates(check: &mut Checker, raw: Option<RawPlates>, has_mechanism: bool) -> Vec<PlateKind> {
-    let defaults = if has_mechanism {
-        vec![PlateKind::Positions.stem().to_string()]
-    } else {
-        Vec::new()
-    };
+/// `[plates] wanted`, default `["positions"]` for a mechanism and `["friction"]` for a
+/// `[friction]` section. Every plate draws from a section of the scene
+/// ([`PlateKind::section`]), which `present` tells is there.
+fn plates(
+    check: &mut Checker,
+    raw: Option<RawPlates>,
+    present: impl Fn(&str) -> bool,
+) -> Vec<PlateKind> {
+    let defaults = [PlateKind::Positions, PlateKind::Friction]
+        .into_iter()
+        .filter(|k| present(k.section()))
+        .map(|k| k.stem().to_string())
+        .collect();
     let wanted = raw.and_then(|r| r.wanted).unwrap_or(defaults);
     let known: Vec<&str> = PlateKind::ALL.iter().map(|k| k.stem()).collect();
     let mut out = Vec::new();
     for (i, stem) in wanted.iter().enumerate() {
         match PlateKind::parse(stem) {
-            Some(_) if !has_mechanism => {
+            Some(kind) if !present(kind.section()) => {
                 let key = item("plates.wanted", i);
+                let section = kind.section();
                 check.push(
                     key,
                     Some(quoted(stem)),
-                    "a plate of a mechanism: expected a [mechanism] table",
+                    format!("a plate of the {section}: expected a [{section}] table"),
                 );
             }
             Some(kind) => out.push(kind),

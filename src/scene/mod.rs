@@ -2,6 +2,7 @@
 
 mod check;
 mod error;
+mod friction;
 mod groups;
 mod kinematics;
 mod load;

@@ -1,5 +1,6 @@
 //! A validated scene: everything downstream may trust (finite, positive where required).
 
+use crate::forces::friction::FrictionCase;
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::Mechanism;
 use crate::scale::Scale;
@@ -37,6 +38,8 @@ pub enum PlateKind {
     /// Kinematic analysis: velocity and acceleration plans, the displacement chart and its
     /// graphical derivatives, a hodograph.
     Kinematics,
+    /// Friction: each `[[friction.case]]`'s scheme and force triangle, with the error table.
+    Friction,
 }
 
 impl PlateKind {
@@ -45,10 +48,22 @@ impl PlateKind {
         match self {
             PlateKind::Positions => "positions",
             PlateKind::Kinematics => "kinematics",
+            PlateKind::Friction => "friction",
+        }
+    }
+    /// The scene section a plate of this kind draws from (`mechanism`, `friction`).
+    pub fn section(self) -> &'static str {
+        match self {
+            PlateKind::Positions | PlateKind::Kinematics => "mechanism",
+            PlateKind::Friction => "friction",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 2] = [PlateKind::Positions, PlateKind::Kinematics];
+    pub const ALL: [PlateKind; 3] = [
+        PlateKind::Positions,
+        PlateKind::Kinematics,
+        PlateKind::Friction,
+    ];
 
     /// Parse a stem.
     pub fn parse(s: &str) -> Option<Self> {
@@ -92,4 +107,6 @@ pub struct Scene {
     pub plates: Vec<PlateKind>,
     /// The `[kinematics]` choices (all `None` when the section is absent).
     pub kinematics: KinematicsSpec,
+    /// The `[[friction.case]]`s, in file order (none when `[friction]` is absent).
+    pub friction: Vec<FrictionCase>,
 }

@@ -14,6 +14,7 @@ pub(crate) struct RawScene {
     pub positions: Option<RawPositions>,
     pub plates: Option<RawPlates>,
     pub kinematics: Option<RawKinematics>,
+    pub friction: Option<super::friction::RawFriction>,
 }
 
 /// `[task]`: the title block.

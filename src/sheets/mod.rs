@@ -3,6 +3,7 @@
 
 mod captions;
 mod fit;
+mod friction;
 mod layout;
 pub use layout::ScaleKey;
 mod kinematics;
@@ -112,6 +113,7 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
     match kind {
         PlateKind::Positions => positions::build(session, lang),
         PlateKind::Kinematics => kinematics::build(session, lang),
+        PlateKind::Friction => friction::build(session, lang),
     }
 }
 

@@ -11,6 +11,7 @@ mod memo;
 
 use crate::check::Row;
 use crate::construct::{Context, Drafting, Figure};
+use crate::forces::friction::{self, FrictionError, Solved};
 use crate::kinematics::{
     self, acceleration_indices, plans, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
 };
@@ -45,6 +46,9 @@ pub enum StudyError {
     /// The tolerances of the figures cannot be set up.
     #[error("tolerances: {0}")]
     Tolerances(String),
+    /// A friction case cannot be constructed.
+    #[error(transparent)]
+    Friction(#[from] FrictionError),
 }
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -171,6 +175,7 @@ pub struct Session<'s> {
     rocker: Memo<(Scale, Scale), MaybeCached<RockerDiagram>>,
     hodograph: Memo<(Scale, Scale), Result<Option<Hodograph>, StudyError>>,
     table: Memo<Scale, Cached<Table>>,
+    friction: Memo<(), Cached<Vec<Solved>>>,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -190,6 +195,7 @@ impl<'s> Session<'s> {
             rocker: Memo::default(),
             hodograph: Memo::default(),
             table: Memo::default(),
+            friction: Memo::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -457,9 +463,52 @@ impl<'s> Session<'s> {
         })
     }
 
-    /// The report of the kinematic study at the scene's scales: every reading against its
-    /// analytic twin, the analytic table, the notes.
+    /// Every `[[friction.case]]` of the scene constructed and read (empty without a
+    /// `[friction]` section).
+    pub fn friction(&self) -> Cached<Vec<Solved>> {
+        self.friction.get((), || {
+            let ctx = self.ctx()?;
+            let solved = self
+                .scene
+                .friction
+                .iter()
+                .map(|c| friction::solve(c, &ctx))
+                .collect::<Result<Vec<_>, _>>()?;
+            for s in &solved {
+                for d in &s.drawings {
+                    self.logged("friction", &s.case.name, d.figure.scale);
+                }
+            }
+            Ok(Arc::new(solved))
+        })
+    }
+
+    /// The report of the scene: the kinematic study at the scene's scales (with a
+    /// mechanism) and the friction cases (with a `[friction]` section), every reading
+    /// against its analytic twin, the analytic tables, the notes.
     pub fn report(&self) -> Result<Report, StudyError> {
+        let mut report = match self.scene.mechanism {
+            Some(_) => self.kinematics_report()?,
+            // A scene with no study at all: the report is the mechanism's.
+            None if self.scene.friction.is_empty() => {
+                return Err(StudyError::NoMechanism("the report"))
+            }
+            None => Report {
+                scene: self.scene.stem.clone(),
+                rows: Vec::new(),
+                tables: Vec::new(),
+                notes: Vec::new(),
+            },
+        };
+        for s in self.friction()?.iter() {
+            report.rows.extend(s.rows());
+            report.notes.extend(s.notes.iter().cloned());
+        }
+        Ok(report)
+    }
+
+    /// The report of the kinematic study at the scene's scales.
+    fn kinematics_report(&self) -> Result<Report, StudyError> {
         let k = self.kinematics(&self.kin_scales()?)?;
         let mut notes: Vec<String> = k.refusals.iter().map(ToString::to_string).collect();
         notes.extend(
