@@ -175,6 +175,7 @@ rules! {
     tangent_kinematics_texts_apart, tangent_kinematics_inside_frame: "tangent" / "kinematics",
     rotor_static_balancing_texts_apart, rotor_static_balancing_inside_frame: "rotor-static" / "balancing",
     rotor_dynamic_balancing_texts_apart, rotor_dynamic_balancing_inside_frame: "rotor-dynamic" / "balancing",
+    friction_texts_apart, friction_inside_frame: "friction" / "friction",
 }
 
 /// Every plate of every scene in `constructions/` is checked above.

@@ -153,6 +153,7 @@ plates! {
     tangent_kinematics: "tangent" / "kinematics",
     rotor_static_balancing: "rotor-static" / "balancing",
     rotor_dynamic_balancing: "rotor-dynamic" / "balancing",
+    friction_friction: "friction" / "friction",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

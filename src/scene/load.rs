@@ -4,6 +4,7 @@ use super::balancing::balancing;
 use super::check::{item, quoted, Checker};
 use super::error::SceneError;
 use super::forces::forces;
+use super::friction::friction;
 use super::kinematics::kinematics;
 use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
@@ -63,12 +64,21 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         .and_then(|m| mechanism(&mut check, Some(m)));
     let scale_l = scale_l(&mut check, raw.mechanism.as_ref().and_then(|m| m.scale_l));
     let positions = positions(&mut check, raw.positions.unwrap_or_default());
+    let has_forces = raw.forces.is_some();
     let has_balancing = raw.balancing.is_some();
+    let has_friction = raw.friction.is_some();
     let balancing = raw
         .balancing
         .as_ref()
         .and_then(|b| balancing(&mut check, b));
-    let plates = plates(&mut check, raw.plates, has_mechanism, has_balancing);
+    let plates = plates(&mut check, raw.plates, |section| match section {
+        "mechanism" => has_mechanism,
+        "forces" => has_forces,
+        "balancing" => has_balancing,
+        "friction" => has_friction,
+        _ => false,
+    });
+    let friction = friction(&mut check, raw.friction);
     let kinematics = kinematics(
         &mut check,
         raw.kinematics.unwrap_or_default(),
@@ -90,6 +100,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             kinematics,
             forces,
             balancing,
+            friction,
         })
     } else {
         Err(SceneError::Invalid {
@@ -159,41 +170,36 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
 }
 
 /// `[plates] wanted`, default `["positions"]` for a mechanism, `["balancing"]` for a rotor
-/// (both for a scene with both) and none otherwise. The balancing plate needs `[balancing]`,
-/// every other plate the mechanism.
+/// and `["friction"]` for a `[friction]` section (each that the scene has). Every plate draws
+/// from a section of the scene ([`PlateKind::section`]), which `present` tells is there.
 fn plates(
     check: &mut Checker,
     raw: Option<RawPlates>,
-    has_mechanism: bool,
-    has_balancing: bool,
+    present: impl Fn(&str) -> bool,
 ) -> Vec<PlateKind> {
-    let mut defaults = Vec::new();
-    if has_mechanism {
-        defaults.push(PlateKind::Positions.stem().to_string());
-    }
-    if has_balancing {
-        defaults.push(PlateKind::Balancing.stem().to_string());
-    }
+    let defaults = [
+        PlateKind::Positions,
+        PlateKind::Balancing,
+        PlateKind::Friction,
+    ]
+    .into_iter()
+    .filter(|k| present(k.section()))
+    .map(|k| k.stem().to_string())
+    .collect();
     let wanted = raw.and_then(|r| r.wanted).unwrap_or(defaults);
     let known: Vec<&str> = PlateKind::ALL.iter().map(|k| k.stem()).collect();
     let mut out = Vec::new();
     for (i, stem) in wanted.iter().enumerate() {
         match PlateKind::parse(stem) {
-            Some(PlateKind::Balancing) if !has_balancing => {
+            Some(kind) if !present(kind.section()) => {
                 let key = item("plates.wanted", i);
+                let section = kind.section();
                 check.push(
                     key,
                     Some(quoted(stem)),
-                    "a plate of a rotor's balancing: expected a [balancing] table",
-                );
-            }
-            Some(PlateKind::Balancing) => out.push(PlateKind::Balancing),
-            Some(_) if !has_mechanism => {
-                let key = item("plates.wanted", i);
-                check.push(
-                    key,
-                    Some(quoted(stem)),
-                    "a plate of a mechanism: expected a [mechanism] table",
+                    format!(
+                        "the {stem} plate draws from [{section}]: expected a [{section}] table"
+                    ),
                 );
             }
             Some(kind) => out.push(kind),

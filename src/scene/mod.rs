@@ -4,6 +4,7 @@ mod balancing;
 mod check;
 mod error;
 mod forces;
+mod friction;
 mod groups;
 mod kinematics;
 mod load;

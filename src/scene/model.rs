@@ -1,6 +1,7 @@
 //! A validated scene: everything downstream may trust (finite, positive where required).
 
 use crate::forces::balancing::BalancingSpec;
+use crate::forces::friction::FrictionCase;
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::Mechanism;
 use crate::scale::Scale;
@@ -44,6 +45,8 @@ pub enum PlateKind {
     /// Balancing of a rotor: the rotor, the polygons of static moments (and of moments) and
     /// the corrections against their analytic twin.
     Balancing,
+    /// Friction: each `[[friction.case]]`'s scheme and force triangle, with the error table.
+    Friction,
 }
 
 impl PlateKind {
@@ -54,14 +57,26 @@ impl PlateKind {
             PlateKind::Kinematics => "kinematics",
             PlateKind::Forces => "forces",
             PlateKind::Balancing => "balancing",
+            PlateKind::Friction => "friction",
+        }
+    }
+    /// The scene section a plate of this kind draws from (`mechanism`, `forces`,
+    /// `balancing`, `friction`).
+    pub fn section(self) -> &'static str {
+        match self {
+            PlateKind::Positions | PlateKind::Kinematics => "mechanism",
+            PlateKind::Forces => "forces",
+            PlateKind::Balancing => "balancing",
+            PlateKind::Friction => "friction",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 4] = [
+    pub const ALL: [PlateKind; 5] = [
         PlateKind::Positions,
         PlateKind::Kinematics,
         PlateKind::Forces,
         PlateKind::Balancing,
+        PlateKind::Friction,
     ];
 
     /// Parse a stem.
@@ -110,4 +125,6 @@ pub struct Scene {
     pub forces: Option<crate::forces::ForceSpec>,
     /// The rotor to balance (`[balancing]`), when the scene has one.
     pub balancing: Option<BalancingSpec>,
+    /// The `[[friction.case]]`s, in file order (none when `[friction]` is absent).
+    pub friction: Vec<FrictionCase>,
 }

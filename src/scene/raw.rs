@@ -16,6 +16,7 @@ pub(crate) struct RawScene {
     pub kinematics: Option<RawKinematics>,
     pub forces: Option<RawForces>,
     pub balancing: Option<RawBalancing>,
+    pub friction: Option<super::friction::RawFriction>,
 }
 
 /// `[task]`: the title block.

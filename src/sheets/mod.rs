@@ -5,6 +5,7 @@ mod balancing;
 mod captions;
 mod fit;
 mod forces;
+mod friction;
 mod layout;
 pub use layout::ScaleKey;
 mod kinematics;
@@ -116,6 +117,7 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
         PlateKind::Kinematics => kinematics::build(session, lang),
         PlateKind::Forces => forces::build(session, lang),
         PlateKind::Balancing => balancing::build(session, lang),
+        PlateKind::Friction => friction::build(session, lang),
     }
 }
 

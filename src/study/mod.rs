@@ -12,6 +12,7 @@ mod memo;
 use crate::check::Row;
 use crate::construct::{Context, Drafting, Figure};
 use crate::forces::balancing::{self, Balancing, BalancingError};
+use crate::forces::friction::{self, FrictionError, Solved};
 use crate::forces::{ForceError, ForceSpec, PositionForces};
 use crate::kinematics::{
     self, acceleration_indices, plans, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
@@ -59,6 +60,9 @@ pub enum StudyError {
     /// The balancing cannot be carried out.
     #[error(transparent)]
     Balancing(#[from] BalancingError),
+    /// A friction case cannot be constructed.
+    #[error(transparent)]
+    Friction(#[from] FrictionError),
 }
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -187,6 +191,7 @@ pub struct Session<'s> {
     table: Memo<Scale, Cached<Table>>,
     forces: Memo<(Scale, Scale, Scale, usize), Cached<PositionForces>>,
     balancing: Memo<(), Cached<Balancing>>,
+    friction: Memo<(), Cached<Vec<Solved>>>,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -208,6 +213,7 @@ impl<'s> Session<'s> {
             table: Memo::default(),
             forces: Memo::default(),
             balancing: Memo::default(),
+            friction: Memo::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -538,23 +544,50 @@ impl<'s> Session<'s> {
         })
     }
 
-    /// The report of every study of the scene: the kinematic study of its mechanism and the
-    /// balancing of its rotor, each that the scene has, rows and notes in that order. A scene
-    /// with neither is refused for want of a mechanism.
+    /// Every `[[friction.case]]` of the scene constructed and read (empty without a
+    /// `[friction]` section).
+    pub fn friction(&self) -> Cached<Vec<Solved>> {
+        self.friction.get((), || {
+            let ctx = self.ctx()?;
+            let solved = self
+                .scene
+                .friction
+                .iter()
+                .map(|c| friction::solve(c, &ctx))
+                .collect::<Result<Vec<_>, _>>()?;
+            for s in &solved {
+                for d in &s.drawings {
+                    self.logged("friction", &s.case.name, d.figure.scale);
+                }
+            }
+            Ok(Arc::new(solved))
+        })
+    }
+
+    /// The report of every study of the scene: the kinematic study of its mechanism (with its
+    /// force analysis), the balancing of its rotor and its friction cases, each that the scene
+    /// has, rows and notes in that order. A scene with none is refused for want of a mechanism.
     pub fn report(&self) -> Result<Report, StudyError> {
-        let mut rep = match (&self.scene.mechanism, &self.scene.balancing) {
-            (None, Some(_)) => Report {
+        let mut rep = match self.scene.mechanism {
+            Some(_) => self.kinematics_report()?,
+            None if self.scene.balancing.is_none() && self.scene.friction.is_empty() => {
+                return Err(StudyError::NoMechanism("the report"))
+            }
+            None => Report {
                 scene: self.scene.stem.clone(),
                 rows: Vec::new(),
                 tables: Vec::new(),
                 notes: Vec::new(),
             },
-            _ => self.kinematics_report()?,
         };
         if self.scene.balancing.is_some() {
             let b = self.balancing()?;
             rep.rows.extend(b.rows());
             rep.notes.extend(b.notes());
+        }
+        for s in self.friction()?.iter() {
+            rep.rows.extend(s.rows());
+            rep.notes.extend(s.notes.iter().cloned());
         }
         Ok(rep)
     }

@@ -102,11 +102,11 @@ pub(super) fn scheme(
 ) -> Result<(Drawing, f64), FrictionError> {
     let u = DVec2::from_angle(c.alpha);
     let mut rec = Recorder::in_context(&case.name, schematic(&case.name)?, ctx);
-    let foot = -u * 40.0;
+    let foot = -u * 32.0;
     rec.draw(
         "the inclined plane",
         Item::Guide {
-            segment: Segment::new(foot, u * 40.0),
+            segment: Segment::new(foot, u * 32.0),
             hatch: Side::Right,
         },
         Role::Given,
@@ -115,7 +115,7 @@ pub(super) fn scheme(
     if c.alpha > 0.0 {
         rec.draw(
             "the horizontal",
-            Item::Segment(Segment::new(foot, foot + DVec2::X * 50.0)),
+            Item::Segment(Segment::new(foot, foot + DVec2::X * 32.0)),
             Role::Construction,
             &[],
         );
@@ -157,7 +157,7 @@ pub(super) fn body_on_plane(rec: &mut Recorder, c: &Incline, at: DVec2) -> f64 {
     arrow(
         rec,
         "the load",
-        (g, g - DVec2::Y * 24.0),
+        (g, g - DVec2::Y * 20.0),
         Role::Given,
         "Q",
         DVec2::X,
@@ -165,20 +165,20 @@ pub(super) fn body_on_plane(rec: &mut Recorder, c: &Incline, at: DVec2) -> f64 {
     arrow(
         rec,
         "the force",
-        (g, g + p_dir * 24.0),
+        (g, g + p_dir * 20.0),
         Role::Given,
         "P",
         -DVec2::Y,
     );
-    let (left, right, top) = cone(rec, at, n, c.f, 36.0);
+    let (left, right, top) = cone(rec, at, n, c.f, 28.0);
     let (edge, side) = if s > 0.0 {
         (left, n.perp())
     } else {
         (right, -n.perp())
     };
-    let r = (at, at + r_dir * 40.0);
+    let r = (at, at + r_dir * 32.0);
     arrow(rec, "the total reaction R", r, Role::Result, "R", side);
-    angle_mark(rec, "φ", at, 24.0, (n, r_dir), "φ");
+    angle_mark(rec, "φ", at, 20.0, (n, r_dir), "φ");
     let across = rec.measure(top, edge).read_mm;
     let along = rec.measure(at, top).read_mm;
     across.atan2(along)

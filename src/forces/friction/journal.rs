@@ -11,7 +11,7 @@ use super::{
 };
 use crate::check::Symbol;
 use crate::construct::{Compass, ConstructionError, Context, Item, Pick, Recorder, Role};
-use crate::geom::{Arc, Circle, DVec2, Line};
+use crate::geom::{Arc, Circle, DVec2, Line, Segment};
 use crate::scale::Quantity;
 use std::f64::consts::PI;
 
@@ -81,7 +81,7 @@ pub(super) fn solve(
         "the bearing",
         Item::Arc(Arc {
             center: o,
-            radius: r * 1.3,
+            radius: r * 1.2,
             start: PI * 1.1,
             sweep: PI * 0.8,
         }),
@@ -90,8 +90,8 @@ pub(super) fn solve(
     );
     arrow(
         &mut rec,
-        "the load",
-        (o, o - DVec2::Y * (r * 0.75)),
+        "the load (through O, drawn on its line above the journal)",
+        (o + DVec2::Y * (r + 18.0), o + DVec2::Y * r),
         Role::Given,
         "Q",
         DVec2::X,
@@ -100,8 +100,8 @@ pub(super) fn solve(
     let s = c.sense.signum();
     let w = Arc {
         center: o,
-        radius: r * 0.45,
-        start: PI * 0.25,
+        radius: r * 0.6,
+        start: PI * 0.1,
         sweep: PI * 0.5 * s,
     };
     let id = rec.draw("ω", Item::Arc(w), Role::Dimension, &[]);
@@ -159,16 +159,22 @@ pub(super) fn solve(
         DVec2::new(-1.0, 1.0).normalize(),
     );
     // R balances Q: through A₁, upward, tangent to the friction circle.
-    let top = a1 + DVec2::Y * (r * 1.9);
+    // Drawn pushing on the contact from below; its line run on past the friction circle.
+    rec.draw(
+        "the line of R, tangent to the friction circle",
+        Item::Segment(Segment::new(a1, DVec2::new(a1.x, o.y + 2.0 * rho_mm))),
+        Role::Construction,
+        &[],
+    );
     arrow(
         &mut rec,
         "the total reaction R",
-        (a1, top),
+        (a1 - DVec2::Y * 18.0, a1),
         Role::Result,
         "R",
         DVec2::X * -s,
     );
-    angle_mark(&mut rec, "φ", a1, r * 0.5, (o - a1, DVec2::Y), "φ");
+    angle_mark(&mut rec, "φ", a1, r * 0.35, (o - a1, DVec2::Y), "φ");
     let foot = DVec2::new(a1.x, o.y);
     let dim = rec.draw(
         "the arm of R about O",

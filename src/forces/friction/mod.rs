@@ -341,7 +341,7 @@ impl Solved {
 }
 
 /// Preferred drawn length of the largest force of a triangle, mm.
-const POLYGON_MM: f64 = 80.0;
+const POLYGON_MM: f64 = 60.0;
 
 /// A reading of a case: graphical against analytic, the conditioning as a crossing angle in
 /// degrees.

@@ -22,11 +22,11 @@ use crate::geom::{Circle, DVec2, Line, Segment, Side};
 use crate::scale::{Quantity, Scale};
 
 /// Preferred drawn diameter of a roller in the scheme, mm.
-const ROLLER_MM: f64 = 30.0;
+const ROLLER_MM: f64 = 24.0;
 /// Preferred drawn lever (the diameter d) of the moment balance, mm.
-const LEVER_MM: f64 = 60.0;
+const LEVER_MM: f64 = 40.0;
 /// Preferred drawn arm k of the moment balance, mm.
-const ARM_MM: f64 = 40.0;
+const ARM_MM: f64 = 30.0;
 
 /// The closed form of W3.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -156,7 +156,7 @@ fn scheme(case: &FrictionCase, c: &Rolling, ctx: &Context) -> Result<Drawing, Fr
         DVec2::X,
     );
     for (from, to, name, toward) in [
-        (DVec2::new(c2.x, d), n1_at, "k_{1}", DVec2::new(-1.0, 1.0)),
+        (DVec2::new(c2.x, d), n1_at, "k_{1}", DVec2::new(1.0, -1.0)),
         (DVec2::new(c2.x, 0.0), n2_at, "k_{2}", DVec2::new(1.0, -1.0)),
     ] {
         let id = rec.draw(
@@ -329,7 +329,7 @@ pub(super) fn solve(
     ];
     Ok(Solved {
         case: case.clone(),
-        drawings: vec![scheme, balance, sliding],
+        drawings: vec![scheme, sliding, balance],
         readings,
         notes,
     })

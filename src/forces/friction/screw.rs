@@ -16,7 +16,7 @@ use crate::scale::Quantity;
 use std::f64::consts::TAU;
 
 /// Preferred drawn length of the unrolled turn 2πr₁, mm.
-const UNROLLED_MM: f64 = 80.0;
+const UNROLLED_MM: f64 = 70.0;
 
 /// The closed form of a screw pair.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -109,7 +109,7 @@ fn scheme(case: &FrictionCase, c: &Screw, ctx: &Context) -> Result<(Drawing, f64
         &[],
     );
     rec.label(lead, "p_{h}", (corner + end) / 2.0, DVec2::X);
-    angle_mark(&mut rec, "λ", start, 18.0, (DVec2::X, end - start), "λ");
+    angle_mark(&mut rec, "λ", start, 26.0, (DVec2::X, end - start), "λ");
     let phi_read = body_on_plane(&mut rec, &as_incline(c), (start + end) / 2.0);
     Ok((
         Drawing {

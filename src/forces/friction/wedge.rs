@@ -82,11 +82,11 @@ fn scheme(case: &FrictionCase, c: &Wedge, ctx: &Context) -> Result<Drawing, Fric
         &[],
     );
     angle_mark(&mut rec, "β", DVec2::ZERO, 8.0, (right, left), "β");
-    let g = (left + right) * 24.0 + lift;
+    let top = DVec2::new(0.0, left.y * 36.0 + lift.y);
     arrow(
         &mut rec,
         "the load",
-        (g, g - DVec2::Y * 22.0),
+        (top + DVec2::Y * 16.0, top),
         Role::Given,
         "Q",
         DVec2::X,
@@ -165,7 +165,7 @@ pub(super) fn solve(
         -DVec2::Y,
     );
     arrow(&mut rec, "R′", (e, a), Role::Result, "R′", DVec2::X);
-    angle_mark(&mut rec, "φ′", a, 16.0, (-q, a - e), "φ′");
+    angle_mark(&mut rec, "φ′", a, 16.0, (q, e - a), "φ′");
     let phi_read = rec.measure(b, e).read_mm.atan2(rec.measure(a, b).read_mm);
     let cond = Some(t.crossing_deg);
     let readings = vec![

@@ -1,0 +1,455 @@
+//! `[friction]` → the friction cases ([`FrictionCase`]): one `[[friction.case]]` per task,
+//! its keys named by what they are (`angle` of an incline, `groove` of a wedge, `lead` and
+//! `profile` of a screw), each checked with its key path and converted to SI (N, m, rad).
+
+use super::check::{item, join, number, quoted, Checker};
+use crate::forces::friction::{
+    CaseKind, FrictionCase, Incline, Journal, Motion, Rolling, Screw, Wedge,
+};
+use crate::scale::Quantity;
+use serde::Deserialize;
+
+/// The key path of the section.
+const SECTION: &str = "friction.case";
+/// The largest force a scene may give, N.
+const MAX_FORCE: f64 = 1e9;
+/// The largest coefficient of friction a scene may give.
+const MAX_F: f64 = 5.0;
+/// The kinds, as written.
+const KINDS: [&str; 5] = ["incline", "wedge", "screw", "journal", "rolling"];
+
+/// `[friction]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawFriction {
+    #[serde(default)]
+    pub case: Vec<RawCase>,
+}
+
+/// `[[friction.case]]`: the union of the keys of every kind.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawCase {
+    pub kind: Option<String>,
+    pub name: Option<String>,
+    pub load: Option<f64>,
+    pub f: Option<f64>,
+    pub scale_f: Option<f64>,
+    pub angle: Option<f64>,
+    pub force_angle: Option<f64>,
+    pub motion: Option<String>,
+    pub groove: Option<f64>,
+    pub lead: Option<f64>,
+    pub profile: Option<f64>,
+    pub radius: Option<f64>,
+    pub rotation: Option<String>,
+    pub roller_weight: Option<f64>,
+    pub diameter: Option<f64>,
+    pub k1: Option<f64>,
+    pub k2: Option<f64>,
+    pub f1: Option<f64>,
+    pub f2: Option<f64>,
+}
+
+impl RawCase {
+    /// The keys present besides `kind`, `name` and `scale_f`, which every kind takes.
+    fn present(&self) -> Vec<&'static str> {
+        let numbers = [
+            ("load", self.load),
+            ("f", self.f),
+            ("angle", self.angle),
+            ("force_angle", self.force_angle),
+            ("groove", self.groove),
+            ("lead", self.lead),
+            ("profile", self.profile),
+            ("radius", self.radius),
+            ("roller_weight", self.roller_weight),
+            ("diameter", self.diameter),
+            ("k1", self.k1),
+            ("k2", self.k2),
+            ("f1", self.f1),
+            ("f2", self.f2),
+        ];
+        let words = [("motion", &self.motion), ("rotation", &self.rotation)];
+        numbers
+            .iter()
+            .filter(|(_, v)| v.is_some())
+            .map(|(k, _)| *k)
+            .chain(words.iter().filter(|(_, v)| v.is_some()).map(|(k, _)| *k))
+            .collect()
+    }
+}
+
+/// The keys each kind takes (besides `kind`, `name`, `scale_f`).
+fn keys_of(kind: &str) -> &'static [&'static str] {
+    match kind {
+        "incline" => &["load", "f", "angle", "force_angle", "motion"],
+        "wedge" => &["load", "f", "groove"],
+        "screw" => &["load", "f", "lead", "profile", "radius", "motion"],
+        "journal" => &["load", "f", "radius", "rotation"],
+        _ => &["load", "roller_weight", "diameter", "k1", "k2", "f1", "f2"],
+    }
+}
+
+/// Validate `[friction]`: every case, its keys by kind, unique names.
+pub(crate) fn friction(check: &mut Checker, raw: Option<RawFriction>) -> Vec<FrictionCase> {
+    let Some(raw) = raw else {
+        return Vec::new();
+    };
+    if raw.case.is_empty() {
+        let expected = "missing: expected at least one [[friction.case]] (kind = \"incline\", …)";
+        check.push(SECTION, None, expected);
+    }
+    let mut out: Vec<FrictionCase> = Vec::new();
+    for (i, c) in raw.case.iter().enumerate() {
+        let base = item(SECTION, i);
+        let Some(kind) = check.word(&join(&base, "kind"), c.kind.as_ref(), &KINDS) else {
+            continue;
+        };
+        let word = KINDS[kind];
+        for key in c.present() {
+            if !keys_of(word).contains(&key) {
+                let expected = format!(
+                    "not a key of kind {}: expected {}",
+                    quoted(word),
+                    keys_of(word).join(", ")
+                );
+                check.push(join(&base, key), None, expected);
+            }
+        }
+        let name = case_name(check, &base, c.name.as_deref(), word, i, &out);
+        let scale_f = check.scale(
+            &join(&base, "scale_f"),
+            c.scale_f,
+            Quantity::Force,
+            "a scale μ_F > 0 N/mm",
+        );
+        let kind = match word {
+            "incline" => incline(check, &base, c),
+            "wedge" => CaseKind::Wedge(Wedge {
+                load: force(check, &base, "load", c.load),
+                f: coefficient(check, &base, "f", c.f),
+                groove: angle(check, &base, "groove", c.groove, None, (0.0, 180.0), false),
+            }),
+            "screw" => screw(check, &base, c),
+            "journal" => CaseKind::Journal(Journal {
+                load: force(check, &base, "load", c.load),
+                f: coefficient(check, &base, "f", c.f),
+                radius: check.length(&join(&base, "radius"), c.radius),
+                sense: match choice(
+                    check,
+                    &base,
+                    "rotation",
+                    c.rotation.as_ref(),
+                    &["ccw", "cw"],
+                ) {
+                    1 => -1.0,
+                    _ => 1.0,
+                },
+            }),
+            _ => rolling(check, &base, c),
+        };
+        out.push(FrictionCase {
+            name,
+            kind,
+            scale_f,
+        });
+    }
+    out
+}
+
+/// The case's name: as given (unique, a word of letters, digits, `-` and `_`) or the kind
+/// with the case's number (`incline1`).
+fn case_name(
+    check: &mut Checker,
+    base: &str,
+    given: Option<&str>,
+    kind: &str,
+    i: usize,
+    before: &[FrictionCase],
+) -> String {
+    let key = join(base, "name");
+    let name = match given {
+        Some(n) => {
+            let word = !n.is_empty()
+                && n.chars()
+                    .all(|ch| ch.is_alphanumeric() || ch == '-' || ch == '_');
+            if !word {
+                let expected = "expected a name of letters, digits, `-` and `_`";
+                check.push(&key, Some(quoted(n)), expected);
+            }
+            n.to_string()
+        }
+        None => format!("{kind}{}", i + 1),
+    };
+    if before.iter().any(|c| c.name == name) {
+        let expected = "expected a name no other [[friction.case]] has";
+        check.push(key, Some(quoted(&name)), expected);
+    }
+    name
+}
+
+/// An inclined plane.
+fn incline(check: &mut Checker, base: &str, c: &RawCase) -> CaseKind {
+    let motion = motion(check, base, c.motion.as_ref());
+    // Down the plane needs a slope; up it may be level (the friction cone's case).
+    let alpha = angle(
+        check,
+        base,
+        "angle",
+        c.angle,
+        None,
+        (0.0, 89.0),
+        motion == Motion::Up,
+    );
+    CaseKind::Incline(Incline {
+        load: force(check, base, "load", c.load),
+        f: coefficient(check, base, "f", c.f),
+        alpha,
+        beta: angle(
+            check,
+            base,
+            "force_angle",
+            c.force_angle,
+            Some(0.0),
+            (-89.0, 89.0),
+            true,
+        ),
+        motion,
+    })
+}
+
+/// A screw pair.
+fn screw(check: &mut Checker, base: &str, c: &RawCase) -> CaseKind {
+    CaseKind::Screw(Screw {
+        load: force(check, base, "load", c.load),
+        f: coefficient(check, base, "f", c.f),
+        lead: angle(check, base, "lead", c.lead, None, (0.0, 89.0), false),
+        profile: angle(
+            check,
+            base,
+            "profile",
+            c.profile,
+            Some(0.0),
+            (0.0, 170.0),
+            true,
+        ),
+        radius: check.length(&join(base, "radius"), c.radius),
+        motion: motion(check, base, c.motion.as_ref()),
+    })
+}
+
+/// W3: a load on rollers.
+fn rolling(check: &mut Checker, base: &str, c: &RawCase) -> CaseKind {
+    let weight_key = join(base, "roller_weight");
+    let weight = match c.roller_weight {
+        None => 0.0,
+        Some(g) if g.is_finite() && (0.0..=MAX_FORCE).contains(&g) => g,
+        Some(g) => {
+            let expected = "expected a roller weight ≥ 0 N and at most 1e9 N";
+            check.push(weight_key, Some(number(g)), expected);
+            0.0
+        }
+    };
+    CaseKind::Rolling(Rolling {
+        load: force(check, base, "load", c.load),
+        roller_weight: weight,
+        diameter: check.length(&join(base, "diameter"), c.diameter),
+        k1: check.length(&join(base, "k1"), c.k1),
+        k2: check.length(&join(base, "k2"), c.k2),
+        f1: coefficient(check, base, "f1", c.f1),
+        f2: coefficient(check, base, "f2", c.f2),
+    })
+}
+
+/// A required force in N, > 0 and at most [`MAX_FORCE`].
+fn force(check: &mut Checker, base: &str, key: &str, v: Option<f64>) -> f64 {
+    let key = join(base, key);
+    const WANT: &str = "a force > 0 N and at most 1e9 N";
+    match check.required(&key, v, WANT) {
+        Some(x) => check.in_range(&key, x, MAX_FORCE, WANT),
+        None => 0.0,
+    }
+}
+
+/// A required coefficient of friction, > 0 and at most [`MAX_F`].
+fn coefficient(check: &mut Checker, base: &str, key: &str, v: Option<f64>) -> f64 {
+    let key = join(base, key);
+    const WANT: &str = "a coefficient of friction > 0 and at most 5";
+    match check.required(&key, v, WANT) {
+        Some(x) => check.in_range(&key, x, MAX_F, WANT),
+        None => 0.0,
+    }
+}
+
+/// An angle in degrees within `(lo, hi)` (`lo` itself allowed when `closed`), in radians;
+/// `default` when the key is optional.
+fn angle(
+    check: &mut Checker,
+    base: &str,
+    key: &str,
+    v: Option<f64>,
+    default: Option<f64>,
+    (lo, hi): (f64, f64),
+    closed: bool,
+) -> f64 {
+    let key = join(base, key);
+    let open = if closed { "[" } else { "(" };
+    let want = format!("an angle in {open}{lo}°, {hi}°]");
+    let Some(deg) = v.or(default) else {
+        check.push(key, None, format!("missing: expected {want}"));
+        return 0.0;
+    };
+    let above = if closed { deg >= lo } else { deg > lo };
+    if deg.is_finite() && above && deg <= hi {
+        deg.to_radians()
+    } else {
+        check.push(key, Some(number(deg)), format!("expected {want}"));
+        0.0
+    }
+}
+
+/// `motion = "up" | "down"` (default up).
+fn motion(check: &mut Checker, base: &str, v: Option<&String>) -> Motion {
+    match choice(check, base, "motion", v, &["up", "down"]) {
+        1 => Motion::Down,
+        _ => Motion::Up,
+    }
+}
+
+/// An optional word among `words` (the first by default): its index.
+fn choice(check: &mut Checker, base: &str, key: &str, v: Option<&String>, words: &[&str]) -> usize {
+    match v {
+        None => 0,
+        Some(_) => check.word(&join(base, key), v, words).unwrap_or(0),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::forces::friction::CaseKind;
+    use crate::scene::{load, parse, PlateKind};
+    use std::path::Path;
+
+    fn wanted(msg: &str, part: &str) {
+        assert!(msg.contains(part), "wanted {part:?} in:\n{msg}");
+    }
+
+    fn problems(text: &str) -> String {
+        match parse(text, Path::new("constructions/x.toml")) {
+            Ok(_) => panic!("should be refused:\n{text}"),
+            Err(e) => e.to_string(),
+        }
+    }
+
+    #[test]
+    fn the_friction_scene_loads_in_si_units() {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions/friction.toml");
+        let s = load(&path).unwrap_or_else(|e| panic!("{e}"));
+        assert!(s.mechanism.is_none());
+        assert_eq!(s.plates, vec![PlateKind::Friction]);
+        assert_eq!(s.friction.len(), 6);
+        match s.friction[3].kind {
+            CaseKind::Screw(c) => {
+                assert!((c.radius - 0.009).abs() < 1e-15);
+                assert!((c.profile - 60f64.to_radians()).abs() < 1e-15);
+            }
+            other => panic!("{other:?}"),
+        }
+        match s.friction[5].kind {
+            CaseKind::Rolling(c) => {
+                assert!((c.k1 - 0.05e-3).abs() < 1e-18 && (c.diameter - 0.1).abs() < 1e-15);
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn bad_values_are_named_by_key() {
+        let text = r#"
+[[friction.case]]
+kind = "incline"
+load = 100.0
+f = 0.1
+angle = 10.0
+
+[[friction.case]]
+kind = "wedge"
+load = -5.0
+f = 0.1
+groove = 0.0
+
+[[friction.case]]
+kind = "incline"
+load = 100.0
+f = 0.0
+angle = 95.0
+motion = "sideways"
+groove = 30.0
+
+[[friction.case]]
+kind = "journal"
+load = 10.0
+f = nan
+radius = 0.0
+rotation = "left"
+
+[[friction.case]]
+kind = "spring"
+"#;
+        let msg = problems(text);
+        for part in [
+            "friction.case[1].load = -5: expected a force > 0 N",
+            "friction.case[1].groove = 0: expected an angle in (0°, 180°]",
+            "friction.case[2].f = 0: expected a coefficient of friction > 0",
+            "friction.case[2].angle = 95",
+            "friction.case[2].motion = \"sideways\"",
+            "friction.case[2].groove: not a key of kind \"incline\"",
+            "friction.case[3].f = nan",
+            "friction.case[3].radius = 0",
+            "friction.case[3].rotation = \"left\"",
+            "friction.case[4].kind = \"spring\"",
+        ] {
+            wanted(&msg, part);
+        }
+    }
+
+    #[test]
+    fn missing_keys_duplicate_names_and_empty_sections_are_refused() {
+        let msg = problems("[friction]\n");
+        assert!(msg.contains("friction.case: missing"), "{msg}");
+        let text = r#"
+[[friction.case]]
+kind = "screw"
+name = "a"
+f = 0.1
+radius = 5.0
+
+[[friction.case]]
+kind = "rolling"
+name = "a"
+load = 1.0
+"#;
+        let msg = problems(text);
+        for part in [
+            "friction.case[0].load: missing",
+            "friction.case[0].lead: missing",
+            "friction.case[1].name = \"a\": expected a name no other",
+            "friction.case[1].diameter: missing",
+            "friction.case[1].f2: missing",
+        ] {
+            wanted(&msg, part);
+        }
+    }
+
+    #[test]
+    fn a_friction_plate_needs_a_friction_section() {
+        let msg = problems("[plates]\nwanted = [\"friction\"]\n");
+        assert!(
+            msg.contains(
+                "plates.wanted[0] = \"friction\": the friction plate draws from [friction]"
+            ),
+            "{msg}"
+        );
+    }
+}
