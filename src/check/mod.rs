@@ -109,6 +109,10 @@ impl Symbol {
     /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{1-2}`, `F_{и3}`,
     /// `M_{у}`): the textbook spelling.
     pub fn markup(self, subject: &str) -> String {
+        // A value of the analysis with friction in the pairs: R_{1-2}^{тр}.
+        if let Some(base) = subject.strip_suffix("_f") {
+            return format!("{}^{{тр}}", self.markup(base));
+        }
         let letter = match self {
             Symbol::Displacement => "S",
             Symbol::Velocity => "V",

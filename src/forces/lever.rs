@@ -125,7 +125,8 @@ pub fn lever(
             power += moment(&mut rec, turn(vp.images[far]), f, &name("′"));
             power += moment(&mut rec, turn(vp.images[o]), -f, &name("″"));
         } else {
-            let x = if l.shift == DVec2::ZERO {
+            // A force at a point of another link (friction on a guide) acts on its own link.
+            let x = if l.shift == DVec2::ZERO && prog.links_of(l.at).contains(&l.link) {
                 vp.images[l.at]
             } else {
                 image(b, vp, l.link, b.p[l.at] + l.shift / mu, mu)

@@ -48,6 +48,8 @@ pub enum LoadKind {
     Resistance,
     /// A reaction of a link already analysed.
     Reaction,
+    /// Friction in a pair: a force along a guide or a couple in a journal.
+    Friction,
 }
 
 /// A load on a link.

@@ -15,13 +15,16 @@ pub mod balancing;
 pub mod friction;
 pub mod lever;
 pub mod loads;
+pub mod pair_friction;
 pub mod polygons;
 mod spec;
 #[cfg(test)]
 mod tests;
 pub mod twin;
 
-pub use spec::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke, G_STANDARD};
+pub use spec::{
+    Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, SeedValue, Stroke, G_STANDARD,
+};
 
 pub use loads::{Load, LoadKind, Motion, Phase};
 pub use polygons::{DriverPolygon, GroupPolygon, Polygons};
@@ -29,6 +32,7 @@ pub use twin::{Equilibrium, Pair, PairKind, Reaction};
 
 use crate::check::{Key, Method, Row, Symbol};
 use crate::construct::{ConstructionError, Context};
+use crate::geom::DVec2;
 use crate::linkage::{KinPlan, PositionPlan};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
@@ -87,6 +91,12 @@ pub enum ForceError {
         /// The plan's labels, compactly.
         valid: String,
     },
+    /// The successive approximations of friction do not settle.
+    #[error("the friction in the pairs does not settle after {approximations} successive approximations: the mechanism self-locks (f too large)")]
+    SelfLocking {
+        /// How many were made.
+        approximations: usize,
+    },
     /// No round μ_F can be formed.
     #[error("no force scale μ_F can be chosen for {0} N")]
     NoScale(f64),
@@ -113,8 +123,33 @@ pub struct PositionForces {
     pub scale_f: Scale,
     /// The guides' reactions on sliders of known length, by the twin.
     pub sliders: Vec<SliderEnds>,
+    /// The same position with friction in the pairs, when `[forces.friction]` asks for it.
+    pub friction: Option<Box<WithFriction>>,
     /// The rows.
     pub rows: Vec<Row>,
+}
+
+/// One position's force analysis with friction in the pairs ([`pair_friction`]): the
+/// polygons, the lever and the twin of the loads plus the friction loads, settled by
+/// successive approximations.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WithFriction {
+    /// The friction loads as the polygons give them.
+    pub loads: Vec<Load>,
+    /// The friction loads as the twin gives them.
+    pub loads_exact: Vec<Load>,
+    /// The polygons.
+    pub polygons: Polygons,
+    /// Zhukovsky's lever.
+    pub lever: lever::Lever,
+    /// The twin.
+    pub twin: Equilibrium,
+    /// The balancing moment from the power balance with the friction's power, N·m.
+    pub m_power: f64,
+    /// The power lost in the pairs (the twin's), W, ≤ 0.
+    pub lost: f64,
+    /// The approximations the polygons and the twin took.
+    pub approximations: [usize; 2],
 }
 
 /// Where a guide's reaction acts on a slider of known length (seed 001 §7.2, Fig. 28): when
@@ -228,19 +263,48 @@ pub fn analyse(
         ctx: *ctx,
         sense,
     };
-    let polygons = polygons::polygons(&board, &loads, &spec.drive).map_err(|(g, error)| {
-        ForceError::Polygon {
-            position: pos.label.clone(),
-            what: if g == usize::MAX {
-                "the driving link".into()
-            } else {
-                format!("group {}", g + 1)
-            },
-            error: Box::new(error),
-        }
-    })?;
+    let polygons = polygons::polygons(&board, &loads, &spec.drive)
+        .map_err(|e| polygon_error(&pos.label, e))?;
     let lever = lever::lever(prog, &pos.built, mu_l, vp, &loads, &spec.drive, w1, ctx);
-    let rows = rows(&pos.label, &polygons, &lever, &twin, &loads, &loads_exact);
+    let friction = match &spec.friction {
+        Some(fr) => {
+            let route = Route {
+                board: &board,
+                vp,
+                drawn: &drawn,
+                exact: &exact,
+                w1,
+            };
+            let big = twin
+                .reactions
+                .iter()
+                .map(|r| r.force.length())
+                .fold(0.0, f64::max);
+            Some(Box::new(with_friction(
+                spec,
+                fr,
+                &route,
+                &pos.pose,
+                &loads,
+                &loads_exact,
+                big,
+                &pos.label,
+            )?))
+        }
+        None => None,
+    };
+    let mut rows = rows(&pos.label, &loads, &loads_exact);
+    rows.extend(reaction_rows(&pos.label, "", &polygons, &lever, &twin));
+    if let Some(f) = &friction {
+        rows.extend(reaction_rows(
+            &pos.label,
+            "_f",
+            &f.polygons,
+            &f.lever,
+            &f.twin,
+        ));
+    }
+    zero_references(&mut rows);
     let sliders = twin
         .reactions
         .iter()
@@ -269,61 +333,170 @@ pub fn analyse(
         m_power,
         scale_f,
         sliders,
+        friction,
         rows,
     })
 }
 
-/// The rows of one position: inertia loads (read off the acceleration plan), reactions and
-/// their points (polygons), the balancing moment and force (polygons and lever).
-fn rows(
-    label: &str,
-    polygons: &Polygons,
-    lever: &lever::Lever,
-    twin: &Equilibrium,
+/// What the approximations of one position draw on: the polygons' board, the velocity plan
+/// and the two motions.
+struct Route<'a> {
+    board: &'a polygons::Board<'a>,
+    vp: &'a KinPlan,
+    drawn: &'a Motion,
+    exact: &'a Motion,
+    w1: f64,
+}
+
+/// The position with friction in the pairs: the twin and the polygons each settled by
+/// successive approximations (to 1e-13 of the largest reaction, or to two drafting
+/// resolutions on the force polygon), the lever with the polygons' friction loads.
+#[allow(clippy::too_many_arguments)]
+fn with_friction(
+    spec: &ForceSpec,
+    fr: &pair_friction::PairFriction,
+    route: &Route<'_>,
+    pose: &crate::linkage::Pose,
     loads: &[Load],
-    exact: &[Load],
-) -> Vec<Row> {
-    let mut rows = Vec::new();
-    let mut push = |symbol: Symbol, subject: String, method: Method, g: f64, a: f64| {
-        rows.push(Row {
-            key: Key::at_position(symbol, subject, label),
-            method,
-            graphical: g,
-            analytic: a,
-            conditioning: None,
-            scale: a.abs(),
-        });
+    loads_exact: &[Load],
+    big: f64,
+    pos_label: &str,
+) -> Result<WithFriction, ForceError> {
+    use pair_friction::{approximate, friction_loads, friction_power, Kinematics};
+    let board = route.board;
+    let prog = board.prog;
+    let sense = route.w1.signum();
+    let exact = Kinematics {
+        prog,
+        dir: pose.dir.clone(),
+        origin: &pose.origin,
+        motion: route.exact,
     };
+    let (twin, loads_exact_f, n_twin) = approximate(
+        loads_exact,
+        1e-13 * big,
+        |l| twin::solve(prog, pose, l, &spec.drive, sense),
+        |t| t.reactions.clone(),
+        |r| friction_loads(fr, &exact, r),
+    )?;
+    let drawn = Kinematics {
+        prog,
+        dir: board
+            .built
+            .angle
+            .iter()
+            .map(|a| DVec2::from_angle(*a))
+            .collect(),
+        origin: &board.built.origin,
+        motion: route.drawn,
+    };
+    let resolution = board.ctx.drafting.resolution_mm() * board.mu_f.value();
+    let (polygons, loads_f, n_pol) = approximate(
+        loads,
+        (1e-13 * big).max(2.0 * resolution),
+        |l| {
+            polygons::polygons(board, l, &spec.drive)
+                .map_err(|e| polygon_error(&format!("{} with friction", pos_label), e))
+        },
+        Polygons::reactions,
+        |r| friction_loads(fr, &drawn, r),
+    )?;
+    let all: Vec<Load> = loads.iter().chain(&loads_f).cloned().collect();
+    let lever = lever::lever(
+        prog,
+        board.built,
+        board.mu_l,
+        route.vp,
+        &all,
+        &spec.drive,
+        route.w1,
+        &board.ctx,
+    );
+    let lost = friction_power(&loads_exact_f, &exact);
+    Ok(WithFriction {
+        m_power: twin::power_balance(loads_exact, route.exact, route.w1) - lost / route.w1,
+        loads: loads_f,
+        loads_exact: loads_exact_f,
+        polygons,
+        lever,
+        twin,
+        lost,
+        approximations: [n_pol, n_twin],
+    })
+}
+
+/// A polygon that cannot be closed at position `label` (`g` = `usize::MAX`: the driving
+/// link).
+fn polygon_error(label: &str, (g, error): (usize, ConstructionError)) -> ForceError {
+    ForceError::Polygon {
+        position: label.to_string(),
+        what: if g == usize::MAX {
+            "the driving link".into()
+        } else {
+            format!("group {}", g + 1)
+        },
+        error: Box::new(error),
+    }
+}
+
+/// A row of position `label` (its zero reference set by [`zero_references`]).
+fn row(label: &str, symbol: Symbol, subject: String, method: Method, g: f64, a: f64) -> Row {
+    Row {
+        key: Key::at_position(symbol, subject, label),
+        method,
+        graphical: g,
+        analytic: a,
+        conditioning: None,
+        scale: a.abs(),
+    }
+}
+
+/// The inertia loads of one position, read off the acceleration plan.
+fn rows(label: &str, loads: &[Load], exact: &[Load]) -> Vec<Row> {
+    let mut rows = Vec::new();
     for e in exact
         .iter()
         .filter(|l| matches!(l.kind, LoadKind::Inertia | LoadKind::InertiaMoment))
     {
         let g = loads.iter().find(|l| l.kind == e.kind && l.link == e.link);
         let (g_f, g_m) = g.map_or((0.0, 0.0), |g| (g.force.length(), g.moment));
-        match e.kind {
-            LoadKind::Inertia => push(
+        let subject = format!("in{}", e.link);
+        rows.push(match e.kind {
+            LoadKind::Inertia => row(
+                label,
                 Symbol::Force,
-                format!("in{}", e.link),
+                subject,
                 Method::Plan,
                 g_f,
                 e.force.length(),
             ),
-            _ => push(
-                Symbol::Moment,
-                format!("in{}", e.link),
-                Method::Plan,
-                g_m,
-                e.moment,
-            ),
-        }
+            _ => row(label, Symbol::Moment, subject, Method::Plan, g_m, e.moment),
+        });
     }
-    let graphical: Vec<&Reaction> = polygons
-        .groups
-        .iter()
-        .rev()
-        .flat_map(|g| g.reactions.iter())
-        .chain(std::iter::once(&polygons.driver.reaction))
-        .collect();
+    rows
+}
+
+/// The reactions and their points (polygons), the balancing moment and force (polygons and
+/// lever) of one position; `suffix` marks the analysis with friction (`_f`).
+fn reaction_rows(
+    label: &str,
+    suffix: &str,
+    polygons: &Polygons,
+    lever: &lever::Lever,
+    twin: &Equilibrium,
+) -> Vec<Row> {
+    let mut rows = Vec::new();
+    let mut push = |symbol: Symbol, subject: String, method: Method, g: f64, a: f64| {
+        rows.push(row(
+            label,
+            symbol,
+            format!("{subject}{suffix}"),
+            method,
+            g,
+            a,
+        ));
+    };
+    let graphical = polygons.reactions();
     for r in &twin.reactions {
         let Some(g) = graphical
             .iter()
@@ -343,57 +516,60 @@ fn rows(
             push(Symbol::Length, subject, Method::Polygon, gs, s);
         }
     }
+    let bal = || "bal".to_string();
     push(
         Symbol::Moment,
-        "bal".into(),
+        bal(),
         Method::Polygon,
         polygons.driver.m_bal,
         twin.m_bal,
     );
     push(
         Symbol::Moment,
-        "bal".into(),
+        bal(),
         Method::Lever,
         lever.m_bal,
         twin.m_bal,
     );
     if let Some(f) = twin.f_bal {
-        push(
-            Symbol::Force,
-            "bal".into(),
-            Method::Polygon,
-            polygons.driver.f_bal.unwrap_or(f64::NAN),
-            f,
-        );
-        push(
-            Symbol::Force,
-            "bal".into(),
-            Method::Lever,
-            lever.f_bal.unwrap_or(f64::NAN),
-            f,
-        );
+        let p = polygons.driver.f_bal.unwrap_or(f64::NAN);
+        push(Symbol::Force, bal(), Method::Polygon, p, f);
+        let l = lever.f_bal.unwrap_or(f64::NAN);
+        push(Symbol::Force, bal(), Method::Lever, l, f);
     }
-    // A value's zero reference is the largest of its kind at the position (a guide
-    // reaction's point on its reference point is zero against the other points).
+    if let (Some(g), Some(a)) = (polygons.driver.arm, twin.arm) {
+        push(Symbol::Length, bal(), Method::Polygon, g, a);
+    }
+    rows
+}
+
+/// A value's zero reference is the largest of its kind at the position (a guide reaction's
+/// point on its reference point is zero against the other points).
+fn zero_references(rows: &mut [Row]) {
     let largest = |s: Symbol, rows: &[Row]| {
         rows.iter()
             .filter(|r| r.key.symbol == s && r.analytic.is_finite())
             .fold(0.0f64, |m, r| m.max(r.analytic.abs()))
     };
-    let scales: Vec<f64> = rows.iter().map(|r| largest(r.key.symbol, &rows)).collect();
+    let scales: Vec<f64> = rows.iter().map(|r| largest(r.key.symbol, rows)).collect();
     for (r, s) in rows.iter_mut().zip(scales) {
         r.scale = s;
     }
-    rows
 }
 
-/// The notes of one position for the report: the polygon against the lever (the seed's
-/// «погрешность»), and every slider whose guide reaction falls outside it.
+/// The notes of one position for the report: the power balance against the linear solve,
+/// the polygon against the lever (the seed's «погрешность»), every slider whose guide
+/// reaction falls outside it, and the friction in the pairs.
 pub fn notes(f: &PositionForces) -> Vec<String> {
     use crate::scale::{format_sig, Lang};
     let n = |x: f64| format_sig(x, 6, Lang::En);
     let (p, l) = (f.polygons.driver.m_bal, f.lever.m_bal);
     let mut out = vec![format!(
+        "position {}: the balancing moment by the power balance Σ F·v + Σ M·ω + M_bal·ω₁ = 0 is {} N·m; the linear solve of the links' equilibrium gives {} N·m",
+        f.label,
+        format_sig(f.m_power, 10, Lang::En),
+        format_sig(f.twin.m_bal, 10, Lang::En),
+    ), format!(
         "position {}: M_bal by the force polygons {} N·m, by Zhukovsky's lever {} N·m: they differ by {} % of the polygons' value",
         f.label,
         n(p),
@@ -407,5 +583,72 @@ pub fn notes(f: &PositionForces) -> Vec<String> {
             f.label, s.pair.from, s.pair.to, n(s.force), n(s.offset), n(s.length), n(a), n(b)
         ));
     }
+    if let Some(w) = &f.friction {
+        let (m0, m) = (f.twin.m_bal, w.twin.m_bal);
+        let eta = if m != 0.0 { m0 / m } else { f64::NAN };
+        let eta = if eta > 0.0 && eta < 1.0 {
+            format!(
+                ", the instantaneous efficiency η = M_bal/M_bal_f = {}",
+                format_sig(eta, 4, Lang::En)
+            )
+        } else {
+            String::new()
+        };
+        out.push(format!(
+            "position {}: with friction in the pairs M_bal_f = {} N·m against M_bal = {} N·m without: the pairs lose {} W{eta}; the power balance with the friction's power gives {} N·m; the polygons settled after {} successive approximations, the linear solve after {}",
+            f.label,
+            format_sig(m, 10, Lang::En),
+            format_sig(m0, 10, Lang::En),
+            n(-w.lost),
+            format_sig(w.m_power, 10, Lang::En),
+            w.approximations[0],
+            w.approximations[1],
+        ));
+    }
     out
+}
+
+/// The seed's printed values against the rows of the analysis: each note gives the seed's
+/// value, the analysis' (graphical and analytic) and how far apart they are; a seed value
+/// whose row the report does not have says so.
+pub fn seed_notes(seed: &[SeedValue], rows: &[Row]) -> Vec<String> {
+    use crate::scale::{format_sig, Lang};
+    let n = |x: f64| format_sig(x, 6, Lang::En);
+    seed.iter()
+        .map(|s| {
+            let row = rows.iter().find(|r| {
+                r.quantity() == s.quantity
+                    && r.position().as_deref() == Some(s.position.as_str())
+                    && s.method.is_none_or(|m| m == r.method)
+            });
+            let method = s.method.map_or(String::new(), |m| format!(" ({})", m.key()));
+            match row {
+                Some(r) => {
+                    let a = r.analytic.abs();
+                    let off = if a > 0.0 { (s.value - a) / a * 100.0 } else { f64::NAN };
+                    let unit = r.unit();
+                    let si = if s.printed.ends_with(&format!(" {unit}")) {
+                        String::new()
+                    } else {
+                        format!(" = {} {unit}", n(s.value))
+                    };
+                    format!(
+                        "position {}: {}{method}: the seed prints {}{si} ({}); this analysis gives {} {unit} (analytic {} {unit}): the seed's value is {}{} % off and is not reproduced",
+                        s.position,
+                        s.quantity,
+                        s.printed,
+                        s.source,
+                        n(r.graphical.abs()),
+                        n(a),
+                        if off > 0.0 { "+" } else { "" },
+                        format_sig(off, 3, Lang::En),
+                    )
+                }
+                None => format!(
+                    "position {}: {}{method}: the seed prints {} ({}), but this report has no such row",
+                    s.position, s.quantity, s.printed, s.source
+                ),
+            }
+        })
+        .collect()
 }

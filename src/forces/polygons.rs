@@ -88,6 +88,8 @@ pub struct DriverPolygon {
     pub m_bal: f64,
     /// The balancing force (gear drive), N.
     pub f_bal: Option<f64>,
+    /// The balancing force's arm about the crank's centre, measured (gear drive), m.
+    pub arm: Option<f64>,
 }
 
 /// Everything one position's polygons give.
@@ -97,6 +99,19 @@ pub struct Polygons {
     pub groups: Vec<GroupPolygon>,
     /// The driving link.
     pub driver: DriverPolygon,
+}
+
+impl Polygons {
+    /// Every reaction read off the polygons: the groups' from the last to the first, then
+    /// the frame's on the crank.
+    pub fn reactions(&self) -> Vec<Reaction> {
+        self.groups
+            .iter()
+            .rev()
+            .flat_map(|g| g.reactions.iter().copied())
+            .chain(std::iter::once(self.driver.reaction))
+            .collect()
+    }
 }
 
 /// What every drawing of a position starts from.
@@ -657,7 +672,7 @@ fn driver(
                 ..unit
             });
             pol.lay("F_{у}", d * f);
-            (-k, Some(f))
+            (-k, Some((f, arm.abs())))
         }
     };
     let e = pol.tip;
@@ -669,6 +684,7 @@ fn driver(
         polygon: pol.rec.finish(),
         reaction,
         m_bal,
-        f_bal,
+        f_bal: f_bal.map(|(f, _)| f),
+        arm: f_bal.map(|(_, arm)| arm),
     })
 }

@@ -119,4 +119,26 @@ pub struct ForceSpec {
     pub resistances: Vec<Resistance>,
     /// The drive.
     pub drive: Drive,
+    /// Friction in the pairs (`[forces.friction]`), analysed beside the frictionless case.
+    pub friction: Option<super::pair_friction::PairFriction>,
+    /// The seed's printed values to compare with (`[[forces.seed]]`).
+    pub seed: Vec<SeedValue>,
+}
+
+/// A value the seed prints for a row of the report (`[[forces.seed]]`): the report notes
+/// how far it is from the analysis, so that a seed's error is flagged, never matched.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeedValue {
+    /// The row's quantity (`F_bal`, `h_0_5`).
+    pub quantity: String,
+    /// The row's position label.
+    pub position: String,
+    /// The row's method (`None`: the first row of the quantity at the position).
+    pub method: Option<crate::check::Method>,
+    /// The seed's value in the row's SI unit (its magnitude is compared).
+    pub value: f64,
+    /// The value as the seed prints it (`112 kgf`).
+    pub printed: String,
+    /// Where the seed prints it and what is wrong with it.
+    pub source: String,
 }

@@ -50,6 +50,98 @@ fn spec(masses: &[(f64, f64)], f5: (f64, f64), gear: Option<f64>) -> ForceSpec {
                 towards,
             }),
         },
+        friction: None,
+        seed: Vec::new(),
+    }
+}
+
+/// One random position set up for its force analysis: the constructed position, its pose,
+/// plans, both motions and both sets of loads, and μ_F.
+struct Case {
+    prog: crate::linkage::Program,
+    built: crate::linkage::Built,
+    pose: crate::linkage::Pose,
+    vp: crate::linkage::KinPlan,
+    exact: Motion,
+    drawn: Motion,
+    le: Vec<Load>,
+    lg: Vec<Load>,
+    twin: Equilibrium,
+    mu_l: Scale,
+    mu_f: Scale,
+}
+
+const W1: f64 = -7.0;
+
+fn case(m: &Mechanism, phi: f64, spec: &ForceSpec) -> Result<Case, TestCaseError> {
+    let (prog, built, pose) =
+        build(m, phi).ok_or_else(|| TestCaseError::reject("not assembled"))?;
+    let s = pose.crossing_sin.iter().copied().fold(1.0, f64::min);
+    prop_assume!(s >= WELL);
+    let r = prog.crank_length;
+    let mu_l = Scale::new(0.001, Quantity::Length).unwrap();
+    let sv = Scale::new(W1.abs() * r / 50.0, Quantity::Velocity).unwrap();
+    let sa = Scale::new(W1 * W1 * r / 50.0, Quantity::Acceleration).unwrap();
+    let setup = PlanSetup {
+        prog: &prog,
+        built: &built,
+        mu_l: mu_l.value(),
+        w1: W1,
+        ctx: plan_context(),
+    };
+    let vp = kin_plan(&setup, PlanKind::Velocity, sv, None)
+        .map_err(|_| TestCaseError::reject("plan refused"))?;
+    let ap = kin_plan(&setup, PlanKind::Acceleration, sa, Some(&vp))
+        .map_err(|_| TestCaseError::reject("plan refused"))?;
+    let exact = Motion::analytic(&pose, W1);
+    let le = loads(spec, &prog, &exact, None).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let twin = match solve(&prog, &pose, &le, &spec.drive, W1.signum()) {
+        Ok(t) => t,
+        Err(ForceError::Singular) => return Err(TestCaseError::reject("singular")),
+        Err(e) => return Err(TestCaseError::fail(e.to_string())),
+    };
+    let drawn = Motion {
+        p: built.p.iter().map(|x| *x * mu_l.value()).collect(),
+        v: vp.images.iter().map(|x| *x * sv.value()).collect(),
+        a: ap.images.iter().map(|x| *x * sa.value()).collect(),
+        omega: vp.rate.clone(),
+        eps: ap.rate.clone(),
+    };
+    let lg = loads(spec, &prog, &drawn, None).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let big = largest(&twin).max(1e-3);
+    let mu_f = Scale::round_for(big, 100.0, Quantity::Force).unwrap();
+    Ok(Case {
+        prog,
+        built,
+        pose,
+        vp,
+        exact,
+        drawn,
+        le,
+        lg,
+        twin,
+        mu_l,
+        mu_f,
+    })
+}
+
+fn largest(twin: &Equilibrium) -> f64 {
+    twin.reactions
+        .iter()
+        .map(|r| r.force.length())
+        .fold(0.0, f64::max)
+}
+
+impl Case {
+    fn board(&self) -> Board<'_> {
+        Board {
+            prog: &self.prog,
+            built: &self.built,
+            mu_l: self.mu_l,
+            mu_f: self.mu_f,
+            ctx: plan_context(),
+            sense: W1.signum(),
+        }
     }
 }
 
@@ -59,62 +151,21 @@ fn analyse_random(
     phi: f64,
     spec: &ForceSpec,
 ) -> Result<(Equilibrium, Polygons, lever::Lever, f64), TestCaseError> {
-    let (prog, built, pose) =
-        build(m, phi).ok_or_else(|| TestCaseError::reject("not assembled"))?;
-    let s = pose.crossing_sin.iter().copied().fold(1.0, f64::min);
-    prop_assume!(s >= WELL);
-    let w1: f64 = -7.0;
-    let r = prog.crank_length;
-    let mu_l = Scale::new(0.001, Quantity::Length).unwrap();
-    let sv = Scale::new(w1.abs() * r / 50.0, Quantity::Velocity).unwrap();
-    let sa = Scale::new(w1 * w1 * r / 50.0, Quantity::Acceleration).unwrap();
-    let ctx = plan_context();
-    let setup = PlanSetup {
-        prog: &prog,
-        built: &built,
-        mu_l: mu_l.value(),
-        w1,
-        ctx,
-    };
-    let vp = kin_plan(&setup, PlanKind::Velocity, sv, None)
-        .map_err(|_| TestCaseError::reject("plan refused"))?;
-    let ap = kin_plan(&setup, PlanKind::Acceleration, sa, Some(&vp))
-        .map_err(|_| TestCaseError::reject("plan refused"))?;
-    let exact = Motion::analytic(&pose, w1);
-    let ph = None;
-    let le = loads(spec, &prog, &exact, ph).map_err(|e| TestCaseError::fail(e.to_string()))?;
-    let twin = match solve(&prog, &pose, &le, &spec.drive, w1.signum()) {
-        Ok(t) => t,
-        Err(ForceError::Singular) => return Err(TestCaseError::reject("singular")),
-        Err(e) => return Err(TestCaseError::fail(e.to_string())),
-    };
-    let power = power_balance(&le, &exact, w1);
-    let drawn = Motion {
-        p: built.p.iter().map(|x| *x * mu_l.value()).collect(),
-        v: vp.images.iter().map(|x| *x * sv.value()).collect(),
-        a: ap.images.iter().map(|x| *x * sa.value()).collect(),
-        omega: vp.rate.clone(),
-        eps: ap.rate.clone(),
-    };
-    let lg = loads(spec, &prog, &drawn, ph).map_err(|e| TestCaseError::fail(e.to_string()))?;
-    let big = twin
-        .reactions
-        .iter()
-        .map(|r| r.force.length())
-        .fold(1e-3, f64::max);
-    let mu_f = Scale::round_for(big, 100.0, Quantity::Force).unwrap();
-    let board = Board {
-        prog: &prog,
-        built: &built,
-        mu_l,
-        mu_f,
-        ctx,
-        sense: w1.signum(),
-    };
-    let pol = polygons(&board, &lg, &spec.drive)
+    let c = case(m, phi, spec)?;
+    let power = power_balance(&c.le, &c.exact, W1);
+    let pol = polygons(&c.board(), &c.lg, &spec.drive)
         .map_err(|(g, e)| TestCaseError::fail(format!("group {g}: {e}")))?;
-    let lev = lever::lever(&prog, &built, mu_l, &vp, &lg, &spec.drive, w1, &ctx);
-    Ok((twin, pol, lev, power))
+    let lev = lever::lever(
+        &c.prog,
+        &c.built,
+        c.mu_l,
+        &c.vp,
+        &c.lg,
+        &spec.drive,
+        W1,
+        &plan_context(),
+    );
+    Ok((c.twin, pol, lev, power))
 }
 
 proptest! {
@@ -162,5 +213,81 @@ proptest! {
         prop_assert_eq!(pol.driver.m_bal, 0.0);
         prop_assert_eq!(lev.m_bal, 0.0);
         prop_assert_eq!(power, 0.0);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// With friction in the pairs (successive approximations) the polygons, the lever and
+    /// the power balance still equal the linear solve; a sliding pair's total reaction is
+    /// turned from the normal by exactly φ = arctg f, a journal's reaction is tangent to its
+    /// friction circle against the relative rotation, and the balancing moment's power grows
+    /// by exactly the power the pairs lose.
+    #[test]
+    fn friction_turns_the_reactions_and_costs_power(
+        (m, phi) in gen::mechanism(),
+        masses in proptest::collection::vec((0.1..20.0f64, 0.0..0.5f64), 4),
+        f5 in (1.0..500.0f64, -3.2..3.2f64),
+        gear in proptest::option::of(-3.2..3.2f64),
+        f in 0.01..0.3f64,
+        radius in 0.0..0.03f64,
+    ) {
+        use super::pair_friction::PairFriction;
+        use super::friction::{friction_angle, friction_circle_tangent};
+        let mut spec = spec(&masses, f5, gear);
+        let fr = PairFriction { f, radius, radii: Vec::new() };
+        spec.friction = Some(fr.clone());
+        let c = case(&m, phi, &spec)?;
+        let board = c.board();
+        let route = Route { board: &board, vp: &c.vp, drawn: &c.drawn, exact: &c.exact, w1: W1 };
+        let w = match with_friction(&spec, &fr, &route, &c.pose, &c.lg, &c.le, largest(&c.twin), "1") {
+            Ok(w) => w,
+            Err(ForceError::SelfLocking { .. } | ForceError::Singular) => {
+                return Err(TestCaseError::reject("self-locking"));
+            }
+            Err(e) => return Err(TestCaseError::fail(e.to_string())),
+        };
+        let big = largest(&w.twin);
+        for g in w.polygons.reactions() {
+            let t = w.twin.reaction(g.pair.from, g.pair.to).expect("the same pair in the twin");
+            prop_assert!((g.force - t).length() <= REL * (big + t.length()), "R_{}_{}: {} vs {}", g.pair.from, g.pair.to, g.force, t);
+        }
+        let mb = w.twin.m_bal.abs() + big * 0.2;
+        prop_assert!((w.polygons.driver.m_bal - w.twin.m_bal).abs() <= REL * mb);
+        prop_assert!((w.lever.m_bal - w.twin.m_bal).abs() <= REL * mb, "lever {} vs {}", w.lever.m_bal, w.twin.m_bal);
+        prop_assert!((w.m_power - w.twin.m_bal).abs() <= REL * mb, "power {} vs {}", w.m_power, w.twin.m_bal);
+        // The balancing moment's power grows by what the pairs lose.
+        prop_assert!(w.lost <= 0.0);
+        let gained = (w.twin.m_bal - c.twin.m_bal) * W1;
+        prop_assert!((gained + w.lost).abs() <= REL * (mb + c.twin.m_bal.abs()) * W1.abs(), "{gained} vs {}", w.lost);
+        let omega = |l: usize| if l == 0 { 0.0 } else { c.exact.omega[l] };
+        for r in &w.twin.reactions {
+            let (from, to) = (r.pair.from, r.pair.to);
+            match r.pair.kind {
+                PairKind::Prismatic { .. } => {
+                    let name = format!("F_{{тр{from}-{to}}}");
+                    let Some(fl) = w.loads_exact.iter().find(|l| l.link == to && l.name == name) else {
+                        continue;
+                    };
+                    let total = r.force + fl.force;
+                    let turned = r.force.angle_to(total).abs();
+                    prop_assert!((turned - friction_angle(f)).abs() <= 1e-10, "turned {turned} vs φ {}", friction_angle(f));
+                }
+                PairKind::Revolute(k) => {
+                    let name = format!("M_{{тр{from}-{to}}}");
+                    let Some(fl) = w.loads_exact.iter().find(|l| l.link == to && l.name == name) else {
+                        continue;
+                    };
+                    let rho = f * radius;
+                    prop_assert!((fl.moment.abs() - rho * r.force.length()).abs() <= 1e-12 * big);
+                    // R carried tangent to the friction circle has the couple's moment.
+                    let centre = c.pose.p[k];
+                    let line = friction_circle_tangent(centre, r.force, omega(to) - omega(from), rho).expect("a line");
+                    let moment = (line.point - centre).perp_dot(r.force);
+                    prop_assert!((moment - fl.moment).abs() <= 1e-9 * (big * rho + 1e-12), "{moment} vs {}", fl.moment);
+                }
+            }
+        }
     }
 }

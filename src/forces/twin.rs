@@ -122,6 +122,8 @@ pub struct Equilibrium {
     /// The balancing force at the pitch point along the line of action (gear drive), N;
     /// positive in the sense that drives the crank in its sense of rotation.
     pub f_bal: Option<f64>,
+    /// The balancing force's arm about the crank's centre (gear drive), m.
+    pub arm: Option<f64>,
 }
 
 impl Equilibrium {
@@ -255,14 +257,18 @@ pub fn solve(
             }
         })
         .collect();
-    let (m_bal, f_bal) = match gear {
-        None => (x[bal], None),
-        Some((p, d)) => ((p - origin).perp_dot(d) * x[bal], Some(x[bal])),
+    let (m_bal, f_bal, arm) = match gear {
+        None => (x[bal], None, None),
+        Some((p, d)) => {
+            let arm = (p - origin).perp_dot(d);
+            (arm * x[bal], Some(x[bal]), Some(arm.abs()))
+        }
     };
     Ok(Equilibrium {
         reactions,
         m_bal,
         f_bal,
+        arm,
     })
 }
 

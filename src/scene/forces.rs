@@ -2,11 +2,13 @@
 //! working resistance, the drive of the crank and the positions of the force analysis, each
 //! checked with its key path and converted to SI.
 
-use super::check::{item, join, Checker};
+use super::check::{item, join, quoted, Checker};
 use super::kinematics::{point, point_names, position_labels};
-use super::raw::{RawDrive, RawForces, RawLinkLoad, RawResistance};
+use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance, RawSeedValue};
+use crate::check::Method;
+use crate::forces::pair_friction::PairFriction;
 use crate::forces::{
-    Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke, G_STANDARD,
+    Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, SeedValue, Stroke, G_STANDARD,
 };
 use crate::linkage::Mechanism;
 use crate::scale::Quantity;
@@ -80,7 +82,6 @@ pub(crate) fn forces(
     ForceSpec {
         g,
         gravity_dir: check.angle(&key("gravity"), raw.gravity, -90.0),
-        positions,
         scale_f: check.scale(
             &key("scale_f"),
             raw.scale_f,
@@ -92,7 +93,111 @@ pub(crate) fn forces(
         drive: raw
             .drive
             .map_or(Drive::Coupling, |d| drive(check, &key("drive"), &d)),
+        friction: raw
+            .friction
+            .map(|f| pair_friction(check, &key("friction"), f, names.as_deref())),
+        seed: raw
+            .seed
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| seed_value(check, &item(&key("seed"), i), s, &positions))
+            .collect(),
+        positions,
     }
+}
+
+/// One kilogram-force, N.
+const KGF: f64 = 9.806_65;
+
+/// `[[forces.seed]]`: the quantity (a force, moment or length row of the force analysis),
+/// one of the analysed positions, the method, the value with its unit, the source.
+fn seed_value(
+    check: &mut Checker,
+    base: &str,
+    raw: &RawSeedValue,
+    positions: &[String],
+) -> Option<SeedValue> {
+    let k = |s: &str| join(base, s);
+    const QUANTITY: &str = "a row of the force analysis (R_1_2, F_bal, M_bal, h_0_5, F_in2)";
+    let quantity = check.required(&k("quantity"), raw.quantity.clone(), QUANTITY)?;
+    let units: &[(&str, f64)] = match quantity.split('_').next() {
+        Some("R" | "F") => &[("N", 1.0), ("kgf", KGF)],
+        Some("M") => &[("N*m", 1.0), ("kgf*m", KGF)],
+        Some("h") => &[("m", 1.0), ("mm", 1e-3)],
+        _ => {
+            check.push(
+                k("quantity"),
+                Some(quoted(&quantity)),
+                format!("expected {QUANTITY}"),
+            );
+            return None;
+        }
+    };
+    let position = check.required(&k("position"), raw.position.clone(), "an analysed position");
+    if let Some(p) = position.as_ref().filter(|p| !positions.contains(p)) {
+        let list: Vec<String> = positions.iter().map(|p| quoted(p)).collect();
+        check.push(
+            k("position"),
+            Some(quoted(p)),
+            format!("expected one of forces.positions ({})", list.join(", ")),
+        );
+    }
+    let method = match raw.method.as_deref() {
+        None => None,
+        Some(_) => check
+            .word(
+                &k("method"),
+                raw.method.as_ref(),
+                &["polygon", "lever", "plan"],
+            )
+            .map(|i| [Method::Polygon, Method::Lever, Method::Plan][i]),
+    };
+    let value = check.required(&k("value"), raw.value, "the value the seed prints")?;
+    let names: Vec<&str> = units.iter().map(|(u, _)| *u).collect();
+    let unit = check.word(&k("unit"), raw.unit.as_ref(), &names)?;
+    let value = check.in_range(&k("value"), value.abs(), MAX_LOAD, "a finite value, not 0");
+    let source = check.required(&k("source"), raw.source.clone(), "where the seed prints it")?;
+    Some(SeedValue {
+        quantity,
+        position: position?,
+        method,
+        value: value * units[unit].1,
+        printed: format!("{} {}", raw.value.unwrap_or(value), units[unit].0),
+        source,
+    })
+}
+
+/// `[forces.friction]`: f, the journals' radius and the journals of their own radius.
+fn pair_friction(
+    check: &mut Checker,
+    base: &str,
+    raw: RawPairFriction,
+    names: Option<&[String]>,
+) -> PairFriction {
+    let k = |s: &str| join(base, s);
+    let f = match check.required(&k("f"), raw.f, "a coefficient of friction f > 0") {
+        Some(f) => check.in_range(&k("f"), f, 1.0, "a coefficient of friction 0 < f ≤ 1"),
+        None => 0.0,
+    };
+    let radius = match raw.radius {
+        Some(0.0) | None => 0.0,
+        r => check.length(&k("radius"), r),
+    };
+    let radii = raw
+        .radii
+        .unwrap_or_default()
+        .into_iter()
+        .filter_map(|(name, r)| {
+            let key = join(&k("radii"), &name);
+            let r = check.length(&key, Some(r));
+            let name = match names {
+                Some(_) => point(check, &key, Some(name), names)?,
+                None => name,
+            };
+            Some((name, r))
+        })
+        .collect();
+    PairFriction { f, radius, radii }
 }
 
 /// A link number that must be a moving link of the mechanism.

@@ -292,6 +292,30 @@ pub(crate) struct RawForces {
     #[serde(default)]
     pub resistance: Vec<RawResistance>,
     pub drive: Option<RawDrive>,
+    pub friction: Option<RawPairFriction>,
+    #[serde(default)]
+    pub seed: Vec<RawSeedValue>,
+}
+
+/// `[[forces.seed]]`: a value the seed prints for a row of the report.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawSeedValue {
+    pub quantity: Option<String>,
+    pub position: Option<String>,
+    pub method: Option<String>,
+    pub value: Option<f64>,
+    pub unit: Option<String>,
+    pub source: Option<String>,
+}
+
+/// `[forces.friction]`: friction in the mechanism's pairs.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPairFriction {
+    pub f: Option<f64>,
+    pub radius: Option<f64>,
+    pub radii: Option<std::collections::BTreeMap<String, f64>>,
 }
 
 /// `[[forces.link]]`: a link's mass, centre of mass and moment of inertia.

@@ -616,14 +616,12 @@ impl<'s> Session<'s> {
             for i in self.force_positions()? {
                 let f = self.forces(&k.scales, i)?;
                 rows.extend(f.rows.iter().cloned());
-                notes.push(format!(
-                    "position {}: the balancing moment by the power balance Σ F·v + Σ M·ω + M_bal·ω₁ = 0 is {} N·m; the linear solve of the links' equilibrium gives {} N·m",
-                    f.label,
-                    crate::scale::format_sig(f.m_power, 10, crate::scale::Lang::En),
-                    crate::scale::format_sig(f.twin.m_bal, 10, crate::scale::Lang::En),
-                ));
                 notes.extend(crate::forces::notes(&f));
             }
+            notes.extend(crate::forces::seed_notes(
+                &self.force_spec("the force analysis")?.seed,
+                &rows,
+            ));
         }
         Ok(Report {
             scene: self.scene.stem.clone(),
