@@ -246,14 +246,8 @@ pub fn analyse(
     let loads = loads::loads(spec, prog, &drawn, ph)?;
     let scale_f = match spec.scale_f {
         Some(s) => s,
-        None => {
-            let big = twin
-                .reactions
-                .iter()
-                .map(|r| r.force.length())
-                .fold(0.0, f64::max);
-            Scale::round_for(big, POLYGON_MM, Quantity::Force).ok_or(ForceError::NoScale(big))?
-        }
+        None => Scale::round_for(twin.largest(), POLYGON_MM, Quantity::Force)
+            .ok_or(ForceError::NoScale(twin.largest()))?,
     };
     let board = polygons::Board {
         prog,
@@ -271,25 +265,15 @@ pub fn analyse(
             let route = Route {
                 board: &board,
                 vp,
+                pose: &pos.pose,
                 drawn: &drawn,
                 exact: &exact,
+                loads: &loads,
+                loads_exact: &loads_exact,
                 w1,
+                label: &pos.label,
             };
-            let big = twin
-                .reactions
-                .iter()
-                .map(|r| r.force.length())
-                .fold(0.0, f64::max);
-            Some(Box::new(with_friction(
-                spec,
-                fr,
-                &route,
-                &pos.pose,
-                &loads,
-                &loads_exact,
-                big,
-                &pos.label,
-            )?))
+            Some(Box::new(with_friction(spec, fr, &route, twin.largest())?))
         }
         None => None,
     };
@@ -338,34 +322,35 @@ pub fn analyse(
     })
 }
 
-/// What the approximations of one position draw on: the polygons' board, the velocity plan
-/// and the two motions.
+/// What the approximations of one position start from: the polygons' board, the velocity
+/// plan, the pose, both motions and both sets of loads.
 struct Route<'a> {
     board: &'a polygons::Board<'a>,
     vp: &'a KinPlan,
+    pose: &'a crate::linkage::Pose,
     drawn: &'a Motion,
     exact: &'a Motion,
+    loads: &'a [Load],
+    loads_exact: &'a [Load],
     w1: f64,
+    label: &'a str,
 }
 
 /// The position with friction in the pairs: the twin and the polygons each settled by
-/// successive approximations (to 1e-13 of the largest reaction, or to two drafting
-/// resolutions on the force polygon), the lever with the polygons' friction loads.
-#[allow(clippy::too_many_arguments)]
+/// successive approximations (to 1e-13 of `big`, the largest frictionless reaction, or to
+/// two drafting resolutions on the force polygon), the lever with the polygons' friction
+/// loads.
 fn with_friction(
     spec: &ForceSpec,
     fr: &pair_friction::PairFriction,
     route: &Route<'_>,
-    pose: &crate::linkage::Pose,
-    loads: &[Load],
-    loads_exact: &[Load],
     big: f64,
-    pos_label: &str,
 ) -> Result<WithFriction, ForceError> {
     use pair_friction::{approximate, friction_loads, friction_power, Kinematics};
     let board = route.board;
     let prog = board.prog;
     let sense = route.w1.signum();
+    let pose = route.pose;
     let exact = Kinematics {
         prog,
         dir: pose.dir.clone(),
@@ -373,7 +358,7 @@ fn with_friction(
         motion: route.exact,
     };
     let (twin, loads_exact_f, n_twin) = approximate(
-        loads_exact,
+        route.loads_exact,
         1e-13 * big,
         |l| twin::solve(prog, pose, l, &spec.drive, sense),
         |t| t.reactions.clone(),
@@ -392,16 +377,16 @@ fn with_friction(
     };
     let resolution = board.ctx.drafting.resolution_mm() * board.mu_f.value();
     let (polygons, loads_f, n_pol) = approximate(
-        loads,
+        route.loads,
         (1e-13 * big).max(2.0 * resolution),
         |l| {
             polygons::polygons(board, l, &spec.drive)
-                .map_err(|e| polygon_error(&format!("{} with friction", pos_label), e))
+                .map_err(|e| polygon_error(&format!("{} with friction", route.label), e))
         },
         Polygons::reactions,
         |r| friction_loads(fr, &drawn, r),
     )?;
-    let all: Vec<Load> = loads.iter().chain(&loads_f).cloned().collect();
+    let all: Vec<Load> = route.loads.iter().chain(&loads_f).cloned().collect();
     let lever = lever::lever(
         prog,
         board.built,
@@ -414,7 +399,7 @@ fn with_friction(
     );
     let lost = friction_power(&loads_exact_f, &exact);
     Ok(WithFriction {
-        m_power: twin::power_balance(loads_exact, route.exact, route.w1) - lost / route.w1,
+        m_power: twin::power_balance(route.loads_exact, route.exact, route.w1) - lost / route.w1,
         loads: loads_f,
         loads_exact: loads_exact_f,
         polygons,

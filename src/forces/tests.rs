@@ -108,7 +108,7 @@ fn case(m: &Mechanism, phi: f64, spec: &ForceSpec) -> Result<Case, TestCaseError
         eps: ap.rate.clone(),
     };
     let lg = loads(spec, &prog, &drawn, None).map_err(|e| TestCaseError::fail(e.to_string()))?;
-    let big = largest(&twin).max(1e-3);
+    let big = twin.largest().max(1e-3);
     let mu_f = Scale::round_for(big, 100.0, Quantity::Force).unwrap();
     Ok(Case {
         prog,
@@ -123,13 +123,6 @@ fn case(m: &Mechanism, phi: f64, spec: &ForceSpec) -> Result<Case, TestCaseError
         mu_l,
         mu_f,
     })
-}
-
-fn largest(twin: &Equilibrium) -> f64 {
-    twin.reactions
-        .iter()
-        .map(|r| r.force.length())
-        .fold(0.0, f64::max)
 }
 
 impl Case {
@@ -182,7 +175,7 @@ proptest! {
     ) {
         let spec = spec(&masses, f5, gear);
         let (twin, pol, lev, power) = analyse_random(&m, phi, &spec)?;
-        let big = twin.reactions.iter().map(|r| r.force.length()).fold(0.0, f64::max);
+        let big = twin.largest();
         let mut compared = 0;
         let graphical = pol.groups.iter().flat_map(|g| g.reactions.iter()).chain([&pol.driver.reaction]);
         for g in graphical {
@@ -240,15 +233,18 @@ proptest! {
         spec.friction = Some(fr.clone());
         let c = case(&m, phi, &spec)?;
         let board = c.board();
-        let route = Route { board: &board, vp: &c.vp, drawn: &c.drawn, exact: &c.exact, w1: W1 };
-        let w = match with_friction(&spec, &fr, &route, &c.pose, &c.lg, &c.le, largest(&c.twin), "1") {
+        let route = Route {
+            board: &board, vp: &c.vp, pose: &c.pose, drawn: &c.drawn, exact: &c.exact,
+            loads: &c.lg, loads_exact: &c.le, w1: W1, label: "1",
+        };
+        let w = match with_friction(&spec, &fr, &route, c.twin.largest()) {
             Ok(w) => w,
             Err(ForceError::SelfLocking { .. } | ForceError::Singular) => {
                 return Err(TestCaseError::reject("self-locking"));
             }
             Err(e) => return Err(TestCaseError::fail(e.to_string())),
         };
-        let big = largest(&w.twin);
+        let big = w.twin.largest();
         for g in w.polygons.reactions() {
             let t = w.twin.reaction(g.pair.from, g.pair.to).expect("the same pair in the twin");
             prop_assert!((g.force - t).length() <= REL * (big + t.length()), "R_{}_{}: {} vs {}", g.pair.from, g.pair.to, g.force, t);

@@ -127,6 +127,14 @@ pub struct Equilibrium {
 }
 
 impl Equilibrium {
+    /// The largest reaction's magnitude, N.
+    pub fn largest(&self) -> f64 {
+        self.reactions
+            .iter()
+            .map(|r| r.force.length())
+            .fold(0.0, f64::max)
+    }
+
     /// The force of link `from` on link `to`.
     pub fn reaction(&self, from: usize, to: usize) -> Option<DVec2> {
         self.reactions
