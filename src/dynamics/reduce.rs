@@ -10,6 +10,7 @@
 use super::DynamicsError;
 use crate::construct::Context;
 use crate::forces::loads::{loads, Load, LoadKind, Motion};
+use crate::forces::twin::power_balance;
 use crate::forces::{phase_at, ForceSpec};
 use crate::geom::DVec2;
 use crate::linkage::{Extremes, KinPlan, Pose, Program};
@@ -30,6 +31,14 @@ impl Reduced {
     pub fn m(&self) -> f64 {
         self.m_res + self.m_grav
     }
+}
+
+/// The reduced moment of `loads` moving as `motion` with the crank at |ω₁| = `w`:
+/// Σ(F·v + M·ω)/|ω₁|, N·m (driving positive).
+pub fn reduce_loads(loads: &[Load], motion: &Motion, w: f64) -> f64 {
+    // The power balance's M_bal at a crank turning counter-clockwise at w, with its sign
+    // turned: the moment the loads exert.
+    -power_balance(loads, motion, w)
 }
 
 /// What the reduction needs: the mechanism, the loads of the links that count, the strokes.
@@ -104,14 +113,9 @@ impl<'a> Reducer<'a> {
         let ph = phase_at(self.extremes.as_ref(), phi, self.sense());
         let all = loads(&self.forces, self.prog, motion, ph)?;
         let w = self.w1.abs();
-        let power = |kind: LoadKind| -> f64 {
-            all.iter()
-                .filter(|l| l.kind == kind)
-                .map(|l: &Load| {
-                    l.force.dot(motion.v[l.at])
-                        + l.moment * motion.omega.get(l.link).copied().unwrap_or(0.0)
-                })
-                .sum::<f64>()
+        let of = |kind: LoadKind| {
+            let some: Vec<Load> = all.iter().filter(|l| l.kind == kind).cloned().collect();
+            reduce_loads(&some, motion, w)
         };
         let mut j = self.j_const;
         for lm in &self.forces.links {
@@ -121,8 +125,8 @@ impl<'a> Reducer<'a> {
             j += (lm.mass * v.length_squared() + lm.inertia * om * om) / (w * w);
         }
         Ok(Reduced {
-            m_res: power(LoadKind::Resistance) / w,
-            m_grav: power(LoadKind::Weight) / w,
+            m_res: of(LoadKind::Resistance),
+            m_grav: of(LoadKind::Weight),
             j,
         })
     }
