@@ -182,7 +182,7 @@ fn bad_dynamics_sections_name_their_keys() {
         let dir = scratch(&format!("bad-dynamics-forces-{k}"));
         let path = dir.join("bad.toml");
         let body = if k == 1 {
-            format!("{base}").replace(
+            base.replace(
                 "wanted = [\"positions\", \"kinematics\", \"forces\"]",
                 "wanted = [\"dynamics\"]",
             )
