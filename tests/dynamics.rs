@@ -201,3 +201,35 @@ fn bad_dynamics_sections_name_their_keys() {
         assert!(err.contains(want), "case {k}: `{want}` not in\n{err}");
     }
 }
+
+#[test]
+fn a_machine_that_needs_no_flywheel_gets_none_and_its_plate_builds() {
+    let text = format!(
+        "{}\n[dynamics]\ndelta = 0.05\nlinks = [3, 5]\n[[dynamics.constant]]\nname = \"ред\"\ninertia = 1000.0\n",
+        shaper_without_dynamics().replace(
+            "wanted = [\"positions\", \"kinematics\", \"forces\"]",
+            "wanted = [\"dynamics\"]"
+        )
+    );
+    let dir = scratch("dynamics-none");
+    let path = dir.join("loose.toml");
+    std::fs::write(&path, text).expect("write");
+    let v = report_json(path.to_str().expect("utf-8"));
+    for r in rows(&v, "J_flywheel") {
+        assert_eq!(num(r, "analytic"), 0.0, "{r}");
+    }
+    for r in rows(&v, "delta") {
+        assert!(num(r, "analytic") < 0.01, "{r}");
+    }
+    let out = dir.join("out");
+    let o = tmm(&[
+        "render",
+        path.to_str().expect("utf-8"),
+        "--out",
+        out.to_str().expect("utf-8"),
+        "--format",
+        "svg",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(out.join("loose/dynamics.svg").exists());
+}

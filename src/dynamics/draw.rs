@@ -18,7 +18,7 @@ use super::reduce::Reduced;
 use super::spec::DynamicsSpec;
 use super::twin::{Cycle, Solution};
 use super::DynamicsError;
-use crate::calculus::{integrate_chords, Diagram, Layout, Sampling, Scales};
+use crate::calculus::{draw_axes, integrate_chords, thin, Diagram, Layout, Sampling, Scales};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{DVec2, Segment};
 use crate::scale::{Quantity, Scale};
@@ -55,6 +55,8 @@ pub struct Diagrams {
     pub scale_j: Scale,
     /// μ_T of Merkin's T_I.
     pub scale_t1: Scale,
+    /// μ_T of the energy–mass diagram.
+    pub scale_tw: Scale,
     /// The pole distance H, mm.
     pub pole_h: f64,
     /// M_с, A_с and A_д (at μ_A).
@@ -98,47 +100,6 @@ fn diagram_err(what: &'static str) -> impl Fn(crate::calculus::CalculusError) ->
     move |error| DynamicsError::Diagram { what, error }
 }
 
-/// A thin segment.
-fn thin(rec: &mut Recorder, note: String, a: DVec2, b: DVec2, from: &[StepId]) -> StepId {
-    rec.draw(
-        note,
-        Item::Segment(Segment::new(a, b)),
-        Role::Construction,
-        from,
-    )
-}
-
-/// Arrowed axes through `o`: the abscissa from x0 to x1, the ordinate from y0 to y1 (mm
-/// from `o`), named.
-fn axes(
-    rec: &mut Recorder,
-    o: DVec2,
-    (x0, x1): (f64, f64),
-    (y0, y1): (f64, f64),
-    names: (&str, &str),
-) {
-    let ax = rec.draw(
-        format!("axis {}", names.0),
-        Item::Vector {
-            from: o + DVec2::new(x0, 0.0),
-            to: o + DVec2::new(x1, 0.0),
-        },
-        Role::Construction,
-        &[],
-    );
-    rec.label(ax, names.0, o + DVec2::new(x1, 0.0), DVec2::new(0.3, -1.0));
-    let ay = rec.draw(
-        format!("axis {}", names.1),
-        Item::Vector {
-            from: o + DVec2::new(0.0, y0),
-            to: o + DVec2::new(0.0, y1),
-        },
-        Role::Construction,
-        &[],
-    );
-    rec.label(ay, names.1, o + DVec2::new(0.0, y1), DVec2::new(1.0, 0.2));
-}
-
 /// A curve through points with its axes around them (the abscissa `extent` mm long).
 fn plot(
     rec: &mut Recorder,
@@ -149,7 +110,7 @@ fn plot(
 ) -> StepId {
     let lo = pts.iter().fold(0.0f64, |m, p| m.min(p.y));
     let hi = pts.iter().fold(0.0f64, |m, p| m.max(p.y));
-    axes(
+    draw_axes(
         rec,
         DVec2::ZERO,
         (-4.0, extent + 12.0),
@@ -300,8 +261,14 @@ pub fn diagrams(
     let inertia = rec.finish();
 
     // 5: Wittenbauer.
+    // The tangents cut the ΔT axis (J = 0) below the curve by about ω_ср²·J_пр/2: the
+    // energy–mass diagram's μ_T takes them in (unless the scene gives μ_T).
+    let reach = (0..n)
+        .map(|i| (delta_t[i] - w2 * (1.0 + spec.delta) * j[i] / 2.0).abs())
+        .fold(big(&delta_t), f64::max);
+    let mu_tw = scale_of(spec.scale_t, reach, 180.0, Quantity::Work, "μ_T")?;
     let (wittenbauer_figure, wittenbauer) =
-        wittenbauer(&delta_t[..n], &j, (mu_t, mu_j), w_avg, spec.delta, ctx);
+        wittenbauer(&delta_t[..n], &j, (mu_tw, mu_j), w_avg, spec.delta, ctx);
     // 6: Merkin.
     let (merkin_figure, merkin) = merkin(&t1, run, mu_t1, w_avg, spec, ctx);
     Ok(Diagrams {
@@ -311,6 +278,7 @@ pub fn diagrams(
         scale_t: mu_t,
         scale_j: mu_j,
         scale_t1: mu_t1,
+        scale_tw: mu_tw,
         pole_h,
         work,
         energy,
@@ -364,7 +332,7 @@ fn wittenbauer(
     let x_hi = pts.iter().fold(0.0f64, |m, p| m.max(p.x));
     let y_lo = pts.iter().fold(c1.min(c2), |m, p| m.min(p.y));
     let y_hi = pts.iter().fold(0.0f64, |m, p| m.max(p.y));
-    axes(
+    draw_axes(
         &mut rec,
         DVec2::ZERO,
         (-4.0, x_hi + 14.0),
@@ -499,7 +467,11 @@ pub fn omega_figure(
     ctx: &Context,
 ) -> Result<Figure, DynamicsError> {
     let avg = sol.omega_avg();
-    let swing = (sol.w_max.0 - avg).abs().max((avg - sol.w_min.0).abs());
+    let swing = (sol.w_max.0 - avg)
+        .abs()
+        .max((avg - sol.w_min.0).abs())
+        .max(1e-9 * avg.abs())
+        .max(1e-12);
     let mu_w = scale_of(None, swing, 30.0, Quantity::AngularVelocity, "μ_ω")?;
     let mut rec = Recorder::in_context("ω(φ)", mu_w, ctx);
     let turn = mu_phi.to_mm(TAU);

@@ -72,6 +72,14 @@ pub fn size(spec: &FlywheelSpec, j: f64) -> Size {
 /// # Errors
 /// No scale can be chosen (a flywheel of zero size).
 pub fn section(size: &Size, ctx: &Context) -> Result<Figure, DynamicsError> {
+    // No flywheel needed: nothing to draw.
+    if !(size.d > 0.0 && size.d.is_finite()) {
+        let unit = Scale::new(1.0, Quantity::Length).ok_or(DynamicsError::NoScale {
+            what: "μ_l of the flywheel",
+            value: size.d,
+        })?;
+        return Ok(Recorder::in_context("flywheel", unit, ctx).finish());
+    }
     let mu = Scale::round_for(size.d, 120.0, Quantity::Length).ok_or(DynamicsError::NoScale {
         what: "μ_l of the flywheel",
         value: size.d,

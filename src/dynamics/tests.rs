@@ -336,3 +336,28 @@ fn the_seed_rim_is_sized_as_the_seed_does() {
     let disc = flywheel::size(&FlywheelSpec::disc(7800.0), 10.0);
     assert!((disc.mass * disc.d * disc.d / 8.0 - 10.0).abs() < 1e-9);
 }
+
+#[test]
+fn epsilon_is_the_rate_of_omega_and_the_cycle_time_is_about_the_nominal() {
+    let d = study();
+    let (j, t0) = (d.exact.j_fw, d.exact.t0);
+    // ε = dω/dt = ω·dω/dψ, against a central difference of ω(ψ) away from the extremes.
+    for k in 1..36 {
+        let psi = std::f64::consts::TAU * (k as f64 + 0.37) / 36.0;
+        let h = 1e-5;
+        let dw = (d.cycle.omega(psi + h, j, t0) - d.cycle.omega(psi - h, j, t0)) / (2.0 * h);
+        let want = d.cycle.omega(psi, j, t0) * dw;
+        let eps = d.cycle.epsilon(psi, j, t0);
+        assert!(
+            (eps - want).abs() < 1e-4 * (1.0 + want.abs()),
+            "ψ = {psi}: {eps} vs {want}"
+        );
+    }
+    // Within δ/2 of 2π/ω_ср.
+    let nominal = std::f64::consts::TAU / 15.7;
+    assert!(
+        (d.cycle_time - nominal).abs() < nominal / 30.0,
+        "{}",
+        d.cycle_time
+    );
+}

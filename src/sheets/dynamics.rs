@@ -85,9 +85,9 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                     "Діаграма енергомас ΔT(J_{пр})",
                     "Energy–mass diagram ΔT(J_{пр})",
                 ),
-                &[(g.scale_t, true), (g.scale_j, false)],
+                &[(g.scale_tw, true), (g.scale_j, false)],
             ),
-            keyed("dynamics.scale_t", g.scale_t),
+            keyed("dynamics.scale_t", g.scale_tw),
         ),
         Block::view(
             g.merkin_figure.clone(),
@@ -107,15 +107,18 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             ),
             None,
         ),
-        Block::view(
+    ];
+    // A machine that runs within δ without a flywheel has none to draw.
+    if !d.wheel.steps.is_empty() {
+        blocks.push(Block::view(
             d.wheel.clone(),
             cap(
                 tr(lang, "Маховик", "Маховик", "Flywheel"),
                 &[(d.wheel.scale, false)],
             ),
             None,
-        ),
-    ];
+        ));
+    }
     let mut lines = data_lines(&d, lang);
     lines.push(String::new());
     lines.push(super::drafting_line(session.drafting(), lang));
