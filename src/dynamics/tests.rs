@@ -361,3 +361,31 @@ fn epsilon_is_the_rate_of_omega_and_the_cycle_time_is_about_the_nominal() {
         d.cycle_time
     );
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+    use std::sync::OnceLock;
+
+    /// The shaper's exact cycle, integrated once for every case.
+    fn cycle() -> &'static Cycle {
+        static CYCLE: OnceLock<Cycle> = OnceLock::new();
+        CYCLE.get_or_init(|| study().cycle)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(12))]
+        /// For any δ and ω_ср the bracketed flywheel gives exactly that δ and that mean
+        /// speed, and Wittenbauer's tangents with the exact slopes find the same flywheel.
+        #[test]
+        fn the_flywheel_gives_the_delta_asked_for(delta in 0.01f64..0.3, w in 5.0f64..40.0) {
+            let c = cycle();
+            let s = c.flywheel(w, delta).expect("a flywheel");
+            prop_assume!(s.j_fw > 0.0);
+            prop_assert!((s.delta() - delta).abs() < 1e-9, "{} vs {delta}", s.delta());
+            prop_assert!((s.omega_avg() - w).abs() < 1e-9 * w);
+            let j = c.wittenbauer(s.w_max.0, s.w_min.0);
+            prop_assert!((j - s.j_fw).abs() < 1e-6 * s.j_fw.max(1.0), "{j} vs {}", s.j_fw);
+        }
+    }
+}
