@@ -34,6 +34,7 @@ pub mod bench;
 pub mod calculus;
 pub mod check;
 pub mod construct;
+pub mod dynamics;
 pub mod forces;
 pub mod geom;
 pub mod kinematics;

@@ -106,3 +106,35 @@ fn a_missing_scene_folder_is_an_error_with_exit_1_and_no_files() {
     assert!(err.contains("shaper.toml"), "{err}");
     assert!(!dir.join("bench").exists());
 }
+
+#[test]
+fn quick_bench_times_the_flywheel_routes_against_the_exact_one() {
+    let (out, dir) = run_quick("flywheel", &[]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(dir.join("bench/bench.json")).expect("bench.json");
+    let v: Value = serde_json::from_str(&text).expect("JSON");
+    let rows = v["rows"].as_array().expect("rows");
+    for family in ["wittenbauer", "merkin"] {
+        let errors: Vec<f64> = RESOLUTIONS
+            .iter()
+            .map(|&n| {
+                let r = rows
+                    .iter()
+                    .find(|r| r["family"] == family && r["resolution"] == n)
+                    .unwrap_or_else(|| panic!("no {family} row at N = {n}"));
+                assert_eq!(r["quantity"], "J_flywheel");
+                r["max_error"].as_f64().expect("error")
+            })
+            .collect();
+        // Wittenbauer's tangents approach the exact flywheel (25.52 kg·m²) as N grows;
+        // Merkin's route approaches its own method error (continuous: 27.00, +1.48 kg·m²).
+        assert!(errors[5] < errors[0], "{family}: {errors:?}");
+        let floor = if family == "merkin" { 1.48 } else { 0.0 };
+        assert!((errors[5] - floor).abs() < 0.15, "{family}: {errors:?}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

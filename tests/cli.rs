@@ -43,6 +43,8 @@ fn render_writes_svg_and_png_and_is_byte_identical() {
     assert_eq!(
         names,
         [
+            "shaper/dynamics.png",
+            "shaper/dynamics.svg",
             "shaper/forces-2.png",
             "shaper/forces-2.svg",
             "shaper/forces.png",

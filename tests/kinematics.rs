@@ -206,7 +206,7 @@ fn drafting_half_a_millimetre_gives_hand_construction_errors() {
     let mut vel = Vec::new();
     // The plans' own readings (the inertia loads computed from them are the force tests').
     let kinematic = |r: &&&serde_json::Value| {
-        r["method"] == "plan" && !["N", "N*m"].contains(&r["unit"].as_str().unwrap_or(""))
+        r["method"] == "plan" && !["N", "N*m", "kg*m^2"].contains(&r["unit"].as_str().unwrap_or(""))
     };
     for r in rows(&v).iter().filter(kinematic) {
         let q = r["quantity"].as_str().unwrap();

@@ -165,6 +165,7 @@ rules! {
     shaper_positions_texts_apart, shaper_positions_inside_frame: "shaper" / "positions",
     shaper_kinematics_texts_apart, shaper_kinematics_inside_frame: "shaper" / "kinematics",
     shaper_forces_texts_apart, shaper_forces_inside_frame: "shaper" / "forces",
+    shaper_dynamics_texts_apart, shaper_dynamics_inside_frame: "shaper" / "dynamics",
     slider_crank_positions_texts_apart, slider_crank_positions_inside_frame: "slider-crank" / "positions",
     slider_crank_kinematics_texts_apart, slider_crank_kinematics_inside_frame: "slider-crank" / "kinematics",
     four_bar_positions_texts_apart, four_bar_positions_inside_frame: "four-bar" / "positions",

@@ -143,6 +143,7 @@ plates! {
     shaper_positions: "shaper" / "positions",
     shaper_kinematics: "shaper" / "kinematics",
     shaper_forces: "shaper" / "forces",
+    shaper_dynamics: "shaper" / "dynamics",
     slider_crank_positions: "slider-crank" / "positions",
     slider_crank_kinematics: "slider-crank" / "kinematics",
     four_bar_positions: "four-bar" / "positions",

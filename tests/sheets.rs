@@ -41,7 +41,7 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
     let all = sheets::build_all(&session, Lang::Ru).expect("plates");
     assert_eq!(
         all.len(),
-        4,
+        5,
         "one A1 sheet per plate, the force analysis one per position"
     );
     let text = all
@@ -59,6 +59,10 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
         "H_{1} = 28",
         "H_{2} = 7,5",
         "μ_{F} = 20 Н/мм",
+        // seed 000 §5: μ_M = 2 Н·м/мм, μ_φ = 0,026 рад/мм, H = 192 мм
+        "μ_{M} = 2 Н·м/мм",
+        "μ_{φ} = 0,026 рад/мм",
+        "H = 192 мм",
     ] {
         assert!(text.contains(given), "{given} not on the sheets:\n{text}");
     }
@@ -70,7 +74,7 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
         .iter()
         .map(|(_, p)| (p.title_block.sheet_no, p.title_block.sheets))
         .collect();
-    assert_eq!(numbers, vec![(1, 4), (2, 4), (3, 4), (4, 4)]);
+    assert_eq!(numbers, vec![(1, 5), (2, 5), (3, 5), (4, 5), (5, 5)]);
 }
 
 #[test]

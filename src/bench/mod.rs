@@ -17,10 +17,15 @@
 //! * **Plates** — building a plate and writing it as SVG; a scene's plates (already SVG)
 //!   rasterised to PNG at 150 dpi, as `tmm render` does.
 //!
+//! * **Flywheel** — the shaper's flywheel (seed 000 §5) by Wittenbauer's tangents and by
+//!   Merkin's route on diagrams of N = 12 … 360 positions, each against the energy equation
+//!   integrated exactly, with the route's time and the exact solve's.
+//!
 //! Times are the best of several repetitions (the machine may be busy); they are reported,
 //! never asserted.
 
 mod chords;
+mod flywheel;
 mod rates;
 
 use crate::calculus::CalculusError;
@@ -270,7 +275,17 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
     let mut rows = chord_rows(&shaper, &ram_x, reps)?;
     rows.extend(chord_rows(&four_bar, &rocker_angle, reps)?);
 
+    let (fly, t_exact) = flywheel::flywheel_rows(&shaper, reps)?;
+    rows.extend(fly);
+
     let mut throughput = Vec::new();
+    throughput.push(Throughput {
+        name: format!("flywheel {} (exact)", shaper.scene.stem),
+        per_second: 1.0 / t_exact,
+        note:
+            "the work integrated on 720 panels and the energy equation solved for J_м (bracketed)"
+                .into(),
+    });
     for s in [&four_bar, &shaper] {
         let stem = &s.scene.stem;
         throughput.push(Throughput {

@@ -338,7 +338,7 @@ fn read_ordinate(rec: &Recorder, origin: DVec2, p: DVec2) -> (f64, f64) {
 
 /// Draw a pair of arrowed axes at `origin`: the abscissa from `x_from` to `x_to` (mm from
 /// the origin), the ordinate from `y_from` to `y_to`, labelled.
-fn draw_axes(
+pub(crate) fn draw_axes(
     rec: &mut Recorder,
     origin: DVec2,
     (x_from, x_to): (f64, f64),
@@ -462,7 +462,13 @@ fn draw_pole(rec: &mut Recorder, pole: DVec2, origin: DVec2, layout: &Layout) ->
 }
 
 /// A thin construction segment.
-fn thin(rec: &mut Recorder, note: String, a: DVec2, b: DVec2, from: &[StepId]) -> StepId {
+pub(crate) fn thin(
+    rec: &mut Recorder,
+    note: String,
+    a: DVec2,
+    b: DVec2,
+    from: &[StepId],
+) -> StepId {
     rec.draw(
         note,
         Item::Segment(Segment::new(a, b)),

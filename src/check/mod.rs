@@ -64,6 +64,14 @@ pub enum Symbol {
     Ratio,
     /// A power, W.
     Power,
+    /// A moment of inertia (reduced to the crank, a flywheel's), kg·m².
+    Inertia,
+    /// A work, J.
+    Work,
+    /// A change of kinetic energy ΔT, J.
+    EnergyChange,
+    /// The coefficient of irregularity δ of a machine's speed, 1.
+    Irregularity,
 }
 
 impl Symbol {
@@ -85,6 +93,10 @@ impl Symbol {
             Symbol::Angle => "angle",
             Symbol::Ratio => "eta",
             Symbol::Power => "P",
+            Symbol::Inertia => "J",
+            Symbol::Work => "A",
+            Symbol::EnergyChange => "dT",
+            Symbol::Irregularity => "delta",
         }
     }
     /// The SI unit as the report writes it.
@@ -104,6 +116,9 @@ impl Symbol {
             Symbol::Angle => "rad",
             Symbol::Ratio => "1",
             Symbol::Power => "W",
+            Symbol::Inertia => "kg*m^2",
+            Symbol::Work | Symbol::EnergyChange => "J",
+            Symbol::Irregularity => "1",
         }
     }
     /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{1-2}`, `F_{и3}`,
@@ -129,9 +144,16 @@ impl Symbol {
             Symbol::Angle => "α",
             Symbol::Ratio => "η",
             Symbol::Power => "P",
+            Symbol::Inertia => "J",
+            Symbol::Work => "A",
+            Symbol::EnergyChange => "ΔT",
+            Symbol::Irregularity => "δ",
         };
         // A reaction names two links, written apart as the textbooks do: R_{1-2}.
         let sep = if self == Symbol::Reaction { "-" } else { "" };
+        if subject.is_empty() {
+            return letter.to_string();
+        }
         let mut subject = subject.replace('_', sep);
         // Inertia loads and the balancing load in the textbooks' Russian: F_{и3}, M_{у}.
         if matches!(self, Symbol::Force | Symbol::Moment) {
@@ -191,8 +213,12 @@ impl Key {
             at: At::Position(label.to_string()),
         }
     }
-    /// The quantity's name in reports: `v_D`, `omega_3`, `v_B3_B1`, `s_S5`.
+    /// The quantity's name in reports: `v_D`, `omega_3`, `v_B3_B1`, `s_S5`; the symbol
+    /// alone for a subject-less quantity (`dT`, `delta`).
     pub fn quantity(&self) -> String {
+        if self.subject.is_empty() {
+            return self.symbol.key().to_string();
+        }
         format!("{}_{}", self.symbol.key(), self.subject)
     }
     /// The same quantity (symbol and subject), wherever it was read.
@@ -222,11 +248,15 @@ pub enum Method {
     Envelope,
     /// The method of triangles (plans of planetary trains).
     Triangles,
+    /// The energy–mass diagram with its tangents (Wittenbauer).
+    Wittenbauer,
+    /// The flywheel from the range of T_I = ΔT − T_II (Merkin).
+    Merkin,
 }
 
 impl Method {
     /// Every method, in report order.
-    pub const ALL: [Method; 9] = [
+    pub const ALL: [Method; 11] = [
         Method::Plan,
         Method::DiagramChords,
         Method::DiagramTangents,
@@ -236,6 +266,8 @@ impl Method {
         Method::Inversion,
         Method::Envelope,
         Method::Triangles,
+        Method::Wittenbauer,
+        Method::Merkin,
     ];
 
     /// The name in JSON and CSV: `plan`, `diagram-chords`, `diagram-tangents`, …; every
@@ -251,6 +283,8 @@ impl Method {
             Method::Inversion => "inversion",
             Method::Envelope => "envelope",
             Method::Triangles => "triangles",
+            Method::Wittenbauer => "wittenbauer",
+            Method::Merkin => "merkin",
         }
     }
 
@@ -286,6 +320,8 @@ impl Method {
                 "трикутники швидкостей",
                 "triangles",
             ),
+            Method::Wittenbauer => lang.pick("Виттенбауэр", "Віттенбауер", "Wittenbauer"),
+            Method::Merkin => lang.pick("Меркин", "Меркін", "Merkin"),
         }
     }
 }

@@ -183,7 +183,12 @@ impl SliderEnds {
 /// The stroke at crank angle `phi` of `plan`: on the working stroke strictly between its
 /// extremes, on the return strictly after, `None` at an extreme or without extremes.
 pub fn phase(plan: &PositionPlan, phi: f64, sense: f64) -> Phase {
-    let e = plan.extremes.as_ref()?;
+    phase_at(plan.extremes.as_ref(), phi, sense)
+}
+
+/// The stroke at crank angle `phi` given the mechanism's extremes (see [`phase`]).
+pub fn phase_at(extremes: Option<&crate::linkage::Extremes>, phi: f64, sense: f64) -> Phase {
+    let e = extremes?;
     let travel = (sense * (phi - e.phi_start)).rem_euclid(TAU);
     let tol = 1e-9;
     if travel > tol && travel < e.work_travel - tol {

@@ -2,6 +2,7 @@
 
 use super::balancing::balancing;
 use super::check::{item, quoted, Checker};
+use super::dynamics::dynamics;
 use super::error::SceneError;
 use super::forces::forces;
 use super::friction::friction;
@@ -48,6 +49,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             ("positions", raw.positions.is_some()),
             ("kinematics", raw.kinematics.is_some()),
             ("forces", raw.forces.is_some()),
+            ("dynamics", raw.dynamics.is_some()),
         ] {
             if present {
                 check.push(
@@ -67,6 +69,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let has_forces = raw.forces.is_some();
     let has_balancing = raw.balancing.is_some();
     let has_friction = raw.friction.is_some();
+    let has_dynamics = raw.dynamics.is_some();
     let balancing = raw
         .balancing
         .as_ref()
@@ -76,6 +79,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         "forces" => has_forces,
         "balancing" => has_balancing,
         "friction" => has_friction,
+        "dynamics" => has_dynamics,
         _ => false,
     });
     let friction = friction(&mut check, raw.friction);
@@ -88,6 +92,9 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let forces = raw
         .forces
         .map(|f| forces(&mut check, f, mechanism.as_ref(), positions.count));
+    let dynamics = raw
+        .dynamics
+        .map(|d| dynamics(&mut check, d, forces.as_ref(), has_forces));
     if check.problems.is_empty() {
         Ok(Scene {
             path: path.to_path_buf(),
@@ -101,6 +108,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             forces,
             balancing,
             friction,
+            dynamics,
         })
     } else {
         Err(SceneError::Invalid {

@@ -2,6 +2,7 @@
 
 mod balancing;
 mod check;
+mod dynamics;
 mod error;
 mod forces;
 mod friction;

@@ -47,6 +47,9 @@ pub enum PlateKind {
     Balancing,
     /// Friction: each `[[friction.case]]`'s scheme and force triangle, with the error table.
     Friction,
+    /// Machine dynamics: the reduced moment and the work diagrams, ΔT, J_пр, the energy–mass
+    /// diagram, ω(φ) with the flywheel, the flywheel's section and Tables 9/10.
+    Dynamics,
 }
 
 impl PlateKind {
@@ -58,6 +61,7 @@ impl PlateKind {
             PlateKind::Forces => "forces",
             PlateKind::Balancing => "balancing",
             PlateKind::Friction => "friction",
+            PlateKind::Dynamics => "dynamics",
         }
     }
     /// The scene section a plate of this kind draws from (`mechanism`, `forces`,
@@ -68,15 +72,17 @@ impl PlateKind {
             PlateKind::Forces => "forces",
             PlateKind::Balancing => "balancing",
             PlateKind::Friction => "friction",
+            PlateKind::Dynamics => "dynamics",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 5] = [
+    pub const ALL: [PlateKind; 6] = [
         PlateKind::Positions,
         PlateKind::Kinematics,
         PlateKind::Forces,
         PlateKind::Balancing,
         PlateKind::Friction,
+        PlateKind::Dynamics,
     ];
 
     /// Parse a stem.
@@ -127,4 +133,6 @@ pub struct Scene {
     pub balancing: Option<BalancingSpec>,
     /// The `[[friction.case]]`s, in file order (none when `[friction]` is absent).
     pub friction: Vec<FrictionCase>,
+    /// The `[dynamics]` section (`None` when absent).
+    pub dynamics: Option<crate::dynamics::DynamicsSpec>,
 }

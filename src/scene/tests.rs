@@ -91,7 +91,8 @@ fn shaper_loads_in_si_units() {
         vec![
             PlateKind::Positions,
             PlateKind::Kinematics,
-            PlateKind::Forces
+            PlateKind::Forces,
+            PlateKind::Dynamics
         ]
     );
 }
@@ -465,7 +466,7 @@ fn kinematics_plate_kind_parses() {
     assert_eq!(PlateKind::Kinematics.stem(), "kinematics");
     assert!(PlateKind::ALL.contains(&PlateKind::Kinematics));
     let text = shaper_text().replacen(
-        "wanted = [\"positions\", \"kinematics\", \"forces\"]",
+        "wanted = [\"positions\", \"kinematics\", \"forces\", \"dynamics\"]",
         "wanted = [\"positions\", \"kinematics\"]",
         1,
     );

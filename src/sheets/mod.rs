@@ -3,6 +3,7 @@
 
 mod balancing;
 mod captions;
+mod dynamics;
 mod fit;
 mod forces;
 mod friction;
@@ -118,6 +119,7 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
         PlateKind::Forces => forces::build(session, lang),
         PlateKind::Balancing => balancing::build(session, lang),
         PlateKind::Friction => friction::build(session, lang),
+        PlateKind::Dynamics => dynamics::build(session, lang),
     }
 }
 

@@ -54,6 +54,12 @@ pub enum StudyError {
     /// The scene has no `[forces]` and the study needs it.
     #[error("the scene has no [forces]: {0} needs the loads")]
     NoForces(&'static str),
+    /// The scene has no `[dynamics]` and the study needs it.
+    #[error("the scene has no [dynamics]: {0} needs it")]
+    NoDynamics(&'static str),
+    /// The dynamic study cannot be carried out.
+    #[error(transparent)]
+    Dynamics(#[from] crate::dynamics::DynamicsError),
     /// The scene has no `[balancing]` and the study needs one.
     #[error("the scene has no [balancing]: {0} needs one")]
     NoBalancing(&'static str),
@@ -192,6 +198,7 @@ pub struct Session<'s> {
     forces: Memo<(Scale, Scale, Scale, usize), Cached<PositionForces>>,
     balancing: Memo<(), Cached<Balancing>>,
     friction: Memo<(), Cached<Vec<Solved>>>,
+    dynamics: Memo<(), Cached<crate::dynamics::Dynamics>>,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -214,6 +221,7 @@ impl<'s> Session<'s> {
             forces: Memo::default(),
             balancing: Memo::default(),
             friction: Memo::default(),
+            dynamics: Memo::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -564,6 +572,46 @@ impl<'s> Session<'s> {
         })
     }
 
+    /// The dynamic study (`[dynamics]`) at the kinematic study's scales: the reduction over
+    /// the scene's numbered positions from their velocity plans (the same plans when
+    /// `dynamics.count` is the scene's count; its own plan of positions otherwise), the
+    /// diagrams, the exact energy equation and the flywheel.
+    pub fn dynamics(&self) -> Cached<crate::dynamics::Dynamics> {
+        self.dynamics.get((), || {
+            let spec = self
+                .scene
+                .dynamics
+                .as_ref()
+                .ok_or(StudyError::NoDynamics("the dynamic study"))?;
+            let forces = self.force_spec("the dynamic study")?;
+            let sc = self.kin_scales()?;
+            let w1 = self.w1()?;
+            let ctx = self.ctx()?;
+            let count = spec.count.unwrap_or(self.scene.positions.count);
+            let d = if count == self.scene.positions.count {
+                let plan = self.positions(sc.l)?;
+                let vel = self.velocities(sc.l, sc.v)?;
+                let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
+                crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)?
+            } else {
+                let m = self.mechanism("the dynamic study")?;
+                let req = PlanRequest {
+                    count,
+                    other_extreme: false,
+                    ..self.plan_request()
+                };
+                let plan = plan_positions(m, &req, sc.l, self.drafting)?;
+                let vel = (0..plan.positions.len())
+                    .map(|k| plans::velocity(&plan, k, sc.l.value(), w1, sc.v, &ctx))
+                    .collect::<Result<Vec<_>, _>>()?;
+                let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
+                crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)?
+            };
+            self.logged("dynamics diagrams", "", d.diagrams.scale_a);
+            Ok(Arc::new(d))
+        })
+    }
+
     /// The report of every study of the scene: the kinematic study of its mechanism (with its
     /// force analysis), the balancing of its rotor and its friction cases, each that the scene
     /// has, rows and notes in that order. A scene with none is refused for want of a mechanism.
@@ -588,6 +636,11 @@ impl<'s> Session<'s> {
         for s in self.friction()?.iter() {
             rep.rows.extend(s.rows());
             rep.notes.extend(s.notes.iter().cloned());
+        }
+        if self.scene.dynamics.is_some() {
+            let d = self.dynamics()?;
+            rep.rows.extend(crate::dynamics::rows(&d));
+            rep.notes.extend(crate::dynamics::notes(&d));
         }
         Ok(rep)
     }

@@ -1,0 +1,500 @@
+//! The diagrams of the dynamic study as constructions through the recorder.
+//!
+//! 1. M_с(φ) = −M_пр (the reduced moment of the resistances, positive when it resists, the
+//!    seed's Table 9) at μ_M over μ_φ, integrated graphically by chords with the pole
+//!    distance H: A_с(φ) at μ_A = μ_M·μ_φ·H;
+//! 2. A_д: the straight line from the origin to A_с(2π) (constant driving moment); the ray
+//!    from the pole parallel to it cuts the M axis at M_д (graphical differentiation of a
+//!    straight line), drawn across the M diagram;
+//! 3. ΔT = A_д − A_с: the ordinates between the line and the curve, measured, laid off at μ_T;
+//! 4. J_пр(φ) at μ_J;
+//! 5. the energy–mass diagram ΔT(J_пр) (Wittenbauer) with the tangents at
+//!    tan ψ_max,min = μ_J·ω_ср²(1 ± δ)/(2μ_T); they cut the ΔT axis at k and l, and
+//!    J_м = μ_T·kl/(δ·ω_ср²);
+//! 6. Merkin's route (the seed's): T_I = ΔT − ω_ср²·J_пр/2, its range ΔT_I measured,
+//!    J_I = ΔT_I/(δ·ω_ср²), J_м = J_I − J_const.
+
+use super::reduce::Reduced;
+use super::spec::DynamicsSpec;
+use super::twin::{Cycle, Solution};
+use super::DynamicsError;
+use crate::calculus::{draw_axes, integrate_chords, thin, Diagram, Layout, Sampling, Scales};
+use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
+use crate::geom::{DVec2, Segment};
+use crate::scale::{Quantity, Scale};
+use std::f64::consts::TAU;
+
+/// Preferred drawn length of the abscissa 2π, mm.
+const TURN_MM: f64 = 180.0;
+/// Preferred height of a diagram's largest ordinate, mm.
+const HEIGHT_MM: f64 = 50.0;
+
+/// A textbook route to the flywheel, as read off its diagram.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Route {
+    /// The flywheel's moment of inertia, kg·m².
+    pub j_fw: f64,
+    /// The energy range measured (kl, or ΔT_I), J.
+    pub range: f64,
+    /// The nodes where the range is taken (the tangents' points; T_I max and min).
+    pub at: [usize; 2],
+}
+
+/// The diagrams as constructed and what was read off them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagrams {
+    /// μ_φ, μ_M, μ_A, μ_T, μ_J.
+    pub scale_phi: Scale,
+    /// μ_M.
+    pub scale_m: Scale,
+    /// μ_A = μ_M·μ_φ·H.
+    pub scale_a: Scale,
+    /// μ_T.
+    pub scale_t: Scale,
+    /// μ_J.
+    pub scale_j: Scale,
+    /// μ_T of Merkin's T_I.
+    pub scale_t1: Scale,
+    /// μ_T of the energy–mass diagram.
+    pub scale_tw: Scale,
+    /// The pole distance H, mm.
+    pub pole_h: f64,
+    /// M_с, A_с and A_д (at μ_A).
+    pub work: Figure,
+    /// ΔT (at μ_T).
+    pub energy: Figure,
+    /// J_пр (at μ_J).
+    pub inertia: Figure,
+    /// The energy–mass diagram (at μ_T).
+    pub wittenbauer_figure: Figure,
+    /// Merkin's T_I (at μ_T).
+    pub merkin_figure: Figure,
+    /// A_с at the nodes 0 … N as read, J.
+    pub a_c: Vec<f64>,
+    /// M_д read through the pole, N·m.
+    pub m_drive: f64,
+    /// ΔT at the nodes 0 … N as read, J.
+    pub delta_t: Vec<f64>,
+    /// J_пр at the nodes 0 … N−1 (from the velocity plans), kg·m².
+    pub j: Vec<f64>,
+    /// Wittenbauer's flywheel.
+    pub wittenbauer: Route,
+    /// Merkin's flywheel.
+    pub merkin: Route,
+}
+
+fn scale_of(
+    given: Option<Scale>,
+    value: f64,
+    mm: f64,
+    q: Quantity,
+    what: &'static str,
+) -> Result<Scale, DynamicsError> {
+    match given {
+        Some(s) => Ok(s),
+        None => Scale::round_for(value, mm, q).ok_or(DynamicsError::NoScale { what, value }),
+    }
+}
+
+fn diagram_err(what: &'static str) -> impl Fn(crate::calculus::CalculusError) -> DynamicsError {
+    move |error| DynamicsError::Diagram { what, error }
+}
+
+/// A curve through points with its axes around them (the abscissa `extent` mm long).
+fn plot(
+    rec: &mut Recorder,
+    pts: Vec<DVec2>,
+    extent: f64,
+    names: (&str, &str),
+    closed: bool,
+) -> StepId {
+    let lo = pts.iter().fold(0.0f64, |m, p| m.min(p.y));
+    let hi = pts.iter().fold(0.0f64, |m, p| m.max(p.y));
+    draw_axes(
+        rec,
+        DVec2::ZERO,
+        (-4.0, extent + 12.0),
+        (lo - 6.0, hi + 12.0),
+        names,
+    );
+    rec.draw(
+        format!("curve {}", names.1),
+        Item::Curve {
+            points: pts,
+            closed,
+        },
+        Role::Result,
+        &[],
+    )
+}
+
+/// Signed ordinate read from `a` up to `b` (same abscissa), in the recorder's mm as read.
+fn read_up(rec: &Recorder, a: DVec2, b: DVec2) -> f64 {
+    let m = rec.measure(a, b);
+    if b.y < a.y {
+        -m.read_mm
+    } else {
+        m.read_mm
+    }
+}
+
+/// Construct the diagrams from the reduction at the N equally spaced positions.
+///
+/// # Errors
+/// A scale that cannot be chosen, a diagram that cannot be constructed.
+pub fn diagrams(
+    spec: &DynamicsSpec,
+    red: &[Reduced],
+    w_avg: f64,
+    ctx: &Context,
+) -> Result<Diagrams, DynamicsError> {
+    let n = red.len();
+    let dx = TAU / n.max(1) as f64;
+    let mc: Vec<f64> = red.iter().map(|r| -r.m()).collect();
+    let big_m = mc.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let mu_phi = scale_of(spec.scale_phi, TAU, TURN_MM, Quantity::Angle, "μ_φ")?;
+    let mu_m = scale_of(spec.scale_m, big_m, HEIGHT_MM, Quantity::Moment, "μ_M")?;
+    let a_est: f64 = mc.iter().map(|v| v * dx).sum::<f64>().abs().max(big_m * dx);
+    let (pole_h, mu_a) = match spec.pole_h {
+        Some(h) => (h, mu_m.value() * mu_phi.value() * h),
+        None => {
+            let a = scale_of(None, a_est, 60.0, Quantity::Work, "μ_A")?;
+            (a.value() / (mu_m.value() * mu_phi.value()), a.value())
+        }
+    };
+    let mu_a = Scale::new(mu_a, Quantity::Work).ok_or(DynamicsError::NoScale {
+        what: "μ_A",
+        value: mu_a,
+    })?;
+    let run = mu_phi.to_mm(dx);
+    let turn = run * n as f64;
+
+    // 1–2: M_с, A_с by chords, A_д and M_д through the pole.
+    let mut rec = Recorder::in_context("M_с, A_с, A_д", mu_a, ctx);
+    let src = Diagram::new(0.0, dx, mc.clone(), true).map_err(diagram_err("M_с"))?;
+    let m_lo = mc.iter().fold(0.0f64, |m, &v| m.min(mu_m.to_mm(v)));
+    let a_hi = a_est / mu_a.value();
+    let so = DVec2::new(0.0, a_hi + 30.0 - m_lo);
+    let layout = Layout::new(so, DVec2::ZERO)
+        .named("φ", "M_{с}", "A")
+        .pole_named("P", "H");
+    let scales = Scales { x: mu_phi, y: mu_m };
+    let integral = integrate_chords(
+        &mut rec,
+        &src,
+        Sampling::Nodes,
+        scales,
+        pole_h,
+        0.0,
+        &layout,
+    )
+    .map_err(diagram_err("A_с"))?;
+    let a_c = integral.node.clone();
+    let a_n = a_c.last().copied().unwrap_or(0.0);
+    let end = DVec2::new(turn, mu_a.to_mm(a_n));
+    let ad = rec.draw(
+        "A_д: the straight line to A_с(2π)",
+        Item::Segment(Segment::new(DVec2::ZERO, end)),
+        Role::Result,
+        &[integral.curve],
+    );
+    rec.label(ad, "A_{д}", end, DVec2::new(0.6, 0.8));
+    let q = integral.pole + end * (pole_h / turn);
+    let ray = thin(&mut rec, "ray from P ∥ A_д".into(), integral.pole, q, &[ad]);
+    let m_drive = read_up(&rec, so, q) * mu_m.value();
+    let md = rec.draw(
+        "M_д across the M diagram",
+        Item::Segment(Segment::new(q, DVec2::new(so.x + turn, q.y))),
+        Role::Result,
+        &[ray],
+    );
+    rec.label(
+        md,
+        "M_{д}",
+        DVec2::new(so.x + turn, q.y),
+        DVec2::new(1.0, 0.3),
+    );
+    // 3: ΔT = A_д − A_с, the ordinates between the line and the curve.
+    let mut delta_t = Vec::with_capacity(n + 1);
+    for (i, a) in a_c.iter().enumerate() {
+        let x = run * i as f64;
+        let pd = DVec2::new(x, end.y * i as f64 / n as f64);
+        let pc = DVec2::new(x, mu_a.to_mm(*a));
+        if pd.distance(pc) > 0.2 {
+            thin(&mut rec, format!("ΔT ordinate {i}"), pc, pd, &[ad]);
+        }
+        delta_t.push(read_up(&rec, pc, pd) * mu_a.value());
+    }
+    let work = rec.finish();
+
+    // The energy scale: ΔT and Merkin's T_I.
+    let j: Vec<f64> = red.iter().map(|r| r.j).collect();
+    let w2 = w_avg * w_avg;
+    let t1: Vec<f64> = (0..=n).map(|i| delta_t[i] - w2 * j[i % n] / 2.0).collect();
+    let big = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let mu_t = scale_of(
+        spec.scale_t,
+        big(&delta_t),
+        HEIGHT_MM,
+        Quantity::Work,
+        "μ_T",
+    )?;
+    // T_I lies far from zero (it carries −ω²J_пр/2): its own scale.
+    let mu_t1 = scale_of(None, big(&t1), 80.0, Quantity::Work, "μ_T of T_I")?;
+    let big_j = j.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let mu_j = scale_of(spec.scale_j, big_j, 80.0, Quantity::Inertia, "μ_J")?;
+
+    // 3: the ΔT diagram.
+    let mut rec = Recorder::in_context("ΔT", mu_t, ctx);
+    let pts = (0..=n)
+        .map(|i| DVec2::new(run * i as f64, mu_t.to_mm(delta_t[i])))
+        .collect();
+    plot(&mut rec, pts, turn, ("φ", "ΔT"), false);
+    let energy = rec.finish();
+
+    // 4: J_пр(φ).
+    let mut rec = Recorder::in_context("J_пр", mu_j, ctx);
+    let pts = (0..=n)
+        .map(|i| DVec2::new(run * i as f64, mu_j.to_mm(j[i % n])))
+        .collect();
+    plot(&mut rec, pts, turn, ("φ", "J_{пр}"), false);
+    let inertia = rec.finish();
+
+    // 5: Wittenbauer.
+    // The tangents cut the ΔT axis (J = 0) below the curve by about ω_ср²·J_пр/2: the
+    // energy–mass diagram's μ_T takes them in (unless the scene gives μ_T).
+    let reach = (0..n)
+        .map(|i| (delta_t[i] - w2 * (1.0 + spec.delta) * j[i] / 2.0).abs())
+        .fold(big(&delta_t), f64::max);
+    let mu_tw = scale_of(spec.scale_t, reach, 180.0, Quantity::Work, "μ_T")?;
+    let (wittenbauer_figure, wittenbauer) =
+        wittenbauer(&delta_t[..n], &j, (mu_tw, mu_j), w_avg, spec.delta, ctx);
+    // 6: Merkin.
+    let (merkin_figure, merkin) = merkin(&t1, run, mu_t1, w_avg, spec, ctx);
+    Ok(Diagrams {
+        scale_phi: mu_phi,
+        scale_m: mu_m,
+        scale_a: mu_a,
+        scale_t: mu_t,
+        scale_j: mu_j,
+        scale_t1: mu_t1,
+        scale_tw: mu_tw,
+        pole_h,
+        work,
+        energy,
+        inertia,
+        wittenbauer_figure,
+        merkin_figure,
+        a_c,
+        m_drive,
+        delta_t,
+        j,
+        wittenbauer,
+        merkin,
+    })
+}
+
+/// The energy–mass diagram of the points (J_i, ΔT_i) with its two tangents.
+fn wittenbauer(
+    dt: &[f64],
+    j: &[f64],
+    (mu_t, mu_j): (Scale, Scale),
+    w_avg: f64,
+    delta: f64,
+    ctx: &Context,
+) -> (Figure, Route) {
+    let mut rec = Recorder::in_context("ΔT(J_пр)", mu_t, ctx);
+    let pts: Vec<DVec2> = dt
+        .iter()
+        .zip(j)
+        .map(|(t, j)| DVec2::new(mu_j.to_mm(*j), mu_t.to_mm(*t)))
+        .collect();
+    let w2 = w_avg * w_avg;
+    let slope = |s: f64| mu_j.value() * w2 * (1.0 + s * delta) / (2.0 * mu_t.value());
+    let touch = |k: f64, upper: bool| {
+        let s = slope(k);
+        let key = |p: &DVec2| p.y - s * p.x;
+        let mut best = 0;
+        for (i, p) in pts.iter().enumerate() {
+            let better = if upper {
+                key(p) > key(&pts[best])
+            } else {
+                key(p) < key(&pts[best])
+            };
+            if better {
+                best = i;
+            }
+        }
+        (best, s, key(&pts[best]))
+    };
+    let (i1, s1, c1) = touch(1.0, true);
+    let (i2, s2, c2) = touch(-1.0, false);
+    let x_hi = pts.iter().fold(0.0f64, |m, p| m.max(p.x));
+    let y_lo = pts.iter().fold(c1.min(c2), |m, p| m.min(p.y));
+    let y_hi = pts.iter().fold(0.0f64, |m, p| m.max(p.y));
+    draw_axes(
+        &mut rec,
+        DVec2::ZERO,
+        (-4.0, x_hi + 14.0),
+        (y_lo - 8.0, y_hi + 12.0),
+        ("J_{пр}", "ΔT"),
+    );
+    let curve = rec.draw(
+        "energy–mass curve",
+        Item::Curve {
+            points: pts.clone(),
+            closed: true,
+        },
+        Role::Result,
+        &[],
+    );
+    let mut ends = [DVec2::ZERO; 2];
+    for (n, (i, s, c, name, toward)) in [
+        (i1, s1, c1, "k", DVec2::new(-1.0, 0.3)),
+        (i2, s2, c2, "l", DVec2::new(-1.0, -0.3)),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let on_axis = DVec2::new(0.0, c);
+        let past = DVec2::new(pts[i].x + 12.0, c + s * (pts[i].x + 12.0));
+        let t = thin(
+            &mut rec,
+            format!("tangent ψ_{name}"),
+            on_axis,
+            past,
+            &[curve],
+        );
+        let psi = if n == 0 { "ψ_{max}" } else { "ψ_{min}" };
+        rec.label(t, psi, past, DVec2::new(1.0, 0.0));
+        rec.point(
+            format!("point {name}"),
+            on_axis,
+            Role::Construction,
+            name,
+            toward,
+            &[t],
+        );
+        ends[n] = on_axis;
+    }
+    let dim = rec.draw(
+        "kl",
+        Item::Dimension {
+            from: ends[1],
+            to: ends[0],
+            offset: 8.0,
+        },
+        Role::Dimension,
+        &[],
+    );
+    let kl = read_up(&rec, ends[1], ends[0]) * mu_t.value();
+    rec.label(dim, "kl", (ends[0] + ends[1]) * 0.5, DVec2::new(-1.0, 0.0));
+    let route = Route {
+        j_fw: kl / (delta * w2),
+        range: kl,
+        at: [i1, i2],
+    };
+    (rec.finish(), route)
+}
+
+/// Merkin's T_I = ΔT − ω_ср²·J_пр/2 over the cycle, its range between two horizontals.
+fn merkin(
+    t1: &[f64],
+    run: f64,
+    mu_t: Scale,
+    w_avg: f64,
+    spec: &DynamicsSpec,
+    ctx: &Context,
+) -> (Figure, Route) {
+    let mut rec = Recorder::in_context("T_I", mu_t, ctx);
+    let n = t1.len().saturating_sub(1);
+    let pts: Vec<DVec2> = t1
+        .iter()
+        .enumerate()
+        .map(|(i, t)| DVec2::new(run * i as f64, mu_t.to_mm(*t)))
+        .collect();
+    let curve = plot(&mut rec, pts.clone(), run * n as f64, ("φ", "T_{I}"), false);
+    let (mut hi, mut lo) = (0, 0);
+    for (i, p) in pts.iter().enumerate() {
+        if p.y > pts[hi].y {
+            hi = i;
+        }
+        if p.y < pts[lo].y {
+            lo = i;
+        }
+    }
+    let right = run * n as f64 + 6.0;
+    for (i, name) in [(hi, "T_{I max}"), (lo, "T_{I min}")] {
+        let id = thin(
+            &mut rec,
+            format!("horizontal through {name}"),
+            pts[i],
+            DVec2::new(right, pts[i].y),
+            &[curve],
+        );
+        rec.label(id, name, DVec2::new(right, pts[i].y), DVec2::new(1.0, 0.0));
+    }
+    let (a, b) = (DVec2::new(right, pts[lo].y), DVec2::new(right, pts[hi].y));
+    let dim = rec.draw(
+        "ΔT_I",
+        Item::Dimension {
+            from: a,
+            to: b,
+            offset: -8.0,
+        },
+        Role::Dimension,
+        &[],
+    );
+    rec.label(dim, "ΔT_{I}", (a + b) * 0.5, DVec2::new(1.0, 0.0));
+    let range = read_up(&rec, a, b) * mu_t.value();
+    let j_i = range / (spec.delta * w_avg * w_avg);
+    let route = Route {
+        j_fw: j_i - spec.constant_inertia(),
+        range,
+        at: [hi, lo],
+    };
+    (rec.finish(), route)
+}
+
+/// ω(φ) of the crank with the flywheel (the analytic twin), about ω_ср, with ω_max and ω_min.
+///
+/// # Errors
+/// No scale can be chosen.
+pub fn omega_figure(
+    cycle: &Cycle,
+    sol: &Solution,
+    mu_phi: Scale,
+    ctx: &Context,
+) -> Result<Figure, DynamicsError> {
+    let avg = sol.omega_avg();
+    let swing = (sol.w_max.0 - avg)
+        .abs()
+        .max((avg - sol.w_min.0).abs())
+        .max(1e-9 * avg.abs())
+        .max(1e-12);
+    let mu_w = scale_of(None, swing, 30.0, Quantity::AngularVelocity, "μ_ω")?;
+    let mut rec = Recorder::in_context("ω(φ)", mu_w, ctx);
+    let turn = mu_phi.to_mm(TAU);
+    let pts: Vec<DVec2> = (0..=360)
+        .map(|k| {
+            let psi = TAU * k as f64 / 360.0;
+            DVec2::new(
+                mu_phi.to_mm(psi),
+                mu_w.to_mm(cycle.omega(psi, sol.j_fw, sol.t0) - avg),
+            )
+        })
+        .collect();
+    plot(&mut rec, pts, turn, ("φ", "ω − ω_{ср}"), false);
+    for (w, name) in [(sol.w_max.0, "ω_{max}"), (sol.w_min.0, "ω_{min}")] {
+        let y = mu_w.to_mm(w - avg);
+        let id = thin(
+            &mut rec,
+            format!("level {name}"),
+            DVec2::new(0.0, y),
+            DVec2::new(turn, y),
+            &[],
+        );
+        rec.label(id, name, DVec2::new(turn, y), DVec2::new(1.0, 0.0));
+    }
+    Ok(rec.finish())
+}

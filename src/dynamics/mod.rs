@@ -1,0 +1,197 @@
+//! Machine dynamics: reduction of forces and masses to the crank, the work and energy
+//! diagrams, the flywheel — each a construction, an analytic twin and a check.
+//!
+//! - [`reduce`]: M_пр and J_пр at a position from its velocity plan (graphical) and from the
+//!   analytic twin;
+//! - [`draw`]: the diagrams as constructions through the recorder — M_с(φ) at μ_M, A_с by
+//!   graphical integration (chords, pole distance H, μ_A = μ_M·μ_φ·H), A_д from
+//!   A_д(2π) = A_с(2π) (constant driving moment) and M_д read back through the pole, ΔT =
+//!   A_д − A_с, J_пр(φ), the energy–mass diagram (Wittenbauer) with its tangents at ψ_max,
+//!   ψ_min, and Merkin's route T_I = ΔT − T_II, J_I = ΔT_I/(δ·ω_ср²) (the seed's);
+//! - [`twin`]: the work integrated exactly and the equation of motion in energy form solved
+//!   for the flywheel that gives δ, with ω(φ), ε(φ) and the cycle time;
+//! - [`flywheel`]: the rim's or disc's size from its moment of inertia;
+//! - rows `M_red`, `J_red`, `dT` per position; `A_res`, `M_drive`, `J_flywheel`, `delta` of
+//!   the whole scene.
+
+pub mod draw;
+pub mod flywheel;
+pub mod reduce;
+mod rows;
+mod spec;
+#[cfg(test)]
+mod tests;
+pub mod twin;
+
+pub use reduce::{Reduced, Reducer};
+pub use rows::{notes, rows};
+pub use spec::{ConstantInertia, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims};
+pub use twin::{Cycle, Solution};
+
+use crate::calculus::CalculusError;
+use crate::construct::Context;
+use crate::forces::{ForceError, ForceSpec};
+use crate::linkage::{KinPlan, PositionPlan};
+use std::f64::consts::TAU;
+use thiserror::Error;
+
+/// Why the dynamic study cannot be carried out.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum DynamicsError {
+    /// A link of `dynamics.links` has no mass in `[forces]`.
+    #[error("dynamics.links: link {link} has no [[forces.link]] with its mass")]
+    NoLinkMass {
+        /// The link.
+        link: u32,
+    },
+    /// The loads cannot be formed.
+    #[error(transparent)]
+    Forces(#[from] ForceError),
+    /// The mechanism cannot be assembled at a crank angle of the cycle.
+    #[error("the mechanism cannot be assembled at φ₁ = {phi_deg:.3}°: {detail}")]
+    Unassembled {
+        /// The crank angle, degrees.
+        phi_deg: f64,
+        /// Why.
+        detail: String,
+    },
+    /// The resistances do no work over the cycle: no driving moment to find.
+    #[error("the working resistances do {work} J of work over the cycle: expected > 0 (a [[forces.resistance]] that acts)")]
+    NoResistance {
+        /// The work, J.
+        work: f64,
+    },
+    /// No flywheel gives δ.
+    #[error("dynamics.delta: no flywheel up to 1e12 kg·m² gives δ = {delta}")]
+    NoFlywheel {
+        /// The δ asked for.
+        delta: f64,
+    },
+    /// A position has no velocity plan.
+    #[error("position {position}: no velocity plan for the reduction: {why}")]
+    NoPlan {
+        /// The position.
+        position: String,
+        /// Why.
+        why: String,
+    },
+    /// A diagram cannot be constructed.
+    #[error("{what}: {error}")]
+    Diagram {
+        /// Which diagram.
+        what: &'static str,
+        /// Why.
+        error: CalculusError,
+    },
+    /// A scale cannot be chosen.
+    #[error("no scale can be chosen for {what} ({value})")]
+    NoScale {
+        /// What.
+        what: &'static str,
+        /// The value to draw.
+        value: f64,
+    },
+}
+
+/// The dynamic study of a scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Dynamics {
+    /// The section.
+    pub spec: DynamicsSpec,
+    /// ω_ср, rad/s.
+    pub w_avg: f64,
+    /// The positions' labels.
+    pub labels: Vec<String>,
+    /// The positions' travel from position 1, rad.
+    pub travel: Vec<f64>,
+    /// The reduction from the velocity plans.
+    pub graphical: Vec<Reduced>,
+    /// The reduction by the analytic twin at the same positions.
+    pub analytic: Vec<Reduced>,
+    /// The cycle, exactly.
+    pub cycle: Cycle,
+    /// The flywheel by the energy equation, exactly.
+    pub exact: Solution,
+    /// The cycle time with that flywheel, s.
+    pub cycle_time: f64,
+    /// The diagrams as constructed.
+    pub diagrams: draw::Diagrams,
+    /// The δ each textbook route's flywheel really gives (Wittenbauer, Merkin).
+    pub delta_of: [f64; 2],
+    /// The flywheel's size from the exact inertia.
+    pub size: flywheel::Size,
+    /// ω(φ) with the flywheel.
+    pub omega: crate::construct::Figure,
+    /// The flywheel's section.
+    pub wheel: crate::construct::Figure,
+}
+
+/// Carry out the dynamic study over the numbered, equally spaced positions of `plan` with
+/// their velocity plans `vps` (graphical) and the analytic twin.
+///
+/// # Errors
+/// See [`DynamicsError`].
+pub fn analyse(
+    spec: &DynamicsSpec,
+    forces: &ForceSpec,
+    plan: &PositionPlan,
+    vps: &[Option<&KinPlan>],
+    w1: f64,
+    ctx: &Context,
+) -> Result<Dynamics, DynamicsError> {
+    let mu_l = plan.figure.scale.value();
+    let numbered = crate::kinematics::numbered(plan);
+    let start = numbered.first().map_or(0.0, |(_, p)| p.phi);
+    let red = Reducer::new(
+        &plan.program,
+        forces,
+        spec.links.as_deref(),
+        plan.extremes.clone(),
+        (start, w1),
+        spec.constant_inertia(),
+    )?;
+    let w_avg = spec.omega_avg.unwrap_or(w1.abs());
+    let (mut labels, mut travel, mut graphical, mut analytic) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for (k, pos) in &numbered {
+        let vp = vps
+            .get(*k)
+            .copied()
+            .flatten()
+            .ok_or_else(|| DynamicsError::NoPlan {
+                position: pos.label.clone(),
+                why: "refused (a group at its toggle)".into(),
+            })?;
+        let motion = Reducer::plan_motion(vp, &pos.built.p, mu_l, ctx);
+        graphical.push(red.at(&motion, pos.phi)?);
+        let t = (red.sense() * (pos.phi - start)).rem_euclid(TAU);
+        analytic.push(red.exact(t)?.0);
+        labels.push(pos.label.clone());
+        travel.push(t);
+    }
+    let cycle = Cycle::new(&red, twin::PANELS)?;
+    let exact = cycle.flywheel(w_avg, spec.delta)?;
+    let cycle_time = cycle.cycle_time(exact.j_fw, exact.t0);
+    let diagrams = draw::diagrams(spec, &graphical, w_avg, ctx)?;
+    let delta_of = [diagrams.wittenbauer.j_fw, diagrams.merkin.j_fw]
+        .map(|j| cycle.with_flywheel(j.max(0.0), w_avg).delta());
+    let size = flywheel::size(&spec.flywheel, exact.j_fw);
+    let omega = draw::omega_figure(&cycle, &exact, diagrams.scale_phi, ctx)?;
+    let wheel = flywheel::section(&size, ctx)?;
+    Ok(Dynamics {
+        spec: spec.clone(),
+        w_avg,
+        labels,
+        travel,
+        graphical,
+        analytic,
+        cycle,
+        exact,
+        cycle_time,
+        diagrams,
+        delta_of,
+        size,
+        omega,
+        wheel,
+    })
+}

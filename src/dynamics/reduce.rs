@@ -1,0 +1,191 @@
+//! Reduction to the crank: the reduced moment of the forces M_пр = Σ(F·v + M·ω)/|ω₁| (the
+//! power balance, the same number Zhukovsky's lever gives) and the reduced moment of inertia
+//! J_пр = J_const + Σ(m·v_S² + J_S·ω²)/ω₁², from the motion of a position as one route knows
+//! it (a velocity plan, or the analytic twin).
+//!
+//! Sign convention: M_пр is positive when it drives the crank in its sense of rotation (a
+//! resisting moment is negative); the force analysis' balancing moment M_у (counter-clockwise)
+//! satisfies M_у·sign(ω₁) = −M_пр of the same loads.
+
+use super::DynamicsError;
+use crate::construct::Context;
+use crate::forces::loads::{loads, Load, LoadKind, Motion};
+use crate::forces::twin::power_balance;
+use crate::forces::{phase_at, ForceSpec};
+use crate::geom::DVec2;
+use crate::linkage::{Extremes, KinPlan, Pose, Program};
+
+/// The reduced quantities of one position.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reduced {
+    /// The reduced moment of the working resistances, N·m (driving positive).
+    pub m_res: f64,
+    /// The reduced moment of the weights, N·m.
+    pub m_grav: f64,
+    /// The reduced moment of inertia, constant part included, kg·m².
+    pub j: f64,
+}
+
+impl Reduced {
+    /// The reduced moment of every force, N·m.
+    pub fn m(&self) -> f64 {
+        self.m_res + self.m_grav
+    }
+}
+
+/// The reduced moment of `loads` moving as `motion` with the crank at |ω₁| = `w`:
+/// Σ(F·v + M·ω)/|ω₁|, N·m (driving positive).
+pub fn reduce_loads(loads: &[Load], motion: &Motion, w: f64) -> f64 {
+    // The power balance's M_bal at a crank turning counter-clockwise at w, with its sign
+    // turned: the moment the loads exert.
+    -power_balance(loads, motion, w)
+}
+
+/// What the reduction needs: the mechanism, the loads of the links that count, the strokes.
+#[derive(Debug, Clone)]
+pub struct Reducer<'a> {
+    /// The compiled mechanism.
+    pub prog: &'a Program,
+    /// The `[forces]` loads restricted to the links that count.
+    pub forces: ForceSpec,
+    /// The extreme positions (where the strokes change).
+    pub extremes: Option<Extremes>,
+    /// Crank angle of position 1 (travel 0), radians.
+    pub start: f64,
+    /// ω₁, rad/s, signed counter-clockwise.
+    pub w1: f64,
+    /// The constant reduced inertias, kg·m².
+    pub j_const: f64,
+}
+
+impl<'a> Reducer<'a> {
+    /// The reducer of `forces` restricted to `links` (every link when `None`).
+    ///
+    /// # Errors
+    /// A link named in `links` without a mass in `[forces]`.
+    pub fn new(
+        prog: &'a Program,
+        forces: &ForceSpec,
+        links: Option<&[u32]>,
+        extremes: Option<Extremes>,
+        (start, w1): (f64, f64),
+        j_const: f64,
+    ) -> Result<Self, DynamicsError> {
+        let mut f = forces.clone();
+        if let Some(ls) = links {
+            if let Some(&l) = ls
+                .iter()
+                .find(|l| !forces.links.iter().any(|m| m.link == **l))
+            {
+                return Err(DynamicsError::NoLinkMass { link: l });
+            }
+            f.links.retain(|m| ls.contains(&m.link));
+        }
+        Ok(Self {
+            prog,
+            forces: f,
+            extremes,
+            start,
+            w1,
+            j_const,
+        })
+    }
+
+    /// The sense of rotation, ±1.
+    pub fn sense(&self) -> f64 {
+        if self.w1 < 0.0 {
+            -1.0
+        } else {
+            1.0
+        }
+    }
+
+    /// The crank angle at `travel` (radians turned from position 1 in the sense of rotation).
+    pub fn phi(&self, travel: f64) -> f64 {
+        self.start + self.sense() * travel
+    }
+
+    /// The reduced moments and inertia of `motion` at crank angle `phi`.
+    ///
+    /// # Errors
+    /// A load's point that is not a point of the mechanism.
+    pub fn at(&self, motion: &Motion, phi: f64) -> Result<Reduced, DynamicsError> {
+        let ph = phase_at(self.extremes.as_ref(), phi, self.sense());
+        let all = loads(&self.forces, self.prog, motion, ph)?;
+        let w = self.w1.abs();
+        let of = |kind: LoadKind| {
+            let some: Vec<Load> = all.iter().filter(|l| l.kind == kind).cloned().collect();
+            reduce_loads(&some, motion, w)
+        };
+        let mut j = self.j_const;
+        for lm in &self.forces.links {
+            let s = self.prog.index(&lm.centre).unwrap_or(0);
+            let v = motion.v.get(s).copied().unwrap_or(DVec2::ZERO);
+            let om = motion.omega.get(lm.link as usize).copied().unwrap_or(0.0);
+            j += (lm.mass * v.length_squared() + lm.inertia * om * om) / (w * w);
+        }
+        Ok(Reduced {
+            m_res: of(LoadKind::Resistance),
+            m_grav: of(LoadKind::Weight),
+            j,
+        })
+    }
+
+    /// The analytic twin's pose at `travel`.
+    ///
+    /// # Errors
+    /// The mechanism cannot be assembled there.
+    pub fn pose(&self, travel: f64) -> Result<Pose, DynamicsError> {
+        let phi = self.phi(travel);
+        self.prog
+            .solve(phi, None)
+            .map_err(|u| DynamicsError::Unassembled {
+                phi_deg: phi.to_degrees(),
+                detail: u.detail,
+            })
+    }
+
+    /// The analytic twin at `travel`: the reduced quantities and dJ/dψ (ψ the travel).
+    ///
+    /// # Errors
+    /// The mechanism cannot be assembled, or a load's point is unknown.
+    pub fn exact(&self, travel: f64) -> Result<(Reduced, f64), DynamicsError> {
+        let pose = self.pose(travel)?;
+        let motion = Motion {
+            a: vec![DVec2::ZERO; pose.p.len()],
+            eps: vec![0.0; pose.dangle.len()],
+            ..Motion::analytic(&pose, self.w1)
+        };
+        let r = self.at(&motion, pose.phi)?;
+        let mut dj = 0.0;
+        for lm in &self.forces.links {
+            let s = self.prog.index(&lm.centre).unwrap_or(0);
+            let l = lm.link as usize;
+            let (dp, ddp) = (pose.dp[s], pose.ddp[s]);
+            let (da, dda) = (
+                pose.dangle.get(l).copied().unwrap_or(0.0),
+                pose.ddangle.get(l).copied().unwrap_or(0.0),
+            );
+            dj += 2.0 * (lm.mass * dp.dot(ddp) + lm.inertia * da * dda);
+        }
+        Ok((r, self.sense() * dj))
+    }
+
+    /// The motion of a position as its velocity plan gives it: velocities off the plan at
+    /// μ_v, the links' ω as the plan reads them (no accelerations: the reduction needs none).
+    /// Every velocity is read to the drafting resolution of `ctx`.
+    pub fn plan_motion(vp: &KinPlan, built_p: &[DVec2], mu_l: f64, ctx: &Context) -> Motion {
+        let mu_v = vp.figure.scale.value();
+        Motion {
+            p: built_p.iter().map(|x| *x * mu_l).collect(),
+            v: vp
+                .images
+                .iter()
+                .map(|x| x.normalize_or_zero() * ctx.drafting.read(x.length()) * mu_v)
+                .collect(),
+            a: vec![DVec2::ZERO; vp.images.len()],
+            omega: vp.rate.clone(),
+            eps: vec![0.0; vp.rate.len()],
+        }
+    }
+}

@@ -1,0 +1,162 @@
+//! The rows and notes of the dynamic study.
+
+use super::Dynamics;
+use crate::check::{At, Key, Method, Row, Symbol};
+use crate::scale::{format_sig, Lang};
+
+/// The rows: `M_red`, `J_red` (velocity plans) and `dT` (graphical integration) per
+/// position; `A_res`, `M_drive` (integration), `J_flywheel` and `delta` (Wittenbauer,
+/// Merkin) of the whole scene, each against the analytic twin.
+pub fn rows(d: &Dynamics) -> Vec<Row> {
+    let mut rows = Vec::new();
+    let big = |f: &dyn Fn(usize) -> f64| (0..d.labels.len()).fold(0.0f64, |m, i| m.max(f(i).abs()));
+    let m_scale = big(&|i| d.analytic[i].m());
+    let j_scale = big(&|i| d.analytic[i].j);
+    let t_scale = big(&|i| d.cycle.delta_t(d.travel[i]));
+    for (i, label) in d.labels.iter().enumerate() {
+        let (g, a) = (&d.graphical[i], &d.analytic[i]);
+        let mut push = |symbol: Symbol, subject: &str, method: Method, g: f64, a: f64, s: f64| {
+            rows.push(Row {
+                key: Key::at_position(symbol, subject, label),
+                method,
+                graphical: g,
+                analytic: a,
+                conditioning: None,
+                scale: s,
+            })
+        };
+        push(Symbol::Moment, "red", Method::Plan, g.m(), a.m(), m_scale);
+        push(Symbol::Inertia, "red", Method::Plan, g.j, a.j, j_scale);
+        let dt = d.diagrams.delta_t.get(i).copied().unwrap_or(f64::NAN);
+        push(
+            Symbol::EnergyChange,
+            "",
+            Method::Integration,
+            dt,
+            d.cycle.delta_t(d.travel[i]),
+            t_scale,
+        );
+    }
+    let mut scene = |symbol: Symbol, subject: &str, method: Method, g: f64, a: f64| {
+        rows.push(Row {
+            key: Key {
+                symbol,
+                subject: subject.into(),
+                at: At::Scene,
+            },
+            method,
+            graphical: g,
+            analytic: a,
+            conditioning: None,
+            scale: a.abs(),
+        })
+    };
+    let a_c = d.diagrams.a_c.last().copied().unwrap_or(f64::NAN);
+    scene(Symbol::Work, "res", Method::Integration, a_c, d.cycle.a_res);
+    scene(
+        Symbol::Moment,
+        "drive",
+        Method::Integration,
+        d.diagrams.m_drive,
+        d.cycle.m_drive,
+    );
+    let routes = [
+        (
+            Method::Wittenbauer,
+            d.diagrams.wittenbauer.j_fw,
+            d.delta_of[0],
+        ),
+        (Method::Merkin, d.diagrams.merkin.j_fw, d.delta_of[1]),
+    ];
+    for (m, j, _) in routes {
+        scene(Symbol::Inertia, "flywheel", m, j, d.exact.j_fw);
+    }
+    for (m, _, delta) in routes {
+        scene(Symbol::Irregularity, "", m, delta, d.exact.delta());
+    }
+    rows
+}
+
+/// The notes: the exact solution, the textbook routes against it, the seed's numbers that do
+/// not follow from its data.
+pub fn notes(d: &Dynamics) -> Vec<String> {
+    let n = |x: f64| format_sig(x, 6, Lang::En);
+    let e = &d.exact;
+    let pct = |x: f64, r: f64| format_sig((x - r) / r * 100.0, 3, Lang::En);
+    let mut out = vec![
+        format!(
+            "dynamics: the energy equation integrated exactly gives J_flywheel = {} kg·m² for δ = {} at ω_avg = {} rad/s (ω_max = {} at {}°, ω_min = {} at {}° of crank travel from position {}); the cycle takes {} s; A_res = {} J, M_drive = {} N·m",
+            n(e.j_fw),
+            n(e.delta()),
+            n(e.omega_avg()),
+            n(e.w_max.0),
+            format_sig(e.w_max.1.to_degrees(), 4, Lang::En),
+            n(e.w_min.0),
+            format_sig(e.w_min.1.to_degrees(), 4, Lang::En),
+            d.labels.first().map_or("1", String::as_str),
+            n(d.cycle_time),
+            n(d.cycle.a_res),
+            n(d.cycle.m_drive),
+        ),
+        format!(
+            "dynamics: at {} positions Wittenbauer's tangents give J_flywheel = {} kg·m² ({} %, δ really {}), Merkin's route {} kg·m² ({} %, δ really {}); Merkin on the continuous exact data gives {} kg·m² (T_II with ω = ω_avg is the method's own error)",
+            d.labels.len(),
+            n(d.diagrams.wittenbauer.j_fw),
+            pct(d.diagrams.wittenbauer.j_fw, e.j_fw),
+            n(d.delta_of[0]),
+            n(d.diagrams.merkin.j_fw),
+            pct(d.diagrams.merkin.j_fw, e.j_fw),
+            n(d.delta_of[1]),
+            n(d.cycle.merkin(d.w_avg, d.spec.delta).0 - d.spec.constant_inertia()),
+        ),
+    ];
+    let Some(seed) = &d.spec.seed else {
+        return out;
+    };
+    if let Some(j) = seed.flywheel {
+        let got = d.cycle.with_flywheel(j, d.w_avg).delta();
+        out.push(format!(
+            "dynamics: seed error: its flywheel J = {} kg·m² does not follow from its data: the exact value is {} kg·m² ({} % off); with J = {} the machine runs at δ = {} = 1/{} instead of {}",
+            n(j),
+            n(e.j_fw),
+            pct(j, e.j_fw),
+            n(j),
+            n(got),
+            format_sig(1.0 / got, 3, Lang::En),
+            n(d.spec.delta),
+        ));
+    }
+    if let Some(v) = seed.expression_value(d.spec.delta, d.w_avg) {
+        out.push(format!(
+            "dynamics: seed error: its expression μ_T·BD/(δ·ω²) − (J_b + J_d)/2 evaluates to {} kg·m², not the {} it prints",
+            n(v),
+            seed.flywheel.map_or_else(|| "value".into(), n),
+        ));
+    }
+    if !seed.j_red.is_empty() {
+        let c = d.spec.constant_inertia();
+        // Where the links move enough for the variable part to be read: at least a tenth of
+        // its largest value.
+        let top = d.analytic.iter().fold(0.0f64, |m, a| m.max(a.j - c));
+        let ratios: Vec<f64> = seed
+            .j_red
+            .iter()
+            .zip(&d.analytic)
+            .filter(|(_, a)| a.j - c > 0.1 * top)
+            .map(|(s, a)| (s - c) / (a.j - c))
+            .collect();
+        if let (Some(lo), Some(hi)) = (
+            ratios.iter().copied().reduce(f64::min),
+            ratios.iter().copied().reduce(f64::max),
+        ) {
+            out.push(format!(
+                "dynamics: seed error: its table of reduced inertias J_пр is wrong wherever the links move: its variable part J_пр − {} is {}…{} × the correct one at {} positions",
+                n(c),
+                format_sig(lo, 3, Lang::En),
+                format_sig(hi, 3, Lang::En),
+                ratios.len(),
+            ));
+        }
+    }
+    out
+}

@@ -1,0 +1,114 @@
+//! The `[dynamics]` section as the dynamic study takes it: the mean speed and the coefficient
+//! of irregularity δ, the constant reduced inertias, which links count, the number of
+//! positions, the diagrams' scales and the flywheel's kind with its coefficients. SI units.
+
+use crate::scale::Scale;
+
+/// A constant reduced moment of inertia (a reducer, a gearbox, the crank's own wheel).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConstantInertia {
+    /// What it is (`reducer`, `gearbox`).
+    pub name: String,
+    /// Its moment of inertia reduced to the crank, kg·m² (≥ 0).
+    pub inertia: f64,
+}
+
+/// The shape of the flywheel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FlywheelKind {
+    /// A rim with spokes and a hub (the seed's: J = K_j·ρ·D⁵, m = K_m·ρ·D³).
+    Rim,
+    /// A solid disc of width b = ψ·D (J = m·D²/8 = π·ψ·ρ·D⁵/32).
+    Disc,
+}
+
+/// The flywheel's kind and the coefficients that give its size from its inertia.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlywheelSpec {
+    /// Rim or disc.
+    pub kind: FlywheelKind,
+    /// K_j in J = K_j·ρ·D⁵.
+    pub k_j: f64,
+    /// K_m in m = K_m·ρ·D³.
+    pub k_m: f64,
+    /// Density ρ, kg/m³.
+    pub rho: f64,
+}
+
+impl FlywheelSpec {
+    /// The seed's rim (000 §5, L1454–1468): K_j = 0.0076, K_m = 0.0452, cast iron ρ = 7540.
+    pub const SEED_RIM: FlywheelSpec = FlywheelSpec {
+        kind: FlywheelKind::Rim,
+        k_j: 0.0076,
+        k_m: 0.0452,
+        rho: 7540.0,
+    };
+    /// Width of a disc as a fraction of its diameter, b = ψ·D.
+    pub const DISC_WIDTH: f64 = 0.2;
+    /// A disc of width 0.2·D: K_j = π·0.2/32, K_m = π·0.2/4.
+    pub fn disc(rho: f64) -> FlywheelSpec {
+        FlywheelSpec {
+            kind: FlywheelKind::Disc,
+            k_j: std::f64::consts::PI * Self::DISC_WIDTH / 32.0,
+            k_m: std::f64::consts::PI * Self::DISC_WIDTH / 4.0,
+            rho,
+        }
+    }
+}
+
+/// The validated `[dynamics]` section.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DynamicsSpec {
+    /// The mean angular velocity ω_ср of the crank, rad/s; `None`: the mechanism's ω₁.
+    pub omega_avg: Option<f64>,
+    /// The coefficient of irregularity δ = (ω_max − ω_min)/ω_ср (0 < δ < 1).
+    pub delta: f64,
+    /// The constant reduced inertias.
+    pub constant: Vec<ConstantInertia>,
+    /// The links whose masses count (`None`: every link of `[forces]`).
+    pub links: Option<Vec<u32>>,
+    /// Number of equally spaced positions of the diagrams (`None`: the scene's positions).
+    pub count: Option<u32>,
+    /// μ_M of the diagram of reduced moments, N·m/mm.
+    pub scale_m: Option<Scale>,
+    /// μ_φ of the diagrams' abscissa, rad/mm.
+    pub scale_phi: Option<Scale>,
+    /// The pole distance H of the graphical integration, mm.
+    pub pole_h: Option<f64>,
+    /// μ_J of the reduced inertia, kg·m²/mm.
+    pub scale_j: Option<Scale>,
+    /// μ_T of the energy diagrams, J/mm.
+    pub scale_t: Option<Scale>,
+    /// The flywheel.
+    pub flywheel: FlywheelSpec,
+    /// The seed's own numbers, to be checked and flagged (`[dynamics.seed]`).
+    pub seed: Option<SeedClaims>,
+}
+
+/// What a seed (a student's project) claims, checked by the report: its flywheel, its table
+/// of reduced inertias and the numbers of its expression for the flywheel.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SeedClaims {
+    /// The flywheel's moment of inertia it gives, kg·m².
+    pub flywheel: Option<f64>,
+    /// Its reduced inertias J_пр at the positions (its Table 10), kg·m².
+    pub j_red: Vec<f64>,
+    /// Its expression J_м = μ_T·BD/(δ·ω²) − (J_b + J_d)/2: [μ_T (J/mm), BD (mm), J_b, J_d
+    /// (kg·m²)].
+    pub expression: Option<[f64; 4]>,
+}
+
+impl SeedClaims {
+    /// The seed's expression evaluated: μ_T·BD/(δ·ω²) − (J_b + J_d)/2.
+    pub fn expression_value(&self, delta: f64, w: f64) -> Option<f64> {
+        self.expression
+            .map(|[mu, bd, jb, jd]| mu * bd / (delta * w * w) - (jb + jd) / 2.0)
+    }
+}
+
+impl DynamicsSpec {
+    /// The sum of the constant reduced inertias, kg·m².
+    pub fn constant_inertia(&self) -> f64 {
+        self.constant.iter().map(|c| c.inertia).sum()
+    }
+}

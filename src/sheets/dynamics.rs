@@ -1,0 +1,303 @@
+//! Plate "Динамика машины" (seed 000 §5): the diagram of the reduced moment of resistance with
+//! the works A_с (graphical integration) and A_д, ΔT, J_пр, the energy–mass diagram with its
+//! tangents, Merkin's T_I, ω(φ) with the flywheel, the flywheel's section, the data and
+//! Tables 9/10 in the seed's shape (graphical | analytic | error). One A1 sheet (more if the
+//! views need it).
+
+use super::layout::{lay_out, Block, ScaleKey};
+use super::BuildError;
+use crate::dynamics::{Dynamics, FlywheelKind};
+use crate::geom::DVec2;
+use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
+use crate::scale::{format_fixed, format_sig, Lang, Scale};
+use crate::study::Session;
+
+/// Text height of the data lines and the tables, mm.
+const TEXT_MM: f64 = 3.5;
+const TABLE_MM: f64 = 2.5;
+
+fn tr(lang: Lang, ru: &'static str, uk: &'static str, en: &'static str) -> &'static str {
+    lang.pick(ru, uk, en)
+}
+
+fn keyed(key: &'static str, scale: Scale) -> Option<ScaleKey> {
+    Some(ScaleKey { key, scale })
+}
+
+/// Build the dynamics sheet of the scene.
+pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
+    let scene = session.scene();
+    let d = session.dynamics()?;
+    let g = &d.diagrams;
+    // An energy scale is written μ_T (its quantity's symbol is A): `energy` marks it.
+    let cap = |what: &str, scales: &[(Scale, bool)]| {
+        let s: Vec<String> = scales
+            .iter()
+            .map(|&(s, energy)| {
+                let c = s.caption(lang);
+                if energy {
+                    c.replacen("μ_{A}", "μ_{T}", 1)
+                } else {
+                    c
+                }
+            })
+            .collect();
+        format!("{what}, {}", s.join("; "))
+    };
+    let h = format!(
+        "H = {} {}",
+        format_sig(g.pole_h, 4, lang),
+        tr(lang, "мм", "мм", "mm")
+    );
+    let mut blocks = vec![
+        Block::view(
+            g.work.clone(),
+            format!(
+                "{}; {h}",
+                cap(
+                    tr(
+                        lang,
+                        "M_{с}, A_{с}, A_{д}",
+                        "M_{с}, A_{с}, A_{д}",
+                        "M_{с}, A_{с}, A_{д}"
+                    ),
+                    &[(g.scale_m, false), (g.scale_a, false), (g.scale_phi, false)]
+                )
+            ),
+            keyed("dynamics.scale_m", g.scale_m),
+        ),
+        Block::view(
+            g.energy.clone(),
+            cap("ΔT = A_{д} − A_{с}", &[(g.scale_t, true)]),
+            keyed("dynamics.scale_t", g.scale_t),
+        ),
+        Block::view(
+            g.inertia.clone(),
+            cap("J_{пр}(φ)", &[(g.scale_j, false)]),
+            keyed("dynamics.scale_j", g.scale_j),
+        ),
+        Block::view(
+            g.wittenbauer_figure.clone(),
+            cap(
+                tr(
+                    lang,
+                    "Диаграмма энергомасс ΔT(J_{пр})",
+                    "Діаграма енергомас ΔT(J_{пр})",
+                    "Energy–mass diagram ΔT(J_{пр})",
+                ),
+                &[(g.scale_tw, true), (g.scale_j, false)],
+            ),
+            keyed("dynamics.scale_t", g.scale_tw),
+        ),
+        Block::view(
+            g.merkin_figure.clone(),
+            cap("T_{I} = ΔT − ω_{ср}^2 J_{пр}/2", &[(g.scale_t1, true)]),
+            None,
+        ),
+        Block::view(
+            d.omega.clone(),
+            cap(
+                tr(
+                    lang,
+                    "ω(φ) с маховиком",
+                    "ω(φ) з маховиком",
+                    "ω(φ) with the flywheel",
+                ),
+                &[(d.omega.scale, false)],
+            ),
+            None,
+        ),
+    ];
+    // A machine that runs within δ without a flywheel has none to draw.
+    if !d.wheel.steps.is_empty() {
+        blocks.push(Block::view(
+            d.wheel.clone(),
+            cap(
+                tr(lang, "Маховик", "Маховик", "Flywheel"),
+                &[(d.wheel.scale, false)],
+            ),
+            None,
+        ));
+    }
+    let mut lines = data_lines(&d, lang);
+    lines.push(String::new());
+    lines.push(super::drafting_line(session.drafting(), lang));
+    blocks.push(Block::Text {
+        lines,
+        size_mm: TEXT_MM,
+    });
+    blocks.push(Block::Table(positions_table(&d, lang)));
+    blocks.push(Block::Table(results_table(&d, lang)));
+    let title = super::title_block(
+        scene,
+        tr(
+            lang,
+            "Динамика машины",
+            "Динаміка машини",
+            "Machine dynamics",
+        ),
+        session.scale_l()?,
+        lang,
+    );
+    let sheet = Sheet {
+        size: SheetSize::A1,
+        landscape: true,
+    };
+    lay_out(sheet, blocks, "dynamics", &title, lang)
+}
+
+fn num(x: f64, lang: Lang) -> String {
+    format_sig(x, 4, lang)
+}
+
+/// The data and the results as text.
+fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
+    let s = &d.spec;
+    let kgm2 = tr(lang, "кг·м^2", "кг·м^2", "kg·m^2");
+    let mut out = vec![tr(lang, "Исходные данные", "Вихідні дані", "Data").to_string()];
+    out.push(format!(
+        "ω_{{ср}} = {} {}, δ = {} = 1/{}",
+        num(d.w_avg, lang),
+        tr(lang, "рад/с", "рад/с", "rad/s"),
+        num(s.delta, lang),
+        format_sig(1.0 / s.delta, 3, lang)
+    ));
+    for c in &s.constant {
+        out.push(format!(
+            "J_{{{}}} = {} {kgm2}",
+            c.name,
+            num(c.inertia, lang)
+        ));
+    }
+    out.push(String::new());
+    out.push(tr(lang, "Маховик", "Маховик", "Flywheel").to_string());
+    let e = &d.exact;
+    out.push(format!(
+        "J_{{м}} = {} {kgm2}; ω_{{max}} = {}, ω_{{min}} = {} {}",
+        num(e.j_fw, lang),
+        num(e.w_max.0, lang),
+        num(e.w_min.0, lang),
+        tr(lang, "рад/с", "рад/с", "rad/s")
+    ));
+    out.push(format!(
+        "J_{{м}} {} = μ_{{T}}·kl/(δω_{{ср}}^2) = {} {kgm2}; {} = {} {kgm2}",
+        tr(lang, "(Виттенбауэр)", "(Віттенбауер)", "(Wittenbauer)"),
+        num(d.diagrams.wittenbauer.j_fw, lang),
+        tr(lang, "Меркин", "Меркін", "Merkin"),
+        num(d.diagrams.merkin.j_fw, lang)
+    ));
+    let z = &d.size;
+    let kind = match z.kind {
+        FlywheelKind::Rim => tr(lang, "обод", "обід", "rim"),
+        FlywheelKind::Disc => tr(lang, "диск", "диск", "disc"),
+    };
+    out.push(format!(
+        "{kind}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {}, m = K_{{m}}ρD^3 = {} {}",
+        format_fixed(z.d * 1e3, 0, lang),
+        tr(lang, "мм", "мм", "mm"),
+        num(z.mass, lang),
+        tr(lang, "кг", "кг", "kg")
+    ));
+    out
+}
+
+/// Tables 9/10 in the seed's shape: per position M_с, J_пр (velocity plans | twin | error)
+/// and ΔT (graphical integration | exact | error).
+fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
+    let err = |g: f64, a: f64, scale: f64| {
+        if a.abs() <= 1e-9 * scale.max(1e-300) || a == 0.0 {
+            "—".to_string()
+        } else {
+            format_fixed((g - a) / a.abs() * 100.0, 2, lang)
+        }
+    };
+    let m_scale = d.analytic.iter().fold(0.0f64, |m, r| m.max(r.m().abs()));
+    let rows = d
+        .labels
+        .iter()
+        .enumerate()
+        .map(|(i, label)| {
+            let (g, a) = (&d.graphical[i], &d.analytic[i]);
+            let dt = d.diagrams.delta_t.get(i).copied().unwrap_or(f64::NAN);
+            let dt_a = d.cycle.delta_t(d.travel[i]);
+            vec![
+                label.clone(),
+                format_fixed(d.travel[i].to_degrees(), 0, lang),
+                format_fixed(-g.m(), 2, lang),
+                format_fixed(-a.m(), 2, lang),
+                err(g.m(), a.m(), m_scale),
+                format_fixed(g.j, 4, lang),
+                format_fixed(a.j, 4, lang),
+                err(g.j, a.j, 1.0),
+                format_fixed(dt, 1, lang),
+                format_fixed(dt_a, 1, lang),
+            ]
+        })
+        .collect();
+    let nm = tr(lang, "Н·м", "Н·м", "N·m");
+    let kg = tr(lang, "кг·м^2", "кг·м^2", "kg·m^2");
+    let j = tr(lang, "Дж", "Дж", "J");
+    TableBlock {
+        at: DVec2::ZERO,
+        title: tr(
+            lang,
+            "Таблицы 9, 10: M_{с} = −M_{пр}, J_{пр}, ΔT (графически | аналитически | δ, %)",
+            "Таблиці 9, 10: M_{с} = −M_{пр}, J_{пр}, ΔT (графічно | аналітично | δ, %)",
+            "Tables 9, 10: M_{с} = −M_{пр}, J_{пр}, ΔT (graphical | analytic | δ, %)",
+        )
+        .into(),
+        columns: vec![
+            ("№".into(), 8.0),
+            ("φ, °".into(), 10.0),
+            (format!("M_{{с}}, {nm}"), 18.0),
+            (format!("M_{{с}}*, {nm}"), 18.0),
+            ("δ, %".into(), 12.0),
+            (format!("J_{{пр}}, {kg}"), 24.0),
+            (format!("J_{{пр}}*, {kg}"), 24.0),
+            ("δ, %".into(), 12.0),
+            (format!("ΔT, {j}"), 16.0),
+            (format!("ΔT*, {j}"), 16.0),
+        ],
+        rows,
+        size_mm: TABLE_MM,
+    }
+}
+
+/// The results of the whole cycle: graphical | analytic | error.
+fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
+    let rows = crate::dynamics::rows(d);
+    let errors = crate::check::rel_errors(&rows);
+    let body = rows
+        .iter()
+        .zip(errors)
+        .filter(|(r, _)| r.position().is_none())
+        .map(|(r, e)| {
+            vec![
+                r.key.symbol.markup(&r.key.subject),
+                r.method.name(lang).to_string(),
+                format_sig(r.graphical, 5, lang),
+                format_sig(r.analytic, 5, lang),
+                e.map_or_else(|| "—".into(), |e| format_fixed(e * 100.0, 2, lang)),
+            ]
+        })
+        .collect();
+    TableBlock {
+        at: DVec2::ZERO,
+        title: tr(
+            lang,
+            "Работа, момент движущих сил, маховик: графически и точно",
+            "Робота, момент рушійних сил, маховик: графічно і точно",
+            "Work, driving moment, flywheel: graphical against exact",
+        )
+        .into(),
+        columns: vec![
+            (tr(lang, "величина", "величина", "quantity").into(), 22.0),
+            (tr(lang, "метод", "метод", "method").into(), 28.0),
+            (tr(lang, "графически", "графічно", "graphical").into(), 24.0),
+            (tr(lang, "точно", "точно", "exact").into(), 24.0),
+            ("δ, %".into(), 14.0),
+        ],
+        rows: body,
+        size_mm: TABLE_MM,
+    }
+}

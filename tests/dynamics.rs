@@ -1,0 +1,235 @@
+//! Machine dynamics end to end: the shaper's report (seed 000 §5) against the acceptance
+//! values of `seed-000-cases.md` §000.14, the seed's errors flagged, a dynamics with its own
+//! number of positions, and bad `[dynamics]` sections refused with their key paths.
+
+mod support;
+use support::{scratch, tmm};
+
+fn report_json(scene: &str) -> serde_json::Value {
+    let o = tmm(&["report", scene, "--format", "json"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).expect("report JSON")
+}
+
+fn rows<'a>(v: &'a serde_json::Value, q: &str) -> Vec<&'a serde_json::Value> {
+    v["rows"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .filter(|r| r["quantity"] == q)
+        .collect()
+}
+
+fn num(r: &serde_json::Value, field: &str) -> f64 {
+    r[field]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{field} of {r}"))
+}
+
+fn notes(v: &serde_json::Value) -> String {
+    v["notes"]
+        .as_array()
+        .expect("notes")
+        .iter()
+        .filter_map(|n| n.as_str())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The shaper's text without its `[dynamics]` (everything from the comment that opens it).
+fn shaper_without_dynamics() -> String {
+    let text = std::fs::read_to_string(support::root().join("constructions/shaper.toml"))
+        .expect("shaper.toml");
+    let cut = text
+        .find("# Machine dynamics")
+        .expect("the dynamics comment");
+    text[..cut].replace(", \"dynamics\"]", "]")
+}
+
+#[test]
+fn the_shaper_report_meets_the_acceptance_values() {
+    let v = report_json("constructions/shaper.toml");
+    // A_res = P_тс × stroke (0.46233 m: 2·L_CD·L_AB/L_AC), M_drive = A_res/2π.
+    let a = rows(&v, "A_res");
+    assert_eq!(a.len(), 1);
+    assert!(a[0]["position"].is_null());
+    assert_eq!(a[0]["method"], "integration");
+    let stroke = 2.0 * 0.71 * 0.14 / 0.43;
+    let want = 1275.3 * stroke;
+    let a_res = num(a[0], "analytic");
+    assert!((a_res - want).abs() < 1e-9 * want, "{a_res} vs {want}");
+    // The graphical integration over 12 positions: within 1 % (chord method).
+    assert!((num(a[0], "graphical") - want).abs() < 0.01 * want);
+    let m = rows(&v, "M_drive");
+    assert!((num(m[0], "analytic") - a_res / std::f64::consts::TAU).abs() < 1e-9 * a_res);
+    // The flywheel: 25.521 kg·m² (energy equation integrated exactly).
+    let j = rows(&v, "J_flywheel");
+    let methods: Vec<&str> = j.iter().filter_map(|r| r["method"].as_str()).collect();
+    assert_eq!(methods, ["wittenbauer", "merkin"]);
+    for r in &j {
+        let exact = num(r, "analytic");
+        assert!((exact - 25.52).abs() < 0.01 * 25.52, "{exact}");
+        assert!(r["position"].is_null());
+        // Each route shows its method error (12 positions: between 1 % and 30 %).
+        let e = num(r, "rel_error").abs();
+        assert!(e > 0.01 && e < 0.3, "{r}");
+    }
+    // δ: the exact flywheel gives 1/15 to 1e-6; each route's flywheel gives more.
+    for r in rows(&v, "delta") {
+        assert!((num(r, "analytic") - 1.0 / 15.0).abs() < 1e-6, "{r}");
+        assert!(num(r, "graphical") > 1.0 / 15.0, "{r}");
+    }
+    // Per position: M_red and J_red off the velocity plans equal the twin at drafting 0.
+    for q in ["M_red", "J_red"] {
+        let rs = rows(&v, q);
+        assert_eq!(rs.len(), 12, "{q}");
+        for r in rs {
+            assert!(
+                num(r, "abs_error") < 1e-9 * (1.0 + num(r, "analytic").abs()),
+                "{r}"
+            );
+        }
+    }
+    assert_eq!(rows(&v, "dT").len(), 12);
+    let n = notes(&v);
+    for s in [
+        "its flywheel J = 17.1",
+        "evaluates to 18.58",
+        "its table of reduced inertias",
+    ] {
+        assert!(n.contains(s), "`{s}` not in the notes:\n{n}");
+    }
+}
+
+#[test]
+fn a_dynamics_with_its_own_positions_and_every_link() {
+    let text = format!(
+        "{}\n[dynamics]\ndelta = 0.05\ncount = 36\n[[dynamics.constant]]\nname = \"ред\"\ninertia = 3.0\n[dynamics.flywheel]\nkind = \"disc\"\n",
+        shaper_without_dynamics()
+    );
+    let dir = scratch("dynamics-36");
+    let path = dir.join("shaper36.toml");
+    std::fs::write(&path, text).expect("write");
+    let v = report_json(path.to_str().expect("utf-8"));
+    assert_eq!(rows(&v, "M_red").len(), 36);
+    let j = rows(&v, "J_flywheel");
+    // With 36 positions each textbook route is within 5 % of the exact flywheel.
+    for r in &j {
+        assert!(num(r, "rel_error").abs() < 0.05, "{r}");
+    }
+    for r in rows(&v, "delta") {
+        assert!((num(r, "analytic") - 0.05).abs() < 1e-6, "{r}");
+    }
+    // Every link counts by default: block 2 on the crank pin adds m₂·L_AB² at position 1.
+    let j1 = rows(&v, "J_red")
+        .into_iter()
+        .find(|r| r["position"] == "1")
+        .expect("J_red at 1");
+    assert!(
+        (num(j1, "analytic") - (3.0 + 2.0 * 0.14 * 0.14)).abs() < 1e-9,
+        "{j1}"
+    );
+}
+
+#[test]
+fn bad_dynamics_sections_name_their_keys() {
+    let base = shaper_without_dynamics();
+    let cases: &[(&str, &[&str])] = &[
+        ("[dynamics]\n", &["dynamics.delta: missing"]),
+        (
+            "[dynamics]\ndelta = 1.5\nomega_avg = -3.0\n",
+            &["dynamics.delta = 1.5", "dynamics.omega_avg = -3"],
+        ),
+        (
+            "[dynamics]\ndelta = 0.05\nlinks = [3, 7]\ncount = 2\n",
+            &["dynamics.links[1] = 7", "dynamics.count = 2"],
+        ),
+        (
+            "[dynamics]\ndelta = 0.05\n[[dynamics.constant]]\nname = \"x\"\ninertia = -1.0\n[dynamics.flywheel]\nkind = \"cone\"\n",
+            &["dynamics.constant[0].inertia = -1", "dynamics.flywheel.kind = \"cone\""],
+        ),
+        (
+            "[dynamics]\ndelta = 0.05\nscale_m = 0.0\npole_h = nan\n[dynamics.seed]\nexpression = [1.0]\n",
+            &["dynamics.scale_m = 0", "dynamics.pole_h = nan", "dynamics.seed.expression"],
+        ),
+        ("[dynamics]\ndelta = 0.05\nwidth = 3.0\n", &["unknown field"]),
+    ];
+    for (k, (tail, expected)) in cases.iter().enumerate() {
+        let dir = scratch(&format!("bad-dynamics-{k}"));
+        let path = dir.join("bad.toml");
+        std::fs::write(&path, format!("{base}\n{tail}")).expect("write");
+        let o = tmm(&["check", path.to_str().expect("utf-8")]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "case {k}: {err}");
+        assert!(!err.contains("panicked"), "case {k}: {err}");
+        for e in *expected {
+            assert!(err.contains(e), "case {k}: `{e}` not in\n{err}");
+        }
+    }
+    // [dynamics] without [forces], and the plate without [dynamics].
+    let text = base
+        .split("[forces]")
+        .next()
+        .expect("before [forces]")
+        .replace(", \"forces\"", "");
+    for (k, (tail, expected)) in [
+        ("[dynamics]\ndelta = 0.05\n", "expected a [forces] table"),
+        ("", ""),
+    ]
+    .iter()
+    .enumerate()
+    {
+        let dir = scratch(&format!("bad-dynamics-forces-{k}"));
+        let path = dir.join("bad.toml");
+        let body = if k == 1 {
+            base.replace(
+                "wanted = [\"positions\", \"kinematics\", \"forces\"]",
+                "wanted = [\"dynamics\"]",
+            )
+        } else {
+            format!("{text}\n{tail}")
+        };
+        std::fs::write(&path, body).expect("write");
+        let o = tmm(&["check", path.to_str().expect("utf-8")]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "case {k}: {err}");
+        let want = if k == 1 {
+            "expected a [dynamics] table"
+        } else {
+            expected
+        };
+        assert!(err.contains(want), "case {k}: `{want}` not in\n{err}");
+    }
+}
+
+#[test]
+fn a_machine_that_needs_no_flywheel_gets_none_and_its_plate_builds() {
+    let text = format!(
+        "{}\n[dynamics]\ndelta = 0.05\nlinks = [3, 5]\n[[dynamics.constant]]\nname = \"ред\"\ninertia = 1000.0\n",
+        shaper_without_dynamics().replace(
+            "wanted = [\"positions\", \"kinematics\", \"forces\"]",
+            "wanted = [\"dynamics\"]"
+        )
+    );
+    let dir = scratch("dynamics-none");
+    let path = dir.join("loose.toml");
+    std::fs::write(&path, text).expect("write");
+    let v = report_json(path.to_str().expect("utf-8"));
+    for r in rows(&v, "J_flywheel") {
+        assert_eq!(num(r, "analytic"), 0.0, "{r}");
+    }
+    for r in rows(&v, "delta") {
+        assert!(num(r, "analytic") < 0.01, "{r}");
+    }
+    let out = dir.join("out");
+    let o = tmm(&[
+        "render",
+        path.to_str().expect("utf-8"),
+        "--out",
+        out.to_str().expect("utf-8"),
+        "--format",
+        "svg",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(out.join("loose/dynamics.svg").exists());
+}
