@@ -35,6 +35,7 @@ pub mod calculus;
 pub mod check;
 pub mod construct;
 pub mod forces;
+pub mod gears;
 pub mod geom;
 pub mod kinematics;
 pub mod linkage;

@@ -64,6 +64,26 @@ pub enum Symbol {
     Ratio,
     /// A power, W.
     Power,
+    /// A pressure angle of a gear mesh (α_w), degrees as the textbook writes it.
+    PressureAngle,
+    /// A centre distance (a_w), m.
+    CentreDistance,
+    /// A radius of a gear's circle (r_w, r_a, r_b, r_f), m.
+    Radius,
+    /// A tooth thickness on a circle (s, s_a), m.
+    ToothThickness,
+    /// A contact ratio (ε_α), 1.
+    ContactRatio,
+    /// A specific sliding (λ₁, λ₂), 1.
+    SpecificSliding,
+    /// A shift coefficient (x_min), 1.
+    ShiftCoefficient,
+    /// The deviation of a drawn envelope from the exact one, m.
+    EnvelopeDeviation,
+    /// A gear ratio (u₁₋₈), 1, signed.
+    GearRatio,
+    /// A length along the line of action (N₁N₂, B₁B₂), m.
+    ActionLength,
 }
 
 impl Symbol {
@@ -85,6 +105,16 @@ impl Symbol {
             Symbol::Angle => "angle",
             Symbol::Ratio => "eta",
             Symbol::Power => "P",
+            Symbol::PressureAngle => "alpha",
+            Symbol::CentreDistance => "a",
+            Symbol::Radius => "r",
+            Symbol::ToothThickness => "s",
+            Symbol::ContactRatio => "eps",
+            Symbol::SpecificSliding => "lambda",
+            Symbol::ShiftCoefficient => "x",
+            Symbol::EnvelopeDeviation => "envelope",
+            Symbol::GearRatio => "u",
+            Symbol::ActionLength => "g",
         }
     }
     /// The SI unit as the report writes it.
@@ -104,6 +134,16 @@ impl Symbol {
             Symbol::Angle => "rad",
             Symbol::Ratio => "1",
             Symbol::Power => "W",
+            Symbol::PressureAngle => "deg",
+            Symbol::CentreDistance
+            | Symbol::Radius
+            | Symbol::ToothThickness
+            | Symbol::EnvelopeDeviation
+            | Symbol::ActionLength => "m",
+            Symbol::ContactRatio
+            | Symbol::SpecificSliding
+            | Symbol::ShiftCoefficient
+            | Symbol::GearRatio => "1",
         }
     }
     /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{1-2}`, `F_{и3}`,
@@ -125,6 +165,16 @@ impl Symbol {
             Symbol::Angle => "α",
             Symbol::Ratio => "η",
             Symbol::Power => "P",
+            Symbol::PressureAngle => "α",
+            Symbol::CentreDistance => "a",
+            Symbol::Radius => "r",
+            Symbol::ToothThickness => "s",
+            Symbol::ContactRatio => "ε",
+            Symbol::SpecificSliding => "λ",
+            Symbol::ShiftCoefficient => "x",
+            Symbol::EnvelopeDeviation => "δ",
+            Symbol::GearRatio => "u",
+            Symbol::ActionLength => "g",
         };
         // A reaction names two links, written apart as the textbooks do: R_{1-2}.
         let sep = if self == Symbol::Reaction { "-" } else { "" };
@@ -218,11 +268,15 @@ pub enum Method {
     Envelope,
     /// The method of triangles (plans of planetary trains).
     Triangles,
+    /// The textbook's formula chain against an independent closed form (gear geometry).
+    Formula,
+    /// Read off the meshing picture.
+    Meshing,
 }
 
 impl Method {
     /// Every method, in report order.
-    pub const ALL: [Method; 9] = [
+    pub const ALL: [Method; 11] = [
         Method::Plan,
         Method::DiagramChords,
         Method::DiagramTangents,
@@ -232,6 +286,8 @@ impl Method {
         Method::Inversion,
         Method::Envelope,
         Method::Triangles,
+        Method::Formula,
+        Method::Meshing,
     ];
 
     /// The name in JSON and CSV: `plan`, `diagram-chords`, `diagram-tangents`, …; every
@@ -247,6 +303,8 @@ impl Method {
             Method::Inversion => "inversion",
             Method::Envelope => "envelope",
             Method::Triangles => "triangles",
+            Method::Formula => "formula",
+            Method::Meshing => "meshing",
         }
     }
 
@@ -282,6 +340,8 @@ impl Method {
                 "трикутники швидкостей",
                 "triangles",
             ),
+            Method::Formula => lang.pick("формула", "формула", "formula"),
+            Method::Meshing => lang.pick("картина зацепления", "картина зачеплення", "meshing"),
         }
     }
 }

@@ -1,0 +1,133 @@
+//! Involute gears (seed 000 §4, seed 002 PZ1–PZ3): the geometry of a shifted external pair
+//! in closed form, the involute drawn by the compass, the meshing picture, rack generation
+//! with undercut and pointing, and gear trains (ordinary and planetary) by Willis and by the
+//! velocity triangles.
+//!
+//! As everywhere in `tmm`, each procedure exists twice: a **construction** through the
+//! recorder ([`mesh::meshing`], [`generate::generate`], [`train::triangles`]) read off under
+//! the drafting model, and an **analytic twin** ([`Pair`], [`Cutting`], [`Train::willis`]);
+//! [`rows`] compares them.
+//!
+//! Errata of the seeds reproduced against, never matched (`docs/seed-000-cases.md` §000.13,
+//! `docs/seed-002-digest.md` §4.3): seed 000 takes r_b = r·cos α_w and the base pitch
+//! πm·cos α_w, so its ε_α = 1.22 (exact 1.1550); PZ3 reads cos 26.92° as 0.8836 and prints
+//! a_w = 180.79 mm (exact 179.18) and ε_α = 1.14 (exact 1.1637), and lays off "p = 14.13 mm".
+
+pub mod generate;
+pub mod involute;
+pub mod mesh;
+mod pair;
+mod rack;
+pub mod rows;
+// pub mod train;
+#[cfg(test)]
+mod tests;
+
+pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
+pub use pair::{Pair, PairSpec};
+pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
+// pub use train::{Mesh, Train, TrainError};
+
+use crate::scale::Scale;
+use thiserror::Error;
+
+/// The least tip thickness of a sound tooth, × m (seed 002 PZ1: S_a ≥ 0.3m).
+pub const MIN_TIP: f64 = 0.3;
+
+/// Why a gear cannot be computed or constructed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum GearError {
+    /// A datum out of its range.
+    #[error("gears: {what} = {value}: expected {expected}")]
+    Spec {
+        /// The datum (`module`, `z1`).
+        what: &'static str,
+        /// Its value.
+        value: f64,
+        /// What was expected.
+        expected: &'static str,
+    },
+    /// A coefficient of the basic rack out of its range.
+    #[error("gears: the basic rack's {what} = {value}: expected {expected}")]
+    Rack {
+        /// The coefficient (`alpha`, `ha`, `c`, `rho_f`).
+        what: &'static str,
+        /// Its value.
+        value: f64,
+        /// What was expected.
+        expected: &'static str,
+    },
+    /// inv α⁻¹ of a value outside its domain.
+    #[error("gears: inv α = {value} has no pressure angle in [0°, 90°)")]
+    InvoluteDomain {
+        /// The value.
+        value: f64,
+    },
+    /// An involute through a point inside its base circle.
+    #[error("gears: an involute of r_b = {rb} m cannot pass through a point {distance} m from the centre")]
+    InvolutePoint {
+        /// The point's distance from the centre, m.
+        distance: f64,
+        /// The base radius, m.
+        rb: f64,
+    },
+    /// A centre distance the pair cannot have.
+    #[error("gears: a centre distance a_w = {a_w} m is infeasible: {why} ({least} m)")]
+    CentreDistance {
+        /// The asked a_w, m.
+        a_w: f64,
+        /// The bound, m.
+        least: f64,
+        /// Why.
+        why: &'static str,
+    },
+    /// The tip of a wheel passes the interference point of its mate.
+    #[error("gears: interference: the tip of wheel {wheel} reaches {reach} m along the line of action, beyond N₁N₂ = {g} m (the tip digs into the mate's root)")]
+    Interference {
+        /// The wheel (1, 2).
+        wheel: usize,
+        /// N₁B₂ or N₂B₁, m.
+        reach: f64,
+        /// N₁N₂, m.
+        g: f64,
+    },
+    /// A pointed tooth.
+    #[error("gears: the tooth of wheel {wheel} is pointed: s_a = {sa} m (m = {module} m)")]
+    Pointed {
+        /// The wheel.
+        wheel: usize,
+        /// Its tip thickness, m.
+        sa: f64,
+        /// The module, m.
+        module: f64,
+    },
+    /// A negative radial clearance.
+    #[error("gears: the tip of wheel {wheel} touches the mate's root circle: clearance {clearance} m")]
+    Clearance {
+        /// The wheel.
+        wheel: usize,
+        /// The clearance, m.
+        clearance: f64,
+    },
+    /// A contact ratio below 1.
+    #[error("gears: the contact ratio ε_α = {eps} < 1: the mesh is not continuous")]
+    ContactRatio {
+        /// ε_α.
+        eps: f64,
+    },
+    /// No round drawing scale for a size.
+    #[error("gears: no drawing scale can be chosen for the size {size} m")]
+    NoScale {
+        /// The size, m.
+        size: f64,
+    },
+    /// The construction failed.
+    #[error("gears: {0}")]
+    Construction(String),
+}
+
+/// The round μ_l drawing `size` (m) about `preferred_mm` long.
+pub(crate) fn scale_for(size: f64, preferred_mm: f64) -> Result<Scale, GearError> {
+    Scale::round_for(size, preferred_mm, crate::scale::Quantity::Length)
+        .ok_or(GearError::NoScale { size })
+}
