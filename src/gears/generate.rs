@@ -82,20 +82,21 @@ pub fn generate(
     let mut rec = Recorder::in_context("generation", scale, ctx);
     let mm = |p: DVec2| p / mu;
     let o = rec.draw(
-        "the blank's centre O",
-        Item::Joint {
-            at: DVec2::ZERO,
-            fixed: true,
-        },
-        Role::Given,
+        "the radius of the tooth's axis",
+        Item::Segment(Segment::new(DVec2::new(0.0, rf / mu - 2.0), DVec2::new(0.0, ra / mu + 2.0))),
+        Role::Axis,
         &[],
     );
+    // The circles about the tooth, over three pitches.
+    let pitch = 2.0 * PI / f64::from(c.z);
     for (radius, name) in [(r, "r"), (rb, "r_b"), (ra, "r_a"), (rf, "r_f")] {
         rec.draw(
             format!("circle {name}"),
-            Item::Circle(crate::geom::Circle {
+            Item::Arc(crate::geom::Arc {
                 center: DVec2::ZERO,
                 radius: radius / mu,
+                start: PI / 2.0 - 1.5 * pitch,
+                sweep: 3.0 * pitch,
             }),
             if name == "r" { Role::Axis } else { Role::Construction },
             &[o],
@@ -237,7 +238,6 @@ pub fn generate(
         .iter()
         .map(|t| (t.at - twin(t.piece, t.q)).length())
         .fold(0.0, f64::max);
-    let _ = rf;
     Ok(Generation {
         cutting: c,
         steps,

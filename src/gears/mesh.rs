@@ -150,7 +150,7 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         let tooth = super::generate::whole_tooth(&right, mm(pair.ra[i]));
         let z = f64::from(pair.spec.z[i]);
         let mut outline = Vec::new();
-        for k in [-1.0, 0.0, 1.0] {
+        for k in [1.0, 0.0, -1.0] {
             outline.extend(tooth.iter().map(|q| c + rotate(*q, turn + k * TAU / z)));
         }
         rec.draw(

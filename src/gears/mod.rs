@@ -127,7 +127,118 @@ pub enum GearError {
 }
 
 /// The round μ_l drawing `size` (m) about `preferred_mm` long.
-pub(crate) fn scale_for(size: f64, preferred_mm: f64) -> Result<Scale, GearError> {
+fn scale_for(size: f64, preferred_mm: f64) -> Result<Scale, GearError> {
     Scale::round_for(size, preferred_mm, crate::scale::Quantity::Length)
         .ok_or(GearError::NoScale { size })
+}
+
+/// The gear study a scene asks for (`[gears]`): a pair with its meshing picture and wheels
+/// cut by the rack.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GearsSpec {
+    /// The pair (`[gears.pair]`).
+    pub pair: Option<PairSpec>,
+    /// μ_l of the meshing picture; `None`: chosen the textbook way.
+    pub scale_l: Option<Scale>,
+    /// The wheels cut by the rack (`[[gears.rack]]`).
+    pub racks: Vec<RackSpec>,
+}
+
+/// A wheel cut by the rack, as a scene gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RackSpec {
+    /// Its name in report keys (`1`: `s_a1`, `x_min`).
+    pub name: String,
+    /// The wheel.
+    pub cutting: Cutting,
+    /// The number of equal rack steps N.
+    pub positions: usize,
+    /// μ_l of its figure; `None`: chosen the textbook way.
+    pub scale_l: Option<Scale>,
+}
+
+/// The default number of rack positions of a generation.
+pub const DEFAULT_POSITIONS: usize = 90;
+
+/// The gear study carried out: the pair with its meshing picture, the generated wheels.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GearStudy {
+    /// The pair and its meshing picture.
+    pub pair: Option<(Pair, mesh::Meshing)>,
+    /// The generated wheels, by name.
+    pub racks: Vec<(String, generate::Generation)>,
+}
+
+/// The round μ_l of a meshing picture: the whole of both wheels about 360 mm tall.
+pub fn meshing_scale(p: &Pair) -> Result<Scale, GearError> {
+    scale_for(p.a_w + p.ra[0] + p.ra[1], 360.0)
+}
+
+/// The round μ_l of a generation: the tooth and its spaces about 200 mm wide.
+pub fn generation_scale(c: &Cutting) -> Result<Scale, GearError> {
+    scale_for(4.0 * std::f64::consts::PI * c.module, 200.0)
+}
+
+/// Carry out `spec` in `ctx`.
+///
+/// # Errors
+/// A [`GearError`] from the pair's geometry or a construction.
+pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearStudy, GearError> {
+    let pair = match &spec.pair {
+        Some(ps) => {
+            let p = Pair::working(*ps)?;
+            let scale = match spec.scale_l {
+                Some(s) => s,
+                None => meshing_scale(&p)?,
+            };
+            Some((p, mesh::meshing(&p, scale, ctx)?))
+        }
+        None => None,
+    };
+    let racks = spec
+        .racks
+        .iter()
+        .map(|r| {
+            let scale = match r.scale_l {
+                Some(s) => s,
+                None => generation_scale(&r.cutting)?,
+            };
+            Ok((
+                r.name.clone(),
+                generate::generate(&r.cutting, r.positions, scale, ctx)?,
+            ))
+        })
+        .collect::<Result<Vec<_>, GearError>>()?;
+    Ok(GearStudy { pair, racks })
+}
+
+impl GearStudy {
+    /// Every row: the pair's by formula and off the meshing picture, each wheel's generation.
+    pub fn rows(&self) -> Vec<crate::check::Row> {
+        let mut out = Vec::new();
+        if let Some((p, m)) = &self.pair {
+            out.extend(rows::pair_rows(p));
+            out.extend(rows::meshing_rows(p, m));
+        }
+        for (name, g) in &self.racks {
+            out.extend(rows::generation_rows(name, g));
+        }
+        out
+    }
+    /// The notes: the pair's (with the seeds' errata), each generation's.
+    pub fn notes(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if let Some((p, m)) = &self.pair {
+            out.extend(rows::pair_notes(p));
+            out.push(format!(
+                "gears: the compass involute of wheel 1 through P (N₁P in 4 parts) deviates from the exact one by {} mm (chord-vs-arc error of one step {} mm)",
+                crate::scale::format_sig(m.compass.0 * 1e3, 3, crate::scale::Lang::En),
+                crate::scale::format_sig(m.compass.1 * 1e3, 3, crate::scale::Lang::En),
+            ));
+        }
+        for (name, g) in &self.racks {
+            out.extend(rows::generation_notes(name, g));
+        }
+        out
+    }
 }

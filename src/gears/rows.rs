@@ -195,7 +195,14 @@ pub fn generation_notes(name: &str, g: &Generation) -> Vec<String> {
     ));
     let range = x_for_tip(c.z, &c.rack, MIN_TIP).map_or_else(
         || "no shift gives s_a = 0.3m".to_string(),
-        |x| format!("x_min = {} … x(s_a = 0.3m) = {}", num(c.x_min(), 4), num(x, 4)),
+        |x| {
+            let empty = if x < c.x_min() {
+                " (empty: no shift avoids both undercut and pointing)"
+            } else {
+                ""
+            };
+            format!("x_min = {} … x(s_a = 0.3m) = {}{empty}", num(c.x_min(), 4), num(x, 4))
+        },
     );
     out.push(format!(
         "gears: wheel {name}: x_min = h_a* − z·sin²α/2 = {} (the textbook's (17 − z)/17 = {}); feasible shift: {range}",

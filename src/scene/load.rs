@@ -5,6 +5,7 @@ use super::check::{item, quoted, Checker};
 use super::error::SceneError;
 use super::forces::forces;
 use super::friction::friction;
+use super::gears::gears;
 use super::kinematics::kinematics;
 use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
@@ -67,6 +68,8 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let has_forces = raw.forces.is_some();
     let has_balancing = raw.balancing.is_some();
     let has_friction = raw.friction.is_some();
+    let has_gears = raw.gears.is_some();
+    let gears = raw.gears.as_ref().and_then(|g| gears(&mut check, g));
     let balancing = raw
         .balancing
         .as_ref()
@@ -76,6 +79,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         "forces" => has_forces,
         "balancing" => has_balancing,
         "friction" => has_friction,
+        "gears" => has_gears,
         _ => false,
     });
     let friction = friction(&mut check, raw.friction);
@@ -101,6 +105,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             forces,
             balancing,
             friction,
+            gears,
         })
     } else {
         Err(SceneError::Invalid {
@@ -181,6 +186,7 @@ fn plates(
         PlateKind::Positions,
         PlateKind::Balancing,
         PlateKind::Friction,
+        PlateKind::Gears,
     ]
     .into_iter()
     .filter(|k| present(k.section()))

@@ -5,6 +5,7 @@ mod check;
 mod error;
 mod forces;
 mod friction;
+mod gears;
 mod groups;
 mod kinematics;
 mod load;

@@ -47,6 +47,8 @@ pub enum PlateKind {
     Balancing,
     /// Friction: each `[[friction.case]]`'s scheme and force triangle, with the error table.
     Friction,
+    /// Gears: the meshing picture, the specific sliding, the generated wheels, the tables.
+    Gears,
 }
 
 impl PlateKind {
@@ -58,6 +60,7 @@ impl PlateKind {
             PlateKind::Forces => "forces",
             PlateKind::Balancing => "balancing",
             PlateKind::Friction => "friction",
+            PlateKind::Gears => "gears",
         }
     }
     /// The scene section a plate of this kind draws from (`mechanism`, `forces`,
@@ -68,15 +71,17 @@ impl PlateKind {
             PlateKind::Forces => "forces",
             PlateKind::Balancing => "balancing",
             PlateKind::Friction => "friction",
+            PlateKind::Gears => "gears",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 5] = [
+    pub const ALL: [PlateKind; 6] = [
         PlateKind::Positions,
         PlateKind::Kinematics,
         PlateKind::Forces,
         PlateKind::Balancing,
         PlateKind::Friction,
+        PlateKind::Gears,
     ];
 
     /// Parse a stem.
@@ -127,4 +132,6 @@ pub struct Scene {
     pub balancing: Option<BalancingSpec>,
     /// The `[[friction.case]]`s, in file order (none when `[friction]` is absent).
     pub friction: Vec<FrictionCase>,
+    /// The gear study (`[gears]`), when the scene has one.
+    pub gears: Option<crate::gears::GearsSpec>,
 }

@@ -17,6 +17,7 @@ pub(crate) struct RawScene {
     pub forces: Option<RawForces>,
     pub balancing: Option<RawBalancing>,
     pub friction: Option<super::friction::RawFriction>,
+    pub gears: Option<super::gears::RawGears>,
 }
 
 /// `[task]`: the title block.

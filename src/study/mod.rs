@@ -63,6 +63,12 @@ pub enum StudyError {
     /// A friction case cannot be constructed.
     #[error(transparent)]
     Friction(#[from] FrictionError),
+    /// The scene has no `[gears]` and the study needs it.
+    #[error("the scene has no [gears]: {0} needs it")]
+    NoGears(&'static str),
+    /// The gear study cannot be carried out.
+    #[error(transparent)]
+    Gears(#[from] crate::gears::GearError),
 }
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -192,6 +198,7 @@ pub struct Session<'s> {
     forces: Memo<(Scale, Scale, Scale, usize), Cached<PositionForces>>,
     balancing: Memo<(), Cached<Balancing>>,
     friction: Memo<(), Cached<Vec<Solved>>>,
+    gears: Memo<(), Cached<crate::gears::GearStudy>>,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -214,6 +221,7 @@ impl<'s> Session<'s> {
             forces: Memo::default(),
             balancing: Memo::default(),
             friction: Memo::default(),
+            gears: Memo::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -564,13 +572,36 @@ impl<'s> Session<'s> {
         })
     }
 
+    /// The gear study of the scene (`[gears]`): the pair's meshing picture and the wheels
+    /// cut by the rack, constructed once.
+    pub fn gears(&self) -> Cached<crate::gears::GearStudy> {
+        self.gears.get((), || {
+            let spec = self
+                .scene
+                .gears
+                .as_ref()
+                .ok_or(StudyError::NoGears("the gear study"))?;
+            let g = crate::gears::study(spec, &self.ctx()?)?;
+            if let Some((_, m)) = &g.pair {
+                self.logged("meshing picture", "", m.scale);
+            }
+            for (name, r) in &g.racks {
+                self.logged("rack generation", name, r.scale);
+            }
+            Ok(Arc::new(g))
+        })
+    }
+
     /// The report of every study of the scene: the kinematic study of its mechanism (with its
     /// force analysis), the balancing of its rotor and its friction cases, each that the scene
     /// has, rows and notes in that order. A scene with none is refused for want of a mechanism.
     pub fn report(&self) -> Result<Report, StudyError> {
         let mut rep = match self.scene.mechanism {
             Some(_) => self.kinematics_report()?,
-            None if self.scene.balancing.is_none() && self.scene.friction.is_empty() => {
+            None if self.scene.balancing.is_none()
+                && self.scene.friction.is_empty()
+                && self.scene.gears.is_none() =>
+            {
                 return Err(StudyError::NoMechanism("the report"))
             }
             None => Report {
@@ -588,6 +619,11 @@ impl<'s> Session<'s> {
         for s in self.friction()?.iter() {
             rep.rows.extend(s.rows());
             rep.notes.extend(s.notes.iter().cloned());
+        }
+        if self.scene.gears.is_some() {
+            let g = self.gears()?;
+            rep.rows.extend(g.rows());
+            rep.notes.extend(g.notes());
         }
         Ok(rep)
     }
