@@ -19,14 +19,14 @@ pub mod mesh;
 mod pair;
 mod rack;
 pub mod rows;
-// pub mod train;
+pub mod train;
 #[cfg(test)]
 mod tests;
 
 pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
-// pub use train::{Mesh, Train, TrainError};
+pub use train::{Mesh, Train, TrainError};
 
 use crate::scale::Scale;
 use thiserror::Error;

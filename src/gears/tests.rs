@@ -261,3 +261,166 @@ proptest! {
         }
     }
 }
+
+/// A train from (shaft, wheel name, z, internal) and meshes by wheel names.
+fn train(
+    wheels: &[(&str, &str, u32, bool)],
+    meshes: &[(&str, &str)],
+    io: (&str, &str),
+    fixed: Option<&str>,
+    carrier: Option<&str>,
+    satellites: &[&str],
+) -> Train {
+    let mut shafts: Vec<String> = Vec::new();
+    let mut idx = |s: &str, shafts: &mut Vec<String>| match shafts.iter().position(|x| x == s) {
+        Some(i) => i,
+        None => {
+            shafts.push(s.to_string());
+            shafts.len() - 1
+        }
+    };
+    let ws: Vec<train::Wheel> = wheels
+        .iter()
+        .map(|(s, n, z, int)| train::Wheel {
+            name: n.to_string(),
+            z: *z,
+            shaft: idx(s, &mut shafts),
+            internal: *int,
+        })
+        .collect();
+    let w = |n: &str| ws.iter().position(|x| x.name == n).unwrap();
+    let ms = meshes.iter().map(|(a, b)| Mesh(w(a), w(b))).collect();
+    let input = idx(io.0, &mut shafts);
+    let output = idx(io.1, &mut shafts);
+    let fixed = fixed.map(|f| idx(f, &mut shafts));
+    let carrier = carrier.map(|c| idx(c, &mut shafts));
+    let satellites = satellites.iter().map(|s| idx(s, &mut shafts)).collect();
+    Train { shafts, wheels: ws, meshes: ms, input, output, fixed, carrier, satellites, module: 0.002 }
+}
+
+/// Seed 000's reducer with z₁/z₂.
+fn reducer(z1: u32, z2: u32) -> Train {
+    train(
+        &[
+            ("A", "1", z1, false),
+            ("B", "2", z2, false),
+            ("B", "3", 106, true),
+            ("S", "4", 48, false),
+            ("S", "5", 18, false),
+            ("F", "6", 76, true),
+            ("H", "7", 25, false),
+            ("C", "8", 100, false),
+        ],
+        &[("1", "2"), ("3", "4"), ("5", "6"), ("7", "8")],
+        ("A", "C"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    )
+}
+
+#[test]
+fn seed000_reducer_by_willis_stages_and_triangles() {
+    let t = reducer(29, 74);
+    let u = t.ratio().unwrap();
+    // i₁₂ = −74/29, i₃H = 1 − z₄z₆/(z₃z₅) = −0.91195, i₇₈ = −4.
+    let i3h: f64 = 1.0 - (48.0 * 76.0) / (106.0 * 18.0);
+    assert!((i3h + 0.91195).abs() < 1e-5);
+    assert!((u - (-74.0 / 29.0) * i3h * -4.0).abs() < 1e-12, "{u}");
+    assert!((u.abs() - 9.308).abs() < 5e-4);
+    assert!((t.by_stages().unwrap() - u).abs() < 1e-12);
+    let tri = train::triangles(&t, &ctx(0.0)).unwrap();
+    assert!((tri.ratio - u).abs() < 1e-9 * u.abs(), "{} {u}", tri.ratio);
+    // Satellite speed relative to the carrier: 2533.3 rpm at n_H = 600 (seed: −1933.3 absolute).
+    let w = t.willis().unwrap();
+    let (wh, ws) = (w[t.carrier.unwrap()], w[t.satellites[0]]);
+    assert!(((ws / wh) - (1.0 - 76.0 / 18.0)).abs() < 1e-12);
+    // The required 1400/150 = 9.333: 87/34 fits better than the seed's 74/29.
+    let required = 1400.0 / 150.0;
+    let u87 = reducer(34, 87).ratio().unwrap().abs();
+    assert!((u87 - required).abs() < (u.abs() - required).abs());
+    let i12 = required / (i3h.abs() * 4.0);
+    let best = train::best_pairs(i12, 17, 40, 5);
+    assert_eq!((best[0].0, best[0].1), (34, 87), "{best:?}");
+    // At 0.5 mm each intercept is read to 0.25 mm: the ratio within that bound.
+    let read = train::triangles(&t, &ctx(0.5)).unwrap();
+    let x = |k: usize| (tri.omega[k] * train::PLAN_H * tri.scale_l.value() / tri.scale_v.value()).abs();
+    let bound = 0.25 / x(t.input) + 0.25 / x(t.output);
+    assert!(((read.ratio - u) / u).abs() <= bound * 1.01, "{} {bound}", read.ratio);
+}
+
+#[test]
+fn pz2_worked_examples_by_willis() {
+    // Example 3: 1–2 internal, James stage 3–4–5 with the ring fixed: u1H = 20.
+    let ex3 = train(
+        &[("A", "1", 25, false), ("B", "2", 100, true), ("B", "3", 20, false), ("S", "4", 30, false), ("F", "5", 80, true)],
+        &[("1", "2"), ("3", "4"), ("4", "5")],
+        ("A", "H"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    );
+    assert!((ex3.ratio().unwrap() - 20.0).abs() < 1e-12);
+    assert!((ex3.by_stages().unwrap() - 20.0).abs() < 1e-12);
+    let tri = train::triangles(&ex3, &ctx(0.0)).unwrap();
+    assert!((tri.ratio - 20.0).abs() < 1e-9 * 20.0);
+    // Example 1 as printed (not coaxial, Willis only): u17 = 20.
+    let ex1 = train(
+        &[("A", "1", 88, false), ("S", "2", 48, false), ("S", "3", 4, false), ("F", "4", 44, false), ("H", "5", 25, false), ("D", "6", 17, false), ("E", "7", 100, true)],
+        &[("1", "2"), ("3", "4"), ("5", "6"), ("6", "7")],
+        ("A", "E"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    );
+    assert!((ex1.ratio().unwrap() - 20.0).abs() < 1e-12);
+    assert!(train::triangles(&ex1, &ctx(0.0)).is_err());
+    // Example 2 as printed: 32, not the printed 20 (33·45/(15·11) = 9, not 6).
+    let ex2 = train(
+        &[("A", "1", 13, false), ("H", "2", 52, false), ("B", "3", 15, false), ("S", "4", 33, false), ("S", "5", 11, false), ("F", "6", 45, false)],
+        &[("1", "2"), ("3", "4"), ("5", "6")],
+        ("A", "B"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    );
+    // u1H = u12·u3H: the carrier carries wheel 2; u_1_3 = ω1/ω3.
+    let w = ex2.willis().unwrap();
+    let u1h = w[ex2.input] / w[ex2.carrier.unwrap()];
+    assert!((u1h - (-4.0)).abs() < 1e-12);
+    let u3h = w[ex2.output] / w[ex2.carrier.unwrap()];
+    assert!((u3h - (1.0 - 9.0)).abs() < 1e-12 && ((u1h / u3h).abs() - 0.5).abs() < 1e-12);
+    let _ = u3h;
+}
+
+#[test]
+fn a_train_that_is_not_determined_is_refused() {
+    let mut t = reducer(29, 74);
+    t.fixed = None;
+    assert!(matches!(t.willis(), Err(TrainError::Mobility { .. })));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn willis_equals_the_triangles_on_random_james_trains(
+        za in 12u32..60, zg in 12u32..60, z1 in 12u32..50, z2 in 12u32..120
+    ) {
+        // A pair 1–2 into the sun of a James stage, ring fixed, output the carrier.
+        let t = train(
+            &[("A", "1", z1, false), ("B", "2", z2, false), ("B", "a", za, false), ("S", "g", zg, false), ("F", "b", za + 2 * zg, true)],
+            &[("1", "2"), ("a", "g"), ("g", "b")],
+            ("A", "H"),
+            Some("F"),
+            Some("H"),
+            &["S"],
+        );
+        let u = t.ratio().unwrap();
+        let expect = -(f64::from(z2) / f64::from(z1)) * (1.0 + f64::from(za + 2 * zg) / f64::from(za));
+        prop_assert!((u - expect).abs() < 1e-9 * expect.abs());
+        prop_assert!((t.by_stages().unwrap() - u).abs() < 1e-9 * u.abs());
+        let tri = train::triangles(&t, &ctx(0.0)).unwrap();
+        prop_assert!((tri.ratio - u).abs() < 1e-9 * u.abs());
+    }
+}
