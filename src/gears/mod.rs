@@ -142,6 +142,8 @@ pub struct GearsSpec {
     pub scale_l: Option<Scale>,
     /// The wheels cut by the rack (`[[gears.rack]]`).
     pub racks: Vec<RackSpec>,
+    /// The train (`[planetary]`).
+    pub planetary: Option<PlanetarySpec>,
 }
 
 /// A wheel cut by the rack, as a scene gives it.
@@ -167,6 +169,8 @@ pub struct GearStudy {
     pub pair: Option<(Pair, mesh::Meshing)>,
     /// The generated wheels, by name.
     pub racks: Vec<(String, generate::Generation)>,
+    /// The train.
+    pub train: Option<TrainStudy>,
 }
 
 /// The round μ_l of a meshing picture: the whole of both wheels about 360 mm tall.
@@ -209,7 +213,11 @@ pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearSt
             ))
         })
         .collect::<Result<Vec<_>, GearError>>()?;
-    Ok(GearStudy { pair, racks })
+    let train = match &spec.planetary {
+        Some(p) => Some(train_study(p, ctx).map_err(|e| GearError::Construction(e.to_string()))?),
+        None => None,
+    };
+    Ok(GearStudy { pair, racks, train })
 }
 
 impl GearStudy {
@@ -222,6 +230,9 @@ impl GearStudy {
         }
         for (name, g) in &self.racks {
             out.extend(rows::generation_rows(name, g));
+        }
+        if let Some(t) = &self.train {
+            out.extend(t.rows());
         }
         out
     }
@@ -238,6 +249,189 @@ impl GearStudy {
         }
         for (name, g) in &self.racks {
             out.extend(rows::generation_notes(name, g));
+        }
+        if let Some(t) = &self.train {
+            out.extend(t.notes());
+        }
+        out
+    }
+}
+
+/// A planetary (or ordinary) train as a scene gives it (`[planetary]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanetarySpec {
+    /// The train.
+    pub train: Train,
+    /// The input's speed, rpm (signed), when given.
+    pub n_input: Option<f64>,
+    /// The required output speed, rpm (magnitude), when given.
+    pub n_output: Option<f64>,
+    /// The number of satellites k (neighbour condition), when given.
+    pub satellites: Option<u32>,
+}
+
+/// The train studied: Willis, the stages, the triangles.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrainStudy {
+    /// The spec.
+    pub spec: PlanetarySpec,
+    /// ω of every shaft for ω_in = 1 (Willis).
+    pub willis: Vec<f64>,
+    /// u_in,out by Willis.
+    pub ratio: f64,
+    /// u by the textbook's stages, when the train is a chain of stages.
+    pub stages: Option<f64>,
+    /// The velocity triangles.
+    pub triangles: train::Triangles,
+}
+
+/// Carry out the train study.
+///
+/// # Errors
+/// A [`TrainError`].
+pub fn train_study(
+    spec: &PlanetarySpec,
+    ctx: &crate::construct::Context,
+) -> Result<TrainStudy, TrainError> {
+    let t = &spec.train;
+    let willis = t.willis()?;
+    let ratio = t.ratio()?;
+    Ok(TrainStudy {
+        spec: spec.clone(),
+        willis,
+        ratio,
+        stages: t.by_stages(),
+        triangles: train::triangles(t, ctx)?,
+    })
+}
+
+impl TrainStudy {
+    /// `u_<in>_<out>` by formula (the stages against Willis) and by the triangles; with
+    /// n_input, ω of every shaft read off the plan of angular velocities.
+    pub fn rows(&self) -> Vec<crate::check::Row> {
+        use crate::check::{At, Key, Method, Row, Symbol};
+        let t = &self.spec.train;
+        let subject = format!("{}_{}", t.shafts[t.input], t.shafts[t.output]);
+        let row = |symbol, subject: &str, method, graphical, analytic, scale: f64| Row {
+            key: Key {
+                symbol,
+                subject: subject.to_string(),
+                at: At::Scene,
+            },
+            method,
+            graphical,
+            analytic,
+            conditioning: None,
+            scale,
+        };
+        let mut out = Vec::new();
+        if let Some(s) = self.stages {
+            out.push(row(Symbol::GearRatio, &subject, Method::Formula, s, self.ratio, self.ratio.abs()));
+        }
+        out.push(row(
+            Symbol::GearRatio,
+            &subject,
+            Method::Triangles,
+            self.triangles.ratio,
+            self.ratio,
+            self.ratio.abs(),
+        ));
+        if let Some(n) = self.spec.n_input {
+            let w_in = n * std::f64::consts::PI / 30.0;
+            let scale = self.willis.iter().fold(0.0_f64, |a, w| a.max(w.abs())) * w_in.abs();
+            for (k, name) in t.shafts.iter().enumerate() {
+                out.push(row(
+                    Symbol::AngularVelocity,
+                    name,
+                    Method::Triangles,
+                    self.triangles.omega[k] * w_in,
+                    self.willis[k] * w_in,
+                    scale,
+                ));
+            }
+        }
+        out
+    }
+
+    /// The notes: the inversion table, the speeds, the required ratio and the best tooth
+    /// numbers of the first mesh for it, the neighbour condition.
+    pub fn notes(&self) -> Vec<String> {
+        let num = |x: f64, s| crate::scale::format_sig(x, s, crate::scale::Lang::En);
+        let t = &self.spec.train;
+        let mut out = Vec::new();
+        let n_in = self.spec.n_input.unwrap_or(1.0);
+        if let Ok(inv) = t.inversion() {
+            let cells: Vec<String> = inv
+                .iter()
+                .map(|(s, w, r)| format!("{s}: {} → {}", num(w * n_in, 6), num(r * n_in, 6)))
+                .collect();
+            out.push(format!(
+                "train: inversion (Willis): n before → n − n_H after stopping the carrier{}: {}",
+                if self.spec.n_input.is_some() { ", rpm" } else { " (per unit input)" },
+                cells.join("; ")
+            ));
+        }
+        out.push(format!(
+            "train: u = {} by Willis{}; the output turns {} the input",
+            num(self.ratio, 7),
+            self.stages.map_or(String::new(), |s| format!(", {} by the stages", num(s, 7))),
+            if self.ratio < 0.0 { "against" } else { "with" }
+        ));
+        if let (Some(n1), Some(n_out)) = (self.spec.n_input, self.spec.n_output) {
+            let required = (n1 / n_out).abs();
+            out.push(format!(
+                "train: required |u| = {}/{} = {}; the tooth numbers give {} (n_out = {} rpm, {} %)",
+                num(n1.abs(), 6),
+                num(n_out, 6),
+                num(required, 6),
+                num(self.ratio.abs(), 6),
+                num(n1.abs() / self.ratio.abs(), 6),
+                num((self.ratio.abs() / required - 1.0) * 100.0, 3)
+            ));
+            if let Some(m) = t.meshes.first() {
+                let (a, b) = (&t.wheels[m.0], &t.wheels[m.1]);
+                let now = f64::from(b.z) / f64::from(a.z);
+                let want = now * required / self.ratio.abs();
+                let best = train::best_pairs(want, 17, 40, 4);
+                let list: Vec<String> = best
+                    .iter()
+                    .map(|(z1, z2, e)| {
+                        format!(
+                            "{z2}/{z1} ({} %, n_out = {} rpm)",
+                            num(e * 100.0, 3),
+                            num(n_out / (1.0 + e), 6)
+                        )
+                    })
+                    .collect();
+                out.push(format!(
+                    "train: mesh {}–{} needs z{}/z{} = {}: best {} (now {}/{} = {})",
+                    a.name,
+                    b.name,
+                    b.name,
+                    a.name,
+                    num(want, 6),
+                    list.join(", "),
+                    b.z,
+                    a.z,
+                    num(now, 5)
+                ));
+            }
+        }
+        if let (Some(k), Some(h), Ok((ys, _))) = (self.spec.satellites, t.carrier, t.layout()) {
+            for &s in &t.satellites {
+                let arm = (ys[s] - ys[h]).abs();
+                let chord = 2.0 * arm * (std::f64::consts::PI / f64::from(k)).sin();
+                for (w, wheel) in t.wheels.iter().enumerate().filter(|(_, w)| w.shaft == s) {
+                    let da = 2.0 * t.radius(w) + 2.0 * t.module;
+                    out.push(format!(
+                        "train: neighbour condition, k = {k}: 2·a·sin(π/k) = {} mm {} d_a{} = {} mm",
+                        num(chord * 1e3, 5),
+                        if chord > da { ">" } else { "≤ (fails:)" },
+                        wheel.name,
+                        num(da * 1e3, 5)
+                    ));
+                }
+            }
         }
         out
     }

@@ -451,25 +451,67 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
     let mut omega = vec![0.0; n];
     let y_ref = yy(hi) + 10.0 + PLAN_H;
     let pole = DVec2::new(0.0, y_ref - PLAN_H);
-    let x0 = -(hi - lo) / ml * 0.0;
-    let _ = x0;
     rec.draw("the line of the plan of ω", Item::Segment(Segment::new(DVec2::new(-60.0, y_ref), DVec2::new(60.0, y_ref))), Role::Construction, &[]);
     rec.point("the pole of the plan of ω", pole, Role::Given, "p_ω", DVec2::new(-1.0, -0.5), &[]);
-    for k in 0..n {
-        let Some((a, b)) = lines[k] else {
-            return Err(TrainError::Layout(format!("the velocities of shaft {} cannot be drawn", train.shafts[k])));
-        };
-        let (ylo, yhi) = (yy(lo), yy(hi));
+    // The heights: every axis and mesh pole, marked on the axis of heights.
+    for (k, y) in ys.iter().enumerate() {
+        let id = rec.draw(
+            format!("the axis of {}", train.shafts[k]),
+            Item::Segment(Segment::new(DVec2::new(-3.0, yy(*y)), DVec2::new(3.0, yy(*y)))),
+            Role::Construction,
+            &[],
+        );
+        let _ = id;
+    }
+    for (k, (a, b)) in lines.iter().enumerate().filter_map(|(k, l)| l.map(|l| (k, l))) {
+        // The link's own points: its axis and its poles; its line drawn between them.
+        let mut hs = vec![yy(ys[k])];
+        for (mi, m) in train.meshes.iter().enumerate() {
+            if train.wheels[m.0].shaft == k || train.wheels[m.1].shaft == k {
+                hs.push(yy(poles[mi]));
+                let tip = DVec2::new(at(&(a, b), yy(poles[mi])), yy(poles[mi]));
+                if tip.x.abs() > 1e-9 {
+                    rec.draw(
+                        "the velocity of the pole",
+                        Item::Vector { from: DVec2::new(0.0, tip.y), to: tip },
+                        Role::Result,
+                        &[],
+                    );
+                }
+            }
+        }
+        if train.carrier == Some(k) {
+            hs.extend(train.satellites.iter().map(|s| yy(ys[*s])));
+        }
+        let (ylo, yhi) = hs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(*v), h.max(*v)));
         let (pa, pb) = (DVec2::new(at(&(a, b), ylo), ylo), DVec2::new(at(&(a, b), yhi), yhi));
-        let id = rec.draw(format!("the distribution line of {}", train.shafts[k]), Item::Segment(Segment::new(pa, pb)), Role::Result, &[]);
-        rec.label(id, &format!("{}", train.shafts[k]), pb, DVec2::new(0.3, 1.0));
+        let id = rec.draw(
+            format!("the distribution line of {}", train.shafts[k]),
+            Item::Segment(Segment::new(pa, pb)),
+            Role::Result,
+            &[],
+        );
+        let top = if pb.x.abs() >= pa.x.abs() { pb } else { pa };
+        rec.label(id, &train.shafts[k], top, DVec2::new(top.x.signum(), 0.3));
         // The ray of the plan parallel to it, to the line of the plan.
         let slope = (b.x - a.x) / (b.y - a.y);
         let hit = DVec2::new(slope * PLAN_H, y_ref);
-        rec.draw(format!("the ray of ω_{}", train.shafts[k]), Item::Segment(Segment::new(pole, hit)), Role::Construction, &[]);
+        let ray = rec.draw(
+            format!("the ray of ω of {}", train.shafts[k]),
+            Item::Segment(Segment::new(pole, hit)),
+            Role::Construction,
+            &[],
+        );
+        let _ = ray;
         let read = rec.measure(DVec2::new(0.0, y_ref), hit);
         // ω = (intercept μ_v)/(H μ_l), signed by the side.
         omega[k] = hit.x.signum() * read.read_mm * mv / (PLAN_H * ml);
+    }
+    if let Some(k) = lines.iter().position(Option::is_none) {
+        return Err(TrainError::Layout(format!(
+            "the velocities of shaft {} cannot be drawn",
+            train.shafts[k]
+        )));
     }
     let (wi, wo) = (omega[train.input], omega[train.output]);
     if wo.abs() < 1e-300 {

@@ -5,8 +5,10 @@
 //! pointed before its tip are refused with the key that makes them so.
 
 use super::check::{item, join, number, Checker};
+use crate::gears::train::Wheel;
 use crate::gears::{
-    BasicRack, Cutting, GearError, GearsSpec, Pair, PairSpec, RackSpec, DEFAULT_POSITIONS,
+    BasicRack, Cutting, GearError, GearsSpec, Mesh, Pair, PairSpec, PlanetarySpec, RackSpec, Train,
+    DEFAULT_POSITIONS,
 };
 use crate::scale::Quantity;
 use serde::Deserialize;
@@ -53,6 +55,146 @@ pub(crate) struct RawRack {
     pub scale_l: Option<f64>,
 }
 
+/// `[planetary]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPlanetary {
+    pub module: Option<f64>,
+    pub input: Option<String>,
+    pub output: Option<String>,
+    pub fixed: Option<String>,
+    pub carrier: Option<String>,
+    #[serde(default)]
+    pub satellites: Vec<String>,
+    pub n_input: Option<f64>,
+    pub n_output: Option<f64>,
+    pub count: Option<i64>,
+    #[serde(default)]
+    pub wheel: Vec<RawWheel>,
+    #[serde(default)]
+    pub mesh: Vec<RawMesh>,
+}
+
+/// `[[planetary.wheel]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawWheel {
+    pub name: Option<String>,
+    pub z: Option<i64>,
+    pub shaft: Option<String>,
+    pub internal: Option<bool>,
+}
+
+/// `[[planetary.mesh]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawMesh {
+    pub wheels: Option<Vec<String>>,
+}
+
+/// Validate `[planetary]`: wheels on named shafts, meshes by wheel names, the input, output,
+/// fixed shaft, carrier and satellites by shaft name; the train must have mobility 1 and be
+/// drawable (coaxial).
+pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<PlanetarySpec> {
+    const P: &str = "planetary";
+    let key = |k: &str| join(P, k);
+    let before = check.problems.len();
+    let module = raw
+        .module
+        .map_or(0.001, |m| check.in_range(&key("module"), m, 1000.0, "a module > 0 mm") * 1e-3);
+    let mut shafts: Vec<String> = Vec::new();
+    let mut wheels = Vec::new();
+    if raw.wheel.is_empty() {
+        check.push(key("wheel"), None, "missing: expected [[planetary.wheel]] (name, z, shaft)");
+    }
+    for (i, w) in raw.wheel.iter().enumerate() {
+        let base = item(&key("wheel"), i);
+        let k = |s: &str| join(&base, s);
+        let name = check.name(&k("name"), w.name.as_ref());
+        if wheels.iter().any(|x: &Wheel| x.name == name) {
+            check.push(k("name"), Some(format!("{name:?}")), "expected a wheel name unique in the train");
+        }
+        let z = match check.required(&k("z"), w.z, "a tooth number") {
+            Some(z) => teeth(check, &k("z"), z),
+            None => 5,
+        };
+        let shaft = check.name(&k("shaft"), w.shaft.as_ref());
+        let idx = shafts.iter().position(|s| *s == shaft).unwrap_or_else(|| {
+            shafts.push(shaft.clone());
+            shafts.len() - 1
+        });
+        wheels.push(Wheel { name, z, shaft: idx, internal: w.internal.unwrap_or(false) });
+    }
+    let mut meshes = Vec::new();
+    for (i, m) in raw.mesh.iter().enumerate() {
+        let k = join(&item(&key("mesh"), i), "wheels");
+        match m.wheels.as_deref() {
+            Some([a, b]) => {
+                let find = |n: &str| wheels.iter().position(|w: &Wheel| w.name == n);
+                match (find(a), find(b)) {
+                    (Some(x), Some(y)) if x != y && !(wheels[x].internal && wheels[y].internal) => {
+                        meshes.push(Mesh(x, y))
+                    }
+                    _ => check.push(
+                        &k,
+                        Some(format!("{:?}", [a, b])),
+                        "expected two different wheels of [[planetary.wheel]], not both internal",
+                    ),
+                }
+            }
+            other => check.push(&k, other.map(|v| format!("{v:?}")), "expected two wheel names [a, b]"),
+        }
+    }
+    let mut shaft_of = |check: &mut Checker, k: &str, v: Option<&String>, add: bool| -> Option<usize> {
+        let v = v?;
+        match shafts.iter().position(|s| s == v) {
+            Some(i) => Some(i),
+            None if add => {
+                shafts.push(v.clone());
+                Some(shafts.len() - 1)
+            }
+            None => {
+                check.push(k, Some(format!("{v:?}")), "expected the shaft of a [[planetary.wheel]]");
+                None
+            }
+        }
+    };
+    let carrier = shaft_of(check, &key("carrier"), raw.carrier.as_ref(), true);
+    let input = shaft_of(check, &key("input"), raw.input.as_ref(), true);
+    let output = shaft_of(check, &key("output"), raw.output.as_ref(), true);
+    let fixed = shaft_of(check, &key("fixed"), raw.fixed.as_ref(), false);
+    let satellites: Vec<usize> = raw
+        .satellites
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| shaft_of(check, &item(&key("satellites"), i), Some(s), false))
+        .collect();
+    for (k, v) in [("input", input), ("output", output)] {
+        if v.is_none() {
+            check.push(key(k), None, "missing: expected a shaft name");
+        }
+    }
+    let n_input = raw.n_input.map(|n| check.bounded(&key("n_input"), n, 1e6, "a speed in rpm within ±1e6"));
+    let n_output = check.positive_opt(&key("n_output"), raw.n_output, "a required output speed > 0 rpm");
+    let count = raw.count.and_then(|c| match u32::try_from(c) {
+        Ok(k) if (1..=12).contains(&k) => Some(k),
+        _ => {
+            check.push(key("count"), Some(c.to_string()), "expected 1 to 12 satellites");
+            None
+        }
+    });
+    let (Some(input), Some(output)) = (input, output) else { return None };
+    if check.problems.len() != before {
+        return None;
+    }
+    let train = Train { shafts, wheels, meshes, input, output, fixed, carrier, satellites, module };
+    if let Err(e) = train.ratio().and_then(|_| train.layout()) {
+        check.push(key("mesh"), None, format!("a train of mobility 1 that can be drawn: {e}"));
+        return None;
+    }
+    Some(PlanetarySpec { train, n_input, n_output, satellites: count })
+}
+
 /// A tooth number (5 … 1000).
 fn teeth(check: &mut Checker, key: &str, v: i64) -> u32 {
     match u32::try_from(v) {
@@ -69,8 +211,24 @@ fn shift(check: &mut Checker, key: &str, v: f64) -> f64 {
     check.bounded(key, v, 3.0, "a shift coefficient within ±3")
 }
 
+/// Validate `[gears]` and `[planetary]` (either may be absent).
+pub(crate) fn gear_sections(
+    check: &mut Checker,
+    raw: Option<&RawGears>,
+    train: Option<&RawPlanetary>,
+) -> Option<GearsSpec> {
+    let before = check.problems.len();
+    let planetary = train.and_then(|t| planetary(check, t));
+    let mut spec = match raw {
+        Some(g) => gears(check, g)?,
+        None => GearsSpec { pair: None, scale_l: None, racks: Vec::new(), planetary: None },
+    };
+    spec.planetary = planetary;
+    (check.problems.len() == before && (raw.is_some() || train.is_some())).then_some(spec)
+}
+
 /// Validate `[gears]`.
-pub(crate) fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
+fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
     let key = |k: &str| join(GEARS, k);
     let before = check.problems.len();
     let module = raw
@@ -136,7 +294,7 @@ pub(crate) fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
             Err(e) => check.push(k("x"), Some(number(x)), format!("a wheel that can be cut: {e}")),
         }
     }
-    (check.problems.len() == before).then_some(GearsSpec { pair, scale_l, racks })
+    (check.problems.len() == before).then_some(GearsSpec { pair, scale_l, racks, planetary: None })
 }
 
 /// `[gears.pair]`: z = [z₁, z₂], x = [x₁, x₂] (or x = [x₁] with `centre_distance`, mm), the

@@ -5,7 +5,7 @@ use super::check::{item, quoted, Checker};
 use super::error::SceneError;
 use super::forces::forces;
 use super::friction::friction;
-use super::gears::gears;
+use super::gears::gear_sections;
 use super::kinematics::kinematics;
 use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
@@ -68,8 +68,8 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let has_forces = raw.forces.is_some();
     let has_balancing = raw.balancing.is_some();
     let has_friction = raw.friction.is_some();
-    let has_gears = raw.gears.is_some();
-    let gears = raw.gears.as_ref().and_then(|g| gears(&mut check, g));
+    let has_gears = raw.gears.is_some() || raw.planetary.is_some();
+    let gears = gear_sections(&mut check, raw.gears.as_ref(), raw.planetary.as_ref());
     let balancing = raw
         .balancing
         .as_ref()

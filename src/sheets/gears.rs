@@ -97,6 +97,27 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             if r.pointed { tr(lang, ", заострение", ", загострення", ", pointed") } else { "" },
         ));
     }
+    if let Some(t) = &g.train {
+        let tri = &t.triangles;
+        let caption = format!(
+            "{}, {}, {}, H = {} {}",
+            tr(lang, "Треугольники скоростей и план угловых скоростей", "Трикутники швидкостей і план кутових швидкостей", "Velocity triangles and the plan of angular velocities"),
+            tri.scale_l.caption(lang),
+            tri.scale_v.caption(lang),
+            format_sig(crate::gears::train::PLAN_H, 3, lang),
+            tr(lang, "мм", "мм", "mm"),
+        );
+        blocks.push(Block::view(tri.figure.clone(), caption, Some(ScaleKey { key: "planetary.module", scale: tri.scale_v })));
+        let tr_ = &t.spec.train;
+        lines.push(format!(
+            "u_{{{}-{}}} = {} (Willis), {} ({})",
+            tr_.shafts[tr_.input],
+            tr_.shafts[tr_.output],
+            format_sig(t.ratio, 6, lang),
+            format_sig(tri.ratio, 6, lang),
+            tr(lang, "треугольники", "трикутники", "triangles"),
+        ));
+    }
     lines.push(String::new());
     lines.push(super::drafting_line(session.drafting(), lang));
     blocks.push(Block::Text { lines, size_mm: TEXT_MM });
