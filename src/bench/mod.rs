@@ -17,10 +17,14 @@
 //! * **Plates** — building a plate and writing it as SVG; a scene's plates (already SVG)
 //!   rasterised to PNG at 150 dpi, as `tmm render` does.
 //!
+//! * **Rack generation** — the drawn tooth's deviation from the exact envelope (in modules)
+//!   and the time of one tooth for N = 12 … 720 rack positions.
+//!
 //! Times are the best of several repetitions (the machine may be busy); they are reported,
 //! never asserted.
 
 mod chords;
+mod rack;
 mod rates;
 
 use crate::calculus::CalculusError;
@@ -269,6 +273,7 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
     };
     let mut rows = chord_rows(&shaper, &ram_x, reps)?;
     rows.extend(chord_rows(&four_bar, &rocker_angle, reps)?);
+    rows.extend(rack::rack_rows(reps)?);
 
     let mut throughput = Vec::new();
     for s in [&four_bar, &shaper] {

@@ -52,6 +52,8 @@ pub struct Generation {
     /// The largest distance between the drawn tooth (the polyline through the touching
     /// points) and the exact envelope between them, m.
     pub deviation: f64,
+    /// The mean of the largest distance of each drawn segment from the exact envelope, m.
+    pub deviation_mean: f64,
     /// The largest distance of a touching point from its analytic twin, m.
     pub touch_error: f64,
 }
@@ -224,16 +226,22 @@ pub fn generate(
         Piece::Root => c.root_at(q),
     };
     let mut deviation: f64 = 0.0;
+    let (mut sum, mut count) = (0.0, 0usize);
     for list in [&flank, &fillet, &root] {
         let kept: Vec<&Touch> = list.iter().filter(|t| real(t)).collect();
         for w in kept.windows(2) {
             let seg = Segment::new(w[0].at, w[1].at);
+            let mut worst: f64 = 0.0;
             for k in 1..16 {
                 let q = w[0].q + (w[1].q - w[0].q) * f64::from(k) / 16.0;
-                deviation = deviation.max(distance_to_segment(twin(w[0].piece, q), &seg));
+                worst = worst.max(distance_to_segment(twin(w[0].piece, q), &seg));
             }
+            deviation = deviation.max(worst);
+            sum += worst;
+            count += 1;
         }
     }
+    let deviation_mean = if count > 0 { sum / count as f64 } else { 0.0 };
     let touch_error = touches
         .iter()
         .map(|t| (t.at - twin(t.piece, t.q)).length())
@@ -250,6 +258,7 @@ pub fn generate(
         sa,
         pointed,
         deviation,
+        deviation_mean,
         touch_error,
     })
 }
