@@ -29,7 +29,9 @@ fn row<'a>(v: &'a serde_json::Value, q: &str, method: &str) -> &'a serde_json::V
 }
 
 fn num(r: &serde_json::Value, field: &str) -> f64 {
-    r[field].as_f64().unwrap_or_else(|| panic!("{field} of {r}"))
+    r[field]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{field} of {r}"))
 }
 
 fn notes(v: &serde_json::Value) -> String {
@@ -91,7 +93,10 @@ fn pz3_pair_exact_and_its_errata() {
     assert!((eps - 1.1637).abs() < 5e-5, "{eps}");
     assert!((aw - 0.18079).abs() > 1e-3 && (eps - 1.14).abs() > 0.02);
     let n = notes(&v);
-    assert!(n.contains("180.79") && n.contains("14.13") && n.contains("1.14"), "{n}");
+    assert!(
+        n.contains("180.79") && n.contains("14.13") && n.contains("1.14"),
+        "{n}"
+    );
     // The table's Δy against the exact: r_a differs by 2.6 µm, flagged in the rows.
     let ra = row(&v, "r_a1", "formula");
     assert!((num(ra, "graphical") - num(ra, "analytic")).abs() > 1e-6);
@@ -101,9 +106,18 @@ fn pz3_pair_exact_and_its_errata() {
 fn pz1_zero_wheel_is_undercut_and_the_shifted_one_pointed() {
     let v = report_json("constructions/gears-pz1.toml", "0");
     let n = notes(&v);
-    assert!(n.contains("wheel 0 (z = 10, x = 0) cut by the rack in 90 steps: undercut shown"), "{n}");
-    assert!(n.contains("wheel p") && n.contains("pointed (s_a < 0.3m)"), "{n}");
-    assert!(n.contains("(empty: no shift avoids both undercut and pointing)"), "{n}");
+    assert!(
+        n.contains("wheel 0 (z = 10, x = 0) cut by the rack in 90 steps: undercut shown"),
+        "{n}"
+    );
+    assert!(
+        n.contains("wheel p") && n.contains("pointed (s_a < 0.3m)"),
+        "{n}"
+    );
+    assert!(
+        n.contains("(empty: no shift avoids both undercut and pointing)"),
+        "{n}"
+    );
     let x = num(row(&v, "x_min_0", "formula"), "analytic");
     assert!((x - (1.0 - 5.0 * 20f64.to_radians().sin().powi(2))).abs() < 1e-12);
 }

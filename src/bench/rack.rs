@@ -19,7 +19,8 @@ pub(super) fn rack_rows(reps: Reps) -> Result<Vec<BenchRow>, super::BenchError> 
     let ctx = Context::for_model_size(400.0, Drafting::EXACT)?;
     let mut out = Vec::new();
     for x in [0.0, 0.8] {
-        let c = Cutting::alone(0.014, 13, x, BasicRack::GOST_13755).map_err(|e| fail(e.to_string()))?;
+        let c =
+            Cutting::alone(0.014, 13, x, BasicRack::GOST_13755).map_err(|e| fail(e.to_string()))?;
         let scale = generation_scale(&c).map_err(|e| fail(e.to_string()))?;
         for n in RACK_RESOLUTIONS {
             let g = generate(&c, n, scale, &ctx).map_err(|e| fail(e.to_string()))?;

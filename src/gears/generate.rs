@@ -85,7 +85,10 @@ pub fn generate(
     let mm = |p: DVec2| p / mu;
     let o = rec.draw(
         "the radius of the tooth's axis",
-        Item::Segment(Segment::new(DVec2::new(0.0, rf / mu - 2.0), DVec2::new(0.0, ra / mu + 2.0))),
+        Item::Segment(Segment::new(
+            DVec2::new(0.0, rf / mu - 2.0),
+            DVec2::new(0.0, ra / mu + 2.0),
+        )),
         Role::Axis,
         &[],
     );
@@ -100,7 +103,11 @@ pub fn generate(
                 start: PI / 2.0 - 1.5 * pitch,
                 sweep: 3.0 * pitch,
             }),
-            if name == "r" { Role::Axis } else { Role::Construction },
+            if name == "r" {
+                Role::Axis
+            } else {
+                Role::Construction
+            },
             &[o],
         );
     }
@@ -149,7 +156,11 @@ pub fn generate(
     }
     rec.set_group(0);
     let by = |piece: Piece| -> Vec<Touch> {
-        let mut v: Vec<Touch> = touches.iter().copied().filter(|t| t.piece == piece).collect();
+        let mut v: Vec<Touch> = touches
+            .iter()
+            .copied()
+            .filter(|t| t.piece == piece)
+            .collect();
         v.sort_by(|a, b| a.q.total_cmp(&b.q));
         v
     };
@@ -175,7 +186,13 @@ pub fn generate(
     };
     // The tooth's right half as drawn: the involute from the tip down to the junction, the
     // fillet from the junction to the root, the root circle to the space's centre.
-    let mut right: Vec<DVec2> = fl.get(inv_from..).unwrap_or(&[]).iter().rev().copied().collect();
+    let mut right: Vec<DVec2> = fl
+        .get(inv_from..)
+        .unwrap_or(&[])
+        .iter()
+        .rev()
+        .copied()
+        .collect();
     right.push(junction);
     right.extend(fi.get(..fil_to).unwrap_or(&[]).iter().rev());
     right.extend(

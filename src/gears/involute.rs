@@ -172,10 +172,7 @@ pub fn compass_involute(
     let d = p - centre;
     let dist = d.length();
     if !(rb > 0.0 && dist > rb && parts > 0) {
-        return Err(GearError::InvolutePoint {
-            distance: dist,
-            rb,
-        });
+        return Err(GearError::InvolutePoint { distance: dist, rb });
     }
     let k = if ccw { 1.0 } else { -1.0 };
     // The tangency point T: the string PT is tangent at T; for a counter-clockwise involute

@@ -68,9 +68,25 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
     // 1. The line of centres: O₁ below, O₂ above at a_w.
     let o1 = DVec2::ZERO;
     let o2 = DVec2::new(0.0, mm(pair.a_w));
-    let j1 = rec.draw("O₁", Item::Joint { at: o1, fixed: true }, Role::Given, &[]);
+    let j1 = rec.draw(
+        "O₁",
+        Item::Joint {
+            at: o1,
+            fixed: true,
+        },
+        Role::Given,
+        &[],
+    );
     rec.label(j1, "O_1", o1, DVec2::new(-1.0, -0.3));
-    let j2 = rec.draw("O₂", Item::Joint { at: o2, fixed: true }, Role::Given, &[]);
+    let j2 = rec.draw(
+        "O₂",
+        Item::Joint {
+            at: o2,
+            fixed: true,
+        },
+        Role::Given,
+        &[],
+    );
     rec.label(j2, "O_2", o2, DVec2::new(-1.0, 0.3));
     rec.draw(
         "the line of centres O₁O₂",
@@ -81,11 +97,28 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
     let a_w = rec.measure(o1, o2);
     // 2. The operating circles and the pole P.
     let p = DVec2::new(0.0, mm(pair.rw[0]));
-    let circle = |c: DVec2, r: f64| Item::Circle(Circle { center: c, radius: r });
+    let circle = |c: DVec2, r: f64| {
+        Item::Circle(Circle {
+            center: c,
+            radius: r,
+        })
+    };
     for (c, r) in [(o1, pair.rw[0]), (o2, pair.rw[1])] {
-        rec.draw("the operating circle r_w", circle(c, mm(r)), Role::Axis, &[]);
+        rec.draw(
+            "the operating circle r_w",
+            circle(c, mm(r)),
+            Role::Axis,
+            &[],
+        );
     }
-    let pid = rec.point("the pole P", p, Role::Result, "P", DVec2::new(-1.0, 0.4), &[]);
+    let pid = rec.point(
+        "the pole P",
+        p,
+        Role::Result,
+        "P",
+        DVec2::new(-1.0, 0.4),
+        &[],
+    );
     // 3. The common tangent T–T.
     let half = mm(pair.g) * 0.9;
     let tt = rec.draw(
@@ -106,15 +139,44 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         &[pid],
     );
     rec.label(nn, "N", n2 + d * 0.15 * half, d);
-    let n1id = rec.point("N₁: the foot of O₁", n1, Role::Result, "N_1", DVec2::new(-0.5, 1.0), &[nn]);
-    let n2id = rec.point("N₂: the foot of O₂", n2, Role::Result, "N_2", DVec2::new(0.5, -1.0), &[nn]);
-    rec.draw("O₁N₁", Item::Segment(Segment::new(o1, n1)), Role::Construction, &[n1id]);
-    rec.draw("O₂N₂", Item::Segment(Segment::new(o2, n2)), Role::Construction, &[n2id]);
+    let n1id = rec.point(
+        "N₁: the foot of O₁",
+        n1,
+        Role::Result,
+        "N_1",
+        DVec2::new(-0.5, 1.0),
+        &[nn],
+    );
+    let n2id = rec.point(
+        "N₂: the foot of O₂",
+        n2,
+        Role::Result,
+        "N_2",
+        DVec2::new(0.5, -1.0),
+        &[nn],
+    );
+    rec.draw(
+        "O₁N₁",
+        Item::Segment(Segment::new(o1, n1)),
+        Role::Construction,
+        &[n1id],
+    );
+    rec.draw(
+        "O₂N₂",
+        Item::Segment(Segment::new(o2, n2)),
+        Role::Construction,
+        &[n2id],
+    );
     let g = rec.measure(n1, n2);
     // 6. The circles of both wheels.
     for (i, c) in [o1, o2].into_iter().enumerate() {
         for r in [pair.rb[i], pair.r[i], pair.ra[i], pair.rf[i]] {
-            rec.draw("a circle of the wheel", circle(c, mm(r)), Role::Construction, &[]);
+            rec.draw(
+                "a circle of the wheel",
+                circle(c, mm(r)),
+                Role::Construction,
+                &[],
+            );
         }
     }
     // 7. The involute of wheel 1 through P by the compass (N₁P in 4 parts).
@@ -139,7 +201,13 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
     // 8–9. Three teeth of each wheel, the tooth of each through P.
     for (i, c) in [o1, o2].into_iter().enumerate() {
         let x = pair.spec.x[i];
-        let cut = Cutting::with_tip(pair.spec.module, pair.spec.z[i], x, pair.spec.rack, pair.ra[i])?;
+        let cut = Cutting::with_tip(
+            pair.spec.module,
+            pair.spec.z[i],
+            x,
+            pair.spec.rack,
+            pair.ra[i],
+        )?;
         let foot = if i == 0 { n1 } else { n2 };
         // The flank through P: the involute whose origin is N rolled back by NP.
         let theta = origin_angle(c, mm(pair.rb[i]), p, true).unwrap_or(0.0);
@@ -169,7 +237,11 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         .meet_line_circle(
             "B₁",
             ("N–N", &line),
-            Compass { name: "O_2", center: o2, radius: mm(pair.ra[1]) },
+            Compass {
+                name: "O_2",
+                center: o2,
+                radius: mm(pair.ra[1]),
+            },
             Pick::Backward,
         )
         .map_err(cons)?;
@@ -178,7 +250,11 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         .meet_line_circle(
             "B₂",
             ("N–N", &line),
-            Compass { name: "O_1", center: o1, radius: mm(pair.ra[0]) },
+            Compass {
+                name: "O_1",
+                center: o1,
+                radius: mm(pair.ra[0]),
+            },
             Pick::Forward,
         )
         .map_err(cons)?;
@@ -202,7 +278,10 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
             .collect();
         rec.draw(
             format!("the working portion of wheel {}'s flank", i + 1),
-            Item::Polyline { points: pts, closed: false },
+            Item::Polyline {
+                points: pts,
+                closed: false,
+            },
             Role::Hatch,
             &[],
         );
@@ -220,7 +299,14 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
     );
     let _ = arc;
     let eps = ab.value / pair.p_b;
-    let sliding = sliding_diagram(pair, scale, ctx, g.value, [b1, b2].map(|b| (b - n1).dot(d)), (p - n1).dot(d));
+    let sliding = sliding_diagram(
+        pair,
+        scale,
+        ctx,
+        g.value,
+        [b1, b2].map(|b| (b - n1).dot(d)),
+        (p - n1).dot(d),
+    );
     let (figure_s, lambda) = sliding?;
     Ok(Meshing {
         scale,
@@ -261,7 +347,14 @@ fn sliding_diagram(
         &[],
     );
     rec.label(axis, "N_1", DVec2::ZERO, DVec2::new(-1.0, -0.5));
-    let n2 = rec.point("N₂", DVec2::new(gl, 0.0), Role::Given, "N_2", DVec2::new(1.0, -0.5), &[]);
+    let n2 = rec.point(
+        "N₂",
+        DVec2::new(gl, 0.0),
+        Role::Given,
+        "N_2",
+        DVec2::new(1.0, -0.5),
+        &[],
+    );
     let _ = n2;
     let clip = |v: f64| v.clamp(-LAMBDA_CLIP, LAMBDA_CLIP);
     for (i, name) in ["λ_1", "λ_2"].into_iter().enumerate() {
@@ -274,11 +367,18 @@ fn sliding_diagram(
             .collect();
         let id = rec.draw(
             format!("the curve {name}"),
-            Item::Curve { points: pts.clone(), closed: false },
+            Item::Curve {
+                points: pts.clone(),
+                closed: false,
+            },
             Role::Result,
             &[],
         );
-        if let Some(end) = pts.get(if i == 0 { pts.len() * 3 / 4 } else { pts.len() / 4 }) {
+        if let Some(end) = pts.get(if i == 0 {
+            pts.len() * 3 / 4
+        } else {
+            pts.len() / 4
+        }) {
             rec.label(id, name, *end, DVec2::new(0.0, 1.0));
         }
     }
@@ -303,7 +403,14 @@ fn sliding_diagram(
             "B2" => "B_2",
             other => other,
         };
-        rec.point(format!("{name} on N₁N₂"), DVec2::new(x, 0.0), Role::Given, label, DVec2::new(0.0, -1.0), &[]);
+        rec.point(
+            format!("{name} on N₁N₂"),
+            DVec2::new(x, 0.0),
+            Role::Given,
+            label,
+            DVec2::new(0.0, -1.0),
+            &[],
+        );
         out.push(SlidingPoint {
             name: name.to_string(),
             x: x * mu,

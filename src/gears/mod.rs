@@ -19,9 +19,9 @@ pub mod mesh;
 mod pair;
 mod rack;
 pub mod rows;
-pub mod train;
 #[cfg(test)]
 mod tests;
+pub mod train;
 
 pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
 pub use pair::{Pair, PairSpec};
@@ -102,7 +102,9 @@ pub enum GearError {
         module: f64,
     },
     /// A negative radial clearance.
-    #[error("gears: the tip of wheel {wheel} touches the mate's root circle: clearance {clearance} m")]
+    #[error(
+        "gears: the tip of wheel {wheel} touches the mate's root circle: clearance {clearance} m"
+    )]
     Clearance {
         /// The wheel.
         wheel: usize,
@@ -326,7 +328,14 @@ impl TrainStudy {
         };
         let mut out = Vec::new();
         if let Some(s) = self.stages {
-            out.push(row(Symbol::GearRatio, &subject, Method::Formula, s, self.ratio, self.ratio.abs()));
+            out.push(row(
+                Symbol::GearRatio,
+                &subject,
+                Method::Formula,
+                s,
+                self.ratio,
+                self.ratio.abs(),
+            ));
         }
         out.push(row(
             Symbol::GearRatio,
@@ -367,14 +376,19 @@ impl TrainStudy {
                 .collect();
             out.push(format!(
                 "train: inversion (Willis): n before → n − n_H after stopping the carrier{}: {}",
-                if self.spec.n_input.is_some() { ", rpm" } else { " (per unit input)" },
+                if self.spec.n_input.is_some() {
+                    ", rpm"
+                } else {
+                    " (per unit input)"
+                },
                 cells.join("; ")
             ));
         }
         out.push(format!(
             "train: u = {} by Willis{}; the output turns {} the input",
             num(self.ratio, 7),
-            self.stages.map_or(String::new(), |s| format!(", {} by the stages", num(s, 7))),
+            self.stages
+                .map_or(String::new(), |s| format!(", {} by the stages", num(s, 7))),
             if self.ratio < 0.0 { "against" } else { "with" }
         ));
         if let (Some(n1), Some(n_out)) = (self.spec.n_input, self.spec.n_output) {

@@ -46,7 +46,13 @@ impl BasicRack {
     /// # Errors
     /// [`GearError::Rack`] naming the coefficient.
     pub fn validate(&self) -> Result<(), GearError> {
-        let bad = |what, value, expected| Err(GearError::Rack { what, value, expected });
+        let bad = |what, value, expected| {
+            Err(GearError::Rack {
+                what,
+                value,
+                expected,
+            })
+        };
         if !(self.alpha > 0.0 && self.alpha < PI / 4.0) {
             return bad("alpha", self.alpha.to_degrees(), "0° < α < 45°");
         }
@@ -68,7 +74,11 @@ impl BasicRack {
             );
         }
         if g.vj > 0.0 || g.vj < -(self.ha + self.c) {
-            return bad("rho_f", self.rho, "a rounding within the tool tooth's depth");
+            return bad(
+                "rho_f",
+                self.rho,
+                "a rounding within the tool tooth's depth",
+            );
         }
         Ok(())
     }
@@ -391,7 +401,9 @@ impl Cutting {
         let (_, qi, qf) = self.junction();
         let n = per_piece.max(2);
         let lerp = |a: f64, b: f64, i: usize| a + (b - a) * i as f64 / (n - 1) as f64;
-        let mut out: Vec<DVec2> = (0..n).map(|i| self.involute_at(lerp(st.q_a, qi, i))).collect();
+        let mut out: Vec<DVec2> = (0..n)
+            .map(|i| self.involute_at(lerp(st.q_a, qi, i)))
+            .collect();
         out.extend((1..n).map(|i| self.trochoid_at(lerp(qf, st.q_bottom, i))));
         out.extend((1..n).map(|i| self.root_at(lerp(st.q_bottom, st.q_space, i))));
         out

@@ -10,7 +10,14 @@ use crate::scale::{format_sig, Lang};
 use std::f64::consts::FRAC_PI_2;
 
 /// A row of the whole scene.
-fn row(symbol: Symbol, subject: &str, method: Method, graphical: f64, analytic: f64, scale: f64) -> Row {
+fn row(
+    symbol: Symbol,
+    subject: &str,
+    method: Method,
+    graphical: f64,
+    analytic: f64,
+    scale: f64,
+) -> Row {
     Row {
         key: Key {
             symbol,
@@ -90,7 +97,14 @@ pub fn pair_rows(p: &Pair) -> Vec<Row> {
             m,
         ));
     }
-    out.push(row(Symbol::ContactRatio, "alpha", f, p.eps_formula, p.eps, p.eps));
+    out.push(row(
+        Symbol::ContactRatio,
+        "alpha",
+        f,
+        p.eps_formula,
+        p.eps,
+        p.eps,
+    ));
     out
 }
 
@@ -99,7 +113,14 @@ pub fn pair_rows(p: &Pair) -> Vec<Row> {
 pub fn meshing_rows(p: &Pair, mesh: &Meshing) -> Vec<Row> {
     let me = Method::Meshing;
     let mut out = vec![
-        row(Symbol::CentreDistance, "w", me, mesh.a_w.value, p.a_w, p.a_w),
+        row(
+            Symbol::CentreDistance,
+            "w",
+            me,
+            mesh.a_w.value,
+            p.a_w,
+            p.a_w,
+        ),
         row(Symbol::ActionLength, "N1N2", me, mesh.g.value, p.g, p.g),
         row(Symbol::ActionLength, "B1B2", me, mesh.ab.value, p.ab, p.g),
         row(Symbol::ContactRatio, "alpha", me, mesh.eps, p.eps, p.eps),
@@ -113,12 +134,12 @@ pub fn meshing_rows(p: &Pair, mesh: &Meshing) -> Vec<Row> {
         .fold(1.0_f64, |a, v| a.max(v.abs()));
     for s in &mesh.lambda {
         let exact = p.sliding(s.x);
-        for i in 0..2 {
+        for (i, (read, exact)) in s.read.iter().zip(exact).enumerate() {
             out.push(Row {
                 key: Key::at_position(Symbol::SpecificSliding, (i + 1).to_string(), &s.name),
                 method: me,
-                graphical: s.read[i],
-                analytic: exact[i],
+                graphical: *read,
+                analytic: exact,
                 conditioning: None,
                 scale,
             });
@@ -201,7 +222,11 @@ pub fn generation_notes(name: &str, g: &Generation) -> Vec<String> {
             } else {
                 ""
             };
-            format!("x_min = {} … x(s_a = 0.3m) = {}{empty}", num(c.x_min(), 4), num(x, 4))
+            format!(
+                "x_min = {} … x(s_a = 0.3m) = {}{empty}",
+                num(c.x_min(), 4),
+                num(x, 4)
+            )
         },
     );
     out.push(format!(

@@ -47,7 +47,11 @@ fn mu(v: f64) -> Scale {
 #[test]
 fn seed000_pair_geometry() {
     let p = seed000();
-    assert!((p.alpha_w.to_degrees() / 26.58075 - 1.0).abs() < 1e-6, "{}", p.alpha_w.to_degrees());
+    assert!(
+        (p.alpha_w.to_degrees() / 26.58075 - 1.0).abs() < 1e-6,
+        "{}",
+        p.alpha_w.to_degrees()
+    );
     assert!((p.a_w * 1e3 - 316.276).abs() < 5e-4, "{}", p.a_w);
     assert!((p.eps - 1.1550).abs() <= 5e-4, "{}", p.eps);
     assert!((p.y - 1.09117).abs() < 1e-5 && (p.dy - 0.17983).abs() < 1e-5);
@@ -63,9 +67,15 @@ fn seed000_pair_geometry() {
     let wrong = p.ab / (p.p * p.alpha_w.cos());
     assert!(wrong > 1.2 && (p.eps - wrong).abs() > 0.05);
     let [l1, l2] = p.sliding(p.active_ends()[0]);
-    assert!((l1 + 0.8239).abs() < 5e-4 && (l2 - 0.4517).abs() < 5e-4, "{l1} {l2}");
+    assert!(
+        (l1 + 0.8239).abs() < 5e-4 && (l2 - 0.4517).abs() < 5e-4,
+        "{l1} {l2}"
+    );
     let [l1, l2] = p.sliding(p.active_ends()[1]);
-    assert!((l1 - 0.6146).abs() < 5e-4 && (l2 + 1.5949).abs() < 5e-4, "{l1} {l2}");
+    assert!(
+        (l1 - 0.6146).abs() < 5e-4 && (l2 + 1.5949).abs() < 5e-4,
+        "{l1} {l2}"
+    );
     assert_eq!(p.sliding(p.pole()).map(|v| (v.abs() < 1e-12) as u8), [1, 1]);
 }
 
@@ -88,7 +98,10 @@ fn pz3_pair_geometry_and_its_errata() {
     assert!((p.eps - 1.14).abs() > 0.02);
     assert!((p.p * 1e3 - 14.13).abs() > 10.0);
     let notes = rows::pair_notes(&p).join("\n");
-    assert!(notes.contains("180.79") && notes.contains("14.13"), "{notes}");
+    assert!(
+        notes.contains("180.79") && notes.contains("14.13"),
+        "{notes}"
+    );
 }
 
 #[test]
@@ -129,7 +142,11 @@ fn compass_involute_against_the_exact_one() {
         // The origin is off by parts × (arc − chord) along the base circle, and that is
         // the largest deviation: the involutes of one base circle are equidistant.
         assert!((c.deviation - parts as f64 * c.arc_minus_chord).abs() < 1e-9 * rb);
-        assert!(c.deviation < last / 3.5, "{parts}: {} vs {last}", c.deviation);
+        assert!(
+            c.deviation < last / 3.5,
+            "{parts}: {} vs {last}",
+            c.deviation
+        );
         last = c.deviation;
     }
     assert!(compass_involute(DVec2::ZERO, rb, DVec2::new(10.0, 0.0), 4, 0, true).is_err());
@@ -144,7 +161,12 @@ fn meshing_picture_reads_the_contact_ratio() {
         let read = meshing(&p, mu(0.002), &ctx(0.5)).unwrap();
         // B₁B₂ read to 0.5 mm at μ = 0.002 m/mm: within 0.25 mm × μ / p_b.
         let bound = 0.25 * 0.002 / p.p_b;
-        assert!((read.eps - p.eps).abs() <= bound + 1e-12, "{} {}", read.eps, p.eps);
+        assert!(
+            (read.eps - p.eps).abs() <= bound + 1e-12,
+            "{} {}",
+            read.eps,
+            p.eps
+        );
         assert_eq!(read.ab.read_mm % 0.5, 0.0);
         for s in &exact.lambda {
             let e = p.sliding(s.x);
@@ -158,7 +180,11 @@ fn rack_generation_touches_the_exact_curves_including_the_junction() {
     for (z, x) in [(13, 0.0), (13, 0.8), (10, 0.0), (30, 0.471), (13, 0.25)] {
         let c = Cutting::alone(0.014, z, x, GOST).unwrap();
         let g = generate(&c, 90, mu(0.0005), &ctx(0.0)).unwrap();
-        assert!(g.touch_error < 1e-9 * c.module, "{z} {x}: {}", g.touch_error);
+        assert!(
+            g.touch_error < 1e-9 * c.module,
+            "{z} {x}: {}",
+            g.touch_error
+        );
         // The touching points next to the junction: on the same curves, to 1e-9·m.
         let (_, qi, qf) = c.junction();
         let near = g
@@ -223,13 +249,18 @@ fn refusals_name_what_is_wrong() {
     // Zero shifts on 13 teeth: the pinion's tip digs past N.
     let e = Pair::working(spec([0.0, 0.0])).unwrap_err();
     assert!(matches!(e, GearError::Interference { wheel: 2, .. }), "{e}");
-    assert!(matches!(Pair::new(spec([-0.5, -0.5])), Err(GearError::InvoluteDomain { .. })));
+    assert!(matches!(
+        Pair::new(spec([-0.5, -0.5])),
+        Err(GearError::InvoluteDomain { .. })
+    ));
     let e = Pair::working(spec([1.6, 0.0])).unwrap_err();
     assert!(matches!(e, GearError::Pointed { wheel: 1, .. }), "{e}");
     assert!(Pair::working(spec([0.694, 0.384])).is_ok());
     let e = spec([0.5, 0.0]).x2_for_centre_distance(0.150).unwrap_err();
     assert!(matches!(e, GearError::CentreDistance { .. }));
-    let x2 = spec([0.694, 0.0]).x2_for_centre_distance(pz3().a_w).unwrap();
+    let x2 = spec([0.694, 0.0])
+        .x2_for_centre_distance(pz3().a_w)
+        .unwrap();
     assert!((x2 - 0.384).abs() < 1e-9);
     assert!(Cutting::alone(0.01, 13, 0.0, BasicRack { rho: 0.6, ..GOST }).is_err());
 }
@@ -272,7 +303,7 @@ fn train(
     satellites: &[&str],
 ) -> Train {
     let mut shafts: Vec<String> = Vec::new();
-    let mut idx = |s: &str, shafts: &mut Vec<String>| match shafts.iter().position(|x| x == s) {
+    let idx = |s: &str, shafts: &mut Vec<String>| match shafts.iter().position(|x| x == s) {
         Some(i) => i,
         None => {
             shafts.push(s.to_string());
@@ -295,7 +326,17 @@ fn train(
     let fixed = fixed.map(|f| idx(f, &mut shafts));
     let carrier = carrier.map(|c| idx(c, &mut shafts));
     let satellites = satellites.iter().map(|s| idx(s, &mut shafts)).collect();
-    Train { shafts, wheels: ws, meshes: ms, input, output, fixed, carrier, satellites, module: 0.002 }
+    Train {
+        shafts,
+        wheels: ws,
+        meshes: ms,
+        input,
+        output,
+        fixed,
+        carrier,
+        satellites,
+        module: 0.002,
+    }
 }
 
 /// Seed 000's reducer with z₁/z₂.
@@ -344,16 +385,27 @@ fn seed000_reducer_by_willis_stages_and_triangles() {
     assert_eq!((best[0].0, best[0].1), (34, 87), "{best:?}");
     // At 0.5 mm each intercept is read to 0.25 mm: the ratio within that bound.
     let read = train::triangles(&t, &ctx(0.5)).unwrap();
-    let x = |k: usize| (tri.omega[k] * train::PLAN_H * tri.scale_l.value() / tri.scale_v.value()).abs();
+    let x =
+        |k: usize| (tri.omega[k] * train::PLAN_H * tri.scale_l.value() / tri.scale_v.value()).abs();
     let bound = 0.25 / x(t.input) + 0.25 / x(t.output);
-    assert!(((read.ratio - u) / u).abs() <= bound * 1.01, "{} {bound}", read.ratio);
+    assert!(
+        ((read.ratio - u) / u).abs() <= bound * 1.01,
+        "{} {bound}",
+        read.ratio
+    );
 }
 
 #[test]
 fn pz2_worked_examples_by_willis() {
     // Example 3: 1–2 internal, James stage 3–4–5 with the ring fixed: u1H = 20.
     let ex3 = train(
-        &[("A", "1", 25, false), ("B", "2", 100, true), ("B", "3", 20, false), ("S", "4", 30, false), ("F", "5", 80, true)],
+        &[
+            ("A", "1", 25, false),
+            ("B", "2", 100, true),
+            ("B", "3", 20, false),
+            ("S", "4", 30, false),
+            ("F", "5", 80, true),
+        ],
         &[("1", "2"), ("3", "4"), ("4", "5")],
         ("A", "H"),
         Some("F"),
@@ -366,7 +418,15 @@ fn pz2_worked_examples_by_willis() {
     assert!((tri.ratio - 20.0).abs() < 1e-9 * 20.0);
     // Example 1 as printed (not coaxial, Willis only): u17 = 20.
     let ex1 = train(
-        &[("A", "1", 88, false), ("S", "2", 48, false), ("S", "3", 4, false), ("F", "4", 44, false), ("H", "5", 25, false), ("D", "6", 17, false), ("E", "7", 100, true)],
+        &[
+            ("A", "1", 88, false),
+            ("S", "2", 48, false),
+            ("S", "3", 4, false),
+            ("F", "4", 44, false),
+            ("H", "5", 25, false),
+            ("D", "6", 17, false),
+            ("E", "7", 100, true),
+        ],
         &[("1", "2"), ("3", "4"), ("5", "6"), ("6", "7")],
         ("A", "E"),
         Some("F"),
@@ -377,7 +437,14 @@ fn pz2_worked_examples_by_willis() {
     assert!(train::triangles(&ex1, &ctx(0.0)).is_err());
     // Example 2 as printed: 32, not the printed 20 (33·45/(15·11) = 9, not 6).
     let ex2 = train(
-        &[("A", "1", 13, false), ("H", "2", 52, false), ("B", "3", 15, false), ("S", "4", 33, false), ("S", "5", 11, false), ("F", "6", 45, false)],
+        &[
+            ("A", "1", 13, false),
+            ("H", "2", 52, false),
+            ("B", "3", 15, false),
+            ("S", "4", 33, false),
+            ("S", "5", 11, false),
+            ("F", "6", 45, false),
+        ],
         &[("1", "2"), ("3", "4"), ("5", "6")],
         ("A", "B"),
         Some("F"),

@@ -115,7 +115,9 @@ impl Train {
             r[a.shaft] += f64::from(a.z);
             r[b.shaft] += sign * f64::from(b.z);
             if self.is_satellite(a.shaft) || self.is_satellite(b.shaft) {
-                let h = self.carrier.ok_or_else(|| TrainError::NoCarrier(a.name.clone()))?;
+                let h = self
+                    .carrier
+                    .ok_or_else(|| TrainError::NoCarrier(a.name.clone()))?;
                 r[h] -= f64::from(a.z) + sign * f64::from(b.z);
             }
             rows.push((r, 0.0));
@@ -162,7 +164,11 @@ impl Train {
                         continue;
                     }
                     if let (Some(v), None) = (w[wa.shaft], w[wb.shaft]) {
-                        let sign = if wa.internal || wb.internal { 1.0 } else { -1.0 };
+                        let sign = if wa.internal || wb.internal {
+                            1.0
+                        } else {
+                            -1.0
+                        };
                         w[wb.shaft] = Some(sign * v * f64::from(wa.z) / f64::from(wb.z));
                     }
                 }
@@ -206,7 +212,11 @@ impl Train {
                         continue;
                     }
                     if let (Some(v), None) = (rel[wx.shaft], rel[wy.shaft]) {
-                        let sign = if wx.internal || wy.internal { 1.0 } else { -1.0 };
+                        let sign = if wx.internal || wy.internal {
+                            1.0
+                        } else {
+                            -1.0
+                        };
                         rel[wy.shaft] = Some(sign * v * f64::from(wx.z) / f64::from(wy.z));
                     }
                 }
@@ -248,9 +258,8 @@ impl Train {
                     let (wa, wb) = (&self.wheels[a], &self.wheels[b]);
                     if let (Some(ya), None) = (y[wa.shaft], y[wb.shaft]) {
                         let pole = ya + self.radius(a);
-                        let yb = if wb.internal {
-                            pole - self.radius(b)
-                        } else if wa.internal {
+                        // A ring's centre lies below the pole, as does a wheel inside a ring.
+                        let yb = if wb.internal || wa.internal {
                             pole - self.radius(b)
                         } else {
                             pole + self.radius(b)
@@ -278,7 +287,11 @@ impl Train {
         let ys: Vec<f64> = y
             .iter()
             .enumerate()
-            .map(|(k, v)| v.ok_or_else(|| TrainError::Layout(format!("shaft {} is not connected", self.shafts[k]))))
+            .map(|(k, v)| {
+                v.ok_or_else(|| {
+                    TrainError::Layout(format!("shaft {} is not connected", self.shafts[k]))
+                })
+            })
             .collect::<Result<_, _>>()?;
         // Coaxiality: every central wheel of a satellite turns about the carrier's axis.
         if let Some(h) = self.carrier {
@@ -325,7 +338,10 @@ impl Train {
 /// Gaussian elimination with partial pivoting; `None` when singular.
 fn solve(mut rows: Vec<(Vec<f64>, f64)>) -> Option<Vec<f64>> {
     let n = rows.len();
-    let big = rows.iter().flat_map(|r| r.0.iter()).fold(0.0_f64, |a, v| a.max(v.abs()));
+    let big = rows
+        .iter()
+        .flat_map(|r| r.0.iter())
+        .fold(0.0_f64, |a, v| a.max(v.abs()));
     for c in 0..n {
         let p = (c..n).max_by(|&i, &j| rows[i].0[c].abs().total_cmp(&rows[j].0[c].abs()))?;
         if rows[p].0[c].abs() <= 1e-12 * big {
@@ -335,8 +351,8 @@ fn solve(mut rows: Vec<(Vec<f64>, f64)>) -> Option<Vec<f64>> {
         let (pivot, rhs) = (rows[c].0.clone(), rows[c].1);
         for r in rows.iter_mut().skip(c + 1) {
             let f = r.0[c] / pivot[c];
-            for k in c..n {
-                r.0[k] -= f * pivot[k];
+            for (x, p) in r.0.iter_mut().zip(&pivot).skip(c) {
+                *x -= f * p;
             }
             r.1 -= f * rhs;
         }
@@ -373,8 +389,14 @@ pub const PLAN_H: f64 = 40.0;
 /// [`TrainError::Layout`] when the scheme cannot be laid out or a link's line is not fixed.
 pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> {
     let (ys, poles) = train.layout()?;
-    let lo = ys.iter().chain(&poles).fold(f64::INFINITY, |a, v| a.min(*v));
-    let hi = ys.iter().chain(&poles).fold(f64::NEG_INFINITY, |a, v| a.max(*v));
+    let lo = ys
+        .iter()
+        .chain(&poles)
+        .fold(f64::INFINITY, |a, v| a.min(*v));
+    let hi = ys
+        .iter()
+        .chain(&poles)
+        .fold(f64::NEG_INFINITY, |a, v| a.max(*v));
     let span = (hi - lo).max(train.module);
     let bad = |s: &str| TrainError::Layout(s.to_string());
     let mu_l = Scale::round_for(span, 200.0, Quantity::Length).ok_or_else(|| bad("μ_l"))?;
@@ -384,7 +406,9 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
         .meshes
         .iter()
         .enumerate()
-        .find(|(_, m)| train.wheels[m.0].shaft == train.input || train.wheels[m.1].shaft == train.input)
+        .find(|(_, m)| {
+            train.wheels[m.0].shaft == train.input || train.wheels[m.1].shaft == train.input
+        })
         .ok_or_else(|| bad("the input meshes nothing"))?;
     let v_in = (poles[first] - ys[train.input]).abs().max(train.module);
     let mu_v = Scale::round_for(v_in, 60.0, Quantity::Velocity).ok_or_else(|| bad("μ_v"))?;
@@ -392,7 +416,15 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
     let (ml, mv) = (mu_l.value(), mu_v.value());
     let yy = |y: f64| (y - lo) / ml;
     // The axis of heights.
-    rec.draw("the axis of heights", Item::Segment(Segment::new(DVec2::new(0.0, -5.0), DVec2::new(0.0, yy(hi) + 5.0))), Role::Axis, &[]);
+    rec.draw(
+        "the axis of heights",
+        Item::Segment(Segment::new(
+            DVec2::new(0.0, -5.0),
+            DVec2::new(0.0, yy(hi) + 5.0),
+        )),
+        Role::Axis,
+        &[],
+    );
     // Each link's distribution line as two drawn points (x = v/μ_v, y = height/μ_l).
     let mut lines: Vec<Option<(DVec2, DVec2)>> = vec![None; n];
     let at = |l: &(DVec2, DVec2), y: f64| -> f64 {
@@ -451,19 +483,41 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
     let mut omega = vec![0.0; n];
     let y_ref = yy(hi) + 10.0 + PLAN_H;
     let pole = DVec2::new(0.0, y_ref - PLAN_H);
-    rec.draw("the line of the plan of ω", Item::Segment(Segment::new(DVec2::new(-60.0, y_ref), DVec2::new(60.0, y_ref))), Role::Construction, &[]);
-    rec.point("the pole of the plan of ω", pole, Role::Given, "p_ω", DVec2::new(-1.0, -0.5), &[]);
+    rec.draw(
+        "the line of the plan of ω",
+        Item::Segment(Segment::new(
+            DVec2::new(-60.0, y_ref),
+            DVec2::new(60.0, y_ref),
+        )),
+        Role::Construction,
+        &[],
+    );
+    rec.point(
+        "the pole of the plan of ω",
+        pole,
+        Role::Given,
+        "p_ω",
+        DVec2::new(-1.0, -0.5),
+        &[],
+    );
     // The heights: every axis and mesh pole, marked on the axis of heights.
     for (k, y) in ys.iter().enumerate() {
         let id = rec.draw(
             format!("the axis of {}", train.shafts[k]),
-            Item::Segment(Segment::new(DVec2::new(-3.0, yy(*y)), DVec2::new(3.0, yy(*y)))),
+            Item::Segment(Segment::new(
+                DVec2::new(-3.0, yy(*y)),
+                DVec2::new(3.0, yy(*y)),
+            )),
             Role::Construction,
             &[],
         );
         let _ = id;
     }
-    for (k, (a, b)) in lines.iter().enumerate().filter_map(|(k, l)| l.map(|l| (k, l))) {
+    for (k, (a, b)) in lines
+        .iter()
+        .enumerate()
+        .filter_map(|(k, l)| l.map(|l| (k, l)))
+    {
         // The link's own points: its axis and its poles; its line drawn between them.
         let mut hs = vec![yy(ys[k])];
         for (mi, m) in train.meshes.iter().enumerate() {
@@ -473,7 +527,10 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
                 if tip.x.abs() > 1e-9 {
                     rec.draw(
                         "the velocity of the pole",
-                        Item::Vector { from: DVec2::new(0.0, tip.y), to: tip },
+                        Item::Vector {
+                            from: DVec2::new(0.0, tip.y),
+                            to: tip,
+                        },
                         Role::Result,
                         &[],
                     );
@@ -483,8 +540,15 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
         if train.carrier == Some(k) {
             hs.extend(train.satellites.iter().map(|s| yy(ys[*s])));
         }
-        let (ylo, yhi) = hs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(*v), h.max(*v)));
-        let (pa, pb) = (DVec2::new(at(&(a, b), ylo), ylo), DVec2::new(at(&(a, b), yhi), yhi));
+        let (ylo, yhi) = hs
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| {
+                (l.min(*v), h.max(*v))
+            });
+        let (pa, pb) = (
+            DVec2::new(at(&(a, b), ylo), ylo),
+            DVec2::new(at(&(a, b), yhi), yhi),
+        );
         let id = rec.draw(
             format!("the distribution line of {}", train.shafts[k]),
             Item::Segment(Segment::new(pa, pb)),
@@ -532,7 +596,7 @@ pub fn best_pairs(u: f64, z1_min: u32, z1_max: u32, count: usize) -> Vec<(u32, u
     let mut all: Vec<(u32, u32, f64)> = (z1_min..=z1_max)
         .filter_map(|z1| {
             let z2 = (f64::from(z1) * u).round();
-            (z2 >= 1.0 && z2 < 1e6).then(|| {
+            (1.0..1e6).contains(&z2).then(|| {
                 let z2 = z2 as u32;
                 (z1, z2, (f64::from(z2) / f64::from(z1) - u) / u)
             })

@@ -25,24 +25,40 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let scene = session.scene();
     let g = session.gears()?;
     let mut blocks = Vec::new();
-    let mut lines = vec![tr(lang, "Исходные данные и результаты", "Вихідні дані та результати", "Data and results").to_string()];
+    let mut lines = vec![tr(
+        lang,
+        "Исходные данные и результаты",
+        "Вихідні дані та результати",
+        "Data and results",
+    )
+    .to_string()];
     let mut plan = None;
     if let Some((p, m)) = &g.pair {
         plan = Some(m.scale);
         let caption = format!(
             "{}, {}",
-            tr(lang, "Картина зацепления", "Картина зачеплення", "Meshing picture"),
+            tr(
+                lang,
+                "Картина зацепления",
+                "Картина зачеплення",
+                "Meshing picture"
+            ),
             m.scale.caption(lang)
         );
-        blocks.push(Block::view(m.figure.clone(), caption, Some(ScaleKey { key: "gears.scale_l", scale: m.scale })));
+        blocks.push(view(&m.figure, caption, "gears.scale_l", m.scale));
         let caption = format!(
             "{}: λ_1, λ_2 {} N_1N_2, λ = 1 ↔ {} {}",
-            tr(lang, "Удельное скольжение", "Питоме ковзання", "Specific sliding"),
+            tr(
+                lang,
+                "Удельное скольжение",
+                "Питоме ковзання",
+                "Specific sliding"
+            ),
             tr(lang, "вдоль", "уздовж", "along"),
             format_sig(crate::gears::mesh::LAMBDA_MM, 3, lang),
             tr(lang, "мм", "мм", "mm"),
         );
-        blocks.push(Block::view(m.sliding.clone(), caption, Some(ScaleKey { key: "gears.scale_l", scale: m.scale })));
+        blocks.push(view(&m.sliding, caption, "gears.scale_l", m.scale));
         let mm = |x: f64| format_sig(x * 1e3, 6, lang);
         lines.push(format!(
             "m = {} {u}, z_1 = {}, z_2 = {}, x_1 = {}, x_2 = {}",
@@ -66,7 +82,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         ));
         lines.push(format!(
             "p = {}, p_b = {}, p_w = {}, s_{{a1}} = {}, s_{{a2}} = {}",
-            mm(p.p), mm(p.p_b), mm(p.p_w), mm(p.sa[0]), mm(p.sa[1])
+            mm(p.p),
+            mm(p.p_b),
+            mm(p.p_w),
+            mm(p.sa[0]),
+            mm(p.sa[1])
         ));
         lines.push(format!(
             "ε_α = B_1B_2/p_b = {}; ε′_α = {}",
@@ -78,13 +98,18 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         let c = &r.cutting;
         let caption = format!(
             "{} z = {}, x = {}, N = {}, {}",
-            tr(lang, "Нарезание рейкой:", "Нарізання рейкою:", "Cut by the rack:"),
+            tr(
+                lang,
+                "Нарезание рейкой:",
+                "Нарізання рейкою:",
+                "Cut by the rack:"
+            ),
             c.z,
             format_sig(c.x, 4, lang),
             r.steps,
             r.scale.caption(lang)
         );
-        blocks.push(Block::view(r.figure.clone(), caption, Some(ScaleKey { key: "gears.rack.scale_l", scale: r.scale })));
+        blocks.push(view(&r.figure, caption, "gears.rack.scale_l", r.scale));
         plan.get_or_insert(r.scale);
         lines.push(format!(
             "{name}: z = {}, x = {}, x_{{min}} = {}, s_a = {} {}{}{}",
@@ -93,21 +118,34 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             format_sig(c.x_min(), 4, lang),
             format_sig(r.sa * 1e3, 4, lang),
             tr(lang, "мм", "мм", "mm"),
-            if r.undercut { tr(lang, ", подрез", ", підріз", ", undercut") } else { "" },
-            if r.pointed { tr(lang, ", заострение", ", загострення", ", pointed") } else { "" },
+            if r.undercut {
+                tr(lang, ", подрез", ", підріз", ", undercut")
+            } else {
+                ""
+            },
+            if r.pointed {
+                tr(lang, ", заострение", ", загострення", ", pointed")
+            } else {
+                ""
+            },
         ));
     }
     if let Some(t) = &g.train {
         let tri = &t.triangles;
         let caption = format!(
             "{}, {}, {}, H = {} {}",
-            tr(lang, "Треугольники скоростей и план угловых скоростей", "Трикутники швидкостей і план кутових швидкостей", "Velocity triangles and the plan of angular velocities"),
+            tr(
+                lang,
+                "Треугольники скоростей и план угловых скоростей",
+                "Трикутники швидкостей і план кутових швидкостей",
+                "Velocity triangles and the plan of angular velocities"
+            ),
             tri.scale_l.caption(lang),
             tri.scale_v.caption(lang),
             format_sig(crate::gears::train::PLAN_H, 3, lang),
             tr(lang, "мм", "мм", "mm"),
         );
-        blocks.push(Block::view(tri.figure.clone(), caption, Some(ScaleKey { key: "planetary.module", scale: tri.scale_v })));
+        blocks.push(view(&tri.figure, caption, "planetary.module", tri.scale_v));
         let tr_ = &t.spec.train;
         lines.push(format!(
             "u_{{{}-{}}} = {} (Willis), {} ({})",
@@ -120,9 +158,13 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }
     lines.push(String::new());
     lines.push(super::drafting_line(session.drafting(), lang));
-    blocks.push(Block::Text { lines, size_mm: TEXT_MM });
+    blocks.push(Block::Text {
+        lines,
+        size_mm: TEXT_MM,
+    });
     blocks.push(Block::Table(table(&g.rows(), lang)));
-    let Some(plan) = plan.or_else(|| crate::scale::Scale::new(0.001, crate::scale::Quantity::Length))
+    let Some(plan) =
+        plan.or_else(|| crate::scale::Scale::new(0.001, crate::scale::Quantity::Length))
     else {
         return Ok(Vec::new());
     };
@@ -132,8 +174,21 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         plan,
         lang,
     );
-    let sheet = Sheet { size: SheetSize::A1, landscape: true };
+    let sheet = Sheet {
+        size: SheetSize::A1,
+        landscape: true,
+    };
     lay_out(sheet, blocks, "gears", &title, lang)
+}
+
+/// A view of `figure` with its caption, sized by the scene key `key` at `scale`.
+fn view(
+    figure: &crate::construct::Figure,
+    caption: String,
+    key: &'static str,
+    scale: crate::scale::Scale,
+) -> Block {
+    Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))
 }
 
 /// The table graphical | analytic | error of the rows.
@@ -145,7 +200,13 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
         .map(|(r, e)| {
             let at = r.position().map_or_else(String::new, |p| format!(" ({p})"));
             let k = if r.key.symbol.unit() == "m" { 1e3 } else { 1.0 };
-            let unit = if k == 1e3 { tr(lang, "мм", "мм", "mm") } else if r.key.symbol.unit() == "deg" { "°" } else { "" };
+            let unit = if k == 1e3 {
+                tr(lang, "мм", "мм", "mm")
+            } else if r.key.symbol.unit() == "deg" {
+                "°"
+            } else {
+                ""
+            };
             vec![
                 format!("{}{at}", r.key.symbol.markup(&r.key.subject)),
                 r.method.name(lang).to_string(),
@@ -158,13 +219,22 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
         .collect();
     TableBlock {
         at: DVec2::ZERO,
-        title: tr(lang, "Графическое решение и аналитический расчёт", "Графічний розв'язок і аналітичний розрахунок", "Graphical against analytic").into(),
+        title: tr(
+            lang,
+            "Графическое решение и аналитический расчёт",
+            "Графічний розв'язок і аналітичний розрахунок",
+            "Graphical against analytic",
+        )
+        .into(),
         columns: vec![
             (tr(lang, "величина", "величина", "quantity").into(), 26.0),
             (tr(lang, "метод", "метод", "method").into(), 36.0),
             (tr(lang, "ед.", "од.", "unit").into(), 10.0),
             (tr(lang, "графически", "графічно", "graphical").into(), 24.0),
-            (tr(lang, "аналитически", "аналітично", "analytic").into(), 26.0),
+            (
+                tr(lang, "аналитически", "аналітично", "analytic").into(),
+                26.0,
+            ),
             ("δ, %".into(), 16.0),
         ],
         rows: body,

@@ -2,11 +2,11 @@
 //! sheets.
 
 mod balancing;
-mod gears;
 mod captions;
 mod fit;
 mod forces;
 mod friction;
+mod gears;
 mod layout;
 pub use layout::ScaleKey;
 mod kinematics;
