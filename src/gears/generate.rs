@@ -116,8 +116,11 @@ pub fn generate(
     let mut states: Vec<f64> = (0..steps)
         .map(|i| lo + (hi - lo) * i as f64 / (steps - 1) as f64)
         .collect();
-    // The marks of the device: the flank's end, the tip and the rounding under P.
-    for q in [st.q_j, st.q_a, st.q_bottom] {
+    // The marks of the device: the flank's end, the tip, the rounding under P, and the
+    // contact passing N (the foot of O on the line of action) when the flank reaches it.
+    let q_n = st.q_p - r * c.rack.alpha.tan();
+    let marks = [st.q_j, st.q_a, st.q_bottom, q_n];
+    for q in marks.into_iter().filter(|q| *q >= st.q_j) {
         if !states.iter().any(|s| (s - q).abs() <= 1e-12 * c.module) {
             states.push(q);
         }
@@ -164,7 +167,12 @@ pub fn generate(
         v.sort_by(|a, b| a.q.total_cmp(&b.q));
         v
     };
-    let flank = by(Piece::Flank);
+    // The involute proper starts where the contact passes N; beyond N the flank traces the
+    // branch the fillet cuts away.
+    let flank: Vec<Touch> = by(Piece::Flank)
+        .into_iter()
+        .filter(|t| t.q >= q_n - 1e-12 * c.module)
+        .collect();
     let fillet = by(Piece::Fillet);
     let root = by(Piece::Root);
     // The junction on the drawing: the first crossing of the drawn fillet (from the root
@@ -175,7 +183,18 @@ pub fn generate(
     let undercut = crossing.is_some();
     // (junction, first involute point kept above it, fillet points kept below it).
     let (junction, inv_from, fil_to) = match crossing {
-        Some((p, i_fi, j_fl)) => (p, j_fl + 1, i_fi + 1),
+        Some((p, i_fi, j_fl)) => {
+            // The rack set again between the two crossing steps, halving them until the
+            // crossing is pinned: the junction as a student finds it with more positions.
+            let n = fillet.len();
+            let step = |i: usize| (fillet[n - 1 - i].q, fi[i]);
+            let refined = refine(
+                &c,
+                [step(i_fi), step(i_fi + 1)],
+                [(flank[j_fl].q, fl[j_fl]), (flank[j_fl + 1].q, fl[j_fl + 1])],
+            );
+            (refined.unwrap_or(p), j_fl + 1, i_fi + 1)
+        }
         None => {
             let j = flank
                 .iter()
@@ -402,6 +421,65 @@ fn polyline_crossing(a: &[DVec2], b: &[DVec2]) -> Option<(DVec2, usize, usize)> 
         }
     }
     None
+}
+
+/// A state and the touching point of one piece there (wheel frame, m).
+type Traced = (f64, DVec2);
+
+/// Pin the crossing of the fillet step `f` with the flank step `l`: set the rack at the
+/// middle of each step, trace the touching points there, keep the halves that cross; until
+/// the steps shrink to rounding.
+fn refine(c: &Cutting, mut f: [Traced; 2], mut l: [Traced; 2]) -> Option<DVec2> {
+    let at = |piece: Piece, q: f64| {
+        touching(c, q)
+            .into_iter()
+            .find(|(p, _)| *p == piece)
+            .map(|(_, k)| rotate(k, q / c.r()))
+    };
+    let mut best = segments_cross(f[0].1, f[1].1, l[0].1, l[1].1);
+    for _ in 0..80 {
+        let (fq, lq) = (0.5 * (f[0].0 + f[1].0), 0.5 * (l[0].0 + l[1].0));
+        let (Some(fm), Some(lm)) = (at(Piece::Fillet, fq), at(Piece::Flank, lq)) else {
+            break;
+        };
+        let halves_f = [[f[0], (fq, fm)], [(fq, fm), f[1]]];
+        let halves_l = [[l[0], (lq, lm)], [(lq, lm), l[1]]];
+        // The halves that cross; at rounding level, the pair whose lines meet nearest to
+        // both halves.
+        let mut found: Option<([Traced; 2], [Traced; 2], DVec2, f64)> = None;
+        for a in &halves_f {
+            for b in &halves_l {
+                if let Some((p, miss)) = lines_meet(a[0].1, a[1].1, b[0].1, b[1].1) {
+                    if found.as_ref().is_none_or(|f| miss < f.3) {
+                        found = Some((*a, *b, p, miss));
+                    }
+                }
+            }
+        }
+        let Some((a, b, p, _)) = found else { break };
+        (f, l, best) = (a, b, Some(p));
+        // Steps of 1e-10·m: their chords are the curves to ~1e-20·m, and shorter ones would
+        // meet at the mercy of rounding (the fillet crosses the involute at a shallow angle).
+        if (f[1].1 - f[0].1).length() + (l[1].1 - l[0].1).length() <= 1e-10 * c.module {
+            break;
+        }
+    }
+    best
+}
+
+/// Where the lines ab and cd meet and how far outside the segments (in their parameters,
+/// 0 when inside both); `None` for parallel lines.
+fn lines_meet(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Option<(DVec2, f64)> {
+    let r = b - a;
+    let s = d - c;
+    let den = r.perp_dot(s);
+    if den.abs() <= 1e-300 {
+        return None;
+    }
+    let t = (c - a).perp_dot(s) / den;
+    let u = (c - a).perp_dot(r) / den;
+    let out = |x: f64| (-x).max(x - 1.0).max(0.0);
+    Some((a + r * t, out(t).max(out(u))))
 }
 
 /// The crossing point of segments ab and cd (interiors, proper crossing).

@@ -234,6 +234,15 @@ pub fn generation_notes(name: &str, g: &Generation) -> Vec<String> {
         num(c.x_min(), 4),
         num(x_min_textbook(c.z), 4),
     ));
+    let exact = c.junction().0;
+    out.push(format!(
+        "gears: wheel {name}: the involute meets the fillet at r = {} mm on the drawing, {} mm exactly (the involute and the trochoid intersected{}): {}·m apart; the touching points lie on the exact curves to {}·m",
+        num(g.junction.length() * 1e3, 6),
+        num(exact.length() * 1e3, 6),
+        if c.undercut() { "" } else { ": they meet tangentially at the flank's end" },
+        num((g.junction - exact).length() / m, 3),
+        num(g.touch_error / m, 2),
+    ));
     out.push(format!(
         "gears: wheel {name}: tip thickness s_a = {} mm = {}·m read off the drawing ({} mm exact){}",
         num(g.sa * 1e3, 5),
