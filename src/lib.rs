@@ -36,6 +36,7 @@ pub mod check;
 pub mod construct;
 pub mod dynamics;
 pub mod forces;
+pub mod gears;
 pub mod geom;
 pub mod kinematics;
 pub mod linkage;

@@ -177,6 +177,10 @@ rules! {
     rotor_static_balancing_texts_apart, rotor_static_balancing_inside_frame: "rotor-static" / "balancing",
     rotor_dynamic_balancing_texts_apart, rotor_dynamic_balancing_inside_frame: "rotor-dynamic" / "balancing",
     friction_texts_apart, friction_inside_frame: "friction" / "friction",
+    gears_seed000_texts_apart, gears_seed000_inside_frame: "gears-seed000" / "gears",
+    gears_pz1_texts_apart, gears_pz1_inside_frame: "gears-pz1" / "gears",
+    gears_pz2_texts_apart, gears_pz2_inside_frame: "gears-pz2" / "gears",
+    gears_pz3_texts_apart, gears_pz3_inside_frame: "gears-pz3" / "gears",
 }
 
 /// Every plate of every scene in `constructions/` is checked above.

@@ -155,6 +155,10 @@ plates! {
     rotor_static_balancing: "rotor-static" / "balancing",
     rotor_dynamic_balancing: "rotor-dynamic" / "balancing",
     friction_friction: "friction" / "friction",
+    gears_seed000_gears: "gears-seed000" / "gears",
+    gears_pz1_gears: "gears-pz1" / "gears",
+    gears_pz2_gears: "gears-pz2" / "gears",
+    gears_pz3_gears: "gears-pz3" / "gears",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

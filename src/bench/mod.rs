@@ -20,12 +20,15 @@
 //! * **Flywheel** — the shaper's flywheel (seed 000 §5) by Wittenbauer's tangents and by
 //!   Merkin's route on diagrams of N = 12 … 360 positions, each against the energy equation
 //!   integrated exactly, with the route's time and the exact solve's.
+//! * **Rack generation** — the drawn tooth's deviation from the exact envelope (in modules)
+//!   and the time of one tooth for N = 12 … 720 rack positions.
 //!
 //! Times are the best of several repetitions (the machine may be busy); they are reported,
 //! never asserted.
 
 mod chords;
 mod flywheel;
+mod rack;
 mod rates;
 
 use crate::calculus::CalculusError;
@@ -274,6 +277,7 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
     };
     let mut rows = chord_rows(&shaper, &ram_x, reps)?;
     rows.extend(chord_rows(&four_bar, &rocker_angle, reps)?);
+    rows.extend(rack::rack_rows(reps)?);
 
     let (fly, t_exact) = flywheel::flywheel_rows(&shaper, reps)?;
     rows.extend(fly);

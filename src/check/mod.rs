@@ -72,6 +72,26 @@ pub enum Symbol {
     EnergyChange,
     /// The coefficient of irregularity δ of a machine's speed, 1.
     Irregularity,
+    /// A pressure angle of a gear mesh (α_w), degrees as the textbook writes it.
+    PressureAngle,
+    /// A centre distance (a_w), m.
+    CentreDistance,
+    /// A radius of a gear's circle (r_w, r_a, r_b, r_f), m.
+    Radius,
+    /// A tooth thickness on a circle (s, s_a), m.
+    ToothThickness,
+    /// A contact ratio (ε_α), 1.
+    ContactRatio,
+    /// A specific sliding (λ₁, λ₂), 1.
+    SpecificSliding,
+    /// A shift coefficient (x_min), 1.
+    ShiftCoefficient,
+    /// The deviation of a drawn envelope from the exact one, m.
+    EnvelopeDeviation,
+    /// A gear ratio (u₁₋₈), 1, signed.
+    GearRatio,
+    /// A length along the line of action (N₁N₂, B₁B₂), m.
+    ActionLength,
 }
 
 impl Symbol {
@@ -97,6 +117,16 @@ impl Symbol {
             Symbol::Work => "A",
             Symbol::EnergyChange => "dT",
             Symbol::Irregularity => "delta",
+            Symbol::PressureAngle => "alpha",
+            Symbol::CentreDistance => "a",
+            Symbol::Radius => "r",
+            Symbol::ToothThickness => "s",
+            Symbol::ContactRatio => "eps",
+            Symbol::SpecificSliding => "lambda",
+            Symbol::ShiftCoefficient => "x",
+            Symbol::EnvelopeDeviation => "envelope",
+            Symbol::GearRatio => "u",
+            Symbol::ActionLength => "g",
         }
     }
     /// The SI unit as the report writes it.
@@ -119,6 +149,16 @@ impl Symbol {
             Symbol::Inertia => "kg*m^2",
             Symbol::Work | Symbol::EnergyChange => "J",
             Symbol::Irregularity => "1",
+            Symbol::PressureAngle => "deg",
+            Symbol::CentreDistance
+            | Symbol::Radius
+            | Symbol::ToothThickness
+            | Symbol::EnvelopeDeviation
+            | Symbol::ActionLength => "m",
+            Symbol::ContactRatio
+            | Symbol::SpecificSliding
+            | Symbol::ShiftCoefficient
+            | Symbol::GearRatio => "1",
         }
     }
     /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{1-2}`, `F_{и3}`,
@@ -148,6 +188,16 @@ impl Symbol {
             Symbol::Work => "A",
             Symbol::EnergyChange => "ΔT",
             Symbol::Irregularity => "δ",
+            Symbol::PressureAngle => "α",
+            Symbol::CentreDistance => "a",
+            Symbol::Radius => "r",
+            Symbol::ToothThickness => "s",
+            Symbol::ContactRatio => "ε",
+            Symbol::SpecificSliding => "λ",
+            Symbol::ShiftCoefficient => "x",
+            Symbol::EnvelopeDeviation => "δ",
+            Symbol::GearRatio => "u",
+            Symbol::ActionLength => "g",
         };
         // A reaction names two links, written apart as the textbooks do: R_{1-2}.
         let sep = if self == Symbol::Reaction { "-" } else { "" };
@@ -252,11 +302,15 @@ pub enum Method {
     Wittenbauer,
     /// The flywheel from the range of T_I = ΔT − T_II (Merkin).
     Merkin,
+    /// The textbook's formula chain against an independent closed form (gear geometry).
+    Formula,
+    /// Read off the meshing picture.
+    Meshing,
 }
 
 impl Method {
     /// Every method, in report order.
-    pub const ALL: [Method; 11] = [
+    pub const ALL: [Method; 13] = [
         Method::Plan,
         Method::DiagramChords,
         Method::DiagramTangents,
@@ -268,6 +322,8 @@ impl Method {
         Method::Triangles,
         Method::Wittenbauer,
         Method::Merkin,
+        Method::Formula,
+        Method::Meshing,
     ];
 
     /// The name in JSON and CSV: `plan`, `diagram-chords`, `diagram-tangents`, …; every
@@ -285,6 +341,8 @@ impl Method {
             Method::Triangles => "triangles",
             Method::Wittenbauer => "wittenbauer",
             Method::Merkin => "merkin",
+            Method::Formula => "formula",
+            Method::Meshing => "meshing",
         }
     }
 
@@ -322,6 +380,8 @@ impl Method {
             ),
             Method::Wittenbauer => lang.pick("Виттенбауэр", "Віттенбауер", "Wittenbauer"),
             Method::Merkin => lang.pick("Меркин", "Меркін", "Merkin"),
+            Method::Formula => lang.pick("формула", "формула", "formula"),
+            Method::Meshing => lang.pick("картина зацепления", "картина зачеплення", "meshing"),
         }
     }
 }

@@ -6,6 +6,7 @@ use super::dynamics::dynamics;
 use super::error::SceneError;
 use super::forces::forces;
 use super::friction::friction;
+use super::gears::gear_sections;
 use super::kinematics::kinematics;
 use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
@@ -70,6 +71,8 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let has_balancing = raw.balancing.is_some();
     let has_friction = raw.friction.is_some();
     let has_dynamics = raw.dynamics.is_some();
+    let has_gears = raw.gears.is_some() || raw.planetary.is_some();
+    let gears = gear_sections(&mut check, raw.gears.as_ref(), raw.planetary.as_ref());
     let balancing = raw
         .balancing
         .as_ref()
@@ -80,6 +83,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         "balancing" => has_balancing,
         "friction" => has_friction,
         "dynamics" => has_dynamics,
+        "gears" => has_gears,
         _ => false,
     });
     let friction = friction(&mut check, raw.friction);
@@ -109,6 +113,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             balancing,
             friction,
             dynamics,
+            gears,
         })
     } else {
         Err(SceneError::Invalid {
@@ -189,6 +194,7 @@ fn plates(
         PlateKind::Positions,
         PlateKind::Balancing,
         PlateKind::Friction,
+        PlateKind::Gears,
     ]
     .into_iter()
     .filter(|k| present(k.section()))

@@ -6,6 +6,7 @@ mod dynamics;
 mod error;
 mod forces;
 mod friction;
+mod gears;
 mod groups;
 mod kinematics;
 mod load;

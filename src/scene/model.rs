@@ -50,6 +50,8 @@ pub enum PlateKind {
     /// Machine dynamics: the reduced moment and the work diagrams, ΔT, J_пр, the energy–mass
     /// diagram, ω(φ) with the flywheel, the flywheel's section and Tables 9/10.
     Dynamics,
+    /// Gears: the meshing picture, the specific sliding, the generated wheels, the tables.
+    Gears,
 }
 
 impl PlateKind {
@@ -62,6 +64,7 @@ impl PlateKind {
             PlateKind::Balancing => "balancing",
             PlateKind::Friction => "friction",
             PlateKind::Dynamics => "dynamics",
+            PlateKind::Gears => "gears",
         }
     }
     /// The scene section a plate of this kind draws from (`mechanism`, `forces`,
@@ -73,16 +76,18 @@ impl PlateKind {
             PlateKind::Balancing => "balancing",
             PlateKind::Friction => "friction",
             PlateKind::Dynamics => "dynamics",
+            PlateKind::Gears => "gears",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 6] = [
+    pub const ALL: [PlateKind; 7] = [
         PlateKind::Positions,
         PlateKind::Kinematics,
         PlateKind::Forces,
         PlateKind::Balancing,
         PlateKind::Friction,
         PlateKind::Dynamics,
+        PlateKind::Gears,
     ];
 
     /// Parse a stem.
@@ -135,4 +140,6 @@ pub struct Scene {
     pub friction: Vec<FrictionCase>,
     /// The `[dynamics]` section (`None` when absent).
     pub dynamics: Option<crate::dynamics::DynamicsSpec>,
+    /// The gear study (`[gears]`), when the scene has one.
+    pub gears: Option<crate::gears::GearsSpec>,
 }

@@ -18,6 +18,8 @@ pub(crate) struct RawScene {
     pub balancing: Option<RawBalancing>,
     pub friction: Option<super::friction::RawFriction>,
     pub dynamics: Option<super::dynamics::RawDynamics>,
+    pub gears: Option<super::gears::RawGears>,
+    pub planetary: Option<super::gears::RawPlanetary>,
 }
 
 /// `[task]`: the title block.

@@ -7,6 +7,7 @@ mod dynamics;
 mod fit;
 mod forces;
 mod friction;
+mod gears;
 mod layout;
 pub use layout::ScaleKey;
 mod kinematics;
@@ -120,6 +121,7 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
         PlateKind::Balancing => balancing::build(session, lang),
         PlateKind::Friction => friction::build(session, lang),
         PlateKind::Dynamics => dynamics::build(session, lang),
+        PlateKind::Gears => gears::build(session, lang),
     }
 }
 

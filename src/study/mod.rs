@@ -69,6 +69,12 @@ pub enum StudyError {
     /// A friction case cannot be constructed.
     #[error(transparent)]
     Friction(#[from] FrictionError),
+    /// The scene has no `[gears]` and the study needs it.
+    #[error("the scene has no [gears]: {0} needs it")]
+    NoGears(&'static str),
+    /// The gear study cannot be carried out.
+    #[error(transparent)]
+    Gears(#[from] crate::gears::GearError),
 }
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -199,6 +205,7 @@ pub struct Session<'s> {
     balancing: Memo<(), Cached<Balancing>>,
     friction: Memo<(), Cached<Vec<Solved>>>,
     dynamics: Memo<(), Cached<crate::dynamics::Dynamics>>,
+    gears: Memo<(), Cached<crate::gears::GearStudy>>,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -222,6 +229,7 @@ impl<'s> Session<'s> {
             balancing: Memo::default(),
             friction: Memo::default(),
             dynamics: Memo::default(),
+            gears: Memo::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -612,13 +620,36 @@ impl<'s> Session<'s> {
         })
     }
 
+    /// The gear study of the scene (`[gears]`): the pair's meshing picture and the wheels
+    /// cut by the rack, constructed once.
+    pub fn gears(&self) -> Cached<crate::gears::GearStudy> {
+        self.gears.get((), || {
+            let spec = self
+                .scene
+                .gears
+                .as_ref()
+                .ok_or(StudyError::NoGears("the gear study"))?;
+            let g = crate::gears::study(spec, &self.ctx()?)?;
+            if let Some((_, m)) = &g.pair {
+                self.logged("meshing picture", "", m.scale);
+            }
+            for (name, r) in &g.racks {
+                self.logged("rack generation", name, r.scale);
+            }
+            Ok(Arc::new(g))
+        })
+    }
+
     /// The report of every study of the scene: the kinematic study of its mechanism (with its
     /// force analysis), the balancing of its rotor and its friction cases, each that the scene
     /// has, rows and notes in that order. A scene with none is refused for want of a mechanism.
     pub fn report(&self) -> Result<Report, StudyError> {
         let mut rep = match self.scene.mechanism {
             Some(_) => self.kinematics_report()?,
-            None if self.scene.balancing.is_none() && self.scene.friction.is_empty() => {
+            None if self.scene.balancing.is_none()
+                && self.scene.friction.is_empty()
+                && self.scene.gears.is_none() =>
+            {
                 return Err(StudyError::NoMechanism("the report"))
             }
             None => Report {
@@ -641,6 +672,11 @@ impl<'s> Session<'s> {
             let d = self.dynamics()?;
             rep.rows.extend(crate::dynamics::rows(&d));
             rep.notes.extend(crate::dynamics::notes(&d));
+        }
+        if self.scene.gears.is_some() {
+            let g = self.gears()?;
+            rep.rows.extend(g.rows());
+            rep.notes.extend(g.notes());
         }
         Ok(rep)
     }

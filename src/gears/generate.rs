@@ -1,0 +1,507 @@
+//! Rack generation as a construction (seed 002 PZ1, the TMM-42 device): the basic rack,
+//! shifted by x·m, is rolled along the pitch circle in N equal steps (rack step q ↔ wheel
+//! turn q/r); at every position its outline is drawn in the wheel's frame, clipped to the
+//! blank, and the points where it touches the envelope are found the textbook way — where
+//! the rack's normal passes through the pole P — on the straight flank (the involute), on the
+//! tip rounding (the fillet) and on the tip line (the root circle). The tooth is drawn
+//! through the touching points; undercut is detected where the drawn fillet crosses the
+//! drawn involute, pointing where the tip thickness read off the drawing falls below 0.3m.
+
+use super::rack::{Cutting, Piece};
+use super::{GearError, MIN_TIP};
+use crate::construct::{Context, Figure, Item, Measured, Recorder, Role};
+use crate::geom::{rotate, DVec2, Segment};
+use crate::scale::Scale;
+use std::f64::consts::PI;
+
+/// A point where a rack position touches the envelope.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Touch {
+    /// The rack's state (displacement), m.
+    pub q: f64,
+    /// The part of the rack touching.
+    pub piece: Piece,
+    /// The point in the wheel's frame as drawn, converted with μ, m.
+    pub at: DVec2,
+}
+
+/// A generated wheel: the figure, the touching points and what was read off the drawing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Generation {
+    /// The wheel and its analytic twin.
+    pub cutting: Cutting,
+    /// The number of equal rack steps N.
+    pub steps: usize,
+    /// μ_l of the figure.
+    pub scale: Scale,
+    /// The figure: the blank's circles, every rack position, the touching points, the tooth.
+    pub figure: Figure,
+    /// The touching points of the right half of the tooth (all positions, all pieces).
+    pub touches: Vec<Touch>,
+    /// The junction of the drawn involute and fillet, m (their crossing with undercut, the
+    /// flank's end touching without).
+    pub junction: DVec2,
+    /// The drawn fillet crosses the drawn involute.
+    pub undercut: bool,
+    /// The tip chord between the two flanks as read, and the tip thickness (arc) from it, m.
+    pub tip_chord: Measured,
+    /// s_a from the drawing, m.
+    pub sa: f64,
+    /// s_a < 0.3m on the drawing.
+    pub pointed: bool,
+    /// The largest distance between the drawn tooth (the polyline through the touching
+    /// points) and the exact envelope between them, m.
+    pub deviation: f64,
+    /// The mean of the largest distance of each drawn segment from the exact envelope, m.
+    pub deviation_mean: f64,
+    /// The largest distance of a touching point from its analytic twin, m.
+    pub touch_error: f64,
+}
+
+/// Points per rounding arc of a drawn rack outline.
+const ARC_POINTS: usize = 6;
+
+/// Generate `cutting` by `steps` equal rack steps at the scale `scale` in `ctx`.
+///
+/// # Errors
+/// [`GearError::Spec`] for fewer than 2 steps.
+pub fn generate(
+    cutting: &Cutting,
+    steps: usize,
+    scale: Scale,
+    ctx: &Context,
+) -> Result<Generation, GearError> {
+    if steps < 2 {
+        return Err(GearError::Spec {
+            what: "positions",
+            value: steps as f64,
+            expected: "at least 2 rack positions",
+        });
+    }
+    let mu = scale.value();
+    let c = *cutting;
+    let (r, rb, ra, rf) = (c.r(), c.rb(), c.ra, c.rf());
+    let mut rec = Recorder::in_context("generation", scale, ctx);
+    let mm = |p: DVec2| p / mu;
+    let o = rec.draw(
+        "the radius of the tooth's axis",
+        Item::Segment(Segment::new(
+            DVec2::new(0.0, rf / mu - 2.0),
+            DVec2::new(0.0, ra / mu + 2.0),
+        )),
+        Role::Axis,
+        &[],
+    );
+    // The circles about the tooth, over three pitches.
+    let pitch = 2.0 * PI / f64::from(c.z);
+    for (radius, name) in [(r, "r"), (rb, "r_b"), (ra, "r_a"), (rf, "r_f")] {
+        rec.draw(
+            format!("circle {name}"),
+            Item::Arc(crate::geom::Arc {
+                center: DVec2::ZERO,
+                radius: radius / mu,
+                start: PI / 2.0 - 1.5 * pitch,
+                sweep: 3.0 * pitch,
+            }),
+            if name == "r" {
+                Role::Axis
+            } else {
+                Role::Construction
+            },
+            &[o],
+        );
+    }
+    let st = c.states();
+    let (lo, hi) = c.span();
+    let mut states: Vec<f64> = (0..steps)
+        .map(|i| lo + (hi - lo) * i as f64 / (steps - 1) as f64)
+        .collect();
+    // The marks of the device: the flank's end, the tip, the rounding under P, and the
+    // contact passing N (the foot of O on the line of action) when the flank reaches it.
+    let q_n = st.q_p - r * c.rack.alpha.tan();
+    let marks = [st.q_j, st.q_a, st.q_bottom, q_n];
+    for q in marks.into_iter().filter(|q| *q >= st.q_j) {
+        if !states.iter().any(|s| (s - q).abs() <= 1e-12 * c.module) {
+            states.push(q);
+        }
+    }
+    states.sort_by(f64::total_cmp);
+    let mut touches = Vec::new();
+    for (i, &q) in states.iter().enumerate() {
+        rec.set_group(i as u32 + 1);
+        let turn = q / r;
+        for run in outline_runs(&c, q) {
+            let pts: Vec<DVec2> = run.into_iter().map(|p| mm(rotate(p, turn))).collect();
+            rec.draw(
+                format!("rack position {}", i + 1),
+                Item::Polyline {
+                    points: pts,
+                    closed: false,
+                },
+                Role::Construction,
+                &[],
+            );
+        }
+        for (piece, k) in touching(&c, q) {
+            let at = mm(rotate(k, turn));
+            rec.draw(
+                format!("rack position {}: its normal through P touches", i + 1),
+                Item::Point(at),
+                Role::Construction,
+                &[],
+            );
+            touches.push(Touch {
+                q,
+                piece,
+                at: at * mu,
+            });
+        }
+    }
+    rec.set_group(0);
+    let by = |piece: Piece| -> Vec<Touch> {
+        let mut v: Vec<Touch> = touches
+            .iter()
+            .copied()
+            .filter(|t| t.piece == piece)
+            .collect();
+        v.sort_by(|a, b| a.q.total_cmp(&b.q));
+        v
+    };
+    // The involute proper starts where the contact passes N; beyond N the flank traces the
+    // branch the fillet cuts away.
+    let flank: Vec<Touch> = by(Piece::Flank)
+        .into_iter()
+        .filter(|t| t.q >= q_n - 1e-12 * c.module)
+        .collect();
+    let fillet = by(Piece::Fillet);
+    let root = by(Piece::Root);
+    // The junction on the drawing: the first crossing of the drawn fillet (from the root
+    // up) with the drawn involute; the flank's end without one.
+    let fl: Vec<DVec2> = flank.iter().map(|t| t.at).collect();
+    let fi: Vec<DVec2> = fillet.iter().rev().map(|t| t.at).collect();
+    let crossing = polyline_crossing(&fi, &fl);
+    let undercut = crossing.is_some();
+    // (junction, first involute point kept above it, fillet points kept below it).
+    let (junction, inv_from, fil_to) = match crossing {
+        Some((p, i_fi, j_fl)) => {
+            // The rack set again between the two crossing steps, halving them until the
+            // crossing is pinned: the junction as a student finds it with more positions.
+            let n = fillet.len();
+            let step = |i: usize| (fillet[n - 1 - i].q, fi[i]);
+            let refined = refine(
+                &c,
+                [step(i_fi), step(i_fi + 1)],
+                [(flank[j_fl].q, fl[j_fl]), (flank[j_fl + 1].q, fl[j_fl + 1])],
+            );
+            (refined.unwrap_or(p), j_fl + 1, i_fi + 1)
+        }
+        None => {
+            let j = flank
+                .iter()
+                .find(|t| (t.q - st.q_j).abs() <= 1e-12 * c.module)
+                .map_or(c.involute_at(st.q_j), |t| t.at);
+            (j, 1, fi.len().saturating_sub(1))
+        }
+    };
+    // The tooth's right half as drawn: the involute from the tip down to the junction, the
+    // fillet from the junction to the root, the root circle to the space's centre.
+    let mut right: Vec<DVec2> = fl
+        .get(inv_from..)
+        .unwrap_or(&[])
+        .iter()
+        .rev()
+        .copied()
+        .collect();
+    right.push(junction);
+    right.extend(fi.get(..fil_to).unwrap_or(&[]).iter().rev());
+    right.extend(
+        root.iter()
+            .rev()
+            .filter(|t| t.q >= st.q_space - 1e-12 * c.module)
+            .map(|t| t.at),
+    );
+    let tooth = whole_tooth(&right, ra);
+    rec.draw(
+        "the tooth: the envelope of the rack positions",
+        Item::Polyline {
+            points: tooth.iter().map(|p| mm(*p)).collect(),
+            closed: false,
+        },
+        Role::Result,
+        &[],
+    );
+    // The tip thickness: the chord between the two flanks' tip points, read with a ruler.
+    let tip = flank
+        .iter()
+        .find(|t| (t.q - st.q_a).abs() <= 1e-12 * c.module)
+        .map_or(c.involute_at(st.q_a), |t| t.at);
+    let tip_l = DVec2::new(-tip.x, tip.y);
+    let tip_chord = rec.measure(mm(tip_l), mm(tip));
+    let sa = chord_to_arc(tip_chord.value, ra);
+    let pointed = sa < MIN_TIP * c.module;
+    rec.draw(
+        "s_a: the tip chord",
+        Item::Dimension {
+            from: mm(tip_l),
+            to: mm(tip),
+            offset: 4.0,
+        },
+        Role::Dimension,
+        &[],
+    );
+    // The drawn polyline against the exact envelope, piece by piece.
+    let (_, qi, qf) = c.junction();
+    let real = |t: &Touch| match t.piece {
+        Piece::Flank => t.q >= qi - 1e-12 * c.module && t.q <= st.q_a + 1e-12 * c.module,
+        Piece::Fillet => t.q >= qf - 1e-12 * c.module,
+        Piece::Root => t.q >= st.q_space - 1e-12 * c.module,
+    };
+    let twin = |piece: Piece, q: f64| match piece {
+        Piece::Flank => c.involute_at(q),
+        Piece::Fillet => c.trochoid_at(q),
+        Piece::Root => c.root_at(q),
+    };
+    let mut deviation: f64 = 0.0;
+    let (mut sum, mut count) = (0.0, 0usize);
+    for list in [&flank, &fillet, &root] {
+        let kept: Vec<&Touch> = list.iter().filter(|t| real(t)).collect();
+        for w in kept.windows(2) {
+            let seg = Segment::new(w[0].at, w[1].at);
+            let mut worst: f64 = 0.0;
+            for k in 1..16 {
+                let q = w[0].q + (w[1].q - w[0].q) * f64::from(k) / 16.0;
+                worst = worst.max(distance_to_segment(twin(w[0].piece, q), &seg));
+            }
+            deviation = deviation.max(worst);
+            sum += worst;
+            count += 1;
+        }
+    }
+    let deviation_mean = if count > 0 { sum / count as f64 } else { 0.0 };
+    let touch_error = touches
+        .iter()
+        .map(|t| (t.at - twin(t.piece, t.q)).length())
+        .fold(0.0, f64::max);
+    Ok(Generation {
+        cutting: c,
+        steps,
+        scale,
+        figure: rec.finish(),
+        touches,
+        junction,
+        undercut,
+        tip_chord,
+        sa,
+        pointed,
+        deviation,
+        deviation_mean,
+        touch_error,
+    })
+}
+
+/// The whole tooth from its right half (tip → root → the space's centre): the mirrored left
+/// half, the tip arc, the right half.
+pub fn whole_tooth(right: &[DVec2], ra: f64) -> Vec<DVec2> {
+    let mut out: Vec<DVec2> = right.iter().rev().map(|p| DVec2::new(-p.x, p.y)).collect();
+    if let (Some(l), Some(r)) = (out.last().copied(), right.first().copied()) {
+        let (al, ar) = (l.y.atan2(l.x), r.y.atan2(r.x));
+        for k in 1..8 {
+            let a = al + (ar - al) * f64::from(k) / 8.0;
+            out.push(DVec2::from_angle(a) * ra);
+        }
+    }
+    out.extend_from_slice(right);
+    out
+}
+
+/// The arc on the circle of radius `radius` subtended by `chord`.
+pub fn chord_to_arc(chord: f64, radius: f64) -> f64 {
+    2.0 * radius * (chord / (2.0 * radius)).clamp(-1.0, 1.0).asin()
+}
+
+/// The rack's outline at the state `q` in the fixed frame (before turning into the wheel's
+/// frame), in runs inside the blank (slightly enlarged, so the outline is seen to enter it).
+fn outline_runs(c: &Cutting, q: f64) -> Vec<Vec<DVec2>> {
+    let m = c.module;
+    let sh = c.shape();
+    let ta = c.rack.alpha.tan();
+    let base = c.r() + c.x * m;
+    let top = c.rack.ha * m;
+    let mut pts = Vec::new();
+    // Tool teeth centred at u₀ + kπm, k = −1, 0 (cutting both spaces beside the tooth).
+    for k in [-1.0, 0.0] {
+        let uc0 = c.u0() + k * PI * m;
+        let flank = |v: f64| PI * m / 4.0 + v * ta;
+        pts.push(DVec2::new(uc0 - flank(top), top));
+        pts.push(DVec2::new(uc0 - flank(sh.vj), sh.vj));
+        let (lc, rc) = (
+            DVec2::new(uc0 - sh.uc, sh.vc),
+            DVec2::new(uc0 + sh.uc, sh.vc),
+        );
+        let rho = c.rack.rho * m;
+        let a0 = PI + c.rack.alpha;
+        for i in 1..=ARC_POINTS {
+            let a = a0 + (1.5 * PI - a0) * i as f64 / ARC_POINTS as f64;
+            pts.push(lc + DVec2::from_angle(a) * rho);
+        }
+        for i in 0..ARC_POINTS {
+            let a = 1.5 * PI + (2.0 * PI - c.rack.alpha - 1.5 * PI) * i as f64 / ARC_POINTS as f64;
+            pts.push(rc + DVec2::from_angle(a) * rho);
+        }
+        pts.push(DVec2::new(uc0 + flank(sh.vj), sh.vj));
+        pts.push(DVec2::new(uc0 + flank(top), top));
+    }
+    let limit = c.ra + 0.5 * m;
+    let mut runs: Vec<Vec<DVec2>> = Vec::new();
+    let mut cur: Vec<DVec2> = Vec::new();
+    for p in pts {
+        let f = DVec2::new(p.x + q, base + p.y);
+        if f.length() <= limit {
+            cur.push(f);
+        } else if !cur.is_empty() {
+            runs.push(std::mem::take(&mut cur));
+        }
+    }
+    if cur.len() > 1 {
+        runs.push(cur);
+    }
+    runs.retain(|r| r.len() > 1);
+    runs
+}
+
+/// The points of the rack at the state `q` whose normal passes through the pole P, in the
+/// fixed frame (the wheel turned back by q/r): on the left flank, the left rounding and the
+/// tip line of the tool tooth at u₀, each where it is part of the tool and inside the blank.
+fn touching(c: &Cutting, q: f64) -> Vec<(Piece, DVec2)> {
+    let m = c.module;
+    let sh = c.shape();
+    let alpha = c.rack.alpha;
+    let base = c.r() + c.x * m;
+    let p = DVec2::new(0.0, c.r());
+    let u0 = c.u0();
+    let mut out = Vec::new();
+    let slack = 1e-12 * m;
+    // The straight flank: the foot of the perpendicular from P.
+    let f0 = DVec2::new(u0 - PI * m / 4.0 + q, base);
+    let e = DVec2::new(-alpha.sin(), alpha.cos());
+    let k = f0 + e * (p - f0).dot(e);
+    let v = k.y - base;
+    if v >= sh.vj - slack && v <= c.rack.ha * m && k.length() <= c.ra + slack {
+        out.push((Piece::Flank, k));
+    }
+    // The rounding: its centre, the point on the ray from P through it.
+    let centre = DVec2::new(u0 - sh.uc + q, base + sh.vc);
+    if let Some(d) = (centre - p).try_normalize() {
+        let a = d.y.atan2(d.x).rem_euclid(2.0 * PI);
+        if a >= PI + alpha - 1e-12 && a <= 1.5 * PI + 1e-12 {
+            let k = centre + d * (c.rack.rho * m);
+            if k.length() <= c.ra + slack {
+                out.push((Piece::Fillet, k));
+            }
+        }
+    }
+    // The tip line under P.
+    if (q + u0).abs() <= sh.uc + slack {
+        out.push((Piece::Root, DVec2::new(0.0, base + sh.vt)));
+    }
+    out
+}
+
+/// The first crossing of polyline `a` (walked from its start) with polyline `b`: the point
+/// and the indices of the segments of `a` and `b` that cross.
+fn polyline_crossing(a: &[DVec2], b: &[DVec2]) -> Option<(DVec2, usize, usize)> {
+    for (i, wa) in a.windows(2).enumerate() {
+        for (j, wb) in b.windows(2).enumerate() {
+            if let Some(p) = segments_cross(wa[0], wa[1], wb[0], wb[1]) {
+                // A shared end point (the tangential junction) is not a crossing.
+                if (p - wa[0]).length() > 1e-12 && (p - wb[0]).length() > 1e-12 {
+                    return Some((p, i, j));
+                }
+            }
+        }
+    }
+    None
+}
+
+/// A state and the touching point of one piece there (wheel frame, m).
+type Traced = (f64, DVec2);
+
+/// Pin the crossing of the fillet step `f` with the flank step `l`: set the rack at the
+/// middle of each step, trace the touching points there, keep the halves that cross; until
+/// the steps shrink to rounding.
+fn refine(c: &Cutting, mut f: [Traced; 2], mut l: [Traced; 2]) -> Option<DVec2> {
+    let at = |piece: Piece, q: f64| {
+        touching(c, q)
+            .into_iter()
+            .find(|(p, _)| *p == piece)
+            .map(|(_, k)| rotate(k, q / c.r()))
+    };
+    let mut best = segments_cross(f[0].1, f[1].1, l[0].1, l[1].1);
+    for _ in 0..80 {
+        let (fq, lq) = (0.5 * (f[0].0 + f[1].0), 0.5 * (l[0].0 + l[1].0));
+        let (Some(fm), Some(lm)) = (at(Piece::Fillet, fq), at(Piece::Flank, lq)) else {
+            break;
+        };
+        let halves_f = [[f[0], (fq, fm)], [(fq, fm), f[1]]];
+        let halves_l = [[l[0], (lq, lm)], [(lq, lm), l[1]]];
+        // The halves that cross; at rounding level, the pair whose lines meet nearest to
+        // both halves.
+        let mut found: Option<([Traced; 2], [Traced; 2], DVec2, f64)> = None;
+        for a in &halves_f {
+            for b in &halves_l {
+                if let Some((p, miss)) = lines_meet(a[0].1, a[1].1, b[0].1, b[1].1) {
+                    if found.as_ref().is_none_or(|f| miss < f.3) {
+                        found = Some((*a, *b, p, miss));
+                    }
+                }
+            }
+        }
+        let Some((a, b, p, _)) = found else { break };
+        (f, l, best) = (a, b, Some(p));
+        // Steps of 1e-10·m: their chords are the curves to ~1e-20·m, and shorter ones would
+        // meet at the mercy of rounding (the fillet crosses the involute at a shallow angle).
+        if (f[1].1 - f[0].1).length() + (l[1].1 - l[0].1).length() <= 1e-10 * c.module {
+            break;
+        }
+    }
+    best
+}
+
+/// Where the lines ab and cd meet and how far outside the segments (in their parameters,
+/// 0 when inside both); `None` for parallel lines.
+fn lines_meet(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Option<(DVec2, f64)> {
+    let r = b - a;
+    let s = d - c;
+    let den = r.perp_dot(s);
+    if den.abs() <= 1e-300 {
+        return None;
+    }
+    let t = (c - a).perp_dot(s) / den;
+    let u = (c - a).perp_dot(r) / den;
+    let out = |x: f64| (-x).max(x - 1.0).max(0.0);
+    Some((a + r * t, out(t).max(out(u))))
+}
+
+/// The crossing point of segments ab and cd (interiors, proper crossing).
+fn segments_cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Option<DVec2> {
+    let r = b - a;
+    let s = d - c;
+    let den = r.perp_dot(s);
+    if den.abs() <= 1e-300 {
+        return None;
+    }
+    let t = (c - a).perp_dot(s) / den;
+    let u = (c - a).perp_dot(r) / den;
+    ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u)).then(|| a + r * t)
+}
+
+/// The distance from `p` to the segment.
+fn distance_to_segment(p: DVec2, s: &Segment) -> f64 {
+    let d = s.to - s.from;
+    let len2 = d.length_squared();
+    if len2 == 0.0 {
+        return (p - s.from).length();
+    }
+    let t = ((p - s.from).dot(d) / len2).clamp(0.0, 1.0);
+    (p - (s.from + d * t)).length()
+}

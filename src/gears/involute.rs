@@ -1,0 +1,211 @@
+//! The involute function, its inverse (a bracketed, guaranteed-convergent solver, not a
+//! table), points of an involute, the tooth thickness on any circle, and the textbook's
+//! compass construction of an involute (base circle stepped in equal chords, tangents with
+//! the unrolled lengths laid off) against the exact curve.
+
+use super::GearError;
+use crate::geom::DVec2;
+use std::f64::consts::FRAC_PI_2;
+
+/// inv α = tg α − α (radians).
+pub fn inv(alpha: f64) -> f64 {
+    if alpha.abs() < 0.05 {
+        // tg α − α cancels for small α: its series, exact to f64 below 0.05 rad.
+        let a2 = alpha * alpha;
+        let c = [
+            1.0 / 3.0,
+            2.0 / 15.0,
+            17.0 / 315.0,
+            62.0 / 2835.0,
+            1382.0 / 155_925.0,
+            21844.0 / 6_081_075.0,
+        ];
+        let s = c.iter().rev().fold(0.0, |acc, k| acc * a2 + k);
+        return alpha * a2 * s;
+    }
+    alpha.tan() - alpha
+}
+
+/// The largest angle the inverse returns: inv is finite on [0, π/2), and beyond this
+/// angle (89.9999°) no tooth or mesh has a pressure angle.
+const MAX_ANGLE: f64 = FRAC_PI_2 - 1e-6;
+
+/// The inverse of the involute function: the α in [0, π/2) with inv α = `v`.
+///
+/// Safeguarded Newton iteration inside a bracket [lo, hi] that always contains the root
+/// (inv is increasing): each Newton step that leaves the bracket is replaced by bisection,
+/// so the iteration converges for every admissible `v`; it stops when the bracket or the
+/// step is at the resolution of f64.
+///
+/// # Errors
+/// [`GearError::InvoluteDomain`] for a negative, non-finite or too large `v`.
+pub fn inv_inverse(v: f64) -> Result<f64, GearError> {
+    if !(v.is_finite() && v >= 0.0 && v <= inv(MAX_ANGLE)) {
+        return Err(GearError::InvoluteDomain { value: v });
+    }
+    if v == 0.0 {
+        return Ok(0.0);
+    }
+    let (mut lo, mut hi) = (0.0_f64, MAX_ANGLE);
+    // inv α ≈ α³/3 for small α: a start inside the bracket.
+    let mut a = (3.0 * v).cbrt().clamp(lo, hi);
+    for _ in 0..200 {
+        let f = inv(a) - v;
+        if f == 0.0 {
+            return Ok(a);
+        }
+        if f > 0.0 {
+            hi = a;
+        } else {
+            lo = a;
+        }
+        let t = a.tan();
+        let newton = a - f / (t * t);
+        let next = if newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if (next - a).abs() <= 4.0 * f64::EPSILON * a || hi - lo <= 4.0 * f64::EPSILON * hi {
+            return Ok(next);
+        }
+        a = next;
+    }
+    Ok(a)
+}
+
+/// The inverse by plain Newton iteration from (3v)^{1/3} (seed 002's recipe), the twin of
+/// [`inv_inverse`]; `None` when it leaves [0, π/2) or does not settle.
+pub fn inv_inverse_newton(v: f64) -> Option<f64> {
+    let mut a = (3.0 * v).cbrt();
+    for _ in 0..100 {
+        let t = a.tan();
+        let next = a - (t - a - v) / (t * t);
+        if !(next.is_finite() && (0.0..FRAC_PI_2).contains(&next)) {
+            return None;
+        }
+        if (next - a).abs() <= 1e-16 * a.max(1e-300) {
+            return Some(next);
+        }
+        a = next;
+    }
+    Some(a)
+}
+
+/// The pressure angle of an involute of the base radius `rb` at the radius `ry` ≥ `rb`.
+pub fn pressure_angle(rb: f64, ry: f64) -> f64 {
+    (rb / ry).clamp(-1.0, 1.0).acos()
+}
+
+/// The tooth thickness (arc) on the circle of radius `ry` of a tooth whose thickness on the
+/// pitch circle `r` (pressure angle `alpha`) is `s`:
+/// `s_y = 2·r_y·(s/(2r) + inv α − inv α_y)`, α_y = arccos(r_b/r_y). Negative: pointed below
+/// `ry`.
+pub fn thickness_at(s: f64, r: f64, alpha: f64, ry: f64) -> f64 {
+    let rb = r * alpha.cos();
+    2.0 * ry * (s / (2.0 * r) + inv(alpha) - inv(pressure_angle(rb, ry)))
+}
+
+/// A point of the involute of the base circle (`centre`, `rb`) whose origin on the base
+/// circle is at the polar angle `theta0`, unwound counter-clockwise (`ccw`) or clockwise,
+/// at the roll angle `t` ≥ 0 (the unrolled string has the length `rb·t`).
+pub fn involute_point(centre: DVec2, rb: f64, theta0: f64, t: f64, ccw: bool) -> DVec2 {
+    let k = if ccw { 1.0 } else { -1.0 };
+    let th = theta0 + k * t;
+    let radial = DVec2::new(th.cos(), th.sin());
+    // The string leaves the base circle along the tangent, away from the origin.
+    let tangent = DVec2::new(th.sin(), -th.cos()) * k;
+    centre + radial * rb + tangent * (rb * t)
+}
+
+/// The polar angle (about the base circle's centre) of the origin of the involute of `rb`
+/// through `q`, unwound counter-clockwise (`ccw`) or clockwise: the involutes of one base
+/// circle are equidistant, so `rb·|Δθ₀|` is the distance between two of them along their
+/// common normal. `None` inside the base circle.
+pub fn origin_angle(centre: DVec2, rb: f64, q: DVec2, ccw: bool) -> Option<f64> {
+    let d = q - centre;
+    let rho = d.length();
+    if rho < rb {
+        return None;
+    }
+    let polar = d.y.atan2(d.x);
+    let i = inv(pressure_angle(rb, rho));
+    Some(if ccw { polar - i } else { polar + i })
+}
+
+/// The compass construction of an involute through `p` (outside the base circle `centre`,
+/// `rb`), the textbook's way: the tangent from `p` touches the base circle at T (on the side
+/// that unwinds counter-clockwise when `ccw`), PT is divided into `parts` equal segments b,
+/// the compass opening b is stepped along the base circle from T `parts` times (chords, not
+/// arcs) back to the origin 0, and on the tangent at the k-th notch k segments b are laid
+/// off. `extra` more notches beyond T continue the curve past `p`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CompassInvolute {
+    /// The notches on the base circle, from the origin 0 (index 0) through T (index
+    /// `parts`) and beyond.
+    pub notches: Vec<DVec2>,
+    /// The points laid off on the tangents (index k: k segments from notch k); index 0 is
+    /// the origin itself, index `parts` is `p`.
+    pub points: Vec<DVec2>,
+    /// The segment b = PT/parts.
+    pub step: f64,
+    /// The chord-vs-arc error of one step: b − chord angle·rb… as the arc the chord b
+    /// subtends minus b, `rb·2·asin(b/(2rb)) − b` (> 0).
+    pub arc_minus_chord: f64,
+    /// The largest distance of a constructed point from the exact involute through `p`
+    /// (along the common normal of the base circle's involutes).
+    pub deviation: f64,
+}
+
+/// Carry out [`CompassInvolute`]'s construction.
+///
+/// # Errors
+/// [`GearError::InvolutePoint`] when `p` is not outside the base circle or `parts` is 0.
+pub fn compass_involute(
+    centre: DVec2,
+    rb: f64,
+    p: DVec2,
+    parts: u32,
+    extra: u32,
+    ccw: bool,
+) -> Result<CompassInvolute, GearError> {
+    let d = p - centre;
+    let dist = d.length();
+    if !(rb > 0.0 && dist > rb && parts > 0) {
+        return Err(GearError::InvolutePoint { distance: dist, rb });
+    }
+    let k = if ccw { 1.0 } else { -1.0 };
+    // The tangency point T: the string PT is tangent at T; for a counter-clockwise involute
+    // the string leaves T in the direction (sin θ, −cos θ), so T is at θ_T with P − T along it.
+    let len = (dist * dist - rb * rb).sqrt();
+    let theta_t = d.y.atan2(d.x) + k * (len / rb).atan();
+    let step = len / parts as f64;
+    let chord_angle = 2.0 * (step / (2.0 * rb)).min(1.0).asin();
+    let notch = |j: f64| {
+        let th = theta_t + k * chord_angle * j;
+        (th, centre + DVec2::new(th.cos(), th.sin()) * rb)
+    };
+    let mut notches = Vec::new();
+    let mut points = Vec::new();
+    for i in 0..=(parts + extra) {
+        // Notch i counts from the origin: i = parts is T.
+        let j = i as f64 - parts as f64;
+        let (th, at) = notch(j);
+        let tangent = DVec2::new(th.sin(), -th.cos()) * k;
+        notches.push(at);
+        points.push(at + tangent * (step * i as f64));
+    }
+    let exact = origin_angle(centre, rb, p, ccw).unwrap_or(0.0);
+    let deviation = points
+        .iter()
+        .filter_map(|q| origin_angle(centre, rb, *q, ccw))
+        .map(|a| rb * crate::geom::wrap_pi(a - exact).abs())
+        .fold(0.0, f64::max);
+    Ok(CompassInvolute {
+        notches,
+        points,
+        step,
+        arc_minus_chord: rb * chord_angle - step,
+        deviation,
+    })
+}

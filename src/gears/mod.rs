@@ -1,0 +1,452 @@
+//! Involute gears (seed 000 §4, seed 002 PZ1–PZ3): the geometry of a shifted external pair
+//! in closed form, the involute drawn by the compass, the meshing picture, rack generation
+//! with undercut and pointing, and gear trains (ordinary and planetary) by Willis and by the
+//! velocity triangles.
+//!
+//! As everywhere in `tmm`, each procedure exists twice: a **construction** through the
+//! recorder ([`mesh::meshing`], [`generate::generate`], [`train::triangles`]) read off under
+//! the drafting model, and an **analytic twin** ([`Pair`], [`Cutting`], [`Train::willis`]);
+//! [`rows`] compares them.
+//!
+//! Errata of the seeds reproduced against, never matched (`docs/seed-000-cases.md` §000.13,
+//! `docs/seed-002-digest.md` §4.3): seed 000 takes r_b = r·cos α_w and the base pitch
+//! πm·cos α_w, so its ε_α = 1.22 (exact 1.1550); PZ3 reads cos 26.92° as 0.8836 and prints
+//! a_w = 180.79 mm (exact 179.18) and ε_α = 1.14 (exact 1.1637), and lays off "p = 14.13 mm".
+
+pub mod generate;
+pub mod involute;
+pub mod mesh;
+mod pair;
+mod rack;
+pub mod rows;
+#[cfg(test)]
+mod tests;
+pub mod train;
+
+pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
+pub use pair::{Pair, PairSpec};
+pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
+pub use train::{Mesh, Train, TrainError};
+
+use crate::scale::Scale;
+use thiserror::Error;
+
+/// The least tip thickness of a sound tooth, × m (seed 002 PZ1: S_a ≥ 0.3m).
+pub const MIN_TIP: f64 = 0.3;
+
+/// Why a gear cannot be computed or constructed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum GearError {
+    /// A datum out of its range.
+    #[error("gears: {what} = {value}: expected {expected}")]
+    Spec {
+        /// The datum (`module`, `z1`).
+        what: &'static str,
+        /// Its value.
+        value: f64,
+        /// What was expected.
+        expected: &'static str,
+    },
+    /// A coefficient of the basic rack out of its range.
+    #[error("gears: the basic rack's {what} = {value}: expected {expected}")]
+    Rack {
+        /// The coefficient (`alpha`, `ha`, `c`, `rho_f`).
+        what: &'static str,
+        /// Its value.
+        value: f64,
+        /// What was expected.
+        expected: &'static str,
+    },
+    /// inv α⁻¹ of a value outside its domain.
+    #[error("gears: inv α = {value} has no pressure angle in [0°, 90°)")]
+    InvoluteDomain {
+        /// The value.
+        value: f64,
+    },
+    /// An involute through a point inside its base circle.
+    #[error("gears: an involute of r_b = {rb} m cannot pass through a point {distance} m from the centre")]
+    InvolutePoint {
+        /// The point's distance from the centre, m.
+        distance: f64,
+        /// The base radius, m.
+        rb: f64,
+    },
+    /// A centre distance the pair cannot have.
+    #[error("gears: a centre distance a_w = {a_w} m is infeasible: {why} ({least} m)")]
+    CentreDistance {
+        /// The asked a_w, m.
+        a_w: f64,
+        /// The bound, m.
+        least: f64,
+        /// Why.
+        why: &'static str,
+    },
+    /// The tip of a wheel passes the interference point of its mate.
+    #[error("gears: interference: the tip of wheel {wheel} reaches {reach} m along the line of action, beyond N₁N₂ = {g} m (the tip digs into the mate's root)")]
+    Interference {
+        /// The wheel (1, 2).
+        wheel: usize,
+        /// N₁B₂ or N₂B₁, m.
+        reach: f64,
+        /// N₁N₂, m.
+        g: f64,
+    },
+    /// A pointed tooth.
+    #[error("gears: the tooth of wheel {wheel} is pointed: s_a = {sa} m (m = {module} m)")]
+    Pointed {
+        /// The wheel.
+        wheel: usize,
+        /// Its tip thickness, m.
+        sa: f64,
+        /// The module, m.
+        module: f64,
+    },
+    /// A negative radial clearance.
+    #[error(
+        "gears: the tip of wheel {wheel} touches the mate's root circle: clearance {clearance} m"
+    )]
+    Clearance {
+        /// The wheel.
+        wheel: usize,
+        /// The clearance, m.
+        clearance: f64,
+    },
+    /// A contact ratio below 1.
+    #[error("gears: the contact ratio ε_α = {eps} < 1: the mesh is not continuous")]
+    ContactRatio {
+        /// ε_α.
+        eps: f64,
+    },
+    /// No round drawing scale for a size.
+    #[error("gears: no drawing scale can be chosen for the size {size} m")]
+    NoScale {
+        /// The size, m.
+        size: f64,
+    },
+    /// The construction failed.
+    #[error("gears: {0}")]
+    Construction(String),
+}
+
+/// The round μ_l drawing `size` (m) about `preferred_mm` long.
+fn scale_for(size: f64, preferred_mm: f64) -> Result<Scale, GearError> {
+    Scale::round_for(size, preferred_mm, crate::scale::Quantity::Length)
+        .ok_or(GearError::NoScale { size })
+}
+
+/// The gear study a scene asks for (`[gears]`): a pair with its meshing picture and wheels
+/// cut by the rack.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GearsSpec {
+    /// The pair (`[gears.pair]`).
+    pub pair: Option<PairSpec>,
+    /// μ_l of the meshing picture; `None`: chosen the textbook way.
+    pub scale_l: Option<Scale>,
+    /// The wheels cut by the rack (`[[gears.rack]]`).
+    pub racks: Vec<RackSpec>,
+    /// The train (`[planetary]`).
+    pub planetary: Option<PlanetarySpec>,
+}
+
+/// A wheel cut by the rack, as a scene gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RackSpec {
+    /// Its name in report keys (`1`: `s_a1`, `x_min`).
+    pub name: String,
+    /// The wheel.
+    pub cutting: Cutting,
+    /// The number of equal rack steps N.
+    pub positions: usize,
+    /// μ_l of its figure; `None`: chosen the textbook way.
+    pub scale_l: Option<Scale>,
+}
+
+/// The default number of rack positions of a generation.
+pub const DEFAULT_POSITIONS: usize = 90;
+
+/// The gear study carried out: the pair with its meshing picture, the generated wheels.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GearStudy {
+    /// The pair and its meshing picture.
+    pub pair: Option<(Pair, mesh::Meshing)>,
+    /// The generated wheels, by name.
+    pub racks: Vec<(String, generate::Generation)>,
+    /// The train.
+    pub train: Option<TrainStudy>,
+}
+
+/// The round μ_l of a meshing picture: the whole of both wheels about 360 mm tall.
+pub fn meshing_scale(p: &Pair) -> Result<Scale, GearError> {
+    scale_for(p.a_w + p.ra[0] + p.ra[1], 360.0)
+}
+
+/// The round μ_l of a generation: the tooth and its spaces about 200 mm wide.
+pub fn generation_scale(c: &Cutting) -> Result<Scale, GearError> {
+    scale_for(4.0 * std::f64::consts::PI * c.module, 200.0)
+}
+
+/// Carry out `spec` in `ctx`.
+///
+/// # Errors
+/// A [`GearError`] from the pair's geometry or a construction.
+pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearStudy, GearError> {
+    let pair = match &spec.pair {
+        Some(ps) => {
+            let p = Pair::working(*ps)?;
+            let scale = match spec.scale_l {
+                Some(s) => s,
+                None => meshing_scale(&p)?,
+            };
+            Some((p, mesh::meshing(&p, scale, ctx)?))
+        }
+        None => None,
+    };
+    let racks = spec
+        .racks
+        .iter()
+        .map(|r| {
+            let scale = match r.scale_l {
+                Some(s) => s,
+                None => generation_scale(&r.cutting)?,
+            };
+            Ok((
+                r.name.clone(),
+                generate::generate(&r.cutting, r.positions, scale, ctx)?,
+            ))
+        })
+        .collect::<Result<Vec<_>, GearError>>()?;
+    let train = match &spec.planetary {
+        Some(p) => Some(train_study(p, ctx).map_err(|e| GearError::Construction(e.to_string()))?),
+        None => None,
+    };
+    Ok(GearStudy { pair, racks, train })
+}
+
+impl GearStudy {
+    /// Every row: the pair's by formula and off the meshing picture, each wheel's generation.
+    pub fn rows(&self) -> Vec<crate::check::Row> {
+        let mut out = Vec::new();
+        if let Some((p, m)) = &self.pair {
+            out.extend(rows::pair_rows(p));
+            out.extend(rows::meshing_rows(p, m));
+        }
+        for (name, g) in &self.racks {
+            out.extend(rows::generation_rows(name, g));
+        }
+        if let Some(t) = &self.train {
+            out.extend(t.rows());
+        }
+        out
+    }
+    /// The notes: the pair's (with the seeds' errata), each generation's.
+    pub fn notes(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if let Some((p, m)) = &self.pair {
+            out.extend(rows::pair_notes(p));
+            out.push(format!(
+                "gears: the compass involute of wheel 1 through P (N₁P in 4 parts) deviates from the exact one by {} mm (chord-vs-arc error of one step {} mm)",
+                crate::scale::format_sig(m.compass.0 * 1e3, 3, crate::scale::Lang::En),
+                crate::scale::format_sig(m.compass.1 * 1e3, 3, crate::scale::Lang::En),
+            ));
+        }
+        for (name, g) in &self.racks {
+            out.extend(rows::generation_notes(name, g));
+        }
+        if let Some(t) = &self.train {
+            out.extend(t.notes());
+        }
+        out
+    }
+}
+
+/// A planetary (or ordinary) train as a scene gives it (`[planetary]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanetarySpec {
+    /// The train.
+    pub train: Train,
+    /// The input's speed, rpm (signed), when given.
+    pub n_input: Option<f64>,
+    /// The required output speed, rpm (magnitude), when given.
+    pub n_output: Option<f64>,
+    /// The number of satellites k (neighbour condition), when given.
+    pub satellites: Option<u32>,
+}
+
+/// The train studied: Willis, the stages, the triangles.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrainStudy {
+    /// The spec.
+    pub spec: PlanetarySpec,
+    /// ω of every shaft for ω_in = 1 (Willis).
+    pub willis: Vec<f64>,
+    /// u_in,out by Willis.
+    pub ratio: f64,
+    /// u by the textbook's stages, when the train is a chain of stages.
+    pub stages: Option<f64>,
+    /// The velocity triangles.
+    pub triangles: train::Triangles,
+}
+
+/// Carry out the train study.
+///
+/// # Errors
+/// A [`TrainError`].
+pub fn train_study(
+    spec: &PlanetarySpec,
+    ctx: &crate::construct::Context,
+) -> Result<TrainStudy, TrainError> {
+    let t = &spec.train;
+    let willis = t.willis()?;
+    let ratio = t.ratio()?;
+    Ok(TrainStudy {
+        spec: spec.clone(),
+        willis,
+        ratio,
+        stages: t.by_stages(),
+        triangles: train::triangles(t, ctx)?,
+    })
+}
+
+impl TrainStudy {
+    /// `u_<in>_<out>` by formula (the stages against Willis) and by the triangles; with
+    /// n_input, ω of every shaft read off the plan of angular velocities.
+    pub fn rows(&self) -> Vec<crate::check::Row> {
+        use crate::check::{At, Key, Method, Row, Symbol};
+        let t = &self.spec.train;
+        let subject = format!("{}_{}", t.shafts[t.input], t.shafts[t.output]);
+        let row = |symbol, subject: &str, method, graphical, analytic, scale: f64| Row {
+            key: Key {
+                symbol,
+                subject: subject.to_string(),
+                at: At::Scene,
+            },
+            method,
+            graphical,
+            analytic,
+            conditioning: None,
+            scale,
+        };
+        let mut out = Vec::new();
+        if let Some(s) = self.stages {
+            out.push(row(
+                Symbol::GearRatio,
+                &subject,
+                Method::Formula,
+                s,
+                self.ratio,
+                self.ratio.abs(),
+            ));
+        }
+        out.push(row(
+            Symbol::GearRatio,
+            &subject,
+            Method::Triangles,
+            self.triangles.ratio,
+            self.ratio,
+            self.ratio.abs(),
+        ));
+        if let Some(n) = self.spec.n_input {
+            let w_in = n * std::f64::consts::PI / 30.0;
+            let scale = self.willis.iter().fold(0.0_f64, |a, w| a.max(w.abs())) * w_in.abs();
+            for (k, name) in t.shafts.iter().enumerate() {
+                out.push(row(
+                    Symbol::AngularVelocity,
+                    name,
+                    Method::Triangles,
+                    self.triangles.omega[k] * w_in,
+                    self.willis[k] * w_in,
+                    scale,
+                ));
+            }
+        }
+        out
+    }
+
+    /// The notes: the inversion table, the speeds, the required ratio and the best tooth
+    /// numbers of the first mesh for it, the neighbour condition.
+    pub fn notes(&self) -> Vec<String> {
+        let num = |x: f64, s| crate::scale::format_sig(x, s, crate::scale::Lang::En);
+        let t = &self.spec.train;
+        let mut out = Vec::new();
+        let n_in = self.spec.n_input.unwrap_or(1.0);
+        if let Ok(inv) = t.inversion() {
+            let cells: Vec<String> = inv
+                .iter()
+                .map(|(s, w, r)| format!("{s}: {} → {}", num(w * n_in, 6), num(r * n_in, 6)))
+                .collect();
+            out.push(format!(
+                "train: inversion (Willis): n before → n − n_H after stopping the carrier{}: {}",
+                if self.spec.n_input.is_some() {
+                    ", rpm"
+                } else {
+                    " (per unit input)"
+                },
+                cells.join("; ")
+            ));
+        }
+        out.push(format!(
+            "train: u = {} by Willis{}; the output turns {} the input",
+            num(self.ratio, 7),
+            self.stages
+                .map_or(String::new(), |s| format!(", {} by the stages", num(s, 7))),
+            if self.ratio < 0.0 { "against" } else { "with" }
+        ));
+        if let (Some(n1), Some(n_out)) = (self.spec.n_input, self.spec.n_output) {
+            let required = (n1 / n_out).abs();
+            out.push(format!(
+                "train: required |u| = {}/{} = {}; the tooth numbers give {} (n_out = {} rpm, {} %)",
+                num(n1.abs(), 6),
+                num(n_out, 6),
+                num(required, 6),
+                num(self.ratio.abs(), 6),
+                num(n1.abs() / self.ratio.abs(), 6),
+                num((self.ratio.abs() / required - 1.0) * 100.0, 3)
+            ));
+            if let Some(m) = t.meshes.first() {
+                let (a, b) = (&t.wheels[m.0], &t.wheels[m.1]);
+                let now = f64::from(b.z) / f64::from(a.z);
+                let want = now * required / self.ratio.abs();
+                let best = train::best_pairs(want, 17, 40, 4);
+                let list: Vec<String> = best
+                    .iter()
+                    .map(|(z1, z2, e)| {
+                        format!(
+                            "{z2}/{z1} ({} %, n_out = {} rpm)",
+                            num(e * 100.0, 3),
+                            num(n_out / (1.0 + e), 6)
+                        )
+                    })
+                    .collect();
+                out.push(format!(
+                    "train: mesh {}–{} needs z{}/z{} = {}: best {} (now {}/{} = {})",
+                    a.name,
+                    b.name,
+                    b.name,
+                    a.name,
+                    num(want, 6),
+                    list.join(", "),
+                    b.z,
+                    a.z,
+                    num(now, 5)
+                ));
+            }
+        }
+        if let (Some(k), Some(h), Ok((ys, _))) = (self.spec.satellites, t.carrier, t.layout()) {
+            for &s in &t.satellites {
+                let arm = (ys[s] - ys[h]).abs();
+                let chord = 2.0 * arm * (std::f64::consts::PI / f64::from(k)).sin();
+                for (w, wheel) in t.wheels.iter().enumerate().filter(|(_, w)| w.shaft == s) {
+                    let da = 2.0 * t.radius(w) + 2.0 * t.module;
+                    out.push(format!(
+                        "train: neighbour condition, k = {k}: 2·a·sin(π/k) = {} mm {} d_a{} = {} mm",
+                        num(chord * 1e3, 5),
+                        if chord > da { ">" } else { "≤ (fails:)" },
+                        wheel.name,
+                        num(da * 1e3, 5)
+                    ));
+                }
+            }
+        }
+        out
+    }
+}

@@ -1,0 +1,542 @@
+//! Tests of the gear studies: seed values (with the seeds' errata not reproduced), analytic
+//! oracles and properties.
+
+use super::generate::generate;
+use super::involute::{inv_inverse_newton, involute_point, origin_angle, thickness_at};
+use super::mesh::meshing;
+use super::*;
+use crate::construct::{Context, Drafting};
+use crate::geom::DVec2;
+use crate::scale::{Quantity, Scale};
+use proptest::prelude::*;
+
+const GOST: BasicRack = BasicRack::GOST_13755;
+
+fn pair(m_mm: f64, z: [u32; 2], x: [f64; 2]) -> Pair {
+    Pair::new(PairSpec {
+        module: m_mm * 1e-3,
+        z,
+        x,
+        rack: GOST,
+        dy_table: None,
+    })
+    .unwrap()
+}
+
+fn seed000() -> Pair {
+    pair(14.0, [13, 30], [0.8, 0.471])
+}
+
+/// PZ3's pair the textbook's way: Δy = 0.160 from Kudryavtsev's table A.
+fn pz3() -> Pair {
+    Pair::new(PairSpec {
+        dy_table: Some(0.160),
+        ..pair(10.0, [13, 21], [0.694, 0.384]).spec
+    })
+    .unwrap()
+}
+
+fn ctx(d: f64) -> Context {
+    Context::for_model_size(400.0, Drafting::new(d).unwrap()).unwrap()
+}
+
+fn mu(v: f64) -> Scale {
+    Scale::new(v, Quantity::Length).unwrap()
+}
+
+#[test]
+fn seed000_pair_geometry() {
+    let p = seed000();
+    assert!(
+        (p.alpha_w.to_degrees() / 26.58075 - 1.0).abs() < 1e-6,
+        "{}",
+        p.alpha_w.to_degrees()
+    );
+    assert!((p.a_w * 1e3 - 316.276).abs() < 5e-4, "{}", p.a_w);
+    assert!((p.eps - 1.1550).abs() <= 5e-4, "{}", p.eps);
+    assert!((p.y - 1.09117).abs() < 1e-5 && (p.dy - 0.17983).abs() < 1e-5);
+    assert!((p.rb[0] * 1e3 - 85.512).abs() < 1e-3 && (p.rb[1] * 1e3 - 197.335).abs() < 1e-3);
+    assert!((p.rw[0] * 1e3 - 95.6185).abs() < 1e-3 && (p.rw[1] * 1e3 - 220.658).abs() < 1e-3);
+    assert!((p.ra[0] * 1e3 - 113.682).abs() < 1e-3 && (p.ra[1] * 1e3 - 228.076).abs() < 1e-3);
+    assert!((p.rf[0] * 1e3 - 84.700).abs() < 1e-9 && (p.rf[1] * 1e3 - 199.094).abs() < 1e-9);
+    assert!((p.s[0] * 1e3 - 30.144).abs() < 1e-3 && (p.s[1] * 1e3 - 26.791).abs() < 1e-3);
+    assert!((p.sa[0] * 1e3 - 5.444).abs() < 5e-3 && (p.sa[1] * 1e3 - 11.133).abs() < 5e-3);
+    assert!((p.clearance[0] * 1e3 - 3.5).abs() < 1e-9 && (p.clearance[1] * 1e3 - 3.5).abs() < 1e-9);
+    assert!((p.g * 1e3 - 141.52).abs() < 5e-3 && (p.ab * 1e3 - 47.737).abs() < 1e-2);
+    // Seed 000's erratum: the base pitch πm·cos α_w gives 1.21–1.22, never the answer.
+    let wrong = p.ab / (p.p * p.alpha_w.cos());
+    assert!(wrong > 1.2 && (p.eps - wrong).abs() > 0.05);
+    let [l1, l2] = p.sliding(p.active_ends()[0]);
+    assert!(
+        (l1 + 0.8239).abs() < 5e-4 && (l2 - 0.4517).abs() < 5e-4,
+        "{l1} {l2}"
+    );
+    let [l1, l2] = p.sliding(p.active_ends()[1]);
+    assert!(
+        (l1 - 0.6146).abs() < 5e-4 && (l2 + 1.5949).abs() < 5e-4,
+        "{l1} {l2}"
+    );
+    assert_eq!(p.sliding(p.pole()).map(|v| (v.abs() < 1e-12) as u8), [1, 1]);
+}
+
+#[test]
+fn pz3_pair_geometry_and_its_errata() {
+    let p = pz3();
+    assert!((p.a_w * 1e3 - 179.18).abs() < 5e-3, "{}", p.a_w);
+    assert!((p.eps - 1.1637).abs() < 5e-5, "{}", p.eps);
+    assert!((p.alpha_w.to_degrees() - 26.9331).abs() < 1e-4);
+    assert!((p.rw[0] * 1e3 - 68.51).abs() < 5e-3 && (p.rw[1] * 1e3 - 110.67).abs() < 5e-3);
+    assert!((p.ab * 1e3 - 34.352).abs() < 1e-3 && (p.p_b * 1e3 - 29.521).abs() < 1e-3);
+    assert!((p.sa[0] * 1e3 - 4.374).abs() < 1e-3 && (p.sa[1] * 1e3 - 7.458).abs() < 1e-3);
+    assert!((p.clearance[0] * 1e3 - 2.503).abs() < 1e-3);
+    assert!((p.dy_exact - 0.1597).abs() < 1e-4);
+    // With the exact Δy the tips are 3 µm longer and ε_α = 1.1640.
+    let exact = pair(10.0, [13, 21], [0.694, 0.384]);
+    assert!((exact.eps - 1.1640).abs() < 5e-5 && (exact.clearance[0] * 1e3 - 2.5).abs() < 1e-9);
+    // The printed 180.79, 1.14 and "p = 14.13" are never produced.
+    assert!((p.a_w * 1e3 - 180.79).abs() > 1.0);
+    assert!((p.eps - 1.14).abs() > 0.02);
+    assert!((p.p * 1e3 - 14.13).abs() > 10.0);
+    let notes = rows::pair_notes(&p).join("\n");
+    assert!(
+        notes.contains("180.79") && notes.contains("14.13"),
+        "{notes}"
+    );
+}
+
+#[test]
+fn x_min_for_z13_and_the_textbook_rule() {
+    assert!((x_min(13, &GOST) - 0.2396).abs() < 5e-5);
+    assert!((x_min_textbook(13) - 0.2353).abs() < 5e-5);
+    // z_min = 2h_a*/sin²α = 17.1: a zero wheel of 18 teeth is not undercut, of 17 it is
+    // (by a hair: the textbook rounds z_min to 17).
+    assert!(!Cutting::alone(0.01, 18, 0.0, GOST).unwrap().undercut());
+    assert!(Cutting::alone(0.01, 17, 0.0, GOST).unwrap().undercut());
+    // The feasible range: s_a = 0.3m at its upper end.
+    let hi = x_for_tip(13, &GOST, MIN_TIP).unwrap();
+    let c = Cutting::alone(1.0, 13, hi, GOST).unwrap();
+    assert!((c.sa() - 0.3).abs() < 1e-9 && hi > x_min(13, &GOST));
+}
+
+#[test]
+fn inverse_involute_round_trip_on_0_to_60_degrees() {
+    for k in 0..6000 {
+        let a = (k as f64 * 0.01).to_radians();
+        let back = inv_inverse(inv(a)).unwrap();
+        assert!((back - a).abs() <= 1e-13 * a.max(1e-2), "{a} {back}");
+    }
+    assert!(inv_inverse(-1e-3).is_err() && inv_inverse(f64::NAN).is_err());
+    assert!((inv(20f64.to_radians()) - 0.014904).abs() < 1e-6);
+}
+
+#[test]
+fn compass_involute_against_the_exact_one() {
+    let rb = 50.0;
+    let p = DVec2::new(0.0, 70.0);
+    let mut last = f64::INFINITY;
+    for parts in [4, 8, 16, 32] {
+        let c = compass_involute(DVec2::ZERO, rb, p, parts, 0, true).unwrap();
+        // The point laid off at T is P itself; the error comes from the chords only.
+        assert!((c.points[parts as usize] - p).length() < 1e-12);
+        assert!(c.arc_minus_chord > 0.0 && c.deviation > 0.0);
+        // The origin is off by parts × (arc − chord) along the base circle, and that is
+        // the largest deviation: the involutes of one base circle are equidistant.
+        assert!((c.deviation - parts as f64 * c.arc_minus_chord).abs() < 1e-9 * rb);
+        assert!(
+            c.deviation < last / 3.5,
+            "{parts}: {} vs {last}",
+            c.deviation
+        );
+        last = c.deviation;
+    }
+    assert!(compass_involute(DVec2::ZERO, rb, DVec2::new(10.0, 0.0), 4, 0, true).is_err());
+}
+
+#[test]
+fn meshing_picture_reads_the_contact_ratio() {
+    for p in [seed000(), pz3()] {
+        let exact = meshing(&p, mu(0.002), &ctx(0.0)).unwrap();
+        assert!((exact.eps - p.eps).abs() < 1e-9, "{} {}", exact.eps, p.eps);
+        assert!((exact.a_w.value - p.a_w).abs() < 1e-12 && (exact.g.value - p.g).abs() < 1e-12);
+        let read = meshing(&p, mu(0.002), &ctx(0.5)).unwrap();
+        // B₁B₂ read to 0.5 mm at μ = 0.002 m/mm: within 0.25 mm × μ / p_b.
+        let bound = 0.25 * 0.002 / p.p_b;
+        assert!(
+            (read.eps - p.eps).abs() <= bound + 1e-12,
+            "{} {}",
+            read.eps,
+            p.eps
+        );
+        assert_eq!(read.ab.read_mm % 0.5, 0.0);
+        for s in &exact.lambda {
+            let e = p.sliding(s.x);
+            assert!((s.read[0] - e[0]).abs() < 1e-9 && (s.read[1] - e[1]).abs() < 1e-9);
+        }
+    }
+}
+
+#[test]
+fn rack_generation_touches_the_exact_curves_including_the_junction() {
+    for (z, x) in [(13, 0.0), (13, 0.8), (10, 0.0), (30, 0.471), (13, 0.25)] {
+        let c = Cutting::alone(0.014, z, x, GOST).unwrap();
+        let g = generate(&c, 90, mu(0.0005), &ctx(0.0)).unwrap();
+        assert!(
+            g.touch_error < 1e-9 * c.module,
+            "{z} {x}: {}",
+            g.touch_error
+        );
+        // The touching points next to the junction: on the same curves, to 1e-9·m.
+        let (_, qi, qf) = c.junction();
+        let near = g
+            .touches
+            .iter()
+            .filter(|t| (t.q - qi).abs() < 0.05 * c.module || (t.q - qf).abs() < 0.05 * c.module);
+        for t in near {
+            let twin = match t.piece {
+                Piece::Flank => c.involute_at(t.q),
+                Piece::Fillet => c.trochoid_at(t.q),
+                Piece::Root => c.root_at(t.q),
+            };
+            assert!((t.at - twin).length() < 1e-9 * c.module);
+        }
+        // The involute twin by the polar angle agrees with the one by the roll angle.
+        let q = c.states().q_p;
+        assert!((c.involute_at(q) - c.involute_at_radius(c.r())).length() < 1e-12);
+        assert!((g.sa - c.sa()).abs() < 1e-9 * c.module);
+        assert_eq!(g.undercut, c.undercut(), "{z} {x}");
+    }
+}
+
+#[test]
+fn undercut_is_detected_for_z13_x0_and_not_for_x08() {
+    let zero = Cutting::alone(0.014, 13, 0.0, GOST).unwrap();
+    let shifted = Cutting::alone(0.014, 13, 0.8, GOST).unwrap();
+    assert!(zero.undercut() && !shifted.undercut());
+    let g0 = generate(&zero, 120, mu(0.0005), &ctx(0.0)).unwrap();
+    let g8 = generate(&shifted, 120, mu(0.0005), &ctx(0.0)).unwrap();
+    assert!(g0.undercut && !g8.undercut);
+    // The drawn junction: the crossing of the drawn fillet and involute, pinned by setting
+    // the rack between the crossing steps, is the exact intersection of involute and
+    // trochoid to 1e-8·m (a peer generator misses it by 0.0076·m); the two curves cross at
+    // a shallow angle, so rounding, not the method, sets that bound.
+    let j = zero.junction().0;
+    for n in [48, 60, 90, 120, 720] {
+        let g = generate(&zero, n, mu(0.0005), &ctx(0.0)).unwrap();
+        assert!(g.undercut, "{n}");
+        assert!(
+            (g.junction - j).length() < 1e-8 * zero.module,
+            "{n}: {:?} {j:?}",
+            g.junction
+        );
+    }
+    // The exact junction lies on both curves.
+    let o = origin_angle(DVec2::ZERO, zero.rb(), j, true).unwrap();
+    assert!(crate::geom::wrap_pi(o - zero.theta0()).abs() < 1e-12);
+    // x = 0.8 alone is pointed (s_a < 0.3m): the pair's Δy shortening saves seed 000's pinion.
+    assert!(g8.pointed && !g0.pointed);
+    assert!(seed000().sa[0] > MIN_TIP * 0.014);
+}
+
+#[test]
+fn envelope_deviation_falls_as_n_squared() {
+    let c = Cutting::alone(0.014, 13, 0.0, GOST).unwrap();
+    let d = |n| generate(&c, n, mu(0.0005), &ctx(0.0)).unwrap().deviation;
+    let (a, b) = (d(180), d(720));
+    let order = (a / b).ln() / 4f64.ln();
+    assert!((1.7..2.3).contains(&order), "order {order}: {a} {b}");
+}
+
+#[test]
+fn refusals_name_what_is_wrong() {
+    let spec = |x: [f64; 2]| PairSpec {
+        module: 0.01,
+        z: [13, 21],
+        x,
+        rack: GOST,
+        dy_table: None,
+    };
+    // Zero shifts on 13 teeth: the pinion's tip digs past N.
+    let e = Pair::working(spec([0.0, 0.0])).unwrap_err();
+    assert!(matches!(e, GearError::Interference { wheel: 2, .. }), "{e}");
+    assert!(matches!(
+        Pair::new(spec([-0.5, -0.5])),
+        Err(GearError::InvoluteDomain { .. })
+    ));
+    let e = Pair::working(spec([1.6, 0.0])).unwrap_err();
+    assert!(matches!(e, GearError::Pointed { wheel: 1, .. }), "{e}");
+    assert!(Pair::working(spec([0.694, 0.384])).is_ok());
+    let e = spec([0.5, 0.0]).x2_for_centre_distance(0.150).unwrap_err();
+    assert!(matches!(e, GearError::CentreDistance { .. }));
+    let x2 = spec([0.694, 0.0])
+        .x2_for_centre_distance(pz3().a_w)
+        .unwrap();
+    assert!((x2 - 0.384).abs() < 1e-9);
+    assert!(Cutting::alone(0.01, 13, 0.0, BasicRack { rho: 0.6, ..GOST }).is_err());
+}
+
+#[test]
+fn thickness_on_the_pitch_circle_is_s() {
+    let (s, r, a) = (0.02, 0.065, 20f64.to_radians());
+    assert!((thickness_at(s, r, a, r) - s).abs() < 1e-15);
+    // The exact involute through its origin: roll 0 is on the base circle.
+    let p = involute_point(DVec2::ZERO, 1.0, 0.3, 0.0, true);
+    assert!((p.length() - 1.0).abs() < 1e-15);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn contact_ratio_from_the_picture_equals_the_formula(
+        z1 in 12u32..40, dz in 0u32..60, x1 in 0.0f64..0.8, x2 in -0.3f64..0.8, m in 2.0f64..20.0
+    ) {
+        let spec = PairSpec { module: m * 1e-3, z: [z1, z1 + dz], x: [x1, x2], rack: GOST, dy_table: None };
+        if let Ok(p) = Pair::working(spec) {
+            let scale = Scale::round_for(p.a_w + p.ra[0] + p.ra[1], 360.0, Quantity::Length).unwrap();
+            let mesh = meshing(&p, scale, &ctx(0.0)).unwrap();
+            prop_assert!((mesh.eps - p.eps).abs() < 1e-9);
+            prop_assert!((p.eps - p.eps_formula).abs() < 1e-9);
+            prop_assert!((p.a_w - p.a_w_base).abs() < 1e-12);
+            prop_assert!((p.alpha_w - inv_inverse_newton(p.inv_w).unwrap()).abs() < 1e-12);
+        }
+    }
+}
+
+/// A train from (shaft, wheel name, z, internal) and meshes by wheel names.
+fn train(
+    wheels: &[(&str, &str, u32, bool)],
+    meshes: &[(&str, &str)],
+    io: (&str, &str),
+    fixed: Option<&str>,
+    carrier: Option<&str>,
+    satellites: &[&str],
+) -> Train {
+    let mut shafts: Vec<String> = Vec::new();
+    let idx = |s: &str, shafts: &mut Vec<String>| match shafts.iter().position(|x| x == s) {
+        Some(i) => i,
+        None => {
+            shafts.push(s.to_string());
+            shafts.len() - 1
+        }
+    };
+    let ws: Vec<train::Wheel> = wheels
+        .iter()
+        .map(|(s, n, z, int)| train::Wheel {
+            name: n.to_string(),
+            z: *z,
+            shaft: idx(s, &mut shafts),
+            internal: *int,
+        })
+        .collect();
+    let w = |n: &str| ws.iter().position(|x| x.name == n).unwrap();
+    let ms = meshes.iter().map(|(a, b)| Mesh(w(a), w(b))).collect();
+    let input = idx(io.0, &mut shafts);
+    let output = idx(io.1, &mut shafts);
+    let fixed = fixed.map(|f| idx(f, &mut shafts));
+    let carrier = carrier.map(|c| idx(c, &mut shafts));
+    let satellites = satellites.iter().map(|s| idx(s, &mut shafts)).collect();
+    Train {
+        shafts,
+        wheels: ws,
+        meshes: ms,
+        input,
+        output,
+        fixed,
+        carrier,
+        satellites,
+        module: 0.002,
+    }
+}
+
+/// Seed 000's reducer with z₁/z₂.
+fn reducer(z1: u32, z2: u32) -> Train {
+    train(
+        &[
+            ("A", "1", z1, false),
+            ("B", "2", z2, false),
+            ("B", "3", 106, true),
+            ("S", "4", 48, false),
+            ("S", "5", 18, false),
+            ("F", "6", 76, true),
+            ("H", "7", 25, false),
+            ("C", "8", 100, false),
+        ],
+        &[("1", "2"), ("3", "4"), ("5", "6"), ("7", "8")],
+        ("A", "C"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    )
+}
+
+#[test]
+fn seed000_reducer_by_willis_stages_and_triangles() {
+    let t = reducer(29, 74);
+    let u = t.ratio().unwrap();
+    // i₁₂ = −74/29, i₃H = 1 − z₄z₆/(z₃z₅) = −0.91195, i₇₈ = −4.
+    let i3h: f64 = 1.0 - (48.0 * 76.0) / (106.0 * 18.0);
+    assert!((i3h + 0.91195).abs() < 1e-5);
+    assert!((u - (-74.0 / 29.0) * i3h * -4.0).abs() < 1e-12, "{u}");
+    assert!((u.abs() - 9.308).abs() < 5e-4);
+    assert!((t.by_stages().unwrap() - u).abs() < 1e-12);
+    let tri = train::triangles(&t, &ctx(0.0)).unwrap();
+    assert!((tri.ratio - u).abs() < 1e-9 * u.abs(), "{} {u}", tri.ratio);
+    // Satellite speed relative to the carrier: 2533.3 rpm at n_H = 600 (seed: −1933.3 absolute).
+    let w = t.willis().unwrap();
+    let (wh, ws) = (w[t.carrier.unwrap()], w[t.satellites[0]]);
+    assert!(((ws / wh) - (1.0 - 76.0 / 18.0)).abs() < 1e-12);
+    // The required 1400/150 = 9.333: 87/34 fits better than the seed's 74/29.
+    let required = 1400.0 / 150.0;
+    let u87 = reducer(34, 87).ratio().unwrap().abs();
+    assert!((u87 - required).abs() < (u.abs() - required).abs());
+    let i12 = required / (i3h.abs() * 4.0);
+    let best = train::best_pairs(i12, 17, 40, 5);
+    assert_eq!((best[0].0, best[0].1), (34, 87), "{best:?}");
+    // At 0.5 mm each intercept is read to 0.25 mm: the ratio within that bound.
+    let read = train::triangles(&t, &ctx(0.5)).unwrap();
+    let x =
+        |k: usize| (tri.omega[k] * train::PLAN_H * tri.scale_l.value() / tri.scale_v.value()).abs();
+    let bound = 0.25 / x(t.input) + 0.25 / x(t.output);
+    assert!(
+        ((read.ratio - u) / u).abs() <= bound * 1.01,
+        "{} {bound}",
+        read.ratio
+    );
+}
+
+#[test]
+fn pz2_worked_examples_by_willis() {
+    // Example 3: 1–2 internal, James stage 3–4–5 with the ring fixed: u1H = 20.
+    let ex3 = train(
+        &[
+            ("A", "1", 25, false),
+            ("B", "2", 100, true),
+            ("B", "3", 20, false),
+            ("S", "4", 30, false),
+            ("F", "5", 80, true),
+        ],
+        &[("1", "2"), ("3", "4"), ("4", "5")],
+        ("A", "H"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    );
+    assert!((ex3.ratio().unwrap() - 20.0).abs() < 1e-12);
+    assert!((ex3.by_stages().unwrap() - 20.0).abs() < 1e-12);
+    let tri = train::triangles(&ex3, &ctx(0.0)).unwrap();
+    assert!((tri.ratio - 20.0).abs() < 1e-9 * 20.0);
+    // Example 1 as printed (not coaxial, Willis only): u17 = 20.
+    let ex1 = train(
+        &[
+            ("A", "1", 88, false),
+            ("S", "2", 48, false),
+            ("S", "3", 4, false),
+            ("F", "4", 44, false),
+            ("H", "5", 25, false),
+            ("D", "6", 17, false),
+            ("E", "7", 100, true),
+        ],
+        &[("1", "2"), ("3", "4"), ("5", "6"), ("6", "7")],
+        ("A", "E"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    );
+    assert!((ex1.ratio().unwrap() - 20.0).abs() < 1e-12);
+    assert!(train::triangles(&ex1, &ctx(0.0)).is_err());
+    // Example 2 as printed: 32, not the printed 20 (33·45/(15·11) = 9, not 6).
+    let ex2 = train(
+        &[
+            ("A", "1", 13, false),
+            ("H", "2", 52, false),
+            ("B", "3", 15, false),
+            ("S", "4", 33, false),
+            ("S", "5", 11, false),
+            ("F", "6", 45, false),
+        ],
+        &[("1", "2"), ("3", "4"), ("5", "6")],
+        ("A", "B"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    );
+    // u1H = u12·u3H: the carrier carries wheel 2; u_1_3 = ω1/ω3.
+    let w = ex2.willis().unwrap();
+    let u1h = w[ex2.input] / w[ex2.carrier.unwrap()];
+    assert!((u1h - (-4.0)).abs() < 1e-12);
+    let u3h = w[ex2.output] / w[ex2.carrier.unwrap()];
+    assert!((u3h - (1.0 - 9.0)).abs() < 1e-12 && ((u1h / u3h).abs() - 0.5).abs() < 1e-12);
+    let _ = u3h;
+}
+
+#[test]
+fn a_train_that_is_not_determined_is_refused() {
+    let mut t = reducer(29, 74);
+    t.fixed = None;
+    assert!(matches!(t.willis(), Err(TrainError::Mobility { .. })));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn willis_equals_the_triangles_on_random_james_trains(
+        za in 12u32..60, zg in 12u32..60, z1 in 12u32..50, z2 in 12u32..120
+    ) {
+        // A pair 1–2 into the sun of a James stage, ring fixed, output the carrier.
+        let t = train(
+            &[("A", "1", z1, false), ("B", "2", z2, false), ("B", "a", za, false), ("S", "g", zg, false), ("F", "b", za + 2 * zg, true)],
+            &[("1", "2"), ("a", "g"), ("g", "b")],
+            ("A", "H"),
+            Some("F"),
+            Some("H"),
+            &["S"],
+        );
+        let u = t.ratio().unwrap();
+        let expect = -(f64::from(z2) / f64::from(z1)) * (1.0 + f64::from(za + 2 * zg) / f64::from(za));
+        prop_assert!((u - expect).abs() < 1e-9 * expect.abs());
+        prop_assert!((t.by_stages().unwrap() - u).abs() < 1e-9 * u.abs());
+        let tri = train::triangles(&t, &ctx(0.0)).unwrap();
+        prop_assert!((tri.ratio - u).abs() < 1e-9 * u.abs());
+    }
+}
+
+#[test]
+fn the_teeth_of_the_meshing_picture_touch_at_p_between_their_circles() {
+    use crate::construct::Item;
+    for p in [pz3(), seed000()] {
+        let scale = 0.001;
+        let m = meshing(&p, mu(scale), &ctx(0.0)).unwrap();
+        let pole = DVec2::new(0.0, p.rw[0] / scale);
+        let mut seen = 0;
+        for s in &m.figure.steps {
+            let Item::Polyline { points, .. } = &s.item else {
+                continue;
+            };
+            if !s.note.starts_with("three teeth") {
+                continue;
+            }
+            let i = usize::from(s.note.ends_with('2'));
+            let c = DVec2::new(0.0, if i == 1 { p.a_w / scale } else { 0.0 });
+            for q in points {
+                let rho = (*q - c).length() * scale;
+                assert!(
+                    rho > p.rf[i] * (1.0 - 1e-9) && rho < p.ra[i] * (1.0 + 1e-9),
+                    "{rho}"
+                );
+            }
+            // The flank through P: the drawn outline passes P to its sampling (12 points a piece).
+            let d = points
+                .windows(2)
+                .map(|w| {
+                    let dd = w[1] - w[0];
+                    let t = ((pole - w[0]).dot(dd) / dd.length_squared()).clamp(0.0, 1.0);
+                    (pole - (w[0] + dd * t)).length()
+                })
+                .fold(f64::MAX, f64::min);
+            assert!(d < 0.02, "wheel {}: {d} mm from P", i + 1);
+            seen += 1;
+        }
+        assert_eq!(seen, 2);
+    }
+}

@@ -1,0 +1,608 @@
+//! Gear trains, ordinary and planetary (seed 002 PZ2, seed 000's reducer): shafts carrying
+//! wheels (external or internal), one carrier H whose satellites turn on it, one fixed shaft.
+//!
+//! * analytic twin — Willis: every mesh, seen from the frame of its axes (the carrier's
+//!   frame when a satellite takes part, the ground's otherwise), gives
+//!   z_i(ω_A − ω_ref) ± z_j(ω_B − ω_ref) = 0 (+ external, − internal); with ω_in = 1 and
+//!   ω_fixed = 0 the linear system gives every shaft's ω ([`Train::willis`]);
+//! * formula — the textbook's stage by stage product with u_aH^(f) = 1 − u_af^(H) for the
+//!   planetary stage ([`Train::by_stages`]);
+//! * construction — the velocity triangles (Smirnov / Kutzbach): the axes and the mesh poles
+//!   at their heights at μ_l, the distribution line of each link through two known points
+//!   (its axis, a pole shared with a known link), and the plan of angular velocities: rays
+//!   from a pole at H parallel to the lines, their intercepts ∝ ω ([`triangles`]).
+
+use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::geom::{DVec2, Segment};
+use crate::scale::{Quantity, Scale};
+use thiserror::Error;
+
+/// A wheel of a train.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Wheel {
+    /// Its name (`1`, `2'`).
+    pub name: String,
+    /// Teeth.
+    pub z: u32,
+    /// The shaft it is fixed to (index into [`Train::shafts`]).
+    pub shaft: usize,
+    /// An internal (ring) gear.
+    pub internal: bool,
+}
+
+/// A mesh of two wheels (indices into [`Train::wheels`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Mesh(pub usize, pub usize);
+
+/// A gear train.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Train {
+    /// The shafts (links) by name.
+    pub shafts: Vec<String>,
+    /// The wheels.
+    pub wheels: Vec<Wheel>,
+    /// The meshes.
+    pub meshes: Vec<Mesh>,
+    /// The input shaft.
+    pub input: usize,
+    /// The output shaft.
+    pub output: usize,
+    /// The fixed shaft (the support wheel's), if any.
+    pub fixed: Option<usize>,
+    /// The carrier H, if any.
+    pub carrier: Option<usize>,
+    /// The satellites' shafts (turning on the carrier).
+    pub satellites: Vec<usize>,
+    /// The module of the drawing's radii r = m z/2, m.
+    pub module: f64,
+}
+
+/// Why a train cannot be solved or drawn.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum TrainError {
+    /// The train's mobility is not 1 (too few or too many relations).
+    #[error("train: {equations} relations for {unknowns} shafts: the train's mobility is not 1 (W = 3n − 2p₅ − p₄ must be 1 with one input)")]
+    Mobility {
+        /// Relations (meshes, input, fixed).
+        equations: usize,
+        /// Shafts.
+        unknowns: usize,
+    },
+    /// The relations are dependent.
+    #[error("train: the meshes do not fix every shaft's speed (a link turns freely)")]
+    Singular,
+    /// The output does not turn.
+    #[error("train: the output shaft does not turn")]
+    OutputAtRest,
+    /// A satellite mesh without a carrier.
+    #[error("train: wheel {0} is on a satellite but the train has no carrier")]
+    NoCarrier(String),
+    /// The scheme cannot be laid out.
+    #[error("train: the scheme cannot be laid out: {0}")]
+    Layout(String),
+}
+
+impl Train {
+    /// r = m z/2 of wheel `w`, m.
+    pub fn radius(&self, w: usize) -> f64 {
+        self.module * f64::from(self.wheels[w].z) / 2.0
+    }
+
+    fn is_satellite(&self, shaft: usize) -> bool {
+        self.satellites.contains(&shaft)
+    }
+
+    /// The analytic twin: every shaft's ω for ω_in = 1 (Willis' relations solved together).
+    ///
+    /// # Errors
+    /// [`TrainError::Mobility`], [`TrainError::Singular`], [`TrainError::NoCarrier`].
+    pub fn willis(&self) -> Result<Vec<f64>, TrainError> {
+        let n = self.shafts.len();
+        let mut rows: Vec<(Vec<f64>, f64)> = Vec::new();
+        let unit = |k: usize, v: f64| {
+            let mut r = vec![0.0; n];
+            r[k] = 1.0;
+            (r, v)
+        };
+        rows.push(unit(self.input, 1.0));
+        if let Some(f) = self.fixed {
+            rows.push(unit(f, 0.0));
+        }
+        for m in &self.meshes {
+            let (a, b) = (&self.wheels[m.0], &self.wheels[m.1]);
+            let sign = if a.internal || b.internal { -1.0 } else { 1.0 };
+            let mut r = vec![0.0; n];
+            r[a.shaft] += f64::from(a.z);
+            r[b.shaft] += sign * f64::from(b.z);
+            if self.is_satellite(a.shaft) || self.is_satellite(b.shaft) {
+                let h = self
+                    .carrier
+                    .ok_or_else(|| TrainError::NoCarrier(a.name.clone()))?;
+                r[h] -= f64::from(a.z) + sign * f64::from(b.z);
+            }
+            rows.push((r, 0.0));
+        }
+        if rows.len() != n {
+            return Err(TrainError::Mobility {
+                equations: rows.len(),
+                unknowns: n,
+            });
+        }
+        solve(rows).ok_or(TrainError::Singular)
+    }
+
+    /// u = ω_in/ω_out by Willis.
+    ///
+    /// # Errors
+    /// As [`Train::willis`]; [`TrainError::OutputAtRest`].
+    pub fn ratio(&self) -> Result<f64, TrainError> {
+        let w = self.willis()?;
+        let out = w[self.output];
+        if out.abs() < 1e-300 {
+            return Err(TrainError::OutputAtRest);
+        }
+        Ok(w[self.input] / out)
+    }
+
+    /// The textbook's route, stage by stage from the input: a fixed-axis mesh multiplies by
+    /// −(±)z_driving/z_driven; at a central wheel a of the planetary stage the carrier turns
+    /// at ω_a/u_aH with u_aH^(f) = 1 − u_af^(H), u_af^(H) the product of the mesh ratios from
+    /// a through the satellites to the fixed wheel f with the carrier stopped. `None` when
+    /// the train is not a chain of such stages.
+    pub fn by_stages(&self) -> Option<f64> {
+        let n = self.shafts.len();
+        let mut w: Vec<Option<f64>> = vec![None; n];
+        w[self.input] = Some(1.0);
+        if let Some(f) = self.fixed {
+            w[f] = Some(0.0);
+        }
+        for _ in 0..n + 2 {
+            for m in &self.meshes {
+                for (a, b) in [(m.0, m.1), (m.1, m.0)] {
+                    let (wa, wb) = (&self.wheels[a], &self.wheels[b]);
+                    if self.is_satellite(wa.shaft) || self.is_satellite(wb.shaft) {
+                        continue;
+                    }
+                    if let (Some(v), None) = (w[wa.shaft], w[wb.shaft]) {
+                        let sign = if wa.internal || wb.internal {
+                            1.0
+                        } else {
+                            -1.0
+                        };
+                        w[wb.shaft] = Some(sign * v * f64::from(wa.z) / f64::from(wb.z));
+                    }
+                }
+            }
+            // The planetary stage: from a known central shaft a to the fixed f.
+            if let (Some(h), Some(f)) = (self.carrier, self.fixed) {
+                if w[h].is_none() {
+                    for a in 0..n {
+                        if a == f || a == h || self.is_satellite(a) {
+                            continue;
+                        }
+                        if let (Some(wa), Some(u)) = (w[a], self.stopped_ratio(a, f)) {
+                            // u_af^(H) = (ω_a − ω_H)/(ω_f − ω_H), ω_f = 0.
+                            let u_ah = 1.0 - u;
+                            if u_ah.abs() > 1e-300 {
+                                w[h] = Some(wa / u_ah);
+                            }
+                            break;
+                        }
+                    }
+                }
+            }
+        }
+        let (i, o) = (w[self.input]?, w[self.output]?);
+        (o.abs() > 1e-300).then(|| i / o)
+    }
+
+    /// u_af^(H): with the carrier stopped, ω_a/ω_f through the satellites (every wheel on a
+    /// shaft turns with it); `None` when a does not reach f through satellites.
+    fn stopped_ratio(&self, a: usize, f: usize) -> Option<f64> {
+        // Relative speeds (ω − ω_H), starting with ω_a − ω_H = 1.
+        let n = self.shafts.len();
+        let mut rel: Vec<Option<f64>> = vec![None; n];
+        rel[a] = Some(1.0);
+        for _ in 0..n + 2 {
+            for m in &self.meshes {
+                for (x, y) in [(m.0, m.1), (m.1, m.0)] {
+                    let (wx, wy) = (&self.wheels[x], &self.wheels[y]);
+                    let through = self.is_satellite(wx.shaft) || self.is_satellite(wy.shaft);
+                    if !through {
+                        continue;
+                    }
+                    if let (Some(v), None) = (rel[wx.shaft], rel[wy.shaft]) {
+                        let sign = if wx.internal || wy.internal {
+                            1.0
+                        } else {
+                            -1.0
+                        };
+                        rel[wy.shaft] = Some(sign * v * f64::from(wx.z) / f64::from(wy.z));
+                    }
+                }
+            }
+        }
+        let rf = rel[f]?;
+        (rf.abs() > 1e-300).then(|| 1.0 / rf)
+    }
+
+    /// The inversion table (seed 002 Table 2.1): every shaft's ω before and after the
+    /// carrier is stopped (ω − ω_H), for ω_in = 1.
+    ///
+    /// # Errors
+    /// As [`Train::willis`].
+    pub fn inversion(&self) -> Result<Vec<(String, f64, f64)>, TrainError> {
+        let w = self.willis()?;
+        let wh = self.carrier.map_or(0.0, |h| w[h]);
+        Ok(self
+            .shafts
+            .iter()
+            .zip(&w)
+            .map(|(s, v)| (s.clone(), *v, v - wh))
+            .collect())
+    }
+
+    /// The heights of the axes in the scheme (the input's at 0, each mesh pole above the
+    /// driving wheel's axis, satellites inside rings, the carrier coaxial with the central
+    /// wheels of its satellites), m, and of every mesh pole.
+    ///
+    /// # Errors
+    /// [`TrainError::Layout`] when a shaft cannot be placed or two meshes disagree.
+    pub fn layout(&self) -> Result<(Vec<f64>, Vec<f64>), TrainError> {
+        let n = self.shafts.len();
+        let mut y: Vec<Option<f64>> = vec![None; n];
+        y[self.input] = Some(0.0);
+        for _ in 0..2 * n + 2 {
+            for m in &self.meshes {
+                for (a, b) in [(m.0, m.1), (m.1, m.0)] {
+                    let (wa, wb) = (&self.wheels[a], &self.wheels[b]);
+                    if let (Some(ya), None) = (y[wa.shaft], y[wb.shaft]) {
+                        let pole = ya + self.radius(a);
+                        // A ring's centre lies below the pole, as does a wheel inside a ring.
+                        let yb = if wb.internal || wa.internal {
+                            pole - self.radius(b)
+                        } else {
+                            pole + self.radius(b)
+                        };
+                        y[wb.shaft] = Some(yb);
+                    }
+                }
+            }
+            if let Some(h) = self.carrier {
+                if y[h].is_none() {
+                    // Coaxial with a placed central wheel that meshes a satellite.
+                    for m in &self.meshes {
+                        for (a, b) in [(m.0, m.1), (m.1, m.0)] {
+                            let (sa, sb) = (self.wheels[a].shaft, self.wheels[b].shaft);
+                            if self.is_satellite(sb) && !self.is_satellite(sa) && sa != h {
+                                if let Some(ya) = y[sa] {
+                                    y[h] = Some(ya);
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        let ys: Vec<f64> = y
+            .iter()
+            .enumerate()
+            .map(|(k, v)| {
+                v.ok_or_else(|| {
+                    TrainError::Layout(format!("shaft {} is not connected", self.shafts[k]))
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        // Coaxiality: every central wheel of a satellite turns about the carrier's axis.
+        if let Some(h) = self.carrier {
+            for m in &self.meshes {
+                for (a, b) in [(m.0, m.1), (m.1, m.0)] {
+                    let (sa, sb) = (self.wheels[a].shaft, self.wheels[b].shaft);
+                    if self.is_satellite(sb) && !self.is_satellite(sa) {
+                        let off = (ys[sa] - ys[h]).abs();
+                        if off > 1e-9 * self.module.max(off) {
+                            return Err(TrainError::Layout(format!(
+                                "wheel {} meshes a satellite but its axis is {} mm off the carrier's (the coaxiality condition fails)",
+                                self.wheels[a].name,
+                                off * 1e3
+                            )));
+                        }
+                    }
+                }
+            }
+        }
+        let mut poles = Vec::new();
+        for m in &self.meshes {
+            let (wa, wb) = (&self.wheels[m.0], &self.wheels[m.1]);
+            let (ya, yb) = (ys[wa.shaft], ys[wb.shaft]);
+            let (ra, rb) = (self.radius(m.0), self.radius(m.1));
+            let pole = [ya + ra, ya - ra]
+                .into_iter()
+                .find(|p| ((p - yb).abs() - rb).abs() <= 1e-9 * (ra + rb))
+                .ok_or_else(|| {
+                    TrainError::Layout(format!(
+                        "wheels {} and {} are not coaxial with the rest (their axes are {} mm apart, their radii {} and {} mm)",
+                        wa.name,
+                        wb.name,
+                        (ya - yb).abs() * 1e3,
+                        ra * 1e3,
+                        rb * 1e3
+                    ))
+                })?;
+            poles.push(pole);
+        }
+        Ok((ys, poles))
+    }
+}
+
+/// Gaussian elimination with partial pivoting; `None` when singular.
+fn solve(mut rows: Vec<(Vec<f64>, f64)>) -> Option<Vec<f64>> {
+    let n = rows.len();
+    let big = rows
+        .iter()
+        .flat_map(|r| r.0.iter())
+        .fold(0.0_f64, |a, v| a.max(v.abs()));
+    for c in 0..n {
+        let p = (c..n).max_by(|&i, &j| rows[i].0[c].abs().total_cmp(&rows[j].0[c].abs()))?;
+        if rows[p].0[c].abs() <= 1e-12 * big {
+            return None;
+        }
+        rows.swap(c, p);
+        let (pivot, rhs) = (rows[c].0.clone(), rows[c].1);
+        for r in rows.iter_mut().skip(c + 1) {
+            let f = r.0[c] / pivot[c];
+            for (x, p) in r.0.iter_mut().zip(&pivot).skip(c) {
+                *x -= f * p;
+            }
+            r.1 -= f * rhs;
+        }
+    }
+    let mut x = vec![0.0; n];
+    for c in (0..n).rev() {
+        let s: f64 = (c + 1..n).map(|k| rows[c].0[k] * x[k]).sum();
+        x[c] = (rows[c].1 - s) / rows[c].0[c];
+    }
+    Some(x)
+}
+
+/// The velocity triangles and the plan of angular velocities, and what was read off them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Triangles {
+    /// μ_l of the heights.
+    pub scale_l: Scale,
+    /// μ_v of the velocities.
+    pub scale_v: Scale,
+    /// The picture of linear velocities (and the plan of angular velocities beside it).
+    pub figure: Figure,
+    /// ω of every shaft read off the plan, for ω_in = 1 (intercepts as read × μ_v/(μ_l H)).
+    pub omega: Vec<f64>,
+    /// u = ω_in/ω_out as read (the intercepts' ratio).
+    pub ratio: f64,
+}
+
+/// The pole distance of the plan of angular velocities, mm.
+pub const PLAN_H: f64 = 40.0;
+
+/// Construct the velocity triangles of `train` for ω_in = 1 rad/s in `ctx`.
+///
+/// # Errors
+/// [`TrainError::Layout`] when the scheme cannot be laid out or a link's line is not fixed.
+pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> {
+    let (ys, poles) = train.layout()?;
+    let lo = ys
+        .iter()
+        .chain(&poles)
+        .fold(f64::INFINITY, |a, v| a.min(*v));
+    let hi = ys
+        .iter()
+        .chain(&poles)
+        .fold(f64::NEG_INFINITY, |a, v| a.max(*v));
+    let span = (hi - lo).max(train.module);
+    let bad = |s: &str| TrainError::Layout(s.to_string());
+    let mu_l = Scale::round_for(span, 200.0, Quantity::Length).ok_or_else(|| bad("μ_l"))?;
+    let n = train.shafts.len();
+    // The input's pole: the first mesh of the input shaft.
+    let (first, _) = train
+        .meshes
+        .iter()
+        .enumerate()
+        .find(|(_, m)| {
+            train.wheels[m.0].shaft == train.input || train.wheels[m.1].shaft == train.input
+        })
+        .ok_or_else(|| bad("the input meshes nothing"))?;
+    let v_in = (poles[first] - ys[train.input]).abs().max(train.module);
+    let mu_v = Scale::round_for(v_in, 60.0, Quantity::Velocity).ok_or_else(|| bad("μ_v"))?;
+    let mut rec = Recorder::in_context("velocity triangles", mu_v, ctx);
+    let (ml, mv) = (mu_l.value(), mu_v.value());
+    let yy = |y: f64| (y - lo) / ml;
+    // The axis of heights.
+    rec.draw(
+        "the axis of heights",
+        Item::Segment(Segment::new(
+            DVec2::new(0.0, -5.0),
+            DVec2::new(0.0, yy(hi) + 5.0),
+        )),
+        Role::Axis,
+        &[],
+    );
+    // Each link's distribution line as two drawn points (x = v/μ_v, y = height/μ_l).
+    let mut lines: Vec<Option<(DVec2, DVec2)>> = vec![None; n];
+    let at = |l: &(DVec2, DVec2), y: f64| -> f64 {
+        let (a, b) = *l;
+        a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y)
+    };
+    if let Some(f) = train.fixed {
+        lines[f] = Some((DVec2::new(0.0, yy(ys[f])), DVec2::new(0.0, yy(ys[f]) + 1.0)));
+    }
+    // Given: the input's pole velocity ω_in·r.
+    let pin = poles[first];
+    lines[train.input] = Some((
+        DVec2::new(0.0, yy(ys[train.input])),
+        DVec2::new((pin - ys[train.input]) / mv, yy(pin)),
+    ));
+    for _ in 0..2 * n + 2 {
+        for k in 0..n {
+            if lines[k].is_some() {
+                continue;
+            }
+            let mut pts: Vec<DVec2> = Vec::new();
+            let sat = train.is_satellite(k);
+            if !sat {
+                pts.push(DVec2::new(0.0, yy(ys[k])));
+            }
+            for (mi, m) in train.meshes.iter().enumerate() {
+                for (a, b) in [(m.0, m.1), (m.1, m.0)] {
+                    if train.wheels[a].shaft == k {
+                        if let Some(l) = &lines[train.wheels[b].shaft] {
+                            pts.push(DVec2::new(at(l, yy(poles[mi])), yy(poles[mi])));
+                        }
+                    }
+                }
+            }
+            if let Some(h) = train.carrier {
+                if sat {
+                    if let Some(l) = &lines[h] {
+                        pts.push(DVec2::new(at(l, yy(ys[k])), yy(ys[k])));
+                    }
+                } else if k == h {
+                    for &s in &train.satellites {
+                        if let Some(l) = &lines[s] {
+                            pts.push(DVec2::new(at(l, yy(ys[s])), yy(ys[s])));
+                        }
+                    }
+                }
+            }
+            // Two points at distinct heights fix the line.
+            if let Some(p0) = pts.first().copied() {
+                if let Some(p1) = pts.iter().copied().find(|p| (p.y - p0.y).abs() > 1e-9) {
+                    lines[k] = Some((p0, p1));
+                }
+            }
+        }
+    }
+    let mut omega = vec![0.0; n];
+    let y_ref = yy(hi) + 10.0 + PLAN_H;
+    let pole = DVec2::new(0.0, y_ref - PLAN_H);
+    rec.draw(
+        "the line of the plan of ω",
+        Item::Segment(Segment::new(
+            DVec2::new(-60.0, y_ref),
+            DVec2::new(60.0, y_ref),
+        )),
+        Role::Construction,
+        &[],
+    );
+    rec.point(
+        "the pole of the plan of ω",
+        pole,
+        Role::Given,
+        "p_ω",
+        DVec2::new(-1.0, -0.5),
+        &[],
+    );
+    // The heights: every axis and mesh pole, marked on the axis of heights.
+    for (k, y) in ys.iter().enumerate() {
+        let id = rec.draw(
+            format!("the axis of {}", train.shafts[k]),
+            Item::Segment(Segment::new(
+                DVec2::new(-3.0, yy(*y)),
+                DVec2::new(3.0, yy(*y)),
+            )),
+            Role::Construction,
+            &[],
+        );
+        let _ = id;
+    }
+    for (k, (a, b)) in lines
+        .iter()
+        .enumerate()
+        .filter_map(|(k, l)| l.map(|l| (k, l)))
+    {
+        // The link's own points: its axis and its poles; its line drawn between them.
+        let mut hs = vec![yy(ys[k])];
+        for (mi, m) in train.meshes.iter().enumerate() {
+            if train.wheels[m.0].shaft == k || train.wheels[m.1].shaft == k {
+                hs.push(yy(poles[mi]));
+                let tip = DVec2::new(at(&(a, b), yy(poles[mi])), yy(poles[mi]));
+                if tip.x.abs() > 1e-9 {
+                    rec.draw(
+                        "the velocity of the pole",
+                        Item::Vector {
+                            from: DVec2::new(0.0, tip.y),
+                            to: tip,
+                        },
+                        Role::Result,
+                        &[],
+                    );
+                }
+            }
+        }
+        if train.carrier == Some(k) {
+            hs.extend(train.satellites.iter().map(|s| yy(ys[*s])));
+        }
+        let (ylo, yhi) = hs
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| {
+                (l.min(*v), h.max(*v))
+            });
+        let (pa, pb) = (
+            DVec2::new(at(&(a, b), ylo), ylo),
+            DVec2::new(at(&(a, b), yhi), yhi),
+        );
+        let id = rec.draw(
+            format!("the distribution line of {}", train.shafts[k]),
+            Item::Segment(Segment::new(pa, pb)),
+            Role::Result,
+            &[],
+        );
+        let top = if pb.x.abs() >= pa.x.abs() { pb } else { pa };
+        rec.label(id, &train.shafts[k], top, DVec2::new(top.x.signum(), 0.3));
+        // The ray of the plan parallel to it, to the line of the plan.
+        let slope = (b.x - a.x) / (b.y - a.y);
+        let hit = DVec2::new(slope * PLAN_H, y_ref);
+        let ray = rec.draw(
+            format!("the ray of ω of {}", train.shafts[k]),
+            Item::Segment(Segment::new(pole, hit)),
+            Role::Construction,
+            &[],
+        );
+        let _ = ray;
+        let read = rec.measure(DVec2::new(0.0, y_ref), hit);
+        // ω = (intercept μ_v)/(H μ_l), signed by the side.
+        omega[k] = hit.x.signum() * read.read_mm * mv / (PLAN_H * ml);
+    }
+    if let Some(k) = lines.iter().position(Option::is_none) {
+        return Err(TrainError::Layout(format!(
+            "the velocities of shaft {} cannot be drawn",
+            train.shafts[k]
+        )));
+    }
+    let (wi, wo) = (omega[train.input], omega[train.output]);
+    if wo.abs() < 1e-300 {
+        return Err(TrainError::OutputAtRest);
+    }
+    Ok(Triangles {
+        scale_l: mu_l,
+        scale_v: mu_v,
+        figure: rec.finish(),
+        omega,
+        ratio: wi / wo,
+    })
+}
+
+/// The best tooth numbers (z₁, z₂) of a pair for the ratio `u` (z₂/z₁ > 0), z₁ from `z1_min`
+/// to `z1_max`, by the relative error of z₂/z₁: the `count` best.
+pub fn best_pairs(u: f64, z1_min: u32, z1_max: u32, count: usize) -> Vec<(u32, u32, f64)> {
+    let mut all: Vec<(u32, u32, f64)> = (z1_min..=z1_max)
+        .filter_map(|z1| {
+            let z2 = (f64::from(z1) * u).round();
+            (1.0..1e6).contains(&z2).then(|| {
+                let z2 = z2 as u32;
+                (z1, z2, (f64::from(z2) / f64::from(z1) - u) / u)
+            })
+        })
+        .collect();
+    all.sort_by(|a, b| a.2.abs().total_cmp(&b.2.abs()).then(a.0.cmp(&b.0)));
+    all.truncate(count);
+    all
+}

@@ -1,0 +1,513 @@
+//! `[gears]` → [`GearsSpec`]: the module (mm), the basic rack, the pair (`[gears.pair]`: tooth
+//! numbers, shifts or a centre distance) and the wheels cut by the rack (`[[gears.rack]]`),
+//! each checked with its key path and converted to SI. A pair that cannot work (interference,
+//! a pointed tooth, ε_α < 1, an infeasible centre distance) and a wheel whose tooth is
+//! pointed before its tip are refused with the key that makes them so.
+
+use super::check::{item, join, number, Checker};
+use crate::gears::train::Wheel;
+use crate::gears::{
+    BasicRack, Cutting, GearError, GearsSpec, Mesh, Pair, PairSpec, PlanetarySpec, RackSpec, Train,
+    DEFAULT_POSITIONS,
+};
+use crate::scale::Quantity;
+use serde::Deserialize;
+
+/// The key path of the section.
+const GEARS: &str = "gears";
+/// The most rack positions a scene may ask for.
+const MAX_POSITIONS: i64 = 5000;
+
+/// `[gears]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawGears {
+    pub module: Option<f64>,
+    pub alpha: Option<f64>,
+    pub ha: Option<f64>,
+    pub c: Option<f64>,
+    pub rho_f: Option<f64>,
+    pub scale_l: Option<f64>,
+    pub pair: Option<RawPair>,
+    #[serde(default)]
+    pub rack: Vec<RawRack>,
+}
+
+/// `[gears.pair]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPair {
+    pub z: Option<Vec<i64>>,
+    pub x: Option<Vec<f64>>,
+    pub dy: Option<f64>,
+    pub centre_distance: Option<f64>,
+}
+
+/// `[[gears.rack]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawRack {
+    pub name: Option<String>,
+    pub z: Option<i64>,
+    pub x: Option<f64>,
+    pub module: Option<f64>,
+    pub positions: Option<i64>,
+    pub scale_l: Option<f64>,
+}
+
+/// `[planetary]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPlanetary {
+    pub module: Option<f64>,
+    pub input: Option<String>,
+    pub output: Option<String>,
+    pub fixed: Option<String>,
+    pub carrier: Option<String>,
+    #[serde(default)]
+    pub satellites: Vec<String>,
+    pub n_input: Option<f64>,
+    pub n_output: Option<f64>,
+    pub count: Option<i64>,
+    #[serde(default)]
+    pub wheel: Vec<RawWheel>,
+    #[serde(default)]
+    pub mesh: Vec<RawMesh>,
+}
+
+/// `[[planetary.wheel]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawWheel {
+    pub name: Option<String>,
+    pub z: Option<i64>,
+    pub shaft: Option<String>,
+    pub internal: Option<bool>,
+}
+
+/// `[[planetary.mesh]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawMesh {
+    pub wheels: Option<Vec<String>>,
+}
+
+/// Validate `[planetary]`: wheels on named shafts, meshes by wheel names, the input, output,
+/// fixed shaft, carrier and satellites by shaft name; the train must have mobility 1 and be
+/// drawable (coaxial).
+pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<PlanetarySpec> {
+    const P: &str = "planetary";
+    let key = |k: &str| join(P, k);
+    let before = check.problems.len();
+    let module = raw.module.map_or(0.001, |m| {
+        check.in_range(&key("module"), m, 1000.0, "a module > 0 mm") * 1e-3
+    });
+    let mut shafts: Vec<String> = Vec::new();
+    let mut wheels = Vec::new();
+    if raw.wheel.is_empty() {
+        check.push(
+            key("wheel"),
+            None,
+            "missing: expected [[planetary.wheel]] (name, z, shaft)",
+        );
+    }
+    for (i, w) in raw.wheel.iter().enumerate() {
+        let base = item(&key("wheel"), i);
+        let k = |s: &str| join(&base, s);
+        let name = check.name(&k("name"), w.name.as_ref());
+        if wheels.iter().any(|x: &Wheel| x.name == name) {
+            check.push(
+                k("name"),
+                Some(format!("{name:?}")),
+                "expected a wheel name unique in the train",
+            );
+        }
+        let z = match check.required(&k("z"), w.z, "a tooth number") {
+            Some(z) => teeth(check, &k("z"), z),
+            None => 5,
+        };
+        let shaft = check.name(&k("shaft"), w.shaft.as_ref());
+        let idx = shafts.iter().position(|s| *s == shaft).unwrap_or_else(|| {
+            shafts.push(shaft.clone());
+            shafts.len() - 1
+        });
+        wheels.push(Wheel {
+            name,
+            z,
+            shaft: idx,
+            internal: w.internal.unwrap_or(false),
+        });
+    }
+    let mut meshes = Vec::new();
+    for (i, m) in raw.mesh.iter().enumerate() {
+        let k = join(&item(&key("mesh"), i), "wheels");
+        match m.wheels.as_deref() {
+            Some([a, b]) => {
+                let find = |n: &str| wheels.iter().position(|w: &Wheel| w.name == n);
+                match (find(a), find(b)) {
+                    (Some(x), Some(y)) if x != y && !(wheels[x].internal && wheels[y].internal) => {
+                        meshes.push(Mesh(x, y))
+                    }
+                    _ => check.push(
+                        &k,
+                        Some(format!("{:?}", [a, b])),
+                        "expected two different wheels of [[planetary.wheel]], not both internal",
+                    ),
+                }
+            }
+            other => check.push(
+                &k,
+                other.map(|v| format!("{v:?}")),
+                "expected two wheel names [a, b]",
+            ),
+        }
+    }
+    let mut shaft_of =
+        |check: &mut Checker, k: &str, v: Option<&String>, add: bool| -> Option<usize> {
+            let v = v?;
+            match shafts.iter().position(|s| s == v) {
+                Some(i) => Some(i),
+                None if add => {
+                    shafts.push(v.clone());
+                    Some(shafts.len() - 1)
+                }
+                None => {
+                    check.push(
+                        k,
+                        Some(format!("{v:?}")),
+                        "expected the shaft of a [[planetary.wheel]]",
+                    );
+                    None
+                }
+            }
+        };
+    let carrier = shaft_of(check, &key("carrier"), raw.carrier.as_ref(), true);
+    let input = shaft_of(check, &key("input"), raw.input.as_ref(), true);
+    let output = shaft_of(check, &key("output"), raw.output.as_ref(), true);
+    let fixed = shaft_of(check, &key("fixed"), raw.fixed.as_ref(), false);
+    let satellites: Vec<usize> = raw
+        .satellites
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| shaft_of(check, &item(&key("satellites"), i), Some(s), false))
+        .collect();
+    for (k, v) in [("input", input), ("output", output)] {
+        if v.is_none() {
+            check.push(key(k), None, "missing: expected a shaft name");
+        }
+    }
+    let n_input = raw
+        .n_input
+        .map(|n| check.bounded(&key("n_input"), n, 1e6, "a speed in rpm within ±1e6"));
+    let n_output = check.positive_opt(
+        &key("n_output"),
+        raw.n_output,
+        "a required output speed > 0 rpm",
+    );
+    let count = raw.count.and_then(|c| match u32::try_from(c) {
+        Ok(k) if (1..=12).contains(&k) => Some(k),
+        _ => {
+            check.push(
+                key("count"),
+                Some(c.to_string()),
+                "expected 1 to 12 satellites",
+            );
+            None
+        }
+    });
+    let (Some(input), Some(output)) = (input, output) else {
+        return None;
+    };
+    if check.problems.len() != before {
+        return None;
+    }
+    let train = Train {
+        shafts,
+        wheels,
+        meshes,
+        input,
+        output,
+        fixed,
+        carrier,
+        satellites,
+        module,
+    };
+    if let Err(e) = train.ratio().and_then(|_| train.layout()) {
+        check.push(
+            key("mesh"),
+            None,
+            format!("a train of mobility 1 that can be drawn: {e}"),
+        );
+        return None;
+    }
+    Some(PlanetarySpec {
+        train,
+        n_input,
+        n_output,
+        satellites: count,
+    })
+}
+
+/// A tooth number (5 … 1000).
+fn teeth(check: &mut Checker, key: &str, v: i64) -> u32 {
+    match u32::try_from(v) {
+        Ok(z) if (5..=1000).contains(&z) => z,
+        _ => {
+            check.push(
+                key,
+                Some(v.to_string()),
+                "expected a tooth number from 5 to 1000",
+            );
+            5
+        }
+    }
+}
+
+/// A shift coefficient within ±3.
+fn shift(check: &mut Checker, key: &str, v: f64) -> f64 {
+    check.bounded(key, v, 3.0, "a shift coefficient within ±3")
+}
+
+/// Validate `[gears]` and `[planetary]` (either may be absent).
+pub(crate) fn gear_sections(
+    check: &mut Checker,
+    raw: Option<&RawGears>,
+    train: Option<&RawPlanetary>,
+) -> Option<GearsSpec> {
+    let before = check.problems.len();
+    let planetary = train.and_then(|t| planetary(check, t));
+    let mut spec = match raw {
+        Some(g) => gears(check, g)?,
+        None => GearsSpec {
+            pair: None,
+            scale_l: None,
+            racks: Vec::new(),
+            planetary: None,
+        },
+    };
+    spec.planetary = planetary;
+    (check.problems.len() == before && (raw.is_some() || train.is_some())).then_some(spec)
+}
+
+/// Validate `[gears]`.
+fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
+    let key = |k: &str| join(GEARS, k);
+    let before = check.problems.len();
+    let module = raw.module.map(|m| {
+        check.in_range(&key("module"), m, 1000.0, "a module > 0 mm (at most 1000)") * 1e-3
+    });
+    let g = BasicRack::GOST_13755;
+    let rack = BasicRack {
+        alpha: raw
+            .alpha
+            .map_or(g.alpha, |a| check.angle(&key("alpha"), Some(a), 20.0)),
+        ha: raw.ha.unwrap_or(g.ha),
+        c: raw.c.unwrap_or(g.c),
+        rho: raw.rho_f.unwrap_or(g.rho),
+    };
+    if let Err(GearError::Rack {
+        what,
+        value,
+        expected,
+    }) = rack.validate()
+    {
+        check.push(
+            key(what),
+            Some(number(value)),
+            format!("expected {expected}"),
+        );
+    }
+    let scale_l = check.scale(
+        &key("scale_l"),
+        raw.scale_l,
+        Quantity::Length,
+        "a scale μ_l > 0 m/mm",
+    );
+    if raw.pair.is_none() && raw.rack.is_empty() {
+        check.push(
+            GEARS,
+            None,
+            "expected a [gears.pair] or at least one [[gears.rack]]",
+        );
+    }
+    let pair = raw.pair.as_ref().and_then(|p| pair(check, p, module, rack));
+    let mut names: Vec<String> = Vec::new();
+    let mut racks = Vec::new();
+    for (i, r) in raw.rack.iter().enumerate() {
+        let base = item(&key("rack"), i);
+        let k = |s: &str| join(&base, s);
+        let name = r.name.clone().unwrap_or_else(|| (i + 1).to_string());
+        if name.trim().is_empty() || names.contains(&name) {
+            check.push(
+                k("name"),
+                Some(format!("{name:?}")),
+                "expected a non-empty name unique among [[gears.rack]]",
+            );
+        }
+        names.push(name.clone());
+        let m = match r.module {
+            Some(v) => Some(
+                check.in_range(&k("module"), v, 1000.0, "a module > 0 mm (at most 1000)") * 1e-3,
+            ),
+            None => module,
+        };
+        if m.is_none() {
+            check.push(
+                k("module"),
+                None,
+                "missing: expected the module in mm here or in [gears]",
+            );
+        }
+        let z = match check.required(&k("z"), r.z, "a tooth number") {
+            Some(z) => teeth(check, &k("z"), z),
+            None => 5,
+        };
+        let x = shift(check, &k("x"), r.x.unwrap_or(0.0));
+        let positions = match r.positions {
+            None => DEFAULT_POSITIONS,
+            Some(n) if (2..=MAX_POSITIONS).contains(&n) => {
+                usize::try_from(n).unwrap_or(DEFAULT_POSITIONS)
+            }
+            Some(n) => {
+                check.push(
+                    k("positions"),
+                    Some(n.to_string()),
+                    format!("expected 2 to {MAX_POSITIONS} rack positions"),
+                );
+                DEFAULT_POSITIONS
+            }
+        };
+        let scale = check.scale(
+            &k("scale_l"),
+            r.scale_l,
+            Quantity::Length,
+            "a scale μ_l > 0 m/mm",
+        );
+        let Some(m) = m.filter(|m| *m > 0.0) else {
+            continue;
+        };
+        match Cutting::alone(m, z, x, rack) {
+            Ok(c) if c.sa() <= 0.0 => check.push(
+                k("x"),
+                Some(number(x)),
+                format!(
+                    "a shift that leaves a tip: with x = {x} the flanks of the {z}-tooth wheel meet below its tip circle (s_a = {:.4} mm); the feasible range ends at s_a = 0.3m",
+                    c.sa() * 1e3
+                ),
+            ),
+            Ok(c) => racks.push(RackSpec { name, cutting: c, positions, scale_l: scale }),
+            Err(e) => check.push(k("x"), Some(number(x)), format!("a wheel that can be cut: {e}")),
+        }
+    }
+    (check.problems.len() == before).then_some(GearsSpec {
+        pair,
+        scale_l,
+        racks,
+        planetary: None,
+    })
+}
+
+/// `[gears.pair]`: z = [z₁, z₂], x = [x₁, x₂] (or x = [x₁] with `centre_distance`, mm), the
+/// table's Δy; the pair is refused when it cannot work.
+fn pair(
+    check: &mut Checker,
+    raw: &RawPair,
+    module: Option<f64>,
+    rack: BasicRack,
+) -> Option<PairSpec> {
+    let key = |k: &str| join(&join(GEARS, "pair"), k);
+    let before = check.problems.len();
+    let Some(m) = module else {
+        check.push(
+            join(GEARS, "module"),
+            None,
+            "missing: expected the module in mm",
+        );
+        return None;
+    };
+    let z = match check.required(&key("z"), raw.z.as_ref(), "two tooth numbers [z1, z2]") {
+        Some(v) if v.len() == 2 => [
+            teeth(check, &item(&key("z"), 0), v[0]),
+            teeth(check, &item(&key("z"), 1), v[1]),
+        ],
+        Some(v) => {
+            check.push(
+                key("z"),
+                Some(format!("{v:?}")),
+                "expected two tooth numbers [z1, z2]",
+            );
+            [5, 5]
+        }
+        None => [5, 5],
+    };
+    let xs = raw.x.clone().unwrap_or_else(|| vec![0.0, 0.0]);
+    let want = if raw.centre_distance.is_some() { 1 } else { 2 };
+    if xs.len() != want {
+        let expected = if want == 1 {
+            "one shift [x1]: with `centre_distance` x2 follows from it"
+        } else {
+            "two shift coefficients [x1, x2]"
+        };
+        check.push(
+            key("x"),
+            Some(format!("{xs:?}")),
+            format!("expected {expected}"),
+        );
+    }
+    let x1 = shift(
+        check,
+        &item(&key("x"), 0),
+        xs.first().copied().unwrap_or(0.0),
+    );
+    let x2 = shift(
+        check,
+        &item(&key("x"), 1),
+        xs.get(1).copied().unwrap_or(0.0),
+    );
+    let dy = raw
+        .dy
+        .map(|d| check.bounded(&key("dy"), d, 3.0, "an equalising shift Δy within ±3"));
+    if check.problems.len() != before || m <= 0.0 {
+        return None;
+    }
+    let mut spec = PairSpec {
+        module: m,
+        z,
+        x: [x1, x2],
+        rack,
+        dy_table: dy,
+    };
+    if let Some(a) = raw.centre_distance {
+        match spec.x2_for_centre_distance(a * 1e-3) {
+            Ok(x2) => spec.x[1] = x2,
+            Err(e) => {
+                check.push(
+                    key("centre_distance"),
+                    Some(number(a)),
+                    format!("a feasible centre distance: {e}"),
+                );
+                return None;
+            }
+        }
+    }
+    match Pair::working(spec) {
+        Ok(_) => Some(spec),
+        Err(e) => {
+            let k = match e {
+                GearError::Pointed { wheel, .. } => item(&key("x"), wheel - 1),
+                GearError::Interference { .. }
+                | GearError::ContactRatio { .. }
+                | GearError::Clearance { .. } => key("x"),
+                GearError::InvoluteDomain { .. } => key("x"),
+                _ => key("z"),
+            };
+            let value = if raw.centre_distance.is_some() {
+                format!("{:?} (x2 = {:.4} from the centre distance)", xs, spec.x[1])
+            } else {
+                format!("{xs:?}")
+            };
+            check.push(k, Some(value), format!("a pair that can work: {e}"));
+            None
+        }
+    }
+}

@@ -1,0 +1,199 @@
+//! Gears end to end: the seed-000 pair, PZ3's pair, the rack-cut pinions and the reducer
+//! through `tmm report` (exact and at the drafting of a hand construction), the seeds'
+//! errata flagged and not matched, and bad `[gears]` / `[planetary]` sections refused with
+//! their key paths.
+
+mod support;
+use support::{scratch, tmm};
+
+fn report_json(scene: &str, drafting: &str) -> serde_json::Value {
+    let o = tmm(&["report", scene, "--format", "json", "--drafting", drafting]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).expect("report JSON")
+}
+
+fn rows<'a>(v: &'a serde_json::Value, q: &str, method: &str) -> Vec<&'a serde_json::Value> {
+    v["rows"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .filter(|r| r["quantity"] == q && r["method"] == method)
+        .collect()
+}
+
+fn row<'a>(v: &'a serde_json::Value, q: &str, method: &str) -> &'a serde_json::Value {
+    rows(v, q, method)
+        .first()
+        .copied()
+        .unwrap_or_else(|| panic!("no row {q} ({method})"))
+}
+
+fn num(r: &serde_json::Value, field: &str) -> f64 {
+    r[field]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{field} of {r}"))
+}
+
+fn notes(v: &serde_json::Value) -> String {
+    v["notes"]
+        .as_array()
+        .expect("notes")
+        .iter()
+        .filter_map(|n| n.as_str())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+#[test]
+fn seed000_pair_rack_and_reducer_in_the_report() {
+    let v = report_json("constructions/gears-seed000.toml", "0");
+    let aw = row(&v, "alpha_w", "formula");
+    assert!(aw["position"].is_null());
+    assert!((num(aw, "analytic") / 26.58075 - 1.0).abs() < 1e-6);
+    assert!((num(row(&v, "a_w", "formula"), "analytic") - 0.316276).abs() < 5e-7);
+    let eps = num(row(&v, "eps_alpha", "formula"), "analytic");
+    assert!((eps - 1.1550).abs() <= 5e-4, "{eps}");
+    let mesh = row(&v, "eps_alpha", "meshing");
+    assert!((num(mesh, "graphical") - eps).abs() < 1e-9);
+    assert!((num(row(&v, "x_min", "formula"), "analytic") - 0.2396).abs() < 5e-5);
+    assert!(num(row(&v, "envelope_deviation", "envelope"), "graphical") > 0.0);
+    assert!(rows(&v, "s_a1", "envelope").len() == 1 && rows(&v, "s_a1", "formula").len() == 1);
+    // λ at B₁, P, B₂ by position.
+    let l1 = rows(&v, "lambda_1", "meshing");
+    assert_eq!(l1.len(), 3);
+    let at_b1 = l1.iter().find(|r| r["position"] == "B1").expect("λ₁ at B₁");
+    assert!((num(at_b1, "analytic") + 0.8239).abs() < 5e-4);
+    // The reducer: Willis, the stages and the triangles agree to 1e-9.
+    let u = num(row(&v, "u_1_8", "triangles"), "analytic");
+    assert!((u.abs() - 9.308).abs() < 5e-4, "{u}");
+    assert!((num(row(&v, "u_1_8", "triangles"), "graphical") - u).abs() < 1e-9 * u.abs());
+    assert!((num(row(&v, "u_1_8", "formula"), "graphical") - u).abs() < 1e-9 * u.abs());
+    let n = notes(&v);
+    assert!(n.contains("ε_α = B₁B₂/(πm·cos α_w) = 1.214"), "{n}");
+    assert!(n.contains("87/34") && n.contains("149.988"), "{n}");
+    assert!(n.contains("undercut shown on the drawing"), "{n}");
+}
+
+#[test]
+fn the_meshing_picture_read_at_half_a_millimetre() {
+    let v = report_json("constructions/gears-seed000.toml", "0.5");
+    let r = row(&v, "eps_alpha", "meshing");
+    let (g, a) = (num(r, "graphical"), num(r, "analytic"));
+    // B₁B₂ read to 0.5 mm at μ_l = 0.002 m/mm over p_b = 41.33 mm.
+    assert!((g - a).abs() <= 0.25 * 0.002 / 0.0413298 + 1e-12, "{g} {a}");
+    assert!(g != a);
+}
+
+#[test]
+fn pz3_pair_exact_and_its_errata() {
+    let v = report_json("constructions/gears-pz3.toml", "0");
+    let aw = num(row(&v, "a_w", "formula"), "analytic");
+    assert!((aw - 0.17918).abs() < 5e-6, "{aw}");
+    let eps = num(row(&v, "eps_alpha", "formula"), "analytic");
+    assert!((eps - 1.1637).abs() < 5e-5, "{eps}");
+    assert!((aw - 0.18079).abs() > 1e-3 && (eps - 1.14).abs() > 0.02);
+    let n = notes(&v);
+    assert!(
+        n.contains("180.79") && n.contains("14.13") && n.contains("1.14"),
+        "{n}"
+    );
+    // The table's Δy against the exact: r_a differs by 2.6 µm, flagged in the rows.
+    let ra = row(&v, "r_a1", "formula");
+    assert!((num(ra, "graphical") - num(ra, "analytic")).abs() > 1e-6);
+}
+
+#[test]
+fn pz1_zero_wheel_is_undercut_and_the_shifted_one_pointed() {
+    let v = report_json("constructions/gears-pz1.toml", "0");
+    let n = notes(&v);
+    assert!(
+        n.contains("wheel 0 (z = 10, x = 0) cut by the rack in 90 steps: undercut shown"),
+        "{n}"
+    );
+    assert!(
+        n.contains("wheel p") && n.contains("pointed (s_a < 0.3m)"),
+        "{n}"
+    );
+    assert!(
+        n.contains("(empty: no shift avoids both undercut and pointing)"),
+        "{n}"
+    );
+    let x = num(row(&v, "x_min_0", "formula"), "analytic");
+    assert!((x - (1.0 - 5.0 * 20f64.to_radians().sin().powi(2))).abs() < 1e-12);
+}
+
+#[test]
+fn pz2_example3_by_willis_and_triangles() {
+    let v = report_json("constructions/gears-pz2.toml", "0");
+    let r = row(&v, "u_1_H", "triangles");
+    assert!((num(r, "analytic") - 20.0).abs() < 1e-12);
+    assert!((num(r, "graphical") - 20.0).abs() < 1e-9 * 20.0);
+}
+
+/// Write a scene file and run `tmm` on it.
+fn run_scene(name: &str, text: &str, args: &[&str]) -> (bool, i32, String) {
+    let dir = scratch(name);
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(&path, text).expect("write scene");
+    let p = path.to_str().expect("utf-8 path");
+    let mut all: Vec<&str> = args.to_vec();
+    all.push(p);
+    let o = tmm(&all);
+    (
+        o.status.success(),
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn bad_gear_sections_name_their_keys() {
+    let cases: &[(&str, &[&str])] = &[
+        // Interference: zero shifts on 13/21 teeth, the wheel's tip passes N₁.
+        (
+            "[gears]\nmodule = 10.0\n[gears.pair]\nz = [13, 21]\nx = [0.0, 0.0]\n",
+            &["gears.pair.x = [0.0, 0.0]", "interference"],
+        ),
+        // A pointed pinion.
+        (
+            "[gears]\nmodule = 10.0\n[gears.pair]\nz = [13, 21]\nx = [1.6, 0.0]\n",
+            &["gears.pair.x[0]", "pointed"],
+        ),
+        // An infeasible centre distance: below r_b1 + r_b2.
+        (
+            "[gears]\nmodule = 10.0\n[gears.pair]\nz = [13, 21]\nx = [0.5]\ncentre_distance = 150.0\n",
+            &["gears.pair.centre_distance = 150", "infeasible"],
+        ),
+        // A rack-cut wheel whose flanks meet below its tip.
+        (
+            "[gears]\nmodule = 10.0\n[[gears.rack]]\nz = 10\nx = 0.9\n",
+            &["gears.rack[0].x = 0.9", "meet below its tip circle"],
+        ),
+        (
+            "[gears]\nmodule = -1.0\nrho_f = 0.9\n[[gears.rack]]\nz = 3\npositions = 1\n",
+            &["gears.module = -1", "gears.rho_f", "gears.rack[0].z = 3", "gears.rack[0].positions = 1"],
+        ),
+        (
+            "[gears]\nmodule = 2.0\n",
+            &["expected a [gears.pair] or at least one [[gears.rack]]"],
+        ),
+        (
+            "[planetary]\ninput = \"1\"\noutput = \"2\"\n[[planetary.wheel]]\nname = \"1\"\nz = 20\nshaft = \"1\"\n[[planetary.wheel]]\nname = \"2\"\nz = 40\nshaft = \"2\"\n",
+            &["planetary.mesh", "mobility"],
+        ),
+        (
+            "[planetary]\ninput = \"1\"\noutput = \"9\"\nfixed = \"7\"\n[[planetary.wheel]]\nname = \"1\"\nz = 20\nshaft = \"1\"\n[[planetary.mesh]]\nwheels = [\"1\", \"5\"]\n",
+            &["planetary.fixed = \"7\"", "planetary.mesh[0].wheels"],
+        ),
+    ];
+    for (k, (text, expected)) in cases.iter().enumerate() {
+        for cmd in [&["check"][..], &["report"][..]] {
+            let (ok, code, err) = run_scene(&format!("bad-gears-{k}"), text, cmd);
+            assert!(!ok && code == 2, "case {k} {cmd:?}: {code} {err}");
+            assert!(!err.contains("panicked"), "case {k}: {err}");
+            for e in *expected {
+                assert!(err.contains(e), "case {k} {cmd:?}: `{e}` not in\n{err}");
+            }
+        }
+    }
+}
