@@ -482,17 +482,9 @@ fn lines_meet(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Option<(DVec2, f64)> {
     Some((a + r * t, out(t).max(out(u))))
 }
 
-/// The crossing point of segments ab and cd (interiors, proper crossing).
+/// The crossing point of segments ab and cd (ends included).
 fn segments_cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Option<DVec2> {
-    let r = b - a;
-    let s = d - c;
-    let den = r.perp_dot(s);
-    if den.abs() <= 1e-300 {
-        return None;
-    }
-    let t = (c - a).perp_dot(s) / den;
-    let u = (c - a).perp_dot(r) / den;
-    ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u)).then(|| a + r * t)
+    lines_meet(a, b, c, d).and_then(|(p, miss)| (miss == 0.0).then_some(p))
 }
 
 /// The distance from `p` to the segment.
