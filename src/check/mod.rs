@@ -64,6 +64,22 @@ pub enum Symbol {
     Ratio,
     /// A power, W.
     Power,
+    /// The velocity analogue dS/dφ of a cam's follower, m (per radian).
+    VelocityAnalogue,
+    /// The acceleration analogue d²S/dφ² of a cam's follower, m (per radian²).
+    AccelerationAnalogue,
+    /// The pressure angle of a cam mechanism, rad.
+    PressureAngle,
+    /// The transmission angle of a cam mechanism, rad.
+    TransmissionAngle,
+    /// A radius (a cam's minimum radius, an admissible roller), m.
+    Radius,
+    /// A radius of curvature ρ, m.
+    CurvatureRadius,
+    /// The radius vector of a cam's practical profile, m.
+    ProfileRadius,
+    /// The largest normal distance between a drawn profile and the exact one, m.
+    ProfileDeviation,
 }
 
 impl Symbol {
@@ -85,6 +101,14 @@ impl Symbol {
             Symbol::Angle => "angle",
             Symbol::Ratio => "eta",
             Symbol::Power => "P",
+            Symbol::VelocityAnalogue => "ds_dphi",
+            Symbol::AccelerationAnalogue => "d2s_dphi2",
+            Symbol::PressureAngle => "pressure_angle",
+            Symbol::TransmissionAngle => "transmission_angle",
+            Symbol::Radius => "r",
+            Symbol::CurvatureRadius => "rho",
+            Symbol::ProfileRadius => "profile_radius",
+            Symbol::ProfileDeviation => "profile_deviation",
         }
     }
     /// The SI unit as the report writes it.
@@ -104,6 +128,12 @@ impl Symbol {
             Symbol::Angle => "rad",
             Symbol::Ratio => "1",
             Symbol::Power => "W",
+            Symbol::VelocityAnalogue | Symbol::AccelerationAnalogue => "m",
+            Symbol::PressureAngle | Symbol::TransmissionAngle => "rad",
+            Symbol::Radius
+            | Symbol::CurvatureRadius
+            | Symbol::ProfileRadius
+            | Symbol::ProfileDeviation => "m",
         }
     }
     /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{1-2}`, `F_{и3}`,
@@ -125,6 +155,14 @@ impl Symbol {
             Symbol::Angle => "α",
             Symbol::Ratio => "η",
             Symbol::Power => "P",
+            Symbol::VelocityAnalogue => "dS/dφ",
+            Symbol::AccelerationAnalogue => "d^2S/dφ^2",
+            Symbol::PressureAngle => "λ",
+            Symbol::TransmissionAngle => "γ",
+            Symbol::Radius => "r",
+            Symbol::CurvatureRadius => "ρ",
+            Symbol::ProfileRadius => "R",
+            Symbol::ProfileDeviation => "Δ",
         };
         // A reaction names two links, written apart as the textbooks do: R_{1-2}.
         let sep = if self == Symbol::Reaction { "-" } else { "" };
@@ -187,8 +225,12 @@ impl Key {
             at: At::Position(label.to_string()),
         }
     }
-    /// The quantity's name in reports: `v_D`, `omega_3`, `v_B3_B1`, `s_S5`.
+    /// The quantity's name in reports: `v_D`, `omega_3`, `v_B3_B1`, `s_S5`; the symbol alone
+    /// when the subject is empty (a cam's `s`, `ds_dphi`).
     pub fn quantity(&self) -> String {
+        if self.subject.is_empty() {
+            return self.symbol.key().to_string();
+        }
         format!("{}_{}", self.symbol.key(), self.subject)
     }
     /// The same quantity (symbol and subject), wherever it was read.
@@ -218,11 +260,13 @@ pub enum Method {
     Envelope,
     /// The method of triangles (plans of planetary trains).
     Triangles,
+    /// A cam's combined diagram (S against dS/dφ or d²S/dφ²) with its γ_min lines.
+    CombinedDiagram,
 }
 
 impl Method {
     /// Every method, in report order.
-    pub const ALL: [Method; 9] = [
+    pub const ALL: [Method; 10] = [
         Method::Plan,
         Method::DiagramChords,
         Method::DiagramTangents,
@@ -232,6 +276,7 @@ impl Method {
         Method::Inversion,
         Method::Envelope,
         Method::Triangles,
+        Method::CombinedDiagram,
     ];
 
     /// The name in JSON and CSV: `plan`, `diagram-chords`, `diagram-tangents`, …; every
@@ -247,6 +292,7 @@ impl Method {
             Method::Inversion => "inversion",
             Method::Envelope => "envelope",
             Method::Triangles => "triangles",
+            Method::CombinedDiagram => "combined-diagram",
         }
     }
 
@@ -281,6 +327,11 @@ impl Method {
                 "треугольники скоростей",
                 "трикутники швидкостей",
                 "triangles",
+            ),
+            Method::CombinedDiagram => lang.pick(
+                "совмещённая диаграмма",
+                "суміщена діаграма",
+                "combined diagram",
             ),
         }
     }
