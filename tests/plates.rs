@@ -154,6 +154,13 @@ plates! {
     rotor_static_balancing: "rotor-static" / "balancing",
     rotor_dynamic_balancing: "rotor-dynamic" / "balancing",
     friction_friction: "friction" / "friction",
+    cam_seed000_cam: "cam-seed000" / "cam",
+    cam_pz4_cam: "cam-pz4" / "cam",
+    cam_pz5_cam: "cam-pz5" / "cam",
+    cam_central_cam: "cam-central" / "cam",
+    cam_undercut_cam: "cam-undercut" / "cam",
+    cam_cusp_cam: "cam-cusp" / "cam",
+    cam_shock_cam: "cam-shock" / "cam",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

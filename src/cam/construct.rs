@@ -10,12 +10,12 @@ use crate::geom::{Arc, Circle, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
-/// Drawn length of the cycle on the diagrams' abscissa, mm (μ_φ = 2π / 240 mm).
-const CYCLE_MM: f64 = 240.0;
+/// Drawn length of the cycle on the diagrams' abscissa, mm (μ_φ = 2π / 180 mm).
+const CYCLE_MM: f64 = 180.0;
 /// Drawn stroke on the diagrams, mm.
 const STROKE_MM: f64 = 60.0;
 /// Largest radius of the profile drawing, mm.
-const PROFILE_MM: f64 = 90.0;
+const PROFILE_MM: f64 = 120.0;
 /// Gap between the stacked diagrams, mm.
 const GAP_MM: f64 = 30.0;
 
@@ -34,6 +34,8 @@ pub struct Diagrams {
     pub ds_scale: Scale,
     /// μ_S″ = μ_S′/(H₁·μ_φ).
     pub d2s_scale: Scale,
+    /// The pole distances H₁, H₂, mm.
+    pub poles: [f64; 2],
     /// S at the points, as read.
     pub s: Vec<f64>,
     /// dS/dφ at the points, as read.
@@ -95,6 +97,9 @@ pub struct Cam {
     pub roller: f64,
     /// The profile.
     pub inversion: Inversion,
+    /// The pressure (transmission) angle over the cycle: read off the profile drawing at the
+    /// points (marked) and the exact curve, at μ_φ and 1°/mm.
+    pub angle_graph: Option<Figure>,
 }
 
 /// Construct the cam of `spec`.
@@ -123,6 +128,17 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
         .map(|i| read_motion(&diagrams, i))
         .collect();
     let inversion = invert(spec, &points, &read, &placement, base, roller, ctx)?;
+    let angle_graph = match spec.follower {
+        Follower::Flat { .. } => None,
+        _ => Some(angle_graph(
+            spec,
+            &points,
+            &inversion,
+            &placement,
+            diagrams.phi,
+            ctx,
+        )?),
+    };
     Ok(Cam {
         spec: spec.clone(),
         points,
@@ -132,7 +148,117 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
         placement,
         roller,
         inversion,
+        angle_graph,
     })
+}
+
+/// The angle graph: the exact pressure (or transmission) angle over the cycle as a curve,
+/// the values read off the profile drawing as marked points, at μ_φ and μ = 1°/mm.
+fn angle_graph(
+    spec: &CamSpec,
+    points: &[Point],
+    inv: &Inversion,
+    place: &Placement,
+    phi: Scale,
+    ctx: &Context,
+) -> Result<Figure, CamError> {
+    let rocker = matches!(spec.follower, Follower::Rocker { .. });
+    let mu = Scale::new(1f64.to_radians(), Quantity::Angle).ok_or(CamError::NoScale {
+        what: "μ_γ",
+        size: 1.0,
+    })?;
+    let mut rec = Recorder::in_context(if rocker { "γ(φ)" } else { "λ(φ)" }, mu, ctx);
+    let value = |k: &Kin| {
+        if rocker {
+            k.transmission_angle()
+        } else {
+            k.pressure_angle()
+        }
+    };
+    let width = phi.to_mm(TAU);
+    let top = mu.to_mm(FRAC_PI_2) * if rocker { 1.0 } else { 0.6 };
+    let xa = rec.draw(
+        "φ axis",
+        Item::Vector {
+            from: DVec2::ZERO,
+            to: DVec2::new(width + 12.0, 0.0),
+        },
+        Role::Construction,
+        &[],
+    );
+    rec.label(
+        xa,
+        "φ",
+        DVec2::new(width + 12.0, 0.0),
+        DVec2::new(0.3, -1.0),
+    );
+    let ya = rec.draw(
+        "angle axis",
+        Item::Vector {
+            from: DVec2::ZERO,
+            to: DVec2::new(0.0, top + 10.0),
+        },
+        Role::Construction,
+        &[],
+    );
+    rec.label(
+        ya,
+        if rocker { "γ, °" } else { "λ, °" },
+        DVec2::new(0.0, top + 10.0),
+        DVec2::new(1.0, 0.2),
+    );
+    let limit = if rocker {
+        spec.gamma_min
+    } else {
+        FRAC_PI_2 - spec.gamma_min
+    };
+    let lim = rec.draw(
+        "limit",
+        Item::Segment(Segment::new(
+            DVec2::new(0.0, mu.to_mm(limit)),
+            DVec2::new(width, mu.to_mm(limit)),
+        )),
+        Role::Axis,
+        &[],
+    );
+    rec.label(
+        lim,
+        if rocker { "γ_{min}" } else { "λ_{max}" },
+        DVec2::new(width, mu.to_mm(limit)),
+        DVec2::new(1.0, 0.0),
+    );
+    let curve: Vec<DVec2> = exact::dense(spec, 120)
+        .into_iter()
+        .chain([(0.0, true), (spec.starts()[1], true), (TAU, false)])
+        .map(|(p, a)| (p, value(&place.kin(exact::motion(spec, p, a)))))
+        .collect::<Vec<_>>()
+        .into_iter()
+        .map(|(p, v)| DVec2::new(phi.to_mm(p), mu.to_mm(v)))
+        .collect();
+    let mut curve = curve;
+    curve.sort_by(|a, b| a.x.total_cmp(&b.x));
+    rec.draw(
+        "the exact angle",
+        Item::Polyline {
+            points: curve,
+            closed: false,
+        },
+        Role::Result,
+        &[xa, ya],
+    );
+    for (i, p) in points.iter().enumerate() {
+        let a = inv.angles.get(i).copied().unwrap_or(0.0);
+        let a = if rocker { FRAC_PI_2 - a } else { a };
+        rec.point(
+            format!("read at point {i}"),
+            DVec2::new(phi.to_mm(p.phi), mu.to_mm(a)),
+            Role::Construction,
+            "",
+            DVec2::ZERO,
+            &[],
+        );
+    }
+    Ok(rec.finish())
 }
 
 fn scale(v: f64, what: &'static str) -> Result<Scale, CamError> {
@@ -158,7 +284,9 @@ fn diagrams(spec: &CamSpec, points: &[Point], ctx: &Context) -> Result<Diagrams,
             })?
         }
     };
-    let [h1, h2] = spec.poles;
+    let [h1, h2] = spec
+        .poles
+        .unwrap_or_else(|| chosen_poles(spec, s_scale, phi));
     let ds_scale = scale(s_scale.value() / (h2 * phi.value()), "μ_S′")?;
     let d2s_scale = scale(ds_scale.value() / (h1 * phi.value()), "μ_S″")?;
     let n = spec.divisions;
@@ -166,14 +294,17 @@ fn diagrams(spec: &CamSpec, points: &[Point], ctx: &Context) -> Result<Diagrams,
     let mut first = Recorder::in_context("d^2S/dφ^2 → dS/dφ", ds_scale, ctx);
     let mut second = Recorder::in_context("dS/dφ → S", s_scale, ctx);
     // Figure 1: the given diagram above, dS/dφ below; figure 2: dS/dφ above, S below.
-    let a_span = spec.stroke * 8.0 / spec.phases.rise.min(spec.phases.ret).powi(2);
+    let (mut v_max, mut a_max) = (0.0f64, 0.0f64);
+    for (p, after) in exact::dense(spec, 200) {
+        let m = exact::motion(spec, p, after);
+        v_max = v_max.max(m.ds.abs());
+        a_max = a_max.max(m.d2s.abs());
+    }
+    let (a_mm, v_mm) = (d2s_scale.to_mm(a_max), ds_scale.to_mm(v_max));
     let a_top = DVec2::ZERO;
-    let v_origin = DVec2::new(0.0, -(d2s_scale.to_mm(a_span) + GAP_MM + 20.0));
+    let v_origin = DVec2::new(0.0, -(a_mm + v_mm + GAP_MM));
     let v_top = DVec2::ZERO;
-    let s_origin = DVec2::new(
-        0.0,
-        -(ds_scale.to_mm(a_span.sqrt() * spec.stroke.sqrt()) + GAP_MM + 40.0),
-    );
+    let s_origin = DVec2::new(0.0, -(v_mm + GAP_MM));
     let mut ds_nodes = vec![0.0; points.len()];
     let mut s_nodes = vec![0.0; points.len()];
     let mut ds_ends = [0.0; 2];
@@ -203,13 +334,16 @@ fn diagrams(spec: &CamSpec, points: &[Point], ctx: &Context) -> Result<Diagrams,
             x: phi,
             y: d2s_scale,
         };
+        // A uniform law starts at dS/dφ = h/Φ: the jump (a δ of acceleration, the rigid
+        // shock) is no ordinate of the given diagram, so it is laid off as the start value.
+        let v0 = exact::motion(spec, st[phase], true).ds;
         let v = integrate_chords(
             &mut first,
             &src,
             Sampling::Midpoints,
             scales,
             h1,
-            0.0,
+            v0,
             &layout,
         )?;
         // The given diagram itself: its curve through the nodes and both sides of a jump.
@@ -300,11 +434,31 @@ fn diagrams(spec: &CamSpec, points: &[Point], ctx: &Context) -> Result<Diagrams,
         s_scale,
         ds_scale,
         d2s_scale,
+        poles: [h1, h2],
         s: s_nodes,
         ds: ds_nodes,
         d2s,
         ds_ends,
     })
+}
+
+/// The pole distances a student chooses: H₂ = μ_S/(μ_S′·μ_φ) and H₁ = μ_S′/(μ_S″·μ_φ) with
+/// μ_S′, μ_S″ drawing the analogues' peaks about 40 mm tall, rounded to whole millimetres.
+fn chosen_poles(spec: &CamSpec, s: Scale, phi: Scale) -> [f64; 2] {
+    let (mut v, mut a) = (0.0f64, 0.0f64);
+    for (p, after) in exact::dense(spec, 200) {
+        let m = exact::motion(spec, p, after);
+        v = v.max(m.ds.abs());
+        a = a.max(m.d2s.abs());
+    }
+    let h2 = (s.value() / (v.max(1e-12) / 40.0 * phi.value()))
+        .round()
+        .clamp(5.0, 200.0);
+    let mu_v = s.value() / (h2 * phi.value());
+    let h1 = (mu_v / (a.max(1e-12) / 40.0 * phi.value()))
+        .round()
+        .clamp(5.0, 200.0);
+    [h1, h2]
 }
 
 /// The given d²S/dφ² of one phase as drawn: the nodes with both sides of every jump.
@@ -833,7 +987,10 @@ pub(crate) fn invert(
             DVec2::ZERO,
             &[],
         );
-        rec.label(pid, p.label.clone(), mm(c), mm(c).normalize_or_zero());
+        // The phases' ends are labelled (the textbook's 0, n, n + 1, 2n + 1).
+        if p.k == 0 || p.k == spec.divisions {
+            rec.label(pid, p.label.clone(), mm(c), mm(c).normalize_or_zero());
+        }
         centres.push(c);
         profile.push(t);
         kins.push(kin);

@@ -96,8 +96,9 @@ pub struct CamSpec {
     pub scale_l: Option<Scale>,
     /// μ_φ of the diagrams (rad/mm); `None`: chosen for a 240 mm cycle.
     pub scale_phi: Option<Scale>,
-    /// The pole distances H₁ (d²S → dS) and H₂ (dS → S), mm.
-    pub poles: [f64; 2],
+    /// The pole distances H₁ (d²S → dS) and H₂ (dS → S), mm; `None`: chosen so that the
+    /// analogues' peaks are drawn about 40 mm tall.
+    pub poles: Option<[f64; 2]>,
     /// The source lost its diagrams: the law is assumed (said on the plate).
     pub law_assumed: bool,
     /// An r_min quoted by the source, m, to be checked against (never matched).

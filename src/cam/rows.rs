@@ -420,8 +420,13 @@ impl Cam {
                     deg(s.gamma_min)
                 ));
             } else {
+                let over = if worst > FRAC_PI_2 - s.gamma_min + 1e-9 {
+                    ": EXCEEDED at the given base radius"
+                } else {
+                    ""
+                };
                 out.push(format!(
-                    "cam: the largest pressure angle over the cycle is {}° (λ_max = {}°)",
+                    "cam: the largest pressure angle over the cycle is {}° (λ_max = {}°){over}",
                     deg(worst),
                     deg(FRAC_PI_2 - s.gamma_min)
                 ));

@@ -33,7 +33,7 @@ pub(super) fn seed000() -> CamSpec {
         scale_s: None,
         scale_l: None,
         scale_phi: None,
-        poles: [30.0, 40.0],
+        poles: Some([30.0, 40.0]),
         law_assumed: false,
         quoted_r_min: Some(0.040),
     }
@@ -108,7 +108,10 @@ fn seed000_law_matches_the_closed_form() {
 fn seed000_r_min_is_about_70_mm_not_40() {
     let cam = build(&seed000(), &ctx(0.0)).unwrap();
     let r = cam.radius.exact;
-    assert!((r - 0.06986).abs() < 0.0005, "exact r_min {r}");
+    // Digest 000.12: a grid optimum of 69.86 mm over the 26 points (69.37 mm the other way);
+    // the whole cycle adds constraints, so the exact minimum is not below the drawn one.
+    assert!((r - 0.06986).abs() < 0.0006, "exact r_min {r}");
+    assert!(r >= cam.radius.graphical - 1e-9);
     assert!((r - 0.040).abs() > 0.02);
     // Drafting 0: the construction at the 26 points is within the drafting resolution.
     let res = 0.5 * cam.diagrams.s_scale.value();
@@ -332,4 +335,18 @@ fn placement_pressure_angle_matches_the_formula() {
         assert!((p.kin(m).pressure_angle() - want).abs() < 1e-12);
     }
     let _ = DVec2::ZERO;
+}
+
+#[test]
+#[ignore = "prints the seed cam's centre for both senses"]
+fn print_seed000_centre() {
+    for same in [true, false] {
+        let mut s = seed000();
+        s.follower = Follower::Rocker {
+            arm: 0.12,
+            same_sense: same,
+        };
+        let (r, o) = exact::min_radius_rocker(&s).unwrap();
+        println!("same {same}: r {r} O {o} |OO2| {}", o.length());
+    }
 }

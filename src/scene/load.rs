@@ -1,6 +1,7 @@
 //! Reading a scene file: TOML → raw structs → one validation pass → [`Scene`].
 
 use super::balancing::balancing;
+use super::cam::cam;
 use super::check::{item, quoted, Checker};
 use super::error::SceneError;
 use super::forces::forces;
@@ -67,6 +68,8 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let has_forces = raw.forces.is_some();
     let has_balancing = raw.balancing.is_some();
     let has_friction = raw.friction.is_some();
+    let has_cam = raw.cam.is_some();
+    let cam = raw.cam.as_ref().and_then(|c| cam(&mut check, c));
     let balancing = raw
         .balancing
         .as_ref()
@@ -76,6 +79,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         "forces" => has_forces,
         "balancing" => has_balancing,
         "friction" => has_friction,
+        "cam" => has_cam,
         _ => false,
     });
     let friction = friction(&mut check, raw.friction);
@@ -101,6 +105,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             forces,
             balancing,
             friction,
+            cam,
         })
     } else {
         Err(SceneError::Invalid {
@@ -181,6 +186,7 @@ fn plates(
         PlateKind::Positions,
         PlateKind::Balancing,
         PlateKind::Friction,
+        PlateKind::Cam,
     ]
     .into_iter()
     .filter(|k| present(k.section()))

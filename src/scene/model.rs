@@ -47,6 +47,9 @@ pub enum PlateKind {
     Balancing,
     /// Friction: each `[[friction.case]]`'s scheme and force triangle, with the error table.
     Friction,
+    /// The cam sheet: the diagrams by graphical integration, the combined diagram with the
+    /// zone, the profile by inversion, the angle graph and the data table.
+    Cam,
 }
 
 impl PlateKind {
@@ -58,6 +61,7 @@ impl PlateKind {
             PlateKind::Forces => "forces",
             PlateKind::Balancing => "balancing",
             PlateKind::Friction => "friction",
+            PlateKind::Cam => "cam",
         }
     }
     /// The scene section a plate of this kind draws from (`mechanism`, `forces`,
@@ -68,15 +72,17 @@ impl PlateKind {
             PlateKind::Forces => "forces",
             PlateKind::Balancing => "balancing",
             PlateKind::Friction => "friction",
+            PlateKind::Cam => "cam",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 5] = [
+    pub const ALL: [PlateKind; 6] = [
         PlateKind::Positions,
         PlateKind::Kinematics,
         PlateKind::Forces,
         PlateKind::Balancing,
         PlateKind::Friction,
+        PlateKind::Cam,
     ];
 
     /// Parse a stem.
@@ -127,4 +133,6 @@ pub struct Scene {
     pub balancing: Option<BalancingSpec>,
     /// The `[[friction.case]]`s, in file order (none when `[friction]` is absent).
     pub friction: Vec<FrictionCase>,
+    /// The cam (`[cam]`), when the scene has one.
+    pub cam: Option<crate::cam::CamSpec>,
 }

@@ -17,6 +17,7 @@ pub(crate) struct RawScene {
     pub forces: Option<RawForces>,
     pub balancing: Option<RawBalancing>,
     pub friction: Option<super::friction::RawFriction>,
+    pub cam: Option<super::cam::RawCam>,
 }
 
 /// `[task]`: the title block.

@@ -2,6 +2,7 @@
 //! sheets.
 
 mod balancing;
+mod cam;
 mod captions;
 mod fit;
 mod forces;
@@ -118,6 +119,7 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
         PlateKind::Forces => forces::build(session, lang),
         PlateKind::Balancing => balancing::build(session, lang),
         PlateKind::Friction => friction::build(session, lang),
+        PlateKind::Cam => cam::build(session, lang),
     }
 }
 

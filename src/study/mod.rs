@@ -63,6 +63,12 @@ pub enum StudyError {
     /// A friction case cannot be constructed.
     #[error(transparent)]
     Friction(#[from] FrictionError),
+    /// The scene has no `[cam]` and the study needs one.
+    #[error("the scene has no [cam]: {0} needs one")]
+    NoCam(&'static str),
+    /// The cam cannot be constructed.
+    #[error(transparent)]
+    Cam(#[from] crate::cam::CamError),
 }
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -192,6 +198,7 @@ pub struct Session<'s> {
     forces: Memo<(Scale, Scale, Scale, usize), Cached<PositionForces>>,
     balancing: Memo<(), Cached<Balancing>>,
     friction: Memo<(), Cached<Vec<Solved>>>,
+    cam: Memo<(), Cached<crate::cam::Cam>>,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -214,6 +221,7 @@ impl<'s> Session<'s> {
             forces: Memo::default(),
             balancing: Memo::default(),
             friction: Memo::default(),
+            cam: Memo::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -564,13 +572,30 @@ impl<'s> Session<'s> {
         })
     }
 
+    /// The scene's cam (`[cam]`): its diagrams, minimum radius and profile, constructed once.
+    pub fn cam(&self) -> Cached<crate::cam::Cam> {
+        self.cam.get((), || {
+            let spec = self
+                .scene
+                .cam
+                .as_ref()
+                .ok_or(StudyError::NoCam("the cam sheet"))?;
+            let c = crate::cam::build(spec, &self.ctx()?)?;
+            self.logged("profile by inversion", "", c.inversion.scale);
+            Ok(Arc::new(c))
+        })
+    }
+
     /// The report of every study of the scene: the kinematic study of its mechanism (with its
     /// force analysis), the balancing of its rotor and its friction cases, each that the scene
     /// has, rows and notes in that order. A scene with none is refused for want of a mechanism.
     pub fn report(&self) -> Result<Report, StudyError> {
         let mut rep = match self.scene.mechanism {
             Some(_) => self.kinematics_report()?,
-            None if self.scene.balancing.is_none() && self.scene.friction.is_empty() => {
+            None if self.scene.balancing.is_none()
+                && self.scene.friction.is_empty()
+                && self.scene.cam.is_none() =>
+            {
                 return Err(StudyError::NoMechanism("the report"))
             }
             None => Report {
@@ -588,6 +613,11 @@ impl<'s> Session<'s> {
         for s in self.friction()?.iter() {
             rep.rows.extend(s.rows());
             rep.notes.extend(s.notes.iter().cloned());
+        }
+        if self.scene.cam.is_some() {
+            let c = self.cam()?;
+            rep.rows.extend(c.rows());
+            rep.notes.extend(c.notes());
         }
         Ok(rep)
     }
