@@ -1043,10 +1043,51 @@ pub(crate) fn invert(
     );
     // The angle read off the drawing: the normal to the chord through the neighbours against
     // the follower's direction in its inverted position.
+    // At a phase's end the neighbour is read on the drawn dwell arc, one step on (the arc
+    // about O of the dwell's radius), so every chord is central.
+    let beyond = |i: usize, forward: bool| -> DVec2 {
+        let p = &points[i];
+        let step = if p.phase == 0 {
+            spec.phases.rise
+        } else {
+            spec.phases.ret
+        } / spec.divisions as f64;
+        let dwell = match (p.phase, forward) {
+            (0, true) => spec.phases.far,
+            (0, false) | (2, true) => spec.phases.near,
+            _ => spec.phases.far,
+        };
+        if dwell <= 0.0 {
+            return centres[i];
+        }
+        let d = step.min(dwell);
+        let phi = if forward { p.phi + d } else { p.phi - d };
+        let s = if (p.phase == 0) == forward {
+            spec.stroke
+        } else {
+            0.0
+        };
+        let m = Motion {
+            s,
+            ds: 0.0,
+            d2s: 0.0,
+        };
+        to_cam(place.kin(m).b, phi)
+    };
     let angles = (0..points.len())
         .map(|i| {
             let (lo, hi) = neighbours(points, i);
-            let t = centres[hi] - centres[lo];
+            let a = if lo == i {
+                beyond(i, false)
+            } else {
+                centres[lo]
+            };
+            let b = if hi == i {
+                beyond(i, true)
+            } else {
+                centres[hi]
+            };
+            let t = b - a;
             let nrm = jay(t);
             let path = to_cam(kins[i].path, points[i].phi);
             let c = (nrm.dot(path).abs() / nrm.length()).clamp(0.0, 1.0);
