@@ -14,12 +14,16 @@
 //!   velocity and acceleration plans.
 //! * **Force route** — one position's force polygons and Zhukovsky's lever from its plans,
 //!   against the analytic twin's loads and linear solve.
+//! * **Cam inversion** — seed 000's cam profiled by inversion at N = 12 … 720 intervals per
+//!   rise and return: the drawn profile's deviation from the exact envelope (falls as N⁻²)
+//!   beside the time of the recorded inversion.
 //! * **Plates** — building a plate and writing it as SVG; a scene's plates (already SVG)
 //!   rasterised to PNG at 150 dpi, as `tmm render` does.
 //!
 //! Times are the best of several repetitions (the machine may be busy); they are reported,
 //! never asserted.
 
+mod cam;
 mod chords;
 mod rates;
 
@@ -269,6 +273,7 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
     };
     let mut rows = chord_rows(&shaper, &ram_x, reps)?;
     rows.extend(chord_rows(&four_bar, &rocker_angle, reps)?);
+    rows.extend(cam::inversion_rows(opts, reps)?);
 
     let mut throughput = Vec::new();
     for s in [&four_bar, &shaper] {

@@ -24,7 +24,7 @@ mod tests;
 
 pub use construct::{build, Cam, Diagrams, Inversion, RadiusConstruction};
 pub use law::{Law, Shock};
-pub use rows::deviation_at;
+pub use rows::{deviation, deviation_at, inversion_at};
 
 use crate::scale::Scale;
 use thiserror::Error;

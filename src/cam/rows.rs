@@ -74,9 +74,9 @@ fn to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
     p.distance(a + d * t)
 }
 
-/// The largest normal distance between the drawn practical profile (straight pieces
-/// between its points within each moving phase; the dwells are exact arcs) and the exact
-/// envelope, m.
+/// The largest and the mean normal distance between the drawn practical profile (straight
+/// pieces between its points within each moving phase; the dwells are exact arcs) and the
+/// exact envelope, m.
 pub fn deviation(
     cam_spec: &CamSpec,
     points: &[Point],
@@ -84,8 +84,8 @@ pub fn deviation(
     place: &Placement,
     base: f64,
     roller: f64,
-) -> f64 {
-    let mut worst: f64 = 0.0;
+) -> (f64, f64) {
+    let (mut worst, mut sum, mut count) = (0.0f64, 0.0, 0usize);
     for i in 0..points.len().saturating_sub(1) {
         let (p, q) = (&points[i], &points[i + 1]);
         if p.phase != q.phase {
@@ -96,18 +96,26 @@ pub fn deviation(
             let phi = p.phi + (q.phi - p.phi) * j as f64 / 16.0;
             let after = j == 0 && p.after;
             let e = exact_profile(cam_spec, place, base, roller, phi, after);
-            worst = worst.max(to_segment(e, a, b));
+            let d = to_segment(e, a, b);
+            worst = worst.max(d);
+            sum += d;
+            count += 1;
         }
     }
-    worst
+    (worst, sum / count.max(1) as f64)
 }
 
-/// The profile by inversion at `n` intervals per moving phase from the exact law (a reading
-/// at drafting 0), and its deviation from the exact envelope, m: the bench's sweep.
+/// The profile by inversion at `n` intervals per moving phase (2n + 2 positions) from the
+/// exact law, as read at drafting 0: the bench's sweep. Returns the task at that resolution,
+/// its points and the inversion.
 ///
 /// # Errors
 /// As [`super::build`]'s inversion.
-pub fn deviation_at(cam: &Cam, n: usize, ctx: &Context) -> Result<(Inversion, f64), CamError> {
+pub fn inversion_at(
+    cam: &Cam,
+    n: usize,
+    ctx: &Context,
+) -> Result<(CamSpec, Vec<Point>, Inversion), CamError> {
     let mut spec = cam.spec.clone();
     spec.divisions = n.max(2);
     let points = exact::points(&spec);
@@ -124,7 +132,16 @@ pub fn deviation_at(cam: &Cam, n: usize, ctx: &Context) -> Result<(Inversion, f6
         cam.roller,
         ctx,
     )?;
-    let dev = deviation(&spec, &points, &inv, &cam.placement, cam.base, cam.roller);
+    Ok((spec, points, inv))
+}
+
+/// [`inversion_at`] and the largest deviation of its profile from the exact envelope, m.
+///
+/// # Errors
+/// As [`inversion_at`].
+pub fn deviation_at(cam: &Cam, n: usize, ctx: &Context) -> Result<(Inversion, f64), CamError> {
+    let (spec, points, inv) = inversion_at(cam, n, ctx)?;
+    let (dev, _) = deviation(&spec, &points, &inv, &cam.placement, cam.base, cam.roller);
     Ok((inv, dev))
 }
 
@@ -208,6 +225,7 @@ impl Cam {
             self.base,
             self.roller,
         )
+        .0
     }
 
     /// Every reading against its twin: S, dS/dφ, d²S/dφ² per point (integration), r_min
