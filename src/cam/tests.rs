@@ -350,3 +350,64 @@ fn print_seed000_centre() {
         println!("same {same}: r {r} O {o} |OO2| {}", o.length());
     }
 }
+
+mod props {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn law(k: u8, ratio: f64) -> Law {
+        match k % 6 {
+            0 => Law::Uniform,
+            1 => Law::ConstantAcceleration { ratio },
+            2 => Law::Cosine,
+            3 => Law::Sine,
+            4 => Law::Trapezoidal,
+            _ => Law::Polynomial345,
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+
+        /// A translating cam at its exact r_min: the largest pressure angle over the cycle
+        /// is λ_max (binding, never exceeded); with a piecewise-constant analogue jumping at
+        /// the nodes the inversion's roller centres are the exact pitch curve.
+        #[test]
+        fn translating_cams_bind_at_lambda_max(
+            k in 0u8..6, j in 1usize..6, rise in 60f64..150.0, ret in 60f64..150.0,
+            far in 0f64..40.0, stroke in 0.01f64..0.06, e in 0f64..0.01, gamma in 45f64..70.0,
+            n in 6usize..16,
+        ) {
+            // The "+ −" law's jump on a node: its analogue is integrated exactly.
+            let l = law(k, j as f64 / n as f64);
+            let near = 360.0 - rise - ret - far;
+            let s = CamSpec {
+                phases: Phases {
+                    rise: rise.to_radians(),
+                    far: far.to_radians(),
+                    ret: ret.to_radians(),
+                    near: near.to_radians(),
+                },
+                rise: l,
+                ret: l,
+                stroke,
+                follower: Follower::Translating { offset: e },
+                gamma_min: gamma.to_radians(),
+                divisions: n,
+                quoted_r_min: None,
+                poles: None,
+                ..seed000()
+            };
+            let cam = build(&s, &ctx(0.0)).unwrap();
+            let lmax = (90.0 - gamma).to_radians();
+            let worst = cam.worst_angle();
+            prop_assert!(worst <= lmax + 1e-6, "{} > {}", worst.to_degrees(), 90.0 - gamma);
+            prop_assert!(worst >= lmax - 2e-3, "{} < {}", worst.to_degrees(), 90.0 - gamma);
+            if matches!(l, Law::ConstantAcceleration { .. } | Law::Uniform) {
+                for (g, x) in cam.inversion.centres.iter().zip(cam.exact_centres()) {
+                    prop_assert!(g.distance(x) < 1e-9, "{g} vs {x}");
+                }
+            }
+        }
+    }
+}
