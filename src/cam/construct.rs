@@ -937,9 +937,10 @@ pub(crate) fn invert(
         });
         let kin = place.kin(m);
         let c = to_cam(kin.b, p.phi);
+        // The compass arc about O₁ through B_i (radius O₁B_i), notched where it meets ray i.
         rec.draw(
             format!("arc about O_1 from B_{i} to ray {i}"),
-            Item::Arc(Arc::between(DVec2::ZERO, mm(kin.b).length(), kin.b, c)),
+            Item::Arc(Arc::notch(DVec2::ZERO, mm(c), 4.0)),
             Role::Construction,
             &[o],
         );
