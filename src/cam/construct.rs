@@ -555,7 +555,9 @@ fn min_radius(
             let ox = -mu.to_mm(offset);
             let t = gamma.tan();
             let (mut best, mut bind) = (f64::INFINITY, 0);
-            for (i, k) in ks.iter().enumerate() {
+            // Under force closure only the rise's points bind.
+            let binds = |i: usize| !spec.force_closure || points[i].phase == 0;
+            for (i, k) in ks.iter().enumerate().filter(|(i, _)| binds(*i)) {
                 let y = k.y - (k.x - ox).abs() * t;
                 if y < best {
                     best = y;
@@ -631,7 +633,7 @@ fn min_radius(
             );
             let mut cons = Vec::new();
             let mut ks = Vec::new();
-            for i in 0..points.len() {
+            for (i, p) in points.iter().enumerate() {
                 let m = read_motion(d, i);
                 let psi = FRAC_PI_2 + sigma * m.s / arm;
                 let e = DVec2::from_angle(psi);
@@ -644,7 +646,9 @@ fn min_radius(
                     &[pid],
                 );
                 ks.push(k);
-                cons.push((k, e));
+                if !spec.force_closure || p.phase == 0 {
+                    cons.push((k, e));
+                }
             }
             rec.draw(
                 "curve of the points K",

@@ -122,6 +122,15 @@ pub fn dense(spec: &CamSpec, per_phase: usize) -> Vec<(f64, bool)> {
     out
 }
 
+/// The samples the angle limit is checked at: [`dense`], the rise only under force closure.
+pub fn checked(spec: &CamSpec, per_phase: usize) -> Vec<(f64, bool)> {
+    let end = spec.starts()[1];
+    dense(spec, per_phase)
+        .into_iter()
+        .filter(|&(phi, after)| !spec.force_closure || phi < end || (phi == end && !after))
+        .collect()
+}
+
 /// Where the follower is relative to the cam centre O (the origin) when φ = 0.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Placement {
@@ -259,14 +268,13 @@ pub fn min_radius_translating(spec: &CamSpec, offset: f64) -> (f64, f64) {
         let m = motion(spec, phi, after);
         (m.ds - offset).abs() * t - m.s
     };
-    let s0 = refine_max(spec, need).max(0.0);
+    let s0 = refine_max(spec, checked(spec, DENSE), need).max(0.0);
     ((offset * offset + s0 * s0).sqrt(), s0)
 }
 
 /// The largest of `f` over the cycle: dense samples, then a golden-section refinement of
 /// the best one's neighbourhood (f continuous within a phase).
-fn refine_max(spec: &CamSpec, f: impl Fn(f64, bool) -> f64) -> f64 {
-    let samples = dense(spec, DENSE);
+fn refine_max(spec: &CamSpec, samples: Vec<(f64, bool)>, f: impl Fn(f64, bool) -> f64) -> f64 {
     let mut best = f64::NEG_INFINITY;
     let mut at = 0.0;
     for &(phi, after) in &samples {
@@ -300,7 +308,7 @@ pub fn rocker_constraints(spec: &CamSpec, per_phase: usize) -> Vec<(DVec2, DVec2
         psi0: FRAC_PI_2,
         sigma,
     };
-    dense(spec, per_phase)
+    checked(spec, per_phase)
         .into_iter()
         .map(|(phi, after)| {
             let k = place.kin(motion(spec, phi, after));
@@ -387,7 +395,7 @@ pub fn min_radius_rocker(spec: &CamSpec) -> Option<(f64, DVec2)> {
 /// The flat face's exact minimum r₀ = max(−(S + S″)) + ρ_min over the whole cycle (never
 /// below ρ_min), and max(−(S + S″)) itself.
 pub fn min_radius_flat(spec: &CamSpec) -> (f64, f64) {
-    let worst = refine_max(spec, |phi, after| {
+    let worst = refine_max(spec, dense(spec, DENSE), |phi, after| {
         let m = motion(spec, phi, after);
         -(m.s + m.d2s)
     });
@@ -416,4 +424,44 @@ pub fn pitch_rho_min(spec: &CamSpec, place: &Placement) -> (f64, Option<f64>) {
         convex = convex.min(place.kin(m).b.length());
     }
     (convex, concave)
+}
+
+/// The smallest translating cam with the offset free (lecture 15's O₁, where the two γ_min
+/// tangents meet): the e minimising r₀(e) = √(e² + s₀(e)²) over the whole cycle, by a scan
+/// and a golden-section refinement. Returns (r₀, e).
+pub fn min_radius_free(spec: &CamSpec) -> (f64, f64) {
+    let span = dense(spec, 200)
+        .into_iter()
+        .map(|(p, a)| motion(spec, p, a).ds.abs())
+        .fold(0.0, f64::max)
+        .max(spec.stroke);
+    let r = |e: f64| min_radius_translating(spec, e).0;
+    let steps = 80;
+    let (mut best_e, mut best_r) = (0.0, r(0.0));
+    for i in 0..=steps {
+        let e = -span + 2.0 * span * i as f64 / steps as f64;
+        let v = r(e);
+        if v < best_r {
+            best_r = v;
+            best_e = e;
+        }
+    }
+    let h = 2.0 * span / steps as f64;
+    let (mut a, mut b) = (best_e - h, best_e + h);
+    let g = 0.618_033_988_749_894_9;
+    for _ in 0..60 {
+        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
+        if r(x1) < r(x2) {
+            b = x2;
+        } else {
+            a = x1;
+        }
+    }
+    let e = 0.5 * (a + b);
+    let v = r(e);
+    if v < best_r {
+        (v, e)
+    } else {
+        (best_r, best_e)
+    }
 }

@@ -103,6 +103,9 @@ pub struct CamSpec {
     pub law_assumed: bool,
     /// An r_min quoted by the source, m, to be checked against (never matched).
     pub quoted_r_min: Option<f64>,
+    /// Force (spring) closure: the pressure angle is checked on the rise only (seed 002,
+    /// L1477); otherwise (geometric closure) over the whole cycle.
+    pub force_closure: bool,
 }
 
 impl CamSpec {

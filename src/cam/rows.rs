@@ -190,7 +190,7 @@ impl Cam {
     /// The extreme angle over the whole cycle: the largest pressure angle or the smallest
     /// transmission angle, rad.
     pub fn worst_angle(&self) -> f64 {
-        let samples = exact::dense(&self.spec, 500);
+        let samples = exact::checked(&self.spec, exact::DENSE);
         let it = samples.iter().map(|&(p, a)| self.angle_at(p, a));
         if self.rocker() {
             it.fold(FRAC_PI_2, f64::min)
@@ -396,6 +396,8 @@ impl Cam {
                 "convexity r₀ ≥ max(−(S + S″)) + ρ_min, ρ_min = {} mm",
                 mm(s.rho_min)
             )
+        } else if s.force_closure {
+            format!("γ ≥ {}° on the rise (force closure)", deg(s.gamma_min))
         } else {
             format!("γ ≥ {}° over the whole cycle", deg(s.gamma_min))
         };
@@ -444,7 +446,12 @@ impl Cam {
                     ""
                 };
                 out.push(format!(
-                    "cam: the largest pressure angle over the cycle is {}° (λ_max = {}°){over}",
+                    "cam: the largest pressure angle {} is {}° (λ_max = {}°){over}",
+                    if s.force_closure {
+                        "on the rise (force closure)"
+                    } else {
+                        "over the cycle"
+                    },
                     deg(worst),
                     deg(FRAC_PI_2 - s.gamma_min)
                 ));
@@ -466,6 +473,14 @@ impl Cam {
             }
         }
         if let Follower::Translating { offset } = s.follower {
+            let (r_free, e_free) = exact::min_radius_free(s);
+            out.push(format!(
+                "cam: with the offset free the smallest cam (lecture 15: O₁ where the two γ_min tangents meet) has r_min = {} mm at e = {} mm; the scene's e = {} mm gives {} mm",
+                mm(r_free),
+                mm(e_free),
+                mm(offset),
+                mm(r.exact)
+            ));
             if offset < 0.0 {
                 let mirrored = Placement::Translating {
                     offset: -offset,

@@ -36,6 +36,7 @@ pub(super) fn seed000() -> CamSpec {
         poles: Some([30.0, 40.0]),
         law_assumed: false,
         quoted_r_min: Some(0.040),
+        force_closure: false,
     }
 }
 
@@ -187,31 +188,27 @@ fn translating_min_radius_keeps_the_pressure_angle() {
 
 #[test]
 fn pz5_rise_only_matches_the_digest() {
-    // Force closure (rise only): the digest's 19.02 / 27.73 / 25.78 mm with e on the
-    // favourable side.
-    for (law, want) in [
-        (Law::Cosine, 19.02),
-        (Law::Sine, 27.73),
-        (Law::ConstantAcceleration { ratio: 0.5 }, 25.78),
+    // Force closure (the rise only): the digest's 19.02 / 27.73 / 25.78 mm with e = 3 mm on
+    // the favourable side, and 29.33 / 38.08 / 36.12 mm with it on the other side.
+    for (law, want, wrong) in [
+        (Law::Cosine, 19.02, 29.33),
+        (Law::Sine, 27.73, 38.08),
+        (Law::ConstantAcceleration { ratio: 0.5 }, 25.78, 36.12),
     ] {
-        let mut s = translating(law, 0.003);
-        // A return so slow it never binds.
-        s.phases.ret = 250f64.to_radians();
-        s.phases.far = 0.0;
-        s.phases.rise = 110f64.to_radians();
-        s.phases.near = 0.0;
         let s = CamSpec {
-            phases: Phases {
-                rise: 130f64.to_radians(),
-                far: 0.0,
-                ret: 230f64.to_radians(),
-                near: 0.0,
-            },
-            ..s
+            force_closure: true,
+            ..translating(law, 0.003)
         };
         let (r, _) = exact::min_radius_translating(&s, 0.003);
-        // The rise binds: the slow return's |S′ + e| is smaller.
-        assert!((r * 1e3 - want).abs() < 0.02, "{law:?}: {}", r * 1e3);
+        assert!((r * 1e3 - want).abs() < 0.01, "{law:?}: {}", r * 1e3);
+        let (r, _) = exact::min_radius_translating(&s, -0.003);
+        assert!((r * 1e3 - wrong).abs() < 0.01, "{law:?}: {}", r * 1e3);
+        let cam = build(&s, &ctx(0.0)).unwrap();
+        assert!(
+            (cam.worst_angle() - 30f64.to_radians()).abs() < 1e-5,
+            "{}",
+            cam.worst_angle().to_degrees()
+        );
     }
 }
 
@@ -410,4 +407,16 @@ mod props {
             }
         }
     }
+}
+
+#[test]
+fn the_free_offset_centre_is_no_larger_than_any_given_offset() {
+    let s = translating(Law::Cosine, 0.0);
+    let (r, e) = exact::min_radius_free(&s);
+    for off in [-0.006, -0.003, 0.0, 0.003, 0.006, 0.01] {
+        let (ro, _) = exact::min_radius_translating(&s, off);
+        assert!(r <= ro + 1e-9, "e = {off}: {ro} < {r}");
+    }
+    // A symmetric cycle (equal rise and return laws and angles): the best offset is 0.
+    assert!(e.abs() < 1e-5, "{e}");
 }

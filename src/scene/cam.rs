@@ -20,6 +20,8 @@ const LAWS: [&str; 6] = [
     "trapezoidal",
     "polynomial-345",
 ];
+/// The closures, as written: force (spring, the rise only), geometric (the whole cycle).
+const CLOSURES: [&str; 2] = ["geometric", "force"];
 /// The rocker's senses, as written.
 const SENSES: [&str; 2] = ["same", "opposite"];
 /// The most intervals per moving phase a scene may ask for.
@@ -50,6 +52,7 @@ pub(crate) struct RawCam {
     pub scale_phi: Option<f64>,
     pub law_assumed: Option<bool>,
     pub quoted_r_min: Option<f64>,
+    pub closure: Option<String>,
 }
 
 /// Validate `[cam]`.
@@ -213,6 +216,10 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             None
         }
     };
+    let force_closure = match raw.closure.as_ref() {
+        Some(c) => check.word(&key("closure"), Some(c), &CLOSURES) == Some(1),
+        None => false,
+    };
     let spec = CamSpec {
         phases,
         rise,
@@ -247,6 +254,7 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         quoted_r_min: raw
             .quoted_r_min
             .map(|mm| check.length(&key("quoted_r_min"), Some(mm))),
+        force_closure,
     };
     (check.problems.len() == before).then_some(spec)
 }
