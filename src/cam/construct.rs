@@ -844,10 +844,12 @@ fn rocker_centre(cons: &[(DVec2, DVec2)], a0: DVec2, gamma: f64) -> Option<DVec2
             }
         }
     }
+    // Nearest first: the first admissible candidate is the centre (most fail at once).
+    cands.retain(|c| c.is_finite());
+    cands.sort_by(|a, b| a.distance(a0).total_cmp(&b.distance(a0)));
     cands
         .into_iter()
-        .filter(|c| c.is_finite() && exact::admits(*c, cons, sin_g, 1e-9))
-        .min_by(|a, b| a.distance(a0).total_cmp(&b.distance(a0)))
+        .find(|c| exact::admits(*c, cons, sin_g, 1e-9))
 }
 
 /// The rocker's γ_min lines: long through O where they bind, short ticks elsewhere.

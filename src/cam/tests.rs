@@ -420,3 +420,17 @@ fn the_free_offset_centre_is_no_larger_than_any_given_offset() {
     // A symmetric cycle (equal rise and return laws and angles): the best offset is 0.
     assert!(e.abs() < 1e-5, "{e}");
 }
+
+#[test]
+fn the_drawn_r_min_converges_to_the_exact_one() {
+    let err = |n: usize| {
+        let s = CamSpec {
+            divisions: n,
+            ..seed000()
+        };
+        let cam = build(&s, &ctx(0.0)).unwrap();
+        (cam.radius.graphical - cam.radius.exact).abs()
+    };
+    let (a, b) = (err(12), err(96));
+    assert!(b < a && b < 2e-5, "{a} {b}");
+}
