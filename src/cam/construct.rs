@@ -566,6 +566,13 @@ fn min_radius(
             }
             let o = DVec2::new(ox, best);
             zone_lines(&mut rec, &ks, o, gamma, bind);
+            let bound: Vec<DVec2> = ks
+                .iter()
+                .enumerate()
+                .filter(|(i, _)| binds(*i))
+                .map(|(_, k)| *k)
+                .collect();
+            hatch_zone(&mut rec, &bound, o, t);
             let oid = rec.point(
                 "cam centre O_1",
                 o,
@@ -822,6 +829,44 @@ fn zone_lines(rec: &mut Recorder, ks: &[DVec2], o: DVec2, gamma: f64, bind: usiz
                 &[],
             );
         }
+    }
+}
+
+/// The admissible zone of the cam centre of a translating follower: its upper boundary
+/// g(x) = min over the points of (K_y − |K_x − x|·tan γ_min) near the centre, hatched below.
+fn hatch_zone(rec: &mut Recorder, ks: &[DVec2], o: DVec2, t: f64) {
+    let g = |x: f64| {
+        ks.iter()
+            .map(|k| k.y - (k.x - x).abs() * t)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let half = 25.0;
+    let pts: Vec<DVec2> = (0..=50)
+        .map(|j| {
+            let x = o.x - half + j as f64;
+            DVec2::new(x, g(x))
+        })
+        .filter(|p| p.is_finite() && p.y > o.y - half)
+        .collect();
+    if pts.len() < 2 {
+        return;
+    }
+    let edge = rec.draw(
+        "boundary of the zone of the cam centre",
+        Item::Polyline {
+            points: pts.clone(),
+            closed: false,
+        },
+        Role::Construction,
+        &[],
+    );
+    for p in pts.iter().step_by(4) {
+        rec.draw(
+            "hatching of the zone",
+            Item::Segment(Segment::new(*p, *p + DVec2::new(-3.0, -3.0))),
+            Role::Hatch,
+            &[edge],
+        );
     }
 }
 
