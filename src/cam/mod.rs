@@ -16,14 +16,20 @@
 //! is placed by the minimum-radius construction.
 
 mod construct;
+mod diagrams;
 pub mod exact;
+mod inversion;
 mod law;
+mod radius;
 mod rows;
 #[cfg(test)]
 mod tests;
 
-pub use construct::{build, Cam, Diagrams, Inversion, RadiusConstruction};
+pub use construct::{build, Cam};
+pub use diagrams::Diagrams;
+pub use inversion::Inversion;
 pub use law::{Law, Shock};
+pub use radius::RadiusConstruction;
 pub use rows::{deviation, deviation_at, inversion_at};
 
 use crate::scale::Scale;

@@ -2,8 +2,9 @@
 //! the profile's deviation from the exact envelope, and the notes (shocks, the equal-return
 //! check, the roller's choice, every hard case detected, a source's inconsistent r_min).
 
-use super::construct::{invert, Cam, Inversion};
+use super::construct::Cam;
 use super::exact::{self, Motion, Placement, Point};
+use super::inversion::{invert, Inversion};
 use super::{CamError, CamSpec, Follower, Law, Shock};
 use crate::check::{At, Key, Method, Row, Symbol};
 use crate::construct::Context;
