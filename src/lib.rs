@@ -32,6 +32,7 @@
 
 pub mod bench;
 pub mod calculus;
+pub mod cam;
 pub mod check;
 pub mod construct;
 pub mod dynamics;

@@ -297,7 +297,11 @@ fn distinct_stems(scenes: &[Scene], out: &Path) -> Result<(), Failure> {
 fn report(path: &Path, format: ReportFormat, drafting: f64, lang: LangArg) -> Result<(), Failure> {
     let (lang, drafting) = options(lang, drafting)?;
     let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
-    if s.mechanism.is_none() && s.balancing.is_none() && s.friction.is_empty() && s.gears.is_none()
+    if s.mechanism.is_none()
+        && s.balancing.is_none()
+        && s.friction.is_empty()
+        && s.gears.is_none()
+        && s.cam.is_none()
     {
         return Err(nothing_to_construct(&s));
     }

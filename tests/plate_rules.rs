@@ -181,6 +181,13 @@ rules! {
     gears_pz1_texts_apart, gears_pz1_inside_frame: "gears-pz1" / "gears",
     gears_pz2_texts_apart, gears_pz2_inside_frame: "gears-pz2" / "gears",
     gears_pz3_texts_apart, gears_pz3_inside_frame: "gears-pz3" / "gears",
+    cam_seed000_texts_apart, cam_seed000_inside_frame: "cam-seed000" / "cam",
+    cam_pz4_texts_apart, cam_pz4_inside_frame: "cam-pz4" / "cam",
+    cam_pz5_texts_apart, cam_pz5_inside_frame: "cam-pz5" / "cam",
+    cam_central_texts_apart, cam_central_inside_frame: "cam-central" / "cam",
+    cam_undercut_texts_apart, cam_undercut_inside_frame: "cam-undercut" / "cam",
+    cam_cusp_texts_apart, cam_cusp_inside_frame: "cam-cusp" / "cam",
+    cam_shock_texts_apart, cam_shock_inside_frame: "cam-shock" / "cam",
 }
 
 /// Every plate of every scene in `constructions/` is checked above.

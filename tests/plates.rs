@@ -159,6 +159,13 @@ plates! {
     gears_pz1_gears: "gears-pz1" / "gears",
     gears_pz2_gears: "gears-pz2" / "gears",
     gears_pz3_gears: "gears-pz3" / "gears",
+    cam_seed000_cam: "cam-seed000" / "cam",
+    cam_pz4_cam: "cam-pz4" / "cam",
+    cam_pz5_cam: "cam-pz5" / "cam",
+    cam_central_cam: "cam-central" / "cam",
+    cam_undercut_cam: "cam-undercut" / "cam",
+    cam_cusp_cam: "cam-cusp" / "cam",
+    cam_shock_cam: "cam-shock" / "cam",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

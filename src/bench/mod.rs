@@ -14,6 +14,9 @@
 //!   velocity and acceleration plans.
 //! * **Force route** — one position's force polygons and Zhukovsky's lever from its plans,
 //!   against the analytic twin's loads and linear solve.
+//! * **Cam inversion** — seed 000's cam profiled by inversion at N = 12 … 720 intervals per
+//!   rise and return: the drawn profile's deviation from the exact envelope (falls as N⁻²)
+//!   beside the time of the recorded inversion.
 //! * **Plates** — building a plate and writing it as SVG; a scene's plates (already SVG)
 //!   rasterised to PNG at 150 dpi, as `tmm render` does.
 //!
@@ -26,6 +29,7 @@
 //! Times are the best of several repetitions (the machine may be busy); they are reported,
 //! never asserted.
 
+mod cam;
 mod chords;
 mod flywheel;
 mod rack;
@@ -281,6 +285,7 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
 
     let (fly, t_exact) = flywheel::flywheel_rows(&shaper, reps)?;
     rows.extend(fly);
+    rows.extend(cam::inversion_rows(opts, reps)?);
 
     let mut throughput = Vec::new();
     throughput.push(Throughput {

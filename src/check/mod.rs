@@ -72,8 +72,8 @@ pub enum Symbol {
     EnergyChange,
     /// The coefficient of irregularity δ of a machine's speed, 1.
     Irregularity,
-    /// A pressure angle of a gear mesh (α_w), degrees as the textbook writes it.
-    PressureAngle,
+    /// The angle of engagement of a gear mesh (α_w), degrees as the textbook writes it.
+    EngagementAngle,
     /// A centre distance (a_w), m.
     CentreDistance,
     /// A radius of a gear's circle (r_w, r_a, r_b, r_f), m.
@@ -92,6 +92,20 @@ pub enum Symbol {
     GearRatio,
     /// A length along the line of action (N₁N₂, B₁B₂), m.
     ActionLength,
+    /// The velocity analogue dS/dφ of a cam's follower, m (per radian).
+    VelocityAnalogue,
+    /// The acceleration analogue d²S/dφ² of a cam's follower, m (per radian²).
+    AccelerationAnalogue,
+    /// The pressure angle of a cam mechanism, rad.
+    PressureAngle,
+    /// The transmission angle of a cam mechanism, rad.
+    TransmissionAngle,
+    /// A radius of curvature ρ, m.
+    CurvatureRadius,
+    /// The radius vector of a cam's practical profile, m.
+    ProfileRadius,
+    /// The largest normal distance between a drawn profile and the exact one, m.
+    ProfileDeviation,
 }
 
 impl Symbol {
@@ -117,7 +131,7 @@ impl Symbol {
             Symbol::Work => "A",
             Symbol::EnergyChange => "dT",
             Symbol::Irregularity => "delta",
-            Symbol::PressureAngle => "alpha",
+            Symbol::EngagementAngle => "alpha",
             Symbol::CentreDistance => "a",
             Symbol::Radius => "r",
             Symbol::ToothThickness => "s",
@@ -127,6 +141,13 @@ impl Symbol {
             Symbol::EnvelopeDeviation => "envelope",
             Symbol::GearRatio => "u",
             Symbol::ActionLength => "g",
+            Symbol::VelocityAnalogue => "ds_dphi",
+            Symbol::AccelerationAnalogue => "d2s_dphi2",
+            Symbol::PressureAngle => "pressure_angle",
+            Symbol::TransmissionAngle => "transmission_angle",
+            Symbol::CurvatureRadius => "rho",
+            Symbol::ProfileRadius => "profile_radius",
+            Symbol::ProfileDeviation => "profile_deviation",
         }
     }
     /// The SI unit as the report writes it.
@@ -149,7 +170,7 @@ impl Symbol {
             Symbol::Inertia => "kg*m^2",
             Symbol::Work | Symbol::EnergyChange => "J",
             Symbol::Irregularity => "1",
-            Symbol::PressureAngle => "deg",
+            Symbol::EngagementAngle => "deg",
             Symbol::CentreDistance
             | Symbol::Radius
             | Symbol::ToothThickness
@@ -159,6 +180,9 @@ impl Symbol {
             | Symbol::SpecificSliding
             | Symbol::ShiftCoefficient
             | Symbol::GearRatio => "1",
+            Symbol::VelocityAnalogue | Symbol::AccelerationAnalogue => "m",
+            Symbol::PressureAngle | Symbol::TransmissionAngle => "rad",
+            Symbol::CurvatureRadius | Symbol::ProfileRadius | Symbol::ProfileDeviation => "m",
         }
     }
     /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{1-2}`, `F_{и3}`,
@@ -188,7 +212,7 @@ impl Symbol {
             Symbol::Work => "A",
             Symbol::EnergyChange => "ΔT",
             Symbol::Irregularity => "δ",
-            Symbol::PressureAngle => "α",
+            Symbol::EngagementAngle => "α",
             Symbol::CentreDistance => "a",
             Symbol::Radius => "r",
             Symbol::ToothThickness => "s",
@@ -198,6 +222,13 @@ impl Symbol {
             Symbol::EnvelopeDeviation => "δ",
             Symbol::GearRatio => "u",
             Symbol::ActionLength => "g",
+            Symbol::VelocityAnalogue => "dS/dφ",
+            Symbol::AccelerationAnalogue => "d^2S/dφ^2",
+            Symbol::PressureAngle => "λ",
+            Symbol::TransmissionAngle => "γ",
+            Symbol::CurvatureRadius => "ρ",
+            Symbol::ProfileRadius => "R",
+            Symbol::ProfileDeviation => "Δ",
         };
         // A reaction names two links, written apart as the textbooks do: R_{1-2}.
         let sep = if self == Symbol::Reaction { "-" } else { "" };
@@ -265,6 +296,8 @@ impl Key {
     }
     /// The quantity's name in reports: `v_D`, `omega_3`, `v_B3_B1`, `s_S5`; the symbol
     /// alone for a subject-less quantity (`dT`, `delta`).
+    /// The quantity's name in reports: `v_D`, `omega_3`, `v_B3_B1`, `s_S5`; the symbol alone
+    /// when the subject is empty (a cam's `s`, `ds_dphi`).
     pub fn quantity(&self) -> String {
         if self.subject.is_empty() {
             return self.symbol.key().to_string();
@@ -306,11 +339,13 @@ pub enum Method {
     Formula,
     /// Read off the meshing picture.
     Meshing,
+    /// A cam's combined diagram (S against dS/dφ or d²S/dφ²) with its γ_min lines.
+    CombinedDiagram,
 }
 
 impl Method {
     /// Every method, in report order.
-    pub const ALL: [Method; 13] = [
+    pub const ALL: [Method; 14] = [
         Method::Plan,
         Method::DiagramChords,
         Method::DiagramTangents,
@@ -324,6 +359,7 @@ impl Method {
         Method::Merkin,
         Method::Formula,
         Method::Meshing,
+        Method::CombinedDiagram,
     ];
 
     /// The name in JSON and CSV: `plan`, `diagram-chords`, `diagram-tangents`, …; every
@@ -343,6 +379,7 @@ impl Method {
             Method::Merkin => "merkin",
             Method::Formula => "formula",
             Method::Meshing => "meshing",
+            Method::CombinedDiagram => "combined-diagram",
         }
     }
 
@@ -382,6 +419,11 @@ impl Method {
             Method::Merkin => lang.pick("Меркин", "Меркін", "Merkin"),
             Method::Formula => lang.pick("формула", "формула", "formula"),
             Method::Meshing => lang.pick("картина зацепления", "картина зачеплення", "meshing"),
+            Method::CombinedDiagram => lang.pick(
+                "совмещённая диаграмма",
+                "суміщена діаграма",
+                "combined diagram",
+            ),
         }
     }
 }

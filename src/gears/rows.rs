@@ -48,7 +48,7 @@ pub fn pair_rows(p: &Pair) -> Vec<Row> {
     let m = p.spec.module;
     let mut out = vec![
         row(
-            Symbol::PressureAngle,
+            Symbol::EngagementAngle,
             "w",
             f,
             p.alpha_w.to_degrees(),

@@ -1,6 +1,7 @@
 //! Reading a scene file: TOML → raw structs → one validation pass → [`Scene`].
 
 use super::balancing::balancing;
+use super::cam::cam;
 use super::check::{item, quoted, Checker};
 use super::dynamics::dynamics;
 use super::error::SceneError;
@@ -73,6 +74,8 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let has_dynamics = raw.dynamics.is_some();
     let has_gears = raw.gears.is_some() || raw.planetary.is_some();
     let gears = gear_sections(&mut check, raw.gears.as_ref(), raw.planetary.as_ref());
+    let has_cam = raw.cam.is_some();
+    let cam = raw.cam.as_ref().and_then(|c| cam(&mut check, c));
     let balancing = raw
         .balancing
         .as_ref()
@@ -84,6 +87,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         "friction" => has_friction,
         "dynamics" => has_dynamics,
         "gears" => has_gears,
+        "cam" => has_cam,
         _ => false,
     });
     let friction = friction(&mut check, raw.friction);
@@ -114,6 +118,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             friction,
             dynamics,
             gears,
+            cam,
         })
     } else {
         Err(SceneError::Invalid {
@@ -195,6 +200,7 @@ fn plates(
         PlateKind::Balancing,
         PlateKind::Friction,
         PlateKind::Gears,
+        PlateKind::Cam,
     ]
     .into_iter()
     .filter(|k| present(k.section()))

@@ -1,6 +1,7 @@
 //! Scene files (`constructions/*.toml`) → validated domain inputs.
 
 mod balancing;
+mod cam;
 mod check;
 mod dynamics;
 mod error;

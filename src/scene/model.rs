@@ -52,6 +52,9 @@ pub enum PlateKind {
     Dynamics,
     /// Gears: the meshing picture, the specific sliding, the generated wheels, the tables.
     Gears,
+    /// The cam sheet: the diagrams by graphical integration, the combined diagram with the
+    /// zone, the profile by inversion, the angle graph and the data table.
+    Cam,
 }
 
 impl PlateKind {
@@ -65,10 +68,11 @@ impl PlateKind {
             PlateKind::Friction => "friction",
             PlateKind::Dynamics => "dynamics",
             PlateKind::Gears => "gears",
+            PlateKind::Cam => "cam",
         }
     }
     /// The scene section a plate of this kind draws from (`mechanism`, `forces`,
-    /// `balancing`, `friction`).
+    /// `balancing`, `friction`, `dynamics`, `gears`, `cam`).
     pub fn section(self) -> &'static str {
         match self {
             PlateKind::Positions | PlateKind::Kinematics => "mechanism",
@@ -77,10 +81,11 @@ impl PlateKind {
             PlateKind::Friction => "friction",
             PlateKind::Dynamics => "dynamics",
             PlateKind::Gears => "gears",
+            PlateKind::Cam => "cam",
         }
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 7] = [
+    pub const ALL: [PlateKind; 8] = [
         PlateKind::Positions,
         PlateKind::Kinematics,
         PlateKind::Forces,
@@ -88,6 +93,7 @@ impl PlateKind {
         PlateKind::Friction,
         PlateKind::Dynamics,
         PlateKind::Gears,
+        PlateKind::Cam,
     ];
 
     /// Parse a stem.
@@ -142,4 +148,6 @@ pub struct Scene {
     pub dynamics: Option<crate::dynamics::DynamicsSpec>,
     /// The gear study (`[gears]`), when the scene has one.
     pub gears: Option<crate::gears::GearsSpec>,
+    /// The cam (`[cam]`), when the scene has one.
+    pub cam: Option<crate::cam::CamSpec>,
 }

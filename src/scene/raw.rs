@@ -20,6 +20,7 @@ pub(crate) struct RawScene {
     pub dynamics: Option<super::dynamics::RawDynamics>,
     pub gears: Option<super::gears::RawGears>,
     pub planetary: Option<super::gears::RawPlanetary>,
+    pub cam: Option<super::cam::RawCam>,
 }
 
 /// `[task]`: the title block.

@@ -2,6 +2,7 @@
 //! sheets.
 
 mod balancing;
+mod cam;
 mod captions;
 mod dynamics;
 mod fit;
@@ -122,6 +123,7 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
         PlateKind::Friction => friction::build(session, lang),
         PlateKind::Dynamics => dynamics::build(session, lang),
         PlateKind::Gears => gears::build(session, lang),
+        PlateKind::Cam => cam::build(session, lang),
     }
 }
 

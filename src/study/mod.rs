@@ -75,6 +75,12 @@ pub enum StudyError {
     /// The gear study cannot be carried out.
     #[error(transparent)]
     Gears(#[from] crate::gears::GearError),
+    /// The scene has no `[cam]` and the study needs one.
+    #[error("the scene has no [cam]: {0} needs one")]
+    NoCam(&'static str),
+    /// The cam cannot be constructed.
+    #[error(transparent)]
+    Cam(#[from] crate::cam::CamError),
 }
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -206,6 +212,7 @@ pub struct Session<'s> {
     friction: Memo<(), Cached<Vec<Solved>>>,
     dynamics: Memo<(), Cached<crate::dynamics::Dynamics>>,
     gears: Memo<(), Cached<crate::gears::GearStudy>>,
+    cam: Memo<(), Cached<crate::cam::Cam>>,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -230,6 +237,7 @@ impl<'s> Session<'s> {
             friction: Memo::default(),
             dynamics: Memo::default(),
             gears: Memo::default(),
+            cam: Memo::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -640,6 +648,20 @@ impl<'s> Session<'s> {
         })
     }
 
+    /// The scene's cam (`[cam]`): its diagrams, minimum radius and profile, constructed once.
+    pub fn cam(&self) -> Cached<crate::cam::Cam> {
+        self.cam.get((), || {
+            let spec = self
+                .scene
+                .cam
+                .as_ref()
+                .ok_or(StudyError::NoCam("the cam sheet"))?;
+            let c = crate::cam::build(spec, &self.ctx()?)?;
+            self.logged("profile by inversion", "", c.inversion.scale);
+            Ok(Arc::new(c))
+        })
+    }
+
     /// The report of every study of the scene: the kinematic study of its mechanism (with its
     /// force analysis), the balancing of its rotor and its friction cases, each that the scene
     /// has, rows and notes in that order. A scene with none is refused for want of a mechanism.
@@ -648,7 +670,8 @@ impl<'s> Session<'s> {
             Some(_) => self.kinematics_report()?,
             None if self.scene.balancing.is_none()
                 && self.scene.friction.is_empty()
-                && self.scene.gears.is_none() =>
+                && self.scene.gears.is_none()
+                && self.scene.cam.is_none() =>
             {
                 return Err(StudyError::NoMechanism("the report"))
             }
@@ -677,6 +700,11 @@ impl<'s> Session<'s> {
             let g = self.gears()?;
             rep.rows.extend(g.rows());
             rep.notes.extend(g.notes());
+        }
+        if self.scene.cam.is_some() {
+            let c = self.cam()?;
+            rep.rows.extend(c.rows());
+            rep.notes.extend(c.notes());
         }
         Ok(rep)
     }

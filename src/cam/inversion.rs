@@ -1,0 +1,312 @@
+//! The profile by inversion: the follower's positions turned by −φ about the cam centre,
+//! the pitch curve, the roller circles (or the face lines) and the practical profile; the
+//! angle read off the drawing; the drawn pitch curve's smallest radius of curvature.
+
+use super::exact::{self, jay, to_cam, Kin, Motion, Placement, Point};
+use super::{CamError, CamSpec, Follower};
+use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::geom::{Arc, Circle, DVec2, Segment};
+use crate::scale::{Quantity, Scale};
+use std::f64::consts::TAU;
+
+/// Largest radius of the profile drawing, mm.
+const PROFILE_MM: f64 = 120.0;
+/// The profile by inversion.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Inversion {
+    /// The drawing at μ_l.
+    pub figure: Figure,
+    /// μ_l.
+    pub scale: Scale,
+    /// The pitch-curve points (roller centres, knife edge, or the flat face's foot), cam frame.
+    pub centres: Vec<DVec2>,
+    /// The practical profile's points (roller tangency, face contact), cam frame.
+    pub profile: Vec<DVec2>,
+    /// The pressure (transmission) angle read off the drawing at every point, rad.
+    pub angles: Vec<f64>,
+    /// The smallest convex radius of curvature of the drawn pitch curve (or of the flat
+    /// profile r₀ + S + S″ from the drawn values), m.
+    pub rho_min: f64,
+}
+
+/// The profile by inversion at μ_l.
+pub(crate) fn invert(
+    spec: &CamSpec,
+    points: &[Point],
+    read: &[Motion],
+    place: &Placement,
+    base: f64,
+    roller: f64,
+    ctx: &Context,
+) -> Result<Inversion, CamError> {
+    let reach = match *place {
+        Placement::Rocker { pivot, arm, .. } => pivot.length() + arm,
+        Placement::Translating { .. } => base + spec.stroke + spec.offset().abs(),
+    };
+    let mu = match spec.scale_l {
+        Some(s) => s,
+        None => Scale::round_for(reach, PROFILE_MM, Quantity::Length).ok_or(CamError::NoScale {
+            what: "μ_l",
+            size: reach,
+        })?,
+    };
+    let mm = |p: DVec2| p / mu.value();
+    let mut rec = Recorder::in_context("inversion", mu, ctx);
+    let o = rec.draw(
+        "cam centre O_1",
+        Item::Joint {
+            at: DVec2::ZERO,
+            fixed: true,
+        },
+        Role::Given,
+        &[],
+    );
+    rec.label(o, "O_1", DVec2::ZERO, DVec2::new(-0.7, -0.7));
+    let flat = matches!(spec.follower, Follower::Flat { .. });
+    rec.draw(
+        "base circle r_0",
+        Item::Circle(Circle {
+            center: DVec2::ZERO,
+            radius: mu.to_mm(base),
+        }),
+        Role::Construction,
+        &[o],
+    );
+    if let Placement::Translating { offset, .. } = *place {
+        if offset != 0.0 && !flat {
+            rec.draw(
+                "offset circle e",
+                Item::Circle(Circle {
+                    center: DVec2::ZERO,
+                    radius: mu.to_mm(offset.abs()),
+                }),
+                Role::Construction,
+                &[o],
+            );
+        }
+    }
+    let mut centres = Vec::with_capacity(points.len());
+    let mut profile = Vec::with_capacity(points.len());
+    let mut kins: Vec<Kin> = Vec::with_capacity(points.len());
+    for (i, p) in points.iter().enumerate() {
+        rec.set_group(i as u32 + 1);
+        let m = read.get(i).copied().unwrap_or(Motion {
+            s: 0.0,
+            ds: 0.0,
+            d2s: 0.0,
+        });
+        let kin = place.kin(m);
+        let c = to_cam(kin.b, p.phi);
+        // The compass arc about O₁ through B_i (radius O₁B_i), notched where it meets ray i.
+        rec.draw(
+            format!("arc about O_1 from B_{i} to ray {i}"),
+            Item::Arc(Arc::notch(DVec2::ZERO, mm(c), 4.0)),
+            Role::Construction,
+            &[o],
+        );
+        // The follower in its inverted position.
+        let fol = match *place {
+            Placement::Rocker { pivot, .. } => Segment::new(mm(to_cam(pivot, p.phi)), mm(c)),
+            Placement::Translating { offset, .. } if !flat => {
+                Segment::new(mm(to_cam(DVec2::new(offset, 0.0), p.phi)), mm(c))
+            }
+            Placement::Translating { .. } => {
+                let dir = to_cam(DVec2::X, p.phi);
+                let half = mu.to_mm(spec.stroke.max(m.ds.abs()) * 0.6 + 0.002);
+                let foot = mm(to_cam(DVec2::new(0.0, base + m.s), p.phi));
+                Segment::new(foot - dir * half, foot + dir * half)
+            }
+        };
+        rec.draw(
+            format!("follower at position {i}"),
+            Item::Segment(fol),
+            Role::Construction,
+            &[o],
+        );
+        let t = if flat {
+            let (q, _) = exact::flat_contact(base, m);
+            to_cam(q, p.phi)
+        } else {
+            if roller > 0.0 {
+                rec.draw(
+                    format!("roller at {i}"),
+                    Item::Circle(Circle {
+                        center: mm(c),
+                        radius: mu.to_mm(roller),
+                    }),
+                    Role::Construction,
+                    &[],
+                );
+            }
+            to_cam(kin.roller_point(roller), p.phi)
+        };
+        let pid = rec.point(
+            format!("pitch point {i}"),
+            mm(c),
+            Role::Construction,
+            "",
+            DVec2::ZERO,
+            &[],
+        );
+        // The phases' ends are labelled (the textbook's 0, n, n + 1, 2n + 1).
+        if p.k == 0 || p.k == spec.divisions {
+            rec.label(pid, p.label.clone(), mm(c), mm(c).normalize_or_zero());
+        }
+        centres.push(c);
+        profile.push(t);
+        kins.push(kin);
+    }
+    rec.set_group(0);
+    let dwell = |from: DVec2, to: DVec2| -> Vec<DVec2> {
+        let a = Arc::between(DVec2::ZERO, from.length(), from, to);
+        // The dwell is swept clockwise in the cam frame (the short way is right for < 180°).
+        let sweep = if a.sweep > 0.0 {
+            a.sweep - TAU
+        } else {
+            a.sweep
+        };
+        let n = 24;
+        (1..n)
+            .map(|j| DVec2::from_angle(a.start + sweep * j as f64 / n as f64) * from.length())
+            .collect()
+    };
+    let n = spec.divisions;
+    let closed = |pts: &[DVec2]| -> Vec<DVec2> {
+        let mut out: Vec<DVec2> = pts[..=n].to_vec();
+        out.extend(dwell(pts[n], pts[n + 1]));
+        out.extend_from_slice(&pts[n + 1..]);
+        out.extend(dwell(pts[2 * n + 1], pts[0]));
+        out.into_iter().map(mm).collect()
+    };
+    if !flat {
+        rec.draw(
+            "pitch (theoretical) profile",
+            Item::Polyline {
+                points: closed(&centres),
+                closed: true,
+            },
+            Role::Construction,
+            &[o],
+        );
+    }
+    rec.draw(
+        if flat {
+            "practical profile: envelope of the face lines"
+        } else {
+            "practical profile: envelope of the rollers"
+        },
+        Item::Polyline {
+            points: closed(&profile),
+            closed: true,
+        },
+        Role::Result,
+        &[o],
+    );
+    // The angle read off the drawing: the normal to the chord through the neighbours against
+    // the follower's direction in its inverted position.
+    // At a phase's end the neighbour is read on the drawn dwell arc, one step on (the arc
+    // about O of the dwell's radius), so every chord is central.
+    let beyond = |i: usize, forward: bool| -> DVec2 {
+        let p = &points[i];
+        let step = if p.phase == 0 {
+            spec.phases.rise
+        } else {
+            spec.phases.ret
+        } / spec.divisions as f64;
+        let dwell = match (p.phase, forward) {
+            (0, true) => spec.phases.far,
+            (0, false) | (2, true) => spec.phases.near,
+            _ => spec.phases.far,
+        };
+        if dwell <= 0.0 {
+            return centres[i];
+        }
+        let d = step.min(dwell);
+        let phi = if forward { p.phi + d } else { p.phi - d };
+        let s = if (p.phase == 0) == forward {
+            spec.stroke
+        } else {
+            0.0
+        };
+        let m = Motion {
+            s,
+            ds: 0.0,
+            d2s: 0.0,
+        };
+        to_cam(place.kin(m).b, phi)
+    };
+    let angles = (0..points.len())
+        .map(|i| {
+            let (lo, hi) = neighbours(points, i);
+            let a = if lo == i {
+                beyond(i, false)
+            } else {
+                centres[lo]
+            };
+            let b = if hi == i {
+                beyond(i, true)
+            } else {
+                centres[hi]
+            };
+            let t = b - a;
+            let nrm = jay(t);
+            let path = to_cam(kins[i].path, points[i].phi);
+            let c = (nrm.dot(path).abs() / nrm.length()).clamp(0.0, 1.0);
+            c.acos()
+        })
+        .collect();
+    let rho_min = if flat {
+        read.iter()
+            .map(|m| base + m.s + m.d2s)
+            .fold(f64::INFINITY, f64::min)
+    } else {
+        drawn_rho_min(points, &centres)
+    };
+    Ok(Inversion {
+        figure: rec.finish(),
+        scale: mu,
+        centres,
+        profile,
+        angles,
+        rho_min,
+    })
+}
+
+/// The neighbours of point `i` within its phase (one-sided at the phase's ends).
+fn neighbours(points: &[Point], i: usize) -> (usize, usize) {
+    let same = |j: usize| points.get(j).is_some_and(|q| q.phase == points[i].phase);
+    let lo = if i > 0 && same(i - 1) { i - 1 } else { i };
+    let hi = if same(i + 1) { i + 1 } else { i };
+    (lo, hi)
+}
+
+/// The smallest radius of the circles through three consecutive drawn pitch points that
+/// turn like the cam (convex), within each phase; the dwell arcs' radii too.
+fn drawn_rho_min(points: &[Point], c: &[DVec2]) -> f64 {
+    let mut best = f64::INFINITY;
+    for i in 1..points.len().saturating_sub(1) {
+        if points[i - 1].phase != points[i].phase || points[i + 1].phase != points[i].phase {
+            continue;
+        }
+        let (a, b, d) = (c[i - 1], c[i], c[i + 1]);
+        let cross = (b - a).perp_dot(d - b);
+        // Clockwise turning is convex (the cam frame's curve runs clockwise).
+        if cross < 0.0 {
+            let r = a.distance(b) * b.distance(d) * d.distance(a) / (2.0 * cross.abs());
+            best = best.min(r);
+        }
+    }
+    for p in [
+        c.first(),
+        points
+            .iter()
+            .position(|p| p.phase == 2)
+            .and_then(|j| c.get(j)),
+    ]
+    .into_iter()
+    .flatten()
+    {
+        best = best.min(p.length());
+    }
+    best
+}

@@ -1,0 +1,191 @@
+//! Cam mechanisms (lectures 13–18 of seed 001, PZ4–PZ5 of seed 002, §3 of seed 000): the
+//! follower's motion law per phase, its diagrams by graphical integration, the minimum cam
+//! radius from the combined diagram (translating roller or knife edge, rocker) or from
+//! convexity (flat face), the profile by inversion, and the pressure / transmission angle.
+//!
+//! Every procedure exists twice: a construction through the recorder (the diagrams
+//! integrated with the chord/pole method of [`crate::calculus`], the combined diagram with
+//! its γ_min lines and zone, the inverted follower positions with the roller circles or the
+//! face lines and their envelope) and an analytic twin ([`exact`]: the closed-form law, the
+//! pitch curve, its curvature and the exact envelope, the minimum radius over the whole
+//! cycle). [`Cam::rows`] compares them.
+//!
+//! Frame: the cam turns counter-clockwise about O at the origin; in the inverted motion the
+//! follower turns clockwise (by −φ). A translating follower moves along +y, its axis at
+//! x = e (e > 0 is the side that lowers the pressure angle on the rise). A rocker's pivot O₂
+//! is placed by the minimum-radius construction.
+
+mod construct;
+mod diagrams;
+pub mod exact;
+mod inversion;
+mod law;
+mod radius;
+mod rows;
+#[cfg(test)]
+mod tests;
+
+pub use construct::{build, Cam};
+pub use diagrams::Diagrams;
+pub use inversion::Inversion;
+pub use law::{Law, Shock};
+pub use radius::RadiusConstruction;
+pub use rows::{deviation, deviation_at, inversion_at};
+
+use crate::scale::Scale;
+use thiserror::Error;
+
+/// The four phases (rise, far dwell, return, near dwell), radians; they sum to 2π.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Phases {
+    /// φ_у, the rise.
+    pub rise: f64,
+    /// φ_д.в., the far dwell.
+    pub far: f64,
+    /// φ_п, the return.
+    pub ret: f64,
+    /// φ_б.в., the near dwell.
+    pub near: f64,
+}
+
+/// The follower.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Follower {
+    /// A translating follower with a roller (or a knife edge), its axis offset by `offset`
+    /// (m, signed; > 0: the favourable side for the rise).
+    Translating {
+        /// e, m.
+        offset: f64,
+    },
+    /// An oscillating (rocker) roller follower of arm `arm` (m); S = arm·β.
+    Rocker {
+        /// L, m.
+        arm: f64,
+        /// The rocker turns on the rise in the cam's sense (the seed's rule: dS/dφ laid
+        /// towards the pivot on the rise); otherwise against it.
+        same_sense: bool,
+    },
+    /// A translating flat-faced follower (the face ⊥ its axis), axis offset `offset` (m).
+    Flat {
+        /// e, m (it does not change the profile).
+        offset: f64,
+    },
+}
+
+/// A cam task, SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CamSpec {
+    /// The phases.
+    pub phases: Phases,
+    /// The law of the rise.
+    pub rise: Law,
+    /// The law of the return.
+    pub ret: Law,
+    /// The stroke S_max, m (for a rocker the arc arm·β_max).
+    pub stroke: f64,
+    /// The follower.
+    pub follower: Follower,
+    /// The roller radius, m: `Some(0)` a knife edge, `None` chosen as
+    /// min(0.4·r_min, 0.8·ρ_min). Not used by a flat face.
+    pub roller: Option<f64>,
+    /// γ_min, rad (the pressure angle ≤ 90° − γ_min); a flat face's is unused.
+    pub gamma_min: f64,
+    /// ρ_min of a flat-faced cam's profile (the margin over convexity), m.
+    pub rho_min: f64,
+    /// The base (minimum) radius r₀ of the pitch curve, m; `None`: the minimum found.
+    pub base_radius: Option<f64>,
+    /// Intervals of the rise and of the return (the diagrams' and the inversion's points).
+    pub divisions: usize,
+    /// μ_S of the diagrams (m/mm); `None`: chosen for a 60 mm stroke.
+    pub scale_s: Option<Scale>,
+    /// μ_l of the profile (m/mm); `None`: chosen for a 90 mm largest radius.
+    pub scale_l: Option<Scale>,
+    /// μ_φ of the diagrams (rad/mm); `None`: chosen for a 240 mm cycle.
+    pub scale_phi: Option<Scale>,
+    /// The pole distances H₁ (d²S → dS) and H₂ (dS → S), mm; `None`: chosen so that the
+    /// analogues' peaks are drawn about 40 mm tall.
+    pub poles: Option<[f64; 2]>,
+    /// The source lost its diagrams: the law is assumed (said on the plate).
+    pub law_assumed: bool,
+    /// An r_min quoted by the source, m, to be checked against (never matched).
+    pub quoted_r_min: Option<f64>,
+    /// Force (spring) closure: the pressure angle is checked on the rise only (seed 002,
+    /// L1477); otherwise (geometric closure) over the whole cycle.
+    pub force_closure: bool,
+}
+
+impl CamSpec {
+    /// The phase starts φ₀ of rise, far dwell, return, near dwell and the end 2π.
+    pub fn starts(&self) -> [f64; 5] {
+        let p = &self.phases;
+        [
+            0.0,
+            p.rise,
+            p.rise + p.far,
+            p.rise + p.far + p.ret,
+            p.rise + p.far + p.ret + p.near,
+        ]
+    }
+    /// The rocker's arm, when the follower is a rocker.
+    pub fn arm(&self) -> Option<f64> {
+        match self.follower {
+            Follower::Rocker { arm, .. } => Some(arm),
+            _ => None,
+        }
+    }
+    /// The follower's offset e (0 for a rocker).
+    pub fn offset(&self) -> f64 {
+        match self.follower {
+            Follower::Translating { offset } | Follower::Flat { offset } => offset,
+            Follower::Rocker { .. } => 0.0,
+        }
+    }
+}
+
+/// Why a cam cannot be constructed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum CamError {
+    /// The graphical integration failed.
+    #[error("cam: {0}")]
+    Calculus(#[from] crate::calculus::CalculusError),
+    /// No centre of the cam satisfies γ ≥ γ_min within the search.
+    #[error(
+        "cam: no cam centre keeps the transmission angle ≥ {gamma_deg:.1}° (searched up to \
+         r = {searched:.4} m)"
+    )]
+    NoCentre {
+        /// γ_min, degrees.
+        gamma_deg: f64,
+        /// The largest radius searched, m.
+        searched: f64,
+    },
+    /// The roller is not smaller than the base radius.
+    #[error(
+        "cam: the roller radius {roller:.5} m is not smaller than the base radius {base:.5} m"
+    )]
+    RollerTooLarge {
+        /// r_р, m.
+        roller: f64,
+        /// r₀, m.
+        base: f64,
+    },
+    /// The given base radius is not larger than the offset.
+    #[error("cam: the base radius {base:.5} m must exceed the offset |e| = {offset:.5} m")]
+    BaseWithinOffset {
+        /// r₀, m.
+        base: f64,
+        /// |e|, m.
+        offset: f64,
+    },
+    /// No round drawing scale can be chosen.
+    #[error("cam: no drawing scale {what} can be chosen for the size {size}")]
+    NoScale {
+        /// The scale.
+        what: &'static str,
+        /// The size, SI.
+        size: f64,
+    },
+    /// The tolerances of the figures cannot be set up.
+    #[error("cam: tolerances: {0}")]
+    Tolerances(String),
+}

@@ -1,0 +1,436 @@
+//! The minimum radius as a construction: the combined diagram S(dS/dφ) with the γ_min lines
+//! and the zone (translating), dS/dφ laid along the rocker with the γ_min lines (rocker), the
+//! S(d²S/dφ²) diagram with its 45° tangent (flat face); each beside its exact twin.
+
+use super::diagrams::{read_motion, Diagrams};
+use super::exact::{self, Motion, Placement, Point};
+use super::{CamError, CamSpec, Follower};
+use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
+use crate::geom::{Arc, DVec2, Segment};
+use crate::scale::Scale;
+use std::f64::consts::FRAC_PI_2;
+
+/// The minimum-radius construction.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RadiusConstruction {
+    /// The combined diagram (S–dS/dφ with the γ_min lines, the rocker's construction, or
+    /// S–d²S/dφ² with the 45° tangent), at μ_S.
+    pub figure: Figure,
+    /// r_min as read off the drawing, m.
+    pub graphical: f64,
+    /// r_min over the whole cycle (the exact twin), m.
+    pub exact: f64,
+    /// The flat face's max(−(S + S″)) as read and exact, m.
+    pub convexity: Option<(f64, f64)>,
+}
+
+/// The minimum radius: the construction at the drawn points and the exact twin over the
+/// cycle; the placement of the follower for the profile.
+pub(super) fn min_radius(
+    spec: &CamSpec,
+    points: &[Point],
+    d: &Diagrams,
+    ctx: &Context,
+) -> Result<(RadiusConstruction, f64, Placement), CamError> {
+    let mu = d.s_scale;
+    let mut rec = Recorder::in_context("combined", mu, ctx);
+    let gamma = spec.gamma_min;
+    match spec.follower {
+        Follower::Translating { offset } => {
+            let (exact_r, _) = exact::min_radius_translating(spec, offset);
+            // Combined diagram: B₀ at the origin, the path vertical, K_i = B_i − (S′_i, 0).
+            let path = s_axis(&mut rec, spec, mu, exact_r);
+            let ks = combined(d, points.len(), |m| {
+                DVec2::new(-mu.to_mm(m.ds), mu.to_mm(m.s))
+            });
+            for (i, k) in ks.iter().enumerate() {
+                let b = DVec2::new(0.0, k.y);
+                rec.draw(
+                    format!("dS/dφ at point {i}"),
+                    Item::Segment(Segment::new(b, *k)),
+                    Role::Construction,
+                    &[],
+                );
+            }
+            rec.draw(
+                "combined diagram S(dS/dφ)",
+                Item::Polyline {
+                    points: ks.clone(),
+                    closed: true,
+                },
+                Role::Result,
+                &[path],
+            );
+            // O on the vertical x = −e: the highest point below every γ_min line.
+            let ox = -mu.to_mm(offset);
+            let t = gamma.tan();
+            let (mut best, mut bind) = (f64::INFINITY, 0);
+            // Under force closure only the rise's points bind.
+            let binds = |i: usize| !spec.force_closure || points[i].phase == 0;
+            for (i, k) in ks.iter().enumerate().filter(|(i, _)| binds(*i)) {
+                let y = k.y - (k.x - ox).abs() * t;
+                if y < best {
+                    best = y;
+                    bind = i;
+                }
+            }
+            let o = DVec2::new(ox, best);
+            zone_lines(&mut rec, &ks, o, gamma, bind);
+            let bound: Vec<DVec2> = ks
+                .iter()
+                .enumerate()
+                .filter(|(i, _)| binds(*i))
+                .map(|(_, k)| *k)
+                .collect();
+            hatch_zone(&mut rec, &bound, o, t);
+            let oid = rec.point(
+                "cam centre O_1",
+                o,
+                Role::Result,
+                "O_1",
+                DVec2::new(-1.0, -0.5),
+                &[],
+            );
+            let r = rec.measure(o, DVec2::ZERO);
+            rec.draw(
+                "r_min",
+                Item::Segment(Segment::new(o, DVec2::ZERO)),
+                Role::Dimension,
+                &[oid],
+            );
+            let base = spec.base_radius.unwrap_or(exact_r);
+            if base <= offset.abs() {
+                return Err(CamError::BaseWithinOffset {
+                    base,
+                    offset: offset.abs(),
+                });
+            }
+            let s0 = (base * base - offset * offset).sqrt();
+            Ok((
+                RadiusConstruction {
+                    figure: rec.finish(),
+                    graphical: r.value,
+                    exact: exact_r,
+                    convexity: None,
+                },
+                base,
+                Placement::Translating { offset, s0 },
+            ))
+        }
+        Follower::Rocker { arm, .. } => {
+            let (exact_r, o_exact) = exact::min_radius_rocker(spec).ok_or(CamError::NoCentre {
+                gamma_deg: gamma.to_degrees(),
+                searched: 20.0 * arm,
+            })?;
+            let (_, sigma) = exact::rocker_of(spec);
+            let l = mu.to_mm(arm);
+            let pivot = DVec2::ZERO;
+            let a0 = DVec2::new(0.0, l);
+            let pid = rec.draw(
+                "rocker pivot O_2",
+                Item::Joint {
+                    at: pivot,
+                    fixed: true,
+                },
+                Role::Given,
+                &[],
+            );
+            rec.label(pid, "O_2", pivot, DVec2::new(0.7, -0.7));
+            let beta_max = spec.stroke / arm;
+            rec.draw(
+                "trajectory of A",
+                Item::Arc(Arc {
+                    center: pivot,
+                    radius: l,
+                    start: FRAC_PI_2 - beta_max.max(0.0) - 0.05,
+                    sweep: 2.0 * beta_max + 0.1,
+                }),
+                Role::Construction,
+                &[pid],
+            );
+            let mut cons = Vec::new();
+            let mut ks = Vec::new();
+            for (i, p) in points.iter().enumerate() {
+                let m = read_motion(d, i);
+                let psi = FRAC_PI_2 + sigma * m.s / arm;
+                let e = DVec2::from_angle(psi);
+                let a = pivot + e * l;
+                let k = a - e * (sigma * mu.to_mm(m.ds));
+                rec.draw(
+                    format!("rocker O_2A_{i}"),
+                    Item::Segment(Segment::new(pivot, a)),
+                    Role::Construction,
+                    &[pid],
+                );
+                ks.push(k);
+                if !spec.force_closure || p.phase == 0 {
+                    cons.push((k, e));
+                }
+            }
+            rec.draw(
+                "curve of the points K",
+                Item::Polyline {
+                    points: ks.clone(),
+                    closed: true,
+                },
+                Role::Result,
+                &[],
+            );
+            let o = rocker_centre(&cons, a0, gamma).ok_or(CamError::NoCentre {
+                gamma_deg: gamma.to_degrees(),
+                searched: 20.0 * l,
+            })?;
+            rocker_lines(&mut rec, &cons, o, gamma);
+            let oid = rec.point(
+                "cam centre O_1",
+                o,
+                Role::Result,
+                "O_1",
+                DVec2::new(1.0, 0.5),
+                &[],
+            );
+            rec.draw(
+                "r_min",
+                Item::Segment(Segment::new(o, a0)),
+                Role::Dimension,
+                &[oid],
+            );
+            rec.draw(
+                "centre distance",
+                Item::Segment(Segment::new(o, pivot)),
+                Role::Construction,
+                &[oid, pid],
+            );
+            let r = rec.measure(o, a0);
+            // The profile uses the exact centre (or the given base radius along its direction).
+            let dir = (o_exact - DVec2::new(0.0, arm)).normalize_or_zero();
+            let base = spec.base_radius.unwrap_or(exact_r);
+            let o_used = DVec2::new(0.0, arm) + dir * base;
+            let pivot_cam = -o_used;
+            Ok((
+                RadiusConstruction {
+                    figure: rec.finish(),
+                    graphical: r.value,
+                    exact: exact_r,
+                    convexity: None,
+                },
+                base,
+                Placement::Rocker {
+                    pivot: pivot_cam,
+                    arm,
+                    psi0: FRAC_PI_2,
+                    sigma,
+                },
+            ))
+        }
+        Follower::Flat { offset } => {
+            let (exact_r, worst) = exact::min_radius_flat(spec);
+            // S vertical, S″ horizontal, both at μ_S; the 45° tangent on the negative side.
+            let ax = s_axis(&mut rec, spec, mu, exact_r);
+            let pts = combined(d, points.len(), |m| {
+                DVec2::new(mu.to_mm(m.d2s), mu.to_mm(m.s))
+            });
+            let xs = pts.iter().fold(0.0f64, |a, p| a.max(p.x.abs()));
+            let hx = rec.draw(
+                "d²S/dφ² axis",
+                Item::Vector {
+                    from: DVec2::new(-xs - 10.0, 0.0),
+                    to: DVec2::new(xs + 12.0, 0.0),
+                },
+                Role::Axis,
+                &[],
+            );
+            rec.label(
+                hx,
+                "d^2S/dφ^2",
+                DVec2::new(xs + 12.0, 0.0),
+                DVec2::new(0.0, -1.0),
+            );
+            rec.draw(
+                "combined diagram S(d²S/dφ²)",
+                Item::Polyline {
+                    points: pts.clone(),
+                    closed: true,
+                },
+                Role::Result,
+                &[ax, hx],
+            );
+            // The 45° line touching the curve: the least S + S″ among the drawn points.
+            let (i, c) = pts
+                .iter()
+                .enumerate()
+                .map(|(i, p)| (i, p.x + p.y))
+                .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+            let touch = pts.get(i).copied().unwrap_or(DVec2::ZERO);
+            let oi = DVec2::new(0.0, c.min(0.0));
+            rec.draw(
+                "tangent at 45°",
+                Item::Segment(Segment::new(
+                    oi + DVec2::new(-15.0, 15.0),
+                    touch + DVec2::new(15.0, -15.0),
+                )),
+                Role::Construction,
+                &[],
+            );
+            rec.point("O_I", oi, Role::Result, "O_I", DVec2::new(1.0, -0.5), &[]);
+            let rho = mu.to_mm(spec.rho_min);
+            let o = DVec2::new(mu.to_mm(offset), oi.y - rho);
+            rec.point(
+                "cam centre O′_1 (with ρ_min)",
+                o,
+                Role::Result,
+                "O′_1",
+                DVec2::new(1.0, -0.5),
+                &[],
+            );
+            let read_c = rec.measure(oi, DVec2::ZERO).value.copysign(-c);
+            let graphical = read_c.max(0.0) + spec.rho_min;
+            let base = spec.base_radius.unwrap_or(exact_r);
+            Ok((
+                RadiusConstruction {
+                    figure: rec.finish(),
+                    graphical,
+                    exact: exact_r,
+                    convexity: Some((read_c, worst)),
+                },
+                base,
+                Placement::Translating {
+                    offset: 0.0,
+                    s0: base,
+                },
+            ))
+        }
+    }
+}
+
+/// The S axis of a combined diagram: from below the centre (r_min under B₀) to above the
+/// stroke, labelled.
+fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, r: f64) -> StepId {
+    let top = DVec2::new(0.0, mu.to_mm(spec.stroke) + 12.0);
+    let ax = rec.draw(
+        "S axis",
+        Item::Vector {
+            from: DVec2::new(0.0, -mu.to_mm(r) - 10.0),
+            to: top,
+        },
+        Role::Axis,
+        &[],
+    );
+    rec.label(ax, "S", top, DVec2::new(1.0, 0.0));
+    ax
+}
+
+/// The points of a combined diagram: `at` of the motion read at each of the `n` points.
+fn combined(d: &Diagrams, n: usize, at: impl Fn(Motion) -> DVec2) -> Vec<DVec2> {
+    (0..n).map(|i| at(read_motion(d, i))).collect()
+}
+
+/// The γ_min lines of the translating follower's combined diagram: the two tangents through
+/// the binding points (long), a short tick at every other point.
+fn zone_lines(rec: &mut Recorder, ks: &[DVec2], o: DVec2, gamma: f64, bind: usize) {
+    let (c, s) = (gamma.cos(), gamma.sin());
+    for (i, k) in ks.iter().enumerate() {
+        for dir in [DVec2::new(-c, -s), DVec2::new(c, -s)] {
+            let towards_o = (o - *k).dot(dir) > 0.0 && (o.x - k.x) * dir.x >= 0.0;
+            let len = if i == bind && towards_o {
+                (o - *k).length() + 15.0
+            } else {
+                8.0
+            };
+            rec.draw(
+                format!("γ_min line at point {i}"),
+                Item::Segment(Segment::new(*k, *k + dir * len)),
+                Role::Construction,
+                &[],
+            );
+        }
+    }
+}
+
+/// The admissible zone of the cam centre of a translating follower: its upper boundary
+/// g(x) = min over the points of (K_y − |K_x − x|·tan γ_min) near the centre, hatched below.
+fn hatch_zone(rec: &mut Recorder, ks: &[DVec2], o: DVec2, t: f64) {
+    let g = |x: f64| {
+        ks.iter()
+            .map(|k| k.y - (k.x - x).abs() * t)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let half = 25.0;
+    let pts: Vec<DVec2> = (0..=50)
+        .map(|j| {
+            let x = o.x - half + j as f64;
+            DVec2::new(x, g(x))
+        })
+        .filter(|p| p.is_finite() && p.y > o.y - half)
+        .collect();
+    if pts.len() < 2 {
+        return;
+    }
+    let edge = rec.draw(
+        "boundary of the zone of the cam centre",
+        Item::Polyline {
+            points: pts.clone(),
+            closed: false,
+        },
+        Role::Construction,
+        &[],
+    );
+    for p in pts.iter().step_by(4) {
+        rec.draw(
+            "hatching of the zone",
+            Item::Segment(Segment::new(*p, *p + DVec2::new(-3.0, -3.0))),
+            Role::Hatch,
+            &[edge],
+        );
+    }
+}
+
+/// The rocker's graphical centre: among the intersections of the γ_min lines and the feet
+/// of the perpendiculars from A₀ onto them, the admissible one nearest A₀.
+fn rocker_centre(cons: &[(DVec2, DVec2)], a0: DVec2, gamma: f64) -> Option<DVec2> {
+    let lines: Vec<(DVec2, DVec2)> = cons
+        .iter()
+        .flat_map(|&(k, e)| [1.0, -1.0].map(|s| (k, crate::geom::rotate(e, s * gamma))))
+        .collect();
+    let sin_g = gamma.sin();
+    let mut cands = Vec::new();
+    for (i, &(p, u)) in lines.iter().enumerate() {
+        cands.push(p + u * (a0 - p).dot(u));
+        for &(q, v) in &lines[i + 1..] {
+            let den = u.perp_dot(v);
+            if den.abs() > 1e-12 {
+                let t = (q - p).perp_dot(v) / den;
+                cands.push(p + u * t);
+            }
+        }
+    }
+    // Nearest first: the first admissible candidate is the centre (most fail at once).
+    cands.retain(|c| c.is_finite());
+    cands.sort_by(|a, b| a.distance(a0).total_cmp(&b.distance(a0)));
+    cands
+        .into_iter()
+        .find(|c| exact::admits(*c, cons, sin_g, 1e-9))
+}
+
+/// The rocker's γ_min lines: long through O where they bind, short ticks elsewhere.
+fn rocker_lines(rec: &mut Recorder, cons: &[(DVec2, DVec2)], o: DVec2, gamma: f64) {
+    for (i, &(k, e)) in cons.iter().enumerate() {
+        for s in [1.0, -1.0] {
+            let u = crate::geom::rotate(e, s * gamma);
+            let off = (o - k).perp_dot(u).abs();
+            let through = off < 1e-6 * (1.0 + (o - k).length());
+            let (a, b) = if through {
+                let t = (o - k).dot(u);
+                (k - u * 10.0 * t.signum(), k + u * (t + 15.0 * t.signum()))
+            } else {
+                (k - u * 6.0, k + u * 6.0)
+            };
+            rec.draw(
+                format!("γ_min line at K_{i}"),
+                Item::Segment(Segment::new(a, b)),
+                Role::Construction,
+                &[],
+            );
+        }
+    }
+}

@@ -1,0 +1,321 @@
+//! `[cam]` → [`CamSpec`]: the follower, the laws, the phases (degrees, summing to 360), the
+//! stroke (mm, or a rocker's swing in degrees × its arm), the roller, the limits and the
+//! scales, each checked with its key path and converted to SI.
+
+use super::check::{item, join, number, Checker};
+use crate::cam::{CamSpec, Follower, Law, Phases};
+use crate::scale::Quantity;
+use serde::Deserialize;
+
+/// The key path of the section.
+const CAM: &str = "cam";
+/// The followers, as written.
+const FOLLOWERS: [&str; 3] = ["translating", "rocker", "flat"];
+/// The laws, as written.
+const LAWS: [&str; 6] = [
+    "uniform",
+    "constant-acceleration",
+    "cosine",
+    "sine",
+    "trapezoidal",
+    "polynomial-345",
+];
+/// The closures, as written: force (spring, the rise only), geometric (the whole cycle).
+const CLOSURES: [&str; 2] = ["geometric", "force"];
+/// The rocker's senses, as written.
+const SENSES: [&str; 2] = ["same", "opposite"];
+/// The most intervals per moving phase a scene may ask for.
+const MAX_DIVISIONS: i64 = 720;
+
+/// `[cam]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawCam {
+    pub follower: Option<String>,
+    pub law: Option<String>,
+    pub return_law: Option<String>,
+    pub ratio: Option<f64>,
+    pub phases: Option<Vec<f64>>,
+    pub stroke: Option<f64>,
+    pub swing: Option<f64>,
+    pub arm: Option<f64>,
+    pub sense: Option<String>,
+    pub offset: Option<f64>,
+    pub roller: Option<f64>,
+    pub gamma_min: Option<f64>,
+    pub rho_min: Option<f64>,
+    pub base_radius: Option<f64>,
+    pub divisions: Option<i64>,
+    pub poles: Option<Vec<f64>>,
+    pub scale_s: Option<f64>,
+    pub scale_l: Option<f64>,
+    pub scale_phi: Option<f64>,
+    pub law_assumed: Option<bool>,
+    pub quoted_r_min: Option<f64>,
+    pub closure: Option<String>,
+}
+
+/// Validate `[cam]`.
+pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
+    let key = |k: &str| join(CAM, k);
+    let before = check.problems.len();
+    let kind = check.word(&key("follower"), raw.follower.as_ref(), &FOLLOWERS);
+    let ratio = match raw.ratio {
+        Some(r) if r.is_finite() && r > 0.0 && r < 1.0 => r,
+        Some(r) => {
+            check.push(
+                key("ratio"),
+                Some(number(r)),
+                "expected the share of the phase with positive acceleration, 0 < ratio < 1",
+            );
+            0.5
+        }
+        None => 0.5,
+    };
+    let law_of = |check: &mut Checker, k: &str, v: Option<&String>| -> Law {
+        match check.word(&key(k), v, &LAWS) {
+            Some(0) => Law::Uniform,
+            Some(1) => Law::ConstantAcceleration { ratio },
+            Some(2) => Law::Cosine,
+            Some(3) => Law::Sine,
+            Some(4) => Law::Trapezoidal,
+            Some(_) => Law::Polynomial345,
+            None => Law::Cosine,
+        }
+    };
+    let rise = law_of(check, "law", raw.law.as_ref());
+    let ret = match raw.return_law.as_ref() {
+        Some(v) => law_of(check, "return_law", Some(v)),
+        None => rise,
+    };
+    let phases = phases(check, raw.phases.as_deref());
+    let arm = match kind {
+        Some(1) => Some(check.length(&key("arm"), raw.arm)),
+        _ => {
+            if raw.arm.is_some() || raw.swing.is_some() || raw.sense.is_some() {
+                check.push(
+                    key("arm"),
+                    None,
+                    "`arm`, `swing` and `sense` belong to a rocker: expected follower = \"rocker\"",
+                );
+            }
+            None
+        }
+    };
+    let stroke = match (raw.stroke, raw.swing, arm) {
+        (Some(_), Some(_), _) => {
+            check.push(
+                key("stroke"),
+                None,
+                "expected either `stroke` (mm) or a rocker's `swing` (degrees), not both",
+            );
+            0.0
+        }
+        (Some(mm), None, _) => check.length(&key("stroke"), Some(mm)),
+        (None, Some(deg), Some(l)) => {
+            if deg.is_finite() && deg > 0.0 && deg < 180.0 {
+                l * deg.to_radians()
+            } else {
+                check.push(
+                    key("swing"),
+                    Some(number(deg)),
+                    "expected a swing β_max from 0° to 180° (exclusive)",
+                );
+                0.0
+            }
+        }
+        _ => {
+            check.push(
+                key("stroke"),
+                None,
+                "missing: expected the stroke S_max > 0 mm (or, for a rocker, `swing` in degrees)",
+            );
+            0.0
+        }
+    };
+    let offset = check.distance(&key("offset"), raw.offset, 0.0);
+    let same_sense = match raw.sense.as_ref() {
+        Some(s) => check.word(&key("sense"), Some(s), &SENSES) != Some(1),
+        None => true,
+    };
+    let follower = match kind {
+        Some(1) => Follower::Rocker {
+            arm: arm.unwrap_or(0.0),
+            same_sense,
+        },
+        Some(2) => Follower::Flat { offset },
+        _ => Follower::Translating { offset },
+    };
+    let roller = raw.roller.map(|mm| {
+        if mm == 0.0 {
+            0.0
+        } else {
+            check.length(&key("roller"), Some(mm))
+        }
+    });
+    let base_radius = raw
+        .base_radius
+        .map(|mm| check.length(&key("base_radius"), Some(mm)));
+    if let (Some(r), Some(b)) = (roller, base_radius) {
+        if r >= b && b > 0.0 {
+            check.push(
+                key("roller"),
+                Some(number(r * 1e3)),
+                format!(
+                    "expected a roller radius smaller than the base radius {} mm",
+                    number(b * 1e3)
+                ),
+            );
+        }
+    }
+    if let (Some(b), Follower::Translating { offset }) = (base_radius, follower) {
+        if b > 0.0 && b <= offset.abs() {
+            check.push(
+                key("base_radius"),
+                Some(number(b * 1e3)),
+                "expected a base radius larger than |offset|",
+            );
+        }
+    }
+    let gamma_min = match raw.gamma_min {
+        Some(g) if g.is_finite() && g > 0.0 && g < 90.0 => g.to_radians(),
+        Some(g) => {
+            check.push(
+                key("gamma_min"),
+                Some(number(g)),
+                "expected γ_min in degrees, 0 < γ_min < 90",
+            );
+            FRAC_60
+        }
+        None => FRAC_60,
+    };
+    let rho_min = match raw.rho_min {
+        Some(mm) => check.distance(&key("rho_min"), Some(mm), 0.0).max(0.0),
+        None => 0.0,
+    };
+    let divisions = match raw.divisions.unwrap_or(12) {
+        n if (2..=MAX_DIVISIONS).contains(&n) => n as usize,
+        n => {
+            check.push(
+                key("divisions"),
+                Some(n.to_string()),
+                format!("expected from 2 to {MAX_DIVISIONS} intervals per rise and return"),
+            );
+            12
+        }
+    };
+    let poles = match raw.poles.as_deref() {
+        None => None,
+        Some([a, b]) if a.is_finite() && b.is_finite() && *a > 0.0 && *b > 0.0 => Some([*a, *b]),
+        Some(v) => {
+            check.push(
+                key("poles"),
+                Some(format!("{v:?}")),
+                "expected the pole distances [H₁, H₂] > 0 mm",
+            );
+            None
+        }
+    };
+    let force_closure = match raw.closure.as_ref() {
+        Some(c) => check.word(&key("closure"), Some(c), &CLOSURES) == Some(1),
+        None => false,
+    };
+    let spec = CamSpec {
+        phases,
+        rise,
+        ret,
+        stroke,
+        follower,
+        roller,
+        gamma_min,
+        rho_min,
+        base_radius,
+        divisions,
+        scale_s: check.scale(
+            &key("scale_s"),
+            raw.scale_s,
+            Quantity::Length,
+            "a scale μ_S > 0 m/mm",
+        ),
+        scale_l: check.scale(
+            &key("scale_l"),
+            raw.scale_l,
+            Quantity::Length,
+            "a scale μ_l > 0 m/mm",
+        ),
+        scale_phi: check.scale(
+            &key("scale_phi"),
+            raw.scale_phi,
+            Quantity::Angle,
+            "a scale μ_φ > 0 rad/mm",
+        ),
+        poles,
+        law_assumed: raw.law_assumed.unwrap_or(false),
+        quoted_r_min: raw
+            .quoted_r_min
+            .map(|mm| check.length(&key("quoted_r_min"), Some(mm))),
+        force_closure,
+    };
+    (check.problems.len() == before).then_some(spec)
+}
+
+/// 60°, the default γ_min.
+const FRAC_60: f64 = std::f64::consts::FRAC_PI_3;
+
+/// `phases = [rise, far dwell, return, near dwell]`, degrees, ≥ 0, rise and return > 0,
+/// summing to 360.
+fn phases(check: &mut Checker, v: Option<&[f64]>) -> Phases {
+    const WANT: &str =
+        "the phases [rise, far dwell, return, near dwell] in degrees, summing to 360";
+    let key = join(CAM, "phases");
+    let fallback = Phases {
+        rise: 1.0,
+        far: 1.0,
+        ret: 1.0,
+        near: std::f64::consts::TAU - 3.0,
+    };
+    let Some(v) = check.required(&key, v, WANT) else {
+        return fallback;
+    };
+    let [a, b, c, d] = v else {
+        check.push(&key, Some(format!("{v:?}")), format!("expected {WANT}"));
+        return fallback;
+    };
+    let mut ok = true;
+    for (i, (x, moving)) in [(*a, true), (*b, false), (*c, true), (*d, false)]
+        .into_iter()
+        .enumerate()
+    {
+        let bad = !x.is_finite() || x < 0.0 || (moving && x == 0.0);
+        if bad {
+            let want = if moving {
+                "a rise or return angle > 0°"
+            } else {
+                "a dwell angle ≥ 0°"
+            };
+            check.push(item(&key, i), Some(number(x)), format!("expected {want}"));
+            ok = false;
+        }
+    }
+    let sum = a + b + c + d;
+    if ok && (sum - 360.0).abs() > 1e-6 {
+        check.push(
+            &key,
+            Some(format!("{v:?}")),
+            format!(
+                "expected phases summing to 360°, they sum to {}°",
+                number(sum)
+            ),
+        );
+        ok = false;
+    }
+    if !ok {
+        return fallback;
+    }
+    Phases {
+        rise: a.to_radians(),
+        far: b.to_radians(),
+        ret: c.to_radians(),
+        near: d.to_radians(),
+    }
+}

@@ -1,0 +1,167 @@
+//! The cam scenes through the session: seed 000's cam at drafting 0 (the closed-form law to
+//! 1e-9, r_min about 70 mm with the seed's 40 mm flagged, the inversion on the exact pitch
+//! curve), at 0.5 mm the error a hand construction has; every hard-case scene diagnosed; bad
+//! input refused at load with the key named.
+
+use std::path::{Path, PathBuf};
+use tmm::check::Method;
+use tmm::construct::Drafting;
+use tmm::study::Session;
+
+fn scene(name: &str) -> tmm::Scene {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("constructions")
+        .join(format!("{name}.toml"));
+    tmm::load(&path).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn report(name: &str, drafting: f64) -> tmm::Report {
+    let s = scene(name);
+    let d = Drafting::new(drafting).expect("a drafting resolution");
+    Session::new(&s, d)
+        .report()
+        .unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn rows<'a>(r: &'a tmm::Report, q: &str) -> Vec<&'a tmm::Row> {
+    r.rows.iter().filter(|x| x.quantity() == q).collect()
+}
+
+#[test]
+fn seed000_report_matches_the_closed_form() {
+    let r = report("cam-seed000", 0.0);
+    let s = rows(&r, "s");
+    assert_eq!(s.len(), 26);
+    let s_max = s.iter().map(|x| x.analytic).fold(0.0, f64::max);
+    assert!((s_max - 0.05236).abs() < 5e-6, "{s_max}");
+    assert!((s_max - 0.12 * 25f64.to_radians()).abs() < 1e-12);
+    let a = rows(&r, "d2s_dphi2");
+    let rise = 4.0 * s_max / 113.6f64.to_radians().powi(2);
+    let ret = 4.0 * s_max / 109f64.to_radians().powi(2);
+    assert!((rise - 0.053278).abs() < 5e-7 && (ret - 0.057870).abs() < 5e-7);
+    for (i, row) in a.iter().enumerate() {
+        let want = match i {
+            0..=6 => rise,
+            7..=12 => -rise,
+            13..=19 => -ret,
+            _ => ret,
+        };
+        assert!((row.analytic - want).abs() < 1e-9, "point {i}");
+        assert!((row.graphical - want).abs() < 1e-9, "point {i}");
+        assert_eq!(row.method, Method::Integration);
+    }
+    // The "+ −" law's analogue is piecewise constant: integrated exactly at the nodes.
+    for q in ["s", "ds_dphi"] {
+        for row in rows(&r, q) {
+            assert!(row.abs_error() < 1e-12, "{q} at {:?}", row.position());
+        }
+    }
+    let rmin = rows(&r, "r_min");
+    assert_eq!(rmin.len(), 1);
+    let rmin = rmin[0];
+    assert_eq!(rmin.method, Method::CombinedDiagram);
+    assert!(rmin.position().is_none());
+    assert!((rmin.analytic - 0.0699).abs() < 0.001, "{}", rmin.analytic);
+    // The graphical r_min within the drafting resolution (0.5 mm at μ_S = 0.001 m/mm).
+    assert!((rmin.graphical - rmin.analytic).abs() < 0.0005);
+    // The seed's 40 mm is flagged, never produced.
+    assert!((rmin.analytic - 0.040).abs() > 0.02 && (rmin.graphical - 0.040).abs() > 0.02);
+    assert!(r
+        .notes
+        .iter()
+        .any(|n| n.contains("ERRATUM") && n.contains("40 mm")));
+    // γ ≥ 60° over the whole cycle; the transmission angle per point by inversion.
+    let g = rows(&r, "transmission_angle");
+    assert_eq!(g.len(), 26);
+    assert!(g.iter().all(|x| x.analytic >= 60f64.to_radians() - 1e-6));
+    let worst = g
+        .iter()
+        .map(|x| (x.graphical - x.analytic).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        worst > 1e-6 && worst < 3f64.to_radians(),
+        "{}",
+        worst.to_degrees()
+    );
+    for q in ["profile_deviation", "rho_min", "r_roller"] {
+        assert_eq!(rows(&r, q).len(), 1, "{q}");
+    }
+    assert_eq!(rows(&r, "profile_radius").len(), 26);
+}
+
+#[test]
+fn reading_to_half_a_millimetre_shows_the_drafting_error() {
+    let exact = report("cam-seed000", 0.0);
+    let drawn = report("cam-seed000", 0.5);
+    let r0 = rows(&exact, "r_min")[0];
+    let r1 = rows(&drawn, "r_min")[0];
+    assert_eq!(r0.analytic, r1.analytic);
+    let s_err = rows(&drawn, "s")
+        .iter()
+        .map(|x| x.abs_error())
+        .fold(0.0, f64::max);
+    // Readings to half a millimetre at μ_S = 0.001 m/mm, carried through two integrations.
+    assert!(s_err > 1e-5 && s_err < 0.002, "{s_err}");
+}
+
+#[test]
+fn every_cam_scene_reports_and_every_hard_case_is_diagnosed() {
+    for (name, needle) in [
+        ("cam-pz4", "assumed"),
+        ("cam-pz5", "assumed"),
+        ("cam-central", "pressure angle"),
+        ("cam-undercut", "UNDERCUT"),
+        ("cam-cusp", "CUSP"),
+        ("cam-shock", "RIGID SHOCKS"),
+        ("cam-shock", "WRONG SIDE"),
+    ] {
+        let r = report(name, 0.0);
+        assert!(
+            r.notes.iter().any(|n| n.contains(needle)),
+            "{name}: no note with {needle}: {:?}",
+            r.notes
+        );
+    }
+    // Undercut: the largest admissible roller is below the given one.
+    let r = report("cam-undercut", 0.0);
+    let rho = rows(&r, "rho_min")[0].analytic;
+    assert!(rho < 0.015, "{rho}");
+    // Cusp: the flat profile's ρ = r₀ + S + S″ is negative.
+    let r = report("cam-cusp", 0.0);
+    assert!(rows(&r, "rho_min")[0].analytic < 0.0);
+}
+
+fn refused(text: &str) -> String {
+    match tmm::scene::parse(text, Path::new("bad.toml")) {
+        Ok(_) => panic!("accepted:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+const GOOD: &str = r#"
+[cam]
+follower = "translating"
+law = "cosine"
+phases = [130.0, 50.0, 130.0, 50.0]
+stroke = 30.0
+"#;
+
+#[test]
+fn bad_cam_input_is_refused_with_the_key_named() {
+    assert!(tmm::scene::parse(GOOD, Path::new("good.toml")).is_ok());
+    let e = refused(&GOOD.replace("50.0, 130.0, 50.0", "50.0, 130.0, 60.0"));
+    assert!(e.contains("cam.phases") && e.contains("360"), "{e}");
+    let e = refused(&GOOD.replace("stroke = 30.0", "stroke = -30.0"));
+    assert!(e.contains("cam.stroke"), "{e}");
+    let e = refused(&format!("{GOOD}base_radius = 20.0\nroller = 20.0\n"));
+    assert!(
+        e.contains("cam.roller") && e.contains("smaller than the base radius"),
+        "{e}"
+    );
+    let e = refused(&GOOD.replace("\"cosine\"", "\"parabolic\""));
+    assert!(e.contains("cam.law"), "{e}");
+    let e = refused(&format!("{GOOD}divisions = 1\n"));
+    assert!(e.contains("cam.divisions"), "{e}");
+    let e = refused(&GOOD.replace("[cam]", "[plates]\nwanted = [\"balancing\"]\n[cam]"));
+    assert!(e.contains("plates.wanted"), "{e}");
+}
