@@ -22,6 +22,9 @@ pub struct Inversion {
     pub centres: Vec<DVec2>,
     /// The practical profile's points (roller tangency, face contact), cam frame.
     pub profile: Vec<DVec2>,
+    /// The practical profile's unit tangent at its points (⊥ the roller's radius to the
+    /// tangency, along the face line), cam frame: the French curve touches every roller.
+    pub tangents: Vec<DVec2>,
     /// The pressure (transmission) angle read off the drawing at every point, rad.
     pub angles: Vec<f64>,
     /// The smallest convex radius of curvature of the drawn pitch curve (or of the flat
@@ -87,6 +90,7 @@ pub(crate) fn invert(
     }
     let mut centres = Vec::with_capacity(points.len());
     let mut profile = Vec::with_capacity(points.len());
+    let mut tangents = Vec::with_capacity(points.len());
     let mut kins: Vec<Kin> = Vec::with_capacity(points.len());
     for (i, p) in points.iter().enumerate() {
         rec.set_group(i as u32 + 1);
@@ -154,6 +158,11 @@ pub(crate) fn invert(
         }
         centres.push(c);
         profile.push(t);
+        tangents.push(if flat {
+            to_cam(DVec2::X, p.phi)
+        } else {
+            to_cam(kin.normal().perp(), p.phi)
+        });
         kins.push(kin);
     }
     rec.set_group(0);
@@ -171,10 +180,25 @@ pub(crate) fn invert(
             .collect()
     };
     let n = spec.divisions;
-    let closed = |pts: &[DVec2]| -> Vec<DVec2> {
-        let mut out: Vec<DVec2> = pts[..=n].to_vec();
+    // A moving phase's points, the practical profile's with the French curve between them.
+    let phase = |pts: &[DVec2], range: std::ops::RangeInclusive<usize>, curve: bool| {
+        let (a, b) = (*range.start(), *range.end());
+        let mut out = vec![pts[a]];
+        for i in a..b {
+            if curve {
+                out.extend_from_slice(
+                    &french_curve(pts[i], tangents[i], pts[i + 1], tangents[i + 1])[1..],
+                );
+            } else {
+                out.push(pts[i + 1]);
+            }
+        }
+        out
+    };
+    let closed = |pts: &[DVec2], curve: bool| -> Vec<DVec2> {
+        let mut out = phase(pts, 0..=n, curve);
         out.extend(dwell(pts[n], pts[n + 1]));
-        out.extend_from_slice(&pts[n + 1..]);
+        out.extend(phase(pts, n + 1..=2 * n + 1, curve));
         out.extend(dwell(pts[2 * n + 1], pts[0]));
         out.into_iter().map(mm).collect()
     };
@@ -182,7 +206,7 @@ pub(crate) fn invert(
         rec.draw(
             "pitch (theoretical) profile",
             Item::Polyline {
-                points: closed(&centres),
+                points: closed(&centres, false),
                 closed: true,
             },
             Role::Construction,
@@ -196,7 +220,7 @@ pub(crate) fn invert(
             "practical profile: envelope of the rollers"
         },
         Item::Polyline {
-            points: closed(&profile),
+            points: closed(&profile, true),
             closed: true,
         },
         Role::Result,
@@ -267,9 +291,34 @@ pub(crate) fn invert(
         scale: mu,
         centres,
         profile,
+        tangents,
         angles,
         rho_min,
     })
+}
+
+/// Pieces of the French curve between two points of the practical profile.
+const CURVE_PIECES: usize = 8;
+
+/// The practical profile between its points `a` and `b` as the draftsman's French curve
+/// draws it: touching the profile's tangents `ta`, `tb` there (the cubic with those end
+/// directions, each as long as the chord), as `CURVE_PIECES + 1` points from `a` to `b`.
+pub fn french_curve(a: DVec2, ta: DVec2, b: DVec2, tb: DVec2) -> Vec<DVec2> {
+    let chord = b - a;
+    let len = chord.length();
+    // Each tangent turned along the chord.
+    let along = |t: DVec2| if t.dot(chord) < 0.0 { -t } else { t } * len;
+    let (ma, mb) = (along(ta), along(tb));
+    (0..=CURVE_PIECES)
+        .map(|k| {
+            let u = k as f64 / CURVE_PIECES as f64;
+            let (u2, u3) = (u * u, u * u * u);
+            a * (2.0 * u3 - 3.0 * u2 + 1.0)
+                + ma * (u3 - 2.0 * u2 + u)
+                + b * (3.0 * u2 - 2.0 * u3)
+                + mb * (u3 - u2)
+        })
+        .collect()
 }
 
 /// The neighbours of point `i` within its phase (one-sided at the phase's ends).

@@ -75,8 +75,8 @@ fn to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
     p.distance(a + d * t)
 }
 
-/// The largest and the mean normal distance between the drawn practical profile (straight
-/// pieces between its points within each moving phase; the dwells are exact arcs) and the
+/// The largest and the mean normal distance between the drawn practical profile (the French
+/// curve between its points within each moving phase; the dwells are exact arcs) and the
 /// exact envelope, m.
 pub fn deviation(
     cam_spec: &CamSpec,
@@ -92,12 +92,20 @@ pub fn deviation(
         if p.phase != q.phase {
             continue;
         }
-        let (a, b) = (inv.profile[i], inv.profile[i + 1]);
+        let curve = super::inversion::french_curve(
+            inv.profile[i],
+            inv.tangents[i],
+            inv.profile[i + 1],
+            inv.tangents[i + 1],
+        );
         for j in 0..=16 {
             let phi = p.phi + (q.phi - p.phi) * j as f64 / 16.0;
             let after = j == 0 && p.after;
             let e = exact_profile(cam_spec, place, base, roller, phi, after);
-            let d = to_segment(e, a, b);
+            let d = curve
+                .windows(2)
+                .map(|w| to_segment(e, w[0], w[1]))
+                .fold(f64::INFINITY, f64::min);
             worst = worst.max(d);
             sum += d;
             count += 1;

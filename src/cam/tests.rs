@@ -169,6 +169,10 @@ fn profile_deviation_falls_as_n_squared() {
     let (_, b) = deviation_at(&cam, 48, &ctx(0.0)).unwrap();
     let ratio = a / b;
     assert!((3.3..4.7).contains(&ratio), "{a} {b} {ratio}");
+    // The French curve touching every roller: within 1e-6 of r_min at N = 720 (the bench's
+    // target; straight pieces between the tangency points left 1.6e-6 there).
+    let (_, fine) = deviation_at(&cam, 720, &ctx(0.0)).unwrap();
+    assert!(fine <= 1e-6 * cam.radius.exact, "{fine} vs r_min {}", cam.radius.exact);
 }
 
 #[test]
