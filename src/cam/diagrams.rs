@@ -74,17 +74,16 @@ pub(super) fn diagrams(
         .unwrap_or_else(|| chosen_poles(spec, s_scale, phi));
     let ds_scale = scale(s_scale.value() / (h2 * phi.value()), "μ_S′")?;
     let d2s_scale = scale(ds_scale.value() / (h1 * phi.value()), "μ_S″")?;
+    if spec.from_s {
+        let sc = [s_scale, ds_scale, d2s_scale];
+        return differentiated(spec, points, phi, sc, [h1, h2], ctx);
+    }
     let n = spec.divisions;
     let st = spec.starts();
     let mut first = Recorder::in_context("d^2S/dφ^2 → dS/dφ", ds_scale, ctx);
     let mut second = Recorder::in_context("dS/dφ → S", s_scale, ctx);
     // Figure 1: the given diagram above, dS/dφ below; figure 2: dS/dφ above, S below.
-    let (mut v_max, mut a_max) = (0.0f64, 0.0f64);
-    for (p, after) in exact::dense(spec, 200) {
-        let m = exact::motion(spec, p, after);
-        v_max = v_max.max(m.ds.abs());
-        a_max = a_max.max(m.d2s.abs());
-    }
+    let (v_max, a_max) = peaks(spec);
     let (a_mm, v_mm) = (d2s_scale.to_mm(a_max), ds_scale.to_mm(v_max));
     let a_top = DVec2::ZERO;
     let v_origin = DVec2::new(0.0, -(a_mm + v_mm + GAP_MM));
@@ -227,15 +226,20 @@ pub(super) fn diagrams(
     })
 }
 
+/// The largest |dS/dφ| and |d²S/dφ²| of the law over the cycle.
+fn peaks(spec: &CamSpec) -> (f64, f64) {
+    exact::dense(spec, 200)
+        .into_iter()
+        .fold((0.0f64, 0.0f64), |(v, a), (p, after)| {
+            let m = exact::motion(spec, p, after);
+            (v.max(m.ds.abs()), a.max(m.d2s.abs()))
+        })
+}
+
 /// The pole distances a student chooses: H₂ = μ_S/(μ_S′·μ_φ) and H₁ = μ_S′/(μ_S″·μ_φ) with
 /// μ_S′, μ_S″ drawing the analogues' peaks about 40 mm tall, rounded to whole millimetres.
 fn chosen_poles(spec: &CamSpec, s: Scale, phi: Scale) -> [f64; 2] {
-    let (mut v, mut a) = (0.0f64, 0.0f64);
-    for (p, after) in exact::dense(spec, 200) {
-        let m = exact::motion(spec, p, after);
-        v = v.max(m.ds.abs());
-        a = a.max(m.d2s.abs());
-    }
+    let (v, a) = peaks(spec);
     let h2 = (s.value() / (v.max(1e-12) / 40.0 * phi.value()))
         .round()
         .clamp(5.0, 200.0);
@@ -280,4 +284,116 @@ pub(super) fn read_motion(d: &Diagrams, i: usize) -> Motion {
         ds: d.ds.get(i).copied().unwrap_or(0.0),
         d2s: d.d2s.get(i).copied().unwrap_or(0.0),
     }
+}
+
+/// The diagrams when the scene gives S: the S diagram drawn from the law at the nodes of each
+/// moving phase and differentiated twice by the method of chords (H₂: S → dS/dφ, H₁: dS/dφ →
+/// d²S/dφ²), the values at the points read off the smooth curves; S itself read off the
+/// given diagram.
+fn differentiated(
+    spec: &CamSpec,
+    points: &[Point],
+    phi: Scale,
+    [s_scale, ds_scale, d2s_scale]: [Scale; 3],
+    [h1, h2]: [f64; 2],
+    ctx: &Context,
+) -> Result<Diagrams, CamError> {
+    use crate::calculus::Method as Calc;
+    let (n, st) = (spec.divisions, spec.starts());
+    let mut first = Recorder::in_context("S → dS/dφ", ds_scale, ctx);
+    let mut second = Recorder::in_context("dS/dφ → d^2S/dφ^2", d2s_scale, ctx);
+    let (v_max, a_max) = peaks(spec);
+    let (v_mm, a_mm) = (ds_scale.to_mm(v_max), d2s_scale.to_mm(a_max));
+    let s_top = DVec2::ZERO;
+    let v_origin = DVec2::new(0.0, -(v_mm + GAP_MM));
+    let v_top = DVec2::ZERO;
+    let a_origin = DVec2::new(0.0, -(v_mm + a_mm + GAP_MM));
+    let mut ds = vec![0.0; points.len()];
+    let mut d2s = vec![0.0; points.len()];
+    for (idx, (phase, len)) in [(0usize, spec.phases.rise), (2, spec.phases.ret)]
+        .into_iter()
+        .enumerate()
+    {
+        let dx = len / n as f64;
+        let nodes: Vec<f64> = (0..=n)
+            .map(|k| exact::motion(spec, st[phase] + k as f64 * dx, k < n).s)
+            .collect();
+        let src = Diagram::new(st[phase], dx, nodes, false)?;
+        let shift = DVec2::new(phi.to_mm(st[phase]), 0.0);
+        let (p1, p2) = if idx == 0 {
+            ("P_2", "P_1")
+        } else {
+            ("P_2′", "P_1′")
+        };
+        let layout = Layout::new(s_top + shift, v_origin + shift)
+            .named("φ", "S", "dS/dφ")
+            .pole_named(p1, "H_2");
+        let scales = Scales { x: phi, y: s_scale };
+        let v = Calc::Chords.differentiate(&mut first, &src, scales, h2, &layout)?;
+        let layout2 = Layout::new(v_top + shift, a_origin + shift)
+            .named("φ", "dS/dφ", "d^2S/dφ^2")
+            .pole_named(p2, "H_1")
+            .with_source(false);
+        let scales2 = Scales {
+            x: phi,
+            y: ds_scale,
+        };
+        let a = Calc::Chords.differentiate(&mut second, &v.diagram()?, scales2, h1, &layout2)?;
+        let base = idx * (n + 1);
+        for k in 0..=n {
+            if let Some(slot) = ds.get_mut(base + k) {
+                *slot = v.node.get(k).copied().unwrap_or(0.0);
+            }
+            if let Some(slot) = d2s.get_mut(base + k) {
+                *slot = a.node.get(k).copied().unwrap_or(0.0);
+            }
+        }
+    }
+    // The dwells: S = h on the far dwell, 0 on the near one; zero analogues.
+    for (from, to, s) in [(st[1], st[2], spec.stroke), (st[3], st[4], 0.0)] {
+        let (a, b) = (phi.to_mm(from), phi.to_mm(to));
+        for (which, origin, y, role) in [
+            (0, s_top, s_scale.to_mm(s), Role::Given),
+            (0, v_origin, 0.0, Role::Result),
+            (1, a_origin, 0.0, Role::Result),
+        ] {
+            let rec = if which == 0 { &mut first } else { &mut second };
+            rec.draw(
+                "dwell",
+                Item::Segment(Segment::new(
+                    origin + DVec2::new(a, y),
+                    origin + DVec2::new(b, y),
+                )),
+                role,
+                &[],
+            );
+        }
+    }
+    // S at the points, read off the given diagram.
+    let s = points
+        .iter()
+        .map(|p| {
+            let m = exact::motion(spec, p.phi, p.after);
+            let x = phi.to_mm(p.phi);
+            let read = first.measure(
+                s_top + DVec2::new(x, 0.0),
+                s_top + DVec2::new(x, s_scale.to_mm(m.s)),
+            );
+            s_scale.to_physical(read.read_mm)
+        })
+        .collect();
+    let ends = |i: usize| ds.get(i).copied().unwrap_or(0.0);
+    Ok(Diagrams {
+        first: first.finish(),
+        second: second.finish(),
+        s,
+        ds_ends: [ends(n), ends(2 * n + 1)],
+        ds,
+        d2s,
+        phi,
+        s_scale,
+        ds_scale,
+        d2s_scale,
+        poles: [h1, h2],
+    })
 }

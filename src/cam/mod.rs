@@ -112,6 +112,9 @@ pub struct CamSpec {
     /// Force (spring) closure: the pressure angle is checked on the rise only (seed 002,
     /// L1477); otherwise (geometric closure) over the whole cycle.
     pub force_closure: bool,
+    /// The scene gives S (`given = "s"`): the diagrams are S differentiated twice by chords
+    /// instead of d²S/dφ² integrated twice.
+    pub from_s: bool,
 }
 
 impl CamSpec {

@@ -246,21 +246,20 @@ impl Cam {
         let big = |f: fn(&Motion) -> f64| ex.iter().map(|m| f(m).abs()).fold(0.0, f64::max);
         let (ss, sv, sa) = (big(|m| m.s), big(|m| m.ds), big(|m| m.d2s));
         let d = &self.diagrams;
+        // The diagrams integrated from d²S/dφ², or differentiated from S by chords.
+        let method = if self.spec.from_s {
+            Method::DiagramChords
+        } else {
+            Method::Integration
+        };
         for (i, p) in self.points.iter().enumerate() {
             let at = || At::Position(p.label.clone());
             let e = ex[i];
-            out.push(row(
-                Symbol::Displacement,
-                at(),
-                Method::Integration,
-                d.s[i],
-                e.s,
-                ss,
-            ));
+            out.push(row(Symbol::Displacement, at(), method, d.s[i], e.s, ss));
             out.push(row(
                 Symbol::VelocityAnalogue,
                 at(),
-                Method::Integration,
+                method,
                 d.ds[i],
                 e.ds,
                 sv,
@@ -268,7 +267,7 @@ impl Cam {
             out.push(row(
                 Symbol::AccelerationAnalogue,
                 at(),
-                Method::Integration,
+                method,
                 d.d2s[i],
                 e.d2s,
                 sa,

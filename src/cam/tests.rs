@@ -37,6 +37,7 @@ pub(super) fn seed000() -> CamSpec {
         law_assumed: false,
         quoted_r_min: Some(0.040),
         force_closure: false,
+        from_s: false,
     }
 }
 
@@ -172,7 +173,11 @@ fn profile_deviation_falls_as_n_squared() {
     // The French curve touching every roller: within 1e-6 of r_min at N = 720 (the bench's
     // target; straight pieces between the tangency points left 1.6e-6 there).
     let (_, fine) = deviation_at(&cam, 720, &ctx(0.0)).unwrap();
-    assert!(fine <= 1e-6 * cam.radius.exact, "{fine} vs r_min {}", cam.radius.exact);
+    assert!(
+        fine <= 1e-6 * cam.radius.exact,
+        "{fine} vs r_min {}",
+        cam.radius.exact
+    );
 }
 
 #[test]
@@ -201,6 +206,7 @@ fn pz5_rise_only_matches_the_digest() {
     ] {
         let s = CamSpec {
             force_closure: true,
+            from_s: false,
             ..translating(law, 0.003)
         };
         let (r, _) = exact::min_radius_translating(&s, 0.003);

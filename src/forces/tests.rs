@@ -266,9 +266,15 @@ proptest! {
                     let Some(fl) = w.loads_exact.iter().find(|l| l.link == to && l.name == name) else {
                         continue;
                     };
+                    // The friction load is f·|R| of the previous approximation's R, which
+                    // differs from the last by the settling tolerance (1e-13 of the largest
+                    // reaction): compare where R is not tiny against that.
+                    if r.force.length() < 1e-3 * big {
+                        continue;
+                    }
                     let total = r.force + fl.force;
                     let turned = r.force.angle_to(total).abs();
-                    prop_assert!((turned - friction_angle(f)).abs() <= 1e-10, "turned {turned} vs φ {}", friction_angle(f));
+                    prop_assert!((turned - friction_angle(f)).abs() <= 1e-9, "turned {turned} vs φ {}", friction_angle(f));
                 }
                 PairKind::Revolute(k) => {
                     let name = format!("M_{{тр{from}-{to}}}");

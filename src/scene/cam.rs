@@ -53,6 +53,7 @@ pub(crate) struct RawCam {
     pub law_assumed: Option<bool>,
     pub quoted_r_min: Option<f64>,
     pub closure: Option<String>,
+    pub given: Option<String>,
 }
 
 /// Validate `[cam]`.
@@ -220,6 +221,10 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         Some(c) => check.word(&key("closure"), Some(c), &CLOSURES) == Some(1),
         None => false,
     };
+    let from_s = match raw.given.as_ref() {
+        Some(g) => check.word(&key("given"), Some(g), &["d2s", "s"]) == Some(1),
+        None => false,
+    };
     let spec = CamSpec {
         phases,
         rise,
@@ -255,6 +260,7 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             .quoted_r_min
             .map(|mm| check.length(&key("quoted_r_min"), Some(mm))),
         force_closure,
+        from_s,
     };
     (check.problems.len() == before).then_some(spec)
 }

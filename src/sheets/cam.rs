@@ -38,30 +38,56 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let scene = session.scene();
     let cam = session.cam()?;
     let d = &cam.diagrams;
-    let mut blocks = vec![
-        Block::view(
-            d.first.clone(),
-            format!(
-                "d^2S/dφ^2 → dS/dφ: {}, {}, {}, H_1 = {} {}",
-                mu("φ", d.phi, lang),
-                mu("S″", d.d2s_scale, lang),
-                mu("S′", d.ds_scale, lang),
-                format_sig(d.poles[0], 3, lang),
-                tr(lang, "мм", "мм", "mm")
+    let mm = tr(lang, "мм", "мм", "mm");
+    let h = |i: usize| format_sig(d.poles[i], 3, lang);
+    let mut blocks = if cam.spec.from_s {
+        // S given, differentiated twice by chords.
+        vec![
+            Block::view(
+                d.first.clone(),
+                format!(
+                    "S → dS/dφ: {}, {}, H_2 = {} {mm}",
+                    mu("S", d.s_scale, lang),
+                    mu("S′", d.ds_scale, lang),
+                    h(1),
+                ),
+                keyed("cam.scale_s", d.s_scale),
             ),
-            keyed("cam.scale_phi", d.phi),
-        ),
-        Block::view(
-            d.second.clone(),
-            format!(
-                "dS/dφ → S: {}, H_2 = {} {}",
-                mu("S", d.s_scale, lang),
-                format_sig(d.poles[1], 3, lang),
-                tr(lang, "мм", "мм", "mm")
+            Block::view(
+                d.second.clone(),
+                format!(
+                    "dS/dφ → d^2S/dφ^2: {}, {}, H_1 = {} {mm}",
+                    mu("φ", d.phi, lang),
+                    mu("S″", d.d2s_scale, lang),
+                    h(0),
+                ),
+                keyed("cam.scale_phi", d.phi),
             ),
-            keyed("cam.scale_s", d.s_scale),
-        ),
-    ];
+        ]
+    } else {
+        vec![
+            Block::view(
+                d.first.clone(),
+                format!(
+                    "d^2S/dφ^2 → dS/dφ: {}, {}, {}, H_1 = {} {mm}",
+                    mu("φ", d.phi, lang),
+                    mu("S″", d.d2s_scale, lang),
+                    mu("S′", d.ds_scale, lang),
+                    h(0),
+                ),
+                keyed("cam.scale_phi", d.phi),
+            ),
+            Block::view(
+                d.second.clone(),
+                format!(
+                    "dS/dφ → S: {}, H_2 = {} {mm}",
+                    mu("S", d.s_scale, lang),
+                    h(1)
+                ),
+                keyed("cam.scale_s", d.s_scale),
+            ),
+        ]
+    };
     let combined = match cam.spec.follower {
         Follower::Flat { .. } => tr(
             lang,
