@@ -7,6 +7,7 @@ mod error;
 mod forces;
 mod friction;
 mod groups;
+mod indicator;
 mod kinematics;
 mod load;
 mod model;
