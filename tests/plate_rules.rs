@@ -177,6 +177,10 @@ rules! {
     rotor_static_balancing_texts_apart, rotor_static_balancing_inside_frame: "rotor-static" / "balancing",
     rotor_dynamic_balancing_texts_apart, rotor_dynamic_balancing_inside_frame: "rotor-dynamic" / "balancing",
     friction_texts_apart, friction_inside_frame: "friction" / "friction",
+    v_engine_positions_texts_apart, v_engine_positions_inside_frame: "v-engine" / "positions",
+    v_engine_kinematics_texts_apart, v_engine_kinematics_inside_frame: "v-engine" / "kinematics",
+    v_engine_forces_texts_apart, v_engine_forces_inside_frame: "v-engine" / "forces",
+    v_engine_dynamics_texts_apart, v_engine_dynamics_inside_frame: "v-engine" / "dynamics",
 }
 
 /// Every plate of every scene in `constructions/` is checked above.

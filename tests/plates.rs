@@ -155,6 +155,10 @@ plates! {
     rotor_static_balancing: "rotor-static" / "balancing",
     rotor_dynamic_balancing: "rotor-dynamic" / "balancing",
     friction_friction: "friction" / "friction",
+    v_engine_positions: "v-engine" / "positions",
+    v_engine_kinematics: "v-engine" / "kinematics",
+    v_engine_forces: "v-engine" / "forces",
+    v_engine_dynamics: "v-engine" / "dynamics",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

@@ -15,6 +15,8 @@
 //!   the whole scene.
 
 pub mod draw;
+#[cfg(test)]
+mod engine_tests;
 pub mod flywheel;
 pub mod reduce;
 mod rows;
@@ -58,7 +60,7 @@ pub enum DynamicsError {
         detail: String,
     },
     /// The resistances do no work over the cycle: no driving moment to find.
-    #[error("the working resistances do {work} J of work over the cycle: expected > 0 (a [[forces.resistance]] that acts)")]
+    #[error("the working resistances do {work} J of work over the cycle: expected > 0 (a [[forces.resistance]] that acts; an engine, whose gas forces drive, takes [dynamics] constant_moment = \"resisting\")")]
     NoResistance {
         /// The work, J.
         work: f64,

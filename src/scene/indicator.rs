@@ -1,7 +1,7 @@
 //! `[[forces.indicator]]` → [`Indicator`]: the piston, the bore and the indicator diagram
 //! unfolded against the cycle angle, each checked with its key path and converted to SI.
 
-use super::check::{item, join, number, Checker};
+use super::check::{item, join, number, quoted, Checker};
 use super::kinematics::{point, point_names};
 use crate::forces::indicator::Indicator;
 use crate::linkage::{Dyad, Mechanism};
@@ -50,7 +50,7 @@ pub(crate) fn indicator(
             } else {
                 check.push(
                     k("point"),
-                    Some(n),
+                    Some(quoted(&n)),
                     "expected the slider's joint of an RRP group (a piston)",
                 );
                 None
