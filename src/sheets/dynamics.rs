@@ -299,9 +299,9 @@ fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
         title: if d.spec.constant_moment == ConstantMoment::Resisting {
             tr(
                 lang,
-                "Работа движущих сил, момент сопротивления, маховик: графически и точно",
-                "Робота рушійних сил, момент опору, маховик: графічно і точно",
-                "Driving work, resisting moment, flywheel: graphical against exact",
+                "A_{д}, M_{с}, маховик: графически и точно",
+                "A_{д}, M_{с}, маховик: графічно і точно",
+                "A_{д}, M_{с}, flywheel: graphical against exact",
             )
         } else {
             tr(
