@@ -183,3 +183,21 @@ fn an_engine_with_a_constant_driving_moment_is_refused() {
     assert!(all.contains("working resistances do"), "{all}");
     assert!(all.contains("constant_moment = \"resisting\""), "{all}");
 }
+
+#[test]
+fn a_crank_turning_clockwise_reads_the_cycle_the_other_way() {
+    // θ = σ·(φ₁ − offset): turned clockwise, each cylinder meets the same diagram from its
+    // top dead centre on, and the piston's travel x(axis ± u) is symmetric — the same work.
+    let text = std::fs::read_to_string(support::root().join(SCENE)).expect("the scene");
+    let body = text.replacen("sense = \"ccw\"", "sense = \"cw\"", 1);
+    assert_ne!(body, text);
+    let dir = scratch("engine-cw");
+    let path = dir.join("engine.toml");
+    std::fs::write(&path, body).expect("write");
+    let v = report_json(path.to_str().expect("utf-8"));
+    let a = num(rows(&v, "A_drive")[0], "analytic");
+    assert!((a - 382.7231).abs() < 1e-3, "{a}");
+    for r in rows(&v, "delta") {
+        assert!((num(r, "analytic") - 0.0125).abs() < 1e-6, "{r}");
+    }
+}

@@ -101,8 +101,8 @@ pub enum ConstantMoment {
 }
 
 impl ConstantMoment {
-    /// The sign the varying side's diagram is drawn with: M_с = −M_пр (+1) or M_д = M_пр (−1
-    /// of −M_пр).
+    /// The factor of −M_пр in the varying side's diagram: +1 draws M_с = −M_пр, −1 draws
+    /// M_д = M_пр.
     pub fn sign(self) -> f64 {
         match self {
             ConstantMoment::Driving => 1.0,
