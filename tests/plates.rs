@@ -166,6 +166,10 @@ plates! {
     cam_undercut_cam: "cam-undercut" / "cam",
     cam_cusp_cam: "cam-cusp" / "cam",
     cam_shock_cam: "cam-shock" / "cam",
+    v_engine_positions: "v-engine" / "positions",
+    v_engine_kinematics: "v-engine" / "kinematics",
+    v_engine_forces: "v-engine" / "forces",
+    v_engine_dynamics: "v-engine" / "dynamics",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

@@ -15,7 +15,7 @@
 //!    J_I = ΔT_I/(δ·ω_ср²), J_м = J_I − J_const.
 
 use super::reduce::Reduced;
-use super::spec::DynamicsSpec;
+use super::spec::{ConstantMoment, DynamicsSpec};
 use super::twin::{Cycle, Solution};
 use super::DynamicsError;
 use crate::calculus::{draw_axes, integrate_chords, thin, Diagram, Layout, Sampling, Scales};
@@ -69,9 +69,9 @@ pub struct Diagrams {
     pub wittenbauer_figure: Figure,
     /// Merkin's T_I (at μ_T).
     pub merkin_figure: Figure,
-    /// A_с at the nodes 0 … N as read, J.
+    /// A_с at the nodes 0 … N as read, J (an engine's A_д: the varying side's work).
     pub a_c: Vec<f64>,
-    /// M_д read through the pole, N·m.
+    /// M_д read through the pole, N·m (an engine's M_с: the constant side's moment).
     pub m_drive: f64,
     /// ΔT at the nodes 0 … N as read, J.
     pub delta_t: Vec<f64>,
@@ -150,7 +150,14 @@ pub fn diagrams(
 ) -> Result<Diagrams, DynamicsError> {
     let n = red.len();
     let dx = TAU / n.max(1) as f64;
-    let mc: Vec<f64> = red.iter().map(|r| -r.m()).collect();
+    // The varying side: M_с = −M_пр against a constant driving moment, M_д = M_пр against a
+    // constant resisting moment (an engine); the constant one is the straight line.
+    let sgn = spec.constant_moment.sign();
+    let (vary, fixed) = match spec.constant_moment {
+        ConstantMoment::Driving => (["M_{с}", "A_{с}"], ["A_{д}", "M_{д}"]),
+        ConstantMoment::Resisting => (["M_{д}", "A_{д}"], ["A_{с}", "M_{с}"]),
+    };
+    let mc: Vec<f64> = red.iter().map(|r| -sgn * r.m()).collect();
     let big_m = mc.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let mu_phi = scale_of(spec.scale_phi, TAU, TURN_MM, Quantity::Angle, "μ_φ")?;
     let mu_m = scale_of(spec.scale_m, big_m, HEIGHT_MM, Quantity::Moment, "μ_M")?;
@@ -176,7 +183,7 @@ pub fn diagrams(
     let a_hi = a_est / mu_a.value();
     let so = DVec2::new(0.0, a_hi + 30.0 - m_lo);
     let layout = Layout::new(so, DVec2::ZERO)
-        .named("φ", "M_{с}", "A")
+        .named("φ", vary[0], "A")
         .pole_named("P", "H");
     let scales = Scales { x: mu_phi, y: mu_m };
     let integral = integrate_chords(
@@ -198,7 +205,7 @@ pub fn diagrams(
         Role::Result,
         &[integral.curve],
     );
-    rec.label(ad, "A_{д}", end, DVec2::new(0.6, 0.8));
+    rec.label(ad, fixed[0], end, DVec2::new(0.6, 0.8));
     let q = integral.pole + end * (pole_h / turn);
     let ray = thin(&mut rec, "ray from P ∥ A_д".into(), integral.pole, q, &[ad]);
     let m_drive = read_up(&rec, so, q) * mu_m.value();
@@ -210,7 +217,7 @@ pub fn diagrams(
     );
     rec.label(
         md,
-        "M_{д}",
+        fixed[1],
         DVec2::new(so.x + turn, q.y),
         DVec2::new(1.0, 0.3),
     );
@@ -223,7 +230,7 @@ pub fn diagrams(
         if pd.distance(pc) > 0.2 {
             thin(&mut rec, format!("ΔT ordinate {i}"), pc, pd, &[ad]);
         }
-        delta_t.push(read_up(&rec, pc, pd) * mu_a.value());
+        delta_t.push(sgn * read_up(&rec, pc, pd) * mu_a.value());
     }
     let work = rec.finish();
 

@@ -15,6 +15,8 @@
 //!   the whole scene.
 
 pub mod draw;
+#[cfg(test)]
+mod engine_tests;
 pub mod flywheel;
 pub mod reduce;
 mod rows;
@@ -25,7 +27,9 @@ pub mod twin;
 
 pub use reduce::{Reduced, Reducer};
 pub use rows::{notes, rows};
-pub use spec::{ConstantInertia, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims};
+pub use spec::{
+    ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
+};
 pub use twin::{Cycle, Solution};
 
 use crate::calculus::CalculusError;
@@ -56,8 +60,14 @@ pub enum DynamicsError {
         detail: String,
     },
     /// The resistances do no work over the cycle: no driving moment to find.
-    #[error("the working resistances do {work} J of work over the cycle: expected > 0 (a [[forces.resistance]] that acts)")]
+    #[error("the working resistances do {work} J of work over the cycle: expected > 0 (a [[forces.resistance]] that acts; an engine, whose gas forces drive, takes [dynamics] constant_moment = \"resisting\")")]
     NoResistance {
+        /// The work, J.
+        work: f64,
+    },
+    /// The driving forces do no work over the cycle (`constant_moment = "resisting"`).
+    #[error("the driving forces do {work} J of work over the cycle: expected > 0 (a [[forces.indicator]] that acts)")]
+    NoDriving {
         /// The work, J.
         work: f64,
     },
@@ -170,6 +180,20 @@ pub fn analyse(
         travel.push(t);
     }
     let cycle = Cycle::new(&red, twin::PANELS)?;
+    // The constant moment opposes the varying side: driving (> 0) or resisting (< 0).
+    match spec.constant_moment {
+        ConstantMoment::Driving if cycle.m_drive <= 0.0 => {
+            return Err(DynamicsError::NoResistance {
+                work: cycle.m_drive * TAU,
+            })
+        }
+        ConstantMoment::Resisting if cycle.m_drive >= 0.0 => {
+            return Err(DynamicsError::NoDriving {
+                work: -cycle.m_drive * TAU,
+            })
+        }
+        _ => {}
+    }
     let exact = cycle.flywheel(w_avg, spec.delta)?;
     let cycle_time = cycle.cycle_time(exact.j_fw, exact.t0);
     let diagrams = draw::diagrams(spec, &graphical, w_avg, ctx)?;

@@ -22,6 +22,8 @@ pub struct Reduced {
     pub m_res: f64,
     /// The reduced moment of the weights, N·m.
     pub m_grav: f64,
+    /// The reduced moment of the driving forces (indicator diagrams), N·m.
+    pub m_drv: f64,
     /// The reduced moment of inertia, constant part included, kg·m².
     pub j: f64,
 }
@@ -29,7 +31,7 @@ pub struct Reduced {
 impl Reduced {
     /// The reduced moment of every force, N·m.
     pub fn m(&self) -> f64 {
-        self.m_res + self.m_grav
+        self.m_res + self.m_grav + self.m_drv
     }
 }
 
@@ -127,6 +129,7 @@ impl<'a> Reducer<'a> {
         Ok(Reduced {
             m_res: of(LoadKind::Resistance),
             m_grav: of(LoadKind::Weight),
+            m_drv: of(LoadKind::Driving),
             j,
         })
     }

@@ -1,6 +1,6 @@
 //! The rows and notes of the dynamic study.
 
-use super::Dynamics;
+use super::{ConstantMoment, Dynamics};
 use crate::check::{At, Key, Method, Row, Symbol};
 use crate::scale::{format_sig, Lang};
 
@@ -52,14 +52,35 @@ pub fn rows(d: &Dynamics) -> Vec<Row> {
         })
     };
     let a_c = d.diagrams.a_c.last().copied().unwrap_or(f64::NAN);
-    scene(Symbol::Work, "res", Method::Integration, a_c, d.cycle.a_res);
-    scene(
-        Symbol::Moment,
-        "drive",
-        Method::Integration,
-        d.diagrams.m_drive,
-        d.cycle.m_drive,
-    );
+    match d.spec.constant_moment {
+        ConstantMoment::Driving => {
+            scene(Symbol::Work, "res", Method::Integration, a_c, d.cycle.a_res);
+            scene(
+                Symbol::Moment,
+                "drive",
+                Method::Integration,
+                d.diagrams.m_drive,
+                d.cycle.m_drive,
+            );
+        }
+        // An engine: the work of the gas forces and the constant resisting moment.
+        ConstantMoment::Resisting => {
+            scene(
+                Symbol::Work,
+                "drive",
+                Method::Integration,
+                a_c,
+                d.cycle.a_drive,
+            );
+            scene(
+                Symbol::Moment,
+                "res",
+                Method::Integration,
+                d.diagrams.m_drive,
+                -d.cycle.m_drive,
+            );
+        }
+    }
     let routes = [
         (
             Method::Wittenbauer,
@@ -85,7 +106,7 @@ pub fn notes(d: &Dynamics) -> Vec<String> {
     let pct = |x: f64, r: f64| format_sig((x - r) / r * 100.0, 3, Lang::En);
     let mut out = vec![
         format!(
-            "dynamics: the energy equation integrated exactly gives J_flywheel = {} kg·m² for δ = {} at ω_avg = {} rad/s (ω_max = {} at {}°, ω_min = {} at {}° of crank travel from position {}); the cycle takes {} s; A_res = {} J, M_drive = {} N·m",
+            "dynamics: the energy equation integrated exactly gives J_flywheel = {} kg·m² for δ = {} at ω_avg = {} rad/s (ω_max = {} at {}°, ω_min = {} at {}° of crank travel from position {}); the cycle takes {} s; {}",
             n(e.j_fw),
             n(e.delta()),
             n(e.omega_avg()),
@@ -95,8 +116,18 @@ pub fn notes(d: &Dynamics) -> Vec<String> {
             format_sig(e.w_min.1.to_degrees(), 4, Lang::En),
             d.labels.first().map_or("1", String::as_str),
             n(d.cycle_time),
-            n(d.cycle.a_res),
-            n(d.cycle.m_drive),
+            match d.spec.constant_moment {
+                ConstantMoment::Driving => format!(
+                    "A_res = {} J, M_drive = {} N·m",
+                    n(d.cycle.a_res),
+                    n(d.cycle.m_drive)
+                ),
+                ConstantMoment::Resisting => format!(
+                    "A_drive = {} J of the indicator diagrams, the constant resisting moment M_res = {} N·m",
+                    n(d.cycle.a_drive),
+                    n(-d.cycle.m_drive)
+                ),
+            },
         ),
         format!(
             "dynamics: at {} positions Wittenbauer's tangents give J_flywheel = {} kg·m² ({} %, δ really {}), Merkin's route {} kg·m² ({} %, δ really {}); Merkin on the continuous exact data gives {} kg·m² (T_II with ω = ω_avg is the method's own error)",

@@ -83,6 +83,32 @@ pub struct DynamicsSpec {
     pub flywheel: FlywheelSpec,
     /// The seed's own numbers, to be checked and flagged (`[dynamics.seed]`).
     pub seed: Option<SeedClaims>,
+    /// Which side of the machine has the constant moment (`constant_moment`).
+    pub constant_moment: ConstantMoment,
+}
+
+/// Which side of the machine has the constant moment: the other varies with φ and is
+/// integrated graphically.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ConstantMoment {
+    /// A constant driving moment M_д = A_с(2π)/2π against varying resistances (a machine
+    /// driven by an electric motor: the shaper).
+    #[default]
+    Driving,
+    /// A constant resisting moment M_с = A_д(2π)/2π against varying driving forces (an
+    /// engine driving a generator: the V engine).
+    Resisting,
+}
+
+impl ConstantMoment {
+    /// The factor of −M_пр in the varying side's diagram: +1 draws M_с = −M_пр, −1 draws
+    /// M_д = M_пр.
+    pub fn sign(self) -> f64 {
+        match self {
+            ConstantMoment::Driving => 1.0,
+            ConstantMoment::Resisting => -1.0,
+        }
+    }
 }
 
 /// What a seed (a student's project) claims, checked by the report: its flywheel, its table

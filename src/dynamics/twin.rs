@@ -44,8 +44,11 @@ pub struct Cycle {
     pub dj: Vec<f64>,
     /// Work of the working resistances over the cycle, J (positive).
     pub a_res: f64,
-    /// The constant driving moment M_д = A_c(2π)/2π, N·m.
+    /// The constant moment that balances the cycle, −∫M_пр/2π, N·m: the driving moment
+    /// M_д = A_c(2π)/2π (> 0), or minus the resisting moment M_с = A_д(2π)/2π of an engine.
     pub m_drive: f64,
+    /// Work of the driving forces (indicator diagrams) over the cycle, J (positive).
+    pub a_drive: f64,
 }
 
 /// The flywheel found by the energy equation and the crank's motion with it.
@@ -102,23 +105,25 @@ impl Cycle {
             dj.push(d);
         }
         let mut work = vec![0.0];
-        let mut res = 0.0;
+        let (mut res, mut drv) = (0.0, 0.0);
         for w in psi.windows(2) {
             let (a, b) = (w[0], w[1]);
             let (mid, half) = ((a + b) / 2.0, (b - a) / 2.0);
-            let (mut s, mut sr) = (0.0, 0.0);
+            let (mut s, mut sr, mut sd) = (0.0, 0.0, 0.0);
             for (x, wt) in GL5 {
                 let (r, _) = red.exact(mid + half * x)?;
                 s += wt * r.m();
                 sr += wt * r.m_res;
+                sd += wt * r.m_drv;
             }
             let last = work.last().copied().unwrap_or(0.0);
             work.push(last + s * half);
             res += sr * half;
+            drv += sd * half;
         }
         let a_res = -res;
         let total = -work.last().copied().unwrap_or(0.0);
-        if !(total > 0.0 && total.is_finite()) {
+        if !(total != 0.0 && total.is_finite()) {
             return Err(DynamicsError::NoResistance { work: total });
         }
         Ok(Self {
@@ -129,6 +134,7 @@ impl Cycle {
             dj,
             a_res,
             m_drive: total / TAU,
+            a_drive: drv,
         })
     }
 

@@ -50,6 +50,8 @@ pub enum LoadKind {
     Reaction,
     /// Friction in a pair: a force along a guide or a couple in a journal.
     Friction,
+    /// A driving force: the gas force of an indicator diagram.
+    Driving,
 }
 
 /// A load on a link.
@@ -188,6 +190,9 @@ pub fn loads(
                 }
             }
         }
+    }
+    for ind in &spec.indicators {
+        out.extend(ind.load(prog, motion)?);
     }
     Ok(out)
 }

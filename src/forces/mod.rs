@@ -13,6 +13,7 @@
 
 pub mod balancing;
 pub mod friction;
+pub mod indicator;
 pub mod lever;
 pub mod loads;
 pub mod pair_friction;
@@ -100,6 +101,14 @@ pub enum ForceError {
     /// No round μ_F can be formed.
     #[error("no force scale μ_F can be chosen for {0} N")]
     NoScale(f64),
+    /// An indicator's point that is not a piston.
+    #[error(
+        "forces.indicator.point: `{name}` is not the slider's joint of an RRP group (a piston)"
+    )]
+    NotPiston {
+        /// The point.
+        name: String,
+    },
 }
 
 /// One position's force analysis.

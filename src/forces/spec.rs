@@ -117,6 +117,8 @@ pub struct ForceSpec {
     pub links: Vec<LinkMass>,
     /// The working resistances.
     pub resistances: Vec<Resistance>,
+    /// The driving forces of indicator diagrams (`[[forces.indicator]]`).
+    pub indicators: Vec<super::indicator::Indicator>,
     /// The drive.
     pub drive: Drive,
     /// Friction in the pairs (`[forces.friction]`), analysed beside the frictionless case.

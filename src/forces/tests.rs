@@ -40,6 +40,7 @@ fn spec(masses: &[(f64, f64)], f5: (f64, f64), gear: Option<f64>) -> ForceSpec {
             },
             stroke: Stroke::Always,
         }],
+        indicators: Vec::new(),
         drive: match gear {
             None => Drive::Coupling,
             Some(towards) => Drive::Gear(GearDrive {

@@ -32,7 +32,7 @@ pub use positions_draw::{
     draw_links, fixed_pivots, frame_guides, guide_ends, FrameGuide, Part, GUIDE_MARGIN_MM,
 };
 pub use program::Program;
-pub(crate) use program::{Op, PDyad};
+pub(crate) use program::{Op, PDir, PDyad};
 pub use scheme::structure_figure;
 pub use structure::{GroupInfo, Mobility, PairInfo, Structure};
 

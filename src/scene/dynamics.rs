@@ -32,6 +32,7 @@ pub(crate) struct RawDynamics {
     pub scale_t: Option<f64>,
     pub flywheel: Option<RawFlywheel>,
     pub seed: Option<RawSeed>,
+    pub constant_moment: Option<String>,
 }
 
 /// `[[dynamics.constant]]`.
@@ -208,7 +209,19 @@ pub(crate) fn dynamics(
     });
     let flywheel = flywheel(check, raw.flywheel.unwrap_or_default());
     let seed = raw.seed.map(|s| seed(check, s));
+    let constant_moment = match raw.constant_moment.as_ref() {
+        None => crate::dynamics::ConstantMoment::Driving,
+        Some(_) => match check.word(
+            &key("constant_moment"),
+            raw.constant_moment.as_ref(),
+            &["driving", "resisting"],
+        ) {
+            Some(1) => crate::dynamics::ConstantMoment::Resisting,
+            _ => crate::dynamics::ConstantMoment::Driving,
+        },
+    };
     DynamicsSpec {
+        constant_moment,
         omega_avg,
         delta,
         constant,

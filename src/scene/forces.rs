@@ -79,7 +79,17 @@ pub(crate) fn forces(
             resistance(check, &base, r, names.as_deref(), links.as_deref())
         })
         .collect();
+    let indicators = raw
+        .indicator
+        .iter()
+        .enumerate()
+        .filter_map(|(i, r)| {
+            let base = item(&key("indicator"), i);
+            super::indicator::indicator(check, &base, r, mechanism)
+        })
+        .collect();
     ForceSpec {
+        indicators,
         g,
         gravity_dir: check.angle(&key("gravity"), raw.gravity, -90.0),
         scale_f: check.scale(

@@ -9,6 +9,7 @@ mod forces;
 mod friction;
 mod gears;
 mod groups;
+mod indicator;
 mod kinematics;
 mod load;
 mod model;

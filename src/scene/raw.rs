@@ -295,6 +295,8 @@ pub(crate) struct RawForces {
     pub link: Vec<RawLinkLoad>,
     #[serde(default)]
     pub resistance: Vec<RawResistance>,
+    #[serde(default)]
+    pub indicator: Vec<super::indicator::RawIndicator>,
     pub drive: Option<RawDrive>,
     pub friction: Option<RawPairFriction>,
     #[serde(default)]

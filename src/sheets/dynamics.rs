@@ -6,7 +6,7 @@
 
 use super::layout::{lay_out, Block, ScaleKey};
 use super::BuildError;
-use crate::dynamics::{Dynamics, FlywheelKind};
+use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
@@ -29,6 +29,8 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let scene = session.scene();
     let d = session.dynamics()?;
     let g = &d.diagrams;
+    // An engine: the driving side varies, the resisting moment is constant.
+    let engine = d.spec.constant_moment == ConstantMoment::Resisting;
     // An energy scale is written μ_T (its quantity's symbol is A): `energy` marks it.
     let cap = |what: &str, scales: &[(Scale, bool)]| {
         let s: Vec<String> = scales
@@ -55,12 +57,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             format!(
                 "{}; {h}",
                 cap(
-                    tr(
-                        lang,
-                        "M_{с}, A_{с}, A_{д}",
-                        "M_{с}, A_{с}, A_{д}",
+                    if engine {
+                        "M_{д}, A_{д}, A_{с}"
+                    } else {
                         "M_{с}, A_{с}, A_{д}"
-                    ),
+                    },
                     &[(g.scale_m, false), (g.scale_a, false), (g.scale_phi, false)]
                 )
             ),
@@ -212,6 +213,11 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
         }
     };
     let m_scale = d.analytic.iter().fold(0.0f64, |m, r| m.max(r.m().abs()));
+    // The varying side's moment: M_с = −M_пр (a machine), M_д = M_пр (an engine).
+    let (sgn, mv) = match d.spec.constant_moment {
+        ConstantMoment::Driving => (-1.0, "M_{с}"),
+        ConstantMoment::Resisting => (1.0, "M_{д}"),
+    };
     let rows = d
         .labels
         .iter()
@@ -223,8 +229,8 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
             vec![
                 label.clone(),
                 format_fixed(d.travel[i].to_degrees(), 0, lang),
-                format_fixed(-g.m(), 2, lang),
-                format_fixed(-a.m(), 2, lang),
+                format_fixed(sgn * g.m(), 2, lang),
+                format_fixed(sgn * a.m(), 2, lang),
                 err(g.m(), a.m(), m_scale),
                 format_fixed(g.j, 4, lang),
                 format_fixed(a.j, 4, lang),
@@ -245,12 +251,19 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
             "Таблиці 9, 10: M_{с} = −M_{пр}, J_{пр}, ΔT (графічно | аналітично | δ, %)",
             "Tables 9, 10: M_{с} = −M_{пр}, J_{пр}, ΔT (graphical | analytic | δ, %)",
         )
-        .into(),
+        .replace(
+            "M_{с} = −M_{пр}",
+            if sgn > 0.0 {
+                "M_{д} = M_{пр}"
+            } else {
+                "M_{с} = −M_{пр}"
+            },
+        ),
         columns: vec![
             ("№".into(), 8.0),
             ("φ, °".into(), 10.0),
-            (format!("M_{{с}}, {nm}"), 18.0),
-            (format!("M_{{с}}*, {nm}"), 18.0),
+            (format!("{mv}, {nm}"), 18.0),
+            (format!("{mv}*, {nm}"), 18.0),
             ("δ, %".into(), 12.0),
             (format!("J_{{пр}}, {kg}"), 24.0),
             (format!("J_{{пр}}*, {kg}"), 24.0),
@@ -283,12 +296,21 @@ fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
         .collect();
     TableBlock {
         at: DVec2::ZERO,
-        title: tr(
-            lang,
-            "Работа, момент движущих сил, маховик: графически и точно",
-            "Робота, момент рушійних сил, маховик: графічно і точно",
-            "Work, driving moment, flywheel: graphical against exact",
-        )
+        title: if d.spec.constant_moment == ConstantMoment::Resisting {
+            tr(
+                lang,
+                "A_{д}, M_{с}, маховик: графически и точно",
+                "A_{д}, M_{с}, маховик: графічно і точно",
+                "A_{д}, M_{с}, flywheel: graphical against exact",
+            )
+        } else {
+            tr(
+                lang,
+                "Работа, момент движущих сил, маховик: графически и точно",
+                "Робота, момент рушійних сил, маховик: графічно і точно",
+                "Work, driving moment, flywheel: graphical against exact",
+            )
+        }
         .into(),
         columns: vec![
             (tr(lang, "величина", "величина", "quantity").into(), 22.0),

@@ -1,0 +1,113 @@
+//! A driving force from an indicator diagram (`[[forces.indicator]]`): the gas pressure in a
+//! cylinder as a function of the cycle angle (the indicator diagram unfolded against the
+//! crank angle), acting on the piston along the cylinder's axis, away from the cylinder head —
+//! towards the crank. The force is p·A with A = π·d²/4 of the bore.
+//!
+//! The cycle angle of a cylinder is θ = σ·(φ₁ − φ₀) mod 2π: φ₁ the crank angle, φ₀ the
+//! cylinder's `offset` (the crank angle at which its cycle starts), σ = ±1 the sense of
+//! rotation. One cycle is one turn of the crank (a two-stroke engine), so the dynamics'
+//! cycle of one revolution holds.
+
+use super::loads::{Load, LoadKind, Motion};
+use super::ForceError;
+use crate::geom::DVec2;
+use crate::linkage::{Op, PDir, PDyad, Program};
+use std::f64::consts::{PI, TAU};
+
+/// The indicator diagram of one cylinder.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Indicator {
+    /// The piston: the slider's joint of an RRP group.
+    pub point: String,
+    /// The bore d, m.
+    pub bore: f64,
+    /// The gas pressure (gauge) against the cycle angle: (θ rad, p Pa), θ increasing from 0
+    /// to 2π, p ≥ 0; linear between the rows, periodic.
+    pub pressure: Vec<(f64, f64)>,
+    /// The crank angle at which the cylinder's cycle starts φ₀, radians.
+    pub offset: f64,
+}
+
+impl Indicator {
+    /// The piston's area A = π·d²/4, m².
+    pub fn area(&self) -> f64 {
+        PI * self.bore * self.bore / 4.0
+    }
+
+    /// The gas pressure at cycle angle `theta` (any real; taken mod 2π), Pa.
+    pub fn pressure_at(&self, theta: f64) -> f64 {
+        let t = theta.rem_euclid(TAU);
+        let rows = &self.pressure;
+        let k = rows.partition_point(|r| r.0 <= t);
+        match (k.checked_sub(1).and_then(|i| rows.get(i)), rows.get(k)) {
+            (Some(&(t0, p0)), Some(&(t1, p1))) if t1 > t0 => p0 + (p1 - p0) * (t - t0) / (t1 - t0),
+            (Some(&(_, p0)), _) => p0,
+            (None, Some(&(_, p1))) => p1,
+            (None, None) => 0.0,
+        }
+    }
+
+    /// The cycle angle at crank angle `phi` turning in the sense `sense` (±1).
+    pub fn cycle_angle(&self, phi: f64, sense: f64) -> f64 {
+        (sense * (phi - self.offset)).rem_euclid(TAU)
+    }
+
+    /// The gas force on the piston at the position `motion`: p·A along the cylinder's axis
+    /// towards the crank, on the piston's link. `None` when the pressure is zero.
+    ///
+    /// # Errors
+    /// The point is not a piston (the slider's joint of an RRP group).
+    pub fn load(&self, prog: &Program, motion: &Motion) -> Result<Option<Load>, ForceError> {
+        let k = prog.index(&self.point).ok_or_else(|| ForceError::NoPoint {
+            key: "indicator.point",
+            name: self.point.clone(),
+        })?;
+        let (guide, slider) = prog
+            .ops
+            .iter()
+            .find_map(|op| match *op {
+                Op::Dyad {
+                    links,
+                    dyad: PDyad::Rrp { guide, joint, .. },
+                    ..
+                } if joint == k => Some((guide, links[1] as usize)),
+                _ => None,
+            })
+            .ok_or_else(|| ForceError::NotPiston {
+                name: self.point.clone(),
+            })?;
+        let at = |i: usize| motion.p.get(i).copied().unwrap_or(DVec2::ZERO);
+        let axis = match guide.dir {
+            PDir::Fixed(a) => DVec2::from_angle(a),
+            PDir::Along { from, to, angle } => {
+                DVec2::from_angle(angle).rotate((at(to) - at(from)).normalize_or_zero())
+            }
+        };
+        let (centre, pin) = (at(prog.centre), at(prog.pin));
+        let phi = (pin - centre).to_angle();
+        let w = motion
+            .omega
+            .get(prog.crank_link as usize)
+            .copied()
+            .unwrap_or(0.0);
+        let sense = if w < 0.0 { -1.0 } else { 1.0 };
+        let p = self.pressure_at(self.cycle_angle(phi, sense));
+        // Towards the crank: the axis turned to point from the piston to the crank's centre.
+        let towards = if axis.dot(centre - at(k)) < 0.0 {
+            -axis
+        } else {
+            axis
+        };
+        if p == 0.0 {
+            return Ok(None);
+        }
+        let sub = slider.to_string();
+        Ok(Some(Load::force(
+            slider,
+            LoadKind::Driving,
+            format!("F_{{д{sub}}}"),
+            towards * (p * self.area()),
+            k,
+        )))
+    }
+}
