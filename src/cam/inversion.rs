@@ -5,7 +5,7 @@
 use super::exact::{self, jay, to_cam, Kin, Motion, Placement, Point};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
-use crate::geom::{Arc, Circle, DVec2, Segment};
+use crate::geom::{french_curve, Arc, Circle, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
@@ -187,7 +187,13 @@ pub(crate) fn invert(
         for i in a..b {
             if curve {
                 out.extend_from_slice(
-                    &french_curve(pts[i], tangents[i], pts[i + 1], tangents[i + 1])[1..],
+                    &french_curve(
+                        pts[i],
+                        tangents[i],
+                        pts[i + 1],
+                        tangents[i + 1],
+                        CURVE_PIECES,
+                    )[1..],
                 );
             } else {
                 out.push(pts[i + 1]);
@@ -297,30 +303,6 @@ pub(crate) fn invert(
     })
 }
 
-/// Pieces of the French curve between two points of the practical profile.
-const CURVE_PIECES: usize = 8;
-
-/// The practical profile between its points `a` and `b` as the draftsman's French curve
-/// draws it: touching the profile's tangents `ta`, `tb` there (the cubic with those end
-/// directions, each as long as the chord), as `CURVE_PIECES + 1` points from `a` to `b`.
-pub fn french_curve(a: DVec2, ta: DVec2, b: DVec2, tb: DVec2) -> Vec<DVec2> {
-    let chord = b - a;
-    let len = chord.length();
-    // Each tangent turned along the chord.
-    let along = |t: DVec2| if t.dot(chord) < 0.0 { -t } else { t } * len;
-    let (ma, mb) = (along(ta), along(tb));
-    (0..=CURVE_PIECES)
-        .map(|k| {
-            let u = k as f64 / CURVE_PIECES as f64;
-            let (u2, u3) = (u * u, u * u * u);
-            a * (2.0 * u3 - 3.0 * u2 + 1.0)
-                + ma * (u3 - 2.0 * u2 + u)
-                + b * (3.0 * u2 - 2.0 * u3)
-                + mb * (u3 - u2)
-        })
-        .collect()
-}
-
 /// The neighbours of point `i` within its phase (one-sided at the phase's ends).
 fn neighbours(points: &[Point], i: usize) -> (usize, usize) {
     let same = |j: usize| points.get(j).is_some_and(|q| q.phase == points[i].phase);
@@ -359,3 +341,6 @@ fn drawn_rho_min(points: &[Point], c: &[DVec2]) -> f64 {
     }
     best
 }
+
+/// Pieces of the French curve between two points of the practical profile.
+pub const CURVE_PIECES: usize = 8;

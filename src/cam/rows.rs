@@ -92,11 +92,12 @@ pub fn deviation(
         if p.phase != q.phase {
             continue;
         }
-        let curve = super::inversion::french_curve(
+        let curve = crate::geom::french_curve(
             inv.profile[i],
             inv.tangents[i],
             inv.profile[i + 1],
             inv.tangents[i + 1],
+            super::inversion::CURVE_PIECES,
         );
         for j in 0..=16 {
             let phi = p.phi + (q.phi - p.phi) * j as f64 / 16.0;

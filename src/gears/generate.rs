@@ -4,13 +4,14 @@
 //! blank, and the points where it touches the envelope are found the textbook way — where
 //! the rack's normal passes through the pole P — on the straight flank (the involute), on the
 //! tip rounding (the fillet) and on the tip line (the root circle). The tooth is drawn
-//! through the touching points; undercut is detected where the drawn fillet crosses the
+//! through the touching points as the French curve touching the envelope there (⊥ the
+//! normal through P); undercut is detected where the drawn fillet crosses the
 //! drawn involute, pointing where the tip thickness read off the drawing falls below 0.3m.
 
 use super::rack::{Cutting, Piece};
 use super::{GearError, MIN_TIP};
 use crate::construct::{Context, Figure, Item, Measured, Recorder, Role};
-use crate::geom::{rotate, DVec2, Segment};
+use crate::geom::{french_curve, rotate, DVec2, Segment};
 use crate::scale::Scale;
 use std::f64::consts::PI;
 
@@ -23,6 +24,8 @@ pub struct Touch {
     pub piece: Piece,
     /// The point in the wheel's frame as drawn, converted with μ, m.
     pub at: DVec2,
+    /// The envelope's unit tangent there (⊥ the rack's normal through P), wheel frame.
+    pub tangent: DVec2,
 }
 
 /// A generated wheel: the figure, the touching points and what was read off the drawing.
@@ -49,7 +52,7 @@ pub struct Generation {
     pub sa: f64,
     /// s_a < 0.3m on the drawing.
     pub pointed: bool,
-    /// The largest distance between the drawn tooth (the polyline through the touching
+    /// The largest distance between the drawn tooth (the French curve through the touching
     /// points) and the exact envelope between them, m.
     pub deviation: f64,
     /// The mean of the largest distance of each drawn segment from the exact envelope, m.
@@ -150,10 +153,16 @@ pub fn generate(
                 Role::Construction,
                 &[],
             );
+            // The normal through P is the envelope's normal: its tangent is ⊥ it (the
+            // flank's own direction where it touches at P itself).
+            let flank = DVec2::new(-c.rack.alpha.sin(), c.rack.alpha.cos());
+            let normal = k - DVec2::new(0.0, r);
+            let tangent = normal.try_normalize().map_or(flank, DVec2::perp);
             touches.push(Touch {
                 q,
                 piece,
                 at: at * mu,
+                tangent: rotate(tangent, turn),
             });
         }
     }
@@ -205,21 +214,26 @@ pub fn generate(
     };
     // The tooth's right half as drawn: the involute from the tip down to the junction, the
     // fillet from the junction to the root, the root circle to the space's centre.
-    let mut right: Vec<DVec2> = fl
+    // Between the touching points of one piece the French curve touching the envelope's
+    // tangents; the junction is a corner.
+    let flank_drawn: Vec<Touch> = flank
         .get(inv_from..)
         .unwrap_or(&[])
         .iter()
         .rev()
         .copied()
         .collect();
+    let fillet_drawn: Vec<Touch> = fillet.iter().rev().take(fil_to).rev().copied().collect();
+    let root_drawn: Vec<Touch> = root
+        .iter()
+        .rev()
+        .filter(|t| t.q >= st.q_space - 1e-12 * c.module)
+        .copied()
+        .collect();
+    let mut right = curve_through(&flank_drawn);
     right.push(junction);
-    right.extend(fi.get(..fil_to).unwrap_or(&[]).iter().rev());
-    right.extend(
-        root.iter()
-            .rev()
-            .filter(|t| t.q >= st.q_space - 1e-12 * c.module)
-            .map(|t| t.at),
-    );
+    right.extend(curve_through(&fillet_drawn));
+    right.extend(curve_through(&root_drawn));
     let tooth = whole_tooth(&right, ra);
     rec.draw(
         "the tooth: the envelope of the rack positions",
@@ -266,11 +280,16 @@ pub fn generate(
     for list in [&flank, &fillet, &root] {
         let kept: Vec<&Touch> = list.iter().filter(|t| real(t)).collect();
         for w in kept.windows(2) {
-            let seg = Segment::new(w[0].at, w[1].at);
+            let curve = curve_through(&[*w[0], *w[1]]);
             let mut worst: f64 = 0.0;
             for k in 1..16 {
                 let q = w[0].q + (w[1].q - w[0].q) * f64::from(k) / 16.0;
-                worst = worst.max(distance_to_segment(twin(w[0].piece, q), &seg));
+                let e = twin(w[0].piece, q);
+                let d = curve
+                    .windows(2)
+                    .map(|p| distance_to_segment(e, &Segment::new(p[0], p[1])))
+                    .fold(f64::INFINITY, f64::min);
+                worst = worst.max(d);
             }
             deviation = deviation.max(worst);
             sum += worst;
@@ -311,6 +330,20 @@ pub fn whole_tooth(right: &[DVec2], ra: f64) -> Vec<DVec2> {
         }
     }
     out.extend_from_slice(right);
+    out
+}
+
+/// Pieces of the French curve between two touching points.
+const CURVE_PIECES: usize = 32;
+
+/// The drawn curve through touching points of one piece, in their order: the French curve
+/// touching the envelope's tangent at each.
+fn curve_through(touches: &[Touch]) -> Vec<DVec2> {
+    let mut out: Vec<DVec2> = touches.first().map(|t| t.at).into_iter().collect();
+    for w in touches.windows(2) {
+        let piece = french_curve(w[0].at, w[0].tangent, w[1].at, w[1].tangent, CURVE_PIECES);
+        out.extend_from_slice(&piece[1..]);
+    }
     out
 }
 

@@ -237,13 +237,21 @@ fn undercut_is_detected_for_z13_x0_and_not_for_x08() {
     assert!(seed000().sa[0] > MIN_TIP * 0.014);
 }
 
+/// The drawn tooth — the French curve touching the envelope at every touching point — falls
+/// at least as N⁻² from the exact envelope (straight pieces would fall as N⁻²; the curve's
+/// cubic pieces fall faster until their sub-chords show), and at N = 720 it is within the
+/// bench's 1e-6·m target for the tooth without shift and for x = 0.8, whose fillet bends
+/// sharply near the root.
 #[test]
-fn envelope_deviation_falls_as_n_squared() {
-    let c = Cutting::alone(0.014, 13, 0.0, GOST).unwrap();
-    let d = |n| generate(&c, n, mu(0.0005), &ctx(0.0)).unwrap().deviation;
-    let (a, b) = (d(180), d(720));
-    let order = (a / b).ln() / 4f64.ln();
-    assert!((1.7..2.3).contains(&order), "order {order}: {a} {b}");
+fn envelope_deviation_falls_at_least_as_n_squared() {
+    for x in [0.0, 0.8] {
+        let c = Cutting::alone(0.014, 13, x, GOST).unwrap();
+        let d = |n| generate(&c, n, mu(0.0005), &ctx(0.0)).unwrap().deviation;
+        let (a, b) = (d(180), d(720));
+        let order = (a / b).ln() / 4f64.ln();
+        assert!(order >= 1.9, "x = {x}: order {order}: {a} {b}");
+        assert!(b <= 1e-6 * c.module, "x = {x}: {b} m at N = 720");
+    }
 }
 
 #[test]

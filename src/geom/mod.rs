@@ -7,5 +7,7 @@ mod tolerance;
 
 pub use glam::DVec2;
 pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};
-pub use primitives::{nearest, rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side};
+pub use primitives::{
+    french_curve, nearest, rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,
+};
 pub use tolerance::{InvalidTolerance, Tolerances};

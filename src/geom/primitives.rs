@@ -248,3 +248,31 @@ pub fn nearest(candidates: &[DVec2], previous: DVec2) -> Option<usize> {
         })
         .map(|(i, _)| i)
 }
+
+/// A curve as the draftsman's French curve draws it between `a` and `b`, touching the
+/// directions `ta` there and `tb` here (the cubic with those end tangents, each turned along
+/// the chord and as long as it), as `pieces + 1` points from `a` to `b`.
+pub fn french_curve(a: DVec2, ta: DVec2, b: DVec2, tb: DVec2, pieces: usize) -> Vec<DVec2> {
+    let chord = b - a;
+    let len = chord.length();
+    let along = |t: DVec2| {
+        let t = t.normalize_or_zero();
+        if t.dot(chord) < 0.0 {
+            -t * len
+        } else {
+            t * len
+        }
+    };
+    let (ma, mb) = (along(ta), along(tb));
+    let pieces = pieces.max(1);
+    (0..=pieces)
+        .map(|k| {
+            let u = k as f64 / pieces as f64;
+            let (u2, u3) = (u * u, u * u * u);
+            a * (2.0 * u3 - 3.0 * u2 + 1.0)
+                + ma * (u3 - 2.0 * u2 + u)
+                + b * (3.0 * u2 - 2.0 * u3)
+                + mb * (u3 - u2)
+        })
+        .collect()
+}
