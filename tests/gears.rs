@@ -107,7 +107,7 @@ fn pz1_zero_wheel_is_undercut_and_the_shifted_one_pointed() {
     let v = report_json("constructions/gears-pz1.toml", "0");
     let n = notes(&v);
     assert!(
-        n.contains("wheel 0 (z = 10, x = 0) cut by the rack in 90 steps: undercut shown"),
+        n.contains("wheel 0 (z = 10, x = 0) cut by the rack in 40 steps: undercut shown"),
         "{n}"
     );
     assert!(

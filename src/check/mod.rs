@@ -192,6 +192,10 @@ impl Symbol {
         if let Some(base) = subject.strip_suffix("_f") {
             return format!("{}^{{тр}}", self.markup(base));
         }
+        // The ratio a required speed asks for: u_{18}^{треб}.
+        if let Some(base) = subject.strip_suffix("_req") {
+            return format!("{}^{{треб}}", self.markup(base));
+        }
         let letter = match self {
             Symbol::Displacement => "S",
             Symbol::Velocity => "V",

@@ -61,6 +61,9 @@ pub struct Generation {
     pub touch_error: f64,
 }
 
+/// Spacing of the undercut's hatching on the drawing, mm.
+const UNDERCUT_HATCH_MM: f64 = 0.5;
+
 /// Points per rounding arc of a drawn rack outline.
 const ARC_POINTS: usize = 6;
 
@@ -244,6 +247,50 @@ pub fn generate(
         Role::Result,
         &[],
     );
+    if undercut {
+        // The undercut: uncut, the tooth would follow the involute down to the base circle
+        // and the radial line below it; the fillet cuts into that outline from the junction
+        // down to where it comes back to the radial line. That outline is drawn thin and
+        // the material removed hatched, on both flanks.
+        let lost: Vec<DVec2> = flank[..inv_from].iter().map(|t| t.at).collect();
+        let off_axis = |p: DVec2| p.x.atan2(p.y);
+        let edge = off_axis(lost.first().copied().unwrap_or(junction));
+        let mut cut = Vec::new();
+        let down: Vec<DVec2> = fi[..fil_to].iter().rev().copied().collect();
+        for w in down.windows(2) {
+            cut.push(w[0]);
+            let (a, b) = (off_axis(w[0]), off_axis(w[1]));
+            if b >= edge {
+                cut.push(w[0].lerp(w[1], (edge - a) / (b - a)));
+                break;
+            }
+        }
+        let mut uncut = vec![junction];
+        uncut.extend(lost.iter().rev());
+        uncut.extend(cut.last());
+        let region: Vec<DVec2> = uncut.iter().chain(cut.iter().rev()).copied().collect();
+        for side in [1.0, -1.0] {
+            let flip = |p: DVec2| mm(DVec2::new(side * p.x, p.y));
+            let edge = rec.draw(
+                "the outline the undercut removed: the involute to r_b, the radial line",
+                Item::Polyline {
+                    points: uncut.iter().map(|p| flip(*p)).collect(),
+                    closed: false,
+                },
+                Role::Construction,
+                &[],
+            );
+            let outline: Vec<DVec2> = region.iter().map(|p| flip(*p)).collect();
+            for stroke in crate::geom::hatch(&outline, UNDERCUT_HATCH_MM, side * PI / 4.0) {
+                rec.draw(
+                    "hatching of the undercut",
+                    Item::Segment(stroke),
+                    Role::Hatch,
+                    &[edge],
+                );
+            }
+        }
+    }
     // The tip thickness: the chord between the two flanks' tip points, read with a ruler.
     let tip = flank
         .iter()

@@ -92,6 +92,49 @@ pub fn inv_inverse_newton(v: f64) -> Option<f64> {
     Some(a)
 }
 
+/// Decimals of the textbook's inv table.
+pub const TABLE_DIGITS: i32 = 6;
+
+/// The textbook's route to α from inv α: the value written to [`TABLE_DIGITS`] decimals,
+/// looked up in the inv table (a row every minute of arc, each rounded to
+/// [`TABLE_DIGITS`] decimals), read linearly between the two rows that bracket it and
+/// rounded to the second. Radians; `None` outside the table (0° … 60°).
+pub fn alpha_by_table(v: f64) -> Option<f64> {
+    let round = |x: f64| (x * 10f64.powi(TABLE_DIGITS)).round() / 10f64.powi(TABLE_DIGITS);
+    let row = |k: i32| round(inv((f64::from(k) / 60.0).to_radians()));
+    let v = round(v);
+    if !(0.0..=row(3600)).contains(&v) {
+        return None;
+    }
+    // The row at or below v, from the exact angle's minute (the rounded rows are monotone).
+    let exact = inv_inverse(v).ok()?.to_degrees() * 60.0;
+    let mut k = (exact.floor() as i32).clamp(0, 3599);
+    while k > 0 && row(k) > v {
+        k -= 1;
+    }
+    while k < 3599 && row(k + 1) <= v {
+        k += 1;
+    }
+    let (lo, hi) = (row(k), row(k + 1));
+    let minutes = f64::from(k) + if hi > lo { (v - lo) / (hi - lo) } else { 0.0 };
+    Some(((minutes * 60.0).round() / 3600.0).to_radians())
+}
+
+/// An angle as degrees, minutes and seconds (`26°34′51″`, seconds to `decimals`).
+pub fn dms(alpha: f64, decimals: usize) -> String {
+    let total = alpha.to_degrees().abs() * 3600.0;
+    let scale = 10f64.powi(decimals as i32);
+    let total = (total * scale).round() / scale;
+    let d = (total / 3600.0).floor();
+    let m = ((total - d * 3600.0) / 60.0).floor();
+    let s = total - d * 3600.0 - m * 60.0;
+    format!(
+        "{}{d}°{m:02}′{s:0w$.decimals$}″",
+        if alpha < 0.0 { "−" } else { "" },
+        w = if decimals > 0 { decimals + 3 } else { 2 }
+    )
+}
+
 /// The pressure angle of an involute of the base radius `rb` at the radius `ry` ≥ `rb`.
 pub fn pressure_angle(rb: f64, ry: f64) -> f64 {
     (rb / ry).clamp(-1.0, 1.0).acos()

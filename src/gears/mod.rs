@@ -285,6 +285,9 @@ pub struct TrainStudy {
     pub stages: Option<f64>,
     /// The velocity triangles.
     pub triangles: train::Triangles,
+    /// With n_input and n_output: the train whose first mesh has the ratio the required
+    /// |u| = n_in/n_out asks for (the textbook's route before the tooth choice), studied alike.
+    pub required: Option<Box<TrainStudy>>,
 }
 
 /// Carry out the train study.
@@ -298,12 +301,24 @@ pub fn train_study(
     let t = &spec.train;
     let willis = t.willis()?;
     let ratio = t.ratio()?;
+    let required = match (spec.n_input, spec.n_output, t.meshes.is_empty()) {
+        (Some(n_in), Some(n_out), false) => {
+            let design = PlanetarySpec {
+                train: t.with_ratio(0, (n_in / n_out).abs())?,
+                n_output: None,
+                ..spec.clone()
+            };
+            Some(Box::new(train_study(&design, ctx)?))
+        }
+        _ => None,
+    };
     Ok(TrainStudy {
         spec: spec.clone(),
         willis,
         ratio,
         stages: t.by_stages(),
         triangles: train::triangles(t, ctx)?,
+        required,
     })
 }
 
@@ -327,24 +342,26 @@ impl TrainStudy {
             scale,
         };
         let mut out = Vec::new();
-        if let Some(s) = self.stages {
-            out.push(row(
-                Symbol::GearRatio,
-                &subject,
-                Method::Formula,
-                s,
-                self.ratio,
-                self.ratio.abs(),
-            ));
+        let ratio_rows = |t: &TrainStudy, subject: &str| {
+            let at = |method, graphical| {
+                row(
+                    Symbol::GearRatio,
+                    subject,
+                    method,
+                    graphical,
+                    t.ratio,
+                    t.ratio.abs(),
+                )
+            };
+            t.stages
+                .map(|s| at(Method::Formula, s))
+                .into_iter()
+                .chain([at(Method::Triangles, t.triangles.ratio)])
+        };
+        out.extend(ratio_rows(self, &subject));
+        if let Some(r) = &self.required {
+            out.extend(ratio_rows(r, &format!("{subject}_req")));
         }
-        out.push(row(
-            Symbol::GearRatio,
-            &subject,
-            Method::Triangles,
-            self.triangles.ratio,
-            self.ratio,
-            self.ratio.abs(),
-        ));
         if let Some(n) = self.spec.n_input {
             let w_in = n * std::f64::consts::PI / 30.0;
             let scale = self.willis.iter().fold(0.0_f64, |a, w| a.max(w.abs())) * w_in.abs();
@@ -404,7 +421,7 @@ impl TrainStudy {
             ));
             if let Some(m) = t.meshes.first() {
                 let (a, b) = (&t.wheels[m.0], &t.wheels[m.1]);
-                let now = f64::from(b.z) / f64::from(a.z);
+                let now = b.z / a.z;
                 let want = now * required / self.ratio.abs();
                 let best = train::best_pairs(want, 17, 40, 4);
                 let list: Vec<String> = best
@@ -431,20 +448,54 @@ impl TrainStudy {
                 ));
             }
         }
-        if let (Some(k), Some(h), Ok((ys, _))) = (self.spec.satellites, t.carrier, t.layout()) {
-            for &s in &t.satellites {
-                let arm = (ys[s] - ys[h]).abs();
-                let chord = 2.0 * arm * (std::f64::consts::PI / f64::from(k)).sin();
-                for (w, wheel) in t.wheels.iter().enumerate().filter(|(_, w)| w.shaft == s) {
-                    let da = 2.0 * t.radius(w) + 2.0 * t.module;
-                    out.push(format!(
-                        "train: neighbour condition, k = {k}: 2·a·sin(π/k) = {} mm {} d_a{} = {} mm",
-                        num(chord * 1e3, 5),
-                        if chord > da { ">" } else { "≤ (fails:)" },
-                        wheel.name,
-                        num(da * 1e3, 5)
-                    ));
-                }
+        if let Some(k) = self.spec.satellites {
+            for (w, chord, da) in t.neighbour(k).unwrap_or_default() {
+                out.push(format!(
+                    "train: neighbour condition, k = {k}: 2·a·sin(π/k) = {} mm {} d_a{} = {} mm",
+                    num(chord * 1e3, 5),
+                    if chord > da { ">" } else { "≤ (fails:)" },
+                    t.wheels[w].name,
+                    num(da * 1e3, 5)
+                ));
+            }
+            if let Some(a) = t.assembly(k) {
+                let z = &t.wheels[a.central];
+                let b = t.fixed.map_or("", |f| t.shafts[f].as_str());
+                let frac = |(n, d): (i128, i128)| match (n, d) {
+                    (n, 1) if n >= 0 => n.to_string(),
+                    (n, 1) => format!("(−{})", -n),
+                    (n, d) if n >= 0 => format!("{n}/{d}"),
+                    (n, d) => format!("(−{}/{d})", -n),
+                };
+                let value = frac(a.value);
+                let textbook = match a.p {
+                    Some(p) => format!("whole for p = {p}"),
+                    None => "never whole".to_string(),
+                };
+                let block = a.block.map_or(String::new(), |v| {
+                    format!(
+                        "; for identical blocks, z{}·u{}H·(z_f/gcd(z_g, z_f))/k = {}",
+                        z.name,
+                        z.name,
+                        frac(v)
+                    )
+                });
+                let verdict = if a.fits() {
+                    format!("the {k} satellites assemble spaced equally")
+                } else {
+                    let fit: Vec<String> = (2..=8)
+                        .filter(|&j| t.admits(j))
+                        .map(|j| j.to_string())
+                        .collect();
+                    format!(
+                        "fails: {k} satellites cannot be spaced equally; k = {} can (assembly and neighbour)",
+                        fit.join(", ")
+                    )
+                };
+                out.push(format!(
+                    "train: assembly condition, k = {k}: z{}·u{}H^({b})/k = {value}, (1 + kp)·{value} {textbook} (the textbook's){block}: {verdict}",
+                    z.name, z.name
+                ));
             }
         }
         out

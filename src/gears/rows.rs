@@ -257,9 +257,18 @@ pub fn generation_notes(name: &str, g: &Generation) -> Vec<String> {
     out
 }
 
-/// The notes of a pair: ε_α ≥ 1.1, the radial clearances, and the seeds' errata computed
-/// from this pair — seed 000's base radius r·cos α_w (its ε_α = 1.22), and, for PZ3's pair,
-/// cos 26.92° misread as 0.8836 (a_w = 180.79 mm, ε_α = 1.14) and "p = 14.13 mm".
+/// The centre distance of the textbook's table route: y = x_Σ − Δy with the table's Δy,
+/// a_w = m(z_Σ/2 + y).
+pub fn table_a_w(p: &Pair) -> f64 {
+    let zs = f64::from(p.spec.z[0] + p.spec.z[1]);
+    p.spec.module * (zs / 2.0 + p.spec.x_sum() - p.dy)
+}
+
+/// The notes of a pair: ε_α ≥ 1.1, the radial clearances, the table route (α_w read in
+/// the inv table; with the table's Δy, y and a_w), and the seeds' errata computed from this
+/// pair — seed 000's base radius r·cos α_w (its ε_α = 1.22) and its α_w = 26°34′45″, and,
+/// for PZ3's pair, cos 26.92° misread as 0.8836 (a_w = 180.79 mm, ε_α = 1.14) and
+/// "p = 14.13 mm".
 pub fn pair_notes(p: &Pair) -> Vec<String> {
     let m = p.spec.module;
     let mut out = vec![format!(
@@ -278,6 +287,32 @@ pub fn pair_notes(p: &Pair) -> Vec<String> {
         num(p.clearance[1] * 1e3, 5),
         num(p.spec.rack.c * m * 1e3, 4),
     )];
+    // The table route: inv α_w written to six decimals and read in the inv table.
+    if let Some(table) = super::involute::alpha_by_table(p.inv_w) {
+        use super::involute::{dms, TABLE_DIGITS};
+        out.push(format!(
+            "gears: by the inv table (a row every 1′ to {TABLE_DIGITS} decimals, read linearly): inv α_w = {:.6} → α_w = {} (exact {}){}",
+            p.inv_w,
+            dms(table, 0),
+            dms(p.alpha_w, 1),
+            if p.spec.z == [13, 30] && (m - 0.014).abs() < 1e-12 {
+                "; seed 000 prints 26°34′45″, 6″ off the table's own reading: not reproduced"
+            } else {
+                ""
+            }
+        ));
+    }
+    if p.spec.dy_table.is_some() {
+        let y = p.spec.x_sum() - p.dy;
+        out.push(format!(
+            "gears: by the tables: Δy = {} (table), y = x_Σ − Δy = {}, a_w = m(z_Σ/2 + y) = {} mm against the exact {} mm (y = {}); the tip radii take the table's Δy",
+            num(p.dy, 4),
+            num(y, 5),
+            num(table_a_w(p) * 1e3, 7),
+            num(p.a_w * 1e3, 7),
+            num(p.y, 5),
+        ));
+    }
     // Seed 000: r_b = r·cos α_w and the base pitch πm·cos α_w.
     let wrong_pb = p.p * p.alpha_w.cos();
     out.push(format!(

@@ -1,12 +1,12 @@
 //! Tests of the gear studies: seed values (with the seeds' errata not reproduced), analytic
 //! oracles and properties.
 
-use super::generate::generate;
+use super::generate::{generate, Generation};
 use super::involute::{inv_inverse_newton, involute_point, origin_angle, thickness_at};
 use super::mesh::meshing;
 use super::*;
-use crate::construct::{Context, Drafting};
-use crate::geom::DVec2;
+use crate::construct::{Context, Drafting, Item, Role};
+use crate::geom::{DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use proptest::prelude::*;
 
@@ -215,6 +215,35 @@ fn undercut_is_detected_for_z13_x0_and_not_for_x08() {
     let g0 = generate(&zero, 120, mu(0.0005), &ctx(0.0)).unwrap();
     let g8 = generate(&shifted, 120, mu(0.0005), &ctx(0.0)).unwrap();
     assert!(g0.undercut && !g8.undercut);
+    // The undercut is drawn: the material between the uncut outline (the involute to r_b,
+    // the radial line under it) and the fillet hatched on both flanks, between the root
+    // circle and the junction, inside that outline.
+    let hatching = |g: &Generation| -> Vec<Segment> {
+        g.figure
+            .steps
+            .iter()
+            .filter_map(|s| match (&s.role, &s.item) {
+                (Role::Hatch, Item::Segment(seg)) => Some(*seg),
+                _ => None,
+            })
+            .collect()
+    };
+    let strokes = hatching(&g0);
+    assert!(strokes.iter().any(|s| s.from.x > 0.0) && strokes.iter().any(|s| s.from.x < 0.0));
+    let (rf_mm, j_mm) = (zero.rf() / 0.0005, zero.junction().0.length() / 0.0005);
+    let base = zero.involute_at(zero.states().q_p - zero.r() * GOST.alpha.tan());
+    assert!((base.length() - zero.rb()).abs() < 1e-12);
+    let edge = base.x.atan2(base.y);
+    for s in &strokes {
+        for p in [s.from, s.to] {
+            assert!(
+                p.length() > rf_mm && p.length() < j_mm + 0.01,
+                "{p} {rf_mm} {j_mm}"
+            );
+            assert!(p.x.abs().atan2(p.y) < edge + 1e-4, "{p}");
+        }
+    }
+    assert!(hatching(&g8).is_empty());
     // The drawn junction: the crossing of the drawn fillet and involute, pinned by setting
     // the rack between the crossing steps, is the exact intersection of involute and
     // trochoid to 1e-8·m (a peer generator misses it by 0.0076·m); the two curves cross at
@@ -331,7 +360,7 @@ fn train(
         .iter()
         .map(|(s, n, z, int)| train::Wheel {
             name: n.to_string(),
-            z: *z,
+            z: f64::from(*z),
             shaft: idx(s, &mut shafts),
             internal: *int,
         })
@@ -547,4 +576,180 @@ fn the_teeth_of_the_meshing_picture_touch_at_p_between_their_circles() {
         }
         assert_eq!(seen, 2);
     }
+}
+
+/// The assembly condition by placing the satellites: central wheel a (z_a, a ring when
+/// `a_ring`) meshes the block's wheel g, the block's wheel f meshes the fixed b; both central
+/// wheels stand still while k rigid blocks (g and f fixed to each other alike) are put in at
+/// 2πj/k. Each mesh fixes the sum (external) or difference (internal) of the two wheels' tooth
+/// phases at the contact direction; the first block sets both constants. True when every
+/// block has an orientation meeting both.
+fn blocks_fit(za: u32, a_ring: bool, zg: u32, zf: u32, zb: u32, b_ring: bool, k: u32) -> bool {
+    use std::f64::consts::TAU;
+    // The mesh phase of central z_c and satellite z_s with the block at θ turned by ψ.
+    let phase = |zc: u32, ring: bool, zs: u32, theta: f64, psi: f64| {
+        let c = f64::from(zc) * theta / TAU;
+        if ring {
+            c - f64::from(zs) * (theta - psi) / TAU
+        } else {
+            c + f64::from(zs) * (theta + TAU / 2.0 - psi) / TAU
+        }
+    };
+    let whole = |x: f64| (x - x.round()).abs() < 1e-9;
+    let (ca, cb) = (
+        phase(za, a_ring, zg, 0.0, 0.0),
+        phase(zb, b_ring, zf, 0.0, 0.0),
+    );
+    (1..k).all(|j| {
+        let theta = TAU * f64::from(j) / f64::from(k);
+        // The phase is linear in ψ with slope ±z_g/2π: ψ* meets the a-mesh exactly, and so
+        // does ψ* + 2πn/z_g.
+        let slope = if a_ring { 1.0 } else { -1.0 } * f64::from(zg) / TAU;
+        let psi0 = (ca - phase(za, a_ring, zg, theta, 0.0)) / slope;
+        (0..zg).any(|n| {
+            let psi = psi0 + TAU * f64::from(n) / f64::from(zg);
+            whole(phase(zb, b_ring, zf, theta, psi) - cb)
+        })
+    })
+}
+
+#[test]
+fn assembly_condition_of_the_seed000_reducer_and_pz2() {
+    // Seed 000: z₃·u₃H⁽⁶⁾/k = 106·(1 − 48·76/(106·18))/k = −290/(3k).
+    let t = reducer(29, 74);
+    let a3 = t.assembly(3).unwrap();
+    assert_eq!(t.wheels[a3.central].name, "3");
+    assert_eq!(
+        (a3.value, a3.p, a3.block),
+        ((-290, 9), None, Some((-290, 3)))
+    );
+    let a2 = t.assembly(2).unwrap();
+    assert_eq!(
+        (a2.value, a2.p, a2.block),
+        ((-145, 3), Some(1), Some((-145, 1)))
+    );
+    // A block the textbook's (1 + kp) refuses though it fits turned by 2π·2/z_g:
+    // z_a = 17, z_g = 14, z_f = 32, ring 68, k = 2: 187/8·(1 + 2p) is never whole, yet
+    // 187/8·32/2 = 374 is.
+    let b = train(
+        &[
+            ("A", "a", 17, false),
+            ("S", "g", 14, false),
+            ("S", "f", 32, false),
+            ("F", "b", 68, true),
+        ],
+        &[("a", "g"), ("f", "b")],
+        ("A", "H"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    )
+    .assembly(2)
+    .unwrap();
+    assert_eq!((b.value, b.p, b.block), ((187, 8), None, Some((374, 1))));
+    assert!(b.fits() && blocks_fit(17, false, 14, 32, 68, true, 2));
+    assert!(!blocks_fit(106, true, 48, 18, 76, true, 3));
+    assert!(blocks_fit(106, true, 48, 18, 76, true, 2));
+    assert!(t.admits(2) && !t.admits(3));
+    // PZ2 example 3's James stage: (20 + 80)/k whole for k = 4, not for k = 3.
+    let james = train(
+        &[
+            ("A", "3", 20, false),
+            ("S", "4", 30, false),
+            ("F", "5", 80, true),
+        ],
+        &[("3", "4"), ("4", "5")],
+        ("A", "H"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    );
+    assert_eq!(
+        james.assembly(4).map(|a| (a.value, a.p)),
+        Some(((25, 1), Some(0)))
+    );
+    assert!(james
+        .assembly(3)
+        .is_some_and(|a| a.p.is_none() && !a.fits()));
+    // Neighbours: (20 + 30)·sin(π/k) against 30 + 2 teeth: k = 4 fits, k = 5 does not.
+    assert!(james.admits(4) && !james.admits(5));
+}
+
+#[test]
+fn the_first_stage_at_the_required_ratio_gives_it_by_willis_and_the_triangles() {
+    // Seed 000: U₁₋₈ = n₁/n₈ = 1400/150; the seed solves i₁₂ = U/(i₃H·i₇₈) = 2.5586.
+    let t = reducer(29, 74).with_ratio(0, 1400.0 / 150.0).unwrap();
+    let u = t.ratio().unwrap();
+    assert!((u + 28.0 / 3.0).abs() < 1e-12, "{u}");
+    assert!((t.wheels[1].z / t.wheels[0].z - 2.558_621).abs() < 1e-6);
+    let tri = train::triangles(&t, &ctx(0.0)).unwrap();
+    assert!((tri.ratio - u).abs() < 1e-9 * u.abs());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn assembly_condition_equals_placing_the_satellites(
+        za in 12u32..60, zg in 12u32..40, zf in 12u32..40, a_ring in any::<bool>(), b_ring in any::<bool>(), k in 2u32..7, dz in 0u32..30
+    ) {
+        // Any block (z_g, z_f) between a and b; coaxiality is not needed to place teeth.
+        let zb = if b_ring { za + zg + zf + dz } else { 12 + dz };
+        let t = train(
+            &[("A", "a", za, a_ring), ("S", "g", zg, false), ("S", "f", zf, false), ("F", "b", zb, b_ring)],
+            &[("a", "g"), ("f", "b")],
+            ("A", "H"),
+            Some("F"),
+            Some("H"),
+            &["S"],
+        );
+        let a = t.assembly(k).unwrap();
+        prop_assert_eq!(a.fits(), blocks_fit(za, a_ring, zg, zf, zb, b_ring, k), "{:?}", a);
+        // The textbook's (1 + kp) is sufficient.
+        prop_assert!(a.p.is_none() || a.fits(), "{:?}", a);
+    }
+}
+
+#[test]
+fn the_inv_table_route_reads_alpha_w_to_its_resolution() {
+    use super::involute::{alpha_by_table, dms, inv};
+    // Seed 000: inv α_w = 0.036421 → 26°34′51″ from the table (exact 26°34′50.7″); the seed
+    // prints 26°34′45″, six seconds off its own table, and that is not produced.
+    let p = seed000();
+    let table = alpha_by_table(p.inv_w).unwrap();
+    assert_eq!(dms(table, 0), "26°34′51″");
+    assert_eq!(dms(p.alpha_w, 1), "26°34′50.7″");
+    assert_ne!(dms(table, 0), "26°34′45″");
+    // The table's resolution: a row's rounding (5e-7) over its step (tan²α per radian) and
+    // the second's rounding; within 1″ from 20° up.
+    for k in 0..400 {
+        let a = (20.0 + 40.0 * f64::from(k) / 400.0).to_radians();
+        let read = alpha_by_table(inv(a)).unwrap();
+        assert!(
+            (read - a).abs() < (1.0 / 3600.0_f64).to_radians(),
+            "{}",
+            a.to_degrees()
+        );
+    }
+    assert!(alpha_by_table(-1e-3).is_none() && alpha_by_table(10.0).is_none());
+}
+
+#[test]
+fn the_tables_delta_y_reproduces_the_seeds_rounded_numbers() {
+    // Seed 000 takes Δy = 0.18 from the tables: y = 1.091, a_w = 316.274 mm, r_a = 113.68 and
+    // 228.074 mm (exact: Δy = 0.17983, a_w = 316.276, r_a = 113.682, 228.076).
+    let p = Pair::new(PairSpec {
+        dy_table: Some(0.18),
+        ..seed000().spec
+    })
+    .unwrap();
+    assert!((super::rows::table_a_w(&p) * 1e3 - 316.274).abs() < 1e-9);
+    assert!((p.ra[0] * 1e3 - 113.68).abs() < 1e-9 && (p.ra[1] * 1e3 - 228.074).abs() < 1e-9);
+    assert!(
+        (p.a_w * 1e3 - 316.2764).abs() < 1e-4,
+        "the centre distance stays exact"
+    );
+    assert!(super::rows::pair_notes(&p)
+        .iter()
+        .any(|n| n.contains("316.274")));
 }

@@ -22,8 +22,9 @@ use thiserror::Error;
 pub struct Wheel {
     /// Its name (`1`, `2'`).
     pub name: String,
-    /// Teeth.
-    pub z: u32,
+    /// Teeth: whole in a scene's train; a fraction in the design stage the required ratio
+    /// asks for before the tooth choice ([`Train::with_ratio`]).
+    pub z: f64,
     /// The shaft it is fixed to (index into [`Train::shafts`]).
     pub shaft: usize,
     /// An internal (ring) gear.
@@ -85,7 +86,7 @@ pub enum TrainError {
 impl Train {
     /// r = m z/2 of wheel `w`, m.
     pub fn radius(&self, w: usize) -> f64 {
-        self.module * f64::from(self.wheels[w].z) / 2.0
+        self.module * self.wheels[w].z / 2.0
     }
 
     fn is_satellite(&self, shaft: usize) -> bool {
@@ -112,13 +113,13 @@ impl Train {
             let (a, b) = (&self.wheels[m.0], &self.wheels[m.1]);
             let sign = if a.internal || b.internal { -1.0 } else { 1.0 };
             let mut r = vec![0.0; n];
-            r[a.shaft] += f64::from(a.z);
-            r[b.shaft] += sign * f64::from(b.z);
+            r[a.shaft] += a.z;
+            r[b.shaft] += sign * b.z;
             if self.is_satellite(a.shaft) || self.is_satellite(b.shaft) {
                 let h = self
                     .carrier
                     .ok_or_else(|| TrainError::NoCarrier(a.name.clone()))?;
-                r[h] -= f64::from(a.z) + sign * f64::from(b.z);
+                r[h] -= a.z + sign * b.z;
             }
             rows.push((r, 0.0));
         }
@@ -169,7 +170,7 @@ impl Train {
                         } else {
                             -1.0
                         };
-                        w[wb.shaft] = Some(sign * v * f64::from(wa.z) / f64::from(wb.z));
+                        w[wb.shaft] = Some(sign * v * wa.z / wb.z);
                     }
                 }
             }
@@ -199,31 +200,142 @@ impl Train {
     /// u_af^(H): with the carrier stopped, ω_a/ω_f through the satellites (every wheel on a
     /// shaft turns with it); `None` when a does not reach f through satellites.
     fn stopped_ratio(&self, a: usize, f: usize) -> Option<f64> {
-        // Relative speeds (ω − ω_H), starting with ω_a − ω_H = 1.
+        let rel = self.stopped_walk(a, 1.0, |v, x, y, internal| {
+            (if internal { v } else { -v }) * x.z / y.z
+        });
+        let rf = rel[f]?;
+        (rf.abs() > 1e-300).then(|| 1.0 / rf)
+    }
+
+    /// With the carrier stopped, every shaft's ω − ω_H reached from shaft `a` (where it is
+    /// `one`) through the satellites' meshes, each mesh x → y carried by `step(v, x, y,
+    /// internal)`.
+    fn stopped_walk<T: Copy>(
+        &self,
+        a: usize,
+        one: T,
+        step: impl Fn(T, &Wheel, &Wheel, bool) -> T,
+    ) -> Vec<Option<T>> {
         let n = self.shafts.len();
-        let mut rel: Vec<Option<f64>> = vec![None; n];
-        rel[a] = Some(1.0);
+        let mut rel: Vec<Option<T>> = vec![None; n];
+        rel[a] = Some(one);
         for _ in 0..n + 2 {
             for m in &self.meshes {
                 for (x, y) in [(m.0, m.1), (m.1, m.0)] {
                     let (wx, wy) = (&self.wheels[x], &self.wheels[y]);
                     let through = self.is_satellite(wx.shaft) || self.is_satellite(wy.shaft);
-                    if !through {
-                        continue;
-                    }
-                    if let (Some(v), None) = (rel[wx.shaft], rel[wy.shaft]) {
-                        let sign = if wx.internal || wy.internal {
-                            1.0
-                        } else {
-                            -1.0
-                        };
-                        rel[wy.shaft] = Some(sign * v * f64::from(wx.z) / f64::from(wy.z));
+                    if let (true, Some(v), None) = (through, rel[wx.shaft], rel[wy.shaft]) {
+                        rel[wy.shaft] = Some(step(v, wx, wy, wx.internal || wy.internal));
                     }
                 }
             }
         }
-        let rf = rel[f]?;
-        (rf.abs() > 1e-300).then(|| 1.0 / rf)
+        rel
+    }
+
+    /// The same train with mesh `mesh`'s second wheel sized so that |u_in,out| = `ratio`:
+    /// the stage the textbook solves for from the required ratio before it chooses whole
+    /// teeth (seed 000: i₁₂ = U₁₋₈/(i₃H·i₇₈)).
+    ///
+    /// # Errors
+    /// As [`Train::ratio`].
+    pub fn with_ratio(&self, mesh: usize, ratio: f64) -> Result<Train, TrainError> {
+        let mut t = self.clone();
+        let w = self.meshes[mesh].1;
+        t.wheels[w].z *= ratio / self.ratio()?.abs();
+        Ok(t)
+    }
+
+    /// The assembly condition of `k` satellites spaced equally, between the central wheel a
+    /// that meshes the satellites and the fixed central wheel b.
+    ///
+    /// The textbook's: turning the carrier by 2π(1 + kp)/k turns a by z_a·u_aH^(b)·(1 + kp)/k
+    /// pitches, which must be whole for the next satellite to enter where the first did.
+    /// That is sufficient, not necessary, for a block of two wheels g (meshing a) and f
+    /// (meshing b): a block turned by 2πn/z_g still meshes a and shifts f by n·z_f/z_g of its
+    /// pitch, so identical blocks enter at every 2πj/k exactly when
+    /// z_a·u_aH^(b)·(z_f/gcd(z_g, z_f))/k is whole (for one wheel, g = f, both agree).
+    /// `None` when the train has no such pair of central wheels or its teeth are not whole.
+    pub fn assembly(&self, k: u32) -> Option<Assembly> {
+        let (h, b) = (self.carrier?, self.fixed?);
+        let whole = |z: f64| (z.fract() == 0.0 && z > 0.0 && z < 1e6).then_some(z as i128);
+        let central = self.meshes.iter().find_map(|m| {
+            [(m.0, m.1), (m.1, m.0)].into_iter().find_map(|(x, y)| {
+                let sx = self.wheels[x].shaft;
+                (self.is_satellite(self.wheels[y].shaft)
+                    && !self.is_satellite(sx)
+                    && sx != b
+                    && sx != h)
+                    .then_some(x)
+            })
+        })?;
+        let a = self.wheels[central].shaft;
+        // (ω − ω_H)/(ω_a − ω_H) as a fraction n/d.
+        let rel = self.stopped_walk(a, Some((1_i128, 1_i128)), |v, x, y, internal| {
+            let (n, d) = v?;
+            let n = n.checked_mul(whole(x.z)?)?;
+            let d = d.checked_mul(whole(y.z)?)?;
+            Some(reduced(if internal { n } else { -n }, d))
+        });
+        // u_ab^(H) = d/n, u_aH^(b) = 1 − d/n = (n − d)/n.
+        let (n, d) = rel[b]??;
+        let za = whole(self.wheels[central].z)?;
+        let value = reduced(za.checked_mul(n - d)?, n.checked_mul(i128::from(k))?);
+        // 1 + kp ≡ 0 (mod D): solvable when gcd(k, D) = 1, p = −k⁻¹ mod D.
+        let den = value.1;
+        let p = (gcd(i128::from(k), den) == 1).then(|| {
+            let inv = inverse_mod(i128::from(k).rem_euclid(den), den);
+            (den - inv).rem_euclid(den)
+        });
+        // The block: g meshes a; f, on g's shaft, meshes a wheel of b.
+        let g = self.meshes.iter().find_map(|m| {
+            (m.0 == central)
+                .then_some(m.1)
+                .or((m.1 == central).then_some(m.0))
+        })?;
+        let sat = self.wheels[g].shaft;
+        let f = self.meshes.iter().find_map(|m| {
+            [(m.0, m.1), (m.1, m.0)].into_iter().find_map(|(x, y)| {
+                (self.wheels[x].shaft == sat && self.wheels[y].shaft == b).then_some(x)
+            })
+        });
+        let block = match f {
+            Some(f) => {
+                let (zg, zf) = (whole(self.wheels[g].z)?, whole(self.wheels[f].z)?);
+                Some(reduced(value.0.checked_mul(zf / gcd(zg, zf))?, value.1))
+            }
+            None => None,
+        };
+        Some(Assembly {
+            central,
+            k,
+            value,
+            p,
+            block,
+        })
+    }
+
+    /// The neighbour condition of `k` satellites: for every satellite wheel, the chord
+    /// 2·a·sin(π/k) between neighbouring axes against its tip diameter d_a = m(z + 2), m.
+    /// `None` without a carrier or a layout.
+    pub fn neighbour(&self, k: u32) -> Option<Vec<(usize, f64, f64)>> {
+        let h = self.carrier?;
+        let (ys, _) = self.layout().ok()?;
+        let mut out = Vec::new();
+        for &s in &self.satellites {
+            let chord = 2.0 * (ys[s] - ys[h]).abs() * (std::f64::consts::PI / f64::from(k)).sin();
+            for (w, _) in self.wheels.iter().enumerate().filter(|(_, w)| w.shaft == s) {
+                out.push((w, chord, 2.0 * self.radius(w) + 2.0 * self.module));
+            }
+        }
+        Some(out)
+    }
+
+    /// Whether `k` satellites fit side by side and can be assembled spaced equally.
+    pub fn admits(&self, k: u32) -> bool {
+        self.neighbour(k)
+            .is_some_and(|v| v.iter().all(|(_, chord, da)| chord > da))
+            && self.assembly(k).is_some_and(|a| a.fits())
     }
 
     /// The inversion table (seed 002 Table 2.1): every shaft's ω before and after the
@@ -333,6 +445,57 @@ impl Train {
         }
         Ok((ys, poles))
     }
+}
+
+/// The assembly condition of k satellites ([`Train::assembly`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Assembly {
+    /// The central wheel a (index into [`Train::wheels`]).
+    pub central: usize,
+    /// The number of satellites.
+    pub k: u32,
+    /// z_a·u_aH^(b)/k as a reduced fraction (numerator, denominator > 0).
+    pub value: (i128, i128),
+    /// The least p ≥ 0 making (1 + kp)·value whole (the textbook's condition); `None` when
+    /// none does.
+    pub p: Option<i128>,
+    /// value·z_f/gcd(z_g, z_f) reduced, when the satellites are one block g–f between a and
+    /// b: whole exactly when identical blocks fit at every 2πj/k.
+    pub block: Option<(i128, i128)>,
+}
+
+impl Assembly {
+    /// Whether k satellites can be assembled spaced equally: the block's exact condition,
+    /// or the textbook's when the train is not a single block between a and b.
+    pub fn fits(&self) -> bool {
+        self.block.map_or(self.p.is_some(), |b| b.1 == 1)
+    }
+}
+
+fn gcd(a: i128, b: i128) -> i128 {
+    let (mut a, mut b) = (a.abs(), b.abs());
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+/// n/d in lowest terms with d > 0.
+fn reduced(n: i128, d: i128) -> (i128, i128) {
+    let g = gcd(n, d).max(1);
+    let s = if d < 0 { -1 } else { 1 };
+    (s * n / g, s * d / g)
+}
+
+/// x⁻¹ mod m for gcd(x, m) = 1 (extended Euclid); 0 when m = 1.
+fn inverse_mod(x: i128, m: i128) -> i128 {
+    let (mut r0, mut r1, mut s0, mut s1) = (m, x, 0_i128, 1_i128);
+    while r1 != 0 {
+        let q = r0 / r1;
+        (r0, r1) = (r1, r0 - q * r1);
+        (s0, s1) = (s1, s0 - q * s1);
+    }
+    s0.rem_euclid(m)
 }
 
 /// Gaussian elimination with partial pivoting; `None` when singular.

@@ -1,11 +1,13 @@
 //! The geometry kernel: primitives on `glam::DVec2`, intersections as outcome enums,
 //! explicit tolerances. Knows nothing of plates, scenes or mechanisms.
 
+mod hatch;
 mod intersect;
 mod primitives;
 mod tolerance;
 
 pub use glam::DVec2;
+pub use hatch::hatch;
 pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};
 pub use primitives::{
     french_curve, nearest, rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,

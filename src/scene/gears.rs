@@ -133,7 +133,7 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
         });
         wheels.push(Wheel {
             name,
-            z,
+            z: f64::from(z),
             shaft: idx,
             internal: w.internal.unwrap_or(false),
         });

@@ -97,7 +97,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     for (name, r) in &g.racks {
         let c = &r.cutting;
         let caption = format!(
-            "{} z = {}, x = {}, N = {}, {}",
+            "{} z = {}, x = {}, N = {}, {}{}",
             tr(
                 lang,
                 "Нарезание рейкой:",
@@ -107,7 +107,17 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             c.z,
             format_sig(c.x, 4, lang),
             r.steps,
-            r.scale.caption(lang)
+            r.scale.caption(lang),
+            if r.undercut {
+                tr(
+                    lang,
+                    "; подрез заштрихован",
+                    "; підріз заштриховано",
+                    "; the undercut hatched",
+                )
+            } else {
+                ""
+            }
         );
         blocks.push(view(&r.figure, caption, "gears.rack.scale_l", r.scale));
         plan.get_or_insert(r.scale);
@@ -147,14 +157,33 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         );
         blocks.push(view(&tri.figure, caption, "planetary.module", tri.scale_v));
         let tr_ = &t.spec.train;
-        lines.push(format!(
-            "u_{{{}-{}}} = {} (Willis), {} ({})",
-            tr_.shafts[tr_.input],
-            tr_.shafts[tr_.output],
-            format_sig(t.ratio, 6, lang),
-            format_sig(tri.ratio, 6, lang),
-            tr(lang, "треугольники", "трикутники", "triangles"),
-        ));
+        for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
+            let Some(s) = s else { continue };
+            lines.push(format!(
+                "u_{{{}-{}}}{sup} = {} (Willis), {} ({})",
+                tr_.shafts[tr_.input],
+                tr_.shafts[tr_.output],
+                format_sig(s.ratio, 6, lang),
+                format_sig(s.triangles.ratio, 6, lang),
+                tr(lang, "треугольники", "трикутники", "triangles"),
+            ));
+        }
+        if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {
+            lines.push(format!(
+                "k = {k}: {} {}",
+                tr(
+                    lang,
+                    "условие сборки",
+                    "умова складання",
+                    "assembly condition"
+                ),
+                match (a.fits(), a.p) {
+                    (true, Some(p)) => format!("p = {p}"),
+                    (true, None) => tr(lang, "выполнено", "виконано", "holds").to_string(),
+                    (false, _) => tr(lang, "не выполнено", "не виконано", "fails").to_string(),
+                },
+            ));
+        }
     }
     lines.push(String::new());
     lines.push(super::drafting_line(session.drafting(), lang));

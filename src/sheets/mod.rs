@@ -77,7 +77,7 @@ impl From<crate::kinematics::KinError> for BuildError {
 
 /// The title block of a plate of `scene`, filled from its `[task]`; "Масштаб" is the plan of
 /// positions' μ_l as a ГОСТ 2.302 scale (μ_l = 0,0025 м/мм draws 2,5 mm of the machine in
-/// one millimetre: 1:2,5).
+/// one millimetre: 1:2,5; μ_l = 0,0004 м/мм: 2,5:1).
 fn title_block(scene: &Scene, sheet_title: &str, plan: Scale, lang: Lang) -> TitleBlock {
     let t = &scene.title;
     TitleBlock {
@@ -87,13 +87,20 @@ fn title_block(scene: &Scene, sheet_title: &str, plan: Scale, lang: Lang) -> Tit
         author: t.author.clone(),
         checked: t.checked.clone(),
         organisation: t.organisation.clone(),
-        scale: format!(
-            "1:{}",
-            crate::scale::format_sig(plan.value() * 1000.0, 4, lang)
-        ),
+        scale: gost_scale(plan, lang),
         // Numbered across the scene by `build_all`.
         sheet_no: 1,
         sheets: 1,
+    }
+}
+
+/// μ_l as a ГОСТ 2.302 scale: a reduction 1:n (μ_l ≥ 0,001 м/мм) or an enlargement n:1.
+fn gost_scale(plan: Scale, lang: Lang) -> String {
+    let n = plan.value() * 1000.0;
+    if n >= 1.0 {
+        format!("1:{}", crate::scale::format_sig(n, 4, lang))
+    } else {
+        format!("{}:1", crate::scale::format_sig(1.0 / n, 4, lang))
     }
 }
 
@@ -144,4 +151,19 @@ pub fn build_all(
         p.title_block.sheets = n;
     }
     Ok(all)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::gost_scale;
+    use crate::scale::{Lang, Quantity, Scale};
+
+    #[test]
+    fn title_block_scales_reduce_and_enlarge_as_gost_writes_them() {
+        let s = |mu: f64| gost_scale(Scale::new(mu, Quantity::Length).unwrap(), Lang::Ru);
+        assert_eq!(s(0.0025), "1:2,5");
+        assert_eq!(s(0.001), "1:1");
+        assert_eq!(s(0.0004), "2,5:1");
+        assert_eq!(s(0.0002), "5:1");
+    }
 }
