@@ -389,3 +389,21 @@ mod properties {
         }
     }
 }
+
+#[test]
+fn the_bracketed_root_converges_on_smooth_steep_and_flat_functions() {
+    use super::twin::bracketed_root;
+    let cbrt2 = bracketed_root(|x| x * x * x - 2.0, 0.0, 2.0);
+    assert!((cbrt2 - 2f64.cbrt()).abs() < 1e-15 * 2.0, "{cbrt2}");
+    // A √ singularity at the bracket's end, as ω near T₀ = −ΔT_min.
+    let r = bracketed_root(|x: f64| x.max(0.0).sqrt() - 0.5, 0.0, 1.0);
+    assert!((r - 0.25).abs() < 1e-15, "{r}");
+    // Decreasing, the bracket given either way round.
+    let e = bracketed_root(|x: f64| (-x).exp() - 0.1, 10.0, 0.0);
+    assert!((e - 10f64.ln()).abs() < 1e-14, "{e}");
+    // A jump: the root is the jump, kept in the bracket.
+    let j = bracketed_root(|x| if x < 0.3 { -1.0 } else { 1.0 }, 0.0, 1.0);
+    assert!((j - 0.3).abs() < 1e-14, "{j}");
+    // No sign change: the end nearer zero.
+    assert_eq!(bracketed_root(|x| x + 1.0, 0.0, 1.0), 0.0);
+}

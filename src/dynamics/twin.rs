@@ -8,8 +8,8 @@
 //! ```
 //!
 //! solved for the flywheel J_м that gives the required δ = (ω_max − ω_min)/ω_ср with
-//! ω_ср = (ω_max + ω_min)/2: for each J_м the T₀ that gives ω_ср (bisection, ω rises with
-//! T₀), and J_м by bisection on δ (δ falls as J_м grows), both bracketed. Between the nodes
+//! ω_ср = (ω_max + ω_min)/2: for each J_м the T₀ that gives ω_ср (ω rises with T₀), and J_м
+//! from δ (δ falls as J_м grows), both as roots kept bracketed ([`bracketed_root`]). Between the nodes
 //! ΔT and J are cubic Hermite interpolants of exact values and exact derivatives
 //! (dΔT/dψ = M_д + M_пр, dJ/dψ from the analogues), so the extremes of ω are found to ~1e-11.
 
@@ -263,25 +263,21 @@ impl Cycle {
         ((a.sqrt(), pa), (b.sqrt(), pb))
     }
 
-    /// The T₀ that gives (ω_max + ω_min)/2 = `w_avg` with flywheel `j_fw` (bisection).
+    /// The T₀ that gives (ω_max + ω_min)/2 = `w_avg` with flywheel `j_fw` (the mean speed
+    /// rises with T₀: a bracketed root).
     pub fn t0_for(&self, j_fw: f64, w_avg: f64) -> f64 {
         let dt_min = self.delta_t(self.extremum(|p| self.delta_t(p), false).0);
         let j_max = self.j.iter().fold(0.0f64, |m, &j| m.max(j)) + j_fw;
-        let mut lo = -dt_min;
-        let mut hi = 2.0 * w_avg * w_avg * j_max - dt_min;
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            let ((a, _), (b, _)) = self.extremes(j_fw, mid);
-            if (a + b) / 2.0 < w_avg {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        0.5 * (lo + hi)
+        let lo = -dt_min;
+        let hi = 2.0 * w_avg * w_avg * j_max - dt_min;
+        bracketed_root(
+            |t0| {
+                let ((a, _), (b, _)) = self.extremes(j_fw, t0);
+                (a + b) / 2.0 - w_avg
+            },
+            lo,
+            hi,
+        )
     }
 
     /// The motion with flywheel `j_fw` at mean speed `w_avg`.
@@ -296,8 +292,8 @@ impl Cycle {
         }
     }
 
-    /// The flywheel that gives `delta` at mean speed `w_avg` (bisection on J_м; 0 when the
-    /// machine runs within `delta` without one).
+    /// The flywheel that gives `delta` at mean speed `w_avg` (δ falls as J_м grows: a
+    /// bracketed root; 0 when the machine runs within `delta` without one).
     ///
     /// # Errors
     /// No flywheel up to 1e12 kg·m² gives `delta`.
@@ -314,18 +310,8 @@ impl Cycle {
                 return Err(DynamicsError::NoFlywheel { delta });
             }
         }
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi || (hi - lo) <= 1e-14 * hi {
-                break;
-            }
-            if self.with_flywheel(mid, w_avg).delta() > delta {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        Ok(self.with_flywheel(0.5 * (lo + hi), w_avg))
+        let j_fw = bracketed_root(|j| self.with_flywheel(j, w_avg).delta() - delta, lo, hi);
+        Ok(self.with_flywheel(j_fw, w_avg))
     }
 
     /// The time of one cycle with flywheel `j_fw` and energy `t0`: ∫ dψ/ω, s.
@@ -362,5 +348,57 @@ impl Cycle {
             .extremum(|p| self.delta_t(p) - s2 * self.j_at(p), false)
             .1;
         (c1 - c2) / (s1 - s2)
+    }
+}
+
+/// The root of `f` in [lo, hi], where f(lo) and f(hi) differ in sign (else the end nearer
+/// zero): regula falsi with the Illinois step (the end kept twice has its value halved), so
+/// the bracket always holds the root and shrinks superlinearly; stops when the bracket is
+/// 1e-15 of its end wide, on an exact zero, or when a step no longer moves.
+pub fn bracketed_root(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    let (mut f_lo, mut f_hi) = (f(lo), f(hi));
+    if f_lo == 0.0 || f_lo.signum() == f_hi.signum() || !(f_lo.is_finite() && f_hi.is_finite()) {
+        return if f_lo.abs() <= f_hi.abs() { lo } else { hi };
+    }
+    // Which end was kept last (−1 lo, +1 hi).
+    let mut kept = 0;
+    for _ in 0..200 {
+        let x = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+        // A secant step that lands outside or on an end falls back to bisection.
+        let x = if x > lo.min(hi) && x < lo.max(hi) {
+            x
+        } else {
+            0.5 * (lo + hi)
+        };
+        if x == lo || x == hi {
+            break;
+        }
+        let fx = f(x);
+        if fx == 0.0 {
+            return x;
+        }
+        if fx.signum() == f_lo.signum() {
+            lo = x;
+            f_lo = fx;
+            if kept == 1 {
+                f_hi /= 2.0;
+            }
+            kept = 1;
+        } else {
+            hi = x;
+            f_hi = fx;
+            if kept == -1 {
+                f_lo /= 2.0;
+            }
+            kept = -1;
+        }
+        if (hi - lo).abs() <= 1e-15 * lo.abs().max(hi.abs()) {
+            break;
+        }
+    }
+    if f_lo.abs() <= f_hi.abs() {
+        lo
+    } else {
+        hi
     }
 }
