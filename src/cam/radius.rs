@@ -181,6 +181,7 @@ pub(super) fn min_radius(
                 searched: 20.0 * l,
             })?;
             rocker_lines(&mut rec, &cons, o, gamma);
+            hatch_rocker_zone(&mut rec, &cons, o, gamma);
             let oid = rec.point(
                 "cam centre O_1",
                 o,
@@ -434,3 +435,40 @@ fn rocker_lines(rec: &mut Recorder, cons: &[(DVec2, DVec2)], o: DVec2, gamma: f6
         }
     }
 }
+
+/// The admissible zone of a rocker cam's centre, hatched along its boundary near O: on every
+/// γ_min line through O, at each step where one side admits the centre and the other does
+/// not, a stroke into the admitted side, leaning away from O.
+fn hatch_rocker_zone(rec: &mut Recorder, cons: &[(DVec2, DVec2)], o: DVec2, gamma: f64) {
+    let sin_g = gamma.sin();
+    let inside = |p: DVec2| exact::admits(p, cons, sin_g, 0.0);
+    for &(k, e) in cons {
+        for s in [1.0, -1.0] {
+            let u = crate::geom::rotate(e, s * gamma);
+            if (o - k).perp_dot(u).abs() >= 1e-6 * (1.0 + (o - k).length()) {
+                continue;
+            }
+            let n = u.perp();
+            for j in (-ZONE_STEPS..=ZONE_STEPS).filter(|&j| j != 0) {
+                let p = o + u * (f64::from(j) * ZONE_STEP_MM);
+                // Leaning away from O, so no stroke crosses the zone's other side.
+                let away = u * f64::from(j.signum());
+                let side = match (inside(p + n * 0.3), inside(p - n * 0.3)) {
+                    (true, false) => n,
+                    (false, true) => -n,
+                    _ => continue,
+                };
+                rec.draw(
+                    "hatching of the zone",
+                    Item::Segment(Segment::new(p, p + (side + away) * (3.0 / 2f64.sqrt()))),
+                    Role::Hatch,
+                    &[],
+                );
+            }
+        }
+    }
+}
+
+/// Steps each way along a boundary line of the rocker cam's zone, and their length, mm.
+const ZONE_STEPS: i32 = 8;
+const ZONE_STEP_MM: f64 = 2.0;

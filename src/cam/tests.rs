@@ -134,6 +134,56 @@ fn seed000_r_min_is_about_70_mm_not_40() {
         .any(|n| n.contains("ERRATUM") && n.contains("40")));
 }
 
+/// The rocker's zone of the cam centre is hatched along its boundary at O₁, each stroke into
+/// the centres that keep γ ≥ γ_min at every drawn point.
+#[test]
+fn seed000_zone_of_the_centre_is_hatched_into_the_admitted_side() {
+    use crate::construct::{Item, Role};
+    let spec = seed000();
+    assert!(!spec.force_closure);
+    let cam = build(&spec, &ctx(0.0)).unwrap();
+    let steps = &cam.radius.figure.steps;
+    let o = steps
+        .iter()
+        .find_map(|s| match (&s.item, s.note.as_str()) {
+            (Item::Point(p), "cam centre O_1") => Some(*p),
+            _ => None,
+        })
+        .unwrap();
+    let ks = steps
+        .iter()
+        .find_map(|s| match (&s.item, s.note.as_str()) {
+            (Item::Polyline { points, .. }, "curve of the points K") => Some(points.clone()),
+            _ => None,
+        })
+        .unwrap();
+    let rockers: Vec<DVec2> = steps
+        .iter()
+        .filter_map(|s| match &s.item {
+            Item::Segment(seg) if s.note.starts_with("rocker O_2A_") => Some(seg.to.normalize()),
+            _ => None,
+        })
+        .collect();
+    let cons: Vec<(DVec2, DVec2)> = ks.into_iter().zip(rockers).collect();
+    let sin_g = spec.gamma_min.sin();
+    assert!(exact::admits(o, &cons, sin_g, 1e-9));
+    let strokes: Vec<_> = steps
+        .iter()
+        .filter_map(|s| match (&s.item, s.role) {
+            (Item::Segment(seg), Role::Hatch) => Some(*seg),
+            _ => None,
+        })
+        .collect();
+    assert!(strokes.len() >= 6, "{}", strokes.len());
+    for s in &strokes {
+        assert!(s.from.distance(o) <= 16.0 + 1e-9, "{s:?}");
+        assert!(exact::admits(s.to, &cons, sin_g, 0.0), "{s:?}");
+        // It starts on the boundary: just behind it the centre is not admitted.
+        let behind = s.from - (s.to - s.from) * 0.1;
+        assert!(!exact::admits(behind, &cons, sin_g, 0.0), "{s:?}");
+    }
+}
+
 #[test]
 fn inversion_centres_equal_the_exact_pitch_curve() {
     for spec in [
