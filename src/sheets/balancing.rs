@@ -3,12 +3,12 @@
 //! of moments), the data and results, and a table of the corrections read off the polygons
 //! against their analytic twin. The smallest landscape sheet from A3 up that holds it all.
 
-use super::layout::{lay_out, Block, ScaleKey};
+use super::layout::{lay_out_smallest, Block, ScaleKey};
 use super::BuildError;
 use crate::check::{Row, Symbol};
 use crate::forces::balancing::{Balancing, Correction, Plane};
 use crate::geom::DVec2;
-use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
+use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
 use crate::study::Session;
 
@@ -86,18 +86,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     };
     let title = super::title_block(scene, sheet_title, b.scale_l, lang);
     // The smallest sheet that holds everything on one page; A1 (over pages) otherwise.
-    let mut last = None;
-    for size in SIZES {
-        let sheet = Sheet {
-            size,
-            landscape: true,
-        };
-        match lay_out(sheet, blocks.clone(), "balancing", &title, lang) {
-            Ok(plates) if plates.len() == 1 => return Ok(plates),
-            other => last = Some(other),
-        }
-    }
-    last.unwrap_or_else(|| Ok(Vec::new()))
+    lay_out_smallest(&SIZES, blocks, "balancing", &title, lang)
 }
 
 /// The scene key of a scale and the scale, for a block's message.

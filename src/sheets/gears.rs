@@ -3,11 +3,11 @@
 //! with its rack positions (and undercut), the data and results, and the table of what was
 //! read off the drawings against the analytic values. A1 landscape.
 
-use super::layout::{lay_out, Block, ScaleKey};
+use super::layout::{lay_out_smallest, Block, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
 use crate::geom::DVec2;
-use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
+use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang};
 use crate::study::Session;
 
@@ -203,11 +203,15 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         plan,
         lang,
     );
-    let sheet = Sheet {
-        size: SheetSize::A1,
-        landscape: true,
-    };
-    lay_out(sheet, blocks, "gears", &title, lang)
+    // The course project's whole gear sheet is an A1; a practicum's part of it (a pair, a
+    // cut wheel, a train) goes on the smallest sheet that holds it.
+    lay_out_smallest(
+        &[SheetSize::A3, SheetSize::A2, SheetSize::A1],
+        blocks,
+        "gears",
+        &title,
+        lang,
+    )
 }
 
 /// A view of `figure` with its caption, sized by the scene key `key` at `scale`.

@@ -8,7 +8,7 @@ use super::BuildError;
 use crate::construct::Figure;
 use crate::geom::DVec2;
 use crate::plate::{
-    text, Plate, Rect, Sheet, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM,
+    text, Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM,
     CAPTION_HEIGHT_MM,
 };
 use crate::scale::{Lang, Scale};
@@ -177,6 +177,29 @@ fn put(block: Block, rect: Rect, parts: &mut Parts) {
             parts.tables.push(t);
         }
     }
+}
+
+/// Lay `blocks` out on the smallest landscape sheet of `sizes` (smallest first) that holds
+/// them on one page; on the last size, over as many pages as they need.
+pub(super) fn lay_out_smallest(
+    sizes: &[SheetSize],
+    blocks: Vec<Block>,
+    name: &str,
+    title: &TitleBlock,
+    lang: Lang,
+) -> Result<Vec<Plate>, BuildError> {
+    let mut last = Ok(Vec::new());
+    for &size in sizes {
+        let sheet = Sheet {
+            size,
+            landscape: true,
+        };
+        match lay_out(sheet, blocks.clone(), name, title, lang) {
+            Ok(plates) if plates.len() == 1 => return Ok(plates),
+            other => last = other,
+        }
+    }
+    last
 }
 
 /// Lay `blocks` out in order on sheets of format `sheet`, as many as they need; the plates are
