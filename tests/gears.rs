@@ -177,6 +177,11 @@ fn bad_gear_sections_name_their_keys() {
             "[gears]\nmodule = 2.0\n",
             &["expected a [gears.pair] or at least one [[gears.rack]]"],
         ),
+        // An input that does not turn has no required ratio.
+        (
+            "[planetary]\ninput = \"1\"\noutput = \"2\"\nn_input = 0.0\nn_output = 10.0\n[[planetary.wheel]]\nname = \"1\"\nz = 20\nshaft = \"1\"\n[[planetary.wheel]]\nname = \"2\"\nz = 40\nshaft = \"2\"\n[[planetary.mesh]]\nwheels = [\"1\", \"2\"]\n",
+            &["planetary.n_input = 0", "not 0"],
+        ),
         (
             "[planetary]\ninput = \"1\"\noutput = \"2\"\n[[planetary.wheel]]\nname = \"1\"\nz = 20\nshaft = \"1\"\n[[planetary.wheel]]\nname = \"2\"\nz = 40\nshaft = \"2\"\n",
             &["planetary.mesh", "mobility"],

@@ -302,7 +302,7 @@ pub fn train_study(
     let willis = t.willis()?;
     let ratio = t.ratio()?;
     let required = match (spec.n_input, spec.n_output, t.meshes.is_empty()) {
-        (Some(n_in), Some(n_out), false) => {
+        (Some(n_in), Some(n_out), false) if n_in != 0.0 => {
             let design = PlanetarySpec {
                 train: t.with_ratio(0, (n_in / n_out).abs())?,
                 n_output: None,

@@ -651,6 +651,8 @@ fn assembly_condition_of_the_seed000_reducer_and_pz2() {
     assert!(!blocks_fit(106, true, 48, 18, 76, true, 3));
     assert!(blocks_fit(106, true, 48, 18, 76, true, 2));
     assert!(t.admits(2) && !t.admits(3));
+    // One satellite has neither neighbours nor an assembly condition.
+    assert!(t.assembly(1).is_none() && t.neighbour(1).is_none());
     // PZ2 example 3's James stage: (20 + 80)/k whole for k = 4, not for k = 3.
     let james = train(
         &[

@@ -255,8 +255,12 @@ impl Train {
     /// (meshing b): a block turned by 2πn/z_g still meshes a and shifts f by n·z_f/z_g of its
     /// pitch, so identical blocks enter at every 2πj/k exactly when
     /// z_a·u_aH^(b)·(z_f/gcd(z_g, z_f))/k is whole (for one wheel, g = f, both agree).
-    /// `None` when the train has no such pair of central wheels or its teeth are not whole.
+    /// `None` for fewer than two satellites, when the train has no such pair of central
+    /// wheels or when its teeth are not whole.
     pub fn assembly(&self, k: u32) -> Option<Assembly> {
+        if k < 2 {
+            return None;
+        }
         let (h, b) = (self.carrier?, self.fixed?);
         let whole = |z: f64| (z.fract() == 0.0 && z > 0.0 && z < 1e6).then_some(z as i128);
         let central = self.meshes.iter().find_map(|m| {
@@ -317,9 +321,9 @@ impl Train {
 
     /// The neighbour condition of `k` satellites: for every satellite wheel, the chord
     /// 2·a·sin(π/k) between neighbouring axes against its tip diameter d_a = m(z + 2), m.
-    /// `None` without a carrier or a layout.
+    /// `None` for fewer than two satellites, without a carrier or a layout.
     pub fn neighbour(&self, k: u32) -> Option<Vec<(usize, f64, f64)>> {
-        let h = self.carrier?;
+        let h = self.carrier.filter(|_| k >= 2)?;
         let (ys, _) = self.layout().ok()?;
         let mut out = Vec::new();
         for &s in &self.satellites {

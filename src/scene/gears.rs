@@ -196,9 +196,17 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
             check.push(key(k), None, "missing: expected a shaft name");
         }
     }
-    let n_input = raw
-        .n_input
-        .map(|n| check.bounded(&key("n_input"), n, 1e6, "a speed in rpm within ±1e6"));
+    let n_input = raw.n_input.map(|n| {
+        let n = check.bounded(&key("n_input"), n, 1e6, "a speed in rpm within ±1e6, not 0");
+        if n == 0.0 {
+            check.push(
+                key("n_input"),
+                Some("0".into()),
+                "expected a speed in rpm within ±1e6, not 0 (the input turns)",
+            );
+        }
+        n
+    });
     let n_output = check.positive_opt(
         &key("n_output"),
         raw.n_output,
