@@ -203,3 +203,53 @@ fn a_cam_given_by_s_is_differentiated_by_chords() {
     // dS/dφ to 0.01 % of its peak h·2/Φ at 96 intervals.
     assert!(c[1] < 1e-4 * 0.025 * 2.0 / 90f64.to_radians(), "{c:?}");
 }
+
+/// A clockwise cam (`rotation = "cw"`) is the mirror image of the counter-clockwise one with
+/// the offset on the other side: PZ5 turned clockwise with e = −3 mm has every row of PZ5
+/// (e = +3 mm counter-clockwise), and its profile and centre construction are PZ5's
+/// mirrored; the same cam clockwise with e = +3 mm has the offset on the wrong side.
+#[test]
+fn a_clockwise_cam_is_the_mirror_image() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("constructions/cam-pz5.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let ccw = scene("cam-pz5");
+    let cw = tmm::scene::parse(
+        &text.replace("offset = 3.0", "offset = -3.0\nrotation = \"cw\""),
+        &path,
+    )
+    .unwrap();
+    let d = Drafting::new(0.0).unwrap();
+    let (a, b) = (Session::new(&ccw, d), Session::new(&cw, d));
+    let (ra, rb) = (a.report().unwrap(), b.report().unwrap());
+    assert_eq!(ra.rows.len(), rb.rows.len());
+    for (x, y) in ra.rows.iter().zip(&rb.rows) {
+        assert_eq!(x.quantity(), y.quantity());
+        assert!((x.graphical - y.graphical).abs() <= 1e-12 * x.graphical.abs().max(1e-9));
+        assert!((x.analytic - y.analytic).abs() <= 1e-12 * x.analytic.abs().max(1e-9));
+    }
+    let (ca, cb) = (a.cam().unwrap(), b.cam().unwrap());
+    assert!(cb.clockwise && !ca.clockwise);
+    assert_eq!(ca.inversion.figure.mirrored_x(), cb.inversion.figure);
+    assert_eq!(ca.radius.figure.mirrored_x(), cb.radius.figure);
+    // The scene's own offset in the notes.
+    assert!(
+        rb.notes.iter().any(|n| n.contains("the scene's e = −3 mm")),
+        "{:?}",
+        rb.notes
+    );
+    let wrong = tmm::scene::parse(
+        &text.replace("offset = 3.0", "offset = 3.0\nrotation = \"cw\""),
+        &path,
+    )
+    .unwrap();
+    let rw = Session::new(&wrong, d).report().unwrap();
+    assert!(
+        rw.notes
+            .iter()
+            .any(|n| n.contains("OFFSET ON THE WRONG SIDE: e = 3 mm")),
+        "{:?}",
+        rw.notes
+    );
+    let e = refused(&format!("{GOOD}rotation = \"left\"\n"));
+    assert!(e.contains("cam.rotation"), "{e}");
+}

@@ -34,6 +34,21 @@ pub struct Cam {
     /// The pressure (transmission) angle over the cycle: read off the profile drawing at the
     /// points (marked) and the exact curve, at μ_φ and 1°/mm.
     pub angle_graph: Option<Figure>,
+    /// The cam turns clockwise: `spec` is then its counter-clockwise mirror image (the offset
+    /// on the other side), every number is the mirror image's, and the mechanism's drawings
+    /// (the centre's construction, the profile) are mirrored back.
+    pub clockwise: bool,
+}
+
+impl Cam {
+    /// An offset of the counter-clockwise model as the scene gives it.
+    pub fn scene_offset(&self, e: f64) -> f64 {
+        if self.clockwise {
+            -e
+        } else {
+            e
+        }
+    }
 }
 
 /// Construct the cam of `spec`.
@@ -42,6 +57,28 @@ pub struct Cam {
 /// A failed integration, no admissible centre, a roller not smaller than the base radius,
 /// no drawing scale.
 pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
+    if spec.clockwise {
+        // A clockwise cam is the mirror image of a counter-clockwise one whose offset lies on
+        // the other side of the centre.
+        let follower = match spec.follower {
+            Follower::Translating { offset } => Follower::Translating { offset: -offset },
+            Follower::Flat { offset } => Follower::Flat { offset: -offset },
+            rocker @ Follower::Rocker { .. } => rocker,
+        };
+        let model = CamSpec {
+            clockwise: false,
+            follower,
+            ..spec.clone()
+        };
+        let mut cam = build(&model, ctx)?;
+        cam.clockwise = true;
+        // The flat face's combined diagram S(S″) is no drawing of the mechanism.
+        if !matches!(spec.follower, Follower::Flat { .. }) {
+            cam.radius.figure = cam.radius.figure.mirrored_x();
+        }
+        cam.inversion.figure = cam.inversion.figure.mirrored_x();
+        return Ok(cam);
+    }
     let points = exact::points(spec);
     let diagrams = diagrams(spec, &points, ctx)?;
     let (radius, base, placement) = min_radius(spec, &points, &diagrams, ctx)?;
@@ -83,6 +120,7 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
         roller,
         inversion,
         angle_graph,
+        clockwise: false,
     })
 }
 

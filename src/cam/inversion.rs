@@ -65,6 +65,32 @@ pub(crate) fn invert(
         &[],
     );
     rec.label(o, "O_1", DVec2::ZERO, DVec2::new(-0.7, -0.7));
+    // The cam's sense of rotation: an arrowed arc about O₁ (counter-clockwise here; the
+    // mirror image of a clockwise cam turns it round).
+    let turn = Arc {
+        center: DVec2::ZERO,
+        radius: 0.3 * mu.to_mm(base),
+        start: -1.2,
+        sweep: 0.9,
+    };
+    let w = rec.draw("the cam's rotation ω_1", Item::Arc(turn), Role::Given, &[o]);
+    let end = turn.end();
+    let along = DVec2::from_angle(turn.start + turn.sweep).perp();
+    rec.draw(
+        "the cam's rotation ω_1: the arrow",
+        Item::Vector {
+            from: end - along * 0.1,
+            to: end,
+        },
+        Role::Given,
+        &[w],
+    );
+    rec.label(
+        w,
+        "ω_1",
+        turn.eval(0.5),
+        DVec2::from_angle(turn.start + 0.5 * turn.sweep),
+    );
     let flat = matches!(spec.follower, Follower::Flat { .. });
     rec.draw(
         "base circle r_0",

@@ -115,6 +115,9 @@ pub struct CamSpec {
     /// The scene gives S (`given = "s"`): the diagrams are S differentiated twice by chords
     /// instead of d²S/dφ² integrated twice.
     pub from_s: bool,
+    /// The cam turns clockwise (`rotation = "cw"`): constructed as its mirror image, a
+    /// counter-clockwise cam with the offset on the other side, and drawn mirrored back.
+    pub clockwise: bool,
 }
 
 impl CamSpec {

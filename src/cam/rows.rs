@@ -361,6 +361,11 @@ impl Cam {
     pub fn notes(&self) -> Vec<String> {
         let s = &self.spec;
         let mut out = Vec::new();
+        if self.clockwise {
+            out.push(
+                "cam: it turns clockwise: constructed as its mirror image (counter-clockwise, the offset on the other side) and drawn mirrored back; the numbers are the same".into(),
+            );
+        }
         let st = s.starts();
         for (name, law, from, to) in [
             ("rise", s.rise, st[0], st[1]),
@@ -486,8 +491,8 @@ impl Cam {
             out.push(format!(
                 "cam: with the offset free the smallest cam (lecture 15: O₁ where the two γ_min tangents meet) has r_min = {} mm at e = {} mm; the scene's e = {} mm gives {} mm",
                 mm(r_free),
-                mm(e_free),
-                mm(offset),
+                mm(self.scene_offset(e_free)),
+                mm(self.scene_offset(offset)),
                 mm(r.exact)
             ));
             if offset < 0.0 {
@@ -506,8 +511,8 @@ impl Cam {
                         .fold(0.0, f64::max)
                 };
                 out.push(format!(
-                    "cam: OFFSET ON THE WRONG SIDE: e = {} mm raises the pressure angle on the rise to {}° (with e = +{} mm on the other side of the centre it would be {}°)",
-                    mm(offset), deg(rise_max(&self.placement)), mm(-offset), deg(rise_max(&mirrored))
+                    "cam: OFFSET ON THE WRONG SIDE: e = {} mm raises the pressure angle on the rise to {}° (with e = {} mm on the other side of the centre it would be {}°)",
+                    mm(self.scene_offset(offset)), deg(rise_max(&self.placement)), mm(self.scene_offset(-offset)), deg(rise_max(&mirrored))
                 ));
             }
         }

@@ -38,6 +38,7 @@ pub(super) fn seed000() -> CamSpec {
         quoted_r_min: Some(0.040),
         force_closure: false,
         from_s: false,
+        clockwise: false,
     }
 }
 
@@ -257,6 +258,7 @@ fn pz5_rise_only_matches_the_digest() {
         let s = CamSpec {
             force_closure: true,
             from_s: false,
+            clockwise: false,
             ..translating(law, 0.003)
         };
         let (r, _) = exact::min_radius_translating(&s, 0.003);

@@ -137,6 +137,85 @@ pub struct Figure {
 }
 
 impl Figure {
+    /// The figure mirrored in its y axis (x → −x): the same construction for a mechanism
+    /// drawn the other way round (a cam turning clockwise). Arcs keep their ends, guides
+    /// their hatched side and dimensions their side of the measured piece.
+    pub fn mirrored_x(&self) -> Figure {
+        let m = |p: DVec2| DVec2::new(-p.x, p.y);
+        let seg = |s: &Segment| Segment::new(m(s.from), m(s.to));
+        let arc = |a: &Arc| Arc {
+            center: m(a.center),
+            radius: a.radius,
+            start: std::f64::consts::PI - a.start,
+            sweep: -a.sweep,
+        };
+        let steps = self
+            .steps
+            .iter()
+            .map(|st| {
+                let item = match &st.item {
+                    Item::Point(p) => Item::Point(m(*p)),
+                    Item::Joint { at, fixed } => Item::Joint {
+                        at: m(*at),
+                        fixed: *fixed,
+                    },
+                    Item::Segment(s) => Item::Segment(seg(s)),
+                    Item::Circle(c) => Item::Circle(Circle {
+                        center: m(c.center),
+                        radius: c.radius,
+                    }),
+                    Item::Arc(a) => Item::Arc(arc(a)),
+                    Item::Polyline { points, closed } => Item::Polyline {
+                        points: points.iter().map(|p| m(*p)).collect(),
+                        closed: *closed,
+                    },
+                    Item::Curve { points, closed } => Item::Curve {
+                        points: points.iter().map(|p| m(*p)).collect(),
+                        closed: *closed,
+                    },
+                    Item::Vector { from, to } => Item::Vector {
+                        from: m(*from),
+                        to: m(*to),
+                    },
+                    Item::Slider { at, angle } => Item::Slider {
+                        at: m(*at),
+                        angle: std::f64::consts::PI - angle,
+                    },
+                    // A mirror turns left into right.
+                    Item::Guide { segment, hatch } => Item::Guide {
+                        segment: seg(segment),
+                        hatch: match hatch {
+                            Side::Left => Side::Right,
+                            Side::Right => Side::Left,
+                        },
+                    },
+                    Item::Dimension { from, to, offset } => Item::Dimension {
+                        from: m(*from),
+                        to: m(*to),
+                        offset: -offset,
+                    },
+                    Item::Angle(a) => Item::Angle(arc(a)),
+                    Item::Text(p) => Item::Text(m(*p)),
+                };
+                let label = st.label.as_ref().map(|l| Label {
+                    text: l.text.clone(),
+                    anchor: m(l.anchor),
+                    toward: m(l.toward),
+                });
+                Step {
+                    item,
+                    label,
+                    ..st.clone()
+                }
+            })
+            .collect();
+        Figure {
+            title: self.title.clone(),
+            scale: self.scale,
+            steps,
+        }
+    }
+
     /// Axis-aligned bounds (min, max) of everything drawn, mm; `None` for an empty figure.
     pub fn bounds(&self) -> Option<(DVec2, DVec2)> {
         let mut lo = DVec2::splat(f64::INFINITY);
@@ -177,5 +256,87 @@ impl Figure {
             }
         }
         lo.is_finite().then_some((lo, hi))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scale::Quantity;
+
+    #[test]
+    fn a_mirrored_figure_is_the_mirror_image_and_twice_is_itself() {
+        let arc = Arc {
+            center: DVec2::new(2.0, 1.0),
+            radius: 3.0,
+            start: 0.3,
+            sweep: 1.1,
+        };
+        let step = |id: u32, item: Item| Step {
+            id: StepId(id),
+            note: String::new(),
+            item,
+            role: Role::Construction,
+            label: Some(Label {
+                text: "A".into(),
+                anchor: DVec2::new(1.0, 2.0),
+                toward: DVec2::new(0.6, 0.8),
+            }),
+            from: Vec::new(),
+            group: 0,
+        };
+        let f = Figure {
+            title: "t".into(),
+            scale: Scale::new(0.001, Quantity::Length).unwrap(),
+            steps: vec![
+                step(0, Item::Arc(arc)),
+                step(
+                    1,
+                    Item::Guide {
+                        segment: Segment::new(DVec2::ZERO, DVec2::X),
+                        hatch: Side::Left,
+                    },
+                ),
+                step(
+                    2,
+                    Item::Slider {
+                        at: DVec2::new(4.0, -1.0),
+                        angle: 0.2,
+                    },
+                ),
+            ],
+        };
+        let g = f.mirrored_x();
+        let Item::Arc(a) = &g.steps[0].item else {
+            panic!()
+        };
+        for t in [0.0, 0.5, 1.0] {
+            let (p, q) = (arc.eval(t), a.eval(t));
+            assert!((p.x + q.x).abs() < 1e-12 && (p.y - q.y).abs() < 1e-12);
+        }
+        // The hatching stays on the same side in the plane: the mirrored left is the right.
+        assert!(matches!(
+            g.steps[1].item,
+            Item::Guide {
+                hatch: Side::Right,
+                ..
+            }
+        ));
+        let (lo, hi) = f.bounds().unwrap();
+        let (glo, ghi) = g.bounds().unwrap();
+        assert!((glo.x + hi.x).abs() < 1e-9 && (ghi.x + lo.x).abs() < 1e-9);
+        assert_eq!(
+            g.steps[0].label.as_ref().unwrap().toward,
+            DVec2::new(-0.6, 0.8)
+        );
+        // Twice is the figure itself (angles to rounding).
+        let back = g.mirrored_x();
+        assert_eq!(back.steps[1], f.steps[1]);
+        let (Item::Arc(b), Item::Slider { angle, .. }) = (&back.steps[0].item, &back.steps[2].item)
+        else {
+            panic!()
+        };
+        assert!((b.start - arc.start).abs() < 1e-15 && b.sweep == arc.sweep);
+        assert!((angle - 0.2).abs() < 1e-15);
     }
 }

@@ -54,6 +54,7 @@ pub(crate) struct RawCam {
     pub quoted_r_min: Option<f64>,
     pub closure: Option<String>,
     pub given: Option<String>,
+    pub rotation: Option<String>,
 }
 
 /// Validate `[cam]`.
@@ -225,6 +226,10 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         Some(g) => check.word(&key("given"), Some(g), &["d2s", "s"]) == Some(1),
         None => false,
     };
+    let clockwise = match raw.rotation.as_ref() {
+        Some(r) => check.word(&key("rotation"), Some(r), &["ccw", "cw"]) == Some(1),
+        None => false,
+    };
     let spec = CamSpec {
         phases,
         rise,
@@ -261,6 +266,7 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             .map(|mm| check.length(&key("quoted_r_min"), Some(mm))),
         force_closure,
         from_s,
+        clockwise,
     };
     (check.problems.len() == before).then_some(spec)
 }

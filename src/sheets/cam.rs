@@ -217,6 +217,24 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         deg(p.ret),
         deg(p.near)
     ));
+    out.push(
+        if cam.clockwise {
+            tr(
+                lang,
+                "Кулачок вращается по часовой стрелке",
+                "Кулачок обертається за годинниковою стрілкою",
+                "The cam turns clockwise",
+            )
+        } else {
+            tr(
+                lang,
+                "Кулачок вращается против часовой стрелки",
+                "Кулачок обертається проти годинникової стрілки",
+                "The cam turns counter-clockwise",
+            )
+        }
+        .into(),
+    );
     out.push(format!(
         "{}: {}; {}: {}",
         tr(lang, "закон удаления", "закон віддалення", "rise law"),
@@ -246,13 +264,13 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         Follower::Translating { offset } => out.push(format!(
             "h = {} {mm}, e = {} {mm}, γ_{{min}} = {}°",
             n(s.stroke),
-            n(offset),
+            n(cam.scene_offset(offset)),
             deg(s.gamma_min)
         )),
         Follower::Flat { offset } => out.push(format!(
             "h = {} {mm}, e = {} {mm}, ρ_{{min}} = {} {mm}",
             n(s.stroke),
-            n(offset),
+            n(cam.scene_offset(offset)),
             n(s.rho_min)
         )),
     }
