@@ -261,7 +261,8 @@ pub fn generate(
             cut.push(w[0]);
             let (a, b) = (off_axis(w[0]), off_axis(w[1]));
             if b >= edge {
-                cut.push(w[0].lerp(w[1], (edge - a) / (b - a)));
+                let t = if b > a { (edge - a) / (b - a) } else { 1.0 };
+                cut.push(w[0].lerp(w[1], t.clamp(0.0, 1.0)));
                 break;
             }
         }

@@ -285,8 +285,9 @@ pub struct TrainStudy {
     pub stages: Option<f64>,
     /// The velocity triangles.
     pub triangles: train::Triangles,
-    /// With n_input and n_output: the train whose first mesh has the ratio the required
-    /// |u| = n_in/n_out asks for (the textbook's route before the tooth choice), studied alike.
+    /// With n_input and n_output: the train whose first fixed-axis mesh has the ratio the
+    /// required |u| = n_in/n_out asks for (the textbook's route before the tooth choice),
+    /// studied alike.
     pub required: Option<Box<TrainStudy>>,
 }
 
@@ -301,15 +302,21 @@ pub fn train_study(
     let t = &spec.train;
     let willis = t.willis()?;
     let ratio = t.ratio()?;
-    let required = match (spec.n_input, spec.n_output, t.meshes.is_empty()) {
-        (Some(n_in), Some(n_out), false) if n_in != 0.0 => {
-            let design = PlanetarySpec {
-                train: t.with_ratio(0, (n_in / n_out).abs())?,
-                n_output: None,
-                ..spec.clone()
-            };
-            Some(Box::new(train_study(&design, ctx)?))
-        }
+    // The stage the textbook solves for: the first fixed-axis mesh (a satellite's teeth are
+    // bound by coaxiality). A design that cannot be laid out is left out.
+    let required = match (spec.n_input, spec.n_output, t.fixed_axis_mesh()) {
+        (Some(n_in), Some(n_out), Some(mesh)) if n_in != 0.0 => t
+            .with_ratio(mesh, (n_in / n_out).abs())
+            .and_then(|train| {
+                let design = PlanetarySpec {
+                    train,
+                    n_output: None,
+                    ..spec.clone()
+                };
+                train_study(&design, ctx)
+            })
+            .ok()
+            .map(Box::new),
         _ => None,
     };
     Ok(TrainStudy {
@@ -419,7 +426,7 @@ impl TrainStudy {
                 num(n1.abs() / self.ratio.abs(), 6),
                 num((self.ratio.abs() / required - 1.0) * 100.0, 3)
             ));
-            if let Some(m) = t.meshes.first() {
+            if let Some(m) = t.fixed_axis_mesh().map(|k| t.meshes[k]) {
                 let (a, b) = (&t.wheels[m.0], &t.wheels[m.1]);
                 let now = b.z / a.z;
                 let want = now * required / self.ratio.abs();

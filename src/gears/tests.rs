@@ -613,6 +613,22 @@ fn blocks_fit(za: u32, a_ring: bool, zg: u32, zf: u32, zb: u32, b_ring: bool, k:
     })
 }
 
+/// PZ2 example 3's James stage alone: sun 3 in, satellite 4, ring 5 fixed, carrier out.
+fn pz2_james() -> Train {
+    train(
+        &[
+            ("A", "3", 20, false),
+            ("S", "4", 30, false),
+            ("F", "5", 80, true),
+        ],
+        &[("3", "4"), ("4", "5")],
+        ("A", "H"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    )
+}
+
 #[test]
 fn assembly_condition_of_the_seed000_reducer_and_pz2() {
     // Seed 000: z₃·u₃H⁽⁶⁾/k = 106·(1 − 48·76/(106·18))/k = −290/(3k).
@@ -654,18 +670,7 @@ fn assembly_condition_of_the_seed000_reducer_and_pz2() {
     // One satellite has neither neighbours nor an assembly condition.
     assert!(t.assembly(1).is_none() && t.neighbour(1).is_none());
     // PZ2 example 3's James stage: (20 + 80)/k whole for k = 4, not for k = 3.
-    let james = train(
-        &[
-            ("A", "3", 20, false),
-            ("S", "4", 30, false),
-            ("F", "5", 80, true),
-        ],
-        &[("3", "4"), ("4", "5")],
-        ("A", "H"),
-        Some("F"),
-        Some("H"),
-        &["S"],
-    );
+    let james = pz2_james();
     assert_eq!(
         james.assembly(4).map(|a| (a.value, a.p)),
         Some(((25, 1), Some(0)))
@@ -754,4 +759,24 @@ fn the_tables_delta_y_reproduces_the_seeds_rounded_numbers() {
     assert!(super::rows::pair_notes(&p)
         .iter()
         .any(|n| n.contains("316.274")));
+}
+
+#[test]
+fn the_required_stage_is_a_fixed_axis_mesh_or_none() {
+    // A James stage alone: no fixed-axis mesh to size, the study stands without it.
+    let james = pz2_james();
+    assert_eq!(james.fixed_axis_mesh(), None);
+    let spec = |train: Train| PlanetarySpec {
+        train,
+        n_input: Some(1000.0),
+        n_output: Some(190.0),
+        satellites: Some(4),
+    };
+    let s = train_study(&spec(james), &ctx(0.0)).unwrap();
+    assert!(s.required.is_none() && (s.ratio - 5.0).abs() < 1e-12);
+    // The seed's reducer: mesh 1–2, and the design gives the required 1000/190 exactly.
+    let r = train_study(&spec(reducer(29, 74)), &ctx(0.0)).unwrap();
+    let req = r.required.unwrap();
+    assert!((req.ratio.abs() - 1000.0 / 190.0).abs() < 1e-12);
+    assert!((req.triangles.ratio - req.ratio).abs() < 1e-9 * req.ratio.abs());
 }

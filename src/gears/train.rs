@@ -233,6 +233,13 @@ impl Train {
         rel
     }
 
+    /// The first mesh between wheels on fixed axes (no satellite's), if any.
+    pub fn fixed_axis_mesh(&self) -> Option<usize> {
+        self.meshes.iter().position(|m| {
+            !self.is_satellite(self.wheels[m.0].shaft) && !self.is_satellite(self.wheels[m.1].shaft)
+        })
+    }
+
     /// The same train with mesh `mesh`'s second wheel sized so that |u_in,out| = `ratio`:
     /// the stage the textbook solves for from the required ratio before it chooses whole
     /// teeth (seed 000: i₁₂ = U₁₋₈/(i₃H·i₇₈)).
