@@ -5,12 +5,10 @@
 use std::path::Path;
 
 mod support;
-use support::{root, scratch, tmm};
+use support::{num, report_json as report, root, scratch, tmm};
 
 fn report_json(scene: &str, drafting: &str) -> serde_json::Value {
-    let o = tmm(&["report", scene, "--format", "json", "--drafting", drafting]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    serde_json::from_slice(&o.stdout).expect("report JSON")
+    report(scene, Some(drafting))
 }
 
 fn row<'a>(v: &'a serde_json::Value, q: &str) -> &'a serde_json::Value {
@@ -20,12 +18,6 @@ fn row<'a>(v: &'a serde_json::Value, q: &str) -> &'a serde_json::Value {
         .iter()
         .find(|r| r["quantity"] == q)
         .unwrap_or_else(|| panic!("no row {q}"))
-}
-
-fn num(r: &serde_json::Value, field: &str) -> f64 {
-    r[field]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{field} of {r}"))
 }
 
 fn notes(v: &serde_json::Value) -> Vec<String> {

@@ -3,37 +3,10 @@
 //! number of positions, and bad `[dynamics]` sections refused with their key paths.
 
 mod support;
-use support::{scratch, tmm};
+use support::{notes, num, report_json as report, rows_of as rows, scratch, tmm};
 
 fn report_json(scene: &str) -> serde_json::Value {
-    let o = tmm(&["report", scene, "--format", "json"]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    serde_json::from_slice(&o.stdout).expect("report JSON")
-}
-
-fn rows<'a>(v: &'a serde_json::Value, q: &str) -> Vec<&'a serde_json::Value> {
-    v["rows"]
-        .as_array()
-        .expect("rows")
-        .iter()
-        .filter(|r| r["quantity"] == q)
-        .collect()
-}
-
-fn num(r: &serde_json::Value, field: &str) -> f64 {
-    r[field]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{field} of {r}"))
-}
-
-fn notes(v: &serde_json::Value) -> String {
-    v["notes"]
-        .as_array()
-        .expect("notes")
-        .iter()
-        .filter_map(|n| n.as_str())
-        .collect::<Vec<_>>()
-        .join("\n")
+    report(scene, None)
 }
 
 /// The shaper's text without its `[dynamics]` (everything from the comment that opens it).

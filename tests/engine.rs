@@ -3,30 +3,13 @@
 //! `[[forces.indicator]]` and `[dynamics] constant_moment` keys refused with their paths.
 
 mod support;
-use support::{scratch, tmm};
-
-const SCENE: &str = "constructions/v-engine.toml";
+use support::{num, report_json as report, rows_of as rows, scratch, tmm};
 
 fn report_json(scene: &str) -> serde_json::Value {
-    let o = tmm(&["report", scene, "--format", "json"]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    serde_json::from_slice(&o.stdout).expect("report JSON")
+    report(scene, None)
 }
 
-fn rows<'a>(v: &'a serde_json::Value, q: &str) -> Vec<&'a serde_json::Value> {
-    v["rows"]
-        .as_array()
-        .expect("rows")
-        .iter()
-        .filter(|r| r["quantity"] == q)
-        .collect()
-}
-
-fn num(r: &serde_json::Value, field: &str) -> f64 {
-    r[field]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{field} of {r}"))
-}
+const SCENE: &str = "constructions/v-engine.toml";
 
 #[test]
 fn the_engine_report_has_the_driving_work_and_the_resisting_moment() {

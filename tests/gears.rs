@@ -4,12 +4,10 @@
 //! their key paths.
 
 mod support;
-use support::{scratch, tmm};
+use support::{notes, num, report_json as report, scratch, tmm};
 
 fn report_json(scene: &str, drafting: &str) -> serde_json::Value {
-    let o = tmm(&["report", scene, "--format", "json", "--drafting", drafting]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    serde_json::from_slice(&o.stdout).expect("report JSON")
+    report(scene, Some(drafting))
 }
 
 fn rows<'a>(v: &'a serde_json::Value, q: &str, method: &str) -> Vec<&'a serde_json::Value> {
@@ -26,22 +24,6 @@ fn row<'a>(v: &'a serde_json::Value, q: &str, method: &str) -> &'a serde_json::V
         .first()
         .copied()
         .unwrap_or_else(|| panic!("no row {q} ({method})"))
-}
-
-fn num(r: &serde_json::Value, field: &str) -> f64 {
-    r[field]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{field} of {r}"))
-}
-
-fn notes(v: &serde_json::Value) -> String {
-    v["notes"]
-        .as_array()
-        .expect("notes")
-        .iter()
-        .filter_map(|n| n.as_str())
-        .collect::<Vec<_>>()
-        .join("\n")
 }
 
 #[test]

@@ -393,21 +393,6 @@ fn placement_pressure_angle_matches_the_formula() {
         let want = ((m.ds - 0.003) / (0.02 + m.s)).atan().abs();
         assert!((p.kin(m).pressure_angle() - want).abs() < 1e-12);
     }
-    let _ = DVec2::ZERO;
-}
-
-#[test]
-#[ignore = "prints the seed cam's centre for both senses"]
-fn print_seed000_centre() {
-    for same in [true, false] {
-        let mut s = seed000();
-        s.follower = Follower::Rocker {
-            arm: 0.12,
-            same_sense: same,
-        };
-        let (r, o) = exact::min_radius_rocker(&s).unwrap();
-        println!("same {same}: r {r} O {o} |OO2| {}", o.length());
-    }
 }
 
 mod props {

@@ -6,8 +6,7 @@
 use super::reduce::reduce_loads;
 use super::*;
 use crate::construct::Drafting;
-use crate::forces::loads::{loads, LoadKind, Motion};
-use crate::forces::twin::solve;
+use crate::forces::loads::{LoadKind, Motion};
 use crate::geom::DVec2;
 use crate::study::Session;
 use std::f64::consts::{PI, TAU};
@@ -184,20 +183,8 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
             eps: vec![0.0; exact.eps.len()],
             ..exact.clone()
         };
-        let r = red.at(&motion, pos.phi).expect("reduction");
-        let quasi: Vec<_> = loads(fs, &plan.program, &motion, None)
-            .expect("loads")
-            .into_iter()
-            .filter(|l| matches!(l.kind, LoadKind::Weight | LoadKind::Driving))
-            .collect();
-        let eq = solve(&plan.program, &pos.pose, &quasi, &fs.drive, sense).expect("solve");
-        assert!(
-            (r.m() + sense * eq.m_bal).abs() < 1e-9 * eq.m_bal.abs().max(1.0),
-            "position {}: M_пр {} vs the equilibrium's {}",
-            pos.label,
-            r.m(),
-            eq.m_bal
-        );
+        let kinds = [LoadKind::Weight, LoadKind::Driving];
+        let r = super::tests::assert_quasi_static(&red, fs, &plan, k, &motion, None, &kinds, sense);
         assert!(r.m_drv != 0.0);
     }
 }

@@ -106,21 +106,9 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
                 eps: vec![0.0; exact.eps.len()],
                 ..exact.clone()
             };
-            let r = red.at(&motion, pos.phi).expect("reduction");
             let ph = crate::forces::phase(&plan, pos.phi, sense);
-            let quasi: Vec<_> = loads(fs, &plan.program, &motion, ph)
-                .expect("loads")
-                .into_iter()
-                .filter(|l| matches!(l.kind, LoadKind::Weight | LoadKind::Resistance))
-                .collect();
-            let eq = solve(&plan.program, &pos.pose, &quasi, &fs.drive, sense).expect("solve");
-            assert!(
-                (r.m() + sense * eq.m_bal).abs() < 1e-9 * eq.m_bal.abs().max(1.0),
-                "position {}: M_пр {} vs the equilibrium's {}",
-                pos.label,
-                r.m(),
-                eq.m_bal
-            );
+            let kinds = [LoadKind::Weight, LoadKind::Resistance];
+            assert_quasi_static(red, fs, &plan, k, &motion, ph, &kinds, sense);
         });
     }
 }
@@ -406,4 +394,36 @@ fn the_bracketed_root_converges_on_smooth_steep_and_flat_functions() {
     assert!((j - 0.3).abs() < 1e-14, "{j}");
     // No sign change: the end nearer zero.
     assert_eq!(bracketed_root(|x| x + 1.0, 0.0, 1.0), 0.0);
+}
+
+/// With the links at rest (`motion` without accelerations): the reducer's M_пр at position
+/// `k` equals −sign(ω₁)·M_у of the links' equilibrium under the same loads of the `kinds`
+/// (the linear solve). Returns the reduced values.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn assert_quasi_static(
+    red: &super::reduce::Reducer<'_>,
+    fs: &crate::forces::ForceSpec,
+    plan: &crate::linkage::PositionPlan,
+    k: usize,
+    motion: &Motion,
+    phase: crate::forces::loads::Phase,
+    kinds: &[LoadKind],
+    sense: f64,
+) -> super::reduce::Reduced {
+    let pos = &plan.positions[k];
+    let r = red.at(motion, pos.phi).expect("reduction");
+    let quasi: Vec<_> = loads(fs, &plan.program, motion, phase)
+        .expect("loads")
+        .into_iter()
+        .filter(|l| kinds.contains(&l.kind))
+        .collect();
+    let eq = solve(&plan.program, &pos.pose, &quasi, &fs.drive, sense).expect("solve");
+    assert!(
+        (r.m() + sense * eq.m_bal).abs() < 1e-9 * eq.m_bal.abs().max(1.0),
+        "position {}: M_пр {} vs the equilibrium's {}",
+        pos.label,
+        r.m(),
+        eq.m_bal
+    );
+    r
 }

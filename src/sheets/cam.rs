@@ -40,11 +40,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let d = &cam.diagrams;
     let mm = tr(lang, "мм", "мм", "mm");
     let h = |i: usize| format_sig(d.poles[i], 3, lang);
-    let mut blocks = if cam.spec.from_s {
-        // S given, differentiated twice by chords.
-        vec![
-            Block::view(
-                d.first.clone(),
+    // The two constructions of the diagrams with their scales: S given, differentiated
+    // twice by chords; or d²S/dφ² given, integrated twice.
+    let (first, second) = if cam.spec.from_s {
+        (
+            (
                 format!(
                     "S → dS/dφ: {}, {}, H_2 = {} {mm}",
                     mu("S", d.s_scale, lang),
@@ -53,8 +53,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 ),
                 keyed("cam.scale_s", d.s_scale),
             ),
-            Block::view(
-                d.second.clone(),
+            (
                 format!(
                     "dS/dφ → d^2S/dφ^2: {}, {}, H_1 = {} {mm}",
                     mu("φ", d.phi, lang),
@@ -63,11 +62,10 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 ),
                 keyed("cam.scale_phi", d.phi),
             ),
-        ]
+        )
     } else {
-        vec![
-            Block::view(
-                d.first.clone(),
+        (
+            (
                 format!(
                     "d^2S/dφ^2 → dS/dφ: {}, {}, {}, H_1 = {} {mm}",
                     mu("φ", d.phi, lang),
@@ -77,8 +75,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 ),
                 keyed("cam.scale_phi", d.phi),
             ),
-            Block::view(
-                d.second.clone(),
+            (
                 format!(
                     "dS/dφ → S: {}, H_2 = {} {mm}",
                     mu("S", d.s_scale, lang),
@@ -86,8 +83,12 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 ),
                 keyed("cam.scale_s", d.s_scale),
             ),
-        ]
+        )
     };
+    let mut blocks = vec![
+        Block::view(d.first.clone(), first.0, first.1),
+        Block::view(d.second.clone(), second.0, second.1),
+    ];
     let combined = match cam.spec.follower {
         Follower::Flat { .. } => tr(
             lang,

@@ -24,3 +24,47 @@ pub fn scratch(name: &str) -> PathBuf {
     std::fs::create_dir_all(&dir).expect("scratch dir");
     dir
 }
+
+/// `tmm report SCENE --format json` (with `--drafting` when given), parsed; the run must
+/// succeed.
+#[allow(dead_code)] // not every test binary reads reports
+pub fn report_json(scene: &str, drafting: Option<&str>) -> serde_json::Value {
+    let mut args = vec!["report", scene, "--format", "json"];
+    if let Some(d) = drafting {
+        args.extend(["--drafting", d]);
+    }
+    let o = tmm(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).expect("report JSON")
+}
+
+/// The report's rows of quantity `q`.
+#[allow(dead_code)]
+pub fn rows_of<'a>(v: &'a serde_json::Value, q: &str) -> Vec<&'a serde_json::Value> {
+    v["rows"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .filter(|r| r["quantity"] == q)
+        .collect()
+}
+
+/// A number of a row (`graphical`, `analytic`, …); a row without it fails the test.
+#[allow(dead_code)]
+pub fn num(r: &serde_json::Value, field: &str) -> f64 {
+    r[field]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{field} of {r}"))
+}
+
+/// The report's notes, one per line.
+#[allow(dead_code)]
+pub fn notes(v: &serde_json::Value) -> String {
+    v["notes"]
+        .as_array()
+        .expect("notes")
+        .iter()
+        .filter_map(|n| n.as_str())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
