@@ -106,6 +106,9 @@ pub enum Symbol {
     ProfileRadius,
     /// The largest normal distance between a drawn profile and the exact one, m.
     ProfileDeviation,
+    /// The largest residual of the moving links' equations of motion evaluated from the
+    /// scene's loads and a route's reactions, relative to the largest force, 1.
+    EquilibriumResidual,
 }
 
 impl Symbol {
@@ -148,6 +151,7 @@ impl Symbol {
             Symbol::CurvatureRadius => "rho",
             Symbol::ProfileRadius => "profile_radius",
             Symbol::ProfileDeviation => "profile_deviation",
+            Symbol::EquilibriumResidual => "equilibrium_residual",
         }
     }
     /// The SI unit as the report writes it.
@@ -183,6 +187,7 @@ impl Symbol {
             Symbol::VelocityAnalogue | Symbol::AccelerationAnalogue => "m",
             Symbol::PressureAngle | Symbol::TransmissionAngle => "rad",
             Symbol::CurvatureRadius | Symbol::ProfileRadius | Symbol::ProfileDeviation => "m",
+            Symbol::EquilibriumResidual => "1",
         }
     }
     /// The symbol in label markup for a subject (`V_{B3B1}`, `ω_{3}`, `R_{1-2}`, `F_{и3}`,
@@ -233,6 +238,7 @@ impl Symbol {
             Symbol::CurvatureRadius => "ρ",
             Symbol::ProfileRadius => "R",
             Symbol::ProfileDeviation => "Δ",
+            Symbol::EquilibriumResidual => "ΔΣ",
         };
         // A reaction names two links, written apart as the textbooks do: R_{1-2}.
         let sep = if self == Symbol::Reaction { "-" } else { "" };

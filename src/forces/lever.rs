@@ -139,12 +139,14 @@ pub fn lever(
         Drive::Coupling => (-power / w1, None),
         Drive::Gear(g) => {
             let o = b.p[prog.centre];
-            let (p, d) =
-                line_of_action(o, g.radius() / mu, g.towards, g.pressure_angle, w1.signum());
+            let m_bal = -power / w1;
+            // The tooth pushes on the flank that turns the crank the way M_у does.
+            let flank = if m_bal == 0.0 { w1 } else { m_bal }.signum();
+            let (p, d) = line_of_action(o, g.radius() / mu, g.towards, g.pressure_angle, flank);
             let x = turn(image(b, vp, crank, p, mu));
             let unit = moment(&mut rec, x, d, "F_{у}");
             let f = -power / unit;
-            (-power / w1, Some(f))
+            (m_bal, Some(f))
         }
     };
     Lever {

@@ -5,7 +5,7 @@
 use super::spec::{Action, ForceSpec, Stroke};
 use super::ForceError;
 use crate::geom::DVec2;
-use crate::linkage::{Pose, Program};
+use crate::linkage::{Op, PDyad, Pose, Program};
 
 /// The motion of one position, SI, by program point index and by link number.
 #[derive(Debug, Clone, PartialEq)]
@@ -156,6 +156,7 @@ pub fn loads(
         match &r.action {
             Action::Force {
                 point,
+                link,
                 magnitude,
                 dir,
             } => {
@@ -163,8 +164,7 @@ pub fn loads(
                     key: "resistance.point",
                     name: point.clone(),
                 })?;
-                // A joint is loaded through the link that owns it (a slider's joint: the slider).
-                let l = prog.owner(k);
+                let l = carrier(prog, k, *link).map_err(|e| e.at(point))?;
                 let e = match dir {
                     Some(a) => Some(DVec2::from_angle(*a)),
                     None => (-motion.v[k]).try_normalize(),
@@ -211,4 +211,110 @@ fn point_on(prog: &Program, name: &str, l: usize) -> Result<usize, ForceError> {
             link: l,
         })
     }
+}
+
+/// Why no link carries a load at a point.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Uncarried {
+    /// The point is on the frame only: a load there does nothing to the mechanism.
+    Frame,
+    /// The scene's `link` does not carry the point, which lies on `links`.
+    NotOn {
+        /// The link the scene names.
+        link: u32,
+        /// The links the point lies on.
+        links: Vec<usize>,
+    },
+    /// A joint of two links neither of which is a slider, or of two sliders: the scene must
+    /// say which one the load acts on.
+    Ambiguous {
+        /// The moving links at the joint.
+        links: Vec<usize>,
+    },
+}
+
+impl Uncarried {
+    /// The force analysis' error for a load at point `name`.
+    pub fn at(self, name: &str) -> ForceError {
+        ForceError::Uncarried {
+            name: name.to_string(),
+            why: self,
+        }
+    }
+}
+
+impl std::fmt::Display for Uncarried {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let list = |ls: &[usize]| {
+            ls.iter()
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join(" and ")
+        };
+        match self {
+            Uncarried::Frame => write!(f, "the point is on the frame, which carries no load"),
+            Uncarried::NotOn { link, links } => write!(
+                f,
+                "link {link} does not carry the point, which lies on link {}",
+                list(links)
+            ),
+            Uncarried::Ambiguous { links } => write!(
+                f,
+                "the point is the joint of links {}: name the link the load acts on with `link`",
+                list(links)
+            ),
+        }
+    }
+}
+
+/// The link that carries a load applied at point `k`. The scene's `link`, when it names one,
+/// must lie on the point. Otherwise: the one moving link the point lies on; at a joint of a
+/// slider (a block pinned there, a slider on a guide) and a link that does not slide, the
+/// slider — the textbooks load the ram, the piston, the block, not the rod; any other joint
+/// (two bars, two sliders) must be named in the scene.
+pub fn carrier(prog: &Program, k: usize, named: Option<u32>) -> Result<usize, Uncarried> {
+    let on = prog.links_of(k);
+    let moving: Vec<usize> = on.iter().copied().filter(|&l| l != 0).collect();
+    if let Some(l) = named {
+        return if moving.contains(&(l as usize)) {
+            Ok(l as usize)
+        } else {
+            Err(Uncarried::NotOn { link: l, links: on })
+        };
+    }
+    match moving[..] {
+        [] => return Err(Uncarried::Frame),
+        [l] => return Ok(l),
+        _ => {}
+    }
+    let sliders: Vec<usize> = moving
+        .iter()
+        .copied()
+        .filter(|&l| is_slider(prog, l))
+        .collect();
+    match sliders[..] {
+        [l] => Ok(l),
+        _ => Err(Uncarried::Ambiguous { links: moving }),
+    }
+}
+
+/// Link `l` is a slider: the block of an RRP, RPR or RPP group, either link of a PRP group,
+/// the translating link of an RPP group (not a slotted link the block slides in).
+fn is_slider(prog: &Program, l: usize) -> bool {
+    prog.ops.iter().any(|op| match *op {
+        Op::Dyad {
+            links: [i, j],
+            dyad,
+            ..
+        } => {
+            let (i, j) = (i as usize, j as usize);
+            match dyad {
+                PDyad::Rrr { .. } => false,
+                PDyad::Rrp { .. } => l == j,
+                PDyad::Rpr { .. } => l == i,
+                PDyad::Prp { .. } | PDyad::Rpp { .. } => l == i || l == j,
+            }
+        }
+        Op::Point { .. } => false,
+    })
 }

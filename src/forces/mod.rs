@@ -18,6 +18,7 @@ pub mod lever;
 pub mod loads;
 pub mod pair_friction;
 pub mod polygons;
+pub mod residual;
 mod spec;
 #[cfg(test)]
 mod tests;
@@ -52,6 +53,14 @@ pub enum ForceError {
         key: &'static str,
         /// The name.
         name: String,
+    },
+    /// A load at a point no link carries, or carries unambiguously.
+    #[error("forces.resistance: the force at `{name}`: {why}")]
+    Uncarried {
+        /// The point.
+        name: String,
+        /// Why.
+        why: loads::Uncarried,
     },
     /// A centre of mass that is not on its link.
     #[error("forces.link: the centre of mass `{name}` is not a point of link {link}")]
@@ -132,10 +141,48 @@ pub struct PositionForces {
     pub scale_f: Scale,
     /// The guides' reactions on sliders of known length, by the twin.
     pub sliders: Vec<SliderEnds>,
+    /// The crank's sense of rotation, +1 counter-clockwise.
+    pub sense: f64,
     /// The same position with friction in the pairs, when `[forces.friction]` asks for it.
     pub friction: Option<Box<WithFriction>>,
     /// The rows.
     pub rows: Vec<Row>,
+    /// The equilibrium residuals ([`residual`]) of the polygons and of the twin, without and
+    /// (when the scene has it) with friction in the pairs.
+    pub residuals: Vec<Residual>,
+}
+
+/// The equilibrium residual of both routes of one analysis ([`residual::residual`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Residual {
+    /// The analysis with friction in the pairs.
+    pub friction: bool,
+    /// The force polygons' reactions and balancing load against the drawn motion.
+    pub polygons: f64,
+    /// The linear solve's against the exact motion.
+    pub twin: f64,
+}
+
+impl PositionForces {
+    /// The rows `equilibrium_residual` (`_f` with friction): the polygons' residual as the
+    /// graphical value, the linear solve's as the analytic one; both 0 for an exact
+    /// equilibrium.
+    pub fn residual_rows(&self) -> Vec<Row> {
+        self.residuals
+            .iter()
+            .map(|r| Row {
+                scale: 1.0,
+                ..row(
+                    &self.label,
+                    Symbol::EquilibriumResidual,
+                    if r.friction { "f" } else { "" }.to_string(),
+                    Method::Polygon,
+                    r.polygons,
+                    r.twin,
+                )
+            })
+            .collect()
+    }
 }
 
 /// One position's force analysis with friction in the pairs ([`pair_friction`]): the
@@ -260,6 +307,10 @@ pub fn analyse(
     let loads = loads::loads(spec, prog, &drawn, ph)?;
     let scale_f = match spec.scale_f {
         Some(s) => s,
+        // Without loads every reaction is zero: any scale draws the empty polygons.
+        None if twin.largest() == 0.0 => {
+            Scale::new(1.0, Quantity::Force).ok_or(ForceError::NoScale(0.0))?
+        }
         None => Scale::round_for(twin.largest(), POLYGON_MM, Quantity::Force)
             .ok_or(ForceError::NoScale(twin.largest()))?,
     };
@@ -302,7 +353,71 @@ pub fn analyse(
             &f.twin,
         ));
     }
-    zero_references(&mut rows);
+    let size = pos
+        .pose
+        .p
+        .iter()
+        .map(|x| x.distance(pos.pose.p[prog.centre]))
+        .fold(0.0, f64::max);
+    zero_references(&mut rows, size);
+    let residuals = {
+        let built_dir: Vec<DVec2> = pos
+            .built
+            .angle
+            .iter()
+            .map(|a| DVec2::from_angle(*a))
+            .collect();
+        let drawn_state = residual::State {
+            motion: &drawn,
+            dir: &built_dir,
+            sense,
+            phase: ph,
+        };
+        let exact_state = residual::State {
+            motion: &exact,
+            dir: &pos.pose.dir,
+            ..drawn_state
+        };
+        let of = |state: &residual::State<'_>, reactions: &[Reaction], m_bal, f_bal, fr| {
+            let reported = residual::Reported {
+                reactions,
+                m_bal,
+                f_bal,
+            };
+            residual::residual(spec, prog, state, &reported, fr)
+        };
+        let mut v = vec![Residual {
+            friction: false,
+            polygons: of(
+                &drawn_state,
+                &polygons.reactions(),
+                polygons.driver.m_bal,
+                polygons.driver.f_bal,
+                None,
+            ),
+            twin: of(&exact_state, &twin.reactions, twin.m_bal, twin.f_bal, None),
+        }];
+        if let (Some(w), Some(fr)) = (&friction, &spec.friction) {
+            v.push(Residual {
+                friction: true,
+                polygons: of(
+                    &drawn_state,
+                    &w.polygons.reactions(),
+                    w.polygons.driver.m_bal,
+                    w.polygons.driver.f_bal,
+                    Some(fr),
+                ),
+                twin: of(
+                    &exact_state,
+                    &w.twin.reactions,
+                    w.twin.m_bal,
+                    w.twin.f_bal,
+                    Some(fr),
+                ),
+            });
+        }
+        v
+    };
     let sliders = twin
         .reactions
         .iter()
@@ -331,8 +446,10 @@ pub fn analyse(
         m_power,
         scale_f,
         sliders,
+        sense,
         friction,
         rows,
+        residuals,
     })
 }
 
@@ -443,8 +560,9 @@ fn row(label: &str, symbol: Symbol, subject: String, method: Method, g: f64, a: 
     Row {
         key: Key::at_position(symbol, subject, label),
         method,
-        graphical: g,
-        analytic: a,
+        // −0 (a balancing moment of no loads) is written as 0.
+        graphical: g + 0.0,
+        analytic: a + 0.0,
         conditioning: None,
         scale: a.abs(),
     }
@@ -542,15 +660,27 @@ fn reaction_rows(
     rows
 }
 
-/// A value's zero reference is the largest of its kind at the position (a guide reaction's
-/// point on its reference point is zero against the other points).
-fn zero_references(rows: &mut [Row]) {
+/// A value's zero reference is the largest of its kind at the position, and for a length
+/// (an arm, a guide reaction's point) at least the mechanism's size `size`, m, and for a
+/// moment at least the largest force times that size: a guide reaction's point on its
+/// reference point is zero against the mechanism, even where every such point is (the
+/// v-engine's pistons, whose reactions pass through their joints: 1e-16 m is zero).
+fn zero_references(rows: &mut [Row], size: f64) {
     let largest = |s: Symbol, rows: &[Row]| {
         rows.iter()
             .filter(|r| r.key.symbol == s && r.analytic.is_finite())
             .fold(0.0f64, |m, r| m.max(r.analytic.abs()))
     };
-    let scales: Vec<f64> = rows.iter().map(|r| largest(r.key.symbol, rows)).collect();
+    let force = largest(Symbol::Reaction, rows).max(largest(Symbol::Force, rows));
+    let floor = |s: Symbol| match s {
+        Symbol::Length => size,
+        Symbol::Moment => force * size,
+        _ => 0.0,
+    };
+    let scales: Vec<f64> = rows
+        .iter()
+        .map(|r| largest(r.key.symbol, rows).max(floor(r.key.symbol)))
+        .collect();
     for (r, s) in rows.iter_mut().zip(scales) {
         r.scale = s;
     }
@@ -575,6 +705,14 @@ pub fn notes(f: &PositionForces) -> Vec<String> {
         n(l),
         format_sig(if p != 0.0 { (p - l).abs() / p.abs() * 100.0 } else { 0.0 }, 3, Lang::En),
     )];
+    if let Some(force) = f.twin.f_bal.filter(|_| f.twin.m_bal * f.sense < 0.0) {
+        out.push(format!(
+            "position {}: the balancing moment {} N·m opposes ω₁: the pinion holds the crank back, so its tooth pushes on the other flank and the balancing force F_bal = {} N acts on the line of action mirrored about the line of centres",
+            f.label,
+            n(f.twin.m_bal),
+            n(force),
+        ));
+    }
     for s in f.sliders.iter().filter(|s| s.outside()) {
         let [a, b] = s.ends();
         out.push(format!(

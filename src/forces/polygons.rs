@@ -630,7 +630,9 @@ fn driver(
         Drive::Gear(g) => {
             let mu = board.mu_l.value();
             let r = g.radius() / mu;
-            let (p, d) = line_of_action(o, r, g.towards, g.pressure_angle, board.sense);
+            // The tooth pushes on the flank that turns the crank the way M_bal = −k does.
+            let flank = if k == 0.0 { board.sense } else { -k.signum() };
+            let (p, d) = line_of_action(o, r, g.towards, g.pressure_angle, flank);
             let towards = DVec2::from_angle(g.towards);
             pitch_circle(&mut sch.rec, "pitch circle of the wheel", o, r, g.towards);
             if let Some(rm) = g.mate_radius().map(|rm| rm / mu) {

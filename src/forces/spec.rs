@@ -43,6 +43,9 @@ pub enum Action {
     Force {
         /// The point of application.
         point: String,
+        /// The link the force acts on, as the scene names it (`link`); `None`: the link the
+        /// point belongs to, the slider at a slider's joint ([`crate::forces::loads::carrier`]).
+        link: Option<u32>,
         /// Magnitude, N (> 0).
         magnitude: f64,
         /// A fixed direction, radians; `None`: against the velocity.

@@ -119,8 +119,9 @@ pub struct Equilibrium {
     pub reactions: Vec<Reaction>,
     /// The balancing moment on the crank, N·m, counter-clockwise.
     pub m_bal: f64,
-    /// The balancing force at the pitch point along the line of action (gear drive), N;
-    /// positive in the sense that drives the crank in its sense of rotation.
+    /// The balancing force at the pitch point along the line of action (gear drive), N: the
+    /// magnitude of the tooth force, on the flank that turns the crank in the sense of
+    /// `m_bal` ([`line_of_action`]).
     pub f_bal: Option<f64>,
     /// The balancing force's arm about the crank's centre (gear drive), m.
     pub arm: Option<f64>,
@@ -145,29 +146,51 @@ impl Equilibrium {
 }
 
 /// The gear drive's line of action: the pitch point P (m) and the unit direction of the force
-/// the pinion exerts on the crank's wheel when it drives it in the sense `sense` (+1
-/// counter-clockwise): its tangential component along the rotation, its radial component
-/// towards the wheel's centre.
+/// the pinion's tooth exerts on the crank's wheel when that force turns the wheel in the sense
+/// `turn` (+1 counter-clockwise): its tangential component along `turn`, its radial component
+/// towards the wheel's centre. A tooth only pushes, so the line depends on which flank is in
+/// contact: when the balancing moment turns the crank with its rotation the pinion drives it
+/// (`turn` = the sense of ω₁); when the balancing moment opposes ω₁ the pinion holds the crank
+/// back on the other flank, and the line of action is the mirror image about the line of
+/// centres (`turn` = −the sense of ω₁). Either way the force's magnitude F_bal is positive.
 pub fn line_of_action(
     centre: DVec2,
     r: f64,
     towards: f64,
     alpha: f64,
-    sense: f64,
+    turn: f64,
 ) -> (DVec2, DVec2) {
     let e = DVec2::from_angle(towards);
     let p = centre + e * r;
-    let d = e.perp() * (sense * alpha.cos()) - e * alpha.sin();
+    let d = e.perp() * (turn * alpha.cos()) - e * alpha.sin();
     (p, d)
 }
 
-/// The reactions and the balancing moment of `loads` at `pose`: one linear solve.
+/// The reactions and the balancing moment of `loads` at `pose`: one linear solve. With a gear
+/// drive the solve first takes the flank on which the pinion drives the crank (`sense`, that
+/// of ω₁); a negative force there means the pinion holds the crank back, and the solve is
+/// repeated on the mirrored line of action ([`line_of_action`]), where the force is positive.
 pub fn solve(
     prog: &Program,
     pose: &Pose,
     loads: &[Load],
     drive: &Drive,
     sense: f64,
+) -> Result<Equilibrium, ForceError> {
+    let e = solve_on(prog, pose, loads, drive, sense)?;
+    match e.f_bal {
+        Some(f) if f < 0.0 => solve_on(prog, pose, loads, drive, -sense),
+        _ => Ok(e),
+    }
+}
+
+/// [`solve`] with a gear drive's tooth force turning the crank in the sense `turn`.
+fn solve_on(
+    prog: &Program,
+    pose: &Pose,
+    loads: &[Load],
+    drive: &Drive,
+    turn: f64,
 ) -> Result<Equilibrium, ForceError> {
     let pairs = pairs(prog);
     let moving: Vec<usize> = std::iter::once(prog.crank_link as usize)
@@ -231,7 +254,7 @@ pub fn solve(
             None
         }
         Drive::Gear(g) => {
-            let (p, d) = line_of_action(origin, g.radius(), g.towards, g.pressure_angle, sense);
+            let (p, d) = line_of_action(origin, g.radius(), g.towards, g.pressure_angle, turn);
             put(&mut a, crank, bal, d, p, 0.0);
             Some((p, d))
         }

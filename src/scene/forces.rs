@@ -6,11 +6,12 @@ use super::check::{item, join, quoted, Checker};
 use super::kinematics::{point, point_names, position_labels};
 use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance, RawSeedValue};
 use crate::check::Method;
+use crate::forces::loads::carrier;
 use crate::forces::pair_friction::PairFriction;
 use crate::forces::{
     Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, SeedValue, Stroke, G_STANDARD,
 };
-use crate::linkage::Mechanism;
+use crate::linkage::{Mechanism, Program};
 use crate::scale::Quantity;
 
 /// The key path of the section.
@@ -39,6 +40,7 @@ pub(crate) fn forces(
             .chain(m.groups.iter().flat_map(|g| g.links))
             .collect()
     });
+    let program = mechanism.and_then(|m| Program::compile(m).ok());
     let count = if count == 0 { u32::MAX } else { count };
     let g = match raw.g {
         Some(g) => check.in_range(&key("g"), g, 1e3, "g > 0 m/s², at most 1000"),
@@ -76,7 +78,14 @@ pub(crate) fn forces(
         .enumerate()
         .filter_map(|(i, r)| {
             let base = item(&key("resistance"), i);
-            resistance(check, &base, r, names.as_deref(), links.as_deref())
+            resistance(
+                check,
+                &base,
+                r,
+                names.as_deref(),
+                links.as_deref(),
+                program.as_ref(),
+            )
         })
         .collect();
     let indicators = raw
@@ -327,6 +336,7 @@ fn resistance(
     raw: &RawResistance,
     names: Option<&[String]>,
     links: Option<&[u32]>,
+    program: Option<&Program>,
 ) -> Option<Resistance> {
     let k = |s: &str| join(base, s);
     let stroke = match raw.stroke.as_deref() {
@@ -350,8 +360,21 @@ fn resistance(
                 "the point the force acts at",
             );
             let dir = raw.dir.map(|d| check.angle(&k("dir"), Some(d), 0.0));
+            let link = match raw.link {
+                Some(_) => Some(moving_link(check, &k("link"), raw.link, links)?),
+                None => None,
+            };
+            if let (Some(prog), Some(name)) = (program, point.as_ref()) {
+                if let Some(at) = prog.index(name) {
+                    if let Err(why) = carrier(prog, at, link) {
+                        let key = if link.is_some() { "link" } else { "point" };
+                        check.push(k(key), Some(quoted(name)), why.to_string());
+                    }
+                }
+            }
             point.map(|point| Action::Force {
                 point,
+                link,
                 magnitude,
                 dir,
             })

@@ -733,6 +733,7 @@ impl<'s> Session<'s> {
             for i in self.force_positions()? {
                 let f = self.forces(&k.scales, i)?;
                 rows.extend(f.rows.iter().cloned());
+                rows.extend(f.residual_rows());
                 notes.extend(crate::forces::notes(&f));
             }
             notes.extend(crate::forces::seed_notes(
