@@ -253,3 +253,103 @@ fn a_clockwise_cam_is_the_mirror_image() {
     let e = refused(&format!("{GOOD}rotation = \"left\"\n"));
     assert!(e.contains("cam.rotation"), "{e}");
 }
+
+/// Issue 17 §5: meaningless cam values are refused at load, naming the key and the range
+/// (a negative ρ_min was taken as 0; γ_min = 1e-6° drew a cam of 4e-25 m).
+#[test]
+fn meaningless_cam_values_are_refused_with_key_and_range() {
+    for (edit, key, range) in [
+        ("rho_min = -5.0", "cam.rho_min", "≥ 0"),
+        ("gamma_min = 1e-6", "cam.gamma_min", "10 ≤ γ_min ≤ 80"),
+        ("gamma_min = 85.0", "cam.gamma_min", "10 ≤ γ_min ≤ 80"),
+        ("gamma_min = 1e30", "cam.gamma_min", "10 ≤ γ_min ≤ 80"),
+        ("poles = [1e30, 40.0]", "cam.poles", "from 5 to 200 mm"),
+        ("poles = [30.0, 1e-30]", "cam.poles", "from 5 to 200 mm"),
+        ("ratio = 1e-9", "cam.ratio", "0.1 ≤ ratio ≤ 0.9"),
+        ("ratio = 0.99", "cam.ratio", "0.1 ≤ ratio ≤ 0.9"),
+        ("divisions = 721", "cam.divisions", "from 2 to 720"),
+    ] {
+        let e = refused(&format!("{GOOD}{edit}\n"));
+        assert!(e.contains(key) && e.contains(range), "{edit}: {e}");
+    }
+    let e = refused(&GOOD.replace("[130.0, 50.0, 130.0, 50.0]", "[1e-9, 180.0, 130.0, 50.0]"));
+    assert!(e.contains("cam.phases[0]") && e.contains("≥ 1°"), "{e}");
+    let e = refused(&GOOD.replace("[130.0, 50.0, 130.0, 50.0]", "[1e30, 50.0, 130.0, 50.0]"));
+    assert!(e.contains("cam.phases"), "{e}");
+    // The ends of the ranges are accepted.
+    for edit in [
+        "rho_min = 0.0",
+        "gamma_min = 10.0",
+        "gamma_min = 80.0",
+        "poles = [5.0, 200.0]",
+        "ratio = 0.1",
+        "ratio = 0.9",
+    ] {
+        let text = format!("{GOOD}{edit}\n");
+        assert!(
+            tmm::scene::parse(&text, Path::new("good.toml")).is_ok(),
+            "{edit}"
+        );
+    }
+    // The command line: exit 2 naming the key.
+    let dir = std::env::temp_dir().join(format!("tmm-cam-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("scratch");
+    let path = dir.join("bad-rho.toml");
+    std::fs::write(&path, format!("{GOOD}rho_min = -5.0\n")).expect("write");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .args(["check", path.to_str().expect("path")])
+        .output()
+        .expect("run tmm");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("cam.rho_min"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 17 §5: every documented number of intervals works: 2 (the "+ −" law integrated from
+/// two mid-interval ordinates; it failed with "a diagram needs at least 2 intervals") and
+/// many (the table of points continues on further sheets instead of failing to fit).
+#[test]
+fn every_documented_number_of_divisions_draws() {
+    for (name, n) in [
+        ("cam-seed000", 2usize),
+        ("cam-central", 2),
+        ("cam-pz4", 2),
+        ("cam-central", 60),
+        ("cam-seed000", 200),
+    ] {
+        let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("constructions")
+            .join(format!("{name}.toml"));
+        let text = std::fs::read_to_string(&path).expect("scene");
+        let text = if text.contains("divisions =") {
+            text.lines()
+                .map(|l| {
+                    if l.starts_with("divisions =") {
+                        format!("divisions = {n}")
+                    } else {
+                        l.to_string()
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join("\n")
+        } else {
+            text.replace("[cam]", &format!("[cam]\ndivisions = {n}"))
+        };
+        let s = tmm::scene::parse(&text, &path).unwrap_or_else(|e| panic!("{name} {n}: {e}"));
+        let session = Session::new(&s, Drafting::EXACT);
+        let r = session
+            .report()
+            .unwrap_or_else(|e| panic!("{name} {n}: {e}"));
+        assert_eq!(rows(&r, "s").len(), 2 * n + 2, "{name} {n}");
+        let plates = tmm::sheets::build_all(&session, tmm::scale::Lang::En)
+            .unwrap_or_else(|(k, e)| panic!("{name} {n}: {k:?}: {e}"));
+        let rows_drawn: usize = plates
+            .iter()
+            .flat_map(|(_, p)| &p.tables)
+            .filter(|t| t.title.starts_with("Points of the diagrams"))
+            .map(|t| t.rows.len())
+            .sum();
+        assert_eq!(rows_drawn, 2 * n + 2, "{name} {n}: every point in a table");
+    }
+}

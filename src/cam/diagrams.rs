@@ -103,7 +103,14 @@ pub(super) fn diagrams(
         let mids: Vec<f64> = (0..n)
             .map(|k| exact::motion(spec, st[phase] + (k as f64 + 0.5) * dx, true).d2s)
             .collect();
-        let src = Diagram::new(st[phase], dx, mids, false)?;
+        // n mid-interval ordinates of n intervals (validated by the integration as such; a
+        // diagram of nodes would count n − 1).
+        let src = Diagram {
+            x0: st[phase],
+            dx,
+            y: mids,
+            periodic: false,
+        };
         let shift = DVec2::new(phi.to_mm(st[phase]), 0.0);
         let pole = if idx == 0 {
             ("P_1", "H_1")
@@ -150,7 +157,12 @@ pub(super) fn diagrams(
         }
         // The second integration reads dS/dφ at the middle of each chord it has drawn.
         let mids_v: Vec<f64> = v.node.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
-        let src2 = Diagram::new(st[phase], dx, mids_v, false)?;
+        let src2 = Diagram {
+            x0: st[phase],
+            dx,
+            y: mids_v,
+            periodic: false,
+        };
         let layout2 = Layout::new(v_top + shift, s_origin + shift)
             .named("φ", "dS/dφ", "S")
             .pole_named(if idx == 0 { "P_2" } else { "P_2′" }, "H_2");

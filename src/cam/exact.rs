@@ -2,6 +2,8 @@
 //! envelope with curvature, the pressure / transmission angle, and the minimum radius over
 //! the whole cycle (not only at the drawn points).
 
+pub use super::centre::min_radius_rocker;
+use super::extremum::{checked_pieces, max_over, pieces};
 use super::{CamSpec, Follower, Law};
 use crate::geom::{rotate, DVec2};
 use std::f64::consts::{FRAC_PI_2, TAU};
@@ -37,6 +39,11 @@ pub struct Point {
 }
 
 /// The points of the diagrams: the rise's n + 1 and the return's n + 1 (seed 000: 26).
+///
+/// The rule at the ends of a moving phase (the same for every law): a point belongs to its
+/// phase, so its first point reports the phase's value just after the start (`after`) and
+/// its last point the phase's value just before the end, never the dwell's. An inner jump of
+/// the "+ −" law on a node reports the piece before it.
 pub fn points(spec: &CamSpec) -> Vec<Point> {
     let n = spec.divisions;
     let st = spec.starts();
@@ -45,7 +52,11 @@ pub fn points(spec: &CamSpec) -> Vec<Point> {
         for k in 0..=n {
             out.push(Point {
                 label: out.len().to_string(),
-                phi: st[phase] + len * k as f64 / n as f64,
+                phi: if k == n {
+                    st[phase + 1]
+                } else {
+                    st[phase] + len * k as f64 / n as f64
+                },
                 after: k == 0,
                 phase,
                 k,
@@ -55,48 +66,109 @@ pub fn points(spec: &CamSpec) -> Vec<Point> {
     out
 }
 
+/// Angles closer than this to a phase boundary (or to a jump of a law, in u) are that
+/// boundary, rad: the rounding of φ₀ + Φ·k/n never decides the side of a jump.
+const SNAP: f64 = 1e-12;
+
 /// The law at φ (any angle; wrapped into one turn), `after` picking the piece after a jump.
+///
+/// One rule at every boundary, for every law: at a phase boundary `after = false` gives the
+/// phase that ends there (a moving phase's own end value, S′ and S″ of its law at u = 1),
+/// `after = true` the phase that starts there (at u = 0); a dwell's values are the dwell's
+/// only. φ within [`SNAP`] of a boundary is on it.
 pub fn motion(spec: &CamSpec, phi: f64, after: bool) -> Motion {
+    let (phase, u) = locate(spec, phi, after);
+    motion_u(spec, phase, u, after)
+}
+
+/// The phase (0 rise, 1 far dwell, 2 return, 3 near dwell) and u ∈ [0, 1] of φ, by the rule
+/// of [`motion`].
+pub fn locate(spec: &CamSpec, phi: f64, after: bool) -> (usize, f64) {
     let st = spec.starts();
-    let phi = if (0.0..=TAU).contains(&phi) {
+    let p = &spec.phases;
+    let lens = [p.rise, p.far, p.ret, p.near];
+    let mut phi = if (0.0..=TAU).contains(&phi) {
         phi
     } else {
         phi.rem_euclid(TAU)
     };
+    for b in st {
+        if (phi - b).abs() <= SNAP {
+            phi = b;
+        }
+    }
+    if (TAU - phi).abs() <= SNAP {
+        phi = st[4];
+    }
+    // The cycle's end is its start.
+    if after && phi >= st[4] {
+        phi = 0.0;
+    } else if !after && phi <= 0.0 {
+        phi = st[4];
+    }
+    for i in 0..4 {
+        if lens[i] <= 0.0 {
+            continue;
+        }
+        let inside = if after {
+            phi >= st[i] && phi < st[i + 1]
+        } else {
+            phi > st[i] && phi <= st[i + 1]
+        };
+        if inside {
+            return (i, ((phi - st[i]) / lens[i]).clamp(0.0, 1.0));
+        }
+    }
+    // Between the phases' sum and 2π (the scene's rounding): the cycle's end or start.
+    if after {
+        (0, 0.0)
+    } else {
+        ((0..4).rev().find(|&i| lens[i] > 0.0).unwrap_or(3), 1.0)
+    }
+}
+
+/// The law in phase `phase` (0 rise, 1 far dwell, 2 return, 3 near dwell) at u ∈ [0, 1],
+/// `after` picking the piece after a jump of the law at u (u within [`SNAP`] of a jump is on
+/// it).
+pub fn motion_u(spec: &CamSpec, phase: usize, u: f64, after: bool) -> Motion {
     let h = spec.stroke;
-    let phase =
-        |a: f64, b: f64| (phi > a || (phi == a && after)) && (phi < b || (phi == b && !after));
-    let eval = |law: Law, from: f64, len: f64| {
-        let u = ((phi - from) / len).clamp(0.0, 1.0);
+    let eval = |law: Law, len: f64| {
+        let mut u = u.clamp(0.0, 1.0);
+        for b in law.breaks() {
+            if (u - b).abs() <= SNAP {
+                u = b;
+            }
+        }
         let (f, f1, f2) = law.eval(u, after);
         (f, f1 / len, f2 / (len * len))
     };
-    if spec.phases.rise > 0.0 && phase(st[0], st[1]) {
-        let (f, f1, f2) = eval(spec.rise, st[0], spec.phases.rise);
-        Motion {
-            s: h * f,
-            ds: h * f1,
-            d2s: h * f2,
+    match phase {
+        0 => {
+            let (f, f1, f2) = eval(spec.rise, spec.phases.rise);
+            Motion {
+                s: h * f,
+                ds: h * f1,
+                d2s: h * f2,
+            }
         }
-    } else if spec.phases.ret > 0.0 && phase(st[2], st[3]) {
-        let (f, f1, f2) = eval(spec.ret, st[2], spec.phases.ret);
-        Motion {
-            s: h * (1.0 - f),
-            ds: -h * f1,
-            d2s: -h * f2,
+        2 => {
+            let (f, f1, f2) = eval(spec.ret, spec.phases.ret);
+            Motion {
+                s: h * (1.0 - f),
+                ds: -h * f1,
+                d2s: -h * f2,
+            }
         }
-    } else if phi > st[1] - 1e-15 && phi < st[2] + 1e-15 {
-        Motion {
+        1 => Motion {
             s: h,
             ds: 0.0,
             d2s: 0.0,
-        }
-    } else {
-        Motion {
+        },
+        _ => Motion {
             s: 0.0,
             ds: 0.0,
             d2s: 0.0,
-        }
+        },
     }
 }
 
@@ -111,7 +183,12 @@ pub fn dense(spec: &CamSpec, per_phase: usize) -> Vec<(f64, bool)> {
     ] {
         for k in 0..=per_phase {
             let u = k as f64 / per_phase as f64;
-            out.push((st[phase] + len * u, k == 0));
+            let phi = if k == per_phase {
+                st[phase + 1]
+            } else {
+                st[phase] + len * u
+            };
+            out.push((phi, k == 0));
         }
         for b in law.breaks() {
             out.push((st[phase] + len * b, false));
@@ -260,42 +337,16 @@ pub fn flat_contact(r0: f64, m: Motion) -> (DVec2, f64) {
 }
 
 /// The exact minimum base radius of a translating roller / knife-edge follower with offset
-/// e for λ ≤ 90° − γ_min over the whole cycle: s₀ = max(|S′ − e|·tan γ_min − S),
-/// r₀ = √(e² + s₀²). Returns (r₀, s₀).
+/// e for λ ≤ 90° − γ_min over the whole cycle (the rise only under force closure):
+/// s₀ = max(|S′ − e|·tan γ_min − S) over every smooth piece (its ends on its own side, every
+/// local maximum refined), r₀ = √(e² + s₀²). Returns (r₀, s₀).
 pub fn min_radius_translating(spec: &CamSpec, offset: f64) -> (f64, f64) {
     let t = spec.gamma_min.tan();
-    let need = |phi: f64, after: bool| {
-        let m = motion(spec, phi, after);
+    let (need, _, _) = max_over(spec, &checked_pieces(spec), DENSE, |m| {
         (m.ds - offset).abs() * t - m.s
-    };
-    let s0 = refine_max(spec, checked(spec, DENSE), need).max(0.0);
-    ((offset * offset + s0 * s0).sqrt(), s0)
-}
-
-/// The largest of `f` over the cycle: dense samples, then a golden-section refinement of
-/// the best one's neighbourhood (f continuous within a phase).
-fn refine_max(spec: &CamSpec, samples: Vec<(f64, bool)>, f: impl Fn(f64, bool) -> f64) -> f64 {
-    let mut best = f64::NEG_INFINITY;
-    let mut at = 0.0;
-    for &(phi, after) in &samples {
-        let v = f(phi, after);
-        if v > best {
-            best = v;
-            at = phi;
-        }
-    }
-    let step = spec.phases.rise.max(spec.phases.ret) / DENSE as f64;
-    let (mut a, mut b) = (at - step, at + step);
-    let g = 0.618_033_988_749_894_9;
-    for _ in 0..80 {
-        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
-        if f(x1, true) > f(x2, true) {
-            b = x2;
-        } else {
-            a = x1;
-        }
-    }
-    best.max(f(0.5 * (a + b), true))
+    });
+    let s0 = need.max(0.0);
+    (offset.hypot(s0), s0)
 }
 
 /// The rocker's constraints: for each dense angle, K and the rocker's line direction in the
@@ -334,96 +385,37 @@ pub fn admits(o: DVec2, constraints: &[(DVec2, DVec2)], sin_g: f64, slack: f64) 
     })
 }
 
-/// The exact minimum base radius of a rocker cam over the whole cycle: the cam centre O
-/// nearest A₀ (frame of the pivot, A₀ = (0, L)) from which every OK makes γ ≥ γ_min with
-/// the rocker. Returns (r₀, O), or `None` when no centre within 20 arms qualifies.
-pub fn min_radius_rocker(spec: &CamSpec) -> Option<(f64, DVec2)> {
-    let (arm, _) = rocker_of(spec);
-    let cons = rocker_constraints(spec, 400);
-    let sin_g = spec.gamma_min.sin();
-    let a0 = DVec2::new(0.0, arm);
-    let limit = 20.0 * arm;
-    let first = |theta: f64| -> Option<f64> {
-        let dir = DVec2::from_angle(theta);
-        let steps = 800;
-        let mut prev = 0.0;
-        for i in 1..=steps {
-            let r = limit * (i as f64 / steps as f64).powi(2);
-            if admits(a0 + dir * r, &cons, sin_g, 0.0) {
-                let (mut lo, mut hi) = (prev, r);
-                for _ in 0..60 {
-                    let mid = 0.5 * (lo + hi);
-                    if admits(a0 + dir * mid, &cons, sin_g, 0.0) {
-                        hi = mid;
-                    } else {
-                        lo = mid;
-                    }
-                }
-                return Some(hi);
-            }
-            prev = r;
-        }
-        None
-    };
-    let mut best: Option<(f64, f64)> = None;
-    let coarse = 720;
-    for i in 0..coarse {
-        let th = TAU * i as f64 / coarse as f64;
-        if let Some(r) = first(th) {
-            if best.is_none_or(|(_, b)| r < b) {
-                best = Some((th, r));
-            }
-        }
-    }
-    let (mut th, mut r) = best?;
-    let mut span = TAU / coarse as f64;
-    for _ in 0..12 {
-        for j in -10..=10 {
-            let t = th + span * j as f64 / 10.0;
-            if let Some(rr) = first(t) {
-                if rr < r {
-                    r = rr;
-                    th = t;
-                }
-            }
-        }
-        span /= 5.0;
-    }
-    Some((r, a0 + DVec2::from_angle(th) * r))
-}
-
 /// The flat face's exact minimum r₀ = max(−(S + S″)) + ρ_min over the whole cycle (never
-/// below ρ_min), and max(−(S + S″)) itself.
+/// below ρ_min), and max(−(S + S″)) itself: over every smooth piece, both sides of every
+/// jump of S″, every local maximum refined.
 pub fn min_radius_flat(spec: &CamSpec) -> (f64, f64) {
-    let worst = refine_max(spec, dense(spec, DENSE), |phi, after| {
-        let m = motion(spec, phi, after);
-        -(m.s + m.d2s)
-    });
+    let (worst, _, _) = max_over(spec, &pieces(spec, false), DENSE, |m| -(m.s + m.d2s));
     (worst.max(0.0) + spec.rho_min, worst)
 }
 
+/// The pitch curve's curvature 1/ρ at a follower position (> 0 convex, < 0 concave).
+fn curvature(k: &Kin) -> f64 {
+    let u = k.b1 - jay(k.b);
+    let w = k.b2 - jay(k.b1) * 2.0 - k.b;
+    -u.perp_dot(w) / u.length().powi(3)
+}
+
 /// The smallest radius of curvature of the convex parts of the pitch curve over the whole
-/// cycle (the largest admissible roller is just below it), and the most concave one (its
-/// smallest |ρ|, `None` when the pitch curve is convex everywhere).
+/// cycle (the largest admissible roller is just under it), and the most concave one (its
+/// smallest |ρ|, `None` when the pitch curve is convex everywhere): the largest curvature
+/// of each sign over every smooth piece (the dwells are arcs about O), every local maximum
+/// refined, to rounding.
 pub fn pitch_rho_min(spec: &CamSpec, place: &Placement) -> (f64, Option<f64>) {
-    let mut convex = f64::INFINITY;
-    let mut concave: Option<f64> = None;
-    for (phi, after) in dense(spec, DENSE) {
-        let rho = place.kin(motion(spec, phi, after)).pitch_radius();
-        if rho > 0.0 {
-            convex = convex.min(rho);
-        } else if rho < 0.0 {
-            concave = Some(concave.map_or(-rho, |c: f64| c.min(-rho)));
-        }
-    }
-    // The dwells are arcs about O of radius |OB|.
-    for m in [
-        motion(spec, 0.0, false),
-        motion(spec, spec.starts()[1], true),
-    ] {
-        convex = convex.min(place.kin(m).b.length());
-    }
-    (convex, concave)
+    let all = pieces(spec, false);
+    let kappa = |m: Motion| curvature(&place.kin(m));
+    let (convex, _, _) = max_over(spec, &all, DENSE, kappa);
+    let (concave, _, _) = max_over(spec, &all, DENSE, |m| -kappa(m));
+    let convex = if convex > 0.0 {
+        1.0 / convex
+    } else {
+        f64::INFINITY
+    };
+    (convex, (concave > 0.0).then(|| 1.0 / concave))
 }
 
 /// The smallest translating cam with the offset free (lecture 15's O₁, where the two γ_min

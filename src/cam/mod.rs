@@ -15,9 +15,11 @@
 //! x = e (e > 0 is the side that lowers the pressure angle on the rise). A rocker's pivot O₂
 //! is placed by the minimum-radius construction.
 
+mod centre;
 mod construct;
 mod diagrams;
 pub mod exact;
+pub mod extremum;
 mod inversion;
 mod law;
 mod radius;

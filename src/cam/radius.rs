@@ -120,7 +120,7 @@ pub(super) fn min_radius(
         Follower::Rocker { arm, .. } => {
             let (exact_r, o_exact) = exact::min_radius_rocker(spec).ok_or(CamError::NoCentre {
                 gamma_deg: gamma.to_degrees(),
-                searched: 20.0 * arm,
+                searched: super::centre::REACH_ARMS * arm,
             })?;
             let (_, sigma) = exact::rocker_of(spec);
             let l = mu.to_mm(arm);
@@ -178,7 +178,7 @@ pub(super) fn min_radius(
             );
             let o = rocker_centre(&cons, a0, gamma).ok_or(CamError::NoCentre {
                 gamma_deg: gamma.to_degrees(),
-                searched: 20.0 * l,
+                searched: super::centre::REACH_ARMS * arm,
             })?;
             rocker_lines(&mut rec, &cons, o, gamma);
             hatch_rocker_zone(&mut rec, &cons, o, gamma);

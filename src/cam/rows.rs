@@ -20,6 +20,23 @@ fn num(x: f64) -> String {
 fn mm(x: f64) -> String {
     format_sig(x * 1e3, 5, Lang::En)
 }
+/// Two lengths in mm in a note, with as many significant digits (5 to 15) as tell them
+/// apart.
+fn mm_pair(a: f64, b: f64) -> (String, String) {
+    for digits in 5..15 {
+        let (x, y) = (
+            format_sig(a * 1e3, digits, Lang::En),
+            format_sig(b * 1e3, digits, Lang::En),
+        );
+        if x != y {
+            return (x, y);
+        }
+    }
+    (
+        format_sig(a * 1e3, 15, Lang::En),
+        format_sig(b * 1e3, 15, Lang::En),
+    )
+}
 /// An angle in degrees in a note.
 fn deg(x: f64) -> String {
     format_sig(x.to_degrees(), 4, Lang::En)
@@ -197,29 +214,32 @@ impl Cam {
         }
     }
 
-    /// The extreme angle over the whole cycle: the largest pressure angle or the smallest
-    /// transmission angle, rad.
+    /// The extreme angle over the whole cycle (the rise only under force closure): the
+    /// largest pressure angle or the smallest transmission angle, rad, over every smooth
+    /// piece, refined.
     pub fn worst_angle(&self) -> f64 {
-        let samples = exact::checked(&self.spec, exact::DENSE);
-        let it = samples.iter().map(|&(p, a)| self.angle_at(p, a));
-        if self.rocker() {
-            it.fold(FRAC_PI_2, f64::min)
+        let pieces = super::extremum::checked_pieces(&self.spec);
+        let rocker = self.rocker();
+        let (v, _, _) = super::extremum::max_over(&self.spec, &pieces, exact::DENSE, |m| {
+            let k = self.placement.kin(m);
+            if rocker {
+                -k.transmission_angle()
+            } else {
+                k.pressure_angle()
+            }
+        });
+        if rocker {
+            -v
         } else {
-            it.fold(0.0, f64::max)
+            v
         }
     }
 
-    /// The exact smallest convex radius of curvature: of the pitch curve (roller, knife
-    /// edge), of the profile r₀ + S + S″ (flat face).
+    /// The exact smallest convex radius of curvature, to rounding: of the pitch curve
+    /// (roller, knife edge), of the profile r₀ + S + S″ (flat face).
     pub fn exact_rho_min(&self) -> f64 {
         if self.flat() {
-            exact::dense(&self.spec, exact::DENSE)
-                .into_iter()
-                .map(|(p, a)| {
-                    let m = exact::motion(&self.spec, p, a);
-                    self.base + m.s + m.d2s
-                })
-                .fold(f64::INFINITY, f64::min)
+            self.base - exact::min_radius_flat(&self.spec).1
         } else {
             exact::pitch_rho_min(&self.spec, &self.placement).0
         }
@@ -479,10 +499,15 @@ impl Cam {
                 "cam: roller: 0.4·r_min = {} mm, 0.8·ρ_min = {} mm (ρ_min of the pitch curve {} mm): r = {} mm ({chosen})",
                 mm(0.4 * self.base), mm(0.8 * rho), mm(rho), mm(self.roller)
             ));
-            if self.roller >= rho {
+            if (self.roller - rho).abs() <= 1e-12 * rho {
                 out.push(format!(
-                    "cam: UNDERCUT: the roller radius {} mm exceeds the pitch curve's smallest convex radius of curvature {} mm: the practical profile (the rollers' envelope) loops and is cut away; the largest admissible roller is just under {} mm",
-                    mm(self.roller), mm(rho), mm(rho)
+                    "cam: CUSP: the roller radius {} mm equals the pitch curve's smallest convex radius of curvature {} mm (to 1e-12): the practical profile comes to a point there; a smaller roller is needed",
+                    mm(self.roller), mm(rho)
+                ));
+            } else if self.roller > rho {
+                let (r, p) = mm_pair(self.roller, rho);
+                out.push(format!(
+                    "cam: UNDERCUT: the roller radius {r} mm exceeds the pitch curve's smallest convex radius of curvature {p} mm: the practical profile (the rollers' envelope) loops and is cut away; the largest admissible roller is just under {p} mm"
                 ));
             }
         }

@@ -2,7 +2,7 @@
 //! stroke (mm, or a rocker's swing in degrees × its arm), the roller, the limits and the
 //! scales, each checked with its key path and converted to SI.
 
-use super::check::{item, join, number, Checker};
+use super::check::{item, join, number, Checker, MAX_MM};
 use crate::cam::{CamSpec, Follower, Law, Phases};
 use crate::scale::Quantity;
 use serde::Deserialize;
@@ -26,6 +26,16 @@ const CLOSURES: [&str; 2] = ["geometric", "force"];
 const SENSES: [&str; 2] = ["same", "opposite"];
 /// The most intervals per moving phase a scene may ask for.
 const MAX_DIVISIONS: i64 = 720;
+/// γ_min, degrees: below 10° the pressure angle may reach 80° and the cam shrinks to a point
+/// (γ_min → 0 gives r_min → 0); above 80° r_min grows without bound.
+const GAMMA_MIN_DEG: (f64, f64) = (10.0, 80.0);
+/// The "+ −" law's share of positive acceleration: beyond it one acceleration is over 19
+/// times the other and the diagrams cannot be drawn at one scale.
+const RATIO: (f64, f64) = (0.1, 0.9);
+/// The pole distances H₁, H₂, mm: within a sheet.
+const POLE_MM: (f64, f64) = (5.0, 200.0);
+/// The shortest rise or return, degrees.
+const MIN_MOVING_DEG: f64 = 1.0;
 
 /// `[cam]`.
 #[derive(Debug, Default, Deserialize)]
@@ -63,12 +73,15 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
     let before = check.problems.len();
     let kind = check.word(&key("follower"), raw.follower.as_ref(), &FOLLOWERS);
     let ratio = match raw.ratio {
-        Some(r) if r.is_finite() && r > 0.0 && r < 1.0 => r,
+        Some(r) if r.is_finite() && r >= RATIO.0 && r <= RATIO.1 => r,
         Some(r) => {
             check.push(
                 key("ratio"),
                 Some(number(r)),
-                "expected the share of the phase with positive acceleration, 0 < ratio < 1",
+                format!(
+                    "expected the share of the phase with positive acceleration, {} ≤ ratio ≤ {}",
+                    RATIO.0, RATIO.1
+                ),
             );
             0.5
         }
@@ -180,19 +193,30 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         }
     }
     let gamma_min = match raw.gamma_min {
-        Some(g) if g.is_finite() && g > 0.0 && g < 90.0 => g.to_radians(),
+        Some(g) if g.is_finite() && g >= GAMMA_MIN_DEG.0 && g <= GAMMA_MIN_DEG.1 => g.to_radians(),
         Some(g) => {
             check.push(
                 key("gamma_min"),
                 Some(number(g)),
-                "expected γ_min in degrees, 0 < γ_min < 90",
+                format!(
+                    "expected γ_min in degrees, {} ≤ γ_min ≤ {} (λ_max = 90° − γ_min)",
+                    GAMMA_MIN_DEG.0, GAMMA_MIN_DEG.1
+                ),
             );
             FRAC_60
         }
         None => FRAC_60,
     };
     let rho_min = match raw.rho_min {
-        Some(mm) => check.distance(&key("rho_min"), Some(mm), 0.0).max(0.0),
+        Some(mm) if mm.is_finite() && (0.0..=MAX_MM).contains(&mm) => mm * 1e-3,
+        Some(mm) => {
+            check.push(
+                key("rho_min"),
+                Some(number(mm)),
+                "expected the profile's smallest radius of curvature ρ_min ≥ 0 mm and at most 1e6 mm",
+            );
+            0.0
+        }
         None => 0.0,
     };
     let divisions = match raw.divisions.unwrap_or(12) {
@@ -208,12 +232,17 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
     };
     let poles = match raw.poles.as_deref() {
         None => None,
-        Some([a, b]) if a.is_finite() && b.is_finite() && *a > 0.0 && *b > 0.0 => Some([*a, *b]),
+        Some([a, b]) if [*a, *b].iter().all(|h| (POLE_MM.0..=POLE_MM.1).contains(h)) => {
+            Some([*a, *b])
+        }
         Some(v) => {
             check.push(
                 key("poles"),
                 Some(format!("{v:?}")),
-                "expected the pole distances [H₁, H₂] > 0 mm",
+                format!(
+                    "expected the pole distances [H₁, H₂] from {} to {} mm",
+                    POLE_MM.0, POLE_MM.1
+                ),
             );
             None
         }
@@ -298,10 +327,10 @@ fn phases(check: &mut Checker, v: Option<&[f64]>) -> Phases {
         .into_iter()
         .enumerate()
     {
-        let bad = !x.is_finite() || x < 0.0 || (moving && x == 0.0);
+        let bad = !x.is_finite() || x < 0.0 || (moving && x < MIN_MOVING_DEG);
         if bad {
             let want = if moving {
-                "a rise or return angle > 0°"
+                "a rise or return angle ≥ 1°"
             } else {
                 "a dwell angle ≥ 0°"
             };

@@ -161,7 +161,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         lines,
         size_mm: TEXT_MM,
     });
-    blocks.push(Block::Table(points_table(&cam, lang)));
+    blocks.extend(points_table(&cam, lang).into_iter().map(Block::Table));
     blocks.push(Block::Table(results_table(&cam, lang)));
     let title = super::title_block(
         scene,
@@ -355,9 +355,14 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     out
 }
 
+/// The most rows of one table of points; more continue in further tables (placed on further
+/// sheets when a sheet is full).
+const POINTS_PER_TABLE: usize = 40;
+
 /// One row per point: φ, S, dS/dφ, d²S/dφ² (read), the angle read and exact, the profile's
-/// radius vector.
-fn points_table(cam: &Cam, lang: Lang) -> TableBlock {
+/// radius vector; in tables of at most [`POINTS_PER_TABLE`] rows, each after the first
+/// titled as continued.
+fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
     let rocker = matches!(cam.spec.follower, Follower::Rocker { .. });
     let flat = matches!(cam.spec.follower, Follower::Flat { .. });
     let f = |x: f64, d: usize| format_fixed(x, d, lang);
@@ -406,19 +411,30 @@ fn points_table(cam: &Cam, lang: Lang) -> TableBlock {
         ));
     }
     columns.push((format!("R, {}", tr(lang, "мм", "мм", "mm")), 16.0));
-    TableBlock {
-        at: DVec2::ZERO,
-        title: tr(
-            lang,
-            "Точки диаграмм и профиля",
-            "Точки діаграм і профілю",
-            "Points of the diagrams and the profile",
-        )
-        .into(),
-        columns,
-        rows,
-        size_mm: TABLE_MM,
-    }
+    let title = tr(
+        lang,
+        "Точки диаграмм и профиля",
+        "Точки діаграм і профілю",
+        "Points of the diagrams and the profile",
+    );
+    let rows: Vec<Vec<String>> = rows;
+    rows.chunks(POINTS_PER_TABLE)
+        .enumerate()
+        .map(|(i, chunk)| TableBlock {
+            at: DVec2::ZERO,
+            title: if i == 0 {
+                title.into()
+            } else {
+                format!(
+                    "{title} ({})",
+                    tr(lang, "продолжение", "продовження", "continued")
+                )
+            },
+            columns: columns.clone(),
+            rows: chunk.to_vec(),
+            size_mm: TABLE_MM,
+        })
+        .collect()
 }
 
 /// The values of the whole scene: graphical against exact.
