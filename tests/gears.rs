@@ -184,3 +184,146 @@ fn bad_gear_sections_name_their_keys() {
         }
     }
 }
+
+/// A train scene: wheels 1 and 2 meshing on shafts 1 and 2, `planetary` lines added to
+/// `[planetary]`, and `rest` (more wheels and meshes) after them.
+fn train(planetary: &str, rest: &str) -> String {
+    format!(
+        "[planetary]\n{planetary}\n[[planetary.wheel]]\nname = \"1\"\nz = 20\nshaft = \"1\"\n[[planetary.wheel]]\nname = \"2\"\nz = 40\nshaft = \"2\"\n[[planetary.mesh]]\nwheels = [\"1\", \"2\"]\n{rest}"
+    )
+}
+
+#[test]
+fn refusals_name_the_key_that_makes_them() {
+    let seed_pair = "[gears]\nmodule = 14.0\n[gears.pair]\nz = [13, 30]\nx = [0.8, 0.471]\n";
+    let cases: Vec<(String, &[&str], &[&str])> = vec![
+        // α = 25° with ГОСТ's ρ_f* = 0.38: the rounding, not the pair's tooth numbers.
+        (
+            seed_pair.replace("[gears]\n", "[gears]\nalpha = 25.0\n"),
+            &["gears.rho_f = 0.38 (the default)", "ρ_f* ≤ 0.3179 with α = 25°"],
+            &["gears.pair.z", "gears.pair.x"],
+        ),
+        // Δy = 2.5: the tip of wheel 1 below its base circle (was ε_α = −3.42 on `x`).
+        (
+            format!("{seed_pair}dy = 2.5\n"),
+            &["gears.pair.dy = 2.5", "falls below its base circle"],
+            &["gears.pair.x", "ε_α"],
+        ),
+        // Δy = 0.6: ε_α < 1 with the table's Δy, but the pair works with the exact one.
+        (
+            format!("{seed_pair}dy = 0.6\n"),
+            &["gears.pair.dy = 0.6", "ε_α"],
+            &["gears.pair.x"],
+        ),
+        // A tool tooth pointed before its tip line.
+        (
+            "[gears]\nmodule = 2.0\nalpha = 40.0\nrho_f = 0.0\n[[gears.rack]]\nz = 20\n".into(),
+            &["gears.alpha = 40", "α ≤ 32.1419°"],
+            &["gears.rack[0].x"],
+        ),
+        (
+            train("input = \"1\"\noutput = \"1\"", ""),
+            &["planetary.output = \"1\"", "other than the input"],
+            &[],
+        ),
+        (
+            train("input = \"1\"\noutput = \"2\"\nfixed = \"1\"", ""),
+            &["planetary.fixed = \"1\"", "other than the input"],
+            &[],
+        ),
+        (
+            train("input = \"1\"\noutput = \"2\"\nfixed = \"2\"", ""),
+            &["planetary.fixed = \"2\"", "other than the output"],
+            &[],
+        ),
+        // A carrier without satellites (was blamed on `planetary.mesh`).
+        (
+            train(
+                "input = \"1\"\noutput = \"2\"\ncarrier = \"2\"",
+                "",
+            ),
+            &["planetary.satellites: missing", "carrier 2"],
+            &["planetary.mesh"],
+        ),
+        (
+            train(
+                "input = \"1\"\noutput = \"2\"\nsatellites = [\"2\"]",
+                "",
+            ),
+            &["planetary.carrier: missing"],
+            &["planetary.mesh"],
+        ),
+        // The input held at rest by 2'–3 with 3 fixed; 4 meshes nothing (was "a link turns
+        // freely").
+        (
+            train(
+                "input = \"1\"\noutput = \"4\"\nfixed = \"3\"",
+                "[[planetary.wheel]]\nname = \"2'\"\nz = 20\nshaft = \"2\"\n[[planetary.wheel]]\nname = \"3\"\nz = 30\nshaft = \"3\"\n[[planetary.wheel]]\nname = \"4\"\nz = 30\nshaft = \"4\"\n[[planetary.mesh]]\nwheels = [\"2'\", \"3\"]\n",
+            ),
+            &["planetary.input = \"1\"", "hold the input shaft 1 at rest", "only 4 can turn"],
+            &["turns freely"],
+        ),
+    ];
+    for (k, (text, expected, absent)) in cases.iter().enumerate() {
+        for cmd in [&["check"][..], &["report"][..]] {
+            let (ok, code, err) = run_scene(&format!("refused-{k}"), text, cmd);
+            assert!(!ok && code == 2, "case {k} {cmd:?}: {code} {err}");
+            assert!(!err.contains("panicked"), "case {k}: {err}");
+            for e in *expected {
+                assert!(err.contains(e), "case {k} {cmd:?}: `{e}` not in\n{err}");
+            }
+            for e in *absent {
+                assert!(!err.contains(e), "case {k} {cmd:?}: `{e}` in\n{err}");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_drafting_that_reads_the_output_as_zero_names_drafting() {
+    // Seed 000's reducer: the output's intercept on the plan of ω is 17.189 mm.
+    for (d, ok) in [("34.3", true), ("34.4", false), ("100", false)] {
+        let o = tmm(&[
+            "report",
+            "constructions/gears-seed000.toml",
+            "--drafting",
+            d,
+            "--format",
+            "json",
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.success(), ok, "{d}: {err}");
+        if !ok {
+            assert!(
+                err.contains(&format!("--drafting {d} mm"))
+                    && err.contains("intercept of shaft 8")
+                    && err.contains("17.189 mm drawn")
+                    && err.contains("below 34.378 mm"),
+                "{err}"
+            );
+            assert!(!err.contains("does not turn"), "{err}");
+        }
+    }
+}
+
+#[test]
+fn small_profile_angles_put_the_exact_junction_on_the_tooth() {
+    for (alpha, r_mm) in [("1.0", 68.9905), ("2.0", 68.6919)] {
+        let dir = scratch(&format!("alpha-{alpha}"));
+        let path = dir.join("rack.toml");
+        std::fs::write(
+            &path,
+            format!(
+                "[gears]\nmodule = 10.0\nalpha = {alpha}\nrho_f = 0.0\n[[gears.rack]]\nz = 13\n"
+            ),
+        )
+        .expect("write");
+        let v = report(path.to_str().expect("utf-8"), None);
+        let n = notes(&v);
+        // r_a = 75 mm: was 711.634 mm (α = 1°) and 299.039 mm (α = 2°) "exactly".
+        let want = format!(
+            "the involute meets the fillet at r = {r_mm} mm on the drawing, {r_mm} mm exactly"
+        );
+        assert!(n.contains(&want), "{n}");
+    }
+}

@@ -10,7 +10,7 @@
 //!
 //! Errata of the seeds reproduced against, never matched (`docs/seed-000-cases.md` §000.13,
 //! `docs/seed-002-digest.md` §4.3): seed 000 takes r_b = r·cos α_w and the base pitch
-//! πm·cos α_w, so its ε_α = 1.22 (exact 1.1550); PZ3 reads cos 26.92° as 0.8836 and prints
+//! πm·cos α_w, so its ε_α = 1.22 (exact 1.15524; 1.1550 with its Δy = 0.18); PZ3 reads cos 26.92° as 0.8836 and prints
 //! a_w = 180.79 mm (exact 179.18) and ε_α = 1.14 (exact 1.1637), and lays off "p = 14.13 mm".
 
 pub mod generate;
@@ -21,7 +21,10 @@ mod rack;
 pub mod rows;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_limits;
 pub mod train;
+mod train_rank;
 
 pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
 pub use pair::{Pair, PairSpec};
@@ -55,7 +58,7 @@ pub enum GearError {
         /// Its value.
         value: f64,
         /// What was expected.
-        expected: &'static str,
+        expected: String,
     },
     /// inv α⁻¹ of a value outside its domain.
     #[error("gears: inv α = {value} has no pressure angle in [0°, 90°)")]
@@ -100,6 +103,16 @@ pub enum GearError {
         sa: f64,
         /// The module, m.
         module: f64,
+    },
+    /// A tip circle inside the base circle: the tooth has no involute flank.
+    #[error("gears: the tip circle of wheel {wheel} (r_a = {ra_mm:.4} mm) falls below its base circle (r_b = {rb_mm:.4} mm): the tooth has no involute flank")]
+    TipInsideBase {
+        /// The wheel (1, 2).
+        wheel: usize,
+        /// Its tip radius, mm.
+        ra_mm: f64,
+        /// Its base radius, mm.
+        rb_mm: f64,
     },
     /// A negative radial clearance.
     #[error(

@@ -208,15 +208,25 @@ impl Pair {
         })
     }
 
-    /// The geometry of `spec`, refused when the pair cannot work: a tip that passes the
+    /// The geometry of `spec`, refused when the pair cannot work: a tip circle inside the
+    /// base circle (a Δy too large: no involute flank), a tip that passes the
     /// interference point of the other wheel (the practical line of action leaves N₁N₂), a
     /// pointed tooth (s_a ≤ 0), a contact ratio below 1, or a negative radial clearance.
     ///
     /// # Errors
-    /// Those of [`Pair::new`], [`GearError::Interference`], [`GearError::Pointed`],
-    /// [`GearError::ContactRatio`], [`GearError::Clearance`].
+    /// Those of [`Pair::new`], [`GearError::TipInsideBase`], [`GearError::Interference`],
+    /// [`GearError::Pointed`], [`GearError::ContactRatio`], [`GearError::Clearance`].
     pub fn working(spec: PairSpec) -> Result<Self, GearError> {
         let p = Self::new(spec)?;
+        for i in 0..2 {
+            if p.ra[i] <= p.rb[i] {
+                return Err(GearError::TipInsideBase {
+                    wheel: i + 1,
+                    ra_mm: p.ra[i] * 1e3,
+                    rb_mm: p.rb[i] * 1e3,
+                });
+            }
+        }
         for i in 0..2 {
             if p.sa[i] <= 0.0 {
                 return Err(GearError::Pointed {

@@ -46,11 +46,11 @@ impl BasicRack {
     /// # Errors
     /// [`GearError::Rack`] naming the coefficient.
     pub fn validate(&self) -> Result<(), GearError> {
-        let bad = |what, value, expected| {
+        let bad = |what, value, expected: &str| {
             Err(GearError::Rack {
                 what,
                 value,
-                expected,
+                expected: expected.to_string(),
             })
         };
         if !(self.alpha > 0.0 && self.alpha < PI / 4.0) {
@@ -65,22 +65,43 @@ impl BasicRack {
         if !(self.rho.is_finite() && self.rho >= 0.0) {
             return bad("rho_f", self.rho, "ρ_f* ≥ 0");
         }
-        let g = self.per_module();
-        if g.uc < 0.0 {
+        let depth = self.ha + self.c;
+        let tip = PI / 4.0 - depth * self.alpha.tan();
+        if tip < 0.0 {
+            // The tool tooth's flanks meet above its tip line even without a rounding.
             return bad(
-                "rho_f",
-                self.rho,
-                "a rounding that fits the tool tooth's tip (the two roundings overlap)",
+                "alpha",
+                self.alpha.to_degrees(),
+                &format!(
+                    "a tool tooth with a tip: tg α·(h_a* + c*) ≤ π/4, i.e. α ≤ {:.4}° with h_a* + c* = {}",
+                    (PI / 4.0 / depth).atan().to_degrees(),
+                    depth
+                ),
             );
         }
-        if g.vj > 0.0 || g.vj < -(self.ha + self.c) {
+        let g = self.per_module();
+        if g.uc < 0.0 || g.vj > 0.0 || g.vj < -depth {
             return bad(
                 "rho_f",
                 self.rho,
-                "a rounding within the tool tooth's depth",
+                &format!(
+                    "a rounding that fits the tool tooth's tip: ρ_f* ≤ {:.4} with α = {}°, h_a* + c* = {}",
+                    self.rho_max(),
+                    crate::scale::format_sig(self.alpha.to_degrees(), 6, crate::scale::Lang::En),
+                    depth
+                ),
             );
         }
         Ok(())
+    }
+
+    /// The largest ρ_f* the tool tooth holds: the two roundings just meet on its centre
+    /// line (u_c = 0) or reach its pitch line (v_j = 0), whichever comes first.
+    pub fn rho_max(&self) -> f64 {
+        let (sa, ca, ta) = (self.alpha.sin(), self.alpha.cos(), self.alpha.tan());
+        let depth = self.ha + self.c;
+        let meet = (PI / 4.0 - depth * ta) / (1.0 / ca - ta);
+        meet.min(depth / (1.0 - sa))
     }
 
     /// The tool tooth's shape per unit module (see [`ToolShape`]).
@@ -338,19 +359,30 @@ impl Cutting {
             let p = self.trochoid_at(q);
             origin_angle(DVec2::ZERO, rb, p, true).map(|a| wrap_pi(a - th0))
         };
-        // The fillet leaves the base circle at q_rb (bisection on its radius).
-        let (mut lo, mut hi) = (st.q_j, st.q_bottom);
-        if self.trochoid_at(hi).length() < rb {
+        // The junction lies on the tooth, between the base and the tip circles: the fillet's
+        // states there, from where it leaves the tip circle (q_ra) to where it leaves the
+        // base circle (q_rb). Its radius grows monotonically from the root (q_bottom) out,
+        // so each end is a bisection on it. (With a small profile angle the flank's end q_j
+        // lies many pitch radii out, where the far branches cross the involute again.)
+        let leaves = |radius: f64| {
+            let (mut out, mut inside) = (st.q_j, st.q_bottom);
+            if self.trochoid_at(out).length() < radius {
+                return out;
+            }
+            if self.trochoid_at(inside).length() >= radius {
+                return inside;
+            }
             for _ in 0..200 {
-                let mid = 0.5 * (lo + hi);
-                if self.trochoid_at(mid).length() >= rb {
-                    lo = mid;
+                let mid = 0.5 * (out + inside);
+                if self.trochoid_at(mid).length() >= radius {
+                    out = mid;
                 } else {
-                    hi = mid;
+                    inside = mid;
                 }
             }
-        }
-        let (a, b) = (st.q_j, lo);
+            out
+        };
+        let (a, b) = (leaves(self.ra), leaves(rb));
         let n = 4000;
         let mut prev: Option<(f64, f64)> = None;
         for i in 1..=n {

@@ -69,18 +69,48 @@ pub enum TrainError {
         /// Shafts.
         unknowns: usize,
     },
-    /// The relations are dependent.
-    #[error("train: the meshes do not fix every shaft's speed (a link turns freely)")]
-    Singular,
+    /// Every motion the meshes and the fixed shaft allow holds the input at rest.
+    #[error("train: the meshes hold the input shaft {input} at rest: it cannot turn, the ratio is 0{}", still(.moving))]
+    InputLocked {
+        /// The input shaft.
+        input: String,
+        /// The shafts that can still turn, with the input at rest.
+        moving: Vec<String>,
+    },
+    /// The input turning does not fix every shaft's speed.
+    #[error("train: with the input turning, shaft(s) {} still turn freely: the meshes do not fix their speeds", .0.join(", "))]
+    Free(Vec<String>),
     /// The output does not turn.
     #[error("train: the output shaft does not turn")]
     OutputAtRest,
     /// A satellite mesh without a carrier.
     #[error("train: wheel {0} is on a satellite but the train has no carrier")]
     NoCarrier(String),
+    /// The drafting resolution reads an intercept of the plan of angular velocities as 0.
+    #[error("train: --drafting {resolution_mm} mm reads the intercept of shaft {shaft} on the plan of angular velocities ({drawn_mm:.3} mm drawn) as 0, so the ratio cannot be read off the triangles; a resolution below {limit:.3} mm reads it", limit = 2.0 * .drawn_mm)]
+    Unreadable {
+        /// The shaft (the input or the output).
+        shaft: String,
+        /// Its intercept as drawn, mm.
+        drawn_mm: f64,
+        /// The resolution, mm.
+        resolution_mm: f64,
+    },
     /// The scheme cannot be laid out.
     #[error("train: the scheme cannot be laid out: {0}")]
     Layout(String),
+}
+
+/// "; only … can turn, with the input still" for the shafts that can.
+fn still(moving: &[String]) -> String {
+    if moving.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "; only {} can turn, with the input still",
+            moving.join(", ")
+        )
+    }
 }
 
 impl Train {
@@ -96,7 +126,8 @@ impl Train {
     /// The analytic twin: every shaft's ω for ω_in = 1 (Willis' relations solved together).
     ///
     /// # Errors
-    /// [`TrainError::Mobility`], [`TrainError::Singular`], [`TrainError::NoCarrier`].
+    /// [`TrainError::Mobility`], [`TrainError::InputLocked`], [`TrainError::Free`],
+    /// [`TrainError::NoCarrier`].
     pub fn willis(&self) -> Result<Vec<f64>, TrainError> {
         let n = self.shafts.len();
         let mut rows: Vec<(Vec<f64>, f64)> = Vec::new();
@@ -129,7 +160,8 @@ impl Train {
                 unknowns: n,
             });
         }
-        solve(rows).ok_or(TrainError::Singular)
+        let relations: Vec<Vec<f64>> = rows[1..].iter().map(|r| r.0.clone()).collect();
+        solve(rows).ok_or_else(|| self.why_singular(&relations))
     }
 
     /// u = ω_in/ω_out by Willis.
@@ -655,6 +687,8 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
         }
     }
     let mut omega = vec![0.0; n];
+    // The input's and the output's intercepts (shaft, drawn, read), mm.
+    let mut ends: Vec<(usize, f64, f64)> = Vec::new();
     let y_ref = yy(hi) + 10.0 + PLAN_H;
     let pole = DVec2::new(0.0, y_ref - PLAN_H);
     rec.draw(
@@ -742,6 +776,9 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
         );
         let _ = ray;
         let read = rec.measure(DVec2::new(0.0, y_ref), hit);
+        if k == train.input || k == train.output {
+            ends.push((k, read.drawn_mm, read.read_mm));
+        }
         // ω = (intercept μ_v)/(H μ_l), signed by the side.
         omega[k] = hit.x.signum() * read.read_mm * mv / (PLAN_H * ml);
     }
@@ -750,6 +787,23 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
             "the velocities of shaft {} cannot be drawn",
             train.shafts[k]
         )));
+    }
+    // A resolution that reads the input's or the output's intercept as 0 leaves no ratio.
+    if ends
+        .iter()
+        .any(|(_, drawn, read)| *read == 0.0 && *drawn > 0.0)
+    {
+        if let Some((k, drawn, _)) = ends
+            .iter()
+            .filter(|(_, drawn, _)| *drawn > 0.0)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+        {
+            return Err(TrainError::Unreadable {
+                shaft: train.shafts[*k].clone(),
+                drawn_mm: *drawn,
+                resolution_mm: ctx.drafting.resolution_mm(),
+            });
+        }
     }
     let (wi, wo) = (omega[train.input], omega[train.output]);
     if wo.abs() < 1e-300 {

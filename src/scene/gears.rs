@@ -5,7 +5,7 @@
 //! pointed before its tip are refused with the key that makes them so.
 
 use super::check::{item, join, number, Checker};
-use crate::gears::train::Wheel;
+use crate::gears::train::{TrainError, Wheel};
 use crate::gears::{
     BasicRack, Cutting, GearError, GearsSpec, Mesh, Pair, PairSpec, PlanetarySpec, RackSpec, Train,
     DEFAULT_POSITIONS,
@@ -196,6 +196,7 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
             check.push(key(k), None, "missing: expected a shaft name");
         }
     }
+    distinct_shafts(check, raw, [input, output, fixed, carrier], &satellites);
     let n_input = raw.n_input.map(|n| {
         let n = check.bounded(&key("n_input"), n, 1e6, "a speed in rpm within ±1e6, not 0");
         if n == 0.0 {
@@ -241,9 +242,15 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
         module,
     };
     if let Err(e) = train.ratio().and_then(|_| train.layout()) {
+        let (k, value) = match &e {
+            TrainError::InputLocked { input, .. } => ("input", Some(format!("{input:?}"))),
+            TrainError::OutputAtRest => ("output", raw.output.as_ref().map(|o| format!("{o:?}"))),
+            TrainError::NoCarrier(_) => ("carrier", None),
+            _ => ("mesh", None),
+        };
         check.push(
-            key("mesh"),
-            None,
+            key(k),
+            value,
             format!("a train of mobility 1 that can be drawn: {e}"),
         );
         return None;
@@ -254,6 +261,67 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
         n_output,
         satellites: count,
     })
+}
+
+/// The roles of a train's shafts must be distinct: the output is not the input, neither is
+/// fixed, a carrier has satellites (and satellites a carrier), a satellite is neither the
+/// carrier nor the fixed shaft.
+fn distinct_shafts(
+    check: &mut Checker,
+    raw: &RawPlanetary,
+    [input, output, fixed, carrier]: [Option<usize>; 4],
+    satellites: &[usize],
+) {
+    const P: &str = "planetary";
+    let key = |k: &str| join(P, k);
+    let shown = |v: Option<&String>| v.map(|s| format!("{s:?}"));
+    if input.is_some() && input == output {
+        check.push(
+            key("output"),
+            shown(raw.output.as_ref()),
+            "expected a shaft other than the input (a train from a shaft to itself has no ratio)",
+        );
+    }
+    if fixed.is_some() && fixed == input {
+        check.push(
+            key("fixed"),
+            shown(raw.fixed.as_ref()),
+            "expected a shaft other than the input (a fixed input cannot drive the train)",
+        );
+    }
+    if fixed.is_some() && fixed == output {
+        check.push(
+            key("fixed"),
+            shown(raw.fixed.as_ref()),
+            "expected a shaft other than the output (a fixed output does not turn)",
+        );
+    }
+    match (carrier, satellites.is_empty(), raw.satellites.is_empty()) {
+        (Some(_), true, true) => check.push(
+            key("satellites"),
+            None,
+            format!(
+                "missing: expected the shafts of the satellites turning on the carrier {}",
+                raw.carrier.as_deref().unwrap_or_default()
+            ),
+        ),
+        (None, false, _) => check.push(
+            key("carrier"),
+            None,
+            "missing: expected the carrier's shaft (the satellites turn on it)",
+        ),
+        _ => {}
+    }
+    for (i, s) in raw.satellites.iter().enumerate() {
+        let same = |role: Option<&String>| role == Some(s);
+        if same(raw.carrier.as_ref()) || same(raw.fixed.as_ref()) {
+            check.push(
+                item(&key("satellites"), i),
+                Some(format!("{s:?}")),
+                "expected a satellite's shaft, not the carrier nor the fixed shaft",
+            );
+        }
+    }
 }
 
 /// A tooth number (5 … 1000).
@@ -319,11 +387,18 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
         expected,
     }) = rack.validate()
     {
-        check.push(
-            key(what),
-            Some(number(value)),
-            format!("expected {expected}"),
-        );
+        let default = match what {
+            "alpha" => raw.alpha.is_none(),
+            "ha" => raw.ha.is_none(),
+            "c" => raw.c.is_none(),
+            _ => raw.rho_f.is_none(),
+        };
+        let shown = if default {
+            format!("{} (the default)", number(value))
+        } else {
+            number(value)
+        };
+        check.push(key(what), Some(shown), format!("expected {expected}"));
     }
     let scale_l = check.scale(
         &key("scale_l"),
@@ -338,7 +413,14 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
             "expected a [gears.pair] or at least one [[gears.rack]]",
         );
     }
-    let pair = raw.pair.as_ref().and_then(|p| pair(check, p, module, rack));
+    // A rack that cannot be drawn is reported once, under its own key; the pair and the
+    // wheels it would cut are not judged with it.
+    let rack_ok = rack.validate().is_ok();
+    let pair = raw
+        .pair
+        .as_ref()
+        .filter(|_| rack_ok)
+        .and_then(|p| pair(check, p, module, rack));
     let mut names: Vec<String> = Vec::new();
     let mut racks = Vec::new();
     for (i, r) in raw.rack.iter().enumerate() {
@@ -391,7 +473,7 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
             Quantity::Length,
             "a scale μ_l > 0 m/mm",
         );
-        let Some(m) = m.filter(|m| *m > 0.0) else {
+        let Some(m) = m.filter(|m| *m > 0.0 && rack_ok) else {
             continue;
         };
         match Cutting::alone(m, z, x, rack) {
@@ -501,21 +583,44 @@ fn pair(
     match Pair::working(spec) {
         Ok(_) => Some(spec),
         Err(e) => {
-            let k = match e {
-                GearError::Pointed { wheel, .. } => item(&key("x"), wheel - 1),
-                GearError::Interference { .. }
-                | GearError::ContactRatio { .. }
-                | GearError::Clearance { .. } => key("x"),
-                GearError::InvoluteDomain { .. } => key("x"),
-                _ => key("z"),
-            };
-            let value = if raw.centre_distance.is_some() {
-                format!("{:?} (x2 = {:.4} from the centre distance)", xs, spec.x[1])
-            } else {
-                format!("{xs:?}")
-            };
+            let (k, value) = blame(&e, raw, &spec, &xs);
             check.push(k, Some(value), format!("a pair that can work: {e}"));
             None
         }
+    }
+}
+
+/// The key (and its value as given) that makes the pair `spec` refuse to work with `e`: the
+/// table's Δy when the pair works with the exact one (or the tip falls inside the base
+/// circle with it), a tooth number for a datum of a wheel, the shifts otherwise (with
+/// `centre_distance`, the x₂ it gives).
+fn blame(e: &GearError, raw: &RawPair, spec: &PairSpec, xs: &[f64]) -> (String, String) {
+    let key = |k: &str| join(&join(GEARS, "pair"), k);
+    if let Some(dy) = raw.dy {
+        let exact = PairSpec {
+            dy_table: None,
+            ..*spec
+        };
+        if matches!(e, GearError::TipInsideBase { .. }) || Pair::working(exact).is_ok() {
+            return (key("dy"), number(dy));
+        }
+    }
+    let shifts = || {
+        if raw.centre_distance.is_some() {
+            format!("{xs:?} (x2 = {:.4} from the centre distance)", spec.x[1])
+        } else {
+            format!("{xs:?}")
+        }
+    };
+    match e {
+        GearError::Pointed { wheel, .. } => (item(&key("x"), wheel - 1), shifts()),
+        GearError::Spec { what, value, .. } if what.starts_with('z') => {
+            let wheel = usize::from(*what == "z2");
+            (item(&key("z"), wheel), number(*value))
+        }
+        GearError::Spec { what, value, .. } | GearError::Rack { what, value, .. } => {
+            (join(GEARS, what), number(*value))
+        }
+        _ => (key("x"), shifts()),
     }
 }
