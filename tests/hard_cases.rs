@@ -173,7 +173,13 @@ const W1: f64 = -5.0 * std::f64::consts::PI;
 /// The kulisa at φ₁ (degrees): the analytic ω₃, ε₃, a_D and D, and the same read off the
 /// constructed velocity and acceleration plans (μ_l = 0.0025 m/mm, drafting 0).
 fn kulisa_at(deg: f64) -> ([f64; 3], [f64; 3], DVec2, DVec2) {
-    let m = kulisa();
+    slot_at(0.43, deg)
+}
+
+/// [`kulisa_at`] with the crank `crank` m long (A–C is 0.43 m).
+fn slot_at(crank: f64, deg: f64) -> ([f64; 3], [f64; 3], DVec2, DVec2) {
+    let mut m = kulisa();
+    m.crank.length = crank;
     let prog = Program::compile(&m).unwrap();
     let phi = deg.to_radians();
     let d = prog.index("D").unwrap();
@@ -243,6 +249,47 @@ fn kulisa_beside_the_pivot_gives_no_huge_number() {
                 assert!(e.abs() < 0.05, "φ₁ = {deg}: ε₃ = {e}");
                 assert!((a - 43.796_369_53).abs() < 1e-3, "φ₁ = {deg}: a_D = {a}");
             }
+        }
+    }
+}
+
+/// Issue 17 §1b: a crank pin that passes a distance m beside the rocker's pivot is not the
+/// coincidence. At the nearest position (φ₁ = 270°, the pin straight above C at m) the exact
+/// closed form of the slotted link's rate is ω₃ = ω₁·[w × w′]/|w|² = −ω₁·r/m (w = B − C =
+/// (r cos φ₁, d + r sin φ₁), d = 0.43 m, r = d − m, at sin φ₁ = −1), where m = d − r of the
+/// f64 lengths is exact (Sterbenz: r and d within a factor 2), so nothing cancels; a_D = |CD|·√(ε₃² + ω₃⁴), and ε₃ = ω₁²·r·d·
+/// cos φ₁·(|w|² − 2[w × w′])/|w|⁴ is ~1e-13·ω₃² at the f64 angle (cos φ₁ ≈ 1e-16), so a_D =
+/// |CD|·ω₃² to 1e-20. Both the analytic twin and the plans must give it (the old code took the
+/// pin-through-the-pivot limit ω₃ = ω₁/2 = −7.854 rad/s for m = 1e-5 m, 5 orders too small).
+/// The relative rounding of the f64 route is ~δ/m (δ ≈ 1e-16 m), so the tolerance is
+/// 1e-15/m + 1e-12 (ten times that, an acceleration doubles it).
+#[test]
+fn kulisa_pin_beside_the_pivot_gives_the_true_huge_rate() {
+    for m in [1e-3, 1e-5, 1e-8, 1e-11] {
+        let r = 0.43 - m;
+        let m = 0.43 - r;
+        let w3 = -W1 * r / m;
+        let a_d = 0.71 * w3 * w3;
+        let (analytic, plans, d_pose, d_built) = slot_at(r, 270.0);
+        let tol = 1e-15 / m + 1e-12;
+        for (what, [w, _, a]) in [("analytic", analytic), ("plans", plans)] {
+            assert!(
+                ((w - w3) / w3).abs() < tol,
+                "m = {m}: {what}: ω₃ = {w} against {w3}"
+            );
+            assert!(
+                ((a - a_d) / a_d).abs() < tol,
+                "m = {m}: {what}: a_D = {a} against {a_d}"
+            );
+        }
+        // The slot is the line C → B, B = (r cos φ₁, m) (φ₁ the f64 angle, cos φ₁ ≈ −1.8e-16):
+        // D nearly straight above C.
+        let d_exact = DVec2::new(r * 270f64.to_radians().cos(), m).normalize() * 0.71;
+        for d in [d_pose, d_built] {
+            assert!(
+                d.distance(d_exact) < 0.71 * tol,
+                "m = {m}: D = {d} against {d_exact}"
+            );
         }
     }
 }
@@ -400,26 +447,22 @@ fn slotted_link_with_offset_has_one_meaning_of_the_sliding_velocity() {
 /// the mechanism's motion (the old report printed ε₃ = 1.3e18 and a_D = 9.5e17 there).
 #[test]
 fn report_of_a_pin_through_the_pivot_holds_no_huge_number() {
-    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(root.join("constructions/shaper.toml")).expect("shaper");
-    // The kinematics only: the loads of the force analysis come last in the file.
-    let text = text.split("\n[forces]").next().unwrap_or_default();
-    let text = text
-        .replace(
-            "\"kinematics\", \"forces\", \"dynamics\"]",
-            "\"kinematics\"]",
-        )
-        .replace("length = 140.0", "length = 430.0")
-        .replace("start = \"working-stroke\"", "start = -90.0")
-        .replace(
-            "acceleration_positions = [\"3\", \"10\"]",
-            "acceleration_positions = [\"1\", \"4\"]",
-        );
-    let scene = tmm::scene::parse(&text, &root.join("pin.toml")).expect("scene");
-    let report = tmm::study::Session::new(&scene, Drafting::EXACT)
-        .report()
-        .expect("report");
+    let report = shaper_report_with_crank("430.0");
     assert!(report.rows.len() > 100);
+    // Through the coincidence the slotted link's direction (C → B) flips by 180° between
+    // neighbouring crank angles and S_5 jumps: the chord diagrams are refused, naming the
+    // position (they showed a_S5 = 504 against 43.8 m/s²).
+    assert!(
+        !report.rows.iter().any(|r| r.method.is_diagram()),
+        "a diagram row across the flip"
+    );
+    assert!(
+        report.notes.iter().any(|n| n.contains("link 3 turns 179.")
+            && n.contains("nearest position 1 ")
+            && n.contains("diagrams over a crank turn are refused")),
+        "{:#?}",
+        report.notes
+    );
     for r in &report.rows {
         assert!(
             r.graphical.is_finite() && r.analytic.is_finite() && r.analytic.abs() < 1e3,
@@ -443,4 +486,91 @@ fn report_of_a_pin_through_the_pivot_holds_no_huge_number() {
     let a = at1("a_D", tmm::Method::Plan);
     assert!((a.analytic - 43.7963695).abs() < 1e-6 && (a.graphical - a.analytic).abs() < 1e-9);
     assert!(at1("eps_3", tmm::Method::Plan).analytic.abs() < 1e-6);
+}
+
+/// The report of the shaper's kinematics with the crank `length` mm long (A–C is 430 mm),
+/// started at φ₁ = −90° where the pin is nearest the rocker's pivot C; acceleration plans at
+/// positions 1 and 4.
+fn shaper_report_with_crank(length: &str) -> tmm::Report {
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("constructions/shaper.toml")).expect("shaper");
+    // The kinematics only: the loads of the force analysis come last in the file.
+    let text = text.split("\n[forces]").next().unwrap_or_default();
+    let text = text
+        .replace(
+            "\"kinematics\", \"forces\", \"dynamics\"]",
+            "\"kinematics\"]",
+        )
+        .replace("length = 140.0", &format!("length = {length}"))
+        .replace("start = \"working-stroke\"", "start = -90.0")
+        .replace(
+            "acceleration_positions = [\"3\", \"10\"]",
+            "acceleration_positions = [\"1\", \"4\"]",
+        );
+    let scene = tmm::scene::parse(&text, &root.join("pin.toml")).expect("scene");
+    tmm::study::Session::new(&scene, Drafting::EXACT)
+        .report()
+        .expect("report")
+}
+
+/// Issue 17 §1b through the whole report: the shaper's crank 429.99 mm, so the pin passes
+/// m = 0.01 mm from the rocker's pivot at position 1 (φ₁ = 270°). The exact closed form there
+/// (see [`kulisa_pin_beside_the_pivot_gives_the_true_huge_rate`]) is ω₃ = |ω₁|·r/m =
+/// 5π·0.42999/1e-5 = 6.7543e5 rad/s (the 80-digit value of the issue), a_D = 0.71·ω₃², taken
+/// with the scene's decimal m (the f64 inputs differ from it by ~5e-12 relative). The old
+/// report printed ω₃ = −7.854 rad/s, L₃ = 8e-17 m, and its plan disagreed with its twin by
+/// 100 % (v_B3B1), all without a note.
+#[test]
+fn report_of_a_pin_beside_the_pivot_gives_the_true_values_with_a_note() {
+    let report = shaper_report_with_crank("429.99");
+    let (r, m) = (0.42999, 1e-5);
+    let w3 = 5.0 * std::f64::consts::PI * r / m;
+    let at1 = |q: &str| {
+        report
+            .rows
+            .iter()
+            .find(|r| r.quantity() == q && r.position().as_deref() == Some("1"))
+            .unwrap_or_else(|| panic!("no {q}"))
+    };
+    let w = at1("omega_3");
+    for v in [w.graphical, w.analytic] {
+        assert!(((v - w3) / w3).abs() < 1e-9, "ω₃ = {v} against {w3}");
+    }
+    let a = at1("a_D");
+    let a_d = 0.71 * w3 * w3;
+    for v in [a.graphical, a.analytic] {
+        assert!(((v - a_d) / a_d).abs() < 1e-9, "a_D = {v} against {a_d}");
+    }
+    // The block slides across the slot at the nearest point: v_B3B1 = |v_B|·cos φ₁ ≈ 0.
+    let v = at1("v_B3_B1");
+    assert!(v.graphical.abs() < 1e-6 && v.analytic.abs() < 1e-6, "{v:?}");
+    // The analytic table's L₃ = |CB| = m.
+    let table = &report.tables[0];
+    let col = table
+        .columns
+        .iter()
+        .position(|c| c.name == "L_3")
+        .expect("L_3");
+    let row1 = table.rows.iter().find(|r| r.0 == "1").expect("row 1");
+    let l3 = row1.1[col].expect("L_3 at 1");
+    assert!((l3 - m).abs() < 1e-15, "L₃ = {l3}");
+    assert!(
+        report
+            .notes
+            .iter()
+            .any(|n| n.starts_with("position 1: the pin B passes 1.000e-5 m")
+                && n.contains("ill-conditioned")),
+        "{:#?}",
+        report.notes
+    );
+    // The slot whips round within 0.005° of the crank: the chord diagrams are refused there.
+    assert!(!report.rows.iter().any(|r| r.method.is_diagram()));
+    assert!(
+        report
+            .notes
+            .iter()
+            .any(|n| n.contains("link 3 turns") && n.contains("nearest position 1 ")),
+        "{:#?}",
+        report.notes
+    );
 }

@@ -23,6 +23,7 @@ pub use rocker::RockerDiagram;
 use crate::calculus::{self, Diagram, Scales};
 use crate::check::Row;
 use crate::construct::ConstructionError;
+use crate::geom::DVec2;
 use crate::linkage::{LinkageError, PlanKind, PositionPlan};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
@@ -197,23 +198,135 @@ pub fn numbered(plan: &PositionPlan) -> Vec<(usize, &crate::linkage::PlanPositio
         .collect()
 }
 
+/// A note for every position where a slotted link's pin passes close to its pivot
+/// ([`crate::linkage::NearPivot`]): the link's rate there is true but huge and ill-conditioned.
+pub fn near_pivot_notes(plan: &PositionPlan, w1: f64) -> Vec<String> {
+    let names = &plan.program.names;
+    let mut out = Vec::new();
+    for p in &plan.positions {
+        for n in &p.pose.near_pivot {
+            let (pin, pivot) = (&names[n.pin], &names[n.pivot]);
+            out.push(format!(
+                "position {}: the pin {pin} passes {:.3e} m from the pivot {pivot} of the slotted link {} (group {}, |d{pivot}{pin}/dφ₁| = {:.4} m): the link turns at ω_{} = {:.4e} rad/s, {:.2e} times the crank's rate; the values at this position are true but ill-conditioned (a change of {:.1e} m in a length of the mechanism changes them by about 100 %)",
+                p.label,
+                n.distance,
+                n.link,
+                n.group + 1,
+                n.speed,
+                n.link,
+                p.pose.dangle[n.link] * w1,
+                n.speed / n.distance,
+                n.distance
+            ));
+        }
+    }
+    out
+}
+
 /// Samples of the crank turn checked before a quantity is charted over it.
 const TURN_SAMPLES: usize = 720;
 
-/// A diagram over the crank turn is meaningful only if the mechanism passes every crank angle:
-/// the first angle (of [`TURN_SAMPLES`]) where it cannot — guides turned parallel, a slider
-/// run off to infinity — refuses the chart with its diagnosis.
+/// cos 45°: a link that turns more than this between neighbouring samples of the turn (over
+/// 90 times the crank's rate) leaps where a chart through the positions sees it.
+const LEAP_COS: f64 = std::f64::consts::FRAC_1_SQRT_2;
+
+/// A diagram over the crank turn is meaningful only if the mechanism passes every crank angle
+/// and its links turn continuously: the first angle (of [`TURN_SAMPLES`]) where it cannot —
+/// guides turned parallel, a slider run off to infinity — or where a link turns more than 45°
+/// between neighbouring samples (a slotted link whose pin passes through its pivot flips by
+/// 180°; one whose pin passes beside it whips round) refuses the chart with its diagnosis and
+/// the position there.
 fn full_turn(plan: &PositionPlan) -> Result<(), KinError> {
-    for i in 0..TURN_SAMPLES {
+    let mut first: Option<crate::linkage::Pose> = None;
+    let mut prev: Option<crate::linkage::Pose> = None;
+    for i in 0..=TURN_SAMPLES {
         let phi = TAU * i as f64 / TURN_SAMPLES as f64;
-        if let Err(u) = plan.program.solve(phi, None) {
-            return Err(KinError::NoFullTurn {
-                phi_deg: phi.to_degrees(),
-                detail: format!("group {}: {}", u.group + 1, u.detail),
-            });
+        let pose = if i == TURN_SAMPLES {
+            match first.take() {
+                Some(p) => p,
+                None => break,
+            }
+        } else {
+            plan.program
+                .solve(phi, None)
+                .map_err(|u| KinError::NoFullTurn {
+                    phi_deg: phi.to_degrees(),
+                    detail: format!("group {}: {}", u.group + 1, u.detail),
+                })?
+        };
+        if let Some(q) = &prev {
+            let leaping: Vec<usize> = (1..pose.dir.len())
+                .filter(|&l| q.dir[l].dot(pose.dir[l]) < LEAP_COS)
+                .collect();
+            if let Some(&l) = leaping.last() {
+                let turns: Vec<String> = leaping
+                    .iter()
+                    .map(|&l| {
+                        let turn = q.dir[l].angle_to(pose.dir[l]).abs().to_degrees();
+                        format!("link {l} turns {turn:.1}°")
+                    })
+                    .collect();
+                let step = 360.0 / TURN_SAMPLES as f64;
+                let at = leap(
+                    plan,
+                    l,
+                    (phi - TAU / TURN_SAMPLES as f64, q.dir[l]),
+                    (phi, pose.dir[l]),
+                )
+                .rem_euclid(TAU);
+                return Err(KinError::NoFullTurn {
+                    phi_deg: at.to_degrees(),
+                    detail: format!(
+                        "{} within {step}° of the crank ({}): the charted motion jumps there",
+                        turns.join(", "),
+                        nearest_position(plan, at)
+                    ),
+                });
+            }
         }
+        if i == 0 {
+            first = Some(pose.clone());
+        }
+        prev = Some(pose);
     }
     Ok(())
+}
+
+/// Where between crank angles `a` and `b` (with link `l`'s directions there) the link leaps:
+/// the half-interval over which it turns more, halved down to the rounding.
+fn leap(plan: &PositionPlan, l: usize, a: (f64, DVec2), b: (f64, DVec2)) -> f64 {
+    let (mut a, mut b) = (a, b);
+    for _ in 0..60 {
+        let mid = 0.5 * (a.0 + b.0);
+        if mid <= a.0 || mid >= b.0 {
+            break;
+        }
+        let Ok(p) = plan.program.solve(mid, None) else {
+            break;
+        };
+        let m = (mid, p.dir[l]);
+        if a.1.dot(m.1) < m.1.dot(b.1) {
+            b = m;
+        } else {
+            a = m;
+        }
+    }
+    0.5 * (a.0 + b.0)
+}
+
+/// The position of the plan nearest to crank angle `phi`, as "position 4 at φ₁ = 270°".
+fn nearest_position(plan: &PositionPlan, phi: f64) -> String {
+    let gap = |p: &&crate::linkage::PlanPosition| crate::geom::wrap_pi(p.pose.phi - phi).abs();
+    plan.positions
+        .iter()
+        .min_by(|a, b| gap(a).total_cmp(&gap(b)))
+        .map_or_else(String::new, |p| {
+            format!(
+                "nearest position {} at φ₁ = {:.2}°",
+                p.label,
+                p.pose.phi.to_degrees()
+            )
+        })
 }
 
 /// A periodic diagram over one crank turn through `values` at the numbered positions.

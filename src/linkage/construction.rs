@@ -197,6 +197,7 @@ impl Program {
                         PDyad::Rpr { a, c, offset } => {
                             let th = if offset == 0.0
                                 && p[a].distance(p[c]) <= rec.tolerances().coincident
+                                && self.path_through_pivot(a, c, &p)
                             {
                                 let prev = prev.map(|q| q.angle[j]);
                                 self.slot_tangent(rec, &s, (a, c), &p, prev).map_err(fail)?
@@ -317,6 +318,22 @@ impl Program {
     /// (for a crank pin: perpendicular to the crank, in the sense of increasing φ₁, or the
     /// one nearest to the previous position's slide `prev`). Refused for a pin whose path's
     /// tangent the drawing does not give (a point not on the crank, or a moving pivot).
+    /// Whether the path of the pin `a` passes through the pivot `c` (within the rounding of
+    /// the drawing's coordinates), so that the slot at their coincidence is the tangent to
+    /// that path: for a crank pin about a fixed pivot, the crank circle through `a` meets `c`.
+    /// A pin whose path misses the pivot, however closely, fixes the slot as the line through
+    /// the two points (a true, ill-conditioned direction). Other pins: assumed (the tangent is
+    /// then refused by [`Self::slot_tangent`]).
+    fn path_through_pivot(&self, a: usize, c: usize, p: &[DVec2]) -> bool {
+        if !self.on_frame_or_crank(a) || c >= self.fixed.len() {
+            return true;
+        }
+        let o = p[self.centre];
+        let (ra, rc) = (p[a].distance(o), p[c].distance(o));
+        let rounding = 8.0 * f64::EPSILON * (p[a].length() + p[c].length() + o.length() + ra);
+        (ra - rc).abs() <= rounding
+    }
+
     fn slot_tangent(
         &self,
         rec: &mut Recorder,

@@ -16,7 +16,7 @@ mod structure;
 #[cfg(test)]
 mod tests;
 
-pub use analytic::{Pose, Unassembled};
+pub use analytic::{NearPivot, Pose, Unassembled, NEAR_PIVOT_RATIO};
 pub use construction::{Built, Failed};
 pub use extremes::{Extremes, OutputCoord};
 pub use model::{

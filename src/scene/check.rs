@@ -11,6 +11,10 @@ const M_PER_MM: f64 = 1e-3;
 /// can be formed and the constructions' tolerances lose their meaning.
 pub(crate) const MAX_MM: f64 = 1e6;
 
+/// The largest link number a scene may give: a mechanism of the course has about ten links,
+/// and the per-link arrays of the analysis are sized by the largest number.
+pub(crate) const MAX_LINK: u32 = 99;
+
 /// `base.key`.
 pub(crate) fn join(base: &str, key: &str) -> String {
     format!("{base}.{key}")
@@ -171,15 +175,17 @@ impl Checker {
         }
     }
 
-    /// A link number ≥ `min` (0 is the frame), or a problem and `None`.
+    /// A link number from `min` (0 is the frame) to [`MAX_LINK`], or a problem and `None`.
+    /// Link numbers above [`MAX_LINK`] are refused: the per-link arrays are sized by the
+    /// largest number (a link numbered 2e7 took 21 GB).
     pub fn link(&mut self, key: &str, v: i64, min: u32) -> Option<u32> {
         match u32::try_from(v) {
-            Ok(l) if l >= min => Some(l),
+            Ok(l) if l >= min && l <= MAX_LINK => Some(l),
             _ => {
                 let want = if min == 0 {
-                    "a link number ≥ 0 (0: the frame)"
+                    format!("a link number 0 … {MAX_LINK} (0: the frame)")
                 } else {
-                    "a link number ≥ 1"
+                    format!("a link number 1 … {MAX_LINK}")
                 };
                 self.push(key, Some(v.to_string()), format!("expected {want}"));
                 None

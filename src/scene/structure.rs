@@ -215,7 +215,9 @@ impl Builder<'_> {
             let base = item("mechanism.point", i);
             let name = self.check.name(&join(&base, "name"), p.name.as_ref());
             let link_key = join(&base, "link");
-            let link = self.check.required(&link_key, p.link, "a link number ≥ 1");
+            let link = self
+                .check
+                .required(&link_key, p.link, "a link number 1 … 99");
             let link = link
                 .and_then(|l| self.check.link(&link_key, l, 1))
                 .unwrap_or(0);

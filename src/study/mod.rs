@@ -714,6 +714,8 @@ impl<'s> Session<'s> {
     fn kinematics_report(&self) -> Result<Report, StudyError> {
         let k = self.kinematics(&self.kin_scales()?)?;
         let mut notes: Vec<String> = k.refusals.iter().map(ToString::to_string).collect();
+        // The diagrams and the rocker's diagram refused for one reason: one note.
+        notes.dedup();
         notes.extend(
             k.refused()
                 .into_iter()
@@ -728,6 +730,7 @@ impl<'s> Session<'s> {
                 )
             })
         }));
+        notes.extend(crate::kinematics::near_pivot_notes(&k.plan, k.w1));
         let mut rows = k.rows();
         if self.scene.forces.is_some() {
             for i in self.force_positions()? {

@@ -38,6 +38,31 @@ pub struct Pose {
     /// A dyad at its toggle (folded) position: the position exists but its analogues are not
     /// determined; `dp`, `ddp` and the angle rates downstream of it are not meaningful.
     pub toggle: Option<Unassembled>,
+    /// Slotted links whose pin passes close to their pivot here: true, ill-conditioned rates.
+    pub near_pivot: Vec<NearPivot>,
+}
+
+/// |dCB/dφ₁| / |CB| above which a slotted link's pin counts as passing close to its pivot:
+/// the link turns over a thousand times faster than the crank.
+pub const NEAR_PIVOT_RATIO: f64 = 1e3;
+
+/// A slotted link (RPR without offset) whose pin `a` passes close to its pivot `c`: the slot
+/// turns at about |w′|/|w| times the crank's rate (w = a − c), a true value that a change of
+/// |w| in a length of the mechanism changes by ~100 %.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NearPivot {
+    /// Group index (file order).
+    pub group: usize,
+    /// The slotted link's number.
+    pub link: usize,
+    /// The pin's point index.
+    pub pin: usize,
+    /// The pivot's point index.
+    pub pivot: usize,
+    /// |w|: the pin's distance from the pivot, m.
+    pub distance: f64,
+    /// |w′| = |d(a − c)/dφ₁|, m/rad.
+    pub speed: f64,
 }
 
 impl Pose {
@@ -175,6 +200,7 @@ impl Program {
         }
         pose.crossing_sin.clear();
         pose.toggle = None;
+        pose.near_pivot.clear();
         pose.phi = phi;
         let mut st = State {
             pose,
@@ -379,6 +405,17 @@ impl Program {
                         self.names[c],
                         offset.abs()
                     )));
+                }
+                let speed = w.d.length();
+                if offset == 0.0 && speed > NEAR_PIVOT_RATIO * d {
+                    st.pose.near_pivot.push(NearPivot {
+                        group,
+                        link: j,
+                        pin: a,
+                        pivot: c,
+                        distance: d,
+                        speed,
+                    });
                 }
                 let beta = heading(w);
                 // γ = asin(u), u = −offset/d.

@@ -13,6 +13,14 @@
 //! Near the coincidence the direct formula of the heading loses digits as δ/(|w′|h³) (δ the
 //! rounding of the positions, h = |w|/|w′| the crank travel to the coincidence) while the
 //! limit errs by O(h): the limit is taken where h⁴ ≤ 2δ/|w′|, the crossover of the two.
+//!
+//! The limit holds only where the pin really passes through the pivot, that is where its
+//! closest approach, w(−s) = w − w′s + w″s²/2 (s = w·w′/|w′|²), is zero within the rounding
+//! 4δ and the neglected term |w‴||s|³. A pin that passes the pivot at a distance m (a crank
+//! 0.01 mm shorter than the centre distance) makes the slot turn at ≈ |w′|/m times the crank's
+//! rate there: the direct formula gives that true, huge value to δ/m relative; the pose
+//! records it as [`NearPivot`](super::NearPivot) (ill-conditioned: a change of m in a length
+//! changes it by ~100 %).
 
 use super::super::program::Program;
 use super::jet::{cross, AngleJet, Jet};
@@ -69,8 +77,20 @@ impl Program {
                 ),
             };
         }
-        // Crank travel since the coincidence, rad, and the slot direction to O(s²).
+        // Crank travel since the coincidence, rad.
         let s = w.p.dot(w.d) / v2;
+        let third = self
+            .third_derivative(pose, a)
+            .zip(self.third_derivative(pose, c))
+            .map(|(ta, tc)| ta - tc);
+        // The closest approach to O(s³): beyond the rounding the pin passes the pivot at a
+        // distance and the direct formula holds (true, ill-conditioned values).
+        let miss = (w.p - w.d * s + w.dd * (0.5 * s * s)).length();
+        let reach = third.map_or(w.dd.length() + v, DVec2::length);
+        if miss > 4.0 * delta + reach * s.abs().powi(3) {
+            return Slot::Direct;
+        }
+        // The slot direction to O(s²).
         let lim = (w.d - w.dd * (0.5 * s)).normalize_or(w.d / v);
         let sign = if hp > 4.0 * delta {
             s.signum()
@@ -81,10 +101,7 @@ impl Program {
             }
         };
         let e = lim * sign;
-        let (Some(ta), Some(tc)) = (
-            self.third_derivative(pose, a),
-            self.third_derivative(pose, c),
-        ) else {
+        let Some(w3) = third else {
             return Slot::Undetermined {
                 e: Some(e),
                 detail: format!(
@@ -92,7 +109,6 @@ impl Program {
                 ),
             };
         };
-        let w3 = ta - tc;
         let d = cross(w.d, w.dd) / (2.0 * v2);
         let dd = cross(w.d, w3) / (3.0 * v2) - d * w.d.dot(w.dd) / v2;
         Slot::Limit(AngleJet { d, dd, e })

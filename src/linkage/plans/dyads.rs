@@ -175,7 +175,9 @@ impl Builder<'_> {
     /// the relative velocity, acceleration and jerk, ω = [Δv × Δa]/(2|Δv|²) and
     /// ε = [Δv × Δj]/(3|Δv|²) − ω·(Δv·Δa)/|Δv|². `None` away from the pivot: where the
     /// crank travel h to the coincidence has h⁴ > 2δ/|w′| (δ the rounding of the positions,
-    /// w′ = Δv/ω₁), the reading off the plan loses fewer digits than the limit's O(h).
+    /// w′ = Δv/ω₁), the reading off the plan loses fewer digits than the limit's O(h); and
+    /// where the pin passes the pivot at a distance beyond the rounding (the limit holds at
+    /// the coincidence only; beside it the plan gives the true, ill-conditioned rate).
     /// Refused where the relative motion is not known from the crank alone.
     pub(super) fn slot_limit(
         &self,
@@ -227,6 +229,24 @@ impl Builder<'_> {
                 None
             }
         };
+        // The limit holds only where the pin passes through the pivot: its closest approach,
+        // w − w′s + w″s²/2 with w′ = Δv/ω₁, w″ = Δa/ω₁², s = w·w′/|w′|², within the rounding
+        // and the neglected O(s³). A pin that passes at a distance is read off the plan.
+        let rel = self.r(c, a);
+        let w_d = dv / w1;
+        let s = rel.dot(w_d) / v2;
+        let (miss, neglected) = match (motion(a), motion(c)) {
+            (Some((aa, ja)), Some((ac, jc))) => (
+                (rel - w_d * s + (aa - ac) * (0.5 * s * s / (w1 * w1))).length(),
+                ((ja - jc) / (w1 * w1 * w1)).length() * s.abs().powi(3),
+            ),
+            // Unknown curvature of the relative path: the first-order miss (across w′), which
+            // an exact passage keeps within O(s²).
+            _ => (rel.perp_dot(w_d).abs() / v2.sqrt(), v2.sqrt() * s * s),
+        };
+        if miss > 4.0 * delta + neglected {
+            return Ok(None);
+        }
         let (Some((aa, ja)), Some((ac, jc))) = (motion(a), motion(c)) else {
             return Err(refuse(format!(
                 "the rate of link {j} is a limit that needs the relative acceleration and jerk, known only for points of the frame and the crank"
