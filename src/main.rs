@@ -230,6 +230,9 @@ fn render(
         return Err(Failure::input(format!("--dpi {dpi}: expected 1…2400")));
     }
     let scenes = load_all(paths)?;
+    if let Some(s) = scenes.iter().find(|s| s.plates.is_empty()) {
+        return Err(nothing_to_draw(s));
+    }
     distinct_stems(&scenes, out)?;
     // Everything is built in memory first: a failed run writes nothing.
     let mut svgs: Vec<(PathBuf, String)> = Vec::new();
@@ -297,12 +300,7 @@ fn distinct_stems(scenes: &[Scene], out: &Path) -> Result<(), Failure> {
 fn report(path: &Path, format: ReportFormat, drafting: f64, lang: LangArg) -> Result<(), Failure> {
     let (lang, drafting) = options(lang, drafting)?;
     let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
-    if s.mechanism.is_none()
-        && s.balancing.is_none()
-        && s.friction.is_empty()
-        && s.gears.is_none()
-        && s.cam.is_none()
-    {
+    if !has_study(&s) {
         return Err(nothing_to_construct(&s));
     }
     let rep = Session::new(&s, drafting)
@@ -325,6 +323,27 @@ fn nothing_to_construct(s: &Scene) -> Failure {
     ))
 }
 
+/// A scene without a plate to draw: without a study, or with `[plates] wanted = []`.
+fn nothing_to_draw(s: &Scene) -> Failure {
+    if has_study(s) {
+        Failure::input(format!(
+            "{}: plates.wanted = []: the scene asks for no plate to draw: expected at least one plate",
+            s.path.display()
+        ))
+    } else {
+        nothing_to_construct(s)
+    }
+}
+
+/// Whether the scene has a study to carry out (a report to give).
+fn has_study(s: &Scene) -> bool {
+    s.mechanism.is_some()
+        || s.balancing.is_some()
+        || !s.friction.is_empty()
+        || s.gears.is_some()
+        || s.cam.is_some()
+}
+
 /// Check every scene: a line for each (`path: ok` on standard output, `error: …` on standard
 /// error); the worst status (2 bad input > 1 construction > 0).
 fn check(paths: &[PathBuf]) -> Result<(), Failure> {
@@ -334,7 +353,7 @@ fn check(paths: &[PathBuf]) -> Result<(), Failure> {
             .map_err(|e| Failure::input(e.to_string()))
             .and_then(|s| {
                 if s.plates.is_empty() {
-                    return Err(nothing_to_construct(&s));
+                    return Err(nothing_to_draw(&s));
                 }
                 plates(&s, Lang::Ru, Drafting::EXACT).map(|_| ())
             });

@@ -222,6 +222,16 @@ pub fn format_sig(x: f64, sig: usize, lang: Lang) -> String {
         };
     }
     let mag = x.abs().log10().floor() as i32;
+    // Beyond 15 integer digits or 15 decimals, the exponent form (`1,5e−14`, `1e300`):
+    // never a long run of digits nor the significant digits cut off.
+    if mag >= 15 || sig as i32 - 1 - mag > 15 {
+        let sig = sig.max(1);
+        let text = format!("{:.*e}", sig - 1, x);
+        let (mantissa, exp) = text.split_once('e').unwrap_or((&text, "0"));
+        let mantissa: f64 = mantissa.parse().unwrap_or(0.0);
+        let exp = exp.replace('-', "−");
+        return format!("{}e{exp}", format_sig(mantissa, sig, lang));
+    }
     let decimals = (sig as i32 - 1 - mag).clamp(0, 15) as usize;
     let mut s = format!("{:.*}", decimals, x.abs());
     if s.contains('.') {
@@ -238,6 +248,34 @@ pub fn format_sig(x: f64, sig: usize, lang: Lang) -> String {
     }
     let _ = write!(out, "{}", s.replace('.', &lang.decimal().to_string()));
     out
+}
+
+/// A value for a message or a note: at most 6 significant digits, ASCII (`.`, `-`), in
+/// exponent form outside 1e-4 … 1e9 (`1e300`, `-2.5e-7`), never `-0`; `nan`, `inf`.
+pub fn format_plain(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    if !x.is_finite() {
+        return format!("{x}");
+    }
+    // Rounded to 6 significant digits, then printed shortest.
+    let r: f64 = format!("{x:.5e}").parse().unwrap_or(x);
+    if (1e-4..1e9).contains(&r.abs()) {
+        format!("{r}")
+    } else {
+        format!("{r:e}")
+    }
+}
+
+/// `x`, or 0 when it is a rounding residue: at most `1e-9 × |reference|` (a sum of terms of
+/// size `reference` that cancel).
+pub fn residue_to_zero(x: f64, reference: f64) -> f64 {
+    if x.abs() <= 1e-9 * reference.abs() {
+        0.0
+    } else {
+        x
+    }
 }
 
 /// Format with a fixed number of decimals, the language's separator and a true minus sign.
@@ -272,6 +310,29 @@ mod tests {
         );
         assert!(Scale::round_for(0.0, 50.0, Quantity::Length).is_none());
         assert!(Scale::round_for(f64::NAN, 50.0, Quantity::Length).is_none());
+    }
+
+    #[test]
+    fn significant_digits_never_run_long() {
+        assert_eq!(format_sig(1e300, 4, Lang::Ru), "1e300");
+        assert_eq!(format_sig(-2.2375e-14, 3, Lang::Ru), "−2,24e−14");
+        assert_eq!(format_sig(1.5e-15, 6, Lang::En), "1.5e−15");
+        assert_eq!(format_sig(123456.0, 4, Lang::En), "123456");
+        assert_eq!(format_sig(0.000247487, 6, Lang::Ru), "0,000247487");
+        assert_eq!(format_sig(1e14, 6, Lang::En), "100000000000000");
+    }
+
+    #[test]
+    fn plain_values_are_compact_and_residues_zero() {
+        assert_eq!(format_plain(1e300), "1e300");
+        assert_eq!(format_plain(-1e-300), "-1e-300");
+        assert_eq!(format_plain(-2.237e-16), "-2.237e-16");
+        assert_eq!(format_plain(-0.0), "0");
+        assert_eq!(format_plain(1234.56789), "1234.57");
+        assert_eq!(format_plain(0.1 + 0.2), "0.3");
+        assert_eq!(format_plain(f64::NAN), "NaN");
+        assert_eq!(residue_to_zero(-2.237e-16, 1200.0), 0.0);
+        assert_eq!(residue_to_zero(-3.0, 1200.0), -3.0);
     }
 
     #[test]

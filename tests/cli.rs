@@ -355,3 +355,192 @@ fn bad_numbers_on_the_command_line_are_one_line_naming_the_flag() {
     let help = text(&tmm(&["render", "--help"]).stdout);
     assert!(help.contains("2^30") && help.contains("1177 dpi"), "{help}");
 }
+
+/// Run `render` (SVG) on the shaper edited by `edit`; (exit code, stderr); the run must write
+/// nothing when it fails.
+fn render_shaper_edited(name: &str, format: &str, edit: impl Fn(&str) -> String) -> (i32, String) {
+    let dir = scratch(name);
+    let scene = edited_scene(&dir, "shaper.toml", edit);
+    let out = dir.join("out");
+    let o = tmm(&[
+        "render",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        format,
+    ]);
+    let code = o.status.code().unwrap_or(-1);
+    let err = text(&o.stderr);
+    assert!(!err.contains("panicked"), "{name}: {err}");
+    if code != 0 {
+        assert_eq!(files_under(&out), Vec::<PathBuf>::new(), "{name}: {err}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    (code, err)
+}
+
+#[test]
+fn control_characters_in_any_text_are_refused_naming_the_key() {
+    for (edit_from, edit_to, key) in [
+        (
+            "title = \"Поперечно-строгальный станок\"",
+            "title = \"abc\\u0001def\"",
+            "task.title = \"abc\\u{1}def\"",
+        ),
+        (
+            "name = \"C\" ",
+            "name = \"C\\u007f\" ",
+            "mechanism.fixed[1].name",
+        ),
+        (
+            "wanted = [\"positions\"",
+            "wanted = [\"posi\\ttions\"",
+            "plates.wanted[0]",
+        ),
+        ("[task]\n", "[task]\nnote = \"a\\nb\\u0085\"\n", "task.note"),
+    ] {
+        let (code, err) = render_shaper_edited("control", "svg", |t| {
+            assert!(t.contains(edit_from), "{edit_from}");
+            t.replacen(edit_from, edit_to, 1)
+        });
+        assert_eq!(code, 2, "{key}: {err}");
+        assert!(err.contains(key), "{key}: {err}");
+        assert!(err.contains("control characters"), "{key}: {err}");
+    }
+    // Unicode text that is not a control character stays welcome.
+    let (code, err) = render_shaper_edited("unicode", "svg", |t| {
+        t.replace("Поперечно-строгальный станок", "Станок — ω₁, μ_l «№ 5»")
+    });
+    assert_eq!(code, 0, "{err}");
+}
+
+#[test]
+fn an_endless_or_huge_scene_file_is_refused_naming_it() {
+    let o = tmm(&["check", "/dev/zero"]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("/dev/zero") && err.contains("larger than 1048576 bytes"),
+        "{err}"
+    );
+    // Just over the cap, in comments: refused; the same text within the cap: read.
+    let dir = scratch("huge");
+    let scene = std::fs::read_to_string(root().join("constructions/four-bar.toml")).unwrap();
+    let line = "# ".to_string() + &"x".repeat(1021) + "\n";
+    let pad = |n: usize| line.repeat(n);
+    let over = dir.join("over.toml");
+    std::fs::write(&over, scene.clone() + &pad(1024)).unwrap();
+    let under = dir.join("under.toml");
+    std::fs::write(&under, scene.clone() + &pad(1000)).unwrap();
+    let o = tmm(&["check", over.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o.stderr));
+    assert!(text(&o.stderr).contains("over.toml"));
+    let o = tmm(&["check", under.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+}
+
+#[test]
+fn an_unknown_table_is_named_as_a_table() {
+    for (added, want) in [
+        ("[foo]\nx = 1\n", "unknown table `[foo]`"),
+        ("[[foo.bar]]\nx = 1\n", "unknown table `[[foo]]`"),
+        ("[forces.extra]\nx = 1\n", "unknown table `[forces.extra]`"),
+    ] {
+        let (code, err) = render_shaper_edited("table", "svg", |t| format!("{t}\n{added}"));
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains(want), "{want}: {err}");
+    }
+}
+
+#[test]
+fn render_of_a_scene_that_asks_for_nothing_says_so() {
+    let dir = scratch("nothing");
+    let empty = dir.join("empty.toml");
+    std::fs::write(&empty, "[task]\ntitle = \"Ничего\"\n").unwrap();
+    let no_plates = edited_scene(&dir, "no-plates.toml", |t| {
+        t.replace(
+            "wanted = [\"positions\", \"kinematics\", \"forces\", \"dynamics\"]",
+            "wanted = []",
+        )
+    });
+    for (scene, want) in [
+        (&empty, "asks for nothing to construct"),
+        (&no_plates, "plates.wanted = []"),
+    ] {
+        for format in ["svg", "pdf", "png"] {
+            let out = dir.join("out");
+            let o = tmm(&[
+                "render",
+                scene.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+                "--format",
+                format,
+            ]);
+            let err = text(&o.stderr);
+            assert_eq!(o.status.code(), Some(2), "{format}: {err}");
+            assert!(err.contains(want), "{format}: {err}");
+            assert!(!out.exists(), "{format}: {:?}", files_under(&out));
+        }
+    }
+    let o = tmm(&["check", no_plates.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("plates.wanted = []"));
+}
+
+/// The longest run of digits in `s`.
+fn longest_digits(s: &str) -> usize {
+    s.split(|c: char| !c.is_ascii_digit())
+        .map(str::len)
+        .max()
+        .unwrap_or(0)
+}
+
+#[test]
+fn huge_and_tiny_values_are_echoed_compactly() {
+    for (from, to, want) in [
+        (
+            "length = 140.0",
+            "length = 1e300",
+            "mechanism.crank.length = 1e300",
+        ),
+        (
+            "length = 140.0",
+            "length = -1e-300",
+            "mechanism.crank.length = -1e-300",
+        ),
+        ("teeth = 100", "teeth = 1e300", "`1e300`"),
+        ("teeth = 100", "teeth = nan", "forces.drive.teeth = nan"),
+        (
+            "pressure_angle = 20.0",
+            "pressure_angle = 1e300",
+            "pressure_angle = 1e300",
+        ),
+        ("slide = 90.0", "slide = 1e300", "slide = 1e300"),
+    ] {
+        let (code, err) = render_shaper_edited("compact", "svg", |t| t.replacen(from, to, 1));
+        assert_eq!(code, 2, "{to}: {err}");
+        assert!(err.contains(want), "{want}: {err}");
+        assert!(longest_digits(&err) < 20, "{to}: {err}");
+    }
+}
+
+#[test]
+fn a_work_that_is_a_rounding_residue_is_printed_as_zero() {
+    // A resistance of fixed direction square to the ram's travel does no work over the
+    // cycle: the sum of the reduced moments is a residue of ~1e-15 J, of either sign.
+    for dir in ["0.0", "90.0", "180.0"] {
+        let (code, err) = render_shaper_edited("residue", "svg", |t| {
+            t.replace(
+                "stroke = \"working\"",
+                &format!("stroke = \"always\"\ndir = {dir}"),
+            )
+        });
+        assert_eq!(code, 1, "dir {dir}: {err}");
+        assert!(
+            err.contains("the working resistances do 0 J of work"),
+            "dir {dir}: {err}"
+        );
+    }
+}

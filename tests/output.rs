@@ -191,3 +191,43 @@ fn render_writes_one_pdf_per_scene_with_every_sheet_a_page_at_1_to_1() {
         "{files:?}"
     );
 }
+
+#[test]
+fn render_removes_the_stale_temporaries_of_a_killed_run_and_nothing_else() {
+    let out = scratch("stale");
+    let folder = out.join("four-bar");
+    std::fs::create_dir_all(&folder).unwrap();
+    // A run killed between staging and renaming left its temporaries (its pid is dead).
+    let mut child = std::process::Command::new("true").spawn().unwrap();
+    let dead = child.id();
+    child.wait().unwrap();
+    let stale = [
+        format!(".positions.svg.tmp-{dead}"),
+        format!(".positions.png.tmp-{dead}"),
+    ];
+    let kept = [
+        format!(".notes.txt.tmp-{dead}"),
+        format!("positions.svg.tmp-{dead}"),
+        "mine.svg".to_string(),
+    ];
+    for n in stale.iter().chain(&kept) {
+        std::fs::write(folder.join(n), vec![b'x'; 1 << 16]).unwrap();
+    }
+    let o = tmm(&[
+        "render",
+        "constructions/four-bar.toml",
+        "--out",
+        out.to_str().unwrap(),
+        "--dpi",
+        "10",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for n in &stale {
+        assert!(!folder.join(n).exists(), "{n} is stale");
+    }
+    for n in &kept {
+        assert!(folder.join(n).exists(), "{n} is not tmm's");
+    }
+    assert!(folder.join("positions.svg").is_file());
+    let _ = std::fs::remove_dir_all(&out);
+}

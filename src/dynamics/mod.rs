@@ -36,6 +36,7 @@ use crate::calculus::CalculusError;
 use crate::construct::Context;
 use crate::forces::{ForceError, ForceSpec};
 use crate::linkage::{KinPlan, PositionPlan};
+use crate::scale::residue_to_zero;
 use std::f64::consts::TAU;
 use thiserror::Error;
 
@@ -60,13 +61,13 @@ pub enum DynamicsError {
         detail: String,
     },
     /// The resistances do no work over the cycle: no driving moment to find.
-    #[error("the working resistances do {work} J of work over the cycle: expected > 0 (a [[forces.resistance]] that acts; an engine, whose gas forces drive, takes [dynamics] constant_moment = \"resisting\")")]
+    #[error("the working resistances do {} J of work over the cycle: expected > 0 (a [[forces.resistance]] that acts; an engine, whose gas forces drive, takes [dynamics] constant_moment = \"resisting\")", crate::scale::format_plain(*work))]
     NoResistance {
         /// The work, J.
         work: f64,
     },
     /// The driving forces do no work over the cycle (`constant_moment = "resisting"`).
-    #[error("the driving forces do {work} J of work over the cycle: expected > 0 (a [[forces.indicator]] that acts)")]
+    #[error("the driving forces do {} J of work over the cycle: expected > 0 (a [[forces.indicator]] that acts)", crate::scale::format_plain(*work))]
     NoDriving {
         /// The work, J.
         work: f64,
@@ -181,16 +182,17 @@ pub fn analyse(
     }
     let cycle = Cycle::new(&red, twin::PANELS)?;
     // The constant moment opposes the varying side: driving (> 0) or resisting (< 0).
+    // The size of the cycle's works: a sum far below it is a rounding residue, printed as 0.
+    // A residue of either sign is no work: no constant moment to find.
+    let size = cycle
+        .work
+        .iter()
+        .fold(cycle.a_res.max(cycle.a_drive), |m, w| m.max(w.abs()));
+    let work = residue_to_zero(cycle.m_drive * TAU, size);
     match spec.constant_moment {
-        ConstantMoment::Driving if cycle.m_drive <= 0.0 => {
-            return Err(DynamicsError::NoResistance {
-                work: cycle.m_drive * TAU,
-            })
-        }
-        ConstantMoment::Resisting if cycle.m_drive >= 0.0 => {
-            return Err(DynamicsError::NoDriving {
-                work: -cycle.m_drive * TAU,
-            })
+        ConstantMoment::Driving if work <= 0.0 => return Err(DynamicsError::NoResistance { work }),
+        ConstantMoment::Resisting if work >= 0.0 => {
+            return Err(DynamicsError::NoDriving { work: -work })
         }
         _ => {}
     }

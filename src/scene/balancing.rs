@@ -146,7 +146,11 @@ fn planes(check: &mut Checker, v: Option<&[f64]>) -> [f64; 2] {
         return [0.0, 1.0];
     };
     let [a, b] = v else {
-        check.push(&key, Some(format!("{v:?}")), format!("expected {WANT}"));
+        check.push(
+            &key,
+            Some(super::check::numbers(&v[..])),
+            format!("expected {WANT}"),
+        );
         return [0.0, 1.0];
     };
     let (a, b) = (
@@ -156,7 +160,7 @@ fn planes(check: &mut Checker, v: Option<&[f64]>) -> [f64; 2] {
     if a == b {
         check.push(
             &key,
-            Some(format!("{v:?}")),
+            Some(super::check::numbers(&v[..])),
             "expected two distinct planes: the correction of plane II is the moment about plane I \
              divided by their distance",
         );
@@ -185,7 +189,7 @@ fn radii(check: &mut Checker, raw: &RawBalancing, largest: f64) -> [f64; 2] {
             _ => {
                 check.push(
                     &key,
-                    Some(format!("{v:?}")),
+                    Some(super::check::numbers(&v[..])),
                     "expected two radii [ρ_I, ρ_II], mm",
                 );
                 [largest; 2]

@@ -15,6 +15,9 @@ pub(crate) const MAX_MM: f64 = 1e6;
 /// and the per-link arrays of the analysis are sized by the largest number.
 pub(crate) const MAX_LINK: u32 = 99;
 
+/// The largest angle a scene may give, degrees (ten turns).
+pub(crate) const MAX_DEG: f64 = 3600.0;
+
 /// `base.key`.
 pub(crate) fn join(base: &str, key: &str) -> String {
     format!("{base}.{key}")
@@ -25,15 +28,25 @@ pub(crate) fn item(base: &str, index: usize) -> String {
     format!("{base}[{index}]")
 }
 
-/// A number the way TOML writes it (`nan`, `inf`, `-140`).
+/// A number the way TOML writes it (`nan`, `inf`, `-140`), exactly (the shortest text that
+/// reads back as `v`) and compactly: in exponent form outside 1e-5 … 1e16 (`1e300`, not 301
+/// digits; `-1e-300`, not 300 zeros).
 pub(crate) fn number(v: f64) -> String {
     if v.is_nan() {
         "nan".into()
     } else if v.is_infinite() {
         if v > 0.0 { "inf" } else { "-inf" }.into()
-    } else {
+    } else if v == 0.0 || (1e-5..1e16).contains(&v.abs()) {
         v.to_string()
+    } else {
+        format!("{v:e}")
     }
+}
+
+/// A list of numbers the way TOML writes it (`[nan, 1e300, 2.5]`), each by [`number`].
+pub(crate) fn numbers(v: &[f64]) -> String {
+    let items: Vec<String> = v.iter().map(|&x| number(x)).collect();
+    format!("[{}]", items.join(", "))
 }
 
 /// A name quoted as in the file.
@@ -115,19 +128,16 @@ impl Checker {
         }
     }
 
-    /// An angle in degrees (finite), in radians.
+    /// An angle in degrees, finite and within ±[`MAX_DEG`] (beyond, the turns swamp the
+    /// angle's digits: 1e30° is no direction), in radians.
     pub fn angle(&mut self, key: &str, v: Option<f64>, default_deg: f64) -> f64 {
-        self.finite(key, v.unwrap_or(default_deg), "a finite angle in degrees")
-            .to_radians()
-    }
-
-    /// A finite number, or a problem and 0.
-    fn finite(&mut self, key: &str, v: f64, expected: &str) -> f64 {
-        if v.is_finite() {
-            v
-        } else {
-            self.bad(key, v, expected)
-        }
+        self.bounded(
+            key,
+            v.unwrap_or(default_deg),
+            MAX_DEG,
+            "a finite angle in degrees, within ±3600° (ten turns)",
+        )
+        .to_radians()
     }
 
     /// An optional scale μ of `quantity` (finite and > 0), or a problem and `None`;

@@ -285,7 +285,7 @@ fn seed(check: &mut Checker, raw: RawSeed) -> SeedClaims {
         _ => {
             check.push(
                 key("expression"),
-                Some(format!("{v:?}")),
+                Some(super::check::numbers(&v[..])),
                 "expected [μ_T J/mm, BD mm, J_b, J_d kg·m²]",
             );
             None

@@ -37,6 +37,14 @@ pub enum SceneError {
         /// Why.
         source: std::io::Error,
     },
+    /// The file is larger than a scene can be.
+    #[error("{}: the scene file is larger than {limit} bytes: expected a scene of at most {limit} bytes (1 MiB)", path.display())]
+    TooLarge {
+        /// The scene file.
+        path: PathBuf,
+        /// The largest scene, bytes.
+        limit: u64,
+    },
     /// The text is not TOML, or a value has the wrong type, or a key is unknown (reported by
     /// the TOML reader, with its line and column).
     #[error("{}:{line}:{column}: {}{message}", path.display(), key_value(key, value))]

@@ -2,7 +2,7 @@
 //! working resistance, the drive of the crank and the positions of the force analysis, each
 //! checked with its key path and converted to SI.
 
-use super::check::{item, join, quoted, Checker};
+use super::check::{item, join, number, quoted, Checker};
 use super::kinematics::{point, point_names, position_labels};
 use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance, RawSeedValue};
 use crate::check::Method;
@@ -300,7 +300,7 @@ fn link_mass(
         (Some(_), Some(_)) => {
             check.push(
                 k("rod"),
-                raw.rod.map(|v| v.to_string()),
+                raw.rod.map(number),
                 "expected either `inertia` or `rod`, not both",
             );
             0.0
@@ -458,7 +458,7 @@ fn drive(check: &mut Checker, base: &str, raw: &RawDrive) -> Drive {
     if !(alpha > 0.0 && alpha < 45f64.to_radians()) {
         check.push(
             k("pressure_angle"),
-            raw.pressure_angle.map(|a| a.to_string()),
+            raw.pressure_angle.map(number),
             "expected a pressure angle between 0° and 45°",
         );
     }

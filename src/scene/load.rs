@@ -22,16 +22,33 @@ const MAX_COUNT: i64 = 360;
 /// The word for the extreme position that begins the working stroke.
 const WORKING_STROKE: &str = "working-stroke";
 
-/// Read and validate the scene file at `path`.
+/// The largest scene file, bytes (1 MiB; the largest scene of `constructions/` is 9 KiB).
+pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+
+/// Read and validate the scene file at `path` (at most [`MAX_SCENE_BYTES`]: a larger file,
+/// or an endless one such as `/dev/zero`, is refused after reading one byte more).
 ///
 /// Lengths in the file are millimetres, angles degrees, `omega` rad/s or `n` rpm; the
 /// [`Scene`] holds metres and radians. Every problem is reported with the file, the key path,
 /// the value and what was expected (see `constructions/README.md` for the format).
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
-    let text = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+    use std::io::Read as _;
+    let read_err = |source| SceneError::Read {
         path: path.to_path_buf(),
         source,
-    })?;
+    };
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_SCENE_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(read_err)?;
+    if bytes.len() as u64 > MAX_SCENE_BYTES {
+        return Err(SceneError::TooLarge {
+            path: path.to_path_buf(),
+            limit: MAX_SCENE_BYTES,
+        });
+    }
+    let text = String::from_utf8(bytes)
+        .map_err(|e| read_err(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))?;
     parse(&text, path)
 }
 
@@ -43,7 +60,19 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let stem = path
         .file_stem()
         .map_or_else(|| "scene".to_string(), |s| s.to_string_lossy().into_owned());
-    let title = title(raw.task.unwrap_or_default(), &stem);
+    // Every text (names, titles, notes, words) becomes SVG text: no control characters.
+    if let Ok(table) = toml::from_str::<toml::Table>(text) {
+        texts(&mut check, "", &table);
+    }
+    let task = raw.task.unwrap_or_default();
+    if task.title.is_none() && stem.chars().any(not_text) {
+        check.push(
+            "task.title",
+            Some(quoted(&stem)),
+            "missing: the title defaults to the file name, which holds a control character; expected a title",
+        );
+    }
+    let title = title(task, &stem);
     // Every section is optional; a section that studies the mechanism needs `[mechanism]`.
     let has_mechanism = raw.mechanism.is_some();
     if !has_mechanism {
@@ -125,6 +154,53 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             path: path.to_path_buf(),
             problems: check.problems,
         })
+    }
+}
+
+/// A character that cannot be drawn as text (nor written in XML): a control character
+/// (U+0000–U+001F, U+007F–U+009F) or a non-character U+FFFE, U+FFFF.
+fn not_text(c: char) -> bool {
+    c.is_control() || c == '\u{fffe}' || c == '\u{ffff}'
+}
+
+/// Refuse every string value and key under `table` (at key path `base`) that holds a
+/// character that is [`not_text`], naming its key.
+fn texts(check: &mut Checker, base: &str, table: &toml::Table) {
+    for (key, value) in table {
+        let path = if base.is_empty() {
+            key.clone()
+        } else {
+            format!("{base}.{key}")
+        };
+        if key.chars().any(not_text) {
+            check.push(
+                path.clone(),
+                None,
+                "expected a key without control characters",
+            );
+        }
+        text_value(check, &path, value);
+    }
+}
+
+/// [`texts`] of one value.
+fn text_value(check: &mut Checker, path: &str, value: &toml::Value) {
+    match value {
+        toml::Value::String(s) if s.chars().any(not_text) => {
+            let shown: String = quoted(s).chars().take(80).collect();
+            check.push(
+                path,
+                Some(shown),
+                "expected text without control characters (U+0000–U+001F, U+007F–U+009F)",
+            );
+        }
+        toml::Value::Array(items) => {
+            for (i, v) in items.iter().enumerate() {
+                text_value(check, &item(path, i), v);
+            }
+        }
+        toml::Value::Table(t) => texts(check, path, t),
+        _ => {}
     }
 }
 
@@ -241,6 +317,9 @@ fn toml_error(text: &str, path: &Path, e: &toml::de::Error) -> SceneError {
         .get(span.clone())
         .map(str::trim)
         .filter(|s| !s.is_empty() && !s.contains('\n') && s.chars().count() <= 60);
+    if let Some(e) = unknown_table(text, path, span.clone(), e) {
+        return e;
+    }
     let mut key = key_path_at(text, span.start);
     let is_key = text
         .get(span.end..)
@@ -259,8 +338,66 @@ fn toml_error(text: &str, path: &Path, e: &toml::de::Error) -> SceneError {
         column,
         key,
         value,
-        message: e.message().trim().to_string(),
+        message: compact_numbers(e.message().trim()),
     }
+}
+
+/// The reader's message with every number quoted in backticks written compactly (`1e300`,
+/// not 301 digits; `nan`, not `NaN`), the way the scene writes it.
+fn compact_numbers(message: &str) -> String {
+    let mut out = String::new();
+    for (k, part) in message.split('`').enumerate() {
+        if k > 0 {
+            out.push('`');
+        }
+        match part.parse::<f64>() {
+            Ok(v) if k % 2 == 1 && (part.len() > 24 || v.is_nan()) => {
+                out.push_str(&super::check::number(v));
+            }
+            _ => out.push_str(part),
+        }
+    }
+    out
+}
+
+/// An unknown table: the reader's "unknown field `foo`" at a table header `[foo]` (or
+/// `[[foo]]`, `[cam.foo]`) said as "unknown table `[foo]`".
+fn unknown_table(
+    text: &str,
+    path: &Path,
+    span: std::ops::Range<usize>,
+    e: &toml::de::Error,
+) -> Option<SceneError> {
+    let message = e.message().trim();
+    let rest = message.strip_prefix("unknown field `")?;
+    let (field, tail) = rest.split_once('`')?;
+    let line_start = text.get(..span.start)?.rfind('\n').map_or(0, |k| k + 1);
+    let line = text.get(line_start..)?.lines().next()?;
+    let header = line.trim_start();
+    if !header.starts_with('[') {
+        return None;
+    }
+    // The header's name up to the unknown part: `[cam.foo.x]` names `cam.foo`.
+    let upto = text.get(line_start..span.end)?.trim_start();
+    let name = upto.trim_start_matches('[').trim();
+    let double = header.starts_with("[[");
+    let shown = if double {
+        format!("[[{name}]]")
+    } else {
+        format!("[{name}]")
+    };
+    if !name.ends_with(field) {
+        return None;
+    }
+    let (line_no, column) = line_column(text, span.start);
+    Some(SceneError::Toml {
+        path: path.to_path_buf(),
+        line: line_no,
+        column,
+        key: Some(name.to_string()),
+        value: None,
+        message: format!("unknown table `{shown}`{tail}"),
+    })
 }
 
 /// 1-based line and column (in characters) of byte `offset`.

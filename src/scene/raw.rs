@@ -2,6 +2,7 @@
 //! optional so that a missing key is reported with its full path by the validator. Unknown
 //! keys are refused by the TOML reader.
 
+use super::check::number;
 use serde::Deserialize;
 use std::fmt;
 
@@ -229,14 +230,14 @@ pub(crate) struct RawMass {
 impl fmt::Display for RawDir {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            RawDir::Degrees(d) => write!(f, "{d}"),
+            RawDir::Degrees(d) => write!(f, "{}", number(*d)),
             RawDir::Along(a) => {
                 let from = a.from.as_deref().unwrap_or("?");
                 let to = a.to.as_deref().unwrap_or("?");
                 write!(
                     f,
                     "{{ from = {from:?}, to = {to:?}, angle = {} }}",
-                    a.angle.unwrap_or(0.0)
+                    number(a.angle.unwrap_or(0.0))
                 )
             }
         }
@@ -251,7 +252,7 @@ impl fmt::Display for RawGuide {
             write!(f, ", dir = {dir}")?;
         }
         if let Some(offset) = self.offset {
-            write!(f, ", offset = {offset}")?;
+            write!(f, ", offset = {}", number(offset))?;
         }
         write!(f, " }}")
     }
@@ -268,11 +269,11 @@ impl RawGroup {
         };
         text("links", self.links.as_ref().map(|l| format!("{l:?}")));
         text("a", self.a.as_ref().map(|s| format!("{s:?}")));
-        text("la", self.la.map(|v| v.to_string()));
+        text("la", self.la.map(number));
         text("b", self.b.as_ref().map(|s| format!("{s:?}")));
-        text("lb", self.lb.map(|v| v.to_string()));
+        text("lb", self.lb.map(number));
         text("c", self.c.as_ref().map(|s| format!("{s:?}")));
-        text("offset", self.offset.map(|v| v.to_string()));
+        text("offset", self.offset.map(number));
         text("guide", self.guide.as_ref().map(|g| g.to_string()));
         text("guide_i", self.guide_i.as_ref().map(|g| g.to_string()));
         text("guide_j", self.guide_j.as_ref().map(|g| g.to_string()));

@@ -55,8 +55,9 @@ pub enum BuildError {
 
 fn too_large(what: &str, need: DVec2, fits: Option<&(layout::ScaleKey, Scale)>) -> String {
     let base = format!(
-        "“{what}” needs {:.0} × {:.0} mm, more than an empty sheet holds",
-        need.x, need.y
+        "“{what}” needs {} × {} mm, more than an empty sheet holds",
+        crate::scale::format_sig(need.x.round(), 6, Lang::En),
+        crate::scale::format_sig(need.y.round(), 6, Lang::En)
     );
     match fits {
         Some((k, f)) => format!(
