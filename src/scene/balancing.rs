@@ -148,7 +148,7 @@ fn planes(check: &mut Checker, v: Option<&[f64]>) -> [f64; 2] {
     let [a, b] = v else {
         check.push(
             &key,
-            Some(super::check::numbers(&v[..])),
+            Some(super::check::numbers(v)),
             format!("expected {WANT}"),
         );
         return [0.0, 1.0];
@@ -160,7 +160,7 @@ fn planes(check: &mut Checker, v: Option<&[f64]>) -> [f64; 2] {
     if a == b {
         check.push(
             &key,
-            Some(super::check::numbers(&v[..])),
+            Some(super::check::numbers(v)),
             "expected two distinct planes: the correction of plane II is the moment about plane I \
              divided by their distance",
         );
@@ -189,7 +189,7 @@ fn radii(check: &mut Checker, raw: &RawBalancing, largest: f64) -> [f64; 2] {
             _ => {
                 check.push(
                     &key,
-                    Some(super::check::numbers(&v[..])),
+                    Some(super::check::numbers(v)),
                     "expected two radii [ρ_I, ρ_II], mm",
                 );
                 [largest; 2]

@@ -238,7 +238,7 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         Some(v) => {
             check.push(
                 key("poles"),
-                Some(super::check::numbers(&v[..])),
+                Some(super::check::numbers(v)),
                 format!(
                     "expected the pole distances [H₁, H₂] from {} to {} mm",
                     POLE_MM.0, POLE_MM.1
@@ -321,7 +321,7 @@ fn phases(check: &mut Checker, v: Option<&[f64]>) -> Phases {
     let [a, b, c, d] = v else {
         check.push(
             &key,
-            Some(super::check::numbers(&v[..])),
+            Some(super::check::numbers(v)),
             format!("expected {WANT}"),
         );
         return fallback;
@@ -346,7 +346,7 @@ fn phases(check: &mut Checker, v: Option<&[f64]>) -> Phases {
     if ok && (sum - 360.0).abs() > 1e-6 {
         check.push(
             &key,
-            Some(super::check::numbers(&v[..])),
+            Some(super::check::numbers(v)),
             format!(
                 "expected phases summing to 360°, they sum to {}°",
                 number(sum)

@@ -18,6 +18,7 @@ pub fn tmm(args: &[&str]) -> Output {
 }
 
 /// A fresh scratch folder for one test.
+#[allow(dead_code)] // not every test binary writes files
 pub fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("tmm-test-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
