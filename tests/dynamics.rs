@@ -126,6 +126,10 @@ fn bad_dynamics_sections_name_their_keys() {
             &["dynamics.scale_m = 0", "dynamics.pole_h = nan", "dynamics.seed.expression"],
         ),
         ("[dynamics]\ndelta = 0.05\nwidth = 3.0\n", &["unknown field"]),
+        (
+            "[dynamics]\ndelta = 0.05\n[dynamics.flywheel]\nrho = 1e-30\n",
+            &["dynamics.flywheel.rho", "[10, 1e5] kg/m³"],
+        ),
     ];
     for (k, (tail, expected)) in cases.iter().enumerate() {
         let dir = scratch(&format!("bad-dynamics-{k}"));

@@ -245,3 +245,39 @@ fn the_shaper_with_large_friction_converges() {
         }
     }
 }
+
+/// A wedge whose groove is flat (180°) is refused at load with its key and range (exit 2); a
+/// groove of 179° is a wedge and is solved.
+#[test]
+fn a_flat_groove_is_refused_at_load() {
+    let text = std::fs::read_to_string(support::root().join("constructions/friction.toml"))
+        .expect("the friction scene");
+    assert!(text.contains("groove = "), "the scene has a wedge");
+    let dir = support::scratch("groove");
+    for (deg, ok) in [("180.0", false), ("179.0", true)] {
+        let body: String = text
+            .lines()
+            .map(|l| {
+                if l.starts_with("groove = ") {
+                    format!("groove = {deg}")
+                } else {
+                    l.to_string()
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\n");
+        let path = dir.join(format!("groove-{deg}.toml"));
+        std::fs::write(&path, body).expect("write");
+        let o = support::tmm(&["report", path.to_str().expect("a path")]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        if ok {
+            assert!(o.status.success(), "{deg}: {err}");
+        } else {
+            assert_eq!(o.status.code(), Some(2), "{err}");
+            assert!(
+                err.contains(".groove = 180") && err.contains("(0°, 180°)"),
+                "{err}"
+            );
+        }
+    }
+}
