@@ -295,3 +295,45 @@ fn extreme_but_valid_rotors_are_drawn_or_refused_with_the_key() {
     );
     assert!(!err.contains("panicked"), "{err}");
 }
+
+/// More masses than the balancing plate holds (37 with `omega` no longer fit, and laying out
+/// their labels grows as n²: 20 000 masses took 2.4 GB) are refused at load, naming the key and
+/// the range; 36 with `omega` are carried out, plate and all, dynamic and static.
+#[test]
+fn the_number_of_masses_is_bounded_at_load() {
+    let scene = |n: usize, kind: &str| {
+        let mut t = format!(
+            "[task]\ntitle = \"rotor\"\n[plates]\nwanted = [\"balancing\"]\n[balancing]\nkind = \"{kind}\"\nomega = 300.0\n"
+        );
+        if kind == "dynamic" {
+            t.push_str("planes = [0.0, 400.0]\n");
+        }
+        for i in 0..n {
+            t.push_str(&format!(
+                "[[balancing.mass]]\nmass = {}\nradius = {}\nangle = {}\n",
+                0.1 + 0.01 * (i % 7) as f64,
+                50 + i % 13,
+                (i * 37) % 360
+            ));
+            if kind == "dynamic" {
+                t.push_str(&format!("z = {}\n", 10 + (i * 17) % 380));
+            }
+        }
+        t
+    };
+    for kind in ["static", "dynamic"] {
+        let (ok, _, _, err) = run_scene(&format!("masses-36-{kind}"), &scene(36, kind), &["check"]);
+        assert!(ok, "{kind}: {err}");
+        for n in [37, 40, 20_000] {
+            let (ok, code, _, err) =
+                run_scene(&format!("masses-{n}-{kind}"), &scene(n, kind), &["check"]);
+            assert!(!ok && code == 2, "{kind} {n}: {err}");
+            assert!(
+                err.contains("balancing.mass")
+                    && err.contains(&format!("{n} masses"))
+                    && err.contains("1 to 36"),
+                "{err}"
+            );
+        }
+    }
+}

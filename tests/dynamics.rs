@@ -126,6 +126,10 @@ fn bad_dynamics_sections_name_their_keys() {
             &["dynamics.scale_m = 0", "dynamics.pole_h = nan", "dynamics.seed.expression"],
         ),
         ("[dynamics]\ndelta = 0.05\nwidth = 3.0\n", &["unknown field"]),
+        (
+            "[dynamics]\ndelta = 0.05\n[dynamics.flywheel]\nrho = 1e-30\n",
+            &["dynamics.flywheel.rho", "[10, 1e5] kg/m³"],
+        ),
     ];
     for (k, (tail, expected)) in cases.iter().enumerate() {
         let dir = scratch(&format!("bad-dynamics-{k}"));
@@ -188,12 +192,28 @@ fn a_machine_that_needs_no_flywheel_gets_none_and_its_plate_builds() {
     let path = dir.join("loose.toml");
     std::fs::write(&path, text).expect("write");
     let v = report_json(path.to_str().expect("utf-8"));
-    for r in rows(&v, "J_flywheel") {
+    // Every route says so: the exact one, Wittenbauer's and Merkin's (which read a J < 0 off
+    // their diagrams, printed before as J = −89.7 kg·m² and "-inf %"), the notes, the plate.
+    let js = rows(&v, "J_flywheel");
+    assert_eq!(js.len(), 2);
+    for r in js {
         assert_eq!(num(r, "analytic"), 0.0, "{r}");
+        assert_eq!(num(r, "graphical"), 0.0, "{r}");
     }
     for r in rows(&v, "delta") {
         assert!(num(r, "analytic") < 0.01, "{r}");
     }
+    let n = notes(&v);
+    assert!(n.contains("dynamics: no flywheel is needed"), "{n}");
+    assert!(
+        n.contains("Wittenbauer's tangents give: no flywheel is needed (it reads J = −"),
+        "{n}"
+    );
+    assert!(
+        n.contains("Merkin's route gives: no flywheel is needed"),
+        "{n}"
+    );
+    assert!(!n.contains("inf %") && !n.contains("NaN"), "{n}");
     let out = dir.join("out");
     let o = tmm(&[
         "render",
@@ -204,5 +224,10 @@ fn a_machine_that_needs_no_flywheel_gets_none_and_its_plate_builds() {
         "svg",
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    assert!(out.join("loose/dynamics.svg").exists());
+    let svg = std::fs::read_to_string(out.join("loose/dynamics.svg")).expect("the plate");
+    assert!(
+        svg.contains("маховик не нужен"),
+        "the plate does not say so"
+    );
+    assert!(!svg.contains("D = (J"), "the plate sizes a rim");
 }

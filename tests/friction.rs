@@ -2,8 +2,12 @@
 //! rounding, at 0.5 mm it shows the error a hand construction has; W3 gives the seed's
 //! numbers.
 
-use std::path::PathBuf;
+mod support;
+
+use std::path::{Path, PathBuf};
 use tmm::construct::Drafting;
+use tmm::forces::pair_friction::{friction_loads, Kinematics, PairFriction};
+use tmm::forces::{loads, phase, twin, Motion};
 use tmm::study::Session;
 
 fn report(drafting: f64) -> tmm::Report {
@@ -45,4 +49,235 @@ fn reading_to_half_a_millimetre_shows_percent_level_errors() {
         .flatten()
         .fold(0.0f64, |m, e| m.max(e.abs()));
     assert!(worst > 1e-3 && worst < 0.2, "{worst}");
+}
+
+// ---------------------------------------------------------------------------------------
+// Friction in the pairs of a force analysis (`[forces.friction]`): solved, not iterated.
+
+/// `constructions/slider-crank.toml` at position 3 with `f` and journals of `radius` mm (the
+/// crank pin's own 15 mm kept when `pin`), written to a scratch file.
+fn slider_crank(f: f64, radius: f64, pin: bool, name: &str) -> PathBuf {
+    let text = std::fs::read_to_string(support::root().join("constructions/slider-crank.toml"))
+        .expect("the slider-crank scene");
+    let text = text
+        .replace("f = 0.1\n", &format!("f = {f}\n"))
+        .replace("radius = 20.0\n", &format!("radius = {radius}\n"))
+        .replace("positions = [\"2\", \"5\"]", "positions = [\"3\"]");
+    let text = if pin {
+        text
+    } else {
+        text.replace("radii = { A = 15.0 }", "")
+    };
+    let path = support::scratch(name).join("slider-crank.toml");
+    std::fs::write(&path, text).expect("write the scene");
+    path
+}
+
+/// The report of a scene, or its error's message.
+fn analyse(path: &Path) -> Result<tmm::Report, String> {
+    let s = tmm::load(path).map_err(|e| e.to_string())?;
+    Session::new(&s, Drafting::new(0.0).expect("exact"))
+        .report()
+        .map_err(|e| e.to_string())
+}
+
+/// The analytic M_bal_f of the report at position 3.
+fn m_bal_f(r: &tmm::Report) -> f64 {
+    r.rows
+        .iter()
+        .find(|x| x.quantity() == "M_bal_f" && x.position().as_deref() == Some("3"))
+        .map(|x| x.analytic)
+        .expect("an M_bal_f row")
+}
+
+/// The textbook's plain successive approximations on the twin's linear solve, carried on as
+/// long as they take (up to `steps`): the balancing moment they settle at (to 1e-12), or
+/// `None` when they do not.
+fn plain_approximations(path: &Path, f: f64, radius: f64, steps: usize) -> Option<f64> {
+    let s = tmm::load(path).expect("the scene");
+    let session = Session::new(&s, Drafting::new(0.0).expect("exact"));
+    let plan = session
+        .positions(session.scale_l().expect("μ_l"))
+        .expect("the plan");
+    let k = plan
+        .positions
+        .iter()
+        .position(|p| p.label == "3")
+        .expect("position 3");
+    let (prog, pose) = (&plan.program, &plan.positions[k].pose);
+    let spec = session.force_spec("forces").expect("[forces]");
+    let w1 = 300.0 * std::f64::consts::TAU / 60.0;
+    let motion = Motion::analytic(pose, w1);
+    let given = loads::loads(spec, prog, &motion, phase(&plan, pose.phi, 1.0)).expect("loads");
+    let fr = PairFriction {
+        f,
+        radius: radius * 1e-3,
+        radii: Vec::new(),
+    };
+    let kin = Kinematics {
+        prog,
+        dir: pose.dir.clone(),
+        origin: &pose.origin,
+        motion: &motion,
+    };
+    let solve = |l: &[tmm::forces::Load]| twin::solve(prog, pose, l, &spec.drive, 1.0).ok();
+    let mut eq = solve(&given)?;
+    for _ in 0..steps {
+        let mut all = given.clone();
+        all.extend(friction_loads(&fr, &kin, &eq.reactions));
+        let next = solve(&all)?;
+        let change = (next.m_bal - eq.m_bal).abs();
+        eq = next;
+        if change <= 1e-12 * eq.m_bal.abs() {
+            return Some(eq.m_bal);
+        }
+    }
+    None
+}
+
+/// f = 1 with 55 mm journals (every journal, the crank pin too) at position 3: the textbook's
+/// successive approximations need thousands of steps (they used to stop at 200 and call it a
+/// lock); solved directly, M_bal_f = 1300.48 N·m — what the plain approximations settle at
+/// when carried on long enough — and both routes agree.
+#[test]
+fn slow_friction_is_solved_not_called_a_lock() {
+    let path = slider_crank(1.0, 55.0, false, "f1-r55");
+    let r = analyse(&path).unwrap_or_else(|e| panic!("{e}"));
+    let m = m_bal_f(&r);
+    let plain =
+        plain_approximations(&path, 1.0, 55.0, 1_000_000).expect("plain approximations settle");
+    assert!((m - plain).abs() <= 1e-9 * m.abs(), "{m} vs {plain}");
+    assert!(
+        plain_approximations(&path, 1.0, 55.0, 200).is_none(),
+        "200 plain steps suffice"
+    );
+    assert!((m - 1300.4846).abs() < 1e-3, "{m}");
+    for (row, rel) in r.rows.iter().zip(r.rel_errors()) {
+        if row.quantity().ends_with("_f") {
+            assert!(
+                rel.unwrap_or(0.0).abs() < 1e-9,
+                "{}: {rel:?}",
+                row.quantity()
+            );
+        }
+    }
+    // The crank pin at its own 15 mm: 425.59 N·m.
+    let r = analyse(&slider_crank(1.0, 55.0, true, "f1-r55-pin")).unwrap_or_else(|e| panic!("{e}"));
+    assert!((m_bal_f(&r) - 425.5897).abs() < 1e-3, "{}", m_bal_f(&r));
+}
+
+/// 70 mm journals: the friction equations have no solution (a lock), refused naming the
+/// position, the group and the f past which there is none; just below that f the position is
+/// solved (with a huge M_bal_f), just above it is refused again. Exit status 1 (a construction
+/// that cannot be carried out), not 2.
+#[test]
+fn a_real_lock_names_the_position_and_the_group() {
+    let path = slider_crank(1.0, 70.0, false, "f1-r70");
+    let e = analyse(&path).expect_err("a lock");
+    assert!(
+        e.contains("position 3") && e.contains("group 1 (links 2, 3)") && e.contains("self-locks"),
+        "{e}"
+    );
+    let f_lock: f64 = e
+        .split("past f = ")
+        .nth(1)
+        .and_then(|s| s.split(' ').next())
+        .and_then(|s| s.parse().ok())
+        .unwrap_or_else(|| panic!("no f* in {e}"));
+    assert!(f_lock > 0.9 && f_lock < 1.0, "{f_lock}");
+    let below = analyse(&slider_crank(0.995 * f_lock, 70.0, false, "below"))
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(m_bal_f(&below) > 3000.0, "{}", m_bal_f(&below));
+    let above = analyse(&slider_crank(1.005 * f_lock, 70.0, false, "above")).expect_err("a lock");
+    assert!(above.contains("self-locks"), "{above}");
+    let o = support::tmm(&["report", path.to_str().expect("a path")]);
+    assert_eq!(o.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("position 3") && err.contains("group 1"),
+        "{err}"
+    );
+}
+
+/// The shaper with f = 0.88 … 0.99 (journals 20 mm), refused as a lock before, converges at
+/// both positions (its RPP group — the block in the ram's perpendicular guides — locks only
+/// at f = 1, tan φ = 1), both routes agreeing.
+#[test]
+fn the_shaper_with_large_friction_converges() {
+    let text = std::fs::read_to_string(support::root().join("constructions/shaper.toml"))
+        .expect("the shaper");
+    let dir = support::scratch("shaper-f");
+    for (f, ok) in [(0.88, true), (0.9, true), (0.99, true)] {
+        let path = dir.join(format!("shaper-{f}.toml"));
+        std::fs::write(
+            &path,
+            format!("{text}\n[forces.friction]\nf = {f}\nradius = 20.0\n"),
+        )
+        .expect("write");
+        match analyse(&path) {
+            Ok(r) => {
+                assert!(ok, "f = {f} solved");
+                let m: Vec<f64> = r
+                    .rows
+                    .iter()
+                    .filter(|x| x.quantity() == "M_bal_f")
+                    .map(|x| x.analytic)
+                    .collect();
+                assert_eq!(m.len(), 4, "f = {f}");
+                for (row, rel) in r.rows.iter().zip(r.rel_errors()) {
+                    if !row.quantity().ends_with("_f") {
+                        continue;
+                    }
+                    assert!(
+                        rel.unwrap_or(0.0).abs() < 1e-9,
+                        "f = {f}: {}: {rel:?}",
+                        row.quantity()
+                    );
+                }
+            }
+            Err(e) => {
+                assert!(!ok, "f = {f}: {e}");
+                assert!(
+                    e.contains("position 3") && e.contains("group 2 (links 4, 5)"),
+                    "{e}"
+                );
+            }
+        }
+    }
+}
+
+/// A wedge whose groove is flat (180°) is refused at load with its key and range (exit 2); a
+/// groove of 179° is a wedge and is solved.
+#[test]
+fn a_flat_groove_is_refused_at_load() {
+    let text = std::fs::read_to_string(support::root().join("constructions/friction.toml"))
+        .expect("the friction scene");
+    assert!(text.contains("groove = "), "the scene has a wedge");
+    let dir = support::scratch("groove");
+    for (deg, ok) in [("180.0", false), ("179.0", true)] {
+        let body: String = text
+            .lines()
+            .map(|l| {
+                if l.starts_with("groove = ") {
+                    format!("groove = {deg}")
+                } else {
+                    l.to_string()
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\n");
+        let path = dir.join(format!("groove-{deg}.toml"));
+        std::fs::write(&path, body).expect("write");
+        let o = support::tmm(&["report", path.to_str().expect("a path")]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        if ok {
+            assert!(o.status.success(), "{deg}: {err}");
+        } else {
+            assert_eq!(o.status.code(), Some(2), "{err}");
+            assert!(
+                err.contains(".groove = 180") && err.contains("(0°, 180°)"),
+                "{err}"
+            );
+        }
+    }
 }

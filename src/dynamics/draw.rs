@@ -32,8 +32,11 @@ const HEIGHT_MM: f64 = 50.0;
 /// A textbook route to the flywheel, as read off its diagram.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Route {
-    /// The flywheel's moment of inertia, kg·m².
+    /// The flywheel's moment of inertia, kg·m²: 0 when the route finds none needed.
     pub j_fw: f64,
+    /// The moment of inertia as read off the diagram, kg·m² (≤ 0: the constant inertia
+    /// alone gives δ, no flywheel is needed).
+    pub read: f64,
     /// The energy range measured (kl, or ΔT_I), J.
     pub range: f64,
     /// The nodes where the range is taken (the tangents' points; T_I max and min).
@@ -396,8 +399,10 @@ fn wittenbauer(
     );
     let kl = read_up(&rec, ends[1], ends[0]) * mu_t.value();
     rec.label(dim, "kl", (ends[0] + ends[1]) * 0.5, DVec2::new(-1.0, 0.0));
+    let read = kl / (delta * w2);
     let route = Route {
-        j_fw: kl / (delta * w2),
+        j_fw: read.max(0.0),
+        read,
         range: kl,
         at: [i1, i2],
     };
@@ -455,8 +460,10 @@ fn merkin(
     rec.label(dim, "ΔT_{I}", (a + b) * 0.5, DVec2::new(1.0, 0.0));
     let range = read_up(&rec, a, b) * mu_t.value();
     let j_i = range / (spec.delta * w_avg * w_avg);
+    let read = j_i - spec.constant_inertia();
     let route = Route {
-        j_fw: j_i - spec.constant_inertia(),
+        j_fw: read.max(0.0),
+        read,
         range,
         at: [hi, lo],
     };

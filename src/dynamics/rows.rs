@@ -104,11 +104,46 @@ pub fn notes(d: &Dynamics) -> Vec<String> {
     let n = |x: f64| format_sig(x, 6, Lang::En);
     let e = &d.exact;
     let pct = |x: f64, r: f64| format_sig((x - r) / r * 100.0, 3, Lang::En);
+    let needed = e.j_fw > 0.0;
+    let exact = if needed {
+        format!(
+            "the energy equation integrated exactly gives J_flywheel = {} kg·m² for δ = {}",
+            n(e.j_fw),
+            n(e.delta())
+        )
+    } else {
+        format!(
+            "no flywheel is needed: the energy equation integrated exactly gives δ = {} without one, within the δ = {} asked",
+            n(e.delta()),
+            n(d.spec.delta)
+        )
+    };
+    // One textbook route: its flywheel against the exact one, or none needed.
+    let route = |name: &str, r: &super::draw::Route, delta: f64| {
+        if r.j_fw <= 0.0 {
+            format!(
+                "{name}: no flywheel is needed (it reads J = {} kg·m² ≤ 0)",
+                n(r.read)
+            )
+        } else if needed {
+            format!(
+                "{name} J_flywheel = {} kg·m² ({} %, δ really {})",
+                n(r.j_fw),
+                pct(r.j_fw, e.j_fw),
+                n(delta)
+            )
+        } else {
+            format!(
+                "{name} J_flywheel = {} kg·m² where none is needed (δ really {})",
+                n(r.j_fw),
+                n(delta)
+            )
+        }
+    };
+    let merkin_exact = d.cycle.merkin(d.w_avg, d.spec.delta).0 - d.spec.constant_inertia();
     let mut out = vec![
         format!(
-            "dynamics: the energy equation integrated exactly gives J_flywheel = {} kg·m² for δ = {} at ω_avg = {} rad/s (ω_max = {} at {}°, ω_min = {} at {}° of crank travel from position {}); the cycle takes {} s; {}",
-            n(e.j_fw),
-            n(e.delta()),
+            "dynamics: {exact} at ω_avg = {} rad/s (ω_max = {} at {}°, ω_min = {} at {}° of crank travel from position {}); the cycle takes {} s; {}",
             n(e.omega_avg()),
             n(e.w_max.0),
             format_sig(e.w_max.1.to_degrees(), 4, Lang::En),
@@ -130,15 +165,15 @@ pub fn notes(d: &Dynamics) -> Vec<String> {
             },
         ),
         format!(
-            "dynamics: at {} positions Wittenbauer's tangents give J_flywheel = {} kg·m² ({} %, δ really {}), Merkin's route {} kg·m² ({} %, δ really {}); Merkin on the continuous exact data gives {} kg·m² (T_II with ω = ω_avg is the method's own error)",
+            "dynamics: at {} positions {}, {}; Merkin on the continuous exact data {} (T_II with ω = ω_avg is the method's own error)",
             d.labels.len(),
-            n(d.diagrams.wittenbauer.j_fw),
-            pct(d.diagrams.wittenbauer.j_fw, e.j_fw),
-            n(d.delta_of[0]),
-            n(d.diagrams.merkin.j_fw),
-            pct(d.diagrams.merkin.j_fw, e.j_fw),
-            n(d.delta_of[1]),
-            n(d.cycle.merkin(d.w_avg, d.spec.delta).0 - d.spec.constant_inertia()),
+            route("Wittenbauer's tangents give", &d.diagrams.wittenbauer, d.delta_of[0]),
+            route("Merkin's route gives", &d.diagrams.merkin, d.delta_of[1]),
+            if merkin_exact > 0.0 {
+                format!("gives {} kg·m²", n(merkin_exact))
+            } else {
+                format!("needs no flywheel (J = {} kg·m² ≤ 0)", n(merkin_exact))
+            },
         ),
     ];
     let Some(seed) = &d.spec.seed else {
@@ -146,11 +181,18 @@ pub fn notes(d: &Dynamics) -> Vec<String> {
     };
     if let Some(j) = seed.flywheel {
         let got = d.cycle.with_flywheel(j, d.w_avg).delta();
+        let exact = if needed {
+            format!(
+                "the exact value is {} kg·m² ({} % off)",
+                n(e.j_fw),
+                pct(j, e.j_fw)
+            )
+        } else {
+            "no flywheel is needed".to_string()
+        };
         out.push(format!(
-            "dynamics: seed error: its flywheel J = {} kg·m² does not follow from its data: the exact value is {} kg·m² ({} % off); with J = {} the machine runs at δ = {} = 1/{} instead of {}",
+            "dynamics: seed error: its flywheel J = {} kg·m² does not follow from its data: {exact}; with J = {} the machine runs at δ = {} = 1/{} instead of {}",
             n(j),
-            n(e.j_fw),
-            pct(j, e.j_fw),
             n(j),
             n(got),
             format_sig(1.0 / got, 3, Lang::En),

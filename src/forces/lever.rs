@@ -27,6 +27,10 @@ pub struct Lever {
     pub f_bal: Option<f64>,
 }
 
+/// Where a couple on a link of one point puts its second force: this far along the link's
+/// frame, drawing mm.
+const SECOND_POINT_MM: f64 = 20.0;
+
 /// The velocity plan's image of a drawing point `x` (mm) of link `l`, plan mm, by the
 /// similarity of the link's images: the image of its origin plus ω × r.
 fn image(b: &Built, vp: &KinPlan, l: usize, x: DVec2, mu_l: f64) -> DVec2 {
@@ -109,20 +113,30 @@ pub fn lever(
     let mut power = 0.0;
     for l in loads {
         if l.is_couple() {
-            // A couple as two forces ⊥ to the link at its origin and its farthest point.
+            // A couple as two forces ⊥ to the link at its origin and its farthest point (a
+            // link of one point — a block — at a point 20 mm along its frame, imaged by
+            // the similarity of its images).
             let o = b.origin[l.link];
             let far = (0..prog.names.len())
                 .filter(|&k| prog.links_of(k).contains(&l.link))
-                .max_by(|&x, &y| b.p[x].distance(b.p[o]).total_cmp(&b.p[y].distance(b.p[o])));
-            let Some(far) = far.filter(|&f| b.p[f] != b.p[o]) else {
-                continue;
+                .max_by(|&x, &y| b.p[x].distance(b.p[o]).total_cmp(&b.p[y].distance(b.p[o])))
+                .filter(|&f| b.p[f] != b.p[o]);
+            let (p_far, i_far) = match far {
+                Some(f) => (b.p[f], vp.images[f]),
+                None => {
+                    let x = b.p[o] + DVec2::from_angle(b.angle[l.link]) * SECOND_POINT_MM;
+                    (x, image(b, vp, l.link, x, mu))
+                }
             };
-            let len = rec.measure(b.p[o], b.p[far]).read_mm * mu;
-            let e = (b.p[far] - b.p[o]).normalize().perp();
+            let len = rec.measure(b.p[o], p_far).read_mm * mu;
+            if len.is_nan() || len <= 0.0 {
+                continue;
+            }
+            let e = (p_far - b.p[o]).normalize().perp();
             let f = e * (l.moment / len);
             // The couple's two forces, primed apart from the link's inertia force.
             let name = |prime: &str| l.name.replacen('M', &format!("F{prime}"), 1);
-            power += moment(&mut rec, turn(vp.images[far]), f, &name("′"));
+            power += moment(&mut rec, turn(i_far), f, &name("′"));
             power += moment(&mut rec, turn(vp.images[o]), -f, &name("″"));
         } else {
             // A force at a point of another link (friction on a guide) acts on its own link.

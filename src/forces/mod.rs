@@ -12,6 +12,7 @@
 //!   inertia loads `F_in<l>`, `M_in<l>`, graphical against analytic.
 
 pub mod balancing;
+pub mod diagnose;
 pub mod friction;
 pub mod indicator;
 pub mod lever;
@@ -101,11 +102,40 @@ pub enum ForceError {
         /// The plan's labels, compactly.
         valid: String,
     },
-    /// The successive approximations of friction do not settle.
-    #[error("the friction in the pairs does not settle after {approximations} successive approximations: the mechanism self-locks (f too large)")]
+    /// The equilibrium equations are singular at a position (a group at a toggle or dead
+    /// position): the twin's [`ForceError::Singular`] located.
+    #[error("position {position}: the equilibrium equations are singular{} (a group at a toggle or dead position)", .group.as_ref().map_or(String::new(), |g| format!(" in {g}")))]
+    SingularAt {
+        /// The position's label (and `with friction`).
+        position: String,
+        /// The group whose own equations are singular, when it can be told.
+        group: Option<String>,
+    },
+    /// Friction in the pairs with no solution: past `f_lock` ≤ `f` the friction equations of
+    /// the position have none (the reactions grow without bound there, or the solution turns
+    /// back where a reaction vanishes).
+    #[error("position {position}: {group} self-locks with friction in the pairs: past f = {} the friction equations have no solution ({detail}); f = {} is asked", crate::scale::format_sig(*.f_lock, 4, crate::scale::Lang::En), crate::scale::format_sig(*.f, 4, crate::scale::Lang::En))]
     SelfLocking {
-        /// How many were made.
-        approximations: usize,
+        /// The position's label.
+        position: String,
+        /// The group that locks.
+        group: String,
+        /// The coefficient asked for.
+        f: f64,
+        /// The coefficient past which there is no solution.
+        f_lock: f64,
+        /// How the solution ends, and the route that found it.
+        detail: String,
+    },
+    /// The friction equations could not be followed (not a lock).
+    #[error("position {position}: the friction equations in the pairs could not be solved by {route} past f = {} (not a lock: the reactions stay bounded there)", crate::scale::format_sig(*.f, 4, crate::scale::Lang::En))]
+    FrictionUnsettled {
+        /// The position's label.
+        position: String,
+        /// The route.
+        route: String,
+        /// The coefficient reached.
+        f: f64,
     },
     /// No round μ_F can be formed.
     #[error("no force scale μ_F can be chosen for {0} N")]
@@ -186,8 +216,8 @@ impl PositionForces {
 }
 
 /// One position's force analysis with friction in the pairs ([`pair_friction`]): the
-/// polygons, the lever and the twin of the loads plus the friction loads, settled by
-/// successive approximations.
+/// polygons, the lever and the twin of the loads plus the friction loads, settled with
+/// the friction equations solved for the friction loads ([`pair_friction::settle`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct WithFriction {
     /// The friction loads as the polygons give them.
@@ -204,7 +234,7 @@ pub struct WithFriction {
     pub m_power: f64,
     /// The power lost in the pairs (the twin's), W, ≤ 0.
     pub lost: f64,
-    /// The approximations the polygons and the twin took.
+    /// The analyses the polygons and the twin took to settle the friction.
     pub approximations: [usize; 2],
 }
 
@@ -301,7 +331,8 @@ pub fn analyse(
     let ph = phase(plan, pos.phi, sense);
     let exact = Motion::analytic(&pos.pose, w1);
     let loads_exact = loads::loads(spec, prog, &exact, ph)?;
-    let twin = twin::solve(prog, &pos.pose, &loads_exact, &spec.drive, sense)?;
+    let twin = twin::solve(prog, &pos.pose, &loads_exact, &spec.drive, sense)
+        .map_err(|e| located(e, &pos.label, prog, &pos.pose))?;
     let m_power = twin::power_balance(&loads_exact, &exact, w1);
     let drawn = graphical_motion(plan, k, mu_l, vp, ap, ctx);
     let loads = loads::loads(spec, prog, &drawn, ph)?;
@@ -338,7 +369,7 @@ pub fn analyse(
                 w1,
                 label: &pos.label,
             };
-            Some(Box::new(with_friction(spec, fr, &route, twin.largest())?))
+            Some(Box::new(with_friction(spec, fr, &route)?))
         }
         None => None,
     };
@@ -468,32 +499,42 @@ struct Route<'a> {
 }
 
 /// The position with friction in the pairs: the twin and the polygons each settled by
-/// successive approximations (to 1e-13 of `big`, the largest frictionless reaction, or to
-/// two drafting resolutions on the force polygon), the lever with the polygons' friction
-/// loads.
+/// [`pair_friction::settle`] (to 1e-12 of the largest reaction, or to two drafting
+/// resolutions on the force polygon), the lever with the polygons' friction loads.
 fn with_friction(
     spec: &ForceSpec,
     fr: &pair_friction::PairFriction,
     route: &Route<'_>,
-    big: f64,
 ) -> Result<WithFriction, ForceError> {
-    use pair_friction::{approximate, friction_loads, friction_power, Kinematics};
+    use pair_friction::{friction_loads_of, friction_power, settle, Kinematics};
     let board = route.board;
     let prog = board.prog;
     let sense = route.w1.signum();
     let pose = route.pose;
+    let label = format!("{} with friction", route.label);
     let exact = Kinematics {
         prog,
         dir: pose.dir.clone(),
         origin: &pose.origin,
         motion: route.exact,
     };
-    let (twin, loads_exact_f, n_twin) = approximate(
+    let on = |name, absolute| pair_friction::Route {
+        prog,
+        label: route.label,
+        name,
+        f: fr.f,
+        relative: 1e-12,
+        absolute,
+    };
+    let twin = settle(
+        &on("the linear solve", 0.0),
         route.loads_exact,
-        1e-13 * big,
-        |l| twin::solve(prog, pose, l, &spec.drive, sense),
+        |l| {
+            twin::solve(prog, pose, l, &spec.drive, sense)
+                .map_err(|e| located(e, &label, prog, pose))
+        },
         |t| t.reactions.clone(),
-        |r| friction_loads(fr, &exact, r),
+        |r, m| friction_loads_of(fr, &exact, r, m),
     )?;
     let drawn = Kinematics {
         prog,
@@ -507,17 +548,14 @@ fn with_friction(
         motion: route.drawn,
     };
     let resolution = board.ctx.drafting.resolution_mm() * board.mu_f.value();
-    let (polygons, loads_f, n_pol) = approximate(
+    let polygons = settle(
+        &on("the force polygons", 2.0 * resolution),
         route.loads,
-        (1e-13 * big).max(2.0 * resolution),
-        |l| {
-            polygons::polygons(board, l, &spec.drive)
-                .map_err(|e| polygon_error(&format!("{} with friction", route.label), e))
-        },
+        |l| polygons::polygons(board, l, &spec.drive).map_err(|e| polygon_error(&label, e)),
         Polygons::reactions,
-        |r| friction_loads(fr, &drawn, r),
+        |r, m| friction_loads_of(fr, &drawn, r, m),
     )?;
-    let all: Vec<Load> = route.loads.iter().chain(&loads_f).cloned().collect();
+    let all: Vec<Load> = route.loads.iter().chain(&polygons.loads).cloned().collect();
     let lever = lever::lever(
         prog,
         board.built,
@@ -528,17 +566,34 @@ fn with_friction(
         route.w1,
         &board.ctx,
     );
-    let lost = friction_power(&loads_exact_f, &exact);
+    let lost = friction_power(&twin.loads, &exact);
     Ok(WithFriction {
         m_power: twin::power_balance(route.loads_exact, route.exact, route.w1) - lost / route.w1,
-        loads: loads_f,
-        loads_exact: loads_exact_f,
-        polygons,
+        loads: polygons.loads,
+        loads_exact: twin.loads,
+        polygons: polygons.solution,
         lever,
-        twin,
+        twin: twin.solution,
         lost,
-        approximations: [n_pol, n_twin],
+        approximations: [polygons.solves, twin.solves],
     })
+}
+
+/// The twin's [`ForceError::Singular`] at position `label`, with the group whose equations
+/// are singular at `pose`.
+fn located(
+    e: ForceError,
+    label: &str,
+    prog: &crate::linkage::Program,
+    pose: &crate::linkage::Pose,
+) -> ForceError {
+    match e {
+        ForceError::Singular => ForceError::SingularAt {
+            position: label.to_string(),
+            group: diagnose::singular_group(prog, pose),
+        },
+        e => e,
+    }
 }
 
 /// A polygon that cannot be closed at position `label` (`g` = `usize::MAX`: the driving
@@ -732,7 +787,7 @@ pub fn notes(f: &PositionForces) -> Vec<String> {
             String::new()
         };
         out.push(format!(
-            "position {}: with friction in the pairs M_bal_f = {} N·m against M_bal = {} N·m without: the pairs lose {} W{eta}; the power balance with the friction's power gives {} N·m; the polygons settled after {} successive approximations, the linear solve after {}",
+            "position {}: with friction in the pairs M_bal_f = {} N·m against M_bal = {} N·m without: the pairs lose {} W{eta}; the power balance with the friction's power gives {} N·m; the friction equations (Newton's method on the friction loads' magnitudes) took {} drawings of the force polygons and {} linear solves",
             f.label,
             format_sig(m, 10, Lang::En),
             format_sig(m0, 10, Lang::En),

@@ -13,6 +13,10 @@ const BAL: &str = "balancing";
 const KINDS: [&str; 2] = ["static", "dynamic"];
 /// The heaviest mass a scene may give, kg.
 const MAX_KG: f64 = 1e6;
+/// The most masses a rotor may have: the balancing plate gives every mass a line of its data
+/// (and, with `omega`, of its inertia force) and lays out all polygons' labels, so 37 with
+/// `omega` no longer fit an A1 sheet, and the work of laying the labels out grows as n².
+pub const MAX_MASSES: usize = 36;
 /// The fastest rotor a scene may give, rad/s.
 const MAX_OMEGA: f64 = 1e6;
 
@@ -30,6 +34,16 @@ pub(crate) fn balancing(check: &mut Checker, raw: &RawBalancing) -> Option<Balan
             None,
             "missing: expected at least one [[balancing.mass]] (mass, radius, angle)",
         );
+    }
+    if raw.mass.len() > MAX_MASSES {
+        check.push(
+            key("mass"),
+            Some(format!("{} masses", raw.mass.len())),
+            format!(
+                "expected 1 to {MAX_MASSES} [[balancing.mass]] (what the balancing plate holds)"
+            ),
+        );
+        return None;
     }
     let masses: Vec<Mass> = raw
         .mass

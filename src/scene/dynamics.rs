@@ -8,6 +8,9 @@ use crate::forces::ForceSpec;
 use crate::scale::Quantity;
 use serde::Deserialize;
 
+/// The lightest flywheel material a scene may give, kg/m³.
+const MIN_RHO: f64 = 10.0;
+
 /// The key path of the section.
 const KEY: &str = "dynamics";
 /// The most positions of the diagrams (one per degree).
@@ -248,7 +251,13 @@ fn flywheel(check: &mut Checker, raw: RawFlywheel) -> FlywheelSpec {
         },
     };
     let rho = raw.rho.map_or(FlywheelSpec::SEED_RIM.rho, |r| {
-        check.in_range(&key("rho"), r, 1e5, "a density ρ > 0 kg/m³")
+        // From cork to the densest metals (osmium 22 590 kg/m³), with room either side.
+        if r.is_finite() && r < MIN_RHO {
+            let want = "expected a density ρ in [10, 1e5] kg/m³";
+            check.push(key("rho"), Some(number(r)), want);
+            return 0.0;
+        }
+        check.in_range(&key("rho"), r, 1e5, "a density ρ in [10, 1e5] kg/m³")
     });
     let base = match kind {
         FlywheelKind::Rim => FlywheelSpec {

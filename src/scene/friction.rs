@@ -129,7 +129,7 @@ pub(crate) fn friction(check: &mut Checker, raw: Option<RawFriction>) -> Vec<Fri
             "wedge" => CaseKind::Wedge(Wedge {
                 load: force(check, &base, "load", c.load),
                 f: coefficient(check, &base, "f", c.f),
-                groove: angle(check, &base, "groove", c.groove, None, (0.0, 180.0), false),
+                groove: groove(check, &base, c.groove),
             }),
             "screw" => screw(check, &base, c),
             "journal" => CaseKind::Journal(Journal {
@@ -306,6 +306,19 @@ fn angle(
     } else {
         check.push(key, Some(number(deg)), format!("expected {want}"));
         0.0
+    }
+}
+
+/// A wedge's groove angle, degrees in (0°, 180°): at 180° the groove is a flat plane and the
+/// wedge has no sides to press on.
+fn groove(check: &mut Checker, base: &str, v: Option<f64>) -> f64 {
+    match v {
+        Some(deg) if deg >= 180.0 => {
+            let want = "expected an angle in (0°, 180°) (at 180° the groove is flat: no wedge)";
+            check.push(join(base, "groove"), Some(number(deg)), want);
+            0.0
+        }
+        _ => angle(check, base, "groove", v, None, (0.0, 180.0), false),
     }
 }
 

@@ -173,20 +173,37 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
     out.push(String::new());
     out.push(tr(lang, "Маховик", "Маховик", "Flywheel").to_string());
     let e = &d.exact;
+    let none = tr(
+        lang,
+        "маховик не нужен",
+        "маховик не потрібен",
+        "no flywheel is needed",
+    );
+    let j_or_none = |j: f64| {
+        if j > 0.0 {
+            format!("{} {kgm2}", num(j, lang))
+        } else {
+            none.to_string()
+        }
+    };
     out.push(format!(
-        "J_{{м}} = {} {kgm2}; ω_{{max}} = {}, ω_{{min}} = {} {}",
-        num(e.j_fw, lang),
+        "J_{{м}} = {}; ω_{{max}} = {}, ω_{{min}} = {} {}",
+        j_or_none(e.j_fw),
         num(e.w_max.0, lang),
         num(e.w_min.0, lang),
         tr(lang, "рад/с", "рад/с", "rad/s")
     ));
     out.push(format!(
-        "J_{{м}} {} = μ_{{T}}·kl/(δω_{{ср}}^2) = {} {kgm2}; {} = {} {kgm2}",
+        "J_{{м}} {} = μ_{{T}}·kl/(δω_{{ср}}^2) = {}; {} = {}",
         tr(lang, "(Виттенбауэр)", "(Віттенбауер)", "(Wittenbauer)"),
-        num(d.diagrams.wittenbauer.j_fw, lang),
+        j_or_none(d.diagrams.wittenbauer.j_fw),
         tr(lang, "Меркин", "Меркін", "Merkin"),
-        num(d.diagrams.merkin.j_fw, lang)
+        j_or_none(d.diagrams.merkin.j_fw)
     ));
+    if e.j_fw <= 0.0 {
+        out.push(format!("{none}: δ = {}", num(e.delta(), lang)));
+        return out;
+    }
     let z = &d.size;
     let kind = match z.kind {
         FlywheelKind::Rim => tr(lang, "обод", "обід", "rim"),

@@ -194,7 +194,12 @@ fn lines(s: &Solved, lang: Lang) -> Vec<String> {
                     }
                 ),
                 format!(
-                    "{n}: R_{{n1}} = Q, R_{{n2}} = Q + 2G; P = (Q·k_{{1}} + (Q + 2G)·k_{{2}})/d = {} {newton}; {}: P = Q·f_{{2}} = {} {newton}",
+                    "{n}: R_{{n1}} = Q, R_{{n2}} = Q + 2G; P = {} = {} {newton}; {}: P = Q·f_{{2}} = {} {newton}",
+                    match t.slide {
+                        None => "(Q·k_{1} + (Q + 2G)·k_{2})/d",
+                        Some(crate::forces::friction::Slide::OnRollers) => "Q·f_{1}",
+                        Some(crate::forces::friction::Slide::OnPlane) => "(Q + 2G)·f_{2}",
+                    },
                     num(t.p, lang),
                     word(lang, "без катков", "без котків", "without rollers"),
                     num(t.p_sliding, lang)

@@ -30,7 +30,7 @@ mod wedge;
 
 pub use incline::{incline_twin, InclineTwin};
 pub use journal::{journal_twin, JournalTwin};
-pub use rolling::{rolling_twin, RollingTwin};
+pub use rolling::{rolling_twin, RollingTwin, Slide};
 pub use screw::{screw_twin, ScrewTwin};
 pub use wedge::{wedge_twin, WedgeTwin};
 

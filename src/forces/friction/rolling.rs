@@ -2,7 +2,10 @@
 //! rollers of weight G and diameter d. The normal reactions are shifted forward by the
 //! coefficients of rolling friction k₁ (load/rollers) and k₂ (rollers/plane); the moments
 //! about the rollers' contact with the plane give `P·d = Q·k₁ + (Q + 2G)·k₂`. Rolling is pure
-//! when `k/h < f` at each contact. Without rollers the load slides: `P = Q·f₂`.
+//! when `k/h < f` at each contact; where it is not, the rollers slide and the force is the
+//! sliding one: the cheaper of the load sliding on the rollers (`Q·f₁`, when `k₁/h ≥ f₁`) and
+//! the load sliding on the plane with its rollers (`(Q + 2G)·f₂`, when `k₂/h ≥ f₂`) — rolling
+//! would cost more than either. Without rollers the load slides: `P = Q·f₂`.
 //!
 //! The seed writes the plane's reaction as `R_n1`; it is `R_n2 = Q + 2G` (an erratum).
 //!
@@ -41,10 +44,41 @@ pub struct RollingTwin {
     pub ratio2: f64,
     /// Pure rolling at both contacts: `k₁/h < f₁` and `k₂/h < f₂`.
     pub pure: bool,
-    /// The force to move the load on rollers, `(Q·k₁ + (Q + 2G)·k₂)/d`, N.
+    /// The force to roll the load on its rollers, `(Q·k₁ + (Q + 2G)·k₂)/d`, N.
+    pub p_rolling: f64,
+    /// Where the rollers slide when rolling is not pure (the cheaper sliding contact).
+    pub slide: Option<Slide>,
+    /// The force to move the load on its rollers, N: `p_rolling` when rolling is pure, else
+    /// the sliding force at `slide`.
     pub p: f64,
     /// The force to slide it without rollers, `Q·f₂`, N.
     pub p_sliding: f64,
+}
+
+/// Where rollers that do not roll purely slide.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Slide {
+    /// The load slides on the rollers' tops: `P = Q·f₁`.
+    OnRollers,
+    /// The load slides on the plane with its rollers: `P = (Q + 2G)·f₂`.
+    OnPlane,
+}
+
+impl Slide {
+    /// The sliding pair as an incline: the load pressing on it and its f.
+    pub fn incline(self, c: &Rolling) -> Incline {
+        let (load, f) = match self {
+            Slide::OnRollers => (c.load, c.f1),
+            Slide::OnPlane => (c.load + 2.0 * c.roller_weight, c.f2),
+        };
+        Incline {
+            load,
+            f,
+            alpha: 0.0,
+            beta: 0.0,
+            motion: Motion::Up,
+        }
+    }
 }
 
 /// The twin of W3.
@@ -52,13 +86,29 @@ pub fn rolling_twin(c: &Rolling) -> RollingTwin {
     let r_n2 = c.load + 2.0 * c.roller_weight;
     let ratio1 = c.k1 / c.diameter;
     let ratio2 = c.k2 / c.diameter;
+    let p_rolling = (c.load * c.k1 + r_n2 * c.k2) / c.diameter;
+    let pure = ratio1 < c.f1 && ratio2 < c.f2;
+    // Not pure: some contact's rolling costs more than its sliding; the load moves the
+    // cheaper way (either sliding force is then at most the rolling one).
+    let (on_rollers, on_plane) = (c.load * c.f1, r_n2 * c.f2);
+    let slide = (!pure).then_some(if on_rollers <= on_plane {
+        Slide::OnRollers
+    } else {
+        Slide::OnPlane
+    });
     RollingTwin {
         r_n1: c.load,
         r_n2,
         ratio1,
         ratio2,
-        pure: ratio1 < c.f1 && ratio2 < c.f2,
-        p: (c.load * c.k1 + r_n2 * c.k2) / c.diameter,
+        pure,
+        p_rolling,
+        slide,
+        p: match slide {
+            None => p_rolling,
+            Some(Slide::OnRollers) => on_rollers,
+            Some(Slide::OnPlane) => on_plane,
+        },
         p_sliding: c.load * c.f2,
     }
 }
@@ -288,13 +338,25 @@ pub(super) fn solve(
     };
     let (mut sliding, slid, _) = polygon(case, &plane, &incline_twin(&plane), ctx, wrap)?;
     sliding.kind = DrawingKind::Sliding;
+    let mut drawings = vec![scheme, sliding, balance];
+    // Rollers that slide: the force is the sliding one, read off that pair's polygon.
+    let (p_read, p_crossing) = match twin.slide {
+        None => (p1 + p2, None),
+        Some(at) => {
+            let pair = at.incline(c);
+            let (mut d, read, _) = polygon(case, &pair, &incline_twin(&pair), ctx, wrap)?;
+            d.kind = DrawingKind::Sliding;
+            drawings.push(d);
+            (read.p, Some(read.crossing_deg))
+        }
+    };
     let readings = vec![
         reading(
             "P",
             (Symbol::Force, subject("P", name)),
-            p1 + p2,
+            p_read,
             twin.p,
-            None,
+            p_crossing,
         ),
         reading(
             "P_{ск}",
@@ -314,10 +376,16 @@ pub(super) fn solve(
             twin.ratio2,
             verdict(twin.ratio2, c.f2),
             c.f2,
-            if twin.pure {
-                "pure rolling"
-            } else {
-                "the rollers slide"
+            match twin.slide {
+                None => "pure rolling".to_string(),
+                Some(Slide::OnRollers) => format!(
+                    "the rollers slide: the load slides on them, P = Q·f₁ = {} N (rolling would take {} N)",
+                    twin.p, twin.p_rolling
+                ),
+                Some(Slide::OnPlane) => format!(
+                    "the rollers slide: the load slides on the plane with them, P = (Q + 2G)·f₂ = {} N (rolling would take {} N)",
+                    twin.p, twin.p_rolling
+                ),
             }
         ),
         format!(
@@ -329,7 +397,7 @@ pub(super) fn solve(
     ];
     Ok(Solved {
         case: case.clone(),
-        drawings: vec![scheme, sliding, balance],
+        drawings,
         readings,
         notes,
     })

@@ -195,6 +195,54 @@ fn w3_read_at_half_a_millimetre_shows_a_percent_level_error() {
     assert!(s.notes.iter().any(|n| n.contains("R_n1")));
 }
 
+/// Rollers whose rolling resistance exceeds the friction (k/h ≥ f): they slide, and the force
+/// is the sliding one — Q·f₁ = 1000 N when the load slides on them (rolling would take
+/// (Q·k₁ + (Q + 2G)·k₂)/d = 10 050 N), (Q + 2G)·f₂ when the plane's contact is the cheaper —
+/// read off that pair's own polygon.
+#[test]
+fn rollers_that_slide_take_the_sliding_force() {
+    let big = Rolling {
+        k1: 0.05,
+        k2: 0.05,
+        f1: 0.1,
+        f2: 0.1,
+        ..w3()
+    };
+    let t = rolling_twin(&big);
+    assert!(!t.pure);
+    assert!(close(t.p_rolling, 10_050.0, 1e-12), "{}", t.p_rolling);
+    assert_eq!(t.slide, Some(Slide::OnRollers));
+    assert!(close(t.p, 1000.0, 1e-12), "{}", t.p);
+    // Only the plane's contact slides, and it is the cheaper: (Q + 2G)·f₂.
+    let plane = Rolling {
+        k1: 0.05e-3,
+        k2: 0.05,
+        f1: 0.3,
+        f2: 0.1,
+        ..w3()
+    };
+    let t = rolling_twin(&plane);
+    assert_eq!(t.slide, Some(Slide::OnPlane));
+    assert!(close(t.p, 1010.0, 1e-12), "{}", t.p);
+    for c in [big, plane] {
+        let s = solve(&case("slide", CaseKind::Rolling(c)), &ctx(0.0))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let p = &s.readings[0].row;
+        assert!(
+            close(p.graphical, rolling_twin(&c).p, 1e-9),
+            "{} vs {}",
+            p.graphical,
+            p.analytic
+        );
+        assert!(close(p.analytic, rolling_twin(&c).p, 1e-15));
+        assert!(s
+            .notes
+            .iter()
+            .any(|n| n.contains("the rollers slide")
+                && n.contains(&format!("{} N", rolling_twin(&c).p))));
+    }
+}
+
 #[test]
 fn the_journals_reaction_is_the_helpers_tangent() {
     for sense in [1.0, -1.0] {
