@@ -327,3 +327,103 @@ fn small_profile_angles_put_the_exact_junction_on_the_tooth() {
         assert!(n.contains(&want), "{n}");
     }
 }
+
+#[test]
+fn scales_modules_and_speeds_out_of_range_are_refused_at_load() {
+    let rack = |line: &str| format!("[gears]\nmodule = 10.0\n[[gears.rack]]\nz = 13\n{line}\n");
+    let pair = |line: &str| {
+        format!("[gears]\nmodule = 14.0\n{line}\n[gears.pair]\nz = [13, 30]\nx = [0.8, 0.471]\n")
+    };
+    let cases: Vec<(String, &[&str])> = vec![
+        // lyon's hatcher panicked (≥ 1e45); 1e-9 … 1e-10 hatched a 1e7 mm tooth (24 GB).
+        (
+            rack("scale_l = 1e300"),
+            &["gears.rack[0].scale_l = 1e300", "4πm = 125.7 mm"],
+        ),
+        (rack("scale_l = 1e45"), &["gears.rack[0].scale_l = 1e45"]),
+        (
+            rack("scale_l = 1e-9"),
+            &[
+                "gears.rack[0].scale_l = 1e-9",
+                "from 2.513e-5 to 0.006283 m/mm",
+            ],
+        ),
+        (rack("scale_l = 1e-10"), &["gears.rack[0].scale_l = 1e-10"]),
+        (
+            rack("scale_l = 0.0063"),
+            &["gears.rack[0].scale_l = 0.0063"],
+        ),
+        (
+            pair("scale_l = 1e40"),
+            &["gears.scale_l = 1e40", "a_w + r_a1 + r_a2"],
+        ),
+        (pair("scale_l = 1e-7"), &["gears.scale_l = 1e-7"]),
+        (
+            rack("module = 1e-300"),
+            &["gears.rack[0].module", "from 0.01 to 1000 mm"],
+        ),
+        (pair("alpha = 1e30"), &["gears.alpha", "0° < α < 45°"]),
+        (
+            train("input = \"1\"\noutput = \"2\"\nmodule = 1e-300", ""),
+            &["planetary.module", "from 0.01 to 1000 mm"],
+        ),
+        (
+            train(
+                "input = \"1\"\noutput = \"2\"\nn_input = 100.0\nn_output = 1e300",
+                "",
+            ),
+            &["planetary.n_output", "at most 1e6"],
+        ),
+    ];
+    for (k, (text, expected)) in cases.iter().enumerate() {
+        // Under a 1 GB address-space limit: the refusal comes before any work.
+        let dir = scratch(&format!("range-{k}"));
+        let path = dir.join("scene.toml");
+        std::fs::write(&path, text).expect("write scene");
+        let o = std::process::Command::new("sh")
+            .arg("-c")
+            .arg("ulimit -v 1048576; exec \"$0\" check \"$1\"")
+            .arg(env!("CARGO_BIN_EXE_tmm"))
+            .arg(&path)
+            .output()
+            .expect("run tmm");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "case {k}: {err}");
+        assert!(!err.contains("panicked"), "case {k}: {err}");
+        for e in *expected {
+            assert!(err.contains(e), "case {k}: `{e}` not in\n{err}");
+        }
+    }
+}
+
+#[test]
+fn the_ends_of_the_documented_ranges_render() {
+    let out = scratch("range-ends");
+    let cases = [
+        // The figures at their least size (4πm = 125.7 mm as 20.3 mm; the pair's 21 mm), the
+        // modules at both ends, a profile angle of 1°, the most rack positions.
+        "[gears]\nmodule = 10.0\n[[gears.rack]]\nz = 13\nscale_l = 0.0062\n",
+        "[gears]\nmodule = 0.01\n[[gears.rack]]\nz = 13\n",
+        "[gears]\nmodule = 1000.0\n[[gears.rack]]\nz = 13\n",
+        "[gears]\nmodule = 10.0\nalpha = 1.0\n[[gears.rack]]\nz = 13\n",
+        "[gears]\nmodule = 10.0\n[[gears.rack]]\nz = 13\npositions = 5000\n",
+        "[gears]\nmodule = 14.0\nscale_l = 0.0316\n[gears.pair]\nz = [13, 30]\nx = [0.8, 0.471]\n",
+    ];
+    for (k, text) in cases.iter().enumerate() {
+        let path = out.join(format!("end{k}.toml"));
+        std::fs::write(&path, format!("{text}[plates]\nwanted = [\"gears\"]\n")).expect("write");
+        let o = tmm(&[
+            "render",
+            path.to_str().expect("utf-8"),
+            "--out",
+            out.to_str().expect("utf-8"),
+            "--format",
+            "svg",
+        ]);
+        assert!(
+            o.status.success(),
+            "case {k}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+}

@@ -282,7 +282,9 @@ pub fn generate(
                 &[],
             );
             let outline: Vec<DVec2> = region.iter().map(|p| flip(*p)).collect();
-            for stroke in crate::geom::hatch(&outline, UNDERCUT_HATCH_MM, side * PI / 4.0) {
+            let strokes = crate::geom::hatch(&outline, UNDERCUT_HATCH_MM, side * PI / 4.0)
+                .map_err(|e| GearError::Construction(format!("the undercut's hatching: {e}")))?;
+            for stroke in strokes {
                 rec.draw(
                     "hatching of the undercut",
                     Item::Segment(stroke),

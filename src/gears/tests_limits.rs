@@ -266,3 +266,19 @@ fn a_drafting_that_reads_the_output_as_zero_is_named() {
         other => panic!("{other:?}"),
     }
 }
+
+#[test]
+fn a_generation_far_larger_or_smaller_than_a_sheet_neither_panics_nor_runs_away() {
+    use crate::scale::{Quantity, Scale};
+    let c = Cutting::alone(0.01, 13, 0.0, BasicRack::GOST_13755).unwrap();
+    let ctx = Context::for_model_size(400.0, Drafting::new(0.0).unwrap()).unwrap();
+    let at = |mu: f64| generate::generate(&c, 90, Scale::new(mu, Quantity::Length).unwrap(), &ctx);
+    // μ_l = 1e-10: a 1.3e9 mm tooth; its undercut's hatching is refused before it is drawn
+    // (it took 24 GB).
+    match at(1e-10) {
+        Err(GearError::Construction(e)) => assert!(e.contains("hatching"), "{e}"),
+        other => panic!("{:?}", other.map(|g| g.junction)),
+    }
+    // μ_l = 1e300: lyon's hatcher unwrapped `None` on the collapsed outline.
+    assert!(at(1e300).is_ok());
+}

@@ -7,7 +7,7 @@ mod primitives;
 mod tolerance;
 
 pub use glam::DVec2;
-pub use hatch::hatch;
+pub use hatch::{hatch, HatchError, MAX_HATCH_LINES};
 pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};
 pub use primitives::{
     french_curve, nearest, rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,

@@ -10,11 +10,21 @@ use crate::gears::{
     BasicRack, Cutting, GearError, GearsSpec, Mesh, Pair, PairSpec, PlanetarySpec, RackSpec, Train,
     DEFAULT_POSITIONS,
 };
-use crate::scale::Quantity;
+use crate::scale::{Quantity, Scale};
 use serde::Deserialize;
 
 /// The key path of the section.
 const GEARS: &str = "gears";
+/// The smallest figure a scene's μ_l may draw, mm (its natural size: the meshing picture's
+/// a_w + r_a1 + r_a2, a generation's 4πm): below it the plate shows nothing legible.
+const MIN_FIGURE_MM: f64 = 20.0;
+/// The largest figure a scene's μ_l may draw, mm (5 m): far beyond any sheet, refused before
+/// anything is constructed; a figure between the sheet and this is refused by the plate,
+/// naming the largest μ_l that fits.
+const MAX_FIGURE_MM: f64 = 5000.0;
+/// The range of a module, mm.
+const MODULE_MM: (f64, f64) = (0.01, 1000.0);
+
 /// The most rack positions a scene may ask for.
 const MAX_POSITIONS: i64 = 5000;
 
@@ -99,9 +109,9 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
     const P: &str = "planetary";
     let key = |k: &str| join(P, k);
     let before = check.problems.len();
-    let module = raw.module.map_or(0.001, |m| {
-        check.in_range(&key("module"), m, 1000.0, "a module > 0 mm") * 1e-3
-    });
+    let module = raw
+        .module
+        .map_or(0.001, |m| module_mm(check, &key("module"), m));
     let mut shafts: Vec<String> = Vec::new();
     let mut wheels = Vec::new();
     if raw.wheel.is_empty() {
@@ -208,11 +218,14 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
         }
         n
     });
-    let n_output = check.positive_opt(
-        &key("n_output"),
-        raw.n_output,
-        "a required output speed > 0 rpm",
-    );
+    let n_output = raw.n_output.map(|n| {
+        check.in_range(
+            &key("n_output"),
+            n,
+            1e6,
+            "a required output speed > 0 rpm, at most 1e6",
+        )
+    });
     let count = raw.count.and_then(|c| match u32::try_from(c) {
         Ok(k) if (1..=12).contains(&k) => Some(k),
         _ => {
@@ -324,6 +337,54 @@ fn distinct_shafts(
     }
 }
 
+/// A module in mm within [`MODULE_MM`], in metres (0 after a problem).
+fn module_mm(check: &mut Checker, key: &str, v: f64) -> f64 {
+    let (lo, hi) = MODULE_MM;
+    if v.is_finite() && (lo..=hi).contains(&v) {
+        v * 1e-3
+    } else {
+        check.push(
+            key,
+            Some(number(v)),
+            format!("expected a module from {lo} to {hi} mm"),
+        );
+        0.0
+    }
+}
+
+/// A given μ_l must draw the figure of natural size `size` (m; `what` names it) between
+/// [`MIN_FIGURE_MM`] and [`MAX_FIGURE_MM`].
+fn figure(check: &mut Checker, key: &str, scale: Option<Scale>, size: f64, what: &str) {
+    let Some(scale) = scale else {
+        return;
+    };
+    let mm = size / scale.value();
+    if !(MIN_FIGURE_MM..=MAX_FIGURE_MM).contains(&mm) {
+        let sig = |v: f64| {
+            if v != 0.0 && !(1e-4..1e6).contains(&v.abs()) {
+                // 4 significant digits in exponent form (no 300-digit echo).
+                let t = format!("{v:.3e}");
+                let (mantissa, exp) = t.split_once('e').unwrap_or((&t, "0"));
+                let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+                format!("{mantissa}e{exp}")
+            } else {
+                crate::scale::format_sig(v, 4, crate::scale::Lang::En)
+            }
+        };
+        check.push(
+            key,
+            Some(sig(scale.value())),
+            format!(
+                "expected a scale μ_l from {} to {} m/mm: it draws {what} = {} mm as {} mm, and the figure must be {MIN_FIGURE_MM} to {MAX_FIGURE_MM} mm (legible, and within reach of a sheet)",
+                sig(size / MAX_FIGURE_MM),
+                sig(size / MIN_FIGURE_MM),
+                sig(size * 1e3),
+                sig(mm)
+            ),
+        );
+    }
+}
+
 /// A tooth number (5 … 1000).
 fn teeth(check: &mut Checker, key: &str, v: i64) -> u32 {
     match u32::try_from(v) {
@@ -369,9 +430,7 @@ pub(crate) fn gear_sections(
 fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
     let key = |k: &str| join(GEARS, k);
     let before = check.problems.len();
-    let module = raw.module.map(|m| {
-        check.in_range(&key("module"), m, 1000.0, "a module > 0 mm (at most 1000)") * 1e-3
-    });
+    let module = raw.module.map(|m| module_mm(check, &key("module"), m));
     let g = BasicRack::GOST_13755;
     let rack = BasicRack {
         alpha: raw
@@ -436,9 +495,7 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
         }
         names.push(name.clone());
         let m = match r.module {
-            Some(v) => Some(
-                check.in_range(&k("module"), v, 1000.0, "a module > 0 mm (at most 1000)") * 1e-3,
-            ),
+            Some(v) => Some(module_mm(check, &k("module"), v)),
             None => module,
         };
         if m.is_none() {
@@ -485,9 +542,21 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
                     c.sa() * 1e3
                 ),
             ),
-            Ok(c) => racks.push(RackSpec { name, cutting: c, positions, scale_l: scale }),
+            Ok(c) => {
+                figure(check, &k("scale_l"), scale, 4.0 * std::f64::consts::PI * c.module, "4πm");
+                racks.push(RackSpec { name, cutting: c, positions, scale_l: scale })
+            }
             Err(e) => check.push(k("x"), Some(number(x)), format!("a wheel that can be cut: {e}")),
         }
+    }
+    if let Some(p) = pair.and_then(|p| Pair::working(p).ok()) {
+        figure(
+            check,
+            &key("scale_l"),
+            scale_l,
+            p.a_w + p.ra[0] + p.ra[1],
+            "a_w + r_a1 + r_a2",
+        );
     }
     (check.problems.len() == before).then_some(GearsSpec {
         pair,
