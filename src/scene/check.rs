@@ -11,6 +11,9 @@ const M_PER_MM: f64 = 1e-3;
 /// can be formed and the constructions' tolerances lose their meaning.
 pub(crate) const MAX_MM: f64 = 1e6;
 
+/// The largest magnitude of a direction or crank angle of the mechanism, degrees.
+pub(crate) const MAX_DEG: f64 = 360.0;
+
 /// The largest link number a scene may give: a mechanism of the course has about ten links,
 /// and the per-link arrays of the analysis are sized by the largest number.
 pub(crate) const MAX_LINK: u32 = 99;
@@ -119,6 +122,18 @@ impl Checker {
     pub fn angle(&mut self, key: &str, v: Option<f64>, default_deg: f64) -> f64 {
         self.finite(key, v.unwrap_or(default_deg), "a finite angle in degrees")
             .to_radians()
+    }
+
+    /// A direction or crank angle of the mechanism in degrees, within ±[`MAX_DEG`], in
+    /// radians (1e30° has no meaning: its sine is rounding noise).
+    pub fn direction(&mut self, key: &str, v: Option<f64>, default_deg: f64) -> f64 {
+        self.bounded(
+            key,
+            v.unwrap_or(default_deg),
+            MAX_DEG,
+            "an angle in degrees within ±360",
+        )
+        .to_radians()
     }
 
     /// A finite number, or a problem and 0.

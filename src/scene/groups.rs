@@ -205,7 +205,7 @@ impl Builder<'_> {
     pub(super) fn dir(&mut self, key: &str, raw: Option<&RawDir>) -> Dir {
         match raw {
             None => Dir::Fixed(0.0),
-            Some(RawDir::Degrees(d)) => Dir::Fixed(self.check.angle(key, Some(*d), 0.0)),
+            Some(RawDir::Degrees(d)) => Dir::Fixed(self.check.direction(key, Some(*d), 0.0)),
             Some(RawDir::Along(a)) => {
                 let (from, on_from) = self.point(&join(key, "from"), a.from.as_ref());
                 let (to, on_to) = self.point(&join(key, "to"), a.to.as_ref());
@@ -215,7 +215,7 @@ impl Builder<'_> {
                     self.check
                         .push(join(key, "to"), Some(quoted(&to)), expected);
                 }
-                let angle = self.check.angle(&join(key, "angle"), a.angle, 0.0);
+                let angle = self.check.direction(&join(key, "angle"), a.angle, 0.0);
                 Dir::Along { from, to, angle }
             }
         }

@@ -82,7 +82,7 @@ impl Builder<'_> {
             (None, Some(_)) => {
                 let (point, _) = self.point(&join(base, "slider"), o.slider.as_ref());
                 let key = join(base, "dir");
-                let dir = self.check.angle(&key, o.dir, 0.0);
+                let dir = self.check.direction(&key, o.dir, 0.0);
                 if let Some((gi, guide)) = self.frame_guide_of(&point, groups) {
                     let tol = Tolerances::for_model_size(1.0).map_or(0.0, |t| t.parallel_sin);
                     if (dir - guide).cos().abs() <= tol {
