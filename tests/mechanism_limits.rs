@@ -80,3 +80,208 @@ fn a_huge_link_number_is_refused_at_load() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(files_under(&out.join("link-99")) >= 2);
 }
+
+/// §5: `positions.count` above ≈ 112 with the kinematics plate failed (exit 1, no key: the
+/// analytic table, one row per position, was taller than a sheet). The table is continued on
+/// further sheets; 1 and 2 positions (no diagrams) work as well.
+#[test]
+fn every_documented_position_count_draws_the_kinematics_plate() {
+    for n in [1, 2, 113, 200] {
+        let text = shaper_kinematics()
+            .replace("count = 12", &format!("count = {n}"))
+            .replace("[\"3\", \"10\"]", "[\"1\"]");
+        let name = format!("count-{n}");
+        let (o, out) = run_limited(&name, &text, &["render", "--format", "svg"]);
+        assert!(o.status.success(), "count {n}: {}", stderr(&o));
+        let dir = out.join(&name);
+        let sheets: Vec<String> = (1..20)
+            .map(|k| {
+                let file = if k == 1 {
+                    "kinematics.svg".to_string()
+                } else {
+                    format!("kinematics-{k}.svg")
+                };
+                std::fs::read_to_string(dir.join(file)).unwrap_or_default()
+            })
+            .filter(|s| !s.is_empty())
+            .collect();
+        assert!(!sheets.is_empty(), "count {n}: no kinematics sheet");
+        // Every position's row is in the table: the last label appears, and a long table is
+        // continued under its title.
+        let all = sheets.concat();
+        assert!(all.contains(&format!(">{n}<")), "count {n}: no row {n}");
+        if n > 112 {
+            assert!(all.contains("(продолжение)"), "count {n}: not continued");
+        }
+    }
+}
+
+/// §5: given scales and poles of the mechanism and the kinematic study, and its angles, are
+/// refused at load with the key and the range outside it (μ_l = 1e40 drew an invisible
+/// plate, exit 0; 1e-300 failed with exit 1 and no key; 1e30° was taken), and both ends of
+/// each range are honoured: the coarse end draws (exit 0), the fine end draws a drawing too
+/// large for a sheet, refused naming the key (exit 2).
+#[test]
+fn scales_poles_and_angles_outside_their_ranges_are_refused_at_load() {
+    // The shaper: r = 0.14 m, ω₁ = 5π rad/s; the ranges draw r, ω₁r, ω₁²r 0.1 … 1e4 mm, 2π
+    // 10 … 1e4 mm; poles 1 … 500 mm.
+    let w = 5.0 * std::f64::consts::PI;
+    let ends = [
+        (
+            "scale_l = 0.0025",
+            "scale_l",
+            0.14 / 0.1,
+            0.14 / 1e4,
+            "mechanism.scale_l",
+        ),
+        (
+            "scale_v = 0.05",
+            "scale_v",
+            w * 0.14 / 0.1,
+            w * 0.14 / 1e4,
+            "kinematics.scale_v",
+        ),
+        (
+            "scale_a = 1.0",
+            "scale_a",
+            w * w * 0.14 / 0.1,
+            w * w * 0.14 / 1e4,
+            "kinematics.scale_a",
+        ),
+        (
+            "scale_s = 0.005",
+            "scale_s",
+            0.14 / 0.1,
+            0.14 / 1e4,
+            "kinematics.scale_s",
+        ),
+    ];
+    for (given, key, coarse, fine, full) in ends {
+        let with = |v: f64| shaper_kinematics().replace(given, &format!("{key} = {v:e}"));
+        let (o, _) = run_limited(
+            &format!("{key}-coarse"),
+            &with(coarse),
+            &["render", "--format", "svg"],
+        );
+        assert!(o.status.success(), "{key} = {coarse}: {}", stderr(&o));
+        let (o, _) = run_limited(&format!("{key}-fine"), &with(fine), &["check"]);
+        assert_eq!(o.status.code(), Some(2), "{key} = {fine}: {}", stderr(&o));
+        assert!(stderr(&o).contains(full), "{key} = {fine}: {}", stderr(&o));
+        for bad in [coarse * 1.01, fine / 1.01, 1e40, 1e-300] {
+            assert_refused(
+                &format!("{key}-bad"),
+                &with(bad),
+                &[full, "between 0.1 and 10000 mm"],
+            );
+        }
+    }
+    for (given, key, lo, hi) in [
+        ("scale_phi = 0.052", "scale_phi", 0.0, 0.0),
+        ("pole_h1 = 28.0", "pole_h1", 1.0, 500.0),
+        ("pole_h2 = 7.5", "pole_h2", 1.0, 500.0),
+    ] {
+        let with = |v: f64| shaper_kinematics().replace(given, &format!("{key} = {v:e}"));
+        let full = format!("kinematics.{key}");
+        if lo > 0.0 {
+            let (o, _) = run_limited(
+                &format!("{key}-lo"),
+                &with(lo),
+                &["render", "--format", "svg"],
+            );
+            assert!(o.status.success(), "{key} = {lo}: {}", stderr(&o));
+            for bad in [lo / 1.01, hi * 1.01, 1e40, 1e-300] {
+                assert_refused(
+                    &format!("{key}-bad"),
+                    &with(bad),
+                    &[&full, "from 1 to 500 mm"],
+                );
+            }
+        } else {
+            for bad in [
+                std::f64::consts::TAU / 9.9,
+                std::f64::consts::TAU / 1.01e4,
+                1e40,
+                1e-300,
+            ] {
+                assert_refused(
+                    &format!("{key}-bad"),
+                    &with(bad),
+                    &[&full, "between 10 and 10000 mm"],
+                );
+            }
+        }
+    }
+    for (given, to, key) in [
+        (
+            "start = \"working-stroke\"",
+            "start = 1e30",
+            "positions.start",
+        ),
+        (
+            "dir = 0.0, offset",
+            "dir = -1e30, offset",
+            "mechanism.group[1].guide.dir",
+        ),
+        ("slide = 90.0", "slide = 3601.0", "mechanism.group[1].slide"),
+    ] {
+        let text = shaper_kinematics().replace(given, to);
+        assert_refused("angle", &text, &[key, "within ±360"]);
+    }
+    // 3600° itself is an angle: the guide turned ten full turns is the same guide.
+    let text = shaper_kinematics().replace("dir = 0.0, offset", "dir = 3600.0, offset");
+    let (o, _) = run_limited("angle-3600", &text, &["check"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}
+
+/// §3: the force analysis at a change point named `kinematics.acceleration_positions`; it
+/// names `forces.positions` and the position (a parallelogram four-bar folded at φ₁ = 0).
+#[test]
+fn forces_at_a_change_point_name_forces_positions() {
+    let text = r#"
+[[mechanism.fixed]]
+name = "O_1"
+at = [0.0, 0.0]
+[[mechanism.fixed]]
+name = "O_3"
+at = [200.0, 0.0]
+[mechanism.crank]
+centre = "O_1"
+pin = "A"
+length = 100.0
+omega = 10.0
+sense = "ccw"
+[[mechanism.group]]
+kind = "RRR"
+links = [2, 3]
+a = "A"
+la = 200.0
+b = "O_3"
+lb = 100.0
+joint = "B"
+branch = "left"
+[[mechanism.output]]
+rocker = 3
+[positions]
+start = 0.0
+[forces]
+positions = ["1"]
+[[forces.link]]
+link = 2
+mass = 2.0
+centre = "A"
+[[forces.resistance]]
+link = 3
+moment = 10.0
+[plates]
+wanted = ["forces"]
+"#;
+    let (o, out) = run_limited("change-point", text, &["render", "--format", "svg"]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("forces.positions: position 1: the force analysis needs its velocity plan"),
+        "{err}"
+    );
+    assert!(!err.contains("kinematics.acceleration_positions"), "{err}");
+    assert_eq!(files_under(&out), 0);
+}

@@ -115,6 +115,17 @@ pub enum KinError {
         /// Why its velocity plan was refused.
         why: String,
     },
+    /// The force analysis asks for a position whose velocity or acceleration plan cannot be
+    /// built (a change point, a toggle).
+    #[error("forces.positions: position {position}: the force analysis needs its {} plan, which cannot be built: {why}", kind_name(*.kind))]
+    ForcePosition {
+        /// The position.
+        position: String,
+        /// Which plan.
+        kind: PlanKind,
+        /// Why the plan cannot be built.
+        why: String,
+    },
     /// No round scale can be chosen for a size.
     #[error("no round scale μ_{} can be chosen for the size {value}", .quantity.symbol())]
     NoScale {
@@ -129,6 +140,16 @@ pub enum KinError {
         /// The crank angle, degrees.
         phi_deg: f64,
         /// Why the mechanism cannot pass it.
+        detail: String,
+    },
+    /// A diagram over the crank turn across a leap: a link turns by more than 45° between
+    /// neighbouring samples of the turn (a slotted link whose pin passes through or close by
+    /// its pivot), so the charted motion jumps between the positions.
+    #[error("the diagrams over a crank turn are refused: at φ₁ = {phi_deg:.2}° {detail}; the method of chords across it is meaningless")]
+    Leap {
+        /// The crank angle of the leap, degrees.
+        phi_deg: f64,
+        /// Which links turn by how much, and the nearest position.
         detail: String,
     },
     /// A position index outside the plan of positions.
@@ -274,7 +295,7 @@ fn full_turn(plan: &PositionPlan) -> Result<(), KinError> {
                     (phi, pose.dir[l]),
                 )
                 .rem_euclid(TAU);
-                return Err(KinError::NoFullTurn {
+                return Err(KinError::Leap {
                     phi_deg: at.to_degrees(),
                     detail: format!(
                         "{} within {step}° of the crank ({}): the charted motion jumps there",

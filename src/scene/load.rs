@@ -126,6 +126,9 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         mechanism.as_ref(),
         positions.count,
     );
+    if let Some(m) = &mechanism {
+        super::drawing::drawing_ranges(&mut check, m, scale_l, &kinematics);
+    }
     let forces = raw
         .forces
         .map(|f| forces(&mut check, f, mechanism.as_ref(), positions.count));
@@ -241,7 +244,9 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
             check.push("positions.start", Some(quoted(&w)), expected);
             Start::WorkingStroke
         }
-        Some(RawStart::Degrees(d)) => Start::Angle(check.angle("positions.start", Some(d), 0.0)),
+        Some(RawStart::Degrees(d)) => {
+            Start::Angle(check.angle("positions.start", Some(d), 0.0))
+        }
     };
     let continuity = match raw.assembly.as_deref() {
         None | Some("side") => false,

@@ -3,6 +3,7 @@
 mod balancing;
 mod cam;
 mod check;
+mod drawing;
 mod dynamics;
 mod error;
 mod forces;

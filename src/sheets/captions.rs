@@ -65,6 +65,10 @@ pub(super) enum Text {
     Millimetre,
     /// No diagrams over the turn: the mechanism cannot pass φ₁ = …
     NoDiagrams,
+    /// No diagrams over the turn: a link leaps near φ₁ = …
+    NoDiagramsLeap,
+    /// (continued): the title of a table's further part
+    Continued,
     /// Lengths read off the drawing to …
     ReadTo,
     /// Lengths read off the drawing exactly
@@ -175,6 +179,12 @@ impl Text {
                 "Діаграми за кутом повороту не будуються: механізм не проходить положення",
                 "No diagrams over the crank turn: the mechanism cannot pass",
             ),
+            Text::NoDiagramsLeap => (
+                "Диаграммы по углу поворота не строятся: звено поворачивается скачком около положения",
+                "Діаграми за кутом повороту не будуються: ланка повертається стрибком біля положення",
+                "No diagrams over the crank turn: a link turns by a leap near",
+            ),
+            Text::Continued => ("(продолжение)", "(продовження)", "(continued)"),
             Text::ReadTo => (
                 "Длины считаны с чертежа с точностью",
                 "Довжини зчитано з креслення з точністю",

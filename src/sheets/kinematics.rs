@@ -6,7 +6,7 @@
 
 use super::captions::{unit_in, Text};
 use super::fit::{self, fit_scale, Extent, Fit};
-use super::layout::{lay_out, table, Block, ScaleKey};
+use super::layout::{lay_out, split_table, table, Block, ScaleKey};
 use super::pack::sheet_overflow;
 use super::BuildError;
 use crate::geom::DVec2;
@@ -178,19 +178,32 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         ));
     }
     for r in &a.refusals {
-        if let crate::kinematics::KinError::NoFullTurn { phi_deg, .. } = r {
-            lines.push(format!(
-                "{} φ_{{1}} = {}°",
-                Text::NoDiagrams.get(lang),
-                format_fixed(*phi_deg, 1, lang)
-            ));
+        let (text, phi_deg) = match r {
+            crate::kinematics::KinError::NoFullTurn { phi_deg, .. } => (Text::NoDiagrams, phi_deg),
+            crate::kinematics::KinError::Leap { phi_deg, .. } => (Text::NoDiagramsLeap, phi_deg),
+            _ => continue,
+        };
+        let line = format!(
+            "{} φ_{{1}} = {}°",
+            text.get(lang),
+            format_fixed(*phi_deg, 1, lang)
+        );
+        // The diagrams and the rocker's diagram refused for one reason: one line.
+        if !lines.contains(&line) {
+            lines.push(line);
         }
     }
     blocks.push(Block::Text {
         lines,
         size_mm: 3.5,
     });
-    blocks.extend(tables(&a, scene, lang).into_iter().map(Block::Table));
+    // The analytic table has a row per position: continued on further sheets when long.
+    blocks.extend(
+        tables(&a, scene, lang)
+            .into_iter()
+            .flat_map(|t| split_table(&sheet, t, lang))
+            .map(Block::Table),
+    );
     let title = super::title_block(scene, Text::KinematicAnalysis.get(lang), sc.l, lang);
     lay_out(sheet, blocks, "kinematics", &title, lang)
 }

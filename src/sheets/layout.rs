@@ -123,6 +123,42 @@ pub(super) fn table(
 }
 
 /// Room above a table's grid for its title, mm.
+/// A table too tall for an empty sheet cut into parts that each fit, the rows in order; the
+/// parts after the first titled "… (continued)". A table that fits, or whose width alone does
+/// not, is returned whole.
+pub(super) fn split_table(sheet: &Sheet, t: TableBlock, lang: Lang) -> Vec<TableBlock> {
+    let size = t.size() + DVec2::new(0.0, title_height(&t));
+    if sheet_overflow(sheet, size) <= 1.0 {
+        return vec![t];
+    }
+    // The tallest room the table's width fits.
+    let height = super::pack::rooms(sheet)
+        .iter()
+        .filter(|r| r.x >= size.x)
+        .map(|r| r.y)
+        .fold(0.0f64, f64::max);
+    // Rows under the heading row and the title.
+    let fit = ((height - title_height(&t)) / t.row_height()).floor() - 1.0;
+    if fit.is_nan() || fit < 1.0 {
+        return vec![t];
+    }
+    let per = fit as usize;
+    let continued = format!("{} {}", t.title, Text::Continued.get(lang));
+    t.rows
+        .chunks(per)
+        .enumerate()
+        .map(|(i, rows)| TableBlock {
+            title: if i == 0 {
+                t.title.clone()
+            } else {
+                continued.clone()
+            },
+            rows: rows.to_vec(),
+            ..t.clone()
+        })
+        .collect()
+}
+
 fn title_height(t: &TableBlock) -> f64 {
     if t.title.is_empty() {
         0.0

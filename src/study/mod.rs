@@ -18,8 +18,8 @@ use crate::kinematics::{
     self, acceleration_indices, plans, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
 };
 use crate::linkage::{
-    plain, plan_poses, plan_positions, KinPlan, LinkageError, Mechanism, PlanPoses, PlanRequest,
-    PositionPlan,
+    plain, plan_poses, plan_positions, KinPlan, LinkageError, Mechanism, PlanKind, PlanPoses,
+    PlanRequest, PositionPlan,
 };
 use crate::report::{Report, Table};
 use crate::scale::{Quantity, Scale};
@@ -180,7 +180,7 @@ type Cached<T> = Result<Arc<T>, StudyError>;
 /// A chart refused because the mechanism cannot pass part of the turn: no chart, a note.
 fn refusable<T>(r: MaybeCached<T>, refusals: &mut Vec<KinError>) -> MaybeCached<T> {
     match r {
-        Err(StudyError::Kinematics(e @ KinError::NoFullTurn { .. })) => {
+        Err(StudyError::Kinematics(e @ (KinError::NoFullTurn { .. } | KinError::Leap { .. }))) => {
             refusals.push(e);
             Ok(None)
         }
@@ -513,14 +513,28 @@ impl<'s> Session<'s> {
             let spec = self.force_spec("the force analysis")?;
             let plan = self.positions(sc.l)?;
             let vel = self.velocity(sc.l, sc.v, k)?;
-            let Some(vp) = vel.plan() else {
-                return Err(KinError::NoVelocityPlan {
-                    position: plan.positions[k].label.clone(),
-                    why: "the force analysis needs it".into(),
+            let position = plan.positions[k].label.clone();
+            let vp = match vel.as_ref() {
+                Velocity::Built { plan: vp, .. } => vp,
+                Velocity::Refused(why) => {
+                    return Err(KinError::ForcePosition {
+                        position,
+                        kind: PlanKind::Velocity,
+                        why: why.clone(),
+                    }
+                    .into())
                 }
-                .into());
             };
-            let ap = self.acceleration(sc, k)?;
+            // The acceleration plan of a force position is the force analysis's, not one of
+            // `kinematics.acceleration_positions`: its failure names `forces.positions`.
+            let ap = self.acceleration(sc, k).map_err(|e| match e {
+                StudyError::Kinematics(e) => StudyError::from(KinError::ForcePosition {
+                    position,
+                    kind: PlanKind::Acceleration,
+                    why: e.to_string(),
+                }),
+                other => other,
+            })?;
             let w1 = self.w1()?;
             let f = crate::forces::analyse(spec, &plan, k, sc.l, vp, &ap.0, w1, &self.ctx()?)?;
             self.logged("force polygons", &plan.positions[k].label, f.scale_f);
