@@ -1,5 +1,5 @@
 //! The fuzz target's body (`fuzz/src/lib.rs`: scene text → load → every study → every plate
-//! in memory) run as a normal test: over the committed scenes and seeds (the CI smoke of the
+//! in memory) run as a normal test: over the committed scenes (the CI smoke of the
 //! fuzzer, no libFuzzer needed). A panic fails the test. Minimised findings of the fuzz runs
 //! are kept here too (see `fuzz/README.md`).
 
@@ -30,9 +30,8 @@ fn run_all(files: &[PathBuf]) {
 }
 
 #[test]
-fn committed_scenes_and_seeds_run_through_the_fuzz_target() {
-    let mut files = scenes("constructions");
-    files.extend(scenes("fuzz/seeds"));
+fn committed_scenes_run_through_the_fuzz_target() {
+    let files = scenes("constructions");
     assert!(files.len() >= 20, "{} files", files.len());
     run_all(&files);
 }
