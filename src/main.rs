@@ -205,7 +205,33 @@ fn plates(
     drafting: Drafting,
 ) -> Result<Vec<(PlateKind, tmm::plate::Plate)>, Failure> {
     let session = Session::new(s, drafting);
-    sheets::build_all(&session, lang).map_err(|(kind, e)| build_err(s, kind, e))
+    sheets::build_all(&session, lang)
+        .map_err(|(kind, e)| build_err(s, kind, refit(s, e, drafting, lang)))
+}
+
+/// A drawing too large at a scale the scene gives: the scale suggested verified on every
+/// plate the key sets (the suggestion of the first drawing alone may not fit the others).
+fn refit(s: &Scene, e: sheets::BuildError, drafting: Drafting, lang: Lang) -> sheets::BuildError {
+    match e {
+        sheets::BuildError::TooLarge {
+            what,
+            need,
+            fits: Some((key, first)),
+        } => {
+            let fit = std::fs::read_to_string(&s.path)
+                .ok()
+                .and_then(|text| {
+                    sheets::verified_fit(&text, &s.path, key.key, first, drafting, lang)
+                })
+                .unwrap_or(first);
+            sheets::BuildError::TooLarge {
+                what,
+                need,
+                fits: Some((key, fit)),
+            }
+        }
+        e => e,
+    }
 }
 
 fn build_err(scene: &Scene, kind: PlateKind, e: sheets::BuildError) -> Failure {

@@ -222,9 +222,9 @@ pub fn format_sig(x: f64, sig: usize, lang: Lang) -> String {
         };
     }
     let mag = x.abs().log10().floor() as i32;
-    // Beyond 15 integer digits or 15 decimals, the exponent form (`1,5e−14`, `1e300`):
-    // never a long run of digits nor the significant digits cut off.
-    if mag >= 15 || sig as i32 - 1 - mag > 15 {
+    // Beyond 15 integer digits, below 1e-6 or beyond 15 decimals, the exponent form
+    // (`1,73e−13`, `1e300`): never a long run of digits nor the significant digits cut off.
+    if !(-6..15).contains(&mag) || sig as i32 - 1 - mag > 15 {
         let sig = sig.max(1);
         let text = format!("{:.*e}", sig - 1, x);
         let (mantissa, exp) = text.split_once('e').unwrap_or((&text, "0"));
@@ -319,6 +319,10 @@ mod tests {
         assert_eq!(format_sig(1.5e-15, 6, Lang::En), "1.5e−15");
         assert_eq!(format_sig(123456.0, 4, Lang::En), "123456");
         assert_eq!(format_sig(0.000247487, 6, Lang::Ru), "0,000247487");
+        // Below 1e-6 the exponent form, however few the digits (no run of ten zeros).
+        assert_eq!(format_sig(1.73e-13, 3, Lang::Ru), "1,73e−13");
+        assert_eq!(format_sig(1.2e-6, 3, Lang::En), "0.0000012");
+        assert_eq!(format_sig(9.9e-7, 3, Lang::En), "9.9e−7");
         assert_eq!(format_sig(1e14, 6, Lang::En), "100000000000000");
     }
 

@@ -212,7 +212,14 @@ fn a_given_scale_too_large_for_a_sheet_is_bad_input() {
     let o = tmm(&["check", path.to_str().expect("utf-8 path")]);
     let err = text(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains("kinematics.scale_v = 0.004"), "{err}");
+    // The scale that fits every drawing μ_v sets, on every plate (0.004 fitted the first
+    // velocity plan only).
+    assert!(err.contains("kinematics.scale_v = 0.025"), "{err}");
+    let fixed = edited_scene(&dir, "fixed.toml", |t| {
+        t.replace("scale_v = 0.05 ", "scale_v = 0.025 ")
+    });
+    let o = tmm(&["check", fixed.to_str().expect("utf-8 path")]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -543,4 +550,60 @@ fn a_work_that_is_a_rounding_residue_is_printed_as_zero() {
             "dir {dir}: {err}"
         );
     }
+}
+
+/// Scales of 1e40 (an empty plate, exit 0) and 1e-40 (exit 1 with no key) in every section are
+/// refused at load (exit 2) naming the key and the range: a scale with a reference in the scene
+/// by what it draws of it, the dynamics' and the friction cases' by a fixed range.
+#[test]
+fn scales_far_out_of_range_are_refused_at_load_in_every_section() {
+    let dir = scratch("scales-everywhere");
+    let cases: [(&str, &str, &str, &str); 7] = [
+        ("cam-seed000", "[cam]\n", "scale_s", "cam.scale_s"),
+        ("cam-seed000", "[cam]\n", "scale_phi", "cam.scale_phi"),
+        (
+            "rotor-dynamic",
+            "[balancing]\n",
+            "scale_mr",
+            "balancing.scale_mr",
+        ),
+        ("shaper", "[forces]\n", "scale_f", "forces.scale_f"),
+        ("shaper", "[dynamics]\n", "scale_j", "dynamics.scale_j"),
+        ("shaper", "[dynamics]\n", "scale_phi", "dynamics.scale_phi"),
+        (
+            "friction",
+            "[[friction.case]]\n",
+            "scale_f",
+            "friction.case[0].scale_f",
+        ),
+    ];
+    for (scene, header, k, key) in cases {
+        let source = std::fs::read_to_string(root().join(format!("constructions/{scene}.toml")))
+            .expect("scene");
+        // Drop the scene's own value of the key in that section, then give the bad one.
+        let at = source.find(header).expect("section") + header.len();
+        let (head, tail) = source.split_at(at);
+        let tail: String = {
+            let end = tail.find("\n[").unwrap_or(tail.len());
+            let (section, rest) = tail.split_at(end);
+            let kept: Vec<&str> = section
+                .lines()
+                .filter(|l| !l.trim_start().starts_with(&format!("{k} ")))
+                .collect();
+            format!("{}{rest}", kept.join("\n"))
+        };
+        for v in ["1e40", "1e-40"] {
+            let path = dir.join(format!("{scene}-{k}-{v}.toml"));
+            std::fs::write(&path, format!("{head}{k} = {v}\n{tail}")).expect("write");
+            let o = tmm(&["check", path.to_str().expect("utf-8 path")]);
+            let err = text(&o.stderr);
+            assert_eq!(o.status.code(), Some(2), "{key} = {v}: {err}");
+            assert!(
+                err.contains(&format!("{key} = {v}: expected")),
+                "{key} = {v}: {err}"
+            );
+            assert!(err.contains(" from "), "{key} = {v}: no range in {err}");
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }

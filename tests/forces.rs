@@ -607,3 +607,28 @@ fn a_gear_drive_that_holds_the_crank_back_pushes_on_the_other_flank() {
         );
     }
 }
+
+/// The v-engine's h_0_3 and h_0_5 (the arm of a reaction through a slider's own guide) are
+/// rounding residues against 0: judged by the zero rule against the mechanism's size, never
+/// ±100 % (JSON `rel_error` ±1).
+#[test]
+fn arms_that_vanish_are_judged_as_zero_not_as_a_hundred_per_cent() {
+    let r = support::report_json("constructions/v-engine.toml", None);
+    let arms: Vec<&serde_json::Value> = r["rows"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .filter(|row| {
+            row["quantity"]
+                .as_str()
+                .is_some_and(|q| q.starts_with("h_0_"))
+        })
+        .collect();
+    assert_eq!(arms.len(), 4);
+    for row in arms {
+        let analytic = row["analytic"].as_f64().expect("analytic");
+        assert!(analytic.abs() < 1e-12, "{row}");
+        assert!(row["rel_error"].is_null(), "{row}");
+        assert!(row["abs_error"].as_f64().expect("abs") < 1e-12, "{row}");
+    }
+}

@@ -137,7 +137,7 @@ fn plain_approximations(path: &Path, f: f64, radius: f64, steps: usize) -> Optio
 
 /// f = 1 with 55 mm journals (every journal, the crank pin too) at position 3: the textbook's
 /// successive approximations need thousands of steps (they used to stop at 200 and call it a
-/// lock); solved directly, M_bal_f = 1300.48 N·m — what the plain approximations settle at
+/// lock); solved directly, M_bal_f = 1761.52 N·m (the working load on the slider that owns the joint B) — what the plain approximations settle at
 /// when carried on long enough — and both routes agree.
 #[test]
 fn slow_friction_is_solved_not_called_a_lock() {
@@ -151,7 +151,7 @@ fn slow_friction_is_solved_not_called_a_lock() {
         plain_approximations(&path, 1.0, 55.0, 200).is_none(),
         "200 plain steps suffice"
     );
-    assert!((m - 1300.4846).abs() < 1e-3, "{m}");
+    assert!((m - 1761.5164).abs() < 1e-3, "{m}");
     for (row, rel) in r.rows.iter().zip(r.rel_errors()) {
         if row.quantity().ends_with("_f") {
             assert!(
@@ -161,9 +161,9 @@ fn slow_friction_is_solved_not_called_a_lock() {
             );
         }
     }
-    // The crank pin at its own 15 mm: 425.59 N·m.
+    // The crank pin at its own 15 mm: 560.05 N·m.
     let r = analyse(&slider_crank(1.0, 55.0, true, "f1-r55-pin")).unwrap_or_else(|e| panic!("{e}"));
-    assert!((m_bal_f(&r) - 425.5897).abs() < 1e-3, "{}", m_bal_f(&r));
+    assert!((m_bal_f(&r) - 560.0508).abs() < 1e-3, "{}", m_bal_f(&r));
 }
 
 /// 70 mm journals: the friction equations have no solution (a lock), refused naming the

@@ -35,3 +35,12 @@ fn committed_scenes_run_through_the_fuzz_target() {
     assert!(files.len() >= 20, "{} files", files.len());
     run_all(&files);
 }
+
+/// The inputs the fuzz runs stopped on (`fuzz/regressions/`, see `fuzz/README.md`): each must
+/// run through the target without a panic.
+#[test]
+fn fuzz_findings_run_through_the_fuzz_target() {
+    let files = scenes("fuzz/regressions");
+    assert!(!files.is_empty());
+    run_all(&files);
+}

@@ -133,20 +133,63 @@ fn a_force_polygon_too_large_at_the_given_scale_names_forces_scale_f() {
     assert!(err.contains("forces.scale_f"), "{err}");
 }
 
+/// μ_v sets every velocity plan (kinematics plate) and the Zhukovsky lever (forces plate): the
+/// scale that fits the first plan alone (0.004) does not fit the others, nor does the one that
+/// fits every plan (0.01) fit the lever. The suggestion is verified on every plate: 0.025,
+/// which renders.
 #[test]
 fn a_view_too_large_at_its_given_scale_names_the_key_and_the_scale_that_fits() {
     let text = shaper_text().replace("scale_v = 0.05 ", "scale_v = 0.002 ");
-    let s = scene::parse(&text, &root().join("big.toml")).expect("scene");
+    let path = root().join("big.toml");
+    let s = scene::parse(&text, &path).expect("scene");
     let session = Session::new(&s, Drafting::EXACT);
-    let err = sheets::build_all(&session, Lang::Ru)
-        .expect_err("too large")
-        .1
-        .to_string();
-    assert!(err.contains("kinematics.scale_v"), "{err}");
+    let Err((
+        _,
+        sheets::BuildError::TooLarge {
+            fits: Some((key, first)),
+            ..
+        },
+    )) = sheets::build_all(&session, Lang::Ru)
+    else {
+        panic!("too large");
+    };
+    assert_eq!(key.key, "kinematics.scale_v");
+    // Every velocity plan of the plate, not the first alone.
+    assert_eq!(first.value(), 0.01);
+    let fit = sheets::verified_fit(&text, &path, key.key, first, Drafting::EXACT, Lang::Ru)
+        .expect("verified");
+    assert_eq!(fit.value(), 0.025);
+    for (v, fits) in [("0.01", false), ("0.025", true)] {
+        let text = shaper_text().replace("scale_v = 0.05 ", &format!("scale_v = {v} "));
+        let s = scene::parse(&text, &path).expect("scene");
+        let built = sheets::build_all(&Session::new(&s, Drafting::EXACT), Lang::Ru);
+        assert_eq!(built.is_ok(), fits, "{v}");
+    }
+}
+
+/// The CLI names the verified scale (forces.scale_f: 0.5 first suggested 2.5, then 4, and the
+/// polygons fit at 10).
+#[test]
+fn the_cli_suggests_a_force_scale_that_fits() {
+    let dir = std::env::temp_dir().join(format!("tmm-sheets-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    let scene = dir.join("big.toml");
+    std::fs::write(
+        &scene,
+        shaper_text().replace("scale_f = 20.0 ", "scale_f = 0.5 "),
+    )
+    .expect("write");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .args(["check", scene.to_str().expect("utf-8")])
+        .output()
+        .expect("tmm");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
-        err.contains("the largest scale at which it fits is kinematics.scale_v = 0.004 m/(s·mm)"),
+        err.contains("the largest scale at which it fits is forces.scale_f = 10 N/mm"),
         "{err}"
     );
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

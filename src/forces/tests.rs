@@ -396,9 +396,9 @@ proptest! {
                 board: &board, vp: &c.vp, pose: &c.pose, drawn: &c.drawn, exact: &c.exact,
                 loads: &c.lg, loads_exact: &c.le, w1: W1, label: "1",
             };
-            let w = match with_friction(&spec, &fr, &route, c.twin.largest()) {
+            let w = match with_friction(&spec, &fr, &route) {
                 Ok(w) => w,
-                Err(ForceError::SelfLocking { .. } | ForceError::Singular) => {
+                Err(ForceError::SelfLocking { .. } | ForceError::Singular | ForceError::SingularAt { .. }) => {
                     return Err(TestCaseError::reject("self-locking"));
                 }
                 Err(e) => return Err(TestCaseError::fail(e.to_string())),

@@ -270,17 +270,18 @@ impl Pair {
     }
     /// The specific sliding λ₁, λ₂ at the distance `xk` from N₁ along N₁N₂:
     /// λ₁ = 1 − ρ₂/(u ρ₁), λ₂ = 1 − u ρ₁/ρ₂ with ρ₁ = N₁K, ρ₂ = N₂K, u = z₂/z₁
-    /// (−∞ at N₁ for λ₁ and at N₂ for λ₂).
+    /// (−∞ at N₁ for λ₁ and at N₂ for λ₂; 0 at the pole, not the residue of 1 − 1).
     pub fn sliding(&self, xk: f64) -> [f64; 2] {
+        use crate::scale::residue_to_zero;
         let u = self.spec.ratio();
         let (r1, r2) = (xk, self.g - xk);
         let l1 = if r1 > 0.0 {
-            1.0 - r2 / (u * r1)
+            residue_to_zero(1.0 - r2 / (u * r1), 1.0)
         } else {
             f64::NEG_INFINITY
         };
         let l2 = if r2 > 0.0 {
-            1.0 - u * r1 / r2
+            residue_to_zero(1.0 - u * r1 / r2, 1.0)
         } else {
             f64::NEG_INFINITY
         };

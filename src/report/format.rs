@@ -212,9 +212,9 @@ impl Report {
                     &[
                         md_cell(&r.position().unwrap_or_default()),
                         r.method.name(lang).to_string(),
-                        format_sig(r.graphical, VALUE_DIGITS, lang),
-                        format_sig(r.analytic, VALUE_DIGITS, lang),
-                        format_sig(r.abs_error(), ERROR_DIGITS, lang),
+                        md_value(r.graphical, VALUE_DIGITS, lang),
+                        md_value(r.analytic, VALUE_DIGITS, lang),
+                        md_value(r.abs_error(), ERROR_DIGITS, lang),
                         md_number(d.map(|d| d * 100.0), ERROR_DIGITS, lang),
                         md_number(r.conditioning, ERROR_DIGITS, lang),
                     ],
@@ -285,6 +285,15 @@ pub(crate) fn md_header(out: &mut String, names: &[&str]) {
 /// A Markdown table row of ready cells.
 pub(crate) fn md_row(out: &mut String, cells: &[String]) {
     let _ = writeln!(out, "| {} |", cells.join(" | "));
+}
+
+/// A value of a row: "—" where it does not exist (the analytic rate at a change point is NaN).
+fn md_value(x: f64, sig: usize, lang: Lang) -> String {
+    if x.is_finite() {
+        format_sig(x, sig, lang)
+    } else {
+        "—".into()
+    }
 }
 
 fn md_number(x: Option<f64>, sig: usize, lang: Lang) -> String {

@@ -104,6 +104,32 @@ pub(crate) fn balancing(check: &mut Checker, raw: &RawBalancing) -> Option<Balan
             "a scale μ_l > 0 m/mm",
         ),
     };
+    let largest = |f: fn(&Mass) -> f64| spec.masses.iter().map(f).fold(0.0, f64::max);
+    let draws = super::drawing::draws;
+    let mr = largest(|m| m.mass * m.radius);
+    draws(
+        check,
+        &key("scale_mr"),
+        spec.scale_mr,
+        "the largest m·ρ",
+        mr,
+    );
+    let mrz = largest(|m| (m.mass * m.radius * m.z).abs());
+    draws(
+        check,
+        &key("scale_mrz"),
+        spec.scale_mrz,
+        "the largest m·ρ·z",
+        mrz,
+    );
+    let rho = largest(|m| m.radius);
+    draws(
+        check,
+        &key("scale_l"),
+        spec.scale_l,
+        "the largest radius ρ",
+        rho,
+    );
     (check.problems.len() == before).then_some(spec)
 }
 

@@ -297,6 +297,10 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         from_s,
         clockwise,
     };
+    let stroke = "the stroke S_max";
+    super::drawing::draws(check, &key("scale_s"), spec.scale_s, stroke, spec.stroke);
+    super::drawing::draws(check, &key("scale_l"), spec.scale_l, stroke, spec.stroke);
+    super::drawing::turn_axis(check, &key("scale_phi"), spec.scale_phi, "the cam's");
     (check.problems.len() == before).then_some(spec)
 }
 

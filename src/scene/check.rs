@@ -18,6 +18,13 @@ pub(crate) const MAX_LINK: u32 = 99;
 /// The largest angle a scene may give, degrees (ten turns).
 pub(crate) const MAX_DEG: f64 = 3600.0;
 
+/// The range of a drawing scale μ the scene gives nothing to measure by, SI units per mm:
+/// beyond it no figure of the course is visible or any fits a sheet. Scales with a reference
+/// quantity in the scene are held to what they draw ([`super::drawing`]).
+pub(crate) const MIN_SCALE: f64 = 1e-12;
+/// See [`MIN_SCALE`].
+pub(crate) const MAX_SCALE: f64 = 1e12;
+
 /// `base.key`.
 pub(crate) fn join(base: &str, key: &str) -> String {
     format!("{base}.{key}")
@@ -40,6 +47,19 @@ pub(crate) fn number(v: f64) -> String {
         v.to_string()
     } else {
         format!("{v:e}")
+    }
+}
+
+/// A derived value for a message (a range's ends, what a scale draws): 4 significant digits,
+/// in exponent form outside 1e-4 … 1e6 with its zeros trimmed (`2.513e-5`, `1e40`).
+pub(crate) fn short(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && !(1e-4..1e6).contains(&x.abs()) {
+        let t = format!("{x:.3e}");
+        let (mantissa, exp) = t.split_once('e').unwrap_or((&t, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        format!("{mantissa}e{exp}")
+    } else {
+        crate::scale::format_sig(x, 4, crate::scale::Lang::En)
     }
 }
 
@@ -155,6 +175,25 @@ impl Checker {
             self.bad(key, v, expected);
         }
         scale
+    }
+
+    /// A scale as [`Checker::scale`] that the scene gives nothing to measure by (the moments of
+    /// the dynamics come out of the force analysis), within [`MIN_SCALE`] … [`MAX_SCALE`].
+    pub fn free_scale(
+        &mut self,
+        key: &str,
+        v: Option<f64>,
+        quantity: Quantity,
+        expected: &str,
+    ) -> Option<Scale> {
+        let scale = self.scale(key, v, quantity, expected)?;
+        if (MIN_SCALE..=MAX_SCALE).contains(&scale.value()) {
+            return Some(scale);
+        }
+        let unit = quantity.unit(crate::scale::Lang::En);
+        let range = format!("{expected}, from {MIN_SCALE:e} to {MAX_SCALE:e} {unit}");
+        self.bad(key, scale.value(), &range);
+        None
     }
 
     /// An optional positive finite number (no unit conversion), or a problem and `None`.

@@ -7,10 +7,10 @@
 //! distance in [`POLE_MM`]. Inside the ranges a drawing that does not fit its sheet is refused
 //! when the sheet is laid out, naming the key and the value at which it fits.
 
-use super::check::Checker;
+use super::check::{number, short, Checker};
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::Mechanism;
-use crate::scale::{format_sig, Lang, Scale};
+use crate::scale::{Lang, Scale};
 use std::f64::consts::TAU;
 
 /// The shortest and longest a scale may draw its reference quantity, mm.
@@ -29,59 +29,18 @@ pub(crate) fn drawing_ranges(
     spec: &KinematicsSpec,
 ) {
     let (r, w) = (m.crank.length, m.crank.omega);
-    let sig = short;
-    let mut scale = |key: &str, s: Option<Scale>, what: &str, size: f64, unit: &str| {
-        let Some(s) = s else { return };
-        let drawn = size / s.value();
-        if !within(drawn, DRAWN_MM) {
-            check.push(
-                key,
-                Some(sig(s.value())),
-                format!(
-                    "expected a scale that draws {what} = {} between {} and {} mm: from {} to {} {unit} (it draws {} mm)",
-                    sig(size),
-                    sig(DRAWN_MM.0),
-                    sig(DRAWN_MM.1),
-                    sig(size / DRAWN_MM.1),
-                    sig(size / DRAWN_MM.0),
-                    sig(drawn)
-                ),
-            );
-        }
-    };
-    scale("mechanism.scale_l", scale_l, "the crank r", r, "m/mm");
-    scale(
-        "kinematics.scale_v",
-        spec.scale_v,
-        "the crank pin's velocity ω₁·r",
-        w * r,
-        "(m/s)/mm",
-    );
-    scale(
-        "kinematics.scale_a",
-        spec.scale_a,
-        "the crank pin's acceleration ω₁²·r",
-        w * w * r,
-        "(m/s²)/mm",
-    );
-    scale("kinematics.scale_s", spec.scale_s, "the crank r", r, "m/mm");
-    if let Some(s) = spec.scale_phi {
-        let axis = TAU / s.value();
-        if !within(axis, AXIS_MM) {
-            check.push(
-                "kinematics.scale_phi",
-                Some(sig(s.value())),
-                format!(
-                    "expected a scale that draws the crank turn 2π between {} and {} mm: from {} to {} rad/mm (it draws {} mm)",
-                    sig(AXIS_MM.0),
-                    sig(AXIS_MM.1),
-                    sig(TAU / AXIS_MM.1),
-                    sig(TAU / AXIS_MM.0),
-                    sig(axis)
-                ),
-            );
-        }
+    if !(r > 0.0 && w.is_finite() && w != 0.0) {
+        // The crank itself was refused: nothing to measure the scales by.
+        return;
     }
+    let w = w.abs();
+    draws(check, "mechanism.scale_l", scale_l, "the crank r", r);
+    let v = "the crank pin's velocity ω₁·r";
+    draws(check, "kinematics.scale_v", spec.scale_v, v, w * r);
+    let a = "the crank pin's acceleration ω₁²·r";
+    draws(check, "kinematics.scale_a", spec.scale_a, a, w * w * r);
+    draws(check, "kinematics.scale_s", spec.scale_s, "the crank r", r);
+    turn_axis(check, "kinematics.scale_phi", spec.scale_phi, "the crank's");
     for (key, h) in [
         ("kinematics.pole_h1", spec.pole_h1),
         ("kinematics.pole_h2", spec.pole_h2),
@@ -89,14 +48,62 @@ pub(crate) fn drawing_ranges(
         if let Some(h) = h.filter(|&h| !within(h, POLE_MM)) {
             check.push(
                 key,
-                Some(sig(h)),
+                Some(number(h)),
                 format!(
                     "expected a pole distance from {} to {} mm",
-                    sig(POLE_MM.0),
-                    sig(POLE_MM.1)
+                    short(POLE_MM.0),
+                    short(POLE_MM.1)
                 ),
             );
         }
+    }
+}
+
+/// A given scale `s` of `key` must draw `what` (of SI size `size`, > 0) between
+/// [`DRAWN_MM`]`.0` and [`DRAWN_MM`]`.1`; a size that is not positive (nothing to measure
+/// by: zero loads) checks nothing.
+pub(crate) fn draws(check: &mut Checker, key: &str, s: Option<Scale>, what: &str, size: f64) {
+    let Some(s) = s else { return };
+    if !(size.is_finite() && size > 0.0) {
+        return;
+    }
+    let drawn = size / s.value();
+    if !within(drawn, DRAWN_MM) {
+        let unit = s.quantity.unit(Lang::En);
+        check.push(
+            key,
+            Some(number(s.value())),
+            format!(
+                "expected a scale that draws {what} = {} between {} and {} mm: from {} to {} {unit} (it draws {} mm)",
+                short(size),
+                short(DRAWN_MM.0),
+                short(DRAWN_MM.1),
+                short(size / DRAWN_MM.1),
+                short(size / DRAWN_MM.0),
+                short(drawn)
+            ),
+        );
+    }
+}
+
+/// A given scale of an angle axis must draw a whole turn 2π (of `what`: the crank, the cam)
+/// within [`AXIS_MM`].
+pub(crate) fn turn_axis(check: &mut Checker, key: &str, s: Option<Scale>, what: &str) {
+    let Some(s) = s else { return };
+    let axis = TAU / s.value();
+    if !within(axis, AXIS_MM) {
+        check.push(
+            key,
+            Some(number(s.value())),
+            format!(
+                "expected a scale that draws {what} turn 2π between {} and {} mm: from {} to {} rad/mm (it draws {} mm)",
+                short(AXIS_MM.0),
+                short(AXIS_MM.1),
+                short(TAU / AXIS_MM.1),
+                short(TAU / AXIS_MM.0),
+                short(axis)
+            ),
+        );
     }
 }
 
@@ -104,14 +111,4 @@ pub(crate) fn drawing_ranges(
 /// its range (4 significant digits) is inside it.
 fn within(x: f64, (lo, hi): (f64, f64)) -> bool {
     x >= lo * (1.0 - 1e-3) && x <= hi * (1.0 + 1e-3)
-}
-
-/// A number for a message: 4 significant digits, in exponent form beyond 1e6 or below 1e-4
-/// (no 300-digit echo).
-fn short(x: f64) -> String {
-    if x != 0.0 && x.is_finite() && !(1e-4..1e6).contains(&x.abs()) {
-        format!("{x:.3e}")
-    } else {
-        format_sig(x, 4, Lang::En)
-    }
 }

@@ -172,7 +172,7 @@ pub(crate) fn dynamics(
         }
     });
     let scale = |check: &mut Checker, k: &str, v: Option<f64>, q: Quantity, want: &str| {
-        check.scale(&key(k), v, q, want)
+        check.free_scale(&key(k), v, q, want)
     };
     let scale_m = scale(
         check,
@@ -188,6 +188,7 @@ pub(crate) fn dynamics(
         Quantity::Angle,
         "a scale μ_φ > 0 rad/mm",
     );
+    super::drawing::turn_axis(check, &key("scale_phi"), scale_phi, "the crank's");
     let scale_j = scale(
         check,
         "scale_j",

@@ -97,7 +97,7 @@ pub(crate) fn forces(
             super::indicator::indicator(check, &base, r, mechanism)
         })
         .collect();
-    ForceSpec {
+    let spec = ForceSpec {
         indicators,
         g,
         gravity_dir: check.angle(&key("gravity"), raw.gravity, -90.0),
@@ -122,7 +122,17 @@ pub(crate) fn forces(
             .filter_map(|(i, s)| seed_value(check, &item(&key("seed"), i), s, &positions))
             .collect(),
         positions,
-    }
+    };
+    // μ_F is measured by the largest load the scene declares (a resistance, a weight).
+    let resisting = spec.resistances.iter().map(|r| match r.action {
+        crate::forces::Action::Force { magnitude, .. } => magnitude,
+        crate::forces::Action::Moment { .. } => 0.0,
+    });
+    let weights = spec.links.iter().map(|l| l.mass * spec.g);
+    let largest = resisting.chain(weights).fold(0.0, f64::max);
+    let what = "the largest load it declares";
+    super::drawing::draws(check, &key("scale_f"), spec.scale_f, what, largest);
+    spec
 }
 
 /// One kilogram-force, N.

@@ -118,7 +118,7 @@ pub(crate) fn friction(check: &mut Checker, raw: Option<RawFriction>) -> Vec<Fri
             }
         }
         let name = case_name(check, &base, c.name.as_deref(), word, i, &out);
-        let scale_f = check.scale(
+        let scale_f = check.free_scale(
             &join(&base, "scale_f"),
             c.scale_f,
             Quantity::Force,

@@ -4,7 +4,7 @@
 //! a pointed tooth, ε_α < 1, an infeasible centre distance) and a wheel whose tooth is
 //! pointed before its tip are refused with the key that makes them so.
 
-use super::check::{item, join, number, Checker};
+use super::check::{item, join, number, short, Checker};
 use crate::gears::train::{TrainError, Wheel};
 use crate::gears::{
     BasicRack, Cutting, GearError, GearsSpec, Mesh, Pair, PairSpec, PlanetarySpec, RackSpec, Train,
@@ -360,26 +360,15 @@ fn figure(check: &mut Checker, key: &str, scale: Option<Scale>, size: f64, what:
     };
     let mm = size / scale.value();
     if !(MIN_FIGURE_MM..=MAX_FIGURE_MM).contains(&mm) {
-        let sig = |v: f64| {
-            if v != 0.0 && !(1e-4..1e6).contains(&v.abs()) {
-                // 4 significant digits in exponent form (no 300-digit echo).
-                let t = format!("{v:.3e}");
-                let (mantissa, exp) = t.split_once('e').unwrap_or((&t, "0"));
-                let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
-                format!("{mantissa}e{exp}")
-            } else {
-                crate::scale::format_sig(v, 4, crate::scale::Lang::En)
-            }
-        };
         check.push(
             key,
-            Some(sig(scale.value())),
+            Some(number(scale.value())),
             format!(
                 "expected a scale μ_l from {} to {} m/mm: it draws {what} = {} mm as {} mm, and the figure must be {MIN_FIGURE_MM} to {MAX_FIGURE_MM} mm (legible, and within reach of a sheet)",
-                sig(size / MAX_FIGURE_MM),
-                sig(size / MIN_FIGURE_MM),
-                sig(size * 1e3),
-                sig(mm)
+                short(size / MAX_FIGURE_MM),
+                short(size / MIN_FIGURE_MM),
+                short(size * 1e3),
+                short(mm)
             ),
         );
     }

@@ -244,9 +244,7 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
             check.push("positions.start", Some(quoted(&w)), expected);
             Start::WorkingStroke
         }
-        Some(RawStart::Degrees(d)) => {
-            Start::Angle(check.angle("positions.start", Some(d), 0.0))
-        }
+        Some(RawStart::Degrees(d)) => Start::Angle(check.angle("positions.start", Some(d), 0.0)),
     };
     let continuity = match raw.assembly.as_deref() {
         None | Some("side") => false,

@@ -250,7 +250,7 @@ pub(super) fn lay_out(
     lang: Lang,
 ) -> Result<Vec<Plate>, BuildError> {
     let sizes: Vec<DVec2> = blocks.iter().map(Block::size).collect();
-    let placed = pack(&sheet, &sizes).map_err(|k| too_large(&sheet, &blocks[k], sizes[k]))?;
+    let placed = pack(&sheet, &sizes).map_err(|k| too_large(&sheet, &blocks, &sizes, k))?;
     let count = placed.iter().map(|p| p.0 + 1).max().unwrap_or(1);
     let mut pages: Vec<Parts> = (0..count).map(|_| Parts::default()).collect();
     for (block, (page, rect)) in blocks.into_iter().zip(placed) {
@@ -275,22 +275,33 @@ pub(super) fn lay_out(
         .collect())
 }
 
-/// The error for a block that does not fit an empty sheet.
-fn too_large(sheet: &Sheet, block: &Block, size: DVec2) -> BuildError {
-    let over = sheet_overflow(sheet, size);
-    let (what, scale) = match block {
-        Block::Views { parts, scale, .. } => (
-            parts
-                .first()
-                .map_or_else(String::new, |p| p.0.title.clone()),
-            scale.clone(),
-        ),
-        Block::Text { .. } => ("text".into(), None),
-        Block::Table(t) => (t.title.clone(), None),
+/// The error for the block `k` that does not fit an empty sheet. The scale it names fits
+/// every block drawn at the same scale key (the force polygons of all groups share μ_F): the
+/// one that overflows most decides it.
+fn too_large(sheet: &Sheet, blocks: &[Block], sizes: &[DVec2], k: usize) -> BuildError {
+    let scale_of = |b: &Block| match b {
+        Block::Views { scale, .. } => scale.clone(),
+        Block::Text { .. } | Block::Table(_) => None,
     };
+    let what = match &blocks[k] {
+        Block::Views { parts, .. } => parts
+            .first()
+            .map_or_else(String::new, |p| p.0.title.clone()),
+        Block::Text { .. } => "text".into(),
+        Block::Table(t) => t.title.clone(),
+    };
+    let fits = scale_of(&blocks[k]).and_then(|s| {
+        let over = blocks
+            .iter()
+            .zip(sizes)
+            .filter(|(b, _)| scale_of(b).is_some_and(|o| o.key == s.key))
+            .map(|(_, &size)| sheet_overflow(sheet, size))
+            .fold(1.0, f64::max);
+        super::fit::raised(s.scale, over).map(|f| (s, f))
+    });
     BuildError::TooLarge {
         what,
-        need: size,
-        fits: scale.and_then(|s| super::fit::raised(s.scale, over).map(|f| (s, f))),
+        need: sizes[k],
+        fits,
     }
 }

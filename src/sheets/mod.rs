@@ -14,6 +14,7 @@ pub use layout::ScaleKey;
 mod kinematics;
 mod pack;
 mod positions;
+mod refit;
 
 use crate::geom::DVec2;
 use crate::plate::{Plate, PlateError, TitleBlock};
@@ -21,6 +22,7 @@ use crate::scale::Lang;
 use crate::scale::Scale;
 use crate::scene::{PlateKind, Scene};
 use crate::study::{Session, StudyError};
+pub use refit::verified_fit;
 use thiserror::Error;
 
 /// Why a plate cannot be built.

@@ -7,6 +7,7 @@
 use super::model::Branch;
 use super::program::{Op, PDir, PDyad, PGuide, Program};
 use crate::geom::DVec2;
+use crate::scale::format_plain;
 use jet::{carried, cross, heading, meet, sub, unit, AngleJet, Jet, LineJet, Rows, TANGENT_REL};
 
 mod jet;
@@ -271,8 +272,14 @@ impl Program {
                 let slack = TANGENT_REL * (la + lb);
                 if d > la + lb + slack || d < (la - lb).abs() - slack || d == 0.0 {
                     return Err(fail(format!(
-                        "|{}{}| = {d:.6} m is outside [|{la} − {lb}|, {la} + {lb}] m",
-                        self.names[a], self.names[b]
+                        "|{}{}| = {} m is outside [|{} − {}|, {} + {}] m",
+                        self.names[a],
+                        self.names[b],
+                        format_plain(d),
+                        format_plain(la),
+                        format_plain(lb),
+                        format_plain(la),
+                        format_plain(lb)
                     )));
                 }
                 // Law of cosines at a, in fractions of ab: the foot of the joint on ab at
@@ -333,9 +340,10 @@ impl Program {
                 let h = cross(e.p, w);
                 if h.abs() > la * (1.0 + TANGENT_REL) {
                     return Err(fail(format!(
-                        "{} is {:.6} m from the guide, more than the link length {la} m",
+                        "{} is {} m from the guide, more than the link length {} m",
                         self.names[a],
-                        h.abs()
+                        format_plain(h.abs()),
+                        format_plain(la)
                     )));
                 }
                 let half = (la * la - h * h).max(0.0).sqrt();
