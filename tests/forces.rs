@@ -632,3 +632,23 @@ fn arms_that_vanish_are_judged_as_zero_not_as_a_hundred_per_cent() {
         assert!(row["abs_error"].as_f64().expect("abs") < 1e-12, "{row}");
     }
 }
+
+/// A seed value echoed in the notes as the scene gives it, compactly: `-1e-300`, not 300 zeros
+/// (the full mutation sweep's last finding).
+#[test]
+fn a_seed_value_is_echoed_compactly() {
+    let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).expect("shaper");
+    let text = text.replacen("value = 112.0\n", "value = -1e-300\n", 1);
+    let dir = support::scratch("seed-echo");
+    let path = dir.join("shaper.toml");
+    std::fs::write(&path, text).expect("write");
+    let o = tmm(&["report", path.to_str().expect("utf-8")]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        out.contains("F_bal (polygon): the seed prints -1e-300 kgf"),
+        "{out}"
+    );
+    assert!(!out.contains("0.0000000000"), "{out}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -191,7 +191,7 @@ fn seed_value(
         position: position?,
         method,
         value: value * units[unit].1,
-        printed: format!("{} {}", raw.value.unwrap_or(value), units[unit].0),
+        printed: format!("{} {}", number(raw.value.unwrap_or(value)), units[unit].0),
         source,
     })
 }
