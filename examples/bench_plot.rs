@@ -2,7 +2,7 @@
 //! (for looking at it; not a reference).
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let svg = tmm::report::bench::sample_bench().to_svg_plot();
+    let svg = tmm::bench::sample_bench().to_svg_plot();
     std::fs::write("/tmp/bench_plot.svg", &svg)?;
     std::fs::write("/tmp/bench_plot.png", tmm::plate::to_png(&svg, 1200)?)?;
     Ok(())

@@ -9,8 +9,9 @@
 //! `geom`, `scale` ← `construct`, `calculus`, `check` ← `linkage`, `kinematics` ← `scene` ←
 //! `study` (the session over one scene: each study computed once, on demand) ← `sheets`,
 //! `report` ← the `tmm` binary. `plate` draws recorded figures; `check` holds the typed rows
-//! (graphical against analytic) every domain module emits; `report` formats them; `bench`
-//! times each method against its error (`tmm bench`).
+//! (graphical against analytic) every domain module emits and a scene's [`Report`] of them;
+//! `report` only writes a report (nothing below it imports it); `bench` times each method
+//! against its error (`tmm bench`) and writes its own table and plot.
 //!
 //! The way in, for a program using the library as the `tmm` binary does:
 //! ```no_run
@@ -48,9 +49,9 @@ pub mod scene;
 pub mod sheets;
 pub mod study;
 
+pub use check::Report;
 pub use check::{Key, Method, Row};
 pub use construct::Drafting;
-pub use report::Report;
 pub use scale::Lang;
 pub use scene::{load, PlateKind, Scene};
 pub use sheets::build;

@@ -2,10 +2,10 @@
 //! and return (2N + 2 follower positions), read exactly; the drawn practical profile's
 //! largest deviation from the exact envelope beside the time of the recorded inversion.
 
+use super::BenchRow;
 use super::{best_time, BenchError, Reps};
 use crate::cam::{self, Cam};
 use crate::construct::{Context, Drafting};
-use crate::report::BenchRow;
 use crate::scene;
 
 /// The inversion resolutions swept (intervals per moving phase).

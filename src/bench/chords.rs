@@ -1,6 +1,7 @@
 //! The chord-method sweep: a coordinate of a mechanism charted over one crank turn,
 //! differentiated twice by chords and compared with its analytic analogues.
 
+use super::BenchRow;
 use super::{best_time, BenchError, Reps, Subject, CHORD_RESOLUTIONS, DIAGRAM_EXTENT_MM};
 use crate::calculus::{
     derivative_scale, pole_for, CalculusError, Derivative, Diagram, Layout, Method, Scales,
@@ -8,7 +9,6 @@ use crate::calculus::{
 use crate::construct::{Context, Drafting, Recorder};
 use crate::geom::{wrap_pi, DVec2};
 use crate::linkage::Pose;
-use crate::report::BenchRow;
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 use std::hint::black_box;

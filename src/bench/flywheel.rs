@@ -3,11 +3,11 @@
 //! only the method's own error remains, drafting exact) against the energy equation
 //! integrated exactly; the time of the route, and of the exact solve.
 
+use super::BenchRow;
 use super::{best_time, BenchError, Reps, Subject, CHORD_RESOLUTIONS};
 use crate::construct::{Context, Drafting};
 use crate::dynamics::{draw, Cycle, Reduced, Reducer};
 use crate::linkage::{plan_poses, PlanRequest};
-use crate::report::BenchRow;
 use std::f64::consts::TAU;
 
 /// The rows `wittenbauer N=…` and `merkin N=…` of `J_flywheel`, and the time of the exact

@@ -32,13 +32,14 @@
 mod cam;
 mod chords;
 mod flywheel;
+mod plot;
 mod rack;
 mod rates;
+mod table;
 
 use crate::calculus::CalculusError;
 use crate::geom::InvalidTolerance;
 use crate::linkage::{Pose, Program};
-use crate::report::{Bench, Throughput};
 use crate::scale::Quantity;
 use crate::scene::{self, PlateKind, Scene};
 use chords::{chord_rows, Charted, Coord};
@@ -50,6 +51,8 @@ use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::Instant;
 use thiserror::Error;
+
+pub use table::{sample_bench, Bench, BenchRow, Throughput};
 
 /// The resolutions of the chord-method sweep (positions per crank turn).
 pub const CHORD_RESOLUTIONS: [usize; 6] = [12, 24, 48, 96, 192, 360];

@@ -2,10 +2,10 @@
 //! fillet, root circle) and the time of one generated tooth, for N = 12 … 720 rack positions
 //! (seed 000's pinion z = 13, m = 14 mm, x = 0: undercut, and x = 0.8).
 
+use super::BenchRow;
 use super::{best_time, Reps};
 use crate::construct::{Context, Drafting};
 use crate::gears::{generate::generate, generation_scale, BasicRack, Cutting};
-use crate::report::BenchRow;
 
 /// The rack positions swept.
 pub const RACK_RESOLUTIONS: [usize; 7] = [12, 24, 48, 90, 180, 360, 720];

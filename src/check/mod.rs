@@ -12,10 +12,12 @@
 //! magnitude over the cycle, [`Row::scale`]). The same rule serves the report, its summary
 //! and the sheets ([`is_zero`]).
 
+mod report;
 mod summary;
 #[cfg(test)]
 mod tests;
 
+pub use report::{Column, Report, Table};
 pub use summary::{Summary, SummaryEntry};
 
 use crate::scale::Lang;

@@ -380,7 +380,7 @@ mod properties {
 
 #[test]
 fn the_bracketed_root_converges_on_smooth_steep_and_flat_functions() {
-    use super::twin::bracketed_root;
+    use crate::geom::bracketed_root;
     let cbrt2 = bracketed_root(|x| x * x * x - 2.0, 0.0, 2.0);
     assert!((cbrt2 - 2f64.cbrt()).abs() < 1e-15 * 2.0, "{cbrt2}");
     // A √ singularity at the bracket's end, as ω near T₀ = −ΔT_min.

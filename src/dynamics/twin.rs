@@ -9,12 +9,13 @@
 //!
 //! solved for the flywheel J_м that gives the required δ = (ω_max − ω_min)/ω_ср with
 //! ω_ср = (ω_max + ω_min)/2: for each J_м the T₀ that gives ω_ср (ω rises with T₀), and J_м
-//! from δ (δ falls as J_м grows), both as roots kept bracketed ([`bracketed_root`]). Between the nodes
+//! from δ (δ falls as J_м grows), both as roots kept bracketed ([`crate::geom::bracketed_root`]). Between the nodes
 //! ΔT and J are cubic Hermite interpolants of exact values and exact derivatives
 //! (dΔT/dψ = M_д + M_пр, dJ/dψ from the analogues), so the extremes of ω are found to ~1e-11.
 
 use super::reduce::Reducer;
 use super::DynamicsError;
+use crate::geom::bracketed_root;
 use std::f64::consts::TAU;
 
 /// Panels of the cycle (at most 0.5° each).
@@ -348,57 +349,5 @@ impl Cycle {
             .extremum(|p| self.delta_t(p) - s2 * self.j_at(p), false)
             .1;
         (c1 - c2) / (s1 - s2)
-    }
-}
-
-/// The root of `f` in [lo, hi], where f(lo) and f(hi) differ in sign (else the end nearer
-/// zero): regula falsi with the Illinois step (the end kept twice has its value halved), so
-/// the bracket always holds the root and shrinks superlinearly; stops when the bracket is
-/// 1e-15 of its end wide, on an exact zero, or when a step no longer moves.
-pub fn bracketed_root(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let (mut f_lo, mut f_hi) = (f(lo), f(hi));
-    if f_lo == 0.0 || f_lo.signum() == f_hi.signum() || !(f_lo.is_finite() && f_hi.is_finite()) {
-        return if f_lo.abs() <= f_hi.abs() { lo } else { hi };
-    }
-    // Which end was kept last (−1 lo, +1 hi).
-    let mut kept = 0;
-    for _ in 0..200 {
-        let x = hi - f_hi * (hi - lo) / (f_hi - f_lo);
-        // A secant step that lands outside or on an end falls back to bisection.
-        let x = if x > lo.min(hi) && x < lo.max(hi) {
-            x
-        } else {
-            0.5 * (lo + hi)
-        };
-        if x == lo || x == hi {
-            break;
-        }
-        let fx = f(x);
-        if fx == 0.0 {
-            return x;
-        }
-        if fx.signum() == f_lo.signum() {
-            lo = x;
-            f_lo = fx;
-            if kept == 1 {
-                f_hi /= 2.0;
-            }
-            kept = 1;
-        } else {
-            hi = x;
-            f_hi = fx;
-            if kept == -1 {
-                f_lo /= 2.0;
-            }
-            kept = -1;
-        }
-        if (hi - lo).abs() <= 1e-15 * lo.abs().max(hi.abs()) {
-            break;
-        }
-    }
-    if f_lo.abs() <= f_hi.abs() {
-        lo
-    } else {
-        hi
     }
 }

@@ -267,7 +267,7 @@ fn solve_on(
             a[3 * r + 2][n] -= (x - origin).perp_dot(load.force) + load.moment;
         }
     }
-    let x = gauss(a).ok_or(ForceError::Singular)?;
+    let x = crate::geom::solve_linear(a).ok_or(ForceError::Singular)?;
     let reactions = pairs
         .iter()
         .enumerate()
@@ -314,40 +314,4 @@ pub fn power_balance(loads: &[Load], motion: &Motion, w1: f64) -> f64 {
         })
         .sum();
     -power / w1
-}
-
-/// Solve the augmented system `a` (n rows of n + 1) by Gaussian elimination with partial
-/// pivoting; `None` when it is singular to rounding.
-fn gauss(mut a: Vec<Vec<f64>>) -> Option<Vec<f64>> {
-    let n = a.len();
-    let big = a
-        .iter()
-        .flat_map(|r| r[..n].iter())
-        .fold(0.0_f64, |m, v| m.max(v.abs()));
-    if !(big > 0.0 && big.is_finite()) {
-        return None;
-    }
-    for c in 0..n {
-        let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
-        if a[p][c].abs() <= 1e-12 * big {
-            return None;
-        }
-        a.swap(c, p);
-        let (top, rest) = a.split_at_mut(c + 1);
-        let pivot = &top[c];
-        for row in rest {
-            let f = row[c] / pivot[c];
-            if f != 0.0 {
-                for (x, p) in row[c..].iter_mut().zip(&pivot[c..]) {
-                    *x -= f * p;
-                }
-            }
-        }
-    }
-    let mut x = vec![0.0; n];
-    for c in (0..n).rev() {
-        let s: f64 = (c + 1..n).map(|k| a[c][k] * x[k]).sum();
-        x[c] = (a[c][n] - s) / a[c][c];
-    }
-    x.iter().all(|v| v.is_finite()).then_some(x)
 }

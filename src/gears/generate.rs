@@ -337,7 +337,7 @@ pub fn generate(
                 let e = twin(w[0].piece, q);
                 let d = curve
                     .windows(2)
-                    .map(|p| distance_to_segment(e, &Segment::new(p[0], p[1])))
+                    .map(|p| Segment::new(p[0], p[1]).distance_to(e))
                     .fold(f64::INFINITY, f64::min);
                 worst = worst.max(d);
             }
@@ -495,7 +495,7 @@ fn touching(c: &Cutting, q: f64) -> Vec<(Piece, DVec2)> {
 fn polyline_crossing(a: &[DVec2], b: &[DVec2]) -> Option<(DVec2, usize, usize)> {
     for (i, wa) in a.windows(2).enumerate() {
         for (j, wb) in b.windows(2).enumerate() {
-            if let Some(p) = segments_cross(wa[0], wa[1], wb[0], wb[1]) {
+            if let Some(p) = Segment::new(wa[0], wa[1]).crossing(&Segment::new(wb[0], wb[1])) {
                 // A shared end point (the tangential junction) is not a crossing.
                 if (p - wa[0]).length() > 1e-12 && (p - wb[0]).length() > 1e-12 {
                     return Some((p, i, j));
@@ -519,7 +519,7 @@ fn refine(c: &Cutting, mut f: [Traced; 2], mut l: [Traced; 2]) -> Option<DVec2> 
             .find(|(p, _)| *p == piece)
             .map(|(_, k)| rotate(k, q / c.r()))
     };
-    let mut best = segments_cross(f[0].1, f[1].1, l[0].1, l[1].1);
+    let mut best = Segment::new(f[0].1, f[1].1).crossing(&Segment::new(l[0].1, l[1].1));
     for _ in 0..80 {
         let (fq, lq) = (0.5 * (f[0].0 + f[1].0), 0.5 * (l[0].0 + l[1].0));
         let (Some(fm), Some(lm)) = (at(Piece::Fillet, fq), at(Piece::Flank, lq)) else {
@@ -532,7 +532,9 @@ fn refine(c: &Cutting, mut f: [Traced; 2], mut l: [Traced; 2]) -> Option<DVec2> 
         let mut found: Option<([Traced; 2], [Traced; 2], DVec2, f64)> = None;
         for a in &halves_f {
             for b in &halves_l {
-                if let Some((p, miss)) = lines_meet(a[0].1, a[1].1, b[0].1, b[1].1) {
+                if let Some((p, miss)) =
+                    Segment::new(a[0].1, a[1].1).meet(&Segment::new(b[0].1, b[1].1))
+                {
                     if found.as_ref().is_none_or(|f| miss < f.3) {
                         found = Some((*a, *b, p, miss));
                     }
@@ -548,35 +550,4 @@ fn refine(c: &Cutting, mut f: [Traced; 2], mut l: [Traced; 2]) -> Option<DVec2> 
         }
     }
     best
-}
-
-/// Where the lines ab and cd meet and how far outside the segments (in their parameters,
-/// 0 when inside both); `None` for parallel lines.
-fn lines_meet(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Option<(DVec2, f64)> {
-    let r = b - a;
-    let s = d - c;
-    let den = r.perp_dot(s);
-    if den.abs() <= 1e-300 {
-        return None;
-    }
-    let t = (c - a).perp_dot(s) / den;
-    let u = (c - a).perp_dot(r) / den;
-    let out = |x: f64| (-x).max(x - 1.0).max(0.0);
-    Some((a + r * t, out(t).max(out(u))))
-}
-
-/// The crossing point of segments ab and cd (ends included).
-fn segments_cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Option<DVec2> {
-    lines_meet(a, b, c, d).and_then(|(p, miss)| (miss == 0.0).then_some(p))
-}
-
-/// The distance from `p` to the segment.
-fn distance_to_segment(p: DVec2, s: &Segment) -> f64 {
-    let d = s.to - s.from;
-    let len2 = d.length_squared();
-    if len2 == 0.0 {
-        return (p - s.from).length();
-    }
-    let t = ((p - s.from).dot(d) / len2).clamp(0.0, 1.0);
-    (p - (s.from + d * t)).length()
 }

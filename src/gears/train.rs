@@ -541,34 +541,16 @@ fn inverse_mod(x: i128, m: i128) -> i128 {
     s0.rem_euclid(m)
 }
 
-/// Gaussian elimination with partial pivoting; `None` when singular.
-fn solve(mut rows: Vec<(Vec<f64>, f64)>) -> Option<Vec<f64>> {
-    let n = rows.len();
-    let big = rows
-        .iter()
-        .flat_map(|r| r.0.iter())
-        .fold(0.0_f64, |a, v| a.max(v.abs()));
-    for c in 0..n {
-        let p = (c..n).max_by(|&i, &j| rows[i].0[c].abs().total_cmp(&rows[j].0[c].abs()))?;
-        if rows[p].0[c].abs() <= 1e-12 * big {
-            return None;
-        }
-        rows.swap(c, p);
-        let (pivot, rhs) = (rows[c].0.clone(), rows[c].1);
-        for r in rows.iter_mut().skip(c + 1) {
-            let f = r.0[c] / pivot[c];
-            for (x, p) in r.0.iter_mut().zip(&pivot).skip(c) {
-                *x -= f * p;
-            }
-            r.1 -= f * rhs;
-        }
-    }
-    let mut x = vec![0.0; n];
-    for c in (0..n).rev() {
-        let s: f64 = (c + 1..n).map(|k| rows[c].0[k] * x[k]).sum();
-        x[c] = (rows[c].1 - s) / rows[c].0[c];
-    }
-    Some(x)
+/// The system of (coefficients, right-hand side) rows, solved by the kernel's elimination.
+fn solve(rows: Vec<(Vec<f64>, f64)>) -> Option<Vec<f64>> {
+    crate::geom::solve_linear(
+        rows.into_iter()
+            .map(|(mut a, b)| {
+                a.push(b);
+                a
+            })
+            .collect(),
+    )
 }
 
 /// The velocity triangles and the plan of angular velocities, and what was read off them.

@@ -4,6 +4,7 @@
 mod hatch;
 mod intersect;
 mod primitives;
+mod solve;
 mod tolerance;
 
 pub use glam::DVec2;
@@ -12,4 +13,5 @@ pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCir
 pub use primitives::{
     french_curve, nearest, rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,
 };
+pub use solve::{bracketed_root, solve_linear};
 pub use tolerance::{InvalidTolerance, Tolerances};

@@ -79,6 +79,36 @@ impl Segment {
     pub fn to_line(&self) -> Option<Line> {
         Line::through(self.from, self.to)
     }
+    /// The distance from `p` to the segment (to its nearer end beyond them).
+    pub fn distance_to(&self, p: DVec2) -> f64 {
+        let d = self.to - self.from;
+        let len2 = d.length_squared();
+        if len2 == 0.0 {
+            return (p - self.from).length();
+        }
+        let t = ((p - self.from).dot(d) / len2).clamp(0.0, 1.0);
+        (p - (self.from + d * t)).length()
+    }
+    /// Where the carrying lines of `self` and `other` meet, and how far outside the segments
+    /// that is, in their parameters (0 when inside both); `None` for parallel lines.
+    pub fn meet(&self, other: &Segment) -> Option<(DVec2, f64)> {
+        let r = self.to - self.from;
+        let s = other.to - other.from;
+        let den = r.perp_dot(s);
+        if den.abs() <= 1e-300 {
+            return None;
+        }
+        let w = other.from - self.from;
+        let t = w.perp_dot(s) / den;
+        let u = w.perp_dot(r) / den;
+        let out = |x: f64| (-x).max(x - 1.0).max(0.0);
+        Some((self.from + r * t, out(t).max(out(u))))
+    }
+    /// The point where the segments cross (ends included); `None` when they do not.
+    pub fn crossing(&self, other: &Segment) -> Option<DVec2> {
+        self.meet(other)
+            .and_then(|(p, miss)| (miss == 0.0).then_some(p))
+    }
 }
 
 /// A half-line from `origin` along unit `direction`.

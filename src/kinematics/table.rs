@@ -1,8 +1,8 @@
 //! The analytic table in the shape of seed 000 Table 5: φ₁, and per group the angle, ω and ε
 //! of its links (and the slide of a slotted link), then |v|, |a| of every named point.
 
+use crate::check::{Column, Table};
 use crate::linkage::{owner, plain, Op, PDyad, Pose, PositionPlan};
-use crate::report::{Column, Table};
 
 type Cell = Box<dyn Fn(&Pose) -> f64>;
 

@@ -9,11 +9,11 @@ use super::fit::{self, fit_scale, Extent, Fit};
 use super::layout::{lay_out, split_table, table, Block, ScaleKey};
 use super::pack::sheet_overflow;
 use super::BuildError;
+use crate::check::{Method, Report};
 use crate::geom::DVec2;
 use crate::kinematics::plans::drawn_points;
 use crate::linkage::PlanKind;
 use crate::plate::{Plate, Sheet, TableBlock};
-use crate::report::{Method, Report};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::study::{KinScales, Kinematics, Session};
 

@@ -10,6 +10,7 @@
 mod memo;
 
 use crate::check::Row;
+use crate::check::{Report, Table};
 use crate::construct::{Context, Drafting, Figure};
 use crate::forces::balancing::{self, Balancing, BalancingError};
 use crate::forces::friction::{self, FrictionError, Solved};
@@ -21,7 +22,6 @@ use crate::linkage::{
     plain, plan_poses, plan_positions, KinPlan, LinkageError, Mechanism, PlanKind, PlanPoses,
     PlanRequest, PositionPlan,
 };
-use crate::report::{Report, Table};
 use crate::scale::{Quantity, Scale};
 use crate::scene::{Scene, Start};
 use memo::Memo;

@@ -2,10 +2,8 @@
 //! on log scales, one series per (method family, quantity). The chart itself is drawn by
 //! [`crate::plate::chart`].
 
-use super::bench::{Bench, BenchRow};
+use super::table::{Bench, BenchRow};
 use crate::plate::chart::{Axis, Chart, Point, Series};
-
-pub use crate::plate::chart::{decade_range, log_position};
 
 /// The rows as series, one per (method family, quantity) in the order of the first row that
 /// can be drawn (finite time and error), the points sorted by resolution and labelled with
@@ -40,16 +38,18 @@ fn series(rows: &[BenchRow]) -> Vec<Series> {
         .collect()
 }
 
-/// The plot of `bench`: error (max over the cycle, y, log) against time per run (x, log),
-/// one series per (method family, quantity), points labelled with their N; see [`Chart`]
-/// for the layout and for how zero and non-finite values are shown.
-pub(crate) fn bench_plot(bench: &Bench) -> String {
-    Chart {
-        title: format!("Speed against error — {}", bench.machine),
-        x: Axis::new("time per run, s", "time", "s"),
-        y: Axis::new("max error over the cycle", "error", ""),
-        series: series(&bench.rows),
-        point_labels: Some("numbers at points: N".into()),
+impl Bench {
+    /// The speed-against-error plot as SVG: error (max over the cycle, y, log) against time
+    /// per run (x, log), one series per (method family, quantity), points labelled with their
+    /// N; see [`Chart`] for the layout and for how zero and non-finite values are shown.
+    pub fn to_svg_plot(&self) -> String {
+        Chart {
+            title: format!("Speed against error — {}", self.machine),
+            x: Axis::new("time per run, s", "time", "s"),
+            y: Axis::new("max error over the cycle", "error", ""),
+            series: series(&self.rows),
+            point_labels: Some("numbers at points: N".into()),
+        }
+        .to_svg()
     }
-    .to_svg()
 }

@@ -1,7 +1,7 @@
 //! The output of `tmm bench`: each method's resolution swept, time per run against error,
 //! as a Markdown table, JSON and an SVG plot.
 
-use super::format::{finite, json, md_cell, md_header, md_row};
+use crate::report::{finite, json, md_cell, md_header, md_row};
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -179,12 +179,6 @@ impl Bench {
                 .collect(),
         })
     }
-
-    /// The speed-against-error plot as SVG, a [`Chart`](crate::plate::chart::Chart): error
-    /// against time per run on log scales, one series per (method family, quantity).
-    pub fn to_svg_plot(&self) -> String {
-        super::plot::bench_plot(self)
-    }
 }
 
 /// Realistic sample data: chord-method errors from 1e-1 down to 1e-4 and times from 1e-6 to
@@ -231,8 +225,8 @@ pub fn sample_bench() -> Bench {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::plate::chart::{decade_range, log_position};
     use crate::report::tests::sorted_keys;
-    use crate::report::{decade_range, log_position};
     use serde_json::Value;
 
     #[test]

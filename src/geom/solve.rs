@@ -1,0 +1,111 @@
+//! The numeric kernel the domains share: a linear system and a bracketed root.
+
+/// Solve the augmented system `a` (n rows of n + 1) by Gaussian elimination with partial
+/// pivoting; `None` when it is singular to rounding (a pivot below 1e-12 of the largest
+/// coefficient) or a solution is not finite.
+pub fn solve_linear(mut a: Vec<Vec<f64>>) -> Option<Vec<f64>> {
+    let n = a.len();
+    let big = a
+        .iter()
+        .flat_map(|r| r[..n].iter())
+        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    if !(big > 0.0 && big.is_finite()) {
+        return None;
+    }
+    for c in 0..n {
+        let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
+        if a[p][c].abs() <= 1e-12 * big {
+            return None;
+        }
+        a.swap(c, p);
+        let (top, rest) = a.split_at_mut(c + 1);
+        let pivot = &top[c];
+        for row in rest {
+            let f = row[c] / pivot[c];
+            if f != 0.0 {
+                for (x, p) in row[c..].iter_mut().zip(&pivot[c..]) {
+                    *x -= f * p;
+                }
+            }
+        }
+    }
+    let mut x = vec![0.0; n];
+    for c in (0..n).rev() {
+        let s: f64 = (c + 1..n).map(|k| a[c][k] * x[k]).sum();
+        x[c] = (a[c][n] - s) / a[c][c];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// The root of `f` in [lo, hi], where f(lo) and f(hi) differ in sign (else the end nearer
+/// zero): regula falsi with the Illinois step (the end kept twice has its value halved), so
+/// the bracket always holds the root and shrinks superlinearly; stops when the bracket is
+/// 1e-15 of its end wide, on an exact zero, or when a step no longer moves.
+pub fn bracketed_root(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    let (mut f_lo, mut f_hi) = (f(lo), f(hi));
+    if f_lo == 0.0 || f_lo.signum() == f_hi.signum() || !(f_lo.is_finite() && f_hi.is_finite()) {
+        return if f_lo.abs() <= f_hi.abs() { lo } else { hi };
+    }
+    // Which end was kept last (−1 lo, +1 hi).
+    let mut kept = 0;
+    for _ in 0..200 {
+        let x = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+        // A secant step that lands outside or on an end falls back to bisection.
+        let x = if x > lo.min(hi) && x < lo.max(hi) {
+            x
+        } else {
+            0.5 * (lo + hi)
+        };
+        if x == lo || x == hi {
+            break;
+        }
+        let fx = f(x);
+        if fx == 0.0 {
+            return x;
+        }
+        if fx.signum() == f_lo.signum() {
+            lo = x;
+            f_lo = fx;
+            if kept == 1 {
+                f_hi /= 2.0;
+            }
+            kept = 1;
+        } else {
+            hi = x;
+            f_hi = fx;
+            if kept == -1 {
+                f_lo /= 2.0;
+            }
+            kept = -1;
+        }
+        if (hi - lo).abs() <= 1e-15 * lo.abs().max(hi.abs()) {
+            break;
+        }
+    }
+    if f_lo.abs() <= f_hi.abs() {
+        lo
+    } else {
+        hi
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_linear_system_is_solved_and_a_singular_one_refused() {
+        let x = solve_linear(vec![
+            vec![2.0, 1.0, -1.0, 8.0],
+            vec![-3.0, -1.0, 2.0, -11.0],
+            vec![-2.0, 1.0, 2.0, -3.0],
+        ])
+        .expect("regular");
+        for (v, want) in x.iter().zip([2.0, 3.0, -1.0]) {
+            assert!((v - want).abs() < 1e-14, "{x:?}");
+        }
+        assert!(solve_linear(vec![vec![1.0, 2.0, 3.0], vec![2.0, 4.0, 6.0]]).is_none());
+        assert!(solve_linear(vec![vec![0.0, 0.0, 1.0], vec![0.0, 0.0, 1.0]]).is_none());
+        assert!(solve_linear(vec![vec![f64::NAN, 1.0]]).is_none());
+    }
+}
