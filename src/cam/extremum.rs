@@ -4,7 +4,7 @@
 //! piece is found from dense samples, every sampled local maximum refined by golden section
 //! (the value of a smooth maximum to a few ulps, whatever the sampling).
 
-use super::exact::{self, Motion};
+use super::motion::{self, Motion};
 use super::CamSpec;
 
 /// A smooth piece of the cycle: `phase` (0 rise, 1 far dwell, 2 return, 3 near dwell) from
@@ -28,7 +28,7 @@ impl Piece {
     /// takes as the end) on the side before it, elsewhere (its start included) the side
     /// after: every value is the piece's own.
     pub fn motion(&self, spec: &CamSpec, u: f64) -> Motion {
-        exact::motion_u(spec, self.phase, u, self.after(u))
+        motion::motion_u(spec, self.phase, u, self.after(u))
     }
     /// The side of a jump at u that belongs to the piece.
     pub fn after(&self, u: f64) -> bool {

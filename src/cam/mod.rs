@@ -22,6 +22,7 @@ pub mod exact;
 pub mod extremum;
 mod inversion;
 mod law;
+mod motion;
 mod radius;
 mod rows;
 #[cfg(test)]

@@ -9,24 +9,11 @@
 //! cycle of one revolution holds.
 
 use super::loads::{Load, LoadKind, Motion};
+pub use super::spec::Indicator;
 use super::ForceError;
 use crate::geom::DVec2;
 use crate::linkage::{Op, PDir, PDyad, Program};
 use std::f64::consts::{PI, TAU};
-
-/// The indicator diagram of one cylinder.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Indicator {
-    /// The piston: the slider's joint of an RRP group.
-    pub point: String,
-    /// The bore d, m.
-    pub bore: f64,
-    /// The gas pressure (gauge) against the cycle angle: (θ rad, p Pa), θ increasing from 0
-    /// to 2π, p ≥ 0; linear between the rows, periodic.
-    pub pressure: Vec<(f64, f64)>,
-    /// The crank angle at which the cylinder's cycle starts φ₀, radians.
-    pub offset: f64,
-}
 
 impl Indicator {
     /// The piston's area A = π·d²/4, m².

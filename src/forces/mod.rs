@@ -13,6 +13,7 @@
 
 pub mod balancing;
 pub mod diagnose;
+mod error;
 pub mod friction;
 pub mod indicator;
 pub mod lever;
@@ -20,6 +21,7 @@ pub mod loads;
 pub mod pair_friction;
 pub mod polygons;
 pub mod residual;
+mod rows;
 mod spec;
 #[cfg(test)]
 mod tests;
@@ -29,126 +31,22 @@ pub use spec::{
     Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, SeedValue, Stroke, G_STANDARD,
 };
 
+pub use error::ForceError;
 pub use loads::{Load, LoadKind, Motion, Phase};
 pub use polygons::{DriverPolygon, GroupPolygon, Polygons};
+pub use rows::{notes, seed_notes};
+use rows::{reaction_rows, row, rows, zero_references};
 pub use twin::{Equilibrium, Pair, PairKind, Reaction};
 
-use crate::check::{Key, Method, Row, Symbol};
+use crate::check::{Method, Row, Symbol};
 use crate::construct::{ConstructionError, Context};
 use crate::geom::DVec2;
 use crate::linkage::{KinPlan, PositionPlan};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
-use thiserror::Error;
 
 /// Preferred length of the largest force on a polygon, mm.
 pub const POLYGON_MM: f64 = 100.0;
-
-/// Why a force analysis cannot be carried out.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum ForceError {
-    /// A point named in `[forces]` is not a point of the mechanism.
-    #[error("forces.{key}: there is no point `{name}`")]
-    NoPoint {
-        /// The key.
-        key: &'static str,
-        /// The name.
-        name: String,
-    },
-    /// A load at a point no link carries, or carries unambiguously.
-    #[error("forces.resistance: the force at `{name}`: {why}")]
-    Uncarried {
-        /// The point.
-        name: String,
-        /// Why.
-        why: loads::Uncarried,
-    },
-    /// A centre of mass that is not on its link.
-    #[error("forces.link: the centre of mass `{name}` is not a point of link {link}")]
-    NotOnLink {
-        /// The point.
-        name: String,
-        /// The link.
-        link: usize,
-    },
-    /// The equilibrium equations do not match the unknowns (a group that is not a dyad).
-    #[error(
-        "the mechanism is not statically determinate: {equations} equations, {unknowns} unknowns"
-    )]
-    NotDeterminate {
-        /// 3 × moving links.
-        equations: usize,
-        /// 2 × pairs + 1.
-        unknowns: usize,
-    },
-    /// The equilibrium equations are singular (a group at its toggle position).
-    #[error("the equilibrium equations are singular at this position (a group at a toggle or dead position)")]
-    Singular,
-    /// A polygon cannot be closed.
-    #[error("position {position}: {what}: {error}")]
-    Polygon {
-        /// The position.
-        position: String,
-        /// The group or the driving link.
-        what: String,
-        /// The construction's diagnosis.
-        error: Box<ConstructionError>,
-    },
-    /// A position to analyse that the plan does not have.
-    #[error("forces.positions: there is no position {label}; the positions are {valid}")]
-    NoSuchPosition {
-        /// The label asked for.
-        label: String,
-        /// The plan's labels, compactly.
-        valid: String,
-    },
-    /// The equilibrium equations are singular at a position (a group at a toggle or dead
-    /// position): the twin's [`ForceError::Singular`] located.
-    #[error("position {position}: the equilibrium equations are singular{} (a group at a toggle or dead position)", .group.as_ref().map_or(String::new(), |g| format!(" in {g}")))]
-    SingularAt {
-        /// The position's label (and `with friction`).
-        position: String,
-        /// The group whose own equations are singular, when it can be told.
-        group: Option<String>,
-    },
-    /// Friction in the pairs with no solution: past `f_lock` ≤ `f` the friction equations of
-    /// the position have none (the reactions grow without bound there, or the solution turns
-    /// back where a reaction vanishes).
-    #[error("position {position}: {group} self-locks with friction in the pairs: past f = {} the friction equations have no solution ({detail}); f = {} is asked", crate::scale::format_sig(*.f_lock, 4, crate::scale::Lang::En), crate::scale::format_sig(*.f, 4, crate::scale::Lang::En))]
-    SelfLocking {
-        /// The position's label.
-        position: String,
-        /// The group that locks.
-        group: String,
-        /// The coefficient asked for.
-        f: f64,
-        /// The coefficient past which there is no solution.
-        f_lock: f64,
-        /// How the solution ends, and the route that found it.
-        detail: String,
-    },
-    /// The friction equations could not be followed (not a lock).
-    #[error("position {position}: the friction equations in the pairs could not be solved by {route} past f = {} (not a lock: the reactions stay bounded there)", crate::scale::format_sig(*.f, 4, crate::scale::Lang::En))]
-    FrictionUnsettled {
-        /// The position's label.
-        position: String,
-        /// The route.
-        route: String,
-        /// The coefficient reached.
-        f: f64,
-    },
-    /// No round μ_F can be formed.
-    #[error("no force scale μ_F can be chosen for {0} N")]
-    NoScale(f64),
-    /// An indicator's point that is not a piston.
-    #[error(
-        "forces.indicator.point: `{name}` is not the slider's joint of an RRP group (a piston)"
-    )]
-    NotPiston {
-        /// The point.
-        name: String,
-    },
-}
 
 /// One position's force analysis.
 #[derive(Debug, Clone, PartialEq)]
@@ -608,239 +506,4 @@ fn polygon_error(label: &str, (g, error): (usize, ConstructionError)) -> ForceEr
         },
         error: Box::new(error),
     }
-}
-
-/// A row of position `label` (its zero reference set by [`zero_references`]).
-fn row(label: &str, symbol: Symbol, subject: String, method: Method, g: f64, a: f64) -> Row {
-    Row {
-        key: Key::at_position(symbol, subject, label),
-        method,
-        // −0 (a balancing moment of no loads) is written as 0.
-        graphical: g + 0.0,
-        analytic: a + 0.0,
-        conditioning: None,
-        scale: a.abs(),
-    }
-}
-
-/// The inertia loads of one position, read off the acceleration plan.
-fn rows(label: &str, loads: &[Load], exact: &[Load]) -> Vec<Row> {
-    let mut rows = Vec::new();
-    for e in exact
-        .iter()
-        .filter(|l| matches!(l.kind, LoadKind::Inertia | LoadKind::InertiaMoment))
-    {
-        let g = loads.iter().find(|l| l.kind == e.kind && l.link == e.link);
-        let (g_f, g_m) = g.map_or((0.0, 0.0), |g| (g.force.length(), g.moment));
-        let subject = format!("in{}", e.link);
-        rows.push(match e.kind {
-            LoadKind::Inertia => row(
-                label,
-                Symbol::Force,
-                subject,
-                Method::Plan,
-                g_f,
-                e.force.length(),
-            ),
-            _ => row(label, Symbol::Moment, subject, Method::Plan, g_m, e.moment),
-        });
-    }
-    rows
-}
-
-/// The reactions and their points (polygons), the balancing moment and force (polygons and
-/// lever) of one position; `suffix` marks the analysis with friction (`_f`).
-fn reaction_rows(
-    label: &str,
-    suffix: &str,
-    polygons: &Polygons,
-    lever: &lever::Lever,
-    twin: &Equilibrium,
-) -> Vec<Row> {
-    let mut rows = Vec::new();
-    let mut push = |symbol: Symbol, subject: String, method: Method, g: f64, a: f64| {
-        rows.push(row(
-            label,
-            symbol,
-            format!("{subject}{suffix}"),
-            method,
-            g,
-            a,
-        ));
-    };
-    let graphical = polygons.reactions();
-    for r in &twin.reactions {
-        let Some(g) = graphical
-            .iter()
-            .find(|g| g.pair.from == r.pair.from && g.pair.to == r.pair.to)
-        else {
-            continue;
-        };
-        let subject = format!("{}_{}", r.pair.from, r.pair.to);
-        push(
-            Symbol::Reaction,
-            subject.clone(),
-            Method::Polygon,
-            g.force.length(),
-            r.force.length(),
-        );
-        if let (Some(gs), Some(s)) = (g.offset, r.offset) {
-            push(Symbol::Length, subject, Method::Polygon, gs, s);
-        }
-    }
-    let bal = || "bal".to_string();
-    push(
-        Symbol::Moment,
-        bal(),
-        Method::Polygon,
-        polygons.driver.m_bal,
-        twin.m_bal,
-    );
-    push(
-        Symbol::Moment,
-        bal(),
-        Method::Lever,
-        lever.m_bal,
-        twin.m_bal,
-    );
-    if let Some(f) = twin.f_bal {
-        let p = polygons.driver.f_bal.unwrap_or(f64::NAN);
-        push(Symbol::Force, bal(), Method::Polygon, p, f);
-        let l = lever.f_bal.unwrap_or(f64::NAN);
-        push(Symbol::Force, bal(), Method::Lever, l, f);
-    }
-    if let (Some(g), Some(a)) = (polygons.driver.arm, twin.arm) {
-        push(Symbol::Length, bal(), Method::Polygon, g, a);
-    }
-    rows
-}
-
-/// A value's zero reference is the largest of its kind at the position, and for a length
-/// (an arm, a guide reaction's point) at least the mechanism's size `size`, m, and for a
-/// moment at least the largest force times that size: a guide reaction's point on its
-/// reference point is zero against the mechanism, even where every such point is (the
-/// v-engine's pistons, whose reactions pass through their joints: 1e-16 m is zero).
-fn zero_references(rows: &mut [Row], size: f64) {
-    let largest = |s: Symbol, rows: &[Row]| {
-        rows.iter()
-            .filter(|r| r.key.symbol == s && r.analytic.is_finite())
-            .fold(0.0f64, |m, r| m.max(r.analytic.abs()))
-    };
-    let force = largest(Symbol::Reaction, rows).max(largest(Symbol::Force, rows));
-    let floor = |s: Symbol| match s {
-        Symbol::Length => size,
-        Symbol::Moment => force * size,
-        _ => 0.0,
-    };
-    let scales: Vec<f64> = rows
-        .iter()
-        .map(|r| largest(r.key.symbol, rows).max(floor(r.key.symbol)))
-        .collect();
-    for (r, s) in rows.iter_mut().zip(scales) {
-        r.scale = s;
-    }
-}
-
-/// The notes of one position for the report: the power balance against the linear solve,
-/// the polygon against the lever (the seed's «погрешность»), every slider whose guide
-/// reaction falls outside it, and the friction in the pairs.
-pub fn notes(f: &PositionForces) -> Vec<String> {
-    use crate::scale::{format_sig, Lang};
-    let n = |x: f64| format_sig(x, 6, Lang::En);
-    let (p, l) = (f.polygons.driver.m_bal, f.lever.m_bal);
-    let mut out = vec![format!(
-        "position {}: the balancing moment by the power balance Σ F·v + Σ M·ω + M_bal·ω₁ = 0 is {} N·m; the linear solve of the links' equilibrium gives {} N·m",
-        f.label,
-        format_sig(f.m_power, 10, Lang::En),
-        format_sig(f.twin.m_bal, 10, Lang::En),
-    ), format!(
-        "position {}: M_bal by the force polygons {} N·m, by Zhukovsky's lever {} N·m: they differ by {} % of the polygons' value",
-        f.label,
-        n(p),
-        n(l),
-        format_sig(if p != 0.0 { (p - l).abs() / p.abs() * 100.0 } else { 0.0 }, 3, Lang::En),
-    )];
-    if let Some(force) = f.twin.f_bal.filter(|_| f.twin.m_bal * f.sense < 0.0) {
-        out.push(format!(
-            "position {}: the balancing moment {} N·m opposes ω₁: the pinion holds the crank back, so its tooth pushes on the other flank and the balancing force F_bal = {} N acts on the line of action mirrored about the line of centres",
-            f.label,
-            n(f.twin.m_bal),
-            n(force),
-        ));
-    }
-    for s in f.sliders.iter().filter(|s| s.outside()) {
-        let [a, b] = s.ends();
-        out.push(format!(
-            "position {}: the reaction R_{}_{} = {} N acts {} m from the slider's centre, outside the slider (length {} m): a force at the centre and a couple on the ends, which carry {} N and {} N",
-            f.label, s.pair.from, s.pair.to, n(s.force), n(s.offset), n(s.length), n(a), n(b)
-        ));
-    }
-    if let Some(w) = &f.friction {
-        let (m0, m) = (f.twin.m_bal, w.twin.m_bal);
-        let eta = if m != 0.0 { m0 / m } else { f64::NAN };
-        let eta = if eta > 0.0 && eta < 1.0 {
-            format!(
-                ", the instantaneous efficiency η = M_bal/M_bal_f = {}",
-                format_sig(eta, 4, Lang::En)
-            )
-        } else {
-            String::new()
-        };
-        out.push(format!(
-            "position {}: with friction in the pairs M_bal_f = {} N·m against M_bal = {} N·m without: the pairs lose {} W{eta}; the power balance with the friction's power gives {} N·m; the friction equations (Newton's method on the friction loads' magnitudes) took {} drawings of the force polygons and {} linear solves",
-            f.label,
-            format_sig(m, 10, Lang::En),
-            format_sig(m0, 10, Lang::En),
-            n(-w.lost),
-            format_sig(w.m_power, 10, Lang::En),
-            w.approximations[0],
-            w.approximations[1],
-        ));
-    }
-    out
-}
-
-/// The seed's printed values against the rows of the analysis: each note gives the seed's
-/// value, the analysis' (graphical and analytic) and how far apart they are; a seed value
-/// whose row the report does not have says so.
-pub fn seed_notes(seed: &[SeedValue], rows: &[Row]) -> Vec<String> {
-    use crate::scale::{format_sig, Lang};
-    let n = |x: f64| format_sig(x, 6, Lang::En);
-    seed.iter()
-        .map(|s| {
-            let row = rows.iter().find(|r| {
-                r.quantity() == s.quantity
-                    && r.position().as_deref() == Some(s.position.as_str())
-                    && s.method.is_none_or(|m| m == r.method)
-            });
-            let method = s.method.map_or(String::new(), |m| format!(" ({})", m.key()));
-            match row {
-                Some(r) => {
-                    let a = r.analytic.abs();
-                    let off = if a > 0.0 { (s.value - a) / a * 100.0 } else { f64::NAN };
-                    let unit = r.unit();
-                    let si = if s.printed.ends_with(&format!(" {unit}")) {
-                        String::new()
-                    } else {
-                        format!(" = {} {unit}", n(s.value))
-                    };
-                    format!(
-                        "position {}: {}{method}: the seed prints {}{si} ({}); this analysis gives {} {unit} (analytic {} {unit}): the seed's value is {}{} % off and is not reproduced",
-                        s.position,
-                        s.quantity,
-                        s.printed,
-                        s.source,
-                        n(r.graphical.abs()),
-                        n(a),
-                        if off > 0.0 { "+" } else { "" },
-                        format_sig(off, 3, Lang::En),
-                    )
-                }
-                None => format!(
-                    "position {}: {}{method}: the seed prints {} ({}), but this report has no such row",
-                    s.position, s.quantity, s.printed, s.source
-                ),
-            }
-        })
-        .collect()
 }

@@ -121,11 +121,11 @@ pub struct ForceSpec {
     /// The working resistances.
     pub resistances: Vec<Resistance>,
     /// The driving forces of indicator diagrams (`[[forces.indicator]]`).
-    pub indicators: Vec<super::indicator::Indicator>,
+    pub indicators: Vec<Indicator>,
     /// The drive.
     pub drive: Drive,
     /// Friction in the pairs (`[forces.friction]`), analysed beside the frictionless case.
-    pub friction: Option<super::pair_friction::PairFriction>,
+    pub friction: Option<PairFriction>,
     /// The seed's printed values to compare with (`[[forces.seed]]`).
     pub seed: Vec<SeedValue>,
 }
@@ -146,4 +146,29 @@ pub struct SeedValue {
     pub printed: String,
     /// Where the seed prints it and what is wrong with it.
     pub source: String,
+}
+
+/// The indicator diagram of one cylinder.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Indicator {
+    /// The piston: the slider's joint of an RRP group.
+    pub point: String,
+    /// The bore d, m.
+    pub bore: f64,
+    /// The gas pressure (gauge) against the cycle angle: (θ rad, p Pa), θ increasing from 0
+    /// to 2π, p ≥ 0; linear between the rows, periodic.
+    pub pressure: Vec<(f64, f64)>,
+    /// The crank angle at which the cylinder's cycle starts φ₀, radians.
+    pub offset: f64,
+}
+
+/// Friction in the pairs of a mechanism (`[forces.friction]`), SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PairFriction {
+    /// The coefficient of sliding friction f, in the sliding pairs and the journals.
+    pub f: f64,
+    /// The journals' radius r, m (every revolute pair not in `radii`; 0: frictionless).
+    pub radius: f64,
+    /// Journals of their own radius, by point name, m.
+    pub radii: Vec<(String, f64)>,
 }

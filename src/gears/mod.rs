@@ -4,7 +4,7 @@
 //! velocity triangles.
 //!
 //! As everywhere in `tmm`, each procedure exists twice: a **construction** through the
-//! recorder ([`mesh::meshing`], [`generate::generate`], [`train::triangles`]) read off under
+//! recorder ([`mesh::meshing`], [`generate::generate`], [`triangles::triangles`]) read off under
 //! the drafting model, and an **analytic twin** ([`Pair`], [`Cutting`], [`Train::willis`]);
 //! [`rows`] compares them.
 //!
@@ -23,8 +23,11 @@ pub mod rows;
 mod tests;
 #[cfg(test)]
 mod tests_limits;
+#[cfg(test)]
+mod tests_train;
 pub mod train;
 mod train_rank;
+pub mod triangles;
 
 pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
 pub use pair::{Pair, PairSpec};
@@ -297,7 +300,7 @@ pub struct TrainStudy {
     /// u by the textbook's stages, when the train is a chain of stages.
     pub stages: Option<f64>,
     /// The velocity triangles.
-    pub triangles: train::Triangles,
+    pub triangles: triangles::Triangles,
     /// With n_input and n_output: the train whose first fixed-axis mesh has the ratio the
     /// required |u| = n_in/n_out asks for (the textbook's route before the tooth choice),
     /// studied alike.
@@ -337,7 +340,7 @@ pub fn train_study(
         willis,
         ratio,
         stages: t.by_stages(),
-        triangles: train::triangles(t, ctx)?,
+        triangles: triangles::triangles(t, ctx)?,
         required,
     })
 }

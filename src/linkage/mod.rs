@@ -25,11 +25,12 @@ pub use model::{
 };
 pub use plans::{kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading};
 pub use positions::{
-    group_name, plan_poses, plan_positions, PlanPoses, PlanPosition, PlanRequest, PosePosition,
-    Position, PositionPlan,
+    group_name, plan_poses, PlanPoses, PlanPosition, PlanRequest, PosePosition, Position,
+    PositionPlan,
 };
 pub use positions_draw::{
-    draw_links, fixed_pivots, frame_guides, guide_ends, FrameGuide, Part, GUIDE_MARGIN_MM,
+    draw_links, fixed_pivots, frame_guides, guide_ends, plan_positions, FrameGuide, Part,
+    GUIDE_MARGIN_MM,
 };
 pub use program::Program;
 pub(crate) use program::{Op, PDir, PDyad};

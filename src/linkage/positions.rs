@@ -1,17 +1,15 @@
 //! The plan of positions (план положений): N crank positions plus the extreme positions,
-//! each constructed with compass and straightedge, drawn into one figure (`positions_draw`)
-//! with the trajectories of the link points, the extreme positions, θ and the stroke H.
+//! solved and walked in crank order; `positions_draw` constructs each with compass and
+//! straightedge and draws them into one figure with the trajectories of the link points, the
+//! extreme positions, θ and the stroke H.
 
 use super::analytic::Pose;
 use super::construction::Built;
 use super::extremes::Extremes;
 use super::model::{Mechanism, Sense};
-use super::positions_draw::draw_plan;
-use super::program::{Op, Program};
-use super::{LinkageError, ModelError};
-use crate::construct::{Context, Drafting, Figure, Recorder};
-use crate::geom::Tolerances;
-use crate::scale::Scale;
+use super::program::Program;
+use super::LinkageError;
+use crate::construct::Figure;
 use std::f64::consts::TAU;
 
 /// What positions to construct.
@@ -138,7 +136,7 @@ pub fn plan_poses(m: &Mechanism, req: &PlanRequest) -> Result<PlanPoses, Linkage
 /// Walk the positions of the plan in crank order: at each, `build` (label, φ, the previous
 /// position when assembly goes by continuity) constructs what the plan draws, then the
 /// analytic twin is solved. A construction that fails is reported with its own diagnosis.
-fn walk<B>(
+pub(super) fn walk<B>(
     m: &Mechanism,
     req: &PlanRequest,
     program: &Program,
@@ -167,7 +165,7 @@ fn walk<B>(
 /// The extremes and the crank angle of position 1. With a given start angle the extremes
 /// are optional: a mechanism whose output turns fully has none, and one that cannot make a
 /// full turn fails at a named position later.
-fn start_of(
+pub(super) fn start_of(
     program: &Program,
     m: &Mechanism,
     req: &PlanRequest,
@@ -183,7 +181,7 @@ fn start_of(
     }
 }
 
-fn cannot_assemble(
+pub(super) fn cannot_assemble(
     m: &Mechanism,
     label: &str,
     phi: f64,
@@ -196,48 +194,6 @@ fn cannot_assemble(
         group: group_name(m, group),
         detail,
     }
-}
-
-/// Build the plan of positions of `m` at μ_l = `scale`.
-pub fn plan_positions(
-    m: &Mechanism,
-    req: &PlanRequest,
-    scale: Scale,
-    drafting: Drafting,
-) -> Result<PositionPlan, LinkageError> {
-    let program = Program::compile(m)?;
-    let (extremes, start) = start_of(&program, m, req)?;
-    let extent_mm = model_extent(&program) / scale.value();
-    let tol = Tolerances::for_model_size(extent_mm.max(1.0)).map_err(ModelError::from)?;
-    let mut rec = Recorder::in_context("plan", scale, &Context::new(tol, drafting));
-    let mut k = 0;
-    let positions = walk(
-        m,
-        req,
-        &program,
-        start,
-        extremes.as_ref(),
-        |label, phi, prev| {
-            k += 1;
-            rec.set_group(k);
-            program
-                .construct(
-                    &mut rec,
-                    phi,
-                    prev.map(|p| &p.built),
-                    &format!("position {label}"),
-                )
-                .map_err(|f| cannot_assemble(m, label, phi, f.group, f.error.to_string()))
-        },
-    )?;
-    rec.set_group(0);
-    draw_plan(&mut rec, &program, &positions, extremes.as_ref());
-    Ok(PositionPlan {
-        program,
-        extremes,
-        positions,
-        figure: rec.finish(),
-    })
 }
 
 /// `2 (RRR, links 2, 3)`.
@@ -254,20 +210,4 @@ pub fn group_name(m: &Mechanism, g: usize) -> String {
             )
         },
     )
-}
-
-/// Largest distance between fixed points and the crank reach, m (sets the tolerances).
-fn model_extent(p: &Program) -> f64 {
-    let mut e = p.crank_length;
-    for a in &p.fixed {
-        for b in &p.fixed {
-            e = e.max(a.distance(*b));
-        }
-    }
-    for op in &p.ops {
-        if let Op::Point { along, across, .. } = op {
-            e = e.max(along.hypot(*across));
-        }
-    }
-    e
 }

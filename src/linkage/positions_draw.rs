@@ -3,10 +3,16 @@
 
 use super::construction::Built;
 use super::extremes::{Extremes, OutputCoord};
-use super::positions::{PlanPoses, PlanPosition, PosePosition};
+use super::model::Mechanism;
+use super::positions::{
+    cannot_assemble, start_of, walk, PlanPoses, PlanPosition, PlanRequest, PosePosition,
+    PositionPlan,
+};
 use super::program::{Op, PDir, PDyad, Program};
-use crate::construct::{Item, Recorder, Role};
-use crate::geom::{Arc, Circle, DVec2, Segment, Side};
+use super::{LinkageError, ModelError};
+use crate::construct::{Context, Drafting, Item, Recorder, Role};
+use crate::geom::{Arc, Circle, DVec2, Segment, Side, Tolerances};
+use crate::scale::Scale;
 use std::f64::consts::TAU;
 
 /// Which part of a mechanism to draw.
@@ -452,4 +458,62 @@ fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition],
             &[],
         );
     }
+}
+
+/// Build the plan of positions of `m` at μ_l = `scale`.
+pub fn plan_positions(
+    m: &Mechanism,
+    req: &PlanRequest,
+    scale: Scale,
+    drafting: Drafting,
+) -> Result<PositionPlan, LinkageError> {
+    let program = Program::compile(m)?;
+    let (extremes, start) = start_of(&program, m, req)?;
+    let extent_mm = model_extent(&program) / scale.value();
+    let tol = Tolerances::for_model_size(extent_mm.max(1.0)).map_err(ModelError::from)?;
+    let mut rec = Recorder::in_context("plan", scale, &Context::new(tol, drafting));
+    let mut k = 0;
+    let positions = walk(
+        m,
+        req,
+        &program,
+        start,
+        extremes.as_ref(),
+        |label, phi, prev| {
+            k += 1;
+            rec.set_group(k);
+            program
+                .construct(
+                    &mut rec,
+                    phi,
+                    prev.map(|p| &p.built),
+                    &format!("position {label}"),
+                )
+                .map_err(|f| cannot_assemble(m, label, phi, f.group, f.error.to_string()))
+        },
+    )?;
+    rec.set_group(0);
+    draw_plan(&mut rec, &program, &positions, extremes.as_ref());
+    Ok(PositionPlan {
+        program,
+        extremes,
+        positions,
+        figure: rec.finish(),
+    })
+}
+
+/// Largest distance between fixed points and the crank reach, m (sets the tolerances).
+fn model_extent(p: &Program) -> f64 {
+    let mut e = p.crank_length;
+    for a in &p.fixed {
+        for b in &p.fixed {
+            e = e.max(a.distance(*b));
+        }
+    }
+    for op in &p.ops {
+        if let Op::Point { along, across, .. } = op {
+            e = e.max(along.hypot(*across));
+        }
+    }
+    e
 }

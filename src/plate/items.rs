@@ -9,6 +9,8 @@ use std::f64::consts::TAU;
 
 /// ГОСТ 2.304 size of labels (height of capitals), mm.
 pub const LABEL_HEIGHT_MM: f64 = 3.5;
+/// ГОСТ 2.304 size of view captions, mm.
+pub const CAPTION_HEIGHT_MM: f64 = 5.0;
 /// Least distance from a label's anchor to its text's box, mm (from a revolute pair's
 /// circle for a label of the pair).
 pub const LABEL_GAP_MM: f64 = 1.0;

@@ -49,12 +49,13 @@ use thiserror::Error;
 
 pub use demo::{demo_mechanism, demo_plate, demo_velocity_plan};
 pub use fonts::font_database;
+pub use items::CAPTION_HEIGHT_MM;
 pub use labels::{layout, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR};
 pub use pdf::{to_pdf, PdfError};
 pub use raster::{png_size, to_png, to_png_dpi, to_png_dpi_all, MAX_PIXELS};
 pub use sheet::{Sheet, SheetSize, TitleBlock};
 pub use style::Pen;
-pub use svg::{to_svg, CAPTION_HEIGHT_MM, FONT_FAMILY};
+pub use svg::{to_svg, FONT_FAMILY};
 pub use table::TableBlock;
 
 pub use write::{write_all_atomic, write_atomic};

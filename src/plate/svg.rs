@@ -13,8 +13,6 @@ use svg::Document;
 /// The font family of every text; [`font_database`](super::font_database) maps it (and every
 /// generic family) to the bundled DejaVu Sans.
 pub const FONT_FAMILY: &str = "DejaVu Sans";
-/// ГОСТ 2.304 size of view captions, mm.
-pub const CAPTION_HEIGHT_MM: f64 = 5.0;
 
 /// The plate as an SVG document: `width`/`height` in mm and a `viewBox` in mm, so it prints
 /// 1:1. Deterministic: the same plate always gives the same bytes (stable element order,

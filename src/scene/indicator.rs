@@ -3,9 +3,9 @@
 
 use super::check::{item, join, number, quoted, Checker};
 use super::kinematics::{point, point_names};
+use super::raw::RawIndicator;
 use crate::forces::indicator::Indicator;
 use crate::linkage::{Dyad, Mechanism};
-use serde::Deserialize;
 
 /// The highest gas pressure a scene may give, MPa.
 const MAX_MPA: f64 = 1e3;
@@ -13,16 +13,6 @@ const MAX_MPA: f64 = 1e3;
 const PA_PER_MPA: f64 = 1e6;
 /// Tolerance on the cycle's ends 0° and 360°, degrees.
 const ENDS_DEG: f64 = 1e-9;
-
-/// `[[forces.indicator]]` as written.
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(crate) struct RawIndicator {
-    pub point: Option<String>,
-    pub bore: Option<f64>,
-    pub offset: Option<f64>,
-    pub pressure: Option<Vec<Vec<f64>>>,
-}
 
 /// Validate one `[[forces.indicator]]` at `base` against `mechanism` (its point must be the
 /// slider's joint of an RRP group).

@@ -8,6 +8,7 @@ mod dynamics;
 mod error;
 mod forces;
 mod friction;
+mod gear_values;
 mod gears;
 mod groups;
 mod indicator;
@@ -15,6 +16,7 @@ mod kinematics;
 mod load;
 mod model;
 mod outputs;
+mod planetary;
 mod raw;
 mod structure;
 

@@ -20,7 +20,7 @@ pub(crate) struct RawScene {
     pub friction: Option<super::friction::RawFriction>,
     pub dynamics: Option<super::dynamics::RawDynamics>,
     pub gears: Option<super::gears::RawGears>,
-    pub planetary: Option<super::gears::RawPlanetary>,
+    pub planetary: Option<super::planetary::RawPlanetary>,
     pub cam: Option<super::cam::RawCam>,
 }
 
@@ -297,7 +297,7 @@ pub(crate) struct RawForces {
     #[serde(default)]
     pub resistance: Vec<RawResistance>,
     #[serde(default)]
-    pub indicator: Vec<super::indicator::RawIndicator>,
+    pub indicator: Vec<RawIndicator>,
     pub drive: Option<RawDrive>,
     pub friction: Option<RawPairFriction>,
     #[serde(default)]
@@ -359,4 +359,14 @@ pub(crate) struct RawDrive {
     pub mate_teeth: Option<i64>,
     pub pressure_angle: Option<f64>,
     pub towards: Option<f64>,
+}
+
+/// `[[forces.indicator]]` as written.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawIndicator {
+    pub point: Option<String>,
+    pub bore: Option<f64>,
+    pub offset: Option<f64>,
+    pub pressure: Option<Vec<Vec<f64>>>,
 }

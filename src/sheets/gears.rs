@@ -152,7 +152,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             ),
             tri.scale_l.caption(lang),
             tri.scale_v.caption(lang),
-            format_sig(crate::gears::train::PLAN_H, 3, lang),
+            format_sig(crate::gears::triangles::PLAN_H, 3, lang),
             tr(lang, "мм", "мм", "mm"),
         );
         blocks.push(view(&tri.figure, caption, "planetary.module", tri.scale_v));

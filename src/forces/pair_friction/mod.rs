@@ -25,21 +25,11 @@ pub mod reduced;
 
 use super::diagnose::{group_of, order_of};
 use super::loads::{Load, LoadKind, Motion};
+pub use super::spec::PairFriction;
 use super::twin::{Pair, PairKind, Reaction};
 use super::ForceError;
 use crate::geom::DVec2;
 use crate::linkage::Program;
-
-/// Friction in the pairs of a mechanism (`[forces.friction]`), SI.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PairFriction {
-    /// The coefficient of sliding friction f, in the sliding pairs and the journals.
-    pub f: f64,
-    /// The journals' radius r, m (every revolute pair not in `radii`; 0: frictionless).
-    pub radius: f64,
-    /// Journals of their own radius, by point name, m.
-    pub radii: Vec<(String, f64)>,
-}
 
 impl PairFriction {
     /// The friction circle's radius ρ = f·r of the journal at point `k`.

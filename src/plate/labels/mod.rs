@@ -11,10 +11,9 @@
 //! The SVG writer writes the texts from this layout, and the tests check its boxes.
 
 use super::items::{dimension_text, item_outlines, Outline, Shape, JOINT_RADIUS_MM};
-use super::items::{LABEL_GAP_MM, LABEL_HEIGHT_MM};
+use super::items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
 use super::path::Map;
 use super::style::{Mark, Pen};
-use super::svg::CAPTION_HEIGHT_MM;
 use super::table::table_marks;
 use super::text::{measure, plain, Align, Extent, Placed};
 use super::{Plate, Rect, TextBlock, View, CAPTION_BAND_MM};

@@ -28,37 +28,12 @@ use crate::linkage::{draw_links, Built, Op, PDyad, Part, Program};
 use crate::scale::Scale;
 use std::f64::consts::{PI, TAU};
 
+mod driver;
+use driver::driver;
+
 /// Length of a load's arrow on a group's drawing, mm (the drawing shows where and which
 /// way; the polygon shows how much).
 const ARROW_MM: f64 = 14.0;
-
-/// The longest piece of a pitch circle drawn about the pitch point, mm: a wheel larger than
-/// its crank shows as an arc through P, not a circle filling the sheet.
-const PITCH_ARC_MM: f64 = 80.0;
-
-/// Half the length of the line of action drawn through the pitch point, mm.
-const LINE_OF_ACTION_MM: f64 = 30.0;
-
-/// A wheel's pitch circle about `c` of radius `r` (mm), whole when small, else the arc of
-/// [`PITCH_ARC_MM`] centred on the direction `at` (radians) to the pitch point.
-fn pitch_circle(rec: &mut Recorder, what: &str, c: DVec2, r: f64, at: f64) {
-    let sweep = PITCH_ARC_MM / r;
-    let item = if sweep >= TAU * 0.5 {
-        Circle::new(c, r).map(Item::Circle)
-    } else {
-        (r > 0.0).then(|| {
-            Item::Arc(crate::geom::Arc {
-                center: c,
-                radius: r,
-                start: at - sweep / 2.0,
-                sweep,
-            })
-        })
-    };
-    if let Some(item) = item {
-        rec.draw(what, item, Role::Axis, &[]);
-    }
-}
 
 /// One group's force analysis as drawn.
 #[derive(Debug, Clone, PartialEq)]
@@ -599,94 +574,4 @@ fn show_reaction(sch: &mut Scheme<'_>, r: &Reaction) {
     );
     let l = Load { shift, ..l };
     sch.show(&l);
-}
-
-/// The driving link: the balancing moment (coupling) or force (gear) and the frame's reaction.
-fn driver(
-    board: &Board<'_>,
-    applied: &[Load],
-    drive: &Drive,
-) -> Result<DriverPolygon, ConstructionError> {
-    let prog = board.prog;
-    let b = board.built;
-    let crank = prog.crank_link as usize;
-    let mut sch = Scheme::new(board, format!("driving link {crank}"));
-    draw_links(&mut sch.rec, prog, b, Role::Given, "crank", Part::Driver);
-    let loads = on(applied, crank);
-    for l in &loads {
-        sch.show(l);
-    }
-    let o = b.p[prog.centre];
-    let k = sch.moments(o, &loads);
-    let mut pol = Polygon::new(
-        format!("force triangle of link {crank}"),
-        board.mu_f,
-        &board.ctx,
-    );
-    let p0 = pol.tip;
-    pol.lay_all(&loads);
-    let (m_bal, f_bal) = match drive {
-        Drive::Coupling => (-k, None),
-        Drive::Gear(g) => {
-            let mu = board.mu_l.value();
-            let r = g.radius() / mu;
-            // The tooth pushes on the flank that turns the crank the way M_bal = −k does.
-            let flank = if k == 0.0 { board.sense } else { -k.signum() };
-            let (p, d) = line_of_action(o, r, g.towards, g.pressure_angle, flank);
-            let towards = DVec2::from_angle(g.towards);
-            pitch_circle(&mut sch.rec, "pitch circle of the wheel", o, r, g.towards);
-            if let Some(rm) = g.mate_radius().map(|rm| rm / mu) {
-                let c = o + towards * (r + rm);
-                pitch_circle(
-                    &mut sch.rec,
-                    "pitch circle of the pinion",
-                    c,
-                    rm,
-                    g.towards + PI,
-                );
-            }
-            sch.rec.draw(
-                "line of centres",
-                Item::Segment(Segment::new(o, p)),
-                Role::Axis,
-                &[],
-            );
-            let pid = sch
-                .rec
-                .point("pitch point", p, Role::Given, "P", towards, &[]);
-            let half = (r * 0.6).min(LINE_OF_ACTION_MM);
-            sch.rec.draw(
-                "line of action at α_w",
-                Item::Segment(Segment::new(p - d * half, p + d * half)),
-                Role::Axis,
-                &[pid],
-            );
-            // The balancing force's arm about O, measured.
-            let unit = Load::force(crank, LoadKind::Reaction, "F_{у}".into(), d, prog.centre);
-            let unit = Load {
-                shift: (p - o) * mu,
-                ..unit
-            };
-            let arm = sch.moment(o, &unit);
-            let f = -k / arm;
-            sch.show(&Load {
-                force: d * f,
-                ..unit
-            });
-            pol.lay("F_{у}", d * f);
-            (-k, Some((f, arm.abs())))
-        }
-    };
-    let e = pol.tip;
-    let r01 = pol.read(&reaction_name(0, crank), e, p0);
-    let reaction = revolute(0, crank, prog.centre, r01);
-    show_reaction(&mut sch, &reaction);
-    Ok(DriverPolygon {
-        scheme: sch.rec.finish(),
-        polygon: pol.rec.finish(),
-        reaction,
-        m_bal,
-        f_bal: f_bal.map(|(f, _)| f),
-        arm: f_bal.map(|(_, arm)| arm),
-    })
 }

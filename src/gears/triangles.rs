@@ -1,0 +1,256 @@
+//! The velocity triangles of a train (Smirnov / Kutzbach): the axes and the mesh poles at
+//! their heights at μ_l, the distribution line of each link through two known points, and
+//! the plan of angular velocities — rays from a pole at H parallel to the lines, their
+//! intercepts ∝ ω.
+
+use super::train::{Train, TrainError};
+use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::geom::{DVec2, Segment};
+use crate::scale::{Quantity, Scale};
+
+/// The velocity triangles and the plan of angular velocities, and what was read off them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Triangles {
+    /// μ_l of the heights.
+    pub scale_l: Scale,
+    /// μ_v of the velocities.
+    pub scale_v: Scale,
+    /// The picture of linear velocities (and the plan of angular velocities beside it).
+    pub figure: Figure,
+    /// ω of every shaft read off the plan, for ω_in = 1 (intercepts as read × μ_v/(μ_l H)).
+    pub omega: Vec<f64>,
+    /// u = ω_in/ω_out as read (the intercepts' ratio).
+    pub ratio: f64,
+}
+
+/// The pole distance of the plan of angular velocities, mm.
+pub const PLAN_H: f64 = 40.0;
+
+/// Construct the velocity triangles of `train` for ω_in = 1 rad/s in `ctx`.
+///
+/// # Errors
+/// [`TrainError::Layout`] when the scheme cannot be laid out or a link's line is not fixed.
+pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> {
+    let (ys, poles) = train.layout()?;
+    let lo = ys
+        .iter()
+        .chain(&poles)
+        .fold(f64::INFINITY, |a, v| a.min(*v));
+    let hi = ys
+        .iter()
+        .chain(&poles)
+        .fold(f64::NEG_INFINITY, |a, v| a.max(*v));
+    let span = (hi - lo).max(train.module);
+    let bad = |s: &str| TrainError::Layout(s.to_string());
+    let mu_l = Scale::round_for(span, 200.0, Quantity::Length).ok_or_else(|| bad("μ_l"))?;
+    let n = train.shafts.len();
+    // The input's pole: the first mesh of the input shaft.
+    let (first, _) = train
+        .meshes
+        .iter()
+        .enumerate()
+        .find(|(_, m)| {
+            train.wheels[m.0].shaft == train.input || train.wheels[m.1].shaft == train.input
+        })
+        .ok_or_else(|| bad("the input meshes nothing"))?;
+    let v_in = (poles[first] - ys[train.input]).abs().max(train.module);
+    let mu_v = Scale::round_for(v_in, 60.0, Quantity::Velocity).ok_or_else(|| bad("μ_v"))?;
+    let mut rec = Recorder::in_context("velocity triangles", mu_v, ctx);
+    let (ml, mv) = (mu_l.value(), mu_v.value());
+    let yy = |y: f64| (y - lo) / ml;
+    // The axis of heights.
+    rec.draw(
+        "the axis of heights",
+        Item::Segment(Segment::new(
+            DVec2::new(0.0, -5.0),
+            DVec2::new(0.0, yy(hi) + 5.0),
+        )),
+        Role::Axis,
+        &[],
+    );
+    // Each link's distribution line as two drawn points (x = v/μ_v, y = height/μ_l).
+    let mut lines: Vec<Option<(DVec2, DVec2)>> = vec![None; n];
+    let at = |l: &(DVec2, DVec2), y: f64| -> f64 {
+        let (a, b) = *l;
+        a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y)
+    };
+    if let Some(f) = train.fixed {
+        lines[f] = Some((DVec2::new(0.0, yy(ys[f])), DVec2::new(0.0, yy(ys[f]) + 1.0)));
+    }
+    // Given: the input's pole velocity ω_in·r.
+    let pin = poles[first];
+    lines[train.input] = Some((
+        DVec2::new(0.0, yy(ys[train.input])),
+        DVec2::new((pin - ys[train.input]) / mv, yy(pin)),
+    ));
+    for _ in 0..2 * n + 2 {
+        for k in 0..n {
+            if lines[k].is_some() {
+                continue;
+            }
+            let mut pts: Vec<DVec2> = Vec::new();
+            let sat = train.is_satellite(k);
+            if !sat {
+                pts.push(DVec2::new(0.0, yy(ys[k])));
+            }
+            for (mi, m) in train.meshes.iter().enumerate() {
+                for (a, b) in [(m.0, m.1), (m.1, m.0)] {
+                    if train.wheels[a].shaft == k {
+                        if let Some(l) = &lines[train.wheels[b].shaft] {
+                            pts.push(DVec2::new(at(l, yy(poles[mi])), yy(poles[mi])));
+                        }
+                    }
+                }
+            }
+            if let Some(h) = train.carrier {
+                if sat {
+                    if let Some(l) = &lines[h] {
+                        pts.push(DVec2::new(at(l, yy(ys[k])), yy(ys[k])));
+                    }
+                } else if k == h {
+                    for &s in &train.satellites {
+                        if let Some(l) = &lines[s] {
+                            pts.push(DVec2::new(at(l, yy(ys[s])), yy(ys[s])));
+                        }
+                    }
+                }
+            }
+            // Two points at distinct heights fix the line.
+            if let Some(p0) = pts.first().copied() {
+                if let Some(p1) = pts.iter().copied().find(|p| (p.y - p0.y).abs() > 1e-9) {
+                    lines[k] = Some((p0, p1));
+                }
+            }
+        }
+    }
+    let mut omega = vec![0.0; n];
+    // The input's and the output's intercepts (shaft, drawn, read), mm.
+    let mut ends: Vec<(usize, f64, f64)> = Vec::new();
+    let y_ref = yy(hi) + 10.0 + PLAN_H;
+    let pole = DVec2::new(0.0, y_ref - PLAN_H);
+    rec.draw(
+        "the line of the plan of ω",
+        Item::Segment(Segment::new(
+            DVec2::new(-60.0, y_ref),
+            DVec2::new(60.0, y_ref),
+        )),
+        Role::Construction,
+        &[],
+    );
+    rec.point(
+        "the pole of the plan of ω",
+        pole,
+        Role::Given,
+        "p_ω",
+        DVec2::new(-1.0, -0.5),
+        &[],
+    );
+    // The heights: every axis and mesh pole, marked on the axis of heights.
+    for (k, y) in ys.iter().enumerate() {
+        let id = rec.draw(
+            format!("the axis of {}", train.shafts[k]),
+            Item::Segment(Segment::new(
+                DVec2::new(-3.0, yy(*y)),
+                DVec2::new(3.0, yy(*y)),
+            )),
+            Role::Construction,
+            &[],
+        );
+        let _ = id;
+    }
+    for (k, (a, b)) in lines
+        .iter()
+        .enumerate()
+        .filter_map(|(k, l)| l.map(|l| (k, l)))
+    {
+        // The link's own points: its axis and its poles; its line drawn between them.
+        let mut hs = vec![yy(ys[k])];
+        for (mi, m) in train.meshes.iter().enumerate() {
+            if train.wheels[m.0].shaft == k || train.wheels[m.1].shaft == k {
+                hs.push(yy(poles[mi]));
+                let tip = DVec2::new(at(&(a, b), yy(poles[mi])), yy(poles[mi]));
+                if tip.x.abs() > 1e-9 {
+                    rec.draw(
+                        "the velocity of the pole",
+                        Item::Vector {
+                            from: DVec2::new(0.0, tip.y),
+                            to: tip,
+                        },
+                        Role::Result,
+                        &[],
+                    );
+                }
+            }
+        }
+        if train.carrier == Some(k) {
+            hs.extend(train.satellites.iter().map(|s| yy(ys[*s])));
+        }
+        let (ylo, yhi) = hs
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| {
+                (l.min(*v), h.max(*v))
+            });
+        let (pa, pb) = (
+            DVec2::new(at(&(a, b), ylo), ylo),
+            DVec2::new(at(&(a, b), yhi), yhi),
+        );
+        let id = rec.draw(
+            format!("the distribution line of {}", train.shafts[k]),
+            Item::Segment(Segment::new(pa, pb)),
+            Role::Result,
+            &[],
+        );
+        let top = if pb.x.abs() >= pa.x.abs() { pb } else { pa };
+        rec.label(id, &train.shafts[k], top, DVec2::new(top.x.signum(), 0.3));
+        // The ray of the plan parallel to it, to the line of the plan.
+        let slope = (b.x - a.x) / (b.y - a.y);
+        let hit = DVec2::new(slope * PLAN_H, y_ref);
+        let ray = rec.draw(
+            format!("the ray of ω of {}", train.shafts[k]),
+            Item::Segment(Segment::new(pole, hit)),
+            Role::Construction,
+            &[],
+        );
+        let _ = ray;
+        let read = rec.measure(DVec2::new(0.0, y_ref), hit);
+        if k == train.input || k == train.output {
+            ends.push((k, read.drawn_mm, read.read_mm));
+        }
+        // ω = (intercept μ_v)/(H μ_l), signed by the side.
+        omega[k] = hit.x.signum() * read.read_mm * mv / (PLAN_H * ml);
+    }
+    if let Some(k) = lines.iter().position(Option::is_none) {
+        return Err(TrainError::Layout(format!(
+            "the velocities of shaft {} cannot be drawn",
+            train.shafts[k]
+        )));
+    }
+    // A resolution that reads the input's or the output's intercept as 0 leaves no ratio.
+    if ends
+        .iter()
+        .any(|(_, drawn, read)| *read == 0.0 && *drawn > 0.0)
+    {
+        if let Some((k, drawn, _)) = ends
+            .iter()
+            .filter(|(_, drawn, _)| *drawn > 0.0)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+        {
+            return Err(TrainError::Unreadable {
+                shaft: train.shafts[*k].clone(),
+                drawn_mm: *drawn,
+                resolution_mm: ctx.drafting.resolution_mm(),
+            });
+        }
+    }
+    let (wi, wo) = (omega[train.input], omega[train.output]);
+    if wo.abs() < 1e-300 {
+        return Err(TrainError::OutputAtRest);
+    }
+    Ok(Triangles {
+        scale_l: mu_l,
+        scale_v: mu_v,
+        figure: rec.finish(),
+        omega,
+        ratio: wi / wo,
+    })
+}

@@ -1,0 +1,282 @@
+//! `[planetary]` → [`PlanetarySpec`]: wheels on named shafts, meshes by wheel names, the
+//! input, output, fixed shaft, carrier and satellites by shaft name, each checked with its key
+//! path; a train whose roles are not distinct, whose mobility is not 1 or that is not coaxial
+//! is refused with the key that makes it so.
+
+use super::check::{item, join, Checker};
+use super::gear_values::{module_mm, teeth};
+use crate::gears::train::{TrainError, Wheel};
+use crate::gears::{Mesh, PlanetarySpec, Train};
+use serde::Deserialize;
+
+/// `[planetary]`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPlanetary {
+    pub module: Option<f64>,
+    pub input: Option<String>,
+    pub output: Option<String>,
+    pub fixed: Option<String>,
+    pub carrier: Option<String>,
+    #[serde(default)]
+    pub satellites: Vec<String>,
+    pub n_input: Option<f64>,
+    pub n_output: Option<f64>,
+    pub count: Option<i64>,
+    #[serde(default)]
+    pub wheel: Vec<RawWheel>,
+    #[serde(default)]
+    pub mesh: Vec<RawMesh>,
+}
+
+/// `[[planetary.wheel]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawWheel {
+    pub name: Option<String>,
+    pub z: Option<i64>,
+    pub shaft: Option<String>,
+    pub internal: Option<bool>,
+}
+
+/// `[[planetary.mesh]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawMesh {
+    pub wheels: Option<Vec<String>>,
+}
+
+/// Validate `[planetary]`: wheels on named shafts, meshes by wheel names, the input, output,
+/// fixed shaft, carrier and satellites by shaft name; the train must have mobility 1 and be
+/// drawable (coaxial).
+pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<PlanetarySpec> {
+    const P: &str = "planetary";
+    let key = |k: &str| join(P, k);
+    let before = check.problems.len();
+    let module = raw
+        .module
+        .map_or(0.001, |m| module_mm(check, &key("module"), m));
+    let mut shafts: Vec<String> = Vec::new();
+    let mut wheels = Vec::new();
+    if raw.wheel.is_empty() {
+        check.push(
+            key("wheel"),
+            None,
+            "missing: expected [[planetary.wheel]] (name, z, shaft)",
+        );
+    }
+    for (i, w) in raw.wheel.iter().enumerate() {
+        let base = item(&key("wheel"), i);
+        let k = |s: &str| join(&base, s);
+        let name = check.name(&k("name"), w.name.as_ref());
+        if wheels.iter().any(|x: &Wheel| x.name == name) {
+            check.push(
+                k("name"),
+                Some(format!("{name:?}")),
+                "expected a wheel name unique in the train",
+            );
+        }
+        let z = match check.required(&k("z"), w.z, "a tooth number") {
+            Some(z) => teeth(check, &k("z"), z),
+            None => 5,
+        };
+        let shaft = check.name(&k("shaft"), w.shaft.as_ref());
+        let idx = shafts.iter().position(|s| *s == shaft).unwrap_or_else(|| {
+            shafts.push(shaft.clone());
+            shafts.len() - 1
+        });
+        wheels.push(Wheel {
+            name,
+            z: f64::from(z),
+            shaft: idx,
+            internal: w.internal.unwrap_or(false),
+        });
+    }
+    let mut meshes = Vec::new();
+    for (i, m) in raw.mesh.iter().enumerate() {
+        let k = join(&item(&key("mesh"), i), "wheels");
+        match m.wheels.as_deref() {
+            Some([a, b]) => {
+                let find = |n: &str| wheels.iter().position(|w: &Wheel| w.name == n);
+                match (find(a), find(b)) {
+                    (Some(x), Some(y)) if x != y && !(wheels[x].internal && wheels[y].internal) => {
+                        meshes.push(Mesh(x, y))
+                    }
+                    _ => check.push(
+                        &k,
+                        Some(format!("{:?}", [a, b])),
+                        "expected two different wheels of [[planetary.wheel]], not both internal",
+                    ),
+                }
+            }
+            other => check.push(
+                &k,
+                other.map(|v| format!("{v:?}")),
+                "expected two wheel names [a, b]",
+            ),
+        }
+    }
+    let mut shaft_of =
+        |check: &mut Checker, k: &str, v: Option<&String>, add: bool| -> Option<usize> {
+            let v = v?;
+            match shafts.iter().position(|s| s == v) {
+                Some(i) => Some(i),
+                None if add => {
+                    shafts.push(v.clone());
+                    Some(shafts.len() - 1)
+                }
+                None => {
+                    check.push(
+                        k,
+                        Some(format!("{v:?}")),
+                        "expected the shaft of a [[planetary.wheel]]",
+                    );
+                    None
+                }
+            }
+        };
+    let carrier = shaft_of(check, &key("carrier"), raw.carrier.as_ref(), true);
+    let input = shaft_of(check, &key("input"), raw.input.as_ref(), true);
+    let output = shaft_of(check, &key("output"), raw.output.as_ref(), true);
+    let fixed = shaft_of(check, &key("fixed"), raw.fixed.as_ref(), false);
+    let satellites: Vec<usize> = raw
+        .satellites
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| shaft_of(check, &item(&key("satellites"), i), Some(s), false))
+        .collect();
+    for (k, v) in [("input", input), ("output", output)] {
+        if v.is_none() {
+            check.push(key(k), None, "missing: expected a shaft name");
+        }
+    }
+    distinct_shafts(check, raw, [input, output, fixed, carrier], &satellites);
+    let n_input = raw.n_input.map(|n| {
+        let n = check.bounded(&key("n_input"), n, 1e6, "a speed in rpm within ±1e6, not 0");
+        if n == 0.0 {
+            check.push(
+                key("n_input"),
+                Some("0".into()),
+                "expected a speed in rpm within ±1e6, not 0 (the input turns)",
+            );
+        }
+        n
+    });
+    let n_output = raw.n_output.map(|n| {
+        check.in_range(
+            &key("n_output"),
+            n,
+            1e6,
+            "a required output speed > 0 rpm, at most 1e6",
+        )
+    });
+    let count = raw.count.and_then(|c| match u32::try_from(c) {
+        Ok(k) if (1..=12).contains(&k) => Some(k),
+        _ => {
+            check.push(
+                key("count"),
+                Some(c.to_string()),
+                "expected 1 to 12 satellites",
+            );
+            None
+        }
+    });
+    let (Some(input), Some(output)) = (input, output) else {
+        return None;
+    };
+    if check.problems.len() != before {
+        return None;
+    }
+    let train = Train {
+        shafts,
+        wheels,
+        meshes,
+        input,
+        output,
+        fixed,
+        carrier,
+        satellites,
+        module,
+    };
+    if let Err(e) = train.ratio().and_then(|_| train.layout()) {
+        let (k, value) = match &e {
+            TrainError::InputLocked { input, .. } => ("input", Some(format!("{input:?}"))),
+            TrainError::OutputAtRest => ("output", raw.output.as_ref().map(|o| format!("{o:?}"))),
+            TrainError::NoCarrier(_) => ("carrier", None),
+            _ => ("mesh", None),
+        };
+        check.push(
+            key(k),
+            value,
+            format!("a train of mobility 1 that can be drawn: {e}"),
+        );
+        return None;
+    }
+    Some(PlanetarySpec {
+        train,
+        n_input,
+        n_output,
+        satellites: count,
+    })
+}
+
+/// The roles of a train's shafts must be distinct: the output is not the input, neither is
+/// fixed, a carrier has satellites (and satellites a carrier), a satellite is neither the
+/// carrier nor the fixed shaft.
+fn distinct_shafts(
+    check: &mut Checker,
+    raw: &RawPlanetary,
+    [input, output, fixed, carrier]: [Option<usize>; 4],
+    satellites: &[usize],
+) {
+    const P: &str = "planetary";
+    let key = |k: &str| join(P, k);
+    let shown = |v: Option<&String>| v.map(|s| format!("{s:?}"));
+    if input.is_some() && input == output {
+        check.push(
+            key("output"),
+            shown(raw.output.as_ref()),
+            "expected a shaft other than the input (a train from a shaft to itself has no ratio)",
+        );
+    }
+    if fixed.is_some() && fixed == input {
+        check.push(
+            key("fixed"),
+            shown(raw.fixed.as_ref()),
+            "expected a shaft other than the input (a fixed input cannot drive the train)",
+        );
+    }
+    if fixed.is_some() && fixed == output {
+        check.push(
+            key("fixed"),
+            shown(raw.fixed.as_ref()),
+            "expected a shaft other than the output (a fixed output does not turn)",
+        );
+    }
+    match (carrier, satellites.is_empty(), raw.satellites.is_empty()) {
+        (Some(_), true, true) => check.push(
+            key("satellites"),
+            None,
+            format!(
+                "missing: expected the shafts of the satellites turning on the carrier {}",
+                raw.carrier.as_deref().unwrap_or_default()
+            ),
+        ),
+        (None, false, _) => check.push(
+            key("carrier"),
+            None,
+            "missing: expected the carrier's shaft (the satellites turn on it)",
+        ),
+        _ => {}
+    }
+    for (i, s) in raw.satellites.iter().enumerate() {
+        let same = |role: Option<&String>| role == Some(s);
+        if same(raw.carrier.as_ref()) || same(raw.fixed.as_ref()) {
+            check.push(
+                item(&key("satellites"), i),
+                Some(format!("{s:?}")),
+                "expected a satellite's shaft, not the carrier nor the fixed shaft",
+            );
+        }
+    }
+}

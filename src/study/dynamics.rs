@@ -1,0 +1,45 @@
+//! The dynamics study of the session (`[dynamics]`): the flywheel by every route.
+
+use super::*;
+
+impl<'s> Session<'s> {
+    /// The dynamic study (`[dynamics]`) at the kinematic study's scales: the reduction over
+    /// the scene's numbered positions from their velocity plans (the same plans when
+    /// `dynamics.count` is the scene's count; its own plan of positions otherwise), the
+    /// diagrams, the exact energy equation and the flywheel.
+    pub fn dynamics(&self) -> Cached<crate::dynamics::Dynamics> {
+        self.dynamics.get((), || {
+            let spec = self
+                .scene
+                .dynamics
+                .as_ref()
+                .ok_or(StudyError::NoDynamics("the dynamic study"))?;
+            let forces = self.force_spec("the dynamic study")?;
+            let sc = self.kin_scales()?;
+            let w1 = self.w1()?;
+            let ctx = self.ctx()?;
+            let count = spec.count.unwrap_or(self.scene.positions.count);
+            let d = if count == self.scene.positions.count {
+                let plan = self.positions(sc.l)?;
+                let vel = self.velocities(sc.l, sc.v)?;
+                let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
+                crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)?
+            } else {
+                let m = self.mechanism("the dynamic study")?;
+                let req = PlanRequest {
+                    count,
+                    other_extreme: false,
+                    ..self.plan_request()
+                };
+                let plan = plan_positions(m, &req, sc.l, self.drafting)?;
+                let vel = (0..plan.positions.len())
+                    .map(|k| plans::velocity(&plan, k, sc.l.value(), w1, sc.v, &ctx))
+                    .collect::<Result<Vec<_>, _>>()?;
+                let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
+                crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)?
+            };
+            self.logged("dynamics diagrams", "", d.diagrams.scale_a);
+            Ok(Arc::new(d))
+        })
+    }
+}

@@ -1,0 +1,318 @@
+//! The kinematic study of the session: the scales of the plans and diagrams, each velocity
+//! and acceleration plan, the diagrams over the turn, the rocker's, the hodograph and the
+//! analytic table, and the kinematics report.
+
+use super::*;
+use crate::kinematics;
+
+/// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
+/// of the plans, and the displacement chart's scales and poles (`None`: chosen for the
+/// chart by the study).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KinScales {
+    /// μ_l.
+    pub l: Scale,
+    /// μ_v.
+    pub v: Scale,
+    /// μ_a.
+    pub a: Scale,
+    /// μ_S, μ_φ, H₁, H₂ of the displacement chart.
+    pub chart: ChartScales,
+}
+
+/// The displacement chart's scales and pole distances; `None` leaves the choice to the chart.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ChartScales {
+    /// μ_S, m/mm.
+    pub s: Option<Scale>,
+    /// μ_φ, rad/mm.
+    pub phi: Option<Scale>,
+    /// H₁, mm.
+    pub h1: Option<f64>,
+    /// H₂, mm.
+    pub h2: Option<f64>,
+}
+
+/// The kinematic study of a scene at one set of scales, assembled from the session's parts.
+#[derive(Debug, Clone)]
+pub struct Kinematics {
+    /// The scales.
+    pub scales: KinScales,
+    /// ω₁, rad/s, signed counter-clockwise.
+    pub w1: f64,
+    /// The plan of positions.
+    pub plan: Arc<PositionPlan>,
+    /// The velocity plan of every position, in the plan's order.
+    pub velocity: Vec<Arc<Velocity>>,
+    /// The acceleration plans: (index into the positions, plan and rows).
+    pub acceleration: Vec<(usize, Arc<Acceleration>)>,
+    /// The displacement diagrams, when the mechanism has a point to chart.
+    pub diagrams: Option<Arc<Diagrams>>,
+    /// The rocker's ω diagram, when the mechanism has a rocker output.
+    pub rocker: Option<Arc<RockerDiagram>>,
+    /// The hodograph: its point's name without markup (`S3`) and its figure.
+    pub hodograph: Option<Hodograph>,
+    /// The analytic table (the shape of seed 000 Table 5).
+    pub table: Arc<Table>,
+    /// What was refused and why (a diagram across an angle the mechanism cannot pass).
+    pub refusals: Vec<KinError>,
+}
+
+impl Kinematics {
+    /// The velocity plans, `None` where refused.
+    pub fn velocity_plans(&self) -> Vec<Option<&KinPlan>> {
+        self.velocity.iter().map(|v| v.plan()).collect()
+    }
+    /// Every reading against its analytic twin, in report order.
+    pub fn rows(&self) -> Vec<Row> {
+        kinematics::rows(
+            self.velocity.iter().map(|v| v.rows()),
+            self.acceleration.iter().map(|(_, a)| a.1.as_slice()),
+            self.diagrams.as_deref(),
+            self.rocker.as_deref(),
+        )
+    }
+    /// The positions whose velocity plan is refused, with the diagnosis.
+    pub fn refused(&self) -> Vec<(String, String)> {
+        self.plan
+            .positions
+            .iter()
+            .zip(&self.velocity)
+            .filter_map(|(p, v)| match v.as_ref() {
+                Velocity::Refused(why) => Some((p.label.clone(), why.clone())),
+                Velocity::Built { .. } => None,
+            })
+            .collect()
+    }
+}
+
+/// A chart refused because the mechanism cannot pass part of the turn: no chart, a note.
+pub(super) fn refusable<T>(r: MaybeCached<T>, refusals: &mut Vec<KinError>) -> MaybeCached<T> {
+    match r {
+        Err(StudyError::Kinematics(e @ (KinError::NoFullTurn { .. } | KinError::Leap { .. }))) => {
+            refusals.push(e);
+            Ok(None)
+        }
+        other => other,
+    }
+}
+
+impl<'s> Session<'s> {
+    pub(super) fn spec(&self) -> &KinematicsSpec {
+        &self.scene.kinematics
+    }
+
+    pub(super) fn w1(&self) -> Result<f64, StudyError> {
+        Ok(kinematics::crank_rate(
+            &self.mechanism("the kinematic analysis")?.crank,
+        ))
+    }
+
+    /// The kinematic study's scales as the scene gives them, the rest chosen the textbook way.
+    pub fn kin_scales(&self) -> Result<KinScales, StudyError> {
+        let m = self.mechanism("the kinematic analysis")?;
+        let (v, a) = kinematics::plan_scales(&m.crank, self.spec())?;
+        let spec = self.spec();
+        Ok(KinScales {
+            l: self.scale_l()?,
+            v,
+            a,
+            chart: ChartScales {
+                s: spec.scale_s,
+                phi: spec.scale_phi,
+                h1: spec.pole_h1,
+                h2: spec.pole_h2,
+            },
+        })
+    }
+
+    /// The velocity plan at position `k` of the plan at μ_l = `l`, at μ_v = `v`.
+    pub fn velocity(&self, l: Scale, v: Scale, k: usize) -> Cached<Velocity> {
+        self.velocity.get((l, v, k), || {
+            let plan = self.positions(l)?;
+            let vel = plans::velocity(&plan, k, l.value(), self.w1()?, v, &self.ctx()?)?;
+            self.logged("velocity plan", &plan.positions[k].label, v);
+            Ok(Arc::new(vel))
+        })
+    }
+
+    /// The velocity plans of every position.
+    pub fn velocities(&self, l: Scale, v: Scale) -> Result<Vec<Arc<Velocity>>, StudyError> {
+        let n = self.positions(l)?.positions.len();
+        (0..n).map(|k| self.velocity(l, v, k)).collect()
+    }
+
+    /// The acceleration plan at position `k` (from its velocity plan) with its rows.
+    pub fn acceleration(&self, sc: &KinScales, k: usize) -> Cached<Acceleration> {
+        self.acceleration.get((sc.l, sc.v, sc.a, k), || {
+            let plan = self.positions(sc.l)?;
+            let vel = self.velocity(sc.l, sc.v, k)?;
+            let vp = match vel.as_ref() {
+                Velocity::Built { plan: vp, .. } => vp,
+                Velocity::Refused(why) => {
+                    return Err(KinError::NoVelocityPlan {
+                        position: plan.positions[k].label.clone(),
+                        why: why.clone(),
+                    }
+                    .into())
+                }
+            };
+            let w1 = self.w1()?;
+            let ap = plans::acceleration(&plan, k, sc.l.value(), w1, vp, sc.a, &self.ctx()?)?;
+            self.logged("acceleration plan", &plan.positions[k].label, sc.a);
+            Ok(Arc::new(ap))
+        })
+    }
+
+    /// The positions whose acceleration plans the scene asks for (or the textbook's two:
+    /// mid working stroke, mid return), as indices into the plan's positions.
+    pub fn acceleration_positions(&self) -> Result<Vec<usize>, StudyError> {
+        let poses = self.poses()?;
+        let labels: Vec<(&str, bool)> = poses
+            .positions
+            .iter()
+            .map(|p| (p.label.as_str(), p.extreme))
+            .collect();
+        Ok(acceleration_indices(
+            &labels,
+            poses.extremes.as_ref().map(|ex| ex.work_travel),
+            self.spec().acceleration_positions.as_deref(),
+        )?)
+    }
+
+    /// The displacement diagrams read off the plan at μ_l = `l`, at the chart's scales.
+    pub fn diagrams(&self, l: Scale, chart: ChartScales) -> MaybeCached<Diagrams> {
+        self.diagrams.get((l, chart), || {
+            let m = self.mechanism("the kinematic analysis")?;
+            let plan = self.positions(l)?;
+            let spec = KinematicsSpec {
+                scale_s: chart.s,
+                scale_phi: chart.phi,
+                pole_h1: chart.h1,
+                pole_h2: chart.h2,
+                ..self.spec().clone()
+            };
+            let d = kinematics::diagrams::diagrams(
+                &plan,
+                &m.outputs,
+                &spec,
+                l,
+                self.w1()?,
+                &self.ctx()?,
+            )?;
+            Ok(d.map(Arc::new))
+        })
+    }
+
+    /// The rocker's ω diagram from the velocity plans at (μ_l, μ_v).
+    pub fn rocker(&self, l: Scale, v: Scale) -> MaybeCached<RockerDiagram> {
+        self.rocker.get((l, v), || {
+            let m = self.mechanism("the kinematic analysis")?;
+            let Some(link) = kinematics::rocker::rocker_link(&m.outputs) else {
+                return Ok(None);
+            };
+            let plan = self.positions(l)?;
+            let vel = self.velocities(l, v)?;
+            let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
+            let r =
+                kinematics::rocker::rocker_diagram(&plan, link, &plans, self.w1()?, &self.ctx()?)?;
+            Ok(r.map(Arc::new))
+        })
+    }
+
+    /// The hodograph of the scene's point from the velocity plans at (μ_l, μ_v).
+    pub fn hodograph(&self, l: Scale, v: Scale) -> Result<Option<Hodograph>, StudyError> {
+        self.hodograph.get((l, v), || {
+            let plan = self.positions(l)?;
+            let Some(k) =
+                kinematics::hodograph::hodograph_point(&plan, self.spec().hodograph.as_deref())?
+            else {
+                return Ok(None);
+            };
+            let vel = self.velocities(l, v)?;
+            let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
+            let fig = kinematics::hodograph::hodograph(&plan, k, &plans, v, &self.ctx()?);
+            Ok(Some((plain(plan.point_name(k)), Arc::new(fig))))
+        })
+    }
+
+    /// The analytic table of the positions at μ_l = `l`.
+    pub fn table(&self, l: Scale) -> Cached<Table> {
+        self.table.get(l, || {
+            let plan = self.positions(l)?;
+            Ok(Arc::new(kinematics::table::analytic_table(
+                &plan,
+                self.w1()?,
+            )))
+        })
+    }
+
+    /// The whole kinematic study at `sc`: every part the sheet and the report show.
+    pub fn kinematics(&self, sc: &KinScales) -> Result<Kinematics, StudyError> {
+        let plan = self.positions(sc.l)?;
+        let velocity = self.velocities(sc.l, sc.v)?;
+        let acceleration = self
+            .acceleration_positions()?
+            .into_iter()
+            .map(|k| Ok((k, self.acceleration(sc, k)?)))
+            .collect::<Result<_, StudyError>>()?;
+        let mut refusals = Vec::new();
+        let diagrams = refusable(self.diagrams(sc.l, sc.chart), &mut refusals)?;
+        let rocker = refusable(self.rocker(sc.l, sc.v), &mut refusals)?;
+        Ok(Kinematics {
+            scales: *sc,
+            w1: self.w1()?,
+            diagrams,
+            rocker,
+            refusals,
+            hodograph: self.hodograph(sc.l, sc.v)?,
+            table: self.table(sc.l)?,
+            plan,
+            velocity,
+            acceleration,
+        })
+    }
+
+    /// The report of the kinematic study at the scene's scales: every reading against its
+    /// analytic twin, the analytic table, the notes.
+    pub(super) fn kinematics_report(&self) -> Result<Report, StudyError> {
+        let k = self.kinematics(&self.kin_scales()?)?;
+        let mut notes: Vec<String> = k.refusals.iter().map(ToString::to_string).collect();
+        // The diagrams and the rocker's diagram refused for one reason: one note.
+        notes.dedup();
+        notes.extend(
+            k.refused()
+                .into_iter()
+                .map(|(pos, why)| format!("position {pos}: no velocity plan: {why}")),
+        );
+        notes.extend(k.plan.positions.iter().filter_map(|p| {
+            p.pose.toggle.as_ref().map(|t| {
+                format!(
+                    "position {}: the analytic velocities and accelerations are not determined (group {} at its toggle): null",
+                    p.label,
+                    t.group + 1
+                )
+            })
+        }));
+        notes.extend(crate::kinematics::near_pivot_notes(&k.plan, k.w1));
+        let mut rows = k.rows();
+        if self.scene.forces.is_some() {
+            for i in self.force_positions()? {
+                let f = self.forces(&k.scales, i)?;
+                rows.extend(f.rows.iter().cloned());
+                rows.extend(f.residual_rows());
+                notes.extend(crate::forces::notes(&f));
+            }
+            notes.extend(crate::forces::seed_notes(
+                &self.force_spec("the force analysis")?.seed,
+                &rows,
+            ));
+        }
+        Ok(Report {
+            scene: self.scene.stem.clone(),
+            rows,
+            tables: vec![k.table.as_ref().clone()],
+            notes,
+        })
+    }
+}
