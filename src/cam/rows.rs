@@ -43,18 +43,12 @@ fn deg(x: f64) -> String {
 }
 
 fn row(symbol: Symbol, at: At, method: Method, graphical: f64, analytic: f64, scale: f64) -> Row {
-    Row {
-        key: Key {
-            symbol,
-            subject: String::new(),
-            at,
-        },
-        method,
-        graphical,
-        analytic,
-        conditioning: None,
-        scale,
-    }
+    let key = Key {
+        symbol,
+        subject: String::new(),
+        at,
+    };
+    Row::new(key, method, graphical, analytic, scale)
 }
 
 fn subject(mut r: Row, s: &str) -> Row {

@@ -298,6 +298,14 @@ pub struct Key {
 }
 
 impl Key {
+    /// A key of the whole scene.
+    pub fn of_scene(symbol: Symbol, subject: impl Into<String>) -> Self {
+        Self {
+            symbol,
+            subject: subject.into(),
+            at: At::Scene,
+        }
+    }
     /// A key at a position of the plan.
     pub fn at_position(symbol: Symbol, subject: impl Into<String>, label: &str) -> Self {
         Self {
@@ -466,6 +474,25 @@ pub struct Row {
 }
 
 impl Row {
+    /// A row of `key` read by `method`: graphical against analytic, `scale` its zero reference
+    /// ([`Row::rel_error`]); no conditioning.
+    pub fn new(key: Key, method: Method, graphical: f64, analytic: f64, scale: f64) -> Self {
+        Self {
+            key,
+            method,
+            graphical,
+            analytic,
+            conditioning: None,
+            scale,
+        }
+    }
+    /// The same row with the conditioning of the construction that fixed it.
+    pub fn conditioned(self, conditioning: Option<f64>) -> Self {
+        Self {
+            conditioning,
+            ..self
+        }
+    }
     /// The quantity's name (`v_D`).
     pub fn quantity(&self) -> String {
         self.key.quantity()

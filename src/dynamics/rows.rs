@@ -1,7 +1,7 @@
 //! The rows and notes of the dynamic study.
 
 use super::{ConstantMoment, Dynamics};
-use crate::check::{At, Key, Method, Row, Symbol};
+use crate::check::{Key, Method, Row, Symbol};
 use crate::scale::{format_sig, Lang};
 
 /// The rows: `M_red`, `J_red` (velocity plans) and `dT` (graphical integration) per
@@ -16,14 +16,13 @@ pub fn rows(d: &Dynamics) -> Vec<Row> {
     for (i, label) in d.labels.iter().enumerate() {
         let (g, a) = (&d.graphical[i], &d.analytic[i]);
         let mut push = |symbol: Symbol, subject: &str, method: Method, g: f64, a: f64, s: f64| {
-            rows.push(Row {
-                key: Key::at_position(symbol, subject, label),
+            rows.push(Row::new(
+                Key::at_position(symbol, subject, label),
                 method,
-                graphical: g,
-                analytic: a,
-                conditioning: None,
-                scale: s,
-            })
+                g,
+                a,
+                s,
+            ))
         };
         push(Symbol::Moment, "red", Method::Plan, g.m(), a.m(), m_scale);
         push(Symbol::Inertia, "red", Method::Plan, g.j, a.j, j_scale);
@@ -38,18 +37,13 @@ pub fn rows(d: &Dynamics) -> Vec<Row> {
         );
     }
     let mut scene = |symbol: Symbol, subject: &str, method: Method, g: f64, a: f64| {
-        rows.push(Row {
-            key: Key {
-                symbol,
-                subject: subject.into(),
-                at: At::Scene,
-            },
+        rows.push(Row::new(
+            Key::of_scene(symbol, subject),
             method,
-            graphical: g,
-            analytic: a,
-            conditioning: None,
-            scale: a.abs(),
-        })
+            g,
+            a,
+            a.abs(),
+        ))
     };
     let a_c = d.diagrams.a_c.last().copied().unwrap_or(f64::NAN);
     match d.spec.constant_moment {

@@ -13,15 +13,9 @@ pub(super) fn row(
     g: f64,
     a: f64,
 ) -> Row {
-    Row {
-        key: Key::at_position(symbol, subject, label),
-        method,
-        // −0 (a balancing moment of no loads) is written as 0.
-        graphical: g + 0.0,
-        analytic: a + 0.0,
-        conditioning: None,
-        scale: a.abs(),
-    }
+    // −0 (a balancing moment of no loads) is written as 0.
+    let key = Key::at_position(symbol, subject, label);
+    Row::new(key, method, g + 0.0, a + 0.0, a.abs())
 }
 
 /// The inertia loads of one position, read off the acceleration plan.

@@ -349,20 +349,17 @@ impl TrainStudy {
     /// `u_<in>_<out>` by formula (the stages against Willis) and by the triangles; with
     /// n_input, ω of every shaft read off the plan of angular velocities.
     pub fn rows(&self) -> Vec<crate::check::Row> {
-        use crate::check::{At, Key, Method, Row, Symbol};
+        use crate::check::{Key, Method, Row, Symbol};
         let t = &self.spec.train;
         let subject = format!("{}_{}", t.shafts[t.input], t.shafts[t.output]);
-        let row = |symbol, subject: &str, method, graphical, analytic, scale: f64| Row {
-            key: Key {
-                symbol,
-                subject: subject.to_string(),
-                at: At::Scene,
-            },
-            method,
-            graphical,
-            analytic,
-            conditioning: None,
-            scale,
+        let row = |symbol, subject: &str, method, graphical, analytic, scale: f64| {
+            Row::new(
+                Key::of_scene(symbol, subject),
+                method,
+                graphical,
+                analytic,
+                scale,
+            )
         };
         let mut out = Vec::new();
         let ratio_rows = |t: &TrainStudy, subject: &str| {

@@ -5,7 +5,7 @@ use super::generate::Generation;
 use super::involute::thickness_at;
 use super::mesh::Meshing;
 use super::{x_for_tip, x_min_textbook, Pair, MIN_TIP};
-use crate::check::{At, Key, Method, Row, Symbol};
+use crate::check::{Key, Method, Row, Symbol};
 use crate::scale::{format_sig, Lang};
 use std::f64::consts::FRAC_PI_2;
 
@@ -18,18 +18,13 @@ fn row(
     analytic: f64,
     scale: f64,
 ) -> Row {
-    Row {
-        key: Key {
-            symbol,
-            subject: subject.to_string(),
-            at: At::Scene,
-        },
+    Row::new(
+        Key::of_scene(symbol, subject),
         method,
         graphical,
         analytic,
-        conditioning: None,
         scale,
-    }
+    )
 }
 
 /// A number for the notes.
@@ -135,14 +130,8 @@ pub fn meshing_rows(p: &Pair, mesh: &Meshing) -> Vec<Row> {
     for s in &mesh.lambda {
         let exact = p.sliding(s.x);
         for (i, (read, exact)) in s.read.iter().zip(exact).enumerate() {
-            out.push(Row {
-                key: Key::at_position(Symbol::SpecificSliding, (i + 1).to_string(), &s.name),
-                method: me,
-                graphical: *read,
-                analytic: exact,
-                conditioning: None,
-                scale,
-            });
+            let key = Key::at_position(Symbol::SpecificSliding, (i + 1).to_string(), &s.name);
+            out.push(Row::new(key, me, *read, exact, scale));
         }
     }
     out

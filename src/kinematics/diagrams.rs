@@ -186,14 +186,13 @@ pub fn diagrams(
             (Symbol::Velocity, v_gr, analytic[idx][1], v_scale),
             (Symbol::Acceleration, a_gr, analytic[idx][2], a_scale),
         ] {
-            rows.push(Row {
-                key: Key::at_position(symbol, q.clone(), &p.label),
+            rows.push(Row::new(
+                Key::at_position(symbol, q.clone(), &p.label),
                 method,
-                graphical: g,
-                analytic: a,
-                conditioning: None,
-                scale: sc,
-            });
+                g,
+                a,
+                sc,
+            ));
         }
     }
     Ok(Some(Diagrams {

@@ -208,17 +208,20 @@ fn rows(plan: &PositionPlan, k: usize, kp: &KinPlan, w1: f64) -> Vec<Row> {
     let pos = &plan.positions[k];
     kp.readings
         .iter()
-        .map(|r| Row {
-            key: key(plan, r.what, kp.kind, &pos.label),
-            method: Method::Plan,
-            graphical: r.value,
-            analytic: analytic(&pos.pose, w1, r.what, kp.kind),
-            conditioning: r.conditioning,
-            scale: super::peak(
+        .map(|r| {
+            let scale = super::peak(
                 plan.positions
                     .iter()
                     .map(|p| analytic(&p.pose, w1, r.what, kp.kind)),
-            ),
+            );
+            Row::new(
+                key(plan, r.what, kp.kind, &pos.label),
+                Method::Plan,
+                r.value,
+                analytic(&pos.pose, w1, r.what, kp.kind),
+                scale,
+            )
+            .conditioned(r.conditioning)
         })
         .collect()
 }

@@ -89,13 +89,14 @@ pub fn rocker_diagram(
     let rows = numbered
         .iter()
         .enumerate()
-        .map(|(idx, (_, p))| Row {
-            key: Key::at_position(Symbol::AngularAcceleration, link.to_string(), &p.label),
-            method: Method::DiagramChords,
-            graphical: derivative.node[idx] * w1.abs(),
-            analytic: super::rate(&p.pose, p.pose.ddangle[link] * w1 * w1),
-            conditioning: None,
-            scale: eps_scale,
+        .map(|(idx, (_, p))| {
+            Row::new(
+                Key::at_position(Symbol::AngularAcceleration, link.to_string(), &p.label),
+                Method::DiagramChords,
+                derivative.node[idx] * w1.abs(),
+                super::rate(&p.pose, p.pose.ddangle[link] * w1 * w1),
+                eps_scale,
+            )
         })
         .collect();
     Ok(Some(RockerDiagram {

@@ -6,7 +6,7 @@ use super::{
     main_moment, main_vector, residual_moment, residual_vector, Balancing, Correction, Corrective,
     Mass,
 };
-use crate::check::{At, Key, Method, Row, Symbol};
+use crate::check::{Key, Method, Row, Symbol};
 use crate::geom::wrap_pi;
 use crate::scale::{format_sig, Lang};
 use std::f64::consts::PI;
@@ -16,18 +16,13 @@ pub const COURSE_G: f64 = 9.81;
 
 /// A row of the whole scene, by the polygon method.
 fn row(symbol: Symbol, subject: &str, graphical: f64, analytic: f64, scale: f64) -> Row {
-    Row {
-        key: Key {
-            symbol,
-            subject: subject.to_string(),
-            at: At::Scene,
-        },
-        method: Method::Polygon,
+    Row::new(
+        Key::of_scene(symbol, subject),
+        Method::Polygon,
         graphical,
         analytic,
-        conditioning: None,
         scale,
-    }
+    )
 }
 
 impl Balancing {

@@ -34,7 +34,7 @@ pub use rolling::{rolling_twin, RollingTwin, Slide};
 pub use screw::{screw_twin, ScrewTwin};
 pub use wedge::{wedge_twin, WedgeTwin};
 
-use crate::check::{At, Key, Method, Row, Symbol};
+use crate::check::{Key, Method, Row, Symbol};
 use crate::construct::{ConstructionError, Context, Figure};
 use crate::geom::{DVec2, Line};
 use crate::scale::Scale;
@@ -354,18 +354,14 @@ pub(crate) fn reading(
 ) -> Reading {
     Reading {
         symbol,
-        row: Row {
-            key: Key {
-                symbol: key.0,
-                subject: key.1,
-                at: At::Scene,
-            },
-            method: Method::Polygon,
+        row: Row::new(
+            Key::of_scene(key.0, key.1),
+            Method::Polygon,
             graphical,
             analytic,
-            conditioning,
-            scale: analytic.abs(),
-        },
+            analytic.abs(),
+        )
+        .conditioned(conditioning),
     }
 }
 
