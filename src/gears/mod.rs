@@ -349,18 +349,10 @@ impl TrainStudy {
     /// `u_<in>_<out>` by formula (the stages against Willis) and by the triangles; with
     /// n_input, ω of every shaft read off the plan of angular velocities.
     pub fn rows(&self) -> Vec<crate::check::Row> {
-        use crate::check::{Key, Method, Row, Symbol};
+        use crate::check::{Method, Symbol};
+        use rows::row;
         let t = &self.spec.train;
         let subject = format!("{}_{}", t.shafts[t.input], t.shafts[t.output]);
-        let row = |symbol, subject: &str, method, graphical, analytic, scale: f64| {
-            Row::new(
-                Key::of_scene(symbol, subject),
-                method,
-                graphical,
-                analytic,
-                scale,
-            )
-        };
         let mut out = Vec::new();
         let ratio_rows = |t: &TrainStudy, subject: &str| {
             let at = |method, graphical| {

@@ -10,7 +10,7 @@ use crate::scale::{format_sig, Lang};
 use std::f64::consts::FRAC_PI_2;
 
 /// A row of the whole scene.
-fn row(
+pub(super) fn row(
     symbol: Symbol,
     subject: &str,
     method: Method,
