@@ -305,7 +305,7 @@ fn extreme_but_valid_rotors_are_drawn_or_refused_with_the_key() {
     assert!(!ok && code == 2, "{err}");
     assert!(
         err.contains("balancing.scale_mr = 1e-9")
-            && err.contains("the largest m·ρ = 1e9 between 0.1 and 10000 mm"),
+            && err.contains("the largest m·ρ = 1e9 kg·m between 0.1 and 10000 mm"),
         "{err}"
     );
     assert!(!err.contains("panicked"), "{err}");

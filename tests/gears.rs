@@ -338,7 +338,7 @@ fn scales_modules_and_speeds_out_of_range_are_refused_at_load() {
         // lyon's hatcher panicked (≥ 1e45); 1e-9 … 1e-10 hatched a 1e7 mm tooth (24 GB).
         (
             rack("scale_l = 1e300"),
-            &["gears.rack[0].scale_l = 1e300", "4πm = 125.7 mm"],
+            &["gears.rack[0].scale_l = 1e300", "4πm = 0.1257 m"],
         ),
         (rack("scale_l = 1e45"), &["gears.rack[0].scale_l = 1e45"]),
         (

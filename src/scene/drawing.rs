@@ -1,11 +1,12 @@
-//! The drawing ranges of the mechanism's and the kinematic study's scales and poles, checked
-//! at load: a scale is refused when it draws its reference quantity — the crank (μ_l, μ_S),
-//! the crank pin's velocity ω₁·r (μ_v) or acceleration ω₁²·r (μ_a) — shorter than
-//! [`DRAWN_MM`]`.0` (an invisible plate: μ_l = 1e40 drew one, exit 0) or longer than
-//! [`DRAWN_MM`]`.1` (no sheet holds it, and the construction's coordinates lose their
-//! meaning long before 1e-300); the crank-angle axis 2π/μ_φ must lie in [`AXIS_MM`], a pole
-//! distance in [`POLE_MM`]. Inside the ranges a drawing that does not fit its sheet is refused
-//! when the sheet is laid out, naming the key and the value at which it fits.
+//! The drawing ranges of the scene's scales and poles, checked at load: a scale is refused
+//! when it draws its reference quantity in the scene — the crank (μ_l, μ_S), the crank pin's
+//! velocity ω₁·r (μ_v) or acceleration ω₁²·r (μ_a), a cam's stroke, a rotor's largest m·ρ, the
+//! largest declared load — shorter than [`DRAWN_MM`]`.0` (an invisible plate: μ_l = 1e40 drew
+//! one, exit 0) or longer than [`DRAWN_MM`]`.1` (no sheet holds it, and the construction's
+//! coordinates lose their meaning long before 1e-300); an angle axis 2π/μ_φ must lie in
+//! [`AXIS_MM`], a pole distance in [`POLE_MM`]. Inside the ranges a drawing that does not fit
+//! its sheet is refused when the sheet is laid out, naming the key and the value at which
+//! every drawing it sets fits.
 
 use super::check::{number, short, Checker};
 use crate::kinematics::KinematicsSpec;
@@ -63,23 +64,36 @@ pub(crate) fn drawing_ranges(
 /// [`DRAWN_MM`]`.0` and [`DRAWN_MM`]`.1`; a size that is not positive (nothing to measure
 /// by: zero loads) checks nothing.
 pub(crate) fn draws(check: &mut Checker, key: &str, s: Option<Scale>, what: &str, size: f64) {
+    draws_within(check, key, s, what, size, DRAWN_MM);
+}
+
+/// [`draws`] within `range` (mm) instead of [`DRAWN_MM`].
+pub(crate) fn draws_within(
+    check: &mut Checker,
+    key: &str,
+    s: Option<Scale>,
+    what: &str,
+    size: f64,
+    (lo, hi): (f64, f64),
+) {
     let Some(s) = s else { return };
     if !(size.is_finite() && size > 0.0) {
         return;
     }
     let drawn = size / s.value();
-    if !within(drawn, DRAWN_MM) {
+    if !within(drawn, (lo, hi)) {
         let unit = s.quantity.unit(Lang::En);
+        let si = s.quantity.si_unit();
         check.push(
             key,
             Some(number(s.value())),
             format!(
-                "expected a scale that draws {what} = {} between {} and {} mm: from {} to {} {unit} (it draws {} mm)",
+                "expected a scale that draws {what} = {} {si} between {} and {} mm: from {} to {} {unit} (it draws {} mm)",
                 short(size),
-                short(DRAWN_MM.0),
-                short(DRAWN_MM.1),
-                short(size / DRAWN_MM.1),
-                short(size / DRAWN_MM.0),
+                short(lo),
+                short(hi),
+                short(size / hi),
+                short(size / lo),
                 short(drawn)
             ),
         );

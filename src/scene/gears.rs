@@ -4,7 +4,7 @@
 //! a pointed tooth, ε_α < 1, an infeasible centre distance) and a wheel whose tooth is
 //! pointed before its tip are refused with the key that makes them so.
 
-use super::check::{item, join, number, short, Checker};
+use super::check::{item, join, number, Checker};
 use super::gear_values::{module_mm, teeth};
 use super::planetary::{planetary, RawPlanetary};
 use crate::gears::{
@@ -64,25 +64,10 @@ pub(crate) struct RawRack {
 }
 
 /// A given μ_l must draw the figure of natural size `size` (m; `what` names it) between
-/// [`MIN_FIGURE_MM`] and [`MAX_FIGURE_MM`].
+/// [`MIN_FIGURE_MM`] and [`MAX_FIGURE_MM`] (legible, and within reach of a sheet).
 fn figure(check: &mut Checker, key: &str, scale: Option<Scale>, size: f64, what: &str) {
-    let Some(scale) = scale else {
-        return;
-    };
-    let mm = size / scale.value();
-    if !(MIN_FIGURE_MM..=MAX_FIGURE_MM).contains(&mm) {
-        check.push(
-            key,
-            Some(number(scale.value())),
-            format!(
-                "expected a scale μ_l from {} to {} m/mm: it draws {what} = {} mm as {} mm, and the figure must be {MIN_FIGURE_MM} to {MAX_FIGURE_MM} mm (legible, and within reach of a sheet)",
-                short(size / MAX_FIGURE_MM),
-                short(size / MIN_FIGURE_MM),
-                short(size * 1e3),
-                short(mm)
-            ),
-        );
-    }
+    let range = (MIN_FIGURE_MM, MAX_FIGURE_MM);
+    super::drawing::draws_within(check, key, scale, what, size, range);
 }
 
 /// A shift coefficient within ±3.
