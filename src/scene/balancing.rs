@@ -10,7 +10,7 @@ use crate::scale::Quantity;
 /// The key path of the section.
 const BAL: &str = "balancing";
 /// The kinds of balancing, as written.
-const KINDS: [&str; 2] = ["static", "dynamic"];
+const KINDS: [(&str, bool); 2] = [("static", false), ("dynamic", true)];
 /// The heaviest mass a scene may give, kg.
 const MAX_KG: f64 = 1e6;
 /// The most masses a rotor may have: the balancing plate gives every mass a line of its data
@@ -23,10 +23,7 @@ const MAX_OMEGA: f64 = 1e6;
 /// Validate `[balancing]`.
 pub(crate) fn balancing(check: &mut Checker, raw: &RawBalancing) -> Option<BalancingSpec> {
     let key = |k: &str| join(BAL, k);
-    let dynamic = match raw.kind.as_ref() {
-        None => false,
-        Some(_) => check.word(&key("kind"), raw.kind.as_ref(), &KINDS) == Some(1),
-    };
+    let dynamic = check.word_or_first(&key("kind"), raw.kind.as_ref(), &KINDS);
     let before = check.problems.len();
     if raw.mass.is_empty() {
         check.push(

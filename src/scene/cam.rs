@@ -10,20 +10,39 @@ use serde::Deserialize;
 /// The key path of the section.
 const CAM: &str = "cam";
 /// The followers, as written.
-const FOLLOWERS: [&str; 3] = ["translating", "rocker", "flat"];
-/// The laws, as written.
-const LAWS: [&str; 6] = [
-    "uniform",
-    "constant-acceleration",
-    "cosine",
-    "sine",
-    "trapezoidal",
-    "polynomial-345",
+const FOLLOWERS: [(&str, Kind); 3] = [
+    ("translating", Kind::Translating),
+    ("rocker", Kind::Rocker),
+    ("flat", Kind::Flat),
 ];
-/// The closures, as written: force (spring, the rise only), geometric (the whole cycle).
-const CLOSURES: [&str; 2] = ["geometric", "force"];
-/// The rocker's senses, as written.
-const SENSES: [&str; 2] = ["same", "opposite"];
+/// The laws, as written (the "+ −" law's ratio is the scene's `ratio`, set after).
+const LAWS: [(&str, Law); 6] = [
+    ("uniform", Law::Uniform),
+    (
+        "constant-acceleration",
+        Law::ConstantAcceleration { ratio: 0.5 },
+    ),
+    ("cosine", Law::Cosine),
+    ("sine", Law::Sine),
+    ("trapezoidal", Law::Trapezoidal),
+    ("polynomial-345", Law::Polynomial345),
+];
+/// The closures, as written: geometric (the whole cycle), force (spring, the rise only).
+const CLOSURES: [(&str, bool); 2] = [("geometric", false), ("force", true)];
+/// The rocker's senses, as written: with the cam on the rise, or against it.
+const SENSES: [(&str, bool); 2] = [("same", true), ("opposite", false)];
+/// What the diagrams are given by, as written: d²S/dφ² (integrated) or S (differentiated).
+const GIVEN: [(&str, bool); 2] = [("d2s", false), ("s", true)];
+/// The cam's rotation, as written: counter-clockwise or clockwise.
+const ROTATIONS: [(&str, bool); 2] = [("ccw", false), ("cw", true)];
+
+/// The kind of follower a scene names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Translating,
+    Rocker,
+    Flat,
+}
 /// The most intervals per moving phase a scene may ask for.
 const MAX_DIVISIONS: i64 = 720;
 /// γ_min, degrees: below 10° the pressure angle may reach 80° and the cam shrinks to a point
@@ -89,12 +108,8 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
     };
     let law_of = |check: &mut Checker, k: &str, v: Option<&String>| -> Law {
         match check.word(&key(k), v, &LAWS) {
-            Some(0) => Law::Uniform,
-            Some(1) => Law::ConstantAcceleration { ratio },
-            Some(2) => Law::Cosine,
-            Some(3) => Law::Sine,
-            Some(4) => Law::Trapezoidal,
-            Some(_) => Law::Polynomial345,
+            Some(Law::ConstantAcceleration { .. }) => Law::ConstantAcceleration { ratio },
+            Some(law) => law,
             None => Law::Cosine,
         }
     };
@@ -105,7 +120,7 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
     };
     let phases = phases(check, raw.phases.as_deref());
     let arm = match kind {
-        Some(1) => Some(check.length(&key("arm"), raw.arm)),
+        Some(Kind::Rocker) => Some(check.length(&key("arm"), raw.arm)),
         _ => {
             if raw.arm.is_some() || raw.swing.is_some() || raw.sense.is_some() {
                 check.push(
@@ -149,16 +164,13 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         }
     };
     let offset = check.distance(&key("offset"), raw.offset, 0.0);
-    let same_sense = match raw.sense.as_ref() {
-        Some(s) => check.word(&key("sense"), Some(s), &SENSES) != Some(1),
-        None => true,
-    };
+    let same_sense = check.word_or_first(&key("sense"), raw.sense.as_ref(), &SENSES);
     let follower = match kind {
-        Some(1) => Follower::Rocker {
+        Some(Kind::Rocker) => Follower::Rocker {
             arm: arm.unwrap_or(0.0),
             same_sense,
         },
-        Some(2) => Follower::Flat { offset },
+        Some(Kind::Flat) => Follower::Flat { offset },
         _ => Follower::Translating { offset },
     };
     let roller = raw.roller.map(|mm| {
@@ -247,18 +259,9 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             None
         }
     };
-    let force_closure = match raw.closure.as_ref() {
-        Some(c) => check.word(&key("closure"), Some(c), &CLOSURES) == Some(1),
-        None => false,
-    };
-    let from_s = match raw.given.as_ref() {
-        Some(g) => check.word(&key("given"), Some(g), &["d2s", "s"]) == Some(1),
-        None => false,
-    };
-    let clockwise = match raw.rotation.as_ref() {
-        Some(r) => check.word(&key("rotation"), Some(r), &["ccw", "cw"]) == Some(1),
-        None => false,
-    };
+    let force_closure = check.word_or_first(&key("closure"), raw.closure.as_ref(), &CLOSURES);
+    let from_s = check.word_or_first(&key("given"), raw.given.as_ref(), &GIVEN);
+    let clockwise = check.word_or_first(&key("rotation"), raw.rotation.as_ref(), &ROTATIONS);
     let spec = CamSpec {
         phases,
         rise,

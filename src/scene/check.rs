@@ -265,17 +265,41 @@ impl Checker {
         Some([i, j])
     }
 
-    /// One of the `words`, matched case-insensitively; the index of the match.
-    pub fn word(&mut self, key: &str, v: Option<&String>, words: &[&str]) -> Option<usize> {
-        let expected = one_of(words);
+    /// One of the words of `table`, matched case-insensitively: the value the table gives
+    /// it. Every scene word is decoded through such a table (the word beside its meaning),
+    /// never by its position in a list.
+    pub fn word<T: Copy>(
+        &mut self,
+        key: &str,
+        v: Option<&String>,
+        table: &[(&str, T)],
+    ) -> Option<T> {
+        let words: Vec<&str> = table.iter().map(|(w, _)| *w).collect();
+        let expected = one_of(&words);
         let s = self.required(key, v, &expected)?;
-        let found = words
+        let found = table
             .iter()
-            .position(|w| w.to_lowercase() == s.to_lowercase());
+            .find(|(w, _)| w.to_lowercase() == s.to_lowercase())
+            .map(|(_, t)| *t);
         if found.is_none() {
             self.push(key, Some(quoted(s)), format!("expected {expected}"));
         }
         found
+    }
+
+    /// An optional word of `table`: its value, the first entry's when the key is absent or
+    /// refused.
+    pub fn word_or_first<T: Copy>(
+        &mut self,
+        key: &str,
+        v: Option<&String>,
+        table: &[(&str, T)],
+    ) -> T {
+        let first = table[0].1;
+        match v {
+            None => first,
+            Some(_) => self.word(key, v, table).unwrap_or(first),
+        }
     }
 }
 

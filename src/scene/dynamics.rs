@@ -3,7 +3,9 @@
 //! coefficients, and the seed's own numbers to check — each checked with its key path.
 
 use super::check::{item, join, number, Checker};
-use crate::dynamics::{ConstantInertia, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims};
+use crate::dynamics::{
+    ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
+};
 use crate::forces::ForceSpec;
 use crate::scale::Quantity;
 use serde::Deserialize;
@@ -213,17 +215,14 @@ pub(crate) fn dynamics(
     });
     let flywheel = flywheel(check, raw.flywheel.unwrap_or_default());
     let seed = raw.seed.map(|s| seed(check, s));
-    let constant_moment = match raw.constant_moment.as_ref() {
-        None => crate::dynamics::ConstantMoment::Driving,
-        Some(_) => match check.word(
-            &key("constant_moment"),
-            raw.constant_moment.as_ref(),
-            &["driving", "resisting"],
-        ) {
-            Some(1) => crate::dynamics::ConstantMoment::Resisting,
-            _ => crate::dynamics::ConstantMoment::Driving,
-        },
-    };
+    let constant_moment = check.word_or_first(
+        &key("constant_moment"),
+        raw.constant_moment.as_ref(),
+        &[
+            ("driving", ConstantMoment::Driving),
+            ("resisting", ConstantMoment::Resisting),
+        ],
+    );
     DynamicsSpec {
         constant_moment,
         omega_avg,
@@ -244,13 +243,11 @@ pub(crate) fn dynamics(
 /// `[dynamics.flywheel]`: `kind` "rim" (the seed's coefficients by default) or "disc".
 fn flywheel(check: &mut Checker, raw: RawFlywheel) -> FlywheelSpec {
     let key = |k: &str| join(&join(KEY, "flywheel"), k);
-    let kind = match raw.kind.as_ref() {
-        None => FlywheelKind::Rim,
-        Some(_) => match check.word(&key("kind"), raw.kind.as_ref(), &["rim", "disc"]) {
-            Some(1) => FlywheelKind::Disc,
-            _ => FlywheelKind::Rim,
-        },
-    };
+    let kind = check.word_or_first(
+        &key("kind"),
+        raw.kind.as_ref(),
+        &[("rim", FlywheelKind::Rim), ("disc", FlywheelKind::Disc)],
+    );
     let rho = raw.rho.map_or(FlywheelSpec::SEED_RIM.rho, |r| {
         // From cork to the densest metals (osmium 22 590 kg/m³), with room either side.
         if r.is_finite() && r < MIN_RHO {

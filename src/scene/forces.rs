@@ -173,25 +173,27 @@ fn seed_value(
     }
     let method = match raw.method.as_deref() {
         None => None,
-        Some(_) => check
-            .word(
-                &k("method"),
-                raw.method.as_ref(),
-                &["polygon", "lever", "plan"],
-            )
-            .map(|i| [Method::Polygon, Method::Lever, Method::Plan][i]),
+        Some(_) => check.word(
+            &k("method"),
+            raw.method.as_ref(),
+            &[
+                ("polygon", Method::Polygon),
+                ("lever", Method::Lever),
+                ("plan", Method::Plan),
+            ],
+        ),
     };
     let value = check.required(&k("value"), raw.value, "the value the seed prints")?;
-    let names: Vec<&str> = units.iter().map(|(u, _)| *u).collect();
-    let unit = check.word(&k("unit"), raw.unit.as_ref(), &names)?;
+    let table: Vec<(&str, (&str, f64))> = units.iter().map(|u| (u.0, *u)).collect();
+    let (unit, factor) = check.word(&k("unit"), raw.unit.as_ref(), &table)?;
     let value = check.in_range(&k("value"), value.abs(), MAX_LOAD, "a finite value, not 0");
     let source = check.required(&k("source"), raw.source.clone(), "where the seed prints it")?;
     Some(SeedValue {
         quantity,
         position: position?,
         method,
-        value: value * units[unit].1,
-        printed: format!("{} {}", number(raw.value.unwrap_or(value)), units[unit].0),
+        value: value * factor,
+        printed: format!("{} {unit}", number(raw.value.unwrap_or(value))),
         source,
     })
 }
@@ -351,13 +353,15 @@ fn resistance(
     let k = |s: &str| join(base, s);
     let stroke = match raw.stroke.as_deref() {
         None => Some(Stroke::Always),
-        Some(_) => check
-            .word(
-                &k("stroke"),
-                raw.stroke.as_ref(),
-                &["working", "return", "always"],
-            )
-            .map(|i| [Stroke::Working, Stroke::Return, Stroke::Always][i]),
+        Some(_) => check.word(
+            &k("stroke"),
+            raw.stroke.as_ref(),
+            &[
+                ("working", Stroke::Working),
+                ("return", Stroke::Return),
+                ("always", Stroke::Always),
+            ],
+        ),
     };
     let action = match (raw.force, raw.moment) {
         (Some(f), None) => {
@@ -420,8 +424,12 @@ fn resistance(
 /// `[forces.drive]`.
 fn drive(check: &mut Checker, base: &str, raw: &RawDrive) -> Drive {
     let k = |s: &str| join(base, s);
-    let kind = check.word(&k("kind"), raw.kind.as_ref(), &["coupling", "gear"]);
-    if kind != Some(1) {
+    let gear = check.word(
+        &k("kind"),
+        raw.kind.as_ref(),
+        &[("coupling", false), ("gear", true)],
+    );
+    if gear != Some(true) {
         // A coupling (or a kind already refused) takes no gear data.
         let gear_keys = [
             ("module", raw.module.is_some()),
@@ -432,7 +440,7 @@ fn drive(check: &mut Checker, base: &str, raw: &RawDrive) -> Drive {
         ];
         for (name, _) in gear_keys
             .iter()
-            .filter(|(_, present)| *present && kind == Some(0))
+            .filter(|(_, present)| *present && gear == Some(false))
         {
             check.push(
                 k(name),

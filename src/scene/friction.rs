@@ -16,7 +16,44 @@ const MAX_FORCE: f64 = 1e9;
 /// The largest coefficient of friction a scene may give.
 const MAX_F: f64 = 5.0;
 /// The kinds, as written.
-const KINDS: [&str; 5] = ["incline", "wedge", "screw", "journal", "rolling"];
+const KINDS: [(&str, Kind); 5] = [
+    ("incline", Kind::Incline),
+    ("wedge", Kind::Wedge),
+    ("screw", Kind::Screw),
+    ("journal", Kind::Journal),
+    ("rolling", Kind::Rolling),
+];
+
+/// The kind of a friction case a scene names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Incline,
+    Wedge,
+    Screw,
+    Journal,
+    Rolling,
+}
+
+impl Kind {
+    /// The kind as scenes write it.
+    fn word(self) -> &'static str {
+        KINDS
+            .iter()
+            .find(|(_, k)| *k == self)
+            .map_or("", |(w, _)| w)
+    }
+
+    /// The keys the kind takes (besides `kind`, `name`, `scale_f`).
+    fn keys(self) -> &'static [&'static str] {
+        match self {
+            Kind::Incline => &["load", "f", "angle", "force_angle", "motion"],
+            Kind::Wedge => &["load", "f", "groove"],
+            Kind::Screw => &["load", "f", "lead", "profile", "radius", "motion"],
+            Kind::Journal => &["load", "f", "radius", "rotation"],
+            Kind::Rolling => &["load", "roller_weight", "diameter", "k1", "k2", "f1", "f2"],
+        }
+    }
+}
 
 /// `[friction]`.
 #[derive(Debug, Default, Deserialize)]
@@ -80,17 +117,6 @@ impl RawCase {
     }
 }
 
-/// The keys each kind takes (besides `kind`, `name`, `scale_f`).
-fn keys_of(kind: &str) -> &'static [&'static str] {
-    match kind {
-        "incline" => &["load", "f", "angle", "force_angle", "motion"],
-        "wedge" => &["load", "f", "groove"],
-        "screw" => &["load", "f", "lead", "profile", "radius", "motion"],
-        "journal" => &["load", "f", "radius", "rotation"],
-        _ => &["load", "roller_weight", "diameter", "k1", "k2", "f1", "f2"],
-    }
-}
-
 /// Validate `[friction]`: every case, its keys by kind, unique names.
 pub(crate) fn friction(check: &mut Checker, raw: Option<RawFriction>) -> Vec<FrictionCase> {
     let Some(raw) = raw else {
@@ -106,13 +132,13 @@ pub(crate) fn friction(check: &mut Checker, raw: Option<RawFriction>) -> Vec<Fri
         let Some(kind) = check.word(&join(&base, "kind"), c.kind.as_ref(), &KINDS) else {
             continue;
         };
-        let word = KINDS[kind];
+        let word = kind.word();
         for key in c.present() {
-            if !keys_of(word).contains(&key) {
+            if !kind.keys().contains(&key) {
                 let expected = format!(
                     "not a key of kind {}: expected {}",
                     quoted(word),
-                    keys_of(word).join(", ")
+                    kind.keys().join(", ")
                 );
                 check.push(join(&base, key), None, expected);
             }
@@ -124,30 +150,25 @@ pub(crate) fn friction(check: &mut Checker, raw: Option<RawFriction>) -> Vec<Fri
             Quantity::Force,
             "a scale μ_F > 0 N/mm",
         );
-        let kind = match word {
-            "incline" => incline(check, &base, c),
-            "wedge" => CaseKind::Wedge(Wedge {
+        let kind = match kind {
+            Kind::Incline => incline(check, &base, c),
+            Kind::Wedge => CaseKind::Wedge(Wedge {
                 load: force(check, &base, "load", c.load),
                 f: coefficient(check, &base, "f", c.f),
                 groove: groove(check, &base, c.groove),
             }),
-            "screw" => screw(check, &base, c),
-            "journal" => CaseKind::Journal(Journal {
+            Kind::Screw => screw(check, &base, c),
+            Kind::Journal => CaseKind::Journal(Journal {
                 load: force(check, &base, "load", c.load),
                 f: coefficient(check, &base, "f", c.f),
                 radius: check.length(&join(&base, "radius"), c.radius),
-                sense: match choice(
-                    check,
-                    &base,
-                    "rotation",
+                sense: check.word_or_first(
+                    &join(&base, "rotation"),
                     c.rotation.as_ref(),
-                    &["ccw", "cw"],
-                ) {
-                    1 => -1.0,
-                    _ => 1.0,
-                },
+                    &[("ccw", 1.0), ("cw", -1.0)],
+                ),
             }),
-            _ => rolling(check, &base, c),
+            Kind::Rolling => rolling(check, &base, c),
         };
         out.push(FrictionCase {
             name,
@@ -324,18 +345,8 @@ fn groove(check: &mut Checker, base: &str, v: Option<f64>) -> f64 {
 
 /// `motion = "up" | "down"` (default up).
 fn motion(check: &mut Checker, base: &str, v: Option<&String>) -> Motion {
-    match choice(check, base, "motion", v, &["up", "down"]) {
-        1 => Motion::Down,
-        _ => Motion::Up,
-    }
-}
-
-/// An optional word among `words` (the first by default): its index.
-fn choice(check: &mut Checker, base: &str, key: &str, v: Option<&String>, words: &[&str]) -> usize {
-    match v {
-        None => 0,
-        Some(_) => check.word(&join(base, key), v, words).unwrap_or(0),
-    }
+    let table = [("up", Motion::Up), ("down", Motion::Down)];
+    check.word_or_first(&join(base, "motion"), v, &table)
 }
 
 #[cfg(test)]

@@ -165,14 +165,14 @@ impl Builder<'_> {
 
     /// `branch`: left/right for RRR, forward/backward for RRP.
     pub(super) fn branch(&mut self, base: &str, g: &RawGroup, kind: DyadKind) -> Branch {
-        let (words, branches) = match kind {
-            DyadKind::Rrr => (["left", "right"], [Branch::Left, Branch::Right]),
-            _ => (["forward", "backward"], [Branch::Forward, Branch::Backward]),
+        let table = match kind {
+            DyadKind::Rrr => [("left", Branch::Left), ("right", Branch::Right)],
+            _ => [("forward", Branch::Forward), ("backward", Branch::Backward)],
         };
         let found = self
             .check
-            .word(&join(base, "branch"), g.branch.as_ref(), &words);
-        found.map_or(branches[0], |k| branches[k])
+            .word(&join(base, "branch"), g.branch.as_ref(), &table);
+        found.unwrap_or(table[0].1)
     }
 
     /// A guide `{ through, dir, offset }`.

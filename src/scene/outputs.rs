@@ -7,6 +7,9 @@ use super::structure::{Builder, MECH};
 use crate::geom::Tolerances;
 use crate::linkage::{Dir, Dyad, Group, Mechanism, Output, RedundantPair, Structure};
 
+/// The kinds of a redundant pair, as written (Latin or Cyrillic): prismatic or not.
+const PAIR_KINDS: [(&str, bool); 4] = [("R", false), ("P", true), ("В", false), ("П", true)];
+
 impl Builder<'_> {
     /// `[[mechanism.redundant]]`.
     pub(super) fn redundant(&mut self, raw: &RawMechanism) -> Vec<RedundantPair> {
@@ -14,16 +17,16 @@ impl Builder<'_> {
         for (i, r) in raw.redundant.iter().enumerate() {
             let base = item("mechanism.redundant", i);
             let name = self.check.name(&join(&base, "name"), r.name.as_ref());
-            let kind =
-                self.check
-                    .word(&join(&base, "kind"), r.kind.as_ref(), &["R", "P", "В", "П"]);
+            let kind = self
+                .check
+                .word(&join(&base, "kind"), r.kind.as_ref(), &PAIR_KINDS);
             let links_key = join(&base, "links");
             let links = self.check.link_pair(&links_key, r.links.as_ref(), 0);
             let links = links
                 .map(|l| self.existing_links(&links_key, l))
                 .unwrap_or([0, 0]);
             let reason = r.reason.clone().unwrap_or_default();
-            let prismatic = matches!(kind, Some(1 | 3));
+            let prismatic = kind == Some(true);
             out.push(RedundantPair {
                 name,
                 prismatic,

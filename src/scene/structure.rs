@@ -157,13 +157,14 @@ impl Builder<'_> {
         let pin = self.check.name(&join(base, "pin"), raw.pin.as_ref());
         let length = self.check.length(&join(base, "length"), raw.length);
         let omega = self.omega(base, raw);
-        let sense = match self
+        let sense = self
             .check
-            .word(&join(base, "sense"), raw.sense.as_ref(), &["cw", "ccw"])
-        {
-            Some(0) => Sense::Clockwise,
-            _ => Sense::CounterClockwise,
-        };
+            .word(
+                &join(base, "sense"),
+                raw.sense.as_ref(),
+                &[("cw", Sense::Clockwise), ("ccw", Sense::CounterClockwise)],
+            )
+            .unwrap_or(Sense::CounterClockwise);
         self.attach(link, join(base, "link"), link.to_string());
         self.know(&pin, &[link]);
         Some(Crank {
