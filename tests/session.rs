@@ -6,10 +6,59 @@ use tmm::construct::Drafting;
 use tmm::scale::Lang;
 use tmm::scene::{self, PlateKind};
 use tmm::sheets;
-use tmm::study::Session;
+use tmm::study::{Constructed, Session};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Every construction of `log` is there once.
+fn assert_once(stem: &str, log: &[Constructed]) {
+    for (i, c) in log.iter().enumerate() {
+        assert!(
+            !log[..i].contains(c),
+            "{stem}: {} at position {} (μ = {}) constructed twice",
+            c.what,
+            c.position,
+            c.scale.value()
+        );
+    }
+}
+
+#[test]
+fn every_scene_constructs_each_position_and_plan_once() {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(root().join("constructions"))
+        .expect("constructions")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    paths.sort();
+    assert!(paths.len() >= 20, "{paths:?}");
+    for path in paths {
+        let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+        let session = Session::new(&s, Drafting::EXACT);
+        // What `tmm render` and `tmm report` do: every plate in two languages and the report
+        // through one session.
+        for lang in [Lang::Ru, Lang::En] {
+            sheets::build_all(&session, lang).unwrap_or_else(|(k, e)| panic!("{k:?}: {e}"));
+        }
+        session
+            .report()
+            .unwrap_or_else(|e| panic!("{}: {e}", s.stem));
+        let log = session.constructions();
+        assert_once(&s.stem, &log);
+        // The plan of positions at one μ_l only, the one the session decided.
+        let positions: Vec<&Constructed> = log.iter().filter(|c| c.what == "position").collect();
+        let expected = match s.mechanism {
+            Some(_) => session.poses().expect("poses").positions.len(),
+            None => 0,
+        };
+        assert_eq!(positions.len(), expected, "{}: {positions:?}", s.stem);
+        if expected > 0 {
+            let l = session.scale_l().expect("μ_l");
+            assert!(positions.iter().all(|c| c.scale == l), "{}", s.stem);
+        }
+    }
 }
 
 #[test]
@@ -21,15 +70,7 @@ fn shaper_render_constructs_each_position_and_plan_once() {
         sheets::build(&session, kind, Lang::Ru).expect("plate");
     }
     let log = session.constructions();
-    for (i, c) in log.iter().enumerate() {
-        assert!(
-            !log[..i].contains(c),
-            "{} at position {} (μ = {}) constructed twice",
-            c.what,
-            c.position,
-            c.scale.value()
-        );
-    }
+    assert_once("shaper", &log);
     let count = |what: &str| log.iter().filter(|c| c.what == what).count();
     // 12 numbered positions and the extreme 8′.
     assert_eq!(count("velocity plan"), 13);
@@ -87,4 +128,48 @@ fn sections_that_study_a_mechanism_need_one() {
         "{msg}"
     );
     assert!(msg.contains("plates.wanted[0]"), "{msg}");
+}
+
+#[test]
+fn tangent_report_at_drafting_reads_the_plans_its_plates_draw() {
+    let s = scene::load(&root().join("constructions/tangent.toml")).expect("tangent");
+    // `--drafting 0.5`.
+    let session = Session::new(&s, Drafting::new(0.5).expect("drafting"));
+    sheets::build_all(&session, Lang::Ru).unwrap_or_else(|(k, e)| panic!("{k:?}: {e}"));
+    let drawn = session.constructions();
+    let sc = session.kin_scales().expect("scales");
+    // The plates draw the plan of positions at the session's μ_l, the plans at its μ_v, μ_a.
+    let at = |what: &str| -> Vec<f64> {
+        drawn
+            .iter()
+            .filter(|c| c.what == what)
+            .map(|c| c.scale.value())
+            .collect()
+    };
+    let positions = at("position");
+    assert!(!positions.is_empty());
+    assert!(
+        positions.iter().all(|&l| l == sc.l.value()),
+        "{positions:?}"
+    );
+    assert!(at("velocity plan").iter().all(|&v| v == sc.v.value()));
+    assert!(at("acceleration plan").iter().all(|&a| a == sc.a.value()));
+    // The plan fitted to its field: coarser than the crank drawn 50 mm (0.002).
+    assert_eq!(sc.l.value(), 0.004);
+    // The report constructs nothing new: it reads the very plans the plates draw.
+    let report = session.report().expect("report");
+    let new = session.constructions().split_off(drawn.len());
+    assert!(new.is_empty(), "{new:?}");
+    let read = session.kinematics(&sc).expect("kinematics").rows();
+    let plan_rows = |rows: &[tmm::Row]| -> Vec<tmm::Row> {
+        rows.iter()
+            .filter(|r| r.method == tmm::Method::Plan)
+            .cloned()
+            .collect()
+    };
+    let rows = plan_rows(&report.rows);
+    assert!(rows.len() > 20, "{}", rows.len());
+    assert_eq!(rows, plan_rows(&read));
+    // At 0.5 mm the readings are the drawing's: not exact.
+    assert!(rows.iter().any(|r| r.graphical != r.analytic));
 }

@@ -17,6 +17,7 @@ mod context;
 mod drafting;
 mod error;
 mod figure;
+pub(crate) mod fit;
 mod recorder;
 
 pub use compass::{Compass, Pick};

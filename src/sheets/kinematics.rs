@@ -1,73 +1,21 @@
 //! Plate "Кинематический анализ" (the textbook's sheet 1): the plan of positions, a velocity
 //! plan for every position, the acceleration plans, the displacement diagram with its two
 //! chord-method derivatives, the hodograph, the analytic table and the error estimates.
-//! Every group of views has its own field; its μ is raised along the textbook series until
-//! the drawings fit (the captions state the μ actually used).
+//! The scales are the session's ([`Session::kin_scales`]: decided once, each fitted to its
+//! field), so the sheet draws the very plans the report reads.
 
 use super::captions::{unit_in, Text};
-use super::fit::{self, fit_scale, Extent, Fit};
 use super::layout::{lay_out, split_table, table, Block, ScaleKey};
-use super::pack::sheet_overflow;
 use super::BuildError;
 use crate::check::{Method, Report};
 use crate::geom::DVec2;
-use crate::kinematics::plans::drawn_points;
-use crate::linkage::PlanKind;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
-use crate::study::{KinScales, Kinematics, Session};
-
-/// The room a velocity or acceleration plan chosen the textbook way may take, mm: the crank
-/// pin's vector drawn 70 mm, coarser when another vector would make the plan larger.
-const PLAN_ROOM_MM: DVec2 = DVec2::new(130.0, 130.0);
+use crate::study::{Kinematics, Session};
 
 /// The widest an analytic table may be drawn, mm (the A1 frame's width less margins); its
 /// columns are narrowed to 12 mm before any is left out.
 const TABLES_WIDTH_MM: f64 = 800.0;
-
-/// The largest of several predicted sizes, component-wise.
-fn largest(extents: &[Extent], mu: Scale) -> DVec2 {
-    extents
-        .iter()
-        .fold(DVec2::ZERO, |m, e| m.max(e.labelled_size_at(mu)))
-}
-
-/// The sheet's scales: each the scene's as given; one the scene leaves out is chosen the
-/// textbook way before anything is constructed — μ_l draws the crank about 50 mm, μ_v and μ_a
-/// the crank pin's vector about 70 mm — and raised along the round series until its drawing,
-/// predicted from the analytic twin, fits (the plan of positions an empty sheet, a plan
-/// [`PLAN_ROOM_MM`]).
-fn scales(session: &Session<'_>, sheet: &Sheet) -> Result<KinScales, BuildError> {
-    let mut sc = session.kin_scales()?;
-    let scene = session.scene();
-    let spec = &scene.kinematics;
-    let poses = session.poses()?;
-    let m = session.mechanism("the kinematic sheet")?;
-    let w1 = crate::kinematics::crank_rate(&m.crank);
-    if scene.scale_l.is_none() {
-        let plan = fit::positions_extent(&poses);
-        sc.l = fit_scale(sc.l, Fit::Raise, |mu| {
-            sheet_overflow(sheet, plan.labelled_size_at(mu))
-        })
-        .unwrap_or(sc.l);
-    }
-    let extents = |ks: &[usize], kind| -> Vec<Extent> {
-        ks.iter()
-            .map(|&k| fit::plan_extent(&drawn_points(&poses, k, w1, kind)))
-            .collect()
-    };
-    let room = |size: DVec2| fit::overflow(size, PLAN_ROOM_MM);
-    if spec.scale_v.is_none() {
-        let all: Vec<usize> = (0..poses.positions.len()).collect();
-        let vel = extents(&all, PlanKind::Velocity);
-        sc.v = fit_scale(sc.v, Fit::Raise, |mu| room(largest(&vel, mu))).unwrap_or(sc.v);
-    }
-    if spec.scale_a.is_none() {
-        let acc = extents(&session.acceleration_positions()?, PlanKind::Acceleration);
-        sc.a = fit_scale(sc.a, Fit::Raise, |mu| room(largest(&acc, mu))).unwrap_or(sc.a);
-    }
-    Ok(sc)
-}
 
 /// The scene key of a scale and the scale, for a block's message.
 fn keyed(key: &'static str, scale: Scale) -> Option<ScaleKey> {
@@ -78,7 +26,7 @@ fn keyed(key: &'static str, scale: Scale) -> Option<ScaleKey> {
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
     let sheet = Sheet::default();
-    let sc = scales(session, &sheet)?;
+    let sc = session.kin_scales()?;
     let a = session.kinematics(&sc)?;
     let mut blocks = Vec::new();
     let caption = format!(

@@ -2,9 +2,9 @@
 //! draw and laid out on as many sheets of a format as they need ([`super::pack`]).
 
 use super::captions::Text;
-use super::fit::LABEL_MARGIN;
 use super::pack::{pack, sheet_overflow};
 use super::BuildError;
+use crate::construct::fit::{raised, LABEL_MARGIN};
 use crate::construct::Figure;
 use crate::geom::DVec2;
 use crate::plate::{
@@ -297,7 +297,7 @@ fn too_large(sheet: &Sheet, blocks: &[Block], sizes: &[DVec2], k: usize) -> Buil
             .filter(|(b, _)| scale_of(b).is_some_and(|o| o.key == s.key))
             .map(|(_, &size)| sheet_overflow(sheet, size))
             .fold(1.0, f64::max);
-        super::fit::raised(s.scale, over).map(|f| (s, f))
+        raised(s.scale, over).map(|f| (s, f))
     });
     BuildError::TooLarge {
         what,

@@ -5,7 +5,6 @@ mod balancing;
 mod cam;
 mod captions;
 mod dynamics;
-mod fit;
 mod forces;
 mod friction;
 mod gears;

@@ -4,6 +4,7 @@
 //! nowhere there starts a further sheet. Items keep the order they are given in, so a sheet
 //! reads like the textbook's: the plan of positions first, then the plans, diagrams, tables.
 
+use crate::construct::fit::overflow;
 use crate::geom::DVec2;
 use crate::plate::{Rect, Sheet};
 
@@ -124,7 +125,7 @@ pub(super) fn rooms(sheet: &Sheet) -> [DVec2; 4] {
 pub(super) fn sheet_overflow(sheet: &Sheet, size: DVec2) -> f64 {
     rooms(sheet)
         .iter()
-        .map(|&r| super::fit::overflow(size, r))
+        .map(|&r| overflow(size, r))
         .fold(f64::INFINITY, f64::min)
 }
 

@@ -2,9 +2,9 @@
 //! construction, trajectories and extreme positions, θ, H and K.
 
 use super::captions::Text;
-use super::fit::{self, fit_scale, Fit};
 use super::layout::{lay_out, Block, ScaleKey};
 use super::BuildError;
+use crate::construct::fit::{fit_scale, overflow};
 use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
 use crate::linkage::{DyadKind, OutputCoord, PositionPlan, Structure};
@@ -12,33 +12,17 @@ use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::study::Session;
 
-/// The room the plan of positions takes when μ_l is chosen (the right part of an A1 sheet),
-/// and the structural scheme's, mm.
-const PLAN_ROOM: DVec2 = DVec2::new(530.0, 502.0);
+/// The room of the structural scheme, mm.
 const SCHEME_ROOM: DVec2 = DVec2::new(268.0, 274.0);
 /// Preferred size of the structural scheme, mm.
 const SCHEME_MM: f64 = 170.0;
-/// Largest share of its room the plan may take when μ_l is chosen automatically.
-const FILL: f64 = 0.9;
 
 /// Build the sheet: the structural scheme, the plan of positions and the analysis text.
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
     let m = session.mechanism("the plan of positions")?;
-    // The scene's μ_l as given; else the finest round μ_l at which the plan, predicted from
-    // the analytic positions, fills its room (a guess from the crank first, as a student
-    // chooses it).
-    let scale = match scene.scale_l {
-        Some(s) => s,
-        None => {
-            let extent = fit::positions_extent(&*session.poses()?);
-            let start = session.scale_l()?;
-            fit_scale(start, Fit::Fill(FILL), |mu| {
-                fit::overflow(extent.size_at(mu), PLAN_ROOM)
-            })
-            .ok_or(BuildError::NoScale(start.value()))?
-        }
-    };
+    // μ_l as the session decided it for every drawing of the plan (and the report).
+    let scale = session.scale_l()?;
     let plan = session.positions(scale)?;
     let st = Structure::analyse(m);
     let plan_caption = format!(
@@ -88,9 +72,9 @@ fn scheme_block(
     let start =
         Scale::round_for(extent, SCHEME_MM, Quantity::Length).ok_or(BuildError::NoScale(extent))?;
     // The scheme is a drawing of position 1 (no construction): drawn at each trial μ.
-    let s_scale = fit_scale(start, Fit::Raise, |s| {
+    let s_scale = fit_scale(start, |s| {
         let size = scheme(s).bounds().map_or(DVec2::ZERO, |(lo, hi)| hi - lo);
-        fit::overflow(size, SCHEME_ROOM)
+        overflow(size, SCHEME_ROOM)
     })
     .ok_or(BuildError::NoScale(extent))?;
     let caption = format!(

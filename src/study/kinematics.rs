@@ -108,24 +108,6 @@ impl<'s> Session<'s> {
         ))
     }
 
-    /// The kinematic study's scales as the scene gives them, the rest chosen the textbook way.
-    pub fn kin_scales(&self) -> Result<KinScales, StudyError> {
-        let m = self.mechanism("the kinematic analysis")?;
-        let (v, a) = kinematics::plan_scales(&m.crank, self.spec())?;
-        let spec = self.spec();
-        Ok(KinScales {
-            l: self.scale_l()?,
-            v,
-            a,
-            chart: ChartScales {
-                s: spec.scale_s,
-                phi: spec.scale_phi,
-                h1: spec.pole_h1,
-                h2: spec.pole_h2,
-            },
-        })
-    }
-
     /// The velocity plan at position `k` of the plan at μ_l = `l`, at μ_v = `v`.
     pub fn velocity(&self, l: Scale, v: Scale, k: usize) -> Cached<Velocity> {
         self.velocity.get((l, v, k), || {

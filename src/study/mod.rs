@@ -4,6 +4,10 @@
 //! exactly that (and the velocity plan it starts from), and a second plate or the report
 //! asking for it again gets the same one. "Model only what a scene needs" lives here.
 //!
+//! Each figure's scales are decided once, before anything is constructed ([`Session::scale_l`],
+//! [`Session::kin_scales`]): every sheet and the report ask for them, so the report reads the
+//! very constructions the plates draw.
+//!
 //! Every construction the session carries out is logged ([`Session::constructions`]), so
 //! a test can show that nothing is constructed twice.
 
@@ -16,6 +20,7 @@ mod friction;
 mod gears;
 mod kinematics;
 mod memo;
+mod scales;
 
 pub use error::StudyError;
 pub use kinematics::{ChartScales, KinScales, Kinematics};
@@ -33,14 +38,12 @@ use crate::linkage::{
     plain, plan_poses, plan_positions, KinPlan, LinkageError, Mechanism, PlanKind, PlanPoses,
     PlanRequest, PositionPlan,
 };
-use crate::scale::{Quantity, Scale};
+use crate::scale::Scale;
 use crate::scene::{Scene, Start};
 use memo::Memo;
 use std::sync::{Arc, Mutex};
 use thiserror::Error;
 
-/// Preferred drawn length of the crank when the scene gives no μ_l (textbook: 40–60 mm).
-const CRANK_MM: f64 = 50.0;
 /// The size, mm, of the plans and diagrams whose tolerances the session uses.
 const FIGURE_MM: f64 = 300.0;
 
@@ -69,6 +72,8 @@ pub struct Session<'s> {
     drafting: Drafting,
     ctx: Result<Context, StudyError>,
     poses: Memo<(), Cached<PlanPoses>>,
+    scale_l: Memo<(), Result<Scale, StudyError>>,
+    kin_scales: Memo<(), Result<KinScales, StudyError>>,
     positions: Memo<Scale, Cached<PositionPlan>>,
     velocity: Memo<(Scale, Scale, usize), Cached<Velocity>>,
     acceleration: Memo<(Scale, Scale, Scale, usize), Cached<Acceleration>>,
@@ -94,6 +99,8 @@ impl<'s> Session<'s> {
             ctx: Context::for_model_size(FIGURE_MM, drafting)
                 .map_err(|e| StudyError::Tolerances(e.to_string())),
             poses: Memo::default(),
+            scale_l: Memo::default(),
+            kin_scales: Memo::default(),
             positions: Memo::default(),
             velocity: Memo::default(),
             acceleration: Memo::default(),
@@ -177,22 +184,6 @@ impl<'s> Session<'s> {
             }
             Ok(Arc::new(plan))
         })
-    }
-
-    /// μ_l as the scene gives it, or chosen from the crank the textbook way (the crank drawn
-    /// about 50 mm).
-    pub fn scale_l(&self) -> Result<Scale, StudyError> {
-        match self.scene.scale_l {
-            Some(s) => Ok(s),
-            None => {
-                let m = self.mechanism("the plan of positions")?;
-                Ok(crate::kinematics::round_scale(
-                    m.crank.length,
-                    CRANK_MM,
-                    Quantity::Length,
-                )?)
-            }
-        }
     }
 
     fn ctx(&self) -> Result<Context, StudyError> {

@@ -1,0 +1,129 @@
+//! The one decider of the kinematic study's scales. Each is decided once per session, before
+//! anything is constructed, and every sheet and the report ask for it: the scene's as given;
+//! else the textbook's choice — μ_l draws the crank about `CRANK_MM` (50 mm), μ_v and μ_a the crank
+//! pin's vector about 70 mm — raised along the round series until its drawing, predicted from
+//! the analytic twin, fits its field (the plan of positions `POSITIONS_ROOM`, which an empty
+//! A1 sheet also holds; every velocity or acceleration plan `VECTOR_PLAN_ROOM`).
+
+use super::*;
+use crate::construct::fit::{fit_scale, overflow, Extent};
+use crate::geom::DVec2;
+use crate::kinematics::{self, plans::drawn_points};
+use crate::linkage::{guide_ends, GUIDE_MARGIN_MM};
+use crate::scale::Quantity;
+
+/// Preferred drawn length of the crank when the scene gives no μ_l (textbook: 40–60 mm).
+const CRANK_MM: f64 = 50.0;
+/// The field of the plan of positions, mm: the right part of an A1 sheet, beside the
+/// structural scheme on the positions sheet.
+const POSITIONS_ROOM: DVec2 = DVec2::new(530.0, 502.0);
+/// The field of a velocity or acceleration plan chosen the textbook way, mm: the crank pin's
+/// vector drawn 70 mm, coarser when another vector would make the plan larger.
+const VECTOR_PLAN_ROOM: DVec2 = DVec2::new(130.0, 130.0);
+/// Allowance of a plan of positions: pivot symbols, slider blocks (its guides are marks).
+const PLAN_ALLOWANCE: f64 = 1.0;
+/// Allowance of a velocity or acceleration plan: direction lines drawn 6 mm past their
+/// points, arrowheads.
+const VECTOR_PLAN_ALLOWANCE: f64 = 6.0;
+
+/// The extent of the plan of positions: every point at every position, the fixed points.
+fn positions_extent(poses: &PlanPoses) -> Extent {
+    let mut e = Extent::empty(PLAN_ALLOWANCE);
+    for p in &poses.positions {
+        for &x in &p.pose.p {
+            e.add(x);
+        }
+    }
+    for (at, dir) in guide_ends(poses) {
+        e.mark(at, dir * GUIDE_MARGIN_MM);
+    }
+    e
+}
+
+/// The largest labelled size, at `mu`, of the plans of `kind` at the positions `ks`, each
+/// drawn through its points (SI).
+fn largest_plan(
+    poses: &PlanPoses,
+    ks: &[usize],
+    w1: f64,
+    kind: PlanKind,
+) -> impl Fn(Scale) -> DVec2 {
+    let extents: Vec<Extent> = ks
+        .iter()
+        .map(|&k| {
+            let mut e = Extent::empty(VECTOR_PLAN_ALLOWANCE);
+            drawn_points(poses, k, w1, kind)
+                .into_iter()
+                .for_each(|p| e.add(p));
+            e
+        })
+        .collect();
+    move |mu| {
+        extents
+            .iter()
+            .fold(DVec2::ZERO, |m, e| m.max(e.labelled_size_at(mu)))
+    }
+}
+
+/// `start` raised along the round series until `size(μ)` fits `room`.
+fn raised_to_fit(start: Scale, room: DVec2, size: impl Fn(Scale) -> DVec2) -> Scale {
+    fit_scale(start, |mu| overflow(size(mu), room)).unwrap_or(start)
+}
+
+impl<'s> Session<'s> {
+    /// μ_l of every drawing of the plan of positions, decided once: the scene's, else the
+    /// crank drawn about `CRANK_MM` (50 mm) and raised until the plan fits `POSITIONS_ROOM`.
+    pub fn scale_l(&self) -> Result<Scale, StudyError> {
+        self.scale_l.get((), || {
+            if let Some(s) = self.scene.scale_l {
+                return Ok(s);
+            }
+            let m = self.mechanism("the plan of positions")?;
+            let start = kinematics::round_scale(m.crank.length, CRANK_MM, Quantity::Length)?;
+            let plan = positions_extent(&*self.poses()?);
+            Ok(raised_to_fit(start, POSITIONS_ROOM, |mu| {
+                plan.labelled_size_at(mu)
+            }))
+        })
+    }
+
+    /// The kinematic study's scales, decided once: μ_l ([`Session::scale_l`]); μ_v and μ_a the
+    /// scene's, else the crank pin's vector drawn about 70 mm and raised until the largest
+    /// plan fits `VECTOR_PLAN_ROOM`; the displacement chart's as the scene gives them (the
+    /// rest chosen for the chart by the study).
+    pub fn kin_scales(&self) -> Result<KinScales, StudyError> {
+        self.kin_scales.get((), || {
+            let m = self.mechanism("the kinematic analysis")?;
+            let spec = self.spec();
+            let (mut v, mut a) = kinematics::plan_scales(&m.crank, spec)?;
+            let (poses, w1) = (self.poses()?, self.w1()?);
+            if spec.scale_v.is_none() {
+                let all: Vec<usize> = (0..poses.positions.len()).collect();
+                v = raised_to_fit(
+                    v,
+                    VECTOR_PLAN_ROOM,
+                    largest_plan(&poses, &all, w1, PlanKind::Velocity),
+                );
+            }
+            if spec.scale_a.is_none() {
+                let ks = self.acceleration_positions()?;
+                a = raised_to_fit(
+                    a,
+                    VECTOR_PLAN_ROOM,
+                    largest_plan(&poses, &ks, w1, PlanKind::Acceleration),
+                );
+            }
+            Ok(KinScales {
+                l: self.scale_l()?,
+                v,
+                a,
+                chart: ChartScales {
+                    s: spec.scale_s,
+                    phi: spec.scale_phi,
+                    h1: spec.pole_h1,
+                    h2: spec.pole_h2,
+                },
+            })
+        })
+    }
+}
