@@ -82,7 +82,7 @@ pub(super) fn construction_rate(s: &Subject, reps: Reps) -> Result<f64, BenchErr
             let setup = PlanSetup {
                 prog: &s.prog,
                 built: &built,
-                mu_l,
+                mu_l: mu,
                 w1: s.w1,
                 ctx,
             };
