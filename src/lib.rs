@@ -10,8 +10,10 @@
 //! `study` (the session over one scene: each study computed once, on demand) ← `sheets`,
 //! `report` ← the `tmm` binary. `plate` draws recorded figures; `check` holds the typed rows
 //! (graphical against analytic) every domain module emits and a scene's [`Report`] of them;
-//! `report` only writes a report (nothing below it imports it); `bench` times each method
-//! against its error (`tmm bench`) and writes its own table and plot.
+//! `report` only writes a report (nothing below it imports it); `render` turns a run's
+//! scenes into SVG/PNG/PDF files written atomically (scene → session → sheets → files);
+//! `bench` times each method against its error (`tmm bench`) and writes its own table and
+//! plot.
 //!
 //! The way in, for a program using the library as the `tmm` binary does:
 //! ```no_run
@@ -43,6 +45,7 @@ pub mod geom;
 pub mod kinematics;
 pub mod linkage;
 pub mod plate;
+pub mod render;
 pub mod report;
 pub mod scale;
 pub mod scene;

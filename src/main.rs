@@ -6,9 +6,9 @@ use clap::{Parser, Subcommand, ValueEnum};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use tmm::construct::Drafting;
+use tmm::render::{self, RenderError};
 use tmm::scale::Lang;
-use tmm::scene::{self, PlateKind, Scene};
-use tmm::sheets;
+use tmm::scene::{self, Scene};
 use tmm::study::Session;
 
 #[derive(Parser)]
@@ -198,48 +198,13 @@ fn options(lang: LangArg, drafting: f64) -> Result<(Lang, Drafting), Failure> {
     Ok((lang, drafting))
 }
 
-/// The plates of a scene, built through one session.
-fn plates(
-    s: &Scene,
-    lang: Lang,
-    drafting: Drafting,
-) -> Result<Vec<(PlateKind, tmm::plate::Plate)>, Failure> {
-    let session = Session::new(s, drafting);
-    sheets::build_all(&session, lang)
-        .map_err(|(kind, e)| build_err(s, kind, refit(s, e, drafting, lang)))
-}
-
-/// A drawing too large at a scale the scene gives: the scale suggested verified on every
-/// plate the key sets (the suggestion of the first drawing alone may not fit the others).
-fn refit(s: &Scene, e: sheets::BuildError, drafting: Drafting, lang: Lang) -> sheets::BuildError {
-    match e {
-        sheets::BuildError::TooLarge {
-            what,
-            need,
-            fits: Some((key, first)),
-        } => {
-            let fit = std::fs::read_to_string(&s.path)
-                .ok()
-                .and_then(|text| {
-                    sheets::verified_fit(&text, &s.path, key.key, first, drafting, lang)
-                })
-                .unwrap_or(first);
-            sheets::BuildError::TooLarge {
-                what,
-                need,
-                fits: Some((key, fit)),
-            }
-        }
-        e => e,
-    }
-}
-
-fn build_err(scene: &Scene, kind: PlateKind, e: sheets::BuildError) -> Failure {
-    let message = format!("{}: plate `{}`: {e}", scene.path.display(), kind.stem());
-    match e {
-        // A scale the scene gives that no sheet can hold: the input is at fault.
-        sheets::BuildError::TooLarge { fits: Some(_), .. } => Failure::input(message),
-        _ => Failure::construction(message),
+/// A failure to render: bad input (status 2) or a construction (status 1), with the
+/// library's message.
+fn render_failure(e: RenderError) -> Failure {
+    if e.is_input() {
+        Failure::input(e.to_string())
+    } else {
+        Failure::construction(e.to_string())
     }
 }
 
@@ -260,49 +225,18 @@ fn render(
         return Err(nothing_to_draw(s));
     }
     distinct_stems(&scenes, out)?;
-    // Everything is built in memory first: a failed run writes nothing.
-    let mut svgs: Vec<(PathBuf, String)> = Vec::new();
-    let mut pdfs: Vec<(PathBuf, Vec<u8>)> = Vec::new();
-    for s in &scenes {
-        let first = svgs.len();
-        for (_, plate) in plates(s, lang, drafting)? {
-            let base = out.join(&s.stem).join(&plate.name);
-            if formats.contains(&Format::Png) {
-                let (w, h) = (plate.sheet.width_mm(), plate.sheet.height_mm());
-                tmm::plate::png_size(w, h, dpi as f32)
-                    .map_err(|e| Failure::input(format!("--dpi {dpi}: {}: {e}", base.display())))?;
-            }
-            svgs.push((base, tmm::plate::to_svg(&plate)));
-        }
-        if formats.contains(&Format::Pdf) {
-            let path = out.join(&s.stem).join(format!("{}.pdf", s.stem));
-            let pages: Vec<String> = svgs[first..].iter().map(|(_, svg)| svg.clone()).collect();
-            let pdf = tmm::plate::to_pdf(&pages)
-                .map_err(|e| Failure::construction(format!("{}: {e}", path.display())))?;
-            pdfs.push((path, pdf));
-        }
-    }
-    let pngs = if formats.contains(&Format::Png) {
-        let texts: Vec<String> = svgs.iter().map(|(_, svg)| svg.clone()).collect();
-        tmm::plate::to_png_dpi_all(&texts, dpi as f32)
-    } else {
-        Vec::new()
+    let options = render::Options {
+        lang,
+        drafting,
+        formats: render::Formats {
+            svg: formats.contains(&Format::Svg),
+            png: formats.contains(&Format::Png),
+            pdf: formats.contains(&Format::Pdf),
+        },
+        dpi,
     };
-    let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
-    let mut pngs = pngs.into_iter();
-    for (base, svg) in svgs {
-        if let Some(png) = pngs.next() {
-            let png = png.map_err(|e| Failure::construction(format!("{}: {e}", base.display())))?;
-            files.push((base.with_extension("png"), png));
-        }
-        if formats.contains(&Format::Svg) {
-            files.push((base.with_extension("svg"), svg.into_bytes()));
-        }
-    }
-    files.extend(pdfs);
-    tmm::plate::write_all_atomic(&files)
-        .map_err(|(path, e)| Failure::input(format!("{}: cannot write: {e}", path.display())))?;
-    for (path, _) in &files {
+    let written = render::render(&scenes, out, &options).map_err(render_failure)?;
+    for path in &written {
         emit(&path.display().to_string());
     }
     Ok(())
@@ -381,7 +315,9 @@ fn check(paths: &[PathBuf]) -> Result<(), Failure> {
                 if s.plates.is_empty() {
                     return Err(nothing_to_draw(&s));
                 }
-                plates(&s, Lang::Ru, Drafting::EXACT).map(|_| ())
+                render::plates(&s, Lang::Ru, Drafting::EXACT)
+                    .map(|_| ())
+                    .map_err(render_failure)
             });
         match result {
             Ok(()) => emit(&format!("{}: ok", path.display())),

@@ -190,10 +190,10 @@ fn slot_at(crank: f64, deg: f64) -> ([f64; 3], [f64; 3], DVec2, DVec2) {
         pose.ddangle[3] * W1 * W1,
         (pose.ddp[d] * W1 * W1).length(),
     ];
-    let mu_l = 0.0025;
+    let mu_l = Scale::new(0.0025, Quantity::Length).unwrap();
     let mut rec = Recorder::in_context(
         "t",
-        Scale::new(mu_l, Quantity::Length).unwrap(),
+        mu_l,
         &Context::for_model_size(400.0, Drafting::EXACT).unwrap(),
     );
     let built = prog.construct(&mut rec, phi, None, "t").unwrap();
@@ -209,7 +209,7 @@ fn slot_at(crank: f64, deg: f64) -> ([f64; 3], [f64; 3], DVec2, DVec2) {
     let vp = kin_plan(&setup, PlanKind::Velocity, sv, None).unwrap();
     let ap = kin_plan(&setup, PlanKind::Acceleration, sa, Some(&vp)).unwrap();
     let plans = [vp.rate[3], ap.rate[3], (ap.images[d] * 0.5).length()];
-    (analytic, plans, pose.p[d], built.p[d] * mu_l)
+    (analytic, plans, pose.p[d], built.p[d] * mu_l.value())
 }
 
 #[test]

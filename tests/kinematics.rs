@@ -261,9 +261,10 @@ fn plans_at(
     phi: f64,
 ) -> (Program, Built, Result<KinPlan, (usize, ConstructionError)>) {
     let prog = Program::compile(m).unwrap();
+    let mu_l = Scale::new(0.001, Quantity::Length).unwrap();
     let mut rec = Recorder::in_context(
         "t",
-        Scale::new(0.001, Quantity::Length).unwrap(),
+        mu_l,
         &Context::for_model_size(1000.0, Drafting::EXACT).unwrap(),
     );
     let built = prog.construct(&mut rec, phi, None, "t").unwrap();
@@ -271,7 +272,7 @@ fn plans_at(
     let setup = PlanSetup {
         prog: &prog,
         built: &built,
-        mu_l: 0.001,
+        mu_l,
         w1,
         ctx: Context::for_model_size(200.0, Drafting::EXACT).expect("tolerances"),
     };
@@ -364,9 +365,10 @@ fn coriolis_vanishes_with_the_relative_sliding_velocity() {
     };
     for (phi, vanishes) in [(90f64, true), (120f64, false)] {
         let prog = Program::compile(&m).unwrap();
+        let mu_l = Scale::new(0.0025, Quantity::Length).unwrap();
         let mut rec = Recorder::in_context(
             "t",
-            Scale::new(0.0025, Quantity::Length).unwrap(),
+            mu_l,
             &Context::for_model_size(400.0, Drafting::EXACT).unwrap(),
         );
         let built = prog
@@ -375,7 +377,7 @@ fn coriolis_vanishes_with_the_relative_sliding_velocity() {
         let setup = PlanSetup {
             prog: &prog,
             built: &built,
-            mu_l: 0.0025,
+            mu_l,
             w1: -15.7,
             ctx: Context::for_model_size(200.0, Drafting::EXACT).expect("tolerances"),
         };

@@ -9,8 +9,6 @@ use std::path::{Path, PathBuf};
 use tmm::construct::Drafting;
 use tmm::scale::Lang;
 use tmm::scene::{self, PlateKind};
-use tmm::sheets;
-use tmm::study::Session;
 
 /// Width of the rendered test images, px.
 const WIDTH: u32 = 1400;
@@ -27,8 +25,7 @@ fn render(scene_name: &str, plate: &str) -> Vec<(String, Vec<u8>)> {
         .join(format!("{scene_name}.toml"));
     let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
     let kind = PlateKind::parse(plate).unwrap_or_else(|| panic!("unknown plate {plate}"));
-    let session = Session::new(&s, Drafting::EXACT);
-    let all = sheets::build_all(&session, Lang::Ru).unwrap_or_else(|(_, e)| panic!("{e}"));
+    let all = tmm::render::plates(&s, Lang::Ru, Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
     all.into_iter()
         .filter(|(k, _)| *k == kind)
         .map(|(_, p)| {

@@ -4,6 +4,7 @@
 use super::{best_time, BenchError, Reps, Subject, CONSTRUCTION_EXTENT_MM};
 use crate::construct::{Context, Drafting, Recorder};
 use crate::linkage::{self, kin_plan, PlanKind, PlanSetup, Pose};
+use crate::render::{self, RenderError};
 use crate::scale::{Lang, Quantity, Scale};
 use crate::scene::PlateKind;
 use crate::sheets;
@@ -82,7 +83,7 @@ pub(super) fn construction_rate(s: &Subject, reps: Reps) -> Result<f64, BenchErr
             let setup = PlanSetup {
                 prog: &s.prog,
                 built: &built,
-                mu_l,
+                mu_l: mu,
                 w1: s.w1,
                 ctx,
             };
@@ -118,16 +119,21 @@ pub(super) const PNG_DPI: u32 = 150;
 /// Seconds to turn every plate of a scene, already written as SVG, into PNG at
 /// [`PNG_DPI`], the plates in parallel — what `tmm render` spends on PNGs.
 pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
-    let session = Session::new(&s.scene, Drafting::EXACT);
-    let mut svgs = Vec::new();
-    for &kind in &s.scene.plates {
-        let plates = sheets::build(&session, kind, Lang::Ru).map_err(|e| BenchError::Plate {
+    let plates = render::plates(&s.scene, Lang::Ru, Drafting::EXACT).map_err(|e| {
+        let (plate, detail) = match e {
+            RenderError::Build { kind, error, .. } => (kind.stem().into(), error.to_string()),
+            e => ("png".into(), e.to_string()),
+        };
+        BenchError::Plate {
             scene: s.scene.stem.clone(),
-            plate: kind.stem().into(),
-            detail: e.to_string(),
-        })?;
-        svgs.extend(plates.iter().map(crate::plate::to_svg));
-    }
+            plate,
+            detail,
+        }
+    })?;
+    let svgs: Vec<String> = plates
+        .iter()
+        .map(|(_, p)| crate::plate::to_svg(p))
+        .collect();
     best_time(reps.best_of.min(3), || {
         crate::plate::to_png_dpi_all(&svgs, PNG_DPI as f32)
             .into_iter()

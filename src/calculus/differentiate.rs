@@ -30,8 +30,8 @@ impl Method {
     ) -> Result<Derivative, CalculusError> {
         let st = Start::new(rec, src, scales, pole_mm, layout)?;
         match self {
-            Method::Chords => chords(rec, &st, src, layout),
-            Method::Tangents => tangents(rec, &st, src, layout),
+            Method::Chords => chords(rec, &st),
+            Method::Tangents => tangents(rec, &st),
         }
     }
 }
@@ -150,7 +150,11 @@ pub fn chord_node_bound(src: &Diagram, max_d3: f64, max_d5: f64) -> f64 {
 }
 
 /// What both methods start from: the checked inputs and the given diagram.
-struct Start {
+struct Start<'a> {
+    /// The given diagram.
+    src: &'a Diagram,
+    /// Where the given diagram and its derivative are drawn.
+    layout: &'a Layout,
     /// The derivative's scale.
     scale: Scale,
     /// Intervals.
@@ -163,14 +167,14 @@ struct Start {
     pole_mm: f64,
 }
 
-impl Start {
+impl<'a> Start<'a> {
     /// Check the inputs, place the given diagram's nodes and draw its curve if asked.
     fn new(
         rec: &mut Recorder,
-        src: &Diagram,
+        src: &'a Diagram,
         scales: Scales,
         pole_mm: f64,
-        layout: &Layout,
+        layout: &'a Layout,
     ) -> Result<Self, CalculusError> {
         src.validate()?;
         check_pole(pole_mm)?;
@@ -198,6 +202,8 @@ impl Start {
             );
         }
         Ok(Self {
+            src,
+            layout,
             scale,
             n,
             run,
@@ -207,7 +213,8 @@ impl Start {
     }
 
     /// The derivative with its common fields filled and no values yet.
-    fn derivative(&self, method: Method, src: &Diagram, pc: &PoleCut) -> Derivative {
+    fn derivative(&self, method: Method, pc: &PoleCut) -> Derivative {
+        let src = self.src;
         let nodes = if src.periodic { self.n } else { self.n + 1 };
         Derivative {
             method,
@@ -293,7 +300,7 @@ fn ray_and_project(
     (ray, target)
 }
 
-/// Differentiate `src` (drawn at `scales`) by the method of chords, recording the textbook
+/// Differentiate `st.src` by the method of chords, recording the textbook
 /// steps on `rec`, whose scale must be the derivative's μ_y/(H·μ_x) (see
 /// [`derivative_scale`]):
 /// the given curve (optional) and its chords (thin); the pole P at H left of
@@ -306,13 +313,9 @@ fn ray_and_project(
 /// # Errors
 /// An invalid diagram, H ≤ 0, a recorder at another scale, a vertical chord, or values
 /// too large to draw.
-fn chords(
-    rec: &mut Recorder,
-    st: &Start,
-    src: &Diagram,
-    layout: &Layout,
-) -> Result<Derivative, CalculusError> {
+fn chords(rec: &mut Recorder, st: &Start) -> Result<Derivative, CalculusError> {
     let (n, run, pts) = (st.n, st.run, &st.pts);
+    let (src, layout) = (st.src, st.layout);
     let chords: Vec<StepId> = pts
         .windows(2)
         .enumerate()
@@ -320,7 +323,7 @@ fn chords(
         .collect();
     let dirs: Vec<DVec2> = pts.windows(2).map(|w| w[1] - w[0]).collect();
     let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64)?;
-    let mut d = st.derivative(Method::Chords, src, &pc);
+    let mut d = st.derivative(Method::Chords, &pc);
     let o = layout.origin;
     for (k, &chord) in chords.iter().enumerate() {
         let (ray, _) = ray_and_project(rec, &pc, k, o.x + k as f64 * run, chord);
@@ -404,7 +407,7 @@ fn finish(d: Derivative) -> Result<Derivative, CalculusError> {
     }
 }
 
-/// Differentiate `src` by the method of tangents. The tangent at a node is the
+/// Differentiate `st.src` by the method of tangents. The tangent at a node is the
 /// draughtsman's tangent: the line through the node parallel to the chord joining its two
 /// neighbouring nodes (wrapping for a periodic diagram; at the ends of a non-periodic one,
 /// the adjacent chord). It is drawn (thin) through the node; then, as for chords, a ray from
@@ -414,13 +417,9 @@ fn finish(d: Derivative) -> Result<Derivative, CalculusError> {
 ///
 /// # Errors
 /// As for the method of chords.
-fn tangents(
-    rec: &mut Recorder,
-    st: &Start,
-    src: &Diagram,
-    layout: &Layout,
-) -> Result<Derivative, CalculusError> {
+fn tangents(rec: &mut Recorder, st: &Start) -> Result<Derivative, CalculusError> {
     let (n, run, pts) = (st.n, st.run, &st.pts);
+    let (src, layout) = (st.src, st.layout);
     let nodes = if src.periodic { n } else { n + 1 };
     let shift = DVec2::new(run * n as f64, 0.0);
     let mut tangents = Vec::with_capacity(nodes);
@@ -443,7 +442,7 @@ fn tangents(
         dirs.push(b - a);
     }
     let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64)?;
-    let mut d = st.derivative(Method::Tangents, src, &pc);
+    let mut d = st.derivative(Method::Tangents, &pc);
     let o = layout.origin;
     let mut curve_pts = Vec::with_capacity(nodes + 1);
     for (k, &t) in tangents.iter().enumerate() {

@@ -32,276 +32,314 @@ pub(super) fn min_radius(
     d: &Diagrams,
     ctx: &Context,
 ) -> Result<(RadiusConstruction, f64, Placement), CamError> {
+    let mut rec = Recorder::in_context("combined", d.s_scale, ctx);
+    let given = Given { spec, points, d };
+    let read = match spec.follower {
+        Follower::Translating { offset } => translating(&mut rec, &given, offset)?,
+        Follower::Rocker { arm, .. } => rocker(&mut rec, &given, arm)?,
+        Follower::Flat { offset } => flat(&mut rec, &given, offset)?,
+    };
+    Ok((
+        RadiusConstruction {
+            figure: rec.finish(),
+            graphical: read.graphical,
+            exact: read.exact,
+            convexity: read.convexity,
+        },
+        read.base,
+        read.placement,
+    ))
+}
+
+/// What every follower's construction starts from: the cam, its drawn points and their
+/// diagrams.
+#[derive(Clone, Copy)]
+struct Given<'a> {
+    spec: &'a CamSpec,
+    points: &'a [Point],
+    d: &'a Diagrams,
+}
+
+/// What one follower's construction reads: r_min as read and exact, the flat face's
+/// convexity, the base radius the profile takes and the follower's placement.
+struct Read {
+    graphical: f64,
+    exact: f64,
+    convexity: Option<(f64, f64)>,
+    base: f64,
+    placement: Placement,
+}
+
+/// The translating follower: the combined diagram S(dS/dφ), the γ_min lines and the zone
+/// of admissible centres on the vertical x = −e.
+fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamError> {
+    let Given { spec, points, d } = *given;
     let mu = d.s_scale;
-    let mut rec = Recorder::in_context("combined", mu, ctx);
     let gamma = spec.gamma_min;
-    match spec.follower {
-        Follower::Translating { offset } => {
-            let (exact_r, _) = exact::min_radius_translating(spec, offset);
-            // Combined diagram: B₀ at the origin, the path vertical, K_i = B_i − (S′_i, 0).
-            let path = s_axis(&mut rec, spec, mu, exact_r);
-            let ks = combined(d, points.len(), |m| {
-                DVec2::new(-mu.to_mm(m.ds), mu.to_mm(m.s))
-            });
-            for (i, k) in ks.iter().enumerate() {
-                let b = DVec2::new(0.0, k.y);
-                rec.draw(
-                    format!("dS/dφ at point {i}"),
-                    Item::Segment(Segment::new(b, *k)),
-                    Role::Construction,
-                    &[],
-                );
-            }
-            rec.draw(
-                "combined diagram S(dS/dφ)",
-                Item::Polyline {
-                    points: ks.clone(),
-                    closed: true,
-                },
-                Role::Result,
-                &[path],
-            );
-            // O on the vertical x = −e: the highest point below every γ_min line.
-            let ox = -mu.to_mm(offset);
-            let t = gamma.tan();
-            let (mut best, mut bind) = (f64::INFINITY, 0);
-            // Under force closure only the rise's points bind.
-            let binds = |i: usize| !spec.force_closure || points[i].phase == 0;
-            for (i, k) in ks.iter().enumerate().filter(|(i, _)| binds(*i)) {
-                let y = k.y - (k.x - ox).abs() * t;
-                if y < best {
-                    best = y;
-                    bind = i;
-                }
-            }
-            let o = DVec2::new(ox, best);
-            zone_lines(&mut rec, &ks, o, gamma, bind);
-            let bound: Vec<DVec2> = ks
-                .iter()
-                .enumerate()
-                .filter(|(i, _)| binds(*i))
-                .map(|(_, k)| *k)
-                .collect();
-            hatch_zone(&mut rec, &bound, o, t);
-            let oid = rec.point(
-                "cam centre O_1",
-                o,
-                Role::Result,
-                "O_1",
-                DVec2::new(-1.0, -0.5),
-                &[],
-            );
-            let r = rec.measure(o, DVec2::ZERO);
-            rec.draw(
-                "r_min",
-                Item::Segment(Segment::new(o, DVec2::ZERO)),
-                Role::Dimension,
-                &[oid],
-            );
-            let base = spec.base_radius.unwrap_or(exact_r);
-            if base <= offset.abs() {
-                return Err(CamError::BaseWithinOffset {
-                    base,
-                    offset: offset.abs(),
-                });
-            }
-            let s0 = (base * base - offset * offset).sqrt();
-            Ok((
-                RadiusConstruction {
-                    figure: rec.finish(),
-                    graphical: r.value,
-                    exact: exact_r,
-                    convexity: None,
-                },
-                base,
-                Placement::Translating { offset, s0 },
-            ))
-        }
-        Follower::Rocker { arm, .. } => {
-            let (exact_r, o_exact) = exact::min_radius_rocker(spec).ok_or(CamError::NoCentre {
-                gamma_deg: gamma.to_degrees(),
-                searched: super::centre::REACH_ARMS * arm,
-            })?;
-            let (_, sigma) = exact::rocker_of(spec);
-            let l = mu.to_mm(arm);
-            let pivot = DVec2::ZERO;
-            let a0 = DVec2::new(0.0, l);
-            let pid = rec.draw(
-                "rocker pivot O_2",
-                Item::Joint {
-                    at: pivot,
-                    fixed: true,
-                },
-                Role::Given,
-                &[],
-            );
-            rec.label(pid, "O_2", pivot, DVec2::new(0.7, -0.7));
-            let beta_max = spec.stroke / arm;
-            rec.draw(
-                "trajectory of A",
-                Item::Arc(Arc {
-                    center: pivot,
-                    radius: l,
-                    start: FRAC_PI_2 - beta_max.max(0.0) - 0.05,
-                    sweep: 2.0 * beta_max + 0.1,
-                }),
-                Role::Construction,
-                &[pid],
-            );
-            let mut cons = Vec::new();
-            let mut ks = Vec::new();
-            for (i, p) in points.iter().enumerate() {
-                let m = read_motion(d, i);
-                let psi = FRAC_PI_2 + sigma * m.s / arm;
-                let e = DVec2::from_angle(psi);
-                let a = pivot + e * l;
-                let k = a - e * (sigma * mu.to_mm(m.ds));
-                rec.draw(
-                    format!("rocker O_2A_{i}"),
-                    Item::Segment(Segment::new(pivot, a)),
-                    Role::Construction,
-                    &[pid],
-                );
-                ks.push(k);
-                if !spec.force_closure || p.phase == 0 {
-                    cons.push((k, e));
-                }
-            }
-            rec.draw(
-                "curve of the points K",
-                Item::Polyline {
-                    points: ks.clone(),
-                    closed: true,
-                },
-                Role::Result,
-                &[],
-            );
-            let o = rocker_centre(&cons, a0, gamma).ok_or(CamError::NoCentre {
-                gamma_deg: gamma.to_degrees(),
-                searched: super::centre::REACH_ARMS * arm,
-            })?;
-            rocker_lines(&mut rec, &cons, o, gamma);
-            hatch_rocker_zone(&mut rec, &cons, o, gamma);
-            let oid = rec.point(
-                "cam centre O_1",
-                o,
-                Role::Result,
-                "O_1",
-                DVec2::new(1.0, 0.5),
-                &[],
-            );
-            rec.draw(
-                "r_min",
-                Item::Segment(Segment::new(o, a0)),
-                Role::Dimension,
-                &[oid],
-            );
-            rec.draw(
-                "centre distance",
-                Item::Segment(Segment::new(o, pivot)),
-                Role::Construction,
-                &[oid, pid],
-            );
-            let r = rec.measure(o, a0);
-            // The profile uses the exact centre (or the given base radius along its direction).
-            let dir = (o_exact - DVec2::new(0.0, arm)).normalize_or_zero();
-            let base = spec.base_radius.unwrap_or(exact_r);
-            let o_used = DVec2::new(0.0, arm) + dir * base;
-            let pivot_cam = -o_used;
-            Ok((
-                RadiusConstruction {
-                    figure: rec.finish(),
-                    graphical: r.value,
-                    exact: exact_r,
-                    convexity: None,
-                },
-                base,
-                Placement::Rocker {
-                    pivot: pivot_cam,
-                    arm,
-                    psi0: FRAC_PI_2,
-                    sigma,
-                },
-            ))
-        }
-        Follower::Flat { offset } => {
-            let (exact_r, worst) = exact::min_radius_flat(spec);
-            // S vertical, S″ horizontal, both at μ_S; the 45° tangent on the negative side.
-            let ax = s_axis(&mut rec, spec, mu, exact_r);
-            let pts = combined(d, points.len(), |m| {
-                DVec2::new(mu.to_mm(m.d2s), mu.to_mm(m.s))
-            });
-            let xs = pts.iter().fold(0.0f64, |a, p| a.max(p.x.abs()));
-            let hx = rec.draw(
-                "d²S/dφ² axis",
-                Item::Vector {
-                    from: DVec2::new(-xs - 10.0, 0.0),
-                    to: DVec2::new(xs + 12.0, 0.0),
-                },
-                Role::Axis,
-                &[],
-            );
-            rec.label(
-                hx,
-                "d^2S/dφ^2",
-                DVec2::new(xs + 12.0, 0.0),
-                DVec2::new(0.0, -1.0),
-            );
-            rec.draw(
-                "combined diagram S(d²S/dφ²)",
-                Item::Polyline {
-                    points: pts.clone(),
-                    closed: true,
-                },
-                Role::Result,
-                &[ax, hx],
-            );
-            // The 45° line touching the curve: the least S + S″ among the drawn points.
-            let (i, c) = pts
-                .iter()
-                .enumerate()
-                .map(|(i, p)| (i, p.x + p.y))
-                .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
-            let touch = pts.get(i).copied().unwrap_or(DVec2::ZERO);
-            let oi = DVec2::new(0.0, c.min(0.0));
-            rec.draw(
-                "tangent at 45°",
-                Item::Segment(Segment::new(
-                    oi + DVec2::new(-15.0, 15.0),
-                    touch + DVec2::new(15.0, -15.0),
-                )),
-                Role::Construction,
-                &[],
-            );
-            rec.point("O_I", oi, Role::Result, "O_I", DVec2::new(1.0, -0.5), &[]);
-            let rho = mu.to_mm(spec.rho_min);
-            let o = DVec2::new(mu.to_mm(offset), oi.y - rho);
-            rec.point(
-                "cam centre O′_1 (with ρ_min)",
-                o,
-                Role::Result,
-                "O′_1",
-                DVec2::new(1.0, -0.5),
-                &[],
-            );
-            let read_c = rec.measure(oi, DVec2::ZERO).value.copysign(-c);
-            let graphical = read_c.max(0.0) + spec.rho_min;
-            let base = spec.base_radius.unwrap_or(exact_r);
-            Ok((
-                RadiusConstruction {
-                    figure: rec.finish(),
-                    graphical,
-                    exact: exact_r,
-                    convexity: Some((read_c, worst)),
-                },
-                base,
-                Placement::Translating {
-                    offset: 0.0,
-                    s0: base,
-                },
-            ))
+    let (exact_r, _) = exact::min_radius_translating(spec, offset);
+    // Combined diagram: B₀ at the origin, the path vertical, K_i = B_i − (S′_i, 0).
+    let path = s_axis(rec, spec, mu, exact_r);
+    let ks = combined(d, points.len(), |m| {
+        DVec2::new(-mu.to_mm(m.ds), mu.to_mm(m.s))
+    });
+    for (i, k) in ks.iter().enumerate() {
+        let b = DVec2::new(0.0, k.y);
+        rec.draw(
+            format!("dS/dφ at point {i}"),
+            Item::Segment(Segment::new(b, *k)),
+            Role::Construction,
+            &[],
+        );
+    }
+    rec.draw(
+        "combined diagram S(dS/dφ)",
+        Item::Polyline {
+            points: ks.clone(),
+            closed: true,
+        },
+        Role::Result,
+        &[path],
+    );
+    // O on the vertical x = −e: the highest point below every γ_min line.
+    let ox = -mu.to_mm(offset);
+    let t = gamma.tan();
+    let (mut best, mut bind) = (f64::INFINITY, 0);
+    // Under force closure only the rise's points bind.
+    let binds = |i: usize| !spec.force_closure || points[i].phase == 0;
+    for (i, k) in ks.iter().enumerate().filter(|(i, _)| binds(*i)) {
+        let y = k.y - (k.x - ox).abs() * t;
+        if y < best {
+            best = y;
+            bind = i;
         }
     }
+    let o = DVec2::new(ox, best);
+    zone_lines(rec, &ks, o, gamma, bind);
+    let bound: Vec<DVec2> = ks
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| binds(*i))
+        .map(|(_, k)| *k)
+        .collect();
+    hatch_zone(rec, &bound, o, t);
+    let oid = rec.point(
+        "cam centre O_1",
+        o,
+        Role::Result,
+        "O_1",
+        DVec2::new(-1.0, -0.5),
+        &[],
+    );
+    let r = rec.measure(o, DVec2::ZERO);
+    rec.draw(
+        "r_min",
+        Item::Segment(Segment::new(o, DVec2::ZERO)),
+        Role::Dimension,
+        &[oid],
+    );
+    let base = spec.base_radius.unwrap_or(exact_r);
+    if base <= offset.abs() {
+        return Err(CamError::BaseWithinOffset {
+            base,
+            offset: offset.abs(),
+        });
+    }
+    let s0 = (base * base - offset * offset).sqrt();
+    Ok(Read {
+        graphical: r.value,
+        exact: exact_r,
+        convexity: None,
+        base,
+        placement: Placement::Translating { offset, s0 },
+    })
+}
+
+/// The rocker: dS/dφ laid along the rocker at every point, the γ_min lines through the
+/// points K and the centre below them all.
+fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamError> {
+    let Given { spec, points, d } = *given;
+    let mu = d.s_scale;
+    let gamma = spec.gamma_min;
+    let (exact_r, o_exact) = exact::min_radius_rocker(spec).ok_or(CamError::NoCentre {
+        gamma_deg: gamma.to_degrees(),
+        searched: super::centre::REACH_ARMS * arm,
+    })?;
+    let (_, sigma) = exact::rocker_of(spec);
+    let l = mu.to_mm(arm);
+    let pivot = DVec2::ZERO;
+    let a0 = DVec2::new(0.0, l);
+    let pid = rec.draw(
+        "rocker pivot O_2",
+        Item::Joint {
+            at: pivot,
+            fixed: true,
+        },
+        Role::Given,
+        &[],
+    );
+    rec.label(pid, "O_2", pivot, DVec2::new(0.7, -0.7));
+    let beta_max = spec.stroke / arm;
+    rec.draw(
+        "trajectory of A",
+        Item::Arc(Arc {
+            center: pivot,
+            radius: l,
+            start: FRAC_PI_2 - beta_max.max(0.0) - 0.05,
+            sweep: 2.0 * beta_max + 0.1,
+        }),
+        Role::Construction,
+        &[pid],
+    );
+    let mut cons = Vec::new();
+    let mut ks = Vec::new();
+    for (i, p) in points.iter().enumerate() {
+        let m = read_motion(d, i);
+        let psi = FRAC_PI_2 + sigma * m.s / arm;
+        let e = DVec2::from_angle(psi);
+        let a = pivot + e * l;
+        let k = a - e * (sigma * mu.to_mm(m.ds));
+        rec.draw(
+            format!("rocker O_2A_{i}"),
+            Item::Segment(Segment::new(pivot, a)),
+            Role::Construction,
+            &[pid],
+        );
+        ks.push(k);
+        if !spec.force_closure || p.phase == 0 {
+            cons.push((k, e));
+        }
+    }
+    rec.draw(
+        "curve of the points K",
+        Item::Polyline {
+            points: ks.clone(),
+            closed: true,
+        },
+        Role::Result,
+        &[],
+    );
+    let o = rocker_centre(&cons, a0, gamma).ok_or(CamError::NoCentre {
+        gamma_deg: gamma.to_degrees(),
+        searched: super::centre::REACH_ARMS * arm,
+    })?;
+    rocker_lines(rec, &cons, o, gamma);
+    hatch_rocker_zone(rec, &cons, o, gamma);
+    let oid = rec.point(
+        "cam centre O_1",
+        o,
+        Role::Result,
+        "O_1",
+        DVec2::new(1.0, 0.5),
+        &[],
+    );
+    rec.draw(
+        "r_min",
+        Item::Segment(Segment::new(o, a0)),
+        Role::Dimension,
+        &[oid],
+    );
+    rec.draw(
+        "centre distance",
+        Item::Segment(Segment::new(o, pivot)),
+        Role::Construction,
+        &[oid, pid],
+    );
+    let r = rec.measure(o, a0);
+    // The profile uses the exact centre (or the given base radius along its direction).
+    let dir = (o_exact - DVec2::new(0.0, arm)).normalize_or_zero();
+    let base = spec.base_radius.unwrap_or(exact_r);
+    let o_used = DVec2::new(0.0, arm) + dir * base;
+    let pivot_cam = -o_used;
+    Ok(Read {
+        graphical: r.value,
+        exact: exact_r,
+        convexity: None,
+        base,
+        placement: Placement::Rocker {
+            pivot: pivot_cam,
+            arm,
+            psi0: FRAC_PI_2,
+            sigma,
+        },
+    })
+}
+
+/// The flat face: S(d²S/dφ²) with the 45° tangent; r_min from the convexity and ρ_min.
+fn flat(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamError> {
+    let Given { spec, points, d } = *given;
+    let mu = d.s_scale;
+    let (exact_r, worst) = exact::min_radius_flat(spec);
+    // S vertical, S″ horizontal, both at μ_S; the 45° tangent on the negative side.
+    let ax = s_axis(rec, spec, mu, exact_r);
+    let pts = combined(d, points.len(), |m| {
+        DVec2::new(mu.to_mm(m.d2s), mu.to_mm(m.s))
+    });
+    let xs = pts.iter().fold(0.0f64, |a, p| a.max(p.x.abs()));
+    let hx = rec.draw(
+        "d²S/dφ² axis",
+        Item::Vector {
+            from: DVec2::new(-xs - 10.0, 0.0),
+            to: DVec2::new(xs + 12.0, 0.0),
+        },
+        Role::Axis,
+        &[],
+    );
+    rec.label(
+        hx,
+        "d^2S/dφ^2",
+        DVec2::new(xs + 12.0, 0.0),
+        DVec2::new(0.0, -1.0),
+    );
+    rec.draw(
+        "combined diagram S(d²S/dφ²)",
+        Item::Polyline {
+            points: pts.clone(),
+            closed: true,
+        },
+        Role::Result,
+        &[ax, hx],
+    );
+    // The 45° line touching the curve: the least S + S″ among the drawn points.
+    let (i, c) = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (i, p.x + p.y))
+        .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+    let touch = pts.get(i).copied().unwrap_or(DVec2::ZERO);
+    let oi = DVec2::new(0.0, c.min(0.0));
+    rec.draw(
+        "tangent at 45°",
+        Item::Segment(Segment::new(
+            oi + DVec2::new(-15.0, 15.0),
+            touch + DVec2::new(15.0, -15.0),
+        )),
+        Role::Construction,
+        &[],
+    );
+    rec.point("O_I", oi, Role::Result, "O_I", DVec2::new(1.0, -0.5), &[]);
+    let rho = mu.to_mm(spec.rho_min);
+    let o = DVec2::new(mu.to_mm(offset), oi.y - rho);
+    rec.point(
+        "cam centre O′_1 (with ρ_min)",
+        o,
+        Role::Result,
+        "O′_1",
+        DVec2::new(1.0, -0.5),
+        &[],
+    );
+    let read_c = rec.measure(oi, DVec2::ZERO).value.copysign(-c);
+    let graphical = read_c.max(0.0) + spec.rho_min;
+    let base = spec.base_radius.unwrap_or(exact_r);
+    Ok(Read {
+        graphical,
+        exact: exact_r,
+        convexity: Some((read_c, worst)),
+        base,
+        placement: Placement::Translating {
+            offset: 0.0,
+            s0: base,
+        },
+    })
 }
 
 /// The S axis of a combined diagram: from below the centre (r_min under B₀) to above the

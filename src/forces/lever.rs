@@ -8,10 +8,9 @@
 use super::loads::Load;
 use super::spec::Drive;
 use super::twin::line_of_action;
-use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::construct::{Figure, Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
-use crate::linkage::{Built, KinPlan, Program};
-use crate::scale::Scale;
+use crate::linkage::{Built, KinPlan, PlanSetup};
 
 /// Length of a force's arrow on the lever, mm.
 const ARROW_MM: f64 = 12.0;
@@ -44,20 +43,11 @@ fn turn(v: DVec2) -> DVec2 {
     DVec2::new(v.y, -v.x)
 }
 
-/// Build the lever from the velocity plan `vp` of the position `b` (at μ_l) and its loads.
-#[allow(clippy::too_many_arguments)]
-pub fn lever(
-    prog: &Program,
-    b: &Built,
-    mu_l: Scale,
-    vp: &KinPlan,
-    loads: &[Load],
-    drive: &Drive,
-    w1: f64,
-    ctx: &Context,
-) -> Lever {
+/// Build the lever from the velocity plan `vp` of the position `setup` and its loads.
+pub fn lever(setup: &PlanSetup<'_>, vp: &KinPlan, loads: &[Load], drive: &Drive) -> Lever {
+    let (prog, b, w1) = (setup.prog, setup.built, setup.w1);
     let mu_v = vp.figure.scale;
-    let mut rec = Recorder::in_context("Zhukovsky's lever", mu_v, ctx);
+    let mut rec = Recorder::in_context("Zhukovsky's lever", mu_v, &setup.ctx);
     let pole = rec.pole("p");
     // The turned plan: a ray from the pole to every point's image.
     for k in prog.fixed.len()..prog.names.len() {
@@ -109,7 +99,7 @@ pub fn lever(
         // Moment about the pole in plan mm × N, turned into power with μ_v.
         x.perp_dot(e).signum() * f.length() * arm.value
     };
-    let mu = mu_l.value();
+    let mu = setup.mu_l.value();
     let mut power = 0.0;
     for l in loads {
         if l.is_couple() {

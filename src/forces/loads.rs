@@ -2,7 +2,7 @@
 //! moments −I_S·ε and the working resistance in its stroke, from the motion of the position
 //! as one route knows it (the plans, or the analytic twin).
 
-use super::spec::{Action, ForceSpec, Stroke};
+use super::spec::{Action, ForceSpec};
 use super::ForceError;
 use crate::geom::DVec2;
 use crate::linkage::{Op, PDyad, Pose, Program};
@@ -118,13 +118,12 @@ pub fn loads(
     phase: Phase,
 ) -> Result<Vec<Load>, ForceError> {
     let mut out = Vec::new();
-    let down = DVec2::from_angle(spec.gravity_dir);
     for lm in &spec.links {
         let l = lm.link as usize;
         let s = point_on(prog, &lm.centre, l)?;
         let sub = l.to_string();
         if lm.mass > 0.0 {
-            let g = down * (lm.mass * spec.g);
+            let g = spec.weight(lm.mass);
             out.push(Load::force(
                 l,
                 LoadKind::Weight,
@@ -144,15 +143,7 @@ pub fn loads(
             out.push(Load::couple(l, LoadKind::InertiaMoment, name, m));
         }
     }
-    for r in &spec.resistances {
-        let acts = match r.stroke {
-            Stroke::Always => true,
-            Stroke::Working => phase == Some(true),
-            Stroke::Return => phase == Some(false),
-        };
-        if !acts {
-            continue;
-        }
+    for r in spec.acting(phase) {
         match &r.action {
             Action::Force {
                 point,

@@ -41,21 +41,20 @@ pub use twin::{Equilibrium, Pair, PairKind, Reaction};
 use crate::check::{Method, Row, Symbol};
 use crate::construct::{ConstructionError, Context};
 use crate::geom::DVec2;
-use crate::linkage::{KinPlan, PositionPlan};
+use crate::linkage::{KinPlan, PlanSetup, PositionPlan};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
 /// Preferred length of the largest force on a polygon, mm.
 pub const POLYGON_MM: f64 = 100.0;
 
-/// One position's force analysis.
+/// What every analysis of a position gives, without and with friction in the pairs: the
+/// loads, the polygons, the lever and the twin.
 #[derive(Debug, Clone, PartialEq)]
-pub struct PositionForces {
-    /// The position's label.
-    pub label: String,
-    /// The loads as the plans give them.
+pub struct Analysis {
+    /// The loads as the plans give them (with friction: the friction loads).
     pub loads: Vec<Load>,
-    /// The loads as the analytic twin gives them.
+    /// The loads as the analytic twin gives them (with friction: the friction loads).
     pub loads_exact: Vec<Load>,
     /// The polygons.
     pub polygons: Polygons,
@@ -63,8 +62,19 @@ pub struct PositionForces {
     pub lever: lever::Lever,
     /// The analytic twin.
     pub twin: Equilibrium,
-    /// The balancing moment from the power balance, N·m.
+    /// The balancing moment from the power balance (with friction: with the friction's
+    /// power), N·m.
     pub m_power: f64,
+}
+
+/// One position's force analysis: the frictionless [`Analysis`] (its fields read through
+/// `Deref`, `f.polygons`), μ_F, the sliders and the analysis with friction.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PositionForces {
+    /// The position's label.
+    pub label: String,
+    /// The frictionless analysis.
+    pub analysis: Analysis,
     /// μ_F of the polygons.
     pub scale_f: Scale,
     /// The guides' reactions on sliders of known length, by the twin.
@@ -113,27 +123,32 @@ impl PositionForces {
     }
 }
 
+impl std::ops::Deref for PositionForces {
+    type Target = Analysis;
+    fn deref(&self) -> &Analysis {
+        &self.analysis
+    }
+}
+
 /// One position's force analysis with friction in the pairs ([`pair_friction`]): the
-/// polygons, the lever and the twin of the loads plus the friction loads, settled with
-/// the friction equations solved for the friction loads ([`pair_friction::settle`]).
+/// polygons, the lever and the twin of the loads plus the friction loads (its
+/// [`Analysis`], read through `Deref`), settled with the friction equations solved for the
+/// friction loads ([`pair_friction::settle`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct WithFriction {
-    /// The friction loads as the polygons give them.
-    pub loads: Vec<Load>,
-    /// The friction loads as the twin gives them.
-    pub loads_exact: Vec<Load>,
-    /// The polygons.
-    pub polygons: Polygons,
-    /// Zhukovsky's lever.
-    pub lever: lever::Lever,
-    /// The twin.
-    pub twin: Equilibrium,
-    /// The balancing moment from the power balance with the friction's power, N·m.
-    pub m_power: f64,
+    /// The analysis with the friction loads.
+    pub analysis: Analysis,
     /// The power lost in the pairs (the twin's), W, ≤ 0.
     pub lost: f64,
     /// The analyses the polygons and the twin took to settle the friction.
     pub approximations: [usize; 2],
+}
+
+impl std::ops::Deref for WithFriction {
+    type Target = Analysis;
+    fn deref(&self) -> &Analysis {
+        &self.analysis
+    }
 }
 
 /// Where a guide's reaction acts on a slider of known length (seed 001 §7.2, Fig. 28): when
@@ -244,16 +259,18 @@ pub fn analyse(
             .ok_or(ForceError::NoScale(twin.largest()))?,
     };
     let board = polygons::Board {
-        prog,
-        built: &pos.built,
-        mu_l,
+        setup: PlanSetup {
+            prog,
+            built: &pos.built,
+            mu_l,
+            w1,
+            ctx: *ctx,
+        },
         mu_f: scale_f,
-        ctx: *ctx,
-        sense,
     };
     let polygons = polygons::polygons(&board, &loads, &spec.drive)
         .map_err(|e| polygon_error(&pos.label, e))?;
-    let lever = lever::lever(prog, &pos.built, mu_l, vp, &loads, &spec.drive, w1, ctx);
+    let lever = lever::lever(&board.setup, vp, &loads, &spec.drive);
     let friction = match &spec.friction {
         Some(fr) => {
             let route = Route {
@@ -264,23 +281,24 @@ pub fn analyse(
                 exact: &exact,
                 loads: &loads,
                 loads_exact: &loads_exact,
-                w1,
                 label: &pos.label,
             };
             Some(Box::new(with_friction(spec, fr, &route)?))
         }
         None => None,
     };
-    let mut rows = rows(&pos.label, &loads, &loads_exact);
-    rows.extend(reaction_rows(&pos.label, "", &polygons, &lever, &twin));
+    let analysis = Analysis {
+        loads,
+        loads_exact,
+        polygons,
+        lever,
+        twin,
+        m_power,
+    };
+    let mut rows = rows(&pos.label, &analysis.loads, &analysis.loads_exact);
+    rows.extend(reaction_rows(&pos.label, "", &analysis));
     if let Some(f) = &friction {
-        rows.extend(reaction_rows(
-            &pos.label,
-            "_f",
-            &f.polygons,
-            &f.lever,
-            &f.twin,
-        ));
+        rows.extend(reaction_rows(&pos.label, "_f", f));
     }
     let size = pos
         .pose
@@ -307,47 +325,32 @@ pub fn analyse(
             dir: &pos.pose.dir,
             ..drawn_state
         };
-        let of = |state: &residual::State<'_>, reactions: &[Reaction], m_bal, f_bal, fr| {
-            let reported = residual::Reported {
-                reactions,
-                m_bal,
-                f_bal,
+        let of = |a: &Analysis, fr: Option<&pair_friction::PairFriction>| {
+            let driver = &a.polygons.driver;
+            let graphical = residual::Reported {
+                reactions: &a.polygons.reactions(),
+                m_bal: driver.m_bal,
+                f_bal: driver.f_bal,
             };
-            residual::residual(spec, prog, state, &reported, fr)
+            let analytic = residual::Reported {
+                reactions: &a.twin.reactions,
+                m_bal: a.twin.m_bal,
+                f_bal: a.twin.f_bal,
+            };
+            Residual {
+                friction: fr.is_some(),
+                polygons: residual::residual(spec, prog, &drawn_state, &graphical, fr),
+                twin: residual::residual(spec, prog, &exact_state, &analytic, fr),
+            }
         };
-        let mut v = vec![Residual {
-            friction: false,
-            polygons: of(
-                &drawn_state,
-                &polygons.reactions(),
-                polygons.driver.m_bal,
-                polygons.driver.f_bal,
-                None,
-            ),
-            twin: of(&exact_state, &twin.reactions, twin.m_bal, twin.f_bal, None),
-        }];
+        let mut v = vec![of(&analysis, None)];
         if let (Some(w), Some(fr)) = (&friction, &spec.friction) {
-            v.push(Residual {
-                friction: true,
-                polygons: of(
-                    &drawn_state,
-                    &w.polygons.reactions(),
-                    w.polygons.driver.m_bal,
-                    w.polygons.driver.f_bal,
-                    Some(fr),
-                ),
-                twin: of(
-                    &exact_state,
-                    &w.twin.reactions,
-                    w.twin.m_bal,
-                    w.twin.f_bal,
-                    Some(fr),
-                ),
-            });
+            v.push(of(w, Some(fr)));
         }
         v
     };
-    let sliders = twin
+    let sliders = analysis
+        .twin
         .reactions
         .iter()
         .filter_map(|r| {
@@ -367,12 +370,7 @@ pub fn analyse(
         .collect();
     Ok(PositionForces {
         label: pos.label.clone(),
-        loads,
-        loads_exact,
-        polygons,
-        lever,
-        twin,
-        m_power,
+        analysis,
         scale_f,
         sliders,
         sense,
@@ -392,7 +390,6 @@ struct Route<'a> {
     exact: &'a Motion,
     loads: &'a [Load],
     loads_exact: &'a [Load],
-    w1: f64,
     label: &'a str,
 }
 
@@ -406,8 +403,9 @@ fn with_friction(
 ) -> Result<WithFriction, ForceError> {
     use pair_friction::{friction_loads_of, friction_power, settle, Kinematics};
     let board = route.board;
-    let prog = board.prog;
-    let sense = route.w1.signum();
+    let prog = board.setup.prog;
+    let w1 = board.setup.w1;
+    let sense = w1.signum();
     let pose = route.pose;
     let label = format!("{} with friction", route.label);
     let exact = Kinematics {
@@ -437,15 +435,16 @@ fn with_friction(
     let drawn = Kinematics {
         prog,
         dir: board
+            .setup
             .built
             .angle
             .iter()
             .map(|a| DVec2::from_angle(*a))
             .collect(),
-        origin: &board.built.origin,
+        origin: &board.setup.built.origin,
         motion: route.drawn,
     };
-    let resolution = board.ctx.drafting.resolution_mm() * board.mu_f.value();
+    let resolution = board.setup.ctx.drafting.resolution_mm() * board.mu_f.value();
     let polygons = settle(
         &on("the force polygons", 2.0 * resolution),
         route.loads,
@@ -454,24 +453,17 @@ fn with_friction(
         |r, m| friction_loads_of(fr, &drawn, r, m),
     )?;
     let all: Vec<Load> = route.loads.iter().chain(&polygons.loads).cloned().collect();
-    let lever = lever::lever(
-        prog,
-        board.built,
-        board.mu_l,
-        route.vp,
-        &all,
-        &spec.drive,
-        route.w1,
-        &board.ctx,
-    );
+    let lever = lever::lever(&board.setup, route.vp, &all, &spec.drive);
     let lost = friction_power(&twin.loads, &exact);
     Ok(WithFriction {
-        m_power: twin::power_balance(route.loads_exact, route.exact, route.w1) - lost / route.w1,
-        loads: polygons.loads,
-        loads_exact: twin.loads,
-        polygons: polygons.solution,
-        lever,
-        twin: twin.solution,
+        analysis: Analysis {
+            m_power: twin::power_balance(route.loads_exact, route.exact, w1) - lost / w1,
+            loads: polygons.loads,
+            loads_exact: twin.loads,
+            polygons: polygons.solution,
+            lever,
+            twin: twin.solution,
+        },
         lost,
         approximations: [polygons.solves, twin.solves],
     })

@@ -5,10 +5,14 @@
 //! friction in the pairs from the reported reactions, the tooth force on its flank. A wrong
 //! decision made once and consumed by both the polygons and the linear solve (a load put on
 //! the wrong link) leaves their rows equal, but not this residual.
+//!
+//! Only pure facts of the scene's data are shared with the solve, never a decision:
+//! [`ForceSpec::weight`] (m·g along gravity) and [`ForceSpec::acting`] (the resistances that
+//! act on a position's stroke).
 
 use super::loads::{Motion, Phase};
 use super::pair_friction::PairFriction;
-use super::spec::{Action, Drive, ForceSpec, Stroke};
+use super::spec::{Action, Drive, ForceSpec};
 use super::twin::{line_of_action, PairKind, Reaction};
 use crate::geom::DVec2;
 use crate::linkage::{Op, PDyad, Program};
@@ -69,23 +73,17 @@ pub fn residual(
         })
     };
     // Weights at the centres of mass.
-    let down = DVec2::from_angle(spec.gravity_dir);
     for lm in &spec.links {
         if let Some(s) = prog.index(&lm.centre) {
-            force(lm.link as usize, down * (lm.mass * spec.g), at(s));
+            force(lm.link as usize, spec.weight(lm.mass), at(s));
         }
     }
     // The working resistances: forces on their carrying link, moments against ω.
     let mut couples: Vec<(usize, f64)> = Vec::new();
-    for r in &spec.resistances {
-        let acts = match r.stroke {
-            Stroke::Always => true,
-            Stroke::Working => state.phase == Some(true),
-            Stroke::Return => state.phase == Some(false),
-        };
-        if !acts {
-            continue;
-        }
+    // The same destructuring of a resistance as `loads::loads`, and the same selection
+    // (`ForceSpec::acting`, a fact of the scene): which link carries it and where it points
+    // are decided again here.
+    for r in spec.acting(state.phase) {
         match &r.action {
             Action::Force {
                 point,

@@ -1,7 +1,7 @@
 //! The rows of a force analysis (graphical against analytic, zero references against the
 //! mechanism's size) and its notes.
 
-use super::{lever, Equilibrium, Load, LoadKind, Polygons, PositionForces, SeedValue};
+use super::{Analysis, Load, LoadKind, PositionForces, SeedValue};
 use crate::check::{Key, Method, Row, Symbol};
 
 /// A row of position `label` (its zero reference set by [`zero_references`]).
@@ -45,13 +45,8 @@ pub(super) fn rows(label: &str, loads: &[Load], exact: &[Load]) -> Vec<Row> {
 
 /// The reactions and their points (polygons), the balancing moment and force (polygons and
 /// lever) of one position; `suffix` marks the analysis with friction (`_f`).
-pub(super) fn reaction_rows(
-    label: &str,
-    suffix: &str,
-    polygons: &Polygons,
-    lever: &lever::Lever,
-    twin: &Equilibrium,
-) -> Vec<Row> {
+pub(super) fn reaction_rows(label: &str, suffix: &str, analysis: &Analysis) -> Vec<Row> {
+    let (polygons, lever, twin) = (&analysis.polygons, &analysis.lever, &analysis.twin);
     let mut rows = Vec::new();
     let mut push = |symbol: Symbol, subject: String, method: Method, g: f64, a: f64| {
         rows.push(row(

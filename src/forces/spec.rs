@@ -2,6 +2,7 @@
 //! moments of inertia of the links, gravity, the working resistance with the stroke it acts
 //! on, the drive of the crank and the positions to analyse. SI units.
 
+use crate::geom::DVec2;
 use crate::scale::Scale;
 
 /// Standard gravity, m/s².
@@ -33,6 +34,19 @@ pub enum Stroke {
     Return,
     /// At every position.
     Always,
+}
+
+impl Stroke {
+    /// Whether a resistance on this stroke acts at a position of `phase` (the
+    /// [`Phase`](super::loads::Phase) of the position: `Some(true)` working, `Some(false)`
+    /// return, `None` at an extreme).
+    pub fn acts(self, phase: Option<bool>) -> bool {
+        match self {
+            Stroke::Always => true,
+            Stroke::Working => phase == Some(true),
+            Stroke::Return => phase == Some(false),
+        }
+    }
 }
 
 /// What a resistance is.
@@ -128,6 +142,20 @@ pub struct ForceSpec {
     pub friction: Option<PairFriction>,
     /// The seed's printed values to compare with (`[[forces.seed]]`).
     pub seed: Vec<SeedValue>,
+}
+
+impl ForceSpec {
+    /// The resistances that act at a position of `phase` ([`Stroke::acts`]).
+    pub fn acting(&self, phase: Option<bool>) -> impl Iterator<Item = &Resistance> {
+        self.resistances
+            .iter()
+            .filter(move |r| r.stroke.acts(phase))
+    }
+
+    /// The weight of a mass `m` (kg) as a vector, N: m·g along the scene's gravity.
+    pub fn weight(&self, m: f64) -> DVec2 {
+        DVec2::from_angle(self.gravity_dir) * (m * self.g)
+    }
 }
 
 /// A value the seed prints for a row of the report (`[[forces.seed]]`): the report notes

@@ -87,7 +87,7 @@ fn case(m: &Mechanism, phi: f64, spec: &ForceSpec) -> Result<Case, TestCaseError
     let setup = PlanSetup {
         prog: &prog,
         built: &built,
-        mu_l: mu_l.value(),
+        mu_l,
         w1: W1,
         ctx: plan_context(),
     };
@@ -130,12 +130,43 @@ fn case(m: &Mechanism, phi: f64, spec: &ForceSpec) -> Result<Case, TestCaseError
 impl Case {
     fn board(&self) -> Board<'_> {
         Board {
-            prog: &self.prog,
-            built: &self.built,
-            mu_l: self.mu_l,
+            setup: PlanSetup {
+                prog: &self.prog,
+                built: &self.built,
+                mu_l: self.mu_l,
+                w1: W1,
+                ctx: plan_context(),
+            },
             mu_f: self.mu_f,
-            ctx: plan_context(),
-            sense: W1.signum(),
+        }
+    }
+
+    /// The position with friction in the pairs; a self-locking or singular position is
+    /// rejected.
+    fn with_friction(
+        &self,
+        spec: &ForceSpec,
+        fr: &super::pair_friction::PairFriction,
+    ) -> Result<WithFriction, TestCaseError> {
+        let board = self.board();
+        let route = Route {
+            board: &board,
+            vp: &self.vp,
+            pose: &self.pose,
+            drawn: &self.drawn,
+            exact: &self.exact,
+            loads: &self.lg,
+            loads_exact: &self.le,
+            label: "1",
+        };
+        match with_friction(spec, fr, &route) {
+            Ok(w) => Ok(w),
+            Err(
+                ForceError::SelfLocking { .. }
+                | ForceError::Singular
+                | ForceError::SingularAt { .. },
+            ) => Err(TestCaseError::reject("self-locking")),
+            Err(e) => Err(TestCaseError::fail(e.to_string())),
         }
     }
 }
@@ -150,16 +181,8 @@ fn analyse_random(
     let power = power_balance(&c.le, &c.exact, W1);
     let pol = polygons(&c.board(), &c.lg, &spec.drive)
         .map_err(|(g, e)| TestCaseError::fail(format!("group {g}: {e}")))?;
-    let lev = lever::lever(
-        &c.prog,
-        &c.built,
-        c.mu_l,
-        &c.vp,
-        &c.lg,
-        &spec.drive,
-        W1,
-        &plan_context(),
-    );
+    let board = c.board();
+    let lev = lever::lever(&board.setup, &c.vp, &c.lg, &spec.drive);
     Ok((c.twin, pol, lev, power))
 }
 
@@ -241,18 +264,7 @@ proptest! {
         let fr = PairFriction { f, radius, radii: Vec::new() };
         spec.friction = Some(fr.clone());
         let c = case(&m, phi, &spec)?;
-        let board = c.board();
-        let route = Route {
-            board: &board, vp: &c.vp, pose: &c.pose, drawn: &c.drawn, exact: &c.exact,
-            loads: &c.lg, loads_exact: &c.le, w1: W1, label: "1",
-        };
-        let w = match with_friction(&spec, &fr, &route) {
-            Ok(w) => w,
-            Err(ForceError::SelfLocking { .. } | ForceError::SingularAt { .. }) => {
-                return Err(TestCaseError::reject("self-locking"));
-            }
-            Err(e) => return Err(TestCaseError::fail(e.to_string())),
-        };
+        let w = c.with_friction(&spec, &fr)?;
         let big = w.twin.largest();
         for g in w.polygons.reactions() {
             let t = w.twin.reaction(g.pair.from, g.pair.to).expect("the same pair in the twin");
@@ -391,18 +403,7 @@ proptest! {
         if let Some((f, radius)) = friction {
             let fr = PairFriction { f, radius, radii: Vec::new() };
             spec.friction = Some(fr.clone());
-            let board = c.board();
-            let route = Route {
-                board: &board, vp: &c.vp, pose: &c.pose, drawn: &c.drawn, exact: &c.exact,
-                loads: &c.lg, loads_exact: &c.le, w1: W1, label: "1",
-            };
-            let w = match with_friction(&spec, &fr, &route) {
-                Ok(w) => w,
-                Err(ForceError::SelfLocking { .. } | ForceError::Singular | ForceError::SingularAt { .. }) => {
-                    return Err(TestCaseError::reject("self-locking"));
-                }
-                Err(e) => return Err(TestCaseError::fail(e.to_string())),
-            };
+            let w = c.with_friction(&spec, &fr)?;
             let t = residual_of(&spec, &c, false, reported(&w.twin.reactions, w.twin.m_bal, w.twin.f_bal));
             prop_assert!(t <= REL, "twin residual with friction {t}");
             let r = w.polygons.reactions();

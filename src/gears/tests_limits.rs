@@ -175,25 +175,43 @@ fn wheel(name: &str, z: f64, shaft: usize) -> train::Wheel {
     }
 }
 
+/// A train on fixed axes (no carrier) of module 1 mm: `shafts`, `wheels` on them, `meshes`,
+/// `(input, output)` wheels and the `fixed` shaft.
+fn fixed_axes(
+    shafts: &[&str],
+    wheels: Vec<train::Wheel>,
+    meshes: Vec<Mesh>,
+    (input, output): (usize, usize),
+    fixed: Option<usize>,
+) -> Train {
+    Train {
+        shafts: shafts.iter().map(|s| s.to_string()).collect(),
+        wheels,
+        meshes,
+        input,
+        output,
+        fixed,
+        carrier: None,
+        satellites: vec![],
+        module: 0.001,
+    }
+}
+
 #[test]
 fn a_locked_input_and_free_links_are_told_apart() {
     // 1–2, 2'–3 with 3 fixed: 2 and then 1 are held at rest; 4 meshes nothing.
-    let locked = Train {
-        shafts: ["1", "2", "3", "4"].map(String::from).to_vec(),
-        wheels: vec![
+    let locked = fixed_axes(
+        &["1", "2", "3", "4"],
+        vec![
             wheel("1", 20.0, 0),
             wheel("2", 40.0, 1),
             wheel("2'", 20.0, 1),
             wheel("3", 30.0, 2),
         ],
-        meshes: vec![Mesh(0, 1), Mesh(2, 3)],
-        input: 0,
-        output: 3,
-        fixed: Some(2),
-        carrier: None,
-        satellites: vec![],
-        module: 0.001,
-    };
+        vec![Mesh(0, 1), Mesh(2, 3)],
+        (0, 3),
+        Some(2),
+    );
     match locked.willis() {
         Err(TrainError::InputLocked { input, moving }) => {
             assert_eq!(input, "1");
@@ -202,9 +220,9 @@ fn a_locked_input_and_free_links_are_told_apart() {
         other => panic!("{other:?}"),
     }
     // 1–2 twice at the same ratio (a dependent relation); 3–4 mesh apart from them.
-    let free = Train {
-        shafts: ["1", "2", "3", "4"].map(String::from).to_vec(),
-        wheels: vec![
+    let free = fixed_axes(
+        &["1", "2", "3", "4"],
+        vec![
             wheel("1", 20.0, 0),
             wheel("2", 40.0, 1),
             wheel("1'", 30.0, 0),
@@ -212,14 +230,10 @@ fn a_locked_input_and_free_links_are_told_apart() {
             wheel("3", 20.0, 2),
             wheel("4", 25.0, 3),
         ],
-        meshes: vec![Mesh(0, 1), Mesh(2, 3), Mesh(4, 5)],
-        input: 0,
-        output: 1,
-        fixed: None,
-        carrier: None,
-        satellites: vec![],
-        module: 0.001,
-    };
+        vec![Mesh(0, 1), Mesh(2, 3), Mesh(4, 5)],
+        (0, 1),
+        None,
+    );
     match free.willis() {
         Err(TrainError::Free(shafts)) => assert_eq!(shafts, vec!["3", "4"]),
         other => panic!("{other:?}"),
@@ -229,17 +243,13 @@ fn a_locked_input_and_free_links_are_told_apart() {
 #[test]
 fn a_drafting_that_reads_the_output_as_zero_is_named() {
     // 1 (z = 20) into 2 (z = 80): ω₂ = ω₁/4.
-    let t = Train {
-        shafts: ["1", "2"].map(String::from).to_vec(),
-        wheels: vec![wheel("1", 20.0, 0), wheel("2", 80.0, 1)],
-        meshes: vec![Mesh(0, 1)],
-        input: 0,
-        output: 1,
-        fixed: None,
-        carrier: None,
-        satellites: vec![],
-        module: 0.001,
-    };
+    let t = fixed_axes(
+        &["1", "2"],
+        vec![wheel("1", 20.0, 0), wheel("2", 80.0, 1)],
+        vec![Mesh(0, 1)],
+        (0, 1),
+        None,
+    );
     let at = |d: f64| {
         let ctx = Context::for_model_size(400.0, Drafting::new(d).unwrap()).unwrap();
         crate::gears::triangles::triangles(&t, &ctx)

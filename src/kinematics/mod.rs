@@ -71,6 +71,9 @@ pub enum KinError {
     /// The positions cannot be constructed.
     #[error(transparent)]
     Linkage(#[from] LinkageError),
+    /// μ_l of the plans is not a scale (finite and > 0).
+    #[error("μ_l = {0} m/mm is not a scale")]
+    NoLengthScale(f64),
     /// A plan cannot be constructed at a position.
     #[error("position {position}: {} plan, group {group}: {error}", kind_name(*.kind))]
     Plan {

@@ -8,7 +8,7 @@ use crate::geom::DVec2;
 use crate::linkage::{
     kin_plan, plain, KinPlan, Measure, PlanKind, PlanPoses, PlanSetup, Pose, PositionPlan,
 };
-use crate::scale::Scale;
+use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
 /// A velocity plan at one position: built, or refused where it does not exist.
@@ -56,7 +56,7 @@ fn setup<'a>(
     Ok(PlanSetup {
         prog: &plan.program,
         built: &pos.built,
-        mu_l,
+        mu_l: Scale::new(mu_l, Quantity::Length).ok_or(KinError::NoLengthScale(mu_l))?,
         w1,
         ctx: *ctx,
     })

@@ -7,6 +7,9 @@ use crate::construct::{Compass, ConstructionError, Item, Pick, Recorder, Role, S
 use crate::geom::{rotate, Arc, DVec2, Line, Segment};
 
 /// One constructed position, in drawing mm.
+///
+/// It mirrors the analytic twin's [`Pose`](super::Pose) field for field on purpose: the
+/// drawing and the twin answer the same questions, in drawing mm here and in metres there.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Built {
     /// Crank angle φ₁, radians.

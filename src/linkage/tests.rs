@@ -259,7 +259,7 @@ fn plans_equal_analytic_for_every_kind() {
             let setup = PlanSetup {
                 prog: &prog,
                 built: &built,
-                mu_l,
+                mu_l: Scale::new(mu_l, Quantity::Length).unwrap(),
                 w1,
                 ctx: crate::linkage::proptests::plan_context(),
             };

@@ -58,31 +58,28 @@ pub enum PlateKind {
 }
 
 impl PlateKind {
+    /// The plate's file stem and the scene section it draws from: one table for
+    /// [`PlateKind::stem`] and [`PlateKind::section`].
+    fn names(self) -> (&'static str, &'static str) {
+        match self {
+            PlateKind::Positions => ("positions", "mechanism"),
+            PlateKind::Kinematics => ("kinematics", "mechanism"),
+            PlateKind::Forces => ("forces", "forces"),
+            PlateKind::Balancing => ("balancing", "balancing"),
+            PlateKind::Friction => ("friction", "friction"),
+            PlateKind::Dynamics => ("dynamics", "dynamics"),
+            PlateKind::Gears => ("gears", "gears"),
+            PlateKind::Cam => ("cam", "cam"),
+        }
+    }
     /// File stem of the plate (`positions`).
     pub fn stem(self) -> &'static str {
-        match self {
-            PlateKind::Positions => "positions",
-            PlateKind::Kinematics => "kinematics",
-            PlateKind::Forces => "forces",
-            PlateKind::Balancing => "balancing",
-            PlateKind::Friction => "friction",
-            PlateKind::Dynamics => "dynamics",
-            PlateKind::Gears => "gears",
-            PlateKind::Cam => "cam",
-        }
+        self.names().0
     }
     /// The scene section a plate of this kind draws from (`mechanism`, `forces`,
     /// `balancing`, `friction`, `dynamics`, `gears`, `cam`).
     pub fn section(self) -> &'static str {
-        match self {
-            PlateKind::Positions | PlateKind::Kinematics => "mechanism",
-            PlateKind::Forces => "forces",
-            PlateKind::Balancing => "balancing",
-            PlateKind::Friction => "friction",
-            PlateKind::Dynamics => "dynamics",
-            PlateKind::Gears => "gears",
-            PlateKind::Cam => "cam",
-        }
+        self.names().1
     }
     /// All kinds, for `tmm list`.
     pub const ALL: [PlateKind; 8] = [

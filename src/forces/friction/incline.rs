@@ -5,13 +5,12 @@
 
 use super::draw::{angle_mark, arrow, cone, triangle, turned, Triangle};
 use super::{
-    choose_scale, friction_angle, reading, schematic, subject, Drawing, DrawingKind, FrictionCase,
-    FrictionError, Incline, Motion, Reading, Solved, POLYGON_MM,
+    friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Incline,
+    Motion, Reading, Solved,
 };
 use crate::check::Symbol;
 use crate::construct::{ConstructionError, Context, Item, Recorder, Role};
 use crate::geom::{DVec2, Segment, Side};
-use crate::scale::Quantity;
 
 /// The smallest angle, degrees, between the lines of P and R that still closes a triangle a
 /// hand can draw; below it P would exceed ~29 Q and the motion is refused.
@@ -101,7 +100,7 @@ pub(super) fn scheme(
     ctx: &Context,
 ) -> Result<(Drawing, f64), FrictionError> {
     let u = DVec2::from_angle(c.alpha);
-    let mut rec = Recorder::in_context(&case.name, schematic(&case.name)?, ctx);
+    let mut rec = case.schematic_recorder(ctx)?;
     let foot = -u * 32.0;
     rec.draw(
         "the inclined plane",
@@ -195,14 +194,7 @@ pub(super) fn polygon(
     let largest = [c.load, twin.p, twin.r, twin.p0, twin.r0]
         .into_iter()
         .fold(0.0f64, |m, x| m.max(x.abs()));
-    let mu = choose_scale(
-        &case.name,
-        case.scale_f,
-        largest,
-        POLYGON_MM,
-        Quantity::Force,
-    )?;
-    let mut rec = Recorder::in_context(&case.name, mu, ctx);
+    let mut rec = case.force_recorder(largest, ctx)?;
     let (p_dir, r_dir, u) = directions(c, twin.phi);
     let q = DVec2::new(0.0, -c.load);
     let with = triangle(

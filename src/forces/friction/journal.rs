@@ -6,13 +6,12 @@
 
 use super::draw::{angle_mark, arrow, thin_line, turned};
 use super::{
-    choose_scale, friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase,
-    FrictionError, Journal, Solved,
+    friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Journal,
+    Solved,
 };
 use crate::check::Symbol;
-use crate::construct::{Compass, ConstructionError, Context, Item, Pick, Recorder, Role};
+use crate::construct::{Compass, ConstructionError, Context, Item, Pick, Role};
 use crate::geom::{Arc, Circle, DVec2, Line, Segment};
-use crate::scale::Quantity;
 use std::f64::consts::PI;
 
 /// Preferred drawn radius of the journal, mm.
@@ -54,8 +53,8 @@ pub(super) fn solve(
     wrap: &dyn Fn(ConstructionError) -> FrictionError,
 ) -> Result<Solved, FrictionError> {
     let twin = journal_twin(c);
-    let mu = choose_scale(&case.name, None, c.radius, RADIUS_MM, Quantity::Length)?;
-    let mut rec = Recorder::in_context(&case.name, mu, ctx);
+    let mut rec = case.scheme_recorder(c.radius, RADIUS_MM, ctx)?;
+    let mu = rec.scale();
     let r = mu.to_mm(c.radius);
     let o = DVec2::ZERO;
     let centre = rec.draw(

@@ -35,7 +35,7 @@ pub use screw::{screw_twin, ScrewTwin};
 pub use wedge::{wedge_twin, WedgeTwin};
 
 use crate::check::{Key, Method, Row, Symbol};
-use crate::construct::{ConstructionError, Context, Figure};
+use crate::construct::{ConstructionError, Context, Figure, Recorder};
 use crate::geom::{DVec2, Line};
 use crate::scale::Scale;
 use thiserror::Error;
@@ -410,8 +410,45 @@ pub(crate) fn subject(what: &str, case: &str) -> String {
     }
 }
 
-/// The nominal μ of a schematic drawing (1 mm per mm: its lengths mean nothing, only its
-/// angles and ratios are read).
-pub(crate) fn schematic(case: &str) -> Result<Scale, FrictionError> {
-    choose_scale(case, None, 1.0, 1000.0, crate::scale::Quantity::Length)
+impl FrictionCase {
+    /// The recorder of one of the case's force triangles: at the scene's μ_F, or the round
+    /// one that draws `largest` (N) about [`POLYGON_MM`].
+    pub(crate) fn force_recorder(
+        &self,
+        largest: f64,
+        ctx: &Context,
+    ) -> Result<Recorder, FrictionError> {
+        let mu = choose_scale(
+            &self.name,
+            self.scale_f,
+            largest,
+            POLYGON_MM,
+            crate::scale::Quantity::Force,
+        )?;
+        Ok(Recorder::in_context(&self.name, mu, ctx))
+    }
+
+    /// The recorder of one of the case's schemes: at the round μ_l that draws `largest` (m)
+    /// about `preferred_mm`.
+    pub(crate) fn scheme_recorder(
+        &self,
+        largest: f64,
+        preferred_mm: f64,
+        ctx: &Context,
+    ) -> Result<Recorder, FrictionError> {
+        let mu = choose_scale(
+            &self.name,
+            None,
+            largest,
+            preferred_mm,
+            crate::scale::Quantity::Length,
+        )?;
+        Ok(Recorder::in_context(&self.name, mu, ctx))
+    }
+
+    /// The recorder of a schematic drawing, at the nominal μ of 1 mm per mm (its lengths mean
+    /// nothing, only its angles and ratios are read).
+    pub(crate) fn schematic_recorder(&self, ctx: &Context) -> Result<Recorder, FrictionError> {
+        self.scheme_recorder(1.0, 1000.0, ctx)
+    }
 }

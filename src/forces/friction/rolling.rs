@@ -117,8 +117,8 @@ pub fn rolling_twin(c: &Rolling) -> RollingTwin {
 /// reactions of the right roller shifted by k (the shifts exaggerated: they are labelled,
 /// not drawn to scale).
 fn scheme(case: &FrictionCase, c: &Rolling, ctx: &Context) -> Result<Drawing, FrictionError> {
-    let mu = choose_scale(&case.name, None, c.diameter, ROLLER_MM, Quantity::Length)?;
-    let mut rec = Recorder::in_context(&case.name, mu, ctx);
+    let mut rec = case.scheme_recorder(c.diameter, ROLLER_MM, ctx)?;
+    let mu = rec.scale();
     let d = mu.to_mm(c.diameter);
     let half = 1.9 * d;
     rec.draw(

@@ -6,13 +6,12 @@
 use super::draw::angle_mark;
 use super::incline::{body_on_plane, eta_read, feasible, incline_twin, polygon, readings};
 use super::{
-    choose_scale, friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase,
-    FrictionError, Incline, Motion, Screw, Solved,
+    friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Incline,
+    Motion, Screw, Solved,
 };
 use crate::check::Symbol;
-use crate::construct::{ConstructionError, Context, Item, Recorder, Role};
+use crate::construct::{ConstructionError, Context, Item, Role};
 use crate::geom::{DVec2, Segment, Side};
-use crate::scale::Quantity;
 use std::f64::consts::TAU;
 
 /// Preferred drawn length of the unrolled turn 2πr₁, mm.
@@ -71,8 +70,8 @@ pub fn screw_twin(c: &Screw) -> ScrewTwin {
 /// element on the helix with its loads, friction cone and reaction.
 fn scheme(case: &FrictionCase, c: &Screw, ctx: &Context) -> Result<(Drawing, f64), FrictionError> {
     let turn = TAU * c.radius;
-    let mu = choose_scale(&case.name, None, turn, UNROLLED_MM, Quantity::Length)?;
-    let mut rec = Recorder::in_context(&case.name, mu, ctx);
+    let mut rec = case.scheme_recorder(turn, UNROLLED_MM, ctx)?;
+    let mu = rec.scale();
     let base = mu.to_mm(turn);
     let start = DVec2::new(-base / 2.0, 0.0);
     let end = DVec2::new(base / 2.0, base * c.lead.tan());

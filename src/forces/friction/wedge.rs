@@ -5,13 +5,12 @@
 
 use super::draw::{angle_mark, arrow, triangle};
 use super::{
-    choose_scale, friction_angle, reading, schematic, subject, Drawing, DrawingKind, FrictionCase,
-    FrictionError, Solved, Wedge, POLYGON_MM,
+    friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Solved,
+    Wedge,
 };
 use crate::check::Symbol;
-use crate::construct::{ConstructionError, Context, Item, Recorder, Role};
+use crate::construct::{ConstructionError, Context, Item, Role};
 use crate::geom::{DVec2, Segment, Side};
-use crate::scale::Quantity;
 
 /// The closed form of a V-groove slider.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -50,7 +49,7 @@ fn flanks(c: &Wedge) -> ([DVec2; 2], [DVec2; 2]) {
 
 /// The cross-section: the groove, the slider, Q and the flanks' normal forces.
 fn scheme(case: &FrictionCase, c: &Wedge, ctx: &Context) -> Result<Drawing, FrictionError> {
-    let mut rec = Recorder::in_context(&case.name, schematic(&case.name)?, ctx);
+    let mut rec = case.schematic_recorder(ctx)?;
     let ([left, right], [n1, n2]) = flanks(c);
     for (dir, hatch, name) in [(left, Side::Left, "left"), (right, Side::Right, "right")] {
         rec.draw(
@@ -121,14 +120,8 @@ pub(super) fn solve(
     let twin = wedge_twin(c);
     let scheme = scheme(case, c, ctx)?;
     let largest = c.load.max(twin.n).max(twin.p);
-    let mu = choose_scale(
-        &case.name,
-        case.scale_f,
-        largest,
-        POLYGON_MM,
-        Quantity::Force,
-    )?;
-    let mut rec = Recorder::in_context(&case.name, mu, ctx);
+    let mut rec = case.force_recorder(largest, ctx)?;
+    let mu = rec.scale();
     let (_, [n1, n2]) = flanks(c);
     let q = DVec2::new(0.0, -c.load);
     let t = triangle(

@@ -37,8 +37,8 @@ pub(super) fn driver(
     applied: &[Load],
     drive: &Drive,
 ) -> Result<DriverPolygon, ConstructionError> {
-    let prog = board.prog;
-    let b = board.built;
+    let prog = board.setup.prog;
+    let b = board.setup.built;
     let crank = prog.crank_link as usize;
     let mut sch = Scheme::new(board, format!("driving link {crank}"));
     draw_links(&mut sch.rec, prog, b, Role::Given, "crank", Part::Driver);
@@ -51,17 +51,17 @@ pub(super) fn driver(
     let mut pol = Polygon::new(
         format!("force triangle of link {crank}"),
         board.mu_f,
-        &board.ctx,
+        &board.setup.ctx,
     );
     let p0 = pol.tip;
     pol.lay_all(&loads);
     let (m_bal, f_bal) = match drive {
         Drive::Coupling => (-k, None),
         Drive::Gear(g) => {
-            let mu = board.mu_l.value();
+            let mu = board.setup.mu_l.value();
             let r = g.radius() / mu;
             // The tooth pushes on the flank that turns the crank the way M_bal = −k does.
-            let flank = if k == 0.0 { board.sense } else { -k.signum() };
+            let flank = if k == 0.0 { board.sense() } else { -k.signum() };
             let (p, d) = line_of_action(o, r, g.towards, g.pressure_angle, flank);
             let towards = DVec2::from_angle(g.towards);
             pitch_circle(&mut sch.rec, "pitch circle of the wheel", o, r, g.towards);

@@ -24,7 +24,7 @@ use super::spec::Drive;
 use super::twin::{line_of_action, Pair, PairKind, Reaction};
 use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role};
 use crate::geom::{Circle, DVec2, Line, Segment};
-use crate::linkage::{draw_links, Built, Op, PDyad, Part, Program};
+use crate::linkage::{draw_links, Built, Op, PDyad, Part, PlanSetup};
 use crate::scale::Scale;
 use std::f64::consts::{PI, TAU};
 
@@ -89,20 +89,20 @@ impl Polygons {
     }
 }
 
-/// What every drawing of a position starts from.
+/// What the polygons of a position start from: the position as every drawing of it does
+/// ([`PlanSetup`]) and μ_F.
 pub struct Board<'a> {
-    /// The mechanism.
-    pub prog: &'a Program,
-    /// The constructed position, drawing mm.
-    pub built: &'a Built,
-    /// μ_l of `built`.
-    pub mu_l: Scale,
+    /// The mechanism, the constructed position, μ_l, ω₁ and the context.
+    pub setup: PlanSetup<'a>,
     /// μ_F of the polygons.
     pub mu_f: Scale,
-    /// Tolerances and drafting.
-    pub ctx: Context,
+}
+
+impl Board<'_> {
     /// The crank's sense, +1 counter-clockwise.
-    pub sense: f64,
+    fn sense(&self) -> f64 {
+        self.setup.w1.signum()
+    }
 }
 
 /// A link's loads and its arms measured on a drawing.
@@ -116,20 +116,20 @@ impl<'a> Scheme<'a> {
     fn new(board: &'a Board<'a>, title: String) -> Self {
         Self {
             board,
-            rec: Recorder::in_context(title, board.mu_l, &board.ctx),
+            rec: Recorder::in_context(title, board.setup.mu_l, &board.setup.ctx),
             arms: 0,
         }
     }
 
     /// Where a load acts on the drawing, mm.
     fn at(&self, l: &Load) -> DVec2 {
-        self.board.built.p[l.at] + l.shift / self.board.mu_l.value()
+        self.board.setup.built.p[l.at] + l.shift / self.board.setup.mu_l.value()
     }
 
     /// Draw a load: an arrow at its point (a couple: an arc arrow about the link's origin).
     fn show(&mut self, l: &Load) {
         if l.is_couple() {
-            let o = self.board.built.p[self.board.built.origin[l.link]];
+            let o = self.board.setup.built.p[self.board.setup.built.origin[l.link]];
             let (a0, sweep) = if l.moment > 0.0 {
                 (0.3, 1.6)
             } else {
@@ -355,8 +355,8 @@ pub fn polygons(
     loads: &[Load],
     drive: &Drive,
 ) -> Result<Polygons, (usize, ConstructionError)> {
-    let prog = board.prog;
-    let b = board.built;
+    let prog = board.setup.prog;
+    let b = board.setup.built;
     let mut applied: Vec<Load> = loads.to_vec();
     let mut groups = Vec::new();
     let dir = |l: usize| DVec2::from_angle(b.angle[l]);
@@ -380,7 +380,11 @@ pub fn polygons(
         for l in li.iter().chain(&lj) {
             sch.show(l);
         }
-        let mut pol = Polygon::new(format!("force polygon of {title}"), board.mu_f, &board.ctx);
+        let mut pol = Polygon::new(
+            format!("force polygon of {title}"),
+            board.mu_f,
+            &board.setup.ctx,
+        );
         let p = |k: usize| b.p[k];
         let err = |e| (*group, e);
         let reactions = match *dyad {
@@ -564,7 +568,7 @@ fn point_of(r: &Reaction, b: &Built) -> (usize, DVec2) {
 
 /// Draw a reaction found on the group's drawing, at its point.
 fn show_reaction(sch: &mut Scheme<'_>, r: &Reaction) {
-    let (at, shift) = point_of(r, sch.board.built);
+    let (at, shift) = point_of(r, sch.board.setup.built);
     let l = Load::force(
         r.pair.to,
         LoadKind::Reaction,

@@ -15,6 +15,10 @@ mod slot;
 use slot::Slot;
 
 /// A solved position with its velocity and acceleration analogues.
+///
+/// It mirrors the construction's [`Built`](super::Built) field for field on purpose (φ₁, the
+/// points, the links' frames, the crossings): the twin and the drawing answer the same
+/// questions so that every reading can be set against its analytic value.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Pose {
     /// Crank angle φ₁, radians.

@@ -88,15 +88,17 @@ pub fn owner(prog: &Program, k: usize) -> usize {
     prog.owner(k)
 }
 
-/// A constructed position and the crank speed: what every plan of that position starts from.
+/// A constructed position and the crank speed: what every drawing of that position starts
+/// from — its plans here, its force polygons and Zhukovsky's lever in `forces` (which add
+/// μ_F).
 #[derive(Debug, Clone, Copy)]
 pub struct PlanSetup<'a> {
     /// The compiled mechanism.
     pub prog: &'a Program,
     /// The constructed position (drawing mm).
     pub built: &'a Built,
-    /// μ_l of the construction, m/mm.
-    pub mu_l: f64,
+    /// μ_l of the construction.
+    pub mu_l: Scale,
     /// Crank speed ω₁, rad/s, signed counter-clockwise.
     pub w1: f64,
     /// The construction context: the plan's tolerances and the drafting model of its
@@ -129,7 +131,7 @@ pub fn kin_plan(
         b,
         kind,
         rec: Recorder::in_context(title, scale, &ctx),
-        mu_l,
+        mu_l: mu_l.value(),
         img: vec![None; n],
         links: Links {
             pts: vec![Vec::new(); prog.link_count],

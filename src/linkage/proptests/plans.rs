@@ -28,6 +28,7 @@
 //! shrinking found one at 1.1e-5, merged so.)
 
 use super::*;
+use crate::scale::{Quantity, Scale};
 
 /// Relative tolerance of plan = twin, of the polygon relations and of the rigid motion.
 const REL: f64 = 1e-9;
@@ -132,7 +133,7 @@ fn plans(m: &Mechanism, phi: f64, w1: f64) -> Result<Plans, TestCaseError> {
     let setup = PlanSetup {
         prog: &prog,
         built: &built,
-        mu_l: MU,
+        mu_l: Scale::new(MU, Quantity::Length).expect("a scale"),
         w1,
         ctx: super::plan_context(),
     };

@@ -1,0 +1,227 @@
+//! Rendering scenes to files (DESIGN §2: one library call per command): the plates of each
+//! scene built through one session (scene → session → sheets), turned into SVG, PNG (in
+//! parallel) and one PDF per scene, all in memory, then written atomically — a failed run
+//! writes nothing. `tmm render`, the plate regression tests and the bench go through here.
+
+use crate::construct::Drafting;
+use crate::plate::{self, Plate};
+use crate::scale::Lang;
+use crate::scene::{PlateKind, Scene};
+use crate::sheets::{self, BuildError};
+use crate::study::Session;
+use std::path::{Path, PathBuf};
+use thiserror::Error;
+
+/// Which files [`render`] writes: `<out>/<scene>/<plate>.svg`, `.png`, and
+/// `<out>/<scene>/<scene>.pdf`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Formats {
+    /// One SVG per sheet.
+    pub svg: bool,
+    /// One PNG per sheet, at [`Options::dpi`].
+    pub png: bool,
+    /// One PDF per scene, every sheet a page, 1:1.
+    pub pdf: bool,
+}
+
+/// How the plates are rendered.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// The labels' language.
+    pub lang: Lang,
+    /// The drafting model every reading is taken under.
+    pub drafting: Drafting,
+    /// The files to write.
+    pub formats: Formats,
+    /// PNG resolution, dots per inch.
+    pub dpi: u32,
+}
+
+/// Why the plates of a run cannot be rendered.
+#[derive(Debug, Error)]
+pub enum RenderError {
+    /// A plate of a scene cannot be built.
+    #[error("{}: plate `{}`: {error}", .scene.display(), .kind.stem())]
+    Build {
+        /// The scene's file.
+        scene: PathBuf,
+        /// The plate.
+        kind: PlateKind,
+        /// Why.
+        error: BuildError,
+    },
+    /// A sheet too large for a PNG at the resolution asked.
+    #[error("--dpi {dpi}: {}: {error}", .path.display())]
+    Resolution {
+        /// The resolution, dots per inch.
+        dpi: u32,
+        /// The sheet's file, without its extension.
+        path: PathBuf,
+        /// Why.
+        error: plate::PlateError,
+    },
+    /// A PNG that cannot be rasterised.
+    #[error("{}: {error}", .path.display())]
+    Png {
+        /// The sheet's file, without its extension.
+        path: PathBuf,
+        /// Why.
+        error: plate::PlateError,
+    },
+    /// A PDF that cannot be produced.
+    #[error("{}: {error}", .path.display())]
+    Pdf {
+        /// The PDF's file.
+        path: PathBuf,
+        /// Why.
+        error: plate::PdfError,
+    },
+    /// A file that cannot be written (nothing is written).
+    #[error("{}: cannot write: {error}", .path.display())]
+    Write {
+        /// The first file that cannot be written.
+        path: PathBuf,
+        /// Why.
+        error: std::io::Error,
+    },
+}
+
+impl RenderError {
+    /// The input is at fault rather than a construction: a scale the scene gives that no
+    /// sheet can hold, a resolution too fine for a sheet, a file that cannot be written.
+    pub fn is_input(&self) -> bool {
+        match self {
+            RenderError::Build { error, .. } => {
+                matches!(error, BuildError::TooLarge { fits: Some(_), .. })
+            }
+            RenderError::Resolution { .. } | RenderError::Write { .. } => true,
+            RenderError::Png { .. } | RenderError::Pdf { .. } => false,
+        }
+    }
+}
+
+/// The plates of a scene, built through one session. A drawing too large at a scale the
+/// scene gives has the suggested scale verified on every plate the key sets (the
+/// suggestion of the first drawing alone may not fit the others).
+///
+/// # Errors
+/// The first plate that cannot be built.
+pub fn plates(
+    s: &Scene,
+    lang: Lang,
+    drafting: Drafting,
+) -> Result<Vec<(PlateKind, Plate)>, RenderError> {
+    let session = Session::new(s, drafting);
+    sheets::build_all(&session, lang).map_err(|(kind, e)| RenderError::Build {
+        scene: s.path.clone(),
+        kind,
+        error: refit(s, e, drafting, lang),
+    })
+}
+
+/// A drawing too large at a scale the scene gives: the scale suggested verified on every
+/// plate the key sets.
+fn refit(s: &Scene, e: BuildError, drafting: Drafting, lang: Lang) -> BuildError {
+    match e {
+        BuildError::TooLarge {
+            what,
+            need,
+            fits: Some((key, first)),
+        } => {
+            let fit = std::fs::read_to_string(&s.path)
+                .ok()
+                .and_then(|text| {
+                    sheets::verified_fit(&text, &s.path, key.key, first, drafting, lang)
+                })
+                .unwrap_or(first);
+            BuildError::TooLarge {
+                what,
+                need,
+                fits: Some((key, fit)),
+            }
+        }
+        e => e,
+    }
+}
+
+/// Every file of `scenes` under `out`, built in memory: per scene its sheets' SVG and PNG
+/// (`<out>/<scene>/<sheet>.<ext>`) and its PDF, in that order.
+///
+/// # Errors
+/// The first plate that cannot be built, a sheet too large for a PNG at `options.dpi`, a PNG
+/// or PDF that cannot be produced.
+pub fn files(
+    scenes: &[Scene],
+    out: &Path,
+    options: &Options,
+) -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
+    let Options {
+        lang,
+        drafting,
+        formats,
+        dpi,
+    } = *options;
+    let mut svgs: Vec<(PathBuf, String)> = Vec::new();
+    let mut pdfs: Vec<(PathBuf, Vec<u8>)> = Vec::new();
+    for s in scenes {
+        let first = svgs.len();
+        for (_, plate) in plates(s, lang, drafting)? {
+            let base = out.join(&s.stem).join(&plate.name);
+            if formats.png {
+                let (w, h) = (plate.sheet.width_mm(), plate.sheet.height_mm());
+                plate::png_size(w, h, dpi as f32).map_err(|error| RenderError::Resolution {
+                    dpi,
+                    path: base.clone(),
+                    error,
+                })?;
+            }
+            svgs.push((base, plate::to_svg(&plate)));
+        }
+        if formats.pdf {
+            let path = out.join(&s.stem).join(format!("{}.pdf", s.stem));
+            let pages: Vec<String> = svgs[first..].iter().map(|(_, svg)| svg.clone()).collect();
+            let pdf = plate::to_pdf(&pages).map_err(|error| RenderError::Pdf {
+                path: path.clone(),
+                error,
+            })?;
+            pdfs.push((path, pdf));
+        }
+    }
+    let pngs = if formats.png {
+        let texts: Vec<String> = svgs.iter().map(|(_, svg)| svg.clone()).collect();
+        plate::to_png_dpi_all(&texts, dpi as f32)
+    } else {
+        Vec::new()
+    };
+    let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
+    let mut pngs = pngs.into_iter();
+    for (base, svg) in svgs {
+        if let Some(png) = pngs.next() {
+            let png = png.map_err(|error| RenderError::Png {
+                path: base.clone(),
+                error,
+            })?;
+            files.push((base.with_extension("png"), png));
+        }
+        if formats.svg {
+            files.push((base.with_extension("svg"), svg.into_bytes()));
+        }
+    }
+    files.extend(pdfs);
+    Ok(files)
+}
+
+/// Render `scenes` to `out`: every file of [`files`], written atomically. Returns the files
+/// written, in order.
+///
+/// # Errors
+/// As [`files`]; a file that cannot be written (then nothing is).
+pub fn render(
+    scenes: &[Scene],
+    out: &Path,
+    options: &Options,
+) -> Result<Vec<PathBuf>, RenderError> {
+    let files = files(scenes, out, options)?;
+    plate::write_all_atomic(&files).map_err(|(path, error)| RenderError::Write { path, error })?;
+    Ok(files.into_iter().map(|(path, _)| path).collect())
+}
