@@ -22,10 +22,6 @@ fn keys_name_quantities_and_units() {
     let k = Key::at_position(Symbol::Velocity, "B3_B1", "3");
     assert_eq!(k.quantity(), "v_B3_B1");
     assert_eq!(k.symbol.unit(), "m/s");
-    assert_eq!(Symbol::AngularAcceleration.markup("3"), "ε_{3}");
-    assert_eq!(Symbol::Reaction.markup("1_2"), "R_{1-2}");
-    assert_eq!(Symbol::Force.markup("in3"), "F_{и3}");
-    assert_eq!(Symbol::Moment.markup("bal"), "M_{у}");
     let whole = Key {
         symbol: Symbol::Displacement,
         subject: "E".into(),

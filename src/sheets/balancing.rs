@@ -3,11 +3,11 @@
 //! of moments), the data and results, and a table of the corrections read off the polygons
 //! against their analytic twin. The smallest landscape sheet from A3 up that holds it all.
 
-use super::layout::{lay_out_smallest, Block, ScaleKey};
+use super::captions::{unit_in, RotorText, Text};
+use super::layout::{lay_out_smallest, results_table, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::check::{Row, Symbol};
 use crate::forces::balancing::{Balancing, Correction, Plane};
-use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
 use crate::study::Session;
@@ -18,11 +18,6 @@ const SIZES: [SheetSize; 3] = [SheetSize::A3, SheetSize::A2, SheetSize::A1];
 const TEXT_MM: f64 = 3.5;
 const TABLE_MM: f64 = 2.5;
 
-/// A word of the sheet in ru, uk, en.
-fn tr(lang: Lang, ru: &'static str, uk: &'static str, en: &'static str) -> &'static str {
-    lang.pick(ru, uk, en)
-}
-
 /// Build the sheet of the scene's rotor.
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
@@ -32,12 +27,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     if let (Some(fig), Some(mu)) = (&b.moments, b.scale_mrz) {
         let caption = format!(
             "{}, {}",
-            tr(
-                lang,
-                "План моментов m·ρ·z",
-                "План моментів m·ρ·z",
-                "Polygon of moments m·ρ·z"
-            ),
+            RotorText::MomentsPolygon.get(lang),
             mu.caption(lang)
         );
         blocks.push(Block::view(
@@ -48,12 +38,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }
     let caption = format!(
         "{}, {}",
-        tr(
-            lang,
-            "План статических моментов m·ρ",
-            "План статичних моментів m·ρ",
-            "Polygon of static moments m·ρ"
-        ),
+        RotorText::StaticMomentsPolygon.get(lang),
         b.scale_mr.caption(lang)
     );
     blocks.push(Block::view(
@@ -70,20 +55,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     });
     blocks.push(Block::Table(table(&b.rows(), lang)));
     let sheet_title = if dynamic {
-        tr(
-            lang,
-            "Полное уравновешивание ротора",
-            "Повне зрівноваження ротора",
-            "Complete balancing of a rotor",
-        )
+        RotorText::Complete
     } else {
-        tr(
-            lang,
-            "Статическое уравновешивание ротора",
-            "Статичне зрівноваження ротора",
-            "Static balancing of a rotor",
-        )
-    };
+        RotorText::Static
+    }
+    .get(lang);
     let title = super::title_block(scene, sheet_title, b.scale_l, lang);
     // The smallest sheet that holds everything on one page; A1 (over pages) otherwise.
     lay_out_smallest(&SIZES, blocks, "balancing", &title, lang)
@@ -104,17 +80,13 @@ fn rotor_blocks(b: &Balancing, lang: Lang) -> Vec<Block> {
         .enumerate()
         .map(|(k, fig)| {
             let what = if k + 1 < n {
-                tr(lang, "Ротор", "Ротор", "Rotor")
+                RotorText::Rotor
             } else if n > 1 {
-                tr(
-                    lang,
-                    "Вид вдоль оси",
-                    "Вид уздовж осі",
-                    "View along the axis",
-                )
+                RotorText::AlongAxis
             } else {
-                tr(lang, "Ротор (диск)", "Ротор (диск)", "Rotor (disc)")
-            };
+                RotorText::Disc
+            }
+            .get(lang);
             let caption = format!("{what}, {}", mu.caption(lang));
             Block::view(fig.clone(), caption, keyed("balancing.scale_l", mu))
         })
@@ -140,8 +112,8 @@ fn num(x: f64, lang: Lang) -> String {
 
 /// The data of the task and the correcting masses found, as text lines (label markup).
 fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
-    let (kg, mm) = (tr(lang, "кг", "кг", "kg"), tr(lang, "мм", "мм", "mm"));
-    let mut out = vec![tr(lang, "Исходные данные", "Вихідні дані", "Data").to_string()];
+    let (kg, mm) = (unit_in("kg", lang), unit_in("mm", lang));
+    let mut out = vec![Text::Data.get(lang).to_string()];
     let dynamic = matches!(b.spec.correction, Correction::Dynamic { .. });
     for (i, m) in b.spec.masses.iter().enumerate() {
         let k = i + 1;
@@ -171,22 +143,10 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
         }
     }
     if let Some(w) = b.spec.omega {
-        out.push(format!(
-            "ω = {} {}",
-            num(w, lang),
-            tr(lang, "рад/с", "рад/с", "rad/s")
-        ));
+        out.push(format!("ω = {} {}", num(w, lang), unit_in("rad/s", lang)));
     }
     out.push(String::new());
-    out.push(
-        tr(
-            lang,
-            "Уравновешивающие массы",
-            "Зрівноважувальні маси",
-            "Correcting masses",
-        )
-        .into(),
-    );
+    out.push(RotorText::CorrectingMasses.get(lang).into());
     for c in &b.graphical {
         let idx = c.plane.index();
         let u = c.unbalance.length();
@@ -203,13 +163,12 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
         ));
     }
     if let Some(w) = b.spec.omega {
-        let n = tr(lang, "Н", "Н", "N");
-        let p = tr(lang, "и", "і", "in");
+        let n = unit_in("N", lang);
         for (i, m) in b.spec.masses.iter().enumerate() {
             let f = crate::forces::balancing::inertia_force(m, w);
             let g = m.mass * crate::forces::balancing::COURSE_G;
             out.push(format!(
-                "P_{{{p}{k}}} = m_{{{k}}}ω^2ρ_{{{k}}} = {} {n}, P_{{{p}{k}}}/G_{{{k}}} = {}",
+                "P_{{и{k}}} = m_{{{k}}}ω^2ρ_{{{k}}} = {} {n}, P_{{и{k}}}/G_{{{k}}} = {}",
                 num(f, lang),
                 num(f / g, lang),
                 k = i + 1
@@ -228,84 +187,60 @@ fn plane_index(subject: &str) -> &'static str {
     }
 }
 
-/// A row's quantity in the textbook's notation and its unit, in `lang`.
-fn quantity(r: &Row, lang: Lang) -> (String, &'static str) {
+/// A row's quantity in the textbook's notation (the correcting masses indexed by their
+/// plane: `m_{уI}ρ_{уI}`; the inertia force and moment before and after correction) and its
+/// unit.
+fn quantity(r: &Row, lang: Lang) -> (String, String) {
     let idx = plane_index(&r.key.subject);
-    let after = r.key.subject == "res";
-    let stage = if after {
-        tr(lang, "после", "після", "after")
+    let stage = if r.key.subject == "res" {
+        RotorText::After
     } else {
-        tr(lang, "до", "до", "before")
-    };
-    let p = tr(lang, "и", "і", "in");
+        RotorText::Before
+    }
+    .get(lang);
+    let unit = unit_in(r.key.symbol.unit(), lang);
     match r.key.symbol {
-        Symbol::StaticMoment => (
-            format!("m_{{{idx}}}ρ_{{{idx}}}"),
-            tr(lang, "кг·м", "кг·м", "kg·m"),
-        ),
-        Symbol::UnbalanceMoment => (
-            format!("m_{{{idx}}}ρ_{{{idx}}}z_{{II}}"),
-            tr(lang, "кг·м^2", "кг·м^2", "kg·m^2"),
-        ),
-        Symbol::Mass => (format!("m_{{{idx}}}"), tr(lang, "кг", "кг", "kg")),
-        Symbol::Angle => (format!("α_{{{idx}}}"), "°"),
-        Symbol::Force => (format!("F_{{{p}}} {stage}"), tr(lang, "Н", "Н", "N")),
-        Symbol::Moment => (format!("M_{{{p}}} {stage}"), tr(lang, "Н·м", "Н·м", "N·m")),
-        other => (other.markup(&r.key.subject), ""),
+        Symbol::StaticMoment => (format!("m_{{{idx}}}ρ_{{{idx}}}"), unit),
+        Symbol::UnbalanceMoment => (format!("m_{{{idx}}}ρ_{{{idx}}}z_{{II}}"), unit),
+        Symbol::Mass => (format!("m_{{{idx}}}"), unit),
+        Symbol::Angle => (format!("α_{{{idx}}}"), "°".into()),
+        Symbol::Force => (format!("F_{{и}} {stage}"), unit),
+        Symbol::Moment => (format!("M_{{и}} {stage}"), unit),
+        _ => (super::layout::quantity(r, lang), unit),
     }
 }
 
 /// The table graphical | analytic | error of the rows (angles in degrees).
 fn table(rows: &[Row], lang: Lang) -> TableBlock {
-    let errors = crate::check::rel_errors(rows);
-    let scales = crate::check::scales(rows);
-    let body = rows
-        .iter()
-        .zip(errors)
-        .zip(scales)
-        .map(|((r, e), s)| {
-            let (name, unit) = quantity(r, lang);
-            let k = if r.key.symbol == Symbol::Angle {
-                180.0 / std::f64::consts::PI
-            } else {
-                1.0
-            };
-            let cell = |x: f64| {
-                if crate::check::is_zero(x, s) {
-                    "0".to_string()
-                } else {
-                    num(x * k, lang)
-                }
-            };
-            vec![
-                name,
-                unit.to_string(),
-                cell(r.graphical),
-                cell(r.analytic),
-                e.map_or_else(|| "—".into(), |e| format_fixed(e * 100.0, 3, lang)),
-            ]
-        })
-        .collect();
-    TableBlock {
-        at: DVec2::ZERO,
-        title: tr(
-            lang,
-            "Графическое решение и аналитический расчёт",
-            "Графічний розв'язок і аналітичний розрахунок",
-            "Graphical against analytic",
-        )
-        .into(),
-        columns: vec![
-            (tr(lang, "величина", "величина", "quantity").into(), 30.0),
-            (tr(lang, "ед.", "од.", "unit").into(), 14.0),
-            (tr(lang, "графически", "графічно", "graphical").into(), 26.0),
-            (
-                tr(lang, "аналитически", "аналітично", "analytic").into(),
-                28.0,
-            ),
-            ("δ, %".into(), 16.0),
-        ],
-        rows: body,
-        size_mm: TABLE_MM,
-    }
+    let value = |r: &Row, x: f64, s: f64| {
+        let k = if r.key.symbol == Symbol::Angle {
+            180.0 / std::f64::consts::PI
+        } else {
+            1.0
+        };
+        if crate::check::is_zero(x, s) {
+            "0".to_string()
+        } else {
+            num(x * k, lang)
+        }
+    };
+    results_table(
+        &Results {
+            title: Text::GraphicalAndAnalytic.get(lang).into(),
+            columns: &[
+                (Column::Quantity, 30.0),
+                (Column::Unit, 14.0),
+                (Column::Graphical, 26.0),
+                (Column::Analytic, 28.0),
+                (Column::Error, 16.0),
+            ],
+            name: &|r| quantity(r, lang).0,
+            unit: &|r| quantity(r, lang).1,
+            value: &value,
+            error_decimals: 3,
+            size_mm: TABLE_MM,
+        },
+        rows,
+        lang,
+    )
 }

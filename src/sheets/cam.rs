@@ -3,10 +3,10 @@
 //! cam centre (or the flat face's 45° tangent), the profile by inversion with the roller
 //! circles and both profiles, the angle graph, the data and the table of the points.
 
-use super::layout::{lay_out, Block, ScaleKey};
+use super::captions::{unit_in, CamText, Text};
+use super::layout::{lay_out, quantity, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::cam::{Cam, Follower, Law};
-use crate::check::{rel_errors, Symbol};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
@@ -15,10 +15,6 @@ use crate::study::Session;
 /// Text height of the data lines and the tables, mm.
 const TEXT_MM: f64 = 3.5;
 const TABLE_MM: f64 = 2.5;
-
-fn tr(lang: Lang, ru: &'static str, uk: &'static str, en: &'static str) -> &'static str {
-    lang.pick(ru, uk, en)
-}
 
 /// A scale's caption with its own symbol (`μ_{S′} = 0,00093 м/мм`).
 fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
@@ -38,7 +34,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let scene = session.scene();
     let cam = session.cam()?;
     let d = &cam.diagrams;
-    let mm = tr(lang, "мм", "мм", "mm");
+    let mm = unit_in("mm", lang);
     let h = |i: usize| format_sig(d.poles[i], 3, lang);
     // The two constructions of the diagrams with their scales: S given, differentiated
     // twice by chords; or d²S/dφ² given, integrated twice.
@@ -90,25 +86,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         Block::view(d.second.clone(), second.0, second.1),
     ];
     let combined = match cam.spec.follower {
-        Follower::Flat { .. } => tr(
-            lang,
-            "Совмещённая диаграмма S(d^2S/dφ^2), касательная 45°",
-            "Суміщена діаграма S(d^2S/dφ^2), дотична 45°",
-            "Combined diagram S(d^2S/dφ^2), the 45° tangent",
-        ),
-        Follower::Rocker { .. } => tr(
-            lang,
-            "Определение r_{min}: dS/dφ по коромыслу, лучи γ_{min}",
-            "Визначення r_{min}: dS/dφ уздовж коромисла, промені γ_{min}",
-            "r_{min}: dS/dφ along the rocker, the γ_{min} lines",
-        ),
-        Follower::Translating { .. } => tr(
-            lang,
-            "Совмещённая диаграмма S(dS/dφ), зона центра",
-            "Суміщена діаграма S(dS/dφ), зона центру",
-            "Combined diagram S(dS/dφ), the centre's zone",
-        ),
-    };
+        Follower::Flat { .. } => CamText::FlatCombined,
+        Follower::Rocker { .. } => CamText::RockerCombined,
+        Follower::Translating { .. } => CamText::TranslatingCombined,
+    }
+    .get(lang);
     blocks.push(Block::view(
         cam.radius.figure.clone(),
         format!("{combined}, {}", mu("S", d.s_scale, lang)),
@@ -118,39 +100,21 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         cam.inversion.figure.clone(),
         format!(
             "{}, {}",
-            tr(
-                lang,
-                "Профиль кулачка (обращение движения)",
-                "Профіль кулачка (обернення руху)",
-                "Cam profile by inversion"
-            ),
+            CamText::Profile.get(lang),
             cam.inversion.scale.caption(lang)
         ),
         keyed("cam.scale_l", cam.inversion.scale),
     ));
     if let Some(g) = &cam.angle_graph {
         let what = if matches!(cam.spec.follower, Follower::Rocker { .. }) {
-            tr(
-                lang,
-                "Угол передачи γ(φ)",
-                "Кут передачі γ(φ)",
-                "Transmission angle γ(φ)",
-            )
+            CamText::TransmissionAngle
         } else {
-            tr(
-                lang,
-                "Угол давления λ(φ)",
-                "Кут тиску λ(φ)",
-                "Pressure angle λ(φ)",
-            )
-        };
+            CamText::PressureAngle
+        }
+        .get(lang);
         blocks.push(Block::view(
             g.clone(),
-            format!(
-                "{what}, {}, μ_{{γ}} = 1 °/{}",
-                mu("φ", d.phi, lang),
-                tr(lang, "мм", "мм", "mm")
-            ),
+            format!("{what}, {}, μ_{{γ}} = 1 °/{}", mu("φ", d.phi, lang), mm),
             None,
         ));
     }
@@ -163,17 +127,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     });
     blocks.extend(points_table(&cam, lang).into_iter().map(Block::Table));
     blocks.push(Block::Table(results_table(&cam, lang)));
-    let title = super::title_block(
-        scene,
-        tr(
-            lang,
-            "Синтез кулачкового механизма",
-            "Синтез кулачкового механізму",
-            "Cam mechanism synthesis",
-        ),
-        cam.inversion.scale,
-        lang,
-    );
+    let title = super::title_block(scene, CamText::Title.get(lang), cam.inversion.scale, lang);
     let sheet = Sheet {
         size: SheetSize::A1,
         landscape: true,
@@ -183,76 +137,54 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
 
 /// A law's name in `lang`.
 fn law_name(law: Law, lang: Lang) -> String {
-    match law {
-        Law::Uniform => tr(
-            lang,
-            "равномерный (жёсткие удары)",
-            "рівномірний (жорсткі удари)",
-            "uniform (rigid shocks)",
-        )
-        .into(),
-        Law::ConstantAcceleration { ratio } => format!(
-            "«+ −» ({} {})",
-            tr(lang, "доля разгона", "частка розгону", "ratio"),
-            format_sig(ratio, 3, lang)
-        ),
-        Law::Cosine => tr(lang, "косинусоидальный", "косинусоїдальний", "cosine").into(),
-        Law::Sine => tr(lang, "синусоидальный", "синусоїдальний", "sine (cycloidal)").into(),
-        Law::Trapezoidal => tr(lang, "трапецеидальный", "трапецієподібний", "trapezoidal").into(),
-        Law::Polynomial345 => tr(lang, "полином 3-4-5", "поліном 3-4-5", "3-4-5 polynomial").into(),
-    }
+    let word = match law {
+        Law::ConstantAcceleration { ratio } => {
+            return format!(
+                "«+ −» ({} {})",
+                CamText::Ratio.get(lang),
+                format_sig(ratio, 3, lang)
+            )
+        }
+        Law::Uniform => CamText::Uniform,
+        Law::Cosine => CamText::Cosine,
+        Law::Sine => CamText::Sine,
+        Law::Trapezoidal => CamText::Trapezoidal,
+        Law::Polynomial345 => CamText::Polynomial,
+    };
+    word.get(lang).into()
 }
 
 /// The task's data and the results, as text lines.
 fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     let s = &cam.spec;
-    let mm = tr(lang, "мм", "мм", "mm");
+    let mm = unit_in("mm", lang);
     let n = |x: f64| format_sig(x * 1e3, 4, lang);
     let deg = |x: f64| format_sig(x.to_degrees(), 4, lang);
-    let mut out = vec![tr(lang, "Исходные данные", "Вихідні дані", "Data").to_string()];
+    let mut out = vec![Text::Data.get(lang).to_string()];
     let p = &s.phases;
-    out.push(format!(
-        "φ_{{у}} = {}°, φ_{{д.в.}} = {}°, φ_{{п}} = {}°, φ_{{б.в.}} = {}°",
-        deg(p.rise),
-        deg(p.far),
-        deg(p.ret),
-        deg(p.near)
-    ));
     out.push(
-        if cam.clockwise {
-            tr(
-                lang,
-                "Кулачок вращается по часовой стрелке",
-                "Кулачок обертається за годинниковою стрілкою",
-                "The cam turns clockwise",
-            )
-        } else {
-            tr(
-                lang,
-                "Кулачок вращается против часовой стрелки",
-                "Кулачок обертається проти годинникової стрілки",
-                "The cam turns counter-clockwise",
-            )
-        }
-        .into(),
+        CamText::Phases
+            .get(lang)
+            .replace("{rise}", &deg(p.rise))
+            .replace("{far}", &deg(p.far))
+            .replace("{ret}", &deg(p.ret))
+            .replace("{near}", &deg(p.near)),
     );
+    let sense = if cam.clockwise {
+        CamText::Clockwise
+    } else {
+        CamText::CounterClockwise
+    };
+    out.push(sense.get(lang).into());
     out.push(format!(
         "{}: {}; {}: {}",
-        tr(lang, "закон удаления", "закон віддалення", "rise law"),
+        CamText::RiseLaw.get(lang),
         law_name(s.rise, lang),
-        tr(lang, "приближения", "наближення", "return"),
+        CamText::ReturnLaw.get(lang),
         law_name(s.ret, lang)
     ));
     if s.law_assumed {
-        out.push(
-            tr(
-                lang,
-                "Диаграммы источника утеряны: закон движения принят",
-                "Діаграми джерела втрачено: закон руху прийнято",
-                "The source's diagrams are lost: the law is assumed",
-            )
-            .into(),
-        );
+        out.push(CamText::LawAssumed.get(lang).into());
     }
     match s.follower {
         Follower::Rocker { arm, .. } => out.push(format!(
@@ -279,21 +211,16 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     out.push(format!(
         "r_{{min}} = {} {mm} ({}), {} {mm} ({})",
         n(cam.radius.graphical),
-        tr(lang, "графически", "графічно", "graphical"),
+        Text::Graphical.get(lang),
         n(cam.radius.exact),
-        tr(lang, "точно", "точно", "exact")
+        Text::Exact.get(lang)
     ));
     if let Some(q) = s.quoted_r_min {
         out.push(format!(
             "{} r_{{min}} = {} {mm} {}",
-            tr(lang, "В источнике", "У джерелі", "The source's"),
+            CamText::SourceSays.get(lang),
             n(q),
-            tr(
-                lang,
-                "— не согласовано с γ_{min} (ошибка)",
-                "— не узгоджено з γ_{min} (помилка)",
-                "is inconsistent with γ_{min} (erratum)"
-            )
+            CamText::Erratum.get(lang)
         ));
     }
     out.push(format!("r_{{0}} = {} {mm}", n(cam.base)));
@@ -308,49 +235,20 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         if cam.roller >= rho {
             out.push(format!(
                 "{} ρ_{{min}} = {} {mm}",
-                tr(
-                    lang,
-                    "ПОДРЕЗ: r_{р} >",
-                    "ПІДРІЗ: r_{р} >",
-                    "UNDERCUT: r_{р} >"
-                ),
+                CamText::Undercut.get(lang),
                 n(rho)
             ));
         }
     } else if cam.exact_rho_min() < 0.0 {
-        out.push(
-            tr(
-                lang,
-                "ЗАОСТРЕНИЕ: профиль вогнутый, r_{0} + S + S″ < 0",
-                "ЗАГОСТРЕННЯ: профіль угнутий, r_{0} + S + S″ < 0",
-                "CUSP: the profile is concave, r_{0} + S + S″ < 0",
-            )
-            .into(),
-        );
+        out.push(CamText::Cusp.get(lang).into());
     }
     if matches!(s.rise.shock(), crate::cam::Shock::Rigid)
         || matches!(s.ret.shock(), crate::cam::Shock::Rigid)
     {
-        out.push(
-            tr(
-                lang,
-                "Жёсткие удары на границах фаз",
-                "Жорсткі удари на межах фаз",
-                "Rigid shocks at the phase ends",
-            )
-            .into(),
-        );
+        out.push(CamText::RigidShocks.get(lang).into());
     }
     if matches!(s.follower, Follower::Translating { offset } if offset < 0.0) {
-        out.push(
-            tr(
-                lang,
-                "Смещение e с неблагоприятной стороны",
-                "Зміщення e з несприятливого боку",
-                "The offset e is on the unfavourable side",
-            )
-            .into(),
-        );
+        out.push(CamText::WrongSide.get(lang).into());
     }
     out
 }
@@ -393,30 +291,20 @@ fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
         })
         .collect();
     let a = if rocker { "γ" } else { "λ" };
+    let mm = unit_in("mm", lang);
     let mut columns = vec![
         ("№".into(), 8.0),
         ("φ, °".into(), 14.0),
-        ("S, мм".replace("мм", tr(lang, "мм", "мм", "mm")), 16.0),
-        (format!("dS/dφ, {}", tr(lang, "мм", "мм", "mm")), 20.0),
-        (format!("d^2S/dφ^2, {}", tr(lang, "мм", "мм", "mm")), 24.0),
+        (format!("S, {mm}"), 16.0),
+        (format!("dS/dφ, {mm}"), 20.0),
+        (format!("d^2S/dφ^2, {mm}"), 24.0),
     ];
     if !flat {
-        columns.push((
-            format!("{a} {}, °", tr(lang, "граф.", "граф.", "graph.")),
-            18.0,
-        ));
-        columns.push((
-            format!("{a} {}, °", tr(lang, "точно", "точно", "exact")),
-            18.0,
-        ));
+        columns.push((format!("{a} {}, °", CamText::Read.get(lang)), 18.0));
+        columns.push((format!("{a} {}, °", Text::Exact.get(lang)), 18.0));
     }
-    columns.push((format!("R, {}", tr(lang, "мм", "мм", "mm")), 16.0));
-    let title = tr(
-        lang,
-        "Точки диаграмм и профиля",
-        "Точки діаграм і профілю",
-        "Points of the diagrams and the profile",
-    );
+    columns.push((format!("R, {mm}"), 16.0));
+    let title = CamText::Points.get(lang);
     let rows: Vec<Vec<String>> = rows;
     rows.chunks(POINTS_PER_TABLE)
         .enumerate()
@@ -425,10 +313,7 @@ fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
             title: if i == 0 {
                 title.into()
             } else {
-                format!(
-                    "{title} ({})",
-                    tr(lang, "продолжение", "продовження", "continued")
-                )
+                format!("{title} {}", Text::Continued.get(lang))
             },
             columns: columns.clone(),
             rows: chunk.to_vec(),
@@ -437,51 +322,29 @@ fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
         .collect()
 }
 
-/// The values of the whole scene: graphical against exact.
+/// The values of the whole scene: graphical against exact, mm.
 fn results_table(cam: &Cam, lang: Lang) -> TableBlock {
     let rows: Vec<_> = cam
         .rows()
         .into_iter()
         .filter(|r| r.key.at == crate::check::At::Scene)
         .collect();
-    let errors = rel_errors(&rows);
-    let body = rows
-        .iter()
-        .zip(errors)
-        .map(|(r, e)| {
-            let name = match (r.key.symbol, r.key.subject.as_str()) {
-                (Symbol::Radius, "min") => "r_{min}".to_string(),
-                (Symbol::Radius, _) => "r_{р}".to_string(),
-                (Symbol::CurvatureRadius, _) => "ρ_{min}".to_string(),
-                (Symbol::ProfileDeviation, _) => {
-                    "Δ_{проф}".replace("проф", tr(lang, "проф", "проф", "prof"))
-                }
-                (s, sub) => s.markup(sub),
-            };
-            vec![
-                name,
-                format_sig(r.graphical * 1e3, 5, lang),
-                format_sig(r.analytic * 1e3, 5, lang),
-                e.map_or_else(|| "—".into(), |e| format_fixed(e * 100.0, 3, lang)),
-            ]
-        })
-        .collect();
-    TableBlock {
-        at: DVec2::ZERO,
-        title: tr(
-            lang,
-            "Графически и точно, мм",
-            "Графічно і точно, мм",
-            "Graphical against exact, mm",
-        )
-        .into(),
-        columns: vec![
-            (tr(lang, "величина", "величина", "quantity").into(), 22.0),
-            (tr(lang, "графически", "графічно", "graphical").into(), 26.0),
-            (tr(lang, "точно", "точно", "exact").into(), 26.0),
-            ("δ, %".into(), 16.0),
-        ],
-        rows: body,
-        size_mm: TABLE_MM,
-    }
+    super::layout::results_table(
+        &Results {
+            title: CamText::Results.get(lang).into(),
+            columns: &[
+                (Column::Quantity, 22.0),
+                (Column::Graphical, 26.0),
+                (Column::Exact, 26.0),
+                (Column::Error, 16.0),
+            ],
+            name: &|r| quantity(r, lang),
+            unit: &|_| String::new(),
+            value: &|_, x, _| format_sig(x * 1e3, 5, lang),
+            error_decimals: 3,
+            size_mm: TABLE_MM,
+        },
+        &rows,
+        lang,
+    )
 }

@@ -4,7 +4,8 @@
 //! Tables 9/10 in the seed's shape (graphical | analytic | error). One A1 sheet (more if the
 //! views need it).
 
-use super::layout::{lay_out, Block, ScaleKey};
+use super::captions::{unit_in, DynamicsText, Text};
+use super::layout::{lay_out, quantity, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
 use crate::geom::DVec2;
@@ -15,10 +16,6 @@ use crate::study::Session;
 /// Text height of the data lines and the tables, mm.
 const TEXT_MM: f64 = 3.5;
 const TABLE_MM: f64 = 2.5;
-
-fn tr(lang: Lang, ru: &'static str, uk: &'static str, en: &'static str) -> &'static str {
-    lang.pick(ru, uk, en)
-}
 
 fn keyed(key: &'static str, scale: Scale) -> Option<ScaleKey> {
     Some(ScaleKey { key, scale })
@@ -49,7 +46,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let h = format!(
         "H = {} {}",
         format_sig(g.pole_h, 4, lang),
-        tr(lang, "мм", "мм", "mm")
+        unit_in("mm", lang)
     );
     let mut blocks = vec![
         Block::view(
@@ -80,12 +77,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         Block::view(
             g.wittenbauer_figure.clone(),
             cap(
-                tr(
-                    lang,
-                    "Диаграмма энергомасс ΔT(J_{пр})",
-                    "Діаграма енергомас ΔT(J_{пр})",
-                    "Energy–mass diagram ΔT(J_{пр})",
-                ),
+                DynamicsText::EnergyMass.get(lang),
                 &[(g.scale_tw, true), (g.scale_j, false)],
             ),
             keyed("dynamics.scale_t", g.scale_tw),
@@ -98,12 +90,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         Block::view(
             d.omega.clone(),
             cap(
-                tr(
-                    lang,
-                    "ω(φ) с маховиком",
-                    "ω(φ) з маховиком",
-                    "ω(φ) with the flywheel",
-                ),
+                DynamicsText::OmegaWithFlywheel.get(lang),
                 &[(d.omega.scale, false)],
             ),
             None,
@@ -113,10 +100,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     if !d.wheel.steps.is_empty() {
         blocks.push(Block::view(
             d.wheel.clone(),
-            cap(
-                tr(lang, "Маховик", "Маховик", "Flywheel"),
-                &[(d.wheel.scale, false)],
-            ),
+            cap(DynamicsText::Flywheel.get(lang), &[(d.wheel.scale, false)]),
             None,
         ));
     }
@@ -131,12 +115,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     blocks.push(Block::Table(results_table(&d, lang)));
     let title = super::title_block(
         scene,
-        tr(
-            lang,
-            "Динамика машины",
-            "Динаміка машини",
-            "Machine dynamics",
-        ),
+        DynamicsText::Title.get(lang),
         session.scale_l()?,
         lang,
     );
@@ -154,12 +133,13 @@ fn num(x: f64, lang: Lang) -> String {
 /// The data and the results as text.
 fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
     let s = &d.spec;
-    let kgm2 = tr(lang, "кг·м^2", "кг·м^2", "kg·m^2");
-    let mut out = vec![tr(lang, "Исходные данные", "Вихідні дані", "Data").to_string()];
+    let kgm2 = unit_in("kg*m^2", lang);
+    let rad_s = unit_in("rad/s", lang);
+    let mut out = vec![Text::Data.get(lang).to_string()];
     out.push(format!(
         "ω_{{ср}} = {} {}, δ = {} = 1/{}",
         num(d.w_avg, lang),
-        tr(lang, "рад/с", "рад/с", "rad/s"),
+        rad_s,
         num(s.delta, lang),
         format_sig(1.0 / s.delta, 3, lang)
     ));
@@ -171,14 +151,9 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         ));
     }
     out.push(String::new());
-    out.push(tr(lang, "Маховик", "Маховик", "Flywheel").to_string());
+    out.push(DynamicsText::Flywheel.get(lang).to_string());
     let e = &d.exact;
-    let none = tr(
-        lang,
-        "маховик не нужен",
-        "маховик не потрібен",
-        "no flywheel is needed",
-    );
+    let none = DynamicsText::NoFlywheel.get(lang);
     let j_or_none = |j: f64| {
         if j > 0.0 {
             format!("{} {kgm2}", num(j, lang))
@@ -191,13 +166,13 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         j_or_none(e.j_fw),
         num(e.w_max.0, lang),
         num(e.w_min.0, lang),
-        tr(lang, "рад/с", "рад/с", "rad/s")
+        rad_s
     ));
     out.push(format!(
         "J_{{м}} {} = μ_{{T}}·kl/(δω_{{ср}}^2) = {}; {} = {}",
-        tr(lang, "(Виттенбауэр)", "(Віттенбауер)", "(Wittenbauer)"),
+        DynamicsText::Wittenbauer.get(lang),
         j_or_none(d.diagrams.wittenbauer.j_fw),
-        tr(lang, "Меркин", "Меркін", "Merkin"),
+        DynamicsText::Merkin.get(lang),
         j_or_none(d.diagrams.merkin.j_fw)
     ));
     if e.j_fw <= 0.0 {
@@ -206,15 +181,15 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
     }
     let z = &d.size;
     let kind = match z.kind {
-        FlywheelKind::Rim => tr(lang, "обод", "обід", "rim"),
-        FlywheelKind::Disc => tr(lang, "диск", "диск", "disc"),
+        FlywheelKind::Rim => DynamicsText::Rim.get(lang),
+        FlywheelKind::Disc => DynamicsText::Disc.get(lang),
     };
     out.push(format!(
         "{kind}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {}, m = K_{{m}}ρD^3 = {} {}",
         format_fixed(z.d * 1e3, 0, lang),
-        tr(lang, "мм", "мм", "mm"),
+        unit_in("mm", lang),
         num(z.mass, lang),
-        tr(lang, "кг", "кг", "kg")
+        unit_in("kg", lang)
     ));
     out
 }
@@ -257,19 +232,13 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
             ]
         })
         .collect();
-    let nm = tr(lang, "Н·м", "Н·м", "N·m");
-    let kg = tr(lang, "кг·м^2", "кг·м^2", "kg·m^2");
-    let j = tr(lang, "Дж", "Дж", "J");
+    let nm = unit_in("N*m", lang);
+    let kg = unit_in("kg*m^2", lang);
+    let j = unit_in("J", lang);
     TableBlock {
         at: DVec2::ZERO,
-        title: tr(
-            lang,
-            "Таблицы 9, 10: M_{с} = −M_{пр}, J_{пр}, ΔT (графически | аналитически | δ, %)",
-            "Таблиці 9, 10: M_{с} = −M_{пр}, J_{пр}, ΔT (графічно | аналітично | δ, %)",
-            "Tables 9, 10: M_{с} = −M_{пр}, J_{пр}, ΔT (graphical | analytic | δ, %)",
-        )
-        .replace(
-            "M_{с} = −M_{пр}",
+        title: DynamicsText::Tables.get(lang).replace(
+            "{M}",
             if sgn > 0.0 {
                 "M_{д} = M_{пр}"
             } else {
@@ -295,48 +264,32 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
 
 /// The results of the whole cycle: graphical | analytic | error.
 fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
-    let rows = crate::dynamics::rows(d);
-    let errors = crate::check::rel_errors(&rows);
-    let body = rows
-        .iter()
-        .zip(errors)
-        .filter(|(r, _)| r.position().is_none())
-        .map(|(r, e)| {
-            vec![
-                r.key.symbol.markup(&r.key.subject),
-                r.method.name(lang).to_string(),
-                format_sig(r.graphical, 5, lang),
-                format_sig(r.analytic, 5, lang),
-                e.map_or_else(|| "—".into(), |e| format_fixed(e * 100.0, 2, lang)),
-            ]
-        })
+    let rows: Vec<_> = crate::dynamics::rows(d)
+        .into_iter()
+        .filter(|r| r.position().is_none())
         .collect();
-    TableBlock {
-        at: DVec2::ZERO,
-        title: if d.spec.constant_moment == ConstantMoment::Resisting {
-            tr(
-                lang,
-                "A_{д}, M_{с}, маховик: графически и точно",
-                "A_{д}, M_{с}, маховик: графічно і точно",
-                "A_{д}, M_{с}, flywheel: graphical against exact",
-            )
-        } else {
-            tr(
-                lang,
-                "Работа, момент движущих сил, маховик: графически и точно",
-                "Робота, момент рушійних сил, маховик: графічно і точно",
-                "Work, driving moment, flywheel: graphical against exact",
-            )
-        }
-        .into(),
-        columns: vec![
-            (tr(lang, "величина", "величина", "quantity").into(), 22.0),
-            (tr(lang, "метод", "метод", "method").into(), 28.0),
-            (tr(lang, "графически", "графічно", "graphical").into(), 24.0),
-            (tr(lang, "точно", "точно", "exact").into(), 24.0),
-            ("δ, %".into(), 14.0),
-        ],
-        rows: body,
-        size_mm: TABLE_MM,
-    }
+    let title = if d.spec.constant_moment == ConstantMoment::Resisting {
+        DynamicsText::EngineResults
+    } else {
+        DynamicsText::MachineResults
+    };
+    super::layout::results_table(
+        &Results {
+            title: title.get(lang).into(),
+            columns: &[
+                (Column::Quantity, 22.0),
+                (Column::Method, 28.0),
+                (Column::Graphical, 24.0),
+                (Column::Exact, 24.0),
+                (Column::Error, 14.0),
+            ],
+            name: &|r| quantity(r, lang),
+            unit: &|_| String::new(),
+            value: &|_, x, _| format_sig(x, 5, lang),
+            error_decimals: 2,
+            size_mm: TABLE_MM,
+        },
+        &rows,
+        lang,
+    )
 }

@@ -5,8 +5,8 @@
 //! table of inertia loads and reactions (graphical | analytic | error) and the balancing
 //! moment by the polygon against the lever.
 
-use super::captions::{unit_in, Text};
-use super::layout::{lay_out, table, Block, ScaleKey};
+use super::captions::{symbols, unit_in, Text};
+use super::layout::{lay_out, results_table, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
@@ -161,36 +161,26 @@ fn cell(x: f64, scale: f64, lang: Lang) -> String {
 /// quantity | method | graphical | analytic | error, %.
 fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
     // The rows carry their zero references (the largest of their kind at the position).
-    let scales = crate::check::scales(rows);
-    let errors = crate::check::rel_errors(rows);
-    let body = rows
-        .iter()
-        .zip(scales.into_iter().zip(errors))
-        .map(|(r, (scale, e))| {
-            vec![
-                format!(
-                    "{}, {}",
-                    r.key.symbol.markup(&r.key.subject),
-                    unit_in(r.key.symbol.unit(), lang)
-                ),
-                r.method.name(lang).to_string(),
-                cell(r.graphical, scale, lang),
-                cell(r.analytic, scale, lang),
-                e.map_or_else(|| "—".into(), |e| format_fixed(e * 100.0, 2, lang)),
-            ]
-        })
-        .collect();
-    table(
-        Text::LoadsAndReactions,
-        &[
-            (Text::Quantity, 26.0),
-            (Text::Method, 42.0),
-            (Text::Graphical, 32.0),
-            (Text::Analytic, 34.0),
-            (Text::ErrorPct, 36.0),
-        ],
-        body,
-        TABLE_MM,
+    results_table(
+        &Results {
+            title: Text::LoadsAndReactions.get(lang).into(),
+            columns: &[
+                (Column::Quantity, 26.0),
+                (Column::Method, 42.0),
+                (Column::Graphical, 32.0),
+                (Column::Analytic, 34.0),
+                (Column::Error, 36.0),
+            ],
+            name: &|r| {
+                let name = symbols::quantity(r.key.symbol, &r.key.subject, lang);
+                format!("{name}, {}", unit_in(r.key.symbol.unit(), lang))
+            },
+            unit: &|_| String::new(),
+            value: &|_, x, scale| cell(x, scale, lang),
+            error_decimals: 2,
+            size_mm: TABLE_MM,
+        },
+        rows,
         lang,
     )
 }
@@ -216,7 +206,7 @@ fn balance_lines(rows: &[Row], lang: Lang) -> Vec<String> {
             };
             Some(format!(
                 "{}: {} {} {unit}, {} {} {unit}, {} {diff} %",
-                symbol.markup("bal"),
+                symbols::quantity(symbol, "bal", lang),
                 Text::ByPolygon.get(lang),
                 value(p, lang),
                 Text::ByLever.get(lang),

@@ -3,6 +3,7 @@
 //! circle and the reaction) and its force triangle at μ_F — with the closed forms and the
 //! table graphical | analytic | error. A2 landscape; further sheets when the cases need them.
 
+use super::captions::{unit_in, FrictionText, Text};
 use super::layout::{lay_out, Block, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
@@ -10,7 +11,6 @@ use crate::forces::friction::{
     incline_twin, journal_twin, rolling_twin, screw_twin, wedge_twin, CaseKind, Drawing,
     DrawingKind, Motion, Solved,
 };
-use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang, Quantity};
 use crate::study::Session;
@@ -20,60 +20,27 @@ const TEXT_MM: f64 = 3.5;
 /// Text height of the table, mm.
 const TABLE_MM: f64 = 2.5;
 
-/// A word of the sheet in `lang`.
-fn word(lang: Lang, ru: &'static str, uk: &'static str, en: &'static str) -> &'static str {
-    lang.pick(ru, uk, en)
-}
-
-/// What a drawing shows, as its caption says.
-fn what(kind: &CaseKind, d: DrawingKind, lang: Lang) -> &'static str {
-    match (d, kind) {
-        (DrawingKind::Scheme, CaseKind::Incline(_)) => word(
-            lang,
-            "наклонная плоскость",
-            "похила площина",
-            "inclined plane",
-        ),
-        (DrawingKind::Scheme, CaseKind::Wedge(_)) => word(
-            lang,
-            "клинчатый ползун, сечение",
-            "клинчастий повзун, переріз",
-            "V-groove slider, section",
-        ),
-        (DrawingKind::Scheme, CaseKind::Screw(_)) => word(
-            lang,
-            "развёртка резьбы",
-            "розгортка різьби",
-            "unrolled thread",
-        ),
-        (DrawingKind::Scheme, CaseKind::Journal(_)) => word(
-            lang,
-            "цапфа, круг трения",
-            "цапфа, коло тертя",
-            "journal, friction circle",
-        ),
-        (DrawingKind::Scheme, CaseKind::Rolling(_)) => word(
-            lang,
-            "груз на катках",
-            "вантаж на котках",
-            "load on rollers",
-        ),
-        (DrawingKind::Polygon | DrawingKind::Frictionless, _) => {
-            word(lang, "план сил", "план сил", "force triangle")
-        }
-        (DrawingKind::Flanks, _) => word(
-            lang,
-            "план сил: N₁, N₂; вид сбоку",
-            "план сил: N₁, N₂; вид збоку",
-            "forces: N₁, N₂; side view",
-        ),
-        (DrawingKind::Balance, _) => word(
-            lang,
-            "равновесие моментов",
-            "рівновага моментів",
-            "moment balance",
-        ),
-        (DrawingKind::Sliding, _) => word(lang, "без катков", "без котків", "without rollers"),
+/// What a drawing shows, as its caption says: the case's kind (and the sense of its motion),
+/// or the construction drawn.
+fn what(kind: &CaseKind, d: DrawingKind, lang: Lang) -> String {
+    let sense = |m: Motion| match m {
+        Motion::Up => FrictionText::Up,
+        Motion::Down => FrictionText::Down,
+    };
+    let (word, motion) = match (d, kind) {
+        (DrawingKind::Scheme, CaseKind::Incline(c)) => (FrictionText::Incline, Some(c.motion)),
+        (DrawingKind::Scheme, CaseKind::Wedge(_)) => (FrictionText::Wedge, None),
+        (DrawingKind::Scheme, CaseKind::Screw(c)) => (FrictionText::Screw, Some(c.motion)),
+        (DrawingKind::Scheme, CaseKind::Journal(_)) => (FrictionText::Journal, None),
+        (DrawingKind::Scheme, CaseKind::Rolling(_)) => (FrictionText::Rolling, None),
+        (DrawingKind::Polygon | DrawingKind::Frictionless, _) => (FrictionText::Triangle, None),
+        (DrawingKind::Flanks, _) => (FrictionText::Flanks, None),
+        (DrawingKind::Balance, _) => (FrictionText::Balance, None),
+        (DrawingKind::Sliding, _) => (FrictionText::Sliding, None),
+    };
+    match motion {
+        Some(m) => format!("{}, {}", word.get(lang), sense(m).get(lang)),
+        None => word.get(lang).to_string(),
     }
 }
 
@@ -86,9 +53,13 @@ fn mu(name: &str, value: f64, q: Quantity, lang: Lang) -> String {
     )
 }
 
-/// The caption of a drawing: the case, what it shows, its scales.
-fn caption(s: &Solved, d: &Drawing, lang: Lang) -> String {
-    let head = format!("{}: {}", s.case.name, what(&s.case.kind, d.kind, lang));
+/// The caption of a drawing of the case number `n`: the case, what it shows, its scales.
+fn caption(n: usize, s: &Solved, d: &Drawing, lang: Lang) -> String {
+    let head = format!(
+        "{} {n}: {}",
+        FrictionText::Case.get(lang),
+        what(&s.case.kind, d.kind, lang)
+    );
     let scales = match (d.kind, d.also.as_slice()) {
         (DrawingKind::Balance, [f, k, l]) => format!(
             "{}, μ_{{k}} = {}, μ_{{d}} = {} {}",
@@ -115,18 +86,17 @@ fn deg(x: f64, lang: Lang) -> String {
 
 /// A case's line, followed by its condition of self-braking when it holds.
 fn locking(first: String, condition: Option<String>, lang: Lang) -> Vec<String> {
-    let braking = word(lang, "самоторможение", "самогальмування", "self-braking");
+    let braking = FrictionText::SelfBraking.get(lang);
     std::iter::once(first)
         .chain(condition.map(|c| format!("{c} — {braking}")))
         .collect()
 }
 
-/// The closed forms of a case with their values, in label markup.
-fn lines(s: &Solved, lang: Lang) -> Vec<String> {
-    let n = &s.case.name;
-    let newton = word(lang, "Н", "Н", "N");
-    let nm = word(lang, "Н·м", "Н·м", "N·m");
-    let metre = word(lang, "м", "м", "m");
+/// The closed forms of the case number `n` with their values, in label markup.
+fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
+    let newton = unit_in("N", lang);
+    let nm = unit_in("N*m", lang);
+    let metre = unit_in("m", lang);
     let sign = |m: Motion| if m == Motion::Up { "+" } else { "−" };
     match &s.case.kind {
         CaseKind::Incline(c) => {
@@ -188,10 +158,11 @@ fn lines(s: &Solved, lang: Lang) -> Vec<String> {
                     lt(t.ratio2 < c.f2),
                     num(c.f2, lang),
                     if t.pure {
-                        word(lang, "чистое качение", "чисте кочення", "pure rolling")
+                        FrictionText::PureRolling
                     } else {
-                        word(lang, "катки скользят", "котки ковзають", "the rollers slide")
+                        FrictionText::RollersSlide
                     }
+                    .get(lang)
                 ),
                 format!(
                     "{n}: R_{{n1}} = Q, R_{{n2}} = Q + 2G; P = {} = {} {newton}; {}: P = Q·f_{{2}} = {} {newton}",
@@ -201,7 +172,7 @@ fn lines(s: &Solved, lang: Lang) -> Vec<String> {
                         Some(crate::forces::friction::Slide::OnPlane) => "(Q + 2G)·f_{2}",
                     },
                     num(t.p, lang),
-                    word(lang, "без катков", "без котків", "without rollers"),
+                    FrictionText::Sliding.get(lang),
                     num(t.p_sliding, lang)
                 ),
             ]
@@ -211,22 +182,17 @@ fn lines(s: &Solved, lang: Lang) -> Vec<String> {
 
 /// A unit of the table in `lang`.
 fn unit(r: &Row, lang: Lang) -> String {
-    let u = r.unit();
-    match (lang, u) {
-        (_, "1") => String::new(),
-        (_, "rad") => "°".into(),
-        (Lang::En, _) => u.replace('*', "·"),
-        (_, "N") => "Н".into(),
-        (_, "N*m") => "Н·м".into(),
-        (_, "m") => "м".into(),
-        _ => u.into(),
+    match r.unit() {
+        "1" => String::new(),
+        "rad" => "°".into(),
+        u => unit_in(u, lang),
     }
 }
 
 /// The table: case, quantity, graphical, analytic, error (angles in degrees).
 fn table(solved: &[Solved], lang: Lang) -> TableBlock {
     let mut rows = Vec::new();
-    for s in solved {
+    for (n, s) in solved.iter().enumerate() {
         for r in &s.readings {
             let row = &r.row;
             let shown = |x: f64| {
@@ -246,7 +212,7 @@ fn table(solved: &[Solved], lang: Lang) -> TableBlock {
                 .rel_error(row.scale)
                 .map_or("—".to_string(), |e| format_fixed(e * 100.0, 3, lang));
             rows.push(vec![
-                s.case.name.clone(),
+                (n + 1).to_string(),
                 symbol,
                 shown(row.graphical),
                 shown(row.analytic),
@@ -254,31 +220,19 @@ fn table(solved: &[Solved], lang: Lang) -> TableBlock {
             ]);
         }
     }
-    TableBlock {
-        at: DVec2::ZERO,
-        title: word(
-            lang,
-            "Графически и аналитически",
-            "Графічно й аналітично",
-            "Graphical against analytic",
-        )
-        .into(),
-        columns: vec![
-            (word(lang, "случай", "випадок", "case").into(), 18.0),
-            (word(lang, "величина", "величина", "quantity").into(), 18.0),
-            (
-                word(lang, "графически", "графічно", "graphical").into(),
-                22.0,
-            ),
-            (
-                word(lang, "аналитически", "аналітично", "analytic").into(),
-                22.0,
-            ),
-            ("δ, %".into(), 16.0),
+    super::layout::table(
+        Text::GraphicalAndAnalytic,
+        &[
+            (Text::Case, 18.0),
+            (Text::Quantity, 18.0),
+            (Text::Graphical, 22.0),
+            (Text::Analytic, 22.0),
+            (Text::RelativeError, 16.0),
         ],
         rows,
-        size_mm: TABLE_MM,
-    }
+        TABLE_MM,
+        lang,
+    )
 }
 
 /// Build the sheets.
@@ -287,15 +241,19 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let solved = session.friction()?;
     let mut blocks = Vec::new();
     let mut text = vec![super::drafting_line(session.drafting(), lang)];
-    for s in solved.iter() {
+    for (n, s) in solved.iter().enumerate() {
         for d in &s.drawings {
             let key = d.scaled.then_some(ScaleKey {
                 key: "friction.case.scale_f",
                 scale: d.figure.scale,
             });
-            blocks.push(Block::view(d.figure.clone(), caption(s, d, lang), key));
+            blocks.push(Block::view(
+                d.figure.clone(),
+                caption(n + 1, s, d, lang),
+                key,
+            ));
         }
-        text.extend(lines(s, lang));
+        text.extend(lines(n + 1, s, lang));
     }
     // The drawings fill the first sheet; the closed forms and the table follow them.
     blocks.push(Block::Text {
@@ -307,7 +265,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         size: SheetSize::A2,
         landscape: true,
     };
-    let sheet_title = word(lang, "Трение", "Тертя", "Friction");
+    let sheet_title = FrictionText::Title.get(lang);
     // The drawings have a scale each (their captions): the sheet has none.
     let none = crate::scale::Scale::new(1e-3, Quantity::Length).ok_or(BuildError::NoScale(1e-3))?;
     let mut title = super::title_block(scene, sheet_title, none, lang);

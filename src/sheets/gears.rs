@@ -3,60 +3,36 @@
 //! with its rack positions (and undercut), the data and results, and the table of what was
 //! read off the drawings against the analytic values. A1 landscape.
 
-use super::layout::{lay_out_smallest, Block, ScaleKey};
+use super::captions::{unit_in, GearText, Text};
+use super::layout::{lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
-use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang};
+use crate::scale::{format_sig, Lang};
 use crate::study::Session;
 
 /// Text height of the data lines and the table, mm.
 const TEXT_MM: f64 = 3.5;
 const TABLE_MM: f64 = 2.5;
 
-/// A word of the sheet in ru, uk, en.
-fn tr(lang: Lang, ru: &'static str, uk: &'static str, en: &'static str) -> &'static str {
-    lang.pick(ru, uk, en)
-}
-
 /// Build the gear sheet of the scene.
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
     let g = session.gears()?;
     let mut blocks = Vec::new();
-    let mut lines = vec![tr(
-        lang,
-        "Исходные данные и результаты",
-        "Вихідні дані та результати",
-        "Data and results",
-    )
-    .to_string()];
+    let mm_ = unit_in("mm", lang);
+    let mut lines = vec![GearText::DataAndResults.get(lang).to_string()];
     let mut plan = None;
     if let Some((p, m)) = &g.pair {
         plan = Some(m.scale);
-        let caption = format!(
-            "{}, {}",
-            tr(
-                lang,
-                "Картина зацепления",
-                "Картина зачеплення",
-                "Meshing picture"
-            ),
-            m.scale.caption(lang)
-        );
+        let caption = format!("{}, {}", GearText::Meshing.get(lang), m.scale.caption(lang));
         blocks.push(view(&m.figure, caption, "gears.scale_l", m.scale));
         let caption = format!(
             "{}: λ_1, λ_2 {} N_1N_2, λ = 1 ↔ {} {}",
-            tr(
-                lang,
-                "Удельное скольжение",
-                "Питоме ковзання",
-                "Specific sliding"
-            ),
-            tr(lang, "вдоль", "уздовж", "along"),
+            GearText::Sliding.get(lang),
+            GearText::Along.get(lang),
             format_sig(crate::gears::mesh::LAMBDA_MM, 3, lang),
-            tr(lang, "мм", "мм", "mm"),
+            mm_,
         );
         blocks.push(view(&m.sliding, caption, "gears.scale_l", m.scale));
         let mm = |x: f64| format_sig(x * 1e3, 6, lang);
@@ -67,7 +43,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             p.spec.z[1],
             format_sig(p.spec.x[0], 4, lang),
             format_sig(p.spec.x[1], 4, lang),
-            u = tr(lang, "мм", "мм", "mm"),
+            u = mm_,
         ));
         lines.push(format!(
             "α_w = {}°, a_w = {}, y = {}, Δy = {}",
@@ -98,23 +74,13 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         let c = &r.cutting;
         let caption = format!(
             "{} z = {}, x = {}, N = {}, {}{}",
-            tr(
-                lang,
-                "Нарезание рейкой:",
-                "Нарізання рейкою:",
-                "Cut by the rack:"
-            ),
+            GearText::CutByRack.get(lang),
             c.z,
             format_sig(c.x, 4, lang),
             r.steps,
             r.scale.caption(lang),
             if r.undercut {
-                tr(
-                    lang,
-                    "; подрез заштрихован",
-                    "; підріз заштриховано",
-                    "; the undercut hatched",
-                )
+                GearText::UndercutHatched.get(lang)
             } else {
                 ""
             }
@@ -127,14 +93,14 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             format_sig(c.x, 4, lang),
             format_sig(c.x_min(), 4, lang),
             format_sig(r.sa * 1e3, 4, lang),
-            tr(lang, "мм", "мм", "mm"),
+            mm_,
             if r.undercut {
-                tr(lang, ", подрез", ", підріз", ", undercut")
+                GearText::Undercut.get(lang)
             } else {
                 ""
             },
             if r.pointed {
-                tr(lang, ", заострение", ", загострення", ", pointed")
+                GearText::Pointed.get(lang)
             } else {
                 ""
             },
@@ -144,43 +110,34 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         let tri = &t.triangles;
         let caption = format!(
             "{}, {}, {}, H = {} {}",
-            tr(
-                lang,
-                "Треугольники скоростей и план угловых скоростей",
-                "Трикутники швидкостей і план кутових швидкостей",
-                "Velocity triangles and the plan of angular velocities"
-            ),
+            GearText::Triangles.get(lang),
             tri.scale_l.caption(lang),
             tri.scale_v.caption(lang),
             format_sig(crate::gears::triangles::PLAN_H, 3, lang),
-            tr(lang, "мм", "мм", "mm"),
+            mm_,
         );
         blocks.push(view(&tri.figure, caption, "planetary.module", tri.scale_v));
         let tr_ = &t.spec.train;
         for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
             let Some(s) = s else { continue };
             lines.push(format!(
-                "u_{{{}-{}}}{sup} = {} (Willis), {} ({})",
+                "u_{{{}-{}}}{sup} = {} ({}), {} ({})",
                 tr_.shafts[tr_.input],
                 tr_.shafts[tr_.output],
                 format_sig(s.ratio, 6, lang),
+                GearText::Willis.get(lang),
                 format_sig(s.triangles.ratio, 6, lang),
-                tr(lang, "треугольники", "трикутники", "triangles"),
+                GearText::ByTriangles.get(lang),
             ));
         }
         if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {
             lines.push(format!(
                 "k = {k}: {} {}",
-                tr(
-                    lang,
-                    "условие сборки",
-                    "умова складання",
-                    "assembly condition"
-                ),
+                GearText::Assembly.get(lang),
                 match (a.fits(), a.p) {
                     (true, Some(p)) => format!("p = {p}"),
-                    (true, None) => tr(lang, "выполнено", "виконано", "holds").to_string(),
-                    (false, _) => tr(lang, "не выполнено", "не виконано", "fails").to_string(),
+                    (true, None) => GearText::Holds.get(lang).to_string(),
+                    (false, _) => GearText::Fails.get(lang).to_string(),
                 },
             ));
         }
@@ -197,12 +154,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     else {
         return Ok(Vec::new());
     };
-    let title = super::title_block(
-        scene,
-        tr(lang, "Зубчатые передачи", "Зубчасті передачі", "Gears"),
-        plan,
-        lang,
-    );
+    let title = super::title_block(scene, GearText::Title.get(lang), plan, lang);
     // The course project's whole gear sheet is an A1; a practicum's part of it (a pair, a
     // cut wheel, a train) goes on the smallest sheet that holds it.
     lay_out_smallest(
@@ -224,53 +176,31 @@ fn view(
     Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))
 }
 
-/// The table graphical | analytic | error of the rows.
+/// The table graphical | analytic | error of the rows (lengths in mm).
 fn table(rows: &[Row], lang: Lang) -> TableBlock {
-    let errors = crate::check::rel_errors(rows);
-    let body = rows
-        .iter()
-        .zip(errors)
-        .map(|(r, e)| {
-            let at = r.position().map_or_else(String::new, |p| format!(" ({p})"));
-            let k = if r.key.symbol.unit() == "m" { 1e3 } else { 1.0 };
-            let unit = if k == 1e3 {
-                tr(lang, "мм", "мм", "mm")
-            } else if r.key.symbol.unit() == "deg" {
-                "°"
-            } else {
-                ""
-            };
-            vec![
-                format!("{}{at}", r.key.symbol.markup(&r.key.subject)),
-                r.method.name(lang).to_string(),
-                unit.to_string(),
-                format_sig(r.graphical * k, 7, lang),
-                format_sig(r.analytic * k, 7, lang),
-                e.map_or_else(|| "—".into(), |e| format_fixed(e * 100.0, 4, lang)),
-            ]
-        })
-        .collect();
-    TableBlock {
-        at: DVec2::ZERO,
-        title: tr(
-            lang,
-            "Графическое решение и аналитический расчёт",
-            "Графічний розв'язок і аналітичний розрахунок",
-            "Graphical against analytic",
-        )
-        .into(),
-        columns: vec![
-            (tr(lang, "величина", "величина", "quantity").into(), 26.0),
-            (tr(lang, "метод", "метод", "method").into(), 36.0),
-            (tr(lang, "ед.", "од.", "unit").into(), 10.0),
-            (tr(lang, "графически", "графічно", "graphical").into(), 24.0),
-            (
-                tr(lang, "аналитически", "аналітично", "analytic").into(),
-                26.0,
-            ),
-            ("δ, %".into(), 16.0),
-        ],
-        rows: body,
-        size_mm: TABLE_MM,
-    }
+    let mm = |r: &Row| r.key.symbol.unit() == "m";
+    results_table(
+        &Results {
+            title: Text::GraphicalAndAnalytic.get(lang).into(),
+            columns: &[
+                (Column::Quantity, 26.0),
+                (Column::Method, 36.0),
+                (Column::Unit, 10.0),
+                (Column::Graphical, 24.0),
+                (Column::Analytic, 26.0),
+                (Column::Error, 16.0),
+            ],
+            name: &|r| quantity(r, lang),
+            unit: &|r| match r.key.symbol.unit() {
+                "m" => unit_in("mm", lang),
+                "deg" => "°".into(),
+                _ => String::new(),
+            },
+            value: &|r, x, _| format_sig(if mm(r) { x * 1e3 } else { x }, 7, lang),
+            error_decimals: 4,
+            size_mm: TABLE_MM,
+        },
+        rows,
+        lang,
+    )
 }

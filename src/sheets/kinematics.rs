@@ -4,10 +4,10 @@
 //! The scales are the session's ([`Session::kin_scales`]: decided once, each fitted to its
 //! field), so the sheet draws the very plans the report reads.
 
-use super::captions::{unit_in, Text};
+use super::captions::{symbols, unit_in, Text};
 use super::layout::{lay_out, split_table, table, Block, ScaleKey};
 use super::BuildError;
-use crate::check::{Method, Report};
+use crate::check::Method;
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
@@ -147,7 +147,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     });
     // The analytic table has a row per position: continued on further sheets when long.
     blocks.extend(
-        tables(&a, scene, lang)
+        tables(&a, lang)
             .into_iter()
             .flat_map(|t| split_table(&sheet, t, lang))
             .map(Block::Table),
@@ -158,10 +158,10 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
 
 /// A quantity of the error table in the textbook's notation (`ω_{1}`, `V_{B3B1}`), from the
 /// key of its first row.
-fn symbol_of(rows: &[crate::check::Row], quantity: &str) -> String {
+fn symbol_of(rows: &[crate::check::Row], quantity: &str, lang: Lang) -> String {
     rows.iter().find(|r| r.quantity() == quantity).map_or_else(
         || quantity.to_string(),
-        |r| r.key.symbol.markup(&r.key.subject),
+        |r| symbols::quantity(r.key.symbol, &r.key.subject, lang),
     )
 }
 
@@ -177,7 +177,7 @@ pub(super) fn cell(x: f64, scale: f64, lang: Lang) -> String {
 
 /// The analytic table and the error estimates (section 1.6 of the seed), side by side, kept
 /// left of the title block.
-fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang) -> Vec<TableBlock> {
+fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
     let size = 2.5;
     let t = &a.table;
     let pos_w = 9.0;
@@ -221,18 +221,13 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang) -> Vec<TableB
         rows,
         size_mm: size,
     };
-    let report = Report {
-        scene: scene.stem.clone(),
-        // The displacement is a reading, not a derived quantity: it has no error estimate.
-        rows: a
-            .rows()
-            .into_iter()
-            .filter(|r| r.key.symbol != crate::check::Symbol::Displacement)
-            .collect(),
-        tables: Vec::new(),
-        notes: Vec::new(),
-    };
-    let summary = report.summary();
+    // The displacement is a reading, not a derived quantity: it has no error estimate.
+    let read: Vec<_> = a
+        .rows()
+        .into_iter()
+        .filter(|r| r.key.symbol != crate::check::Symbol::Displacement)
+        .collect();
+    let summary = crate::check::Summary::of(&read);
     let method = |m: Method| m.name(lang).to_string();
     // Diagrams first (the textbook's comparison), then by the error as displayed (0.01 %),
     // ties in report order: rounding noise must not reorder the table.
@@ -248,7 +243,7 @@ fn tables(a: &Kinematics, scene: &crate::scene::Scene, lang: Lang) -> Vec<TableB
                 "—".into()
             };
             vec![
-                symbol_of(&report.rows, &e.quantity),
+                symbol_of(&read, &e.quantity, lang),
                 method(e.method),
                 format_fixed(e.mean_abs_rel * 100.0, 2, lang),
                 format_fixed(e.max_abs_rel * 100.0, 2, lang),

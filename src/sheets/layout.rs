@@ -1,9 +1,10 @@
 //! What a sheet holds — views, stacks of views, text and tables — sized from what they really
 //! draw and laid out on as many sheets of a format as they need ([`super::pack`]).
 
-use super::captions::Text;
+use super::captions::{symbols, Text};
 use super::pack::{pack, sheet_overflow};
 use super::BuildError;
+use crate::check::Row;
 use crate::construct::fit::{raised, LABEL_MARGIN};
 use crate::construct::Figure;
 use crate::geom::DVec2;
@@ -11,7 +12,7 @@ use crate::plate::{
     text, Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM,
     CAPTION_HEIGHT_MM,
 };
-use crate::scale::{Lang, Scale};
+use crate::scale::{format_fixed, Lang, Scale};
 
 /// The scale a block is drawn at and the scene key that sets it, for the message when the
 /// block does not fit a sheet.
@@ -54,6 +55,49 @@ impl Block {
             parts: vec![(figure, DVec2::ZERO)],
             caption: Some(caption),
             scale,
+        }
+    }
+
+    /// The block with every subscript of its labels, caption, lines and cells in `lang`
+    /// ([`symbols::localise`]): the domains label their drawings in the Russian textbooks'
+    /// markup.
+    fn localised(self, lang: Lang) -> Self {
+        if lang == Lang::Ru {
+            return self;
+        }
+        let l = |s: &str| symbols::localise(s, lang);
+        match self {
+            Block::Views {
+                parts,
+                caption,
+                scale,
+            } => Block::Views {
+                parts: parts
+                    .into_iter()
+                    .map(|(mut figure, off)| {
+                        for label in figure.steps.iter_mut().filter_map(|s| s.label.as_mut()) {
+                            label.text = l(&label.text);
+                        }
+                        (figure, off)
+                    })
+                    .collect(),
+                caption: caption.as_deref().map(l),
+                scale,
+            },
+            Block::Text { lines, size_mm } => Block::Text {
+                lines: lines.iter().map(|x| l(x)).collect(),
+                size_mm,
+            },
+            Block::Table(t) => Block::Table(TableBlock {
+                title: l(&t.title),
+                columns: t.columns.iter().map(|(c, w)| (l(c), *w)).collect(),
+                rows: t
+                    .rows
+                    .iter()
+                    .map(|r| r.iter().map(|x| l(x)).collect())
+                    .collect(),
+                ..t
+            }),
         }
     }
 
@@ -122,7 +166,99 @@ pub(super) fn table(
     }
 }
 
-/// Room above a table's grid for its title, mm.
+/// A column of a graphical-against-analytic table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Column {
+    /// The quantity in the textbook's notation, with its position when it has one.
+    Quantity,
+    /// The method the graphical value was found by.
+    Method,
+    /// The unit.
+    Unit,
+    /// The graphical value.
+    Graphical,
+    /// The analytic value, headed "analytic".
+    Analytic,
+    /// The analytic value, headed "exact".
+    Exact,
+    /// The relative error, %.
+    Error,
+}
+
+/// How a graphical-against-analytic table writes its rows.
+pub(super) struct Results<'a> {
+    /// The title.
+    pub title: String,
+    /// The columns with their widths, mm.
+    pub columns: &'a [(Column, f64)],
+    /// A row's quantity (usually [`quantity`]).
+    pub name: &'a dyn Fn(&Row) -> String,
+    /// A row's unit in the sheet's language.
+    pub unit: &'a dyn Fn(&Row) -> String,
+    /// A value of a row, given the row's zero reference ([`crate::check::scales`]).
+    pub value: &'a dyn Fn(&Row, f64, f64) -> String,
+    /// Decimals of the error, %.
+    pub error_decimals: usize,
+    /// Text height, mm.
+    pub size_mm: f64,
+}
+
+/// A row's quantity in the textbook's notation in `lang`, its position in brackets.
+pub(super) fn quantity(r: &Row, lang: Lang) -> String {
+    let name = symbols::quantity(r.key.symbol, &r.key.subject, lang);
+    match r.position() {
+        Some(p) => format!("{name} ({p})"),
+        None => name,
+    }
+}
+
+/// The table "graphical | analytic | error" of `rows`, the columns as `results` asks.
+pub(super) fn results_table(results: &Results<'_>, rows: &[Row], lang: Lang) -> TableBlock {
+    let errors = crate::check::rel_errors(rows);
+    let scales = crate::check::scales(rows);
+    let body = rows
+        .iter()
+        .zip(errors.into_iter().zip(scales))
+        .map(|(r, (e, s))| {
+            results
+                .columns
+                .iter()
+                .map(|(c, _)| match c {
+                    Column::Quantity => (results.name)(r),
+                    Column::Method => r.method.name(lang).to_string(),
+                    Column::Unit => (results.unit)(r),
+                    Column::Graphical => (results.value)(r, r.graphical, s),
+                    Column::Analytic | Column::Exact => (results.value)(r, r.analytic, s),
+                    Column::Error => e.map_or_else(
+                        || "—".into(),
+                        |e| format_fixed(e * 100.0, results.error_decimals, lang),
+                    ),
+                })
+                .collect()
+        })
+        .collect();
+    let heading = |c: Column| match c {
+        Column::Quantity => Text::Quantity.get(lang),
+        Column::Method => Text::Method.get(lang),
+        Column::Unit => Text::Unit.get(lang),
+        Column::Graphical => Text::Graphical.get(lang),
+        Column::Analytic => Text::Analytic.get(lang),
+        Column::Exact => Text::Exact.get(lang),
+        Column::Error => Text::RelativeError.get(lang),
+    };
+    TableBlock {
+        at: DVec2::ZERO,
+        title: results.title.clone(),
+        columns: results
+            .columns
+            .iter()
+            .map(|&(c, w)| (heading(c).to_string(), w))
+            .collect(),
+        rows: body,
+        size_mm: results.size_mm,
+    }
+}
+
 /// A table too tall for an empty sheet cut into parts that each fit, the rows in order; the
 /// parts after the first titled "… (continued)". A table that fits, or whose width alone does
 /// not, is returned whole.
@@ -159,6 +295,7 @@ pub(super) fn split_table(sheet: &Sheet, t: TableBlock, lang: Lang) -> Vec<Table
         .collect()
 }
 
+/// Room above a table's grid for its title, mm.
 fn title_height(t: &TableBlock) -> f64 {
     if t.title.is_empty() {
         0.0
@@ -249,6 +386,7 @@ pub(super) fn lay_out(
     title: &TitleBlock,
     lang: Lang,
 ) -> Result<Vec<Plate>, BuildError> {
+    let blocks: Vec<Block> = blocks.into_iter().map(|b| b.localised(lang)).collect();
     let sizes: Vec<DVec2> = blocks.iter().map(Block::size).collect();
     let placed = pack(&sheet, &sizes).map_err(|k| too_large(&sheet, &blocks, &sizes, k))?;
     let count = placed.iter().map(|p| p.0 + 1).max().unwrap_or(1);

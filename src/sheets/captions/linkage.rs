@@ -1,0 +1,68 @@
+//! The words of the linkage sheets (positions, kinematics, forces) and those every sheet
+//! shares (the results tables' headings, "data").
+
+use super::catalogue;
+
+catalogue! {
+    /// A caption or word of the linkage sheets, or one every sheet shares.
+    Text {
+        Pos => ("Пол.", "Пол.", "Pos."),
+        NoPlan => ("план не существует:", "план не існує:", "no plan:"),
+        TogglePosition => ("особое положение", "особливе положення", "toggle position"),
+        AccelerationPlanAt => ("План ускорений, пол.", "План прискорень, пол.", "Acceleration plan, pos."),
+        VelocityPlans => ("Планы скоростей", "Плани швидкостей", "Velocity plans"),
+        AccelerationPlans => ("планы ускорений", "плани прискорень", "acceleration plans"),
+        DiagramsOfPoint => ("Диаграммы точки", "Діаграми точки", "Diagrams of point"),
+        Hodograph => ("Годограф", "Годограф", "Hodograph"),
+        KinematicAnalysis => ("Кинематический анализ", "Кінематичний аналіз", "Kinematic analysis"),
+        AnalyticSolution => ("Аналитический расчёт", "Аналітичний розрахунок", "Analytic solution"),
+        MethodErrors => ("Погрешность графических методов", "Похибка графічних методів", "Errors of the graphical methods"),
+        Quantity => ("величина", "величина", "quantity"),
+        Method => ("метод", "метод", "method"),
+        PosShort => ("пол.", "пол.", "pos."),
+        PlanOfMechanism => ("План положений механизма", "План положень механізму", "Plan of positions"),
+        PlanOfPositions => ("План положений", "План положень", "Plan of positions"),
+        StructuralScheme => ("Структурная схема", "Структурна схема", "Structural scheme"),
+        OfKind => ("вида", "виду", ""),
+        StructuralAnalysis => ("Структурный анализ", "Структурний аналіз", "Structural analysis"),
+        WithPair => ("С парой", "З парою", "With pair"),
+        RedundantPair => ("избыточная пара", "надлишкова пара", "redundant pair"),
+        StructureFormula => ("Формула строения", "Формула будови", "Structure formula"),
+        ExtremePositions => ("Крайние положения", "Крайні положення", "Extreme positions"),
+        WorkingStroke => ("Рабочий ход: поворот кривошипа на", "Робочий хід: поворот кривошипа на", "Working stroke: crank turns"),
+        Return => ("холостой —", "холостий —", "return —"),
+        SwingOfLink => ("Угол размаха звена", "Кут розмаху ланки", "Swing of link"),
+        StrokeOfPoint => ("Ход точки", "Хід точки", "Stroke of point"),
+        Metre => ("м", "м", "m"),
+        Millimetre => ("мм", "мм", "mm"),
+        NoDiagrams => ("Диаграммы по углу поворота не строятся: механизм не проходит положение", "Діаграми за кутом повороту не будуються: механізм не проходить положення", "No diagrams over the crank turn: the mechanism cannot pass"),
+        NoDiagramsLeap => ("Диаграммы по углу поворота не строятся: звено поворачивается скачком около положения", "Діаграми за кутом повороту не будуються: ланка повертається стрибком біля положення", "No diagrams over the crank turn: a link turns by a leap near"),
+        Continued => ("(продолжение)", "(продовження)", "(continued)"),
+        ReadTo => ("Длины считаны с чертежа с точностью", "Довжини зчитано з креслення з точністю", "Lengths read off the drawing to"),
+        ReadExactly => ("Длины считаны с чертежа точно (без округления)", "Довжини зчитано з креслення точно (без округлення)", "Lengths read off the drawing exactly (no rounding)"),
+        MeanError => ("δ ср., %", "δ сер., %", "δ mean, %"),
+        MaxError => ("δ max, %", "δ max, %", "δ max, %"),
+        ForceAnalysis => ("Силовой анализ", "Силовий аналіз", "Force analysis"),
+        Position => ("положение", "положення", "position"),
+        Group => ("Группа", "Група", "Group"),
+        ForcePolygonOfGroup => ("План сил группы", "План сил групи", "Force polygon of group"),
+        DrivingLink => ("Ведущее звено", "Ведуча ланка", "Driving link"),
+        ForcePolygonOfDriver => ("План сил ведущего звена", "План сил ведучої ланки", "Force polygon of the driving link"),
+        ZhukovskyLever => ("Рычаг Жуковского", "Важіль Жуковського", "Zhukovsky's lever"),
+        LoadsAndReactions => ("Силы инерции и реакции в кинематических парах", "Сили інерції та реакції в кінематичних парах", "Inertia loads and reactions in the pairs"),
+        Graphical => ("графически", "графічно", "graphical"),
+        Analytic => ("аналитически", "аналітично", "analytic"),
+        ByPolygon => ("по плану сил", "за планом сил", "by the force polygon"),
+        ByLever => ("по рычагу Жуковского", "за важелем Жуковського", "by Zhukovsky's lever"),
+        Difference => ("расхождение", "розбіжність", "difference"),        RelativeError => ("δ, %", "δ, %", "δ, %"),
+        Case => ("случай", "випадок", "case"),
+        Data => ("Исходные данные", "Вихідні дані", "Data"),
+        Unit => ("ед.", "од.", "unit"),
+        Exact => ("точно", "точно", "exact"),
+        GraphicalAndAnalytic => (
+            "Графическое решение и аналитический расчёт",
+            "Графічний розв'язок і аналітичний розрахунок",
+            "Graphical against analytic"
+        ),
+    }
+}

@@ -1,0 +1,163 @@
+//! The words of the machine sheets: the rotor, the machine's dynamics, gears, cams and
+//! friction.
+
+use super::catalogue;
+
+catalogue! {
+    /// A word of the rotor's sheet.
+    RotorText {
+        MomentsPolygon => ("План моментов m·ρ·z", "План моментів m·ρ·z", "Polygon of moments m·ρ·z"),
+        StaticMomentsPolygon => (
+            "План статических моментов m·ρ",
+            "План статичних моментів m·ρ",
+            "Polygon of static moments m·ρ"
+        ),
+        Complete => ("Полное уравновешивание ротора", "Повне зрівноваження ротора", "Complete balancing of a rotor"),
+        Static => ("Статическое уравновешивание ротора", "Статичне зрівноваження ротора", "Static balancing of a rotor"),
+        Rotor => ("Ротор", "Ротор", "Rotor"),
+        AlongAxis => ("Вид вдоль оси", "Вид уздовж осі", "View along the axis"),
+        Disc => ("Ротор (диск)", "Ротор (диск)", "Rotor (disc)"),
+        CorrectingMasses => ("Уравновешивающие массы", "Зрівноважувальні маси", "Correcting masses"),
+        After => ("после", "після", "after"),
+        Before => ("до", "до", "before"),
+    }
+}
+
+catalogue! {
+    /// A word of the dynamics sheet.
+    DynamicsText {
+        EnergyMass => ("Диаграмма энергомасс ΔT(J_{пр})", "Діаграма енергомас ΔT(J_{пр})", "Energy–mass diagram ΔT(J_{пр})"),
+        OmegaWithFlywheel => ("ω(φ) с маховиком", "ω(φ) з маховиком", "ω(φ) with the flywheel"),
+        Flywheel => ("Маховик", "Маховик", "Flywheel"),
+        Title => ("Динамика машины", "Динаміка машини", "Machine dynamics"),
+        NoFlywheel => ("маховик не нужен", "маховик не потрібен", "no flywheel is needed"),
+        Wittenbauer => ("(Виттенбауэр)", "(Віттенбауер)", "(Wittenbauer)"),
+        Merkin => ("Меркин", "Меркін", "Merkin"),
+        Rim => ("обод", "обід", "rim"),
+        Disc => ("диск", "диск", "disc"),
+        Tables => (
+            "Таблицы 9, 10: {M}, J_{пр}, ΔT (графически | аналитически | δ, %)",
+            "Таблиці 9, 10: {M}, J_{пр}, ΔT (графічно | аналітично | δ, %)",
+            "Tables 9, 10: {M}, J_{пр}, ΔT (graphical | analytic | δ, %)"
+        ),
+        EngineResults => (
+            "A_{д}, M_{с}, маховик: графически и точно",
+            "A_{д}, M_{с}, маховик: графічно і точно",
+            "A_{д}, M_{с}, flywheel: graphical against exact"
+        ),
+        MachineResults => (
+            "Работа, момент движущих сил, маховик: графически и точно",
+            "Робота, момент рушійних сил, маховик: графічно і точно",
+            "Work, driving moment, flywheel: graphical against exact"
+        ),
+    }
+}
+
+catalogue! {
+    /// A word of the gear sheet.
+    GearText {
+        DataAndResults => ("Исходные данные и результаты", "Вихідні дані та результати", "Data and results"),
+        Meshing => ("Картина зацепления", "Картина зачеплення", "Meshing picture"),
+        Sliding => ("Удельное скольжение", "Питоме ковзання", "Specific sliding"),
+        Along => ("вдоль", "уздовж", "along"),
+        CutByRack => ("Нарезание рейкой:", "Нарізання рейкою:", "Cut by the rack:"),
+        UndercutHatched => ("; подрез заштрихован", "; підріз заштриховано", "; the undercut hatched"),
+        Undercut => (", подрез", ", підріз", ", undercut"),
+        Pointed => (", заострение", ", загострення", ", pointed"),
+        Triangles => (
+            "Треугольники скоростей и план угловых скоростей",
+            "Трикутники швидкостей і план кутових швидкостей",
+            "Velocity triangles and the plan of angular velocities"
+        ),
+        Willis => ("формула Виллиса", "формула Вілліса", "Willis"),
+        ByTriangles => ("треугольники", "трикутники", "triangles"),
+        Assembly => ("условие сборки", "умова складання", "assembly condition"),
+        Holds => ("выполнено", "виконано", "holds"),
+        Fails => ("не выполнено", "не виконано", "fails"),
+        Title => ("Зубчатые передачи", "Зубчасті передачі", "Gears"),
+    }
+}
+
+catalogue! {
+    /// A word of the cam sheet.
+    CamText {
+        FlatCombined => (
+            "Совмещённая диаграмма S(d^2S/dφ^2), касательная 45°",
+            "Суміщена діаграма S(d^2S/dφ^2), дотична 45°",
+            "Combined diagram S(d^2S/dφ^2), the 45° tangent"
+        ),
+        RockerCombined => (
+            "Определение r_{min}: dS/dφ по коромыслу, лучи γ_{min}",
+            "Визначення r_{min}: dS/dφ уздовж коромисла, промені γ_{min}",
+            "r_{min}: dS/dφ along the rocker, the γ_{min} lines"
+        ),
+        TranslatingCombined => (
+            "Совмещённая диаграмма S(dS/dφ), зона центра",
+            "Суміщена діаграма S(dS/dφ), зона центру",
+            "Combined diagram S(dS/dφ), the centre's zone"
+        ),
+        Profile => ("Профиль кулачка (обращение движения)", "Профіль кулачка (обернення руху)", "Cam profile by inversion"),
+        TransmissionAngle => ("Угол передачи γ(φ)", "Кут передачі γ(φ)", "Transmission angle γ(φ)"),
+        PressureAngle => ("Угол давления λ(φ)", "Кут тиску λ(φ)", "Pressure angle λ(φ)"),
+        Title => ("Синтез кулачкового механизма", "Синтез кулачкового механізму", "Cam mechanism synthesis"),
+        Uniform => ("равномерный (жёсткие удары)", "рівномірний (жорсткі удари)", "uniform (rigid shocks)"),
+        Ratio => ("доля разгона", "частка розгону", "ratio"),
+        Cosine => ("косинусоидальный", "косинусоїдальний", "cosine"),
+        Sine => ("синусоидальный", "синусоїдальний", "sine (cycloidal)"),
+        Trapezoidal => ("трапецеидальный", "трапецієподібний", "trapezoidal"),
+        Polynomial => ("полином 3-4-5", "поліном 3-4-5", "3-4-5 polynomial"),
+        Phases => (
+            "φ_{у} = {rise}°, φ_{д.в.} = {far}°, φ_{п} = {ret}°, φ_{б.в.} = {near}°",
+            "φ_{в} = {rise}°, φ_{д.в.} = {far}°, φ_{н} = {ret}°, φ_{б.в.} = {near}°",
+            "φ_{rise} = {rise}°, φ_{far} = {far}°, φ_{ret} = {ret}°, φ_{near} = {near}°"
+        ),
+        Clockwise => ("Кулачок вращается по часовой стрелке", "Кулачок обертається за годинниковою стрілкою", "The cam turns clockwise"),
+        CounterClockwise => (
+            "Кулачок вращается против часовой стрелки",
+            "Кулачок обертається проти годинникової стрілки",
+            "The cam turns counter-clockwise"
+        ),
+        RiseLaw => ("закон удаления", "закон віддалення", "rise law"),
+        ReturnLaw => ("приближения", "наближення", "return"),
+        LawAssumed => (
+            "Диаграммы источника утеряны: закон движения принят",
+            "Діаграми джерела втрачено: закон руху прийнято",
+            "The source's diagrams are lost: the law is assumed"
+        ),
+        SourceSays => ("В источнике", "У джерелі", "The source's"),
+        Erratum => ("— не согласовано с γ_{min} (ошибка)", "— не узгоджено з γ_{min} (помилка)", "is inconsistent with γ_{min} (erratum)"),
+        Undercut => ("ПОДРЕЗ: r_{р} >", "ПІДРІЗ: r_{р} >", "UNDERCUT: r_{р} >"),
+        Cusp => (
+            "ЗАОСТРЕНИЕ: профиль вогнутый, r_{0} + S + S″ < 0",
+            "ЗАГОСТРЕННЯ: профіль угнутий, r_{0} + S + S″ < 0",
+            "CUSP: the profile is concave, r_{0} + S + S″ < 0"
+        ),
+        RigidShocks => ("Жёсткие удары на границах фаз", "Жорсткі удари на межах фаз", "Rigid shocks at the phase ends"),
+        WrongSide => ("Смещение e с неблагоприятной стороны", "Зміщення e з несприятливого боку", "The offset e is on the unfavourable side"),
+        Read => ("граф.", "граф.", "graph."),
+        Points => ("Точки диаграмм и профиля", "Точки діаграм і профілю", "Points of the diagrams and the profile"),
+        Results => ("Графически и точно, мм", "Графічно і точно, мм", "Graphical against exact, mm"),
+    }
+}
+
+catalogue! {
+    /// A word of the friction sheet.
+    FrictionText {
+        Case => ("Случай", "Випадок", "Case"),
+        Incline => ("наклонная плоскость", "похила площина", "inclined plane"),
+        Up => ("подъём", "підйом", "up"),
+        Down => ("спуск", "спуск", "down"),
+        Wedge => ("клинчатый ползун, сечение", "клинчастий повзун, переріз", "V-groove slider, section"),
+        Screw => ("развёртка резьбы", "розгортка різьби", "unrolled thread"),
+        Journal => ("цапфа, круг трения", "цапфа, коло тертя", "journal, friction circle"),
+        Rolling => ("груз на катках", "вантаж на котках", "load on rollers"),
+        Triangle => ("план сил", "план сил", "force triangle"),
+        Flanks => ("план сил: N₁, N₂; вид сбоку", "план сил: N₁, N₂; вид збоку", "forces: N₁, N₂; side view"),
+        Balance => ("равновесие моментов", "рівновага моментів", "moment balance"),
+        Sliding => ("без катков", "без котків", "without rollers"),
+        SelfBraking => ("самоторможение", "самогальмування", "self-braking"),
+        PureRolling => ("чистое качение", "чисте кочення", "pure rolling"),
+        RollersSlide => ("катки скользят", "котки ковзають", "the rollers slide"),
+        Title => ("Трение", "Тертя", "Friction"),
+    }
+}

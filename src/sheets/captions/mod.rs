@@ -1,0 +1,91 @@
+//! The captions, words and symbols of the sheets in the three languages, in one catalogue:
+//! the words of the linkage sheets and those every sheet shares ([`Text`]), the words of
+//! each machine sheet ([`machines`]), and the textbook's symbols with their subscripts
+//! ([`symbols`]). A sheet writes no word of its own.
+
+mod linkage;
+mod machines;
+pub(super) mod symbols;
+
+pub(super) use linkage::Text;
+pub(super) use machines::{CamText, DynamicsText, FrictionText, GearText, RotorText};
+
+use crate::scale::Lang;
+
+/// Declares a catalogue enum: every variant with its text in ru, uk and en (the Russian and
+/// English texts are also the variant's doc), and `get(lang)`.
+macro_rules! catalogue {
+    (
+        $(#[$meta:meta])*
+        $name:ident {
+            $($variant:ident => ($ru:literal, $uk:literal, $en:literal),)*
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        pub(in crate::sheets) enum $name {
+            $(#[doc = concat!("«", $ru, "» (en: “", $en, "”)")] $variant,)*
+        }
+
+        impl $name {
+            /// The text in `lang`.
+            pub fn get(self, lang: crate::scale::Lang) -> &'static str {
+                let (ru, uk, en) = match self {
+                    $($name::$variant => ($ru, $uk, $en),)*
+                };
+                lang.pick(ru, uk, en)
+            }
+        }
+    };
+}
+use catalogue;
+
+/// A unit written in SI (`m/s^2`, `N*m`, `kg*m^2`, `rad/s`, `mm`) in `lang`: `·` for the
+/// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`).
+pub(super) fn unit_in(unit: &str, lang: Lang) -> String {
+    let si = unit.replace('*', "·");
+    if lang == Lang::En {
+        return si;
+    }
+    let mut out = String::with_capacity(si.len());
+    let mut word = String::new();
+    let flush = |word: &mut String, out: &mut String| {
+        out.push_str(match word.as_str() {
+            "mm" => "мм",
+            "m" => "м",
+            "s" => "с",
+            "N" => "Н",
+            "kg" => "кг",
+            "rad" => "рад",
+            "J" => "Дж",
+            "W" => "Вт",
+            w => w,
+        });
+        word.clear();
+    };
+    for c in si.chars() {
+        if c.is_ascii_alphabetic() {
+            word.push(c);
+        } else {
+            flush(&mut word, &mut out);
+            out.push(c);
+        }
+    }
+    flush(&mut word, &mut out);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::unit_in;
+    use crate::scale::Lang;
+
+    #[test]
+    fn units_are_written_in_the_sheets_language() {
+        assert_eq!(unit_in("N*m", Lang::Ru), "Н·м");
+        assert_eq!(unit_in("kg*m^2", Lang::Uk), "кг·м^2");
+        assert_eq!(unit_in("rad/s", Lang::Ru), "рад/с");
+        assert_eq!(unit_in("mm", Lang::Ru), "мм");
+        assert_eq!(unit_in("kg*m^2", Lang::En), "kg·m^2");
+    }
+}

@@ -1,0 +1,227 @@
+//! The textbook's symbols on the sheets. The domains and the reports name a quantity by its
+//! [`Symbol`] and a plain subject (`F` of `in3`, `A` of `res`, `J` of `flywheel`); the
+//! domains' drawings label their loads in the Russian textbooks' markup (`F_{и3}`,
+//! `M_{пс}`, `J_{пр}`). Here both become the textbook symbol of the sheet's language: the
+//! Russian spelling for a quantity ([`quantity`]), then every Russian subscript through the
+//! table [`SUBSCRIPTS`] ([`localise`]), which every sheet's text passes on its way out.
+
+use crate::check::Symbol;
+use crate::scale::Lang;
+
+/// The Russian textbooks' subscripts (and superscripts) with their Ukrainian and English
+/// spellings. The Ukrainian course writes the Russian ones; the English course notation
+/// takes the initial of the English word.
+const SUBSCRIPTS: &[(&str, &str, &str)] = &[
+    // инерции: the inertia force and moment, F_i, M_i.
+    ("и", "и", "i"),
+    // полезного сопротивления: the useful resistance, F_r (as the resisting moment M_r).
+    ("пс", "пс", "r"),
+    // сопротивления: the resisting moment and its work, M_r, A_r.
+    ("с", "с", "r"),
+    // движущих сил: the driving moment, its work, a gas force, M_d, A_d, F_d.
+    ("д", "д", "d"),
+    // уравновешивающий: the balancing force and moment, and a rotor's correcting masses,
+    // F_b, M_b, m_b.
+    ("у", "у", "b"),
+    // приведённый: reduced to the crank, M_red, J_red.
+    ("пр", "пр", "red"),
+    // средняя: the mean angular velocity, ω_m.
+    ("ср", "ср", "m"),
+    // маховика: the flywheel's moment of inertia, J_fw.
+    ("м", "м", "fw"),
+    // ступицы: the width of the flywheel's hub, b_h.
+    ("ст", "ст", "h"),
+    // трения: friction, F_f, M_f and the values with friction in the pairs, R^f.
+    ("тр", "тр", "f"),
+    // требуемое: the ratio a required speed asks for, u^req.
+    ("треб", "треб", "req"),
+    // скольжения: the force that drags a load on rollers, P_sl.
+    ("ск", "ск", "sl"),
+    // ролика: a cam's roller, r_r.
+    ("р", "р", "r"),
+    // профиля: a cam profile's deviation, Δ_prof.
+    ("проф", "проф", "prof"),
+    // огибающей: a generated tooth's deviation from the exact envelope, δ_env.
+    ("огиб", "огиб", "env"),
+];
+
+fn cyrillic(c: char) -> bool {
+    ('\u{0400}'..='\u{04FF}').contains(&c)
+}
+
+/// A subscript or superscript's text in `lang`: its leading Russian word by [`SUBSCRIPTS`],
+/// the rest (a link number, a plane) kept.
+fn script(text: &str, lang: Lang) -> String {
+    let head = text.find(|c: char| !cyrillic(c)).unwrap_or(text.len());
+    let (word, rest) = text.split_at(head);
+    match SUBSCRIPTS.iter().find(|(ru, ..)| *ru == word) {
+        Some(&(ru, uk, en)) => format!("{}{rest}", lang.pick(ru, uk, en)),
+        None => text.to_string(),
+    }
+}
+
+/// Label markup with every braced subscript and superscript (`_{и3}`, `^{тр}`) in `lang`.
+pub(in crate::sheets) fn localise(markup: &str, lang: Lang) -> String {
+    if lang == Lang::Ru || !markup.chars().any(cyrillic) {
+        return markup.to_string();
+    }
+    let mut out = String::with_capacity(markup.len());
+    let mut rest = markup;
+    while let Some(k) = rest.find(['_', '^']) {
+        let (before, at) = rest.split_at(k);
+        out.push_str(before);
+        let body = &at[1..];
+        match (body.strip_prefix('{'), body.find('}')) {
+            (Some(inner), Some(end)) => {
+                out.push_str(&at[..1]);
+                out.push('{');
+                out.push_str(&script(&inner[..end - 1], lang));
+                out.push('}');
+                rest = &body[end + 1..];
+            }
+            _ => {
+                out.push_str(&at[..1]);
+                rest = body;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+/// A row's quantity in the textbook's notation in `lang`: `V_{B3B1}`, `ω_{3}`, `R_{1-2}`,
+/// `F_{и3}` (en `F_{i3}`), `M_{у}` (en `M_{b}`), `A_{с}`, `J_{м}`, `ε_{α}`, `R_{1-2}^{тр}`.
+pub(in crate::sheets) fn quantity(symbol: Symbol, subject: &str, lang: Lang) -> String {
+    localise(&russian(symbol, subject), lang)
+}
+
+/// The Russian textbooks' spelling of a quantity.
+fn russian(symbol: Symbol, subject: &str) -> String {
+    // A value of the analysis with friction in the pairs: R_{1-2}^{тр}.
+    if let Some(base) = subject.strip_suffix("_f") {
+        return format!("{}^{{тр}}", russian(symbol, base));
+    }
+    // The ratio a required speed asks for: u_{18}^{треб}.
+    if let Some(base) = subject.strip_suffix("_req") {
+        return format!("{}^{{треб}}", russian(symbol, base));
+    }
+    let letter = letter(symbol);
+    // A reaction names two links, written apart as the textbooks do: R_{1-2}.
+    let sep = if symbol == Symbol::Reaction { "-" } else { "" };
+    let subject = match (symbol, subject) {
+        (_, "") if symbol == Symbol::ProfileDeviation => "проф".to_string(),
+        (_, "") => return letter.to_string(),
+        (Symbol::Force | Symbol::Moment | Symbol::Length, "bal") => "у".into(),
+        (Symbol::Force | Symbol::Moment, s) if s.starts_with("in") => format!("и{}", &s[2..]),
+        (Symbol::Work | Symbol::Moment, "res") => "с".into(),
+        (Symbol::Work | Symbol::Moment, "drive") => "д".into(),
+        (Symbol::Inertia | Symbol::Moment, "red") => "пр".into(),
+        (Symbol::Inertia, "flywheel") => "м".into(),
+        (Symbol::ContactRatio, "alpha") => "α".into(),
+        (Symbol::Radius, "roller") => "р".into(),
+        // A generated wheel's values name the wheel after the quantity's own subscript:
+        // x_{min,p}, s_{a,p}, δ_{огиб,p} (the wheel `1` has none: x_{min}, s_{a1}).
+        (Symbol::EnvelopeDeviation, s) => wheel("огиб", s.strip_prefix("deviation")),
+        (Symbol::ShiftCoefficient, s) => wheel("min", s.strip_prefix("min")),
+        (Symbol::ToothThickness, s) if s.len() > 1 && !s[1..].starts_with(char::is_numeric) => {
+            wheel("a", s.strip_prefix('a').map(|w| format!("_{w}")).as_deref())
+        }
+        (_, s) => s.replace('_', sep),
+    };
+    format!("{letter}_{{{subject}}}")
+}
+
+/// A quantity's own subscript `own` and the wheel it belongs to (`rest` is `_name` or
+/// empty).
+fn wheel(own: &str, rest: Option<&str>) -> String {
+    match rest.and_then(|r| r.strip_prefix('_')) {
+        Some(w) => format!("{own},{w}"),
+        None => own.to_string(),
+    }
+}
+
+/// The letter of a symbol as the textbooks write it.
+fn letter(symbol: Symbol) -> &'static str {
+    match symbol {
+        Symbol::Displacement => "S",
+        Symbol::Velocity => "V",
+        Symbol::Acceleration => "a",
+        Symbol::AngularVelocity => "ω",
+        Symbol::AngularAcceleration => "ε",
+        Symbol::Force => "F",
+        Symbol::Reaction => "R",
+        Symbol::Moment => "M",
+        Symbol::Mass => "m",
+        Symbol::StaticMoment => "mρ",
+        Symbol::UnbalanceMoment => "mρz",
+        Symbol::Length => "h",
+        Symbol::Angle | Symbol::EngagementAngle => "α",
+        Symbol::Ratio => "η",
+        Symbol::Power => "P",
+        Symbol::Inertia => "J",
+        Symbol::Work => "A",
+        Symbol::EnergyChange => "ΔT",
+        Symbol::Irregularity | Symbol::EnvelopeDeviation => "δ",
+        Symbol::CentreDistance => "a",
+        Symbol::Radius => "r",
+        Symbol::ToothThickness => "s",
+        Symbol::ContactRatio => "ε",
+        Symbol::SpecificSliding | Symbol::PressureAngle => "λ",
+        Symbol::ShiftCoefficient => "x",
+        Symbol::GearRatio => "u",
+        Symbol::ActionLength => "g",
+        Symbol::VelocityAnalogue => "dS/dφ",
+        Symbol::AccelerationAnalogue => "d^2S/dφ^2",
+        Symbol::TransmissionAngle => "γ",
+        Symbol::CurvatureRadius => "ρ",
+        Symbol::ProfileRadius => "R",
+        Symbol::ProfileDeviation => "Δ",
+        Symbol::EquilibriumResidual => "ΔΣ",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{localise, quantity};
+    use crate::check::Symbol;
+    use crate::scale::Lang;
+
+    #[test]
+    fn quantities_take_the_textbooks_symbols() {
+        let ru = |s, sub| quantity(s, sub, Lang::Ru);
+        assert_eq!(ru(Symbol::Velocity, "B3_B1"), "V_{B3B1}");
+        assert_eq!(ru(Symbol::AngularAcceleration, "3"), "ε_{3}");
+        assert_eq!(ru(Symbol::Reaction, "1_2"), "R_{1-2}");
+        assert_eq!(ru(Symbol::Reaction, "1_2_f"), "R_{1-2}^{тр}");
+        assert_eq!(ru(Symbol::Force, "in3"), "F_{и3}");
+        assert_eq!(ru(Symbol::Moment, "bal"), "M_{у}");
+        assert_eq!(ru(Symbol::Work, "res"), "A_{с}");
+        assert_eq!(ru(Symbol::Moment, "drive"), "M_{д}");
+        assert_eq!(ru(Symbol::Inertia, "flywheel"), "J_{м}");
+        assert_eq!(ru(Symbol::ContactRatio, "alpha"), "ε_{α}");
+        assert_eq!(ru(Symbol::GearRatio, "1_8_req"), "u_{18}^{треб}");
+        assert_eq!(ru(Symbol::ShiftCoefficient, "min_p"), "x_{min,p}");
+        assert_eq!(ru(Symbol::ToothThickness, "ap"), "s_{a,p}");
+        assert_eq!(ru(Symbol::ToothThickness, "a1"), "s_{a1}");
+        assert_eq!(ru(Symbol::EnvelopeDeviation, "deviation"), "δ_{огиб}");
+        assert_eq!(ru(Symbol::Irregularity, ""), "δ");
+        let en = |s, sub| quantity(s, sub, Lang::En);
+        assert_eq!(en(Symbol::Force, "in3"), "F_{i3}");
+        assert_eq!(en(Symbol::Moment, "bal"), "M_{b}");
+        assert_eq!(en(Symbol::Inertia, "red"), "J_{red}");
+        assert_eq!(en(Symbol::Reaction, "1_2_f"), "R_{1-2}^{f}");
+    }
+
+    #[test]
+    fn subscripts_are_localised_and_the_rest_kept() {
+        assert_eq!(localise("F_{и2} ≡ F_{пс}", Lang::En), "F_{i2} ≡ F_{r}");
+        assert_eq!(
+            localise("m_{уII}ρ_{уII}z_{II}", Lang::En),
+            "m_{bII}ρ_{bII}z_{II}"
+        );
+        assert_eq!(localise("ω − ω_{ср}^2", Lang::En), "ω − ω_{m}^2");
+        assert_eq!(localise("F_{и2}", Lang::Ru), "F_{и2}");
+        // A subscript the table does not know (a user's name) is kept.
+        assert_eq!(localise("J_{ред}, b_1", Lang::En), "J_{ред}, b_1");
+    }
+}
