@@ -280,7 +280,7 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         "r_{{min}} = {} {mm} ({}), {} {mm} ({})",
         n(cam.radius.graphical),
         tr(lang, "графически", "графічно", "graphical"),
-        n(cam.radius.exact),
+        n(cam.exact_r_min()),
         tr(lang, "точно", "точно", "exact")
     ));
     if let Some(q) = s.quoted_r_min {
@@ -302,7 +302,8 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         out.push(format!(
             "0,4·r_{{0}} = {} {mm}, 0,8·ρ_{{min}} = {} {mm} → r_{{р}} = {} {mm}",
             n(0.4 * cam.base),
-            n(0.8 * rho),
+            // The roller is chosen from the drawn pitch curve's ρ_min.
+            n(0.8 * cam.inversion.rho_min),
             n(cam.roller)
         ));
         if cam.roller >= rho {
