@@ -11,7 +11,7 @@
 
 use proptest::prelude::*;
 use std::f64::consts::{FRAC_PI_2, TAU};
-use tmm::cam::{build, exact, CamSpec, Follower, Law, Phases};
+use tmm::cam::{build, exact, motion, CamSpec, Follower, Law, Phases};
 use tmm::construct::{Context, Drafting};
 use tmm::geom::DVec2;
 
@@ -337,7 +337,7 @@ fn the_ends_of_every_phase_report_the_phase_side() {
             false,
         );
         s.divisions = n;
-        let pts = exact::points(&s);
+        let pts = motion::points(&s);
         assert_eq!(pts.len(), 2 * n + 2);
         for (phase, first) in [(0usize, 0usize), (2, n + 1)] {
             let last = first + n;
@@ -357,7 +357,7 @@ fn the_ends_of_every_phase_report_the_phase_side() {
                 );
                 let p = &pts[idx];
                 for phi in [p.phi, p.phi.next_up(), p.phi.next_down()] {
-                    let m = exact::motion(&s, phi, p.after);
+                    let m = motion::motion(&s, phi, p.after);
                     let got = (m.s, m.ds, m.d2s);
                     let ok = (got.0 - want.0).abs() <= 1e-12
                         && (got.1 - want.1).abs() <= 1e-9 * (want.1.abs() + h / len)

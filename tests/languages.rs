@@ -15,7 +15,7 @@ use tmm::study::Session;
 const LATIN_ALLOWED: &[&str] = &[
     // Extremes as subscripts: r_min, ω_max, γ_min, x_min (the textbooks' own spelling).
     "max", "min", // The follower's displacement in the analogues dS/dφ, d²S/dφ².
-    "dS", // Functions: sin, cos, tg, arctg (the Russian spelling of tan and arctan).
+    "dS",  // Functions: sin, cos, tg, arctg (the Russian spelling of tan and arctan).
     "sin", "cos", "tg", "arctg",
     // The segment kl that Wittenbauer's tangents cut off the ΔT axis.
     "kl",

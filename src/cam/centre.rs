@@ -14,8 +14,9 @@
 //! (dense samples, every local minimum refined by golden section) cut off, until none is
 //! violated beyond rounding. The answer is the nearest over the choices of cones.
 
-use super::exact::{motion_u, rocker_of, Placement};
 use super::extremum::{checked_pieces, max_on, Piece};
+use super::follower::{rocker_of, Placement, REACH_ARMS};
+use super::motion::motion_u;
 use super::CamSpec;
 use crate::geom::{rotate, DVec2};
 use std::f64::consts::FRAC_PI_2;
@@ -24,8 +25,6 @@ use std::f64::consts::FRAC_PI_2;
 const PER_PHASE: usize = 2000;
 /// Cutting-plane rounds at most (each cuts the worst violation of every family).
 const ROUNDS: usize = 400;
-/// The search's reach, in arms: no centre farther than this from A₀ is looked for.
-pub const REACH_ARMS: f64 = 20.0;
 
 /// One follower position's constraint data: K and the inward normals of the two
 /// half-planes of the cone about +J·e (the other cone's are their opposites).

@@ -1,14 +1,17 @@
 //! The cam constructed: the diagrams ([`super::diagrams`]), the minimum radius
 //! ([`super::radius`]) and the profile by inversion ([`super::inversion`]), all through the
-//! recorder, with the pressure (transmission) angle graph.
+//! recorder, with the pressure (transmission) angle graph. The construction works from the
+//! scene (the given law, [`super::motion`]) and its own drawing; it shares the follower's
+//! primitives ([`super::follower`]) with the twin and never asks the twin ([`super::exact`]).
 
 use super::diagrams::{diagrams, read_motion, Diagrams};
-use super::exact::{self, Kin, Motion, Placement, Point};
-use super::inversion::{invert, Inversion};
+use super::follower::{to_cam, Kin, Placement};
+use super::inversion::{drawn_rho_min, invert, Inversion};
+use super::motion::{points, Motion, Point};
 use super::radius::{min_radius, RadiusConstruction};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
-use crate::geom::{DVec2, Segment};
+use crate::geom::{french_curve, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
@@ -25,14 +28,14 @@ pub struct Cam {
     pub radius: RadiusConstruction,
     /// The base radius used for the profile, m.
     pub base: f64,
-    /// The follower's placement (from the exact minimum or the given base radius).
+    /// The follower's placement (from the graphical minimum or the given base radius).
     pub placement: Placement,
     /// The roller radius used, m (0: knife edge or flat face).
     pub roller: f64,
     /// The profile.
     pub inversion: Inversion,
     /// The pressure (transmission) angle over the cycle: read off the profile drawing at the
-    /// points (marked) and the exact curve, at μ_φ and 1°/mm.
+    /// points (marked) and the curve drawn through them, at μ_φ and 1°/mm.
     pub angle_graph: Option<Figure>,
     /// The cam turns clockwise: `spec` is then its counter-clockwise mirror image (the offset
     /// on the other side), every number is the mirror image's, and the mechanism's drawings
@@ -79,25 +82,21 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
         cam.inversion.figure = cam.inversion.figure.mirrored_x();
         return Ok(cam);
     }
-    let points = exact::points(spec);
+    let points = points(spec);
     let diagrams = diagrams(spec, &points, ctx)?;
     let (radius, base, placement) = min_radius(spec, &points, &diagrams, ctx)?;
+    let read: Vec<Motion> = (0..points.len())
+        .map(|i| read_motion(&diagrams, i))
+        .collect();
     let roller = match spec.follower {
         Follower::Flat { .. } => 0.0,
-        _ => match spec.roller {
-            Some(r) => r,
-            None => {
-                let (rho, _) = exact::pitch_rho_min(spec, &placement);
-                (0.4 * base).min(0.8 * rho)
-            }
-        },
+        _ => spec
+            .roller
+            .unwrap_or_else(|| chosen_roller(&points, &read, &placement, base)),
     };
     if roller >= base {
         return Err(CamError::RollerTooLarge { roller, base });
     }
-    let read: Vec<Motion> = (0..points.len())
-        .map(|i| read_motion(&diagrams, i))
-        .collect();
     let inversion = invert(spec, &points, &read, &placement, base, roller, ctx)?;
     let angle_graph = match spec.follower {
         Follower::Flat { .. } => None,
@@ -124,8 +123,24 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
     })
 }
 
-/// The angle graph: the exact pressure (or transmission) angle over the cycle as a curve,
-/// the values read off the profile drawing as marked points, at μ_φ and μ = 1°/mm.
+/// The roller a student chooses when the scene gives none: r = min(0.4·r₀, 0.8·ρ_min), with
+/// r₀ the base radius used and ρ_min found on the drawing — the smallest circle through three
+/// neighbouring points of the pitch (theoretical) curve where it is most convex, within one
+/// phase, straight or concave triples skipped ([`drawn_rho_min`]); the pitch points from the
+/// motion read off the diagrams at the follower's placement.
+fn chosen_roller(points: &[Point], read: &[Motion], place: &Placement, base: f64) -> f64 {
+    let pitch: Vec<DVec2> = points
+        .iter()
+        .zip(read)
+        .map(|(p, m)| to_cam(place.kin(*m).b, p.phi))
+        .collect();
+    (0.4 * base).min(0.8 * drawn_rho_min(points, &pitch))
+}
+
+/// The angle graph: the pressure (or transmission) angle read off the profile drawing at
+/// the points, marked, and a curve drawn through those read values ([`read_curve`]), at μ_φ
+/// and μ = 1°/mm. Only the construction's own values are drawn; the exact angle stays in the
+/// check's rows.
 fn angle_graph(
     spec: &CamSpec,
     points: &[Point],
@@ -199,36 +214,77 @@ fn angle_graph(
         DVec2::new(width, mu.to_mm(limit)),
         DVec2::new(1.0, 0.0),
     );
-    let curve: Vec<DVec2> = exact::dense(spec, 120)
-        .into_iter()
-        .chain([(0.0, true), (spec.starts()[1], true), (TAU, false)])
-        .map(|(p, a)| (p, value(&place.kin(exact::motion(spec, p, a)))))
-        .collect::<Vec<_>>()
-        .into_iter()
-        .map(|(p, v)| DVec2::new(phi.to_mm(p), mu.to_mm(v)))
+    // The values read off the profile drawing, marked at their points.
+    let read: Vec<DVec2> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let a = inv.angles.get(i).copied().unwrap_or(0.0);
+            let a = if rocker { FRAC_PI_2 - a } else { a };
+            DVec2::new(phi.to_mm(p.phi), mu.to_mm(a))
+        })
         .collect();
-    let mut curve = curve;
-    curve.sort_by(|a, b| a.x.total_cmp(&b.x));
-    rec.draw(
-        "the exact angle",
-        Item::Polyline {
-            points: curve,
-            closed: false,
-        },
-        Role::Result,
-        &[xa, ya],
-    );
-    for (i, p) in points.iter().enumerate() {
-        let a = inv.angles.get(i).copied().unwrap_or(0.0);
-        let a = if rocker { FRAC_PI_2 - a } else { a };
+    for (i, q) in read.iter().enumerate() {
         rec.point(
             format!("read at point {i}"),
-            DVec2::new(phi.to_mm(p.phi), mu.to_mm(a)),
+            *q,
             Role::Construction,
             "",
             DVec2::ZERO,
             &[],
         );
     }
+    rec.draw(
+        "the angle read off the profile",
+        Item::Polyline {
+            points: read_curve(spec, points, &read, place, |k| mu.to_mm(value(k)), phi),
+            closed: false,
+        },
+        Role::Result,
+        &[xa, ya],
+    );
     Ok(rec.finish())
+}
+
+/// The curve of the angle graph, drawn through the read values only: the French curve
+/// through each moving phase's points (tangents along the chords through the neighbours),
+/// and on each dwell, where the pitch curve is an arc about O₁ and the normal is its radius,
+/// the angle between O₁B and the follower's path, constant (the far dwell at S = h, the near
+/// one at S = 0). The twin's exact curve is not drawn: the check compares them in the rows.
+fn read_curve(
+    spec: &CamSpec,
+    points: &[Point],
+    read: &[DVec2],
+    place: &Placement,
+    angle_mm: impl Fn(&Kin) -> f64,
+    phi: Scale,
+) -> Vec<DVec2> {
+    let st = spec.starts();
+    let dwell = |s: f64| {
+        angle_mm(&place.kin(Motion {
+            s,
+            ds: 0.0,
+            d2s: 0.0,
+        }))
+    };
+    let (far, near) = (dwell(spec.stroke), dwell(0.0));
+    let mut out = vec![DVec2::new(0.0, near)];
+    for phase in [0usize, 2] {
+        let idx: Vec<usize> = (0..points.len())
+            .filter(|&i| points[i].phase == phase)
+            .collect();
+        let tangent = |j: usize| {
+            let (lo, hi) = (j.saturating_sub(1), (j + 1).min(idx.len() - 1));
+            read[idx[hi]] - read[idx[lo]]
+        };
+        out.push(read[idx[0]]);
+        for j in 0..idx.len().saturating_sub(1) {
+            let (a, b) = (read[idx[j]], read[idx[j + 1]]);
+            out.extend_from_slice(&french_curve(a, tangent(j), b, tangent(j + 1), 8)[1..]);
+        }
+        let y = if phase == 0 { far } else { near };
+        out.push(DVec2::new(phi.to_mm(st[phase + 1]), y));
+        out.push(DVec2::new(phi.to_mm(st[phase + 2]), y));
+    }
+    out
 }

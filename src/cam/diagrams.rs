@@ -1,7 +1,7 @@
 //! The diagrams by graphical integration: the given d²S/dφ² integrated twice, phase by
 //! phase, with the chord/pole method of [`crate::calculus`] at the textbook's scales.
 
-use super::exact::{self, Motion, Point};
+use super::motion::{motion, motion_u, Motion, Point};
 use super::{CamError, CamSpec};
 use crate::calculus::{integrate_chords, Diagram, Layout, Sampling, Scales};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
@@ -101,7 +101,7 @@ pub(super) fn diagrams(
     {
         let dx = len / n as f64;
         let mids: Vec<f64> = (0..n)
-            .map(|k| exact::motion(spec, st[phase] + (k as f64 + 0.5) * dx, true).d2s)
+            .map(|k| motion(spec, st[phase] + (k as f64 + 0.5) * dx, true).d2s)
             .collect();
         // n mid-interval ordinates of n intervals (validated by the integration as such; a
         // diagram of nodes would count n − 1).
@@ -127,7 +127,7 @@ pub(super) fn diagrams(
         };
         // A uniform law starts at dS/dφ = h/Φ: the jump (a δ of acceleration, the rigid
         // shock) is no ordinate of the given diagram, so it is laid off as the start value.
-        let v0 = exact::motion(spec, st[phase], true).ds;
+        let v0 = motion(spec, st[phase], true).ds;
         let v = integrate_chords(
             &mut first,
             &src,
@@ -216,7 +216,7 @@ pub(super) fn diagrams(
     let d2s = points
         .iter()
         .map(|p| {
-            let m = exact::motion(spec, p.phi, p.after);
+            let m = motion(spec, p.phi, p.after);
             let x = phi.to_mm(p.phi);
             let top = a_top + DVec2::new(x, d2s_scale.to_mm(m.d2s));
             let read = first.measure(a_top + DVec2::new(x, 0.0), top);
@@ -238,14 +238,23 @@ pub(super) fn diagrams(
     })
 }
 
-/// The largest |dS/dφ| and |d²S/dφ²| of the law over the cycle.
+/// The largest |dS/dφ| and |d²S/dφ²| of the given law over the cycle (the tallest ordinates
+/// the diagrams must hold): each moving phase at 200 intervals, both sides of every jump.
 fn peaks(spec: &CamSpec) -> (f64, f64) {
-    exact::dense(spec, 200)
-        .into_iter()
-        .fold((0.0f64, 0.0f64), |(v, a), (p, after)| {
-            let m = exact::motion(spec, p, after);
-            (v.max(m.ds.abs()), a.max(m.d2s.abs()))
-        })
+    const PER_PHASE: usize = 200;
+    let mut out = (0.0f64, 0.0f64);
+    for (phase, law) in [(0usize, spec.rise), (2, spec.ret)] {
+        let nodes = (0..=PER_PHASE).map(|k| (k as f64 / PER_PHASE as f64, k < PER_PHASE));
+        let jumps = law
+            .breaks()
+            .into_iter()
+            .flat_map(|b| [(b, false), (b, true)]);
+        for (u, after) in nodes.chain(jumps) {
+            let m = motion_u(spec, phase, u, after);
+            out = (out.0.max(m.ds.abs()), out.1.max(m.d2s.abs()));
+        }
+    }
+    out
 }
 
 /// The pole distances a student chooses: H₂ = μ_S/(μ_S′·μ_φ) and H₁ = μ_S′/(μ_S″·μ_φ) with
@@ -282,7 +291,7 @@ fn given_curve(
     let mut pts = vec![o + DVec2::new(phi.to_mm(st), 0.0)];
     for (u, after) in us {
         let after = if u >= 1.0 { false } else { after };
-        let m = exact::motion(spec, st + u * len, after);
+        let m = motion(spec, st + u * len, after);
         pts.push(o + DVec2::new(phi.to_mm(st + u * len), mu.to_mm(m.d2s)));
     }
     pts.push(o + DVec2::new(phi.to_mm(st + len), 0.0));
@@ -328,7 +337,7 @@ fn differentiated(
     {
         let dx = len / n as f64;
         let nodes: Vec<f64> = (0..=n)
-            .map(|k| exact::motion(spec, st[phase] + k as f64 * dx, k < n).s)
+            .map(|k| motion(spec, st[phase] + k as f64 * dx, k < n).s)
             .collect();
         let src = Diagram::new(st[phase], dx, nodes, false)?;
         let shift = DVec2::new(phi.to_mm(st[phase]), 0.0);
@@ -385,7 +394,7 @@ fn differentiated(
     let s = points
         .iter()
         .map(|p| {
-            let m = exact::motion(spec, p.phi, p.after);
+            let m = motion(spec, p.phi, p.after);
             let x = phi.to_mm(p.phi);
             let read = first.measure(
                 s_top + DVec2::new(x, 0.0),

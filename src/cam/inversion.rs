@@ -2,7 +2,8 @@
 //! the pitch curve, the roller circles (or the face lines) and the practical profile; the
 //! angle read off the drawing; the drawn pitch curve's smallest radius of curvature.
 
-use super::exact::{self, jay, to_cam, Kin, Motion, Placement, Point};
+use super::follower::{flat_contact, jay, to_cam, Kin, Placement};
+use super::motion::{Motion, Point};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{french_curve, Arc, Circle, DVec2, Segment};
@@ -154,7 +155,7 @@ pub(crate) fn invert(
             &[o],
         );
         let t = if flat {
-            let (q, _) = exact::flat_contact(base, m);
+            let (q, _) = flat_contact(base, m);
             to_cam(q, p.phi)
         } else {
             if roller > 0.0 {
@@ -339,7 +340,7 @@ fn neighbours(points: &[Point], i: usize) -> (usize, usize) {
 
 /// The smallest radius of the circles through three consecutive drawn pitch points that
 /// turn like the cam (convex), within each phase; the dwell arcs' radii too.
-fn drawn_rho_min(points: &[Point], c: &[DVec2]) -> f64 {
+pub(super) fn drawn_rho_min(points: &[Point], c: &[DVec2]) -> f64 {
     let mut best = f64::INFINITY;
     for i in 1..points.len().saturating_sub(1) {
         if points[i - 1].phase != points[i].phase || points[i + 1].phase != points[i].phase {

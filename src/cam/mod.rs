@@ -6,9 +6,11 @@
 //! Every procedure exists twice: a construction through the recorder (the diagrams
 //! integrated with the chord/pole method of [`crate::calculus`], the combined diagram with
 //! its γ_min lines and zone, the inverted follower positions with the roller circles or the
-//! face lines and their envelope) and an analytic twin ([`exact`]: the closed-form law, the
-//! pitch curve, its curvature and the exact envelope, the minimum radius over the whole
-//! cycle). [`Cam::rows`] compares them.
+//! face lines and their envelope) and an analytic twin ([`exact`] and `centre`: the minimum
+//! radius over the whole cycle, the pitch curve's curvature; the exact envelope and angles in
+//! [`Cam::rows`], which compares them). They share only the given law ([`motion`]) and the
+//! follower's primitives ([`follower`]): the construction builds the profile on the r_min
+//! read off its own drawing (or the scene's base radius) and never calls the twin.
 //!
 //! Frame: the cam turns counter-clockwise about O at the origin; in the inverted motion the
 //! follower turns clockwise (by −φ). A translating follower moves along +y, its axis at
@@ -20,9 +22,10 @@ mod construct;
 mod diagrams;
 pub mod exact;
 pub mod extremum;
+pub mod follower;
 mod inversion;
 mod law;
-mod motion;
+pub mod motion;
 mod radius;
 mod rows;
 #[cfg(test)]

@@ -69,7 +69,7 @@ const SNAP: f64 = 1e-12;
 /// One rule at every boundary, for every law: at a phase boundary `after = false` gives the
 /// phase that ends there (a moving phase's own end value, S′ and S″ of its law at u = 1),
 /// `after = true` the phase that starts there (at u = 0); a dwell's values are the dwell's
-/// only. φ within [`SNAP`] of a boundary is on it.
+/// only. φ within `SNAP` of a boundary is on it.
 pub fn motion(spec: &CamSpec, phi: f64, after: bool) -> Motion {
     let (phase, u) = locate(spec, phi, after);
     motion_u(spec, phase, u, after)
@@ -122,7 +122,7 @@ pub fn locate(spec: &CamSpec, phi: f64, after: bool) -> (usize, f64) {
 }
 
 /// The law in phase `phase` (0 rise, 1 far dwell, 2 return, 3 near dwell) at u ∈ [0, 1],
-/// `after` picking the piece after a jump of the law at u (u within [`SNAP`] of a jump is on
+/// `after` picking the piece after a jump of the law at u (u within `SNAP` of a jump is on
 /// it).
 pub fn motion_u(spec: &CamSpec, phase: usize, u: f64, after: bool) -> Motion {
     let h = spec.stroke;

@@ -1,9 +1,12 @@
 //! The minimum radius as a construction: the combined diagram S(dS/dφ) with the γ_min lines
 //! and the zone (translating), dS/dφ laid along the rocker with the γ_min lines (rocker), the
-//! S(d²S/dφ²) diagram with its 45° tangent (flat face); each beside its exact twin.
+//! S(d²S/dφ²) diagram with its 45° tangent (flat face). The profile is built on the r_min
+//! read off this drawing (or the scene's base radius); the exact r_min over the whole cycle
+//! is the twin's ([`super::exact`], compared in [`super::Cam::rows`]).
 
 use super::diagrams::{read_motion, Diagrams};
-use super::exact::{self, Motion, Placement, Point};
+use super::follower::{admits, rocker_of, Placement, REACH_ARMS};
+use super::motion::{Motion, Point};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{Arc, DVec2, Segment};
@@ -18,14 +21,14 @@ pub struct RadiusConstruction {
     pub figure: Figure,
     /// r_min as read off the drawing, m.
     pub graphical: f64,
-    /// r_min over the whole cycle (the exact twin), m.
-    pub exact: f64,
-    /// The flat face's max(−(S + S″)) as read and exact, m.
-    pub convexity: Option<(f64, f64)>,
+    /// The flat face's max(−(S + S″)) as read at the 45° tangent, m.
+    pub convexity: Option<f64>,
 }
 
-/// The minimum radius: the construction at the drawn points and the exact twin over the
-/// cycle; the placement of the follower for the profile.
+/// The minimum radius constructed at the drawn points, and the base radius and placement of
+/// the follower for the profile: the scene's base radius, else the r_min read off the
+/// drawing (translating: |O₁B₀|; rocker: O₁ found on the drawing, its direction and
+/// distance from A₀; flat face: read at the 45° tangent, plus ρ_min).
 pub(super) fn min_radius(
     spec: &CamSpec,
     points: &[Point],
@@ -43,7 +46,6 @@ pub(super) fn min_radius(
         RadiusConstruction {
             figure: rec.finish(),
             graphical: read.graphical,
-            exact: read.exact,
             convexity: read.convexity,
         },
         read.base,
@@ -60,12 +62,11 @@ struct Given<'a> {
     d: &'a Diagrams,
 }
 
-/// What one follower's construction reads: r_min as read and exact, the flat face's
-/// convexity, the base radius the profile takes and the follower's placement.
+/// What one follower's construction reads: r_min, the flat face's convexity, the base
+/// radius the profile takes and the follower's placement.
 struct Read {
     graphical: f64,
-    exact: f64,
-    convexity: Option<(f64, f64)>,
+    convexity: Option<f64>,
     base: f64,
     placement: Placement,
 }
@@ -76,12 +77,25 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     let Given { spec, points, d } = *given;
     let mu = d.s_scale;
     let gamma = spec.gamma_min;
-    let (exact_r, _) = exact::min_radius_translating(spec, offset);
     // Combined diagram: B₀ at the origin, the path vertical, K_i = B_i − (S′_i, 0).
-    let path = s_axis(rec, spec, mu, exact_r);
     let ks = combined(d, points.len(), |m| {
         DVec2::new(-mu.to_mm(m.ds), mu.to_mm(m.s))
     });
+    // O on the vertical x = −e: the highest point below every γ_min line.
+    let ox = -mu.to_mm(offset);
+    let t = gamma.tan();
+    let (mut best, mut bind) = (f64::INFINITY, 0);
+    // Under force closure only the rise's points bind.
+    let binds = |i: usize| !spec.force_closure || points[i].phase == 0;
+    for (i, k) in ks.iter().enumerate().filter(|(i, _)| binds(*i)) {
+        let y = k.y - (k.x - ox).abs() * t;
+        if y < best {
+            best = y;
+            bind = i;
+        }
+    }
+    let o = DVec2::new(ox, best);
+    let path = s_axis(rec, spec, mu, o.length());
     for (i, k) in ks.iter().enumerate() {
         let b = DVec2::new(0.0, k.y);
         rec.draw(
@@ -100,20 +114,6 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
         Role::Result,
         &[path],
     );
-    // O on the vertical x = −e: the highest point below every γ_min line.
-    let ox = -mu.to_mm(offset);
-    let t = gamma.tan();
-    let (mut best, mut bind) = (f64::INFINITY, 0);
-    // Under force closure only the rise's points bind.
-    let binds = |i: usize| !spec.force_closure || points[i].phase == 0;
-    for (i, k) in ks.iter().enumerate().filter(|(i, _)| binds(*i)) {
-        let y = k.y - (k.x - ox).abs() * t;
-        if y < best {
-            best = y;
-            bind = i;
-        }
-    }
-    let o = DVec2::new(ox, best);
     zone_lines(rec, &ks, o, gamma, bind);
     let bound: Vec<DVec2> = ks
         .iter()
@@ -137,7 +137,7 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
         Role::Dimension,
         &[oid],
     );
-    let base = spec.base_radius.unwrap_or(exact_r);
+    let base = spec.base_radius.unwrap_or(r.value);
     if base <= offset.abs() {
         return Err(CamError::BaseWithinOffset {
             base,
@@ -147,7 +147,6 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     let s0 = (base * base - offset * offset).sqrt();
     Ok(Read {
         graphical: r.value,
-        exact: exact_r,
         convexity: None,
         base,
         placement: Placement::Translating { offset, s0 },
@@ -160,11 +159,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
     let Given { spec, points, d } = *given;
     let mu = d.s_scale;
     let gamma = spec.gamma_min;
-    let (exact_r, o_exact) = exact::min_radius_rocker(spec).ok_or(CamError::NoCentre {
-        gamma_deg: gamma.to_degrees(),
-        searched: super::centre::REACH_ARMS * arm,
-    })?;
-    let (_, sigma) = exact::rocker_of(spec);
+    let (_, sigma) = rocker_of(spec);
     let l = mu.to_mm(arm);
     let pivot = DVec2::ZERO;
     let a0 = DVec2::new(0.0, l);
@@ -220,7 +215,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
     );
     let o = rocker_centre(&cons, a0, gamma).ok_or(CamError::NoCentre {
         gamma_deg: gamma.to_degrees(),
-        searched: super::centre::REACH_ARMS * arm,
+        searched: REACH_ARMS * arm,
     })?;
     rocker_lines(rec, &cons, o, gamma);
     hatch_rocker_zone(rec, &cons, o, gamma);
@@ -245,14 +240,14 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
         &[oid, pid],
     );
     let r = rec.measure(o, a0);
-    // The profile uses the exact centre (or the given base radius along its direction).
-    let dir = (o_exact - DVec2::new(0.0, arm)).normalize_or_zero();
-    let base = spec.base_radius.unwrap_or(exact_r);
+    // The profile uses the centre found on the drawing: its direction from A₀ and its
+    // distance read (or the given base radius along that direction).
+    let dir = (o - a0).normalize_or_zero();
+    let base = spec.base_radius.unwrap_or(r.value);
     let o_used = DVec2::new(0.0, arm) + dir * base;
     let pivot_cam = -o_used;
     Ok(Read {
         graphical: r.value,
-        exact: exact_r,
         convexity: None,
         base,
         placement: Placement::Rocker {
@@ -268,12 +263,19 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
 fn flat(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamError> {
     let Given { spec, points, d } = *given;
     let mu = d.s_scale;
-    let (exact_r, worst) = exact::min_radius_flat(spec);
     // S vertical, S″ horizontal, both at μ_S; the 45° tangent on the negative side.
-    let ax = s_axis(rec, spec, mu, exact_r);
     let pts = combined(d, points.len(), |m| {
         DVec2::new(mu.to_mm(m.d2s), mu.to_mm(m.s))
     });
+    // The 45° line touching the curve: the least S + S″ among the drawn points.
+    let (i, c) = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (i, p.x + p.y))
+        .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+    let oi = DVec2::new(0.0, c.min(0.0));
+    let rho = mu.to_mm(spec.rho_min);
+    let ax = s_axis(rec, spec, mu, rho - oi.y);
     let xs = pts.iter().fold(0.0f64, |a, p| a.max(p.x.abs()));
     let hx = rec.draw(
         "d²S/dφ² axis",
@@ -299,14 +301,7 @@ fn flat(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamE
         Role::Result,
         &[ax, hx],
     );
-    // The 45° line touching the curve: the least S + S″ among the drawn points.
-    let (i, c) = pts
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (i, p.x + p.y))
-        .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
     let touch = pts.get(i).copied().unwrap_or(DVec2::ZERO);
-    let oi = DVec2::new(0.0, c.min(0.0));
     rec.draw(
         "tangent at 45°",
         Item::Segment(Segment::new(
@@ -317,7 +312,6 @@ fn flat(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamE
         &[],
     );
     rec.point("O_I", oi, Role::Result, "O_I", DVec2::new(1.0, -0.5), &[]);
-    let rho = mu.to_mm(spec.rho_min);
     let o = DVec2::new(mu.to_mm(offset), oi.y - rho);
     rec.point(
         "cam centre O′_1 (with ρ_min)",
@@ -329,11 +323,10 @@ fn flat(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamE
     );
     let read_c = rec.measure(oi, DVec2::ZERO).value.copysign(-c);
     let graphical = read_c.max(0.0) + spec.rho_min;
-    let base = spec.base_radius.unwrap_or(exact_r);
+    let base = spec.base_radius.unwrap_or(graphical);
     Ok(Read {
         graphical,
-        exact: exact_r,
-        convexity: Some((read_c, worst)),
+        convexity: Some(read_c),
         base,
         placement: Placement::Translating {
             offset: 0.0,
@@ -342,14 +335,14 @@ fn flat(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamE
     })
 }
 
-/// The S axis of a combined diagram: from below the centre (r_min under B₀) to above the
-/// stroke, labelled.
-fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, r: f64) -> StepId {
+/// The S axis of a combined diagram: from below the centre found on it (`depth` mm under
+/// B₀: the drawn r_min) to above the stroke, labelled.
+fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, depth: f64) -> StepId {
     let top = DVec2::new(0.0, mu.to_mm(spec.stroke) + 12.0);
     let ax = rec.draw(
         "S axis",
         Item::Vector {
-            from: DVec2::new(0.0, -mu.to_mm(r) - 10.0),
+            from: DVec2::new(0.0, -depth - 10.0),
             to: top,
         },
         Role::Axis,
@@ -425,7 +418,8 @@ fn hatch_zone(rec: &mut Recorder, ks: &[DVec2], o: DVec2, t: f64) {
 }
 
 /// The rocker's graphical centre: among the intersections of the γ_min lines and the feet
-/// of the perpendiculars from A₀ onto them, the admissible one nearest A₀.
+/// of the perpendiculars from A₀ onto them within [`REACH_ARMS`] arms (|O₂A₀|), the
+/// admissible one nearest A₀.
 fn rocker_centre(cons: &[(DVec2, DVec2)], a0: DVec2, gamma: f64) -> Option<DVec2> {
     let lines: Vec<(DVec2, DVec2)> = cons
         .iter()
@@ -444,11 +438,10 @@ fn rocker_centre(cons: &[(DVec2, DVec2)], a0: DVec2, gamma: f64) -> Option<DVec2
         }
     }
     // Nearest first: the first admissible candidate is the centre (most fail at once).
-    cands.retain(|c| c.is_finite());
+    let reach = REACH_ARMS * a0.length();
+    cands.retain(|c| c.is_finite() && c.distance(a0) < reach);
     cands.sort_by(|a, b| a.distance(a0).total_cmp(&b.distance(a0)));
-    cands
-        .into_iter()
-        .find(|c| exact::admits(*c, cons, sin_g, 1e-9))
+    cands.into_iter().find(|c| admits(*c, cons, sin_g, 1e-9))
 }
 
 /// The rocker's γ_min lines: long through O where they bind, short ticks elsewhere.
@@ -479,7 +472,7 @@ fn rocker_lines(rec: &mut Recorder, cons: &[(DVec2, DVec2)], o: DVec2, gamma: f6
 /// not, a stroke into the admitted side, leaning away from O.
 fn hatch_rocker_zone(rec: &mut Recorder, cons: &[(DVec2, DVec2)], o: DVec2, gamma: f64) {
     let sin_g = gamma.sin();
-    let inside = |p: DVec2| exact::admits(p, cons, sin_g, 0.0);
+    let inside = |p: DVec2| admits(p, cons, sin_g, 0.0);
     for &(k, e) in cons {
         for s in [1.0, -1.0] {
             let u = crate::geom::rotate(e, s * gamma);

@@ -3,8 +3,10 @@
 //! check, the roller's choice, every hard case detected, a source's inconsistent r_min).
 
 use super::construct::Cam;
-use super::exact::{self, Motion, Placement, Point};
+use super::exact;
+use super::follower::{flat_contact, to_cam, Placement};
 use super::inversion::{invert, Inversion};
+use super::motion::{motion, points, Motion, Point};
 use super::{CamError, CamSpec, Follower, Law, Shock};
 use crate::check::{At, Key, Method, Row, Symbol};
 use crate::construct::Context;
@@ -66,13 +68,13 @@ pub fn exact_profile(
     phi: f64,
     after: bool,
 ) -> DVec2 {
-    let m = exact::motion(spec, phi, after);
+    let m = motion(spec, phi, after);
     let q = if matches!(spec.follower, Follower::Flat { .. }) {
-        exact::flat_contact(base, m).0
+        flat_contact(base, m).0
     } else {
         place.kin(m).roller_point(roller)
     };
-    exact::to_cam(q, phi)
+    to_cam(q, phi)
 }
 
 /// Distance from `p` to the segment [a, b].
@@ -139,10 +141,10 @@ pub fn inversion_at(
 ) -> Result<(CamSpec, Vec<Point>, Inversion), CamError> {
     let mut spec = cam.spec.clone();
     spec.divisions = n.max(2);
-    let points = exact::points(&spec);
+    let points = points(&spec);
     let read: Vec<Motion> = points
         .iter()
-        .map(|p| exact::motion(&spec, p.phi, p.after))
+        .map(|p| motion(&spec, p.phi, p.after))
         .collect();
     let inv = invert(
         &spec,
@@ -179,7 +181,7 @@ impl Cam {
     pub fn exact_motion(&self) -> Vec<Motion> {
         self.points
             .iter()
-            .map(|p| exact::motion(&self.spec, p.phi, p.after))
+            .map(|p| motion(&self.spec, p.phi, p.after))
             .collect()
     }
 
@@ -188,10 +190,8 @@ impl Cam {
         self.points
             .iter()
             .map(|p| {
-                exact::to_cam(
-                    self.placement
-                        .kin(exact::motion(&self.spec, p.phi, p.after))
-                        .b,
+                to_cam(
+                    self.placement.kin(motion(&self.spec, p.phi, p.after)).b,
                     p.phi,
                 )
             })
@@ -200,7 +200,7 @@ impl Cam {
 
     /// The exact pressure (translating) or transmission (rocker) angle at φ, rad.
     pub fn angle_at(&self, phi: f64, after: bool) -> f64 {
-        let k = self.placement.kin(exact::motion(&self.spec, phi, after));
+        let k = self.placement.kin(motion(&self.spec, phi, after));
         if self.rocker() {
             k.transmission_angle()
         } else {
@@ -227,6 +227,38 @@ impl Cam {
         } else {
             v
         }
+    }
+
+    /// The twin's minimum base radius over the whole cycle, m, from the closed forms (the
+    /// construction's is read at its points, [`super::RadiusConstruction::graphical`]):
+    /// translating, rocker (infinite when no centre within [`super::follower::REACH_ARMS`]
+    /// arms qualifies), flat face (convexity plus ρ_min).
+    pub fn exact_r_min(&self) -> f64 {
+        match self.spec.follower {
+            Follower::Translating { offset } => exact::min_radius_translating(&self.spec, offset).0,
+            Follower::Rocker { .. } => {
+                exact::min_radius_rocker(&self.spec).map_or(f64::INFINITY, |(r, _)| r)
+            }
+            Follower::Flat { .. } => exact::min_radius_flat(&self.spec).0,
+        }
+    }
+
+    /// The note's words for the base radius the profile is built on: the scene's, or the
+    /// r_min read off the drawing against the twin's `exact`.
+    fn base_used(&self, exact: f64) -> String {
+        if self.spec.base_radius.is_some() {
+            return "at the given base radius".into();
+        }
+        let how = if self.base < exact {
+            "below"
+        } else {
+            "against"
+        };
+        let (used, exact) = mm_pair(self.base, exact);
+        format!(
+            "at the base radius used (read off the combined diagram at its {} points, {used} mm, {how} the exact {exact} mm)",
+            self.points.len()
+        )
     }
 
     /// The exact smallest convex radius of curvature, to rounding: of the pitch curve
@@ -289,14 +321,15 @@ impl Cam {
             ));
         }
         let r = &self.radius;
+        let r_exact = self.exact_r_min();
         out.push(subject(
             row(
                 Symbol::Radius,
                 At::Scene,
                 Method::CombinedDiagram,
                 r.graphical,
-                r.exact,
-                r.exact,
+                r_exact,
+                r_exact,
             ),
             "min",
         ));
@@ -361,7 +394,7 @@ impl Cam {
         ));
         if !self.flat() {
             let g = (0.4 * r.graphical).min(0.8 * self.inversion.rho_min);
-            let a = (0.4 * r.exact).min(0.8 * rho);
+            let a = (0.4 * r_exact).min(0.8 * rho);
             out.push(subject(
                 row(Symbol::Radius, At::Scene, Method::Inversion, g, a, a),
                 "roller",
@@ -419,6 +452,7 @@ impl Cam {
             num(d.ds_ends[0]), num(d.ds_ends[1]), num(top), num(s.stroke)
         ));
         let r = &self.radius;
+        let r_exact = self.exact_r_min();
         let kind = if self.flat() {
             format!(
                 "convexity r₀ ≥ max(−(S + S″)) + ρ_min, ρ_min = {} mm",
@@ -431,15 +465,16 @@ impl Cam {
         };
         out.push(format!(
             "cam: r_min = {} mm exact ({kind}); {} mm read off the combined diagram at its {} points",
-            mm(r.exact), mm(r.graphical), self.points.len()
+            mm(r_exact), mm(r.graphical), self.points.len()
         ));
         if let Some(q) = s.quoted_r_min {
             out.push(format!(
                 "cam: ERRATUM of the source: it quotes r_min = {} mm, inconsistent with its data: with {kind} the minimum is {} mm (the quoted value is {}× too small) and is not used",
-                mm(q), mm(r.exact), num(r.exact / q)
+                mm(q), mm(r_exact), num(r_exact / q)
             ));
         }
-        if let Some((read, worst)) = r.convexity {
+        if let Some(read) = r.convexity {
+            let (_, worst) = exact::min_radius_flat(s);
             out.push(format!(
                 "cam: flat face: max(−(S + S″)) = {} mm exact, {} mm read at the 45° tangent",
                 mm(worst),
@@ -447,7 +482,7 @@ impl Cam {
             ));
             let half = exact::dense(s, 500)
                 .into_iter()
-                .map(|(p, a)| (exact::motion(s, p, a).ds - s.offset()).abs())
+                .map(|(p, a)| (motion(s, p, a).ds - s.offset()).abs())
                 .fold(0.0, f64::max);
             out.push(format!("cam: flat face: the face's half-length from the follower's axis ≥ max|dS/dφ − e| = {} mm", mm(half)));
         }
@@ -456,22 +491,27 @@ impl Cam {
             if rho < 0.0 {
                 out.push(format!(
                     "cam: CUSP: the flat-faced profile is concave (ρ = r₀ + S + S″ = {} mm < 0 at r₀ = {} mm): the face lines' envelope loops back and the follower cannot reproduce the law; r₀ must be at least {} mm",
-                    mm(rho), mm(self.base), mm(r.exact)
+                    mm(rho), mm(self.base), mm(r_exact)
                 ));
             }
         } else {
             let worst = self.worst_angle();
             if self.rocker() {
+                let below = if worst < s.gamma_min - 1e-9 {
+                    format!(": BELOW γ_min {}", self.base_used(r_exact))
+                } else {
+                    String::new()
+                };
                 out.push(format!(
-                    "cam: the smallest transmission angle over the cycle is {}° (γ_min = {}°)",
+                    "cam: the smallest transmission angle over the cycle is {}° (γ_min = {}°){below}",
                     deg(worst),
                     deg(s.gamma_min)
                 ));
             } else {
                 let over = if worst > FRAC_PI_2 - s.gamma_min + 1e-9 {
-                    ": EXCEEDED at the given base radius"
+                    format!(": EXCEEDED {}", self.base_used(r_exact))
                 } else {
-                    ""
+                    String::new()
                 };
                 out.push(format!(
                     "cam: the largest pressure angle {} is {}° (λ_max = {}°){over}",
@@ -489,9 +529,10 @@ impl Cam {
             } else {
                 "chosen"
             };
+            let drawn = self.inversion.rho_min;
             out.push(format!(
-                "cam: roller: 0.4·r_min = {} mm, 0.8·ρ_min = {} mm (ρ_min of the pitch curve {} mm): r = {} mm ({chosen})",
-                mm(0.4 * self.base), mm(0.8 * rho), mm(rho), mm(self.roller)
+                "cam: roller: 0.4·r₀ = {} mm, 0.8·ρ_min = {} mm (ρ_min of the drawn pitch curve {} mm, exact {} mm): r = {} mm ({chosen})",
+                mm(0.4 * self.base), mm(0.8 * drawn), mm(drawn), mm(rho), mm(self.roller)
             ));
             if (self.roller - rho).abs() <= 1e-12 * rho {
                 out.push(format!(
@@ -512,7 +553,7 @@ impl Cam {
                 mm(r_free),
                 mm(self.scene_offset(e_free)),
                 mm(self.scene_offset(offset)),
-                mm(r.exact)
+                mm(r_exact)
             ));
             if offset < 0.0 {
                 let mirrored = Placement::Translating {
@@ -526,7 +567,7 @@ impl Cam {
                     exact::dense(s, 500)
                         .into_iter()
                         .filter(|&(phi, _)| phi <= st[1])
-                        .map(|(phi, a)| p.kin(exact::motion(s, phi, a)).pressure_angle())
+                        .map(|(phi, a)| p.kin(motion(s, phi, a)).pressure_angle())
                         .fold(0.0, f64::max)
                 };
                 out.push(format!(

@@ -1,4 +1,6 @@
-use super::exact::{self, Placement};
+use super::exact;
+use super::follower::{self, Placement};
+use super::motion;
 use super::*;
 use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
@@ -110,7 +112,7 @@ fn seed000_law_matches_the_closed_form() {
 #[test]
 fn seed000_r_min_is_about_70_mm_not_40() {
     let cam = build(&seed000(), &ctx(0.0)).unwrap();
-    let r = cam.radius.exact;
+    let r = cam.exact_r_min();
     // Digest 000.12: a grid optimum of 69.86 mm over the 26 points (69.37 mm the other way);
     // the whole cycle adds constraints, so the exact minimum is not below the drawn one.
     assert!((r - 0.06986).abs() < 0.0006, "exact r_min {r}");
@@ -123,11 +125,17 @@ fn seed000_r_min_is_about_70_mm_not_40() {
         "{} vs {r}",
         cam.radius.graphical
     );
-    // γ ≥ γ_min over the whole cycle at the centre found.
+    // The profile is built on the centre found on the drawing, r₀ = the r_min read at the 26
+    // points: between them γ dips just below γ_min (59.91°), and the note says so.
+    assert_eq!(cam.base, cam.radius.graphical);
+    let worst = cam.worst_angle().to_degrees();
+    assert!((59.8..60.0).contains(&worst), "{worst}");
+    let notes = cam.notes();
     assert!(
-        cam.worst_angle() >= 60f64.to_radians() - 1e-6,
-        "{}",
-        cam.worst_angle().to_degrees()
+        notes
+            .iter()
+            .any(|n| n.contains("BELOW γ_min at the base radius used") && n.contains("26 points")),
+        "{notes:?}"
     );
     assert!(cam
         .notes()
@@ -167,7 +175,7 @@ fn seed000_zone_of_the_centre_is_hatched_into_the_admitted_side() {
         .collect();
     let cons: Vec<(DVec2, DVec2)> = ks.into_iter().zip(rockers).collect();
     let sin_g = spec.gamma_min.sin();
-    assert!(exact::admits(o, &cons, sin_g, 1e-9));
+    assert!(follower::admits(o, &cons, sin_g, 1e-9));
     let strokes: Vec<_> = steps
         .iter()
         .filter_map(|s| match (&s.item, s.role) {
@@ -178,10 +186,10 @@ fn seed000_zone_of_the_centre_is_hatched_into_the_admitted_side() {
     assert!(strokes.len() >= 6, "{}", strokes.len());
     for s in &strokes {
         assert!(s.from.distance(o) <= 16.0 + 1e-9, "{s:?}");
-        assert!(exact::admits(s.to, &cons, sin_g, 0.0), "{s:?}");
+        assert!(follower::admits(s.to, &cons, sin_g, 0.0), "{s:?}");
         // It starts on the boundary: just behind it the centre is not admitted.
         let behind = s.from - (s.to - s.from) * 0.1;
-        assert!(!exact::admits(behind, &cons, sin_g, 0.0), "{s:?}");
+        assert!(!follower::admits(behind, &cons, sin_g, 0.0), "{s:?}");
     }
 }
 
@@ -225,25 +233,50 @@ fn profile_deviation_falls_as_n_squared() {
     // target; straight pieces between the tangency points left 1.6e-6 there).
     let (_, fine) = deviation_at(&cam, 720, &ctx(0.0)).unwrap();
     assert!(
-        fine <= 1e-6 * cam.radius.exact,
+        fine <= 1e-6 * cam.exact_r_min(),
         "{fine} vs r_min {}",
-        cam.radius.exact
+        cam.exact_r_min()
     );
 }
 
 #[test]
 fn translating_min_radius_keeps_the_pressure_angle() {
     let spec = translating(Law::Cosine, 0.003);
-    let cam = build(&spec, &ctx(0.0)).unwrap();
+    let drawn = build(&spec, &ctx(0.0)).unwrap();
     // Seed 002 digest §5.9 (PZ5, cosine, favourable offset, force closure on the rise):
     // 19.02 mm; the whole cycle (return too) needs at least that.
-    assert!(cam.radius.exact >= 0.01902 - 1e-4, "{}", cam.radius.exact);
+    let r = drawn.exact_r_min();
+    assert!(r >= 0.01902 - 1e-4, "{r}");
+    // Built on the r_min read at the 26 points (just below the exact one), λ exceeds λ_max
+    // between them (30.19°), and the note says at which radius.
+    assert_eq!(drawn.base, drawn.radius.graphical);
+    assert!(
+        drawn.base < r && r - drawn.base < 5e-4,
+        "{} {r}",
+        drawn.base
+    );
+    let worst = drawn.worst_angle().to_degrees();
+    assert!((30.0..30.5).contains(&worst), "{worst}");
+    let notes = drawn.notes();
+    assert!(
+        notes.iter().any(|n| n.contains(
+            "EXCEEDED at the base radius used (read off the combined diagram at its 26 points"
+        ) && n.contains("below the exact")),
+        "{notes:?}"
+    );
+    // Given the exact r_min, λ_max binds and is never exceeded.
+    let given = CamSpec {
+        base_radius: Some(r),
+        ..spec
+    };
+    let cam = build(&given, &ctx(0.0)).unwrap();
     let worst = cam.worst_angle();
     assert!(
         (worst - 30f64.to_radians()).abs() < 1e-6,
         "{}",
         worst.to_degrees()
     );
+    assert!(!cam.notes().iter().any(|n| n.contains("EXCEEDED")));
 }
 
 #[test]
@@ -263,8 +296,13 @@ fn pz5_rise_only_matches_the_digest() {
         };
         let (r, _) = exact::min_radius_translating(&s, 0.003);
         assert!((r * 1e3 - want).abs() < 0.01, "{law:?}: {}", r * 1e3);
-        let (r, _) = exact::min_radius_translating(&s, -0.003);
-        assert!((r * 1e3 - wrong).abs() < 0.01, "{law:?}: {}", r * 1e3);
+        let (wr, _) = exact::min_radius_translating(&s, -0.003);
+        assert!((wr * 1e3 - wrong).abs() < 0.01, "{law:?}: {}", wr * 1e3);
+        // At the exact r_min λ_max binds on the rise.
+        let s = CamSpec {
+            base_radius: Some(r),
+            ..s
+        };
         let cam = build(&s, &ctx(0.0)).unwrap();
         assert!(
             (cam.worst_angle() - 30f64.to_radians()).abs() < 1e-5,
@@ -303,7 +341,19 @@ fn flat_face_convexity_matches_the_digest() {
             worst * 1e3
         );
         assert!((r0 - worst - 0.010).abs() < 1e-12);
+        // Built on the r₀ read at the 45° tangent: ρ_min falls short by what the reading
+        // misses between the points.
         let cam = build(&s, &ctx(0.0)).unwrap();
+        assert_eq!(cam.base, cam.radius.graphical);
+        assert!((cam.base - r0).abs() < 1e-3, "{law:?}: {} {r0}", cam.base);
+        let want = 0.010 + cam.base - r0;
+        assert!((cam.exact_rho_min() - want).abs() < 1e-12, "{law:?}");
+        // At the exact r₀ the margin holds.
+        let given = CamSpec {
+            base_radius: Some(r0),
+            ..s
+        };
+        let cam = build(&given, &ctx(0.0)).unwrap();
         assert!(cam.exact_rho_min() >= 0.010 - 1e-9);
     }
 }
@@ -389,7 +439,7 @@ fn placement_pressure_angle_matches_the_formula() {
     };
     for k in 0..20 {
         let phi = k as f64 * 0.1;
-        let m = exact::motion(&s, phi, true);
+        let m = motion::motion(&s, phi, true);
         let want = ((m.ds - 0.003) / (0.02 + m.s)).atan().abs();
         assert!((p.kin(m).pressure_angle() - want).abs() < 1e-12);
     }
@@ -442,6 +492,8 @@ mod props {
                 poles: None,
                 ..seed000()
             };
+            let (r, _) = exact::min_radius_translating(&s, e);
+            let s = CamSpec { base_radius: Some(r), ..s };
             let cam = build(&s, &ctx(0.0)).unwrap();
             let lmax = (90.0 - gamma).to_radians();
             let worst = cam.worst_angle();
@@ -476,7 +528,7 @@ fn the_drawn_r_min_converges_to_the_exact_one() {
             ..seed000()
         };
         let cam = build(&s, &ctx(0.0)).unwrap();
-        (cam.radius.graphical - cam.radius.exact).abs()
+        (cam.radius.graphical - cam.exact_r_min()).abs()
     };
     let (a, b) = (err(12), err(96));
     assert!(b < a && b < 2e-5, "{a} {b}");

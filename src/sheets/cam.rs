@@ -212,7 +212,7 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         "r_{{min}} = {} {mm} ({}), {} {mm} ({})",
         n(cam.radius.graphical),
         Text::Graphical.get(lang),
-        n(cam.radius.exact),
+        n(cam.exact_r_min()),
         Text::Exact.get(lang)
     ));
     if let Some(q) = s.quoted_r_min {
@@ -229,7 +229,8 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         out.push(format!(
             "0,4·r_{{0}} = {} {mm}, 0,8·ρ_{{min}} = {} {mm} → r_{{р}} = {} {mm}",
             n(0.4 * cam.base),
-            n(0.8 * rho),
+            // The roller is chosen from the drawn pitch curve's ρ_min.
+            n(0.8 * cam.inversion.rho_min),
             n(cam.roller)
         ));
         if cam.roller >= rho {
