@@ -151,7 +151,10 @@ proptest! {
         let s0 = dense_max(&s, force, |(sv, ds, _)| (ds - e).abs() * t - sv).max(0.0);
         let want = e.hypot(s0);
         let (got, _) = exact::min_radius_translating(&s, e);
-        prop_assert!(close(got, want, 1e-9), "r_min {got} against {want}");
+        // As for the flat face below: never below the samples, above them by the sampling
+        // error at most.
+        let tol = 1e-9 * stroke.max(want);
+        prop_assert!(got >= want - 1e-3 * tol && got - want <= tol, "r_min {got} against {want}");
         // At that radius the largest pressure angle is λ_max (to rounding).
         let lmax = FRAC_PI_2 - s.gamma_min;
         let worst = dense_max(&s, force, |(sv, ds, _)| ((ds - e).abs() / (s0 + sv)).atan());
@@ -173,7 +176,15 @@ proptest! {
         let worst = dense_max(&s, false, |(sv, _, a)| -(sv + a));
         let want = worst.max(0.0) + s.rho_min;
         let (got, w) = exact::min_radius_flat(&s);
-        prop_assert!(close(got, want, 1e-9), "r_min {got} against {want}");
+        // The twin refines every local maximum, the oracle only samples: the twin is never
+        // below the samples (to rounding), and above them by the sampling error at most,
+        // which scales with the stroke as much as with r_min (r_min 2.3 mm with a 58.5 mm
+        // stroke came out 2.6e-12 m, 1.1e-9 relative, above the samples).
+        let tol = 1e-9 * stroke.max(want);
+        prop_assert!(
+            got >= want - 1e-3 * tol && got - want <= tol,
+            "r_min {got} against {want}"
+        );
         // The worst −(S + S″) may be a cancellation near 0: to 1e-9 of the stroke.
         prop_assert!(
             (w - worst).abs() <= 1e-9 * worst.abs().max(stroke),
