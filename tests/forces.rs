@@ -97,11 +97,12 @@ fn the_linear_solve_and_the_power_balance_agree() {
     for k in ks {
         let f = session.forces(&sc, k).expect("forces");
         assert!(
-            (f.m_power - f.twin.m_bal).abs() <= 1e-9 * f.twin.m_bal.abs(),
+            (f.analysis.m_power - f.analysis.twin.m_bal).abs()
+                <= 1e-9 * f.analysis.twin.m_bal.abs(),
             "{}: power {} vs solve {}",
             f.label,
-            f.m_power,
-            f.twin.m_bal
+            f.analysis.m_power,
+            f.analysis.twin.m_bal
         );
     }
 }

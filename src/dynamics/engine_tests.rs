@@ -154,6 +154,7 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
         let pos = &plan.positions[k];
         // The gas forces are among the loads.
         let gas = f
+            .analysis
             .loads_exact
             .iter()
             .filter(|l| l.kind == LoadKind::Driving)
@@ -161,12 +162,12 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
         assert!(gas >= 1, "position {}", pos.label);
         let exact = Motion::analytic(&pos.pose, W1);
         // Every load (inertia included): M_пр = −sign(ω₁)·M_у.
-        let m = reduce_loads(&f.loads_exact, &exact, W1.abs());
+        let m = reduce_loads(&f.analysis.loads_exact, &exact, W1.abs());
         assert!(
-            (m + sense * f.twin.m_bal).abs() < 1e-9 * f.twin.m_bal.abs(),
+            (m + sense * f.analysis.twin.m_bal).abs() < 1e-9 * f.analysis.twin.m_bal.abs(),
             "position {}: {m} vs M_у {}",
             pos.label,
-            f.twin.m_bal
+            f.analysis.twin.m_bal
         );
         // The dynamics' own loads (weights and gas forces): the equilibrium's M_у.
         let red = Reducer::new(

@@ -80,23 +80,23 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
         let pos = &plan.positions[k];
         let exact = Motion::analytic(&pos.pose, w1);
         // Every load of the force analysis (inertia included): M_пр = −sign(ω₁)·M_у.
-        let m = reduce_loads(&f.loads_exact, &exact, w1.abs());
+        let m = reduce_loads(&f.analysis.loads_exact, &exact, w1.abs());
         assert!(
-            (m + sense * f.twin.m_bal).abs() < 1e-9 * f.twin.m_bal.abs(),
+            (m + sense * f.analysis.twin.m_bal).abs() < 1e-9 * f.analysis.twin.m_bal.abs(),
             "position {}: {m} vs M_у {}",
             pos.label,
-            f.twin.m_bal
+            f.analysis.twin.m_bal
         );
         // The same loads as the plans read them, against Zhukovsky's lever.
         let vel = session.velocity(sc.l, sc.v, k).expect("plan");
         let vp = vel.plan().expect("built");
         let drawn = Reducer::plan_motion(vp, &pos.built.p, sc.l.value(), &ctx());
-        let mg = reduce_loads(&f.loads, &drawn, w1.abs());
+        let mg = reduce_loads(&f.analysis.loads, &drawn, w1.abs());
         assert!(
-            (mg + sense * f.lever.m_bal).abs() < 1e-6 * f.lever.m_bal.abs(),
+            (mg + sense * f.analysis.lever.m_bal).abs() < 1e-6 * f.analysis.lever.m_bal.abs(),
             "position {}: {mg} vs the lever's {}",
             pos.label,
-            f.lever.m_bal
+            f.analysis.lever.m_bal
         );
         // The dynamics' own loads (weights and resistance, every link): the linear solve of
         // the links' equilibrium under them gives the same moment.

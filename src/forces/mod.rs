@@ -67,8 +67,8 @@ pub struct Analysis {
     pub m_power: f64,
 }
 
-/// One position's force analysis: the frictionless [`Analysis`] (its fields read through
-/// `Deref`, `f.polygons`), μ_F, the sliders and the analysis with friction.
+/// One position's force analysis: the frictionless [`Analysis`], μ_F, the sliders and the
+/// analysis with friction.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PositionForces {
     /// The position's label.
@@ -123,17 +123,9 @@ impl PositionForces {
     }
 }
 
-impl std::ops::Deref for PositionForces {
-    type Target = Analysis;
-    fn deref(&self) -> &Analysis {
-        &self.analysis
-    }
-}
-
 /// One position's force analysis with friction in the pairs ([`pair_friction`]): the
 /// polygons, the lever and the twin of the loads plus the friction loads (its
-/// [`Analysis`], read through `Deref`), settled with the friction equations solved for the
-/// friction loads ([`pair_friction::settle`]).
+/// [`Analysis`]), settled with the friction equations solved for the friction loads ([`pair_friction::settle`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct WithFriction {
     /// The analysis with the friction loads.
@@ -142,13 +134,6 @@ pub struct WithFriction {
     pub lost: f64,
     /// The analyses the polygons and the twin took to settle the friction.
     pub approximations: [usize; 2],
-}
-
-impl std::ops::Deref for WithFriction {
-    type Target = Analysis;
-    fn deref(&self) -> &Analysis {
-        &self.analysis
-    }
 }
 
 /// Where a guide's reaction acts on a slider of known length (seed 001 §7.2, Fig. 28): when
@@ -298,7 +283,7 @@ pub fn analyse(
     let mut rows = rows(&pos.label, &analysis.loads, &analysis.loads_exact);
     rows.extend(reaction_rows(&pos.label, "", &analysis));
     if let Some(f) = &friction {
-        rows.extend(reaction_rows(&pos.label, "_f", f));
+        rows.extend(reaction_rows(&pos.label, "_f", &f.analysis));
     }
     let size = pos
         .pose
@@ -345,7 +330,7 @@ pub fn analyse(
         };
         let mut v = vec![of(&analysis, None)];
         if let (Some(w), Some(fr)) = (&friction, &spec.friction) {
-            v.push(of(w, Some(fr)));
+            v.push(of(&w.analysis, Some(fr)));
         }
         v
     };

@@ -137,12 +137,12 @@ pub(super) fn zero_references(rows: &mut [Row], size: f64) {
 pub fn notes(f: &PositionForces) -> Vec<String> {
     use crate::scale::{format_sig, Lang};
     let n = |x: f64| format_sig(x, 6, Lang::En);
-    let (p, l) = (f.polygons.driver.m_bal, f.lever.m_bal);
+    let (p, l) = (f.analysis.polygons.driver.m_bal, f.analysis.lever.m_bal);
     let mut out = vec![format!(
         "position {}: the balancing moment by the power balance Σ F·v + Σ M·ω + M_bal·ω₁ = 0 is {} N·m; the linear solve of the links' equilibrium gives {} N·m",
         f.label,
-        format_sig(f.m_power, 10, Lang::En),
-        format_sig(f.twin.m_bal, 10, Lang::En),
+        format_sig(f.analysis.m_power, 10, Lang::En),
+        format_sig(f.analysis.twin.m_bal, 10, Lang::En),
     ), format!(
         "position {}: M_bal by the force polygons {} N·m, by Zhukovsky's lever {} N·m: they differ by {} % of the polygons' value",
         f.label,
@@ -150,11 +150,16 @@ pub fn notes(f: &PositionForces) -> Vec<String> {
         n(l),
         format_sig(if p != 0.0 { (p - l).abs() / p.abs() * 100.0 } else { 0.0 }, 3, Lang::En),
     )];
-    if let Some(force) = f.twin.f_bal.filter(|_| f.twin.m_bal * f.sense < 0.0) {
+    if let Some(force) = f
+        .analysis
+        .twin
+        .f_bal
+        .filter(|_| f.analysis.twin.m_bal * f.sense < 0.0)
+    {
         out.push(format!(
             "position {}: the balancing moment {} N·m opposes ω₁: the pinion holds the crank back, so its tooth pushes on the other flank and the balancing force F_bal = {} N acts on the line of action mirrored about the line of centres",
             f.label,
-            n(f.twin.m_bal),
+            n(f.analysis.twin.m_bal),
             n(force),
         ));
     }
@@ -166,7 +171,7 @@ pub fn notes(f: &PositionForces) -> Vec<String> {
         ));
     }
     if let Some(w) = &f.friction {
-        let (m0, m) = (f.twin.m_bal, w.twin.m_bal);
+        let (m0, m) = (f.analysis.twin.m_bal, w.analysis.twin.m_bal);
         let eta = if m != 0.0 { m0 / m } else { f64::NAN };
         let eta = if eta > 0.0 && eta < 1.0 {
             format!(
@@ -182,7 +187,7 @@ pub fn notes(f: &PositionForces) -> Vec<String> {
             format_sig(m, 10, Lang::En),
             format_sig(m0, 10, Lang::En),
             n(-w.lost),
-            format_sig(w.m_power, 10, Lang::En),
+            format_sig(w.analysis.m_power, 10, Lang::En),
             w.approximations[0],
             w.approximations[1],
         ));

@@ -265,26 +265,26 @@ proptest! {
         spec.friction = Some(fr.clone());
         let c = case(&m, phi, &spec)?;
         let w = c.with_friction(&spec, &fr)?;
-        let big = w.twin.largest();
-        for g in w.polygons.reactions() {
-            let t = w.twin.reaction(g.pair.from, g.pair.to).expect("the same pair in the twin");
+        let big = w.analysis.twin.largest();
+        for g in w.analysis.polygons.reactions() {
+            let t = w.analysis.twin.reaction(g.pair.from, g.pair.to).expect("the same pair in the twin");
             prop_assert!((g.force - t).length() <= REL * (big + t.length()), "R_{}_{}: {} vs {}", g.pair.from, g.pair.to, g.force, t);
         }
-        let mb = w.twin.m_bal.abs() + big * 0.2;
-        prop_assert!((w.polygons.driver.m_bal - w.twin.m_bal).abs() <= REL * mb);
-        prop_assert!((w.lever.m_bal - w.twin.m_bal).abs() <= REL * mb, "lever {} vs {}", w.lever.m_bal, w.twin.m_bal);
-        prop_assert!((w.m_power - w.twin.m_bal).abs() <= REL * mb, "power {} vs {}", w.m_power, w.twin.m_bal);
+        let mb = w.analysis.twin.m_bal.abs() + big * 0.2;
+        prop_assert!((w.analysis.polygons.driver.m_bal - w.analysis.twin.m_bal).abs() <= REL * mb);
+        prop_assert!((w.analysis.lever.m_bal - w.analysis.twin.m_bal).abs() <= REL * mb, "lever {} vs {}", w.analysis.lever.m_bal, w.analysis.twin.m_bal);
+        prop_assert!((w.analysis.m_power - w.analysis.twin.m_bal).abs() <= REL * mb, "power {} vs {}", w.analysis.m_power, w.analysis.twin.m_bal);
         // The balancing moment's power grows by what the pairs lose.
         prop_assert!(w.lost <= 0.0);
-        let gained = (w.twin.m_bal - c.twin.m_bal) * W1;
+        let gained = (w.analysis.twin.m_bal - c.twin.m_bal) * W1;
         prop_assert!((gained + w.lost).abs() <= REL * (mb + c.twin.m_bal.abs()) * W1.abs(), "{gained} vs {}", w.lost);
         let omega = |l: usize| if l == 0 { 0.0 } else { c.exact.omega[l] };
-        for r in &w.twin.reactions {
+        for r in &w.analysis.twin.reactions {
             let (from, to) = (r.pair.from, r.pair.to);
             match r.pair.kind {
                 PairKind::Prismatic { .. } => {
                     let name = format!("F_{{тр{from}-{to}}}");
-                    let Some(fl) = w.loads_exact.iter().find(|l| l.link == to && l.name == name) else {
+                    let Some(fl) = w.analysis.loads_exact.iter().find(|l| l.link == to && l.name == name) else {
                         continue;
                     };
                     // The friction load is f·|R| of the previous approximation's R, which
@@ -299,7 +299,7 @@ proptest! {
                 }
                 PairKind::Revolute(k) => {
                     let name = format!("M_{{тр{from}-{to}}}");
-                    let Some(fl) = w.loads_exact.iter().find(|l| l.link == to && l.name == name) else {
+                    let Some(fl) = w.analysis.loads_exact.iter().find(|l| l.link == to && l.name == name) else {
                         continue;
                     };
                     let rho = f * radius;
@@ -404,10 +404,10 @@ proptest! {
             let fr = PairFriction { f, radius, radii: Vec::new() };
             spec.friction = Some(fr.clone());
             let w = c.with_friction(&spec, &fr)?;
-            let t = residual_of(&spec, &c, false, reported(&w.twin.reactions, w.twin.m_bal, w.twin.f_bal));
+            let t = residual_of(&spec, &c, false, reported(&w.analysis.twin.reactions, w.analysis.twin.m_bal, w.analysis.twin.f_bal));
             prop_assert!(t <= REL, "twin residual with friction {t}");
-            let r = w.polygons.reactions();
-            let p = residual_of(&spec, &c, true, reported(&r, w.polygons.driver.m_bal, w.polygons.driver.f_bal));
+            let r = w.analysis.polygons.reactions();
+            let p = residual_of(&spec, &c, true, reported(&r, w.analysis.polygons.driver.m_bal, w.analysis.polygons.driver.f_bal));
             prop_assert!(p <= REL, "polygons residual with friction {p}");
         }
     }

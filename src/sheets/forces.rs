@@ -73,7 +73,7 @@ fn position_sheet(
 ) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
     let mut blocks = Vec::new();
-    for g in &f.polygons.groups {
+    for g in &f.analysis.polygons.groups {
         let [i, j] = g.links;
         let kind = st
             .groups
@@ -96,7 +96,7 @@ fn position_sheet(
             lang,
         ));
     }
-    let d = &f.polygons.driver;
+    let d = &f.analysis.polygons.driver;
     let driving = format!("{} {}", Text::DrivingLink.get(lang), st.crank_link);
     blocks.push(view(&d.scheme, driving, ("mechanism.scale_l", sc.l), lang));
     let triangle = Text::ForcePolygonOfDriver.get(lang).to_string();
@@ -106,7 +106,7 @@ fn position_sheet(
         ("forces.scale_f", f.scale_f),
         lang,
     ));
-    let lever = &f.lever.figure;
+    let lever = &f.analysis.lever.figure;
     let zhukovsky = Text::ZhukovskyLever.get(lang).to_string();
     blocks.push(view(
         lever,
