@@ -4,7 +4,11 @@
 //! rectangle (sheet mm) renders only that part of the sheet, to inspect details.
 
 use std::path::Path;
-use tmm::plate::{demo_plate, to_png, to_svg, write_atomic};
+use tmm::plate::{to_png, to_svg, write_atomic};
+
+#[path = "../tests/support/demo.rs"]
+mod demo;
+use demo::demo_plate;
 use tmm::scale::Lang;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -35,6 +35,8 @@ mod flywheel;
 mod plot;
 mod rack;
 mod rates;
+#[cfg(test)]
+pub(crate) mod sample;
 mod table;
 
 use crate::calculus::CalculusError;
@@ -52,7 +54,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 use thiserror::Error;
 
-pub use table::{sample_bench, Bench, BenchRow, Throughput};
+pub use table::{Bench, BenchRow, Throughput};
 
 /// The resolutions of the chord-method sweep (positions per crank turn).
 pub const CHORD_RESOLUTIONS: [usize; 6] = [12, 24, 48, 96, 192, 360];

@@ -4,16 +4,19 @@
 
 use super::twin::{pairs, PairKind};
 use crate::geom::DVec2;
-use crate::linkage::{Op, Pose, Program};
+use crate::linkage::{Pose, Program};
 
 /// The name of the group that link `link` belongs to, as the polygons title it (`group 2
 /// (links 4, 5)`), or `the driving link`.
 pub fn group_of(prog: &Program, link: usize) -> String {
-    for op in &prog.ops {
-        if let Op::Dyad { group, links, .. } = op {
-            if links.iter().any(|&l| l as usize == link) {
-                return format!("group {} (links {}, {})", group + 1, links[0], links[1]);
-            }
+    for g in prog.groups() {
+        if g.links.contains(&link) {
+            return format!(
+                "group {} (links {}, {})",
+                g.group + 1,
+                g.links[0],
+                g.links[1]
+            );
         }
     }
     "the driving link".to_string()
@@ -22,13 +25,8 @@ pub fn group_of(prog: &Program, link: usize) -> String {
 /// The position in program order of the group of `link` (0 the driving link, then 1, 2 …
 /// for the groups as they are attached): the force analysis goes from the last to the first.
 pub fn order_of(prog: &Program, link: usize) -> usize {
-    prog.ops
-        .iter()
-        .filter_map(|op| match op {
-            Op::Dyad { links, .. } => Some(links),
-            Op::Point { .. } => None,
-        })
-        .position(|links| links.iter().any(|&l| l as usize == link))
+    prog.groups()
+        .position(|g| g.links.contains(&link))
         .map_or(0, |q| q + 1)
 }
 
@@ -39,13 +37,9 @@ pub fn order_of(prog: &Program, link: usize) -> usize {
 pub fn singular_group(prog: &Program, pose: &Pose) -> Option<String> {
     let all = pairs(prog);
     let mut worst: Option<(f64, String)> = None;
-    let dyads = prog.ops.iter().filter_map(|op| match op {
-        Op::Dyad { group, links, .. } => Some((*group, *links)),
-        Op::Point { .. } => None,
-    });
-    for (q, (group, links)) in dyads.enumerate() {
+    for (q, g) in prog.groups().enumerate() {
         let own = all.get(1 + 3 * q..4 + 3 * q)?;
-        let (i, j) = (links[0] as usize, links[1] as usize);
+        let (group, [i, j]) = (g.group, g.links);
         let centre = pose.p.get(prog.centre).copied()?;
         let mut a = [[0.0f64; 6]; 6];
         let mut put = |l: usize, c: usize, f: DVec2, x: DVec2, m: f64| {

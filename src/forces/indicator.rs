@@ -12,7 +12,7 @@ use super::loads::{Load, LoadKind, Motion};
 pub use super::spec::Indicator;
 use super::ForceError;
 use crate::geom::DVec2;
-use crate::linkage::{Op, PDir, PDyad, Program};
+use crate::linkage::Program;
 use std::f64::consts::{PI, TAU};
 
 impl Indicator {
@@ -49,27 +49,10 @@ impl Indicator {
             key: "indicator.point",
             name: self.point.clone(),
         })?;
-        let (guide, slider) = prog
-            .ops
-            .iter()
-            .find_map(|op| match *op {
-                Op::Dyad {
-                    links,
-                    dyad: PDyad::Rrp { guide, joint, .. },
-                    ..
-                } if joint == k => Some((guide, links[1] as usize)),
-                _ => None,
-            })
-            .ok_or_else(|| ForceError::NotPiston {
-                name: self.point.clone(),
-            })?;
         let at = |i: usize| motion.p.get(i).copied().unwrap_or(DVec2::ZERO);
-        let axis = match guide.dir {
-            PDir::Fixed(a) => DVec2::from_angle(a),
-            PDir::Along { from, to, angle } => {
-                DVec2::from_angle(angle).rotate((at(to) - at(from)).normalize_or_zero())
-            }
-        };
+        let (axis, slider) = prog.piston(k, at).ok_or_else(|| ForceError::NotPiston {
+            name: self.point.clone(),
+        })?;
         let (centre, pin) = (at(prog.centre), at(prog.pin));
         let phi = (pin - centre).to_angle();
         let w = motion

@@ -5,7 +5,7 @@
 use super::spec::{Action, ForceSpec};
 use super::ForceError;
 use crate::geom::DVec2;
-use crate::linkage::{Op, PDyad, Pose, Program};
+use crate::linkage::{Pose, Program};
 
 /// The motion of one position, SI, by program point index and by link number.
 #[derive(Debug, Clone, PartialEq)]
@@ -292,20 +292,5 @@ pub fn carrier(prog: &Program, k: usize, named: Option<u32>) -> Result<usize, Un
 /// Link `l` is a slider: the block of an RRP, RPR or RPP group, either link of a PRP group,
 /// the translating link of an RPP group (not a slotted link the block slides in).
 fn is_slider(prog: &Program, l: usize) -> bool {
-    prog.ops.iter().any(|op| match *op {
-        Op::Dyad {
-            links: [i, j],
-            dyad,
-            ..
-        } => {
-            let (i, j) = (i as usize, j as usize);
-            match dyad {
-                PDyad::Rrr { .. } => false,
-                PDyad::Rrp { .. } => l == j,
-                PDyad::Rpr { .. } => l == i,
-                PDyad::Prp { .. } | PDyad::Rpp { .. } => l == i || l == j,
-            }
-        }
-        Op::Point { .. } => false,
-    })
+    prog.groups().any(|g| g.sliders().contains(&Some(l)))
 }

@@ -15,7 +15,7 @@ use super::pair_friction::PairFriction;
 use super::spec::{Action, Drive, ForceSpec};
 use super::twin::{line_of_action, PairKind, Reaction};
 use crate::geom::DVec2;
-use crate::linkage::{Op, PDyad, Program};
+use crate::linkage::Program;
 
 /// What a route reports of one position: its reactions, its balancing moment and (gear
 /// drive) the magnitude of its balancing force.
@@ -239,10 +239,8 @@ pub fn residual(
 /// The moving links: the crank and both links of every group.
 fn moving_links(prog: &Program) -> Vec<usize> {
     let mut v = vec![prog.crank_link as usize];
-    for op in &prog.ops {
-        if let Op::Dyad { links, .. } = op {
-            v.extend(links.iter().map(|&l| l as usize));
-        }
+    for g in prog.groups() {
+        v.extend(g.links);
     }
     v
 }
@@ -252,21 +250,8 @@ fn moving_links(prog: &Program) -> Vec<usize> {
 /// piston, block), else none.
 fn loaded_link(prog: &Program, k: usize) -> Option<usize> {
     let mut blocks: Vec<usize> = Vec::new();
-    for op in &prog.ops {
-        if let Op::Dyad {
-            links: [i, j],
-            dyad,
-            ..
-        } = *op
-        {
-            let slid = match dyad {
-                PDyad::Rrr { .. } => [None, None],
-                PDyad::Rrp { .. } => [None, Some(j)],
-                PDyad::Rpr { .. } => [Some(i), None],
-                PDyad::Prp { .. } | PDyad::Rpp { .. } => [Some(i), Some(j)],
-            };
-            blocks.extend(slid.into_iter().flatten().map(|l| l as usize));
-        }
+    for g in prog.groups() {
+        blocks.extend(g.sliders().into_iter().flatten());
     }
     let here: Vec<usize> = prog.links_of(k).into_iter().filter(|&l| l > 0).collect();
     if here.len() == 1 {

@@ -7,7 +7,7 @@ use super::loads::{Load, Motion};
 use super::spec::Drive;
 use super::ForceError;
 use crate::geom::DVec2;
-use crate::linkage::{Op, PDyad, Pose, Program};
+use crate::linkage::{GroupPairs, Pose, Program};
 
 /// A kinematic pair as the equilibrium equations see it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,11 +46,8 @@ pub fn pairs(prog: &Program) -> Vec<Pair> {
         to: crank,
         kind: PairKind::Revolute(prog.centre),
     }];
-    for op in &prog.ops {
-        let Op::Dyad { links, dyad, .. } = op else {
-            continue;
-        };
-        let (i, j) = (links[0] as usize, links[1] as usize);
+    for g in prog.groups() {
+        let [i, j] = g.links;
         let rev = |from: usize, to: usize, k: usize| Pair {
             from,
             to,
@@ -64,34 +61,28 @@ pub fn pairs(prog: &Program) -> Vec<Pair> {
                 dir_link,
             },
         };
-        match *dyad {
-            PDyad::Rrr { a, b, joint, .. } => v.extend([
+        match g.pairs {
+            GroupPairs::Rrr { a, c, joint } => v.extend([
                 rev(prog.owner(a), i, a),
-                rev(prog.owner(b), j, b),
+                rev(prog.owner(c), j, c),
                 rev(i, j, joint),
             ]),
-            PDyad::Rrp {
-                a, guide, joint, ..
-            } => v.extend([
+            GroupPairs::Rrp { a, guide, joint } => v.extend([
                 rev(prog.owner(a), i, a),
-                pri(prog.carrier(&guide), j, joint, j),
+                pri(guide, j, joint, j),
                 rev(i, j, joint),
             ]),
-            PDyad::Rpr { a, c, .. } => v.extend([
+            GroupPairs::Rpr { a, c } => v.extend([
                 rev(prog.owner(a), i, a),
                 rev(prog.owner(c), j, c),
                 pri(i, j, a, j),
             ]),
-            PDyad::Prp { gi, gj, joint } => v.extend([
-                pri(prog.carrier(&gi), i, joint, i),
-                pri(prog.carrier(&gj), j, joint, j),
-                rev(i, j, joint),
-            ]),
-            PDyad::Rpp {
-                a, guide, joint, ..
-            } => v.extend([
+            GroupPairs::Prp { gi, gj, joint } => {
+                v.extend([pri(gi, i, joint, i), pri(gj, j, joint, j), rev(i, j, joint)])
+            }
+            GroupPairs::Rpp { a, guide, joint } => v.extend([
                 rev(prog.owner(a), i, a),
-                pri(prog.carrier(&guide), j, joint, j),
+                pri(guide, j, joint, j),
                 pri(i, j, a, i),
             ]),
         }
@@ -194,15 +185,7 @@ fn solve_on(
 ) -> Result<Equilibrium, ForceError> {
     let pairs = pairs(prog);
     let moving: Vec<usize> = std::iter::once(prog.crank_link as usize)
-        .chain(
-            prog.ops
-                .iter()
-                .filter_map(|op| match op {
-                    Op::Dyad { links, .. } => Some(links.map(|l| l as usize)),
-                    Op::Point { .. } => None,
-                })
-                .flatten(),
-        )
+        .chain(prog.groups().flat_map(|g| g.links))
         .collect();
     let row_of = |l: usize| moving.iter().position(|&m| m == l);
     let n = 3 * moving.len();

@@ -4,7 +4,7 @@
 use super::KinError;
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::DVec2;
-use crate::linkage::{KinPlan, Op, PositionPlan};
+use crate::linkage::{KinPlan, PositionPlan};
 use crate::scale::{Quantity, Scale};
 
 /// Length of the longest hodograph vector, mm.
@@ -24,11 +24,8 @@ pub fn hodograph_point(
     };
     let name = match asked {
         Some(n) => n.to_string(),
-        None => match prog.ops.iter().find_map(|op| match op {
-            Op::Point { idx, .. } if moves(*idx) => Some(prog.names[*idx].clone()),
-            _ => None,
-        }) {
-            Some(n) => n,
+        None => match prog.placed_points().find(|&k| moves(k)) {
+            Some(k) => prog.names[k].clone(),
             None => return Ok(None),
         },
     };

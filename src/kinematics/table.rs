@@ -2,7 +2,7 @@
 //! of its links (and the slide of a slotted link), then |v|, |a| of every named point.
 
 use crate::check::{Column, Table};
-use crate::linkage::{owner, plain, Op, PDyad, Pose, PositionPlan};
+use crate::linkage::{owner, plain, GroupPairs, Pose, PositionPlan};
 
 type Cell = Box<dyn Fn(&Pose) -> f64>;
 
@@ -78,13 +78,11 @@ pub fn analytic_table(plan: &PositionPlan, w1: f64) -> Table {
             .iter()
             .any(|p| !crate::check::is_zero(p.pose.dangle[l], 1.0))
     };
-    for op in &prog.ops {
-        let Op::Dyad { links, dyad, .. } = op else {
-            continue;
-        };
-        match *dyad {
-            PDyad::Rpr { a, c, .. } => {
-                let j = links[1] as usize;
+    for g in prog.groups() {
+        let links = g.links;
+        match g.pairs {
+            GroupPairs::Rpr { a, c } => {
+                let j = links[1];
                 t.link(j, w1);
                 t.push(
                     format!("L_{j}"),
@@ -98,9 +96,9 @@ pub fn analytic_table(plan: &PositionPlan, w1: f64) -> Table {
                     Box::new(move |p: &Pose| slide(p, a, c, j).1 * w1),
                 );
             }
-            PDyad::Rpp { .. } | PDyad::Prp { .. } => {}
+            GroupPairs::Rpp { .. } | GroupPairs::Prp { .. } => {}
             _ => {
-                for l in links.iter().map(|&l| l as usize).filter(|&l| turns(l)) {
+                for l in links.into_iter().filter(|&l| turns(l)) {
                     t.link(l, w1);
                 }
             }

@@ -4,6 +4,7 @@
 mod analytic;
 mod construction;
 mod extremes;
+mod groups;
 mod model;
 mod plans;
 mod positions;
@@ -19,6 +20,7 @@ mod tests;
 pub use analytic::{NearPivot, Pose, Unassembled, NEAR_PIVOT_RATIO};
 pub use construction::{Built, Failed};
 pub use extremes::{Extremes, OutputCoord};
+pub use groups::{GroupPairs, GroupView};
 pub use model::{
     Branch, Crank, Dir, Dyad, DyadKind, FixedPoint, Group, Guide, LinkPoint, Mechanism, Output,
     RedundantPair, Sense,
@@ -33,7 +35,6 @@ pub use positions_draw::{
     GUIDE_MARGIN_MM,
 };
 pub use program::Program;
-pub(crate) use program::{Op, PDir, PDyad};
 pub use scheme::structure_figure;
 pub use structure::{GroupInfo, Mobility, PairInfo, Structure};
 

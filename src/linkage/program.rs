@@ -8,7 +8,7 @@ use std::collections::HashMap;
 
 /// A direction in the program.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum PDir {
+pub(super) enum PDir {
     /// Frame direction, radians.
     Fixed(f64),
     /// Direction of `from → to` turned by `angle`.
@@ -24,7 +24,7 @@ pub enum PDir {
 
 /// A guide line in the program.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PGuide {
+pub(super) struct PGuide {
     /// Point index the line passes through (before the offset).
     pub through: usize,
     /// Its direction.
@@ -43,7 +43,7 @@ impl PGuide {
 /// A dyad with resolved indices. Fields as in [`Dyad`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[allow(missing_docs)]
-pub enum PDyad {
+pub(super) enum PDyad {
     Rrr {
         a: usize,
         la: f64,
@@ -102,7 +102,7 @@ impl PDyad {
 
 /// One operation.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Op {
+pub(super) enum Op {
     /// Place a further point of a known link.
     Point {
         /// Index of the new point.
@@ -141,7 +141,7 @@ pub struct Program {
     /// Crank link number.
     pub(crate) crank_link: u32,
     /// Operations after the crank.
-    pub(crate) ops: Vec<Op>,
+    pub(super) ops: Vec<Op>,
     /// Largest link number + 1.
     pub(crate) link_count: usize,
     /// Every frame direction of the operations with its unit vector (cos, sin), computed
@@ -475,7 +475,7 @@ impl Program {
     /// The link that carries a guide: for a direction between two points, the link holding
     /// both (a moving one before the frame); for a frame direction, the link of the point it
     /// passes through (the frame for a fixed point).
-    pub fn carrier(&self, g: &PGuide) -> usize {
+    pub(super) fn carrier(&self, g: &PGuide) -> usize {
         match g.dir {
             PDir::Along { from, to, .. } => {
                 let (a, b) = (self.links_of(from), self.links_of(to));

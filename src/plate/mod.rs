@@ -27,7 +27,6 @@
 //! ```
 
 pub mod chart;
-mod demo;
 mod fonts;
 mod items;
 mod labels;
@@ -47,7 +46,6 @@ use crate::geom::DVec2;
 use crate::scale::Lang;
 use thiserror::Error;
 
-pub use demo::{demo_mechanism, demo_plate, demo_velocity_plan};
 pub use fonts::font_database;
 pub use items::CAPTION_HEIGHT_MM;
 pub use labels::{layout, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR};

@@ -83,15 +83,6 @@ fn title_block_captions_follow_the_language() {
         .all(|c| en.contains(c)));
 }
 
-#[test]
-fn svg_is_deterministic_with_stable_ids() {
-    let a = to_svg(&demo_plate(Lang::Ru).unwrap());
-    let b = to_svg(&demo_plate(Lang::Ru).unwrap());
-    assert_eq!(a, b);
-    assert!(a.contains(r#"id="view-0-step-0""#) && a.contains(r#"id="view-1-step-4""#));
-    assert!(a.contains(r#"id="view-0-caption""#));
-}
-
 /// Every number in the SVG has at most two decimals and none is `-0`.
 #[test]
 fn svg_coordinates_are_rounded() {
@@ -161,34 +152,6 @@ fn centred_view_reports_the_sizes_when_too_big() {
     assert!(View::centred(figure(vec![]), wide, Some("c".into())).is_ok());
 }
 
-fn dark_pixels(png: &[u8]) -> (u32, u32, usize) {
-    let pixmap = Pixmap::decode_png(png).unwrap();
-    let dark = pixmap.pixels().iter().filter(|p| p.red() < 128).count();
-    (pixmap.width(), pixmap.height(), dark)
-}
-
-#[test]
-fn every_item_and_role_renders_to_png() {
-    let demo = demo_plate(Lang::Ru).unwrap();
-    let mut bare = plate(demo.sheet, Lang::Ru, vec![]);
-    let (w, h, frame_only) = dark_pixels(&to_png(&to_svg(&bare), 1000).unwrap());
-    assert_eq!((w, h), (1000, 706));
-    bare.views = demo.views.clone();
-    let svg = to_svg(&bare);
-    let png = to_png(&svg, 1000).unwrap();
-    let (_, _, with_views) = dark_pixels(&png);
-    assert!(
-        with_views > frame_only + 1000,
-        "views add only {} dark pixels",
-        with_views - frame_only
-    );
-    assert_eq!(
-        png,
-        to_png(&svg, 1000).unwrap(),
-        "PNG bytes differ between runs"
-    );
-}
-
 #[test]
 fn png_at_dpi_has_the_printed_size() {
     let a4 = plate(
@@ -199,8 +162,8 @@ fn png_at_dpi_has_the_printed_size() {
         Lang::En,
         vec![],
     );
-    let (w, h, _) = dark_pixels(&to_png_dpi(&to_svg(&a4), 25.4).unwrap());
-    assert_eq!((w, h), (210, 297));
+    let png = Pixmap::decode_png(&to_png_dpi(&to_svg(&a4), 25.4).unwrap()).unwrap();
+    assert_eq!((png.width(), png.height()), (210, 297));
     assert!(matches!(to_png_dpi("<svg", 150.0), Err(PlateError::Svg(_))));
     assert!(matches!(
         to_png_dpi(&to_svg(&a4), 0.0),

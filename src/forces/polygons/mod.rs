@@ -24,7 +24,7 @@ use super::spec::Drive;
 use super::twin::{line_of_action, Pair, PairKind, Reaction};
 use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role};
 use crate::geom::{Circle, DVec2, Line, Segment};
-use crate::linkage::{draw_links, Built, Op, PDyad, Part, PlanSetup};
+use crate::linkage::{draw_links, Built, GroupPairs, Part, PlanSetup};
 use crate::scale::Scale;
 use std::f64::consts::{PI, TAU};
 
@@ -360,11 +360,8 @@ pub fn polygons(
     let mut applied: Vec<Load> = loads.to_vec();
     let mut groups = Vec::new();
     let dir = |l: usize| DVec2::from_angle(b.angle[l]);
-    for op in prog.ops.iter().rev() {
-        let Op::Dyad { group, links, dyad } = op else {
-            continue;
-        };
-        let (i, j) = (links[0] as usize, links[1] as usize);
+    for g in prog.groups().rev() {
+        let (group, [i, j]) = (g.group, g.links);
         let title = format!("group {} ({}, {})", group + 1, i, j);
         let mut sch = Scheme::new(board, title.clone());
         draw_links(
@@ -373,7 +370,7 @@ pub fn polygons(
             b,
             Role::Given,
             "group",
-            Part::Group(*group),
+            Part::Group(group),
         );
         let li = on(&applied, i);
         let lj = on(&applied, j);
@@ -386,9 +383,9 @@ pub fn polygons(
             &board.setup.ctx,
         );
         let p = |k: usize| b.p[k];
-        let err = |e| (*group, e);
-        let reactions = match *dyad {
-            PDyad::Rrr { a, b: c, joint, .. } => {
+        let err = |e| (group, e);
+        let reactions = match g.pairs {
+            GroupPairs::Rrr { a, c, joint } => {
                 let (pa, pc, pb) = (p(a), p(c), p(joint));
                 let tau_i = sch.moments(pb, &li) / sch.length(pa, pb);
                 let tau_j = sch.moments(pb, &lj) / sch.length(pc, pb);
@@ -413,12 +410,13 @@ pub fn polygons(
                     revolute(i, j, joint, -r_ji),
                 ]
             }
-            PDyad::Rrp {
-                a, guide, joint, ..
+            GroupPairs::Rrp {
+                a,
+                guide: og,
+                joint,
             } => {
                 let (pa, pb) = (p(a), p(joint));
                 let oa = prog.owner(a);
-                let og = prog.carrier(&guide);
                 let tau_i = sch.moments(pb, &li) / sch.length(pa, pb);
                 let t_a = (pb - pa).normalize().perp() * tau_i;
                 let n_g = dir(j).perp();
@@ -439,7 +437,7 @@ pub fn polygons(
                     revolute(i, j, joint, -r_ji),
                 ]
             }
-            PDyad::Rpr { a, c, .. } => {
+            GroupPairs::Rpr { a, c } => {
                 let (pa, pc) = (p(a), p(c));
                 let (oa, oc) = (prog.owner(a), prog.owner(c));
                 let u = dir(j);
@@ -470,9 +468,12 @@ pub fn polygons(
                     prismatic(i, j, a, j, r_ij, offset(r_ij, n, -k_i)),
                 ]
             }
-            PDyad::Prp { gi, gj, joint } => {
+            GroupPairs::Prp {
+                gi: ci,
+                gj: cj,
+                joint,
+            } => {
                 let pb = p(joint);
-                let (ci, cj) = (prog.carrier(&gi), prog.carrier(&gj));
                 let (n_i, n_j) = (dir(i).perp(), dir(j).perp());
                 let p0 = pol.tip;
                 let pi = pol.lay_all(&li);
@@ -490,12 +491,13 @@ pub fn polygons(
                     revolute(i, j, joint, -r_ji),
                 ]
             }
-            PDyad::Rpp {
-                a, guide, joint, ..
+            GroupPairs::Rpp {
+                a,
+                guide: og,
+                joint,
             } => {
                 let (pa, pj_) = (p(a), p(joint));
                 let oa = prog.owner(a);
-                let og = prog.carrier(&guide);
                 let (n_s, n_g) = (dir(i).perp(), dir(j).perp());
                 let p0 = pol.tip;
                 let pj = pol.lay_all(&lj);
@@ -541,7 +543,7 @@ pub fn polygons(
             show_reaction(&mut sch, r);
         }
         groups.push(GroupPolygon {
-            group: *group,
+            group,
             links: [i, j],
             scheme: sch.rec.finish(),
             polygon: pol.rec.finish(),

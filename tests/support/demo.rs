@@ -1,9 +1,10 @@
-//! A demonstration plate with every item kind and every role (tests and `examples/`).
+//! A demonstration plate with every item kind and every role (`tests/plate_demo.rs` and
+//! `examples/plate_demo.rs` include this file by path).
 
-use super::{Plate, PlateError, Sheet, TitleBlock, View};
-use crate::construct::{Figure, Item, Label, Role, Step, StepId};
-use crate::geom::{Arc, Circle, DVec2, Segment, Side};
-use crate::scale::{Lang, Quantity, Scale};
+use tmm::construct::{Figure, Item, Label, Role, Step, StepId};
+use tmm::geom::{Arc, Circle, DVec2, Segment, Side};
+use tmm::plate::{Plate, PlateError, Rect, Sheet, TextBlock, TitleBlock, View};
+use tmm::scale::{Lang, Quantity, Scale};
 
 /// Steps being collected into a figure.
 struct Steps(Vec<Step>);
@@ -229,8 +230,8 @@ pub fn demo_plate(lang: Lang) -> Result<Plate, PlateError> {
     let sheet = Sheet::default();
     let field = sheet.field();
     let half = field.min.x + field.width() * 0.5;
-    let left = super::Rect::new(field.min, v(half, field.max.y));
-    let right = super::Rect::new(v(half, field.min.y), field.max);
+    let left = Rect::new(field.min, v(half, field.max.y));
+    let right = Rect::new(v(half, field.min.y), field.max);
     let mech = demo_mechanism(scale(0.0025, Quantity::Length)?);
     let plan = demo_velocity_plan(scale(0.04, Quantity::Velocity)?);
     let cap_m = format!("{}, {}", mech.title, mech.scale.caption(lang));
@@ -239,7 +240,7 @@ pub fn demo_plate(lang: Lang) -> Result<Plate, PlateError> {
         View::centred(mech, left, Some(cap_m))?,
         View::centred(plan, right, Some(cap_v))?,
     ];
-    let texts = vec![super::TextBlock {
+    let texts = vec![TextBlock {
         at: v(40.0, 40.0),
         lines: vec![
             "Дано: l_{AB} = 0,1 м; l_{BC} = 0,275 м".into(),

@@ -1,0 +1,153 @@
+//! What the force and kinematic analyses ask of a compiled [`Program`]: its groups with the
+//! points and guide carriers of their pairs, the points placed on known links, a piston's
+//! axis. Topology only: lengths, branches and guide geometry stay inside the program.
+
+use super::program::{Op, PDir, PDyad};
+use super::Program;
+use crate::geom::DVec2;
+
+/// The pairs of a group: the points of its revolute pairs and the links that carry its
+/// guides (0 the frame). Links i and j are [`GroupView::links`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GroupPairs {
+    /// RRR: link i pivoted at `a`, link j at `c`, the two jointed at `joint`.
+    Rrr {
+        /// Outer pair of link i.
+        a: usize,
+        /// Outer pair of link j.
+        c: usize,
+        /// Inner pair.
+        joint: usize,
+    },
+    /// RRP: link i pivoted at `a`, link j (the slider) on the guide of link `guide`, the two
+    /// jointed at `joint`.
+    Rrp {
+        /// Outer pair of link i.
+        a: usize,
+        /// The link that carries the guide.
+        guide: usize,
+        /// Inner pair.
+        joint: usize,
+    },
+    /// RPR: link i (the block) pivoted at `a`, link j (the slotted link) at `c`, the block
+    /// sliding along link j.
+    Rpr {
+        /// Outer pair of link i.
+        a: usize,
+        /// Outer pair of link j.
+        c: usize,
+    },
+    /// PRP: links i and j slide on the guides of links `gi` and `gj`, jointed at `joint`.
+    Prp {
+        /// The link that carries link i's guide.
+        gi: usize,
+        /// The link that carries link j's guide.
+        gj: usize,
+        /// Inner pair.
+        joint: usize,
+    },
+    /// RPP: link i (the block) pivoted at `a` slides along link j, which slides on the guide
+    /// of link `guide`; `joint` is link j's point.
+    Rpp {
+        /// Outer pair of link i.
+        a: usize,
+        /// The link that carries link j's guide.
+        guide: usize,
+        /// Link j's point.
+        joint: usize,
+    },
+}
+
+/// One group of a program, in attachment order.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GroupView {
+    /// Group number in file order.
+    pub group: usize,
+    /// Links i, j.
+    pub links: [usize; 2],
+    /// Its pairs.
+    pub pairs: GroupPairs,
+}
+
+impl GroupView {
+    /// The links of the group that slide, by position: the block of an RRP (j) or RPR (i)
+    /// group, both links of a PRP or RPP group.
+    pub fn sliders(&self) -> [Option<usize>; 2] {
+        let [i, j] = self.links;
+        match self.pairs {
+            GroupPairs::Rrr { .. } => [None, None],
+            GroupPairs::Rrp { .. } => [None, Some(j)],
+            GroupPairs::Rpr { .. } => [Some(i), None],
+            GroupPairs::Prp { .. } | GroupPairs::Rpp { .. } => [Some(i), Some(j)],
+        }
+    }
+}
+
+impl Program {
+    /// The groups in attachment order.
+    pub fn groups(&self) -> impl DoubleEndedIterator<Item = GroupView> + '_ {
+        self.ops.iter().filter_map(|op| match *op {
+            Op::Dyad { group, links, dyad } => Some(GroupView {
+                group,
+                links: links.map(|l| l as usize),
+                pairs: self.pairs_of(&dyad),
+            }),
+            Op::Point { .. } => None,
+        })
+    }
+
+    /// A dyad's pairs with its guides' carriers resolved.
+    fn pairs_of(&self, dyad: &PDyad) -> GroupPairs {
+        match *dyad {
+            PDyad::Rrr { a, b, joint, .. } => GroupPairs::Rrr { a, c: b, joint },
+            PDyad::Rrp {
+                a, guide, joint, ..
+            } => GroupPairs::Rrp {
+                a,
+                guide: self.carrier(&guide),
+                joint,
+            },
+            PDyad::Rpr { a, c, .. } => GroupPairs::Rpr { a, c },
+            PDyad::Prp { gi, gj, joint } => GroupPairs::Prp {
+                gi: self.carrier(&gi),
+                gj: self.carrier(&gj),
+                joint,
+            },
+            PDyad::Rpp {
+                a, guide, joint, ..
+            } => GroupPairs::Rpp {
+                a,
+                guide: self.carrier(&guide),
+                joint,
+            },
+        }
+    }
+
+    /// The points placed on known links (not the joints of groups), in program order.
+    pub fn placed_points(&self) -> impl Iterator<Item = usize> + '_ {
+        self.ops.iter().filter_map(|op| match *op {
+            Op::Point { idx, .. } => Some(idx),
+            Op::Dyad { .. } => None,
+        })
+    }
+
+    /// When point `k` is a piston (the slider's joint of an RRP group): the unit direction of
+    /// its guide with the points at `at`, and the slider's link.
+    pub fn piston(&self, k: usize, at: impl Fn(usize) -> DVec2) -> Option<(DVec2, usize)> {
+        let (guide, slider) = self.ops.iter().find_map(|op| match *op {
+            Op::Dyad {
+                links,
+                dyad: PDyad::Rrp { guide, joint, .. },
+                ..
+            } if joint == k => Some((guide, links[1] as usize)),
+            _ => None,
+        })?;
+        let axis = match guide.dir {
+            PDir::Fixed(a) => DVec2::from_angle(a),
+            PDir::Along { from, to, angle } => {
+                DVec2::from_angle(angle).rotate((at(to) - at(from)).normalize_or_zero())
+            }
+        };
+        Some((axis, slider))
+    }
+}
