@@ -322,6 +322,11 @@ impl Note {
         self.0.push(Part::Text(s.into()));
         self
     }
+    /// Appends another note's parts.
+    pub fn append(mut self, other: Note) -> Note {
+        self.0.extend(other.0);
+        self
+    }
     /// Appends a finding.
     pub fn with(mut self, f: Finding) -> Note {
         self.0.push(Part::Finding(f));
