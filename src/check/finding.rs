@@ -146,6 +146,8 @@ pub enum NoFlywheel {
     },
     /// A textbook route reads J ≤ 0.
     Reads {
+        /// The route.
+        route: Route,
         /// The J read, kg·m².
         read: f64,
     },
@@ -154,6 +156,15 @@ pub enum NoFlywheel {
         /// The J it gives, kg·m².
         j: f64,
     },
+}
+
+/// A textbook route to the flywheel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Route {
+    /// Wittenbauer's diagram and its tangents.
+    Wittenbauer,
+    /// Merkin's T_I diagram.
+    Merkin,
 }
 
 /// A number in a note: 5 significant digits.
@@ -284,7 +295,7 @@ impl Finding {
                 num6(*delta),
                 num6(*asked)
             ),
-            Finding::NoFlywheelNeeded(NoFlywheel::Reads { read }) => format!(
+            Finding::NoFlywheelNeeded(NoFlywheel::Reads { read, .. }) => format!(
                 "no flywheel is needed (it reads J = {} kg·m² ≤ 0)",
                 num6(*read)
             ),

@@ -18,7 +18,7 @@ mod summary;
 #[cfg(test)]
 mod tests;
 
-pub use finding::{BaseUsed, Cusp, Finding, Limit, NoFlywheel, Note, Part, RadiusBasis};
+pub use finding::{BaseUsed, Cusp, Finding, Limit, NoFlywheel, Note, Part, RadiusBasis, Route};
 pub use report::{Column, Report, Table};
 pub use summary::{Summary, SummaryEntry};
 

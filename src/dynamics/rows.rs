@@ -1,7 +1,7 @@
 //! The rows and notes of the dynamic study.
 
 use super::{ConstantMoment, Dynamics};
-use crate::check::{self, Finding, Key, Method, NoFlywheel, Note, Row, Symbol};
+use crate::check::{self, Finding, Key, Method, NoFlywheel, Note, Route, Row, Symbol};
 use crate::scale::{format_sig, Lang};
 
 /// The rows: `M_red`, `J_red` (velocity plans) and `dT` (graphical integration) per
@@ -122,11 +122,14 @@ pub fn noted(d: &Dynamics) -> Vec<Note> {
         }))
     };
     // One textbook route: its flywheel against the exact one, or none needed.
-    let route = |name: &str, r: &super::draw::Route, delta: f64| {
+    let route = |name: &str, by: Route, r: &super::draw::Route, delta: f64| {
         if r.j_fw <= 0.0 {
             Note::finding(
                 format!("{name}: "),
-                Finding::NoFlywheelNeeded(NoFlywheel::Reads { read: r.read }),
+                Finding::NoFlywheelNeeded(NoFlywheel::Reads {
+                    route: by,
+                    read: r.read,
+                }),
             )
         } else if needed {
             Note::text(format!(
@@ -176,12 +179,14 @@ pub fn noted(d: &Dynamics) -> Vec<Note> {
     let second = Note::text(format!("dynamics: at {} positions ", d.labels.len()))
         .append(route(
             "Wittenbauer's tangents give",
+            Route::Wittenbauer,
             &d.diagrams.wittenbauer,
             d.delta_of[0],
         ))
         .then(", ")
         .append(route(
             "Merkin's route gives",
+            Route::Merkin,
             &d.diagrams.merkin,
             d.delta_of[1],
         ))
