@@ -373,3 +373,51 @@ pub fn findings(notes: &[Note]) -> Vec<Finding> {
 pub fn english(notes: &[Note]) -> Vec<String> {
     notes.iter().map(Note::to_string).collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_note_writes_its_text_and_findings_in_order_and_lists_the_findings() {
+        let undercut = Finding::Undercut {
+            roller: 0.015,
+            rho_min: 0.0149999,
+        };
+        let note = Note::finding("cam: ", undercut.clone()).then(".");
+        let text = note.to_string();
+        assert!(
+            text.starts_with("cam: UNDERCUT: the roller radius 15 mm"),
+            "{text}"
+        );
+        // The digits grow until the two lengths differ.
+        assert!(text.contains("radius of curvature 14.9999 mm"), "{text}");
+        assert!(text.ends_with("just under 14.9999 mm."), "{text}");
+        let notes = [Note::text("plain"), note];
+        assert_eq!(findings(&notes), vec![undercut]);
+        assert_eq!(english(&notes)[0], "plain");
+    }
+
+    #[test]
+    fn a_limit_names_the_base_radius_it_was_checked_at() {
+        let at = |base| Finding::LimitExceeded {
+            what: Limit::PressureAngle,
+            worst: 0.53,
+            limit: 0.52,
+            base,
+        };
+        assert_eq!(
+            at(BaseUsed::Given).english(),
+            "EXCEEDED at the given base radius"
+        );
+        let read = at(BaseUsed::Read {
+            points: 26,
+            used: 0.0699,
+            exact: 0.07,
+        });
+        assert_eq!(
+            read.english(),
+            "EXCEEDED at the base radius used (read off the combined diagram at its 26 points, 69.9 mm, below the exact 70 mm)"
+        );
+    }
+}
