@@ -8,7 +8,9 @@ use super::follower::{flat_contact, to_cam, Placement};
 use super::inversion::{invert, Inversion};
 use super::motion::{motion, points, Motion, Point};
 use super::{CamError, CamSpec, Follower, Law, Shock};
-use crate::check::{At, Key, Method, Row, Symbol};
+use crate::check::{
+    self, At, BaseUsed, Cusp, Finding, Key, Limit, Method, Note, RadiusBasis, Row, Symbol,
+};
 use crate::construct::Context;
 use crate::geom::DVec2;
 use crate::scale::{format_sig, Lang};
@@ -21,23 +23,6 @@ fn num(x: f64) -> String {
 /// A length in mm in a note.
 fn mm(x: f64) -> String {
     format_sig(x * 1e3, 5, Lang::En)
-}
-/// Two lengths in mm in a note, with as many significant digits (5 to 15) as tell them
-/// apart.
-fn mm_pair(a: f64, b: f64) -> (String, String) {
-    for digits in 5..15 {
-        let (x, y) = (
-            format_sig(a * 1e3, digits, Lang::En),
-            format_sig(b * 1e3, digits, Lang::En),
-        );
-        if x != y {
-            return (x, y);
-        }
-    }
-    (
-        format_sig(a * 1e3, 15, Lang::En),
-        format_sig(b * 1e3, 15, Lang::En),
-    )
 }
 /// An angle in degrees in a note.
 fn deg(x: f64) -> String {
@@ -245,20 +230,32 @@ impl Cam {
 
     /// The note's words for the base radius the profile is built on: the scene's, or the
     /// r_min read off the drawing against the twin's `exact`.
-    fn base_used(&self, exact: f64) -> String {
+    fn base_used(&self, exact: f64) -> BaseUsed {
         if self.spec.base_radius.is_some() {
-            return "at the given base radius".into();
+            return BaseUsed::Given;
         }
-        let how = if self.base < exact {
-            "below"
+        BaseUsed::Read {
+            points: self.points.len(),
+            used: self.base,
+            exact,
+        }
+    }
+
+    /// What r_min follows from: the profile's convexity (flat face) or γ_min on the rise
+    /// (force closure) or over the cycle.
+    pub fn radius_basis(&self) -> RadiusBasis {
+        let s = &self.spec;
+        if self.flat() {
+            RadiusBasis::Convexity { rho_min: s.rho_min }
+        } else if s.force_closure {
+            RadiusBasis::AngleOnRise {
+                gamma_min: s.gamma_min,
+            }
         } else {
-            "against"
-        };
-        let (used, exact) = mm_pair(self.base, exact);
-        format!(
-            "at the base radius used (read off the combined diagram at its {} points, {used} mm, {how} the exact {exact} mm)",
-            self.points.len()
-        )
+            RadiusBasis::AngleOverCycle {
+                gamma_min: s.gamma_min,
+            }
+        }
     }
 
     /// The exact smallest convex radius of curvature, to rounding: of the pitch curve
@@ -403,15 +400,25 @@ impl Cam {
         out
     }
 
+    /// The notes as the report writes them.
+    pub fn notes(&self) -> Vec<String> {
+        check::finding::english(&self.noted())
+    }
+
+    /// The verdicts of the notes.
+    pub fn findings(&self) -> Vec<Finding> {
+        check::finding::findings(&self.noted())
+    }
+
     /// The notes: laws and shocks, the assumed law, the equal-return check, r_min against a
     /// quoted value, the roller's choice, and every hard case detected.
-    pub fn notes(&self) -> Vec<String> {
+    pub fn noted(&self) -> Vec<Note> {
         let s = &self.spec;
         let mut out = Vec::new();
         if self.clockwise {
-            out.push(
-                "cam: it turns clockwise: constructed as its mirror image (counter-clockwise, the offset on the other side) and drawn mirrored back; the numbers are the same".into(),
-            );
+            out.push(Note::text(
+                "cam: it turns clockwise: constructed as its mirror image (counter-clockwise, the offset on the other side) and drawn mirrored back; the numbers are the same",
+            ));
         }
         let st = s.starts();
         for (name, law, from, to) in [
@@ -424,137 +431,146 @@ impl Cam {
                 }
                 other => other.key().to_string(),
             };
-            let shock = match law.shock() {
-                Shock::Rigid => format!(
-                    "RIGID SHOCKS: the velocity jumps at φ = {}° and {}° (dS/dφ = ±{} m from 0), the acceleration is infinite there",
-                    deg(from), deg(to), num(s.stroke / (to - from))
+            let lead = format!("cam: {name} {}°–{}°: law {what}; ", deg(from), deg(to));
+            out.push(match law.shock() {
+                Shock::Rigid => Note::finding(
+                    lead,
+                    Finding::RigidShock {
+                        from,
+                        to,
+                        jump: s.stroke / (to - from),
+                    },
                 ),
-                Shock::Soft => "soft shocks: the acceleration jumps (finite)".to_string(),
-                Shock::None => "no shock".to_string(),
-            };
-            out.push(format!(
-                "cam: {name} {}°–{}°: law {what}; {shock}",
-                deg(from),
-                deg(to)
-            ));
+                Shock::Soft => Note::text(lead + "soft shocks: the acceleration jumps (finite)"),
+                Shock::None => Note::text(lead + "no shock"),
+            });
         }
         if s.law_assumed {
-            out.push(format!(
+            out.push(Note::text(format!(
                 "cam: the source's diagrams are lost: the law of the rise ({}) and of the return ({}) is assumed",
                 s.rise.key(),
                 s.ret.key()
-            ));
+            )));
         }
         let d = &self.diagrams;
         let top = d.s.get(s.divisions).copied().unwrap_or(0.0);
-        out.push(format!(
+        out.push(Note::text(format!(
             "cam: equal-return check: dS/dφ at the end of the rise = {} m, of the return = {} m (0 exact); S at the end of the rise y_max·μ_S = {} m against the stroke {} m",
             num(d.ds_ends[0]), num(d.ds_ends[1]), num(top), num(s.stroke)
-        ));
+        )));
         let r = &self.radius;
         let r_exact = self.exact_r_min();
-        let kind = if self.flat() {
-            format!(
-                "convexity r₀ ≥ max(−(S + S″)) + ρ_min, ρ_min = {} mm",
-                mm(s.rho_min)
-            )
-        } else if s.force_closure {
-            format!("γ ≥ {}° on the rise (force closure)", deg(s.gamma_min))
-        } else {
-            format!("γ ≥ {}° over the whole cycle", deg(s.gamma_min))
-        };
-        out.push(format!(
-            "cam: r_min = {} mm exact ({kind}); {} mm read off the combined diagram at its {} points",
-            mm(r_exact), mm(r.graphical), self.points.len()
-        ));
-        if let Some(q) = s.quoted_r_min {
-            out.push(format!(
-                "cam: ERRATUM of the source: it quotes r_min = {} mm, inconsistent with its data: with {kind} the minimum is {} mm (the quoted value is {}× too small) and is not used",
-                mm(q), mm(r_exact), num(r_exact / q)
+        let basis = self.radius_basis();
+        out.push(Note::text(format!(
+            "cam: r_min = {} mm exact ({}); {} mm read off the combined diagram at its {} points",
+            mm(r_exact),
+            basis.english(),
+            mm(r.graphical),
+            self.points.len()
+        )));
+        if let Some(quoted) = s.quoted_r_min {
+            out.push(Note::finding(
+                "cam: ",
+                Finding::Erratum {
+                    quoted,
+                    exact: r_exact,
+                    basis,
+                },
             ));
         }
         if let Some(read) = r.convexity {
             let (_, worst) = exact::min_radius_flat(s);
-            out.push(format!(
+            out.push(Note::text(format!(
                 "cam: flat face: max(−(S + S″)) = {} mm exact, {} mm read at the 45° tangent",
                 mm(worst),
                 mm(read)
-            ));
+            )));
             let half = exact::dense(s, 500)
                 .into_iter()
                 .map(|(p, a)| (motion(s, p, a).ds - s.offset()).abs())
                 .fold(0.0, f64::max);
-            out.push(format!("cam: flat face: the face's half-length from the follower's axis ≥ max|dS/dφ − e| = {} mm", mm(half)));
+            out.push(Note::text(format!("cam: flat face: the face's half-length from the follower's axis ≥ max|dS/dφ − e| = {} mm", mm(half))));
         }
         let rho = self.exact_rho_min();
         if self.flat() {
             if rho < 0.0 {
-                out.push(format!(
-                    "cam: CUSP: the flat-faced profile is concave (ρ = r₀ + S + S″ = {} mm < 0 at r₀ = {} mm): the face lines' envelope loops back and the follower cannot reproduce the law; r₀ must be at least {} mm",
-                    mm(rho), mm(self.base), mm(r_exact)
-                ));
+                let cusp = Cusp::Flat {
+                    rho,
+                    base: self.base,
+                    r_min: r_exact,
+                };
+                out.push(Note::finding("cam: ", Finding::Cusp(cusp)));
             }
         } else {
             let worst = self.worst_angle();
-            if self.rocker() {
-                let below = if worst < s.gamma_min - 1e-9 {
-                    format!(": BELOW γ_min {}", self.base_used(r_exact))
-                } else {
-                    String::new()
-                };
-                out.push(format!(
-                    "cam: the smallest transmission angle over the cycle is {}° (γ_min = {}°){below}",
-                    deg(worst),
-                    deg(s.gamma_min)
-                ));
+            let (what, limit, passed, lead) = if self.rocker() {
+                (
+                    Limit::TransmissionAngle,
+                    s.gamma_min,
+                    worst < s.gamma_min - 1e-9,
+                    format!(
+                        "cam: the smallest transmission angle over the cycle is {}° (γ_min = {}°)",
+                        deg(worst),
+                        deg(s.gamma_min)
+                    ),
+                )
             } else {
-                let over = if worst > FRAC_PI_2 - s.gamma_min + 1e-9 {
-                    format!(": EXCEEDED {}", self.base_used(r_exact))
-                } else {
-                    String::new()
+                (
+                    Limit::PressureAngle,
+                    FRAC_PI_2 - s.gamma_min,
+                    worst > FRAC_PI_2 - s.gamma_min + 1e-9,
+                    format!(
+                        "cam: the largest pressure angle {} is {}° (λ_max = {}°)",
+                        if s.force_closure {
+                            "on the rise (force closure)"
+                        } else {
+                            "over the cycle"
+                        },
+                        deg(worst),
+                        deg(FRAC_PI_2 - s.gamma_min)
+                    ),
+                )
+            };
+            out.push(if passed {
+                let base = self.base_used(r_exact);
+                let f = Finding::LimitExceeded {
+                    what,
+                    worst,
+                    limit,
+                    base,
                 };
-                out.push(format!(
-                    "cam: the largest pressure angle {} is {}° (λ_max = {}°){over}",
-                    if s.force_closure {
-                        "on the rise (force closure)"
-                    } else {
-                        "over the cycle"
-                    },
-                    deg(worst),
-                    deg(FRAC_PI_2 - s.gamma_min)
-                ));
-            }
+                Note::finding(lead + ": ", f)
+            } else {
+                Note::text(lead)
+            });
             let chosen = if s.roller.is_some() {
                 "given"
             } else {
                 "chosen"
             };
             let drawn = self.inversion.rho_min;
-            out.push(format!(
+            out.push(Note::text(format!(
                 "cam: roller: 0.4·r₀ = {} mm, 0.8·ρ_min = {} mm (ρ_min of the drawn pitch curve {} mm, exact {} mm): r = {} mm ({chosen})",
                 mm(0.4 * self.base), mm(0.8 * drawn), mm(drawn), mm(rho), mm(self.roller)
-            ));
-            if (self.roller - rho).abs() <= 1e-12 * rho {
-                out.push(format!(
-                    "cam: CUSP: the roller radius {} mm equals the pitch curve's smallest convex radius of curvature {} mm (to 1e-12): the practical profile comes to a point there; a smaller roller is needed",
-                    mm(self.roller), mm(rho)
-                ));
-            } else if self.roller > rho {
-                let (r, p) = mm_pair(self.roller, rho);
-                out.push(format!(
-                    "cam: UNDERCUT: the roller radius {r} mm exceeds the pitch curve's smallest convex radius of curvature {p} mm: the practical profile (the rollers' envelope) loops and is cut away; the largest admissible roller is just under {p} mm"
-                ));
+            )));
+            let (roller, rho_min) = (self.roller, rho);
+            if (roller - rho).abs() <= 1e-12 * rho {
+                let cusp = Cusp::Roller { roller, rho_min };
+                out.push(Note::finding("cam: ", Finding::Cusp(cusp)));
+            } else if roller > rho {
+                let f = Finding::Undercut { roller, rho_min };
+                out.push(Note::finding("cam: ", f));
             }
         }
         if let Follower::Translating { offset } = s.follower {
             let (r_free, e_free) = exact::min_radius_free(s);
-            out.push(format!(
+            out.push(Note::text(format!(
                 "cam: with the offset free the smallest cam (lecture 15: O₁ where the two γ_min tangents meet) has r_min = {} mm at e = {} mm; the scene's e = {} mm gives {} mm",
                 mm(r_free),
                 mm(self.scene_offset(e_free)),
                 mm(self.scene_offset(offset)),
                 mm(r_exact)
-            ));
+            )));
             if offset < 0.0 {
                 let mirrored = Placement::Translating {
                     offset: -offset,
@@ -570,10 +586,13 @@ impl Cam {
                         .map(|(phi, a)| p.kin(motion(s, phi, a)).pressure_angle())
                         .fold(0.0, f64::max)
                 };
-                out.push(format!(
-                    "cam: OFFSET ON THE WRONG SIDE: e = {} mm raises the pressure angle on the rise to {}° (with e = {} mm on the other side of the centre it would be {}°)",
-                    mm(self.scene_offset(offset)), deg(rise_max(&self.placement)), mm(self.scene_offset(-offset)), deg(rise_max(&mirrored))
-                ));
+                let f = Finding::WrongSide {
+                    offset: self.scene_offset(offset),
+                    rise_max: rise_max(&self.placement),
+                    other_offset: self.scene_offset(-offset),
+                    other_max: rise_max(&mirrored),
+                };
+                out.push(Note::finding("cam: ", f));
             }
         }
         out

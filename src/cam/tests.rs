@@ -2,6 +2,7 @@ use super::exact;
 use super::follower::{self, Placement};
 use super::motion;
 use super::*;
+use crate::check::{BaseUsed, Cusp, Finding, Limit};
 use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
 
@@ -130,17 +131,24 @@ fn seed000_r_min_is_about_70_mm_not_40() {
     assert_eq!(cam.base, cam.radius.graphical);
     let worst = cam.worst_angle().to_degrees();
     assert!((59.8..60.0).contains(&worst), "{worst}");
-    let notes = cam.notes();
+    let found = cam.findings();
     assert!(
-        notes
-            .iter()
-            .any(|n| n.contains("BELOW γ_min at the base radius used") && n.contains("26 points")),
-        "{notes:?}"
+        found.iter().any(|f| matches!(
+            f,
+            Finding::LimitExceeded {
+                what: Limit::TransmissionAngle,
+                base: BaseUsed::Read { points: 26, .. },
+                ..
+            }
+        )),
+        "{found:?}"
     );
-    assert!(cam
-        .notes()
-        .iter()
-        .any(|n| n.contains("ERRATUM") && n.contains("40")));
+    assert!(
+        found.iter().any(
+            |f| matches!(f, Finding::Erratum { quoted, .. } if (quoted - 0.040).abs() < 1e-12)
+        ),
+        "{found:?}"
+    );
 }
 
 /// The rocker's zone of the cam centre is hatched along its boundary at O₁, each stroke into
@@ -257,12 +265,17 @@ fn translating_min_radius_keeps_the_pressure_angle() {
     );
     let worst = drawn.worst_angle().to_degrees();
     assert!((30.0..30.5).contains(&worst), "{worst}");
-    let notes = drawn.notes();
+    let found = drawn.findings();
     assert!(
-        notes.iter().any(|n| n.contains(
-            "EXCEEDED at the base radius used (read off the combined diagram at its 26 points"
-        ) && n.contains("below the exact")),
-        "{notes:?}"
+        found.iter().any(|f| matches!(
+            f,
+            Finding::LimitExceeded {
+                what: Limit::PressureAngle,
+                base: BaseUsed::Read { points: 26, used, exact },
+                ..
+            } if used < exact
+        )),
+        "{found:?}"
     );
     // Given the exact r_min, λ_max binds and is never exceeded.
     let given = CamSpec {
@@ -276,7 +289,10 @@ fn translating_min_radius_keeps_the_pressure_angle() {
         "{}",
         worst.to_degrees()
     );
-    assert!(!cam.notes().iter().any(|n| n.contains("EXCEEDED")));
+    assert!(!cam
+        .findings()
+        .iter()
+        .any(|f| matches!(f, Finding::LimitExceeded { .. })));
 }
 
 #[test]
@@ -366,7 +382,10 @@ fn hard_case_undercut_is_detected() {
     let cam = build(&s, &ctx(0.0)).unwrap();
     let rho = cam.exact_rho_min();
     assert!(rho < 0.015, "{rho}");
-    assert!(cam.notes().iter().any(|n| n.contains("UNDERCUT")));
+    assert!(cam
+        .findings()
+        .iter()
+        .any(|f| matches!(f, Finding::Undercut { .. })));
 }
 
 #[test]
@@ -379,19 +398,28 @@ fn hard_case_concave_flat_face_is_detected() {
     };
     let cam = build(&s, &ctx(0.0)).unwrap();
     assert!(cam.exact_rho_min() < 0.0);
-    assert!(cam.notes().iter().any(|n| n.contains("CUSP")));
+    assert!(cam
+        .findings()
+        .iter()
+        .any(|f| matches!(f, Finding::Cusp(Cusp::Flat { .. }))));
 }
 
 #[test]
 fn hard_case_rigid_shocks_and_wrong_offset() {
     let s = translating(Law::Uniform, -0.004);
     let cam = build(&s, &ctx(0.0)).unwrap();
-    let notes = cam.notes();
+    let found = cam.findings();
+    let shocks = found
+        .iter()
+        .filter(|f| matches!(f, Finding::RigidShock { .. }))
+        .count();
+    assert_eq!(shocks, 2, "{found:?}");
     assert!(
-        notes.iter().any(|n| n.contains("RIGID SHOCKS")),
-        "{notes:?}"
+        found
+            .iter()
+            .any(|f| matches!(f, Finding::WrongSide { offset, .. } if *offset < 0.0)),
+        "{found:?}"
     );
-    assert!(notes.iter().any(|n| n.contains("WRONG SIDE")), "{notes:?}");
 }
 
 #[test]

@@ -12,11 +12,13 @@
 //! magnitude over the cycle, [`Row::scale`]). The same rule serves the report, its summary
 //! and the sheets ([`is_zero`]).
 
+pub mod finding;
 mod report;
 mod summary;
 #[cfg(test)]
 mod tests;
 
+pub use finding::{BaseUsed, Cusp, Finding, Limit, NoFlywheel, Note, Part, RadiusBasis, Route};
 pub use report::{Column, Report, Table};
 pub use summary::{Summary, SummaryEntry};
 

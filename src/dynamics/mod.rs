@@ -26,7 +26,7 @@ mod tests;
 pub mod twin;
 
 pub use reduce::{Reduced, Reducer};
-pub use rows::{notes, rows};
+pub use rows::{findings, noted, notes, rows};
 pub use spec::{
     ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
 };

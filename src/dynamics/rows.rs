@@ -1,7 +1,7 @@
 //! The rows and notes of the dynamic study.
 
 use super::{ConstantMoment, Dynamics};
-use crate::check::{Key, Method, Row, Symbol};
+use crate::check::{self, Finding, Key, Method, NoFlywheel, Note, Route, Row, Symbol};
 use crate::scale::{format_sig, Lang};
 
 /// The rows: `M_red`, `J_red` (velocity plans) and `dT` (graphical integration) per
@@ -92,84 +92,108 @@ pub fn rows(d: &Dynamics) -> Vec<Row> {
     rows
 }
 
+/// The notes as the report writes them.
+pub fn notes(d: &Dynamics) -> Vec<String> {
+    check::finding::english(&noted(d))
+}
+
+/// The verdicts of the notes.
+pub fn findings(d: &Dynamics) -> Vec<Finding> {
+    check::finding::findings(&noted(d))
+}
+
 /// The notes: the exact solution, the textbook routes against it, the seed's numbers that do
 /// not follow from its data.
-pub fn notes(d: &Dynamics) -> Vec<String> {
+pub fn noted(d: &Dynamics) -> Vec<Note> {
     let n = |x: f64| format_sig(x, 6, Lang::En);
     let e = &d.exact;
     let pct = |x: f64, r: f64| format_sig((x - r) / r * 100.0, 3, Lang::En);
     let needed = e.j_fw > 0.0;
     let exact = if needed {
-        format!(
+        Note::text(format!(
             "the energy equation integrated exactly gives J_flywheel = {} kg·m² for δ = {}",
             n(e.j_fw),
             n(e.delta())
-        )
+        ))
     } else {
-        format!(
-            "no flywheel is needed: the energy equation integrated exactly gives δ = {} without one, within the δ = {} asked",
-            n(e.delta()),
-            n(d.spec.delta)
-        )
+        Note::default().with(Finding::NoFlywheelNeeded(NoFlywheel::Exact {
+            delta: e.delta(),
+            asked: d.spec.delta,
+        }))
     };
     // One textbook route: its flywheel against the exact one, or none needed.
-    let route = |name: &str, r: &super::draw::Route, delta: f64| {
+    let route = |name: &str, by: Route, r: &super::draw::Route, delta: f64| {
         if r.j_fw <= 0.0 {
-            format!(
-                "{name}: no flywheel is needed (it reads J = {} kg·m² ≤ 0)",
-                n(r.read)
+            Note::finding(
+                format!("{name}: "),
+                Finding::NoFlywheelNeeded(NoFlywheel::Reads {
+                    route: by,
+                    read: r.read,
+                }),
             )
         } else if needed {
-            format!(
+            Note::text(format!(
                 "{name} J_flywheel = {} kg·m² ({} %, δ really {})",
                 n(r.j_fw),
                 pct(r.j_fw, e.j_fw),
                 n(delta)
-            )
+            ))
         } else {
-            format!(
+            Note::text(format!(
                 "{name} J_flywheel = {} kg·m² where none is needed (δ really {})",
                 n(r.j_fw),
                 n(delta)
-            )
+            ))
         }
     };
     let merkin_exact = d.cycle.merkin(d.w_avg, d.spec.delta).0 - d.spec.constant_inertia();
-    let mut out = vec![
-        format!(
-            "dynamics: {exact} at ω_avg = {} rad/s (ω_max = {} at {}°, ω_min = {} at {}° of crank travel from position {}); the cycle takes {} s; {}",
-            n(e.omega_avg()),
-            n(e.w_max.0),
-            format_sig(e.w_max.1.to_degrees(), 4, Lang::En),
-            n(e.w_min.0),
-            format_sig(e.w_min.1.to_degrees(), 4, Lang::En),
-            d.labels.first().map_or("1", String::as_str),
-            n(d.cycle_time),
-            match d.spec.constant_moment {
-                ConstantMoment::Driving => format!(
-                    "A_res = {} J, M_drive = {} N·m",
-                    n(d.cycle.a_res),
-                    n(d.cycle.m_drive)
-                ),
-                ConstantMoment::Resisting => format!(
-                    "A_drive = {} J of the indicator diagrams, the constant resisting moment M_res = {} N·m",
-                    n(d.cycle.a_drive),
-                    n(-d.cycle.m_drive)
-                ),
-            },
-        ),
-        format!(
-            "dynamics: at {} positions {}, {}; Merkin on the continuous exact data {} (T_II with ω = ω_avg is the method's own error)",
-            d.labels.len(),
-            route("Wittenbauer's tangents give", &d.diagrams.wittenbauer, d.delta_of[0]),
-            route("Merkin's route gives", &d.diagrams.merkin, d.delta_of[1]),
-            if merkin_exact > 0.0 {
-                format!("gives {} kg·m²", n(merkin_exact))
-            } else {
-                format!("needs no flywheel (J = {} kg·m² ≤ 0)", n(merkin_exact))
-            },
-        ),
-    ];
+    let first = Note::text("dynamics: ").append(exact).then(format!(
+        " at ω_avg = {} rad/s (ω_max = {} at {}°, ω_min = {} at {}° of crank travel from position {}); the cycle takes {} s; {}",
+        n(e.omega_avg()),
+        n(e.w_max.0),
+        format_sig(e.w_max.1.to_degrees(), 4, Lang::En),
+        n(e.w_min.0),
+        format_sig(e.w_min.1.to_degrees(), 4, Lang::En),
+        d.labels.first().map_or("1", String::as_str),
+        n(d.cycle_time),
+        match d.spec.constant_moment {
+            ConstantMoment::Driving => format!(
+                "A_res = {} J, M_drive = {} N·m",
+                n(d.cycle.a_res),
+                n(d.cycle.m_drive)
+            ),
+            ConstantMoment::Resisting => format!(
+                "A_drive = {} J of the indicator diagrams, the constant resisting moment M_res = {} N·m",
+                n(d.cycle.a_drive),
+                n(-d.cycle.m_drive)
+            ),
+        },
+    ));
+    let continuous = if merkin_exact > 0.0 {
+        Note::text(format!("gives {} kg·m²", n(merkin_exact)))
+    } else {
+        Note::default().with(Finding::NoFlywheelNeeded(NoFlywheel::Continuous {
+            j: merkin_exact,
+        }))
+    };
+    let second = Note::text(format!("dynamics: at {} positions ", d.labels.len()))
+        .append(route(
+            "Wittenbauer's tangents give",
+            Route::Wittenbauer,
+            &d.diagrams.wittenbauer,
+            d.delta_of[0],
+        ))
+        .then(", ")
+        .append(route(
+            "Merkin's route gives",
+            Route::Merkin,
+            &d.diagrams.merkin,
+            d.delta_of[1],
+        ))
+        .then("; Merkin on the continuous exact data ")
+        .append(continuous)
+        .then(" (T_II with ω = ω_avg is the method's own error)");
+    let mut out = vec![first, second];
     let Some(seed) = &d.spec.seed else {
         return out;
     };
@@ -184,21 +208,21 @@ pub fn notes(d: &Dynamics) -> Vec<String> {
         } else {
             "no flywheel is needed".to_string()
         };
-        out.push(format!(
+        out.push(Note::text(format!(
             "dynamics: seed error: its flywheel J = {} kg·m² does not follow from its data: {exact}; with J = {} the machine runs at δ = {} = 1/{} instead of {}",
             n(j),
             n(j),
             n(got),
             format_sig(1.0 / got, 3, Lang::En),
             n(d.spec.delta),
-        ));
+        )));
     }
     if let Some(v) = seed.expression_value(d.spec.delta, d.w_avg) {
-        out.push(format!(
+        out.push(Note::text(format!(
             "dynamics: seed error: its expression μ_T·BD/(δ·ω²) − (J_b + J_d)/2 evaluates to {} kg·m², not the {} it prints",
             n(v),
             seed.flywheel.map_or_else(|| "value".into(), n),
-        ));
+        )));
     }
     if !seed.j_red.is_empty() {
         let c = d.spec.constant_inertia();
@@ -216,13 +240,13 @@ pub fn notes(d: &Dynamics) -> Vec<String> {
             ratios.iter().copied().reduce(f64::min),
             ratios.iter().copied().reduce(f64::max),
         ) {
-            out.push(format!(
+            out.push(Note::text(format!(
                 "dynamics: seed error: its table of reduced inertias J_пр is wrong wherever the links move: its variable part J_пр − {} is {}…{} × the correct one at {} positions",
                 n(c),
                 format_sig(lo, 3, Lang::En),
                 format_sig(hi, 3, Lang::En),
                 ratios.len(),
-            ));
+            )));
         }
     }
     out

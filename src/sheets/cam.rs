@@ -7,6 +7,7 @@ use super::captions::{unit_in, CamText, Text};
 use super::layout::{lay_out, quantity, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::cam::{Cam, Follower, Law};
+use crate::check::{Cusp, Finding};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
@@ -215,17 +216,12 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         n(cam.exact_r_min()),
         Text::Exact.get(lang)
     ));
-    if let Some(q) = s.quoted_r_min {
-        out.push(format!(
-            "{} r_{{min}} = {} {mm} {}",
-            CamText::SourceSays.get(lang),
-            n(q),
-            CamText::Erratum.get(lang)
-        ));
-    }
+    let found = cam.findings();
+    let stated =
+        |p: fn(&Finding) -> bool| found.iter().find(|f| p(f)).and_then(|f| verdict(f, lang));
+    out.extend(stated(|f| matches!(f, Finding::Erratum { .. })));
     out.push(format!("r_{{0}} = {} {mm}", n(cam.base)));
     if !matches!(s.follower, Follower::Flat { .. }) {
-        let rho = cam.exact_rho_min();
         out.push(format!(
             "0,4·r_{{0}} = {} {mm}, 0,8·ρ_{{min}} = {} {mm} → r_{{р}} = {} {mm}",
             n(0.4 * cam.base),
@@ -233,25 +229,35 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
             n(0.8 * cam.inversion.rho_min),
             n(cam.roller)
         ));
-        if cam.roller >= rho {
-            out.push(format!(
-                "{} ρ_{{min}} = {} {mm}",
-                CamText::Undercut.get(lang),
-                n(rho)
-            ));
-        }
-    } else if cam.exact_rho_min() < 0.0 {
-        out.push(CamText::Cusp.get(lang).into());
     }
-    if matches!(s.rise.shock(), crate::cam::Shock::Rigid)
-        || matches!(s.ret.shock(), crate::cam::Shock::Rigid)
-    {
-        out.push(CamText::RigidShocks.get(lang).into());
-    }
-    if matches!(s.follower, Follower::Translating { offset } if offset < 0.0) {
-        out.push(CamText::WrongSide.get(lang).into());
-    }
+    out.extend(stated(|f| {
+        matches!(f, Finding::Undercut { .. } | Finding::Cusp(_))
+    }));
+    out.extend(stated(|f| matches!(f, Finding::RigidShock { .. })));
+    out.extend(stated(|f| matches!(f, Finding::WrongSide { .. })));
     out
+}
+
+/// A verdict of the cam's check as a data line in `lang`; none for those the sheet does not
+/// state (the angle's limit is in the table of the points).
+fn verdict(f: &Finding, lang: Lang) -> Option<String> {
+    let mm = unit_in("mm", lang);
+    let n = |x: f64| format_sig(x * 1e3, 4, lang);
+    let with_rho = |t: CamText, rho: f64| format!("{} ρ_{{min}} = {} {mm}", t.get(lang), n(rho));
+    Some(match *f {
+        Finding::Erratum { quoted, .. } => format!(
+            "{} r_{{min}} = {} {mm} {}",
+            CamText::SourceSays.get(lang),
+            n(quoted),
+            CamText::Erratum.get(lang)
+        ),
+        Finding::Undercut { rho_min, .. } => with_rho(CamText::Undercut, rho_min),
+        Finding::Cusp(Cusp::Roller { rho_min, .. }) => with_rho(CamText::RollerCusp, rho_min),
+        Finding::Cusp(Cusp::Flat { .. }) => CamText::Cusp.get(lang).into(),
+        Finding::RigidShock { .. } => CamText::RigidShocks.get(lang).into(),
+        Finding::WrongSide { .. } => CamText::WrongSide.get(lang).into(),
+        _ => return None,
+    })
 }
 
 /// The most rows of one table of points; more continue in further tables (placed on further

@@ -7,6 +7,7 @@
 use super::captions::{unit_in, DynamicsText, Text};
 use super::layout::{lay_out, quantity, Block, Column, Results, ScaleKey};
 use super::BuildError;
+use crate::check::{Finding, NoFlywheel, Route};
 use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
@@ -154,16 +155,31 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
     out.push(DynamicsText::Flywheel.get(lang).to_string());
     let e = &d.exact;
     let none = DynamicsText::NoFlywheel.get(lang);
-    let j_or_none = |j: f64| {
-        if j > 0.0 {
-            format!("{} {kgm2}", num(j, lang))
-        } else {
+    // The verdicts "no flywheel is needed": the exact one (`None`) and each route's.
+    let found: Vec<NoFlywheel> = crate::dynamics::findings(d)
+        .into_iter()
+        .filter_map(|f| match f {
+            Finding::NoFlywheelNeeded(n) => Some(n),
+            _ => None,
+        })
+        .collect();
+    let unneeded = |by: Option<Route>| {
+        found.iter().any(|n| match *n {
+            NoFlywheel::Exact { .. } => by.is_none(),
+            NoFlywheel::Reads { route, .. } => by == Some(route),
+            NoFlywheel::Continuous { .. } => false,
+        })
+    };
+    let j_or_none = |j: f64, by: Option<Route>| {
+        if unneeded(by) {
             none.to_string()
+        } else {
+            format!("{} {kgm2}", num(j, lang))
         }
     };
     out.push(format!(
         "J_{{м}} = {}; ω_{{max}} = {}, ω_{{min}} = {} {}",
-        j_or_none(e.j_fw),
+        j_or_none(e.j_fw, None),
         num(e.w_max.0, lang),
         num(e.w_min.0, lang),
         rad_s
@@ -171,12 +187,16 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
     out.push(format!(
         "J_{{м}} {} = μ_{{T}}·kl/(δω_{{ср}}^2) = {}; {} = {}",
         DynamicsText::Wittenbauer.get(lang),
-        j_or_none(d.diagrams.wittenbauer.j_fw),
+        j_or_none(d.diagrams.wittenbauer.j_fw, Some(Route::Wittenbauer)),
         DynamicsText::Merkin.get(lang),
-        j_or_none(d.diagrams.merkin.j_fw)
+        j_or_none(d.diagrams.merkin.j_fw, Some(Route::Merkin))
     ));
-    if e.j_fw <= 0.0 {
-        out.push(format!("{none}: δ = {}", num(e.delta(), lang)));
+    let exact_delta = found.iter().find_map(|n| match *n {
+        NoFlywheel::Exact { delta, .. } => Some(delta),
+        _ => None,
+    });
+    if let Some(delta) = exact_delta {
+        out.push(format!("{none}: δ = {}", num(delta, lang)));
         return out;
     }
     let z = &d.size;
