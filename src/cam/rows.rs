@@ -7,7 +7,7 @@ use super::exact;
 use super::follower::{flat_contact, to_cam, Placement};
 use super::inversion::{invert, Inversion};
 use super::motion::{motion, points, Motion, Point};
-use super::{CamError, CamSpec, Follower, Law, Shock};
+use super::{CamError, CamSpec, Closure, Follower, Given, Law, Rotation, Shock};
 use crate::check::{At, Key, Method, Row, Symbol};
 use crate::construct::Context;
 use crate::geom::DVec2;
@@ -294,7 +294,7 @@ impl Cam {
         let (ss, sv, sa) = (big(|m| m.s), big(|m| m.ds), big(|m| m.d2s));
         let d = &self.diagrams;
         // The diagrams integrated from d²S/dφ², or differentiated from S by chords.
-        let method = if self.spec.from_s {
+        let method = if self.spec.given == Given::S {
             Method::DiagramChords
         } else {
             Method::Integration
@@ -408,7 +408,7 @@ impl Cam {
     pub fn notes(&self) -> Vec<String> {
         let s = &self.spec;
         let mut out = Vec::new();
-        if self.clockwise {
+        if self.rotation == Rotation::Cw {
             out.push(
                 "cam: it turns clockwise: constructed as its mirror image (counter-clockwise, the offset on the other side) and drawn mirrored back; the numbers are the same".into(),
             );
@@ -458,7 +458,7 @@ impl Cam {
                 "convexity r₀ ≥ max(−(S + S″)) + ρ_min, ρ_min = {} mm",
                 mm(s.rho_min)
             )
-        } else if s.force_closure {
+        } else if s.closure == Closure::Force {
             format!("γ ≥ {}° on the rise (force closure)", deg(s.gamma_min))
         } else {
             format!("γ ≥ {}° over the whole cycle", deg(s.gamma_min))
@@ -515,7 +515,7 @@ impl Cam {
                 };
                 out.push(format!(
                     "cam: the largest pressure angle {} is {}° (λ_max = {}°){over}",
-                    if s.force_closure {
+                    if s.closure == Closure::Force {
                         "on the rise (force closure)"
                     } else {
                         "over the cycle"

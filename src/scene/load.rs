@@ -8,6 +8,7 @@ use super::error::SceneError;
 use super::forces::forces;
 use super::friction::friction;
 use super::gears::gear_sections;
+use super::keys::Key;
 use super::kinematics::kinematics;
 use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
@@ -222,7 +223,7 @@ fn title(task: RawTask, stem: &str) -> TitleInfo {
 /// `mechanism.scale_l`, m/mm, optional.
 fn scale_l(check: &mut Checker, v: Option<f64>) -> Option<Scale> {
     check.scale(
-        "mechanism.scale_l",
+        Key::MechanismScaleL.path(),
         v,
         Quantity::Length,
         "a scale μ_l > 0 m/mm",
