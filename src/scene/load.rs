@@ -10,7 +10,7 @@ use super::friction::friction;
 use super::gears::gear_sections;
 use super::keys::Key;
 use super::kinematics::kinematics;
-use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
+use super::model::{PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
 use super::structure::mechanism;
 use crate::scale::{Quantity, Scale};
@@ -111,14 +111,13 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         .as_ref()
         .and_then(|b| balancing(&mut check, b));
     let plates = plates(&mut check, raw.plates, |section| match section {
-        "mechanism" => has_mechanism,
-        "forces" => has_forces,
-        "balancing" => has_balancing,
-        "friction" => has_friction,
-        "dynamics" => has_dynamics,
-        "gears" => has_gears,
-        "cam" => has_cam,
-        _ => false,
+        Section::Mechanism => has_mechanism,
+        Section::Forces => has_forces,
+        Section::Balancing => has_balancing,
+        Section::Friction => has_friction,
+        Section::Dynamics => has_dynamics,
+        Section::Gears => has_gears,
+        Section::Cam => has_cam,
     });
     let friction = friction(&mut check, raw.friction);
     let kinematics = kinematics(
@@ -273,7 +272,7 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
 fn plates(
     check: &mut Checker,
     raw: Option<RawPlates>,
-    present: impl Fn(&str) -> bool,
+    present: impl Fn(Section) -> bool,
 ) -> Vec<PlateKind> {
     let defaults = [
         PlateKind::Positions,

@@ -25,7 +25,7 @@ pub use crate::kinematics::KinematicsSpec;
 pub use error::{Problem, SceneError};
 pub use keys::Key;
 pub use load::{load, parse};
-pub use model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
+pub use model::{PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 
 #[cfg(test)]
 mod tests;
