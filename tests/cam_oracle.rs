@@ -11,7 +11,9 @@
 
 use proptest::prelude::*;
 use std::f64::consts::{FRAC_PI_2, TAU};
-use tmm::cam::{build, exact, motion, CamSpec, Follower, Law, Phases};
+use tmm::cam::{
+    build, exact, motion, CamSpec, Closure, Follower, Given, Law, Phases, RockerSense, Rotation,
+};
 use tmm::check::{Cusp, Finding};
 use tmm::construct::{Context, Drafting};
 use tmm::geom::DVec2;
@@ -64,9 +66,13 @@ fn spec(
         poles: None,
         law_assumed: false,
         quoted_r_min: None,
-        force_closure: force,
-        from_s: false,
-        clockwise: false,
+        closure: if force {
+            Closure::Force
+        } else {
+            Closure::Geometric
+        },
+        given: Given::D2s,
+        rotation: Rotation::Ccw,
     }
 }
 
@@ -210,7 +216,7 @@ fn rocker_margin(s: &CamSpec, arm: f64, sigma: f64, o: DVec2, m: (f64, f64, f64)
 
 /// The smallest margin over the checked part of the cycle at `n` samples per phase.
 fn rocker_worst(s: &CamSpec, arm: f64, sigma: f64, o: DVec2, n: usize) -> f64 {
-    samples(s, n, s.force_closure)
+    samples(s, n, s.closure == Closure::Force)
         .into_iter()
         .map(|(p, u, side)| rocker_margin(s, arm, sigma, o, law_motion(s, p, u, side)))
         .fold(f64::INFINITY, f64::min)
@@ -221,7 +227,7 @@ fn rocker_worst(s: &CamSpec, arm: f64, sigma: f64, o: DVec2, n: usize) -> f64 {
 fn rocker_worst_refined(s: &CamSpec, arm: f64, sigma: f64, o: DVec2) -> f64 {
     let mut worst = rocker_worst(s, arm, sigma, o, 2000);
     for (p, law) in [(0usize, s.rise), (2, s.ret)] {
-        if s.force_closure && p == 2 {
+        if s.closure == Closure::Force && p == 2 {
             continue;
         }
         let spans = match law {
@@ -289,7 +295,7 @@ proptest! {
         let ret = ret.min(359.0 - rise - far);
         prop_assume!(ret >= 40.0);
         let s = spec([rise, far, ret], law(k, ratio), law(kr, ratio),
-            arm * swing.to_radians(), Follower::Rocker { arm, same_sense: same }, gamma, force);
+            arm * swing.to_radians(), Follower::Rocker { arm, sense: if same { RockerSense::Same } else { RockerSense::Opposite } }, gamma, force);
         let sigma = if same { 1.0 } else { -1.0 };
         let Some((r, o)) = exact::min_radius_rocker(&s) else {
             return Err(TestCaseError::reject("no centre within reach"));

@@ -153,7 +153,7 @@ fn a_view_too_large_at_its_given_scale_names_the_key_and_the_scale_that_fits() {
     else {
         panic!("too large");
     };
-    assert_eq!(key.key, "kinematics.scale_v");
+    assert_eq!(key.key.path(), "kinematics.scale_v");
     // Every velocity plan of the plate, not the first alone.
     assert_eq!(first.value(), 0.01);
     let fit = sheets::verified_fit(&text, &path, key.key, first, Drafting::EXACT, Lang::Ru)

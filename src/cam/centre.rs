@@ -17,7 +17,7 @@
 use super::extremum::{checked_pieces, max_on, Piece};
 use super::follower::{rocker_of, Placement, REACH_ARMS};
 use super::motion::motion_u;
-use super::CamSpec;
+use super::{CamSpec, Closure};
 use crate::geom::{rotate, DVec2};
 use std::f64::consts::FRAC_PI_2;
 
@@ -86,7 +86,7 @@ fn groups(spec: &CamSpec, place: &Placement, arm: f64) -> Vec<Group> {
             _ => out.push(vec![*p]),
         }
     }
-    if !spec.force_closure && out.len() > 1 {
+    if spec.closure == Closure::Geometric && out.len() > 1 {
         let (first, last) = (pieces[0], pieces[pieces.len() - 1]);
         let cyclic = pos(spec, place, &last, last.to)
             .k

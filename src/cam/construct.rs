@@ -9,7 +9,7 @@ use super::follower::{to_cam, Kin, Placement};
 use super::inversion::{drawn_rho_min, invert, Inversion};
 use super::motion::{points, Motion, Point};
 use super::radius::{min_radius, RadiusConstruction};
-use super::{CamError, CamSpec, Follower};
+use super::{CamError, CamSpec, Follower, Rotation};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{french_curve, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
@@ -37,16 +37,16 @@ pub struct Cam {
     /// The pressure (transmission) angle over the cycle: read off the profile drawing at the
     /// points (marked) and the curve drawn through them, at μ_φ and 1°/mm.
     pub angle_graph: Option<Figure>,
-    /// The cam turns clockwise: `spec` is then its counter-clockwise mirror image (the offset
-    /// on the other side), every number is the mirror image's, and the mechanism's drawings
-    /// (the centre's construction, the profile) are mirrored back.
-    pub clockwise: bool,
+    /// The cam's sense. Clockwise: `spec` is then its counter-clockwise mirror image (the
+    /// offset on the other side), every number is the mirror image's, and the mechanism's
+    /// drawings (the centre's construction, the profile) are mirrored back.
+    pub rotation: Rotation,
 }
 
 impl Cam {
     /// An offset of the counter-clockwise model as the scene gives it.
     pub fn scene_offset(&self, e: f64) -> f64 {
-        if self.clockwise {
+        if self.rotation == Rotation::Cw {
             -e
         } else {
             e
@@ -60,7 +60,7 @@ impl Cam {
 /// A failed integration, no admissible centre, a roller not smaller than the base radius,
 /// no drawing scale.
 pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
-    if spec.clockwise {
+    if spec.rotation == Rotation::Cw {
         // A clockwise cam is the mirror image of a counter-clockwise one whose offset lies on
         // the other side of the centre.
         let follower = match spec.follower {
@@ -69,12 +69,12 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
             rocker @ Follower::Rocker { .. } => rocker,
         };
         let model = CamSpec {
-            clockwise: false,
+            rotation: Rotation::Ccw,
             follower,
             ..spec.clone()
         };
         let mut cam = build(&model, ctx)?;
-        cam.clockwise = true;
+        cam.rotation = Rotation::Cw;
         // The flat face's combined diagram S(S″) is no drawing of the mechanism.
         if !matches!(spec.follower, Follower::Flat { .. }) {
             cam.radius.figure = cam.radius.figure.mirrored_x();
@@ -119,7 +119,7 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
         roller,
         inversion,
         angle_graph,
-        clockwise: false,
+        rotation: Rotation::Ccw,
     })
 }
 

@@ -2,7 +2,7 @@
 //! phase, with the chord/pole method of [`crate::calculus`] at the textbook's scales.
 
 use super::motion::{motion, motion_u, Motion, Point};
-use super::{CamError, CamSpec};
+use super::{CamError, CamSpec, Given};
 use crate::calculus::{integrate_chords, Diagram, Layout, Sampling, Scales};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
@@ -74,7 +74,7 @@ pub(super) fn diagrams(
         .unwrap_or_else(|| chosen_poles(spec, s_scale, phi));
     let ds_scale = scale(s_scale.value() / (h2 * phi.value()), "μ_S′")?;
     let d2s_scale = scale(ds_scale.value() / (h1 * phi.value()), "μ_S″")?;
-    if spec.from_s {
+    if spec.given == Given::S {
         let sc = [s_scale, ds_scale, d2s_scale];
         return differentiated(spec, points, phi, sc, [h1, h2], ctx);
     }

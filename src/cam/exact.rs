@@ -8,7 +8,7 @@ pub use super::centre::min_radius_rocker;
 use super::extremum::{checked_pieces, max_over, pieces};
 use super::follower::{rocker_of, Kin, Placement};
 use super::motion::{motion, Motion};
-use super::CamSpec;
+use super::{CamSpec, Closure};
 use crate::geom::DVec2;
 use std::f64::consts::FRAC_PI_2;
 
@@ -47,7 +47,9 @@ pub fn checked(spec: &CamSpec, per_phase: usize) -> Vec<(f64, bool)> {
     let end = spec.starts()[1];
     dense(spec, per_phase)
         .into_iter()
-        .filter(|&(phi, after)| !spec.force_closure || phi < end || (phi == end && !after))
+        .filter(|&(phi, after)| {
+            spec.closure == Closure::Geometric || phi < end || (phi == end && !after)
+        })
         .collect()
 }
 

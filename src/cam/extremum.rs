@@ -5,7 +5,7 @@
 //! (the value of a smooth maximum to a few ulps, whatever the sampling).
 
 use super::motion::{self, Motion};
-use super::CamSpec;
+use super::{CamSpec, Closure};
 
 /// A smooth piece of the cycle: `phase` (0 rise, 1 far dwell, 2 return, 3 near dwell) from
 /// u = `from` to u = `to` of that phase (a dwell: 0 to 1, the motion constant).
@@ -102,7 +102,7 @@ pub fn pieces(spec: &CamSpec, rise_only: bool) -> Vec<Piece> {
 /// The pieces the angle limit is checked on: the whole cycle, the rise only under force
 /// closure (its ends on the rise's side).
 pub fn checked_pieces(spec: &CamSpec) -> Vec<Piece> {
-    pieces(spec, spec.force_closure)
+    pieces(spec, spec.closure == Closure::Force)
 }
 
 /// The largest of `f` on [a, b] (ends included as `f` gives them) and where: `n` intervals

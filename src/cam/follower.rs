@@ -6,7 +6,7 @@
 //! off its diagrams, the twin's closed forms.
 
 use super::motion::Motion;
-use super::{CamSpec, Follower};
+use super::{CamSpec, Follower, RockerSense};
 use crate::geom::{rotate, DVec2};
 use std::f64::consts::FRAC_PI_2;
 
@@ -145,7 +145,13 @@ pub fn flat_contact(r0: f64, m: Motion) -> (DVec2, f64) {
 /// The rocker's arm and sense σ (+1: with the cam on the rise).
 pub fn rocker_of(spec: &CamSpec) -> (f64, f64) {
     match spec.follower {
-        Follower::Rocker { arm, same_sense } => (arm, if same_sense { 1.0 } else { -1.0 }),
+        Follower::Rocker { arm, sense } => (
+            arm,
+            match sense {
+                RockerSense::Same => 1.0,
+                RockerSense::Opposite => -1.0,
+            },
+        ),
         _ => (1.0, 1.0),
     }
 }

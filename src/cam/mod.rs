@@ -67,9 +67,8 @@ pub enum Follower {
     Rocker {
         /// L, m.
         arm: f64,
-        /// The rocker turns on the rise in the cam's sense (the seed's rule: dS/dφ laid
-        /// towards the pivot on the rise); otherwise against it.
-        same_sense: bool,
+        /// The rocker's sense on the rise against the cam's.
+        sense: RockerSense,
     },
     /// A translating flat-faced follower (the face ⊥ its axis), axis offset `offset` (m).
     Flat {
@@ -115,15 +114,51 @@ pub struct CamSpec {
     pub law_assumed: bool,
     /// An r_min quoted by the source, m, to be checked against (never matched).
     pub quoted_r_min: Option<f64>,
+    /// How the follower is kept on the cam (`closure`).
+    pub closure: Closure,
+    /// What the scene gives the motion by (`given`).
+    pub given: Given,
+    /// The cam's sense of rotation (`rotation`).
+    pub rotation: Rotation,
+}
+
+/// How the follower is kept on the cam (`closure = "geometric" | "force"`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Closure {
+    /// Geometric closure (a groove): the pressure angle is checked over the whole cycle.
+    Geometric,
     /// Force (spring) closure: the pressure angle is checked on the rise only (seed 002,
-    /// L1477); otherwise (geometric closure) over the whole cycle.
-    pub force_closure: bool,
-    /// The scene gives S (`given = "s"`): the diagrams are S differentiated twice by chords
-    /// instead of d²S/dφ² integrated twice.
-    pub from_s: bool,
-    /// The cam turns clockwise (`rotation = "cw"`): constructed as its mirror image, a
-    /// counter-clockwise cam with the offset on the other side, and drawn mirrored back.
-    pub clockwise: bool,
+    /// L1477).
+    Force,
+}
+
+/// What the scene gives the motion by (`given = "d2s" | "s"`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Given {
+    /// d²S/dφ², integrated twice.
+    D2s,
+    /// S, differentiated twice by chords.
+    S,
+}
+
+/// The cam's sense of rotation (`rotation = "ccw" | "cw"`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rotation {
+    /// Counter-clockwise: the model's own sense.
+    Ccw,
+    /// Clockwise: constructed as its mirror image, a counter-clockwise cam with the offset on
+    /// the other side, and drawn mirrored back.
+    Cw,
+}
+
+/// A rocker's sense on the rise (`sense = "same" | "opposite"`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RockerSense {
+    /// The rocker turns on the rise in the cam's sense (the seed's rule: dS/dφ laid towards
+    /// the pivot on the rise).
+    Same,
+    /// Against the cam's sense.
+    Opposite,
 }
 
 impl CamSpec {

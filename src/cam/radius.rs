@@ -7,7 +7,7 @@
 use super::diagrams::{read_motion, Diagrams};
 use super::follower::{admits, rocker_of, Placement, REACH_ARMS};
 use super::motion::{Motion, Point};
-use super::{CamError, CamSpec, Follower};
+use super::{CamError, CamSpec, Closure, Follower};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{Arc, DVec2, Segment};
 use crate::scale::Scale;
@@ -86,7 +86,7 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     let t = gamma.tan();
     let (mut best, mut bind) = (f64::INFINITY, 0);
     // Under force closure only the rise's points bind.
-    let binds = |i: usize| !spec.force_closure || points[i].phase == 0;
+    let binds = |i: usize| spec.closure == Closure::Geometric || points[i].phase == 0;
     for (i, k) in ks.iter().enumerate().filter(|(i, _)| binds(*i)) {
         let y = k.y - (k.x - ox).abs() * t;
         if y < best {
@@ -200,7 +200,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
             &[pid],
         );
         ks.push(k);
-        if !spec.force_closure || p.phase == 0 {
+        if spec.closure == Closure::Geometric || p.phase == 0 {
             cons.push((k, e));
         }
     }

@@ -7,7 +7,7 @@ use super::exact;
 use super::follower::{flat_contact, to_cam, Placement};
 use super::inversion::{invert, Inversion};
 use super::motion::{motion, points, Motion, Point};
-use super::{CamError, CamSpec, Follower, Law, Shock};
+use super::{CamError, CamSpec, Closure, Follower, Given, Law, Rotation, Shock};
 use crate::check::{
     self, At, BaseUsed, Cusp, Finding, Key, Limit, Method, Note, RadiusBasis, Row, Symbol,
 };
@@ -247,7 +247,7 @@ impl Cam {
         let s = &self.spec;
         if self.flat() {
             RadiusBasis::Convexity { rho_min: s.rho_min }
-        } else if s.force_closure {
+        } else if s.closure == Closure::Force {
             RadiusBasis::AngleOnRise {
                 gamma_min: s.gamma_min,
             }
@@ -291,7 +291,7 @@ impl Cam {
         let (ss, sv, sa) = (big(|m| m.s), big(|m| m.ds), big(|m| m.d2s));
         let d = &self.diagrams;
         // The diagrams integrated from d²S/dφ², or differentiated from S by chords.
-        let method = if self.spec.from_s {
+        let method = if self.spec.given == Given::S {
             Method::DiagramChords
         } else {
             Method::Integration
@@ -415,7 +415,7 @@ impl Cam {
     pub fn noted(&self) -> Vec<Note> {
         let s = &self.spec;
         let mut out = Vec::new();
-        if self.clockwise {
+        if self.rotation == Rotation::Cw {
             out.push(Note::text(
                 "cam: it turns clockwise: constructed as its mirror image (counter-clockwise, the offset on the other side) and drawn mirrored back; the numbers are the same",
             ));
@@ -521,7 +521,7 @@ impl Cam {
                     worst > FRAC_PI_2 - s.gamma_min + 1e-9,
                     format!(
                         "cam: the largest pressure angle {} is {}° (λ_max = {}°)",
-                        if s.force_closure {
+                        if s.closure == Closure::Force {
                             "on the rise (force closure)"
                         } else {
                             "over the cycle"

@@ -26,7 +26,7 @@ pub(super) fn seed000() -> CamSpec {
         stroke: 0.12 * 25f64.to_radians(),
         follower: Follower::Rocker {
             arm: 0.12,
-            same_sense: true,
+            sense: RockerSense::Same,
         },
         roller: None,
         gamma_min: 60f64.to_radians(),
@@ -39,9 +39,9 @@ pub(super) fn seed000() -> CamSpec {
         poles: Some([30.0, 40.0]),
         law_assumed: false,
         quoted_r_min: Some(0.040),
-        force_closure: false,
-        from_s: false,
-        clockwise: false,
+        closure: Closure::Geometric,
+        given: Given::D2s,
+        rotation: Rotation::Ccw,
     }
 }
 
@@ -157,7 +157,7 @@ fn seed000_r_min_is_about_70_mm_not_40() {
 fn seed000_zone_of_the_centre_is_hatched_into_the_admitted_side() {
     use crate::construct::{Item, Role};
     let spec = seed000();
-    assert!(!spec.force_closure);
+    assert_eq!(spec.closure, Closure::Geometric);
     let cam = build(&spec, &ctx(0.0)).unwrap();
     let steps = &cam.radius.figure.steps;
     let o = steps
@@ -305,9 +305,9 @@ fn pz5_rise_only_matches_the_digest() {
         (Law::ConstantAcceleration { ratio: 0.5 }, 25.78, 36.12),
     ] {
         let s = CamSpec {
-            force_closure: true,
-            from_s: false,
-            clockwise: false,
+            closure: Closure::Force,
+            given: Given::D2s,
+            rotation: Rotation::Ccw,
             ..translating(law, 0.003)
         };
         let (r, _) = exact::min_radius_translating(&s, 0.003);

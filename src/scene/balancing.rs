@@ -3,6 +3,7 @@
 //! path and converted to SI.
 
 use super::check::{item, join, number, Checker};
+use super::keys::Key;
 use super::raw::{RawBalancing, RawMass};
 use crate::forces::balancing::{BalancingSpec, Correction, Mass};
 use crate::scale::Quantity;
@@ -83,19 +84,19 @@ pub(crate) fn balancing(check: &mut Checker, raw: &RawBalancing) -> Option<Balan
         correction,
         omega,
         scale_mr: check.scale(
-            &key("scale_mr"),
+            Key::BalancingScaleMr.path(),
             raw.scale_mr,
             Quantity::StaticMoment,
             "a scale μ_mρ > 0 kg·m/mm",
         ),
         scale_mrz: check.scale(
-            &key("scale_mrz"),
+            Key::BalancingScaleMrz.path(),
             raw.scale_mrz,
             Quantity::UnbalanceMoment,
             "a scale μ_mρz > 0 kg·m²/mm",
         ),
         scale_l: check.scale(
-            &key("scale_l"),
+            Key::BalancingScaleL.path(),
             raw.scale_l,
             Quantity::Length,
             "a scale μ_l > 0 m/mm",
@@ -106,7 +107,7 @@ pub(crate) fn balancing(check: &mut Checker, raw: &RawBalancing) -> Option<Balan
     let mr = largest(|m| m.mass * m.radius);
     draws(
         check,
-        &key("scale_mr"),
+        Key::BalancingScaleMr.path(),
         spec.scale_mr,
         "the largest m·ρ",
         mr,
@@ -114,7 +115,7 @@ pub(crate) fn balancing(check: &mut Checker, raw: &RawBalancing) -> Option<Balan
     let mrz = largest(|m| (m.mass * m.radius * m.z).abs());
     draws(
         check,
-        &key("scale_mrz"),
+        Key::BalancingScaleMrz.path(),
         spec.scale_mrz,
         "the largest m·ρ·z",
         mrz,
@@ -122,7 +123,7 @@ pub(crate) fn balancing(check: &mut Checker, raw: &RawBalancing) -> Option<Balan
     let rho = largest(|m| m.radius);
     draws(
         check,
-        &key("scale_l"),
+        Key::BalancingScaleL.path(),
         spec.scale_l,
         "the largest radius ρ",
         rho,

@@ -3,7 +3,8 @@
 //! scales, each checked with its key path and converted to SI.
 
 use super::check::{item, join, number, Checker, MAX_MM};
-use crate::cam::{CamSpec, Follower, Law, Phases};
+use super::keys::Key;
+use crate::cam::{CamSpec, Closure, Follower, Given, Law, Phases, RockerSense, Rotation};
 use crate::scale::Quantity;
 use serde::Deserialize;
 
@@ -28,13 +29,17 @@ const LAWS: [(&str, Law); 6] = [
     ("polynomial-345", Law::Polynomial345),
 ];
 /// The closures, as written: geometric (the whole cycle), force (spring, the rise only).
-const CLOSURES: [(&str, bool); 2] = [("geometric", false), ("force", true)];
+const CLOSURES: [(&str, Closure); 2] =
+    [("geometric", Closure::Geometric), ("force", Closure::Force)];
 /// The rocker's senses, as written: with the cam on the rise, or against it.
-const SENSES: [(&str, bool); 2] = [("same", true), ("opposite", false)];
+const SENSES: [(&str, RockerSense); 2] = [
+    ("same", RockerSense::Same),
+    ("opposite", RockerSense::Opposite),
+];
 /// What the diagrams are given by, as written: d²S/dφ² (integrated) or S (differentiated).
-const GIVEN: [(&str, bool); 2] = [("d2s", false), ("s", true)];
+const GIVEN: [(&str, Given); 2] = [("d2s", Given::D2s), ("s", Given::S)];
 /// The cam's rotation, as written: counter-clockwise or clockwise.
-const ROTATIONS: [(&str, bool); 2] = [("ccw", false), ("cw", true)];
+const ROTATIONS: [(&str, Rotation); 2] = [("ccw", Rotation::Ccw), ("cw", Rotation::Cw)];
 
 /// The kind of follower a scene names.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -164,11 +169,11 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         }
     };
     let offset = check.distance(&key("offset"), raw.offset, 0.0);
-    let same_sense = check.word_or_first(&key("sense"), raw.sense.as_ref(), &SENSES);
+    let sense = check.word_or_first(&key("sense"), raw.sense.as_ref(), &SENSES);
     let follower = match kind {
         Some(Kind::Rocker) => Follower::Rocker {
             arm: arm.unwrap_or(0.0),
-            same_sense,
+            sense,
         },
         Some(Kind::Flat) => Follower::Flat { offset },
         _ => Follower::Translating { offset },
@@ -259,9 +264,9 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             None
         }
     };
-    let force_closure = check.word_or_first(&key("closure"), raw.closure.as_ref(), &CLOSURES);
-    let from_s = check.word_or_first(&key("given"), raw.given.as_ref(), &GIVEN);
-    let clockwise = check.word_or_first(&key("rotation"), raw.rotation.as_ref(), &ROTATIONS);
+    let closure = check.word_or_first(&key("closure"), raw.closure.as_ref(), &CLOSURES);
+    let given = check.word_or_first(&key("given"), raw.given.as_ref(), &GIVEN);
+    let rotation = check.word_or_first(&key("rotation"), raw.rotation.as_ref(), &ROTATIONS);
     let spec = CamSpec {
         phases,
         rise,
@@ -274,19 +279,19 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         base_radius,
         divisions,
         scale_s: check.scale(
-            &key("scale_s"),
+            Key::CamScaleS.path(),
             raw.scale_s,
             Quantity::Length,
             "a scale μ_S > 0 m/mm",
         ),
         scale_l: check.scale(
-            &key("scale_l"),
+            Key::CamScaleL.path(),
             raw.scale_l,
             Quantity::Length,
             "a scale μ_l > 0 m/mm",
         ),
         scale_phi: check.scale(
-            &key("scale_phi"),
+            Key::CamScalePhi.path(),
             raw.scale_phi,
             Quantity::Angle,
             "a scale μ_φ > 0 rad/mm",
@@ -296,14 +301,17 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         quoted_r_min: raw
             .quoted_r_min
             .map(|mm| check.length(&key("quoted_r_min"), Some(mm))),
-        force_closure,
-        from_s,
-        clockwise,
+        closure,
+        given,
+        rotation,
     };
-    let stroke = "the stroke S_max";
-    super::drawing::draws(check, &key("scale_s"), spec.scale_s, stroke, spec.stroke);
-    super::drawing::draws(check, &key("scale_l"), spec.scale_l, stroke, spec.stroke);
-    super::drawing::turn_axis(check, &key("scale_phi"), spec.scale_phi, "the cam's");
+    for (k, scale) in [
+        (Key::CamScaleS, spec.scale_s),
+        (Key::CamScaleL, spec.scale_l),
+    ] {
+        super::drawing::draws(check, k.path(), scale, "the stroke S_max", spec.stroke);
+    }
+    super::drawing::turn_axis(check, Key::CamScalePhi.path(), spec.scale_phi, "the cam's");
     (check.problems.len() == before).then_some(spec)
 }
 

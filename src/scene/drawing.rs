@@ -9,6 +9,7 @@
 //! every drawing it sets fits.
 
 use super::check::{number, short, Checker};
+use super::keys::Key;
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::Mechanism;
 use crate::scale::{Lang, Scale};
@@ -35,13 +36,36 @@ pub(crate) fn drawing_ranges(
         return;
     }
     let w = w.abs();
-    draws(check, "mechanism.scale_l", scale_l, "the crank r", r);
+    draws(
+        check,
+        Key::MechanismScaleL.path(),
+        scale_l,
+        "the crank r",
+        r,
+    );
     let v = "the crank pin's velocity ω₁·r";
-    draws(check, "kinematics.scale_v", spec.scale_v, v, w * r);
+    draws(check, Key::KinematicsScaleV.path(), spec.scale_v, v, w * r);
     let a = "the crank pin's acceleration ω₁²·r";
-    draws(check, "kinematics.scale_a", spec.scale_a, a, w * w * r);
-    draws(check, "kinematics.scale_s", spec.scale_s, "the crank r", r);
-    turn_axis(check, "kinematics.scale_phi", spec.scale_phi, "the crank's");
+    draws(
+        check,
+        Key::KinematicsScaleA.path(),
+        spec.scale_a,
+        a,
+        w * w * r,
+    );
+    draws(
+        check,
+        Key::KinematicsScaleS.path(),
+        spec.scale_s,
+        "the crank r",
+        r,
+    );
+    turn_axis(
+        check,
+        Key::KinematicsScalePhi.path(),
+        spec.scale_phi,
+        "the crank's",
+    );
     for (key, h) in [
         ("kinematics.pole_h1", spec.pole_h1),
         ("kinematics.pole_h2", spec.pole_h2),

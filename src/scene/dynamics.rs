@@ -3,6 +3,7 @@
 //! coefficients, and the seed's own numbers to check — each checked with its key path.
 
 use super::check::{item, join, number, Checker};
+use super::keys::Key;
 use crate::dynamics::{
     ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
 };
@@ -173,34 +174,39 @@ pub(crate) fn dynamics(
             None
         }
     });
-    let scale = |check: &mut Checker, k: &str, v: Option<f64>, q: Quantity, want: &str| {
-        check.free_scale(&key(k), v, q, want)
+    let scale = |check: &mut Checker, k: Key, v: Option<f64>, q: Quantity, want: &str| {
+        check.free_scale(k.path(), v, q, want)
     };
     let scale_m = scale(
         check,
-        "scale_m",
+        Key::DynamicsScaleM,
         raw.scale_m,
         Quantity::Moment,
         "a scale μ_M > 0 N·m/mm",
     );
     let scale_phi = scale(
         check,
-        "scale_phi",
+        Key::DynamicsScalePhi,
         raw.scale_phi,
         Quantity::Angle,
         "a scale μ_φ > 0 rad/mm",
     );
-    super::drawing::turn_axis(check, &key("scale_phi"), scale_phi, "the crank's");
+    super::drawing::turn_axis(
+        check,
+        Key::DynamicsScalePhi.path(),
+        scale_phi,
+        "the crank's",
+    );
     let scale_j = scale(
         check,
-        "scale_j",
+        Key::DynamicsScaleJ,
         raw.scale_j,
         Quantity::Inertia,
         "a scale μ_J > 0 kg·m²/mm",
     );
     let scale_t = scale(
         check,
-        "scale_t",
+        Key::DynamicsScaleT,
         raw.scale_t,
         Quantity::Work,
         "a scale μ_T > 0 J/mm",

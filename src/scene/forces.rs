@@ -3,6 +3,7 @@
 //! checked with its key path and converted to SI.
 
 use super::check::{item, join, number, quoted, Checker};
+use super::keys::Key;
 use super::kinematics::{point, point_names, position_labels};
 use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance, RawSeedValue};
 use crate::check::Method;
@@ -102,7 +103,7 @@ pub(crate) fn forces(
         g,
         gravity_dir: check.angle(&key("gravity"), raw.gravity, -90.0),
         scale_f: check.scale(
-            &key("scale_f"),
+            Key::ForcesScaleF.path(),
             raw.scale_f,
             Quantity::Force,
             "a scale μ_F > 0 N/mm",
@@ -131,7 +132,7 @@ pub(crate) fn forces(
     let weights = spec.links.iter().map(|l| l.mass * spec.g);
     let largest = resisting.chain(weights).fold(0.0, f64::max);
     let what = "the largest load it declares";
-    super::drawing::draws(check, &key("scale_f"), spec.scale_f, what, largest);
+    super::drawing::draws(check, Key::ForcesScaleF.path(), spec.scale_f, what, largest);
     spec
 }
 

@@ -6,6 +6,7 @@
 
 use super::check::{item, join, number, Checker};
 use super::gear_values::{module_mm, teeth};
+use super::keys::Key;
 use super::planetary::{planetary, RawPlanetary};
 use crate::gears::{
     BasicRack, Cutting, GearError, GearsSpec, Pair, PairSpec, RackSpec, DEFAULT_POSITIONS,
@@ -130,7 +131,7 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
         check.push(key(what), Some(shown), format!("expected {expected}"));
     }
     let scale_l = check.scale(
-        &key("scale_l"),
+        Key::GearsScaleL.path(),
         raw.scale_l,
         Quantity::Length,
         "a scale μ_l > 0 m/mm",
@@ -222,7 +223,7 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
     if let Some(p) = pair.and_then(|p| Pair::working(p).ok()) {
         figure(
             check,
-            &key("scale_l"),
+            Key::GearsScaleL.path(),
             scale_l,
             p.a_w + p.ra[0] + p.ra[1],
             "a_w + r_a1 + r_a2",

@@ -2,6 +2,7 @@
 //! optional and checked with its key path.
 
 use super::check::{item, quoted, Checker};
+use super::keys::Key;
 use super::raw::RawKinematics;
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::{Dyad, Mechanism};
@@ -29,13 +30,13 @@ pub(crate) fn kinematics(
     let count = if count == 0 { u32::MAX } else { count };
     KinematicsSpec {
         scale_v: check.scale(
-            &key("scale_v"),
+            Key::KinematicsScaleV.path(),
             raw.scale_v,
             Quantity::Velocity,
             "a scale μ_v > 0 (m/s)/mm",
         ),
         scale_a: check.scale(
-            &key("scale_a"),
+            Key::KinematicsScaleA.path(),
             raw.scale_a,
             Quantity::Acceleration,
             "a scale μ_a > 0 (m/s²)/mm",
@@ -46,13 +47,13 @@ pub(crate) fn kinematics(
         }),
         diagram_point: point(check, &key("diagram"), raw.diagram, names.as_deref()),
         scale_s: check.scale(
-            &key("scale_s"),
+            Key::KinematicsScaleS.path(),
             raw.scale_s,
             Quantity::Length,
             "a scale μ_S > 0 m/mm",
         ),
         scale_phi: check.scale(
-            &key("scale_phi"),
+            Key::KinematicsScalePhi.path(),
             raw.scale_phi,
             Quantity::Angle,
             "a scale μ_φ > 0 rad/mm",

@@ -8,8 +8,9 @@ use super::error::SceneError;
 use super::forces::forces;
 use super::friction::friction;
 use super::gears::gear_sections;
+use super::keys::Key;
 use super::kinematics::kinematics;
-use super::model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
+use super::model::{PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
 use super::structure::mechanism;
 use crate::scale::{Quantity, Scale};
@@ -110,14 +111,13 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         .as_ref()
         .and_then(|b| balancing(&mut check, b));
     let plates = plates(&mut check, raw.plates, |section| match section {
-        "mechanism" => has_mechanism,
-        "forces" => has_forces,
-        "balancing" => has_balancing,
-        "friction" => has_friction,
-        "dynamics" => has_dynamics,
-        "gears" => has_gears,
-        "cam" => has_cam,
-        _ => false,
+        Section::Mechanism => has_mechanism,
+        Section::Forces => has_forces,
+        Section::Balancing => has_balancing,
+        Section::Friction => has_friction,
+        Section::Dynamics => has_dynamics,
+        Section::Gears => has_gears,
+        Section::Cam => has_cam,
     });
     let friction = friction(&mut check, raw.friction);
     let kinematics = kinematics(
@@ -222,7 +222,7 @@ fn title(task: RawTask, stem: &str) -> TitleInfo {
 /// `mechanism.scale_l`, m/mm, optional.
 fn scale_l(check: &mut Checker, v: Option<f64>) -> Option<Scale> {
     check.scale(
-        "mechanism.scale_l",
+        Key::MechanismScaleL.path(),
         v,
         Quantity::Length,
         "a scale μ_l > 0 m/mm",
@@ -272,7 +272,7 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
 fn plates(
     check: &mut Checker,
     raw: Option<RawPlates>,
-    present: impl Fn(&str) -> bool,
+    present: impl Fn(Section) -> bool,
 ) -> Vec<PlateKind> {
     let defaults = [
         PlateKind::Positions,

@@ -12,6 +12,7 @@ mod gear_values;
 mod gears;
 mod groups;
 mod indicator;
+mod keys;
 mod kinematics;
 mod load;
 mod model;
@@ -22,8 +23,9 @@ mod structure;
 
 pub use crate::kinematics::KinematicsSpec;
 pub use error::{Problem, SceneError};
+pub use keys::Key;
 pub use load::{load, parse};
-pub use model::{PlateKind, PositionSpec, Scene, Start, TitleInfo};
+pub use model::{PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 
 #[cfg(test)]
 mod tests;

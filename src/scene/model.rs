@@ -57,28 +57,68 @@ pub enum PlateKind {
     Cam,
 }
 
+/// A section of the scene that a plate draws from, spelled as the scene's table (in the
+/// alphabet's order).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Section {
+    /// `[balancing]`.
+    Balancing,
+    /// `[cam]`.
+    Cam,
+    /// `[dynamics]`.
+    Dynamics,
+    /// `[forces]`.
+    Forces,
+    /// `[friction]`.
+    Friction,
+    /// `[gears]` (or `[planetary]`).
+    Gears,
+    /// `[mechanism]`.
+    Mechanism,
+}
+
+impl Section {
+    /// The table's name (`mechanism`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Section::Balancing => "balancing",
+            Section::Cam => "cam",
+            Section::Dynamics => "dynamics",
+            Section::Forces => "forces",
+            Section::Friction => "friction",
+            Section::Gears => "gears",
+            Section::Mechanism => "mechanism",
+        }
+    }
+}
+
+impl std::fmt::Display for Section {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 impl PlateKind {
     /// The plate's file stem and the scene section it draws from: one table for
     /// [`PlateKind::stem`] and [`PlateKind::section`].
-    fn names(self) -> (&'static str, &'static str) {
+    fn names(self) -> (&'static str, Section) {
         match self {
-            PlateKind::Positions => ("positions", "mechanism"),
-            PlateKind::Kinematics => ("kinematics", "mechanism"),
-            PlateKind::Forces => ("forces", "forces"),
-            PlateKind::Balancing => ("balancing", "balancing"),
-            PlateKind::Friction => ("friction", "friction"),
-            PlateKind::Dynamics => ("dynamics", "dynamics"),
-            PlateKind::Gears => ("gears", "gears"),
-            PlateKind::Cam => ("cam", "cam"),
+            PlateKind::Positions => ("positions", Section::Mechanism),
+            PlateKind::Kinematics => ("kinematics", Section::Mechanism),
+            PlateKind::Forces => ("forces", Section::Forces),
+            PlateKind::Balancing => ("balancing", Section::Balancing),
+            PlateKind::Friction => ("friction", Section::Friction),
+            PlateKind::Dynamics => ("dynamics", Section::Dynamics),
+            PlateKind::Gears => ("gears", Section::Gears),
+            PlateKind::Cam => ("cam", Section::Cam),
         }
     }
     /// File stem of the plate (`positions`).
     pub fn stem(self) -> &'static str {
         self.names().0
     }
-    /// The scene section a plate of this kind draws from (`mechanism`, `forces`,
-    /// `balancing`, `friction`, `dynamics`, `gears`, `cam`).
-    pub fn section(self) -> &'static str {
+    /// The scene section a plate of this kind draws from.
+    pub fn section(self) -> Section {
         self.names().1
     }
     /// All kinds, for `tmm list`.

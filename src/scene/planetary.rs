@@ -5,6 +5,7 @@
 
 use super::check::{item, join, Checker};
 use super::gear_values::{module_mm, teeth};
+use super::keys::Key;
 use crate::gears::train::{TrainError, Wheel};
 use crate::gears::{Mesh, PlanetarySpec, Train};
 use serde::Deserialize;
@@ -55,7 +56,7 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
     let before = check.problems.len();
     let module = raw
         .module
-        .map_or(0.001, |m| module_mm(check, &key("module"), m));
+        .map_or(0.001, |m| module_mm(check, Key::PlanetaryModule.path(), m));
     let mut shafts: Vec<String> = Vec::new();
     let mut wheels = Vec::new();
     if raw.wheel.is_empty() {

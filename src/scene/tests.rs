@@ -464,6 +464,8 @@ fn bad_kinematics_values_are_refused_by_key() {
 fn kinematics_plate_kind_parses() {
     assert_eq!(PlateKind::parse("kinematics"), Some(PlateKind::Kinematics));
     assert_eq!(PlateKind::Kinematics.stem(), "kinematics");
+    assert_eq!(PlateKind::Kinematics.section(), Section::Mechanism);
+    assert_eq!(PlateKind::Gears.section().to_string(), "gears");
     assert!(PlateKind::ALL.contains(&PlateKind::Kinematics));
     let text = shaper_text().replacen(
         "wanted = [\"positions\", \"kinematics\", \"forces\", \"dynamics\"]",

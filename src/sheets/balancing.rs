@@ -4,12 +4,13 @@
 //! against their analytic twin. The smallest landscape sheet from A3 up that holds it all.
 
 use super::captions::{unit_in, RotorText, Text};
-use super::layout::{lay_out_smallest, results_table, Block, Column, Results, ScaleKey};
+use super::layout::{keyed, lay_out_smallest, results_table, Block, Column, Results};
 use super::BuildError;
 use crate::check::{Row, Symbol};
 use crate::forces::balancing::{Balancing, Correction, Plane};
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang, Scale};
+use crate::scale::{format_fixed, format_sig, Lang};
+use crate::scene::Key;
 use crate::study::Session;
 
 /// The sheets tried, smallest first.
@@ -33,7 +34,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         blocks.push(Block::view(
             fig.clone(),
             caption,
-            keyed("balancing.scale_mrz", mu),
+            keyed(Key::BalancingScaleMrz, mu),
         ));
     }
     let caption = format!(
@@ -44,7 +45,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     blocks.push(Block::view(
         b.statics.clone(),
         caption,
-        keyed("balancing.scale_mr", b.scale_mr),
+        keyed(Key::BalancingScaleMr, b.scale_mr),
     ));
     let mut lines = data_lines(&b, lang);
     lines.push(String::new());
@@ -65,11 +66,6 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     lay_out_smallest(&SIZES, blocks, "balancing", &title, lang)
 }
 
-/// The scene key of a scale and the scale, for a block's message.
-fn keyed(key: &'static str, scale: Scale) -> Option<ScaleKey> {
-    Some(ScaleKey { key, scale })
-}
-
 /// The rotor's views with their captions: the end view of a thin rotor; the side view and
 /// the end view of a long one.
 fn rotor_blocks(b: &Balancing, lang: Lang) -> Vec<Block> {
@@ -88,7 +84,7 @@ fn rotor_blocks(b: &Balancing, lang: Lang) -> Vec<Block> {
             }
             .get(lang);
             let caption = format!("{what}, {}", mu.caption(lang));
-            Block::view(fig.clone(), caption, keyed("balancing.scale_l", mu))
+            Block::view(fig.clone(), caption, keyed(Key::BalancingScaleL, mu))
         })
         .collect()
 }

@@ -4,13 +4,14 @@
 //! circles and both profiles, the angle graph, the data and the table of the points.
 
 use super::captions::{unit_in, CamText, Text};
-use super::layout::{lay_out, quantity, Block, Column, Results, ScaleKey};
+use super::layout::{keyed, lay_out, quantity, Block, Column, Results};
 use super::BuildError;
-use crate::cam::{Cam, Follower, Law};
+use crate::cam::{Cam, Follower, Given, Law, Rotation};
 use crate::check::{Cusp, Finding};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
+use crate::scene::Key;
 use crate::study::Session;
 
 /// Text height of the data lines and the tables, mm.
@@ -26,10 +27,6 @@ fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
     )
 }
 
-fn keyed(key: &'static str, scale: Scale) -> Option<ScaleKey> {
-    Some(ScaleKey { key, scale })
-}
-
 /// Build the cam sheet.
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
@@ -39,7 +36,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let h = |i: usize| format_sig(d.poles[i], 3, lang);
     // The two constructions of the diagrams with their scales: S given, differentiated
     // twice by chords; or d²S/dφ² given, integrated twice.
-    let (first, second) = if cam.spec.from_s {
+    let (first, second) = if cam.spec.given == Given::S {
         (
             (
                 format!(
@@ -48,7 +45,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                     mu("S′", d.ds_scale, lang),
                     h(1),
                 ),
-                keyed("cam.scale_s", d.s_scale),
+                keyed(Key::CamScaleS, d.s_scale),
             ),
             (
                 format!(
@@ -57,7 +54,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                     mu("S″", d.d2s_scale, lang),
                     h(0),
                 ),
-                keyed("cam.scale_phi", d.phi),
+                keyed(Key::CamScalePhi, d.phi),
             ),
         )
     } else {
@@ -70,7 +67,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                     mu("S′", d.ds_scale, lang),
                     h(0),
                 ),
-                keyed("cam.scale_phi", d.phi),
+                keyed(Key::CamScalePhi, d.phi),
             ),
             (
                 format!(
@@ -78,7 +75,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                     mu("S", d.s_scale, lang),
                     h(1)
                 ),
-                keyed("cam.scale_s", d.s_scale),
+                keyed(Key::CamScaleS, d.s_scale),
             ),
         )
     };
@@ -95,7 +92,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     blocks.push(Block::view(
         cam.radius.figure.clone(),
         format!("{combined}, {}", mu("S", d.s_scale, lang)),
-        keyed("cam.scale_s", d.s_scale),
+        keyed(Key::CamScaleS, d.s_scale),
     ));
     blocks.push(Block::view(
         cam.inversion.figure.clone(),
@@ -104,7 +101,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             CamText::Profile.get(lang),
             cam.inversion.scale.caption(lang)
         ),
-        keyed("cam.scale_l", cam.inversion.scale),
+        keyed(Key::CamScaleL, cam.inversion.scale),
     ));
     if let Some(g) = &cam.angle_graph {
         let what = if matches!(cam.spec.follower, Follower::Rocker { .. }) {
@@ -171,7 +168,7 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
             .replace("{ret}", &deg(p.ret))
             .replace("{near}", &deg(p.near)),
     );
-    let sense = if cam.clockwise {
+    let sense = if cam.rotation == Rotation::Cw {
         CamText::Clockwise
     } else {
         CamText::CounterClockwise

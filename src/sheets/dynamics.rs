@@ -5,22 +5,19 @@
 //! views need it).
 
 use super::captions::{unit_in, DynamicsText, Text};
-use super::layout::{lay_out, quantity, Block, Column, Results, ScaleKey};
+use super::layout::{keyed, lay_out, quantity, Block, Column, Results};
 use super::BuildError;
 use crate::check::{Finding, NoFlywheel, Route};
 use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
+use crate::scene::Key;
 use crate::study::Session;
 
 /// Text height of the data lines and the tables, mm.
 const TEXT_MM: f64 = 3.5;
 const TABLE_MM: f64 = 2.5;
-
-fn keyed(key: &'static str, scale: Scale) -> Option<ScaleKey> {
-    Some(ScaleKey { key, scale })
-}
 
 /// Build the dynamics sheet of the scene.
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
@@ -63,17 +60,17 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                     &[(g.scale_m, false), (g.scale_a, false), (g.scale_phi, false)]
                 )
             ),
-            keyed("dynamics.scale_m", g.scale_m),
+            keyed(Key::DynamicsScaleM, g.scale_m),
         ),
         Block::view(
             g.energy.clone(),
             cap("ΔT = A_{д} − A_{с}", &[(g.scale_t, true)]),
-            keyed("dynamics.scale_t", g.scale_t),
+            keyed(Key::DynamicsScaleT, g.scale_t),
         ),
         Block::view(
             g.inertia.clone(),
             cap("J_{пр}(φ)", &[(g.scale_j, false)]),
-            keyed("dynamics.scale_j", g.scale_j),
+            keyed(Key::DynamicsScaleJ, g.scale_j),
         ),
         Block::view(
             g.wittenbauer_figure.clone(),
@@ -81,7 +78,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 DynamicsText::EnergyMass.get(lang),
                 &[(g.scale_tw, true), (g.scale_j, false)],
             ),
-            keyed("dynamics.scale_t", g.scale_tw),
+            keyed(Key::DynamicsScaleT, g.scale_tw),
         ),
         Block::view(
             g.merkin_figure.clone(),

@@ -14,6 +14,7 @@ use crate::forces::PositionForces;
 use crate::linkage::Structure;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
+use crate::scene::Key;
 use crate::study::{KinScales, Session};
 
 /// Height of the sheet's text and table, mm.
@@ -57,7 +58,7 @@ fn degrees(a: f64, lang: Lang) -> String {
 }
 
 /// A view captioned "`what`, μ = …" at `scale`, set by the scene key `key`.
-fn view(figure: &Figure, what: String, (key, scale): (&'static str, Scale), lang: Lang) -> Block {
+fn view(figure: &Figure, what: String, (key, scale): (Key, Scale), lang: Lang) -> Block {
     let caption = format!("{what}, {}", scale.caption(lang));
     Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))
 }
@@ -86,24 +87,24 @@ fn position_sheet(
         blocks.push(view(
             &g.scheme,
             format!("{} {i}–{j} ({kind})", Text::Group.get(lang)),
-            ("mechanism.scale_l", sc.l),
+            (Key::MechanismScaleL, sc.l),
             lang,
         ));
         blocks.push(view(
             &g.polygon,
             format!("{} {i}–{j}", Text::ForcePolygonOfGroup.get(lang)),
-            ("forces.scale_f", f.scale_f),
+            (Key::ForcesScaleF, f.scale_f),
             lang,
         ));
     }
     let d = &f.analysis.polygons.driver;
     let driving = format!("{} {}", Text::DrivingLink.get(lang), st.crank_link);
-    blocks.push(view(&d.scheme, driving, ("mechanism.scale_l", sc.l), lang));
+    blocks.push(view(&d.scheme, driving, (Key::MechanismScaleL, sc.l), lang));
     let triangle = Text::ForcePolygonOfDriver.get(lang).to_string();
     blocks.push(view(
         &d.polygon,
         triangle,
-        ("forces.scale_f", f.scale_f),
+        (Key::ForcesScaleF, f.scale_f),
         lang,
     ));
     let lever = &f.analysis.lever.figure;
@@ -111,7 +112,7 @@ fn position_sheet(
     blocks.push(view(
         lever,
         zhukovsky,
-        ("kinematics.scale_v", lever.scale),
+        (Key::KinematicsScaleV, lever.scale),
         lang,
     ));
     // The title block's cell takes plain text (φ₁), the sheet's text block markup (φ_{1}).

@@ -13,6 +13,7 @@ use crate::forces::friction::{
 };
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang, Quantity};
+use crate::scene::Key;
 use crate::study::Session;
 
 /// Text height of the sheet's lines and table, mm.
@@ -244,7 +245,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     for (n, s) in solved.iter().enumerate() {
         for d in &s.drawings {
             let key = d.scaled.then_some(ScaleKey {
-                key: "friction.case.scale_f",
+                key: Key::FrictionCaseScaleF,
                 scale: d.figure.scale,
             });
             blocks.push(Block::view(

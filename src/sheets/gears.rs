@@ -9,6 +9,7 @@ use super::BuildError;
 use crate::check::Row;
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_sig, Lang};
+use crate::scene::Key;
 use crate::study::Session;
 
 /// Text height of the data lines and the table, mm.
@@ -26,7 +27,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     if let Some((p, m)) = &g.pair {
         plan = Some(m.scale);
         let caption = format!("{}, {}", GearText::Meshing.get(lang), m.scale.caption(lang));
-        blocks.push(view(&m.figure, caption, "gears.scale_l", m.scale));
+        blocks.push(view(&m.figure, caption, Key::GearsScaleL, m.scale));
         let caption = format!(
             "{}: λ_1, λ_2 {} N_1N_2, λ = 1 ↔ {} {}",
             GearText::Sliding.get(lang),
@@ -34,7 +35,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             format_sig(crate::gears::mesh::LAMBDA_MM, 3, lang),
             mm_,
         );
-        blocks.push(view(&m.sliding, caption, "gears.scale_l", m.scale));
+        blocks.push(view(&m.sliding, caption, Key::GearsScaleL, m.scale));
         let mm = |x: f64| format_sig(x * 1e3, 6, lang);
         lines.push(format!(
             "m = {} {u}, z_1 = {}, z_2 = {}, x_1 = {}, x_2 = {}",
@@ -85,7 +86,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 ""
             }
         );
-        blocks.push(view(&r.figure, caption, "gears.rack.scale_l", r.scale));
+        blocks.push(view(&r.figure, caption, Key::GearsRackScaleL, r.scale));
         plan.get_or_insert(r.scale);
         lines.push(format!(
             "{name}: z = {}, x = {}, x_{{min}} = {}, s_a = {} {}{}{}",
@@ -116,7 +117,12 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             format_sig(crate::gears::triangles::PLAN_H, 3, lang),
             mm_,
         );
-        blocks.push(view(&tri.figure, caption, "planetary.module", tri.scale_v));
+        blocks.push(view(
+            &tri.figure,
+            caption,
+            Key::PlanetaryModule,
+            tri.scale_v,
+        ));
         let tr_ = &t.spec.train;
         for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
             let Some(s) = s else { continue };
@@ -170,7 +176,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
 fn view(
     figure: &crate::construct::Figure,
     caption: String,
-    key: &'static str,
+    key: Key,
     scale: crate::scale::Scale,
 ) -> Block {
     Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))

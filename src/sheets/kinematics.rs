@@ -5,22 +5,18 @@
 //! field), so the sheet draws the very plans the report reads.
 
 use super::captions::{symbols, unit_in, Text};
-use super::layout::{lay_out, split_table, table, Block, ScaleKey};
+use super::layout::{keyed, lay_out, split_table, table, Block};
 use super::BuildError;
 use crate::check::Method;
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
+use crate::scale::{format_fixed, format_sig, Lang, Quantity};
+use crate::scene::Key;
 use crate::study::{Kinematics, Session};
 
 /// The widest an analytic table may be drawn, mm (the A1 frame's width less margins); its
 /// columns are narrowed to 12 mm before any is left out.
 const TABLES_WIDTH_MM: f64 = 800.0;
-
-/// The scene key of a scale and the scale, for a block's message.
-fn keyed(key: &'static str, scale: Scale) -> Option<ScaleKey> {
-    Some(ScaleKey { key, scale })
-}
 
 /// Build the sheets: as many A1 sheets as the views need at the sheet's scales.
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
@@ -37,7 +33,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     blocks.push(Block::view(
         a.plan.figure.clone(),
         caption,
-        keyed("mechanism.scale_l", sc.l),
+        keyed(Key::MechanismScaleL, sc.l),
     ));
     let mut lines = vec![
         super::drafting_line(session.drafting(), lang),
@@ -62,7 +58,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 dec(d.second.pole_mm),
                 Text::Millimetre.get(lang)
             )),
-            scale: keyed("kinematics.scale_s", d.scales.y),
+            scale: keyed(Key::KinematicsScaleS, d.scales.y),
         });
         lines.push(format!(
             "{} {}: μ_{{S}} = {} {}, μ_{{φ}} = {} {}, H_{{1}} = {} {}; μ_{{v}} = μ_{{S}}·ω_{{1}}/(H_{{1}}·μ_{{φ}}) = {} {}, μ_{{a}} = {} {}",
@@ -83,7 +79,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     for (pos, vp) in a.plan.positions.iter().zip(a.velocity_plans()) {
         let c = format!("{} {}", Text::Pos.get(lang), pos.label);
         blocks.push(match vp {
-            Some(vp) => Block::view(vp.figure.clone(), c, keyed("kinematics.scale_v", sc.v)),
+            Some(vp) => Block::view(vp.figure.clone(), c, keyed(Key::KinematicsScaleV, sc.v)),
             None => Block::Text {
                 lines: vec![
                     c,
@@ -100,7 +96,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         blocks.push(Block::view(
             ap.0.figure.clone(),
             c,
-            keyed("kinematics.scale_a", sc.a),
+            keyed(Key::KinematicsScaleA, sc.a),
         ));
     }
     if let Some(r) = &a.rocker {

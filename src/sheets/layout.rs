@@ -13,15 +13,21 @@ use crate::plate::{
     CAPTION_HEIGHT_MM,
 };
 use crate::scale::{format_fixed, Lang, Scale};
+use crate::scene::Key;
 
 /// The scale a block is drawn at and the scene key that sets it, for the message when the
 /// block does not fit a sheet.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ScaleKey {
-    /// The scene key (`kinematics.scale_v`).
-    pub key: &'static str,
+    /// The scene key ([`Key::KinematicsScaleV`]).
+    pub key: Key,
     /// The scale.
     pub scale: Scale,
+}
+
+/// A view's scale and its key, for [`Block::view`].
+pub(super) fn keyed(key: Key, scale: Scale) -> Option<ScaleKey> {
+    Some(ScaleKey { key, scale })
 }
 
 /// One thing on a sheet.

@@ -10,6 +10,7 @@ use crate::geom::DVec2;
 use crate::linkage::{DyadKind, OutputCoord, PositionPlan, Structure};
 use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
+use crate::scene::Key;
 use crate::study::Session;
 
 /// The room of the structural scheme, mm.
@@ -46,7 +47,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             plan.figure.clone(),
             plan_caption,
             Some(ScaleKey {
-                key: "mechanism.scale_l",
+                key: Key::MechanismScaleL,
                 scale,
             }),
         ),

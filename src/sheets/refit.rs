@@ -7,6 +7,7 @@
 use super::{build_all, BuildError};
 use crate::construct::Drafting;
 use crate::scale::{Lang, Scale};
+use crate::scene::Key;
 use crate::study::Session;
 use std::path::Path;
 
@@ -19,7 +20,7 @@ const MAX_TRIES: usize = 8;
 pub fn verified_fit(
     text: &str,
     path: &Path,
-    key: &str,
+    key: Key,
     first: Scale,
     drafting: Drafting,
     lang: Lang,
@@ -27,7 +28,7 @@ pub fn verified_fit(
     let mut table: toml::Table = text.parse().ok()?;
     let mut fit = first;
     for _ in 0..MAX_TRIES {
-        set(&mut table, key, fit.value())?;
+        set(&mut table, key.path(), fit.value())?;
         let scene = crate::scene::parse(&toml::to_string(&table).ok()?, path).ok()?;
         match build_all(&Session::new(&scene, drafting), lang) {
             Err((
@@ -73,6 +74,7 @@ fn set(table: &mut toml::Table, key: &str, value: f64) -> Option<()> {
 #[cfg(test)]
 mod tests {
     use super::set;
+    use crate::scene::Key;
 
     #[test]
     fn a_dotted_key_is_set_in_tables_and_arrays_of_tables() {
@@ -80,9 +82,9 @@ mod tests {
             "[kinematics]\nscale_v = 1.0\n[[gears.rack]]\nz = 13\n[[gears.rack]]\nz = 20\n"
                 .parse()
                 .expect("toml");
-        set(&mut t, "kinematics.scale_v", 0.5).expect("set");
+        set(&mut t, Key::KinematicsScaleV.path(), 0.5).expect("set");
         set(&mut t, "gears.rack[1].scale_l", 0.25).expect("set");
-        set(&mut t, "forces.scale_f", 4.0).expect("a new table");
+        set(&mut t, Key::ForcesScaleF.path(), 4.0).expect("a new table");
         assert_eq!(t["kinematics"]["scale_v"].as_float(), Some(0.5));
         assert_eq!(t["gears"]["rack"][1]["scale_l"].as_float(), Some(0.25));
         assert!(t["gears"]["rack"][0].get("scale_l").is_none());
