@@ -16,17 +16,15 @@ const FOLLOWERS: [(&str, Kind); 3] = [
     ("rocker", Kind::Rocker),
     ("flat", Kind::Flat),
 ];
-/// The laws, as written (the "+ −" law's ratio is the scene's `ratio`, set after).
-const LAWS: [(&str, Law); 6] = [
-    ("uniform", Law::Uniform),
-    (
-        "constant-acceleration",
-        Law::ConstantAcceleration { ratio: 0.5 },
-    ),
-    ("cosine", Law::Cosine),
-    ("sine", Law::Sine),
-    ("trapezoidal", Law::Trapezoidal),
-    ("polynomial-345", Law::Polynomial345),
+/// The laws a scene may name, each written as [`Law::key`] gives it (the "+ −" law's ratio
+/// is the scene's `ratio`, set after).
+const LAWS: [Law; 6] = [
+    Law::Uniform,
+    Law::ConstantAcceleration { ratio: 0.5 },
+    Law::Cosine,
+    Law::Sine,
+    Law::Trapezoidal,
+    Law::Polynomial345,
 ];
 /// The closures, as written: geometric (the whole cycle), force (spring, the rise only).
 const CLOSURES: [(&str, Closure); 2] =
@@ -112,7 +110,7 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         None => 0.5,
     };
     let law_of = |check: &mut Checker, k: &str, v: Option<&String>| -> Law {
-        match check.word(&key(k), v, &LAWS) {
+        match check.word(&key(k), v, &LAWS.map(|law| (law.key(), law))) {
             Some(Law::ConstantAcceleration { .. }) => Law::ConstantAcceleration { ratio },
             Some(law) => law,
             None => Law::Cosine,
