@@ -89,7 +89,7 @@ impl Mobility {
 
 impl Structure {
     /// Analyse a mechanism. The link carrying each point and guide is the compiled
-    /// program's ([`Program::owner`], [`Program::carrier`]); a name the program does not
+    /// program's ([`Program::owner`], `Program::carrier`); a name the program does not
     /// know (a mechanism that does not compile) is taken on the frame.
     pub fn analyse(m: &Mechanism) -> Self {
         let prog = Program::compile(m).ok();

@@ -185,7 +185,7 @@ pub struct Extent {
 }
 
 /// The extent of the markup at text size `height_mm` (height of capitals), measured with the
-/// bundled face's metrics, scripts at their size and shift as [`Placed`] writes them.
+/// bundled face's metrics, scripts at their size and shift as `Placed` writes them.
 pub fn measure(markup: &str, height_mm: f64) -> Extent {
     let em = em_for_height(height_mm);
     let mut pen = 0.0;

@@ -17,7 +17,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
 /// Write every file or none. First every destination is checked (it has a file name, is
 /// named once, is not a directory, and its nearest existing ancestor is a directory) and the
 /// stale temporaries of earlier runs in the destinations' folders are removed
-/// ([`remove_stale`]); then the missing directories are created and every file is written to
+/// (`remove_stale`); then the missing directories are created and every file is written to
 /// its temporary `.<name>.tmp-<pid>`; only when all are written are they renamed over their
 /// destinations, each file replaced kept as `.<name>.bak-<pid>` (a second link) until every
 /// rename has succeeded. A failure at any step undoes the steps before it — the renames

@@ -1,6 +1,6 @@
-//! The writers of a [`Report`]: JSON, CSV and Markdown.
+//! The writers of a [`Report`](crate::check::Report): JSON, CSV and Markdown.
 
-use super::{Column, Method, Report, Summary, SummaryEntry, Table};
+use crate::check::{Column, Method, Report, Summary, SummaryEntry, Table};
 use crate::scale::{format_sig, Lang};
 use serde::Serialize;
 use std::fmt::Write as _;

@@ -1,10 +1,13 @@
 //! The writers of reports: graphical against analytic values, row by row, with the
 //! section-1.6 summary of the seed (mean and largest relative error per quantity and method).
 //!
-//! The check of every construction produces typed [`Row`]s; a study collects them into a
-//! [`Report`] together with its analytic [`Table`]s — both result data, kept in
-//! [`crate::check`]. This module only writes a report: JSON ([`Report::to_json`]), CSV
-//! ([`Report::to_csv`]) or Markdown ([`Report::to_markdown`]); nothing below it (the checks,
+//! The check of every construction produces typed rows; a study collects them into a report
+//! together with its analytic tables — result data, kept in [`crate::check`]
+//! ([`Row`](crate::check::Row), [`Report`](crate::check::Report),
+//! [`Table`](crate::check::Table)). This module only writes a report: JSON
+//! ([`Report::to_json`](crate::check::Report::to_json)), CSV
+//! ([`Report::to_csv`](crate::check::Report::to_csv)) or Markdown
+//! ([`Report::to_markdown`](crate::check::Report::to_markdown)); nothing below it (the checks,
 //! the domains, the session) imports it. The bench's table and plot are in [`crate::bench`].
 //!
 //! Error conventions:
@@ -23,6 +26,5 @@ mod format;
 #[cfg(test)]
 pub(crate) mod tests;
 
-pub use crate::check::{Column, Method, Report, Row, Summary, SummaryEntry, Table};
 pub use format::CSV_HEADER;
 pub(crate) use format::{finite, json, md_cell, md_header, md_row};

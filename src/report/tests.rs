@@ -1,5 +1,4 @@
-use super::*;
-use crate::check::{Key, Symbol};
+use crate::check::{Column, Key, Method, Report, Row, SummaryEntry, Symbol, Table};
 use crate::scale::Lang;
 use serde_json::Value;
 

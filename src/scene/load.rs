@@ -26,7 +26,7 @@ const WORKING_STROKE: &str = "working-stroke";
 /// The largest scene file, bytes (1 MiB; the largest scene of `constructions/` is 9 KiB).
 pub const MAX_SCENE_BYTES: u64 = 1 << 20;
 
-/// Read and validate the scene file at `path` (at most [`MAX_SCENE_BYTES`]: a larger file,
+/// Read and validate the scene file at `path` (at most `MAX_SCENE_BYTES`: a larger file,
 /// or an endless one such as `/dev/zero`, is refused after reading one byte more).
 ///
 /// Lengths in the file are millimetres, angles degrees, `omega` rad/s or `n` rpm; the

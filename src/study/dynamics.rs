@@ -2,13 +2,26 @@
 
 use super::*;
 
+/// The dynamic study's part of the report.
+pub(super) const PART: Part = Part {
+    has: |scene| scene.dynamics.is_some(),
+    add: |session, rep| session.report_dynamics(rep),
+};
+
+/// The dynamic study.
+struct Flywheel;
+impl Cache for Flywheel {
+    type Key = ();
+    type Value = Cached<crate::dynamics::Dynamics>;
+}
+
 impl<'s> Session<'s> {
     /// The dynamic study (`[dynamics]`) at the kinematic study's scales: the reduction over
     /// the scene's numbered positions from their velocity plans (the same plans when
     /// `dynamics.count` is the scene's count; its own plan of positions otherwise), the
     /// diagrams, the exact energy equation and the flywheel.
     pub fn dynamics(&self) -> Cached<crate::dynamics::Dynamics> {
-        self.dynamics.get((), || {
+        self.caches.get::<Flywheel>((), || {
             let spec = self
                 .scene
                 .dynamics
@@ -41,5 +54,12 @@ impl<'s> Session<'s> {
             self.logged("dynamics diagrams", "", d.diagrams.scale_a);
             Ok(Arc::new(d))
         })
+    }
+
+    fn report_dynamics(&self, rep: &mut Report) -> Result<(), StudyError> {
+        let d = self.dynamics()?;
+        rep.rows.extend(crate::dynamics::rows(&d));
+        rep.notes.extend(crate::dynamics::notes(&d));
+        Ok(())
     }
 }

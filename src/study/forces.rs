@@ -2,6 +2,19 @@
 
 use super::*;
 
+/// The force analysis's part of the report (after the kinematic study's, whose plans it reads).
+pub(super) const PART: Part = Part {
+    has: |scene| scene.mechanism.is_some() && scene.forces.is_some(),
+    add: |session, rep| session.report_forces(rep),
+};
+
+/// The force analysis by (μ_l, μ_v, μ_a, position).
+struct Polygons;
+impl Cache for Polygons {
+    type Key = (Scale, Scale, Scale, usize);
+    type Value = Cached<PositionForces>;
+}
+
 impl<'s> Session<'s> {
     /// The `[forces]` loads, for a study that needs them.
     pub fn force_spec(&self, study: &'static str) -> Result<&'s ForceSpec, StudyError> {
@@ -33,7 +46,7 @@ impl<'s> Session<'s> {
     /// The force analysis of position `k` at the kinematic scales `sc` (its velocity and
     /// acceleration plans at μ_v and μ_a).
     pub fn forces(&self, sc: &KinScales, k: usize) -> Cached<PositionForces> {
-        self.forces.get((sc.l, sc.v, sc.a, k), || {
+        self.caches.get::<Polygons>((sc.l, sc.v, sc.a, k), || {
             let spec = self.force_spec("the force analysis")?;
             let plan = self.positions(sc.l)?;
             let vel = self.velocity(sc.l, sc.v, k)?;
@@ -64,5 +77,22 @@ impl<'s> Session<'s> {
             self.logged("force polygons", &plan.positions[k].label, f.scale_f);
             Ok(Arc::new(f))
         })
+    }
+
+    /// The rows and notes of the force analysis at each of `[forces] positions`, with the
+    /// seed's comparison.
+    fn report_forces(&self, rep: &mut Report) -> Result<(), StudyError> {
+        let sc = self.kin_scales()?;
+        let mut rows = Vec::new();
+        for i in self.force_positions()? {
+            let f = self.forces(&sc, i)?;
+            rows.extend(f.rows.iter().cloned());
+            rows.extend(f.residual_rows());
+            rep.notes.extend(crate::forces::notes(&f));
+        }
+        let seed = &self.force_spec("the force analysis")?.seed;
+        rep.notes.extend(crate::forces::seed_notes(seed, &rows));
+        rep.rows.extend(rows);
+        Ok(())
     }
 }

@@ -2,11 +2,24 @@
 
 use super::*;
 
+/// The gear study's part of the report.
+pub(super) const PART: Part = Part {
+    has: |scene| scene.gears.is_some(),
+    add: |session, rep| session.report_gears(rep),
+};
+
+/// The gear study.
+struct Wheels;
+impl Cache for Wheels {
+    type Key = ();
+    type Value = Cached<crate::gears::GearStudy>;
+}
+
 impl<'s> Session<'s> {
     /// The gear study of the scene (`[gears]`): the pair's meshing picture and the wheels
     /// cut by the rack, constructed once.
     pub fn gears(&self) -> Cached<crate::gears::GearStudy> {
-        self.gears.get((), || {
+        self.caches.get::<Wheels>((), || {
             let spec = self
                 .scene
                 .gears
@@ -21,5 +34,12 @@ impl<'s> Session<'s> {
             }
             Ok(Arc::new(g))
         })
+    }
+
+    fn report_gears(&self, rep: &mut Report) -> Result<(), StudyError> {
+        let g = self.gears()?;
+        rep.rows.extend(g.rows());
+        rep.notes.extend(g.notes());
+        Ok(())
     }
 }

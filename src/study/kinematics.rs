@@ -3,6 +3,12 @@
 //! analytic table, and the kinematics report.
 
 use super::*;
+
+/// The kinematic study's part of the report.
+pub(super) const PART: Part = Part {
+    has: |scene| scene.mechanism.is_some(),
+    add: |session, rep| session.report_kinematics(rep),
+};
 use crate::kinematics;
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -97,6 +103,48 @@ pub(super) fn refusable<T>(r: MaybeCached<T>, refusals: &mut Vec<KinError>) -> M
     }
 }
 
+/// The velocity plans by (μ_l, μ_v, position).
+struct VelocityPlans;
+impl Cache for VelocityPlans {
+    type Key = (Scale, Scale, usize);
+    type Value = Cached<Velocity>;
+}
+
+/// The acceleration plans by (μ_l, μ_v, μ_a, position).
+struct AccelerationPlans;
+impl Cache for AccelerationPlans {
+    type Key = (Scale, Scale, Scale, usize);
+    type Value = Cached<Acceleration>;
+}
+
+/// The displacement diagrams by (μ_l, the chart's scales).
+struct MotionDiagrams;
+impl Cache for MotionDiagrams {
+    type Key = (Scale, ChartScales);
+    type Value = MaybeCached<Diagrams>;
+}
+
+/// The rocker's ω diagram by (μ_l, μ_v).
+struct RockerDiagrams;
+impl Cache for RockerDiagrams {
+    type Key = (Scale, Scale);
+    type Value = MaybeCached<RockerDiagram>;
+}
+
+/// The hodograph by (μ_l, μ_v).
+struct Hodographs;
+impl Cache for Hodographs {
+    type Key = (Scale, Scale);
+    type Value = Result<Option<Hodograph>, StudyError>;
+}
+
+/// The analytic table by μ_l.
+struct AnalyticTables;
+impl Cache for AnalyticTables {
+    type Key = Scale;
+    type Value = Cached<Table>;
+}
+
 impl<'s> Session<'s> {
     pub(super) fn spec(&self) -> &KinematicsSpec {
         &self.scene.kinematics
@@ -110,7 +158,7 @@ impl<'s> Session<'s> {
 
     /// The velocity plan at position `k` of the plan at μ_l = `l`, at μ_v = `v`.
     pub fn velocity(&self, l: Scale, v: Scale, k: usize) -> Cached<Velocity> {
-        self.velocity.get((l, v, k), || {
+        self.caches.get::<VelocityPlans>((l, v, k), || {
             let plan = self.positions(l)?;
             let vel = plans::velocity(&plan, k, l.value(), self.w1()?, v, &self.ctx()?)?;
             self.logged("velocity plan", &plan.positions[k].label, v);
@@ -126,24 +174,25 @@ impl<'s> Session<'s> {
 
     /// The acceleration plan at position `k` (from its velocity plan) with its rows.
     pub fn acceleration(&self, sc: &KinScales, k: usize) -> Cached<Acceleration> {
-        self.acceleration.get((sc.l, sc.v, sc.a, k), || {
-            let plan = self.positions(sc.l)?;
-            let vel = self.velocity(sc.l, sc.v, k)?;
-            let vp = match vel.as_ref() {
-                Velocity::Built { plan: vp, .. } => vp,
-                Velocity::Refused(why) => {
-                    return Err(KinError::NoVelocityPlan {
-                        position: plan.positions[k].label.clone(),
-                        why: why.clone(),
+        self.caches
+            .get::<AccelerationPlans>((sc.l, sc.v, sc.a, k), || {
+                let plan = self.positions(sc.l)?;
+                let vel = self.velocity(sc.l, sc.v, k)?;
+                let vp = match vel.as_ref() {
+                    Velocity::Built { plan: vp, .. } => vp,
+                    Velocity::Refused(why) => {
+                        return Err(KinError::NoVelocityPlan {
+                            position: plan.positions[k].label.clone(),
+                            why: why.clone(),
+                        }
+                        .into())
                     }
-                    .into())
-                }
-            };
-            let w1 = self.w1()?;
-            let ap = plans::acceleration(&plan, k, sc.l.value(), w1, vp, sc.a, &self.ctx()?)?;
-            self.logged("acceleration plan", &plan.positions[k].label, sc.a);
-            Ok(Arc::new(ap))
-        })
+                };
+                let w1 = self.w1()?;
+                let ap = plans::acceleration(&plan, k, sc.l.value(), w1, vp, sc.a, &self.ctx()?)?;
+                self.logged("acceleration plan", &plan.positions[k].label, sc.a);
+                Ok(Arc::new(ap))
+            })
     }
 
     /// The positions whose acceleration plans the scene asks for (or the textbook's two:
@@ -164,7 +213,7 @@ impl<'s> Session<'s> {
 
     /// The displacement diagrams read off the plan at μ_l = `l`, at the chart's scales.
     pub fn diagrams(&self, l: Scale, chart: ChartScales) -> MaybeCached<Diagrams> {
-        self.diagrams.get((l, chart), || {
+        self.caches.get::<MotionDiagrams>((l, chart), || {
             let m = self.mechanism("the kinematic analysis")?;
             let plan = self.positions(l)?;
             let spec = KinematicsSpec {
@@ -188,7 +237,7 @@ impl<'s> Session<'s> {
 
     /// The rocker's ω diagram from the velocity plans at (μ_l, μ_v).
     pub fn rocker(&self, l: Scale, v: Scale) -> MaybeCached<RockerDiagram> {
-        self.rocker.get((l, v), || {
+        self.caches.get::<RockerDiagrams>((l, v), || {
             let m = self.mechanism("the kinematic analysis")?;
             let Some(link) = kinematics::rocker::rocker_link(&m.outputs) else {
                 return Ok(None);
@@ -204,7 +253,7 @@ impl<'s> Session<'s> {
 
     /// The hodograph of the scene's point from the velocity plans at (μ_l, μ_v).
     pub fn hodograph(&self, l: Scale, v: Scale) -> Result<Option<Hodograph>, StudyError> {
-        self.hodograph.get((l, v), || {
+        self.caches.get::<Hodographs>((l, v), || {
             let plan = self.positions(l)?;
             let Some(k) =
                 kinematics::hodograph::hodograph_point(&plan, self.spec().hodograph.as_deref())?
@@ -220,7 +269,7 @@ impl<'s> Session<'s> {
 
     /// The analytic table of the positions at μ_l = `l`.
     pub fn table(&self, l: Scale) -> Cached<Table> {
-        self.table.get(l, || {
+        self.caches.get::<AnalyticTables>(l, || {
             let plan = self.positions(l)?;
             Ok(Arc::new(kinematics::table::analytic_table(
                 &plan,
@@ -255,9 +304,9 @@ impl<'s> Session<'s> {
         })
     }
 
-    /// The report of the kinematic study at the scene's scales: every reading against its
-    /// analytic twin, the analytic table, the notes.
-    pub(super) fn kinematics_report(&self) -> Result<Report, StudyError> {
+    /// The kinematic study's part of the report, at the scene's scales: every reading against
+    /// its analytic twin, the analytic table, the notes.
+    fn report_kinematics(&self, rep: &mut Report) -> Result<(), StudyError> {
         let k = self.kinematics(&self.kin_scales()?)?;
         let mut notes: Vec<String> = k.refusals.iter().map(ToString::to_string).collect();
         // The diagrams and the rocker's diagram refused for one reason: one note.
@@ -277,24 +326,9 @@ impl<'s> Session<'s> {
             })
         }));
         notes.extend(crate::kinematics::near_pivot_notes(&k.plan, k.w1));
-        let mut rows = k.rows();
-        if self.scene.forces.is_some() {
-            for i in self.force_positions()? {
-                let f = self.forces(&k.scales, i)?;
-                rows.extend(f.rows.iter().cloned());
-                rows.extend(f.residual_rows());
-                notes.extend(crate::forces::notes(&f));
-            }
-            notes.extend(crate::forces::seed_notes(
-                &self.force_spec("the force analysis")?.seed,
-                &rows,
-            ));
-        }
-        Ok(Report {
-            scene: self.scene.stem.clone(),
-            rows,
-            tables: vec![k.table.as_ref().clone()],
-            notes,
-        })
+        rep.rows.extend(k.rows());
+        rep.tables.push(k.table.as_ref().clone());
+        rep.notes.extend(notes);
+        Ok(())
     }
 }

@@ -8,6 +8,9 @@
 //! [`Session::kin_scales`]): every sheet and the report ask for them, so the report reads the
 //! very constructions the plates draw.
 //!
+//! Each study lives in its own file: its caches (a `memo::Cache` marker each, kept in the
+//! session's `memo::Caches`) and its part of the report, registered once in `PARTS`.
+//!
 //! Every construction the session carries out is logged ([`Session::constructions`]), so
 //! a test can show that nothing is constructed twice.
 
@@ -40,7 +43,7 @@ use crate::linkage::{
 };
 use crate::scale::Scale;
 use crate::scene::{Scene, Start};
-use memo::Memo;
+use memo::{Cache, Caches};
 use std::sync::{Arc, Mutex};
 use thiserror::Error;
 
@@ -66,27 +69,44 @@ pub type Acceleration = (KinPlan, Vec<Row>);
 /// The hodograph: its point's name without markup (`S3`) and its figure.
 pub type Hodograph = (String, Arc<Figure>);
 
+/// The positions solved analytically.
+struct Poses;
+impl Cache for Poses {
+    type Key = ();
+    type Value = Cached<PlanPoses>;
+}
+
+/// The plan of positions by μ_l.
+struct Positions;
+impl Cache for Positions {
+    type Key = Scale;
+    type Value = Cached<PositionPlan>;
+}
+
+/// One study's part of the report: whether the scene has the study, and what it adds.
+struct Part {
+    has: fn(&Scene) -> bool,
+    add: fn(&Session<'_>, &mut Report) -> Result<(), StudyError>,
+}
+
+/// Every study's part of the report, in the report's order. A study registers here once; its
+/// caches and its part are declared in its own file.
+const PARTS: [Part; 7] = [
+    kinematics::PART,
+    forces::PART,
+    balancing::PART,
+    friction::PART,
+    dynamics::PART,
+    gears::PART,
+    cam::PART,
+];
+
 /// The session over one scene.
 pub struct Session<'s> {
     scene: &'s Scene,
     drafting: Drafting,
     ctx: Result<Context, StudyError>,
-    poses: Memo<(), Cached<PlanPoses>>,
-    scale_l: Memo<(), Result<Scale, StudyError>>,
-    kin_scales: Memo<(), Result<KinScales, StudyError>>,
-    positions: Memo<Scale, Cached<PositionPlan>>,
-    velocity: Memo<(Scale, Scale, usize), Cached<Velocity>>,
-    acceleration: Memo<(Scale, Scale, Scale, usize), Cached<Acceleration>>,
-    diagrams: Memo<(Scale, ChartScales), MaybeCached<Diagrams>>,
-    rocker: Memo<(Scale, Scale), MaybeCached<RockerDiagram>>,
-    hodograph: Memo<(Scale, Scale), Result<Option<Hodograph>, StudyError>>,
-    table: Memo<Scale, Cached<Table>>,
-    forces: Memo<(Scale, Scale, Scale, usize), Cached<PositionForces>>,
-    balancing: Memo<(), Cached<Balancing>>,
-    friction: Memo<(), Cached<Vec<Solved>>>,
-    dynamics: Memo<(), Cached<crate::dynamics::Dynamics>>,
-    gears: Memo<(), Cached<crate::gears::GearStudy>>,
-    cam: Memo<(), Cached<crate::cam::Cam>>,
+    caches: Caches,
     log: Mutex<Vec<Constructed>>,
 }
 
@@ -98,22 +118,7 @@ impl<'s> Session<'s> {
             drafting,
             ctx: Context::for_model_size(FIGURE_MM, drafting)
                 .map_err(|e| StudyError::Tolerances(e.to_string())),
-            poses: Memo::default(),
-            scale_l: Memo::default(),
-            kin_scales: Memo::default(),
-            positions: Memo::default(),
-            velocity: Memo::default(),
-            acceleration: Memo::default(),
-            diagrams: Memo::default(),
-            rocker: Memo::default(),
-            hodograph: Memo::default(),
-            table: Memo::default(),
-            forces: Memo::default(),
-            balancing: Memo::default(),
-            friction: Memo::default(),
-            dynamics: Memo::default(),
-            gears: Memo::default(),
-            cam: Memo::default(),
+            caches: Caches::default(),
             log: Mutex::new(Vec::new()),
         }
     }
@@ -168,7 +173,7 @@ impl<'s> Session<'s> {
 
     /// The positions solved analytically (nothing constructed): what sheets size by.
     pub fn poses(&self) -> Cached<PlanPoses> {
-        self.poses.get((), || {
+        self.caches.get::<Poses>((), || {
             let m = self.mechanism("the plan of positions")?;
             Ok(Arc::new(plan_poses(m, &self.plan_request())?))
         })
@@ -176,7 +181,7 @@ impl<'s> Session<'s> {
 
     /// The plan of positions constructed at μ_l = `scale_l`.
     pub fn positions(&self, scale_l: Scale) -> Cached<PositionPlan> {
-        self.positions.get(scale_l, || {
+        self.caches.get::<Positions>(scale_l, || {
             let m = self.mechanism("the plan of positions")?;
             let plan = plan_positions(m, &self.plan_request(), scale_l, self.drafting)?;
             for p in &plan.positions {
@@ -190,49 +195,21 @@ impl<'s> Session<'s> {
         self.ctx.clone()
     }
 
-    /// The report of every study of the scene: the kinematic study of its mechanism (with its
-    /// force analysis), the balancing of its rotor and its friction cases, each that the scene
-    /// has, rows and notes in that order. A scene with none is refused for want of a mechanism.
+    /// The report of every study of the scene (`PARTS`, each the scene has, rows and notes
+    /// in that order). A scene with none is refused for want of a mechanism.
     pub fn report(&self) -> Result<Report, StudyError> {
-        let mut rep = match self.scene.mechanism {
-            Some(_) => self.kinematics_report()?,
-            None if self.scene.balancing.is_none()
-                && self.scene.friction.is_empty()
-                && self.scene.gears.is_none()
-                && self.scene.cam.is_none() =>
-            {
-                return Err(StudyError::NoMechanism("the report"))
-            }
-            None => Report {
-                scene: self.scene.stem.clone(),
-                rows: Vec::new(),
-                tables: Vec::new(),
-                notes: Vec::new(),
-            },
+        let mut rep = Report {
+            scene: self.scene.stem.clone(),
+            rows: Vec::new(),
+            tables: Vec::new(),
+            notes: Vec::new(),
         };
-        if self.scene.balancing.is_some() {
-            let b = self.balancing()?;
-            rep.rows.extend(b.rows());
-            rep.notes.extend(b.notes());
+        let mut parts = PARTS.iter().filter(|p| (p.has)(self.scene)).peekable();
+        if parts.peek().is_none() {
+            return Err(StudyError::NoMechanism("the report"));
         }
-        for s in self.friction()?.iter() {
-            rep.rows.extend(s.rows());
-            rep.notes.extend(s.notes.iter().cloned());
-        }
-        if self.scene.dynamics.is_some() {
-            let d = self.dynamics()?;
-            rep.rows.extend(crate::dynamics::rows(&d));
-            rep.notes.extend(crate::dynamics::notes(&d));
-        }
-        if self.scene.gears.is_some() {
-            let g = self.gears()?;
-            rep.rows.extend(g.rows());
-            rep.notes.extend(g.notes());
-        }
-        if self.scene.cam.is_some() {
-            let c = self.cam()?;
-            rep.rows.extend(c.rows());
-            rep.notes.extend(c.notes());
+        for part in parts {
+            (part.add)(self, &mut rep)?;
         }
         Ok(rep)
     }

@@ -70,11 +70,25 @@ fn raised_to_fit(start: Scale, room: DVec2, size: impl Fn(Scale) -> DVec2) -> Sc
     fit_scale(start, |mu| overflow(size(mu), room)).unwrap_or(start)
 }
 
+/// μ_l of the plan of positions.
+struct ScaleL;
+impl Cache for ScaleL {
+    type Key = ();
+    type Value = Result<Scale, StudyError>;
+}
+
+/// The kinematic study's scales.
+struct Scales;
+impl Cache for Scales {
+    type Key = ();
+    type Value = Result<KinScales, StudyError>;
+}
+
 impl<'s> Session<'s> {
     /// μ_l of every drawing of the plan of positions, decided once: the scene's, else the
     /// crank drawn about `CRANK_MM` (50 mm) and raised until the plan fits `POSITIONS_ROOM`.
     pub fn scale_l(&self) -> Result<Scale, StudyError> {
-        self.scale_l.get((), || {
+        self.caches.get::<ScaleL>((), || {
             if let Some(s) = self.scene.scale_l {
                 return Ok(s);
             }
@@ -92,7 +106,7 @@ impl<'s> Session<'s> {
     /// plan fits `VECTOR_PLAN_ROOM`; the displacement chart's as the scene gives them (the
     /// rest chosen for the chart by the study).
     pub fn kin_scales(&self) -> Result<KinScales, StudyError> {
-        self.kin_scales.get((), || {
+        self.caches.get::<Scales>((), || {
             let m = self.mechanism("the kinematic analysis")?;
             let spec = self.spec();
             let (mut v, mut a) = kinematics::plan_scales(&m.crank, spec)?;

@@ -15,7 +15,7 @@
 //!   the correction of plane II — and then `Σ mᵢρᵢ + U_II + U_I = 0` — the polygon of static
 //!   moments with U_II closes to the correction of plane I (U = m_уρ_у of each plane).
 //!
-//! The construction ([`construct`]) lays the vectors through the recorder and reads the
+//! The construction (`construct`) lays the vectors through the recorder and reads the
 //! closing vectors off the drawing under the drafting model (the length with a ruler, the
 //! direction from its two projections); the analytic twin ([`analytic`]) sums the vectors in
 //! closed form; [`Balancing::rows`] compares them.
