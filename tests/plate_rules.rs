@@ -221,14 +221,21 @@ fn the_rules_catch_a_misplaced_view() {
     let l = layout(&p);
     assert!(l.views.iter().all(|v| v.drawn.is_some()));
     assert!(l.labels.len() > 100 && !l.texts.is_empty() && !l.tables.is_empty());
-    // Two velocity plans (views 3 and 4, after the plan of positions and the diagram stack)
-    // drawn at one place: their captions collide.
+    // Two velocity plans (views 3 and 4, after the plan of positions, the diagram stack and
+    // plan 1) drawn at one place: their captions collide and their ink lies on each other.
     let mut copy = p.views[3].clone();
     copy.origin = p.views[4].origin;
     p.views.push(copy);
     p.views[0].origin -= DVec2::new(100.0, 0.0);
     let l = layout(&p);
     assert!(!overlaps(&l).is_empty());
+    let last = p.views.len() - 1;
+    let on = views_on_views(&p);
+    assert!(
+        on.iter()
+            .any(|x| x.starts_with(&format!("view 4 / view {last}:"))),
+        "{on:?}"
+    );
     let out = outside(&l);
     assert!(out.iter().any(|x| x.starts_with("view 0 ")), "{out:?}");
 }
@@ -274,4 +281,44 @@ fn every_label_is_written_once() {
             assert_eq!(names[0], "p", "{}", x.text);
         }
     }
+}
+
+/// The side of the grid cells in which the ink of two views is compared, mm.
+const INK_CELL_MM: f64 = 1.0;
+
+/// Every pair of views of a sheet whose ink shares a cell of the grid, with the shared area.
+fn views_on_views(p: &Plate) -> Vec<String> {
+    let ink = tmm::plate::view_ink(p, INK_CELL_MM);
+    let mut out = Vec::new();
+    for (i, a) in ink.iter().enumerate() {
+        for (j, b) in ink.iter().enumerate().skip(i + 1) {
+            let shared = a.intersection(b).count();
+            if shared > 0 {
+                let mm2 = shared as f64 * INK_CELL_MM * INK_CELL_MM;
+                out.push(format!("view {i} / view {j}: {mm2:.0} mm²"));
+            }
+        }
+    }
+    out
+}
+
+/// The view rule: the ink of two views never lies on the ink of another (each plan, polygon
+/// and diagram is drawn apart, with its construction), on every sheet of every plate.
+#[test]
+fn no_view_is_drawn_over_another() {
+    let mut found = Vec::new();
+    for (scene, plate) in LISTED {
+        for p in sheets_of(scene, plate) {
+            found.extend(
+                views_on_views(&p)
+                    .into_iter()
+                    .map(|x| format!("{scene}/{}: {x}", p.name)),
+            );
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "views drawn over each other:\n  {}",
+        found.join("\n  ")
+    );
 }

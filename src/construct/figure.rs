@@ -141,14 +141,46 @@ impl Figure {
     /// drawn the other way round (a cam turning clockwise). Arcs keep their ends, guides
     /// their hatched side and dimensions their side of the measured piece.
     pub fn mirrored_x(&self) -> Figure {
-        let m = |p: DVec2| DVec2::new(-p.x, p.y);
+        self.moved(|p| DVec2::new(-p.x, p.y), true)
+    }
+
+    /// The figure moved by `offset`, mm: every item, label and anchor.
+    pub fn translated(&self, offset: DVec2) -> Figure {
+        self.moved(|p| p + offset, false)
+    }
+
+    /// This figure with `other`'s steps drawn after its own (their ids renumbered after
+    /// this figure's): two constructions drawn on one drawing, such as the chords of the
+    /// second differentiation drawn on the first derivative's curve. The title and μ are this
+    /// figure's.
+    pub fn joined(mut self, other: Figure) -> Figure {
+        let n = u32::try_from(self.steps.len()).unwrap_or(u32::MAX);
+        let shift = |id: StepId| StepId(id.0.saturating_add(n));
+        self.steps.extend(other.steps.into_iter().map(|st| Step {
+            id: shift(st.id),
+            from: st.from.iter().copied().map(shift).collect(),
+            ..st
+        }));
+        self
+    }
+
+    /// Every point through `m`, an isometry; `mirror` when it turns left into right (arcs
+    /// run the other way, guides hatch the other side, label directions flip with it).
+    fn moved(&self, m: impl Fn(DVec2) -> DVec2, mirror: bool) -> Figure {
         let seg = |s: &Segment| Segment::new(m(s.from), m(s.to));
-        let arc = |a: &Arc| Arc {
-            center: m(a.center),
-            radius: a.radius,
-            start: std::f64::consts::PI - a.start,
-            sweep: -a.sweep,
+        let arc = |a: &Arc| match mirror {
+            true => Arc {
+                center: m(a.center),
+                radius: a.radius,
+                start: std::f64::consts::PI - a.start,
+                sweep: -a.sweep,
+            },
+            false => Arc {
+                center: m(a.center),
+                ..*a
+            },
         };
+        let turn = |v: DVec2| if mirror { DVec2::new(-v.x, v.y) } else { v };
         let steps = self
             .steps
             .iter()
@@ -179,20 +211,25 @@ impl Figure {
                     },
                     Item::Slider { at, angle } => Item::Slider {
                         at: m(*at),
-                        angle: std::f64::consts::PI - angle,
+                        angle: if mirror {
+                            std::f64::consts::PI - angle
+                        } else {
+                            *angle
+                        },
                     },
                     // A mirror turns left into right.
                     Item::Guide { segment, hatch } => Item::Guide {
                         segment: seg(segment),
-                        hatch: match hatch {
-                            Side::Left => Side::Right,
-                            Side::Right => Side::Left,
+                        hatch: match (hatch, mirror) {
+                            (Side::Left, true) => Side::Right,
+                            (Side::Right, true) => Side::Left,
+                            (h, false) => *h,
                         },
                     },
                     Item::Dimension { from, to, offset } => Item::Dimension {
                         from: m(*from),
                         to: m(*to),
-                        offset: -offset,
+                        offset: if mirror { -offset } else { *offset },
                     },
                     Item::Angle(a) => Item::Angle(arc(a)),
                     Item::Text(p) => Item::Text(m(*p)),
@@ -200,7 +237,7 @@ impl Figure {
                 let label = st.label.as_ref().map(|l| Label {
                     text: l.text.clone(),
                     anchor: m(l.anchor),
-                    toward: m(l.toward),
+                    toward: turn(l.toward),
                 });
                 Step {
                     item,
@@ -338,5 +375,25 @@ mod tests {
         };
         assert!((b.start - arc.start).abs() < 1e-15 && b.sweep == arc.sweep);
         assert!((angle - 0.2).abs() < 1e-15);
+        // Moved and joined: the second copy's ids follow the first's, its `from` with them,
+        // and everything of it (labels too) lies `d` away.
+        let d = DVec2::new(10.0, -5.0);
+        let mut moved = f.translated(d);
+        moved.steps[2].from = vec![StepId(0)];
+        let j = f.clone().joined(moved);
+        assert_eq!(j.steps.len(), 6);
+        assert_eq!(j.steps[5].id, StepId(5));
+        assert_eq!(j.steps[5].from, vec![StepId(3)]);
+        assert_eq!(
+            j.steps[4].item,
+            Item::Guide {
+                segment: Segment::new(d, DVec2::X + d),
+                hatch: Side::Left,
+            }
+        );
+        let l = j.steps[3].label.as_ref().unwrap();
+        assert_eq!((l.anchor, l.toward), (DVec2::new(11.0, -3.0), DVec2::new(0.6, 0.8)));
+        let (jlo, jhi) = j.bounds().unwrap();
+        assert_eq!((jlo, jhi), (lo.min(lo + d), hi.max(hi + d)));
     }
 }

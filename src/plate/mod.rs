@@ -28,6 +28,7 @@
 
 pub mod chart;
 mod fonts;
+mod ink;
 mod items;
 mod labels;
 mod metrics;
@@ -47,6 +48,7 @@ use crate::scale::Lang;
 use thiserror::Error;
 
 pub use fonts::font_database;
+pub use ink::{view_ink, Cell};
 pub use items::CAPTION_HEIGHT_MM;
 pub use labels::{layout, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR};
 pub use pdf::{to_pdf, PdfError};

@@ -48,18 +48,21 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     if let Some(d) = &a.diagrams {
         let w = a.w1.abs();
         let dec = |x: f64| format_sig(x, 4, lang);
-        blocks.push(Block::Views {
-            parts: vec![
-                (d.first_figure.clone(), DVec2::ZERO),
-                (d.second_figure.clone(), d.second_at),
-            ],
-            caption: Some(format!(
+        // The second differentiation's chords are drawn on the first derivative's curve: one
+        // drawing, one view.
+        let stack = d
+            .first_figure
+            .clone()
+            .joined(d.second_figure.translated(d.second_at));
+        blocks.push(Block::view(
+            stack,
+            format!(
                 "d²S/dφ²: H_{{2}} = {} {}",
                 dec(d.second.pole_mm),
                 Text::Millimetre.get(lang)
-            )),
-            scale: keyed(Key::KinematicsScaleS, d.scales.y),
-        });
+            ),
+            keyed(Key::KinematicsScaleS, d.scales.y),
+        ));
         lines.push(format!(
             "{} {}: μ_{{S}} = {} {}, μ_{{φ}} = {} {}, H_{{1}} = {} {}; μ_{{v}} = μ_{{S}}·ω_{{1}}/(H_{{1}}·μ_{{φ}}) = {} {}, μ_{{a}} = {} {}",
             Text::DiagramsOfPoint.get(lang),

@@ -33,11 +33,10 @@ pub(super) fn keyed(key: Key, scale: Scale) -> Option<ScaleKey> {
 /// One thing on a sheet.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) enum Block {
-    /// Figures drawn together (a view, or a stack such as S, dS/dφ, d²S/dφ² whose parts lie at
-    /// offsets in the first one's coordinates), with one caption under them all.
-    Views {
-        /// (figure, offset of its origin in the first figure's coordinates, mm).
-        parts: Vec<(Figure, DVec2)>,
+    /// A figure with its caption under it.
+    View {
+        /// The figure.
+        figure: Figure,
         /// The caption.
         caption: Option<String>,
         /// What sets its size.
@@ -57,8 +56,8 @@ pub(super) enum Block {
 impl Block {
     /// One figure with a caption.
     pub fn view(figure: Figure, caption: String, scale: Option<ScaleKey>) -> Self {
-        Block::Views {
-            parts: vec![(figure, DVec2::ZERO)],
+        Block::View {
+            figure,
             caption: Some(caption),
             scale,
         }
@@ -73,23 +72,20 @@ impl Block {
         }
         let l = |s: &str| symbols::localise(s, lang);
         match self {
-            Block::Views {
-                parts,
+            Block::View {
+                mut figure,
                 caption,
                 scale,
-            } => Block::Views {
-                parts: parts
-                    .into_iter()
-                    .map(|(mut figure, off)| {
-                        for label in figure.steps.iter_mut().filter_map(|s| s.label.as_mut()) {
-                            label.text = l(&label.text);
-                        }
-                        (figure, off)
-                    })
-                    .collect(),
-                caption: caption.as_deref().map(l),
-                scale,
-            },
+            } => {
+                for label in figure.steps.iter_mut().filter_map(|s| s.label.as_mut()) {
+                    label.text = l(&label.text);
+                }
+                Block::View {
+                    figure,
+                    caption: caption.as_deref().map(l),
+                    scale,
+                }
+            }
             Block::Text { lines, size_mm } => Block::Text {
                 lines: lines.iter().map(|x| l(x)).collect(),
                 size_mm,
@@ -107,23 +103,16 @@ impl Block {
         }
     }
 
-    /// Bounds of the figures, in the first one's coordinates (y up).
-    fn bounds(parts: &[(Figure, DVec2)]) -> (DVec2, DVec2) {
-        parts
-            .iter()
-            .filter_map(|(f, off)| f.bounds().map(|(lo, hi)| (lo + *off, hi + *off)))
-            .fold(
-                (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-                |(lo, hi), (a, b)| (lo.min(a), hi.max(b)),
-            )
-    }
-
     /// The size the block takes on the sheet, mm: its drawing with room for labels and the
     /// caption band.
     fn size(&self) -> DVec2 {
         match self {
-            Block::Views { parts, caption, .. } => {
-                let (lo, hi) = Self::bounds(parts);
+            Block::View {
+                figure, caption, ..
+            } => {
+                let (lo, hi) = figure
+                    .bounds()
+                    .unwrap_or((DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)));
                 let band = if caption.is_some() {
                     CAPTION_BAND_MM
                 } else {
@@ -321,13 +310,11 @@ struct Parts {
 /// Put `block` into `rect`.
 fn put(block: Block, rect: Rect, parts: &mut Parts) {
     match block {
-        Block::Views {
-            parts: figures,
-            caption,
-            ..
+        Block::View {
+            figure, caption, ..
         } => {
-            let (lo, hi) = Block::bounds(&figures);
-            // The whole group's bounds go to the rectangle's centre, over the caption band.
+            let (lo, hi) = figure.bounds().unwrap_or((DVec2::ZERO, DVec2::ZERO));
+            // The figure's bounds go to the rectangle's centre, over the caption band.
             let band = if caption.is_some() {
                 CAPTION_BAND_MM
             } else {
@@ -335,16 +322,11 @@ fn put(block: Block, rect: Rect, parts: &mut Parts) {
             };
             let c = rect.center() - DVec2::new(0.0, band * 0.5);
             let mid = (lo + hi) * 0.5;
-            let origin = DVec2::new(c.x - mid.x, c.y + mid.y);
-            // The caption goes under the last part, the bottom of a stack.
-            let last = figures.len().saturating_sub(1);
-            for (k, (figure, off)) in figures.into_iter().enumerate() {
-                parts.views.push(View {
-                    figure,
-                    origin: origin + DVec2::new(off.x, -off.y),
-                    caption: if k == last { caption.clone() } else { None },
-                });
-            }
+            parts.views.push(View {
+                figure,
+                origin: DVec2::new(c.x - mid.x, c.y + mid.y),
+                caption,
+            });
         }
         Block::Text { lines, size_mm } => parts.texts.push(TextBlock {
             at: rect.min,
@@ -424,13 +406,11 @@ pub(super) fn lay_out(
 /// one that overflows most decides it.
 fn too_large(sheet: &Sheet, blocks: &[Block], sizes: &[DVec2], k: usize) -> BuildError {
     let scale_of = |b: &Block| match b {
-        Block::Views { scale, .. } => scale.clone(),
+        Block::View { scale, .. } => scale.clone(),
         Block::Text { .. } | Block::Table(_) => None,
     };
     let what = match &blocks[k] {
-        Block::Views { parts, .. } => parts
-            .first()
-            .map_or_else(String::new, |p| p.0.title.clone()),
+        Block::View { figure, .. } => figure.title.clone(),
         Block::Text { .. } => "text".into(),
         Block::Table(t) => t.title.clone(),
     };

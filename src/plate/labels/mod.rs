@@ -135,7 +135,7 @@ pub fn layout(plate: &Plate) -> Layout {
 }
 
 /// The outlines of everything a view draws, sheet mm.
-fn view_outlines(view: &View) -> Vec<Outline> {
+pub(super) fn view_outlines(view: &View) -> Vec<Outline> {
     let map = Map::figure(view.origin);
     view.figure
         .steps
