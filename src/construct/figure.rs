@@ -392,7 +392,10 @@ mod tests {
             }
         );
         let l = j.steps[3].label.as_ref().unwrap();
-        assert_eq!((l.anchor, l.toward), (DVec2::new(11.0, -3.0), DVec2::new(0.6, 0.8)));
+        assert_eq!(
+            (l.anchor, l.toward),
+            (DVec2::new(11.0, -3.0), DVec2::new(0.6, 0.8))
+        );
         let (jlo, jhi) = j.bounds().unwrap();
         assert_eq!((jlo, jhi), (lo.min(lo + d), hi.max(hi + d)));
     }

@@ -1,7 +1,7 @@
 //! The writers of a [`Report`](crate::check::Report): JSON, CSV and Markdown.
 
 use crate::check::{Column, Method, Report, Summary, SummaryEntry, Table};
-use crate::scale::{format_sig, Lang};
+use crate::scale::{format_sig, residue_to_zero, Lang};
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -215,7 +215,7 @@ impl Report {
                         md_value(r.graphical, VALUE_DIGITS, lang),
                         md_value(r.analytic, VALUE_DIGITS, lang),
                         md_value(r.abs_error(), ERROR_DIGITS, lang),
-                        md_number(d.map(|d| d * 100.0), ERROR_DIGITS, lang),
+                        d.map(|d| md_percent(d, lang)).unwrap_or_default(),
                         md_number(r.conditioning, ERROR_DIGITS, lang),
                     ],
                 );
@@ -296,6 +296,12 @@ fn md_value(x: f64, sig: usize, lang: Lang) -> String {
     }
 }
 
+/// A relative error in %, to [`ERROR_DIGITS`] significant digits; a rounding residue (at most
+/// 1e-9 of the value, [`residue_to_zero`]) is 0 — the construction at drafting 0 is exact.
+fn md_percent(rel: f64, lang: Lang) -> String {
+    format_sig(residue_to_zero(rel, 1.0) * 100.0, ERROR_DIGITS, lang)
+}
+
 fn md_number(x: Option<f64>, sig: usize, lang: Lang) -> String {
     x.map(|x| format_sig(x, sig, lang)).unwrap_or_default()
 }
@@ -324,8 +330,8 @@ fn summary_markdown(out: &mut String, s: &Summary, lang: Lang) {
                 md_cell(&e.quantity),
                 e.method.name(lang).to_string(),
                 e.count.to_string(),
-                format_sig(e.mean_abs_rel * 100.0, ERROR_DIGITS, lang),
-                format_sig(e.max_abs_rel * 100.0, ERROR_DIGITS, lang),
+                md_percent(e.mean_abs_rel, lang),
+                md_percent(e.max_abs_rel, lang),
                 md_cell(e.worst_position.as_deref().unwrap_or("")),
             ],
         );
@@ -335,13 +341,7 @@ fn summary_markdown(out: &mut String, s: &Summary, lang: Lang) {
         let means: Vec<String> = s
             .mean_by_method
             .iter()
-            .map(|&(m, mean)| {
-                format!(
-                    "{} {} %",
-                    m.name(lang),
-                    format_sig(mean * 100.0, ERROR_DIGITS, lang)
-                )
-            })
+            .map(|&(m, mean)| format!("{} {} %", m.name(lang), md_percent(mean, lang)))
             .collect();
         let _ = writeln!(
             out,

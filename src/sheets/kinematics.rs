@@ -184,12 +184,10 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
     let col_w = ((avail - pos_w) / t.columns.len().max(1) as f64).clamp(12.0, 22.0);
     let shown = (((avail - pos_w) / col_w) as usize).min(t.columns.len());
     let mut columns = vec![("№".to_string(), pos_w)];
-    columns.extend(
-        t.columns
-            .iter()
-            .take(shown)
-            .map(|c| (format!("{}, {}", c.name, unit_in(&c.unit, lang)), col_w)),
-    );
+    columns.extend(t.columns.iter().take(shown).map(|c| {
+        let name = symbols::subscripted(&c.name);
+        (format!("{name}, {}", unit_in(&c.unit, lang)), col_w)
+    }));
     // Each column's scale: its largest magnitude over the positions.
     let scales: Vec<f64> = (0..shown)
         .map(|c| {

@@ -39,7 +39,7 @@ catalogue! {
         NoDiagramsLeap => ("Диаграммы по углу поворота не строятся: звено поворачивается скачком около положения", "Діаграми за кутом повороту не будуються: ланка повертається стрибком біля положення", "No diagrams over the crank turn: a link turns by a leap near"),
         Continued => ("(продолжение)", "(продовження)", "(continued)"),
         ReadTo => ("Длины считаны с чертежа с точностью", "Довжини зчитано з креслення з точністю", "Lengths read off the drawing to"),
-        ReadExactly => ("Длины считаны с чертежа точно (без округления)", "Довжини зчитано з креслення точно (без округлення)", "Lengths read off the drawing exactly (no rounding)"),
+        ReadExactly => ("Построения точные (чертёж без погрешности отсчёта): погрешность планов — только округление, диаграмм — метод хорд", "Побудови точні (креслення без похибки відліку): похибка планів — лише округлення, діаграм — метод хорд", "Exact constructions (no reading error): the plans err by rounding only, the diagrams by the chord method"),
         MeanError => ("δ ср., %", "δ сер., %", "δ mean, %"),
         MaxError => ("δ max, %", "δ max, %", "δ max, %"),
         ForceAnalysis => ("Силовой анализ", "Силовий аналіз", "Force analysis"),

@@ -96,6 +96,17 @@ pub(in crate::sheets) fn quantity(symbol: Symbol, subject: &str, lang: Lang) -> 
 }
 
 /// The Russian textbooks' spelling of a quantity.
+/// A plain column name (`V_B3B1`, `φ_1`) as label markup: everything after the first `_` is
+/// the subscript (`V_{B3B1}`); a name in markup already or without a subscript is kept.
+pub(in crate::sheets) fn subscripted(name: &str) -> String {
+    match name.split_once('_') {
+        Some((base, sub)) if !sub.is_empty() && !sub.starts_with('{') => {
+            format!("{base}_{{{sub}}}")
+        }
+        _ => name.to_string(),
+    }
+}
+
 fn russian(symbol: Symbol, subject: &str) -> String {
     // A value of the analysis with friction in the pairs: R_{1-2}^{тр}.
     if let Some(base) = subject.strip_suffix("_f") {
@@ -182,7 +193,7 @@ fn letter(symbol: Symbol) -> &'static str {
 
 #[cfg(test)]
 mod tests {
-    use super::{localise, quantity};
+    use super::{localise, quantity, subscripted};
     use crate::check::Symbol;
     use crate::scale::Lang;
 
@@ -210,6 +221,14 @@ mod tests {
         assert_eq!(en(Symbol::Moment, "bal"), "M_{b}");
         assert_eq!(en(Symbol::Inertia, "red"), "J_{red}");
         assert_eq!(en(Symbol::Reaction, "1_2_f"), "R_{1-2}^{f}");
+    }
+
+    #[test]
+    fn a_column_name_takes_its_whole_subscript() {
+        assert_eq!(subscripted("V_B3B1"), "V_{B3B1}");
+        assert_eq!(subscripted("φ_1"), "φ_{1}");
+        assert_eq!(subscripted("V_{S3}"), "V_{S3}");
+        assert_eq!(subscripted("№"), "№");
     }
 
     #[test]
