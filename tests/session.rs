@@ -3,6 +3,7 @@
 
 use std::path::PathBuf;
 use tmm::construct::Drafting;
+use tmm::linkage::PlanKind;
 use tmm::scale::Lang;
 use tmm::scene::{self, PlateKind};
 use tmm::sheets;
@@ -152,8 +153,44 @@ fn tangent_report_at_drafting_reads_the_plans_its_plates_draw() {
         positions.iter().all(|&l| l == sc.l.value()),
         "{positions:?}"
     );
-    assert!(at("velocity plan").iter().all(|&v| v == sc.v.value()));
-    assert!(at("acceleration plan").iter().all(|&a| a == sc.a.value()));
+    // Each plan at its μ: the common one, or its own where it is far larger than the rest
+    // (near φ = 90°, 270°); every one of them drawn large enough to read.
+    let plan = session.positions(sc.l).expect("positions");
+    let mut own = 0;
+    for (k, p) in plan.positions.iter().enumerate() {
+        let mu = session.plan_scale(PlanKind::Velocity, k).expect("μ_v");
+        let logged: Vec<f64> = drawn
+            .iter()
+            .filter(|c| c.what == "velocity plan" && c.position == p.label)
+            .map(|c| c.scale.value())
+            .collect();
+        assert_eq!(logged, vec![mu.value()], "position {}", p.label);
+        own += usize::from(mu != sc.v);
+        let vel = session.velocity(&sc, k).expect("plan");
+        let (lo, hi) = vel.plan().expect("built").figure.bounds().expect("drawn");
+        assert!(
+            (hi - lo).max_element() >= 30.0,
+            "position {}: {:?}",
+            p.label,
+            hi - lo
+        );
+    }
+    assert!(
+        (1..plan.positions.len() / 2).contains(&own),
+        "{own} plans at their own μ_v"
+    );
+    assert!(
+        sc.v.value() < 0.4,
+        "the common μ_v {} is set by the typical plans",
+        sc.v.value()
+    );
+    for k in session.acceleration_positions().expect("positions") {
+        let mu = session.plan_scale(PlanKind::Acceleration, k).expect("μ_a");
+        let label = &plan.positions[k].label;
+        assert!(drawn
+            .iter()
+            .any(|c| c.what == "acceleration plan" && &c.position == label && c.scale == mu));
+    }
     // The plan fitted to its field: coarser than the crank drawn 50 mm (0.002).
     assert_eq!(sc.l.value(), 0.004);
     // The report constructs nothing new: it reads the very plans the plates draw.

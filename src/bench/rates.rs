@@ -162,7 +162,7 @@ pub(super) fn force_rates(s: &Subject, reps: Reps) -> Result<(f64, f64), BenchEr
         .first()
         .ok_or_else(|| s.fail("no position to analyse"))?;
     let plan = session.positions(sc.l).map_err(study)?;
-    let vel = session.velocity(sc.l, sc.v, k).map_err(study)?;
+    let vel = session.velocity(&sc, k).map_err(study)?;
     let vp = vel.plan().ok_or_else(|| s.fail("no velocity plan"))?;
     let ap = session.acceleration(&sc, k).map_err(study)?;
     let ctx = Context::for_model_size(CONSTRUCTION_EXTENT_MM, Drafting::EXACT)?;

@@ -88,7 +88,7 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
             f.analysis.twin.m_bal
         );
         // The same loads as the plans read them, against Zhukovsky's lever.
-        let vel = session.velocity(sc.l, sc.v, k).expect("plan");
+        let vel = session.velocity(&sc, k).expect("plan");
         let vp = vel.plan().expect("built");
         let drawn = Reducer::plan_motion(vp, &pos.built.p, sc.l.value(), &ctx());
         let mg = reduce_loads(&f.analysis.loads, &drawn, w1.abs());

@@ -35,8 +35,9 @@ pub fn hodograph_point(
     })
 }
 
-/// The hodograph of point `k` from the velocity plans (at μ_v = `scale_v`; `None` where a
-/// plan is refused), at its own μ: the longest vector drawn about 45 mm.
+/// The hodograph of point `k` from the velocity plans (each at its own μ_v, the common one
+/// `scale_v`; `None` where a plan is refused), at its own μ: the longest vector drawn about
+/// 45 mm.
 pub fn hodograph(
     plan: &PositionPlan,
     k: usize,
@@ -48,12 +49,10 @@ pub fn hodograph(
     let longest = velocity
         .iter()
         .flatten()
-        .map(|vp| vp.images[k].length())
-        .fold(0.0, f64::max)
-        * scale_v.value();
+        .map(|vp| vp.images[k].length() * vp.figure.scale.value())
+        .fold(0.0, f64::max);
     let scale =
         Scale::round_for(longest.max(1e-12), HODOGRAPH_MM, Quantity::Velocity).unwrap_or(scale_v);
-    let copy = scale_v.value() / scale.value();
     let mut rec = Recorder::in_context("hodograph", scale, ctx);
     rec.pole("p");
     let mut ends = Vec::new();
@@ -64,7 +63,7 @@ pub fn hodograph(
         .filter_map(|(p, v)| v.map(|v| (p, v)))
     {
         // The vector copied from the velocity plan, redrawn at the hodograph's μ.
-        let end = vp.images[k] * copy;
+        let end = vp.images[k] * (vp.figure.scale.value() / scale.value());
         let id = rec.draw(
             format!("v of {name}, position {}", pos.label),
             Item::Vector {

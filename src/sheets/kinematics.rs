@@ -9,8 +9,9 @@ use super::layout::{keyed, lay_out, split_table, table, Block};
 use super::BuildError;
 use crate::check::Method;
 use crate::geom::DVec2;
+use crate::linkage::KinPlan;
 use crate::plate::{Plate, Sheet, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang, Quantity};
+use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::scene::Key;
 use crate::study::{Kinematics, Session};
 
@@ -82,7 +83,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     for (pos, vp) in a.plan.positions.iter().zip(a.velocity_plans()) {
         let c = format!("{} {}", Text::Pos.get(lang), pos.label);
         blocks.push(match vp {
-            Some(vp) => Block::view(vp.figure.clone(), c, keyed(Key::KinematicsScaleV, sc.v)),
+            Some(vp) => plan_view(vp, c, Key::KinematicsScaleV, sc.v, lang),
             None => Block::Text {
                 lines: vec![
                     c,
@@ -96,11 +97,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     for (k, ap) in &a.acceleration {
         let label = &a.plan.positions[*k].label;
         let c = format!("{} {label}", Text::AccelerationPlanAt.get(lang));
-        blocks.push(Block::view(
-            ap.0.figure.clone(),
-            c,
-            keyed(Key::KinematicsScaleA, sc.a),
-        ));
+        blocks.push(plan_view(&ap.0, c, Key::KinematicsScaleA, sc.a, lang));
     }
     if let Some(r) = &a.rocker {
         let c = format!("ω_{{{l}}}(φ), dω_{{{l}}}/dφ", l = r.link);
@@ -153,6 +150,18 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     );
     let title = super::title_block(scene, Text::KinematicAnalysis.get(lang), sc.l, lang);
     lay_out(sheet, blocks, "kinematics", &title, lang)
+}
+
+/// A velocity or acceleration plan's view: at the common μ (`common`, the scene key `key`),
+/// or at its own, stated in its caption.
+fn plan_view(plan: &KinPlan, caption: String, key: Key, common: Scale, lang: Lang) -> Block {
+    let own = plan.figure.scale;
+    if own == common {
+        Block::view(plan.figure.clone(), caption, keyed(key, common))
+    } else {
+        let caption = format!("{caption}, {}", own.caption(lang));
+        Block::view(plan.figure.clone(), caption, None)
+    }
 }
 
 /// A quantity of the error table in the textbook's notation (`ω_{1}`, `V_{B3B1}`), from the

@@ -34,7 +34,7 @@ impl<'s> Session<'s> {
             let count = spec.count.unwrap_or(self.scene.positions.count);
             let d = if count == self.scene.positions.count {
                 let plan = self.positions(sc.l)?;
-                let vel = self.velocities(sc.l, sc.v)?;
+                let vel = self.velocities(&sc)?;
                 let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
                 crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)?
             } else {

@@ -49,7 +49,7 @@ impl<'s> Session<'s> {
         self.caches.get::<Polygons>((sc.l, sc.v, sc.a, k), || {
             let spec = self.force_spec("the force analysis")?;
             let plan = self.positions(sc.l)?;
-            let vel = self.velocity(sc.l, sc.v, k)?;
+            let vel = self.velocity(sc, k)?;
             let position = plan.positions[k].label.clone();
             let vp = match vel.as_ref() {
                 Velocity::Built { plan: vp, .. } => vp,

@@ -156,8 +156,10 @@ impl<'s> Session<'s> {
         ))
     }
 
-    /// The velocity plan at position `k` of the plan at μ_l = `l`, at μ_v = `v`.
-    pub fn velocity(&self, l: Scale, v: Scale, k: usize) -> Cached<Velocity> {
+    /// The velocity plan at position `k` of the plan at μ_l = `sc.l`, at its μ_v
+    /// ([`Session::plan_scale`]: the common `sc.v`, or its own for a plan far larger).
+    pub fn velocity(&self, sc: &KinScales, k: usize) -> Cached<Velocity> {
+        let (l, v) = (sc.l, self.plan_scale(PlanKind::Velocity, k)?);
         self.caches.get::<VelocityPlans>((l, v, k), || {
             let plan = self.positions(l)?;
             let vel = plans::velocity(&plan, k, l.value(), self.w1()?, v, &self.ctx()?)?;
@@ -167,32 +169,34 @@ impl<'s> Session<'s> {
     }
 
     /// The velocity plans of every position.
-    pub fn velocities(&self, l: Scale, v: Scale) -> Result<Vec<Arc<Velocity>>, StudyError> {
-        let n = self.positions(l)?.positions.len();
-        (0..n).map(|k| self.velocity(l, v, k)).collect()
+    pub fn velocities(&self, sc: &KinScales) -> Result<Vec<Arc<Velocity>>, StudyError> {
+        let n = self.positions(sc.l)?.positions.len();
+        (0..n).map(|k| self.velocity(sc, k)).collect()
     }
 
-    /// The acceleration plan at position `k` (from its velocity plan) with its rows.
+    /// The acceleration plan at position `k` (from its velocity plan) with its rows, at its
+    /// μ_a ([`Session::plan_scale`]).
     pub fn acceleration(&self, sc: &KinScales, k: usize) -> Cached<Acceleration> {
-        self.caches
-            .get::<AccelerationPlans>((sc.l, sc.v, sc.a, k), || {
-                let plan = self.positions(sc.l)?;
-                let vel = self.velocity(sc.l, sc.v, k)?;
-                let vp = match vel.as_ref() {
-                    Velocity::Built { plan: vp, .. } => vp,
-                    Velocity::Refused(why) => {
-                        return Err(KinError::NoVelocityPlan {
-                            position: plan.positions[k].label.clone(),
-                            why: why.clone(),
-                        }
-                        .into())
+        let v = self.plan_scale(PlanKind::Velocity, k)?;
+        let a = self.plan_scale(PlanKind::Acceleration, k)?;
+        self.caches.get::<AccelerationPlans>((sc.l, v, a, k), || {
+            let plan = self.positions(sc.l)?;
+            let vel = self.velocity(sc, k)?;
+            let vp = match vel.as_ref() {
+                Velocity::Built { plan: vp, .. } => vp,
+                Velocity::Refused(why) => {
+                    return Err(KinError::NoVelocityPlan {
+                        position: plan.positions[k].label.clone(),
+                        why: why.clone(),
                     }
-                };
-                let w1 = self.w1()?;
-                let ap = plans::acceleration(&plan, k, sc.l.value(), w1, vp, sc.a, &self.ctx()?)?;
-                self.logged("acceleration plan", &plan.positions[k].label, sc.a);
-                Ok(Arc::new(ap))
-            })
+                    .into())
+                }
+            };
+            let w1 = self.w1()?;
+            let ap = plans::acceleration(&plan, k, sc.l.value(), w1, vp, a, &self.ctx()?)?;
+            self.logged("acceleration plan", &plan.positions[k].label, a);
+            Ok(Arc::new(ap))
+        })
     }
 
     /// The positions whose acceleration plans the scene asks for (or the textbook's two:
@@ -235,15 +239,15 @@ impl<'s> Session<'s> {
         })
     }
 
-    /// The rocker's ω diagram from the velocity plans at (μ_l, μ_v).
-    pub fn rocker(&self, l: Scale, v: Scale) -> MaybeCached<RockerDiagram> {
-        self.caches.get::<RockerDiagrams>((l, v), || {
+    /// The rocker's ω diagram from the velocity plans at `sc`.
+    pub fn rocker(&self, sc: &KinScales) -> MaybeCached<RockerDiagram> {
+        self.caches.get::<RockerDiagrams>((sc.l, sc.v), || {
             let m = self.mechanism("the kinematic analysis")?;
             let Some(link) = kinematics::rocker::rocker_link(&m.outputs) else {
                 return Ok(None);
             };
-            let plan = self.positions(l)?;
-            let vel = self.velocities(l, v)?;
+            let plan = self.positions(sc.l)?;
+            let vel = self.velocities(sc)?;
             let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
             let r =
                 kinematics::rocker::rocker_diagram(&plan, link, &plans, self.w1()?, &self.ctx()?)?;
@@ -251,18 +255,18 @@ impl<'s> Session<'s> {
         })
     }
 
-    /// The hodograph of the scene's point from the velocity plans at (μ_l, μ_v).
-    pub fn hodograph(&self, l: Scale, v: Scale) -> Result<Option<Hodograph>, StudyError> {
-        self.caches.get::<Hodographs>((l, v), || {
-            let plan = self.positions(l)?;
+    /// The hodograph of the scene's point from the velocity plans at `sc`.
+    pub fn hodograph(&self, sc: &KinScales) -> Result<Option<Hodograph>, StudyError> {
+        self.caches.get::<Hodographs>((sc.l, sc.v), || {
+            let plan = self.positions(sc.l)?;
             let Some(k) =
                 kinematics::hodograph::hodograph_point(&plan, self.spec().hodograph.as_deref())?
             else {
                 return Ok(None);
             };
-            let vel = self.velocities(l, v)?;
+            let vel = self.velocities(sc)?;
             let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
-            let fig = kinematics::hodograph::hodograph(&plan, k, &plans, v, &self.ctx()?);
+            let fig = kinematics::hodograph::hodograph(&plan, k, &plans, sc.v, &self.ctx()?);
             Ok(Some((plain(plan.point_name(k)), Arc::new(fig))))
         })
     }
@@ -281,7 +285,7 @@ impl<'s> Session<'s> {
     /// The whole kinematic study at `sc`: every part the sheet and the report show.
     pub fn kinematics(&self, sc: &KinScales) -> Result<Kinematics, StudyError> {
         let plan = self.positions(sc.l)?;
-        let velocity = self.velocities(sc.l, sc.v)?;
+        let velocity = self.velocities(sc)?;
         let acceleration = self
             .acceleration_positions()?
             .into_iter()
@@ -289,14 +293,14 @@ impl<'s> Session<'s> {
             .collect::<Result<_, StudyError>>()?;
         let mut refusals = Vec::new();
         let diagrams = refusable(self.diagrams(sc.l, sc.chart), &mut refusals)?;
-        let rocker = refusable(self.rocker(sc.l, sc.v), &mut refusals)?;
+        let rocker = refusable(self.rocker(sc), &mut refusals)?;
         Ok(Kinematics {
             scales: *sc,
             w1: self.w1()?,
             diagrams,
             rocker,
             refusals,
-            hodograph: self.hodograph(sc.l, sc.v)?,
+            hodograph: self.hodograph(sc)?,
             table: self.table(sc.l)?,
             plan,
             velocity,

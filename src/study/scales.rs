@@ -65,6 +65,37 @@ fn largest_plan(
     }
 }
 
+/// A plan more than this many times larger than the typical plan of its kind (the lower
+/// median) at the common μ is drawn at its own μ, stated beside it: the common μ is not set by
+/// a few plans near a singular position (the tangent mechanism's 29.9 m/s near φ = 90°),
+/// which would leave the others a few millimetres long.
+const OWN_SCALE_RATIO: f64 = 3.0;
+
+/// The positions `ks` without the plans far larger than the typical one ([`OWN_SCALE_RATIO`]),
+/// sized at `mu`.
+fn typical_plans(
+    poses: &PlanPoses,
+    ks: &[usize],
+    w1: f64,
+    kind: PlanKind,
+    mu: Scale,
+) -> Vec<usize> {
+    let sizes: Vec<f64> = ks
+        .iter()
+        .map(|&k| largest_plan(poses, &[k], w1, kind)(mu).max_element())
+        .collect();
+    let mut sorted = sizes.clone();
+    sorted.sort_by(f64::total_cmp);
+    let Some(&typical) = sorted.get(sorted.len().saturating_sub(1) / 2) else {
+        return Vec::new();
+    };
+    ks.iter()
+        .zip(&sizes)
+        .filter(|(_, &size)| size <= OWN_SCALE_RATIO * typical)
+        .map(|(&k, _)| k)
+        .collect()
+}
+
 /// `start` raised along the round series until `size(μ)` fits `room`.
 fn raised_to_fit(start: Scale, room: DVec2, size: impl Fn(Scale) -> DVec2) -> Scale {
     fit_scale(start, |mu| overflow(size(mu), room)).unwrap_or(start)
@@ -103,7 +134,8 @@ impl<'s> Session<'s> {
 
     /// The kinematic study's scales, decided once: μ_l ([`Session::scale_l`]); μ_v and μ_a the
     /// scene's, else the crank pin's vector drawn about 70 mm and raised until the largest
-    /// plan fits `VECTOR_PLAN_ROOM`; the displacement chart's as the scene gives them (the
+    /// typical plan fits `VECTOR_PLAN_ROOM` (a plan far larger takes its own,
+    /// [`Session::plan_scale`]); the displacement chart's as the scene gives them (the
     /// rest chosen for the chart by the study).
     pub fn kin_scales(&self) -> Result<KinScales, StudyError> {
         self.caches.get::<Scales>((), || {
@@ -113,14 +145,16 @@ impl<'s> Session<'s> {
             let (poses, w1) = (self.poses()?, self.w1()?);
             if spec.scale_v.is_none() {
                 let all: Vec<usize> = (0..poses.positions.len()).collect();
+                let ks = typical_plans(&poses, &all, w1, PlanKind::Velocity, v);
                 v = raised_to_fit(
                     v,
                     VECTOR_PLAN_ROOM,
-                    largest_plan(&poses, &all, w1, PlanKind::Velocity),
+                    largest_plan(&poses, &ks, w1, PlanKind::Velocity),
                 );
             }
             if spec.scale_a.is_none() {
-                let ks = self.acceleration_positions()?;
+                let all = self.acceleration_positions()?;
+                let ks = typical_plans(&poses, &all, w1, PlanKind::Acceleration, a);
                 a = raised_to_fit(
                     a,
                     VECTOR_PLAN_ROOM,
@@ -139,5 +173,21 @@ impl<'s> Session<'s> {
                 },
             })
         })
+    }
+
+    /// The μ of the plan of `kind` at position `k`: the common one of [`Session::kin_scales`],
+    /// or, for a plan that does not fit `VECTOR_PLAN_ROOM` at it (one far larger than the
+    /// typical plan), its own, raised until it fits. A scale the scene gives is every plan's.
+    pub fn plan_scale(&self, kind: PlanKind, k: usize) -> Result<Scale, StudyError> {
+        let sc = self.kin_scales()?;
+        let (common, given) = match kind {
+            PlanKind::Velocity => (sc.v, self.spec().scale_v.is_some()),
+            PlanKind::Acceleration => (sc.a, self.spec().scale_a.is_some()),
+        };
+        if given {
+            return Ok(common);
+        }
+        let size = largest_plan(&*self.poses()?, &[k], self.w1()?, kind);
+        Ok(raised_to_fit(common, VECTOR_PLAN_ROOM, size))
     }
 }
