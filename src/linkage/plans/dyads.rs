@@ -115,7 +115,7 @@ impl Builder<'_> {
         let e = DVec2::from_angle(self.b.angle[j]);
         let an = format!("{}{j}", plain(self.name(a)));
         let limit = if offset == 0.0 {
-            self.slot_limit(&step, (a, c), j)?
+            self.slot_limit(step, (a, c), j)?
         } else {
             None
         };
