@@ -287,7 +287,7 @@ impl Program {
     /// The slide line of an RPR group (pin `a`, pivot `c`, `offset` m), its direction: the
     /// tangent to the path of `a` when the pin stands on the pivot (`prev`: the previous
     /// position's slide), else the line through the two points, or with an offset the
-    /// tangent from `a` to the offset circle of `c`.
+    /// tangent from `a` to the offset circle of `c`, its foot T on the Thales circle on ca.
     fn slide_line(
         &self,
         rec: &mut Recorder,
@@ -301,30 +301,16 @@ impl Program {
             && p[a].distance(p[c]) <= rec.tolerances().coincident
             && self.path_through_pivot(a, c, p)
         {
-            self.slot_tangent(rec, s, (a, c), p, prev)
-        } else if offset == 0.0 {
+            return self.slot_tangent(rec, s, (a, c), p, prev);
+        }
+        if offset == 0.0 {
             let line = rec.line_through(
                 &format!("{s}: slide line"),
                 (&self.names[c], p[c]),
                 (&self.names[a], p[a]),
             )?;
-            Ok(line.angle())
-        } else {
-            self.offset_slide_line(rec, s, p, (a, c), offset)
+            return Ok(line.angle());
         }
-    }
-
-    /// The slide line of an RPR group with an offset: the tangent from `a` to the offset
-    /// circle of `c`, its foot T found by the Thales circle on ca.
-    fn offset_slide_line(
-        &self,
-        rec: &mut Recorder,
-        s: &str,
-        p: &[DVec2],
-        (a, c): (usize, usize),
-        offset: f64,
-    ) -> Result<f64, ConstructionError> {
-        let mu = rec.scale().value();
         // Tangent from a to the offset circle of c: Thales circle on ca.
         let mid = (p[a] + p[c]) * 0.5;
         let thales = Compass {
@@ -332,7 +318,7 @@ impl Program {
             center: mid,
             radius: p[a].distance(p[c]) * 0.5,
         };
-        let off = self.compass(p, c, offset.abs() / mu);
+        let off = self.compass(p, c, offset.abs() / rec.scale().value());
         let side = if offset > 0.0 {
             Pick::Right
         } else {

@@ -65,22 +65,14 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
         .map_or(0.001, |m| module_mm(check, Key::PlanetaryModule.path(), m));
     let (mut shafts, wheels) = wheels(check, raw);
     let meshes = meshes(check, raw, &wheels);
-    let carrier = shaft_of(
-        check,
-        &mut shafts,
-        &key("carrier"),
-        raw.carrier.as_ref(),
-        true,
-    );
-    let input = shaft_of(check, &mut shafts, &key("input"), raw.input.as_ref(), true);
-    let output = shaft_of(
-        check,
-        &mut shafts,
-        &key("output"),
-        raw.output.as_ref(),
-        true,
-    );
-    let fixed = shaft_of(check, &mut shafts, &key("fixed"), raw.fixed.as_ref(), false);
+    let roles = [
+        ("carrier", &raw.carrier, true),
+        ("input", &raw.input, true),
+        ("output", &raw.output, true),
+        ("fixed", &raw.fixed, false),
+    ];
+    let [carrier, input, output, fixed] =
+        roles.map(|(k, v, add)| shaft_of(check, &mut shafts, &key(k), v.as_ref(), add));
     let satellites: Vec<usize> = raw
         .satellites
         .iter()

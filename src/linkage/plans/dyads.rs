@@ -30,6 +30,13 @@ impl Builder<'_> {
         }
     }
 
+    /// The condition `cr` of a group's joint and its motion relative to `a` on link `i`.
+    fn joint_relative(&mut self, joint: usize, (a, i): (usize, usize), cr: f64) {
+        let (x, ai) = (self.image(joint), self.image(a));
+        self.cond[joint] = Some(cr);
+        self.relative((joint, i), x, (a, i), ai, cr);
+    }
+
     /// RRR: the joint's image where the lines ⊥ link i through the image of `a` and ⊥ link j
     /// through the image of `b` meet.
     fn rrr(
@@ -52,9 +59,7 @@ impl Builder<'_> {
         let (ri, rj) = (self.rate_from(ra, n1, x), self.rate_from(rb, n2, x));
         self.finish_link(i, &[(a, ai), (joint, x)], ri);
         self.finish_link(j, &[(b, bi), (joint, x)], rj);
-        let (x, ai) = (self.image(joint), self.image(a));
-        self.cond[joint] = Some(cr);
-        self.relative((joint, i), x, (a, i), ai, cr);
+        self.joint_relative(joint, (a, i), cr);
         Ok(())
     }
 
@@ -93,9 +98,7 @@ impl Builder<'_> {
         self.finish_link(i, &[(a, ai), (joint, x)], ri);
         let rk = self.rate(k);
         self.finish_link(j, &[(joint, x)], rk);
-        let (x, ai) = (self.image(joint), self.image(a));
-        self.cond[joint] = Some(cr);
-        self.relative((joint, i), x, (a, i), ai, cr);
+        self.joint_relative(joint, (a, i), cr);
         Ok(())
     }
 
