@@ -93,25 +93,7 @@ pub fn integrate_chords(
     start: f64,
     layout: &Layout,
 ) -> Result<Integral, CalculusError> {
-    let (n, means) = match sampling {
-        Sampling::Nodes => {
-            src.validate()?;
-            let n = src.intervals();
-            let means = (0..n)
-                .map(|k| read(&src.y, 0.0, src.periodic, k as f64 + 0.5))
-                .collect();
-            (n, means)
-        }
-        Sampling::Midpoints => {
-            // As many intervals as samples: validate as a cycle of that length.
-            let as_cycle = Diagram {
-                periodic: true,
-                ..src.clone()
-            };
-            as_cycle.validate()?;
-            (src.y.len(), src.y.clone())
-        }
-    };
+    let (n, means) = mean_ordinates(src, sampling)?;
     if !start.is_finite() {
         return Err(CalculusError::NonFinite {
             what: "start value",
@@ -154,31 +136,14 @@ pub fn integrate_chords(
     let mut rays = Vec::with_capacity(n);
     let mut chords = Vec::with_capacity(n);
     for (k, &m) in m_pts.iter().enumerate() {
-        let foot = DVec2::new(m.x, so.y);
-        let perp = thin(rec, format!("mean ordinate {k}"), foot, m, &[]);
-        let q = DVec2::new(so.x, m.y);
-        let proj = thin(rec, format!("projection {k}"), m, q, &[perp]);
-        let ray = thin(
-            rec,
-            format!("ray {k} from the pole"),
-            pole,
-            q,
-            &[pole_id, proj],
-        );
+        let (ray, q) = ray(rec, k, m, so, (pole, pole_id));
         let prev = ends[k];
-        let along = Line::new(prev, q - pole).ok_or(CalculusError::Overflow { what: "chord" })?;
-        let x_end = (k + 1) as f64 * run;
-        let ordinate = Line::new(at_mm(o, x_end, 0.0), DVec2::Y)
-            .ok_or(CalculusError::Overflow { what: "ordinate" })?;
-        let end = match line_line(&along, &ordinate, rec.tolerances()) {
-            LineLine::Point { point, .. } => finite(point, "chord end")?,
-            _ => {
-                return Err(CalculusError::RayMisses {
-                    interval: k,
-                    what: "interval's end ordinate",
-                })
-            }
-        };
+        let end = chord_end(
+            rec,
+            k,
+            (prev, q - pole),
+            at_mm(o, (k + 1) as f64 * run, 0.0),
+        )?;
         chords.push(thin(
             rec,
             format!("chord {k}–{} ∥ ray {k}", k + 1),
@@ -222,4 +187,72 @@ pub fn integrate_chords(
         chords,
         curve,
     })
+}
+
+/// The number of intervals and the integrand's mean ordinate over each: read off the curve
+/// at the middles ([`Sampling::Nodes`]), or the samples themselves ([`Sampling::Midpoints`]).
+fn mean_ordinates(src: &Diagram, sampling: Sampling) -> Result<(usize, Vec<f64>), CalculusError> {
+    Ok(match sampling {
+        Sampling::Nodes => {
+            src.validate()?;
+            let n = src.intervals();
+            let means = (0..n)
+                .map(|k| read(&src.y, 0.0, src.periodic, k as f64 + 0.5))
+                .collect();
+            (n, means)
+        }
+        Sampling::Midpoints => {
+            // As many intervals as samples: validate as a cycle of that length.
+            let as_cycle = Diagram {
+                periodic: true,
+                ..src.clone()
+            };
+            as_cycle.validate()?;
+            (src.y.len(), src.y.clone())
+        }
+    })
+}
+
+/// The ray of interval `k`: the perpendicular at the middle from the axis through `so` up
+/// to the curve at `m`, its horizontal projection `q` to the ordinate axis, the ray from the
+/// pole to `q`; gives the ray's step and `q`.
+fn ray(
+    rec: &mut Recorder,
+    k: usize,
+    m: DVec2,
+    so: DVec2,
+    (pole, pole_id): (DVec2, StepId),
+) -> (StepId, DVec2) {
+    let foot = DVec2::new(m.x, so.y);
+    let perp = thin(rec, format!("mean ordinate {k}"), foot, m, &[]);
+    let q = DVec2::new(so.x, m.y);
+    let proj = thin(rec, format!("projection {k}"), m, q, &[perp]);
+    let ray = thin(
+        rec,
+        format!("ray {k} from the pole"),
+        pole,
+        q,
+        &[pole_id, proj],
+    );
+    (ray, q)
+}
+
+/// The end of chord `k`: the line from the previous end `from` along the ray's direction
+/// `dir` meets the ordinate at the interval's end (through `x_end`, figure mm).
+fn chord_end(
+    rec: &Recorder,
+    k: usize,
+    (from, dir): (DVec2, DVec2),
+    x_end: DVec2,
+) -> Result<DVec2, CalculusError> {
+    let along = Line::new(from, dir).ok_or(CalculusError::Overflow { what: "chord" })?;
+    let ordinate =
+        Line::new(x_end, DVec2::Y).ok_or(CalculusError::Overflow { what: "ordinate" })?;
+    match line_line(&along, &ordinate, rec.tolerances()) {
+        LineLine::Point { point, .. } => finite(point, "chord end"),
+        _ => Err(CalculusError::RayMisses {
+            interval: k,
+            what: "interval's end ordinate",
+        }),
+    }
 }

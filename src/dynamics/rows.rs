@@ -1,6 +1,6 @@
 //! The rows and notes of the dynamic study.
 
-use super::{ConstantMoment, Dynamics};
+use super::{ConstantMoment, Dynamics, SeedClaims};
 use crate::check::{self, Finding, Key, Method, NoFlywheel, Note, Route, Row, Symbol};
 use crate::scale::{format_sig, Lang};
 
@@ -102,14 +102,31 @@ pub fn findings(d: &Dynamics) -> Vec<Finding> {
     check::finding::findings(&noted(d))
 }
 
+/// A value in the notes: 6 significant digits.
+fn n(x: f64) -> String {
+    format_sig(x, 6, Lang::En)
+}
+
+/// How far `x` is from `r`, per cent of `r`: 3 significant digits.
+fn pct(x: f64, r: f64) -> String {
+    format_sig((x - r) / r * 100.0, 3, Lang::En)
+}
+
 /// The notes: the exact solution, the textbook routes against it, the seed's numbers that do
 /// not follow from its data.
 pub fn noted(d: &Dynamics) -> Vec<Note> {
-    let n = |x: f64| format_sig(x, 6, Lang::En);
+    let mut out = vec![exact_note(d), routes_note(d)];
+    if let Some(seed) = &d.spec.seed {
+        seed_notes(d, seed, &mut out);
+    }
+    out
+}
+
+/// The exact solution: its flywheel (or none needed) for δ, ω_avg with the extremes of ω,
+/// the cycle's time and the constant moment.
+fn exact_note(d: &Dynamics) -> Note {
     let e = &d.exact;
-    let pct = |x: f64, r: f64| format_sig((x - r) / r * 100.0, 3, Lang::En);
-    let needed = e.j_fw > 0.0;
-    let exact = if needed {
+    let exact = if e.j_fw > 0.0 {
         Note::text(format!(
             "the energy equation integrated exactly gives J_flywheel = {} kg·m² for δ = {}",
             n(e.j_fw),
@@ -121,33 +138,7 @@ pub fn noted(d: &Dynamics) -> Vec<Note> {
             asked: d.spec.delta,
         }))
     };
-    // One textbook route: its flywheel against the exact one, or none needed.
-    let route = |name: &str, by: Route, r: &super::draw::Route, delta: f64| {
-        if r.j_fw <= 0.0 {
-            Note::finding(
-                format!("{name}: "),
-                Finding::NoFlywheelNeeded(NoFlywheel::Reads {
-                    route: by,
-                    read: r.read,
-                }),
-            )
-        } else if needed {
-            Note::text(format!(
-                "{name} J_flywheel = {} kg·m² ({} %, δ really {})",
-                n(r.j_fw),
-                pct(r.j_fw, e.j_fw),
-                n(delta)
-            ))
-        } else {
-            Note::text(format!(
-                "{name} J_flywheel = {} kg·m² where none is needed (δ really {})",
-                n(r.j_fw),
-                n(delta)
-            ))
-        }
-    };
-    let merkin_exact = d.cycle.merkin(d.w_avg, d.spec.delta).0 - d.spec.constant_inertia();
-    let first = Note::text("dynamics: ").append(exact).then(format!(
+    Note::text("dynamics: ").append(exact).then(format!(
         " at ω_avg = {} rad/s (ω_max = {} at {}°, ω_min = {} at {}° of crank travel from position {}); the cycle takes {} s; {}",
         n(e.omega_avg()),
         n(e.w_max.0),
@@ -168,7 +159,13 @@ pub fn noted(d: &Dynamics) -> Vec<Note> {
                 n(-d.cycle.m_drive)
             ),
         },
-    ));
+    ))
+}
+
+/// The textbook routes against the exact flywheel: Wittenbauer's tangents, Merkin's route,
+/// and Merkin's on the continuous exact data.
+fn routes_note(d: &Dynamics) -> Note {
+    let merkin_exact = d.cycle.merkin(d.w_avg, d.spec.delta).0 - d.spec.constant_inertia();
     let continuous = if merkin_exact > 0.0 {
         Note::text(format!("gives {} kg·m²", n(merkin_exact)))
     } else {
@@ -176,30 +173,60 @@ pub fn noted(d: &Dynamics) -> Vec<Note> {
             j: merkin_exact,
         }))
     };
-    let second = Note::text(format!("dynamics: at {} positions ", d.labels.len()))
-        .append(route(
-            "Wittenbauer's tangents give",
-            Route::Wittenbauer,
+    Note::text(format!("dynamics: at {} positions ", d.labels.len()))
+        .append(route_note(
+            d,
+            ("Wittenbauer's tangents give", Route::Wittenbauer),
             &d.diagrams.wittenbauer,
             d.delta_of[0],
         ))
         .then(", ")
-        .append(route(
-            "Merkin's route gives",
-            Route::Merkin,
+        .append(route_note(
+            d,
+            ("Merkin's route gives", Route::Merkin),
             &d.diagrams.merkin,
             d.delta_of[1],
         ))
         .then("; Merkin on the continuous exact data ")
         .append(continuous)
-        .then(" (T_II with ω = ω_avg is the method's own error)");
-    let mut out = vec![first, second];
-    let Some(seed) = &d.spec.seed else {
-        return out;
-    };
+        .then(" (T_II with ω = ω_avg is the method's own error)")
+}
+
+/// One textbook route (`name`, `by`): its flywheel against the exact one, or none needed;
+/// `delta` the δ it really gives.
+fn route_note(d: &Dynamics, (name, by): (&str, Route), r: &super::draw::Route, delta: f64) -> Note {
+    let e = &d.exact;
+    if r.j_fw <= 0.0 {
+        Note::finding(
+            format!("{name}: "),
+            Finding::NoFlywheelNeeded(NoFlywheel::Reads {
+                route: by,
+                read: r.read,
+            }),
+        )
+    } else if e.j_fw > 0.0 {
+        Note::text(format!(
+            "{name} J_flywheel = {} kg·m² ({} %, δ really {})",
+            n(r.j_fw),
+            pct(r.j_fw, e.j_fw),
+            n(delta)
+        ))
+    } else {
+        Note::text(format!(
+            "{name} J_flywheel = {} kg·m² where none is needed (δ really {})",
+            n(r.j_fw),
+            n(delta)
+        ))
+    }
+}
+
+/// The seed's numbers that do not follow from its data: its flywheel, its expression, its
+/// table of reduced inertias.
+fn seed_notes(d: &Dynamics, seed: &SeedClaims, out: &mut Vec<Note>) {
+    let e = &d.exact;
     if let Some(j) = seed.flywheel {
         let got = d.cycle.with_flywheel(j, d.w_avg).delta();
-        let exact = if needed {
+        let exact = if e.j_fw > 0.0 {
             format!(
                 "the exact value is {} kg·m² ({} % off)",
                 n(e.j_fw),
@@ -249,5 +276,4 @@ pub fn noted(d: &Dynamics) -> Vec<Note> {
             )));
         }
     }
-    out
 }

@@ -41,7 +41,7 @@ pub use twin::{Equilibrium, Pair, PairKind, Reaction};
 use crate::check::{Method, Row, Symbol};
 use crate::construct::{ConstructionError, Context};
 use crate::geom::DVec2;
-use crate::linkage::{KinPlan, PlanSetup, PositionPlan};
+use crate::linkage::{KinPlan, PlanPosition, PlanSetup, PositionPlan, Program};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
@@ -234,15 +234,7 @@ pub fn analyse(
     let m_power = twin::power_balance(&loads_exact, &exact, w1);
     let drawn = graphical_motion(plan, k, mu_l, vp, ap, ctx);
     let loads = loads::loads(spec, prog, &drawn, ph)?;
-    let scale_f = match spec.scale_f {
-        Some(s) => s,
-        // Without loads every reaction is zero: any scale draws the empty polygons.
-        None if twin.largest() == 0.0 => {
-            Scale::new(1.0, Quantity::Force).ok_or(ForceError::NoScale(0.0))?
-        }
-        None => Scale::round_for(twin.largest(), POLYGON_MM, Quantity::Force)
-            .ok_or(ForceError::NoScale(twin.largest()))?,
-    };
+    let scale_f = polygon_scale(spec, &twin)?;
     let board = polygons::Board {
         setup: PlanSetup {
             prog,
@@ -280,9 +272,64 @@ pub fn analyse(
         twin,
         m_power,
     };
+    let rows = position_rows(pos, prog, &analysis, friction.as_deref());
+    let built_dir: Vec<DVec2> = pos
+        .built
+        .angle
+        .iter()
+        .map(|a| DVec2::from_angle(*a))
+        .collect();
+    let drawn_state = residual::State {
+        motion: &drawn,
+        dir: &built_dir,
+        sense,
+        phase: ph,
+    };
+    let exact_state = residual::State {
+        motion: &exact,
+        dir: &pos.pose.dir,
+        ..drawn_state
+    };
+    let states = [&drawn_state, &exact_state];
+    let residuals = residuals(spec, prog, states, &analysis, friction.as_deref());
+    let sliders = sliders(spec, &analysis.twin);
+    Ok(PositionForces {
+        label: pos.label.clone(),
+        analysis,
+        scale_f,
+        sliders,
+        sense,
+        friction,
+        rows,
+        residuals,
+    })
+}
+
+/// μ_F of the polygons: the scene's, else the largest reaction at [`POLYGON_MM`] (any
+/// scale without loads: every reaction is zero).
+fn polygon_scale(spec: &ForceSpec, twin: &Equilibrium) -> Result<Scale, ForceError> {
+    Ok(match spec.scale_f {
+        Some(s) => s,
+        // Without loads every reaction is zero: any scale draws the empty polygons.
+        None if twin.largest() == 0.0 => {
+            Scale::new(1.0, Quantity::Force).ok_or(ForceError::NoScale(0.0))?
+        }
+        None => Scale::round_for(twin.largest(), POLYGON_MM, Quantity::Force)
+            .ok_or(ForceError::NoScale(twin.largest()))?,
+    })
+}
+
+/// The position's rows: the loads, the reactions (with friction also their rows `_f`), each
+/// row's reference held to the mechanism's size ([`zero_references`]).
+fn position_rows(
+    pos: &PlanPosition,
+    prog: &Program,
+    analysis: &Analysis,
+    friction: Option<&WithFriction>,
+) -> Vec<Row> {
     let mut rows = rows(&pos.label, &analysis.loads, &analysis.loads_exact);
-    rows.extend(reaction_rows(&pos.label, "", &analysis));
-    if let Some(f) = &friction {
+    rows.extend(reaction_rows(&pos.label, "", analysis));
+    if let Some(f) = friction {
         rows.extend(reaction_rows(&pos.label, "_f", &f.analysis));
     }
     let size = pos
@@ -292,51 +339,46 @@ pub fn analyse(
         .map(|x| x.distance(pos.pose.p[prog.centre]))
         .fold(0.0, f64::max);
     zero_references(&mut rows, size);
-    let residuals = {
-        let built_dir: Vec<DVec2> = pos
-            .built
-            .angle
-            .iter()
-            .map(|a| DVec2::from_angle(*a))
-            .collect();
-        let drawn_state = residual::State {
-            motion: &drawn,
-            dir: &built_dir,
-            sense,
-            phase: ph,
+    rows
+}
+
+/// The equilibrium residuals of the polygons (against the drawn motion, `states[0]`) and of
+/// the twin (against the exact one, `states[1]`), without and with friction in the pairs.
+fn residuals(
+    spec: &ForceSpec,
+    prog: &Program,
+    [drawn_state, exact_state]: [&residual::State<'_>; 2],
+    analysis: &Analysis,
+    friction: Option<&WithFriction>,
+) -> Vec<Residual> {
+    let of = |a: &Analysis, fr: Option<&pair_friction::PairFriction>| {
+        let driver = &a.polygons.driver;
+        let graphical = residual::Reported {
+            reactions: &a.polygons.reactions(),
+            m_bal: driver.m_bal,
+            f_bal: driver.f_bal,
         };
-        let exact_state = residual::State {
-            motion: &exact,
-            dir: &pos.pose.dir,
-            ..drawn_state
+        let analytic = residual::Reported {
+            reactions: &a.twin.reactions,
+            m_bal: a.twin.m_bal,
+            f_bal: a.twin.f_bal,
         };
-        let of = |a: &Analysis, fr: Option<&pair_friction::PairFriction>| {
-            let driver = &a.polygons.driver;
-            let graphical = residual::Reported {
-                reactions: &a.polygons.reactions(),
-                m_bal: driver.m_bal,
-                f_bal: driver.f_bal,
-            };
-            let analytic = residual::Reported {
-                reactions: &a.twin.reactions,
-                m_bal: a.twin.m_bal,
-                f_bal: a.twin.f_bal,
-            };
-            Residual {
-                friction: fr.is_some(),
-                polygons: residual::residual(spec, prog, &drawn_state, &graphical, fr),
-                twin: residual::residual(spec, prog, &exact_state, &analytic, fr),
-            }
-        };
-        let mut v = vec![of(&analysis, None)];
-        if let (Some(w), Some(fr)) = (&friction, &spec.friction) {
-            v.push(of(&w.analysis, Some(fr)));
+        Residual {
+            friction: fr.is_some(),
+            polygons: residual::residual(spec, prog, drawn_state, &graphical, fr),
+            twin: residual::residual(spec, prog, exact_state, &analytic, fr),
         }
-        v
     };
-    let sliders = analysis
-        .twin
-        .reactions
+    let mut v = vec![of(analysis, None)];
+    if let (Some(w), Some(fr)) = (friction, &spec.friction) {
+        v.push(of(&w.analysis, Some(fr)));
+    }
+    v
+}
+
+/// The guides' reactions on sliders of known length, by the twin.
+fn sliders(spec: &ForceSpec, twin: &Equilibrium) -> Vec<SliderEnds> {
+    twin.reactions
         .iter()
         .filter_map(|r| {
             let length = spec
@@ -352,17 +394,7 @@ pub fn analyse(
                 length,
             })
         })
-        .collect();
-    Ok(PositionForces {
-        label: pos.label.clone(),
-        analysis,
-        scale_f,
-        sliders,
-        sense,
-        friction,
-        rows,
-        residuals,
-    })
+        .collect()
 }
 
 /// What the approximations of one position start from: the polygons' board, the velocity

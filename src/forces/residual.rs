@@ -51,6 +51,23 @@ struct Term {
     moment: f64,
 }
 
+impl Term {
+    /// A force at a point.
+    fn force(link: usize, force: DVec2, at: DVec2) -> Self {
+        Term {
+            link,
+            force,
+            at,
+            moment: 0.0,
+        }
+    }
+}
+
+/// The position of point `k` (the origin where the motion gives none).
+fn at(m: &Motion, k: usize) -> DVec2 {
+    m.p.get(k).copied().unwrap_or(DVec2::ZERO)
+}
+
 /// The largest residual of the moving links' equations of motion, relative to the largest
 /// force (the moment equations to the largest force times the mechanism's size): 0 for an
 /// exact equilibrium, ~1e-16 in f64.
@@ -62,24 +79,50 @@ pub fn residual(
     friction: Option<&PairFriction>,
 ) -> f64 {
     let m = state.motion;
-    let at = |k: usize| m.p.get(k).copied().unwrap_or(DVec2::ZERO);
     let mut terms: Vec<Term> = Vec::new();
-    let mut force = |link: usize, force: DVec2, at: DVec2| {
+    let mut couples: Vec<(usize, f64)> = Vec::new();
+    weights(spec, prog, m, &mut terms);
+    resistances(spec, prog, state, &mut terms, &mut couples);
+    gas_forces(spec, prog, m, &mut terms);
+    reactions(state, reported, &mut terms);
+    if let Some(fr) = friction {
+        friction_terms(prog, state, reported, fr, &mut terms, &mut couples);
+    }
+    drive(spec, prog, state, reported, &mut terms, &mut couples);
+    let o = at(m, prog.centre);
+    for (link, moment) in couples {
         terms.push(Term {
             link,
-            force,
-            at,
-            moment: 0.0,
-        })
-    };
-    // Weights at the centres of mass.
+            force: DVec2::ZERO,
+            at: o,
+            moment,
+        });
+    }
+    worst(prog, m, &terms, &inertia(spec, prog, m))
+}
+
+/// The weights at the centres of mass.
+fn weights(spec: &ForceSpec, prog: &Program, m: &Motion, terms: &mut Vec<Term>) {
     for lm in &spec.links {
         if let Some(s) = prog.index(&lm.centre) {
-            force(lm.link as usize, spec.weight(lm.mass), at(s));
+            terms.push(Term::force(
+                lm.link as usize,
+                spec.weight(lm.mass),
+                at(m, s),
+            ));
         }
     }
-    // The working resistances: forces on their carrying link, moments against ω.
-    let mut couples: Vec<(usize, f64)> = Vec::new();
+}
+
+/// The working resistances: forces on their carrying link, moments against ω.
+fn resistances(
+    spec: &ForceSpec,
+    prog: &Program,
+    state: &State<'_>,
+    terms: &mut Vec<Term>,
+    couples: &mut Vec<(usize, f64)>,
+) {
+    let m = state.motion;
     // The same destructuring of a resistance as `loads::loads`, and the same selection
     // (`ForceSpec::acting`, a fact of the scene): which link carries it and where it points
     // are decided again here.
@@ -99,7 +142,7 @@ pub fn residual(
                     Some(a) => DVec2::from_angle(*a),
                     None => (-m.v[k]).normalize_or_zero(),
                 };
-                force(l, e * *magnitude, at(k));
+                terms.push(Term::force(l, e * *magnitude, at(m, k)));
             }
             Action::Moment { link, magnitude } => {
                 let l = *link as usize;
@@ -110,67 +153,95 @@ pub fn residual(
             }
         }
     }
-    // The gas forces of the indicator diagrams, on the piston at their point.
+}
+
+/// The gas forces of the indicator diagrams, on the piston at their point.
+fn gas_forces(spec: &ForceSpec, prog: &Program, m: &Motion, terms: &mut Vec<Term>) {
     for ind in &spec.indicators {
         if let (Ok(Some(load)), Some(k)) = (ind.load(prog, m), prog.index(&ind.point)) {
             if let Some(l) = loaded_link(prog, k) {
-                force(l, load.force, at(k));
+                terms.push(Term::force(l, load.force, at(m, k)));
             }
         }
     }
-    // The reactions, on `to` and (the opposite) on `from`.
+}
+
+/// The reactions, on `to` and (the opposite) on `from`.
+fn reactions(state: &State<'_>, reported: &Reported<'_>, terms: &mut Vec<Term>) {
+    let m = state.motion;
     for r in reported.reactions {
         let x = match r.pair.kind {
-            PairKind::Revolute(k) => at(k),
+            PairKind::Revolute(k) => at(m, k),
             PairKind::Prismatic {
                 reference,
                 dir_link,
-            } => at(reference) + state.dir[dir_link] * r.offset.unwrap_or(0.0),
+            } => at(m, reference) + state.dir[dir_link] * r.offset.unwrap_or(0.0),
         };
-        force(r.pair.to, r.force, x);
-        force(r.pair.from, -r.force, x);
+        terms.push(Term::force(r.pair.to, r.force, x));
+        terms.push(Term::force(r.pair.from, -r.force, x));
     }
-    // Friction in the pairs, from the reported reactions.
-    if let Some(fr) = friction {
-        for r in reported.reactions {
-            let (from, to) = (r.pair.from, r.pair.to);
-            let size = r.force.length();
-            match r.pair.kind {
-                PairKind::Revolute(k) => {
-                    let w_rel = rate(m, to) - rate(m, from);
-                    if at_rest(w_rel, &m.omega) {
-                        continue;
-                    }
-                    let radius = fr
-                        .radii
-                        .iter()
-                        .find(|(name, _)| prog.index(name) == Some(k))
-                        .map_or(fr.radius, |(_, r)| *r);
-                    let c = -w_rel.signum() * fr.f * radius * size;
-                    couples.push((to, c));
-                    couples.push((from, -c));
+}
+
+/// Friction in the pairs, from the reported reactions: a couple against the relative
+/// rotation in a revolute pair, a force against the relative sliding in a prismatic one.
+fn friction_terms(
+    prog: &Program,
+    state: &State<'_>,
+    reported: &Reported<'_>,
+    fr: &PairFriction,
+    terms: &mut Vec<Term>,
+    couples: &mut Vec<(usize, f64)>,
+) {
+    let m = state.motion;
+    for r in reported.reactions {
+        let (from, to) = (r.pair.from, r.pair.to);
+        let size = r.force.length();
+        match r.pair.kind {
+            PairKind::Revolute(k) => {
+                let w_rel = rate(m, to) - rate(m, from);
+                if at_rest(w_rel, &m.omega) {
+                    continue;
                 }
-                PairKind::Prismatic {
-                    reference,
-                    dir_link,
-                } => {
-                    let u = state.dir[dir_link];
-                    let x = at(reference) + u * r.offset.unwrap_or(0.0);
-                    let v_rel = (velocity(prog, m, to, x) - velocity(prog, m, from, x)).dot(u);
-                    let speeds: Vec<f64> = m.v.iter().map(|v| v.length()).collect();
-                    if at_rest(v_rel, &speeds) {
-                        continue;
-                    }
-                    let f = u * (-v_rel.signum() * fr.f * size);
-                    force(to, f, x);
-                    force(from, -f, x);
+                let radius = fr
+                    .radii
+                    .iter()
+                    .find(|(name, _)| prog.index(name) == Some(k))
+                    .map_or(fr.radius, |(_, r)| *r);
+                let c = -w_rel.signum() * fr.f * radius * size;
+                couples.push((to, c));
+                couples.push((from, -c));
+            }
+            PairKind::Prismatic {
+                reference,
+                dir_link,
+            } => {
+                let u = state.dir[dir_link];
+                let x = at(m, reference) + u * r.offset.unwrap_or(0.0);
+                let v_rel = (velocity(prog, m, to, x) - velocity(prog, m, from, x)).dot(u);
+                let speeds: Vec<f64> = m.v.iter().map(|v| v.length()).collect();
+                if at_rest(v_rel, &speeds) {
+                    continue;
                 }
+                let f = u * (-v_rel.signum() * fr.f * size);
+                terms.push(Term::force(to, f, x));
+                terms.push(Term::force(from, -f, x));
             }
         }
     }
-    // The drive on the crank.
+}
+
+/// The drive on the crank: the balancing force on its line of action (gear drive), else the
+/// balancing moment.
+fn drive(
+    spec: &ForceSpec,
+    prog: &Program,
+    state: &State<'_>,
+    reported: &Reported<'_>,
+    terms: &mut Vec<Term>,
+    couples: &mut Vec<(usize, f64)>,
+) {
     let crank = prog.crank_link as usize;
-    let o = at(prog.centre);
+    let o = at(state.motion, prog.centre);
     match (&spec.drive, reported.f_bal) {
         (Drive::Gear(g), Some(f)) => {
             let turn = if reported.m_bal == 0.0 {
@@ -179,19 +250,14 @@ pub fn residual(
                 reported.m_bal.signum()
             };
             let (p, d) = line_of_action(o, g.radius(), g.towards, g.pressure_angle, turn);
-            force(crank, d * f, p);
+            terms.push(Term::force(crank, d * f, p));
         }
         _ => couples.push((crank, reported.m_bal)),
     }
-    for (link, moment) in couples {
-        terms.push(Term {
-            link,
-            force: DVec2::ZERO,
-            at: o,
-            moment,
-        });
-    }
-    // The inertia: m·a_S and the moment of the momentum's rate about O, I_S·ε.
+}
+
+/// The inertia: m·a_S and the moment of the momentum's rate about O, I_S·ε.
+fn inertia(spec: &ForceSpec, prog: &Program, m: &Motion) -> Vec<Term> {
     let mut inertia: Vec<Term> = Vec::new();
     for lm in &spec.links {
         if let Some(s) = prog.index(&lm.centre) {
@@ -199,20 +265,28 @@ pub fn residual(
             inertia.push(Term {
                 link: l,
                 force: m.a[s] * lm.mass,
-                at: at(s),
+                at: at(m, s),
                 moment: lm.inertia * m.eps.get(l).copied().unwrap_or(0.0),
             });
         }
     }
+    inertia
+}
+
+/// The largest residual of the moving links' equations: the `terms` against the `inertia`,
+/// moments about the crank's centre O, each relative to the largest force (the largest
+/// moment, or the largest force times the mechanism's size).
+fn worst(prog: &Program, m: &Motion, terms: &[Term], inertia: &[Term]) -> f64 {
+    let o = at(m, prog.centre);
     let size = m.p.iter().map(|x| x.distance(o)).fold(0.0, f64::max);
     let big_f = terms
         .iter()
-        .chain(&inertia)
+        .chain(inertia)
         .map(|t| t.force.length())
         .fold(0.0, f64::max);
     let big_m = terms
         .iter()
-        .chain(&inertia)
+        .chain(inertia)
         .map(|t| t.moment.abs())
         .fold(big_f * size, f64::max);
     let mut worst = 0.0f64;

@@ -39,6 +39,25 @@ fn heading(v: DVec2) -> f64 {
     v.y.atan2(v.x)
 }
 
+impl Built {
+    /// Record the joint a group's intersection found: its position and step; gives the point
+    /// and the crossing angle.
+    fn place(&mut self, joint: usize, (x, crossing, id): (DVec2, f64, StepId)) -> (DVec2, f64) {
+        self.p[joint] = x;
+        self.step[joint] = Some(id);
+        (x, crossing)
+    }
+}
+
+/// The solution a two-solution intersection takes: the one nearest to the previous
+/// position's `joint` when there is one, else `first` (the scene's branch).
+fn pick(prev: Option<&Built>, joint: usize, first: Pick) -> Pick {
+    match prev {
+        Some(q) => Pick::Near(q.p[joint]),
+        None => first,
+    }
+}
+
 impl Program {
     fn drawn_dir(&self, d: &PDir, p: &[DVec2]) -> f64 {
         match *d {
@@ -56,6 +75,20 @@ impl Program {
         format!("guide through {}", self.names[g.through])
     }
 
+    /// The compass set at point `k` with `radius` (drawing mm).
+    fn compass(&self, p: &[DVec2], k: usize, radius: f64) -> Compass<'_> {
+        Compass {
+            name: &self.names[k],
+            center: p[k],
+            radius,
+        }
+    }
+
+    /// The step that finds a group's `joint`.
+    fn joint_step(&self, s: &str, joint: usize) -> String {
+        format!("{s}: point {}", self.names[joint])
+    }
+
     /// Construct the position at crank angle `phi` (radians). `mu` is μ_l (m/mm); `prev` the
     /// previous constructed position (continuity), `tag` names the position in diagnostics.
     pub fn construct(
@@ -65,20 +98,44 @@ impl Program {
         prev: Option<&Built>,
         tag: &str,
     ) -> Result<Built, Failed> {
+        let mut pos = self.crank_divided(rec, phi, tag);
+        for op in &self.ops {
+            match *op {
+                Op::Point {
+                    idx,
+                    link,
+                    along,
+                    across,
+                } => self.step_off(rec, &mut pos, tag, (idx, link), DVec2::new(along, across)),
+                Op::Dyad { group, links, dyad } => {
+                    let s = format!("{tag}, group {} ({})", group + 1, dyad.kind().letters());
+                    let links = links.map(|l| l as usize);
+                    self.construct_group(rec, &mut pos, prev, &s, links, dyad)
+                        .map_err(|error| Failed { group, error })?;
+                }
+            }
+        }
+        Ok(pos)
+    }
+
+    /// The fixed points, and the crank pin: the division of the crank circle at φ₁.
+    fn crank_divided(&self, rec: &mut Recorder, phi: f64, tag: &str) -> Built {
         let mu = rec.scale().value();
         let n = self.names.len();
-        let mut p = vec![DVec2::ZERO; n];
-        let mut step = vec![None; n];
+        let mut pos = Built {
+            phi,
+            p: vec![DVec2::ZERO; n],
+            angle: vec![0.0; self.link_count],
+            origin: vec![0usize; self.link_count],
+            crossing: Vec::new(),
+            step: vec![None; n],
+        };
         for (k, f) in self.fixed.iter().enumerate() {
-            p[k] = *f / mu;
+            pos.p[k] = *f / mu;
         }
-        let mut angle = vec![0.0; self.link_count];
-        let mut origin = vec![0usize; self.link_count];
-        let mut crossing = Vec::new();
-        // Crank: the pin is the division of the crank circle at φ₁.
-        let pin = p[self.centre] + DVec2::from_angle(phi) * (self.crank_length / mu);
-        p[self.pin] = pin;
-        step[self.pin] = Some(rec.draw(
+        let pin = pos.p[self.centre] + DVec2::from_angle(phi) * (self.crank_length / mu);
+        pos.p[self.pin] = pin;
+        pos.step[self.pin] = Some(rec.draw(
             format!(
                 "{tag}: crank circle divided at φ₁ = {:.4}°",
                 phi.to_degrees()
@@ -87,240 +144,197 @@ impl Program {
             Role::Result,
             &[],
         ));
-        angle[self.crank_link as usize] = phi;
-        origin[self.crank_link as usize] = self.centre;
-        for op in &self.ops {
-            match *op {
-                Op::Point {
-                    idx,
-                    link,
-                    along,
-                    across,
-                } => {
-                    let l = link as usize;
-                    let o = p[origin[l]];
-                    let local = rotate(DVec2::new(along, across) / mu, angle[l]);
-                    let at = o + local;
-                    // Dividers: the distance is stepped off from the link's origin.
-                    let notch = rec.draw(
-                        format!(
-                            "{tag}: dividers from {} to {}",
-                            self.names[origin[l]], self.names[idx]
-                        ),
-                        Item::Arc(Arc::notch(o, at, 2.5)),
-                        Role::Construction,
-                        &[],
-                    );
-                    p[idx] = at;
-                    step[idx] = Some(rec.draw(
-                        format!("{tag}: point {} of link {link}", self.names[idx]),
-                        Item::Point(at),
-                        Role::Result,
-                        &[notch],
-                    ));
-                }
-                Op::Dyad { group, links, dyad } => {
-                    let s = format!("{tag}, group {} ({})", group + 1, dyad.kind().letters());
-                    let fail = |error: ConstructionError| Failed { group, error };
-                    let (i, j) = (links[0] as usize, links[1] as usize);
-                    match dyad {
-                        PDyad::Rrr {
-                            a,
-                            la,
-                            b,
-                            lb,
-                            joint,
-                            branch,
-                        } => {
-                            let pick = match prev {
-                                Some(q) => Pick::Near(q.p[joint]),
-                                None if branch == Branch::Right => Pick::Right,
-                                None => Pick::Left,
-                            };
-                            let ca = Compass {
-                                name: &self.names[a],
-                                center: p[a],
-                                radius: la / mu,
-                            };
-                            let cb = Compass {
-                                name: &self.names[b],
-                                center: p[b],
-                                radius: lb / mu,
-                            };
-                            let (x, cr, id) = rec
-                                .meet_circles(
-                                    &format!("{s}: point {}", self.names[joint]),
-                                    ca,
-                                    cb,
-                                    pick,
-                                )
-                                .map_err(fail)?;
-                            p[joint] = x;
-                            step[joint] = Some(id);
-                            angle[i] = heading(x - p[a]);
-                            angle[j] = heading(x - p[b]);
-                            origin[i] = a;
-                            origin[j] = b;
-                            crossing.push(cr);
-                        }
-                        PDyad::Rrp {
-                            a,
-                            la,
-                            guide,
-                            joint,
-                            branch,
-                        } => {
-                            let line = self.line_or_fail(&guide, &p, mu, &s).map_err(fail)?;
-                            let pick = match prev {
-                                Some(q) => Pick::Near(q.p[joint]),
-                                None if branch == Branch::Backward => Pick::Backward,
-                                None => Pick::Forward,
-                            };
-                            let c = Compass {
-                                name: &self.names[a],
-                                center: p[a],
-                                radius: la / mu,
-                            };
-                            let (x, cr, id) = rec
-                                .meet_line_circle(
-                                    &format!("{s}: point {}", self.names[joint]),
-                                    (&self.guide_name(&guide), &line),
-                                    c,
-                                    pick,
-                                )
-                                .map_err(fail)?;
-                            p[joint] = x;
-                            step[joint] = Some(id);
-                            angle[i] = heading(x - p[a]);
-                            angle[j] = line.angle();
-                            origin[i] = a;
-                            origin[j] = joint;
-                            crossing.push(cr);
-                        }
-                        PDyad::Rpr { a, c, offset } => {
-                            let th = if offset == 0.0
-                                && p[a].distance(p[c]) <= rec.tolerances().coincident
-                                && self.path_through_pivot(a, c, &p)
-                            {
-                                let prev = prev.map(|q| q.angle[j]);
-                                self.slot_tangent(rec, &s, (a, c), &p, prev).map_err(fail)?
-                            } else if offset == 0.0 {
-                                let line = rec
-                                    .line_through(
-                                        &format!("{s}: slide line"),
-                                        (&self.names[c], p[c]),
-                                        (&self.names[a], p[a]),
-                                    )
-                                    .map_err(fail)?;
-                                line.angle()
-                            } else {
-                                // Tangent from a to the offset circle of c: Thales circle on ca.
-                                let mid = (p[a] + p[c]) * 0.5;
-                                let thales = Compass {
-                                    name: "the midpoint of the slide",
-                                    center: mid,
-                                    radius: p[a].distance(p[c]) * 0.5,
-                                };
-                                let off = Compass {
-                                    name: &self.names[c],
-                                    center: p[c],
-                                    radius: offset.abs() / mu,
-                                };
-                                let side = if offset > 0.0 {
-                                    Pick::Right
-                                } else {
-                                    Pick::Left
-                                };
-                                let (t, _, _) = rec
-                                    .meet_circles(
-                                        &format!("{s}: foot of the slide line"),
-                                        thales,
-                                        off,
-                                        side,
-                                    )
-                                    .map_err(fail)?;
-                                rec.line_through(
-                                    &format!("{s}: slide line"),
-                                    ("T", t),
-                                    (&self.names[a], p[a]),
-                                )
-                                .map_err(fail)?
-                                .angle()
-                            };
-                            angle[i] = th;
-                            angle[j] = th;
-                            origin[i] = a;
-                            origin[j] = c;
-                            crossing.push(std::f64::consts::FRAC_PI_2);
-                        }
-                        PDyad::Prp { gi, gj, joint } => {
-                            let l1 = self.line_or_fail(&gi, &p, mu, &s).map_err(fail)?;
-                            let l2 = self.line_or_fail(&gj, &p, mu, &s).map_err(fail)?;
-                            let (x, cr, id) = rec
-                                .meet_lines(
-                                    &format!("{s}: point {}", self.names[joint]),
-                                    (&self.guide_name(&gi), &l1),
-                                    (&self.guide_name(&gj), &l2),
-                                )
-                                .map_err(fail)?;
-                            p[joint] = x;
-                            step[joint] = Some(id);
-                            angle[i] = l1.angle();
-                            angle[j] = l2.angle();
-                            origin[i] = joint;
-                            origin[j] = joint;
-                            crossing.push(cr);
-                        }
-                        PDyad::Rpp {
-                            a,
-                            slide,
-                            guide,
-                            joint,
-                        } => {
-                            let sl = Line::new(p[a], DVec2::from_angle(self.drawn_dir(&slide, &p)))
-                                .ok_or_else(|| fail(other(&s, "slide direction")))?;
-                            let g = self.line_or_fail(&guide, &p, mu, &s).map_err(fail)?;
-                            let name = format!("slide line through {}", self.names[a]);
-                            let (x, cr, id) = rec
-                                .meet_lines(
-                                    &format!("{s}: point {}", self.names[joint]),
-                                    (&name, &sl),
-                                    (&self.guide_name(&guide), &g),
-                                )
-                                .map_err(fail)?;
-                            rec.draw(
-                                format!("{s}: {name}"),
-                                Item::Segment(Segment::new(p[a], x)),
-                                Role::Construction,
-                                &[id],
-                            );
-                            p[joint] = x;
-                            step[joint] = Some(id);
-                            angle[i] = sl.angle();
-                            angle[j] = g.angle();
-                            origin[i] = a;
-                            origin[j] = joint;
-                            crossing.push(cr);
-                        }
-                    }
-                }
-            }
-        }
-        Ok(Built {
-            phi,
-            p,
-            angle,
-            origin,
-            crossing,
-            step,
-        })
+        pos.angle[self.crank_link as usize] = phi;
+        pos.origin[self.crank_link as usize] = self.centre;
+        pos
     }
 
-    /// The slide line of an RPR group without offset when the pin `a` stands on the pivot
-    /// `c`: the two points no longer fix it, its limit is the tangent to the path of `a`
-    /// (for a crank pin: perpendicular to the crank, in the sense of increasing φ₁, or the
-    /// one nearest to the previous position's slide `prev`). Refused for a pin whose path's
-    /// tangent the drawing does not give (a point not on the crank, or a moving pivot).
+    /// A further point `idx` of a known link: its distance stepped off with dividers from
+    /// the link's origin, `local` (along, across; m) in the link's frame.
+    fn step_off(
+        &self,
+        rec: &mut Recorder,
+        pos: &mut Built,
+        tag: &str,
+        (idx, link): (usize, u32),
+        local: DVec2,
+    ) {
+        let mu = rec.scale().value();
+        let l = link as usize;
+        let o = pos.p[pos.origin[l]];
+        let at = o + rotate(local / mu, pos.angle[l]);
+        // Dividers: the distance is stepped off from the link's origin.
+        let notch = rec.draw(
+            format!(
+                "{tag}: dividers from {} to {}",
+                self.names[pos.origin[l]], self.names[idx]
+            ),
+            Item::Arc(Arc::notch(o, at, 2.5)),
+            Role::Construction,
+            &[],
+        );
+        pos.p[idx] = at;
+        pos.step[idx] = Some(rec.draw(
+            format!("{tag}: point {} of link {link}", self.names[idx]),
+            Item::Point(at),
+            Role::Result,
+            &[notch],
+        ));
+    }
+
+    /// One Assur group (step name `s`, links `i`, `j`): its joint by the intersection its
+    /// kind calls for (RPR: its slide line), then the frames of its two links.
+    fn construct_group(
+        &self,
+        rec: &mut Recorder,
+        pos: &mut Built,
+        prev: Option<&Built>,
+        s: &str,
+        [i, j]: [usize; 2],
+        dyad: PDyad,
+    ) -> Result<(), ConstructionError> {
+        let mu = rec.scale().value();
+        let ([ti, tj], [oi, oj], cr) = match dyad {
+            PDyad::Rrr {
+                a,
+                la,
+                b,
+                lb,
+                joint,
+                branch,
+            } => {
+                let side = if branch == Branch::Right {
+                    Pick::Right
+                } else {
+                    Pick::Left
+                };
+                let (ca, cb) = (
+                    self.compass(&pos.p, a, la / mu),
+                    self.compass(&pos.p, b, lb / mu),
+                );
+                let met =
+                    rec.meet_circles(&self.joint_step(s, joint), ca, cb, pick(prev, joint, side))?;
+                let (x, cr) = pos.place(joint, met);
+                ([heading(x - pos.p[a]), heading(x - pos.p[b])], [a, b], cr)
+            }
+            PDyad::Rrp {
+                a,
+                la,
+                guide,
+                joint,
+                branch,
+            } => {
+                let line = self.line_or_fail(&guide, &pos.p, mu, s)?;
+                let side = if branch == Branch::Backward {
+                    Pick::Backward
+                } else {
+                    Pick::Forward
+                };
+                let c = self.compass(&pos.p, a, la / mu);
+                let on = (&*self.guide_name(&guide), &line);
+                let met = rec.meet_line_circle(
+                    &self.joint_step(s, joint),
+                    on,
+                    c,
+                    pick(prev, joint, side),
+                )?;
+                let (x, cr) = pos.place(joint, met);
+                ([heading(x - pos.p[a]), line.angle()], [a, joint], cr)
+            }
+            PDyad::Rpr { a, c, offset } => {
+                let prev = prev.map(|q| q.angle[j]);
+                let th = self.slide_line(rec, s, &pos.p, (a, c), offset, prev)?;
+                ([th, th], [a, c], std::f64::consts::FRAC_PI_2)
+            }
+            PDyad::Prp { gi, gj, joint } => {
+                let l1 = self.line_or_fail(&gi, &pos.p, mu, s)?;
+                let l2 = self.line_or_fail(&gj, &pos.p, mu, s)?;
+                let (n1, n2) = (self.guide_name(&gi), self.guide_name(&gj));
+                let met = rec.meet_lines(&self.joint_step(s, joint), (&n1, &l1), (&n2, &l2))?;
+                let (_, cr) = pos.place(joint, met);
+                ([l1.angle(), l2.angle()], [joint, joint], cr)
+            }
+            PDyad::Rpp {
+                a,
+                slide,
+                guide,
+                joint,
+            } => {
+                let sl = Line::new(pos.p[a], DVec2::from_angle(self.drawn_dir(&slide, &pos.p)))
+                    .ok_or_else(|| other(s, "slide direction"))?;
+                let g = self.line_or_fail(&guide, &pos.p, mu, s)?;
+                let name = format!("slide line through {}", self.names[a]);
+                let on = (&*self.guide_name(&guide), &g);
+                let met = rec.meet_lines(&self.joint_step(s, joint), (&name, &sl), on)?;
+                rec.draw(
+                    format!("{s}: {name}"),
+                    Item::Segment(Segment::new(pos.p[a], met.0)),
+                    Role::Construction,
+                    &[met.2],
+                );
+                let (_, cr) = pos.place(joint, met);
+                ([sl.angle(), g.angle()], [a, joint], cr)
+            }
+        };
+        pos.angle[i] = ti;
+        pos.angle[j] = tj;
+        pos.origin[i] = oi;
+        pos.origin[j] = oj;
+        pos.crossing.push(cr);
+        Ok(())
+    }
+
+    /// The slide line of an RPR group (pin `a`, pivot `c`, `offset` m), its direction: the
+    /// tangent to the path of `a` when the pin stands on the pivot (`prev`: the previous
+    /// position's slide), else the line through the two points, or with an offset the
+    /// tangent from `a` to the offset circle of `c`, its foot T on the Thales circle on ca.
+    fn slide_line(
+        &self,
+        rec: &mut Recorder,
+        s: &str,
+        p: &[DVec2],
+        (a, c): (usize, usize),
+        offset: f64,
+        prev: Option<f64>,
+    ) -> Result<f64, ConstructionError> {
+        if offset == 0.0
+            && p[a].distance(p[c]) <= rec.tolerances().coincident
+            && self.path_through_pivot(a, c, p)
+        {
+            return self.slot_tangent(rec, s, (a, c), p, prev);
+        }
+        if offset == 0.0 {
+            let line = rec.line_through(
+                &format!("{s}: slide line"),
+                (&self.names[c], p[c]),
+                (&self.names[a], p[a]),
+            )?;
+            return Ok(line.angle());
+        }
+        // Tangent from a to the offset circle of c: Thales circle on ca.
+        let mid = (p[a] + p[c]) * 0.5;
+        let thales = Compass {
+            name: "the midpoint of the slide",
+            center: mid,
+            radius: p[a].distance(p[c]) * 0.5,
+        };
+        let off = self.compass(p, c, offset.abs() / rec.scale().value());
+        let side = if offset > 0.0 {
+            Pick::Right
+        } else {
+            Pick::Left
+        };
+        let (t, _, _) =
+            rec.meet_circles(&format!("{s}: foot of the slide line"), thales, off, side)?;
+        Ok(rec
+            .line_through(
+                &format!("{s}: slide line"),
+                ("T", t),
+                (&self.names[a], p[a]),
+            )?
+            .angle())
+    }
+
     /// Whether the path of the pin `a` passes through the pivot `c` (within the rounding of
     /// the drawing's coordinates), so that the slot at their coincidence is the tangent to
     /// that path: for a crank pin about a fixed pivot, the crank circle through `a` meets `c`.
@@ -337,6 +351,11 @@ impl Program {
         (ra - rc).abs() <= rounding
     }
 
+    /// The slide line of an RPR group without offset when the pin `a` stands on the pivot
+    /// `c`: the two points no longer fix it, its limit is the tangent to the path of `a`
+    /// (for a crank pin: perpendicular to the crank, in the sense of increasing φ₁, or the
+    /// one nearest to the previous position's slide `prev`). Refused for a pin whose path's
+    /// tangent the drawing does not give (a point not on the crank, or a moving pivot).
     fn slot_tangent(
         &self,
         rec: &mut Recorder,

@@ -1,7 +1,7 @@
 //! A mechanism compiled into an indexed program: names resolved once, so solving a position
 //! is a straight run over the operations with no lookups.
 
-use super::model::{Branch, Dir, Dyad, DyadKind, Guide, Mechanism};
+use super::model::{Branch, Dir, Dyad, DyadKind, Guide, LinkPoint, Mechanism};
 use super::{LinkageError, ModelError};
 use crate::geom::DVec2;
 use std::collections::HashMap;
@@ -149,6 +149,231 @@ pub struct Program {
     pub(super) fixed_dirs: Vec<(f64, DVec2)>,
 }
 
+/// The point names met so far while compiling, each with its index.
+#[derive(Default)]
+struct Names {
+    /// By index, in order of naming.
+    names: Vec<String>,
+    /// Index by name.
+    known: HashMap<String, usize>,
+}
+
+impl Names {
+    /// Name a new point, refused when the name is taken.
+    fn add(&mut self, n: &str) -> Result<usize, LinkageError> {
+        if self.known.contains_key(n) {
+            return Err(ModelError::DuplicatePoint(n.to_string()).into());
+        }
+        self.names.push(n.to_string());
+        self.known.insert(n.to_string(), self.names.len() - 1);
+        Ok(self.names.len() - 1)
+    }
+
+    /// The index of a named point known so far; `what` refers to it.
+    fn look(&self, n: &str, what: &str) -> Result<usize, LinkageError> {
+        self.known.get(n).copied().ok_or_else(|| {
+            ModelError::UnknownPoint {
+                what: what.to_string(),
+                name: n.to_string(),
+            }
+            .into()
+        })
+    }
+
+    /// A direction of group `what` with its points resolved.
+    fn dir(&self, d: &Dir, what: &str) -> Result<PDir, LinkageError> {
+        Ok(match d {
+            Dir::Fixed(a) => PDir::Fixed(*a),
+            Dir::Along { from, to, angle } => PDir::Along {
+                from: self.look(from, what)?,
+                to: self.look(to, what)?,
+                angle: *angle,
+            },
+        })
+    }
+
+    /// A guide of group `what` with its points resolved.
+    fn guide(&self, g: &Guide, what: &str) -> Result<PGuide, LinkageError> {
+        Ok(PGuide {
+            through: self.look(&g.through, what)?,
+            dir: self.dir(&g.dir, what)?,
+            offset: g.offset,
+        })
+    }
+
+    /// The dyad of group `what`: its given points resolved, then its joint named.
+    fn dyad(&mut self, d: &Dyad, what: &str) -> Result<PDyad, LinkageError> {
+        Ok(match d {
+            Dyad::Rrr {
+                a,
+                la,
+                b,
+                lb,
+                joint,
+                branch,
+            } => {
+                let (a, b) = (self.look(a, what)?, self.look(b, what)?);
+                PDyad::Rrr {
+                    a,
+                    la: *la,
+                    b,
+                    lb: *lb,
+                    joint: self.add(joint)?,
+                    branch: *branch,
+                }
+            }
+            Dyad::Rrp {
+                a,
+                la,
+                guide,
+                joint,
+                branch,
+            } => {
+                let (a, guide) = (self.look(a, what)?, self.guide(guide, what)?);
+                PDyad::Rrp {
+                    a,
+                    la: *la,
+                    guide,
+                    joint: self.add(joint)?,
+                    branch: *branch,
+                }
+            }
+            Dyad::Rpr { a, c, offset } => PDyad::Rpr {
+                a: self.look(a, what)?,
+                c: self.look(c, what)?,
+                offset: *offset,
+            },
+            Dyad::Prp {
+                guide_i,
+                guide_j,
+                joint,
+            } => {
+                let (gi, gj) = (self.guide(guide_i, what)?, self.guide(guide_j, what)?);
+                PDyad::Prp {
+                    gi,
+                    gj,
+                    joint: self.add(joint)?,
+                }
+            }
+            Dyad::Rpp {
+                a,
+                slide,
+                guide,
+                joint,
+            } => {
+                let (a, slide, guide) = (
+                    self.look(a, what)?,
+                    self.dir(slide, what)?,
+                    self.guide(guide, what)?,
+                );
+                PDyad::Rpp {
+                    a,
+                    slide,
+                    guide,
+                    joint: self.add(joint)?,
+                }
+            }
+        })
+    }
+}
+
+/// Place every further point whose link is known by now and not yet placed.
+fn place_points(
+    points: &[LinkPoint],
+    placed: &mut [bool],
+    links_known: &[u32],
+    names: &mut Names,
+    ops: &mut Vec<Op>,
+) -> Result<(), LinkageError> {
+    for (k, p) in points.iter().enumerate() {
+        if !placed[k] && links_known.contains(&p.link) {
+            placed[k] = true;
+            let idx = names.add(&p.name)?;
+            ops.push(Op::Point {
+                idx,
+                link: p.link,
+                along: p.along,
+                across: p.across,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The links of group `what` join the known ones; refused if one is the frame or known.
+fn claim_links(
+    links_known: &mut Vec<u32>,
+    links: [u32; 2],
+    what: &str,
+) -> Result<(), LinkageError> {
+    for l in links {
+        if l == 0 || links_known.contains(&l) {
+            return Err(ModelError::LinkReused {
+                what: what.to_string(),
+                link: l,
+            }
+            .into());
+        }
+        links_known.push(l);
+    }
+    Ok(())
+}
+
+/// An RPP group's slide is a direction of its link j (`link`), which turns with the guide's
+/// carrier: both frame directions, or both along the same two points.
+fn slide_with_guide(
+    dyad: &PDyad,
+    names: &Names,
+    what: &str,
+    link: u32,
+) -> Result<(), LinkageError> {
+    if let PDyad::Rpp {
+        a, slide, guide, ..
+    } = *dyad
+    {
+        let same = match (slide, guide.dir) {
+            (PDir::Fixed(_), PDir::Fixed(_)) => true,
+            (
+                PDir::Along { from, to, .. },
+                PDir::Along {
+                    from: f2, to: t2, ..
+                },
+            ) => (from, to) == (f2, t2),
+            _ => false,
+        };
+        if !same {
+            return Err(ModelError::SlideAcrossGuide {
+                what: what.to_string(),
+                point: names.names[a].clone(),
+                link,
+            }
+            .into());
+        }
+    }
+    Ok(())
+}
+
+/// Every frame direction of the operations with its unit vector, each once.
+fn fixed_dirs(ops: &[Op]) -> Vec<(f64, DVec2)> {
+    let mut fixed_dirs: Vec<(f64, DVec2)> = Vec::new();
+    for op in ops {
+        let Op::Dyad { dyad, .. } = op else { continue };
+        let [g0, g1] = dyad.guides();
+        let dirs = match *dyad {
+            PDyad::Rpp { slide, .. } => [Some(slide), g0.map(|g| g.dir)],
+            _ => [g0.map(|g| g.dir), g1.map(|g| g.dir)],
+        };
+        for d in dirs.into_iter().flatten() {
+            if let PDir::Fixed(a) = d {
+                if !fixed_dirs.iter().any(|f| f.0.to_bits() == a.to_bits()) {
+                    fixed_dirs.push((a, DVec2::from_angle(a)));
+                }
+            }
+        }
+    }
+    fixed_dirs
+}
+
 impl Program {
     /// Index of a named point.
     pub fn index(&self, name: &str) -> Option<usize> {
@@ -157,61 +382,20 @@ impl Program {
 
     /// Compile a mechanism, checking every name and link reference in attachment order.
     pub fn compile(m: &Mechanism) -> Result<Self, LinkageError> {
-        let mut names: Vec<String> = Vec::new();
-        let mut known: HashMap<String, usize> = HashMap::new();
-        let add = |names: &mut Vec<String>,
-                   known: &mut HashMap<String, usize>,
-                   n: &str|
-         -> Result<usize, LinkageError> {
-            if known.contains_key(n) {
-                return Err(ModelError::DuplicatePoint(n.to_string()).into());
-            }
-            names.push(n.to_string());
-            known.insert(n.to_string(), names.len() - 1);
-            Ok(names.len() - 1)
-        };
+        let mut names = Names::default();
         let fixed: Vec<DVec2> = m.fixed.iter().map(|f| f.at).collect();
         for f in &m.fixed {
-            add(&mut names, &mut known, &f.name)?;
+            names.add(&f.name)?;
         }
-        let look =
-            |known: &HashMap<String, usize>, n: &str, what: &str| -> Result<usize, LinkageError> {
-                known.get(n).copied().ok_or_else(|| {
-                    ModelError::UnknownPoint {
-                        what: what.to_string(),
-                        name: n.to_string(),
-                    }
-                    .into()
-                })
-            };
-        let centre = look(&known, &m.crank.centre, "crank centre")?;
+        let centre = names.look(&m.crank.centre, "crank centre")?;
         if centre >= fixed.len() {
             return Err(ModelError::CentreNotFixed(m.crank.centre.clone()).into());
         }
-        let pin = add(&mut names, &mut known, &m.crank.pin)?;
+        let pin = names.add(&m.crank.pin)?;
         let mut links_known = vec![m.crank.link];
         let mut ops = Vec::new();
         let mut placed = vec![false; m.points.len()];
-        let mut place_points = |links_known: &[u32],
-                                names: &mut Vec<String>,
-                                known: &mut HashMap<String, usize>,
-                                ops: &mut Vec<Op>|
-         -> Result<(), LinkageError> {
-            for (k, p) in m.points.iter().enumerate() {
-                if !placed[k] && links_known.contains(&p.link) {
-                    placed[k] = true;
-                    let idx = add(names, known, &p.name)?;
-                    ops.push(Op::Point {
-                        idx,
-                        link: p.link,
-                        along: p.along,
-                        across: p.across,
-                    });
-                }
-            }
-            Ok(())
-        };
-        place_points(&links_known, &mut names, &mut known, &mut ops)?;
+        place_points(&m.points, &mut placed, &links_known, &mut names, &mut ops)?;
         for (gi, g) in m.groups.iter().enumerate() {
             let what = format!(
                 "group {} ({}, links {}, {})",
@@ -220,135 +404,15 @@ impl Program {
                 g.links[0],
                 g.links[1]
             );
-            let pdir = |known: &HashMap<String, usize>, d: &Dir| -> Result<PDir, LinkageError> {
-                Ok(match d {
-                    Dir::Fixed(a) => PDir::Fixed(*a),
-                    Dir::Along { from, to, angle } => PDir::Along {
-                        from: look(known, from, &what)?,
-                        to: look(known, to, &what)?,
-                        angle: *angle,
-                    },
-                })
-            };
-            let pguide =
-                |known: &HashMap<String, usize>, g: &Guide| -> Result<PGuide, LinkageError> {
-                    Ok(PGuide {
-                        through: look(known, &g.through, &what)?,
-                        dir: pdir(known, &g.dir)?,
-                        offset: g.offset,
-                    })
-                };
-            let dyad = match &g.dyad {
-                Dyad::Rrr {
-                    a,
-                    la,
-                    b,
-                    lb,
-                    joint,
-                    branch,
-                } => {
-                    let (a, b) = (look(&known, a, &what)?, look(&known, b, &what)?);
-                    PDyad::Rrr {
-                        a,
-                        la: *la,
-                        b,
-                        lb: *lb,
-                        joint: add(&mut names, &mut known, joint)?,
-                        branch: *branch,
-                    }
-                }
-                Dyad::Rrp {
-                    a,
-                    la,
-                    guide,
-                    joint,
-                    branch,
-                } => {
-                    let (a, guide) = (look(&known, a, &what)?, pguide(&known, guide)?);
-                    PDyad::Rrp {
-                        a,
-                        la: *la,
-                        guide,
-                        joint: add(&mut names, &mut known, joint)?,
-                        branch: *branch,
-                    }
-                }
-                Dyad::Rpr { a, c, offset } => PDyad::Rpr {
-                    a: look(&known, a, &what)?,
-                    c: look(&known, c, &what)?,
-                    offset: *offset,
-                },
-                Dyad::Prp {
-                    guide_i,
-                    guide_j,
-                    joint,
-                } => {
-                    let (gi, gj) = (pguide(&known, guide_i)?, pguide(&known, guide_j)?);
-                    PDyad::Prp {
-                        gi,
-                        gj,
-                        joint: add(&mut names, &mut known, joint)?,
-                    }
-                }
-                Dyad::Rpp {
-                    a,
-                    slide,
-                    guide,
-                    joint,
-                } => {
-                    let (a, slide, guide) = (
-                        look(&known, a, &what)?,
-                        pdir(&known, slide)?,
-                        pguide(&known, guide)?,
-                    );
-                    PDyad::Rpp {
-                        a,
-                        slide,
-                        guide,
-                        joint: add(&mut names, &mut known, joint)?,
-                    }
-                }
-            };
-            for l in g.links {
-                if l == 0 || links_known.contains(&l) {
-                    return Err(ModelError::LinkReused {
-                        what: what.to_string(),
-                        link: l,
-                    }
-                    .into());
-                }
-                links_known.push(l);
-            }
-            if let PDyad::Rpp {
-                a, slide, guide, ..
-            } = dyad
-            {
-                // The slide is a direction of link j, which turns with the guide's carrier.
-                let same = match (slide, guide.dir) {
-                    (PDir::Fixed(_), PDir::Fixed(_)) => true,
-                    (
-                        PDir::Along { from, to, .. },
-                        PDir::Along {
-                            from: f2, to: t2, ..
-                        },
-                    ) => (from, to) == (f2, t2),
-                    _ => false,
-                };
-                if !same {
-                    return Err(ModelError::SlideAcrossGuide {
-                        what: what.to_string(),
-                        point: names[a].clone(),
-                        link: g.links[1],
-                    }
-                    .into());
-                }
-            }
+            let dyad = names.dyad(&g.dyad, &what)?;
+            claim_links(&mut links_known, g.links, &what)?;
+            slide_with_guide(&dyad, &names, &what, g.links[1])?;
             ops.push(Op::Dyad {
                 group: gi,
                 links: g.links,
                 dyad,
             });
-            place_points(&links_known, &mut names, &mut known, &mut ops)?;
+            place_points(&m.points, &mut placed, &links_known, &mut names, &mut ops)?;
         }
         if let Some(k) = placed.iter().position(|p| !p) {
             return Err(ModelError::PointOnUnknownLink {
@@ -358,24 +422,9 @@ impl Program {
             .into());
         }
         let link_count = links_known.iter().copied().max().unwrap_or(1) as usize + 1;
-        let mut fixed_dirs: Vec<(f64, DVec2)> = Vec::new();
-        for op in &ops {
-            let Op::Dyad { dyad, .. } = op else { continue };
-            let [g0, g1] = dyad.guides();
-            let dirs = match *dyad {
-                PDyad::Rpp { slide, .. } => [Some(slide), g0.map(|g| g.dir)],
-                _ => [g0.map(|g| g.dir), g1.map(|g| g.dir)],
-            };
-            for d in dirs.into_iter().flatten() {
-                if let PDir::Fixed(a) = d {
-                    if !fixed_dirs.iter().any(|f| f.0.to_bits() == a.to_bits()) {
-                        fixed_dirs.push((a, DVec2::from_angle(a)));
-                    }
-                }
-            }
-        }
+        let fixed_dirs = fixed_dirs(&ops);
         Ok(Self {
-            names,
+            names: names.names,
             fixed,
             centre,
             pin,

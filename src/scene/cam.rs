@@ -89,11 +89,77 @@ pub(crate) struct RawCam {
     pub rotation: Option<String>,
 }
 
+/// `key` under `[cam]`.
+fn key(k: &str) -> String {
+    join(CAM, k)
+}
+
 /// Validate `[cam]`.
 pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
-    let key = |k: &str| join(CAM, k);
     let before = check.problems.len();
     let kind = check.word(&key("follower"), raw.follower.as_ref(), &FOLLOWERS);
+    let (rise, ret) = laws(check, raw);
+    let phases = phases(check, raw.phases.as_deref());
+    let (follower, stroke) = follower(check, raw, kind);
+    let (roller, base_radius) = radii(check, raw, follower);
+    let gamma_min = gamma_min(check, raw.gamma_min);
+    let rho_min = rho_min(check, raw.rho_min);
+    let divisions = divisions(check, raw.divisions);
+    let poles = poles(check, raw.poles.as_deref());
+    let closure = check.word_or_first(&key("closure"), raw.closure.as_ref(), &CLOSURES);
+    let given = check.word_or_first(&key("given"), raw.given.as_ref(), &GIVEN);
+    let rotation = check.word_or_first(&key("rotation"), raw.rotation.as_ref(), &ROTATIONS);
+    let spec = CamSpec {
+        phases,
+        rise,
+        ret,
+        stroke,
+        follower,
+        roller,
+        gamma_min,
+        rho_min,
+        base_radius,
+        divisions,
+        scale_s: check.scale(
+            Key::CamScaleS.path(),
+            raw.scale_s,
+            Quantity::Length,
+            "a scale μ_S > 0 m/mm",
+        ),
+        scale_l: check.scale(
+            Key::CamScaleL.path(),
+            raw.scale_l,
+            Quantity::Length,
+            "a scale μ_l > 0 m/mm",
+        ),
+        scale_phi: check.scale(
+            Key::CamScalePhi.path(),
+            raw.scale_phi,
+            Quantity::Angle,
+            "a scale μ_φ > 0 rad/mm",
+        ),
+        poles,
+        law_assumed: raw.law_assumed.unwrap_or(false),
+        quoted_r_min: raw
+            .quoted_r_min
+            .map(|mm| check.length(&key("quoted_r_min"), Some(mm))),
+        closure,
+        given,
+        rotation,
+    };
+    for (k, scale) in [
+        (Key::CamScaleS, spec.scale_s),
+        (Key::CamScaleL, spec.scale_l),
+    ] {
+        super::drawing::draws(check, k.path(), scale, "the stroke S_max", spec.stroke);
+    }
+    super::drawing::turn_axis(check, Key::CamScalePhi.path(), spec.scale_phi, "the cam's");
+    (check.problems.len() == before).then_some(spec)
+}
+
+/// The laws of the rise and the return (the return's as the rise's unless given), with the
+/// "+ −" law's `ratio`.
+fn laws(check: &mut Checker, raw: &RawCam) -> (Law, Law) {
     let ratio = match raw.ratio {
         Some(r) if r.is_finite() && r >= RATIO.0 && r <= RATIO.1 => r,
         Some(r) => {
@@ -121,7 +187,12 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         Some(v) => law_of(check, "return_law", Some(v)),
         None => rise,
     };
-    let phases = phases(check, raw.phases.as_deref());
+    (rise, ret)
+}
+
+/// The follower of `kind` (a rocker's arm and sense, the offset) and its stroke: in mm, or a
+/// rocker's swing in degrees × its arm.
+fn follower(check: &mut Checker, raw: &RawCam, kind: Option<Kind>) -> (Follower, f64) {
     let arm = match kind {
         Some(Kind::Rocker) => Some(check.length(&key("arm"), raw.arm)),
         _ => {
@@ -176,6 +247,12 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         Some(Kind::Flat) => Follower::Flat { offset },
         _ => Follower::Translating { offset },
     };
+    (follower, stroke)
+}
+
+/// The roller's and the base circle's radii: the roller within the base circle, the base
+/// circle beyond a translating follower's offset.
+fn radii(check: &mut Checker, raw: &RawCam, follower: Follower) -> (Option<f64>, Option<f64>) {
     let roller = raw.roller.map(|mm| {
         if mm == 0.0 {
             0.0
@@ -207,7 +284,12 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             );
         }
     }
-    let gamma_min = match raw.gamma_min {
+    (roller, base_radius)
+}
+
+/// γ_min, degrees in the file, radians here (60° unless given).
+fn gamma_min(check: &mut Checker, v: Option<f64>) -> f64 {
+    match v {
         Some(g) if g.is_finite() && g >= GAMMA_MIN_DEG.0 && g <= GAMMA_MIN_DEG.1 => g.to_radians(),
         Some(g) => {
             check.push(
@@ -221,8 +303,12 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             FRAC_60
         }
         None => FRAC_60,
-    };
-    let rho_min = match raw.rho_min {
+    }
+}
+
+/// The profile's smallest radius of curvature ρ_min, mm in the file, m here (0 unless given).
+fn rho_min(check: &mut Checker, v: Option<f64>) -> f64 {
+    match v {
         Some(mm) if mm.is_finite() && (0.0..=MAX_MM).contains(&mm) => mm * 1e-3,
         Some(mm) => {
             check.push(
@@ -233,8 +319,12 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             0.0
         }
         None => 0.0,
-    };
-    let divisions = match raw.divisions.unwrap_or(12) {
+    }
+}
+
+/// The intervals per rise and return (12 unless given).
+fn divisions(check: &mut Checker, v: Option<i64>) -> usize {
+    match v.unwrap_or(12) {
         n if (2..=MAX_DIVISIONS).contains(&n) => n as usize,
         n => {
             check.push(
@@ -244,8 +334,12 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             );
             12
         }
-    };
-    let poles = match raw.poles.as_deref() {
+    }
+}
+
+/// The pole distances [H₁, H₂], mm.
+fn poles(check: &mut Checker, v: Option<&[f64]>) -> Option<[f64; 2]> {
+    match v {
         None => None,
         Some([a, b]) if [*a, *b].iter().all(|h| (POLE_MM.0..=POLE_MM.1).contains(h)) => {
             Some([*a, *b])
@@ -261,56 +355,7 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
             );
             None
         }
-    };
-    let closure = check.word_or_first(&key("closure"), raw.closure.as_ref(), &CLOSURES);
-    let given = check.word_or_first(&key("given"), raw.given.as_ref(), &GIVEN);
-    let rotation = check.word_or_first(&key("rotation"), raw.rotation.as_ref(), &ROTATIONS);
-    let spec = CamSpec {
-        phases,
-        rise,
-        ret,
-        stroke,
-        follower,
-        roller,
-        gamma_min,
-        rho_min,
-        base_radius,
-        divisions,
-        scale_s: check.scale(
-            Key::CamScaleS.path(),
-            raw.scale_s,
-            Quantity::Length,
-            "a scale μ_S > 0 m/mm",
-        ),
-        scale_l: check.scale(
-            Key::CamScaleL.path(),
-            raw.scale_l,
-            Quantity::Length,
-            "a scale μ_l > 0 m/mm",
-        ),
-        scale_phi: check.scale(
-            Key::CamScalePhi.path(),
-            raw.scale_phi,
-            Quantity::Angle,
-            "a scale μ_φ > 0 rad/mm",
-        ),
-        poles,
-        law_assumed: raw.law_assumed.unwrap_or(false),
-        quoted_r_min: raw
-            .quoted_r_min
-            .map(|mm| check.length(&key("quoted_r_min"), Some(mm))),
-        closure,
-        given,
-        rotation,
-    };
-    for (k, scale) in [
-        (Key::CamScaleS, spec.scale_s),
-        (Key::CamScaleL, spec.scale_l),
-    ] {
-        super::drawing::draws(check, k.path(), scale, "the stroke S_max", spec.stroke);
     }
-    super::drawing::turn_axis(check, Key::CamScalePhi.path(), spec.scale_phi, "the cam's");
-    (check.problems.len() == before).then_some(spec)
 }
 
 /// 60°, the default γ_min.

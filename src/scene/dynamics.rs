@@ -8,7 +8,7 @@ use crate::dynamics::{
     ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
 };
 use crate::forces::ForceSpec;
-use crate::scale::Quantity;
+use crate::scale::{Quantity, Scale};
 use serde::Deserialize;
 
 /// The lightest flywheel material a scene may give, kg/m³.
@@ -69,6 +69,11 @@ pub(crate) struct RawSeed {
     pub expression: Option<Vec<f64>>,
 }
 
+/// `key` under `[dynamics]`.
+fn key(k: &str) -> String {
+    join(KEY, k)
+}
+
 /// Validate `[dynamics]` against `[forces]` (its links must have masses there).
 pub(crate) fn dynamics(
     check: &mut Checker,
@@ -76,7 +81,6 @@ pub(crate) fn dynamics(
     forces: Option<&ForceSpec>,
     has_forces: bool,
 ) -> DynamicsSpec {
-    let key = |k: &str| join(KEY, k);
     if !has_forces {
         check.push(
             KEY,
@@ -92,9 +96,62 @@ pub(crate) fn dynamics(
             "a mean angular velocity ω_ср > 0 rad/s (at most 1e6)",
         )
     });
-    let delta = match check.required(
+    let delta = delta(check, raw.delta);
+    let constant = constants(check, &raw.constant);
+    let links = raw.links.as_ref().map(|ls| links(check, ls, forces));
+    let count = raw.count.and_then(|n| {
+        if (4..=MAX_COUNT).contains(&n) {
+            u32::try_from(n).ok()
+        } else {
+            check.push(
+                key("count"),
+                Some(n.to_string()),
+                format!("expected a number of positions from 4 to {MAX_COUNT}"),
+            );
+            None
+        }
+    });
+    let [scale_m, scale_phi, scale_j, scale_t] = scales(check, &raw);
+    let pole_h = raw.pole_h.map(|h| {
+        check.in_range(
+            &key("pole_h"),
+            h,
+            1e4,
+            "a pole distance H > 0 mm (at most 1e4)",
+        )
+    });
+    let flywheel = flywheel(check, raw.flywheel.unwrap_or_default());
+    let seed = raw.seed.map(|s| seed(check, s));
+    let constant_moment = check.word_or_first(
+        &key("constant_moment"),
+        raw.constant_moment.as_ref(),
+        &[
+            ("driving", ConstantMoment::Driving),
+            ("resisting", ConstantMoment::Resisting),
+        ],
+    );
+    DynamicsSpec {
+        constant_moment,
+        omega_avg,
+        delta,
+        constant,
+        links,
+        count,
+        scale_m,
+        scale_phi,
+        pole_h,
+        scale_j,
+        scale_t,
+        flywheel,
+        seed,
+    }
+}
+
+/// The coefficient of irregularity δ, 0 < δ < 1.
+fn delta(check: &mut Checker, v: Option<f64>) -> f64 {
+    match check.required(
         &key("delta"),
-        raw.delta,
+        v,
         "the coefficient of irregularity δ, 0 < δ < 1",
     ) {
         Some(d) if d.is_finite() && d > 0.0 && d < 1.0 => d,
@@ -107,10 +164,13 @@ pub(crate) fn dynamics(
             0.05
         }
         None => 0.05,
-    };
-    let constant = raw
-        .constant
-        .iter()
+    }
+}
+
+/// `[[dynamics.constant]]`: the constant reduced inertias, each named (J1, J2, … unless
+/// given).
+fn constants(check: &mut Checker, raw: &[RawConstant]) -> Vec<ConstantInertia> {
+    raw.iter()
         .enumerate()
         .map(|(i, c)| {
             let base = item(&key("constant"), i);
@@ -133,47 +193,41 @@ pub(crate) fn dynamics(
             };
             ConstantInertia { name, inertia }
         })
-        .collect();
-    let links = raw.links.as_ref().map(|ls| {
-        let base = key("links");
-        if ls.is_empty() {
-            check.push(
-                &base,
-                Some("[]".into()),
-                "expected the link numbers whose masses count ([3, 5])",
-            );
-        }
-        ls.iter()
-            .enumerate()
-            .filter_map(|(i, &l)| {
-                let k = item(&base, i);
-                let l = check.link(&k, l, 1)?;
-                if let Some(f) = forces {
-                    if !f.links.iter().any(|m| m.link == l) {
-                        check.push(
-                            k,
-                            Some(l.to_string()),
-                            "expected a link with a [[forces.link]] (its mass)",
-                        );
-                        return None;
-                    }
+        .collect()
+}
+
+/// `links`: the link numbers whose masses count, each with a `[[forces.link]]`.
+fn links(check: &mut Checker, ls: &[i64], forces: Option<&ForceSpec>) -> Vec<u32> {
+    let base = key("links");
+    if ls.is_empty() {
+        check.push(
+            &base,
+            Some("[]".into()),
+            "expected the link numbers whose masses count ([3, 5])",
+        );
+    }
+    ls.iter()
+        .enumerate()
+        .filter_map(|(i, &l)| {
+            let k = item(&base, i);
+            let l = check.link(&k, l, 1)?;
+            if let Some(f) = forces {
+                if !f.links.iter().any(|m| m.link == l) {
+                    check.push(
+                        k,
+                        Some(l.to_string()),
+                        "expected a link with a [[forces.link]] (its mass)",
+                    );
+                    return None;
                 }
-                Some(l)
-            })
-            .collect()
-    });
-    let count = raw.count.and_then(|n| {
-        if (4..=MAX_COUNT).contains(&n) {
-            u32::try_from(n).ok()
-        } else {
-            check.push(
-                key("count"),
-                Some(n.to_string()),
-                format!("expected a number of positions from 4 to {MAX_COUNT}"),
-            );
-            None
-        }
-    });
+            }
+            Some(l)
+        })
+        .collect()
+}
+
+/// The diagrams' scales μ_M, μ_φ (with its turn's axis), μ_J, μ_T.
+fn scales(check: &mut Checker, raw: &RawDynamics) -> [Option<Scale>; 4] {
     let scale = |check: &mut Checker, k: Key, v: Option<f64>, q: Quantity, want: &str| {
         check.free_scale(k.path(), v, q, want)
     };
@@ -211,39 +265,7 @@ pub(crate) fn dynamics(
         Quantity::Work,
         "a scale μ_T > 0 J/mm",
     );
-    let pole_h = raw.pole_h.map(|h| {
-        check.in_range(
-            &key("pole_h"),
-            h,
-            1e4,
-            "a pole distance H > 0 mm (at most 1e4)",
-        )
-    });
-    let flywheel = flywheel(check, raw.flywheel.unwrap_or_default());
-    let seed = raw.seed.map(|s| seed(check, s));
-    let constant_moment = check.word_or_first(
-        &key("constant_moment"),
-        raw.constant_moment.as_ref(),
-        &[
-            ("driving", ConstantMoment::Driving),
-            ("resisting", ConstantMoment::Resisting),
-        ],
-    );
-    DynamicsSpec {
-        constant_moment,
-        omega_avg,
-        delta,
-        constant,
-        links,
-        count,
-        scale_m,
-        scale_phi,
-        pole_h,
-        scale_j,
-        scale_t,
-        flywheel,
-        seed,
-    }
+    [scale_m, scale_phi, scale_j, scale_t]
 }
 
 /// `[dynamics.flywheel]`: `kind` "rim" (the seed's coefficients by default) or "disc".

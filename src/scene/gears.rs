@@ -97,11 +97,58 @@ pub(crate) fn gear_sections(
     (check.problems.len() == before && (raw.is_some() || train.is_some())).then_some(spec)
 }
 
+/// `key` under `[gears]`.
+fn key(k: &str) -> String {
+    join(GEARS, k)
+}
+
 /// Validate `[gears]`.
 fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
-    let key = |k: &str| join(GEARS, k);
     let before = check.problems.len();
     let module = raw.module.map(|m| module_mm(check, &key("module"), m));
+    let rack = basic_rack(check, raw);
+    let scale_l = check.scale(
+        Key::GearsScaleL.path(),
+        raw.scale_l,
+        Quantity::Length,
+        "a scale μ_l > 0 m/mm",
+    );
+    if raw.pair.is_none() && raw.rack.is_empty() {
+        check.push(
+            GEARS,
+            None,
+            "expected a [gears.pair] or at least one [[gears.rack]]",
+        );
+    }
+    // A rack that cannot be drawn is reported once, under its own key; the pair and the
+    // wheels it would cut are not judged with it.
+    let rack_ok = rack.validate().is_ok();
+    let pair = raw
+        .pair
+        .as_ref()
+        .filter(|_| rack_ok)
+        .and_then(|p| pair(check, p, module, rack));
+    let racks = racks(check, &raw.rack, module, rack);
+    if let Some(p) = pair.and_then(|p| Pair::working(p).ok()) {
+        figure(
+            check,
+            Key::GearsScaleL.path(),
+            scale_l,
+            p.a_w + p.ra[0] + p.ra[1],
+            "a_w + r_a1 + r_a2",
+        );
+    }
+    (check.problems.len() == before).then_some(GearsSpec {
+        pair,
+        scale_l,
+        racks,
+        planetary: None,
+    })
+}
+
+/// The basic rack: GOST 13755 unless given; one that cannot be drawn is reported under the
+/// key of its first bad parameter (the default's, as such).
+fn basic_rack(check: &mut Checker, raw: &RawGears) -> BasicRack {
     let g = BasicRack::GOST_13755;
     let rack = BasicRack {
         alpha: raw
@@ -130,30 +177,22 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
         };
         check.push(key(what), Some(shown), format!("expected {expected}"));
     }
-    let scale_l = check.scale(
-        Key::GearsScaleL.path(),
-        raw.scale_l,
-        Quantity::Length,
-        "a scale μ_l > 0 m/mm",
-    );
-    if raw.pair.is_none() && raw.rack.is_empty() {
-        check.push(
-            GEARS,
-            None,
-            "expected a [gears.pair] or at least one [[gears.rack]]",
-        );
-    }
-    // A rack that cannot be drawn is reported once, under its own key; the pair and the
-    // wheels it would cut are not judged with it.
+    rack
+}
+
+/// `[[gears.rack]]`: each wheel cut by the rack (a unique name, its module here or in
+/// `[gears]`, z, x, the rack positions, μ_l), refused when it cannot be cut or its tooth is
+/// pointed before its tip; none is judged with a rack that cannot be drawn.
+fn racks(
+    check: &mut Checker,
+    raw: &[RawRack],
+    module: Option<f64>,
+    rack: BasicRack,
+) -> Vec<RackSpec> {
     let rack_ok = rack.validate().is_ok();
-    let pair = raw
-        .pair
-        .as_ref()
-        .filter(|_| rack_ok)
-        .and_then(|p| pair(check, p, module, rack));
     let mut names: Vec<String> = Vec::new();
     let mut racks = Vec::new();
-    for (i, r) in raw.rack.iter().enumerate() {
+    for (i, r) in raw.iter().enumerate() {
         let base = item(&key("rack"), i);
         let k = |s: &str| join(&base, s);
         let name = r.name.clone().unwrap_or_else(|| (i + 1).to_string());
@@ -181,20 +220,7 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
             None => 5,
         };
         let x = shift(check, &k("x"), r.x.unwrap_or(0.0));
-        let positions = match r.positions {
-            None => DEFAULT_POSITIONS,
-            Some(n) if (2..=MAX_POSITIONS).contains(&n) => {
-                usize::try_from(n).unwrap_or(DEFAULT_POSITIONS)
-            }
-            Some(n) => {
-                check.push(
-                    k("positions"),
-                    Some(n.to_string()),
-                    format!("expected 2 to {MAX_POSITIONS} rack positions"),
-                );
-                DEFAULT_POSITIONS
-            }
-        };
+        let positions = positions(check, &k("positions"), r.positions);
         let scale = check.scale(
             &k("scale_l"),
             r.scale_l,
@@ -220,21 +246,25 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
             Err(e) => check.push(k("x"), Some(number(x)), format!("a wheel that can be cut: {e}")),
         }
     }
-    if let Some(p) = pair.and_then(|p| Pair::working(p).ok()) {
-        figure(
-            check,
-            Key::GearsScaleL.path(),
-            scale_l,
-            p.a_w + p.ra[0] + p.ra[1],
-            "a_w + r_a1 + r_a2",
-        );
+    racks
+}
+
+/// The rack positions of a generation ([`DEFAULT_POSITIONS`] unless given).
+fn positions(check: &mut Checker, key: &str, v: Option<i64>) -> usize {
+    match v {
+        None => DEFAULT_POSITIONS,
+        Some(n) if (2..=MAX_POSITIONS).contains(&n) => {
+            usize::try_from(n).unwrap_or(DEFAULT_POSITIONS)
+        }
+        Some(n) => {
+            check.push(
+                key,
+                Some(n.to_string()),
+                format!("expected 2 to {MAX_POSITIONS} rack positions"),
+            );
+            DEFAULT_POSITIONS
+        }
     }
-    (check.problems.len() == before).then_some(GearsSpec {
-        pair,
-        scale_l,
-        racks,
-        planetary: None,
-    })
 }
 
 /// `[gears.pair]`: z = [z₁, z₂], x = [x₁, x₂] (or x = [x₁] with `centre_distance`, mm), the

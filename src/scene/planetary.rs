@@ -47,16 +47,84 @@ pub(crate) struct RawMesh {
     pub wheels: Option<Vec<String>>,
 }
 
+/// The key path of the section.
+const P: &str = "planetary";
+
+/// `key` under `[planetary]`.
+fn key(k: &str) -> String {
+    join(P, k)
+}
+
 /// Validate `[planetary]`: wheels on named shafts, meshes by wheel names, the input, output,
 /// fixed shaft, carrier and satellites by shaft name; the train must have mobility 1 and be
 /// drawable (coaxial).
 pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<PlanetarySpec> {
-    const P: &str = "planetary";
-    let key = |k: &str| join(P, k);
     let before = check.problems.len();
     let module = raw
         .module
         .map_or(0.001, |m| module_mm(check, Key::PlanetaryModule.path(), m));
+    let (mut shafts, wheels) = wheels(check, raw);
+    let meshes = meshes(check, raw, &wheels);
+    let roles = [
+        ("carrier", &raw.carrier, true),
+        ("input", &raw.input, true),
+        ("output", &raw.output, true),
+        ("fixed", &raw.fixed, false),
+    ];
+    let [carrier, input, output, fixed] =
+        roles.map(|(k, v, add)| shaft_of(check, &mut shafts, &key(k), v.as_ref(), add));
+    let satellites: Vec<usize> = raw
+        .satellites
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| {
+            shaft_of(
+                check,
+                &mut shafts,
+                &item(&key("satellites"), i),
+                Some(s),
+                false,
+            )
+        })
+        .collect();
+    for (k, v) in [("input", input), ("output", output)] {
+        if v.is_none() {
+            check.push(key(k), None, "missing: expected a shaft name");
+        }
+    }
+    distinct_shafts(check, raw, [input, output, fixed, carrier], &satellites);
+    let (n_input, n_output, count) = speeds(check, raw);
+    let (Some(input), Some(output)) = (input, output) else {
+        return None;
+    };
+    if check.problems.len() != before {
+        return None;
+    }
+    let train = Train {
+        shafts,
+        wheels,
+        meshes,
+        input,
+        output,
+        fixed,
+        carrier,
+        satellites,
+        module,
+    };
+    if !drawable(check, raw, &train) {
+        return None;
+    }
+    Some(PlanetarySpec {
+        train,
+        n_input,
+        n_output,
+        satellites: count,
+    })
+}
+
+/// `[[planetary.wheel]]`: each wheel's name (unique), tooth number and shaft; gives the
+/// shafts in order of first naming, and the wheels.
+fn wheels(check: &mut Checker, raw: &RawPlanetary) -> (Vec<String>, Vec<Wheel>) {
     let mut shafts: Vec<String> = Vec::new();
     let mut wheels = Vec::new();
     if raw.wheel.is_empty() {
@@ -93,6 +161,11 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
             internal: w.internal.unwrap_or(false),
         });
     }
+    (shafts, wheels)
+}
+
+/// `[[planetary.mesh]]`: two different wheels by name, not both internal.
+fn meshes(check: &mut Checker, raw: &RawPlanetary, wheels: &[Wheel]) -> Vec<Mesh> {
     let mut meshes = Vec::new();
     for (i, m) in raw.mesh.iter().enumerate() {
         let k = join(&item(&key("mesh"), i), "wheels");
@@ -117,41 +190,38 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
             ),
         }
     }
-    let mut shaft_of =
-        |check: &mut Checker, k: &str, v: Option<&String>, add: bool| -> Option<usize> {
-            let v = v?;
-            match shafts.iter().position(|s| s == v) {
-                Some(i) => Some(i),
-                None if add => {
-                    shafts.push(v.clone());
-                    Some(shafts.len() - 1)
-                }
-                None => {
-                    check.push(
-                        k,
-                        Some(format!("{v:?}")),
-                        "expected the shaft of a [[planetary.wheel]]",
-                    );
-                    None
-                }
-            }
-        };
-    let carrier = shaft_of(check, &key("carrier"), raw.carrier.as_ref(), true);
-    let input = shaft_of(check, &key("input"), raw.input.as_ref(), true);
-    let output = shaft_of(check, &key("output"), raw.output.as_ref(), true);
-    let fixed = shaft_of(check, &key("fixed"), raw.fixed.as_ref(), false);
-    let satellites: Vec<usize> = raw
-        .satellites
-        .iter()
-        .enumerate()
-        .filter_map(|(i, s)| shaft_of(check, &item(&key("satellites"), i), Some(s), false))
-        .collect();
-    for (k, v) in [("input", input), ("output", output)] {
-        if v.is_none() {
-            check.push(key(k), None, "missing: expected a shaft name");
+    meshes
+}
+
+/// The shaft named `v` at key `k`: one of the wheels' shafts, or (with `add`) a new one.
+fn shaft_of(
+    check: &mut Checker,
+    shafts: &mut Vec<String>,
+    k: &str,
+    v: Option<&String>,
+    add: bool,
+) -> Option<usize> {
+    let v = v?;
+    match shafts.iter().position(|s| s == v) {
+        Some(i) => Some(i),
+        None if add => {
+            shafts.push(v.clone());
+            Some(shafts.len() - 1)
+        }
+        None => {
+            check.push(
+                k,
+                Some(format!("{v:?}")),
+                "expected the shaft of a [[planetary.wheel]]",
+            );
+            None
         }
     }
-    distinct_shafts(check, raw, [input, output, fixed, carrier], &satellites);
+}
+
+/// The input's speed (rpm, not 0), the required output speed (rpm) and the number of
+/// satellites (1 to 12), each when given.
+fn speeds(check: &mut Checker, raw: &RawPlanetary) -> (Option<f64>, Option<f64>, Option<u32>) {
     let n_input = raw.n_input.map(|n| {
         let n = check.bounded(&key("n_input"), n, 1e6, "a speed in rpm within ±1e6, not 0");
         if n == 0.0 {
@@ -182,43 +252,27 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
             None
         }
     });
-    let (Some(input), Some(output)) = (input, output) else {
-        return None;
+    (n_input, n_output, count)
+}
+
+/// The train has mobility 1 and can be drawn (coaxial); otherwise refused under the key
+/// that makes it so.
+fn drawable(check: &mut Checker, raw: &RawPlanetary, train: &Train) -> bool {
+    let Err(e) = train.ratio().and_then(|_| train.layout()) else {
+        return true;
     };
-    if check.problems.len() != before {
-        return None;
-    }
-    let train = Train {
-        shafts,
-        wheels,
-        meshes,
-        input,
-        output,
-        fixed,
-        carrier,
-        satellites,
-        module,
+    let (k, value) = match &e {
+        TrainError::InputLocked { input, .. } => ("input", Some(format!("{input:?}"))),
+        TrainError::OutputAtRest => ("output", raw.output.as_ref().map(|o| format!("{o:?}"))),
+        TrainError::NoCarrier(_) => ("carrier", None),
+        _ => ("mesh", None),
     };
-    if let Err(e) = train.ratio().and_then(|_| train.layout()) {
-        let (k, value) = match &e {
-            TrainError::InputLocked { input, .. } => ("input", Some(format!("{input:?}"))),
-            TrainError::OutputAtRest => ("output", raw.output.as_ref().map(|o| format!("{o:?}"))),
-            TrainError::NoCarrier(_) => ("carrier", None),
-            _ => ("mesh", None),
-        };
-        check.push(
-            key(k),
-            value,
-            format!("a train of mobility 1 that can be drawn: {e}"),
-        );
-        return None;
-    }
-    Some(PlanetarySpec {
-        train,
-        n_input,
-        n_output,
-        satellites: count,
-    })
+    check.push(
+        key(k),
+        value,
+        format!("a train of mobility 1 that can be drawn: {e}"),
+    );
+    false
 }
 
 /// The roles of a train's shafts must be distinct: the output is not the input, neither is
@@ -230,8 +284,6 @@ fn distinct_shafts(
     [input, output, fixed, carrier]: [Option<usize>; 4],
     satellites: &[usize],
 ) {
-    const P: &str = "planetary";
-    let key = |k: &str| join(P, k);
     let shown = |v: Option<&String>| v.map(|s| format!("{s:?}"));
     if input.is_some() && input == output {
         check.push(

@@ -279,7 +279,64 @@ pub(super) fn solve(
 ) -> Result<Solved, FrictionError> {
     let twin = rolling_twin(c);
     let scheme = scheme(case, c, ctx)?;
-    // The moment balance: lever d at μ_l, arms at μ_k, loads at μ_F.
+    let (balance, p_rolled) = balance(case, c, &twin, ctx, wrap)?;
+    let name = &case.name;
+    // Without rollers: the load slides on the plane, a level incline with f₂.
+    let plane = Incline {
+        load: c.load,
+        f: c.f2,
+        alpha: 0.0,
+        beta: 0.0,
+        motion: Motion::Up,
+    };
+    let (mut sliding, slid, _) = polygon(case, &plane, &incline_twin(&plane), ctx, wrap)?;
+    sliding.kind = DrawingKind::Sliding;
+    let mut drawings = vec![scheme, sliding, balance];
+    // Rollers that slide: the force is the sliding one, read off that pair's polygon.
+    let (p_read, p_crossing) = match twin.slide {
+        None => (p_rolled, None),
+        Some(at) => {
+            let pair = at.incline(c);
+            let (mut d, read, _) = polygon(case, &pair, &incline_twin(&pair), ctx, wrap)?;
+            d.kind = DrawingKind::Sliding;
+            drawings.push(d);
+            (read.p, Some(read.crossing_deg))
+        }
+    };
+    let readings = vec![
+        reading(
+            "P",
+            (Symbol::Force, subject("P", name)),
+            p_read,
+            twin.p,
+            p_crossing,
+        ),
+        reading(
+            "P_{ск}",
+            (Symbol::Force, subject("Pslide", name)),
+            slid.p,
+            twin.p_sliding,
+            Some(slid.crossing_deg),
+        ),
+    ];
+    Ok(Solved {
+        case: case.clone(),
+        drawings,
+        readings,
+        notes: notes(name, c, &twin),
+    })
+}
+
+/// The moment balance: the lever d at μ_l, the arms k₁, k₂ at μ_k, the loads at μ_F, each
+/// term cut off by the intercept theorem at μ_P = μ_F·μ_k/μ_l; gives the drawing and the
+/// rolling force P₁ + P₂ as read.
+fn balance(
+    case: &FrictionCase,
+    c: &Rolling,
+    twin: &RollingTwin,
+    ctx: &Context,
+    wrap: &dyn Fn(ConstructionError) -> FrictionError,
+) -> Result<(Drawing, f64), FrictionError> {
     let name = &case.name;
     let mu_l = choose_scale(name, None, c.diameter, LEVER_MM, Quantity::Length)?;
     let lever_mm = mu_l.to_mm(c.diameter);
@@ -328,46 +385,14 @@ pub(super) fn solve(
         scaled: true,
         also: vec![mu_f, mu_k, mu_l],
     };
-    // Without rollers: the load slides on the plane, a level incline with f₂.
-    let plane = Incline {
-        load: c.load,
-        f: c.f2,
-        alpha: 0.0,
-        beta: 0.0,
-        motion: Motion::Up,
-    };
-    let (mut sliding, slid, _) = polygon(case, &plane, &incline_twin(&plane), ctx, wrap)?;
-    sliding.kind = DrawingKind::Sliding;
-    let mut drawings = vec![scheme, sliding, balance];
-    // Rollers that slide: the force is the sliding one, read off that pair's polygon.
-    let (p_read, p_crossing) = match twin.slide {
-        None => (p1 + p2, None),
-        Some(at) => {
-            let pair = at.incline(c);
-            let (mut d, read, _) = polygon(case, &pair, &incline_twin(&pair), ctx, wrap)?;
-            d.kind = DrawingKind::Sliding;
-            drawings.push(d);
-            (read.p, Some(read.crossing_deg))
-        }
-    };
-    let readings = vec![
-        reading(
-            "P",
-            (Symbol::Force, subject("P", name)),
-            p_read,
-            twin.p,
-            p_crossing,
-        ),
-        reading(
-            "P_{ск}",
-            (Symbol::Force, subject("Pslide", name)),
-            slid.p,
-            twin.p_sliding,
-            Some(slid.crossing_deg),
-        ),
-    ];
+    Ok((balance, p1 + p2))
+}
+
+/// The notes: k/h against f at each contact (pure rolling, or where the rollers slide), and
+/// the erratum R_n2 with the gain of the rollers.
+fn notes(name: &str, c: &Rolling, twin: &RollingTwin) -> Vec<String> {
     let verdict = |ratio: f64, f: f64| if ratio < f { "<" } else { "≥" };
-    let notes = vec![
+    vec![
         format!(
             "{name}: k₁/h = {:.3e} {} f₁ = {}, k₂/h = {:.3e} {} f₂ = {}: {}",
             twin.ratio1,
@@ -394,11 +419,5 @@ pub(super) fn solve(
             twin.r_n2,
             twin.p_sliding / twin.p
         ),
-    ];
-    Ok(Solved {
-        case: case.clone(),
-        drawings,
-        readings,
-        notes,
-    })
+    ]
 }
