@@ -6,8 +6,7 @@ mod support;
 
 use std::path::{Path, PathBuf};
 use tmm::construct::Drafting;
-use tmm::forces::pair_friction::{friction_loads, Kinematics, PairFriction};
-use tmm::forces::{loads, phase, twin, Motion};
+use tmm::forces::{friction_loads, loads, phase, solve_twin, Motion, PairFriction, PairMotion};
 use tmm::study::Session;
 
 fn report(drafting: f64) -> tmm::Report {
@@ -108,19 +107,19 @@ fn plain_approximations(path: &Path, f: f64, radius: f64, steps: usize) -> Optio
     let spec = session.force_spec("forces").expect("[forces]");
     let w1 = 300.0 * std::f64::consts::TAU / 60.0;
     let motion = Motion::analytic(pose, w1);
-    let given = loads::loads(spec, prog, &motion, phase(&plan, pose.phi, 1.0)).expect("loads");
+    let given = loads(spec, prog, &motion, phase(&plan, pose.phi, 1.0)).expect("loads");
     let fr = PairFriction {
         f,
         radius: radius * 1e-3,
         radii: Vec::new(),
     };
-    let kin = Kinematics {
+    let kin = PairMotion {
         prog,
         dir: pose.dir.clone(),
         origin: &pose.origin,
         motion: &motion,
     };
-    let solve = |l: &[tmm::forces::Load]| twin::solve(prog, pose, l, &spec.drive, 1.0).ok();
+    let solve = |l: &[tmm::forces::Load]| solve_twin(prog, pose, l, &spec.drive, 1.0).ok();
     let mut eq = solve(&given)?;
     for _ in 0..steps {
         let mut all = given.clone();

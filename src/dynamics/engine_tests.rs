@@ -6,7 +6,7 @@
 use super::reduce::reduce_loads;
 use super::*;
 use crate::construct::Drafting;
-use crate::forces::loads::{LoadKind, Motion};
+use crate::forces::{LoadKind, Motion};
 use crate::geom::DVec2;
 use crate::study::Session;
 use std::f64::consts::{PI, TAU};
@@ -31,7 +31,7 @@ fn p_lin(a: (f64, f64), b: (f64, f64), t: f64) -> f64 {
 /// centre x(φ) = r·cos(φ − α) + √(l² − r²·sin²(φ − α)), the gas force p·A pushing towards the
 /// crank (−x), so A = −∮ p·A·x′(φ) dφ, by Simpson's rule on every span of the table (where p
 /// is linear and x smooth), φ = φ₀ + θ.
-fn indicator_work(ind: &crate::forces::indicator::Indicator, axis: f64) -> f64 {
+fn indicator_work(ind: &crate::forces::Indicator, axis: f64) -> f64 {
     let dx = |phi: f64| {
         let u = phi - axis;
         -R * u.sin() - R * R * u.sin() * u.cos() / (L * L - R * R * u.sin().powi(2)).sqrt()

@@ -9,8 +9,7 @@
 
 use super::DynamicsError;
 use crate::construct::Context;
-use crate::forces::loads::{loads, Load, LoadKind, Motion};
-use crate::forces::twin::power_balance;
+use crate::forces::{loads, power_balance, Load, LoadKind, Motion};
 use crate::forces::{phase_at, ForceSpec};
 use crate::geom::DVec2;
 use crate::linkage::{Extremes, KinPlan, Pose, Program};

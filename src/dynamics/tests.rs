@@ -5,8 +5,7 @@
 use super::reduce::reduce_loads;
 use super::*;
 use crate::construct::{Context, Drafting};
-use crate::forces::loads::{loads, LoadKind, Motion};
-use crate::forces::twin::solve;
+use crate::forces::{loads, solve_twin as solve, LoadKind, Motion};
 use crate::geom::DVec2;
 use crate::study::Session;
 use std::path::Path;
@@ -406,7 +405,7 @@ pub(super) fn assert_quasi_static(
     plan: &crate::linkage::PositionPlan,
     k: usize,
     motion: &Motion,
-    phase: crate::forces::loads::Phase,
+    phase: crate::forces::Phase,
     kinds: &[LoadKind],
     sense: f64,
 ) -> super::reduce::Reduced {

@@ -4,39 +4,41 @@
 //!
 //! One position's force analysis ([`analyse`]) gives:
 //! - the loads ([`loads`]) from the acceleration plan (graphical) and from the analytic twin;
-//! - the force polygons of every group and the driving link ([`polygons`]);
-//! - Zhukovsky's lever ([`lever`]) from the velocity plan;
-//! - the analytic twin ([`twin`]): one linear solve of every link's equilibrium, and the
+//! - the force polygons of every group and the driving link (`polygons`);
+//! - Zhukovsky's lever (`lever`) from the velocity plan;
+//! - the analytic twin (`twin`): one linear solve of every link's equilibrium, and the
 //!   balancing moment again from the power balance;
 //! - rows `R_<i>_<j>`, `h_<i>_<j>` (a guide reaction's point), `M_bal`, `F_bal` and the
 //!   inertia loads `F_in<l>`, `M_in<l>`, graphical against analytic.
 
 pub mod balancing;
-pub mod diagnose;
+mod diagnose;
 mod error;
 pub mod friction;
-pub mod indicator;
-pub mod lever;
-pub mod loads;
-pub mod pair_friction;
-pub mod polygons;
-pub mod residual;
+mod indicator;
+mod lever;
+mod loads;
+mod pair_friction;
+mod polygons;
+mod residual;
 mod rows;
 mod spec;
 #[cfg(test)]
 mod tests;
-pub mod twin;
+mod twin;
 
 pub use spec::{
     Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, SeedValue, Stroke, G_STANDARD,
 };
 
 pub use error::ForceError;
-pub use loads::{Load, LoadKind, Motion, Phase};
+pub use indicator::Indicator;
+pub use loads::{carrier, loads, Load, LoadKind, Motion, Phase};
+pub use pair_friction::{friction_loads, PairFriction, PairMotion};
 pub use polygons::{DriverPolygon, GroupPolygon, Polygons};
 pub use rows::{notes, seed_notes};
 use rows::{reaction_rows, row, rows, zero_references};
-pub use twin::{Equilibrium, Pair, PairKind, Reaction};
+pub use twin::{power_balance, solve as solve_twin, Equilibrium, Pair, PairKind, Reaction};
 
 use crate::check::{Method, Row, Symbol};
 use crate::construct::{ConstructionError, Context};
@@ -85,12 +87,12 @@ pub struct PositionForces {
     pub friction: Option<Box<WithFriction>>,
     /// The rows.
     pub rows: Vec<Row>,
-    /// The equilibrium residuals ([`residual`]) of the polygons and of the twin, without and
+    /// The equilibrium residuals (`residual`) of the polygons and of the twin, without and
     /// (when the scene has it) with friction in the pairs.
     pub residuals: Vec<Residual>,
 }
 
-/// The equilibrium residual of both routes of one analysis ([`residual::residual`]).
+/// The equilibrium residual of both routes of one analysis (`residual::residual`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Residual {
     /// The analysis with friction in the pairs.
@@ -123,9 +125,9 @@ impl PositionForces {
     }
 }
 
-/// One position's force analysis with friction in the pairs ([`pair_friction`]): the
+/// One position's force analysis with friction in the pairs (`pair_friction`): the
 /// polygons, the lever and the twin of the loads plus the friction loads (its
-/// [`Analysis`]), settled with the friction equations solved for the friction loads ([`pair_friction::settle`]).
+/// [`Analysis`]), settled with the friction equations solved for the friction loads (`pair_friction::settle`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct WithFriction {
     /// The analysis with the friction loads.
@@ -418,14 +420,14 @@ fn with_friction(
     fr: &pair_friction::PairFriction,
     route: &Route<'_>,
 ) -> Result<WithFriction, ForceError> {
-    use pair_friction::{friction_loads_of, friction_power, settle, Kinematics};
+    use pair_friction::{friction_loads_of, friction_power, settle, PairMotion};
     let board = route.board;
     let prog = board.setup.prog;
     let w1 = board.setup.w1;
     let sense = w1.signum();
     let pose = route.pose;
     let label = format!("{} with friction", route.label);
-    let exact = Kinematics {
+    let exact = PairMotion {
         prog,
         dir: pose.dir.clone(),
         origin: &pose.origin,
@@ -449,7 +451,7 @@ fn with_friction(
         |t| t.reactions.clone(),
         |r, m| friction_loads_of(fr, &exact, r, m),
     )?;
-    let drawn = Kinematics {
+    let drawn = PairMotion {
         prog,
         dir: board
             .setup

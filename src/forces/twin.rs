@@ -106,13 +106,13 @@ pub struct Reaction {
 /// The result of the force analysis of one position.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Equilibrium {
-    /// Every pair's reaction, in the order of [`pairs`].
+    /// Every pair's reaction, in the order of `pairs`.
     pub reactions: Vec<Reaction>,
     /// The balancing moment on the crank, N·m, counter-clockwise.
     pub m_bal: f64,
     /// The balancing force at the pitch point along the line of action (gear drive), N: the
     /// magnitude of the tooth force, on the flank that turns the crank in the sense of
-    /// `m_bal` ([`line_of_action`]).
+    /// `m_bal` (`line_of_action`).
     pub f_bal: Option<f64>,
     /// The balancing force's arm about the crank's centre (gear drive), m.
     pub arm: Option<f64>,
@@ -160,7 +160,7 @@ pub fn line_of_action(
 /// The reactions and the balancing moment of `loads` at `pose`: one linear solve. With a gear
 /// drive the solve first takes the flank on which the pinion drives the crank (`sense`, that
 /// of ω₁); a negative force there means the pinion holds the crank back, and the solve is
-/// repeated on the mirrored line of action ([`line_of_action`]), where the force is positive.
+/// repeated on the mirrored line of action (`line_of_action`), where the force is positive.
 pub fn solve(
     prog: &Program,
     pose: &Pose,

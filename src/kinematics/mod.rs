@@ -1,24 +1,26 @@
 //! Kinematic analysis of a linkage, the graphical way and the analytic way side by side,
 //! as sub-studies the session ([`crate::study`]) asks for one at a time:
-//! - [`plans`]: a velocity plan at a position of the plan of positions, an acceleration plan
-//!   from it, and their readings against the analytic twin;
-//! - [`diagrams`]: the displacement diagram of a point over a crank turn, differentiated
+//! - the plans ([`velocity`], [`acceleration`]): a velocity plan at a position of the plan of
+//!   positions, an acceleration plan from it, and their readings against the analytic twin;
+//! - [`diagrams()`]: the displacement diagram of a point over a crank turn, differentiated
 //!   twice by chords (or tangents);
-//! - [`rocker`]: the rocker's ω diagram from the velocity plans, differentiated into ε;
+//! - [`rocker_diagram`]: the rocker's ω diagram from the velocity plans, differentiated into ε;
 //! - [`hodograph`]: the hodograph of a point's velocity;
-//! - [`table`]: the analytic table in the shape of seed 000 Table 5.
+//! - [`analytic_table`]: the analytic table in the shape of seed 000 Table 5.
 //!
 //! Every reading comes out as a typed [`Row`]: graphical against analytic.
 
-pub mod diagrams;
-pub mod hodograph;
-pub mod plans;
-pub mod rocker;
-pub mod table;
+mod diagrams;
+mod hodograph;
+mod plans;
+mod rocker;
+mod table;
 
-pub use diagrams::Diagrams;
-pub use plans::{acceleration_indices, Velocity};
-pub use rocker::RockerDiagram;
+pub use diagrams::{diagrams, Diagrams};
+pub use hodograph::{hodograph, hodograph_point};
+pub use plans::{acceleration, acceleration_indices, drawn_points, velocity, Velocity};
+pub use rocker::{rocker_diagram, rocker_link, RockerDiagram};
+pub use table::analytic_table;
 
 use crate::calculus::{self, Diagram, Scales};
 use crate::check::Row;

@@ -7,8 +7,7 @@ use super::keys::Key;
 use super::kinematics::{point, point_names, position_labels};
 use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance, RawSeedValue};
 use crate::check::Method;
-use crate::forces::loads::carrier;
-use crate::forces::pair_friction::PairFriction;
+use crate::forces::{carrier, PairFriction};
 use crate::forces::{
     Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, SeedValue, Stroke, G_STANDARD,
 };

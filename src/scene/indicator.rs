@@ -4,7 +4,7 @@
 use super::check::{item, join, number, quoted, Checker};
 use super::kinematics::{point, point_names};
 use super::raw::RawIndicator;
-use crate::forces::indicator::Indicator;
+use crate::forces::Indicator;
 use crate::linkage::{Dyad, Mechanism};
 
 /// The highest gas pressure a scene may give, MPa.

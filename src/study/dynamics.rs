@@ -1,6 +1,7 @@
 //! The dynamics study of the session (`[dynamics]`): the flywheel by every route.
 
 use super::*;
+use crate::kinematics;
 
 /// The dynamic study's part of the report.
 pub(super) const PART: Part = Part {
@@ -46,7 +47,7 @@ impl<'s> Session<'s> {
                 };
                 let plan = plan_positions(m, &req, sc.l, self.drafting)?;
                 let vel = (0..plan.positions.len())
-                    .map(|k| plans::velocity(&plan, k, sc.l.value(), w1, sc.v, &ctx))
+                    .map(|k| kinematics::velocity(&plan, k, sc.l.value(), w1, sc.v, &ctx))
                     .collect::<Result<Vec<_>, _>>()?;
                 let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
                 crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)?

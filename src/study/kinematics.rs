@@ -162,7 +162,7 @@ impl<'s> Session<'s> {
         let (l, v) = (sc.l, self.plan_scale(PlanKind::Velocity, k)?);
         self.caches.get::<VelocityPlans>((l, v, k), || {
             let plan = self.positions(l)?;
-            let vel = plans::velocity(&plan, k, l.value(), self.w1()?, v, &self.ctx()?)?;
+            let vel = kinematics::velocity(&plan, k, l.value(), self.w1()?, v, &self.ctx()?)?;
             self.logged("velocity plan", &plan.positions[k].label, v);
             Ok(Arc::new(vel))
         })
@@ -193,7 +193,7 @@ impl<'s> Session<'s> {
                 }
             };
             let w1 = self.w1()?;
-            let ap = plans::acceleration(&plan, k, sc.l.value(), w1, vp, a, &self.ctx()?)?;
+            let ap = kinematics::acceleration(&plan, k, sc.l.value(), w1, vp, a, &self.ctx()?)?;
             self.logged("acceleration plan", &plan.positions[k].label, a);
             Ok(Arc::new(ap))
         })
@@ -227,14 +227,7 @@ impl<'s> Session<'s> {
                 pole_h2: chart.h2,
                 ..self.spec().clone()
             };
-            let d = kinematics::diagrams::diagrams(
-                &plan,
-                &m.outputs,
-                &spec,
-                l,
-                self.w1()?,
-                &self.ctx()?,
-            )?;
+            let d = kinematics::diagrams(&plan, &m.outputs, &spec, l, self.w1()?, &self.ctx()?)?;
             Ok(d.map(Arc::new))
         })
     }
@@ -243,14 +236,13 @@ impl<'s> Session<'s> {
     pub fn rocker(&self, sc: &KinScales) -> MaybeCached<RockerDiagram> {
         self.caches.get::<RockerDiagrams>((sc.l, sc.v), || {
             let m = self.mechanism("the kinematic analysis")?;
-            let Some(link) = kinematics::rocker::rocker_link(&m.outputs) else {
+            let Some(link) = kinematics::rocker_link(&m.outputs) else {
                 return Ok(None);
             };
             let plan = self.positions(sc.l)?;
             let vel = self.velocities(sc)?;
             let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
-            let r =
-                kinematics::rocker::rocker_diagram(&plan, link, &plans, self.w1()?, &self.ctx()?)?;
+            let r = kinematics::rocker_diagram(&plan, link, &plans, self.w1()?, &self.ctx()?)?;
             Ok(r.map(Arc::new))
         })
     }
@@ -259,14 +251,13 @@ impl<'s> Session<'s> {
     pub fn hodograph(&self, sc: &KinScales) -> Result<Option<Hodograph>, StudyError> {
         self.caches.get::<Hodographs>((sc.l, sc.v), || {
             let plan = self.positions(sc.l)?;
-            let Some(k) =
-                kinematics::hodograph::hodograph_point(&plan, self.spec().hodograph.as_deref())?
+            let Some(k) = kinematics::hodograph_point(&plan, self.spec().hodograph.as_deref())?
             else {
                 return Ok(None);
             };
             let vel = self.velocities(sc)?;
             let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
-            let fig = kinematics::hodograph::hodograph(&plan, k, &plans, sc.v, &self.ctx()?);
+            let fig = kinematics::hodograph(&plan, k, &plans, sc.v, &self.ctx()?);
             Ok(Some((plain(plan.point_name(k)), Arc::new(fig))))
         })
     }
@@ -275,10 +266,7 @@ impl<'s> Session<'s> {
     pub fn table(&self, l: Scale) -> Cached<Table> {
         self.caches.get::<AnalyticTables>(l, || {
             let plan = self.positions(l)?;
-            Ok(Arc::new(kinematics::table::analytic_table(
-                &plan,
-                self.w1()?,
-            )))
+            Ok(Arc::new(kinematics::analytic_table(&plan, self.w1()?)))
         })
     }
 

@@ -35,7 +35,7 @@ use crate::forces::balancing::{Balancing, BalancingError};
 use crate::forces::friction::{FrictionError, Solved};
 use crate::forces::{ForceError, ForceSpec, PositionForces};
 use crate::kinematics::{
-    acceleration_indices, plans, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
+    acceleration_indices, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
 };
 use crate::linkage::{
     plain, plan_poses, plan_positions, KinPlan, LinkageError, Mechanism, PlanKind, PlanPoses,

@@ -8,7 +8,7 @@
 use super::*;
 use crate::construct::fit::{fit_scale, overflow, Extent};
 use crate::geom::DVec2;
-use crate::kinematics::{self, plans::drawn_points};
+use crate::kinematics::{self, drawn_points};
 use crate::linkage::{guide_ends, GUIDE_MARGIN_MM};
 use crate::scale::Quantity;
 

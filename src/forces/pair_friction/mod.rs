@@ -45,7 +45,7 @@ impl PairFriction {
 
 /// What one route needs to place the friction loads: the links' frame directions and
 /// origins, and the motion.
-pub struct Kinematics<'a> {
+pub struct PairMotion<'a> {
     /// The mechanism.
     pub prog: &'a Program,
     /// Unit frame direction of every link.
@@ -56,7 +56,7 @@ pub struct Kinematics<'a> {
     pub motion: &'a Motion,
 }
 
-impl Kinematics<'_> {
+impl PairMotion<'_> {
     /// The velocity of link `l`'s point at `x` (m), m/s: the frame is at rest.
     fn velocity(&self, l: usize, x: DVec2) -> DVec2 {
         if l == 0 {
@@ -89,7 +89,7 @@ const RELATIVE_REST: f64 = 1e-9;
 
 /// The friction loads of `reactions` (each acting on its pair's `to` link, the opposite on
 /// `from`; nothing on the frame), of the size f·|R| or ρ·|R| of each reaction.
-pub fn friction_loads(fr: &PairFriction, k: &Kinematics<'_>, reactions: &[Reaction]) -> Vec<Load> {
+pub fn friction_loads(fr: &PairFriction, k: &PairMotion<'_>, reactions: &[Reaction]) -> Vec<Load> {
     let sizes: Vec<f64> = reactions.iter().map(|r| r.force.length()).collect();
     friction_loads_of(fr, k, reactions, &sizes)
 }
@@ -99,7 +99,7 @@ pub fn friction_loads(fr: &PairFriction, k: &Kinematics<'_>, reactions: &[Reacti
 /// size from `sizes`. A pair at relative rest, a frictionless journal or a zero size has none.
 pub fn friction_loads_of(
     fr: &PairFriction,
-    k: &Kinematics<'_>,
+    k: &PairMotion<'_>,
     reactions: &[Reaction],
     sizes: &[f64],
 ) -> Vec<Load> {
@@ -161,7 +161,7 @@ pub fn friction_loads_of(
 }
 
 /// The power of the friction loads, W (never positive).
-pub fn friction_power(loads: &[Load], k: &Kinematics<'_>) -> f64 {
+pub fn friction_power(loads: &[Load], k: &PairMotion<'_>) -> f64 {
     loads
         .iter()
         .map(|l| {
