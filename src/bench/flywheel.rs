@@ -6,7 +6,7 @@
 use super::BenchRow;
 use super::{best_time, BenchError, Reps, Subject, CHORD_RESOLUTIONS};
 use crate::construct::{Context, Drafting};
-use crate::dynamics::{draw, Cycle, Reduced, Reducer};
+use crate::dynamics::{diagrams, Cycle, Reduced, Reducer};
 use crate::linkage::{plan_poses, PlanRequest};
 use std::f64::consts::TAU;
 
@@ -44,7 +44,7 @@ pub(super) fn flywheel_rows(s: &Subject, reps: Reps) -> Result<(Vec<BenchRow>, f
     let w_avg = spec.omega_avg.unwrap_or(s.w1.abs());
     let mut exact = None;
     let t_exact = best_time(reps.best_of, || {
-        let cycle = Cycle::new(&red, crate::dynamics::twin::PANELS)?;
+        let cycle = Cycle::new(&red, crate::dynamics::PANELS)?;
         let sol = cycle.flywheel(w_avg, spec.delta)?;
         exact = Some(sol.j_fw);
         Ok::<_, crate::dynamics::DynamicsError>(sol)
@@ -68,7 +68,7 @@ pub(super) fn flywheel_rows(s: &Subject, reps: Reps) -> Result<(Vec<BenchRow>, f
             let reds = (0..n)
                 .map(|i| red.exact(TAU * i as f64 / n as f64).map(|r| r.0))
                 .collect::<Result<Vec<Reduced>, _>>()?;
-            let g = draw::diagrams(&free, &reds, w_avg, &ctx)?;
+            let g = diagrams(&free, &reds, w_avg, &ctx)?;
             got = Some((g.wittenbauer.j_fw, g.merkin.j_fw));
             Ok::<_, crate::dynamics::DynamicsError>(())
         })

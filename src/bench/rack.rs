@@ -5,7 +5,7 @@
 use super::BenchRow;
 use super::{best_time, Reps};
 use crate::construct::{Context, Drafting};
-use crate::gears::{generate::generate, generation_scale, BasicRack, Cutting};
+use crate::gears::{generate, generation_scale, BasicRack, Cutting};
 
 /// The rack positions swept.
 pub const RACK_RESOLUTIONS: [usize; 7] = [12, 24, 48, 90, 180, 360, 720];

@@ -1,36 +1,37 @@
 //! Machine dynamics: reduction of forces and masses to the crank, the work and energy
 //! diagrams, the flywheel — each a construction, an analytic twin and a check.
 //!
-//! - [`reduce`]: M_пр and J_пр at a position from its velocity plan (graphical) and from the
+//! - `reduce`: M_пр and J_пр at a position from its velocity plan (graphical) and from the
 //!   analytic twin;
-//! - [`draw`]: the diagrams as constructions through the recorder — M_с(φ) at μ_M, A_с by
+//! - `draw`: the diagrams as constructions through the recorder — M_с(φ) at μ_M, A_с by
 //!   graphical integration (chords, pole distance H, μ_A = μ_M·μ_φ·H), A_д from
 //!   A_д(2π) = A_с(2π) (constant driving moment) and M_д read back through the pole, ΔT =
 //!   A_д − A_с, J_пр(φ), the energy–mass diagram (Wittenbauer) with its tangents at ψ_max,
 //!   ψ_min, and Merkin's route T_I = ΔT − T_II, J_I = ΔT_I/(δ·ω_ср²) (the seed's);
-//! - [`twin`]: the work integrated exactly and the equation of motion in energy form solved
+//! - `twin`: the work integrated exactly and the equation of motion in energy form solved
 //!   for the flywheel that gives δ, with ω(φ), ε(φ) and the cycle time;
-//! - [`flywheel`]: the rim's or disc's size from its moment of inertia;
+//! - `flywheel`: the rim's or disc's size from its moment of inertia;
 //! - rows `M_red`, `J_red`, `dT` per position; `A_res`, `M_drive`, `J_flywheel`, `delta` of
 //!   the whole scene.
 
-pub mod draw;
+mod draw;
 #[cfg(test)]
 mod engine_tests;
-pub mod flywheel;
-pub mod reduce;
+mod flywheel;
+mod reduce;
 mod rows;
 mod spec;
 #[cfg(test)]
 mod tests;
-pub mod twin;
+mod twin;
 
+pub use draw::diagrams;
 pub use reduce::{Reduced, Reducer};
 pub use rows::{findings, noted, notes, rows};
 pub use spec::{
     ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
 };
-pub use twin::{Cycle, Solution};
+pub use twin::{Cycle, Solution, PANELS};
 
 use crate::calculus::CalculusError;
 use crate::construct::Context;

@@ -4,35 +4,38 @@
 //! velocity triangles.
 //!
 //! As everywhere in `tmm`, each procedure exists twice: a **construction** through the
-//! recorder ([`mesh::meshing`], [`generate::generate`], [`triangles::triangles`]) read off under
+//! recorder (`mesh::meshing`, [`generate`], `triangles::triangles`) read off under
 //! the drafting model, and an **analytic twin** ([`Pair`], [`Cutting`], [`Train::willis`]);
-//! [`rows`] compares them.
+//! `rows` compares them.
 //!
 //! Errata of the seeds reproduced against, never matched (`docs/seed-000-cases.md` §000.13,
 //! `docs/seed-002-digest.md` §4.3): seed 000 takes r_b = r·cos α_w and the base pitch
 //! πm·cos α_w, so its ε_α = 1.22 (exact 1.15524; 1.1550 with its Δy = 0.18); PZ3 reads cos 26.92° as 0.8836 and prints
 //! a_w = 180.79 mm (exact 179.18) and ε_α = 1.14 (exact 1.1637), and lays off "p = 14.13 mm".
 
-pub mod generate;
-pub mod involute;
-pub mod mesh;
+mod generate;
+mod involute;
+mod mesh;
 mod pair;
 mod rack;
-pub mod rows;
+mod rows;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
 mod tests_limits;
 #[cfg(test)]
 mod tests_train;
-pub mod train;
+mod train;
 mod train_rank;
-pub mod triangles;
+mod triangles;
 
+pub use generate::generate;
 pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
+pub use mesh::LAMBDA_MM;
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
-pub use train::{Mesh, Train, TrainError};
+pub use train::{Mesh, Train, TrainError, Wheel};
+pub use triangles::PLAN_H;
 
 use crate::scale::Scale;
 use thiserror::Error;

@@ -6,8 +6,8 @@
 use super::check::{item, join, Checker};
 use super::gear_values::{module_mm, teeth};
 use super::keys::Key;
-use crate::gears::train::{TrainError, Wheel};
 use crate::gears::{Mesh, PlanetarySpec, Train};
+use crate::gears::{TrainError, Wheel};
 use serde::Deserialize;
 
 /// `[planetary]`.

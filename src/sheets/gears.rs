@@ -32,7 +32,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             "{}: λ_1, λ_2 {} N_1N_2, λ = 1 ↔ {} {}",
             GearText::Sliding.get(lang),
             GearText::Along.get(lang),
-            format_sig(crate::gears::mesh::LAMBDA_MM, 3, lang),
+            format_sig(crate::gears::LAMBDA_MM, 3, lang),
             mm_,
         );
         blocks.push(view(&m.sliding, caption, Key::GearsScaleL, m.scale));
@@ -114,7 +114,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             GearText::Triangles.get(lang),
             tri.scale_l.caption(lang),
             tri.scale_v.caption(lang),
-            format_sig(crate::gears::triangles::PLAN_H, 3, lang),
+            format_sig(crate::gears::PLAN_H, 3, lang),
             mm_,
         );
         blocks.push(view(
