@@ -159,6 +159,11 @@ fn bad_gear_sections_name_their_keys() {
             "[gears]\nmodule = 2.0\n",
             &["expected a [gears.pair] or at least one [[gears.rack]]"],
         ),
+        // The seed's printed values: positive, α_w below 90°, cos α_w at most 1.
+        (
+            "[gears]\nmodule = 10.0\n[gears.pair]\nz = [13, 21]\nx = [0.694, 0.384]\n[gears.seed]\neps_alpha = -1.0\nalpha_w = 95.0\ncos_alpha_w = 1.5\n",
+            &["gears.seed.eps_alpha = -1", "gears.seed.alpha_w = 95", "gears.seed.cos_alpha_w = 1.5"],
+        ),
         // An input that does not turn has no required ratio.
         (
             "[planetary]\ninput = \"1\"\noutput = \"2\"\nn_input = 0.0\nn_output = 10.0\n[[planetary.wheel]]\nname = \"1\"\nz = 20\nshaft = \"1\"\n[[planetary.wheel]]\nname = \"2\"\nz = 40\nshaft = \"2\"\n[[planetary.mesh]]\nwheels = [\"1\", \"2\"]\n",

@@ -34,6 +34,7 @@ pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
 pub use mesh::LAMBDA_MM;
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
+pub use rows::PairSeed;
 pub use train::{Mesh, Train, TrainError, Wheel};
 pub use triangles::PLAN_H;
 
@@ -159,6 +160,8 @@ fn scale_for(size: f64, preferred_mm: f64) -> Result<Scale, GearError> {
 pub struct GearsSpec {
     /// The pair (`[gears.pair]`).
     pub pair: Option<PairSpec>,
+    /// What the source prints for the pair (`[gears.seed]`), checked in the notes.
+    pub seed: Option<PairSeed>,
     /// μ_l of the meshing picture; `None`: chosen the textbook way.
     pub scale_l: Option<Scale>,
     /// The wheels cut by the rack (`[[gears.rack]]`).
@@ -188,6 +191,8 @@ pub const DEFAULT_POSITIONS: usize = 90;
 pub struct GearStudy {
     /// The pair and its meshing picture.
     pub pair: Option<(Pair, mesh::Meshing)>,
+    /// What the source prints for the pair.
+    pub seed: Option<PairSeed>,
     /// The generated wheels, by name.
     pub racks: Vec<(String, generate::Generation)>,
     /// The train.
@@ -238,7 +243,12 @@ pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearSt
         Some(p) => Some(train_study(p, ctx).map_err(|e| GearError::Construction(e.to_string()))?),
         None => None,
     };
-    Ok(GearStudy { pair, racks, train })
+    Ok(GearStudy {
+        pair,
+        seed: spec.seed,
+        racks,
+        train,
+    })
 }
 
 impl GearStudy {
@@ -261,7 +271,7 @@ impl GearStudy {
     pub fn notes(&self) -> Vec<String> {
         let mut out = Vec::new();
         if let Some((p, m)) = &self.pair {
-            out.extend(rows::pair_notes(p));
+            out.extend(rows::pair_notes(p, self.seed.as_ref()));
             out.push(format!(
                 "gears: the compass involute of wheel 1 through P (N₁P in 4 parts) deviates from the exact one by {} mm (chord-vs-arc error of one step {} mm)",
                 crate::scale::format_sig(m.compass.0 * 1e3, 3, crate::scale::Lang::En),

@@ -253,13 +253,30 @@ pub fn table_a_w(p: &Pair) -> f64 {
     p.spec.module * (zs / 2.0 + p.spec.x_sum() - p.dy)
 }
 
+/// What a source prints for the pair (`[gears.seed]`), SI: each claim is checked against the
+/// pair and flagged where it is not reproduced. A scene without it gets no erratum note.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PairSeed {
+    /// The contact ratio ε_α as printed.
+    pub eps_alpha: Option<f64>,
+    /// The working pressure angle α_w as printed, rad.
+    pub alpha_w: Option<f64>,
+    /// cos α_w as printed.
+    pub cos_alpha_w: Option<f64>,
+    /// The centre distance a_w as printed, m.
+    pub a_w: Option<f64>,
+    /// The pitch p as printed, m.
+    pub pitch: Option<f64>,
+}
+
 /// The notes of a pair: ε_α ≥ 1.1, the radial clearances, the table route (α_w read in
-/// the inv table; with the table's Δy, y and a_w), and the seeds' errata computed from this
-/// pair — seed 000's base radius r·cos α_w (its ε_α = 1.22) and its α_w = 26°34′45″, and,
-/// for PZ3's pair, cos 26.92° misread as 0.8836 (a_w = 180.79 mm, ε_α = 1.14) and
-/// "p = 14.13 mm".
-pub fn pair_notes(p: &Pair) -> Vec<String> {
+/// the inv table; with the table's Δy, y and a_w), and the source's printed values (`seed`)
+/// checked against this pair — an α_w off the table's own reading, an ε_α from the base
+/// radius r·cos α_w (seed 000: 1.22), a cos α_w misread with the a_w it gives (seed 002 PZ3:
+/// 0.8836, 180.79 mm), a pitch that is not πm.
+pub fn pair_notes(p: &Pair, seed: Option<&PairSeed>) -> Vec<String> {
     let m = p.spec.module;
+    let seed = seed.copied().unwrap_or_default();
     let mut out = vec![format!(
         "gears: pair z = {}/{}, x = {}/{}: α_w = {}°, a_w = {} mm, y = {}, Δy = {}, ε_α = {}{}; radial clearances {} and {} mm (c*·m = {} mm)",
         p.spec.z[0],
@@ -279,16 +296,20 @@ pub fn pair_notes(p: &Pair) -> Vec<String> {
     // The table route: inv α_w written to six decimals and read in the inv table.
     if let Some(table) = super::involute::alpha_by_table(p.inv_w) {
         use super::involute::{dms, TABLE_DIGITS};
+        // A printed α_w more than half a second off the table's reading is not reproduced.
+        let printed = seed
+            .alpha_w
+            .filter(|a| (a - table).abs() > (0.5 / 3600.0_f64).to_radians());
         out.push(format!(
             "gears: by the inv table (a row every 1′ to {TABLE_DIGITS} decimals, read linearly): inv α_w = {:.6} → α_w = {} (exact {}){}",
             p.inv_w,
             dms(table, 0),
             dms(p.alpha_w, 1),
-            if p.spec.z == [13, 30] && (m - 0.014).abs() < 1e-12 {
-                "; seed 000 prints 26°34′45″, 6″ off the table's own reading: not reproduced"
-            } else {
-                ""
-            }
+            printed.map_or_else(String::new, |a| format!(
+                "; the seed prints {}, {}″ off the table's own reading: not reproduced",
+                dms(a, 0),
+                num(((a - table).abs().to_degrees() * 3600.0).round(), 3),
+            ))
         ));
     }
     if p.spec.dy_table.is_some() {
@@ -302,26 +323,64 @@ pub fn pair_notes(p: &Pair) -> Vec<String> {
             num(p.y, 5),
         ));
     }
-    // Seed 000: r_b = r·cos α_w and the base pitch πm·cos α_w.
+    out.extend(seed_notes(p, &seed));
+    out
+}
+
+/// The erratum notes of the printed values that this pair does not reproduce.
+fn seed_notes(p: &Pair, seed: &PairSeed) -> Vec<String> {
+    let mut out = Vec::new();
+    // The base radius r·cos α_w and the base pitch πm·cos α_w (seed 000 §4).
     let wrong_pb = p.p * p.alpha_w.cos();
-    out.push(format!(
-        "gears: erratum (seed 000 §4): the base radii r·cos α_w = {}/{} mm and the base pitch πm·cos α_w = {} mm give ε_α = B₁B₂/(πm·cos α_w) = {} (the seed prints 1.22 from its B₁B₂ = 48); the base pitch is πm·cos α = {} mm and ε_α = {}",
-        num(p.r[0] * p.alpha_w.cos() * 1e3, 5),
-        num(p.r[1] * p.alpha_w.cos() * 1e3, 5),
-        num(wrong_pb * 1e3, 5),
-        num(p.ab / wrong_pb, 4),
-        num(p.p_b * 1e3, 5),
-        num(p.eps, 5),
-    ));
-    if p.spec.z == [13, 21] && (m - 0.010).abs() < 1e-12 {
-        let misread = 0.8836;
-        let wrong_aw = p.a * p.spec.rack.alpha.cos() / misread;
+    let from_wrong_base = p.ab / wrong_pb;
+    if let Some(e) = seed.eps_alpha.filter(|e| (e - p.eps).abs() > 0.005) {
+        out.push(if (e - from_wrong_base).abs() < 0.01 {
+            format!(
+                "gears: erratum: the seed's ε_α = {} comes from the base radii r·cos α_w = {}/{} mm and the base pitch πm·cos α_w = {} mm (ε_α = B₁B₂/(πm·cos α_w) = {}); the base pitch is πm·cos α = {} mm and ε_α = {}",
+                num(e, 4),
+                num(p.r[0] * p.alpha_w.cos() * 1e3, 5),
+                num(p.r[1] * p.alpha_w.cos() * 1e3, 5),
+                num(wrong_pb * 1e3, 5),
+                num(from_wrong_base, 4),
+                num(p.p_b * 1e3, 5),
+                num(p.eps, 5),
+            )
+        } else {
+            format!(
+                "gears: erratum: the seed's ε_α = {} is not reproducible; ε_α = {}",
+                num(e, 4),
+                num(p.eps, 5),
+            )
+        });
+    }
+    // A misread cos α_w and the centre distance a·cos α / cos α_w it gives (seed 002 PZ3).
+    if let Some(c) = seed
+        .cos_alpha_w
+        .filter(|c| (c - p.alpha_w.cos()).abs() > 5e-5)
+    {
+        let wrong_aw = p.a * p.spec.rack.alpha.cos() / c;
+        let printed = seed.a_w.map_or_else(String::new, |a| {
+            format!(" (the seed prints {} mm)", num(a * 1e3, 5))
+        });
         out.push(format!(
-            "gears: erratum (seed 002 PZ3): cos 26.92° read as {misread} (= cos 27.92°) gives a_w = {} mm and the printed ε_α = 1.14 is not reproducible; cos α_w = {} gives a_w = {} mm and ε_α = {}; the printed \"p_t = 14.13 mm\" contradicts p = πm = {} mm",
+            "gears: erratum: cos α_w read as {} (= cos {}°) gives a_w = {} mm{printed}; cos α_w = {} gives a_w = {} mm",
+            num(c, 4),
+            num(c.clamp(-1.0, 1.0).acos().to_degrees(), 4),
             num(wrong_aw * 1e3, 5),
             num(p.alpha_w.cos(), 4),
             num(p.a_w * 1e3, 5),
-            num(p.eps, 5),
+        ));
+    } else if let Some(a) = seed.a_w.filter(|a| (a - p.a_w).abs() > 5e-6) {
+        out.push(format!(
+            "gears: erratum: the seed's a_w = {} mm is not reproducible; a_w = {} mm",
+            num(a * 1e3, 5),
+            num(p.a_w * 1e3, 5),
+        ));
+    }
+    if let Some(t) = seed.pitch.filter(|t| (t - p.p).abs() > 5e-6) {
+        out.push(format!(
+            "gears: erratum: the printed \"p = {} mm\" contradicts p = πm = {} mm",
+            num(t * 1e3, 4),
             num(p.p * 1e3, 5),
         ));
     }

@@ -97,11 +97,58 @@ fn pz3_pair_geometry_and_its_errata() {
     assert!((p.a_w * 1e3 - 180.79).abs() > 1.0);
     assert!((p.eps - 1.14).abs() > 0.02);
     assert!((p.p * 1e3 - 14.13).abs() > 10.0);
-    let notes = rows::pair_notes(&p).join("\n");
+    // The seed's printed values flag what the pair does not reproduce; without them, nothing.
+    let printed = rows::PairSeed {
+        eps_alpha: Some(1.14),
+        cos_alpha_w: Some(0.8836),
+        a_w: Some(0.18079),
+        pitch: Some(0.01413),
+        ..Default::default()
+    };
+    let notes = rows::pair_notes(&p, Some(&printed)).join("\n");
     assert!(
-        notes.contains("180.79") && notes.contains("14.13"),
+        notes.contains("a_w = 180.79 mm")
+            && notes.contains("p = 14.13 mm")
+            && notes.contains("ε_α = 1.14 is not reproducible"),
         "{notes}"
     );
+    assert!(!rows::pair_notes(&p, None).join("\n").contains("erratum"));
+}
+
+#[test]
+fn a_pair_without_printed_values_gets_no_erratum() {
+    // A student's own pair (z = 12/28, m = 6): no seed, no seed's erratum.
+    let p = pair(6.0, [12, 28], [0.3, 0.0]);
+    let notes = rows::pair_notes(&p, None).join("\n");
+    assert!(
+        !notes.contains("erratum") && !notes.contains("seed"),
+        "{notes}"
+    );
+    // Seed 000's printed ε_α = 1.22 and α_w = 26°34′45″ against its pair: both flagged, the
+    // ε_α traced to the base radius r·cos α_w.
+    let s0 = seed000();
+    let printed = rows::PairSeed {
+        eps_alpha: Some(1.22),
+        alpha_w: Some((26.0 + 34.0 / 60.0 + 45.0 / 3600.0_f64).to_radians()),
+        ..Default::default()
+    };
+    let notes = rows::pair_notes(&s0, Some(&printed)).join("\n");
+    assert!(
+        notes.contains("the seed's ε_α = 1.22 comes from the base radii r·cos α_w"),
+        "{notes}"
+    );
+    assert!(
+        notes.contains("the seed prints 26°34′45″, 6″ off the table's own reading"),
+        "{notes}"
+    );
+    // A printed value the pair reproduces is not flagged.
+    let right = rows::PairSeed {
+        eps_alpha: Some((s0.eps * 100.0).round() / 100.0),
+        ..Default::default()
+    };
+    assert!(!rows::pair_notes(&s0, Some(&right))
+        .join("\n")
+        .contains("erratum"));
 }
 
 #[test]
@@ -418,7 +465,7 @@ fn the_tables_delta_y_reproduces_the_seeds_rounded_numbers() {
         (p.a_w * 1e3 - 316.2764).abs() < 1e-4,
         "the centre distance stays exact"
     );
-    assert!(super::rows::pair_notes(&p)
+    assert!(super::rows::pair_notes(&p, None)
         .iter()
         .any(|n| n.contains("316.274")));
 }

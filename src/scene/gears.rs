@@ -9,7 +9,7 @@ use super::gear_values::{module_mm, teeth};
 use super::keys::Key;
 use super::planetary::{planetary, RawPlanetary};
 use crate::gears::{
-    BasicRack, Cutting, GearError, GearsSpec, Pair, PairSpec, RackSpec, DEFAULT_POSITIONS,
+    BasicRack, Cutting, GearError, GearsSpec, Pair, PairSeed, PairSpec, RackSpec, DEFAULT_POSITIONS,
 };
 use crate::scale::{Quantity, Scale};
 use serde::Deserialize;
@@ -40,6 +40,18 @@ pub(crate) struct RawGears {
     pub pair: Option<RawPair>,
     #[serde(default)]
     pub rack: Vec<RawRack>,
+    pub seed: Option<RawSeed>,
+}
+
+/// `[gears.seed]`: what the source prints for the pair, checked and flagged, never matched.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawSeed {
+    pub eps_alpha: Option<f64>,
+    pub alpha_w: Option<f64>,
+    pub cos_alpha_w: Option<f64>,
+    pub a_w: Option<f64>,
+    pub pitch: Option<f64>,
 }
 
 /// `[gears.pair]`.
@@ -88,6 +100,7 @@ pub(crate) fn gear_sections(
         Some(g) => gears(check, g)?,
         None => GearsSpec {
             pair: None,
+            seed: None,
             scale_l: None,
             racks: Vec::new(),
             planetary: None,
@@ -138,12 +151,55 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
             "a_w + r_a1 + r_a2",
         );
     }
+    let seed = raw.seed.as_ref().map(|s| seed(check, s));
     (check.problems.len() == before).then_some(GearsSpec {
         pair,
+        seed,
         scale_l,
         racks,
         planetary: None,
     })
+}
+
+/// `[gears.seed]`: the printed values, SI (each positive; α_w in degrees below 90°, cos α_w
+/// at most 1, a_w and p in mm).
+fn seed(check: &mut Checker, raw: &RawSeed) -> PairSeed {
+    let k = |name: &str| join(&key("seed"), name);
+    let mut positive = |name: &str, v: Option<f64>, what: &str| {
+        check.positive_opt(&k(name), v, &format!("the seed's {what}"))
+    };
+    let eps_alpha = positive("eps_alpha", raw.eps_alpha, "contact ratio ε_α > 0");
+    let alpha_w = positive("alpha_w", raw.alpha_w, "α_w in degrees > 0");
+    let cos_alpha_w = positive("cos_alpha_w", raw.cos_alpha_w, "cos α_w > 0");
+    let a_w = positive("a_w", raw.a_w, "centre distance a_w in mm > 0");
+    let pitch = positive("pitch", raw.pitch, "pitch p in mm > 0");
+    let alpha_w = alpha_w.filter(|&a| {
+        a < 90.0 || {
+            check.push(
+                k("alpha_w"),
+                Some(number(a)),
+                "expected the seed's α_w in degrees below 90",
+            );
+            false
+        }
+    });
+    let cos_alpha_w = cos_alpha_w.filter(|&c| {
+        c <= 1.0 || {
+            check.push(
+                k("cos_alpha_w"),
+                Some(number(c)),
+                "expected the seed's cos α_w at most 1",
+            );
+            false
+        }
+    });
+    PairSeed {
+        eps_alpha,
+        alpha_w: alpha_w.map(f64::to_radians),
+        cos_alpha_w,
+        a_w: a_w.map(|a| a * 1e-3),
+        pitch: pitch.map(|p| p * 1e-3),
+    }
 }
 
 /// The basic rack: GOST 13755 unless given; one that cannot be drawn is reported under the
