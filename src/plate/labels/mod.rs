@@ -4,7 +4,7 @@
 //! whose points coincide on the sheet (within [`COINCIDENT_MM`]) become one joint label written
 //! as the textbook does, `p ≡ b₃ ≡ d` (the figure's order, the pole first). Every label then
 //! tries positions around its point — its preferred direction first, then sixteen directions
-//! at two distances — and keeps the one that collides least with what is already placed
+//! at three distances — and keeps the one that collides least with what is already placed
 //! (labels, captions, text blocks, tables) and with the lines and symbols of the drawing (the
 //! main lines weigh most), never leaving the frame nor entering the title block when it can
 //! help it. Crowded labels are placed first; the order is deterministic, so is the layout.
@@ -25,8 +25,10 @@ use std::f64::consts::{FRAC_PI_4, TAU};
 pub const COINCIDENT_MM: f64 = 0.3;
 /// How a joint label joins its names.
 pub const JOINT_SEPARATOR: &str = " ≡ ";
-/// The second ring of candidate positions lies this much further from the point, mm.
+/// Each further ring of candidate positions lies this much further from the point, mm.
 pub const SECOND_RING_MM: f64 = 3.0;
+/// Rings of candidate positions around a point.
+const RINGS: usize = 3;
 /// Clearance kept between a label and other texts while placing, mm.
 const CLEARANCE_MM: f64 = 1.0;
 /// Directions tried around a point.

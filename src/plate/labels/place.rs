@@ -8,7 +8,7 @@ pub(super) struct Placer<'a> {
     forbidden: [Rect; 2],
     /// Boxes of the texts that do not move (captions, text blocks, tables, dimensions).
     fixed: Vec<Rect>,
-    /// Every view's outlines.
+    /// Every view's outlines (a label avoids the lines of every view).
     outlines: &'a [Vec<Outline>],
 }
 
@@ -19,9 +19,10 @@ const OVER_TEXT: f64 = 1e3;
 const TEXT_AREA: f64 = 100.0;
 /// Cost of covering another label's point.
 const OVER_POINT: f64 = 60.0;
-/// Cost per mm of a main line crossing the box; of a thin line.
+/// Cost per mm of a main line crossing the box; of a thin line (a label a ring further out is
+/// cheaper than one struck through by a construction line).
 const MAIN_LINE: f64 = 20.0;
-const THIN_LINE: f64 = 4.0;
+const THIN_LINE: f64 = 10.0;
 /// Cost of touching a main symbol (pair, block, arrowhead, dot), and per mm² of it covered;
 /// the same for a thin one.
 const MAIN_AREA: f64 = 40.0;
@@ -128,8 +129,11 @@ impl<'a> Placer<'a> {
             .iter()
             .fold(Rect::new(request.anchor, request.anchor), |r, c| r.union(c))
             .inflate(CLEARANCE_MM);
-        let lines = self.outlines[request.view]
+        // Every view's lines: a long joint label must not run over the next plan either.
+        let lines = self
+            .outlines
             .iter()
+            .flatten()
             .filter(|o| shape_box(&o.shape).is_some_and(|b| b.intersects(&near)))
             .collect();
         let points = points
@@ -274,7 +278,7 @@ impl<'a> Placer<'a> {
 /// alternating about it, at the request's gap and [`SECOND_RING_MM`] further.
 pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
     let half = size * 0.5;
-    let mut out = Vec::with_capacity(2 * DIRECTIONS + 1);
+    let mut out = Vec::with_capacity(RINGS * DIRECTIONS + 1);
     let start = if r.toward == DVec2::ZERO {
         out.push(Rect::new(r.anchor - half, r.anchor + half));
         -FRAC_PI_4
@@ -282,7 +286,7 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
         r.toward.y.atan2(r.toward.x)
     };
     let step = TAU / DIRECTIONS as f64;
-    for gap in [r.gap, r.gap + SECOND_RING_MM] {
+    for gap in (0..RINGS).map(|k| r.gap + k as f64 * SECOND_RING_MM) {
         for k in 0..DIRECTIONS {
             // 0, +1, −1, +2, −2, …, +8.
             let turn = (k.div_ceil(2)) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };

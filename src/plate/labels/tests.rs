@@ -66,7 +66,7 @@ fn candidates_keep_the_gap_and_start_with_the_preferred_side() {
     let r = request("B", DVec2::new(50.0, 50.0), 0);
     let size = DVec2::new(3.0, 4.0);
     let c = candidates(&r, size);
-    assert_eq!(c.len(), 2 * DIRECTIONS);
+    assert_eq!(c.len(), RINGS * DIRECTIONS);
     assert!(
         (c[0].min.x - 50.0 - LABEL_GAP_MM).abs() < 1e-9,
         "{:?}",
