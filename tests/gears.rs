@@ -427,3 +427,164 @@ fn the_ends_of_the_documented_ranges_render() {
         );
     }
 }
+
+/// The gear sheets of a scene in `lang`: the views of every plate.
+fn gear_views(scene: &str, lang: tmm::Lang) -> Vec<tmm::plate::View> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(scene);
+    let s = tmm::load(&path).expect("scene");
+    let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
+    let plates = tmm::sheets::build_all(&session, lang).expect("plates");
+    assert_eq!(plates.len(), 1, "{scene}: one gear sheet");
+    plates.into_iter().flat_map(|(_, p)| p.views).collect()
+}
+
+/// The label texts of the steps of `f` whose note starts with `note`.
+fn labels_of(f: &tmm::construct::Figure, note: &str) -> Vec<String> {
+    f.steps
+        .iter()
+        .filter(|s| s.note.starts_with(note))
+        .filter_map(|s| s.label.as_ref().map(|l| l.text.clone()))
+        .collect()
+}
+
+/// The hatch strokes of `f`.
+fn hatching(f: &tmm::construct::Figure) -> Vec<&tmm::geom::Segment> {
+    use tmm::construct::{Item, Role};
+    f.steps
+        .iter()
+        .filter_map(|s| match (&s.role, &s.item) {
+            (Role::Hatch, Item::Segment(seg)) => Some(seg),
+            _ => None,
+        })
+        .collect()
+}
+
+#[test]
+fn rack_generation_draws_a_few_numbered_positions_and_the_undercut_in_a_detail() {
+    use tmm::construct::{Item, Role};
+    let views = gear_views("constructions/gears-pz1.toml", tmm::Lang::Ru);
+    let racks: Vec<&tmm::plate::View> = views
+        .iter()
+        .filter(|v| v.figure.title == "generation")
+        .collect();
+    assert_eq!(racks.len(), 2, "the zero and the shifted wheel");
+    for v in &racks {
+        let f = &v.figure;
+        // The positions drawn: their outlines' groups, few of the 40 traced.
+        let mut groups: Vec<u32> = f
+            .steps
+            .iter()
+            .filter(|s| {
+                s.note.starts_with("rack position ") && matches!(s.item, Item::Polyline { .. })
+            })
+            .map(|s| s.group)
+            .collect();
+        groups.dedup();
+        assert!((5..=9).contains(&groups.len()), "{groups:?}");
+        assert!(groups.iter().all(|g| *g >= 1 && *g <= 44), "{groups:?}");
+        assert!(
+            groups.last() > groups.first().map(|g| g + 30).as_ref(),
+            "{groups:?}"
+        );
+        // Thin, each numbered 1, 2, … in order, its number in its own group.
+        for s in f
+            .steps
+            .iter()
+            .filter(|s| s.note.starts_with("rack position "))
+        {
+            assert_eq!(s.role, Role::Construction, "{}", s.note);
+        }
+        let numbers: Vec<(u32, String)> = f
+            .steps
+            .iter()
+            .filter(|s| s.note.starts_with("the number of rack position"))
+            .map(|s| (s.group, s.label.as_ref().expect("a number").text.clone()))
+            .collect();
+        let want: Vec<(u32, String)> = groups
+            .iter()
+            .enumerate()
+            .map(|(k, g)| (*g, (k + 1).to_string()))
+            .collect();
+        assert_eq!(numbers, want);
+        // The tooth bold, once; the four circles named.
+        let tooth = f.steps.iter().filter(|s| s.role == Role::Result).count();
+        assert_eq!(tooth, 1);
+        let mut circles = labels_of(f, "circle ");
+        circles.sort();
+        assert_eq!(circles, ["r", "r_a", "r_b", "r_f"]);
+    }
+    // The zero wheel (z = 10 < 17) is undercut: hatched on both flanks, its zone marked A and
+    // drawn again at 20:1, where the hatching is 1 mm apart and each stroke is seen.
+    let zero = &racks[0].figure;
+    let hatch = hatching(zero);
+    assert!(hatch.iter().any(|s| s.from.x > 0.0) && hatch.iter().any(|s| s.from.x < 0.0));
+    assert_eq!(labels_of(zero, "the zone of the undercut's detail"), ["A"]);
+    let detail = views
+        .iter()
+        .find(|v| v.figure.title == "detail of generation")
+        .expect("the undercut's detail view");
+    assert_eq!(detail.caption.as_deref(), Some("A (20:1)"));
+    assert!((detail.figure.scale.value() - 5e-5).abs() < 1e-15);
+    let strokes = hatching(&detail.figure);
+    assert!(strokes.len() >= 10, "{}", strokes.len());
+    // The strokes parallel, 1 mm apart across them (their offsets along the normal; the
+    // hatcher works in f32 on the figure, whose strokes are 8 times shorter).
+    let longest = strokes
+        .iter()
+        .max_by(|a, b| a.length().total_cmp(&b.length()))
+        .expect("a stroke");
+    let n = (longest.to - longest.from).normalize().perp();
+    for s in strokes.iter().filter(|s| s.length() > 0.5) {
+        assert!((s.to - s.from).normalize().dot(n).abs() < 1e-3);
+    }
+    let mut offsets: Vec<f64> = strokes.iter().map(|s| s.from.dot(n)).collect();
+    offsets.sort_by(f64::total_cmp);
+    for w in offsets.windows(2) {
+        assert!((w[1] - w[0] - 1.0).abs() < 1e-3, "{offsets:?}");
+    }
+    let longest = strokes.iter().map(|s| s.length()).fold(0.0, f64::max);
+    assert!(longest > 3.0, "{longest} mm");
+    // Every detail stroke lies inside its border.
+    let Some(Item::Circle(border)) = detail.figure.steps.last().map(|s| &s.item) else {
+        panic!("the detail's border")
+    };
+    for s in &strokes {
+        assert!(s.from.length() <= border.radius + 1e-9 && s.to.length() <= border.radius + 1e-9);
+    }
+    // The shifted wheel (x = 0.6 > x_min) has no undercut: nothing hatched, no detail.
+    assert!(!racks[1].figure.steps.iter().any(|s| s.role == Role::Hatch));
+    assert_eq!(
+        views
+            .iter()
+            .filter(|v| v.figure.title == "detail of generation")
+            .count(),
+        1
+    );
+}
+
+#[test]
+fn the_drawn_rack_positions_are_recorded_ones() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions/gears-seed000.toml");
+    let s = tmm::load(&path).expect("scene");
+    let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
+    let g = session.gears().expect("gears");
+    let (_, r) = &g.racks[0];
+    let drawn = r.drawing();
+    // 60 steps and the device's marks traced, 7 drawn.
+    let traced = r.figure.steps.iter().map(|s| s.group).max().unwrap_or(0);
+    assert!(traced >= 60, "{traced}");
+    assert_eq!(r.drawn.len(), 7);
+    assert_eq!((r.drawn[0], r.drawn[6]), (1, traced));
+    for step in &drawn.steps {
+        assert_eq!(
+            Some(step),
+            r.figure.steps.get(step.id.0 as usize),
+            "{}",
+            step.note
+        );
+        assert!(step.group == 0 || r.drawn.contains(&step.group));
+    }
+    // The tooth drawn is the one traced from every position: the envelope within 1e-4·m.
+    assert!(r.deviation < 1e-4 * r.cutting.module, "{}", r.deviation);
+}

@@ -196,9 +196,11 @@ pub fn meshing_scale(p: &Pair) -> Result<Scale, GearError> {
     scale_for(p.a_w + p.ra[0] + p.ra[1], 360.0)
 }
 
-/// The round μ_l of a generation: the tooth and its spaces about 200 mm wide.
+/// The round μ_l of a generation: four pitches (the tooth, its spaces and the rack positions
+/// about them) up to 400 mm wide, so that the tooth is large on the sheet (seed 002 PZ1
+/// draws the rack-cut tooth on a disc of the tip diameter).
 pub fn generation_scale(c: &Cutting) -> Result<Scale, GearError> {
-    scale_for(4.0 * std::f64::consts::PI * c.module, 200.0)
+    scale_for(4.0 * std::f64::consts::PI * c.module, 400.0)
 }
 
 /// Carry out `spec` in `ctx`.
