@@ -281,8 +281,9 @@ fn refusals_name_the_key_that_makes_them() {
 
 #[test]
 fn a_drafting_that_reads_the_output_as_zero_names_drafting() {
-    // Seed 000's reducer: the output's intercept on the plan of ω is 17.189 mm.
-    for (d, ok) in [("34.3", true), ("34.4", false), ("100", false)] {
+    // Seed 000's reducer: the output's intercept on the plan of ω is 6.3 mm (ω₈ = 15.75 rad/s
+    // at μ_ω = 2.5 rad/(s·mm): H = 20 mm keeps the satellite's 81 mm within the reach).
+    for (d, ok) in [("12.5", true), ("12.7", false), ("100", false)] {
         let o = tmm(&[
             "report",
             "constructions/gears-seed000.toml",
@@ -297,8 +298,8 @@ fn a_drafting_that_reads_the_output_as_zero_names_drafting() {
             assert!(
                 err.contains(&format!("--drafting {d} mm"))
                     && err.contains("intercept of shaft 8")
-                    && err.contains("17.189 mm drawn")
-                    && err.contains("below 34.378 mm"),
+                    && err.contains("6.300 mm drawn")
+                    && err.contains("below 12.600 mm"),
                 "{err}"
             );
             assert!(!err.contains("does not turn"), "{err}");
@@ -587,4 +588,96 @@ fn the_drawn_rack_positions_are_recorded_ones() {
     }
     // The tooth drawn is the one traced from every position: the envelope within 1e-4·m.
     assert!(r.deviation < 1e-4 * r.cutting.module, "{}", r.deviation);
+}
+
+/// A scene's plan of angular velocities: the scene, the language, its μ_ω as printed and as
+/// a number, and ω of some shafts (rad/s).
+type PlanCase<'a> = (&'a str, tmm::Lang, &'a str, f64, &'a [(&'a str, f64)]);
+
+#[test]
+fn the_plan_of_angular_velocities_names_every_ray_and_prints_mu_omega() {
+    // PZ2 example 3 per unit input (no speed given): ω₁ = 1, ω₂₋₃ = z₁/z₂ = 0.25 (wheel 2
+    // internal), ω_H = ω₂₋₃/(1 + z₅/z₃) = 0.05, the ring 5 at rest, the satellite
+    // ω₄ = ω_H(1 − z₅/z₄) = −1/12.
+    let omega_4 = 0.05 * (1.0 - 80.0 / 30.0);
+    let w1 = 1400.0 * std::f64::consts::PI / 30.0;
+    let u18 = (-74.0 / 29.0) * (1.0 - (48.0 * 76.0) / (106.0 * 18.0)) * (-100.0 / 25.0);
+    let cases: [PlanCase<'_>; 3] = [
+        (
+            "constructions/gears-pz2.toml",
+            tmm::Lang::Ru,
+            "μ_{ω} = μ_{v}/(μ_{l}·H) = 0,02 рад/(с·мм)",
+            0.02,
+            &[
+                ("1", 1.0),
+                ("2-3", 0.25),
+                ("H", 0.05),
+                ("4", omega_4),
+                ("5", 0.0),
+            ],
+        ),
+        (
+            "constructions/gears-pz2.toml",
+            tmm::Lang::En,
+            "μ_{ω} = μ_{v}/(μ_{l}·H) = 0.02 rad/(s·mm)",
+            0.02,
+            &[("1", 1.0), ("H", 0.05)],
+        ),
+        // Seed 000's reducer at n₁ = 1400 rpm: ω₁ = 146.608 rad/s, u₁₈ = i₁₂·i₃H·i₇₈ = −9.30818
+        // (i₁₂ = −74/29, i₃H = 1 − z₄z₆/(z₃z₅), i₇₈ = −100/25).
+        (
+            "constructions/gears-seed000.toml",
+            tmm::Lang::Uk,
+            "μ_{ω} = μ_{v}/(μ_{l}·H) = 2,5 рад/(с·мм)",
+            2.5,
+            &[("1", w1), ("6", 0.0), ("8", w1 / u18)],
+        ),
+    ];
+    for (scene, lang, mu_text, mu_w, omegas) in cases {
+        let views = gear_views(scene, lang);
+        let v = views
+            .iter()
+            .find(|v| v.figure.title == "velocity triangles")
+            .expect("the triangles");
+        let f = &v.figure;
+        assert_eq!(labels_of(f, "μ_ω of the plan"), [mu_text], "{scene}");
+        assert_eq!(labels_of(f, "the pole of the plan"), ["p_ω"]);
+        assert_eq!(labels_of(f, "the foot of the pole"), ["0"]);
+        assert_eq!(labels_of(f, "the pole distance H"), ["H"]);
+        let foot = f
+            .steps
+            .iter()
+            .find(|s| s.note.starts_with("the foot of the pole"))
+            .and_then(|s| s.label.as_ref())
+            .expect("0")
+            .anchor;
+        for (shaft, omega) in omegas {
+            let ray = f
+                .steps
+                .iter()
+                .find(|s| s.note == format!("the ray of ω of {shaft}"))
+                .unwrap_or_else(|| panic!("{scene}: the ray of {shaft}"));
+            let label = ray.label.as_ref().expect("every ray named");
+            assert_eq!(&label.text, shaft);
+            // Named where it meets the reading line; its intercept from 0 reads ω at μ_ω.
+            assert!((label.anchor.y - foot.y).abs() < 1e-9);
+            let read = (label.anchor.x - foot.x) * mu_w;
+            assert!(
+                (read - omega).abs() <= 1e-9 * omega.abs().max(1.0),
+                "{scene}: ω_{shaft} read {read}, want {omega}"
+            );
+            // And the intercept is marked.
+            assert!(f
+                .steps
+                .iter()
+                .any(|s| s.note == format!("the intercept of ω of {shaft}")
+                    && s.item == tmm::construct::Item::Point(label.anchor)));
+        }
+        // Every link's ray named, none twice.
+        let mut rays = labels_of(f, "the ray of ω of");
+        let n = rays.len();
+        rays.dedup();
+        assert_eq!(rays.len(), n);
+        assert!(n >= omegas.len());
+    }
 }

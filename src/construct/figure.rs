@@ -333,6 +333,27 @@ impl Figure {
         }
     }
 
+    /// The figure with a free text `text` (label markup) at `at`, written toward `toward`: a
+    /// scale or a word a sheet writes beside a construction in the sheet's language.
+    pub fn with_text(mut self, note: &str, at: DVec2, text: String, toward: DVec2) -> Figure {
+        // After the last id (a figure of a few groups has gaps in its ids).
+        let id = StepId(self.steps.iter().map(|s| s.id.0 + 1).max().unwrap_or(0));
+        self.steps.push(Step {
+            id,
+            note: note.to_string(),
+            item: Item::Text(at),
+            role: Role::Dimension,
+            label: Some(Label {
+                text,
+                anchor: at,
+                toward,
+            }),
+            from: Vec::new(),
+            group: 0,
+        });
+        self
+    }
+
     /// Axis-aligned bounds (min, max) of everything drawn, mm; `None` for an empty figure.
     pub fn bounds(&self) -> Option<(DVec2, DVec2)> {
         let mut lo = DVec2::splat(f64::INFINITY);

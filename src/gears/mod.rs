@@ -309,6 +309,13 @@ pub struct TrainStudy {
     pub required: Option<Box<TrainStudy>>,
 }
 
+/// The input's ω the triangles are drawn for, rad/s: n_input·π/30, or 1 rad/s (per unit
+/// input) when the scene gives no speed.
+fn omega_in(spec: &PlanetarySpec) -> f64 {
+    spec.n_input
+        .map_or(1.0, |n| n * std::f64::consts::PI / 30.0)
+}
+
 /// Carry out the train study.
 ///
 /// # Errors
@@ -342,7 +349,7 @@ pub fn train_study(
         willis,
         ratio,
         stages: t.by_stages(),
-        triangles: triangles::triangles(t, ctx)?,
+        triangles: triangles::triangles(t, omega_in(spec), ctx)?,
         required,
     })
 }
@@ -376,15 +383,15 @@ impl TrainStudy {
         if let Some(r) = &self.required {
             out.extend(ratio_rows(r, &format!("{subject}_req")));
         }
-        if let Some(n) = self.spec.n_input {
-            let w_in = n * std::f64::consts::PI / 30.0;
+        if self.spec.n_input.is_some() {
+            let w_in = omega_in(&self.spec);
             let scale = self.willis.iter().fold(0.0_f64, |a, w| a.max(w.abs())) * w_in.abs();
             for (k, name) in t.shafts.iter().enumerate() {
                 out.push(row(
                     Symbol::AngularVelocity,
                     name,
                     Method::Triangles,
-                    self.triangles.omega[k] * w_in,
+                    self.triangles.omega[k],
                     self.willis[k] * w_in,
                     scale,
                 ));

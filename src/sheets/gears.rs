@@ -8,6 +8,7 @@ use super::layout::{lay_out_smallest, quantity, results_table, Block, Column, Re
 use super::BuildError;
 use crate::check::Row;
 use crate::gears::generate::DETAIL_LETTER;
+use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_sig, Lang};
 use crate::scene::Key;
@@ -125,15 +126,22 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             GearText::Triangles.get(lang),
             tri.scale_l.caption(lang),
             tri.scale_v.caption(lang),
-            format_sig(crate::gears::triangles::PLAN_H, 3, lang),
+            format_sig(tri.plan_h, 3, lang),
             mm_,
         );
-        blocks.push(view(
-            &tri.figure,
-            caption,
-            Key::PlanetaryModule,
-            tri.scale_v,
-        ));
+        // μ_ω beside the plan, at the end of its reading line, as the textbook writes it.
+        let scale_w = format!(
+            "μ_{{ω}} = μ_{{v}}/(μ_{{l}}·H) = {} {}",
+            format_sig(tri.scale_w.value(), 6, lang),
+            tri.scale_w.quantity.unit(lang),
+        );
+        let figure = tri.figure.clone().with_text(
+            "μ_ω of the plan of angular velocities",
+            tri.scale_w_at,
+            scale_w,
+            DVec2::X,
+        );
+        blocks.push(view(&figure, caption, Key::PlanetaryModule, tri.scale_v));
         let tr_ = &t.spec.train;
         for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
             let Some(s) = s else { continue };
