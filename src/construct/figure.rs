@@ -253,6 +253,144 @@ impl Figure {
         }
     }
 
+    /// The figure with only the steps of group 0 and of the groups `keep`: a drawing of a
+    /// few of the positions a construction traced (the others were traced all the same, and
+    /// what they found stays in group 0). The steps keep their ids.
+    pub fn only_groups(&self, keep: &[u32]) -> Figure {
+        Figure {
+            title: self.title.clone(),
+            scale: self.scale,
+            steps: self
+                .steps
+                .iter()
+                .filter(|s| s.group == 0 || keep.contains(&s.group))
+                .cloned()
+                .collect(),
+        }
+    }
+
+    /// A detail view (ГОСТ 2.305 выносной элемент) of the zone `zone` (figure mm) drawn at
+    /// `scale`: what the figure draws inside the circle, enlarged by μ/μ_detail about its
+    /// centre (the detail's origin), each line cut where it leaves the circle, and the circle
+    /// itself, thin. Points and joints inside keep their place; vectors, sliders, guides,
+    /// dimensions, angles, texts and labels stay on the main view. Each step notes the step
+    /// it copies in `from`.
+    pub fn detail(&self, zone: &Circle, scale: Scale) -> Figure {
+        let k = self.scale.value() / scale.value();
+        let t = |p: DVec2| (p - zone.center) * k;
+        let inside = |p: DVec2| p.distance(zone.center) <= zone.radius;
+        let mut items: Vec<(&Step, Item)> = Vec::new();
+        let arc = |a: &Arc| {
+            crate::geom::arc_in_circle(a, zone)
+                .into_iter()
+                .map(|a| {
+                    Item::Arc(Arc {
+                        center: t(a.center),
+                        radius: a.radius * k,
+                        ..a
+                    })
+                })
+                .collect::<Vec<_>>()
+        };
+        let runs = |points: &[DVec2], closed: bool| {
+            let mut pts = points.to_vec();
+            if closed {
+                pts.extend(points.first());
+            }
+            crate::geom::polyline_in_circle(&pts, zone)
+                .into_iter()
+                .map(|r| r.into_iter().map(t).collect::<Vec<_>>())
+                .collect::<Vec<_>>()
+        };
+        for st in &self.steps {
+            let copies: Vec<Item> = match &st.item {
+                Item::Point(p) if inside(*p) => vec![Item::Point(t(*p))],
+                Item::Joint { at, fixed } if inside(*at) => vec![Item::Joint {
+                    at: t(*at),
+                    fixed: *fixed,
+                }],
+                Item::Segment(s) => runs(&[s.from, s.to], false)
+                    .into_iter()
+                    .map(|r| Item::Segment(Segment::new(r[0], r[r.len() - 1])))
+                    .collect(),
+                Item::Circle(c) => arc(&Arc {
+                    center: c.center,
+                    radius: c.radius,
+                    start: 0.0,
+                    sweep: std::f64::consts::TAU,
+                }),
+                Item::Arc(a) => arc(a),
+                Item::Polyline { points, closed } => runs(points, *closed)
+                    .into_iter()
+                    .map(|points| Item::Polyline {
+                        points,
+                        closed: false,
+                    })
+                    .collect(),
+                Item::Curve { points, closed } => runs(points, *closed)
+                    .into_iter()
+                    .map(|points| Item::Curve {
+                        points,
+                        closed: false,
+                    })
+                    .collect(),
+                _ => Vec::new(),
+            };
+            items.extend(copies.into_iter().map(|item| (st, item)));
+        }
+        let mut steps: Vec<Step> = items
+            .into_iter()
+            .enumerate()
+            .map(|(i, (st, item))| Step {
+                id: StepId(i as u32),
+                note: format!("detail: {}", st.note),
+                item,
+                role: st.role,
+                label: None,
+                from: vec![st.id],
+                group: st.group,
+            })
+            .collect();
+        steps.push(Step {
+            id: StepId(steps.len() as u32),
+            note: "detail: its border".into(),
+            item: Item::Circle(Circle {
+                center: DVec2::ZERO,
+                radius: zone.radius * k,
+            }),
+            role: Role::Construction,
+            label: None,
+            from: Vec::new(),
+            group: 0,
+        });
+        Figure {
+            title: format!("detail of {}", self.title),
+            scale,
+            steps,
+        }
+    }
+
+    /// The figure with a free text `text` (label markup) at `at`, written toward `toward`: a
+    /// scale or a word a sheet writes beside a construction in the sheet's language.
+    pub fn with_text(mut self, note: &str, at: DVec2, text: String, toward: DVec2) -> Figure {
+        // After the last id (a figure of a few groups has gaps in its ids).
+        let id = StepId(self.steps.iter().map(|s| s.id.0 + 1).max().unwrap_or(0));
+        self.steps.push(Step {
+            id,
+            note: note.to_string(),
+            item: Item::Text(at),
+            role: Role::Dimension,
+            label: Some(Label {
+                text,
+                anchor: at,
+                toward,
+            }),
+            from: Vec::new(),
+            group: 0,
+        });
+        self
+    }
+
     /// Axis-aligned bounds (min, max) of everything drawn, mm; `None` for an empty figure.
     pub fn bounds(&self) -> Option<(DVec2, DVec2)> {
         let mut lo = DVec2::splat(f64::INFINITY);

@@ -37,8 +37,15 @@ pub struct Generation {
     pub steps: usize,
     /// μ_l of the figure.
     pub scale: Scale,
-    /// The figure: the blank's circles, every rack position, the touching points, the tooth.
+    /// The figure: the blank's circles, every rack position (position i in group i), the
+    /// touching points, the tooth.
     pub figure: Figure,
+    /// The groups of the positions drawn on the sheet ([`DRAWN_POSITIONS`] spread over the
+    /// traced ones), numbered 1, 2, … in this order on the drawing ([`Generation::drawing`]).
+    pub drawn: Vec<u32>,
+    /// The undercut's detail view: its zone on the figure (figure mm) and its scale;
+    /// `None` without undercut ([`Generation::detail_view`]).
+    pub detail: Option<(crate::geom::Circle, Scale)>,
     /// The touching points of the right half of the tooth (all positions, all pieces).
     pub touches: Vec<Touch>,
     /// The junction of the drawn involute and fillet, m (their crossing with undercut, the
@@ -61,11 +68,31 @@ pub struct Generation {
     pub touch_error: f64,
 }
 
-/// Spacing of the undercut's hatching on the drawing, mm.
-const UNDERCUT_HATCH_MM: f64 = 0.5;
+/// Spacing of the undercut's hatching where it is read (its detail view, or the figure
+/// when there is none), mm.
+const UNDERCUT_HATCH_MM: f64 = 1.0;
+
+/// The size of the undercut's detail view, mm: its zone is enlarged by the largest ГОСТ 2.302
+/// enlargement that draws it at most this wide.
+pub const DETAIL_MM: f64 = 150.0;
+
+/// The enlargements of ГОСТ 2.302 (n:1), the smallest first.
+const ENLARGEMENTS: [f64; 9] = [2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0];
+
+/// The zone of the detail view: the circle about the undercut's extent, this much wider.
+const DETAIL_MARGIN: f64 = 1.4;
+
+/// The letter of the undercut's detail view (ГОСТ 2.305: the zone on the figure and the
+/// view are marked alike).
+pub const DETAIL_LETTER: &str = "A";
+
+/// The rack positions drawn, as the textbook draws them: a few, thin, numbered. Every
+/// position is traced (its touching points make the tooth); only these are left on the
+/// drawing, spread evenly over the traced ones, the first and the last among them.
+pub const DRAWN_POSITIONS: usize = 7;
 
 /// Points per rounding arc of a drawn rack outline.
-const ARC_POINTS: usize = 6;
+const ARC_POINTS: usize = 24;
 
 /// Generate `cutting` by `steps` equal rack steps at the scale `scale` in `ctx`.
 ///
@@ -101,14 +128,15 @@ pub fn generate(
     // The circles about the tooth, over three pitches.
     let pitch = 2.0 * PI / f64::from(c.z);
     for (radius, name) in [(r, "r"), (rb, "r_b"), (ra, "r_a"), (rf, "r_f")] {
-        rec.draw(
+        let arc = crate::geom::Arc {
+            center: DVec2::ZERO,
+            radius: radius / mu,
+            start: PI / 2.0 - 1.5 * pitch,
+            sweep: 3.0 * pitch,
+        };
+        let id = rec.draw(
             format!("circle {name}"),
-            Item::Arc(crate::geom::Arc {
-                center: DVec2::ZERO,
-                radius: radius / mu,
-                start: PI / 2.0 - 1.5 * pitch,
-                sweep: 3.0 * pitch,
-            }),
+            Item::Arc(arc),
             if name == "r" {
                 Role::Axis
             } else {
@@ -116,6 +144,9 @@ pub fn generate(
             },
             &[o],
         );
+        // Named at its left end, clear of the rack positions.
+        let end = arc.end();
+        rec.label(id, name, end, DVec2::new(-1.0, 0.0));
     }
     let st = c.states();
     let (lo, hi) = c.span();
@@ -132,12 +163,15 @@ pub fn generate(
         }
     }
     states.sort_by(f64::total_cmp);
+    let drawn = spread(states.len(), DRAWN_POSITIONS);
     let mut touches = Vec::new();
     for (i, &q) in states.iter().enumerate() {
         rec.set_group(i as u32 + 1);
         let turn = q / r;
+        let mut last = None;
         for run in outline_runs(&c, q) {
             let pts: Vec<DVec2> = run.into_iter().map(|p| mm(rotate(p, turn))).collect();
+            last = pts.last().copied();
             rec.draw(
                 format!("rack position {}", i + 1),
                 Item::Polyline {
@@ -147,6 +181,16 @@ pub fn generate(
                 Role::Construction,
                 &[],
             );
+        }
+        // A drawn position's number at the outer end of its outline, out of the blank.
+        if let (Some(k), Some(end)) = (drawn.iter().position(|d| *d == i), last) {
+            let id = rec.draw(
+                format!("the number of rack position {}", i + 1),
+                Item::Text(end),
+                Role::Dimension,
+                &[],
+            );
+            rec.label(id, (k + 1).to_string(), end, end.normalize_or_zero());
         }
         for (piece, k) in touching(&c, q) {
             let at = mm(rotate(k, turn));
@@ -247,6 +291,7 @@ pub fn generate(
         Role::Result,
         &[],
     );
+    let mut detail = None;
     if undercut {
         // The undercut: uncut, the tooth would follow the involute down to the base circle
         // and the radial line below it; the fillet cuts into that outline from the junction
@@ -270,6 +315,30 @@ pub fn generate(
         uncut.extend(lost.iter().rev());
         uncut.extend(cut.last());
         let region: Vec<DVec2> = uncut.iter().chain(cut.iter().rev()).copied().collect();
+        // The undercut is a sliver: it is drawn again enlarged, as a detail view of the zone
+        // about the right flank's, at the round scale that makes the zone about DETAIL_MM
+        // across; the hatching is spaced for the scale it is read at.
+        let (lo, hi) = region.iter().fold(
+            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+            |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+        );
+        let radius = 0.5 * (hi - lo).length() * DETAIL_MARGIN;
+        let zone =
+            crate::geom::Circle::new(mm(0.5 * (lo + hi)), radius / mu).filter(|z| z.radius > 0.0);
+        let enlarged = detail_scale(2.0 * radius).filter(|d| d.value() < mu);
+        let mut spacing = UNDERCUT_HATCH_MM;
+        if let (Some(zone), Some(scale_d)) = (zone, enlarged) {
+            spacing *= scale_d.value() / mu;
+            let id = rec.draw(
+                "the zone of the undercut's detail view",
+                Item::Circle(zone),
+                Role::Construction,
+                &[],
+            );
+            let at = zone.center + DVec2::new(1.0, 1.0).normalize() * zone.radius;
+            rec.label(id, DETAIL_LETTER, at, DVec2::new(1.0, 1.0));
+            detail = Some((zone, scale_d));
+        }
         for side in [1.0, -1.0] {
             let flip = |p: DVec2| mm(DVec2::new(side * p.x, p.y));
             let edge = rec.draw(
@@ -282,7 +351,7 @@ pub fn generate(
                 &[],
             );
             let outline: Vec<DVec2> = region.iter().map(|p| flip(*p)).collect();
-            let strokes = crate::geom::hatch(&outline, UNDERCUT_HATCH_MM, side * PI / 4.0)
+            let strokes = crate::geom::hatch(&outline, spacing, side * PI / 4.0)
                 .map_err(|e| GearError::Construction(format!("the undercut's hatching: {e}")))?;
             for stroke in strokes {
                 rec.draw(
@@ -356,6 +425,8 @@ pub fn generate(
         steps,
         scale,
         figure: rec.finish(),
+        drawn: drawn.iter().map(|i| *i as u32 + 1).collect(),
+        detail,
         touches,
         junction,
         undercut,
@@ -366,6 +437,44 @@ pub fn generate(
         deviation_mean,
         touch_error,
     })
+}
+
+impl Generation {
+    /// The figure as the sheet draws it: the circles, the tooth, the undercut and s_a, and of
+    /// the rack positions only the [`drawn`](Generation::drawn) ones, numbered.
+    pub fn drawing(&self) -> Figure {
+        self.figure.only_groups(&self.drawn)
+    }
+
+    /// The undercut's detail view: the zone of [`drawing`](Generation::drawing) about the
+    /// right flank's undercut, enlarged ([`Figure::detail`]).
+    pub fn detail_view(&self) -> Option<Figure> {
+        self.detail
+            .map(|(zone, scale)| self.drawing().detail(&zone, scale))
+    }
+}
+
+/// The largest ГОСТ 2.302 enlargement n:1 that draws `size` (m) at most [`DETAIL_MM`] wide,
+/// as μ_l = 0.001/n m/mm; `None` when even 2:1 draws it wider.
+fn detail_scale(size: f64) -> Option<Scale> {
+    ENLARGEMENTS
+        .iter()
+        .rev()
+        .find(|n| size * 1e3 * *n <= DETAIL_MM)
+        .and_then(|n| Scale::new(1e-3 / n, crate::scale::Quantity::Length))
+}
+
+/// The indices of `count` of `n` items spread evenly, the first and the last among them
+/// (all of them when `n ≤ count`).
+fn spread(n: usize, count: usize) -> Vec<usize> {
+    if n <= count || count < 2 {
+        return (0..n.min(count)).collect();
+    }
+    let mut out: Vec<usize> = (0..count)
+        .map(|k| (k * (n - 1) + (count - 1) / 2) / (count - 1))
+        .collect();
+    out.dedup();
+    out
 }
 
 /// The whole tooth from its right half (tip → root → the space's centre): the mirrored left

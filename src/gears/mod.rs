@@ -29,14 +29,13 @@ mod train;
 mod train_rank;
 mod triangles;
 
-pub use generate::generate;
+pub use generate::{generate, DETAIL_LETTER};
 pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
 pub use mesh::LAMBDA_MM;
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
 pub use rows::PairSeed;
 pub use train::{Mesh, Train, TrainError, Wheel};
-pub use triangles::PLAN_H;
 
 use crate::scale::Scale;
 use thiserror::Error;
@@ -204,9 +203,11 @@ pub fn meshing_scale(p: &Pair) -> Result<Scale, GearError> {
     scale_for(p.a_w + p.ra[0] + p.ra[1], 360.0)
 }
 
-/// The round μ_l of a generation: the tooth and its spaces about 200 mm wide.
+/// The round μ_l of a generation: four pitches (the tooth, its spaces and the rack positions
+/// about them) up to 400 mm wide, so that the tooth is large on the sheet (seed 002 PZ1
+/// draws the rack-cut tooth on a disc of the tip diameter).
 pub fn generation_scale(c: &Cutting) -> Result<Scale, GearError> {
-    scale_for(4.0 * std::f64::consts::PI * c.module, 200.0)
+    scale_for(4.0 * std::f64::consts::PI * c.module, 400.0)
 }
 
 /// Carry out `spec` in `ctx`.
@@ -320,6 +321,13 @@ pub struct TrainStudy {
     pub required: Option<Box<TrainStudy>>,
 }
 
+/// The input's ω the triangles are drawn for, rad/s: n_input·π/30, or 1 rad/s (per unit
+/// input) when the scene gives no speed.
+fn omega_in(spec: &PlanetarySpec) -> f64 {
+    spec.n_input
+        .map_or(1.0, |n| n * std::f64::consts::PI / 30.0)
+}
+
 /// Carry out the train study.
 ///
 /// # Errors
@@ -353,7 +361,7 @@ pub fn train_study(
         willis,
         ratio,
         stages: t.by_stages(),
-        triangles: triangles::triangles(t, ctx)?,
+        triangles: triangles::triangles(t, omega_in(spec), ctx)?,
         required,
     })
 }
@@ -387,15 +395,15 @@ impl TrainStudy {
         if let Some(r) = &self.required {
             out.extend(ratio_rows(r, &format!("{subject}_req")));
         }
-        if let Some(n) = self.spec.n_input {
-            let w_in = n * std::f64::consts::PI / 30.0;
+        if self.spec.n_input.is_some() {
+            let w_in = omega_in(&self.spec);
             let scale = self.willis.iter().fold(0.0_f64, |a, w| a.max(w.abs())) * w_in.abs();
             for (k, name) in t.shafts.iter().enumerate() {
                 out.push(row(
                     Symbol::AngularVelocity,
                     name,
                     Method::Triangles,
-                    self.triangles.omega[k] * w_in,
+                    self.triangles.omega[k],
                     self.willis[k] * w_in,
                     scale,
                 ));

@@ -252,7 +252,7 @@ fn a_drafting_that_reads_the_output_as_zero_is_named() {
     );
     let at = |d: f64| {
         let ctx = Context::for_model_size(400.0, Drafting::new(d).unwrap()).unwrap();
-        crate::gears::triangles::triangles(&t, &ctx)
+        crate::gears::triangles::triangles(&t, 1.0, &ctx)
     };
     let exact = at(0.0).unwrap();
     assert!((exact.ratio + 4.0).abs() < 1e-9, "{}", exact.ratio);

@@ -82,7 +82,7 @@ fn seed000_reducer_by_willis_stages_and_triangles() {
     assert!((u - (-74.0 / 29.0) * i3h * -4.0).abs() < 1e-12, "{u}");
     assert!((u.abs() - 9.308).abs() < 5e-4);
     assert!((t.by_stages().unwrap() - u).abs() < 1e-12);
-    let tri = triangles::triangles(&t, &ctx(0.0)).unwrap();
+    let tri = triangles::triangles(&t, 1.0, &ctx(0.0)).unwrap();
     assert!((tri.ratio - u).abs() < 1e-9 * u.abs(), "{} {u}", tri.ratio);
     // Satellite speed relative to the carrier: 2533.3 rpm at n_H = 600 (seed: −1933.3 absolute).
     let w = t.willis().unwrap();
@@ -96,10 +96,8 @@ fn seed000_reducer_by_willis_stages_and_triangles() {
     let best = train::best_pairs(i12, 17, 40, 5);
     assert_eq!((best[0].0, best[0].1), (34, 87), "{best:?}");
     // At 0.5 mm each intercept is read to 0.25 mm: the ratio within that bound.
-    let read = triangles::triangles(&t, &ctx(0.5)).unwrap();
-    let x = |k: usize| {
-        (tri.omega[k] * triangles::PLAN_H * tri.scale_l.value() / tri.scale_v.value()).abs()
-    };
+    let read = triangles::triangles(&t, 1.0, &ctx(0.5)).unwrap();
+    let x = |k: usize| (tri.omega[k] / tri.scale_w.value()).abs();
     let bound = 0.25 / x(t.input) + 0.25 / x(t.output);
     assert!(
         ((read.ratio - u) / u).abs() <= bound * 1.01,
@@ -127,7 +125,7 @@ fn pz2_worked_examples_by_willis() {
     );
     assert!((ex3.ratio().unwrap() - 20.0).abs() < 1e-12);
     assert!((ex3.by_stages().unwrap() - 20.0).abs() < 1e-12);
-    let tri = triangles::triangles(&ex3, &ctx(0.0)).unwrap();
+    let tri = triangles::triangles(&ex3, 1.0, &ctx(0.0)).unwrap();
     assert!((tri.ratio - 20.0).abs() < 1e-9 * 20.0);
     // Example 1 as printed (not coaxial, Willis only): u17 = 20.
     let ex1 = train(
@@ -147,7 +145,7 @@ fn pz2_worked_examples_by_willis() {
         &["S"],
     );
     assert!((ex1.ratio().unwrap() - 20.0).abs() < 1e-12);
-    assert!(triangles::triangles(&ex1, &ctx(0.0)).is_err());
+    assert!(triangles::triangles(&ex1, 1.0, &ctx(0.0)).is_err());
     // Example 2 as printed: 32, not the printed 20 (33·45/(15·11) = 9, not 6).
     let ex2 = train(
         &[
@@ -200,7 +198,7 @@ proptest! {
         let expect = -(f64::from(z2) / f64::from(z1)) * (1.0 + f64::from(za + 2 * zg) / f64::from(za));
         prop_assert!((u - expect).abs() < 1e-9 * expect.abs());
         prop_assert!((t.by_stages().unwrap() - u).abs() < 1e-9 * u.abs());
-        let tri = triangles::triangles(&t, &ctx(0.0)).unwrap();
+        let tri = triangles::triangles(&t, 1.0, &ctx(0.0)).unwrap();
         prop_assert!((tri.ratio - u).abs() < 1e-9 * u.abs());
     }
 }
@@ -316,7 +314,7 @@ fn the_first_stage_at_the_required_ratio_gives_it_by_willis_and_the_triangles() 
     let u = t.ratio().unwrap();
     assert!((u + 28.0 / 3.0).abs() < 1e-12, "{u}");
     assert!((t.wheels[1].z / t.wheels[0].z - 2.558_621).abs() < 1e-6);
-    let tri = triangles::triangles(&t, &ctx(0.0)).unwrap();
+    let tri = triangles::triangles(&t, 1.0, &ctx(0.0)).unwrap();
     assert!((tri.ratio - u).abs() < 1e-9 * u.abs());
 }
 

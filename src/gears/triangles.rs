@@ -1,7 +1,8 @@
 //! The velocity triangles of a train (Smirnov / Kutzbach): the axes and the mesh poles at
 //! their heights at μ_l, the distribution line of each link through two known points, and
-//! the plan of angular velocities — rays from a pole at H parallel to the lines, their
-//! intercepts ∝ ω.
+//! the plan of angular velocities — rays from the pole p_ω at H under the reading line,
+//! parallel to the lines, each named by its link where it meets the reading line; the
+//! intercepts from the foot 0 of the pole read ω at μ_ω = μ_v/(μ_l·H).
 
 use super::train::{Train, TrainError};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
@@ -15,22 +16,42 @@ pub struct Triangles {
     pub scale_l: Scale,
     /// μ_v of the velocities.
     pub scale_v: Scale,
+    /// The pole distance H of the plan of angular velocities, mm.
+    pub plan_h: f64,
+    /// μ_ω = μ_v/(μ_l·H) of the plan.
+    pub scale_w: Scale,
+    /// Where the plan's μ_ω is written: past the right end of its reading line, figure mm.
+    pub scale_w_at: DVec2,
     /// The picture of linear velocities (and the plan of angular velocities beside it).
     pub figure: Figure,
-    /// ω of every shaft read off the plan, for ω_in = 1 (intercepts as read × μ_v/(μ_l H)).
+    /// ω of every shaft read off the plan, rad/s (intercepts as read × μ_ω).
     pub omega: Vec<f64>,
     /// u = ω_in/ω_out as read (the intercepts' ratio).
     pub ratio: f64,
 }
 
-/// The pole distance of the plan of angular velocities, mm.
-pub const PLAN_H: f64 = 40.0;
+/// The pole distances H of the plan of angular velocities a student picks from, mm, the
+/// largest first.
+pub const PLAN_H: [f64; 9] = [60.0, 50.0, 40.0, 30.0, 25.0, 20.0, 15.0, 10.0, 5.0];
 
-/// Construct the velocity triangles of `train` for ω_in = 1 rad/s in `ctx`.
+/// The farthest an intercept of the plan may fall from the pole's foot, mm: H is the largest
+/// of [`PLAN_H`] that keeps the fastest link's within it and makes μ_ω round (1, 2, 2.5, 4,
+/// 5 × 10ⁿ), or failing that the largest that keeps it within.
+pub const PLAN_REACH_MM: f64 = 100.0;
+
+/// How far the reading line runs past the outermost intercepts, mm.
+const PLAN_OVERHANG_MM: f64 = 8.0;
+
+/// How far the dimension H stands past the end of the reading line, mm.
+const PLAN_DIMENSION_MM: f64 = 4.0;
+
+/// Construct the velocity triangles of `train` for the input turning at `omega_in` rad/s
+/// in `ctx`.
 ///
 /// # Errors
-/// [`TrainError::Layout`] when the scheme cannot be laid out or a link's line is not fixed.
-pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> {
+/// [`TrainError::Layout`] when the scheme cannot be laid out, `omega_in` is 0 or not finite,
+/// or a link's line is not fixed.
+pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangles, TrainError> {
     let (ys, poles) = train.layout()?;
     let lo = ys
         .iter()
@@ -53,7 +74,10 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
             train.wheels[m.0].shaft == train.input || train.wheels[m.1].shaft == train.input
         })
         .ok_or_else(|| bad("the input meshes nothing"))?;
-    let v_in = (poles[first] - ys[train.input]).abs().max(train.module);
+    if !(omega_in.is_finite() && omega_in != 0.0) {
+        return Err(bad("the input's ω is 0 or not finite"));
+    }
+    let v_in = (poles[first] - ys[train.input]).abs().max(train.module) * omega_in.abs();
     let mu_v = Scale::round_for(v_in, 60.0, Quantity::Velocity).ok_or_else(|| bad("μ_v"))?;
     let mut rec = Recorder::in_context("velocity triangles", mu_v, ctx);
     let (ml, mv) = (mu_l.value(), mu_v.value());
@@ -81,7 +105,7 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
     let pin = poles[first];
     lines[train.input] = Some((
         DVec2::new(0.0, yy(ys[train.input])),
-        DVec2::new((pin - ys[train.input]) / mv, yy(pin)),
+        DVec2::new((pin - ys[train.input]) * omega_in / mv, yy(pin)),
     ));
     for _ in 0..2 * n + 2 {
         for k in 0..n {
@@ -123,16 +147,48 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
             }
         }
     }
+    if let Some(k) = lines.iter().position(Option::is_none) {
+        return Err(TrainError::Layout(format!(
+            "the velocities of shaft {} cannot be drawn",
+            train.shafts[k]
+        )));
+    }
+    // The slope of each line (its v over its height, drawn mm per mm): a ray's intercept is
+    // H times it.
+    let slopes: Vec<f64> = lines
+        .iter()
+        .map(|l| l.map_or(0.0, |(a, b)| (b.x - a.x) / (b.y - a.y)))
+        .collect();
+    let steepest = slopes.iter().fold(0.0_f64, |m, s| m.max(s.abs()));
+    // The largest H within the reach whose μ_ω is round; the largest within it otherwise.
+    let reach = |h: &f64| steepest * h <= PLAN_REACH_MM;
+    let round = |h: &f64| {
+        let w = mv / (ml * h);
+        Scale::round_for(w, 1.0, Quantity::AngularVelocity)
+            .is_some_and(|r| (r.value() - w).abs() <= 1e-9 * w)
+    };
+    let plan_h = PLAN_H
+        .into_iter()
+        .find(|h| reach(h) && round(h))
+        .or_else(|| PLAN_H.into_iter().find(reach))
+        .unwrap_or(PLAN_H[PLAN_H.len() - 1]);
+    let scale_w =
+        Scale::new(mv / (ml * plan_h), Quantity::AngularVelocity).ok_or_else(|| bad("μ_ω"))?;
     let mut omega = vec![0.0; n];
     // The input's and the output's intercepts (shaft, drawn, read), mm.
     let mut ends: Vec<(usize, f64, f64)> = Vec::new();
-    let y_ref = yy(hi) + 10.0 + PLAN_H;
-    let pole = DVec2::new(0.0, y_ref - PLAN_H);
+    let y_ref = yy(hi) + 10.0 + plan_h;
+    let pole = DVec2::new(0.0, y_ref - plan_h);
+    let foot = DVec2::new(0.0, y_ref);
+    let (left, right) = slopes.iter().fold((0.0_f64, 0.0_f64), |(l, r), s| {
+        (l.min(s * plan_h), r.max(s * plan_h))
+    });
+    let (left, right) = (left - PLAN_OVERHANG_MM, right + PLAN_OVERHANG_MM);
     rec.draw(
-        "the line of the plan of ω",
+        "the reading line of the plan of ω, H above the pole",
         Item::Segment(Segment::new(
-            DVec2::new(-60.0, y_ref),
-            DVec2::new(60.0, y_ref),
+            DVec2::new(left, y_ref),
+            DVec2::new(right, y_ref),
         )),
         Role::Construction,
         &[],
@@ -145,6 +201,33 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
         DVec2::new(-1.0, -0.5),
         &[],
     );
+    // The intercepts are read from the pole's foot 0; H is the pole's distance.
+    rec.point(
+        "the foot of the pole on the reading line: the origin of the intercepts",
+        foot,
+        Role::Construction,
+        "0",
+        DVec2::new(-0.4, 1.0),
+        &[],
+    );
+    // The dimension H past the nearer end of the reading line, clear of the rays and their
+    // names (its offset is to the left of pole → foot: −x).
+    let (side, reach_mm) = if -left <= right {
+        (1.0, -left)
+    } else {
+        (-1.0, right)
+    };
+    let h_dim = rec.draw(
+        "the pole distance H",
+        Item::Dimension {
+            from: pole,
+            to: foot,
+            offset: side * (reach_mm + PLAN_DIMENSION_MM),
+        },
+        Role::Dimension,
+        &[],
+    );
+    rec.label(h_dim, "H", 0.5 * (pole + foot), DVec2::new(-side, 0.0));
     // The heights: every axis and mesh pole, marked on the axis of heights.
     for (k, y) in ys.iter().enumerate() {
         let id = rec.draw(
@@ -200,30 +283,42 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
             Role::Result,
             &[],
         );
-        let top = if pb.x.abs() >= pa.x.abs() { pb } else { pa };
-        rec.label(id, &train.shafts[k], top, DVec2::new(top.x.signum(), 0.3));
-        // The ray of the plan parallel to it, to the line of the plan.
-        let slope = (b.x - a.x) / (b.y - a.y);
-        let hit = DVec2::new(slope * PLAN_H, y_ref);
+        // Named at its faster end; a link at rest (its line on the axis, where the other
+        // lines start and cross) halfway along it.
+        let (at, toward) = if pa.x == 0.0 && pb.x == 0.0 {
+            (0.5 * (pa + pb), DVec2::new(-1.0, 0.0))
+        } else {
+            let top = if pb.x.abs() >= pa.x.abs() { pb } else { pa };
+            (top, DVec2::new(top.x.signum(), 0.3))
+        };
+        rec.label(id, &train.shafts[k], at, toward);
+        // The ray of the plan parallel to it, to the reading line, named by the link where
+        // it meets it; the intercept marked there.
+        let hit = DVec2::new(slopes[k] * plan_h, y_ref);
         let ray = rec.draw(
             format!("the ray of ω of {}", train.shafts[k]),
             Item::Segment(Segment::new(pole, hit)),
             Role::Construction,
             &[],
         );
-        let _ = ray;
-        let read = rec.measure(DVec2::new(0.0, y_ref), hit);
+        rec.label(
+            ray,
+            &train.shafts[k],
+            hit,
+            DVec2::new(hit.x.signum() * 0.3, 1.0),
+        );
+        rec.draw(
+            format!("the intercept of ω of {}", train.shafts[k]),
+            Item::Point(hit),
+            Role::Construction,
+            &[ray],
+        );
+        let read = rec.measure(foot, hit);
         if k == train.input || k == train.output {
             ends.push((k, read.drawn_mm, read.read_mm));
         }
-        // ω = (intercept μ_v)/(H μ_l), signed by the side.
-        omega[k] = hit.x.signum() * read.read_mm * mv / (PLAN_H * ml);
-    }
-    if let Some(k) = lines.iter().position(Option::is_none) {
-        return Err(TrainError::Layout(format!(
-            "the velocities of shaft {} cannot be drawn",
-            train.shafts[k]
-        )));
+        // ω = intercept · μ_ω, μ_ω = μ_v/(μ_l H), signed by the side.
+        omega[k] = hit.x.signum() * read.read_mm * scale_w.value();
     }
     // A resolution that reads the input's or the output's intercept as 0 leaves no ratio.
     if ends
@@ -249,6 +344,9 @@ pub fn triangles(train: &Train, ctx: &Context) -> Result<Triangles, TrainError> 
     Ok(Triangles {
         scale_l: mu_l,
         scale_v: mu_v,
+        plan_h,
+        scale_w,
+        scale_w_at: DVec2::new(right + PLAN_OVERHANG_MM, y_ref),
         figure: rec.finish(),
         omega,
         ratio: wi / wo,

@@ -1,12 +1,14 @@
 //! The geometry kernel: primitives on `glam::DVec2`, intersections as outcome enums,
 //! explicit tolerances. Knows nothing of plates, scenes or mechanisms.
 
+mod clip;
 mod hatch;
 mod intersect;
 mod primitives;
 mod solve;
 mod tolerance;
 
+pub use clip::{arc_in_circle, polyline_in_circle};
 pub use glam::DVec2;
 pub use hatch::{hatch, HatchError, MAX_HATCH_LINES};
 pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};

@@ -7,6 +7,8 @@ use super::captions::{unit_in, GearText, Text};
 use super::layout::{lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
+use crate::gears::DETAIL_LETTER;
+use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_sig, Lang};
 use crate::scene::Key;
@@ -21,6 +23,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let scene = session.scene();
     let g = session.gears()?;
     let mut blocks = Vec::new();
+    let mut details = Vec::new();
     let mm_ = unit_in("mm", lang);
     let mut lines = vec![GearText::DataAndResults.get(lang).to_string()];
     let mut plan = None;
@@ -74,11 +77,14 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     for (name, r) in &g.racks {
         let c = &r.cutting;
         let caption = format!(
-            "{} z = {}, x = {}, N = {}, {}{}",
+            "{} z = {}, x = {}, N = {} ({}), {}{}",
             GearText::CutByRack.get(lang),
             c.z,
             format_sig(c.x, 4, lang),
             r.steps,
+            GearText::PositionsDrawn
+                .get(lang)
+                .replace("{n}", &r.drawn.len().to_string()),
             r.scale.caption(lang),
             if r.undercut {
                 GearText::UndercutHatched.get(lang)
@@ -86,7 +92,13 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 ""
             }
         );
-        blocks.push(view(&r.figure, caption, Key::GearsRackScaleL, r.scale));
+        blocks.push(view(&r.drawing(), caption, Key::GearsRackScaleL, r.scale));
+        // The undercut's detail view, named by its letter and scale (ГОСТ 2.305: «А (20:1)»),
+        // after the pictures (a detail may stand anywhere on the sheet).
+        if let (Some(detail), Some((_, scale))) = (r.detail_view(), r.detail) {
+            let caption = format!("{DETAIL_LETTER} ({})", super::gost_scale(scale, lang));
+            details.push(view(&detail, caption, Key::GearsRackScaleL, r.scale));
+        }
         plan.get_or_insert(r.scale);
         lines.push(format!(
             "{name}: z = {}, x = {}, x_{{min}} = {}, s_a = {} {}{}{}",
@@ -114,15 +126,22 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             GearText::Triangles.get(lang),
             tri.scale_l.caption(lang),
             tri.scale_v.caption(lang),
-            format_sig(crate::gears::PLAN_H, 3, lang),
+            format_sig(tri.plan_h, 3, lang),
             mm_,
         );
-        blocks.push(view(
-            &tri.figure,
-            caption,
-            Key::PlanetaryModule,
-            tri.scale_v,
-        ));
+        // μ_ω beside the plan, at the end of its reading line, as the textbook writes it.
+        let scale_w = format!(
+            "μ_{{ω}} = μ_{{v}}/(μ_{{l}}·H) = {} {}",
+            format_sig(tri.scale_w.value(), 6, lang),
+            tri.scale_w.quantity.unit(lang),
+        );
+        let figure = tri.figure.clone().with_text(
+            "μ_ω of the plan of angular velocities",
+            tri.scale_w_at,
+            scale_w,
+            DVec2::X,
+        );
+        blocks.push(view(&figure, caption, Key::PlanetaryModule, tri.scale_v));
         let tr_ = &t.spec.train;
         for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
             let Some(s) = s else { continue };
@@ -148,6 +167,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             ));
         }
     }
+    blocks.append(&mut details);
     lines.push(String::new());
     lines.push(super::drafting_line(session.drafting(), lang));
     blocks.push(Block::Text {

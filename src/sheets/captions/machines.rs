@@ -63,6 +63,7 @@ catalogue! {
         CutByRack => ("Нарезание рейкой:", "Нарізання рейкою:", "Cut by the rack:"),
         UndercutHatched => ("; подрез заштрихован", "; підріз заштриховано", "; the undercut hatched"),
         Undercut => (", подрез", ", підріз", ", undercut"),
+        PositionsDrawn => ("показаны {n}", "показано {n}", "{n} drawn"),
         Pointed => (", заострение", ", загострення", ", pointed"),
         Triangles => (
             "Треугольники скоростей и план угловых скоростей",
