@@ -5,7 +5,7 @@
 //! field), so the sheet draws the very plans the report reads.
 
 use super::captions::{symbols, unit_in, Text};
-use super::layout::{keyed, lay_out, split_table, table, Block};
+use super::layout::{keyed, lay_out, split_table, table, Block, Part};
 use super::BuildError;
 use crate::check::Method;
 use crate::geom::DVec2;
@@ -50,14 +50,17 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         let dec = |x: f64| format_sig(x, 4, lang);
         blocks.push(Block::Views {
             parts: vec![
-                (d.first_figure.clone(), DVec2::ZERO),
-                (d.second_figure.clone(), d.second_at),
+                Part::new(d.first_figure.clone(), DVec2::ZERO, None),
+                Part::new(
+                    d.second_figure.clone(),
+                    d.second_at,
+                    Some(format!(
+                        "d²S/dφ²: H_{{2}} = {} {}",
+                        dec(d.second.pole_mm),
+                        Text::Millimetre.get(lang)
+                    )),
+                ),
             ],
-            caption: Some(format!(
-                "d²S/dφ²: H_{{2}} = {} {}",
-                dec(d.second.pole_mm),
-                Text::Millimetre.get(lang)
-            )),
             scale: keyed(Key::KinematicsScaleS, d.scales.y),
         });
         lines.push(format!(

@@ -30,16 +30,42 @@ pub(super) fn keyed(key: Key, scale: Scale) -> Option<ScaleKey> {
     Some(ScaleKey { key, scale })
 }
 
+/// One view of a [`Block::Views`]: its figure, where its origin lies in the first figure's
+/// coordinates (mm, y up), and its caption, written under it in a band of
+/// [`CAPTION_BAND_MM`].
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Part {
+    /// The figure.
+    pub figure: Figure,
+    /// Offset of its origin in the first figure's coordinates, mm.
+    pub at: DVec2,
+    /// Its caption.
+    pub caption: Option<String>,
+    /// How far under the figure's bounds the caption's band starts, mm
+    /// ([`View::caption_drop`]).
+    pub caption_drop: f64,
+}
+
+impl Part {
+    /// A view at `at` with `caption` under it.
+    pub fn new(figure: Figure, at: DVec2, caption: Option<String>) -> Self {
+        Part {
+            figure,
+            at,
+            caption,
+            caption_drop: 0.0,
+        }
+    }
+}
+
 /// One thing on a sheet.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) enum Block {
     /// Figures drawn together (a view, or a stack such as S, dS/dφ, d²S/dφ² whose parts lie at
-    /// offsets in the first one's coordinates), with one caption under them all.
+    /// offsets in the first one's coordinates), each with its caption under it, if any.
     Views {
-        /// (figure, offset of its origin in the first figure's coordinates, mm).
-        parts: Vec<(Figure, DVec2)>,
-        /// The caption.
-        caption: Option<String>,
+        /// The views.
+        parts: Vec<Part>,
         /// What sets its size.
         scale: Option<ScaleKey>,
     },
@@ -58,9 +84,26 @@ impl Block {
     /// One figure with a caption.
     pub fn view(figure: Figure, caption: String, scale: Option<ScaleKey>) -> Self {
         Block::Views {
-            parts: vec![(figure, DVec2::ZERO)],
-            caption: Some(caption),
+            parts: vec![Part::new(figure, DVec2::ZERO, Some(caption))],
             scale,
+        }
+    }
+
+    /// The block with each caption under what its figure's symbols draw below its points
+    /// (the ground of a fixed pivot), not over it.
+    pub fn clear_of_symbols(self) -> Self {
+        match self {
+            Block::Views { parts, scale } => Block::Views {
+                parts: parts
+                    .into_iter()
+                    .map(|p| Part {
+                        caption_drop: View::symbols_below(&p.figure),
+                        ..p
+                    })
+                    .collect(),
+                scale,
+            },
+            other => other,
         }
     }
 
@@ -73,21 +116,18 @@ impl Block {
         }
         let l = |s: &str| symbols::localise(s, lang);
         match self {
-            Block::Views {
-                parts,
-                caption,
-                scale,
-            } => Block::Views {
+            Block::Views { parts, scale } => Block::Views {
                 parts: parts
                     .into_iter()
-                    .map(|(mut figure, off)| {
-                        for label in figure.steps.iter_mut().filter_map(|s| s.label.as_mut()) {
+                    .map(|mut part| {
+                        let steps = part.figure.steps.iter_mut();
+                        for label in steps.filter_map(|s| s.label.as_mut()) {
                             label.text = l(&label.text);
                         }
-                        (figure, off)
+                        part.caption = part.caption.as_deref().map(l);
+                        part
                     })
                     .collect(),
-                caption: caption.as_deref().map(l),
                 scale,
             },
             Block::Text { lines, size_mm } => Block::Text {
@@ -107,36 +147,54 @@ impl Block {
         }
     }
 
-    /// Bounds of the figures, in the first one's coordinates (y up).
-    fn bounds(parts: &[(Figure, DVec2)]) -> (DVec2, DVec2) {
+    /// Bounds of the figures with their caption bands, in the first one's coordinates (y up).
+    fn bounds(parts: &[Part]) -> (DVec2, DVec2) {
         parts
             .iter()
-            .filter_map(|(f, off)| f.bounds().map(|(lo, hi)| (lo + *off, hi + *off)))
+            .filter_map(|p| {
+                let band = if p.caption.is_some() {
+                    CAPTION_BAND_MM + p.caption_drop
+                } else {
+                    0.0
+                };
+                p.figure
+                    .bounds()
+                    .map(|(lo, hi)| (lo + p.at - DVec2::new(0.0, band), hi + p.at))
+            })
             .fold(
                 (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
                 |(lo, hi), (a, b)| (lo.min(a), hi.max(b)),
             )
     }
 
+    /// The abscissae the parts' drawings and captions span, in the first one's coordinates:
+    /// a caption is written centred under its figure and may be wider than the drawing.
+    fn span(parts: &[Part]) -> (f64, f64) {
+        let (lo, hi) = Self::bounds(parts);
+        parts
+            .iter()
+            .filter_map(|p| {
+                let (a, b) = p.figure.bounds()?;
+                let w = text::approx_width(p.caption.as_deref()?, CAPTION_HEIGHT_MM);
+                let c = (a.x + b.x) * 0.5 + p.at.x;
+                Some((c - w * 0.5, c + w * 0.5))
+            })
+            .fold((lo.x, hi.x), |(l, h), (a, b)| (l.min(a), h.max(b)))
+    }
+
     /// The size the block takes on the sheet, mm: its drawing with room for labels and the
-    /// caption band.
+    /// caption bands.
     fn size(&self) -> DVec2 {
         match self {
-            Block::Views { parts, caption, .. } => {
+            Block::Views { parts, .. } => {
                 let (lo, hi) = Self::bounds(parts);
-                let band = if caption.is_some() {
-                    CAPTION_BAND_MM
-                } else {
-                    0.0
-                };
                 let drawn = if lo.x <= hi.x { hi - lo } else { DVec2::ZERO };
                 // A caption wider than its drawing widens the block.
-                let caption_w = caption
-                    .as_deref()
-                    .map_or(0.0, |c| text::approx_width(c, CAPTION_HEIGHT_MM));
+                let (left, right) = Self::span(parts);
+                let captioned = if left <= right { right - left } else { 0.0 };
                 DVec2::new(
-                    (drawn.x + LABEL_MARGIN).max(caption_w),
-                    drawn.y + LABEL_MARGIN + band,
+                    (drawn.x + LABEL_MARGIN).max(captioned),
+                    drawn.y + LABEL_MARGIN,
                 )
             }
             Block::Text { lines, size_mm } => {
@@ -321,28 +379,19 @@ struct Parts {
 /// Put `block` into `rect`.
 fn put(block: Block, rect: Rect, parts: &mut Parts) {
     match block {
-        Block::Views {
-            parts: figures,
-            caption,
-            ..
-        } => {
+        Block::Views { parts: figures, .. } => {
+            // The whole group's bounds, caption bands included, go to the rectangle's centre.
             let (lo, hi) = Block::bounds(&figures);
-            // The whole group's bounds go to the rectangle's centre, over the caption band.
-            let band = if caption.is_some() {
-                CAPTION_BAND_MM
-            } else {
-                0.0
-            };
-            let c = rect.center() - DVec2::new(0.0, band * 0.5);
-            let mid = (lo + hi) * 0.5;
+            let (left, right) = Block::span(&figures);
+            let c = rect.center();
+            let mid = DVec2::new((left + right) * 0.5, (lo.y + hi.y) * 0.5);
             let origin = DVec2::new(c.x - mid.x, c.y + mid.y);
-            // The caption goes under the last part, the bottom of a stack.
-            let last = figures.len().saturating_sub(1);
-            for (k, (figure, off)) in figures.into_iter().enumerate() {
+            for p in figures {
                 parts.views.push(View {
-                    figure,
-                    origin: origin + DVec2::new(off.x, -off.y),
-                    caption: if k == last { caption.clone() } else { None },
+                    figure: p.figure,
+                    origin: origin + DVec2::new(p.at.x, -p.at.y),
+                    caption: p.caption,
+                    caption_drop: p.caption_drop,
                 });
             }
         }
@@ -430,7 +479,7 @@ fn too_large(sheet: &Sheet, blocks: &[Block], sizes: &[DVec2], k: usize) -> Buil
     let what = match &blocks[k] {
         Block::Views { parts, .. } => parts
             .first()
-            .map_or_else(String::new, |p| p.0.title.clone()),
+            .map_or_else(String::new, |p| p.figure.title.clone()),
         Block::Text { .. } => "text".into(),
         Block::Table(t) => t.title.clone(),
     };
