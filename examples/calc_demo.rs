@@ -81,6 +81,7 @@ fn main() -> Res<()> {
         figure,
         origin,
         caption: None,
+        caption_drop: 0.0,
     };
     let texts = vec![TextBlock {
         at: DVec2::new(30.0, 224.0),

@@ -231,3 +231,89 @@ fn a_machine_that_needs_no_flywheel_gets_none_and_its_plate_builds() {
     );
     assert!(!svg.contains("D = (J"), "the plate sizes a rim");
 }
+
+/// The energy–mass curve as the plate draws it: a polyline as it is; a smooth curve through
+/// points sampled as the plate strokes it (the Catmull–Rom cubic of each span).
+fn drawn(item: &tmm::construct::Item) -> Vec<glam::DVec2> {
+    use tmm::construct::Item;
+    match item {
+        Item::Polyline { points, .. } => points.clone(),
+        Item::Curve { points, closed } => {
+            let n = points.len();
+            let at = |i: isize| {
+                let i = if *closed {
+                    i.rem_euclid(n as isize)
+                } else {
+                    i.clamp(0, n as isize - 1)
+                };
+                points[i as usize]
+            };
+            let spans = if *closed { n } else { n - 1 } as isize;
+            (0..spans)
+                .flat_map(|i| {
+                    let (p0, p1, p2, p3) = (at(i - 1), at(i), at(i + 1), at(i + 2));
+                    let (c1, c2) = (p1 + (p2 - p0) / 6.0, p2 - (p3 - p1) / 6.0);
+                    (0..64).map(move |k| {
+                        let u = k as f64 / 64.0;
+                        let v = 1.0 - u;
+                        p1 * v * v * v
+                            + c1 * 3.0 * v * v * u
+                            + c2 * 3.0 * v * u * u
+                            + p2 * u * u * u
+                    })
+                })
+                .collect()
+        }
+        _ => Vec::new(),
+    }
+}
+
+/// Issue 19 §7: Wittenbauer's tangents touch the energy–mass curve drawn and do not cut it —
+/// the whole drawn curve lies on one side of each tangent (to 1 µm), and touches it. The
+/// smooth curve drawn before through the twelve points bulged about 1 mm past both.
+#[test]
+fn wittenbauer_tangents_touch_the_drawn_curve() {
+    use tmm::construct::Item;
+    for name in ["shaper", "v-engine"] {
+        let s = tmm::load(&support::root().join(format!("constructions/{name}.toml")))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
+        let dynamics = session.dynamics().unwrap_or_else(|e| panic!("{e}"));
+        let fig = &dynamics.diagrams.wittenbauer_figure;
+        let curve = fig
+            .steps
+            .iter()
+            .find(|s| s.note == "energy–mass curve")
+            .map(|s| drawn(&s.item))
+            .expect("the curve");
+        assert!(curve.len() >= 12, "{name}");
+        for (tangent, above) in [("tangent ψ_k", true), ("tangent ψ_l", false)] {
+            let Some(Item::Segment(t)) = fig
+                .steps
+                .iter()
+                .find(|s| s.note == tangent)
+                .map(|s| &s.item)
+            else {
+                panic!("{name}: {tangent}");
+            };
+            let d = (t.to - t.from).normalize();
+            // Signed distance from the line, > 0 on its upper (left) side.
+            let side = |p: glam::DVec2| d.perp_dot(p - t.from);
+            let (lo, hi) = curve.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &p| {
+                (lo.min(side(p)), hi.max(side(p)))
+            });
+            // ψ_max runs above the curve: the curve below it; ψ_min below: the curve above.
+            let (past, gap) = if above { (hi, -hi) } else { (-lo, lo) };
+            assert!(past <= 1e-3, "{name}: {tangent} cut by {past} mm");
+            assert!(
+                gap <= 1e-3,
+                "{name}: {tangent} misses the curve by {gap} mm"
+            );
+            assert!(
+                hi - lo > 5.0,
+                "{name}: {tangent}: the curve spans {} mm across it",
+                hi - lo
+            );
+        }
+    }
+}

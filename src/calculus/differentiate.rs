@@ -28,10 +28,27 @@ impl Method {
         pole_mm: f64,
         layout: &Layout,
     ) -> Result<Derivative, CalculusError> {
-        let st = Start::new(rec, src, scales, pole_mm, layout)?;
+        self.differentiate_in(Figures::One(rec), src, scales, pole_mm, layout)
+    }
+
+    /// [`Method::differentiate`] into `figs`: the given diagram (its curve, chords or
+    /// tangents) in the given figure; the pole, the rays, the projections and the derivative's
+    /// curve in the constructed one, whose scale must be μ_y/(H·μ_x).
+    ///
+    /// # Errors
+    /// As [`Method::differentiate`].
+    pub fn differentiate_in(
+        self,
+        mut figs: Figures<'_>,
+        src: &Diagram,
+        scales: Scales,
+        pole_mm: f64,
+        layout: &Layout,
+    ) -> Result<Derivative, CalculusError> {
+        let st = Start::new(&mut figs, src, scales, pole_mm, layout)?;
         match self {
-            Method::Chords => chords(rec, &st),
-            Method::Tangents => tangents(rec, &st),
+            Method::Chords => chords(&mut figs, &st),
+            Method::Tangents => tangents(&mut figs, &st),
         }
     }
 }
@@ -170,7 +187,7 @@ struct Start<'a> {
 impl<'a> Start<'a> {
     /// Check the inputs, place the given diagram's nodes and draw its curve if asked.
     fn new(
-        rec: &mut Recorder,
+        figs: &mut Figures<'_>,
         src: &'a Diagram,
         scales: Scales,
         pole_mm: f64,
@@ -178,7 +195,10 @@ impl<'a> Start<'a> {
     ) -> Result<Self, CalculusError> {
         src.validate()?;
         check_pole(pole_mm)?;
-        let scale = check_scale(rec, scales.y.value() / (pole_mm * scales.x.value()))?;
+        let scale = check_scale(
+            figs.built(),
+            scales.y.value() / (pole_mm * scales.x.value()),
+        )?;
         let n = src.intervals();
         let run = scales.x.to_mm(src.dx);
         let pts = (0..=n)
@@ -193,7 +213,7 @@ impl<'a> Start<'a> {
             .collect::<Result<Vec<_>, _>>()?;
         if layout.draw_source {
             draw_diagram(
-                rec,
+                figs.given(),
                 layout.source_origin,
                 pts.clone(),
                 (6.0, run * n as f64),
@@ -240,7 +260,7 @@ struct PoleCut {
     pole_mm: f64,
     pole: DVec2,
     pole_id: StepId,
-    axis: StepId,
+    axis: Option<StepId>,
     cuts: Vec<DVec2>,
 }
 
@@ -252,21 +272,32 @@ fn pole_cuts(
     extent: f64,
 ) -> Result<PoleCut, CalculusError> {
     let o = layout.origin;
-    let pole = o - DVec2::new(pole_mm, 0.0);
-    let axis = Line::new(o, DVec2::Y);
+    let axis_x = layout.ray_x(o);
+    let foot = DVec2::new(axis_x, o.y);
+    let pole = foot - DVec2::new(pole_mm, 0.0);
+    let axis = Line::new(foot, DVec2::Y);
     let cuts = dirs
         .iter()
         .enumerate()
         .map(|(k, &d)| cut(rec, Line::new(pole, d), axis, k, "ordinate axis"))
         .collect::<Result<Vec<_>, _>>()?;
-    let (_, axis_id) = axes_around(
-        rec,
-        o,
-        &cuts,
-        (pole_mm + 6.0, extent),
-        (&layout.x_name, &layout.name),
-    );
-    let pole_id = draw_pole(rec, pole, o, layout);
+    let axis_id = if layout.draw_axes {
+        Some(
+            axes_around(
+                rec,
+                o,
+                &cuts,
+                (pole_mm + 6.0, extent),
+                (&layout.x_name, &layout.name),
+            )
+            .1,
+        )
+    } else {
+        None
+    };
+    let levels: Vec<f64> = cuts.iter().map(|c| c.y).collect();
+    ray_axis_line(rec, layout, axis_x, o.y, &levels);
+    let pole_id = draw_pole(rec, pole, foot, layout);
     Ok(PoleCut {
         pole_mm,
         pole,
@@ -277,21 +308,25 @@ fn pole_cuts(
 }
 
 /// Draw the ray P → `cut`, project `cut` horizontally to abscissa `x` (figure mm) and mark
-/// the result point there. Returns (ray id, the point).
+/// the result point there. `from`: the line the ray is parallel to, when it is a step of
+/// this figure. Returns (ray id, the point).
 fn ray_and_project(
     rec: &mut Recorder,
     pc: &PoleCut,
     k: usize,
     x: f64,
-    from: StepId,
+    from: &[StepId],
 ) -> (StepId, DVec2) {
     let cut = pc.cuts.get(k).copied().unwrap_or(pc.pole);
+    let mut deps = vec![pc.pole_id];
+    deps.extend_from_slice(from);
+    deps.extend(pc.axis);
     let ray = thin(
         rec,
         format!("ray {k} from the pole parallel to line {k}"),
         pc.pole,
         cut,
-        &[pc.pole_id, from, pc.axis],
+        &deps,
     );
     let target = DVec2::new(x, cut.y);
     if (target.x - cut.x).abs() > rec.tolerances().coincident {
@@ -313,20 +348,37 @@ fn ray_and_project(
 /// # Errors
 /// An invalid diagram, H ≤ 0, a recorder at another scale, a vertical chord, or values
 /// too large to draw.
-fn chords(rec: &mut Recorder, st: &Start) -> Result<Derivative, CalculusError> {
+fn chords(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusError> {
     let (n, run, pts) = (st.n, st.run, &st.pts);
     let (src, layout) = (st.src, st.layout);
     let chords: Vec<StepId> = pts
         .windows(2)
         .enumerate()
-        .map(|(k, w)| thin(rec, format!("chord {k}–{}", k + 1), w[0], w[1], &[]))
+        .map(|(k, w)| {
+            thin(
+                figs.given(),
+                format!("chord {k}–{}", k + 1),
+                w[0],
+                w[1],
+                &[],
+            )
+        })
         .collect();
+    let chords = figs.across(&chords);
+    let rec = figs.built();
     let dirs: Vec<DVec2> = pts.windows(2).map(|w| w[1] - w[0]).collect();
     let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64)?;
     let mut d = st.derivative(Method::Chords, &pc);
     let o = layout.origin;
-    for (k, &chord) in chords.iter().enumerate() {
-        let (ray, _) = ray_and_project(rec, &pc, k, o.x + k as f64 * run, chord);
+    for k in 0..n {
+        // The cut goes across to the end of its interval nearer the vertical it lies on.
+        let (start, end) = (o.x + k as f64 * run, o.x + (k + 1) as f64 * run);
+        let x = if pc.cuts.get(k).is_some_and(|c| c.x > end) {
+            end
+        } else {
+            start
+        };
+        let (ray, _) = ray_and_project(rec, &pc, k, x, chords.get(k..=k).unwrap_or(&[]));
         d.rays.push(ray);
     }
     let steps: Vec<DVec2> = pc
@@ -417,13 +469,14 @@ fn finish(d: Derivative) -> Result<Derivative, CalculusError> {
 ///
 /// # Errors
 /// As for the method of chords.
-fn tangents(rec: &mut Recorder, st: &Start) -> Result<Derivative, CalculusError> {
+fn tangents(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusError> {
     let (n, run, pts) = (st.n, st.run, &st.pts);
     let (src, layout) = (st.src, st.layout);
     let nodes = if src.periodic { n } else { n + 1 };
     let shift = DVec2::new(run * n as f64, 0.0);
     let mut tangents = Vec::with_capacity(nodes);
     let mut dirs = Vec::with_capacity(nodes);
+    let given = figs.given();
     for k in 0..nodes {
         let (a, b) = match (k, src.periodic) {
             (0, true) => (pts[n - 1] - shift, pts[1]),
@@ -433,7 +486,7 @@ fn tangents(rec: &mut Recorder, st: &Start) -> Result<Derivative, CalculusError>
         };
         let half = (b - a) * 0.5;
         tangents.push(thin(
-            rec,
+            given,
             format!("tangent at node {k} ∥ chord of its neighbours"),
             pts[k] - half,
             pts[k] + half,
@@ -441,12 +494,20 @@ fn tangents(rec: &mut Recorder, st: &Start) -> Result<Derivative, CalculusError>
         ));
         dirs.push(b - a);
     }
+    let tangents = figs.across(&tangents);
+    let rec = figs.built();
     let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64)?;
     let mut d = st.derivative(Method::Tangents, &pc);
     let o = layout.origin;
     let mut curve_pts = Vec::with_capacity(nodes + 1);
-    for (k, &t) in tangents.iter().enumerate() {
-        let (ray, p) = ray_and_project(rec, &pc, k, o.x + k as f64 * run, t);
+    for k in 0..nodes {
+        let (ray, p) = ray_and_project(
+            rec,
+            &pc,
+            k,
+            o.x + k as f64 * run,
+            tangents.get(k..=k).unwrap_or(&[]),
+        );
         rec.draw(
             format!("node point {k}"),
             Item::Point(p),

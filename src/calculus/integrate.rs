@@ -75,12 +75,12 @@ pub fn midpoint_rule_bound(length: f64, dx: f64, max_d2: f64) -> f64 {
 /// Integrate the integrand `src` (drawn at `scales`) graphically, recording on `rec`, whose
 /// scale must be μ_y′·H·μ_x (see [`integral_scale`]): the integrand's curve and axes
 /// (optional) at `layout.source_origin`; the pole P on its abscissa axis at H left of its
-/// origin; for every interval the perpendicular at the middle up to the curve, its
-/// horizontal projection to the ordinate axis and the ray from P to that projection (thin);
-/// in the integral diagram at `layout.origin`, from `start` (physical, default 0) onwards,
-/// a chord across each interval parallel to its ray, starting where the previous one ended;
-/// the smooth curve through the chord ends (result). Node values are the drawn ordinates
-/// measured with `Recorder::measure`.
+/// origin (or of [`Layout::ray_axis`]); for every interval the perpendicular at the middle
+/// up to the curve, its horizontal projection to the ordinate axis and the ray from P to
+/// that projection (thin); in the integral diagram at `layout.origin`, from `start`
+/// (physical, default 0) onwards, a chord across each interval parallel to its ray,
+/// starting where the previous one ended; the smooth curve through the chord ends (result).
+/// Node values are the drawn ordinates measured with `Recorder::measure`.
 ///
 /// # Errors
 /// An invalid integrand, H ≤ 0, a recorder at another scale, or values too large to draw.
@@ -93,7 +93,51 @@ pub fn integrate_chords(
     start: f64,
     layout: &Layout,
 ) -> Result<Integral, CalculusError> {
-    let (n, means) = mean_ordinates(src, sampling)?;
+    integrate_chords_in(
+        Figures::One(rec),
+        src,
+        sampling,
+        scales,
+        pole_mm,
+        start,
+        layout,
+    )
+}
+
+/// [`integrate_chords`] into `figs`: the integrand's construction (its curve, the pole, the
+/// perpendiculars, projections and rays) in the given diagram's figure, the chords and the
+/// curve of the integral in the constructed one's, whose scale must be μ_y′·H·μ_x.
+///
+/// # Errors
+/// As [`integrate_chords`].
+pub fn integrate_chords_in(
+    mut figs: Figures<'_>,
+    src: &Diagram,
+    sampling: Sampling,
+    scales: Scales,
+    pole_mm: f64,
+    start: f64,
+    layout: &Layout,
+) -> Result<Integral, CalculusError> {
+    let (n, means) = match sampling {
+        Sampling::Nodes => {
+            src.validate()?;
+            let n = src.intervals();
+            let means = (0..n)
+                .map(|k| read(&src.y, 0.0, src.periodic, k as f64 + 0.5))
+                .collect();
+            (n, means)
+        }
+        Sampling::Midpoints => {
+            // As many intervals as samples: validate as a cycle of that length.
+            let as_cycle = Diagram {
+                periodic: true,
+                ..src.clone()
+            };
+            as_cycle.validate()?;
+            (src.y.len(), src.y.clone())
+        }
+    };
     if !start.is_finite() {
         return Err(CalculusError::NonFinite {
             what: "start value",
@@ -102,7 +146,7 @@ pub fn integrate_chords(
         });
     }
     check_pole(pole_mm)?;
-    let scale = check_scale(rec, scales.y.value() * pole_mm * scales.x.value())?;
+    let scale = check_scale(figs.built(), scales.y.value() * pole_mm * scales.x.value())?;
     let run = scales.x.to_mm(src.dx);
     let so = layout.source_origin;
     let m_pts = means
@@ -113,6 +157,7 @@ pub fn integrate_chords(
             finite(p, "integrand")
         })
         .collect::<Result<Vec<_>, _>>()?;
+    let given = figs.given();
     if layout.draw_source {
         let curve = match sampling {
             Sampling::Nodes => (0..=n)
@@ -121,7 +166,7 @@ pub fn integrate_chords(
             Sampling::Midpoints => m_pts.clone(),
         };
         draw_diagram(
-            rec,
+            given,
             so,
             curve,
             (pole_mm + 6.0, run * n as f64),
@@ -129,40 +174,66 @@ pub fn integrate_chords(
             Role::Given,
         );
     }
-    let pole = so - DVec2::new(pole_mm, 0.0);
-    let pole_id = draw_pole(rec, pole, so, layout);
+    let axis_x = layout.ray_x(so);
+    let pole = DVec2::new(axis_x - pole_mm, so.y);
+    let pole_id = draw_pole(given, pole, DVec2::new(axis_x, so.y), layout);
+    let levels: Vec<f64> = m_pts.iter().map(|m| m.y).collect();
+    ray_axis_line(given, layout, axis_x, so.y, &levels);
     let o = layout.origin;
     let mut ends = vec![finite(at_mm(o, 0.0, scale.to_mm(start)), "start value")?];
     let mut rays = Vec::with_capacity(n);
     let mut chords = Vec::with_capacity(n);
     for (k, &m) in m_pts.iter().enumerate() {
-        let (ray, q) = ray(rec, k, m, so, (pole, pole_id));
+        let given = figs.given();
+        let foot = DVec2::new(m.x, so.y);
+        let perp = thin(given, format!("mean ordinate {k}"), foot, m, &[]);
+        let q = DVec2::new(axis_x, m.y);
+        let proj = thin(given, format!("projection {k}"), m, q, &[perp]);
+        let ray = thin(
+            given,
+            format!("ray {k} from the pole"),
+            pole,
+            q,
+            &[pole_id, proj],
+        );
         let prev = ends[k];
-        let end = chord_end(
-            rec,
-            k,
-            (prev, q - pole),
-            at_mm(o, (k + 1) as f64 * run, 0.0),
-        )?;
+        let along = Line::new(prev, q - pole).ok_or(CalculusError::Overflow { what: "chord" })?;
+        let x_end = (k + 1) as f64 * run;
+        let ordinate = Line::new(at_mm(o, x_end, 0.0), DVec2::Y)
+            .ok_or(CalculusError::Overflow { what: "ordinate" })?;
+        let built = figs.built();
+        let end = match line_line(&along, &ordinate, built.tolerances()) {
+            LineLine::Point { point, .. } => finite(point, "chord end")?,
+            _ => {
+                return Err(CalculusError::RayMisses {
+                    interval: k,
+                    what: "interval's end ordinate",
+                })
+            }
+        };
+        let from = figs.across(&[ray]);
         chords.push(thin(
-            rec,
+            figs.built(),
             format!("chord {k}–{} ∥ ray {k}", k + 1),
             prev,
             end,
-            &[ray],
+            &from,
         ));
         rays.push(ray);
         ends.push(end);
     }
-    axes_around(
-        rec,
-        o,
-        &ends,
-        (6.0, run * n as f64),
-        (&layout.x_name, &layout.name),
-    );
-    let node: Vec<f64> = ends.iter().map(|&e| read_ordinate(rec, o, e).1).collect();
-    let curve = rec.draw(
+    let built = figs.built();
+    if layout.draw_axes {
+        axes_around(
+            built,
+            o,
+            &ends,
+            (6.0, run * n as f64),
+            (&layout.x_name, &layout.name),
+        );
+    }
+    let node: Vec<f64> = ends.iter().map(|&e| read_ordinate(built, o, e).1).collect();
+    let curve = built.draw(
         format!("smooth curve {} through the chord ends", layout.name),
         Item::Curve {
             points: ends,
@@ -187,72 +258,4 @@ pub fn integrate_chords(
         chords,
         curve,
     })
-}
-
-/// The number of intervals and the integrand's mean ordinate over each: read off the curve
-/// at the middles ([`Sampling::Nodes`]), or the samples themselves ([`Sampling::Midpoints`]).
-fn mean_ordinates(src: &Diagram, sampling: Sampling) -> Result<(usize, Vec<f64>), CalculusError> {
-    Ok(match sampling {
-        Sampling::Nodes => {
-            src.validate()?;
-            let n = src.intervals();
-            let means = (0..n)
-                .map(|k| read(&src.y, 0.0, src.periodic, k as f64 + 0.5))
-                .collect();
-            (n, means)
-        }
-        Sampling::Midpoints => {
-            // As many intervals as samples: validate as a cycle of that length.
-            let as_cycle = Diagram {
-                periodic: true,
-                ..src.clone()
-            };
-            as_cycle.validate()?;
-            (src.y.len(), src.y.clone())
-        }
-    })
-}
-
-/// The ray of interval `k`: the perpendicular at the middle from the axis through `so` up
-/// to the curve at `m`, its horizontal projection `q` to the ordinate axis, the ray from the
-/// pole to `q`; gives the ray's step and `q`.
-fn ray(
-    rec: &mut Recorder,
-    k: usize,
-    m: DVec2,
-    so: DVec2,
-    (pole, pole_id): (DVec2, StepId),
-) -> (StepId, DVec2) {
-    let foot = DVec2::new(m.x, so.y);
-    let perp = thin(rec, format!("mean ordinate {k}"), foot, m, &[]);
-    let q = DVec2::new(so.x, m.y);
-    let proj = thin(rec, format!("projection {k}"), m, q, &[perp]);
-    let ray = thin(
-        rec,
-        format!("ray {k} from the pole"),
-        pole,
-        q,
-        &[pole_id, proj],
-    );
-    (ray, q)
-}
-
-/// The end of chord `k`: the line from the previous end `from` along the ray's direction
-/// `dir` meets the ordinate at the interval's end (through `x_end`, figure mm).
-fn chord_end(
-    rec: &Recorder,
-    k: usize,
-    (from, dir): (DVec2, DVec2),
-    x_end: DVec2,
-) -> Result<DVec2, CalculusError> {
-    let along = Line::new(from, dir).ok_or(CalculusError::Overflow { what: "chord" })?;
-    let ordinate =
-        Line::new(x_end, DVec2::Y).ok_or(CalculusError::Overflow { what: "ordinate" })?;
-    match line_line(&along, &ordinate, rec.tolerances()) {
-        LineLine::Point { point, .. } => finite(point, "chord end"),
-        _ => Err(CalculusError::RayMisses {
-            interval: k,
-            what: "interval's end ordinate",
-        }),
-    }
 }

@@ -40,7 +40,9 @@ mod tests;
 pub use differentiate::{
     chord_mid_bound, chord_node_bound, derivative_scale, pole_for, Derivative, Method,
 };
-pub use integrate::{integral_scale, integrate_chords, midpoint_rule_bound, Integral, Sampling};
+pub use integrate::{
+    integral_scale, integrate_chords, integrate_chords_in, midpoint_rule_bound, Integral, Sampling,
+};
 
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::{line_line, DVec2, Line, LineLine, Segment};
@@ -241,6 +243,18 @@ pub struct Layout {
     pub pole_name: String,
     /// Label of the pole distance (`H`, `H_1`).
     pub pole_distance_name: String,
+    /// The vertical the rays from the pole run to, figure mm (its abscissa); the pole lies H
+    /// left of it on the abscissa axis of the diagram that carries it (the given diagram's
+    /// when integrating, the constructed one's when differentiating). `None`: that diagram's
+    /// own origin. Drawn thin where it is not the ordinate axis.
+    pub ray_axis: Option<f64>,
+    /// Draw the constructed diagram's axes.
+    pub draw_axes: bool,
+    /// Offset of the pole distance's dimension line from the abscissa axis, mm (negative:
+    /// below it).
+    pub pole_dimension_mm: f64,
+    /// The preferred direction of the pole's label from the pole.
+    pub pole_label_toward: DVec2,
 }
 
 impl Layout {
@@ -256,7 +270,37 @@ impl Layout {
             name: "dS/dφ".into(),
             pole_name: "P".into(),
             pole_distance_name: "H".into(),
+            ray_axis: None,
+            draw_axes: true,
+            pole_dimension_mm: -7.0,
+            pole_label_toward: DVec2::new(-0.3, 1.0),
         }
+    }
+
+    /// The rays run to the vertical at abscissa `x` (figure mm), the pole H left of it.
+    pub fn rays_to(mut self, x: f64) -> Self {
+        self.ray_axis = Some(x);
+        self
+    }
+
+    /// Leave the axes to the caller (a diagram drawn phase by phase has one pair of axes).
+    pub fn without_axes(mut self) -> Self {
+        self.draw_axes = false;
+        self
+    }
+
+    /// The pole distance's dimension line `mm` from the abscissa axis (negative: below);
+    /// the pole's label toward `label` from the pole.
+    pub fn pole_marks(mut self, mm: f64, label: DVec2) -> Self {
+        self.pole_dimension_mm = mm;
+        self.pole_label_toward = label;
+        self
+    }
+
+    /// The abscissa of the vertical the rays run to, for a pole carried by the diagram
+    /// whose origin is `origin`.
+    fn ray_x(&self, origin: DVec2) -> f64 {
+        self.ray_axis.unwrap_or(origin.x)
     }
 
     /// Rename the axes: abscissa, given ordinate, constructed ordinate.
@@ -288,6 +332,48 @@ pub struct Scales {
     pub x: Scale,
     /// μ_y, ordinate units per mm.
     pub y: Scale,
+}
+
+/// Where a construction is recorded: one figure that holds the given diagram and the
+/// constructed one, or each diagram its own figure (its own view on the sheet).
+#[derive(Debug)]
+pub enum Figures<'a> {
+    /// Both diagrams in one figure.
+    One(&'a mut Recorder),
+    /// The given diagram's steps in `given`, the constructed diagram's in `built`.
+    Two {
+        /// The figure of the given diagram (the integrand, or the diagram differentiated).
+        given: &'a mut Recorder,
+        /// The figure of the constructed diagram.
+        built: &'a mut Recorder,
+    },
+}
+
+impl Figures<'_> {
+    /// The figure of the given diagram.
+    pub fn given(&mut self) -> &mut Recorder {
+        match self {
+            Figures::One(r) => r,
+            Figures::Two { given, .. } => given,
+        }
+    }
+
+    /// The figure of the constructed diagram.
+    pub fn built(&mut self) -> &mut Recorder {
+        match self {
+            Figures::One(r) => r,
+            Figures::Two { built, .. } => built,
+        }
+    }
+
+    /// Steps of the given figure as the provenance of a step of the constructed one: they
+    /// are, in one figure; a step of another figure is no step of this one.
+    fn across(&self, ids: &[StepId]) -> Vec<StepId> {
+        match self {
+            Figures::One(_) => ids.to_vec(),
+            Figures::Two { .. } => Vec::new(),
+        }
+    }
 }
 
 /// Figure point of node-space abscissa `t` (in intervals) and ordinate `mm` from `origin`.
@@ -428,7 +514,8 @@ fn draw_diagram(
     )
 }
 
-/// Draw the pole at `pole` with its label and the dimension H to `origin`.
+/// Draw the pole at `pole` with its label and the dimension H to `origin` (the foot of the
+/// vertical the rays run to).
 fn draw_pole(rec: &mut Recorder, pole: DVec2, origin: DVec2, layout: &Layout) -> StepId {
     let id = rec.point(
         format!(
@@ -439,7 +526,7 @@ fn draw_pole(rec: &mut Recorder, pole: DVec2, origin: DVec2, layout: &Layout) ->
         pole,
         Role::Construction,
         &layout.pole_name,
-        DVec2::new(-0.3, 1.0),
+        layout.pole_label_toward,
         &[],
     );
     let dim = rec.draw(
@@ -447,7 +534,7 @@ fn draw_pole(rec: &mut Recorder, pole: DVec2, origin: DVec2, layout: &Layout) ->
         Item::Dimension {
             from: pole,
             to: origin,
-            offset: -7.0,
+            offset: layout.pole_dimension_mm,
         },
         Role::Dimension,
         &[id],
@@ -459,6 +546,27 @@ fn draw_pole(rec: &mut Recorder, pole: DVec2, origin: DVec2, layout: &Layout) ->
         DVec2::ZERO,
     );
     id
+}
+
+/// The vertical at `x` the rays from a pole run to, when the layout puts it elsewhere than
+/// an ordinate axis ([`Layout::ray_axis`]): a thin line from the abscissa level `base`
+/// through every level in `ys`. Nothing when the rays run to the origin's ordinate axis.
+fn ray_axis_line(rec: &mut Recorder, layout: &Layout, x: f64, base: f64, ys: &[f64]) {
+    if layout.ray_axis.is_none() {
+        return;
+    }
+    let (lo, hi) = ys
+        .iter()
+        .fold((base, base), |(lo, hi), &y| (lo.min(y), hi.max(y)));
+    if hi - lo > rec.tolerances().coincident {
+        thin(
+            rec,
+            "the vertical the rays run to".into(),
+            DVec2::new(x, lo),
+            DVec2::new(x, hi),
+            &[],
+        );
+    }
 }
 
 /// A thin construction segment.

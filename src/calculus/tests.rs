@@ -406,3 +406,74 @@ fn every_ray_passes_through_the_pole_parallel_to_its_chord() {
         .count();
     assert_eq!(mids, src.intervals());
 }
+
+/// A construction split over two figures (the given diagram's and the constructed one's) and
+/// with its pole moved along the abscissa (the rays to a vertical elsewhere than the ordinate
+/// axis) reads the same values as in one figure: the rays keep their directions. The given
+/// figure holds the pole, its dimension and the rays; the constructed one the chords or the
+/// cuts and the curve.
+#[test]
+fn two_figures_and_a_moved_pole_read_the_same() {
+    let src = sin_diagram(24);
+    let sc = sin_scales();
+    let (one, _) = chords(&src, sc, 40.0, 0.0);
+    let mu = sc.y.value() / (40.0 * sc.x.value());
+    let (mut given, mut built) = (recorder(sc.y.value(), 0.0), recorder(mu, 0.0));
+    let moved = layout().rays_to(250.0).without_axes().with_source(false);
+    let two = Method::Chords
+        .differentiate_in(
+            Figures::Two {
+                given: &mut given,
+                built: &mut built,
+            },
+            &src,
+            sc,
+            40.0,
+            &moved,
+        )
+        .expect("chords in two figures");
+    for (a, b) in one.node.iter().zip(&two.node) {
+        assert!((a - b).abs() < 1e-12, "{a} against {b}");
+    }
+    assert_eq!(two.pole, DVec2::new(210.0, 0.0));
+    let notes = |r: &Recorder| r.steps().iter().map(|s| s.note.clone()).collect::<Vec<_>>();
+    let (g, b) = (notes(&given), notes(&built));
+    assert!(g.iter().all(|n| n.starts_with("chord ")), "{g:?}");
+    assert!(b.iter().any(|n| n.starts_with("pole P")), "{b:?}");
+    assert!(
+        b.iter().any(|n| n == "the vertical the rays run to"),
+        "{b:?}"
+    );
+    assert!(!b.iter().any(|n| n.starts_with("ordinate axis")), "{b:?}");
+    // Integrating the mid-interval values back, into two figures, the pole moved.
+    let mid = Diagram::new(0.0, src.dx, two.mid.clone(), true).expect("mids");
+    let (mut given, mut built) = (recorder(mu, 0.0), recorder(sc.y.value(), 0.0));
+    let i = integrate_chords_in(
+        Figures::Two {
+            given: &mut given,
+            built: &mut built,
+        },
+        &mid,
+        Sampling::Midpoints,
+        Scales {
+            x: sc.x,
+            y: two.scale,
+        },
+        40.0,
+        src.y[0],
+        &Layout::new(DVec2::ZERO, DVec2::new(0.0, -150.0))
+            .with_source(false)
+            .rays_to(-20.0),
+    )
+    .expect("integral in two figures");
+    for k in 0..=24 {
+        assert!((i.node[k] - src.at(k)).abs() < 1e-12, "k = {k}");
+    }
+    assert_eq!(i.pole, DVec2::new(-60.0, 0.0));
+    let (g, b) = (notes(&given), notes(&built));
+    assert!(g.iter().any(|n| n.starts_with("ray 0")) && !g.iter().any(|n| n.starts_with("chord")));
+    assert!(
+        b.iter().filter(|n| n.starts_with("chord ")).count() == 24,
+        "{b:?}"
+    );
+}

@@ -1,10 +1,25 @@
 //! The diagrams by graphical integration: the given d²S/dφ² integrated twice, phase by
-//! phase, with the chord/pole method of [`crate::calculus`] at the textbook's scales.
+//! phase, with the chord/pole method of [`crate::calculus`] at the textbook's scales (or the
+//! given S differentiated twice by chords).
+//!
+//! Each diagram is its own figure (its own view on the sheet, with its axes): d²S/dφ²,
+//! dS/dφ and S over the whole cycle, φ = 0 at each figure's origin. A construction runs
+//! from one diagram into the next — the pole, the mid-interval ordinates and the rays in
+//! the integrand's figure, the chords and the curve in the integral's — and each phase has
+//! its own: the rise's pole H left of the ordinate axis, the return's past the end of the
+//! return ([`FAN_GAP_MM`]), its rays running to a vertical H further right, so that the
+//! return's construction never lies over the rise's. The integration goes on across the
+//! dwells as the textbook's does: the far dwell is drawn at the S the rise's chords reached
+//! and the return starts from there, so S has no step where a phase meets a dwell.
 
+use super::law::Shock;
 use super::motion::{motion, motion_u, Motion, Point};
 use super::{CamError, CamSpec, Given};
-use crate::calculus::{integrate_chords, Diagram, Layout, Sampling, Scales};
-use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::calculus::{
+    integrate_chords_in, Derivative, Diagram, Figures, Integral, Layout, Method as Calc, Sampling,
+    Scales,
+};
+use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
@@ -13,15 +28,23 @@ use std::f64::consts::TAU;
 const CYCLE_MM: f64 = 180.0;
 /// Drawn stroke on the diagrams, mm.
 const STROKE_MM: f64 = 60.0;
-/// Gap between the stacked diagrams, mm.
-const GAP_MM: f64 = 30.0;
-/// The three diagrams: d²S/dφ² given, dS/dφ and S integrated by the chord/pole method.
+/// The return's pole lies this far past the end of the return, mm.
+const FAN_GAP_MM: f64 = 12.0;
+/// The pole distance's dimension line lies this far below the lowest ray, mm.
+const POLE_DIMENSION_MM: f64 = 6.0;
+/// Length of the arrows "∞" of a rigid shock on the d²S/dφ² diagram, mm.
+const SHOCK_MM: f64 = 15.0;
+
+/// The three diagrams, each its own figure: d²S/dφ² given and dS/dφ, S integrated by the
+/// chord/pole method (or S given and differentiated twice by chords).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagrams {
-    /// d²S/dφ² → dS/dφ (drawn at μ_S′).
-    pub first: Figure,
-    /// dS/dφ → S (drawn at μ_S).
-    pub second: Figure,
+    /// d²S/dφ² (drawn at μ_S″): given, with the poles P₁, P₁′ and their rays; or constructed.
+    pub d2s_view: Figure,
+    /// dS/dφ (drawn at μ_S′): constructed, with the poles P₂, P₂′ of the next construction.
+    pub ds_view: Figure,
+    /// S (drawn at μ_S): constructed, or given with its chords.
+    pub s_view: Figure,
     /// μ_φ, rad/mm.
     pub phi: Scale,
     /// μ_S, m/mm.
@@ -42,17 +65,248 @@ pub struct Diagrams {
     pub ds_ends: [f64; 2],
 }
 
+/// Which diagram a figure of [`Diagrams`] is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Analogue {
+    /// d²S/dφ².
+    D2s,
+    /// dS/dφ.
+    Ds,
+    /// S.
+    S,
+}
+
+impl Diagrams {
+    /// The figures in the order a construction runs through them, top to bottom on the
+    /// sheet: d²S/dφ², dS/dφ, S when d²S/dφ² is given; S, dS/dφ, d²S/dφ² when S is.
+    pub fn stack(&self, given: Given) -> [(Analogue, &Figure); 3] {
+        let (a, v, s) = (
+            (Analogue::D2s, &self.d2s_view),
+            (Analogue::Ds, &self.ds_view),
+            (Analogue::S, &self.s_view),
+        );
+        match given {
+            Given::D2s => [a, v, s],
+            Given::S => [s, v, a],
+        }
+    }
+}
+
 fn scale(v: f64, what: &'static str) -> Result<Scale, CamError> {
     Scale::new(v, Quantity::Length).ok_or(CamError::NoScale { what, size: v })
 }
 
-/// The diagrams: the given d²S/dφ² (closed form at the mid-interval points and the nodes)
-/// integrated twice, phase by phase, with the poles H₁, H₂ left of each phase's origin.
-pub(super) fn diagrams(
-    spec: &CamSpec,
-    points: &[Point],
-    ctx: &Context,
-) -> Result<Diagrams, CamError> {
+/// The three recorders of the diagrams.
+struct Views {
+    a: Recorder,
+    v: Recorder,
+    s: Recorder,
+}
+
+impl Views {
+    fn new(sc: [Scale; 3], ctx: &Context) -> Self {
+        let [s, v, a] = sc;
+        Self {
+            a: Recorder::in_context("d^2S/dφ^2", a, ctx),
+            v: Recorder::in_context("dS/dφ", v, ctx),
+            s: Recorder::in_context("S", s, ctx),
+        }
+    }
+
+    /// Tag what follows: 1 the rise's construction, 2 the return's, 0 the rest.
+    fn group(&mut self, g: u32) {
+        for r in [&mut self.a, &mut self.v, &mut self.s] {
+            r.set_group(g);
+        }
+    }
+
+    /// The dwells: on the abscissa of d²S/dφ² (given or constructed) and dS/dφ, on S at the
+    /// level `s_mm[i]` the curve has reached (far dwell, near dwell).
+    fn dwells(&mut self, spec: &CamSpec, phi: Scale, given: Given, s_mm: [f64; 2]) {
+        let st = spec.starts();
+        self.group(0);
+        let (a_role, s_role) = match given {
+            Given::D2s => (Role::Given, Role::Result),
+            Given::S => (Role::Result, Role::Given),
+        };
+        for (k, (from, to)) in [(st[1], st[2]), (st[3], st[4])].into_iter().enumerate() {
+            let (x0, x1) = (phi.to_mm(from), phi.to_mm(to));
+            if x1 - x0 <= 0.0 {
+                continue;
+            }
+            let name = if k == 0 { "far dwell" } else { "near dwell" };
+            let flat = |y: f64| Item::Segment(Segment::new(DVec2::new(x0, y), DVec2::new(x1, y)));
+            self.a.draw(name, flat(0.0), a_role, &[]);
+            self.v.draw(name, flat(0.0), Role::Result, &[]);
+            self.s.draw(name, flat(s_mm[k]), s_role, &[]);
+        }
+    }
+
+    /// Each figure's axes, around what it draws.
+    fn finish(mut self, phi: Scale) -> [Figure; 3] {
+        let cycle = phi.to_mm(TAU);
+        for (rec, name) in [
+            (&mut self.a, "d^2S/dφ^2"),
+            (&mut self.v, "dS/dφ"),
+            (&mut self.s, "S"),
+        ] {
+            axes(rec, cycle, name);
+        }
+        [self.a.finish(), self.v.finish(), self.s.finish()]
+    }
+}
+
+/// The axes of a diagram over the cycle (`cycle` mm): the abscissa from the leftmost point
+/// it draws (the rise's pole lies on it) to 12 mm past the cycle's end or the return's
+/// construction, the ordinate at φ = 0 from 6 mm below to 12 mm above the diagram.
+fn axes(rec: &mut Recorder, cycle: f64, name: &str) {
+    let mut lo = DVec2::new(0.0, 0.0);
+    let mut hi = DVec2::new(cycle, 0.0);
+    let figure = Figure {
+        title: String::new(),
+        scale: rec.scale(),
+        steps: rec
+            .steps()
+            .iter()
+            .filter(|s| s.role != Role::Dimension)
+            .cloned()
+            .collect(),
+    };
+    if let Some((a, b)) = figure.bounds() {
+        lo = lo.min(a);
+        hi = hi.max(b);
+    }
+    crate::calculus::draw_axes(
+        rec,
+        DVec2::ZERO,
+        (lo.x.min(-6.0), hi.x + 12.0),
+        (lo.y - 6.0, hi.y + 12.0),
+        ("φ", name),
+    );
+}
+
+/// Where a phase's constructions lie.
+#[derive(Debug, Clone, Copy)]
+struct Lie {
+    /// 0 the rise, 1 the return.
+    idx: usize,
+    /// The phase's start on the diagrams (its origin there), and its end's abscissa, mm.
+    at: (DVec2, f64),
+}
+
+impl Lie {
+    /// The rise (`idx` 0, phase 0) or the return (1, phase 2) of `spec` at μ_φ `phi`.
+    fn of(spec: &CamSpec, phi: Scale, idx: usize) -> Self {
+        let st = spec.starts();
+        let phase = 2 * idx;
+        Lie {
+            idx,
+            at: (
+                DVec2::new(phi.to_mm(st[phase]), 0.0),
+                phi.to_mm(st[phase + 1]),
+            ),
+        }
+    }
+
+    /// Its construction with the pole distance `h`, the axes' `names` and the `poles`' names.
+    fn pass<'a>(self, h: f64, names: [&'a str; 3], poles: [&'a str; 3]) -> Pass<'a> {
+        Pass {
+            idx: self.idx,
+            at: self.at,
+            h,
+            names,
+            poles,
+        }
+    }
+}
+
+/// One construction of one phase, from the diagram it is given into the one it builds.
+struct Pass<'a> {
+    /// 0 the rise, 1 the return.
+    idx: usize,
+    /// The phase's start on the diagrams (its origin there), and its end's abscissa, mm.
+    at: (DVec2, f64),
+    /// The pole distance, mm.
+    h: f64,
+    /// The abscissa's, the given diagram's and the built diagram's names.
+    names: [&'a str; 3],
+    /// The pole's name for the rise and for the return, and the distance's name.
+    poles: [&'a str; 3],
+}
+
+impl Pass<'_> {
+    /// The layout: the diagrams at the phase's start in their figures; the rise's pole H
+    /// left of the ordinate axis; the return's [`FAN_GAP_MM`] past the return's end, its
+    /// rays running to the vertical H further right; the dimension H [`POLE_DIMENSION_MM`]
+    /// below the lowest level the rays reach (`levels`, mm).
+    fn layout(&self, levels: &[f64]) -> Layout {
+        let lowest = levels.iter().fold(0.0f64, |m, &y| m.min(y));
+        let [rise, ret, distance] = self.poles;
+        let (shift, end_x) = self.at;
+        let [x, given, built] = self.names;
+        let lay = Layout::new(shift, shift)
+            .named(x, given, built)
+            .pole_named(if self.idx == 0 { rise } else { ret }, distance)
+            .with_source(false)
+            .without_axes()
+            // The label up and left, clear of the rays (which run right) and of the abscissa.
+            .pole_marks(lowest - POLE_DIMENSION_MM, DVec2::new(-1.0, 1.0));
+        if self.idx == 0 {
+            lay
+        } else {
+            lay.rays_to(end_x + FAN_GAP_MM + self.h)
+        }
+    }
+
+    /// Integrate the mid-interval ordinates `src` drawn in `given` at `scales` into `built`,
+    /// from `start`.
+    fn integrate(
+        &self,
+        (given, built): (&mut Recorder, &mut Recorder),
+        src: &Diagram,
+        scales: Scales,
+        start: f64,
+    ) -> Result<Integral, CamError> {
+        let levels: Vec<f64> = src.y.iter().map(|&m| scales.y.to_mm(m)).collect();
+        let figs = Figures::Two { given, built };
+        let layout = self.layout(&levels);
+        Ok(integrate_chords_in(
+            figs,
+            src,
+            Sampling::Midpoints,
+            scales,
+            self.h,
+            start,
+            &layout,
+        )?)
+    }
+
+    /// Differentiate the nodes `src` drawn in `given` at `scales` by chords into `built`.
+    fn differentiate(
+        &self,
+        (given, built): (&mut Recorder, &mut Recorder),
+        src: &Diagram,
+        scales: Scales,
+    ) -> Result<Derivative, CamError> {
+        let run = scales.x.to_mm(src.dx);
+        let levels = cut_levels(&src.y, scales.y, run, self.h);
+        let figs = Figures::Two { given, built };
+        let layout = self.layout(&levels);
+        Ok(Calc::Chords.differentiate_in(figs, src, scales, self.h, &layout)?)
+    }
+}
+
+/// Where the curve recorded as `id` ends, figure mm.
+fn drawn_end(rec: &Recorder, id: StepId) -> Option<DVec2> {
+    match &rec.steps().get(id.0 as usize)?.item {
+        Item::Curve { points, .. } | Item::Polyline { points, .. } => points.last().copied(),
+        _ => None,
+    }
+}
+
+/// The scales and poles of the diagrams: μ_φ, μ_S (given or chosen), H₁, H₂ (given or
+/// chosen), μ_S′ = μ_S/(H₂·μ_φ), μ_S″ = μ_S′/(H₁·μ_φ).
+fn scales(spec: &CamSpec) -> Result<(Scale, [Scale; 3], [f64; 2]), CamError> {
     let phi = match spec.scale_phi {
         Some(s) => s,
         None => Scale::new(TAU / CYCLE_MM, Quantity::Angle).ok_or(CamError::NoScale {
@@ -74,72 +328,45 @@ pub(super) fn diagrams(
         .unwrap_or_else(|| chosen_poles(spec, s_scale, phi));
     let ds_scale = scale(s_scale.value() / (h2 * phi.value()), "μ_S′")?;
     let d2s_scale = scale(ds_scale.value() / (h1 * phi.value()), "μ_S″")?;
+    Ok((phi, [s_scale, ds_scale, d2s_scale], [h1, h2]))
+}
+
+/// The diagrams: the given d²S/dφ² (closed form at the mid-interval points and the nodes)
+/// integrated twice, phase by phase, with the poles H₁, H₂ (see the module's documentation);
+/// or the given S differentiated twice.
+pub(super) fn diagrams(
+    spec: &CamSpec,
+    points: &[Point],
+    ctx: &Context,
+) -> Result<Diagrams, CamError> {
+    let (phi, sc, poles) = scales(spec)?;
     if spec.given == Given::S {
-        let sc = [s_scale, ds_scale, d2s_scale];
-        return differentiated(spec, points, phi, sc, [h1, h2], ctx);
+        return differentiated(spec, points, phi, sc, poles, ctx);
     }
+    let [s_scale, ds_scale, d2s_scale] = sc;
+    let [h1, h2] = poles;
     let n = spec.divisions;
     let st = spec.starts();
-    let mut first = Recorder::in_context("d^2S/dφ^2 → dS/dφ", ds_scale, ctx);
-    let mut second = Recorder::in_context("dS/dφ → S", s_scale, ctx);
-    // Figure 1: the given diagram above, dS/dφ below; figure 2: dS/dφ above, S below.
-    let (v_max, a_max) = peaks(spec);
-    let (a_mm, v_mm) = (d2s_scale.to_mm(a_max), ds_scale.to_mm(v_max));
-    let a_top = DVec2::ZERO;
-    let v_origin = DVec2::new(0.0, -(a_mm + v_mm + GAP_MM));
-    let v_top = DVec2::ZERO;
-    let s_origin = DVec2::new(0.0, -(v_mm + GAP_MM));
+    let mut views = Views::new(sc, ctx);
     let mut ds_nodes = vec![0.0; points.len()];
     let mut s_nodes = vec![0.0; points.len()];
     let mut ds_ends = [0.0; 2];
-    for (idx, (phase, len, s_start)) in [
-        (0usize, spec.phases.rise, 0.0),
-        (2, spec.phases.ret, spec.stroke),
-    ]
-    .into_iter()
-    .enumerate()
+    // Where the S curve has got to, mm: the far dwell and the return go on from there.
+    let mut level = [0.0; 2];
+    let mut s_start = 0.0;
+    for (idx, (phase, len)) in [(0usize, spec.phases.rise), (2, spec.phases.ret)]
+        .into_iter()
+        .enumerate()
     {
+        views.group(idx as u32 + 1);
         let dx = len / n as f64;
         let mids: Vec<f64> = (0..n)
             .map(|k| motion(spec, st[phase] + (k as f64 + 0.5) * dx, true).d2s)
             .collect();
-        // n mid-interval ordinates of n intervals (validated by the integration as such; a
-        // diagram of nodes would count n − 1).
-        let src = Diagram {
-            x0: st[phase],
-            dx,
-            y: mids,
-            periodic: false,
-        };
-        let shift = DVec2::new(phi.to_mm(st[phase]), 0.0);
-        let pole = if idx == 0 {
-            ("P_1", "H_1")
-        } else {
-            ("P_1′", "H_1")
-        };
-        let layout = Layout::new(a_top + shift, v_origin + shift)
-            .named("φ", "d^2S/dφ^2", "dS/dφ")
-            .pole_named(pole.0, pole.1)
-            .with_source(false);
-        let scales = Scales {
-            x: phi,
-            y: d2s_scale,
-        };
-        // A uniform law starts at dS/dφ = h/Φ: the jump (a δ of acceleration, the rigid
-        // shock) is no ordinate of the given diagram, so it is laid off as the start value.
-        let v0 = motion(spec, st[phase], true).ds;
-        let v = integrate_chords(
-            &mut first,
-            &src,
-            Sampling::Midpoints,
-            scales,
-            h1,
-            v0,
-            &layout,
-        )?;
-        // The given diagram itself: its curve through the nodes and both sides of a jump.
-        let curve = given_curve(spec, phase, len, phi, d2s_scale, a_top);
-        first.draw(
+        // The given diagram itself: its curve through the nodes, the mid-interval points and
+        // both sides of a jump.
+        let curve = given_curve(spec, phase, phi, d2s_scale);
+        views.a.draw(
             format!("given d²S/dφ² of phase {phase}"),
             Item::Polyline {
                 points: curve,
@@ -148,6 +375,30 @@ pub(super) fn diagrams(
             Role::Given,
             &[],
         );
+        shock_arrows(&mut views.a, spec, phase, phi);
+        // n mid-interval ordinates of n intervals (validated by the integration as such; a
+        // diagram of nodes would count n − 1).
+        let src = Diagram {
+            x0: st[phase],
+            dx,
+            y: mids,
+            periodic: false,
+        };
+        let lie = Lie::of(spec, phi, idx);
+        // A uniform law starts at dS/dφ = h/Φ: the jump (a δ of acceleration, the rigid
+        // shock) is no ordinate of the given diagram, so it is laid off as the start value.
+        let v0 = motion(spec, st[phase], true).ds;
+        let v = lie
+            .pass(h1, ["φ", "d^2S/dφ^2", "dS/dφ"], ["P_1", "P_1′", "H_1"])
+            .integrate(
+                (&mut views.a, &mut views.v),
+                &src,
+                Scales {
+                    x: phi,
+                    y: d2s_scale,
+                },
+                v0,
+            )?;
         ds_ends[idx] = *v.node.last().unwrap_or(&0.0);
         let base = idx * (n + 1);
         for (k, &val) in v.node.iter().enumerate() {
@@ -163,79 +414,83 @@ pub(super) fn diagrams(
             y: mids_v,
             periodic: false,
         };
-        let layout2 = Layout::new(v_top + shift, s_origin + shift)
-            .named("φ", "dS/dφ", "S")
-            .pole_named(if idx == 0 { "P_2" } else { "P_2′" }, "H_2");
-        let scales2 = Scales {
-            x: phi,
-            y: ds_scale,
-        };
-        let s = integrate_chords(
-            &mut second,
-            &src2,
-            Sampling::Midpoints,
-            scales2,
-            h2,
-            s_start,
-            &layout2,
-        )?;
+        let s = lie
+            .pass(h2, ["φ", "dS/dφ", "S"], ["P_2", "P_2′", "H_2"])
+            .integrate(
+                (&mut views.v, &mut views.s),
+                &src2,
+                Scales {
+                    x: phi,
+                    y: ds_scale,
+                },
+                s_start,
+            )?;
         for (k, &val) in s.node.iter().enumerate() {
             if let Some(slot) = s_nodes.get_mut(base + k) {
                 *slot = val;
             }
         }
+        // The dwell after the phase, and the next phase, go on from the curve's drawn end.
+        let end = drawn_end(&views.s, s.curve).map_or(0.0, |p| p.y);
+        level[idx] = end;
+        s_start = s_scale.to_physical(end);
     }
-    // The dwells: zero analogues, S = h on the far dwell, 0 on the near one.
-    for (from, to, s) in [(st[1], st[2], spec.stroke), (st[3], st[4], 0.0)] {
-        let (a, b) = (phi.to_mm(from), phi.to_mm(to));
-        for (rec, origin, y) in [
-            (&mut first, v_origin, 0.0),
-            (&mut second, s_origin, s_scale.to_mm(s)),
-        ] {
-            rec.draw(
-                "dwell",
-                Item::Segment(Segment::new(
-                    origin + DVec2::new(a, y),
-                    origin + DVec2::new(b, y),
-                )),
-                Role::Result,
-                &[],
-            );
-        }
-        first.draw(
-            "dwell of the given diagram",
-            Item::Segment(Segment::new(
-                a_top + DVec2::new(a, 0.0),
-                a_top + DVec2::new(b, 0.0),
-            )),
-            Role::Given,
-            &[],
-        );
-    }
+    views.dwells(spec, phi, Given::D2s, level);
     // d²S/dφ² at the points, read off the given diagram.
     let d2s = points
         .iter()
         .map(|p| {
             let m = motion(spec, p.phi, p.after);
             let x = phi.to_mm(p.phi);
-            let top = a_top + DVec2::new(x, d2s_scale.to_mm(m.d2s));
-            let read = first.measure(a_top + DVec2::new(x, 0.0), top);
+            let top = DVec2::new(x, d2s_scale.to_mm(m.d2s));
+            let read = views.a.measure(DVec2::new(x, 0.0), top);
             d2s_scale.to_physical(read.read_mm).copysign(m.d2s)
         })
         .collect();
+    let [d2s_view, ds_view, s_view] = views.finish(phi);
     Ok(Diagrams {
-        first: first.finish(),
-        second: second.finish(),
+        d2s_view,
+        ds_view,
+        s_view,
         phi,
         s_scale,
         ds_scale,
         d2s_scale,
-        poles: [h1, h2],
+        poles,
         s: s_nodes,
         ds: ds_nodes,
         d2s,
         ds_ends,
     })
+}
+
+/// The arrows "∞" of a rigid shock on the d²S/dφ² diagram: at each end of a phase whose law
+/// jumps in velocity, up where dS/dφ jumps up, down where it jumps down.
+fn shock_arrows(rec: &mut Recorder, spec: &CamSpec, phase: usize, phi: Scale) {
+    let law = if phase == 0 { spec.rise } else { spec.ret };
+    if law.shock() != Shock::Rigid {
+        return;
+    }
+    let st = spec.starts();
+    for (at, after) in [(st[phase], true), (st[phase + 1], false)] {
+        // The jump of dS/dφ there: the phase's value against the dwell's zero.
+        let v = motion(spec, at, after).ds;
+        let up = if after { v > 0.0 } else { v < 0.0 };
+        let x = phi.to_mm(at);
+        let tip = DVec2::new(x, if up { SHOCK_MM } else { -SHOCK_MM });
+        let id = rec.draw(
+            "rigid shock: d²S/dφ² infinite",
+            Item::Vector {
+                from: DVec2::new(x, 0.0),
+                to: tip,
+            },
+            Role::Given,
+            &[],
+        );
+        // Beside the tip, clear of the ordinate axis the first arrow runs along.
+        let toward = DVec2::new(1.0, if up { 1.0 } else { -1.0 });
+        rec.label(id, "∞", tip, toward);
+    }
 }
 
 /// The largest |dS/dφ| and |d²S/dφ²| of the given law over the cycle (the tallest ordinates
@@ -259,42 +514,47 @@ fn peaks(spec: &CamSpec) -> (f64, f64) {
 
 /// The pole distances a student chooses: H₂ = μ_S/(μ_S′·μ_φ) and H₁ = μ_S′/(μ_S″·μ_φ) with
 /// μ_S′, μ_S″ drawing the analogues' peaks about 40 mm tall, rounded to whole millimetres.
+/// A law without acceleration (uniform) sets no μ_S″: H₁ is then H₂.
 fn chosen_poles(spec: &CamSpec, s: Scale, phi: Scale) -> [f64; 2] {
     let (v, a) = peaks(spec);
     let h2 = (s.value() / (v.max(1e-12) / 40.0 * phi.value()))
         .round()
         .clamp(5.0, 200.0);
     let mu_v = s.value() / (h2 * phi.value());
-    let h1 = (mu_v / (a.max(1e-12) / 40.0 * phi.value()))
-        .round()
-        .clamp(5.0, 200.0);
+    let h1 = if a > 1e-9 * v {
+        (mu_v / (a / 40.0 * phi.value())).round().clamp(5.0, 200.0)
+    } else {
+        h2
+    };
     [h1, h2]
 }
 
-/// The given d²S/dφ² of one phase as drawn: the nodes with both sides of every jump.
-fn given_curve(
-    spec: &CamSpec,
-    phase: usize,
-    len: f64,
-    phi: Scale,
-    mu: Scale,
-    o: DVec2,
-) -> Vec<DVec2> {
+/// The given d²S/dφ² of one phase as drawn: from the abscissa up the jump at its start,
+/// through the nodes, the mid-interval points (the tops of the mid-interval ordinates lie
+/// on it) and both sides of every jump, down to the abscissa at its end.
+fn given_curve(spec: &CamSpec, phase: usize, phi: Scale, mu: Scale) -> Vec<DVec2> {
     let st = spec.starts()[phase];
-    let law = if phase == 0 { spec.rise } else { spec.ret };
+    let (law, len) = if phase == 0 {
+        (spec.rise, spec.phases.rise)
+    } else {
+        (spec.ret, spec.phases.ret)
+    };
+    let n = spec.divisions.max(1) as f64;
     let mut us: Vec<(f64, bool)> = (0..=48).map(|k| (k as f64 / 48.0, true)).collect();
+    us.extend((0..spec.divisions).map(|k| ((k as f64 + 0.5) / n, true)));
     for b in law.breaks() {
         us.push((b, false));
         us.push((b, true));
     }
     us.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-    let mut pts = vec![o + DVec2::new(phi.to_mm(st), 0.0)];
+    us.dedup();
+    let mut pts = vec![DVec2::new(phi.to_mm(st), 0.0)];
     for (u, after) in us {
         let after = if u >= 1.0 { false } else { after };
-        let m = motion(spec, st + u * len, after);
-        pts.push(o + DVec2::new(phi.to_mm(st + u * len), mu.to_mm(m.d2s)));
+        let m = motion_u(spec, phase, u, after);
+        pts.push(DVec2::new(phi.to_mm(st + u * len), mu.to_mm(m.d2s)));
     }
-    pts.push(o + DVec2::new(phi.to_mm(st + len), 0.0));
+    pts.push(DVec2::new(phi.to_mm(st + len), 0.0));
     pts
 }
 
@@ -307,59 +567,91 @@ pub(super) fn read_motion(d: &Diagrams, i: usize) -> Motion {
     }
 }
 
-/// The diagrams when the scene gives S: the S diagram drawn from the law at the nodes of each
-/// moving phase and differentiated twice by the method of chords (H₂: S → dS/dφ, H₁: dS/dφ →
-/// d²S/dφ²), the values at the points read off the smooth curves; S itself read off the
-/// given diagram.
+/// The given S of one phase as drawn: the law at 48 intervals and at the nodes.
+fn given_s(spec: &CamSpec, phase: usize, phi: Scale, mu: Scale) -> Vec<DVec2> {
+    let st = spec.starts()[phase];
+    let len = if phase == 0 {
+        spec.phases.rise
+    } else {
+        spec.phases.ret
+    };
+    let n = spec.divisions.max(1) as f64;
+    let mut us: Vec<f64> = (0..=48).map(|k| k as f64 / 48.0).collect();
+    us.extend((0..=spec.divisions).map(|k| k as f64 / n));
+    us.sort_by(f64::total_cmp);
+    us.dedup();
+    us.into_iter()
+        .map(|u| {
+            let m = motion_u(spec, phase, u, u < 1.0);
+            DVec2::new(phi.to_mm(st + u * len), mu.to_mm(m.s))
+        })
+        .collect()
+}
+
+/// The levels (mm) where rays from a pole H (mm) parallel to the chords of `nodes`
+/// (physical, drawn at `mu`, `run` mm apart) cut the ordinate axis.
+fn cut_levels(nodes: &[f64], mu: Scale, run: f64, h: f64) -> Vec<f64> {
+    nodes
+        .windows(2)
+        .map(|w| h * (mu.to_mm(w[1]) - mu.to_mm(w[0])) / run)
+        .collect()
+}
+
+/// The diagrams when the scene gives S: the S diagram drawn from the law, its chords between
+/// the nodes of each moving phase, differentiated twice by the method of chords (H₂: S →
+/// dS/dφ, H₁: dS/dφ → d²S/dφ²), the poles as for integration (the rise's left of the
+/// ordinate axis, the return's past the return); the values at the points read off the
+/// smooth curves; S itself read off the given diagram.
 fn differentiated(
     spec: &CamSpec,
     points: &[Point],
     phi: Scale,
-    [s_scale, ds_scale, d2s_scale]: [Scale; 3],
+    sc: [Scale; 3],
     [h1, h2]: [f64; 2],
     ctx: &Context,
 ) -> Result<Diagrams, CamError> {
-    use crate::calculus::Method as Calc;
+    let [s_scale, ds_scale, d2s_scale] = sc;
     let (n, st) = (spec.divisions, spec.starts());
-    let mut first = Recorder::in_context("S → dS/dφ", ds_scale, ctx);
-    let mut second = Recorder::in_context("dS/dφ → d^2S/dφ^2", d2s_scale, ctx);
-    let (v_max, a_max) = peaks(spec);
-    let (v_mm, a_mm) = (ds_scale.to_mm(v_max), d2s_scale.to_mm(a_max));
-    let s_top = DVec2::ZERO;
-    let v_origin = DVec2::new(0.0, -(v_mm + GAP_MM));
-    let v_top = DVec2::ZERO;
-    let a_origin = DVec2::new(0.0, -(v_mm + a_mm + GAP_MM));
+    let mut views = Views::new(sc, ctx);
     let mut ds = vec![0.0; points.len()];
     let mut d2s = vec![0.0; points.len()];
     for (idx, (phase, len)) in [(0usize, spec.phases.rise), (2, spec.phases.ret)]
         .into_iter()
         .enumerate()
     {
+        views.group(idx as u32 + 1);
         let dx = len / n as f64;
+        views.s.draw(
+            format!("given S of phase {phase}"),
+            Item::Polyline {
+                points: given_s(spec, phase, phi, s_scale),
+                closed: false,
+            },
+            Role::Given,
+            &[],
+        );
         let nodes: Vec<f64> = (0..=n)
             .map(|k| motion(spec, st[phase] + k as f64 * dx, k < n).s)
             .collect();
         let src = Diagram::new(st[phase], dx, nodes, false)?;
-        let shift = DVec2::new(phi.to_mm(st[phase]), 0.0);
-        let (p1, p2) = if idx == 0 {
-            ("P_2", "P_1")
-        } else {
-            ("P_2′", "P_1′")
-        };
-        let layout = Layout::new(s_top + shift, v_origin + shift)
-            .named("φ", "S", "dS/dφ")
-            .pole_named(p1, "H_2");
-        let scales = Scales { x: phi, y: s_scale };
-        let v = Calc::Chords.differentiate(&mut first, &src, scales, h2, &layout)?;
-        let layout2 = Layout::new(v_top + shift, a_origin + shift)
-            .named("φ", "dS/dφ", "d^2S/dφ^2")
-            .pole_named(p2, "H_1")
-            .with_source(false);
-        let scales2 = Scales {
-            x: phi,
-            y: ds_scale,
-        };
-        let a = Calc::Chords.differentiate(&mut second, &v.diagram()?, scales2, h1, &layout2)?;
+        let lie = Lie::of(spec, phi, idx);
+        let v = lie
+            .pass(h2, ["φ", "S", "dS/dφ"], ["P_2", "P_2′", "H_2"])
+            .differentiate(
+                (&mut views.s, &mut views.v),
+                &src,
+                Scales { x: phi, y: s_scale },
+            )?;
+        let a = lie
+            .pass(h1, ["φ", "dS/dφ", "d^2S/dφ^2"], ["P_1", "P_1′", "H_1"])
+            .differentiate(
+                (&mut views.v, &mut views.a),
+                &v.diagram()?,
+                Scales {
+                    x: phi,
+                    y: ds_scale,
+                },
+            )?;
         let base = idx * (n + 1);
         for k in 0..=n {
             if let Some(slot) = ds.get_mut(base + k) {
@@ -370,43 +662,25 @@ fn differentiated(
             }
         }
     }
-    // The dwells: S = h on the far dwell, 0 on the near one; zero analogues.
-    for (from, to, s) in [(st[1], st[2], spec.stroke), (st[3], st[4], 0.0)] {
-        let (a, b) = (phi.to_mm(from), phi.to_mm(to));
-        for (which, origin, y, role) in [
-            (0, s_top, s_scale.to_mm(s), Role::Given),
-            (0, v_origin, 0.0, Role::Result),
-            (1, a_origin, 0.0, Role::Result),
-        ] {
-            let rec = if which == 0 { &mut first } else { &mut second };
-            rec.draw(
-                "dwell",
-                Item::Segment(Segment::new(
-                    origin + DVec2::new(a, y),
-                    origin + DVec2::new(b, y),
-                )),
-                role,
-                &[],
-            );
-        }
-    }
+    views.dwells(spec, phi, Given::S, [s_scale.to_mm(spec.stroke), 0.0]);
     // S at the points, read off the given diagram.
     let s = points
         .iter()
         .map(|p| {
             let m = motion(spec, p.phi, p.after);
             let x = phi.to_mm(p.phi);
-            let read = first.measure(
-                s_top + DVec2::new(x, 0.0),
-                s_top + DVec2::new(x, s_scale.to_mm(m.s)),
-            );
+            let read = views
+                .s
+                .measure(DVec2::new(x, 0.0), DVec2::new(x, s_scale.to_mm(m.s)));
             s_scale.to_physical(read.read_mm)
         })
         .collect();
     let ends = |i: usize| ds.get(i).copied().unwrap_or(0.0);
+    let [d2s_view, ds_view, s_view] = views.finish(phi);
     Ok(Diagrams {
-        first: first.finish(),
-        second: second.finish(),
+        d2s_view,
+        ds_view,
+        s_view,
         s,
         ds_ends: [ends(n), ends(2 * n + 1)],
         ds,

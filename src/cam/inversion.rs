@@ -12,6 +12,9 @@ use std::f64::consts::TAU;
 
 /// Largest radius of the profile drawing, mm.
 const PROFILE_MM: f64 = 120.0;
+/// A translating follower's inverted axis is drawn from this share of the way from the
+/// foot of the offset out to the base circle.
+const INNER: f64 = 0.6;
 /// The profile by inversion.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Inversion {
@@ -138,8 +141,10 @@ pub(crate) fn invert(
         // The follower in its inverted position.
         let fol = match *place {
             Placement::Rocker { pivot, .. } => Segment::new(mm(to_cam(pivot, p.phi)), mm(c)),
-            Placement::Translating { offset, .. } if !flat => {
-                Segment::new(mm(to_cam(DVec2::new(offset, 0.0), p.phi)), mm(c))
+            // The follower's axis from inside the base circle out to the pitch point: the
+            // axes would meet in a blot at the centre (tangent to the circle e, about it).
+            Placement::Translating { offset, s0 } if !flat => {
+                Segment::new(mm(to_cam(DVec2::new(offset, INNER * s0), p.phi)), mm(c))
             }
             Placement::Translating { .. } => {
                 let dir = to_cam(DVec2::X, p.phi);

@@ -32,7 +32,7 @@ mod rows;
 mod tests;
 
 pub use construct::{build, Cam};
-pub use diagrams::Diagrams;
+pub use diagrams::{Analogue, Diagrams};
 pub use inversion::Inversion;
 pub use law::{Law, Shock};
 pub use radius::RadiusConstruction;
@@ -105,7 +105,7 @@ pub struct CamSpec {
     pub scale_s: Option<Scale>,
     /// μ_l of the profile (m/mm); `None`: chosen for a 90 mm largest radius.
     pub scale_l: Option<Scale>,
-    /// μ_φ of the diagrams (rad/mm); `None`: chosen for a 240 mm cycle.
+    /// μ_φ of the diagrams (rad/mm); `None`: chosen for a 180 mm cycle.
     pub scale_phi: Option<Scale>,
     /// The pole distances H₁ (d²S → dS) and H₂ (dS → S), mm; `None`: chosen so that the
     /// analogues' peaks are drawn about 40 mm tall.

@@ -10,7 +10,8 @@
 //! 4. J_пр(φ) at μ_J;
 //! 5. the energy–mass diagram ΔT(J_пр) (Wittenbauer) with the tangents at
 //!    tan ψ_max,min = μ_J·ω_ср²(1 ± δ)/(2μ_T); they cut the ΔT axis at k and l, and
-//!    J_м = μ_T·kl/(δ·ω_ср²);
+//!    J_м = μ_T·kl/(δ·ω_ср²); the curve through the points is drawn on its side of both
+//!    tangents (they touch it, never cut it);
 //! 6. Merkin's route (the seed's): T_I = ΔT − ω_ср²·J_пр/2, its range ΔT_I measured,
 //!    J_I = ΔT_I/(δ·ω_ср²), J_м = J_I − J_const.
 
@@ -20,7 +21,7 @@ use super::twin::{Cycle, Solution};
 use super::DynamicsError;
 use crate::calculus::{draw_axes, integrate_chords, thin, Diagram, Layout, Sampling, Scales};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
-use crate::geom::{DVec2, Segment};
+use crate::geom::{hermite, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
@@ -351,8 +352,8 @@ fn wittenbauer(
     );
     let curve = rec.draw(
         "energy–mass curve",
-        Item::Curve {
-            points: pts.clone(),
+        Item::Polyline {
+            points: within_tangents(&pts, [(s1, c1, i1), (s2, c2, i2)]),
             closed: true,
         },
         Role::Result,
@@ -407,6 +408,75 @@ fn wittenbauer(
         at: [i1, i2],
     };
     (rec.finish(), route)
+}
+
+/// Pieces of each span of the drawn energy–mass curve.
+const SPAN_PIECES: usize = 16;
+/// Rounds of leaning the curve's tangents towards the tangent lines, and the part of a
+/// tangent's lean across a line kept in each.
+const LEAN_ROUNDS: usize = 400;
+const LEAN_KEPT: f64 = 0.95;
+/// How far the drawn curve may pass a tangent line, mm (the rounding of the arithmetic).
+const TOUCH_MM: f64 = 1e-9;
+
+/// The closed energy–mass curve through `pts` drawn as the draftsman draws it against the
+/// tangents `lines` (slope s, intercept c of y = s·x + c, the point it touches; the first
+/// above the curve, the second below): smooth — each span the cubic whose end tangents run
+/// along the chord of the neighbouring points, as a smooth curve through points is drawn —
+/// but on its side of both lines. At the point a tangent touches, the curve runs along it;
+/// where a span would bulge past a line, the tangents at its ends are leaned towards the
+/// line (their part across it shortened, their part along it kept) until it does not. The
+/// tangents touch the curve drawn and never cut it.
+fn within_tangents(pts: &[DVec2], lines: [(f64, f64, usize); 2]) -> Vec<DVec2> {
+    let n = pts.len();
+    if n < 3 {
+        return pts.to_vec();
+    }
+    let at = |i: usize| pts[i % n];
+    // How far p lies past line k (> 0: on the wrong side), mm of ordinate.
+    let past = |k: usize, p: DVec2| {
+        let (s, c, _) = lines[k];
+        let side = if k == 0 { 1.0 } else { -1.0 };
+        side * (p.y - s * p.x - c)
+    };
+    // A tangent with its part across line k kept at `keep`.
+    let lean = |t: DVec2, k: usize, keep: f64| {
+        let d = DVec2::new(1.0, lines[k].0).normalize_or_zero();
+        let along = d * t.dot(d);
+        along + (t - along) * keep
+    };
+    let span = |t: &[DVec2], i: usize| hermite(at(i), t[i], at(i + 1), t[(i + 1) % n], SPAN_PIECES);
+    let mut t: Vec<DVec2> = (0..n).map(|i| (at(i + 1) - at(i + n - 1)) * 0.5).collect();
+    for (k, &(_, _, i)) in lines.iter().enumerate() {
+        if let Some(ti) = t.get_mut(i) {
+            *ti = lean(*ti, k, 0.0);
+        }
+    }
+    for round in 0..=LEAN_ROUNDS {
+        let mut leaned = false;
+        for i in 0..n {
+            let pts = span(&t, i);
+            for k in 0..2 {
+                if pts.iter().any(|&p| past(k, p) > TOUCH_MM) {
+                    for j in [i, (i + 1) % n] {
+                        // The last round: the span within the hull of its ends.
+                        t[j] = if round == LEAN_ROUNDS {
+                            DVec2::ZERO
+                        } else {
+                            lean(t[j], k, LEAN_KEPT)
+                        };
+                    }
+                    leaned = true;
+                }
+            }
+        }
+        if !leaned {
+            break;
+        }
+    }
+    (0..n)
+        .flat_map(|i| span(&t, i).into_iter().take(SPAN_PIECES))
+        .collect()
 }
 
 /// Merkin's T_I = ΔT − ω_ср²·J_пр/2 over the cycle, its range between two horizontals.

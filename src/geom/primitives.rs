@@ -293,7 +293,13 @@ pub fn french_curve(a: DVec2, ta: DVec2, b: DVec2, tb: DVec2, pieces: usize) -> 
             t * len
         }
     };
-    let (ma, mb) = (along(ta), along(tb));
+    hermite(a, along(ta), b, along(tb), pieces)
+}
+
+/// The cubic Hermite piece from `a` to `b` with the derivatives `ma`, `mb` (per the whole
+/// piece) at its ends, as `pieces + 1` points: the Bézier curve with the control points
+/// a + ma/3 and b − mb/3, within their hull.
+pub fn hermite(a: DVec2, ma: DVec2, b: DVec2, mb: DVec2, pieces: usize) -> Vec<DVec2> {
     let pieces = pieces.max(1);
     (0..=pieces)
         .map(|k| {

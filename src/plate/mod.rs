@@ -134,6 +134,9 @@ pub struct View {
     pub origin: DVec2,
     /// Caption in label markup, written centred under the figure's bounds.
     pub caption: Option<String>,
+    /// How far under the figure's bounds its caption's band starts, mm: room for what its
+    /// symbols draw below its points (the ground of a fixed pivot).
+    pub caption_drop: f64,
 }
 
 /// Height of the band kept under a figure for its caption, mm.
@@ -174,7 +177,33 @@ impl View {
             figure,
             origin,
             caption,
+            caption_drop: 0.0,
         })
+    }
+
+    /// How far the figure's symbols (pairs and their ground, arrowheads, line widths) draw
+    /// below its lowest point, mm (0 when nothing does).
+    pub fn symbols_below(figure: &Figure) -> f64 {
+        let Some((lo, _)) = figure.bounds() else {
+            return 0.0;
+        };
+        let map = path::Map::figure(DVec2::ZERO);
+        let drawn = figure
+            .steps
+            .iter()
+            .flat_map(|s| items::item_outlines(&s.item, s.role, map))
+            .flat_map(|o| match o.shape {
+                items::Shape::Line(a, b) => vec![a, b],
+                items::Shape::Area(pts) => pts,
+            })
+            // Sheet y runs down: the lowest drawn point has the largest y.
+            .map(|p| -p.y)
+            .fold(f64::INFINITY, f64::min);
+        if drawn.is_finite() {
+            (lo.y - drawn).max(0.0)
+        } else {
+            0.0
+        }
     }
 
     /// The sheet position of a figure point.

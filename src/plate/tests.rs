@@ -108,6 +108,7 @@ fn svg_coordinates_are_rounded() {
             figure: f,
             origin: DVec2::new(100.0 + third, 100.0),
             caption: None,
+            caption_drop: 0.0,
         }],
     ));
     // Attribute values are the odd pieces between quotes; ids are names, not numbers.
@@ -206,6 +207,7 @@ fn non_finite_geometry_never_panics_nor_leaks_nan() {
             figure: f,
             origin: DVec2::splat(100.0),
             caption: Some("x".into()),
+            caption_drop: 0.0,
         }],
     ));
     assert!(!svg.contains("NaN") && !svg.contains("inf"));

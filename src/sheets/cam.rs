@@ -4,12 +4,12 @@
 //! circles and both profiles, the angle graph, the data and the table of the points.
 
 use super::captions::{unit_in, CamText, Text};
-use super::layout::{keyed, lay_out, quantity, Block, Column, Results};
+use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
-use crate::cam::{Cam, Follower, Given, Law, Rotation};
+use crate::cam::{Analogue, Cam, Follower, Law, Rotation};
 use crate::check::{Cusp, Finding};
 use crate::geom::DVec2;
-use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
+use crate::plate::{Plate, Sheet, SheetSize, TableBlock, View, CAPTION_BAND_MM};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
 use crate::scene::Key;
 use crate::study::Session;
@@ -17,6 +17,8 @@ use crate::study::Session;
 /// Text height of the data lines and the tables, mm.
 const TEXT_MM: f64 = 3.5;
 const TABLE_MM: f64 = 2.5;
+/// Gap between a diagram's caption and the diagram under it, mm.
+const STACK_GAP_MM: f64 = 8.0;
 
 /// A scale's caption with its own symbol (`μ_{S′} = 0,00093 м/мм`).
 fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
@@ -34,55 +36,48 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let d = &cam.diagrams;
     let mm = unit_in("mm", lang);
     let h = |i: usize| format_sig(d.poles[i], 3, lang);
-    // The two constructions of the diagrams with their scales: S given, differentiated
-    // twice by chords; or d²S/dφ² given, integrated twice.
-    let (first, second) = if cam.spec.given == Given::S {
-        (
-            (
-                format!(
-                    "S → dS/dφ: {}, {}, H_2 = {} {mm}",
-                    mu("S", d.s_scale, lang),
-                    mu("S′", d.ds_scale, lang),
-                    h(1),
-                ),
-                keyed(Key::CamScaleS, d.s_scale),
+    // The diagrams stacked as the construction runs through them, each with its axes and
+    // its caption: the analogue, μ_φ, its μ and the pole distance of the pole it carries.
+    let mut parts: Vec<Part> = Vec::with_capacity(3);
+    let mut bottom = 0.0;
+    for (which, figure) in d.stack(cam.spec.given) {
+        let (name, scale, pole) = match which {
+            Analogue::D2s => (
+                CamText::AccelerationAnalogue,
+                mu("S″", d.d2s_scale, lang),
+                Some(("H_1", h(0))),
             ),
-            (
-                format!(
-                    "dS/dφ → d^2S/dφ^2: {}, {}, H_1 = {} {mm}",
-                    mu("φ", d.phi, lang),
-                    mu("S″", d.d2s_scale, lang),
-                    h(0),
-                ),
-                keyed(Key::CamScalePhi, d.phi),
+            Analogue::Ds => (
+                CamText::VelocityAnalogue,
+                mu("S′", d.ds_scale, lang),
+                Some(("H_2", h(1))),
             ),
-        )
-    } else {
-        (
-            (
-                format!(
-                    "d^2S/dφ^2 → dS/dφ: {}, {}, {}, H_1 = {} {mm}",
-                    mu("φ", d.phi, lang),
-                    mu("S″", d.d2s_scale, lang),
-                    mu("S′", d.ds_scale, lang),
-                    h(0),
-                ),
-                keyed(Key::CamScalePhi, d.phi),
-            ),
-            (
-                format!(
-                    "dS/dφ → S: {}, H_2 = {} {mm}",
-                    mu("S", d.s_scale, lang),
-                    h(1)
-                ),
-                keyed(Key::CamScaleS, d.s_scale),
-            ),
-        )
-    };
-    let mut blocks = vec![
-        Block::view(d.first.clone(), first.0, first.1),
-        Block::view(d.second.clone(), second.0, second.1),
-    ];
+            Analogue::S => (CamText::Displacement, mu("S", d.s_scale, lang), None),
+        };
+        let mut caption = format!("{}: {}, {scale}", name.get(lang), mu("φ", d.phi, lang));
+        if let Some((symbol, value)) = pole {
+            caption.push_str(&format!(", {symbol} = {value} {mm}"));
+        }
+        let Some((lo, hi)) = figure.bounds() else {
+            continue;
+        };
+        // Under the one above, clear of its caption.
+        let at = if parts.is_empty() {
+            DVec2::ZERO
+        } else {
+            DVec2::new(0.0, bottom - CAPTION_BAND_MM - STACK_GAP_MM - hi.y)
+        };
+        let part = Part {
+            caption_drop: View::symbols_below(figure),
+            ..Part::new(figure.clone(), at, Some(caption))
+        };
+        bottom = at.y + lo.y - part.caption_drop;
+        parts.push(part);
+    }
+    let mut blocks = vec![Block::Views {
+        parts,
+        scale: keyed(Key::CamScalePhi, d.phi),
+    }];
     let combined = match cam.spec.follower {
         Follower::Flat { .. } => CamText::FlatCombined,
         Follower::Rocker { .. } => CamText::RockerCombined,
@@ -130,6 +125,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         size: SheetSize::A1,
         landscape: true,
     };
+    let blocks = blocks.into_iter().map(Block::clear_of_symbols).collect();
     lay_out(sheet, blocks, "cam", &title, lang)
 }
 
@@ -163,10 +159,10 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     out.push(
         CamText::Phases
             .get(lang)
-            .replace("{rise}", &deg(p.rise))
-            .replace("{far}", &deg(p.far))
-            .replace("{ret}", &deg(p.ret))
-            .replace("{near}", &deg(p.near)),
+            .replace("{1}", &deg(p.rise))
+            .replace("{2}", &deg(p.far))
+            .replace("{3}", &deg(p.ret))
+            .replace("{4}", &deg(p.near)),
     );
     let sense = if cam.rotation == Rotation::Cw {
         CamText::Clockwise

@@ -30,15 +30,42 @@ pub(super) fn keyed(key: Key, scale: Scale) -> Option<ScaleKey> {
     Some(ScaleKey { key, scale })
 }
 
+/// One view of a [`Block::Views`]: its figure, where its origin lies in the first figure's
+/// coordinates (mm, y up), and its caption, written under it in a band of
+/// [`CAPTION_BAND_MM`].
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Part {
+    /// The figure.
+    pub figure: Figure,
+    /// Offset of its origin in the first figure's coordinates, mm.
+    pub at: DVec2,
+    /// Its caption.
+    pub caption: Option<String>,
+    /// How far under the figure's bounds the caption's band starts, mm
+    /// ([`View::caption_drop`]).
+    pub caption_drop: f64,
+}
+
+impl Part {
+    /// A view at `at` with `caption` under it.
+    pub fn new(figure: Figure, at: DVec2, caption: Option<String>) -> Self {
+        Part {
+            figure,
+            at,
+            caption,
+            caption_drop: 0.0,
+        }
+    }
+}
+
 /// One thing on a sheet.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) enum Block {
-    /// A figure with its caption under it.
-    View {
-        /// The figure.
-        figure: Figure,
-        /// The caption.
-        caption: Option<String>,
+    /// Figures drawn together (a view, or a stack such as S, dS/dφ, d²S/dφ² whose parts lie at
+    /// offsets in the first one's coordinates), each with its caption under it, if any.
+    Views {
+        /// The views.
+        parts: Vec<Part>,
         /// What sets its size.
         scale: Option<ScaleKey>,
     },
@@ -56,10 +83,27 @@ pub(super) enum Block {
 impl Block {
     /// One figure with a caption.
     pub fn view(figure: Figure, caption: String, scale: Option<ScaleKey>) -> Self {
-        Block::View {
-            figure,
-            caption: Some(caption),
+        Block::Views {
+            parts: vec![Part::new(figure, DVec2::ZERO, Some(caption))],
             scale,
+        }
+    }
+
+    /// The block with each caption under what its figure's symbols draw below its points
+    /// (the ground of a fixed pivot), not over it.
+    pub fn clear_of_symbols(self) -> Self {
+        match self {
+            Block::Views { parts, scale } => Block::Views {
+                parts: parts
+                    .into_iter()
+                    .map(|p| Part {
+                        caption_drop: View::symbols_below(&p.figure),
+                        ..p
+                    })
+                    .collect(),
+                scale,
+            },
+            other => other,
         }
     }
 
@@ -72,20 +116,20 @@ impl Block {
         }
         let l = |s: &str| symbols::localise(s, lang);
         match self {
-            Block::View {
-                mut figure,
-                caption,
+            Block::Views { parts, scale } => Block::Views {
+                parts: parts
+                    .into_iter()
+                    .map(|mut part| {
+                        let steps = part.figure.steps.iter_mut();
+                        for label in steps.filter_map(|s| s.label.as_mut()) {
+                            label.text = l(&label.text);
+                        }
+                        part.caption = part.caption.as_deref().map(l);
+                        part
+                    })
+                    .collect(),
                 scale,
-            } => {
-                for label in figure.steps.iter_mut().filter_map(|s| s.label.as_mut()) {
-                    label.text = l(&label.text);
-                }
-                Block::View {
-                    figure,
-                    caption: caption.as_deref().map(l),
-                    scale,
-                }
-            }
+            },
             Block::Text { lines, size_mm } => Block::Text {
                 lines: lines.iter().map(|x| l(x)).collect(),
                 size_mm,
@@ -103,29 +147,54 @@ impl Block {
         }
     }
 
-    /// The size the block takes on the sheet, mm: its drawing with room for labels and the
-    /// caption band.
-    fn size(&self) -> DVec2 {
-        match self {
-            Block::View {
-                figure, caption, ..
-            } => {
-                let (lo, hi) = figure
-                    .bounds()
-                    .unwrap_or((DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)));
-                let band = if caption.is_some() {
-                    CAPTION_BAND_MM
+    /// Bounds of the figures with their caption bands, in the first one's coordinates (y up).
+    fn bounds(parts: &[Part]) -> (DVec2, DVec2) {
+        parts
+            .iter()
+            .filter_map(|p| {
+                let band = if p.caption.is_some() {
+                    CAPTION_BAND_MM + p.caption_drop
                 } else {
                     0.0
                 };
+                p.figure
+                    .bounds()
+                    .map(|(lo, hi)| (lo + p.at - DVec2::new(0.0, band), hi + p.at))
+            })
+            .fold(
+                (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+                |(lo, hi), (a, b)| (lo.min(a), hi.max(b)),
+            )
+    }
+
+    /// The abscissae the parts' drawings and captions span, in the first one's coordinates:
+    /// a caption is written centred under its figure and may be wider than the drawing.
+    fn span(parts: &[Part]) -> (f64, f64) {
+        let (lo, hi) = Self::bounds(parts);
+        parts
+            .iter()
+            .filter_map(|p| {
+                let (a, b) = p.figure.bounds()?;
+                let w = text::approx_width(p.caption.as_deref()?, CAPTION_HEIGHT_MM);
+                let c = (a.x + b.x) * 0.5 + p.at.x;
+                Some((c - w * 0.5, c + w * 0.5))
+            })
+            .fold((lo.x, hi.x), |(l, h), (a, b)| (l.min(a), h.max(b)))
+    }
+
+    /// The size the block takes on the sheet, mm: its drawing with room for labels and the
+    /// caption bands.
+    fn size(&self) -> DVec2 {
+        match self {
+            Block::Views { parts, .. } => {
+                let (lo, hi) = Self::bounds(parts);
                 let drawn = if lo.x <= hi.x { hi - lo } else { DVec2::ZERO };
                 // A caption wider than its drawing widens the block.
-                let caption_w = caption
-                    .as_deref()
-                    .map_or(0.0, |c| text::approx_width(c, CAPTION_HEIGHT_MM));
+                let (left, right) = Self::span(parts);
+                let captioned = if left <= right { right - left } else { 0.0 };
                 DVec2::new(
-                    (drawn.x + LABEL_MARGIN).max(caption_w),
-                    drawn.y + LABEL_MARGIN + band,
+                    (drawn.x + LABEL_MARGIN).max(captioned),
+                    drawn.y + LABEL_MARGIN,
                 )
             }
             Block::Text { lines, size_mm } => {
@@ -310,23 +379,21 @@ struct Parts {
 /// Put `block` into `rect`.
 fn put(block: Block, rect: Rect, parts: &mut Parts) {
     match block {
-        Block::View {
-            figure, caption, ..
-        } => {
-            let (lo, hi) = figure.bounds().unwrap_or((DVec2::ZERO, DVec2::ZERO));
-            // The figure's bounds go to the rectangle's centre, over the caption band.
-            let band = if caption.is_some() {
-                CAPTION_BAND_MM
-            } else {
-                0.0
-            };
-            let c = rect.center() - DVec2::new(0.0, band * 0.5);
-            let mid = (lo + hi) * 0.5;
-            parts.views.push(View {
-                figure,
-                origin: DVec2::new(c.x - mid.x, c.y + mid.y),
-                caption,
-            });
+        Block::Views { parts: figures, .. } => {
+            // The whole group's bounds, caption bands included, go to the rectangle's centre.
+            let (lo, hi) = Block::bounds(&figures);
+            let (left, right) = Block::span(&figures);
+            let c = rect.center();
+            let mid = DVec2::new((left + right) * 0.5, (lo.y + hi.y) * 0.5);
+            let origin = DVec2::new(c.x - mid.x, c.y + mid.y);
+            for p in figures {
+                parts.views.push(View {
+                    figure: p.figure,
+                    origin: origin + DVec2::new(p.at.x, -p.at.y),
+                    caption: p.caption,
+                    caption_drop: p.caption_drop,
+                });
+            }
         }
         Block::Text { lines, size_mm } => parts.texts.push(TextBlock {
             at: rect.min,
@@ -406,11 +473,13 @@ pub(super) fn lay_out(
 /// one that overflows most decides it.
 fn too_large(sheet: &Sheet, blocks: &[Block], sizes: &[DVec2], k: usize) -> BuildError {
     let scale_of = |b: &Block| match b {
-        Block::View { scale, .. } => scale.clone(),
+        Block::Views { scale, .. } => scale.clone(),
         Block::Text { .. } | Block::Table(_) => None,
     };
     let what = match &blocks[k] {
-        Block::View { figure, .. } => figure.title.clone(),
+        Block::Views { parts, .. } => parts
+            .first()
+            .map_or_else(String::new, |p| p.figure.title.clone()),
         Block::Text { .. } => "text".into(),
         Block::Table(t) => t.title.clone(),
     };

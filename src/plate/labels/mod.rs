@@ -172,7 +172,7 @@ fn corners(r: Rect) -> [DVec2; 2] {
 fn caption(view: &View) -> Option<Placed> {
     let text = view.caption.as_ref()?;
     let (lo, hi) = view.figure.bounds()?;
-    let bottom = view.to_sheet(DVec2::new((lo.x + hi.x) * 0.5, lo.y));
+    let bottom = view.to_sheet(DVec2::new((lo.x + hi.x) * 0.5, lo.y - view.caption_drop));
     let at = bottom + DVec2::new(0.0, CAPTION_BAND_MM - CAPTION_HEIGHT_MM);
     Some(Placed::centred(at, text, CAPTION_HEIGHT_MM, Align::Middle))
 }

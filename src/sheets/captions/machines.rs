@@ -97,6 +97,9 @@ catalogue! {
             "Суміщена діаграма S(dS/dφ), зона центру",
             "Combined diagram S(dS/dφ), the centre's zone"
         ),
+        AccelerationAnalogue => ("Аналог ускорения d^2S/dφ^2", "Аналог прискорення d^2S/dφ^2", "Acceleration analogue d^2S/dφ^2"),
+        VelocityAnalogue => ("Аналог скорости dS/dφ", "Аналог швидкості dS/dφ", "Velocity analogue dS/dφ"),
+        Displacement => ("Перемещение S", "Переміщення S", "Displacement S"),
         Profile => ("Профиль кулачка (обращение движения)", "Профіль кулачка (обернення руху)", "Cam profile by inversion"),
         TransmissionAngle => ("Угол передачи γ(φ)", "Кут передачі γ(φ)", "Transmission angle γ(φ)"),
         PressureAngle => ("Угол давления λ(φ)", "Кут тиску λ(φ)", "Pressure angle λ(φ)"),
@@ -108,9 +111,9 @@ catalogue! {
         Trapezoidal => ("трапецеидальный", "трапецієподібний", "trapezoidal"),
         Polynomial => ("полином 3-4-5", "поліном 3-4-5", "3-4-5 polynomial"),
         Phases => (
-            "φ_{у} = {rise}°, φ_{д.в.} = {far}°, φ_{п} = {ret}°, φ_{б.в.} = {near}°",
-            "φ_{в} = {rise}°, φ_{д.в.} = {far}°, φ_{н} = {ret}°, φ_{б.в.} = {near}°",
-            "φ_{rise} = {rise}°, φ_{far} = {far}°, φ_{ret} = {ret}°, φ_{near} = {near}°"
+            "φ_{у} = {1}°, φ_{д.в.} = {2}°, φ_{п} = {3}°, φ_{б.в.} = {4}°",
+            "φ_{в} = {1}°, φ_{д.в.} = {2}°, φ_{н} = {3}°, φ_{б.в.} = {4}°",
+            "φ_{rise} = {1}°, φ_{far} = {2}°, φ_{ret} = {3}°, φ_{near} = {4}°"
         ),
         Clockwise => ("Кулачок вращается по часовой стрелке", "Кулачок обертається за годинниковою стрілкою", "The cam turns clockwise"),
         CounterClockwise => (

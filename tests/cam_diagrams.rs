@@ -1,0 +1,343 @@
+//! The cam sheet's diagrams (issue 19): d²S/dφ², dS/dφ and S each their own view with their
+//! own axes, axis titles and caption, none over another; the return's construction apart
+//! from the rise's; dS/dφ on the abscissa at the ends of a phase where the law has it there
+//! (the integrand of S starts and ends where the law does); S without a step where a phase
+//! meets a dwell.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use tmm::cam::{Analogue, Cam};
+use tmm::construct::{Drafting, Figure, Item, Role, Step};
+use tmm::geom::DVec2;
+use tmm::plate::{Plate, Rect};
+use tmm::scene::PlateKind;
+use tmm::study::Session;
+use tmm::Lang;
+
+/// Every cam scene of `constructions/`.
+const SCENES: [&str; 7] = [
+    "cam-central",
+    "cam-cusp",
+    "cam-pz4",
+    "cam-pz5",
+    "cam-seed000",
+    "cam-shock",
+    "cam-undercut",
+];
+
+fn scene(name: &str) -> tmm::Scene {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("constructions")
+        .join(format!("{name}.toml"));
+    tmm::load(&path).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn cam(name: &str) -> Arc<Cam> {
+    let s = scene(name);
+    let cam = Session::new(&s, Drafting::EXACT).cam();
+    cam.unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+/// The first sheet of the scene's cam plate, in Russian.
+fn plate(name: &str) -> Plate {
+    let s = scene(name);
+    let session = Session::new(&s, Drafting::EXACT);
+    tmm::sheets::build_all(&session, Lang::Ru)
+        .unwrap_or_else(|(k, e)| panic!("{name}: {k:?}: {e}"))
+        .into_iter()
+        .find(|(k, _)| *k == PlateKind::Cam)
+        .map(|(_, p)| p)
+        .unwrap_or_else(|| panic!("{name}: no cam plate"))
+}
+
+/// The three diagrams of a cam, named by their ordinate.
+fn diagrams(cam: &Cam) -> [(&'static str, &Figure); 3] {
+    let d = &cam.diagrams;
+    [
+        ("d^2S/dφ^2", &d.d2s_view),
+        ("dS/dφ", &d.ds_view),
+        ("S", &d.s_view),
+    ]
+}
+
+/// The points of a drawn line (a curve, polyline or segment).
+fn points(step: &Step) -> Vec<DVec2> {
+    match &step.item {
+        Item::Curve { points, .. } | Item::Polyline { points, .. } => points.clone(),
+        Item::Segment(s) => vec![s.from, s.to],
+        _ => Vec::new(),
+    }
+}
+
+/// The one step of `fig` whose note starts with `note` in `group` (1 the rise, 2 the
+/// return, 0 the rest).
+fn step<'a>(fig: &'a Figure, group: u32, note: &str) -> &'a Step {
+    let found: Vec<&Step> = fig
+        .steps
+        .iter()
+        .filter(|s| s.group == group && s.note.starts_with(note))
+        .collect();
+    assert_eq!(found.len(), 1, "{}: “{note}” in group {group}", fig.title);
+    found[0]
+}
+
+/// The bounds of the steps of one group.
+fn group_bounds(fig: &Figure, group: u32) -> Option<(DVec2, DVec2)> {
+    Figure {
+        steps: fig
+            .steps
+            .iter()
+            .filter(|s| s.group == group)
+            .cloned()
+            .collect(),
+        ..fig.clone()
+    }
+    .bounds()
+}
+
+/// Distance from `p` to the segment `a`–`b`.
+fn to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+    let ab = b - a;
+    let t = ((p - a).dot(ab) / ab.length_squared().max(1e-300)).clamp(0.0, 1.0);
+    p.distance(a + ab * t)
+}
+
+/// Each diagram is a view of its own: its abscissa φ and its ordinate named after it,
+/// arrowed and titled, a caption naming it with its scales; on the sheet the three views and
+/// every other view lie apart, and each caption under its own view, over no other.
+#[test]
+fn every_diagram_is_its_own_view_with_axes_titles_and_caption() {
+    for name in SCENES {
+        let cam = cam(name);
+        for (title, fig) in diagrams(&cam) {
+            for (axis, label) in [
+                ("abscissa axis φ".to_string(), "φ"),
+                (format!("ordinate axis {title}"), title),
+            ] {
+                let s = step(fig, 0, &axis);
+                assert!(
+                    matches!(s.item, Item::Vector { .. }),
+                    "{name} {title}: {axis} arrowed"
+                );
+                let l = s.label.as_ref().map(|l| l.text.as_str());
+                assert_eq!(l, Some(label), "{name} {title}: {axis} titled");
+            }
+        }
+        let p = plate(name);
+        let stack = cam.diagrams.stack(cam.spec.given);
+        for (k, (which, fig)) in stack.iter().enumerate() {
+            let v = &p.views[k];
+            assert_eq!(&&v.figure, fig, "{name}: view {k} is the diagram {which:?}");
+            let caption = v.caption.as_deref().unwrap_or("");
+            let symbol = match which {
+                Analogue::D2s => "d^2S/dφ^2",
+                Analogue::Ds => "dS/dφ",
+                Analogue::S => "S",
+            };
+            assert!(caption.contains(symbol), "{name}: “{caption}”");
+            assert!(caption.contains("μ_{φ}"), "{name}: “{caption}”");
+        }
+        let layout = tmm::plate::layout(&p);
+        let boxes: Vec<(usize, Rect, Option<Rect>)> = layout
+            .views
+            .iter()
+            .enumerate()
+            .filter_map(|(i, v)| Some((i, v.drawn?, v.caption)))
+            .collect();
+        for (i, a, ca) in &boxes {
+            assert!(ca.is_some(), "{name}: view {i} has a caption");
+            for (j, b, cb) in &boxes {
+                if i >= j {
+                    continue;
+                }
+                assert!(!a.intersects(b), "{name}: views {i} and {j} overlap");
+                for (c, d) in [(ca, b), (cb, a)] {
+                    if let Some(c) = c {
+                        assert!(!c.intersects(d), "{name}: a caption over view {i} or {j}");
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The return's construction (its pole, rays, mid-interval ordinates, chords and curve) lies
+/// apart from the rise's in each diagram: its pole stands past the end of the return, never
+/// over the rise's rectangles of mid-interval ordinates.
+#[test]
+fn the_returns_construction_lies_apart_from_the_rises() {
+    for name in SCENES {
+        let cam = cam(name);
+        for (title, fig) in diagrams(&cam) {
+            let (Some(rise), Some(ret)) = (group_bounds(fig, 1), group_bounds(fig, 2)) else {
+                panic!("{name} {title}: both phases drawn");
+            };
+            let apart = rise.1.x <= ret.0.x + 1e-9;
+            assert!(
+                apart,
+                "{name} {title}: the rise spans x ≤ {:.2} mm, the return from {:.2} mm",
+                rise.1.x, ret.0.x
+            );
+        }
+        // The return's poles stand right of the return's end, the rise's left of φ = 0.
+        let end = cam.diagrams.phi.to_mm(cam.spec.starts()[3]);
+        for (title, fig) in diagrams(&cam) {
+            let poles = fig
+                .steps
+                .iter()
+                .filter(|s| s.note.starts_with("pole ") && s.label.is_some());
+            let mut count = 0;
+            for s in poles {
+                let Item::Point(p) = s.item else {
+                    continue;
+                };
+                count += 1;
+                match s.group {
+                    1 => assert!(p.x < 0.0, "{name} {title}: the rise's pole at {p}"),
+                    2 => assert!(p.x > end, "{name} {title}: the return's pole at {p}"),
+                    g => panic!("{name} {title}: a pole in group {g}"),
+                }
+            }
+            // The given diagram of an integration carries no pole: S when d²S/dφ² is given.
+            assert!(
+                count == 2 || (count == 0 && title == "S"),
+                "{name} {title}: {count}"
+            );
+        }
+    }
+}
+
+/// dS/dφ is drawn from the abscissa and back to it at the ends of each phase of the cosine,
+/// "+ −" and sine laws (and from h/Φ for the uniform law): the curve the second integration
+/// takes its mid-interval ordinates from starts and ends where the law does, and every one of
+/// those ordinates reaches a chord drawn in the same view.
+#[test]
+fn ds_dphi_starts_and_ends_where_the_law_does() {
+    for name in [
+        "cam-pz5",
+        "cam-pz4",
+        "cam-seed000",
+        "cam-cusp",
+        "cam-undercut",
+        "cam-shock",
+    ] {
+        let cam = cam(name);
+        let d = &cam.diagrams;
+        let st = cam.spec.starts();
+        for (group, phase) in [(1u32, 0usize), (2, 2)] {
+            let curve = points(step(&d.ds_view, group, "smooth curve dS/dφ"));
+            let (first, last) = (curve[0], curve[curve.len() - 1]);
+            let at = |phi: f64, after: bool| {
+                d.ds_scale
+                    .to_mm(tmm::cam::motion::motion(&cam.spec, phi, after).ds)
+            };
+            let (want0, want1) = (at(st[phase], true), at(st[phase + 1], false));
+            assert!(
+                (first.y - want0).abs() < 0.01 && (last.y - want1).abs() < 0.01,
+                "{name} phase {phase}: dS/dφ drawn from {:.3} to {:.3} mm, the law {want0:.3} \
+                 to {want1:.3} mm",
+                first.y,
+                last.y
+            );
+            if name != "cam-shock" {
+                assert!(want0.abs() < 1e-9 && want1.abs() < 1e-9, "{name}");
+            }
+            let x0 = d.phi.to_mm(st[phase]);
+            assert!(
+                (first.x - x0).abs() < 1e-9,
+                "{name}: the curve starts at φ₀"
+            );
+            // The mid-interval ordinates of dS/dφ stand on its chords.
+            let chords: Vec<(DVec2, DVec2)> = d
+                .ds_view
+                .steps
+                .iter()
+                .filter(|s| s.group == group && s.note.starts_with("chord "))
+                .map(|s| {
+                    let p = points(s);
+                    (p[0], p[1])
+                })
+                .collect();
+            assert_eq!(chords.len(), cam.spec.divisions, "{name}");
+            let tops: Vec<DVec2> = d
+                .ds_view
+                .steps
+                .iter()
+                .filter(|s| s.group == group && s.note.starts_with("mean ordinate"))
+                .map(|s| points(s)[1])
+                .collect();
+            assert_eq!(tops.len(), chords.len(), "{name}");
+            for (k, (t, (a, b))) in tops.iter().zip(&chords).enumerate() {
+                let off = to_segment(*t, *a, *b);
+                assert!(
+                    off < 1e-6,
+                    "{name} phase {phase} interval {k}: {off} mm off"
+                );
+            }
+            // And those of the given d²S/dφ² stand on its curve.
+            let given = points(step(&d.d2s_view, group, "given d²S/dφ²"));
+            let tops = d
+                .d2s_view
+                .steps
+                .iter()
+                .filter(|s| s.group == group && s.note.starts_with("mean ordinate"));
+            for s in tops {
+                let t = points(s)[1];
+                let off = given
+                    .windows(2)
+                    .map(|w| to_segment(t, w[0], w[1]))
+                    .fold(f64::INFINITY, f64::min);
+                assert!(
+                    off < 1e-6,
+                    "{name} phase {phase}: {} is {off} mm off",
+                    s.note
+                );
+            }
+        }
+    }
+}
+
+/// S goes on without a step where a phase meets a dwell: the far dwell is drawn at the S
+/// the rise's construction reached and the return starts there; the near dwell at the S
+/// the return reached.
+#[test]
+fn s_has_no_step_where_a_phase_meets_a_dwell() {
+    for name in SCENES {
+        let cam = cam(name);
+        let s = &cam.diagrams.s_view;
+        let curve = |g: u32| {
+            let c = s
+                .steps
+                .iter()
+                .find(|x| {
+                    x.group == g
+                        && matches!(x.role, Role::Result | Role::Given)
+                        && (x.note.starts_with("smooth curve S") || x.note.starts_with("given S"))
+                })
+                .unwrap_or_else(|| panic!("{name}: the S curve of group {g}"));
+            points(c)
+        };
+        let (rise, ret) = (curve(1), curve(2));
+        let far = points(step(s, 0, "far dwell"));
+        let near = points(step(s, 0, "near dwell"));
+        let joins = [
+            ("rise → far dwell", rise[rise.len() - 1], far[0]),
+            ("far dwell → return", far[1], ret[0]),
+            ("return → near dwell", ret[ret.len() - 1], near[0]),
+        ];
+        for (what, a, b) in joins {
+            assert!(
+                a.distance(b) < 1e-9,
+                "{name}: {what}: a step from {a} to {b}"
+            );
+        }
+        // The S the table reports is the one drawn: the return's first point.
+        let n = cam.spec.divisions;
+        let s0 = cam.diagrams.s_scale.to_mm(cam.diagrams.s[n + 1]);
+        assert!(
+            (s0 - ret[0].y).abs() < 1e-9,
+            "{name}: {s0} against {}",
+            ret[0].y
+        );
+    }
+}
