@@ -134,7 +134,8 @@ impl<'a> Placer<'a> {
             .outlines
             .iter()
             .flatten()
-            .filter(|o| shape_box(&o.shape).is_some_and(|b| b.intersects(&near)))
+            // Grown a little: a horizontal or vertical line's box has no area.
+            .filter(|o| shape_box(&o.shape).is_some_and(|b| b.inflate(1e-6).intersects(&near)))
             .collect();
         let points = points
             .iter()
