@@ -25,6 +25,7 @@ mod tests;
 mod tests_limits;
 #[cfg(test)]
 mod tests_train;
+mod trace;
 mod train;
 mod train_rank;
 mod triangles;
