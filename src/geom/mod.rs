@@ -13,7 +13,8 @@ pub use glam::DVec2;
 pub use hatch::{hatch, HatchError, MAX_HATCH_LINES};
 pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};
 pub use primitives::{
-    french_curve, hermite, nearest, rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,
+    french_curve, hermite, nearest, polygon_contains, rotate, wrap_pi, Arc, Circle, Line, Ray,
+    Segment, Side,
 };
 pub use solve::{bracketed_root, solve_linear};
 pub use tolerance::{InvalidTolerance, Tolerances};

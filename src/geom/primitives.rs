@@ -251,6 +251,18 @@ impl Side {
     }
 }
 
+/// Whether `p` lies inside the polygon `pts` (even–odd rule; the closing edge implied).
+pub fn polygon_contains(pts: &[DVec2], p: DVec2) -> bool {
+    let mut odd = false;
+    for (i, &a) in pts.iter().enumerate() {
+        let b = pts[(i + 1) % pts.len()];
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            odd = !odd;
+        }
+    }
+    odd
+}
+
 /// Rotate `v` by `angle` radians counter-clockwise.
 pub fn rotate(v: DVec2, angle: f64) -> DVec2 {
     DVec2::from_angle(angle).rotate(v)

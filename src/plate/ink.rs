@@ -5,7 +5,8 @@
 use super::items::{Outline, Shape};
 use super::labels::view_outlines;
 use super::Plate;
-use crate::geom::DVec2;
+use super::Rect;
+use crate::geom::{polygon_contains, DVec2};
 use std::collections::BTreeSet;
 
 /// A cell of the grid: column and row of its top-left corner in cells.
@@ -49,33 +50,18 @@ fn ink_outline(o: &Outline, cell: f64, out: &mut BTreeSet<Cell>) {
             for (i, &a) in pts.iter().enumerate() {
                 ink_line(a, pts[(i + 1) % pts.len()], cell, out);
             }
-            let (Some(lo), Some(hi)) = (
-                pts.iter().copied().reduce(DVec2::min),
-                pts.iter().copied().reduce(DVec2::max),
-            ) else {
+            let Some(bounds) = Rect::around(pts.iter().copied()) else {
                 return;
             };
-            let (c0, c1) = (cell_of(lo, cell), cell_of(hi, cell));
+            let (c0, c1) = (cell_of(bounds.min, cell), cell_of(bounds.max, cell));
             for x in c0.0..=c1.0 {
                 for y in c0.1..=c1.1 {
                     let centre = DVec2::new(x as f64 + 0.5, y as f64 + 0.5) * cell;
-                    if inside(pts, centre) {
+                    if polygon_contains(pts, centre) {
                         out.insert((x, y));
                     }
                 }
             }
         }
     }
-}
-
-/// Whether `p` lies inside the polygon `pts` (even–odd rule).
-fn inside(pts: &[DVec2], p: DVec2) -> bool {
-    let mut odd = false;
-    for (i, &a) in pts.iter().enumerate() {
-        let b = pts[(i + 1) % pts.len()];
-        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
-            odd = !odd;
-        }
-    }
-    odd
 }

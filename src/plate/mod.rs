@@ -95,6 +95,12 @@ impl Rect {
         let s = self.max.min(other.max) - self.min.max(other.min);
         s.x > 0.0 && s.y > 0.0
     }
+    /// True when the two rectangles share any point, edges and degenerate (zero-width or
+    /// zero-height) rectangles included: the box of a horizontal line touches what it crosses.
+    pub fn touches(&self, other: &Rect) -> bool {
+        let s = self.max.min(other.max) - self.min.max(other.min);
+        s.x >= 0.0 && s.y >= 0.0
+    }
     /// Area of the common part, mm².
     pub fn overlap(&self, other: &Rect) -> f64 {
         let s = self.max.min(other.max) - self.min.max(other.min);

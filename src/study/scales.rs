@@ -108,6 +108,13 @@ impl Cache for ScaleL {
     type Value = Result<Scale, StudyError>;
 }
 
+/// Each plan's μ, by (kind, position).
+struct PlanScales;
+impl Cache for PlanScales {
+    type Key = (PlanKind, usize);
+    type Value = Result<Scale, StudyError>;
+}
+
 /// The kinematic study's scales.
 struct Scales;
 impl Cache for Scales {
@@ -179,15 +186,17 @@ impl<'s> Session<'s> {
     /// or, for a plan that does not fit `VECTOR_PLAN_ROOM` at it (one far larger than the
     /// typical plan), its own, raised until it fits. A scale the scene gives is every plan's.
     pub fn plan_scale(&self, kind: PlanKind, k: usize) -> Result<Scale, StudyError> {
-        let sc = self.kin_scales()?;
-        let (common, given) = match kind {
-            PlanKind::Velocity => (sc.v, self.spec().scale_v.is_some()),
-            PlanKind::Acceleration => (sc.a, self.spec().scale_a.is_some()),
-        };
-        if given {
-            return Ok(common);
-        }
-        let size = largest_plan(&*self.poses()?, &[k], self.w1()?, kind);
-        Ok(raised_to_fit(common, VECTOR_PLAN_ROOM, size))
+        self.caches.get::<PlanScales>((kind, k), || {
+            let sc = self.kin_scales()?;
+            let (common, given) = match kind {
+                PlanKind::Velocity => (sc.v, self.spec().scale_v.is_some()),
+                PlanKind::Acceleration => (sc.a, self.spec().scale_a.is_some()),
+            };
+            if given {
+                return Ok(common);
+            }
+            let size = largest_plan(&*self.poses()?, &[k], self.w1()?, kind);
+            Ok(raised_to_fit(common, VECTOR_PLAN_ROOM, size))
+        })
     }
 }

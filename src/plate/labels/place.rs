@@ -134,8 +134,7 @@ impl<'a> Placer<'a> {
             .outlines
             .iter()
             .flatten()
-            // Grown a little: a horizontal or vertical line's box has no area.
-            .filter(|o| shape_box(&o.shape).is_some_and(|b| b.inflate(1e-6).intersects(&near)))
+            .filter(|o| shape_box(&o.shape).is_some_and(|b| b.touches(&near)))
             .collect();
         let points = points
             .iter()
