@@ -8,6 +8,8 @@ mod support;
 use serde_json::Value;
 use support::{root, tmm};
 use tmm::construct::Drafting;
+use tmm::construct::Item;
+use tmm::geom::DVec2;
 use tmm::study::Session;
 
 fn report(drafting: &str) -> Value {
@@ -652,4 +654,123 @@ fn a_seed_value_is_echoed_compactly() {
     );
     assert!(!out.contains("0.0000000000"), "{out}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Every analysed position of the shaper and the v-engine, with its session's scales.
+fn each_position(scene: &str, mut check: impl FnMut(&tmm::forces::PositionForces)) {
+    let scene = tmm::scene::load(&root().join(scene)).expect("scene");
+    let session = Session::new(&scene, Drafting::EXACT);
+    let sc = session.kin_scales().expect("scales");
+    for k in session.force_positions().expect("positions") {
+        check(&session.forces(&sc, k).expect("forces"));
+    }
+}
+
+/// The drawn vectors of a figure: (note, from, to), mm.
+fn vectors(f: &tmm::construct::Figure) -> Vec<(&str, DVec2, DVec2)> {
+    f.steps
+        .iter()
+        .filter_map(|s| match s.item {
+            Item::Vector { from, to } => Some((s.note.as_str(), from, to)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Issue 19 item 1: every force laid off on a polygon reads — at least 4 mm on the polygon,
+/// or on its detail view (drawn at a larger μ_F, at least 4 mm there), whose zone holds it.
+#[test]
+fn every_force_of_a_polygon_reads_on_it_or_on_its_detail() {
+    for scene in ["constructions/shaper.toml", "constructions/v-engine.toml"] {
+        let mut details = 0;
+        each_position(scene, |f| {
+            let p = &f.analysis.polygons;
+            let all = p
+                .groups
+                .iter()
+                .map(|g| (&g.polygon, &g.details))
+                .chain([(&p.driver.polygon, &p.driver.details)]);
+            for (polygon, detail) in all {
+                assert!(detail.len() <= 3);
+                for (note, a, b) in vectors(polygon) {
+                    let len = a.distance(b);
+                    if !note.starts_with("lay off") || len >= 4.0 {
+                        continue;
+                    }
+                    let inside = |d: &&tmm::forces::PolygonDetail| {
+                        a.distance(d.zone.center) <= d.zone.radius
+                            && b.distance(d.zone.center) <= d.zone.radius
+                    };
+                    let d = detail.iter().find(inside).unwrap_or_else(|| {
+                        panic!("{scene} {}: {note}, {len} mm, in no detail", f.label)
+                    });
+                    let k = polygon.scale.value() / d.figure.scale.value();
+                    assert!(len * k >= 4.0, "{note}: {} mm on the detail", len * k);
+                    details += 1;
+                }
+            }
+        });
+        assert!(details > 0, "{scene}: no small force was detailed");
+    }
+}
+
+/// Issue 19 item 1: the guide's reaction on the shaper's ram (R₀₋₅) stands on the drawn
+/// guide at its arm h₀₋₅ from the slider's joint, the arm dimensioned; the lever's F_у
+/// starts at the end of its arm (the foot of the perpendicular from the pole).
+#[test]
+fn the_guide_reaction_stands_at_its_arm_and_the_balancing_force_at_the_end_of_its_arm() {
+    each_position("constructions/shaper.toml", |f| {
+        let g = &f.analysis.polygons.groups[0];
+        assert_eq!(g.links, [4, 5]);
+        let r05 = g.reactions.iter().find(|r| r.pair.from == 0).expect("R₀₋₅");
+        let h = r05.offset.expect("its arm");
+        let mu = g.scheme.scale.value();
+        let steps = &g.scheme.steps;
+        let guide = steps
+            .iter()
+            .find(|s| matches!(s.item, Item::Guide { .. }))
+            .expect("the guide drawn");
+        let dim = steps
+            .iter()
+            .find_map(|s| match s.item {
+                Item::Dimension { from, to, .. } => Some((from, to, s)),
+                _ => None,
+            })
+            .expect("the arm dimensioned");
+        assert!(
+            (dim.0.distance(dim.1) - h.abs() / mu).abs() < 1e-9,
+            "{}: dimension {} mm, h = {h} m",
+            f.label,
+            dim.0.distance(dim.1)
+        );
+        assert_eq!(
+            dim.2.label.as_ref().map(|l| l.text.as_str()),
+            Some("h_{0-5}")
+        );
+        let (_, from, _) = vectors(&g.scheme)
+            .into_iter()
+            .find(|(n, ..)| *n == "load R_{0-5}")
+            .expect("R₀₋₅ drawn");
+        let Item::Guide { segment, .. } = guide.item else {
+            unreachable!()
+        };
+        let along = (segment.to - segment.from).normalize();
+        let off = (from - segment.from).perp_dot(along).abs();
+        assert!(off < 1e-9, "R₀₋₅ starts {off} mm off its guide");
+        assert!(
+            [dim.0, dim.1].iter().any(|p| p.distance(from) < 1e-9),
+            "R₀₋₅ is not at the end of its arm"
+        );
+        let lever = &f.analysis.lever.figure;
+        let (_, at, to) = vectors(lever)
+            .into_iter()
+            .find(|(n, ..)| n.starts_with("F_{у}"))
+            .expect("F_у on the lever");
+        let e = (to - at).normalize();
+        assert!(
+            at.dot(e).abs() < 1e-9 * at.length().max(1.0),
+            "F_у is not at the foot of its arm"
+        );
+        assert!(at.length() > 10.0, "its arm is {} mm", at.length());
+    });
 }

@@ -276,10 +276,21 @@ impl Figure {
     /// dimensions, angles, texts and labels stay on the main view. Each step notes the step
     /// it copies in `from`.
     pub fn detail(&self, zone: &Circle, scale: Scale) -> Figure {
+        self.detail_keeping(zone, scale, false)
+    }
+
+    /// A detail view of a force polygon ([`detail`](Figure::detail)) that also keeps its
+    /// vectors: each cut where it leaves the circle, its arrowhead kept when its end lies
+    /// inside, its label set at the middle of the piece that shows.
+    pub fn detail_with_vectors(&self, zone: &Circle, scale: Scale) -> Figure {
+        self.detail_keeping(zone, scale, true)
+    }
+
+    fn detail_keeping(&self, zone: &Circle, scale: Scale, vectors: bool) -> Figure {
         let k = self.scale.value() / scale.value();
         let t = |p: DVec2| (p - zone.center) * k;
         let inside = |p: DVec2| p.distance(zone.center) <= zone.radius;
-        let mut items: Vec<(&Step, Item)> = Vec::new();
+        let mut items: Vec<(&Step, Item, Option<Label>)> = Vec::new();
         let arc = |a: &Arc| {
             crate::geom::arc_in_circle(a, zone)
                 .into_iter()
@@ -309,6 +320,22 @@ impl Figure {
                     at: t(*at),
                     fixed: *fixed,
                 }],
+                Item::Vector { from, to } if vectors => {
+                    for r in runs(&[*from, *to], false) {
+                        let (a, b) = (r[0], r[r.len() - 1]);
+                        let item = if inside(*to) {
+                            Item::Vector { from: a, to: b }
+                        } else {
+                            Item::Segment(Segment::new(a, b))
+                        };
+                        let label = st.label.as_ref().map(|l| Label {
+                            anchor: a.lerp(b, 0.5),
+                            ..l.clone()
+                        });
+                        items.push((st, item, label));
+                    }
+                    Vec::new()
+                }
                 Item::Segment(s) => runs(&[s.from, s.to], false)
                     .into_iter()
                     .map(|r| Item::Segment(Segment::new(r[0], r[r.len() - 1])))
@@ -336,17 +363,17 @@ impl Figure {
                     .collect(),
                 _ => Vec::new(),
             };
-            items.extend(copies.into_iter().map(|item| (st, item)));
+            items.extend(copies.into_iter().map(|item| (st, item, None)));
         }
         let mut steps: Vec<Step> = items
             .into_iter()
             .enumerate()
-            .map(|(i, (st, item))| Step {
+            .map(|(i, (st, item, label))| Step {
                 id: StepId(i as u32),
                 note: format!("detail: {}", st.note),
                 item,
                 role: st.role,
-                label: None,
+                label,
                 from: vec![st.id],
                 group: st.group,
             })

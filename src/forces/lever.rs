@@ -11,6 +11,7 @@ use super::twin::line_of_action;
 use crate::construct::{Figure, Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
 use crate::linkage::{Built, KinPlan, PlanSetup};
+use crate::scale::Scale;
 
 /// Length of a force's arrow on the lever, mm.
 const ARROW_MM: f64 = 12.0;
@@ -43,12 +44,53 @@ fn turn(v: DVec2) -> DVec2 {
     DVec2::new(v.y, -v.x)
 }
 
-/// Build the lever from the velocity plan `vp` of the position `setup` and its loads.
+/// The lever's turned plan is drawn about this long (its longest ray), mm: a lever is read
+/// by its arms, so it is drawn larger than the plan it turns.
+const LEVER_PLAN_MM: f64 = 150.0;
+
+/// The lever with everything on it (a balancing force's arm included) is drawn at most this
+/// large, mm.
+const LEVER_MAX_MM: f64 = 200.0;
+
+/// Build the lever from the velocity plan `vp` of the position `setup` and its loads, at
+/// the round μ_v that draws its turned plan about [`LEVER_PLAN_MM`] long and the whole lever
+/// within [`LEVER_MAX_MM`] (never smaller than the plan): the lever balances powers, so its
+/// scale is free, and a larger lever reads its arms more exactly.
 pub fn lever(setup: &PlanSetup<'_>, vp: &KinPlan, loads: &[Load], drive: &Drive) -> Lever {
-    let (prog, b, w1) = (setup.prog, setup.built, setup.w1);
     let mu_v = vp.figure.scale;
-    let mut rec = Recorder::in_context("Zhukovsky's lever", mu_v, &setup.ctx);
+    let at_plan = lever_at(setup, vp, loads, drive, mu_v);
+    let ray = vp.images.iter().map(|x| x.length()).fold(0.0, f64::max);
+    let reach = at_plan
+        .figure
+        .bounds()
+        .map_or(0.0, |(lo, hi)| lo.abs().max(hi.abs()).length());
+    let larger = [
+        Scale::round_for(ray * mu_v.value(), LEVER_PLAN_MM, mu_v.quantity),
+        Scale::round_for(reach * mu_v.value(), LEVER_MAX_MM, mu_v.quantity),
+    ]
+    .into_iter()
+    .flatten()
+    .max_by(|a, b| a.value().total_cmp(&b.value()));
+    match larger {
+        Some(mu) if mu.value() < mu_v.value() => lever_at(setup, vp, loads, drive, mu),
+        _ => at_plan,
+    }
+}
+
+/// The lever drawn at `mu` (the plan `vp` enlarged by μ_v/μ).
+fn lever_at(
+    setup: &PlanSetup<'_>,
+    vp: &KinPlan,
+    loads: &[Load],
+    drive: &Drive,
+    mu: Scale,
+) -> Lever {
+    let (prog, b, w1) = (setup.prog, setup.built, setup.w1);
+    let enlarge = vp.figure.scale.value() / mu.value();
+    let mut rec = Recorder::in_context("Zhukovsky's lever", mu, &setup.ctx);
     let pole = rec.pole("p");
+    // The plan's images enlarged to the lever's μ, turned 90°.
+    let turn = |v: DVec2| turn(v * enlarge);
     // The turned plan: a ray from the pole to every point's image.
     for k in prog.fixed.len()..prog.names.len() {
         let x = turn(vp.images[k]);
@@ -65,21 +107,40 @@ pub fn lever(setup: &PlanSetup<'_>, vp: &KinPlan, loads: &[Load], drive: &Drive)
         }
     }
     let mut arms = 0;
-    let mut moment = |rec: &mut Recorder, x: DVec2, f: DVec2, name: &str| -> f64 {
+    // The moment of `f` at `x` about the pole; `slid`: the force drawn at the end of its arm,
+    // moved along its line of action from its image (drawn thin).
+    let mut moment = |rec: &mut Recorder, x: DVec2, f: DVec2, name: &str, slid: bool| -> f64 {
         let Some(e) = f.try_normalize() else {
             return 0.0;
+        };
+        let foot = x + e * (-x).dot(e);
+        let at = if slid {
+            rec.draw(
+                format!("{name}: its image"),
+                Item::Point(x),
+                Role::Given,
+                &[],
+            );
+            rec.draw(
+                format!("{name}: its line of action to the end of its arm"),
+                Item::Segment(Segment::new(x, foot)),
+                Role::Construction,
+                &[],
+            );
+            foot
+        } else {
+            x
         };
         let id = rec.draw(
             format!("{name} at its image"),
             Item::Vector {
-                from: x,
-                to: x + e * ARROW_MM,
+                from: at,
+                to: at + e * ARROW_MM,
             },
             Role::Result,
             &[],
         );
-        rec.label(id, name, x + e * ARROW_MM, e);
-        let foot = x + e * (-x).dot(e);
+        rec.label(id, name, at + e * ARROW_MM, e);
         let arm = rec.measure(DVec2::ZERO, foot);
         if arm.drawn_mm > 0.5 {
             arms += 1;
@@ -126,8 +187,8 @@ pub fn lever(setup: &PlanSetup<'_>, vp: &KinPlan, loads: &[Load], drive: &Drive)
             let f = e * (l.moment / len);
             // The couple's two forces, primed apart from the link's inertia force.
             let name = |prime: &str| l.name.replacen('M', &format!("F{prime}"), 1);
-            power += moment(&mut rec, turn(i_far), f, &name("′"));
-            power += moment(&mut rec, turn(vp.images[o]), -f, &name("″"));
+            power += moment(&mut rec, turn(i_far), f, &name("′"), false);
+            power += moment(&mut rec, turn(vp.images[o]), -f, &name("″"), false);
         } else {
             // A force at a point of another link (friction on a guide) acts on its own link.
             let x = if l.shift == DVec2::ZERO && prog.links_of(l.at).contains(&l.link) {
@@ -135,7 +196,7 @@ pub fn lever(setup: &PlanSetup<'_>, vp: &KinPlan, loads: &[Load], drive: &Drive)
             } else {
                 image(b, vp, l.link, b.p[l.at] + l.shift / mu, mu)
             };
-            power += moment(&mut rec, turn(x), l.force, &l.name);
+            power += moment(&mut rec, turn(x), l.force, &l.name, false);
         }
     }
     let crank = prog.crank_link as usize;
@@ -148,7 +209,7 @@ pub fn lever(setup: &PlanSetup<'_>, vp: &KinPlan, loads: &[Load], drive: &Drive)
             let flank = if m_bal == 0.0 { w1 } else { m_bal }.signum();
             let (p, d) = line_of_action(o, g.radius() / mu, g.towards, g.pressure_angle, flank);
             let x = turn(image(b, vp, crank, p, mu));
-            let unit = moment(&mut rec, x, d, "F_{у}");
+            let unit = moment(&mut rec, x, d, "F_{у}", true);
             let f = -power / unit;
             (m_bal, Some(f))
         }

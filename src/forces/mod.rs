@@ -35,7 +35,7 @@ pub use error::ForceError;
 pub use indicator::Indicator;
 pub use loads::{carrier, loads, Load, LoadKind, Motion, Phase};
 pub use pair_friction::{friction_loads, PairFriction, PairMotion};
-pub use polygons::{DriverPolygon, GroupPolygon, Polygons};
+pub use polygons::{DriverPolygon, GroupPolygon, PolygonDetail, Polygons};
 pub use rows::{notes, seed_notes};
 use rows::{reaction_rows, row, rows, zero_references};
 pub use twin::{power_balance, solve as solve_twin, Equilibrium, Pair, PairKind, Reaction};
@@ -48,7 +48,7 @@ use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
 /// Preferred length of the largest force on a polygon, mm.
-pub const POLYGON_MM: f64 = 100.0;
+pub const POLYGON_MM: f64 = 150.0;
 
 /// What every analysis of a position gives, without and with friction in the pairs: the
 /// loads, the polygons, the lever and the twin.

@@ -10,7 +10,8 @@ use super::layout::{lay_out, results_table, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
-use crate::forces::PositionForces;
+use crate::forces::{PolygonDetail, PositionForces};
+use crate::geom::DVec2;
 use crate::linkage::Structure;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
@@ -63,6 +64,41 @@ fn view(figure: &Figure, what: String, (key, scale): (Key, Scale), lang: Lang) -
     Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))
 }
 
+/// The letters of detail views (ГОСТ 2.316: capitals, without Й, О, Х, Ъ, Ы, Ь).
+fn detail_letter(n: usize, lang: Lang) -> &'static str {
+    const CYRILLIC: [&str; 8] = ["А", "Б", "В", "Г", "Д", "Е", "Ж", "И"];
+    const LATIN: [&str; 8] = ["A", "B", "C", "D", "E", "F", "G", "H"];
+    match lang {
+        Lang::En => LATIN[n % LATIN.len()],
+        Lang::Ru | Lang::Uk => CYRILLIC[n % CYRILLIC.len()],
+    }
+}
+
+/// A force polygon's view captioned `what`, and its details' views (each zone circled on
+/// the polygon and lettered, each detail captioned by its letter and μ_F); the letters run
+/// through the sheet's details in order (`lettered` counts them).
+fn polygon_views(
+    blocks: &mut Vec<Block>,
+    (polygon, details): (&Figure, &[PolygonDetail]),
+    what: String,
+    (f, lettered): (&PositionForces, &mut usize),
+    lang: Lang,
+) {
+    let corner = DVec2::new(1.0, 1.0).normalize();
+    let mut marked = polygon.clone();
+    let mut views = Vec::new();
+    for d in details {
+        let letter = detail_letter(*lettered, lang).to_string();
+        *lettered += 1;
+        let at = d.zone.center + corner * d.zone.radius;
+        marked = marked.with_text("the detail's letter", at, letter.clone(), corner);
+        let scale = (Key::ForcesScaleF, d.figure.scale);
+        views.push(view(&d.figure, letter, scale, lang));
+    }
+    blocks.push(view(&marked, what, (Key::ForcesScaleF, f.scale_f), lang));
+    blocks.extend(views);
+}
+
 /// The sheet (or sheets) of one position.
 fn position_sheet(
     session: &Session<'_>,
@@ -74,6 +110,7 @@ fn position_sheet(
 ) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
     let mut blocks = Vec::new();
+    let mut lettered = 0;
     for g in &f.analysis.polygons.groups {
         let [i, j] = g.links;
         let kind = st
@@ -87,26 +124,34 @@ fn position_sheet(
         blocks.push(view(
             &g.scheme,
             format!("{} {i}–{j} ({kind})", Text::Group.get(lang)),
-            (Key::MechanismScaleL, sc.l),
+            (Key::MechanismScaleL, g.scheme.scale),
             lang,
         ));
-        blocks.push(view(
-            &g.polygon,
-            format!("{} {i}–{j}", Text::ForcePolygonOfGroup.get(lang)),
-            (Key::ForcesScaleF, f.scale_f),
+        let what = format!("{} {i}–{j}", Text::ForcePolygonOfGroup.get(lang));
+        polygon_views(
+            &mut blocks,
+            (&g.polygon, &g.details),
+            what,
+            (f, &mut lettered),
             lang,
-        ));
+        );
     }
     let d = &f.analysis.polygons.driver;
     let driving = format!("{} {}", Text::DrivingLink.get(lang), st.crank_link);
-    blocks.push(view(&d.scheme, driving, (Key::MechanismScaleL, sc.l), lang));
-    let triangle = Text::ForcePolygonOfDriver.get(lang).to_string();
     blocks.push(view(
-        &d.polygon,
-        triangle,
-        (Key::ForcesScaleF, f.scale_f),
+        &d.scheme,
+        driving,
+        (Key::MechanismScaleL, d.scheme.scale),
         lang,
     ));
+    let triangle = Text::ForcePolygonOfDriver.get(lang).to_string();
+    polygon_views(
+        &mut blocks,
+        (&d.polygon, &d.details),
+        triangle,
+        (f, &mut lettered),
+        lang,
+    );
     let lever = &f.analysis.lever.figure;
     let zhukovsky = Text::ZhukovskyLever.get(lang).to_string();
     blocks.push(view(

@@ -111,9 +111,11 @@ pub(super) fn driver(
     let r01 = pol.read(&reaction_name(0, crank), e, p0);
     let reaction = revolute(0, crank, prog.centre, r01);
     show_reaction(&mut sch, &reaction);
+    let (polygon, detail) = pol.finish();
     Ok(DriverPolygon {
         scheme: sch.rec.finish(),
-        polygon: pol.rec.finish(),
+        polygon,
+        details: detail,
         reaction,
         m_bal,
         f_bal: f_bal.map(|(f, _)| f),

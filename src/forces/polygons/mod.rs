@@ -46,6 +46,8 @@ pub struct GroupPolygon {
     pub scheme: Figure,
     /// Its force polygon at μ_F.
     pub polygon: Figure,
+    /// The polygon's small forces enlarged, when some are too short to read.
+    pub details: Vec<PolygonDetail>,
     /// The reactions read off the polygon: the two outer pairs, then the inner.
     pub reactions: Vec<Reaction>,
 }
@@ -57,6 +59,8 @@ pub struct DriverPolygon {
     pub scheme: Figure,
     /// Its force triangle at μ_F.
     pub polygon: Figure,
+    /// The triangle's small forces enlarged, when some are too short to read.
+    pub details: Vec<PolygonDetail>,
     /// The frame's reaction on the crank.
     pub reaction: Reaction,
     /// The balancing moment, N·m.
@@ -204,10 +208,89 @@ impl<'a> Scheme<'a> {
     }
 }
 
+/// A force shorter than this on its polygon, mm, is drawn again in the polygon's detail.
+const SMALL_FORCE_MM: f64 = 4.0;
+
+/// The detail draws the smallest force about this long, mm.
+const DETAIL_FORCE_MM: f64 = 12.0;
+
+/// The detail's zone is drawn at most this wide, mm.
+const DETAIL_MM: f64 = 110.0;
+
+/// A detail's zone is drawn at least this large in radius, mm: room for its forces' labels.
+const DETAIL_ROOM_MM: f64 = 30.0;
+
+/// The zone about the small forces reaches this far past them (a share of their extent).
+const DETAIL_MARGIN: f64 = 1.3;
+
+/// A detail view (выносной элемент) of a force polygon: the zone of its small forces drawn
+/// again at a larger μ_F, so that every force of the polygon can be read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PolygonDetail {
+    /// The zone on the polygon, polygon mm.
+    pub zone: Circle,
+    /// The zone enlarged: the vectors cut at its border, with their labels.
+    pub figure: Figure,
+}
+
+/// A polygon has at most this many details.
+const MAX_DETAILS: usize = 3;
+
+/// The details of `polygon` about its forces `laid` (polygon mm) drawn shorter than
+/// [`SMALL_FORCE_MM`]: from the shortest force not yet shown, the round μ_F that draws it
+/// about [`DETAIL_FORCE_MM`], and a zone about it and the other small forces near enough to
+/// share a detail [`DETAIL_MM`] wide; then the next. Empty when every force reads.
+fn details(polygon: &Figure, laid: &[(DVec2, DVec2)]) -> Vec<PolygonDetail> {
+    let mu = polygon.scale;
+    let mut small: Vec<(DVec2, DVec2)> = laid
+        .iter()
+        .copied()
+        .filter(|(a, b)| a != b && a.distance(*b) < SMALL_FORCE_MM)
+        .collect();
+    small.sort_by(|x, y| x.0.distance(x.1).total_cmp(&y.0.distance(y.1)));
+    let mut out = Vec::new();
+    while let (Some(&(a, b)), true) = (small.first(), out.len() < MAX_DETAILS) {
+        let Some(scale) =
+            Scale::round_for(a.distance(b) * mu.value(), DETAIL_FORCE_MM, mu.quantity)
+                .filter(|d| d.value() * 2.0 <= mu.value())
+        else {
+            break;
+        };
+        // The zone's largest radius on the polygon, and who fits in it with the margin.
+        let reach =
+            0.5 * DETAIL_MM * scale.value() / mu.value() / DETAIL_MARGIN / std::f64::consts::SQRT_2;
+        let c = a.lerp(b, 0.5);
+        let (members, rest): (Vec<_>, Vec<_>) = small
+            .iter()
+            .partition(|(p, q)| p.distance(c) <= reach && q.distance(c) <= reach);
+        let (lo, hi) = members.iter().fold(
+            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+            |(lo, hi), (p, q)| (lo.min(p.min(*q)), hi.max(p.max(*q))),
+        );
+        // At least a short force's room about it, at most the detail's width (drawing mm
+        // of the detail turned into polygon mm).
+        let k = mu.value() / scale.value();
+        let radius = (0.5 * (hi - lo).length() * DETAIL_MARGIN)
+            .max(DETAIL_ROOM_MM / k)
+            .min(0.5 * DETAIL_MM / k);
+        let Some(zone) = Circle::new(0.5 * (lo + hi), radius) else {
+            break;
+        };
+        out.push(PolygonDetail {
+            zone,
+            figure: polygon.detail_with_vectors(&zone, scale),
+        });
+        small = rest;
+    }
+    out
+}
+
 /// A force polygon being laid off.
 struct Polygon {
     rec: Recorder,
     tip: DVec2,
+    /// The forces laid off, polygon mm.
+    laid: Vec<(DVec2, DVec2)>,
 }
 
 impl Polygon {
@@ -215,12 +298,34 @@ impl Polygon {
         Self {
             rec: Recorder::in_context(title, mu_f, ctx),
             tip: DVec2::ZERO,
+            laid: Vec::new(),
         }
+    }
+
+    /// The polygon as drawn, and the details its small forces need (their zones circled on
+    /// the polygon).
+    fn finish(mut self) -> (Figure, Vec<PolygonDetail>) {
+        let drawn = Figure {
+            title: String::new(),
+            scale: self.rec.scale(),
+            steps: self.rec.steps().to_vec(),
+        };
+        let d = details(&drawn, &self.laid);
+        for d in &d {
+            self.rec.draw(
+                "the zone of the polygon's detail",
+                Item::Circle(d.zone),
+                Role::Construction,
+                &[],
+            );
+        }
+        (self.rec.finish(), d)
     }
     /// Lay off a force head to tail; returns its end.
     fn lay(&mut self, name: &str, f: DVec2) -> DVec2 {
         let to = self.tip + f / self.rec.scale().value();
         if to != self.tip {
+            self.laid.push((self.tip, to));
             let id = self.rec.draw(
                 format!("lay off {name}"),
                 Item::Vector { from: self.tip, to },
@@ -542,11 +647,13 @@ pub fn polygons(
         for r in &reactions {
             show_reaction(&mut sch, r);
         }
+        let (polygon, detail) = pol.finish();
         groups.push(GroupPolygon {
             group,
             links: [i, j],
             scheme: sch.rec.finish(),
-            polygon: pol.rec.finish(),
+            polygon,
+            details: detail,
             reactions,
         });
     }
@@ -568,8 +675,87 @@ fn point_of(r: &Reaction, b: &Built) -> (usize, DVec2) {
     }
 }
 
-/// Draw a reaction found on the group's drawing, at its point.
+/// How far the frame's guide is drawn past the slider and past its reaction's point, mm.
+const GUIDE_PAST_MM: f64 = 12.0;
+
+/// Offset of a reaction arm's dimension line from the guide, mm.
+const ARM_DIMENSION_MM: f64 = 10.0;
+
+/// The frame's guide under a slider whose reaction's point lies `offset` (m) along it from
+/// the slider's joint: the guide drawn (hatched on the frame's side) from past the slider to
+/// past the point, and the arm dimensioned from the joint, labelled h₀₋ⱼ — the reaction
+/// stands on the guide at its arm, as the moment equation placed it.
+fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) {
+    let PairKind::Prismatic {
+        reference,
+        dir_link,
+    } = r.pair.kind
+    else {
+        return;
+    };
+    let b = sch.board.setup.built;
+    let prog = sch.board.setup.prog;
+    let mu = sch.board.setup.mu_l.value();
+    let u = DVec2::from_angle(b.angle[dir_link]);
+    let joint = b.p[reference];
+    let point = joint + u * (offset / mu);
+    // Hatched on the side away from the mechanism, as on the plan of positions.
+    let centre = b.p[prog.centre];
+    let (hatch, side) = if u.perp_dot(centre - joint) > 0.0 {
+        (crate::geom::Side::Right, -1.0)
+    } else {
+        (crate::geom::Side::Left, 1.0)
+    };
+    let (lo, hi) = (offset.min(0.0) / mu, offset.max(0.0) / mu);
+    sch.rec.draw(
+        format!("guide of link {} under its reaction", r.pair.to),
+        Item::Guide {
+            segment: Segment::new(
+                joint + u * (lo - GUIDE_PAST_MM),
+                joint + u * (hi + GUIDE_PAST_MM),
+            ),
+            hatch,
+        },
+        Role::Given,
+        &[],
+    );
+    if sch.rec.measure(joint, point).drawn_mm > 0.5 {
+        // The dimension beyond the hatching, clear of the group.
+        let (from, to) = if offset >= 0.0 {
+            (joint, point)
+        } else {
+            (point, joint)
+        };
+        let off = ARM_DIMENSION_MM * side;
+        let id = sch.rec.draw(
+            format!(
+                "arm of {} on the guide",
+                reaction_name(r.pair.from, r.pair.to)
+            ),
+            Item::Dimension {
+                from,
+                to,
+                offset: off,
+            },
+            Role::Dimension,
+            &[],
+        );
+        let name = format!("h_{{{}-{}}}", r.pair.from, r.pair.to);
+        sch.rec.label(
+            id,
+            name,
+            (from + to) * 0.5 + u.perp() * off,
+            u.perp() * side,
+        );
+    }
+}
+
+/// Draw a reaction found on the group's drawing, at its point (the frame's reaction on a
+/// slider on its guide, with its arm).
 fn show_reaction(sch: &mut Scheme<'_>, r: &Reaction) {
+    if let (0, Some(offset)) = (r.pair.from, r.offset) {
+        show_guide_arm(sch, r, offset);
+    }
     let (at, shift) = point_of(r, sch.board.setup.built);
     let l = Load::force(
         r.pair.to,
