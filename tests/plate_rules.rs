@@ -348,5 +348,9 @@ fn scripted_texts_are_anchored_at_their_start() {
             assert!(n > 0, "{scene}/{}: no scripted text", p.name);
         }
     }
-    assert!(found.is_empty(), "anchored mid-text:\n  {}", found.join("\n  "));
+    assert!(
+        found.is_empty(),
+        "anchored mid-text:\n  {}",
+        found.join("\n  ")
+    );
 }
