@@ -128,3 +128,40 @@ fn no_sheet_is_left_nearly_empty_and_a_thin_one_says_why() {
     }
     assert!(bad.is_empty(), "{}\nall: {shares:.2?}", bad.join("\n"));
 }
+
+/// The size rule on these sheets: no drawing (diagram, polygon, plan, scheme) whose longest
+/// dimension is under 30 mm.
+#[test]
+fn no_drawing_on_these_sheets_is_under_30_mm() {
+    let mut small = Vec::new();
+    let mut n = 0;
+    for entry in std::fs::read_dir(root().join("constructions")).expect("constructions/") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+        let all =
+            tmm::render::plates(&s, Lang::Ru, Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
+        for (kind, p) in all {
+            if matches!(kind.stem(), "positions" | "kinematics" | "forces") {
+                continue;
+            }
+            for v in &p.views {
+                let Some((lo, hi)) = v.figure.bounds() else {
+                    continue;
+                };
+                n += 1;
+                let longest = (hi - lo).max_element();
+                if longest < 30.0 {
+                    small.push(format!(
+                        "{}/{}: “{}” {longest:.1} mm",
+                        s.stem, p.name, v.figure.title
+                    ));
+                }
+            }
+        }
+    }
+    assert!(n > 50, "{n} drawings");
+    assert!(small.is_empty(), "{}", small.join("\n"));
+}
