@@ -75,8 +75,8 @@ fn ink_share(p: &Plate) -> f64 {
     inked as f64 / cells.max(1) as f64
 }
 
-/// Every sheet of the scenes' plates that are not a linkage's: (scene/sheet, ink share).
-fn shares() -> Vec<(String, f64)> {
+/// Every sheet of the scenes' plates that are not a linkage's, with its scene's stem.
+fn sheets() -> Vec<(String, Plate)> {
     let mut out = Vec::new();
     for entry in std::fs::read_dir(root().join("constructions")).expect("constructions/") {
         let path = entry.expect("entry").path();
@@ -86,13 +86,21 @@ fn shares() -> Vec<(String, f64)> {
         let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
         let all =
             tmm::render::plates(&s, Lang::Ru, Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
-        for (kind, p) in all {
-            if matches!(kind.stem(), "positions" | "kinematics" | "forces") {
-                continue;
-            }
-            out.push((format!("{}/{}", s.stem, p.name), ink_share(&p)));
-        }
+        out.extend(
+            all.into_iter()
+                .filter(|(kind, _)| !matches!(kind.stem(), "positions" | "kinematics" | "forces"))
+                .map(|(_, p)| (s.stem.clone(), p)),
+        );
     }
+    out
+}
+
+/// Every sheet of the scenes' plates that are not a linkage's: (scene/sheet, ink share).
+fn shares() -> Vec<(String, f64)> {
+    let mut out: Vec<(String, f64)> = sheets()
+        .iter()
+        .map(|(stem, p)| (format!("{stem}/{}", p.name), ink_share(p)))
+        .collect();
     out.sort_by(|a, b| a.0.cmp(&b.0));
     out
 }
@@ -135,30 +143,18 @@ fn no_sheet_is_left_nearly_empty_and_a_thin_one_says_why() {
 fn no_drawing_on_these_sheets_is_under_30_mm() {
     let mut small = Vec::new();
     let mut n = 0;
-    for entry in std::fs::read_dir(root().join("constructions")).expect("constructions/") {
-        let path = entry.expect("entry").path();
-        if path.extension().is_none_or(|x| x != "toml") {
-            continue;
-        }
-        let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
-        let all =
-            tmm::render::plates(&s, Lang::Ru, Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
-        for (kind, p) in all {
-            if matches!(kind.stem(), "positions" | "kinematics" | "forces") {
+    for (stem, p) in sheets() {
+        for v in &p.views {
+            let Some((lo, hi)) = v.figure.bounds() else {
                 continue;
-            }
-            for v in &p.views {
-                let Some((lo, hi)) = v.figure.bounds() else {
-                    continue;
-                };
-                n += 1;
-                let longest = (hi - lo).max_element();
-                if longest < 30.0 {
-                    small.push(format!(
-                        "{}/{}: “{}” {longest:.1} mm",
-                        s.stem, p.name, v.figure.title
-                    ));
-                }
+            };
+            n += 1;
+            let longest = (hi - lo).max_element();
+            if longest < 30.0 {
+                small.push(format!(
+                    "{stem}/{}: “{}” {longest:.1} mm",
+                    p.name, v.figure.title
+                ));
             }
         }
     }
