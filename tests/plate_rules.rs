@@ -322,3 +322,35 @@ fn no_view_is_drawn_over_another() {
         found.join("\n  ")
     );
 }
+
+/// Every plate's SVG reads alike in every renderer: a text with sub- or superscripts (its
+/// `<tspan>`s) is anchored at its start, since a renderer that anchors each `<tspan>` on its
+/// own (cairosvg, which `plate-legibility` reads with) would scatter a centred caption's
+/// pieces over the neighbouring views.
+#[test]
+fn scripted_texts_are_anchored_at_their_start() {
+    let mut found = Vec::new();
+    for (scene, plate) in LISTED {
+        for p in sheets_of(scene, plate) {
+            let svg = tmm::plate::to_svg(&p);
+            let scripted = svg
+                .split("<text ")
+                .skip(1)
+                .filter_map(|t| t.split_once("</text>").map(|(t, _)| t))
+                .filter(|t| t.contains("<tspan"));
+            let mut n = 0;
+            for t in scripted {
+                n += 1;
+                if !t.contains(r#"text-anchor="start""#) {
+                    found.push(format!("{scene}/{}: {}", p.name, &t[..t.len().min(80)]));
+                }
+            }
+            assert!(n > 0, "{scene}/{}: no scripted text", p.name);
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "anchored mid-text:\n  {}",
+        found.join("\n  ")
+    );
+}

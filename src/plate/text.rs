@@ -308,11 +308,28 @@ impl Placed {
     }
 
     /// The `<text>` element; scripts become `<tspan>`s with a smaller size and a `dy` shift
-    /// (and the shift back), which resvg and browsers render alike.
+    /// (and the shift back), which resvg and browsers render alike. A centred or end-aligned
+    /// text with scripts is written from its start ([`measure`]'s advance before `at`):
+    /// `text-anchor` aligns the whole chunk in resvg but each `<tspan>` on its own in
+    /// cairosvg, which would scatter the pieces of a caption over the neighbouring views.
     pub(crate) fn to_xml(&self, id: &str) -> String {
         let em = em_for_height(self.height);
-        let (x, y) = (num(self.at.x), num(self.at.y));
-        let anchor = match self.align {
+        let runs = parse(&self.markup);
+        let scripted = runs.iter().any(|r| r.script != Script::Normal);
+        let (align, start) = match self.align {
+            Align::Start => (Align::Start, self.at.x),
+            a if !scripted => (a, self.at.x),
+            a => {
+                let advance = self
+                    .length
+                    .unwrap_or_else(|| measure(&self.markup, self.height).advance);
+                let back = if a == Align::Middle { 0.5 } else { 1.0 };
+                (Align::Start, self.at.x - back * advance)
+            }
+        };
+        let (x, y) = (num(start), num(self.at.y));
+        let (rx, ry) = (num(self.at.x), num(self.at.y));
+        let anchor = match align {
             Align::Start => "start",
             Align::Middle => "middle",
             Align::End => "end",
@@ -322,7 +339,7 @@ impl Placed {
             num(em)
         );
         if self.rotate != 0.0 && self.rotate.is_finite() {
-            let _ = write!(s, r#" transform="rotate({} {x} {y})""#, num(self.rotate));
+            let _ = write!(s, r#" transform="rotate({} {rx} {ry})""#, num(self.rotate));
         }
         if let Some(len) = self.length {
             let _ = write!(
@@ -333,7 +350,7 @@ impl Placed {
         }
         s.push('>');
         let mut shift = 0.0;
-        for run in parse(&self.markup) {
+        for run in runs {
             let (target, size) = match run.script {
                 Script::Normal => (0.0, None),
                 Script::Sub => (SUB_SHIFT_EM * em, Some(em * SCRIPT_SCALE)),
@@ -493,11 +510,11 @@ mod tests {
 
     #[test]
     fn scripts_shift_and_return_to_the_baseline() {
-        let t = Placed::new(DVec2::new(10.0, 20.0), "b_3b & c", 3.5, Align::Middle);
+        let t = Placed::new(DVec2::new(10.0, 20.0), "b_3b & c", 3.5, Align::Start);
         let xml = t.to_xml("t");
         assert!(
             xml.starts_with(
-                r#"<text id="t" x="10" y="20" font-size="4.8" text-anchor="middle">b<tspan"#
+                r#"<text id="t" x="10" y="20" font-size="4.8" text-anchor="start">b<tspan"#
             ),
             "{xml}"
         );
@@ -507,5 +524,37 @@ mod tests {
             ),
             "{xml}"
         );
+    }
+
+    /// A centred or end-aligned text with scripts is written from its start, so that a
+    /// renderer anchoring each `<tspan>` on its own (cairosvg) places it where resvg does;
+    /// resvg still draws it centred on (ending at) its point.
+    #[test]
+    fn scripted_texts_are_written_from_their_start() {
+        let at = DVec2::new(100.0, 50.0);
+        for (markup, align) in [
+            (
+                "μ_{φ} = 0,03491 рад/мм, μ_{S′} = 0,0007 м/мм, H_2 = 40 мм",
+                Align::Middle,
+            ),
+            ("e^{′}_5", Align::End),
+        ] {
+            let t = Placed::new(at, markup, 3.5, align);
+            let xml = t.to_xml("t");
+            assert!(xml.contains(r#"text-anchor="start""#), "{xml}");
+            let advance = measure(markup, 3.5).advance;
+            let x = at.x - if align == Align::Middle { 0.5 } else { 1.0 } * advance;
+            assert!(xml.contains(&format!(r#" x="{}""#, num(x))), "{xml}");
+            let drawn = rendered_box(&t);
+            let end = if align == Align::Middle {
+                (drawn.min.x + drawn.max.x) * 0.5
+            } else {
+                drawn.max.x
+            };
+            assert!((end - at.x).abs() < 0.3, "{markup}: {drawn:?}");
+        }
+        // Without scripts the anchor is kept (one chunk, read alike everywhere).
+        let plain = Placed::new(at, "O_", 3.5, Align::Middle).to_xml("t");
+        assert!(plain.contains(r#"text-anchor="middle""#), "{plain}");
     }
 }

@@ -1,17 +1,18 @@
 //! Plate "Трение" (friction): every `[[friction.case]]` of the scene — its scheme (the body,
 //! the plane, groove, thread, journal or rollers, the loads, the normal, the friction cone or
 //! circle and the reaction) and its force triangle at μ_F — with the closed forms and the
-//! table graphical | analytic | error. A2 landscape; further sheets when the cases need them.
+//! table graphical | analytic | error. On one sheet: A2 landscape, A1 when the cases need more
+//! room; further sheets only when an A1 cannot hold them.
 
 use super::captions::{unit_in, FrictionText, Text};
-use super::layout::{lay_out, Block, ScaleKey};
+use super::layout::{lay_out_smallest, Block, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
 use crate::forces::friction::{
     incline_twin, journal_twin, rolling_twin, screw_twin, wedge_twin, CaseKind, Drawing,
     DrawingKind, Motion, Solved,
 };
-use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
+use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang, Quantity};
 use crate::scene::Key;
 use crate::study::Session;
@@ -20,6 +21,9 @@ use crate::study::Session;
 const TEXT_MM: f64 = 3.5;
 /// Text height of the table, mm.
 const TABLE_MM: f64 = 2.5;
+/// The formats tried, smallest first: the cases, their closed forms and the table on one
+/// sheet (on A2 the last drawing and the table spilled onto a second, nearly empty one).
+const SIZES: [SheetSize; 2] = [SheetSize::A2, SheetSize::A1];
 
 /// What a drawing shows, as its caption says: the case's kind (and the sense of its motion),
 /// or the construction drawn.
@@ -262,14 +266,10 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         size_mm: TEXT_MM,
     });
     blocks.push(Block::Table(table(&solved, lang)));
-    let sheet = Sheet {
-        size: SheetSize::A2,
-        landscape: true,
-    };
     let sheet_title = FrictionText::Title.get(lang);
     // The drawings have a scale each (their captions): the sheet has none.
     let none = crate::scale::Scale::new(1e-3, Quantity::Length).ok_or(BuildError::NoScale(1e-3))?;
     let mut title = super::title_block(scene, sheet_title, none, lang);
     title.scale = String::new();
-    lay_out(sheet, blocks, "friction", &title, lang)
+    lay_out_smallest(&SIZES, blocks, "friction", &title, lang)
 }
