@@ -152,6 +152,17 @@ pub struct Scale {
 /// The textbook mantissas of a round scale: 1, 2, 2.5, 4, 5 × 10ⁿ.
 const ROUND_MANTISSAS: [f64; 6] = [1.0, 2.0, 2.5, 4.0, 5.0, 10.0];
 
+/// The exact scale `physical / preferred_mm` as its decade and its mantissa in [1, 10);
+/// `None` unless finite and > 0.
+fn decade_and_mantissa(physical: f64, preferred_mm: f64) -> Option<(f64, f64)> {
+    let exact = physical.abs() / preferred_mm;
+    if !(exact.is_finite() && exact > 0.0) {
+        return None;
+    }
+    let decade = 10f64.powf(exact.log10().floor());
+    Some((decade, exact / decade))
+}
+
 impl Scale {
     /// A scale of `value` SI units per mm; `None` unless finite and > 0.
     pub fn new(value: f64, quantity: Quantity) -> Option<Self> {
@@ -162,17 +173,24 @@ impl Scale {
     /// longer than, `preferred_mm`: the smallest value of the 1–2–2.5–4–5 series that is ≥
     /// `physical / preferred_mm`. `None` for non-positive or non-finite inputs.
     pub fn round_for(physical: f64, preferred_mm: f64, quantity: Quantity) -> Option<Self> {
-        let exact = physical.abs() / preferred_mm;
-        if !(exact.is_finite() && exact > 0.0) {
-            return None;
-        }
-        let decade = 10f64.powf(exact.log10().floor());
-        let m = exact / decade;
+        let (decade, m) = decade_and_mantissa(physical, preferred_mm)?;
         // 1e-9 relative slack so that an exact round value stays itself.
         let mant = ROUND_MANTISSAS
             .iter()
             .copied()
             .find(|&r| r >= m * (1.0 - 1e-9))?;
+        Self::new(round_sig(mant * decade), quantity)
+    }
+
+    /// The largest round scale (1, 2, 2,5, 4, 5 × 10ⁿ) that draws `physical` at least
+    /// `preferred_mm` long: [`Scale::round_for`] rounds the other way (at most that long).
+    pub fn round_at_least(physical: f64, preferred_mm: f64, quantity: Quantity) -> Option<Self> {
+        let (decade, m) = decade_and_mantissa(physical, preferred_mm)?;
+        let mant = ROUND_MANTISSAS
+            .iter()
+            .rev()
+            .copied()
+            .find(|&r| r <= m * (1.0 + 1e-9))?;
         Self::new(round_sig(mant * decade), quantity)
     }
 
@@ -293,6 +311,24 @@ pub fn format_fixed(x: f64, decimals: usize, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn round_at_least_draws_at_least_the_preferred_length() {
+        let v = |x: f64| Scale::round_at_least(x, 70.0, Quantity::Velocity).map(|s| s.value());
+        // The four-bar's crank pin, 0,8 m/s: 0,01 draws 80 mm (round_for's 0,02 draws 40).
+        assert_eq!(v(0.8), Some(0.01));
+        assert_eq!(v(2.199), Some(0.025));
+        // A round value stays itself.
+        assert_eq!(v(70.0 * 0.05), Some(0.05));
+        for x in [0.8, 1.885, 6.3, 123.4] {
+            let s = v(x).expect("scale");
+            assert!(x / s >= 70.0 * (1.0 - 1e-9), "{x}: {s}");
+            // The next round value coarser would draw it shorter than 70 mm.
+            let up = Scale::round_for(x, 70.0, Quantity::Velocity).expect("round");
+            assert!(up.value() >= s);
+        }
+        assert!(Scale::round_at_least(0.0, 70.0, Quantity::Velocity).is_none());
+    }
 
     #[test]
     fn round_scale_follows_the_textbook_series() {

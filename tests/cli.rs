@@ -49,10 +49,10 @@ fn render_writes_svg_and_png_and_is_byte_identical() {
             "shaper/forces-2.svg",
             "shaper/forces.png",
             "shaper/forces.svg",
+            "shaper/kinematics-2.png",
+            "shaper/kinematics-2.svg",
             "shaper/kinematics.png",
-            "shaper/kinematics.svg",
-            "shaper/positions.png",
-            "shaper/positions.svg"
+            "shaper/kinematics.svg"
         ]
     );
     for f in &fa {
@@ -64,7 +64,7 @@ fn render_writes_svg_and_png_and_is_byte_identical() {
             f.display()
         );
     }
-    let svg = std::fs::read_to_string(a.join("shaper/positions.svg")).unwrap();
+    let svg = std::fs::read_to_string(a.join("shaper/kinematics.svg")).unwrap();
     assert!(
         svg.contains("width=\"841mm\"") && svg.contains("height=\"594mm\""),
         "A1 sheet in real millimetres"
@@ -273,7 +273,7 @@ fn check_checks_every_file_and_exits_with_the_worst_status() {
 fn a_destination_that_is_a_directory_leaves_nothing_behind() {
     let dir = scratch("dest-dir");
     let out = dir.join("out");
-    std::fs::create_dir_all(out.join("shaper/positions.svg")).unwrap();
+    std::fs::create_dir_all(out.join("shaper/kinematics.svg")).unwrap();
     let o = tmm(&[
         "render",
         "constructions/shaper.toml",
@@ -286,7 +286,7 @@ fn a_destination_that_is_a_directory_leaves_nothing_behind() {
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(
-        err.contains("positions.svg") && err.contains("is a directory"),
+        err.contains("kinematics.svg") && err.contains("is a directory"),
         "{err}"
     );
     assert_eq!(files_under(&out), Vec::<PathBuf>::new());
@@ -294,7 +294,7 @@ fn a_destination_that_is_a_directory_leaves_nothing_behind() {
         .unwrap()
         .map(|e| e.unwrap().file_name())
         .collect();
-    assert_eq!(names, [std::ffi::OsString::from("positions.svg")]);
+    assert_eq!(names, [std::ffi::OsString::from("kinematics.svg")]);
 
     // A file where a folder is needed: nothing is created, not even the folders.
     let blocked = dir.join("blocked");

@@ -42,12 +42,12 @@ fn render_writes_grayscale_pngs_with_the_drawings_pixels_and_their_resolution() 
         "100",
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let png = std::fs::read(out.join("four-bar/positions.png")).unwrap();
+    let png = std::fs::read(out.join("four-bar/kinematics.png")).unwrap();
     // 100 dpi = 3937 px per metre.
     assert_eq!(header(&png), (0, Some(3937)));
     let got = Pixmap::decode_png(&png).expect("decode");
     assert_eq!((got.width(), got.height()), (3311, 2339), "A1 at 100 dpi");
-    let svg = std::fs::read_to_string(out.join("four-bar/positions.svg")).unwrap();
+    let svg = std::fs::read_to_string(out.join("four-bar/kinematics.svg")).unwrap();
     let want = plain_render(&svg, got.width(), got.height());
     assert!(
         got.data() == want.data(),
@@ -202,12 +202,12 @@ fn render_removes_the_stale_temporaries_of_a_killed_run_and_nothing_else() {
     let dead = child.id();
     child.wait().unwrap();
     let stale = [
-        format!(".positions.svg.tmp-{dead}"),
-        format!(".positions.png.tmp-{dead}"),
+        format!(".kinematics.svg.tmp-{dead}"),
+        format!(".kinematics.png.tmp-{dead}"),
     ];
     let kept = [
         format!(".notes.txt.tmp-{dead}"),
-        format!("positions.svg.tmp-{dead}"),
+        format!("kinematics.svg.tmp-{dead}"),
         "mine.svg".to_string(),
     ];
     for n in stale.iter().chain(&kept) {
@@ -228,6 +228,6 @@ fn render_removes_the_stale_temporaries_of_a_killed_run_and_nothing_else() {
     for n in &kept {
         assert!(folder.join(n).exists(), "{n} is not tmm's");
     }
-    assert!(folder.join("positions.svg").is_file());
+    assert!(folder.join("kinematics.svg").is_file());
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -193,19 +193,22 @@ pub fn round_scale(value: f64, preferred_mm: f64, quantity: Quantity) -> Result<
 }
 
 /// μ_v and μ_a: as the scene gives them, or the textbook's choice that draws the crank pin's
-/// velocity and acceleration about [`PLAN_MM`] long.
+/// velocity and acceleration at least [`PLAN_MM`] long (the round scale next below).
 pub fn plan_scales(
     crank: &crate::linkage::Crank,
     spec: &KinematicsSpec,
 ) -> Result<(Scale, Scale), KinError> {
     let (r, w) = (crank.length, crank.omega);
+    let at_least = |value: f64, quantity: Quantity| {
+        Scale::round_at_least(value, PLAN_MM, quantity).ok_or(KinError::NoScale { quantity, value })
+    };
     let v = match spec.scale_v {
         Some(s) => s,
-        None => round_scale(w * r, PLAN_MM, Quantity::Velocity)?,
+        None => at_least(w * r, Quantity::Velocity)?,
     };
     let a = match spec.scale_a {
         Some(s) => s,
-        None => round_scale(w * w * r, PLAN_MM, Quantity::Acceleration)?,
+        None => at_least(w * w * r, Quantity::Acceleration)?,
     };
     Ok((v, a))
 }

@@ -49,7 +49,7 @@ use thiserror::Error;
 
 pub use fonts::font_database;
 pub use ink::{view_ink, Cell};
-pub use items::CAPTION_HEIGHT_MM;
+pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM};
 pub use labels::{layout, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR};
 pub use pdf::{to_pdf, PdfError};
 pub use raster::{png_size, to_png, to_png_dpi, to_png_dpi_all, MAX_PIXELS};
@@ -185,6 +185,13 @@ impl View {
             caption,
             caption_drop: 0.0,
         })
+    }
+
+    /// The joint labels the plate will write for `figure` (the names of points that coincide,
+    /// joined as `p ≡ b₃ ≡ d`): each with its point in the figure's coordinates (mm, y up),
+    /// its text, and the width and height it takes on the sheet, mm.
+    pub fn joint_labels(figure: &Figure) -> Vec<(DVec2, String, DVec2)> {
+        labels::joint_labels(figure)
     }
 
     /// How far the figure's symbols (pairs and their ground, arrowheads, line widths) draw

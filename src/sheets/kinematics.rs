@@ -5,7 +5,7 @@
 //! field), so the sheet draws the very plans the report reads.
 
 use super::captions::{symbols, unit_in, Text};
-use super::layout::{keyed, lay_out, split_table, table, Block};
+use super::layout::{keyed, lay_out_in_rows, split_table, table, Block};
 use super::BuildError;
 use crate::check::Method;
 use crate::geom::DVec2;
@@ -19,23 +19,44 @@ use crate::study::{Kinematics, Session};
 /// columns are narrowed to 12 mm before any is left out.
 const TABLES_WIDTH_MM: f64 = 800.0;
 
-/// Build the sheets: as many A1 sheets as the views need at the sheet's scales.
-pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
+/// The series of the velocity plans and of the acceleration plans: each read in rows.
+const VELOCITY: Option<u8> = Some(0);
+const ACCELERATION: Option<u8> = Some(1);
+
+/// Blocks in the order a sheet reads them, each with its series ([`lay_out_in_rows`]).
+type Run = Vec<(Block, Option<u8>)>;
+
+/// Build the sheets: as many A1 sheets as the views need at the sheet's scales. With
+/// `structure` (the scene wants the plan of positions too) the sheet is the textbook's sheet 1:
+/// the structural scheme and analysis, the plan of positions with its extreme positions, the
+/// plans and the diagrams; what one A1 does not hold goes on a second in reading order
+/// (structure, positions and velocity plans; then acceleration plans, diagrams, tables).
+pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
     let sheet = Sheet::default();
     let sc = session.kin_scales()?;
     let a = session.kinematics(&sc)?;
-    let mut blocks = Vec::new();
     let caption = format!(
         "{}, {}",
         Text::PlanOfPositions.get(lang),
         sc.l.caption(lang)
     );
-    blocks.push(Block::view(
+    let plan = Block::view(
         a.plan.figure.clone(),
         caption,
         keyed(Key::MechanismScaleL, sc.l),
-    ));
+    );
+    // The structural scheme before the plan, the structural analysis after the plans.
+    let (head, analysis): (Run, Run) = if structure {
+        let (scheme, lines) = super::positions::structure(session, lang)?;
+        let text = Block::Text {
+            lines,
+            size_mm: 3.5,
+        };
+        (vec![(scheme, None), (plan, None)], vec![(text, None)])
+    } else {
+        (vec![(plan, None)], Vec::new())
+    };
     let mut lines = vec![
         super::drafting_line(session.drafting(), lang),
         format!(
@@ -46,6 +67,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             sc.a.caption(lang)
         ),
     ];
+    let mut diagrams: Run = Vec::new();
     if let Some(d) = &a.diagrams {
         let w = a.w1.abs();
         let dec = |x: f64| format_sig(x, 4, lang);
@@ -55,14 +77,17 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             .first_figure
             .clone()
             .joined(d.second_figure.translated(d.second_at));
-        blocks.push(Block::view(
-            stack,
-            format!(
-                "d²S/dφ²: H_{{2}} = {} {}",
-                dec(d.second.pole_mm),
-                Text::Millimetre.get(lang)
+        diagrams.push((
+            Block::view(
+                stack,
+                format!(
+                    "d²S/dφ²: H_{{2}} = {} {}",
+                    dec(d.second.pole_mm),
+                    Text::Millimetre.get(lang)
+                ),
+                keyed(Key::KinematicsScaleS, d.scales.y),
             ),
-            keyed(Key::KinematicsScaleS, d.scales.y),
+            None,
         ));
         lines.push(format!(
             "{} {}: μ_{{S}} = {} {}, μ_{{φ}} = {} {}, H_{{1}} = {} {}; μ_{{v}} = μ_{{S}}·ω_{{1}}/(H_{{1}}·μ_{{φ}}) = {} {}, μ_{{a}} = {} {}",
@@ -80,28 +105,37 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             Quantity::Acceleration.unit(lang)
         ));
     }
+    let mut velocity: Run = Vec::new();
     for (pos, vp) in a.plan.positions.iter().zip(a.velocity_plans()) {
         let c = format!("{} {}", Text::Pos.get(lang), pos.label);
-        blocks.push(match vp {
-            Some(vp) => plan_view(vp, c, Key::KinematicsScaleV, sc.v, lang),
-            None => Block::Text {
-                lines: vec![
-                    c,
-                    Text::NoPlan.get(lang).into(),
-                    Text::TogglePosition.get(lang).into(),
-                ],
-                size_mm: 3.5,
+        velocity.push((
+            match vp {
+                Some(vp) => plan_view(vp, c, Key::KinematicsScaleV, sc.v, lang),
+                None => Block::Text {
+                    lines: vec![
+                        c,
+                        Text::NoPlan.get(lang).into(),
+                        Text::TogglePosition.get(lang).into(),
+                    ],
+                    size_mm: 3.5,
+                },
             },
-        });
+            VELOCITY,
+        ));
     }
+    let mut acceleration: Run = Vec::new();
     for (k, ap) in &a.acceleration {
         let label = &a.plan.positions[*k].label;
         let c = format!("{} {label}", Text::AccelerationPlanAt.get(lang));
-        blocks.push(plan_view(&ap.0, c, Key::KinematicsScaleA, sc.a, lang));
+        acceleration.push((
+            plan_view(&ap.0, c, Key::KinematicsScaleA, sc.a, lang),
+            ACCELERATION,
+        ));
     }
+    let mut rest: Run = Vec::new();
     if let Some(r) = &a.rocker {
         let c = format!("ω_{{{l}}}(φ), dω_{{{l}}}/dφ", l = r.link);
-        blocks.push(Block::view(r.figure.clone(), c, None));
+        rest.push((Block::view(r.figure.clone(), c, None), None));
         lines.push(format!(
             "ω_{{{}}}(φ): {}, {}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ",
             r.link,
@@ -113,7 +147,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }
     if let Some((name, h)) = &a.hodograph {
         let c = format!("{} v_{{{}}}", Text::Hodograph.get(lang), name);
-        blocks.push(Block::view(h.as_ref().clone(), c, None));
+        rest.push((Block::view(h.as_ref().clone(), c, None), None));
         lines.push(format!(
             "{} v_{{{}}}: {}",
             Text::Hodograph.get(lang),
@@ -137,19 +171,114 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             lines.push(line);
         }
     }
-    blocks.push(Block::Text {
-        lines,
-        size_mm: 3.5,
-    });
+    rest.push((
+        Block::Text {
+            lines,
+            size_mm: 3.5,
+        },
+        None,
+    ));
     // The analytic table has a row per position: continued on further sheets when long.
-    blocks.extend(
+    rest.extend(
         tables(&a, lang)
             .into_iter()
             .flat_map(|t| split_table(&sheet, t, lang))
-            .map(Block::Table),
+            .map(|t| (Block::Table(t), None)),
     );
     let title = super::title_block(scene, Text::KinematicAnalysis.get(lang), sc.l, lang);
-    lay_out(sheet, blocks, "kinematics", &title, lang)
+    let lay = |run: Run| {
+        let (blocks, series): (Vec<Block>, Vec<Option<u8>>) = run.into_iter().unzip();
+        lay_out_in_rows(sheet, blocks, &series, "kinematics", &title, lang)
+    };
+    // One sheet when it holds everything: the plan of positions, the diagrams beside it, the
+    // plans, the rest (the structural scheme first, or where it finds room).
+    let (scheme, plan) = match &head[..] {
+        [scheme, plan] => (vec![scheme.clone()], vec![plan.clone()]),
+        _ => (Vec::new(), head.clone()),
+    };
+    let orders = [
+        [
+            &scheme,
+            &plan,
+            &diagrams,
+            &velocity,
+            &acceleration,
+            &analysis,
+            &rest,
+        ],
+        [
+            &plan,
+            &diagrams,
+            &velocity,
+            &acceleration,
+            &scheme,
+            &analysis,
+            &rest,
+        ],
+        [
+            &plan,
+            &scheme,
+            &diagrams,
+            &velocity,
+            &acceleration,
+            &analysis,
+            &rest,
+        ],
+    ];
+    for order in orders {
+        let one: Run = order.into_iter().flatten().cloned().collect();
+        let plates = lay(one)?;
+        if plates.len() == 1 {
+            return Ok(plates);
+        }
+    }
+    // Else the textbook's order over two sheets: what the positions give (the scheme, the
+    // plan, the velocity plans), then what is derived (acceleration plans, diagrams, tables);
+    // the acceleration plans and the structural analysis go on the first when it holds them
+    // and the two are then filled more evenly. Never a table alone on a sheet: the second
+    // always holds the diagrams or the acceleration plans.
+    let groups = [head, velocity, acceleration, analysis, diagrams, rest];
+    let area = |run: &[(Block, Option<u8>)]| -> f64 {
+        run.iter()
+            .map(|(b, _)| {
+                let s = b.size();
+                s.x * s.y
+            })
+            .sum()
+    };
+    let split = |k: usize| -> (Run, Run) {
+        let first = groups[..k].iter().flatten().cloned().collect();
+        let second = groups[k..].iter().flatten().cloned().collect();
+        (first, second)
+    };
+    let (mut first, mut second) = split(2);
+    for k in 3..=4 {
+        let (f, s) = split(k);
+        let drawn = s.iter().any(|b| matches!(b.0, Block::Views { .. }));
+        let even = area(&f).min(area(&s)) > area(&first).min(area(&second));
+        if drawn && even && lay(f.clone())?.len() == 1 {
+            (first, second) = (f, s);
+        }
+    }
+    let mut plates = lay(first)?;
+    plates.extend(lay(second)?);
+    Ok(renamed(plates))
+}
+
+/// The sheets named `kinematics`, `kinematics-2`, … in order.
+fn renamed(plates: Vec<Plate>) -> Vec<Plate> {
+    plates
+        .into_iter()
+        .enumerate()
+        .map(|(k, p)| Plate {
+            name: if k == 0 {
+                "kinematics".into()
+            } else {
+                format!("kinematics-{}", k + 1)
+            },
+            ..p
+        })
+        .collect()
 }
 
 /// A velocity or acceleration plan's view: at the common μ (`common`, the scene key `key`),
@@ -157,10 +286,10 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
 fn plan_view(plan: &KinPlan, caption: String, key: Key, common: Scale, lang: Lang) -> Block {
     let own = plan.figure.scale;
     if own == common {
-        Block::view(plan.figure.clone(), caption, keyed(key, common))
+        Block::view(plan.figure.clone(), caption, keyed(key, common)).with_label_room()
     } else {
         let caption = format!("{caption}, {}", own.caption(lang));
-        Block::view(plan.figure.clone(), caption, None)
+        Block::view(plan.figure.clone(), caption, None).with_label_room()
     }
 }
 

@@ -10,7 +10,7 @@ use crate::construct::Figure;
 use crate::geom::DVec2;
 use crate::plate::{
     text, Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM,
-    CAPTION_HEIGHT_MM,
+    CAPTION_HEIGHT_MM, LABEL_GAP_MM,
 };
 use crate::scale::{format_fixed, Lang, Scale};
 use crate::scene::Key;
@@ -44,6 +44,9 @@ pub(super) struct Part {
     /// How far under the figure's bounds the caption's band starts, mm
     /// ([`View::caption_drop`]).
     pub caption_drop: f64,
+    /// The box its long joint labels take beside their points, in its coordinates (mm, y up):
+    /// kept free for them ([`Block::with_label_room`]).
+    pub label_room: Option<(DVec2, DVec2)>,
 }
 
 impl Part {
@@ -54,8 +57,38 @@ impl Part {
             at,
             caption,
             caption_drop: 0.0,
+            label_room: None,
         }
     }
+}
+
+/// A joint label longer than this is given room beside its point in its block, mm (a shorter
+/// one fits the block's label margin or the gap between blocks).
+const LONG_LABEL_MM: f64 = 12.0;
+
+/// The box of `figure`'s long joint labels, each on the side of its point where it reaches
+/// least past the figure's bounds (figure mm, y up); `None` when it has none.
+fn label_room(figure: &Figure) -> Option<(DVec2, DVec2)> {
+    let (lo, hi) = figure.bounds()?;
+    let gap = 2.0 * LABEL_GAP_MM;
+    View::joint_labels(figure)
+        .into_iter()
+        .filter(|(_, _, size)| size.x > LONG_LABEL_MM)
+        .map(|(at, _, size)| {
+            let right = (at.x + gap + size.x - hi.x).max(0.0);
+            let left = (lo.x - (at.x - gap - size.x)).max(0.0);
+            let x0 = if right <= left {
+                at.x + gap
+            } else {
+                at.x - gap - size.x
+            };
+            let half = size.y * 0.5 + LABEL_GAP_MM;
+            (
+                DVec2::new(x0, at.y - half),
+                DVec2::new(x0 + size.x, at.y + half),
+            )
+        })
+        .reduce(|(a, b), (c, d)| (a.min(c), b.max(d)))
 }
 
 /// One thing on a sheet.
@@ -89,22 +122,34 @@ impl Block {
         }
     }
 
-    /// The block with each caption under what its figure's symbols draw below its points
-    /// (the ground of a fixed pivot), not over it.
-    pub fn clear_of_symbols(self) -> Self {
+    /// The block with each part changed by `f`.
+    fn map_parts(self, f: impl Fn(Part) -> Part) -> Self {
         match self {
             Block::Views { parts, scale } => Block::Views {
-                parts: parts
-                    .into_iter()
-                    .map(|p| Part {
-                        caption_drop: View::symbols_below(&p.figure),
-                        ..p
-                    })
-                    .collect(),
+                parts: parts.into_iter().map(f).collect(),
                 scale,
             },
             other => other,
         }
+    }
+
+    /// The block with each caption under what its figure's symbols draw below its points
+    /// (the ground of a fixed pivot), not over it.
+    pub fn clear_of_symbols(self) -> Self {
+        self.map_parts(|p| Part {
+            caption_drop: View::symbols_below(&p.figure),
+            ..p
+        })
+    }
+
+    /// The block with room beside each long joint label's point for the label (the pole of a
+    /// plan where every point coincides: `p ≡ b₃ ≡ d ≡ s₃ ≡ d₅ ≡ e ≡ s₅`), so that it is not
+    /// written over the next block.
+    pub fn with_label_room(self) -> Self {
+        self.map_parts(|p| Part {
+            label_room: label_room(&p.figure),
+            ..p
+        })
     }
 
     /// The block with every subscript of its labels, caption, lines and cells in `lang`
@@ -157,9 +202,12 @@ impl Block {
                 } else {
                     0.0
                 };
-                p.figure
-                    .bounds()
-                    .map(|(lo, hi)| (lo + p.at - DVec2::new(0.0, band), hi + p.at))
+                p.figure.bounds().map(|(lo, hi)| {
+                    let (lo, hi) = p
+                        .label_room
+                        .map_or((lo, hi), |(a, b)| (lo.min(a), hi.max(b)));
+                    (lo + p.at - DVec2::new(0.0, band), hi + p.at)
+                })
             })
             .fold(
                 (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
@@ -184,7 +232,7 @@ impl Block {
 
     /// The size the block takes on the sheet, mm: its drawing with room for labels and the
     /// caption bands.
-    fn size(&self) -> DVec2 {
+    pub(super) fn size(&self) -> DVec2 {
         match self {
             Block::Views { parts, .. } => {
                 let (lo, hi) = Self::bounds(parts);
@@ -441,9 +489,22 @@ pub(super) fn lay_out(
     title: &TitleBlock,
     lang: Lang,
 ) -> Result<Vec<Plate>, BuildError> {
+    lay_out_in_rows(sheet, blocks, &[], name, title, lang)
+}
+
+/// [`lay_out`], the block `k` of the series `series[k]` (if any) placed in that series' rows
+/// ([`super::pack`]): the plans read 1 … 12 left to right, row under row.
+pub(super) fn lay_out_in_rows(
+    sheet: Sheet,
+    blocks: Vec<Block>,
+    series: &[Option<u8>],
+    name: &str,
+    title: &TitleBlock,
+    lang: Lang,
+) -> Result<Vec<Plate>, BuildError> {
     let blocks: Vec<Block> = blocks.into_iter().map(|b| b.localised(lang)).collect();
     let sizes: Vec<DVec2> = blocks.iter().map(Block::size).collect();
-    let placed = pack(&sheet, &sizes).map_err(|k| too_large(&sheet, &blocks, &sizes, k))?;
+    let placed = pack(&sheet, &sizes, series).map_err(|k| too_large(&sheet, &blocks, &sizes, k))?;
     let count = placed.iter().map(|p| p.0 + 1).max().unwrap_or(1);
     let mut pages: Vec<Parts> = (0..count).map(|_| Parts::default()).collect();
     for (block, (page, rect)) in blocks.into_iter().zip(placed) {

@@ -124,9 +124,11 @@ fn drafting_line(d: crate::construct::Drafting, lang: Lang) -> String {
 /// Build one plate of the session's scene, in `lang`: the sheets it takes (usually one; a
 /// plate whose views need more room continues on `name-2`, …).
 pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<Plate>, BuildError> {
+    let wants = |k: PlateKind| session.scene().plates.contains(&k);
     match kind {
         PlateKind::Positions => positions::build(session, lang),
-        PlateKind::Kinematics => kinematics::build(session, lang),
+        // With the plan of positions wanted too, the kinematic sheet holds its structure.
+        PlateKind::Kinematics => kinematics::build(session, lang, wants(PlateKind::Positions)),
         PlateKind::Forces => forces::build(session, lang),
         PlateKind::Balancing => balancing::build(session, lang),
         PlateKind::Friction => friction::build(session, lang),
@@ -136,14 +138,27 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
     }
 }
 
-/// Every plate the scene asks for, in order, its sheets numbered 1 … n across the scene (the
-/// title block's "sheet k of n"). A failure names the plate it happened in.
+/// The plates drawn for `scene`, in order: those it asks for, except the plan of positions
+/// when it asks for the kinematic analysis too — the kinematic sheet then holds the plan with
+/// its structure, as the textbook's sheet 1 does.
+pub fn drawn(scene: &Scene) -> Vec<PlateKind> {
+    let folded = scene.plates.contains(&PlateKind::Kinematics);
+    scene
+        .plates
+        .iter()
+        .copied()
+        .filter(|&k| !(folded && k == PlateKind::Positions))
+        .collect()
+}
+
+/// Every plate the scene asks for ([`drawn`]), in order, its sheets numbered 1 … n across
+/// the scene (the title block's "sheet k of n"). A failure names the plate it happened in.
 pub fn build_all(
     session: &Session<'_>,
     lang: Lang,
 ) -> Result<Vec<(PlateKind, Plate)>, (PlateKind, BuildError)> {
     let mut all = Vec::new();
-    for &kind in &session.scene().plates {
+    for kind in drawn(session.scene()) {
         let plates = build(session, kind, lang).map_err(|e| (kind, e))?;
         all.extend(plates.into_iter().map(|p| (kind, p)));
     }

@@ -3,6 +3,9 @@
 //! title block and the designation box, a gap from everything placed); an item that fits
 //! nowhere there starts a further sheet. Items keep the order they are given in, so a sheet
 //! reads like the textbook's: the plan of positions first, then the plans, diagrams, tables.
+//! The items of a series (the velocity plans 1 … 12 with 8′ in its place) go in rows: each
+//! to the right of the one before, on its row, or at the start of a new row under it — never
+//! back into a gap left of an earlier one, so they read in their order.
 
 use crate::construct::fit::overflow;
 use crate::geom::DVec2;
@@ -24,6 +27,26 @@ struct Page {
     /// The top-left corner of the last item placed: the next one goes after it in reading
     /// order (lower, or level with it and to its right), so the plans follow their numbers.
     last: Option<DVec2>,
+    /// The row of the series being placed: its series, its last item, and the lowest edge of
+    /// its items on the row.
+    row: Option<Row>,
+}
+
+/// The current row of a series of items on a page.
+#[derive(Debug, Clone, Copy)]
+struct Row {
+    series: u8,
+    last: Rect,
+    bottom: f64,
+}
+
+impl Row {
+    /// A corner where the next item of the row's series may go: to the right of the last
+    /// one on its row, or under the whole row.
+    fn allows(&self, c: DVec2) -> bool {
+        let same_row = (c.y - self.last.min.y).abs() <= EPS_MM && c.x >= self.last.max.x - EPS_MM;
+        same_row || c.y >= self.bottom + GAP_MM - EPS_MM
+    }
 }
 
 /// Slack of the comparisons, mm.
@@ -40,6 +63,7 @@ impl Page {
             taken: vec![sheet.title_block(), boxed],
             first: DVec2::new(area.min.x, boxed.max.y + GAP_MM),
             last: None,
+            row: None,
         }
     }
 
@@ -51,9 +75,10 @@ impl Page {
                 .all(|t| !r.inflate(GAP_MM - EPS_MM).intersects(t))
     }
 
-    /// The highest, then leftmost, free place of `size` after the last item; candidates are
-    /// the area's corner and the corners just past each taken rectangle.
-    fn place(&mut self, size: DVec2) -> Option<Rect> {
+    /// The highest, then leftmost, free place of `size` after the last item (and in the rows
+    /// of its `series`, if any); candidates are the area's corner and the corners just past
+    /// each taken rectangle.
+    fn place(&mut self, size: DVec2, series: Option<u8>) -> Option<Rect> {
         let mut xs = vec![self.area.min.x];
         let mut ys = vec![self.area.min.y];
         for t in &self.taken {
@@ -62,9 +87,11 @@ impl Page {
         }
         xs.sort_by(f64::total_cmp);
         ys.sort_by(f64::total_cmp);
+        let row = self.row.filter(|r| Some(r.series) == series);
         let after = |c: &DVec2| {
             self.last
                 .is_none_or(|l| c.y > l.y + EPS_MM || (c.y >= l.y - EPS_MM && c.x > l.x + EPS_MM))
+                && row.is_none_or(|r| r.allows(*c))
         };
         let grid = ys
             .iter()
@@ -77,6 +104,18 @@ impl Page {
             .find(|r| self.free(r))?;
         self.taken.push(r);
         self.last = Some(r.min);
+        self.row = series.map(|series| match row {
+            Some(w) if (r.min.y - w.last.min.y).abs() <= EPS_MM => Row {
+                series,
+                last: r,
+                bottom: w.bottom.max(r.max.y),
+            },
+            _ => Row {
+                series,
+                last: r,
+                bottom: r.max.y,
+            },
+        });
         Some(r)
     }
 }
@@ -84,19 +123,25 @@ impl Page {
 /// Where each item went: its sheet (0-based) and its rectangle (sheet mm, y down).
 pub(super) type Placement = (usize, Rect);
 
-/// Lay out items of the given sizes (mm) on sheets of format `sheet`, in order. `Err(k)`
-/// names the first item that does not fit even an empty sheet.
-pub(super) fn pack(sheet: &Sheet, sizes: &[DVec2]) -> Result<Vec<Placement>, usize> {
+/// Lay out items of the given sizes (mm) on sheets of format `sheet`, in order; the item `k`
+/// of the series `series[k]` (if any; a missing entry is none) in that series' rows.
+/// `Err(k)` names the first item that does not fit even an empty sheet.
+pub(super) fn pack(
+    sheet: &Sheet,
+    sizes: &[DVec2],
+    series: &[Option<u8>],
+) -> Result<Vec<Placement>, usize> {
     let mut pages = vec![Page::new(sheet)];
     let mut out = Vec::with_capacity(sizes.len());
     for (k, &size) in sizes.iter().enumerate() {
+        let of = series.get(k).copied().flatten();
         let last = pages.len() - 1;
-        if let Some(r) = pages[last].place(size) {
+        if let Some(r) = pages[last].place(size, of) {
             out.push((last, r));
             continue;
         }
         let mut page = Page::new(sheet);
-        let r = page.place(size).ok_or(k)?;
+        let r = page.place(size, of).ok_or(k)?;
         pages.push(page);
         out.push((last + 1, r));
     }
@@ -141,7 +186,7 @@ mod tests {
     fn items_fill_rows_and_spill_onto_a_further_sheet() {
         let s = a1();
         let sizes = vec![DVec2::new(300.0, 200.0); 7];
-        let placed = pack(&s, &sizes).expect("fits");
+        let placed = pack(&s, &sizes, &[]).expect("fits");
         // Two rows of two on the first A1 sheet (the title block takes the bottom right).
         assert_eq!(placed.iter().filter(|p| p.0 == 0).count(), 4);
         assert!(placed.iter().any(|p| p.0 == 1));
@@ -161,10 +206,46 @@ mod tests {
     }
 
     #[test]
+    fn a_series_reads_in_rows_and_never_goes_back_into_a_gap() {
+        let s = a1();
+        // A tall item, then plans of varying height: without rows a short plan would drop
+        // into the gap under a shorter one before it, left of the plans already placed.
+        let mut sizes = vec![DVec2::new(300.0, 400.0)];
+        let heights = [
+            60.0, 120.0, 50.0, 90.0, 40.0, 110.0, 70.0, 60.0, 100.0, 50.0,
+        ];
+        sizes.extend(heights.iter().map(|&h| DVec2::new(110.0, h)));
+        let series: Vec<Option<u8>> = std::iter::once(None)
+            .chain(heights.iter().map(|_| Some(0)))
+            .collect();
+        let placed = pack(&s, &sizes, &series).expect("fits");
+        let plans: Vec<Rect> = placed[1..].iter().map(|p| p.1).collect();
+        let mut rows = 0;
+        for w in plans.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            let right = (b.min.y - a.min.y).abs() < 1e-9 && b.min.x > a.max.x;
+            // A new row starts under every plan of the row before.
+            let row_bottom = plans
+                .iter()
+                .filter(|p| (p.min.y - a.min.y).abs() < 1e-9)
+                .map(|p| p.max.y)
+                .fold(f64::MIN, f64::max);
+            assert!(right || b.min.y >= row_bottom, "{a:?} then {b:?}");
+            rows += usize::from(!right);
+        }
+        assert!(rows >= 1, "{plans:?}");
+        // Without the series the same items fill a gap out of order.
+        let free = pack(&s, &sizes, &[]).expect("fits");
+        assert!(free[1..]
+            .windows(2)
+            .any(|w| w[1].1.min.y > w[0].1.min.y && w[1].1.min.y < w[0].1.max.y));
+    }
+
+    #[test]
     fn nothing_goes_over_the_title_block() {
         let s = a1();
         let tb = s.title_block();
-        let placed = pack(&s, &vec![DVec2::new(100.0, 100.0); 30]).expect("fits");
+        let placed = pack(&s, &vec![DVec2::new(100.0, 100.0); 30], &[]).expect("fits");
         for (page, r) in placed {
             let clear = r.max.x <= tb.min.x || r.max.y <= tb.min.y;
             assert!(clear, "page {page}: {r:?}");
@@ -175,12 +256,12 @@ mod tests {
     fn an_item_larger_than_a_sheet_is_named() {
         let s = a1();
         let sizes = [DVec2::new(100.0, 100.0), DVec2::new(900.0, 100.0)];
-        assert_eq!(pack(&s, &sizes), Err(1));
+        assert_eq!(pack(&s, &sizes, &[]), Err(1));
         assert!(sheet_overflow(&s, DVec2::new(900.0, 100.0)) > 1.0);
         assert!(sheet_overflow(&s, DVec2::new(600.0, 500.0)) <= 1.0);
         // Every room really is free on an empty sheet.
         for r in rooms(&s) {
-            assert!(pack(&s, &[r - DVec2::splat(1e-6)]).is_ok(), "{r:?}");
+            assert!(pack(&s, &[r - DVec2::splat(1e-6)], &[]).is_ok(), "{r:?}");
         }
     }
 }

@@ -21,28 +21,19 @@ const SCHEME_MM: f64 = 170.0;
 /// Build the sheet: the structural scheme, the plan of positions and the analysis text.
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
-    let m = session.mechanism("the plan of positions")?;
     // μ_l as the session decided it for every drawing of the plan (and the report).
     let scale = session.scale_l()?;
     let plan = session.positions(scale)?;
-    let st = Structure::analyse(m);
     let plan_caption = format!(
         "{}, {}",
         Text::PlanOfMechanism.get(lang),
         scale.caption(lang)
     );
-    let extent = plan
-        .figure
-        .bounds()
-        .map_or(1.0, |(lo, hi)| (hi - lo).max_element())
-        * scale.value();
-    let mut lines = structure_lines(&st, m, lang);
-    lines.push(String::new());
-    lines.extend(extreme_lines(&plan, lang));
+    let (scheme, mut lines) = structure(session, lang)?;
     lines.push(String::new());
     lines.push(super::drafting_line(session.drafting(), lang));
     let blocks = vec![
-        scheme_block(&plan, &st, extent, lang)?,
+        scheme,
         Block::view(
             plan.figure.clone(),
             plan_caption,
@@ -58,6 +49,31 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     ];
     let title = super::title_block(scene, Text::PlanOfPositions.get(lang), scale, lang);
     lay_out(Sheet::default(), blocks, "positions", &title, lang)
+}
+
+/// What the plan of positions' sheet adds to the plan: the structural scheme (its Assur
+/// groups apart) and the lines of the structural analysis, the extreme positions, θ, H and K.
+/// The kinematic sheet takes them when the scene wants both (the textbook's sheet 1).
+pub(super) fn structure(
+    session: &Session<'_>,
+    lang: Lang,
+) -> Result<(Block, Vec<String>), BuildError> {
+    let m = session.mechanism("the plan of positions")?;
+    let scale = session.scale_l()?;
+    let plan = session.positions(scale)?;
+    let st = Structure::analyse(m);
+    let extent = plan
+        .figure
+        .bounds()
+        .map_or(1.0, |(lo, hi)| (hi - lo).max_element())
+        * scale.value();
+    let mut lines = structure_lines(&st, m, lang);
+    let extremes = extreme_lines(&plan, lang);
+    if !extremes.is_empty() {
+        lines.push(String::new());
+        lines.extend(extremes);
+    }
+    Ok((scheme_block(&plan, &st, extent, lang)?, lines))
 }
 
 /// The structural scheme at the finest round scale whose drawing fits its room.

@@ -1,9 +1,10 @@
 //! The one decider of the kinematic study's scales. Each is decided once per session, before
 //! anything is constructed, and every sheet and the report ask for it: the scene's as given;
 //! else the textbook's choice — μ_l draws the crank about `CRANK_MM` (50 mm), μ_v and μ_a the crank
-//! pin's vector about 70 mm — raised along the round series until its drawing, predicted from
-//! the analytic twin, fits its field (the plan of positions `POSITIONS_ROOM`, which an empty
-//! A1 sheet also holds; every velocity or acceleration plan `VECTOR_PLAN_ROOM`).
+//! pin's vector at least 70 mm — raised along the round series until its drawing, predicted
+//! from the analytic twin, fits its field (the plan of positions `POSITIONS_ROOM`, which an
+//! empty A1 sheet also holds; every velocity or acceleration plan `VECTOR_PLAN_ROOM`, and the
+//! plans of a kind together `PLANS_AREA_MM2`).
 
 use super::*;
 use crate::construct::fit::{fit_scale, overflow, Extent};
@@ -96,6 +97,32 @@ fn typical_plans(
         .collect()
 }
 
+/// The room all the velocity (or acceleration) plans of a sheet share, mm²: about a third of
+/// an A1 sheet's drawing field, so that the plan of positions, the diagrams and the tables
+/// keep theirs.
+const PLANS_AREA_MM2: f64 = 150_000.0;
+
+/// The labelled area of the plans of `kind` at the positions `ks` at `mu`, summed, mm².
+fn plans_area(poses: &PlanPoses, ks: &[usize], w1: f64, kind: PlanKind, mu: Scale) -> f64 {
+    ks.iter()
+        .map(|&k| {
+            let s = largest_plan(poses, &[k], w1, kind)(mu);
+            s.x * s.y
+        })
+        .sum()
+}
+
+/// `start` raised along the round series until the largest of the plans `ks` fits
+/// `VECTOR_PLAN_ROOM` and all of them `PLANS_AREA_MM2`.
+fn plans_fit(poses: &PlanPoses, ks: &[usize], w1: f64, kind: PlanKind, start: Scale) -> Scale {
+    let largest = largest_plan(poses, ks, w1, kind);
+    fit_scale(start, |mu| {
+        let area = plans_area(poses, ks, w1, kind, mu) / PLANS_AREA_MM2;
+        overflow(largest(mu), VECTOR_PLAN_ROOM).max(area.sqrt())
+    })
+    .unwrap_or(start)
+}
+
 /// `start` raised along the round series until `size(μ)` fits `room`.
 fn raised_to_fit(start: Scale, room: DVec2, size: impl Fn(Scale) -> DVec2) -> Scale {
     fit_scale(start, |mu| overflow(size(mu), room)).unwrap_or(start)
@@ -153,20 +180,12 @@ impl<'s> Session<'s> {
             if spec.scale_v.is_none() {
                 let all: Vec<usize> = (0..poses.positions.len()).collect();
                 let ks = typical_plans(&poses, &all, w1, PlanKind::Velocity, v);
-                v = raised_to_fit(
-                    v,
-                    VECTOR_PLAN_ROOM,
-                    largest_plan(&poses, &ks, w1, PlanKind::Velocity),
-                );
+                v = plans_fit(&poses, &ks, w1, PlanKind::Velocity, v);
             }
             if spec.scale_a.is_none() {
                 let all = self.acceleration_positions()?;
                 let ks = typical_plans(&poses, &all, w1, PlanKind::Acceleration, a);
-                a = raised_to_fit(
-                    a,
-                    VECTOR_PLAN_ROOM,
-                    largest_plan(&poses, &ks, w1, PlanKind::Acceleration),
-                );
+                a = plans_fit(&poses, &ks, w1, PlanKind::Acceleration, a);
             }
             Ok(KinScales {
                 l: self.scale_l()?,

@@ -269,6 +269,26 @@ fn requests(k: usize, view: &View) -> (Vec<Request>, Vec<PlacedLabel>) {
     (join_coincident(single), fixed)
 }
 
+/// The joint labels of `figure` (see [`View::joint_labels`]).
+pub(super) fn joint_labels(figure: &crate::construct::Figure) -> Vec<(DVec2, String, DVec2)> {
+    let view = View {
+        figure: figure.clone(),
+        origin: DVec2::ZERO,
+        caption: None,
+        caption_drop: 0.0,
+    };
+    requests(0, &view)
+        .0
+        .into_iter()
+        .filter(|r| r.names.len() > 1)
+        .map(|r| {
+            let text = r.text();
+            let e = measure(&text, LABEL_HEIGHT_MM);
+            (DVec2::new(r.anchor.x, -r.anchor.y), text, e.max - e.min)
+        })
+        .collect()
+}
+
 /// Join the requests whose points coincide (transitively; names with names, position
 /// numbers with position numbers), keeping the figure's order with the pole first; a name
 /// repeated at one point is written once.
