@@ -95,6 +95,30 @@ impl Recorder {
         }
     }
 
+    /// Record a dimension of the piece `from`–`to` drawn `offset` mm to its left (negative:
+    /// right), its text `text` at the middle of the dimension line, written away from the piece.
+    pub fn dimension(
+        &mut self,
+        note: impl Into<String>,
+        (from, to, offset): (DVec2, DVec2, f64),
+        text: impl Into<String>,
+    ) -> StepId {
+        let id = self.draw(
+            note,
+            Item::Dimension { from, to, offset },
+            Role::Dimension,
+            &[],
+        );
+        let n = (to - from).normalize_or_zero().perp();
+        self.label(
+            id,
+            text,
+            (from + to) * 0.5 + n * offset,
+            n * offset.signum(),
+        );
+        id
+    }
+
     /// Record a labelled point.
     pub fn point(
         &mut self,

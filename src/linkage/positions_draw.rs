@@ -418,17 +418,7 @@ fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition],
                 } else {
                     (pb, pa)
                 };
-                let id = rec.draw(
-                    "stroke of the slider",
-                    Item::Dimension {
-                        from,
-                        to,
-                        offset: off,
-                    },
-                    Role::Dimension,
-                    &[],
-                );
-                rec.label(id, "H", (from + to) * 0.5 + n * off, n * off.signum());
+                rec.dimension("stroke of the slider", (from, to, off), "H");
             }
         }
     }

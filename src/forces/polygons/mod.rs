@@ -726,26 +726,13 @@ fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) {
         } else {
             (point, joint)
         };
-        let off = ARM_DIMENSION_MM * side;
-        let id = sch.rec.draw(
+        sch.rec.dimension(
             format!(
                 "arm of {} on the guide",
                 reaction_name(r.pair.from, r.pair.to)
             ),
-            Item::Dimension {
-                from,
-                to,
-                offset: off,
-            },
-            Role::Dimension,
-            &[],
-        );
-        let name = format!("h_{{{}-{}}}", r.pair.from, r.pair.to);
-        sch.rec.label(
-            id,
-            name,
-            (from + to) * 0.5 + u.perp() * off,
-            u.perp() * side,
+            (from, to, ARM_DIMENSION_MM * side),
+            format!("h_{{{}-{}}}", r.pair.from, r.pair.to),
         );
     }
 }
