@@ -38,11 +38,12 @@ fn every_item_and_role_renders_to_png() {
         tables: vec![],
         ..demo
     };
-    let (w, h, frame_only) = dark_pixels(&to_png(&to_svg(&bare), 1000).unwrap());
-    assert_eq!((w, h), (1000, 706));
+    // 2000 px across an A1 sheet: 2.4 px per mm, so a 0.5 mm main line prints dark.
+    let (w, h, frame_only) = dark_pixels(&to_png(&to_svg(&bare), 2000).unwrap());
+    assert_eq!((w, h), (2000, 1413));
     bare.views = views;
     let svg = to_svg(&bare);
-    let png = to_png(&svg, 1000).unwrap();
+    let png = to_png(&svg, 2000).unwrap();
     let (_, _, with_views) = dark_pixels(&png);
     assert!(
         with_views > frame_only + 1000,
@@ -51,7 +52,7 @@ fn every_item_and_role_renders_to_png() {
     );
     assert_eq!(
         png,
-        to_png(&svg, 1000).unwrap(),
+        to_png(&svg, 2000).unwrap(),
         "PNG bytes differ between runs"
     );
 }

@@ -14,12 +14,15 @@ pub struct Pen {
 }
 
 impl Pen {
-    /// Solid main line (сплошная толстая основная), s = 0.7 mm.
+    /// Solid main line (сплошная толстая основная), s = 0.5 mm: ГОСТ 2.303 lets s run from
+    /// 0.5 to 1.4 mm by the drawing's size and complexity, and these drawings are dense (a
+    /// plan's six or seven vectors meet at its pole; a slider's block carries four loads), so
+    /// the thinnest keeps them from printing black.
     pub const MAIN: Pen = Pen {
-        width: 0.7,
+        width: 0.5,
         dash: &[],
     };
-    /// Solid thin line (сплошная тонкая), s/3 ≈ 0.25 mm.
+    /// Solid thin line (сплошная тонкая), s/2 = 0.25 mm.
     pub const THIN: Pen = Pen {
         width: 0.25,
         dash: &[],
