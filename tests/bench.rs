@@ -77,7 +77,8 @@ fn quick_bench_writes_three_files_and_errors_fall_with_n() {
         "analytic shaper",
         "construction four-bar",
         "construction shaper",
-        "plate shaper/positions",
+        "plate shaper/kinematics",
+        "plate shaper/forces",
     ] {
         assert!(
             throughput.iter().any(|t| t["name"] == name),

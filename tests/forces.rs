@@ -747,20 +747,40 @@ fn the_guide_reaction_stands_at_its_arm_and_the_balancing_force_at_the_end_of_it
             dim.2.label.as_ref().map(|l| l.text.as_str()),
             Some("h_{0-5}")
         );
-        let (_, from, _) = vectors(&g.scheme)
-            .into_iter()
-            .find(|(n, ..)| *n == "load R_{0-5}")
-            .expect("R₀₋₅ drawn");
         let Item::Guide { segment, .. } = guide.item else {
             unreachable!()
         };
         let along = (segment.to - segment.from).normalize();
-        let off = (from - segment.from).perp_dot(along).abs();
-        assert!(off < 1e-9, "R₀₋₅ starts {off} mm off its guide");
+        // Signed distance from the guide's line, mm.
+        let off = |p: DVec2| (p - segment.from).perp_dot(along);
+        let (_, from, to) = vectors(&g.scheme)
+            .into_iter()
+            .find(|(n, ..)| *n == "load R_{0-5}")
+            .expect("R₀₋₅ drawn");
+        let on = if off(from).abs() < 1e-9 { from } else { to };
         assert!(
-            [dim.0, dim.1].iter().any(|p| p.distance(from) < 1e-9),
+            off(on).abs() < 1e-9,
+            "R₀₋₅ stands {} mm off its guide",
+            off(on)
+        );
+        assert!(
+            [dim.0, dim.1].iter().any(|p| p.distance(on) < 1e-9),
             "R₀₋₅ is not at the end of its arm"
         );
+        // The loads along the slide's axis (F_и5, F_пс) keep off the guide's line: the
+        // block rides against it.
+        for (name, a, b) in vectors(&g.scheme) {
+            if name == "load R_{0-5}" {
+                continue;
+            }
+            assert!(
+                off(a) * off(b) > 0.0 && off(a).abs().min(off(b).abs()) >= 2.0,
+                "{}: {name} lies on the guide ({} mm, {} mm)",
+                f.label,
+                off(a),
+                off(b)
+            );
+        }
         let lever = &f.analysis.lever.figure;
         let (_, at, to) = vectors(lever)
             .into_iter()

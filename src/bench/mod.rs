@@ -59,10 +59,11 @@ pub use table::{Bench, BenchRow, Throughput};
 /// The resolutions of the chord-method sweep (positions per crank turn).
 pub const CHORD_RESOLUTIONS: [usize; 6] = [12, 24, 48, 96, 192, 360];
 
-/// The plates timed, by scene stem: one line per plate.
+/// The plates timed, by scene stem: one line per plate, each as `tmm render` writes it
+/// (the shaper's plan of positions is on its kinematics sheet).
 const PLATES: &[(&str, PlateKind)] = &[
-    ("shaper", PlateKind::Positions),
     ("shaper", PlateKind::Kinematics),
+    ("shaper", PlateKind::Forces),
 ];
 
 /// Largest extent of a chord-method figure (the diagram and its pole), mm: the size its

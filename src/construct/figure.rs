@@ -94,6 +94,12 @@ pub enum Item {
     Text(DVec2),
 }
 
+impl Item {
+    /// A slider block's half length along its slide and half width across it, mm: the block
+    /// is drawn 10 × 6 mm whatever the scale.
+    pub const SLIDER_HALF_MM: (f64, f64) = (5.0, 3.0);
+}
+
 /// A textbook label. `text` uses the label markup: `_x` or `_{xy}` for a subscript,
 /// `^x` or `^{xy}` for a superscript (`b_3`, `S_{3}`, `a^{k}`, `8′`).
 #[derive(Debug, Clone, PartialEq)]

@@ -46,11 +46,11 @@ fn turn(v: DVec2) -> DVec2 {
 
 /// The lever's turned plan is drawn about this long (its longest ray), mm: a lever is read
 /// by its arms, so it is drawn larger than the plan it turns.
-const LEVER_PLAN_MM: f64 = 150.0;
+const LEVER_PLAN_MM: f64 = 200.0;
 
 /// The lever with everything on it (a balancing force's arm included) is drawn at most this
 /// large, mm.
-const LEVER_MAX_MM: f64 = 200.0;
+const LEVER_MAX_MM: f64 = 300.0;
 
 /// Build the lever from the velocity plan `vp` of the position `setup` and its loads, at
 /// the round μ_v that draws its turned plan about [`LEVER_PLAN_MM`] long and the whole lever

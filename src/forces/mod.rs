@@ -48,7 +48,7 @@ use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
 /// Preferred length of the largest force on a polygon, mm.
-pub const POLYGON_MM: f64 = 150.0;
+pub const POLYGON_MM: f64 = 200.0;
 
 /// What every analysis of a position gives, without and with friction in the pairs: the
 /// loads, the polygons, the lever and the twin.

@@ -317,8 +317,9 @@ fn slider(map: Map, pen: Pen, at: DVec2, angle: f64) -> Option<Mark> {
 
 /// The corners of a slider block 10 × 6 mm centred at `at`, long side along `angle`.
 fn slider_corners(at: DVec2, angle: f64) -> [DVec2; 4] {
-    let u = DVec2::from_angle(angle) * 5.0;
-    let v = u.perp() * 0.6;
+    let (half_length, half_width) = Item::SLIDER_HALF_MM;
+    let u = DVec2::from_angle(angle);
+    let (v, u) = (u.perp() * half_width, u * half_length);
     [at - u - v, at + u - v, at + u + v, at - u + v]
 }
 

@@ -157,16 +157,19 @@ impl<'a> Scheme<'a> {
             return;
         };
         let x = self.at(l);
+        self.arrow(&l.name, (x, x + e * ARROW_MM), x + e * ARROW_MM);
+    }
+
+    /// A force's arrow `from → to` labelled `name` at `end`, the end away from its point.
+    fn arrow(&mut self, name: &str, (from, to): (DVec2, DVec2), end: DVec2) {
         let id = self.rec.draw(
-            format!("load {}", l.name),
-            Item::Vector {
-                from: x,
-                to: x + e * ARROW_MM,
-            },
+            format!("load {name}"),
+            Item::Vector { from, to },
             Role::Result,
             &[],
         );
-        self.rec.label(id, &l.name, x + e * ARROW_MM, e);
+        let away = if end == from { from - to } else { to - from };
+        self.rec.label(id, name, end, away.normalize_or_zero());
     }
 
     /// The moment of `l` about `c` (mm), N·m: the arm measured on the drawing.
@@ -682,30 +685,33 @@ const GUIDE_PAST_MM: f64 = 12.0;
 const ARM_DIMENSION_MM: f64 = 10.0;
 
 /// The frame's guide under a slider whose reaction's point lies `offset` (m) along it from
-/// the slider's joint: the guide drawn (hatched on the frame's side) from past the slider to
-/// past the point, and the arm dimensioned from the joint, labelled h₀₋ⱼ — the reaction
-/// stands on the guide at its arm, as the moment equation placed it.
-fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) {
+/// the slider's joint: the guide drawn (hatched on the frame's side) against the block's
+/// side, from past the slider to past the point — so that the loads along the slide's axis
+/// stay clear of it — and the arm dimensioned from the joint, labelled h₀₋ⱼ: the reaction
+/// stands on the guide at its arm, as the moment equation placed it. Returns the reaction's
+/// point on the guide line, mm.
+fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) -> Option<DVec2> {
     let PairKind::Prismatic {
         reference,
         dir_link,
     } = r.pair.kind
     else {
-        return;
+        return None;
     };
     let b = sch.board.setup.built;
     let prog = sch.board.setup.prog;
     let mu = sch.board.setup.mu_l.value();
     let u = DVec2::from_angle(b.angle[dir_link]);
-    let joint = b.p[reference];
-    let point = joint + u * (offset / mu);
-    // Hatched on the side away from the mechanism, as on the plan of positions.
-    let centre = b.p[prog.centre];
-    let (hatch, side) = if u.perp_dot(centre - joint) > 0.0 {
-        (crate::geom::Side::Right, -1.0)
+    // Hatched on the side away from the mechanism, as on the plan of positions; the guide's
+    // line on the block's side towards the hatching.
+    let axis = b.p[reference];
+    let (hatch, side, towards) = if u.perp_dot(b.p[prog.centre] - axis) > 0.0 {
+        (crate::geom::Side::Right, -1.0, -u.perp())
     } else {
-        (crate::geom::Side::Left, 1.0)
+        (crate::geom::Side::Left, 1.0, u.perp())
     };
+    let joint = axis + towards * Item::SLIDER_HALF_MM.1;
+    let point = joint + u * (offset / mu);
     let (lo, hi) = (offset.min(0.0) / mu, offset.max(0.0) / mu);
     sch.rec.draw(
         format!("guide of link {} under its reaction", r.pair.to),
@@ -735,13 +741,27 @@ fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) {
             format!("h_{{{}-{}}}", r.pair.from, r.pair.to),
         );
     }
+    Some(point)
 }
 
 /// Draw a reaction found on the group's drawing, at its point (the frame's reaction on a
 /// slider on its guide, with its arm).
 fn show_reaction(sch: &mut Scheme<'_>, r: &Reaction) {
     if let (0, Some(offset)) = (r.pair.from, r.offset) {
-        show_guide_arm(sch, r, offset);
+        let on_guide = show_guide_arm(sch, r, offset);
+        if let (Some(g), Some(e)) = (on_guide, r.force.try_normalize()) {
+            // The frame's reaction stands on the guide's line: from it when it pushes the
+            // block off the guide, onto it when it pulls the block to the guide.
+            let name = reaction_name(r.pair.from, r.pair.to);
+            let (at, shift) = point_of(r, sch.board.setup.built);
+            let on_axis = sch.board.setup.built.p[at] + shift / sch.board.setup.mu_l.value();
+            if e.dot(g - on_axis) < 0.0 {
+                sch.arrow(&name, (g, g + e * ARROW_MM), g + e * ARROW_MM);
+            } else {
+                sch.arrow(&name, (g - e * ARROW_MM, g), g - e * ARROW_MM);
+            }
+            return;
+        }
     }
     let (at, shift) = point_of(r, sch.board.setup.built);
     let l = Load::force(

@@ -117,8 +117,16 @@ fn russian(symbol: Symbol, subject: &str) -> String {
         return format!("{}^{{треб}}", russian(symbol, base));
     }
     let letter = letter(symbol);
-    // A reaction names two links, written apart as the textbooks do: R_{1-2}.
-    let sep = if symbol == Symbol::Reaction { "-" } else { "" };
+    // A reaction names two links, written apart as the textbooks do: R_{1-2}; so does the
+    // arm of a reaction on a guide, as its drawing dimensions it: h_{0-5}.
+    let two_links = subject
+        .split_once('_')
+        .is_some_and(|(a, b)| [a, b].iter().all(|x| x.parse::<u32>().is_ok()));
+    let sep = if symbol == Symbol::Reaction || (symbol == Symbol::Length && two_links) {
+        "-"
+    } else {
+        ""
+    };
     let subject = match (symbol, subject) {
         (_, "") if symbol == Symbol::ProfileDeviation => "проф".to_string(),
         (_, "") => return letter.to_string(),
@@ -204,6 +212,9 @@ mod tests {
         assert_eq!(ru(Symbol::AngularAcceleration, "3"), "ε_{3}");
         assert_eq!(ru(Symbol::Reaction, "1_2"), "R_{1-2}");
         assert_eq!(ru(Symbol::Reaction, "1_2_f"), "R_{1-2}^{тр}");
+        // The arm of the guide's reaction as its drawing dimensions it (issue 19).
+        assert_eq!(ru(Symbol::Length, "0_5"), "h_{0-5}");
+        assert_eq!(ru(Symbol::Length, "bal"), "h_{у}");
         assert_eq!(ru(Symbol::Force, "in3"), "F_{и3}");
         assert_eq!(ru(Symbol::Moment, "bal"), "M_{у}");
         assert_eq!(ru(Symbol::Work, "res"), "A_{с}");
