@@ -11,7 +11,7 @@ use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
 /// Preferred peak ordinates of the rocker's ω diagram and its derivative, mm.
-const ROCKER_MM: f64 = 22.0;
+const ROCKER_MM: f64 = 30.0;
 /// Abscissa of one crank turn on the rocker's ω diagram, mm.
 const ROCKER_TURN_MM: f64 = 120.0;
 
