@@ -1,5 +1,5 @@
-//! The room of the sheets of the plates that are not a linkage's (cam, gears, balancing,
-//! friction, dynamics): no sheet is left nearly empty (a table or a line of text alone), and
+//! The room of the sheets of the plates that are not the force analysis's (kinematics, cam,
+//! gears, balancing, friction, dynamics): no sheet is left nearly empty (a table or a line of text alone), and
 //! a sheet less than 30 % inked is listed here with the reason it stays so (issue 19). The
 //! ink share is measured as `plate-legibility` measures it: the 20 mm cells of the field
 //! (inside the frame, the title block left out) that hold any line of a view.
@@ -37,6 +37,14 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("rotor-static/balancing", 0.05, "one disc and one polygon on the smallest format, A3"),
     ("rotor-dynamic/balancing", 0.15, "the rotor and two polygons on the smallest format that holds them"),
     ("shaper/dynamics", 0.25, "the scene fixes μ_M and μ_φ (the seed's)"),
+    ("shaper/kinematics", 0.21, "the scene fixes μ_l, μ_v, μ_a (the seed's): the plan of positions, twelve plans and two acceleration plans leave the bottom half free, where the diagrams' stack (fixed μ_S, μ_φ, H₁, H₂: 480 mm tall) does not fit"),
+    ("shaper/kinematics-2", 0.12, "the diagrams at the seed's fixed scales beside the two tables; text and tables hold no view line"),
+    ("six-bar/kinematics", 0.25, "the scene fixes μ_v and μ_a (the seed's); the plan of positions at μ_l raised to fit its field"),
+    ("six-bar/kinematics-2", 0.10, "the acceleration plan at the seed's μ_a, the hodograph and the diagrams beside the full analytic and error tables, which hold no view line"),
+    ("four-bar/kinematics", 0.22, "one sheet: the plans at 80 mm and the tables; a larger μ would spill onto a second, thinner sheet"),
+    ("tangent/kinematics", 0.18, "the plan of positions is 640 mm tall (the slider runs to ±746 mm near φ = 90°) and 25 mm wide; the plans at 80 mm"),
+    ("v-engine/kinematics", 0.17, "the plans at their μ_v, μ_a are fitted to the common field; a larger μ_l or μ_v would change the force sheets' groups and lever"),
+    ("v-engine/kinematics-2", 0.13, "two acceleration plans, the diagrams and the tables (which hold no view line)"),
     ("v-engine/dynamics", 0.20, "the scene fixes μ_φ"),
 ];
 
@@ -75,7 +83,7 @@ fn ink_share(p: &Plate) -> f64 {
     inked as f64 / cells.max(1) as f64
 }
 
-/// Every sheet of the scenes' plates that are not a linkage's, with its scene's stem.
+/// Every sheet of the scenes' plates but the force sheets, with its scene's stem.
 fn sheets() -> Vec<(String, Plate)> {
     let mut out = Vec::new();
     for entry in std::fs::read_dir(root().join("constructions")).expect("constructions/") {
@@ -88,14 +96,14 @@ fn sheets() -> Vec<(String, Plate)> {
             tmm::render::plates(&s, Lang::Ru, Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
         out.extend(
             all.into_iter()
-                .filter(|(kind, _)| !matches!(kind.stem(), "positions" | "kinematics" | "forces"))
+                .filter(|(kind, _)| !matches!(kind.stem(), "positions" | "forces"))
                 .map(|(_, p)| (s.stem.clone(), p)),
         );
     }
     out
 }
 
-/// Every sheet of the scenes' plates that are not a linkage's: (scene/sheet, ink share).
+/// Every sheet of the scenes' plates but the force sheets: (scene/sheet, ink share).
 fn shares() -> Vec<(String, f64)> {
     let mut out: Vec<(String, f64)> = sheets()
         .iter()

@@ -62,6 +62,13 @@ pub fn target(
     Ok(Some((k, DVec2::from_angle(dir))))
 }
 
+/// How far below the lowest level its rays reach the pole distance's dimension line is
+/// drawn, mm: the rays fan out from the pole over the whole span of the derivative, so the
+/// dimension H and its text (over the line) stand clear of them under the fan.
+pub(super) const POLE_DIMENSION_MM: f64 = 7.0;
+/// The pole's label: up and left of the pole, away from the rays (which run right).
+pub(super) const POLE_LABEL: DVec2 = DVec2::new(-0.6, 1.0);
+
 /// The chart's scales: μ_S and μ_φ as given, or chosen for the displacement's span.
 fn chart_scales(spec: &KinematicsSpec, s: &[f64]) -> Result<Scales, KinError> {
     let span = super::peak(s.iter().copied());
@@ -130,7 +137,8 @@ pub fn diagrams(
     let (d1_lo, d1_hi) = ordinates(&src, scales, h1, mu1, ctx).map_err(|e| fail("dS/dφ", e))?;
     let mut rec1 = Recorder::in_context("dS/dφ", mu1, ctx);
     let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
-        .pole_named("P_1", "H_1");
+        .pole_named("P_1", "H_1")
+        .pole_marks(d1_lo - POLE_DIMENSION_MM, POLE_LABEL);
     let first = construction
         .differentiate(&mut rec1, &src, scales, h1, &lay1)
         .map_err(|e| fail("dS/dφ", e))?;
@@ -152,12 +160,13 @@ pub fn diagrams(
     };
     let (h2, mu2) = pole_and_scale(spec.pole_h2, &d1, scales2, DIAGRAM_MM, Quantity::Length)
         .map_err(|e| fail("d²S/dφ²", e))?;
-    let (_, d2_hi) = ordinates(&d1, scales2, h2, mu2, ctx).map_err(|e| fail("d²S/dφ²", e))?;
+    let (d2_lo, d2_hi) = ordinates(&d1, scales2, h2, mu2, ctx).map_err(|e| fail("d²S/dφ²", e))?;
     let mut rec2 = Recorder::in_context("d²S/dφ²", mu2, ctx);
     let lay2 = Layout::new(DVec2::ZERO, DVec2::new(0.0, d1_lo - DIAGRAM_GAP - d2_hi))
         .with_source(false)
         .named("φ", "dS/dφ", "d²S/dφ²")
-        .pole_named("P_2", "H_2");
+        .pole_named("P_2", "H_2")
+        .pole_marks(d2_lo - POLE_DIMENSION_MM, POLE_LABEL);
     let second = construction
         .differentiate(&mut rec2, &d1, scales2, h2, &lay2)
         .map_err(|e| fail("d²S/dφ²", e))?;

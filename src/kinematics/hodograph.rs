@@ -8,7 +8,7 @@ use crate::linkage::{KinPlan, PositionPlan};
 use crate::scale::{Quantity, Scale};
 
 /// Length of the longest hodograph vector, mm.
-const HODOGRAPH_MM: f64 = 45.0;
+const HODOGRAPH_MM: f64 = 60.0;
 
 /// The point whose hodograph is drawn: the scene's, or the first point of a link.
 pub fn hodograph_point(
@@ -37,7 +37,7 @@ pub fn hodograph_point(
 
 /// The hodograph of point `k` from the velocity plans (each at its own μ_v, the common one
 /// `scale_v`; `None` where a plan is refused), at its own μ: the longest vector drawn about
-/// 45 mm.
+/// 60 mm.
 pub fn hodograph(
     plan: &PositionPlan,
     k: usize,

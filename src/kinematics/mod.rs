@@ -32,7 +32,7 @@ use std::f64::consts::TAU;
 use thiserror::Error;
 
 /// Preferred drawn length of the crank pin's velocity and acceleration, mm (textbook 70–100).
-pub const PLAN_MM: f64 = 70.0;
+pub const PLAN_MM: f64 = 80.0;
 /// Preferred height of a diagram, mm.
 const DIAGRAM_MM: f64 = 35.0;
 /// Gap between stacked diagrams, mm.

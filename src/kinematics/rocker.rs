@@ -11,7 +11,7 @@ use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
 /// Preferred peak ordinates of the rocker's ω diagram and its derivative, mm.
-const ROCKER_MM: f64 = 22.0;
+const ROCKER_MM: f64 = 30.0;
 /// Abscissa of one crank turn on the rocker's ω diagram, mm.
 const ROCKER_TURN_MM: f64 = 120.0;
 
@@ -78,10 +78,15 @@ pub fn rocker_diagram(
     let (h, mu) =
         pole_and_scale(None, &src, scales, ROCKER_MM, Quantity::AngularVelocity).map_err(fail)?;
     let (w_lo, _) = extent(omega.iter(), scale);
+    let (d_lo, _) = super::diagrams::ordinates(&src, scales, h, mu, ctx).map_err(fail)?;
     let mut rec = Recorder::in_context("ω", mu, ctx);
     let lay = Layout::new(DVec2::ZERO, DVec2::new(0.0, w_lo - DIAGRAM_GAP - ROCKER_MM))
         .named("φ", &format!("ω_{{{link}}}"), &format!("dω_{{{link}}}/dφ"))
-        .pole_named("P_{ω}", "H_{ω}");
+        .pole_named("P_{ω}", "H_{ω}")
+        .pole_marks(
+            d_lo - super::diagrams::POLE_DIMENSION_MM,
+            super::diagrams::POLE_LABEL,
+        );
     let derivative = calculus::Method::Chords
         .differentiate(&mut rec, &src, scales, h, &lay)
         .map_err(fail)?;

@@ -310,10 +310,11 @@ pub(super) fn draw_plan(
     // Guides of the frame, spanning the travel of their joints.
     let all: Vec<&Built> = positions.iter().map(|p| &p.built).collect();
     draw_guides(rec, &frame_guides(prog, &all, GUIDE_MARGIN_MM));
-    // Every position: thin; position 1 and the extremes: thick.
+    // Every position thin, the extremes too (numbered, with the stroke or the swing
+    // between them); position 1, the one the letters name, thick (ГОСТ 2.303 main line).
     for (k, pos) in positions.iter().enumerate() {
         rec.set_group(k as u32 + 1);
-        let role = if k == 0 || pos.extreme {
+        let role = if k == 0 {
             Role::Given
         } else {
             Role::Construction

@@ -474,6 +474,31 @@ impl Program {
         0
     }
 
+    /// Whether point `k` is a further point of a link (`[[mechanism.point]]`: a centre of
+    /// mass, a point to chart) that no group attaches to: its velocity is read, nothing is
+    /// built on it, so its vector on a plan is a secondary one (drawn thin).
+    pub fn is_leaf_point(&self, k: usize) -> bool {
+        let is_point = self
+            .ops
+            .iter()
+            .any(|op| matches!(*op, Op::Point { idx, .. } if idx == k));
+        let dir_uses = |d: PDir| matches!(d, PDir::Along { from, to, .. } if from == k || to == k);
+        let guide_uses = |g: PGuide| g.through == k || dir_uses(g.dir);
+        let used = self.ops.iter().any(|op| match *op {
+            Op::Point { .. } => false,
+            Op::Dyad { dyad, .. } => match dyad {
+                PDyad::Rrr { a, b, .. } => a == k || b == k,
+                PDyad::Rrp { a, guide, .. } => a == k || guide_uses(guide),
+                PDyad::Rpr { a, c, .. } => a == k || c == k,
+                PDyad::Prp { gi, gj, .. } => guide_uses(gi) || guide_uses(gj),
+                PDyad::Rpp {
+                    a, slide, guide, ..
+                } => a == k || dir_uses(slide) || guide_uses(guide),
+            },
+        });
+        is_point && !used
+    }
+
     /// Whether point `k` is fixed or carried by the crank (its motion is known from ω₁ alone).
     pub fn on_frame_or_crank(&self, k: usize) -> bool {
         k < self.fixed.len() || self.links_of(k).contains(&(self.crank_link as usize))

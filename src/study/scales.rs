@@ -1,7 +1,7 @@
 //! The one decider of the kinematic study's scales. Each is decided once per session, before
 //! anything is constructed, and every sheet and the report ask for it: the scene's as given;
 //! else the textbook's choice — μ_l draws the crank about `CRANK_MM` (50 mm), μ_v and μ_a the crank
-//! pin's vector at least 70 mm — raised along the round series until its drawing, predicted
+//! pin's vector at least 80 mm — raised along the round series until its drawing, predicted
 //! from the analytic twin, fits its field (the plan of positions `POSITIONS_ROOM`, which an
 //! empty A1 sheet also holds; every velocity or acceleration plan `VECTOR_PLAN_ROOM`, and the
 //! plans of a kind together `PLANS_AREA_MM2`).
@@ -19,8 +19,8 @@ const CRANK_MM: f64 = 50.0;
 /// structural scheme on the positions sheet.
 const POSITIONS_ROOM: DVec2 = DVec2::new(530.0, 502.0);
 /// The field of a velocity or acceleration plan chosen the textbook way, mm: the crank pin's
-/// vector drawn 70 mm, coarser when another vector would make the plan larger.
-const VECTOR_PLAN_ROOM: DVec2 = DVec2::new(130.0, 130.0);
+/// vector drawn 80 mm, coarser when another vector would make the plan larger.
+const VECTOR_PLAN_ROOM: DVec2 = DVec2::new(150.0, 150.0);
 /// Allowance of a plan of positions: pivot symbols, slider blocks (its guides are marks).
 const PLAN_ALLOWANCE: f64 = 1.0;
 /// Allowance of a velocity or acceleration plan: direction lines drawn 6 mm past their
@@ -100,7 +100,7 @@ fn typical_plans(
 /// The room all the velocity (or acceleration) plans of a sheet share, mm²: about a third of
 /// an A1 sheet's drawing field, so that the plan of positions, the diagrams and the tables
 /// keep theirs.
-const PLANS_AREA_MM2: f64 = 150_000.0;
+const PLANS_AREA_MM2: f64 = 175_000.0;
 
 /// The labelled area of the plans of `kind` at the positions `ks` at `mu`, summed, mm².
 fn plans_area(poses: &PlanPoses, ks: &[usize], w1: f64, kind: PlanKind, mu: Scale) -> f64 {
@@ -167,7 +167,7 @@ impl<'s> Session<'s> {
     }
 
     /// The kinematic study's scales, decided once: μ_l ([`Session::scale_l`]); μ_v and μ_a the
-    /// scene's, else the crank pin's vector drawn about 70 mm and raised until the largest
+    /// scene's, else the crank pin's vector drawn about 80 mm and raised until the largest
     /// typical plan fits `VECTOR_PLAN_ROOM` (a plan far larger takes its own,
     /// [`Session::plan_scale`]); the displacement chart's as the scene gives them (the
     /// rest chosen for the chart by the study).

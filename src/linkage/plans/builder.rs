@@ -59,16 +59,24 @@ impl<'a> Builder<'a> {
     pub(super) fn image(&self, k: usize) -> DVec2 {
         self.img[k].unwrap_or(DVec2::ZERO)
     }
+    /// Draw the vector from the pole to the image of point `k` and label it: a main line,
+    /// or a thin one for a secondary point that no group is built on (a centre of mass,
+    /// [`Program::is_leaf_point`]), so that the vectors meeting at the pole stay apart.
     pub(super) fn set_image(&mut self, k: usize, at: DVec2, from: &[crate::construct::StepId]) {
         self.img[k] = Some(at);
         let label = image_label(self.name(k), self.kind);
+        let role = if self.prog.is_leaf_point(k) {
+            Role::Construction
+        } else {
+            Role::Result
+        };
         let id = self.rec.draw(
             format!("image {label}"),
             Item::Vector {
                 from: DVec2::ZERO,
                 to: at,
             },
-            Role::Result,
+            role,
             from,
         );
         let toward = at.normalize_or(DVec2::Y);

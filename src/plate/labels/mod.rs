@@ -4,7 +4,7 @@
 //! whose points coincide on the sheet (within [`COINCIDENT_MM`]) become one joint label written
 //! as the textbook does, `p ≡ b₃ ≡ d` (the figure's order, the pole first). Every label then
 //! tries positions around its point — its preferred direction first, then sixteen directions
-//! at three distances — and keeps the one that collides least with what is already placed
+//! at three distances, a joint label also from each corner of its point — and keeps the one that collides least with what is already placed
 //! (labels, captions, text blocks, tables) and with the lines and symbols of the drawing (the
 //! main lines weigh most), never leaving the frame nor entering the title block when it can
 //! help it. Crowded labels are placed first; the order is deterministic, so is the layout.

@@ -23,6 +23,10 @@ const OVER_POINT: f64 = 60.0;
 /// cheaper than one struck through by a construction line).
 const MAIN_LINE: f64 = 20.0;
 const THIN_LINE: f64 = 10.0;
+/// Cost of any line running into a joint label's box at all, over its cost per mm: a long
+/// label such as `d₅ ≡ e ≡ s₅` touched by the end of a direction line reads as crossed out
+/// however short the piece, and its corner places keep it clear (issue 19, item 6).
+const JOINT_STRUCK: f64 = 25.0;
 /// Cost of touching a main symbol (pair, block, arrowhead, dot), and per mm² of it covered;
 /// the same for a thin one.
 const MAIN_AREA: f64 = 40.0;
@@ -256,7 +260,13 @@ impl<'a> Placer<'a> {
         for o in &job.lines {
             cost += match &o.shape {
                 Shape::Line(a, b) => {
-                    clipped_length(*a, *b, &padded) * if o.main { MAIN_LINE } else { THIN_LINE }
+                    let inside = clipped_length(*a, *b, &padded);
+                    let struck = if inside > 0.0 && job.request.names.len() > 1 {
+                        JOINT_STRUCK
+                    } else {
+                        0.0
+                    };
+                    struck + inside * if o.main { MAIN_LINE } else { THIN_LINE }
                 }
                 Shape::Area(pts) => {
                     let per = if o.main { MAIN_AREA } else { THIN_AREA };
@@ -299,6 +309,21 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
                 .fold(f64::INFINITY, f64::min);
             let c = r.anchor + t * (gap + reach);
             out.push(Rect::new(c - half, c + half));
+        }
+        // A joint label (`d₅ ≡ e ≡ s₅`) is also written from a corner, as a draughtsman
+        // writes it: its box in one quadrant of the point, clear of both lines through it
+        // (the direction lines of a plan), the quadrant nearest the preferred side first.
+        if r.names.len() > 1 {
+            let d = gap;
+            let mut quadrants =
+                [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)].map(|(x, y)| DVec2::new(x, y));
+            let pref = DVec2::from_angle(start);
+            quadrants.sort_by(|a, b| b.dot(pref).total_cmp(&a.dot(pref)));
+            for q in quadrants {
+                let corner = r.anchor + q * d;
+                let far = corner + q * size;
+                out.push(Rect::new(corner.min(far), corner.max(far)));
+            }
         }
     }
     out

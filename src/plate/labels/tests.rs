@@ -79,3 +79,32 @@ fn candidates_keep_the_gap_and_start_with_the_preferred_side() {
         assert!(gap.length() >= LABEL_GAP_MM * 0.7 - 1e-9, "{b:?}");
     }
 }
+
+#[test]
+fn a_joint_label_is_also_tried_from_each_corner_of_its_point() {
+    let at = DVec2::new(50.0, 50.0);
+    let mut r = request("d_{5}", at, 0);
+    r.names.extend(["e".to_string(), "s_5".to_string()]);
+    let size = DVec2::new(25.0, 4.0);
+    let c = candidates(&r, size);
+    assert_eq!(c.len(), RINGS * (DIRECTIONS + 4));
+    // After the sixteen directions of the first ring: the four quadrants, the preferred
+    // side (+x) first; each box wholly in its quadrant, its corner the gap from the point
+    // on both axes, so that neither line through the point meets it.
+    let corners = &c[DIRECTIONS..DIRECTIONS + 4];
+    assert!(
+        corners[0].min.x > at.x && corners[1].min.x > at.x,
+        "{corners:?}"
+    );
+    for b in corners {
+        assert!((b.size() - size).length() < 1e-9);
+        let dx = (b.min.x - at.x).max(at.x - b.max.x);
+        let dy = (b.min.y - at.y).max(at.y - b.max.y);
+        assert!((dx - LABEL_GAP_MM).abs() < 1e-9 && (dy - LABEL_GAP_MM).abs() < 1e-9);
+    }
+    // A single name keeps the sixteen directions only.
+    assert_eq!(
+        candidates(&request("b", at, 0), size).len(),
+        RINGS * DIRECTIONS
+    );
+}

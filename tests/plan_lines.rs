@@ -1,0 +1,282 @@
+//! The line types of the kinematic sheet, as a draughtsman draws them (ГОСТ 2.303, issue 19):
+//! on a plan the vectors of the points nothing is built on (the centres of mass) thin, the
+//! structural ones main lines, so that the vectors meeting at the pole stay apart; on the plan
+//! of positions only position 1 (the one the letters name) in main lines; the pole distance
+//! H of a chord-method diagram dimensioned under the fan of rays, clear of them. And the labels
+//! of the plans stay off the lines of their own plan (item 6): a joint label such as
+//! `d₅ ≡ e ≡ s₅` is not crossed, nor touched at its start, by the direction lines drawn
+//! through its point — the label's box as the layout places it against the plan's segments
+//! and vectors.
+
+use std::path::PathBuf;
+use tmm::construct::{Drafting, Item, Role};
+use tmm::geom::DVec2;
+use tmm::plate::{layout, Plate, Rect, View, LABEL_GAP_MM};
+use tmm::scale::Lang;
+use tmm::scene::PlateKind;
+use tmm::study::Session;
+
+/// The linkage scenes with a kinematic sheet.
+const LINKAGES: &str = "shaper four-bar six-bar slider-crank tangent v-engine";
+
+/// Clearance a label keeps from every line of its plan, mm (the placer weighs lines within
+/// 0.5 mm of a box): a line ending closer than this runs into the text (`—d₅`). The shaper's
+/// acceleration plan at position 3 had the slide's direction line 3.5 mm into `d₅′ ≡ e′ ≡ s₅′`.
+const CLEAR_MM: f64 = 0.3;
+
+fn sheets_of(scene: &str) -> Vec<Plate> {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("constructions/{scene}.toml"));
+    let s = tmm::load(&path).unwrap_or_else(|e| panic!("{scene}: {e}"));
+    let kind = PlateKind::parse("kinematics").expect("a plate kind");
+    tmm::build(&Session::new(&s, Drafting::EXACT), kind, Lang::Ru)
+        .unwrap_or_else(|e| panic!("{scene}: {e}"))
+}
+
+fn views(scene: &str) -> Vec<View> {
+    sheets_of(scene).into_iter().flat_map(|p| p.views).collect()
+}
+
+fn captioned(views: &[View], start: &str) -> Vec<View> {
+    views
+        .iter()
+        .filter(|v| v.caption.as_deref().is_some_and(|c| c.starts_with(start)))
+        .cloned()
+        .collect()
+}
+
+/// The role of the vector `image <label>` of a plan.
+fn image_role(v: &View, label: &str) -> Option<Role> {
+    let note = format!("image {label}");
+    v.figure
+        .steps
+        .iter()
+        .find(|s| s.note == note && matches!(s.item, Item::Vector { .. }))
+        .map(|s| s.role)
+}
+
+#[test]
+fn centres_of_mass_are_thin_vectors_and_the_structural_points_main_ones() {
+    let all = views("six-bar");
+    let plans: Vec<View> = [captioned(&all, "Пол. "), captioned(&all, "План ускорений")].concat();
+    assert!(plans.len() >= 12, "{} plans", plans.len());
+    for v in &plans {
+        let caption = v.caption.clone().unwrap_or_default();
+        let prime = if caption.starts_with("План") {
+            "′"
+        } else {
+            ""
+        };
+        for s in ["s_2", "s_3", "s_4"] {
+            let role = image_role(v, &format!("{s}{prime}"));
+            assert_eq!(role, Some(Role::Construction), "{caption}: {s}");
+        }
+        // C carries group 4–5: a structural point, drawn with the main line.
+        for p in ["a", "b", "c", "e"] {
+            let role = image_role(v, &format!("{p}{prime}"));
+            assert_eq!(role, Some(Role::Result), "{caption}: {p}");
+        }
+    }
+}
+
+#[test]
+fn only_position_one_is_drawn_in_main_lines_on_the_plan_of_positions() {
+    for scene in ["six-bar", "shaper", "four-bar"] {
+        let all = views(scene);
+        let plan = captioned(&all, "План положений");
+        assert_eq!(plan.len(), 1, "{scene}");
+        let links: Vec<_> = plan[0]
+            .figure
+            .steps
+            .iter()
+            .filter(|s| s.note.starts_with("position ") && s.note.ends_with(": crank"))
+            .collect();
+        assert!(links.len() >= 12, "{scene}: {} cranks", links.len());
+        for s in links {
+            let want = if s.note == "position 1: crank" {
+                Role::Given
+            } else {
+                Role::Construction
+            };
+            assert_eq!(s.role, want, "{scene}: {}", s.note);
+        }
+    }
+}
+
+/// Whether the segments `a`–`b` and `c`–`d` cross.
+fn cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> bool {
+    let side = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
+    side(a, b, c) * side(a, b, d) < 0.0 && side(c, d, a) * side(c, d, b) < 0.0
+}
+
+#[test]
+fn the_pole_distance_is_dimensioned_clear_of_the_rays() {
+    let mut checked = 0;
+    for scene in ["shaper", "six-bar", "slider-crank", "v-engine", "four-bar"] {
+        for v in views(scene) {
+            let steps = &v.figure.steps;
+            for dim in steps.iter().filter(|s| s.note.starts_with("pole distance")) {
+                let Item::Dimension { from, to, offset } = dim.item else {
+                    panic!("{scene}: {} is not a dimension", dim.note);
+                };
+                let n = (to - from).normalize().perp() * offset;
+                let line = (from + n, to + n);
+                // The rays of the pole the dimension belongs to start at `from`.
+                let rays: Vec<_> = steps
+                    .iter()
+                    .filter_map(|s| match s.item {
+                        Item::Segment(g) if s.note.starts_with("ray ") && g.from == from => Some(g),
+                        _ => None,
+                    })
+                    .collect();
+                assert!(rays.len() >= 6, "{scene}: {} rays", rays.len());
+                for r in rays {
+                    assert!(
+                        !cross(line.0, line.1, r.from, r.to),
+                        "{scene}: a ray crosses the dimension line of {}",
+                        dim.note
+                    );
+                }
+                // The text over the line (3.5 mm high) is clear of the fan too: the lowest
+                // ray ends at least 5 mm above the dimension line.
+                let lowest = steps
+                    .iter()
+                    .filter_map(|s| match s.item {
+                        Item::Segment(g) if s.note.starts_with("ray ") && g.from == from => {
+                            Some(g.to.y)
+                        }
+                        _ => None,
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                assert!(lowest - line.0.y >= 5.0, "{scene}: {}", dim.note);
+                checked += 1;
+            }
+        }
+    }
+    // H₁ and H₂ of four diagrams, H_ω of the shaper's and the four-bar's rockers.
+    assert!(checked >= 8, "{checked} pole distances");
+}
+
+/// A free μ_v is chosen from the room: the slider-crank's crank pin velocity (ω₁·OA) drawn
+/// at least 80 mm, the same μ_v stated on its sheet, which stays one sheet; a μ the scene
+/// fixes (the six-bar's 0,026, the shaper's 0,05) is kept.
+#[test]
+fn a_free_velocity_scale_draws_the_crank_pin_at_least_80_mm_and_a_fixed_one_is_kept() {
+    let load = |scene: &str| {
+        let path =
+            PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("constructions/{scene}.toml"));
+        tmm::load(&path).unwrap_or_else(|e| panic!("{scene}: {e}"))
+    };
+    let s = load("slider-crank");
+    let session = Session::new(&s, Drafting::EXACT);
+    let sc = session.kin_scales().expect("scales");
+    let plans = session.kinematics(&sc).expect("kinematics");
+    let pin = plans
+        .velocity_plans()
+        .into_iter()
+        .flatten()
+        .next()
+        .expect("a velocity plan")
+        .images
+        .iter()
+        .map(|p| p.length())
+        .fold(0.0f64, f64::max);
+    assert!(pin >= 80.0 - 1e-9, "longest vector {pin} mm");
+    let sheets = sheets_of("slider-crank");
+    assert_eq!(sheets.len(), 1);
+    let caption = sc.v.caption(Lang::Ru);
+    assert!(
+        sheets[0]
+            .texts
+            .iter()
+            .any(|t| t.lines.iter().any(|l| l.contains(&caption))),
+        "{caption} on the sheet"
+    );
+    for (scene, mu) in [("six-bar", 0.026), ("shaper", 0.05)] {
+        let s = load(scene);
+        let sc = Session::new(&s, Drafting::EXACT)
+            .kin_scales()
+            .expect("scales");
+        assert_eq!(sc.v.value(), mu, "{scene}");
+    }
+}
+
+/// Lines through the labelled point itself are left out within this distance of it, mm: the
+/// label stands [`LABEL_GAP_MM`] from its point, beside the lines that meet there.
+const NEAR_POINT_MM: f64 = LABEL_GAP_MM + 1.5;
+
+/// Length of the segment `a`–`b` inside `r`, away from the labelled point `at`.
+fn inside(a: DVec2, b: DVec2, r: &Rect, at: DVec2) -> f64 {
+    let n = 400;
+    let step = a.distance(b) / n as f64;
+    (0..n)
+        .map(|i| a + (b - a) * ((i as f64 + 0.5) / n as f64))
+        .filter(|p| p.x >= r.min.x && p.x <= r.max.x && p.y >= r.min.y && p.y <= r.max.y)
+        .filter(|p| p.distance(at) > NEAR_POINT_MM)
+        .count() as f64
+        * step
+}
+
+/// The joint labels of every plan on the linkage scenes' kinematic sheets that a line of
+/// their own plan meets (within [`CLEAR_MM`]), and how many joint labels were looked at.
+fn struck_joint_labels(scenes: &[&str], only: impl Fn(&str) -> bool) -> (Vec<String>, usize) {
+    let mut struck = Vec::new();
+    let mut seen = 0;
+    for scene in scenes {
+        for p in sheets_of(scene) {
+            let l = layout(&p);
+            for x in l
+                .labels
+                .iter()
+                .filter(|x| x.steps.len() > 1 && only(&x.text))
+            {
+                let v = &p.views[x.view];
+                let plan = v
+                    .caption
+                    .as_deref()
+                    .is_some_and(|c| c.starts_with("Пол. ") || c.starts_with("План ускорений"));
+                if !plan {
+                    continue;
+                }
+                seen += 1;
+                let r = x.rect.inflate(CLEAR_MM);
+                for s in &v.figure.steps {
+                    let (a, b) = match s.item {
+                        Item::Segment(sg) => (sg.from, sg.to),
+                        Item::Vector { from, to } => (from, to),
+                        _ => continue,
+                    };
+                    let len = inside(v.to_sheet(a), v.to_sheet(b), &r, x.anchor);
+                    if len > 0.0 {
+                        struck.push(format!(
+                            "{scene}/{} “{}”: {} runs {len:.1} mm into “{}” at {:?}",
+                            p.name,
+                            v.caption.as_deref().unwrap_or(""),
+                            s.note,
+                            x.text,
+                            x.rect
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    (struck, seen)
+}
+
+/// `d₅ ≡ e ≡ s₅` on every velocity and acceleration plan of the shaper, clear of its lines.
+#[test]
+fn the_sliders_joint_label_is_clear_of_its_direction_lines() {
+    let (struck, seen) = struck_joint_labels(&["shaper"], |t| t.contains("d_{5}"));
+    // Twelve velocity plans, 8′ and two acceleration plans.
+    assert!(seen >= 13, "{seen} labels of d₅");
+    assert!(struck.is_empty(), "{}", struck.join("\n"));
+}
+
+/// Every joint label of every plan of the linkage scenes, clear of its plan's lines.
+#[test]
+fn no_joint_label_of_a_plan_is_struck_by_its_lines() {
+    let (struck, seen) = struck_joint_labels(&LINKAGES.split(' ').collect::<Vec<_>>(), |_| true);
+    assert!(seen > 30, "{seen} joint labels");
+    assert!(struck.is_empty(), "{}", struck.join("\n"));
+}
