@@ -1,5 +1,5 @@
-//! The room of the sheets of the plates that are not the force analysis's (kinematics, cam,
-//! gears, balancing, friction, dynamics): no sheet is left nearly empty (a table or a line of text alone), and
+//! The room of every sheet `tmm render` writes (kinematics, forces, cam, gears, balancing,
+//! friction, dynamics): no sheet is left nearly empty (a table or a line of text alone), and
 //! a sheet less than 30 % inked is listed here with the reason it stays so (issue 19). The
 //! ink share is measured as `plate-legibility` measures it: the 20 mm cells of the field
 //! (inside the frame, the title block left out) that hold any line of a view.
@@ -44,6 +44,10 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("four-bar/kinematics", 0.22, "one sheet: the plans at 80 mm and the tables; a larger μ would spill onto a second, thinner sheet"),
     ("tangent/kinematics", 0.18, "the plan of positions is 640 mm tall (the slider runs to ±746 mm near φ = 90°) and 25 mm wide; the plans at 80 mm"),
     ("v-engine/kinematics", 0.17, "the plans at their μ_v, μ_a are fitted to the common field; a larger μ_l or μ_v would change the force sheets' groups and lever"),
+    ("shaper/forces", 0.16, "the scene fixes μ_l and μ_F (the seed's): one position's kinetostatics (the textbook's sheet 2) — group 2–3 is 360 mm tall at μ_l, the lever's F_у stands 0,66 m out on the pitch circle's image, and the polygons and details beside them leave the bottom band free"),
+    ("shaper/forces-2", 0.16, "as shaper/forces, at position 10"),
+    ("v-engine/forces", 0.16, "one position's kinetostatics with the groups at the kinematic plan's μ_l (the arms are measured at it) and the polygons at μ_F for 200 mm"),
+    ("v-engine/forces-2", 0.16, "as v-engine/forces, at position 6"),
     ("v-engine/kinematics-2", 0.13, "two acceleration plans, the diagrams and the tables (which hold no view line)"),
     ("v-engine/dynamics", 0.20, "the scene fixes μ_φ"),
 ];
@@ -96,7 +100,7 @@ fn sheets() -> Vec<(String, Plate)> {
             tmm::render::plates(&s, Lang::Ru, Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
         out.extend(
             all.into_iter()
-                .filter(|(kind, _)| !matches!(kind.stem(), "positions" | "forces"))
+                .filter(|(kind, _)| kind.stem() != "positions")
                 .map(|(_, p)| (s.stem.clone(), p)),
         );
     }
