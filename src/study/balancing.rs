@@ -123,7 +123,9 @@ mod tests {
         if let Some(spec) = scene.balancing.as_mut() {
             edit(spec);
         }
-        let b = Session::new(&scene, Drafting::EXACT).balancing().expect("balanced");
+        let b = Session::new(&scene, Drafting::EXACT)
+            .balancing()
+            .expect("balanced");
         (*b).clone()
     }
 
@@ -133,7 +135,10 @@ mod tests {
     fn a_free_scale_draws_the_rotor_as_large_as_its_room_holds() {
         for name in ["rotor-static", "rotor-dynamic"] {
             let b = balanced(name, |_| {});
-            assert!(b.spec.scale_l.is_none() && b.spec.scale_mr.is_none(), "{name}");
+            assert!(
+                b.spec.scale_l.is_none() && b.spec.scale_mr.is_none(),
+                "{name}"
+            );
             assert!(fits(&b.rotor, ROTOR_ROOM) && fits([&b.statics], POLYGON_ROOM));
             let ctx = Context::for_model_size(1.0, Drafting::EXACT).expect("context");
             let mut spec = b.spec.clone();
@@ -143,7 +148,10 @@ mod tests {
             let mut spec = b.spec.clone();
             spec.scale_mr = finer(b.scale_mr);
             let over = balancing::balance(&spec, &ctx).expect("finer μ_mρ");
-            assert!(!fits([&over.statics], POLYGON_ROOM), "{name}: μ_mρ could be finer");
+            assert!(
+                !fits([&over.statics], POLYGON_ROOM),
+                "{name}: μ_mρ could be finer"
+            );
         }
         // Larger than before: the static rotor's disc was drawn at μ_l = 0,004 m/mm.
         assert!(balanced("rotor-static", |_| {}).scale_l.value() < 0.004);
