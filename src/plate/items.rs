@@ -473,54 +473,31 @@ mod tests {
 
     #[test]
     fn dimension_text_is_readable_and_above_its_line() {
-        let t = dimension_text(
-            Map::figure(DVec2::ZERO),
-            (DVec2::new(50.0, 0.0), DVec2::ZERO, 10.0),
-            "50",
-            TextSpot::MIDDLE,
-        )
-        .unwrap();
+        let text = |dim: (DVec2, DVec2, f64), s: &str, spot: TextSpot| {
+            dimension_text(Map::figure(DVec2::ZERO), dim, s, spot).expect("a text")
+        };
+        let (o, x50) = (DVec2::ZERO, DVec2::new(50.0, 0.0));
+        let t = text((x50, o, 10.0), "50", TextSpot::MIDDLE);
         // Right to left with the offset below: the text still reads left to right, above.
         assert_eq!(t.rotate, 0.0);
         assert!((t.at.x - 25.0).abs() < 1e-9, "{:?}", t.at);
         assert!((t.bounds().max.y - 9.0).abs() < 1e-9, "{:?}", t.bounds());
-        let v = dimension_text(
-            Map::figure(DVec2::ZERO),
-            (DVec2::ZERO, DVec2::new(0.0, 40.0), 5.0),
-            "40",
-            TextSpot::MIDDLE,
-        )
-        .unwrap();
+        let v = text((o, DVec2::new(0.0, 40.0), 5.0), "40", TextSpot::MIDDLE);
         assert_eq!(v.rotate, -90.0);
         // Slid along and written under the line: the capitals' top the gap under it.
-        let under = dimension_text(
-            Map::figure(DVec2::ZERO),
-            (DVec2::new(50.0, 0.0), DVec2::ZERO, 10.0),
-            "50",
-            TextSpot {
-                along: 7.0,
-                under: true,
-            },
-        )
-        .unwrap();
+        let spot = TextSpot {
+            along: 7.0,
+            under: true,
+        };
+        let under = text((x50, o, 10.0), "50", spot);
         let b = under.bounds();
-        // A subscript's foot keeps the gap over the line too.
-        let z = dimension_text(
-            Map::figure(DVec2::ZERO),
-            (DVec2::ZERO, DVec2::new(50.0, 0.0), 0.0),
-            "z_{1}",
-            TextSpot::MIDDLE,
-        )
-        .unwrap();
-        assert!(
-            (z.bounds().max.y + DIMENSION_TEXT_GAP_MM).abs() < 1e-9,
-            "{:?}",
-            z.bounds()
-        );
         assert!((under.at.x - 32.0).abs() < 1e-9, "{:?}", under.at);
         assert!(
             (b.min.y - (10.0 + DIMENSION_TEXT_GAP_MM)).abs() < 1e-9,
             "{b:?}"
         );
+        // A subscript's foot keeps the gap over the line too.
+        let z = text((o, x50, 0.0), "z_{1}", TextSpot::MIDDLE).bounds();
+        assert!((z.max.y + DIMENSION_TEXT_GAP_MM).abs() < 1e-9, "{z:?}");
     }
 }
