@@ -97,7 +97,7 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
     if roller >= base {
         return Err(CamError::RollerTooLarge { roller, base });
     }
-    let inversion = invert(spec, &points, &read, &placement, base, roller, ctx)?;
+    let inversion = invert(spec, &points, &read, &placement, (base, roller), ctx)?;
     let angle_graph = match spec.follower {
         Follower::Flat { .. } => None,
         _ => Some(angle_graph(

@@ -27,10 +27,15 @@ use std::f64::consts::TAU;
 mod differentiated;
 use differentiated::differentiated;
 
-/// Drawn length of the cycle on the diagrams' abscissa, mm (μ_φ = 2π / 180 mm).
-const CYCLE_MM: f64 = 180.0;
-/// Drawn stroke on the diagrams, mm.
-const STROKE_MM: f64 = 60.0;
+/// Drawn length of the cycle on the diagrams' abscissa, mm (μ_φ = 2π / 240 mm = 1,5°/mm):
+/// the diagrams' column takes about 300 mm of an A1 sheet's width.
+const CYCLE_MM: f64 = 240.0;
+/// Drawn stroke on the diagrams (at most, μ_S round), mm: the S diagram and the combined
+/// diagram about a sixth of an A1 sheet's height.
+const STROKE_MM: f64 = 100.0;
+/// Drawn height of the analogues' peaks when the scene gives no poles, mm: the three
+/// diagrams stacked fill an A1 sheet's height.
+const PEAK_MM: f64 = 65.0;
 /// The return's pole lies this far past the end of the return, mm.
 const FAN_GAP_MM: f64 = 12.0;
 /// The pole distance's dimension line lies this far below the lowest ray, mm.
@@ -516,16 +521,18 @@ fn peaks(spec: &CamSpec) -> (f64, f64) {
 }
 
 /// The pole distances a student chooses: H₂ = μ_S/(μ_S′·μ_φ) and H₁ = μ_S′/(μ_S″·μ_φ) with
-/// μ_S′, μ_S″ drawing the analogues' peaks about 40 mm tall, rounded to whole millimetres.
+/// μ_S′, μ_S″ drawing the analogues' peaks about [`PEAK_MM`] tall, rounded to whole millimetres.
 /// A law without acceleration (uniform) sets no μ_S″: H₁ is then H₂.
 fn chosen_poles(spec: &CamSpec, s: Scale, phi: Scale) -> [f64; 2] {
     let (v, a) = peaks(spec);
-    let h2 = (s.value() / (v.max(1e-12) / 40.0 * phi.value()))
+    let h2 = (s.value() / (v.max(1e-12) / PEAK_MM * phi.value()))
         .round()
         .clamp(5.0, 200.0);
     let mu_v = s.value() / (h2 * phi.value());
     let h1 = if a > 1e-9 * v {
-        (mu_v / (a / 40.0 * phi.value())).round().clamp(5.0, 200.0)
+        (mu_v / (a / PEAK_MM * phi.value()))
+            .round()
+            .clamp(5.0, 200.0)
     } else {
         h2
     };

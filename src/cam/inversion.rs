@@ -5,13 +5,19 @@
 use super::follower::{flat_contact, jay, to_cam, Kin, Placement};
 use super::motion::{Motion, Point};
 use super::{CamError, CamSpec, Follower};
+use crate::construct::fit::{overflow, raised};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{french_curve, Arc, Circle, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
-/// Largest radius of the profile drawing, mm.
-const PROFILE_MM: f64 = 120.0;
+/// Largest radius of the profile drawing when the scene gives no μ_l, mm: at most this, and
+/// coarser while the drawing (rollers, follower positions, labels' points) overflows
+/// [`PROFILE_ROOM`].
+const PROFILE_MM: f64 = 160.0;
+/// The room of the profile on the cam sheet, mm: a third of an A1 sheet's width beside the
+/// diagrams and the combined diagram, under half its height.
+const PROFILE_ROOM: DVec2 = DVec2::new(240.0, 240.0);
 /// A translating follower's inverted axis is drawn from this share of the way from the
 /// foot of the offset out to the base circle.
 const INNER: f64 = 0.6;
@@ -36,27 +42,55 @@ pub struct Inversion {
     pub rho_min: f64,
 }
 
-/// The profile by inversion at μ_l.
+/// The profile by inversion at μ_l: the scene's; else the round μ_l that draws the largest
+/// radius at most [`PROFILE_MM`], made coarser along the round series until the drawing
+/// fits [`PROFILE_ROOM`] (each try constructed and measured).
 pub(crate) fn invert(
     spec: &CamSpec,
     points: &[Point],
     read: &[Motion],
     place: &Placement,
-    base: f64,
-    roller: f64,
+    (base, roller): (f64, f64),
     ctx: &Context,
 ) -> Result<Inversion, CamError> {
+    let at = |mu: Scale| invert_at(spec, points, read, place, (base, roller), mu, ctx);
+    if let Some(mu) = spec.scale_l {
+        return at(mu);
+    }
     let reach = match *place {
         Placement::Rocker { pivot, arm, .. } => pivot.length() + arm,
         Placement::Translating { .. } => base + spec.stroke + spec.offset().abs(),
     };
-    let mu = match spec.scale_l {
-        Some(s) => s,
-        None => Scale::round_for(reach, PROFILE_MM, Quantity::Length).ok_or(CamError::NoScale {
+    let mut mu =
+        Scale::round_for(reach, PROFILE_MM, Quantity::Length).ok_or(CamError::NoScale {
             what: "μ_l",
             size: reach,
-        })?,
-    };
+        })?;
+    let mut inv = at(mu)?;
+    for _ in 0..4 {
+        let Some((lo, hi)) = inv.figure.bounds() else {
+            break;
+        };
+        let need = overflow(hi - lo, PROFILE_ROOM);
+        match raised(mu, need) {
+            Some(next) if need > 1.0 && next != mu => mu = next,
+            _ => break,
+        }
+        inv = at(mu)?;
+    }
+    Ok(inv)
+}
+
+/// The profile by inversion at `mu`.
+fn invert_at(
+    spec: &CamSpec,
+    points: &[Point],
+    read: &[Motion],
+    place: &Placement,
+    (base, roller): (f64, f64),
+    mu: Scale,
+    ctx: &Context,
+) -> Result<Inversion, CamError> {
     let mm = |p: DVec2| p / mu.value();
     let mut rec = Recorder::in_context("inversion", mu, ctx);
     let o = rec.draw(

@@ -101,14 +101,15 @@ pub struct CamSpec {
     pub base_radius: Option<f64>,
     /// Intervals of the rise and of the return (the diagrams' and the inversion's points).
     pub divisions: usize,
-    /// μ_S of the diagrams (m/mm); `None`: chosen for a 60 mm stroke.
+    /// μ_S of the diagrams (m/mm); `None`: chosen for a stroke drawn at most 100 mm.
     pub scale_s: Option<Scale>,
-    /// μ_l of the profile (m/mm); `None`: chosen for a 90 mm largest radius.
+    /// μ_l of the profile (m/mm); `None`: chosen for a largest radius drawn at most 160 mm,
+    /// coarser until the profile's drawing fits 240 × 240 mm.
     pub scale_l: Option<Scale>,
-    /// μ_φ of the diagrams (rad/mm); `None`: chosen for a 180 mm cycle.
+    /// μ_φ of the diagrams (rad/mm); `None`: a 240 mm cycle (1,5°/mm).
     pub scale_phi: Option<Scale>,
     /// The pole distances H₁ (d²S → dS) and H₂ (dS → S), mm; `None`: chosen so that the
-    /// analogues' peaks are drawn about 40 mm tall.
+    /// analogues' peaks are drawn about 65 mm tall.
     pub poles: Option<[f64; 2]>,
     /// The source lost its diagrams: the law is assumed (said on the plate).
     pub law_assumed: bool,

@@ -126,6 +126,8 @@ pub fn inversion_at(
 ) -> Result<(CamSpec, Vec<Point>, Inversion), CamError> {
     let mut spec = cam.spec.clone();
     spec.divisions = n.max(2);
+    // The cam's own μ_l: the profile at another N is drawn on the same scale.
+    spec.scale_l = Some(cam.inversion.scale);
     let points = points(&spec);
     let read: Vec<Motion> = points
         .iter()
@@ -136,8 +138,7 @@ pub fn inversion_at(
         &points,
         &read,
         &cam.placement,
-        cam.base,
-        cam.roller,
+        (cam.base, cam.roller),
         ctx,
     )?;
     Ok((spec, points, inv))

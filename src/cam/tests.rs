@@ -561,3 +561,53 @@ fn the_drawn_r_min_converges_to_the_exact_one() {
     let (a, b) = (err(12), err(96));
     assert!(b < a && b < 2e-5, "{a} {b}");
 }
+
+/// A free μ_l is the finest round one whose profile drawing fits the sheet's room: the
+/// profile at the next finer round μ_l would not; a μ_l the scene gives is kept even when
+/// the drawing is larger.
+#[test]
+fn a_free_profile_scale_is_the_finest_that_fits_its_room() {
+    let c = ctx(0.0);
+    for spec in [
+        seed000(),
+        translating(Law::Sine, 0.01),
+        fast(translating(Law::Cosine, 0.0)),
+    ] {
+        let cam = build(&spec, &c).unwrap();
+        let mu = cam.inversion.scale;
+        let (lo, hi) = cam.inversion.figure.bounds().unwrap();
+        let size = hi - lo;
+        assert!(size.x <= 240.0 && size.y <= 240.0, "{size:?} at {mu:?}");
+        // The largest radius never drawn past 160 mm.
+        let reach = cam
+            .inversion
+            .centres
+            .iter()
+            .map(|p| p.length())
+            .fold(0.0, f64::max);
+        assert!(mu.to_mm(reach) <= 160.0 + 1e-9, "{}", mu.to_mm(reach));
+        let finer =
+            crate::scale::Scale::round_at_least(mu.value() * 0.999, 1.0, mu.quantity).unwrap();
+        assert!(finer.value() < mu.value());
+        let at_finer = build(
+            &CamSpec {
+                scale_l: Some(finer),
+                ..spec.clone()
+            },
+            &c,
+        )
+        .unwrap();
+        let (a, b) = at_finer.inversion.figure.bounds().unwrap();
+        let bigger = b - a;
+        let over = bigger.x > 240.0 || bigger.y > 240.0 || finer.to_mm(reach) > 160.0;
+        assert!(over, "{finer:?} would fit too: {bigger:?}");
+    }
+    // The scene's μ_l stands.
+    let given = crate::scale::Scale::new(0.0001, crate::scale::Quantity::Length).unwrap();
+    let spec = CamSpec {
+        scale_l: Some(given),
+        ..seed000()
+    };
+    let cam = build(&spec, &c).unwrap();
+    assert_eq!(cam.inversion.scale, given);
+}

@@ -27,8 +27,9 @@ use std::f64::consts::TAU;
 
 /// Preferred drawn length of the abscissa 2π, mm.
 const TURN_MM: f64 = 180.0;
-/// Preferred height of a diagram's largest ordinate, mm.
-const HEIGHT_MM: f64 = 50.0;
+/// Preferred height of a diagram's largest ordinate, mm: the M, A and ΔT diagrams fill
+/// their part of the A1 dynamics sheet (50 mm left a quarter of it empty).
+const HEIGHT_MM: f64 = 80.0;
 
 /// A textbook route to the flywheel, as read off its diagram.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -39,6 +39,10 @@ pub const PLAN_H: [f64; 9] = [60.0, 50.0, 40.0, 30.0, 25.0, 20.0, 15.0, 10.0, 5.
 /// 5 × 10ⁿ), or failing that the largest that keeps it within.
 pub const PLAN_REACH_MM: f64 = 100.0;
 
+/// The longest the span of a train's radii is drawn, mm (μ_l round, at most this): under
+/// the height an A3 sheet leaves a drawing beside its data and table.
+const TRIANGLES_SPAN_MM: f64 = 180.0;
+
 /// How far the reading line runs past the outermost intercepts, mm.
 const PLAN_OVERHANG_MM: f64 = 8.0;
 
@@ -63,7 +67,10 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
         .fold(f64::NEG_INFINITY, |a, v| a.max(*v));
     let span = (hi - lo).max(train.module);
     let bad = |s: &str| TrainError::Layout(s.to_string());
-    let mu_l = Scale::round_for(span, 200.0, Quantity::Length).ok_or_else(|| bad("μ_l"))?;
+    // The scheme's span at most TRIANGLES_SPAN_MM: a train's triangles with its data and
+    // its table fit an A3 sheet.
+    let mu_l =
+        Scale::round_for(span, TRIANGLES_SPAN_MM, Quantity::Length).ok_or_else(|| bad("μ_l"))?;
     let n = train.shafts.len();
     // The input's pole: the first mesh of the input shaft.
     let (first, _) = train

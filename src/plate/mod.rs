@@ -50,7 +50,9 @@ use thiserror::Error;
 pub use fonts::font_database;
 pub use ink::{view_ink, Cell};
 pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM};
-pub use labels::{layout, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR};
+pub use labels::{
+    layout, struck_dimension_texts, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR,
+};
 pub use pdf::{to_pdf, PdfError};
 pub use raster::{png_size, to_png, to_png_dpi, to_png_dpi_all, MAX_PIXELS};
 pub use sheet::{Sheet, SheetSize, TitleBlock};

@@ -272,6 +272,15 @@ impl Placed {
     /// The box the text covers on the sheet ([`measure`] aligned, condensed to `length`
     /// and rotated as written); the axis-aligned box of the rotated box when rotated.
     pub(crate) fn bounds(&self) -> Rect {
+        let turned = self.corners();
+        let lo = turned.iter().fold(DVec2::INFINITY, |m, p| m.min(*p));
+        let hi = turned.iter().fold(DVec2::NEG_INFINITY, |m, p| m.max(*p));
+        Rect::new(lo, hi)
+    }
+
+    /// The box the text covers in its own frame (x along the baseline, y down, the baseline
+    /// point at the origin), before [`Placed::rotate`] turns it.
+    pub(crate) fn own_box(&self) -> Rect {
         let e = measure(&self.markup, self.height);
         let k = match self.length {
             Some(len) if e.advance > 0.0 => len / e.advance,
@@ -283,17 +292,26 @@ impl Placed {
             Align::End => -e.advance * k,
         };
         let (x0, x1) = (e.min.x * k + shift, e.max.x * k + shift);
+        Rect::new(DVec2::new(x0, e.min.y), DVec2::new(x1, e.max.y))
+    }
+
+    /// The corners of the box the text covers on the sheet, turned as written.
+    pub(crate) fn corners(&self) -> [DVec2; 4] {
+        let b = self.own_box();
         let corners = [
-            DVec2::new(x0, e.min.y),
-            DVec2::new(x1, e.min.y),
-            DVec2::new(x1, e.max.y),
-            DVec2::new(x0, e.max.y),
+            b.min,
+            DVec2::new(b.max.x, b.min.y),
+            b.max,
+            DVec2::new(b.min.x, b.max.y),
         ];
         let turn = DVec2::from_angle(self.rotate.to_radians());
-        let turned = corners.map(|c| self.at + turn.rotate(c));
-        let lo = turned.iter().fold(DVec2::INFINITY, |m, p| m.min(*p));
-        let hi = turned.iter().fold(DVec2::NEG_INFINITY, |m, p| m.max(*p));
-        Rect::new(lo, hi)
+        corners.map(|c| self.at + turn.rotate(c))
+    }
+
+    /// A point of the sheet in the text's own frame ([`Placed::own_box`]).
+    pub(crate) fn to_own(&self, p: DVec2) -> DVec2 {
+        let back = DVec2::from_angle(-self.rotate.to_radians());
+        back.rotate(p - self.at)
     }
 
     /// A text whose capitals are vertically centred on `at`.

@@ -111,6 +111,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             None,
         ));
     }
+    let drawings = blocks.len();
     let mut lines = data_lines(&cam, lang);
     lines.push(String::new());
     lines.push(super::drafting_line(session.drafting(), lang));
@@ -125,8 +126,46 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         size: SheetSize::A1,
         landscape: true,
     };
-    let blocks = blocks.into_iter().map(Block::clear_of_symbols).collect();
-    lay_out(sheet, blocks, "cam", &title, lang)
+    let blocks: Vec<Block> = blocks.into_iter().map(Block::clear_of_symbols).collect();
+    one_sheet(sheet, blocks, drawings, &title, lang)
+}
+
+/// The cam's blocks laid out on one sheet if some order of them fits one, else in the
+/// construction's order on as many as they need. `blocks` are the diagrams, the combined
+/// diagram, the profile, the angle graph if `drawings` is 4 (the first `drawings` blocks),
+/// then the text and the tables. The diagrams always go first, top left; the orders tried:
+/// the construction's; the text and the tables before the drawings they would otherwise be
+/// left under; the profile before the combined diagram.
+fn one_sheet(
+    sheet: Sheet,
+    blocks: Vec<Block>,
+    drawings: usize,
+    title: &crate::plate::TitleBlock,
+    lang: Lang,
+) -> Result<Vec<Plate>, BuildError> {
+    let words = blocks[drawings.min(blocks.len())..].to_vec();
+    let figures = &blocks[..drawings.min(blocks.len())];
+    let mut swapped = figures.to_vec();
+    if swapped.len() > 2 {
+        swapped.swap(1, 2);
+    }
+    let mut words_first = figures[..1.min(figures.len())].to_vec();
+    words_first.extend(words.iter().cloned());
+    words_first.extend(figures.iter().skip(1).cloned());
+    let orders = [
+        blocks.clone(),
+        words_first,
+        swapped.into_iter().chain(words.iter().cloned()).collect(),
+    ];
+    let mut fallback = None;
+    for ordered in orders {
+        let plates = lay_out(sheet, ordered, "cam", title, lang)?;
+        if plates.len() == 1 {
+            return Ok(plates);
+        }
+        fallback.get_or_insert(plates);
+    }
+    fallback.map_or_else(|| lay_out(sheet, blocks, "cam", title, lang), Ok)
 }
 
 /// A law's name in `lang`.

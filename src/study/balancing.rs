@@ -7,7 +7,78 @@ pub(super) const PART: Part = Part {
     has: |scene| scene.balancing.is_some(),
     add: |session, rep| session.report_balancing(rep),
 };
-use crate::forces::balancing;
+use crate::forces::balancing::{self, BalancingSpec};
+use crate::geom::DVec2;
+use crate::scale::Scale;
+
+/// The room of the rotor's drawings (end view, side view) on its sheet, mm.
+const ROTOR_ROOM: DVec2 = DVec2::new(ROTOR_W, ROTOR_H);
+const ROTOR_W: f64 = 250.0;
+const ROTOR_H: f64 = 180.0;
+/// The room of each polygon (of static moments, of moments) on the rotor's sheet, mm.
+const POLYGON_ROOM: DVec2 = DVec2::new(POLYGON_SIDE, POLYGON_SIDE);
+const POLYGON_SIDE: f64 = 210.0;
+
+/// Whether every drawing of `figures` fits `room`.
+fn fits<'a>(figures: impl IntoIterator<Item = &'a crate::construct::Figure>, room: DVec2) -> bool {
+    figures.into_iter().all(|f| {
+        f.bounds()
+            .is_none_or(|(lo, hi)| (hi - lo).cmple(room).all())
+    })
+}
+
+/// The next finer round scale than `s` (1, 2, 2,5, 4, 5 × 10ⁿ).
+fn finer(s: Scale) -> Option<Scale> {
+    Scale::round_at_least(s.value() * (1.0 - 1e-6), 1.0, s.quantity)
+}
+
+/// The rotor balanced with each scale the scene leaves free (μ_l, μ_mρ, μ_mρz) made finer
+/// along the round series, from the textbook's choice, while its drawings still fit their
+/// room on the sheet ([`ROTOR_ROOM`], [`POLYGON_ROOM`]): a rotor of a few masses is drawn
+/// as large as its sheet holds. The balancing keeps the scene's choices in its `spec`.
+fn larger(spec: &BalancingSpec, ctx: &crate::construct::Context) -> Result<Balancing, StudyError> {
+    let mut b = balancing::balance(spec, ctx)?;
+    type Get = fn(&Balancing) -> (Option<Scale>, Vec<&crate::construct::Figure>, DVec2);
+    let free: [(bool, Get); 3] = [
+        (spec.scale_l.is_none(), |b| {
+            (Some(b.scale_l), b.rotor.iter().collect(), ROTOR_ROOM)
+        }),
+        (spec.scale_mr.is_none(), |b| {
+            (Some(b.scale_mr), vec![&b.statics], POLYGON_ROOM)
+        }),
+        (spec.scale_mrz.is_none(), |b| {
+            (b.scale_mrz, b.moments.iter().collect(), POLYGON_ROOM)
+        }),
+    ];
+    let mut chosen = spec.clone();
+    for (k, (is_free, get)) in free.into_iter().enumerate() {
+        if !is_free {
+            continue;
+        }
+        for _ in 0..6 {
+            let Some(next) = get(&b).0.and_then(finer) else {
+                break;
+            };
+            let mut trial = chosen.clone();
+            match k {
+                0 => trial.scale_l = Some(next),
+                1 => trial.scale_mr = Some(next),
+                _ => trial.scale_mrz = Some(next),
+            }
+            let Ok(t) = balancing::balance(&trial, ctx) else {
+                break;
+            };
+            let (_, figures, room) = get(&t);
+            if !fits(figures, room) {
+                break;
+            }
+            chosen = trial;
+            b = t;
+        }
+    }
+    b.spec = spec.clone();
+    Ok(b)
+}
 
 /// The scene's rotor balanced.
 struct Balanced;
@@ -25,7 +96,7 @@ impl<'s> Session<'s> {
                 .balancing
                 .as_ref()
                 .ok_or(StudyError::NoBalancing("the balancing of a rotor"))?;
-            let b = balancing::balance(spec, &self.ctx()?)?;
+            let b = larger(spec, &self.ctx()?)?;
             self.logged("polygon of static moments", "", b.scale_mr);
             Ok(Arc::new(b))
         })
@@ -36,5 +107,57 @@ impl<'s> Session<'s> {
         rep.rows.extend(b.rows());
         rep.notes.extend(b.notes());
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::construct::Drafting;
+
+    fn balanced(name: &str, edit: impl Fn(&mut BalancingSpec)) -> Balancing {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("constructions")
+            .join(format!("{name}.toml"));
+        let mut scene = crate::scene::load(&path).expect("scene");
+        if let Some(spec) = scene.balancing.as_mut() {
+            edit(spec);
+        }
+        let b = Session::new(&scene, Drafting::EXACT)
+            .balancing()
+            .expect("balanced");
+        (*b).clone()
+    }
+
+    /// Each free scale is the finest round one whose drawings fit their room: one step finer
+    /// they would not; the scene's choices are what the balancing's spec keeps.
+    #[test]
+    fn a_free_scale_draws_the_rotor_as_large_as_its_room_holds() {
+        for name in ["rotor-static", "rotor-dynamic"] {
+            let b = balanced(name, |_| {});
+            assert!(
+                b.spec.scale_l.is_none() && b.spec.scale_mr.is_none(),
+                "{name}"
+            );
+            assert!(fits(&b.rotor, ROTOR_ROOM) && fits([&b.statics], POLYGON_ROOM));
+            let ctx = Context::for_model_size(1.0, Drafting::EXACT).expect("context");
+            let mut spec = b.spec.clone();
+            spec.scale_l = finer(b.scale_l);
+            let over = balancing::balance(&spec, &ctx).expect("finer μ_l");
+            assert!(!fits(&over.rotor, ROTOR_ROOM), "{name}: μ_l could be finer");
+            let mut spec = b.spec.clone();
+            spec.scale_mr = finer(b.scale_mr);
+            let over = balancing::balance(&spec, &ctx).expect("finer μ_mρ");
+            assert!(
+                !fits([&over.statics], POLYGON_ROOM),
+                "{name}: μ_mρ could be finer"
+            );
+        }
+        // Larger than before: the static rotor's disc was drawn at μ_l = 0,004 m/mm.
+        assert!(balanced("rotor-static", |_| {}).scale_l.value() < 0.004);
+        // A scale the scene gives stands.
+        let given = Scale::new(0.01, crate::scale::Quantity::Length).expect("μ_l");
+        let b = balanced("rotor-static", |s| s.scale_l = Some(given));
+        assert_eq!(b.scale_l, given);
     }
 }

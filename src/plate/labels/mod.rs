@@ -10,7 +10,7 @@
 //! help it. Crowded labels are placed first; the order is deterministic, so is the layout.
 //! The SVG writer writes the texts from this layout, and the tests check its boxes.
 
-use super::items::{dimension_text, item_outlines, Outline, Shape, JOINT_RADIUS_MM};
+use super::items::{item_outlines, Outline, Shape, JOINT_RADIUS_MM};
 use super::items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
 use super::path::Map;
 use super::style::{Mark, Pen};
@@ -226,8 +226,14 @@ fn is_number(name: &str) -> bool {
 }
 
 /// The labels of a view to place, coincident ones joined; and the fixed texts of its
-/// dimensions.
-fn requests(k: usize, view: &View) -> (Vec<Request>, Vec<PlacedLabel>) {
+/// dimensions, each clear of `lines` (the view's outlines) and of `texts` (the texts already
+/// fixed on the sheet) where it can be.
+fn requests(
+    k: usize,
+    view: &View,
+    lines: &[Outline],
+    texts: &[Rect],
+) -> (Vec<Request>, Vec<PlacedLabel>) {
     let map = Map::figure(view.origin);
     let mut fixed = Vec::new();
     let mut single: Vec<Request> = Vec::new();
@@ -241,7 +247,10 @@ fn requests(k: usize, view: &View) -> (Vec<Request>, Vec<PlacedLabel>) {
             continue;
         };
         if let Item::Dimension { from, to, offset } = &step.item {
-            if let Some(placed) = dimension_text(map, *from, *to, *offset, text) {
+            let mut near: Vec<Rect> = texts.to_vec();
+            near.extend(fixed.iter().map(|f: &PlacedLabel| f.rect));
+            let dim = (*from, *to, *offset);
+            if let Some(placed) = dimension::placed(map, dim, text, lines, &near) {
                 fixed.push(PlacedLabel {
                     view: k,
                     steps: vec![step.id],
@@ -277,7 +286,7 @@ pub(super) fn joint_labels(figure: &crate::construct::Figure) -> Vec<(DVec2, Str
         caption: None,
         caption_drop: 0.0,
     };
-    requests(0, &view)
+    requests(0, &view, &[], &[])
         .0
         .into_iter()
         .filter(|r| r.names.len() > 1)
@@ -348,6 +357,8 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
 
 /// Places labels one by one against what is already on the sheet, then moves those still
 /// colliding (alone, or together with a label in their way) while that lowers the collisions.
+mod dimension;
+pub use dimension::struck_dimension_texts;
 mod place;
 #[cfg(test)]
 mod tests;

@@ -75,7 +75,9 @@ impl<'a> Placer<'a> {
         let mut out = Vec::new();
         let mut todo = Vec::new();
         for (k, view) in plate.views.iter().enumerate() {
-            let (r, f) = requests(k, view);
+            let mut texts = self.fixed.clone();
+            texts.extend(out.iter().map(|l: &PlacedLabel| l.rect));
+            let (r, f) = requests(k, view, &self.outlines[k], &texts);
             out.extend(f);
             todo.extend(r);
         }

@@ -1,0 +1,199 @@
+//! A dimension's text beside its line, clear of the lines of its view: over the middle of the
+//! dimension line when that is free (ГОСТ 2.307), else slid along the line, under it, or past
+//! its arrows on the line's extension — never struck through by a line of its own view.
+
+use super::place::{clipped_area, clipped_length};
+use super::{Outline, Shape};
+use crate::construct::Item;
+use crate::geom::DVec2;
+use crate::plate::items::{dimension_text, TextSpot};
+use crate::plate::path::Map;
+use crate::plate::text::Placed;
+use crate::plate::{Plate, Rect};
+
+/// Step of the slide along the dimension line, mm.
+const SLIDE_MM: f64 = 1.5;
+/// Room kept at each end of the dimension line for its arrowhead, mm.
+const ARROW_ROOM_MM: f64 = 3.0;
+/// Slides tried past each arrow, on the line's extension.
+const PAST_STEPS: usize = 8;
+/// Clearance a text keeps from a line while placing, mm.
+const CLEAR_MM: f64 = 0.3;
+
+/// Cost of a place over another text (a caption, a table, another dimension's text), as mm
+/// of line struck.
+const OVER_TEXT: f64 = 100.0;
+
+/// The dimension `(from, to, offset)`'s text `text` placed (see the module documentation):
+/// the first place, in order of preference, whose box meets no line of `lines` (the view's
+/// outlines) and no text of `texts`; the least struck when none is free.
+pub(super) fn placed(
+    map: Map,
+    dim: (DVec2, DVec2, f64),
+    text: &str,
+    lines: &[Outline],
+    texts: &[Rect],
+) -> Option<Placed> {
+    let first = dimension_text(map, dim, text, TextSpot::MIDDLE)?;
+    let width = first.own_box().width();
+    let (from, to, _) = dim;
+    let length = map.dir(to - from).length();
+    let mut best: Option<(Placed, f64)> = None;
+    for (rank, spot) in spots(length, width).into_iter().enumerate() {
+        let Some(p) = dimension_text(map, dim, text, spot) else {
+            continue;
+        };
+        let b = p.bounds().inflate(CLEAR_MM);
+        let over: f64 = texts
+            .iter()
+            .map(|t| t.overlap(&b))
+            .filter(|&a| a > 0.0)
+            .map(|a| OVER_TEXT + a)
+            .sum();
+        let ink = struck(&p, lines, CLEAR_MM) + over;
+        if ink == 0.0 {
+            return Some(p);
+        }
+        let cost = ink + rank as f64 * 1e-3;
+        if best.as_ref().is_none_or(|b| cost < b.1) {
+            best = Some((p, cost));
+        }
+    }
+    best.map(|b| b.0)
+}
+
+/// The places tried for a text `width` mm long beside a dimension line `length` mm long, in
+/// order of preference: over the line, at its middle then slid both ways while the text stays
+/// between the arrows; the same under the line; then past the arrows, on the line's extension.
+fn spots(length: f64, width: f64) -> Vec<TextSpot> {
+    let free = 0.5 * length - ARROW_ROOM_MM - 0.5 * width;
+    let mut alongs = vec![0.0];
+    let mut k = 1.0;
+    while k * SLIDE_MM <= free {
+        alongs.extend([k * SLIDE_MM, -k * SLIDE_MM]);
+        k += 1.0;
+    }
+    let past = 0.5 * length + ARROW_ROOM_MM + 0.5 * width;
+    let pasts = (0..PAST_STEPS).flat_map(|k| {
+        let along = past + k as f64 * SLIDE_MM;
+        [along, -along]
+    });
+    let at = |under: bool| move |&along: &f64| TextSpot { along, under };
+    let mut out: Vec<TextSpot> = alongs.iter().map(at(false)).collect();
+    out.extend(alongs.iter().map(at(true)));
+    out.extend(pasts.flat_map(|along| [false, true].map(|under| TextSpot { along, under })));
+    out
+}
+
+/// How much of `lines` the box of `text`, grown by `clear`, holds: mm of line plus mm² of
+/// symbol (zero: the text is struck by none).
+pub(crate) fn struck(text: &Placed, lines: &[Outline], clear: f64) -> f64 {
+    let own = text.own_box().inflate(clear);
+    let reach = Rect::around(text.corners()).map(|r| r.inflate(clear));
+    lines
+        .iter()
+        .map(|o| match &o.shape {
+            Shape::Line(a, b) => {
+                if reach.is_some_and(|r| !r.touches(&Rect::around([*a, *b]).unwrap_or(r))) {
+                    return 0.0;
+                }
+                clipped_length(text.to_own(*a), text.to_own(*b), &own)
+            }
+            Shape::Area(pts) => {
+                let turned: Vec<DVec2> = pts.iter().map(|&p| text.to_own(p)).collect();
+                clipped_area(&turned, &own)
+            }
+        })
+        .sum()
+}
+
+/// Every dimension text of `plate` struck by a line of its own view: (view, text, mm of line
+/// plus mm² of symbol inside the text's box as written). Empty when every text is clear.
+pub fn struck_dimension_texts(plate: &Plate) -> Vec<(usize, String, f64)> {
+    let laid = super::layout(plate);
+    let outlines: Vec<Vec<Outline>> = plate.views.iter().map(super::view_outlines).collect();
+    laid.labels
+        .iter()
+        .filter(|l| {
+            let steps = &plate.views[l.view].figure.steps;
+            l.steps.iter().any(|id| {
+                steps
+                    .get(id.0 as usize)
+                    .is_some_and(|s| matches!(s.item, Item::Dimension { .. }))
+            })
+        })
+        .map(|l| {
+            (
+                l.view,
+                l.text.clone(),
+                struck(&l.placed, &outlines[l.view], 0.0),
+            )
+        })
+        .filter(|s| s.2 > 0.0)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_middle_first_then_along_the_line_then_past_its_arrows() {
+        let s = spots(40.0, 6.0);
+        assert_eq!(s[0], TextSpot::MIDDLE);
+        // Slid over the line before it goes under it.
+        let first_under = s.iter().position(|t| t.under).expect("under");
+        assert!(first_under > 2 && s[first_under].along == 0.0);
+        assert!(s[..first_under].iter().all(|t| !t.under));
+        // Between the arrows the text keeps their room.
+        let inside: Vec<&TextSpot> = s.iter().filter(|t| t.along.abs() < 20.0).collect();
+        assert!(inside
+            .iter()
+            .all(|t| t.along.abs() + 3.0 <= 20.0 - ARROW_ROOM_MM + 1e-9));
+        assert!(inside.len() > 10);
+        // A line shorter than its text: the middle, then only past the arrows.
+        let short = spots(2.0, 6.0);
+        assert_eq!(
+            short[1],
+            TextSpot {
+                along: 0.0,
+                under: true
+            }
+        );
+        assert!(short[2..]
+            .iter()
+            .all(|t| t.along.abs() >= 1.0 + ARROW_ROOM_MM + 3.0));
+    }
+
+    #[test]
+    fn a_line_through_the_middle_slides_the_text_clear_of_it() {
+        let map = Map::figure(DVec2::ZERO);
+        // A horizontal dimension 60 mm long, a line crossing its middle upright.
+        let dim = (DVec2::ZERO, DVec2::new(60.0, 0.0), 0.0);
+        let cross = Outline {
+            shape: Shape::Line(DVec2::new(30.0, -20.0), DVec2::new(30.0, 20.0)),
+            main: false,
+        };
+        let middle = dimension_text(map, dim, "H", TextSpot::MIDDLE).expect("text");
+        assert!(struck(&middle, std::slice::from_ref(&cross), 0.0) > 1.0);
+        let p = placed(map, dim, "H", std::slice::from_ref(&cross), &[]).expect("placed");
+        assert_eq!(struck(&p, &[cross], CLEAR_MM), 0.0);
+        assert!(
+            (p.at.x - 30.0).abs() < 6.0,
+            "kept near the middle: {:?}",
+            p.at
+        );
+        // A caption under the line and one over it left of the middle: the text goes right.
+        let captions = [
+            Rect::new(DVec2::new(0.0, 0.5), DVec2::new(60.0, 6.0)),
+            Rect::new(DVec2::new(0.0, -6.0), DVec2::new(30.0, -0.5)),
+        ];
+        let q = placed(map, dim, "H", &[], &captions).expect("placed");
+        assert!(
+            captions.iter().all(|c| !c.intersects(&q.bounds())),
+            "{:?}",
+            q.bounds()
+        );
+        assert!(q.bounds().min.x > 30.0 && q.bounds().max.y < 0.0);
+    }
+}

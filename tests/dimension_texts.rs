@@ -1,0 +1,39 @@
+//! A dimension's text sits beside its dimension line, never on a line of its own view (issue
+//! 19: `πd₁` and `ρ` of friction, `H` of the v-engine's dynamics were struck through): over
+//! every sheet of every scene in `constructions/`, in every language, each dimension text's
+//! box as written (turned with it) holds no line or symbol of its view.
+
+use std::path::PathBuf;
+use tmm::construct::Drafting;
+use tmm::plate::struck_dimension_texts;
+use tmm::scale::Lang;
+use tmm::scene;
+
+#[test]
+fn no_dimension_text_is_struck_by_a_line_of_its_view() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("constructions");
+    let mut struck = Vec::new();
+    let mut sheets = 0;
+    for entry in std::fs::read_dir(dir).expect("constructions/") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+        for lang in [Lang::Ru, Lang::En] {
+            let plates = tmm::render::plates(&s, lang, Drafting::EXACT)
+                .unwrap_or_else(|e| panic!("{}: {e}", s.stem));
+            for (_, p) in plates {
+                sheets += 1;
+                struck.extend(struck_dimension_texts(&p).into_iter().map(|(v, t, mm)| {
+                    format!(
+                        "{}/{} ({lang:?}) view {v}: “{t}” holds {mm:.2} mm of line",
+                        s.stem, p.name
+                    )
+                }));
+            }
+        }
+    }
+    assert!(sheets > 50, "{sheets} sheets");
+    assert!(struck.is_empty(), "{}", struck.join("\n"));
+}
