@@ -156,20 +156,25 @@ impl<'a> Scheme<'a> {
         let Some(e) = l.force.try_normalize() else {
             return;
         };
-        let x = self.at(l);
-        self.arrow(&l.name, (x, x + e * ARROW_MM), x + e * ARROW_MM);
+        self.arrow(&l.name, self.at(l), e, false);
     }
 
-    /// A force's arrow `from → to` labelled `name` at `end`, the end away from its point.
-    fn arrow(&mut self, name: &str, (from, to): (DVec2, DVec2), end: DVec2) {
+    /// A force's arrow along `e` at its point `x`: from `x`, or ending at `x` (`onto`);
+    /// labelled `name` at the end away from the point.
+    fn arrow(&mut self, name: &str, x: DVec2, e: DVec2, onto: bool) {
+        let away = if onto { -e } else { e };
+        let (from, to) = if onto {
+            (x - e * ARROW_MM, x)
+        } else {
+            (x, x + e * ARROW_MM)
+        };
         let id = self.rec.draw(
             format!("load {name}"),
             Item::Vector { from, to },
             Role::Result,
             &[],
         );
-        let away = if end == from { from - to } else { to - from };
-        self.rec.label(id, name, end, away.normalize_or_zero());
+        self.rec.label(id, name, x + away * ARROW_MM, away);
     }
 
     /// The moment of `l` about `c` (mm), N·m: the arm measured on the drawing.
@@ -689,8 +694,8 @@ const ARM_DIMENSION_MM: f64 = 10.0;
 /// side, from past the slider to past the point — so that the loads along the slide's axis
 /// stay clear of it — and the arm dimensioned from the joint, labelled h₀₋ⱼ: the reaction
 /// stands on the guide at its arm, as the moment equation placed it. Returns the reaction's
-/// point on the guide line, mm.
-fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) -> Option<DVec2> {
+/// point on the guide's line (mm) and the unit normal from the slide's axis to that line.
+fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) -> Option<(DVec2, DVec2)> {
     let PairKind::Prismatic {
         reference,
         dir_link,
@@ -741,7 +746,7 @@ fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) -> Option<DVe
             format!("h_{{{}-{}}}", r.pair.from, r.pair.to),
         );
     }
-    Some(point)
+    Some((point, towards))
 }
 
 /// Draw a reaction found on the group's drawing, at its point (the frame's reaction on a
@@ -749,17 +754,11 @@ fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) -> Option<DVe
 fn show_reaction(sch: &mut Scheme<'_>, r: &Reaction) {
     if let (0, Some(offset)) = (r.pair.from, r.offset) {
         let on_guide = show_guide_arm(sch, r, offset);
-        if let (Some(g), Some(e)) = (on_guide, r.force.try_normalize()) {
+        if let (Some((g, towards)), Some(e)) = (on_guide, r.force.try_normalize()) {
             // The frame's reaction stands on the guide's line: from it when it pushes the
             // block off the guide, onto it when it pulls the block to the guide.
             let name = reaction_name(r.pair.from, r.pair.to);
-            let (at, shift) = point_of(r, sch.board.setup.built);
-            let on_axis = sch.board.setup.built.p[at] + shift / sch.board.setup.mu_l.value();
-            if e.dot(g - on_axis) < 0.0 {
-                sch.arrow(&name, (g, g + e * ARROW_MM), g + e * ARROW_MM);
-            } else {
-                sch.arrow(&name, (g - e * ARROW_MM, g), g - e * ARROW_MM);
-            }
+            sch.arrow(&name, g, e, e.dot(towards) >= 0.0);
             return;
         }
     }
