@@ -194,6 +194,11 @@ impl Scale {
         Self::new(round_sig(mant * decade), quantity)
     }
 
+    /// The next finer round scale along the series (it draws the same thing larger).
+    pub fn finer(self) -> Option<Self> {
+        Self::round_at_least(self.value * (1.0 - 1e-6), 1.0, self.quantity)
+    }
+
     /// SI units per mm.
     pub fn value(&self) -> f64 {
         self.value

@@ -4,6 +4,7 @@
 //! fits. The session decides each figure's μ with these rules; a sheet sizes its own views
 //! (the structural scheme) and its refusals with them.
 
+use super::Figure;
 use crate::geom::DVec2;
 use crate::scale::Scale;
 
@@ -91,4 +92,36 @@ pub(crate) fn fit_scale(start: Scale, overflow: impl Fn(Scale) -> f64) -> Option
         s = next;
     }
     Some(s)
+}
+
+/// Whether every drawing of `figures`, as constructed, fits `room` (mm).
+pub(crate) fn fit_room<'a>(figures: impl IntoIterator<Item = &'a Figure>, room: DVec2) -> bool {
+    figures.into_iter().all(|f| {
+        f.bounds()
+            .is_none_or(|(lo, hi)| (hi - lo).cmple(room).all())
+    })
+}
+
+/// Most finer steps [`finest_fitting`] takes.
+const FINER_STEPS: usize = 6;
+
+/// `built`, drawn at `mu`, redrawn at each next finer round μ ([`Scale::finer`]) while the
+/// drawing `build` constructs there (`None`: it cannot) still `fits`: the largest drawing
+/// that fits its room, each try constructed and measured.
+pub(crate) fn finest_fitting<T>(
+    mut mu: Scale,
+    mut built: T,
+    build: impl Fn(Scale) -> Option<T>,
+    fits: impl Fn(&T) -> bool,
+) -> T {
+    for _ in 0..FINER_STEPS {
+        let Some((next, t)) = mu.finer().and_then(|next| build(next).map(|t| (next, t))) else {
+            break;
+        };
+        if !fits(&t) {
+            break;
+        }
+        (mu, built) = (next, t);
+    }
+    built
 }

@@ -152,20 +152,21 @@ fn one_sheet(
     let mut words_first = figures[..1.min(figures.len())].to_vec();
     words_first.extend(words.iter().cloned());
     words_first.extend(figures.iter().skip(1).cloned());
-    let orders = [
-        blocks.clone(),
+    let others = [
         words_first,
         swapped.into_iter().chain(words.iter().cloned()).collect(),
     ];
-    let mut fallback = None;
-    for ordered in orders {
+    let first = lay_out(sheet, blocks, "cam", title, lang)?;
+    if first.len() == 1 {
+        return Ok(first);
+    }
+    for ordered in others {
         let plates = lay_out(sheet, ordered, "cam", title, lang)?;
         if plates.len() == 1 {
             return Ok(plates);
         }
-        fallback.get_or_insert(plates);
     }
-    fallback.map_or_else(|| lay_out(sheet, blocks, "cam", title, lang), Ok)
+    Ok(first)
 }
 
 /// A law's name in `lang`.

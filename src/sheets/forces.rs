@@ -6,7 +6,7 @@
 //! moment by the polygon against the lever.
 
 use super::captions::{symbols, unit_in, Text};
-use super::layout::{lay_out, results_table, Block, Column, Results, ScaleKey};
+use super::layout::{lay_out, results_table, sheet_name, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
@@ -39,11 +39,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         plates.extend(position_sheet(session, &st, &sc, &f, phi, lang)?);
     }
     for (n, p) in plates.iter_mut().enumerate() {
-        p.name = if n == 0 {
-            "forces".into()
-        } else {
-            format!("forces-{}", n + 1)
-        };
+        p.name = sheet_name("forces", n);
     }
     Ok(plates)
 }
@@ -74,14 +70,14 @@ fn detail_letter(n: usize, lang: Lang) -> &'static str {
     }
 }
 
-/// A force polygon's view captioned `what`, and its details' views (each zone circled on
-/// the polygon and lettered, each detail captioned by its letter and μ_F); the letters run
-/// through the sheet's details in order (`lettered` counts them).
+/// A force polygon's view captioned `what` at its μ_F, and its details' views (each zone
+/// circled on the polygon and lettered, each detail captioned by its letter and μ_F); the
+/// letters run through the sheet's details in order (`lettered` counts them).
 fn polygon_views(
     blocks: &mut Vec<Block>,
     (polygon, details): (&Figure, &[PolygonDetail]),
     what: String,
-    (f, lettered): (&PositionForces, &mut usize),
+    lettered: &mut usize,
     lang: Lang,
 ) {
     let corner = DVec2::new(1.0, 1.0).normalize();
@@ -95,7 +91,12 @@ fn polygon_views(
         let scale = (Key::ForcesScaleF, d.figure.scale);
         views.push(view(&d.figure, letter, scale, lang));
     }
-    blocks.push(view(&marked, what, (Key::ForcesScaleF, f.scale_f), lang));
+    blocks.push(view(
+        &marked,
+        what,
+        (Key::ForcesScaleF, polygon.scale),
+        lang,
+    ));
     blocks.extend(views);
 }
 
@@ -132,7 +133,7 @@ fn position_sheet(
             &mut blocks,
             (&g.polygon, &g.details),
             what,
-            (f, &mut lettered),
+            &mut lettered,
             lang,
         );
     }
@@ -149,7 +150,7 @@ fn position_sheet(
         &mut blocks,
         (&d.polygon, &d.details),
         triangle,
-        (f, &mut lettered),
+        &mut lettered,
         lang,
     );
     let lever = &f.analysis.lever.figure;

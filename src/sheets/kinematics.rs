@@ -5,7 +5,7 @@
 //! field), so the sheet draws the very plans the report reads.
 
 use super::captions::{symbols, unit_in, Text};
-use super::layout::{keyed, lay_out_in_rows, split_table, table, Block};
+use super::layout::{keyed, lay_out_in_rows, sheet_name, split_table, table, Block};
 use super::BuildError;
 use crate::check::Method;
 use crate::geom::DVec2;
@@ -46,16 +46,17 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
         caption,
         keyed(Key::MechanismScaleL, sc.l),
     );
+    let plan: Run = vec![(plan, None)];
     // The structural scheme before the plan, the structural analysis after the plans.
-    let (head, analysis): (Run, Run) = if structure {
+    let (scheme, analysis): (Run, Run) = if structure {
         let (scheme, lines) = super::positions::structure(session, lang)?;
         let text = Block::Text {
             lines,
             size_mm: 3.5,
         };
-        (vec![(scheme, None), (plan, None)], vec![(text, None)])
+        (vec![(scheme, None)], vec![(text, None)])
     } else {
-        (vec![(plan, None)], Vec::new())
+        (Vec::new(), Vec::new())
     };
     let mut lines = vec![
         super::drafting_line(session.drafting(), lang),
@@ -192,10 +193,6 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     };
     // One sheet when it holds everything: the plan of positions, the diagrams beside it, the
     // plans, the rest (the structural scheme first, or where it finds room).
-    let (scheme, plan) = match &head[..] {
-        [scheme, plan] => (vec![scheme.clone()], vec![plan.clone()]),
-        _ => (Vec::new(), head.clone()),
-    };
     let orders = [
         [
             &scheme,
@@ -237,6 +234,7 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     // the acceleration plans and the structural analysis go on the first when it holds them
     // and the two are then filled more evenly. Never a table alone on a sheet: the second
     // always holds the diagrams or the acceleration plans.
+    let head: Run = scheme.into_iter().chain(plan).collect();
     let groups = [head, velocity, acceleration, analysis, diagrams, rest];
     let area = |run: &[(Block, Option<u8>)]| -> f64 {
         run.iter()
@@ -271,11 +269,7 @@ fn renamed(plates: Vec<Plate>) -> Vec<Plate> {
         .into_iter()
         .enumerate()
         .map(|(k, p)| Plate {
-            name: if k == 0 {
-                "kinematics".into()
-            } else {
-                format!("kinematics-{}", k + 1)
-            },
+            name: sheet_name("kinematics", k),
             ..p
         })
         .collect()

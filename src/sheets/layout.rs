@@ -514,11 +514,7 @@ pub(super) fn lay_out_in_rows(
         .into_iter()
         .enumerate()
         .map(|(k, p)| Plate {
-            name: if k == 0 {
-                name.to_string()
-            } else {
-                format!("{name}-{}", k + 1)
-            },
+            name: sheet_name(name, k),
             sheet,
             title_block: title.clone(),
             lang,
@@ -527,6 +523,15 @@ pub(super) fn lay_out_in_rows(
             tables: p.tables,
         })
         .collect())
+}
+
+/// The name of the sheet `k` (0-based) of the plate `stem`: `stem`, `stem-2`, `stem-3`, …
+pub(super) fn sheet_name(stem: &str, k: usize) -> String {
+    if k == 0 {
+        stem.to_string()
+    } else {
+        format!("{stem}-{}", k + 1)
+    }
 }
 
 /// The error for the block `k` that does not fit an empty sheet. The scale it names fits

@@ -7,6 +7,8 @@ pub(super) const PART: Part = Part {
     has: |scene| scene.balancing.is_some(),
     add: |session, rep| session.report_balancing(rep),
 };
+use crate::construct::fit::{finest_fitting, fit_room};
+use crate::construct::{Context, Figure};
 use crate::forces::balancing::{self, BalancingSpec};
 use crate::geom::DVec2;
 use crate::scale::Scale;
@@ -19,61 +21,48 @@ const ROTOR_H: f64 = 180.0;
 const POLYGON_ROOM: DVec2 = DVec2::new(POLYGON_SIDE, POLYGON_SIDE);
 const POLYGON_SIDE: f64 = 210.0;
 
-/// Whether every drawing of `figures` fits `room`.
-fn fits<'a>(figures: impl IntoIterator<Item = &'a crate::construct::Figure>, room: DVec2) -> bool {
-    figures.into_iter().all(|f| {
-        f.bounds()
-            .is_none_or(|(lo, hi)| (hi - lo).cmple(room).all())
-    })
-}
-
-/// The next finer round scale than `s` (1, 2, 2,5, 4, 5 × 10ⁿ).
-fn finer(s: Scale) -> Option<Scale> {
-    Scale::round_at_least(s.value() * (1.0 - 1e-6), 1.0, s.quantity)
-}
-
 /// The rotor balanced with each scale the scene leaves free (μ_l, μ_mρ, μ_mρz) made finer
 /// along the round series, from the textbook's choice, while its drawings still fit their
 /// room on the sheet ([`ROTOR_ROOM`], [`POLYGON_ROOM`]): a rotor of a few masses is drawn
 /// as large as its sheet holds. The balancing keeps the scene's choices in its `spec`.
-fn larger(spec: &BalancingSpec, ctx: &crate::construct::Context) -> Result<Balancing, StudyError> {
+fn larger(spec: &BalancingSpec, ctx: &Context) -> Result<Balancing, StudyError> {
     let mut b = balancing::balance(spec, ctx)?;
-    type Get = fn(&Balancing) -> (Option<Scale>, Vec<&crate::construct::Figure>, DVec2);
-    let free: [(bool, Get); 3] = [
-        (spec.scale_l.is_none(), |b| {
-            (Some(b.scale_l), b.rotor.iter().collect(), ROTOR_ROOM)
-        }),
-        (spec.scale_mr.is_none(), |b| {
-            (Some(b.scale_mr), vec![&b.statics], POLYGON_ROOM)
-        }),
-        (spec.scale_mrz.is_none(), |b| {
-            (b.scale_mrz, b.moments.iter().collect(), POLYGON_ROOM)
-        }),
+    // Each scale: whether it is free, its value with its drawings and their room, its setter.
+    type Get = fn(&Balancing) -> (Option<Scale>, Vec<&Figure>, DVec2);
+    type Set = fn(&mut BalancingSpec, Scale);
+    let free: [(bool, Get, Set); 3] = [
+        (
+            spec.scale_l.is_none(),
+            |b| (Some(b.scale_l), b.rotor.iter().collect(), ROTOR_ROOM),
+            |s, mu| s.scale_l = Some(mu),
+        ),
+        (
+            spec.scale_mr.is_none(),
+            |b| (Some(b.scale_mr), vec![&b.statics], POLYGON_ROOM),
+            |s, mu| s.scale_mr = Some(mu),
+        ),
+        (
+            spec.scale_mrz.is_none(),
+            |b| (b.scale_mrz, b.moments.iter().collect(), POLYGON_ROOM),
+            |s, mu| s.scale_mrz = Some(mu),
+        ),
     ];
     let mut chosen = spec.clone();
-    for (k, (is_free, get)) in free.into_iter().enumerate() {
-        if !is_free {
+    for (is_free, get, set) in free {
+        let Some(mu) = get(&b).0.filter(|_| is_free) else {
             continue;
-        }
-        for _ in 0..6 {
-            let Some(next) = get(&b).0.and_then(finer) else {
-                break;
-            };
+        };
+        let build = |next| {
             let mut trial = chosen.clone();
-            match k {
-                0 => trial.scale_l = Some(next),
-                1 => trial.scale_mr = Some(next),
-                _ => trial.scale_mrz = Some(next),
-            }
-            let Ok(t) = balancing::balance(&trial, ctx) else {
-                break;
-            };
-            let (_, figures, room) = get(&t);
-            if !fits(figures, room) {
-                break;
-            }
-            chosen = trial;
-            b = t;
+            set(&mut trial, next);
+            balancing::balance(&trial, ctx).ok()
+        };
+        b = finest_fitting(mu, b, build, |t| {
+            let (_, figures, room) = get(t);
+            fit_room(figures, room)
+        });
+        if let Some(now) = get(&b).0.filter(|&now| now != mu) {
+            set(&mut chosen, now);
         }
     }
     b.spec = spec.clone();
@@ -139,17 +128,20 @@ mod tests {
                 b.spec.scale_l.is_none() && b.spec.scale_mr.is_none(),
                 "{name}"
             );
-            assert!(fits(&b.rotor, ROTOR_ROOM) && fits([&b.statics], POLYGON_ROOM));
+            assert!(fit_room(&b.rotor, ROTOR_ROOM) && fit_room([&b.statics], POLYGON_ROOM));
             let ctx = Context::for_model_size(1.0, Drafting::EXACT).expect("context");
             let mut spec = b.spec.clone();
-            spec.scale_l = finer(b.scale_l);
+            spec.scale_l = b.scale_l.finer();
             let over = balancing::balance(&spec, &ctx).expect("finer μ_l");
-            assert!(!fits(&over.rotor, ROTOR_ROOM), "{name}: μ_l could be finer");
+            assert!(
+                !fit_room(&over.rotor, ROTOR_ROOM),
+                "{name}: μ_l could be finer"
+            );
             let mut spec = b.spec.clone();
-            spec.scale_mr = finer(b.scale_mr);
+            spec.scale_mr = b.scale_mr.finer();
             let over = balancing::balance(&spec, &ctx).expect("finer μ_mρ");
             assert!(
-                !fits([&over.statics], POLYGON_ROOM),
+                !fit_room([&over.statics], POLYGON_ROOM),
                 "{name}: μ_mρ could be finer"
             );
         }

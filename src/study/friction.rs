@@ -7,9 +7,10 @@ pub(super) const PART: Part = Part {
     has: |scene| !scene.friction.is_empty(),
     add: |session, rep| session.report_friction(rep),
 };
+use crate::construct::fit::{finest_fitting, fit_room};
 use crate::forces::friction::{self, FrictionCase, FrictionError};
 use crate::geom::DVec2;
-use crate::scale::{Quantity, Scale};
+use crate::scale::Quantity;
 
 /// The room of each force triangle of a case on the friction sheet, mm.
 const FORCES_ROOM: DVec2 = DVec2::new(FORCES_SIDE, FORCES_SIDE);
@@ -20,7 +21,7 @@ const FORCES_SIDE: f64 = 160.0;
 /// drawing of the case, constructed and measured, still fits [`FORCES_ROOM`]: the triangles
 /// as large as the sheet holds them beside the schemes. The case keeps the scene's choice.
 fn larger(case: &FrictionCase, ctx: &crate::construct::Context) -> Result<Solved, FrictionError> {
-    let mut solved = friction::solve(case, ctx)?;
+    let solved = friction::solve(case, ctx)?;
     if case.scale_f.is_some() {
         return Ok(solved);
     }
@@ -31,29 +32,17 @@ fn larger(case: &FrictionCase, ctx: &crate::construct::Context) -> Result<Solved
             .map(|d| d.figure.clone())
             .collect()
     };
-    for _ in 0..6 {
-        let Some(mu) = forces(&solved).first().map(|f| f.scale) else {
-            break;
-        };
-        let Some(next) = Scale::round_at_least(mu.value() * (1.0 - 1e-6), 1.0, mu.quantity) else {
-            break;
-        };
+    let Some(mu) = forces(&solved).first().map(|f| f.scale) else {
+        return Ok(solved);
+    };
+    let build = |next| {
         let trial = FrictionCase {
             scale_f: Some(next),
             ..case.clone()
         };
-        let Ok(t) = friction::solve(&trial, ctx) else {
-            break;
-        };
-        let fits = forces(&t).iter().all(|f| {
-            f.bounds()
-                .is_none_or(|(lo, hi)| (hi - lo).cmple(FORCES_ROOM).all())
-        });
-        if !fits {
-            break;
-        }
-        solved = t;
-    }
+        friction::solve(&trial, ctx).ok()
+    };
+    let mut solved = finest_fitting(mu, solved, build, |t| fit_room(&forces(t), FORCES_ROOM));
     solved.case = case.clone();
     Ok(solved)
 }
@@ -99,6 +88,7 @@ impl<'s> Session<'s> {
 mod tests {
     use super::*;
     use crate::construct::Drafting;
+    use crate::scale::Scale;
 
     /// A free μ_F is the finest round one whose force drawings fit their room (one step finer
     /// one would not); the case keeps the scene's choice; a given μ_F stands.

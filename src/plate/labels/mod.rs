@@ -4,10 +4,10 @@
 //! whose points coincide on the sheet (within [`COINCIDENT_MM`]) become one joint label written
 //! as the textbook does, `p ≡ b₃ ≡ d` (the figure's order, the pole first). Every label then
 //! tries positions around its point — its preferred direction first, then sixteen directions
-//! at three distances, a joint label also from each corner of its point — and keeps the one that collides least with what is already placed
-//! (labels, captions, text blocks, tables) and with the lines and symbols of the drawing (the
-//! main lines weigh most), never leaving the frame nor entering the title block when it can
-//! help it. Crowded labels are placed first; the order is deterministic, so is the layout.
+//! at three distances, a joint label also from each corner of its point — and keeps the one
+//! that collides least with what is already placed (labels, captions, text blocks, tables)
+//! and with the lines and symbols of the drawing (the main lines weigh most), never leaving
+//! the frame nor entering the title block when it can help it. Crowded labels are placed first; the order is deterministic, so is the layout.
 //! The SVG writer writes the texts from this layout, and the tests check its boxes.
 
 use super::items::{item_outlines, Outline, Shape, JOINT_RADIUS_MM};
@@ -355,8 +355,6 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
     joined
 }
 
-/// Places labels one by one against what is already on the sheet, then moves those still
-/// colliding (alone, or together with a label in their way) while that lowers the collisions.
 mod dimension;
 pub use dimension::struck_dimension_texts;
 mod place;
