@@ -341,3 +341,53 @@ fn s_has_no_step_where_a_phase_meets_a_dwell() {
         );
     }
 }
+
+/// When S is given and differentiated, the tangent the law fixes at a phase's ends is drawn
+/// and taken where nothing is built on it (issue 19, item 2): d²S/dφ² starts and ends on the
+/// abscissa under the sine law, whose acceleration does not jump there; before, it was its
+/// smooth curve extended past the last mid-interval point, a hook at each phase end. Under
+/// the cosine law it is not zero there (a soft shock) and stays extended. dS/dφ, whose chords
+/// are drawn again, keeps its extended ends: the chord method's own error, which the test of
+/// its convergence (tests/cam.rs) holds at second order.
+#[test]
+fn a_differentiated_s_gives_d2s_from_the_abscissa_where_the_law_has_it_there() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("constructions/cam-central.toml");
+    let text = std::fs::read_to_string(&path).expect("cam-central");
+    assert!(text.contains("law = \"sine\""));
+    for (law, flat) in [("sine", true), ("cosine", false)] {
+        let s = tmm::scene::parse(&text.replace("\"sine\"", &format!("\"{law}\"")), &path)
+            .unwrap_or_else(|e| panic!("{law}: {e}"));
+        let cam = Session::new(&s, Drafting::EXACT)
+            .cam()
+            .unwrap_or_else(|e| panic!("{law}: {e}"));
+        let d = &cam.diagrams;
+        let st = cam.spec.starts();
+        for (group, phase) in [(1u32, 0usize), (2, 2)] {
+            let curve = points(step(&d.d2s_view, group, "smooth curve d^2S/dφ^2"));
+            let (first, last) = (curve[0], curve[curve.len() - 1]);
+            assert!(
+                (first.x - d.phi.to_mm(st[phase])).abs() < 1e-9
+                    && (last.x - d.phi.to_mm(st[phase + 1])).abs() < 1e-9,
+                "{law}: the curve spans the phase"
+            );
+            let off = first.y.abs().max(last.y.abs());
+            let rays = d
+                .d2s_view
+                .steps
+                .iter()
+                .filter(|s| {
+                    s.group == group
+                        && s.note
+                            .starts_with("ray from the pole parallel to the tangent")
+                })
+                .count();
+            if flat {
+                assert!(off < 1e-9, "{law} phase {phase}: {off} mm off the abscissa");
+                assert_eq!(rays, 2, "{law} phase {phase}: the tangents' rays");
+            } else {
+                assert!(off > 1.0, "{law} phase {phase}: {off} mm");
+                assert_eq!(rays, 0, "{law} phase {phase}");
+            }
+        }
+    }
+}

@@ -794,3 +794,67 @@ fn the_guide_reaction_stands_at_its_arm_and_the_balancing_force_at_the_end_of_it
         assert!(at.length() > 10.0, "its arm is {} mm", at.length());
     });
 }
+
+/// Issue 19 item 1: a force whose moment a group's equation takes has its arm h drawn from
+/// the moment centre at right angles to its line of action, and the line of action drawn on
+/// to the arm's foot: the foot lies on the force's arrow or on a thin line from its point
+/// (before, the arms of G₂ and F_и2 ended in empty paper, 100 mm from their forces).
+#[test]
+fn every_arm_ends_on_its_forces_line_of_action() {
+    /// The distance from `p` to the segment `a`–`b`, mm.
+    fn off(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+        let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+        p.distance(a + (b - a) * t)
+    }
+    let mut arms = 0;
+    for scene in ["constructions/shaper.toml", "constructions/v-engine.toml"] {
+        each_position(scene, |f| {
+            for g in &f.analysis.polygons.groups {
+                let steps = &g.scheme.steps;
+                for arm in steps.iter().filter(|s| s.note.starts_with("arm of ")) {
+                    let Item::Segment(h) = arm.item else {
+                        continue;
+                    };
+                    let name = arm
+                        .note
+                        .trim_start_matches("arm of ")
+                        .split(" about")
+                        .next()
+                        .unwrap_or_default();
+                    let lines: Vec<(DVec2, DVec2)> = steps
+                        .iter()
+                        .filter_map(|s| match s.item {
+                            Item::Vector { from, to } if s.note == format!("load {name}") => {
+                                Some((from, to))
+                            }
+                            Item::Segment(l)
+                                if s.note
+                                    == format!(
+                                        "line of action of {name} to the foot of its arm"
+                                    ) =>
+                            {
+                                Some((l.from, l.to))
+                            }
+                            _ => None,
+                        })
+                        .collect();
+                    assert!(!lines.is_empty(), "{scene} {}: {name} not drawn", f.label);
+                    let (a, b) = lines[0];
+                    let square = (h.to - h.from).normalize().dot((b - a).normalize());
+                    assert!(square.abs() < 1e-9, "{}: arm of {name} not square", f.label);
+                    let gap = lines
+                        .iter()
+                        .map(|&(a, b)| off(h.to, a, b))
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(
+                        gap < 1e-6,
+                        "{scene} {}: the arm of {name} ends {gap} mm off it",
+                        f.label
+                    );
+                    arms += 1;
+                }
+            }
+        });
+    }
+    assert!(arms >= 8, "{arms} arms");
+}

@@ -280,3 +280,69 @@ fn no_joint_label_of_a_plan_is_struck_by_its_lines() {
     assert!(seen > 30, "{seen} joint labels");
     assert!(struck.is_empty(), "{}", struck.join("\n"));
 }
+
+/// The diagrams of a point stacked on the kinematic sheet (S over dS/dφ over d²S/dφ², ω
+/// over dω/dφ) keep their texts in rows of their own (item 6): the title at the top of a
+/// lower diagram's ordinate axis shares no row with the position numbers under the φ axis
+/// above it, nor with the pole distance H dimensioned under the fan above it. Before, `1
+/// dS/dφ 3 4 …` read as one row under the S diagram, and `H₁ … d²S/dφ²` as another.
+#[test]
+fn a_stacked_diagrams_axis_title_has_a_row_of_its_own() {
+    // Vertical room kept between the title's box and another text's, mm.
+    const ROW_MM: f64 = 1.0;
+    let mut titles = 0;
+    for scene in LINKAGES.split(' ') {
+        for p in sheets_of(scene) {
+            let l = layout(&p);
+            let note = |x: &tmm::plate::PlacedLabel| {
+                let v = &p.views[x.view];
+                v.figure.steps[x.steps[0].0 as usize].note.clone()
+            };
+            for t in l.labels.iter().filter(|x| {
+                let n = note(x);
+                n.starts_with("ordinate axis ") && !n.ends_with(" S")
+            }) {
+                let v = &p.views[t.view];
+                titles += 1;
+                let band = (t.rect.min.y - ROW_MM, t.rect.max.y + ROW_MM);
+                for o in l
+                    .labels
+                    .iter()
+                    .filter(|o| o.view == t.view && o.text != t.text)
+                {
+                    let shares = o.rect.max.y > band.0 && o.rect.min.y < band.1;
+                    let near = (o.rect.min.x - t.rect.max.x).max(t.rect.min.x - o.rect.max.x);
+                    assert!(
+                        !(shares && near < 30.0),
+                        "{scene}/{}: “{}” ({}) {:?} in the row of “{}” ({}) {:?}",
+                        p.name,
+                        t.text,
+                        note(t),
+                        t.rect,
+                        o.text,
+                        note(o),
+                        o.rect
+                    );
+                }
+                // The pole distance's dimension line of the diagram above.
+                for s in &v.figure.steps {
+                    if let Item::Dimension { from, to, offset } = s.item {
+                        let n = (to - from).normalize().perp() * offset;
+                        let (a, b) = (v.to_sheet(from + n), v.to_sheet(to + n));
+                        let x_near = a.x.min(b.x) < t.rect.max.x + 30.0
+                            && a.x.max(b.x) > t.rect.min.x - 30.0;
+                        let y_in = a.y > band.0 - 3.5 && a.y < band.1 + 3.5;
+                        assert!(
+                            !(x_near && y_in),
+                            "{scene}/{}: “{}” beside {} (its text 3.5 mm over the line)",
+                            p.name,
+                            t.text,
+                            s.note
+                        );
+                    }
+                }
+            }
+        }
+    }
+    assert!(titles >= 8, "{titles} axis titles");
+}

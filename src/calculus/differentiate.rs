@@ -415,12 +415,19 @@ fn chords(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusErro
         mid_pts.push(p);
     }
     let drawn: Vec<f64> = mid_pts.iter().map(|p| p.y - o.y).collect();
-    let node_pts: Vec<DVec2> = (0..=n)
+    let mut node_pts: Vec<DVec2> = (0..=n)
         .map(|k| {
             let y = read(&drawn, 0.5, src.periodic, k as f64);
             DVec2::new(o.x + k as f64 * run, o.y + y)
         })
         .collect();
+    // An end whose tangent the law fixes: the node there from the ray parallel to it.
+    for (k, dir) in [(0, layout.end_tangents[0]), (n, layout.end_tangents[1])] {
+        if let Some(dir) = dir {
+            node_pts[k] = end_node(figs, st, &pc, k, dir)?;
+        }
+    }
+    let rec = figs.built();
     let node: Vec<f64> = node_pts[..d.x_node.len()]
         .iter()
         .map(|&p| read_ordinate(rec, o, p).1)
@@ -446,6 +453,67 @@ fn chords(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusErro
     d.node = node;
     d.curve = curve;
     finish(d)
+}
+
+/// Half the length of a tangent drawn at a diagram's end, mm.
+const END_TANGENT_MM: f64 = 8.0;
+
+/// The derivative's node `k` at an end of the given diagram from the tangent there (direction
+/// `dir`, figure mm): the tangent drawn through the node, the ray from the pole parallel to
+/// it cut by the ordinate axis, the cut projected to the node's ordinate and marked.
+fn end_node(
+    figs: &mut Figures<'_>,
+    st: &Start,
+    pc: &PoleCut,
+    k: usize,
+    dir: DVec2,
+) -> Result<DVec2, CalculusError> {
+    let p = st.pts[k];
+    let half = dir.normalize_or_zero() * END_TANGENT_MM;
+    let tangent = thin(
+        figs.given(),
+        format!("tangent at node {k}, as the law fixes it"),
+        p - half,
+        p + half,
+        &[],
+    );
+    let from = figs.across(&[tangent]);
+    let rec = figs.built();
+    let o = st.layout.origin;
+    let foot = DVec2::new(st.layout.ray_x(o), o.y);
+    let c = cut(
+        rec,
+        Line::new(pc.pole, dir),
+        Line::new(foot, DVec2::Y),
+        k,
+        "ordinate axis",
+    )?;
+    let mut deps = vec![pc.pole_id];
+    deps.extend(from);
+    let ray = thin(
+        rec,
+        format!("ray from the pole parallel to the tangent at node {k}"),
+        pc.pole,
+        c,
+        &deps,
+    );
+    let at = DVec2::new(o.x + k as f64 * st.run, c.y);
+    if (at.x - c.x).abs() > rec.tolerances().coincident {
+        thin(
+            rec,
+            format!("projection of the tangent's cut {k}"),
+            c,
+            at,
+            &[ray],
+        );
+    }
+    rec.draw(
+        format!("node point {k} from the tangent"),
+        Item::Point(at),
+        Role::Result,
+        &[ray],
+    );
+    Ok(at)
 }
 
 /// Every value read must be finite.

@@ -255,6 +255,12 @@ pub struct Layout {
     pub pole_dimension_mm: f64,
     /// The preferred direction of the pole's label from the pole.
     pub pole_label_toward: DVec2,
+    /// The tangents to the given curve at its first and last node that the draughtsman
+    /// draws where the law fixes them (a cam's phase meeting a dwell without a shock:
+    /// horizontal), figure mm directions. The method of chords then takes the derivative
+    /// there from the ray parallel to the tangent instead of extending the smooth curve past
+    /// the last mid-interval point. `None`: extended.
+    pub end_tangents: [Option<DVec2>; 2],
 }
 
 impl Layout {
@@ -274,7 +280,15 @@ impl Layout {
             draw_axes: true,
             pole_dimension_mm: -7.0,
             pole_label_toward: DVec2::new(-0.3, 1.0),
+            end_tangents: [None, None],
         }
+    }
+
+    /// The tangents to the given curve at its first and last node, where they are known
+    /// (see [`Layout::end_tangents`]).
+    pub fn tangents_at_ends(mut self, first: Option<DVec2>, last: Option<DVec2>) -> Self {
+        self.end_tangents = [first, last];
+        self
     }
 
     /// The rays run to the vertical at abscissa `x` (figure mm), the pole H left of it.

@@ -243,6 +243,42 @@ fn non_periodic_diagram_and_its_ends() {
     assert!((e - h * h / 4.0).abs() < 1e-9, "{e}");
 }
 
+/// A tangent drawn at an end (Layout::tangents_at_ends) gives the node there from its ray:
+/// y = x³ on [0, 2] with its tangent at x = 0 horizontal and at x = 2 of slope 12 (drawn
+/// mm) gives y′ = 0 and 12 exactly at the ends, where the extended curve gives h²/4 too
+/// much; the inner nodes and the mid-interval values are those of the plain method.
+#[test]
+fn an_end_tangent_gives_the_node_at_that_end() {
+    let src = Diagram::sample(0.0, 2.0, 16, false, |x| x * x * x).expect("cubic");
+    let sc = Scales {
+        x: scale(0.02, Quantity::Angle),
+        y: scale(0.1, Quantity::Length),
+    };
+    let h = 25.0;
+    let (plain, _) = chords(&src, sc, h, 0.0);
+    let mut rec = recorder(sc.y.value() / (h * sc.x.value()), 0.0);
+    // The slope 12 in drawn mm: Δy/Δx = 12·μ_x/μ_y.
+    let end = DVec2::new(1.0, 12.0 * sc.x.value() / sc.y.value());
+    let lay = layout().tangents_at_ends(Some(DVec2::X), Some(end));
+    let d = Method::Chords
+        .differentiate(&mut rec, &src, sc, h, &lay)
+        .expect("chords");
+    assert!(d.node[0].abs() < 1e-12, "{}", d.node[0]);
+    assert!((d.node[16] - 12.0).abs() < 1e-9, "{}", d.node[16]);
+    assert!((plain.node[0] - src.dx * src.dx / 4.0).abs() < 1e-9);
+    assert_eq!(d.mid, plain.mid);
+    assert_eq!(d.node[1..16], plain.node[1..16]);
+    let rays = rec
+        .steps()
+        .iter()
+        .filter(|s| {
+            s.note
+                .starts_with("ray from the pole parallel to the tangent")
+        })
+        .count();
+    assert_eq!(rays, 2);
+}
+
 #[test]
 fn a_dwell_has_a_zero_derivative_exactly() {
     // Dwell (flat) on nodes 0..=6, then a rise.

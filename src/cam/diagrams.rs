@@ -289,17 +289,21 @@ impl Pass<'_> {
         )?)
     }
 
-    /// Differentiate the nodes `src` drawn in `given` at `scales` by chords into `built`.
+    /// Differentiate the nodes `src` drawn in `given` at `scales` by chords into `built`; at
+    /// an end whose tangent the law makes horizontal (`flat`: the first, the last) the node
+    /// is taken from that tangent.
     fn differentiate(
         &self,
         (given, built): (&mut Recorder, &mut Recorder),
         src: &Diagram,
         scales: Scales,
+        flat: bool,
     ) -> Result<Derivative, CamError> {
         let run = scales.x.to_mm(src.dx);
         let levels = cut_levels(&src.y, scales.y, run, self.h);
         let figs = Figures::Two { given, built };
-        let layout = self.layout(&levels);
+        let tangent = flat.then_some(DVec2::X);
+        let layout = self.layout(&levels).tangents_at_ends(tangent, tangent);
         Ok(Calc::Chords.differentiate_in(figs, src, scales, self.h, &layout)?)
     }
 }

@@ -35,8 +35,12 @@ use thiserror::Error;
 pub const PLAN_MM: f64 = 80.0;
 /// Preferred height of a diagram, mm.
 const DIAGRAM_MM: f64 = 35.0;
-/// Gap between stacked diagrams, mm.
-const DIAGRAM_GAP: f64 = 16.0;
+/// Gap between stacked diagrams, mm: from the lowest ordinate of the diagram above to the
+/// highest of the one below. The axis above runs 6 mm below its points and the one below 12 mm
+/// above its own, with its title at the tip; the gap keeps that title clear of the row the
+/// diagram above writes under its φ axis (the position numbers) and of its pole distance
+/// H dimensioned 7 mm under its points.
+const DIAGRAM_GAP: f64 = 30.0;
 
 /// The `[kinematics]` section: scales and choices of the kinematic analysis. Every field is
 /// optional; `None` leaves the choice to the analysis.

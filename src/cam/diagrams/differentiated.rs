@@ -62,12 +62,20 @@ pub(super) fn differentiated(
             .collect();
         let src = Diagram::new(st[phase], dx, nodes, false)?;
         let lie = Lie::of(spec, phi, idx);
+        // The law fixes dS/dφ's tangent at the phase's ends, horizontal, where the
+        // acceleration does not jump: d²S/dφ² is taken from it there. S's tangent is not
+        // taken: dS/dφ's chords are drawn again, and an exact end beside the chord method's
+        // biased mid-interval values (h²/24·S‴) would make d²S/dφ² converge at first order
+        // next to the ends (at 96 intervals its largest error grew from 0,05 % to 1,3 %);
+        // dS/dφ ends where its smooth curve does, the method's error in view.
+        let shock = if phase == 0 { spec.rise } else { spec.ret }.shock();
         let v = lie
             .pass(h2, ["φ", "S", "dS/dφ"], ["P_2", "P_2′", "H_2"])
             .differentiate(
                 (&mut views.s, &mut views.v),
                 &src,
                 Scales { x: phi, y: s_scale },
+                false,
             )?;
         let a = lie
             .pass(h1, ["φ", "dS/dφ", "d^2S/dφ^2"], ["P_1", "P_1′", "H_1"])
@@ -78,6 +86,7 @@ pub(super) fn differentiated(
                     x: phi,
                     y: ds_scale,
                 },
+                shock == Shock::None,
             )?;
         let base = idx * (n + 1);
         for k in 0..=n {

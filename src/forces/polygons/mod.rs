@@ -189,11 +189,20 @@ impl<'a> Scheme<'a> {
         let sign = (x - c).perp_dot(e).signum();
         if arm.drawn_mm > 0.5 {
             self.arms += 1;
+            // The line of action extended from the force's point to the arm's foot.
+            let line = (foot.distance(x) > 0.5).then(|| {
+                self.rec.draw(
+                    format!("line of action of {} to the foot of its arm", l.name),
+                    Item::Segment(Segment::new(x, foot)),
+                    Role::Construction,
+                    &[],
+                )
+            });
             let id = self.rec.draw(
                 format!("arm of {} about the moment centre", l.name),
                 Item::Segment(Segment::new(c, foot)),
                 Role::Construction,
-                &[],
+                line.as_slice(),
             );
             self.rec.label(
                 id,
