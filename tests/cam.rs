@@ -30,7 +30,7 @@ fn rows<'a>(r: &'a tmm::Report, q: &str) -> Vec<&'a tmm::Row> {
 
 #[test]
 fn seed000_report_matches_the_closed_form() {
-    let r = report("cam-seed000", 0.0);
+    let r = report("shaper", 0.0);
     let s = rows(&r, "s");
     assert_eq!(s.len(), 26);
     let s_max = s.iter().map(|x| x.analytic).fold(0.0, f64::max);
@@ -92,8 +92,8 @@ fn seed000_report_matches_the_closed_form() {
 
 #[test]
 fn reading_to_half_a_millimetre_shows_the_drafting_error() {
-    let exact = report("cam-seed000", 0.0);
-    let drawn = report("cam-seed000", 0.5);
+    let exact = report("shaper", 0.0);
+    let drawn = report("shaper", 0.5);
     let r0 = rows(&exact, "r_min")[0];
     let r1 = rows(&drawn, "r_min")[0];
     assert_eq!(r0.analytic, r1.analytic);
@@ -313,11 +313,11 @@ fn meaningless_cam_values_are_refused_with_key_and_range() {
 #[test]
 fn every_documented_number_of_divisions_draws() {
     for (name, n) in [
-        ("cam-seed000", 2usize),
+        ("shaper", 2usize),
         ("cam-central", 2),
         ("cam-pz4", 2),
         ("cam-central", 60),
-        ("cam-seed000", 200),
+        ("shaper", 200),
     ] {
         let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("constructions")

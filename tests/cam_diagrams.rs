@@ -20,7 +20,7 @@ const SCENES: [&str; 7] = [
     "cam-cusp",
     "cam-pz4",
     "cam-pz5",
-    "cam-seed000",
+    "shaper",
     "cam-shock",
     "cam-undercut",
 ];
@@ -216,7 +216,7 @@ fn ds_dphi_starts_and_ends_where_the_law_does() {
     for name in [
         "cam-pz5",
         "cam-pz4",
-        "cam-seed000",
+        "shaper",
         "cam-cusp",
         "cam-undercut",
         "cam-shock",

@@ -43,12 +43,16 @@ fn render_writes_svg_and_png_and_is_byte_identical() {
     assert_eq!(
         names,
         [
+            "shaper/cam.png",
+            "shaper/cam.svg",
             "shaper/dynamics.png",
             "shaper/dynamics.svg",
             "shaper/forces-2.png",
             "shaper/forces-2.svg",
             "shaper/forces.png",
             "shaper/forces.svg",
+            "shaper/gears.png",
+            "shaper/gears.svg",
             "shaper/kinematics-2.png",
             "shaper/kinematics-2.svg",
             "shaper/kinematics.png",
@@ -467,7 +471,7 @@ fn render_of_a_scene_that_asks_for_nothing_says_so() {
     std::fs::write(&empty, "[task]\ntitle = \"Ничего\"\n").unwrap();
     let no_plates = edited_scene(&dir, "no-plates.toml", |t| {
         t.replace(
-            "wanted = [\"positions\", \"kinematics\", \"forces\", \"dynamics\"]",
+            "wanted = [\"positions\", \"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\"]",
             "wanted = []",
         )
     });
@@ -559,8 +563,8 @@ fn a_work_that_is_a_rounding_residue_is_printed_as_zero() {
 fn scales_far_out_of_range_are_refused_at_load_in_every_section() {
     let dir = scratch("scales-everywhere");
     let cases: [(&str, &str, &str, &str); 7] = [
-        ("cam-seed000", "[cam]\n", "scale_s", "cam.scale_s"),
-        ("cam-seed000", "[cam]\n", "scale_phi", "cam.scale_phi"),
+        ("shaper", "[cam]\n", "scale_s", "cam.scale_s"),
+        ("shaper", "[cam]\n", "scale_phi", "cam.scale_phi"),
         (
             "rotor-dynamic",
             "[balancing]\n",

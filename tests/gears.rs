@@ -28,7 +28,7 @@ fn row<'a>(v: &'a serde_json::Value, q: &str, method: &str) -> &'a serde_json::V
 
 #[test]
 fn seed000_pair_rack_and_reducer_in_the_report() {
-    let v = report_json("constructions/gears-seed000.toml", "0");
+    let v = report_json("constructions/shaper.toml", "0");
     let aw = row(&v, "alpha_w", "formula");
     assert!(aw["position"].is_null());
     assert!((num(aw, "analytic") / 26.58075 - 1.0).abs() < 1e-6);
@@ -58,7 +58,7 @@ fn seed000_pair_rack_and_reducer_in_the_report() {
 
 #[test]
 fn the_meshing_picture_read_at_half_a_millimetre() {
-    let v = report_json("constructions/gears-seed000.toml", "0.5");
+    let v = report_json("constructions/shaper.toml", "0.5");
     let r = row(&v, "eps_alpha", "meshing");
     let (g, a) = (num(r, "graphical"), num(r, "analytic"));
     // B₁B₂ read to 0.5 mm at μ_l = 0.002 m/mm over p_b = 41.33 mm.
@@ -287,11 +287,12 @@ fn refusals_name_the_key_that_makes_them() {
 #[test]
 fn a_drafting_that_reads_the_output_as_zero_names_drafting() {
     // Seed 000's reducer: the output's intercept on the plan of ω is 6.3 mm (ω₈ = 15.75 rad/s
-    // at μ_ω = 2.5 rad/(s·mm): H = 20 mm keeps the satellite's 81 mm within the reach).
-    for (d, ok) in [("12.5", true), ("12.7", false), ("100", false)] {
+    // at μ_ω = 2.5 rad/(s·mm): H = 20 mm keeps the satellite's 81 mm within the reach). The
+    // project's scene also holds the dynamics, whose energy diagram reads as 0 by 100 mm.
+    for (d, ok) in [("12.5", true), ("12.7", false), ("20", false)] {
         let o = tmm(&[
             "report",
-            "constructions/gears-seed000.toml",
+            "constructions/shaper.toml",
             "--drafting",
             d,
             "--format",
@@ -310,6 +311,12 @@ fn a_drafting_that_reads_the_output_as_zero_names_drafting() {
             assert!(!err.contains("does not turn"), "{err}");
         }
     }
+    let o = tmm(&["report", "constructions/shaper.toml", "--drafting", "100"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("--drafting 100 mm reads every ordinate of the diagram drawn at μ_T as 0"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -439,9 +446,9 @@ fn gear_views(scene: &str, lang: tmm::Lang) -> Vec<tmm::plate::View> {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(scene);
     let s = tmm::load(&path).expect("scene");
     let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
-    let plates = tmm::sheets::build_all(&session, lang).expect("plates");
+    let plates = tmm::sheets::build(&session, tmm::PlateKind::Gears, lang).expect("plates");
     assert_eq!(plates.len(), 1, "{scene}: one gear sheet");
-    plates.into_iter().flat_map(|(_, p)| p.views).collect()
+    plates.into_iter().flat_map(|p| p.views).collect()
 }
 
 /// The label texts of the steps of `f` whose note starts with `note`.
@@ -570,8 +577,7 @@ fn rack_generation_draws_a_few_numbered_positions_and_the_undercut_in_a_detail()
 
 #[test]
 fn the_drawn_rack_positions_are_recorded_ones() {
-    let path =
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions/gears-seed000.toml");
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions/shaper.toml");
     let s = tmm::load(&path).expect("scene");
     let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
     let g = session.gears().expect("gears");
@@ -631,7 +637,7 @@ fn the_plan_of_angular_velocities_names_every_ray_and_prints_mu_omega() {
         // Seed 000's reducer at n₁ = 1400 rpm: ω₁ = 146.608 rad/s, u₁₈ = i₁₂·i₃H·i₇₈ = −9.30818
         // (i₁₂ = −74/29, i₃H = 1 − z₄z₆/(z₃z₅), i₇₈ = −100/25).
         (
-            "constructions/gears-seed000.toml",
+            "constructions/shaper.toml",
             tmm::Lang::Uk,
             "μ_{ω} = μ_{v}/(μ_{l}·H) = 2,5 рад/(с·мм)",
             2.5,

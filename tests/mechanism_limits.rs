@@ -12,7 +12,7 @@ use support::{root, scratch};
 fn shaper_kinematics() -> String {
     let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).expect("shaper");
     text.split("\n[forces]").next().unwrap_or_default().replace(
-        "\"kinematics\", \"forces\", \"dynamics\"]",
+        "\"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\"]",
         "\"kinematics\"]",
     )
 }

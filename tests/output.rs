@@ -101,7 +101,7 @@ fn the_bench_times_a_scenes_plates_as_png() {
         .find(|t| t["name"] == "png shaper at 150 dpi")
         .expect("a PNG row");
     assert!(row["per_second"].as_f64().unwrap() > 0.0);
-    assert!(row["note"].as_str().unwrap().contains("(4)"), "{row}");
+    assert!(row["note"].as_str().unwrap().contains("(7)"), "{row}");
 }
 
 /// The `/MediaBox [x0 y0 x1 y1]` of every page of a PDF written without object streams, in
@@ -144,12 +144,12 @@ fn render_writes_one_pdf_per_scene_with_every_sheet_a_page_at_1_to_1() {
     let text = String::from_utf8_lossy(&pdf);
     assert_eq!(
         text.matches("/Type /Page\n").count(),
-        5,
-        "five sheets, five pages"
+        7,
+        "the project's seven sheets, seven pages"
     );
-    assert!(text.contains("/Count 5"));
+    assert!(text.contains("/Count 7"));
     let boxes = media_boxes_mm(&pdf);
-    assert_eq!(boxes.len(), 5, "{boxes:?}");
+    assert_eq!(boxes.len(), 7, "{boxes:?}");
     for (w, h) in &boxes {
         assert!(
             (w - 841.0).abs() < 0.5 && (h - 594.0).abs() < 0.5,
@@ -185,9 +185,9 @@ fn render_writes_one_pdf_per_scene_with_every_sheet_a_page_at_1_to_1() {
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .collect();
     files.sort();
-    assert_eq!(files.len(), 11, "{files:?}");
+    assert_eq!(files.len(), 15, "{files:?}");
     assert!(
-        files.iter().filter(|f| f.ends_with(".svg")).count() == 5,
+        files.iter().filter(|f| f.ends_with(".svg")).count() == 7,
         "{files:?}"
     );
 }

@@ -41,8 +41,8 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
     let all = sheets::build_all(&session, Lang::Ru).expect("plates");
     assert_eq!(
         all.len(),
-        5,
-        "one A1 sheet per plate, the force analysis one per position"
+        7,
+        "the project's set: kinematics on two sheets, the force analysis one per position, the cam, the gears, the dynamics"
     );
     let text = all
         .iter()
@@ -66,15 +66,31 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
     ] {
         assert!(text.contains(given), "{given} not on the sheets:\n{text}");
     }
-    for bumped in ["μ_{l} = 0,004", "μ_{v} = 0,1 "] {
-        assert!(!text.contains(bumped), "{bumped} on the sheets:\n{text}");
-    }
-    // Sheet k of n across the scene.
-    let numbers: Vec<(u32, u32)> = all
+    // The linkage's sheets (the gear train's triangles have a μ_v of their own).
+    let linkage = all
         .iter()
-        .map(|(_, p)| (p.title_block.sheet_no, p.title_block.sheets))
+        .filter(|(kind, _)| *kind != scene::PlateKind::Gears)
+        .flat_map(|(_, p)| texts(p))
+        .collect::<Vec<_>>()
+        .join("\n");
+    for bumped in ["μ_{l} = 0,004", "μ_{v} = 0,1 "] {
+        assert!(
+            !linkage.contains(bumped),
+            "{bumped} on the sheets:\n{linkage}"
+        );
+    }
+    // Sheet k of n across the project, each with the set's designation and its number.
+    let numbers: Vec<(u32, u32, String)> = all
+        .iter()
+        .map(|(_, p)| {
+            let tb = &p.title_block;
+            (tb.sheet_no, tb.sheets, tb.designation.clone())
+        })
         .collect();
-    assert_eq!(numbers, vec![(1, 5), (2, 5), (3, 5), (4, 5), (5, 5)]);
+    let want: Vec<(u32, u32, String)> = (1..=7)
+        .map(|k| (k, 7, format!("ТММ.КП.000.{k:02}")))
+        .collect();
+    assert_eq!(numbers, want);
 }
 
 #[test]

@@ -20,7 +20,7 @@ pub(super) fn inversion_rows(
     opts: &super::BenchOptions,
     reps: Reps,
 ) -> Result<Vec<BenchRow>, BenchError> {
-    let stem = "cam-seed000";
+    let stem = "shaper";
     let s = scene::load(&opts.scenes.join(format!("{stem}.toml")))?;
     let fail = |detail: String| BenchError::Plate {
         scene: stem.into(),

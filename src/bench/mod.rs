@@ -353,12 +353,12 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
             note: "a fresh study::Session + sheets::build + plate::to_svg".into(),
         });
     }
+    let (png_seconds, sheets) = png_time(&shaper, reps)?;
     throughput.push(Throughput {
         name: format!("png {} at {PNG_DPI} dpi", shaper.scene.stem),
-        per_second: 1.0 / png_time(&shaper, reps)?,
+        per_second: 1.0 / png_seconds,
         note: format!(
-            "every plate of the scene ({}), SVG → PNG in parallel, as `tmm render` writes them",
-            shaper.scene.plates.len()
+            "every sheet of the scene ({sheets}), SVG → PNG in parallel, as `tmm render` writes them"
         ),
     });
     Ok(Bench {

@@ -116,9 +116,10 @@ pub(super) fn plate_time(s: &Subject, kind: PlateKind, reps: Reps) -> Result<f64
 /// PNG resolution of the scene timing, dots per inch (the `render` default).
 pub(super) const PNG_DPI: u32 = 150;
 
-/// Seconds to turn every plate of a scene, already written as SVG, into PNG at
-/// [`PNG_DPI`], the plates in parallel — what `tmm render` spends on PNGs.
-pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
+/// Seconds to turn every sheet of a scene, already written as SVG, into PNG at
+/// [`PNG_DPI`], the sheets in parallel — what `tmm render` spends on PNGs — and the number
+/// of sheets.
+pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<(f64, usize), BenchError> {
     let plates = render::plates(&s.scene, Lang::Ru, Drafting::EXACT).map_err(|e| {
         let (plate, detail) = match e {
             RenderError::Build { kind, error, .. } => (kind.stem().into(), error.to_string()),
@@ -139,6 +140,7 @@ pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
             .into_iter()
             .collect::<Result<Vec<_>, _>>()
     })
+    .map(|t| (t, svgs.len()))
     .map_err(|e| BenchError::Plate {
         scene: s.scene.stem.clone(),
         plate: "png".into(),

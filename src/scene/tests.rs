@@ -92,6 +92,8 @@ fn shaper_loads_in_si_units() {
             PlateKind::Positions,
             PlateKind::Kinematics,
             PlateKind::Forces,
+            PlateKind::Cam,
+            PlateKind::Gears,
             PlateKind::Dynamics
         ]
     );
@@ -176,7 +178,7 @@ fn string_for_number_keeps_line_and_key() {
     assert_names(
         &msg,
         &[
-            "constructions/x.toml:26:",
+            "constructions/x.toml:29:",
             "mechanism.crank.length = \"140\"",
             "invalid type",
         ],
@@ -468,7 +470,7 @@ fn kinematics_plate_kind_parses() {
     assert_eq!(PlateKind::Gears.section().to_string(), "gears");
     assert!(PlateKind::ALL.contains(&PlateKind::Kinematics));
     let text = shaper_text().replacen(
-        "wanted = [\"positions\", \"kinematics\", \"forces\", \"dynamics\"]",
+        "wanted = [\"positions\", \"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\"]",
         "wanted = [\"positions\", \"kinematics\"]",
         1,
     );

@@ -164,16 +164,37 @@ pub fn build_all(
     }
     let n = all.len() as u32;
     for (k, (_, p)) in all.iter_mut().enumerate() {
-        p.title_block.sheet_no = k as u32 + 1;
-        p.title_block.sheets = n;
+        let tb = &mut p.title_block;
+        tb.sheet_no = k as u32 + 1;
+        tb.sheets = n;
+        tb.designation = sheet_designation(&tb.designation, tb.sheet_no, n);
     }
     Ok(all)
 }
 
+/// A sheet's designation in a set of `n`: the scene's (`[task] designation`, the set's) with
+/// the sheet's two-digit number, ТММ.КП.000 → ТММ.КП.000.01 … ТММ.КП.000.07; a single sheet
+/// carries the scene's own.
+fn sheet_designation(set: &str, sheet_no: u32, n: u32) -> String {
+    if n > 1 && !set.is_empty() {
+        format!("{set}.{sheet_no:02}")
+    } else {
+        set.to_string()
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::gost_scale;
+    use super::{gost_scale, sheet_designation};
     use crate::scale::{Lang, Quantity, Scale};
+
+    #[test]
+    fn a_sets_sheets_carry_its_designation_with_their_number() {
+        assert_eq!(sheet_designation("ТММ.КП.000", 3, 7), "ТММ.КП.000.03");
+        assert_eq!(sheet_designation("ТММ.КП.000", 7, 7), "ТММ.КП.000.07");
+        assert_eq!(sheet_designation("ТММ.Л17.01", 1, 1), "ТММ.Л17.01");
+        assert_eq!(sheet_designation("", 2, 2), "");
+    }
 
     #[test]
     fn title_block_scales_reduce_and_enlarge_as_gost_writes_them() {

@@ -37,7 +37,8 @@ impl<'s> Session<'s> {
                 let plan = self.positions(sc.l)?;
                 let vel = self.velocities(&sc)?;
                 let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
-                crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)?
+                crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)
+                    .map_err(|e| self.dynamics_error(e))?
             } else {
                 let m = self.mechanism("the dynamic study")?;
                 let req = PlanRequest {
@@ -50,11 +51,29 @@ impl<'s> Session<'s> {
                     .map(|k| kinematics::velocity(&plan, k, sc.l.value(), w1, sc.v, &ctx))
                     .collect::<Result<Vec<_>, _>>()?;
                 let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
-                crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)?
+                crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)
+                    .map_err(|e| self.dynamics_error(e))?
             };
             self.logged("dynamics diagrams", "", d.diagrams.scale_a);
             Ok(Arc::new(d))
         })
+    }
+
+    /// A diagram whose every ordinate the drafting reads as 0 is said so, naming the
+    /// drafting; the other errors pass as they are.
+    fn dynamics_error(&self, e: crate::dynamics::DynamicsError) -> StudyError {
+        let resolution_mm = self.drafting.resolution_mm();
+        match e {
+            crate::dynamics::DynamicsError::NoScale { what, value }
+                if value == 0.0 && resolution_mm > 0.0 =>
+            {
+                StudyError::ReadAsZero {
+                    what,
+                    resolution_mm,
+                }
+            }
+            e => e.into(),
+        }
     }
 
     fn report_dynamics(&self, rep: &mut Report) -> Result<(), StudyError> {

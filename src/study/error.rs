@@ -29,6 +29,15 @@ pub enum StudyError {
     /// The dynamic study cannot be carried out.
     #[error(transparent)]
     Dynamics(#[from] crate::dynamics::DynamicsError),
+    /// The drafting resolution reads every ordinate of a diagram as 0, so no scale is left
+    /// to choose for it.
+    #[error("dynamics: --drafting {resolution_mm} mm reads every ordinate of the diagram drawn at {what} as 0, so no scale can be chosen for it; a finer resolution reads it")]
+    ReadAsZero {
+        /// The scale that cannot be chosen (μ_T …).
+        what: &'static str,
+        /// The resolution, mm.
+        resolution_mm: f64,
+    },
     /// The scene has no `[balancing]` and the study needs one.
     #[error("the scene has no [balancing]: {0} needs one")]
     NoBalancing(&'static str),
