@@ -44,6 +44,7 @@ pub mod gears;
 pub mod geom;
 pub mod kinematics;
 pub mod linkage;
+pub mod note;
 pub mod plate;
 pub mod render;
 pub mod report;

@@ -68,6 +68,22 @@ enum Command {
         #[arg(long, default_value_t = 150)]
         dpi: u32,
     },
+    /// Write the explanatory note of scenes: DIR/<scene>/<scene>-note.pdf (A4, ГОСТ 2.105
+    /// text, ГОСТ 2.104 frames), every section the scene's studies allow.
+    Note {
+        /// Scene files (constructions/*.toml).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// The note's language.
+        #[arg(long, value_enum, default_value = "ru")]
+        lang: LangArg,
+        /// Resolution (mm) to which measured lengths are read before μ converts them; 0 = exact.
+        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+        drafting: f64,
+    },
     /// Compare every value read off the plans and diagrams with its analytic twin.
     Report {
         /// Scene file.
@@ -145,6 +161,12 @@ fn main() -> ExitCode {
             dpi,
         } => render(&scenes, &out, &format, lang, drafting, dpi),
         Command::Check { scenes } => check(&scenes),
+        Command::Note {
+            scenes,
+            out,
+            lang,
+            drafting,
+        } => note(&scenes, &out, lang, drafting),
         Command::Report {
             scene,
             format,
@@ -236,6 +258,20 @@ fn render(
         dpi,
     };
     let written = render::render(&scenes, out, &options).map_err(render_failure)?;
+    for path in &written {
+        emit(&path.display().to_string());
+    }
+    Ok(())
+}
+
+fn note(paths: &[PathBuf], out: &Path, lang: LangArg, drafting: f64) -> Result<(), Failure> {
+    let (lang, drafting) = options(lang, drafting)?;
+    let scenes = load_all(paths)?;
+    if let Some(s) = scenes.iter().find(|s| !has_study(s)) {
+        return Err(nothing_to_construct(s));
+    }
+    distinct_stems(&scenes, out)?;
+    let written = render::notes(&scenes, out, lang, drafting).map_err(render_failure)?;
     for path in &written {
         emit(&path.display().to_string());
     }

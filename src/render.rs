@@ -76,6 +76,14 @@ pub enum RenderError {
         /// Why.
         error: plate::PdfError,
     },
+    /// A scene's explanatory note that cannot be written.
+    #[error("{}: the explanatory note: {error}", .scene.display())]
+    Note {
+        /// The scene's file.
+        scene: PathBuf,
+        /// Why (boxed: a study's error is large).
+        error: Box<crate::note::NoteError>,
+    },
     /// A file that cannot be written (nothing is written).
     #[error("{}: cannot write: {error}", .path.display())]
     Write {
@@ -95,7 +103,7 @@ impl RenderError {
                 matches!(error, BuildError::TooLarge { fits: Some(_), .. })
             }
             RenderError::Resolution { .. } | RenderError::Write { .. } => true,
-            RenderError::Png { .. } | RenderError::Pdf { .. } => false,
+            RenderError::Png { .. } | RenderError::Pdf { .. } | RenderError::Note { .. } => false,
         }
     }
 }
@@ -222,6 +230,48 @@ pub fn render(
     options: &Options,
 ) -> Result<Vec<PathBuf>, RenderError> {
     let files = files(scenes, out, options)?;
+    plate::write_all_atomic(&files).map_err(|(path, error)| RenderError::Write { path, error })?;
+    Ok(files.into_iter().map(|(path, _)| path).collect())
+}
+
+/// The explanatory note of each of `scenes`, typeset (`<out>/<scene>/<scene>-note.pdf`),
+/// built in memory.
+///
+/// # Errors
+/// The first note that cannot be composed or typeset.
+pub fn note_files(
+    scenes: &[Scene],
+    out: &Path,
+    lang: Lang,
+    drafting: Drafting,
+) -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
+    scenes
+        .iter()
+        .map(|s| {
+            let failed = |error| RenderError::Note {
+                scene: s.path.clone(),
+                error: Box::new(error),
+            };
+            let session = Session::new(s, drafting);
+            let note = crate::note::compose(&session, lang).map_err(failed)?;
+            let pdf = crate::note::to_pdf(&note).map_err(failed)?;
+            Ok((out.join(&s.stem).join(format!("{}-note.pdf", s.stem)), pdf))
+        })
+        .collect()
+}
+
+/// Write the explanatory notes of `scenes` ([`note_files`]) atomically; returns the files
+/// written.
+///
+/// # Errors
+/// As [`note_files`]; a file that cannot be written (then nothing is).
+pub fn notes(
+    scenes: &[Scene],
+    out: &Path,
+    lang: Lang,
+    drafting: Drafting,
+) -> Result<Vec<PathBuf>, RenderError> {
+    let files = note_files(scenes, out, lang, drafting)?;
     plate::write_all_atomic(&files).map_err(|(path, error)| RenderError::Write { path, error })?;
     Ok(files.into_iter().map(|(path, _)| path).collect())
 }

@@ -26,7 +26,7 @@ mod tests;
 mod twin;
 
 pub use draw::diagrams;
-pub use reduce::{Reduced, Reducer};
+pub use reduce::{Breakdown, LinkShare, LoadShare, Reduced, Reducer};
 pub use rows::{findings, noted, notes, rows};
 pub use spec::{
     ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
@@ -120,6 +120,10 @@ pub struct Dynamics {
     pub graphical: Vec<Reduced>,
     /// The reduction by the analytic twin at the same positions.
     pub analytic: Vec<Reduced>,
+    /// The reduction from the velocity plans load by load and link by link.
+    pub graphical_shares: Vec<Breakdown>,
+    /// The analytic twin's, load by load and link by link (the seed's Table 8).
+    pub analytic_shares: Vec<Breakdown>,
     /// The cycle, exactly.
     pub cycle: Cycle,
     /// The flywheel by the energy equation, exactly.
@@ -165,6 +169,7 @@ pub fn analyse(
     let w_avg = spec.omega_avg.unwrap_or(w1.abs());
     let (mut labels, mut travel, mut graphical, mut analytic) =
         (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut graphical_shares, mut analytic_shares) = (Vec::new(), Vec::new());
     for (k, pos) in &numbered {
         let vp = vps
             .get(*k)
@@ -175,9 +180,13 @@ pub fn analyse(
                 why: "refused (a group at its toggle)".into(),
             })?;
         let motion = Reducer::plan_motion(vp, &pos.built.p, mu_l, ctx);
-        graphical.push(red.at(&motion, pos.phi)?);
+        let shares = red.breakdown(&motion, pos.phi)?;
+        graphical.push(shares.reduced());
+        graphical_shares.push(shares);
         let t = (red.sense() * (pos.phi - start)).rem_euclid(TAU);
         analytic.push(red.exact(t)?.0);
+        let (pose, twin) = red.twin_motion(t)?;
+        analytic_shares.push(red.breakdown(&twin, pose.phi)?);
         labels.push(pos.label.clone());
         travel.push(t);
     }
@@ -212,6 +221,8 @@ pub fn analyse(
         travel,
         graphical,
         analytic,
+        graphical_shares,
+        analytic_shares,
         cycle,
         exact,
         cycle_time,

@@ -34,6 +34,73 @@ impl Reduced {
     }
 }
 
+/// One load's share of the reduced moment at a position (the seed's Table 8 and 9: the
+/// force, the speed of its point, the angle between them).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadShare {
+    /// Its label (markup): `F_{пс}`, `G_{3}`.
+    pub name: String,
+    /// What it is.
+    pub kind: LoadKind,
+    /// |F|, N, or the couple's |M|, N·m.
+    pub magnitude: f64,
+    /// The speed of its point, m/s, or its link's |ω|, rad/s, for a couple.
+    pub speed: f64,
+    /// The angle from the force to its point's velocity, rad in [0, π] (`None`: a couple, or
+    /// a point at rest).
+    pub angle: Option<f64>,
+    /// Its reduced moment F·v·cos α/|ω₁| (M·ω/|ω₁|), N·m (driving positive).
+    pub m_red: f64,
+}
+
+/// One link's share of the reduced moment of inertia: m·v_S²/ω₁² + J_S·ω²/ω₁² (the seed's
+/// Table 10 by links).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinkShare {
+    /// The link.
+    pub link: u32,
+    /// Its mass, kg.
+    pub mass: f64,
+    /// The speed of its centre of mass, m/s.
+    pub v_s: f64,
+    /// Its moment of inertia about the centre of mass, kg·m².
+    pub inertia: f64,
+    /// Its angular velocity, rad/s (counter-clockwise).
+    pub omega: f64,
+    /// Its reduced moment of inertia, kg·m².
+    pub j_red: f64,
+}
+
+/// The reduction of one position load by load and link by link.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Breakdown {
+    /// The loads of the links that count (weights, resistances, driving forces).
+    pub loads: Vec<LoadShare>,
+    /// The links' reduced inertias.
+    pub links: Vec<LinkShare>,
+    /// The constant reduced inertias (the reducer, the gearbox), kg·m².
+    pub j_const: f64,
+}
+
+impl Breakdown {
+    /// The sums: the reduced moments by kind and the reduced moment of inertia.
+    pub fn reduced(&self) -> Reduced {
+        let of = |kind: LoadKind| {
+            self.loads
+                .iter()
+                .filter(|l| l.kind == kind)
+                .map(|l| l.m_red)
+                .sum()
+        };
+        Reduced {
+            m_res: of(LoadKind::Resistance),
+            m_grav: of(LoadKind::Weight),
+            m_drv: of(LoadKind::Driving),
+            j: self.j_const + self.links.iter().map(|l| l.j_red).sum::<f64>(),
+        }
+    }
+}
+
 /// The reduced moment of `loads` moving as `motion` with the crank at |ω₁| = `w`:
 /// Σ(F·v + M·ω)/|ω₁|, N·m (driving positive).
 pub fn reduce_loads(loads: &[Load], motion: &Motion, w: f64) -> f64 {
@@ -111,25 +178,62 @@ impl<'a> Reducer<'a> {
     /// # Errors
     /// A load's point that is not a point of the mechanism.
     pub fn at(&self, motion: &Motion, phi: f64) -> Result<Reduced, DynamicsError> {
+        Ok(self.breakdown(motion, phi)?.reduced())
+    }
+
+    /// The reduction of `motion` at crank angle `phi` load by load and link by link.
+    ///
+    /// # Errors
+    /// A load's point that is not a point of the mechanism.
+    pub fn breakdown(&self, motion: &Motion, phi: f64) -> Result<Breakdown, DynamicsError> {
         let ph = phase_at(self.extremes.as_ref(), phi, self.sense());
         let all = loads(&self.forces, self.prog, motion, ph)?;
         let w = self.w1.abs();
-        let of = |kind: LoadKind| {
-            let some: Vec<Load> = all.iter().filter(|l| l.kind == kind).cloned().collect();
-            reduce_loads(&some, motion, w)
-        };
-        let mut j = self.j_const;
-        for lm in &self.forces.links {
-            let s = self.prog.index(&lm.centre).unwrap_or(0);
-            let v = motion.v.get(s).copied().unwrap_or(DVec2::ZERO);
-            let om = motion.omega.get(lm.link as usize).copied().unwrap_or(0.0);
-            j += (lm.mass * v.length_squared() + lm.inertia * om * om) / (w * w);
-        }
-        Ok(Reduced {
-            m_res: of(LoadKind::Resistance),
-            m_grav: of(LoadKind::Weight),
-            m_drv: of(LoadKind::Driving),
-            j,
+        let counted = [LoadKind::Resistance, LoadKind::Weight, LoadKind::Driving];
+        let loads = all
+            .iter()
+            .filter(|l| counted.contains(&l.kind))
+            .map(|l| {
+                let v = motion.v.get(l.at).copied().unwrap_or(DVec2::ZERO);
+                let om = motion.omega.get(l.link).copied().unwrap_or(0.0);
+                let couple = l.force == DVec2::ZERO && l.moment != 0.0;
+                LoadShare {
+                    name: l.name.clone(),
+                    kind: l.kind,
+                    magnitude: if couple {
+                        l.moment.abs()
+                    } else {
+                        l.force.length()
+                    },
+                    speed: if couple { om.abs() } else { v.length() },
+                    angle: (!couple && v != DVec2::ZERO && l.force != DVec2::ZERO)
+                        .then(|| l.force.angle_to(v).abs()),
+                    m_red: reduce_loads(std::slice::from_ref(l), motion, w),
+                }
+            })
+            .collect();
+        let links = self
+            .forces
+            .links
+            .iter()
+            .map(|lm| {
+                let s = self.prog.index(&lm.centre).unwrap_or(0);
+                let v = motion.v.get(s).copied().unwrap_or(DVec2::ZERO);
+                let om = motion.omega.get(lm.link as usize).copied().unwrap_or(0.0);
+                LinkShare {
+                    link: lm.link,
+                    mass: lm.mass,
+                    v_s: v.length(),
+                    inertia: lm.inertia,
+                    omega: om,
+                    j_red: (lm.mass * v.length_squared() + lm.inertia * om * om) / (w * w),
+                }
+            })
+            .collect();
+        Ok(Breakdown {
+            loads,
+            links,
+            j_const: self.j_const,
         })
     }
 
@@ -147,17 +251,27 @@ impl<'a> Reducer<'a> {
             })
     }
 
-    /// The analytic twin at `travel`: the reduced quantities and dJ/dψ (ψ the travel).
+    /// The analytic twin's pose and motion at `travel` (no accelerations: the reduction
+    /// needs none).
     ///
     /// # Errors
-    /// The mechanism cannot be assembled, or a load's point is unknown.
-    pub fn exact(&self, travel: f64) -> Result<(Reduced, f64), DynamicsError> {
+    /// The mechanism cannot be assembled there.
+    pub fn twin_motion(&self, travel: f64) -> Result<(Pose, Motion), DynamicsError> {
         let pose = self.pose(travel)?;
         let motion = Motion {
             a: vec![DVec2::ZERO; pose.p.len()],
             eps: vec![0.0; pose.dangle.len()],
             ..Motion::analytic(&pose, self.w1)
         };
+        Ok((pose, motion))
+    }
+
+    /// The analytic twin at `travel`: the reduced quantities and dJ/dψ (ψ the travel).
+    ///
+    /// # Errors
+    /// The mechanism cannot be assembled, or a load's point is unknown.
+    pub fn exact(&self, travel: f64) -> Result<(Reduced, f64), DynamicsError> {
+        let (pose, motion) = self.twin_motion(travel)?;
         let r = self.at(&motion, pose.phi)?;
         let mut dj = 0.0;
         for lm in &self.forces.links {

@@ -160,6 +160,14 @@ fn analytic(pose: &Pose, w1: f64, what: Measure, kind: PlanKind) -> f64 {
         Measure::Point(k) => (pose.ddp[k] * (w1 * w1)).length(),
         Measure::Rate(l) if vel => pose.dangle[l] * w1,
         Measure::Rate(l) => pose.ddangle[l] * w1 * w1,
+        Measure::Carried(k, l) => {
+            let (v, a) = carried(pose, w1, k, l);
+            if vel {
+                v.length()
+            } else {
+                a.length()
+            }
+        }
         Measure::Relative { p, q } => {
             let (vp, ap) = carried(pose, w1, p.0, p.1);
             let (vq, aq) = carried(pose, w1, q.0, q.1);
@@ -186,6 +194,7 @@ fn key(plan: &PositionPlan, what: Measure, kind: PlanKind, label: &str) -> Key {
     let (symbol, subject) = match what {
         Measure::Point(k) => (point, plain(&names[k])),
         Measure::Rate(l) => (rate, l.to_string()),
+        Measure::Carried(k, l) => (point, format!("{}{l}", plain(&names[k]))),
         Measure::Relative { p, q } => {
             // Coincident points of a sliding pair carry their link's number (`B3_B1`).
             let tag = |(k, l): (usize, usize)| {

@@ -47,6 +47,7 @@ use crate::geom::DVec2;
 use crate::scale::Lang;
 use thiserror::Error;
 
+pub(crate) use fonts::faces as bundled_faces;
 pub use fonts::font_database;
 pub use ink::{view_ink, Cell};
 pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM};
@@ -55,9 +56,10 @@ pub use labels::{
 };
 pub use pdf::{to_pdf, PdfError};
 pub use raster::{png_size, to_png, to_png_dpi, to_png_dpi_all, MAX_PIXELS};
+pub(crate) use sheet::captions as title_block_captions;
 pub use sheet::{Sheet, SheetSize, TitleBlock};
 pub use style::Pen;
-pub use svg::{to_svg, FONT_FAMILY};
+pub use svg::{to_svg, view_svgs, ViewSvg, FONT_FAMILY};
 pub use table::TableBlock;
 
 pub use write::{write_all_atomic, write_atomic};

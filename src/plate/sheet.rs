@@ -156,18 +156,27 @@ pub struct TitleBlock {
     pub sheets: u32,
 }
 
-/// Captions of the title block cells in one language.
-struct Captions {
-    changes: [&'static str; 5],
-    people: [&'static str; 6],
-    letter: &'static str,
-    mass: &'static str,
-    scale: &'static str,
-    sheet: &'static str,
-    sheets: &'static str,
+/// Captions of the title block cells in one language (the explanatory note's frames write
+/// them too).
+pub(crate) struct Captions {
+    /// Изм., Лист, № докум., Подп., Дата.
+    pub(crate) changes: [&'static str; 5],
+    /// Разраб., Пров., Т.контр., (blank), Н.контр., Утв.
+    pub(crate) people: [&'static str; 6],
+    /// Лит.
+    pub(crate) letter: &'static str,
+    /// Масса.
+    pub(crate) mass: &'static str,
+    /// Масштаб.
+    pub(crate) scale: &'static str,
+    /// Лист.
+    pub(crate) sheet: &'static str,
+    /// Листов.
+    pub(crate) sheets: &'static str,
 }
 
-fn captions(lang: Lang) -> Captions {
+/// The title block's captions in `lang`.
+pub(crate) fn captions(lang: Lang) -> Captions {
     let p = |ru, uk, en| lang.pick(ru, uk, en);
     Captions {
         changes: [

@@ -44,7 +44,7 @@ pub fn to_svg(plate: &super::Plate) -> String {
             title_block_marks(&plate.sheet, &plate.title_block, plate.lang),
         ));
     for (k, view) in plate.views.iter().enumerate() {
-        doc = doc.add(view_group(k, view, &laid));
+        doc = doc.add(view_group(k, view, &laid, true));
     }
     let texts = plate
         .texts
@@ -60,6 +60,57 @@ pub fn to_svg(plate: &super::Plate) -> String {
         ));
     }
     format!("{doc}\n")
+}
+
+/// One view of a plate alone, as a figure of a document (the explanatory note): its SVG
+/// holds the view's lines and labels, without its caption, cut to their box with a margin,
+/// in millimetres at the plate's size.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ViewSvg {
+    /// The SVG document.
+    pub svg: String,
+    /// Its width, mm.
+    pub width_mm: f64,
+    /// Its height, mm.
+    pub height_mm: f64,
+}
+
+/// Margin around a view cut out of its plate, mm.
+const VIEW_MARGIN_MM: f64 = 2.0;
+
+/// Every view of `plate` alone ([`ViewSvg`]), in order; `None` for a view that draws nothing.
+pub fn view_svgs(plate: &super::Plate) -> Vec<Option<ViewSvg>> {
+    let laid = layout(plate);
+    plate
+        .views
+        .iter()
+        .enumerate()
+        .map(|(k, view)| {
+            let labels = laid.labels.iter().filter(|l| l.view == k).map(|l| l.rect);
+            let (min, max) = labels
+                .chain(laid.views[k].drawn)
+                .reduce(|a, b| a.union(&b))
+                .map(|r| r.inflate(VIEW_MARGIN_MM))
+                .map(|r| (r.min, r.max))?;
+            let (w, h) = (max.x - min.x, max.y - min.y);
+            let alone = view_group(k, view, &laid, false).set("id", "view");
+            let doc = Document::new()
+                .set("width", format!("{}mm", num(w)))
+                .set("height", format!("{}mm", num(h)))
+                .set(
+                    "viewBox",
+                    format!("{} {} {} {}", num(min.x), num(min.y), num(w), num(h)),
+                )
+                .set("font-family", FONT_FAMILY)
+                .set("font-style", "italic")
+                .add(alone);
+            Some(ViewSvg {
+                svg: format!("{doc}\n"),
+                width_mm: w,
+                height_mm: h,
+            })
+        })
+        .collect()
 }
 
 /// A group of marks with id `id`; texts get ids `{id}-text-{n}`.
@@ -100,8 +151,8 @@ fn pen_attrs(p: Path, pen: Pen) -> Path {
     }
 }
 
-/// A view: one group per step (in order), its labels, then its caption.
-fn view_group(k: usize, view: &View, laid: &Layout) -> Group {
+/// A view: one group per step (in order), its labels, then its caption when `captioned`.
+fn view_group(k: usize, view: &View, laid: &Layout, captioned: bool) -> Group {
     let map = Map::figure(view.origin);
     let mut g = Group::new().set("id", format!("view-{k}"));
     for step in &view.figure.steps {
@@ -119,7 +170,7 @@ fn view_group(k: usize, view: &View, laid: &Layout) -> Group {
     if !labels.is_empty() {
         g = g.add(group(&format!("view-{k}-labels"), labels));
     }
-    if let Some(caption) = &laid.views[k].caption_text {
+    if let Some(caption) = laid.views[k].caption_text.as_ref().filter(|_| captioned) {
         g = g.add(group(
             &format!("view-{k}-caption"),
             vec![Mark::Text(caption.clone())],

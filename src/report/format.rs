@@ -288,7 +288,7 @@ pub(crate) fn md_row(out: &mut String, cells: &[String]) {
 }
 
 /// A value of a row: "—" where it does not exist (the analytic rate at a change point is NaN).
-fn md_value(x: f64, sig: usize, lang: Lang) -> String {
+pub(crate) fn md_value(x: f64, sig: usize, lang: Lang) -> String {
     if x.is_finite() {
         format_sig(x, sig, lang)
     } else {
@@ -298,7 +298,7 @@ fn md_value(x: f64, sig: usize, lang: Lang) -> String {
 
 /// A relative error in %, to [`ERROR_DIGITS`] significant digits; a rounding residue (at most
 /// 1e-9 of the value, [`residue_to_zero`]) is 0 — the construction at drafting 0 is exact.
-fn md_percent(rel: f64, lang: Lang) -> String {
+pub(crate) fn md_percent(rel: f64, lang: Lang) -> String {
     format_sig(residue_to_zero(rel, 1.0) * 100.0, ERROR_DIGITS, lang)
 }
 

@@ -27,4 +27,4 @@ mod format;
 pub(crate) mod tests;
 
 pub use format::CSV_HEADER;
-pub(crate) use format::{finite, json, md_cell, md_header, md_row};
+pub(crate) use format::{finite, json, md_cell, md_header, md_percent, md_row, md_value};

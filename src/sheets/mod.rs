@@ -3,7 +3,7 @@
 
 mod balancing;
 mod cam;
-mod captions;
+pub(crate) mod captions;
 mod dynamics;
 mod forces;
 mod friction;

@@ -304,6 +304,13 @@ impl Builder<'_> {
         );
         self.rec.label(id, label, x, x.normalize_or(DVec2::Y));
         self.coincident.push((name.to_string(), x));
+        // Read as the seed's Table 2 reads V_B3: the pole to the image.
+        let value = self.read(DVec2::ZERO, x);
+        let quantity = match self.kind {
+            PlanKind::Velocity => format!("v_{name}"),
+            PlanKind::Acceleration => format!("a_{name}"),
+        };
+        self.reading(quantity, Measure::Carried(point, link), value, None);
     }
 
     /// The Coriolis component 2ω·v_r of a point moving relative to `link`, v_r read on the

@@ -54,6 +54,9 @@ pub enum Measure {
     Point(usize),
     /// The angular velocity (acceleration) of a link, signed counter-clockwise.
     Rate(usize),
+    /// The absolute velocity (acceleration) of the point of link `.1` under point `.0` — the
+    /// coincident point of a sliding pair (`B3`: link 3's point under B): a magnitude.
+    Carried(usize, usize),
     /// The velocity (acceleration) of point `p.0` carried by link `p.1` relative to point
     /// `q.0` carried by link `q.1`: a magnitude.
     Relative {

@@ -5,10 +5,19 @@
 
 mod linkage;
 mod machines;
-pub(super) mod symbols;
+mod note;
+pub(crate) mod symbols;
 
-pub(super) use linkage::Text;
+pub(crate) use linkage::Text;
 pub(super) use machines::{CamText, DynamicsText, FrictionText, GearText, RotorText};
+pub(crate) use note::NoteText;
+pub(crate) use symbols::{quantity, subscripted};
+
+/// A word of the catalogue: its text in a language.
+pub(crate) trait Word: Copy {
+    /// The text in `lang`.
+    fn get(self, lang: Lang) -> &'static str;
+}
 
 use crate::scale::Lang;
 
@@ -23,7 +32,7 @@ macro_rules! catalogue {
     ) => {
         $(#[$meta])*
         #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-        pub(in crate::sheets) enum $name {
+        pub(crate) enum $name {
             $(#[doc = concat!("«", $ru, "» (en: “", $en, "”)")] $variant,)*
         }
 
@@ -36,13 +45,19 @@ macro_rules! catalogue {
                 lang.pick(ru, uk, en)
             }
         }
+
+        impl super::Word for $name {
+            fn get(self, lang: crate::scale::Lang) -> &'static str {
+                $name::get(self, lang)
+            }
+        }
     };
 }
 use catalogue;
 
 /// A unit written in SI (`m/s^2`, `N*m`, `kg*m^2`, `rad/s`, `mm`) in `lang`: `·` for the
 /// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`).
-pub(super) fn unit_in(unit: &str, lang: Lang) -> String {
+pub(crate) fn unit_in(unit: &str, lang: Lang) -> String {
     let si = unit.replace('*', "·");
     if lang == Lang::En {
         return si;

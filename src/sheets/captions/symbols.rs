@@ -91,14 +91,14 @@ pub(in crate::sheets) fn localise(markup: &str, lang: Lang) -> String {
 
 /// A row's quantity in the textbook's notation in `lang`: `V_{B3B1}`, `ω_{3}`, `R_{1-2}`,
 /// `F_{и3}` (en `F_{i3}`), `M_{у}` (en `M_{b}`), `A_{с}`, `J_{м}`, `ε_{α}`, `R_{1-2}^{тр}`.
-pub(in crate::sheets) fn quantity(symbol: Symbol, subject: &str, lang: Lang) -> String {
+pub(crate) fn quantity(symbol: Symbol, subject: &str, lang: Lang) -> String {
     localise(&russian(symbol, subject), lang)
 }
 
 /// The Russian textbooks' spelling of a quantity.
 /// A plain column name (`V_B3B1`, `φ_1`) as label markup: everything after the first `_` is
 /// the subscript (`V_{B3B1}`); a name in markup already or without a subscript is kept.
-pub(in crate::sheets) fn subscripted(name: &str) -> String {
+pub(crate) fn subscripted(name: &str) -> String {
     match name.split_once('_') {
         Some((base, sub)) if !sub.is_empty() && !sub.starts_with('{') => {
             format!("{base}_{{{sub}}}")

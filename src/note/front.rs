@@ -1,0 +1,388 @@
+//! The note's frame and its first and last sections: the page rules and the title block's
+//! data, the title page, the contents, the task, the conclusions and the references.
+
+use super::markup::{label, string, text, Align};
+use super::rows::{fmt, percent};
+use super::Writer;
+use crate::check::{Method, Symbol};
+use crate::linkage::{Dyad, Mechanism};
+use crate::scale::Lang;
+use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
+
+/// The page rules (`template.typ`) after the title block's data.
+pub(super) fn preamble(w: &mut Writer<'_, '_>) {
+    let t = &w.session.scene().title;
+    let c = crate::plate::title_block_captions(w.lang);
+    let list = |xs: &[&str]| {
+        let items: Vec<String> = xs.iter().map(|x| string(x)).collect();
+        format!("({},)", items.join(", "))
+    };
+    let designation = format!("{} {}", t.designation, w.word(T::NoteCode));
+    let document = format!("{}\n{}", t.title, w.word(T::ExplanatoryNote));
+    let lang = match w.lang {
+        Lang::Ru => "ru",
+        Lang::Uk => "uk",
+        Lang::En => "en",
+    };
+    let meta = format!(
+        "#let meta = (title: {}, lang: {}, designation: {}, document: {}, author: {}, checked: {}, organisation: {}, changes: {}, people: {}, letter: {}, sheet: {}, sheets: {})",
+        string(&t.title),
+        string(lang),
+        string(designation.trim()),
+        string(&document),
+        string(&t.author),
+        string(&t.checked),
+        string(&t.organisation),
+        list(&c.changes),
+        list(&[c.people[0], c.people[1], "", c.people[4], c.people[5]]),
+        string(c.letter),
+        string(c.sheet),
+        string(c.sheets),
+    );
+    w.doc.raw(&meta);
+    w.doc.raw(include_str!("template.typ"));
+}
+
+/// The title page: the organisation, the work, the project's designation, the people.
+pub(super) fn title_page(w: &mut Writer<'_, '_>) {
+    let t = &w.session.scene().title;
+    let line = |s: &str| format!("#{}", string(s));
+    let designation = format!("{} {}", t.designation, w.word(T::NoteCode));
+    let people = [
+        (w.word(T::Student), t.author.as_str()),
+        (w.word(T::Supervisor), t.checked.as_str()),
+    ];
+    let mut body = format!(
+        "#page(margin: (x: 20mm, y: 20mm))[\n#set par(first-line-indent: 0mm, justify: false)\n#align(center)[#text(size: 14pt)[{}]]\n#v(55mm)\n#align(center)[#text(size: 18pt, weight: \"bold\")[{}] \\ #v(4mm) #text(size: 14pt)[{}] \\ #v(10mm) #text(size: 20pt, weight: \"bold\")[{}] \\ #v(8mm) #text(size: 14pt)[{}]]\n#v(40mm)\n#align(right)[#block(width: 90mm)[#set align(left)\n",
+        line(&t.organisation),
+        line(w.word(T::ExplanatoryNote)),
+        line(w.word(T::ToTheCourseProject)),
+        line(&t.title),
+        line(designation.trim()),
+    );
+    for (role, name) in people {
+        body.push_str(&format!("{}: {} \\\n", line(role), line(name)));
+    }
+    body.push_str("]]\n]\n");
+    w.doc.raw(&body);
+}
+
+/// The contents, on the first text page (form 2: its bottom margin clears the 40 mm block).
+pub(super) fn contents(w: &mut Writer<'_, '_>) {
+    w.doc.raw(&format!(
+        "#page(margin: (left: 25mm, right: 10mm, top: 15mm, bottom: 50mm))[#outline(title: {}, depth: 2)]",
+        text(w.word(T::Contents))
+    ));
+}
+
+/// A length in mm as the task sheet writes it.
+fn mm(x: f64, lang: Lang) -> String {
+    fmt(x * 1e3, 5, lang)
+}
+
+/// The task: the scheme, then the data of every study the scene has, each a table of
+/// symbol, value and unit.
+pub(super) fn task(w: &mut Writer<'_, '_>) {
+    w.heading(1, T::Task);
+    let scene = w.session.scene();
+    if let Some(m) = &scene.mechanism {
+        let scheme = S::StructuralScheme.get(w.lang);
+        w.figures(
+            (crate::scene::PlateKind::Kinematics, None),
+            |own| own.starts_with(scheme),
+            |own| own.to_string(),
+        );
+        let rows = mechanism_data(m, w.lang);
+        let caption = w.word(T::MechanismData);
+        table_of_data(w, caption, &rows);
+    }
+    w.doc.say(w.word(T::TaskFollows));
+}
+
+/// Symbol (label markup), value and unit of the mechanism's data.
+fn mechanism_data(m: &Mechanism, lang: Lang) -> Vec<(String, String, String)> {
+    let mut rows = Vec::new();
+    let len = |a: &str, b: &str, l: f64| {
+        (
+            format!("l_{{{}{}}}", plain(a), plain(b)),
+            mm(l, lang),
+            "mm".to_string(),
+        )
+    };
+    rows.push(len(&m.crank.centre, &m.crank.pin, m.crank.length));
+    for g in &m.groups {
+        match &g.dyad {
+            Dyad::Rrr {
+                a,
+                la,
+                b,
+                lb,
+                joint,
+                ..
+            } => {
+                rows.push(len(a, joint, *la));
+                rows.push(len(b, joint, *lb));
+            }
+            Dyad::Rrp { a, la, joint, .. } => rows.push(len(a, joint, *la)),
+            _ => {}
+        }
+    }
+    for p in &m.points {
+        if p.across == 0.0 {
+            let origin = link_origin(m, p.link);
+            if let Some(o) = origin {
+                rows.push(len(&o, &p.name, p.along.abs()));
+            }
+        }
+    }
+    let fixed = &m.fixed;
+    for (k, a) in fixed.iter().enumerate() {
+        for b in &fixed[k + 1..] {
+            rows.push(len(&a.name, &b.name, (a.at - b.at).length()));
+        }
+    }
+    rows.push(("ω_{1}".into(), fmt(m.crank.omega, 5, lang), "rad/s".into()));
+    rows
+}
+
+/// The point a link's frame starts at (its outer pivot), for the distances of its points.
+fn link_origin(m: &Mechanism, link: u32) -> Option<String> {
+    if link == m.crank.link {
+        return Some(m.crank.centre.clone());
+    }
+    m.groups.iter().find_map(|g| {
+        let [i, j] = g.links;
+        match &g.dyad {
+            Dyad::Rrr { a, b, .. } if link == i || link == j => {
+                Some(if link == i { a.clone() } else { b.clone() })
+            }
+            Dyad::Rrp { a, .. } if link == i => Some(a.clone()),
+            Dyad::Rpr { a, c, .. } if link == i || link == j => {
+                Some(if link == i { a.clone() } else { c.clone() })
+            }
+            _ => None,
+        }
+    })
+}
+
+/// A point's name without its markup (`S_3` → `S3`).
+fn plain(name: &str) -> String {
+    name.replace(['_', '{', '}'], "")
+}
+
+/// A table of data: symbol, value, unit.
+fn table_of_data(w: &mut Writer<'_, '_>, caption: &str, rows: &[(String, String, String)]) {
+    let header = [
+        text(w.word(S::Quantity)),
+        text(w.word(T::Value)),
+        text(w.word(S::Unit)),
+    ];
+    let body: Vec<Vec<String>> = rows
+        .iter()
+        .map(|(s, v, u)| vec![label(s), text(v), text(&unit_in(u, w.lang))])
+        .collect();
+    w.doc.table(
+        caption,
+        &[Align::Left, Align::Centre, Align::Centre],
+        &header,
+        &body,
+    );
+}
+
+/// The conclusions: the error of every graphical method against the analytic twin (the
+/// seed's §1.6, for every quantity of the project), then what the project does not
+/// reproduce of the source.
+pub(super) fn conclusions(w: &mut Writer<'_, '_>) {
+    w.heading(1, T::Conclusions);
+    w.doc.say(w.word(T::ConclusionsErrors));
+    let summary = w.report.summary();
+    let header = [
+        text(w.word(S::Quantity)),
+        text(w.word(S::Method)),
+        text(w.word(T::Count)),
+        text(w.word(S::MeanError)),
+        text(w.word(S::MaxError)),
+        text(w.word(T::AtPosition)),
+    ];
+    let lang = w.lang;
+    let symbol_of = |q: &str| {
+        w.report
+            .rows
+            .iter()
+            .find(|r| r.quantity() == q)
+            .map(|r| quantity(r.key.symbol, &r.key.subject, lang))
+            .unwrap_or_else(|| q.to_string())
+    };
+    let rows: Vec<Vec<String>> = summary
+        .entries
+        .iter()
+        .map(|e| {
+            vec![
+                label(&symbol_of(&e.quantity)),
+                text(e.method.name(lang)),
+                text(&e.count.to_string()),
+                text(&percent(e.mean_abs_rel, lang)),
+                text(&percent(e.max_abs_rel, lang)),
+                text(e.worst_position.as_deref().unwrap_or("—")),
+            ]
+        })
+        .collect();
+    let caption = w.word(T::ErrorsByQuantity);
+    w.doc.table(
+        caption,
+        &[
+            Align::Left,
+            Align::Left,
+            Align::Centre,
+            Align::Centre,
+            Align::Centre,
+            Align::Centre,
+        ],
+        &header,
+        &rows,
+    );
+    let by_method: Vec<Vec<String>> = summary
+        .mean_by_method
+        .iter()
+        .map(|(m, e)| vec![text(m.name(lang)), text(&percent(*e, lang))])
+        .collect();
+    let caption = w.word(T::ErrorsByMethod);
+    w.doc.table(
+        caption,
+        &[Align::Left, Align::Centre],
+        &[text(w.word(S::Method)), text(w.word(S::MeanError))],
+        &by_method,
+    );
+    w.doc.say(w.word(T::ExactAtDraftingZero));
+    seed_values(w);
+}
+
+/// The source's values the project does not reproduce: the value printed, the exact one,
+/// how far off, and why.
+fn seed_values(w: &mut Writer<'_, '_>) {
+    let lang = w.lang;
+    let scene = w.session.scene();
+    let mut rows: Vec<Vec<String>> = Vec::new();
+    let mut add =
+        |symbol: String, printed: String, exact: String, off: Option<f64>, why: String| {
+            rows.push(vec![
+                label(&symbol),
+                text(&printed),
+                text(&exact),
+                text(&off.map(|d| percent(d, lang)).unwrap_or_else(|| "—".into())),
+                text(&why),
+            ]);
+        };
+    if let Some(f) = &scene.forces {
+        for s in &f.seed {
+            let row = w.report.rows.iter().find(|r| {
+                r.quantity() == s.quantity
+                    && r.position().as_deref() == Some(s.position.as_str())
+                    && s.method.is_none_or(|m| m == r.method)
+            });
+            if let Some(r) = row {
+                let unit = unit_in(r.unit(), lang);
+                add(
+                    format!(
+                        "{} ({} {})",
+                        quantity(r.key.symbol, &r.key.subject, lang),
+                        w.word(T::PositionShort),
+                        s.position
+                    ),
+                    s.printed.clone(),
+                    format!("{} {unit}", fmt(r.analytic.abs(), 4, lang)),
+                    Some((s.value - r.analytic.abs()) / r.analytic.abs()),
+                    s.source.clone(),
+                );
+            }
+        }
+    }
+    let exact_of = |sym: Symbol, subject: &str, method: Method| {
+        w.report
+            .rows
+            .iter()
+            .find(|r| r.key.symbol == sym && r.key.subject == subject && r.method == method)
+            .map(|r| r.analytic)
+    };
+    if let Some(d) = &scene.dynamics {
+        if let (Some(seed), Some(exact)) = (
+            d.seed.as_ref().and_then(|s| s.flywheel),
+            exact_of(Symbol::Inertia, "flywheel", Method::Wittenbauer),
+        ) {
+            add(
+                "J_{м}".into(),
+                format!("{} kg·m²", fmt(seed, 4, lang)),
+                format!("{} kg·m²", fmt(exact, 5, lang)),
+                Some((seed - exact) / exact),
+                w.word(T::SeedFlywheel).into(),
+            );
+        }
+    }
+    if let Some(g) = &scene.gears {
+        if let (Some(seed), Some(exact)) = (
+            g.seed.as_ref().and_then(|s| s.eps_alpha),
+            exact_of(Symbol::ContactRatio, "alpha", Method::Formula),
+        ) {
+            add(
+                "ε_{α}".into(),
+                fmt(seed, 3, lang),
+                fmt(exact, 5, lang),
+                Some((seed - exact) / exact),
+                w.word(T::SeedContactRatio).into(),
+            );
+        }
+    }
+    if let Some(c) = &scene.cam {
+        if let (Some(seed), Some(exact)) = (
+            c.quoted_r_min,
+            w.report
+                .rows
+                .iter()
+                .find(|r| r.quantity() == "r_min")
+                .map(|r| r.analytic),
+        ) {
+            add(
+                "r_{min}".into(),
+                format!("{} mm", mm(seed, lang)),
+                format!("{} mm", mm(exact, lang)),
+                Some((seed - exact) / exact),
+                w.word(T::SeedMinRadius).into(),
+            );
+        }
+    }
+    if rows.is_empty() {
+        return;
+    }
+    w.doc.say(w.word(T::SeedNotReproduced));
+    let header = [
+        text(w.word(S::Quantity)),
+        text(w.word(T::SeedPrints)),
+        text(w.word(S::Exact)),
+        text(w.word(T::Deviation)),
+        text(w.word(T::Why)),
+    ];
+    let caption = w.word(T::SeedValues);
+    w.doc.table(
+        caption,
+        &[
+            Align::Left,
+            Align::Centre,
+            Align::Centre,
+            Align::Centre,
+            Align::Left,
+        ],
+        &header,
+        &rows,
+    );
+}
+
+/// The references: the course texts the project follows.
+pub(super) fn references(w: &mut Writer<'_, '_>) {
+    w.doc.raw(&format!(
+        "#heading(numbering: none)[{}]",
+        text(w.word(T::References))
+    ));
+    for r in [T::Reference1, T::Reference2, T::Reference3, T::Reference4] {
+        w.doc.raw(&format!("+ {}", text(w.word(r))));
+    }
+}

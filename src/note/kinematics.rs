@@ -1,0 +1,682 @@
+//! The structural and kinematic analysis: mobility by Chebyshev's formula, the Assur groups
+//! and the structure formula; the plan of positions with the stroke, θ and K; the velocity
+//! and acceleration plans (each group's two vector equations, worked with numbers at one
+//! position, the Coriolis term included); the diagrams by the method of chords; the tables
+//! of the seed's shapes and the comparison with the analytic twin.
+
+use super::markup::{frac, inline, label, num, sym, text, unit, Align};
+use super::rows::{by_position, fmt, DIGITS};
+use super::{NoteError, Writer};
+use crate::check::{Method, Row, Symbol};
+use crate::linkage::{DyadKind, GroupInfo, OutputCoord, Structure};
+use crate::scale::Lang;
+use crate::scene::PlateKind;
+use crate::sheets::captions::{quantity, subscripted, unit_in, NoteText as T, Text as S};
+
+/// The structural analysis.
+pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    let m = w.session.mechanism("the explanatory note")?;
+    let s = Structure::analyse(m);
+    let lang = w.lang;
+    w.heading(1, T::StructureAndKinematics);
+    w.heading(2, S::StructuralAnalysis);
+    let redundant = s.pairs.iter().filter(|p| p.redundant).count() as u32;
+    let n = |x: i64| num(x as f64, 6, lang);
+    let chebyshev = |p5: u32, w_: i32| {
+        format!(
+            "{} = 3 {} - 2 {} - {} = 3 dot {} - 2 dot {} - {} = {}",
+            sym("W"),
+            sym("n"),
+            sym("p_{5}"),
+            sym("p_{4}"),
+            n(s.n as i64),
+            n(p5 as i64),
+            n(s.p4 as i64),
+            n(w_ as i64)
+        )
+    };
+    w.doc.par(&[
+        text(w.word(T::MobilityChebyshev)),
+        text(&format!("n = {}, p₅ = {}, p₄ = {}:", s.n, s.p5, s.p4)),
+    ]);
+    w.doc.formula(&chebyshev(s.p5, s.w));
+    if redundant > 0 {
+        let names: Vec<String> = s
+            .pairs
+            .iter()
+            .filter(|p| p.redundant)
+            .map(|p| p.name.clone())
+            .collect();
+        w.doc.par(&[text(&format!(
+            "{} {}:",
+            w.word(T::WithRedundantPairs),
+            names.join(", ")
+        ))]);
+        w.doc.formula(&chebyshev(s.p5_all, s.w_all));
+        w.doc.say(w.word(T::RedundantPairExplained));
+    }
+    w.doc.say(w.word(T::AssurGroups));
+    let header = [
+        text(w.word(S::Group)),
+        text(w.word(T::KindWord)),
+        text(w.word(T::Pairs)),
+        text(w.word(T::GroupMobility)),
+    ];
+    let mut rows = vec![vec![
+        text(&format!("I (0, {})", s.crank_link)),
+        text(w.word(S::DrivingLink)),
+        text(&s.pairs[0].name),
+        text("W = 3·1 − 2·1 = 1"),
+    ]];
+    for g in &s.groups {
+        let kind = format!(
+            "{} {} ({})",
+            w.word(T::KindWord),
+            g.kind.number(),
+            if lang == Lang::En {
+                g.kind.letters()
+            } else {
+                g.kind.letters_ru()
+            }
+        );
+        let pairs: Vec<String> = g
+            .pairs
+            .iter()
+            .map(|p| {
+                format!(
+                    "{} ({}–{}, {})",
+                    p.name,
+                    p.links[0],
+                    p.links[1],
+                    if p.prismatic {
+                        w.word(T::Prismatic)
+                    } else {
+                        w.word(T::Revolute)
+                    }
+                )
+            })
+            .collect();
+        rows.push(vec![
+            text(&format!("II ({}, {})", g.links[0], g.links[1])),
+            text(&kind),
+            text(&pairs.join("; ")),
+            text("W = 3·2 − 2·3 = 0"),
+        ]);
+    }
+    let caption = w.word(T::GroupsTable);
+    w.doc.table(
+        caption,
+        &[Align::Left, Align::Left, Align::Left, Align::Centre],
+        &header,
+        &rows,
+    );
+    w.doc.par(&[
+        text(w.word(S::StructureFormula)),
+        text(&s.formula()),
+        text(&format!("; {} {}.", w.word(T::ClassOfMechanism), s.class)),
+    ]);
+    Ok(())
+}
+
+/// A point of link `link` as the plans name it: `B_{3}`; a point of one link keeps its name.
+fn on(name: &str, link: u32, shared: bool) -> String {
+    let plain = name.replace(['_', '{', '}'], "");
+    if shared {
+        format!("{}_{{{}{link}}}", &plain[..1], &plain[1..])
+    } else {
+        name.to_string()
+    }
+}
+
+/// The two vector equations of a group's velocity plan, as label markup, with what is known
+/// of each term: (equation, the unknown terms' directions).
+fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<(String, String)> {
+    let [p0, p1, p2] = &g.pairs;
+    let [_, j] = g.links;
+    let along = |link: u32| format!("{} {link}", T::AlongGuideOf.get(lang));
+    let v = |x: &str| format!("V_{{{}}}", x.replace(['_', '{', '}'], ""));
+    let vr = |x: &str, y: &str| {
+        format!(
+            "V_{{{}{}}}",
+            x.replace(['_', '{', '}'], ""),
+            y.replace(['_', '{', '}'], "")
+        )
+    };
+    match g.kind {
+        DyadKind::Rrr => {
+            let (a, joint, b) = (&p0.name, &p1.name, &p2.name);
+            vec![
+                (
+                    format!("{} = {} + {}", v(joint), v(a), vr(joint, a)),
+                    format!("{} ⊥ {a}{joint}", vr(joint, a)),
+                ),
+                (
+                    format!("{} = {} + {}", v(joint), v(b), vr(joint, b)),
+                    format!("{} ⊥ {b}{joint}", vr(joint, b)),
+                ),
+            ]
+        }
+        DyadKind::Rrp => {
+            let (a, joint) = (&p0.name, &p1.name);
+            let guide = on(joint, p2.links[1], true);
+            vec![
+                (
+                    format!("{} = {} + {}", v(joint), v(a), vr(joint, a)),
+                    format!("{} ⊥ {a}{joint}", vr(joint, a)),
+                ),
+                (
+                    format!("{} = {} + {}", v(joint), v(&guide), vr(joint, &guide)),
+                    format!("{} ∥ {}", vr(joint, &guide), along(p2.links[1])),
+                ),
+            ]
+        }
+        DyadKind::Rpr => {
+            let (a, c) = (&p0.name, &p2.name);
+            let (aj, ao) = (on(a, j, true), on(a, p0.links[0], true));
+            vec![
+                (
+                    format!("{} = {} + {}", v(&aj), v(&ao), vr(&aj, &ao)),
+                    format!("{} ∥ {c}{a}", vr(&aj, &ao)),
+                ),
+                (
+                    format!("{} = {} + {}", v(&aj), v(c), vr(&aj, c)),
+                    format!("{} ⊥ {c}{a}", vr(&aj, c)),
+                ),
+            ]
+        }
+        DyadKind::Prp => {
+            let joint = &p1.name;
+            let (gi, gj) = (on(joint, p0.links[0], true), on(joint, p2.links[1], true));
+            vec![
+                (
+                    format!("{} = {} + {}", v(joint), v(&gi), vr(joint, &gi)),
+                    format!("{} ∥ {}", vr(joint, &gi), along(p0.links[0])),
+                ),
+                (
+                    format!("{} = {} + {}", v(joint), v(&gj), vr(joint, &gj)),
+                    format!("{} ∥ {}", vr(joint, &gj), along(p2.links[1])),
+                ),
+            ]
+        }
+        DyadKind::Rpp => {
+            let a = &p0.name;
+            let (aj, ao) = (on(a, j, true), on(a, p0.links[0], true));
+            let g0 = on(a, p2.links[1], true);
+            vec![
+                (
+                    format!("{} = {} + {}", v(&aj), v(&ao), vr(&aj, &ao)),
+                    format!("{} ∥ {}", vr(&aj, &ao), along(j)),
+                ),
+                (
+                    format!("{} = {} + {}", v(&aj), v(&g0), vr(&aj, &g0)),
+                    format!("{} ∥ {}", vr(&aj, &g0), along(p2.links[1])),
+                ),
+            ]
+        }
+    }
+}
+
+/// The acceleration's counterpart of a velocity equation: each relative term split into its
+/// normal and tangential parts (a turning link) or its Coriolis and relative parts (a slide).
+fn acceleration_equation(velocity: &str) -> String {
+    let Some((lhs, rhs)) = velocity.split_once(" = ") else {
+        return velocity.replace('V', "a");
+    };
+    let terms: Vec<&str> = rhs.split(" + ").collect();
+    let a = |t: &str| t.replacen('V', "a", 1);
+    let mut out = format!("{} = {}", a(lhs), a(terms[0]));
+    for t in &terms[1..] {
+        let body = a(t);
+        let sub = body.trim_start_matches("a_");
+        out.push_str(&format!(" + a^{{n}}_{sub} + a^{{τ}}_{sub}"));
+    }
+    out
+}
+
+/// The worked position: the first position with an acceleration plan, else the first one.
+fn worked_position(rows: &[Row]) -> Option<String> {
+    rows.iter()
+        .find(|r| r.method == Method::Plan && r.key.symbol == Symbol::Acceleration)
+        .or_else(|| rows.iter().find(|r| r.method == Method::Plan))
+        .and_then(|r| r.position())
+}
+
+/// The segment of the plan a velocity or acceleration is drawn as: `p b_{3}` (from the
+/// pole) or `b_{1} b_{3}` (relative).
+fn segment(pole: &str, subject: &str) -> String {
+    let point = |p: &str| {
+        let mut c = p.chars();
+        let first = c
+            .next()
+            .map(|f| f.to_lowercase().to_string())
+            .unwrap_or_default();
+        let rest: String = c.collect();
+        if rest.is_empty() {
+            first
+        } else {
+            format!("{first}_{{{rest}}}")
+        }
+    };
+    match subject.split_once('_') {
+        Some((x, y)) => format!("{}{}", point(y), point(x)),
+        None => format!("{pole}{}", point(subject)),
+    }
+}
+
+/// The kinematic analysis.
+pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    let lang = w.lang;
+    let sc = w.session.kin_scales()?;
+    let kin = w.session.kinematics(&sc)?;
+    let m = w.session.mechanism("the explanatory note")?;
+    let s = Structure::analyse(m);
+
+    // The plan of positions.
+    w.heading(2, S::PlanOfPositions);
+    let l = sc.l.value();
+    let crank = format!("l_{{{}{}}}", m.crank.centre, m.crank.pin);
+    w.doc.par(&[text(w.word(T::LengthScale))]);
+    w.doc.formula(&format!(
+        "{} = {} = {} = {}{}",
+        sym("μ_{l}"),
+        frac(
+            &sym(&crank),
+            &sym(&format!("{}{}", m.crank.centre, m.crank.pin))
+        ),
+        frac(
+            &format!(
+                "{}{}",
+                num(m.crank.length, 5, lang),
+                unit(w.word(T::MetreUnit))
+            ),
+            &format!(
+                "{}{}",
+                num(m.crank.length / l, 4, lang),
+                unit(w.word(T::MmUnit))
+            )
+        ),
+        num(l, 4, lang),
+        unit(sc.l.quantity.unit(lang))
+    ));
+    w.doc.say(w.word(T::PositionsConstruction));
+    if let Some(ex) = &kin.plan.extremes {
+        let theta = ex.theta.to_degrees();
+        // Every output's stroke: a rocker's swing ψ, a slider's travel H.
+        let strokes: Vec<String> = ex
+            .ranges
+            .iter()
+            .map(|r| {
+                let travel = (r.max - r.min).abs();
+                let (symbol, value, u) = match r.coord {
+                    OutputCoord::Rocker(link) => {
+                        (format!("ψ_{{{link}}}"), travel.to_degrees(), "°")
+                    }
+                    OutputCoord::Slider(..) => ("H".to_string(), travel, w.word(T::MetreUnit)),
+                };
+                inline(&format!(
+                    "{} = {}{}",
+                    sym(&symbol),
+                    num(value, 5, lang),
+                    unit(u)
+                ))
+            })
+            .collect();
+        let mut pieces = vec![text(w.word(T::StrokeIs))];
+        pieces.extend(strokes);
+        w.doc.par(&pieces);
+        w.doc.par(&[text(w.word(T::ThetaAndK))]);
+        w.doc.formula(&format!(
+            "{} = {} = {} = {}",
+            sym("K"),
+            frac("180° + θ", "180° - θ"),
+            frac(
+                &format!("180° + {}°", num(theta, 5, lang)),
+                &format!("180° - {}°", num(theta, 5, lang))
+            ),
+            num(ex.k, 5, lang)
+        ));
+    }
+    let plan = S::PlanOfPositions.get(lang);
+    w.figures(
+        KINEMATICS,
+        |own| own.starts_with(plan),
+        |own| own.to_string(),
+    );
+
+    // The velocity plans.
+    w.heading(2, T::VelocityPlans);
+    let at = worked_position(&w.report.rows);
+    let w1 = kin.w1.abs();
+    let pin = &m.crank.pin;
+    let v_pin = w1 * m.crank.length;
+    w.doc.par(&[text(w.word(T::CrankPinVelocity))]);
+    w.doc.formula(&format!(
+        "{} = {} {} = {} dot {} = {}{}",
+        sym(&format!("V_{{{pin}}}")),
+        sym("ω_{1}"),
+        sym(&crank),
+        num(w1, 5, lang),
+        num(m.crank.length, 5, lang),
+        num(v_pin, 5, lang),
+        unit(&unit_in("m/s", lang))
+    ));
+    let v_mm = sc.v.to_mm(v_pin);
+    w.doc.par(&[text(w.word(T::VelocityScale))]);
+    w.doc.formula(&format!(
+        "{} = {} = {} = {}{}",
+        sym("μ_{v}"),
+        frac(
+            &sym(&format!("V_{{{pin}}}")),
+            &sym(&format!("p{}", pin.to_lowercase()))
+        ),
+        frac(&num(v_pin, 5, lang), &num(v_mm, 4, lang)),
+        num(sc.v.value(), 4, lang),
+        unit(sc.v.quantity.unit(lang))
+    ));
+    w.doc.say(w.word(T::VectorEquations));
+    for g in &s.groups {
+        w.doc.par(&[text(&format!(
+            "{} ({}, {}):",
+            w.word(S::Group),
+            g.links[0],
+            g.links[1]
+        ))]);
+        for (eq, dirs) in velocity_equations(g, lang) {
+            w.doc.par(&[label(&eq), text("—"), label(&dirs)]);
+        }
+    }
+    if let Some(p) = &at {
+        worked(w, p, Symbol::Velocity, "p", sc.v)?;
+    }
+    let vq = super::rows::quantities(&w.report.rows, |r| {
+        r.method == Method::Plan && r.key.symbol == Symbol::Velocity
+    });
+    let caption = w.word(T::VelocitiesTable);
+    by_position(w, caption, &vq);
+    let wq = super::rows::quantities(&w.report.rows, |r| {
+        r.method == Method::Plan && r.key.symbol == Symbol::AngularVelocity
+    });
+    let caption = w.word(T::AngularVelocitiesTable);
+    by_position(w, caption, &wq);
+    let worked_plan = at.as_ref().map(|p| format!("{} {p}", S::Pos.get(lang)));
+    w.figures(
+        KINEMATICS,
+        |own| Some(own) == worked_plan.as_deref(),
+        |own| format!("{}, {}", T::VelocityPlanWord.get(lang), own.to_lowercase()),
+    );
+
+    // The acceleration plans.
+    let acc = super::rows::quantities(&w.report.rows, |r| {
+        r.method == Method::Plan && r.key.symbol == Symbol::Acceleration
+    });
+    if !acc.is_empty() {
+        w.heading(2, T::AccelerationPlans);
+        let a_pin = w1 * w1 * m.crank.length;
+        w.doc.par(&[text(w.word(T::CrankPinAcceleration))]);
+        w.doc.formula(&format!(
+            "{} = {}^2 {} = {}^2 dot {} = {}{}",
+            sym(&format!("a_{{{pin}}}")),
+            sym("ω_{1}"),
+            sym(&crank),
+            num(w1, 5, lang),
+            num(m.crank.length, 5, lang),
+            num(a_pin, 5, lang),
+            unit(&unit_in("m/s^2", lang))
+        ));
+        w.doc.par(&[text(w.word(T::AccelerationScale))]);
+        w.doc.formula(&format!(
+            "{} = {} = {} = {}{}",
+            sym("μ_{a}"),
+            frac(
+                &sym(&format!("a_{{{pin}}}")),
+                &sym(&format!("π{}", pin.to_lowercase()))
+            ),
+            frac(&num(a_pin, 5, lang), &num(sc.a.to_mm(a_pin), 4, lang)),
+            num(sc.a.value(), 4, lang),
+            unit(sc.a.quantity.unit(lang))
+        ));
+        w.doc.say(w.word(T::AccelerationEquations));
+        for g in &s.groups {
+            for (eq, _) in velocity_equations(g, lang) {
+                w.doc.par(&[label(&acceleration_equation(&eq))]);
+            }
+        }
+        if let Some(p) = &at {
+            coriolis(w, p, &s)?;
+            worked(w, p, Symbol::Acceleration, "π", sc.a)?;
+        }
+        let caption = w.word(T::AccelerationsTable);
+        by_position(w, caption, &acc);
+        let eq = super::rows::quantities(&w.report.rows, |r| {
+            r.method == Method::Plan && r.key.symbol == Symbol::AngularAcceleration
+        });
+        let caption = w.word(T::AngularAccelerationsTable);
+        by_position(w, caption, &eq);
+        let word = S::AccelerationPlanAt.get(lang);
+        w.figures(
+            KINEMATICS,
+            |own| own.starts_with(word),
+            |own| own.to_string(),
+        );
+    }
+
+    // The diagrams.
+    let chords = super::rows::quantities(&w.report.rows, |r| r.method.is_diagram());
+    if let Some(d) = &kin.diagrams {
+        w.heading(2, T::KinematicDiagrams);
+        w.doc.say(w.word(T::ChordMethod));
+        let (mu_s, mu_phi) = (d.scales.y.value(), d.scales.x.value());
+        let (h1, h2) = (d.first.pole_mm, d.second.pole_mm);
+        w.doc.formula(&format!(
+            "{} = {} = {} = {}, quad {} = {} = {} = {}",
+            sym("μ_{S′}"),
+            frac(&sym("μ_{S}"), &format!("{} {}", sym("μ_{φ}"), sym("H_{1}"))),
+            frac(
+                &num(mu_s, 4, lang),
+                &format!("{} dot {}", num(mu_phi, 4, lang), num(h1, 4, lang))
+            ),
+            num(d.first.scale.value(), 4, lang),
+            sym("μ_{S″}"),
+            frac(
+                &sym("μ_{S′}"),
+                &format!("{} {}", sym("μ_{φ}"), sym("H_{2}"))
+            ),
+            frac(
+                &num(d.first.scale.value(), 4, lang),
+                &format!("{} dot {}", num(mu_phi, 4, lang), num(h2, 4, lang))
+            ),
+            num(d.second.scale.value(), 4, lang),
+        ));
+        w.doc.say(w.word(T::DiagramValues));
+        let caption = w.word(T::DiagramTable);
+        by_position(w, caption, &chords);
+        // Every view of the kinematic sheets that is neither the scheme, the plan of
+        // positions, a plan nor the hodograph: the diagrams.
+        let shown = [
+            S::StructuralScheme,
+            S::PlanOfPositions,
+            S::Pos,
+            S::AccelerationPlanAt,
+            S::Hodograph,
+        ]
+        .map(|t| t.get(lang));
+        w.figures(
+            KINEMATICS,
+            |own| !shown.iter().any(|s| own.starts_with(s)),
+            |own| own.to_string(),
+        );
+    }
+    if kin.hodograph.is_some() {
+        w.heading(2, T::Hodograph);
+        w.doc.say(w.word(T::HodographText));
+        let word = S::Hodograph.get(lang);
+        w.figures(
+            KINEMATICS,
+            |own| own.starts_with(word),
+            |own| own.to_string(),
+        );
+    }
+
+    // The analytic twin.
+    w.heading(2, T::AnalyticMethod);
+    w.doc.say(w.word(T::AnalyticText));
+    for t in w.report.tables.clone() {
+        let header: Vec<String> = std::iter::once(text(w.word(T::PositionShort)))
+            .chain(t.columns.iter().map(|c| {
+                let name = subscripted(&c.name);
+                let u = unit_in(&c.unit, lang);
+                label(&if u.is_empty() {
+                    name
+                } else {
+                    format!("{name}, {u}")
+                })
+            }))
+            .collect();
+        let rows: Vec<Vec<String>> = t
+            .rows
+            .iter()
+            .map(|(p, vals)| {
+                std::iter::once(text(p))
+                    .chain(
+                        vals.iter()
+                            .map(|v| text(&v.map(|x| fmt(x, DIGITS, lang)).unwrap_or_default())),
+                    )
+                    .collect()
+            })
+            .collect();
+        let align = vec![Align::Centre; header.len()];
+        // The seed's Table 5 is wide: its columns in two tables of at most nine.
+        let caption = w.word(T::AnalyticTable);
+        let cols = header.len() - 1;
+        let halves = cols.div_ceil(8);
+        for h in 0..halves {
+            let range = (1 + h * cols / halves)..(1 + (h + 1) * cols / halves);
+            let pick = |row: &Vec<String>| -> Vec<String> {
+                std::iter::once(row[0].clone())
+                    .chain(row[range.clone()].iter().cloned())
+                    .collect()
+            };
+            let cap = if halves > 1 {
+                format!("{caption} ({} {}/{halves})", w.word(T::Part), h + 1)
+            } else {
+                caption.to_string()
+            };
+            let body: Vec<Vec<String>> = rows.iter().map(pick).collect();
+            w.doc
+                .table(&cap, &align[..1 + range.len()], &pick(&header), &body);
+        }
+    }
+    Ok(())
+}
+
+/// Every kinematic sheet.
+const KINEMATICS: (PlateKind, Option<usize>) = (PlateKind::Kinematics, None);
+
+/// Every value of `symbol` read off the plan at position `p`, worked: its segment, the
+/// segment's length in mm and the value through μ.
+fn worked(
+    w: &mut Writer<'_, '_>,
+    p: &str,
+    symbol: Symbol,
+    pole: &str,
+    mu: crate::scale::Scale,
+) -> Result<(), NoteError> {
+    let lang = w.lang;
+    let rows: Vec<Row> = w
+        .report
+        .rows
+        .iter()
+        .filter(|r| {
+            r.method == Method::Plan && r.key.symbol == symbol && r.position().as_deref() == Some(p)
+        })
+        .cloned()
+        .collect();
+    if rows.is_empty() {
+        return Ok(());
+    }
+    w.doc.say(&format!(
+        "{} {p}:",
+        match symbol {
+            Symbol::Velocity => w.word(T::WorkedVelocities),
+            _ => w.word(T::WorkedAccelerations),
+        }
+    ));
+    let mu_name = if symbol == Symbol::Velocity {
+        "μ_{v}"
+    } else {
+        "μ_{a}"
+    };
+    let mut lines = Vec::new();
+    for r in rows {
+        let seg = segment(pole, &r.key.subject);
+        let mm = mu.to_mm(r.graphical.abs());
+        lines.push(format!(
+            "{} = {} {} = {} dot {} = {}{}",
+            sym(&quantity(r.key.symbol, &r.key.subject, lang)),
+            sym(&seg),
+            sym(mu_name),
+            num(mm, 4, lang),
+            num(mu.value(), 4, lang),
+            num(r.graphical.abs(), DIGITS, lang),
+            unit(&unit_in(r.unit(), lang))
+        ));
+    }
+    for l in lines {
+        w.doc.formula(&l);
+    }
+    Ok(())
+}
+
+/// The Coriolis acceleration of every slide at position `p`: a^k = 2·ω·V_rel with the plan's
+/// ω of the guide's link and relative velocity.
+fn coriolis(w: &mut Writer<'_, '_>, p: &str, s: &Structure) -> Result<(), NoteError> {
+    let lang = w.lang;
+    let value = |symbol: Symbol, subject: &str| {
+        w.report
+            .rows
+            .iter()
+            .find(|r| {
+                r.method == Method::Plan
+                    && r.key.symbol == symbol
+                    && r.key.subject == subject
+                    && r.position().as_deref() == Some(p)
+            })
+            .map(|r| r.graphical)
+    };
+    let mut lines = Vec::new();
+    for g in &s.groups {
+        // The slide of an RPR or RPP group turns with its link j (a translating link: no
+        // Coriolis term).
+        if !matches!(g.kind, DyadKind::Rpr | DyadKind::Rpp) {
+            continue;
+        }
+        let [_, j] = g.links;
+        let a = g.pairs[0].name.replace(['_', '{', '}'], "");
+        let own = g.pairs[0].links[0];
+        let subject = format!("{a}{j}_{a}{own}");
+        let (Some(omega), Some(v)) = (
+            value(Symbol::AngularVelocity, &j.to_string()),
+            value(Symbol::Velocity, &subject),
+        ) else {
+            continue;
+        };
+        let name = format!("{a}{j}{a}{own}");
+        lines.push(format!(
+            "{} = 2 {} {} = 2 dot {} dot {} = {}{}",
+            sym(&format!("a^{{k}}_{{{name}}}")),
+            sym(&format!("ω_{{{j}}}")),
+            sym(&format!("V_{{{name}}}")),
+            num(omega.abs(), 4, lang),
+            num(v.abs(), 4, lang),
+            num(2.0 * omega.abs() * v.abs(), 4, lang),
+            unit(&unit_in("m/s^2", lang))
+        ));
+    }
+    if !lines.is_empty() {
+        w.doc.say(&format!("{} {p}:", w.word(T::CoriolisWorked)));
+        for l in lines {
+            w.doc.formula(&l);
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,434 @@
+//! The sections of the machine's studies: the kinetostatics, the dynamics, the cam, the
+//! gears, and the balancing and friction of a scene that has them.
+
+use super::markup::{frac, inline, num, sym, text, unit};
+use super::rows::{by_position, numbers, of_scene, quantities, Column, DIGITS};
+use super::{NoteError, Writer};
+use crate::check::{Method, Row, Symbol};
+use crate::dynamics::{Breakdown, LinkShare};
+use crate::scene::PlateKind;
+use crate::sheets::captions::{quantity, unit_in, NoteText as T};
+
+/// The row of `quantity` by `method` at `position` (`None`: of the whole scene).
+fn row<'r>(rows: &'r [Row], q: &str, method: Method, position: Option<&str>) -> Option<&'r Row> {
+    rows.iter()
+        .find(|r| r.quantity() == q && r.method == method && r.position().as_deref() == position)
+}
+
+/// The kinetostatics: the loads worked at each analysed position, the reactions by the
+/// groups' polygons, the driving link, Zhukovsky's lever and the balancing moment by both
+/// routes, and the drive's power.
+pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    let lang = w.lang;
+    let spec = w.session.force_spec("the explanatory note")?;
+    let positions: Vec<String> = {
+        let m = w.session.mechanism("the explanatory note")?;
+        let _ = m;
+        let mut ps: Vec<String> = Vec::new();
+        for r in &w.report.rows {
+            if r.method == Method::Polygon {
+                if let Some(p) = r.position() {
+                    if !ps.contains(&p) {
+                        ps.push(p);
+                    }
+                }
+            }
+        }
+        ps
+    };
+    w.heading(1, T::Kinetostatics);
+    w.doc.say(w.word(T::KinetostaticsIntro));
+    let w1 = w.session.mechanism("the explanatory note")?.crank.omega;
+    for (k, p) in positions.iter().enumerate() {
+        w.doc
+            .heading(2, &format!("{} {p}", w.word(T::LoadsAtPosition)));
+        w.doc.say(w.word(T::InertiaLoads));
+        let mut lines = Vec::new();
+        for link in &spec.links {
+            let k = link.link;
+            let centre = link.centre.replace(['_', '{', '}'], "");
+            let a = row(
+                &w.report.rows,
+                &format!("a_{centre}"),
+                Method::Plan,
+                Some(p),
+            );
+            let f = row(&w.report.rows, &format!("F_in{k}"), Method::Plan, Some(p));
+            if let (Some(a), Some(f)) = (a, f) {
+                lines.push(format!(
+                    "{} = {} {} = {} dot {} = {}{}",
+                    sym(&quantity(Symbol::Force, &format!("in{k}"), lang)),
+                    sym(&format!("m_{{{k}}}")),
+                    sym(&format!("a_{{{centre}}}")),
+                    num(link.mass, 4, lang),
+                    num(a.graphical.abs(), DIGITS, lang),
+                    num(f.graphical.abs(), DIGITS, lang),
+                    unit(&unit_in("N", lang))
+                ));
+            }
+            let e = row(&w.report.rows, &format!("eps_{k}"), Method::Plan, Some(p));
+            let mi = row(&w.report.rows, &format!("M_in{k}"), Method::Plan, Some(p));
+            if let (Some(e), Some(mi), true) = (e, mi, link.inertia > 0.0) {
+                lines.push(format!(
+                    "{} = {} {} = {} dot {} = {}{}",
+                    sym(&quantity(Symbol::Moment, &format!("in{k}"), lang)),
+                    sym(&format!("J_{{S{k}}}")),
+                    sym(&format!("ε_{{{k}}}")),
+                    num(link.inertia, 4, lang),
+                    num(e.graphical.abs(), DIGITS, lang),
+                    num(mi.graphical.abs(), DIGITS, lang),
+                    unit(&unit_in("N*m", lang))
+                ));
+            }
+        }
+        for l in lines {
+            w.doc.formula(&l);
+        }
+        w.doc.say(w.word(T::GroupsEquations));
+        let reactions = quantities(&w.report.rows, |r| {
+            r.position().as_deref() == Some(p.as_str())
+                && matches!(r.method, Method::Polygon | Method::Lever)
+        });
+        let _ = reactions;
+        of_scene_at(w, p);
+        // The balancing moment by both routes.
+        let poly = row(&w.report.rows, "M_bal", Method::Polygon, Some(p)).cloned();
+        let lever = row(&w.report.rows, "M_bal", Method::Lever, Some(p)).cloned();
+        if let (Some(a), Some(b)) = (poly, lever) {
+            w.doc.say(w.word(T::BalancingBothRoutes));
+            let diff = (a.graphical - b.graphical).abs() / a.graphical.abs().max(f64::MIN_POSITIVE);
+            w.doc.formula(&format!(
+                "Δ = {} = {} = {} %",
+                frac(
+                    &format!(
+                        "|{} - {}|",
+                        sym(&format!(
+                            "{}^{{{}}}",
+                            quantity(Symbol::Moment, "bal", lang),
+                            w.word(T::PolygonShort)
+                        )),
+                        sym(&format!(
+                            "{}^{{{}}}",
+                            quantity(Symbol::Moment, "bal", lang),
+                            w.word(T::LeverShort)
+                        ))
+                    ),
+                    &format!("|{}|", sym(&quantity(Symbol::Moment, "bal", lang)))
+                ),
+                frac(
+                    &format!(
+                        "|{} - ({})|",
+                        num(a.graphical, 7, lang),
+                        num(b.graphical, 7, lang)
+                    ),
+                    &num(a.graphical.abs(), 7, lang)
+                ),
+                num(crate::scale::residue_to_zero(diff, 1.0) * 100.0, 3, lang),
+            ));
+            w.doc.par(&[
+                text(w.word(T::DrivePower)),
+                inline(&format!(
+                    "{} = |{}| {} = {} dot {} = {}{}",
+                    sym("N"),
+                    sym(&quantity(Symbol::Moment, "bal", lang)),
+                    sym("ω_{1}"),
+                    num(a.graphical.abs(), 5, lang),
+                    num(w1, 5, lang),
+                    num(a.graphical.abs() * w1, 5, lang),
+                    unit(&unit_in("W", lang))
+                )),
+            ]);
+        }
+        // The position's sheet: its groups, polygons and lever.
+        w.figures(
+            (PlateKind::Forces, Some(k)),
+            |_| true,
+            |own| own.to_string(),
+        );
+    }
+    Ok(())
+}
+
+/// The force analysis's rows at position `p`: reactions, arms, the balancing load.
+fn of_scene_at(w: &mut Writer<'_, '_>, p: &str) {
+    let caption = format!("{} {p}", w.word(T::ReactionsTable));
+    let p = p.to_string();
+    of_scene(w, &caption, move |r: &Row| {
+        r.position().as_deref() == Some(p.as_str())
+            && matches!(r.method, Method::Polygon | Method::Lever)
+    });
+}
+
+/// The dynamics: the analytic input of the reduction (the seed's Table 8), the reduced
+/// moments load by load (Table 9) and the reduced moments of inertia link by link with the
+/// links' kinetic energy (Table 10), the works and ΔT, the flywheel by Wittenbauer, by
+/// Merkin and exactly, and its size.
+pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    let lang = w.lang;
+    let d = w.session.dynamics()?;
+    w.heading(1, T::Dynamics);
+    w.doc.say(w.word(T::DynamicsIntro));
+    let positions = d.labels.clone();
+    // The loads over the cycle (a resistance acts on the working stroke only) and the links.
+    let mut loads: Vec<String> = Vec::new();
+    for b in &d.analytic_shares {
+        for l in &b.loads {
+            if !loads.contains(&l.name) {
+                loads.push(l.name.clone());
+            }
+        }
+    }
+    let links: Vec<u32> = d
+        .analytic_shares
+        .first()
+        .map(|b| b.links.iter().map(|l| l.link).collect())
+        .unwrap_or_default();
+    let load_of = |b: &Breakdown, name: &str| b.loads.iter().find(|l| l.name == name).cloned();
+    let link_of = |b: &Breakdown, k: u32| b.links.iter().find(|l| l.link == k).copied();
+    // Table 8: the analytic input: the speeds of the centres, the links' ω, the angles of
+    // the loads to their points' velocities.
+    let mut cols = vec![Column::new(
+        "φ, °",
+        d.travel.iter().map(|t| Some(t.to_degrees())).collect(),
+    )];
+    for &k in &links {
+        let of = |f: fn(&LinkShare) -> f64| -> Vec<Option<f64>> {
+            d.analytic_shares
+                .iter()
+                .map(|b| link_of(b, k).map(|l| f(&l)))
+                .collect()
+        };
+        cols.push(Column::new(
+            format!("V_{{S{k}}}, {}", unit_in("m/s", lang)),
+            of(|l| l.v_s),
+        ));
+        cols.push(Column::new(
+            format!("ω_{{{k}}}, {}", unit_in("rad/s", lang)),
+            of(|l| l.omega.abs()),
+        ));
+    }
+    for name in &loads {
+        cols.push(Column::new(
+            format!("∠({name}, V), °"),
+            d.analytic_shares
+                .iter()
+                .map(|b| load_of(b, name).and_then(|l| l.angle).map(f64::to_degrees))
+                .collect(),
+        ));
+    }
+    let caption = w.word(T::ReductionInput);
+    numbers(w, caption, &positions, &cols);
+    // Table 9: the reduced moment of every load, Σ, and the plans' M_пр against it.
+    let nm = unit_in("N*m", lang);
+    // A load whose moment vanishes over the cycle (a weight on a horizontal slide) is 0
+    // against the largest reduced moment, not against its own residues.
+    let largest = d.analytic.iter().fold(0.0f64, |m, a| m.max(a.m().abs()));
+    let mut cols: Vec<Column> = loads
+        .iter()
+        .map(|name| {
+            Column::new(
+                format!("M_{{пр}}({name}), {nm}"),
+                d.analytic_shares
+                    .iter()
+                    .map(|b| Some(load_of(b, name).map_or(0.0, |l| l.m_red)))
+                    .collect(),
+            )
+            .against(largest)
+        })
+        .collect();
+    let (an, gr) = (w.word(T::AnalyticShort), w.word(T::GraphicalShort));
+    cols.push(Column::new(
+        format!("M_{{пр}}, {nm} ({an})"),
+        d.analytic.iter().map(|a| Some(a.m())).collect(),
+    ));
+    cols.push(Column::new(
+        format!("M_{{пр}}, {nm} ({gr})"),
+        d.graphical.iter().map(|g| Some(g.m())).collect(),
+    ));
+    let caption = w.word(T::ReducedMoments);
+    numbers(w, caption, &positions, &cols);
+    // Table 10: the reduced moments of inertia by links (from the plans), their sum against
+    // the twin's, and the links' kinetic energy T_зв = (J_пр − J_const)·ω_ср²/2.
+    let kgm2 = unit_in("kg*m^2", lang);
+    let mut cols: Vec<Column> = links
+        .iter()
+        .map(|&k| {
+            Column::new(
+                format!("J_{{пр{k}}}, {kgm2}"),
+                d.graphical_shares
+                    .iter()
+                    .map(|b| link_of(b, k).map(|l| l.j_red))
+                    .collect(),
+            )
+        })
+        .collect();
+    cols.push(Column::new(
+        format!("J_{{пр}}, {kgm2} ({gr})"),
+        d.graphical.iter().map(|g| Some(g.j)).collect(),
+    ));
+    cols.push(Column::new(
+        format!("J_{{пр}}, {kgm2} ({an})"),
+        d.analytic.iter().map(|a| Some(a.j)).collect(),
+    ));
+    let j_const = d.graphical_shares.first().map_or(0.0, |b| b.j_const);
+    cols.push(Column::new(
+        format!("T_{{зв}}, {}", unit_in("J", lang)),
+        d.graphical
+            .iter()
+            .map(|g| Some((g.j - j_const) * d.w_avg * d.w_avg / 2.0))
+            .collect(),
+    ));
+    let caption = w.word(T::ReducedInertias);
+    numbers(w, caption, &positions, &cols);
+    if j_const > 0.0 {
+        w.doc.par(&[
+            text(w.word(T::ConstantInertia)),
+            inline(&format!(
+                "{} = {}{}",
+                sym("J_{const}"),
+                num(j_const, 5, lang),
+                unit(&kgm2)
+            )),
+        ]);
+    }
+    let q = quantities(&w.report.rows, |r| {
+        r.position().is_some() && r.key.symbol == Symbol::EnergyChange
+    });
+    let caption = w.word(T::EnergyTable);
+    by_position(w, caption, &q);
+    w.doc.say(w.word(T::FlywheelRoutes));
+    let caption = w.word(T::FlywheelTable);
+    of_scene(w, caption, |r| {
+        r.position().is_none()
+            && matches!(
+                r.method,
+                Method::Integration | Method::Wittenbauer | Method::Merkin
+            )
+    });
+    w.doc.par(&[
+        text(w.word(T::ExactFlywheel)),
+        inline(&format!(
+            "{} = {}{}, {} = {}{}, {} = {}{}",
+            sym("J_{м}"),
+            num(d.exact.j_fw, 5, lang),
+            unit(&unit_in("kg*m^2", lang)),
+            sym("ω_{max}"),
+            num(d.exact.w_max.0, 5, lang),
+            unit(&unit_in("rad/s", lang)),
+            sym("ω_{min}"),
+            num(d.exact.w_min.0, 5, lang),
+            unit(&unit_in("rad/s", lang)),
+        )),
+    ]);
+    let dims: Vec<String> = d
+        .size
+        .dims
+        .iter()
+        .map(|(name, x)| {
+            inline(&format!(
+                "{} = {}{}",
+                sym(name),
+                num(x * 1e3, 4, lang),
+                unit(w.word(T::MmUnit))
+            ))
+        })
+        .collect();
+    let mut pieces = vec![
+        text(w.word(T::FlywheelSize)),
+        inline(&format!(
+            "{} = {}{}",
+            sym("m"),
+            num(d.size.mass, 4, lang),
+            unit(&unit_in("kg", lang))
+        )),
+    ];
+    pieces.extend(dims);
+    w.doc.par(&pieces);
+    w.figures((PlateKind::Dynamics, None), |_| true, |own| own.to_string());
+    Ok(())
+}
+
+/// The cam: the law, the diagrams, r_min, the profile and the transmission (pressure)
+/// angle, Table 7.
+pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    w.heading(1, T::CamSection);
+    w.doc.say(w.word(T::CamIntro));
+    let q = quantities(&w.report.rows, |r| {
+        r.position().is_some()
+            && matches!(r.method, Method::Integration | Method::Inversion)
+            && matches!(
+                r.key.symbol,
+                Symbol::Displacement
+                    | Symbol::VelocityAnalogue
+                    | Symbol::AccelerationAnalogue
+                    | Symbol::PressureAngle
+                    | Symbol::TransmissionAngle
+                    | Symbol::ProfileRadius
+            )
+    });
+    let caption = w.word(T::CamTable);
+    by_position(w, caption, &q);
+    let caption = w.word(T::CamScene);
+    of_scene(w, caption, |r| {
+        r.position().is_none()
+            && matches!(
+                r.method,
+                Method::CombinedDiagram | Method::Inversion | Method::Integration
+            )
+    });
+    w.figures((PlateKind::Cam, None), |_| true, |own| own.to_string());
+    Ok(())
+}
+
+/// The gears: the pair's geometry, ε_α by formula and from the picture, the specific sliding
+/// (Table 6), the rack-cut wheel and the train by Willis and by the triangles.
+pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    w.heading(1, T::GearsSection);
+    w.doc.say(w.word(T::GearsIntro));
+    let caption = w.word(T::PairTable);
+    of_scene(w, caption, |r| {
+        r.position().is_none()
+            && matches!(r.method, Method::Formula | Method::Meshing)
+            && !matches!(r.key.symbol, Symbol::GearRatio)
+    });
+    let q = quantities(&w.report.rows, |r| r.key.symbol == Symbol::SpecificSliding);
+    let caption = w.word(T::SlidingTable);
+    by_position(w, caption, &q);
+    let caption = w.word(T::RackTable);
+    of_scene(w, caption, |r| r.method == Method::Envelope);
+    let caption = w.word(T::TrainTable);
+    of_scene(w, caption, |r| {
+        r.key.symbol == Symbol::GearRatio || r.method == Method::Triangles
+    });
+    w.figures((PlateKind::Gears, None), |_| true, |own| own.to_string());
+    Ok(())
+}
+
+/// The balancing and friction studies of a scene that has them.
+pub(super) fn others(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    let scene = w.session.scene();
+    if scene.balancing.is_some() {
+        w.heading(1, T::BalancingSection);
+        let caption = w.word(T::BalancingTable);
+        of_scene(w, caption, |r| {
+            matches!(
+                r.key.symbol,
+                Symbol::Mass | Symbol::StaticMoment | Symbol::UnbalanceMoment | Symbol::Angle
+            )
+        });
+        w.figures(
+            (PlateKind::Balancing, None),
+            |_| true,
+            |own| own.to_string(),
+        );
+    }
+    if !scene.friction.is_empty() {
+        w.heading(1, T::FrictionSection);
+        let caption = w.word(T::FrictionTable);
+        of_scene(w, caption, |r| {
+            r.position().is_none() || r.key.subject.ends_with("_f")
+        });
+        w.figures((PlateKind::Friction, None), |_| true, |own| own.to_string());
+    }
+    Ok(())
+}

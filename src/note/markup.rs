@@ -1,0 +1,207 @@
+//! Typst markup written piece by piece: headings, paragraphs, formulas, tables and figures.
+//! Every text the note takes from elsewhere (the scene's title, a label's markup, a number)
+//! enters as a Typst string or as content built from one, so no character of it is read as
+//! markup.
+
+use crate::plate::text::{parse, Script};
+use crate::scale::{format_sig, Lang};
+
+/// A Typst string literal of `text`.
+pub(super) fn string(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 2);
+    out.push('"');
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+/// Plain text as content: `[#"text"]`.
+pub(super) fn text(text: &str) -> String {
+    format!("[#{}]", string(text))
+}
+
+/// Label markup (`V_{B3B1}`, `μ_{v} = 0,05 м/(с·мм)`, `R_{0-5}`) as content, its subscripts
+/// and superscripts set as such: `[#"V"#sub("B3B1")]`.
+pub(super) fn label(markup: &str) -> String {
+    let mut out = String::from("[");
+    for run in parse(markup) {
+        let s = string(&run.text);
+        match run.script {
+            Script::Normal => out.push_str(&format!("#{s}")),
+            Script::Sub => out.push_str(&format!("#sub({s})")),
+            Script::Sup => out.push_str(&format!("#super({s})")),
+        }
+    }
+    out.push(']');
+    out
+}
+
+/// A quantity's symbol in a formula: the label markup set in the text face, italic
+/// (`#qs[...]`, defined by the note's template).
+pub(super) fn sym(markup: &str) -> String {
+    format!("#qs{}", label(markup))
+}
+
+/// A number in a formula, to `sig` significant digits with the language's decimal sign, set
+/// upright; a negative number with its minus sign.
+pub(super) fn num(x: f64, sig: usize, lang: Lang) -> String {
+    let t = format_sig(x, sig, lang);
+    match t.strip_prefix('-').or_else(|| t.strip_prefix('−')) {
+        Some(abs) => format!("-{}", string(abs)),
+        None => string(&t),
+    }
+}
+
+/// A unit after a number in a formula (`м/с`), upright, after a thin space.
+pub(super) fn unit(u: &str) -> String {
+    if u.is_empty() {
+        String::new()
+    } else {
+        format!("thin {}", string(u))
+    }
+}
+
+/// A fraction in a formula.
+pub(super) fn frac(top: &str, bottom: &str) -> String {
+    format!("({top})/({bottom})")
+}
+
+/// An inline formula, a piece of a paragraph or a cell.
+pub(super) fn inline(math: &str) -> String {
+    format!("${math}$")
+}
+
+/// One cell of a table: content (from [`text`], [`label`] or a formula `$…$`).
+pub(super) type Cell = String;
+
+/// How a table's columns are aligned.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Align {
+    /// Text: left.
+    Left,
+    /// Numbers: centred.
+    Centre,
+}
+
+/// A document's markup.
+#[derive(Debug, Default)]
+pub(super) struct Markup {
+    out: String,
+}
+
+impl Markup {
+    /// Raw Typst, as written.
+    pub(super) fn raw(&mut self, typst: &str) {
+        self.out.push_str(typst);
+        self.out.push('\n');
+    }
+
+    /// A numbered heading of `level` (1 a section, 2 a subsection) with its label `<key>`.
+    pub(super) fn heading(&mut self, level: usize, title: &str) {
+        let marks = "=".repeat(level.max(1));
+        self.out
+            .push_str(&format!("\n{marks} #{}\n\n", string(title)));
+    }
+
+    /// A paragraph of pieces: content (from [`text`], [`label`]) and inline formulas
+    /// (`$…$`, from [`inline`]), a space between each two.
+    pub(super) fn par(&mut self, pieces: &[String]) {
+        for p in pieces {
+            if !p.starts_with('$') {
+                self.out.push('#');
+            }
+            self.out.push_str(p);
+            self.out.push(' ');
+        }
+        self.out.push_str("\n\n");
+    }
+
+    /// A paragraph of plain text.
+    pub(super) fn say(&mut self, t: &str) {
+        self.par(&[text(t)]);
+    }
+
+    /// A displayed formula (Typst math, built with [`sym`], [`num`], [`unit`], [`frac`]).
+    pub(super) fn formula(&mut self, math: &str) {
+        self.out.push_str(&format!("$ {math} $\n\n"));
+    }
+
+    /// A table under its caption (ГОСТ 2.105: «Таблица N — caption» above it, the header
+    /// repeated on each page).
+    pub(super) fn table(
+        &mut self,
+        caption: &str,
+        align: &[Align],
+        header: &[Cell],
+        rows: &[Vec<Cell>],
+    ) {
+        let columns = header.len();
+        let aligns: Vec<&str> = (0..columns)
+            .map(|k| match align.get(k).copied().unwrap_or(Align::Centre) {
+                Align::Left => "left",
+                Align::Centre => "center",
+            })
+            .collect();
+        let mut t = format!(
+            "#figure(kind: table, caption: {}, table(columns: {columns}, align: ({}), table.header(",
+            text(caption),
+            aligns.join(", ") + if columns == 1 { "," } else { "" }
+        );
+        t.push_str(&header.join(", "));
+        t.push_str("),\n");
+        for row in rows {
+            let mut cells: Vec<String> = row.iter().take(columns).cloned().collect();
+            cells.resize(columns, "[]".into());
+            t.push_str("  ");
+            t.push_str(&cells.join(", "));
+            t.push_str(",\n");
+        }
+        t.push_str("))\n\n");
+        self.out.push_str(&t);
+    }
+
+    /// A figure: the file `path` (an SVG the note carries) `width_mm` wide at most, under its
+    /// caption («Рисунок N — caption» under it).
+    pub(super) fn figure(&mut self, path: &str, width_mm: f64, caption: &str) {
+        self.out.push_str(&format!(
+            "#figure(image({}, width: {:.1}mm), caption: {})\n\n",
+            string(path),
+            width_mm,
+            label(caption)
+        ));
+    }
+
+    /// The markup written.
+    pub(super) fn finish(self) -> String {
+        self.out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn strings_escape_quotes_and_backslashes() {
+        assert_eq!(string(r#"a "b" \c"#), r#""a \"b\" \\c""#);
+    }
+
+    #[test]
+    fn a_label_keeps_its_scripts() {
+        assert_eq!(label("V_{B3B1}"), r##"[#"V"#sub("B3B1")]"##);
+        assert_eq!(label("R_{1-2}^{тр}"), r##"[#"R"#sub("1-2")#super("тр")]"##);
+    }
+
+    #[test]
+    fn numbers_in_formulas_carry_the_decimal_sign_and_minus() {
+        assert_eq!(num(2.19911, 4, Lang::Ru), r#""2,199""#);
+        assert_eq!(num(-0.5456, 3, Lang::En), r#"-"0.546""#);
+    }
+}

@@ -1,0 +1,176 @@
+//! The explanatory note (расчётно-пояснительная записка) of a scene: the session's rows,
+//! tables and findings and the sheets' own views composed into one document in the order of
+//! seed 000 — title page, contents, the task, the structural analysis, the kinematics, the
+//! kinetostatics, the dynamics, the cam, the gears, the conclusions and the references — each
+//! section where the scene has its study. Every number comes from the session; nothing is
+//! computed here that a study or a sheet has computed.
+//!
+//! [`compose`] writes the note as Typst markup with its figures (SVG, one per view cut out of
+//! its sheet); [`to_pdf`] typesets it with the `typst` crate and bundled fonts only. A4
+//! portrait, ГОСТ 2.105 text rules, ГОСТ 2.104 frames: form 2 on the first text page, form 2a
+//! on the following ones. The words are the sheets' catalogue's (`sheets::captions`).
+
+mod front;
+mod kinematics;
+mod machines;
+mod markup;
+mod rows;
+mod typeset;
+
+use crate::check::Report;
+use crate::plate::{self, Plate};
+use crate::scale::Lang;
+use crate::scene::PlateKind;
+use crate::sheets::captions::{NoteText, Word};
+use crate::sheets::{self, BuildError};
+use crate::study::{Session, StudyError};
+use markup::Markup;
+use thiserror::Error;
+
+/// A note ready to typeset: its Typst source and the files it reads (the figures).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Note {
+    /// The Typst source.
+    pub source: String,
+    /// The figures: the path the source names each by, and its bytes.
+    pub files: Vec<(String, Vec<u8>)>,
+}
+
+/// Why a note cannot be written.
+#[derive(Debug, Error)]
+pub enum NoteError {
+    /// A study of the scene cannot be carried out.
+    #[error(transparent)]
+    Study(#[from] StudyError),
+    /// A sheet whose views the note shows cannot be built.
+    #[error("sheet `{}`: {error}", .kind.stem())]
+    Sheet {
+        /// The plate.
+        kind: PlateKind,
+        /// Why.
+        error: BuildError,
+    },
+    /// The typesetter refuses the note (a defect of the note's writer).
+    #[error("typesetting the note: {0}")]
+    Typeset(String),
+}
+
+/// The largest figure of the note, mm: the text's width and most of a page's height.
+const FIGURE_W_MM: f64 = 170.0;
+/// See [`FIGURE_W_MM`].
+const FIGURE_H_MM: f64 = 200.0;
+
+/// What every section writes with: the session, its report, the scene's sheets numbered as
+/// one set, the markup and the figures so far.
+struct Writer<'a, 's> {
+    session: &'a Session<'s>,
+    lang: Lang,
+    report: Report,
+    sheets: Vec<(PlateKind, Plate)>,
+    doc: Markup,
+    files: Vec<(String, Vec<u8>)>,
+}
+
+impl Writer<'_, '_> {
+    /// A word of the catalogue in the note's language.
+    fn word(&self, w: impl Word) -> &'static str {
+        w.get(self.lang)
+    }
+
+    /// A heading of a section (level 1) or subsection (level 2).
+    fn heading(&mut self, level: usize, w: impl Word) {
+        let title = self.word(w);
+        self.doc.heading(level, title);
+    }
+
+    /// The views whose caption `pick` accepts on the `nth` sheet of `kind` (every sheet of
+    /// it when `None`), as figures: each captioned by `caption` (given the view's own caption)
+    /// and the sheet it is drawn on.
+    fn figures(
+        &mut self,
+        (kind, nth): (PlateKind, Option<usize>),
+        pick: impl Fn(&str) -> bool,
+        caption: impl Fn(&str) -> String,
+    ) {
+        let sheet_word = self.word(NoteText::SheetNo);
+        let mut out = Vec::new();
+        let sheets = self.sheets.iter().filter(|(k, _)| *k == kind).enumerate();
+        for (_, (_, p)) in sheets.filter(|(n, _)| nth.is_none_or(|k| k == *n)) {
+            let svgs = plate::view_svgs(p);
+            for (i, (view, svg)) in p.views.iter().zip(svgs).enumerate() {
+                let own = view.caption.as_deref().unwrap_or("");
+                let Some(svg) = svg.filter(|_| pick(own)) else {
+                    continue;
+                };
+                let path = format!("/fig/{}-{i}.svg", p.name);
+                let text = format!("{} ({sheet_word} {})", caption(own), p.title_block.sheet_no);
+                out.push((path, svg, text));
+            }
+        }
+        for (path, svg, text) in out {
+            // A figure keeps its size on the sheet when it fits the text's field (170 mm
+            // wide, 200 mm tall to leave its caption room on a page); a larger one is
+            // reduced to fit it.
+            let reduce = (FIGURE_W_MM / svg.width_mm)
+                .min(FIGURE_H_MM / svg.height_mm)
+                .min(1.0);
+            let width = svg.width_mm * reduce;
+            self.doc.figure(&path, width, &text);
+            self.files.push((path, svg.svg.into_bytes()));
+        }
+    }
+}
+
+/// The note of the scene of `session` in `lang`.
+///
+/// # Errors
+/// A study or a sheet the note shows that cannot be carried out.
+pub fn compose(session: &Session<'_>, lang: Lang) -> Result<Note, NoteError> {
+    let report = session.report()?;
+    let sheets = sheets::build_all(session, lang)
+        .map_err(|(kind, error)| NoteError::Sheet { kind, error })?;
+    let mut w = Writer {
+        session,
+        lang,
+        report,
+        sheets,
+        doc: Markup::default(),
+        files: Vec::new(),
+    };
+    front::preamble(&mut w);
+    front::title_page(&mut w);
+    front::contents(&mut w);
+    front::task(&mut w);
+    let scene = session.scene();
+    if scene.mechanism.is_some() {
+        kinematics::structure(&mut w)?;
+        kinematics::kinematics(&mut w)?;
+    }
+    if scene.forces.is_some() && scene.mechanism.is_some() {
+        machines::kinetostatics(&mut w)?;
+    }
+    if scene.dynamics.is_some() {
+        machines::dynamics(&mut w)?;
+    }
+    if scene.cam.is_some() {
+        machines::cam(&mut w)?;
+    }
+    if scene.gears.is_some() {
+        machines::gears(&mut w)?;
+    }
+    machines::others(&mut w)?;
+    front::conclusions(&mut w);
+    front::references(&mut w);
+    Ok(Note {
+        source: w.doc.finish(),
+        files: w.files,
+    })
+}
+
+/// The note typeset as PDF: the same note always gives the same bytes.
+///
+/// # Errors
+/// [`NoteError::Typeset`] when the typesetter refuses the source.
+pub fn to_pdf(note: &Note) -> Result<Vec<u8>, NoteError> {
+    typeset::pdf(&note.source, &note.files)
+}

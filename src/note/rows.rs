@@ -1,0 +1,241 @@
+//! The report's rows as the note's tables: by position (graphical, analytic and their
+//! difference for each quantity, the seed's Tables 2 and 9 shape) and of the whole scene.
+
+use super::markup::{label, text, Align};
+use super::Writer;
+use crate::check::{is_zero, Method, Row};
+use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
+
+pub(super) use crate::report::{md_percent as percent, md_value as fmt};
+
+/// Significant digits of a value in the note's tables.
+pub(super) const DIGITS: usize = 4;
+
+/// A row's value with a rounding residue against its quantity's scale written as 0 (a plan
+/// at drafting 0 is exact: ω₄ = 1e−16 is ω₄ = 0).
+pub(super) fn value(x: f64, r: &Row) -> f64 {
+    if is_zero(x, r.scale) {
+        0.0
+    } else {
+        x
+    }
+}
+
+/// The quantities (name and method) of the rows `keep` accepts, in the order they first
+/// appear; a quantity zero everywhere (a translating link's ω) is left out.
+pub(super) fn quantities(rows: &[Row], keep: impl Fn(&Row) -> bool) -> Vec<(String, Method)> {
+    let mut out: Vec<(String, Method)> = Vec::new();
+    for r in rows.iter().filter(|r| keep(r)) {
+        let q = (r.quantity(), r.method);
+        if !out.contains(&q) {
+            out.push(q);
+        }
+    }
+    out.retain(|(q, m)| {
+        rows.iter()
+            .filter(|r| r.quantity() == *q && r.method == *m)
+            .any(|r| value(r.analytic, r) != 0.0 || value(r.graphical, r) != 0.0)
+    });
+    out
+}
+
+/// A quantity's symbol and unit as a column head: `V_{B3}, м/с`.
+pub(super) fn head(w: &Writer<'_, '_>, r: &Row) -> String {
+    let unit = unit_in(r.unit(), w.lang);
+    let symbol = quantity(r.key.symbol, &r.key.subject, w.lang);
+    if unit.is_empty() || unit == "1" {
+        symbol
+    } else {
+        format!("{symbol}, {unit}")
+    }
+}
+
+/// Tables by position of `quantities` (at most three to a table, so that one fits the
+/// page's width): each quantity's graphical value, its analytic twin and their difference
+/// in %, one row per position.
+pub(super) fn by_position(w: &mut Writer<'_, '_>, caption: &str, quantities: &[(String, Method)]) {
+    let lang = w.lang;
+    let positions: Vec<String> = {
+        let mut ps: Vec<String> = Vec::new();
+        for r in &w.report.rows {
+            if quantities.contains(&(r.quantity(), r.method)) {
+                if let Some(p) = r.position() {
+                    if !ps.contains(&p) {
+                        ps.push(p);
+                    }
+                }
+            }
+        }
+        ps
+    };
+    let rel = w.report.rel_errors();
+    let chunks: Vec<&[(String, Method)]> = quantities.chunks(3).collect();
+    let parts = chunks.len();
+    for (c, chunk) in chunks.into_iter().enumerate() {
+        let find = |q: &(String, Method), p: &str| {
+            w.report.rows.iter().zip(&rel).find(|(r, _)| {
+                r.quantity() == q.0 && r.method == q.1 && r.position().as_deref() == Some(p)
+            })
+        };
+        let mut header = vec![text(w.word(T::PositionShort))];
+        let mut align = vec![Align::Centre];
+        for q in chunk {
+            let Some((r, _)) = w
+                .report
+                .rows
+                .iter()
+                .zip(&rel)
+                .find(|(r, _)| r.quantity() == q.0 && r.method == q.1)
+            else {
+                continue;
+            };
+            let h = head(w, r);
+            header.push(label(&format!("{h} ({})", w.word(T::GraphicalShort))));
+            header.push(label(&format!("{h} ({})", w.word(T::AnalyticShort))));
+            header.push(text("δ, %"));
+            align.extend([Align::Centre; 3]);
+        }
+        let body: Vec<Vec<String>> = positions
+            .iter()
+            .map(|p| {
+                let mut row = vec![text(p)];
+                for q in chunk {
+                    match find(q, p) {
+                        Some((r, d)) => {
+                            row.push(text(&fmt(value(r.graphical, r), DIGITS, lang)));
+                            row.push(text(&fmt(value(r.analytic, r), DIGITS, lang)));
+                            row.push(text(
+                                &d.map(|d| percent(d, lang)).unwrap_or_else(|| "—".into()),
+                            ));
+                        }
+                        None => row.extend([text("—"), text("—"), text("—")]),
+                    }
+                }
+                row
+            })
+            .collect();
+        let caption = if parts > 1 {
+            format!("{caption} ({} {}/{parts})", w.word(T::Part), c + 1)
+        } else {
+            caption.to_string()
+        };
+        w.doc.table(&caption, &align, &header, &body);
+    }
+}
+
+/// The rows of the whole scene `keep` accepts: quantity, method, graphical, analytic, δ.
+pub(super) fn of_scene(w: &mut Writer<'_, '_>, caption: &str, keep: impl Fn(&Row) -> bool) {
+    let lang = w.lang;
+    let rel = w.report.rel_errors();
+    let body: Vec<Vec<String>> = w
+        .report
+        .rows
+        .iter()
+        .zip(&rel)
+        .filter(|(r, _)| keep(r))
+        .map(|(r, d)| {
+            vec![
+                label(&head(w, r)),
+                text(
+                    &r.position()
+                        .map(|p| format!("{} {p}", r.method.name(lang)))
+                        .unwrap_or_else(|| r.method.name(lang).to_string()),
+                ),
+                text(&fmt(value(r.graphical, r), 6, lang)),
+                text(&fmt(value(r.analytic, r), 6, lang)),
+                text(&d.map(|d| percent(d, lang)).unwrap_or_else(|| "—".into())),
+            ]
+        })
+        .collect();
+    if body.is_empty() {
+        return;
+    }
+    let header = [
+        text(w.word(S::Quantity)),
+        text(w.word(S::Method)),
+        text(w.word(S::Graphical)),
+        text(w.word(S::Analytic)),
+        text("δ, %"),
+    ];
+    w.doc.table(
+        caption,
+        &[
+            Align::Left,
+            Align::Left,
+            Align::Centre,
+            Align::Centre,
+            Align::Centre,
+        ],
+        &header,
+        &body,
+    );
+}
+
+/// A column of numbers under its head (label markup); `None` for an empty cell.
+pub(super) struct Column {
+    /// The head: symbol and unit in label markup.
+    pub head: String,
+    /// The values, one per row.
+    pub values: Vec<Option<f64>>,
+    /// Significant digits.
+    pub digits: usize,
+    /// The zero reference of a rounding residue ([`is_zero`]); the column's largest value
+    /// when `None`.
+    pub scale: Option<f64>,
+}
+
+impl Column {
+    /// A column of `values` to [`DIGITS`] significant digits.
+    pub(super) fn new(head: impl Into<String>, values: Vec<Option<f64>>) -> Self {
+        Self {
+            head: head.into(),
+            values,
+            digits: DIGITS,
+            scale: None,
+        }
+    }
+
+    /// The same column with a rounding residue judged against `scale`.
+    pub(super) fn against(self, scale: f64) -> Self {
+        Self {
+            scale: Some(scale),
+            ..self
+        }
+    }
+}
+
+/// A table of numbers by position: the position column, then `columns`; in each column a
+/// rounding residue against its largest value is written 0 ([`ZERO_FRACTION`]).
+pub(super) fn numbers(
+    w: &mut Writer<'_, '_>,
+    caption: &str,
+    positions: &[String],
+    columns: &[Column],
+) {
+    let lang = w.lang;
+    let mut header = vec![text(w.word(T::PositionShort))];
+    header.extend(columns.iter().map(|c| label(&c.head)));
+    let rows: Vec<Vec<String>> = positions
+        .iter()
+        .enumerate()
+        .map(|(k, p)| {
+            let mut row = vec![text(p)];
+            for c in columns {
+                let largest = c.scale.unwrap_or_else(|| {
+                    c.values
+                        .iter()
+                        .flatten()
+                        .fold(0.0f64, |m, x| m.max(x.abs()))
+                });
+                row.push(text(&match c.values.get(k).copied().flatten() {
+                    Some(x) if is_zero(x, largest) => "0".into(),
+                    Some(x) => fmt(x, c.digits, lang),
+                    None => "—".into(),
+                }));
+            }
+            row
+        })
+        .collect();
+    let align = vec![Align::Centre; header.len()];
+    w.doc.table(caption, &align, &header, &rows);
+}

@@ -1,0 +1,128 @@
+//! The typesetter: a note's Typst source and its figures compiled to PDF by the `typst` crate,
+//! with bundled fonts only (New Computer Modern and its math face from `typst-assets`, the
+//! plates' DejaVu Sans for the frames and the figures' texts), no clock, no file system and
+//! no packages, so that the same note always gives the same bytes.
+
+use super::NoteError;
+use std::collections::HashMap;
+use std::sync::OnceLock;
+use typst::diag::{FileError, FileResult, SourceDiagnostic};
+use typst::foundations::{Bytes, Datetime, Duration, Smart};
+use typst::syntax::{FileId, RootedPath, Source, VirtualPath, VirtualRoot};
+use typst::text::{Font, FontBook};
+use typst::utils::LazyHash;
+use typst::{Library, LibraryExt, World, WorldExt};
+
+/// The fonts of every note, loaded once: the book and the faces in its order.
+fn fonts() -> &'static (LazyHash<FontBook>, Vec<Font>) {
+    static FONTS: OnceLock<(LazyHash<FontBook>, Vec<Font>)> = OnceLock::new();
+    FONTS.get_or_init(|| {
+        let mut faces: Vec<Font> = Vec::new();
+        for data in typst_assets::fonts() {
+            faces.extend(Font::iter(Bytes::new(data)));
+        }
+        for data in crate::plate::bundled_faces() {
+            faces.extend(Font::iter(Bytes::new(data)));
+        }
+        (LazyHash::new(FontBook::from_fonts(&faces)), faces)
+    })
+}
+
+/// The standard library, built once.
+fn library() -> &'static LazyHash<Library> {
+    static LIBRARY: OnceLock<LazyHash<Library>> = OnceLock::new();
+    LIBRARY.get_or_init(|| LazyHash::new(Library::default()))
+}
+
+/// The file id of `path` in the note's project root.
+fn file_id(path: &str) -> Result<FileId, NoteError> {
+    let vpath = VirtualPath::new(path).map_err(|e| NoteError::Typeset(format!("{path}: {e}")))?;
+    Ok(RootedPath::new(VirtualRoot::Project, vpath).intern())
+}
+
+/// One note's world: its main source and its figures.
+struct NoteWorld {
+    main: Source,
+    files: HashMap<FileId, Bytes>,
+}
+
+impl World for NoteWorld {
+    fn library(&self) -> &LazyHash<Library> {
+        library()
+    }
+
+    fn book(&self) -> &LazyHash<FontBook> {
+        &fonts().0
+    }
+
+    fn main(&self) -> FileId {
+        self.main.id()
+    }
+
+    fn source(&self, id: FileId) -> FileResult<Source> {
+        if id == self.main.id() {
+            Ok(self.main.clone())
+        } else {
+            Err(FileError::NotSource)
+        }
+    }
+
+    fn file(&self, id: FileId) -> FileResult<Bytes> {
+        if id == self.main.id() {
+            return Ok(Bytes::from_string(self.main.clone()));
+        }
+        self.files
+            .get(&id)
+            .cloned()
+            .ok_or_else(|| FileError::NotFound(id.get().vpath().get_with_slash().into()))
+    }
+
+    fn font(&self, index: usize) -> Option<Font> {
+        fonts().1.get(index).cloned()
+    }
+
+    fn today(&self, _offset: Option<Duration>) -> Option<Datetime> {
+        // No clock: a note is the same on every day.
+        None
+    }
+}
+
+/// The PDF of a Typst `source` whose figures are `files` (path in the source → bytes).
+///
+/// # Errors
+/// [`NoteError::Typeset`] with Typst's first diagnostics when the source does not compile.
+pub(super) fn pdf(source: &str, files: &[(String, Vec<u8>)]) -> Result<Vec<u8>, NoteError> {
+    let main = Source::new(file_id("/note.typ")?, source.to_string());
+    let files = files
+        .iter()
+        .map(|(path, bytes)| Ok((file_id(path)?, Bytes::new(bytes.clone()))))
+        .collect::<Result<HashMap<_, _>, NoteError>>()?;
+    let world = NoteWorld { main, files };
+    let document: typst_layout::PagedDocument = typst::compile(&world)
+        .output
+        .map_err(|errors| NoteError::Typeset(diagnostics(&world, &errors)))?;
+    let options = typst_pdf::PdfOptions {
+        ident: Smart::Custom("tmm-note".into()),
+        creator: Smart::Custom(Some("tmm".into())),
+        ..Default::default()
+    };
+    typst_pdf::pdf(&document, &options)
+        .map_err(|errors| NoteError::Typeset(diagnostics(&world, &errors)))
+}
+
+/// The first few diagnostics, each with the source line it points at.
+fn diagnostics(world: &NoteWorld, errors: &[SourceDiagnostic]) -> String {
+    errors
+        .iter()
+        .take(5)
+        .map(|e| {
+            let line = world
+                .range(e.span)
+                .and_then(|r| world.main.lines().byte_to_line(r.start))
+                .map(|l| format!("line {}: ", l + 1))
+                .unwrap_or_default();
+            format!("{line}{}", e.message)
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}

@@ -1,0 +1,255 @@
+//! The words of the explanatory note: its headings, its sentences and its tables' captions.
+
+use super::catalogue;
+
+catalogue! {
+    /// A heading, sentence or caption of the explanatory note.
+    NoteText {
+        ExplanatoryNote => ("Пояснительная записка", "Пояснювальна записка", "Explanatory note"),
+        ToTheCourseProject => (
+            "к курсовому проекту по теории механизмов и машин",
+            "до курсового проєкту з теорії механізмів і машин",
+            "to the course project in the theory of mechanisms and machines"
+        ),
+        NoteCode => ("ПЗ", "ПЗ", "EN"),
+        Student => ("Выполнил студент", "Виконав студент", "Student"),
+        Supervisor => ("Руководитель", "Керівник", "Supervisor"),
+        Contents => ("Содержание", "Зміст", "Contents"),
+        SheetNo => ("лист", "аркуш", "sheet"),
+        Task => ("Задание", "Завдання", "The task"),
+        MechanismData => ("Исходные данные механизма", "Вихідні дані механізму", "The mechanism's data"),
+        TaskFollows => (
+            "Остальные исходные данные (нагрузки, массы, данные кулачкового механизма и зубчатых передач) приведены в соответствующих разделах.",
+            "Решта вихідних даних (навантаження, маси, дані кулачкового механізму та зубчастих передач) наведена у відповідних розділах.",
+            "The other data (loads, masses, the cam's and the gears' data) are given in their sections."
+        ),
+        Value => ("значение", "значення", "value"),
+        StructureAndKinematics => (
+            "Структурный и кинематический анализ механизма",
+            "Структурний і кінематичний аналіз механізму",
+            "Structural and kinematic analysis of the mechanism"
+        ),
+        MobilityChebyshev => (
+            "Степень подвижности механизма определяем по формуле Чебышева;",
+            "Ступінь рухомості механізму визначаємо за формулою Чебишева;",
+            "The mobility of the mechanism by Chebyshev's formula;"
+        ),
+        WithRedundantPairs => (
+            "С избыточными (пассивными) парами",
+            "З надлишковими (пасивними) парами",
+            "With the redundant (passive) pairs"
+        ),
+        RedundantPairExplained => (
+            "Избыточная пара повторяет связь, уже наложенную другой парой, и на движение механизма не влияет; при структурном анализе она не учитывается.",
+            "Надлишкова пара повторює зв'язок, уже накладений іншою парою, і на рух механізму не впливає; при структурному аналізі вона не враховується.",
+            "A redundant pair repeats a constraint another pair imposes already and does not affect the motion; the structural analysis leaves it out."
+        ),
+        AssurGroups => (
+            "Механизм раскладываем на ведущее звено и структурные группы Ассура (таблица ниже); степень подвижности каждой группы равна нулю.",
+            "Механізм розкладаємо на ведучу ланку і структурні групи Ассура (таблиця нижче); ступінь рухомості кожної групи дорівнює нулю.",
+            "The mechanism is split into the driving link and Assur groups (the table below); each group's mobility is zero."
+        ),
+        GroupsTable => ("Структурные группы механизма", "Структурні групи механізму", "The mechanism's structural groups"),
+        KindWord => ("вид", "вид", "kind"),
+        Pairs => ("кинематические пары (звенья, тип)", "кінематичні пари (ланки, тип)", "kinematic pairs (links, type)"),
+        GroupMobility => ("подвижность", "рухомість", "mobility"),
+        Prismatic => ("поступательная", "поступальна", "prismatic"),
+        Revolute => ("вращательная", "обертальна", "revolute"),
+        ClassOfMechanism => ("механизм класса", "механізм класу", "a mechanism of class"),
+        LengthScale => (
+            "Масштаб длин выбираем по длине кривошипа на чертеже:",
+            "Масштаб довжин вибираємо за довжиною кривошипа на кресленні:",
+            "The length scale from the crank's length on the drawing:"
+        ),
+        MetreUnit => ("м", "м", "m"),
+        MmUnit => ("мм", "мм", "mm"),
+        PositionsConstruction => (
+            "План положений строим методом засечек: окружность кривошипа делим на равные части от начала рабочего хода, для каждого положения кривошипа точки групп находим пересечением дуг, описанных циркулем радиусами звеньев, или дуги с направляющей. Крайние положения выходного звена находим построением.",
+            "План положень будуємо методом засічок: коло кривошипа ділимо на рівні частини від початку робочого ходу, для кожного положення кривошипа точки груп знаходимо перетином дуг, описаних циркулем радіусами ланок, або дуги з напрямною. Крайні положення вихідної ланки знаходимо побудовою.",
+            "The plan of positions by compass arcs: the crank's circle divided into equal parts from the start of the working stroke; for each crank position the groups' points where the arcs of the links' lengths meet each other or a guide. The output's extreme positions by construction."
+        ),
+        StrokeIs => ("Ход (размах) выходного звена между крайними положениями:", "Хід (розмах) вихідної ланки між крайніми положеннями:", "The stroke (swing) of the output between its extremes:"),
+        ThetaAndK => (
+            "Угол перекрытия θ между положениями кривошипа в крайних положениях механизма и коэффициент изменения средней скорости хода:",
+            "Кут перекриття θ між положеннями кривошипа в крайніх положеннях механізму і коефіцієнт зміни середньої швидкості ходу:",
+            "The angle θ between the crank's extreme positions and the time ratio of the strokes:"
+        ),
+        AlongGuideOf => ("направляющей звена", "напрямній ланки", "the guide of link"),
+        VelocityPlans => ("Планы скоростей", "Плани швидкостей", "Velocity plans"),
+        CrankPinVelocity => ("Скорость пальца кривошипа:", "Швидкість пальця кривошипа:", "The velocity of the crank pin:"),
+        VelocityScale => ("Масштаб плана скоростей:", "Масштаб плану швидкостей:", "The velocity plan's scale:"),
+        VectorEquations => (
+            "Для каждой структурной группы составляем два векторных уравнения; известные векторы известны по величине и направлению, у неизвестных известны только линии действия:",
+            "Для кожної структурної групи складаємо два векторні рівняння; відомі вектори відомі за величиною і напрямом, у невідомих відомі лише лінії дії:",
+            "Each structural group gives two vector equations; the known vectors are known in magnitude and direction, the unknown ones by their lines only:"
+        ),
+        WorkedVelocities => ("Скорости, измеренные на плане скоростей в положении", "Швидкості, виміряні на плані швидкостей у положенні", "The velocities measured on the velocity plan at position"),
+        VelocitiesTable => ("Скорости точек по планам скоростей", "Швидкості точок за планами швидкостей", "Velocities of the points by the velocity plans"),
+        AngularVelocitiesTable => ("Угловые скорости звеньев", "Кутові швидкості ланок", "Angular velocities of the links"),
+        VelocityPlanWord => ("План скоростей", "План швидкостей", "Velocity plan"),
+        AccelerationPlans => ("Планы ускорений", "Плани прискорень", "Acceleration plans"),
+        CrankPinAcceleration => ("Ускорение пальца кривошипа (ω₁ = const):", "Прискорення пальця кривошипа (ω₁ = const):", "The acceleration of the crank pin (ω₁ = const):"),
+        AccelerationScale => ("Масштаб плана ускорений:", "Масштаб плану прискорень:", "The acceleration plan's scale:"),
+        AccelerationEquations => (
+            "Векторные уравнения ускорений групп (относительное ускорение во вращательном движении — нормальная и касательная составляющие, в поступательном — кориолисово и релятивное):",
+            "Векторні рівняння прискорень груп (відносне прискорення в обертальному русі — нормальна і дотична складові, у поступальному — коріолісове і релятивне):",
+            "The groups' acceleration equations (a relative acceleration in rotation: normal and tangential parts; along a slide: Coriolis and relative parts):"
+        ),
+        CoriolisWorked => ("Кориолисово ускорение в положении", "Коріолісове прискорення в положенні", "The Coriolis acceleration at position"),
+        WorkedAccelerations => ("Ускорения, измеренные на плане ускорений в положении", "Прискорення, виміряні на плані прискорень у положенні", "The accelerations measured on the acceleration plan at position"),
+        AccelerationsTable => ("Ускорения точек по планам ускорений", "Прискорення точок за планами прискорень", "Accelerations of the points by the acceleration plans"),
+        AngularAccelerationsTable => ("Угловые ускорения звеньев", "Кутові прискорення ланок", "Angular accelerations of the links"),
+        KinematicDiagrams => ("Кинематические диаграммы", "Кінематичні діаграми", "Kinematic diagrams"),
+        ChordMethod => (
+            "Диаграмму перемещений строим по плану положений; диаграммы аналогов скорости и ускорения получаем графическим дифференцированием методом хорд с полюсными расстояниями H₁ и H₂. Масштабы производных:",
+            "Діаграму переміщень будуємо за планом положень; діаграми аналогів швидкості і прискорення отримуємо графічним диференціюванням методом хорд з полюсними відстанями H₁ і H₂. Масштаби похідних:",
+            "The displacement diagram from the plan of positions; the analogues of velocity and acceleration by graphical differentiation (the method of chords) with the pole distances H₁ and H₂. The scales of the derivatives:"
+        ),
+        DiagramValues => (
+            "Скорость и ускорение: V = ω₁·(dS/dφ), a = ω₁²·(d²S/dφ²); значения в положениях механизма — в таблице.",
+            "Швидкість і прискорення: V = ω₁·(dS/dφ), a = ω₁²·(d²S/dφ²); значення в положеннях механізму — у таблиці.",
+            "The velocity and acceleration: V = ω₁·(dS/dφ), a = ω₁²·(d²S/dφ²); the values at the positions in the table."
+        ),
+        DiagramTable => ("Перемещение, скорость и ускорение по диаграммам", "Переміщення, швидкість і прискорення за діаграмами", "Displacement, velocity and acceleration by the diagrams"),
+        Hodograph => ("Годограф скорости", "Годограф швидкості", "The velocity hodograph"),
+        HodographText => (
+            "Векторы скорости точки из планов скоростей переносим параллельно к общему полюсу; их концы соединяем плавной кривой — годографом скорости.",
+            "Вектори швидкості точки з планів швидкостей переносимо паралельно до спільного полюса; їх кінці з'єднуємо плавною кривою — годографом швидкості.",
+            "The point's velocity vectors from the velocity plans carried parallel to one pole; their ends joined by a smooth curve, the hodograph."
+        ),
+        AnalyticMethod => ("Аналитический метод", "Аналітичний метод", "The analytic method"),
+        AnalyticText => (
+            "Положения, скорости и ускорения найдены аналитически из уравнений замкнутых векторных контуров (аналитический двойник построения).",
+            "Положення, швидкості і прискорення знайдено аналітично з рівнянь замкнених векторних контурів (аналітичний двійник побудови).",
+            "The positions, velocities and accelerations solved analytically from the closed vector loops (the construction's analytic twin)."
+        ),
+        AnalyticTable => ("Аналитический расчёт", "Аналітичний розрахунок", "The analytic solution"),
+        Kinetostatics => ("Кинетостатический анализ механизма", "Кінетостатичний аналіз механізму", "Kinetostatic analysis of the mechanism"),
+        KinetostaticsIntro => (
+            "Силовой расчёт выполняем методом кинетостатики: к внешним силам прикладываем силы и моменты сил инерции; группы Ассура рассматриваем, начиная с последней присоединённой, реакции находим из уравнений моментов и планов сил; уравновешивающий момент находим по ведущему звену и по рычагу Жуковского.",
+            "Силовий розрахунок виконуємо методом кінетостатики: до зовнішніх сил прикладаємо сили і моменти сил інерції; групи Ассура розглядаємо, починаючи з останньої приєднаної, реакції знаходимо з рівнянь моментів і планів сил; зрівноважувальний момент знаходимо за ведучою ланкою і за важелем Жуковського.",
+            "The force analysis by kinetostatics: the inertia forces and moments are added to the external loads; the Assur groups are taken from the last attached, their reactions from the moment equations and the force polygons; the balancing moment from the driving link and by Zhukovsky's lever."
+        ),
+        LoadsAtPosition => ("Силовой расчёт в положении", "Силовий розрахунок у положенні", "The force analysis at position"),
+        InertiaLoads => ("Силы и моменты сил инерции:", "Сили і моменти сил інерції:", "The inertia forces and moments:"),
+        GroupsEquations => (
+            "Для каждой группы: сумма моментов сил относительно внутренней пары по каждому звену даёт касательные составляющие реакций, векторное уравнение равновесия группы — план сил; реакции ведущего звена — из его плана сил.",
+            "Для кожної групи: сума моментів сил відносно внутрішньої пари для кожної ланки дає дотичні складові реакцій, векторне рівняння рівноваги групи — план сил; реакції ведучої ланки — з її плану сил.",
+            "For each group: the sum of moments about the inner pair for each link gives the reactions' tangential parts, the group's vector equation of equilibrium its force polygon; the driving link's reactions from its polygon."
+        ),
+        ReactionsTable => ("Реакции и уравновешивающая сила, положение", "Реакції і зрівноважувальна сила, положення", "Reactions and the balancing load, position"),
+        BalancingBothRoutes => (
+            "Уравновешивающий момент по плану сил ведущего звена и по рычагу Жуковского; расхождение:",
+            "Зрівноважувальний момент за планом сил ведучої ланки і за важелем Жуковського; розбіжність:",
+            "The balancing moment by the driving link's polygon and by Zhukovsky's lever; their difference:"
+        ),
+        PolygonShort => ("пл", "пл", "pol"),
+        LeverShort => ("Ж", "Ж", "Zh"),
+        DrivePower => ("Мощность привода:", "Потужність приводу:", "The drive's power:"),
+        Dynamics => ("Динамика машины", "Динаміка машини", "Machine dynamics"),
+        DynamicsIntro => (
+            "Силы и массы приводим к валу кривошипа: приведённый момент сил сопротивления M_пр и приведённый момент инерции J_пр — по планам скоростей в каждом положении. Графическим интегрированием диаграммы M_пр строим диаграмму работ сил сопротивления; работу движущих сил за цикл принимаем равной ей; разность работ даёт изменение кинетической энергии ΔT.",
+            "Сили і маси зводимо до вала кривошипа: зведений момент сил опору M_пр і зведений момент інерції J_пр — за планами швидкостей у кожному положенні. Графічним інтегруванням діаграми M_пр будуємо діаграму робіт сил опору; роботу рушійних сил за цикл приймаємо рівною їй; різниця робіт дає зміну кінетичної енергії ΔT.",
+            "The forces and masses reduced to the crank shaft: the reduced resisting moment M_red and the reduced moment of inertia J_red from the velocity plans at each position. Integrating the M_red diagram graphically gives the work of the resisting forces; the driving work over the cycle equals it; their difference is the change of kinetic energy ΔT."
+        ),
+        ReductionInput => ("Исходные данные для приведения сил и масс (аналитически)", "Вихідні дані для зведення сил і мас (аналітично)", "The input of the reduction of forces and masses (analytic)"),
+        ReducedMoments => ("Приведённые моменты сил", "Зведені моменти сил", "Reduced moments of the forces"),
+        ReducedInertias => ("Приведённые моменты инерции по звеньям и кинетическая энергия звеньев", "Зведені моменти інерції за ланками і кінетична енергія ланок", "Reduced moments of inertia by links and the links' kinetic energy"),
+        ConstantInertia => ("Постоянная часть приведённого момента инерции (редуктор, коробка скоростей):", "Стала частина зведеного моменту інерції (редуктор, коробка швидкостей):", "The constant part of the reduced moment of inertia (reducer, gearbox):"),
+        EnergyTable => ("Изменение кинетической энергии", "Зміна кінетичної енергії", "Change of kinetic energy"),
+        FlywheelSize => ("Размеры маховика:", "Розміри маховика:", "The flywheel's size:"),
+        FlywheelRoutes => (
+            "Момент инерции маховика находим по диаграмме энергомасс (Виттенбауэр: касательные под углами ψ_max, ψ_min отсекают отрезок kl), по диаграмме T_I (Меркин) и точным интегрированием уравнения движения:",
+            "Момент інерції маховика знаходимо за діаграмою енергомас (Віттенбауер: дотичні під кутами ψ_max, ψ_min відтинають відрізок kl), за діаграмою T_I (Меркін) і точним інтегруванням рівняння руху:",
+            "The flywheel's moment of inertia by the energy–mass diagram (Wittenbauer: the tangents at ψ_max, ψ_min cut off kl), by the T_I diagram (Merkin) and by integrating the equation of motion exactly:"
+        ),
+        FlywheelTable => ("Работы, момент инерции маховика и коэффициент неравномерности", "Роботи, момент інерції маховика і коефіцієнт нерівномірності", "Works, the flywheel's moment of inertia and the coefficient of irregularity"),
+        ExactFlywheel => ("Момент инерции маховика по точному решению:", "Момент інерції маховика за точним розв'язком:", "The flywheel's moment of inertia by the exact solution:"),
+        CamSection => ("Синтез кулачкового механизма", "Синтез кулачкового механізму", "Design of the cam mechanism"),
+        CamIntro => (
+            "По заданному закону движения толкателя строим диаграмму аналога ускорения, графическим интегрированием — аналога скорости и перемещения; по совмещённой диаграмме с лучами под углом γ_min (λ_max) находим минимальный радиус кулачка; профиль строим методом обращения движения.",
+            "За заданим законом руху штовхача будуємо діаграму аналога прискорення, графічним інтегруванням — аналога швидкості і переміщення; за суміщеною діаграмою з променями під кутом γ_min (λ_max) знаходимо мінімальний радіус кулачка; профіль будуємо методом обернення руху.",
+            "From the follower's law: the diagram of the acceleration analogue, by graphical integration those of the velocity analogue and the displacement; the least base radius from the combined diagram with the γ_min (λ_max) rays; the profile by inversion."
+        ),
+        CamTable => ("Перемещение, аналоги, углы и радиус-вектор профиля по положениям", "Переміщення, аналоги, кути і радіус-вектор профілю за положеннями", "Displacement, analogues, angles and the profile's radius vector by positions"),
+        CamScene => ("Минимальный радиус, ролик и точность профиля", "Мінімальний радіус, ролик і точність профілю", "The least radius, the roller and the profile's accuracy"),
+        GearsSection => ("Зубчатые механизмы", "Зубчасті механізми", "Gear mechanisms"),
+        GearsIntro => (
+            "Геометрия эвольвентного зацепления со смещением рассчитана по формулам и проверена по картине зацепления; коэффициент перекрытия — по формуле и по чертежу (B₁B₂/p_b). Зубья нарезаны рейкой по огибающей её положений. Передаточное отношение планетарного редуктора — по формуле Виллиса и графически по треугольникам скоростей.",
+            "Геометрію евольвентного зачеплення зі зміщенням розраховано за формулами і перевірено за картиною зачеплення; коефіцієнт перекриття — за формулою і за кресленням (B₁B₂/p_b). Зуби нарізано рейкою за обвідною її положень. Передаточне відношення планетарного редуктора — за формулою Вілліса і графічно за трикутниками швидкостей.",
+            "The geometry of the shifted involute pair by the formulas, checked on the meshing picture; the contact ratio by formula and off the drawing (B₁B₂/p_b). The teeth cut by the rack as the envelope of its positions. The planetary train's ratio by Willis's formula and graphically by the velocity triangles."
+        ),
+        PairTable => ("Геометрия зубчатой передачи", "Геометрія зубчастої передачі", "The gear pair's geometry"),
+        SlidingTable => ("Удельное скольжение", "Питоме ковзання", "Specific sliding"),
+        RackTable => ("Нарезание колеса рейкой", "Нарізання колеса рейкою", "The wheel cut by the rack"),
+        TrainTable => ("Передаточное отношение и угловые скорости редуктора", "Передаточне відношення і кутові швидкості редуктора", "The train's ratio and angular velocities"),
+        BalancingSection => ("Уравновешивание ротора", "Зрівноваження ротора", "Balancing of the rotor"),
+        BalancingTable => ("Уравновешивающие массы", "Зрівноважувальні маси", "The correcting masses"),
+        FrictionSection => ("Трение в кинематических парах", "Тертя в кінематичних парах", "Friction in the kinematic pairs"),
+        FrictionTable => ("Силы, моменты и КПД с учётом трения", "Сили, моменти і ККД з урахуванням тертя", "Forces, moments and efficiencies with friction"),
+        Conclusions => ("Выводы", "Висновки", "Conclusions"),
+        ConclusionsErrors => (
+            "Графические построения проверены аналитическим расчётом. Погрешности графических методов по величинам и методам — в таблицах ниже (δ — относительное расхождение графического значения с аналитическим).",
+            "Графічні побудови перевірено аналітичним розрахунком. Похибки графічних методів за величинами і методами — у таблицях нижче (δ — відносна розбіжність графічного значення з аналітичним).",
+            "The graphical constructions are checked by the analytic solution. The errors of the graphical methods by quantity and method are in the tables below (δ: the graphical value's relative difference from the analytic one)."
+        ),
+        ErrorsByQuantity => ("Погрешность графических методов по величинам", "Похибка графічних методів за величинами", "Errors of the graphical methods by quantity"),
+        ErrorsByMethod => ("Средняя погрешность по методам", "Середня похибка за методами", "Mean error by method"),
+        Count => ("число", "кількість", "count"),
+        AtPosition => ("в положении", "у положенні", "at position"),
+        ExactAtDraftingZero => (
+            "Построения выполнены точно (без погрешности отсчёта с чертежа): погрешность планов скоростей, ускорений и сил — только округление, погрешность диаграмм — погрешность метода хорд; погрешность чертежа при отсчёте с точностью 0,5 мм показывает расчёт с параметром --drafting.",
+            "Побудови виконано точно (без похибки відліку з креслення): похибка планів швидкостей, прискорень і сил — лише округлення, похибка діаграм — похибка методу хорд; похибку креслення при відліку з точністю 0,5 мм показує розрахунок з параметром --drafting.",
+            "The constructions are exact (no reading error): the plans of velocities, accelerations and forces err by rounding only, the diagrams by the method of chords; a reading to 0.5 mm, as on paper, is shown by a run with --drafting."
+        ),
+        SeedNotReproduced => (
+            "Значения источника, которые проект не воспроизводит, с точным значением и причиной:",
+            "Значення джерела, які проєкт не відтворює, з точним значенням і причиною:",
+            "The source's values this project does not reproduce, with the exact value and the reason:"
+        ),
+        SeedValues => ("Расхождения с источником", "Розбіжності з джерелом", "Differences from the source"),
+        SeedPrints => ("в источнике", "у джерелі", "the source"),
+        Deviation => ("расхождение, %", "розбіжність, %", "off by, %"),
+        Why => ("причина", "причина", "reason"),
+        SeedFlywheel => (
+            "не следует из данных источника: точное интегрирование уравнения движения",
+            "не випливає з даних джерела: точне інтегрування рівняння руху",
+            "does not follow from the source's data: the equation of motion integrated exactly"
+        ),
+        SeedContactRatio => (
+            "в источнике основные радиусы взяты как r·cos α_w, а шаг — как πm·cos α_w",
+            "у джерелі основні радіуси взято як r·cos α_w, а крок — як πm·cos α_w",
+            "the source takes the base radii as r·cos α_w and the base pitch as πm·cos α_w"
+        ),
+        SeedMinRadius => (
+            "при γ ≥ γ_min на всём цикле радиус не может быть меньше точного",
+            "при γ ≥ γ_min на всьому циклі радіус не може бути меншим за точний",
+            "with γ ≥ γ_min over the whole cycle the radius cannot be below the exact one"
+        ),
+        References => ("Список литературы", "Список літератури", "References"),
+        Reference1 => (
+            "Артоболевский И. И. Теория механизмов и машин. — М.: Наука, 1988. — 640 с.",
+            "Артоболевский И. И. Теория механизмов и машин. — М.: Наука, 1988. — 640 с.",
+            "Artobolevsky I. I. Theory of Mechanisms and Machines. Moscow: Nauka, 1988. 640 p."
+        ),
+        Reference2 => (
+            "Курсовое проектирование по теории механизмов и машин / под ред. А. С. Кореняко. — Киев: Вища школа, 1970. — 332 с.",
+            "Курсовое проектирование по теории механизмов и машин / под ред. А. С. Кореняко. — Киев: Вища школа, 1970. — 332 с.",
+            "Korenyako A. S. (ed.) Course Design in the Theory of Mechanisms and Machines. Kyiv: Vyshcha shkola, 1970. 332 p."
+        ),
+        Reference3 => (
+            "Расчёт поперечно-строгального станка: курсовой проект по ТММ (исходный пример проекта).",
+            "Розрахунок поперечно-стругального верстата: курсовий проєкт з ТММ (вихідний приклад проєкту).",
+            "Design of a shaping machine: a course project in the TMM (the source example project)."
+        ),
+        Reference4 => (
+            "ГОСТ 2.105-95. Общие требования к текстовым документам; ГОСТ 2.104-2006. Основные надписи.",
+            "ГОСТ 2.105-95. Загальні вимоги до текстових документів; ГОСТ 2.104-2006. Основні написи.",
+            "GOST 2.105-95. General requirements for text documents; GOST 2.104-2006. Title blocks."
+        ),
+        GraphicalShort => ("гр.", "гр.", "gr."),
+        AnalyticShort => ("ан.", "ан.", "an."),
+        Part => ("часть", "частина", "part"),
+        PositionShort => ("пол.", "пол.", "pos."),
+    }
+}

@@ -1,0 +1,125 @@
+//! The explanatory note of the seed-000 project (issue 20): composed from the session,
+//! typeset, read back from its PDF by text extraction, and held to the report's rows at the
+//! precision it prints them; byte-identical from run to run; in every language.
+
+use std::path::PathBuf;
+use tmm::check::Method;
+use tmm::{Drafting, Lang, Report, Session};
+
+fn shaper() -> tmm::Scene {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("constructions/shaper.toml");
+    tmm::load(&path).expect("shaper")
+}
+
+/// The note of `scene` in `lang` as PDF bytes, and the session's report.
+fn note(scene: &tmm::Scene, lang: Lang) -> (Vec<u8>, Report) {
+    let session = Session::new(scene, Drafting::EXACT);
+    let note = tmm::note::compose(&session, lang).expect("note");
+    let pdf = tmm::note::to_pdf(&note).expect("typeset");
+    (pdf, session.report().expect("report"))
+}
+
+/// The text of a PDF, its runs of white space made single spaces.
+fn text_of(pdf: &[u8]) -> String {
+    let text = pdf_extract::extract_text_from_mem(pdf).expect("text");
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The value of the report's row, as `tmm::scale::format_sig` prints it to `sig` digits.
+fn printed(r: &Report, q: &str, method: Method, position: Option<&str>, sig: usize) -> String {
+    let row = r
+        .rows
+        .iter()
+        .find(|x| x.quantity() == q && x.method == method && x.position().as_deref() == position)
+        .unwrap_or_else(|| panic!("no row {q} {method:?} {position:?}"));
+    tmm::scale::format_sig(row.graphical, sig, Lang::Ru)
+}
+
+#[test]
+fn the_shaper_note_holds_the_projects_values_as_the_report_gives_them() {
+    let s = shaper();
+    let (pdf, r) = note(&s, Lang::Ru);
+    assert!(pdf.starts_with(b"%PDF-"));
+    let text = text_of(&pdf);
+    // The sections in the order of seed 000.
+    let sections = [
+        "Задание",
+        "Структурный анализ",
+        "План положений",
+        "Планы скоростей",
+        "Планы ускорений",
+        "Кинематические диаграммы",
+        "Кинетостатический анализ механизма",
+        "Динамика машины",
+        "Синтез кулачкового механизма",
+        "Зубчатые механизмы",
+        "Выводы",
+        "Список литературы",
+    ];
+    let mut from = text.find("Пояснительная записка").expect("the title page");
+    for s in sections {
+        // Past the contents: the section's heading in the text.
+        let at = text[from..]
+            .find(s)
+            .unwrap_or_else(|| panic!("section {s} missing after byte {from}"));
+        from += at;
+    }
+    // The values the issue names, each as its row prints at the note's precision.
+    let want = [
+        // V_B3 at position 3 (Table 2's V_B3), 4 digits.
+        printed(&r, "v_B3", Method::Plan, Some("3"), 4),
+        // M_bal at position 3 by the force polygons and by Zhukovsky's lever, 6 digits.
+        printed(&r, "M_bal", Method::Polygon, Some("3"), 6),
+        printed(&r, "M_bal", Method::Lever, Some("3"), 6),
+        // J_м by Wittenbauer, r_min, α_w, ε_α, U₁₋₈ (the tables of the whole scene: 6 digits).
+        printed(&r, "J_flywheel", Method::Wittenbauer, None, 6),
+        printed(&r, "r_min", Method::CombinedDiagram, None, 6),
+        printed(&r, "alpha_w", Method::Formula, None, 6),
+        printed(&r, "eps_alpha", Method::Formula, None, 6),
+        printed(&r, "u_1_8", Method::Formula, None, 6),
+    ];
+    for w in &want {
+        assert!(text.contains(w.as_str()), "{w} not in the note");
+    }
+    // The stroke H = 2·L_CD·L_AB/L_AC and K = (180° + θ)/(180° − θ), θ = 2 asin(L_AB/L_AC).
+    let stroke = 2.0 * 0.71 * 0.14 / 0.43;
+    let theta = 2.0 * (0.14f64 / 0.43).asin().to_degrees();
+    let k = (180.0 + theta) / (180.0 - theta);
+    for (what, x) in [("H", stroke), ("K", k)] {
+        let w = tmm::scale::format_sig(x, 5, Lang::Ru);
+        assert!(text.contains(&w), "{what} = {w} not in the note");
+    }
+    // The seed's errata in the conclusions: its J = 17,1, ε_α = 1,22 and r_min = 40 mm.
+    let conclusions = &text[text.rfind("Выводы").expect("conclusions")..];
+    for erratum in ["17,1", "1,22", "40 "] {
+        assert!(
+            conclusions.contains(erratum),
+            "{erratum} not in the conclusions"
+        );
+    }
+}
+
+#[test]
+fn the_note_is_byte_identical_from_run_to_run() {
+    let s = shaper();
+    let (a, _) = note(&s, Lang::Ru);
+    let (b, _) = note(&s, Lang::Ru);
+    assert!(a == b, "two runs differ");
+}
+
+#[test]
+fn the_note_is_written_in_ukrainian_and_english() {
+    let s = shaper();
+    for (lang, words) in [
+        (Lang::Uk, ["Пояснювальна записка", "Зміст", "Висновки"]),
+        (Lang::En, ["Explanatory note", "Contents", "Conclusions"]),
+    ] {
+        let (pdf, _) = note(&s, lang);
+        let text = text_of(&pdf);
+        for w in words {
+            assert!(text.contains(w), "{lang:?}: {w} not in the note");
+        }
+        // No Russian heading in another language's note.
+        assert!(!text.contains("Пояснительная"), "{lang:?}");
+    }
+}
