@@ -28,6 +28,8 @@ enum Format {
     Png,
     /// One PDF per scene, DIR/<scene>/<scene>.pdf: every sheet a page, 1:1.
     Pdf,
+    /// The scene's explanatory note, DIR/<scene>/<scene>-note.pdf (as `tmm note`).
+    Note,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -254,6 +256,7 @@ fn render(
             svg: formats.contains(&Format::Svg),
             png: formats.contains(&Format::Png),
             pdf: formats.contains(&Format::Pdf),
+            note: formats.contains(&Format::Note),
         },
         dpi,
     };

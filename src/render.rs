@@ -22,6 +22,8 @@ pub struct Formats {
     pub png: bool,
     /// One PDF per scene, every sheet a page, 1:1.
     pub pdf: bool,
+    /// The scene's explanatory note, `<scene>-note.pdf`.
+    pub note: bool,
 }
 
 /// How the plates are rendered.
@@ -119,8 +121,14 @@ pub fn plates(
     lang: Lang,
     drafting: Drafting,
 ) -> Result<Vec<(PlateKind, Plate)>, RenderError> {
-    let session = Session::new(s, drafting);
-    sheets::build_all(&session, lang).map_err(|(kind, e)| RenderError::Build {
+    plates_of(&Session::new(s, drafting), lang)
+}
+
+/// The plates of the scene of `session`, as [`plates`].
+fn plates_of(session: &Session<'_>, lang: Lang) -> Result<Vec<(PlateKind, Plate)>, RenderError> {
+    let s = session.scene();
+    let drafting = session.drafting();
+    sheets::build_all(session, lang).map_err(|(kind, e)| RenderError::Build {
         scene: s.path.clone(),
         kind,
         error: refit(s, e, drafting, lang),
@@ -173,7 +181,13 @@ pub fn files(
     let mut pdfs: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     for s in scenes {
         let first = svgs.len();
-        for (_, plate) in plates(s, lang, drafting)? {
+        let session = Session::new(s, drafting);
+        let all = plates_of(&session, lang)?;
+        let note = match formats.note {
+            true => Some(note_pdf(&session, lang, Some(all.clone()))?),
+            false => None,
+        };
+        for (_, plate) in all {
             let base = out.join(&s.stem).join(&plate.name);
             if formats.png {
                 let (w, h) = (plate.sheet.width_mm(), plate.sheet.height_mm());
@@ -193,6 +207,9 @@ pub fn files(
                 error,
             })?;
             pdfs.push((path, pdf));
+        }
+        if let Some(note) = note {
+            pdfs.push((note_path(out, s), note));
         }
     }
     let pngs = if formats.png {
@@ -234,6 +251,30 @@ pub fn render(
     Ok(files.into_iter().map(|(path, _)| path).collect())
 }
 
+/// Where the note of `s` is written: `<out>/<scene>/<scene>-note.pdf`.
+fn note_path(out: &Path, s: &Scene) -> PathBuf {
+    out.join(&s.stem).join(format!("{}-note.pdf", s.stem))
+}
+
+/// The note of the scene of `session`, typeset; with its `sheets` when they are built
+/// already.
+fn note_pdf(
+    session: &Session<'_>,
+    lang: Lang,
+    sheets: Option<Vec<(PlateKind, Plate)>>,
+) -> Result<Vec<u8>, RenderError> {
+    let failed = |error| RenderError::Note {
+        scene: session.scene().path.clone(),
+        error: Box::new(error),
+    };
+    let note = match sheets {
+        Some(all) => crate::note::compose_with(session, lang, all),
+        None => crate::note::compose(session, lang),
+    }
+    .map_err(failed)?;
+    crate::note::to_pdf(&note).map_err(failed)
+}
+
 /// The explanatory note of each of `scenes`, typeset (`<out>/<scene>/<scene>-note.pdf`),
 /// built in memory.
 ///
@@ -248,14 +289,10 @@ pub fn note_files(
     scenes
         .iter()
         .map(|s| {
-            let failed = |error| RenderError::Note {
-                scene: s.path.clone(),
-                error: Box::new(error),
-            };
-            let session = Session::new(s, drafting);
-            let note = crate::note::compose(&session, lang).map_err(failed)?;
-            let pdf = crate::note::to_pdf(&note).map_err(failed)?;
-            Ok((out.join(&s.stem).join(format!("{}-note.pdf", s.stem)), pdf))
+            Ok((
+                note_path(out, s),
+                note_pdf(&Session::new(s, drafting), lang, None)?,
+            ))
         })
         .collect()
 }

@@ -2,6 +2,8 @@
 //! typeset, read back from its PDF by text extraction, and held to the report's rows at the
 //! precision it prints them; byte-identical from run to run; in every language.
 
+mod support;
+
 use std::path::PathBuf;
 use tmm::check::Method;
 use tmm::{Drafting, Lang, Report, Session};
@@ -121,5 +123,35 @@ fn the_note_is_written_in_ukrainian_and_english() {
         }
         // No Russian heading in another language's note.
         assert!(!text.contains("Пояснительная"), "{lang:?}");
+    }
+}
+
+#[test]
+fn every_scene_gets_the_note_its_sections_allow() {
+    for path in support::scene_paths() {
+        let s = tmm::load(&path).expect("scene");
+        let (pdf, _) = note(&s, Lang::Ru);
+        let text = text_of(&pdf);
+        // Each study the scene has, its section; none it has not.
+        for (has, heading) in [
+            (s.mechanism.is_some(), "Структурный анализ"),
+            (
+                s.forces.is_some() && s.mechanism.is_some(),
+                "Кинетостатический анализ",
+            ),
+            (s.dynamics.is_some(), "Динамика машины"),
+            (s.cam.is_some(), "Синтез кулачкового механизма"),
+            (s.gears.is_some(), "Зубчатые механизмы"),
+            (s.balancing.is_some(), "Уравновешивание ротора"),
+            (!s.friction.is_empty(), "Трение в кинематических парах"),
+        ] {
+            assert_eq!(
+                text.contains(heading),
+                has,
+                "{}: section {heading}",
+                path.display()
+            );
+        }
+        assert!(text.contains("Выводы"), "{}", path.display());
     }
 }

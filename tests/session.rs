@@ -1,17 +1,15 @@
 //! The study session: every position and every plan is constructed once, whatever asks for
 //! it, and a scene without a mechanism is read and refused cleanly.
 
-use std::path::PathBuf;
+mod support;
+
+use support::root;
 use tmm::construct::Drafting;
 use tmm::linkage::PlanKind;
 use tmm::scale::Lang;
 use tmm::scene::{self, PlateKind};
 use tmm::sheets;
 use tmm::study::{Constructed, Session};
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
 
 /// Every construction of `log` is there once.
 fn assert_once(stem: &str, log: &[Constructed]) {
@@ -28,14 +26,7 @@ fn assert_once(stem: &str, log: &[Constructed]) {
 
 #[test]
 fn every_scene_constructs_each_position_and_plan_once() {
-    let mut paths: Vec<PathBuf> = std::fs::read_dir(root().join("constructions"))
-        .expect("constructions")
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    paths.sort();
-    assert!(paths.len() >= 18, "{paths:?}");
-    for path in paths {
+    for path in support::scene_paths() {
         let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
         let session = Session::new(&s, Drafting::EXACT);
         // What `tmm render` and `tmm report` do: every plate in two languages and the report

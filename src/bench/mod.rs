@@ -46,7 +46,8 @@ use crate::scale::Quantity;
 use crate::scene::{self, PlateKind, Scene};
 use chords::{chord_rows, Charted, Coord};
 use rates::{
-    construction_rate, force_rates, kernel_rate, libm_floor_rate, plate_time, png_time, PNG_DPI,
+    construction_rate, force_rates, kernel_rate, libm_floor_rate, plate_time, png_time,
+    project_time, PNG_DPI,
 };
 use std::f64::consts::TAU;
 use std::hint::black_box;
@@ -359,6 +360,15 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
         per_second: 1.0 / png_seconds,
         note: format!(
             "every sheet of the scene ({sheets}), SVG → PNG in parallel, as `tmm render` writes them"
+        ),
+    });
+    let (project_seconds, note_bytes) = project_time(&shaper, reps)?;
+    throughput.push(Throughput {
+        name: format!("project {}", shaper.scene.stem),
+        per_second: 1.0 / project_seconds,
+        note: format!(
+            "the whole project in memory: every sheet ({sheets}) as SVG and PNG at {PNG_DPI} dpi, the PDF set and the explanatory note ({} kB) — `tmm render --format svg,png,pdf` and `tmm note`",
+            note_bytes / 1000
         ),
     });
     Ok(Bench {

@@ -196,3 +196,39 @@ pub(super) fn force_rates(s: &Subject, reps: Reps) -> Result<(f64, f64), BenchEr
     .map_err(forces)?;
     Ok((count as f64 / constructed, poses.len() as f64 / analytic))
 }
+
+/// Seconds to write a scene's whole project in memory: every sheet as SVG and PNG at
+/// [`PNG_DPI`], the PDF set, and the explanatory note composed and typeset — what
+/// `tmm render --format svg,png,pdf` and `tmm note` write — and the note's size in bytes.
+pub(super) fn project_time(s: &Subject, reps: Reps) -> Result<(f64, usize), BenchError> {
+    let failed = |e: RenderError| BenchError::Plate {
+        scene: s.scene.stem.clone(),
+        plate: "project".into(),
+        detail: e.to_string(),
+    };
+    let options = render::Options {
+        lang: Lang::Ru,
+        drafting: Drafting::EXACT,
+        formats: render::Formats {
+            svg: true,
+            png: true,
+            pdf: true,
+            note: true,
+        },
+        dpi: PNG_DPI,
+    };
+    let out = std::path::Path::new("bench");
+    let scenes = std::slice::from_ref(&s.scene);
+    let mut note = 0;
+    let t = best_time(reps.best_of.min(3), || {
+        let files = render::files(scenes, out, &options)?;
+        note = files
+            .iter()
+            .filter(|(p, _)| p.to_string_lossy().ends_with("-note.pdf"))
+            .map(|(_, b)| b.len())
+            .sum();
+        Ok::<_, RenderError>(files)
+    })
+    .map_err(failed)?;
+    Ok((t, note))
+}

@@ -7,6 +7,7 @@ use super::Writer;
 use crate::check::{Method, Symbol};
 use crate::linkage::{Dyad, Mechanism};
 use crate::scale::Lang;
+use crate::scene::PlateKind;
 use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
 
 /// The page rules (`template.typ`) after the title block's data.
@@ -48,8 +49,13 @@ pub(super) fn title_page(w: &mut Writer<'_, '_>) {
     let t = &w.session.scene().title;
     let line = |s: &str| format!("#{}", string(s));
     let designation = format!("{} {}", t.designation, w.word(T::NoteCode));
+    let student = if t.group.is_empty() {
+        t.author.clone()
+    } else {
+        format!("{} {}, {}", w.word(T::OfGroup), t.group, t.author)
+    };
     let people = [
-        (w.word(T::Student), t.author.as_str()),
+        (w.word(T::Student), student.as_str()),
         (w.word(T::Supervisor), t.checked.as_str()),
     ];
     let mut body = format!(
@@ -63,7 +69,11 @@ pub(super) fn title_page(w: &mut Writer<'_, '_>) {
     for (role, name) in people {
         body.push_str(&format!("{}: {} \\\n", line(role), line(name)));
     }
-    body.push_str("]]\n]\n");
+    body.push_str("]]\n");
+    if !t.year.is_empty() {
+        body.push_str(&format!("#v(1fr)\n#align(center)[{}]\n", line(&t.year)));
+    }
+    body.push_str("]\n");
     w.doc.raw(&body);
 }
 
@@ -88,7 +98,7 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
     if let Some(m) = &scene.mechanism {
         let scheme = S::StructuralScheme.get(w.lang);
         w.figures(
-            (crate::scene::PlateKind::Kinematics, None),
+            (PlateKind::Kinematics, None),
             |own| own.starts_with(scheme),
             |own| own.to_string(),
         );
@@ -96,7 +106,19 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         let caption = w.word(T::MechanismData);
         table_of_data(w, caption, &rows);
     }
-    w.doc.say(w.word(T::TaskFollows));
+    // The data of every other study as its sheet prints them (the gear sheet's block mixes
+    // data and results: the gears' section gives it whole).
+    for (kind, title) in [
+        (PlateKind::Dynamics, T::Dynamics),
+        (PlateKind::Cam, T::CamSection),
+        (PlateKind::Balancing, T::BalancingSection),
+    ] {
+        if w.sheet_data(kind, true).is_empty() {
+            continue;
+        }
+        w.doc.par(&[text(&format!("{}:", w.word(title)))]);
+        w.data_list(kind, true);
+    }
 }
 
 /// Symbol (label markup), value and unit of the mechanism's data.

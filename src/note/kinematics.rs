@@ -5,7 +5,7 @@
 //! of the seed's shapes and the comparison with the analytic twin.
 
 use super::markup::{frac, inline, label, num, sym, text, unit, Align};
-use super::rows::{by_position, fmt, DIGITS};
+use super::rows::{fmt, numbers, values_and_errors, Column, DIGITS};
 use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::linkage::{DyadKind, GroupInfo, OutputCoord, Structure};
@@ -391,13 +391,16 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let vq = super::rows::quantities(&w.report.rows, |r| {
         r.method == Method::Plan && r.key.symbol == Symbol::Velocity
     });
-    let caption = w.word(T::VelocitiesTable);
-    by_position(w, caption, &vq);
+    let captions = (w.word(T::VelocitiesTable), w.word(T::VelocityErrors));
+    values_and_errors(w, captions, &vq);
     let wq = super::rows::quantities(&w.report.rows, |r| {
         r.method == Method::Plan && r.key.symbol == Symbol::AngularVelocity
     });
-    let caption = w.word(T::AngularVelocitiesTable);
-    by_position(w, caption, &wq);
+    let captions = (
+        w.word(T::AngularVelocitiesTable),
+        w.word(T::AngularVelocityErrors),
+    );
+    values_and_errors(w, captions, &wq);
     let worked_plan = at.as_ref().map(|p| format!("{} {p}", S::Pos.get(lang)));
     w.figures(
         KINEMATICS,
@@ -445,13 +448,16 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             coriolis(w, p, &s)?;
             worked(w, p, Symbol::Acceleration, "π", sc.a)?;
         }
-        let caption = w.word(T::AccelerationsTable);
-        by_position(w, caption, &acc);
+        let captions = (w.word(T::AccelerationsTable), w.word(T::AccelerationErrors));
+        values_and_errors(w, captions, &acc);
         let eq = super::rows::quantities(&w.report.rows, |r| {
             r.method == Method::Plan && r.key.symbol == Symbol::AngularAcceleration
         });
-        let caption = w.word(T::AngularAccelerationsTable);
-        by_position(w, caption, &eq);
+        let captions = (
+            w.word(T::AngularAccelerationsTable),
+            w.word(T::AngularAccelerationErrors),
+        );
+        values_and_errors(w, captions, &eq);
         let word = S::AccelerationPlanAt.get(lang);
         w.figures(
             KINEMATICS,
@@ -488,8 +494,7 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             num(d.second.scale.value(), 4, lang),
         ));
         w.doc.say(w.word(T::DiagramValues));
-        let caption = w.word(T::DiagramTable);
-        by_position(w, caption, &chords);
+        diagram_table(w, d, kin.w1.abs(), &chords);
         // Every view of the kinematic sheets that is neither the scheme, the plan of
         // positions, a plan nor the hodograph: the diagrams.
         let shown = [
@@ -506,9 +511,37 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             |own| own.to_string(),
         );
     }
-    if kin.hodograph.is_some() {
+    if let Some((point, figure)) = &kin.hodograph {
         w.heading(2, T::Hodograph);
         w.doc.say(w.word(T::HodographText));
+        // The seed's Table 4: the hodograph's rays in mm at its own μ_v.
+        let q = format!("v_{point}");
+        let rows: Vec<Row> = w
+            .report
+            .rows
+            .iter()
+            .filter(|r| r.quantity() == q && r.method == Method::Plan)
+            .cloned()
+            .collect();
+        if let Some(first) = rows.first() {
+            let mu = figure.scale;
+            let positions: Vec<String> = rows.iter().filter_map(|r| r.position()).collect();
+            let symbol = quantity(first.key.symbol, &first.key.subject, lang);
+            let cols = [
+                Column::new(
+                    super::rows::head(w, first),
+                    rows.iter().map(|r| Some(r.graphical)).collect(),
+                )
+                .against(first.scale),
+                Column::new(
+                    format!("{symbol}, {} ({})", w.word(T::MmUnit), mu.caption(lang)),
+                    rows.iter().map(|r| Some(mu.to_mm(r.graphical))).collect(),
+                )
+                .against(mu.to_mm(first.scale)),
+            ];
+            let caption = w.word(T::HodographTable);
+            numbers(w, caption, &positions, &cols);
+        }
         let word = S::Hodograph.get(lang);
         w.figures(
             KINEMATICS,
@@ -679,4 +712,79 @@ fn coriolis(w: &mut Writer<'_, '_>, p: &str, s: &Structure) -> Result<(), NoteEr
         }
     }
     Ok(())
+}
+
+/// The seed's Table 1: the charted point's displacement, velocity and acceleration at each
+/// position as the diagrams give them, in the drawing's mm and in SI (mm = value over the
+/// diagram's μ: μ_S, |ω₁|·μ_S′, ω₁²·μ_S″), then their differences from the twin.
+fn diagram_table(
+    w: &mut Writer<'_, '_>,
+    d: &crate::kinematics::Diagrams,
+    w1: f64,
+    chords: &[(String, Method)],
+) {
+    let lang = w.lang;
+    let mus = [
+        d.scales.y.value(),
+        w1 * d.first.scale.value(),
+        w1 * w1 * d.second.scale.value(),
+    ];
+    let by_symbol = |s: Symbol| {
+        chords
+            .iter()
+            .find(|(q, m)| {
+                w.report
+                    .rows
+                    .iter()
+                    .any(|r| r.quantity() == *q && r.method == *m && r.key.symbol == s)
+            })
+            .cloned()
+    };
+    let picked: Vec<(String, Method)> =
+        [Symbol::Displacement, Symbol::Velocity, Symbol::Acceleration]
+            .into_iter()
+            .filter_map(by_symbol)
+            .collect();
+    if picked.len() < 3 {
+        return values_and_errors(
+            w,
+            (w.word(T::DiagramTable), w.word(T::DiagramErrors)),
+            chords,
+        );
+    }
+    let positions = super::rows::positions_of(&w.report.rows, &picked);
+    let mut cols = Vec::new();
+    for ((q, m), mu) in picked.iter().zip(mus) {
+        let rows: Vec<Option<&Row>> = positions
+            .iter()
+            .map(|p| {
+                w.report.rows.iter().find(|r| {
+                    r.quantity() == *q && r.method == *m && r.position().as_ref() == Some(p)
+                })
+            })
+            .collect();
+        let Some(first) = rows.iter().flatten().next() else {
+            continue;
+        };
+        let symbol = quantity(first.key.symbol, &first.key.subject, lang);
+        cols.push(
+            Column::new(
+                format!("{symbol}, {}", w.word(T::MmUnit)),
+                rows.iter().map(|r| r.map(|r| r.graphical / mu)).collect(),
+            )
+            .against(first.scale / mu),
+        );
+        cols.push(
+            Column::new(
+                super::rows::head(w, first),
+                rows.iter().map(|r| r.map(|r| r.graphical)).collect(),
+            )
+            .against(first.scale),
+        );
+    }
+    let caption = w.word(T::DiagramTable);
+    numbers(w, caption, &positions, &cols);
+    let others: Vec<(String, Method)> = chords.to_vec();
+    let captions = (w.word(T::DiagramAll), w.word(T::DiagramErrors));
+    values_and_errors(w, captions, &others);
 }

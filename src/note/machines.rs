@@ -1,13 +1,13 @@
 //! The sections of the machine's studies: the kinetostatics, the dynamics, the cam, the
 //! gears, and the balancing and friction of a scene that has them.
 
-use super::markup::{frac, inline, num, sym, text, unit};
+use super::markup::{frac, inline, label, num, sym, text, unit};
 use super::rows::{by_position, numbers, of_scene, quantities, Column, DIGITS};
 use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::dynamics::{Breakdown, LinkShare};
 use crate::scene::PlateKind;
-use crate::sheets::captions::{quantity, unit_in, NoteText as T};
+use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
 
 /// The row of `quantity` by `method` at `position` (`None`: of the whole scene).
 fn row<'r>(rows: &'r [Row], q: &str, method: Method, position: Option<&str>) -> Option<&'r Row> {
@@ -85,6 +85,7 @@ pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             w.doc.formula(&l);
         }
         w.doc.say(w.word(T::GroupsEquations));
+        group_equations(w, k)?;
         let reactions = quantities(&w.report.rows, |r| {
             r.position().as_deref() == Some(p.as_str())
                 && matches!(r.method, Method::Polygon | Method::Lever)
@@ -139,6 +140,7 @@ pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
                 )),
             ]);
         }
+        resistance_power(w, k, p)?;
         // The position's sheet: its groups, polygons and lever.
         w.figures(
             (PlateKind::Forces, Some(k)),
@@ -353,6 +355,7 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     w.heading(1, T::CamSection);
     w.doc.say(w.word(T::CamIntro));
+    w.data_list(PlateKind::Cam, false);
     let q = quantities(&w.report.rows, |r| {
         r.position().is_some()
             && matches!(r.method, Method::Integration | Method::Inversion)
@@ -385,6 +388,7 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     w.heading(1, T::GearsSection);
     w.doc.say(w.word(T::GearsIntro));
+    w.data_list(PlateKind::Gears, false);
     let caption = w.word(T::PairTable);
     of_scene(w, caption, |r| {
         r.position().is_none()
@@ -409,6 +413,7 @@ pub(super) fn others(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let scene = w.session.scene();
     if scene.balancing.is_some() {
         w.heading(1, T::BalancingSection);
+        w.data_list(PlateKind::Balancing, false);
         let caption = w.word(T::BalancingTable);
         of_scene(w, caption, |r| {
             matches!(
@@ -429,6 +434,122 @@ pub(super) fn others(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             r.position().is_none() || r.key.subject.ends_with("_f")
         });
         w.figures((PlateKind::Friction, None), |_| true, |own| own.to_string());
+    }
+    Ok(())
+}
+
+/// Each group's vector equation of equilibrium at the `k`-th analysed position, in the order
+/// the groups are solved (from the last attached), then the driving link's: the reactions of
+/// its outer pairs, those of the links solved before it (R₄₋₃ = −R₃₋₄), the forces on its
+/// links (a couple enters the moment equations only).
+fn group_equations(w: &mut Writer<'_, '_>, k: usize) -> Result<(), NoteError> {
+    let sc = w.session.kin_scales()?;
+    let Some(&index) = w.session.force_positions()?.get(k) else {
+        return Ok(());
+    };
+    let f = w.session.forces(&sc, index)?;
+    let a = &f.analysis;
+    let forces_on = |links: &[usize]| -> Vec<String> {
+        a.loads
+            .iter()
+            .filter(|l| links.contains(&l.link) && l.force != crate::geom::DVec2::ZERO)
+            .map(|l| l.name.clone())
+            .collect()
+    };
+    let name = |from: usize, to: usize| format!("R_{{{from}-{to}}}");
+    // The reactions solved so far, as (from, to).
+    let mut solved: Vec<(usize, usize)> = Vec::new();
+    let mut lines = Vec::new();
+    let term = |links: &[usize], outer: Vec<(usize, usize)>, solved: &mut Vec<(usize, usize)>| {
+        let mut terms: Vec<String> = outer.iter().map(|&(a, b)| name(a, b)).collect();
+        // A link solved before acts back on this one.
+        terms.extend(
+            solved
+                .iter()
+                .filter(|(from, _)| links.contains(from))
+                .map(|&(from, to)| name(to, from)),
+        );
+        terms.extend(forces_on(links));
+        solved.extend(outer);
+        terms
+    };
+    for (n, g) in a.polygons.groups.iter().enumerate() {
+        let outer = g
+            .reactions
+            .iter()
+            .take(2)
+            .map(|r| (r.pair.from, r.pair.to))
+            .collect();
+        let terms = term(&g.links, outer, &mut solved);
+        lines.push((
+            format!(
+                "{}. {} {}–{}:",
+                n + 1,
+                w.word(S::Group),
+                g.links[0],
+                g.links[1]
+            ),
+            format!("{} = 0", terms.join(" + ")),
+        ));
+    }
+    let crank = w.session.mechanism("the explanatory note")?.crank.link as usize;
+    let driver = &a.polygons.driver;
+    let mut terms = term(
+        &[crank],
+        vec![(driver.reaction.pair.from, driver.reaction.pair.to)],
+        &mut solved,
+    );
+    if driver.f_bal.is_some() {
+        terms.push(quantity(Symbol::Force, "bal", w.lang));
+    }
+    lines.push((
+        format!("{}. {}:", lines.len() + 1, w.word(S::DrivingLink)),
+        format!("{} = 0", terms.join(" + ")),
+    ));
+    for (head, eq) in lines {
+        w.doc.par(&[text(&head), label(&eq)]);
+    }
+    Ok(())
+}
+
+/// The power of every working resistance at the `k`-th analysed position `p`: N = F·V, the
+/// force and its point's speed off the velocity plan (the seed's N = P·V beside N = M_у·ω₁).
+fn resistance_power(w: &mut Writer<'_, '_>, k: usize, p: &str) -> Result<(), NoteError> {
+    let lang = w.lang;
+    let sc = w.session.kin_scales()?;
+    let Some(&index) = w.session.force_positions()?.get(k) else {
+        return Ok(());
+    };
+    let f = w.session.forces(&sc, index)?;
+    let names = &w.session.positions(sc.l)?.program.names;
+    let mut lines = Vec::new();
+    for l in f.analysis.loads.iter().filter(|l| {
+        l.kind == crate::forces::LoadKind::Resistance && l.force != crate::geom::DVec2::ZERO
+    }) {
+        let point = names
+            .get(l.at)
+            .map(|n| n.replace(['_', '{', '}'], ""))
+            .unwrap_or_default();
+        let Some(v) = row(&w.report.rows, &format!("v_{point}"), Method::Plan, Some(p)) else {
+            continue;
+        };
+        let (force, speed) = (l.force.length(), v.graphical.abs());
+        lines.push(format!(
+            "{} = {} {} = {} dot {} = {}{}",
+            sym("N_{пс}"),
+            sym(&l.name),
+            sym(&format!("V_{{{point}}}")),
+            num(force, 5, lang),
+            num(speed, 4, lang),
+            num(force * speed, 5, lang),
+            unit(&unit_in("W", lang))
+        ));
+    }
+    if !lines.is_empty() {
+        w.doc.say(w.word(T::ResistancePower));
+        for l in lines {
+            w.doc.formula(&l);
+        }
     }
     Ok(())
 }

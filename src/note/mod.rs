@@ -21,7 +21,7 @@ use crate::check::Report;
 use crate::plate::{self, Plate};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{NoteText, Word};
+use crate::sheets::captions::{GearText, NoteText, Text, Word};
 use crate::sheets::{self, BuildError};
 use crate::study::{Session, StudyError};
 use markup::Markup;
@@ -121,14 +121,76 @@ impl Writer<'_, '_> {
     }
 }
 
+impl Writer<'_, '_> {
+    /// The lines of the data blocks (headed «Исходные данные», «… и результаты») of the
+    /// sheets of `kind`, as the sheets print them (label markup), without their heading and
+    /// the drafting remark; with `inputs_only`, up to the block's first blank line (the data
+    /// before the results).
+    fn sheet_data(&self, kind: PlateKind, inputs_only: bool) -> Vec<String> {
+        let heads = [
+            Text::Data.get(self.lang),
+            GearText::DataAndResults.get(self.lang),
+        ];
+        let remarks = [
+            Text::ReadExactly.get(self.lang),
+            Text::ReadTo.get(self.lang),
+        ];
+        let mut out = Vec::new();
+        for (_, p) in self.sheets.iter().filter(|(k, _)| *k == kind) {
+            for block in &p.texts {
+                let Some((head, lines)) = block.lines.split_first() else {
+                    continue;
+                };
+                if !heads.contains(&head.as_str()) {
+                    continue;
+                }
+                for line in lines {
+                    if line.trim().is_empty() && inputs_only {
+                        break;
+                    }
+                    if line.trim().is_empty() || remarks.iter().any(|r| line.starts_with(r)) {
+                        continue;
+                    }
+                    if !out.contains(line) {
+                        out.push(line.clone());
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The data blocks of the sheets of `kind` ([`Self::sheet_data`]) as a list.
+    fn data_list(&mut self, kind: PlateKind, inputs_only: bool) {
+        let lines = self.sheet_data(kind, inputs_only);
+        for line in lines {
+            self.doc.raw(&format!("- #{}", markup::label(&line)));
+        }
+        self.doc.raw("");
+    }
+}
+
 /// The note of the scene of `session` in `lang`.
 ///
 /// # Errors
 /// A study or a sheet the note shows that cannot be carried out.
 pub fn compose(session: &Session<'_>, lang: Lang) -> Result<Note, NoteError> {
-    let report = session.report()?;
     let sheets = sheets::build_all(session, lang)
         .map_err(|(kind, error)| NoteError::Sheet { kind, error })?;
+    compose_with(session, lang, sheets)
+}
+
+/// The note of the scene of `session` in `lang` showing the views of `sheets`, the scene's
+/// sheets as [`sheets::build_all`] numbers them (built once for the drawings and the note).
+///
+/// # Errors
+/// A study the note shows that cannot be carried out.
+pub fn compose_with(
+    session: &Session<'_>,
+    lang: Lang,
+    sheets: Vec<(PlateKind, Plate)>,
+) -> Result<Note, NoteError> {
+    let report = session.report()?;
     let mut w = Writer {
         session,
         lang,

@@ -3,7 +3,7 @@
 
 use super::markup::{label, text, Align};
 use super::Writer;
-use crate::check::{is_zero, Method, Row};
+use crate::check::{is_zero, Method, Row, ZERO_FRACTION};
 use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
 
 pub(super) use crate::report::{md_percent as percent, md_value as fmt};
@@ -238,4 +238,72 @@ pub(super) fn numbers(
         .collect();
     let align = vec![Align::Centre; header.len()];
     w.doc.table(caption, &align, &header, &rows);
+}
+
+/// The positions at which any of `quantities` was read, in the report's order.
+pub(super) fn positions_of(rows: &[Row], quantities: &[(String, Method)]) -> Vec<String> {
+    let mut ps: Vec<String> = Vec::new();
+    for r in rows {
+        if quantities.contains(&(r.quantity(), r.method)) {
+            if let Some(p) = r.position() {
+                if !ps.contains(&p) {
+                    ps.push(p);
+                }
+            }
+        }
+    }
+    ps
+}
+
+/// The seed's shape of a table of readings (its Table 2): one column per quantity, its
+/// graphical value at each position; then the same quantities' relative difference from
+/// the analytic twin, in %, as a second table captioned `errors`.
+pub(super) fn values_and_errors(
+    w: &mut Writer<'_, '_>,
+    (caption, errors): (&str, &str),
+    quantities: &[(String, Method)],
+) {
+    let positions = positions_of(&w.report.rows, quantities);
+    let rel = w.report.rel_errors();
+    let mut values = Vec::new();
+    let mut deltas = Vec::new();
+    for q in quantities {
+        let Some(first) = w
+            .report
+            .rows
+            .iter()
+            .find(|r| r.quantity() == q.0 && r.method == q.1)
+        else {
+            continue;
+        };
+        let head = head(w, first);
+        let symbol = quantity(first.key.symbol, &first.key.subject, w.lang);
+        let at = |p: &String| {
+            w.report.rows.iter().zip(&rel).find(|(r, _)| {
+                r.quantity() == q.0 && r.method == q.1 && r.position().as_ref() == Some(p)
+            })
+        };
+        values.push(
+            Column::new(
+                head,
+                positions
+                    .iter()
+                    .map(|p| at(p).map(|(r, _)| value(r.graphical, r)))
+                    .collect(),
+            )
+            .against(first.scale),
+        );
+        let mut delta = Column::new(
+            format!("δ{symbol}, %"),
+            positions
+                .iter()
+                .map(|p| at(p).and_then(|(_, d)| d.map(|d| d * 100.0)))
+                .collect(),
+        );
+        delta.digits = 3;
+        // The report's rule: a relative error of at most 1e-9 is a rounding residue, 0.
+        deltas.push(delta.against(1e-9 * 100.0 / ZERO_FRACTION));
+    }
+    numbers(w, caption, &positions, &values);
+    numbers(w, errors, &positions, &deltas);
 }

@@ -215,6 +215,8 @@ fn title(task: RawTask, stem: &str) -> TitleInfo {
         author: task.author.unwrap_or_default(),
         checked: task.checked.unwrap_or_default(),
         organisation: task.organisation.unwrap_or_default(),
+        group: task.group.unwrap_or_default(),
+        year: task.year.unwrap_or_default(),
         note: task.note.unwrap_or_default(),
     }
 }

@@ -150,8 +150,12 @@ pub struct TitleInfo {
     pub author: String,
     /// Instructor (Пров.).
     pub checked: String,
-    /// Institution / group.
+    /// The department or institution (the title block's organisation cell).
     pub organisation: String,
+    /// The student's group (the note's title page).
+    pub group: String,
+    /// The year (the note's title page).
+    pub year: String,
     /// A remark on the task's source (a reconstructed layout, say); not drawn.
     pub note: String,
 }

@@ -33,6 +33,8 @@ pub(crate) struct RawTask {
     pub author: Option<String>,
     pub checked: Option<String>,
     pub organisation: Option<String>,
+    pub group: Option<String>,
+    pub year: Option<String>,
     pub note: Option<String>,
 }
 

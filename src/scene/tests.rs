@@ -175,10 +175,14 @@ fn inf_is_refused() {
 #[test]
 fn string_for_number_keeps_line_and_key() {
     let msg = shaper_error("length = 140.0", "length = \"140\"");
+    let line = 1 + shaper_text()
+        .lines()
+        .position(|l| l.contains("length = 140.0"))
+        .expect("the crank's length");
     assert_names(
         &msg,
         &[
-            "constructions/x.toml:29:",
+            &format!("constructions/x.toml:{line}:"),
             "mechanism.crank.length = \"140\"",
             "invalid type",
         ],

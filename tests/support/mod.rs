@@ -17,6 +17,19 @@ pub fn tmm(args: &[&str]) -> Output {
         .expect("run tmm")
 }
 
+/// Every scene of `constructions/`, sorted; at least the eighteen there are.
+#[allow(dead_code)] // not every test binary walks the scenes
+pub fn scene_paths() -> Vec<PathBuf> {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(root().join("constructions"))
+        .expect("constructions")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    paths.sort();
+    assert!(paths.len() >= 18, "{paths:?}");
+    paths
+}
+
 /// A fresh scratch folder for one test.
 #[allow(dead_code)] // not every test binary writes files
 pub fn scratch(name: &str) -> PathBuf {

@@ -9,7 +9,8 @@ mod note;
 pub(crate) mod symbols;
 
 pub(crate) use linkage::Text;
-pub(super) use machines::{CamText, DynamicsText, FrictionText, GearText, RotorText};
+pub(crate) use machines::GearText;
+pub(super) use machines::{CamText, DynamicsText, FrictionText, RotorText};
 pub(crate) use note::NoteText;
 pub(crate) use symbols::{quantity, subscripted};
 

@@ -13,16 +13,12 @@ catalogue! {
         ),
         NoteCode => ("ПЗ", "ПЗ", "EN"),
         Student => ("Выполнил студент", "Виконав студент", "Student"),
+        OfGroup => ("группы", "групи", "group"),
         Supervisor => ("Руководитель", "Керівник", "Supervisor"),
         Contents => ("Содержание", "Зміст", "Contents"),
         SheetNo => ("лист", "аркуш", "sheet"),
         Task => ("Задание", "Завдання", "The task"),
         MechanismData => ("Исходные данные механизма", "Вихідні дані механізму", "The mechanism's data"),
-        TaskFollows => (
-            "Остальные исходные данные (нагрузки, массы, данные кулачкового механизма и зубчатых передач) приведены в соответствующих разделах.",
-            "Решта вихідних даних (навантаження, маси, дані кулачкового механізму та зубчастих передач) наведена у відповідних розділах.",
-            "The other data (loads, masses, the cam's and the gears' data) are given in their sections."
-        ),
         Value => ("значение", "значення", "value"),
         StructureAndKinematics => (
             "Структурный и кинематический анализ механизма",
@@ -85,6 +81,12 @@ catalogue! {
         ),
         WorkedVelocities => ("Скорости, измеренные на плане скоростей в положении", "Швидкості, виміряні на плані швидкостей у положенні", "The velocities measured on the velocity plan at position"),
         VelocitiesTable => ("Скорости точек по планам скоростей", "Швидкості точок за планами швидкостей", "Velocities of the points by the velocity plans"),
+        VelocityErrors => ("Расхождение скоростей с аналитическим расчётом", "Розбіжність швидкостей з аналітичним розрахунком", "The velocities' difference from the analytic solution"),
+        AngularVelocityErrors => ("Расхождение угловых скоростей с аналитическим расчётом", "Розбіжність кутових швидкостей з аналітичним розрахунком", "The angular velocities' difference from the analytic solution"),
+        AccelerationErrors => ("Расхождение ускорений с аналитическим расчётом", "Розбіжність прискорень з аналітичним розрахунком", "The accelerations' difference from the analytic solution"),
+        AngularAccelerationErrors => ("Расхождение угловых ускорений с аналитическим расчётом", "Розбіжність кутових прискорень з аналітичним розрахунком", "The angular accelerations' difference from the analytic solution"),
+        DiagramErrors => ("Расхождение значений по диаграммам с аналитическим расчётом", "Розбіжність значень за діаграмами з аналітичним розрахунком", "The diagrams' difference from the analytic solution"),
+        DiagramAll => ("Величины, найденные по диаграммам", "Величини, знайдені за діаграмами", "The quantities read off the diagrams"),
         AngularVelocitiesTable => ("Угловые скорости звеньев", "Кутові швидкості ланок", "Angular velocities of the links"),
         VelocityPlanWord => ("План скоростей", "План швидкостей", "Velocity plan"),
         AccelerationPlans => ("Планы ускорений", "Плани прискорень", "Acceleration plans"),
@@ -117,6 +119,7 @@ catalogue! {
             "Вектори швидкості точки з планів швидкостей переносимо паралельно до спільного полюса; їх кінці з'єднуємо плавною кривою — годографом швидкості.",
             "The point's velocity vectors from the velocity plans carried parallel to one pole; their ends joined by a smooth curve, the hodograph."
         ),
+        HodographTable => ("Отрезки годографа скорости", "Відрізки годографа швидкості", "The hodograph's rays"),
         AnalyticMethod => ("Аналитический метод", "Аналітичний метод", "The analytic method"),
         AnalyticText => (
             "Положения, скорости и ускорения найдены аналитически из уравнений замкнутых векторных контуров (аналитический двойник построения).",
@@ -145,6 +148,7 @@ catalogue! {
         ),
         PolygonShort => ("пл", "пл", "pol"),
         LeverShort => ("Ж", "Ж", "Zh"),
+        ResistancePower => ("Мощность сил полезного сопротивления в этом положении:", "Потужність сил корисного опору в цьому положенні:", "The power of the useful resistance at this position:"),
         DrivePower => ("Мощность привода:", "Потужність приводу:", "The drive's power:"),
         Dynamics => ("Динамика машины", "Динаміка машини", "Machine dynamics"),
         DynamicsIntro => (
