@@ -5,6 +5,8 @@ use super::markup::{label, string, text, Align};
 use super::rows::{fmt, percent};
 use super::Writer;
 use crate::check::{Method, Symbol};
+use crate::forces::{Action, ForceSpec};
+use crate::gears::GearsSpec;
 use crate::linkage::{Dyad, Mechanism};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
@@ -106,8 +108,15 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         let caption = w.word(T::MechanismData);
         table_of_data(w, caption, &rows);
     }
-    // The data of every other study as its sheet prints them (the gear sheet's block mixes
-    // data and results: the gears' section gives it whole).
+    if let Some(f) = &scene.forces {
+        let caption = w.word(T::ForcesData);
+        table_of_data(w, caption, &forces_data(f, w.lang));
+    }
+    if let Some(g) = &scene.gears {
+        let caption = w.word(T::GearsData);
+        table_of_data(w, caption, &gears_data(g, w.lang));
+    }
+    // The data of the other studies as their sheets print them, inputs only.
     for (kind, title) in [
         (PlateKind::Dynamics, T::Dynamics),
         (PlateKind::Cam, T::CamSection),
@@ -167,6 +176,78 @@ fn mechanism_data(m: &Mechanism, lang: Lang) -> Vec<(String, String, String)> {
     rows
 }
 
+/// Symbol, value and unit of the links' masses and moments of inertia and of the working
+/// resistances.
+fn forces_data(f: &ForceSpec, lang: Lang) -> Vec<(String, String, String)> {
+    let mut rows = Vec::new();
+    for l in &f.links {
+        if l.mass > 0.0 {
+            rows.push((
+                format!("m_{{{}}}", l.link),
+                fmt(l.mass, 5, lang),
+                "kg".into(),
+            ));
+        }
+        if l.inertia > 0.0 {
+            let centre = plain(&l.centre);
+            rows.push((
+                format!("J_{{{centre}}}"),
+                fmt(l.inertia, 5, lang),
+                "kg*m^2".into(),
+            ));
+        }
+    }
+    for r in &f.resistances {
+        match &r.action {
+            Action::Force { magnitude, .. } => {
+                rows.push(("F_{пс}".into(), fmt(*magnitude, 5, lang), "N".into()));
+            }
+            Action::Moment { magnitude, .. } => {
+                rows.push(("M_{пс}".into(), fmt(*magnitude, 5, lang), "N*m".into()));
+            }
+        }
+    }
+    rows
+}
+
+/// Symbol, value and unit of the gear pair, the wheels cut by the rack and the train's
+/// wheels, each part under its name.
+fn gears_data(g: &GearsSpec, lang: Lang) -> Vec<(String, String, String)> {
+    let mut rows = Vec::new();
+    let one = |s: &str, x: f64| (s.to_string(), fmt(x, 5, lang), String::new());
+    let part = |t: T| (t.get(lang).to_string(), String::new(), String::new());
+    if let Some(p) = &g.pair {
+        rows.push(part(T::PairPart));
+        rows.push(("m".into(), mm(p.module, lang), "mm".into()));
+        for i in 0..2 {
+            rows.push(one(&format!("z_{{{}}}", i + 1), f64::from(p.z[i])));
+            rows.push(one(&format!("x_{{{}}}", i + 1), p.x[i]));
+        }
+        rows.push((
+            "α".into(),
+            fmt(p.rack.alpha.to_degrees(), 4, lang),
+            "deg".into(),
+        ));
+        rows.push(one("h^{*}_{a}", p.rack.ha));
+        rows.push(one("c^{*}", p.rack.c));
+    }
+    for r in &g.racks {
+        rows.push(part(T::RackCutPart));
+        rows.push(one(&format!("z_{{{}}}", r.name), f64::from(r.cutting.z)));
+        rows.push(one(&format!("x_{{{}}}", r.name), r.cutting.x));
+    }
+    if let Some(t) = &g.planetary {
+        rows.push(part(T::TrainPart));
+        for wheel in &t.train.wheels {
+            rows.push(one(&format!("z_{{{}}}", wheel.name), wheel.z));
+        }
+        if let Some(k) = t.satellites {
+            rows.push(one("k", f64::from(k)));
+        }
+    }
+    rows
+}
+
 /// The point a link's frame starts at (its outer pivot), for the distances of its points.
 fn link_origin(m: &Mechanism, link: u32) -> Option<String> {
     if link == m.crank.link {
@@ -201,7 +282,7 @@ fn table_of_data(w: &mut Writer<'_, '_>, caption: &str, rows: &[(String, String,
     ];
     let body: Vec<Vec<String>> = rows
         .iter()
-        .map(|(s, v, u)| vec![label(s), text(v), text(&unit_in(u, w.lang))])
+        .map(|(s, v, u)| vec![label(s), text(v), label(&unit_in(u, w.lang))])
         .collect();
     w.doc.table(
         caption,
@@ -401,7 +482,7 @@ fn seed_values(w: &mut Writer<'_, '_>) {
 /// The references: the course texts the project follows.
 pub(super) fn references(w: &mut Writer<'_, '_>) {
     w.doc.raw(&format!(
-        "#heading(numbering: none)[{}]",
+        "#heading(numbering: none, {})",
         text(w.word(T::References))
     ));
     for r in [T::Reference1, T::Reference2, T::Reference3, T::Reference4] {

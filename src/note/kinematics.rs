@@ -7,7 +7,7 @@
 use super::markup::{frac, inline, label, num, sym, text, unit, Align};
 use super::rows::{fmt, numbers, values_and_errors, Column, DIGITS};
 use super::{NoteError, Writer};
-use crate::check::{Method, Row, Symbol};
+use crate::check::{is_zero, Method, Row, Symbol};
 use crate::linkage::{DyadKind, GroupInfo, OutputCoord, Structure};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
@@ -128,9 +128,28 @@ fn on(name: &str, link: u32, shared: bool) -> String {
     }
 }
 
-/// The two vector equations of a group's velocity plan, as label markup, with what is known
-/// of each term: (equation, the unknown terms' directions).
-fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<(String, String)> {
+/// How the point of an equation moves relative to its reference point, which decides the
+/// parts its relative acceleration splits into.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Relative {
+    /// Both on one turning link: normal and tangential parts.
+    Turn,
+    /// Sliding along a moving link: Coriolis and relative parts.
+    Slide,
+    /// Sliding along the frame's guide: the relative part alone.
+    SlideOnFrame,
+}
+
+/// One vector equation of a velocity plan, as label markup: the equation, the unknown term's
+/// direction, and how its relative term moves.
+struct Equation {
+    velocity: String,
+    direction: String,
+    relative: Relative,
+}
+
+/// The two vector equations of a group's velocity plan.
+fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<Equation> {
     let [p0, p1, p2] = &g.pairs;
     let [_, j] = g.links;
     let along = |link: u32| format!("{} {link}", T::AlongGuideOf.get(lang));
@@ -142,17 +161,28 @@ fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<(String, String)> {
             y.replace(['_', '{', '}'], "")
         )
     };
+    let eq = |velocity: String, direction: String, relative| Equation {
+        velocity,
+        direction,
+        relative,
+    };
+    let slide = |link: u32| match link {
+        0 => Relative::SlideOnFrame,
+        _ => Relative::Slide,
+    };
     match g.kind {
         DyadKind::Rrr => {
             let (a, joint, b) = (&p0.name, &p1.name, &p2.name);
             vec![
-                (
+                eq(
                     format!("{} = {} + {}", v(joint), v(a), vr(joint, a)),
                     format!("{} ⊥ {a}{joint}", vr(joint, a)),
+                    Relative::Turn,
                 ),
-                (
+                eq(
                     format!("{} = {} + {}", v(joint), v(b), vr(joint, b)),
                     format!("{} ⊥ {b}{joint}", vr(joint, b)),
+                    Relative::Turn,
                 ),
             ]
         }
@@ -160,13 +190,15 @@ fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<(String, String)> {
             let (a, joint) = (&p0.name, &p1.name);
             let guide = on(joint, p2.links[1], true);
             vec![
-                (
+                eq(
                     format!("{} = {} + {}", v(joint), v(a), vr(joint, a)),
                     format!("{} ⊥ {a}{joint}", vr(joint, a)),
+                    Relative::Turn,
                 ),
-                (
+                eq(
                     format!("{} = {} + {}", v(joint), v(&guide), vr(joint, &guide)),
                     format!("{} ∥ {}", vr(joint, &guide), along(p2.links[1])),
+                    slide(p2.links[1]),
                 ),
             ]
         }
@@ -174,13 +206,15 @@ fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<(String, String)> {
             let (a, c) = (&p0.name, &p2.name);
             let (aj, ao) = (on(a, j, true), on(a, p0.links[0], true));
             vec![
-                (
+                eq(
                     format!("{} = {} + {}", v(&aj), v(&ao), vr(&aj, &ao)),
                     format!("{} ∥ {c}{a}", vr(&aj, &ao)),
+                    slide(j),
                 ),
-                (
+                eq(
                     format!("{} = {} + {}", v(&aj), v(c), vr(&aj, c)),
                     format!("{} ⊥ {c}{a}", vr(&aj, c)),
+                    Relative::Turn,
                 ),
             ]
         }
@@ -188,13 +222,15 @@ fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<(String, String)> {
             let joint = &p1.name;
             let (gi, gj) = (on(joint, p0.links[0], true), on(joint, p2.links[1], true));
             vec![
-                (
+                eq(
                     format!("{} = {} + {}", v(joint), v(&gi), vr(joint, &gi)),
                     format!("{} ∥ {}", vr(joint, &gi), along(p0.links[0])),
+                    slide(p0.links[0]),
                 ),
-                (
+                eq(
                     format!("{} = {} + {}", v(joint), v(&gj), vr(joint, &gj)),
                     format!("{} ∥ {}", vr(joint, &gj), along(p2.links[1])),
+                    slide(p2.links[1]),
                 ),
             ]
         }
@@ -203,32 +239,39 @@ fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<(String, String)> {
             let (aj, ao) = (on(a, j, true), on(a, p0.links[0], true));
             let g0 = on(a, p2.links[1], true);
             vec![
-                (
+                eq(
                     format!("{} = {} + {}", v(&aj), v(&ao), vr(&aj, &ao)),
                     format!("{} ∥ {}", vr(&aj, &ao), along(j)),
+                    slide(j),
                 ),
-                (
+                eq(
                     format!("{} = {} + {}", v(&aj), v(&g0), vr(&aj, &g0)),
                     format!("{} ∥ {}", vr(&aj, &g0), along(p2.links[1])),
+                    slide(p2.links[1]),
                 ),
             ]
         }
     }
 }
 
-/// The acceleration's counterpart of a velocity equation: each relative term split into its
-/// normal and tangential parts (a turning link) or its Coriolis and relative parts (a slide).
-fn acceleration_equation(velocity: &str) -> String {
-    let Some((lhs, rhs)) = velocity.split_once(" = ") else {
-        return velocity.replace('V', "a");
+/// The acceleration's counterpart of a velocity equation: its relative term split into its
+/// normal and tangential parts (one turning link), its Coriolis and relative parts (a slide
+/// along a moving link) or its relative part alone (a slide along the frame).
+fn acceleration_equation(e: &Equation) -> String {
+    let a = |t: &str| t.replacen('V', "a", 1);
+    let Some((lhs, rhs)) = e.velocity.split_once(" = ") else {
+        return a(&e.velocity);
     };
     let terms: Vec<&str> = rhs.split(" + ").collect();
-    let a = |t: &str| t.replacen('V', "a", 1);
     let mut out = format!("{} = {}", a(lhs), a(terms[0]));
     for t in &terms[1..] {
         let body = a(t);
         let sub = body.trim_start_matches("a_");
-        out.push_str(&format!(" + a^{{n}}_{sub} + a^{{τ}}_{sub}"));
+        out.push_str(&match e.relative {
+            Relative::Turn => format!(" + a^{{n}}_{sub} + a^{{τ}}_{sub}"),
+            Relative::Slide => format!(" + a^{{k}}_{sub} + a^{{r}}_{sub}"),
+            Relative::SlideOnFrame => format!(" + a^{{r}}_{sub}"),
+        });
     }
     out
 }
@@ -313,17 +356,11 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
                     }
                     OutputCoord::Slider(..) => ("H".to_string(), travel, w.word(T::MetreUnit)),
                 };
-                inline(&format!(
-                    "{} = {}{}",
-                    sym(&symbol),
-                    num(value, 5, lang),
-                    unit(u)
-                ))
+                format!("{} = {}{}", sym(&symbol), num(value, 5, lang), unit(u))
             })
             .collect();
-        let mut pieces = vec![text(w.word(T::StrokeIs))];
-        pieces.extend(strokes);
-        w.doc.par(&pieces);
+        w.doc
+            .par(&[text(w.word(T::StrokeIs)), inline(&strokes.join(", "))]);
         w.doc.par(&[text(w.word(T::ThetaAndK))]);
         w.doc.formula(&format!(
             "{} = {} = {} = {}",
@@ -381,8 +418,9 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             g.links[0],
             g.links[1]
         ))]);
-        for (eq, dirs) in velocity_equations(g, lang) {
-            w.doc.par(&[label(&eq), text("—"), label(&dirs)]);
+        for e in velocity_equations(g, lang) {
+            w.doc
+                .par(&[label(&e.velocity), text("—"), label(&e.direction)]);
         }
     }
     if let Some(p) = &at {
@@ -440,8 +478,8 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         ));
         w.doc.say(w.word(T::AccelerationEquations));
         for g in &s.groups {
-            for (eq, _) in velocity_equations(g, lang) {
-                w.doc.par(&[label(&acceleration_equation(&eq))]);
+            for e in velocity_equations(g, lang) {
+                w.doc.par(&[label(&acceleration_equation(&e))]);
             }
         }
         if let Some(p) = &at {
@@ -565,15 +603,24 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
                 })
             }))
             .collect();
+        // Each column's largest value is its scale: a residue against it is written 0.
+        let scales: Vec<f64> = (0..t.columns.len())
+            .map(|c| {
+                t.rows
+                    .iter()
+                    .filter_map(|(_, vals)| vals.get(c).copied().flatten())
+                    .fold(0.0, |m: f64, x| m.max(x.abs()))
+            })
+            .collect();
         let rows: Vec<Vec<String>> = t
             .rows
             .iter()
             .map(|(p, vals)| {
                 std::iter::once(text(p))
-                    .chain(
-                        vals.iter()
-                            .map(|v| text(&v.map(|x| fmt(x, DIGITS, lang)).unwrap_or_default())),
-                    )
+                    .chain(vals.iter().zip(&scales).map(|(v, &scale)| {
+                        let shown = |x: f64| if is_zero(x, scale) { 0.0 } else { x };
+                        text(&v.map(|x| fmt(shown(x), DIGITS, lang)).unwrap_or_default())
+                    }))
                     .collect()
             })
             .collect();
@@ -787,4 +834,35 @@ fn diagram_table(
     let others: Vec<(String, Method)> = chords.to_vec();
     let captions = (w.word(T::DiagramAll), w.word(T::DiagramErrors));
     values_and_errors(w, captions, &others);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The shaper's groups: a slide along the turning rocker 3 has a Coriolis part, a slide
+    /// along the frame's guide the relative part alone, a turn its normal and tangential
+    /// parts.
+    #[test]
+    fn each_relative_acceleration_splits_by_how_its_point_moves() {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions/shaper.toml");
+        let scene = crate::scene::load(&path).expect("shaper");
+        let m = scene.mechanism.as_ref().expect("mechanism");
+        let s = Structure::analyse(m);
+        let equations: Vec<String> = s
+            .groups
+            .iter()
+            .flat_map(|g| velocity_equations(g, Lang::Ru))
+            .map(|e| acceleration_equation(&e))
+            .collect();
+        assert_eq!(
+            equations,
+            [
+                "a_{B3} = a_{B1} + a^{k}_{B3B1} + a^{r}_{B3B1}",
+                "a_{B3} = a_{C} + a^{n}_{B3C} + a^{τ}_{B3C}",
+                "a_{D5} = a_{D3} + a^{k}_{D5D3} + a^{r}_{D5D3}",
+                "a_{D5} = a_{D0} + a^{r}_{D5D0}",
+            ]
+        );
+    }
 }

@@ -86,11 +86,6 @@ pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         }
         w.doc.say(w.word(T::GroupsEquations));
         group_equations(w, k)?;
-        let reactions = quantities(&w.report.rows, |r| {
-            r.position().as_deref() == Some(p.as_str())
-                && matches!(r.method, Method::Polygon | Method::Lever)
-        });
-        let _ = reactions;
         of_scene_at(w, p);
         // The balancing moment by both routes.
         let poly = row(&w.report.rows, "M_bal", Method::Polygon, Some(p)).cloned();
@@ -372,39 +367,16 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let caption = w.word(T::CamTable);
     by_position(w, caption, &q);
     let caption = w.word(T::CamScene);
+    // The dynamics integrates too (A_с, M_д): the cam's rows are its lengths.
     of_scene(w, caption, |r| {
         r.position().is_none()
             && matches!(
                 r.method,
                 Method::CombinedDiagram | Method::Inversion | Method::Integration
             )
+            && !matches!(r.key.symbol, Symbol::Work | Symbol::Moment)
     });
     w.figures((PlateKind::Cam, None), |_| true, |own| own.to_string());
-    Ok(())
-}
-
-/// The gears: the pair's geometry, ε_α by formula and from the picture, the specific sliding
-/// (Table 6), the rack-cut wheel and the train by Willis and by the triangles.
-pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
-    w.heading(1, T::GearsSection);
-    w.doc.say(w.word(T::GearsIntro));
-    w.data_list(PlateKind::Gears, false);
-    let caption = w.word(T::PairTable);
-    of_scene(w, caption, |r| {
-        r.position().is_none()
-            && matches!(r.method, Method::Formula | Method::Meshing)
-            && !matches!(r.key.symbol, Symbol::GearRatio)
-    });
-    let q = quantities(&w.report.rows, |r| r.key.symbol == Symbol::SpecificSliding);
-    let caption = w.word(T::SlidingTable);
-    by_position(w, caption, &q);
-    let caption = w.word(T::RackTable);
-    of_scene(w, caption, |r| r.method == Method::Envelope);
-    let caption = w.word(T::TrainTable);
-    of_scene(w, caption, |r| {
-        r.key.symbol == Symbol::GearRatio || r.method == Method::Triangles
-    });
-    w.figures((PlateKind::Gears, None), |_| true, |own| own.to_string());
     Ok(())
 }
 

@@ -63,8 +63,16 @@ pub(super) fn num(x: f64, sig: usize, lang: Lang) -> String {
 pub(super) fn unit(u: &str) -> String {
     if u.is_empty() {
         String::new()
+    } else if u == "°" {
+        // An angle's degree sign stands against its number.
+        string(u)
     } else {
-        format!("thin {}", string(u))
+        let u = u
+            .replace("^{2}", "²")
+            .replace("^2", "²")
+            .replace("^{3}", "³")
+            .replace("^3", "³");
+        format!("thin {}", string(&u))
     }
 }
 
@@ -191,6 +199,12 @@ mod tests {
     #[test]
     fn strings_escape_quotes_and_backslashes() {
         assert_eq!(string(r#"a "b" \c"#), r#""a \"b\" \\c""#);
+    }
+
+    #[test]
+    fn a_unit_sets_its_powers_as_superscripts() {
+        assert_eq!(unit("м/с^2"), r#"thin "м/с²""#);
+        assert_eq!(unit("кг·м^{2}"), r#"thin "кг·м²""#);
     }
 
     #[test]

@@ -11,6 +11,7 @@
 //! on the following ones. The words are the sheets' catalogue's (`sheets::captions`).
 
 mod front;
+mod gears;
 mod kinematics;
 mod machines;
 mod markup;
@@ -218,7 +219,7 @@ pub fn compose_with(
         machines::cam(&mut w)?;
     }
     if scene.gears.is_some() {
-        machines::gears(&mut w)?;
+        gears::gears(&mut w)?;
     }
     machines::others(&mut w)?;
     front::conclusions(&mut w);

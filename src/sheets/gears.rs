@@ -219,7 +219,7 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
             name: &|r| quantity(r, lang),
             unit: &|r| match r.key.symbol.unit() {
                 "m" => unit_in("mm", lang),
-                "deg" => "°".into(),
+                "deg" => unit_in("deg", lang),
                 _ => String::new(),
             },
             value: &|r, x, _| format_sig(if mm(r) { x * 1e3 } else { x }, 7, lang),

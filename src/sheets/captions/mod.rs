@@ -57,8 +57,12 @@ macro_rules! catalogue {
 use catalogue;
 
 /// A unit written in SI (`m/s^2`, `N*m`, `kg*m^2`, `rad/s`, `mm`) in `lang`: `·` for the
-/// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`).
+/// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`); an
+/// angle in degrees (`deg`) as `°`.
 pub(crate) fn unit_in(unit: &str, lang: Lang) -> String {
+    if unit == "deg" {
+        return "°".into();
+    }
     let si = unit.replace('*', "·");
     if lang == Lang::En {
         return si;

@@ -19,6 +19,11 @@ catalogue! {
         SheetNo => ("лист", "аркуш", "sheet"),
         Task => ("Задание", "Завдання", "The task"),
         MechanismData => ("Исходные данные механизма", "Вихідні дані механізму", "The mechanism's data"),
+        ForcesData => ("Массы звеньев и силы сопротивления", "Маси ланок і сили опору", "The links' masses and the resistances"),
+        GearsData => ("Исходные данные зубчатых механизмов", "Вихідні дані зубчастих механізмів", "The gears' data"),
+        PairPart => ("Зубчатая пара", "Зубчаста пара", "The gear pair"),
+        RackCutPart => ("Колесо, нарезаемое рейкой", "Колесо, що нарізається рейкою", "The wheel cut by the rack"),
+        TrainPart => ("Планетарный редуктор", "Планетарний редуктор", "The planetary train"),
         Value => ("значение", "значення", "value"),
         StructureAndKinematics => (
             "Структурный и кинематический анализ механизма",
@@ -182,6 +187,22 @@ catalogue! {
             "Геометрия эвольвентного зацепления со смещением рассчитана по формулам и проверена по картине зацепления; коэффициент перекрытия — по формуле и по чертежу (B₁B₂/p_b). Зубья нарезаны рейкой по огибающей её положений. Передаточное отношение планетарного редуктора — по формуле Виллиса и графически по треугольникам скоростей.",
             "Геометрію евольвентного зачеплення зі зміщенням розраховано за формулами і перевірено за картиною зачеплення; коефіцієнт перекриття — за формулою і за кресленням (B₁B₂/p_b). Зуби нарізано рейкою за обвідною її положень. Передаточне відношення планетарного редуктора — за формулою Вілліса і графічно за трикутниками швидкостей.",
             "The geometry of the shifted involute pair by the formulas, checked on the meshing picture; the contact ratio by formula and off the drawing (B₁B₂/p_b). The teeth cut by the rack as the envelope of its positions. The planetary train's ratio by Willis's formula and graphically by the velocity triangles."
+        ),
+        PairWorked => (
+            "Геометрический расчёт зацепления (размеры в мм):",
+            "Геометричний розрахунок зачеплення (розміри в мм):",
+            "The geometry of the pair (lengths in mm):"
+        ),
+        WheelWord => ("Колесо", "Колесо", "Wheel"),
+        ContactRatioWorked => (
+            "Коэффициент перекрытия по формуле:",
+            "Коефіцієнт перекриття за формулою:",
+            "The contact ratio by the formula:"
+        ),
+        ContactRatioPicture => (
+            "и по картине зацепления — активная линия зацепления B₁B₂, измеренная на чертеже, к шагу по основной окружности:",
+            "і за картиною зачеплення — активна лінія зачеплення B₁B₂, виміряна на кресленні, до кроку по основному колу:",
+            "and off the meshing picture: the active line of action B₁B₂ measured on the drawing over the base pitch:"
         ),
         PairTable => ("Геометрия зубчатой передачи", "Геометрія зубчастої передачі", "The gear pair's geometry"),
         SlidingTable => ("Удельное скольжение", "Питоме ковзання", "Specific sliding"),

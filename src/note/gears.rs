@@ -1,0 +1,288 @@
+//! The gears section: the pair's geometry worked formula by formula (seed 000 §4: symbols,
+//! numbers, result), ε_α by formula and off the meshing picture, the specific sliding
+//! (Table 6), the rack-cut wheel and the train by Willis and by the triangles.
+
+use super::markup::{frac, num, sym, unit};
+use super::rows::{by_position, of_scene, quantities};
+use super::{NoteError, Writer};
+use crate::check::{Method, Symbol};
+use crate::gears::{inv, Pair};
+use crate::scene::PlateKind;
+use crate::sheets::captions::{unit_in, NoteText as T};
+
+/// The gears section.
+pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    w.heading(1, T::GearsSection);
+    w.doc.say(w.word(T::GearsIntro));
+    // The sheet's data: its inputs; the results are worked below.
+    w.data_list(PlateKind::Gears, true);
+    let study = w.session.gears()?;
+    if let Some((pair, mesh)) = &study.pair {
+        pair_geometry(w, pair);
+        contact_ratio(w, pair, mesh.ab.value);
+    }
+    let caption = w.word(T::PairTable);
+    of_scene(w, caption, |r| {
+        r.position().is_none()
+            && matches!(r.method, Method::Formula | Method::Meshing)
+            && !matches!(r.key.symbol, Symbol::GearRatio)
+    });
+    let q = quantities(&w.report.rows, |r| r.key.symbol == Symbol::SpecificSliding);
+    let caption = w.word(T::SlidingTable);
+    by_position(w, caption, &q);
+    let caption = w.word(T::RackTable);
+    of_scene(w, caption, |r| r.method == Method::Envelope);
+    let caption = w.word(T::TrainTable);
+    of_scene(w, caption, |r| {
+        r.key.symbol == Symbol::GearRatio || r.method == Method::Triangles
+    });
+    w.figures((PlateKind::Gears, None), |_| true, |own| own.to_string());
+    Ok(())
+}
+
+/// The involute function in a formula.
+const INV: &str = "op(\"inv\")";
+
+/// Writes "`lhs` = `symbolic` = `substituted` = `value`" as one formula (`lhs` is math).
+fn worked(w: &mut Writer<'_, '_>, lhs: &str, symbolic: &str, substituted: &str, value: String) {
+    w.doc
+        .formula(&format!("{lhs} = {symbolic} = {substituted} = {value}"));
+}
+
+/// The pair's geometry as seed 000 §4 works it: α_w from the involute function, y, Δy, a_w,
+/// then each wheel's r, r_b, r_w, r_f, r_a, h, s, α_a and s_a, lengths in mm.
+fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
+    let lang = w.lang;
+    let mm = unit(&unit_in("mm", lang));
+    let n = |x: f64| num(x, 5, lang);
+    let l = |x: f64| format!("{}{mm}", num(x * 1e3, 5, lang));
+    let deg = |a: f64| format!("{}°", num(a.to_degrees(), 5, lang));
+    let spec = &p.spec;
+    let rack = spec.rack;
+    let m = n(spec.module * 1e3);
+    let [z1, z2] = spec.z;
+    let zs = f64::from(z1 + z2);
+    let [x1, x2] = spec.x;
+    let tg = |a: f64| format!("tg {}", deg(a));
+    w.doc.say(w.word(T::PairWorked));
+    worked(
+        w,
+        &format!("{INV} {}", sym("α_{w}")),
+        &format!(
+            "{} + {INV} α",
+            frac(
+                &format!("2 ({} + {}) tg α", sym("x_{1}"), sym("x_{2}")),
+                &format!("{} + {}", sym("z_{1}"), sym("z_{2}"))
+            )
+        ),
+        &format!(
+            "{} + {}",
+            frac(
+                &format!("2 dot ({} + {}) dot {}", n(x1), n(x2), tg(rack.alpha)),
+                &format!("{z1} + {z2}")
+            ),
+            num(inv(rack.alpha), 5, lang)
+        ),
+        n(p.inv_w),
+    );
+    w.doc
+        .formula(&format!("{} = {}", sym("α_{w}"), deg(p.alpha_w)));
+    worked(
+        w,
+        &sym("y"),
+        &format!(
+            "{} ({} - 1)",
+            frac(&format!("{} + {}", sym("z_{1}"), sym("z_{2}")), "2"),
+            frac("cos α", &format!("cos {}", sym("α_{w}")))
+        ),
+        &format!(
+            "{} ({} - 1)",
+            frac(&format!("{z1} + {z2}"), "2"),
+            frac(
+                &format!("cos {}", deg(rack.alpha)),
+                &format!("cos {}", deg(p.alpha_w))
+            )
+        ),
+        n(p.y),
+    );
+    if spec.dy_table.is_none() {
+        worked(
+            w,
+            &sym("Δy"),
+            &format!("{} + {} - y", sym("x_{1}"), sym("x_{2}")),
+            &format!("{} + {} - {}", n(x1), n(x2), n(p.y)),
+            n(p.dy),
+        );
+    }
+    worked(
+        w,
+        &sym("a_{w}"),
+        &format!(
+            "m ({} + y)",
+            frac(&format!("{} + {}", sym("z_{1}"), sym("z_{2}")), "2")
+        ),
+        &format!("{m} dot ({} + {})", frac(&n(zs), "2"), n(p.y)),
+        l(p.a_w),
+    );
+    for i in 0..2 {
+        let k = i + 1;
+        let (z, x) = (spec.z[i], spec.x[i]);
+        let s = |name: &str| sym(&format!("{name}_{{{k}}}"));
+        let ra = sym(&format!("r_{{a{k}}}"));
+        let rb = sym(&format!("r_{{b{k}}}"));
+        w.doc.say(&format!("{} {k}:", w.word(T::WheelWord)));
+        worked(
+            w,
+            &sym(&format!("r_{{{k}}}")),
+            &frac(&format!("m {}", s("z")), "2"),
+            &frac(&format!("{m} dot {z}"), "2"),
+            l(p.r[i]),
+        );
+        worked(
+            w,
+            &sym(&format!("r_{{b{k}}}")),
+            &format!("{} cos α", s("r")),
+            &format!("{} dot cos {}", n(p.r[i] * 1e3), deg(rack.alpha)),
+            l(p.rb[i]),
+        );
+        worked(
+            w,
+            &sym(&format!("r_{{w{k}}}")),
+            &format!(
+                "{} (1 + {})",
+                s("r"),
+                frac("2 y", &format!("{} + {}", sym("z_{1}"), sym("z_{2}")))
+            ),
+            &format!(
+                "{} dot (1 + {})",
+                n(p.r[i] * 1e3),
+                frac(&format!("2 dot {}", n(p.y)), &n(zs))
+            ),
+            l(p.rw[i]),
+        );
+        worked(
+            w,
+            &sym(&format!("r_{{f{k}}}")),
+            &format!(
+                "{} - ({} + {} - {}) m",
+                s("r"),
+                sym("h^{*}_{a}"),
+                sym("c^{*}"),
+                s("x")
+            ),
+            &format!(
+                "{} - ({} + {} - {}) dot {m}",
+                n(p.r[i] * 1e3),
+                n(rack.ha),
+                n(rack.c),
+                n(x)
+            ),
+            l(p.rf[i]),
+        );
+        worked(
+            w,
+            &sym(&format!("r_{{a{k}}}")),
+            &format!("{} + ({} + {} - Δ y) m", s("r"), sym("h^{*}_{a}"), s("x")),
+            &format!(
+                "{} + ({} + {} - {}) dot {m}",
+                n(p.r[i] * 1e3),
+                n(rack.ha),
+                n(x),
+                n(p.dy)
+            ),
+            l(p.ra[i]),
+        );
+        worked(
+            w,
+            &sym(&format!("h_{{{k}}}")),
+            &format!("{ra} - {}", sym(&format!("r_{{f{k}}}"))),
+            &format!("{} - {}", n(p.ra[i] * 1e3), n(p.rf[i] * 1e3)),
+            l(p.ra[i] - p.rf[i]),
+        );
+        worked(
+            w,
+            &sym(&format!("s_{{{k}}}")),
+            &format!("m (π/2 + 2 {} tg α)", s("x")),
+            &format!("{m} dot (π/2 + 2 dot {} dot {})", n(x), tg(rack.alpha)),
+            l(p.s[i]),
+        );
+        worked(
+            w,
+            &sym(&format!("α_{{a{k}}}")),
+            &format!("arccos {}", frac(&rb, &ra)),
+            &format!("arccos {}", frac(&n(p.rb[i] * 1e3), &n(p.ra[i] * 1e3))),
+            deg(p.alpha_a[i]),
+        );
+        worked(
+            w,
+            &sym(&format!("s_{{a{k}}}")),
+            &format!(
+                "2 {ra} ({} + {INV} α - {INV} {})",
+                frac(&s("s"), &format!("2 {}", s("r"))),
+                sym(&format!("α_{{a{k}}}"))
+            ),
+            &format!(
+                "2 dot {} dot ({} + {} - {})",
+                n(p.ra[i] * 1e3),
+                frac(&n(p.s[i] * 1e3), &format!("2 dot {}", n(p.r[i] * 1e3))),
+                n(inv(rack.alpha)),
+                n(inv(p.alpha_a[i]))
+            ),
+            l(p.sa[i]),
+        );
+    }
+    worked(w, &sym("p"), "π m", &format!("π dot {m}"), l(p.p));
+    worked(
+        w,
+        &sym("p_{b}"),
+        "p cos α",
+        &format!("{} dot cos {}", n(p.p * 1e3), deg(rack.alpha)),
+        l(p.p_b),
+    );
+}
+
+/// ε_α by the textbook's formula and as the active line read off the meshing picture over
+/// the base pitch (`ab_read`, m).
+fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
+    let lang = w.lang;
+    let n = |x: f64| num(x, 5, lang);
+    let deg = |a: f64| format!("{}°", num(a.to_degrees(), 5, lang));
+    let [z1, z2] = p.spec.z;
+    w.doc.say(w.word(T::ContactRatioWorked));
+    worked(
+        w,
+        &sym("ε_{α}"),
+        &frac(
+            &format!(
+                "{} tg {} + {} tg {} - ({} + {}) tg {}",
+                sym("z_{1}"),
+                sym("α_{a1}"),
+                sym("z_{2}"),
+                sym("α_{a2}"),
+                sym("z_{1}"),
+                sym("z_{2}"),
+                sym("α_{w}")
+            ),
+            "2 π",
+        ),
+        &frac(
+            &format!(
+                "{z1} dot tg {} + {z2} dot tg {} - {} dot tg {}",
+                deg(p.alpha_a[0]),
+                deg(p.alpha_a[1]),
+                z1 + z2,
+                deg(p.alpha_w)
+            ),
+            "2 π",
+        ),
+        n(p.eps_formula),
+    );
+    w.doc.say(w.word(T::ContactRatioPicture));
+    worked(
+        w,
+        &sym("ε′_{α}"),
+        &frac(&sym("B_{1}B_{2}"), &sym("p_{b}")),
+        &frac(&n(ab_read * 1e3), &n(p.p_b * 1e3)),
+        n(ab_read / p.p_b),
+    );
+}
