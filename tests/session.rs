@@ -39,17 +39,29 @@ fn every_scene_constructs_each_position_and_plan_once() {
             .unwrap_or_else(|e| panic!("{}: {e}", s.stem));
         let log = session.constructions();
         assert_once(&s.stem, &log);
-        // The plan of positions at one μ_l only, the one the session decided.
+        // The plan of positions at the μ_l the session decided, and — when the scene analyses
+        // forces and the force sheets draw their groups at a μ_l of their own — at that one.
         let positions: Vec<&Constructed> = log.iter().filter(|c| c.what == "position").collect();
+        let mut scales = Vec::new();
+        if s.mechanism.is_some() {
+            scales.push(session.scale_l().expect("μ_l"));
+        }
+        if s.mechanism.is_some() && s.forces.is_some() {
+            let l = session.force_scale_l().expect("force μ_l");
+            if !scales.contains(&l) {
+                scales.push(l);
+            }
+        }
         let expected = match s.mechanism {
-            Some(_) => session.poses().expect("poses").positions.len(),
+            Some(_) => session.poses().expect("poses").positions.len() * scales.len(),
             None => 0,
         };
         assert_eq!(positions.len(), expected, "{}: {positions:?}", s.stem);
-        if expected > 0 {
-            let l = session.scale_l().expect("μ_l");
-            assert!(positions.iter().all(|c| c.scale == l), "{}", s.stem);
-        }
+        assert!(
+            positions.iter().all(|c| scales.contains(&c.scale)),
+            "{}",
+            s.stem
+        );
     }
 }
 

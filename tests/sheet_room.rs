@@ -45,8 +45,8 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("v-engine/kinematics", 0.17, "the plans at their μ_v, μ_a are fitted to the common field; a larger μ_l or μ_v would change the force sheets' groups and lever"),
     ("shaper/forces", 0.16, "the scene fixes μ_l and μ_F (the seed's): one position's kinetostatics (the textbook's sheet 2) — group 2–3 is 360 mm tall at μ_l, the lever's F_у stands 0,66 m out on the pitch circle's image, and the polygons and details beside them leave the bottom band free"),
     ("shaper/forces-2", 0.16, "as shaper/forces, at position 10"),
-    ("v-engine/forces", 0.16, "one position's kinetostatics with the groups at the kinematic plan's μ_l (the arms are measured at it) and the polygons at μ_F for 200 mm"),
-    ("v-engine/forces-2", 0.16, "as v-engine/forces, at position 6"),
+    ("v-engine/forces", 0.22, "the groups at the force sheets' own μ_l = 0,0005 (2:1), as large as their 300 mm room holds (group 4–5 272 × 237 mm, 2–3 284 × 183 mm: 0,0004 draws them 335 × 297 and 352 × 226 mm); the polygons at μ_F = 40 (the largest reaction 135 mm: 25 draws it 215 mm, and the position no longer fits one A1: the lever and the table go onto a second sheet); the groups are long links, thin on their field"),
+    ("v-engine/forces-2", 0.22, "as v-engine/forces, at position 6 (group 4–5 191 × 281 mm at μ_l = 0,0005: 0,0004 draws it 234 × 349 mm)"),
     ("v-engine/kinematics-2", 0.13, "two acceleration plans, the diagrams and the tables (which hold no view line)"),
 ];
 

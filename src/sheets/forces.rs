@@ -1,5 +1,6 @@
 //! Plate "Силовой анализ" (the textbook's sheet 2): one A1 sheet for every position the
-//! scene's `[forces]` analyses. On it: every Assur group drawn apart at μ_l with its loads,
+//! scene's `[forces]` analyses. On it: every Assur group drawn apart at the force sheets' μ_l
+//! ([`Session::force_scale_l`]: as large as the sheet holds it) with its loads,
 //! reactions and measured arms, next to its force polygon at μ_F; the driving link with its
 //! gear and its force triangle; Zhukovsky's lever on the turned velocity plan at μ_v; the
 //! table of inertia loads and reactions (graphical | analytic | error) and the balancing
@@ -16,7 +17,7 @@ use crate::linkage::Structure;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
 use crate::scene::Key;
-use crate::study::{KinScales, Session};
+use crate::study::Session;
 
 /// Height of the sheet's text and table, mm.
 const TEXT_MM: f64 = 3.5;
@@ -36,7 +37,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         let f = session.forces(&sc, k)?;
         let pos = &plan.positions[k];
         let phi = pos.phi.to_degrees().rem_euclid(360.0);
-        plates.extend(position_sheet(session, &st, &sc, &f, phi, lang)?);
+        plates.extend(position_sheet(session, &st, &f, phi, lang)?);
     }
     for (n, p) in plates.iter_mut().enumerate() {
         p.name = sheet_name("forces", n);
@@ -104,7 +105,6 @@ fn polygon_views(
 fn position_sheet(
     session: &Session<'_>,
     st: &Structure,
-    sc: &KinScales,
     f: &PositionForces,
     phi: f64,
     lang: Lang,
@@ -181,7 +181,7 @@ fn position_sheet(
         size_mm: TEXT_MM,
     });
     blocks.push(Block::Table(loads_table(&f.rows, lang)));
-    let tb = super::title_block(scene, &title("φ₁"), sc.l, lang);
+    let tb = super::title_block(scene, &title("φ₁"), session.force_scale_l()?, lang);
     lay_out(Sheet::default(), blocks, "forces", &tb, lang)
 }
 

@@ -1,6 +1,8 @@
 //! The force study of the session: the force analysis at each of `[forces] positions`.
 
 use super::*;
+use crate::construct::fit::{finest_fitting, fit_room};
+use crate::geom::DVec2;
 
 /// The force analysis's part of the report (after the kinematic study's, whose plans it reads).
 pub(super) const PART: Part = Part {
@@ -8,11 +10,34 @@ pub(super) const PART: Part = Part {
     add: |session, rep| session.report_forces(rep),
 };
 
-/// The force analysis by (μ_l, μ_v, μ_a, position).
+/// The force analysis by (μ_l of the groups, the kinematic μ_l, μ_v, μ_a, position).
 struct Polygons;
 impl Cache for Polygons {
-    type Key = (Scale, Scale, Scale, usize);
+    type Key = (Scale, Scale, Scale, Scale, usize);
     type Value = Cached<PositionForces>;
+}
+
+/// μ_l of the force sheets' drawings.
+struct ForceScaleL;
+impl Cache for ForceScaleL {
+    type Key = ();
+    type Value = Result<Scale, StudyError>;
+}
+
+/// The room of each drawing at μ_l on a force sheet (an Assur group with its loads,
+/// reactions and arms; the driving link), mm: two groups side by side take less than the
+/// A1 field's width, each with its polygon beside or under it.
+const GROUP_ROOM: DVec2 = DVec2::new(GROUP_W, GROUP_H);
+const GROUP_W: f64 = 300.0;
+const GROUP_H: f64 = 300.0;
+
+/// The drawings at μ_l of a position's force analysis: its groups and its driving link.
+fn drawn_at_l(f: &PositionForces) -> impl Iterator<Item = &Figure> {
+    let p = &f.analysis.polygons;
+    p.groups
+        .iter()
+        .map(|g| &g.scheme)
+        .chain(std::iter::once(&p.driver.scheme))
 }
 
 impl<'s> Session<'s> {
@@ -43,37 +68,88 @@ impl<'s> Session<'s> {
             .collect()
     }
 
-    /// The force analysis of position `k` at the kinematic scales `sc` (its velocity and
-    /// acceleration plans at μ_v and μ_a).
-    pub fn forces(&self, sc: &KinScales, k: usize) -> Cached<PositionForces> {
-        self.caches.get::<Polygons>((sc.l, sc.v, sc.a, k), || {
-            let spec = self.force_spec("the force analysis")?;
-            let plan = self.positions(sc.l)?;
-            let vel = self.velocity(sc, k)?;
-            let position = plan.positions[k].label.clone();
-            let vp = match vel.as_ref() {
-                Velocity::Built { plan: vp, .. } => vp,
-                Velocity::Refused(why) => {
-                    return Err(KinError::ForcePosition {
-                        position,
-                        kind: PlanKind::Velocity,
-                        why: why.clone(),
-                    }
-                    .into())
-                }
+    /// μ_l of the force sheets' drawings (every group and the driving link, whose arms are
+    /// measured on them), decided once: the scene's μ_l; else the plan of positions' made
+    /// finer along the round series while every such drawing at every analysed position,
+    /// constructed and measured, fits [`GROUP_ROOM`]: the groups as large as their sheet
+    /// holds them (a trial scale's positions are constructed apart, not kept).
+    pub fn force_scale_l(&self) -> Result<Scale, StudyError> {
+        self.caches.get::<ForceScaleL>((), || {
+            let sc = self.kin_scales()?;
+            if self.scene.scale_l.is_some() {
+                return Ok(sc.l);
+            }
+            let m = self.mechanism("the force analysis")?;
+            let ks = self.force_positions()?;
+            let build = |mu: Scale| {
+                let plan = plan_positions(m, &self.plan_request(), mu, self.drafting).ok()?;
+                let drawn: Result<Vec<PositionForces>, StudyError> = ks
+                    .iter()
+                    .map(|&k| self.analysed(&plan, mu, &sc, k))
+                    .collect();
+                Some((mu, drawn.ok()?))
             };
-            // The acceleration plan of a force position is the force analysis's, not one of
-            // `kinematics.acceleration_positions`: its failure names `forces.positions`.
-            let ap = self.acceleration(sc, k).map_err(|e| match e {
-                StudyError::Kinematics(e) => StudyError::from(KinError::ForcePosition {
+            let fits = |(_, drawn): &(Scale, Vec<PositionForces>)| {
+                fit_room(drawn.iter().flat_map(drawn_at_l), GROUP_ROOM)
+            };
+            Ok(finest_fitting(sc.l, (sc.l, Vec::new()), build, fits).0)
+        })
+    }
+
+    /// The force analysis of position `k` of `plan` (constructed at μ_l = `l`) from the
+    /// velocity and acceleration plans at the kinematic scales `sc`.
+    fn analysed(
+        &self,
+        plan: &PositionPlan,
+        l: Scale,
+        sc: &KinScales,
+        k: usize,
+    ) -> Result<PositionForces, StudyError> {
+        let spec = self.force_spec("the force analysis")?;
+        let vel = self.velocity(sc, k)?;
+        let position = plan.positions[k].label.clone();
+        let vp = match vel.as_ref() {
+            Velocity::Built { plan: vp, .. } => vp,
+            Velocity::Refused(why) => {
+                return Err(KinError::ForcePosition {
                     position,
-                    kind: PlanKind::Acceleration,
-                    why: e.to_string(),
-                }),
-                other => other,
-            })?;
-            let w1 = self.w1()?;
-            let f = crate::forces::analyse(spec, &plan, k, sc.l, vp, &ap.0, w1, &self.ctx()?)?;
+                    kind: PlanKind::Velocity,
+                    why: why.clone(),
+                }
+                .into())
+            }
+        };
+        // The acceleration plan of a force position is the force analysis's, not one of
+        // `kinematics.acceleration_positions`: its failure names `forces.positions`.
+        let ap = self.acceleration(sc, k).map_err(|e| match e {
+            StudyError::Kinematics(e) => StudyError::from(KinError::ForcePosition {
+                position,
+                kind: PlanKind::Acceleration,
+                why: e.to_string(),
+            }),
+            other => other,
+        })?;
+        let w1 = self.w1()?;
+        Ok(crate::forces::analyse(
+            spec,
+            plan,
+            k,
+            l,
+            vp,
+            &ap.0,
+            w1,
+            &self.ctx()?,
+        )?)
+    }
+
+    /// The force analysis of position `k`: its groups and driving link drawn on the plan of
+    /// positions at [`Session::force_scale_l`], from the velocity and acceleration plans at
+    /// the kinematic scales `sc`.
+    pub fn forces(&self, sc: &KinScales, k: usize) -> Cached<PositionForces> {
+        let l = self.force_scale_l()?;
+        self.caches.get::<Polygons>((l, sc.l, sc.v, sc.a, k), || {
+            let plan = self.positions(l)?;
+            let f = self.analysed(&plan, l, sc, k)?;
             self.logged("force polygons", &plan.positions[k].label, f.scale_f);
             Ok(Arc::new(f))
         })
@@ -94,5 +170,62 @@ impl<'s> Session<'s> {
         rep.notes.extend(crate::forces::seed_notes(seed, &rows));
         rep.rows.extend(rows);
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The extents of the drawings at μ_l of every analysed position at μ_l = `mu`.
+    fn sizes_at(s: &Session<'_>, mu: Scale) -> Vec<DVec2> {
+        let sc = s.kin_scales().expect("scales");
+        let m = s.mechanism("test").expect("mechanism");
+        let plan = plan_positions(m, &s.plan_request(), mu, Drafting::EXACT).expect("plan");
+        s.force_positions()
+            .expect("positions")
+            .into_iter()
+            .flat_map(|k| {
+                let f = s.analysed(&plan, mu, &sc, k).expect("forces");
+                drawn_at_l(&f)
+                    .filter_map(|g| g.bounds().map(|(lo, hi)| hi - lo))
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    }
+
+    /// A free μ_l of the force sheets is the finest round one at which every group and the
+    /// driving link of every analysed position fit their room (one step finer one would not):
+    /// the v-engine's groups at 0,0005 m/mm, twice the plan of positions' 0,001; the drawings
+    /// and the arms measured on them are at that μ_l. The shaper's μ_l, fixed by the scene,
+    /// stands.
+    #[test]
+    fn a_free_force_scale_l_draws_the_groups_as_large_as_their_room_holds() {
+        super::super::with_scene("v-engine", |s| {
+            let l = s.force_scale_l().expect("μ_l");
+            assert_eq!(l.value(), 0.0005);
+            assert!(l.value() < s.scale_l().expect("plan's μ_l").value());
+            let sizes = sizes_at(s, l);
+            assert!(sizes.len() >= 6, "{sizes:?}");
+            assert!(sizes.iter().all(|x| x.cmple(GROUP_ROOM).all()), "{sizes:?}");
+            let finer = l.finer().expect("finer");
+            assert!(
+                sizes_at(s, finer)
+                    .iter()
+                    .any(|x| !x.cmple(GROUP_ROOM).all()),
+                "μ_l could be {}",
+                finer.value()
+            );
+            let sc = s.kin_scales().expect("scales");
+            for k in s.force_positions().expect("positions") {
+                let f = s.forces(&sc, k).expect("forces");
+                for g in drawn_at_l(&f) {
+                    assert_eq!(g.scale, l);
+                }
+            }
+        });
+        super::super::with_scene("shaper", |s| {
+            assert_eq!(s.force_scale_l().expect("μ_l").value(), 0.0025);
+        });
     }
 }

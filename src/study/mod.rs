@@ -214,3 +214,14 @@ impl<'s> Session<'s> {
         Ok(rep)
     }
 }
+
+/// Run `run` on a session over the scene `constructions/<name>.toml`, every length read
+/// exactly (the studies' tests).
+#[cfg(test)]
+fn with_scene(name: &str, run: impl Fn(&Session<'_>)) {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("constructions")
+        .join(format!("{name}.toml"));
+    let scene = crate::scene::load(&path).expect("scene");
+    run(&Session::new(&scene, Drafting::EXACT));
+}
