@@ -42,12 +42,11 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("six-bar/kinematics-2", 0.10, "the acceleration plan at the seed's μ_a, the hodograph and the diagrams beside the full analytic and error tables, which hold no view line"),
     ("four-bar/kinematics", 0.22, "one sheet: the plans at 80 mm and the tables; a larger μ would spill onto a second, thinner sheet"),
     ("tangent/kinematics", 0.18, "the plan of positions is 640 mm tall (the slider runs to ±746 mm near φ = 90°) and 25 mm wide; the plans at 80 mm"),
-    ("v-engine/kinematics", 0.17, "the plans at their μ_v, μ_a are fitted to the common field; a larger μ_l or μ_v would change the force sheets' groups and lever"),
     ("shaper/forces", 0.16, "the scene fixes μ_l and μ_F (the seed's): one position's kinetostatics (the textbook's sheet 2) — group 2–3 is 360 mm tall at μ_l, the lever's F_у stands 0,66 m out on the pitch circle's image, and the polygons and details beside them leave the bottom band free"),
     ("shaper/forces-2", 0.16, "as shaper/forces, at position 10"),
     ("v-engine/forces", 0.22, "the groups at the force sheets' own μ_l = 0,0005 (2:1), as large as their 300 mm room holds (group 4–5 272 × 237 mm, 2–3 284 × 183 mm: 0,0004 draws them 335 × 297 and 352 × 226 mm); the polygons at μ_F = 40 (the largest reaction 135 mm: 25 draws it 215 mm, and the position no longer fits one A1: the lever and the table go onto a second sheet); the groups are long links, thin on their field"),
     ("v-engine/forces-2", 0.22, "as v-engine/forces, at position 6 (group 4–5 191 × 281 mm at μ_l = 0,0005: 0,0004 draws it 234 × 349 mm)"),
-    ("v-engine/kinematics-2", 0.13, "two acceleration plans, the diagrams and the tables (which hold no view line)"),
+    ("v-engine/kinematics-2", 0.18, "the second of two sheets: the two acceleration plans at μ_a = 5, as large as their 250 mm room holds (196 × 231 mm: 4 draws them 245 × 288 mm), the diagrams at the chart's textbook size (2π on 240 mm, ordinates about 35 mm) and the tables and texts (the analytic table 600 × 110 mm, the errors 130 × 170 mm), which hold no view line; measured: the chart at μ_S = 0,002 and 2π on 360 mm inks 24 % but pushes the tables onto a third sheet"),
 ];
 
 fn root() -> PathBuf {

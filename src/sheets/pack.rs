@@ -4,8 +4,9 @@
 //! nowhere there starts a further sheet. Items keep the order they are given in, so a sheet
 //! reads like the textbook's: the plan of positions first, then the plans, diagrams, tables.
 //! The items of a series (the velocity plans 1 … 12 with 8′ in its place) go in rows: each
-//! to the right of the one before, on its row, or at the start of a new row under it — never
-//! back into a gap left of an earlier one, so they read in their order.
+//! to the right of the one before, on its row (level with it, or lower — not below its middle —
+//! where a drawing placed before the series reaches into the row), or at the start of a new row
+//! under it — never back into a gap left of an earlier one, so they read in their order.
 
 use crate::construct::fit::overflow;
 use crate::geom::DVec2;
@@ -41,11 +42,19 @@ struct Row {
 }
 
 impl Row {
-    /// A corner where the next item of the row's series may go: to the right of the last
-    /// one on its row, or under the whole row.
+    /// Whether a corner continues the row: to the right of its last item, its top level with
+    /// the last item's or lower, but not below the last item's middle, so that the two still
+    /// read side by side (lower where a drawing placed before reaches into the row).
+    fn continues(&self, c: DVec2) -> bool {
+        c.x >= self.last.max.x - EPS_MM
+            && c.y >= self.last.min.y - EPS_MM
+            && c.y <= (self.last.min.y + self.last.max.y) * 0.5 + EPS_MM
+    }
+
+    /// A corner where the next item of the row's series may go: on its row
+    /// ([`Row::continues`]), or under the whole row.
     fn allows(&self, c: DVec2) -> bool {
-        let same_row = (c.y - self.last.min.y).abs() <= EPS_MM && c.x >= self.last.max.x - EPS_MM;
-        same_row || c.y >= self.bottom + GAP_MM - EPS_MM
+        self.continues(c) || c.y >= self.bottom + GAP_MM - EPS_MM
     }
 }
 
@@ -75,9 +84,10 @@ impl Page {
                 .all(|t| !r.inflate(GAP_MM - EPS_MM).intersects(t))
     }
 
-    /// The highest, then leftmost, free place of `size` after the last item (and in the rows
-    /// of its `series`, if any); candidates are the area's corner and the corners just past
-    /// each taken rectangle.
+    /// The highest, then leftmost, free place of `size` after the last item; an item of a
+    /// `series` with a row on the page goes on that row as far left as it can (nearest the
+    /// last one, then as high), else starts a new row under it at the highest, then leftmost,
+    /// place. Candidates are the area's corner and the corners just past each taken rectangle.
     fn place(&mut self, size: DVec2, series: Option<u8>) -> Option<Rect> {
         let mut xs = vec![self.area.min.x];
         let mut ys = vec![self.area.min.y];
@@ -93,19 +103,31 @@ impl Page {
                 .is_none_or(|l| c.y > l.y + EPS_MM || (c.y >= l.y - EPS_MM && c.x > l.x + EPS_MM))
                 && row.is_none_or(|r| r.allows(*c))
         };
-        let grid = ys
+        let mut grid: Vec<DVec2> = ys
             .iter()
-            .flat_map(|&y| xs.iter().map(move |&x| DVec2::new(x, y)));
+            .flat_map(|&y| xs.iter().map(move |&x| DVec2::new(x, y)))
+            .filter(after)
+            .collect();
+        if let Some(r) = row {
+            // On the row first, nearest the last item; the new row's places keep their order
+            // (the sort is stable).
+            grid.sort_by(|a, b| match (r.continues(*a), r.continues(*b)) {
+                (true, true) => a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)),
+                (true, false) => std::cmp::Ordering::Less,
+                (false, true) => std::cmp::Ordering::Greater,
+                (false, false) => std::cmp::Ordering::Equal,
+            });
+        }
         let start = self.last.is_none().then_some(self.first);
         let r = start
             .into_iter()
-            .chain(grid.filter(after))
+            .chain(grid)
             .map(|c| Rect::new(c, c + size))
             .find(|r| self.free(r))?;
         self.taken.push(r);
         self.last = Some(r.min);
         self.row = series.map(|series| match row {
-            Some(w) if (r.min.y - w.last.min.y).abs() <= EPS_MM => Row {
+            Some(w) if w.continues(r.min) => Row {
                 series,
                 last: r,
                 bottom: w.bottom.max(r.max.y),
@@ -239,6 +261,31 @@ mod tests {
         assert!(free[1..]
             .windows(2)
             .any(|w| w[1].1.min.y > w[0].1.min.y && w[1].1.min.y < w[0].1.max.y));
+    }
+
+    /// The v-engine's first sheet: a structural scheme and a plan of positions, then twelve
+    /// plans 130 × 150 mm. The third plan starts a row under the scheme; the fourth goes on
+    /// right beside it, under the plan of positions that reaches into the row, not across
+    /// it at the far right; all twelve fit the sheet.
+    #[test]
+    fn a_row_goes_on_under_a_drawing_that_reaches_into_it() {
+        let s = a1();
+        let mut sizes = vec![DVec2::new(215.0, 70.0), DVec2::new(305.0, 210.0)];
+        sizes.extend([DVec2::new(130.0, 150.0); 12]);
+        let series: Vec<Option<u8>> = (0..sizes.len()).map(|k| (k >= 2).then_some(0)).collect();
+        let placed = pack(&s, &sizes, &series).expect("fits");
+        assert!(placed.iter().all(|p| p.0 == 0), "{placed:?}");
+        let (plan, third, fourth) = (placed[1].1, placed[4].1, placed[5].1);
+        assert!(third.max.x < plan.min.x, "{third:?} beside {plan:?}");
+        assert!(
+            (fourth.min.x - (third.max.x + GAP_MM)).abs() < 1e-9,
+            "{fourth:?}"
+        );
+        assert!(
+            fourth.min.y >= plan.max.y + GAP_MM - 1e-9,
+            "{fourth:?} under {plan:?}"
+        );
+        assert!(fourth.min.y > third.min.y && fourth.min.y < third.max.y);
     }
 
     #[test]

@@ -27,6 +27,7 @@ mod scales;
 
 pub use error::StudyError;
 pub use kinematics::{ChartScales, KinScales, Kinematics};
+pub use scales::KinSheets;
 
 use crate::check::Row;
 use crate::check::{Report, Table};

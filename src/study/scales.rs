@@ -4,10 +4,13 @@
 //! pin's vector at least 80 mm — raised along the round series until its drawing, predicted
 //! from the analytic twin, fits its field (the plan of positions `POSITIONS_ROOM`, which an
 //! empty A1 sheet also holds; every velocity or acceleration plan `VECTOR_PLAN_ROOM`, and the
-//! plans of a kind together `PLANS_AREA_MM2`).
+//! plans of a kind together `PLANS_AREA_MM2`). A study whose drawings cannot share one sheet
+//! with its tables takes two ([`KinSheets`]); its free μ_v and μ_a are then made finer while
+//! the plans fit the room their sheet gives them (`TWO_SHEET_PLAN_ROOM`, the first sheet's
+//! field beside the plan of positions for the velocity plans).
 
 use super::*;
-use crate::construct::fit::{fit_scale, overflow, Extent};
+use crate::construct::fit::{finest_fitting, fit_scale, overflow, Extent, LABEL_MARGIN};
 use crate::geom::DVec2;
 use crate::kinematics::{self, drawn_points};
 use crate::linkage::{guide_ends, GUIDE_MARGIN_MM};
@@ -123,6 +126,66 @@ fn plans_fit(poses: &PlanPoses, ks: &[usize], w1: f64, kind: PlanKind, start: Sc
     .unwrap_or(start)
 }
 
+/// The drawing field of an A1 sheet, mm²: 816 × 584 mm inside the frame, the title block
+/// (185 × 55 mm) left out.
+const A1_FIELD_MM2: f64 = 816.0 * 584.0 - 185.0 * 55.0;
+
+/// The share of an A1 field the kinematic drawings (the plan of positions, the velocity and
+/// acceleration plans, the diagrams) may take on one sheet: the analytic tables, the texts,
+/// the captions and the gaps between the blocks take the rest.
+const ONE_SHEET_SHARE: f64 = 0.5;
+
+/// The share of a field the blocks of a sheet take once laid out: the gaps between them and
+/// the ragged ends of their rows take the rest.
+const LAID_OUT_SHARE: f64 = 0.75;
+
+/// The field of a velocity or acceleration plan on a study of two sheets, mm: a sheet shared
+/// with one other drawing (the plan of positions; the diagrams) holds plans up to a little
+/// over the diagrams' own height, three across its width.
+const TWO_SHEET_PLAN_ROOM: DVec2 = DVec2::new(250.0, 250.0);
+
+/// How many A1 sheets the kinematic study's drawings take, decided with its scales: the
+/// drawings at the textbook's μ predicted (the plan of positions, the typical velocity and
+/// acceleration plans) and measured (the diagrams), against [`ONE_SHEET_SHARE`] of the field.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KinSheets {
+    /// Everything on one sheet: the plans keep the textbook's μ, within `VECTOR_PLAN_ROOM`
+    /// and `PLANS_AREA_MM2`.
+    One,
+    /// The textbook's sheet 1 (the plan of positions and the velocity plans) and a second (the
+    /// acceleration plans, the diagrams, the tables): a free μ_v or μ_a is made finer while the
+    /// plans fit their sheet's room.
+    Two,
+}
+
+/// The room of the plans of `kind` on a study of [`KinSheets::Two`]: each plan's field and the
+/// area all of them take together, mm². The velocity plans share the first sheet's laid-out
+/// field with the plan of positions (`positions_mm2`); the acceleration plans keep a third
+/// of the second's (`PLANS_AREA_MM2`) beside the diagrams and the tables.
+fn two_sheet_room(kind: PlanKind, positions_mm2: f64) -> (DVec2, f64) {
+    let area = match kind {
+        PlanKind::Velocity => LAID_OUT_SHARE * A1_FIELD_MM2 - positions_mm2,
+        PlanKind::Acceleration => PLANS_AREA_MM2,
+    };
+    (TWO_SHEET_PLAN_ROOM, area)
+}
+
+/// `start` made finer along the round series while the largest of the plans `ks` fits `room`
+/// and all of them `area` mm².
+fn plans_finer(
+    poses: &PlanPoses,
+    ks: &[usize],
+    w1: f64,
+    kind: PlanKind,
+    start: Scale,
+    (room, area): (DVec2, f64),
+) -> Scale {
+    let largest = largest_plan(poses, ks, w1, kind);
+    let fits =
+        |&mu: &Scale| largest(mu).cmple(room).all() && plans_area(poses, ks, w1, kind, mu) <= area;
+    finest_fitting(start, start, Some, fits)
+}
+
 /// `start` raised along the round series until `size(μ)` fits `room`.
 fn raised_to_fit(start: Scale, room: DVec2, size: impl Fn(Scale) -> DVec2) -> Scale {
     fit_scale(start, |mu| overflow(size(mu), room)).unwrap_or(start)
@@ -133,6 +196,13 @@ struct ScaleL;
 impl Cache for ScaleL {
     type Key = ();
     type Value = Result<Scale, StudyError>;
+}
+
+/// How many sheets the kinematic study takes.
+struct Sheets;
+impl Cache for Sheets {
+    type Key = ();
+    type Value = Result<KinSheets, StudyError>;
 }
 
 /// Each plan's μ, by (kind, position).
@@ -169,41 +239,125 @@ impl<'s> Session<'s> {
     /// The kinematic study's scales, decided once: μ_l ([`Session::scale_l`]); μ_v and μ_a the
     /// scene's, else the crank pin's vector drawn about 80 mm and raised until the largest
     /// typical plan fits `VECTOR_PLAN_ROOM` (a plan far larger takes its own,
-    /// [`Session::plan_scale`]); the displacement chart's as the scene gives them (the
-    /// rest chosen for the chart by the study).
+    /// [`Session::plan_scale`]) — and, on a study of two sheets ([`Session::kin_sheets`]), made
+    /// finer while the plans fit their sheet's room; the displacement chart's as the scene
+    /// gives them (the rest chosen for the chart by the study).
     pub fn kin_scales(&self) -> Result<KinScales, StudyError> {
         self.caches.get::<Scales>((), || {
-            let m = self.mechanism("the kinematic analysis")?;
             let spec = self.spec();
-            let (mut v, mut a) = kinematics::plan_scales(&m.crank, spec)?;
-            let (poses, w1) = (self.poses()?, self.w1()?);
-            if spec.scale_v.is_none() {
-                let all: Vec<usize> = (0..poses.positions.len()).collect();
-                let ks = typical_plans(&poses, &all, w1, PlanKind::Velocity, v);
-                v = plans_fit(&poses, &ks, w1, PlanKind::Velocity, v);
-            }
-            if spec.scale_a.is_none() {
-                let all = self.acceleration_positions()?;
-                let ks = typical_plans(&poses, &all, w1, PlanKind::Acceleration, a);
-                a = plans_fit(&poses, &ks, w1, PlanKind::Acceleration, a);
+            let (mut v, mut a) = self.textbook_plan_scales()?;
+            if self.kin_sheets()? == KinSheets::Two {
+                let (poses, w1) = (self.poses()?, self.w1()?);
+                let positions = positions_extent(&poses).labelled_size_at(self.scale_l()?);
+                let positions = positions.x * positions.y;
+                if spec.scale_v.is_none() {
+                    let kind = PlanKind::Velocity;
+                    let all: Vec<usize> = (0..poses.positions.len()).collect();
+                    let ks = typical_plans(&poses, &all, w1, kind, v);
+                    v = plans_finer(&poses, &ks, w1, kind, v, two_sheet_room(kind, positions));
+                }
+                if spec.scale_a.is_none() {
+                    let kind = PlanKind::Acceleration;
+                    let all = self.acceleration_positions()?;
+                    let ks = typical_plans(&poses, &all, w1, kind, a);
+                    a = plans_finer(&poses, &ks, w1, kind, a, two_sheet_room(kind, positions));
+                }
             }
             Ok(KinScales {
                 l: self.scale_l()?,
                 v,
                 a,
-                chart: ChartScales {
-                    s: spec.scale_s,
-                    phi: spec.scale_phi,
-                    h1: spec.pole_h1,
-                    h2: spec.pole_h2,
-                },
+                chart: self.chart_scales(),
             })
         })
     }
 
+    /// The displacement chart's scales as the scene gives them.
+    fn chart_scales(&self) -> ChartScales {
+        let spec = self.spec();
+        ChartScales {
+            s: spec.scale_s,
+            phi: spec.scale_phi,
+            h1: spec.pole_h1,
+            h2: spec.pole_h2,
+        }
+    }
+
+    /// μ_v and μ_a the textbook's way: the scene's, else the crank pin's vector drawn about
+    /// 80 mm, raised until the largest typical plan fits `VECTOR_PLAN_ROOM` and the typical
+    /// plans of a kind together `PLANS_AREA_MM2`.
+    fn textbook_plan_scales(&self) -> Result<(Scale, Scale), StudyError> {
+        let m = self.mechanism("the kinematic analysis")?;
+        let spec = self.spec();
+        let (mut v, mut a) = kinematics::plan_scales(&m.crank, spec)?;
+        let (poses, w1) = (self.poses()?, self.w1()?);
+        if spec.scale_v.is_none() {
+            let all: Vec<usize> = (0..poses.positions.len()).collect();
+            let ks = typical_plans(&poses, &all, w1, PlanKind::Velocity, v);
+            v = plans_fit(&poses, &ks, w1, PlanKind::Velocity, v);
+        }
+        if spec.scale_a.is_none() {
+            let all = self.acceleration_positions()?;
+            let ks = typical_plans(&poses, &all, w1, PlanKind::Acceleration, a);
+            a = plans_fit(&poses, &ks, w1, PlanKind::Acceleration, a);
+        }
+        Ok((v, a))
+    }
+
+    /// How many sheets the kinematic study's drawings take, decided once ([`KinSheets`]): two
+    /// when the plan of positions, the typical plans at the textbook's μ_v and μ_a (their
+    /// labelled sizes predicted from the analytic twin) and the diagrams (constructed, as the
+    /// sheet draws them) take more than [`ONE_SHEET_SHARE`] of an A1 field.
+    pub fn kin_sheets(&self) -> Result<KinSheets, StudyError> {
+        self.caches.get::<Sheets>((), || {
+            let (v, a) = self.textbook_plan_scales()?;
+            let (poses, w1, l) = (self.poses()?, self.w1()?, self.scale_l()?);
+            let positions = positions_extent(&poses).labelled_size_at(l);
+            let all: Vec<usize> = (0..poses.positions.len()).collect();
+            let velocity = typical_plans(&poses, &all, w1, PlanKind::Velocity, v);
+            let acc = self.acceleration_positions()?;
+            let acceleration = typical_plans(&poses, &acc, w1, PlanKind::Acceleration, a);
+            // No diagrams when there is nothing to chart or they are refused (the sheet says
+            // why in a line).
+            let charted = super::kinematics::refusable(
+                self.diagrams(l, self.chart_scales()),
+                &mut Vec::new(),
+            )?;
+            let diagrams = charted
+                .and_then(|d| {
+                    let second = d.second_figure.translated(d.second_at).bounds()?;
+                    let (lo, hi) = d.first_figure.bounds()?;
+                    Some((lo.min(second.0), hi.max(second.1)))
+                })
+                .map_or(0.0, |(lo, hi)| {
+                    let s = hi - lo + DVec2::splat(LABEL_MARGIN);
+                    s.x * s.y
+                });
+            let drawn = positions.x * positions.y
+                + plans_area(&poses, &velocity, w1, PlanKind::Velocity, v)
+                + plans_area(&poses, &acceleration, w1, PlanKind::Acceleration, a)
+                + diagrams;
+            Ok(if drawn > ONE_SHEET_SHARE * A1_FIELD_MM2 {
+                KinSheets::Two
+            } else {
+                KinSheets::One
+            })
+        })
+    }
+
+    /// The field a single plan of `kind` has: `VECTOR_PLAN_ROOM`, or on two sheets
+    /// `TWO_SHEET_PLAN_ROOM`.
+    fn plan_room(&self) -> Result<DVec2, StudyError> {
+        Ok(match self.kin_sheets()? {
+            KinSheets::One => VECTOR_PLAN_ROOM,
+            KinSheets::Two => TWO_SHEET_PLAN_ROOM,
+        })
+    }
+
     /// The μ of the plan of `kind` at position `k`: the common one of [`Session::kin_scales`],
-    /// or, for a plan that does not fit `VECTOR_PLAN_ROOM` at it (one far larger than the
-    /// typical plan), its own, raised until it fits. A scale the scene gives is every plan's.
+    /// or, for a plan that does not fit its field at it (`VECTOR_PLAN_ROOM`, on two sheets
+    /// `TWO_SHEET_PLAN_ROOM`: one far larger than the typical plan), its own, raised until it
+    /// fits. A scale the scene gives is every plan's.
     pub fn plan_scale(&self, kind: PlanKind, k: usize) -> Result<Scale, StudyError> {
         self.caches.get::<PlanScales>((kind, k), || {
             let sc = self.kin_scales()?;
@@ -215,7 +369,66 @@ impl<'s> Session<'s> {
                 return Ok(common);
             }
             let size = largest_plan(&*self.poses()?, &[k], self.w1()?, kind);
-            Ok(raised_to_fit(common, VECTOR_PLAN_ROOM, size))
+            Ok(raised_to_fit(common, self.plan_room()?, size))
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Whether the typical plans of `kind` at `mu` fit the two-sheet room.
+    fn fits_two_sheets(s: &Session<'_>, kind: PlanKind, mu: Scale) -> bool {
+        let (poses, w1) = (s.poses().expect("poses"), s.w1().expect("ω₁"));
+        let all: Vec<usize> = match kind {
+            PlanKind::Velocity => (0..poses.positions.len()).collect(),
+            PlanKind::Acceleration => s.acceleration_positions().expect("positions"),
+        };
+        let ks = typical_plans(&poses, &all, w1, kind, mu);
+        let l = s.scale_l().expect("μ_l");
+        let positions = positions_extent(&poses).labelled_size_at(l);
+        let (room, area) = two_sheet_room(kind, positions.x * positions.y);
+        largest_plan(&poses, &ks, w1, kind)(mu).cmple(room).all()
+            && plans_area(&poses, &ks, w1, kind, mu) <= area
+    }
+
+    /// The linkage scenes whose kinematic drawings share one sheet with their tables keep the
+    /// textbook's μ_v and μ_a; the v-engine's (a plan of positions 314 × 201 mm and the
+    /// diagrams beside the twelve plans) take two sheets, and its free μ_v and μ_a are then
+    /// the finest round ones whose plans fit the room their sheet gives them — the velocity
+    /// plans at 0,05 (the pin's velocity 126 mm), the acceleration plans at 5 — one step finer
+    /// would not.
+    #[test]
+    fn a_study_of_two_sheets_draws_its_free_plans_as_large_as_their_sheet_holds() {
+        for name in ["slider-crank", "four-bar", "tangent"] {
+            super::super::with_scene(name, |s| {
+                assert_eq!(s.kin_sheets().expect("sheets"), KinSheets::One, "{name}");
+                let (v, a) = s.textbook_plan_scales().expect("textbook");
+                let sc = s.kin_scales().expect("scales");
+                assert_eq!((sc.v, sc.a), (v, a), "{name}");
+            });
+        }
+        super::super::with_scene("v-engine", |s| {
+            assert_eq!(s.kin_sheets().expect("sheets"), KinSheets::Two);
+            let (v, a) = s.textbook_plan_scales().expect("textbook");
+            let sc = s.kin_scales().expect("scales");
+            assert_eq!((v.value(), a.value()), (0.1, 10.0));
+            assert_eq!((sc.v.value(), sc.a.value()), (0.05, 5.0));
+            for (kind, mu) in [(PlanKind::Velocity, sc.v), (PlanKind::Acceleration, sc.a)] {
+                assert!(fits_two_sheets(s, kind, mu), "{kind:?}");
+                let finer = mu.finer().expect("finer");
+                assert!(
+                    !fits_two_sheets(s, kind, finer),
+                    "{kind:?} at {}",
+                    finer.value()
+                );
+            }
+        });
+        // A μ the scene fixes stands on two sheets too.
+        super::super::with_scene("six-bar", |s| {
+            let sc = s.kin_scales().expect("scales");
+            assert_eq!((sc.v.value(), sc.a.value()), (0.026, 0.156));
+        });
     }
 }
