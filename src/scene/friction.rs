@@ -174,6 +174,7 @@ pub(crate) fn friction(check: &mut Checker, raw: Option<RawFriction>) -> Vec<Fri
             name,
             kind,
             scale_f,
+            scale_l: None,
         });
     }
     out

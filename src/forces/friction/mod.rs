@@ -247,6 +247,9 @@ pub struct FrictionCase {
     pub kind: CaseKind,
     /// μ_F of its force drawings; `None`: chosen the textbook way.
     pub scale_f: Option<Scale>,
+    /// μ_l of its schemes drawn to scale (the screw's unrolled thread, the journal, the
+    /// rollers); `None`: chosen the textbook way (the session chooses it from the sheet's room).
+    pub scale_l: Option<Scale>,
 }
 
 /// Why a friction case cannot be constructed.
@@ -428,17 +431,29 @@ impl FrictionCase {
         Ok(Recorder::in_context(&self.name, mu, ctx))
     }
 
-    /// The recorder of one of the case's schemes: at the round μ_l that draws `largest` (m)
-    /// about `preferred_mm`.
+    /// The recorder of one of the case's schemes drawn to scale: at the case's μ_l, or the
+    /// round one that draws `largest` (m) about `preferred_mm`.
     pub(crate) fn scheme_recorder(
         &self,
         largest: f64,
         preferred_mm: f64,
         ctx: &Context,
     ) -> Result<Recorder, FrictionError> {
+        self.recorder_at(self.scale_l, largest, preferred_mm, ctx)
+    }
+
+    /// The recorder at μ_l = `given`, or the round one that draws `largest` (m) about
+    /// `preferred_mm`.
+    fn recorder_at(
+        &self,
+        given: Option<Scale>,
+        largest: f64,
+        preferred_mm: f64,
+        ctx: &Context,
+    ) -> Result<Recorder, FrictionError> {
         let mu = choose_scale(
             &self.name,
-            None,
+            given,
             largest,
             preferred_mm,
             crate::scale::Quantity::Length,
@@ -449,6 +464,6 @@ impl FrictionCase {
     /// The recorder of a schematic drawing, at the nominal μ of 1 mm per mm (its lengths mean
     /// nothing, only its angles and ratios are read).
     pub(crate) fn schematic_recorder(&self, ctx: &Context) -> Result<Recorder, FrictionError> {
-        self.scheme_recorder(1.0, 1000.0, ctx)
+        self.recorder_at(None, 1.0, 1000.0, ctx)
     }
 }

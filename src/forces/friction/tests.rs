@@ -15,6 +15,7 @@ fn case(name: &str, kind: CaseKind) -> FrictionCase {
         name: name.into(),
         kind,
         scale_f: None,
+        scale_l: None,
     }
 }
 
