@@ -346,3 +346,57 @@ fn a_stacked_diagrams_axis_title_has_a_row_of_its_own() {
     }
     assert!(titles >= 8, "{titles} axis titles");
 }
+
+/// Every kinematic sheet that draws velocity or acceleration plans at the common μ states that
+/// μ on the sheet itself (in a caption or in its text): on two sheets the text goes onto the
+/// second, so the first velocity plan's caption states μ_v and each acceleration plan's μ_a
+/// (the shaper's, the six-bar's and the V engine's first sheets stated neither).
+#[test]
+fn every_sheet_states_the_scales_of_the_plans_it_draws() {
+    let scenes = [
+        "shaper",
+        "six-bar",
+        "v-engine",
+        "four-bar",
+        "slider-crank",
+        "tangent",
+    ];
+    let mut looked = 0;
+    for scene in scenes {
+        let path =
+            PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("constructions/{scene}.toml"));
+        let s = tmm::load(&path).unwrap_or_else(|e| panic!("{scene}: {e}"));
+        let sc = Session::new(&s, Drafting::EXACT)
+            .kin_scales()
+            .expect("scales");
+        for p in sheets_of(scene) {
+            let words: Vec<&str> = p
+                .views
+                .iter()
+                .filter_map(|v| v.caption.as_deref())
+                .chain(
+                    p.texts
+                        .iter()
+                        .flat_map(|t| t.lines.iter().map(String::as_str)),
+                )
+                .collect();
+            for (start, mu) in [("Пол. ", sc.v), ("План ускорений", sc.a)] {
+                let at_common = p.views.iter().any(|v| {
+                    v.figure.scale == mu
+                        && v.caption.as_deref().is_some_and(|c| c.starts_with(start))
+                });
+                if !at_common {
+                    continue;
+                }
+                looked += 1;
+                let caption = mu.caption(Lang::Ru);
+                assert!(
+                    words.iter().any(|w| w.contains(&caption)),
+                    "{scene}/{}: {start}… at {caption}, not stated",
+                    p.name
+                );
+            }
+        }
+    }
+    assert!(looked >= 12, "{looked} sheets with plans");
+}

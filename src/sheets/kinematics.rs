@@ -106,33 +106,46 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
             Quantity::Acceleration.unit(lang)
         ));
     }
-    let mut velocity: Run = Vec::new();
-    for (pos, vp) in a.plan.positions.iter().zip(a.velocity_plans()) {
-        let c = format!("{} {}", Text::Pos.get(lang), pos.label);
-        velocity.push((
-            match vp {
-                Some(vp) => plan_view(vp, c, Key::KinematicsScaleV, sc.v, lang),
-                None => Block::Text {
-                    lines: vec![
-                        c,
-                        Text::NoPlan.get(lang).into(),
-                        Text::TogglePosition.get(lang).into(),
-                    ],
-                    size_mm: 3.5,
+    // Each plan's view, its caption stating its μ when `stated` (a plan at its own μ always
+    // states it): on two sheets the plans' scales are stated on the sheet that draws them —
+    // μ_v under the first velocity plan, μ_a under each acceleration plan — as the sheet's
+    // text, which states them on one sheet, goes onto the second.
+    let velocity_run = |stated: bool| -> Run {
+        let mut run = Vec::new();
+        for (pos, vp) in a.plan.positions.iter().zip(a.velocity_plans()) {
+            let c = format!("{} {}", Text::Pos.get(lang), pos.label);
+            let first = run.is_empty();
+            run.push((
+                match vp {
+                    Some(vp) => {
+                        plan_view(vp, c, (Key::KinematicsScaleV, sc.v), stated && first, lang)
+                    }
+                    None => Block::Text {
+                        lines: vec![
+                            c,
+                            Text::NoPlan.get(lang).into(),
+                            Text::TogglePosition.get(lang).into(),
+                        ],
+                        size_mm: 3.5,
+                    },
                 },
-            },
-            VELOCITY,
-        ));
-    }
-    let mut acceleration: Run = Vec::new();
-    for (k, ap) in &a.acceleration {
-        let label = &a.plan.positions[*k].label;
-        let c = format!("{} {label}", Text::AccelerationPlanAt.get(lang));
-        acceleration.push((
-            plan_view(&ap.0, c, Key::KinematicsScaleA, sc.a, lang),
-            ACCELERATION,
-        ));
-    }
+                VELOCITY,
+            ));
+        }
+        run
+    };
+    let acceleration_run = |stated: bool| -> Run {
+        a.acceleration
+            .iter()
+            .map(|(k, ap)| {
+                let label = &a.plan.positions[*k].label;
+                let c = format!("{} {label}", Text::AccelerationPlanAt.get(lang));
+                let scale = (Key::KinematicsScaleA, sc.a);
+                (plan_view(&ap.0, c, scale, stated, lang), ACCELERATION)
+            })
+            .collect()
+    };
+    let (velocity, acceleration) = (velocity_run(false), acceleration_run(false));
     let mut rest: Run = Vec::new();
     if let Some(r) = &a.rocker {
         let c = format!("ω_{{{l}}}(φ), dω_{{{l}}}/dφ", l = r.link);
@@ -235,6 +248,7 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     // and the two are then filled more evenly. Never a table alone on a sheet: the second
     // always holds the diagrams or the acceleration plans.
     let head: Run = scheme.into_iter().chain(plan).collect();
+    let (velocity, acceleration) = (velocity_run(true), acceleration_run(true));
     let groups = [head, velocity, acceleration, analysis, diagrams, rest];
     let area = |run: &[(Block, Option<u8>)]| -> f64 {
         run.iter()
@@ -275,16 +289,23 @@ fn renamed(plates: Vec<Plate>) -> Vec<Plate> {
         .collect()
 }
 
-/// A velocity or acceleration plan's view: at the common μ (`common`, the scene key `key`),
-/// or at its own, stated in its caption.
-fn plan_view(plan: &KinPlan, caption: String, key: Key, common: Scale, lang: Lang) -> Block {
+/// A velocity or acceleration plan's view: at the common μ (`common`, set by the scene key
+/// `key`), its caption stating it when `stated`; or at its own, stated in its caption.
+fn plan_view(
+    plan: &KinPlan,
+    caption: String,
+    (key, common): (Key, Scale),
+    stated: bool,
+    lang: Lang,
+) -> Block {
     let own = plan.figure.scale;
-    if own == common {
-        Block::view(plan.figure.clone(), caption, keyed(key, common)).with_label_room()
+    let scale = (own == common).then(|| keyed(key, common)).flatten();
+    let caption = if own == common && !stated {
+        caption
     } else {
-        let caption = format!("{caption}, {}", own.caption(lang));
-        Block::view(plan.figure.clone(), caption, None).with_label_room()
-    }
+        format!("{caption}, {}", own.caption(lang))
+    };
+    Block::view(plan.figure.clone(), caption, scale).with_label_room()
 }
 
 /// A quantity of the error table in the textbook's notation (`ω_{1}`, `V_{B3B1}`), from the
