@@ -858,3 +858,34 @@ fn every_arm_ends_on_its_forces_line_of_action() {
     }
     assert!(arms >= 8, "{arms} arms");
 }
+
+/// On every force sheet each view's caption stands under everything its figure draws — the
+/// ground of the crank's pivot, drawn below the pivot, stood on the driving link's caption
+/// ("Ведущее звено 1, μ_l = …" struck by its hatching).
+#[test]
+fn every_caption_of_a_force_sheet_stands_under_its_drawing() {
+    let mut seen = 0;
+    for name in ["constructions/shaper.toml", "constructions/v-engine.toml"] {
+        let scene = tmm::scene::load(&root().join(name)).expect("scene");
+        let session = Session::new(&scene, Drafting::EXACT);
+        let kind = tmm::scene::PlateKind::parse("forces").expect("a plate kind");
+        let plates = tmm::sheets::build(&session, kind, tmm::scale::Lang::Ru).expect("sheets");
+        for p in &plates {
+            for (v, l) in p.views.iter().zip(tmm::plate::layout(p).views) {
+                let (Some(drawn), Some(caption)) = (l.drawn, l.caption) else {
+                    continue;
+                };
+                seen += 1;
+                assert!(
+                    caption.min.y >= drawn.max.y,
+                    "{name} {}: “{}” at {:.1} mm, its drawing down to {:.1} mm",
+                    p.name,
+                    v.caption.as_deref().unwrap_or_default(),
+                    caption.min.y,
+                    drawn.max.y
+                );
+            }
+        }
+    }
+    assert!(seen >= 40, "{seen} captions");
+}

@@ -845,7 +845,8 @@ mod tests {
     /// parts.
     #[test]
     fn each_relative_acceleration_splits_by_how_its_point_moves() {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions/shaper.toml");
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions/shaper.toml");
         let scene = crate::scene::load(&path).expect("shaper");
         let m = scene.mechanism.as_ref().expect("mechanism");
         let s = Structure::analyse(m);

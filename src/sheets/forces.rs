@@ -55,10 +55,11 @@ fn degrees(a: f64, lang: Lang) -> String {
     }
 }
 
-/// A view captioned "`what`, μ = …" at `scale`, set by the scene key `key`.
+/// A view captioned "`what`, μ = …" at `scale`, set by the scene key `key`; the caption
+/// under what the figure's symbols draw below its points (the ground of the crank's pivot).
 fn view(figure: &Figure, what: String, (key, scale): (Key, Scale), lang: Lang) -> Block {
     let caption = format!("{what}, {}", scale.caption(lang));
-    Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))
+    Block::view(figure.clone(), caption, Some(ScaleKey { key, scale })).clear_of_symbols()
 }
 
 /// The letters of detail views (ГОСТ 2.316: capitals, without Й, О, Х, Ъ, Ы, Ь).
