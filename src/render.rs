@@ -161,7 +161,7 @@ fn refit(s: &Scene, e: BuildError, drafting: Drafting, lang: Lang) -> BuildError
 }
 
 /// Every file of `scenes` under `out`, built in memory: per scene its sheets' SVG and PNG
-/// (`<out>/<scene>/<sheet>.<ext>`) and its PDF, in that order.
+/// (`<out>/<scene>/<sheet>.<ext>`), then each scene's PDF, then each scene's note.
 ///
 /// # Errors
 /// The first plate that cannot be built, a sheet too large for a PNG at `options.dpi`, a PNG
@@ -178,15 +178,17 @@ pub fn files(
         dpi,
     } = *options;
     let mut svgs: Vec<(PathBuf, String)> = Vec::new();
-    let mut pdfs: Vec<(PathBuf, Vec<u8>)> = Vec::new();
+    let mut sets: Vec<(PathBuf, std::ops::Range<usize>)> = Vec::new();
+    let mut notes: Vec<(&Scene, crate::note::Note)> = Vec::new();
     for s in scenes {
         let first = svgs.len();
         let session = Session::new(s, drafting);
         let all = plates_of(&session, lang)?;
-        let note = match formats.note {
-            true => Some(note_pdf(&session, lang, Some(all.clone()))?),
-            false => None,
-        };
+        if formats.note {
+            let note = crate::note::compose_with(&session, lang, all.clone())
+                .map_err(|error| note_failed(s, error))?;
+            notes.push((s, note));
+        }
         for (_, plate) in all {
             let base = out.join(&s.stem).join(&plate.name);
             if formats.png {
@@ -201,23 +203,44 @@ pub fn files(
         }
         if formats.pdf {
             let path = out.join(&s.stem).join(format!("{}.pdf", s.stem));
-            let pages: Vec<String> = svgs[first..].iter().map(|(_, svg)| svg.clone()).collect();
-            let pdf = plate::to_pdf(&pages).map_err(|error| RenderError::Pdf {
-                path: path.clone(),
-                error,
-            })?;
-            pdfs.push((path, pdf));
-        }
-        if let Some(note) = note {
-            pdfs.push((note_path(out, s), note));
+            sets.push((path, first..svgs.len()));
         }
     }
-    let pngs = if formats.png {
-        let texts: Vec<String> = svgs.iter().map(|(_, svg)| svg.clone()).collect();
-        plate::to_png_dpi_all(&texts, dpi as f32)
-    } else {
-        Vec::new()
+    // The PDF sets, the notes and the PNGs are made side by side: a set or a note takes one
+    // core, the rasteriser every core there is.
+    let texts: Vec<String> = match formats.png {
+        true => svgs.iter().map(|(_, svg)| svg.clone()).collect(),
+        false => Vec::new(),
     };
+    let set_pdfs = || -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
+        sets.iter()
+            .map(|(path, pages)| {
+                let pages: Vec<String> = svgs[pages.clone()]
+                    .iter()
+                    .map(|(_, svg)| svg.clone())
+                    .collect();
+                let pdf = plate::to_pdf(&pages).map_err(|error| RenderError::Pdf {
+                    path: path.clone(),
+                    error,
+                })?;
+                Ok((path.clone(), pdf))
+            })
+            .collect()
+    };
+    let note_pdfs = || -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
+        notes
+            .iter()
+            .map(|(s, note)| {
+                let pdf = crate::note::to_pdf(note).map_err(|error| note_failed(s, error))?;
+                Ok((note_path(out, s), pdf))
+            })
+            .collect()
+    };
+    let ((set_pdfs, note_pdfs), pngs) = rayon::join(
+        || rayon::join(set_pdfs, note_pdfs),
+        || plate::to_png_dpi_all(&texts, dpi as f32),
+    );
+    let (set_pdfs, note_pdfs) = (set_pdfs?, note_pdfs?);
     let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     let mut pngs = pngs.into_iter();
     for (base, svg) in svgs {
@@ -232,7 +255,8 @@ pub fn files(
             files.push((base.with_extension("svg"), svg.into_bytes()));
         }
     }
-    files.extend(pdfs);
+    files.extend(set_pdfs);
+    files.extend(note_pdfs);
     Ok(files)
 }
 
@@ -256,23 +280,19 @@ fn note_path(out: &Path, s: &Scene) -> PathBuf {
     out.join(&s.stem).join(format!("{}-note.pdf", s.stem))
 }
 
-/// The note of the scene of `session`, typeset; with its `sheets` when they are built
-/// already.
-fn note_pdf(
-    session: &Session<'_>,
-    lang: Lang,
-    sheets: Option<Vec<(PlateKind, Plate)>>,
-) -> Result<Vec<u8>, RenderError> {
-    let failed = |error| RenderError::Note {
-        scene: session.scene().path.clone(),
+/// The note of `s` that cannot be composed or typeset.
+fn note_failed(s: &Scene, error: crate::note::NoteError) -> RenderError {
+    RenderError::Note {
+        scene: s.path.clone(),
         error: Box::new(error),
-    };
-    let note = match sheets {
-        Some(all) => crate::note::compose_with(session, lang, all),
-        None => crate::note::compose(session, lang),
     }
-    .map_err(failed)?;
-    crate::note::to_pdf(&note).map_err(failed)
+}
+
+/// The note of `s` composed by its session and typeset.
+fn note_pdf(s: &Scene, lang: Lang, drafting: Drafting) -> Result<Vec<u8>, RenderError> {
+    let note = crate::note::compose(&Session::new(s, drafting), lang)
+        .map_err(|error| note_failed(s, error))?;
+    crate::note::to_pdf(&note).map_err(|error| note_failed(s, error))
 }
 
 /// The explanatory note of each of `scenes`, typeset (`<out>/<scene>/<scene>-note.pdf`),
@@ -288,12 +308,7 @@ pub fn note_files(
 ) -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
     scenes
         .iter()
-        .map(|s| {
-            Ok((
-                note_path(out, s),
-                note_pdf(&Session::new(s, drafting), lang, None)?,
-            ))
-        })
+        .map(|s| Ok((note_path(out, s), note_pdf(s, lang, drafting)?)))
         .collect()
 }
 
