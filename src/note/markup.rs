@@ -192,6 +192,35 @@ impl Markup {
     }
 }
 
+/// The note's Typst source with every subscript and superscript a label set (`#sub("и3")`,
+/// `#super("тр")`) in the textbook notation of `lang` (`F_{и3}` is `F_{i3}` in English), as
+/// every sheet's text is ([`crate::sheets::captions::symbols`]).
+pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
+    let mut out = String::with_capacity(source.len());
+    let mut rest = source;
+    loop {
+        let next = ["#sub(\"", "#super(\""]
+            .iter()
+            .filter_map(|open| rest.find(open).map(|i| (i, open.len())))
+            .min();
+        let Some((at, open)) = next else {
+            out.push_str(rest);
+            return out;
+        };
+        let body = at + open;
+        let Some(len) = rest[body..].find("\")") else {
+            out.push_str(rest);
+            return out;
+        };
+        out.push_str(&rest[..body]);
+        out.push_str(&crate::sheets::captions::symbols::script(
+            &rest[body..body + len],
+            lang,
+        ));
+        rest = &rest[body + len..];
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -199,6 +228,16 @@ mod tests {
     #[test]
     fn strings_escape_quotes_and_backslashes() {
         assert_eq!(string(r#"a "b" \c"#), r#""a \"b\" \\c""#);
+    }
+
+    #[test]
+    fn scripts_take_the_notation_of_the_language() {
+        let src = label("F_{и3} + M_{пс}^{тр} + R_{0-5}");
+        assert_eq!(
+            localise_scripts(&src, Lang::En),
+            r##"[#"F"#sub("i3")#" + M"#sub("r")#super("f")#" + R"#sub("0-5")]"##
+        );
+        assert_eq!(localise_scripts(&src, Lang::Ru), src);
     }
 
     #[test]

@@ -225,7 +225,7 @@ pub fn compose_with(
     front::conclusions(&mut w);
     front::references(&mut w);
     Ok(Note {
-        source: w.doc.finish(),
+        source: markup::localise_scripts(&w.doc.finish(), lang),
         files: w.files,
     })
 }

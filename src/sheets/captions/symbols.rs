@@ -25,6 +25,12 @@ const SUBSCRIPTS: &[(&str, &str, &str)] = &[
     ("у", "у", "b"),
     // приведённый: reduced to the crank, M_red, J_red.
     ("пр", "пр", "red"),
+    // приведённый, as the dynamics' data writes it: J_red.
+    ("ред", "ред", "red"),
+    // коробки скоростей: the gearbox's share of the reduced moment of inertia, J_gb.
+    ("кс", "кс", "gb"),
+    // звеньев: the links' kinetic energy, T_l.
+    ("зв", "зв", "l"),
     // средняя: the mean angular velocity, ω_m.
     ("ср", "ср", "m"),
     // маховика: the flywheel's moment of inertia, J_fw.
@@ -51,7 +57,7 @@ fn cyrillic(c: char) -> bool {
 
 /// A subscript or superscript's text in `lang`: its leading Russian word by [`SUBSCRIPTS`],
 /// the rest (a link number, a plane) kept.
-fn script(text: &str, lang: Lang) -> String {
+pub(crate) fn script(text: &str, lang: Lang) -> String {
     let head = text.find(|c: char| !cyrillic(c)).unwrap_or(text.len());
     let (word, rest) = text.split_at(head);
     match SUBSCRIPTS.iter().find(|(ru, ..)| *ru == word) {
@@ -252,6 +258,7 @@ mod tests {
         assert_eq!(localise("ω − ω_{ср}^2", Lang::En), "ω − ω_{m}^2");
         assert_eq!(localise("F_{и2}", Lang::Ru), "F_{и2}");
         // A subscript the table does not know (a user's name) is kept.
-        assert_eq!(localise("J_{ред}, b_1", Lang::En), "J_{ред}, b_1");
+        assert_eq!(localise("J_{кор}, b_1", Lang::En), "J_{кор}, b_1");
+        assert_eq!(localise("J_{ред} + J_{кс}", Lang::En), "J_{red} + J_{gb}");
     }
 }
