@@ -14,8 +14,7 @@ use crate::sheets::captions::{unit_in, NoteText as T};
 pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     w.heading(1, T::GearsSection);
     w.doc.say(w.word(T::GearsIntro));
-    // The sheet's data: its inputs; the results are worked below.
-    w.data_list(PlateKind::Gears, true);
+    // The data are the task's; the results are worked below.
     let study = w.session.gears()?;
     if let Some((pair, mesh)) = &study.pair {
         pair_geometry(w, pair);

@@ -302,6 +302,33 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
                 Method::Integration | Method::Wittenbauer | Method::Merkin
             )
     });
+    // The driving moment from the work of the resistances over the cycle, and the mean power
+    // the drive delivers (seed 000 §3: M_д·ω).
+    if let (Some(a), Some(m)) = (
+        row(&w.report.rows, "A_res", Method::Integration, None),
+        row(&w.report.rows, "M_drive", Method::Integration, None),
+    ) {
+        let (a, m) = (a.graphical.abs(), m.graphical.abs());
+        let nm = unit(&unit_in("N*m", lang));
+        w.doc.say(w.word(T::DriveMomentAndPower));
+        w.doc.formula(&format!(
+            "{} = {} = {} = {}{nm}",
+            sym("M_{д}"),
+            frac(&sym("A_{с}"), "2 π"),
+            frac(&num(a, 5, lang), "2 π"),
+            num(m, 5, lang),
+        ));
+        w.doc.formula(&format!(
+            "{} = {} {} = {} dot {} = {}{}",
+            sym("N_{ср}"),
+            sym("M_{д}"),
+            sym("ω_{ср}"),
+            num(m, 5, lang),
+            num(d.w_avg, 5, lang),
+            num(m * d.w_avg, 5, lang),
+            unit(&unit_in("W", lang)),
+        ));
+    }
     w.doc.par(&[
         text(w.word(T::ExactFlywheel)),
         inline(&format!(
@@ -317,30 +344,23 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             unit(&unit_in("rad/s", lang)),
         )),
     ]);
-    let dims: Vec<String> = d
-        .size
-        .dims
-        .iter()
-        .map(|(name, x)| {
-            inline(&format!(
-                "{} = {}{}",
-                sym(name),
-                num(x * 1e3, 4, lang),
-                unit(w.word(T::MmUnit))
-            ))
-        })
-        .collect();
-    let mut pieces = vec![
-        text(w.word(T::FlywheelSize)),
-        inline(&format!(
+    let mass = format!(
+        "{} = {}{}",
+        sym("m"),
+        num(d.size.mass, 4, lang),
+        unit(&unit_in("kg", lang))
+    );
+    let dims = std::iter::once(mass).chain(d.size.dims.iter().map(|(name, x)| {
+        format!(
             "{} = {}{}",
-            sym("m"),
-            num(d.size.mass, 4, lang),
-            unit(&unit_in("kg", lang))
-        )),
-    ];
-    pieces.extend(dims);
-    w.doc.par(&pieces);
+            sym(name),
+            num(x * 1e3, 4, lang),
+            unit(w.word(T::MmUnit))
+        )
+    }));
+    let dims: Vec<String> = dims.collect();
+    w.doc
+        .par(&[text(w.word(T::FlywheelSize)), inline(&dims.join(", "))]);
     w.figures((PlateKind::Dynamics, None), |_| true, |own| own.to_string());
     Ok(())
 }

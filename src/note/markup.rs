@@ -46,7 +46,19 @@ pub(super) fn label(markup: &str) -> String {
 /// A quantity's symbol in a formula: the label markup set in the text face, italic
 /// (`#qs[...]`, defined by the note's template).
 pub(super) fn sym(markup: &str) -> String {
-    format!("#qs{}", label(markup))
+    // The indices as the formula's own attachments: a text index inside a formula keeps its
+    // digits full size.
+    let mut out = String::new();
+    for run in parse(markup) {
+        let s = format!("#qs[#{}]", string(&run.text));
+        match run.script {
+            Script::Normal if out.is_empty() => out.push_str(&s),
+            Script::Normal => out.push_str(&format!(" {s}")),
+            Script::Sub => out.push_str(&format!("_({s})")),
+            Script::Sup => out.push_str(&format!("^({s})")),
+        }
+    }
+    out
 }
 
 /// A number in a formula, to `sig` significant digits with the language's decimal sign, set
@@ -192,14 +204,14 @@ impl Markup {
     }
 }
 
-/// The note's Typst source with every subscript and superscript a label set (`#sub("и3")`,
-/// `#super("тр")`) in the textbook notation of `lang` (`F_{и3}` is `F_{i3}` in English), as
+/// The note's Typst source with every subscript and superscript a label or a symbol set
+/// (`#sub("и3")`, `#super("тр")`, `_(#qs[#"и3"])`) in the textbook notation of `lang` (`F_{и3}` is `F_{i3}` in English), as
 /// every sheet's text is ([`crate::sheets::captions::symbols`]).
 pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
     let mut out = String::with_capacity(source.len());
     let mut rest = source;
     loop {
-        let next = ["#sub(\"", "#super(\""]
+        let next = ["#sub(\"", "#super(\"", "_(#qs[#\"", "^(#qs[#\""]
             .iter()
             .filter_map(|open| rest.find(open).map(|i| (i, open.len())))
             .min();
@@ -208,7 +220,7 @@ pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
             return out;
         };
         let body = at + open;
-        let Some(len) = rest[body..].find("\")") else {
+        let Some(len) = rest[body..].find('"') else {
             out.push_str(rest);
             return out;
         };
@@ -238,6 +250,10 @@ mod tests {
             r##"[#"F"#sub("i3")#" + M"#sub("r")#super("f")#" + R"#sub("0-5")]"##
         );
         assert_eq!(localise_scripts(&src, Lang::Ru), src);
+        assert_eq!(
+            localise_scripts(&sym("M_{пс}^{тр}"), Lang::En),
+            r##"#qs[#"M"]_(#qs[#"r"])^(#qs[#"f"])"##
+        );
     }
 
     #[test]

@@ -164,6 +164,11 @@ catalogue! {
         ReductionInput => ("Исходные данные для приведения сил и масс (аналитически)", "Вихідні дані для зведення сил і мас (аналітично)", "The input of the reduction of forces and masses (analytic)"),
         ReducedMoments => ("Приведённые моменты сил", "Зведені моменти сил", "Reduced moments of the forces"),
         ReducedInertias => ("Приведённые моменты инерции по звеньям и кинетическая энергия звеньев", "Зведені моменти інерції за ланками і кінетична енергія ланок", "Reduced moments of inertia by links and the links' kinetic energy"),
+        DriveMomentAndPower => (
+            "Момент движущих сил (постоянный) — по работе сил сопротивления за цикл; средняя мощность привода:",
+            "Момент рушійних сил (сталий) — за роботою сил опору за цикл; середня потужність привода:",
+            "The (constant) driving moment from the work of the resistances over the cycle; the drive's mean power:"
+        ),
         ConstantInertia => ("Постоянная часть приведённого момента инерции (редуктор, коробка скоростей):", "Стала частина зведеного моменту інерції (редуктор, коробка швидкостей):", "The constant part of the reduced moment of inertia (reducer, gearbox):"),
         EnergyTable => ("Изменение кинетической энергии", "Зміна кінетичної енергії", "Change of kinetic energy"),
         FlywheelSize => ("Размеры маховика:", "Розміри маховика:", "The flywheel's size:"),
@@ -184,9 +189,9 @@ catalogue! {
         CamScene => ("Минимальный радиус, ролик и точность профиля", "Мінімальний радіус, ролик і точність профілю", "The least radius, the roller and the profile's accuracy"),
         GearsSection => ("Зубчатые механизмы", "Зубчасті механізми", "Gear mechanisms"),
         GearsIntro => (
-            "Геометрия эвольвентного зацепления со смещением рассчитана по формулам и проверена по картине зацепления; коэффициент перекрытия — по формуле и по чертежу (B₁B₂/p_b). Зубья нарезаны рейкой по огибающей её положений. Передаточное отношение планетарного редуктора — по формуле Виллиса и графически по треугольникам скоростей.",
-            "Геометрію евольвентного зачеплення зі зміщенням розраховано за формулами і перевірено за картиною зачеплення; коефіцієнт перекриття — за формулою і за кресленням (B₁B₂/p_b). Зуби нарізано рейкою за обвідною її положень. Передаточне відношення планетарного редуктора — за формулою Вілліса і графічно за трикутниками швидкостей.",
-            "The geometry of the shifted involute pair by the formulas, checked on the meshing picture; the contact ratio by formula and off the drawing (B₁B₂/p_b). The teeth cut by the rack as the envelope of its positions. The planetary train's ratio by Willis's formula and graphically by the velocity triangles."
+            "Геометрия эвольвентного зацепления со смещением рассчитана по формулам и проверена по картине зацепления; коэффициент перекрытия — по формуле и по чертежу (отношение B₁B₂ к основному шагу). Зубья нарезаны рейкой по огибающей её положений. Передаточное отношение планетарного редуктора — по формуле Виллиса и графически по треугольникам скоростей.",
+            "Геометрію евольвентного зачеплення зі зміщенням розраховано за формулами і перевірено за картиною зачеплення; коефіцієнт перекриття — за формулою і за кресленням (відношення B₁B₂ до основного кроку). Зуби нарізано рейкою за обвідною її положень. Передаточне відношення планетарного редуктора — за формулою Вілліса і графічно за трикутниками швидкостей.",
+            "The geometry of the shifted involute pair by the formulas, checked on the meshing picture; the contact ratio by formula and off the drawing (B₁B₂ over the base pitch). The teeth cut by the rack as the envelope of its positions. The planetary train's ratio by Willis's formula and graphically by the velocity triangles."
         ),
         PairWorked => (
             "Геометрический расчёт зацепления (размеры в мм):",
