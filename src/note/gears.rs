@@ -13,9 +13,19 @@ use crate::sheets::captions::{unit_in, NoteText as T};
 /// The gears section.
 pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     w.heading(1, T::GearsSection);
-    w.doc.say(w.word(T::GearsIntro));
-    // The data are the task's; the results are worked below.
     let study = w.session.gears()?;
+    // What the scene has of the pair, the rack-cut wheels and the train, in a sentence each.
+    let intro: Vec<&str> = [
+        (study.pair.is_some(), T::GearsIntroPair),
+        (!study.racks.is_empty(), T::GearsIntroRack),
+        (study.train.is_some(), T::GearsIntroTrain),
+    ]
+    .into_iter()
+    .filter(|(has, _)| *has)
+    .map(|(_, t)| w.word(t))
+    .collect();
+    w.doc.say(&intro.join(" "));
+    // The data are the task's; the results are worked below.
     if let Some((pair, mesh)) = &study.pair {
         pair_geometry(w, pair);
         contact_ratio(w, pair, mesh.ab.value);
@@ -24,13 +34,16 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     of_scene(w, caption, |r| {
         r.position().is_none()
             && matches!(r.method, Method::Formula | Method::Meshing)
-            && !matches!(r.key.symbol, Symbol::GearRatio)
+            && !matches!(r.key.symbol, Symbol::GearRatio | Symbol::ShiftCoefficient)
     });
     let q = quantities(&w.report.rows, |r| r.key.symbol == Symbol::SpecificSliding);
     let caption = w.word(T::SlidingTable);
     by_position(w, caption, &q);
     let caption = w.word(T::RackTable);
-    of_scene(w, caption, |r| r.method == Method::Envelope);
+    // A rack-cut wheel's x_min (formula) beside what its envelope gives.
+    of_scene(w, caption, |r| {
+        r.method == Method::Envelope || r.key.symbol == Symbol::ShiftCoefficient
+    });
     let caption = w.word(T::TrainTable);
     of_scene(w, caption, |r| {
         r.key.symbol == Symbol::GearRatio || r.method == Method::Triangles

@@ -188,10 +188,20 @@ catalogue! {
         CamTable => ("Перемещение, аналоги, углы и радиус-вектор профиля по положениям", "Переміщення, аналоги, кути і радіус-вектор профілю за положеннями", "Displacement, analogues, angles and the profile's radius vector by positions"),
         CamScene => ("Минимальный радиус, ролик и точность профиля", "Мінімальний радіус, ролик і точність профілю", "The least radius, the roller and the profile's accuracy"),
         GearsSection => ("Зубчатые механизмы", "Зубчасті механізми", "Gear mechanisms"),
-        GearsIntro => (
-            "Геометрия эвольвентного зацепления со смещением рассчитана по формулам и проверена по картине зацепления; коэффициент перекрытия — по формуле и по чертежу (отношение B₁B₂ к основному шагу). Зубья нарезаны рейкой по огибающей её положений. Передаточное отношение планетарного редуктора — по формуле Виллиса и графически по треугольникам скоростей.",
-            "Геометрію евольвентного зачеплення зі зміщенням розраховано за формулами і перевірено за картиною зачеплення; коефіцієнт перекриття — за формулою і за кресленням (відношення B₁B₂ до основного кроку). Зуби нарізано рейкою за обвідною її положень. Передаточне відношення планетарного редуктора — за формулою Вілліса і графічно за трикутниками швидкостей.",
-            "The geometry of the shifted involute pair by the formulas, checked on the meshing picture; the contact ratio by formula and off the drawing (B₁B₂ over the base pitch). The teeth cut by the rack as the envelope of its positions. The planetary train's ratio by Willis's formula and graphically by the velocity triangles."
+        GearsIntroPair => (
+            "Геометрия эвольвентного зацепления со смещением рассчитана по формулам и проверена по картине зацепления; коэффициент перекрытия — по формуле и по чертежу (отношение B₁B₂ к основному шагу).",
+            "Геометрію евольвентного зачеплення зі зміщенням розраховано за формулами і перевірено за картиною зачеплення; коефіцієнт перекриття — за формулою і за кресленням (відношення B₁B₂ до основного кроку).",
+            "The geometry of the shifted involute pair by the formulas, checked on the meshing picture; the contact ratio by formula and off the drawing (B₁B₂ over the base pitch)."
+        ),
+        GearsIntroRack => (
+            "Зубья нарезаны рейкой по огибающей её положений.",
+            "Зуби нарізано рейкою за обвідною її положень.",
+            "The teeth cut by the rack as the envelope of its positions."
+        ),
+        GearsIntroTrain => (
+            "Передаточное отношение планетарного редуктора — по формуле Виллиса и графически по треугольникам скоростей.",
+            "Передаточне відношення планетарного редуктора — за формулою Вілліса і графічно за трикутниками швидкостей.",
+            "The planetary train's ratio by Willis's formula and graphically by the velocity triangles."
         ),
         PairWorked => (
             "Геометрический расчёт зацепления (размеры в мм):",
