@@ -7,6 +7,7 @@ use super::rows::{by_position, of_scene, quantities};
 use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
 use crate::gears::{inv, Pair};
+use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::sheets::captions::{unit_in, NoteText as T};
 
@@ -55,6 +56,11 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 /// The involute function in a formula.
 const INV: &str = "op(\"inv\")";
 
+/// An angle (rad) in degrees in a formula: `26,581°`.
+fn deg(a: f64, lang: Lang) -> String {
+    format!("{}°", num(a.to_degrees(), 5, lang))
+}
+
 /// Writes "`lhs` = `symbolic` = `substituted` = `value`" as one formula (`lhs` is math).
 fn worked(w: &mut Writer<'_, '_>, lhs: &str, symbolic: &str, substituted: &str, value: String) {
     w.doc
@@ -68,14 +74,13 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
     let mm = unit(&unit_in("mm", lang));
     let n = |x: f64| num(x, 5, lang);
     let l = |x: f64| format!("{}{mm}", num(x * 1e3, 5, lang));
-    let deg = |a: f64| format!("{}°", num(a.to_degrees(), 5, lang));
     let spec = &p.spec;
     let rack = spec.rack;
     let m = n(spec.module * 1e3);
     let [z1, z2] = spec.z;
     let zs = f64::from(z1 + z2);
     let [x1, x2] = spec.x;
-    let tg = |a: f64| format!("tg {}", deg(a));
+    let tg = |a: f64| format!("tg {}", deg(a, lang));
     w.doc.say(w.word(T::PairWorked));
     worked(
         w,
@@ -98,7 +103,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
         n(p.inv_w),
     );
     w.doc
-        .formula(&format!("{} = {}", sym("α_{w}"), deg(p.alpha_w)));
+        .formula(&format!("{} = {}", sym("α_{w}"), deg(p.alpha_w, lang)));
     worked(
         w,
         &sym("y"),
@@ -111,8 +116,8 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             "{} ({} - 1)",
             frac(&format!("{z1} + {z2}"), "2"),
             frac(
-                &format!("cos {}", deg(rack.alpha)),
-                &format!("cos {}", deg(p.alpha_w))
+                &format!("cos {}", deg(rack.alpha, lang)),
+                &format!("cos {}", deg(p.alpha_w, lang))
             )
         ),
         n(p.y),
@@ -154,7 +159,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             w,
             &sym(&format!("r_{{b{k}}}")),
             &format!("{} cos α", s("r")),
-            &format!("{} dot cos {}", n(p.r[i] * 1e3), deg(rack.alpha)),
+            &format!("{} dot cos {}", n(p.r[i] * 1e3), deg(rack.alpha, lang)),
             l(p.rb[i]),
         );
         worked(
@@ -223,7 +228,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             &sym(&format!("α_{{a{k}}}")),
             &format!("arccos {}", frac(&rb, &ra)),
             &format!("arccos {}", frac(&n(p.rb[i] * 1e3), &n(p.ra[i] * 1e3))),
-            deg(p.alpha_a[i]),
+            deg(p.alpha_a[i], lang),
         );
         worked(
             w,
@@ -248,7 +253,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
         w,
         &sym("p_{b}"),
         "p cos α",
-        &format!("{} dot cos {}", n(p.p * 1e3), deg(rack.alpha)),
+        &format!("{} dot cos {}", n(p.p * 1e3), deg(rack.alpha, lang)),
         l(p.p_b),
     );
 }
@@ -258,7 +263,6 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
 fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
     let lang = w.lang;
     let n = |x: f64| num(x, 5, lang);
-    let deg = |a: f64| format!("{}°", num(a.to_degrees(), 5, lang));
     let [z1, z2] = p.spec.z;
     w.doc.say(w.word(T::ContactRatioWorked));
     worked(
@@ -280,10 +284,10 @@ fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
         &frac(
             &format!(
                 "{z1} dot tg {} + {z2} dot tg {} - {} dot tg {}",
-                deg(p.alpha_a[0]),
-                deg(p.alpha_a[1]),
+                deg(p.alpha_a[0], lang),
+                deg(p.alpha_a[1], lang),
                 z1 + z2,
-                deg(p.alpha_w)
+                deg(p.alpha_w, lang)
             ),
             "2 π",
         ),

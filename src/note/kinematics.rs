@@ -140,12 +140,44 @@ enum Relative {
     SlideOnFrame,
 }
 
-/// One vector equation of a velocity plan, as label markup: the equation, the unknown term's
-/// direction, and how its relative term moves.
+/// One vector equation of a velocity plan: the point, the point it is referred to (plain
+/// names, `B3`, `B1`), the line its relative term lies on or across (label markup), and how
+/// that term moves.
 struct Equation {
-    velocity: String,
-    direction: String,
+    point: String,
+    reference: String,
+    line: String,
     relative: Relative,
+}
+
+impl Equation {
+    fn new(point: &str, reference: &str, line: String, relative: Relative) -> Self {
+        let plain = |x: &str| x.replace(['_', '{', '}'], "");
+        Self {
+            point: plain(point),
+            reference: plain(reference),
+            line,
+            relative,
+        }
+    }
+
+    /// `V_{B3} = V_{B1} + V_{B3B1}`.
+    fn velocity(&self) -> String {
+        let (p, r) = (&self.point, &self.reference);
+        format!("V_{{{p}}} = V_{{{r}}} + V_{{{p}{r}}}")
+    }
+
+    /// The unknown term's direction: `V_{B3B1} ∥ CB`, `V_{B3C} ⊥ CB`.
+    fn direction(&self) -> String {
+        let sign = match self.relative {
+            Relative::Turn => "⊥",
+            Relative::Slide | Relative::SlideOnFrame => "∥",
+        };
+        format!(
+            "V_{{{}{}}} {sign} {}",
+            self.point, self.reference, self.line
+        )
+    }
 }
 
 /// The two vector equations of a group's velocity plan.
@@ -153,85 +185,41 @@ fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<Equation> {
     let [p0, p1, p2] = &g.pairs;
     let [_, j] = g.links;
     let along = |link: u32| format!("{} {link}", T::AlongGuideOf.get(lang));
-    let v = |x: &str| format!("V_{{{}}}", x.replace(['_', '{', '}'], ""));
-    let vr = |x: &str, y: &str| {
-        format!(
-            "V_{{{}{}}}",
-            x.replace(['_', '{', '}'], ""),
-            y.replace(['_', '{', '}'], "")
-        )
-    };
-    let eq = |velocity: String, direction: String, relative| Equation {
-        velocity,
-        direction,
-        relative,
-    };
     let slide = |link: u32| match link {
         0 => Relative::SlideOnFrame,
         _ => Relative::Slide,
     };
+    let turn = Relative::Turn;
     match g.kind {
         DyadKind::Rrr => {
             let (a, joint, b) = (&p0.name, &p1.name, &p2.name);
             vec![
-                eq(
-                    format!("{} = {} + {}", v(joint), v(a), vr(joint, a)),
-                    format!("{} ⊥ {a}{joint}", vr(joint, a)),
-                    Relative::Turn,
-                ),
-                eq(
-                    format!("{} = {} + {}", v(joint), v(b), vr(joint, b)),
-                    format!("{} ⊥ {b}{joint}", vr(joint, b)),
-                    Relative::Turn,
-                ),
+                Equation::new(joint, a, format!("{a}{joint}"), turn),
+                Equation::new(joint, b, format!("{b}{joint}"), turn),
             ]
         }
         DyadKind::Rrp => {
             let (a, joint) = (&p0.name, &p1.name);
             let guide = on(joint, p2.links[1], true);
             vec![
-                eq(
-                    format!("{} = {} + {}", v(joint), v(a), vr(joint, a)),
-                    format!("{} ⊥ {a}{joint}", vr(joint, a)),
-                    Relative::Turn,
-                ),
-                eq(
-                    format!("{} = {} + {}", v(joint), v(&guide), vr(joint, &guide)),
-                    format!("{} ∥ {}", vr(joint, &guide), along(p2.links[1])),
-                    slide(p2.links[1]),
-                ),
+                Equation::new(joint, a, format!("{a}{joint}"), turn),
+                Equation::new(joint, &guide, along(p2.links[1]), slide(p2.links[1])),
             ]
         }
         DyadKind::Rpr => {
             let (a, c) = (&p0.name, &p2.name);
             let (aj, ao) = (on(a, j, true), on(a, p0.links[0], true));
             vec![
-                eq(
-                    format!("{} = {} + {}", v(&aj), v(&ao), vr(&aj, &ao)),
-                    format!("{} ∥ {c}{a}", vr(&aj, &ao)),
-                    slide(j),
-                ),
-                eq(
-                    format!("{} = {} + {}", v(&aj), v(c), vr(&aj, c)),
-                    format!("{} ⊥ {c}{a}", vr(&aj, c)),
-                    Relative::Turn,
-                ),
+                Equation::new(&aj, &ao, format!("{c}{a}"), slide(j)),
+                Equation::new(&aj, c, format!("{c}{a}"), turn),
             ]
         }
         DyadKind::Prp => {
             let joint = &p1.name;
             let (gi, gj) = (on(joint, p0.links[0], true), on(joint, p2.links[1], true));
             vec![
-                eq(
-                    format!("{} = {} + {}", v(joint), v(&gi), vr(joint, &gi)),
-                    format!("{} ∥ {}", vr(joint, &gi), along(p0.links[0])),
-                    slide(p0.links[0]),
-                ),
-                eq(
-                    format!("{} = {} + {}", v(joint), v(&gj), vr(joint, &gj)),
-                    format!("{} ∥ {}", vr(joint, &gj), along(p2.links[1])),
-                    slide(p2.links[1]),
-                ),
+                Equation::new(joint, &gi, along(p0.links[0]), slide(p0.links[0])),
+                Equation::new(joint, &gj, along(p2.links[1]), slide(p2.links[1])),
             ]
         }
         DyadKind::Rpp => {
@@ -239,16 +227,8 @@ fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<Equation> {
             let (aj, ao) = (on(a, j, true), on(a, p0.links[0], true));
             let g0 = on(a, p2.links[1], true);
             vec![
-                eq(
-                    format!("{} = {} + {}", v(&aj), v(&ao), vr(&aj, &ao)),
-                    format!("{} ∥ {}", vr(&aj, &ao), along(j)),
-                    slide(j),
-                ),
-                eq(
-                    format!("{} = {} + {}", v(&aj), v(&g0), vr(&aj, &g0)),
-                    format!("{} ∥ {}", vr(&aj, &g0), along(p2.links[1])),
-                    slide(p2.links[1]),
-                ),
+                Equation::new(&aj, &ao, along(j), slide(j)),
+                Equation::new(&aj, &g0, along(p2.links[1]), slide(p2.links[1])),
             ]
         }
     }
@@ -258,22 +238,14 @@ fn velocity_equations(g: &GroupInfo, lang: Lang) -> Vec<Equation> {
 /// normal and tangential parts (one turning link), its Coriolis and relative parts (a slide
 /// along a moving link) or its relative part alone (a slide along the frame).
 fn acceleration_equation(e: &Equation) -> String {
-    let a = |t: &str| t.replacen('V', "a", 1);
-    let Some((lhs, rhs)) = e.velocity.split_once(" = ") else {
-        return a(&e.velocity);
+    let (p, r) = (&e.point, &e.reference);
+    let sub = format!("{{{p}{r}}}");
+    let relative = match e.relative {
+        Relative::Turn => format!("a^{{n}}_{sub} + a^{{τ}}_{sub}"),
+        Relative::Slide => format!("a^{{k}}_{sub} + a^{{r}}_{sub}"),
+        Relative::SlideOnFrame => format!("a^{{r}}_{sub}"),
     };
-    let terms: Vec<&str> = rhs.split(" + ").collect();
-    let mut out = format!("{} = {}", a(lhs), a(terms[0]));
-    for t in &terms[1..] {
-        let body = a(t);
-        let sub = body.trim_start_matches("a_");
-        out.push_str(&match e.relative {
-            Relative::Turn => format!(" + a^{{n}}_{sub} + a^{{τ}}_{sub}"),
-            Relative::Slide => format!(" + a^{{k}}_{sub} + a^{{r}}_{sub}"),
-            Relative::SlideOnFrame => format!(" + a^{{r}}_{sub}"),
-        });
-    }
-    out
+    format!("a_{{{p}}} = a_{{{r}}} + {relative}")
 }
 
 /// The worked position: the first position with an acceleration plan, else the first one.
@@ -303,6 +275,88 @@ fn segment(pole: &str, subject: &str) -> String {
     match subject.split_once('_') {
         Some((x, y)) => format!("{}{}", point(y), point(x)),
         None => format!("{pole}{}", point(subject)),
+    }
+}
+
+/// The quantities of `symbol` read off the plans.
+fn plan_quantities(rows: &[Row], symbol: Symbol) -> Vec<(String, Method)> {
+    super::rows::quantities(rows, |r| r.method == Method::Plan && r.key.symbol == symbol)
+}
+
+/// The plans' values of `symbol` by position and their differences from the twin, as the
+/// two tables captioned `captions`.
+fn plan_tables(w: &mut Writer<'_, '_>, symbol: Symbol, captions: (T, T)) {
+    let quantities = plan_quantities(&w.report.rows, symbol);
+    let captions = (w.word(captions.0), w.word(captions.1));
+    values_and_errors(w, captions, &quantities);
+}
+
+/// The crank's pin, whose velocity or acceleration opens its plan and sets its scale.
+struct CrankPin<'a> {
+    /// The pin's name (`B`).
+    name: &'a str,
+    /// The crank's length symbol (`l_{AB}`).
+    crank: &'a str,
+    /// |ω₁|, rad/s.
+    w1: f64,
+    /// l, m.
+    length: f64,
+}
+
+/// The plan a [`CrankPin`] opens.
+#[derive(Clone, Copy)]
+enum Plan {
+    Velocity,
+    Acceleration,
+}
+
+impl CrankPin<'_> {
+    /// `V_B = ω₁ l_AB = … m/s` (`a_B = ω₁² l_AB`, the crank turning uniformly), then the
+    /// plan's scale from the pin's vector drawn from the pole: `μ = V_B/pb = …`.
+    fn worked(&self, w: &mut Writer<'_, '_>, plan: Plan, scale: crate::scale::Scale) {
+        let lang = w.lang;
+        let (letter, power, si, words, mu, pole) = match plan {
+            Plan::Velocity => (
+                "V",
+                "",
+                "m/s",
+                (T::CrankPinVelocity, T::VelocityScale),
+                "μ_{v}",
+                "p",
+            ),
+            Plan::Acceleration => (
+                "a",
+                "^2",
+                "m/s^2",
+                (T::CrankPinAcceleration, T::AccelerationScale),
+                "μ_{a}",
+                "π",
+            ),
+        };
+        let value = match plan {
+            Plan::Velocity => self.w1 * self.length,
+            Plan::Acceleration => self.w1 * self.w1 * self.length,
+        };
+        let pin = sym(&format!("{letter}_{{{}}}", self.name));
+        w.doc.par(&[text(w.word(words.0))]);
+        w.doc.formula(&format!(
+            "{pin} = {}{power} {} = {}{power} dot {} = {}{}",
+            sym("ω_{1}"),
+            sym(self.crank),
+            num(self.w1, 5, lang),
+            num(self.length, 5, lang),
+            num(value, 5, lang),
+            unit(&unit_in(si, lang))
+        ));
+        w.doc.par(&[text(w.word(words.1))]);
+        w.doc.formula(&format!(
+            "{} = {} = {} = {}{}",
+            sym(mu),
+            frac(&pin, &sym(&format!("{pole}{}", self.name.to_lowercase()))),
+            frac(&num(value, 5, lang), &num(scale.to_mm(value), 4, lang)),
+            num(scale.value(), 4, lang),
+            unit(scale.quantity.unit(lang))
+        ));
     }
 }
 
@@ -384,32 +438,13 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     w.heading(2, T::VelocityPlans);
     let at = worked_position(&w.report.rows);
     let w1 = kin.w1.abs();
-    let pin = &m.crank.pin;
-    let v_pin = w1 * m.crank.length;
-    w.doc.par(&[text(w.word(T::CrankPinVelocity))]);
-    w.doc.formula(&format!(
-        "{} = {} {} = {} dot {} = {}{}",
-        sym(&format!("V_{{{pin}}}")),
-        sym("ω_{1}"),
-        sym(&crank),
-        num(w1, 5, lang),
-        num(m.crank.length, 5, lang),
-        num(v_pin, 5, lang),
-        unit(&unit_in("m/s", lang))
-    ));
-    let v_mm = sc.v.to_mm(v_pin);
-    w.doc.par(&[text(w.word(T::VelocityScale))]);
-    w.doc.formula(&format!(
-        "{} = {} = {} = {}{}",
-        sym("μ_{v}"),
-        frac(
-            &sym(&format!("V_{{{pin}}}")),
-            &sym(&format!("p{}", pin.to_lowercase()))
-        ),
-        frac(&num(v_pin, 5, lang), &num(v_mm, 4, lang)),
-        num(sc.v.value(), 4, lang),
-        unit(sc.v.quantity.unit(lang))
-    ));
+    let pin = CrankPin {
+        name: &m.crank.pin,
+        crank: &crank,
+        w1,
+        length: m.crank.length,
+    };
+    pin.worked(w, Plan::Velocity, sc.v);
     w.doc.say(w.word(T::VectorEquations));
     for g in &s.groups {
         w.doc.par(&[text(&format!(
@@ -420,25 +455,15 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         ))]);
         for e in velocity_equations(g, lang) {
             w.doc
-                .par(&[label(&e.velocity), text("—"), label(&e.direction)]);
+                .par(&[label(&e.velocity()), text("—"), label(&e.direction())]);
         }
     }
     if let Some(p) = &at {
         worked(w, p, Symbol::Velocity, "p", sc.v)?;
     }
-    let vq = super::rows::quantities(&w.report.rows, |r| {
-        r.method == Method::Plan && r.key.symbol == Symbol::Velocity
-    });
-    let captions = (w.word(T::VelocitiesTable), w.word(T::VelocityErrors));
-    values_and_errors(w, captions, &vq);
-    let wq = super::rows::quantities(&w.report.rows, |r| {
-        r.method == Method::Plan && r.key.symbol == Symbol::AngularVelocity
-    });
-    let captions = (
-        w.word(T::AngularVelocitiesTable),
-        w.word(T::AngularVelocityErrors),
-    );
-    values_and_errors(w, captions, &wq);
+    plan_tables(w, Symbol::Velocity, (T::VelocitiesTable, T::VelocityErrors));
+    let captions = (T::AngularVelocitiesTable, T::AngularVelocityErrors);
+    plan_tables(w, Symbol::AngularVelocity, captions);
     let worked_plan = at.as_ref().map(|p| format!("{} {p}", S::Pos.get(lang)));
     w.figures(
         KINEMATICS,
@@ -447,35 +472,9 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     );
 
     // The acceleration plans.
-    let acc = super::rows::quantities(&w.report.rows, |r| {
-        r.method == Method::Plan && r.key.symbol == Symbol::Acceleration
-    });
-    if !acc.is_empty() {
+    if !plan_quantities(&w.report.rows, Symbol::Acceleration).is_empty() {
         w.heading(2, T::AccelerationPlans);
-        let a_pin = w1 * w1 * m.crank.length;
-        w.doc.par(&[text(w.word(T::CrankPinAcceleration))]);
-        w.doc.formula(&format!(
-            "{} = {}^2 {} = {}^2 dot {} = {}{}",
-            sym(&format!("a_{{{pin}}}")),
-            sym("ω_{1}"),
-            sym(&crank),
-            num(w1, 5, lang),
-            num(m.crank.length, 5, lang),
-            num(a_pin, 5, lang),
-            unit(&unit_in("m/s^2", lang))
-        ));
-        w.doc.par(&[text(w.word(T::AccelerationScale))]);
-        w.doc.formula(&format!(
-            "{} = {} = {} = {}{}",
-            sym("μ_{a}"),
-            frac(
-                &sym(&format!("a_{{{pin}}}")),
-                &sym(&format!("π{}", pin.to_lowercase()))
-            ),
-            frac(&num(a_pin, 5, lang), &num(sc.a.to_mm(a_pin), 4, lang)),
-            num(sc.a.value(), 4, lang),
-            unit(sc.a.quantity.unit(lang))
-        ));
+        pin.worked(w, Plan::Acceleration, sc.a);
         w.doc.say(w.word(T::AccelerationEquations));
         for g in &s.groups {
             for e in velocity_equations(g, lang) {
@@ -486,16 +485,10 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             coriolis(w, p, &s)?;
             worked(w, p, Symbol::Acceleration, "π", sc.a)?;
         }
-        let captions = (w.word(T::AccelerationsTable), w.word(T::AccelerationErrors));
-        values_and_errors(w, captions, &acc);
-        let eq = super::rows::quantities(&w.report.rows, |r| {
-            r.method == Method::Plan && r.key.symbol == Symbol::AngularAcceleration
-        });
-        let captions = (
-            w.word(T::AngularAccelerationsTable),
-            w.word(T::AngularAccelerationErrors),
-        );
-        values_and_errors(w, captions, &eq);
+        let captions = (T::AccelerationsTable, T::AccelerationErrors);
+        plan_tables(w, Symbol::Acceleration, captions);
+        let captions = (T::AngularAccelerationsTable, T::AngularAccelerationErrors);
+        plan_tables(w, Symbol::AngularAcceleration, captions);
         let word = S::AccelerationPlanAt.get(lang);
         w.figures(
             KINEMATICS,
