@@ -155,3 +155,42 @@ fn every_scene_gets_the_note_its_sections_allow() {
         assert!(text.contains("Выводы"), "{}", path.display());
     }
 }
+
+/// The worked formulas the issue asks beyond the tables: the train stage by stage (seed 000
+/// §4: u₁₂ = −z₂/z₁, u₃₆^(H) = (z₄/z₃)(z₆/z₅), u₃H^(6) = 1 − u₃₆^(H), u₇₈ = −z₈/z₇), the
+/// ratio the required speed asks of the first stage and the output speed the teeth give;
+/// the cam's extreme analogues of the "+ −" law (2S_max/φ, 4S_max/φ²: the seed's 52,82,
+/// 53,28, 55,05 and 57,87 mm); the motor's power N = |M_у|·ω₁/η (the seed's N = P·V/η).
+#[test]
+fn the_shaper_note_works_the_train_the_cam_and_the_motor_power() {
+    let s = shaper();
+    let (pdf, r) = note(&s, Lang::Ru);
+    let text = text_of(&pdf);
+    let sig5 = |x: f64| tmm::scale::format_sig(x, 5, Lang::Ru);
+    // The teeth of the scene's reducer, z₁ … z₈.
+    let z: [f64; 8] = [29.0, 74.0, 106.0, 48.0, 18.0, 76.0, 25.0, 100.0];
+    let u12 = -z[1] / z[0];
+    let u36 = (z[3] / z[2]) * (z[5] / z[4]);
+    let u3h = 1.0 - u36;
+    let u78 = -z[7] / z[6];
+    let u = u12 * u3h * u78;
+    let wanted = 1400.0 / 150.0;
+    let mut want: Vec<String> = [u36, u3h.abs(), u.abs(), 1400.0 / u.abs()]
+        .into_iter()
+        .map(sig5)
+        .collect();
+    want.push(sig5(wanted / (u3h * u78).abs()));
+    want.extend(["52,82", "53,28", "55,05", "57,87"].map(String::from));
+    let m_bal = r
+        .rows
+        .iter()
+        .find(|x| x.quantity() == "M_bal" && x.method == Method::Polygon)
+        .expect("M_bal")
+        .graphical
+        .abs();
+    want.push(sig5(m_bal * 5.0 * std::f64::consts::PI / 0.8));
+    for w in &want {
+        assert!(text.contains(w.as_str()), "{w} not in the note");
+    }
+    assert!(text.contains("Виллиса"), "the train by Willis");
+}

@@ -138,6 +138,9 @@ pub struct ForceSpec {
     pub indicators: Vec<Indicator>,
     /// The drive.
     pub drive: Drive,
+    /// η of the drive from the motor to the crank, in (0, 1], when given: the motor's power
+    /// N = M_у·ω₁/η (seed 000 §2: N = P_ур·V/η).
+    pub efficiency: Option<f64>,
     /// Friction in the pairs (`[forces.friction]`), analysed beside the frictionless case.
     pub friction: Option<PairFriction>,
     /// The seed's printed values to compare with (`[[forces.seed]]`).

@@ -42,6 +42,7 @@ fn spec(masses: &[(f64, f64)], f5: (f64, f64), gear: Option<f64>) -> ForceSpec {
             stroke: Stroke::Always,
         }],
         indicators: Vec::new(),
+        efficiency: None,
         drive: match gear {
             None => Drive::Coupling,
             Some(towards) => Drive::Gear(GearDrive {

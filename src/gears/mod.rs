@@ -36,7 +36,7 @@ pub use mesh::LAMBDA_MM;
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
 pub use rows::PairSeed;
-pub use train::{Mesh, Train, TrainError, Wheel};
+pub use train::{Mesh, Stage, Train, TrainError, Wheel};
 
 use crate::scale::Scale;
 use thiserror::Error;

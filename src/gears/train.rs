@@ -32,6 +32,25 @@ pub struct Wheel {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Mesh(pub usize, pub usize);
 
+/// One stage of the textbook's route from the input to the output ([`Train::stages`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Stage {
+    /// Wheel `driving` turns wheel `driven` on fixed axes (indices into [`Train::wheels`]).
+    Mesh {
+        /// The driving wheel.
+        driving: usize,
+        /// The driven wheel.
+        driven: usize,
+    },
+    /// The planetary stage from a central wheel to the carrier, the fixed wheel still: the
+    /// meshes (x, y) from the central wheel through the satellites to the fixed wheel with
+    /// the carrier stopped, u_aH^(f) = 1 − u_af^(H), u_af^(H) = Π u_xy.
+    Planetary {
+        /// The meshes in order, the first x the central wheel, the last y the fixed one.
+        meshes: Vec<(usize, usize)>,
+    },
+}
+
 /// A gear train.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Train {
@@ -180,86 +199,125 @@ impl Train {
     /// a through the satellites to the fixed wheel f with the carrier stopped. `None` when
     /// the train is not a chain of such stages.
     pub fn by_stages(&self) -> Option<f64> {
+        let stages = self.stages()?;
+        let u: f64 = stages.iter().map(|s| self.stage_ratio(s)).product();
+        (u.is_finite() && u.abs() > 1e-300).then_some(u)
+    }
+
+    /// The stages of [`Train::by_stages`] from the input to the output, in that order.
+    /// `None` when the train is not a chain of such stages.
+    pub fn stages(&self) -> Option<Vec<Stage>> {
         let n = self.shafts.len();
-        let mut w: Vec<Option<f64>> = vec![None; n];
-        w[self.input] = Some(1.0);
+        // The shafts reached, each with the shaft and the stage it was reached from.
+        let mut known = vec![false; n];
+        let mut from: Vec<Option<(usize, Stage)>> = vec![None; n];
+        known[self.input] = true;
         if let Some(f) = self.fixed {
-            w[f] = Some(0.0);
+            known[f] = true;
         }
         for _ in 0..n + 2 {
             for m in &self.meshes {
                 for (a, b) in [(m.0, m.1), (m.1, m.0)] {
-                    let (wa, wb) = (&self.wheels[a], &self.wheels[b]);
-                    if self.is_satellite(wa.shaft) || self.is_satellite(wb.shaft) {
+                    let (sa, sb) = (self.wheels[a].shaft, self.wheels[b].shaft);
+                    if self.is_satellite(sa) || self.is_satellite(sb) || !known[sa] || known[sb] {
                         continue;
                     }
-                    if let (Some(v), None) = (w[wa.shaft], w[wb.shaft]) {
-                        let sign = if wa.internal || wb.internal {
-                            1.0
-                        } else {
-                            -1.0
-                        };
-                        w[wb.shaft] = Some(sign * v * wa.z / wb.z);
-                    }
+                    known[sb] = true;
+                    from[sb] = Some((
+                        sa,
+                        Stage::Mesh {
+                            driving: a,
+                            driven: b,
+                        },
+                    ));
                 }
             }
-            // The planetary stage: from a known central shaft a to the fixed f.
+            // The planetary stage: from a reached central shaft a to the fixed f.
             if let (Some(h), Some(f)) = (self.carrier, self.fixed) {
-                if w[h].is_none() {
-                    for a in 0..n {
-                        if a == f || a == h || self.is_satellite(a) {
-                            continue;
-                        }
-                        if let (Some(wa), Some(u)) = (w[a], self.stopped_ratio(a, f)) {
-                            // u_af^(H) = (ω_a − ω_H)/(ω_f − ω_H), ω_f = 0.
-                            let u_ah = 1.0 - u;
-                            if u_ah.abs() > 1e-300 {
-                                w[h] = Some(wa / u_ah);
-                            }
-                            break;
-                        }
+                if !known[h] {
+                    let stage = (0..n)
+                        .filter(|&a| a != f && a != h && !self.is_satellite(a) && known[a])
+                        .find_map(|a| {
+                            let meshes = self.stopped_path(a, f)?;
+                            let stage = Stage::Planetary { meshes };
+                            (self.stage_ratio(&stage).abs() > 1e-300).then_some((a, stage))
+                        });
+                    if let Some(reached) = stage {
+                        known[h] = true;
+                        from[h] = Some(reached);
                     }
                 }
             }
         }
-        let (i, o) = (w[self.input]?, w[self.output]?);
-        (o.abs() > 1e-300).then(|| i / o)
+        let mut path = Vec::new();
+        let mut at = self.output;
+        while at != self.input {
+            let (back, stage) = from[at].clone()?;
+            path.push(stage);
+            at = back;
+            if path.len() > n {
+                return None;
+            }
+        }
+        path.reverse();
+        Some(path)
     }
 
-    /// u_af^(H): with the carrier stopped, ω_a/ω_f through the satellites (every wheel on a
-    /// shaft turns with it); `None` when a does not reach f through satellites.
-    fn stopped_ratio(&self, a: usize, f: usize) -> Option<f64> {
-        let rel = self.stopped_walk(a, 1.0, |v, x, y, internal| {
-            (if internal { v } else { -v }) * x.z / y.z
-        });
-        let rf = rel[f]?;
-        (rf.abs() > 1e-300).then(|| 1.0 / rf)
+    /// u = ω_x/ω_y of wheel x driving wheel y: −z_y/z_x external, +z_y/z_x internal.
+    pub fn mesh_ratio(&self, x: usize, y: usize) -> f64 {
+        let (wx, wy) = (&self.wheels[x], &self.wheels[y]);
+        let sign = if wx.internal || wy.internal {
+            1.0
+        } else {
+            -1.0
+        };
+        sign * wy.z / wx.z
     }
 
-    /// With the carrier stopped, every shaft's ω − ω_H reached from shaft `a` (where it is
-    /// `one`) through the satellites' meshes, each mesh x → y carried by `step(v, x, y,
-    /// internal)`.
-    fn stopped_walk<T: Copy>(
-        &self,
-        a: usize,
-        one: T,
-        step: impl Fn(T, &Wheel, &Wheel, bool) -> T,
-    ) -> Vec<Option<T>> {
+    /// A stage's ratio ω_from/ω_to: the mesh's, or u_aH^(f) = 1 − u_af^(H).
+    pub fn stage_ratio(&self, stage: &Stage) -> f64 {
+        match stage {
+            Stage::Mesh { driving, driven } => self.mesh_ratio(*driving, *driven),
+            Stage::Planetary { meshes } => {
+                1.0 - meshes
+                    .iter()
+                    .map(|&(x, y)| self.mesh_ratio(x, y))
+                    .product::<f64>()
+            }
+        }
+    }
+
+    /// With the carrier stopped, the meshes (x, y) from shaft `a` through the satellites to
+    /// shaft `f`, in order; `None` when a does not reach f through satellites.
+    fn stopped_path(&self, a: usize, f: usize) -> Option<Vec<(usize, usize)>> {
         let n = self.shafts.len();
-        let mut rel: Vec<Option<T>> = vec![None; n];
-        rel[a] = Some(one);
+        let mut from: Vec<Option<(usize, usize)>> = vec![None; n];
+        let mut reached = vec![false; n];
+        reached[a] = true;
         for _ in 0..n + 2 {
             for m in &self.meshes {
                 for (x, y) in [(m.0, m.1), (m.1, m.0)] {
-                    let (wx, wy) = (&self.wheels[x], &self.wheels[y]);
-                    let through = self.is_satellite(wx.shaft) || self.is_satellite(wy.shaft);
-                    if let (true, Some(v), None) = (through, rel[wx.shaft], rel[wy.shaft]) {
-                        rel[wy.shaft] = Some(step(v, wx, wy, wx.internal || wy.internal));
+                    let (sx, sy) = (self.wheels[x].shaft, self.wheels[y].shaft);
+                    let through = self.is_satellite(sx) || self.is_satellite(sy);
+                    if through && reached[sx] && !reached[sy] {
+                        reached[sy] = true;
+                        from[sy] = Some((x, y));
                     }
                 }
             }
         }
-        rel
+        let mut path = Vec::new();
+        let mut at = f;
+        while at != a {
+            let (x, y) = from[at]?;
+            path.push((x, y));
+            at = self.wheels[x].shaft;
+            if path.len() > n {
+                return None;
+            }
+        }
+        path.reverse();
+        Some(path)
     }
 
     /// The first mesh between wheels on fixed axes (no satellite's), if any.
@@ -311,14 +369,16 @@ impl Train {
         })?;
         let a = self.wheels[central].shaft;
         // (ω − ω_H)/(ω_a − ω_H) as a fraction n/d.
-        let rel = self.stopped_walk(a, Some((1_i128, 1_i128)), |v, x, y, internal| {
-            let (n, d) = v?;
-            let n = n.checked_mul(whole(x.z)?)?;
-            let d = d.checked_mul(whole(y.z)?)?;
-            Some(reduced(if internal { n } else { -n }, d))
-        });
+        let (n, d) =
+            self.stopped_path(a, b)?
+                .into_iter()
+                .try_fold((1_i128, 1_i128), |(n, d), (x, y)| {
+                    let (wx, wy) = (&self.wheels[x], &self.wheels[y]);
+                    let n = n.checked_mul(whole(wx.z)?)?;
+                    let d = d.checked_mul(whole(wy.z)?)?;
+                    Some(reduced(if wx.internal || wy.internal { n } else { -n }, d))
+                })?;
         // u_ab^(H) = d/n, u_aH^(b) = 1 − d/n = (n − d)/n.
-        let (n, d) = rel[b]??;
         let za = whole(self.wheels[central].z)?;
         let value = reduced(za.checked_mul(n - d)?, n.checked_mul(i128::from(k))?);
         // 1 + kp ≡ 0 (mod D): solvable when gcd(k, D) = 1, p = −k⁻¹ mod D.

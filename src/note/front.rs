@@ -244,6 +244,14 @@ fn gears_data(g: &GearsSpec, lang: Lang) -> Vec<(String, String, String)> {
         if let Some(k) = t.satellites {
             rows.push(one("k", f64::from(k)));
         }
+        let tr = &t.train;
+        let speeds = [(tr.input, t.n_input), (tr.output, t.n_output)];
+        for (shaft, n) in speeds {
+            if let Some(n) = n {
+                let s = format!("n_{{{}}}", tr.shafts[shaft]);
+                rows.push((s, fmt(n, 5, lang), "rpm".into()));
+            }
+        }
     }
     rows
 }

@@ -22,8 +22,6 @@ pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let lang = w.lang;
     let spec = w.session.force_spec("the explanatory note")?;
     let positions: Vec<String> = {
-        let m = w.session.mechanism("the explanatory note")?;
-        let _ = m;
         let mut ps: Vec<String> = Vec::new();
         for r in &w.report.rows {
             if r.method == Method::Polygon {
@@ -134,6 +132,18 @@ pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
                     unit(&unit_in("W", lang))
                 )),
             ]);
+            if let Some(eta) = spec.efficiency {
+                let n = a.graphical.abs() * w1;
+                w.doc.say(w.word(T::MotorPower));
+                w.doc.formula(&format!(
+                    "{} = {} = {} = {}{}",
+                    sym("N_{дв}"),
+                    frac(&sym("N"), &sym("η")),
+                    frac(&num(n, 5, lang), &num(eta, 3, lang)),
+                    num(n / eta, 5, lang),
+                    unit(&unit_in("W", lang))
+                ));
+            }
         }
         resistance_power(w, k, p)?;
         // The position's sheet: its groups, polygons and lever.
@@ -362,41 +372,6 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     w.doc
         .par(&[text(w.word(T::FlywheelSize)), inline(&dims.join(", "))]);
     w.figures((PlateKind::Dynamics, None), |_| true, |own| own.to_string());
-    Ok(())
-}
-
-/// The cam: the law, the diagrams, r_min, the profile and the transmission (pressure)
-/// angle, Table 7.
-pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
-    w.heading(1, T::CamSection);
-    w.doc.say(w.word(T::CamIntro));
-    w.data_list(PlateKind::Cam, false);
-    let q = quantities(&w.report.rows, |r| {
-        r.position().is_some()
-            && matches!(r.method, Method::Integration | Method::Inversion)
-            && matches!(
-                r.key.symbol,
-                Symbol::Displacement
-                    | Symbol::VelocityAnalogue
-                    | Symbol::AccelerationAnalogue
-                    | Symbol::PressureAngle
-                    | Symbol::TransmissionAngle
-                    | Symbol::ProfileRadius
-            )
-    });
-    let caption = w.word(T::CamTable);
-    by_position(w, caption, &q);
-    let caption = w.word(T::CamScene);
-    // The dynamics integrates too (A_с, M_д): the cam's rows are its lengths.
-    of_scene(w, caption, |r| {
-        r.position().is_none()
-            && matches!(
-                r.method,
-                Method::CombinedDiagram | Method::Inversion | Method::Integration
-            )
-            && !matches!(r.key.symbol, Symbol::Work | Symbol::Moment)
-    });
-    w.figures((PlateKind::Cam, None), |_| true, |own| own.to_string());
     Ok(())
 }
 

@@ -143,9 +143,9 @@ impl Markup {
         self.out.push_str("\n\n");
     }
 
-    /// A paragraph of plain text.
+    /// A paragraph of text in label markup: its `_` and `^` scripts set as such (`M_пр`).
     pub(super) fn say(&mut self, t: &str) {
-        self.par(&[text(t)]);
+        self.par(&[label(t)]);
     }
 
     /// A displayed formula (Typst math, built with [`sym`], [`num`], [`unit`], [`frac`]).

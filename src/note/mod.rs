@@ -10,6 +10,7 @@
 //! portrait, ГОСТ 2.105 text rules, ГОСТ 2.104 frames: form 2 on the first text page, form 2a
 //! on the following ones. The words are the sheets' catalogue's (`sheets::captions`).
 
+mod cam;
 mod front;
 mod gears;
 mod kinematics;
@@ -216,7 +217,7 @@ pub fn compose_with(
         machines::dynamics(&mut w)?;
     }
     if scene.cam.is_some() {
-        machines::cam(&mut w)?;
+        cam::cam(&mut w)?;
     }
     if scene.gears.is_some() {
         gears::gears(&mut w)?;

@@ -109,6 +109,12 @@ pub(crate) fn forces(
         ),
         links: masses,
         resistances,
+        efficiency: raw.drive.as_ref().and_then(|d| {
+            let k = join(&key("drive"), "efficiency");
+            let eta = d.efficiency?;
+            let ok = check.in_range(&k, eta, 1.0, "an efficiency η in (0, 1]");
+            (ok > 0.0).then_some(ok)
+        }),
         drive: raw
             .drive
             .map_or(Drive::Coupling, |d| drive(check, &key("drive"), &d)),

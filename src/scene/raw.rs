@@ -361,6 +361,7 @@ pub(crate) struct RawDrive {
     pub mate_teeth: Option<i64>,
     pub pressure_angle: Option<f64>,
     pub towards: Option<f64>,
+    pub efficiency: Option<f64>,
 }
 
 /// `[[forces.indicator]]` as written.

@@ -58,10 +58,14 @@ use catalogue;
 
 /// A unit written in SI (`m/s^2`, `N*m`, `kg*m^2`, `rad/s`, `mm`) in `lang`: `·` for the
 /// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`); an
-/// angle in degrees (`deg`) as `°`.
+/// angle in degrees (`deg`) as `°`; a speed in revolutions per minute (`rpm`) as `об/мин`,
+/// `об/хв`, `rpm`.
 pub(crate) fn unit_in(unit: &str, lang: Lang) -> String {
-    if unit == "deg" {
-        return "°".into();
+    match (unit, lang) {
+        ("deg", _) => return "°".into(),
+        ("rpm", Lang::Ru) => return "об/мин".into(),
+        ("rpm", Lang::Uk) => return "об/хв".into(),
+        _ => {}
     }
     let si = unit.replace('*', "·");
     if lang == Lang::En {
@@ -107,5 +111,8 @@ mod tests {
         assert_eq!(unit_in("rad/s", Lang::Ru), "рад/с");
         assert_eq!(unit_in("mm", Lang::Ru), "мм");
         assert_eq!(unit_in("kg*m^2", Lang::En), "kg·m^2");
+        assert_eq!(unit_in("rpm", Lang::Ru), "об/мин");
+        assert_eq!(unit_in("rpm", Lang::Uk), "об/хв");
+        assert_eq!(unit_in("rpm", Lang::En), "rpm");
     }
 }

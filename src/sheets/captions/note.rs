@@ -154,6 +154,11 @@ catalogue! {
         PolygonShort => ("пл", "пл", "pol"),
         LeverShort => ("Ж", "Ж", "Zh"),
         ResistancePower => ("Мощность сил полезного сопротивления в этом положении:", "Потужність сил корисного опору в цьому положенні:", "The power of the useful resistance at this position:"),
+        MotorPower => (
+            "Мощность двигателя с учётом КПД привода η:",
+            "Потужність двигуна з урахуванням ККД приводу η:",
+            "The motor's power with the drive's efficiency η:"
+        ),
         DrivePower => ("Мощность привода:", "Потужність приводу:", "The drive's power:"),
         Dynamics => ("Динамика машины", "Динаміка машини", "Machine dynamics"),
         DynamicsIntro => (
@@ -181,9 +186,24 @@ catalogue! {
         ExactFlywheel => ("Момент инерции маховика по точному решению:", "Момент інерції маховика за точним розв'язком:", "The flywheel's moment of inertia by the exact solution:"),
         CamSection => ("Синтез кулачкового механизма", "Синтез кулачкового механізму", "Design of the cam mechanism"),
         CamIntro => (
-            "По заданному закону движения толкателя строим диаграмму аналога ускорения, графическим интегрированием — аналога скорости и перемещения; по совмещённой диаграмме с лучами под углом γ_min (λ_max) находим минимальный радиус кулачка; профиль строим методом обращения движения.",
-            "За заданим законом руху штовхача будуємо діаграму аналога прискорення, графічним інтегруванням — аналога швидкості і переміщення; за суміщеною діаграмою з променями під кутом γ_min (λ_max) знаходимо мінімальний радіус кулачка; профіль будуємо методом обернення руху.",
-            "From the follower's law: the diagram of the acceleration analogue, by graphical integration those of the velocity analogue and the displacement; the least base radius from the combined diagram with the γ_min (λ_max) rays; the profile by inversion."
+            "По заданному закону движения толкателя строим диаграмму аналога ускорения, графическим интегрированием — аналога скорости и перемещения; по совмещённой диаграмме с лучами под допустимым углом передачи (давления) находим минимальный радиус кулачка; профиль строим методом обращения движения.",
+            "За заданим законом руху штовхача будуємо діаграму аналога прискорення, графічним інтегруванням — аналога швидкості і переміщення; за суміщеною діаграмою з променями під допустимим кутом передачі (тиску) знаходимо мінімальний радіус кулачка; профіль будуємо методом обернення руху.",
+            "From the follower's law: the diagram of the acceleration analogue, by graphical integration those of the velocity analogue and the displacement; the least base radius from the combined diagram with the rays at the admissible transmission (pressure) angle; the profile by inversion."
+        ),
+        CamPeaks => (
+            "Наибольшие значения аналогов скорости и ускорения толкателя на фазах:",
+            "Найбільші значення аналогів швидкості і прискорення штовхача на фазах:",
+            "The largest values of the follower's velocity and acceleration analogues on the phases:"
+        ),
+        CamRadiusWorked => (
+            "Минимальный радиус кулачка — расстояние от центра O₁, выбранного в зоне допустимых центров совмещённой диаграммы, до начальной точки B₀, в масштабе диаграммы:",
+            "Мінімальний радіус кулачка — відстань від центра O₁, обраного в зоні допустимих центрів суміщеної діаграми, до початкової точки B₀, у масштабі діаграми:",
+            "The least base radius: the distance from the centre O₁, chosen in the zone of admissible centres of the combined diagram, to the initial point B₀, at the diagram's scale:"
+        ),
+        CamRollerWorked => (
+            "Радиус ролика — не больше 0,4 минимального радиуса и 0,8 наименьшего радиуса кривизны центрового профиля (иначе профиль заостряется или подрезается):",
+            "Радіус ролика — не більше 0,4 мінімального радіуса і 0,8 найменшого радіуса кривини центрового профілю (інакше профіль загострюється або підрізається):",
+            "The roller's radius: at most 0.4 of the base radius and 0.8 of the pitch curve's least radius of curvature (else the profile comes to a point or is undercut):"
         ),
         CamTable => ("Перемещение, аналоги, углы и радиус-вектор профиля по положениям", "Переміщення, аналоги, кути і радіус-вектор профілю за положеннями", "Displacement, analogues, angles and the profile's radius vector by positions"),
         CamScene => ("Минимальный радиус, ролик и точность профиля", "Мінімальний радіус, ролик і точність профілю", "The least radius, the roller and the profile's accuracy"),
@@ -222,6 +242,31 @@ catalogue! {
         PairTable => ("Геометрия зубчатой передачи", "Геометрія зубчастої передачі", "The gear pair's geometry"),
         SlidingTable => ("Удельное скольжение", "Питоме ковзання", "Specific sliding"),
         RackTable => ("Нарезание колеса рейкой", "Нарізання колеса рейкою", "The wheel cut by the rack"),
+        TrainWorked => (
+            "Передаточное отношение редуктора по ступеням: у зацепления на неподвижных осях — отношение чисел зубьев ведомого и ведущего колёс, со знаком минус для внешнего зацепления и плюс для внутреннего; планетарная ступень — по формуле Виллиса при остановленном водиле:",
+            "Передаточне відношення редуктора за ступенями: у зачеплення на нерухомих осях — відношення чисел зубців веденого і ведучого коліс, зі знаком мінус для зовнішнього зачеплення і плюс для внутрішнього; планетарний ступінь — за формулою Вілліса при зупиненому водилі:",
+            "The train's ratio stage by stage: a mesh on fixed axes gives the driven wheel's teeth over the driving wheel's, negative for an external mesh and positive for an internal one; the planetary stage by Willis's formula with the carrier stopped:"
+        ),
+        TrainWillis => (
+            "Совместное решение уравнений Виллиса всех зацеплений (аналитическая проверка) даёт:",
+            "Спільний розв'язок рівнянь Вілліса всіх зачеплень (аналітична перевірка) дає:",
+            "Willis's relations of every mesh solved together (the analytic check) give:"
+        ),
+        TrainRequired => (
+            "Требуемое передаточное отношение и отношение ступени на неподвижных осях, которого оно требует при остальных ступенях:",
+            "Потрібне передаточне відношення і відношення ступеня на нерухомих осях, якого воно вимагає при інших ступенях:",
+            "The required ratio and the ratio it asks of the fixed-axis stage, the other stages as they are:"
+        ),
+        TrainChosen => (
+            "Принятые числа зубьев дают:",
+            "Прийняті числа зубців дають:",
+            "The chosen tooth numbers give:"
+        ),
+        TrainOutput => (
+            "Частота вращения выходного вала и её отклонение от требуемой:",
+            "Частота обертання вихідного вала та її відхилення від потрібної:",
+            "The output's speed and its difference from the required one:"
+        ),
         TrainTable => ("Передаточное отношение и угловые скорости редуктора", "Передаточне відношення і кутові швидкості редуктора", "The train's ratio and angular velocities"),
         BalancingSection => ("Уравновешивание ротора", "Зрівноваження ротора", "Balancing of the rotor"),
         BalancingTable => ("Уравновешивающие массы", "Зрівноважувальні маси", "The correcting masses"),

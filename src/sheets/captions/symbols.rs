@@ -39,6 +39,8 @@ const SUBSCRIPTS: &[(&str, &str, &str)] = &[
     ("ст", "ст", "h"),
     // трения: friction, F_f, M_f and the values with friction in the pairs, R^f.
     ("тр", "тр", "f"),
+    // двигателя: the motor's power, N_mot.
+    ("дв", "дв", "mot"),
     // требуемое: the ratio a required speed asks for, u^req.
     ("треб", "треб", "req"),
     // скольжения: the force that drags a load on rollers, P_sl.

@@ -1,0 +1,145 @@
+//! The cam section: the law's extremes and the least base radius worked (seed 000 §3:
+//! symbols, numbers, result), the roller's choice, the diagrams and the profile, Table 7.
+
+use super::markup::{frac, num, sym, unit};
+use super::rows::{by_position, of_scene, quantities};
+use super::{NoteError, Writer};
+use crate::cam::{Follower, Law};
+use crate::check::{Method, Symbol};
+use crate::scene::PlateKind;
+use crate::sheets::captions::{unit_in, NoteText as T};
+
+/// The cam: the law, the diagrams, r_min, the profile and the transmission (pressure)
+/// angle, Table 7.
+pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    w.heading(1, T::CamSection);
+    w.doc.say(w.word(T::CamIntro));
+    w.data_list(PlateKind::Cam, false);
+    worked(w)?;
+    let q = quantities(&w.report.rows, |r| {
+        r.position().is_some()
+            && matches!(r.method, Method::Integration | Method::Inversion)
+            && matches!(
+                r.key.symbol,
+                Symbol::Displacement
+                    | Symbol::VelocityAnalogue
+                    | Symbol::AccelerationAnalogue
+                    | Symbol::PressureAngle
+                    | Symbol::TransmissionAngle
+                    | Symbol::ProfileRadius
+            )
+    });
+    let caption = w.word(T::CamTable);
+    by_position(w, caption, &q);
+    let caption = w.word(T::CamScene);
+    // The dynamics integrates too (A_с, M_д): the cam's rows are its lengths.
+    of_scene(w, caption, |r| {
+        r.position().is_none()
+            && matches!(
+                r.method,
+                Method::CombinedDiagram | Method::Inversion | Method::Integration
+            )
+            && !matches!(r.key.symbol, Symbol::Work | Symbol::Moment)
+    });
+    w.figures((PlateKind::Cam, None), |_| true, |own| own.to_string());
+    Ok(())
+}
+
+/// The law's extremes of the analogues on each phase (the textbook's closed forms, for the
+/// laws that have one), the least base radius as read off the combined diagram and, for a
+/// roller the scene leaves free, its choice.
+fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    let cam = w.session.cam()?;
+    let lang = w.lang;
+    let n = |x: f64| num(x, 4, lang);
+    let mm = |x: f64| format!("{}{}", num(x * 1e3, 4, lang), unit(&unit_in("mm", lang)));
+    let s = &cam.spec;
+    let stroke = sym("S_{max}");
+    let phases = [
+        (s.rise, s.phases.rise, lang.pick("у", "в", "rise")),
+        (s.ret, s.phases.ret, lang.pick("п", "н", "ret")),
+    ];
+    let mut lines = Vec::new();
+    for (law, phase, index) in phases {
+        let Some((cv, v, ca, a)) = peaks(law) else {
+            continue;
+        };
+        let phi = sym(&format!("φ_{{{index}}}"));
+        let substituted = |c: &str, power: &str| {
+            frac(
+                &format!("{c} dot {}", n(s.stroke * 1e3)),
+                &format!("{}{power}", n(phase)),
+            )
+        };
+        lines.push(format!(
+            "({})_(max) = {} = {} = {}",
+            sym("dS/dφ"),
+            frac(&format!("{v} {stroke}"), &phi),
+            substituted(v, ""),
+            mm(cv * s.stroke / phase)
+        ));
+        lines.push(format!(
+            "({})_(max) = {} = {} = {}",
+            sym("d^{2}S/dφ^{2}"),
+            frac(&format!("{a} {stroke}"), &format!("{phi}^2")),
+            substituted(a, "^2"),
+            mm(ca * s.stroke / (phase * phase))
+        ));
+    }
+    if !lines.is_empty() {
+        w.doc.say(w.word(T::CamPeaks));
+        for l in &lines {
+            w.doc.formula(l);
+        }
+    }
+    // The base radius: |O₁B₀| on the combined diagram at μ_S.
+    if !matches!(s.follower, Follower::Flat { .. }) && s.base_radius.is_none() {
+        let mu = cam.diagrams.s_scale;
+        let r = cam.radius.graphical;
+        w.doc.say(w.word(T::CamRadiusWorked));
+        w.doc.formula(&format!(
+            "{} = {} dot {} = {} dot {} = {}{}",
+            sym("r_{min}"),
+            sym("O_{1}B_{0}"),
+            sym("μ_{S}"),
+            num(mu.to_mm(r), 4, lang),
+            num(mu.value(), 3, lang),
+            num(r, 4, lang),
+            unit(&unit_in("m", lang))
+        ));
+    }
+    if cam.roller > 0.0 && s.roller.is_none() {
+        let (base, rho) = (cam.base, cam.inversion.rho_min);
+        w.doc.say(w.word(T::CamRollerWorked));
+        let k = |x: f64| num(x, 1, lang);
+        w.doc.formula(&format!(
+            "{} = min({} {}; {} {}) = min({} dot {}; {} dot {}) = {}",
+            sym("r_{р}"),
+            k(0.4),
+            sym("r_{0}"),
+            k(0.8),
+            sym("ρ_{min}"),
+            k(0.4),
+            n(base * 1e3),
+            k(0.8),
+            n(rho * 1e3),
+            mm(cam.roller)
+        ));
+    }
+    Ok(())
+}
+
+/// A law's extremes over a phase φ of stroke h: (dS/dφ)_max = c_v·h/φ and
+/// |d²S/dφ²|_max = c_a·h/φ², with the coefficients as the formula writes them; `None` for
+/// the laws without a textbook closed form (uniform: infinite acceleration; trapezoidal).
+fn peaks(law: Law) -> Option<(f64, &'static str, f64, &'static str)> {
+    use std::f64::consts::PI;
+    match law {
+        Law::ConstantAcceleration { ratio } if (ratio - 0.5).abs() < 1e-12 => {
+            Some((2.0, "2", 4.0, "4"))
+        }
+        Law::Cosine => Some((PI / 2.0, "π/2", PI * PI / 2.0, "π^2/2")),
+        Law::Sine => Some((2.0, "2", 2.0 * PI, "2π")),
+        _ => None,
+    }
+}
