@@ -104,6 +104,49 @@ fn pz1_zero_wheel_is_undercut_and_the_shifted_one_pointed() {
     assert!((x - (1.0 - 5.0 * 20f64.to_radians().sin().powi(2))).abs() < 1e-12);
 }
 
+/// PZ1's report form (seed 002, Tables 1.1/1.2): S_t, e_t and S_b read on the drawn teeth.
+/// On the pitch circle the rack-cut tooth is the formula's, S_t = m(π/2 + 2x tg α), and the
+/// space reaches the neighbour: S_t + e_t = πm. On the base circle the zero wheel (z = 10) is
+/// undercut: the drawn and the exact tooth are thinner than the uncut involute's formula
+/// S_b = 2r_b(s/2r + inv α); read to 0,5 mm at 5 : 1 they keep that difference.
+#[test]
+fn pz1_report_form_reads_s_t_e_t_and_an_undercut_s_b() {
+    let m = 0.010;
+    let alpha = 20f64.to_radians();
+    let inv = alpha.tan() - alpha;
+    for drafting in ["0", "0.5"] {
+        let v = report_json("constructions/gears-pz1.toml", drafting);
+        for (name, x) in [("0", 0.0), ("p", 0.6)] {
+            let st = num(row(&v, &format!("s_t{name}"), "envelope"), "graphical");
+            let et = num(row(&v, &format!("e_t{name}"), "envelope"), "graphical");
+            let formula = m * (std::f64::consts::PI / 2.0 + 2.0 * x * alpha.tan());
+            // Exact drafting: the drawn curve between its touching points (0,1 µm); half a
+            // millimetre read at 5 : 1 is 0,1 mm of the wheel.
+            let tol = if drafting == "0" { 1e-7 } else { 2.0e-4 };
+            assert!(
+                (st - formula).abs() < tol,
+                "{name}: S_t {st} against {formula}"
+            );
+            assert!(
+                (st + et - std::f64::consts::PI * m).abs() < 2.0 * tol,
+                "{name}: P_t"
+            );
+        }
+        let sb = row(&v, "s_b0", "envelope");
+        let (drawn, exact) = (num(sb, "graphical"), num(sb, "analytic"));
+        let (r, rb) = (0.050, 0.050 * alpha.cos());
+        let uncut = 2.0 * rb * (m * std::f64::consts::PI / 2.0 / (2.0 * r) + inv);
+        assert!(
+            uncut - exact > 1e-4,
+            "the undercut thins S_b: {exact} against {uncut}"
+        );
+        assert!(
+            uncut - drawn > 5e-5,
+            "and the drawing shows it: {drawn} against {uncut}"
+        );
+    }
+}
+
 #[test]
 fn pz2_example3_by_willis_and_triangles() {
     let v = report_json("constructions/gears-pz2.toml", "0");
@@ -519,9 +562,22 @@ fn rack_generation_draws_a_few_numbered_positions_and_the_undercut_in_a_detail()
             .map(|(k, g)| (*g, (k + 1).to_string()))
             .collect();
         assert_eq!(numbers, want);
-        // The tooth bold, once; the four circles named.
-        let tooth = f.steps.iter().filter(|s| s.role == Role::Result).count();
-        assert_eq!(tooth, 1);
+        // The tooth bold, with its two neighbours (the spaces either side); the four circles
+        // named.
+        let teeth: Vec<&str> = f
+            .steps
+            .iter()
+            .filter(|s| s.role == Role::Result)
+            .map(|s| s.note.as_str())
+            .collect();
+        assert_eq!(
+            teeth,
+            [
+                "the tooth: the envelope of the rack positions",
+                "the neighbouring tooth",
+                "the neighbouring tooth"
+            ]
+        );
         let mut circles = labels_of(f, "circle ");
         circles.sort();
         assert_eq!(circles, ["r", "r_a", "r_b", "r_f"]);

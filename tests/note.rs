@@ -194,3 +194,34 @@ fn the_shaper_note_works_the_train_the_cam_and_the_motor_power() {
     }
     assert!(text.contains("Виллиса"), "the train by Willis");
 }
+
+/// PZ1's note is the practicum's report form: Table 1.1 for the zero wheel and 1.2 for the
+/// shifted one, with S_t, e_t and S_b as read on the drawing beside the formula's values
+/// (the undercut zero wheel's S_b read thinner than the formula's 16,161 mm).
+#[test]
+fn the_pz1_note_is_the_report_form_with_the_drawn_readings() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("constructions/gears-pz1.toml");
+    let s = tmm::load(&path).expect("pz1");
+    let (pdf, r) = note(&s, Lang::Ru);
+    let text = text_of(&pdf);
+    for form in ["таблица 1.1", "таблица 1.2"] {
+        assert!(text.contains(form), "{form} not in the note");
+    }
+    let mm = |q: &str| {
+        let row = r
+            .rows
+            .iter()
+            .find(|x| x.quantity() == q && x.method == Method::Envelope)
+            .unwrap_or_else(|| panic!("no row {q}"));
+        tmm::scale::format_sig(row.graphical * 1e3, 5, Lang::Ru)
+    };
+    for q in ["s_t0", "e_t0", "s_b0", "s_tp", "e_tp", "s_bp"] {
+        let w = mm(q);
+        assert!(text.contains(&w), "{q} = {w} mm not in the note");
+    }
+    assert!(
+        text.contains("16,161"),
+        "the formula's S_b of the zero wheel"
+    );
+    assert_ne!(mm("s_b0"), "16,161");
+}

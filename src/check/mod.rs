@@ -84,6 +84,8 @@ pub enum Symbol {
     Radius,
     /// A tooth thickness on a circle (s, s_a), m.
     ToothThickness,
+    /// A space width on a circle (e_t: between two teeth on the pitch circle), m.
+    SpaceWidth,
     /// A contact ratio (ε_α), 1.
     ContactRatio,
     /// A specific sliding (λ₁, λ₂), 1.
@@ -142,6 +144,7 @@ impl Symbol {
             Symbol::CentreDistance => "a",
             Symbol::Radius => "r",
             Symbol::ToothThickness => "s",
+            Symbol::SpaceWidth => "e",
             Symbol::ContactRatio => "eps",
             Symbol::SpecificSliding => "lambda",
             Symbol::ShiftCoefficient => "x",
@@ -182,6 +185,7 @@ impl Symbol {
             Symbol::CentreDistance
             | Symbol::Radius
             | Symbol::ToothThickness
+            | Symbol::SpaceWidth
             | Symbol::EnvelopeDeviation
             | Symbol::ActionLength => "m",
             Symbol::ContactRatio

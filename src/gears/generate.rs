@@ -60,6 +60,13 @@ pub struct Generation {
     pub sa: f64,
     /// s_a < 0.3m on the drawing.
     pub pointed: bool,
+    /// The report form's readings (seed 002 PZ1, Tables 1.1/1.2), arcs from the chords read
+    /// on the drawing, m: the tooth S_t and the space e_t on the pitch circle (the space
+    /// between the tooth and its neighbour), and the tooth S_b on the base circle (`None`
+    /// when the base circle lies inside the root circle).
+    pub pitch_reading: (f64, f64),
+    /// S_b on the base circle as read, m (see [`Generation::pitch_reading`]).
+    pub sb: Option<f64>,
     /// The largest distance between the drawn tooth (the French curve through the touching
     /// points) and the exact envelope between them, m.
     pub deviation: f64,
@@ -289,6 +296,36 @@ pub fn generate(
         Role::Result,
         &[],
     );
+    // The neighbouring teeth, cut alike a pitch either side, as the device's paper shows
+    // three teeth: the spaces either side of the tooth.
+    for turn in [pitch, -pitch] {
+        rec.draw(
+            "the neighbouring tooth",
+            Item::Polyline {
+                points: tooth.iter().map(|p| mm(rotate(*p, turn))).collect(),
+                closed: false,
+            },
+            Role::Result,
+            &[],
+        );
+    }
+    // The report form's readings: the chords where the drawn flanks cross the pitch and
+    // base circles, read with a ruler and turned into arcs. The space: from the tooth's
+    // right flank to its right neighbour's left flank.
+    let mirror = |p: DVec2| DVec2::new(-p.x, p.y);
+    let across = |radius: f64| {
+        let k = circle_crossing(&right, radius)?;
+        Some(chord_to_arc(
+            rec.measure(mm(mirror(k)), mm(k)).value,
+            radius,
+        ))
+    };
+    let st_read = across(r).unwrap_or(0.0);
+    let et_read = circle_crossing(&right, r).map_or(0.0, |k| {
+        let next = rotate(mirror(k), -pitch);
+        chord_to_arc(rec.measure(mm(k), mm(next)).value, r)
+    });
+    let sb = if rb > rf { across(rb) } else { None };
     let mut detail = None;
     if undercut {
         // The undercut: uncut, the tooth would follow the involute down to the base circle
@@ -431,6 +468,8 @@ pub fn generate(
         tip_chord,
         sa,
         pointed,
+        pitch_reading: (st_read, et_read),
+        sb,
         deviation,
         deviation_mean,
         touch_error,
@@ -502,6 +541,15 @@ fn curve_through(touches: &[Touch]) -> Vec<DVec2> {
         out.extend_from_slice(&piece[1..]);
     }
     out
+}
+
+/// The first point, from the tip, where the drawn half tooth `right` (tip → root) meets the
+/// circle of radius `radius`, between its drawn points.
+fn circle_crossing(right: &[DVec2], radius: f64) -> Option<DVec2> {
+    right.windows(2).find_map(|w| {
+        let (a, b) = (w[0].length(), w[1].length());
+        (a >= radius && b < radius).then(|| w[0].lerp(w[1], (a - radius) / (a - b)))
+    })
 }
 
 /// The arc on the circle of radius `radius` subtended by `chord`.

@@ -30,7 +30,7 @@ mod train;
 mod train_rank;
 mod triangles;
 
-pub use generate::{generate, DETAIL_LETTER};
+pub use generate::{generate, Generation, DETAIL_LETTER};
 pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
 pub use mesh::LAMBDA_MM;
 pub use pair::{Pair, PairSpec};

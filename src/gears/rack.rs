@@ -416,6 +416,36 @@ impl Cutting {
         (self.involute_at(st.q_j), st.q_j, st.q_j)
     }
 
+    /// Twin: the arc thickness of the generated tooth on the circle of radius `rho`: on the
+    /// involute above the junction, s_y = 2ρ(s/2r + inv α − inv α_y); below it on the
+    /// fillet, whose point at ρ is solved on the fillet's state by bisection (the undercut
+    /// thins the tooth there below the involute's value); `None` outside r_f < ρ ≤ r_a.
+    pub fn thickness_at_radius(&self, rho: f64) -> Option<f64> {
+        if !(rho > self.rf() && rho <= self.ra) {
+            return None;
+        }
+        let (junction, _, qf) = self.junction();
+        if rho >= junction.length() {
+            return Some(thickness_at(self.s(), self.r(), self.rack.alpha, rho));
+        }
+        // Down the fillet from the junction (qf) to the root (q_bottom) the radius falls.
+        let off = |q: f64| self.trochoid_at(q).length() - rho;
+        let (mut hi, mut lo) = (qf, self.states().q_bottom);
+        if off(hi) < 0.0 || off(lo) > 0.0 {
+            return None;
+        }
+        for _ in 0..100 {
+            let mid = 0.5 * (hi + lo);
+            if off(mid) >= 0.0 {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        let p = self.trochoid_at(0.5 * (hi + lo));
+        Some(2.0 * rho * p.x.atan2(p.y))
+    }
+
     /// The state at which the flank touches the circle of radius `ry` (on the involute's
     /// real branch).
     pub fn flank_state(&self, ry: f64) -> f64 {

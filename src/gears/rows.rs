@@ -152,7 +152,7 @@ fn suffix(name: &str) -> String {
 pub fn generation_rows(name: &str, g: &Generation) -> Vec<Row> {
     let c = &g.cutting;
     let sfx = suffix(name);
-    vec![
+    let mut out = vec![
         row(
             Symbol::ShiftCoefficient,
             &format!("min{sfx}"),
@@ -177,7 +177,40 @@ pub fn generation_rows(name: &str, g: &Generation) -> Vec<Row> {
             0.0,
             c.module,
         ),
-    ]
+    ];
+    // The report form's readings (PZ1 Tables 1.1/1.2) against the exact envelope: S_t and
+    // e_t = πm − S_t on the pitch circle, S_b on the base circle (thinned by an undercut).
+    let (st, et) = g.pitch_reading;
+    if let Some(exact) = c.thickness_at_radius(c.r()) {
+        out.push(row(
+            Symbol::ToothThickness,
+            &format!("t{name}"),
+            Method::Envelope,
+            st,
+            exact,
+            c.module,
+        ));
+        let space = std::f64::consts::PI * c.module - exact;
+        out.push(row(
+            Symbol::SpaceWidth,
+            &format!("t{name}"),
+            Method::Envelope,
+            et,
+            space,
+            c.module,
+        ));
+    }
+    if let (Some(sb), Some(exact)) = (g.sb, c.thickness_at_radius(c.rb())) {
+        out.push(row(
+            Symbol::ToothThickness,
+            &format!("b{name}"),
+            Method::Envelope,
+            sb,
+            exact,
+            c.module,
+        ));
+    }
+    out
 }
 
 /// The notes of a generation: undercut (drawing and criterion), pointing, x_min, the

@@ -233,6 +233,7 @@ fn gears_data(g: &GearsSpec, lang: Lang) -> Vec<(String, String, String)> {
     }
     for r in &g.racks {
         rows.push(part(T::RackCutPart));
+        rows.push(("m".into(), mm(r.cutting.module, lang), "mm".into()));
         rows.push(one(&format!("z_{{{}}}", r.name), f64::from(r.cutting.z)));
         rows.push(one(&format!("x_{{{}}}", r.name), r.cutting.x));
     }

@@ -2,14 +2,14 @@
 //! numbers, result), ε_α by formula and off the meshing picture, the specific sliding
 //! (Table 6), the rack-cut wheel and the train by Willis and by the triangles.
 
-use super::markup::{frac, num, sym, unit};
+use super::markup::{frac, inline, label, num, sym, text, unit, Align};
 use super::rows::{by_position, of_scene, quantities};
 use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
-use crate::gears::{inv, Pair, Stage, TrainStudy};
+use crate::gears::{inv, Generation, Pair, Stage, TrainStudy};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{unit_in, NoteText as T};
+use crate::sheets::captions::{unit_in, NoteText as T, Text as S};
 
 /// The gears section.
 pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
@@ -40,6 +40,9 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let q = quantities(&w.report.rows, |r| r.key.symbol == Symbol::SpecificSliding);
     let caption = w.word(T::SlidingTable);
     by_position(w, caption, &q);
+    for (name, g) in &study.racks {
+        rack_form(w, name, g);
+    }
     let caption = w.word(T::RackTable);
     // A rack-cut wheel's x_min (formula) beside what its envelope gives.
     of_scene(w, caption, |r| {
@@ -470,4 +473,135 @@ fn train_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
         ),
         format!("{} %", num(delta, 2, lang)),
     );
+}
+
+/// The practicum's report form of a wheel cut by the rack (seed 002 PZ1, Table 1.1 for the
+/// zero wheel, 1.2 for the shifted one): each quantity by the form's formula, as read on
+/// the drawing (the chords where the drawn flanks cross the pitch and base circles, turned
+/// into arcs) and by the exact envelope; lengths in mm. The form's S_b is the uncut
+/// involute's: an undercut thins the drawn and the exact tooth below it.
+fn rack_form(w: &mut Writer<'_, '_>, name: &str, g: &Generation) {
+    let lang = w.lang;
+    let c = &g.cutting;
+    let n = |x: f64| num(x, 5, lang);
+    let mm = |x: f64| inline(&n(x * 1e3));
+    let none = || text("—");
+    let m = c.module;
+    let (alpha, z) = (c.rack.alpha, f64::from(c.z));
+    let pitch = std::f64::consts::PI * m;
+    let s_formula = c.s();
+    let exact_st = c.thickness_at_radius(c.r());
+    let (st, et) = g.pitch_reading;
+    let mut rows: Vec<Vec<String>> = vec![
+        vec![label("d"), inline("m z"), mm(m * z), none(), none()],
+        vec![
+            label("d_{b}"),
+            inline(&format!("d cos {}", sym("α"))),
+            mm(m * z * alpha.cos()),
+            none(),
+            none(),
+        ],
+    ];
+    if c.x != 0.0 {
+        let xi_min = (17.0 - z) / 17.0;
+        rows.push(vec![
+            label("ξ_{min}"),
+            inline(&frac("17 - z", "17")),
+            inline(&n(xi_min)),
+            none(),
+            none(),
+        ]);
+        rows.push(vec![
+            label("x"),
+            inline(&format!("{} m", sym("ξ"))),
+            mm(c.x * m),
+            none(),
+            none(),
+        ]);
+    }
+    let exact = |v: Option<f64>| v.map_or_else(none, mm);
+    rows.push(vec![
+        label("P_{t}"),
+        inline("π m"),
+        mm(pitch),
+        mm(st + et),
+        mm(pitch),
+    ]);
+    let st_formula = if c.x != 0.0 {
+        format!("{} P_(t) + 2 x tg {}", num(0.5, 1, lang), sym("α"))
+    } else {
+        format!("{} P_(t)", num(0.5, 1, lang))
+    };
+    rows.push(vec![
+        label("S_{t}"),
+        inline(&st_formula),
+        mm(s_formula),
+        mm(st),
+        exact(exact_st),
+    ]);
+    rows.push(vec![
+        label("e_{t}"),
+        inline("P_(t) - S_(t)"),
+        mm(pitch - s_formula),
+        mm(et),
+        exact(exact_st.map(|s| pitch - s)),
+    ]);
+    let sb_formula = 2.0 * c.rb() * (s_formula / (2.0 * c.r()) + inv(alpha));
+    let exact_sb = c.thickness_at_radius(c.rb());
+    rows.push(vec![
+        label("S_{b}"),
+        inline(&format!(
+            "2 r_(b) ({} + {} {})",
+            frac("S_(t)", "2 r"),
+            INV,
+            sym("α")
+        )),
+        mm(sb_formula),
+        g.sb.map_or_else(none, mm),
+        exact(exact_sb),
+    ]);
+    let header = [
+        text(w.word(S::Quantity)),
+        text(w.word(T::FormulaColumn)),
+        text(&format!(
+            "{}, {}",
+            w.word(T::ByFormula),
+            unit_in("mm", lang)
+        )),
+        text(&format!(
+            "{}, {}",
+            w.word(T::OnTheDrawing),
+            unit_in("mm", lang)
+        )),
+        text(&format!(
+            "{}, {}",
+            w.word(T::ByEnvelope),
+            unit_in("mm", lang)
+        )),
+    ];
+    let form = if c.x == 0.0 {
+        T::ZeroWheelForm
+    } else {
+        T::ShiftedWheelForm
+    };
+    let caption = format!(
+        "{} {name} (z = {}, x = {}): {}",
+        w.word(T::WheelWord),
+        c.z,
+        crate::scale::format_sig(c.x, 4, lang),
+        w.word(form)
+    );
+    let align = [
+        Align::Left,
+        Align::Centre,
+        Align::Centre,
+        Align::Centre,
+        Align::Centre,
+    ];
+    w.doc.table(&caption, &align, &header, &rows);
+    if g.undercut {
+        w.doc.say(w.word(T::UndercutThins));
+    } else if exact_sb.is_some_and(|s| s > sb_formula * (1.0 + 1e-4)) {
+        w.doc.say(w.word(T::FilletAboveBase));
+    }
 }

@@ -150,8 +150,11 @@ fn russian(symbol: Symbol, subject: &str) -> String {
         // x_{min,p}, s_{a,p}, δ_{огиб,p} (the wheel `1` has none: x_{min}, s_{a1}).
         (Symbol::EnvelopeDeviation, s) => wheel("огиб", s.strip_prefix("deviation")),
         (Symbol::ShiftCoefficient, s) => wheel("min", s.strip_prefix("min")),
-        (Symbol::ToothThickness, s) if s.len() > 1 && !s[1..].starts_with(char::is_numeric) => {
-            wheel("a", s.strip_prefix('a').map(|w| format!("_{w}")).as_deref())
+        // The circle's letter first (a: tip, t: pitch, b: base), then the wheel's name.
+        (Symbol::ToothThickness | Symbol::SpaceWidth, s)
+            if s.len() > 1 && s.is_char_boundary(1) && !s[1..].starts_with(char::is_numeric) =>
+        {
+            wheel(&s[..1], Some(&format!("_{}", &s[1..])))
         }
         (_, s) => s.replace('_', sep),
     };
@@ -192,6 +195,7 @@ fn letter(symbol: Symbol) -> &'static str {
         Symbol::CentreDistance => "a",
         Symbol::Radius => "r",
         Symbol::ToothThickness => "s",
+        Symbol::SpaceWidth => "e",
         Symbol::ContactRatio => "ε",
         Symbol::SpecificSliding | Symbol::PressureAngle => "λ",
         Symbol::ShiftCoefficient => "x",
@@ -233,6 +237,9 @@ mod tests {
         assert_eq!(ru(Symbol::ShiftCoefficient, "min_p"), "x_{min,p}");
         assert_eq!(ru(Symbol::ToothThickness, "ap"), "s_{a,p}");
         assert_eq!(ru(Symbol::ToothThickness, "a1"), "s_{a1}");
+        assert_eq!(ru(Symbol::ToothThickness, "tp"), "s_{t,p}");
+        assert_eq!(ru(Symbol::ToothThickness, "b0"), "s_{b0}");
+        assert_eq!(ru(Symbol::SpaceWidth, "tp"), "e_{t,p}");
         assert_eq!(ru(Symbol::EnvelopeDeviation, "deviation"), "δ_{огиб}");
         assert_eq!(ru(Symbol::Irregularity, ""), "δ");
         let en = |s, sub| quantity(s, sub, Lang::En);
