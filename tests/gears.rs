@@ -56,6 +56,74 @@ fn seed000_pair_rack_and_reducer_in_the_report() {
     assert!(n.contains("undercut shown on the drawing"), "{n}");
 }
 
+/// Every parameter seed 000 §4.3 lists has its row, held to the exact values (seed 000 cases
+/// §000.13); the seed's base radii r·cos α_w (81,38 and 187,8 mm) are flagged, not
+/// matched; the pinion of the pair cut with x = 0,8 on the blank shortened by Δy = 0,18
+/// (§4.4.2) keeps a tip, s_a > 0, its drawn s_a equal to the pair's.
+#[test]
+fn seed000_pairs_every_parameter_and_the_shortened_cutting() {
+    let v = report_json("constructions/shaper.toml", "0");
+    let exact = [
+        ("y", 1.09117, 5e-6),
+        ("dy", 0.17983, 5e-6),
+        ("u_12", 2.30769, 5e-6),
+        ("p", 0.043982, 5e-7),
+        ("p_b", 0.041330, 5e-7),
+        ("r_1", 0.091, 1e-12),
+        ("r_2", 0.210, 1e-12),
+        ("r_b1", 0.085512, 5e-7),
+        ("r_b2", 0.197335, 5e-7),
+        ("r_f1", 0.084700, 5e-7),
+        ("r_f2", 0.199094, 5e-7),
+        ("s_1", 0.030144, 5e-7),
+        ("s_2", 0.026791, 5e-7),
+        ("h_1", 0.028982, 5e-7),
+        ("h_2", 0.028982, 5e-7),
+    ];
+    for (q, want, tol) in exact {
+        let r = row(&v, q, "formula");
+        for column in ["graphical", "analytic"] {
+            let got = num(r, column);
+            assert!(
+                (got - want).abs() < tol,
+                "{q} {column}: {got} against {want}"
+            );
+        }
+    }
+    // α_a = arccos(r_b/r_a) on both routes.
+    let aa = row(&v, "alpha_a1", "formula");
+    assert!((num(aa, "graphical") - (0.085512 / 0.113682f64).acos().to_degrees()).abs() < 1e-3);
+    // The seed's r_b = r·cos α_w is not produced, and its erratum says so.
+    for q in ["r_b1", "r_b2"] {
+        let got = num(row(&v, q, "formula"), "graphical");
+        assert!(
+            (got - 0.08138).abs() > 1e-3 && (got - 0.1878).abs() > 1e-3,
+            "{q}"
+        );
+    }
+    assert!(
+        notes(&v).contains("r·cos α_w = 81.382/187.8"),
+        "{}",
+        notes(&v)
+    );
+    // The shortened x = 0,8 pinion keeps a tip: s_a = 2r_a(s/2r + inv α − inv α_a) on
+    // r_a = r + (h_a* + x − Δy)m (the unshortened blank's tip would come to a point).
+    let sa = num(row(&v, "s_a1p", "envelope"), "graphical");
+    let inv = |a: f64| a.tan() - a;
+    let (m, r, x, alpha) = (0.014, 0.091, 0.8, 20f64.to_radians());
+    let ra = r + (1.0 + x - 0.18) * m;
+    let s = m * (std::f64::consts::PI / 2.0 + 2.0 * x * alpha.tan());
+    let alpha_a = (r * alpha.cos() / ra).acos();
+    let want = 2.0 * ra * (s / (2.0 * r) + inv(alpha) - inv(alpha_a));
+    assert!(sa > 0.0 && (sa - want).abs() < 1e-9, "{sa} against {want}");
+    let full = r + (1.0 + x) * m;
+    let at_full = 2.0 * full * (s / (2.0 * r) + inv(alpha) - inv((r * alpha.cos() / full).acos()));
+    assert!(
+        at_full < 0.3 * m,
+        "unshortened the tip is pointed: {at_full}"
+    );
+}
+
 #[test]
 fn the_meshing_picture_read_at_half_a_millimetre() {
     let v = report_json("constructions/shaper.toml", "0.5");
@@ -201,6 +269,11 @@ fn bad_gear_sections_name_their_keys() {
         (
             "[gears]\nmodule = 2.0\n",
             &["expected a [gears.pair] or at least one [[gears.rack]]"],
+        ),
+        // A blank's shortening out of range, and one that takes the tip below the root.
+        (
+            "[gears]\nmodule = 10.0\n[[gears.rack]]\nz = 20\ndy = -0.5\n[[gears.rack]]\nz = 20\ndy = 2.5\n",
+            &["gears.rack[0].dy = -0.5", "gears.rack[1].dy = 2.5", "above the root circle"],
         ),
         // The seed's printed values: positive, α_w below 90°, cos α_w at most 1.
         (

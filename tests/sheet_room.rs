@@ -31,7 +31,7 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("friction/friction", 0.18, "every free scale as large as its 160 mm room holds: the schemes drawn to scale at μ_l = 0,0004 (the screw's turn 141 mm: 0,00025 draws it 226 mm), 0,001 (the journal 114 × 136 mm: 0,0005 draws it 228 × 238 mm) and 0,004 (the rollers 121 mm: 0,0025 draws them 178 mm); the force triangles at μ_F = 10 and 100 (Q = 1000 N drawn 100 mm: one step finer draws it 200 mm, and the cases spill onto a second sheet, 3 % inked); the inclines and the wedge are schematic (not to scale, about 60 mm)"),
     ("gears-pz2/gears", 0.08, "one narrow figure (a vertical train's triangles, 125 mm tall at μ_l = 0,001: 0,0005 draws it 265 mm, more than an A3 holds beside its data) on the smallest format, A3"),
     ("gears-pz3/gears", 0.13, "the scene fixes μ_l"),
-    ("shaper/gears", 0.22, "the meshing picture at μ_l = 0,002 fills the sheet's height (329 mm: 0,001 draws it 658 mm)"),
+    ("shaper/gears", 0.21, "the meshing picture at μ_l = 0,002 fills the sheet's height (329 mm: 0,001 draws it 658 mm); the two rack-cut pinions (§4.4.1 x = 0, §4.4.2 x = 0,8 shortened) at 1 : 1 beside it, so that they, the train and the two parts of the table share one A1 (at 2 : 1 the table went to a second sheet holding nothing else)"),
     ("rotor-static/balancing", 0.15, "one disc and one polygon, each as large as its room (162 and 200 mm: one round step finer doubles them); its 14 lines of data keep it off an A3"),
     ("shaper/dynamics", 0.29, "the scene fixes μ_M and μ_φ (the seed's)"),
     ("v-engine/dynamics", 0.28, "the scene fixes μ_φ; the free diagrams' ordinates at their 80 mm"),

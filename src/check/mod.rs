@@ -86,6 +86,12 @@ pub enum Symbol {
     ToothThickness,
     /// A space width on a circle (e_t: between two teeth on the pitch circle), m.
     SpaceWidth,
+    /// A pitch (p, p_b), m.
+    Pitch,
+    /// The centre-distance coefficient y of a shifted pair, 1.
+    DistanceCoefficient,
+    /// The equalising shift coefficient Δy of a shifted pair, 1.
+    EqualisingShift,
     /// A contact ratio (ε_α), 1.
     ContactRatio,
     /// A specific sliding (λ₁, λ₂), 1.
@@ -145,6 +151,9 @@ impl Symbol {
             Symbol::Radius => "r",
             Symbol::ToothThickness => "s",
             Symbol::SpaceWidth => "e",
+            Symbol::Pitch => "p",
+            Symbol::DistanceCoefficient => "y",
+            Symbol::EqualisingShift => "dy",
             Symbol::ContactRatio => "eps",
             Symbol::SpecificSliding => "lambda",
             Symbol::ShiftCoefficient => "x",
@@ -186,11 +195,14 @@ impl Symbol {
             | Symbol::Radius
             | Symbol::ToothThickness
             | Symbol::SpaceWidth
+            | Symbol::Pitch
             | Symbol::EnvelopeDeviation
             | Symbol::ActionLength => "m",
             Symbol::ContactRatio
             | Symbol::SpecificSliding
             | Symbol::ShiftCoefficient
+            | Symbol::DistanceCoefficient
+            | Symbol::EqualisingShift
             | Symbol::GearRatio => "1",
             Symbol::VelocityAnalogue | Symbol::AccelerationAnalogue => "m",
             Symbol::PressureAngle | Symbol::TransmissionAngle => "rad",

@@ -256,18 +256,25 @@ pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearSt
 impl GearStudy {
     /// Every row: the pair's by formula and off the meshing picture, each wheel's generation.
     pub fn rows(&self) -> Vec<crate::check::Row> {
-        let mut out = Vec::new();
+        self.rows_by_part().concat()
+    }
+
+    /// The rows in two parts: the pair's (its formulas and its meshing picture), and the
+    /// cut wheels' with the train's.
+    pub fn rows_by_part(&self) -> [Vec<crate::check::Row>; 2] {
+        let mut pair = Vec::new();
         if let Some((p, m)) = &self.pair {
-            out.extend(rows::pair_rows(p));
-            out.extend(rows::meshing_rows(p, m));
+            pair.extend(rows::pair_rows(p));
+            pair.extend(rows::meshing_rows(p, m));
         }
+        let mut rest = Vec::new();
         for (name, g) in &self.racks {
-            out.extend(rows::generation_rows(name, g));
+            rest.extend(rows::generation_rows(name, g));
         }
         if let Some(t) = &self.train {
-            out.extend(t.rows());
+            rest.extend(t.rows());
         }
-        out
+        [pair, rest]
     }
     /// The notes: the pair's (with the seeds' errata), each generation's.
     pub fn notes(&self) -> Vec<String> {

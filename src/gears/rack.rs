@@ -242,6 +242,11 @@ impl Cutting {
     pub fn sa(&self) -> f64 {
         thickness_at(self.s(), self.r(), self.rack.alpha, self.ra)
     }
+    /// Δy by which the blank's tip is shortened: r_a = r + (h_a* + x − Δy)m (0 for a blank
+    /// of the full tip).
+    pub fn shortening(&self) -> f64 {
+        (self.r() + (self.rack.ha + self.x) * self.module - self.ra) / self.module
+    }
     /// x_min = h_a* − z sin²α/2: the least shift without undercut (exact).
     pub fn x_min(&self) -> f64 {
         x_min(self.z, &self.rack)

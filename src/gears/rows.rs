@@ -100,6 +100,90 @@ pub fn pair_rows(p: &Pair) -> Vec<Row> {
         p.eps,
         p.eps,
     ));
+    out.extend(parameter_rows(p));
+    out
+}
+
+/// The rest of the parameters seed 000 §4.3 lists, each by its formula against another
+/// route: y = (a_w − a)/m against (z₁+z₂)/2·(cos α/cos α_w − 1) at Newton's α_w; Δy = x_Σ − y
+/// (or the table's) against x_Σ less that y (the table's Δy shows its rounding); u₁₂ = z₂/z₁ against r_w2/r_w1; p = πm and
+/// p_b = πm cos α against 2πr/z and 2πr_b/z; per wheel r = mz/2 against r_w cos α_w/cos α,
+/// r_b = r cos α against r_w cos α_w, r_f = r − (h_a* + c* − x)m against a_w − r_a(mate) −
+/// c*m, s = m(π/2 + 2x tg α) against the pitch less the rack's tooth on the line xm off its
+/// mean line, α_a = arccos(r_b/r_a) against arctg(√(r_a² − r_b²)/r_b), h = r_a − r_f against
+/// (2h_a* + c* − Δy)m.
+fn parameter_rows(p: &Pair) -> Vec<Row> {
+    use std::f64::consts::PI;
+    let f = Method::Formula;
+    let s = &p.spec;
+    let (m, alpha, rack) = (s.module, s.rack.alpha, s.rack);
+    let zsum = f64::from(s.z[0] + s.z[1]);
+    let y_twin = zsum / 2.0 * (alpha.cos() / p.alpha_w_newton.cos() - 1.0);
+    let dy_twin = s.x_sum() - y_twin;
+    let z = |i: usize| f64::from(s.z[i]);
+    let mut out = vec![
+        row(Symbol::DistanceCoefficient, "", f, p.y, y_twin, 1.0),
+        row(Symbol::EqualisingShift, "", f, p.dy, dy_twin, 1.0),
+        row(
+            Symbol::GearRatio,
+            "12",
+            f,
+            z(1) / z(0),
+            p.rw[1] / p.rw[0],
+            z(1) / z(0),
+        ),
+        row(Symbol::Pitch, "", f, p.p, 2.0 * PI * p.r[0] / z(0), p.p),
+        row(Symbol::Pitch, "b", f, p.p_b, 2.0 * PI * p.rb[0] / z(0), p.p),
+    ];
+    for i in 0..2 {
+        let n = i + 1;
+        let via_w = p.rw[i] * p.alpha_w.cos();
+        let rack_tooth = PI * m / 2.0 - 2.0 * s.x[i] * m * alpha.tan();
+        let reach = (p.ra[i] * p.ra[i] - p.rb[i] * p.rb[i]).max(0.0).sqrt();
+        out.extend([
+            row(
+                Symbol::Radius,
+                &n.to_string(),
+                f,
+                p.r[i],
+                via_w / alpha.cos(),
+                p.r[i],
+            ),
+            row(Symbol::Radius, &format!("b{n}"), f, p.rb[i], via_w, p.r[i]),
+            row(
+                Symbol::Radius,
+                &format!("f{n}"),
+                f,
+                p.rf[i],
+                p.a_w - p.ra[1 - i] - rack.c * m,
+                p.r[i],
+            ),
+            row(
+                Symbol::ToothThickness,
+                &n.to_string(),
+                f,
+                p.s[i],
+                p.p - rack_tooth,
+                m,
+            ),
+            row(
+                Symbol::EngagementAngle,
+                &format!("a{n}"),
+                f,
+                p.alpha_a[i].to_degrees(),
+                reach.atan2(p.rb[i]).to_degrees(),
+                p.alpha_a[i].to_degrees(),
+            ),
+            row(
+                Symbol::Length,
+                &n.to_string(),
+                f,
+                p.ra[i] - p.rf[i],
+                (2.0 * rack.ha + rack.c - p.dy) * m,
+                m,
+            ),
+        ]);
+    }
     out
 }
 

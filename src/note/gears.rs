@@ -31,11 +31,14 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         pair_geometry(w, pair);
         contact_ratio(w, pair, mesh.ab.value);
     }
+    // The pair's own rows (its u₁₂ among them, not the train's).
+    let [pair_rows, _] = study.rows_by_part();
+    let of_pair = |r: &crate::check::Row| pair_rows.iter().any(|p| p.key == r.key);
     let caption = w.word(T::PairTable);
     of_scene(w, caption, |r| {
         r.position().is_none()
             && matches!(r.method, Method::Formula | Method::Meshing)
-            && !matches!(r.key.symbol, Symbol::GearRatio | Symbol::ShiftCoefficient)
+            && of_pair(r)
     });
     let q = quantities(&w.report.rows, |r| r.key.symbol == Symbol::SpecificSliding);
     let caption = w.word(T::SlidingTable);
@@ -53,7 +56,7 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     }
     let caption = w.word(T::TrainTable);
     of_scene(w, caption, |r| {
-        r.key.symbol == Symbol::GearRatio || r.method == Method::Triangles
+        (r.key.symbol == Symbol::GearRatio && !of_pair(r)) || r.method == Method::Triangles
     });
     w.figures((PlateKind::Gears, None), |_| true, |own| own.to_string());
     Ok(())

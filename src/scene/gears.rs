@@ -74,6 +74,7 @@ pub(crate) struct RawRack {
     pub module: Option<f64>,
     pub positions: Option<i64>,
     pub scale_l: Option<f64>,
+    pub dy: Option<f64>,
 }
 
 /// A given μ_l must draw the figure of natural size `size` (m; `what` names it) between
@@ -283,10 +284,24 @@ fn racks(
             Quantity::Length,
             "a scale μ_l > 0 m/mm",
         );
+        // The blank's tip shortened by Δy (a pair's wheel: r_a = r + (h_a* + x − Δy)m).
+        let dy = match r.dy {
+            Some(v) if v.is_finite() && (0.0..=3.0).contains(&v) => v,
+            Some(v) => {
+                check.push(
+                    k("dy"),
+                    Some(number(v)),
+                    "expected a shortening Δy from 0 to 3",
+                );
+                0.0
+            }
+            None => 0.0,
+        };
         let Some(m) = m.filter(|m| *m > 0.0 && rack_ok) else {
             continue;
         };
-        match Cutting::alone(m, z, x, rack) {
+        let tip = m * (f64::from(z) / 2.0 + rack.ha + x - dy);
+        match Cutting::with_tip(m, z, x, rack, tip) {
             Ok(c) if c.sa() <= 0.0 => check.push(
                 k("x"),
                 Some(number(x)),
@@ -299,6 +314,7 @@ fn racks(
                 figure(check, &k("scale_l"), scale, 4.0 * std::f64::consts::PI * c.module, "4πm");
                 racks.push(RackSpec { name, cutting: c, positions, scale_l: scale })
             }
+            Err(e) if dy > 0.0 => check.push(k("dy"), Some(number(dy)), format!("a blank above the root circle: {e}")),
             Err(e) => check.push(k("x"), Some(number(x)), format!("a wheel that can be cut: {e}")),
         }
     }

@@ -76,8 +76,15 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }
     for (name, r) in &g.racks {
         let c = &r.cutting;
+        // A blank shortened by Δy (a pair's wheel) says so.
+        let dy = c.shortening();
+        let shortened = if dy.abs() > 1e-9 {
+            format!(", Δy = {}", format_sig(dy, 4, lang))
+        } else {
+            String::new()
+        };
         let caption = format!(
-            "{} z = {}, x = {}, N = {} ({}), {}{}",
+            "{} z = {}, x = {}{shortened}, N = {} ({}), {}{}",
             GearText::CutByRack.get(lang),
             c.z,
             format_sig(c.x, 4, lang),
@@ -174,7 +181,18 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         lines,
         size_mm: TEXT_MM,
     });
-    blocks.push(Block::Table(table(&g.rows(), lang)));
+    // The table in its two parts, the pair's and the rest, each finding its own room; the
+    // second titled as continued when both are drawn.
+    let [pair, rest] = g.rows_by_part();
+    let mut first = true;
+    for part in [pair, rest].iter().filter(|p| !p.is_empty()) {
+        let mut t = table(part, lang);
+        if !first {
+            t.title = format!("{} {}", t.title, Text::Continued.get(lang));
+        }
+        first = false;
+        blocks.push(Block::Table(t));
+    }
     let Some(plan) =
         plan.or_else(|| crate::scale::Scale::new(0.001, crate::scale::Quantity::Length))
     else {
