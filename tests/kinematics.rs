@@ -509,3 +509,31 @@ fn tangent_method_is_an_option_of_the_scene() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("kinematics.differentiation"));
 }
+
+/// Seed 001's conclusion of W1 (l. 687–689), drawn from the six-bar's acceleration plan at
+/// position 1: links 3 and 4 accelerate, link 2 decelerates — in the report's notes (both
+/// routes agreeing) and on the kinematic sheet.
+#[test]
+fn the_six_bar_links_accelerate_and_decelerate_as_seed_001_concludes() {
+    let v = report_json("constructions/six-bar.toml", "0.5");
+    let notes: Vec<&str> = v["notes"]
+        .as_array()
+        .expect("notes")
+        .iter()
+        .filter_map(|n| n.as_str())
+        .collect();
+    let want = "position 1: accelerating (ω and ε in one sense) by the plans: links 3, 4; decelerating: links 2; the analytic twin agrees";
+    assert!(notes.contains(&want), "{notes:#?}");
+    let scene = tmm::load(&root().join("constructions/six-bar.toml")).expect("six-bar");
+    let plates = tmm::render::plates(&scene, tmm::Lang::Ru, Drafting::EXACT).expect("plates");
+    let texts: Vec<&String> = plates
+        .iter()
+        .flat_map(|(_, p)| p.texts.iter().flat_map(|t| t.lines.iter()))
+        .collect();
+    assert!(
+        texts
+            .iter()
+            .any(|t| *t == "Пол. 1: ускоренно вращаются звенья 3, 4; замедленно — 2"),
+        "{texts:#?}"
+    );
+}

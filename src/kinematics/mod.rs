@@ -15,12 +15,14 @@ mod hodograph;
 mod plans;
 mod rocker;
 mod table;
+mod verdict;
 
 pub use diagrams::{diagrams, Diagrams};
 pub use hodograph::{hodograph, hodograph_point};
 pub use plans::{acceleration, acceleration_indices, drawn_points, velocity, Velocity};
 pub use rocker::{rocker_diagram, rocker_link, RockerDiagram};
 pub use table::analytic_table;
+pub use verdict::{verdict_notes, verdicts, Turning, Verdict};
 
 use crate::calculus::{self, Diagram, Scales};
 use crate::check::Row;

@@ -489,6 +489,14 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         plan_tables(w, Symbol::Acceleration, captions);
         let captions = (T::AngularAccelerationsTable, T::AngularAccelerationErrors);
         plan_tables(w, Symbol::AngularAcceleration, captions);
+        // Which links turn faster, which slower (seed 001 l. 686–689).
+        let verdicts = crate::kinematics::verdicts(&w.report.rows);
+        if !verdicts.is_empty() {
+            w.doc.say(w.word(T::VerdictIntro));
+            for line in crate::sheets::verdict_lines(&verdicts, lang) {
+                w.doc.say(&line);
+            }
+        }
         let word = S::AccelerationPlanAt.get(lang);
         w.figures(
             KINEMATICS,

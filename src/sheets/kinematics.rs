@@ -68,6 +68,7 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
             sc.a.caption(lang)
         ),
     ];
+    lines.extend(verdict_lines(&crate::kinematics::verdicts(&a.rows()), lang));
     let mut diagrams: Run = Vec::new();
     if let Some(d) = &a.diagrams {
         let w = a.w1.abs();
@@ -415,4 +416,37 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
         lang,
     );
     vec![analytic, errors]
+}
+
+/// The acceleration plans' verdict per position (seed 001 l. 686–689), as the plans give it:
+/// «Положение 1: ускоренно вращаются звенья 3, 4; замедленно — 2».
+pub(crate) fn verdict_lines(verdicts: &[crate::kinematics::Verdict], lang: Lang) -> Vec<String> {
+    use crate::kinematics::Turning;
+    let mut positions: Vec<&str> = verdicts.iter().map(|v| v.position.as_str()).collect();
+    positions.dedup();
+    positions
+        .into_iter()
+        .map(|p| {
+            let links = |t: Turning| {
+                let l: Vec<&str> = verdicts
+                    .iter()
+                    .filter(|v| v.position == p && v.graphical == t)
+                    .map(|v| v.link.as_str())
+                    .collect();
+                if l.is_empty() {
+                    Text::NoLinks.get(lang).to_string()
+                } else {
+                    l.join(", ")
+                }
+            };
+            format!(
+                "{} {p}: {} {}; {} {}",
+                Text::Pos.get(lang),
+                Text::AcceleratingLinks.get(lang),
+                links(Turning::Accelerating),
+                Text::DeceleratingLinks.get(lang),
+                links(Turning::Decelerating)
+            )
+        })
+        .collect()
 }

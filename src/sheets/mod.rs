@@ -9,6 +9,7 @@ mod forces;
 mod friction;
 mod gears;
 mod layout;
+pub(crate) use kinematics::verdict_lines;
 pub use layout::ScaleKey;
 mod kinematics;
 mod pack;

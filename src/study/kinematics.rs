@@ -318,7 +318,11 @@ impl<'s> Session<'s> {
             })
         }));
         notes.extend(crate::kinematics::near_pivot_notes(&k.plan, k.w1));
-        rep.rows.extend(k.rows());
+        let rows = k.rows();
+        notes.extend(crate::kinematics::verdict_notes(
+            &crate::kinematics::verdicts(&rows),
+        ));
+        rep.rows.extend(rows);
         rep.tables.push(k.table.as_ref().clone());
         rep.notes.extend(notes);
         Ok(())

@@ -94,6 +94,11 @@ catalogue! {
         DiagramAll => ("Величины, найденные по диаграммам", "Величини, знайдені за діаграмами", "The quantities read off the diagrams"),
         AngularVelocitiesTable => ("Угловые скорости звеньев", "Кутові швидкості ланок", "Angular velocities of the links"),
         VelocityPlanWord => ("План скоростей", "План швидкостей", "Velocity plan"),
+        VerdictIntro => (
+            "Сравнивая направления угловых скоростей и угловых ускорений звеньев, определяем характер их движения: при совпадающих направлениях звено вращается ускоренно, при противоположных — замедленно.",
+            "Порівнюючи напрямки кутових швидкостей і кутових прискорень ланок, визначаємо характер їхнього руху: за однакових напрямків ланка обертається прискорено, за протилежних — сповільнено.",
+            "Comparing the senses of the links' angular velocities and angular accelerations: a link whose ε turns with its ω accelerates, one whose ε opposes it decelerates."
+        ),
         AccelerationPlans => ("Планы ускорений", "Плани прискорень", "Acceleration plans"),
         CrankPinAcceleration => ("Ускорение пальца кривошипа (ω₁ = const):", "Прискорення пальця кривошипа (ω₁ = const):", "The acceleration of the crank pin (ω₁ = const):"),
         AccelerationScale => ("Масштаб плана ускорений:", "Масштаб плану прискорень:", "The acceleration plan's scale:"),
