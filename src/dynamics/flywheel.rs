@@ -66,8 +66,13 @@ pub fn size(spec: &FlywheelSpec, j: f64) -> Size {
     }
 }
 
-/// The flywheel's axial half-sections (the axis horizontal) with its main dimensions, at a
-/// round μ_l that draws D about 120 mm.
+/// The flywheel as a part drawing (seed 000 L1447–1481), at a round μ_l that draws D about
+/// 120 mm: at the left its axial section through two spokes — the rim and the hub cut and
+/// hatched, the spokes cut lengthwise left unhatched (ГОСТ 2.305), tapering from b₁ at the
+/// hub to b₂ at the rim — with ⌀D, ⌀d₃, ⌀d₂, ⌀d₁ on extension lines and b, b_ст; at the
+/// right its front view: the rim, the hub and the bore, four spokes tapering from a₁ to a₂,
+/// one with its elliptical section a × b superimposed, hatched. A disc is drawn in section
+/// alone.
 ///
 /// # Errors
 /// No scale can be chosen (a flywheel of zero size).
@@ -85,9 +90,20 @@ pub fn section(size: &Size, ctx: &Context) -> Result<Figure, DynamicsError> {
         value: size.d,
     })?;
     let mm = |name: &str| mu.to_mm(size.dim(name).unwrap_or(0.0));
+    let text = |name: &str| {
+        let v = size.dim(name).unwrap_or(0.0) * 1e3;
+        crate::scale::format_fixed(v, 0, crate::scale::Lang::En)
+    };
     let mut rec = Recorder::in_context("flywheel", mu, ctx);
     let d = mu.to_mm(size.d);
-    let outline = |rec: &mut Recorder, note: &str, x: (f64, f64), y: (f64, f64)| {
+    let rim = size.kind == FlywheelKind::Rim;
+    let (b, hub_len, bore, hub) = if rim {
+        (mm("b"), mm("b_{ст}"), mm("d_{1}"), mm("d_{2}"))
+    } else {
+        (mm("b"), mm("b"), mm("d_{1}"), mm("d_{1}"))
+    };
+    // The cut material, each half (above and below the axis) an outline hatched at 45°.
+    let cut = |rec: &mut Recorder, note: &str, x: (f64, f64), y: (f64, f64)| {
         for sgn in [1.0, -1.0] {
             let pts = vec![
                 DVec2::new(x.0, sgn * y.0),
@@ -95,46 +111,35 @@ pub fn section(size: &Size, ctx: &Context) -> Result<Figure, DynamicsError> {
                 DVec2::new(x.1, sgn * y.1),
                 DVec2::new(x.0, sgn * y.1),
             ];
-            rec.draw(
-                note.to_string(),
-                Item::Polyline {
-                    points: pts,
-                    closed: true,
-                },
-                Role::Given,
-                &[],
-            );
+            hatched(rec, note, &pts);
         }
     };
-    let (b, hub_len, bore, hub) = match size.kind {
-        FlywheelKind::Rim => (mm("b"), mm("b_{ст}"), mm("d_{1}"), mm("d_{2}")),
-        FlywheelKind::Disc => (mm("b"), mm("b"), mm("d_{1}"), mm("d_{1}")),
-    };
-    match size.kind {
-        FlywheelKind::Rim => {
-            outline(
-                &mut rec,
-                "rim",
-                (-b / 2.0, b / 2.0),
-                (mm("d_{3}") / 2.0, d / 2.0),
-            );
-            outline(
-                &mut rec,
-                "hub",
-                (-hub_len / 2.0, hub_len / 2.0),
-                (bore / 2.0, hub / 2.0),
-            );
-            let w = mm("b_{2}");
-            outline(
-                &mut rec,
-                "spoke",
-                (-w / 2.0, w / 2.0),
-                (hub / 2.0, mm("d_{3}") / 2.0),
-            );
+    if rim {
+        let inner = mm("d_{3}") / 2.0;
+        cut(&mut rec, "rim", (-b / 2.0, b / 2.0), (inner, d / 2.0));
+        cut(
+            &mut rec,
+            "hub",
+            (-hub_len / 2.0, hub_len / 2.0),
+            (bore / 2.0, hub / 2.0),
+        );
+        // The spokes cut lengthwise: not hatched, b₁ at the hub to b₂ at the rim.
+        let (w1, w2) = (mm("b_{1}") / 2.0, mm("b_{2}") / 2.0);
+        for sgn in [1.0, -1.0] {
+            for side in [1.0, -1.0] {
+                rec.draw(
+                    "spoke",
+                    Item::Segment(Segment::new(
+                        DVec2::new(side * w1, sgn * hub / 2.0),
+                        DVec2::new(side * w2, sgn * inner),
+                    )),
+                    Role::Given,
+                    &[],
+                );
+            }
         }
-        FlywheelKind::Disc => {
-            outline(&mut rec, "disc", (-b / 2.0, b / 2.0), (bore / 2.0, d / 2.0));
-        }
+    } else {
+        cut(&mut rec, "disc", (-b / 2.0, b / 2.0), (bore / 2.0, d / 2.0));
     }
     let span = hub_len.max(b) / 2.0 + 8.0;
     rec.draw(
@@ -143,50 +148,175 @@ pub fn section(size: &Size, ctx: &Context) -> Result<Figure, DynamicsError> {
         Role::Axis,
         &[],
     );
-    let mut dims: Vec<(&str, f64)> = vec![("D", d)];
-    if size.kind == FlywheelKind::Rim {
-        dims.push(("d_{3}", mm("d_{3}")));
-        dims.push(("d_{2}", hub));
+    // The diameters at the section's left, each on extension lines from its edge.
+    let mut diameters: Vec<(&str, f64, f64)> = vec![("D", d, b / 2.0)];
+    if rim {
+        diameters.push(("d_{3}", mm("d_{3}"), b / 2.0));
+        diameters.push(("d_{2}", hub, hub_len / 2.0));
     }
-    dims.push(("d_{1}", bore));
-    let mut x = hub_len.max(b) / 2.0;
-    for (name, len) in dims {
-        x += 9.0;
-        let id = rec.draw(
+    diameters.push(("d_{1}", bore, hub_len / 2.0));
+    let left = hub_len.max(b) / 2.0;
+    for (k, (name, len, edge)) in diameters.into_iter().enumerate() {
+        let at = left + 9.0 * (k as f64 + 1.0);
+        rec.dimension(
             format!("dimension {name}"),
-            Item::Dimension {
-                from: DVec2::new(x, -len / 2.0),
-                to: DVec2::new(x, len / 2.0),
-                offset: 0.0,
-            },
-            Role::Dimension,
+            (
+                DVec2::new(-edge, -len / 2.0),
+                DVec2::new(-edge, len / 2.0),
+                at - edge,
+            ),
+            format!("⌀{}", text(name)),
+        );
+    }
+    rec.dimension(
+        "dimension b",
+        (
+            DVec2::new(-b / 2.0, d / 2.0),
+            DVec2::new(b / 2.0, d / 2.0),
+            6.0,
+        ),
+        text("b"),
+    );
+    if rim {
+        // b_ст in the bore, clear of the spokes and of the rim's sides.
+        rec.dimension(
+            "dimension b_ст",
+            (
+                DVec2::new(-hub_len / 2.0, -bore / 2.0),
+                DVec2::new(hub_len / 2.0, -bore / 2.0),
+                4.0,
+            ),
+            text("b_{ст}"),
+        );
+        front(&mut rec, size, mu, span + d / 2.0 + 12.0);
+    }
+    Ok(rec.finish())
+}
+
+/// The front view of a flywheel with spokes, centred `x` mm right of the section.
+fn front(rec: &mut Recorder, size: &Size, mu: Scale, x: f64) {
+    let mm = |name: &str| mu.to_mm(size.dim(name).unwrap_or(0.0));
+    let c = DVec2::new(x, 0.0);
+    let (outer, inner, hub, bore) = (
+        mu.to_mm(size.d) / 2.0,
+        mm("d_{3}") / 2.0,
+        mm("d_{2}") / 2.0,
+        mm("d_{1}") / 2.0,
+    );
+    for (note, radius) in [("rim", outer), ("rim", inner), ("hub", hub), ("bore", bore)] {
+        rec.draw(
+            note,
+            Item::Circle(crate::geom::Circle { center: c, radius }),
+            Role::Given,
             &[],
         );
-        let value = crate::scale::format_fixed(len * mu.value() * 1e3, 0, crate::scale::Lang::En);
-        rec.label(
-            id,
-            format!("⌀{value}"),
-            DVec2::new(x, len / 4.0),
-            DVec2::new(1.0, 0.0),
-        );
-        let _ = name;
     }
+    let reach = outer + 5.0;
+    for dir in [DVec2::X, DVec2::Y] {
+        rec.draw(
+            "centre line",
+            Item::Segment(Segment::new(c - dir * reach, c + dir * reach)),
+            Role::Axis,
+            &[],
+        );
+    }
+    // Four spokes, a₁ wide at the hub to a₂ at the rim.
+    let (a1, a2) = (mm("a_{1}") / 2.0, mm("a_{2}") / 2.0);
+    for dir in [DVec2::X, DVec2::Y, -DVec2::X, -DVec2::Y] {
+        let n = dir.perp();
+        for side in [1.0, -1.0] {
+            rec.draw(
+                "spoke",
+                Item::Segment(Segment::new(
+                    c + dir * hub + n * (side * a1),
+                    c + dir * inner + n * (side * a2),
+                )),
+                Role::Given,
+                &[],
+            );
+        }
+    }
+    // The spoke's elliptical section, superimposed on the right spoke halfway along it:
+    // a across the spoke, b along it.
+    let mid = c + DVec2::X * ((hub + inner) / 2.0);
+    let (a, b) = (
+        (mm("a_{1}") + mm("a_{2}")) / 4.0,
+        (mm("b_{1}") + mm("b_{2}")) / 4.0,
+    );
+    let ellipse: Vec<DVec2> = (0..48)
+        .map(|k| {
+            let t = std::f64::consts::TAU * f64::from(k) / 48.0;
+            mid + DVec2::new(b * t.cos(), a * t.sin())
+        })
+        .collect();
+    hatched(rec, "the spoke's section", &ellipse);
+}
+
+/// A closed outline of cut material, hatched at 45° 2 mm apart (ГОСТ 2.306).
+fn hatched(rec: &mut Recorder, note: &str, outline: &[DVec2]) {
     let id = rec.draw(
-        "dimension b",
-        Item::Dimension {
-            from: DVec2::new(-b / 2.0, d / 2.0),
-            to: DVec2::new(b / 2.0, d / 2.0),
-            offset: 6.0,
+        note.to_string(),
+        Item::Polyline {
+            points: outline.to_vec(),
+            closed: true,
         },
-        Role::Dimension,
+        Role::Given,
         &[],
     );
-    let value = crate::scale::format_fixed(b * mu.value() * 1e3, 0, crate::scale::Lang::En);
-    rec.label(
-        id,
-        value,
-        DVec2::new(0.0, d / 2.0 + 6.0),
-        DVec2::new(0.0, 1.0),
-    );
-    Ok(rec.finish())
+    // The outline is finite (the scale is): the hatcher refuses only non-finite ones.
+    let strokes = crate::geom::hatch(outline, 2.0, std::f64::consts::FRAC_PI_4).unwrap_or_default();
+    for s in strokes {
+        rec.draw("hatching", Item::Segment(s), Role::Hatch, &[id]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::construct::Drafting;
+
+    /// The seed's flywheel of J = 17.1 kg·m² (000 §5: D = 785, d₁ = 157, d₂ = 235.5, d₃ = 628,
+    /// b = 98.1, b_ст = 103 mm) drawn as a part: its diameters and widths dimensioned with
+    /// the values its proportions give, the rim and the hub cut and hatched on both sides of
+    /// the axis, the spokes lengthwise unhatched, the front view's four spokes and the
+    /// spoke's section hatched.
+    #[test]
+    fn the_part_drawing_dimensions_its_size_and_hatches_the_cut() {
+        let size = size(&FlywheelSpec::SEED_RIM, 17.1);
+        assert!((size.d - 0.7852).abs() < 5e-4, "{}", size.d);
+        let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("context");
+        let f = section(&size, &ctx).expect("drawing");
+        let mut texts: Vec<String> = f
+            .steps
+            .iter()
+            .filter(|s| s.note.starts_with("dimension "))
+            .filter_map(|s| s.label.as_ref().map(|l| l.text.clone()))
+            .collect();
+        texts.sort();
+        let mut want: Vec<String> = [
+            ("D", "⌀"),
+            ("d_{3}", "⌀"),
+            ("d_{2}", "⌀"),
+            ("d_{1}", "⌀"),
+            ("b", ""),
+            ("b_{ст}", ""),
+        ]
+        .iter()
+        .map(|(n, pre)| format!("{pre}{:.0}", size.dim(n).expect("dim") * 1e3))
+        .collect();
+        want.sort();
+        assert_eq!(texts, want);
+        let count = |note: &str| f.steps.iter().filter(|s| s.note == note).count();
+        // Rim and hub: a half above and below the axis each, hatched; the spoke's section.
+        assert_eq!(
+            count("rim"),
+            2 + 2,
+            "two halves in section, two circles in front"
+        );
+        assert_eq!(count("hub"), 2 + 1);
+        assert_eq!(count("the spoke's section"), 1);
+        assert!(count("hatching") > 20, "{}", count("hatching"));
+        // Spokes: two tapered sides each, two in section, four in front.
+        assert_eq!(count("spoke"), 2 * 2 + 4 * 2);
+    }
 }
