@@ -27,6 +27,9 @@ const THIN_LINE: f64 = 10.0;
 /// label such as `d₅ ≡ e ≡ s₅` touched by the end of a direction line reads as crossed out
 /// however short the piece, and its corner places keep it clear (issue 19, item 6).
 const JOINT_STRUCK: f64 = 25.0;
+/// The same for any other label: a label a line runs through reads as struck out, so a
+/// place further out (the outer rings of [`candidates`]) is taken before it.
+const STRUCK: f64 = 25.0;
 /// Cost of touching a main symbol (pair, block, arrowhead, dot), and per mm² of it covered;
 /// the same for a thin one.
 const MAIN_AREA: f64 = 40.0;
@@ -263,10 +266,10 @@ impl<'a> Placer<'a> {
             cost += match &o.shape {
                 Shape::Line(a, b) => {
                     let inside = clipped_length(*a, *b, &padded);
-                    let struck = if inside > 0.0 && job.request.names.len() > 1 {
-                        JOINT_STRUCK
-                    } else {
-                        0.0
+                    let struck = match (inside > 0.0, job.request.names.len() > 1) {
+                        (false, _) => 0.0,
+                        (true, true) => JOINT_STRUCK,
+                        (true, false) => STRUCK,
                     };
                     struck + inside * if o.main { MAIN_LINE } else { THIN_LINE }
                 }
