@@ -454,3 +454,29 @@ fn every_scene_prints_the_scales_it_gives() {
         }
     }
 }
+
+/// Every scene of `constructions/` names its set in the title block (issue 19's audit:
+/// four-bar, slider-crank, tangent and v-engine printed an empty designation field and an
+/// empty rotated box), and no two scenes share one.
+#[test]
+fn every_scene_has_a_designation_of_its_own() {
+    let mut seen: Vec<(String, String)> = Vec::new();
+    let mut files: Vec<PathBuf> = std::fs::read_dir(root().join("constructions"))
+        .expect("constructions/")
+        .map(|e| e.expect("an entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 18, "{} scenes", files.len());
+    for path in files {
+        let s = scene::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let d = s.title.designation.clone();
+        let name = path.file_stem().map(|n| n.to_string_lossy().into_owned());
+        let name = name.unwrap_or_default();
+        assert!(!d.trim().is_empty(), "{name}: no designation in [task]");
+        if let Some((other, _)) = seen.iter().find(|(_, o)| *o == d) {
+            panic!("{name} and {other} both carry {d}");
+        }
+        seen.push((name, d));
+    }
+}

@@ -351,26 +351,16 @@ fn hatch_lean(s: &Segment, hatch: Side) -> DVec2 {
     (n - u).normalize_or_zero() * HATCH_MM
 }
 
-/// A smooth curve through `pts`: Catmull–Rom pieces written as cubic Béziers.
+/// A smooth curve through `pts`: a diagram's curve shape-preserving, others Catmull–Rom
+/// (see [`curve`](super::curve)).
 fn smooth(d: &mut PathData, pts: &[DVec2], closed: bool) {
-    let n = pts.len();
-    if n < 3 {
+    if pts.len() < 3 {
         d.polyline(pts);
         return;
     }
-    let at = |i: isize| -> DVec2 {
-        let i = if closed {
-            i.rem_euclid(n as isize)
-        } else {
-            i.clamp(0, n as isize - 1)
-        };
-        pts[i as usize]
-    };
     d.move_to(pts[0]);
-    let pieces = if closed { n } else { n - 1 } as isize;
-    for i in 0..pieces {
-        let (p0, p1, p2, p3) = (at(i - 1), at(i), at(i + 1), at(i + 2));
-        d.cubic_to(p1 + (p2 - p0) / 6.0, p2 - (p3 - p1) / 6.0, p2);
+    for [c1, c2, to] in super::curve::pieces(pts, closed) {
+        d.cubic_to(c1, c2, to);
     }
     if closed {
         d.close();

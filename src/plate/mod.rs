@@ -27,6 +27,7 @@
 //! ```
 
 pub mod chart;
+pub mod curve;
 mod fonts;
 mod ink;
 mod items;

@@ -4,7 +4,7 @@
 //! whose points coincide on the sheet (within [`COINCIDENT_MM`]) become one joint label written
 //! as the textbook does, `p ≡ b₃ ≡ d` (the figure's order, the pole first). Every label then
 //! tries positions around its point — its preferred direction first, then sixteen directions
-//! at three distances, a joint label also from each corner of its point — and keeps the one
+//! at five distances, a joint label also from each corner of its point — and keeps the one
 //! that collides least with what is already placed (labels, captions, text blocks, tables)
 //! and with the lines and symbols of the drawing (the main lines weigh most), never leaving
 //! the frame nor entering the title block when it can help it. Crowded labels are placed first; the order is deterministic, so is the layout.
@@ -27,8 +27,10 @@ pub const COINCIDENT_MM: f64 = 0.3;
 pub const JOINT_SEPARATOR: &str = " ≡ ";
 /// Each further ring of candidate positions lies this much further from the point, mm.
 pub const SECOND_RING_MM: f64 = 3.0;
-/// Rings of candidate positions around a point.
-const RINGS: usize = 3;
+/// Rings of candidate positions around a point: the outer ones (9 and 12 mm further) are
+/// taken only when every nearer place is struck through by a line or covers another text (a
+/// force's label in a crowded group: `R₃₋₄ ≡ R₄₋₅` among G₄, G₅ and F_и₄, issue 19 item 6).
+const RINGS: usize = 5;
 /// Clearance kept between a label and other texts while placing, mm.
 const CLEARANCE_MM: f64 = 1.0;
 /// Directions tried around a point.

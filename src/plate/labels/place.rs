@@ -23,10 +23,11 @@ const OVER_POINT: f64 = 60.0;
 /// cheaper than one struck through by a construction line).
 const MAIN_LINE: f64 = 20.0;
 const THIN_LINE: f64 = 10.0;
-/// Cost of any line running into a joint label's box at all, over its cost per mm: a long
-/// label such as `d₅ ≡ e ≡ s₅` touched by the end of a direction line reads as crossed out
-/// however short the piece, and its corner places keep it clear (issue 19, item 6).
-const JOINT_STRUCK: f64 = 25.0;
+/// Cost of any line running into a label's box at all, over its cost per mm: a label a
+/// line runs through reads as struck out however short the piece (a long joint label such
+/// as `d₅ ≡ e ≡ s₅` touched by the end of a direction line), so its corner places and the
+/// outer rings of [`candidates`] are taken before it (issue 19, item 6).
+const STRUCK: f64 = 25.0;
 /// Cost of touching a main symbol (pair, block, arrowhead, dot), and per mm² of it covered;
 /// the same for a thin one.
 const MAIN_AREA: f64 = 40.0;
@@ -263,11 +264,7 @@ impl<'a> Placer<'a> {
             cost += match &o.shape {
                 Shape::Line(a, b) => {
                     let inside = clipped_length(*a, *b, &padded);
-                    let struck = if inside > 0.0 && job.request.names.len() > 1 {
-                        JOINT_STRUCK
-                    } else {
-                        0.0
-                    };
+                    let struck = if inside > 0.0 { STRUCK } else { 0.0 };
                     struck + inside * if o.main { MAIN_LINE } else { THIN_LINE }
                 }
                 Shape::Area(pts) => {
