@@ -82,8 +82,10 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
         diagrams.push((
             Block::view(
                 stack,
+                // The stack's caption names its three diagrams (the S and dS/dφ had none).
                 format!(
-                    "d²S/dφ²: H_{{2}} = {} {}",
+                    "S, dS/dφ, d²S/dφ²: H_{{1}} = {}, H_{{2}} = {} {}",
+                    dec(d.first.pole_mm),
                     dec(d.second.pole_mm),
                     Text::Millimetre.get(lang)
                 ),
