@@ -2,6 +2,8 @@
 //! a further sheet, and a view too large for any sheet at its given scale is refused naming
 //! the key and the largest scale that fits.
 
+mod support;
+
 use std::path::PathBuf;
 use tmm::construct::Drafting;
 use tmm::scale::Lang;
@@ -461,14 +463,7 @@ fn every_scene_prints_the_scales_it_gives() {
 #[test]
 fn every_scene_has_a_designation_of_its_own() {
     let mut seen: Vec<(String, String)> = Vec::new();
-    let mut files: Vec<PathBuf> = std::fs::read_dir(root().join("constructions"))
-        .expect("constructions/")
-        .map(|e| e.expect("an entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
-    assert!(files.len() >= 18, "{} scenes", files.len());
-    for path in files {
+    for path in support::scene_paths() {
         let s = scene::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let d = s.title.designation.clone();
         let name = path.file_stem().map(|n| n.to_string_lossy().into_owned());

@@ -22,7 +22,7 @@ pub use hodograph::{hodograph, hodograph_point};
 pub use plans::{acceleration, acceleration_indices, drawn_points, velocity, Velocity};
 pub use rocker::{rocker_diagram, rocker_link, RockerDiagram};
 pub use table::analytic_table;
-pub use verdict::{verdict_notes, verdicts, Turning, Verdict};
+pub use verdict::{by_position, verdict_notes, verdicts, Turning, Verdict};
 
 use crate::calculus::{self, Diagram, Scales};
 use crate::check::Row;

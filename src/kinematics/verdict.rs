@@ -93,41 +93,57 @@ pub fn verdicts(rows: &[Row]) -> Vec<Verdict> {
     out
 }
 
-/// The report's notes: per position, the links accelerating and decelerating by the plans,
-/// and whether the twin agrees.
-pub fn verdict_notes(verdicts: &[Verdict]) -> Vec<String> {
+/// The links by the plans at each position, in order: (position, accelerating links,
+/// decelerating links, the links whose twin's verdict differs).
+pub fn by_position(verdicts: &[Verdict]) -> Vec<(&str, [Vec<&str>; 3])> {
     let mut positions: Vec<&str> = verdicts.iter().map(|v| v.position.as_str()).collect();
     positions.dedup();
     positions
         .into_iter()
         .map(|p| {
-            let at: Vec<&Verdict> = verdicts.iter().filter(|v| v.position == p).collect();
-            let links = |t: Turning| {
-                let l: Vec<&str> = at
+            let links = |keep: &dyn Fn(&Verdict) -> bool| -> Vec<&str> {
+                verdicts
                     .iter()
-                    .filter(|v| v.graphical == t)
+                    .filter(|v| v.position == p && keep(v))
                     .map(|v| v.link.as_str())
-                    .collect();
-                if l.is_empty() {
-                    "none".to_string()
-                } else {
-                    format!("links {}", l.join(", "))
-                }
+                    .collect()
             };
-            let differ: Vec<String> = at
-                .iter()
-                .filter(|v| v.analytic.is_some_and(|a| a != v.graphical))
-                .map(|v| format!("link {}", v.link))
-                .collect();
+            let turning = |t: Turning| move |v: &Verdict| v.graphical == t;
+            (
+                p,
+                [
+                    links(&turning(Turning::Accelerating)),
+                    links(&turning(Turning::Decelerating)),
+                    links(&|v| v.analytic.is_some_and(|a| a != v.graphical)),
+                ],
+            )
+        })
+        .collect()
+}
+
+/// The report's notes: per position, the links accelerating and decelerating by the plans,
+/// and whether the twin agrees.
+pub fn verdict_notes(verdicts: &[Verdict]) -> Vec<String> {
+    let links = |l: &[&str]| {
+        if l.is_empty() {
+            "none".to_string()
+        } else {
+            format!("links {}", l.join(", "))
+        }
+    };
+    by_position(verdicts)
+        .into_iter()
+        .map(|(p, [up, down, differ])| {
+            let twin = if differ.is_empty() {
+                "the analytic twin agrees".to_string()
+            } else {
+                let l: Vec<String> = differ.iter().map(|l| format!("link {l}")).collect();
+                format!("the analytic twin differs for {}", l.join(", "))
+            };
             format!(
-                "position {p}: accelerating (ω and ε in one sense) by the plans: {}; decelerating: {}; {}",
-                links(Turning::Accelerating),
-                links(Turning::Decelerating),
-                if differ.is_empty() {
-                    "the analytic twin agrees".to_string()
-                } else {
-                    format!("the analytic twin differs for {}", differ.join(", "))
-                }
+                "position {p}: accelerating (ω and ε in one sense) by the plans: {}; decelerating: {}; {twin}",
+                links(&up),
+                links(&down)
             )
         })
         .collect()

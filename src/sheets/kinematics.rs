@@ -423,31 +423,23 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
 /// The acceleration plans' verdict per position (seed 001 l. 686–689), as the plans give it:
 /// «Положение 1: ускоренно вращаются звенья 3, 4; замедленно — 2».
 pub(crate) fn verdict_lines(verdicts: &[crate::kinematics::Verdict], lang: Lang) -> Vec<String> {
-    use crate::kinematics::Turning;
-    let mut positions: Vec<&str> = verdicts.iter().map(|v| v.position.as_str()).collect();
-    positions.dedup();
-    positions
+    let links = |l: &[&str]| {
+        if l.is_empty() {
+            Text::NoLinks.get(lang).to_string()
+        } else {
+            l.join(", ")
+        }
+    };
+    crate::kinematics::by_position(verdicts)
         .into_iter()
-        .map(|p| {
-            let links = |t: Turning| {
-                let l: Vec<&str> = verdicts
-                    .iter()
-                    .filter(|v| v.position == p && v.graphical == t)
-                    .map(|v| v.link.as_str())
-                    .collect();
-                if l.is_empty() {
-                    Text::NoLinks.get(lang).to_string()
-                } else {
-                    l.join(", ")
-                }
-            };
+        .map(|(p, [up, down, _])| {
             format!(
                 "{} {p}: {} {}; {} {}",
                 Text::Pos.get(lang),
                 Text::AcceleratingLinks.get(lang),
-                links(Turning::Accelerating),
+                links(&up),
                 Text::DeceleratingLinks.get(lang),
-                links(Turning::Decelerating)
+                links(&down)
             )
         })
         .collect()
