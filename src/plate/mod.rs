@@ -199,6 +199,12 @@ impl View {
         labels::joint_labels(figure)
     }
 
+    /// The length of the lines `figure` draws inside the box `lo`–`hi` (figure mm, y up), mm:
+    /// how much a label written there would be struck through.
+    pub fn line_length_in(figure: &Figure, lo: DVec2, hi: DVec2) -> f64 {
+        labels::line_length_in(figure, lo, hi)
+    }
+
     /// How far the figure's symbols (pairs and their ground, arrowheads, line widths) draw
     /// below its lowest point, mm (0 when nothing does).
     pub fn symbols_below(figure: &Figure) -> f64 {

@@ -66,8 +66,15 @@ impl Part {
 /// one fits the block's label margin or the gap between blocks).
 const LONG_LABEL_MM: f64 = 12.0;
 
-/// The box of `figure`'s long joint labels, each on the side of its point where it reaches
-/// least past the figure's bounds (figure mm, y up); `None` when it has none.
+/// Line length inside a label's box below which the box counts as clear, mm.
+const CLEAR_OF_LINES_MM: f64 = 0.5;
+
+/// The box of `figure`'s long joint labels, each on the side of its point that the
+/// figure's lines leave clear, and of two clear sides (or two struck) the one where it
+/// reaches least past the figure's bounds (figure mm, y up); `None` when it has none. A
+/// label at a point near the figure's edge, with the figure's lines on its inner side (the
+/// reactions `R₃₋₄ ≡ R₄₋₅` at the slide block, the load G₄ under it), is given its room
+/// outside.
 fn label_room(figure: &Figure) -> Option<(DVec2, DVec2)> {
     let (lo, hi) = figure.bounds()?;
     let gap = 2.0 * LABEL_GAP_MM;
@@ -75,18 +82,24 @@ fn label_room(figure: &Figure) -> Option<(DVec2, DVec2)> {
         .into_iter()
         .filter(|(_, _, size)| size.x > LONG_LABEL_MM)
         .map(|(at, _, size)| {
-            let right = (at.x + gap + size.x - hi.x).max(0.0);
-            let left = (lo.x - (at.x - gap - size.x)).max(0.0);
-            let x0 = if right <= left {
-                at.x + gap
-            } else {
-                at.x - gap - size.x
-            };
             let half = size.y * 0.5 + LABEL_GAP_MM;
-            (
-                DVec2::new(x0, at.y - half),
-                DVec2::new(x0 + size.x, at.y + half),
-            )
+            let room = |x0: f64| {
+                (
+                    DVec2::new(x0, at.y - half),
+                    DVec2::new(x0 + size.x, at.y + half),
+                )
+            };
+            let (right, left) = (room(at.x + gap), room(at.x - gap - size.x));
+            let struck =
+                |(a, b): (DVec2, DVec2)| View::line_length_in(figure, a, b) > CLEAR_OF_LINES_MM;
+            let past_right = (right.1.x - hi.x).max(0.0);
+            let past_left = (lo.x - left.0.x).max(0.0);
+            match (struck(right), struck(left)) {
+                (false, true) => right,
+                (true, false) => left,
+                _ if past_right <= past_left => right,
+                _ => left,
+            }
         })
         .reduce(|(a, b), (c, d)| (a.min(c), b.max(d)))
 }

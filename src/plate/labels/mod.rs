@@ -280,6 +280,23 @@ fn requests(
     (join_coincident(single), fixed)
 }
 
+/// The length of `figure`'s lines inside the box `lo`–`hi` (figure mm, y up), mm (see
+/// [`View::line_length_in`]).
+pub(super) fn line_length_in(figure: &crate::construct::Figure, lo: DVec2, hi: DVec2) -> f64 {
+    let map = Map::figure(DVec2::ZERO);
+    // Sheet y runs down.
+    let rect = Rect::new(DVec2::new(lo.x, -hi.y), DVec2::new(hi.x, -lo.y));
+    figure
+        .steps
+        .iter()
+        .flat_map(|s| item_outlines(&s.item, s.role, map))
+        .map(|o| match o.shape {
+            Shape::Line(a, b) => place::clipped_length(a, b, &rect),
+            Shape::Area(_) => 0.0,
+        })
+        .sum()
+}
+
 /// The joint labels of `figure` (see [`View::joint_labels`]).
 pub(super) fn joint_labels(figure: &crate::construct::Figure) -> Vec<(DVec2, String, DVec2)> {
     let view = View {
