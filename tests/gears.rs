@@ -821,3 +821,52 @@ fn the_plan_of_angular_velocities_names_every_ray_and_prints_mu_omega() {
         assert!(n >= omegas.len());
     }
 }
+
+/// A differential (W = 2) end to end: the James stage with its ring freed, the sun driven at
+/// 100 rpm and the ring at −50 rpm (`input2`, `n_input2`). Willis's formula
+/// (ω₃ − ω_H)/(ω₅ − ω_H) = −z₅/z₃ gives n_H = (z₃n₃ + z₅n₅)/(z₃ + z₅) = (2000 − 4000)/100
+/// = −20 rpm; the report's ω read off the triangles equal it to 1e-9, the note prints W = 2,
+/// and without the second speed the scene is refused on its key.
+#[test]
+fn a_differential_scene_solves_with_two_inputs() {
+    let wheels = "[[planetary.wheel]]\nname = \"3\"\nz = 20\nshaft = \"3\"\n[[planetary.wheel]]\nname = \"4\"\nz = 30\nshaft = \"4\"\n[[planetary.wheel]]\nname = \"5\"\nz = 80\nshaft = \"5\"\ninternal = true\n[[planetary.mesh]]\nwheels = [\"3\", \"4\"]\n[[planetary.mesh]]\nwheels = [\"4\", \"5\"]\n";
+    let head = "[planetary]\nmodule = 2.0\ninput = \"3\"\noutput = \"H\"\ncarrier = \"H\"\nsatellites = [\"4\"]\nn_input = 100.0\n";
+    let dir = scratch("differential");
+    let path = dir.join("differential.toml");
+    let text = format!("{head}input2 = \"5\"\nn_input2 = -50.0\n{wheels}");
+    std::fs::write(&path, text).expect("write scene");
+    let v = report(path.to_str().expect("utf-8"), None);
+    let rpm = std::f64::consts::PI / 30.0;
+    for (shaft, n) in [("3", 100.0), ("5", -50.0), ("H", -20.0)] {
+        let r = row(&v, &format!("omega_{shaft}"), "triangles");
+        let (g, a) = (num(r, "graphical"), num(r, "analytic"));
+        assert!((a - n * rpm).abs() < 1e-9 * 100.0 * rpm, "{shaft}: {a}");
+        assert!(
+            (g - a).abs() < 1e-9 * 100.0 * rpm,
+            "{shaft}: {g} against {a}"
+        );
+    }
+    let notes = notes(&v);
+    assert!(
+        notes.contains("W = 3n − 2p5 − p4 = 3·4 − 2·4 − 2 = 2"),
+        "{notes}"
+    );
+    let (ok, code, err) = run_scene(
+        "differential-one-speed",
+        &format!("{head}input2 = \"5\"\n{wheels}"),
+        &["check"],
+    );
+    assert!(
+        !ok && code == 2 && err.contains("planetary.n_input2"),
+        "{err}"
+    );
+    let (ok, code, err) = run_scene(
+        "differential-no-second",
+        &format!("{head}{wheels}"),
+        &["check"],
+    );
+    assert!(
+        !ok && code == 2 && err.contains("W = 3n − 2p₅ − p₄"),
+        "{err}"
+    );
+}

@@ -19,6 +19,7 @@ mod mesh;
 mod pair;
 mod rack;
 mod rows;
+mod scheme;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
@@ -36,7 +37,7 @@ pub use mesh::LAMBDA_MM;
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
 pub use rows::PairSeed;
-pub use train::{Mesh, Stage, Train, TrainError, Wheel};
+pub use train::{Mesh, Stage, Train, TrainError, TrainMobility, Wheel};
 
 use crate::scale::Scale;
 use thiserror::Error;
@@ -442,6 +443,24 @@ impl TrainStudy {
                 cells.join("; ")
             ));
         }
+        let m = t.mobility();
+        out.push(format!(
+            "train: W = 3n − 2p5 − p4 = 3·{} − 2·{} − {} = {}{}",
+            m.n,
+            m.p5,
+            m.p4,
+            m.w(),
+            match t.second {
+                Some((k, w)) => format!(
+                    " (a differential: the inputs {} and {}, n = {} and {} rpm)",
+                    t.shafts[t.input],
+                    t.shafts[k],
+                    num(n_in, 6),
+                    num(w * n_in, 6)
+                ),
+                None => String::new(),
+            }
+        ));
         out.push(format!(
             "train: u = {} by Willis{}; the output turns {} the input",
             num(self.ratio, 7),

@@ -172,6 +172,7 @@ fn wheel(name: &str, z: f64, shaft: usize) -> train::Wheel {
         z,
         shaft,
         internal: false,
+        module: None,
     }
 }
 
@@ -194,6 +195,7 @@ fn fixed_axes(
         carrier: None,
         satellites: vec![],
         module: 0.001,
+        second: None,
     }
 }
 

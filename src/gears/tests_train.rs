@@ -29,6 +29,7 @@ fn train(
             z: f64::from(*z),
             shaft: idx(s, &mut shafts),
             internal: *int,
+            module: None,
         })
         .collect();
     let w = |n: &str| ws.iter().position(|x| x.name == n).unwrap();
@@ -48,6 +49,7 @@ fn train(
         carrier,
         satellites,
         module: 0.002,
+        second: None,
     }
 }
 
@@ -106,6 +108,27 @@ fn seed000_reducer_by_willis_stages_and_triangles() {
     );
 }
 
+/// PZ2 example 1 as printed (L546): sun 1, satellite block 2–3, wheel 4 fixed, carrier H
+/// carrying wheel 5; 5–6–7 on fixed axes, 7 internal.
+fn pz2_example_1() -> Train {
+    train(
+        &[
+            ("A", "1", 88, false),
+            ("S", "2", 48, false),
+            ("S", "3", 4, false),
+            ("F", "4", 44, false),
+            ("H", "5", 25, false),
+            ("D", "6", 17, false),
+            ("E", "7", 100, true),
+        ],
+        &[("1", "2"), ("3", "4"), ("5", "6"), ("6", "7")],
+        ("A", "E"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    )
+}
+
 #[test]
 fn pz2_worked_examples_by_willis() {
     // Example 3: 1–2 internal, James stage 3–4–5 with the ring fixed: u1H = 20.
@@ -128,22 +151,7 @@ fn pz2_worked_examples_by_willis() {
     let tri = triangles::triangles(&ex3, 1.0, &ctx(0.0)).unwrap();
     assert!((tri.ratio - 20.0).abs() < 1e-9 * 20.0);
     // Example 1 as printed (not coaxial, Willis only): u17 = 20.
-    let ex1 = train(
-        &[
-            ("A", "1", 88, false),
-            ("S", "2", 48, false),
-            ("S", "3", 4, false),
-            ("F", "4", 44, false),
-            ("H", "5", 25, false),
-            ("D", "6", 17, false),
-            ("E", "7", 100, true),
-        ],
-        &[("1", "2"), ("3", "4"), ("5", "6"), ("6", "7")],
-        ("A", "E"),
-        Some("F"),
-        Some("H"),
-        &["S"],
-    );
+    let ex1 = pz2_example_1();
     assert!((ex1.ratio().unwrap() - 20.0).abs() < 1e-12);
     assert!(triangles::triangles(&ex1, 1.0, &ctx(0.0)).is_err());
     // Example 2 as printed: 32, not the printed 20 (33·45/(15·11) = 9, not 6).
@@ -175,7 +183,116 @@ fn pz2_worked_examples_by_willis() {
 fn a_train_that_is_not_determined_is_refused() {
     let mut t = reducer(29, 74);
     t.fixed = None;
-    assert!(matches!(t.willis(), Err(TrainError::Mobility { .. })));
+    let e = t.willis().unwrap_err();
+    assert!(
+        matches!(e, TrainError::Mobility { mobility, inputs: 1 } if mobility.w() == 2),
+        "{e}"
+    );
+}
+
+/// PZ2 examples 1 and 2 as the seed works them (L546–L621): W = 3n − 2p₅ − p₄ = 1, and the
+/// ratio by Willis, by the stages and by the velocity triangles. As printed with one module
+/// neither is coaxial (88 + 48 ≠ 4 + 44; 15 + 33 ≠ 11 + 45) and the triangles are refused;
+/// with the satellite's second mesh at the module that closes the carrier's arm
+/// (m′(z₃ + z₄) = m(z₁ + z₂)) they are drawn and read Willis's ratio to 1e-9.
+#[test]
+fn pz2_examples_1_and_2_by_the_triangles_with_a_stage_of_another_module() {
+    let m = 0.002;
+    let with_module = |t: &mut Train, names: [&str; 2], module: f64| {
+        for w in t
+            .wheels
+            .iter_mut()
+            .filter(|w| names.contains(&w.name.as_str()))
+        {
+            w.module = Some(module);
+        }
+    };
+    // Example 1: u₁₇ = (1 − 6)·(−4) = 20.
+    let mut ex1 = pz2_example_1();
+    // Example 2: 1–2 on fixed axes into the sun 3 (2 and 3 on one shaft), satellite block
+    // 4–5, wheel 6 fixed, carrier H out: u₁H = −4·(1 − 9) = 32 (the printed 20 is an erratum).
+    let mut ex2 = train(
+        &[
+            ("A", "1", 13, false),
+            ("B", "2", 52, false),
+            ("B", "3", 15, false),
+            ("S", "4", 33, false),
+            ("S", "5", 11, false),
+            ("F", "6", 45, false),
+        ],
+        &[("1", "2"), ("3", "4"), ("5", "6")],
+        ("A", "H"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    );
+    let ex1_mobility = train::TrainMobility { n: 5, p5: 5, p4: 4 };
+    let ex2_mobility = train::TrainMobility { n: 4, p5: 4, p4: 3 };
+    assert_eq!((ex1.mobility(), ex1.mobility().w()), (ex1_mobility, 1));
+    assert_eq!((ex2.mobility(), ex2.mobility().w()), (ex2_mobility, 1));
+    for t in [&ex1, &ex2] {
+        assert!(triangles::triangles(t, 1.0, &ctx(0.0)).is_err());
+    }
+    with_module(&mut ex1, ["3", "4"], m * (88.0 + 48.0) / (4.0 + 44.0));
+    with_module(&mut ex2, ["5", "6"], m * (15.0 + 33.0) / (11.0 + 45.0));
+    for (t, u) in [(&ex1, 20.0), (&ex2, 32.0)] {
+        let willis = t.ratio().unwrap();
+        assert!((willis - u).abs() < 1e-12 * u, "{willis}");
+        assert!((t.by_stages().unwrap() - u).abs() < 1e-12 * u);
+        let tri = triangles::triangles(t, 1.0, &ctx(0.0)).unwrap();
+        assert!((tri.ratio - willis).abs() < 1e-9 * u, "{}", tri.ratio);
+    }
+}
+
+/// A differential (W = 2, seed 002 L419): the James stage with its ring freed, the sun and
+/// the ring both driven. Willis's formula (ω_a − ω_H)/(ω_b − ω_H) = u_ab^(H) = −z_b/z_a gives
+/// ω_H = (z_a ω_a + z_b ω_b)/(z_a + z_b); the linear system and the triangles give every
+/// shaft's ω, equal to 1e-9. Without the second input it is refused: W = 2, one input.
+#[test]
+fn a_differential_solves_by_willis_and_by_the_triangles() {
+    for (za, zg, w_ring) in [(20, 30, -0.5), (17, 23, 0.25), (40, 20, 2.0), (24, 36, 0.0)] {
+        let zb = za + 2 * zg;
+        let mut t = train(
+            &[
+                ("A", "a", za, false),
+                ("S", "g", zg, false),
+                ("R", "b", zb, true),
+            ],
+            &[("a", "g"), ("g", "b")],
+            ("A", "H"),
+            None,
+            Some("H"),
+            &["S"],
+        );
+        assert_eq!(t.mobility().w(), 2);
+        assert!(matches!(
+            t.willis(),
+            Err(TrainError::Mobility { inputs: 1, .. })
+        ));
+        let ring = t.shafts.iter().position(|s| s == "R").unwrap();
+        t.second = Some((ring, w_ring));
+        let (fa, fb) = (f64::from(za), f64::from(zb));
+        let w_h = (fa + fb * w_ring) / (fa + fb);
+        let w = t.willis().unwrap();
+        let h = t.carrier.unwrap();
+        assert!((w[h] - w_h).abs() < 1e-12, "{} {w_h}", w[h]);
+        // The satellite by its mesh with the sun, the carrier's frame: z_g(ω_g − ω_H) = −z_a(ω_a − ω_H).
+        let s = t.satellites[0];
+        let w_g = w_h - fa / f64::from(zg) * (1.0 - w_h);
+        assert!((w[s] - w_g).abs() < 1e-12);
+        for omega_in in [1.0, -7.5] {
+            let tri = triangles::triangles(&t, omega_in, &ctx(0.0)).unwrap();
+            for (k, wk) in w.iter().enumerate() {
+                assert!(
+                    (tri.omega[k] - wk * omega_in).abs() < 1e-9 * omega_in.abs(),
+                    "shaft {k}: {} against {}",
+                    tri.omega[k],
+                    wk * omega_in
+                );
+            }
+            assert!((tri.ratio - 1.0 / w_h).abs() < 1e-9 / w_h.abs());
+        }
+    }
 }
 
 proptest! {

@@ -26,6 +26,10 @@ pub struct Wheel {
     pub shaft: usize,
     /// An internal (ring) gear.
     pub internal: bool,
+    /// The module of its meshes when not the train's, m: a stage of another module, as the
+    /// textbook's trains whose tooth sums do not close with one module (PZ2 examples 1 and 2)
+    /// are drawn coaxial.
+    pub module: Option<f64>,
 }
 
 /// A mesh of two wheels (indices into [`Train::wheels`]).
@@ -72,18 +76,41 @@ pub struct Train {
     pub satellites: Vec<usize>,
     /// The module of the drawing's radii r = m z/2, m.
     pub module: f64,
+    /// A differential's second input (W = 2): its shaft and its ω per unit ω_in.
+    pub second: Option<(usize, f64)>,
+}
+
+/// The train's mobility by Chebyshev's formula (seed 002 (2.1)), W = 3n − 2p₅ − p₄: every
+/// moving shaft (a wheel with its shaft, wheels on one shaft one link) a link turning in one
+/// lower pair, every mesh a higher pair.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TrainMobility {
+    /// n, the moving links.
+    pub n: usize,
+    /// p₅, the lower (turning) pairs.
+    pub p5: usize,
+    /// p₄, the higher pairs (meshes).
+    pub p4: usize,
+}
+
+impl TrainMobility {
+    /// W = 3n − 2p₅ − p₄.
+    pub fn w(&self) -> i64 {
+        let [n, p5, p4] = [self.n, self.p5, self.p4].map(|x| i64::try_from(x).unwrap_or(i64::MAX));
+        3 * n - 2 * p5 - p4
+    }
 }
 
 /// Why a train cannot be solved or drawn.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum TrainError {
-    /// The train's mobility is not 1 (too few or too many relations).
-    #[error("train: {equations} relations for {unknowns} shafts: the train's mobility is not 1 (W = 3n − 2p₅ − p₄ must be 1 with one input)")]
+    /// The train's mobility is not the number of its given inputs.
+    #[error("train: W = 3n − 2p₅ − p₄ = 3·{n} − 2·{p5} − {p4} = {w}, but {inputs} input(s) given: a train of mobility W needs W inputs (a differential, W = 2, its second input and speed)", n = .mobility.n, p5 = .mobility.p5, p4 = .mobility.p4, w = .mobility.w())]
     Mobility {
-        /// Relations (meshes, input, fixed).
-        equations: usize,
-        /// Shafts.
-        unknowns: usize,
+        /// n, p₅, p₄.
+        mobility: TrainMobility,
+        /// The inputs given (1, or 2 with a second input).
+        inputs: usize,
     },
     /// Every motion the meshes and the fixed shaft allow holds the input at rest.
     #[error("train: the meshes hold the input shaft {input} at rest: it cannot turn, the ratio is 0{}", still(.moving))]
@@ -130,9 +157,25 @@ fn still(moving: &[String]) -> String {
 }
 
 impl Train {
-    /// r = m z/2 of wheel `w`, m.
+    /// r = m z/2 of wheel `w` at its module, m.
     pub fn radius(&self, w: usize) -> f64 {
-        self.module * self.wheels[w].z / 2.0
+        self.wheels[w].module.unwrap_or(self.module) * self.wheels[w].z / 2.0
+    }
+
+    /// The mobility by Chebyshev's formula: the shafts but the fixed one move, each in one
+    /// turning pair (on the frame, or a satellite on the carrier), each mesh a higher pair.
+    pub fn mobility(&self) -> TrainMobility {
+        let n = self.shafts.len() - usize::from(self.fixed.is_some());
+        TrainMobility {
+            n,
+            p5: n,
+            p4: self.meshes.len(),
+        }
+    }
+
+    /// The number of inputs given: 1, or 2 for a differential's second.
+    pub fn inputs(&self) -> usize {
+        1 + usize::from(self.second.is_some())
     }
 
     pub(super) fn is_satellite(&self, shaft: usize) -> bool {
@@ -153,6 +196,9 @@ impl Train {
             (r, v)
         };
         rows.push(unit(self.input, 1.0));
+        if let Some((k, w)) = self.second {
+            rows.push(unit(k, w));
+        }
         if let Some(f) = self.fixed {
             rows.push(unit(f, 0.0));
         }
@@ -170,10 +216,12 @@ impl Train {
             }
             rows.push((r, 0.0));
         }
-        if rows.len() != n {
+        let mobility = self.mobility();
+        // rows: the inputs, the fixed shaft and the meshes, one per shaft when W is the inputs.
+        if mobility.w() != self.inputs() as i64 {
             return Err(TrainError::Mobility {
-                equations: rows.len(),
-                unknowns: n,
+                mobility,
+                inputs: self.inputs(),
             });
         }
         let relations: Vec<Vec<f64>> = rows[1..].iter().map(|r| r.0.clone()).collect();
@@ -464,22 +512,7 @@ impl Train {
         let n = self.shafts.len();
         let mut y: Vec<Option<f64>> = vec![None; n];
         y[self.input] = Some(0.0);
-        for _ in 0..2 * n + 2 {
-            for m in &self.meshes {
-                for (a, b) in [(m.0, m.1), (m.1, m.0)] {
-                    let (wa, wb) = (&self.wheels[a], &self.wheels[b]);
-                    if let (Some(ya), None) = (y[wa.shaft], y[wb.shaft]) {
-                        let pole = ya + self.radius(a);
-                        // A ring's centre lies below the pole, as does a wheel inside a ring.
-                        let yb = if wb.internal || wa.internal {
-                            pole - self.radius(b)
-                        } else {
-                            pole + self.radius(b)
-                        };
-                        y[wb.shaft] = Some(yb);
-                    }
-                }
-            }
+        for pass in 0..2 * n + 2 {
             if let Some(h) = self.carrier {
                 if y[h].is_none() {
                     // Coaxial with a placed central wheel that meshes a satellite.
@@ -492,6 +525,35 @@ impl Train {
                                 }
                             }
                         }
+                    }
+                }
+            }
+            for m in &self.meshes {
+                for (a, b) in [(m.0, m.1), (m.1, m.0)] {
+                    let (wa, wb) = (&self.wheels[a], &self.wheels[b]);
+                    // From a satellite to a central wheel once the carrier's axis is set
+                    // (a later pass), unless nothing else sets it.
+                    let to_central = self.is_satellite(wa.shaft) && !self.is_satellite(wb.shaft);
+                    let carrier_unset = self.carrier.is_some_and(|h| y[h].is_none());
+                    if to_central && carrier_unset && pass < n {
+                        continue;
+                    }
+                    if let (Some(ya), None) = (y[wa.shaft], y[wb.shaft]) {
+                        let (ra, rb) = (self.radius(a), self.radius(b));
+                        // A ring's centre lies below the pole, as does a wheel inside a ring.
+                        let up = if wb.internal || wa.internal {
+                            ya + ra - rb
+                        } else {
+                            ya + ra + rb
+                        };
+                        // From a satellite to a central wheel: the side that sets it on the
+                        // carrier's axis (the David train's second external mesh turns back).
+                        let down = 2.0 * ya - up;
+                        let axis = self.carrier.and_then(|h| y[h]).filter(|_| to_central);
+                        y[wb.shaft] = Some(match axis {
+                            Some(c) if (down - c).abs() < (up - c).abs() => down,
+                            _ => up,
+                        });
                     }
                 }
             }

@@ -43,6 +43,9 @@ pub const PLAN_REACH_MM: f64 = 100.0;
 /// the height an A3 sheet leaves a drawing beside its data and table.
 const TRIANGLES_SPAN_MM: f64 = 180.0;
 
+/// The gap between the kinematic scheme and the leftmost velocity, mm.
+const SCHEME_GAP_MM: f64 = 24.0;
+
 /// How far the reading line runs past the outermost intercepts, mm.
 const PLAN_OVERHANG_MM: f64 = 8.0;
 
@@ -114,6 +117,25 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
         DVec2::new(0.0, yy(ys[train.input])),
         DVec2::new((pin - ys[train.input]) * omega_in / mv, yy(pin)),
     ));
+    // A differential's second input: its line through its axis and the velocity at its
+    // first pole (the carrier's: at its first satellite's axis).
+    if let Some((k, w)) = train.second {
+        let height = train
+            .meshes
+            .iter()
+            .enumerate()
+            .find(|(_, m)| train.wheels[m.0].shaft == k || train.wheels[m.1].shaft == k)
+            .map(|(i, _)| poles[i])
+            .or_else(|| {
+                (Some(k) == train.carrier).then(|| train.satellites.first().map(|&s| ys[s]))?
+            })
+            .filter(|h| (h - ys[k]).abs() > 1e-12)
+            .ok_or_else(|| bad("the second input has no pole off its axis"))?;
+        lines[k] = Some((
+            DVec2::new(0.0, yy(ys[k])),
+            DVec2::new((height - ys[k]) * w * omega_in / mv, yy(height)),
+        ));
+    }
     for _ in 0..2 * n + 2 {
         for k in 0..n {
             if lines[k].is_some() {
@@ -348,6 +370,20 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
     if wo.abs() < 1e-300 {
         return Err(TrainError::OutputAtRest);
     }
+    // The kinematic scheme to the left of the velocities, at their heights.
+    let leftmost = lines
+        .iter()
+        .flatten()
+        .flat_map(|l| [at(l, yy(lo)), at(l, yy(hi))])
+        .fold(0.0_f64, f64::min);
+    super::scheme::draw_scheme(
+        &mut rec,
+        train,
+        (&ys, &poles),
+        yy,
+        ml,
+        leftmost - SCHEME_GAP_MM,
+    );
     Ok(Triangles {
         scale_l: mu_l,
         scale_v: mu_v,

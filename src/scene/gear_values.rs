@@ -22,15 +22,20 @@ pub(super) fn module_mm(check: &mut Checker, key: &str, v: f64) -> f64 {
 
 /// A tooth number (5 … 1000).
 pub(super) fn teeth(check: &mut Checker, key: &str, v: i64) -> u32 {
+    teeth_from(check, key, v, 5)
+}
+
+/// A tooth number from `least` to 1000 at `key` (a train's wheel is counted, not cut: 4).
+pub(super) fn teeth_from(check: &mut Checker, key: &str, v: i64, least: u32) -> u32 {
     match u32::try_from(v) {
-        Ok(z) if (5..=1000).contains(&z) => z,
+        Ok(z) if (least..=1000).contains(&z) => z,
         _ => {
             check.push(
                 key,
                 Some(v.to_string()),
-                "expected a tooth number from 5 to 1000",
+                format!("expected a tooth number from {least} to 1000"),
             );
-            5
+            least.max(5)
         }
     }
 }

@@ -4,7 +4,7 @@
 //! is refused with the key that makes it so.
 
 use super::check::{item, join, Checker};
-use super::gear_values::{module_mm, teeth};
+use super::gear_values::{module_mm, teeth_from};
 use super::keys::Key;
 use crate::gears::{Mesh, PlanetarySpec, Train};
 use crate::gears::{TrainError, Wheel};
@@ -23,6 +23,8 @@ pub(crate) struct RawPlanetary {
     pub satellites: Vec<String>,
     pub n_input: Option<f64>,
     pub n_output: Option<f64>,
+    pub input2: Option<String>,
+    pub n_input2: Option<f64>,
     pub count: Option<i64>,
     #[serde(default)]
     pub wheel: Vec<RawWheel>,
@@ -38,6 +40,7 @@ pub(crate) struct RawWheel {
     pub z: Option<i64>,
     pub shaft: Option<String>,
     pub internal: Option<bool>,
+    pub module: Option<f64>,
 }
 
 /// `[[planetary.mesh]]`.
@@ -70,8 +73,9 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
         ("input", &raw.input, true),
         ("output", &raw.output, true),
         ("fixed", &raw.fixed, false),
+        ("input2", &raw.input2, true),
     ];
-    let [carrier, input, output, fixed] =
+    let [carrier, input, output, fixed, input2] =
         roles.map(|(k, v, add)| shaft_of(check, &mut shafts, &key(k), v.as_ref(), add));
     let satellites: Vec<usize> = raw
         .satellites
@@ -94,6 +98,7 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
     }
     distinct_shafts(check, raw, [input, output, fixed, carrier], &satellites);
     let (n_input, n_output, count) = speeds(check, raw);
+    let second = second_input(check, raw, [input, output, fixed, input2], n_input);
     let (Some(input), Some(output)) = (input, output) else {
         return None;
     };
@@ -110,6 +115,7 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
         carrier,
         satellites,
         module,
+        second,
     };
     if !drawable(check, raw, &train) {
         return None;
@@ -145,10 +151,13 @@ fn wheels(check: &mut Checker, raw: &RawPlanetary) -> (Vec<String>, Vec<Wheel>) 
                 "expected a wheel name unique in the train",
             );
         }
+        // A train's wheel is counted, not cut: the textbook's pinion shaft of 4 teeth (PZ2
+        // example 1) is allowed.
         let z = match check.required(&k("z"), w.z, "a tooth number") {
-            Some(z) => teeth(check, &k("z"), z),
+            Some(z) => teeth_from(check, &k("z"), z, 4),
             None => 5,
         };
+        let module = w.module.map(|m| module_mm(check, &k("module"), m));
         let shaft = check.name(&k("shaft"), w.shaft.as_ref());
         let idx = shafts.iter().position(|s| *s == shaft).unwrap_or_else(|| {
             shafts.push(shaft.clone());
@@ -159,9 +168,57 @@ fn wheels(check: &mut Checker, raw: &RawPlanetary) -> (Vec<String>, Vec<Wheel>) 
             z: f64::from(z),
             shaft: idx,
             internal: w.internal.unwrap_or(false),
+            module,
         });
     }
     (shafts, wheels)
+}
+
+/// A differential's second input (`input2` with `n_input2`, rpm, and `n_input`): its shaft and
+/// its ω per unit ω_in; refused when it is the input, the output or the fixed shaft, or a
+/// speed is missing.
+fn second_input(
+    check: &mut Checker,
+    raw: &RawPlanetary,
+    [input, output, fixed, input2]: [Option<usize>; 4],
+    n_input: Option<f64>,
+) -> Option<(usize, f64)> {
+    let Some(k) = input2 else {
+        if raw.n_input2.is_some() {
+            check.push(
+                key("input2"),
+                None,
+                "missing: expected the second input's shaft for n_input2",
+            );
+        }
+        return None;
+    };
+    if [input, output, fixed].contains(&Some(k)) {
+        check.push(
+            key("input2"),
+            raw.input2.as_ref().map(|s| format!("{s:?}")),
+            "expected a shaft other than the input, the output and the fixed shaft",
+        );
+        return None;
+    }
+    let Some(n2) = raw.n_input2 else {
+        check.push(
+            key("n_input2"),
+            None,
+            "missing: expected the second input's speed in rpm",
+        );
+        return None;
+    };
+    let n2 = check.bounded(&key("n_input2"), n2, 1e6, "a speed in rpm within ±1e6");
+    let Some(n1) = n_input else {
+        check.push(
+            key("n_input"),
+            None,
+            "missing: expected the first input's speed in rpm (a differential has two given speeds)",
+        );
+        return None;
+    };
+    (n1 != 0.0).then_some((k, n2 / n1))
 }
 
 /// `[[planetary.mesh]]`: two different wheels by name, not both internal.

@@ -150,6 +150,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         );
         blocks.push(view(&figure, caption, Key::PlanetaryModule, tri.scale_v));
         let tr_ = &t.spec.train;
+        lines.push(train_mobility_line(tr_));
         for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
             let Some(s) = s else { continue };
             lines.push(format!(
@@ -246,5 +247,17 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
         },
         rows,
         lang,
+    )
+}
+
+/// The train's mobility as the textbook writes it: W = 3n − 2p₅ − p₄ = 3·4 − 2·4 − 3 = 1.
+fn train_mobility_line(t: &crate::gears::Train) -> String {
+    let m = t.mobility();
+    format!(
+        "W = 3n − 2p_{{5}} − p_{{4}} = 3·{} − 2·{} − {} = {}",
+        m.n,
+        m.p5,
+        m.p4,
+        m.w()
     )
 }
