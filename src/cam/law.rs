@@ -26,6 +26,14 @@ pub enum Law {
     Trapezoidal,
     /// The 3-4-5 polynomial S = h(10u³ − 15u⁴ + 6u⁵); no shock.
     Polynomial345,
+    /// Linear with blends (seed 001 L1590, fig. 67): uniform motion over the middle of the
+    /// phase, rounded at both ends by parabolic blends of constant acceleration over the
+    /// share `blend` of the phase each; the acceleration is finite (soft shocks at 0,
+    /// blend, 1 − blend, 1) and grows as the blends shrink.
+    LinearBlended {
+        /// The share of the phase each blend takes, 0 < blend ≤ ½ (½: the "+ −" law).
+        blend: f64,
+    },
 }
 
 /// The shock a law gives at the ends of its phase (and inside it).
@@ -59,6 +67,7 @@ impl Law {
             Law::Sine => "sine",
             Law::Trapezoidal => "trapezoidal",
             Law::Polynomial345 => "polynomial-345",
+            Law::LinearBlended { .. } => "linear-blended",
         }
     }
 
@@ -66,7 +75,9 @@ impl Law {
     pub fn shock(self) -> Shock {
         match self {
             Law::Uniform => Shock::Rigid,
-            Law::ConstantAcceleration { .. } | Law::Cosine => Shock::Soft,
+            Law::ConstantAcceleration { .. } | Law::Cosine | Law::LinearBlended { .. } => {
+                Shock::Soft
+            }
             Law::Sine | Law::Trapezoidal | Law::Polynomial345 => Shock::None,
         }
     }
@@ -75,6 +86,8 @@ impl Law {
     pub fn breaks(self) -> Vec<f64> {
         match self {
             Law::ConstantAcceleration { ratio } => vec![ratio],
+            Law::LinearBlended { blend } if blend < 0.5 => vec![blend, 1.0 - blend],
+            Law::LinearBlended { .. } => vec![0.5],
             _ => Vec::new(),
         }
     }
@@ -102,6 +115,18 @@ impl Law {
                 (u - t.sin() / (2.0 * PI), 1.0 - t.cos(), 2.0 * PI * t.sin())
             }
             Law::Trapezoidal => trapezoid(u),
+            Law::LinearBlended { blend: b } => {
+                // The middle's velocity v: S = v(1 − 2b) + 2·vb/2 = v(1 − b) = 1.
+                let v = 1.0 / (1.0 - b);
+                if u < b || (u == b && !after) {
+                    (v * u * u / (2.0 * b), v * u / b, v / b)
+                } else if u < 1.0 - b || (u == 1.0 - b && !after) {
+                    (v * (u - b / 2.0), v, 0.0)
+                } else {
+                    let w = 1.0 - u;
+                    (1.0 - v * w * w / (2.0 * b), v * w / b, -v / b)
+                }
+            }
             Law::Polynomial345 => {
                 let (u2, u3) = (u * u, u * u * u);
                 (

@@ -431,6 +431,8 @@ fn laws_are_consistent_with_their_derivatives() {
         Law::Sine,
         Law::Trapezoidal,
         Law::Polynomial345,
+        Law::LinearBlended { blend: 0.2 },
+        Law::LinearBlended { blend: 0.05 },
     ];
     for law in laws {
         let (f0, ..) = law.eval(0.0, true);
@@ -452,6 +454,24 @@ fn laws_are_consistent_with_their_derivatives() {
             );
             let _ = b;
         }
+    }
+    // Linear with blends (seed 001 L1590): the middle at the uniform velocity 1/(1 − b),
+    // the blends' acceleration ±1/(b(1 − b)); at b = ½ it is the symmetric "+ −" law.
+    for b in [0.05, 0.1, 0.25, 0.4] {
+        let l = Law::LinearBlended { blend: b };
+        assert_eq!(l.breaks(), vec![b, 1.0 - b]);
+        let (_, v, a) = l.eval(0.5, true);
+        assert!((v - 1.0 / (1.0 - b)).abs() < 1e-12 && a == 0.0);
+        let (_, _, a) = l.eval(b / 2.0, true);
+        assert!((a - 1.0 / (b * (1.0 - b))).abs() < 1e-9, "{a}");
+    }
+    for k in 0..=20 {
+        let u = f64::from(k) / 20.0;
+        let a = Law::LinearBlended { blend: 0.5 }.eval(u, true);
+        let b = Law::ConstantAcceleration { ratio: 0.5 }.eval(u, true);
+        assert!(
+            (a.0 - b.0).abs() < 1e-12 && (a.1 - b.1).abs() < 1e-12 && (a.2 - b.2).abs() < 1e-12
+        );
     }
     // The trapezoidal law with straight ramps over eighths: f(½) = 3A/32 = ½, A = 16/3.
     let (_, _, a) = Law::Trapezoidal.eval(0.25, true);
@@ -477,13 +497,14 @@ mod props {
     use super::*;
     use proptest::prelude::*;
 
-    fn law(k: u8, ratio: f64) -> Law {
-        match k % 6 {
+    fn law(k: u8, ratio: f64, blend: f64) -> Law {
+        match k % 7 {
             0 => Law::Uniform,
             1 => Law::ConstantAcceleration { ratio },
             2 => Law::Cosine,
             3 => Law::Sine,
             4 => Law::Trapezoidal,
+            5 => Law::LinearBlended { blend },
             _ => Law::Polynomial345,
         }
     }
@@ -496,12 +517,13 @@ mod props {
         /// the nodes the inversion's roller centres are the exact pitch curve.
         #[test]
         fn translating_cams_bind_at_lambda_max(
-            k in 0u8..6, j in 1usize..6, rise in 60f64..150.0, ret in 60f64..150.0,
+            k in 0u8..7, j in 1usize..6, rise in 60f64..150.0, ret in 60f64..150.0,
             far in 0f64..40.0, stroke in 0.01f64..0.06, e in 0f64..0.01, gamma in 45f64..70.0,
             n in 6usize..16,
         ) {
-            // The "+ −" law's jump on a node: its analogue is integrated exactly.
-            let l = law(k, j as f64 / n as f64);
+            // The "+ −" law's jump and the blends' ends on nodes: their analogues are
+            // integrated exactly.
+            let l = law(k, j as f64 / n as f64, j.min(n / 2) as f64 / n as f64);
             let near = 360.0 - rise - ret - far;
             let s = CamSpec {
                 phases: Phases {
@@ -527,7 +549,7 @@ mod props {
             let worst = cam.worst_angle();
             prop_assert!(worst <= lmax + 1e-6, "{} > {}", worst.to_degrees(), 90.0 - gamma);
             prop_assert!(worst >= lmax - 2e-3, "{} < {}", worst.to_degrees(), 90.0 - gamma);
-            if matches!(l, Law::ConstantAcceleration { .. } | Law::Uniform) {
+            if matches!(l, Law::ConstantAcceleration { .. } | Law::Uniform | Law::LinearBlended { .. }) {
                 for (g, x) in cam.inversion.centres.iter().zip(cam.exact_centres()) {
                     prop_assert!(g.distance(x) < 1e-9, "{g} vs {x}");
                 }

@@ -18,13 +18,14 @@ const FOLLOWERS: [(&str, Kind); 3] = [
 ];
 /// The laws a scene may name, each written as [`Law::key`] gives it (the "+ −" law's ratio
 /// is the scene's `ratio`, set after).
-const LAWS: [Law; 6] = [
+const LAWS: [Law; 7] = [
     Law::Uniform,
     Law::ConstantAcceleration { ratio: 0.5 },
     Law::Cosine,
     Law::Sine,
     Law::Trapezoidal,
     Law::Polynomial345,
+    Law::LinearBlended { blend: 0.1 },
 ];
 /// The closures, as written: geometric (the whole cycle), force (spring, the rise only).
 const CLOSURES: [(&str, Closure); 2] =
@@ -54,6 +55,9 @@ const GAMMA_MIN_DEG: (f64, f64) = (10.0, 80.0);
 /// The "+ −" law's share of positive acceleration: beyond it one acceleration is over 19
 /// times the other and the diagrams cannot be drawn at one scale.
 const RATIO: (f64, f64) = (0.1, 0.9);
+/// The share of each blend of the "linear with blends" law: below 0.05 its acceleration
+/// is over 20 times the uniform velocity's and the diagrams cannot be drawn at one scale.
+const BLEND: (f64, f64) = (0.05, 0.5);
 /// The pole distances H₁, H₂, mm: within a sheet.
 const POLE_MM: (f64, f64) = (5.0, 200.0);
 /// The shortest rise or return, degrees.
@@ -67,6 +71,7 @@ pub(crate) struct RawCam {
     pub law: Option<String>,
     pub return_law: Option<String>,
     pub ratio: Option<f64>,
+    pub blend: Option<f64>,
     pub phases: Option<Vec<f64>>,
     pub stroke: Option<f64>,
     pub swing: Option<f64>,
@@ -175,9 +180,25 @@ fn laws(check: &mut Checker, raw: &RawCam) -> (Law, Law) {
         }
         None => 0.5,
     };
+    let blend = match raw.blend {
+        Some(b) if b.is_finite() && b >= BLEND.0 && b <= BLEND.1 => b,
+        Some(b) => {
+            check.push(
+                key("blend"),
+                Some(number(b)),
+                format!(
+                    "expected the share of the phase each blend takes, {} ≤ blend ≤ {}",
+                    BLEND.0, BLEND.1
+                ),
+            );
+            0.1
+        }
+        None => 0.1,
+    };
     let law_of = |check: &mut Checker, k: &str, v: Option<&String>| -> Law {
         match check.word(&key(k), v, &LAWS.map(|law| (law.key(), law))) {
             Some(Law::ConstantAcceleration { .. }) => Law::ConstantAcceleration { ratio },
+            Some(Law::LinearBlended { .. }) => Law::LinearBlended { blend },
             Some(law) => law,
             None => Law::Cosine,
         }

@@ -179,6 +179,14 @@ fn law_name(law: Law, lang: Lang) -> String {
                 format_sig(ratio, 3, lang)
             )
         }
+        Law::LinearBlended { blend } => {
+            return format!(
+                "{} ({} {})",
+                CamText::LinearBlended.get(lang),
+                CamText::Blend.get(lang),
+                format_sig(blend, 3, lang)
+            )
+        }
         Law::Uniform => CamText::Uniform,
         Law::Cosine => CamText::Cosine,
         Law::Sine => CamText::Sine,
