@@ -21,7 +21,8 @@ fn report(drafting: f64) -> tmm::Report {
 #[test]
 fn exact_reading_agrees_with_the_twins() {
     let r = report(0.0);
-    assert_eq!(r.rows.len(), 20);
+    // 20 rows of the six seed cases, 4 of the slider (φ, R₀, N, ΔP).
+    assert_eq!(r.rows.len(), 24);
     for (row, rel) in r.rows.iter().zip(r.rel_errors()) {
         let rel = rel.unwrap_or(0.0).abs();
         assert!(rel < 1e-12, "{}: {rel}", row.quantity());
@@ -35,6 +36,10 @@ fn exact_reading_agrees_with_the_twins() {
     };
     assert!((value("F_P_W3") - 15.1).abs() < 1e-9);
     assert!((value("F_Pslide_W3") - 1500.0).abs() < 1e-9);
+    // The slider within the static limit: the reserve 100(sin 15° − 0,5 cos 15°) < 0.
+    let reserve = 100.0 * (15f64.to_radians().sin() - 0.5 * 15f64.to_radians().cos());
+    assert!((value("F_dP_rest") - reserve).abs() < 1e-9, "{}", value("F_dP_rest"));
+    assert!(r.notes.iter().any(|n| n.contains("rest: α = 15.00°") && n.contains("at rest by the triangle")));
     assert!(r.notes.iter().any(|n| n.contains("erratum")));
     assert!(r.notes.iter().any(|n| n.contains("misprints")));
 }

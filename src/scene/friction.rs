@@ -4,7 +4,7 @@
 
 use super::check::{item, join, number, quoted, Checker};
 use crate::forces::friction::{
-    CaseKind, FrictionCase, Incline, Journal, Motion, Rolling, Screw, Wedge,
+    CaseKind, FrictionCase, Incline, Journal, Motion, Rolling, Screw, Slider, Wedge,
 };
 use crate::scale::Quantity;
 use serde::Deserialize;
@@ -16,12 +16,13 @@ const MAX_FORCE: f64 = 1e9;
 /// The largest coefficient of friction a scene may give.
 const MAX_F: f64 = 5.0;
 /// The kinds, as written.
-const KINDS: [(&str, Kind); 5] = [
+const KINDS: [(&str, Kind); 6] = [
     ("incline", Kind::Incline),
     ("wedge", Kind::Wedge),
     ("screw", Kind::Screw),
     ("journal", Kind::Journal),
     ("rolling", Kind::Rolling),
+    ("slider", Kind::Slider),
 ];
 
 /// The kind of a friction case a scene names.
@@ -32,6 +33,7 @@ enum Kind {
     Screw,
     Journal,
     Rolling,
+    Slider,
 }
 
 impl Kind {
@@ -51,6 +53,7 @@ impl Kind {
             Kind::Screw => &["load", "f", "lead", "profile", "radius", "motion"],
             Kind::Journal => &["load", "f", "radius", "rotation"],
             Kind::Rolling => &["load", "roller_weight", "diameter", "k1", "k2", "f1", "f2"],
+            Kind::Slider => &["load", "f", "f0", "angle"],
         }
     }
 }
@@ -71,6 +74,7 @@ pub(crate) struct RawCase {
     pub name: Option<String>,
     pub load: Option<f64>,
     pub f: Option<f64>,
+    pub f0: Option<f64>,
     pub scale_f: Option<f64>,
     pub angle: Option<f64>,
     pub force_angle: Option<f64>,
@@ -94,6 +98,7 @@ impl RawCase {
         let numbers = [
             ("load", self.load),
             ("f", self.f),
+            ("f0", self.f0),
             ("angle", self.angle),
             ("force_angle", self.force_angle),
             ("groove", self.groove),
@@ -169,6 +174,7 @@ pub(crate) fn friction(check: &mut Checker, raw: Option<RawFriction>) -> Vec<Fri
                 ),
             }),
             Kind::Rolling => rolling(check, &base, c),
+            Kind::Slider => slider(check, &base, c),
         };
         out.push(FrictionCase {
             name,
@@ -209,6 +215,31 @@ fn case_name(
         check.push(key, Some(quoted(&name)), expected);
     }
     name
+}
+
+/// A slider pressed at `angle` from the normal; f₀ (static) defaults to f and is not below it.
+fn slider(check: &mut Checker, base: &str, c: &RawCase) -> CaseKind {
+    let f = coefficient(check, base, "f", c.f);
+    let f0 = match c.f0 {
+        Some(v) => {
+            let f0 = coefficient(check, base, "f0", Some(v));
+            if f0 < f {
+                let expected = format!(
+                    "expected the static coefficient f₀ ≥ f = {} (a slider at rest holds at least as well as a sliding one)",
+                    number(f)
+                );
+                check.push(join(base, "f0"), Some(number(v)), expected);
+            }
+            f0
+        }
+        None => f,
+    };
+    CaseKind::Slider(Slider {
+        load: force(check, base, "load", c.load),
+        f,
+        f0,
+        alpha: angle(check, base, "angle", c.angle, None, (0.0, 89.0), true),
+    })
 }
 
 /// An inclined plane.
@@ -373,7 +404,7 @@ mod tests {
         let s = load(&path).unwrap_or_else(|e| panic!("{e}"));
         assert!(s.mechanism.is_none());
         assert_eq!(s.plates, vec![PlateKind::Friction]);
-        assert_eq!(s.friction.len(), 6);
+        assert_eq!(s.friction.len(), 7);
         match s.friction[3].kind {
             CaseKind::Screw(c) => {
                 assert!((c.radius - 0.009).abs() < 1e-15);
@@ -384,6 +415,13 @@ mod tests {
         match s.friction[5].kind {
             CaseKind::Rolling(c) => {
                 assert!((c.k1 - 0.05e-3).abs() < 1e-18 && (c.diameter - 0.1).abs() < 1e-15);
+            }
+            other => panic!("{other:?}"),
+        }
+        match s.friction[6].kind {
+            CaseKind::Slider(c) => {
+                assert_eq!((c.f, c.f0), (0.2, 0.5));
+                assert!((c.alpha - 15f64.to_radians()).abs() < 1e-15);
             }
             other => panic!("{other:?}"),
         }

@@ -9,8 +9,8 @@ use super::layout::{lay_out_smallest, Block, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
 use crate::forces::friction::{
-    incline_twin, journal_twin, rolling_twin, screw_twin, wedge_twin, CaseKind, Drawing,
-    DrawingKind, Motion, Solved,
+    incline_twin, journal_twin, rolling_twin, screw_twin, slider_twin, wedge_twin, CaseKind,
+    Drawing, DrawingKind, Motion, SliderState, Solved,
 };
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang, Quantity};
@@ -38,6 +38,7 @@ fn what(kind: &CaseKind, d: DrawingKind, lang: Lang) -> String {
         (DrawingKind::Scheme, CaseKind::Screw(c)) => (FrictionText::Screw, Some(c.motion)),
         (DrawingKind::Scheme, CaseKind::Journal(_)) => (FrictionText::Journal, None),
         (DrawingKind::Scheme, CaseKind::Rolling(_)) => (FrictionText::Rolling, None),
+        (DrawingKind::Scheme, CaseKind::Slider(_)) => (FrictionText::Slider, None),
         (DrawingKind::Polygon | DrawingKind::Frictionless, _) => (FrictionText::Triangle, None),
         (DrawingKind::Flanks, _) => (FrictionText::Flanks, None),
         (DrawingKind::Balance, _) => (FrictionText::Balance, None),
@@ -114,6 +115,28 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
                 s = sign(c.motion)
             );
             locking(first, t.self_braking.then_some(format!("{n}: α ≤ φ")), lang)
+        }
+        CaseKind::Slider(c) => {
+            let t = slider_twin(c);
+            let (cmp, state) = match t.state {
+                SliderState::Rest => ("<", FrictionText::AtRest),
+                SliderState::Uniform => ("=", FrictionText::Uniform),
+                SliderState::Accelerating => (">", FrictionText::Accelerating),
+            };
+            // At rest the static cone and the static friction's reserve.
+            let (phi, f) = if t.state == SliderState::Rest {
+                (format!("φ_{{0}} = {}", deg(t.phi0, lang)), "f_{0}")
+            } else {
+                (format!("φ = {}", deg(t.phi, lang)), "f")
+            };
+            vec![format!(
+                "{n}: N = P·cos α = {} {newton}, P_{{1}} = P·sin α = {} {newton}; ΔP = P_{{1}} − {f}·N = {} {newton}; α = {} {cmp} {phi} — {}",
+                num(t.n, lang),
+                num(t.p1, lang),
+                num(t.net, lang),
+                deg(c.alpha, lang),
+                state.get(lang)
+            )]
         }
         CaseKind::Wedge(c) => {
             let t = wedge_twin(c);

@@ -1,6 +1,6 @@
 //! Friction as the textbook draws it (seed 001, lectures 9–12): the friction angle and cone,
 //! the total reaction turned from the normal by φ against the relative velocity, uniform
-//! motion on an inclined plane, the V-groove (wedge) slider, the screw, the revolute pair with
+//! motion on an inclined plane, a slider's state against the static limit, the V-groove (wedge) slider, the screw, the revolute pair with
 //! its friction circle, and rolling friction (worked example W3).
 //!
 //! Every case is three things side by side: a **construction** through the recorder (the
@@ -24,6 +24,7 @@ mod incline;
 mod journal;
 mod rolling;
 mod screw;
+mod slider;
 #[cfg(test)]
 mod tests;
 mod wedge;
@@ -32,6 +33,7 @@ pub use incline::{incline_twin, InclineTwin};
 pub use journal::{journal_twin, JournalTwin};
 pub use rolling::{rolling_twin, RollingTwin, Slide};
 pub use screw::{screw_twin, ScrewTwin};
+pub use slider::{slider_twin, SliderState, SliderTwin};
 pub use wedge::{wedge_twin, WedgeTwin};
 
 use crate::check::{Key, Method, Row, Symbol};
@@ -210,6 +212,20 @@ pub struct Rolling {
     pub f2: f64,
 }
 
+/// A slider on a plane pressed by a force at an angle from the normal (its weight on an
+/// incline alike).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Slider {
+    /// The force P, N (> 0).
+    pub load: f64,
+    /// The coefficient of sliding friction f.
+    pub f: f64,
+    /// The coefficient of static friction f₀ (≥ f).
+    pub f0: f64,
+    /// The angle α of P from the plane's normal, radians, in [0, π/2).
+    pub alpha: f64,
+}
+
 /// The kind of a friction case with its data (SI).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum CaseKind {
@@ -223,10 +239,13 @@ pub enum CaseKind {
     Journal(Journal),
     /// Rolling friction (rollers).
     Rolling(Rolling),
+    /// A slider's state: at rest, uniform, accelerating.
+    Slider(Slider),
 }
 
 impl CaseKind {
-    /// The scene word of the kind (`incline`, `wedge`, `screw`, `journal`, `rolling`).
+    /// The scene word of the kind (`incline`, `wedge`, `screw`, `journal`, `rolling`,
+    /// `slider`).
     pub fn word(&self) -> &'static str {
         match self {
             CaseKind::Incline(_) => "incline",
@@ -234,6 +253,7 @@ impl CaseKind {
             CaseKind::Screw(_) => "screw",
             CaseKind::Journal(_) => "journal",
             CaseKind::Rolling(_) => "rolling",
+            CaseKind::Slider(_) => "slider",
         }
     }
 }
@@ -401,6 +421,7 @@ pub fn solve(case: &FrictionCase, ctx: &Context) -> Result<Solved, FrictionError
         CaseKind::Screw(c) => screw::solve(case, c, ctx, &wrap),
         CaseKind::Journal(c) => journal::solve(case, c, ctx, &wrap),
         CaseKind::Rolling(c) => rolling::solve(case, c, ctx, &wrap),
+        CaseKind::Slider(c) => slider::solve(case, c, ctx, &wrap),
     }
 }
 

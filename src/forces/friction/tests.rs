@@ -369,3 +369,59 @@ proptest! {
 fn feasible_up(c: &Incline) -> bool {
     incline::feasible("c", c, friction_angle(c.f)).is_ok()
 }
+
+/// A slider pressed at α (seed 001 L1238–1268): at rest for α < φ₀, uniform at α = φ (= φ₀),
+/// accelerating beyond, whatever P is; the triangles P + R + F_и = 0 read R, N = P·cos α and
+/// ΔP (at rest the static reserve P(sin α − f₀ cos α) < 0, sliding the net force
+/// P(sin α − f cos α)) against the twin, and tell the same state. Between φ and φ₀ (f₀ > f)
+/// the slider at rest stays: the static limit holds.
+#[test]
+fn a_slider_is_at_rest_moves_uniformly_or_accelerates_as_its_force_meets_the_cone() {
+    let f = 0.15;
+    let phi = f64::atan(f);
+    let cases = [
+        (5f64.to_radians(), f, SliderState::Rest),
+        (phi, f, SliderState::Uniform),
+        (20f64.to_radians(), f, SliderState::Accelerating),
+        (10f64.to_radians(), 0.2, SliderState::Rest),
+        (12f64.to_radians(), 0.2, SliderState::Accelerating),
+    ];
+    for (alpha, f0, state) in cases {
+        for p in [1.0, 250.0, 1e5] {
+            let c = Slider {
+                load: p,
+                f,
+                f0,
+                alpha,
+            };
+            let t = slider_twin(&c);
+            assert_eq!(t.state, state, "α = {}°", alpha.to_degrees());
+            assert!((t.n - p * alpha.cos()).abs() < 1e-12 * p);
+            // At rest the reserve of static friction, sliding the net force.
+            let f_state = if state == SliderState::Rest { f0 } else { f };
+            assert!((t.net - p * (alpha.sin() - f_state * alpha.cos())).abs() < 1e-12 * p);
+            assert_eq!(t.net < -1e-12 * p, state == SliderState::Rest);
+            assert_eq!(t.net.abs() < 1e-12 * p, state == SliderState::Uniform);
+            let s = solve(&case("s", CaseKind::Slider(c)), &ctx(0.0)).unwrap();
+            for r in s.rows() {
+                assert!(
+                    (r.graphical - r.analytic).abs() <= 1e-9 * p.max(1.0),
+                    "{:?}: {} against {}",
+                    r.key,
+                    r.graphical,
+                    r.analytic
+                );
+            }
+            let word = match state {
+                SliderState::Rest => "at rest by the angles, at rest by the triangle",
+                SliderState::Uniform => {
+                    "uniform motion by the angles, uniform motion by the triangle"
+                }
+                SliderState::Accelerating => {
+                    "accelerating by the angles, accelerating by the triangle"
+                }
+            };
+            assert!(s.notes[0].contains(word), "{}", s.notes[0]);
+        }
+    }
+}

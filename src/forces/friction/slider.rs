@@ -1,0 +1,263 @@
+//! A slider on a plane pressed by a force P at the angle α from the normal (seed 001
+//! L1205–1268, Fig. 43–45): N = P·cos α, P₁ = P·sin α along the plane, the friction force
+//! F = f·N. The slider is at rest while α < φ₀ (the static limit, φ₀ = arctg f₀, F₀ ≤ N·f₀),
+//! moves uniformly at α = φ and accelerates when α > φ, whatever P is: the state is the
+//! force's line against the friction cone. Its weight on an inclined plane (Fig. 43) is the
+//! same case with P = G and α the slope.
+//!
+//! The construction: the scheme with the friction cone and P; the triangle P + R₀ + F_и = 0
+//! with R₀ along the static cone's generator (turned by φ₀ against the motion) and F_и = −m·a
+//! along the plane: a negative F_и is the static friction's reserve P₁ − f₀·N, the slider
+//! stays; otherwise the triangle with R along the sliding cone's generator (φ) measures the
+//! net force ΔP = P₁ − f·N driving it (zero: uniform motion).
+
+use super::draw::{angle_mark, arrow, cone, thin_line, triangle, turned};
+use super::{
+    friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Reading,
+    Slider, Solved,
+};
+use crate::check::Symbol;
+use crate::construct::{ConstructionError, Context, Item, Role};
+use crate::geom::{DVec2, Segment, Side};
+
+/// What the slider does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SliderState {
+    /// α < φ₀: the force's line inside the cone of static friction, the slider stays.
+    Rest,
+    /// α = φ: on the cone's generator, uniform motion (the friction balances P₁).
+    Uniform,
+    /// α > φ (and past the static limit): P₁ exceeds the friction, the slider accelerates.
+    Accelerating,
+}
+
+/// How near α must be to φ for the motion to count as uniform, rad.
+const UNIFORM_RAD: f64 = 1e-9;
+
+/// The closed form of a slider pressed at α.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SliderTwin {
+    /// φ = arctg f, rad.
+    pub phi: f64,
+    /// φ₀ = arctg f₀, rad.
+    pub phi0: f64,
+    /// N = P·cos α, N.
+    pub n: f64,
+    /// P₁ = P·sin α, N.
+    pub p1: f64,
+    /// The total reaction on its cone's generator, N/cos φ (at rest N/cos φ₀), N.
+    pub r: f64,
+    /// ΔP = P₁ − f·N = P(sin α − f cos α), N: the net force along the plane when it slides;
+    /// at rest P₁ − f₀·N < 0, the static friction's reserve.
+    pub net: f64,
+    /// The state.
+    pub state: SliderState,
+}
+
+/// The twin: the components of P and the state by α against φ and φ₀.
+pub fn slider_twin(c: &Slider) -> SliderTwin {
+    let (phi, phi0) = (friction_angle(c.f), friction_angle(c.f0));
+    let (n, p1) = (c.load * c.alpha.cos(), c.load * c.alpha.sin());
+    let state = if c.alpha < phi0 - UNIFORM_RAD {
+        SliderState::Rest
+    } else if (c.alpha - phi).abs() <= UNIFORM_RAD {
+        SliderState::Uniform
+    } else {
+        SliderState::Accelerating
+    };
+    // At rest the static cone decides: the reserve P₁ − f₀·N (< 0); sliding, P₁ − f·N.
+    let f_state = if state == SliderState::Rest {
+        c.f0
+    } else {
+        c.f
+    };
+    let phi_state = friction_angle(f_state);
+    SliderTwin {
+        phi,
+        phi0,
+        n,
+        p1,
+        r: n / phi_state.cos(),
+        net: p1 - f_state * n,
+        state,
+    }
+}
+
+/// P acting on the slider: pressing into the plane at α from the normal, leaning along +x.
+fn p_vector(c: &Slider) -> DVec2 {
+    DVec2::new(c.alpha.sin(), -c.alpha.cos()) * c.load
+}
+
+/// Construct the case and read it.
+pub(super) fn solve(
+    case: &FrictionCase,
+    c: &Slider,
+    ctx: &Context,
+    wrap: &dyn Fn(ConstructionError) -> FrictionError,
+) -> Result<Solved, FrictionError> {
+    let twin = slider_twin(c);
+    // The scheme: the plane, the slider, P, the cone and R.
+    let mut rec = case.schematic_recorder(ctx)?;
+    rec.draw(
+        "the plane",
+        Item::Guide {
+            segment: Segment::new(DVec2::new(-32.0, 0.0), DVec2::new(32.0, 0.0)),
+            hatch: Side::Right,
+        },
+        Role::Given,
+        &[],
+    );
+    let g = DVec2::new(0.0, 3.0);
+    rec.draw(
+        "the slider",
+        Item::Slider { at: g, angle: 0.0 },
+        Role::Given,
+        &[],
+    );
+    let p_dir = p_vector(c).normalize_or(-DVec2::Y);
+    // P pressing on the slider's top left corner, clear of the cone at the contact.
+    let corner = g + DVec2::new(-Item::SLIDER_HALF_MM.0, Item::SLIDER_HALF_MM.1);
+    arrow(
+        &mut rec,
+        "the force P pressing the slider",
+        (corner - p_dir * 28.0, corner),
+        Role::Given,
+        "P",
+        DVec2::new(-1.0, 0.0),
+    );
+    rec.draw(
+        "the normal through P's point",
+        Item::Segment(Segment::new(corner, corner + DVec2::Y * 20.0)),
+        Role::Construction,
+        &[],
+    );
+    angle_mark(
+        &mut rec,
+        "α, P from the normal",
+        corner,
+        14.0,
+        (DVec2::Y, -p_dir),
+        "α",
+    );
+    let (left, _, top) = cone(&mut rec, DVec2::ZERO, DVec2::Y, c.f, 28.0);
+    let r_dir = turned(DVec2::Y, twin.phi);
+    arrow(
+        &mut rec,
+        "the total reaction R on the cone's generator",
+        (DVec2::ZERO, r_dir * 32.0),
+        Role::Result,
+        "R",
+        DVec2::new(-1.0, 0.0),
+    );
+    let across = rec.measure(top, left).read_mm;
+    let along = rec.measure(DVec2::ZERO, top).read_mm;
+    let phi_read = across.atan2(along);
+    let scheme = Drawing {
+        kind: DrawingKind::Scheme,
+        figure: rec.finish(),
+        scaled: false,
+        also: Vec::new(),
+    };
+    // The triangle P + R + F_и = 0 with R along the static cone's generator (φ₀): a negative
+    // F_и is the static friction's reserve, the slider stays; otherwise (or at the limit)
+    // the triangle along the sliding cone's generator (φ) gives the net force.
+    let largest = [c.load, twin.r, twin.net.abs()]
+        .into_iter()
+        .fold(0.0_f64, f64::max);
+    let mut rec = case.force_recorder(largest, ctx)?;
+    // The net force is zero to the drawing's resolution (a rounding residue when exact).
+    let eps = rec.scale().value() * ctx.drafting.resolution_mm().max(1e-9);
+    let closed = |rec: &mut crate::construct::Recorder, phi: f64, at: DVec2, names| {
+        triangle(
+            rec,
+            at,
+            p_vector(c),
+            (turned(DVec2::Y, phi), -DVec2::X),
+            names,
+            Role::Result,
+        )
+    };
+    let mut t = closed(&mut rec, twin.phi0, DVec2::ZERO, ["P", "R_{0}", "F_{и}"]).map_err(wrap)?;
+    let mut state = SliderState::Rest;
+    if t.r >= -eps {
+        if c.f0 > c.f {
+            let right = [t.a, t.b, t.c]
+                .into_iter()
+                .fold(f64::NEG_INFINITY, |m, p| m.max(p.x));
+            t = closed(
+                &mut rec,
+                twin.phi,
+                DVec2::new(right + 20.0, 0.0),
+                ["P", "R", "F_{и}"],
+            )
+            .map_err(wrap)?;
+        }
+        state = if t.r.abs() <= eps {
+            SliderState::Uniform
+        } else {
+            SliderState::Accelerating
+        };
+    }
+    // N: R's component along the normal, projected across.
+    let foot = DVec2::new(t.b.x, t.c.y);
+    thin_line(&mut rec, "R's component along the normal: N", t.b, foot);
+    let n_read = rec.measure(t.b, foot).value;
+    let polygon = Drawing {
+        kind: DrawingKind::Polygon,
+        figure: rec.finish(),
+        scaled: true,
+        also: Vec::new(),
+    };
+    let cond = Some(t.crossing_deg);
+    let name = &case.name;
+    let readings: Vec<Reading> = vec![
+        reading(
+            "φ",
+            (Symbol::Angle, subject("phi", name)),
+            phi_read,
+            twin.phi,
+            None,
+        ),
+        reading(
+            "R",
+            (Symbol::Reaction, subject("", name)),
+            t.p,
+            twin.r,
+            cond,
+        ),
+        reading(
+            "N",
+            (Symbol::Force, subject("N", name)),
+            n_read,
+            twin.n,
+            cond,
+        ),
+        reading(
+            "ΔP",
+            (Symbol::Force, subject("dP", name)),
+            t.r,
+            twin.net,
+            cond,
+        ),
+    ];
+    let word = |s: SliderState| match s {
+        SliderState::Rest => "at rest",
+        SliderState::Uniform => "uniform motion",
+        SliderState::Accelerating => "accelerating",
+    };
+    let notes = vec![format!(
+        "{name}: α = {:.2}°, φ = {:.2}°, φ₀ = {:.2}°: {} by the angles, {} by the triangle (ΔP = {:.4} N read)",
+        c.alpha.to_degrees(),
+        twin.phi.to_degrees(),
+        twin.phi0.to_degrees(),
+        word(twin.state),
+        word(state),
+        t.r
+    )];
+    Ok(Solved {
+        case: case.clone(),
+        drawings: vec![scheme, polygon],
+        readings,
+        notes,
+    })
+}
