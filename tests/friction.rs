@@ -38,8 +38,15 @@ fn exact_reading_agrees_with_the_twins() {
     assert!((value("F_Pslide_W3") - 1500.0).abs() < 1e-9);
     // The slider within the static limit: the reserve 100(sin 15° − 0,5 cos 15°) < 0.
     let reserve = 100.0 * (15f64.to_radians().sin() - 0.5 * 15f64.to_radians().cos());
-    assert!((value("F_dP_rest") - reserve).abs() < 1e-9, "{}", value("F_dP_rest"));
-    assert!(r.notes.iter().any(|n| n.contains("rest: α = 15.00°") && n.contains("at rest by the triangle")));
+    assert!(
+        (value("F_dP_rest") - reserve).abs() < 1e-9,
+        "{}",
+        value("F_dP_rest")
+    );
+    assert!(r
+        .notes
+        .iter()
+        .any(|n| n.contains("rest: α = 15.00°") && n.contains("at rest by the triangle")));
     assert!(r.notes.iter().any(|n| n.contains("erratum")));
     assert!(r.notes.iter().any(|n| n.contains("misprints")));
 }

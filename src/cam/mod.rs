@@ -23,6 +23,7 @@ mod diagrams;
 pub mod exact;
 pub mod extremum;
 pub mod follower;
+pub mod force;
 mod inversion;
 mod law;
 pub mod motion;
