@@ -39,6 +39,18 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             mm_,
         );
         blocks.push(view(&m.sliding, caption, Key::GearsScaleL, m.scale));
+        if let Some(b) = &g.blocking {
+            let words = crate::gears::blocking::Words {
+                interference: GearText::Interference.get(lang),
+            };
+            let caption = format!(
+                "{} z_1 = {}, z_2 = {}",
+                GearText::Blocking.get(lang),
+                p.spec.z[0],
+                p.spec.z[1]
+            );
+            blocks.push(Block::view(b.figure(m.scale, lang, words), caption, None));
+        }
         let mm = |x: f64| format_sig(x * 1e3, 6, lang);
         lines.push(format!(
             "m = {} {u}, z_1 = {}, z_2 = {}, x_1 = {}, x_2 = {}",
@@ -73,6 +85,26 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             format_sig(p.eps, 5, lang),
             format_sig(m.eps, 5, lang)
         ));
+        if let Some(b) = &g.blocking {
+            let f = |x: f64| format_sig(x, 4, lang);
+            for (tag, ix) in b.points() {
+                let head = match tag {
+                    "bz" => GearText::Blocking.get(lang).to_string(),
+                    "beps" => "ε_{α max}".to_string(),
+                    "bsl" => "λ_1 = λ_2".to_string(),
+                    _ => "x_{Σ max}".to_string(),
+                };
+                lines.push(format!(
+                    "{head}: x_1 = {}, x_2 = {}, Δy = {}, ε_α = {}, s_{{a1}} = {}m, s_{{a2}} = {}m",
+                    f(ix.x[0]),
+                    f(ix.x[1]),
+                    f(ix.dy),
+                    f(ix.eps),
+                    f(ix.sa[0]),
+                    f(ix.sa[1]),
+                ));
+            }
+        }
     }
     for (name, r) in &g.racks {
         let c = &r.cutting;
