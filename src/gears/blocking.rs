@@ -1013,6 +1013,18 @@ impl Study {
     }
 }
 
+/// The short label of a point of [`Study::points`] on the drawing (the sheet's lines give
+/// its x₁, x₂ and indices under the same name): K the scene's point, ε_{α max}, λ (equal
+/// sliding), x_{Σ max}.
+pub fn point_label(tag: &str) -> &'static str {
+    match tag {
+        "bz" => "K",
+        "beps" => "ε_{α max}",
+        "bsl" => "λ_1 = λ_2",
+        _ => "x_{Σ max}",
+    }
+}
+
 /// A criterion's tag in row subjects.
 pub fn criterion_tag(c: Criterion) -> &'static str {
     match c {
@@ -1154,6 +1166,26 @@ fn clip_polyline(pts: &[DVec2], w: f64, h: f64) -> Vec<Vec<DVec2>> {
         out.push(cur);
     }
     out
+}
+
+/// The room about `p` (figure mm): its distance to the drawn curves (but the level `skip`),
+/// to the labels already placed and to the plane's edges.
+fn room(
+    drawn: &[(usize, Vec<DVec2>)],
+    skip: Option<usize>,
+    taken: &[DVec2],
+    p: DVec2,
+    w: f64,
+    h: f64,
+) -> f64 {
+    let others = drawn
+        .iter()
+        .filter(|(j, _)| Some(*j) != skip)
+        .flat_map(|(_, q)| q.iter().step_by(2))
+        .chain(taken.iter())
+        .map(|q| (*q - p).length())
+        .fold(f64::INFINITY, f64::min);
+    others.min(p.x).min(p.y).min(w - p.x).min(h - p.y)
 }
 
 /// The label of a level in label markup.
@@ -1334,19 +1366,15 @@ impl Study {
             } else {
                 Role::Construction
             };
-            let label = std::mem::replace(&mut first_of[*k], false).then(|| {
-                // The room about a point: its distance to the other curves, the labels
-                // already placed, the plane's edges.
-                let room = |p: DVec2| {
-                    let others = drawn
-                        .iter()
-                        .filter(|(j, _)| j != k)
-                        .flat_map(|(_, q)| q.iter().step_by(2))
-                        .chain(taken.iter())
-                        .map(|q| (*q - p).length())
-                        .fold(f64::INFINITY, f64::min);
-                    others.min(p.x).min(p.y).min(w - p.x).min(h - p.y)
-                };
+            // Each level's longest piece labelled, and any other piece 15 mm long.
+            let long = piece
+                .windows(2)
+                .map(|s| (s[1] - s[0]).length())
+                .sum::<f64>()
+                >= 15.0;
+            let first = std::mem::replace(&mut first_of[*k], false);
+            let label = (first || long).then(|| {
+                let room = |p: DVec2| room(&drawn, Some(*k), &taken, p, w, h);
                 let n = piece.len() - 1;
                 let at = (1..20)
                     .map(|f| n * f / 20)
@@ -1396,17 +1424,25 @@ impl Study {
             if !(at.x >= 0.0 && at.y >= 0.0 && at.x <= w && at.y <= h) {
                 continue;
             }
-            let text = match tag {
-                "bz" => format!("({}; {})", fmt(ix.x[0]), fmt(ix.x[1])),
-                "beps" => "ε_{α max}".into(),
-                "bsl" => format!("λ_1 = λ_2, x_Σ = {}", fmt(ix.x[0] + ix.x[1])),
-                _ => "x_{Σ max}".into(),
-            };
-            let toward = if tag == "bz" {
-                DVec2::new(1.0, 1.0)
-            } else {
-                DVec2::new(1.0, -1.0)
-            };
+            let text = point_label(tag).to_string();
+            // Toward the most room of eight directions, 6 mm out.
+            let toward = (0..8)
+                .map(|k| {
+                    let a = PI / 4.0 * f64::from(k) + PI / 8.0;
+                    DVec2::new(a.cos(), a.sin())
+                })
+                .max_by(|a, b| {
+                    room(&drawn, None, &taken, at + *a * 6.0, w, h).total_cmp(&room(
+                        &drawn,
+                        None,
+                        &taken,
+                        at + *b * 6.0,
+                        w,
+                        h,
+                    ))
+                })
+                .unwrap_or(DVec2::new(1.0, 1.0));
+            taken.push(at + toward * 6.0);
             push(
                 format!("the point {tag}"),
                 Item::Point(at),

@@ -27,6 +27,13 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let mm_ = unit_in("mm", lang);
     let mut lines = vec![GearText::DataAndResults.get(lang).to_string()];
     let mut plan = None;
+    // The blocking contour on a pair's own sheet (seed 002 PZ3); the course project's A1
+    // gear sheet (a pair, its cut wheels and the train) has no room for it: its contour is
+    // in the report's rows and notes.
+    let contour = g
+        .blocking
+        .as_ref()
+        .filter(|_| g.racks.is_empty() && g.train.is_none());
     if let Some((p, m)) = &g.pair {
         plan = Some(m.scale);
         let caption = format!("{}, {}", GearText::Meshing.get(lang), m.scale.caption(lang));
@@ -39,7 +46,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             mm_,
         );
         blocks.push(view(&m.sliding, caption, Key::GearsScaleL, m.scale));
-        if let Some(b) = &g.blocking {
+        if let Some(b) = contour {
             let words = crate::gears::blocking::Words {
                 interference: GearText::Interference.get(lang),
             };
@@ -85,14 +92,14 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             format_sig(p.eps, 5, lang),
             format_sig(m.eps, 5, lang)
         ));
-        if let Some(b) = &g.blocking {
+        if let Some(b) = contour {
             let f = |x: f64| format_sig(x, 4, lang);
             for (tag, ix) in b.points() {
-                let head = match tag {
-                    "bz" => GearText::Blocking.get(lang).to_string(),
-                    "beps" => "ε_{α max}".to_string(),
-                    "bsl" => "λ_1 = λ_2".to_string(),
-                    _ => "x_{Σ max}".to_string(),
+                let name = crate::gears::blocking::point_label(tag);
+                let head = if tag == "bz" {
+                    format!("{}, {name}", GearText::Blocking.get(lang))
+                } else {
+                    name.to_string()
                 };
                 lines.push(format!(
                     "{head}: x_1 = {}, x_2 = {}, Δy = {}, ε_α = {}, s_{{a1}} = {}m, s_{{a2}} = {}m",
