@@ -244,8 +244,8 @@ pub fn levels(rack: &BasicRack, z: [u32; 2]) -> Vec<(Kind, f64)> {
     let hl = -rack.per_module().vj;
     let sin2 = rack.alpha.sin().powi(2);
     let mut out = Vec::new();
-    for i in 0..2 {
-        out.push((Kind::Undercut(i), hl - f64::from(z[i]) * sin2 / 2.0));
+    for (i, zi) in z.iter().enumerate() {
+        out.push((Kind::Undercut(i), hl - f64::from(*zi) * sin2 / 2.0));
     }
     for i in 0..2 {
         for l in TIP_LIMITS {
@@ -348,7 +348,12 @@ impl Blocking {
         let r = zz.map(|z| z / 2.0);
         let rb = r.map(|r| r * ca);
         let ra = [0, 1].map(|i| r[i] + ha + xs[i] - dy);
-        if ra.iter().zip(rb).any(|(a, b)| !(*a > b)) {
+        // A tip on or inside its base circle (or not a number): no involute flank.
+        if ra
+            .iter()
+            .zip(rb)
+            .any(|(a, b)| a.partial_cmp(&b) != Some(std::cmp::Ordering::Greater))
+        {
             return None;
         }
         // The tip's roll: N_iB of the own tip, r_b tg α_a.
@@ -668,7 +673,7 @@ impl Blocking {
         let (lo, hi) = self.window;
         let a = lo.x.max(x_sum - hi.y);
         let b = hi.x.min(x_sum - lo.y);
-        if !(a < b) {
+        if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
             return Err(BlockingError::LineOutside(x_sum));
         }
         let on = |x1: f64| DVec2::new(x1, x_sum - x1);
