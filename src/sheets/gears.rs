@@ -1,7 +1,9 @@
 //! Plate "Зубчатые передачи" (seed 000 sheet 3, seed 002 PZ1–PZ3): the meshing picture with
 //! all circles, lines and labels, the diagram of specific sliding, each wheel cut by the rack
 //! with its rack positions (and undercut), the data and results, and the table of what was
-//! read off the drawings against the analytic values. A1 landscape.
+//! read off the drawings against the analytic values. A pair's own sheet (seed 002 PZ3: no
+//! cut wheels, no train) also draws the pair's blocking contour with the scene's point and
+//! the textbook's choices, and names them in its lines. A1 landscape.
 
 use super::captions::{unit_in, GearText, Text};
 use super::layout::{lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey};
