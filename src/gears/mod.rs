@@ -13,6 +13,7 @@
 //! πm·cos α_w, so its ε_α = 1.22 (exact 1.15524; 1.1550 with its Δy = 0.18); PZ3 reads cos 26.92° as 0.8836 and prints
 //! a_w = 180.79 mm (exact 179.18) and ε_α = 1.14 (exact 1.1637), and lays off "p = 14.13 mm".
 
+pub mod blocking;
 mod generate;
 mod involute;
 mod mesh;
@@ -198,6 +199,9 @@ pub struct GearStudy {
     pub racks: Vec<(String, generate::Generation)>,
     /// The train.
     pub train: Option<TrainStudy>,
+    /// The pair's blocking contour with the scene's point placed and the textbook's
+    /// choices (`None`: no pair, or no contour for it).
+    pub blocking: Option<blocking::Study>,
 }
 
 /// The round μ_l of a meshing picture: the whole of both wheels about 360 mm tall.
@@ -246,18 +250,30 @@ pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearSt
         Some(p) => Some(train_study(p, ctx).map_err(|e| GearError::Construction(e.to_string()))?),
         None => None,
     };
+    // The contour is of the pair's tooth numbers and rack; a pair too odd for it (its
+    // point outside the formulas' domain) has none, and the notes say nothing of it.
+    let blocking = spec
+        .pair
+        .as_ref()
+        .and_then(|ps| blocking::Study::of(ps).ok());
     Ok(GearStudy {
         pair,
         seed: spec.seed,
         racks,
         train,
+        blocking,
     })
 }
 
 impl GearStudy {
-    /// Every row: the pair's by formula and off the meshing picture, each wheel's generation.
+    /// Every row: the pair's by formula and off the meshing picture, each wheel's generation,
+    /// the blocking contour's points (the report's; the sheet's table is `rows_by_part`).
     pub fn rows(&self) -> Vec<crate::check::Row> {
-        self.rows_by_part().concat()
+        let mut out = self.rows_by_part().concat();
+        if let Some(b) = &self.blocking {
+            out.extend(b.rows());
+        }
+        out
     }
 
     /// The rows in two parts: the pair's (its formulas and its meshing picture), and the
@@ -287,6 +303,9 @@ impl GearStudy {
                 crate::scale::format_sig(m.compass.0 * 1e3, 3, crate::scale::Lang::En),
                 crate::scale::format_sig(m.compass.1 * 1e3, 3, crate::scale::Lang::En),
             ));
+        }
+        if let Some(b) = &self.blocking {
+            out.extend(b.notes());
         }
         for (name, g) in &self.racks {
             out.extend(rows::generation_notes(name, g));

@@ -1,7 +1,9 @@
 //! Plate "Зубчатые передачи" (seed 000 sheet 3, seed 002 PZ1–PZ3): the meshing picture with
 //! all circles, lines and labels, the diagram of specific sliding, each wheel cut by the rack
 //! with its rack positions (and undercut), the data and results, and the table of what was
-//! read off the drawings against the analytic values. A1 landscape.
+//! read off the drawings against the analytic values. A pair's own sheet (seed 002 PZ3: no
+//! cut wheels, no train) also draws the pair's blocking contour with the scene's point and
+//! the textbook's choices, and names them in its lines. A1 landscape.
 
 use super::captions::{unit_in, GearText, Text};
 use super::layout::{lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey};
@@ -27,6 +29,13 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let mm_ = unit_in("mm", lang);
     let mut lines = vec![GearText::DataAndResults.get(lang).to_string()];
     let mut plan = None;
+    // The blocking contour on a pair's own sheet (seed 002 PZ3); the course project's A1
+    // gear sheet (a pair, its cut wheels and the train) has no room for it: its contour is
+    // in the report's rows and notes.
+    let contour = g
+        .blocking
+        .as_ref()
+        .filter(|_| g.racks.is_empty() && g.train.is_none());
     if let Some((p, m)) = &g.pair {
         plan = Some(m.scale);
         let caption = format!("{}, {}", GearText::Meshing.get(lang), m.scale.caption(lang));
@@ -39,6 +48,18 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             mm_,
         );
         blocks.push(view(&m.sliding, caption, Key::GearsScaleL, m.scale));
+        if let Some(b) = contour {
+            let words = crate::gears::blocking::Words {
+                interference: GearText::Interference.get(lang),
+            };
+            let caption = format!(
+                "{} z_1 = {}, z_2 = {}",
+                GearText::Blocking.get(lang),
+                p.spec.z[0],
+                p.spec.z[1]
+            );
+            blocks.push(Block::view(b.figure(m.scale, lang, words), caption, None));
+        }
         let mm = |x: f64| format_sig(x * 1e3, 6, lang);
         lines.push(format!(
             "m = {} {u}, z_1 = {}, z_2 = {}, x_1 = {}, x_2 = {}",
@@ -73,6 +94,26 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             format_sig(p.eps, 5, lang),
             format_sig(m.eps, 5, lang)
         ));
+        if let Some(b) = contour {
+            let f = |x: f64| format_sig(x, 4, lang);
+            for (tag, ix) in b.points() {
+                let name = crate::gears::blocking::point_label(tag);
+                let head = if tag == "bz" {
+                    format!("{}, {name}", GearText::Blocking.get(lang))
+                } else {
+                    name.to_string()
+                };
+                lines.push(format!(
+                    "{head}: x_1 = {}, x_2 = {}, Δy = {}, ε_α = {}, s_{{a1}} = {}m, s_{{a2}} = {}m",
+                    f(ix.x[0]),
+                    f(ix.x[1]),
+                    f(ix.dy),
+                    f(ix.eps),
+                    f(ix.sa[0]),
+                    f(ix.sa[1]),
+                ));
+            }
+        }
     }
     for (name, r) in &g.racks {
         let c = &r.cutting;

@@ -60,6 +60,8 @@ catalogue! {
         Meshing => ("Картина зацепления", "Картина зачеплення", "Meshing picture"),
         Sliding => ("Удельное скольжение", "Питоме ковзання", "Specific sliding"),
         Along => ("вдоль", "уздовж", "along"),
+        Blocking => ("Блокирующий контур", "Блокуючий контур", "Blocking contour"),
+        Interference => ("интерференция", "інтерференція", "interference"),
         CutByRack => ("Нарезание рейкой:", "Нарізання рейкою:", "Cut by the rack:"),
         UndercutHatched => ("; подрез заштрихован", "; підріз заштриховано", "; the undercut hatched"),
         Undercut => (", подрез", ", підріз", ", undercut"),

@@ -1,0 +1,1464 @@
+//! The blocking contour (блокирующий контур) of an external pair z₁, z₂ cut by a basic rack,
+//! in the x₁–x₂ plane (seed 000 L1004–1008, seed 002 PZ3 and its appendices; issue 21 §1):
+//! the curves on which one quality index of the pair reaches its limit, each traced from its
+//! definition by bracketing along rays — never read from a table.
+//!
+//! The indices, per unit module (the contour does not depend on m), by this module's own
+//! lean formulas ([`Blocking::indices`]); the analytic twins are [`Pair::new`] and
+//! [`Cutting`] (the tests and the rows evaluate each traced curve through them):
+//! - undercut of wheel i: x_i = x_min,i with x_min = h_l* − z sin²α/2, where h_l* = −v_j* is
+//!   the depth below the rack's mean line at which the tool's straight flank ends (its
+//!   tangency with the tip rounding ρ_f*). This is the limit [`Cutting::undercut`] decides by;
+//!   for the ГОСТ 13755 rack h_l* = 0.99997, so it lies 3·10⁻⁵ left of the textbook's
+//!   h_a* − z sin²α/2 ([`super::x_min`]);
+//! - tooth pointing: s_a,i = 0, and the quality isolines s_a,i = 0.25 and 0.4 (× m), with the
+//!   tip shortened by the exact Δy = x_Σ − y: r_a = r + (h_a* + x − Δy)m;
+//! - the contact ratio ε_α = 1 and 1.2;
+//! - interference with the transition curve of wheel i: the end of the active line nearer
+//!   N_i (the mate's tip) falls short of the lower limit point of wheel i's involute, the point
+//!   its flank's end generates, ρ_l,i = r_i sin α − (h_l* − x_i)m/sin α from N_i. The index:
+//!   N_iB_i − ρ_l,i, its curve where it is 0;
+//! - equal specific sliding at the ends of the active line: λ₁ at B₁ (where the root of
+//!   wheel 1 works) equals λ₂ at B₂, λ₁ = 1 − ρ₂/(uρ₁), λ₂ = 1 − uρ₁/ρ₂.
+//!
+//! A reference point inside the admissible region (the grid point of the plane's window
+//! with the largest least margin) is the centre of a fan of rays; on each ray every index
+//! less its limit is sampled outward and its first change of sign bisected to 10⁻¹³ (x per
+//! module, so 10⁻¹³ m), far below the 10⁻⁹ asked. A curve is the ordered run of these first
+//! crossings; a ray that never crosses (within the window, before the formulas leave their
+//! domain) adds nothing, and a run breaks where it does not or where consecutive crossings
+//! jump (the first crossing has moved to another branch). Everything is bounded: a fixed
+//! fan, a fixed number of samples per ray, at most 200 bisections.
+
+use super::involute::{inv, inv_inverse};
+use super::{BasicRack, Cutting, GearError, Pair, PairSpec};
+use crate::geom::DVec2;
+use std::f64::consts::PI;
+
+/// The rays of the fan.
+const RAYS: usize = 720;
+/// Samples along a ray (to the window's edge).
+const SAMPLES: usize = 400;
+/// The bisection's end: the bracket's length along a ray (x per module).
+const BISECT_TO: f64 = 1e-13;
+/// The quality isolines of the tip thickness, × m.
+pub const TIP_LIMITS: [f64; 3] = [0.0, 0.25, 0.4];
+/// The contact ratio's lines.
+pub const EPS_LIMITS: [f64; 2] = [1.0, 1.2];
+
+/// What a curve of the contour bounds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Kind {
+    /// Undercut of wheel 0 or 1 (index x_i, limit x_min,i).
+    Undercut(usize),
+    /// The tip thickness of wheel i (index s_a,i/m).
+    Tip(usize),
+    /// The contact ratio ε_α.
+    ContactRatio,
+    /// Interference with the fillet of wheel i (index (N_iB_i − ρ_l,i)/m, limit 0).
+    Interference(usize),
+    /// Equal specific sliding (index λ₁(B₁) − λ₂(B₂), limit 0).
+    EqualSliding,
+}
+
+impl Kind {
+    /// The index is at least its limit on the admissible side (`None`: a line, no side).
+    pub fn good_above(self) -> Option<bool> {
+        match self {
+            Kind::EqualSliding => None,
+            _ => Some(true),
+        }
+    }
+}
+
+/// One traced curve: its kind, its limit and its points (x₁, x₂) in order along the fan.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    /// What it bounds.
+    pub kind: Kind,
+    /// The index's value on it.
+    pub limit: f64,
+    /// The points (x₁, x₂).
+    pub points: Vec<DVec2>,
+}
+
+/// The hard limits of the admissible region.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hard {
+    /// The least tip thickness, × m.
+    pub sa_min: f64,
+    /// The least contact ratio.
+    pub eps_min: f64,
+}
+
+impl Default for Hard {
+    /// s_a ≥ 0.25m, ε_α ≥ 1.2 (with no undercut and no interference).
+    fn default() -> Self {
+        Hard {
+            sa_min: 0.25,
+            eps_min: 1.2,
+        }
+    }
+}
+
+/// The indices of a point (x₁, x₂), per unit module.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Indices {
+    /// x₁, x₂.
+    pub x: [f64; 2],
+    /// α_w, rad.
+    pub alpha_w: f64,
+    /// y.
+    pub y: f64,
+    /// Δy = x_Σ − y.
+    pub dy: f64,
+    /// r_a/m.
+    pub ra: [f64; 2],
+    /// s_a/m.
+    pub sa: [f64; 2],
+    /// ε_α.
+    pub eps: f64,
+    /// N₁B₁ and N₂B₂ (/m): the ends of the active line from the centre-side N of each wheel.
+    pub near_end: [f64; 2],
+    /// ρ_l (/m): the lower limit points of the involutes from N₁ and N₂.
+    pub rho_l: [f64; 2],
+    /// λ₁ at B₁ and λ₂ at B₂ (`None` when B is at or beyond N: no sliding there).
+    pub lambda: Option<[f64; 2]>,
+}
+
+impl Indices {
+    /// The index a curve of `kind` is a level line of.
+    pub fn of(&self, kind: Kind) -> Option<f64> {
+        match kind {
+            Kind::Undercut(i) => Some(self.x[i]),
+            Kind::Tip(i) => Some(self.sa[i]),
+            Kind::ContactRatio => Some(self.eps),
+            Kind::Interference(i) => Some(self.near_end[i] - self.rho_l[i]),
+            Kind::EqualSliding => self.lambda.map(|l| l[0] - l[1]),
+        }
+    }
+}
+
+/// Why a contour cannot be traced or a choice made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum BlockingError {
+    /// The pair or the rack out of range.
+    #[error("blocking contour: {0}")]
+    Gear(#[from] GearError),
+    /// A point not finite.
+    #[error("blocking contour: the point ({0}, {1}) is not finite")]
+    NotFinite(f64, f64),
+    /// The involute formulas have no value at the point.
+    #[error("blocking contour: the pair has no geometry at x₁ = {0}, x₂ = {1} (no α_w or a tip inside the base circle)")]
+    Domain(f64, f64),
+    /// No point of the plane meets every hard limit.
+    #[error("blocking contour: no point of x₁ ∈ [{0:.3}, {1:.3}], x₂ ∈ [{2:.3}, {3:.3}] meets every hard limit (s_a ≥ {4}m, ε_α ≥ {5}, no undercut, no interference)")]
+    Empty(f64, f64, f64, f64, f64, f64),
+    /// The criterion's line misses the admissible region.
+    #[error("blocking contour: the line x₁ + x₂ = {0} does not cross the admissible region")]
+    LineOutside(f64),
+}
+
+/// The contour's problem: the pair's tooth numbers and the rack.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Blocking {
+    /// z₁, z₂.
+    pub z: [u32; 2],
+    /// The rack.
+    pub rack: BasicRack,
+    /// h_l* = −v_j*: the depth of the flank's end below the rack's mean line, × m.
+    pub hl: f64,
+    /// The plane's window: (x₁ min, x₂ min), (x₁ max, x₂ max).
+    pub window: (DVec2, DVec2),
+}
+
+/// The traced contour.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Contour {
+    /// The problem.
+    pub blocking: Blocking,
+    /// The centre of the fan of rays.
+    pub centre: DVec2,
+    /// Every traced curve (a kind and limit may have several runs).
+    pub curves: Vec<Curve>,
+    /// The hard limits of `boundary`.
+    pub hard: Hard,
+    /// The admissible region's boundary, closed (empty when the centre is not admissible).
+    pub boundary: Vec<DVec2>,
+}
+
+/// A criterion of the choice of x₁, x₂ inside the contour.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Criterion {
+    /// Maximise ε_α over the admissible region.
+    LargestContactRatio,
+    /// On the line x₁ + x₂ = x_Σ, the point where λ₁ at B₁ equals λ₂ at B₂ (or, when that
+    /// point is outside the admissible region, the admissible point of the line with the
+    /// least |λ₁ − λ₂|).
+    EqualSliding {
+        /// x_Σ.
+        x_sum: f64,
+    },
+    /// Maximise x₁ + x₂ (the stiffest, strongest teeth) with both tips s_a ≥ `sa_min`·m.
+    GreatestSumWithTip {
+        /// The least tip thickness, × m.
+        sa_min: f64,
+    },
+}
+
+/// A chosen point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Choice {
+    /// The criterion.
+    pub criterion: Criterion,
+    /// Its indices.
+    pub indices: Indices,
+}
+
+/// Where a point lies against one curve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Side {
+    /// The curve's kind.
+    pub kind: Kind,
+    /// Its limit.
+    pub limit: f64,
+    /// The point's index.
+    pub value: f64,
+    /// On the admissible side (the index ≥ its limit); `None` for a line without a side.
+    pub inside: Option<bool>,
+}
+
+/// A point placed on the contour.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Placement {
+    /// Its indices.
+    pub indices: Indices,
+    /// Against every limit the contour draws.
+    pub sides: Vec<Side>,
+    /// Inside the admissible region of the contour's hard limits.
+    pub admissible: bool,
+}
+
+/// Every (kind, limit) the contour traces.
+pub fn levels(rack: &BasicRack, z: [u32; 2]) -> Vec<(Kind, f64)> {
+    let hl = -rack.per_module().vj;
+    let sin2 = rack.alpha.sin().powi(2);
+    let mut out = Vec::new();
+    for (i, zi) in z.iter().enumerate() {
+        out.push((Kind::Undercut(i), hl - f64::from(*zi) * sin2 / 2.0));
+    }
+    for i in 0..2 {
+        for l in TIP_LIMITS {
+            out.push((Kind::Tip(i), l));
+        }
+    }
+    for l in EPS_LIMITS {
+        out.push((Kind::ContactRatio, l));
+    }
+    out.push((Kind::Interference(0), 0.0));
+    out.push((Kind::Interference(1), 0.0));
+    out.push((Kind::EqualSliding, 0.0));
+    out
+}
+
+impl Blocking {
+    /// The problem of z₁, z₂ cut by `rack`; its window spans each x from 0.4 below the
+    /// undercut limit (or −1.4) to 1.5 beyond the shift that points the wheel cut alone (the
+    /// pair's Δy shortens the tip and moves its pointing out by up to about that), within
+    /// ±3.
+    ///
+    /// # Errors
+    /// [`GearError::Spec`] for fewer than 5 teeth, [`GearError::Rack`].
+    pub fn new(z: [u32; 2], rack: BasicRack) -> Result<Self, BlockingError> {
+        rack.validate()?;
+        for (i, zi) in z.iter().enumerate() {
+            if *zi < 5 {
+                return Err(GearError::Spec {
+                    what: if i == 0 { "z1" } else { "z2" },
+                    value: f64::from(*zi),
+                    expected: "at least 5 teeth",
+                }
+                .into());
+            }
+        }
+        let hl = -rack.per_module().vj;
+        let sin2 = rack.alpha.sin().powi(2);
+        let mut lo = [0.0; 2];
+        let mut hi = [0.0; 2];
+        for i in 0..2 {
+            let zi = f64::from(z[i]);
+            lo[i] = ((hl - zi * sin2 / 2.0).max(-1.0) - 0.4).max(-3.0);
+            // The wheel alone (Δy = 0) points where s_a = 0: bisection on x (s_a falls).
+            let sa = |x: f64| {
+                let r = zi / 2.0;
+                let ra = r + rack.ha + x;
+                let rb = r * rack.alpha.cos();
+                if ra <= rb {
+                    return 1.0;
+                }
+                let s = PI / 2.0 + 2.0 * x * rack.alpha.tan();
+                2.0 * ra * (s / (2.0 * r) + inv(rack.alpha) - inv((rb / ra).acos()))
+            };
+            let (mut a, mut b) = (lo[i], 3.0);
+            if sa(b) > 0.0 {
+                hi[i] = 3.0;
+            } else {
+                for _ in 0..100 {
+                    let mid = 0.5 * (a + b);
+                    if sa(mid) > 0.0 {
+                        a = mid;
+                    } else {
+                        b = mid;
+                    }
+                }
+                hi[i] = (b + 1.5).min(3.0);
+            }
+            if hi[i] < lo[i] + 0.5 {
+                hi[i] = (lo[i] + 0.5).min(3.0);
+            }
+        }
+        Ok(Self {
+            z,
+            rack,
+            hl,
+            window: (DVec2::new(lo[0], lo[1]), DVec2::new(hi[0], hi[1])),
+        })
+    }
+
+    /// x_min,i = h_l* − z_i sin²α/2.
+    pub fn x_min(&self, i: usize) -> f64 {
+        self.hl - f64::from(self.z[i]) * self.rack.alpha.sin().powi(2) / 2.0
+    }
+
+    /// The indices at (x₁, x₂) by the lean formulas; `None` outside their domain (no α_w,
+    /// a tip circle inside its base circle).
+    pub fn indices(&self, x: DVec2) -> Option<Indices> {
+        if !(x.x.is_finite() && x.y.is_finite()) {
+            return None;
+        }
+        let BasicRack { alpha, ha, .. } = self.rack;
+        let (sa_, ca, ta) = (alpha.sin(), alpha.cos(), alpha.tan());
+        let xs = [x.x, x.y];
+        let zz = self.z.map(f64::from);
+        let zs = zz[0] + zz[1];
+        let x_sum = xs[0] + xs[1];
+        let alpha_w = inv_inverse(2.0 * x_sum * ta / zs + inv(alpha)).ok()?;
+        let y = zs / 2.0 * (ca / alpha_w.cos() - 1.0);
+        let dy = x_sum - y;
+        let r = zz.map(|z| z / 2.0);
+        let rb = r.map(|r| r * ca);
+        let ra = [0, 1].map(|i| r[i] + ha + xs[i] - dy);
+        // A tip on or inside its base circle (or not a number): no involute flank.
+        if ra
+            .iter()
+            .zip(rb)
+            .any(|(a, b)| a.partial_cmp(&b) != Some(std::cmp::Ordering::Greater))
+        {
+            return None;
+        }
+        // The tip's roll: N_iB of the own tip, r_b tg α_a.
+        let tip = [0, 1].map(|i| (ra[i] * ra[i] - rb[i] * rb[i]).sqrt());
+        let sa = [0, 1].map(|i| {
+            let aa = (rb[i] / ra[i]).acos();
+            let half = (PI / 2.0 + 2.0 * xs[i] * ta) / (2.0 * r[i]);
+            2.0 * ra[i] * (half + inv(alpha) - inv(aa))
+        });
+        // N₁N₂ from the base circles: (r_b1 + r_b2) tg α_w.
+        let g = (rb[0] + rb[1]) * alpha_w.tan();
+        let eps = (tip[0] + tip[1] - g) / (PI * ca);
+        let near_end = [g - tip[1], g - tip[0]];
+        let rho_l = [0, 1].map(|i| r[i] * sa_ - (self.hl - xs[i]) / sa_);
+        let u = zz[1] / zz[0];
+        let lambda = (near_end[0] > 0.0 && near_end[1] > 0.0).then(|| {
+            [
+                1.0 - tip[1] / (u * near_end[0]),
+                1.0 - u * tip[0] / near_end[1],
+            ]
+        });
+        Some(Indices {
+            x: xs,
+            alpha_w,
+            y,
+            dy,
+            ra,
+            sa,
+            eps,
+            near_end,
+            rho_l,
+            lambda,
+        })
+    }
+
+    /// The least margin of the hard limits at `x` (≥ 0: admissible), in the indices' own
+    /// units (x and lengths per module, ε_α).
+    pub fn margin(&self, x: DVec2, hard: Hard) -> Option<f64> {
+        let ix = self.indices(x)?;
+        let mut m = ix.eps - hard.eps_min;
+        for i in 0..2 {
+            m = m
+                .min(ix.x[i] - self.x_min(i))
+                .min(ix.sa[i] - hard.sa_min)
+                .min(ix.near_end[i] - ix.rho_l[i]);
+        }
+        Some(m)
+    }
+
+    /// The distance along the ray from `c` in the direction `d` to the window's edge.
+    fn reach(&self, c: DVec2, d: DVec2) -> f64 {
+        let (lo, hi) = self.window;
+        let mut t = f64::INFINITY;
+        for (ci, di, l, h) in [(c.x, d.x, lo.x, hi.x), (c.y, d.y, lo.y, hi.y)] {
+            if di > 1e-15 {
+                t = t.min((h - ci) / di);
+            } else if di < -1e-15 {
+                t = t.min((l - ci) / di);
+            }
+        }
+        t.max(0.0)
+    }
+
+    /// The centre of the fan: the point of a 41 × 41 grid over the window with the largest
+    /// least margin of `hard`.
+    pub fn centre(&self, hard: Hard) -> DVec2 {
+        let (lo, hi) = self.window;
+        let n = 40;
+        let mut best = (f64::NEG_INFINITY, (lo + hi) * 0.5);
+        for i in 0..=n {
+            for j in 0..=n {
+                let p = DVec2::new(
+                    lo.x + (hi.x - lo.x) * f64::from(i) / f64::from(n),
+                    lo.y + (hi.y - lo.y) * f64::from(j) / f64::from(n),
+                );
+                if let Some(m) = self.margin(p, hard) {
+                    if m > best.0 {
+                        best = (m, p);
+                    }
+                }
+            }
+        }
+        best.1
+    }
+
+    /// The first crossing of `f` = 0 along the ray c + t·d, t ∈ (0, reach], by sampling and
+    /// bisection; `None` when it never changes sign there (or leaves its domain first).
+    fn first_crossing(&self, c: DVec2, d: DVec2, f: &dyn Fn(DVec2) -> Option<f64>) -> Option<f64> {
+        let t_max = self.reach(c, d);
+        if t_max <= 0.0 {
+            return None;
+        }
+        let f0 = f(c)?;
+        let mut prev = (0.0, f0);
+        for k in 1..=SAMPLES {
+            let t = t_max * k as f64 / SAMPLES as f64;
+            let v = f(c + d * t)?;
+            if (v >= 0.0) != (prev.1 >= 0.0) {
+                return bisect(prev.0, t, prev.1 >= 0.0, |t| f(c + d * t));
+            }
+            prev = (t, v);
+        }
+        None
+    }
+
+    /// The first crossing of every level along the ray c + t·d (as [`Self::first_crossing`]
+    /// for each, the indices evaluated once per sample).
+    fn first_crossings(&self, c: DVec2, d: DVec2, levels: &[(Kind, f64)]) -> Vec<Option<f64>> {
+        let mut out = vec![None; levels.len()];
+        let t_max = self.reach(c, d);
+        let Some(ix0) = self.indices(c) else {
+            return out;
+        };
+        let value = |ix: &Indices, k: usize| Some(ix.of(levels[k].0)? - levels[k].1);
+        let mut prev: Vec<Option<(f64, f64)>> = (0..levels.len())
+            .map(|k| value(&ix0, k).map(|v| (0.0, v)))
+            .collect();
+        for s in 1..=SAMPLES {
+            if t_max <= 0.0 || out.iter().all(Option::is_some) {
+                break;
+            }
+            let t = t_max * s as f64 / SAMPLES as f64;
+            let Some(ix) = self.indices(c + d * t) else {
+                break;
+            };
+            for k in 0..levels.len() {
+                if out[k].is_some() {
+                    continue;
+                }
+                let v = value(&ix, k);
+                if let (Some((t0, v0)), Some(v)) = (prev[k], v) {
+                    if (v >= 0.0) != (v0 >= 0.0) {
+                        let f = |t: f64| value(&self.indices(c + d * t)?, k);
+                        out[k] = bisect(t0, t, v0 >= 0.0, f);
+                        // A level whose bisection left the domain is not crossed here.
+                        if out[k].is_none() {
+                            prev[k] = None;
+                            continue;
+                        }
+                        continue;
+                    }
+                }
+                // A level undefined at a sample (λ with B beyond N) brackets nothing across it.
+                prev[k] = v.map(|v| (t, v));
+            }
+        }
+        out
+    }
+
+    /// Trace every level of [`levels`] and the admissible region's boundary of `hard`.
+    pub fn trace(&self, hard: Hard) -> Contour {
+        let centre = self.centre(hard);
+        let dirs: Vec<DVec2> = (0..RAYS)
+            .map(|k| {
+                let a = 2.0 * PI * k as f64 / RAYS as f64;
+                DVec2::new(a.cos(), a.sin())
+            })
+            .collect();
+        // The largest spacing of neighbouring crossings that stays one run.
+        let (lo, hi) = self.window;
+        let jump = (hi - lo).length() * 0.05;
+        let levels = levels(&self.rack, self.z);
+        // Along each ray the indices once per sample; each level's first change of sign
+        // bisected on its own index.
+        let mut hits: Vec<Vec<Option<DVec2>>> = vec![Vec::with_capacity(RAYS); levels.len()];
+        for d in &dirs {
+            let found = self.first_crossings(centre, *d, &levels);
+            for (h, t) in hits.iter_mut().zip(found) {
+                h.push(t.map(|t| centre + *d * t));
+            }
+        }
+        let mut curves = Vec::new();
+        for ((kind, limit), hits) in levels.iter().zip(&hits) {
+            for points in runs(hits, jump) {
+                curves.push(Curve {
+                    kind: *kind,
+                    limit: *limit,
+                    points,
+                });
+            }
+        }
+        let admissible = self.margin(centre, hard).is_some_and(|m| m > 0.0);
+        let boundary = if admissible {
+            let f = |p: DVec2| self.margin(p, hard);
+            dirs.iter()
+                .map(|d| {
+                    let t = self
+                        .first_crossing(centre, *d, &f)
+                        .unwrap_or_else(|| self.reach(centre, *d));
+                    centre + *d * t
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Contour {
+            blocking: *self,
+            centre,
+            curves,
+            hard,
+            boundary,
+        }
+    }
+
+    /// Place the point `x` on the contour: its indices, its side of every level, whether it
+    /// meets `hard`.
+    ///
+    /// # Errors
+    /// [`BlockingError::NotFinite`], [`BlockingError::Domain`].
+    pub fn place(&self, x: DVec2, hard: Hard) -> Result<Placement, BlockingError> {
+        if !(x.x.is_finite() && x.y.is_finite()) {
+            return Err(BlockingError::NotFinite(x.x, x.y));
+        }
+        let indices = self.indices(x).ok_or(BlockingError::Domain(x.x, x.y))?;
+        let sides = levels(&self.rack, self.z)
+            .into_iter()
+            .filter_map(|(kind, limit)| {
+                let value = indices.of(kind)?;
+                Some(Side {
+                    kind,
+                    limit,
+                    value,
+                    inside: kind.good_above().map(|_| value >= limit),
+                })
+            })
+            .collect();
+        Ok(Placement {
+            indices,
+            sides,
+            admissible: self.margin(x, hard).is_some_and(|m| m >= 0.0),
+        })
+    }
+
+    /// The point `criterion` chooses inside the admissible region of `hard`.
+    ///
+    /// # Errors
+    /// [`BlockingError::Empty`] when no point is admissible, [`BlockingError::LineOutside`]
+    /// when the line of [`Criterion::EqualSliding`] misses the region.
+    pub fn choose(&self, criterion: Criterion, hard: Hard) -> Result<Choice, BlockingError> {
+        let hard = match criterion {
+            Criterion::GreatestSumWithTip { sa_min } => Hard { sa_min, ..hard },
+            _ => hard,
+        };
+        let centre = self.centre(hard);
+        if !self.margin(centre, hard).is_some_and(|m| m > 0.0) {
+            let (lo, hi) = self.window;
+            return Err(BlockingError::Empty(
+                lo.x,
+                hi.x,
+                lo.y,
+                hi.y,
+                hard.sa_min,
+                hard.eps_min,
+            ));
+        }
+        let x = match criterion {
+            Criterion::LargestContactRatio => self.maximise(centre, hard, |ix| ix.eps),
+            Criterion::GreatestSumWithTip { .. } => {
+                self.maximise(centre, hard, |ix| ix.x[0] + ix.x[1])
+            }
+            Criterion::EqualSliding { x_sum } => self.equal_sliding(x_sum, hard)?,
+        };
+        let indices = self.indices(x).ok_or(BlockingError::Domain(x.x, x.y))?;
+        Ok(Choice { criterion, indices })
+    }
+
+    /// The admissible boundary's distance along the ray from `c` at the angle `a`.
+    fn boundary_at(&self, c: DVec2, a: f64, hard: Hard) -> f64 {
+        let d = DVec2::new(a.cos(), a.sin());
+        let f = |p: DVec2| self.margin(p, hard);
+        self.first_crossing(c, d, &f)
+            .unwrap_or_else(|| self.reach(c, d))
+    }
+
+    /// Maximise `obj` over the admissible region, star-shaped about `c`: the points c +
+    /// s·t_b(θ)·(cos θ, sin θ), s ∈ [0, 1], t_b the boundary's distance; a 360 × 21 grid of
+    /// (θ, s), then golden sections in θ and in s, alternately, on shrinking brackets.
+    fn maximise(&self, c: DVec2, hard: Hard, obj: impl Fn(&Indices) -> f64) -> DVec2 {
+        let at = |a: f64, s: f64| {
+            let t = self.boundary_at(c, a, hard) * s;
+            let p = c + DVec2::new(a.cos(), a.sin()) * t;
+            (p, self.indices(p).map_or(f64::NEG_INFINITY, |ix| obj(&ix)))
+        };
+        let (na, ns) = (360, 20);
+        let da = 2.0 * PI / f64::from(na);
+        let mut best = (f64::NEG_INFINITY, 0.0, 0.0);
+        for i in 0..na {
+            let a = da * f64::from(i);
+            let tb = self.boundary_at(c, a, hard);
+            let d = DVec2::new(a.cos(), a.sin());
+            for j in 0..=ns {
+                let s = f64::from(j) / f64::from(ns);
+                if let Some(ix) = self.indices(c + d * (tb * s)) {
+                    let v = obj(&ix);
+                    if v > best.0 {
+                        best = (v, a, s);
+                    }
+                }
+            }
+        }
+        let (mut a, mut s) = (best.1, best.2);
+        let (mut wa, mut ws) = (da, 1.0 / f64::from(ns));
+        for _ in 0..6 {
+            a = golden(a - wa, a + wa, |a| at(a, s).1);
+            s = golden((s - ws).max(0.0), (s + ws).min(1.0), |s| at(a, s).1);
+            wa *= 0.25;
+            ws *= 0.25;
+        }
+        at(a, s).0
+    }
+
+    /// The equal-sliding point of the line x₁ + x₂ = `x_sum` (see [`Criterion::EqualSliding`]).
+    fn equal_sliding(&self, x_sum: f64, hard: Hard) -> Result<DVec2, BlockingError> {
+        if !x_sum.is_finite() {
+            return Err(BlockingError::NotFinite(x_sum, x_sum));
+        }
+        let (lo, hi) = self.window;
+        let a = lo.x.max(x_sum - hi.y);
+        let b = hi.x.min(x_sum - lo.y);
+        if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
+            return Err(BlockingError::LineOutside(x_sum));
+        }
+        let on = |x1: f64| DVec2::new(x1, x_sum - x1);
+        // The admissible stretch of the line, sampled, then its ends bisected.
+        let n = 2000;
+        let xs: Vec<f64> = (0..=n)
+            .map(|k| a + (b - a) * f64::from(k) / f64::from(n))
+            .collect();
+        let ok = |x1: f64| self.margin(on(x1), hard).is_some_and(|m| m >= 0.0);
+        let Some(k0) = xs.iter().position(|x| ok(*x)) else {
+            return Err(BlockingError::LineOutside(x_sum));
+        };
+        let k1 = xs.iter().rposition(|x| ok(*x)).unwrap_or(k0);
+        let margin = |x: f64| self.margin(on(x), hard);
+        // The ends of the stretch on its admissible side.
+        let from = if k0 > 0 {
+            bracket(xs[k0 - 1], xs[k0], false, &margin).map_or(xs[k0], |(_, h)| h)
+        } else {
+            xs[k0]
+        };
+        let to = if k1 < n as usize {
+            bracket(xs[k1], xs[k1 + 1], true, &margin).map_or(xs[k1], |(l, _)| l)
+        } else {
+            xs[k1]
+        };
+        let d = |x1: f64| self.indices(on(x1))?.of(Kind::EqualSliding);
+        match (d(from), d(to)) {
+            (Some(u), Some(v)) if (u >= 0.0) != (v >= 0.0) => {
+                let x1 = bisect(from, to, u >= 0.0, d).unwrap_or(from);
+                Ok(on(x1))
+            }
+            (u, v) => {
+                let u = u.map_or(f64::INFINITY, f64::abs);
+                let v = v.map_or(f64::INFINITY, f64::abs);
+                Ok(on(if u <= v { from } else { to }))
+            }
+        }
+    }
+}
+
+/// Bisect `f` on [a, b] where f(a) ≥ 0 is `a_nonneg` and f(b) is of the other sign, to
+/// [`BISECT_TO`] or 200 halvings; `None` when f leaves its domain inside.
+fn bisect(a: f64, b: f64, a_nonneg: bool, f: impl Fn(f64) -> Option<f64>) -> Option<f64> {
+    let (lo, hi) = bracket(a, b, a_nonneg, &f)?;
+    // The end whose value is nearer 0.
+    let (fl, fh) = (f(lo)?.abs(), f(hi)?.abs());
+    Some(if fl <= fh { lo } else { hi })
+}
+
+/// The bracket (a-side end, b-side end) [`bisect`] shrinks.
+fn bracket(a: f64, b: f64, a_nonneg: bool, f: &impl Fn(f64) -> Option<f64>) -> Option<(f64, f64)> {
+    let (mut lo, mut hi) = (a, b);
+    for _ in 0..200 {
+        if (hi - lo).abs() <= BISECT_TO {
+            break;
+        }
+        let mid = 0.5 * (lo + hi);
+        if mid == lo || mid == hi {
+            break;
+        }
+        if (f(mid)? >= 0.0) == a_nonneg {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some((lo, hi))
+}
+
+/// The golden-section maximum of `f` on [a, b] (60 steps: the bracket shrinks by 10⁻¹²).
+fn golden(a: f64, b: f64, f: impl Fn(f64) -> f64) -> f64 {
+    let k = (5.0_f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (a, b);
+    let mut c = b - k * (b - a);
+    let mut d = a + k * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..60 {
+        if fc >= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - k * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + k * (b - a);
+            fd = f(d);
+        }
+    }
+    if fc >= fd {
+        c
+    } else {
+        d
+    }
+}
+
+/// The runs of consecutive crossings of a closed fan (the last ray neighbours the first),
+/// broken where a ray misses or two crossings are more than `jump` apart.
+fn runs(hits: &[Option<DVec2>], jump: f64) -> Vec<Vec<DVec2>> {
+    let n = hits.len();
+    let breaks = |k: usize| -> bool {
+        // A break between ray k−1 and ray k.
+        match (hits[(k + n - 1) % n], hits[k]) {
+            (Some(a), Some(b)) => (a - b).length() > jump,
+            _ => true,
+        }
+    };
+    let Some(start) = (0..n).find(|&k| breaks(k)) else {
+        // One closed run round the whole fan.
+        let mut all: Vec<DVec2> = hits.iter().flatten().copied().collect();
+        if let Some(first) = all.first().copied() {
+            all.push(first);
+        }
+        return vec![all];
+    };
+    let mut out = Vec::new();
+    let mut cur: Vec<DVec2> = Vec::new();
+    for j in 0..n {
+        let k = (start + j) % n;
+        if breaks(k) && !cur.is_empty() {
+            out.push(std::mem::take(&mut cur));
+        }
+        if let Some(p) = hits[k] {
+            cur.push(p);
+        }
+    }
+    if !cur.is_empty() {
+        out.push(cur);
+    }
+    out.retain(|r| r.len() >= 2);
+    out
+}
+
+/// The pair of a point of the plane as [`Pair::new`] computes it (module `module`, the
+/// exact Δy): the analytic twin of [`Blocking::indices`].
+///
+/// # Errors
+/// Those of [`Pair::new`].
+pub fn twin_pair(b: &Blocking, module: f64, x: DVec2) -> Result<Pair, GearError> {
+    Pair::new(PairSpec {
+        module,
+        z: b.z,
+        x: [x.x, x.y],
+        rack: b.rack,
+        dy_table: None,
+    })
+}
+
+/// The lower limit point of wheel `i`'s involute from N_i, per module, by [`Cutting`]: the
+/// roll of the junction of involute and fillet, √(|J|² − r_b²), on the blank of the pair's
+/// r_a (the twin of [`Indices::rho_l`]; the flank's end's state when the wheel is
+/// undercut, where the junction moves up the fillet's cut).
+///
+/// # Errors
+/// Those of [`Cutting::with_tip`].
+pub fn twin_rho_l(p: &Pair, i: usize) -> Result<f64, GearError> {
+    let m = p.spec.module;
+    let c = Cutting::with_tip(m, p.spec.z[i], p.spec.x[i], p.spec.rack, p.ra[i])?;
+    let (sa, ca) = (c.rack.alpha.sin(), c.rack.alpha.cos());
+    if c.undercut() {
+        let st = c.states();
+        return Ok(((st.q_j - st.q_p) * ca + c.r() * sa) / m);
+    }
+    let j = c.junction().0.length();
+    let rb = c.rb();
+    Ok(((j - rb) * (j + rb)).max(0.0).sqrt() / m)
+}
+
+/// The contour of a scene's pair: traced, the scene's point placed, the textbook's choices.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Study {
+    /// The module, m (the rows' lengths).
+    pub module: f64,
+    /// The traced contour (its hard limits: [`Study::HARD`]).
+    pub contour: Contour,
+    /// The scene's (x₁, x₂) placed.
+    pub placed: Placement,
+    /// Each criterion's choice, or why there is none.
+    pub choices: Vec<(Criterion, Result<Choice, BlockingError>)>,
+    /// The largest difference of a traced curve's index by the twins from its limit over
+    /// the sampled points (s_a/m, ε_α, lengths/m, λ relative), and the points sampled.
+    pub twin_check: (f64, usize),
+}
+
+impl Study {
+    /// The study's hard limits: s_a ≥ 0.25m, ε_α ≥ 1 (with no undercut, no interference).
+    pub const HARD: Hard = Hard {
+        sa_min: 0.25,
+        eps_min: 1.0,
+    };
+
+    /// The contour of the pair `spec` with its point placed and the choices: the largest
+    /// ε_α, equal sliding on the scene's x_Σ, the greatest x_Σ with s_a ≥ 0.25m.
+    ///
+    /// # Errors
+    /// Those of [`Blocking::new`] and [`Blocking::place`].
+    pub fn of(spec: &PairSpec) -> Result<Self, BlockingError> {
+        let b = Blocking::new(spec.z, spec.rack)?;
+        let contour = b.trace(Self::HARD);
+        let placed = b.place(DVec2::new(spec.x[0], spec.x[1]), Self::HARD)?;
+        let choices = [
+            Criterion::LargestContactRatio,
+            Criterion::EqualSliding {
+                x_sum: spec.x_sum(),
+            },
+            Criterion::GreatestSumWithTip { sa_min: 0.25 },
+        ]
+        .into_iter()
+        .map(|c| (c, b.choose(c, Self::HARD)))
+        .collect();
+        let twin_check = twin_check(&contour, spec.module, 10);
+        Ok(Self {
+            module: spec.module,
+            contour,
+            placed,
+            choices,
+            twin_check,
+        })
+    }
+
+    /// The points the rows and the sheet name: the scene's and each choice's, with a tag.
+    pub fn points(&self) -> Vec<(&'static str, Indices)> {
+        let mut out = vec![("bz", self.placed.indices)];
+        for (c, r) in &self.choices {
+            if let Ok(ch) = r {
+                out.push((criterion_tag(*c), ch.indices));
+            }
+        }
+        out
+    }
+
+    /// The rows: at each point, ε_α, s_a1, s_a2, α_w and Δy by the contour's lean formulas
+    /// (graphical column) against [`Pair::new`] at that point (analytic).
+    pub fn rows(&self) -> Vec<crate::check::Row> {
+        use super::rows::row;
+        use crate::check::{Method, Symbol};
+        let f = Method::Formula;
+        let m = self.module;
+        let b = &self.contour.blocking;
+        let mut out = Vec::new();
+        for (tag, ix) in self.points() {
+            let Ok(p) = twin_pair(b, m, DVec2::from(ix.x)) else {
+                continue;
+            };
+            out.push(row(
+                Symbol::ContactRatio,
+                &format!("alpha_{tag}"),
+                f,
+                ix.eps,
+                p.eps,
+                p.eps,
+            ));
+            for i in 0..2 {
+                out.push(row(
+                    Symbol::ToothThickness,
+                    &format!("a{}_{tag}", i + 1),
+                    f,
+                    ix.sa[i] * m,
+                    p.sa[i],
+                    m,
+                ));
+            }
+            out.push(row(
+                Symbol::EngagementAngle,
+                &format!("w_{tag}"),
+                f,
+                ix.alpha_w.to_degrees(),
+                p.alpha_w.to_degrees(),
+                p.alpha_w.to_degrees(),
+            ));
+            out.push(row(Symbol::EqualisingShift, tag, f, ix.dy, p.dy, 1.0));
+        }
+        out
+    }
+
+    /// The notes: the contour traced and checked, the scene's point and the choices.
+    pub fn notes(&self) -> Vec<String> {
+        let num = |x: f64, s| crate::scale::format_sig(x, s, crate::scale::Lang::En);
+        let b = &self.contour.blocking;
+        let n: usize = self.contour.curves.iter().map(|c| c.points.len()).sum();
+        let mut out = vec![format!(
+            "blocking contour z₁ = {}, z₂ = {}: {} curves, {n} points traced by bisection along {RAYS} rays to 1e-13 of m; at {} sampled points the twins (Pair::new, Cutting) give the limits to {:.1e}; undercut limit x_min = h_l* − z sin²α/2 with h_l* = {} (the flank's end): x_min1 = {}, x_min2 = {}",
+            b.z[0],
+            b.z[1],
+            self.contour.curves.len(),
+            self.twin_check.1,
+            self.twin_check.0,
+            num(b.hl, 6),
+            num(b.x_min(0), 5),
+            num(b.x_min(1), 5),
+        )];
+        let describe = |ix: &Indices| {
+            let l = ix.lambda.map_or("—".to_string(), |l| {
+                format!("λ₁(B₁) = {}, λ₂(B₂) = {}", num(l[0], 5), num(l[1], 5))
+            });
+            format!(
+                "x₁ = {}, x₂ = {}: α_w = {}°, y = {}, Δy = {}, ε_α = {}, s_a1 = {}m, s_a2 = {}m, {l}",
+                num(ix.x[0], 6),
+                num(ix.x[1], 6),
+                num(ix.alpha_w.to_degrees(), 6),
+                num(ix.y, 5),
+                num(ix.dy, 5),
+                num(ix.eps, 5),
+                num(ix.sa[0], 4),
+                num(ix.sa[1], 4),
+            )
+        };
+        let outside: Vec<String> = self
+            .placed
+            .sides
+            .iter()
+            .filter(|s| s.inside == Some(false))
+            .map(|s| level_name(s.kind, s.limit))
+            .collect();
+        out.push(format!(
+            "blocking contour: the scene's point {}; {} (s_a ≥ 0.25m, ε_α ≥ 1, no undercut, no interference){}",
+            describe(&self.placed.indices),
+            if self.placed.admissible {
+                "inside"
+            } else {
+                "outside"
+            },
+            if outside.is_empty() {
+                String::new()
+            } else {
+                format!("; on the wrong side of {}", outside.join(", "))
+            }
+        ));
+        for (c, r) in &self.choices {
+            out.push(match r {
+                Ok(ch) => format!(
+                    "blocking contour: {}: {}",
+                    criterion_name(*c),
+                    describe(&ch.indices)
+                ),
+                Err(e) => format!("blocking contour: {}: none ({e})", criterion_name(*c)),
+            });
+        }
+        out
+    }
+}
+
+/// The short label of a point of [`Study::points`] on the drawing (the sheet's lines give
+/// its x₁, x₂ and indices under the same name): K the scene's point, ε_{α max}, λ (equal
+/// sliding), x_{Σ max}.
+pub fn point_label(tag: &str) -> &'static str {
+    match tag {
+        "bz" => "K",
+        "beps" => "ε_{α max}",
+        "bsl" => "λ_1 = λ_2",
+        _ => "x_{Σ max}",
+    }
+}
+
+/// A criterion's tag in row subjects.
+pub fn criterion_tag(c: Criterion) -> &'static str {
+    match c {
+        Criterion::LargestContactRatio => "beps",
+        Criterion::EqualSliding { .. } => "bsl",
+        Criterion::GreatestSumWithTip { .. } => "bsum",
+    }
+}
+
+/// A criterion in words (the notes).
+fn criterion_name(c: Criterion) -> String {
+    match c {
+        Criterion::LargestContactRatio => "the largest ε_α".into(),
+        Criterion::EqualSliding { x_sum } => format!(
+            "equal sliding λ₁(B₁) = λ₂(B₂) on x₁ + x₂ = {}",
+            crate::scale::format_sig(x_sum, 6, crate::scale::Lang::En)
+        ),
+        Criterion::GreatestSumWithTip { sa_min } => format!(
+            "the greatest x₁ + x₂ with s_a ≥ {}m",
+            crate::scale::format_sig(sa_min, 3, crate::scale::Lang::En)
+        ),
+    }
+}
+
+/// A level in words (the notes).
+fn level_name(kind: Kind, limit: f64) -> String {
+    let l = crate::scale::format_sig(limit, 4, crate::scale::Lang::En);
+    match kind {
+        Kind::Undercut(i) => format!("x{} ≥ x_min{} = {l}", i + 1, i + 1),
+        Kind::Tip(i) => format!("s_a{} ≥ {l}m", i + 1),
+        Kind::ContactRatio => format!("ε_α ≥ {l}"),
+        Kind::Interference(i) => format!("no interference with the fillet of wheel {}", i + 1),
+        Kind::EqualSliding => "λ₁ = λ₂".into(),
+    }
+}
+
+/// The twins' check of a contour: at up to `per_curve` points of every curve, the index by
+/// [`Pair::new`] and [`Cutting`] less its limit (s_a and lengths per m, ε_α, λ relative to
+/// max(1, |λ|)); the largest and the number of points.
+pub fn twin_check(c: &Contour, module: f64, per_curve: usize) -> (f64, usize) {
+    let b = &c.blocking;
+    let mut worst = 0.0_f64;
+    let mut n = 0;
+    for curve in &c.curves {
+        let step = (curve.points.len() / per_curve.max(1)).max(1);
+        for p in curve.points.iter().step_by(step) {
+            if let Some(d) = twin_deviation(b, module, curve.kind, curve.limit, *p) {
+                worst = worst.max(d);
+                n += 1;
+            }
+        }
+    }
+    (worst, n)
+}
+
+/// The index of `kind` at `x` by the twins less `limit` (see [`twin_check`]); `None` when a
+/// twin has no value there.
+pub fn twin_deviation(b: &Blocking, module: f64, kind: Kind, limit: f64, x: DVec2) -> Option<f64> {
+    let p = twin_pair(b, module, x).ok()?;
+    let m = module;
+    Some(match kind {
+        Kind::Undercut(i) => {
+            // The flank's end at N: the junction state's roll from N is 0.
+            let c = Cutting::with_tip(m, b.z[i], [x.x, x.y][i], b.rack, p.ra[i]).ok()?;
+            let st = c.states();
+            let (sa, ca) = (c.rack.alpha.sin(), c.rack.alpha.cos());
+            (((st.q_j - st.q_p) * ca + c.r() * sa) / m).abs()
+        }
+        Kind::Tip(i) => (p.sa[i] / m - limit).abs(),
+        Kind::ContactRatio => (p.eps - limit).abs(),
+        Kind::Interference(i) => {
+            let near = if i == 0 {
+                p.active_ends()[0]
+            } else {
+                p.g - p.active_ends()[1]
+            };
+            (near / m - twin_rho_l(&p, i).ok()? - limit).abs()
+        }
+        Kind::EqualSliding => {
+            let ends = p.active_ends();
+            let (l1, l2) = (p.sliding(ends[0])[0], p.sliding(ends[1])[1]);
+            (l1 - l2 - limit).abs() / l1.abs().max(l2.abs()).max(1.0)
+        }
+    })
+}
+
+/// The words a drawing of the contour needs from the sheet's catalogue.
+#[derive(Debug, Clone, Copy)]
+pub struct Words<'a> {
+    /// "interference" (with a wheel's fillet).
+    pub interference: &'a str,
+}
+
+/// Clip the segment a–b to the rectangle [0, w] × [0, h] (Liang–Barsky).
+fn clip(a: DVec2, b: DVec2, w: f64, h: f64) -> Option<(DVec2, DVec2)> {
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+    for (p, q) in [(-d.x, a.x), (d.x, w - a.x), (-d.y, a.y), (d.y, h - a.y)] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    (t0 <= t1).then(|| (a + d * t0, a + d * t1))
+}
+
+/// The polyline `pts` clipped to [0, w] × [0, h]: its pieces inside.
+fn clip_polyline(pts: &[DVec2], w: f64, h: f64) -> Vec<Vec<DVec2>> {
+    let mut out: Vec<Vec<DVec2>> = Vec::new();
+    let mut cur: Vec<DVec2> = Vec::new();
+    for s in pts.windows(2) {
+        match clip(s[0], s[1], w, h) {
+            Some((a, b)) => {
+                if cur.last().is_none_or(|l| (*l - a).length() > 1e-9) {
+                    if cur.len() >= 2 {
+                        out.push(std::mem::take(&mut cur));
+                    }
+                    cur = vec![a];
+                }
+                cur.push(b);
+            }
+            None => {
+                if cur.len() >= 2 {
+                    out.push(std::mem::take(&mut cur));
+                }
+                cur.clear();
+            }
+        }
+    }
+    if cur.len() >= 2 {
+        out.push(cur);
+    }
+    out
+}
+
+/// The room about `p` (figure mm): its distance to the drawn curves (but the level `skip`),
+/// to the labels already placed and to the plane's edges.
+fn room(
+    drawn: &[(usize, Vec<DVec2>)],
+    skip: Option<usize>,
+    taken: &[DVec2],
+    p: DVec2,
+    w: f64,
+    h: f64,
+) -> f64 {
+    let others = drawn
+        .iter()
+        .filter(|(j, _)| Some(*j) != skip)
+        .flat_map(|(_, q)| q.iter().step_by(2))
+        .chain(taken.iter())
+        .map(|q| (*q - p).length())
+        .fold(f64::INFINITY, f64::min);
+    others.min(p.x).min(p.y).min(w - p.x).min(h - p.y)
+}
+
+/// The label of a level in label markup.
+fn level_label(kind: Kind, limit: f64, lang: crate::scale::Lang, words: Words<'_>) -> String {
+    let l = crate::scale::format_sig(limit, 3, lang);
+    match kind {
+        Kind::Undercut(i) => format!("x_{{min{}}}", i + 1),
+        Kind::Tip(i) if limit == 0.0 => format!("s_{{a{}}} = 0", i + 1),
+        Kind::Tip(i) => format!("s_{{a{}}} = {l}m", i + 1),
+        Kind::ContactRatio => format!("ε_α = {l}"),
+        Kind::Interference(i) => format!("{} {}", words.interference, i + 1),
+        Kind::EqualSliding => "λ_1 = λ_2".into(),
+    }
+}
+
+impl Study {
+    /// The drawing of the contour: the axes x₁, x₂ with ticks every 0.2 (0.1 on a small
+    /// plane), every traced curve labelled (thin: the limits; dash-dot: the quality
+    /// isolines s_a = 0.25m, 0.4m, ε_α = 1.2 and the line of equal sliding), the admissible
+    /// region's boundary bold, the scene's point and each choice marked and labelled. Figure
+    /// mm, a round 40–120 mm per unit of x (the larger side up to 220 mm).
+    pub fn figure(
+        &self,
+        scale: crate::scale::Scale,
+        lang: crate::scale::Lang,
+        words: Words<'_>,
+    ) -> crate::construct::Figure {
+        use crate::construct::{Figure, Item, Label, Role, Step, StepId};
+        use crate::geom::Segment;
+        let fmt = |x: f64| crate::scale::format_sig(x, 3, lang);
+        let c = &self.contour;
+        // The plotted plane: the admissible region and the points, 0.3 about them, within
+        // the window; rounded out to tenths.
+        let mut lo = DVec2::splat(f64::INFINITY);
+        let mut hi = DVec2::splat(f64::NEG_INFINITY);
+        let mut grow = |p: DVec2| {
+            lo = lo.min(p);
+            hi = hi.max(p);
+        };
+        c.boundary.iter().for_each(|p| grow(*p));
+        for (_, ix) in self.points() {
+            grow(DVec2::from(ix.x));
+        }
+        if !lo.is_finite() || !hi.is_finite() {
+            (lo, hi) = c.blocking.window;
+        }
+        let (wlo, whi) = c.blocking.window;
+        let lo = (lo - DVec2::splat(0.25)).max(wlo);
+        let mut hi = (hi + DVec2::splat(0.25)).min(whi);
+        let lo = lo.min(hi - DVec2::splat(0.2));
+        // Far enough to show where each wheel's tooth points (s_a = 0) beside the region,
+        // up to 0.5 more.
+        let (lo0, hi0) = (lo, hi);
+        for cv in c.curves.iter().filter(|cv| cv.limit == 0.0) {
+            for p in &cv.points {
+                match cv.kind {
+                    Kind::Tip(0) if p.y >= lo0.y && p.y <= hi0.y => hi.x = hi.x.max(p.x + 0.05),
+                    Kind::Tip(1) if p.x >= lo0.x && p.x <= hi0.x => hi.y = hi.y.max(p.y + 0.05),
+                    _ => {}
+                }
+            }
+        }
+        let hi = hi.min(hi0 + DVec2::splat(0.5));
+        let lo = (lo.max(wlo) * 10.0).floor() / 10.0;
+        let hi = (hi.min(whi) * 10.0).ceil() / 10.0;
+        let span = (hi - lo).max(DVec2::splat(0.2));
+        // mm per unit: the larger side about 150 mm.
+        let per_unit = [40.0, 50.0, 60.0, 80.0, 100.0, 120.0]
+            .into_iter()
+            .rev()
+            .find(|s| span.max_element() * s <= 220.0)
+            .unwrap_or(40.0);
+        let to = |p: DVec2| (p - lo) * per_unit;
+        let (w, h) = (span.x * per_unit, span.y * per_unit);
+        let mut steps: Vec<Step> = Vec::new();
+        let mut push =
+            |note: String, item: Item, role: Role, label: Option<(String, DVec2, DVec2)>| {
+                let id = StepId(steps.len() as u32);
+                steps.push(Step {
+                    id,
+                    note,
+                    item,
+                    role,
+                    label: label.map(|(text, anchor, toward)| Label {
+                        text,
+                        anchor,
+                        toward,
+                    }),
+                    from: Vec::new(),
+                    group: 0,
+                });
+            };
+        // The axes along the plane's lower and left edges, with their ticks.
+        push(
+            "the axis x₁".into(),
+            Item::Segment(Segment::new(DVec2::ZERO, DVec2::new(w + 6.0, 0.0))),
+            Role::Construction,
+            Some((
+                "x_1".into(),
+                DVec2::new(w + 6.0, 0.0),
+                DVec2::new(1.0, -0.6),
+            )),
+        );
+        push(
+            "the axis x₂".into(),
+            Item::Segment(Segment::new(DVec2::ZERO, DVec2::new(0.0, h + 6.0))),
+            Role::Construction,
+            Some((
+                "x_2".into(),
+                DVec2::new(0.0, h + 6.0),
+                DVec2::new(-0.6, 1.0),
+            )),
+        );
+        let step = if span.max_element() > 1.0 { 0.2 } else { 0.1 };
+        for axis in 0..2 {
+            let (a, b) = if axis == 0 {
+                (lo.x, hi.x)
+            } else {
+                (lo.y, hi.y)
+            };
+            let mut k = (a / step).ceil() as i64;
+            while (k as f64) * step <= b + 1e-9 {
+                let v = k as f64 * step;
+                let at = (v - a) * per_unit;
+                let (p, q, toward) = if axis == 0 {
+                    (
+                        DVec2::new(at, 0.0),
+                        DVec2::new(at, -2.0),
+                        DVec2::new(0.0, -1.0),
+                    )
+                } else {
+                    (
+                        DVec2::new(0.0, at),
+                        DVec2::new(-2.0, at),
+                        DVec2::new(-1.0, 0.0),
+                    )
+                };
+                let text = if v.abs() < 1e-9 {
+                    "0".to_string()
+                } else {
+                    fmt(v)
+                };
+                push(
+                    format!("a tick of x{} at {v:.1}", axis + 1),
+                    Item::Segment(Segment::new(p, q)),
+                    Role::Construction,
+                    Some((text, q, toward)),
+                );
+                k += 1;
+            }
+        }
+        // The curves, each labelled once on its longest piece, where the label is farthest
+        // from the other curves and labels.
+        let levels = levels(&c.blocking.rack, c.blocking.z);
+        let mut drawn: Vec<(usize, Vec<DVec2>)> = Vec::new();
+        for (k, (kind, limit)) in levels.iter().enumerate() {
+            let mut pieces: Vec<Vec<DVec2>> = c
+                .curves
+                .iter()
+                .filter(|cv| cv.kind == *kind && cv.limit == *limit)
+                .flat_map(|cv| {
+                    let pts: Vec<DVec2> = cv.points.iter().map(|p| to(*p)).collect();
+                    clip_polyline(&pts, w, h)
+                })
+                .collect();
+            pieces.sort_by_key(|p| std::cmp::Reverse(p.len()));
+            drawn.extend(pieces.into_iter().map(|p| (k, p)));
+        }
+        let mut taken: Vec<DVec2> = Vec::new();
+        let mut first_of = vec![true; levels.len()];
+        for (k, piece) in &drawn {
+            let (kind, limit) = levels[*k];
+            let dashed = matches!((kind, limit), (Kind::Tip(_), l) if l > 0.0)
+                || (kind == Kind::ContactRatio && limit > 1.0)
+                || kind == Kind::EqualSliding;
+            let role = if dashed {
+                Role::Axis
+            } else {
+                Role::Construction
+            };
+            // Each level's longest piece labelled, and any other piece 15 mm long.
+            let long = piece
+                .windows(2)
+                .map(|s| (s[1] - s[0]).length())
+                .sum::<f64>()
+                >= 15.0;
+            let first = std::mem::replace(&mut first_of[*k], false);
+            let label = (first || long).then(|| {
+                let room = |p: DVec2| room(&drawn, Some(*k), &taken, p, w, h);
+                let n = piece.len() - 1;
+                let at = (1..20)
+                    .map(|f| n * f / 20)
+                    .max_by(|a, b| room(piece[*a]).total_cmp(&room(piece[*b])))
+                    .unwrap_or(n / 2);
+                let p = piece[at];
+                let t = (piece[(at + 1).min(n)] - piece[at.saturating_sub(1)]).normalize_or_zero();
+                let mut nrm = DVec2::new(-t.y, t.x);
+                // Toward the side with more room.
+                if room(p + nrm * 4.0) < room(p - nrm * 4.0) {
+                    nrm = -nrm;
+                }
+                taken.push(p + nrm * 6.0);
+                (level_label(kind, limit, lang, words), p, nrm)
+            });
+            push(
+                format!("the curve {}", level_name(kind, limit)),
+                Item::Polyline {
+                    points: piece.clone(),
+                    closed: false,
+                },
+                role,
+                label,
+            );
+        }
+        // The admissible region's boundary, bold.
+        let ring: Vec<DVec2> = c
+            .boundary
+            .iter()
+            .chain(c.boundary.first())
+            .map(|p| to(*p))
+            .collect();
+        for piece in clip_polyline(&ring, w, h) {
+            push(
+                "the admissible region's boundary".into(),
+                Item::Polyline {
+                    points: piece,
+                    closed: false,
+                },
+                Role::Result,
+                None,
+            );
+        }
+        // The points.
+        for (tag, ix) in self.points() {
+            let at = to(DVec2::from(ix.x));
+            if !(at.x >= 0.0 && at.y >= 0.0 && at.x <= w && at.y <= h) {
+                continue;
+            }
+            let text = point_label(tag).to_string();
+            // Toward the most room of eight directions, 6 mm out.
+            let toward = (0..8)
+                .map(|k| {
+                    let a = PI / 4.0 * f64::from(k) + PI / 8.0;
+                    DVec2::new(a.cos(), a.sin())
+                })
+                .max_by(|a, b| {
+                    room(&drawn, None, &taken, at + *a * 6.0, w, h).total_cmp(&room(
+                        &drawn,
+                        None,
+                        &taken,
+                        at + *b * 6.0,
+                        w,
+                        h,
+                    ))
+                })
+                .unwrap_or(DVec2::new(1.0, 1.0));
+            taken.push(at + toward * 6.0);
+            push(
+                format!("the point {tag}"),
+                Item::Point(at),
+                Role::Given,
+                Some((text, at, toward)),
+            );
+        }
+        Figure {
+            title: "blocking contour".into(),
+            scale,
+            steps,
+        }
+    }
+}
