@@ -10,7 +10,7 @@ use crate::construct::{Item, Recorder, Role};
 use crate::geom::{DVec2, Segment, Side};
 
 /// Spacing of the planes of meshing wheels along the axes, mm.
-const PLANE_MM: f64 = 30.0;
+const PLANE_MM: f64 = 34.0;
 /// How far a shaft runs past its outermost wheel, mm.
 const SHAFT_END_MM: f64 = 6.0;
 /// Half length of a wheel's end bars, mm.
@@ -18,9 +18,10 @@ const BAR_MM: f64 = 1.5;
 /// Drawn distance between shafts on one axis (a hollow shaft over another), mm.
 const COAXIAL_MM: f64 = 1.2;
 /// How far a ring's disc stands past its plane, mm.
-const CUP_MM: f64 = 6.0;
-/// How far the carrier's arm stands before the satellites' plane, mm.
-const ARM_MM: f64 = 6.0;
+const CUP_MM: f64 = 10.0;
+/// How far the carrier's arm stands past the satellites' plane (between it and a ring's cup,
+/// leaving the room before the plane to the wheels' names), mm.
+const ARM_MM: f64 = 5.0;
 
 /// Draw `train`'s scheme into `rec` with its rightmost plane at `right` (figure mm), the
 /// shafts at the heights `height(ys[k])` of the triangles, the wheels reaching their mesh
@@ -119,11 +120,12 @@ pub(super) fn draw_scheme(
             );
         }
         let top = if hi - y >= y - lo { hi } else { lo };
+        // Named beside its line, in the room before the next plane.
         rec.label(
             id,
             format!("z_{{{}}} = {}", wheel.name, wheel.z),
             DVec2::new(x, 0.5 * (y + top)),
-            DVec2::new(-1.0, 0.0),
+            DVec2::new(1.0, 0.0),
         );
     }
     // The shafts: from their first wheel's plane to their last, on bearings on the frame;
@@ -147,8 +149,8 @@ pub(super) fn draw_scheme(
                     .enumerate()
                     .filter(|(_, w)| train.satellites.contains(&w.shaft))
                     .map(|(i, _)| plane_x(planes[i]))
-                    .fold(f64::INFINITY, f64::min)
-                    - ARM_MM
+                    .fold(f64::NEG_INFINITY, f64::max)
+                    + ARM_MM
             })
             .filter(|x| x.is_finite());
         let (mut a, mut b) = xs
@@ -162,8 +164,8 @@ pub(super) fn draw_scheme(
         }
         if satellite {
             // The axle of the satellite, on the carrier's arm.
-            a -= ARM_MM;
-            b += BAR_MM;
+            a -= BAR_MM;
+            b += ARM_MM;
         } else {
             a -= SHAFT_END_MM;
             b += SHAFT_END_MM;

@@ -44,7 +44,7 @@ pub const PLAN_REACH_MM: f64 = 100.0;
 const TRIANGLES_SPAN_MM: f64 = 180.0;
 
 /// The gap between the kinematic scheme and the leftmost velocity, mm.
-const SCHEME_GAP_MM: f64 = 24.0;
+const SCHEME_GAP_MM: f64 = 30.0;
 
 /// How far the reading line runs past the outermost intercepts, mm.
 const PLAN_OVERHANG_MM: f64 = 8.0;
@@ -270,6 +270,7 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
         );
         let _ = id;
     }
+    let mut leftmost = 0.0_f64;
     for (k, (a, b)) in lines
         .iter()
         .enumerate()
@@ -306,6 +307,7 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
             DVec2::new(at(&(a, b), ylo), ylo),
             DVec2::new(at(&(a, b), yhi), yhi),
         );
+        leftmost = leftmost.min(pa.x).min(pb.x);
         let id = rec.draw(
             format!("the distribution line of {}", train.shafts[k]),
             Item::Segment(Segment::new(pa, pb)),
@@ -370,12 +372,7 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
     if wo.abs() < 1e-300 {
         return Err(TrainError::OutputAtRest);
     }
-    // The kinematic scheme to the left of the velocities, at their heights.
-    let leftmost = lines
-        .iter()
-        .flatten()
-        .flat_map(|l| [at(l, yy(lo)), at(l, yy(hi))])
-        .fold(0.0_f64, f64::min);
+    // The kinematic scheme to the left of the velocities as drawn, at their heights.
     super::scheme::draw_scheme(
         &mut rec,
         train,

@@ -191,11 +191,17 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         );
         blocks.push(view(&figure, caption, Key::PlanetaryModule, tri.scale_v));
         let tr_ = &t.spec.train;
-        lines.push(train_mobility_line(tr_));
+        // The mobility heads the ratio's line (the sheet's text block is as tall as PZ2's A3
+        // holds).
         for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
             let Some(s) = s else { continue };
+            let head = if sup.is_empty() {
+                format!("{}; ", train_mobility_line(tr_))
+            } else {
+                String::new()
+            };
             lines.push(format!(
-                "u_{{{}-{}}}{sup} = {} ({}), {} ({})",
+                "{head}u_{{{}-{}}}{sup} = {} ({}), {} ({})",
                 tr_.shafts[tr_.input],
                 tr_.shafts[tr_.output],
                 format_sig(s.ratio, 6, lang),
