@@ -6,7 +6,7 @@
 use std::path::Path;
 use tmm::plate::{to_png, to_svg, write_atomic};
 
-#[path = "../tests/support/demo.rs"]
+#[path = "../tests/all/support/demo.rs"]
 mod demo;
 use demo::demo_plate;
 use tmm::scale::Lang;

@@ -6,6 +6,7 @@
 
 use super::motion::{self, Motion};
 use super::{CamSpec, Closure};
+use crate::geom::golden_max;
 
 /// A smooth piece of the cycle: `phase` (0 rise, 1 far dwell, 2 return, 3 near dwell) from
 /// u = `from` to u = `to` of that phase (a dwell: 0 to 1, the motion constant).
@@ -135,45 +136,13 @@ pub fn max_on(a: f64, b: f64, n: usize, f: impl Fn(f64) -> f64) -> (f64, f64) {
         if left && right {
             let lo = xs[i.saturating_sub(1)];
             let hi = xs[(i + 1).min(n)];
-            golden(lo, hi, &f, &mut best);
+            let found = golden_max(lo, hi, &f);
+            if found.0 > best.0 {
+                best = found;
+            }
         }
     }
     best
-}
-
-/// Golden-section search for the largest of `f` on [lo, hi], every value evaluated kept in
-/// `best` (so the result is never more than a value `f` takes).
-fn golden(mut lo: f64, mut hi: f64, f: &impl Fn(f64) -> f64, best: &mut (f64, f64)) {
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let mut keep = |x: f64, v: f64| {
-        if v > best.0 {
-            *best = (v, x);
-        }
-    };
-    let (mut x1, mut x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    keep(x1, f1);
-    keep(x2, f2);
-    for _ in 0..200 {
-        if hi - lo <= 4.0 * f64::EPSILON * (lo.abs() + hi.abs()) {
-            break;
-        }
-        if f1 >= f2 {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - g * (hi - lo);
-            f1 = f(x1);
-            keep(x1, f1);
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + g * (hi - lo);
-            f2 = f(x2);
-            keep(x2, f2);
-        }
-    }
 }
 
 /// The largest of `f(motion)` over `pieces` (dense per phase, refined) and where:

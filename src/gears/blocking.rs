@@ -32,7 +32,7 @@
 
 use super::involute::{inv, inv_inverse};
 use super::{BasicRack, Cutting, GearError, Pair, PairSpec};
-use crate::geom::DVec2;
+use crate::geom::{golden_max, DVec2};
 use std::f64::consts::PI;
 
 /// The rays of the fan.
@@ -657,8 +657,8 @@ impl Blocking {
         let (mut a, mut s) = (best.1, best.2);
         let (mut wa, mut ws) = (da, 1.0 / f64::from(ns));
         for _ in 0..6 {
-            a = golden(a - wa, a + wa, |a| at(a, s).1);
-            s = golden((s - ws).max(0.0), (s + ws).min(1.0), |s| at(a, s).1);
+            a = golden_max(a - wa, a + wa, |a| at(a, s).1).1;
+            s = golden_max((s - ws).max(0.0), (s + ws).min(1.0), |s| at(a, s).1).1;
             wa *= 0.25;
             ws *= 0.25;
         }
@@ -741,35 +741,6 @@ fn bracket(a: f64, b: f64, a_nonneg: bool, f: &impl Fn(f64) -> Option<f64>) -> O
         }
     }
     Some((lo, hi))
-}
-
-/// The golden-section maximum of `f` on [a, b] (60 steps: the bracket shrinks by 10⁻¹²).
-fn golden(a: f64, b: f64, f: impl Fn(f64) -> f64) -> f64 {
-    let k = (5.0_f64.sqrt() - 1.0) / 2.0;
-    let (mut a, mut b) = (a, b);
-    let mut c = b - k * (b - a);
-    let mut d = a + k * (b - a);
-    let (mut fc, mut fd) = (f(c), f(d));
-    for _ in 0..60 {
-        if fc >= fd {
-            b = d;
-            d = c;
-            fd = fc;
-            c = b - k * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            c = d;
-            fc = fd;
-            d = a + k * (b - a);
-            fd = f(d);
-        }
-    }
-    if fc >= fd {
-        c
-    } else {
-        d
-    }
 }
 
 /// The runs of consecutive crossings of a closed fan (the last ray neighbours the first),

@@ -1,4 +1,5 @@
-//! The numeric kernel the domains share: a linear system and a bracketed root.
+//! The numeric kernel the domains share: a linear system, a bracketed root and a
+//! golden-section maximum.
 
 /// Solve the augmented system `a` (n rows of n + 1) by Gaussian elimination with partial
 /// pivoting; `None` when it is singular to rounding (a pivot below 1e-12 of the largest
@@ -87,6 +88,44 @@ pub fn bracketed_root(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
     } else {
         hi
     }
+}
+
+/// The largest value of `f` on [lo, hi] by golden-section search, and where: (value, x).
+/// `f` unimodal on the interval; every value evaluated is kept, so the result is never more
+/// than a value `f` takes. Stops when the bracket is a few ulps of its ends wide.
+pub fn golden_max(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -> (f64, f64) {
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let mut best = (f64::NEG_INFINITY, lo);
+    let mut keep = |x: f64, v: f64| {
+        if v > best.0 {
+            best = (v, x);
+        }
+    };
+    let (mut x1, mut x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+    let (mut f1, mut f2) = (f(x1), f(x2));
+    keep(x1, f1);
+    keep(x2, f2);
+    for _ in 0..200 {
+        if hi - lo <= 4.0 * f64::EPSILON * (lo.abs() + hi.abs()) {
+            break;
+        }
+        if f1 >= f2 {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - g * (hi - lo);
+            f1 = f(x1);
+            keep(x1, f1);
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + g * (hi - lo);
+            f2 = f(x2);
+            keep(x2, f2);
+        }
+    }
+    best
 }
 
 #[cfg(test)]

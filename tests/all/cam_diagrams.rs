@@ -348,7 +348,7 @@ fn s_has_no_step_where_a_phase_meets_a_dwell() {
 /// smooth curve extended past the last mid-interval point, a hook at each phase end. Under
 /// the cosine law it is not zero there (a soft shock) and stays extended. dS/dφ, whose chords
 /// are drawn again, keeps its extended ends: the chord method's own error, which the test of
-/// its convergence (tests/cam.rs) holds at second order.
+/// its convergence (tests/all/cam.rs) holds at second order.
 #[test]
 fn a_differentiated_s_gives_d2s_from_the_abscissa_where_the_law_has_it_there() {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("constructions/cam-central.toml");

@@ -2,7 +2,7 @@
 //! values of `seed-000-cases.md` §000.14, the seed's errors flagged, a dynamics with its own
 //! number of positions, and bad `[dynamics]` sections refused with their key paths.
 
-mod support;
+use crate::support;
 use support::{notes, num, report_json as report, rows_of as rows, scratch, tmm};
 
 fn report_json(scene: &str) -> serde_json::Value {

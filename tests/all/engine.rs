@@ -2,7 +2,7 @@
 //! indicator diagrams, the constant resisting moment, the flywheel for δ = 1/80), and bad
 //! `[[forces.indicator]]` and `[dynamics] constant_moment` keys refused with their paths.
 
-mod support;
+use crate::support;
 use support::{num, report_json as report, rows_of as rows, scratch, tmm};
 
 fn report_json(scene: &str) -> serde_json::Value {

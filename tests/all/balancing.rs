@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-mod support;
+use crate::support;
 use support::{num, report_json as report, root, scratch, tmm};
 
 fn report_json(scene: &str, drafting: &str) -> serde_json::Value {

@@ -2,7 +2,7 @@
 //! a further sheet, and a view too large for any sheet at its given scale is refused naming
 //! the key and the largest scale that fits.
 
-mod support;
+use crate::support;
 
 use std::path::PathBuf;
 use tmm::construct::Drafting;

@@ -3,7 +3,7 @@
 //! fuzzer, no libFuzzer needed). A panic fails the test. Minimised findings of the fuzz runs
 //! are kept here too (see `fuzz/README.md`).
 
-#[path = "../fuzz/src/lib.rs"]
+#[path = "../../fuzz/src/lib.rs"]
 mod fuzz_body;
 
 use std::path::{Path, PathBuf};

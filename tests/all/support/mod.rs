@@ -18,7 +18,6 @@ pub fn tmm(args: &[&str]) -> Output {
 }
 
 /// Every scene of `constructions/`, sorted; at least the eighteen there are.
-#[allow(dead_code)] // not every test binary walks the scenes
 pub fn scene_paths() -> Vec<PathBuf> {
     let mut paths: Vec<PathBuf> = std::fs::read_dir(root().join("constructions"))
         .expect("constructions")
@@ -30,10 +29,12 @@ pub fn scene_paths() -> Vec<PathBuf> {
     paths
 }
 
-/// A fresh scratch folder for one test.
-#[allow(dead_code)] // not every test binary writes files
+/// A fresh scratch folder for one test: its own even when two tests running at once give
+/// the same name (a counter of the process).
 pub fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("tmm-test-{}-{name}", std::process::id()));
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("tmm-test-{}-{n}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("scratch dir");
     dir
@@ -41,7 +42,6 @@ pub fn scratch(name: &str) -> PathBuf {
 
 /// `tmm report SCENE --format json` (with `--drafting` when given), parsed; the run must
 /// succeed.
-#[allow(dead_code)] // not every test binary reads reports
 pub fn report_json(scene: &str, drafting: Option<&str>) -> serde_json::Value {
     let mut args = vec!["report", scene, "--format", "json"];
     if let Some(d) = drafting {
@@ -53,7 +53,6 @@ pub fn report_json(scene: &str, drafting: Option<&str>) -> serde_json::Value {
 }
 
 /// The report's rows of quantity `q`.
-#[allow(dead_code)]
 pub fn rows_of<'a>(v: &'a serde_json::Value, q: &str) -> Vec<&'a serde_json::Value> {
     v["rows"]
         .as_array()
@@ -64,7 +63,6 @@ pub fn rows_of<'a>(v: &'a serde_json::Value, q: &str) -> Vec<&'a serde_json::Val
 }
 
 /// A number of a row (`graphical`, `analytic`, …); a row without it fails the test.
-#[allow(dead_code)]
 pub fn num(r: &serde_json::Value, field: &str) -> f64 {
     r[field]
         .as_f64()
@@ -72,7 +70,6 @@ pub fn num(r: &serde_json::Value, field: &str) -> f64 {
 }
 
 /// The report's notes, one per line.
-#[allow(dead_code)]
 pub fn notes(v: &serde_json::Value) -> String {
     v["notes"]
         .as_array()

@@ -6,7 +6,7 @@
 //! within 1 GiB of address space and 60 s of CPU (`ulimit -v`, `ulimit -t`: a run beyond
 //! either dies of a signal, which is a finding).
 //!
-//! `cargo test --release --test mutations` runs a deterministic sample (about
+//! `cargo test --release --test all mutations::` runs a deterministic sample (about
 //! [`SAMPLE`] mutants, spread over the scenes and mutations by a hash); `TMM_MUTATIONS=all`
 //! runs every mutant, `TMM_MUTATIONS=<n>` a sample of about n. `TMM_MUTATIONS_SCENE=<stem>`
 //! keeps the scenes whose stem contains it; `TMM_MUTATIONS_OUT=<file>` writes the findings
@@ -17,7 +17,7 @@ use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-mod support;
+use crate::support;
 use support::root;
 
 /// The mutants of the default sample.

@@ -7,7 +7,7 @@ use tmm::construct::{ConstructionError, Context, Drafting, Recorder};
 use tmm::geom::DVec2;
 use tmm::linkage::*;
 
-mod common;
+use crate::common;
 use common::four_bar;
 use tmm::scale::{Quantity, Scale};
 

@@ -46,7 +46,6 @@ fn mechanism(
 
 /// A four-bar O–A–B–D: crank `r` about O at the origin, D at (`d`, 0), coupler `la`, rocker
 /// `lb`, B on the left of A → D, crank turning counter-clockwise at 10 rad/s.
-#[allow(dead_code)]
 pub fn four_bar(r: f64, d: f64, la: f64, lb: f64) -> Mechanism {
     mechanism(
         vec![pivot("O", 0.0, 0.0), pivot("D", d, 0.0)],
@@ -68,7 +67,6 @@ pub fn four_bar(r: f64, d: f64, la: f64, lb: f64) -> Mechanism {
 /// distance: A (0, 430) mm, C at the origin, crank A–B 430 mm turning clockwise at 5π rad/s,
 /// block 2 at B sliding in rocker 3 about C, D on the rocker 710 mm from C. The pin B passes
 /// through the pivot C at φ₁ = 270°.
-#[allow(dead_code)]
 pub fn kulisa() -> Mechanism {
     mechanism(
         vec![pivot("A", 0.0, 0.43), pivot("C", 0.0, 0.0)],
@@ -90,7 +88,6 @@ pub fn kulisa() -> Mechanism {
 
 /// A central slider-crank O–A–B: crank `r` about O at the origin turning counter-clockwise
 /// at 10 rad/s, coupler `l`, slider B on the x axis ahead of A.
-#[allow(dead_code)]
 pub fn slider_crank(r: f64, l: f64) -> Mechanism {
     mechanism(
         vec![pivot("O", 0.0, 0.0)],

@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-mod support;
+use crate::support;
 use support::{root, scratch, tmm};
 
 fn files_under(dir: &Path) -> Vec<PathBuf> {

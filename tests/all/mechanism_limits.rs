@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-mod support;
+use crate::support;
 use support::{root, scratch};
 
 /// The shaper's text with its kinematics only (the loads of the force analysis come last).

@@ -1,8 +1,8 @@
 //! The files `tmm render` writes: PNGs in grayscale at the very pixels of the drawing, tiled
 //! rendering beyond tiny-skia's 8191 px anti-aliasing limit, and the bench's PNG timing.
 
+use crate::support;
 use resvg::tiny_skia::{Color, Pixmap, Transform};
-mod support;
 use support::{scratch, tmm};
 
 /// The PNG's IHDR colour type (0 gray, 2 RGB, 6 RGBA) and its pHYs pixels per metre.

@@ -2,7 +2,7 @@
 //! rounding, at 0.5 mm it shows the error a hand construction has; W3 gives the seed's
 //! numbers.
 
-mod support;
+use crate::support;
 
 use std::path::{Path, PathBuf};
 use tmm::construct::Drafting;

@@ -5,7 +5,7 @@ use tmm::construct::{Context, Drafting, Recorder};
 use tmm::geom::DVec2;
 use tmm::linkage::*;
 
-mod common;
+use crate::common;
 use common::{four_bar, kulisa, slider_crank};
 use tmm::scale::{Quantity, Scale};
 

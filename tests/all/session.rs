@@ -1,7 +1,7 @@
 //! The study session: every position and every plan is constructed once, whatever asks for
 //! it, and a scene without a mechanism is read and refused cleanly.
 
-mod support;
+use crate::support;
 
 use support::root;
 use tmm::construct::Drafting;

@@ -1,4 +1,4 @@
-//! A demonstration plate with every item kind and every role (`tests/plate_demo.rs` and
+//! A demonstration plate with every item kind and every role (`tests/all/plate_demo.rs` and
 //! `examples/plate_demo.rs` include this file by path).
 
 use tmm::construct::{Figure, Item, Label, Role, Step, StepId};

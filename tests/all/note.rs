@@ -2,7 +2,7 @@
 //! typeset, read back from its PDF by text extraction, and held to the report's rows at the
 //! precision it prints them; byte-identical from run to run; in every language.
 
-mod support;
+use crate::support;
 
 use std::path::PathBuf;
 use tmm::check::Method;

@@ -3,7 +3,7 @@
 //! independent balancing moment, a hand construction's errors, a guide reaction outside its
 //! slider, and bad `[forces]` input.
 
-mod support;
+use crate::support;
 
 use serde_json::Value;
 use support::{root, tmm};

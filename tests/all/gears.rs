@@ -3,7 +3,7 @@
 //! errata flagged and not matched, and bad `[gears]` / `[planetary]` sections refused with
 //! their key paths.
 
-mod support;
+use crate::support;
 use support::{notes, num, report_json as report, scratch, tmm};
 
 fn report_json(scene: &str, drafting: &str) -> serde_json::Value {

@@ -1,0 +1,37 @@
+//! The integration tests as one binary: each module was a test file of its own, and each
+//! file built its own binary linking the whole crate again. Run one module with
+//! `cargo test --release --test all MODULE::`.
+
+mod common;
+mod support;
+
+mod balancing;
+mod bench;
+mod blobs;
+mod blocking;
+mod cam;
+mod cam_diagrams;
+mod cam_oracle;
+mod cli;
+mod dimension_texts;
+mod dynamics;
+mod engine;
+mod forces;
+mod friction;
+mod fuzz_regressions;
+mod gears;
+mod hard_cases;
+mod kinematics;
+mod languages;
+mod mechanism_limits;
+mod mutations;
+mod note;
+mod output;
+mod plan_lines;
+mod plate_demo;
+mod plate_rules;
+mod plates;
+mod seed_shaper;
+mod session;
+mod sheet_room;
+mod sheets;
