@@ -22,6 +22,7 @@ mod construct;
 mod diagrams;
 pub mod exact;
 pub mod extremum;
+pub mod flat_rocker;
 pub mod follower;
 pub mod force;
 mod inversion;
@@ -29,6 +30,7 @@ mod law;
 pub mod motion;
 mod radius;
 mod rows;
+pub mod sliding;
 #[cfg(test)]
 mod tests;
 

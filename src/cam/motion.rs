@@ -165,3 +165,49 @@ pub fn motion_u(spec: &CamSpec, phase: usize, u: f64, after: bool) -> Motion {
         },
     }
 }
+
+/// Where the drawing's neighbour of point `i` is, before it (`forward` false) or after it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Neighbour {
+    /// A point of the law, by index.
+    Point(usize),
+    /// On a dwell: its angle and the dwell's S.
+    Dwell {
+        /// φ, rad.
+        phi: f64,
+        /// S, m.
+        s: f64,
+    },
+}
+
+/// The drawing's neighbour of point `i`: the next point of its phase; beyond a phase's end,
+/// the drawn dwell one step on (the whole dwell if shorter); with no dwell there, the other
+/// phase's end point.
+pub fn neighbour(spec: &CamSpec, points: &[Point], i: usize, forward: bool) -> Neighbour {
+    let p = &points[i];
+    let j = if forward { i + 1 } else { i.wrapping_sub(1) };
+    if points.get(j).is_some_and(|q| q.phase == p.phase) {
+        return Neighbour::Point(j);
+    }
+    let len = if p.phase == 0 {
+        spec.phases.rise
+    } else {
+        spec.phases.ret
+    };
+    let dwell = match (p.phase, forward) {
+        (0, true) | (2, false) => spec.phases.far,
+        _ => spec.phases.near,
+    };
+    let d = (len / spec.divisions as f64).min(dwell);
+    if d <= 0.0 {
+        return Neighbour::Point(j.wrapping_add(points.len()) % points.len());
+    }
+    Neighbour::Dwell {
+        phi: if forward { p.phi + d } else { p.phi - d },
+        s: if (p.phase == 0) == forward {
+            spec.stroke
+        } else {
+            0.0
+        },
+    }
+}

@@ -1,0 +1,366 @@
+//! The translating cam (seed 001 L1537–1539, fig. 63): the cam slides along its guide and
+//! lifts a roller follower that moves across the guide. The law is the rotating cam's, laid
+//! along the cam's travel instead of round a turn: the cycle's 2π is the travel X, so the
+//! follower's axis stands at ξ = X·φ/2π on the cam and dS/dξ = S′·2π/X.
+//!
+//! Frame: the cam's own, ξ along its guide (the cam moves towards −ξ, the follower's axis
+//! sweeps it towards +ξ), the follower's roller centre at height S above the pitch line
+//! η = 0. The pitch curve is B(ξ) = (ξ, S); the practical profile is B − r·n, n the unit
+//! normal on the roller's side; the pressure angle is tg λ = |dS/dξ| (the follower moves
+//! ⊥ the guide); the pitch curve's radius ρ = (1 + S_ξ²)^{3/2}/|S_ξξ|, and where it is
+//! convex (a crest, S_ξξ < 0) the roller must be smaller than ρ or the profile loops
+//! (the rotating cam's rule r_р ≤ 0,8·ρ_min).
+//!
+//! Two routes, sharing the law only:
+//! * [`construct`]: the inversion on the board: the follower's axis at every point of the
+//!   law, its roller centre at S (only S is used), the roller circles, and the tangency on
+//!   each circle along the normal to the chord through the neighbouring centres (across a
+//!   phase's end, the drawn dwell one step on); the pressure angle is that normal's angle
+//!   to the axis, the pitch curve's radius the circle through three neighbouring centres.
+//! * [`exact`]: the closed forms from S, S′ and S″.
+
+use super::motion::{motion, neighbour, points, Neighbour, Point};
+use super::CamSpec;
+use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::geom::{Circle, DVec2, Segment};
+use crate::scale::Scale;
+use std::f64::consts::TAU;
+use thiserror::Error;
+
+/// The translating cam's frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sliding {
+    /// X: the cam's travel over the law's whole cycle, m.
+    pub travel: f64,
+    /// r_р: the roller's radius, m (0: a knife edge).
+    pub roller: f64,
+}
+
+/// Why a translating cam cannot be made.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SlidingError {
+    /// The travel or the roller is not a size.
+    #[error(
+        "translating cam: the travel X = {travel} m must be > 0 and the roller r = {roller} m \
+         ≥ 0"
+    )]
+    Frame {
+        /// X, m.
+        travel: f64,
+        /// r_р, m.
+        roller: f64,
+    },
+}
+
+/// The cam at one point of the law.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Contact {
+    /// ξ of the follower's axis on the cam, m.
+    pub xi: f64,
+    /// The roller's centre B, cam frame, m.
+    pub centre: DVec2,
+    /// The practical profile's point (the roller's tangency), cam frame, m.
+    pub point: DVec2,
+    /// The pressure angle λ, rad.
+    pub lambda: f64,
+    /// The pitch curve's radius of curvature, m: > 0 convex (a crest), < 0 concave,
+    /// infinite where straight.
+    pub rho: f64,
+}
+
+/// The constructed cam.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Construction {
+    /// The drawing at μ_l.
+    pub figure: Figure,
+    /// The contacts at the law's points (rise 0 … n, return n + 1 … 2n + 1); a contact's ρ
+    /// is infinite where the drawing gives no three centres of one phase.
+    pub contacts: Vec<Contact>,
+}
+
+impl Construction {
+    /// The smallest convex radius of the drawn pitch curve, m.
+    pub fn rho_min(&self) -> f64 {
+        convex_min(self.contacts.iter().map(|c| c.rho))
+    }
+}
+
+/// The smallest of the positive radii (the convex ones); infinite if none.
+fn convex_min(rho: impl Iterator<Item = f64>) -> f64 {
+    rho.filter(|r| *r > 0.0).fold(f64::INFINITY, f64::min)
+}
+
+fn check(s: &Sliding) -> Result<f64, SlidingError> {
+    if s.travel > 0.0 && s.travel.is_finite() && s.roller >= 0.0 && s.roller.is_finite() {
+        Ok(TAU / s.travel)
+    } else {
+        Err(SlidingError::Frame {
+            travel: s.travel,
+            roller: s.roller,
+        })
+    }
+}
+
+/// The exact cam at φ of the law (`after`: the piece after a jump).
+pub fn exact(spec: &CamSpec, s: &Sliding, phi: f64, after: bool) -> Result<Contact, SlidingError> {
+    let k = check(s)?;
+    let m = motion(spec, phi, after);
+    let (d1, d2) = (m.ds * k, m.d2s * k * k);
+    let xi = phi / k;
+    let centre = DVec2::new(xi, m.s);
+    let n = DVec2::new(-d1, 1.0).normalize();
+    let rho = if d2 == 0.0 {
+        f64::INFINITY
+    } else {
+        -(1.0 + d1 * d1).powf(1.5) / d2
+    };
+    Ok(Contact {
+        xi,
+        centre,
+        point: centre - n * s.roller,
+        lambda: d1.abs().atan(),
+        rho,
+    })
+}
+
+/// The smallest convex radius of the pitch curve over the cycle (dense samples of `per`
+/// per radian of the law), m.
+pub fn exact_rho_min(spec: &CamSpec, s: &Sliding, per: usize) -> Result<f64, SlidingError> {
+    let n = (TAU * per as f64).ceil() as usize;
+    let all: Result<Vec<f64>, _> = (0..=n)
+        .map(|i| exact(spec, s, TAU * i as f64 / n as f64, false).map(|c| c.rho))
+        .collect();
+    Ok(convex_min(all?.into_iter()))
+}
+
+/// The cam on the drawing board at μ_l = `mu`.
+pub fn construct(
+    spec: &CamSpec,
+    s: &Sliding,
+    mu: Scale,
+    ctx: &Context,
+) -> Result<Construction, SlidingError> {
+    let k = check(s)?;
+    let mm = |p: DVec2| p / mu.value();
+    let mut rec = Recorder::in_context("translating cam: profile by inversion", mu, ctx);
+    let low = -s.roller - 0.25 * spec.stroke;
+    rec.draw(
+        "the cam's guide",
+        Item::Segment(Segment::new(
+            mm(DVec2::new(0.0, low)),
+            mm(DVec2::new(s.travel, low)),
+        )),
+        Role::Given,
+        &[],
+    );
+    let pts = points(spec);
+    let centre_of = |p: &Point| DVec2::new(p.phi / k, motion(spec, p.phi, p.after).s);
+    let centres: Vec<DVec2> = pts.iter().map(centre_of).collect();
+    for (i, c) in centres.iter().enumerate() {
+        rec.set_group(i as u32 + 1);
+        let axis = rec.draw(
+            format!("follower's axis at position {i}"),
+            Item::Segment(Segment::new(
+                mm(DVec2::new(c.x, low)),
+                mm(*c + DVec2::Y * (s.roller + 0.1 * spec.stroke)),
+            )),
+            Role::Construction,
+            &[],
+        );
+        rec.point(
+            format!("roller centre B_{i}"),
+            mm(*c),
+            Role::Construction,
+            "",
+            DVec2::ZERO,
+            &[axis],
+        );
+        if s.roller > 0.0 {
+            rec.draw(
+                format!("roller at {i}"),
+                Item::Circle(Circle {
+                    center: mm(*c),
+                    radius: mu.to_mm(s.roller),
+                }),
+                Role::Construction,
+                &[axis],
+            );
+        }
+    }
+    // The neighbouring centre before (`forward` false) or after point i.
+    let neighbour = |i: usize, forward: bool| match neighbour(spec, &pts, i, forward) {
+        Neighbour::Point(j) => centres[j],
+        Neighbour::Dwell { phi, s } => DVec2::new(phi / k, s),
+    };
+    let mut contacts = Vec::with_capacity(pts.len());
+    let mut pitch = Vec::with_capacity(pts.len());
+    let mut profile = Vec::with_capacity(pts.len());
+    for (i, &c) in centres.iter().enumerate() {
+        let (a, b) = (neighbour(i, false), neighbour(i, true));
+        let chord = b - a;
+        let n = DVec2::new(-chord.y, chord.x).normalize();
+        let point = c - n * s.roller;
+        let lambda = n.dot(DVec2::Y).abs().clamp(0.0, 1.0).acos();
+        // The circle through three centres of one phase (the drawn dwell's at its ends).
+        let cross = (c - a).perp_dot(b - c);
+        let rho = if cross == 0.0 {
+            f64::INFINITY
+        } else {
+            -a.distance(c) * c.distance(b) * b.distance(a) / (2.0 * cross)
+        };
+        contacts.push(Contact {
+            xi: c.x,
+            centre: c,
+            point,
+            lambda,
+            rho,
+        });
+        pitch.push(mm(c));
+        profile.push(mm(point));
+    }
+    rec.set_group(0);
+    rec.draw(
+        "pitch (theoretical) profile",
+        Item::Polyline {
+            points: pitch,
+            closed: false,
+        },
+        Role::Construction,
+        &[],
+    );
+    rec.draw(
+        "practical profile: envelope of the rollers",
+        Item::Polyline {
+            points: profile,
+            closed: false,
+        },
+        Role::Result,
+        &[],
+    );
+    Ok(Construction {
+        figure: rec.finish(),
+        contacts,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cam::tests::seed000;
+    use crate::cam::{Follower, Law, Phases};
+    use crate::construct::Drafting;
+    use crate::scale::Quantity;
+
+    /// A 30 mm rise and return by the sine law, each over 120 mm of a 360 mm travel.
+    fn spec(n: usize) -> CamSpec {
+        CamSpec {
+            phases: Phases {
+                rise: 120f64.to_radians(),
+                far: 60f64.to_radians(),
+                ret: 120f64.to_radians(),
+                near: 60f64.to_radians(),
+            },
+            rise: Law::Sine,
+            ret: Law::Sine,
+            stroke: 0.030,
+            follower: Follower::Translating { offset: 0.0 },
+            divisions: n,
+            ..seed000()
+        }
+    }
+
+    const CAM: Sliding = Sliding {
+        travel: 0.36,
+        roller: 0.010,
+    };
+
+    fn board(s: &CamSpec, c: &Sliding) -> Construction {
+        let ctx = Context::for_model_size(400.0, Drafting::EXACT).expect("a context");
+        let mu = Scale::new(0.001, Quantity::Length).expect("a μ");
+        construct(s, c, mu, &ctx).expect("the construction")
+    }
+
+    #[test]
+    fn the_exact_profile_is_the_rollers_envelope() {
+        let s = spec(12);
+        let d = 1e-6;
+        for k in 1..60 {
+            let phi = 0.1 * k as f64;
+            let c = exact(&s, &CAM, phi, false).unwrap();
+            assert!((c.point.distance(c.centre) - CAM.roller).abs() < 1e-15);
+            // The tangency lies on the pitch curve's normal, and the profile runs parallel
+            // to the pitch curve there (both by central differences).
+            let (a, b) = (
+                exact(&s, &CAM, phi - d, false).unwrap(),
+                exact(&s, &CAM, phi + d, false).unwrap(),
+            );
+            let t = b.centre - a.centre;
+            assert!(t.dot(c.point - c.centre).abs() < 1e-9 * t.length() * CAM.roller);
+            assert!(t.perp_dot(b.point - a.point).abs() < 1e-9 * t.length_squared());
+            assert!((c.lambda - (t.y / t.x).abs().atan()).abs() < 1e-8);
+        }
+    }
+
+    #[test]
+    fn the_board_agrees_with_the_closed_forms_to_second_order() {
+        // Within the phases (the sine law's S″ is continuous at the ends too).
+        let worst = |n: usize| {
+            let s = spec(n);
+            let b = board(&s, &CAM);
+            let mut w = [0.0_f64; 3];
+            for (p, c) in points(&s).iter().zip(&b.contacts) {
+                let e = exact(&s, &CAM, p.phi, p.after).unwrap();
+                w[0] = w[0].max(c.point.distance(e.point));
+                w[1] = w[1].max((c.lambda - e.lambda).abs());
+                if e.rho.is_finite() && e.rho.abs() < 1.0 {
+                    w[2] = w[2].max((c.rho - e.rho).abs() / e.rho.abs());
+                }
+            }
+            w
+        };
+        let (a, b) = (worst(24), worst(48));
+        assert!(a[0] < 1e-4 && a[1] < 5e-3, "{a:?}");
+        for q in 0..3 {
+            assert!((a[q] / b[q]).log2() > 1.8, "{a:?} {b:?}");
+        }
+    }
+
+    #[test]
+    fn a_roller_larger_than_the_crests_radius_is_caught_by_both_routes() {
+        let s = spec(48);
+        let exact_min = exact_rho_min(&s, &CAM, 2000).unwrap();
+        let drawn_min = board(&s, &CAM).rho_min();
+        assert!(
+            (drawn_min - exact_min).abs() < 0.01 * exact_min,
+            "{drawn_min} {exact_min}"
+        );
+        // A steep short cam: its crests are sharper than the roller.
+        let short = Sliding {
+            travel: 0.09,
+            ..CAM
+        };
+        assert!(exact_rho_min(&s, &short, 2000).unwrap() < short.roller);
+        assert!(board(&s, &short).rho_min() < short.roller);
+        assert!(exact_min > CAM.roller);
+    }
+
+    #[test]
+    fn a_travel_or_roller_that_is_not_a_size_is_refused() {
+        for bad in [
+            Sliding { travel: 0.0, ..CAM },
+            Sliding {
+                roller: -0.001,
+                ..CAM
+            },
+            Sliding {
+                travel: f64::NAN,
+                ..CAM
+            },
+        ] {
+            assert!(matches!(
+                exact(&spec(12), &bad, 0.3, false),
+                Err(SlidingError::Frame { .. })
+            ));
+        }
+    }
+}
