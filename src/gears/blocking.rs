@@ -609,10 +609,15 @@ impl Blocking {
                 hard.eps_min,
             ));
         }
+        // A maximum lies on the boundary, to the bisection's 1e-13: drawn in by 1e-9 of its
+        // distance from the centre, it meets every hard limit strictly, so the pair built on
+        // it works whatever the rounding of its own formulas. (The equal-sliding point keeps
+        // its line; the ends of the line's stretch are bracketed on the admissible side.)
+        let inside = |x: DVec2| centre + (x - centre) * (1.0 - 1e-9);
         let x = match criterion {
-            Criterion::LargestContactRatio => self.maximise(centre, hard, |ix| ix.eps),
+            Criterion::LargestContactRatio => inside(self.maximise(centre, hard, |ix| ix.eps)),
             Criterion::GreatestSumWithTip { .. } => {
-                self.maximise(centre, hard, |ix| ix.x[0] + ix.x[1])
+                inside(self.maximise(centre, hard, |ix| ix.x[0] + ix.x[1]))
             }
             Criterion::EqualSliding { x_sum } => self.equal_sliding(x_sum, hard)?,
         };
@@ -824,6 +829,8 @@ pub struct Study {
     pub contour: Contour,
     /// The scene's (x₁, x₂) placed.
     pub placed: Placement,
+    /// The criterion the scene's (x₁, x₂) was chosen by (`None`: the scene gives it).
+    pub chosen: Option<Criterion>,
     /// Each criterion's choice, or why there is none.
     pub choices: Vec<(Criterion, Result<Choice, BlockingError>)>,
     /// The largest difference of a traced curve's index by the twins from its limit over
@@ -839,11 +846,12 @@ impl Study {
     };
 
     /// The contour of the pair `spec` with its point placed and the choices: the largest
-    /// ε_α, equal sliding on the scene's x_Σ, the greatest x_Σ with s_a ≥ 0.25m.
+    /// ε_α, equal sliding on the scene's x_Σ, the greatest x_Σ with s_a ≥ 0.25m — or, of
+    /// the kind the scene `chosen` its point by, that criterion as the scene put it.
     ///
     /// # Errors
     /// Those of [`Blocking::new`] and [`Blocking::place`].
-    pub fn of(spec: &PairSpec) -> Result<Self, BlockingError> {
+    pub fn of(spec: &PairSpec, chosen: Option<Criterion>) -> Result<Self, BlockingError> {
         let b = Blocking::new(spec.z, spec.rack)?;
         let contour = b.trace(Self::HARD);
         let placed = b.place(DVec2::new(spec.x[0], spec.x[1]), Self::HARD)?;
@@ -855,6 +863,10 @@ impl Study {
             Criterion::GreatestSumWithTip { sa_min: 0.25 },
         ]
         .into_iter()
+        .map(|c| match chosen {
+            Some(asked) if std::mem::discriminant(&asked) == std::mem::discriminant(&c) => asked,
+            _ => c,
+        })
         .map(|c| (c, b.choose(c, Self::HARD)))
         .collect();
         let twin_check = twin_check(&contour, spec.module, 10);
@@ -862,6 +874,7 @@ impl Study {
             module: spec.module,
             contour,
             placed,
+            chosen,
             choices,
             twin_check,
         })
@@ -962,7 +975,11 @@ impl Study {
             .map(|s| level_name(s.kind, s.limit))
             .collect();
         out.push(format!(
-            "blocking contour: the scene's point {}; {} (s_a ≥ 0.25m, ε_α ≥ 1, no undercut, no interference){}",
+            "blocking contour: the scene's point{} {}; {} (s_a ≥ 0.25m, ε_α ≥ 1, no undercut, no interference){}",
+            self.chosen.map_or(String::new(), |c| format!(
+                ", chosen on the contour by {} (`choose`),",
+                criterion_name(c)
+            )),
             describe(&self.placed.indices),
             if self.placed.admissible {
                 "inside"

@@ -162,6 +162,9 @@ fn scale_for(size: f64, preferred_mm: f64) -> Result<Scale, GearError> {
 pub struct GearsSpec {
     /// The pair (`[gears.pair]`).
     pub pair: Option<PairSpec>,
+    /// The criterion the pair's shifts were chosen by on the blocking contour
+    /// (`[gears.pair] choose`); `None`: the scene gives them.
+    pub chosen: Option<blocking::Criterion>,
     /// What the source prints for the pair (`[gears.seed]`), checked in the notes.
     pub seed: Option<PairSeed>,
     /// μ_l of the meshing picture; `None`: chosen the textbook way.
@@ -255,7 +258,7 @@ pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearSt
     let blocking = spec
         .pair
         .as_ref()
-        .and_then(|ps| blocking::Study::of(ps).ok());
+        .and_then(|ps| blocking::Study::of(ps, spec.chosen).ok());
     Ok(GearStudy {
         pair,
         seed: spec.seed,

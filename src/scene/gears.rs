@@ -8,6 +8,7 @@ use super::check::{item, join, number, Checker};
 use super::gear_values::{module_mm, teeth};
 use super::keys::Key;
 use super::planetary::{planetary, RawPlanetary};
+use crate::gears::blocking::{Blocking, Criterion, Study};
 use crate::gears::{
     BasicRack, Cutting, GearError, GearsSpec, Pair, PairSeed, PairSpec, RackSpec, DEFAULT_POSITIONS,
 };
@@ -62,6 +63,9 @@ pub(crate) struct RawPair {
     pub x: Option<Vec<f64>>,
     pub dy: Option<f64>,
     pub centre_distance: Option<f64>,
+    pub choose: Option<String>,
+    pub x_sum: Option<f64>,
+    pub sa_min: Option<f64>,
 }
 
 /// `[[gears.rack]]`.
@@ -101,6 +105,7 @@ pub(crate) fn gear_sections(
         Some(g) => gears(check, g)?,
         None => GearsSpec {
             pair: None,
+            chosen: None,
             seed: None,
             scale_l: None,
             racks: Vec::new(),
@@ -137,11 +142,13 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
     // A rack that cannot be drawn is reported once, under its own key; the pair and the
     // wheels it would cut are not judged with it.
     let rack_ok = rack.validate().is_ok();
-    let pair = raw
+    let (pair, chosen) = raw
         .pair
         .as_ref()
         .filter(|_| rack_ok)
-        .and_then(|p| pair(check, p, module, rack));
+        .and_then(|p| pair(check, p, module, rack))
+        .unzip();
+    let chosen = chosen.flatten();
     let racks = racks(check, &raw.rack, module, rack);
     if let Some(p) = pair.and_then(|p| Pair::working(p).ok()) {
         figure(
@@ -155,6 +162,7 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
     let seed = raw.seed.as_ref().map(|s| seed(check, s));
     (check.problems.len() == before).then_some(GearsSpec {
         pair,
+        chosen,
         seed,
         scale_l,
         racks,
@@ -339,14 +347,60 @@ fn positions(check: &mut Checker, key: &str, v: Option<i64>) -> usize {
     }
 }
 
-/// `[gears.pair]`: z = [z₁, z₂], x = [x₁, x₂] (or x = [x₁] with `centre_distance`, mm), the
-/// table's Δy; the pair is refused when it cannot work.
+/// `[gears.pair] choose` with its `x_sum` or `sa_min`: the criterion of the choice of x₁, x₂
+/// on the blocking contour.
+fn criterion(check: &mut Checker, raw: &RawPair, name: &str) -> Option<Criterion> {
+    let key = |k: &str| join(&join(GEARS, "pair"), k);
+    let unused = |check: &mut Checker, k: &str, given: bool| {
+        if given {
+            check.push(key(k), None, format!("not used by choose = \"{name}\""));
+        }
+    };
+    match name {
+        "largest-contact-ratio" => {
+            unused(check, "x_sum", raw.x_sum.is_some());
+            unused(check, "sa_min", raw.sa_min.is_some());
+            Some(Criterion::LargestContactRatio)
+        }
+        "equal-sliding" => {
+            unused(check, "sa_min", raw.sa_min.is_some());
+            let x_sum = check.required(&key("x_sum"), raw.x_sum.as_ref(), "x₁ + x₂ (within ±6)")?;
+            let x_sum = check.bounded(&key("x_sum"), *x_sum, 6.0, "x₁ + x₂ within ±6");
+            Some(Criterion::EqualSliding { x_sum })
+        }
+        "greatest-sum" => {
+            unused(check, "x_sum", raw.x_sum.is_some());
+            let sa_min = raw.sa_min.unwrap_or(Study::HARD.sa_min);
+            if !(0.0..=1.0).contains(&sa_min) {
+                check.push(
+                    key("sa_min"),
+                    Some(number(sa_min)),
+                    "the least tip thickness s_a/m, 0 … 1",
+                );
+                return None;
+            }
+            Some(Criterion::GreatestSumWithTip { sa_min })
+        }
+        _ => {
+            check.push(
+                key("choose"),
+                Some(name.to_string()),
+                "one of \"largest-contact-ratio\", \"equal-sliding\" (with x_sum), \"greatest-sum\" (with sa_min, default 0,25)",
+            );
+            None
+        }
+    }
+}
+
+/// `[gears.pair]`: z = [z₁, z₂], x = [x₁, x₂] (or x = [x₁] with `centre_distance`, mm, or
+/// chosen on the blocking contour by `choose`), the table's Δy; the pair is refused when it
+/// cannot work. With `choose`, the criterion it was chosen by.
 fn pair(
     check: &mut Checker,
     raw: &RawPair,
     module: Option<f64>,
     rack: BasicRack,
-) -> Option<PairSpec> {
+) -> Option<(PairSpec, Option<Criterion>)> {
     let key = |k: &str| join(&join(GEARS, "pair"), k);
     let before = check.problems.len();
     let Some(m) = module else {
@@ -372,9 +426,23 @@ fn pair(
         }
         None => [5, 5],
     };
+    let criterion = raw.choose.as_ref().and_then(|c| criterion(check, raw, c));
     let xs = raw.x.clone().unwrap_or_else(|| vec![0.0, 0.0]);
     let want = if raw.centre_distance.is_some() { 1 } else { 2 };
-    if xs.len() != want {
+    if raw.choose.is_some() {
+        for (k, given) in [
+            ("x", raw.x.is_some()),
+            ("centre_distance", raw.centre_distance.is_some()),
+        ] {
+            if given {
+                check.push(
+                    key(k),
+                    None,
+                    "either the shifts or `choose` (the contour chooses them), not both",
+                );
+            }
+        }
+    } else if xs.len() != want {
         let expected = if want == 1 {
             "one shift [x1]: with `centre_distance` x2 follows from it"
         } else {
@@ -409,6 +477,20 @@ fn pair(
         rack,
         dy_table: dy,
     };
+    if let Some(c) = criterion {
+        let chosen = Blocking::new(z, rack).and_then(|b| b.choose(c, Study::HARD));
+        match chosen {
+            Ok(ch) => spec.x = ch.indices.x,
+            Err(e) => {
+                check.push(
+                    key("choose"),
+                    raw.choose.clone(),
+                    format!("a criterion the contour can meet: {e}"),
+                );
+                return None;
+            }
+        }
+    }
     if let Some(a) = raw.centre_distance {
         match spec.x2_for_centre_distance(a * 1e-3) {
             Ok(x2) => spec.x[1] = x2,
@@ -423,9 +505,12 @@ fn pair(
         }
     }
     match Pair::working(spec) {
-        Ok(_) => Some(spec),
+        Ok(_) => Some((spec, criterion)),
         Err(e) => {
-            let (k, value) = blame(&e, raw, &spec, &xs);
+            let (k, value) = match &raw.choose {
+                Some(c) if criterion.is_some() => (key("choose"), c.clone()),
+                _ => blame(&e, raw, &spec, &xs),
+            };
             check.push(k, Some(value), format!("a pair that can work: {e}"));
             None
         }

@@ -870,3 +870,71 @@ fn a_differential_scene_solves_with_two_inputs() {
         "{err}"
     );
 }
+
+/// `[gears.pair] choose`: the contour chooses x₁, x₂, the pair is built on them, and the
+/// scene's point is that choice; criteria it cannot meet and shifts given beside it are
+/// refused on their keys.
+#[test]
+fn the_blocking_contour_chooses_the_shifts_a_scene_asks_for() {
+    let head = "[gears]\nmodule = 10.0\n[gears.pair]\nz = [13, 21]\n";
+    let dir = scratch("choose");
+    for (choose, tag) in [
+        ("choose = \"equal-sliding\"\nx_sum = 1.078\n", "bsl"),
+        ("choose = \"largest-contact-ratio\"\n", "beps"),
+        ("choose = \"greatest-sum\"\nsa_min = 0.4\n", "bsum"),
+    ] {
+        let path = dir.join(format!("{tag}.toml"));
+        std::fs::write(&path, format!("{head}{choose}")).expect("write scene");
+        let v = report(path.to_str().expect("utf-8"), None);
+        for q in ["eps_alpha", "s_a1", "s_a2", "dy"] {
+            let (k, c) = (
+                num(row(&v, &format!("{q}_bz"), "formula"), "analytic"),
+                num(row(&v, &format!("{q}_{tag}"), "formula"), "analytic"),
+            );
+            assert!(
+                (k - c).abs() <= 1e-12 * k.abs().max(1.0),
+                "{tag} {q}: {k} {c}"
+            );
+        }
+        let notes = notes(&v);
+        assert!(notes.contains("chosen on the contour by"), "{notes}");
+        if tag == "bsum" {
+            assert!(notes.contains("s_a ≥ 0.4m"), "{notes}");
+            let sa = num(row(&v, "s_a1_bz", "formula"), "analytic");
+            assert!(sa >= 0.4 * 0.010 * (1.0 - 1e-9), "{sa}");
+        }
+    }
+    let cases: &[(&str, &[&str])] = &[
+        (
+            "choose = \"largest-contact-ratio\"\nx = [0.5, 0.5]\n",
+            &["gears.pair.x", "not both"],
+        ),
+        (
+            "choose = \"smallest\"\n",
+            &["gears.pair.choose = smallest", "equal-sliding"],
+        ),
+        (
+            "choose = \"equal-sliding\"\n",
+            &["gears.pair.x_sum", "missing"],
+        ),
+        (
+            "choose = \"equal-sliding\"\nx_sum = 5.0\n",
+            &["gears.pair.choose", "does not cross"],
+        ),
+        (
+            "choose = \"greatest-sum\"\nsa_min = 2.0\nx_sum = 1.0\n",
+            &["gears.pair.sa_min = 2", "gears.pair.x_sum"],
+        ),
+    ];
+    for (k, (text, expected)) in cases.iter().enumerate() {
+        let (ok, code, err) = run_scene(
+            &format!("bad-choose-{k}"),
+            &format!("{head}{text}"),
+            &["check"],
+        );
+        assert!(!ok && code == 2, "case {k}: {code} {err}");
+        for e in *expected {
+            assert!(err.contains(e), "case {k}: `{e}` not in\n{err}");
+        }
+    }
+}
