@@ -25,6 +25,7 @@
 //! small makes the profile concave (ρ < 0) — both routes say so.
 
 use super::follower::to_cam;
+use super::inversion::cam_centre;
 use super::motion::{motion, neighbour, points, Motion, Neighbour};
 use super::{CamSpec, Follower, RockerSense};
 use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role};
@@ -197,16 +198,7 @@ pub fn construct(
     let (arm, sigma, _) = f;
     let mm = |p: DVec2| p / mu.value();
     let mut rec = Recorder::in_context("flat-faced rocker: profile by inversion", mu, ctx);
-    let o1 = rec.draw(
-        "cam centre O_1",
-        Item::Joint {
-            at: DVec2::ZERO,
-            fixed: true,
-        },
-        Role::Given,
-        &[],
-    );
-    rec.label(o1, "O_1", DVec2::ZERO, DVec2::new(-0.7, -0.7));
+    let o1 = cam_centre(&mut rec);
     rec.draw(
         "base circle r_0",
         Item::Circle(Circle {

@@ -6,7 +6,7 @@ use super::follower::{flat_contact, jay, to_cam, Kin, Placement};
 use super::motion::{Motion, Point};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::fit::{overflow, raised};
-use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{french_curve, Arc, Circle, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
@@ -93,16 +93,7 @@ fn invert_at(
 ) -> Result<Inversion, CamError> {
     let mm = |p: DVec2| p / mu.value();
     let mut rec = Recorder::in_context("inversion", mu, ctx);
-    let o = rec.draw(
-        "cam centre O_1",
-        Item::Joint {
-            at: DVec2::ZERO,
-            fixed: true,
-        },
-        Role::Given,
-        &[],
-    );
-    rec.label(o, "O_1", DVec2::ZERO, DVec2::new(-0.7, -0.7));
+    let o = cam_centre(&mut rec);
     // The cam's sense of rotation: an arrowed arc about O₁ (counter-clockwise here; the
     // mirror image of a clockwise cam turns it round).
     let turn = Arc {
@@ -367,6 +358,21 @@ fn invert_at(
         angles,
         rho_min,
     })
+}
+
+/// The cam's centre O₁ at the origin, fixed and labelled: the first step of every profile.
+pub(super) fn cam_centre(rec: &mut Recorder) -> StepId {
+    let o = rec.draw(
+        "cam centre O_1",
+        Item::Joint {
+            at: DVec2::ZERO,
+            fixed: true,
+        },
+        Role::Given,
+        &[],
+    );
+    rec.label(o, "O_1", DVec2::ZERO, DVec2::new(-0.7, -0.7));
+    o
 }
 
 /// The neighbours of point `i` within its phase (one-sided at the phase's ends).
