@@ -238,3 +238,13 @@ pub fn compose_with(
 pub fn to_pdf(note: &Note) -> Result<Vec<u8>, NoteError> {
     typeset::pdf(&note.source, &note.files)
 }
+
+/// The text the typeset note shows, page by page in the order it is laid out, each run of
+/// text (a line's stretch in one font) followed by a space: what a reader finds by searching
+/// the PDF.
+///
+/// # Errors
+/// [`NoteError::Typeset`] when the typesetter refuses the source.
+pub fn to_text(note: &Note) -> Result<String, NoteError> {
+    typeset::text(&note.source, &note.files)
+}

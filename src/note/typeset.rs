@@ -8,10 +8,12 @@ use std::collections::HashMap;
 use std::sync::OnceLock;
 use typst::diag::{FileError, FileResult, SourceDiagnostic};
 use typst::foundations::{Bytes, Datetime, Duration, Smart};
+use typst::layout::{Frame, FrameItem};
 use typst::syntax::{FileId, RootedPath, Source, VirtualPath, VirtualRoot};
 use typst::text::{Font, FontBook};
 use typst::utils::LazyHash;
 use typst::{Library, LibraryExt, World, WorldExt};
+use typst_layout::PagedDocument;
 
 /// The fonts of every note, loaded once: the book and the faces in its order.
 fn fonts() -> &'static (LazyHash<FontBook>, Vec<Font>) {
@@ -87,20 +89,30 @@ impl World for NoteWorld {
     }
 }
 
-/// The PDF of a Typst `source` whose figures are `files` (path in the source → bytes).
-///
-/// # Errors
-/// [`NoteError::Typeset`] with Typst's first diagnostics when the source does not compile.
-pub(super) fn pdf(source: &str, files: &[(String, Vec<u8>)]) -> Result<Vec<u8>, NoteError> {
+/// The world of a Typst `source` whose figures are `files` (path in the source → bytes).
+fn world(source: &str, files: &[(String, Vec<u8>)]) -> Result<NoteWorld, NoteError> {
     let main = Source::new(file_id("/note.typ")?, source.to_string());
     let files = files
         .iter()
         .map(|(path, bytes)| Ok((file_id(path)?, Bytes::new(bytes.clone()))))
         .collect::<Result<HashMap<_, _>, NoteError>>()?;
-    let world = NoteWorld { main, files };
-    let document: typst_layout::PagedDocument = typst::compile(&world)
+    Ok(NoteWorld { main, files })
+}
+
+/// The laid-out pages of a world's source.
+fn layout(world: &NoteWorld) -> Result<PagedDocument, NoteError> {
+    typst::compile(world)
         .output
-        .map_err(|errors| NoteError::Typeset(diagnostics(&world, &errors)))?;
+        .map_err(|errors| NoteError::Typeset(diagnostics(world, &errors)))
+}
+
+/// The PDF of a Typst `source` whose figures are `files` (path in the source → bytes).
+///
+/// # Errors
+/// [`NoteError::Typeset`] with Typst's first diagnostics when the source does not compile.
+pub(super) fn pdf(source: &str, files: &[(String, Vec<u8>)]) -> Result<Vec<u8>, NoteError> {
+    let world = world(source, files)?;
+    let document = layout(&world)?;
     let options = typst_pdf::PdfOptions {
         ident: Smart::Custom("tmm-note".into()),
         creator: Smart::Custom(Some("tmm".into())),
@@ -108,6 +120,32 @@ pub(super) fn pdf(source: &str, files: &[(String, Vec<u8>)]) -> Result<Vec<u8>, 
     };
     typst_pdf::pdf(&document, &options)
         .map_err(|errors| NoteError::Typeset(diagnostics(&world, &errors)))
+}
+
+/// The text the pages of a Typst `source` show, in the order it is laid out: each run of
+/// text (a line's stretch in one font) followed by a space.
+///
+/// # Errors
+/// As [`pdf`].
+pub(super) fn text(source: &str, files: &[(String, Vec<u8>)]) -> Result<String, NoteError> {
+    fn runs(frame: &Frame, out: &mut String) {
+        for (_, item) in frame.items() {
+            match item {
+                FrameItem::Text(run) => {
+                    out.push_str(&run.text);
+                    out.push(' ');
+                }
+                FrameItem::Group(group) => runs(&group.frame, out),
+                _ => {}
+            }
+        }
+    }
+    let document = layout(&world(source, files)?)?;
+    let mut out = String::new();
+    for page in document.pages() {
+        runs(&page.frame, &mut out);
+    }
+    Ok(out)
 }
 
 /// The first few diagnostics, each with the source line it points at.

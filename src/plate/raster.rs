@@ -73,7 +73,7 @@ fn raster_err(e: impl std::fmt::Display) -> PlateError {
     PlateError::Raster(e.to_string())
 }
 
-fn parse(svg: &str) -> Result<Tree, PlateError> {
+pub(super) fn parse(svg: &str) -> Result<Tree, PlateError> {
     let opt = Options {
         fontdb: font_database(),
         font_family: family().into(),

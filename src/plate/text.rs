@@ -471,9 +471,12 @@ mod tests {
         assert_eq!(plain("μ_{l} = 1"), "μl = 1");
     }
 
-    /// The box of a text as resvg draws it (the ink of its glyphs), sheet mm.
+    /// The box of a text as resvg draws it (its pixels at 20 per mm, those over a quarter
+    /// inked), sheet mm.
     fn rendered_box(t: &Placed) -> Rect {
-        use resvg::usvg::{Node, Options, Tree};
+        use resvg::tiny_skia::{Pixmap, Transform};
+        use resvg::usvg::{Options, Tree};
+        const PX: f32 = 20.0;
         let svg = format!(
             r#"<svg xmlns="http://www.w3.org/2000/svg" width="200" height="100" viewBox="0 0 200 100" font-family="DejaVu Sans" font-style="italic">{}</svg>"#,
             t.to_xml("t")
@@ -483,19 +486,19 @@ mod tests {
             ..Options::default()
         };
         let tree = Tree::from_str(&svg, &opt).expect("svg");
-        fn first_text(g: &resvg::usvg::Group) -> Option<&resvg::usvg::Text> {
-            g.children().iter().find_map(|n| match n {
-                Node::Text(t) => Some(t.as_ref()),
-                Node::Group(g) => first_text(g),
-                _ => None,
-            })
+        let mut pixmap = Pixmap::new(200 * PX as u32, 100 * PX as u32).expect("pixmap");
+        resvg::render(&tree, Transform::from_scale(PX, PX), &mut pixmap.as_mut());
+        let width = pixmap.width() as usize;
+        let (mut lo, mut hi) = (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY));
+        for (k, p) in pixmap.pixels().iter().enumerate() {
+            if p.alpha() > 64 {
+                let at = DVec2::new((k % width) as f64, (k / width) as f64);
+                lo = lo.min(at);
+                hi = hi.max(at + 1.0);
+            }
         }
-        let text = first_text(tree.root()).expect("a text");
-        let b = text.flattened().abs_bounding_box();
-        Rect::new(
-            DVec2::new(b.left().into(), b.top().into()),
-            DVec2::new(b.right().into(), b.bottom().into()),
-        )
+        let px = f64::from(PX);
+        Rect::new(lo / px, hi / px)
     }
 
     #[test]

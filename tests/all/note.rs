@@ -1,5 +1,5 @@
 //! The explanatory note of the seed-000 project (issue 20): composed from the session,
-//! typeset, read back from its PDF by text extraction, and held to the report's rows at the
+//! typeset, its laid-out text read back, and held to the report's rows at the
 //! precision it prints them; byte-identical from run to run; in every language.
 
 use crate::support;
@@ -13,17 +13,16 @@ fn shaper() -> tmm::Scene {
     tmm::load(&path).expect("shaper")
 }
 
-/// The note of `scene` in `lang` as PDF bytes, and the session's report.
-fn note(scene: &tmm::Scene, lang: Lang) -> (Vec<u8>, Report) {
+/// The note of `scene` in `lang`, and the session's report.
+fn note(scene: &tmm::Scene, lang: Lang) -> (tmm::note::Note, Report) {
     let session = Session::new(scene, Drafting::EXACT);
     let note = tmm::note::compose(&session, lang).expect("note");
-    let pdf = tmm::note::to_pdf(&note).expect("typeset");
-    (pdf, session.report().expect("report"))
+    (note, session.report().expect("report"))
 }
 
-/// The text of a PDF, its runs of white space made single spaces.
-fn text_of(pdf: &[u8]) -> String {
-    let text = pdf_extract::extract_text_from_mem(pdf).expect("text");
+/// The text the typeset note shows, its runs of white space made single spaces.
+fn text_of(note: &tmm::note::Note) -> String {
+    let text = tmm::note::to_text(note).expect("typeset");
     text.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
@@ -40,9 +39,9 @@ fn printed(r: &Report, q: &str, method: Method, position: Option<&str>, sig: usi
 #[test]
 fn the_shaper_note_holds_the_projects_values_as_the_report_gives_them() {
     let s = shaper();
-    let (pdf, r) = note(&s, Lang::Ru);
-    assert!(pdf.starts_with(b"%PDF-"));
-    let text = text_of(&pdf);
+    let (n, r) = note(&s, Lang::Ru);
+    assert!(tmm::note::to_pdf(&n).expect("PDF").starts_with(b"%PDF-"));
+    let text = text_of(&n);
     // The sections in the order of seed 000.
     let sections = [
         "Задание",
@@ -104,9 +103,8 @@ fn the_shaper_note_holds_the_projects_values_as_the_report_gives_them() {
 #[test]
 fn the_note_is_byte_identical_from_run_to_run() {
     let s = shaper();
-    let (a, _) = note(&s, Lang::Ru);
-    let (b, _) = note(&s, Lang::Ru);
-    assert!(a == b, "two runs differ");
+    let pdf = || tmm::note::to_pdf(&note(&s, Lang::Ru).0).expect("PDF");
+    assert!(pdf() == pdf(), "two runs differ");
 }
 
 #[test]
@@ -116,8 +114,8 @@ fn the_note_is_written_in_ukrainian_and_english() {
         (Lang::Uk, ["Пояснювальна записка", "Зміст", "Висновки"]),
         (Lang::En, ["Explanatory note", "Contents", "Conclusions"]),
     ] {
-        let (pdf, _) = note(&s, lang);
-        let text = text_of(&pdf);
+        let (n, _) = note(&s, lang);
+        let text = text_of(&n);
         for w in words {
             assert!(text.contains(w), "{lang:?}: {w} not in the note");
         }
@@ -130,8 +128,8 @@ fn the_note_is_written_in_ukrainian_and_english() {
 fn every_scene_gets_the_note_its_sections_allow() {
     for path in support::scene_paths() {
         let s = tmm::load(&path).expect("scene");
-        let (pdf, _) = note(&s, Lang::Ru);
-        let text = text_of(&pdf);
+        let (n, _) = note(&s, Lang::Ru);
+        let text = text_of(&n);
         // Each study the scene has, its section; none it has not.
         for (has, heading) in [
             (s.mechanism.is_some(), "Структурный анализ"),
@@ -164,8 +162,8 @@ fn every_scene_gets_the_note_its_sections_allow() {
 #[test]
 fn the_shaper_note_works_the_train_the_cam_and_the_motor_power() {
     let s = shaper();
-    let (pdf, r) = note(&s, Lang::Ru);
-    let text = text_of(&pdf);
+    let (n, r) = note(&s, Lang::Ru);
+    let text = text_of(&n);
     let sig5 = |x: f64| tmm::scale::format_sig(x, 5, Lang::Ru);
     // The teeth of the scene's reducer, z₁ … z₈.
     let z: [f64; 8] = [29.0, 74.0, 106.0, 48.0, 18.0, 76.0, 25.0, 100.0];
@@ -202,8 +200,8 @@ fn the_shaper_note_works_the_train_the_cam_and_the_motor_power() {
 fn the_pz1_note_is_the_report_form_with_the_drawn_readings() {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("constructions/gears-pz1.toml");
     let s = tmm::load(&path).expect("pz1");
-    let (pdf, r) = note(&s, Lang::Ru);
-    let text = text_of(&pdf);
+    let (n, r) = note(&s, Lang::Ru);
+    let text = text_of(&n);
     for form in ["таблица 1.1", "таблица 1.2"] {
         assert!(text.contains(form), "{form} not in the note");
     }
