@@ -46,6 +46,27 @@ enum LangArg {
     En,
 }
 
+/// Where and how `render` and `batch` draw.
+#[derive(clap::Args)]
+struct RenderArgs {
+    /// Output folder.
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// Formats to write.
+    #[arg(long, value_delimiter = ',', default_value = "svg,png")]
+    format: Vec<Format>,
+    /// Label language.
+    #[arg(long, value_enum, default_value = "ru")]
+    lang: LangArg,
+    /// Resolution (mm) to which measured lengths are read before μ converts them; 0 = exact.
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    drafting: f64,
+    /// PNG resolution, dots per inch: 1…2400, within 2^30 pixels per image (an A1 sheet up
+    /// to 1177 dpi, A0 up to 832 dpi).
+    #[arg(long, default_value_t = 150)]
+    dpi: u32,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Render the plates of scenes to DIR/<scene>/<plate>.<ext> (PDF: DIR/<scene>/<scene>.pdf).
@@ -53,22 +74,8 @@ enum Command {
         /// Scene files (constructions/*.toml).
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
-        /// Output folder.
-        #[arg(long, default_value = "out")]
-        out: PathBuf,
-        /// Formats to write.
-        #[arg(long, value_delimiter = ',', default_value = "svg,png")]
-        format: Vec<Format>,
-        /// Label language.
-        #[arg(long, value_enum, default_value = "ru")]
-        lang: LangArg,
-        /// Resolution (mm) to which measured lengths are read before μ converts them; 0 = exact.
-        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-        drafting: f64,
-        /// PNG resolution, dots per inch: 1…2400, within 2^30 pixels per image (an A1 sheet up
-        /// to 1177 dpi, A0 up to 832 dpi).
-        #[arg(long, default_value_t = 150)]
-        dpi: u32,
+        #[command(flatten)]
+        how: RenderArgs,
     },
     /// Write the explanatory note of scenes: DIR/<scene>/<scene>-note.pdf (A4, ГОСТ 2.105
     /// text, ГОСТ 2.104 frames), every section the scene's studies allow.
@@ -122,6 +129,17 @@ enum Command {
         #[arg(long, default_value = "constructions")]
         scenes: PathBuf,
     },
+    /// Every variant of a class: the template scene with each row of a variant grid (CSV:
+    /// `variant,<scene key>,…`) set, rendered to DIR/<variant>/ on all cores, and the answer
+    /// key of the template's `[answer_key]` values, DIR/answer-key.csv.
+    Batch {
+        /// The template scene (constructions/*.toml).
+        template: PathBuf,
+        /// The variant grid (CSV).
+        variants: PathBuf,
+        #[command(flatten)]
+        how: RenderArgs,
+    },
     /// List the scenes in constructions/ with their plates.
     List {
         /// Folder to list.
@@ -154,14 +172,7 @@ impl Failure {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Render {
-            scenes,
-            out,
-            format,
-            lang,
-            drafting,
-            dpi,
-        } => render(&scenes, &out, &format, lang, drafting, dpi),
+        Command::Render { scenes, how } => render(&scenes, &how),
         Command::Check { scenes } => check(&scenes),
         Command::Note {
             scenes,
@@ -175,6 +186,11 @@ fn main() -> ExitCode {
             drafting,
             lang,
         } => report(&scene, format, drafting, lang),
+        Command::Batch {
+            template,
+            variants,
+            how,
+        } => batch(&template, &variants, &how),
         Command::List { dir } => list(&dir),
         Command::Bench {
             json,
@@ -232,24 +248,14 @@ fn render_failure(e: RenderError) -> Failure {
     }
 }
 
-fn render(
-    paths: &[PathBuf],
-    out: &Path,
-    formats: &[Format],
-    lang: LangArg,
-    drafting: f64,
-    dpi: u32,
-) -> Result<(), Failure> {
-    let (lang, drafting) = options(lang, drafting)?;
+/// What `--format`, `--lang`, `--drafting` and `--dpi` ask of a rendering.
+fn render_options(how: &RenderArgs) -> Result<render::Options, Failure> {
+    let (lang, drafting) = options(how.lang, how.drafting)?;
+    let (formats, dpi) = (&how.format, how.dpi);
     if !(1..=2400).contains(&dpi) {
         return Err(Failure::input(format!("--dpi {dpi}: expected 1…2400")));
     }
-    let scenes = load_all(paths)?;
-    if let Some(s) = scenes.iter().find(|s| s.plates.is_empty()) {
-        return Err(nothing_to_draw(s));
-    }
-    distinct_stems(&scenes, out)?;
-    let options = render::Options {
+    Ok(render::Options {
         lang,
         drafting,
         formats: render::Formats {
@@ -259,10 +265,85 @@ fn render(
             note: formats.contains(&Format::Note),
         },
         dpi,
-    };
+    })
+}
+
+fn render(paths: &[PathBuf], how: &RenderArgs) -> Result<(), Failure> {
+    let options = render_options(how)?;
+    let out = how.out.as_path();
+    let scenes = load_all(paths)?;
+    if let Some(s) = scenes.iter().find(|s| s.plates.is_empty()) {
+        return Err(nothing_to_draw(s));
+    }
+    distinct_stems(&scenes, out)?;
     let written = render::render(&scenes, out, &options).map_err(render_failure)?;
     for path in &written {
         emit(&path.display().to_string());
+    }
+    Ok(())
+}
+
+/// The text of a file (a scene or a grid), at most a scene's size.
+fn read_text(path: &Path) -> Result<String, Failure> {
+    scene::read(path).map_err(|e| Failure::input(e.to_string()))
+}
+
+/// `tmm batch`: the grid checked whole against the template (nothing written when it is
+/// refused), every variant rendered on all cores with a progress bar on a terminal, the
+/// answer key written; each variant that fails is named with its diagnosis, and the status
+/// is 1 when any did.
+fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> {
+    use std::io::IsTerminal as _;
+    let options = render_options(how)?;
+    let out = how.out.as_path();
+    let scene = scene::load(template).map_err(|e| Failure::input(e.to_string()))?;
+    if scene.plates.is_empty() {
+        return Err(nothing_to_draw(&scene));
+    }
+    let variants = tmm::batch::read_grid(&read_text(template)?, &read_text(grid)?, grid)
+        .map_err(|e| Failure::input(e.to_string()))?;
+    let columns = tmm::batch::answer_columns(&scene, options.drafting)
+        .map_err(|e| Failure::input(e.to_string()))?;
+    let bar = if std::io::stderr().is_terminal() {
+        indicatif::ProgressBar::new(variants.len() as u64).with_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        )
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
+    let outcomes = tmm::batch::run(&variants, template, out, &options, &columns, &|name| {
+        bar.set_message(name.to_string());
+        bar.inc(1);
+    });
+    bar.finish_and_clear();
+    let key = out.join("answer-key.csv");
+    tmm::plate::write_atomic(
+        &key,
+        tmm::batch::answer_key_csv(&columns, &outcomes).as_bytes(),
+    )
+    .map_err(|e| Failure::construction(format!("{}: cannot write: {e}", key.display())))?;
+    let mut failed = 0;
+    for o in &outcomes {
+        match &o.result {
+            Ok((files, _)) => emit(&format!(
+                "{}: {} file{}",
+                o.name,
+                files.len(),
+                if files.len() == 1 { "" } else { "s" }
+            )),
+            Err(why) => {
+                failed += 1;
+                eprintln!("error: variant {}: {why}", o.name);
+            }
+        }
+    }
+    emit(&key.display().to_string());
+    if failed > 0 {
+        return Err(Failure::construction(format!(
+            "{failed} of {} variants not drawn (listed above; the others are written)",
+            outcomes.len()
+        )));
     }
     Ok(())
 }

@@ -171,21 +171,33 @@ pub fn files(
     out: &Path,
     options: &Options,
 ) -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
+    let sessions: Vec<Session<'_>> = scenes
+        .iter()
+        .map(|s| Session::new(s, options.drafting))
+        .collect();
+    files_of(&sessions, out, options)
+}
+
+/// Every file of the scenes of `sessions` (as [`files`]); the sessions keep what their
+/// studies computed (a report asked of them afterwards reuses it). Each session's own
+/// drafting model is the one read.
+fn files_of(
+    sessions: &[Session<'_>],
+    out: &Path,
+    options: &Options,
+) -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
     let Options {
-        lang,
-        drafting,
-        formats,
-        dpi,
+        lang, formats, dpi, ..
     } = *options;
     let mut svgs: Vec<(PathBuf, String)> = Vec::new();
     let mut sets: Vec<(PathBuf, std::ops::Range<usize>)> = Vec::new();
     let mut notes: Vec<(&Scene, crate::note::Note)> = Vec::new();
-    for s in scenes {
+    for session in sessions {
+        let s = session.scene();
         let first = svgs.len();
-        let session = Session::new(s, drafting);
-        let all = plates_of(&session, lang)?;
+        let all = plates_of(session, lang)?;
         if formats.note {
-            let note = crate::note::compose_with(&session, lang, all.clone())
+            let note = crate::note::compose_with(session, lang, all.clone())
                 .map_err(|error| note_failed(s, error))?;
             notes.push((s, note));
         }
@@ -270,7 +282,24 @@ pub fn render(
     out: &Path,
     options: &Options,
 ) -> Result<Vec<PathBuf>, RenderError> {
-    let files = files(scenes, out, options)?;
+    write(files(scenes, out, options)?)
+}
+
+/// Render the scene of `session` to `out` as [`render`] does, through that session: what
+/// its studies computed stays for its report (`tmm batch` asks both of a variant).
+///
+/// # Errors
+/// As [`render`].
+pub fn render_session(
+    session: &Session<'_>,
+    out: &Path,
+    options: &Options,
+) -> Result<Vec<PathBuf>, RenderError> {
+    write(files_of(std::slice::from_ref(session), out, options)?)
+}
+
+/// Write `files` atomically (all or none); the paths written, in order.
+fn write(files: Vec<(PathBuf, Vec<u8>)>) -> Result<Vec<PathBuf>, RenderError> {
     plate::write_all_atomic(&files).map_err(|(path, error)| RenderError::Write { path, error })?;
     Ok(files.into_iter().map(|(path, _)| path).collect())
 }
@@ -323,7 +352,5 @@ pub fn notes(
     lang: Lang,
     drafting: Drafting,
 ) -> Result<Vec<PathBuf>, RenderError> {
-    let files = note_files(scenes, out, lang, drafting)?;
-    plate::write_all_atomic(&files).map_err(|(path, error)| RenderError::Write { path, error })?;
-    Ok(files.into_iter().map(|(path, _)| path).collect())
+    write(note_files(scenes, out, lang, drafting)?)
 }

@@ -10,7 +10,7 @@ use super::friction::friction;
 use super::gears::gear_sections;
 use super::keys::Key;
 use super::kinematics::kinematics;
-use super::model::{PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
+use super::model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
 use super::structure::mechanism;
 use crate::scale::{Quantity, Scale};
@@ -33,6 +33,15 @@ pub const MAX_SCENE_BYTES: u64 = 1 << 20;
 /// [`Scene`] holds metres and radians. Every problem is reported with the file, the key path,
 /// the value and what was expected (see `constructions/README.md` for the format).
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    parse(&read(path)?, path)
+}
+
+/// The text of the file at `path`, at most [`MAX_SCENE_BYTES`] of UTF-8 (a scene, or a
+/// variant grid of `tmm batch`).
+///
+/// # Errors
+/// [`SceneError::Read`] when it cannot be read or is not UTF-8; [`SceneError::TooLarge`].
+pub fn read(path: &Path) -> Result<String, SceneError> {
     use std::io::Read as _;
     let read_err = |source| SceneError::Read {
         path: path.to_path_buf(),
@@ -48,9 +57,8 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
             limit: MAX_SCENE_BYTES,
         });
     }
-    let text = String::from_utf8(bytes)
-        .map_err(|e| read_err(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))?;
-    parse(&text, path)
+    String::from_utf8(bytes)
+        .map_err(|e| read_err(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))
 }
 
 /// Validate the scene text `text`; `path` names it in messages and gives the default title
@@ -135,6 +143,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let dynamics = raw
         .dynamics
         .map(|d| dynamics(&mut check, d, forces.as_ref(), has_forces));
+    let answer_key = answer_key(&mut check, raw.answer_key.unwrap_or_default());
     if check.problems.is_empty() {
         Ok(Scene {
             path: path.to_path_buf(),
@@ -151,6 +160,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             dynamics,
             gears,
             cam,
+            answer_key,
         })
     } else {
         Err(SceneError::Invalid {
@@ -486,6 +496,51 @@ fn inline_keys(prefix: &str) -> Vec<String> {
     let mut keys = open;
     keys.retain(|k| !k.is_empty());
     keys
+}
+
+/// `[answer_key] values`: each `quantity[@position][:method]`, every part a name of letters,
+/// digits, `_`, `-` or `′` (the report's names); whether the scene's report has the row is
+/// checked by `tmm batch` against the template.
+fn answer_key(check: &mut Checker, raw: super::raw::RawAnswerKey) -> Vec<AnswerItem> {
+    let word = |s: &str| {
+        !s.is_empty()
+            && s.chars()
+                .all(|c| c.is_alphanumeric() || matches!(c, '_' | '-' | '′'))
+    };
+    let mut items = Vec::new();
+    for (k, value) in raw.values.iter().enumerate() {
+        let (rest, method) = match value.split_once(':') {
+            Some((r, m)) => (r, Some(m)),
+            None => (value.as_str(), None),
+        };
+        let (quantity, position) = match rest.split_once('@') {
+            Some((q, p)) => (q, Some(p)),
+            None => (rest, None),
+        };
+        if !word(quantity) || !position.is_none_or(word) || !method.is_none_or(word) {
+            check.push(
+                format!("answer_key.values[{k}]"),
+                Some(quoted(value)),
+                "a report row as quantity[@position][:method], e.g. \"v_E@3\", \"M_bal@3:lever\", \"r_min\"",
+            );
+            continue;
+        }
+        let item = AnswerItem {
+            quantity: quantity.into(),
+            position: position.map(Into::into),
+            method: method.map(Into::into),
+        };
+        if items.contains(&item) {
+            check.push(
+                format!("answer_key.values[{k}]"),
+                Some(quoted(value)),
+                "each value once",
+            );
+            continue;
+        }
+        items.push(item);
+    }
+    items
 }
 
 #[cfg(test)]

@@ -24,8 +24,8 @@ mod structure;
 pub use crate::kinematics::KinematicsSpec;
 pub use error::{Problem, SceneError};
 pub use keys::Key;
-pub use load::{load, parse};
-pub use model::{PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
+pub use load::{load, parse, read};
+pub use model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 
 #[cfg(test)]
 mod tests;

@@ -191,4 +191,41 @@ pub struct Scene {
     pub gears: Option<crate::gears::GearsSpec>,
     /// The cam (`[cam]`), when the scene has one.
     pub cam: Option<crate::cam::CamSpec>,
+    /// The values of the answer key of `tmm batch` (`[answer_key] values`), in file order.
+    pub answer_key: Vec<AnswerItem>,
+}
+
+/// One value of an answer key: a report row named as the report names it,
+/// `quantity[@position][:method]` (`v_E@3`, `M_bal@3:lever`, `r_min`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct AnswerItem {
+    /// The report's quantity (`v_E`, `M_bal`, `eps_alpha`).
+    pub quantity: String,
+    /// The position's label, for a quantity read at a position.
+    pub position: Option<String>,
+    /// The method's key (`plan`, `polygon`, `lever`), when the quantity has several.
+    pub method: Option<String>,
+}
+
+impl AnswerItem {
+    /// The item as written in the scene.
+    pub fn name(&self) -> String {
+        let mut s = self.quantity.clone();
+        if let Some(p) = &self.position {
+            s.push('@');
+            s.push_str(p);
+        }
+        if let Some(m) = &self.method {
+            s.push(':');
+            s.push_str(m);
+        }
+        s
+    }
+
+    /// Whether `row` is the one this item names.
+    pub fn names(&self, row: &crate::check::Row) -> bool {
+        row.quantity() == self.quantity
+            && row.position() == self.position
+            && self.method.as_deref().is_none_or(|m| row.method.key() == m)
+    }
 }

@@ -22,6 +22,15 @@ pub(crate) struct RawScene {
     pub gears: Option<super::gears::RawGears>,
     pub planetary: Option<super::planetary::RawPlanetary>,
     pub cam: Option<super::cam::RawCam>,
+    pub answer_key: Option<RawAnswerKey>,
+}
+
+/// `[answer_key]`: the values an instructor checks over a class's variants (`tmm batch`).
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawAnswerKey {
+    #[serde(default)]
+    pub values: Vec<String>,
 }
 
 /// `[task]`: the title block.

@@ -6,6 +6,7 @@ mod common;
 mod support;
 
 mod balancing;
+mod batch;
 mod bench;
 mod blobs;
 mod blocking;

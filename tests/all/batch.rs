@@ -1,0 +1,247 @@
+//! `tmm batch` (issue 22 §1): every variant of a class drawn from a template and a variant
+//! grid, the answer key, impossible rows listed while the others are written, and a bad grid
+//! refused whole with its line, column and key.
+
+use crate::support::{report_json, rows_of, scratch, tmm};
+use std::path::{Path, PathBuf};
+
+/// The folders written under `out`, sorted.
+fn folders(out: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(out)
+        .map(|d| {
+            d.filter_map(|e| e.ok())
+                .filter(|e| e.path().is_dir())
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    names.sort();
+    names
+}
+
+/// The answer key's rows: header first, each split into its fields (no field holds a comma
+/// but the diagnoses, which come last).
+fn answer_key(out: &Path) -> Vec<Vec<String>> {
+    std::fs::read_to_string(out.join("answer-key.csv"))
+        .expect("answer-key.csv")
+        .lines()
+        .map(|l| l.split(',').map(str::to_string).collect())
+        .collect()
+}
+
+/// `tmm batch TEMPLATE GRID` into a scratch folder, SVG only; it must succeed.
+fn batch(name: &str, template: &str, grid: &str) -> PathBuf {
+    let out = scratch(name);
+    let o = tmm(&[
+        "batch",
+        template,
+        grid,
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "svg",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    out
+}
+
+#[test]
+fn the_shaper_grid_gives_thirty_variants_and_their_answer_key() {
+    let out = batch(
+        "batch-shaper",
+        "constructions/shaper.toml",
+        "constructions/variants/shaper.csv",
+    );
+    let names = folders(&out);
+    assert_eq!(names.len(), 30, "{names:?}");
+    for name in &names {
+        // The project's seven sheets; a variant whose force plans or diagrams need more room
+        // at the template's scales continues them on a sheet of their own (forces-3, …).
+        let sheets: Vec<String> = std::fs::read_dir(out.join(name))
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        for sheet in [
+            "kinematics",
+            "kinematics-2",
+            "forces",
+            "forces-2",
+            "cam",
+            "gears",
+            "dynamics",
+        ] {
+            assert!(
+                sheets.contains(&format!("{sheet}.svg")),
+                "{name}: {sheets:?}"
+            );
+        }
+        assert!(sheets.len() <= 10, "{name}: {sheets:?}");
+    }
+    let key = answer_key(&out);
+    assert_eq!(key.len(), 31);
+    assert_eq!(key[0][0], "variant");
+    assert!(key[0][1].starts_with("v_E@3 (m/s)"), "{:?}", key[0]);
+    assert!(key[1..].iter().all(|r| r.last().unwrap() == "ok"));
+    // The variants differ where the grid makes them differ (the ram's speed at position 3)
+    // and agree where it does not (the gear pair).
+    let column = |name: &str| key[0].iter().position(|h| h.starts_with(name)).unwrap();
+    let (v, eps) = (column("v_E@3"), column("eps_alpha"));
+    let distinct: std::collections::BTreeSet<&str> =
+        key[1..].iter().map(|r| r[v].as_str()).collect();
+    assert!(distinct.len() >= 25, "{distinct:?}");
+    assert!(key[1..].iter().all(|r| r[eps] == key[1][eps]));
+}
+
+#[test]
+fn the_answer_key_holds_each_variants_own_report() {
+    let out = batch(
+        "batch-four-bar",
+        "constructions/four-bar.toml",
+        "constructions/variants/four-bar.csv",
+    );
+    assert_eq!(folders(&out).len(), 30);
+    let key = answer_key(&out);
+    // Variant 07 written by hand from the template (its row of the grid put in by text),
+    // and its report asked for on its own.
+    let grid = std::fs::read_to_string("constructions/variants/four-bar.csv").unwrap();
+    let row: Vec<&str> = grid
+        .lines()
+        .find(|l| l.starts_with("07,"))
+        .unwrap()
+        .split(',')
+        .collect();
+    let template = std::fs::read_to_string("constructions/four-bar.toml").unwrap();
+    let text = template
+        .replace("length = 80.0", &format!("length = {}", row[1]))
+        .replace("at = [280.0, 0.0]", &format!("at = [{}, 0.0]", row[2]))
+        .replace("la = 250.0", &format!("la = {}", row[3]))
+        .replace("lb = 180.0", &format!("lb = {}", row[4]))
+        .replace("along = 125.0", &format!("along = {}", row[5]))
+        .replace("omega = 10.0", &format!("omega = {}", row[6]));
+    assert_ne!(text, template);
+    let scene = scratch("batch-07").join("v07.toml");
+    std::fs::write(&scene, text).unwrap();
+    let report = report_json(scene.to_str().unwrap(), None);
+    let ours = key.iter().find(|r| r[0] == "07").expect("variant 07");
+    for (k, name) in key[0].iter().enumerate().skip(1) {
+        let Some(item) = name.strip_suffix(')').and_then(|n| n.split_once(" (")) else {
+            continue;
+        };
+        let (quantity, position) = item.0.split_once('@').unwrap();
+        let row = rows_of(&report, quantity)
+            .into_iter()
+            .find(|r| r["position"] == position)
+            .unwrap_or_else(|| panic!("{quantity}@{position}"));
+        let exact = row["analytic"].as_f64().unwrap();
+        let printed: f64 = ours[k].parse().unwrap();
+        assert!(
+            (printed - exact).abs() <= 1e-5 * exact.abs(),
+            "{name}: {printed} against {exact}"
+        );
+    }
+}
+
+#[test]
+fn a_grid_with_impossible_rows_lists_them_and_writes_the_others() {
+    let dir = scratch("batch-impossible");
+    let grid = dir.join("grid.csv");
+    // a: a good row; b: the crank longer than the frame's other links allow (it cannot turn
+    // through a full revolution); c: a negative length (refused as a scene); d: a rocker that
+    // cannot reach the coupler; e: another good row.
+    std::fs::write(
+        &grid,
+        "variant,mechanism.crank.length,mechanism.group[0].la,mechanism.group[0].lb\n\
+         a,80,250,180\n\
+         b,200,250,180\n\
+         c,-80,250,180\n\
+         d,80,250,10\n\
+         e,70,240,180\n",
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let o = tmm(&[
+        "batch",
+        "constructions/four-bar.toml",
+        grid.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "svg",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "some variants failed");
+    let err = String::from_utf8_lossy(&o.stderr);
+    for name in ["b", "c", "d"] {
+        assert!(err.contains(&format!("variant {name}:")), "{name}: {err}");
+    }
+    assert!(err.contains("3 of 5 variants"), "{err}");
+    assert!(
+        err.contains("mechanism.crank.length"),
+        "c names its key: {err}"
+    );
+    assert_eq!(folders(&out), ["a", "e"]);
+    let key = answer_key(&out);
+    assert_eq!(key.len(), 6);
+    for r in &key[1..] {
+        let ok = r.last().unwrap() == "ok";
+        assert_eq!(ok, r[0] == "a" || r[0] == "e", "{r:?}");
+    }
+}
+
+#[test]
+fn a_bad_grid_is_refused_whole_with_its_line_column_and_key() {
+    let dir = scratch("batch-bad");
+    for (csv, says) in [
+        (
+            "variant,mechanism.crank.length,mechanism.crank.omega\n1,80,10\n2,80\n",
+            "line 3, column 3 (mechanism.crank.omega): 2 fields",
+        ),
+        (
+            "variant,mechanism.crank.lenght\n1,80\n",
+            "line 1, column 2 (mechanism.crank.lenght): the template has no `lenght`",
+        ),
+        (
+            "variant,mechanism.crank.length\n1,80\n2,eighty\n",
+            "line 3, column 2 (mechanism.crank.length): \"eighty\": expected a number",
+        ),
+    ] {
+        let grid = dir.join("grid.csv");
+        std::fs::write(&grid, csv).unwrap();
+        let out = dir.join("out");
+        let o = tmm(&[
+            "batch",
+            "constructions/four-bar.toml",
+            grid.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{csv}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains(says), "{err}");
+        assert!(!out.exists(), "nothing written");
+    }
+}
+
+#[test]
+fn an_answer_key_naming_a_row_the_report_lacks_is_refused() {
+    let dir = scratch("batch-key");
+    let template = std::fs::read_to_string("constructions/four-bar.toml").unwrap();
+    let scene = dir.join("t.toml");
+    std::fs::write(&scene, template.replace("\"eps_3@3\"", "\"eps_9@3\"")).unwrap();
+    let grid = dir.join("grid.csv");
+    std::fs::write(&grid, "variant,mechanism.crank.length\n1,80\n").unwrap();
+    let out = dir.join("out");
+    let o = tmm(&[
+        "batch",
+        scene.to_str().unwrap(),
+        grid.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("answer_key.values[4] = \"eps_9@3\"") && err.contains("no such row"),
+        "{err}"
+    );
+    assert!(!out.exists());
+}
