@@ -368,7 +368,9 @@ impl Polygon {
         self.tip
     }
     /// Close the polygon: the line through `a.1` along `a.2` meets the line through `b.1`
-    /// along `b.2` (each named `.0`); both drawn thin about the closing point.
+    /// along `b.2` (each named `.0`); each drawn thin from its point to the closing point and
+    /// a little past it, as the draughtsman draws them (a line drawn across the closing point
+    /// would run through the label of the short reaction beside it).
     fn close(
         &mut self,
         a: (&str, DVec2, DVec2),
@@ -385,9 +387,17 @@ impl Polygon {
         };
         let (la, lb) = (line(a)?, line(b)?);
         let (h, _, _) = self.rec.meet_lines(STEP, (a.0, &la), (b.0, &lb))?;
-        for l in [la, lb] {
-            let from = l.eval(l.project_t(h) - 8.0);
-            let to = l.eval(l.project_t(h) + 8.0);
+        for (l, start) in [(la, a.1), (lb, b.1)] {
+            let (t0, t1) = (l.project_t(start), l.project_t(h));
+            let (from, to) = if (t1 - t0).abs() < CLOSING_PAST_MM {
+                // The unknown is about nil: the direction drawn about the closing point.
+                (l.eval(t1 - CLOSING_PAST_MM), l.eval(t1 + CLOSING_PAST_MM))
+            } else {
+                (
+                    l.eval(t0),
+                    l.eval(t1 + CLOSING_PAST_MM * (t1 - t0).signum()),
+                )
+            };
             self.rec.draw(
                 format!("{STEP}: closing direction"),
                 Item::Segment(Segment::new(from, to)),
@@ -418,6 +428,9 @@ impl Polygon {
         (to - from).normalize_or_zero() * m.value
     }
 }
+
+/// How far a polygon's closing direction is drawn past the closing point, mm.
+const CLOSING_PAST_MM: f64 = 5.0;
 
 /// The markup name of the force of link `a` on link `b`.
 pub fn reaction_name(a: usize, b: usize) -> String {
