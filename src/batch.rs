@@ -295,13 +295,14 @@ pub fn read_grid(template: &str, grid: &str, grid_path: &Path) -> Result<Vec<Var
     Ok(variants)
 }
 
-/// A column of the answer key: the item and its unit (from the template's report).
+/// A column of the answer key: the item and the template's row it names (its quantity,
+/// position, method and unit).
 #[derive(Debug, Clone)]
 pub struct Column {
     /// The report row it names.
     pub item: AnswerItem,
-    /// The row's SI unit.
-    pub unit: &'static str,
+    /// The template's row.
+    pub row: Row,
 }
 
 /// The first row of `rows` that `item` names.
@@ -338,7 +339,7 @@ pub fn answer_columns(template: &Scene, drafting: Drafting) -> Result<Vec<Column
             })?;
             Ok(Column {
                 item: item.clone(),
-                unit: row.unit(),
+                row: row.clone(),
             })
         })
         .collect()
@@ -422,7 +423,7 @@ pub fn answer_key_csv(columns: &[Column], outcomes: &[Outcome]) -> String {
     header.extend(
         columns
             .iter()
-            .map(|c| format!("{} ({})", c.item.name(), c.unit)),
+            .map(|c| format!("{} ({})", c.item.name(), c.row.unit())),
     );
     header.push("status".into());
     let mut rows = vec![header];
@@ -450,6 +451,36 @@ pub fn answer_key_csv(columns: &[Column], outcomes: &[Outcome]) -> String {
     w.into_inner()
         .map(|b| String::from_utf8_lossy(&b).into_owned())
         .unwrap_or_default()
+}
+
+/// The answer key as a PDF: the sheet of [`crate::sheets::answer_key`] in `lang` (a variant
+/// not drawn marked as such).
+///
+/// # Errors
+/// The sheet cannot be laid out or written as PDF (the message says why).
+pub fn answer_key_pdf(
+    template: &Scene,
+    columns: &[Column],
+    outcomes: &[Outcome],
+    lang: crate::scale::Lang,
+) -> Result<Vec<u8>, String> {
+    let heads: Vec<(Row, bool)> = columns
+        .iter()
+        .map(|c| (c.row.clone(), c.item.method.is_some()))
+        .collect();
+    let lines: Vec<crate::sheets::KeyLine> = outcomes
+        .iter()
+        .map(|o| {
+            (
+                o.name.clone(),
+                o.result.as_ref().ok().map(|(_, v)| v.clone()),
+            )
+        })
+        .collect();
+    let plates =
+        crate::sheets::answer_key(template, &heads, &lines, lang).map_err(|e| e.to_string())?;
+    let svgs: Vec<String> = plates.iter().map(crate::plate::to_svg).collect();
+    crate::plate::to_pdf(&svgs).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

@@ -131,7 +131,7 @@ enum Command {
     },
     /// Every variant of a class: the template scene with each row of a variant grid (CSV:
     /// `variant,<scene key>,…`) set, rendered to DIR/<variant>/ on all cores, and the answer
-    /// key of the template's `[answer_key]` values, DIR/answer-key.csv.
+    /// key of the template's `[answer_key]` values, DIR/answer-key.csv and .pdf.
     Batch {
         /// The template scene (constructions/*.toml).
         template: PathBuf,
@@ -318,11 +318,16 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
     });
     bar.finish_and_clear();
     let key = out.join("answer-key.csv");
-    tmm::plate::write_atomic(
-        &key,
-        tmm::batch::answer_key_csv(&columns, &outcomes).as_bytes(),
-    )
-    .map_err(|e| Failure::construction(format!("{}: cannot write: {e}", key.display())))?;
+    let csv = tmm::batch::answer_key_csv(&columns, &outcomes).into_bytes();
+    let mut files = vec![(key, csv)];
+    if !columns.is_empty() {
+        let pdf = tmm::batch::answer_key_pdf(&scene, &columns, &outcomes, options.lang)
+            .map_err(|e| Failure::construction(format!("the answer key's sheet: {e}")))?;
+        files.push((out.join("answer-key.pdf"), pdf));
+    }
+    tmm::plate::write_all_atomic(&files).map_err(|(path, e)| {
+        Failure::construction(format!("{}: cannot write: {e}", path.display()))
+    })?;
     let mut failed = 0;
     for o in &outcomes {
         match &o.result {
@@ -338,7 +343,9 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
             }
         }
     }
-    emit(&key.display().to_string());
+    for (path, _) in &files {
+        emit(&path.display().to_string());
+    }
     if failed > 0 {
         return Err(Failure::construction(format!(
             "{failed} of {} variants not drawn (listed above; the others are written)",

@@ -1,9 +1,11 @@
 //! Sheets: the plates a scene asks for, composed from the studies of its session on ГОСТ
 //! sheets.
 
+mod answer_key;
 mod balancing;
 mod cam;
 pub(crate) mod captions;
+pub use answer_key::{answer_key, KeyLine};
 mod dynamics;
 mod forces;
 mod friction;

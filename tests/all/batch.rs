@@ -90,6 +90,11 @@ fn the_shaper_grid_gives_thirty_variants_and_their_answer_key() {
         key[1..].iter().map(|r| r[v].as_str()).collect();
     assert!(distinct.len() >= 25, "{distinct:?}");
     assert!(key[1..].iter().all(|r| r[eps] == key[1][eps]));
+    // And as a sheet to print: one page of the drawing set's format.
+    let pdf = std::fs::read(out.join("answer-key.pdf")).expect("answer-key.pdf");
+    assert!(pdf.starts_with(b"%PDF-"));
+    let text = String::from_utf8_lossy(&pdf);
+    assert!(text.contains("/Count 1"), "one page");
 }
 
 #[test]
