@@ -182,10 +182,12 @@ fn assign(slot: &mut Value, text: &str, decimal_comma: bool) -> Result<(), Strin
     Ok(())
 }
 
-/// Whether `name` may name a folder: letters, digits, `-`, `_`, `.`, not starting with `.`.
+/// Whether `name` may name a folder: letters, digits, `-`, `_`, `.`, not starting with `.`,
+/// and not the answer key's files.
 fn folder_name(name: &str) -> bool {
     !name.is_empty()
         && !name.starts_with('.')
+        && !name.starts_with("answer-key.")
         && name
             .chars()
             .all(|c| c.is_alphanumeric() || matches!(c, '-' | '_' | '.'))
@@ -565,6 +567,8 @@ mod tests {
             "{m}"
         );
         let m = refused("variant,a.x\n../up,2\n");
+        assert!(m.contains("folder"), "{m}");
+        let m = refused("variant,a.x\nanswer-key.csv,2\n");
         assert!(m.contains("folder"), "{m}");
         let m = refused("name,a.x\n1,2\n");
         assert!(m.contains("must start with `variant`"), "{m}");
