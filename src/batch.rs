@@ -358,7 +358,8 @@ pub struct Outcome {
 }
 
 /// One variant: its scene (named `<name>.toml` beside the template), its files rendered and
-/// written into `out/<name>/`, and the exact values of `columns` from its report.
+/// written into `out/<name>/` with its task sheet (`task.pdf`, a task with a mechanism), and
+/// the exact values of `columns` from its report.
 fn one(
     v: &Variant,
     template: &Path,
@@ -380,7 +381,17 @@ fn one(
     };
     let scene = scene::parse(&v.text, &path).map_err(|e| why(&e))?;
     let session = Session::new(&scene, options.drafting);
-    let files = render::render_session(&session, out, options).map_err(|e| why(&e))?;
+    let mut files = render::render_session(&session, out, options).map_err(|e| why(&e))?;
+    // The task sheet to hand out, for a task with a mechanism.
+    if scene.mechanism.is_some() {
+        let plates =
+            crate::sheets::task_sheet(&session, &v.name, options.lang).map_err(|e| why(&e))?;
+        let svgs: Vec<String> = plates.iter().map(crate::plate::to_svg).collect();
+        let pdf = crate::plate::to_pdf(&svgs).map_err(|e| why(&e))?;
+        let path = out.join(&v.name).join("task.pdf");
+        crate::plate::write_atomic(&path, &pdf).map_err(|e| why(&e))?;
+        files.push(path);
+    }
     let values = if columns.is_empty() {
         Vec::new()
     } else {

@@ -5,12 +5,11 @@ use super::markup::{label, string, text, Align};
 use super::rows::{fmt, percent};
 use super::Writer;
 use crate::check::{Method, Symbol};
-use crate::forces::{Action, ForceSpec};
 use crate::gears::GearsSpec;
-use crate::linkage::{Dyad, Mechanism};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
+use crate::sheets::data::mm;
 
 /// The page rules (`template.typ`) after the title block's data.
 pub(super) fn preamble(w: &mut Writer<'_, '_>) {
@@ -87,11 +86,6 @@ pub(super) fn contents(w: &mut Writer<'_, '_>) {
     ));
 }
 
-/// A length in mm as the task sheet writes it.
-fn mm(x: f64, lang: Lang) -> String {
-    fmt(x * 1e3, 5, lang)
-}
-
 /// The task: the scheme, then the data of every study the scene has, each a table of
 /// symbol, value and unit.
 pub(super) fn task(w: &mut Writer<'_, '_>) {
@@ -104,13 +98,13 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
             |own| own.starts_with(scheme),
             |own| own.to_string(),
         );
-        let rows = mechanism_data(m, w.lang);
+        let rows = crate::sheets::data::mechanism(m, w.lang);
         let caption = w.word(T::MechanismData);
         table_of_data(w, caption, &rows);
     }
     if let Some(f) = &scene.forces {
         let caption = w.word(T::ForcesData);
-        table_of_data(w, caption, &forces_data(f, w.lang));
+        table_of_data(w, caption, &crate::sheets::data::forces(f, w.lang));
     }
     if let Some(g) = &scene.gears {
         let caption = w.word(T::GearsData);
@@ -128,86 +122,6 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         w.doc.par(&[text(&format!("{}:", w.word(title)))]);
         w.data_list(kind, true);
     }
-}
-
-/// Symbol (label markup), value and unit of the mechanism's data.
-fn mechanism_data(m: &Mechanism, lang: Lang) -> Vec<(String, String, String)> {
-    let mut rows = Vec::new();
-    let len = |a: &str, b: &str, l: f64| {
-        (
-            format!("l_{{{}{}}}", plain(a), plain(b)),
-            mm(l, lang),
-            "mm".to_string(),
-        )
-    };
-    rows.push(len(&m.crank.centre, &m.crank.pin, m.crank.length));
-    for g in &m.groups {
-        match &g.dyad {
-            Dyad::Rrr {
-                a,
-                la,
-                b,
-                lb,
-                joint,
-                ..
-            } => {
-                rows.push(len(a, joint, *la));
-                rows.push(len(b, joint, *lb));
-            }
-            Dyad::Rrp { a, la, joint, .. } => rows.push(len(a, joint, *la)),
-            _ => {}
-        }
-    }
-    for p in &m.points {
-        if p.across == 0.0 {
-            let origin = link_origin(m, p.link);
-            if let Some(o) = origin {
-                rows.push(len(&o, &p.name, p.along.abs()));
-            }
-        }
-    }
-    let fixed = &m.fixed;
-    for (k, a) in fixed.iter().enumerate() {
-        for b in &fixed[k + 1..] {
-            rows.push(len(&a.name, &b.name, (a.at - b.at).length()));
-        }
-    }
-    rows.push(("ω_{1}".into(), fmt(m.crank.omega, 5, lang), "rad/s".into()));
-    rows
-}
-
-/// Symbol, value and unit of the links' masses and moments of inertia and of the working
-/// resistances.
-fn forces_data(f: &ForceSpec, lang: Lang) -> Vec<(String, String, String)> {
-    let mut rows = Vec::new();
-    for l in &f.links {
-        if l.mass > 0.0 {
-            rows.push((
-                format!("m_{{{}}}", l.link),
-                fmt(l.mass, 5, lang),
-                "kg".into(),
-            ));
-        }
-        if l.inertia > 0.0 {
-            let centre = plain(&l.centre);
-            rows.push((
-                format!("J_{{{centre}}}"),
-                fmt(l.inertia, 5, lang),
-                "kg*m^2".into(),
-            ));
-        }
-    }
-    for r in &f.resistances {
-        match &r.action {
-            Action::Force { magnitude, .. } => {
-                rows.push(("F_{пс}".into(), fmt(*magnitude, 5, lang), "N".into()));
-            }
-            Action::Moment { magnitude, .. } => {
-                rows.push(("M_{пс}".into(), fmt(*magnitude, 5, lang), "N*m".into()));
-            }
-        }
-    }
-    rows
 }
 
 /// Symbol, value and unit of the gear pair, the wheels cut by the rack and the train's
@@ -255,31 +169,6 @@ fn gears_data(g: &GearsSpec, lang: Lang) -> Vec<(String, String, String)> {
         }
     }
     rows
-}
-
-/// The point a link's frame starts at (its outer pivot), for the distances of its points.
-fn link_origin(m: &Mechanism, link: u32) -> Option<String> {
-    if link == m.crank.link {
-        return Some(m.crank.centre.clone());
-    }
-    m.groups.iter().find_map(|g| {
-        let [i, j] = g.links;
-        match &g.dyad {
-            Dyad::Rrr { a, b, .. } if link == i || link == j => {
-                Some(if link == i { a.clone() } else { b.clone() })
-            }
-            Dyad::Rrp { a, .. } if link == i => Some(a.clone()),
-            Dyad::Rpr { a, c, .. } if link == i || link == j => {
-                Some(if link == i { a.clone() } else { c.clone() })
-            }
-            _ => None,
-        }
-    })
-}
-
-/// A point's name without its markup (`S_3` → `S3`).
-fn plain(name: &str) -> String {
-    name.replace(['_', '{', '}'], "")
 }
 
 /// A table of data: symbol, value, unit.

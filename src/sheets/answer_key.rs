@@ -80,11 +80,11 @@ pub fn answer_key(
     let one = Scale::new(0.001, Quantity::Length).ok_or(BuildError::NoScale(0.001))?;
     let mut title = super::title_block(template, Text::AnswerKey.get(lang), one, lang);
     title.scale = "—".into();
-    let mut plates = lay_out_smallest(&SIZES, blocks, "answer-key", &title, lang)?;
-    let n = plates.len() as u32;
-    for (k, p) in plates.iter_mut().enumerate() {
-        p.title_block.sheet_no = k as u32 + 1;
-        p.title_block.sheets = n;
-    }
-    Ok(plates)
+    Ok(super::numbered(lay_out_smallest(
+        &SIZES,
+        blocks,
+        "answer-key",
+        &title,
+        lang,
+    )?))
 }

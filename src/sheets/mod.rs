@@ -5,7 +5,9 @@ mod answer_key;
 mod balancing;
 mod cam;
 pub(crate) mod captions;
+pub(crate) mod data;
 pub use answer_key::{answer_key, KeyLine};
+pub use task::task_sheet;
 mod dynamics;
 mod forces;
 mod friction;
@@ -17,6 +19,7 @@ mod kinematics;
 mod pack;
 mod positions;
 mod refit;
+mod task;
 
 use crate::geom::DVec2;
 use crate::plate::{Plate, PlateError, TitleBlock};
@@ -173,6 +176,17 @@ pub fn build_all(
         tb.designation = sheet_designation(&tb.designation, tb.sheet_no, n);
     }
     Ok(all)
+}
+
+/// The sheets of a set standing alone (an answer key, a task sheet), numbered 1 … n in their
+/// title blocks.
+fn numbered(mut plates: Vec<Plate>) -> Vec<Plate> {
+    let n = plates.len() as u32;
+    for (k, p) in plates.iter_mut().enumerate() {
+        p.title_block.sheet_no = k as u32 + 1;
+        p.title_block.sheets = n;
+    }
+    plates
 }
 
 /// A sheet's designation in a set of `n`: the scene's (`[task] designation`, the set's) with

@@ -75,8 +75,15 @@ fn the_shaper_grid_gives_thirty_variants_and_their_answer_key() {
                 "{name}: {sheets:?}"
             );
         }
-        assert!(sheets.len() <= 10, "{name}: {sheets:?}");
+        assert!(
+            sheets.contains(&"task.pdf".to_string()),
+            "{name}: the task sheet"
+        );
+        assert!(sheets.len() <= 11, "{name}: {sheets:?}");
     }
+    // The task sheet: one page, its title block naming the variant.
+    let task = std::fs::read(out.join("07/task.pdf")).expect("task.pdf");
+    assert!(String::from_utf8_lossy(&task).contains("/Count 1"));
     let key = answer_key(&out);
     assert_eq!(key.len(), 31);
     assert_eq!(key[0][0], "variant");
@@ -184,6 +191,12 @@ fn a_grid_with_impossible_rows_lists_them_and_writes_the_others() {
         "c names its key: {err}"
     );
     assert_eq!(folders(&out), ["a", "e"]);
+    for name in ["a", "e"] {
+        assert!(
+            out.join(name).join("task.pdf").exists(),
+            "{name}: its task sheet"
+        );
+    }
     let key = answer_key(&out);
     assert_eq!(key.len(), 6);
     for r in &key[1..] {

@@ -1,0 +1,122 @@
+//! The data of a task as its sheets and its note print them: symbol (label markup), value
+//! and unit of the mechanism (lengths, ω₁) and of the force analysis (masses, moments of
+//! inertia, working resistances). One place for the note's task tables and the task sheet
+//! of `tmm batch`.
+
+use crate::forces::{Action, ForceSpec};
+use crate::linkage::{Dyad, Mechanism};
+use crate::report::md_value as fmt;
+use crate::scale::Lang;
+
+/// One line of data: symbol (label markup), value, unit (as `unit_in` takes it).
+pub type DataRow = (String, String, String);
+
+/// A length in mm as the task sheet writes it.
+pub(crate) fn mm(x: f64, lang: Lang) -> String {
+    fmt(x * 1e3, 5, lang)
+}
+
+/// Symbol (label markup), value and unit of the mechanism's data.
+pub fn mechanism(m: &Mechanism, lang: Lang) -> Vec<DataRow> {
+    let mut rows = Vec::new();
+    let len = |a: &str, b: &str, l: f64| {
+        (
+            format!("l_{{{}{}}}", plain(a), plain(b)),
+            mm(l, lang),
+            "mm".to_string(),
+        )
+    };
+    rows.push(len(&m.crank.centre, &m.crank.pin, m.crank.length));
+    for g in &m.groups {
+        match &g.dyad {
+            Dyad::Rrr {
+                a,
+                la,
+                b,
+                lb,
+                joint,
+                ..
+            } => {
+                rows.push(len(a, joint, *la));
+                rows.push(len(b, joint, *lb));
+            }
+            Dyad::Rrp { a, la, joint, .. } => rows.push(len(a, joint, *la)),
+            _ => {}
+        }
+    }
+    for p in &m.points {
+        if p.across == 0.0 {
+            let origin = link_origin(m, p.link);
+            if let Some(o) = origin {
+                rows.push(len(&o, &p.name, p.along.abs()));
+            }
+        }
+    }
+    let fixed = &m.fixed;
+    for (k, a) in fixed.iter().enumerate() {
+        for b in &fixed[k + 1..] {
+            rows.push(len(&a.name, &b.name, (a.at - b.at).length()));
+        }
+    }
+    rows.push(("ω_{1}".into(), fmt(m.crank.omega, 5, lang), "rad/s".into()));
+    rows
+}
+
+/// Symbol, value and unit of the links' masses and moments of inertia and of the working
+/// resistances.
+pub fn forces(f: &ForceSpec, lang: Lang) -> Vec<DataRow> {
+    let mut rows = Vec::new();
+    for l in &f.links {
+        if l.mass > 0.0 {
+            rows.push((
+                format!("m_{{{}}}", l.link),
+                fmt(l.mass, 5, lang),
+                "kg".into(),
+            ));
+        }
+        if l.inertia > 0.0 {
+            let centre = plain(&l.centre);
+            rows.push((
+                format!("J_{{{centre}}}"),
+                fmt(l.inertia, 5, lang),
+                "kg*m^2".into(),
+            ));
+        }
+    }
+    for r in &f.resistances {
+        match &r.action {
+            Action::Force { magnitude, .. } => {
+                rows.push(("F_{пс}".into(), fmt(*magnitude, 5, lang), "N".into()));
+            }
+            Action::Moment { magnitude, .. } => {
+                rows.push(("M_{пс}".into(), fmt(*magnitude, 5, lang), "N*m".into()));
+            }
+        }
+    }
+    rows
+}
+
+/// The point a link's frame starts at (its outer pivot), for the distances of its points.
+fn link_origin(m: &Mechanism, link: u32) -> Option<String> {
+    if link == m.crank.link {
+        return Some(m.crank.centre.clone());
+    }
+    m.groups.iter().find_map(|g| {
+        let [i, j] = g.links;
+        match &g.dyad {
+            Dyad::Rrr { a, b, .. } if link == i || link == j => {
+                Some(if link == i { a.clone() } else { b.clone() })
+            }
+            Dyad::Rrp { a, .. } if link == i => Some(a.clone()),
+            Dyad::Rpr { a, c, .. } if link == i || link == j => {
+                Some(if link == i { a.clone() } else { c.clone() })
+            }
+            _ => None,
+        }
+    })
+}
+
+/// A point's name without its markup (`S_3` → `S3`).
+fn plain(name: &str) -> String {
+    name.replace(['_', '{', '}'], "")
+}
