@@ -347,6 +347,12 @@ pub fn answer_columns(template: &Scene, drafting: Drafting) -> Result<Vec<Column
         .collect()
 }
 
+/// `plates` as one PDF, a page each.
+fn pdf_of(plates: &[crate::plate::Plate]) -> Result<Vec<u8>, crate::plate::PdfError> {
+    let svgs: Vec<String> = plates.iter().map(crate::plate::to_svg).collect();
+    crate::plate::to_pdf(&svgs)
+}
+
 /// What became of one variant.
 #[derive(Debug)]
 pub struct Outcome {
@@ -381,13 +387,18 @@ fn one(
     };
     let scene = scene::parse(&v.text, &path).map_err(|e| why(&e))?;
     let session = Session::new(&scene, options.drafting);
+    // The task sheet to hand out, for a task with a mechanism: made before anything of the
+    // variant is written, so that a variant whose task sheet fails leaves no folder.
+    let task = match scene.mechanism {
+        Some(_) => Some(
+            crate::sheets::task_sheet(&session, &v.name, options.lang)
+                .map_err(|e| why(&e))
+                .and_then(|plates| pdf_of(&plates).map_err(|e| why(&e)))?,
+        ),
+        None => None,
+    };
     let mut files = render::render_session(&session, out, options).map_err(|e| why(&e))?;
-    // The task sheet to hand out, for a task with a mechanism.
-    if scene.mechanism.is_some() {
-        let plates =
-            crate::sheets::task_sheet(&session, &v.name, options.lang).map_err(|e| why(&e))?;
-        let svgs: Vec<String> = plates.iter().map(crate::plate::to_svg).collect();
-        let pdf = crate::plate::to_pdf(&svgs).map_err(|e| why(&e))?;
+    if let Some(pdf) = task {
         let path = out.join(&v.name).join("task.pdf");
         crate::plate::write_atomic(&path, &pdf).map_err(|e| why(&e))?;
         files.push(path);
@@ -492,8 +503,7 @@ pub fn answer_key_pdf(
         .collect();
     let plates =
         crate::sheets::answer_key(template, &heads, &lines, lang).map_err(|e| e.to_string())?;
-    let svgs: Vec<String> = plates.iter().map(crate::plate::to_svg).collect();
-    crate::plate::to_pdf(&svgs).map_err(|e| e.to_string())
+    pdf_of(&plates).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

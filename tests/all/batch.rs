@@ -32,7 +32,14 @@ fn answer_key(out: &Path) -> Vec<Vec<String>> {
 /// `tmm batch TEMPLATE GRID` into a scratch folder, SVG only; it must succeed.
 fn batch(name: &str, template: &str, grid: &str) -> PathBuf {
     let out = scratch(name);
-    let o = tmm(&[
+    let o = run(template, grid, &out);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    out
+}
+
+/// `tmm batch TEMPLATE GRID --out OUT --format svg`.
+fn run(template: &str, grid: &str, out: &Path) -> std::process::Output {
+    tmm(&[
         "batch",
         template,
         grid,
@@ -40,9 +47,7 @@ fn batch(name: &str, template: &str, grid: &str) -> PathBuf {
         out.to_str().unwrap(),
         "--format",
         "svg",
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    out
+    ])
 }
 
 #[test]
@@ -171,15 +176,7 @@ fn a_grid_with_impossible_rows_lists_them_and_writes_the_others() {
     )
     .unwrap();
     let out = dir.join("out");
-    let o = tmm(&[
-        "batch",
-        "constructions/four-bar.toml",
-        grid.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--format",
-        "svg",
-    ]);
+    let o = run("constructions/four-bar.toml", grid.to_str().unwrap(), &out);
     assert_eq!(o.status.code(), Some(1), "some variants failed");
     let err = String::from_utf8_lossy(&o.stderr);
     for name in ["b", "c", "d"] {
@@ -225,13 +222,7 @@ fn a_bad_grid_is_refused_whole_with_its_line_column_and_key() {
         let grid = dir.join("grid.csv");
         std::fs::write(&grid, csv).unwrap();
         let out = dir.join("out");
-        let o = tmm(&[
-            "batch",
-            "constructions/four-bar.toml",
-            grid.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let o = run("constructions/four-bar.toml", grid.to_str().unwrap(), &out);
         assert_eq!(o.status.code(), Some(2), "{csv}");
         let err = String::from_utf8_lossy(&o.stderr);
         assert!(err.contains(says), "{err}");
