@@ -20,6 +20,7 @@
 use crate::check::Row;
 use crate::construct::Drafting;
 use crate::render::{self, Options};
+use crate::scene::user_table::{self, CellError};
 use crate::scene::{self, AnswerItem, Scene};
 use crate::study::Session;
 use rayon::prelude::*;
@@ -39,19 +40,8 @@ pub enum GridError {
         message: String,
     },
     /// One field of a row is refused.
-    #[error("{}: line {line}, column {column} ({key}): {message}", .path.display())]
-    Cell {
-        /// The grid's file.
-        path: PathBuf,
-        /// The line of the file, from 1 (the header is line 1).
-        line: u64,
-        /// The column, from 1 (the variant's name is column 1).
-        column: usize,
-        /// The column's key.
-        key: String,
-        /// What is wrong with the value.
-        message: String,
-    },
+    #[error(transparent)]
+    Cell(#[from] CellError),
     /// The template is not a scene, or its answer key names a row its report lacks.
     #[error("{}: {message}", .path.display())]
     Template {
@@ -205,12 +195,7 @@ pub fn read_grid(template: &str, grid: &str, grid_path: &Path) -> Result<Vec<Var
     };
     let base: Table = toml::from_str(template)
         .map_err(|e| whole(format!("the template is not TOML: {}", e.message())))?;
-    let header_line = grid.lines().next().unwrap_or("");
-    let semicolons = header_line.contains(';') && !header_line.contains(',');
-    let mut reader = csv::ReaderBuilder::new()
-        .delimiter(if semicolons { b';' } else { b',' })
-        .flexible(true)
-        .from_reader(grid.as_bytes());
+    let (mut reader, semicolons) = user_table::reader(grid);
     let header: Vec<String> = reader
         .headers()
         .map_err(|e| whole(format!("the header: {e}")))?
@@ -224,12 +209,14 @@ pub fn read_grid(template: &str, grid: &str, grid_path: &Path) -> Result<Vec<Var
     }
     let mut paths = Vec::new();
     for (c, key) in header.iter().enumerate().skip(1) {
-        let cell = |message: String| GridError::Cell {
-            path: grid_path.to_path_buf(),
-            line: 1,
-            column: c + 1,
-            key: key.clone(),
-            message,
+        let cell = |message: String| {
+            GridError::Cell(CellError {
+                path: grid_path.to_path_buf(),
+                line: 1,
+                column: c + 1,
+                key: key.clone(),
+                message,
+            })
         };
         if header[1..c].contains(key) {
             return Err(cell("the key appears twice".into()));
@@ -251,12 +238,14 @@ pub fn read_grid(template: &str, grid: &str, grid_path: &Path) -> Result<Vec<Var
     for record in reader.records() {
         let record = record.map_err(|e| whole(e.to_string()))?;
         let line = record.position().map_or(0, |p| p.line());
-        let cell = |column: usize, message: String| GridError::Cell {
-            path: grid_path.to_path_buf(),
-            line,
-            column: column + 1,
-            key: header.get(column).cloned().unwrap_or_default(),
-            message,
+        let cell = |column: usize, message: String| {
+            GridError::Cell(CellError {
+                path: grid_path.to_path_buf(),
+                line,
+                column: column + 1,
+                key: header.get(column).cloned().unwrap_or_default(),
+                message,
+            })
         };
         if record.iter().all(|f| f.trim().is_empty()) {
             continue;

@@ -33,6 +33,7 @@
 //! The modules below are the layers; the compiled form of a mechanism (its operations and
 //! resolved dyads) stays inside `linkage`.
 
+pub mod audit;
 pub mod batch;
 pub mod bench;
 pub mod calculus;

@@ -40,6 +40,12 @@ enum ReportFormat {
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum AuditFormat {
+    Md,
+    Json,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum LangArg {
     Ru,
     Uk,
@@ -140,6 +146,26 @@ enum Command {
         #[command(flatten)]
         how: RenderArgs,
     },
+    /// Check a student's table against the scene: each value (CSV: quantity, position,
+    /// value, unit[, method]) right within the drafting error of a hand construction, a
+    /// slip (scale, unit, sign, digits, another position or quantity, a known wrong formula)
+    /// or wrong, with its exact value; the marked-up table on standard output, and with
+    /// --pdf the sheet to return to the student.
+    Audit {
+        /// The scene the table belongs to (constructions/*.toml).
+        scene: PathBuf,
+        /// The student's table (CSV).
+        table: PathBuf,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "md")]
+        format: AuditFormat,
+        /// Write the marked-up table as a PDF sheet to this file.
+        #[arg(long)]
+        pdf: Option<PathBuf>,
+        /// Language of the verdicts and the sheet.
+        #[arg(long, value_enum, default_value = "ru")]
+        lang: LangArg,
+    },
     /// List the scenes in constructions/ with their plates.
     List {
         /// Folder to list.
@@ -191,6 +217,13 @@ fn main() -> ExitCode {
             variants,
             how,
         } => batch(&template, &variants, &how),
+        Command::Audit {
+            scene,
+            table,
+            format,
+            pdf,
+            lang,
+        } => audit(&scene, &table, format, pdf.as_deref(), lang),
         Command::List { dir } => list(&dir),
         Command::Bench {
             json,
@@ -352,6 +385,41 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
             outcomes.len()
         )));
     }
+    Ok(())
+}
+
+/// `tmm audit`: the table read whole against the scene's report (refused with its line,
+/// column and key, nothing written), each value classified, the marked-up table printed and
+/// the sheet written when asked for.
+fn audit(
+    path: &Path,
+    table: &Path,
+    format: AuditFormat,
+    pdf: Option<&Path>,
+    lang: LangArg,
+) -> Result<(), Failure> {
+    let (lang, _) = options(lang, 0.0)?;
+    let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
+    if !has_study(&s) {
+        return Err(nothing_to_construct(&s));
+    }
+    let auditor = tmm::audit::Auditor::new(&s).map_err(|e| Failure::construction(e.to_string()))?;
+    let entries = tmm::audit::read_table(&read_text(table)?, table, &auditor)
+        .map_err(|e| Failure::input(e.to_string()))?;
+    let audited = auditor.audit(&entries);
+    if let Some(pdf) = pdf {
+        let plates = tmm::audit::to_sheet(&s, &audited, lang)
+            .map_err(|e| Failure::construction(format!("the audit's sheet: {e}")))?;
+        let svgs: Vec<String> = plates.iter().map(tmm::plate::to_svg).collect();
+        let bytes = tmm::plate::to_pdf(&svgs)
+            .map_err(|e| Failure::construction(format!("the audit's sheet: {e}")))?;
+        tmm::plate::write_atomic(pdf, &bytes)
+            .map_err(|e| Failure::construction(format!("{}: cannot write: {e}", pdf.display())))?;
+    }
+    emit(&match format {
+        AuditFormat::Md => tmm::audit::to_markdown(&s.stem, &audited, lang),
+        AuditFormat::Json => tmm::audit::to_json(&audited),
+    });
     Ok(())
 }
 

@@ -20,6 +20,7 @@ mod outputs;
 mod planetary;
 mod raw;
 mod structure;
+pub mod user_table;
 
 pub use crate::kinematics::KinematicsSpec;
 pub use error::{Problem, SceneError};

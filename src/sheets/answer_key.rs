@@ -3,10 +3,10 @@
 //! smallest landscape sheet from A3 up that holds it (further sheets when the class is long).
 
 use super::captions::{unit_in, Text};
-use super::layout::{lay_out_smallest, quantity, Block};
+use super::layout::{lay_out, quantity, Block};
 use super::BuildError;
 use crate::check::Row;
-use crate::plate::{Plate, SheetSize, TableBlock};
+use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_sig, Lang, Quantity, Scale};
 use crate::scene::Scene;
 
@@ -14,6 +14,8 @@ use crate::scene::Scene;
 const SIZES: [SheetSize; 3] = [SheetSize::A3, SheetSize::A2, SheetSize::A1];
 /// Text height of the table, mm.
 const TABLE_MM: f64 = 3.0;
+/// The room the layout keeps around a block, mm (a generous bound).
+const ROOM_MM: f64 = 10.0;
 
 /// One variant's line of the key: its name and its values in the order of the columns, or
 /// `None` when it was not drawn.
@@ -65,26 +67,75 @@ pub fn answer_key(
             cells
         })
         .collect();
-    let blocks = vec![Block::Table(TableBlock {
-        at: crate::geom::DVec2::ZERO,
-        title: format!(
-            "{} ({})",
-            Text::AnswerKey.get(lang),
-            Text::ExactValues.get(lang)
-        ),
-        columns: header,
+    let title = format!(
+        "{} ({})",
+        Text::AnswerKey.get(lang),
+        Text::ExactValues.get(lang)
+    );
+    let name = Text::AnswerKey.get(lang);
+    table_sheet(
+        template,
+        (&title, name),
+        header,
         rows,
-        size_mm: TABLE_MM,
-    })];
+        (&SIZES, "answer-key"),
+        lang,
+    )
+}
+
+/// One table (`columns`: heading and width, mm; `rows`: the cells) as sheets with their
+/// frame and title block — `titles` the table's title and the title block's name — on the
+/// smallest landscape format of `sizes` whose field is as wide as the table, the rows
+/// continued on further sheets of it (each part headed again), the sheets named `stem`.
+///
+/// # Errors
+/// [`BuildError`] when the table is wider than the largest size.
+pub fn table_sheet(
+    scene: &Scene,
+    titles: (&str, &str),
+    columns: Vec<(String, f64)>,
+    rows: Vec<Vec<String>>,
+    (sizes, stem): (&[SheetSize], &str),
+    lang: Lang,
+) -> Result<Vec<Plate>, BuildError> {
+    let width: f64 = columns.iter().map(|c| c.1).sum();
+    let sheet_of = |size| Sheet {
+        size,
+        landscape: true,
+    };
+    let sheet = sizes
+        .iter()
+        .map(|&s| sheet_of(s))
+        .find(|s| s.field().width() >= width + 2.0 * ROOM_MM)
+        .or_else(|| sizes.last().map(|&s| sheet_of(s)))
+        .unwrap_or_default();
+    // The rows one part of the table holds: the field's height less the title, the heading
+    // and the room the layout keeps.
+    let row_mm = 2.0 * TABLE_MM;
+    let per_part = ((sheet.field().height() - 2.0 * ROOM_MM - 1.6 * TABLE_MM) / row_mm - 1.0)
+        .floor()
+        .max(1.0) as usize;
+    let continued = Text::Continued.get(lang);
+    let blocks: Vec<Block> = rows
+        .chunks(per_part)
+        .enumerate()
+        .map(|(k, part)| {
+            Block::Table(TableBlock {
+                at: crate::geom::DVec2::ZERO,
+                title: if k == 0 {
+                    titles.0.to_string()
+                } else {
+                    format!("{} {continued}", titles.0)
+                },
+                columns: columns.clone(),
+                rows: part.to_vec(),
+                size_mm: TABLE_MM,
+            })
+        })
+        .collect();
     // The title block's scale cell: a table is drawn at no scale.
     let one = Scale::new(0.001, Quantity::Length).ok_or(BuildError::NoScale(0.001))?;
-    let mut title = super::title_block(template, Text::AnswerKey.get(lang), one, lang);
+    let mut title = super::title_block(scene, titles.1, one, lang);
     title.scale = "—".into();
-    Ok(super::numbered(lay_out_smallest(
-        &SIZES,
-        blocks,
-        "answer-key",
-        &title,
-        lang,
-    )?))
+    Ok(super::numbered(lay_out(sheet, blocks, stem, &title, lang)?))
 }

@@ -6,7 +6,7 @@ mod balancing;
 mod cam;
 pub(crate) mod captions;
 pub(crate) mod data;
-pub use answer_key::{answer_key, KeyLine};
+pub use answer_key::{answer_key, table_sheet, KeyLine};
 pub use task::task_sheet;
 mod dynamics;
 mod forces;

@@ -5,6 +5,7 @@
 mod common;
 mod support;
 
+mod audit;
 mod balancing;
 mod batch;
 mod bench;

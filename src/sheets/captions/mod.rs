@@ -3,11 +3,13 @@
 //! each machine sheet ([`machines`]), and the textbook's symbols with their subscripts
 //! ([`symbols`]). A sheet writes no word of its own.
 
+mod audit;
 mod linkage;
 mod machines;
 mod note;
 pub(crate) mod symbols;
 
+pub(crate) use audit::AuditText;
 pub(crate) use linkage::Text;
 pub(crate) use machines::GearText;
 pub(super) use machines::{CamText, DynamicsText, FrictionText, RotorText};
@@ -76,6 +78,12 @@ pub(crate) fn unit_in(unit: &str, lang: Lang) -> String {
     let flush = |word: &mut String, out: &mut String| {
         out.push_str(match word.as_str() {
             "mm" => "мм",
+            "cm" => "см",
+            "kgf" => "кгс",
+            "kN" => "кН",
+            "kW" => "кВт",
+            "kJ" => "кДж",
+            "g" => "г",
             "m" => "м",
             "s" => "с",
             "N" => "Н",

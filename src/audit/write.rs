@@ -1,0 +1,294 @@
+//! The audited table as Markdown, JSON and a sheet to return to the student.
+
+use super::{Audited, Edit, Explanation, Formula, Slip, Verdict};
+use crate::plate::text::plain;
+use crate::plate::{Plate, SheetSize};
+use crate::scale::{format_sig, Lang};
+use crate::scene::Scene;
+use crate::sheets::captions::{quantity, AuditText as T, Text};
+use crate::sheets::BuildError;
+use serde::Serialize;
+use std::fmt::Write as _;
+
+/// Significant digits of the exact values written.
+const DIGITS: usize = 4;
+
+/// The headings of the marked-up table in `lang`.
+fn headings(lang: Lang) -> [&'static str; 8] {
+    [
+        T::Line.get(lang),
+        Text::Quantity.get(lang),
+        Text::PosShort.get(lang),
+        Text::Method.get(lang),
+        T::Written.get(lang),
+        T::Exact.get(lang),
+        T::Error.get(lang),
+        T::Verdict.get(lang),
+    ]
+}
+
+/// A number's text as `lang` writes it: its decimal sign, a true minus.
+fn number(text: &str, lang: Lang) -> String {
+    let t = text.replace('-', "−");
+    match lang {
+        Lang::En => t,
+        _ => t.replace('.', ","),
+    }
+}
+
+/// A slip in words (label markup) in `lang`.
+fn slip(s: &Slip, lang: Lang) -> String {
+    match s {
+        Slip::Sign => T::Sign.get(lang).into(),
+        Slip::Coarse => T::Coarse.get(lang).into(),
+        Slip::Truncated => T::Truncated.get(lang).into(),
+        Slip::Factor(k) => format!("{} ×{}", T::Scale.get(lang), format_sig(*k, 3, lang)),
+        Slip::OtherScale { used, own } => {
+            format!("{used} {} {own}", T::InsteadOf.get(lang))
+        }
+        Slip::Unit { meant } => format!(
+            "{} {}",
+            T::UnitSlip.get(lang),
+            crate::sheets::captions::unit_in(meant, lang)
+        ),
+        Slip::Digits { edit, meant } => {
+            let word = match edit {
+                Edit::Transposed => T::Transposed,
+                Edit::Dropped => T::Dropped,
+                Edit::Added => T::Added,
+            };
+            format!("{} ({})", word.get(lang), number(meant, lang))
+        }
+        Slip::Position(p) => format!("{} {p}", T::OtherPosition.get(lang)),
+        Slip::Quantity(k) => format!(
+            "{} {}",
+            T::OtherQuantity.get(lang),
+            quantity(k.symbol, &k.subject, lang)
+        ),
+        Slip::Formula(f) => match f {
+            Formula::BaseRadiusCosAlphaW => T::BaseRadius,
+            Formula::ContactRatioCosAlphaW => T::ContactRatio,
+            Formula::MissingOmega1 => T::MissingOmega,
+        }
+        .get(lang)
+        .into(),
+    }
+}
+
+/// An explanation in words: its slips joined by `+`.
+fn explanation(e: &Explanation, lang: Lang) -> String {
+    e.iter()
+        .map(|s| slip(s, lang))
+        .collect::<Vec<_>>()
+        .join(" + ")
+}
+
+/// The verdict in words (label markup).
+pub(super) fn verdict(v: &Verdict, lang: Lang) -> String {
+    match v {
+        Verdict::Right => T::Right.get(lang).into(),
+        Verdict::Slips(all) => all
+            .iter()
+            .map(|e| explanation(e, lang))
+            .collect::<Vec<_>>()
+            .join(&format!(" {} ", T::Or.get(lang))),
+        Verdict::Wrong { nearest } => match nearest {
+            None => T::Wrong.get(lang).into(),
+            Some((e, r)) => format!(
+                "{}; {}: {} ({} %)",
+                T::Wrong.get(lang),
+                T::Nearest.get(lang),
+                explanation(e, lang),
+                number(&format!("{:+.1}", r * 100.0), lang)
+            ),
+        },
+    }
+}
+
+/// A slip as a short key for JSON: `sign`, `factor:2`, `unit:mm`, `dropped:7.18`.
+fn key(s: &Slip) -> String {
+    match s {
+        Slip::Sign => "sign".into(),
+        Slip::Coarse => "coarse".into(),
+        Slip::Truncated => "truncated".into(),
+        Slip::Factor(k) => format!("factor:{k}"),
+        Slip::OtherScale { used, own } => format!("scale:{used}/{own}"),
+        Slip::Unit { meant } => format!("unit:{meant}"),
+        Slip::Digits { edit, meant } => format!(
+            "{}:{meant}",
+            match edit {
+                Edit::Transposed => "transposed",
+                Edit::Dropped => "dropped",
+                Edit::Added => "added",
+            }
+        ),
+        Slip::Position(p) => format!("position:{p}"),
+        Slip::Quantity(k) => format!("quantity:{}", k.quantity()),
+        Slip::Formula(f) => format!(
+            "formula:{}",
+            match f {
+                Formula::BaseRadiusCosAlphaW => "base-radius-cos-alpha-w",
+                Formula::ContactRatioCosAlphaW => "contact-ratio-cos-alpha-w",
+                Formula::MissingOmega1 => "missing-omega-1",
+            }
+        ),
+    }
+}
+
+/// The slips of an explanation as keys.
+pub fn keys(e: &Explanation) -> Vec<String> {
+    e.iter().map(key).collect()
+}
+
+fn pct(r: Option<f64>) -> String {
+    r.map_or("—".into(), |r| format!("{:+.2}", r * 100.0))
+}
+
+/// The audited table as Markdown: a row per value, its exact value in the unit written, its
+/// error and its verdict.
+pub fn to_markdown(scene: &str, audited: &[Audited], lang: Lang) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# {} — {scene}\n", plain(T::Title.get(lang)));
+    let _ = writeln!(s, "| {} |", headings(lang).join(" | "));
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
+    for a in audited {
+        let e = &a.entry;
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {} | {} {} | {} | {} | {} |",
+            e.line,
+            e.quantity,
+            e.position.as_deref().unwrap_or("—"),
+            e.method.as_deref().unwrap_or(a.row.method.key()),
+            e.written.text,
+            e.unit.name,
+            format_sig(a.exact, DIGITS, Lang::En),
+            pct(a.rel_error),
+            plain(&verdict(&a.verdict, lang))
+        );
+    }
+    s
+}
+
+#[derive(Serialize)]
+struct JsonEntry<'a> {
+    line: u64,
+    quantity: &'a str,
+    position: Option<&'a str>,
+    method: &'a str,
+    written: &'a str,
+    unit: &'a str,
+    exact: f64,
+    tolerance: f64,
+    rel_error: Option<f64>,
+    verdict: &'static str,
+    explanations: Vec<Vec<String>>,
+    nearest: Option<JsonNearest>,
+    text: String,
+}
+
+#[derive(Serialize)]
+struct JsonNearest {
+    slips: Vec<String>,
+    rel_error: f64,
+}
+
+/// The audited table as JSON: per value, its exact value and tolerance in the unit written,
+/// its verdict (`right`, `slip`, `wrong`), each explanation as a list of slip keys (`sign`,
+/// `factor:2`, `unit:mm`, `dropped:7.18`, `position:4`, `formula:missing-omega-1`, …) and
+/// the verdict in English words.
+pub fn to_json(audited: &[Audited]) -> String {
+    let rows: Vec<JsonEntry> = audited
+        .iter()
+        .map(|a| {
+            let e = &a.entry;
+            let (verdict, explanations, nearest) = match &a.verdict {
+                Verdict::Right => ("right", Vec::new(), None),
+                Verdict::Slips(all) => ("slip", all.iter().map(keys).collect(), None),
+                Verdict::Wrong { nearest } => (
+                    "wrong",
+                    Vec::new(),
+                    nearest.as_ref().map(|(x, r)| JsonNearest {
+                        slips: keys(x),
+                        rel_error: *r,
+                    }),
+                ),
+            };
+            JsonEntry {
+                line: e.line,
+                quantity: &e.quantity,
+                position: e.position.as_deref(),
+                method: e.method.as_deref().unwrap_or(a.row.method.key()),
+                written: &e.written.text,
+                unit: e.unit.name,
+                exact: a.exact,
+                tolerance: a.tolerance,
+                rel_error: a.rel_error.filter(|r| r.is_finite()),
+                verdict,
+                explanations,
+                nearest,
+                text: plain(&self::verdict(&a.verdict, Lang::En)),
+            }
+        })
+        .collect();
+    crate::report::json(&rows)
+}
+
+/// The audited table as a sheet to return to the student (the smallest from A4 that holds
+/// it): each value with its exact value, its error and its verdict, in the textbook's
+/// notation.
+///
+/// # Errors
+/// [`BuildError`] when the table does not fit even an A2.
+pub fn to_sheet(scene: &Scene, audited: &[Audited], lang: Lang) -> Result<Vec<Plate>, BuildError> {
+    const SIZES: [SheetSize; 3] = [SheetSize::A4, SheetSize::A3, SheetSize::A2];
+    let rows: Vec<Vec<String>> = audited
+        .iter()
+        .map(|a| {
+            let e = &a.entry;
+            let unit = match e.unit.name {
+                "1" => String::new(),
+                name => crate::sheets::captions::unit_in(name, lang),
+            };
+            let method = if e.analytic() {
+                T::Analytic.get(lang).to_string()
+            } else {
+                a.row.method.name(lang).to_string()
+            };
+            vec![
+                e.line.to_string(),
+                quantity(a.row.key.symbol, &a.row.key.subject, lang),
+                e.position.clone().unwrap_or_else(|| "—".into()),
+                method,
+                format!("{} {unit}", number(&e.written.text, lang))
+                    .trim_end()
+                    .to_string(),
+                format!("{} {unit}", format_sig(a.exact, DIGITS, lang))
+                    .trim_end()
+                    .to_string(),
+                number(&pct(a.rel_error), lang),
+                verdict(&a.verdict, lang),
+            ]
+        })
+        .collect();
+    let width = |rows: &[Vec<String>], c: usize, head: &str| {
+        rows.iter()
+            .map(|r| r[c].as_str())
+            .chain([head])
+            .map(|t| crate::plate::text::approx_width(t, 3.0) + 4.0)
+            .fold(12.0, f64::max)
+    };
+    let columns = headings(lang)
+        .iter()
+        .enumerate()
+        .map(|(c, h)| (h.to_string(), width(&rows, c, h)))
+        .collect();
+    crate::sheets::table_sheet(
+        scene,
+        (T::Title.get(lang), T::Audit.get(lang)),
+        columns,
+        rows,
+        (&SIZES, "audit"),
+        lang,
+    )
+}
