@@ -342,6 +342,15 @@ fn pdf_of(plates: &[crate::plate::Plate]) -> Result<Vec<u8>, crate::plate::PdfEr
     crate::plate::to_pdf(&svgs)
 }
 
+/// The progress bar of a batch of `n` variants, drawn to `target` (standard error on a
+/// terminal, hidden otherwise): the variants done and the last one's name.
+pub fn progress_bar(n: usize, target: indicatif::ProgressDrawTarget) -> indicatif::ProgressBar {
+    indicatif::ProgressBar::with_draw_target(Some(n as u64), target).with_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    )
+}
+
 /// What became of one variant.
 #[derive(Debug)]
 pub struct Outcome {

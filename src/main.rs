@@ -337,14 +337,14 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
         .map_err(|e| Failure::input(e.to_string()))?;
     let columns = tmm::batch::answer_columns(&scene, options.drafting)
         .map_err(|e| Failure::input(e.to_string()))?;
-    let bar = if std::io::stderr().is_terminal() {
-        indicatif::ProgressBar::new(variants.len() as u64).with_style(
-            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        )
-    } else {
-        indicatif::ProgressBar::hidden()
-    };
+    let bar = tmm::batch::progress_bar(
+        variants.len(),
+        if std::io::stderr().is_terminal() {
+            indicatif::ProgressDrawTarget::stderr()
+        } else {
+            indicatif::ProgressDrawTarget::hidden()
+        },
+    );
     let outcomes = tmm::batch::run(&variants, template, out, &options, &columns, &|name| {
         bar.set_message(name.to_string());
         bar.inc(1);

@@ -16,10 +16,9 @@
 //! tables show ([`Slip`]): a scale slip (×2, ×½, ×10; a μ of another plan), a unit slip (mm
 //! for m, rpm for rad/s, kgf for N), a sign, digits swapped, dropped or added, a value that
 //! belongs to a neighbouring position (a shifted row) or another quantity (swapped columns,
-//! a value copied from the next column), a
-//! known wrong formula (r_b or ε_α with cos α_w; a derivative by φ taken for one by t, ω₁
-//! missing), digits cut instead of rounded, or too few digits to tell. A value that fits
-//! two explanations names both. A value that fits none is wrong, with its exact value, its
+//! a value copied from the next column), a known wrong formula (r_b or ε_α with cos α_w; a
+//! derivative by φ taken for one by t, ω₁ missing), digits cut instead of rounded, or a
+//! single significant digit. A value that fits two explanations names both. A value that fits none is wrong, with its exact value, its
 //! relative error and, when one comes within 20 %, the nearest of the scale, unit and
 //! formula slips.
 
@@ -311,11 +310,8 @@ impl Auditor {
     fn known(&self, quantity: &str) -> Vec<String> {
         let mut out: Vec<String> = Vec::new();
         for t in self.targets.iter().filter(|t| t.row.quantity() == quantity) {
-            let name = format!(
-                "{}{}",
-                t.row.position().map_or(String::new(), |p| format!("@{p}")),
-                format_args!(":{}", t.row.method.key())
-            );
+            let at = t.row.position().map_or(String::new(), |p| format!("@{p}"));
+            let name = format!("{at}:{}", t.row.method.key());
             if !out.contains(&name) {
                 out.push(name);
             }

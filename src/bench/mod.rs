@@ -25,10 +25,13 @@
 //!   integrated exactly, with the route's time and the exact solve's.
 //! * **Rack generation** — the drawn tooth's deviation from the exact envelope (in modules)
 //!   and the time of one tooth for N = 12 … 720 rack positions.
+//! * **Batch** — `tmm batch` over the shipped shaper grid (30 variants; 2 in a quick bench),
+//!   every sheet as PNG, and its progress bar's updates timed on their own.
 //!
 //! Times are the best of several repetitions (the machine may be busy); they are reported,
 //! never asserted.
 
+mod batch;
 mod cam;
 mod chords;
 mod flywheel;
@@ -369,6 +372,18 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
         note: format!(
             "the whole project in memory: every sheet ({sheets}) as SVG and PNG at {PNG_DPI} dpi, the PDF set and the explanatory note ({} kB) — `tmm render --format svg,png,pdf` and `tmm note`",
             note_bytes / 1000
+        ),
+    });
+    let b = batch::batch_times(opts, reps)?;
+    throughput.push(Throughput {
+        name: format!("batch {} × {} (png)", shaper.scene.stem, b.variants),
+        per_second: 1.0 / b.seconds,
+        note: format!(
+            "`tmm batch` over constructions/variants/shaper.csv: every variant's sheets as PNG at {PNG_DPI} dpi and its task sheet, on all cores ({:.2} s per variant); its progress bar's {} updates drawn: {:.0} µs ({:.4} % of the batch)",
+            b.seconds / b.variants as f64,
+            b.variants,
+            b.bar_seconds * 1e6,
+            100.0 * b.bar_seconds / b.seconds
         ),
     });
     Ok(Bench {

@@ -58,6 +58,29 @@ pub fn mechanism(m: &Mechanism, lang: Lang) -> Vec<DataRow> {
             rows.push(len(&a.name, &b.name, (a.at - b.at).length()));
         }
     }
+    // Each slide line's distance from the point it is given through (the guide's height).
+    for g in &m.groups {
+        let guides: Vec<(&str, f64)> = match &g.dyad {
+            Dyad::Rrp { guide, .. } | Dyad::Rpp { guide, .. } => {
+                vec![(guide.through.as_str(), guide.offset)]
+            }
+            Dyad::Prp {
+                guide_i, guide_j, ..
+            } => vec![
+                (guide_i.through.as_str(), guide_i.offset),
+                (guide_j.through.as_str(), guide_j.offset),
+            ],
+            Dyad::Rpr { c, offset, .. } => vec![(c.as_str(), *offset)],
+            Dyad::Rrr { .. } => Vec::new(),
+        };
+        for (through, offset) in guides.into_iter().filter(|g| g.1 != 0.0) {
+            rows.push((
+                format!("h_{{{}}}", plain(through)),
+                mm(offset.abs(), lang),
+                "mm".to_string(),
+            ));
+        }
+    }
     rows.push(("ω_{1}".into(), fmt(m.crank.omega, 5, lang), "rad/s".into()));
     rows
 }

@@ -99,7 +99,8 @@ fn scheme_block(
         Text::StructuralScheme.get(lang),
         s_scale.caption(lang)
     );
-    Ok(Block::view(scheme(s_scale), caption, None))
+    // The caption under the grounds of the fixed pivots, not over their hatching.
+    Ok(Block::view(scheme(s_scale), caption, None).clear_of_symbols())
 }
 
 fn kind_name(k: DyadKind, lang: Lang) -> String {
