@@ -1,9 +1,10 @@
 //! A number as the student wrote it: its digits, how finely it is written, and the numbers
 //! a slip of the pen would have made of another (digits swapped, dropped, added).
 
-/// The most significant digits a table's value carries: a dropped digit is not put back
-/// into a number that has them already.
-const MOST_DIGITS: usize = 4;
+/// The significant digits a table's value carries: a dropped digit is put back only into a
+/// number written with fewer (into one of three, any of ten digits at any of four places
+/// makes too many numbers for one of them to mean anything).
+const MOST_DIGITS: usize = 3;
 
 /// A number as written: the text (sign, digits, a decimal point, an exponent) and its value.
 #[derive(Debug, Clone, PartialEq)]
@@ -143,7 +144,7 @@ impl Written {
 }
 
 /// A slip of the pen on one number.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Edit {
     /// Two neighbouring digits swapped.
     Transposed,
@@ -189,6 +190,7 @@ mod tests {
         // The leading digit is kept; a four-digit number has no digit dropped.
         assert!(!meant("3.8", Edit::Dropped, "73.8"));
         assert!(!meant("4.485", Edit::Dropped, "4.5485"));
+        assert!(!meant("4.28", Edit::Dropped, "47.28"));
         assert!(meant("0.0625", Edit::Transposed, "0.0265"));
         assert!(!meant("0.0625", Edit::Transposed, "0.6025"));
         assert!(!meant("4.44", Edit::Transposed, "4.44"));

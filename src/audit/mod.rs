@@ -128,16 +128,19 @@ pub enum Slip {
         used: &'static str,
         /// The plan's own (`μ_v`).
         own: &'static str,
+        /// The factor it puts on the value, μ used / μ own.
+        factor: f64,
     },
     /// The number is in another unit than the one written beside it.
     Unit {
         /// The unit the number is in.
         meant: &'static str,
     },
-    /// A slip of the pen: the number meant.
+    /// A slip of the pen: the number meant (the nearest of those meant), and every slip that
+    /// makes the number written of one (they all mean the exact value).
     Digits {
-        /// Which slip.
-        edit: Edit,
+        /// The slips, each kind once.
+        edits: Vec<Edit>,
         /// The number meant, as written.
         meant: String,
     },
@@ -441,15 +444,18 @@ impl Auditor {
             }
             return Found::Right;
         }
-        let mut found: Vec<Explanation> = Vec::new();
+        // Each fitting slip with the factor it puts on the value (one cause under two names
+        // — a μ of another plan ten times this one's, or ×10 — is named once, by the
+        // specific slip).
+        let mut found: Vec<(Explanation, f64)> = Vec::new();
         let mut near: Option<(Explanation, f64)> = None;
         // A slip that moves the value by less than the two tolerances tells nothing.
-        let mut consider = |slip: Slip, x: f64, tol_x: f64, found: &mut Vec<Explanation>| {
+        let mut consider = |slip: Slip, x: f64, tol_x: f64, found: &mut Vec<(Explanation, f64)>| {
             if (x - e).abs() <= tol + tol_x {
                 return;
             }
             if fits(x, tol_x) {
-                found.push(vec![slip]);
+                found.push((vec![slip], x / e));
             } else if x != 0.0 {
                 let r = (w_si - x) / x.abs();
                 if r.abs() < NEAREST && near.as_ref().is_none_or(|(_, n)| r.abs() < n.abs()) {
@@ -458,7 +464,7 @@ impl Auditor {
             }
         };
         if truncated && (w_si - e).abs() < 2.0 * half + tol {
-            found.push(vec![Slip::Truncated]);
+            found.push((vec![Slip::Truncated], 1.0));
         }
         for k in FACTORS {
             consider(Slip::Factor(k), k * e, k * tol, &mut found);
@@ -467,7 +473,12 @@ impl Auditor {
             if let Some(&(_, own_mu)) = self.scales.iter().find(|s| s.0 == own) {
                 for &(used, mu) in self.scales.iter().filter(|s| s.0 != own) {
                     let k = mu / own_mu;
-                    consider(Slip::OtherScale { used, own }, k * e, k * tol, &mut found);
+                    let slip = Slip::OtherScale {
+                        used,
+                        own,
+                        factor: k,
+                    };
+                    consider(slip, k * e, k * tol, &mut found);
                 }
             }
         }
@@ -481,19 +492,52 @@ impl Auditor {
         for (f, x) in self.formulas(&t.row) {
             consider(Slip::Formula(f), x, tol * (x / e).abs(), &mut found);
         }
-        for (edit, meant) in w.edits() {
-            // The number meant is right to the analytic method's tolerance and the finer of
-            // the two numbers' digits (a digit put back proves nothing when any number
-            // within a reading would do); and the slip moved the value by more than twice
-            // what a reading and the digits allow.
-            let m_si = meant.value * u.factor;
-            let strict = tol.min(ANALYTIC * e.abs()) + half.min(meant.half_unit() * u.factor);
-            if (m_si - e).abs() <= strict && (m_si - w_si).abs() > 2.0 * (tol + half) {
-                found.push(vec![Slip::Digits {
-                    edit,
-                    meant: meant.text.clone(),
-                }]);
+        let factors: Vec<f64> = found
+            .iter()
+            .filter(|(x, _)| !matches!(x.as_slice(), [Slip::Factor(_)]))
+            .map(|f| f.1)
+            .collect();
+        // Of the factors that fit, those about as near as the nearest: a factor that misses
+        // by over three times as much (and the digits) is not named beside it.
+        let miss = |k: f64| (w_si - k * e).abs();
+        let nearest = found
+            .iter()
+            .map(|f| miss(f.1))
+            .fold(f64::INFINITY, f64::min);
+        let mut found: Vec<Explanation> = found
+            .into_iter()
+            .filter(|(x, k)| match x.as_slice() {
+                [Slip::Factor(k)] => !factors.iter().any(|f| (f / k - 1.0).abs() < 1e-9),
+                _ => true,
+            } && miss(*k) <= 3.0 * nearest + half)
+            .map(|f| f.0)
+            .collect();
+        // The slips of the pen that make the number written of one meaning the exact value:
+        // right to the analytic method's tolerance and the finer of the two numbers' digits
+        // (a digit put back proves nothing when any number within a reading would do), and
+        // moved by more than twice what a reading and the digits allow.
+        let mut edits: Vec<Edit> = Vec::new();
+        let mut meant: Option<(f64, String)> = None;
+        for (edit, m) in w.edits() {
+            // A number meant that is the written one times a power of ten is a scale slip.
+            let decade = (m.value / w.value).log10();
+            if (decade - decade.round()).abs() < 1e-9 {
+                continue;
             }
+            let m_si = m.value * u.factor;
+            let strict = tol.min(ANALYTIC * e.abs()) + half.min(m.half_unit() * u.factor);
+            if (m_si - e).abs() <= strict && (m_si - w_si).abs() > 2.0 * (tol + half) {
+                if !edits.contains(&edit) {
+                    edits.push(edit);
+                }
+                if meant.as_ref().is_none_or(|(d, _)| (m_si - e).abs() < *d) {
+                    meant = Some(((m_si - e).abs(), m.text.clone()));
+                }
+            }
+        }
+        if let Some((_, meant)) = meant {
+            edits.sort_by_key(|e| *e as u8);
+            found.push(vec![Slip::Digits { edits, meant }]);
         }
         Found::Slips(found, near)
     }
@@ -552,8 +596,10 @@ impl Auditor {
                 && units::find(t.row.unit(), s.unit.name).is_some()
                 && s.written.value * s.unit.factor == w_si
         }) {
-            let key = self.target(&s.quantity, s.position.as_deref(), s.method.as_deref());
-            if let Some(slip) = key.map(|k| Slip::Quantity(k.row.key.clone())) {
+            // Copied from that column, not into it: nearer that quantity than this one.
+            let from = self.target(&s.quantity, s.position.as_deref(), s.method.as_deref());
+            let from = from.filter(|o| (w_si - o.row.analytic).abs() < (w_si - e).abs());
+            if let Some(slip) = from.map(|k| Slip::Quantity(k.row.key.clone())) {
                 if !found.iter().any(|f| f == std::slice::from_ref(&slip)) {
                     found.push(vec![slip]);
                 }

@@ -43,21 +43,27 @@ fn slip(s: &Slip, lang: Lang) -> String {
         Slip::Coarse => T::Coarse.get(lang).into(),
         Slip::Truncated => T::Truncated.get(lang).into(),
         Slip::Factor(k) => format!("{} ×{}", T::Scale.get(lang), format_sig(*k, 3, lang)),
-        Slip::OtherScale { used, own } => {
-            format!("{used} {} {own}", T::InsteadOf.get(lang))
-        }
+        Slip::OtherScale { used, own, factor } => format!(
+            "{used} {} {own} (×{})",
+            T::InsteadOf.get(lang),
+            format_sig(*factor, 3, lang)
+        ),
         Slip::Unit { meant } => format!(
             "{} {}",
             T::UnitSlip.get(lang),
             crate::sheets::captions::unit_in(meant, lang)
         ),
-        Slip::Digits { edit, meant } => {
-            let word = match edit {
-                Edit::Transposed => T::Transposed,
-                Edit::Dropped => T::Dropped,
-                Edit::Added => T::Added,
-            };
-            format!("{} ({})", word.get(lang), number(meant, lang))
+        Slip::Digits { edits, meant } => {
+            let words: Vec<&str> = edits
+                .iter()
+                .map(|e| match e {
+                    Edit::Transposed => T::Transposed,
+                    Edit::Dropped => T::Dropped,
+                    Edit::Added => T::Added,
+                })
+                .map(|w| w.get(lang))
+                .collect();
+            format!("{} ({})", words.join(" / "), number(meant, lang))
         }
         Slip::Position(p) => format!("{} {p}", T::OtherPosition.get(lang)),
         Slip::Quantity(k) => format!(
@@ -87,11 +93,15 @@ fn explanation(e: &Explanation, lang: Lang) -> String {
 pub(super) fn verdict(v: &Verdict, lang: Lang) -> String {
     match v {
         Verdict::Right => T::Right.get(lang).into(),
-        Verdict::Slips(all) => all
-            .iter()
-            .map(|e| explanation(e, lang))
-            .collect::<Vec<_>>()
-            .join(&format!(" {} ", T::Or.get(lang))),
+        Verdict::Slips(all) => {
+            let each: Vec<String> = all.iter().map(|e| explanation(e, lang)).collect();
+            let text = each.join(&format!(" {} ", T::Or.get(lang)));
+            if each.len() > 1 {
+                format!("{}: {text}", T::Ambiguous.get(lang))
+            } else {
+                text
+            }
+        }
         Verdict::Wrong { nearest } => match nearest {
             None => T::Wrong.get(lang).into(),
             Some((e, r)) => format!(
@@ -112,16 +122,19 @@ fn key(s: &Slip) -> String {
         Slip::Coarse => "coarse".into(),
         Slip::Truncated => "truncated".into(),
         Slip::Factor(k) => format!("factor:{k}"),
-        Slip::OtherScale { used, own } => format!("scale:{used}/{own}"),
+        Slip::OtherScale { used, own, .. } => format!("scale:{used}/{own}"),
         Slip::Unit { meant } => format!("unit:{meant}"),
-        Slip::Digits { edit, meant } => format!(
-            "{}:{meant}",
-            match edit {
-                Edit::Transposed => "transposed",
-                Edit::Dropped => "dropped",
-                Edit::Added => "added",
-            }
-        ),
+        Slip::Digits { edits, meant } => {
+            let kinds: Vec<&str> = edits
+                .iter()
+                .map(|e| match e {
+                    Edit::Transposed => "transposed",
+                    Edit::Dropped => "dropped",
+                    Edit::Added => "added",
+                })
+                .collect();
+            format!("{}:{meant}", kinds.join("+"))
+        }
         Slip::Position(p) => format!("position:{p}"),
         Slip::Quantity(k) => format!("quantity:{}", k.quantity()),
         Slip::Formula(f) => format!(

@@ -94,7 +94,7 @@ fn seed_000s_errata_are_found_and_classified() {
         &[
             Slip::Sign,
             Slip::Digits {
-                edit: Edit::Dropped,
+                edits: vec![Edit::Dropped],
                 meant: "7.18".into()
             }
         ]
@@ -216,9 +216,11 @@ enum Made {
     Position,
     Quantity,
     Formula,
+    OtherScale,
 }
 
-const MADE: [Made; 8] = [
+const MADE: [Made; 9] = [
+    Made::OtherScale,
     Made::Formula,
     Made::Factor,
     Made::Unit,
@@ -259,6 +261,9 @@ fn random_slips_on_random_variants_are_found_as_made() {
         let report = tmm::study::Session::new(&scene, tmm::construct::Drafting::EXACT)
             .report()
             .expect("its report");
+        let mu = tmm::study::Session::new(&scene, tmm::construct::Drafting::EXACT)
+            .kin_scales()
+            .expect("its scales");
         let rows: Vec<&tmm::check::Row> = report
             .rows
             .iter()
@@ -297,8 +302,31 @@ fn random_slips_on_random_variants_are_found_as_made() {
         let mut lines = vec![header];
         let mut kinds = Vec::new();
         while kinds.len() < 40 {
-            let r = rows[rng.below(rows.len())];
             let kind = MADE[rng.below(MADE.len())];
+            // A wrong formula is made where the course has one: base radii, ε_α, a
+            // diagram's velocity or acceleration.
+            let pool: Vec<&tmm::check::Row> = if kind == Made::Formula {
+                rows.iter()
+                    .copied()
+                    .filter(|o| {
+                        use tmm::check::Symbol::*;
+                        let q = o.quantity();
+                        q.starts_with("r_b")
+                            || q == "eps_alpha"
+                            || (o.method.is_diagram()
+                                && matches!(
+                                    o.key.symbol,
+                                    Velocity | Acceleration | AngularAcceleration
+                                ))
+                    })
+                    .collect()
+            } else {
+                rows.clone()
+            };
+            if pool.is_empty() {
+                continue;
+            }
+            let r = pool[rng.below(pool.len())];
             let (q, p, m, e) = (
                 r.quantity(),
                 r.position().unwrap_or_default(),
@@ -325,6 +353,32 @@ fn random_slips_on_random_variants_are_found_as_made() {
                     _ => None,
                 },
                 Made::Sign => Some((three(-e), unit, Slip::Sign)),
+                Made::OtherScale => {
+                    // A plan's millimetres converted with the other plan's μ.
+                    use tmm::check::{Method, Symbol};
+                    let (v, a) = (mu.v.value(), mu.a.value());
+                    match (r.key.symbol, r.method) {
+                        (Symbol::Velocity, Method::Plan) => Some((
+                            three(e * a / v),
+                            unit,
+                            Slip::OtherScale {
+                                used: "μ_a",
+                                own: "μ_v",
+                                factor: a / v,
+                            },
+                        )),
+                        (Symbol::Acceleration, Method::Plan) => Some((
+                            three(e * v / a),
+                            unit,
+                            Slip::OtherScale {
+                                used: "μ_v",
+                                own: "μ_a",
+                                factor: v / a,
+                            },
+                        )),
+                        _ => None,
+                    }
+                }
                 Made::Formula => {
                     // The course's wrong formulas, each as the student evaluates it.
                     let value = |q: &str| {
@@ -381,13 +435,21 @@ fn random_slips_on_random_variants_are_found_as_made() {
                         c.remove(places[1 + rng.below(places.len() - 1)]);
                         (c.last() != Some(&'.')).then_some(Edit::Dropped)
                     };
+                    // A digit dropped or swapped that only moves the decimal point is a scale
+                    // slip, made as such above.
+                    let text: String = c.iter().collect();
+                    let decade = (text.parse::<f64>().unwrap_or(0.0)
+                        / meant.trim_start_matches('-').parse::<f64>().unwrap_or(1.0))
+                    .abs()
+                    .log10();
+                    let edit = edit.filter(|_| (decade - decade.round()).abs() > 1e-9);
                     edit.map(|edit| {
                         let text: String = c.iter().collect();
                         (
                             format!("{sign}{text}"),
                             unit,
                             Slip::Digits {
-                                edit,
+                                edits: vec![edit],
                                 meant: meant.clone(),
                             },
                         )
@@ -437,8 +499,8 @@ fn random_slips_on_random_variants_are_found_as_made() {
                 {
                     continue;
                 }
-                // A slip that moves the value by less than twice what its construction and
-                // its digits allow cannot be told from a right value: not one to find.
+                // A slip that moves the value by less than what its construction and its
+                // digits allow cannot be told from a right value: not one to find.
                 let tol = exact
                     .iter()
                     .find(|a| {
@@ -448,7 +510,10 @@ fn random_slips_on_random_variants_are_found_as_made() {
                     })
                     .map_or(0.0, |a| a.tolerance);
                 let w = tmm::audit::Written::parse(&text, false).expect("a number");
-                if (w.value - e).abs() <= 2.0 * (tol + w.half_unit()) {
+                // (A slip to k·e is told from e when the two tolerances, e's and k·e's, do
+                // not overlap.)
+                let k = (w.value / e).abs();
+                if (w.value - e).abs() <= (1.0 + k) * tol + 2.0 * w.half_unit() {
                     continue;
                 }
                 lines.push(format!("{q},{p},{m},{text},{unit}"));
@@ -461,12 +526,21 @@ fn random_slips_on_random_variants_are_found_as_made() {
             made += 1;
             *per_kind.entry(format!("{kind:?}")).or_insert(0usize) += 1;
             let hit = match (&a.verdict, slip) {
-                (Verdict::Slips(all), Slip::Digits { edit, .. }) => all
-                    .iter()
-                    .any(|e| matches!(e.as_slice(), [Slip::Digits { edit: x, .. }] if x == edit)),
+                (Verdict::Slips(all), Slip::Digits { edits, .. }) => all.iter().any(|e| {
+                    matches!(e.as_slice(), [Slip::Digits { edits: x, .. }] if x.contains(&edits[0]))
+                }),
                 (Verdict::Slips(all), Slip::Quantity(k)) => all
                     .iter()
                     .any(|e| matches!(e.as_slice(), [Slip::Quantity(x)] if x.same_quantity(k))),
+                // A scale slip named by the plan whose μ makes it (μ_a ten times μ_v).
+                (Verdict::Slips(all), Slip::Factor(k)) => all.iter().any(|e| match e.as_slice() {
+                    [Slip::Factor(x)] => x == k,
+                    [Slip::OtherScale { factor, .. }] => (factor / k - 1.0).abs() < 1e-9,
+                    _ => false,
+                }),
+                (Verdict::Slips(all), Slip::OtherScale { used, own, .. }) => all.iter().any(|e| {
+                    matches!(e.as_slice(), [Slip::OtherScale { used: u, own: o, .. }] if u == used && o == own)
+                }),
                 (Verdict::Slips(all), s) => all.iter().any(|e| e.as_slice() == [s.clone()]),
                 _ => false,
             };
@@ -507,6 +581,11 @@ fn random_slips_on_random_variants_are_found_as_made() {
         "{found} of {made} found; missed:\n{}",
         missed.join("\n")
     );
+    // Most are named alone; the others beside a slip that gives the same number (a quantity
+    // equal to another at that position, ω₁ ≈ 10 making "ω₁ missing" a ×0.1), named as
+    // ambiguous. Measured: 94.8 % alone, 4.6 % ambiguous, 0.6 % not found.
+    let alone = (found - ambiguous) as f64 / made as f64;
+    assert!(alone >= 0.9, "{} of {made} named alone", found - ambiguous);
 }
 
 #[test]
