@@ -263,12 +263,15 @@ fn options(lang: LangArg, drafting: f64) -> Result<(Lang, Drafting), Failure> {
             "--drafting {drafting}: expected a resolution ≥ 0 mm"
         ))
     })?;
-    let lang = match lang {
+    Ok((language(lang), drafting))
+}
+
+fn language(lang: LangArg) -> Lang {
+    match lang {
         LangArg::Ru => Lang::Ru,
         LangArg::Uk => Lang::Uk,
         LangArg::En => Lang::En,
-    };
-    Ok((lang, drafting))
+    }
 }
 
 /// A failure to render: bad input (status 2) or a construction (status 1), with the
@@ -398,7 +401,7 @@ fn audit(
     pdf: Option<&Path>,
     lang: LangArg,
 ) -> Result<(), Failure> {
-    let (lang, _) = options(lang, 0.0)?;
+    let lang = language(lang);
     let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
     if !has_study(&s) {
         return Err(nothing_to_construct(&s));

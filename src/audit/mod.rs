@@ -332,7 +332,8 @@ impl Auditor {
         }
     }
 
-    /// Every value of `entries` classified.
+    /// Every value of `entries` classified (one the report lacks is left out: [`read_table`]
+    /// refuses it).
     pub fn audit(&self, entries: &[Entry]) -> Vec<Audited> {
         entries
             .iter()
@@ -351,10 +352,15 @@ impl Auditor {
         let e = t.row.analytic;
         let u = entry.unit;
         let w_si = entry.written.value * u.factor;
-        let rel_error =
-            (e != 0.0 && !crate::check::is_zero(e, t.zero)).then(|| (w_si - e) / e.abs());
-        let verdict = self.verdict(entry, table, t, tol);
-        Some(self.done(entry, t, tol, rel_error, verdict))
+        let zero = crate::check::is_zero(e, t.zero);
+        Some(Audited {
+            entry: entry.clone(),
+            row: t.row.clone(),
+            exact: if zero { 0.0 } else { e / u.factor },
+            rel_error: (e != 0.0 && !zero).then(|| (w_si - e) / e.abs()),
+            tolerance: tol / u.factor,
+            verdict: self.verdict(entry, table, t, tol),
+        })
     }
 
     /// The verdict on `entry` against `t`: right, else the slips that fit (of scale, unit,
@@ -393,28 +399,6 @@ impl Auditor {
             Verdict::Wrong { nearest }
         } else {
             Verdict::Slips(found)
-        }
-    }
-
-    fn done(
-        &self,
-        entry: &Entry,
-        t: &Target,
-        tol: f64,
-        rel_error: Option<f64>,
-        verdict: Verdict,
-    ) -> Audited {
-        Audited {
-            entry: entry.clone(),
-            row: t.row.clone(),
-            exact: if crate::check::is_zero(t.row.analytic, t.zero) {
-                0.0
-            } else {
-                t.row.analytic / entry.unit.factor
-            },
-            rel_error,
-            tolerance: tol / entry.unit.factor,
-            verdict,
         }
     }
 

@@ -247,12 +247,12 @@ pub fn to_json(audited: &[Audited]) -> String {
     crate::report::json(&rows)
 }
 
-/// The audited table as a sheet to return to the student (the smallest from A4 that holds
-/// it): each value with its exact value, its error and its verdict, in the textbook's
-/// notation.
+/// The audited table as sheets to return to the student (the smallest format from A4 as wide
+/// as the table, as many sheets as it needs): each value with its method, its exact value,
+/// its error and its verdict, in the textbook's notation.
 ///
 /// # Errors
-/// [`BuildError`] when the table does not fit even an A2.
+/// [`BuildError`] when the table is wider than an A2.
 pub fn to_sheet(scene: &Scene, audited: &[Audited], lang: Lang) -> Result<Vec<Plate>, BuildError> {
     const SIZES: [SheetSize; 3] = [SheetSize::A4, SheetSize::A3, SheetSize::A2];
     let rows: Vec<Vec<String>> = audited

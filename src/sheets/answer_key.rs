@@ -1,6 +1,7 @@
 //! The answer key of `tmm batch` as a sheet to print: one table over a class's variants of
 //! the exact values the template names (`[answer_key]`), in the textbook's notation, on the
-//! smallest landscape sheet from A3 up that holds it (further sheets when the class is long).
+//! smallest landscape sheet from A3 up as wide as it (further sheets when the class is long);
+//! and [`table_sheet`], a table on sheets, which `tmm audit`'s marked-up table shares.
 
 use super::captions::{unit_in, Text};
 use super::layout::{lay_out, quantity, Block};
