@@ -220,10 +220,15 @@ impl Auditor {
     /// # Errors
     /// [`AuditError::Scene`] when the report cannot be made.
     pub fn new(scene: &Scene) -> Result<Self, AuditError> {
-        let report = |d: Drafting| Session::new(scene, d).report();
-        let biased = |mm: f64| Drafting::EXACT.biased(mm).map(report);
+        // The exact session gives the report and the plans' scales.
+        let exact = Session::new(scene, Drafting::EXACT);
+        let biased = |mm: f64| {
+            Drafting::EXACT
+                .biased(mm)
+                .map(|d| Session::new(scene, d).report())
+        };
         let (base, (long, short)) = rayon::join(
-            || report(Drafting::EXACT),
+            || exact.report(),
             || rayon::join(|| biased(READING_MM), || biased(-READING_MM)),
         );
         let base = base.map_err(|source| AuditError::Scene {
@@ -268,7 +273,7 @@ impl Auditor {
             .map(|r| r.analytic.abs());
         let mut scales = Vec::new();
         if scene.mechanism.is_some() {
-            if let Ok(k) = Session::new(scene, Drafting::EXACT).kin_scales() {
+            if let Ok(k) = exact.kin_scales() {
                 scales.push(("μ_l", k.l.value()));
                 scales.push(("μ_v", k.v.value()));
                 scales.push(("μ_a", k.a.value()));

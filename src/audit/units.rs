@@ -73,26 +73,14 @@ pub fn normalise(written: &str) -> String {
         .replace('³', "^3")
         .replace('°', "deg")
         .replace('−', "-");
-    for (from, to) in [
-        ("об/мин", "rpm"),
-        ("об/хв", "rpm"),
-        ("кгс", "kgf"),
-        ("кг", "kg"),
-        ("кН", "kN"),
-        ("кВт", "kW"),
-        ("кДж", "kJ"),
-        ("мм", "mm"),
-        ("см", "cm"),
-        ("рад", "rad"),
-        ("град", "deg"),
-        ("Дж", "J"),
-        ("Вт", "W"),
-        ("Н", "N"),
-        ("м", "m"),
-        ("с", "s"),
-        ("г", "g"),
-    ] {
+    for (from, to) in [("об/мин", "rpm"), ("об/хв", "rpm"), ("град", "deg")] {
         s = s.replace(from, to);
+    }
+    // The sheets' Cyrillic names, the longest first (кгс before кг, мм before м).
+    let mut words = crate::sheets::captions::UNIT_WORDS;
+    words.sort_by_key(|(_, cyrillic)| std::cmp::Reverse(cyrillic.chars().count()));
+    for (latin, cyrillic) in words {
+        s = s.replace(cyrillic, latin);
     }
     let mut out = String::new();
     let chars: Vec<char> = s.chars().filter(|c| !c.is_whitespace()).collect();

@@ -29,11 +29,8 @@ fn headings(lang: Lang) -> [&'static str; 8] {
 
 /// A number's text as `lang` writes it: its decimal sign, a true minus.
 fn number(text: &str, lang: Lang) -> String {
-    let t = text.replace('-', "−");
-    match lang {
-        Lang::En => t,
-        _ => t.replace('.', ","),
-    }
+    text.replace('-', "−")
+        .replace('.', &lang.decimal().to_string())
 }
 
 /// A slip in words (label markup) in `lang`.

@@ -58,6 +58,25 @@ macro_rules! catalogue {
 }
 use catalogue;
 
+/// The units' names in Latin and in Cyrillic letters (Russian and Ukrainian write them
+/// alike): the sheets write the second, `tmm audit` reads either.
+pub(crate) const UNIT_WORDS: [(&str, &str); 14] = [
+    ("mm", "мм"),
+    ("cm", "см"),
+    ("m", "м"),
+    ("s", "с"),
+    ("N", "Н"),
+    ("kN", "кН"),
+    ("kgf", "кгс"),
+    ("kg", "кг"),
+    ("g", "г"),
+    ("rad", "рад"),
+    ("J", "Дж"),
+    ("kJ", "кДж"),
+    ("W", "Вт"),
+    ("kW", "кВт"),
+];
+
 /// A unit written in SI (`m/s^2`, `N*m`, `kg*m^2`, `rad/s`, `mm`) in `lang`: `·` for the
 /// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`); an
 /// angle in degrees (`deg`) as `°`; a speed in revolutions per minute (`rpm`) as `об/мин`,
@@ -76,23 +95,8 @@ pub(crate) fn unit_in(unit: &str, lang: Lang) -> String {
     let mut out = String::with_capacity(si.len());
     let mut word = String::new();
     let flush = |word: &mut String, out: &mut String| {
-        out.push_str(match word.as_str() {
-            "mm" => "мм",
-            "cm" => "см",
-            "kgf" => "кгс",
-            "kN" => "кН",
-            "kW" => "кВт",
-            "kJ" => "кДж",
-            "g" => "г",
-            "m" => "м",
-            "s" => "с",
-            "N" => "Н",
-            "kg" => "кг",
-            "rad" => "рад",
-            "J" => "Дж",
-            "W" => "Вт",
-            w => w,
-        });
+        let name = UNIT_WORDS.iter().find(|(latin, _)| latin == word);
+        out.push_str(name.map_or(word.as_str(), |(_, cyrillic)| cyrillic));
         word.clear();
     };
     for c in si.chars() {
