@@ -167,10 +167,12 @@ impl Reps {
     }
 }
 
-/// The best (least) wall time of `best_of` runs of `f`, seconds.
+/// The best (least) wall time of `best_of` runs of `f`, seconds. Each run starts as a fresh
+/// process does, with no blocking contour remembered ([`crate::gears::blocking::Study::of`]).
 fn best_time<T, E>(best_of: usize, mut f: impl FnMut() -> Result<T, E>) -> Result<f64, E> {
     let mut best = f64::INFINITY;
     for _ in 0..best_of.max(1) {
+        crate::gears::blocking::Study::forget();
         let t = Instant::now();
         black_box(f()?);
         best = best.min(t.elapsed().as_secs_f64());

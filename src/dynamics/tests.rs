@@ -395,6 +395,33 @@ fn the_bracketed_root_converges_on_smooth_steep_and_flat_functions() {
     assert_eq!(bracketed_root(|x| x + 1.0, 0.0, 1.0), 0.0);
 }
 
+#[test]
+fn illinois_keeps_the_ends_in_order_stops_at_the_width_asked_and_reports_a_domain_left() {
+    use crate::geom::illinois;
+    let f = |x: f64| Some(0.5 - x * x);
+    let narrow = |a: f64, b: f64| (a - b).abs() <= 1e-13;
+    // The ends come back in the order given, with their values, at most 1e-13 apart.
+    let [(a, fa), (b, fb)] = illinois(f, (0.0, 0.5), (1.0, -0.5), narrow).unwrap();
+    assert!(
+        a <= b && b - a <= 1e-13 && fa >= 0.0 && fb <= 0.0,
+        "{a} {b}"
+    );
+    assert!((a - 0.5f64.sqrt()).abs() <= 1e-13);
+    let [(b2, _), (a2, _)] = illinois(f, (1.0, -0.5), (0.0, 0.5), narrow).unwrap();
+    assert!(b2 >= a2 && (b2 - 0.5f64.sqrt()).abs() <= 1e-13);
+    // Few steps where plain halving takes 43.
+    let steps = std::cell::Cell::new(0);
+    let counted = |x: f64| {
+        steps.set(steps.get() + 1);
+        f(x)
+    };
+    illinois(counted, (0.0, 0.5), (1.0, -0.5), narrow).unwrap();
+    assert!(steps.get() <= 12, "{} steps", steps.get());
+    // A point without a value: no bracket.
+    let holed = |x: f64| (x < 0.6).then_some(0.5 - x * x);
+    assert!(illinois(holed, (0.0, 0.5), (1.0, -0.5), narrow).is_none());
+}
+
 /// With the links at rest (`motion` without accelerations): the reducer's M_пр at position
 /// `k` equals −sign(ω₁)·M_у of the links' equilibrium under the same loads of the `kinds`
 /// (the linear solve). Returns the reduced values.

@@ -23,23 +23,30 @@
 //!
 //! A reference point inside the admissible region (the grid point of the plane's window
 //! with the largest least margin) is the centre of a fan of rays; on each ray every index
-//! less its limit is sampled outward and its first change of sign bisected to 10⁻¹³ (x per
-//! module, so 10⁻¹³ m), far below the 10⁻⁹ asked. A curve is the ordered run of these first
+//! less its limit is sampled outward and its first change of sign bracketed to 10⁻¹³ (x per
+//! module, so 10⁻¹³ m; regula falsi, [`crate::geom::illinois`]), far below the 10⁻⁹ asked. A curve is the ordered run of these first
 //! crossings; a ray that never crosses (within the window, before the formulas leave their
 //! domain) adds nothing, and a run breaks where it does not or where consecutive crossings
 //! jump (the first crossing has moved to another branch). Everything is bounded: a fixed
-//! fan, a fixed number of samples per ray, at most 200 bisections.
+//! fan, a fixed number of samples per ray, at most 200 steps of the bracket.
 
-use super::involute::{inv, inv_inverse};
+use super::involute::{inv, inv_inverse, inv_with_tan};
 use super::{BasicRack, Cutting, GearError, Pair, PairSpec};
-use crate::geom::{golden_max, DVec2};
+use crate::geom::{golden_max, illinois, DVec2};
 use std::f64::consts::PI;
+use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 
+/// The studies [`Study::of`] keeps.
+const KEPT: usize = 8;
+/// A study being traced or traced, shared by every variant that asks for it.
+type StudyCell = Arc<OnceLock<Result<Study, BlockingError>>>;
+/// The studies kept: the pair, the criterion asked, the study.
+static STUDIES: Mutex<Vec<(PairSpec, Option<Criterion>, StudyCell)>> = Mutex::new(Vec::new());
 /// The rays of the fan.
 const RAYS: usize = 720;
 /// Samples along a ray (to the window's edge).
 const SAMPLES: usize = 400;
-/// The bisection's end: the bracket's length along a ray (x per module).
+/// The crossing's end: the bracket's length along a ray (x per module).
 const BISECT_TO: f64 = 1e-13;
 /// The quality isolines of the tip thickness, × m.
 pub const TIP_LIMITS: [f64; 3] = [0.0, 0.25, 0.4];
@@ -170,6 +177,8 @@ pub struct Blocking {
     pub hl: f64,
     /// The plane's window: (x₁ min, x₂ min), (x₁ max, x₂ max).
     pub window: (DVec2, DVec2),
+    /// The rack's sin α, cos α, tg α and inv α, for [`Self::indices`].
+    trig: [f64; 4],
 }
 
 /// The traced contour.
@@ -317,11 +326,13 @@ impl Blocking {
                 hi[i] = (lo[i] + 0.5).min(3.0);
             }
         }
+        let a = rack.alpha;
         Ok(Self {
             z,
             rack,
             hl,
             window: (DVec2::new(lo[0], lo[1]), DVec2::new(hi[0], hi[1])),
+            trig: [a.sin(), a.cos(), a.tan(), inv(a)],
         })
     }
 
@@ -336,13 +347,13 @@ impl Blocking {
         if !(x.x.is_finite() && x.y.is_finite()) {
             return None;
         }
-        let BasicRack { alpha, ha, .. } = self.rack;
-        let (sa_, ca, ta) = (alpha.sin(), alpha.cos(), alpha.tan());
+        let ha = self.rack.ha;
+        let [sa_, ca, ta, inv_alpha] = self.trig;
         let xs = [x.x, x.y];
         let zz = self.z.map(f64::from);
         let zs = zz[0] + zz[1];
         let x_sum = xs[0] + xs[1];
-        let alpha_w = inv_inverse(2.0 * x_sum * ta / zs + inv(alpha)).ok()?;
+        let alpha_w = inv_inverse(2.0 * x_sum * ta / zs + inv_alpha).ok()?;
         let y = zs / 2.0 * (ca / alpha_w.cos() - 1.0);
         let dy = x_sum - y;
         let r = zz.map(|z| z / 2.0);
@@ -361,7 +372,7 @@ impl Blocking {
         let sa = [0, 1].map(|i| {
             let aa = (rb[i] / ra[i]).acos();
             let half = (PI / 2.0 + 2.0 * xs[i] * ta) / (2.0 * r[i]);
-            2.0 * ra[i] * (half + inv(alpha) - inv(aa))
+            2.0 * ra[i] * (half + inv_alpha - inv_with_tan(aa, tip[i] / rb[i]))
         });
         // N₁N₂ from the base circles: (r_b1 + r_b2) tg α_w.
         let g = (rb[0] + rb[1]) * alpha_w.tan();
@@ -389,18 +400,29 @@ impl Blocking {
         })
     }
 
+    /// The hard limits as level lines: at a point, the least of their indices less their
+    /// limits is [`Self::margin`].
+    fn hard_levels(&self, hard: Hard) -> [(Kind, f64); 7] {
+        [
+            (Kind::ContactRatio, hard.eps_min),
+            (Kind::Undercut(0), self.x_min(0)),
+            (Kind::Undercut(1), self.x_min(1)),
+            (Kind::Tip(0), hard.sa_min),
+            (Kind::Tip(1), hard.sa_min),
+            (Kind::Interference(0), 0.0),
+            (Kind::Interference(1), 0.0),
+        ]
+    }
+
     /// The least margin of the hard limits at `x` (≥ 0: admissible), in the indices' own
     /// units (x and lengths per module, ε_α).
     pub fn margin(&self, x: DVec2, hard: Hard) -> Option<f64> {
         let ix = self.indices(x)?;
-        let mut m = ix.eps - hard.eps_min;
-        for i in 0..2 {
-            m = m
-                .min(ix.x[i] - self.x_min(i))
-                .min(ix.sa[i] - hard.sa_min)
-                .min(ix.near_end[i] - ix.rho_l[i]);
-        }
-        Some(m)
+        self.hard_levels(hard)
+            .iter()
+            .try_fold(f64::INFINITY, |m, (kind, limit)| {
+                Some(m.min(ix.of(*kind)? - limit))
+            })
     }
 
     /// The distance along the ray from `c` in the direction `d` to the window's edge.
@@ -440,7 +462,7 @@ impl Blocking {
     }
 
     /// The first crossing of `f` = 0 along the ray c + t·d, t ∈ (0, reach], by sampling and
-    /// bisection; `None` when it never changes sign there (or leaves its domain first).
+    /// [`crossing`]; `None` when it never changes sign there (or leaves its domain first).
     fn first_crossing(&self, c: DVec2, d: DVec2, f: &dyn Fn(DVec2) -> Option<f64>) -> Option<f64> {
         let t_max = self.reach(c, d);
         if t_max <= 0.0 {
@@ -452,7 +474,7 @@ impl Blocking {
             let t = t_max * k as f64 / SAMPLES as f64;
             let v = f(c + d * t)?;
             if (v >= 0.0) != (prev.1 >= 0.0) {
-                return bisect(prev.0, t, prev.1 >= 0.0, |t| f(c + d * t));
+                return crossing(|t| f(c + d * t), prev, (t, v));
             }
             prev = (t, v);
         }
@@ -487,8 +509,8 @@ impl Blocking {
                 if let (Some((t0, v0)), Some(v)) = (prev[k], v) {
                     if (v >= 0.0) != (v0 >= 0.0) {
                         let f = |t: f64| value(&self.indices(c + d * t)?, k);
-                        out[k] = bisect(t0, t, v0 >= 0.0, f);
-                        // A level whose bisection left the domain is not crossed here.
+                        out[k] = crossing(f, (t0, v0), (t, v));
+                        // A level whose bracket left the domain is not crossed here.
                         if out[k].is_none() {
                             prev[k] = None;
                             continue;
@@ -516,14 +538,34 @@ impl Blocking {
         let (lo, hi) = self.window;
         let jump = (hi - lo).length() * 0.05;
         let levels = levels(&self.rack, self.z);
+        // The hard limits, each a level line (those `levels` lacks appended): the margin of
+        // `hard` is their least index less its limit, so the admissible region's boundary
+        // along a ray is their first crossing nearest the centre.
+        let mut all = levels.clone();
+        let hard_levels: Vec<usize> = self
+            .hard_levels(hard)
+            .into_iter()
+            .map(|l| {
+                all.iter().position(|m| *m == l).unwrap_or_else(|| {
+                    all.push(l);
+                    all.len() - 1
+                })
+            })
+            .collect();
         // Along each ray the indices once per sample; each level's first change of sign
-        // bisected on its own index.
+        // bracketed on its own index.
         let mut hits: Vec<Vec<Option<DVec2>>> = vec![Vec::with_capacity(RAYS); levels.len()];
+        let mut reach = Vec::with_capacity(RAYS);
         for d in &dirs {
-            let found = self.first_crossings(centre, *d, &levels);
-            for (h, t) in hits.iter_mut().zip(found) {
+            let found = self.first_crossings(centre, *d, &all);
+            for (h, t) in hits.iter_mut().zip(&found) {
                 h.push(t.map(|t| centre + *d * t));
             }
+            let first = hard_levels
+                .iter()
+                .filter_map(|k| found[*k])
+                .reduce(f64::min);
+            reach.push(first.unwrap_or_else(|| self.reach(centre, *d)));
         }
         let mut curves = Vec::new();
         for ((kind, limit), hits) in levels.iter().zip(&hits) {
@@ -537,14 +579,9 @@ impl Blocking {
         }
         let admissible = self.margin(centre, hard).is_some_and(|m| m > 0.0);
         let boundary = if admissible {
-            let f = |p: DVec2| self.margin(p, hard);
             dirs.iter()
-                .map(|d| {
-                    let t = self
-                        .first_crossing(centre, *d, &f)
-                        .unwrap_or_else(|| self.reach(centre, *d));
-                    centre + *d * t
-                })
+                .zip(reach)
+                .map(|(d, t)| centre + *d * t)
                 .collect()
         } else {
             Vec::new()
@@ -637,37 +674,41 @@ impl Blocking {
     /// s·t_b(θ)·(cos θ, sin θ), s ∈ [0, 1], t_b the boundary's distance; a 360 × 21 grid of
     /// (θ, s), then golden sections in θ and in s, alternately, on shrinking brackets.
     fn maximise(&self, c: DVec2, hard: Hard, obj: impl Fn(&Indices) -> f64) -> DVec2 {
-        let at = |a: f64, s: f64| {
-            let t = self.boundary_at(c, a, hard) * s;
-            let p = c + DVec2::new(a.cos(), a.sin()) * t;
-            (p, self.indices(p).map_or(f64::NEG_INFINITY, |ix| obj(&ix)))
-        };
+        let value = |p: DVec2| self.indices(p).map_or(f64::NEG_INFINITY, |ix| obj(&ix));
+        // The ray at the angle a and the boundary's distance along it.
+        let ray = |a: f64| (DVec2::new(a.cos(), a.sin()), self.boundary_at(c, a, hard));
         let (na, ns) = (360, 20);
         let da = 2.0 * PI / f64::from(na);
         let mut best = (f64::NEG_INFINITY, 0.0, 0.0);
         for i in 0..na {
             let a = da * f64::from(i);
-            let tb = self.boundary_at(c, a, hard);
-            let d = DVec2::new(a.cos(), a.sin());
+            let (d, tb) = ray(a);
             for j in 0..=ns {
                 let s = f64::from(j) / f64::from(ns);
-                if let Some(ix) = self.indices(c + d * (tb * s)) {
-                    let v = obj(&ix);
-                    if v > best.0 {
-                        best = (v, a, s);
-                    }
+                let v = value(c + d * (tb * s));
+                if v > best.0 {
+                    best = (v, a, s);
                 }
             }
         }
         let (mut a, mut s) = (best.1, best.2);
         let (mut wa, mut ws) = (da, 1.0 / f64::from(ns));
         for _ in 0..6 {
-            a = golden_max(a - wa, a + wa, |a| at(a, s).1).1;
-            s = golden_max((s - ws).max(0.0), (s + ws).min(1.0), |s| at(a, s).1).1;
+            a = golden_max(a - wa, a + wa, |a| {
+                let (d, tb) = ray(a);
+                value(c + d * (tb * s))
+            })
+            .1;
+            let (d, tb) = ray(a);
+            s = golden_max((s - ws).max(0.0), (s + ws).min(1.0), |s| {
+                value(c + d * (tb * s))
+            })
+            .1;
             wa *= 0.25;
             ws *= 0.25;
         }
-        at(a, s).0
+        let (d, tb) = ray(a);
+        c + d * (tb * s)
     }
 
     /// The equal-sliding point of the line x₁ + x₂ = `x_sum` (see [`Criterion::EqualSliding`]).
@@ -707,7 +748,7 @@ impl Blocking {
         let d = |x1: f64| self.indices(on(x1))?.of(Kind::EqualSliding);
         match (d(from), d(to)) {
             (Some(u), Some(v)) if (u >= 0.0) != (v >= 0.0) => {
-                let x1 = bisect(from, to, u >= 0.0, d).unwrap_or(from);
+                let x1 = crossing(d, (from, u), (to, v)).unwrap_or(from);
                 Ok(on(x1))
             }
             (u, v) => {
@@ -719,16 +760,16 @@ impl Blocking {
     }
 }
 
-/// Bisect `f` on [a, b] where f(a) ≥ 0 is `a_nonneg` and f(b) is of the other sign, to
-/// [`BISECT_TO`] or 200 halvings; `None` when f leaves its domain inside.
-fn bisect(a: f64, b: f64, a_nonneg: bool, f: impl Fn(f64) -> Option<f64>) -> Option<f64> {
-    let (lo, hi) = bracket(a, b, a_nonneg, &f)?;
-    // The end whose value is nearer 0.
-    let (fl, fh) = (f(lo)?.abs(), f(hi)?.abs());
-    Some(if fl <= fh { lo } else { hi })
+/// The zero of `f` between `a` and `b` (each a point and its value, of opposite signs),
+/// bracketed to [`BISECT_TO`] by [`illinois`]: the end whose value is nearer 0; `None` when
+/// `f` leaves its domain inside.
+fn crossing(f: impl Fn(f64) -> Option<f64>, a: (f64, f64), b: (f64, f64)) -> Option<f64> {
+    let [(lo, fl), (hi, fh)] = illinois(f, a, b, |u, v| (u - v).abs() <= BISECT_TO)?;
+    Some(if fl.abs() <= fh.abs() { lo } else { hi })
 }
 
-/// The bracket (a-side end, b-side end) [`bisect`] shrinks.
+/// The bracket (a-side end, b-side end) of a change of `f`'s sign, halved to [`BISECT_TO`]
+/// (f(a) ≥ 0 is `a_nonneg`; f is not evaluated at a or b, where it may have no value).
 fn bracket(a: f64, b: f64, a_nonneg: bool, f: &impl Fn(f64) -> Option<f64>) -> Option<(f64, f64)> {
     let (mut lo, mut hi) = (a, b);
     for _ in 0..200 {
@@ -849,9 +890,40 @@ impl Study {
     /// ε_α, equal sliding on the scene's x_Σ, the greatest x_Σ with s_a ≥ 0.25m — or, of
     /// the kind the scene `chosen` its point by, that criterion as the scene put it.
     ///
+    /// A study is a function of the pair and `chosen` alone, and a class's variants mostly
+    /// share their gears: the last [`KEPT`] studies are kept, so a batch traces each pair
+    /// once (a second variant asking while the first traces waits for it).
+    ///
     /// # Errors
     /// Those of [`Blocking::new`] and [`Blocking::place`].
     pub fn of(spec: &PairSpec, chosen: Option<Criterion>) -> Result<Self, BlockingError> {
+        let cell = {
+            let mut kept = STUDIES.lock().unwrap_or_else(PoisonError::into_inner);
+            match kept.iter().find(|(s, c, _)| s == spec && *c == chosen) {
+                Some((_, _, cell)) => Arc::clone(cell),
+                None => {
+                    let cell = StudyCell::default();
+                    if kept.len() >= KEPT {
+                        kept.remove(0);
+                    }
+                    kept.push((*spec, chosen, Arc::clone(&cell)));
+                    cell
+                }
+            }
+        };
+        cell.get_or_init(|| Self::trace_of(spec, chosen)).clone()
+    }
+
+    /// Forget the studies [`Self::of`] keeps (the bench times each run as a fresh process).
+    pub fn forget() {
+        STUDIES
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clear();
+    }
+
+    /// [`Self::of`], traced.
+    fn trace_of(spec: &PairSpec, chosen: Option<Criterion>) -> Result<Self, BlockingError> {
         let b = Blocking::new(spec.z, spec.rack)?;
         let contour = b.trace(Self::HARD);
         let placed = b.place(DVec2::new(spec.x[0], spec.x[1]), Self::HARD)?;
@@ -941,7 +1013,7 @@ impl Study {
         let b = &self.contour.blocking;
         let n: usize = self.contour.curves.iter().map(|c| c.points.len()).sum();
         let mut out = vec![format!(
-            "blocking contour z₁ = {}, z₂ = {}: {} curves, {n} points traced by bisection along {RAYS} rays to 1e-13 of m; at {} sampled points the twins (Pair::new, Cutting) give the limits to {:.1e}; undercut limit x_min = h_l* − z sin²α/2 with h_l* = {} (the flank's end): x_min1 = {}, x_min2 = {}",
+            "blocking contour z₁ = {}, z₂ = {}: {} curves, {n} points traced by regula falsi along {RAYS} rays to 1e-13 of m; at {} sampled points the twins (Pair::new, Cutting) give the limits to {:.1e}; undercut limit x_min = h_l* − z sin²α/2 with h_l* = {} (the flank's end): x_min1 = {}, x_min2 = {}",
             b.z[0],
             b.z[1],
             self.contour.curves.len(),

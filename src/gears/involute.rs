@@ -9,8 +9,25 @@ use std::f64::consts::FRAC_PI_2;
 
 /// inv α = tg α − α (radians).
 pub fn inv(alpha: f64) -> f64 {
-    if alpha.abs() < 0.05 {
-        // tg α − α cancels for small α: its series, exact to f64 below 0.05 rad.
+    inv_small(alpha).unwrap_or_else(|| alpha.tan() - alpha)
+}
+
+/// inv α and tg α, the tangent computed once.
+fn inv_and_tan(alpha: f64) -> (f64, f64) {
+    let t = alpha.tan();
+    (inv_with_tan(alpha, t), t)
+}
+
+/// inv α when tg α is known (`tan`; e.g. a roll over its base radius): tg α − α, or the
+/// series where that cancels.
+pub fn inv_with_tan(alpha: f64, tan: f64) -> f64 {
+    inv_small(alpha).unwrap_or(tan - alpha)
+}
+
+/// inv α by its series where tg α − α cancels (|α| < 0.05 rad, where the series is exact to
+/// f64); `None` above.
+fn inv_small(alpha: f64) -> Option<f64> {
+    (alpha.abs() < 0.05).then(|| {
         let a2 = alpha * alpha;
         let c = [
             1.0 / 3.0,
@@ -21,9 +38,8 @@ pub fn inv(alpha: f64) -> f64 {
             21844.0 / 6_081_075.0,
         ];
         let s = c.iter().rev().fold(0.0, |acc, k| acc * a2 + k);
-        return alpha * a2 * s;
-    }
-    alpha.tan() - alpha
+        alpha * a2 * s
+    })
 }
 
 /// The largest angle the inverse returns: inv is finite on [0, π/2), and beyond this
@@ -47,10 +63,18 @@ pub fn inv_inverse(v: f64) -> Result<f64, GearError> {
         return Ok(0.0);
     }
     let (mut lo, mut hi) = (0.0_f64, MAX_ANGLE);
-    // inv α ≈ α³/3 for small α: a start inside the bracket.
-    let mut a = (3.0 * v).cbrt().clamp(lo, hi);
+    // inv α = α³/3 + 2α⁵/15 + …, so with q = (3 inv α)^⅓, α = q − 2q³/15 + O(q⁵): a start
+    // inside the bracket (the series' second term where it helps, q < 1, below about 50°).
+    let q = (3.0 * v).cbrt();
+    let mut a = if q < 1.0 {
+        q * (1.0 - 2.0 * q * q / 15.0)
+    } else {
+        q
+    }
+    .clamp(lo, hi);
     for _ in 0..200 {
-        let f = inv(a) - v;
+        let (inv_a, t) = inv_and_tan(a);
+        let f = inv_a - v;
         if f == 0.0 {
             return Ok(a);
         }
@@ -59,7 +83,6 @@ pub fn inv_inverse(v: f64) -> Result<f64, GearError> {
         } else {
             lo = a;
         }
-        let t = a.tan();
         let newton = a - f / (t * t);
         let next = if newton > lo && newton < hi {
             newton

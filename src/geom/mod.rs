@@ -16,5 +16,5 @@ pub use primitives::{
     french_curve, hermite, nearest, polygon_contains, rotate, wrap_pi, Arc, Circle, Line, Ray,
     Segment, Side,
 };
-pub use solve::{bracketed_root, golden_max, solve_linear};
+pub use solve::{bracketed_root, golden_max, illinois, solve_linear};
 pub use tolerance::{InvalidTolerance, Tolerances};

@@ -39,19 +39,48 @@ pub fn solve_linear(mut a: Vec<Vec<f64>>) -> Option<Vec<f64>> {
 }
 
 /// The root of `f` in [lo, hi], where f(lo) and f(hi) differ in sign (else the end nearer
-/// zero): regula falsi with the Illinois step (the end kept twice has its value halved), so
-/// the bracket always holds the root and shrinks superlinearly; stops when the bracket is
-/// 1e-15 of its end wide, on an exact zero, or when a step no longer moves.
-pub fn bracketed_root(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let (mut f_lo, mut f_hi) = (f(lo), f(hi));
+/// zero): [`illinois`] until the bracket is 1e-15 of its end wide, then the end nearer zero.
+pub fn bracketed_root(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
+    let (f_lo, f_hi) = (f(lo), f(hi));
     if f_lo == 0.0 || f_lo.signum() == f_hi.signum() || !(f_lo.is_finite() && f_hi.is_finite()) {
         return if f_lo.abs() <= f_hi.abs() { lo } else { hi };
     }
+    let narrow = |a: f64, b: f64| (a - b).abs() <= 1e-15 * a.abs().max(b.abs());
+    match illinois(|x| Some(f(x)), (lo, f_lo), (hi, f_hi), narrow) {
+        Some([(a, fa), (b, fb)]) => {
+            if fa.abs() <= fb.abs() {
+                a
+            } else {
+                b
+            }
+        }
+        None => lo,
+    }
+}
+
+/// Shrink the bracket `a`, `b` (each a point and its value, the values of opposite signs by
+/// `f64::signum`) about a root of `f`: regula falsi with the Illinois step (the end kept
+/// twice has its value halved), so the bracket always holds the root and shrinks
+/// superlinearly; a secant point outside the bracket falls back to its middle. Stops on an
+/// exact zero (both ends that point), when `narrow(a, b)` holds, when a step no longer moves
+/// or after 200 steps. Returns the ends in the order given, each with its value of `f`;
+/// `None` when `f` has no value at a point tried.
+pub fn illinois(
+    f: impl Fn(f64) -> Option<f64>,
+    a: (f64, f64),
+    b: (f64, f64),
+    narrow: impl Fn(f64, f64) -> bool,
+) -> Option<[(f64, f64); 2]> {
+    let ((mut lo, mut f_lo), (mut hi, mut f_hi)) = (a, b);
+    // The values the secant weighs (an end kept twice has its weight halved).
+    let (mut w_lo, mut w_hi) = (f_lo, f_hi);
     // Which end was kept last (−1 lo, +1 hi).
     let mut kept = 0;
     for _ in 0..200 {
-        let x = hi - f_hi * (hi - lo) / (f_hi - f_lo);
-        // A secant step that lands outside or on an end falls back to bisection.
+        if narrow(lo, hi) {
+            break;
+        }
+        let x = hi - w_hi * (hi - lo) / (w_hi - w_lo);
         let x = if x > lo.min(hi) && x < lo.max(hi) {
             x
         } else {
@@ -60,34 +89,25 @@ pub fn bracketed_root(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
         if x == lo || x == hi {
             break;
         }
-        let fx = f(x);
+        let fx = f(x)?;
         if fx == 0.0 {
-            return x;
+            return Some([(x, fx), (x, fx)]);
         }
         if fx.signum() == f_lo.signum() {
-            lo = x;
-            f_lo = fx;
+            (lo, f_lo, w_lo) = (x, fx, fx);
             if kept == 1 {
-                f_hi /= 2.0;
+                w_hi /= 2.0;
             }
             kept = 1;
         } else {
-            hi = x;
-            f_hi = fx;
+            (hi, f_hi, w_hi) = (x, fx, fx);
             if kept == -1 {
-                f_lo /= 2.0;
+                w_lo /= 2.0;
             }
             kept = -1;
         }
-        if (hi - lo).abs() <= 1e-15 * lo.abs().max(hi.abs()) {
-            break;
-        }
     }
-    if f_lo.abs() <= f_hi.abs() {
-        lo
-    } else {
-        hi
-    }
+    Some([(lo, f_lo), (hi, f_hi)])
 }
 
 /// The largest value of `f` on [lo, hi] by golden-section search, and where: (value, x).
