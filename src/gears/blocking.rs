@@ -33,6 +33,7 @@
 use super::involute::{inv, inv_inverse, inv_with_tan};
 use super::{BasicRack, Cutting, GearError, Pair, PairSpec};
 use crate::geom::{golden_max, illinois, DVec2};
+use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 
@@ -530,7 +531,7 @@ impl Blocking {
         let centre = self.centre(hard);
         let dirs: Vec<DVec2> = (0..RAYS)
             .map(|k| {
-                let a = 2.0 * PI * k as f64 / RAYS as f64;
+                let a = fan_angle(k, RAYS);
                 DVec2::new(a.cos(), a.sin())
             })
             .collect();
@@ -553,11 +554,14 @@ impl Blocking {
             })
             .collect();
         // Along each ray the indices once per sample; each level's first change of sign
-        // bracketed on its own index.
+        // bracketed on its own index. The rays on all cores.
+        let found: Vec<Vec<Option<f64>>> = dirs
+            .par_iter()
+            .map(|d| self.first_crossings(centre, *d, &all))
+            .collect();
         let mut hits: Vec<Vec<Option<DVec2>>> = vec![Vec::with_capacity(RAYS); levels.len()];
         let mut reach = Vec::with_capacity(RAYS);
-        for d in &dirs {
-            let found = self.first_crossings(centre, *d, &all);
+        for (d, found) in dirs.iter().zip(found) {
             for (h, t) in hits.iter_mut().zip(&found) {
                 h.push(t.map(|t| centre + *d * t));
             }
@@ -630,6 +634,17 @@ impl Blocking {
     /// [`BlockingError::Empty`] when no point is admissible, [`BlockingError::LineOutside`]
     /// when the line of [`Criterion::EqualSliding`] misses the region.
     pub fn choose(&self, criterion: Criterion, hard: Hard) -> Result<Choice, BlockingError> {
+        self.choose_on(criterion, hard, None)
+    }
+
+    /// [`Self::choose`], the grid of the admissible boundary taken from `traced` when it is
+    /// this problem's contour of the same hard limits (its fan's every other ray).
+    fn choose_on(
+        &self,
+        criterion: Criterion,
+        hard: Hard,
+        traced: Option<&Contour>,
+    ) -> Result<Choice, BlockingError> {
         let hard = match criterion {
             Criterion::GreatestSumWithTip { sa_min } => Hard { sa_min, ..hard },
             _ => hard,
@@ -651,10 +666,18 @@ impl Blocking {
         // it works whatever the rounding of its own formulas. (The equal-sliding point keeps
         // its line; the ends of the line's stretch are bracketed on the admissible side.)
         let inside = |x: DVec2| centre + (x - centre) * (1.0 - 1e-9);
+        let fan = traced
+            .filter(|t| {
+                t.blocking == *self
+                    && t.hard == hard
+                    && t.centre == centre
+                    && t.boundary.len() == RAYS
+            })
+            .map(|t| t.boundary.as_slice());
         let x = match criterion {
-            Criterion::LargestContactRatio => inside(self.maximise(centre, hard, |ix| ix.eps)),
+            Criterion::LargestContactRatio => inside(self.maximise(centre, hard, fan, |ix| ix.eps)),
             Criterion::GreatestSumWithTip { .. } => {
-                inside(self.maximise(centre, hard, |ix| ix.x[0] + ix.x[1]))
+                inside(self.maximise(centre, hard, fan, |ix| ix.x[0] + ix.x[1]))
             }
             Criterion::EqualSliding { x_sum } => self.equal_sliding(x_sum, hard)?,
         };
@@ -672,17 +695,31 @@ impl Blocking {
 
     /// Maximise `obj` over the admissible region, star-shaped about `c`: the points c +
     /// s·t_b(θ)·(cos θ, sin θ), s ∈ [0, 1], t_b the boundary's distance; a 360 × 21 grid of
-    /// (θ, s), then golden sections in θ and in s, alternately, on shrinking brackets.
-    fn maximise(&self, c: DVec2, hard: Hard, obj: impl Fn(&Indices) -> f64) -> DVec2 {
+    /// (θ, s), then golden sections in θ and in s, alternately, on shrinking brackets. `fan`:
+    /// the boundary already traced from `c` along [`RAYS`] rays, whose every other ray is
+    /// the grid's.
+    fn maximise(
+        &self,
+        c: DVec2,
+        hard: Hard,
+        fan: Option<&[DVec2]>,
+        obj: impl Fn(&Indices) -> f64 + Sync,
+    ) -> DVec2 {
         let value = |p: DVec2| self.indices(p).map_or(f64::NEG_INFINITY, |ix| obj(&ix));
         // The ray at the angle a and the boundary's distance along it.
         let ray = |a: f64| (DVec2::new(a.cos(), a.sin()), self.boundary_at(c, a, hard));
-        let (na, ns) = (360, 20);
-        let da = 2.0 * PI / f64::from(na);
-        let mut best = (f64::NEG_INFINITY, 0.0, 0.0);
-        for i in 0..na {
-            let a = da * f64::from(i);
-            let (d, tb) = ray(a);
+        let (na, ns) = (RAYS / 2, 20);
+        let da = 2.0 * PI / na as f64;
+        // The grid's best (value, angle, s), the angles on all cores; of equal values the
+        // first in the grid's order.
+        let best_on = |i: usize| {
+            let a = fan_angle(i, na);
+            let d = DVec2::new(a.cos(), a.sin());
+            let tb = match fan {
+                Some(b) => (b[2 * i] - c).length(),
+                None => self.boundary_at(c, a, hard),
+            };
+            let mut best = (f64::NEG_INFINITY, a, 0.0);
             for j in 0..=ns {
                 let s = f64::from(j) / f64::from(ns);
                 let v = value(c + d * (tb * s));
@@ -690,7 +727,13 @@ impl Blocking {
                     best = (v, a, s);
                 }
             }
-        }
+            best
+        };
+        let best = (0..na)
+            .into_par_iter()
+            .map(best_on)
+            .reduce_with(|p, q| if q.0 > p.0 { q } else { p })
+            .unwrap_or((f64::NEG_INFINITY, 0.0, 0.0));
         let (mut a, mut s) = (best.1, best.2);
         let (mut wa, mut ws) = (da, 1.0 / f64::from(ns));
         for _ in 0..6 {
@@ -766,6 +809,11 @@ impl Blocking {
 fn crossing(f: impl Fn(f64) -> Option<f64>, a: (f64, f64), b: (f64, f64)) -> Option<f64> {
     let [(lo, fl), (hi, fh)] = illinois(f, a, b, |u, v| (u - v).abs() <= BISECT_TO)?;
     Some(if fl.abs() <= fh.abs() { lo } else { hi })
+}
+
+/// The angle of ray `k` of a fan of `n`: 2πk/n (the same angle for 2k of 2n).
+fn fan_angle(k: usize, n: usize) -> f64 {
+    2.0 * PI * k as f64 / n as f64
 }
 
 /// The bracket (a-side end, b-side end) of a change of `f`'s sign, halved to [`BISECT_TO`]
@@ -939,7 +987,7 @@ impl Study {
             Some(asked) if std::mem::discriminant(&asked) == std::mem::discriminant(&c) => asked,
             _ => c,
         })
-        .map(|c| (c, b.choose(c, Self::HARD)))
+        .map(|c| (c, b.choose_on(c, Self::HARD, Some(&contour))))
         .collect();
         let twin_check = twin_check(&contour, spec.module, 10);
         Ok(Self {
