@@ -50,11 +50,11 @@ use crate::scene::{self, PlateKind, Scene};
 use chords::{chord_rows, Charted, Coord};
 use rates::{
     construction_rate, force_rates, kernel_rate, libm_floor_rate, plate_time, png_time,
-    project_time, PNG_DPI,
+    project_time, scene_time, PNG_DPI,
 };
 use std::f64::consts::TAU;
 use std::hint::black_box;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 use thiserror::Error;
 
@@ -165,6 +165,26 @@ impl Reps {
             }
         }
     }
+}
+
+/// The stems of the scenes (`*.toml`) in `folder`, sorted.
+fn scene_stems(folder: &Path) -> Result<Vec<String>, BenchError> {
+    let unreadable = |e: std::io::Error| BenchError::Plate {
+        scene: folder.display().to_string(),
+        plate: "scenes".into(),
+        detail: e.to_string(),
+    };
+    let mut stems = Vec::new();
+    for entry in std::fs::read_dir(folder).map_err(unreadable)? {
+        let path = entry.map_err(unreadable)?.path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            if let Some(stem) = path.file_stem().and_then(|s| s.to_str()) {
+                stems.push(stem.to_string());
+            }
+        }
+    }
+    stems.sort();
+    Ok(stems)
 }
 
 /// The best (least) wall time of `best_of` runs of `f`, seconds. Each run starts as a fresh
@@ -367,6 +387,24 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
             "every sheet of the scene ({sheets}), SVG → PNG in parallel, as `tmm render` writes them"
         ),
     });
+    // Every scene of the folder (a quick bench: the shaper alone), its whole set of sheets.
+    let stems = if opts.quick {
+        vec![shaper.scene.stem.clone()]
+    } else {
+        scene_stems(&opts.scenes)?
+    };
+    for stem in stems {
+        let scene = scene::load(&opts.scenes.join(format!("{stem}.toml")))?;
+        let (seconds, sheets) = scene_time(&scene, reps)?;
+        throughput.push(Throughput {
+            name: format!("scene {stem} (svg+png)"),
+            per_second: 1.0 / seconds,
+            note: format!(
+                "{:.0} ms: every sheet ({sheets}) of a fresh session as SVG and as PNG at {PNG_DPI} dpi, in memory, on all cores",
+                seconds * 1e3
+            ),
+        });
+    }
     let (project_seconds, note_bytes) = project_time(&shaper, reps)?;
     throughput.push(Throughput {
         name: format!("project {}", shaper.scene.stem),

@@ -6,7 +6,7 @@ use crate::construct::{Context, Drafting, Recorder};
 use crate::linkage::{self, kin_plan, PlanKind, PlanSetup, Pose};
 use crate::render::{self, RenderError};
 use crate::scale::{Lang, Quantity, Scale};
-use crate::scene::PlateKind;
+use crate::scene::{PlateKind, Scene};
 use crate::sheets;
 use crate::study::Session;
 use std::f64::consts::TAU;
@@ -120,17 +120,8 @@ pub(super) const PNG_DPI: u32 = 150;
 /// [`PNG_DPI`], the sheets in parallel — what `tmm render` spends on PNGs — and the number
 /// of sheets.
 pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<(f64, usize), BenchError> {
-    let plates = render::plates(&s.scene, Lang::Ru, Drafting::EXACT).map_err(|e| {
-        let (plate, detail) = match e {
-            RenderError::Build { kind, error, .. } => (kind.stem().into(), error.to_string()),
-            e => ("png".into(), e.to_string()),
-        };
-        BenchError::Plate {
-            scene: s.scene.stem.clone(),
-            plate,
-            detail,
-        }
-    })?;
+    let plates = render::plates(&s.scene, Lang::Ru, Drafting::EXACT)
+        .map_err(|e| render_error(&s.scene, e))?;
     let svgs: Vec<String> = plates
         .iter()
         .map(|(_, p)| crate::plate::to_svg(p))
@@ -146,6 +137,44 @@ pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<(f64, usize), BenchErr
         plate: "png".into(),
         detail: e.to_string(),
     })
+}
+
+/// Seconds to build every sheet of `scene` (a fresh session) and write each as SVG and as
+/// PNG at [`PNG_DPI`], in memory, the sheets rasterised in parallel — `tmm render --format
+/// svg,png` but the files — and the number of sheets.
+pub(super) fn scene_time(scene: &Scene, reps: Reps) -> Result<(f64, usize), BenchError> {
+    let mut sheets = 0;
+    let t = best_time(reps.best_of.min(3), || {
+        let plates =
+            render::plates(scene, Lang::Ru, Drafting::EXACT).map_err(|e| render_error(scene, e))?;
+        let svgs: Vec<String> = plates
+            .iter()
+            .map(|(_, p)| crate::plate::to_svg(p))
+            .collect();
+        sheets = svgs.len();
+        crate::plate::to_png_dpi_all(&svgs, PNG_DPI as f32)
+            .into_iter()
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| BenchError::Plate {
+                scene: scene.stem.clone(),
+                plate: "png".into(),
+                detail: e.to_string(),
+            })
+    })?;
+    Ok((t, sheets))
+}
+
+/// A scene's sheets that cannot be built, as the bench's error.
+fn render_error(scene: &Scene, e: RenderError) -> BenchError {
+    let (plate, detail) = match e {
+        RenderError::Build { kind, error, .. } => (kind.stem().into(), error.to_string()),
+        e => ("png".into(), e.to_string()),
+    };
+    BenchError::Plate {
+        scene: scene.stem.clone(),
+        plate,
+        detail,
+    }
 }
 
 /// The force route of `s` at its first analysed position: (constructed, analytic) positions

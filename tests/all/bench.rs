@@ -79,6 +79,7 @@ fn quick_bench_writes_three_files_and_errors_fall_with_n() {
         "construction shaper",
         "plate shaper/kinematics",
         "plate shaper/forces",
+        "scene shaper (svg+png)",
     ] {
         assert!(
             throughput.iter().any(|t| t["name"] == name),

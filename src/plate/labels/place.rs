@@ -175,7 +175,7 @@ impl<'a> Placer<'a> {
         );
         for (rank, &rect) in job.candidates.iter().enumerate() {
             let slot = Slot { rect, rank };
-            let cost = self.cost(job, &slot, &others);
+            let cost = self.cost(job, &slot, &others, best.1);
             if cost < best.1 {
                 best = (slot, cost);
             }
@@ -213,7 +213,12 @@ impl<'a> Placer<'a> {
         if blockers.is_empty() && !against_fixed {
             return false;
         }
-        let cost_now = self.cost(&jobs[i], &now, &self.texts_near(jobs, slots, i));
+        let cost_now = self.cost(
+            &jobs[i],
+            &now,
+            &self.texts_near(jobs, slots, i),
+            f64::INFINITY,
+        );
         let (alone, cost) = self.best(jobs, slots, i);
         if cost < cost_now - 1e-9 {
             slots[i] = Some(alone);
@@ -224,7 +229,12 @@ impl<'a> Placer<'a> {
                 let mut without = slots.to_vec();
                 without[i] = None;
                 let s = slots[j].expect("placed");
-                self.cost(&jobs[j], &s, &self.texts_near(jobs, &without, j))
+                self.cost(
+                    &jobs[j],
+                    &s,
+                    &self.texts_near(jobs, &without, j),
+                    f64::INFINITY,
+                )
             };
             let mut trial = slots.to_vec();
             trial[i] = None;
@@ -241,12 +251,17 @@ impl<'a> Placer<'a> {
         false
     }
 
-    /// What placing `job` at `slot` costs among the texts `others`.
-    fn cost(&self, job: &Job, slot: &Slot, others: &[Rect]) -> f64 {
+    /// What placing `job` at `slot` costs among the texts `others`; once the sum (of terms
+    /// never negative) reaches `bound`, the sum so far (the slot cannot beat a slot of that
+    /// cost).
+    fn cost(&self, job: &Job, slot: &Slot, others: &[Rect], bound: f64) -> f64 {
         let rect = &slot.rect;
         let mut cost = slot.rank as f64 * RANK;
         if !self.frame.contains(rect) || self.forbidden.iter().any(|f| f.intersects(rect)) {
             cost += OUTSIDE;
+        }
+        if cost >= bound {
+            return cost;
         }
         let padded = rect.inflate(CLEARANCE_MM * 0.5);
         for t in others {
@@ -261,6 +276,9 @@ impl<'a> Placer<'a> {
             }
         }
         for o in &job.lines {
+            if cost >= bound {
+                return cost;
+            }
             cost += match &o.shape {
                 Shape::Line(a, b) => {
                     let inside = clipped_length(*a, *b, &padded);
