@@ -68,6 +68,7 @@ pub const CHORD_RESOLUTIONS: [usize; 6] = [12, 24, 48, 96, 192, 360];
 const PLATES: &[(&str, PlateKind)] = &[
     ("shaper", PlateKind::Kinematics),
     ("shaper", PlateKind::Forces),
+    ("shaper", PlateKind::Cam),
 ];
 
 /// Largest extent of a chord-method figure (the diagram and its pole), mm: the size its

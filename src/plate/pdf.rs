@@ -81,3 +81,41 @@ pub fn to_pdf(svgs: &[String]) -> Result<Vec<u8>, PdfError> {
         message: e.to_string(),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Text in three faces of DejaVu Sans (a sheet's lettering is oblique; the note's and a
+    /// chart's may be upright or bold).
+    const SVG: &str = r##"<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="40mm" viewBox="0 0 60 40">
+        <rect width="60" height="40" fill="#fff"/>
+        <text x="4" y="10" font-size="5" font-style="italic">Лист 2 ω₁</text>
+        <text x="4" y="20" font-size="5">Масштаб 1:2,5</text>
+        <text x="4" y="30" font-size="5" font-weight="bold">ТММ.КП.000</text>
+    </svg>"##;
+
+    #[test]
+    fn several_font_faces_give_the_same_bytes_every_time() {
+        let pages = [SVG.to_string(), SVG.replace("Лист 2", "Лист 3")];
+        let first = to_pdf(&pages).unwrap();
+        // Each face its own embedded subset (the dictionaries are not compressed).
+        let text = String::from_utf8_lossy(&first);
+        for face in ["DejaVuSans-Oblique", "DejaVuSans-Bold"] {
+            assert!(text.contains(&format!("+{face}")), "{face} embedded");
+        }
+        assert!(
+            text.match_indices("+DejaVuSans")
+                .any(|(at, m)| { !text[at + m.len()..].starts_with('-') }),
+            "the upright face embedded"
+        );
+        for _ in 0..4 {
+            assert_eq!(to_pdf(&pages).unwrap(), first);
+        }
+        // Made on other threads (other hash seeds), the same bytes.
+        let elsewhere = std::thread::spawn(move || to_pdf(&pages).unwrap())
+            .join()
+            .unwrap();
+        assert_eq!(elsewhere, first);
+    }
+}
