@@ -35,14 +35,14 @@ use super::{BasicRack, Cutting, GearError, Pair, PairSpec};
 use crate::geom::{golden_max, illinois, DVec2};
 use rayon::prelude::*;
 use std::f64::consts::PI;
-use std::sync::{Arc, Mutex, OnceLock, PoisonError};
+use std::sync::{Mutex, PoisonError};
 
 /// The studies [`Study::of`] keeps.
 const KEPT: usize = 8;
-/// A study being traced or traced, shared by every variant that asks for it.
-type StudyCell = Arc<OnceLock<Result<Study, BlockingError>>>;
-/// The studies kept: the pair, the criterion asked, the study.
-static STUDIES: Mutex<Vec<(PairSpec, Option<Criterion>, StudyCell)>> = Mutex::new(Vec::new());
+/// A study kept: the pair, the criterion asked, the study.
+type Kept = (PairSpec, Option<Criterion>, Result<Study, BlockingError>);
+/// The studies kept, the newest last.
+static STUDIES: Mutex<Vec<Kept>> = Mutex::new(Vec::new());
 /// The rays of the fan.
 const RAYS: usize = 720;
 /// Samples along a ray (to the window's edge).
@@ -940,26 +940,31 @@ impl Study {
     ///
     /// A study is a function of the pair and `chosen` alone, and a class's variants mostly
     /// share their gears: the last [`KEPT`] studies are kept, so a batch traces each pair
-    /// once (a second variant asking while the first traces waits for it).
+    /// about once. Nothing waits for a study being traced (a variant asking meanwhile traces
+    /// it too): a wait could be a deadlock, the tracing thread itself taking up, inside
+    /// the fan's parallel loop, another variant that asks for the same pair.
     ///
     /// # Errors
     /// Those of [`Blocking::new`] and [`Blocking::place`].
     pub fn of(spec: &PairSpec, chosen: Option<Criterion>) -> Result<Self, BlockingError> {
-        let cell = {
-            let mut kept = STUDIES.lock().unwrap_or_else(PoisonError::into_inner);
-            match kept.iter().find(|(s, c, _)| s == spec && *c == chosen) {
-                Some((_, _, cell)) => Arc::clone(cell),
-                None => {
-                    let cell = StudyCell::default();
-                    if kept.len() >= KEPT {
-                        kept.remove(0);
-                    }
-                    kept.push((*spec, chosen, Arc::clone(&cell)));
-                    cell
-                }
+        let same = |(s, c, _): &&Kept| s == spec && *c == chosen;
+        if let Some((_, _, study)) = STUDIES
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .iter()
+            .find(same)
+        {
+            return study.clone();
+        }
+        let study = Self::trace_of(spec, chosen);
+        let mut kept = STUDIES.lock().unwrap_or_else(PoisonError::into_inner);
+        if !kept.iter().any(|k| same(&k)) {
+            if kept.len() >= KEPT {
+                drop(kept.remove(0));
             }
-        };
-        cell.get_or_init(|| Self::trace_of(spec, chosen)).clone()
+            kept.push((*spec, chosen, study.clone()));
+        }
+        study
     }
 
     /// Forget the studies [`Self::of`] keeps (the bench times each run as a fresh process).
