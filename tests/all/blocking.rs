@@ -419,8 +419,8 @@ fn a_kept_study_is_the_pairs_own_and_its_choices_those_made_alone() {
         match (chosen, own) {
             (Ok(c), Ok(o)) => {
                 // The maximisers' objective is flat at its top: the same point to the
-                // golden sections' reach (PZ3's greatest x_Σ moves 5e-8 with the grid's
-                // angles rounded another way; here none moves).
+                // golden sections' reach (on PZ3's pair, the grid's boundary taken from the
+                // fan moved the greatest x_Σ's s_a by 5e-8 of itself; here nothing moves).
                 let d = DVec2::from(c.indices.x).distance(DVec2::from(o.indices.x));
                 assert!(d < 1e-7, "{criterion:?}: {d}");
             }
