@@ -189,11 +189,13 @@ fn scene_stems(folder: &Path) -> Result<Vec<String>, BenchError> {
 }
 
 /// The best (least) wall time of `best_of` runs of `f`, seconds. Each run starts as a fresh
-/// process does, with no blocking contour remembered ([`crate::gears::blocking::Study::of`]).
+/// process does, with no blocking contour ([`crate::gears::blocking::Study::of`]) and no
+/// image ([`crate::plate::to_png_dpi`]) kept.
 fn best_time<T, E>(best_of: usize, mut f: impl FnMut() -> Result<T, E>) -> Result<f64, E> {
     let mut best = f64::INFINITY;
     for _ in 0..best_of.max(1) {
         crate::gears::blocking::Study::forget();
+        crate::plate::forget_pngs();
         let t = Instant::now();
         black_box(f()?);
         best = best.min(t.elapsed().as_secs_f64());

@@ -56,7 +56,7 @@ pub use labels::{
     layout, struck_dimension_texts, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR,
 };
 pub use pdf::{to_pdf, PdfError};
-pub use raster::{png_size, to_png, to_png_dpi, to_png_dpi_all, MAX_PIXELS};
+pub use raster::{forget_pngs, png_size, to_png, to_png_dpi, to_png_dpi_all, MAX_PIXELS};
 pub(crate) use sheet::captions as title_block_captions;
 pub use sheet::{Sheet, SheetSize, TitleBlock};
 pub use style::Pen;

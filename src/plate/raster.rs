@@ -96,10 +96,40 @@ pub fn to_png(svg: &str, width_px: u32) -> Result<Vec<u8>, PlateError> {
 
 /// Rasterise `svg` at `dpi` pixels per inch of the printed sheet (the CLI uses 150).
 ///
+/// The last [`PNGS_KEPT`] images are kept with their SVG: a class's variants share the sheets
+/// the grid does not change (the shaper grid's cam and gear sheets, byte for byte the same
+/// SVG), and each is rasterised once. Nothing waits for an image being made (a second
+/// request meanwhile makes it too).
+///
 /// # Errors
 /// As [`to_png`]; also [`PlateError::Raster`] for a non-positive or non-finite `dpi`.
 pub fn to_png_dpi(svg: &str, dpi: f32) -> Result<Vec<u8>, PlateError> {
-    to_png_dpi_tiled(svg, dpi, TILING)
+    let same = |(d, s, _): &&KeptPng| *d == dpi.to_bits() && **s == *svg;
+    let kept = |k: &Vec<KeptPng>| k.iter().find(same).map(|(_, _, png)| png.clone());
+    if let Some(png) = kept(&PNGS.lock().unwrap_or_else(PoisonError::into_inner)) {
+        return Ok(png);
+    }
+    let png = to_png_dpi_tiled(svg, dpi, TILING)?;
+    let mut pngs = PNGS.lock().unwrap_or_else(PoisonError::into_inner);
+    if kept(&pngs).is_none() {
+        if pngs.len() >= PNGS_KEPT {
+            drop(pngs.remove(0));
+        }
+        pngs.push((dpi.to_bits(), svg.to_string(), png.clone()));
+    }
+    Ok(png)
+}
+
+/// The images [`to_png_dpi`] keeps.
+const PNGS_KEPT: usize = 16;
+/// An image kept: the resolution's bits, the SVG, the PNG.
+type KeptPng = (u32, String, Vec<u8>);
+/// The images kept, the newest last.
+static PNGS: Mutex<Vec<KeptPng>> = Mutex::new(Vec::new());
+
+/// Forget the images [`to_png_dpi`] keeps (the bench times each run as a fresh process).
+pub fn forget_pngs() {
+    PNGS.lock().unwrap_or_else(PoisonError::into_inner).clear();
 }
 
 /// [`to_png_dpi`] for several SVGs at once, rendered in parallel; the results in order.
@@ -424,6 +454,21 @@ mod tests {
         assert_eq!(png[25], 2);
         let img = decode(&png);
         assert!(img.pixels().iter().any(|p| p.red() != p.blue()));
+    }
+
+    #[test]
+    fn a_kept_image_is_the_one_of_its_own_svg_and_resolution() {
+        let other = SVG.replace("Лист 2", "Лист 3");
+        let a = to_png_dpi(SVG, 100.0).unwrap();
+        let b = to_png_dpi(&other, 100.0).unwrap();
+        let c = to_png_dpi(SVG, 50.0).unwrap();
+        assert_ne!(a, b);
+        assert_ne!(a, c);
+        assert_eq!(to_png_dpi(SVG, 100.0).unwrap(), a);
+        assert_eq!(to_png_dpi(&other, 100.0).unwrap(), b);
+        // As made afresh.
+        assert_eq!(to_png_dpi_tiled(SVG, 100.0, TILING).unwrap(), a);
+        assert_eq!(to_png_dpi_tiled(SVG, 50.0, TILING).unwrap(), c);
     }
 
     #[test]
