@@ -48,7 +48,7 @@ const RAYS: usize = 720;
 /// Samples along a ray (to the window's edge).
 const SAMPLES: usize = 400;
 /// The crossing's end: the bracket's length along a ray (x per module).
-const BISECT_TO: f64 = 1e-13;
+const BRACKET_TO: f64 = 1e-13;
 /// The quality isolines of the tip thickness, × m.
 pub const TIP_LIMITS: [f64; 3] = [0.0, 0.25, 0.4];
 /// The contact ratio's lines.
@@ -661,7 +661,7 @@ impl Blocking {
                 hard.eps_min,
             ));
         }
-        // A maximum lies on the boundary, to the bisection's 1e-13: drawn in by 1e-9 of its
+        // A maximum lies on the boundary, to the bracket's 1e-13: drawn in by 1e-9 of its
         // distance from the centre, it meets every hard limit strictly, so the pair built on
         // it works whatever the rounding of its own formulas. (The equal-sliding point keeps
         // its line; the ends of the line's stretch are bracketed on the admissible side.)
@@ -804,10 +804,10 @@ impl Blocking {
 }
 
 /// The zero of `f` between `a` and `b` (each a point and its value, of opposite signs),
-/// bracketed to [`BISECT_TO`] by [`illinois`]: the end whose value is nearer 0; `None` when
+/// bracketed to [`BRACKET_TO`] by [`illinois`]: the end whose value is nearer 0; `None` when
 /// `f` leaves its domain inside.
 fn crossing(f: impl Fn(f64) -> Option<f64>, a: (f64, f64), b: (f64, f64)) -> Option<f64> {
-    let [(lo, fl), (hi, fh)] = illinois(f, a, b, |u, v| (u - v).abs() <= BISECT_TO)?;
+    let [(lo, fl), (hi, fh)] = illinois(f, a, b, |u, v| (u - v).abs() <= BRACKET_TO)?;
     Some(if fl.abs() <= fh.abs() { lo } else { hi })
 }
 
@@ -816,12 +816,12 @@ fn fan_angle(k: usize, n: usize) -> f64 {
     2.0 * PI * k as f64 / n as f64
 }
 
-/// The bracket (a-side end, b-side end) of a change of `f`'s sign, halved to [`BISECT_TO`]
+/// The bracket (a-side end, b-side end) of a change of `f`'s sign, halved to [`BRACKET_TO`]
 /// (f(a) ≥ 0 is `a_nonneg`; f is not evaluated at a or b, where it may have no value).
 fn bracket(a: f64, b: f64, a_nonneg: bool, f: &impl Fn(f64) -> Option<f64>) -> Option<(f64, f64)> {
     let (mut lo, mut hi) = (a, b);
     for _ in 0..200 {
-        if (hi - lo).abs() <= BISECT_TO {
+        if (hi - lo).abs() <= BRACKET_TO {
             break;
         }
         let mid = 0.5 * (lo + hi);

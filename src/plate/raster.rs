@@ -96,10 +96,10 @@ pub fn to_png(svg: &str, width_px: u32) -> Result<Vec<u8>, PlateError> {
 
 /// Rasterise `svg` at `dpi` pixels per inch of the printed sheet (the CLI uses 150).
 ///
-/// The last [`PNGS_KEPT`] images are kept with their SVG: a class's variants share the sheets
-/// the grid does not change (the shaper grid's cam and gear sheets, byte for byte the same
-/// SVG), and each is rasterised once. Nothing waits for an image being made (a second
-/// request meanwhile makes it too).
+/// The last [`PNGS_KEPT`] images (each up to [`PNG_KEPT_BYTES`]) are kept with their SVG: a
+/// class's variants share the sheets the grid does not change (the shaper grid's cam and gear
+/// sheets, byte for byte the same SVG), and each is rasterised once. Nothing waits for an
+/// image being made (a second request meanwhile makes it too).
 ///
 /// # Errors
 /// As [`to_png`]; also [`PlateError::Raster`] for a non-positive or non-finite `dpi`.
@@ -111,7 +111,7 @@ pub fn to_png_dpi(svg: &str, dpi: f32) -> Result<Vec<u8>, PlateError> {
     }
     let png = to_png_dpi_tiled(svg, dpi, TILING)?;
     let mut pngs = PNGS.lock().unwrap_or_else(PoisonError::into_inner);
-    if kept(&pngs).is_none() {
+    if png.len() <= PNG_KEPT_BYTES && kept(&pngs).is_none() {
         if pngs.len() >= PNGS_KEPT {
             drop(pngs.remove(0));
         }
@@ -122,6 +122,8 @@ pub fn to_png_dpi(svg: &str, dpi: f32) -> Result<Vec<u8>, PlateError> {
 
 /// The images [`to_png_dpi`] keeps.
 const PNGS_KEPT: usize = 16;
+/// The largest image kept, bytes (a 150 dpi A1 sheet is about 1 MB).
+const PNG_KEPT_BYTES: usize = 8 << 20;
 /// An image kept: the resolution's bits, the SVG, the PNG.
 type KeptPng = (u32, String, Vec<u8>);
 /// The images kept, the newest last.
@@ -289,7 +291,7 @@ impl Job<'_> {
 /// The pixel buffers of finished tiles, kept for the next: a 150 dpi A1 sheet is one tile of
 /// 70 MB, and a fresh one costs its page faults on every sheet (ten shaper variants as PNG:
 /// 3.0 s of system time with fresh canvases, 0.17 s with kept ones).
-static KEPT: Mutex<Vec<Vec<u8>>> = Mutex::new(Vec::new());
+static BUFFERS: Mutex<Vec<Vec<u8>>> = Mutex::new(Vec::new());
 
 /// A transparent `w` × `h` RGBA canvas on a kept buffer; the buffer goes back when dropped
 /// (at most one for each thread of the pool is kept).
@@ -301,7 +303,7 @@ struct Canvas {
 
 impl Canvas {
     fn new(w: u32, h: u32) -> Self {
-        let mut data = KEPT
+        let mut data = BUFFERS
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
             .pop()
@@ -329,7 +331,7 @@ impl Canvas {
 
 impl Drop for Canvas {
     fn drop(&mut self) {
-        let mut kept = KEPT.lock().unwrap_or_else(PoisonError::into_inner);
+        let mut kept = BUFFERS.lock().unwrap_or_else(PoisonError::into_inner);
         if kept.len() < rayon::current_num_threads() {
             kept.push(std::mem::take(&mut self.data));
         }
