@@ -190,11 +190,22 @@ impl Cycle {
     /// The extreme of `g` over the cycle: the best node, then golden-section search over its
     /// two panels. `(ψ, g(ψ))`.
     pub fn extremum(&self, g: impl Fn(f64) -> f64, maximize: bool) -> (f64, f64) {
+        self.extremum_from(self.psi.iter().map(|&p| g(p)), &g, maximize)
+    }
+
+    /// [`Self::extremum`] with g's values at the nodes given (`nodes`, in order; the values
+    /// g itself gives there).
+    fn extremum_from(
+        &self,
+        nodes: impl Iterator<Item = f64>,
+        g: impl Fn(f64) -> f64,
+        maximize: bool,
+    ) -> (f64, f64) {
         let s = if maximize { 1.0 } else { -1.0 };
         let n = self.psi.len() - 1;
         let (mut k, mut best) = (0, f64::NEG_INFINITY);
-        for (i, &p) in self.psi.iter().enumerate() {
-            let v = s * g(p);
+        for (i, g_i) in nodes.enumerate() {
+            let v = s * g_i;
             if v > best {
                 best = v;
                 k = i;
@@ -259,8 +270,16 @@ impl Cycle {
 
     /// ω_max and ω_min with `j_fw` and `t0`, where they occur.
     pub fn extremes(&self, j_fw: f64, t0: f64) -> ((f64, f64), (f64, f64)) {
-        let (pa, a) = self.extremum(|p| self.w2(p, j_fw, t0), true);
-        let (pb, b) = self.extremum(|p| self.w2(p, j_fw, t0), false);
+        // ω² at the nodes straight from their values (the interpolants meet them there
+        // exactly), without looking up each node's panel.
+        let at_nodes = || {
+            (0..self.psi.len()).map(move |i| {
+                let dt = self.m_drive * self.psi[i].clamp(0.0, TAU) + self.work[i];
+                (2.0 * (t0 + dt) / (self.j[i] + j_fw)).max(0.0)
+            })
+        };
+        let (pa, a) = self.extremum_from(at_nodes(), |p| self.w2(p, j_fw, t0), true);
+        let (pb, b) = self.extremum_from(at_nodes(), |p| self.w2(p, j_fw, t0), false);
         ((a.sqrt(), pa), (b.sqrt(), pb))
     }
 
