@@ -9,6 +9,7 @@ use crate::scale::Lang;
 use crate::scene::{PlateKind, Scene};
 use crate::sheets::{self, BuildError};
 use crate::study::Session;
+use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
@@ -218,20 +219,34 @@ fn files_of(
             sets.push((path, first..svgs.len()));
         }
     }
-    // The PDF sets, the notes and the PNGs are made side by side: a set or a note takes one
-    // core, the rasteriser every core there is.
-    let texts: Vec<String> = match formats.png {
-        true => svgs.iter().map(|(_, svg)| svg.clone()).collect(),
+    // A sheet both a PNG and a PDF page is parsed (its text laid out) once, for both.
+    let parsed: Vec<plate::ParsedSvg<'_>> = match formats.png && formats.pdf {
+        true => svgs
+            .par_iter()
+            .map(|(base, svg)| {
+                plate::ParsedSvg::new(svg).map_err(|error| RenderError::Png {
+                    path: base.clone(),
+                    error,
+                })
+            })
+            .collect::<Result<_, _>>()?,
         false => Vec::new(),
     };
+    // The PDF sets, the notes and the PNGs are made side by side: a set or a note takes one
+    // core, the rasteriser every core there is.
     let set_pdfs = || -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
         sets.iter()
             .map(|(path, pages)| {
-                let pages: Vec<String> = svgs[pages.clone()]
-                    .iter()
-                    .map(|(_, svg)| svg.clone())
-                    .collect();
-                let pdf = plate::to_pdf(&pages).map_err(|error| RenderError::Pdf {
+                let pdf = if parsed.is_empty() {
+                    let pages: Vec<String> = svgs[pages.clone()]
+                        .iter()
+                        .map(|(_, svg)| svg.clone())
+                        .collect();
+                    plate::to_pdf(&pages)
+                } else {
+                    plate::to_pdf_parsed(&parsed[pages.clone()].iter().collect::<Vec<_>>())
+                };
+                let pdf = pdf.map_err(|error| RenderError::Pdf {
                     path: path.clone(),
                     error,
                 })?;
@@ -248,10 +263,20 @@ fn files_of(
             })
             .collect()
     };
-    let ((set_pdfs, note_pdfs), pngs) = rayon::join(
-        || rayon::join(set_pdfs, note_pdfs),
-        || plate::to_png_dpi_all(&texts, dpi as f32),
-    );
+    let pngs = || -> Vec<Result<Vec<u8>, plate::PlateError>> {
+        match (formats.png, parsed.is_empty()) {
+            (false, _) => Vec::new(),
+            (true, true) => {
+                let texts: Vec<String> = svgs.iter().map(|(_, svg)| svg.clone()).collect();
+                plate::to_png_dpi_all(&texts, dpi as f32)
+            }
+            (true, false) => parsed
+                .par_iter()
+                .map(|p| plate::png_of(p, dpi as f32))
+                .collect(),
+        }
+    };
+    let ((set_pdfs, note_pdfs), pngs) = rayon::join(|| rayon::join(set_pdfs, note_pdfs), pngs);
     let (set_pdfs, note_pdfs) = (set_pdfs?, note_pdfs?);
     let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     let mut pngs = pngs.into_iter();

@@ -55,8 +55,10 @@ pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM};
 pub use labels::{
     layout, struck_dimension_texts, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR,
 };
-pub use pdf::{to_pdf, PdfError};
-pub use raster::{forget_pngs, png_size, to_png, to_png_dpi, to_png_dpi_all, MAX_PIXELS};
+pub use pdf::{to_pdf, to_pdf_parsed, PdfError};
+pub use raster::{
+    forget_pngs, png_of, png_size, to_png, to_png_dpi, to_png_dpi_all, ParsedSvg, MAX_PIXELS,
+};
 pub(crate) use sheet::captions as title_block_captions;
 pub use sheet::{Sheet, SheetSize, TitleBlock};
 pub use style::Pen;

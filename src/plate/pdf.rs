@@ -6,6 +6,7 @@
 //! it uses embedded. The document carries no date and no random identifier: the same plates
 //! give the same bytes.
 
+use super::raster::ParsedSvg;
 use krilla::geom::Size;
 use krilla::page::PageSettings;
 use krilla::{Document, SerializeSettings};
@@ -44,7 +45,28 @@ pub enum PdfError {
 /// [`PdfError::NoPages`] for an empty slice; [`PdfError::Svg`] for an SVG that does not
 /// parse; [`PdfError::Convert`] when the writer fails.
 pub fn to_pdf(svgs: &[String]) -> Result<Vec<u8>, PdfError> {
-    if svgs.is_empty() {
+    let parsed = svgs
+        .iter()
+        .enumerate()
+        .map(|(k, svg)| {
+            ParsedSvg::new(svg).map_err(|e| PdfError::Svg {
+                page: k + 1,
+                message: match e {
+                    super::PlateError::Svg(message) => message,
+                    other => other.to_string(),
+                },
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    to_pdf_parsed(&parsed.iter().collect::<Vec<_>>())
+}
+
+/// [`to_pdf`] of SVGs already parsed (the same bytes).
+///
+/// # Errors
+/// [`PdfError::NoPages`] for an empty slice; [`PdfError::Convert`] when the writer fails.
+pub fn to_pdf_parsed(pages: &[&ParsedSvg<'_>]) -> Result<Vec<u8>, PdfError> {
+    if pages.is_empty() {
         return Err(PdfError::NoPages);
     }
     let mut document = Document::new_with(SerializeSettings {
@@ -52,15 +74,9 @@ pub fn to_pdf(svgs: &[String]) -> Result<Vec<u8>, PdfError> {
         enable_tagging: false,
         ..SerializeSettings::default()
     });
-    for (k, svg) in svgs.iter().enumerate() {
+    for (k, parsed) in pages.iter().enumerate() {
         let page = k + 1;
-        let tree = super::raster::parse(svg).map_err(|e| PdfError::Svg {
-            page,
-            message: match e {
-                super::PlateError::Svg(message) => message,
-                other => other.to_string(),
-            },
-        })?;
+        let tree = &parsed.tree;
         // usvg sizes are CSS pixels (96 per inch); the page is in points (72 per inch).
         let (w, h) = (tree.size().width() * 0.75, tree.size().height() * 0.75);
         let convert = |message: &str| PdfError::Convert {
@@ -71,7 +87,7 @@ pub fn to_pdf(svgs: &[String]) -> Result<Vec<u8>, PdfError> {
         let mut sheet = document.start_page_with(PageSettings::new(size));
         let mut surface = sheet.surface();
         surface
-            .draw_svg(&tree, size, SvgSettings::default())
+            .draw_svg(tree, size, SvgSettings::default())
             .ok_or_else(|| convert("the SVG could not be drawn"))?;
         surface.finish();
         sheet.finish();
@@ -94,6 +110,20 @@ mod tests {
         <text x="4" y="20" font-size="5">Масштаб 1:2,5</text>
         <text x="4" y="30" font-size="5" font-weight="bold">ТММ.КП.000</text>
     </svg>"##;
+
+    #[test]
+    fn parsed_pages_give_the_pdf_of_their_text() {
+        let other = SVG.replace("Лист 2", "Лист 3");
+        let (a, b) = (
+            ParsedSvg::new(SVG).unwrap(),
+            ParsedSvg::new(&other).unwrap(),
+        );
+        assert_eq!(
+            to_pdf_parsed(&[&a, &b]).unwrap(),
+            to_pdf(&[SVG.to_string(), other.clone()]).unwrap()
+        );
+        assert!(matches!(to_pdf_parsed(&[]), Err(PdfError::NoPages)));
+    }
 
     #[test]
     fn several_font_faces_give_the_same_bytes_every_time() {

@@ -104,12 +104,52 @@ pub fn to_png(svg: &str, width_px: u32) -> Result<Vec<u8>, PlateError> {
 /// # Errors
 /// As [`to_png`]; also [`PlateError::Raster`] for a non-positive or non-finite `dpi`.
 pub fn to_png_dpi(svg: &str, dpi: f32) -> Result<Vec<u8>, PlateError> {
+    png_kept(svg, dpi, || to_png_dpi_tiled(svg, dpi, TILING))
+}
+
+/// A sheet's SVG parsed once, its text laid out, for its PNG ([`png_of`]) and its PDF page
+/// ([`super::to_pdf_parsed`]) alike.
+pub struct ParsedSvg<'a> {
+    pub(super) svg: &'a str,
+    pub(super) tree: Tree,
+}
+
+impl<'a> ParsedSvg<'a> {
+    /// Parse `svg` with the bundled fonts only.
+    ///
+    /// # Errors
+    /// [`PlateError::Svg`] when it cannot be parsed.
+    pub fn new(svg: &'a str) -> Result<Self, PlateError> {
+        Ok(Self {
+            svg,
+            tree: parse(svg)?,
+        })
+    }
+}
+
+/// [`to_png_dpi`] of a parsed SVG (the same bytes, the same images kept).
+///
+/// # Errors
+/// As [`to_png_dpi`].
+pub fn png_of(parsed: &ParsedSvg<'_>, dpi: f32) -> Result<Vec<u8>, PlateError> {
+    png_kept(parsed.svg, dpi, || {
+        check_dpi(dpi)?;
+        encode(&parsed.tree, dpi / CSS_DPI, TILING)
+    })
+}
+
+/// The image of `svg` at `dpi` as kept, or as `make` makes it (then kept).
+fn png_kept(
+    svg: &str,
+    dpi: f32,
+    make: impl FnOnce() -> Result<Vec<u8>, PlateError>,
+) -> Result<Vec<u8>, PlateError> {
     let same = |(d, s, _): &&KeptPng| *d == dpi.to_bits() && **s == *svg;
     let kept = |k: &Vec<KeptPng>| k.iter().find(same).map(|(_, _, png)| png.clone());
     if let Some(png) = kept(&PNGS.lock().unwrap_or_else(PoisonError::into_inner)) {
         return Ok(png);
     }
-    let png = to_png_dpi_tiled(svg, dpi, TILING)?;
+    let png = make()?;
     let mut pngs = PNGS.lock().unwrap_or_else(PoisonError::into_inner);
     if png.len() <= PNG_KEPT_BYTES && kept(&pngs).is_none() {
         if pngs.len() >= PNGS_KEPT {
@@ -150,12 +190,19 @@ pub fn png_size(width_mm: f64, height_mm: f64, dpi: f32) -> Result<(u32, u32), P
 }
 
 fn to_png_dpi_tiled(svg: &str, dpi: f32, tiling: Tiling) -> Result<Vec<u8>, PlateError> {
-    if !(dpi.is_finite() && dpi > 0.0) {
-        return Err(PlateError::Raster(format!(
-            "resolution must be positive, got {dpi} dpi"
-        )));
-    }
+    check_dpi(dpi)?;
     encode(&parse(svg)?, dpi / CSS_DPI, tiling)
+}
+
+/// A resolution a PNG can be made at: positive and finite.
+fn check_dpi(dpi: f32) -> Result<(), PlateError> {
+    if dpi.is_finite() && dpi > 0.0 {
+        Ok(())
+    } else {
+        Err(PlateError::Raster(format!(
+            "resolution must be positive, got {dpi} dpi"
+        )))
+    }
 }
 
 /// The pixel size of a `w` × `h` CSS px image scaled by `zoom`, within [`MAX_PIXELS`].
@@ -471,6 +518,18 @@ mod tests {
         // As made afresh.
         assert_eq!(to_png_dpi_tiled(SVG, 100.0, TILING).unwrap(), a);
         assert_eq!(to_png_dpi_tiled(SVG, 50.0, TILING).unwrap(), c);
+    }
+
+    #[test]
+    fn a_parsed_svg_gives_the_png_of_its_text() {
+        let parsed = ParsedSvg::new(SVG).unwrap();
+        // A resolution no other test asks for: made from the tree, not found kept.
+        assert_eq!(
+            png_of(&parsed, 77.0).unwrap(),
+            to_png_dpi_tiled(SVG, 77.0, TILING).unwrap()
+        );
+        assert!(png_of(&parsed, 0.0).is_err());
+        assert!(ParsedSvg::new("<svg").is_err());
     }
 
     #[test]
