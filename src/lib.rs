@@ -44,6 +44,7 @@ pub mod dynamics;
 pub mod forces;
 pub mod gears;
 pub mod geom;
+pub mod kept;
 pub mod kinematics;
 pub mod linkage;
 pub mod note;

@@ -555,12 +555,8 @@ fn bench(json: bool, out: &Path, quick: bool, scenes: PathBuf) -> Result<(), Fai
 }
 
 fn list(dir: &Path) -> Result<(), Failure> {
-    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map_err(|e| Failure::input(format!("{}: {e}", dir.display())))?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    entries.sort();
+    let entries =
+        scene::files_in(dir).map_err(|e| Failure::input(format!("{}: {e}", dir.display())))?;
     for p in entries {
         match scene::load(&p) {
             Ok(s) => {

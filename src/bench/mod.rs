@@ -54,7 +54,7 @@ use rates::{
 };
 use std::f64::consts::TAU;
 use std::hint::black_box;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 use thiserror::Error;
 
@@ -166,26 +166,6 @@ impl Reps {
             }
         }
     }
-}
-
-/// The stems of the scenes (`*.toml`) in `folder`, sorted.
-fn scene_stems(folder: &Path) -> Result<Vec<String>, BenchError> {
-    let unreadable = |e: std::io::Error| BenchError::Plate {
-        scene: folder.display().to_string(),
-        plate: "scenes".into(),
-        detail: e.to_string(),
-    };
-    let mut stems = Vec::new();
-    for entry in std::fs::read_dir(folder).map_err(unreadable)? {
-        let path = entry.map_err(unreadable)?.path();
-        if path.extension().is_some_and(|e| e == "toml") {
-            if let Some(stem) = path.file_stem().and_then(|s| s.to_str()) {
-                stems.push(stem.to_string());
-            }
-        }
-    }
-    stems.sort();
-    Ok(stems)
 }
 
 /// The best (least) wall time of `best_of` runs of `f`, seconds. Each run starts as a fresh
@@ -391,16 +371,20 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
         ),
     });
     // Every scene of the folder (a quick bench: the shaper alone), its whole set of sheets.
-    let stems = if opts.quick {
-        vec![shaper.scene.stem.clone()]
+    let files = if opts.quick {
+        vec![opts.scenes.join("shaper.toml")]
     } else {
-        scene_stems(&opts.scenes)?
+        scene::files_in(&opts.scenes).map_err(|e| BenchError::Plate {
+            scene: opts.scenes.display().to_string(),
+            plate: "scenes".into(),
+            detail: e.to_string(),
+        })?
     };
-    for stem in stems {
-        let scene = scene::load(&opts.scenes.join(format!("{stem}.toml")))?;
+    for file in files {
+        let scene = scene::load(&file)?;
         let (seconds, sheets) = scene_time(&scene, reps)?;
         throughput.push(Throughput {
-            name: format!("scene {stem} (svg+png)"),
+            name: format!("scene {} (svg+png)", scene.stem),
             per_second: 1.0 / seconds,
             note: format!(
                 "{:.0} ms: every sheet ({sheets}) of a fresh session as SVG and as PNG at {PNG_DPI} dpi, in memory, on all cores",

@@ -33,16 +33,15 @@
 use super::involute::{inv, inv_inverse, inv_with_tan};
 use super::{BasicRack, Cutting, GearError, Pair, PairSpec};
 use crate::geom::{golden_max, illinois, DVec2};
+use crate::kept::Recent;
 use rayon::prelude::*;
 use std::f64::consts::PI;
-use std::sync::{Mutex, PoisonError};
 
 /// The studies [`Study::of`] keeps.
 const KEPT: usize = 8;
-/// A study kept: the pair, the criterion asked, the study.
-type Kept = (PairSpec, Option<Criterion>, Result<Study, BlockingError>);
-/// The studies kept, the newest last.
-static STUDIES: Mutex<Vec<Kept>> = Mutex::new(Vec::new());
+/// The studies [`Study::of`] keeps: the pair, the criterion asked, the study.
+static STUDIES: Recent<(PairSpec, Option<Criterion>), Result<Study, BlockingError>> =
+    Recent::new(KEPT);
 /// The rays of the fan.
 const RAYS: usize = 720;
 /// Samples along a ray (to the window's edge).
@@ -714,10 +713,9 @@ impl Blocking {
         // first in the grid's order.
         let best_on = |i: usize| {
             let a = fan_angle(i, na);
-            let d = DVec2::new(a.cos(), a.sin());
-            let tb = match fan {
-                Some(b) => (b[2 * i] - c).length(),
-                None => self.boundary_at(c, a, hard),
+            let (d, tb) = match fan {
+                Some(b) => (DVec2::new(a.cos(), a.sin()), (b[2 * i] - c).length()),
+                None => ray(a),
             };
             let mut best = (f64::NEG_INFINITY, a, 0.0);
             for j in 0..=ns {
@@ -939,40 +937,24 @@ impl Study {
     /// the kind the scene `chosen` its point by, that criterion as the scene put it.
     ///
     /// A study is a function of the pair and `chosen` alone, and a class's variants mostly
-    /// share their gears: the last [`KEPT`] studies are kept, so a batch traces each pair
-    /// about once. Nothing waits for a study being traced (a variant asking meanwhile traces
-    /// it too): a wait could be a deadlock, the tracing thread itself taking up, inside
-    /// the fan's parallel loop, another variant that asks for the same pair.
+    /// share their gears: the last [`KEPT`] studies are kept ([`Recent`]), so a batch traces
+    /// each pair about once.
     ///
     /// # Errors
     /// Those of [`Blocking::new`] and [`Blocking::place`].
     pub fn of(spec: &PairSpec, chosen: Option<Criterion>) -> Result<Self, BlockingError> {
-        let same = |(s, c, _): &&Kept| s == spec && *c == chosen;
-        if let Some((_, _, study)) = STUDIES
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .iter()
-            .find(same)
-        {
-            return study.clone();
+        let key = (*spec, chosen);
+        if let Some(study) = STUDIES.find(|k| *k == key) {
+            return study;
         }
         let study = Self::trace_of(spec, chosen);
-        let mut kept = STUDIES.lock().unwrap_or_else(PoisonError::into_inner);
-        if !kept.iter().any(|k| same(&k)) {
-            if kept.len() >= KEPT {
-                drop(kept.remove(0));
-            }
-            kept.push((*spec, chosen, study.clone()));
-        }
+        STUDIES.keep(key, study.clone());
         study
     }
 
     /// Forget the studies [`Self::of`] keeps (the bench times each run as a fresh process).
     pub fn forget() {
-        STUDIES
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .clear();
+        STUDIES.clear();
     }
 
     /// [`Self::of`], traced.

@@ -9,6 +9,7 @@
 
 use super::fonts::{family, font_database};
 use super::PlateError;
+use crate::kept::Recent;
 use rayon::prelude::*;
 use resvg::tiny_skia::{PixmapMut, Transform};
 use resvg::usvg::{Options, Tree};
@@ -96,10 +97,9 @@ pub fn to_png(svg: &str, width_px: u32) -> Result<Vec<u8>, PlateError> {
 
 /// Rasterise `svg` at `dpi` pixels per inch of the printed sheet (the CLI uses 150).
 ///
-/// The last [`PNGS_KEPT`] images (each up to [`PNG_KEPT_BYTES`]) are kept with their SVG: a
-/// class's variants share the sheets the grid does not change (the shaper grid's cam and gear
-/// sheets, byte for byte the same SVG), and each is rasterised once. Nothing waits for an
-/// image being made (a second request meanwhile makes it too).
+/// The last [`PNGS_KEPT`] images (each up to [`PNG_KEPT_BYTES`]) are kept with their SVG
+/// ([`Recent`]): a class's variants share the sheets the grid does not change (the shaper
+/// grid's cam and gear sheets, byte for byte the same SVG), and each is rasterised once.
 ///
 /// # Errors
 /// As [`to_png`]; also [`PlateError::Raster`] for a non-positive or non-finite `dpi`.
@@ -144,18 +144,13 @@ fn png_kept(
     dpi: f32,
     make: impl FnOnce() -> Result<Vec<u8>, PlateError>,
 ) -> Result<Vec<u8>, PlateError> {
-    let same = |(d, s, _): &&KeptPng| *d == dpi.to_bits() && **s == *svg;
-    let kept = |k: &Vec<KeptPng>| k.iter().find(same).map(|(_, _, png)| png.clone());
-    if let Some(png) = kept(&PNGS.lock().unwrap_or_else(PoisonError::into_inner)) {
+    let same = |(d, s): &(u32, String)| *d == dpi.to_bits() && s == svg;
+    if let Some(png) = PNGS.find(same) {
         return Ok(png);
     }
     let png = make()?;
-    let mut pngs = PNGS.lock().unwrap_or_else(PoisonError::into_inner);
-    if png.len() <= PNG_KEPT_BYTES && kept(&pngs).is_none() {
-        if pngs.len() >= PNGS_KEPT {
-            drop(pngs.remove(0));
-        }
-        pngs.push((dpi.to_bits(), svg.to_string(), png.clone()));
+    if png.len() <= PNG_KEPT_BYTES {
+        PNGS.keep((dpi.to_bits(), svg.to_string()), png.clone());
     }
     Ok(png)
 }
@@ -164,14 +159,12 @@ fn png_kept(
 const PNGS_KEPT: usize = 16;
 /// The largest image kept, bytes (a 150 dpi A1 sheet is about 1 MB).
 const PNG_KEPT_BYTES: usize = 8 << 20;
-/// An image kept: the resolution's bits, the SVG, the PNG.
-type KeptPng = (u32, String, Vec<u8>);
-/// The images kept, the newest last.
-static PNGS: Mutex<Vec<KeptPng>> = Mutex::new(Vec::new());
+/// The images kept: the resolution's bits and the SVG, the PNG.
+static PNGS: Recent<(u32, String), Vec<u8>> = Recent::new(PNGS_KEPT);
 
 /// Forget the images [`to_png_dpi`] keeps (the bench times each run as a fresh process).
 pub fn forget_pngs() {
-    PNGS.lock().unwrap_or_else(PoisonError::into_inner).clear();
+    PNGS.clear();
 }
 
 /// [`to_png_dpi`] for several SVGs at once, rendered in parallel; the results in order.

@@ -16,6 +16,19 @@ use super::structure::mechanism;
 use crate::scale::{Quantity, Scale};
 use std::path::Path;
 
+/// The scene files (`*.toml`) of `dir`, sorted; an entry that cannot be read is passed over.
+///
+/// # Errors
+/// The folder cannot be read.
+pub fn files_in(dir: &Path) -> std::io::Result<Vec<std::path::PathBuf>> {
+    let mut files: Vec<_> = std::fs::read_dir(dir)?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    files.sort();
+    Ok(files)
+}
+
 /// The default number of crank positions.
 const DEFAULT_COUNT: i64 = 12;
 /// The most crank positions a scene may ask for (one per degree).

@@ -25,7 +25,7 @@ pub mod user_table;
 pub use crate::kinematics::KinematicsSpec;
 pub use error::{Problem, SceneError};
 pub use keys::Key;
-pub use load::{load, parse, read};
+pub use load::{files_in, load, parse, read};
 pub use model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 
 #[cfg(test)]
