@@ -8,8 +8,10 @@
 //!   abscissa is the angle the crank has turned through (it grows with time whatever the sense
 //!   of ω₁), so the analogues turn into velocities and accelerations with |ω₁| and |ω₁|² and
 //!   compare, signs included, with the analytic ω₁·dX/dφ₁ and ω₁²·d²X/dφ₁² at the nodes.
-//! * **Analytic kernel** — [`Program::solve_into`] (positions, first and second analogues)
-//!   over many crank angles on one core.
+//! * **Analytic kernel** — positions with their first and second analogues on one core, by
+//!   sweeps of a crank turn ([`Program::sweep`]) and each angle on its own
+//!   ([`Program::solve_into`]); built with the `peer` feature, the `four-bar` crate's
+//!   positions on the same crank-rocker beside them, with the ratio.
 //! * **Construction route** — the recorded compass construction of a position with its
 //!   velocity and acceleration plans.
 //! * **Force route** — one position's force polygons and Zhukovsky's lever from its plans,
@@ -35,6 +37,7 @@ mod batch;
 mod cam;
 mod chords;
 mod flywheel;
+mod peer;
 mod plot;
 mod rack;
 mod rates;
@@ -50,7 +53,7 @@ use crate::scene::{self, PlateKind, Scene};
 use chords::{chord_rows, Charted, Coord};
 use rates::{
     construction_rate, force_rates, kernel_rate, libm_floor_rate, plate_time, png_time,
-    project_time, scene_time, PNG_DPI,
+    project_time, scene_time, sweep_rate, PNG_DPI, SWEEP_STEPS,
 };
 use std::f64::consts::TAU;
 use std::hint::black_box;
@@ -230,13 +233,10 @@ impl Subject {
     fn poses(&self, n: usize) -> Result<Vec<Pose>, BenchError> {
         let mut pose = Pose::default();
         let mut out = Vec::with_capacity(n);
-        for k in 0..n {
-            let phi = self.crank_angle(k as f64 * TAU / n as f64);
-            self.prog
-                .solve_into(phi, k > 0, &mut pose)
-                .map_err(|u| self.fail(format!("group {}: {}", u.group + 1, u.detail)))?;
-            out.push(pose.clone());
-        }
+        let step = self.crank_angle(TAU / n as f64);
+        self.prog
+            .sweep((0.0, step), n, &mut pose, |_, p| out.push(p.clone()))
+            .map_err(|u| self.fail(format!("group {}: {}", u.group + 1, u.detail)))?;
         Ok(out)
     }
 }
@@ -310,15 +310,29 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
             "the work integrated on 720 panels and the energy equation solved for J_м (bracketed)"
                 .into(),
     });
+    let peer = peer::measure(&four_bar, reps)?;
     for s in [&four_bar, &shaper] {
         let stem = &s.scene.stem;
+        let rate = sweep_rate(s, reps)?;
+        let against = match &peer {
+            Some(p) if s.scene.stem == four_bar.scene.stem => format!(
+                "; {:.2}× the `four-bar` crate's positions alone, same run",
+                rate / p.rate
+            ),
+            _ => String::new(),
+        };
         throughput.push(Throughput {
             name: format!("analytic {stem}"),
+            per_second: rate,
+            note: format!("one position: every point and link with dX/dφ₁, d²X/dφ₁², in sweeps of a turn at {SWEEP_STEPS} steps (sweep, 1 core){against}"),
+        });
+        throughput.push(Throughput {
+            name: format!("analytic {stem} (one angle)"),
             per_second: kernel_rate(s, reps)?,
-            note: "one position: every point and link with dX/dφ₁, d²X/dφ₁² (solve_into, 1 core)"
-                .into(),
+            note: "the same, each angle solved on its own (solve_into, 1 core)".into(),
         });
     }
+    throughput.push(peer::row(peer.as_ref(), &four_bar));
     throughput.push(Throughput {
         name: "libm floor four-bar".into(),
         per_second: libm_floor_rate(reps),

@@ -12,15 +12,30 @@ use crate::study::Session;
 use std::f64::consts::TAU;
 use std::hint::black_box;
 
-/// Analytic positions per second (positions with both analogues).
+/// Analytic positions per second (positions with both analogues), each angle solved on its
+/// own.
 pub(super) fn kernel_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
-    let count = reps.kernel.max(1);
-    // The crank steps by 0.1° in its own sense, the angle kept within one turn.
-    let step = s.crank_angle(TAU / 3600.0);
     let mut pose = Pose::default();
     s.prog
         .solve_into(0.0, false, &mut pose)
         .map_err(|u| s.fail(u.detail))?;
+    per_angle_rate(s, reps, |phi| {
+        s.prog.solve_into(phi, true, &mut pose)?;
+        black_box(&pose);
+        Ok(())
+    })
+    .map_err(|u: linkage::Unassembled| s.fail(u.detail))
+}
+
+/// Calls per second of `solve` at crank angles stepping by 0.1° in the crank's own sense (the
+/// angle kept within one turn), `reps.kernel` calls a timing.
+pub(super) fn per_angle_rate<E>(
+    s: &Subject,
+    reps: Reps,
+    mut solve: impl FnMut(f64) -> Result<(), E>,
+) -> Result<f64, E> {
+    let count = reps.kernel.max(1);
+    let step = s.crank_angle(TAU / SWEEP_STEPS as f64);
     let t = best_time(reps.best_of.max(3), || {
         let mut phi = 0.0f64;
         for _ in 0..count {
@@ -28,13 +43,33 @@ pub(super) fn kernel_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
             if phi.abs() >= TAU {
                 phi = 0.0;
             }
-            s.prog.solve_into(black_box(phi), true, &mut pose)?;
-            black_box(&pose);
+            solve(black_box(phi))?;
+        }
+        Ok(())
+    })?;
+    Ok(count as f64 / t)
+}
+
+/// Crank positions of one sweep: a turn at 0.1° steps.
+pub(super) const SWEEP_STEPS: usize = 3600;
+
+/// Analytic positions per second (positions with both analogues) by sweeps of one crank turn
+/// at 0.1° steps ([`crate::linkage::Program::sweep`]: continuity kept, the crank's direction
+/// turned from one step to the next), as many turns as make up the count.
+pub(super) fn sweep_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
+    let turns = reps.kernel.div_ceil(SWEEP_STEPS);
+    let step = s.crank_angle(TAU / SWEEP_STEPS as f64);
+    let mut pose = Pose::default();
+    let t = best_time(reps.best_of.max(3), || {
+        for _ in 0..turns {
+            s.prog.sweep((0.0, step), SWEEP_STEPS, &mut pose, |_, p| {
+                black_box(p);
+            })?;
         }
         Ok(())
     })
     .map_err(|u: linkage::Unassembled| s.fail(u.detail))?;
-    Ok(count as f64 / t)
+    Ok((turns * SWEEP_STEPS) as f64 / t)
 }
 
 /// The floor under the four-bar's kernel: its one transcendental call (the crank's sin and

@@ -17,7 +17,7 @@ mod structure;
 #[cfg(test)]
 mod tests;
 
-pub use analytic::{NearPivot, Pose, Unassembled, NEAR_PIVOT_RATIO};
+pub use analytic::{NearPivot, Pose, Unassembled, NEAR_PIVOT_RATIO, SWEEP_ANCHOR};
 pub use construction::{Built, Failed};
 pub use extremes::{Extremes, OutputCoord};
 pub use groups::{GroupPairs, GroupView};

@@ -74,6 +74,7 @@ fn quick_bench_writes_three_files_and_errors_fall_with_n() {
     let throughput = v["throughput"].as_array().expect("throughput");
     for name in [
         "analytic four-bar",
+        "analytic four-bar (one angle)",
         "analytic shaper",
         "construction four-bar",
         "construction shaper",

@@ -88,6 +88,10 @@ pub struct Unassembled {
     pub detail: String,
 }
 
+/// Steps of a [`Program::sweep`] between crank directions taken from sin and cos (between,
+/// each is the one before turned through the step: rounding grows by about an ulp a step).
+pub const SWEEP_ANCHOR: usize = 16;
+
 /// Mutable state of one solve, borrowed from a [`Pose`].
 struct State<'a> {
     pose: &'a mut Pose,
@@ -193,10 +197,48 @@ impl Program {
         continuity: bool,
         pose: &mut Pose,
     ) -> Result<(), Unassembled> {
+        let continuity = self.prepare(continuity, pose);
+        self.solve_at(phi, DVec2::from_angle(phi), continuity, pose)
+    }
+
+    /// Solve at the crank angles φ₀ + k·Δφ, k = 0 … n − 1, handing each position to `each`
+    /// (k, pose) as it is solved; after the first, each position takes the solution nearest
+    /// to the one before (continuity). The trigonometry is shared: the crank's direction
+    /// advances by the rotation through Δφ and is taken afresh from sin and cos every
+    /// [`SWEEP_ANCHOR`] steps, so that it stays within a few ulps of [`Program::solve_into`]'s.
+    /// Stops at the first position that cannot be assembled.
+    pub fn sweep(
+        &self,
+        (phi0, step): (f64, f64),
+        n: usize,
+        pose: &mut Pose,
+        mut each: impl FnMut(usize, &Pose),
+    ) -> Result<(), Unassembled> {
+        let turn = DVec2::from_angle(step);
+        let mut e = DVec2::X;
+        // The frame's points are set once: `each` sees the pose but cannot change it.
+        self.prepare(false, pose);
+        for k in 0..n {
+            let phi = phi0 + k as f64 * step;
+            e = if k % SWEEP_ANCHOR == 0 {
+                DVec2::from_angle(phi)
+            } else {
+                turn.rotate(e)
+            };
+            self.solve_at(phi, e, k > 0, pose)?;
+            each(k, pose);
+        }
+        Ok(())
+    }
+
+    /// Size `pose`'s buffers for this program (once: a pose reused for the same program keeps
+    /// them) and set the frame's points; whether continuity can be kept (the pose held a
+    /// position of this program).
+    #[inline]
+    fn prepare(&self, continuity: bool, pose: &mut Pose) -> bool {
         let n = self.names.len();
-        let continuity = continuity && pose.p.len() == n;
-        // Size the buffers once; a pose reused for the same program keeps them.
-        if pose.p.len() != n || pose.dir.len() != self.link_count {
+        let sized = pose.p.len() == n && pose.dir.len() == self.link_count;
+        if !sized {
             for v in [&mut pose.p, &mut pose.dp, &mut pose.ddp] {
                 v.resize(n, DVec2::ZERO);
             }
@@ -206,6 +248,22 @@ impl Program {
             pose.dir.resize(self.link_count, DVec2::X);
             pose.origin.resize(self.link_count, 0);
         }
+        for (k, f) in self.fixed.iter().enumerate() {
+            pose.p[k] = *f;
+            pose.dp[k] = DVec2::ZERO;
+            pose.ddp[k] = DVec2::ZERO;
+        }
+        continuity && sized
+    }
+
+    /// Solve at crank angle `phi` whose unit vector is `e` (`pose` prepared).
+    fn solve_at(
+        &self,
+        phi: f64,
+        e: DVec2,
+        continuity: bool,
+        pose: &mut Pose,
+    ) -> Result<(), Unassembled> {
         pose.crossing_sin.clear();
         pose.toggle = None;
         pose.near_pivot.clear();
@@ -215,16 +273,7 @@ impl Program {
             fixed_dirs: &self.fixed_dirs,
             continuity,
         };
-        for (k, f) in self.fixed.iter().enumerate() {
-            st.set(
-                k,
-                Jet {
-                    p: *f,
-                    ..Jet::default()
-                },
-            );
-        }
-        let crank = AngleJet::at(phi, 1.0, 0.0);
+        let crank = AngleJet { d: 1.0, dd: 0.0, e };
         let pin = carried(
             st.jet(self.centre),
             crank,

@@ -1,6 +1,7 @@
 //! The analytic twin against finite differences.
 
 use super::*;
+use crate::geom::DVec2;
 
 /// The analogues agree with 5-point central differences of the positions (a consistency
 /// check of the differentiation, not the method: the twin itself never differentiates
@@ -59,4 +60,76 @@ fn analogues_match_finite_differences_for_every_kind() {
             }
         }
     }
+}
+
+/// A sweep gives, position by position, what solving each angle on its own with continuity
+/// gives: the same angle, and values within the few ulps by which the crank's turned
+/// direction differs from the one taken from sin and cos.
+#[test]
+fn a_sweep_is_each_angle_solved_on_its_own() {
+    let (phi0, step, n) = (0.1, -0.013, 3 * SWEEP_ANCHOR + 5);
+    for m in crate::linkage::tests::one_of_each_kind() {
+        let prog = Program::compile(&m).unwrap();
+        let mut alone = Pose::default();
+        let mut swept = Pose::default();
+        let mut seen = 0;
+        let result = prog.sweep((phi0, step), n, &mut swept, |k, pose| {
+            seen += 1;
+            let phi = phi0 + k as f64 * step;
+            assert_eq!(pose.phi, phi);
+            prog.solve_into(phi, k > 0, &mut alone).unwrap();
+            let close = |a: DVec2, b: DVec2| (a - b).length() <= 1e-12 * (1.0 + b.length());
+            for i in 0..prog.names.len() {
+                assert!(
+                    close(pose.p[i], alone.p[i]),
+                    "{} at step {k}",
+                    prog.names[i]
+                );
+                assert!(
+                    close(pose.dp[i], alone.dp[i]),
+                    "{} at step {k}",
+                    prog.names[i]
+                );
+                assert!(
+                    close(pose.ddp[i], alone.ddp[i]),
+                    "{} at step {k}",
+                    prog.names[i]
+                );
+            }
+            for l in 1..prog.link_count {
+                assert!(close(pose.dir[l], alone.dir[l]), "link {l} at step {k}");
+                let rates = DVec2::new(pose.dangle[l], pose.ddangle[l]);
+                let want = DVec2::new(alone.dangle[l], alone.ddangle[l]);
+                assert!(close(rates, want), "link {l} at step {k}");
+            }
+            assert_eq!(pose.crossing_sin.len(), alone.crossing_sin.len());
+        });
+        result.unwrap();
+        assert_eq!(seen, n);
+    }
+}
+
+/// A sweep stops at the first position that cannot be assembled, with that group's
+/// diagnosis, after handing over every position before it.
+#[test]
+fn a_sweep_stops_where_the_mechanism_cannot_be_assembled() {
+    let mut m = crate::linkage::tests::one_of_each_kind().remove(0);
+    // Coupler and rocker 0.12 + 0.18 = 0.30 m cannot span the 0.36 m between the crank pin
+    // and the rocker's pivot when the crank points away from it.
+    let crate::linkage::Dyad::Rrr { la, .. } = &mut m.groups[0].dyad else {
+        panic!("the first mechanism is a four-bar");
+    };
+    *la = 0.12;
+    let prog = Program::compile(&m).unwrap();
+    let step = std::f64::consts::TAU / 72.0;
+    let first_unassembled = (0..72)
+        .position(|k| prog.solve(k as f64 * step, None).is_err())
+        .expect("a position that cannot be assembled");
+    assert!(first_unassembled > 0);
+    let mut seen = Vec::new();
+    let err = prog
+        .sweep((0.0, step), 72, &mut Pose::default(), |k, _| seen.push(k))
+        .unwrap_err();
+    assert_eq!(err.group, 0);
+    assert_eq!(seen, (0..first_unassembled).collect::<Vec<_>>());
 }
