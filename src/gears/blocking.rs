@@ -30,7 +30,7 @@
 //! jump (the first crossing has moved to another branch). Everything is bounded: a fixed
 //! fan, a fixed number of samples per ray, at most 200 steps of the bracket.
 
-use super::involute::{inv, inv_inverse, inv_with_tan};
+use super::involute::{inv, inv_inverse_with_tan, inv_with_tan};
 use super::{BasicRack, Cutting, GearError, Pair, PairSpec};
 use crate::geom::{golden_max, illinois, DVec2};
 use crate::kept::Recent;
@@ -353,8 +353,9 @@ impl Blocking {
         let zz = self.z.map(f64::from);
         let zs = zz[0] + zz[1];
         let x_sum = xs[0] + xs[1];
-        let alpha_w = inv_inverse(2.0 * x_sum * ta / zs + inv_alpha).ok()?;
-        let y = zs / 2.0 * (ca / alpha_w.cos() - 1.0);
+        let (alpha_w, tan_w) = inv_inverse_with_tan(2.0 * x_sum * ta / zs + inv_alpha).ok()?;
+        // 1 / cos α_w = √(1 + tg²α_w).
+        let y = zs / 2.0 * (ca * (1.0 + tan_w * tan_w).sqrt() - 1.0);
         let dy = x_sum - y;
         let r = zz.map(|z| z / 2.0);
         let rb = r.map(|r| r * ca);
@@ -375,7 +376,7 @@ impl Blocking {
             2.0 * ra[i] * (half + inv_alpha - inv_with_tan(aa, tip[i] / rb[i]))
         });
         // N₁N₂ from the base circles: (r_b1 + r_b2) tg α_w.
-        let g = (rb[0] + rb[1]) * alpha_w.tan();
+        let g = (rb[0] + rb[1]) * tan_w;
         let eps = (tip[0] + tip[1] - g) / (PI * ca);
         let near_end = [g - tip[1], g - tip[0]];
         let rho_l = [0, 1].map(|i| r[i] * sa_ - (self.hl - xs[i]) / sa_);

@@ -56,18 +56,30 @@ const MAX_ANGLE: f64 = FRAC_PI_2 - 1e-6;
 /// # Errors
 /// [`GearError::InvoluteDomain`] for a negative, non-finite or too large `v`.
 pub fn inv_inverse(v: f64) -> Result<f64, GearError> {
+    inv_inverse_with_tan(v).map(|(alpha, _)| alpha)
+}
+
+/// [`inv_inverse`] with tg α: the last Newton step's tangent carried through the step,
+/// tg(α + δ) = tg α + (1 + tg²α)·δ·(1 + tg α·δ) + O(δ³) (within an ulp for a step that lands
+/// on the root).
+///
+/// # Errors
+/// As [`inv_inverse`].
+pub fn inv_inverse_with_tan(v: f64) -> Result<(f64, f64), GearError> {
     if !(v.is_finite() && v >= 0.0 && v <= inv(MAX_ANGLE)) {
         return Err(GearError::InvoluteDomain { value: v });
     }
     if v == 0.0 {
-        return Ok(0.0);
+        return Ok((0.0, 0.0));
     }
     let (mut lo, mut hi) = (0.0_f64, MAX_ANGLE);
-    // inv α = α³/3 + 2α⁵/15 + …, so with q = (3 inv α)^⅓, α = q − 2q³/15 + O(q⁵): a start
-    // inside the bracket (the series' second term where it helps, q < 1, below about 50°).
+    // inv α = α³/3 + 2α⁵/15 + 17α⁷/315 + …, so with q = (3 inv α)^⅓,
+    // α = q − 2q³/15 + 3q⁵/175 + O(q⁷): a start inside the bracket (the series where it
+    // helps, q < 1, below about 50°; 3e-6 of α at 20°).
     let q = (3.0 * v).cbrt();
+    let q2 = q * q;
     let mut a = if q < 1.0 {
-        q * (1.0 - 2.0 * q * q / 15.0)
+        q * (1.0 - q2 * (2.0 / 15.0 - q2 * (3.0 / 175.0)))
     } else {
         q
     }
@@ -76,7 +88,7 @@ pub fn inv_inverse(v: f64) -> Result<f64, GearError> {
         let (inv_a, t) = inv_and_tan(a);
         let f = inv_a - v;
         if f == 0.0 {
-            return Ok(a);
+            return Ok((a, t));
         }
         if f > 0.0 {
             hi = a;
@@ -84,17 +96,25 @@ pub fn inv_inverse(v: f64) -> Result<f64, GearError> {
             lo = a;
         }
         let newton = a - f / (t * t);
-        let next = if newton > lo && newton < hi {
-            newton
+        if newton > lo && newton < hi {
+            // Newton's error after a step δ is about δ²·inv″/(2 inv′) = δ²(1 + tg²)/tg: once
+            // that is below a quarter of an ulp, the step has landed on the root.
+            let step = newton - a;
+            if step * step * (1.0 + t * t) <= 0.25 * f64::EPSILON * a * t
+                || step.abs() <= 4.0 * f64::EPSILON * a
+            {
+                return Ok((newton, t + (1.0 + t * t) * step * (1.0 + t * step)));
+            }
+            a = newton;
         } else {
-            0.5 * (lo + hi)
-        };
-        if (next - a).abs() <= 4.0 * f64::EPSILON * a || hi - lo <= 4.0 * f64::EPSILON * hi {
-            return Ok(next);
+            let next = 0.5 * (lo + hi);
+            if (next - a).abs() <= 4.0 * f64::EPSILON * a || hi - lo <= 4.0 * f64::EPSILON * hi {
+                return Ok((next, next.tan()));
+            }
+            a = next;
         }
-        a = next;
     }
-    Ok(a)
+    Ok((a, a.tan()))
 }
 
 /// The inverse by plain Newton iteration from (3v)^{1/3} (seed 002's recipe), the twin of

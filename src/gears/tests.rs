@@ -2,13 +2,16 @@
 //! oracles and properties.
 
 use super::generate::{generate, Generation};
-use super::involute::{inv_inverse_newton, involute_point, origin_angle, thickness_at};
+use super::involute::{
+    inv_inverse_newton, inv_inverse_with_tan, involute_point, origin_angle, thickness_at,
+};
 use super::mesh::meshing;
 use super::*;
 use crate::construct::{Context, Drafting, Item, Role};
 use crate::geom::{DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use proptest::prelude::*;
+use std::f64::consts::FRAC_PI_2;
 
 const GOST: BasicRack = BasicRack::GOST_13755;
 
@@ -174,6 +177,23 @@ fn inverse_involute_round_trip_on_0_to_60_degrees() {
     }
     assert!(inv_inverse(-1e-3).is_err() && inv_inverse(f64::NAN).is_err());
     assert!((inv(20f64.to_radians()) - 0.014904).abs() < 1e-6);
+}
+
+/// The tangent carried through the last Newton step is tg α to two ulps, from the smallest
+/// angles (the series' range) to 89.9999°, where the bracket's bisection takes over.
+#[test]
+fn inverse_involute_with_its_tangent() {
+    for k in 1..=9000 {
+        let a = (k as f64 * 0.01).to_radians().min(FRAC_PI_2 - 1e-6);
+        let (back, t) = inv_inverse_with_tan(inv(a)).unwrap();
+        let exact = back.tan();
+        assert!(
+            (t - exact).abs() <= 2.0 * f64::EPSILON * exact,
+            "{a}: {t} vs {exact}"
+        );
+    }
+    assert_eq!(inv_inverse_with_tan(0.0).unwrap(), (0.0, 0.0));
+    assert!(inv_inverse_with_tan(f64::INFINITY).is_err());
 }
 
 #[test]
