@@ -50,8 +50,9 @@ const MAX_ANGLE: f64 = FRAC_PI_2 - 1e-6;
 ///
 /// Safeguarded Newton iteration inside a bracket [lo, hi] that always contains the root
 /// (inv is increasing): each Newton step that leaves the bracket is replaced by bisection,
-/// so the iteration converges for every admissible `v`; it stops when the bracket or the
-/// step is at the resolution of f64.
+/// so the iteration converges for every admissible `v`. It starts from three terms of the
+/// series and stops when the error Newton's step leaves (estimated from the step) or the
+/// bracket is at the resolution of f64: two steps at a gear's pressure angles.
 ///
 /// # Errors
 /// [`GearError::InvoluteDomain`] for a negative, non-finite or too large `v`.
