@@ -205,7 +205,8 @@ impl Program {
     /// (k, pose) as it is solved; after the first, each position takes the solution nearest
     /// to the one before (continuity). The trigonometry is shared: the crank's direction
     /// advances by the rotation through Δφ and is taken afresh from sin and cos every
-    /// [`SWEEP_ANCHOR`] steps, so that it stays within a few ulps of [`Program::solve_into`]'s.
+    /// [`SWEEP_ANCHOR`] steps, so that it stays within about that many ulps of
+    /// [`Program::solve_into`]'s.
     /// Stops at the first position that cannot be assembled.
     pub fn sweep(
         &self,
