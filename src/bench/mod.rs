@@ -53,7 +53,7 @@ use crate::scene::{self, PlateKind, Scene};
 use chords::{chord_rows, Charted, Coord};
 use rates::{
     construction_rate, force_rates, kernel_rate, libm_floor_rate, plate_time, png_time,
-    project_time, scene_time, sweep_rate, PNG_DPI, SWEEP_STEPS,
+    project_time, scene_time, sweep_rate, PNG_DPI, TURN_STEPS,
 };
 use std::f64::consts::TAU;
 use std::hint::black_box;
@@ -324,7 +324,7 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
         throughput.push(Throughput {
             name: format!("analytic {stem}"),
             per_second: rate,
-            note: format!("one position: every point and link with dX/dφ₁, d²X/dφ₁², in sweeps of a turn at {SWEEP_STEPS} steps (sweep, 1 core){against}"),
+            note: format!("one position: every point and link with dX/dφ₁, d²X/dφ₁², in sweeps of a turn at {TURN_STEPS} steps (sweep, 1 core){against}"),
         });
         throughput.push(Throughput {
             name: format!("analytic {stem} (one angle)"),

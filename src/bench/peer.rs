@@ -93,7 +93,13 @@ mod with_peer {
         };
         let at = s.prog.index(&joint).ok_or_else(not_a_four_bar)?;
         let ground = pivot - centre;
-        let size = ground.length() + m.crank.length + la + lb;
+        let l1 = ground.length();
+        let size = l1 + m.crank.length + la + lb;
+        // The crate's crank angle is taken from its ground line.
+        let rotation = ground.y.atan2(ground.x);
+        let mut unnorm = UnNorm::from_driver(m.crank.length);
+        unnorm.set_origin(centre.x, centre.y);
+        unnorm.set_rotation(rotation);
         let mut pose = Pose::default();
         let ours: Vec<_> = (0..CHECKS)
             .map(|k| {
@@ -106,19 +112,14 @@ mod with_peer {
             .map_err(|u| s.fail(u.detail))?;
         for stat in [Stat::C1B1, Stat::C2B1] {
             let norm = NormFourBar {
-                l1: ground.length(),
+                l1,
                 l3: la,
                 l4: lb,
                 l5: 0.0,
                 g: 0.0,
                 stat,
             };
-            // The crate's crank angle is taken from its ground line.
-            let rotation = ground.y.atan2(ground.x);
-            let mut unnorm = UnNorm::from_driver(m.crank.length);
-            unnorm.set_origin(centre.x, centre.y);
-            unnorm.set_rotation(rotation);
-            let fb = FourBar::new(unnorm, norm);
+            let fb = FourBar::new(unnorm.clone(), norm);
             let agrees = ours.iter().all(|&(phi, p)| {
                 fb.pos(phi - rotation)
                     .is_some_and(|js| (js[3][0] - p.x).hypot(js[3][1] - p.y) <= 1e-9 * size)

@@ -35,7 +35,7 @@ pub(super) fn per_angle_rate<E>(
     mut solve: impl FnMut(f64) -> Result<(), E>,
 ) -> Result<f64, E> {
     let count = reps.kernel.max(1);
-    let step = s.crank_angle(TAU / SWEEP_STEPS as f64);
+    let step = s.crank_angle(TAU / TURN_STEPS as f64);
     let t = best_time(reps.best_of.max(3), || {
         let mut phi = 0.0f64;
         for _ in 0..count {
@@ -50,26 +50,27 @@ pub(super) fn per_angle_rate<E>(
     Ok(count as f64 / t)
 }
 
-/// Crank positions of one sweep: a turn at 0.1° steps.
-pub(super) const SWEEP_STEPS: usize = 3600;
+/// Crank positions of a turn in the kernel's rows: 0.1° steps, for a sweep and for the
+/// angles solved one at a time alike.
+pub(super) const TURN_STEPS: usize = 3600;
 
 /// Analytic positions per second (positions with both analogues) by sweeps of one crank turn
 /// at 0.1° steps ([`crate::linkage::Program::sweep`]: continuity kept, the crank's direction
 /// turned from one step to the next), as many turns as make up the count.
 pub(super) fn sweep_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
-    let turns = reps.kernel.div_ceil(SWEEP_STEPS);
-    let step = s.crank_angle(TAU / SWEEP_STEPS as f64);
+    let turns = reps.kernel.div_ceil(TURN_STEPS);
+    let step = s.crank_angle(TAU / TURN_STEPS as f64);
     let mut pose = Pose::default();
     let t = best_time(reps.best_of.max(3), || {
         for _ in 0..turns {
-            s.prog.sweep((0.0, step), SWEEP_STEPS, &mut pose, |_, p| {
+            s.prog.sweep((0.0, step), TURN_STEPS, &mut pose, |_, p| {
                 black_box(p);
             })?;
         }
         Ok(())
     })
     .map_err(|u: linkage::Unassembled| s.fail(u.detail))?;
-    Ok((turns * SWEEP_STEPS) as f64 / t)
+    Ok((turns * TURN_STEPS) as f64 / t)
 }
 
 /// The floor under the four-bar's kernel: its one transcendental call (the crank's sin and

@@ -244,7 +244,12 @@ impl Cycle {
 
     /// ω² at ψ with flywheel `j_fw` and initial energy `t0` (clamped at 0).
     fn w2(&self, psi: f64, j_fw: f64, t0: f64) -> f64 {
-        (2.0 * (t0 + self.delta_t(psi)) / (self.j_at(psi) + j_fw)).max(0.0)
+        Self::omega2(t0 + self.delta_t(psi), self.j_at(psi) + j_fw)
+    }
+
+    /// ω² = 2T/J from the kinetic energy `t` and the whole reduced inertia `j` (clamped at 0).
+    fn omega2(t: f64, j: f64) -> f64 {
+        (2.0 * t / j).max(0.0)
     }
 
     /// ω(ψ), rad/s, with flywheel `j_fw` and energy `t0` at ψ = 0.
@@ -275,7 +280,7 @@ impl Cycle {
         let at_nodes = || {
             (0..self.psi.len()).map(move |i| {
                 let dt = self.m_drive * self.psi[i].clamp(0.0, TAU) + self.work[i];
-                (2.0 * (t0 + dt) / (self.j[i] + j_fw)).max(0.0)
+                Self::omega2(t0 + dt, self.j[i] + j_fw)
             })
         };
         let (pa, a) = self.extremum_from(at_nodes(), |p| self.w2(p, j_fw, t0), true);

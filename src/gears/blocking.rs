@@ -24,11 +24,12 @@
 //! A reference point inside the admissible region (the grid point of the plane's window
 //! with the largest least margin) is the centre of a fan of rays; on each ray every index
 //! less its limit is sampled outward and its first change of sign bracketed to 10⁻¹³ (x per
-//! module, so 10⁻¹³ m; regula falsi, [`crate::geom::illinois`]), far below the 10⁻⁹ asked. A curve is the ordered run of these first
-//! crossings; a ray that never crosses (within the window, before the formulas leave their
-//! domain) adds nothing, and a run breaks where it does not or where consecutive crossings
-//! jump (the first crossing has moved to another branch). Everything is bounded: a fixed
-//! fan, a fixed number of samples per ray, at most 200 steps of the bracket.
+//! module, so 10⁻¹³ m; regula falsi, [`crate::geom::illinois`]), far below the 10⁻⁹ asked.
+//! A curve is the ordered run of these first crossings; a ray that never crosses (within
+//! the window, before the formulas leave their domain) adds nothing, and a run breaks where
+//! it does not or where consecutive crossings jump (the first crossing has moved to another
+//! branch). Everything is bounded: a fixed fan, a fixed number of samples per ray, at most
+//! 200 steps of the bracket.
 
 use super::involute::{inv, inv_inverse_with_tan, inv_with_tan};
 use super::{BasicRack, Cutting, GearError, Pair, PairSpec};
