@@ -190,12 +190,12 @@ fn files_of(
     let Options {
         lang, formats, dpi, ..
     } = *options;
-    let mut svgs: Vec<(PathBuf, String)> = Vec::new();
+    let mut plates: Vec<(PathBuf, Plate)> = Vec::new();
     let mut sets: Vec<(PathBuf, std::ops::Range<usize>)> = Vec::new();
     let mut notes: Vec<(&Scene, crate::note::Note)> = Vec::new();
     for session in sessions {
         let s = session.scene();
-        let first = svgs.len();
+        let first = plates.len();
         let all = plates_of(session, lang)?;
         if formats.note {
             let note = crate::note::compose_with(session, lang, all.clone())
@@ -212,13 +212,19 @@ fn files_of(
                     error,
                 })?;
             }
-            svgs.push((base, plate::to_svg(&plate)));
+            plates.push((base, plate));
         }
         if formats.pdf {
             let path = out.join(&s.stem).join(format!("{}.pdf", s.stem));
-            sets.push((path, first..svgs.len()));
+            sets.push((path, first..plates.len()));
         }
     }
+    // Each sheet written as SVG on a core of its own (a blocking contour's sheet is half a
+    // megabyte of SVG).
+    let svgs: Vec<(PathBuf, String)> = plates
+        .into_par_iter()
+        .map(|(base, plate)| (base, plate::to_svg(&plate)))
+        .collect();
     // A sheet both a PNG and a PDF page is parsed (its text laid out) once, for both.
     let parsed: Vec<plate::ParsedSvg<'_>> = match formats.png && formats.pdf {
         true => svgs

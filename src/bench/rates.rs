@@ -11,6 +11,7 @@ use crate::sheets;
 use crate::study::Session;
 use std::f64::consts::TAU;
 use std::hint::black_box;
+use std::path::{Path, PathBuf};
 
 /// Analytic positions per second (positions with both analogues), each angle solved on its
 /// own.
@@ -176,28 +177,39 @@ pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<(f64, usize), BenchErr
 }
 
 /// Seconds to build every sheet of `scene` (a fresh session) and write each as SVG and as
-/// PNG at [`PNG_DPI`], in memory, the sheets rasterised in parallel — `tmm render --format
-/// svg,png` but the files — and the number of sheets.
+/// PNG at [`PNG_DPI`] — `tmm render --format svg,png` in memory ([`render::files`]), the
+/// files but not written — and the number of sheets.
 pub(super) fn scene_time(scene: &Scene, reps: Reps) -> Result<(f64, usize), BenchError> {
-    let mut sheets = 0;
+    let formats = render::Formats {
+        svg: true,
+        png: true,
+        ..render::Formats::default()
+    };
+    let mut pngs = 0;
     let t = best_time(reps.best_of.min(3), || {
-        let plates =
-            render::plates(scene, Lang::Ru, Drafting::EXACT).map_err(|e| render_error(scene, e))?;
-        let svgs: Vec<String> = plates
+        let files = rendered(scene, formats)?;
+        pngs = files
             .iter()
-            .map(|(_, p)| crate::plate::to_svg(p))
-            .collect();
-        sheets = svgs.len();
-        crate::plate::to_png_dpi_all(&svgs, PNG_DPI as f32)
-            .into_iter()
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(|e| BenchError::Plate {
-                scene: scene.stem.clone(),
-                plate: "png".into(),
-                detail: e.to_string(),
-            })
-    })?;
-    Ok((t, sheets))
+            .filter(|(p, _)| p.extension().is_some_and(|e| e == "png"))
+            .count();
+        Ok(files)
+    })
+    .map_err(|e| render_error(scene, e))?;
+    Ok((t, pngs))
+}
+
+/// Every file `tmm render` makes of `scene` in `formats` at [`PNG_DPI`], in memory.
+fn rendered(
+    scene: &Scene,
+    formats: render::Formats,
+) -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
+    let options = render::Options {
+        lang: Lang::Ru,
+        drafting: Drafting::EXACT,
+        formats,
+        dpi: PNG_DPI,
+    };
+    render::files(std::slice::from_ref(scene), Path::new("bench"), &options)
 }
 
 /// A scene's sheets that cannot be built, as the bench's error.
@@ -271,22 +283,15 @@ pub(super) fn project_time(s: &Subject, reps: Reps) -> Result<(f64, usize), Benc
         plate: "project".into(),
         detail: e.to_string(),
     };
-    let options = render::Options {
-        lang: Lang::Ru,
-        drafting: Drafting::EXACT,
-        formats: render::Formats {
-            svg: true,
-            png: true,
-            pdf: true,
-            note: true,
-        },
-        dpi: PNG_DPI,
+    let formats = render::Formats {
+        svg: true,
+        png: true,
+        pdf: true,
+        note: true,
     };
-    let out = std::path::Path::new("bench");
-    let scenes = std::slice::from_ref(&s.scene);
     let mut note = 0;
     let t = best_time(reps.best_of.min(3), || {
-        let files = render::files(scenes, out, &options)?;
+        let files = rendered(&s.scene, formats)?;
         note = files
             .iter()
             .filter(|(p, _)| p.to_string_lossy().ends_with("-note.pdf"))
