@@ -10,6 +10,7 @@
 use super::fonts::{family, font_database};
 use super::PlateError;
 use crate::kept::Recent;
+use memmap2::MmapMut;
 use rayon::prelude::*;
 use resvg::tiny_skia::{PixmapMut, Transform};
 use resvg::usvg::{Options, Tree};
@@ -313,7 +314,7 @@ impl Job<'_> {
     /// The `tw` × `th` tile at (`x0`, `y0`), rendered on a transparent canvas (`convert`
     /// composites it on white; a plate paints its own white sheet first anyway).
     fn tile(&self, x0: u32, y0: u32, tw: u32, th: u32) -> Result<Canvas, PlateError> {
-        let mut canvas = Canvas::new(tw, th);
+        let mut canvas = Canvas::new(tw, th)?;
         let mut pixmap = canvas.pixmap()?;
         let ts = Transform::from_row(
             self.scale.0,
@@ -331,31 +332,66 @@ impl Job<'_> {
 /// The pixel buffers of finished tiles, kept for the next: a 150 dpi A1 sheet is one tile of
 /// 70 MB, and a fresh one costs its page faults on every sheet (ten shaper variants as PNG:
 /// 3.0 s of system time with fresh canvases, 0.17 s with kept ones).
-static BUFFERS: Mutex<Vec<Vec<u8>>> = Mutex::new(Vec::new());
+static BUFFERS: Mutex<Vec<MmapMut>> = Mutex::new(Vec::new());
 
-/// A transparent `w` × `h` RGBA canvas on a kept buffer; the buffer goes back when dropped
-/// (at most one for each thread of the pool is kept).
+/// A transparent `w` × `h` RGBA canvas on a kept buffer, else on fresh memory; the buffer
+/// goes back when dropped (at most one for each thread of the pool is kept).
+///
+/// Fresh memory is mapped anonymous, which the system hands over zeroed, and on Linux asked
+/// for in huge pages (2 MB): a fresh A1 canvas then faults about 35 times instead of 17 000,
+/// which was a quarter of what `tmm render` spent on the v-engine's five sheets (system time
+/// 0.085 → 0.036 s, wall 0.219 → 0.183 s).
 struct Canvas {
-    data: Vec<u8>,
+    /// `None` only once handed back.
+    data: Option<MmapMut>,
     w: u32,
     h: u32,
 }
 
 impl Canvas {
-    fn new(w: u32, h: u32) -> Self {
-        let mut data = BUFFERS
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .pop()
-            .unwrap_or_default();
-        data.clear();
-        data.resize(w as usize * h as usize * 4, 0);
-        Self { data, w, h }
+    fn new(w: u32, h: u32) -> Result<Self, PlateError> {
+        let n = Self::bytes(w, h);
+        let kept = {
+            let mut kept = BUFFERS.lock().unwrap_or_else(PoisonError::into_inner);
+            // The smallest buffer that holds the canvas.
+            let fit = (0..kept.len())
+                .filter(|&k| kept[k].len() >= n)
+                .min_by_key(|&k| kept[k].len());
+            fit.map(|k| kept.swap_remove(k))
+        };
+        let data = match kept {
+            Some(mut b) => {
+                b[..n].fill(0);
+                b
+            }
+            None => {
+                let b = MmapMut::map_anon(n).map_err(|e| {
+                    PlateError::Raster(format!("cannot make a canvas of {w} × {h} px: {e}"))
+                })?;
+                // Only advice: without huge pages the canvas is the same, its faults slower.
+                #[cfg(target_os = "linux")]
+                let _ = b.advise(memmap2::Advice::HugePage);
+                b
+            }
+        };
+        Ok(Self {
+            data: Some(data),
+            w,
+            h,
+        })
+    }
+
+    /// The bytes of a `w` × `h` canvas.
+    fn bytes(w: u32, h: u32) -> usize {
+        w as usize * h as usize * 4
     }
 
     fn pixmap(&mut self) -> Result<PixmapMut<'_>, PlateError> {
         let (w, h) = (self.w, self.h);
-        PixmapMut::from_bytes(&mut self.data, w, h)
+        let n = Self::bytes(w, h);
+        self.data
+            .as_mut()
+            .and_then(|d| PixmapMut::from_bytes(&mut d[..n], w, h))
             .ok_or_else(|| PlateError::Raster(format!("cannot make a canvas of {w} × {h} px")))
     }
 
@@ -365,7 +401,8 @@ impl Canvas {
 
     /// Premultiplied RGBA, row by row.
     fn data(&self) -> &[u8] {
-        &self.data
+        let n = Self::bytes(self.w, self.h);
+        self.data.as_deref().map_or(&[], |d| &d[..n])
     }
 }
 
@@ -373,7 +410,7 @@ impl Drop for Canvas {
     fn drop(&mut self) {
         let mut kept = BUFFERS.lock().unwrap_or_else(PoisonError::into_inner);
         if kept.len() < rayon::current_num_threads() {
-            kept.push(std::mem::take(&mut self.data));
+            kept.extend(self.data.take());
         }
     }
 }
@@ -484,6 +521,22 @@ mod tests {
             moved += usize::from(d > 1);
         }
         assert!(moved * 10 < inked, "{moved} of {inked} inked pixels moved");
+    }
+
+    #[test]
+    fn a_kept_canvas_is_cleared_whatever_it_held() {
+        // No white sheet: whatever the canvas held before would show through.
+        let bare = SVG.replace(r##"<rect width="60" height="40" fill="#fff"/>"##, "");
+        let dark = SVG.replace(r##"fill="#fff""##, r##"fill="#000""##);
+        assert!(bare != SVG && dark != SVG);
+        let fresh = to_png_dpi_tiled(&bare, 100.0, TILING).unwrap();
+        // A black canvas larger than the next image is left behind, and drawn on again.
+        to_png_dpi_tiled(&dark, 300.0, TILING).unwrap();
+        assert_eq!(to_png_dpi_tiled(&bare, 100.0, TILING).unwrap(), fresh);
+        // Paper and ink, as drawn on a clear canvas.
+        let img = decode(&fresh);
+        assert!(img.pixels().iter().any(|p| p.red() == 255));
+        assert!(img.pixels().iter().any(|p| p.red() < 64));
     }
 
     #[test]
