@@ -715,9 +715,10 @@ impl Blocking {
         // first in the grid's order.
         let best_on = |i: usize| {
             let a = fan_angle(i, na);
-            let (d, tb) = match fan {
-                Some(b) => (DVec2::new(a.cos(), a.sin()), (b[2 * i] - c).length()),
-                None => ray(a),
+            let d = DVec2::new(a.cos(), a.sin());
+            let tb = match fan {
+                Some(b) => (b[2 * i] - c).length(),
+                None => self.boundary_at(c, a, hard),
             };
             let mut best = (f64::NEG_INFINITY, a, 0.0);
             for j in 0..=ns {
