@@ -965,6 +965,7 @@ impl Study {
         let b = Blocking::new(spec.z, spec.rack)?;
         let contour = b.trace(Self::HARD);
         let placed = b.place(DVec2::new(spec.x[0], spec.x[1]), Self::HARD)?;
+        // The choices on all cores: each searches the region on its own.
         let choices = [
             Criterion::LargestContactRatio,
             Criterion::EqualSliding {
@@ -972,7 +973,7 @@ impl Study {
             },
             Criterion::GreatestSumWithTip { sa_min: 0.25 },
         ]
-        .into_iter()
+        .into_par_iter()
         .map(|c| match chosen {
             Some(asked) if std::mem::discriminant(&asked) == std::mem::discriminant(&c) => asked,
             _ => c,

@@ -158,14 +158,41 @@ pub fn drawn(scene: &Scene) -> Vec<PlateKind> {
 }
 
 /// Every plate the scene asks for ([`drawn`]), in order, its sheets numbered 1 … n across
-/// the scene (the title block's "sheet k of n"). A failure names the plate it happened in.
+/// the scene (the title block's "sheet k of n"). A failure names the first plate, in that
+/// order, that cannot be built.
+///
+/// The plates are built side by side, each on a thread of its own, sharing the session's
+/// studies (each computed once, by the first to ask): the shaper's gear sheet traces its
+/// blocking contour while the others are drawn. Plain threads, not the rayon pool's: a
+/// study that waits on another's result then never holds a pool thread that the other's
+/// parallel work needs. Called on a thread of the pool (a batch's variants, already side
+/// by side), they are built one after another: a pool thread waiting for plain threads
+/// whose studies need the pool would wait for ever.
 pub fn build_all(
     session: &Session<'_>,
     lang: Lang,
 ) -> Result<Vec<(PlateKind, Plate)>, (PlateKind, BuildError)> {
+    let kinds = drawn(session.scene());
+    let one = |kind: PlateKind| build(session, kind, lang);
+    let built: Vec<Result<Vec<Plate>, BuildError>> = match rayon::current_thread_index() {
+        Some(_) => kinds.iter().map(|&kind| one(kind)).collect(),
+        None => std::thread::scope(|scope| {
+            let threads: Vec<_> = kinds
+                .iter()
+                .map(|&kind| scope.spawn(move || one(kind)))
+                .collect();
+            threads
+                .into_iter()
+                .map(|t| {
+                    t.join()
+                        .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+                })
+                .collect()
+        }),
+    };
     let mut all = Vec::new();
-    for kind in drawn(session.scene()) {
-        let plates = build(session, kind, lang).map_err(|e| (kind, e))?;
+    for (kind, plates) in kinds.into_iter().zip(built) {
+        let plates = plates.map_err(|e| (kind, e))?;
         all.extend(plates.into_iter().map(|p| (kind, p)));
     }
     let n = all.len() as u32;

@@ -213,3 +213,36 @@ fn tangent_report_at_drafting_reads_the_plans_its_plates_draw() {
     // At 0.5 mm the readings are the drawing's: not exact.
     assert!(rows.iter().any(|r| r.graphical != r.analytic));
 }
+
+#[test]
+fn plates_built_side_by_side_are_those_built_one_after_another() {
+    // The shaper's sheets share their studies (the gear sheet's blocking contour runs on the
+    // pool meanwhile). Built on plain threads from here, and on every thread of the pool at
+    // once (where each builds them in turn: pool threads all waiting for threads whose
+    // studies need the pool would wait for ever), within a bound rather than hanging.
+    let s = scene::load(&root().join("constructions/shaper.toml")).expect("shaper");
+    let svgs = |plates: Vec<(PlateKind, tmm::plate::Plate)>| -> Vec<String> {
+        plates.iter().map(|(_, p)| tmm::plate::to_svg(p)).collect()
+    };
+    let side_by_side = svgs(
+        sheets::build_all(&Session::new(&s, Drafting::EXACT), Lang::Ru)
+            .unwrap_or_else(|(k, e)| panic!("{k:?}: {e}")),
+    );
+    // The contour traced afresh, on the pool.
+    tmm::gears::blocking::Study::forget();
+    let (tx, rx) = std::sync::mpsc::channel();
+    let scene = s.clone();
+    std::thread::spawn(move || {
+        let built = rayon::broadcast(|_| {
+            sheets::build_all(&Session::new(&scene, Drafting::EXACT), Lang::Ru)
+                .map_err(|(k, e)| format!("{k:?}: {e}"))
+        });
+        let _ = tx.send(built);
+    });
+    let in_turn = rx
+        .recv_timeout(std::time::Duration::from_secs(120))
+        .expect("built on the pool's threads within two minutes");
+    for built in in_turn {
+        assert_eq!(svgs(built.unwrap_or_else(|e| panic!("{e}"))), side_by_side);
+    }
+}
