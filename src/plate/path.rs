@@ -7,11 +7,36 @@ use std::fmt::Write as _;
 /// Format a coordinate for the SVG: rounded to 0.01 mm, no `-0`, no exponent; a non-finite
 /// value is written as `0` so that a bad figure can never produce an unreadable file.
 pub(crate) fn num(x: f64) -> String {
-    let r = (x * 100.0).round() / 100.0;
-    if !r.is_finite() || r == 0.0 {
-        return "0".into();
+    Num(x).to_string()
+}
+
+/// A coordinate as [`num`] writes it, written straight into a formatter (a sheet's SVG is
+/// hundreds of thousands of them).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Num(pub f64);
+
+impl std::fmt::Display for Num {
+    /// The shortest decimal of the value rounded to hundredths, r = k/100: below 10¹⁵
+    /// hundredths that is k hundredths exactly (any shorter decimal is a hundredth or more
+    /// away, far beyond r's rounding), written from the integer k.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let k = (self.0 * 100.0).round();
+        let r = k / 100.0;
+        if !r.is_finite() || r == 0.0 {
+            return f.write_str("0");
+        }
+        if k.abs() >= 1e15 {
+            return write!(f, "{r}");
+        }
+        let k = k as i64;
+        let (whole, cents) = (k.unsigned_abs() / 100, k.unsigned_abs() % 100);
+        let sign = if k < 0 { "-" } else { "" };
+        match (cents, cents % 10) {
+            (0, _) => write!(f, "{sign}{whole}"),
+            (_, 0) => write!(f, "{sign}{whole}.{}", cents / 10),
+            _ => write!(f, "{sign}{whole}.{cents:02}"),
+        }
     }
-    format!("{r}")
 }
 
 /// The largest number of pieces a single drawn element is split into (hatch strokes, arc
@@ -105,7 +130,7 @@ impl PathData {
         for (i, p) in pts.iter().enumerate() {
             let q = self.map.pt(*p);
             let sep = if i == 0 { "" } else { " " };
-            let _ = write!(self.d, "{sep}{},{}", num(q.x), num(q.y));
+            let _ = write!(self.d, "{sep}{},{}", Num(q.x), Num(q.y));
         }
         self
     }
@@ -173,7 +198,7 @@ impl PathData {
         self.move_to(piece.eval(0.0));
         for i in 1..=n {
             let q = self.map.pt(piece.eval(i as f64 / n as f64));
-            let _ = write!(self.d, " A{r},{r} 0 0 {flag} {},{}", num(q.x), num(q.y));
+            let _ = write!(self.d, " A{r},{r} 0 0 {flag} {},{}", Num(q.x), Num(q.y));
         }
         self
     }
@@ -207,6 +232,43 @@ mod tests {
         assert_eq!(num(-12.345_001), "-12.35");
         assert_eq!(num(f64::NAN), "0");
         assert_eq!(num(1e20), "100000000000000000000");
+        assert_eq!(num(-0.05), "-0.05");
+        assert_eq!(num(12.3), "12.3");
+        assert_eq!(num(-7.005_000_1), "-7.01");
+    }
+
+    #[test]
+    fn num_writes_the_shortest_decimal_of_the_rounded_value() {
+        // As `format!` writes k/100, over every magnitude a sheet or a bad figure has.
+        let shortest = |x: f64| {
+            let r = (x * 100.0).round() / 100.0;
+            if !r.is_finite() || r == 0.0 {
+                "0".to_string()
+            } else {
+                format!("{r}")
+            }
+        };
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        for i in 0..200_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let unit = (state >> 11) as f64 / (1u64 << 53) as f64;
+            let x = (unit - 0.5) * 10f64.powi(i % 19 - 3);
+            assert_eq!(num(x), shortest(x), "{x:e}");
+        }
+        for x in [
+            0.005,
+            -0.005,
+            0.015,
+            9_999_999_999_999.99,
+            1e13,
+            -1e15,
+            0.125,
+            2.675,
+        ] {
+            assert_eq!(num(x), shortest(x), "{x:e}");
+        }
     }
 
     #[test]

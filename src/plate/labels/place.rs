@@ -10,6 +10,9 @@ pub(super) struct Placer<'a> {
     fixed: Vec<Rect>,
     /// Every view's outlines (a label avoids the lines of every view).
     outlines: &'a [Vec<Outline>],
+    /// Every view's outlines with their boxes, taken once (a gear's profile is thousands of
+    /// points, and every label looks for the lines near it).
+    boxed: Vec<(Rect, &'a Outline)>,
 }
 
 /// Cost of a box leaving the frame or entering the title block.
@@ -64,11 +67,17 @@ impl<'a> Placer<'a> {
             .chain(layout.texts.iter().copied())
             .chain(layout.tables.iter().copied())
             .collect();
+        let boxed = outlines
+            .iter()
+            .flatten()
+            .filter_map(|o| Some((shape_box(&o.shape)?, o)))
+            .collect();
         Placer {
             frame: layout.frame,
             forbidden: [layout.title_block, layout.designation_box],
             fixed,
             outlines,
+            boxed,
         }
     }
 
@@ -138,10 +147,10 @@ impl<'a> Placer<'a> {
             .inflate(CLEARANCE_MM);
         // Every view's lines: a long joint label must not run over the next plan either.
         let lines = self
-            .outlines
+            .boxed
             .iter()
-            .flatten()
-            .filter(|o| shape_box(&o.shape).is_some_and(|b| b.touches(&near)))
+            .filter(|(b, _)| b.touches(&near))
+            .map(|(_, o)| *o)
             .collect();
         let points = points
             .iter()
