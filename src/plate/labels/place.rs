@@ -47,7 +47,8 @@ struct Job<'a> {
     extent: Extent,
     candidates: Vec<Rect>,
     near: Rect,
-    lines: Vec<&'a Outline>,
+    /// The outlines near it, with their boxes.
+    lines: Vec<(Rect, &'a Outline)>,
     points: Vec<DVec2>,
 }
 
@@ -150,7 +151,7 @@ impl<'a> Placer<'a> {
             .boxed
             .iter()
             .filter(|(b, _)| b.touches(&near))
-            .map(|(_, o)| *o)
+            .copied()
             .collect();
         let points = points
             .iter()
@@ -284,9 +285,14 @@ impl<'a> Placer<'a> {
                 cost += OVER_POINT;
             }
         }
-        for o in &job.lines {
+        for (b, o) in &job.lines {
             if cost >= bound {
                 return cost;
+            }
+            // An outline whose box is clear of the label's adds nothing (its clipped length
+            // or area is exactly 0).
+            if !b.touches(&padded) {
+                continue;
             }
             cost += match &o.shape {
                 Shape::Line(a, b) => {
