@@ -285,13 +285,13 @@ impl<'a> Placer<'a> {
                 cost += OVER_POINT;
             }
         }
-        for (b, o) in &job.lines {
+        for (bounds, o) in &job.lines {
             if cost >= bound {
                 return cost;
             }
             // An outline whose box is clear of the label's adds nothing (its clipped length
             // or area is exactly 0).
-            if !b.touches(&padded) {
+            if !bounds.touches(&padded) {
                 continue;
             }
             cost += match &o.shape {
