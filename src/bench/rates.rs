@@ -198,6 +198,58 @@ pub(super) fn scene_time(scene: &Scene, reps: Reps) -> Result<(f64, usize), Benc
     Ok((t, pngs))
 }
 
+/// The rendering stack's own share of a scene's PNGs at [`PNG_DPI`]: for each sheet, seconds of
+/// one core to parse its SVG (usvg, its text laid out) and to render it (resvg), each the best
+/// of its runs. No change of ours goes below it: the pixels are theirs.
+pub(super) fn stack_floor(scene: &Scene, reps: Reps) -> Result<StackFloor, BenchError> {
+    let plates =
+        render::plates(scene, Lang::Ru, Drafting::EXACT).map_err(|e| render_error(scene, e))?;
+    let png = |e: crate::plate::PlateError| BenchError::Plate {
+        scene: scene.stem.clone(),
+        plate: "png".into(),
+        detail: e.to_string(),
+    };
+    let mut sheets = Vec::new();
+    for (_, plate) in &plates {
+        let svg = crate::plate::to_svg(plate);
+        let parse = || crate::plate::ParsedSvg::new(&svg);
+        let parse_seconds = best_time(reps.best_of.min(3), parse).map_err(png)?;
+        let parsed = parse().map_err(png)?;
+        let render_seconds = best_time(reps.best_of.min(3), || {
+            crate::plate::render_only(&parsed, PNG_DPI as f32)
+        })
+        .map_err(png)?;
+        sheets.push((parse_seconds, render_seconds));
+    }
+    Ok(StackFloor { sheets })
+}
+
+/// What usvg and resvg alone spend on a scene's sheets, one core ([`stack_floor`]).
+#[derive(Debug, Clone)]
+pub(super) struct StackFloor {
+    /// Each sheet's (parse, render) seconds.
+    pub sheets: Vec<(f64, f64)>,
+}
+
+impl StackFloor {
+    /// Parsing every sheet, seconds of one core.
+    pub fn parse_seconds(&self) -> f64 {
+        self.sheets.iter().map(|s| s.0).sum()
+    }
+
+    /// Rendering every sheet, seconds of one core.
+    pub fn render_seconds(&self) -> f64 {
+        self.sheets.iter().map(|s| s.1).sum()
+    }
+
+    /// The least a scene's PNGs can take on `cores` cores: the whole shared out evenly, or
+    /// the largest sheet, which one core renders alone, whichever is longer.
+    pub fn on(&self, cores: usize) -> f64 {
+        let largest = self.sheets.iter().map(|s| s.0 + s.1).fold(0.0, f64::max);
+        ((self.parse_seconds() + self.render_seconds()) / cores.max(1) as f64).max(largest)
+    }
+}
+
 /// Every file `tmm render` makes of `scene` in `formats` at [`PNG_DPI`], in memory.
 fn rendered(
     scene: &Scene,
@@ -301,4 +353,26 @@ pub(super) fn project_time(s: &Subject, reps: Reps) -> Result<(f64, usize), Benc
     })
     .map_err(failed)?;
     Ok((t, note))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::StackFloor;
+
+    #[test]
+    fn the_floor_is_the_even_share_or_the_largest_sheet() {
+        let two = StackFloor {
+            sheets: vec![(0.010, 0.030), (0.005, 0.015)],
+        };
+        assert!((two.parse_seconds() - 0.015).abs() < 1e-15);
+        assert!((two.render_seconds() - 0.045).abs() < 1e-15);
+        // One core does it all; two cannot beat the first sheet, which one of them draws.
+        assert!((two.on(1) - 0.060).abs() < 1e-15);
+        assert!((two.on(2) - 0.040).abs() < 1e-15);
+        let seven = StackFloor {
+            sheets: vec![(0.01, 0.03); 7],
+        };
+        assert!((seven.on(2) - 0.14).abs() < 1e-12);
+        assert!((seven.on(0) - 0.28).abs() < 1e-12);
+    }
 }

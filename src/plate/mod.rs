@@ -57,7 +57,8 @@ pub use labels::{
 };
 pub use pdf::{to_pdf, to_pdf_parsed, PdfError};
 pub use raster::{
-    forget_pngs, png_of, png_size, to_png, to_png_dpi, to_png_dpi_all, ParsedSvg, MAX_PIXELS,
+    forget_pngs, png_of, png_size, render_only, to_png, to_png_dpi, to_png_dpi_all, ParsedSvg,
+    MAX_PIXELS,
 };
 pub(crate) use sheet::captions as title_block_captions;
 pub use sheet::{Sheet, SheetSize, TitleBlock};

@@ -139,6 +139,24 @@ pub fn png_of(parsed: &ParsedSvg<'_>, dpi: f32) -> Result<Vec<u8>, PlateError> {
     })
 }
 
+/// Render `parsed` at `dpi` as [`png_of`] does, tile after tile on this thread, and drop the
+/// pixels: resvg's own share of a PNG, without the conversion and the encoding (the bench's
+/// floor of what a sheet costs).
+///
+/// # Errors
+/// As [`png_of`].
+pub fn render_only(parsed: &ParsedSvg<'_>, dpi: f32) -> Result<(), PlateError> {
+    check_dpi(dpi)?;
+    let job = Job::new(&parsed.tree, dpi / CSS_DPI, TILING)?;
+    let (tw, th) = job.tiling.tile(job.w, job.h);
+    for y0 in (0..job.h).step_by(th as usize) {
+        for x0 in (0..job.w).step_by(tw as usize) {
+            job.tile(x0, y0, tw.min(job.w - x0), th.min(job.h - y0))?;
+        }
+    }
+    Ok(())
+}
+
 /// The image of `svg` at `dpi` as kept, or as `make` makes it (then kept).
 fn png_kept(
     svg: &str,
@@ -222,16 +240,7 @@ fn pixel_size(w: f32, h: f32, zoom: f32) -> Result<(u32, u32), PlateError> {
 /// Render `tree` scaled by `zoom` (pixels per CSS pixel) and encode it: grayscale when every
 /// pixel is gray, RGB otherwise.
 fn encode(tree: &Tree, zoom: f32, tiling: Tiling) -> Result<Vec<u8>, PlateError> {
-    let size = tree.size();
-    let (w, h) = pixel_size(size.width(), size.height(), zoom)?;
-    let scale = (w as f32 / size.width(), h as f32 / size.height());
-    let job = Job {
-        tree,
-        scale,
-        w,
-        h,
-        tiling,
-    };
+    let job = Job::new(tree, zoom, tiling)?;
     match job.encode(Channels::Gray) {
         Ok(png) => Ok(png),
         Err(Stop::NotGray) => job.encode(Channels::Rgb).map_err(|s| match s {
@@ -252,7 +261,20 @@ struct Job<'a> {
     tiling: Tiling,
 }
 
-impl Job<'_> {
+impl<'a> Job<'a> {
+    /// `tree` scaled by `zoom` (pixels per CSS pixel), its size rounded to whole pixels.
+    fn new(tree: &'a Tree, zoom: f32, tiling: Tiling) -> Result<Self, PlateError> {
+        let size = tree.size();
+        let (w, h) = pixel_size(size.width(), size.height(), zoom)?;
+        Ok(Self {
+            tree,
+            scale: (w as f32 / size.width(), h as f32 / size.height()),
+            w,
+            h,
+            tiling,
+        })
+    }
+
     fn encode(&self, channels: Channels) -> Result<Vec<u8>, Stop> {
         let mut out = Vec::new();
         let mut encoder = png::Encoder::new(&mut out, self.w, self.h);
@@ -586,6 +608,10 @@ mod tests {
         );
         assert!(png_of(&parsed, 0.0).is_err());
         assert!(ParsedSvg::new("<svg").is_err());
+        // The bench's rasteriser alone takes what the PNG takes, and refuses what it refuses.
+        assert!(render_only(&parsed, 77.0).is_ok());
+        assert!(render_only(&parsed, 0.0).is_err());
+        assert!(render_only(&parsed, 1e6).is_err());
     }
 
     #[test]

@@ -134,7 +134,9 @@ impl<'s> Session<'s> {
         self.drafting
     }
 
-    /// Every construction carried out so far, in order.
+    /// Every construction carried out so far, in the order each was finished: the sheets of
+    /// a scene are built side by side ([`crate::sheets::build_all`]), so the constructions of
+    /// different sheets interleave as their threads run; those of one study keep their order.
     pub fn constructions(&self) -> Vec<Constructed> {
         self.log.lock().unwrap_or_else(|e| e.into_inner()).clone()
     }

@@ -87,6 +87,16 @@ fn quick_bench_writes_three_files_and_errors_fall_with_n() {
             "no throughput `{name}`"
         );
     }
+    // The scene's row names the rendering stack's own share beside the scene's time.
+    let shaper = throughput
+        .iter()
+        .find(|t| t["name"] == "scene shaper (svg+png)")
+        .and_then(|t| t["note"].as_str())
+        .expect("the shaper's note");
+    assert!(
+        shaper.contains("usvg and resvg alone take") && shaper.contains("at best"),
+        "{shaper}"
+    );
     let svg = std::fs::read_to_string(bench.join("bench.svg")).expect("svg");
     assert!(svg.contains("chord: v_S5, m/s"), "plot series");
     let _ = std::fs::remove_dir_all(&dir);
