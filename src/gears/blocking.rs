@@ -23,13 +23,18 @@
 //!
 //! A reference point inside the admissible region (the grid point of the plane's window
 //! with the largest least margin) is the centre of a fan of rays; on each ray every index
-//! less its limit is sampled outward and its first change of sign bracketed to 10⁻¹³ (x per
+//! less its limit is sampled outward and its every change of sign bracketed to 10⁻¹³ (x per
 //! module, so 10⁻¹³ m; regula falsi, [`crate::geom::illinois`]), far below the 10⁻⁹ asked.
-//! A curve is the ordered run of these first crossings; a ray that never crosses (within
-//! the window, before the formulas leave their domain) adds nothing, and a run breaks where
-//! it does not or where consecutive crossings jump (the first crossing has moved to another
-//! branch). Everything is bounded: a fixed fan, a fixed number of samples per ray, at most
-//! 200 steps of the bracket.
+//! A curve is the ordered run of the first crossings; a ray that never crosses (within the
+//! window, before the formulas leave their domain) adds nothing, and a run breaks where it
+//! does not or where consecutive crossings jump (the first crossing has moved to another
+//! branch). The crossings behind the first are a curve's stretches hidden behind itself as
+//! seen from the centre (PZ3's s_a1 = 0.4m turns back about a ray): they are linked ray to
+//! ray and joined to the runs, and where a curve folds back about a ray tangent to it the
+//! two ends are joined by following the curve from one to the other (steps along its
+//! tangent, each put back on it by Newton's steps to 10⁻¹² of its index), so no curve is
+//! cut short. Everything is bounded: a fixed fan, a fixed number of samples per ray, at
+//! most 200 steps of the bracket, a fold followed for at most three times its chord.
 
 use super::involute::{inv, inv_inverse_with_tan, inv_with_tan};
 use super::{BasicRack, Cutting, GearError, Pair, PairSpec};
@@ -483,10 +488,10 @@ impl Blocking {
         None
     }
 
-    /// The first crossing of every level along the ray c + t·d (as [`Self::first_crossing`]
-    /// for each, the indices evaluated once per sample).
-    fn first_crossings(&self, c: DVec2, d: DVec2, levels: &[(Kind, f64)]) -> Vec<Option<f64>> {
-        let mut out = vec![None; levels.len()];
+    /// Every crossing of every level along the ray c + t·d, nearest the centre first (each
+    /// as [`Self::first_crossing`] finds the first; the indices evaluated once per sample).
+    fn crossings(&self, c: DVec2, d: DVec2, levels: &[(Kind, f64)]) -> Vec<Vec<f64>> {
+        let mut out = vec![Vec::new(); levels.len()];
         let t_max = self.reach(c, d);
         let Some(ix0) = self.indices(c) else {
             return out;
@@ -496,7 +501,7 @@ impl Blocking {
             .map(|k| value(&ix0, k).map(|v| (0.0, v)))
             .collect();
         for s in 1..=SAMPLES {
-            if t_max <= 0.0 || out.iter().all(Option::is_some) {
+            if t_max <= 0.0 {
                 break;
             }
             let t = t_max * s as f64 / SAMPLES as f64;
@@ -504,20 +509,18 @@ impl Blocking {
                 break;
             };
             for k in 0..levels.len() {
-                if out[k].is_some() {
-                    continue;
-                }
                 let v = value(&ix, k);
                 if let (Some((t0, v0)), Some(v)) = (prev[k], v) {
                     if (v >= 0.0) != (v0 >= 0.0) {
                         let f = |t: f64| value(&self.indices(c + d * t)?, k);
-                        out[k] = crossing(f, (t0, v0), (t, v));
-                        // A level whose bracket left the domain is not crossed here.
-                        if out[k].is_none() {
-                            prev[k] = None;
-                            continue;
+                        match crossing(f, (t0, v0), (t, v)) {
+                            Some(tc) => out[k].push(tc),
+                            // A level whose bracket left the domain is not crossed here.
+                            None => {
+                                prev[k] = None;
+                                continue;
+                            }
                         }
-                        continue;
                     }
                 }
                 // A level undefined at a sample (λ with B beyond N) brackets nothing across it.
@@ -554,27 +557,28 @@ impl Blocking {
                 })
             })
             .collect();
-        // Along each ray the indices once per sample; each level's first change of sign
+        // Along each ray the indices once per sample; each level's every change of sign
         // bracketed on its own index. The rays on all cores.
-        let found: Vec<Vec<Option<f64>>> = dirs
+        let found: Vec<Vec<Vec<f64>>> = dirs
             .par_iter()
-            .map(|d| self.first_crossings(centre, *d, &all))
+            .map(|d| self.crossings(centre, *d, &all))
             .collect();
-        let mut hits: Vec<Vec<Option<DVec2>>> = vec![Vec::with_capacity(RAYS); levels.len()];
+        let mut hits: Vec<Vec<Vec<DVec2>>> = vec![Vec::with_capacity(RAYS); levels.len()];
         let mut reach = Vec::with_capacity(RAYS);
         for (d, found) in dirs.iter().zip(found) {
-            for (h, t) in hits.iter_mut().zip(&found) {
-                h.push(t.map(|t| centre + *d * t));
+            for (h, ts) in hits.iter_mut().zip(&found) {
+                h.push(ts.iter().map(|t| centre + *d * *t).collect());
             }
             let first = hard_levels
                 .iter()
-                .filter_map(|k| found[*k])
+                .filter_map(|k| found[*k].first().copied())
                 .reduce(f64::min);
             reach.push(first.unwrap_or_else(|| self.reach(centre, *d)));
         }
         let mut curves = Vec::new();
         for ((kind, limit), hits) in levels.iter().zip(&hits) {
-            for points in runs(hits, jump) {
+            let bridge = |a: DVec2, b: DVec2| self.follow((*kind, *limit), a, b, jump / 10.0);
+            for points in whole_runs(hits, jump, &bridge) {
                 curves.push(Curve {
                     kind: *kind,
                     limit: *limit,
@@ -684,6 +688,51 @@ impl Blocking {
         };
         let indices = self.indices(x).ok_or(BlockingError::Domain(x.x, x.y))?;
         Ok(Choice { criterion, indices })
+    }
+
+    /// The level line `level` followed from `a` to `b` (both on it) in steps of `h` along
+    /// its tangent, each step put back on the line by Newton's steps along the gradient
+    /// (central differences); the points between `a` and `b`. `None` when it leaves the
+    /// domain, does not settle on the line (to 1e-12), or has not arrived after three times
+    /// the straight distance.
+    fn follow(&self, level: (Kind, f64), a: DVec2, b: DVec2, h: f64) -> Option<Vec<DVec2>> {
+        let f = |p: DVec2| Some(self.indices(p)?.of(level.0)? - level.1);
+        let grad = |p: DVec2| {
+            let e = 1e-7;
+            let dx = f(p + DVec2::new(e, 0.0))? - f(p - DVec2::new(e, 0.0))?;
+            let dy = f(p + DVec2::new(0.0, e))? - f(p - DVec2::new(0.0, e))?;
+            let g = DVec2::new(dx, dy) / (2.0 * e);
+            (g.length_squared() > 0.0).then_some(g)
+        };
+        let tangent = |p: DVec2, toward: DVec2| {
+            let g = grad(p)?;
+            let t = DVec2::new(-g.y, g.x).normalize();
+            Some(if t.dot(toward) < 0.0 { -t } else { t })
+        };
+        let mut p = a;
+        let mut t = tangent(p, b - a)?;
+        let mut out = Vec::new();
+        let steps = (3.0 * (b - a).length() / h).ceil() as usize + 8;
+        for _ in 0..steps {
+            if (b - p).length() <= h {
+                return Some(out);
+            }
+            let mut q = p + t * h;
+            for _ in 0..12 {
+                let (v, g) = (f(q)?, grad(q)?);
+                if v.abs() <= 1e-12 {
+                    break;
+                }
+                q -= g * (v / g.length_squared());
+            }
+            if f(q)?.abs() > 1e-12 {
+                return None;
+            }
+            out.push(q);
+            p = q;
+            t = tangent(p, t)?;
+        }
+        None
     }
 
     /// The admissible boundary's distance along the ray from `c` at the angle `a`.
@@ -840,6 +889,252 @@ fn bracket(a: f64, b: f64, a_nonneg: bool, f: &impl Fn(f64) -> Option<f64>) -> O
 
 /// The runs of consecutive crossings of a closed fan (the last ray neighbours the first),
 /// broken where a ray misses or two crossings are more than `jump` apart.
+/// The curves of one level from its crossings on every ray of the fan (`hits[k]`: ray k's,
+/// nearest the centre first). The first crossings make the runs [`runs`] finds; the others
+/// are the stretches hidden behind the curve itself as seen from the centre. These are
+/// linked ray to ray, each to the nearest within `jump`, and joined end to end with the runs:
+/// where one goes on from the other's end on the next ray (within `jump`), and where the
+/// curve folds back about a ray tangent to it (two ends on the same or the next ray, which
+/// `bridge` follows the curve from one to the other, its points between them) — or left as
+/// runs of their own. A level crossed at most once on every ray gives exactly the runs of its
+/// first crossings.
+fn whole_runs(
+    hits: &[Vec<DVec2>],
+    jump: f64,
+    bridge: &dyn Fn(DVec2, DVec2) -> Option<Vec<DVec2>>,
+) -> Vec<Vec<DVec2>> {
+    let first: Vec<Option<DVec2>> = hits.iter().map(|h| h.first().copied()).collect();
+    let mut out: Vec<Ended> = runs(&first, jump)
+        .into_iter()
+        .map(|points| Ended::locate(points, hits))
+        .collect();
+    let mut pieces: Vec<Option<Ended>> = hidden_tracks(hits, jump).into_iter().map(Some).collect();
+    if pieces.is_empty() {
+        return out.into_iter().map(|r| r.points).collect();
+    }
+    let n = hits.len();
+    // The ends facing each other across at most one ray: (distance, hidden piece, its end,
+    // the other (a run, or a hidden piece), its end), the nearest first.
+    let facing = |out: &[Ended], pieces: &[Option<Ended>]| {
+        let mut pairs = Vec::new();
+        for (i, a) in pieces.iter().enumerate() {
+            let Some(a) = a else { continue };
+            let others = out
+                .iter()
+                .enumerate()
+                .map(|(j, r)| (Other::Run(j), r))
+                .chain(
+                    pieces
+                        .iter()
+                        .enumerate()
+                        .filter(|(j, _)| *j != i)
+                        .filter_map(|(j, r)| r.as_ref().map(|r| (Other::Hidden(j), r))),
+                );
+            for (other, b) in others {
+                if b.closed() {
+                    continue;
+                }
+                for (a_last, b_last) in [(false, false), (false, true), (true, false), (true, true)]
+                {
+                    let ((ra, pa), (rb, pb)) = (a.end(a_last), b.end(b_last));
+                    let apart = (ra + n - rb) % n;
+                    if apart <= 1 || apart == n - 1 {
+                        pairs.push(((pa - pb).length(), i, a_last, other, b_last));
+                    }
+                }
+            }
+        }
+        pairs.sort_by(|x, y| x.0.total_cmp(&y.0));
+        pairs
+    };
+    // First the stretches that go on within `jump`, then the folds, each bridged.
+    for fold in [false, true] {
+        'join: loop {
+            for (dist, i, a_last, other, b_last) in facing(&out, &pieces) {
+                let via = if dist <= jump {
+                    Vec::new()
+                } else if fold {
+                    let (Some(a), b) = (&pieces[i], other.of(&out, &pieces)) else {
+                        continue;
+                    };
+                    // From the other's end to this piece's end.
+                    match bridge(b.end(b_last).1, a.end(a_last).1) {
+                        Some(via) => via,
+                        None => continue,
+                    }
+                } else {
+                    continue;
+                };
+                let a = pieces[i].take().expect("a hidden stretch not yet joined");
+                match other {
+                    Other::Run(j) => out[j] = out[j].clone().joined(via, a, b_last, a_last),
+                    Other::Hidden(j) => {
+                        let b = pieces[j].take().expect("another hidden stretch");
+                        pieces[j] = Some(b.joined(via, a, b_last, a_last));
+                    }
+                }
+                continue 'join;
+            }
+            break;
+        }
+    }
+    out.extend(pieces.into_iter().flatten());
+    // A curve whose two ends now face each other round a second fold is closed.
+    for r in out.iter_mut().filter(|r| r.joins > 0 && !r.closed()) {
+        let ((ra, pa), (rb, pb)) = (r.end(true), r.end(false));
+        let apart = (ra + n - rb) % n;
+        if apart <= 1 || apart == n - 1 {
+            if let Some(via) = bridge(pa, pb) {
+                r.points.extend(via);
+                r.points.push(pb);
+            }
+        }
+    }
+    let mut out: Vec<Vec<DVec2>> = out.into_iter().map(|r| r.points).collect();
+    out.retain(|r| r.len() >= 2);
+    out
+}
+
+/// What a hidden stretch is joined to.
+#[derive(Debug, Clone, Copy)]
+enum Other {
+    /// A run of first crossings.
+    Run(usize),
+    /// Another hidden stretch.
+    Hidden(usize),
+}
+
+impl Other {
+    fn of<'a>(self, out: &'a [Ended], pieces: &'a [Option<Ended>]) -> &'a Ended {
+        match self {
+            Other::Run(j) => &out[j],
+            Other::Hidden(j) => pieces[j].as_ref().expect("a hidden stretch not yet joined"),
+        }
+    }
+}
+
+/// A polyline of crossings with the rays of its two ends.
+#[derive(Debug, Clone)]
+struct Ended {
+    points: Vec<DVec2>,
+    /// The rays of the first and the last point.
+    rays: (usize, usize),
+    /// The stretches joined to it.
+    joins: usize,
+}
+
+impl Ended {
+    /// `points` with the rays of its ends found among `hits` (a point is where it was found).
+    fn locate(points: Vec<DVec2>, hits: &[Vec<DVec2>]) -> Self {
+        let ray = |p: Option<&DVec2>| {
+            p.and_then(|p| hits.iter().position(|h| h.contains(p)))
+                .unwrap_or(0)
+        };
+        let rays = (ray(points.first()), ray(points.last()));
+        Self {
+            points,
+            rays,
+            joins: 0,
+        }
+    }
+
+    /// A closed run (round the whole fan, its first point repeated last) takes no join.
+    fn closed(&self) -> bool {
+        self.points.len() > 2 && self.points.first() == self.points.last()
+    }
+
+    /// The last end (`true`) or the first, with its ray.
+    fn end(&self, last: bool) -> (usize, DVec2) {
+        if last {
+            (self.rays.1, *self.points.last().expect("a run has points"))
+        } else {
+            (self.rays.0, self.points[0])
+        }
+    }
+
+    /// This polyline with `other` joined at this one's end `at_last` and other's end
+    /// `other_last`, through `via` (the points between, from this one's end on).
+    fn joined(
+        mut self,
+        mut via: Vec<DVec2>,
+        mut other: Ended,
+        at_last: bool,
+        other_last: bool,
+    ) -> Ended {
+        if at_last {
+            if other_last {
+                other.points.reverse();
+                other.rays = (other.rays.1, other.rays.0);
+            }
+            self.points.extend(via);
+            self.points.extend(other.points);
+            self.rays.1 = other.rays.1;
+        } else {
+            if !other_last {
+                other.points.reverse();
+                other.rays = (other.rays.1, other.rays.0);
+            }
+            via.reverse();
+            other.points.extend(via);
+            other.points.extend(self.points);
+            self.points = other.points;
+            self.rays.0 = other.rays.0;
+        }
+        self.joins += 1 + other.joins;
+        self
+    }
+}
+
+/// The crossings of a level beyond the first on each ray, linked ray to ray: a crossing
+/// continues the stretch whose last crossing, on the ray before, is nearest (within `jump`;
+/// the nearest pairs first), or starts one.
+fn hidden_tracks(hits: &[Vec<DVec2>], jump: f64) -> Vec<Ended> {
+    let mut done: Vec<Ended> = Vec::new();
+    let mut open: Vec<Ended> = Vec::new();
+    for (k, h) in hits.iter().enumerate() {
+        let here = h.get(1..).unwrap_or(&[]);
+        let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
+        for (i, t) in open.iter().enumerate() {
+            for (j, p) in here.iter().enumerate() {
+                let d = (t.end(true).1 - *p).length();
+                if d <= jump {
+                    pairs.push((d, i, j));
+                }
+            }
+        }
+        pairs.sort_by(|a, b| a.0.total_cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2))));
+        let (mut track_used, mut point_used) = (vec![false; open.len()], vec![false; here.len()]);
+        let mut next: Vec<Ended> = Vec::new();
+        for (_, i, j) in pairs {
+            if !track_used[i] && !point_used[j] {
+                track_used[i] = true;
+                point_used[j] = true;
+                let mut t = open[i].clone();
+                t.points.push(here[j]);
+                t.rays.1 = k;
+                next.push(t);
+            }
+        }
+        for (t, used) in open.into_iter().zip(track_used) {
+            if !used {
+                done.push(t);
+            }
+        }
+        for (p, used) in here.iter().zip(point_used) {
+            if !used {
+                next.push(Ended {
+                    points: vec![*p],
+                    rays: (k, k),
+                    joins: 0,
+                });
+            }
+        }
+        open = next;
+    }
+    done.extend(open);
+    done
+}
+
 fn runs(hits: &[Option<DVec2>], jump: f64) -> Vec<Vec<DVec2>> {
     let n = hits.len();
     let breaks = |k: usize| -> bool {
@@ -1052,7 +1347,7 @@ impl Study {
         let b = &self.contour.blocking;
         let n: usize = self.contour.curves.iter().map(|c| c.points.len()).sum();
         let mut out = vec![format!(
-            "blocking contour z₁ = {}, z₂ = {}: {} curves, {n} points traced by regula falsi along {RAYS} rays to 1e-13 of m; at {} sampled points the twins (Pair::new, Cutting) give the limits to {:.1e}; undercut limit x_min = h_l* − z sin²α/2 with h_l* = {} (the flank's end): x_min1 = {}, x_min2 = {}",
+            "blocking contour z₁ = {}, z₂ = {}: {} curves, {n} points traced along {RAYS} rays (regula falsi to 1e-13 of m; where a curve folds back about a ray, followed along it by Newton's steps to 1e-12); at {} sampled points the twins (Pair::new, Cutting) give the limits to {:.1e}; undercut limit x_min = h_l* − z sin²α/2 with h_l* = {} (the flank's end): x_min1 = {}, x_min2 = {}",
             b.z[0],
             b.z[1],
             self.contour.curves.len(),
@@ -1558,6 +1853,117 @@ impl Study {
             title: "blocking contour".into(),
             scale,
             steps,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A circle of radius 1 about (3, 0) seen from the origin: the rays within asin(1/3) of
+    /// the x axis cross it twice, the far crossing hidden behind the near one.
+    #[test]
+    fn a_curve_hidden_behind_itself_is_joined_round_its_folds() {
+        let n = 720;
+        let centre = DVec2::new(3.0, 0.0);
+        let hits: Vec<Vec<DVec2>> = (0..n)
+            .map(|k| {
+                let a = fan_angle(k, n);
+                let d = DVec2::new(a.cos(), a.sin());
+                let (b, c) = (d.dot(centre), centre.length_squared() - 1.0);
+                let disc = b * b - c;
+                if disc < 0.0 || b <= 0.0 {
+                    return Vec::new();
+                }
+                [b - disc.sqrt(), b + disc.sqrt()].map(|t| d * t).to_vec()
+            })
+            .collect();
+        // The arc from a to b the shorter way round, in steps of 0.01 (its points between).
+        let bridge = |a: DVec2, b: DVec2| {
+            let (ta, tb) = ((a - centre).to_angle(), (b - centre).to_angle());
+            let mut turn = tb - ta;
+            turn -= (turn / (2.0 * PI)).round() * 2.0 * PI;
+            let steps = (turn.abs() / 0.01).ceil() as usize;
+            Some(
+                (1..steps)
+                    .map(|i| centre + DVec2::from_angle(ta + turn * i as f64 / steps as f64))
+                    .collect(),
+            )
+        };
+        let whole = whole_runs(&hits, 0.1, &bridge);
+        assert_eq!(whole.len(), 1, "{} runs", whole.len());
+        let ring = &whole[0];
+        assert_eq!(ring.first(), ring.last(), "closed");
+        // Every crossing is on it, and it goes round without a jump.
+        for p in hits.iter().flatten() {
+            assert!(ring.contains(p), "{p:?} left out");
+        }
+        for s in ring.windows(2) {
+            assert!(
+                (s[1] - s[0]).length() < 0.1,
+                "a jump {:?} → {:?}",
+                s[0],
+                s[1]
+            );
+            assert!(((s[0] - centre).length() - 1.0).abs() < 1e-12);
+        }
+        // Crossed once at most on every ray, the runs are those of the first crossings.
+        let near: Vec<Vec<DVec2>> = hits
+            .iter()
+            .map(|h| h.iter().take(1).copied().collect())
+            .collect();
+        let first: Vec<Option<DVec2>> = near.iter().map(|h| h.first().copied()).collect();
+        assert_eq!(whole_runs(&near, 0.1, &bridge), runs(&first, 0.1));
+    }
+
+    /// On PZ3's pair and the shaper's, every crossing of every level on every ray of the fan
+    /// is a point of a traced curve: the stretches hidden behind a curve (s_a1 = 0.4m on
+    /// 13/21 turns back about a ray, and was cut short there) are traced too, joined to the
+    /// rest, and the bridges over the folds lie on their level.
+    #[test]
+    fn every_crossing_is_on_a_traced_curve() {
+        for z in [[13, 21], [13, 30]] {
+            let b = Blocking::new(z, BasicRack::GOST_13755).expect("a pair");
+            let contour = b.trace(Study::HARD);
+            let all = levels(&b.rack, z);
+            let mut hidden = 0;
+            for k in 0..RAYS {
+                let a = fan_angle(k, RAYS);
+                let d = DVec2::new(a.cos(), a.sin());
+                for ((kind, limit), ts) in all.iter().zip(b.crossings(contour.centre, d, &all)) {
+                    hidden += ts.len().saturating_sub(1);
+                    // The first crossings are the runs' as before (an isolated one, a
+                    // single point, is no curve); those behind them are checked here.
+                    for t in ts.into_iter().skip(1) {
+                        let p = contour.centre + d * t;
+                        assert!(
+                            contour.curves.iter().any(|c| c.kind == *kind
+                                && c.limit == *limit
+                                && c.points.contains(&p)),
+                            "z = {z:?}: {kind:?} = {limit} crossed at {p:?} on ray {k}, not traced"
+                        );
+                    }
+                }
+            }
+            assert!(hidden >= 10, "z = {z:?}: {hidden} hidden crossings");
+            let tip = contour
+                .curves
+                .iter()
+                .filter(|c| c.kind == Kind::Tip(0) && c.limit == 0.4)
+                .count();
+            assert_eq!(tip, 1, "z = {z:?}: s_a1 = 0.4m in {tip} pieces");
+            for c in &contour.curves {
+                for p in &c.points {
+                    let v = b.indices(*p).and_then(|ix| ix.of(c.kind)).expect("a value");
+                    assert!(
+                        (v - c.limit).abs() < 1e-9,
+                        "{:?} = {}: {v} at {p:?}",
+                        c.kind,
+                        c.limit
+                    );
+                }
+            }
         }
     }
 }
