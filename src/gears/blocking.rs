@@ -894,10 +894,10 @@ fn bracket(a: f64, b: f64, a_nonneg: bool, f: &impl Fn(f64) -> Option<f64>) -> O
 /// are the stretches hidden behind the curve itself as seen from the centre. These are
 /// linked ray to ray, each to the nearest within `jump`, and joined end to end with the runs:
 /// where one goes on from the other's end on the next ray (within `jump`), and where the
-/// curve folds back about a ray tangent to it (two ends on the same or the next ray, which
-/// `bridge` follows the curve from one to the other, its points between them) — or left as
-/// runs of their own. A level crossed at most once on every ray gives exactly the runs of its
-/// first crossings.
+/// curve folds back about a ray tangent to it (two ends on the same or the next ray, farther
+/// apart: `bridge` follows the curve from one to the other and gives the points between) —
+/// or left as runs of their own. A level crossed at most once on every ray gives exactly the
+/// runs of its first crossings.
 fn whole_runs(
     hits: &[Vec<DVec2>],
     jump: f64,
@@ -967,7 +967,9 @@ fn whole_runs(
                 };
                 let a = pieces[i].take().expect("a hidden stretch not yet joined");
                 match other {
-                    Other::Run(j) => out[j] = out[j].clone().joined(via, a, b_last, a_last),
+                    Other::Run(j) => {
+                        out[j] = std::mem::take(&mut out[j]).joined(via, a, b_last, a_last)
+                    }
                     Other::Hidden(j) => {
                         let b = pieces[j].take().expect("another hidden stretch");
                         pieces[j] = Some(b.joined(via, a, b_last, a_last));
@@ -1014,7 +1016,7 @@ impl Other {
 }
 
 /// A polyline of crossings with the rays of its two ends.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 struct Ended {
     points: Vec<DVec2>,
     /// The rays of the first and the last point.
