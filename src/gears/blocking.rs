@@ -937,8 +937,7 @@ fn whole_runs(
                 for (a_last, b_last) in [(false, false), (false, true), (true, false), (true, true)]
                 {
                     let ((ra, pa), (rb, pb)) = (a.end(a_last), b.end(b_last));
-                    let apart = (ra + n - rb) % n;
-                    if apart <= 1 || apart == n - 1 {
+                    if facing_rays(ra, rb, n) {
                         pairs.push(((pa - pb).length(), i, a_last, other, b_last));
                     }
                 }
@@ -984,8 +983,7 @@ fn whole_runs(
     // A curve whose two ends now face each other round a second fold is closed.
     for r in out.iter_mut().filter(|r| r.joins > 0 && !r.closed()) {
         let ((ra, pa), (rb, pb)) = (r.end(true), r.end(false));
-        let apart = (ra + n - rb) % n;
-        if apart <= 1 || apart == n - 1 {
+        if facing_rays(ra, rb, n) {
             if let Some(via) = bridge(pa, pb) {
                 r.points.extend(via);
                 r.points.push(pb);
@@ -995,6 +993,12 @@ fn whole_runs(
     let mut out: Vec<Vec<DVec2>> = out.into_iter().map(|r| r.points).collect();
     out.retain(|r| r.len() >= 2);
     out
+}
+
+/// Rays `a` and `b` of a fan of `n` are the same or neighbours (across ray 0 too).
+fn facing_rays(a: usize, b: usize, n: usize) -> bool {
+    let apart = (a + n - b) % n;
+    apart <= 1 || apart == n - 1
 }
 
 /// What a hidden stretch is joined to.
