@@ -157,23 +157,33 @@ pub(super) const PNG_DPI: u32 = 150;
 /// [`PNG_DPI`], the sheets in parallel — what `tmm render` spends on PNGs — and the number
 /// of sheets.
 pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<(f64, usize), BenchError> {
-    let plates = render::plates(&s.scene, Lang::Ru, Drafting::EXACT)
-        .map_err(|e| render_error(&s.scene, e))?;
-    let svgs: Vec<String> = plates
-        .iter()
-        .map(|(_, p)| crate::plate::to_svg(p))
-        .collect();
+    let svgs = sheet_svgs(&s.scene)?;
     best_time(reps.best_of.min(3), || {
         crate::plate::to_png_dpi_all(&svgs, PNG_DPI as f32)
             .into_iter()
             .collect::<Result<Vec<_>, _>>()
     })
     .map(|t| (t, svgs.len()))
-    .map_err(|e| BenchError::Plate {
-        scene: s.scene.stem.clone(),
+    .map_err(|e| png_error(&s.scene, e))
+}
+
+/// Every sheet of `scene` (a fresh session) as SVG.
+fn sheet_svgs(scene: &Scene) -> Result<Vec<String>, BenchError> {
+    let plates =
+        render::plates(scene, Lang::Ru, Drafting::EXACT).map_err(|e| render_error(scene, e))?;
+    Ok(plates
+        .iter()
+        .map(|(_, p)| crate::plate::to_svg(p))
+        .collect())
+}
+
+/// A sheet of `scene` that cannot be parsed or rasterised, as the bench's error.
+fn png_error(scene: &Scene, e: crate::plate::PlateError) -> BenchError {
+    BenchError::Plate {
+        scene: scene.stem.clone(),
         plate: "png".into(),
         detail: e.to_string(),
-    })
+    }
 }
 
 /// Seconds to build every sheet of `scene` (a fresh session) and write each as SVG and as
@@ -202,16 +212,9 @@ pub(super) fn scene_time(scene: &Scene, reps: Reps) -> Result<(f64, usize), Benc
 /// one core to parse its SVG (usvg, its text laid out) and to render it (resvg), each the best
 /// of its runs. No change of ours goes below it: the pixels are theirs.
 pub(super) fn stack_floor(scene: &Scene, reps: Reps) -> Result<StackFloor, BenchError> {
-    let plates =
-        render::plates(scene, Lang::Ru, Drafting::EXACT).map_err(|e| render_error(scene, e))?;
-    let png = |e: crate::plate::PlateError| BenchError::Plate {
-        scene: scene.stem.clone(),
-        plate: "png".into(),
-        detail: e.to_string(),
-    };
+    let png = |e| png_error(scene, e);
     let mut sheets = Vec::new();
-    for (_, plate) in &plates {
-        let svg = crate::plate::to_svg(plate);
+    for svg in sheet_svgs(scene)? {
         let parse = || crate::plate::ParsedSvg::new(&svg);
         let parse_seconds = best_time(reps.best_of.min(3), parse).map_err(png)?;
         let parsed = parse().map_err(png)?;

@@ -493,7 +493,7 @@ impl Blocking {
     fn crossings(&self, c: DVec2, d: DVec2, levels: &[(Kind, f64)]) -> Vec<Vec<f64>> {
         let mut out = vec![Vec::new(); levels.len()];
         let t_max = self.reach(c, d);
-        let Some(ix0) = self.indices(c) else {
+        let Some(ix0) = self.indices(c).filter(|_| t_max > 0.0) else {
             return out;
         };
         let value = |ix: &Indices, k: usize| Some(ix.of(levels[k].0)? - levels[k].1);
@@ -501,9 +501,6 @@ impl Blocking {
             .map(|k| value(&ix0, k).map(|v| (0.0, v)))
             .collect();
         for s in 1..=SAMPLES {
-            if t_max <= 0.0 {
-                break;
-            }
             let t = t_max * s as f64 / SAMPLES as f64;
             let Some(ix) = self.indices(c + d * t) else {
                 break;
@@ -718,15 +715,18 @@ impl Blocking {
                 return Some(out);
             }
             let mut q = p + t * h;
-            for _ in 0..12 {
-                let (v, g) = (f(q)?, grad(q)?);
+            let mut newton = 0;
+            loop {
+                let v = f(q)?;
                 if v.abs() <= 1e-12 {
                     break;
                 }
+                if newton == 12 {
+                    return None;
+                }
+                let g = grad(q)?;
                 q -= g * (v / g.length_squared());
-            }
-            if f(q)?.abs() > 1e-12 {
-                return None;
+                newton += 1;
             }
             out.push(q);
             p = q;

@@ -139,20 +139,17 @@ pub fn png_of(parsed: &ParsedSvg<'_>, dpi: f32) -> Result<Vec<u8>, PlateError> {
     })
 }
 
-/// Render `parsed` at `dpi` as [`png_of`] does, tile after tile on this thread, and drop the
-/// pixels: resvg's own share of a PNG, without the conversion and the encoding (the bench's
-/// floor of what a sheet costs).
+/// Render `parsed` at `dpi` as [`png_of`] does, band after band, and drop the pixels:
+/// resvg's own share of a PNG, without the conversion and the encoding (the bench's floor
+/// of what a sheet costs).
 ///
 /// # Errors
 /// As [`png_of`].
 pub fn render_only(parsed: &ParsedSvg<'_>, dpi: f32) -> Result<(), PlateError> {
     check_dpi(dpi)?;
     let job = Job::new(&parsed.tree, dpi / CSS_DPI, TILING)?;
-    let (tw, th) = job.tiling.tile(job.w, job.h);
-    for y0 in (0..job.h).step_by(th as usize) {
-        for x0 in (0..job.w).step_by(tw as usize) {
-            job.tile(x0, y0, tw.min(job.w - x0), th.min(job.h - y0))?;
-        }
+    for y0 in job.bands() {
+        job.band(y0)?;
     }
     Ok(())
 }
@@ -296,27 +293,21 @@ impl<'a> Job<'a> {
         }));
         let mut writer = encoder.write_header().map_err(raster_err)?;
         let mut stream = writer.stream_writer().map_err(raster_err)?;
-        let (tw, th) = self.tiling.tile(self.w, self.h);
-        let xs: Vec<u32> = (0..self.w).step_by(tw as usize).collect();
         let ch = channels as usize;
         // Rows are converted and written a few at a time: no image-sized buffer but the tiles.
         let mut rows = vec![0u8; self.w as usize * ch * ROWS_AT_ONCE];
-        let mut y0 = 0;
-        while y0 < self.h {
-            let bh = th.min(self.h - y0);
-            let tiles = xs
-                .par_iter()
-                .map(|&x0| self.tile(x0, y0, tw.min(self.w - x0), bh))
-                .collect::<Result<Vec<_>, PlateError>>()?;
+        for y0 in self.bands() {
+            let tiles = self.band(y0)?;
+            let bh = tiles.first().map_or(0, |(_, t)| t.h);
             for r0 in (0..bh as usize).step_by(ROWS_AT_ONCE) {
                 let n = ROWS_AT_ONCE.min(bh as usize - r0);
                 let rows = &mut rows[..self.w as usize * ch * n];
                 let mut colour = false;
                 for (r, dst) in rows.chunks_exact_mut(self.w as usize * ch).enumerate() {
-                    for (&x0, tile) in xs.iter().zip(&tiles) {
+                    for (x0, tile) in &tiles {
                         let stride = tile.width() as usize * 4;
                         let src = &tile.data()[(r0 + r) * stride..][..stride];
-                        let at = x0 as usize * ch;
+                        let at = *x0 as usize * ch;
                         let dst = &mut dst[at..at + tile.width() as usize * ch];
                         colour |= !convert(src, dst, channels);
                     }
@@ -326,11 +317,27 @@ impl<'a> Job<'a> {
                 }
                 std::io::Write::write_all(&mut stream, rows).map_err(raster_err)?;
             }
-            y0 += bh;
         }
         stream.finish().map_err(raster_err)?;
         writer.finish().map_err(raster_err)?;
         Ok(out)
+    }
+
+    /// The first rows of the image's bands, top to bottom.
+    fn bands(&self) -> impl Iterator<Item = u32> {
+        let (_, th) = self.tiling.tile(self.w, self.h);
+        (0..self.h).step_by(th as usize)
+    }
+
+    /// The tiles of the band from row `y0`, left to right, each with its first column,
+    /// rendered side by side.
+    fn band(&self, y0: u32) -> Result<Vec<(u32, Canvas)>, PlateError> {
+        let (tw, th) = self.tiling.tile(self.w, self.h);
+        let bh = th.min(self.h - y0);
+        let xs: Vec<u32> = (0..self.w).step_by(tw as usize).collect();
+        xs.par_iter()
+            .map(|&x0| Ok((x0, self.tile(x0, y0, tw.min(self.w - x0), bh)?)))
+            .collect()
     }
 
     /// The `tw` × `th` tile at (`x0`, `y0`), rendered on a transparent canvas (`convert`
