@@ -121,6 +121,9 @@ pub enum Symbol {
     /// The largest residual of the moving links' equations of motion evaluated from the
     /// scene's loads and a route's reactions, relative to the largest force, 1.
     EquilibriumResidual,
+    /// The power balance Σ P·v + Σ M·ω of the scene's loads, inertia, friction and a route's
+    /// balancing load, relative to the sum of the powers' magnitudes, 1.
+    PowerResidual,
 }
 
 impl Symbol {
@@ -168,6 +171,7 @@ impl Symbol {
             Symbol::ProfileRadius => "profile_radius",
             Symbol::ProfileDeviation => "profile_deviation",
             Symbol::EquilibriumResidual => "equilibrium_residual",
+            Symbol::PowerResidual => "power_residual",
         }
     }
     /// The SI unit as the report writes it.
@@ -207,7 +211,7 @@ impl Symbol {
             Symbol::VelocityAnalogue | Symbol::AccelerationAnalogue => "m",
             Symbol::PressureAngle | Symbol::TransmissionAngle => "rad",
             Symbol::CurvatureRadius | Symbol::ProfileRadius | Symbol::ProfileDeviation => "m",
-            Symbol::EquilibriumResidual => "1",
+            Symbol::EquilibriumResidual | Symbol::PowerResidual => "1",
         }
     }
 }

@@ -92,36 +92,49 @@ pub struct PositionForces {
     pub residuals: Vec<Residual>,
 }
 
-/// The equilibrium residual of both routes of one analysis (`residual::residual`).
+/// The equilibrium check of both routes of one analysis (`residual::residual`): every
+/// body's equations and the power balance on the check's own picture and motion.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Residual {
     /// The analysis with friction in the pairs.
     pub friction: bool,
-    /// The force polygons' reactions and balancing load against the drawn motion.
-    pub polygons: f64,
-    /// The linear solve's against the exact motion.
-    pub twin: f64,
+    /// The force polygons' reactions and balancing load.
+    pub polygons: residual::Verdict,
+    /// The linear solve's.
+    pub twin: residual::Verdict,
 }
 
+pub use residual::Verdict;
+
 impl PositionForces {
-    /// The rows `equilibrium_residual` (`_f` with friction): the polygons' residual as the
-    /// graphical value, the linear solve's as the analytic one; both 0 for an exact
-    /// equilibrium.
+    /// The rows `equilibrium_residual` and `power_residual` (`_f` with friction): the
+    /// polygons' residual as the graphical value, the linear solve's as the analytic one;
+    /// both 0 for an exact equilibrium.
     pub fn residual_rows(&self) -> Vec<Row> {
-        self.residuals
-            .iter()
-            .map(|r| Row {
-                scale: 1.0,
-                ..row(
-                    &self.label,
+        let mut rows = Vec::new();
+        for r in &self.residuals {
+            let sub = if r.friction { "f" } else { "" };
+            for (symbol, of) in [
+                (
                     Symbol::EquilibriumResidual,
-                    if r.friction { "f" } else { "" }.to_string(),
-                    Method::Polygon,
-                    r.polygons,
-                    r.twin,
-                )
-            })
-            .collect()
+                    (|v: &Verdict| v.equilibrium) as fn(&Verdict) -> f64,
+                ),
+                (Symbol::PowerResidual, |v: &Verdict| v.power),
+            ] {
+                rows.push(Row {
+                    scale: 1.0,
+                    ..row(
+                        &self.label,
+                        symbol,
+                        sub.to_string(),
+                        Method::Polygon,
+                        of(&r.polygons),
+                        of(&r.twin),
+                    )
+                });
+            }
+        }
+        rows
     }
 }
 
@@ -284,7 +297,7 @@ pub fn analyse(
     let drawn_state = residual::State {
         motion: &drawn,
         dir: &built_dir,
-        sense,
+        w1,
         phase: ph,
     };
     let exact_state = residual::State {
@@ -293,7 +306,7 @@ pub fn analyse(
         ..drawn_state
     };
     let states = [&drawn_state, &exact_state];
-    let residuals = residuals(spec, prog, states, &analysis, friction.as_deref());
+    let residuals = residuals(spec, plan, states, &analysis, friction.as_deref());
     let sliders = sliders(spec, &analysis.twin);
     Ok(PositionForces {
         label: pos.label.clone(),
@@ -348,11 +361,12 @@ fn position_rows(
 /// the twin (against the exact one, `states[1]`), without and with friction in the pairs.
 fn residuals(
     spec: &ForceSpec,
-    prog: &Program,
+    plan: &PositionPlan,
     [drawn_state, exact_state]: [&residual::State<'_>; 2],
     analysis: &Analysis,
     friction: Option<&WithFriction>,
 ) -> Vec<Residual> {
+    let (m, prog) = (&plan.mechanism, &plan.program);
     let of = |a: &Analysis, fr: Option<&pair_friction::PairFriction>| {
         let driver = &a.polygons.driver;
         let graphical = residual::Reported {
@@ -367,8 +381,8 @@ fn residuals(
         };
         Residual {
             friction: fr.is_some(),
-            polygons: residual::residual(spec, prog, drawn_state, &graphical, fr),
-            twin: residual::residual(spec, prog, exact_state, &analytic, fr),
+            polygons: residual::residual(spec, m, prog, drawn_state, &graphical, fr),
+            twin: residual::residual(spec, m, prog, exact_state, &analytic, fr),
         }
     };
     let mut v = vec![of(analysis, None)];

@@ -61,6 +61,7 @@ fn spec(masses: &[(f64, f64)], f5: (f64, f64), gear: Option<f64>) -> ForceSpec {
 /// One random position set up for its force analysis: the constructed position, its pose,
 /// plans, both motions and both sets of loads, and μ_F.
 struct Case {
+    mech: Mechanism,
     prog: crate::linkage::Program,
     built: crate::linkage::Built,
     pose: crate::linkage::Pose,
@@ -114,6 +115,7 @@ fn case(m: &Mechanism, phi: f64, spec: &ForceSpec) -> Result<Case, TestCaseError
     let big = twin.largest().max(1e-3);
     let mu_f = Scale::round_for(big, 100.0, Quantity::Force).unwrap();
     Ok(Case {
+        mech: m.clone(),
         prog,
         built,
         pose,
@@ -350,8 +352,14 @@ fn joint_load(
     })
 }
 
-/// The equilibrium residual of a route: its reactions and balancing load against `motion`.
-fn residual_of(spec: &ForceSpec, c: &Case, drawn: bool, reported: residual::Reported<'_>) -> f64 {
+/// Both residuals of a route: its reactions and balancing load on the check's own picture
+/// and motion.
+fn verdict_of(
+    spec: &ForceSpec,
+    c: &Case,
+    drawn: bool,
+    reported: residual::Reported<'_>,
+) -> residual::Verdict {
     let built_dir: Vec<crate::geom::DVec2> = c
         .built
         .angle
@@ -361,10 +369,17 @@ fn residual_of(spec: &ForceSpec, c: &Case, drawn: bool, reported: residual::Repo
     let state = residual::State {
         motion: if drawn { &c.drawn } else { &c.exact },
         dir: if drawn { &built_dir } else { &c.pose.dir },
-        sense: W1.signum(),
+        w1: W1,
         phase: None,
     };
-    residual::residual(spec, &c.prog, &state, &reported, spec.friction.as_ref())
+    residual::residual(
+        spec,
+        &c.mech,
+        &c.prog,
+        &state,
+        &reported,
+        spec.friction.as_ref(),
+    )
 }
 
 proptest! {
@@ -396,20 +411,20 @@ proptest! {
         let c = case(&m, phi, &spec)?;
         let pol = polygons(&c.board(), &c.lg, &spec.drive)
             .map_err(|(g, e)| TestCaseError::fail(format!("group {g}: {e}")))?;
-        let t = residual_of(&spec, &c, false, reported(&c.twin.reactions, c.twin.m_bal, c.twin.f_bal));
-        prop_assert!(t <= REL, "twin residual {t}");
+        let t = verdict_of(&spec, &c, false, reported(&c.twin.reactions, c.twin.m_bal, c.twin.f_bal));
+        prop_assert!(t.equilibrium <= REL && t.power <= REL, "twin residual {t:?}");
         let r = pol.reactions();
-        let p = residual_of(&spec, &c, true, reported(&r, pol.driver.m_bal, pol.driver.f_bal));
-        prop_assert!(p <= REL, "polygons residual {p}");
+        let p = verdict_of(&spec, &c, true, reported(&r, pol.driver.m_bal, pol.driver.f_bal));
+        prop_assert!(p.equilibrium <= REL && p.power <= REL, "polygons residual {p:?}");
         if let Some((f, radius)) = friction {
             let fr = PairFriction { f, radius, radii: Vec::new() };
             spec.friction = Some(fr.clone());
             let w = c.with_friction(&spec, &fr)?;
-            let t = residual_of(&spec, &c, false, reported(&w.analysis.twin.reactions, w.analysis.twin.m_bal, w.analysis.twin.f_bal));
-            prop_assert!(t <= REL, "twin residual with friction {t}");
+            let t = verdict_of(&spec, &c, false, reported(&w.analysis.twin.reactions, w.analysis.twin.m_bal, w.analysis.twin.f_bal));
+            prop_assert!(t.equilibrium <= REL && t.power <= REL, "twin residual with friction {t:?}");
             let r = w.analysis.polygons.reactions();
-            let p = residual_of(&spec, &c, true, reported(&r, w.analysis.polygons.driver.m_bal, w.analysis.polygons.driver.f_bal));
-            prop_assert!(p <= REL, "polygons residual with friction {p}");
+            let p = verdict_of(&spec, &c, true, reported(&r, w.analysis.polygons.driver.m_bal, w.analysis.polygons.driver.f_bal));
+            prop_assert!(p.equilibrium <= REL && p.power <= REL, "polygons residual with friction {p:?}");
         }
     }
 
@@ -437,9 +452,9 @@ proptest! {
             return Err(TestCaseError::reject("singular"));
         };
         let reported = residual::Reported { reactions: &twin.reactions, m_bal: twin.m_bal, f_bal: twin.f_bal };
-        let t = residual_of(&spec, &c, false, reported);
+        let t = verdict_of(&spec, &c, false, reported);
         // The inner pair's reaction is off by the whole load unless the group is at a toggle.
-        prop_assert!(t > 1e-3, "residual {t} of a misplaced load");
+        prop_assert!(t.equilibrium > 1e-3, "residual {t:?} of a misplaced load");
     }
 }
 
@@ -450,4 +465,121 @@ fn reported(reactions: &[Reaction], m_bal: f64, f_bal: Option<f64>) -> residual:
         m_bal,
         f_bal,
     }
+}
+
+/// The scene of a block sliding in a vertical guide on the slider, its force position 2
+/// (`tests/scenes/block-on-slider.toml`), with the plans at the report's ω₁ = 10 rad/s.
+fn block_on_slider() -> (Mechanism, ForceSpec, crate::linkage::PositionPlan) {
+    use crate::linkage::{plan_positions, PlanRequest};
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/scenes/block-on-slider.toml");
+    let scene = crate::scene::load(&path).expect("the scene loads");
+    let m = scene.mechanism.expect("a mechanism");
+    let spec = scene.forces.expect("forces");
+    let req = PlanRequest {
+        count: 12,
+        start: None,
+        other_extreme: false,
+        continuity: false,
+    };
+    let mu_l = Scale::new(0.002, Quantity::Length).unwrap();
+    let plan = plan_positions(&m, &req, mu_l, crate::construct::Drafting::EXACT).expect("a plan");
+    (m, spec, plan)
+}
+
+/// The force analysis of position `k` of `plan` with its own plans.
+fn analysed(spec: &ForceSpec, plan: &crate::linkage::PositionPlan, k: usize) -> PositionForces {
+    let (w1, mu_l) = (10.0, Scale::new(0.002, Quantity::Length).unwrap());
+    let setup = PlanSetup {
+        prog: &plan.program,
+        built: &plan.positions[k].built,
+        mu_l,
+        w1,
+        ctx: plan_context(),
+    };
+    let sv = Scale::new(0.01, Quantity::Velocity).unwrap();
+    let sa = Scale::new(0.1, Quantity::Acceleration).unwrap();
+    let vp = kin_plan(&setup, PlanKind::Velocity, sv, None).expect("velocity plan");
+    let ap = kin_plan(&setup, PlanKind::Acceleration, sa, Some(&vp)).expect("acceleration plan");
+    analyse(spec, plan, k, mu_l, &vp, &ap, w1, &plan_context()).expect("analysed")
+}
+
+/// The rows `equilibrium_residual` and `power_residual` of an analysis: (graphical,
+/// analytic) of each.
+fn residual_values(f: &PositionForces) -> [(f64, f64); 2] {
+    let rows = f.residual_rows();
+    let of = |s: Symbol| {
+        let r = rows
+            .iter()
+            .find(|r| r.key.symbol == s)
+            .expect("a residual row");
+        (r.graphical, r.analytic)
+    };
+    [of(Symbol::EquilibriumResidual), of(Symbol::PowerResidual)]
+}
+
+/// The guide through the joint B put on the rod 2 on purpose, as the program once read the
+/// joint: the plans turn it with the rod, the polygons and the linear solve give balancing
+/// moments 10 % and more off — and both rows of the check, the bodies' equations and the
+/// power balance, flag both routes. Carried by the slider 3, as the scene names it, every
+/// row holds to 1e-12.
+#[test]
+fn a_guide_on_the_wrong_body_is_flagged_by_both_checks() {
+    let (_, spec, right) = block_on_slider();
+    let mut wrong = right.clone();
+    wrong.program = wrong.program.carried_by(1, 0, 2);
+    let (good, bad) = (analysed(&spec, &right, 1), analysed(&spec, &wrong, 1));
+    for (g, a) in residual_values(&good) {
+        assert!(g <= 1e-12 && a <= 1e-12, "{g} {a}");
+    }
+    for (g, a) in residual_values(&bad) {
+        assert!(g >= 1e-3 && a >= 1e-3, "the wrong carrier passes: {g} {a}");
+    }
+    let m_good = good.analysis.twin.m_bal;
+    for m_bad in [bad.analysis.twin.m_bal, bad.analysis.polygons.driver.m_bal] {
+        assert!(
+            (m_bad - m_good).abs() > 0.1 * m_good.abs(),
+            "{m_bad} vs {m_good}"
+        );
+    }
+}
+
+/// The moment of resistance on the rocker 4 solved on the block 5 on purpose: the linear
+/// solve balances its own loads, but the bodies' equations miss the couple on the rocker and
+/// the power balance the power it takes (the block does not turn). A load moved between two
+/// bodies at their joint, by contrast, does no other work there: only the bodies' equations
+/// can see it (`a_load_on_the_wrong_link_leaves_a_residual`).
+#[test]
+fn a_load_on_the_wrong_body_is_flagged_by_both_checks() {
+    let (m, spec, plan) = block_on_slider();
+    let k = 1;
+    let pos = &plan.positions[k];
+    let exact = Motion::analytic(&pos.pose, 10.0);
+    let loads = loads(&spec, &plan.program, &exact, None).expect("loads");
+    let misplaced: Vec<Load> = loads
+        .into_iter()
+        .map(|l| {
+            if l.link == 4 && l.kind == LoadKind::Resistance {
+                Load { link: 5, ..l }
+            } else {
+                l
+            }
+        })
+        .collect();
+    let twin = solve(&plan.program, &pos.pose, &misplaced, &spec.drive, 1.0).expect("solved");
+    let state = residual::State {
+        motion: &exact,
+        dir: &pos.pose.dir,
+        w1: 10.0,
+        phase: None,
+    };
+    let v = residual::residual(
+        &spec,
+        &m,
+        &plan.program,
+        &state,
+        &reported(&twin.reactions, twin.m_bal, twin.f_bal),
+        None,
+    );
+    assert!(v.equilibrium >= 1e-3 && v.power >= 1e-3, "{v:?}");
 }

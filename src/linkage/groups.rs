@@ -104,20 +104,20 @@ impl Program {
                 a, guide, joint, ..
             } => GroupPairs::Rrp {
                 a,
-                guide: self.carrier(&guide),
+                guide: guide.carrier,
                 joint,
             },
             PDyad::Rpr { a, c, .. } => GroupPairs::Rpr { a, c },
             PDyad::Prp { gi, gj, joint } => GroupPairs::Prp {
-                gi: self.carrier(&gi),
-                gj: self.carrier(&gj),
+                gi: gi.carrier,
+                gj: gj.carrier,
                 joint,
             },
             PDyad::Rpp {
                 a, guide, joint, ..
             } => GroupPairs::Rpp {
                 a,
-                guide: self.carrier(&guide),
+                guide: guide.carrier,
                 joint,
             },
         }

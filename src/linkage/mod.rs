@@ -2,6 +2,7 @@
 //! compass constructions with their analytic twin, extreme positions.
 
 mod analytic;
+mod carrier;
 mod construction;
 mod extremes;
 mod groups;
@@ -18,6 +19,7 @@ mod structure;
 mod tests;
 
 pub use analytic::{NearPivot, Pose, Unassembled, NEAR_PIVOT_RATIO, SWEEP_ANCHOR};
+pub use carrier::{candidates, carrier, CarrierError};
 pub use construction::{Built, Failed};
 pub use extremes::{Extremes, OutputCoord};
 pub use groups::{GroupPairs, GroupView};
@@ -75,6 +77,16 @@ pub enum ModelError {
         point: String,
         /// The link it turns with.
         link: u32,
+    },
+    /// The link that carries a guide cannot be told, or cannot carry it.
+    #[error("{what}: the guide through `{point}`: {why}")]
+    Carrier {
+        /// The group.
+        what: String,
+        /// The guide's point.
+        point: String,
+        /// Why.
+        why: CarrierError,
     },
     /// A link point on a link no group defines.
     #[error("point `{name}` is on link {link}, which no group defines")]

@@ -75,6 +75,9 @@ pub struct Guide {
     pub dir: Dir,
     /// Shift to the left of the direction, m.
     pub offset: f64,
+    /// The link whose body carries the guide, as the scene names it (`link`); `None`: the
+    /// one its points leave ([`carrier`](super::carrier::carrier)).
+    pub link: Option<u32>,
 }
 
 /// Which of the two assemblies of a dyad to take at the first position; later positions
@@ -204,6 +207,17 @@ pub enum Dyad {
 }
 
 impl Dyad {
+    /// The guides of the dyad, in the order of its pairs (RRP, RPP: the guide; PRP: i, j).
+    pub fn guides(&self) -> [Option<&Guide>; 2] {
+        match self {
+            Dyad::Rrp { guide, .. } | Dyad::Rpp { guide, .. } => [Some(guide), None],
+            Dyad::Prp {
+                guide_i, guide_j, ..
+            } => [Some(guide_i), Some(guide_j)],
+            Dyad::Rrr { .. } | Dyad::Rpr { .. } => [None, None],
+        }
+    }
+
     /// The kind.
     pub fn kind(&self) -> DyadKind {
         match self {

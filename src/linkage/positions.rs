@@ -52,6 +52,9 @@ pub type PosePosition = Position<()>;
 /// The plan of positions.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PositionPlan {
+    /// The mechanism as the scene gives it (the equilibrium check reads its own picture of
+    /// the bodies from it).
+    pub mechanism: Mechanism,
     /// The compiled mechanism.
     pub program: Program,
     /// Extremes, when the outputs have them.

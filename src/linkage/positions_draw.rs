@@ -486,6 +486,7 @@ pub fn plan_positions(
     rec.set_group(0);
     draw_plan(&mut rec, &program, &positions, extremes.as_ref());
     Ok(PositionPlan {
+        mechanism: m.clone(),
         program,
         extremes,
         positions,

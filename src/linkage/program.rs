@@ -1,7 +1,7 @@
 //! A mechanism compiled into an indexed program: names resolved once, so solving a position
 //! is a straight run over the operations with no lookups.
 
-use super::model::{Branch, Dir, Dyad, DyadKind, Guide, LinkPoint, Mechanism};
+use super::model::{Branch, Dir, Dyad, DyadKind, Group, Guide, LinkPoint, Mechanism};
 use super::{LinkageError, ModelError};
 use crate::geom::DVec2;
 use std::collections::HashMap;
@@ -31,6 +31,9 @@ pub(super) struct PGuide {
     pub dir: PDir,
     /// Shift to the left, m.
     pub offset: f64,
+    /// The link that carries it (0 the frame), resolved once at compilation
+    /// (`Program::resolve_carriers`).
+    pub carrier: usize,
 }
 
 impl PGuide {
@@ -198,6 +201,7 @@ impl Names {
             through: self.look(&g.through, what)?,
             dir: self.dir(&g.dir, what)?,
             offset: g.offset,
+            carrier: 0,
         })
     }
 
@@ -353,6 +357,17 @@ fn slide_with_guide(
     Ok(())
 }
 
+/// How the model's errors name group `gi`: `group 2 (RRP, links 4, 5)`.
+pub(super) fn group_what(gi: usize, g: &Group) -> String {
+    format!(
+        "group {} ({}, links {}, {})",
+        gi + 1,
+        g.dyad.kind().letters(),
+        g.links[0],
+        g.links[1]
+    )
+}
+
 /// Every frame direction of the operations with its unit vector, each once.
 fn fixed_dirs(ops: &[Op]) -> Vec<(f64, DVec2)> {
     let mut fixed_dirs: Vec<(f64, DVec2)> = Vec::new();
@@ -397,13 +412,7 @@ impl Program {
         let mut placed = vec![false; m.points.len()];
         place_points(&m.points, &mut placed, &links_known, &mut names, &mut ops)?;
         for (gi, g) in m.groups.iter().enumerate() {
-            let what = format!(
-                "group {} ({}, links {}, {})",
-                gi + 1,
-                g.dyad.kind().letters(),
-                g.links[0],
-                g.links[1]
-            );
+            let what = group_what(gi, g);
             let dyad = names.dyad(&g.dyad, &what)?;
             claim_links(&mut links_known, g.links, &what)?;
             slide_with_guide(&dyad, &names, &what, g.links[1])?;
@@ -423,7 +432,7 @@ impl Program {
         }
         let link_count = links_known.iter().copied().max().unwrap_or(1) as usize + 1;
         let fixed_dirs = fixed_dirs(&ops);
-        Ok(Self {
+        let mut prog = Self {
             names: names.names,
             fixed,
             centre,
@@ -433,7 +442,9 @@ impl Program {
             ops,
             link_count,
             fixed_dirs,
-        })
+        };
+        prog.resolve_carriers(m)?;
+        Ok(prog)
     }
 }
 
@@ -441,6 +452,15 @@ impl PDyad {
     /// The guides of the dyad, in the order of its pairs (RRP, RPP: the guide; PRP: i, j).
     pub fn guides(&self) -> [Option<PGuide>; 2] {
         match *self {
+            PDyad::Rrp { guide, .. } | PDyad::Rpp { guide, .. } => [Some(guide), None],
+            PDyad::Prp { gi, gj, .. } => [Some(gi), Some(gj)],
+            PDyad::Rrr { .. } | PDyad::Rpr { .. } => [None, None],
+        }
+    }
+
+    /// The guides of the dyad to change, in the order of [`PDyad::guides`].
+    pub(super) fn guides_mut(&mut self) -> [Option<&mut PGuide>; 2] {
+        match self {
             PDyad::Rrp { guide, .. } | PDyad::Rpp { guide, .. } => [Some(guide), None],
             PDyad::Prp { gi, gj, .. } => [Some(gi), Some(gj)],
             PDyad::Rrr { .. } | PDyad::Rpr { .. } => [None, None],
@@ -507,6 +527,12 @@ impl Program {
     /// The links each point lies on (a pivot or joint lies on several; fixed points on the
     /// frame 0 and on the links pivoted there).
     pub fn links_of(&self, k: usize) -> Vec<usize> {
+        self.links_in(&self.ops, k)
+    }
+
+    /// The links point `k` lies on once the operations `ops` (a prefix of the program's) are
+    /// carried out.
+    pub(super) fn links_in(&self, ops: &[Op], k: usize) -> Vec<usize> {
         let mut v = Vec::new();
         if k < self.fixed.len() {
             v.push(0);
@@ -514,7 +540,7 @@ impl Program {
         if k == self.centre || k == self.pin {
             v.push(self.crank_link as usize);
         }
-        for op in &self.ops {
+        for op in ops {
             match *op {
                 Op::Point { idx, link, .. } if idx == k => v.push(link as usize),
                 Op::Dyad {
@@ -544,30 +570,5 @@ impl Program {
         v.sort_unstable();
         v.dedup();
         v
-    }
-
-    /// The link that carries a guide: for a direction between two points, the link holding
-    /// both (a moving one before the frame); for a frame direction, the link of the point it
-    /// passes through (the frame for a fixed point).
-    pub(super) fn carrier(&self, g: &PGuide) -> usize {
-        match g.dir {
-            PDir::Along { from, to, .. } => {
-                let (a, b) = (self.links_of(from), self.links_of(to));
-                let common: Vec<usize> = a.iter().copied().filter(|l| b.contains(l)).collect();
-                common
-                    .iter()
-                    .copied()
-                    .find(|l| *l != 0)
-                    .or(common.first().copied())
-                    .unwrap_or_else(|| b.last().copied().unwrap_or(0))
-            }
-            PDir::Fixed(_) => {
-                if g.through < self.fixed.len() {
-                    0
-                } else {
-                    self.links_of(g.through).first().copied().unwrap_or(0)
-                }
-            }
-        }
     }
 }

@@ -101,7 +101,7 @@ impl Structure {
                     Op::Dyad { group, dyad, .. } if group == gi => Some(dyad.guides()),
                     _ => None,
                 })?;
-                guides[which].map(|g| p.carrier(&g) as u32)
+                guides[which].map(|g| g.carrier as u32)
             };
             prog.as_ref().and_then(carrier).unwrap_or(0)
         };

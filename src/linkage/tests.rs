@@ -44,6 +44,7 @@ pub(crate) fn shaper() -> Mechanism {
                         through: "C".into(),
                         dir: Dir::Fixed(0.0),
                         offset: 0.745,
+                        link: None,
                     },
                     joint: "E".into(),
                 },
@@ -164,6 +165,7 @@ pub(crate) fn one_of_each_kind() -> Vec<Mechanism> {
         through: through.into(),
         dir,
         offset,
+        link: None,
     };
     let rpp = |slide: Dir, guide: Guide| Dyad::Rpp {
         a: "B".into(),

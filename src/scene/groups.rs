@@ -4,7 +4,9 @@
 use super::check::{item, join, one_of, quoted};
 use super::raw::{RawDir, RawGroup, RawGuide};
 use super::structure::Builder;
-use crate::linkage::{Branch, Dir, Dyad, DyadKind, Group, Guide};
+use crate::linkage::{
+    candidates, carrier, Branch, CarrierError, Dir, Dyad, DyadKind, Group, Guide,
+};
 
 /// The five kinds, Latin and Cyrillic letters accepted.
 const KINDS: [DyadKind; 5] = [
@@ -38,17 +40,19 @@ impl Builder<'_> {
         let dyad = match kind {
             DyadKind::Rrr => self.rrr(base, g, links),
             DyadKind::Rrp => self.rrp(base, g, links),
-            DyadKind::Rpr => self.rpr(base, g),
+            DyadKind::Rpr => self.rpr(base, g, links),
             DyadKind::Prp => self.prp(base, g, links),
             DyadKind::Rpp => self.rpp(base, g, links),
         };
         for link in links {
             self.attach(link, join(base, "links"), format!("{links:?}"));
         }
-        Some(Group {
+        let group = Group {
             links: [i, j],
             dyad,
-        })
+        };
+        self.translating.extend(group.translating());
+        Some(group)
     }
 
     /// `kind = "RRR"` … (case-insensitive, Cyrillic accepted).
@@ -126,10 +130,12 @@ impl Builder<'_> {
     }
 
     /// Kind 3, RPR.
-    pub(super) fn rpr(&mut self, base: &str, g: &RawGroup) -> Dyad {
+    pub(super) fn rpr(&mut self, base: &str, g: &RawGroup, links: [u32; 2]) -> Dyad {
         let (a, _) = self.point(&join(base, "a"), g.a.as_ref());
         let (c, _) = self.point(&join(base, "c"), g.c.as_ref());
         let offset = self.check.distance(&join(base, "offset"), g.offset, 0.0);
+        self.also_on(&a, links[0]);
+        self.also_on(&c, links[1]);
         Dyad::Rpr { a, c, offset }
     }
 
@@ -185,6 +191,7 @@ impl Builder<'_> {
                 through: String::new(),
                 dir: Dir::Fixed(0.0),
                 offset: 0.0,
+                link: None,
             };
         };
         let (through, _) = self.point(&join(key, "through"), raw.through.as_ref());
@@ -194,11 +201,47 @@ impl Builder<'_> {
             .required(&dir_key, raw.dir.as_ref(), "a direction");
         let dir = self.dir(&dir_key, dir);
         let offset = self.check.distance(&join(key, "offset"), raw.offset, 0.0);
-        Guide {
+        let link = raw
+            .link
+            .and_then(|l| self.check.link(&join(key, "link"), l, 0));
+        let guide = Guide {
             through,
             dir,
             offset,
+            link,
+        };
+        self.carried(key, raw, &guide);
+        guide
+    }
+
+    /// The guide's carrier as [`carrier`] decides it from the links its points lie on so far,
+    /// refused at `link` (a link that does not hold the points, or turns under a frame
+    /// direction) or, where its point joins several links and none is named, at `through`.
+    fn carried(&mut self, key: &str, raw: &RawGuide, guide: &Guide) {
+        let on = |n: &str| {
+            self.known
+                .iter()
+                .find(|k| k.name == n)
+                .map(|k| k.links.clone())
+        };
+        let points_known = match &guide.dir {
+            Dir::Fixed(_) => on(&guide.through).is_some(),
+            Dir::Along { from, to, .. } => on(from).is_some() && on(to).is_some(),
+        };
+        if !points_known || (raw.link.is_some() && guide.link.is_none()) {
+            return;
         }
+        let links = candidates(&guide.dir, |n| on(n).unwrap_or_default(), &guide.through);
+        let translates = |l: u32| self.translating.contains(&l);
+        let why = match carrier(&links, &guide.dir, guide.link, translates) {
+            Ok(_) | Err(CarrierError::Unshared) => return,
+            Err(why) => why,
+        };
+        let (at, value) = match (&why, raw.link) {
+            (CarrierError::Ambiguous { .. }, _) | (_, None) => ("through", quoted(&guide.through)),
+            (_, Some(l)) => ("link", l.to_string()),
+        };
+        self.check.push(join(key, at), Some(value), why.to_string());
     }
 
     /// A direction: degrees in the frame, or `{ from, to, angle }` along one link.

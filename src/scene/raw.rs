@@ -113,6 +113,7 @@ pub(crate) struct RawGuide {
     pub through: Option<String>,
     pub dir: Option<RawDir>,
     pub offset: Option<f64>,
+    pub link: Option<i64>,
 }
 
 /// A direction: degrees in the frame, or along two known points.
@@ -264,6 +265,9 @@ impl fmt::Display for RawGuide {
         }
         if let Some(offset) = self.offset {
             write!(f, ", offset = {}", number(offset))?;
+        }
+        if let Some(link) = self.link {
+            write!(f, ", link = {link}")?;
         }
         write!(f, " }}")
     }

@@ -34,6 +34,8 @@ pub(super) struct Builder<'a> {
     pub(super) points: Vec<LinkPoint>,
     /// Every name declared anywhere, with the key that declared it.
     pub(super) declared: Vec<(String, String)>,
+    /// The links attached so far that translate ([`crate::linkage::Group::translating`]).
+    pub(super) translating: Vec<u32>,
 }
 
 /// Validate `[mechanism]`; `None` when it is missing (reported).
@@ -45,6 +47,7 @@ pub(crate) fn mechanism(check: &mut Checker, raw: Option<&RawMechanism>) -> Opti
         links: Vec::new(),
         points: Vec::new(),
         declared: Vec::new(),
+        translating: Vec::new(),
     };
     b.declare_all(raw);
     let fixed = b.fixed(raw);
@@ -177,9 +180,11 @@ impl Builder<'_> {
         })
     }
 
-    /// Whether `name` is a fixed point.
+    /// Whether `name` is a fixed point (held by the frame, whatever links pivot there).
     pub(super) fn is_fixed(&self, name: &str) -> bool {
-        self.known.iter().any(|k| k.name == name && k.links == [0])
+        self.known
+            .iter()
+            .any(|k| k.name == name && k.links.contains(&0))
     }
 
     /// `omega` (rad/s) or `n` (rpm), exactly one of them.

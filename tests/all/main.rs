@@ -22,6 +22,7 @@ mod forces;
 mod friction;
 mod fuzz_regressions;
 mod gears;
+mod guide_carrier;
 mod hard_cases;
 mod kinematics;
 mod languages;

@@ -7,7 +7,7 @@ use super::{KinPlan, Measure, PlanKind, Reading};
 use crate::construct::{ConstructionError, Item, Recorder, Role};
 use crate::geom::{DVec2, Line, Segment};
 use crate::linkage::construction::Built;
-use crate::linkage::program::{PDir, PGuide, Program};
+use crate::linkage::program::{PDir, Program};
 
 /// The values one plan needs from the velocity plan (for the acceleration plan).
 pub(super) struct Known<'a> {
@@ -244,10 +244,6 @@ impl<'a> Builder<'a> {
                 DVec2::from_angle(angle).rotate((self.b.p[to] - self.b.p[from]).normalize_or_zero())
             }
         }
-    }
-    /// The link carrying a guide (0 for the frame).
-    pub(super) fn guide_link(&self, g: &PGuide) -> usize {
-        self.prog.carrier(g)
     }
     pub(super) fn rate(&self, link: usize) -> f64 {
         self.links.rate[link].unwrap_or(0.0)

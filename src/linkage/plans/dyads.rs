@@ -77,7 +77,7 @@ impl Builder<'_> {
         let vel = self.kind == PlanKind::Velocity;
         let ra = self.r(a, joint);
         let ai = self.image(a);
-        let k = self.guide_link(guide);
+        let k = guide.carrier;
         let e = self.dir(&guide.dir);
         let jk_name = format!("{}{k}", plain(self.name(joint)));
         let jk = self.image_on(k, self.b.p[joint], &jk_name);
@@ -162,7 +162,7 @@ impl Builder<'_> {
         joint: usize,
     ) -> Result<(), ConstructionError> {
         let vel = self.kind == PlanKind::Velocity;
-        let (k1, k2) = (self.guide_link(gi), self.guide_link(gj));
+        let (k1, k2) = (gi.carrier, gj.carrier);
         let (e1, e2) = (self.dir(&gi.dir), self.dir(&gj.dir));
         let n1 = format!("{}{k1}", plain(self.name(joint)));
         let n2 = format!("{}{k2}", plain(self.name(joint)));
@@ -202,7 +202,7 @@ impl Builder<'_> {
         joint: usize,
     ) -> Result<(), ConstructionError> {
         let vel = self.kind == PlanKind::Velocity;
-        let k = self.guide_link(guide);
+        let k = guide.carrier;
         let (es, eg) = (self.dir(slide), self.dir(&guide.dir));
         let ai = self.image(a);
         let rk0 = self.rate(k);

@@ -121,6 +121,9 @@ pub(crate) struct Draw {
     /// Put an RRR or RRP group exactly at its toggle (links in line, or the link ⊥ the
     /// guide): the plan must refuse it or construct it, never return a wrong number.
     toggle: bool,
+    /// Where link 3 translates, carry a guide of the second group at a frame direction
+    /// through its joint C (a block sliding on the slider) instead of along link 3.
+    slider3: bool,
 }
 
 prop_compose! {
@@ -134,17 +137,19 @@ prop_compose! {
         reach in 0.08..0.4f64,
         heading in -PI..PI,
         toggle in prop::bool::weighted(0.15),
+        slider3 in prop::bool::ANY,
     ) -> Draw {
         let kind = [DyadKind::Rrr, DyadKind::Rrp, DyadKind::Rpr, DyadKind::Prp, DyadKind::Rpp][kind];
-        Draw { kind, carrier, carrier2, angle, angle2, offset, reach, heading, toggle }
+        Draw { kind, carrier, carrier2, angle, angle2, offset, reach, heading, toggle, slider3 }
     }
 }
 
-/// A link that can carry guides: the frame (`along` = None) or the direction between two
-/// of its points.
+/// A link that can carry guides: the frame or a translating link named by `link` (`along` =
+/// None: a frame direction), or the direction between two of its points.
 struct Carrier {
     along: Option<(&'static str, &'static str)>,
     through: &'static str,
+    link: Option<u32>,
 }
 
 /// What is known when a dyad is attached: the positions at the drawn crank angle, the
@@ -183,6 +188,7 @@ impl Known {
             through: c.through.into(),
             dir,
             offset,
+            link: c.link,
         };
         (g, self.at(c.through) + u.perp() * offset, u)
     }
@@ -267,7 +273,8 @@ fn dyad(d: &Draw, k: &Known, joint: &str) -> Option<Dyad> {
 /// A random mechanism of two groups at a random crank angle, within 1 m of O: group 1 (links 2, 3, joint C)
 /// hangs on the crank pin and the frame, with guides on the frame or the crank; group 2
 /// (links 4, 5, joint F) hangs on the point S3 of link 3 and the frame, with guides on the
-/// frame, the crank or link 3 — a carrier with angular acceleration. Every link carries a
+/// frame, the crank or link 3 — a carrier with angular acceleration, or, where link 3
+/// translates, a frame direction through its joint C that names link 3. Every link carries a
 /// further point `S<link>` off its axis.
 pub(crate) fn mechanism() -> impl Strategy<Value = (Mechanism, f64)> {
     (
@@ -298,10 +305,12 @@ pub(crate) fn mechanism() -> impl Strategy<Value = (Mechanism, f64)> {
                     Carrier {
                         along: None,
                         through: "D",
+                        link: None,
                     },
                     Carrier {
                         along: Some(("O", "B")),
                         through: "B",
+                        link: None,
                     },
                 ],
             };
@@ -315,6 +324,7 @@ pub(crate) fn mechanism() -> impl Strategy<Value = (Mechanism, f64)> {
             let pose = prog.solve(phi, None).ok()?;
             // The other point of link 3 along which its guides run.
             let on3 = if g1.kind == DyadKind::Rpr { "D" } else { "C" };
+            let slider3 = m.groups[0].translating().contains(&3) && g2.slider3;
             let k2 = Known {
                 p: prog.names.iter().cloned().zip(pose.p).collect(),
                 a: "S3",
@@ -323,14 +333,27 @@ pub(crate) fn mechanism() -> impl Strategy<Value = (Mechanism, f64)> {
                     Carrier {
                         along: None,
                         through: "E",
+                        link: None,
                     },
                     Carrier {
                         along: Some(("O", "B")),
                         through: "O",
+                        link: None,
                     },
-                    Carrier {
-                        along: Some((on3, "S3")),
-                        through: "S3",
+                    // A frame direction through C on link 3 where link 3 translates (a block
+                    // on the slider), else along link 3.
+                    if slider3 {
+                        Carrier {
+                            along: None,
+                            through: "C",
+                            link: Some(3),
+                        }
+                    } else {
+                        Carrier {
+                            along: Some((on3, "S3")),
+                            through: "S3",
+                            link: None,
+                        }
                     },
                 ],
             };
@@ -345,4 +368,29 @@ pub(crate) fn mechanism() -> impl Strategy<Value = (Mechanism, f64)> {
             let pose = Program::compile(&m).ok()?.solve(phi, None).ok()?;
             pose.p.iter().all(|p| p.length() <= 1.0).then_some((m, phi))
         })
+}
+
+/// The generator reaches a second group whose guide keeps a frame direction through the
+/// joint C of a translating link 3 (a block sliding on the slider), carried by the link it
+/// names.
+#[test]
+fn the_generator_puts_guides_on_translating_links() {
+    use proptest::strategy::ValueTree;
+    let mut runner = proptest::test_runner::TestRunner::deterministic();
+    let strategy = mechanism();
+    let mut on_slider = 0;
+    for _ in 0..400 {
+        let Ok(tree) = strategy.new_tree(&mut runner) else {
+            continue;
+        };
+        let (m, _) = tree.current();
+        let carried = m.groups[1]
+            .dyad
+            .guides()
+            .into_iter()
+            .flatten()
+            .any(|g| g.link == Some(3) && g.through == "C");
+        on_slider += usize::from(carried);
+    }
+    assert!(on_slider >= 10, "{on_slider} of 400");
 }

@@ -58,7 +58,7 @@ proptest! {
 
     #[test]
     fn rrp_joint_on_guide_at_rod_length(r in 0.05..0.2f64, e in -0.1..0.1f64, alpha in -PI..PI, la in 0.32..0.8f64, fwd in any::<bool>(), phi in 0.0..2.0 * PI, rot in -PI..PI, sx in -1.0..1.0f64, sy in -1.0..1.0f64) {
-        let guide = Guide { through: "O".into(), dir: Dir::Fixed(alpha), offset: e };
+        let guide = Guide { through: "O".into(), dir: Dir::Fixed(alpha), offset: e, link: None };
         let m = mech(&[("O", DVec2::ZERO)], r, Dyad::Rrp { a: "B".into(), la, guide, joint: "C".into(), branch: if fwd { Branch::Forward } else { Branch::Backward } });
         let (prog, b, _) = build(&m, phi).expect("always assembled: la > r + |e|");
         let (pb, pc) = (pt(&prog, &b, "B"), pt(&prog, &b, "C"));
@@ -84,8 +84,8 @@ proptest! {
 
     #[test]
     fn prp_joint_on_both_guides(r in 0.05..0.2f64, beta in 0.3..2.8f64, gamma in -PI..PI, e in -0.1..0.1f64, phi in 0.0..2.0 * PI, rot in -PI..PI, sx in -1.0..1.0f64, sy in -1.0..1.0f64) {
-        let gi = Guide { through: "B".into(), dir: Dir::Along { from: "O".into(), to: "B".into(), angle: beta }, offset: 0.0 };
-        let gj = Guide { through: "O".into(), dir: Dir::Fixed(gamma), offset: e };
+        let gi = Guide { through: "B".into(), dir: Dir::Along { from: "O".into(), to: "B".into(), angle: beta }, offset: 0.0, link: None };
+        let gj = Guide { through: "O".into(), dir: Dir::Fixed(gamma), offset: e, link: None };
         let m = mech(&[("O", DVec2::ZERO)], r, Dyad::Prp { guide_i: gi, guide_j: gj, joint: "C".into() });
         let Some((prog, b, _)) = build(&m, phi) else { return Err(TestCaseError::reject("parallel guides")) };
         prop_assume!(b.crossing[0] > 0.05);
@@ -99,7 +99,7 @@ proptest! {
     #[test]
     fn rpp_joint_on_guide_and_slide(r in 0.05..0.2f64, alpha in -PI..PI, gamma in -PI..PI, e in -0.3..0.3f64, phi in 0.0..2.0 * PI, rot in -PI..PI, sx in -1.0..1.0f64, sy in -1.0..1.0f64) {
         prop_assume!((alpha - gamma).sin().abs() > 0.2);
-        let guide = Guide { through: "O".into(), dir: Dir::Fixed(gamma), offset: e };
+        let guide = Guide { through: "O".into(), dir: Dir::Fixed(gamma), offset: e, link: None };
         let m = mech(&[("O", DVec2::ZERO)], r, Dyad::Rpp { a: "B".into(), slide: Dir::Fixed(alpha), guide, joint: "C".into() });
         let (prog, b, _) = build(&m, phi).expect("guide and slide cross");
         let (pb, pc) = (pt(&prog, &b, "B"), pt(&prog, &b, "C"));

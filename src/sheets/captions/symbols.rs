@@ -211,6 +211,7 @@ fn letter(symbol: Symbol) -> &'static str {
         Symbol::ProfileRadius => "R",
         Symbol::ProfileDeviation => "Δ",
         Symbol::EquilibriumResidual => "ΔΣ",
+        Symbol::PowerResidual => "ΔN",
     }
 }
 

@@ -99,6 +99,7 @@ pub fn slider_crank(r: f64, l: f64) -> Mechanism {
                 through: "O".into(),
                 dir: Dir::Fixed(0.0),
                 offset: 0.0,
+                link: None,
             },
             joint: "B".into(),
             branch: Branch::Forward,
