@@ -513,9 +513,7 @@ fn check(paths: &[PathBuf]) -> Result<(), Failure> {
                 if s.plates.is_empty() {
                     return Err(nothing_to_draw(&s));
                 }
-                render::plates(&s, Lang::Ru, Drafting::EXACT)
-                    .map(|_| ())
-                    .map_err(render_failure)
+                render::check(&s).map_err(render_failure)
             });
         match result {
             Ok(()) => emit(&format!("{}: ok", path.display())),

@@ -63,6 +63,14 @@ pub enum RenderError {
         /// Why.
         error: plate::PlateError,
     },
+    /// The force analysis fails its own equilibrium check.
+    #[error("{}: {why}", .scene.display())]
+    Unbalanced {
+        /// The scene's file.
+        scene: PathBuf,
+        /// Where, with the residuals.
+        why: String,
+    },
     /// A PNG that cannot be rasterised.
     #[error("{}: {error}", .path.display())]
     Png {
@@ -106,7 +114,10 @@ impl RenderError {
                 matches!(error, BuildError::TooLarge { fits: Some(_), .. })
             }
             RenderError::Resolution { .. } | RenderError::Write { .. } => true,
-            RenderError::Png { .. } | RenderError::Pdf { .. } | RenderError::Note { .. } => false,
+            RenderError::Png { .. }
+            | RenderError::Pdf { .. }
+            | RenderError::Note { .. }
+            | RenderError::Unbalanced { .. } => false,
         }
     }
 }
@@ -123,6 +134,29 @@ pub fn plates(
     drafting: Drafting,
 ) -> Result<Vec<(PlateKind, Plate)>, RenderError> {
     plates_of(&Session::new(s, drafting), lang)
+}
+
+/// What `tmm check` asks of a scene: its plates built (as [`plates`]) and, where it has a
+/// force analysis, every force position passing its own equilibrium check
+/// ([`Session::unbalanced`]).
+///
+/// # Errors
+/// The first plate that cannot be built, or the positions whose routes fail the check.
+pub fn check(s: &Scene) -> Result<(), RenderError> {
+    let session = Session::new(s, Drafting::EXACT);
+    plates_of(&session, Lang::Ru)?;
+    let failures = session.unbalanced().map_err(|e| RenderError::Unbalanced {
+        scene: s.path.clone(),
+        why: e.to_string(),
+    })?;
+    if failures.is_empty() {
+        Ok(())
+    } else {
+        Err(RenderError::Unbalanced {
+            scene: s.path.clone(),
+            why: failures.join("; "),
+        })
+    }
 }
 
 /// The plates of the scene of `session`, as [`plates`].

@@ -12,6 +12,10 @@ pub(super) const PART: Part = Part {
 
 /// The force analysis by (μ_l of the groups, the kinematic μ_l, μ_v, μ_a, position).
 struct Polygons;
+/// The largest residual the equilibrium check allows an analysis at drafting 0 (both routes
+/// hold to ~1e-15): beyond it a route made a decision the scene does not support.
+pub const EQUILIBRIUM_TOLERANCE: f64 = 1e-9;
+
 impl Cache for Polygons {
     type Key = (Scale, Scale, Scale, Scale, usize);
     type Value = Cached<PositionForces>;
@@ -153,6 +157,37 @@ impl<'s> Session<'s> {
             self.logged("force polygons", &plan.positions[k].label, f.scale_f);
             Ok(Arc::new(f))
         })
+    }
+
+    /// Where the force analysis fails its own check at drafting 0: at each force position,
+    /// a route whose equilibrium or power residual exceeds [`EQUILIBRIUM_TOLERANCE`], in
+    /// words with its numbers (none for a scene without `[forces]`).
+    pub fn unbalanced(&self) -> Result<Vec<String>, StudyError> {
+        if self.scene.forces.is_none() || self.scene.mechanism.is_none() {
+            return Ok(Vec::new());
+        }
+        let sc = self.kin_scales()?;
+        let mut out = Vec::new();
+        for i in self.force_positions()? {
+            let f = self.forces(&sc, i)?;
+            for r in &f.residuals {
+                for (route, v) in [
+                    ("the force polygons", r.polygons),
+                    ("the linear solve", r.twin),
+                ] {
+                    if v.equilibrium > EQUILIBRIUM_TOLERANCE || v.power > EQUILIBRIUM_TOLERANCE {
+                        out.push(format!(
+                            "position {}{}: {route} fail the equilibrium check: bodies' equations {:.2e}, power balance {:.2e} (allowed {EQUILIBRIUM_TOLERANCE:.0e})",
+                            f.label,
+                            if r.friction { " with friction" } else { "" },
+                            v.equilibrium,
+                            v.power
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(out)
     }
 
     /// The rows and notes of the force analysis at each of `[forces] positions`, with the
