@@ -7,7 +7,7 @@
 //! direction only on a link that does not turn: carried by a turning link it is refused.
 
 use super::model::{Dir, Dyad, Group, Mechanism};
-use super::program::{group_what, Op, PDir, PGuide, Program};
+use super::program::{group_what, Op, PGuide, Program};
 use super::{LinkageError, ModelError};
 use std::fmt;
 
@@ -182,8 +182,10 @@ impl Program {
                 .iter()
                 .flat_map(Group::translating)
                 .collect();
-            let on = |k: usize| -> Vec<u32> {
-                self.links_in(&self.ops[..i], k)
+            let on = |n: &str| -> Vec<u32> {
+                self.index(n)
+                    .map(|k| self.links_in(&self.ops[..i], k))
+                    .unwrap_or_default()
                     .into_iter()
                     .map(|l| l as u32)
                     .collect()
@@ -196,13 +198,7 @@ impl Program {
                 let (Some(pg), Some(mg)) = (pg, mg) else {
                     continue;
                 };
-                let links = match pg.dir {
-                    PDir::Fixed(_) => on(pg.through),
-                    PDir::Along { from, to, .. } => {
-                        let b = on(to);
-                        on(from).into_iter().filter(|l| b.contains(l)).collect()
-                    }
-                };
+                let links = candidates(&mg.dir, on, &mg.through);
                 let l = carrier(&links, &mg.dir, mg.link, |l| translating.contains(&l)).map_err(
                     |why| ModelError::Carrier {
                         what: group_what(group, g),
