@@ -3,7 +3,7 @@
 //! angle read off the drawing; the drawn pitch curve's smallest radius of curvature.
 
 use super::follower::{flat_contact, jay, to_cam, Kin, Placement};
-use super::motion::{Motion, Point};
+use super::motion::{end_step, Motion, Point};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::fit::{overflow, raised};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
@@ -210,7 +210,7 @@ fn invert_at(
             &[],
         );
         // The phases' ends are labelled (the textbook's 0, n, n + 1, 2n + 1).
-        if p.k == 0 || p.k == spec.divisions {
+        if p.k == 0 || p.last {
             rec.label(pid, p.label.clone(), mm(c), mm(c).normalize_or_zero());
         }
         centres.push(c);
@@ -236,7 +236,9 @@ fn invert_at(
             .map(|j| DVec2::from_angle(a.start + sweep * j as f64 / n as f64) * from.length())
             .collect()
     };
-    let n = spec.divisions;
+    // The last point of the rise (the return's first follows it) and of the return.
+    let n = points.iter().position(|p| p.last).unwrap_or(0);
+    let m = points.len().saturating_sub(1);
     // A moving phase's points, the practical profile's with the French curve between them.
     let phase = |pts: &[DVec2], range: std::ops::RangeInclusive<usize>, curve: bool| {
         let (a, b) = (*range.start(), *range.end());
@@ -261,8 +263,8 @@ fn invert_at(
     let closed = |pts: &[DVec2], curve: bool| -> Vec<DVec2> {
         let mut out = phase(pts, 0..=n, curve);
         out.extend(dwell(pts[n], pts[n + 1]));
-        out.extend(phase(pts, n + 1..=2 * n + 1, curve));
-        out.extend(dwell(pts[2 * n + 1], pts[0]));
+        out.extend(phase(pts, n + 1..=m, curve));
+        out.extend(dwell(pts[m], pts[0]));
         out.into_iter().map(mm).collect()
     };
     if !flat {
@@ -295,11 +297,7 @@ fn invert_at(
     // about O of the dwell's radius), so every chord is central.
     let beyond = |i: usize, forward: bool| -> DVec2 {
         let p = &points[i];
-        let step = if p.phase == 0 {
-            spec.phases.rise
-        } else {
-            spec.phases.ret
-        } / spec.divisions as f64;
+        let step = end_step(points, i);
         let dwell = match (p.phase, forward) {
             (0, true) => spec.phases.far,
             (0, false) | (2, true) => spec.phases.near,

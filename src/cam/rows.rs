@@ -454,7 +454,13 @@ impl Cam {
             )));
         }
         let d = &self.diagrams;
-        let top = d.s.get(s.divisions).copied().unwrap_or(0.0);
+        let top = self
+            .points
+            .iter()
+            .position(|p| p.last)
+            .and_then(|i| d.s.get(i))
+            .copied()
+            .unwrap_or(0.0);
         out.push(Note::text(format!(
             "cam: equal-return check: dS/dφ at the end of the rise = {} m, of the return = {} m (0 exact); S at the end of the rise y_max·μ_S = {} m against the stroke {} m",
             num(d.ds_ends[0]), num(d.ds_ends[1]), num(top), num(s.stroke)
