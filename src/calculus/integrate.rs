@@ -37,7 +37,8 @@ impl Divided {
     /// [`CalculusError::TooFewIntervals`] for fewer than 2 intervals,
     /// [`CalculusError::Ordinates`] when there is not one ordinate per interval.
     pub fn new(x: Vec<f64>, mid: Vec<f64>) -> Result<Self, CalculusError> {
-        let all_finite = |what: &'static str, v: &[f64]| match v.iter().position(|v| !v.is_finite()) {
+        let all_finite = |what: &'static str, v: &[f64]| match v.iter().position(|v| !v.is_finite())
+        {
             Some(index) => Err(CalculusError::NonFinite {
                 what,
                 index,

@@ -48,11 +48,11 @@ mod tests;
 pub use differentiate::{
     chord_mid_bound, chord_node_bound, derivative_scale, pole_for, Derivative, Method,
 };
-pub use layout::Layout;
 pub use integrate::{
-    integral_scale, integrate_chords, integrate_chords_in, integrate_divided_in, midpoint_rule_bound,
-    Divided, Integral, Sampling,
+    integral_scale, integrate_chords, integrate_chords_in, integrate_divided_in,
+    midpoint_rule_bound, Divided, Integral, Sampling,
 };
+pub use layout::Layout;
 
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::{line_line, DVec2, Line, LineLine, Segment};
@@ -99,7 +99,9 @@ pub enum CalculusError {
         intervals: usize,
     },
     /// A division's mid-interval ordinates do not match its intervals.
-    #[error("a division of {intervals} intervals needs as many mid-interval ordinates, got {ordinates}")]
+    #[error(
+        "a division of {intervals} intervals needs as many mid-interval ordinates, got {ordinates}"
+    )]
     Ordinates {
         /// Intervals of the division.
         intervals: usize,

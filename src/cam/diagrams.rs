@@ -11,6 +11,13 @@
 //! return's construction never lies over the rise's. The integration goes on across the
 //! dwells as the textbook's does: the far dwell is drawn at the S the rise's chords reached
 //! and the return starts from there, so S has no step where a phase meets a dwell.
+//!
+//! Each phase is integrated over its points' intervals ([`super::motion::divisions`]): the
+//! scene's equal ones, and a division point on every jump or corner of the given d²S/dφ²
+//! between them, so that the diagram is smooth over each interval and the mid-interval
+//! ordinate stands for it to the chord method's own (second-order) error. A jump inside an
+//! interval would be taken from one side over the whole interval: with "linear with
+//! blends" (0,2) at 12 equal intervals the rise ended 13 % short of the stroke.
 
 use super::law::Shock;
 use super::motion::{motion, motion_u, Motion, Point};
@@ -533,7 +540,10 @@ fn given_curve(spec: &CamSpec, phase: usize, x: &[f64], phi: Scale, mu: Scale) -
         (spec.ret, spec.phases.ret)
     };
     let mut us: Vec<(f64, bool)> = (0..=48).map(|k| (k as f64 / 48.0, true)).collect();
-    us.extend(x.windows(2).map(|w| ((0.5 * (w[0] + w[1]) - st) / len, true)));
+    us.extend(
+        x.windows(2)
+            .map(|w| ((0.5 * (w[0] + w[1]) - st) / len, true)),
+    );
     for b in law.breaks() {
         us.push((b, false));
         us.push((b, true));

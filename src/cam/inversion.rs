@@ -292,10 +292,13 @@ fn invert_at(
         &[o],
     );
     // The angle read off the drawing: the normal to the chord through the neighbours against
-    // the follower's direction in its inverted position.
+    // the follower's direction in its inverted position: the chord through the neighbours
+    // where they lie equally far, else the tangent at the point of the parabola through the
+    // three (in φ), which it is for equal steps — the reading stays second order beside a
+    // division point on a break of the law.
     // At a phase's end the neighbour is read on the drawn dwell arc, one step on (the arc
     // about O of the dwell's radius), so every chord is central.
-    let beyond = |i: usize, forward: bool| -> DVec2 {
+    let beyond = |i: usize, forward: bool| -> (DVec2, f64) {
         let p = &points[i];
         let step = end_step(points, i);
         let dwell = match (p.phase, forward) {
@@ -304,7 +307,7 @@ fn invert_at(
             _ => spec.phases.far,
         };
         if dwell <= 0.0 {
-            return centres[i];
+            return (centres[i], 0.0);
         }
         let d = step.min(dwell);
         let phi = if forward { p.phi + d } else { p.phi - d };
@@ -318,22 +321,23 @@ fn invert_at(
             ds: 0.0,
             d2s: 0.0,
         };
-        to_cam(place.kin(m).b, phi)
+        (to_cam(place.kin(m).b, phi), d)
     };
     let angles = (0..points.len())
         .map(|i| {
             let (lo, hi) = neighbours(points, i);
-            let a = if lo == i {
+            let phi = points[i].phi;
+            let (a, ha) = if lo == i {
                 beyond(i, false)
             } else {
-                centres[lo]
+                (centres[lo], phi - points[lo].phi)
             };
-            let b = if hi == i {
+            let (b, hb) = if hi == i {
                 beyond(i, true)
             } else {
-                centres[hi]
+                (centres[hi], points[hi].phi - phi)
             };
-            let t = b - a;
+            let t = tangent_through((a, ha), centres[i], (b, hb));
             let nrm = jay(t);
             let path = to_cam(kins[i].path, points[i].phi);
             let c = (nrm.dot(path).abs() / nrm.length()).clamp(0.0, 1.0);
@@ -371,6 +375,17 @@ pub(super) fn cam_centre(rec: &mut Recorder) -> StepId {
     );
     rec.label(o, "O_1", DVec2::ZERO, DVec2::new(-0.7, -0.7));
     o
+}
+
+/// The direction of the curve at `c` read through its neighbours `a` and `b`, `ha` and `hb`
+/// before and after it (in φ): the chord a → b where the steps are equal or one neighbour
+/// is the point itself, else the tangent at `c` of the parabola through the three,
+/// ∝ ha²·(b − c) + hb²·(c − a).
+fn tangent_through((a, ha): (DVec2, f64), c: DVec2, (b, hb): (DVec2, f64)) -> DVec2 {
+    if ha <= 0.0 || hb <= 0.0 || ha == hb {
+        return b - a;
+    }
+    (b - c) * (ha * ha) + (c - a) * (hb * hb)
 }
 
 /// The neighbours of point `i` within its phase (one-sided at the phase's ends).

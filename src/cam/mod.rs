@@ -102,7 +102,9 @@ pub struct CamSpec {
     pub rho_min: f64,
     /// The base (minimum) radius r₀ of the pitch curve, m; `None`: the minimum found.
     pub base_radius: Option<f64>,
-    /// Intervals of the rise and of the return (the diagrams' and the inversion's points).
+    /// Equal intervals of the rise and of the return (the diagrams' and the inversion's
+    /// points); a given d²S/dφ² that breaks between them gets a division point on each break
+    /// too ([`motion::divisions`]).
     pub divisions: usize,
     /// μ_S of the diagrams (m/mm); `None`: chosen for a stroke drawn at most 100 mm.
     pub scale_s: Option<Scale>,

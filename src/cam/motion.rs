@@ -80,7 +80,11 @@ pub fn points(spec: &CamSpec) -> Vec<Point> {
         for (k, d) in at.into_iter().enumerate() {
             out.push(Point {
                 label: out.len().to_string(),
-                phi: if k == last { st[phase + 1] } else { st[phase] + d },
+                phi: if k == last {
+                    st[phase + 1]
+                } else {
+                    st[phase] + d
+                },
                 after: k == 0,
                 phase,
                 k,
