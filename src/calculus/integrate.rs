@@ -107,13 +107,6 @@ pub fn integral_scale(
     Scale::new(value, quantity).ok_or(CalculusError::BadScale { value })
 }
 
-/// Bound of the midpoint rule over a length `length` with intervals `dx`:
-/// length·h²/24·max|y″| of the integrand (plus, for [`Sampling::Nodes`], the cubic's
-/// reading error 0.5625·h⁴/24·max|y⁗| per interval mean ordinate, times the length).
-pub fn midpoint_rule_bound(length: f64, dx: f64, max_d2: f64) -> f64 {
-    length.abs() * dx * dx / 24.0 * max_d2
-}
-
 /// Integrate the integrand `src` (drawn at `scales`) graphically, recording on `rec`, whose
 /// scale must be μ_y′·H·μ_x (see [`integral_scale`]): the integrand's curve and axes
 /// (optional) at `layout.source_origin`; the pole P on its abscissa axis at H left of its

@@ -37,6 +37,7 @@
 //! |J|·h/2 that no finer division removes from that interval (first order), so a division
 //! point belongs on every jump (the intervals need not then be equal).
 
+mod bounds;
 mod differentiate;
 mod integrate;
 mod layout;
@@ -44,13 +45,14 @@ mod read;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_divided;
 
-pub use differentiate::{
-    chord_mid_bound, chord_node_bound, derivative_scale, pole_for, Derivative, Method,
-};
+pub use bounds::{chord_mid_bound, chord_node_bound, midpoint_rule_bound};
+pub use differentiate::{derivative_scale, pole_for, Derivative, Method};
 pub use integrate::{
-    integral_scale, integrate_chords, integrate_chords_in, integrate_divided_in,
-    midpoint_rule_bound, Divided, Integral, Sampling,
+    integral_scale, integrate_chords, integrate_chords_in, integrate_divided_in, Divided, Integral,
+    Sampling,
 };
 pub use layout::Layout;
 

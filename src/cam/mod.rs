@@ -19,6 +19,7 @@
 
 mod centre;
 mod construct;
+mod deviation;
 mod diagrams;
 pub mod exact;
 pub mod extremum;
@@ -35,11 +36,11 @@ pub mod sliding;
 mod tests;
 
 pub use construct::{build, Cam};
+pub use deviation::{deviation, deviation_at, inversion_at};
 pub use diagrams::{Analogue, Diagrams};
 pub use inversion::Inversion;
 pub use law::{Law, Shock};
 pub use radius::RadiusConstruction;
-pub use rows::{deviation, deviation_at, inversion_at};
 
 use crate::scale::Scale;
 use thiserror::Error;

@@ -21,41 +21,21 @@
 
 use proptest::prelude::*;
 use std::f64::consts::FRAC_PI_2;
-use tmm::cam::{build, Cam, CamSpec, Closure, Follower, Given, Law, Phases, Rotation};
+use tmm::cam::{build, Cam, CamSpec, Closure, Follower, Law};
 use tmm::construct::{Context, Drafting};
 
 fn ctx() -> Context {
     Context::for_model_size(300.0, Drafting::EXACT).expect("context")
 }
 
-/// A translating roller follower: phases [rise, far, return] in degrees (near: the rest).
+/// A translating roller follower (knife edge), H = 30 mm, e = 3 mm, γ_min = 60°: phases
+/// [rise, far, return] in degrees (near: the rest), `n` divisions.
 fn spec(law: Law, deg: [f64; 3], n: usize, closure: Closure) -> CamSpec {
-    let near = 360.0 - deg[0] - deg[1] - deg[2];
+    let follower = Follower::Translating { offset: 0.003 };
+    let force = closure == Closure::Force;
     CamSpec {
-        phases: Phases {
-            rise: deg[0].to_radians(),
-            far: deg[1].to_radians(),
-            ret: deg[2].to_radians(),
-            near: near.to_radians(),
-        },
-        rise: law,
-        ret: law,
-        stroke: 0.030,
-        follower: Follower::Translating { offset: 0.003 },
-        roller: Some(0.0),
-        gamma_min: 60f64.to_radians(),
-        rho_min: 0.0,
-        base_radius: None,
         divisions: n,
-        scale_s: None,
-        scale_l: None,
-        scale_phi: None,
-        poles: None,
-        law_assumed: false,
-        quoted_r_min: None,
-        closure,
-        given: Given::D2s,
-        rotation: Rotation::Ccw,
+        ..crate::cam_oracle::spec(deg, law, law, 0.030, follower, 60.0, force)
     }
 }
 
@@ -213,16 +193,19 @@ fn holds(spec: &CamSpec) -> Result<Seen, String> {
 
 const PZ5: [f64; 3] = [130.0, 50.0, 130.0];
 
+/// The issue's laws: "linear with blends" 0,2, "+ −" 0,3, trapezoidal.
+const ISSUE_LAWS: [Law; 3] = [
+    Law::LinearBlended { blend: 0.2 },
+    Law::ConstantAcceleration { ratio: 0.3 },
+    Law::Trapezoidal,
+];
+
 /// The issue's three laws at 12 divisions: the rise ends on the stroke (the blends and
 /// "+ −" exactly: their analogue is constant between the breaks), r_min read is the exact
 /// one, and the cam built on it keeps λ ≤ λ_max; the division points lie on the breaks.
 #[test]
 fn the_issues_laws_end_the_rise_on_the_stroke() {
-    for law in [
-        Law::LinearBlended { blend: 0.2 },
-        Law::ConstantAcceleration { ratio: 0.3 },
-        Law::Trapezoidal,
-    ] {
+    for law in ISSUE_LAWS {
         let s = spec(law, PZ5, 12, Closure::Force);
         let cam = build(&s, &ctx()).unwrap_or_else(|e| panic!("{e}"));
         for b in knots(law) {
@@ -282,11 +265,7 @@ fn breaks_on_the_nodes_add_no_point() {
 /// trapezoidal law's C = 128/3/12 = 3.56; it is exact where its corners are nodes).
 #[test]
 fn the_rise_end_error_times_n_squared_stays_within_c() {
-    for law in [
-        Law::LinearBlended { blend: 0.2 },
-        Law::ConstantAcceleration { ratio: 0.3 },
-        Law::Trapezoidal,
-    ] {
+    for law in ISSUE_LAWS {
         let [_, f3, f4] = law_maxima(law);
         let c = f4 / 24.0 + f3 / 12.0;
         let mut worst: f64 = 0.0;

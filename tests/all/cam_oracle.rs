@@ -34,7 +34,7 @@ fn law(k: u8, ratio: f64) -> Law {
 
 /// A task: phases in degrees [rise, far, return] (near = the rest), one law each way.
 #[allow(clippy::too_many_arguments)]
-fn spec(
+pub(crate) fn spec(
     deg: [f64; 3],
     rise: Law,
     ret: Law,
