@@ -209,7 +209,8 @@ fn invert_at(
             DVec2::ZERO,
             &[],
         );
-        // The phases' ends are labelled (the textbook's 0, n, n + 1, 2n + 1).
+        // The phases' ends are labelled (the textbook's 0, n, n + 1, 2n + 1 when no point is
+        // added on a break of the law).
         if p.k == 0 || p.last {
             rec.label(pid, p.label.clone(), mm(c), mm(c).normalize_or_zero());
         }
