@@ -16,6 +16,60 @@ pub enum Sampling {
     Midpoints,
 }
 
+/// A given diagram divided for graphical integration: the division points x₀ < x₁ < … < x_N
+/// (equal intervals, or with a division point at every break of the curve so that the curve
+/// is smooth over each interval — the intervals need not be equal) and the ordinate the
+/// method takes at the middle of each interval.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Divided {
+    /// The division points, ascending (physical units).
+    pub x: Vec<f64>,
+    /// The ordinate at the middle of each interval (physical units), one per interval.
+    pub mid: Vec<f64>,
+}
+
+impl Divided {
+    /// A validated division.
+    ///
+    /// # Errors
+    /// [`CalculusError::NonFinite`] for a value that is not finite,
+    /// [`CalculusError::BadInterval`] for an interval that is not > 0,
+    /// [`CalculusError::TooFewIntervals`] for fewer than 2 intervals,
+    /// [`CalculusError::Ordinates`] when there is not one ordinate per interval.
+    pub fn new(x: Vec<f64>, mid: Vec<f64>) -> Result<Self, CalculusError> {
+        let all_finite = |what: &'static str, v: &[f64]| match v.iter().position(|v| !v.is_finite())
+        {
+            Some(index) => Err(CalculusError::NonFinite {
+                what,
+                index,
+                value: v[index],
+            }),
+            None => Ok(()),
+        };
+        all_finite("division point x", &x)?;
+        all_finite("mid-interval ordinate", &mid)?;
+        if let Some(w) = x.windows(2).find(|w| w[1] <= w[0]) {
+            return Err(CalculusError::BadInterval { dx: w[1] - w[0] });
+        }
+        let intervals = x.len().saturating_sub(1);
+        if intervals < 2 {
+            return Err(CalculusError::TooFewIntervals { intervals });
+        }
+        if mid.len() != intervals {
+            return Err(CalculusError::Ordinates {
+                intervals,
+                ordinates: mid.len(),
+            });
+        }
+        Ok(Self { x, mid })
+    }
+
+    /// The number of intervals N.
+    pub fn intervals(&self) -> usize {
+        self.mid.len()
+    }
+}
+
 /// An integral diagram as constructed and read off the drawing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Integral {
@@ -25,10 +79,8 @@ pub struct Integral {
     pub pole_mm: f64,
     /// The pole P, figure mm (on the integrand's abscissa axis).
     pub pole: DVec2,
-    /// Abscissa of node 0.
-    pub x0: f64,
-    /// Interval length.
-    pub dx: f64,
+    /// Abscissae of the nodes 0..=N (the division points).
+    pub x: Vec<f64>,
     /// Values at the nodes 0..=N, physical units, as read (node 0 is the start value).
     pub node: Vec<f64>,
     /// The recorded rays from the pole, one per interval.
@@ -37,16 +89,6 @@ pub struct Integral {
     pub chords: Vec<StepId>,
     /// The recorded smooth curve through the chord ends.
     pub curve: StepId,
-}
-
-impl Integral {
-    /// The node values as a (non-periodic) diagram.
-    ///
-    /// # Errors
-    /// See [`Diagram::validate`].
-    pub fn diagram(&self) -> Result<Diagram, CalculusError> {
-        Diagram::new(self.x0, self.dx, self.node.clone(), false)
-    }
 }
 
 /// The integral's ordinate scale μ_y = μ_y′·H·μ_x (the inverse of the derivative's).
@@ -63,13 +105,6 @@ pub fn integral_scale(
     check_pole(pole_mm)?;
     let value = integrand.value() * pole_mm * x.value();
     Scale::new(value, quantity).ok_or(CalculusError::BadScale { value })
-}
-
-/// Bound of the midpoint rule over a length `length` with intervals `dx`:
-/// length·h²/24·max|y″| of the integrand (plus, for [`Sampling::Nodes`], the cubic's
-/// reading error 0.5625·h⁴/24·max|y⁗| per interval mean ordinate, times the length).
-pub fn midpoint_rule_bound(length: f64, dx: f64, max_d2: f64) -> f64 {
-    length.abs() * dx * dx / 24.0 * max_d2
 }
 
 /// Integrate the integrand `src` (drawn at `scales`) graphically, recording on `rec`, whose
@@ -111,7 +146,7 @@ pub fn integrate_chords(
 /// # Errors
 /// As [`integrate_chords`].
 pub fn integrate_chords_in(
-    mut figs: Figures<'_>,
+    figs: Figures<'_>,
     src: &Diagram,
     sampling: Sampling,
     scales: Scales,
@@ -138,6 +173,104 @@ pub fn integrate_chords_in(
             (src.y.len(), src.y.clone())
         }
     };
+    let run = scales.x.to_mm(src.dx);
+    let so = layout.source_origin;
+    let curve = match sampling {
+        Sampling::Nodes => Some(
+            (0..=n)
+                .map(|k| at_mm(so, k as f64 * run, scales.y.to_mm(src.at(k))))
+                .collect(),
+        ),
+        Sampling::Midpoints => None,
+    };
+    let drawn = Drawn {
+        nodes_mm: (0..=n).map(|k| k as f64 * run).collect(),
+        mids_mm: (0..n).map(|k| (k as f64 + 0.5) * run).collect(),
+        means,
+        curve,
+    };
+    let out = chords_through(figs, &drawn, scales, pole_mm, start, layout)?;
+    Ok(out.into_integral((0..=n).map(|k| src.x(k)).collect(), pole_mm))
+}
+
+/// Integrate the division `src` (drawn at `scales`) graphically into `figs`, as
+/// [`integrate_chords_in`] does, over its intervals as they are divided: the perpendicular
+/// at the middle of each, the ray from the pole, the chord across it from the previous
+/// chord's end to the ordinate at its division point. Over intervals on each of which the
+/// integrand is smooth (a division point at every break) the error is the midpoint rule's,
+/// ≤ Σ hᵢ³/24·max|y″| ≤ (x_N − x₀)·h_max²/24·max|y″| over the pieces
+/// ([`midpoint_rule_bound`] with h_max).
+///
+/// # Errors
+/// An invalid division, H ≤ 0, a recorder at another scale, or values too large to draw.
+pub fn integrate_divided_in(
+    figs: Figures<'_>,
+    src: &Divided,
+    scales: Scales,
+    pole_mm: f64,
+    start: f64,
+    layout: &Layout,
+) -> Result<Integral, CalculusError> {
+    let src = Divided::new(src.x.clone(), src.mid.clone())?;
+    let x0 = src.x[0];
+    let nodes_mm: Vec<f64> = src.x.iter().map(|&x| scales.x.to_mm(x - x0)).collect();
+    let drawn = Drawn {
+        mids_mm: nodes_mm.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect(),
+        nodes_mm,
+        means: src.mid.clone(),
+        curve: None,
+    };
+    let out = chords_through(figs, &drawn, scales, pole_mm, start, layout)?;
+    Ok(out.into_integral(src.x, pole_mm))
+}
+
+/// The integrand as the construction draws it, abscissae in mm from the origins.
+struct Drawn {
+    /// The division points.
+    nodes_mm: Vec<f64>,
+    /// The middles of the intervals.
+    mids_mm: Vec<f64>,
+    /// The ordinates at the middles (physical).
+    means: Vec<f64>,
+    /// The given curve to draw with its axes (figure mm); `None`: through the mid-interval
+    /// points.
+    curve: Option<Vec<DVec2>>,
+}
+
+/// What [`chords_through`] constructs.
+struct Chords {
+    scale: Scale,
+    pole: DVec2,
+    node: Vec<f64>,
+    rays: Vec<StepId>,
+    chords: Vec<StepId>,
+    curve: StepId,
+}
+
+impl Chords {
+    fn into_integral(self, x: Vec<f64>, pole_mm: f64) -> Integral {
+        Integral {
+            scale: self.scale,
+            pole_mm,
+            pole: self.pole,
+            x,
+            node: self.node,
+            rays: self.rays,
+            chords: self.chords,
+            curve: self.curve,
+        }
+    }
+}
+
+/// The construction of [`integrate_chords_in`] over the intervals of `d`.
+fn chords_through(
+    mut figs: Figures<'_>,
+    d: &Drawn,
+    scales: Scales,
+    pole_mm: f64,
+    start: f64,
+    layout: &Layout,
+) -> Result<Chords, CalculusError> {
     if !start.is_finite() {
         return Err(CalculusError::NonFinite {
             what: "start value",
@@ -147,29 +280,21 @@ pub fn integrate_chords_in(
     }
     check_pole(pole_mm)?;
     let scale = check_scale(figs.built(), scales.y.value() * pole_mm * scales.x.value())?;
-    let run = scales.x.to_mm(src.dx);
     let so = layout.source_origin;
-    let m_pts = means
+    let m_pts = d
+        .mids_mm
         .iter()
-        .enumerate()
-        .map(|(k, &m)| {
-            let p = at_mm(so, (k as f64 + 0.5) * run, scales.y.to_mm(m));
-            finite(p, "integrand")
-        })
+        .zip(&d.means)
+        .map(|(&x, &m)| finite(at_mm(so, x, scales.y.to_mm(m)), "integrand"))
         .collect::<Result<Vec<_>, _>>()?;
+    let extent = d.nodes_mm.last().copied().unwrap_or(0.0);
     let given = figs.given();
     if layout.draw_source {
-        let curve = match sampling {
-            Sampling::Nodes => (0..=n)
-                .map(|k| at_mm(so, k as f64 * run, scales.y.to_mm(src.at(k))))
-                .collect(),
-            Sampling::Midpoints => m_pts.clone(),
-        };
         draw_diagram(
             given,
             so,
-            curve,
-            (pole_mm + 6.0, run * n as f64),
+            d.curve.clone().unwrap_or_else(|| m_pts.clone()),
+            (pole_mm + 6.0, extent),
             (&layout.x_name, &layout.source_name),
             Role::Given,
         );
@@ -181,9 +306,9 @@ pub fn integrate_chords_in(
     ray_axis_line(given, layout, axis_x, so.y, &levels);
     let o = layout.origin;
     let mut ends = vec![finite(at_mm(o, 0.0, scale.to_mm(start)), "start value")?];
-    let mut rays = Vec::with_capacity(n);
-    let mut chords = Vec::with_capacity(n);
-    for (k, &m) in m_pts.iter().enumerate() {
+    let mut rays = Vec::with_capacity(m_pts.len());
+    let mut chords = Vec::with_capacity(m_pts.len());
+    for (k, (&m, &x_end)) in m_pts.iter().zip(&d.nodes_mm[1..]).enumerate() {
         let given = figs.given();
         let foot = DVec2::new(m.x, so.y);
         let perp = thin(given, format!("mean ordinate {k}"), foot, m, &[]);
@@ -198,7 +323,6 @@ pub fn integrate_chords_in(
         );
         let prev = ends[k];
         let along = Line::new(prev, q - pole).ok_or(CalculusError::Overflow { what: "chord" })?;
-        let x_end = (k + 1) as f64 * run;
         let ordinate = Line::new(at_mm(o, x_end, 0.0), DVec2::Y)
             .ok_or(CalculusError::Overflow { what: "ordinate" })?;
         let built = figs.built();
@@ -228,7 +352,7 @@ pub fn integrate_chords_in(
             built,
             o,
             &ends,
-            (6.0, run * n as f64),
+            (6.0, extent),
             (&layout.x_name, &layout.name),
         );
     }
@@ -247,12 +371,9 @@ pub fn integrate_chords_in(
             what: "integral values",
         });
     }
-    Ok(Integral {
+    Ok(Chords {
         scale,
-        pole_mm,
         pole,
-        x0: src.x0,
-        dx: src.dx,
         node,
         rays,
         chords,

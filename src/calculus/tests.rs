@@ -6,7 +6,7 @@ use crate::geom::Line;
 use crate::scale::Quantity;
 use std::f64::consts::TAU;
 
-fn scale(v: f64, q: Quantity) -> Scale {
+pub(super) fn scale(v: f64, q: Quantity) -> Scale {
     Scale::new(v, q).expect("valid test scale")
 }
 
@@ -18,7 +18,7 @@ fn sin_scales() -> Scales {
     }
 }
 
-fn recorder(mu: f64, drafting: f64) -> Recorder {
+pub(super) fn recorder(mu: f64, drafting: f64) -> Recorder {
     Recorder::in_context(
         "test",
         scale(mu, Quantity::Length),
@@ -27,7 +27,7 @@ fn recorder(mu: f64, drafting: f64) -> Recorder {
     )
 }
 
-fn layout() -> Layout {
+pub(super) fn layout() -> Layout {
     Layout::new(DVec2::new(0.0, 150.0), DVec2::ZERO)
 }
 

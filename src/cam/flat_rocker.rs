@@ -373,7 +373,7 @@ mod tests {
         for (p, c) in points(s).iter().zip(&b.contacts) {
             let e = exact(s, r, p.phi, p.after).expect("the envelope");
             let d = c.point.distance(e.point);
-            if p.k == 0 || p.k == s.divisions {
+            if p.k == 0 || p.last {
                 worst.1 = worst.1.max(d);
             } else {
                 worst.0 = worst.0.max(d);
@@ -446,7 +446,7 @@ mod tests {
         let mut worst = (0.0_f64, 0.0_f64);
         for (p, c) in points(&s).iter().zip(&b.contacts) {
             let e = exact(&s, &r, p.phi, p.after).unwrap();
-            if p.k != 0 && p.k != s.divisions {
+            if p.k != 0 && !p.last {
                 worst.0 = worst.0.max((c.rho - e.rho).abs() / e.rho.abs());
             }
             worst.1 = worst.1.max((c.lambda - e.lambda).abs());

@@ -3,7 +3,7 @@
 //! angle read off the drawing; the drawn pitch curve's smallest radius of curvature.
 
 use super::follower::{flat_contact, jay, to_cam, Kin, Placement};
-use super::motion::{Motion, Point};
+use super::motion::{end_step, Motion, Point};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::fit::{overflow, raised};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
@@ -209,8 +209,9 @@ fn invert_at(
             DVec2::ZERO,
             &[],
         );
-        // The phases' ends are labelled (the textbook's 0, n, n + 1, 2n + 1).
-        if p.k == 0 || p.k == spec.divisions {
+        // The phases' ends are labelled (the textbook's 0, n, n + 1, 2n + 1 when no point is
+        // added on a break of the law).
+        if p.k == 0 || p.last {
             rec.label(pid, p.label.clone(), mm(c), mm(c).normalize_or_zero());
         }
         centres.push(c);
@@ -236,7 +237,9 @@ fn invert_at(
             .map(|j| DVec2::from_angle(a.start + sweep * j as f64 / n as f64) * from.length())
             .collect()
     };
-    let n = spec.divisions;
+    // The last point of the rise (the return's first follows it) and of the return.
+    let n = points.iter().position(|p| p.last).unwrap_or(0);
+    let m = points.len().saturating_sub(1);
     // A moving phase's points, the practical profile's with the French curve between them.
     let phase = |pts: &[DVec2], range: std::ops::RangeInclusive<usize>, curve: bool| {
         let (a, b) = (*range.start(), *range.end());
@@ -261,8 +264,8 @@ fn invert_at(
     let closed = |pts: &[DVec2], curve: bool| -> Vec<DVec2> {
         let mut out = phase(pts, 0..=n, curve);
         out.extend(dwell(pts[n], pts[n + 1]));
-        out.extend(phase(pts, n + 1..=2 * n + 1, curve));
-        out.extend(dwell(pts[2 * n + 1], pts[0]));
+        out.extend(phase(pts, n + 1..=m, curve));
+        out.extend(dwell(pts[m], pts[0]));
         out.into_iter().map(mm).collect()
     };
     if !flat {
@@ -290,23 +293,22 @@ fn invert_at(
         &[o],
     );
     // The angle read off the drawing: the normal to the chord through the neighbours against
-    // the follower's direction in its inverted position.
+    // the follower's direction in its inverted position: the chord through the neighbours
+    // where they lie equally far, else the tangent at the point of the parabola through the
+    // three (in φ), which it is for equal steps — the reading stays second order beside a
+    // division point on a break of the law.
     // At a phase's end the neighbour is read on the drawn dwell arc, one step on (the arc
     // about O of the dwell's radius), so every chord is central.
-    let beyond = |i: usize, forward: bool| -> DVec2 {
+    let beyond = |i: usize, forward: bool| -> (DVec2, f64) {
         let p = &points[i];
-        let step = if p.phase == 0 {
-            spec.phases.rise
-        } else {
-            spec.phases.ret
-        } / spec.divisions as f64;
+        let step = end_step(points, i);
         let dwell = match (p.phase, forward) {
             (0, true) => spec.phases.far,
             (0, false) | (2, true) => spec.phases.near,
             _ => spec.phases.far,
         };
         if dwell <= 0.0 {
-            return centres[i];
+            return (centres[i], 0.0);
         }
         let d = step.min(dwell);
         let phi = if forward { p.phi + d } else { p.phi - d };
@@ -320,22 +322,23 @@ fn invert_at(
             ds: 0.0,
             d2s: 0.0,
         };
-        to_cam(place.kin(m).b, phi)
+        (to_cam(place.kin(m).b, phi), d)
     };
     let angles = (0..points.len())
         .map(|i| {
             let (lo, hi) = neighbours(points, i);
-            let a = if lo == i {
+            let phi = points[i].phi;
+            let (a, ha) = if lo == i {
                 beyond(i, false)
             } else {
-                centres[lo]
+                (centres[lo], phi - points[lo].phi)
             };
-            let b = if hi == i {
+            let (b, hb) = if hi == i {
                 beyond(i, true)
             } else {
-                centres[hi]
+                (centres[hi], points[hi].phi - phi)
             };
-            let t = b - a;
+            let t = tangent_through((a, ha), centres[i], (b, hb));
             let nrm = jay(t);
             let path = to_cam(kins[i].path, points[i].phi);
             let c = (nrm.dot(path).abs() / nrm.length()).clamp(0.0, 1.0);
@@ -373,6 +376,17 @@ pub(super) fn cam_centre(rec: &mut Recorder) -> StepId {
     );
     rec.label(o, "O_1", DVec2::ZERO, DVec2::new(-0.7, -0.7));
     o
+}
+
+/// The direction of the curve at `c` read through its neighbours `a` and `b`, `ha` and `hb`
+/// before and after it (in φ): the chord a → b where the steps are equal or one neighbour
+/// is the point itself, else the tangent at `c` of the parabola through the three,
+/// ∝ ha²·(b − c) + hb²·(c − a).
+fn tangent_through((a, ha): (DVec2, f64), c: DVec2, (b, hb): (DVec2, f64)) -> DVec2 {
+    if ha <= 0.0 || hb <= 0.0 || ha == hb {
+        return b - a;
+    }
+    (b - c) * (ha * ha) + (c - a) * (hb * hb)
 }
 
 /// The neighbours of point `i` within its phase (one-sided at the phase's ends).

@@ -92,6 +92,20 @@ impl Law {
         }
     }
 
+    /// Where inside the phase the given acceleration analogue's diagram breaks: its jumps
+    /// ([`Law::breaks`]) and its corners, where its slope jumps (the trapezoidal law's
+    /// knots). The diagram is smooth between them, so a division point of the graphical
+    /// integration belongs on each.
+    pub fn knots(self) -> Vec<f64> {
+        match self {
+            Law::Trapezoidal => TRAPEZOID[1..TRAPEZOID.len() - 1]
+                .iter()
+                .map(|&(u, _)| u)
+                .collect(),
+            _ => self.breaks(),
+        }
+    }
+
     /// (f, f′, f″) at u ∈ [0, 1]; at a break, `after` picks the piece that follows it.
     pub fn eval(self, u: f64, after: bool) -> (f64, f64, f64) {
         match self {

@@ -19,6 +19,7 @@
 
 mod centre;
 mod construct;
+mod deviation;
 mod diagrams;
 pub mod exact;
 pub mod extremum;
@@ -35,11 +36,11 @@ pub mod sliding;
 mod tests;
 
 pub use construct::{build, Cam};
+pub use deviation::{deviation, deviation_at, inversion_at};
 pub use diagrams::{Analogue, Diagrams};
 pub use inversion::Inversion;
 pub use law::{Law, Shock};
 pub use radius::RadiusConstruction;
-pub use rows::{deviation, deviation_at, inversion_at};
 
 use crate::scale::Scale;
 use thiserror::Error;
@@ -102,7 +103,9 @@ pub struct CamSpec {
     pub rho_min: f64,
     /// The base (minimum) radius r₀ of the pitch curve, m; `None`: the minimum found.
     pub base_radius: Option<f64>,
-    /// Intervals of the rise and of the return (the diagrams' and the inversion's points).
+    /// Equal intervals of the rise and of the return (the diagrams' and the inversion's
+    /// points); a given d²S/dφ² that breaks between them gets a division point on each break
+    /// too ([`motion::divisions`]).
     pub divisions: usize,
     /// μ_S of the diagrams (m/mm); `None`: chosen for a stroke drawn at most 100 mm.
     pub scale_s: Option<Scale>,

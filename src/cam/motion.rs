@@ -2,7 +2,7 @@
 //! (the rule at the ends of the phases: the phase side, not the dwell's), and the divisions'
 //! points.
 
-use super::{CamSpec, Law};
+use super::{CamSpec, Given, Law};
 use std::f64::consts::TAU;
 
 /// The follower's displacement S and its analogues S′ = dS/dφ, S″ = d²S/dφ² at one angle.
@@ -20,7 +20,7 @@ pub struct Motion {
 /// acceleration analogue jumps, which side of the jump it belongs to.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Point {
-    /// `0` … `2n + 1`.
+    /// `0`, `1`, … in order over the cycle (the rise's, then the return's).
     pub label: String,
     /// φ, rad.
     pub phi: f64,
@@ -28,32 +28,67 @@ pub struct Point {
     pub after: bool,
     /// The phase: 0 rise, 2 return.
     pub phase: usize,
-    /// The interval index within the phase (0 … n).
+    /// The point's index within its phase (0 at its start).
     pub k: usize,
+    /// The phase's last point (at its end).
+    pub last: bool,
 }
 
-/// The points of the diagrams: the rise's n + 1 and the return's n + 1 (seed 000: 26).
+/// A knot of a law closer than this to a division point (in u, the share of the phase) is
+/// on it: no extra division point is added for it.
+const KNOT_ON_NODE: f64 = 1e-9;
+
+/// The division points of a moving phase of the law `law` over the angle `len`, rad from
+/// its start: the scene's `divisions` equal intervals, and where the given acceleration
+/// analogue breaks between them ([`Law::knots`]) a division point there too — the
+/// textbook's rule for graphical integration: a division point on every break, so that the
+/// given curve is smooth over each interval and the chord method's error is its own (second
+/// order). A given S is smooth inside every phase (its breaks are the phases' ends): equal
+/// intervals only.
+pub fn divisions(spec: &CamSpec, law: Law, len: f64) -> Vec<f64> {
+    let n = spec.divisions.max(1);
+    let mut at: Vec<f64> = (0..=n).map(|k| len * k as f64 / n as f64).collect();
+    if spec.given == Given::D2s {
+        for b in law.knots() {
+            let node = (b * n as f64).round() / n as f64;
+            if b > 0.0 && b < 1.0 && (b - node).abs() > KNOT_ON_NODE {
+                at.push(len * b);
+            }
+        }
+        at.sort_by(f64::total_cmp);
+    }
+    at
+}
+
+/// The points of the diagrams: each moving phase's division points ([`divisions`]), the
+/// rise's then the return's — with n equal intervals and no break between the nodes, n + 1
+/// each (seed 000: 26).
 ///
 /// The rule at the ends of a moving phase (the same for every law): a point belongs to its
 /// phase, so its first point reports the phase's value just after the start (`after`) and
 /// its last point the phase's value just before the end, never the dwell's. An inner jump of
 /// the "+ −" law on a node reports the piece before it.
 pub fn points(spec: &CamSpec) -> Vec<Point> {
-    let n = spec.divisions;
     let st = spec.starts();
-    let mut out = Vec::with_capacity(2 * n + 2);
-    for (phase, len) in [(0usize, spec.phases.rise), (2, spec.phases.ret)] {
-        for k in 0..=n {
+    let mut out = Vec::with_capacity(2 * spec.divisions + 10);
+    for (phase, law, len) in [
+        (0usize, spec.rise, spec.phases.rise),
+        (2, spec.ret, spec.phases.ret),
+    ] {
+        let at = divisions(spec, law, len);
+        let last = at.len() - 1;
+        for (k, d) in at.into_iter().enumerate() {
             out.push(Point {
                 label: out.len().to_string(),
-                phi: if k == n {
+                phi: if k == last {
                     st[phase + 1]
                 } else {
-                    st[phase] + len * k as f64 / n as f64
+                    st[phase] + d
                 },
                 after: k == 0,
                 phase,
                 k,
+                last: k == last,
             });
         }
     }
@@ -181,24 +216,19 @@ pub enum Neighbour {
 }
 
 /// The drawing's neighbour of point `i`: the next point of its phase; beyond a phase's end,
-/// the drawn dwell one step on (the whole dwell if shorter); with no dwell there, the other
-/// phase's end point.
+/// the drawn dwell one step on ([`end_step`]; the whole dwell if shorter); with no dwell
+/// there, the other phase's end point.
 pub fn neighbour(spec: &CamSpec, points: &[Point], i: usize, forward: bool) -> Neighbour {
     let p = &points[i];
     let j = if forward { i + 1 } else { i.wrapping_sub(1) };
     if points.get(j).is_some_and(|q| q.phase == p.phase) {
         return Neighbour::Point(j);
     }
-    let len = if p.phase == 0 {
-        spec.phases.rise
-    } else {
-        spec.phases.ret
-    };
     let dwell = match (p.phase, forward) {
         (0, true) | (2, false) => spec.phases.far,
         _ => spec.phases.near,
     };
-    let d = (len / spec.divisions as f64).min(dwell);
+    let d = end_step(points, i).min(dwell);
     if d <= 0.0 {
         return Neighbour::Point(j.wrapping_add(points.len()) % points.len());
     }
@@ -210,4 +240,15 @@ pub fn neighbour(spec: &CamSpec, points: &[Point], i: usize, forward: bool) -> N
             0.0
         },
     }
+}
+
+/// The step a drawing takes from point `i` at a phase's end onto the dwell beyond it: the
+/// length of the phase's interval that ends (or starts) there.
+pub fn end_step(points: &[Point], i: usize) -> f64 {
+    let p = &points[i];
+    let inner = if p.k == 0 { i + 1 } else { i.wrapping_sub(1) };
+    points
+        .get(inner)
+        .filter(|q| q.phase == p.phase)
+        .map_or(0.0, |q| (q.phi - p.phi).abs())
 }

@@ -84,16 +84,21 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     // O on the vertical x = −e: the highest point below every γ_min line.
     let ox = -mu.to_mm(offset);
     let t = gamma.tan();
-    let (mut best, mut bind) = (f64::INFINITY, 0);
     // Under force closure only the rise's points bind.
     let binds = |i: usize| spec.closure == Closure::Geometric || points[i].phase == 0;
-    for (i, k) in ks.iter().enumerate().filter(|(i, _)| binds(*i)) {
-        let y = k.y - (k.x - ox).abs() * t;
-        if y < best {
-            best = y;
-            bind = i;
-        }
-    }
+    let below = |k: &DVec2| k.y - (k.x - ox).abs() * t;
+    let best = ks
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| binds(*i))
+        .map(|(_, k)| below(k))
+        .fold(f64::INFINITY, f64::min);
+    // The point whose line is drawn to O: the first that binds, points that bind equally (a
+    // symmetric cam's rise and return) to the drawing's coincidence, not to rounding.
+    let tie = rec.tolerances().coincident;
+    let bind = (0..ks.len())
+        .find(|&i| binds(i) && below(&ks[i]) <= best + tie)
+        .unwrap_or(0);
     let o = DVec2::new(ox, best);
     let path = s_axis(rec, spec, mu, o.length());
     for (i, k) in ks.iter().enumerate() {

@@ -1,17 +1,17 @@
 //! The check of a cam: every value read off its constructions against the analytic twin,
-//! the profile's deviation from the exact envelope, and the notes (shocks, the equal-return
-//! check, the roller's choice, every hard case detected, a source's inconsistent r_min).
+//! the profile's deviation from the exact envelope ([`super::deviation`]), and the notes
+//! (shocks, the equal-return check, the roller's choice, every hard case detected, a
+//! source's inconsistent r_min).
 
 use super::construct::Cam;
+use super::deviation::{deviation, exact_profile};
 use super::exact;
-use super::follower::{flat_contact, to_cam, Placement};
-use super::inversion::{invert, Inversion};
-use super::motion::{motion, points, Motion, Point};
-use super::{CamError, CamSpec, Closure, Follower, Given, Law, Rotation, Shock};
+use super::follower::{to_cam, Placement};
+use super::motion::{motion, Motion};
+use super::{Closure, Follower, Given, Law, Rotation, Shock};
 use crate::check::{
     self, At, BaseUsed, Cusp, Finding, Key, Limit, Method, Note, RadiusBasis, Row, Symbol,
 };
-use crate::construct::Context;
 use crate::geom::DVec2;
 use crate::scale::{format_sig, Lang};
 use std::f64::consts::FRAC_PI_2;
@@ -41,117 +41,6 @@ fn row(symbol: Symbol, at: At, method: Method, graphical: f64, analytic: f64, sc
 fn subject(mut r: Row, s: &str) -> Row {
     r.key.subject = s.to_string();
     r
-}
-
-/// The exact practical-profile point at φ (cam frame): the roller's tangency or the flat
-/// face's contact.
-pub fn exact_profile(
-    spec: &CamSpec,
-    place: &Placement,
-    base: f64,
-    roller: f64,
-    phi: f64,
-    after: bool,
-) -> DVec2 {
-    let m = motion(spec, phi, after);
-    let q = if matches!(spec.follower, Follower::Flat { .. }) {
-        flat_contact(base, m).0
-    } else {
-        place.kin(m).roller_point(roller)
-    };
-    to_cam(q, phi)
-}
-
-/// Distance from `p` to the segment [a, b].
-fn to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let d = b - a;
-    let t = if d.length_squared() > 0.0 {
-        ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.distance(a + d * t)
-}
-
-/// The largest and the mean normal distance between the drawn practical profile (the French
-/// curve between its points within each moving phase; the dwells are exact arcs) and the
-/// exact envelope, m.
-pub fn deviation(
-    cam_spec: &CamSpec,
-    points: &[Point],
-    inv: &Inversion,
-    place: &Placement,
-    base: f64,
-    roller: f64,
-) -> (f64, f64) {
-    let (mut worst, mut sum, mut count) = (0.0f64, 0.0, 0usize);
-    for i in 0..points.len().saturating_sub(1) {
-        let (p, q) = (&points[i], &points[i + 1]);
-        if p.phase != q.phase {
-            continue;
-        }
-        let curve = crate::geom::french_curve(
-            inv.profile[i],
-            inv.tangents[i],
-            inv.profile[i + 1],
-            inv.tangents[i + 1],
-            super::inversion::CURVE_PIECES,
-        );
-        for j in 0..=16 {
-            let phi = p.phi + (q.phi - p.phi) * j as f64 / 16.0;
-            let after = j == 0 && p.after;
-            let e = exact_profile(cam_spec, place, base, roller, phi, after);
-            let d = curve
-                .windows(2)
-                .map(|w| to_segment(e, w[0], w[1]))
-                .fold(f64::INFINITY, f64::min);
-            worst = worst.max(d);
-            sum += d;
-            count += 1;
-        }
-    }
-    (worst, sum / count.max(1) as f64)
-}
-
-/// The profile by inversion at `n` intervals per moving phase (2n + 2 positions) from the
-/// exact law, as read at drafting 0: the bench's sweep. Returns the task at that resolution,
-/// its points and the inversion.
-///
-/// # Errors
-/// As [`super::build`]'s inversion.
-pub fn inversion_at(
-    cam: &Cam,
-    n: usize,
-    ctx: &Context,
-) -> Result<(CamSpec, Vec<Point>, Inversion), CamError> {
-    let mut spec = cam.spec.clone();
-    spec.divisions = n.max(2);
-    // The cam's own μ_l: the profile at another N is drawn on the same scale.
-    spec.scale_l = Some(cam.inversion.scale);
-    let points = points(&spec);
-    let read: Vec<Motion> = points
-        .iter()
-        .map(|p| motion(&spec, p.phi, p.after))
-        .collect();
-    let inv = invert(
-        &spec,
-        &points,
-        &read,
-        &cam.placement,
-        (cam.base, cam.roller),
-        ctx,
-    )?;
-    Ok((spec, points, inv))
-}
-
-/// [`inversion_at`] and the largest deviation of its profile from the exact envelope, m.
-///
-/// # Errors
-/// As [`inversion_at`].
-pub fn deviation_at(cam: &Cam, n: usize, ctx: &Context) -> Result<(Inversion, f64), CamError> {
-    let (spec, points, inv) = inversion_at(cam, n, ctx)?;
-    let (dev, _) = deviation(&spec, &points, &inv, &cam.placement, cam.base, cam.roller);
-    Ok((inv, dev))
 }
 
 impl Cam {
@@ -454,7 +343,13 @@ impl Cam {
             )));
         }
         let d = &self.diagrams;
-        let top = d.s.get(s.divisions).copied().unwrap_or(0.0);
+        let top = self
+            .points
+            .iter()
+            .position(|p| p.last)
+            .and_then(|i| d.s.get(i))
+            .copied()
+            .unwrap_or(0.0);
         out.push(Note::text(format!(
             "cam: equal-return check: dS/dφ at the end of the rise = {} m, of the return = {} m (0 exact); S at the end of the rise y_max·μ_S = {} m against the stroke {} m",
             num(d.ds_ends[0]), num(d.ds_ends[1]), num(top), num(s.stroke)

@@ -34,7 +34,7 @@ fn law(k: u8, ratio: f64) -> Law {
 
 /// A task: phases in degrees [rise, far, return] (near = the rest), one law each way.
 #[allow(clippy::too_many_arguments)]
-fn spec(
+pub(crate) fn spec(
     deg: [f64; 3],
     rise: Law,
     ret: Law,
@@ -356,9 +356,22 @@ fn the_ends_of_every_phase_report_the_phase_side() {
         );
         s.divisions = n;
         let pts = motion::points(&s);
-        assert_eq!(pts.len(), 2 * n + 2);
-        for (phase, first) in [(0usize, 0usize), (2, n + 1)] {
-            let last = first + n;
+        // n equal intervals, and a division point on every break of the given d²S/dφ²
+        // between the nodes: the "+ −" law's jump, the trapezoidal law's corners.
+        let knots = match l {
+            Law::ConstantAcceleration { ratio } => vec![ratio],
+            Law::Trapezoidal => vec![0.125, 0.375, 0.625, 0.875],
+            _ => Vec::new(),
+        };
+        let off = knots
+            .iter()
+            .filter(|&&b| ((b * n as f64) - (b * n as f64).round()).abs() > 1e-9 * n as f64)
+            .count();
+        let per = n + 1 + off;
+        assert_eq!(pts.len(), 2 * per, "case {case}: {:?} at n = {n}", l.key());
+        for (phase, first) in [(0usize, 0usize), (2, per)] {
+            let last = first + per - 1;
+            assert!(pts[first].k == 0 && pts[last].last && pts[last].phase == phase);
             let h = s.stroke;
             let len = if phase == 0 {
                 s.phases.rise

@@ -12,6 +12,7 @@ mod bench;
 mod blobs;
 mod blocking;
 mod cam;
+mod cam_breaks;
 mod cam_diagrams;
 mod cam_oracle;
 mod cli;

@@ -1,0 +1,122 @@
+//! The drawn practical profile against the exact envelope: the exact profile point, the
+//! largest and mean normal distance of the French curve from it, and the profile by
+//! inversion at another number of divisions (the bench's sweep).
+
+use super::construct::Cam;
+use super::follower::{flat_contact, to_cam, Placement};
+use super::inversion::{invert, Inversion};
+use super::motion::{motion, points, Motion, Point};
+use super::{CamError, CamSpec, Follower};
+use crate::construct::Context;
+use crate::geom::DVec2;
+
+/// The exact practical-profile point at φ (cam frame): the roller's tangency or the flat
+/// face's contact.
+pub fn exact_profile(
+    spec: &CamSpec,
+    place: &Placement,
+    base: f64,
+    roller: f64,
+    phi: f64,
+    after: bool,
+) -> DVec2 {
+    let m = motion(spec, phi, after);
+    let q = if matches!(spec.follower, Follower::Flat { .. }) {
+        flat_contact(base, m).0
+    } else {
+        place.kin(m).roller_point(roller)
+    };
+    to_cam(q, phi)
+}
+
+/// Distance from `p` to the segment [a, b].
+fn to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+    let d = b - a;
+    let t = if d.length_squared() > 0.0 {
+        ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    p.distance(a + d * t)
+}
+
+/// The largest and the mean normal distance between the drawn practical profile (the French
+/// curve between its points within each moving phase; the dwells are exact arcs) and the
+/// exact envelope, m.
+pub fn deviation(
+    cam_spec: &CamSpec,
+    points: &[Point],
+    inv: &Inversion,
+    place: &Placement,
+    base: f64,
+    roller: f64,
+) -> (f64, f64) {
+    let (mut worst, mut sum, mut count) = (0.0f64, 0.0, 0usize);
+    for i in 0..points.len().saturating_sub(1) {
+        let (p, q) = (&points[i], &points[i + 1]);
+        if p.phase != q.phase {
+            continue;
+        }
+        let curve = crate::geom::french_curve(
+            inv.profile[i],
+            inv.tangents[i],
+            inv.profile[i + 1],
+            inv.tangents[i + 1],
+            super::inversion::CURVE_PIECES,
+        );
+        for j in 0..=16 {
+            let phi = p.phi + (q.phi - p.phi) * j as f64 / 16.0;
+            let after = j == 0 && p.after;
+            let e = exact_profile(cam_spec, place, base, roller, phi, after);
+            let d = curve
+                .windows(2)
+                .map(|w| to_segment(e, w[0], w[1]))
+                .fold(f64::INFINITY, f64::min);
+            worst = worst.max(d);
+            sum += d;
+            count += 1;
+        }
+    }
+    (worst, sum / count.max(1) as f64)
+}
+
+/// The profile by inversion at `n` equal intervals per moving phase (2n + 2 positions, and
+/// a division point on each break of a given d²S/dφ² between them) from the exact law, as read at drafting 0: the bench's sweep. Returns the task at that resolution,
+/// its points and the inversion.
+///
+/// # Errors
+/// As [`super::build`]'s inversion.
+pub fn inversion_at(
+    cam: &Cam,
+    n: usize,
+    ctx: &Context,
+) -> Result<(CamSpec, Vec<Point>, Inversion), CamError> {
+    let mut spec = cam.spec.clone();
+    spec.divisions = n.max(2);
+    // The cam's own μ_l: the profile at another N is drawn on the same scale.
+    spec.scale_l = Some(cam.inversion.scale);
+    let points = points(&spec);
+    let read: Vec<Motion> = points
+        .iter()
+        .map(|p| motion(&spec, p.phi, p.after))
+        .collect();
+    let inv = invert(
+        &spec,
+        &points,
+        &read,
+        &cam.placement,
+        (cam.base, cam.roller),
+        ctx,
+    )?;
+    Ok((spec, points, inv))
+}
+
+/// [`inversion_at`] and the largest deviation of its profile from the exact envelope, m.
+///
+/// # Errors
+/// As [`inversion_at`].
+pub fn deviation_at(cam: &Cam, n: usize, ctx: &Context) -> Result<(Inversion, f64), CamError> {
+    let (spec, points, inv) = inversion_at(cam, n, ctx)?;
+    let (dev, _) = deviation(&spec, &points, &inv, &cam.placement, cam.base, cam.roller);
+    Ok((inv, dev))
+}
