@@ -209,19 +209,15 @@ fn seed_000s_table_5_has_35_sign_errors_and_all_are_found() {
     let exact = v_b3b1.checked.as_ref().expect("checked").exact;
     assert!((exact + 0.3176).abs() < 1e-4, "{exact}");
     // V_D is the rocker end's, ω₃·L_CD (L_CD = 0.71 m), signed as ω₃ is.
+    let exact = |q: &str, p: &str| {
+        table5(q)
+            .into_iter()
+            .find(|a| a.entry.position.as_deref() == Some(p))
+            .and_then(|a| a.checked.as_ref())
+            .map_or(f64::NAN, |c| c.exact)
+    };
     for p in ["2", "9", "11"] {
-        let w3 = table5("omega_3")
-            .into_iter()
-            .find(|a| a.entry.position.as_deref() == Some(p))
-            .and_then(|a| a.checked.as_ref())
-            .expect("ω3")
-            .exact;
-        let vd = table5("v_D")
-            .into_iter()
-            .find(|a| a.entry.position.as_deref() == Some(p))
-            .and_then(|a| a.checked.as_ref())
-            .expect("V_D")
-            .exact;
+        let (w3, vd) = (exact("omega_3", p), exact("v_D", p));
         assert!((vd - 0.71 * w3).abs() < 1e-3, "at {p}: V_D {vd}, ω3 {w3}");
     }
 }

@@ -65,22 +65,20 @@ enum Expected {
     Quantity(String),
 }
 
+/// The values the generator draws from, and how it makes a slip of each.
+struct Maker<'a> {
+    all: &'a [Value],
+    /// μ_v and μ_a of the variant's plans.
+    mu: (f64, f64),
+}
+
 /// A number of `v` with a slip of `kind`, and the slip; `None` where the slip cannot be
 /// made on it.
-fn slip(
-    kind: Made,
-    v: &Value,
-    all: &[Value],
-    rng: &mut Rng,
-    mu: (f64, f64),
-) -> Option<(String, Expected)> {
-    made(kind, v, all, rng, mu)
-        .map(|(text, s)| (text, Expected::Slip(s)))
-        .or_else(|| {
-            (kind == Made::Quantity)
-                .then(|| other_quantity(v, all, rng))
-                .flatten()
-        })
+fn slip(kind: Made, v: &Value, maker: &Maker, rng: &mut Rng) -> Option<(String, Expected)> {
+    if kind == Made::Quantity {
+        return other_quantity(v, maker.all, rng);
+    }
+    made(kind, v, maker, rng).map(|(text, s)| (text, Expected::Slip(s)))
 }
 
 /// The value of another quantity of `v`'s unit at its position, by its construction.
@@ -96,14 +94,8 @@ fn other_quantity(v: &Value, all: &[Value], rng: &mut Rng) -> Option<(String, Ex
 }
 
 /// A number of `v` with a slip of `kind` (but another quantity's value), and the slip.
-fn made(
-    kind: Made,
-    v: &Value,
-    all: &[Value],
-    rng: &mut Rng,
-    mu: (f64, f64),
-) -> Option<(String, Slip)> {
-    let e = v.e;
+fn made(kind: Made, v: &Value, maker: &Maker, rng: &mut Rng) -> Option<(String, Slip)> {
+    let (e, all, mu) = (v.e, maker.all, maker.mu);
     match kind {
         Made::Factor if !v.turn => {
             let k = [2.0, 0.5, 10.0][rng.below(3)];
@@ -331,7 +323,7 @@ fn slips_on(
             continue;
         }
         let v = pool[rng.below(pool.len())];
-        let Some((text, slip)) = slip(kind, v, all, rng, mu) else {
+        let Some((text, slip)) = slip(kind, v, &Maker { all, mu }, rng) else {
             continue;
         };
         if used(&lines, v) {
