@@ -230,8 +230,48 @@ fn magnitudes(audited: &[Audited]) -> Vec<(&str, Option<&str>)> {
     out
 }
 
+/// The columns (a quantity by the method written) of two values or more not 0 whose every
+/// value not 0 has the opposite sign (alone or with another slip): a table of the other
+/// sense of rotation.
+fn opposite(audited: &[Audited]) -> Vec<(&str, Option<&str>)> {
+    let mut columns: Vec<((&str, Option<&str>), usize, bool)> = Vec::new();
+    for a in audited
+        .iter()
+        .filter(|a| a.checked.is_some() && !a.entry.written.is_zero())
+    {
+        let column = (a.entry.quantity.as_str(), a.entry.method.as_deref());
+        let sign = matches!(&a.verdict, Verdict::Slips(all)
+            if all.iter().all(|e| e.first() == Some(&Slip::Sign)));
+        match columns.iter_mut().find(|c| c.0 == column) {
+            Some(c) => {
+                c.1 += 1;
+                c.2 &= sign;
+            }
+            None => columns.push((column, 1, sign)),
+        }
+    }
+    columns
+        .into_iter()
+        .filter(|c| c.1 >= 2 && c.2)
+        .map(|c| c.0)
+        .collect()
+}
+
+/// Columns named as the Markdown writes them: `v_D (plan)`, `omega_3`.
+fn named(columns: &[(&str, Option<&str>)]) -> String {
+    columns
+        .iter()
+        .map(|(q, m)| match m {
+            Some(m) => format!("{q} ({m})"),
+            None => q.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 /// The convention the table is read in, in words: signed values as the textbook's tables,
-/// with the columns read as magnitudes; or, when every column is, a table of magnitudes.
+/// with the columns read as magnitudes and those of the opposite sign throughout; or, when
+/// every column is read as magnitudes, a table of magnitudes.
 fn signs(audited: &[Audited], lang: Lang) -> String {
     let columns = magnitudes(audited);
     let checked = audited.iter().filter(|a| a.checked.is_some());
@@ -249,20 +289,13 @@ fn signs(audited: &[Audited], lang: Lang) -> String {
     }
     s.push_str(&plain(T::SignedAsTextbook.get(lang)));
     s.push('.');
-    if !columns.is_empty() {
-        let names: Vec<String> = columns
-            .iter()
-            .map(|(q, m)| match m {
-                Some(m) => format!("{q} ({m})"),
-                None => q.to_string(),
-            })
-            .collect();
-        let _ = write!(
-            s,
-            " {}: {}.",
-            plain(T::ReadAsMagnitudes.get(lang)),
-            names.join(", ")
-        );
+    for (word, columns) in [
+        (T::ReadAsMagnitudes, columns),
+        (T::OppositeSense, opposite(audited)),
+    ] {
+        if !columns.is_empty() {
+            let _ = write!(s, " {}: {}.", plain(word.get(lang)), named(&columns));
+        }
     }
     s
 }

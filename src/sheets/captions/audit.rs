@@ -47,6 +47,11 @@ catalogue! {
             "Модулі (у стовпці немає від'ємних чисел, а серед точних значень є)",
             "Read as magnitudes (no value of the column written negative, though exact values are)"
         ),
+        OppositeSense => (
+            "Знак противоположен во всём столбце (направление вращения кривошипа принято обратным?)",
+            "Знак протилежний у всьому стовпці (напрям обертання кривошипа прийнято зворотним?)",
+            "The opposite sign throughout the column (the crank's sense of rotation taken the other way?)"
+        ),
         NoSigns => (
             "в таблице нет знаков: сравниваются модули",
             "у таблиці немає знаків: порівнюються модулі",

@@ -188,6 +188,8 @@ L_3,5,analytic,0.18,m
         md.contains("| 9 | a_B | 5 | plan (tolerance of pos. "),
         "{md}"
     );
+    // No value of v_A is written negative where the crank pin's is (ω₁ < 0): magnitudes.
+    assert!(md.contains("though exact values are): v_A."), "{md}");
 }
 
 #[test]

@@ -181,6 +181,26 @@ fn seed_000s_table_5_has_35_sign_errors_and_all_are_found() {
         }
     }
     assert_eq!(signs, 35);
+    // The Markdown says how the table is read, and that those columns are of the other sense.
+    let md = tmm::audit::to_markdown("shaper", &all, tmm::Lang::En);
+    let line = md
+        .lines()
+        .find(|l| l.starts_with("Signs: "))
+        .expect("the signs");
+    assert!(
+        line.contains("signed values, as the textbook's tables"),
+        "{line}"
+    );
+    assert!(
+        line.contains(": v_B3_B1 (plan), v_S3 (plan), v_D (plan), v_S3 (analytic)."),
+        "{line}"
+    );
+    assert!(
+        line.ends_with(
+            "taken the other way?): v_B3_B1 (analytic), omega_3 (analytic), v_D (analytic)."
+        ),
+        "{line}"
+    );
     // The sign alone, or with the digits' slip the seed made: ω₃(11) = 7.8 a digit dropped
     // from 7.18, ω₃(10) and ω₃(12) truncated, V_B3B1(4) = −0.5 a single digit.
     assert!(explained_by(
