@@ -216,10 +216,12 @@ fn exact(a: &Audited, lang: Lang) -> String {
         .map_or("—".into(), |c| format_sig(c.exact, DIGITS, lang))
 }
 
-/// The columns of the table (a quantity by the method written) read as magnitudes, each
-/// once, in the order met: the quantity's name and the method written.
-fn magnitudes(audited: &[Audited]) -> Vec<(&str, Option<&str>)> {
-    let mut out: Vec<(&str, Option<&str>)> = Vec::new();
+/// A column of the student's table: a quantity's name and the method written.
+type Column<'a> = (&'a str, Option<&'a str>);
+
+/// The columns of the table read as magnitudes, each once, in the order met.
+fn magnitudes(audited: &[Audited]) -> Vec<Column<'_>> {
+    let mut out: Vec<Column> = Vec::new();
     for a in audited {
         let read = a.checked.as_ref().map(|c| c.reading);
         let column = (a.entry.quantity.as_str(), a.entry.method.as_deref());
@@ -233,8 +235,8 @@ fn magnitudes(audited: &[Audited]) -> Vec<(&str, Option<&str>)> {
 /// The columns (a quantity by the method written) of two values or more not 0 whose every
 /// value not 0 has the opposite sign (alone or with another slip): a table of the other
 /// sense of rotation.
-fn opposite(audited: &[Audited]) -> Vec<(&str, Option<&str>)> {
-    let mut columns: Vec<((&str, Option<&str>), usize, bool)> = Vec::new();
+fn opposite(audited: &[Audited]) -> Vec<Column<'_>> {
+    let mut columns: Vec<(Column, usize, bool)> = Vec::new();
     for a in audited
         .iter()
         .filter(|a| a.checked.is_some() && !a.entry.written.is_zero())
@@ -258,7 +260,7 @@ fn opposite(audited: &[Audited]) -> Vec<(&str, Option<&str>)> {
 }
 
 /// Columns named as the Markdown writes them: `v_D (plan)`, `omega_3`.
-fn named(columns: &[(&str, Option<&str>)]) -> String {
+fn named(columns: &[Column]) -> String {
     columns
         .iter()
         .map(|(q, m)| match m {
