@@ -2,7 +2,7 @@
 //! scene's report, at a position, in the textbook's units — classified against the exact
 //! value.
 //!
-//! What a value is checked against ([`targets`]): the report's row of its quantity at its
+//! What a value is checked against (`targets`): the report's row of its quantity at its
 //! position by the method named, or — a quantity of the report's analytic table at a
 //! position no construction reads it at (φ₃, L₃, a_D where no acceleration plan is built),
 //! or a value marked `analytic` — the exact value. A line the report has nothing for is
@@ -20,7 +20,7 @@
 //! to [`ANALYTIC_DEG`]) and its digits. A value by a construction the scene does not make at
 //! that position is held to the widest tolerance of that construction at the others.
 //!
-//! Signs: the exact values are signed as the textbook's tables sign them ([`targets`]); a
+//! Signs: the exact values are signed as the textbook's tables sign them (`targets`); a
 //! column of the student's table (a quantity by the method written) with no value written
 //! negative where some exact value is negative is a table of magnitudes, and is read so
 //! ([`Reading`]). A written 0 is right only where the exact value is 0 to the tolerance and
