@@ -17,8 +17,13 @@ pub struct Written {
 
 impl Written {
     /// The number written as `text` (`2.28`, `-7,8`, `1.5e-3`) with `decimal_comma` telling
-    /// whether a comma is its decimal separator; `None` when it is not a finite number.
-    pub fn parse(text: &str, decimal_comma: bool) -> Option<Self> {
+    /// whether a comma is its decimal separator.
+    ///
+    /// # Errors
+    /// [`NumberError::NotANumber`] for text that is not a number, [`NumberError::OutOfRange`]
+    /// for one beyond what a double holds (`1e400`, or `1e-400`, whose digits are not 0 but
+    /// whose value would be).
+    pub fn parse(text: &str, decimal_comma: bool) -> Result<Self, NumberError> {
         let mut t = text.trim().replace(['\u{2212}', '–'], "-");
         if decimal_comma {
             t = t.replace(',', ".");
@@ -28,25 +33,51 @@ impl Written {
             && t.chars()
                 .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | 'e' | 'E'))
             && t.chars().any(|c| c.is_ascii_digit());
-        let value: f64 = if ok { t.parse().ok()? } else { return None };
-        value.is_finite().then_some(Self { text: t, value })
+        let value: f64 = if ok {
+            t.parse().map_err(|_| NumberError::NotANumber)?
+        } else {
+            return Err(NumberError::NotANumber);
+        };
+        let w = Self { text: t, value };
+        let lost = value == 0.0 && w.parts().0.chars().any(|c| matches!(c, '1'..='9'));
+        if !value.is_finite() || lost {
+            return Err(NumberError::OutOfRange);
+        }
+        Ok(w)
     }
 
-    /// The mantissa (digits and point, no sign) and the exponent written after it.
-    fn parts(&self) -> (&str, i32) {
+    /// Whether the number written is 0 (`0`, `0.00`, `-0`, `0e5`).
+    pub fn is_zero(&self) -> bool {
+        self.value == 0.0
+    }
+
+    /// The mantissa (digits and point, no sign) and the exponent written after it (one of
+    /// more digits than an `i64` holds taken as the largest of its sign).
+    fn parts(&self) -> (&str, i64) {
         let body = self.text.trim_start_matches('-');
         match body.split_once(['e', 'E']) {
-            Some((m, e)) => (m, e.parse().unwrap_or(0)),
+            Some((m, e)) => {
+                let far = if e.starts_with('-') {
+                    i64::MIN
+                } else {
+                    i64::MAX
+                };
+                (m, e.parse().unwrap_or(far))
+            }
             None => (body, 0),
         }
     }
 
     /// Half a unit of the last digit written: the rounding the text carries (`2.28` → 0.005,
-    /// `130` → 0.5).
+    /// `130` → 0.5); its power of ten held to a double's range (`0e-2147483648` has a half
+    /// unit of 0, `0e999` one of 5e306).
     pub fn half_unit(&self) -> f64 {
         let (m, e) = self.parts();
-        let decimals = m.split_once('.').map_or(0, |(_, f)| f.len()) as i32;
-        0.5 * 10f64.powi(e - decimals)
+        let decimals = m.split_once('.').map_or(0, |(_, f)| f.len());
+        let decimals = i64::try_from(decimals).unwrap_or(i64::MAX);
+        let power = e.saturating_sub(decimals).clamp(-400, 307);
+        // In the clamp's range the power fits an i32.
+        0.5 * 10f64.powi(i32::try_from(power).unwrap_or(0))
     }
 
     /// The significant digits written (`0.0546` → 3, `7.8` → 2, `130` → 3).
@@ -61,6 +92,9 @@ impl Written {
     /// `x` cut to the digits written here (toward zero), and `x` rounded to them.
     pub fn cut_and_rounded(&self, x: f64) -> (f64, f64) {
         let unit = 2.0 * self.half_unit();
+        if !(unit > 0.0 && (x / unit).is_finite()) {
+            return (x, x);
+        }
         ((x / unit).trunc() * unit, (x / unit).round() * unit)
     }
 
@@ -95,7 +129,7 @@ impl Written {
         let chars: Vec<char> = m.chars().collect();
         let make = |c: &[char]| {
             let body: String = c.iter().collect();
-            Written::parse(&format!("{sign}{body}{exp}"), false)
+            Written::parse(&format!("{sign}{body}{exp}"), false).ok()
         };
         let mut out: Vec<(Edit, Written)> = Vec::new();
         let mut push = |edit: Edit, w: Option<Written>| {
@@ -143,6 +177,16 @@ impl Written {
     }
 }
 
+/// Why a field is not a number.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NumberError {
+    /// Not a number at all.
+    NotANumber,
+    /// A number beyond the range of a double (its value infinite, or 0 though its digits
+    /// are not).
+    OutOfRange,
+}
+
 /// A slip of the pen on one number.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Edit {
@@ -171,11 +215,57 @@ mod tests {
         assert_eq!(w("0.0546").significant(), 3);
         assert_eq!(w("-7.8").significant(), 2);
         assert_eq!(w("-7.8").negated().text, "7.8");
-        assert!(Written::parse("2.2.8", false).is_none());
-        assert!(Written::parse("abc", false).is_none());
-        assert!(Written::parse("", false).is_none());
+        assert_eq!(Written::parse("2.2.8", false), Err(NumberError::NotANumber));
+        assert_eq!(Written::parse("abc", false), Err(NumberError::NotANumber));
+        assert_eq!(Written::parse("", false), Err(NumberError::NotANumber));
         let (cut, rounded) = w("6.4").cut_and_rounded(6.466);
         assert!(w("6.4").is(cut) && !w("6.4").is(rounded));
+    }
+
+    #[test]
+    fn exponents_at_the_ends_of_the_range_neither_overflow_nor_pass_as_numbers() {
+        // An exponent of −2³¹ (and beyond an i64): the half unit is held to a double's range.
+        for t in [
+            "0e-2147483648",
+            "0.0e-2147483648",
+            "0e-99999999999999999999999",
+        ] {
+            let z = w(t);
+            assert!(z.is_zero(), "{t}");
+            assert_eq!(z.half_unit(), 0.0, "{t}");
+            assert_eq!(z.cut_and_rounded(1.5), (1.5, 1.5), "{t}");
+        }
+        for t in ["0e2147483647", "0e99999999999999999999999"] {
+            let z = w(t);
+            assert!(
+                z.is_zero() && (z.half_unit() / 5e306 - 1.0).abs() < 1e-12,
+                "{t}: {}",
+                z.half_unit()
+            );
+            assert_eq!(z.cut_and_rounded(1.5).0, 0.0, "{t}");
+        }
+        // A number whose digits are not 0 but whose value a double cannot hold is refused.
+        for t in [
+            "1e400",
+            "-1e2147483648",
+            "1e-400",
+            "2.5e-2147483648",
+            "1e99999999999999999999",
+        ] {
+            assert_eq!(
+                Written::parse(t, false),
+                Err(NumberError::OutOfRange),
+                "{t}"
+            );
+        }
+        assert!((w("1e-300").half_unit() / 0.5e-300 - 1.0).abs() < 1e-12);
+        assert!(w("1e-300").value > 0.0);
+        // Every slip of the pen of a number of huge or tiny exponent is a number of its own.
+        for t in ["1.25e300", "1.25e-300", "4.5e-310", "9.9e307"] {
+            let x = w(t);
+            assert!(x.half_unit().is_finite(), "{t}");
+            assert!(x.edits().iter().all(|(_, m)| m.value.is_finite()), "{t}");
+        }
     }
 
     #[test]

@@ -100,6 +100,21 @@ pub fn normalise(written: &str) -> String {
     }
 }
 
+/// The SI units the audit knows, as the report writes them: the kinds of [`kind`].
+const SI: [&str; 15] = [
+    "m", "m/s", "m/s^2", "rad/s", "rad/s^2", "N", "N*m", "kg", "kg*m", "kg*m^2", "J", "W", "rad",
+    "deg", "1",
+];
+
+/// The unit `written` names, of whatever kind (for a quantity the report lacks).
+pub fn any(written: &str) -> Option<Unit> {
+    let name = normalise(written);
+    SI.iter()
+        .flat_map(|si| kind(si))
+        .copied()
+        .find(|u| u.name == name)
+}
+
 /// The unit of the kind of `si` that `written` names, if any.
 pub fn find(si: &str, written: &str) -> Option<Unit> {
     let name = normalise(written);
@@ -123,5 +138,9 @@ mod tests {
         assert_eq!(find("N", "кгс").map(|u| u.factor), Some(G));
         assert_eq!(find("m", "мм").map(|u| u.factor), Some(1e-3));
         assert_eq!(find("m", "kgf"), None);
+        assert_eq!(any("кгс").map(|u| u.factor), Some(G));
+        assert_eq!(any("furlong"), None);
+        // Every kind is reachable.
+        assert!(SI.iter().all(|si| !kind(si).is_empty()));
     }
 }

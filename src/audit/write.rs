@@ -1,11 +1,11 @@
 //! The audited table as Markdown, JSON and a sheet to return to the student.
 
-use super::{Audited, Edit, Explanation, Formula, Slip, Verdict};
+use super::{Audited, Edit, Explanation, Formula, Held, Known, Reading, Slip, Verdict};
 use crate::plate::text::plain;
 use crate::plate::{Plate, SheetSize};
 use crate::scale::{format_sig, Lang};
 use crate::scene::Scene;
-use crate::sheets::captions::{quantity, AuditText as T, Text};
+use crate::sheets::captions::{AuditText as T, Text};
 use crate::sheets::BuildError;
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -63,11 +63,7 @@ fn slip(s: &Slip, lang: Lang) -> String {
             format!("{} ({})", words.join(" / "), number(meant, lang))
         }
         Slip::Position(p) => format!("{} {p}", T::OtherPosition.get(lang)),
-        Slip::Quantity(k) => format!(
-            "{} {}",
-            T::OtherQuantity.get(lang),
-            quantity(k.symbol, &k.subject, lang)
-        ),
+        Slip::Quantity(q) => format!("{} {}", T::OtherQuantity.get(lang), q.notation(lang)),
         Slip::Formula(f) => match f {
             Formula::BaseRadiusCosAlphaW => T::BaseRadius,
             Formula::ContactRatioCosAlphaW => T::ContactRatio,
@@ -109,6 +105,65 @@ pub(super) fn verdict(v: &Verdict, lang: Lang) -> String {
                 number(&format!("{:+.1}", r * 100.0), lang)
             ),
         },
+        Verdict::NotInReport { known } if known.is_empty() => T::NoQuantity.get(lang).into(),
+        Verdict::NotInReport { known } => format!(
+            "{}; {}: {}",
+            T::NotInReport.get(lang),
+            T::ReportHas.get(lang),
+            has(known, lang)
+        ),
+    }
+}
+
+/// What the report has of a quantity: each method with its positions (`plan: 3, 10`).
+fn has(known: &Known, lang: Lang) -> String {
+    known
+        .iter()
+        .map(|(m, at)| {
+            let method = m.map_or(T::Analytic.get(lang), |m| m.name(lang));
+            let at: Vec<&str> = at.iter().filter_map(|p| p.as_deref()).collect();
+            if at.is_empty() {
+                method.to_string()
+            } else {
+                format!("{method} {} {}", T::AtPositions.get(lang), at.join(", "))
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+/// The method a value was checked by: as the student names it, else the report's (`key`:
+/// its key, `analytic` for a cell of the analytic table; else its name in `lang`), with the
+/// position whose tolerance it borrows.
+fn method(a: &Audited, lang: Lang, key: bool) -> String {
+    let analytic = || {
+        if key {
+            "analytic"
+        } else {
+            T::Analytic.get(lang)
+        }
+    };
+    let name = match (&a.checked, &a.entry.method) {
+        (None, m) => m.clone().unwrap_or_default(),
+        (Some(_), Some(m)) if key => m.clone(),
+        (Some(c), _) => match c.method {
+            Some(m) if !a.entry.analytic() => {
+                if key {
+                    m.key().to_string()
+                } else {
+                    m.name(lang).to_string()
+                }
+            }
+            _ => analytic().to_string(),
+        },
+    };
+    match a.checked.as_ref().map(|c| &c.held) {
+        Some(Held::Borrowed { position }) => format!(
+            "{name} ({} {})",
+            T::ToleranceOf.get(lang),
+            position.as_deref().unwrap_or("—")
+        ),
+        _ => name,
     }
 }
 
@@ -133,7 +188,7 @@ fn key(s: &Slip) -> String {
             format!("{}:{meant}", kinds.join("+"))
         }
         Slip::Position(p) => format!("position:{p}"),
-        Slip::Quantity(k) => format!("quantity:{}", k.quantity()),
+        Slip::Quantity(q) => format!("quantity:{}", q.name),
         Slip::Formula(f) => format!(
             "formula:{}",
             match f {
@@ -154,11 +209,106 @@ fn pct(r: Option<f64>) -> String {
     r.map_or("—".into(), |r| format!("{:+.2}", r * 100.0))
 }
 
-/// The audited table as Markdown: a row per value, its exact value in the unit written, its
-/// error and its verdict.
+/// The exact value as written in a table (`—` for a line the report lacks).
+fn exact(a: &Audited, lang: Lang) -> String {
+    a.checked
+        .as_ref()
+        .map_or("—".into(), |c| format_sig(c.exact, DIGITS, lang))
+}
+
+/// A column of the student's table: a quantity's name and the method written.
+type Column<'a> = (&'a str, Option<&'a str>);
+
+/// The columns of the table read as magnitudes, each once, in the order met.
+fn magnitudes(audited: &[Audited]) -> Vec<Column<'_>> {
+    let mut out: Vec<Column> = Vec::new();
+    for a in audited {
+        let read = a.checked.as_ref().map(|c| c.reading);
+        let column = (a.entry.quantity.as_str(), a.entry.method.as_deref());
+        if read == Some(Reading::Magnitudes) && !out.contains(&column) {
+            out.push(column);
+        }
+    }
+    out
+}
+
+/// The columns (a quantity by the method written) of two values or more not 0 whose every
+/// value not 0 has the opposite sign (alone or with another slip): a table of the other
+/// sense of rotation.
+fn opposite(audited: &[Audited]) -> Vec<Column<'_>> {
+    let mut columns: Vec<(Column, usize, bool)> = Vec::new();
+    for a in audited
+        .iter()
+        .filter(|a| a.checked.is_some() && !a.entry.written.is_zero())
+    {
+        let column = (a.entry.quantity.as_str(), a.entry.method.as_deref());
+        let sign = matches!(&a.verdict, Verdict::Slips(all)
+            if all.iter().all(|e| e.first() == Some(&Slip::Sign)));
+        match columns.iter_mut().find(|c| c.0 == column) {
+            Some(c) => {
+                c.1 += 1;
+                c.2 &= sign;
+            }
+            None => columns.push((column, 1, sign)),
+        }
+    }
+    columns
+        .into_iter()
+        .filter(|c| c.1 >= 2 && c.2)
+        .map(|c| c.0)
+        .collect()
+}
+
+/// Columns named as the Markdown writes them: `v_D (plan)`, `omega_3`.
+fn named(columns: &[Column]) -> String {
+    columns
+        .iter()
+        .map(|(q, m)| match m {
+            Some(m) => format!("{q} ({m})"),
+            None => q.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The convention the table is read in, in words: signed values as the textbook's tables,
+/// with the columns read as magnitudes and those of the opposite sign throughout; or, when
+/// every column is read as magnitudes, a table of magnitudes.
+fn signs(audited: &[Audited], lang: Lang) -> String {
+    let columns = magnitudes(audited);
+    let checked = audited.iter().filter(|a| a.checked.is_some());
+    let all = checked.clone().count() > 0
+        && checked.clone().all(|a| {
+            a.checked
+                .as_ref()
+                .is_some_and(|c| c.reading == Reading::Magnitudes)
+        });
+    let mut s = format!("{}: ", T::Signs.get(lang));
+    if all {
+        s.push_str(&plain(T::NoSigns.get(lang)));
+        s.push('.');
+        return s;
+    }
+    s.push_str(&plain(T::SignedAsTextbook.get(lang)));
+    s.push('.');
+    for (word, columns) in [
+        (T::ReadAsMagnitudes, columns),
+        (T::OppositeSense, opposite(audited)),
+    ] {
+        if !columns.is_empty() {
+            let _ = write!(s, " {}: {}.", plain(word.get(lang)), named(&columns));
+        }
+    }
+    s
+}
+
+/// The audited table as Markdown: the convention its signs are read in, then a row per
+/// value, its exact value in the unit written (as read: a magnitude in a column of
+/// magnitudes), its error and its verdict.
 pub fn to_markdown(scene: &str, audited: &[Audited], lang: Lang) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "# {} — {scene}\n", plain(T::Title.get(lang)));
+    let _ = writeln!(s, "{}\n", signs(audited, lang));
     let _ = writeln!(s, "| {} |", headings(lang).join(" | "));
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
     for a in audited {
@@ -169,11 +319,11 @@ pub fn to_markdown(scene: &str, audited: &[Audited], lang: Lang) -> String {
             e.line,
             e.quantity,
             e.position.as_deref().unwrap_or("—"),
-            e.method.as_deref().unwrap_or(a.row.method.key()),
+            method(a, lang, true),
             e.written.text,
             e.unit.name,
-            format_sig(a.exact, DIGITS, Lang::En),
-            pct(a.rel_error),
+            exact(a, Lang::En),
+            pct(a.checked.as_ref().and_then(|c| c.rel_error)),
             plain(&verdict(&a.verdict, lang))
         );
     }
@@ -185,12 +335,14 @@ struct JsonEntry<'a> {
     line: u64,
     quantity: &'a str,
     position: Option<&'a str>,
-    method: &'a str,
+    method: String,
     written: &'a str,
     unit: &'a str,
-    exact: f64,
-    tolerance: f64,
+    exact: Option<f64>,
+    tolerance: Option<f64>,
     rel_error: Option<f64>,
+    reading: Option<&'static str>,
+    tolerance_of: Option<&'a str>,
     verdict: &'static str,
     explanations: Vec<Vec<String>>,
     nearest: Option<JsonNearest>,
@@ -204,9 +356,11 @@ struct JsonNearest {
 }
 
 /// The audited table as JSON: per value, its exact value and tolerance in the unit written,
-/// its verdict (`right`, `slip`, `wrong`), each explanation as a list of slip keys (`sign`,
-/// `factor:2`, `unit:mm`, `dropped:7.18`, `position:4`, `formula:missing-omega-1`, …) and
-/// the verdict in English words.
+/// how its column is read (`signed`, `magnitudes`), the position whose tolerance it borrows
+/// when its construction is not made at its own, its verdict (`right`, `slip`, `wrong`,
+/// `not-in-report`), each explanation as a list of slip keys (`sign`, `factor:2`, `unit:mm`,
+/// `dropped:7.18`, `position:4`, `formula:missing-omega-1`, …) and the verdict in English
+/// words.
 pub fn to_json(audited: &[Audited]) -> String {
     let rows: Vec<JsonEntry> = audited
         .iter()
@@ -223,17 +377,27 @@ pub fn to_json(audited: &[Audited]) -> String {
                         rel_error: *r,
                     }),
                 ),
+                Verdict::NotInReport { .. } => ("not-in-report", Vec::new(), None),
             };
+            let c = a.checked.as_ref();
             JsonEntry {
                 line: e.line,
                 quantity: &e.quantity,
                 position: e.position.as_deref(),
-                method: e.method.as_deref().unwrap_or(a.row.method.key()),
+                method: method(a, Lang::En, true),
                 written: &e.written.text,
                 unit: e.unit.name,
-                exact: a.exact,
-                tolerance: a.tolerance,
-                rel_error: a.rel_error.filter(|r| r.is_finite()),
+                exact: c.map(|c| c.exact),
+                tolerance: c.map(|c| c.tolerance),
+                rel_error: c.and_then(|c| c.rel_error).filter(|r| r.is_finite()),
+                reading: c.map(|c| match c.reading {
+                    Reading::Signed => "signed",
+                    Reading::Magnitudes => "magnitudes",
+                }),
+                tolerance_of: c.and_then(|c| match &c.held {
+                    Held::Borrowed { position } => position.as_deref(),
+                    _ => None,
+                }),
                 verdict,
                 explanations,
                 nearest,
@@ -246,7 +410,8 @@ pub fn to_json(audited: &[Audited]) -> String {
 
 /// The audited table as sheets to return to the student (the smallest format from A4 as wide
 /// as the table, as many sheets as it needs): each value with its method, its exact value,
-/// its error and its verdict, in the textbook's notation.
+/// its error and its verdict, in the textbook's notation — a quantity whose column is read as
+/// magnitudes written |V_{D}|.
 ///
 /// # Errors
 /// [`BuildError`] when the table is wider than an A2.
@@ -260,23 +425,27 @@ pub fn to_sheet(scene: &Scene, audited: &[Audited], lang: Lang) -> Result<Vec<Pl
                 "1" => String::new(),
                 name => crate::sheets::captions::unit_in(name, lang),
             };
-            let method = if e.analytic() {
-                T::Analytic.get(lang).to_string()
-            } else {
-                a.row.method.name(lang).to_string()
+            let quantity = match &a.checked {
+                Some(c) if c.reading == Reading::Magnitudes => {
+                    format!("|{}|", c.quantity.notation(lang))
+                }
+                Some(c) => c.quantity.notation(lang),
+                None => e.quantity.clone(),
+            };
+            let exact = match &a.checked {
+                Some(_) => format!("{} {unit}", exact(a, lang)),
+                None => "—".into(),
             };
             vec![
                 e.line.to_string(),
-                quantity(a.row.key.symbol, &a.row.key.subject, lang),
+                quantity,
                 e.position.clone().unwrap_or_else(|| "—".into()),
-                method,
+                method(a, lang, false),
                 format!("{} {unit}", number(&e.written.text, lang))
                     .trim_end()
                     .to_string(),
-                format!("{} {unit}", format_sig(a.exact, DIGITS, lang))
-                    .trim_end()
-                    .to_string(),
-                number(&pct(a.rel_error), lang),
+                exact.trim_end().to_string(),
+                number(&pct(a.checked.as_ref().and_then(|c| c.rel_error)), lang),
                 verdict(&a.verdict, lang),
             ]
         })
