@@ -69,6 +69,9 @@ pub struct Placement {
 
 /// A point's index is on a limit within this (brackets to 10⁻¹³, corners to 10⁻¹²).
 const ON: f64 = 1e-9;
+/// A point of the boundary has a margin ≥ 0 to this: its bracket's rounding (10⁻¹⁴ of its
+/// index) or its corner's Newton steps (10⁻¹²).
+const SLACK: f64 = 1e-12;
 
 impl Blocking {
     /// Place the point `x` on the contour: its indices, its side of every level, whether it
@@ -131,24 +134,7 @@ impl Blocking {
         region: &Contour,
     ) -> Result<Choice, BlockingError> {
         let hard = region.hard;
-        if region.boundary.is_empty() {
-            let (lo, hi) = self.window;
-            return Err(BlockingError::Empty(
-                lo.x,
-                hi.x,
-                lo.y,
-                hi.y,
-                hard.sa_min,
-                hard.eps_min,
-                hard.inset,
-            ));
-        }
-        let x = match criterion {
-            Criterion::LargestContactRatio => self.maximise(region, |ix| ix.eps),
-            Criterion::GreatestSumWithTip { .. } => self.maximise(region, |ix| ix.x[0] + ix.x[1]),
-            Criterion::EqualSliding { x_sum } => Some(self.equal_sliding(region, x_sum)?),
-        };
-        let x = x.ok_or_else(|| {
+        let empty = || {
             let (lo, hi) = self.window;
             BlockingError::Empty(
                 lo.x,
@@ -159,7 +145,16 @@ impl Blocking {
                 hard.eps_min,
                 hard.inset,
             )
-        })?;
+        };
+        if region.boundary.is_empty() {
+            return Err(empty());
+        }
+        let x = match criterion {
+            Criterion::LargestContactRatio => self.maximise(region, |ix| ix.eps),
+            Criterion::GreatestSumWithTip { .. } => self.maximise(region, |ix| ix.x[0] + ix.x[1]),
+            Criterion::EqualSliding { x_sum } => Some(self.equal_sliding(region, x_sum)?),
+        };
+        let x = x.ok_or_else(empty)?;
         let indices = self.indices(x).ok_or(BlockingError::Domain(x.x, x.y))?;
         let mut on: Vec<(Kind, f64)> = self
             .hard_levels(hard)
@@ -185,11 +180,11 @@ impl Blocking {
     fn maximise(&self, region: &Contour, obj: impl Fn(&Indices) -> f64) -> Option<DVec2> {
         let hard = region.hard;
         let h = region.spacing;
-        // The objective where the margin is ≥ 0 (a boundary point, bracketed on its inside
-        // end, is).
+        // The objective where the margin is ≥ 0 (a boundary point's is, to its bracket's
+        // rounding).
         let value = |p: DVec2| {
             self.indices(p)
-                .filter(|ix| self.margin_of(ix, hard).is_some_and(|m| m >= 0.0))
+                .filter(|ix| self.margin_of(ix, hard).is_some_and(|m| m >= -SLACK))
                 .map_or(f64::NEG_INFINITY, |ix| obj(&ix))
         };
         let mut best = (f64::NEG_INFINITY, DVec2::ZERO);

@@ -39,7 +39,7 @@ mod trace;
 pub use choose::{Choice, Criterion, Placement, Side, CHOICE_MARGIN};
 pub use figure::Words;
 pub use indices::{twin_deviation, twin_margin, twin_pair, twin_rho_l, twin_value, Indices};
-pub use plane::{distance_to, inside_rings, CALLS, EDGES};
+pub use plane::{distance_to, inside_rings};
 pub use study::{criterion_tag, point_label, Study};
 pub use trace::{twin_check, Contour};
 
@@ -133,9 +133,19 @@ pub enum BlockingError {
     /// No point of the plane meets every hard limit.
     #[error("blocking contour: no point of x₁ ∈ [{0:.3}, {1:.3}], x₂ ∈ [{2:.3}, {3:.3}] meets every hard limit {6} inside (s_a ≥ {4}m, ε_α ≥ {5}, no undercut, no interference)")]
     Empty(f64, f64, f64, f64, f64, f64, f64),
-    /// The criterion's line misses the admissible region.
-    #[error("blocking contour: the line x₁ + x₂ = {0} does not cross the admissible region {1} inside its limits (its least margin there {2:.3})")]
+    /// The criterion's line misses the admissible region taken `.1` inside its limits: the
+    /// line's x_Σ and its deepest point's margin (−∞: it misses the window).
+    #[error("blocking contour: the line x₁ + x₂ = {0} does not cross the admissible region {1} inside its limits ({deepest})", deepest = deepest(*.2))]
     LineOutside(f64, f64, f64),
+}
+
+/// How deep inside its limits a line gets, in words.
+fn deepest(margin: f64) -> String {
+    if margin.is_finite() {
+        format!("its deepest point {margin:.3} inside them")
+    } else {
+        "it misses the plane's window".into()
+    }
 }
 
 /// The contour's problem: the pair's tooth numbers and the rack.

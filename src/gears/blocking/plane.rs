@@ -1,10 +1,10 @@
 //! The zero sets of functions over a rectangle of the plane, traced on a square grid by
 //! marching squares: every grid edge whose ends a function takes with opposite signs holds
 //! one point of its zero set, bracketed along the edge to [`BRACKET_TO`] or to a value within
-//! [`SETTLED`] of 0 ([`illinois`]); the points of each cell are joined so that the side where the function is
-//! ≥ 0 lies on the left (a saddle cell decided by the value at its centre), and the pieces
-//! linked cell to cell into polylines. Every piece of a zero set that crosses a grid edge is
-//! found, whatever its shape; a closed one that fits inside one cell is not.
+//! [`SETTLED`] of 0 ([`illinois`]); the points of each cell are joined so that the side where
+//! the function is ≥ 0 lies on the left (a saddle cell decided by the value at its centre),
+//! and the pieces linked cell to cell into polylines. Every piece of a zero set that crosses a
+//! grid edge is found, whatever its shape; a closed one that fits inside one cell is not.
 //!
 //! A *closed* function counts as negative beyond the grid and wherever it has no value: its
 //! set {f ≥ 0} is bounded by closed rings, running along the grid's edge where the set
@@ -34,7 +34,8 @@ pub struct Grid {
 }
 
 impl Grid {
-    /// The grid of spacing `h` from `lo` over `hi` (its last nodes at or just beyond `hi`).
+    /// The grid of spacing `h` from `lo` over `hi` (its last nodes at `hi`, or just beyond
+    /// it when `hi − lo` is not a whole number of steps).
     pub fn over(lo: DVec2, hi: DVec2, h: f64) -> Self {
         let steps = |span: f64| ((span / h - 1e-9).ceil().max(1.0)) as usize;
         Self {
@@ -281,11 +282,9 @@ fn edge_zero(
     );
     let d = (pb - pa) / grid.h;
     let missing = |v: f64| if v.is_finite() { v } else { -1.0 };
-    EDGES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     // The last value's size: the bracket ends when it is within [`SETTLED`].
     let last = std::cell::Cell::new(f64::INFINITY);
     let f = |t: f64| {
-        CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let v = fields.at(k, pa + d * t);
         let v = if shut { Some(v.unwrap_or(-1.0)) } else { v };
         last.set(v.map_or(f64::INFINITY, f64::abs));
@@ -384,8 +383,3 @@ pub fn distance_to(lines: &[Vec<DVec2>], p: DVec2) -> f64 {
         })
         .fold(f64::INFINITY, f64::min)
 }
-
-/// debug
-pub static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-/// debug
-pub static EDGES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);

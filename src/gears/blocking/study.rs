@@ -183,12 +183,12 @@ impl Study {
         for (c, r) in &self.choices {
             let Ok(ch) = r else { continue };
             let twin = ch.twin_x(b, m).map_or(ch.indices.x, <[f64; 2]>::from);
-            for i in 0..2 {
+            for (i, (x, t)) in ch.indices.x.iter().zip(twin).enumerate() {
                 out.push(row(
                     Symbol::ShiftCoefficient,
                     format!("{}_{}", i + 1, criterion_tag(*c)),
-                    ch.indices.x[i],
-                    twin[i],
+                    *x,
+                    t,
                     1.0,
                 ));
             }
@@ -204,7 +204,7 @@ impl Study {
         let n: usize = c.curves.iter().map(|c| c.points.len()).sum();
         let (lo, hi) = b.window;
         let mut out = vec![format!(
-            "blocking contour z₁ = {}, z₂ = {}: traced on a grid of spacing {SPACING} over x₁ ∈ [{}, {}], x₂ ∈ [{}, {}] (each point bracketed along a grid edge to 1e-13 of m; the region's corners, where the binding limit changes, solved by Newton's steps to 1e-12): {} curves, {n} points; the admissible region {} ring(s) of {} points; at {} sampled points the twins (Pair::new, Cutting) give the limits to {:.1e}; undercut limit x_min = h_l* − z sin²α/2 with h_l* = {} (the flank's end): x_min1 = {}, x_min2 = {}",
+            "blocking contour z₁ = {}, z₂ = {}: traced on a grid of spacing {SPACING} over x₁ ∈ [{}, {}], x₂ ∈ [{}, {}] (each point bracketed along a grid edge to 1e-13 of m or its index to 1e-14 of its limit; the region's corners, where the binding limit changes, solved by Newton's steps to 1e-12): {} curves, {n} points; the admissible region {} ring(s) of {} points; at {} sampled points the twins (Pair::new, Cutting) give the limits to {:.1e}; undercut limit x_min = h_l* − z sin²α/2 with h_l* = {} (the flank's end): x_min1 = {}, x_min2 = {}",
             b.z[0],
             b.z[1],
             num(lo.x, 4),

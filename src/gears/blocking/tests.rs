@@ -69,7 +69,7 @@ fn known_zero_sets() {
         "{}",
         area2(q) / 2.0
     );
-    assert!(q.iter().any(|p| *p == DVec2::ZERO));
+    assert!(q.contains(&DVec2::ZERO));
     assert!(inside_rings(&quarter[2], DVec2::splat(0.3)));
     assert!(!inside_rings(&quarter[2], DVec2::splat(0.9)));
     // The line x = y, open: one polyline with the side x ≥ y on its left, so it runs down.

@@ -249,7 +249,7 @@ impl Blocking {
             // [dx dy] · step = −v.
             let det = dx.x * dy.y - dy.x * dx.y;
             let scale = dx.length() * dy.length();
-            if !(det.abs() > 1e-9 * scale) {
+            if det.abs().partial_cmp(&(1e-9 * scale)) != Some(std::cmp::Ordering::Greater) {
                 return None;
             }
             let step = DVec2::new(
