@@ -3,8 +3,8 @@
 //! x₁, x₂ and λ in rows); a pair whose mate's tip cuts a wheel's fillet is refused with the
 //! interference named.
 
-use crate::gears::{render_svg, row, run_scene};
-use crate::support::{notes, num, report_json as report, scratch};
+use crate::gears::{row, run_scene};
+use crate::support::{notes, num, render_svg, report_json as report, scratch};
 
 /// `[gears.pair] choose`: the contour chooses x₁, x₂, the pair is built on them, and the
 /// scene's point is that choice; criteria it cannot meet and shifts given beside it are

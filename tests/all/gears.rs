@@ -4,7 +4,7 @@
 //! their key paths.
 
 use crate::support;
-use support::{notes, num, report_json as report, scratch, tmm};
+use support::{notes, num, render_svg, report_json as report, scratch, tmm};
 
 fn report_json(scene: &str, drafting: &str) -> serde_json::Value {
     report(scene, Some(drafting))
@@ -222,23 +222,6 @@ fn pz2_example3_by_willis_and_triangles() {
     let r = row(&v, "u_1_H", "triangles");
     assert!((num(r, "analytic") - 20.0).abs() < 1e-12);
     assert!((num(r, "graphical") - 20.0).abs() < 1e-9 * 20.0);
-}
-
-/// `tmm render SCENE --out OUT --format svg`, which must succeed (`what` names the case).
-pub(crate) fn render_svg(scene: &std::path::Path, out: &std::path::Path, what: &str) {
-    let o = tmm(&[
-        "render",
-        scene.to_str().expect("utf-8"),
-        "--out",
-        out.to_str().expect("utf-8"),
-        "--format",
-        "svg",
-    ]);
-    assert!(
-        o.status.success(),
-        "{what}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
 }
 
 /// Write a scene file and run `tmm` on it: `tmm ARGS SCENE` on the scene `text` written as

@@ -4,8 +4,12 @@
 //! kept [`CHOICE_MARGIN`] inside every hard limit: a supremum on a limit (the largest ε_α
 //! lies where the mate's tip reaches N₁, λ₁(B₁) = −∞) is a pair that does not work.
 
+use super::plane::BRACKET_TO;
 use super::trace::Contour;
-use super::{levels, twin_value, Blocking, BlockingError, Hard, Indices, Kind};
+use super::{
+    levels, twin_value, Blocking, BlockingError, Hard, Indices, Kind, DIFF_STEP, NEWTON_TO,
+    ON_LIMIT,
+};
 use crate::geom::{golden_max, illinois, DVec2};
 
 /// How far inside every hard limit a choice lies, in the index's own unit: s_a ≥ (s_a,min +
@@ -66,12 +70,6 @@ pub struct Placement {
     /// Inside the admissible region of the contour's hard limits.
     pub admissible: bool,
 }
-
-/// A point's index is on a limit within this (brackets to 10⁻¹³, corners to 10⁻¹²).
-const ON: f64 = 1e-9;
-/// A point of the boundary has a margin ≥ 0 to this: its bracket's rounding (10⁻¹⁴ of its
-/// index) or its corner's Newton steps (10⁻¹²).
-const SLACK: f64 = 1e-12;
 
 impl Blocking {
     /// Place the point `x` on the contour: its indices, its side of every level, whether it
@@ -159,10 +157,12 @@ impl Blocking {
         let mut on: Vec<(Kind, f64)> = self
             .hard_levels(hard)
             .into_iter()
-            .filter(|(k, l)| indices.of(*k).is_some_and(|v| (v - l).abs() <= ON))
+            .filter(|(k, l)| indices.of(*k).is_some_and(|v| (v - l).abs() <= ON_LIMIT))
             .collect();
         if matches!(criterion, Criterion::EqualSliding { .. })
-            && indices.lambda.is_some_and(|l| (l[0] - l[1]).abs() <= ON)
+            && indices
+                .lambda
+                .is_some_and(|l| (l[0] - l[1]).abs() <= ON_LIMIT)
         {
             on.push((Kind::EqualSliding, 0.0));
         }
@@ -181,10 +181,10 @@ impl Blocking {
         let hard = region.hard;
         let h = region.spacing;
         // The objective where the margin is ≥ 0 (a boundary point's is, to its bracket's
-        // rounding).
+        // rounding or its corner's Newton steps).
         let value = |p: DVec2| {
             self.indices(p)
-                .filter(|ix| self.margin_of(ix, hard).is_some_and(|m| m >= -SLACK))
+                .filter(|ix| self.margin_of(ix, hard).is_some_and(|m| m >= -NEWTON_TO))
                 .map_or(f64::NEG_INFINITY, |ix| obj(&ix))
         };
         let mut best = (f64::NEG_INFINITY, DVec2::ZERO);
@@ -264,7 +264,7 @@ impl Blocking {
         if (a >= 0.0) == (b >= 0.0) {
             return c;
         }
-        match illinois(f, (-h, a), (h, b), |u, v| (u - v).abs() <= 1e-13) {
+        match illinois(f, (-h, a), (h, b), |u, v| (u - v).abs() <= BRACKET_TO) {
             Some([(lo, f_lo), (hi, _)]) => c + nrm * if f_lo >= 0.0 { lo } else { hi },
             None => c,
         }
@@ -303,7 +303,7 @@ impl Blocking {
         }
         // The ends of each stretch, bracketed on its inside; the roots inside it.
         let end = |p: (f64, f64), q: (f64, f64)| match illinois(margin, p, q, |u, v| {
-            (u - v).abs() <= 1e-13
+            (u - v).abs() <= BRACKET_TO
         }) {
             Some([(x, fx), (y, _)]) => {
                 if fx >= 0.0 {
@@ -324,7 +324,7 @@ impl Blocking {
             if p.1 >= 0.0 && q.1 >= 0.0 {
                 if let (Some(u), Some(v)) = (d(p.0), d(q.0)) {
                     if (u >= 0.0) != (v >= 0.0) {
-                        let r = illinois(d, (p.0, u), (q.0, v), |s, t| (s - t).abs() <= 1e-13);
+                        let r = illinois(d, (p.0, u), (q.0, v), |s, t| (s - t).abs() <= BRACKET_TO);
                         if let Some([(x, fx), (y, fy)]) = r {
                             let x1 = if fx.abs() <= fy.abs() { x } else { y };
                             roots.push((x1, margin(x1).unwrap_or(-1.0)));
@@ -372,7 +372,7 @@ impl Choice {
             let (kind, limit) = self.on[k];
             twin_value(b, module, kind, limit, p)
         };
-        let e = 1e-7;
+        let e = DIFF_STEP;
         let grad = |k: usize, p: DVec2| {
             Some(
                 DVec2::new(
@@ -395,7 +395,7 @@ impl Choice {
         let mut p = x0;
         for _ in 0..30 {
             let v: Vec<f64> = solved.iter().map(|k| f(*k, p)).collect::<Option<_>>()?;
-            if v.iter().all(|v| v.abs() <= 1e-12) {
+            if v.iter().all(|v| v.abs() <= NEWTON_TO) {
                 break;
             }
             let g: Vec<DVec2> = solved.iter().map(|k| grad(*k, p)).collect::<Option<_>>()?;

@@ -56,6 +56,13 @@ pub const EPS_LIMITS: [f64; 2] = [1.0, 1.2];
 /// this may be missed; the chord between two points of a curve departs from it by about
 /// h²/8ρ (2·10⁻⁴ where its radius of curvature ρ is 0.25).
 pub const SPACING: f64 = 0.02;
+/// A point's index is on a limit when within this of it (the grid's brackets end 10⁻¹³ away,
+/// the corners' Newton steps 10⁻¹²).
+pub(super) const ON_LIMIT: f64 = 1e-9;
+/// Newton's steps stop when each index is this near its level.
+pub(super) const NEWTON_TO: f64 = 1e-12;
+/// The step of the central differences of Newton's steps (x per module).
+pub(super) const DIFF_STEP: f64 = 1e-7;
 /// The shifts the plane spans at most: |x| ≤ 3, what a scene accepts and a rack cuts.
 pub const X_MAX: f64 = 3.0;
 

@@ -262,13 +262,18 @@ impl Study {
             }
         ));
         out.push(format!(
-            "blocking contour: each choice searches the whole region and keeps {CHOICE_MARGIN} inside every hard limit (s_a ≥ (s_a,min + {CHOICE_MARGIN})m, ε_α ≥ {}, x_i ≥ x_min,i + {CHOICE_MARGIN}, N_iB_i ≥ ρ_l,i + {CHOICE_MARGIN}m): on a limit itself the supremum is a pair that does not work (the largest ε_α lies where the mate's tip reaches N₁, λ₁(B₁) = −∞)",
+            "blocking contour: each choice searches the whole region and keeps {CHOICE_MARGIN} inside every hard limit (s_a ≥ (s_a,min + {CHOICE_MARGIN})m, ε_α ≥ {}, x_i ≥ x_min,i + {CHOICE_MARGIN}, N_iB_i ≥ ρ_l,i + {CHOICE_MARGIN}m): on a limit itself the supremum can be a pair that does not work (the largest ε_α of 13/30 lies where the mate's tip reaches N₁, λ₁(B₁) = −∞)",
             num(Self::HARD.eps_min + CHOICE_MARGIN, 3),
         ));
         for (c, r) in &self.choices {
             out.push(match r {
                 Ok(ch) => {
-                    let on: Vec<String> = ch.on.iter().map(|(k, l)| level_name(*k, *l)).collect();
+                    let inset = Blocking::choice_hard(*c, Self::HARD).inset;
+                    let on: Vec<String> = ch
+                        .on
+                        .iter()
+                        .map(|(k, l)| inset_name(*k, *l, inset))
+                        .collect();
                     format!(
                         "blocking contour: {}: {}; on {}",
                         criterion_name(*c),
@@ -325,15 +330,22 @@ fn criterion_name(c: Criterion) -> String {
 
 /// A level in words (the notes).
 pub(super) fn level_name(kind: Kind, limit: f64) -> String {
-    let l = crate::scale::format_sig(limit, 4, crate::scale::Lang::En);
+    inset_name(kind, limit, 0.0)
+}
+
+/// [`level_name`] of a limit taken `inset` inside.
+fn inset_name(kind: Kind, limit: f64, inset: f64) -> String {
+    let num = |x: f64| crate::scale::format_sig(x, 4, crate::scale::Lang::En);
+    let (l, by) = (num(limit), num(inset));
     match kind {
-        Kind::Undercut(i) => format!("x{} ≥ {l}", i + 1),
+        Kind::Undercut(i) if inset == 0.0 => format!("x{0} ≥ x_min{0} = {l}", i + 1),
+        Kind::Undercut(i) => format!("x{0} ≥ x_min{0} + {by} = {l}", i + 1),
         Kind::Tip(i) => format!("s_a{} ≥ {l}m", i + 1),
         Kind::ContactRatio => format!("ε_α ≥ {l}"),
-        Kind::Interference(i) if limit == 0.0 => {
+        Kind::Interference(i) if inset == 0.0 => {
             format!("no interference with the fillet of wheel {}", i + 1)
         }
-        Kind::Interference(i) => format!("N{0}B{0} ≥ ρ_l{0} + {l}m", i + 1),
+        Kind::Interference(i) => format!("N{0}B{0} ≥ ρ_l{0} + {by}m", i + 1),
         Kind::EqualSliding => "λ₁ = λ₂".into(),
     }
 }

@@ -8,12 +8,11 @@
 
 use super::indices::twin_margin;
 use super::plane::{inside_rings, zero_sets, Fields, Grid};
-use super::{levels, twin_deviation, Blocking, Curve, Hard, Indices, Kind, SPACING};
+use super::{
+    levels, twin_deviation, Blocking, Curve, Hard, Indices, Kind, DIFF_STEP, NEWTON_TO, ON_LIMIT,
+    SPACING,
+};
 use crate::geom::DVec2;
-
-/// A point of the boundary lies on a limit when its margin is within this (the brackets
-/// end 10⁻¹³ away; the corners 10⁻¹² of both indices).
-const ON_LIMIT: f64 = 1e-9;
 
 /// The traced contour.
 #[derive(Debug, Clone, PartialEq)]
@@ -237,11 +236,11 @@ impl Blocking {
             let ix = self.indices(p)?;
             Some(DVec2::new(ix.of(a.0)? - a.1, ix.of(b.0)? - b.1))
         };
-        let e = 1e-7;
+        let e = DIFF_STEP;
         let mut p = from;
         for _ in 0..30 {
             let v = f(p)?;
-            if v.abs().max_element() <= 1e-12 {
+            if v.abs().max_element() <= NEWTON_TO {
                 return Some(p);
             }
             let dx = (f(p + DVec2::new(e, 0.0))? - f(p - DVec2::new(e, 0.0))?) / (2.0 * e);
