@@ -49,11 +49,6 @@ impl Grid {
     pub fn node(&self, i: usize, j: usize) -> DVec2 {
         self.lo + DVec2::new(i as f64, j as f64) * self.h
     }
-
-    /// The upper right node.
-    pub fn hi(&self) -> DVec2 {
-        self.node(self.n[0], self.n[1])
-    }
 }
 
 /// Functions over the plane whose zero sets are traced.

@@ -84,7 +84,7 @@ impl Fields for Plane<'_> {
 
 impl Blocking {
     /// The grid over the window.
-    pub fn grid(&self) -> Grid {
+    pub(super) fn grid(&self) -> Grid {
         Grid::over(self.window.0, self.window.1, SPACING)
     }
 
