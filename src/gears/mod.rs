@@ -103,6 +103,19 @@ pub enum GearError {
         /// N₁N₂, m.
         g: f64,
     },
+    /// The mate's tip meets a wheel's flank below the junction of its involute and fillet:
+    /// the tip cuts into the fillet (interference with the transition curve).
+    #[error("gears: interference with the fillet of wheel {wheel}: the mate's tip meets its flank at r = {contact_mm:.4} mm, {depth_mm:.4} mm below the junction of its involute and fillet (r = {junction_mm:.4} mm): the tip cuts into the fillet")]
+    FilletInterference {
+        /// The wheel (1, 2).
+        wheel: usize,
+        /// The radius at which the mate's tip meets the wheel's flank (B₁ or B₂), mm.
+        contact_mm: f64,
+        /// The radius of the junction of involute and fillet, mm.
+        junction_mm: f64,
+        /// How far below the junction, mm.
+        depth_mm: f64,
+    },
     /// A pointed tooth.
     #[error("gears: the tooth of wheel {wheel} is pointed: s_a = {sa} m (m = {module} m)")]
     Pointed {

@@ -5,7 +5,7 @@
 //! theoretical and practical lines of action, the contact ratio and the interference checks.
 
 use super::involute::{inv, inv_inverse, inv_inverse_newton, pressure_angle, thickness_at};
-use super::{BasicRack, GearError};
+use super::{BasicRack, Cutting, GearError};
 use std::f64::consts::PI;
 
 /// An external pair as given: module, tooth numbers and shift coefficients.
@@ -211,11 +211,13 @@ impl Pair {
     /// The geometry of `spec`, refused when the pair cannot work: a tip circle inside the
     /// base circle (a Δy too large: no involute flank), a tip that passes the
     /// interference point of the other wheel (the practical line of action leaves N₁N₂), a
-    /// pointed tooth (s_a ≤ 0), a contact ratio below 1, or a negative radial clearance.
+    /// pointed tooth (s_a ≤ 0), a contact ratio below 1, a negative radial clearance, or a
+    /// tip that cuts into the mate's fillet ([`Pair::fillet_clear`]).
     ///
     /// # Errors
     /// Those of [`Pair::new`], [`GearError::TipInsideBase`], [`GearError::Interference`],
-    /// [`GearError::Pointed`], [`GearError::ContactRatio`], [`GearError::Clearance`].
+    /// [`GearError::Pointed`], [`GearError::ContactRatio`], [`GearError::Clearance`],
+    /// [`GearError::FilletInterference`].
     pub fn working(spec: PairSpec) -> Result<Self, GearError> {
         let p = Self::new(spec)?;
         for i in 0..2 {
@@ -257,7 +259,39 @@ impl Pair {
         if p.eps < 1.0 {
             return Err(GearError::ContactRatio { eps: p.eps });
         }
+        for i in 0..2 {
+            p.fillet_clear(i)?;
+        }
         Ok(p)
+    }
+
+    /// The mate's tip meets wheel `i`'s flank at B_i (N₁B₁ from N₁ for wheel 1, N₂B₂ from N₂
+    /// for wheel 2) no lower than the junction of its involute and fillet, which the rack
+    /// that cut it on the pair's blank generates ([`Cutting::junction`]: the flank's end, or
+    /// where an undercut's fillet crosses the involute). A wheel the rack cannot cut (|x| >
+    /// 3) is not checked.
+    ///
+    /// # Errors
+    /// [`GearError::FilletInterference`] with the radii of contact and junction.
+    pub fn fillet_clear(&self, i: usize) -> Result<(), GearError> {
+        let s = &self.spec;
+        let Ok(c) = Cutting::with_tip(s.module, s.z[i], s.x[i], s.rack, self.ra[i]) else {
+            return Ok(());
+        };
+        let ends = self.active_ends();
+        let near = if i == 0 { ends[0] } else { self.g - ends[1] };
+        let rb = self.rb[i];
+        let contact = (rb * rb + near * near).sqrt();
+        let junction = c.junction().0.length();
+        if contact < junction * (1.0 - 1e-12) {
+            return Err(GearError::FilletInterference {
+                wheel: i + 1,
+                contact_mm: contact * 1e3,
+                junction_mm: junction * 1e3,
+                depth_mm: (junction - contact) * 1e3,
+            });
+        }
+        Ok(())
     }
 
     /// The distance of the pitch point P from N₁ along N₁N₂: r_w1 sin α_w.

@@ -230,21 +230,32 @@ fn suffix(name: &str) -> String {
     }
 }
 
+/// The textbook's x_min = (17 − z)/17 is h_a* − z sin²α/2 rounded for h_a* = 1 and α = 20°
+/// (1/17 ≈ sin²20°/2): it holds for that rack only (at α = 25° it gives −1.82 for z = 48
+/// against the exact −3.29).
+fn textbook_rule_holds(rack: &super::BasicRack) -> bool {
+    (rack.alpha.to_degrees() - 20.0).abs() < 1e-9 && (rack.ha - 1.0).abs() < 1e-12
+}
+
 /// The rows of a rack generation of the wheel `name`: x_min exact (analytic) beside the
-/// textbook's (17 − z)/17 (formula), the tip thickness read off the drawn tooth
+/// textbook's (17 − z)/17 (formula; for the rack it holds for, [`textbook_rule_holds`]), the
+/// tip thickness read off the drawn tooth
 /// (`s_a<name>`, envelope) and the drawn envelope's deviation from the exact one.
 pub fn generation_rows(name: &str, g: &Generation) -> Vec<Row> {
     let c = &g.cutting;
     let sfx = suffix(name);
-    let mut out = vec![
-        row(
+    let mut out = Vec::new();
+    if textbook_rule_holds(&c.rack) {
+        out.push(row(
             Symbol::ShiftCoefficient,
             &format!("min{sfx}"),
             Method::Formula,
             x_min_textbook(c.z),
             c.x_min(),
             1.0,
-        ),
+        ));
+    }
+    out.extend([
         row(
             Symbol::ToothThickness,
             &format!("a{name}"),
@@ -261,7 +272,7 @@ pub fn generation_rows(name: &str, g: &Generation) -> Vec<Row> {
             0.0,
             c.module,
         ),
-    ];
+    ]);
     // The report form's readings (PZ1 Tables 1.1/1.2) against the exact envelope: S_t and
     // e_t = πm − S_t on the pitch circle, S_b on the base circle (thinned by an undercut).
     let (st, et) = g.pitch_reading;
@@ -335,10 +346,17 @@ pub fn generation_notes(name: &str, g: &Generation) -> Vec<String> {
             )
         },
     );
+    let rule = if textbook_rule_holds(&c.rack) {
+        format!(
+            " (the textbook's (17 − z)/17 = {})",
+            num(x_min_textbook(c.z), 4)
+        )
+    } else {
+        String::new()
+    };
     out.push(format!(
-        "gears: wheel {name}: x_min = h_a* − z·sin²α/2 = {} (the textbook's (17 − z)/17 = {}); feasible shift: {range}",
+        "gears: wheel {name}: x_min = h_a* − z·sin²α/2 = {}{rule}; feasible shift: {range}",
         num(c.x_min(), 4),
-        num(x_min_textbook(c.z), 4),
     ));
     let exact = c.junction().0;
     out.push(format!(

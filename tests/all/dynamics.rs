@@ -216,15 +216,7 @@ fn a_machine_that_needs_no_flywheel_gets_none_and_its_plate_builds() {
     );
     assert!(!n.contains("inf %") && !n.contains("NaN"), "{n}");
     let out = dir.join("out");
-    let o = tmm(&[
-        "render",
-        path.to_str().expect("utf-8"),
-        "--out",
-        out.to_str().expect("utf-8"),
-        "--format",
-        "svg",
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    support::render_svg(&path, &out, "the loose scene");
     let svg = std::fs::read_to_string(out.join("loose/dynamics.svg")).expect("the plate");
     assert!(
         svg.contains("маховик не нужен"),

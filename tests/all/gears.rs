@@ -4,7 +4,7 @@
 //! their key paths.
 
 use crate::support;
-use support::{notes, num, report_json as report, scratch, tmm};
+use support::{notes, num, render_svg, report_json as report, scratch, tmm};
 
 fn report_json(scene: &str, drafting: &str) -> serde_json::Value {
     report(scene, Some(drafting))
@@ -19,7 +19,8 @@ fn rows<'a>(v: &'a serde_json::Value, q: &str, method: &str) -> Vec<&'a serde_js
         .collect()
 }
 
-fn row<'a>(v: &'a serde_json::Value, q: &str, method: &str) -> &'a serde_json::Value {
+/// The first row of quantity `q` by `method`; a missing one fails the test.
+pub(crate) fn row<'a>(v: &'a serde_json::Value, q: &str, method: &str) -> &'a serde_json::Value {
     rows(v, q, method)
         .first()
         .copied()
@@ -223,8 +224,9 @@ fn pz2_example3_by_willis_and_triangles() {
     assert!((num(r, "graphical") - 20.0).abs() < 1e-9 * 20.0);
 }
 
-/// Write a scene file and run `tmm` on it.
-fn run_scene(name: &str, text: &str, args: &[&str]) -> (bool, i32, String) {
+/// Write a scene file and run `tmm` on it: `tmm ARGS SCENE` on the scene `text` written as
+/// `name`; success, exit code, stderr.
+pub(crate) fn run_scene(name: &str, text: &str, args: &[&str]) -> (bool, i32, String) {
     let dir = scratch(name);
     let path = dir.join(format!("{name}.toml"));
     std::fs::write(&path, text).expect("write scene");
@@ -541,19 +543,7 @@ fn the_ends_of_the_documented_ranges_render() {
     for (k, text) in cases.iter().enumerate() {
         let path = out.join(format!("end{k}.toml"));
         std::fs::write(&path, format!("{text}[plates]\nwanted = [\"gears\"]\n")).expect("write");
-        let o = tmm(&[
-            "render",
-            path.to_str().expect("utf-8"),
-            "--out",
-            out.to_str().expect("utf-8"),
-            "--format",
-            "svg",
-        ]);
-        assert!(
-            o.status.success(),
-            "case {k}: {}",
-            String::from_utf8_lossy(&o.stderr)
-        );
+        render_svg(&path, &out, &format!("case {k}"));
     }
 }
 
@@ -871,70 +861,36 @@ fn a_differential_scene_solves_with_two_inputs() {
     );
 }
 
-/// `[gears.pair] choose`: the contour chooses x₁, x₂, the pair is built on them, and the
-/// scene's point is that choice; criteria it cannot meet and shifts given beside it are
-/// refused on their keys.
+/// The textbook's x_min = (17 − z)/17 rounds h_a* − z sin²α/2 for α = 20°, h_a* = 1: its row
+/// and its words are printed for that rack only (at α = 25° it gave −1.82 for z = 48 beside
+/// the exact −3.29; at 15° −1.82 beside −0.664).
 #[test]
-fn the_blocking_contour_chooses_the_shifts_a_scene_asks_for() {
-    let head = "[gears]\nmodule = 10.0\n[gears.pair]\nz = [13, 21]\n";
-    let dir = scratch("choose");
-    for (choose, tag) in [
-        ("choose = \"equal-sliding\"\nx_sum = 1.078\n", "bsl"),
-        ("choose = \"largest-contact-ratio\"\n", "beps"),
-        ("choose = \"greatest-sum\"\nsa_min = 0.4\n", "bsum"),
+fn the_textbook_x_min_rule_is_printed_only_for_its_rack() {
+    let dir = scratch("x-min-rule");
+    for (alpha, holds, exact) in [
+        ("20.0", true, 1.0 - 24.0 * 20f64.to_radians().sin().powi(2)),
+        ("25.0", false, 1.0 - 24.0 * 25f64.to_radians().sin().powi(2)),
+        ("15.0", false, 1.0 - 24.0 * 15f64.to_radians().sin().powi(2)),
     ] {
-        let path = dir.join(format!("{tag}.toml"));
-        std::fs::write(&path, format!("{head}{choose}")).expect("write scene");
+        let path = dir.join(format!("alpha-{alpha}.toml"));
+        std::fs::write(
+            &path,
+            format!("[gears]\nmodule = 10.0\nalpha = {alpha}\nrho_f = 0.3\n[[gears.rack]]\nz = 48\nx = 0.0\n"),
+        )
+        .expect("write");
         let v = report(path.to_str().expect("utf-8"), None);
-        for q in ["eps_alpha", "s_a1", "s_a2", "dy"] {
-            let (k, c) = (
-                num(row(&v, &format!("{q}_bz"), "formula"), "analytic"),
-                num(row(&v, &format!("{q}_{tag}"), "formula"), "analytic"),
-            );
+        let found = rows(&v, "x_min", "formula");
+        assert_eq!(found.len(), usize::from(holds), "α = {alpha}");
+        if let Some(r) = found.first() {
+            assert!((num(r, "graphical") - (17.0 - 48.0) / 17.0).abs() < 1e-12);
             assert!(
-                (k - c).abs() <= 1e-12 * k.abs().max(1.0),
-                "{tag} {q}: {k} {c}"
+                (num(r, "analytic") - exact).abs() < 1e-4,
+                "{}",
+                num(r, "analytic")
             );
         }
-        let notes = notes(&v);
-        assert!(notes.contains("chosen on the contour by"), "{notes}");
-        if tag == "bsum" {
-            assert!(notes.contains("s_a ≥ 0.4m"), "{notes}");
-            let sa = num(row(&v, "s_a1_bz", "formula"), "analytic");
-            assert!(sa >= 0.4 * 0.010 * (1.0 - 1e-9), "{sa}");
-        }
-    }
-    let cases: &[(&str, &[&str])] = &[
-        (
-            "choose = \"largest-contact-ratio\"\nx = [0.5, 0.5]\n",
-            &["gears.pair.x", "not both"],
-        ),
-        (
-            "choose = \"smallest\"\n",
-            &["gears.pair.choose = smallest", "equal-sliding"],
-        ),
-        (
-            "choose = \"equal-sliding\"\n",
-            &["gears.pair.x_sum", "missing"],
-        ),
-        (
-            "choose = \"equal-sliding\"\nx_sum = 5.0\n",
-            &["gears.pair.choose", "does not cross"],
-        ),
-        (
-            "choose = \"greatest-sum\"\nsa_min = 2.0\nx_sum = 1.0\n",
-            &["gears.pair.sa_min = 2", "gears.pair.x_sum"],
-        ),
-    ];
-    for (k, (text, expected)) in cases.iter().enumerate() {
-        let (ok, code, err) = run_scene(
-            &format!("bad-choose-{k}"),
-            &format!("{head}{text}"),
-            &["check"],
-        );
-        assert!(!ok && code == 2, "case {k}: {code} {err}");
-        for e in *expected {
-            assert!(err.contains(e), "case {k}: `{e}` not in\n{err}");
-        }
+        let n = notes(&v);
+        assert_eq!(n.contains("(17 − z)/17"), holds, "α = {alpha}: {n}");
+        assert!(n.contains("x_min = h_a* − z·sin²α/2"), "{n}");
     }
 }

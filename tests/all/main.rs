@@ -11,6 +11,8 @@ mod batch;
 mod bench;
 mod blobs;
 mod blocking;
+mod blocking_region;
+mod blocking_scenes;
 mod cam;
 mod cam_breaks;
 mod cam_diagrams;

@@ -17,6 +17,23 @@ pub fn tmm(args: &[&str]) -> Output {
         .expect("run tmm")
 }
 
+/// `tmm render SCENE --out OUT --format svg`, which must succeed (`what` names the case).
+pub fn render_svg(scene: &std::path::Path, out: &std::path::Path, what: &str) {
+    let o = tmm(&[
+        "render",
+        scene.to_str().expect("utf-8"),
+        "--out",
+        out.to_str().expect("utf-8"),
+        "--format",
+        "svg",
+    ]);
+    assert!(
+        o.status.success(),
+        "{what}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
 /// Every scene of `constructions/`, sorted; at least the eighteen there are.
 pub fn scene_paths() -> Vec<PathBuf> {
     let mut paths: Vec<PathBuf> = std::fs::read_dir(root().join("constructions"))

@@ -1,0 +1,376 @@
+//! The drawing of a study's contour: the axes x₁, x₂ with their ticks, every traced curve
+//! labelled, the admissible region's boundary bold, the scene's point and each choice.
+
+use super::study::{level_name, point_label, Study};
+use super::{levels, Kind};
+use crate::construct::{Figure, Item, Label, Role, Step, StepId};
+use crate::geom::{DVec2, Segment};
+use crate::scale::{format_sig, Lang, Scale};
+use std::f64::consts::PI;
+
+/// The words a drawing of the contour needs from the sheet's catalogue.
+#[derive(Debug, Clone, Copy)]
+pub struct Words<'a> {
+    /// "interference" (with a wheel's fillet).
+    pub interference: &'a str,
+}
+
+/// The steps of the figure being drawn.
+#[derive(Default)]
+struct Steps(Vec<Step>);
+
+impl Steps {
+    fn push(
+        &mut self,
+        note: String,
+        item: Item,
+        role: Role,
+        label: Option<(String, DVec2, DVec2)>,
+    ) {
+        let id = StepId(self.0.len() as u32);
+        self.0.push(Step {
+            id,
+            note,
+            item,
+            role,
+            label: label.map(|(text, anchor, toward)| Label {
+                text,
+                anchor,
+                toward,
+            }),
+            from: Vec::new(),
+            group: 0,
+        });
+    }
+}
+
+/// The plotted plane: its lower corner, its span and figure mm per unit of x.
+struct Plane {
+    lo: DVec2,
+    hi: DVec2,
+    per_unit: f64,
+}
+
+impl Plane {
+    fn to(&self, p: DVec2) -> DVec2 {
+        (p - self.lo) * self.per_unit
+    }
+    fn size(&self) -> DVec2 {
+        (self.hi - self.lo) * self.per_unit
+    }
+}
+
+impl Study {
+    /// The drawing of the contour: the axes x₁, x₂ with ticks every 0.2 (0.1 on a small
+    /// plane), every traced curve labelled (thin: the limits; dash-dot: the quality
+    /// isolines s_a = 0.25m, 0.4m, ε_α = 1.2 and the line of equal sliding), the admissible
+    /// region's boundary bold, the scene's point and each choice marked and labelled. Figure
+    /// mm, a round 40–120 mm per unit of x (the larger side up to 220 mm).
+    pub fn figure(&self, scale: Scale, lang: Lang, words: Words<'_>) -> Figure {
+        let plane = self.plane();
+        let mut steps = Steps::default();
+        axes(&plane, lang, &mut steps);
+        let (drawn, mut taken) = self.curves(&plane, lang, words, &mut steps);
+        let size = plane.size();
+        // The admissible region's boundary, bold.
+        for ring in &self.contour.boundary {
+            let ring: Vec<DVec2> = ring.iter().map(|p| plane.to(*p)).collect();
+            for piece in clip_polyline(&ring, size.x, size.y) {
+                steps.push(
+                    "the admissible region's boundary".into(),
+                    Item::Polyline {
+                        points: piece,
+                        closed: false,
+                    },
+                    Role::Result,
+                    None,
+                );
+            }
+        }
+        // The points.
+        for (tag, ix) in self.points() {
+            let at = plane.to(DVec2::from(ix.x));
+            if !(at.x >= 0.0 && at.y >= 0.0 && at.x <= size.x && at.y <= size.y) {
+                continue;
+            }
+            let room = |p: DVec2| room(&drawn, None, &taken, p, size);
+            // Toward the most room of eight directions, 6 mm out.
+            let toward = (0..8)
+                .map(|k| {
+                    let a = PI / 4.0 * f64::from(k) + PI / 8.0;
+                    DVec2::new(a.cos(), a.sin())
+                })
+                .max_by(|a, b| room(at + *a * 6.0).total_cmp(&room(at + *b * 6.0)))
+                .unwrap_or(DVec2::new(1.0, 1.0));
+            taken.push(at + toward * 6.0);
+            steps.push(
+                format!("the point {tag}"),
+                Item::Point(at),
+                Role::Given,
+                Some((point_label(tag).to_string(), at, toward)),
+            );
+        }
+        Figure {
+            title: "blocking contour".into(),
+            scale,
+            steps: steps.0,
+        }
+    }
+
+    /// The plotted plane: the admissible region and the points, 0.25 about them, within the
+    /// window, far enough to show where each wheel's tooth points (s_a = 0) beside the
+    /// region (up to 0.5 more); rounded out to tenths; its scale a round 40–120 mm per unit
+    /// with the larger side up to 220 mm.
+    fn plane(&self) -> Plane {
+        let c = &self.contour;
+        let mut lo = DVec2::splat(f64::INFINITY);
+        let mut hi = DVec2::splat(f64::NEG_INFINITY);
+        let points = self.points();
+        for p in c
+            .boundary
+            .iter()
+            .flatten()
+            .copied()
+            .chain(points.iter().map(|(_, ix)| DVec2::from(ix.x)))
+        {
+            lo = lo.min(p);
+            hi = hi.max(p);
+        }
+        let (wlo, whi) = c.blocking.window;
+        if !lo.is_finite() || !hi.is_finite() {
+            (lo, hi) = (wlo, whi);
+        }
+        let lo = (lo - DVec2::splat(0.25)).max(wlo);
+        let mut hi = (hi + DVec2::splat(0.25)).min(whi);
+        let lo = lo.min(hi - DVec2::splat(0.2));
+        let (lo0, hi0) = (lo, hi);
+        for cv in c.curves.iter().filter(|cv| cv.limit == 0.0) {
+            for p in &cv.points {
+                match cv.kind {
+                    Kind::Tip(0) if p.y >= lo0.y && p.y <= hi0.y => hi.x = hi.x.max(p.x + 0.05),
+                    Kind::Tip(1) if p.x >= lo0.x && p.x <= hi0.x => hi.y = hi.y.max(p.y + 0.05),
+                    _ => {}
+                }
+            }
+        }
+        let hi = hi.min(hi0 + DVec2::splat(0.5));
+        let lo = (lo.max(wlo) * 10.0).floor() / 10.0;
+        let hi = (hi.min(whi) * 10.0).ceil() / 10.0;
+        let span = (hi - lo).max(DVec2::splat(0.2));
+        let per_unit = [40.0, 50.0, 60.0, 80.0, 100.0, 120.0]
+            .into_iter()
+            .rev()
+            .find(|s| span.max_element() * s <= 220.0)
+            .unwrap_or(40.0);
+        Plane {
+            lo,
+            hi: lo + span,
+            per_unit,
+        }
+    }
+
+    /// The curves, each labelled once on its longest piece (and on any other 15 mm long),
+    /// where the label is farthest from the other curves and labels: the pieces drawn (by
+    /// level) and the labels' places.
+    fn curves(
+        &self,
+        plane: &Plane,
+        lang: Lang,
+        words: Words<'_>,
+        steps: &mut Steps,
+    ) -> (Vec<(usize, Vec<DVec2>)>, Vec<DVec2>) {
+        let c = &self.contour;
+        let size = plane.size();
+        let levels = levels(&c.blocking.rack, c.blocking.z);
+        let mut drawn: Vec<(usize, Vec<DVec2>)> = Vec::new();
+        for (k, (kind, limit)) in levels.iter().enumerate() {
+            let mut pieces: Vec<Vec<DVec2>> = c
+                .curves
+                .iter()
+                .filter(|cv| cv.kind == *kind && cv.limit == *limit)
+                .flat_map(|cv| {
+                    let pts: Vec<DVec2> = cv.points.iter().map(|p| plane.to(*p)).collect();
+                    clip_polyline(&pts, size.x, size.y)
+                })
+                .collect();
+            pieces.sort_by_key(|p| std::cmp::Reverse(p.len()));
+            drawn.extend(pieces.into_iter().map(|p| (k, p)));
+        }
+        let mut taken: Vec<DVec2> = Vec::new();
+        let mut first_of = vec![true; levels.len()];
+        for (k, piece) in &drawn {
+            let (kind, limit) = levels[*k];
+            let dashed = matches!((kind, limit), (Kind::Tip(_), l) if l > 0.0)
+                || (kind == Kind::ContactRatio && limit > 1.0)
+                || kind == Kind::EqualSliding;
+            let role = if dashed {
+                Role::Axis
+            } else {
+                Role::Construction
+            };
+            let long = piece
+                .windows(2)
+                .map(|s| (s[1] - s[0]).length())
+                .sum::<f64>()
+                >= 15.0;
+            let first = std::mem::replace(&mut first_of[*k], false);
+            let label = (first || long).then(|| {
+                let room = |p: DVec2| room(&drawn, Some(*k), &taken, p, size);
+                let n = piece.len() - 1;
+                let at = (1..20)
+                    .map(|f| n * f / 20)
+                    .max_by(|a, b| room(piece[*a]).total_cmp(&room(piece[*b])))
+                    .unwrap_or(n / 2);
+                let p = piece[at];
+                let t = (piece[(at + 1).min(n)] - piece[at.saturating_sub(1)]).normalize_or_zero();
+                let mut nrm = DVec2::new(-t.y, t.x);
+                // Toward the side with more room.
+                if room(p + nrm * 4.0) < room(p - nrm * 4.0) {
+                    nrm = -nrm;
+                }
+                taken.push(p + nrm * 6.0);
+                (level_label(kind, limit, lang, words), p, nrm)
+            });
+            steps.push(
+                format!("the curve {}", level_name(kind, limit)),
+                Item::Polyline {
+                    points: piece.clone(),
+                    closed: false,
+                },
+                role,
+                label,
+            );
+        }
+        (drawn, taken)
+    }
+}
+
+/// The axes along the plane's lower and left edges, with their ticks every 0.2 (0.1 on a
+/// plane of at most a unit).
+fn axes(plane: &Plane, lang: Lang, steps: &mut Steps) {
+    let size = plane.size();
+    for (axis, end, toward) in [
+        (0, DVec2::new(size.x + 6.0, 0.0), DVec2::new(1.0, -0.6)),
+        (1, DVec2::new(0.0, size.y + 6.0), DVec2::new(-0.6, 1.0)),
+    ] {
+        steps.push(
+            format!("the axis x{}", if axis == 0 { '₁' } else { '₂' }),
+            Item::Segment(Segment::new(DVec2::ZERO, end)),
+            Role::Construction,
+            Some((format!("x_{}", axis + 1), end, toward)),
+        );
+    }
+    let span = plane.hi - plane.lo;
+    let step = if span.max_element() > 1.0 { 0.2 } else { 0.1 };
+    for axis in 0..2 {
+        let (a, b) = if axis == 0 {
+            (plane.lo.x, plane.hi.x)
+        } else {
+            (plane.lo.y, plane.hi.y)
+        };
+        let mut k = (a / step).ceil() as i64;
+        while (k as f64) * step <= b + 1e-9 {
+            let v = k as f64 * step;
+            let at = (v - a) * plane.per_unit;
+            let (p, q, toward) = if axis == 0 {
+                (DVec2::new(at, 0.0), DVec2::new(at, -2.0), DVec2::NEG_Y)
+            } else {
+                (DVec2::new(0.0, at), DVec2::new(-2.0, at), DVec2::NEG_X)
+            };
+            let text = if v.abs() < 1e-9 {
+                "0".to_string()
+            } else {
+                format_sig(v, 3, lang)
+            };
+            steps.push(
+                format!("a tick of x{} at {v:.1}", axis + 1),
+                Item::Segment(Segment::new(p, q)),
+                Role::Construction,
+                Some((text, q, toward)),
+            );
+            k += 1;
+        }
+    }
+}
+
+/// Clip the segment a–b to the rectangle [0, w] × [0, h] (Liang–Barsky).
+fn clip(a: DVec2, b: DVec2, w: f64, h: f64) -> Option<(DVec2, DVec2)> {
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+    for (p, q) in [(-d.x, a.x), (d.x, w - a.x), (-d.y, a.y), (d.y, h - a.y)] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    (t0 <= t1).then(|| (a + d * t0, a + d * t1))
+}
+
+/// The polyline `pts` clipped to [0, w] × [0, h]: its pieces inside.
+fn clip_polyline(pts: &[DVec2], w: f64, h: f64) -> Vec<Vec<DVec2>> {
+    let mut out: Vec<Vec<DVec2>> = Vec::new();
+    let mut cur: Vec<DVec2> = Vec::new();
+    for s in pts.windows(2) {
+        match clip(s[0], s[1], w, h) {
+            Some((a, b)) => {
+                if cur.last().is_none_or(|l| (*l - a).length() > 1e-9) {
+                    if cur.len() >= 2 {
+                        out.push(std::mem::take(&mut cur));
+                    }
+                    cur = vec![a];
+                }
+                cur.push(b);
+            }
+            None => {
+                if cur.len() >= 2 {
+                    out.push(std::mem::take(&mut cur));
+                }
+                cur.clear();
+            }
+        }
+    }
+    if cur.len() >= 2 {
+        out.push(cur);
+    }
+    out
+}
+
+/// The room about `p` (figure mm): its distance to the drawn curves (but the level `skip`),
+/// to the labels already placed and to the plane's edges (`size`).
+fn room(
+    drawn: &[(usize, Vec<DVec2>)],
+    skip: Option<usize>,
+    taken: &[DVec2],
+    p: DVec2,
+    size: DVec2,
+) -> f64 {
+    let others = drawn
+        .iter()
+        .filter(|(j, _)| Some(*j) != skip)
+        .flat_map(|(_, q)| q.iter().step_by(2))
+        .chain(taken.iter())
+        .map(|q| (*q - p).length())
+        .fold(f64::INFINITY, f64::min);
+    others.min(p.x).min(p.y).min(size.x - p.x).min(size.y - p.y)
+}
+
+/// The label of a level in label markup.
+fn level_label(kind: Kind, limit: f64, lang: Lang, words: Words<'_>) -> String {
+    let l = format_sig(limit, 3, lang);
+    match kind {
+        Kind::Undercut(i) => format!("x_{{min{}}}", i + 1),
+        Kind::Tip(i) if limit == 0.0 => format!("s_{{a{}}} = 0", i + 1),
+        Kind::Tip(i) => format!("s_{{a{}}} = {l}m", i + 1),
+        Kind::ContactRatio => format!("ε_α = {l}"),
+        Kind::Interference(i) => format!("{} {}", words.interference, i + 1),
+        Kind::EqualSliding => "λ_1 = λ_2".into(),
+    }
+}
