@@ -469,6 +469,8 @@ fn the_required_stage_is_a_fixed_axis_mesh_or_none() {
         n_input: Some(1000.0),
         n_output: Some(190.0),
         satellites: Some(4),
+        closing: false,
+        seed: TrainSeed::default(),
     };
     let s = train_study(&spec(james), &ctx(0.0)).unwrap();
     assert!(s.required.is_none() && (s.ratio - 5.0).abs() < 1e-12);

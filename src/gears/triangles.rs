@@ -43,8 +43,9 @@ pub const PLAN_REACH_MM: f64 = 100.0;
 /// the height an A3 sheet leaves a drawing beside its data and table.
 const TRIANGLES_SPAN_MM: f64 = 180.0;
 
-/// The gap between the kinematic scheme and the leftmost velocity, mm.
-const SCHEME_GAP_MM: f64 = 30.0;
+/// The gap between the kinematic scheme (its rightmost line, support or name) and the
+/// leftmost velocity, mm.
+const SCHEME_GAP_MM: f64 = 10.0;
 
 /// How far the reading line runs past the outermost intercepts, mm.
 const PLAN_OVERHANG_MM: f64 = 8.0;
