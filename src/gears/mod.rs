@@ -25,6 +25,8 @@ mod scheme;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_closing;
+#[cfg(test)]
 mod tests_limits;
 #[cfg(test)]
 mod tests_train;

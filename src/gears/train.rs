@@ -26,9 +26,9 @@ pub struct Wheel {
     pub shaft: usize,
     /// An internal (ring) gear.
     pub internal: bool,
-    /// The module of its meshes when not the train's, m: a stage of another module, as the
-    /// textbook's trains whose tooth sums do not close with one module (PZ2 examples 1 and 2)
-    /// are drawn coaxial.
+    /// The module of its meshes when not the train's, m: a stage of another module (given,
+    /// or the one [`Train::closing`] takes for a stage whose tooth sums do not close with one
+    /// module, PZ2 examples 1 and 2).
     pub module: Option<f64>,
 }
 

@@ -58,16 +58,26 @@ impl Train {
         y[self.input] = Some(0.0);
         for pass in 0..2 * n + 2 {
             if let Some(h) = self.carrier {
-                if y[h].is_none() {
+                // The central wheels that mesh a satellite.
+                let central: Vec<usize> = self
+                    .meshes
+                    .iter()
+                    .flat_map(|m| [(m.0, m.1), (m.1, m.0)])
+                    .map(|(a, b)| (self.wheels[a].shaft, self.wheels[b].shaft))
+                    .filter(|&(sa, sb)| self.is_satellite(sb) && !self.is_satellite(sa) && sa != h)
+                    .map(|(sa, _)| sa)
+                    .collect();
+                match y[h] {
                     // Coaxial with a placed central wheel that meshes a satellite.
-                    for m in &self.meshes {
-                        for (a, b) in [(m.0, m.1), (m.1, m.0)] {
-                            let (sa, sb) = (self.wheels[a].shaft, self.wheels[b].shaft);
-                            if self.is_satellite(sb) && !self.is_satellite(sa) && sa != h {
-                                if let Some(ya) = y[sa] {
-                                    y[h] = Some(ya);
-                                }
-                            }
+                    None => y[h] = central.iter().find_map(|&c| y[c]),
+                    // A carrier placed first (it is the input) sets the first central wheel
+                    // on its axis; the satellites and the other central wheels follow.
+                    Some(yh) => {
+                        if let Some(&c) = central
+                            .first()
+                            .filter(|_| central.iter().all(|&c| y[c].is_none()))
+                        {
+                            y[c] = Some(yh);
                         }
                     }
                 }

@@ -53,6 +53,19 @@ const PLAN_OVERHANG_MM: f64 = 8.0;
 /// How far the dimension H stands past the end of the reading line, mm.
 const PLAN_DIMENSION_MM: f64 = 4.0;
 
+/// The height where a given shaft's velocity is laid off: its first pole, or a carrier's
+/// first satellite's axis; `None` when it has neither off its own axis.
+fn given_height(train: &Train, k: usize, (ys, poles): (&[f64], &[f64])) -> Option<f64> {
+    train
+        .meshes
+        .iter()
+        .zip(poles)
+        .find(|(m, _)| train.wheels[m.0].shaft == k || train.wheels[m.1].shaft == k)
+        .map(|(_, p)| *p)
+        .or_else(|| (Some(k) == train.carrier).then(|| train.satellites.first().map(|&s| ys[s]))?)
+        .filter(|h| (h - ys[k]).abs() > 1e-12)
+}
+
 /// Construct the velocity triangles of `train` for the input turning at `omega_in` rad/s
 /// in `ctx`.
 ///
@@ -76,19 +89,13 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
     let mu_l =
         Scale::round_for(span, TRIANGLES_SPAN_MM, Quantity::Length).ok_or_else(|| bad("μ_l"))?;
     let n = train.shafts.len();
-    // The input's pole: the first mesh of the input shaft.
-    let (first, _) = train
-        .meshes
-        .iter()
-        .enumerate()
-        .find(|(_, m)| {
-            train.wheels[m.0].shaft == train.input || train.wheels[m.1].shaft == train.input
-        })
-        .ok_or_else(|| bad("the input meshes nothing"))?;
+    // The input's pole: the first mesh of the input shaft (a carrier's: its satellite's axis).
+    let pin = given_height(train, train.input, (&ys, &poles))
+        .ok_or_else(|| bad("the input has no pole off its axis"))?;
     if !(omega_in.is_finite() && omega_in != 0.0) {
         return Err(bad("the input's ω is 0 or not finite"));
     }
-    let v_in = (poles[first] - ys[train.input]).abs().max(train.module) * omega_in.abs();
+    let v_in = (pin - ys[train.input]).abs().max(train.module) * omega_in.abs();
     let mu_v = Scale::round_for(v_in, 60.0, Quantity::Velocity).ok_or_else(|| bad("μ_v"))?;
     let mut rec = Recorder::in_context("velocity triangles", mu_v, ctx);
     let (ml, mv) = (mu_l.value(), mu_v.value());
@@ -113,7 +120,6 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
         lines[f] = Some((DVec2::new(0.0, yy(ys[f])), DVec2::new(0.0, yy(ys[f]) + 1.0)));
     }
     // Given: the input's pole velocity ω_in·r.
-    let pin = poles[first];
     lines[train.input] = Some((
         DVec2::new(0.0, yy(ys[train.input])),
         DVec2::new((pin - ys[train.input]) * omega_in / mv, yy(pin)),
@@ -121,16 +127,7 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
     // A differential's second input: its line through its axis and the velocity at its
     // first pole (the carrier's: at its first satellite's axis).
     if let Some((k, w)) = train.second {
-        let height = train
-            .meshes
-            .iter()
-            .enumerate()
-            .find(|(_, m)| train.wheels[m.0].shaft == k || train.wheels[m.1].shaft == k)
-            .map(|(i, _)| poles[i])
-            .or_else(|| {
-                (Some(k) == train.carrier).then(|| train.satellites.first().map(|&s| ys[s]))?
-            })
-            .filter(|h| (h - ys[k]).abs() > 1e-12)
+        let height = given_height(train, k, (&ys, &poles))
             .ok_or_else(|| bad("the second input has no pole off its axis"))?;
         lines[k] = Some((
             DVec2::new(0.0, yy(ys[k])),

@@ -344,14 +344,8 @@ fn seed_values(w: &mut Writer<'_, '_>) {
             );
         }
     }
-    if let Some((printed, why)) = train_seed(w) {
-        add(
-            printed.0,
-            printed.1,
-            printed.2,
-            Some(printed.3),
-            label(&why),
-        );
+    if let Some(r) = train_seed(w) {
+        add(r.symbol, r.printed, r.exact, Some(r.off), label(&r.why));
     }
     if let Some(c) = &scene.cam {
         if let (Some(seed), Some(exact)) = (
@@ -397,11 +391,24 @@ fn seed_values(w: &mut Writer<'_, '_>) {
     );
 }
 
-/// The train's printed ratio when Willis's relations do not reproduce it: its symbol, the
-/// printed and the exact value, the share off, and why (the planetary stage's ratio with the
-/// carrier stopped the printed value needs, against its teeth's).
-#[allow(clippy::type_complexity)]
-fn train_seed(w: &Writer<'_, '_>) -> Option<((String, String, String, f64), String)> {
+/// A row of the table of the source's values the project does not reproduce.
+struct SeedRow {
+    /// The quantity in label markup.
+    symbol: String,
+    /// The value the source prints.
+    printed: String,
+    /// The exact value.
+    exact: String,
+    /// (printed − exact)/exact.
+    off: f64,
+    /// Why, in label markup.
+    why: String,
+}
+
+/// The train's printed ratio when Willis's relations do not reproduce it: the printed and
+/// the exact value, the share off, and why (the planetary stage's ratio with the carrier
+/// stopped the printed value needs, against its teeth's).
+fn train_seed(w: &Writer<'_, '_>) -> Option<SeedRow> {
     let lang = w.lang;
     let study = w.session.gears().ok()?;
     let t = study.train.as_ref()?;
@@ -410,7 +417,6 @@ fn train_seed(w: &Writer<'_, '_>) -> Option<((String, String, String, f64), Stri
         return None;
     }
     let tr = &t.spec.train;
-    let symbol = format!("u_{{{}{}}}", tr.shafts[tr.input], tr.shafts[tr.output]);
     let why = t.seed_stage().map_or_else(String::new, |s| {
         format!(
             "{} u_{{{}{}}}^{{(H)}} = {}, {} {}",
@@ -422,15 +428,13 @@ fn train_seed(w: &Writer<'_, '_>) -> Option<((String, String, String, f64), Stri
             fmt(s.teeth, 4, lang)
         )
     });
-    Some((
-        (
-            symbol,
-            fmt(printed, 4, lang),
-            fmt(t.ratio, 5, lang),
-            (printed - t.ratio) / t.ratio,
-        ),
+    Some(SeedRow {
+        symbol: format!("u_{{{}{}}}", tr.shafts[tr.input], tr.shafts[tr.output]),
+        printed: fmt(printed, 4, lang),
+        exact: fmt(t.ratio, 5, lang),
+        off: (printed - t.ratio) / t.ratio,
         why,
-    ))
+    })
 }
 
 /// The references: the course texts the project follows.

@@ -116,7 +116,7 @@ fn closing_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
         worked(
             w,
             &name,
-            &frac(&format!("2 {}", sym("a")), &format!("{sym_}")),
+            &frac(&format!("2 {}", sym("a")), &sym_),
             &frac(&format!("2 dot {}", n(c.arm * 1e3, lang)), &num_),
             format!("{} {mm}", n(c.module * 1e3, lang)),
         );

@@ -1,7 +1,8 @@
 //! `[planetary]` → [`PlanetarySpec`]: wheels on named shafts, meshes by wheel names, the
 //! input, output, fixed shaft, carrier and satellites by shaft name, each checked with its key
-//! path; a train whose roles are not distinct, whose mobility is not 1 or that is not coaxial
-//! is refused with the key that makes it so.
+//! path; a train whose roles are not distinct, whose mobility is not the number of its inputs
+//! or that is not coaxial (unless `closing_module` closes it) is refused with the key that
+//! makes it so; `[planetary.seed]`, what the source prints, is kept for the notes.
 
 use super::check::{item, join, Checker};
 use super::gear_values::{module_mm, teeth_from};
@@ -69,8 +70,8 @@ fn key(k: &str) -> String {
 }
 
 /// Validate `[planetary]`: wheels on named shafts, meshes by wheel names, the input, output,
-/// fixed shaft, carrier and satellites by shaft name; the train must have mobility 1 and be
-/// drawable (coaxial).
+/// fixed shaft, carrier and satellites by shaft name; the train must have the mobility of its
+/// inputs and be drawable (coaxial, or closed by `closing_module`).
 pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<PlanetarySpec> {
     let before = check.problems.len();
     let module = raw

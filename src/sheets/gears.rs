@@ -299,8 +299,8 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
     )
 }
 
-/// A differential's output speed from its two given ones: `n_{3} = 1000, n_{5} = 200 об/мин
-/// → n_{H} = 360 об/мин (формула Виллиса), 360 (треугольники)`.
+/// A differential's output speed from its two given ones: `n_{3} = 1000 об/мин, n_{5} = 200
+/// об/мин → n_{H} = 360 об/мин (формула Виллиса), 360 об/мин (треугольники)`.
 fn differential_line(t: &crate::gears::TrainStudy, lang: Lang) -> Option<String> {
     let tr_ = &t.spec.train;
     let (second, w2) = tr_.second?;
@@ -309,10 +309,10 @@ fn differential_line(t: &crate::gears::TrainStudy, lang: Lang) -> Option<String>
     let n = |x: f64| format_sig(x, 6, lang);
     let by_triangles = t.triangles.omega[tr_.output] * 30.0 / std::f64::consts::PI;
     let by_formula = t.formula.map_or(String::new(), |u| {
-        format!("{} ({}), ", n(n_in / u), GearText::Willis.get(lang))
+        format!("{} {rpm} ({}), ", n(n_in / u), GearText::Willis.get(lang))
     });
     Some(format!(
-        "n_{{{}}} = {}, n_{{{}}} = {} {rpm} → n_{{{}}} = {by_formula}{} ({})",
+        "n_{{{}}} = {} {rpm}, n_{{{}}} = {} {rpm} → n_{{{}}} = {by_formula}{} {rpm} ({})",
         tr_.shafts[tr_.input],
         n(n_in),
         tr_.shafts[second],
@@ -323,20 +323,22 @@ fn differential_line(t: &crate::gears::TrainStudy, lang: Lang) -> Option<String>
     ))
 }
 
-/// Each mesh the train's module does not close, at the module it is drawn at:
-/// `m_{3-4} = 2,8333 мм (модуль ступени в задаче не дан: принят по соосности)`.
+/// Each mesh the train's module does not close, at the module it is drawn at, beside the
+/// train's: `m = 1 мм, m_{3-4} = 2,8333 мм (модуль ступени в задаче не дан: принят по
+/// соосности)`.
 fn closing_lines(t: &crate::gears::TrainStudy, lang: Lang) -> Vec<String> {
     let tr_ = &t.spec.train;
+    let mm = unit_in("mm", lang);
     t.closings
         .iter()
         .map(|c| {
             let (s, w) = c.mesh;
             format!(
-                "m_{{{}-{}}} = {} {} ({})",
+                "m = {} {mm}, m_{{{}-{}}} = {} {mm} ({})",
+                format_sig(tr_.module * 1e3, 5, lang),
                 tr_.wheels[s].name,
                 tr_.wheels[w].name,
                 format_sig(c.module * 1e3, 5, lang),
-                unit_in("mm", lang),
                 GearText::ClosingModule.get(lang),
             )
         })

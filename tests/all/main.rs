@@ -37,3 +37,4 @@ mod seed_shaper;
 mod session;
 mod sheet_room;
 mod sheets;
+mod trains;
