@@ -274,8 +274,8 @@ fn seed_values(w: &mut Writer<'_, '_>) {
     let lang = w.lang;
     let scene = w.session.scene();
     let mut rows: Vec<Vec<String>> = Vec::new();
+    // The reason as content: plain text, or label markup with its scripts.
     let mut add =
-        // The reason as content (plain text, or label markup with its scripts).
         |symbol: String, printed: String, exact: String, off: Option<f64>, why: String| {
             rows.push(vec![
                 label(&symbol),
@@ -365,6 +365,11 @@ fn seed_values(w: &mut Writer<'_, '_>) {
             );
         }
     }
+    seed_table(w, &rows);
+}
+
+/// The table of the source's values the project does not reproduce (nothing without rows).
+fn seed_table(w: &mut Writer<'_, '_>, rows: &[Vec<String>]) {
     if rows.is_empty() {
         return;
     }
@@ -387,7 +392,7 @@ fn seed_values(w: &mut Writer<'_, '_>) {
             Align::Left,
         ],
         &header,
-        &rows,
+        rows,
     );
 }
 
