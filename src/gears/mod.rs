@@ -14,6 +14,7 @@
 //! a_w = 180.79 mm (exact 179.18) and ε_α = 1.14 (exact 1.1637), and lays off "p = 14.13 mm".
 
 pub mod blocking;
+mod differential;
 mod generate;
 mod involute;
 mod mesh;
@@ -24,14 +25,20 @@ mod scheme;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_closing;
+#[cfg(test)]
 mod tests_limits;
 #[cfg(test)]
 mod tests_train;
 mod trace;
 mod train;
+mod train_layout;
+mod train_notes;
 mod train_rank;
+mod train_study;
 mod triangles;
 
+pub use differential::Differential;
 pub use generate::{generate, Generation, DETAIL_LETTER};
 pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
 pub use mesh::LAMBDA_MM;
@@ -39,6 +46,9 @@ pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
 pub use rows::PairSeed;
 pub use train::{Mesh, Stage, Train, TrainError, TrainMobility, Wheel};
+pub use train_layout::Closing;
+pub use train_notes::SeedStage;
+pub use train_study::{train_study, PlanetarySpec, TrainSeed, TrainStudy};
 
 use crate::scale::Scale;
 use thiserror::Error;
@@ -328,270 +338,6 @@ impl GearStudy {
         }
         if let Some(t) = &self.train {
             out.extend(t.notes());
-        }
-        out
-    }
-}
-
-/// A planetary (or ordinary) train as a scene gives it (`[planetary]`).
-#[derive(Debug, Clone, PartialEq)]
-pub struct PlanetarySpec {
-    /// The train.
-    pub train: Train,
-    /// The input's speed, rpm (signed), when given.
-    pub n_input: Option<f64>,
-    /// The required output speed, rpm (magnitude), when given.
-    pub n_output: Option<f64>,
-    /// The number of satellites k (neighbour condition), when given.
-    pub satellites: Option<u32>,
-}
-
-/// The train studied: Willis, the stages, the triangles.
-#[derive(Debug, Clone, PartialEq)]
-pub struct TrainStudy {
-    /// The spec.
-    pub spec: PlanetarySpec,
-    /// ω of every shaft for ω_in = 1 (Willis).
-    pub willis: Vec<f64>,
-    /// u_in,out by Willis.
-    pub ratio: f64,
-    /// u by the textbook's stages, when the train is a chain of stages.
-    pub stages: Option<f64>,
-    /// The velocity triangles.
-    pub triangles: triangles::Triangles,
-    /// With n_input and n_output: the train whose first fixed-axis mesh has the ratio the
-    /// required |u| = n_in/n_out asks for (the textbook's route before the tooth choice),
-    /// studied alike.
-    pub required: Option<Box<TrainStudy>>,
-}
-
-/// The input's ω the triangles are drawn for, rad/s: n_input·π/30, or 1 rad/s (per unit
-/// input) when the scene gives no speed.
-fn omega_in(spec: &PlanetarySpec) -> f64 {
-    spec.n_input
-        .map_or(1.0, |n| n * std::f64::consts::PI / 30.0)
-}
-
-/// Carry out the train study.
-///
-/// # Errors
-/// A [`TrainError`].
-pub fn train_study(
-    spec: &PlanetarySpec,
-    ctx: &crate::construct::Context,
-) -> Result<TrainStudy, TrainError> {
-    let t = &spec.train;
-    let willis = t.willis()?;
-    let ratio = t.ratio()?;
-    // The stage the textbook solves for: the first fixed-axis mesh (a satellite's teeth are
-    // bound by coaxiality). A design that cannot be laid out is left out.
-    let required = match (spec.n_input, spec.n_output, t.fixed_axis_mesh()) {
-        (Some(n_in), Some(n_out), Some(mesh)) if n_in != 0.0 => t
-            .with_ratio(mesh, (n_in / n_out).abs())
-            .and_then(|train| {
-                let design = PlanetarySpec {
-                    train,
-                    n_output: None,
-                    ..spec.clone()
-                };
-                train_study(&design, ctx)
-            })
-            .ok()
-            .map(Box::new),
-        _ => None,
-    };
-    Ok(TrainStudy {
-        spec: spec.clone(),
-        willis,
-        ratio,
-        stages: t.by_stages(),
-        triangles: triangles::triangles(t, omega_in(spec), ctx)?,
-        required,
-    })
-}
-
-impl TrainStudy {
-    /// `u_<in>_<out>` by formula (the stages against Willis) and by the triangles; with
-    /// n_input, ω of every shaft read off the plan of angular velocities.
-    pub fn rows(&self) -> Vec<crate::check::Row> {
-        use crate::check::{Method, Symbol};
-        use rows::row;
-        let t = &self.spec.train;
-        let subject = format!("{}_{}", t.shafts[t.input], t.shafts[t.output]);
-        let mut out = Vec::new();
-        let ratio_rows = |t: &TrainStudy, subject: &str| {
-            let at = |method, graphical| {
-                row(
-                    Symbol::GearRatio,
-                    subject,
-                    method,
-                    graphical,
-                    t.ratio,
-                    t.ratio.abs(),
-                )
-            };
-            t.stages
-                .map(|s| at(Method::Formula, s))
-                .into_iter()
-                .chain([at(Method::Triangles, t.triangles.ratio)])
-        };
-        out.extend(ratio_rows(self, &subject));
-        if let Some(r) = &self.required {
-            out.extend(ratio_rows(r, &format!("{subject}_req")));
-        }
-        if self.spec.n_input.is_some() {
-            let w_in = omega_in(&self.spec);
-            let scale = self.willis.iter().fold(0.0_f64, |a, w| a.max(w.abs())) * w_in.abs();
-            for (k, name) in t.shafts.iter().enumerate() {
-                out.push(row(
-                    Symbol::AngularVelocity,
-                    name,
-                    Method::Triangles,
-                    self.triangles.omega[k],
-                    self.willis[k] * w_in,
-                    scale,
-                ));
-            }
-        }
-        out
-    }
-
-    /// The notes: the inversion table, the speeds, the required ratio and the best tooth
-    /// numbers of the first mesh for it, the neighbour condition.
-    pub fn notes(&self) -> Vec<String> {
-        let num = |x: f64, s| crate::scale::format_sig(x, s, crate::scale::Lang::En);
-        let t = &self.spec.train;
-        let mut out = Vec::new();
-        let n_in = self.spec.n_input.unwrap_or(1.0);
-        if let Ok(inv) = t.inversion() {
-            let cells: Vec<String> = inv
-                .iter()
-                .map(|(s, w, r)| format!("{s}: {} → {}", num(w * n_in, 6), num(r * n_in, 6)))
-                .collect();
-            out.push(format!(
-                "train: inversion (Willis): n before → n − n_H after stopping the carrier{}: {}",
-                if self.spec.n_input.is_some() {
-                    ", rpm"
-                } else {
-                    " (per unit input)"
-                },
-                cells.join("; ")
-            ));
-        }
-        let m = t.mobility();
-        out.push(format!(
-            "train: W = 3n − 2p5 − p4 = 3·{} − 2·{} − {} = {}{}",
-            m.n,
-            m.p5,
-            m.p4,
-            m.w(),
-            match t.second {
-                Some((k, w)) => format!(
-                    " (a differential: the inputs {} and {}, n = {} and {} rpm)",
-                    t.shafts[t.input],
-                    t.shafts[k],
-                    num(n_in, 6),
-                    num(w * n_in, 6)
-                ),
-                None => String::new(),
-            }
-        ));
-        out.push(format!(
-            "train: u = {} by Willis{}; the output turns {} the input",
-            num(self.ratio, 7),
-            self.stages
-                .map_or(String::new(), |s| format!(", {} by the stages", num(s, 7))),
-            if self.ratio < 0.0 { "against" } else { "with" }
-        ));
-        if let (Some(n1), Some(n_out)) = (self.spec.n_input, self.spec.n_output) {
-            let required = (n1 / n_out).abs();
-            out.push(format!(
-                "train: required |u| = {}/{} = {}; the tooth numbers give {} (n_out = {} rpm, {} %)",
-                num(n1.abs(), 6),
-                num(n_out, 6),
-                num(required, 6),
-                num(self.ratio.abs(), 6),
-                num(n1.abs() / self.ratio.abs(), 6),
-                num((self.ratio.abs() / required - 1.0) * 100.0, 3)
-            ));
-            if let Some(m) = t.fixed_axis_mesh().map(|k| t.meshes[k]) {
-                let (a, b) = (&t.wheels[m.0], &t.wheels[m.1]);
-                let now = b.z / a.z;
-                let want = now * required / self.ratio.abs();
-                let best = train::best_pairs(want, 17, 40, 4);
-                let list: Vec<String> = best
-                    .iter()
-                    .map(|(z1, z2, e)| {
-                        format!(
-                            "{z2}/{z1} ({} %, n_out = {} rpm)",
-                            num(e * 100.0, 3),
-                            num(n_out / (1.0 + e), 6)
-                        )
-                    })
-                    .collect();
-                out.push(format!(
-                    "train: mesh {}–{} needs z{}/z{} = {}: best {} (now {}/{} = {})",
-                    a.name,
-                    b.name,
-                    b.name,
-                    a.name,
-                    num(want, 6),
-                    list.join(", "),
-                    b.z,
-                    a.z,
-                    num(now, 5)
-                ));
-            }
-        }
-        if let Some(k) = self.spec.satellites {
-            for (w, chord, da) in t.neighbour(k).unwrap_or_default() {
-                out.push(format!(
-                    "train: neighbour condition, k = {k}: 2·a·sin(π/k) = {} mm {} d_a{} = {} mm",
-                    num(chord * 1e3, 5),
-                    if chord > da { ">" } else { "≤ (fails:)" },
-                    t.wheels[w].name,
-                    num(da * 1e3, 5)
-                ));
-            }
-            if let Some(a) = t.assembly(k) {
-                let z = &t.wheels[a.central];
-                let b = t.fixed.map_or("", |f| t.shafts[f].as_str());
-                let frac = |(n, d): (i128, i128)| match (n, d) {
-                    (n, 1) if n >= 0 => n.to_string(),
-                    (n, 1) => format!("(−{})", -n),
-                    (n, d) if n >= 0 => format!("{n}/{d}"),
-                    (n, d) => format!("(−{}/{d})", -n),
-                };
-                let value = frac(a.value);
-                let textbook = match a.p {
-                    Some(p) => format!("whole for p = {p}"),
-                    None => "never whole".to_string(),
-                };
-                let block = a.block.map_or(String::new(), |v| {
-                    format!(
-                        "; for identical blocks, z{}·u{}H·(z_f/gcd(z_g, z_f))/k = {}",
-                        z.name,
-                        z.name,
-                        frac(v)
-                    )
-                });
-                let verdict = if a.fits() {
-                    format!("the {k} satellites assemble spaced equally")
-                } else {
-                    let fit: Vec<String> = (2..=8)
-                        .filter(|&j| t.admits(j))
-                        .map(|j| j.to_string())
-                        .collect();
-                    format!(
-                        "fails: {k} satellites cannot be spaced equally; k = {} can (assembly and neighbour)",
-                        fit.join(", ")
-                    )
-                };
-                out.push(format!(
-                    "train: assembly condition, k = {k}: z{}·u{}H^({b})/k = {value}, (1 + kp)·{value} {textbook} (the textbook's){block}: {verdict}",
-                    z.name, z.name
-                ));
-            }
         }
         out
     }

@@ -6,7 +6,7 @@ use super::*;
 use proptest::prelude::*;
 
 /// A train from (shaft, wheel name, z, internal) and meshes by wheel names.
-fn train(
+pub(super) fn train(
     wheels: &[(&str, &str, u32, bool)],
     meshes: &[(&str, &str)],
     io: (&str, &str),
@@ -110,7 +110,7 @@ fn seed000_reducer_by_willis_stages_and_triangles() {
 
 /// PZ2 example 1 as printed (L546): sun 1, satellite block 2–3, wheel 4 fixed, carrier H
 /// carrying wheel 5; 5–6–7 on fixed axes, 7 internal.
-fn pz2_example_1() -> Train {
+pub(super) fn pz2_example_1() -> Train {
     train(
         &[
             ("A", "1", 88, false),
@@ -123,6 +123,27 @@ fn pz2_example_1() -> Train {
         ],
         &[("1", "2"), ("3", "4"), ("5", "6"), ("6", "7")],
         ("A", "E"),
+        Some("F"),
+        Some("H"),
+        &["S"],
+    )
+}
+
+/// PZ2 example 2 as printed (L588, L603–L607): 1–2 on fixed axes into the sun 3 (2 and 3 on
+/// one shaft), the satellite block 4–5, wheel 6 fixed, the carrier H out; every mesh
+/// external.
+pub(super) fn pz2_example_2() -> Train {
+    train(
+        &[
+            ("A", "1", 13, false),
+            ("B", "2", 52, false),
+            ("B", "3", 15, false),
+            ("S", "4", 33, false),
+            ("S", "5", 11, false),
+            ("F", "6", 45, false),
+        ],
+        &[("1", "2"), ("3", "4"), ("5", "6")],
+        ("A", "H"),
         Some("F"),
         Some("H"),
         &["S"],
@@ -154,29 +175,15 @@ fn pz2_worked_examples_by_willis() {
     let ex1 = pz2_example_1();
     assert!((ex1.ratio().unwrap() - 20.0).abs() < 1e-12);
     assert!(triangles::triangles(&ex1, 1.0, &ctx(0.0)).is_err());
-    // Example 2 as printed: 32, not the printed 20 (33·45/(15·11) = 9, not 6).
-    let ex2 = train(
-        &[
-            ("A", "1", 13, false),
-            ("H", "2", 52, false),
-            ("B", "3", 15, false),
-            ("S", "4", 33, false),
-            ("S", "5", 11, false),
-            ("F", "6", 45, false),
-        ],
-        &[("1", "2"), ("3", "4"), ("5", "6")],
-        ("A", "B"),
-        Some("F"),
-        Some("H"),
-        &["S"],
-    );
-    // u1H = u12·u3H: the carrier carries wheel 2; u_1_3 = ω1/ω3.
+    // Example 2 as printed (not coaxial, Willis only): u1H = u12·u3H = −4·(1 − 9) = 32, not
+    // the printed 20 (33·45/(15·11) = 9, not 6).
+    let ex2 = pz2_example_2();
     let w = ex2.willis().unwrap();
-    let u1h = w[ex2.input] / w[ex2.carrier.unwrap()];
-    assert!((u1h - (-4.0)).abs() < 1e-12);
-    let u3h = w[ex2.output] / w[ex2.carrier.unwrap()];
-    assert!((u3h - (1.0 - 9.0)).abs() < 1e-12 && ((u1h / u3h).abs() - 0.5).abs() < 1e-12);
-    let _ = u3h;
+    let (h, b) = (ex2.carrier.unwrap(), ex2.wheels[2].shaft);
+    assert!((w[ex2.input] / w[b] - (-4.0)).abs() < 1e-12);
+    assert!((w[b] / w[h] - (1.0 - 9.0)).abs() < 1e-12);
+    assert!((ex2.ratio().unwrap() - 32.0).abs() < 1e-12);
+    assert!(triangles::triangles(&ex2, 1.0, &ctx(0.0)).is_err());
 }
 
 #[test]
@@ -188,60 +195,6 @@ fn a_train_that_is_not_determined_is_refused() {
         matches!(e, TrainError::Mobility { mobility, inputs: 1 } if mobility.w() == 2),
         "{e}"
     );
-}
-
-/// PZ2 examples 1 and 2 as the seed works them (L546–L621): W = 3n − 2p₅ − p₄ = 1, and the
-/// ratio by Willis, by the stages and by the velocity triangles. As printed with one module
-/// neither is coaxial (88 + 48 ≠ 4 + 44; 15 + 33 ≠ 11 + 45) and the triangles are refused;
-/// with the satellite's second mesh at the module that closes the carrier's arm
-/// (m′(z₃ + z₄) = m(z₁ + z₂)) they are drawn and read Willis's ratio to 1e-9.
-#[test]
-fn pz2_examples_1_and_2_by_the_triangles_with_a_stage_of_another_module() {
-    let m = 0.002;
-    let with_module = |t: &mut Train, names: [&str; 2], module: f64| {
-        for w in t
-            .wheels
-            .iter_mut()
-            .filter(|w| names.contains(&w.name.as_str()))
-        {
-            w.module = Some(module);
-        }
-    };
-    // Example 1: u₁₇ = (1 − 6)·(−4) = 20.
-    let mut ex1 = pz2_example_1();
-    // Example 2: 1–2 on fixed axes into the sun 3 (2 and 3 on one shaft), satellite block
-    // 4–5, wheel 6 fixed, carrier H out: u₁H = −4·(1 − 9) = 32 (the printed 20 is an erratum).
-    let mut ex2 = train(
-        &[
-            ("A", "1", 13, false),
-            ("B", "2", 52, false),
-            ("B", "3", 15, false),
-            ("S", "4", 33, false),
-            ("S", "5", 11, false),
-            ("F", "6", 45, false),
-        ],
-        &[("1", "2"), ("3", "4"), ("5", "6")],
-        ("A", "H"),
-        Some("F"),
-        Some("H"),
-        &["S"],
-    );
-    let ex1_mobility = train::TrainMobility { n: 5, p5: 5, p4: 4 };
-    let ex2_mobility = train::TrainMobility { n: 4, p5: 4, p4: 3 };
-    assert_eq!((ex1.mobility(), ex1.mobility().w()), (ex1_mobility, 1));
-    assert_eq!((ex2.mobility(), ex2.mobility().w()), (ex2_mobility, 1));
-    for t in [&ex1, &ex2] {
-        assert!(triangles::triangles(t, 1.0, &ctx(0.0)).is_err());
-    }
-    with_module(&mut ex1, ["3", "4"], m * (88.0 + 48.0) / (4.0 + 44.0));
-    with_module(&mut ex2, ["5", "6"], m * (15.0 + 33.0) / (11.0 + 45.0));
-    for (t, u) in [(&ex1, 20.0), (&ex2, 32.0)] {
-        let willis = t.ratio().unwrap();
-        assert!((willis - u).abs() < 1e-12 * u, "{willis}");
-        assert!((t.by_stages().unwrap() - u).abs() < 1e-12 * u);
-        let tri = triangles::triangles(t, 1.0, &ctx(0.0)).unwrap();
-        assert!((tri.ratio - willis).abs() < 1e-9 * u, "{}", tri.ratio);
-    }
 }
 
 /// A differential (W = 2, seed 002 L419): the James stage with its ring freed, the sun and
@@ -356,7 +309,7 @@ fn blocks_fit(za: u32, a_ring: bool, zg: u32, zf: u32, zb: u32, b_ring: bool, k:
 }
 
 /// PZ2 example 3's James stage alone: sun 3 in, satellite 4, ring 5 fixed, carrier out.
-fn pz2_james() -> Train {
+pub(super) fn pz2_james() -> Train {
     train(
         &[
             ("A", "3", 20, false),
@@ -469,6 +422,8 @@ fn the_required_stage_is_a_fixed_axis_mesh_or_none() {
         n_input: Some(1000.0),
         n_output: Some(190.0),
         satellites: Some(4),
+        closing: false,
+        seed: TrainSeed::default(),
     };
     let s = train_study(&spec(james), &ctx(0.0)).unwrap();
     assert!(s.required.is_none() && (s.ratio - 5.0).abs() < 1e-12);

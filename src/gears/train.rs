@@ -26,9 +26,9 @@ pub struct Wheel {
     pub shaft: usize,
     /// An internal (ring) gear.
     pub internal: bool,
-    /// The module of its meshes when not the train's, m: a stage of another module, as the
-    /// textbook's trains whose tooth sums do not close with one module (PZ2 examples 1 and 2)
-    /// are drawn coaxial.
+    /// The module of its meshes when not the train's, m: a stage of another module (given,
+    /// or the one [`Train::closing`] takes for a stage whose tooth sums do not close with one
+    /// module, PZ2 examples 1 and 2).
     pub module: Option<f64>,
 }
 
@@ -159,7 +159,7 @@ fn still(moving: &[String]) -> String {
 impl Train {
     /// r = m z/2 of wheel `w` at its module, m.
     pub fn radius(&self, w: usize) -> f64 {
-        self.wheels[w].module.unwrap_or(self.module) * self.wheels[w].z / 2.0
+        self.wheel_module(w) * self.wheels[w].z / 2.0
     }
 
     /// The mobility by Chebyshev's formula: the shafts but the fixed one move, each in one
@@ -337,7 +337,7 @@ impl Train {
 
     /// With the carrier stopped, the meshes (x, y) from shaft `a` through the satellites to
     /// shaft `f`, in order; `None` when a does not reach f through satellites.
-    fn stopped_path(&self, a: usize, f: usize) -> Option<Vec<(usize, usize)>> {
+    pub(super) fn stopped_path(&self, a: usize, f: usize) -> Option<Vec<(usize, usize)>> {
         let n = self.shafts.len();
         let mut from: Vec<Option<(usize, usize)>> = vec![None; n];
         let mut reached = vec![false; n];
@@ -473,7 +473,7 @@ impl Train {
         for &s in &self.satellites {
             let chord = 2.0 * (ys[s] - ys[h]).abs() * (std::f64::consts::PI / f64::from(k)).sin();
             for (w, _) in self.wheels.iter().enumerate().filter(|(_, w)| w.shaft == s) {
-                out.push((w, chord, 2.0 * self.radius(w) + 2.0 * self.module));
+                out.push((w, chord, 2.0 * self.radius(w) + 2.0 * self.wheel_module(w)));
             }
         }
         Some(out)
@@ -500,112 +500,6 @@ impl Train {
             .zip(&w)
             .map(|(s, v)| (s.clone(), *v, v - wh))
             .collect())
-    }
-
-    /// The heights of the axes in the scheme (the input's at 0, each mesh pole above the
-    /// driving wheel's axis, satellites inside rings, the carrier coaxial with the central
-    /// wheels of its satellites), m, and of every mesh pole.
-    ///
-    /// # Errors
-    /// [`TrainError::Layout`] when a shaft cannot be placed or two meshes disagree.
-    pub fn layout(&self) -> Result<(Vec<f64>, Vec<f64>), TrainError> {
-        let n = self.shafts.len();
-        let mut y: Vec<Option<f64>> = vec![None; n];
-        y[self.input] = Some(0.0);
-        for pass in 0..2 * n + 2 {
-            if let Some(h) = self.carrier {
-                if y[h].is_none() {
-                    // Coaxial with a placed central wheel that meshes a satellite.
-                    for m in &self.meshes {
-                        for (a, b) in [(m.0, m.1), (m.1, m.0)] {
-                            let (sa, sb) = (self.wheels[a].shaft, self.wheels[b].shaft);
-                            if self.is_satellite(sb) && !self.is_satellite(sa) && sa != h {
-                                if let Some(ya) = y[sa] {
-                                    y[h] = Some(ya);
-                                }
-                            }
-                        }
-                    }
-                }
-            }
-            for m in &self.meshes {
-                for (a, b) in [(m.0, m.1), (m.1, m.0)] {
-                    let (wa, wb) = (&self.wheels[a], &self.wheels[b]);
-                    // From a satellite to a central wheel once the carrier's axis is set
-                    // (a later pass), unless nothing else sets it.
-                    let to_central = self.is_satellite(wa.shaft) && !self.is_satellite(wb.shaft);
-                    let carrier_unset = self.carrier.is_some_and(|h| y[h].is_none());
-                    if to_central && carrier_unset && pass < n {
-                        continue;
-                    }
-                    if let (Some(ya), None) = (y[wa.shaft], y[wb.shaft]) {
-                        let (ra, rb) = (self.radius(a), self.radius(b));
-                        // A ring's centre lies below the pole, as does a wheel inside a ring.
-                        let up = if wb.internal || wa.internal {
-                            ya + ra - rb
-                        } else {
-                            ya + ra + rb
-                        };
-                        // From a satellite to a central wheel: the side that sets it on the
-                        // carrier's axis (the David train's second external mesh turns back).
-                        let down = 2.0 * ya - up;
-                        let axis = self.carrier.and_then(|h| y[h]).filter(|_| to_central);
-                        y[wb.shaft] = Some(match axis {
-                            Some(c) if (down - c).abs() < (up - c).abs() => down,
-                            _ => up,
-                        });
-                    }
-                }
-            }
-        }
-        let ys: Vec<f64> = y
-            .iter()
-            .enumerate()
-            .map(|(k, v)| {
-                v.ok_or_else(|| {
-                    TrainError::Layout(format!("shaft {} is not connected", self.shafts[k]))
-                })
-            })
-            .collect::<Result<_, _>>()?;
-        // Coaxiality: every central wheel of a satellite turns about the carrier's axis.
-        if let Some(h) = self.carrier {
-            for m in &self.meshes {
-                for (a, b) in [(m.0, m.1), (m.1, m.0)] {
-                    let (sa, sb) = (self.wheels[a].shaft, self.wheels[b].shaft);
-                    if self.is_satellite(sb) && !self.is_satellite(sa) {
-                        let off = (ys[sa] - ys[h]).abs();
-                        if off > 1e-9 * self.module.max(off) {
-                            return Err(TrainError::Layout(format!(
-                                "wheel {} meshes a satellite but its axis is {} mm off the carrier's (the coaxiality condition fails)",
-                                self.wheels[a].name,
-                                off * 1e3
-                            )));
-                        }
-                    }
-                }
-            }
-        }
-        let mut poles = Vec::new();
-        for m in &self.meshes {
-            let (wa, wb) = (&self.wheels[m.0], &self.wheels[m.1]);
-            let (ya, yb) = (ys[wa.shaft], ys[wb.shaft]);
-            let (ra, rb) = (self.radius(m.0), self.radius(m.1));
-            let pole = [ya + ra, ya - ra]
-                .into_iter()
-                .find(|p| ((p - yb).abs() - rb).abs() <= 1e-9 * (ra + rb))
-                .ok_or_else(|| {
-                    TrainError::Layout(format!(
-                        "wheels {} and {} are not coaxial with the rest (their axes are {} mm apart, their radii {} and {} mm)",
-                        wa.name,
-                        wb.name,
-                        (ya - yb).abs() * 1e3,
-                        ra * 1e3,
-                        rb * 1e3
-                    ))
-                })?;
-            poles.push(pole);
-        }
-        Ok((ys, poles))
     }
 }
 

@@ -43,14 +43,65 @@ pub const PLAN_REACH_MM: f64 = 100.0;
 /// the height an A3 sheet leaves a drawing beside its data and table.
 const TRIANGLES_SPAN_MM: f64 = 180.0;
 
-/// The gap between the kinematic scheme and the leftmost velocity, mm.
-const SCHEME_GAP_MM: f64 = 30.0;
+/// The gap between the kinematic scheme (its rightmost line, support or name) and the
+/// leftmost velocity, mm.
+const SCHEME_GAP_MM: f64 = 10.0;
 
 /// How far the reading line runs past the outermost intercepts, mm.
 const PLAN_OVERHANG_MM: f64 = 8.0;
 
 /// How far the dimension H stands past the end of the reading line, mm.
 const PLAN_DIMENSION_MM: f64 = 4.0;
+
+/// The height where a given shaft's velocity is laid off: its first pole, or a carrier's
+/// first satellite's axis; `None` when it has neither off its own axis.
+fn given_height(train: &Train, k: usize, (ys, poles): (&[f64], &[f64])) -> Option<f64> {
+    train
+        .meshes
+        .iter()
+        .zip(poles)
+        .find(|(m, _)| train.wheels[m.0].shaft == k || train.wheels[m.1].shaft == k)
+        .map(|(_, p)| *p)
+        .or_else(|| (Some(k) == train.carrier).then(|| train.satellites.first().map(|&s| ys[s]))?)
+        .filter(|h| (h - ys[k]).abs() > 1e-12)
+}
+
+/// Heights on the drawing: a height y (m) is drawn (y − lo)/μ_l above the lowest.
+#[derive(Debug, Clone, Copy)]
+struct Heights {
+    lo: f64,
+    ml: f64,
+}
+
+impl Heights {
+    /// The drawn height of `y`, mm.
+    fn y(&self, y: f64) -> f64 {
+        (y - self.lo) / self.ml
+    }
+}
+
+/// A line given by two drawn points: its x at the drawn height `y`.
+fn x_at(l: &(DVec2, DVec2), y: f64) -> f64 {
+    let (a, b) = *l;
+    a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y)
+}
+
+/// The plan of angular velocities as drawn: its pole, the pole's foot on the reading line
+/// (the intercepts' origin), the pole distance H, the reading line's right end.
+struct Plan {
+    pole: DVec2,
+    foot: DVec2,
+    h: f64,
+    right: f64,
+}
+
+/// What the links' lines and rays read: ω of every shaft, the input's and the output's
+/// intercepts (shaft, drawn, read, mm), and the leftmost velocity drawn.
+struct Readings {
+    omega: Vec<f64>,
+    ends: Vec<(usize, f64, f64)>,
+    leftmost: f64,
+}
 
 /// Construct the velocity triangles of `train` for the input turning at `omega_in` rad/s
 /// in `ctx`.
@@ -74,45 +125,123 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
     // its table fit an A3 sheet.
     let mu_l =
         Scale::round_for(span, TRIANGLES_SPAN_MM, Quantity::Length).ok_or_else(|| bad("μ_l"))?;
-    let n = train.shafts.len();
-    // The input's pole: the first mesh of the input shaft.
-    let (first, _) = train
-        .meshes
-        .iter()
-        .enumerate()
-        .find(|(_, m)| {
-            train.wheels[m.0].shaft == train.input || train.wheels[m.1].shaft == train.input
-        })
-        .ok_or_else(|| bad("the input meshes nothing"))?;
+    // The input's pole: the first mesh of the input shaft (a carrier's: its satellite's axis).
+    let pin = given_height(train, train.input, (&ys, &poles))
+        .ok_or_else(|| bad("the input has no pole off its axis"))?;
     if !(omega_in.is_finite() && omega_in != 0.0) {
         return Err(bad("the input's ω is 0 or not finite"));
     }
-    let v_in = (poles[first] - ys[train.input]).abs().max(train.module) * omega_in.abs();
+    let v_in = (pin - ys[train.input]).abs().max(train.module) * omega_in.abs();
     let mu_v = Scale::round_for(v_in, 60.0, Quantity::Velocity).ok_or_else(|| bad("μ_v"))?;
     let mut rec = Recorder::in_context("velocity triangles", mu_v, ctx);
     let (ml, mv) = (mu_l.value(), mu_v.value());
-    let yy = |y: f64| (y - lo) / ml;
+    let heights = Heights { lo, ml };
     // The axis of heights.
     rec.draw(
         "the axis of heights",
         Item::Segment(Segment::new(
             DVec2::new(0.0, -5.0),
-            DVec2::new(0.0, yy(hi) + 5.0),
+            DVec2::new(0.0, heights.y(hi) + 5.0),
         )),
         Role::Axis,
         &[],
     );
-    // Each link's distribution line as two drawn points (x = v/μ_v, y = height/μ_l).
+    let lines = distribution_lines(train, (&ys, &poles), heights, (pin, omega_in, mv))?;
+    // The slope of each line (its v over its height, drawn mm per mm): a ray's intercept is
+    // H times it.
+    let slopes: Vec<f64> = lines
+        .iter()
+        .map(|(a, b)| (b.x - a.x) / (b.y - a.y))
+        .collect();
+    let plan_h = plan_distance(&slopes, (mv, ml));
+    let scale_w =
+        Scale::new(mv / (ml * plan_h), Quantity::AngularVelocity).ok_or_else(|| bad("μ_ω"))?;
+    let plan = draw_plan(&mut rec, &slopes, plan_h, heights.y(hi) + 10.0 + plan_h);
+    // The heights: every axis and mesh pole, marked on the axis of heights.
+    for (k, y) in ys.iter().enumerate() {
+        rec.draw(
+            format!("the axis of {}", train.shafts[k]),
+            Item::Segment(Segment::new(
+                DVec2::new(-3.0, heights.y(*y)),
+                DVec2::new(3.0, heights.y(*y)),
+            )),
+            Role::Construction,
+            &[],
+        );
+    }
+    let read = draw_links(
+        &mut rec,
+        train,
+        (&lines, &slopes),
+        (&ys, &poles),
+        heights,
+        (&plan, scale_w),
+    );
+    // A resolution that reads the input's or the output's intercept as 0 leaves no ratio.
+    if read
+        .ends
+        .iter()
+        .any(|(_, drawn, read)| *read == 0.0 && *drawn > 0.0)
+    {
+        if let Some((k, drawn, _)) = read
+            .ends
+            .iter()
+            .filter(|(_, drawn, _)| *drawn > 0.0)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+        {
+            return Err(TrainError::Unreadable {
+                shaft: train.shafts[*k].clone(),
+                drawn_mm: *drawn,
+                resolution_mm: ctx.drafting.resolution_mm(),
+            });
+        }
+    }
+    let (wi, wo) = (read.omega[train.input], read.omega[train.output]);
+    if wo.abs() < 1e-300 {
+        return Err(TrainError::OutputAtRest);
+    }
+    // The kinematic scheme to the left of the velocities as drawn, at their heights.
+    super::scheme::draw_scheme(
+        &mut rec,
+        train,
+        (&ys, &poles),
+        |y| heights.y(y),
+        ml,
+        read.leftmost - SCHEME_GAP_MM,
+    );
+    Ok(Triangles {
+        scale_l: mu_l,
+        scale_v: mu_v,
+        plan_h,
+        scale_w,
+        scale_w_at: DVec2::new(plan.right + PLAN_OVERHANG_MM, plan.foot.y),
+        figure: rec.finish(),
+        omega: read.omega,
+        ratio: wi / wo,
+    })
+}
+
+/// Each link's distribution line as two drawn points (x = v/μ_v, y = its drawn height): the
+/// fixed shaft's on the axis; the input's through its axis and the velocity ω_in·r at its
+/// pole `pin` (ω_in, μ_v); a differential's second input's likewise; every other
+/// link's through two known points at distinct heights (its axis, a pole shared with a link
+/// already drawn, a satellite's axis on the carrier's line).
+///
+/// # Errors
+/// [`TrainError::Layout`] when a link's line is not fixed.
+fn distribution_lines(
+    train: &Train,
+    (ys, poles): (&[f64], &[f64]),
+    heights: Heights,
+    (pin, omega_in, mv): (f64, f64, f64),
+) -> Result<Vec<(DVec2, DVec2)>, TrainError> {
+    let n = train.shafts.len();
+    let yy = |y: f64| heights.y(y);
     let mut lines: Vec<Option<(DVec2, DVec2)>> = vec![None; n];
-    let at = |l: &(DVec2, DVec2), y: f64| -> f64 {
-        let (a, b) = *l;
-        a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y)
-    };
     if let Some(f) = train.fixed {
         lines[f] = Some((DVec2::new(0.0, yy(ys[f])), DVec2::new(0.0, yy(ys[f]) + 1.0)));
     }
     // Given: the input's pole velocity ω_in·r.
-    let pin = poles[first];
     lines[train.input] = Some((
         DVec2::new(0.0, yy(ys[train.input])),
         DVec2::new((pin - ys[train.input]) * omega_in / mv, yy(pin)),
@@ -120,17 +249,9 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
     // A differential's second input: its line through its axis and the velocity at its
     // first pole (the carrier's: at its first satellite's axis).
     if let Some((k, w)) = train.second {
-        let height = train
-            .meshes
-            .iter()
-            .enumerate()
-            .find(|(_, m)| train.wheels[m.0].shaft == k || train.wheels[m.1].shaft == k)
-            .map(|(i, _)| poles[i])
-            .or_else(|| {
-                (Some(k) == train.carrier).then(|| train.satellites.first().map(|&s| ys[s]))?
-            })
-            .filter(|h| (h - ys[k]).abs() > 1e-12)
-            .ok_or_else(|| bad("the second input has no pole off its axis"))?;
+        let height = given_height(train, k, (ys, poles)).ok_or_else(|| {
+            TrainError::Layout("the second input has no pole off its axis".to_string())
+        })?;
         lines[k] = Some((
             DVec2::new(0.0, yy(ys[k])),
             DVec2::new((height - ys[k]) * w * omega_in / mv, yy(height)),
@@ -150,7 +271,7 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
                 for (a, b) in [(m.0, m.1), (m.1, m.0)] {
                     if train.wheels[a].shaft == k {
                         if let Some(l) = &lines[train.wheels[b].shaft] {
-                            pts.push(DVec2::new(at(l, yy(poles[mi])), yy(poles[mi])));
+                            pts.push(DVec2::new(x_at(l, yy(poles[mi])), yy(poles[mi])));
                         }
                     }
                 }
@@ -158,12 +279,12 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
             if let Some(h) = train.carrier {
                 if sat {
                     if let Some(l) = &lines[h] {
-                        pts.push(DVec2::new(at(l, yy(ys[k])), yy(ys[k])));
+                        pts.push(DVec2::new(x_at(l, yy(ys[k])), yy(ys[k])));
                     }
                 } else if k == h {
                     for &s in &train.satellites {
                         if let Some(l) = &lines[s] {
-                            pts.push(DVec2::new(at(l, yy(ys[s])), yy(ys[s])));
+                            pts.push(DVec2::new(x_at(l, yy(ys[s])), yy(ys[s])));
                         }
                     }
                 }
@@ -176,37 +297,40 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
             }
         }
     }
-    if let Some(k) = lines.iter().position(Option::is_none) {
-        return Err(TrainError::Layout(format!(
-            "the velocities of shaft {} cannot be drawn",
-            train.shafts[k]
-        )));
-    }
-    // The slope of each line (its v over its height, drawn mm per mm): a ray's intercept is
-    // H times it.
-    let slopes: Vec<f64> = lines
-        .iter()
-        .map(|l| l.map_or(0.0, |(a, b)| (b.x - a.x) / (b.y - a.y)))
-        .collect();
+    lines
+        .into_iter()
+        .enumerate()
+        .map(|(k, l)| {
+            l.ok_or_else(|| {
+                TrainError::Layout(format!(
+                    "the velocities of shaft {} cannot be drawn",
+                    train.shafts[k]
+                ))
+            })
+        })
+        .collect()
+}
+
+/// The pole distance H of the plan: the largest of [`PLAN_H`] within the reach whose
+/// μ_ω = μ_v/(μ_l·H) is round; the largest within it otherwise.
+fn plan_distance(slopes: &[f64], (mv, ml): (f64, f64)) -> f64 {
     let steepest = slopes.iter().fold(0.0_f64, |m, s| m.max(s.abs()));
-    // The largest H within the reach whose μ_ω is round; the largest within it otherwise.
     let reach = |h: &f64| steepest * h <= PLAN_REACH_MM;
     let round = |h: &f64| {
         let w = mv / (ml * h);
         Scale::round_for(w, 1.0, Quantity::AngularVelocity)
             .is_some_and(|r| (r.value() - w).abs() <= 1e-9 * w)
     };
-    let plan_h = PLAN_H
+    PLAN_H
         .into_iter()
         .find(|h| reach(h) && round(h))
         .or_else(|| PLAN_H.into_iter().find(reach))
-        .unwrap_or(PLAN_H[PLAN_H.len() - 1]);
-    let scale_w =
-        Scale::new(mv / (ml * plan_h), Quantity::AngularVelocity).ok_or_else(|| bad("μ_ω"))?;
-    let mut omega = vec![0.0; n];
-    // The input's and the output's intercepts (shaft, drawn, read), mm.
-    let mut ends: Vec<(usize, f64, f64)> = Vec::new();
-    let y_ref = yy(hi) + 10.0 + plan_h;
+        .unwrap_or(PLAN_H[PLAN_H.len() - 1])
+}
+
+/// The plan's frame with its reading line at the drawn height `y_ref`: the reading line past
+/// the outermost intercepts, the pole p_ω H below it, its foot 0, and the dimension H.
+fn draw_plan(rec: &mut Recorder, slopes: &[f64], plan_h: f64, y_ref: f64) -> Plan {
     let pole = DVec2::new(0.0, y_ref - plan_h);
     let foot = DVec2::new(0.0, y_ref);
     let (left, right) = slopes.iter().fold((0.0_f64, 0.0_f64), |(l, r), s| {
@@ -257,31 +381,38 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
         &[],
     );
     rec.label(h_dim, "H", 0.5 * (pole + foot), DVec2::new(-side, 0.0));
-    // The heights: every axis and mesh pole, marked on the axis of heights.
-    for (k, y) in ys.iter().enumerate() {
-        let id = rec.draw(
-            format!("the axis of {}", train.shafts[k]),
-            Item::Segment(Segment::new(
-                DVec2::new(-3.0, yy(*y)),
-                DVec2::new(3.0, yy(*y)),
-            )),
-            Role::Construction,
-            &[],
-        );
-        let _ = id;
+    Plan {
+        pole,
+        foot,
+        h: plan_h,
+        right,
     }
-    let mut leftmost = 0.0_f64;
-    for (k, (a, b)) in lines
-        .iter()
-        .enumerate()
-        .filter_map(|(k, l)| l.map(|l| (k, l)))
-    {
+}
+
+/// Each link: the velocities of its poles, its distribution line between its own points
+/// (named at its faster end), and the ray of the plan parallel to it, named and read where
+/// it meets the reading line: ω = intercept·μ_ω, signed by the side.
+fn draw_links(
+    rec: &mut Recorder,
+    train: &Train,
+    (lines, slopes): (&[(DVec2, DVec2)], &[f64]),
+    (ys, poles): (&[f64], &[f64]),
+    heights: Heights,
+    (plan, scale_w): (&Plan, Scale),
+) -> Readings {
+    let yy = |y: f64| heights.y(y);
+    let mut out = Readings {
+        omega: vec![0.0; train.shafts.len()],
+        ends: Vec::new(),
+        leftmost: 0.0,
+    };
+    for (k, line) in lines.iter().enumerate() {
         // The link's own points: its axis and its poles; its line drawn between them.
         let mut hs = vec![yy(ys[k])];
         for (mi, m) in train.meshes.iter().enumerate() {
             if train.wheels[m.0].shaft == k || train.wheels[m.1].shaft == k {
                 hs.push(yy(poles[mi]));
-                let tip = DVec2::new(at(&(a, b), yy(poles[mi])), yy(poles[mi]));
+                let tip = DVec2::new(x_at(line, yy(poles[mi])), yy(poles[mi]));
                 if tip.x.abs() > 1e-9 {
                     rec.draw(
                         "the velocity of the pole",
@@ -304,10 +435,10 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
                 (l.min(*v), h.max(*v))
             });
         let (pa, pb) = (
-            DVec2::new(at(&(a, b), ylo), ylo),
-            DVec2::new(at(&(a, b), yhi), yhi),
+            DVec2::new(x_at(line, ylo), ylo),
+            DVec2::new(x_at(line, yhi), yhi),
         );
-        leftmost = leftmost.min(pa.x).min(pb.x);
+        out.leftmost = out.leftmost.min(pa.x).min(pb.x);
         let id = rec.draw(
             format!("the distribution line of {}", train.shafts[k]),
             Item::Segment(Segment::new(pa, pb)),
@@ -325,10 +456,10 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
         rec.label(id, &train.shafts[k], at, toward);
         // The ray of the plan parallel to it, to the reading line, named by the link where
         // it meets it; the intercept marked there.
-        let hit = DVec2::new(slopes[k] * plan_h, y_ref);
+        let hit = DVec2::new(slopes[k] * plan.h, plan.foot.y);
         let ray = rec.draw(
             format!("the ray of ω of {}", train.shafts[k]),
-            Item::Segment(Segment::new(pole, hit)),
+            Item::Segment(Segment::new(plan.pole, hit)),
             Role::Construction,
             &[],
         );
@@ -344,51 +475,12 @@ pub fn triangles(train: &Train, omega_in: f64, ctx: &Context) -> Result<Triangle
             Role::Construction,
             &[ray],
         );
-        let read = rec.measure(foot, hit);
+        let read = rec.measure(plan.foot, hit);
         if k == train.input || k == train.output {
-            ends.push((k, read.drawn_mm, read.read_mm));
+            out.ends.push((k, read.drawn_mm, read.read_mm));
         }
         // ω = intercept · μ_ω, μ_ω = μ_v/(μ_l H), signed by the side.
-        omega[k] = hit.x.signum() * read.read_mm * scale_w.value();
+        out.omega[k] = hit.x.signum() * read.read_mm * scale_w.value();
     }
-    // A resolution that reads the input's or the output's intercept as 0 leaves no ratio.
-    if ends
-        .iter()
-        .any(|(_, drawn, read)| *read == 0.0 && *drawn > 0.0)
-    {
-        if let Some((k, drawn, _)) = ends
-            .iter()
-            .filter(|(_, drawn, _)| *drawn > 0.0)
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-        {
-            return Err(TrainError::Unreadable {
-                shaft: train.shafts[*k].clone(),
-                drawn_mm: *drawn,
-                resolution_mm: ctx.drafting.resolution_mm(),
-            });
-        }
-    }
-    let (wi, wo) = (omega[train.input], omega[train.output]);
-    if wo.abs() < 1e-300 {
-        return Err(TrainError::OutputAtRest);
-    }
-    // The kinematic scheme to the left of the velocities as drawn, at their heights.
-    super::scheme::draw_scheme(
-        &mut rec,
-        train,
-        (&ys, &poles),
-        yy,
-        ml,
-        leftmost - SCHEME_GAP_MM,
-    );
-    Ok(Triangles {
-        scale_l: mu_l,
-        scale_v: mu_v,
-        plan_h,
-        scale_w,
-        scale_w_at: DVec2::new(right + PLAN_OVERHANG_MM, y_ref),
-        figure: rec.finish(),
-        omega,
-        ratio: wi / wo,
-    })
+    out
 }

@@ -152,7 +152,12 @@ fn gears_data(g: &GearsSpec, lang: Lang) -> Vec<(String, String, String)> {
         rows.push(one(&format!("x_{{{}}}", r.name), r.cutting.x));
     }
     if let Some(t) = &g.planetary {
-        rows.push(part(T::TrainPart));
+        rows.push(part(if t.train.second.is_some() {
+            T::DifferentialPart
+        } else {
+            T::TrainPart
+        }));
+        rows.push(("m".into(), mm(t.train.module, lang), "mm".into()));
         for wheel in &t.train.wheels {
             rows.push(one(&format!("z_{{{}}}", wheel.name), wheel.z));
         }
@@ -160,7 +165,12 @@ fn gears_data(g: &GearsSpec, lang: Lang) -> Vec<(String, String, String)> {
             rows.push(one("k", f64::from(k)));
         }
         let tr = &t.train;
-        let speeds = [(tr.input, t.n_input), (tr.output, t.n_output)];
+        // The inputs' speeds (a differential's two), the required output speed.
+        let second = tr.second.map(|(k, w)| (k, t.n_input.map(|n| n * w)));
+        let speeds = [(tr.input, t.n_input)]
+            .into_iter()
+            .chain(second)
+            .chain([(tr.output, t.n_output)]);
         for (shaft, n) in speeds {
             if let Some(n) = n {
                 let s = format!("n_{{{}}}", tr.shafts[shaft]);
@@ -264,6 +274,7 @@ fn seed_values(w: &mut Writer<'_, '_>) {
     let lang = w.lang;
     let scene = w.session.scene();
     let mut rows: Vec<Vec<String>> = Vec::new();
+    // The reason as content: plain text, or label markup with its scripts.
     let mut add =
         |symbol: String, printed: String, exact: String, off: Option<f64>, why: String| {
             rows.push(vec![
@@ -271,7 +282,7 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 text(&printed),
                 text(&exact),
                 text(&off.map(|d| percent(d, lang)).unwrap_or_else(|| "—".into())),
-                text(&why),
+                why,
             ]);
         };
     if let Some(f) = &scene.forces {
@@ -293,7 +304,7 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                     s.printed.clone(),
                     format!("{} {unit}", fmt(r.analytic.abs(), 4, lang)),
                     Some((s.value - r.analytic.abs()) / r.analytic.abs()),
-                    s.source.clone(),
+                    text(&s.source),
                 );
             }
         }
@@ -315,7 +326,7 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 format!("{} kg·m²", fmt(seed, 4, lang)),
                 format!("{} kg·m²", fmt(exact, 5, lang)),
                 Some((seed - exact) / exact),
-                w.word(T::SeedFlywheel).into(),
+                text(w.word(T::SeedFlywheel)),
             );
         }
     }
@@ -329,9 +340,12 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 fmt(seed, 3, lang),
                 fmt(exact, 5, lang),
                 Some((seed - exact) / exact),
-                w.word(T::SeedContactRatio).into(),
+                text(w.word(T::SeedContactRatio)),
             );
         }
+    }
+    if let Some(r) = train_seed(w) {
+        add(r.symbol, r.printed, r.exact, Some(r.off), label(&r.why));
     }
     if let Some(c) = &scene.cam {
         if let (Some(seed), Some(exact)) = (
@@ -347,10 +361,15 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 format!("{} mm", mm(seed, lang)),
                 format!("{} mm", mm(exact, lang)),
                 Some((seed - exact) / exact),
-                w.word(T::SeedMinRadius).into(),
+                text(w.word(T::SeedMinRadius)),
             );
         }
     }
+    seed_table(w, &rows);
+}
+
+/// The table of the source's values the project does not reproduce (nothing without rows).
+fn seed_table(w: &mut Writer<'_, '_>, rows: &[Vec<String>]) {
     if rows.is_empty() {
         return;
     }
@@ -373,8 +392,54 @@ fn seed_values(w: &mut Writer<'_, '_>) {
             Align::Left,
         ],
         &header,
-        &rows,
+        rows,
     );
+}
+
+/// A row of the table of the source's values the project does not reproduce.
+struct SeedRow {
+    /// The quantity in label markup.
+    symbol: String,
+    /// The value the source prints.
+    printed: String,
+    /// The exact value.
+    exact: String,
+    /// (printed − exact)/exact.
+    off: f64,
+    /// Why, in label markup.
+    why: String,
+}
+
+/// The train's printed ratio when Willis's relations do not reproduce it: the printed and
+/// the exact value, the share off, and why (the planetary stage's ratio with the carrier
+/// stopped the printed value needs, against its teeth's).
+fn train_seed(w: &Writer<'_, '_>) -> Option<SeedRow> {
+    let lang = w.lang;
+    let study = w.session.gears().ok()?;
+    let t = study.train.as_ref()?;
+    let printed = t.spec.seed.u?;
+    if crate::gears::TrainSeed::reproduces(printed, t.ratio) {
+        return None;
+    }
+    let tr = &t.spec.train;
+    let why = t.seed_stage().map_or_else(String::new, |s| {
+        format!(
+            "{} u_{{{}{}}}^{{(H)}} = {}, {} {}",
+            w.word(T::SeedTrainNeeds),
+            s.a,
+            s.f,
+            fmt(s.needed, 4, lang),
+            w.word(T::SeedTrainTeeth),
+            fmt(s.teeth, 4, lang)
+        )
+    });
+    Some(SeedRow {
+        symbol: format!("u_{{{}{}}}", tr.shafts[tr.input], tr.shafts[tr.output]),
+        printed: fmt(printed, 4, lang),
+        exact: fmt(t.ratio, 5, lang),
+        off: (printed - t.ratio) / t.ratio,
+        why,
+    })
 }
 
 /// The references: the course texts the project follows.

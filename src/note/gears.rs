@@ -6,7 +6,7 @@ use super::markup::{frac, inline, label, num, sym, text, unit, Align};
 use super::rows::{by_position, of_scene, quantities};
 use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
-use crate::gears::{inv, Generation, Pair, Stage, TrainStudy};
+use crate::gears::{inv, Generation, Pair};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::sheets::captions::{unit_in, NoteText as T, Text as S};
@@ -19,7 +19,20 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let intro: Vec<&str> = [
         (study.pair.is_some(), T::GearsIntroPair),
         (!study.racks.is_empty(), T::GearsIntroRack),
-        (study.train.is_some(), T::GearsIntroTrain),
+        (
+            study
+                .train
+                .as_ref()
+                .is_some_and(|t| t.spec.train.second.is_none()),
+            T::GearsIntroTrain,
+        ),
+        (
+            study
+                .train
+                .as_ref()
+                .is_some_and(|t| t.spec.train.second.is_some()),
+            T::GearsIntroDifferential,
+        ),
     ]
     .into_iter()
     .filter(|(has, _)| *has)
@@ -52,7 +65,7 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         r.method == Method::Envelope || r.key.symbol == Symbol::ShiftCoefficient
     });
     if let Some(train) = &study.train {
-        train_worked(w, train);
+        super::train::train_worked(w, train);
     }
     let caption = w.word(T::TrainTable);
     of_scene(w, caption, |r| {
@@ -71,7 +84,13 @@ fn deg(a: f64, lang: Lang) -> String {
 }
 
 /// Writes "`lhs` = `symbolic` = `substituted` = `value`" as one formula (`lhs` is math).
-fn worked(w: &mut Writer<'_, '_>, lhs: &str, symbolic: &str, substituted: &str, value: String) {
+pub(super) fn worked(
+    w: &mut Writer<'_, '_>,
+    lhs: &str,
+    symbolic: &str,
+    substituted: &str,
+    value: String,
+) {
     w.doc
         .formula(&format!("{lhs} = {symbolic} = {substituted} = {value}"));
 }
@@ -309,172 +328,6 @@ fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
         &frac(&sym("B_{1}B_{2}"), &sym("p_{b}")),
         &frac(&n(ab_read * 1e3), &n(p.p_b * 1e3)),
         n(ab_read / p.p_b),
-    );
-}
-
-/// The train's ratio stage by stage (seed 000 §4: each mesh −(±)z_driven/z_driving, the
-/// planetary stage by Willis with the carrier stopped, u_aH^(f) = 1 − u_af^(H)), their
-/// product against Willis's relations solved together, and with the scene's speeds the
-/// required ratio, the stage it asks for and the output speed the chosen teeth give.
-fn train_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
-    let t = &study.spec.train;
-    let Some(stages) = t.stages() else {
-        return;
-    };
-    let lang = w.lang;
-    let n = |x: f64| num(x, 5, lang);
-    // A factor or a subtrahend: a negative one in parentheses.
-    let factor = |x: f64| if x < 0.0 { format!("({})", n(x)) } else { n(x) };
-    let wheel = |i: usize| t.wheels[i].name.as_str();
-    let z = |i: usize| sym(&format!("z_{{{}}}", wheel(i)));
-    let carrier = t.carrier.map_or("H", |h| t.shafts[h].as_str());
-    // One mesh's ratio in symbols and in numbers, signed.
-    let mesh = |x: usize, y: usize| {
-        let sign = if t.mesh_ratio(x, y) < 0.0 { "-" } else { "" };
-        (
-            format!("{sign}{}", frac(&z(y), &z(x))),
-            format!("{sign}{}", frac(&n(t.wheels[y].z), &n(t.wheels[x].z))),
-        )
-    };
-    w.doc.say(w.word(T::TrainWorked));
-    let mut names = Vec::new();
-    for stage in &stages {
-        let u = t.stage_ratio(stage);
-        match stage {
-            Stage::Mesh { driving, driven } => {
-                let name = sym(&format!("u_{{{}{}}}", wheel(*driving), wheel(*driven)));
-                let (symbolic, substituted) = mesh(*driving, *driven);
-                worked(w, &name, &symbolic, &substituted, n(u));
-                names.push(name);
-            }
-            Stage::Planetary { meshes } => {
-                let (Some(first), Some(last)) = (meshes.first(), meshes.last()) else {
-                    continue;
-                };
-                let (a, f) = (wheel(first.0), wheel(last.1));
-                let (symbolic, substituted): (Vec<_>, Vec<_>) = meshes
-                    .iter()
-                    .map(|&(x, y)| {
-                        let (s, v) = mesh(x, y);
-                        (format!("({s})"), format!("({v})"))
-                    })
-                    .unzip();
-                let stopped = sym(&format!("u_{{{a}{f}}}^{{({carrier})}}"));
-                let (symbolic, substituted) = (symbolic.join(" dot "), substituted.join(" dot "));
-                worked(w, &stopped, &symbolic, &substituted, n(1.0 - u));
-                let name = sym(&format!("u_{{{a}{carrier}}}^{{({f})}}"));
-                let substituted = format!("1 - {}", factor(1.0 - u));
-                worked(w, &name, &format!("1 - {stopped}"), &substituted, n(u));
-                names.push(name);
-            }
-        }
-    }
-    let ratios: Vec<f64> = stages.iter().map(|s| t.stage_ratio(s)).collect();
-    let (input, output) = (&t.shafts[t.input], &t.shafts[t.output]);
-    let whole = sym(&format!("u_{{{input}{output}}}"));
-    if stages.len() > 1 {
-        let factors: Vec<String> = ratios.iter().map(|&u| factor(u)).collect();
-        let total = ratios.iter().product::<f64>();
-        worked(
-            w,
-            &whole,
-            &names.join(" dot "),
-            &factors.join(" dot "),
-            n(total),
-        );
-    }
-    w.doc.say(w.word(T::TrainWillis));
-    w.doc.formula(&format!("{whole} = {}", n(study.ratio)));
-    let (Some(n_in), Some(n_out)) = (study.spec.n_input, study.spec.n_output) else {
-        return;
-    };
-    // The required ratio; the fixed-axis stage it asks for, the other stages as chosen.
-    let speed = |s: &str| sym(&format!("n_{{{s}}}"));
-    let wanted = |s: &str| format!("{s}^({})", sym("треб"));
-    let want = (n_in / n_out).abs();
-    w.doc.say(w.word(T::TrainRequired));
-    let req = wanted(&format!("abs({whole})"));
-    let speeds = frac(&speed(input), &wanted(&speed(output)));
-    worked(w, &req, &speeds, &frac(&n(n_in.abs()), &n(n_out)), n(want));
-    let fixed = t.fixed_axis_mesh().map(|k| t.meshes[k]);
-    let asked = stages.iter().position(|s| match (s, fixed) {
-        (Stage::Mesh { driving, driven }, Some(m)) => {
-            [(m.0, m.1), (m.1, m.0)].contains(&(*driving, *driven))
-        }
-        _ => false,
-    });
-    if let (Some(k), true) = (asked, stages.len() > 1) {
-        let Stage::Mesh { driving, driven } = stages[k] else {
-            return;
-        };
-        let others: Vec<&String> = names
-            .iter()
-            .enumerate()
-            .filter(|(i, _)| *i != k)
-            .map(|(_, s)| s)
-            .collect();
-        let others_value: f64 = ratios
-            .iter()
-            .enumerate()
-            .filter(|(i, _)| *i != k)
-            .map(|(_, u)| u)
-            .product();
-        let symbolic = frac(
-            &req,
-            &format!(
-                "abs({})",
-                others
-                    .iter()
-                    .map(|s| s.as_str())
-                    .collect::<Vec<_>>()
-                    .join(" dot ")
-            ),
-        );
-        let stage = format!("abs({})", names[k]);
-        let substituted = frac(&n(want), &n(others_value.abs()));
-        worked(
-            w,
-            &wanted(&stage),
-            &symbolic,
-            &substituted,
-            n(want / others_value.abs()),
-        );
-        w.doc.say(w.word(T::TrainChosen));
-        let (zx, zy) = (t.wheels[driving].z, t.wheels[driven].z);
-        worked(
-            w,
-            &stage,
-            &frac(&z(driven), &z(driving)),
-            &frac(&n(zy), &n(zx)),
-            n(zy / zx),
-        );
-    }
-    w.doc.say(w.word(T::TrainOutput));
-    let out = n_in / study.ratio;
-    let rpm = unit(&unit_in("rpm", lang));
-    let substituted = frac(&n(n_in), &factor(study.ratio));
-    let symbolic = frac(&speed(input), &whole);
-    worked(
-        w,
-        &speed(output),
-        &symbolic,
-        &substituted,
-        format!("{} {rpm}", n(out)),
-    );
-    let delta = (out.abs() / n_out - 1.0) * 100.0;
-    let target = wanted(&speed(output));
-    worked(
-        w,
-        &sym("δ"),
-        &format!(
-            "{} dot 100 %",
-            frac(&format!("abs({}) - {target}", speed(output)), &target)
-        ),
-        &format!(
-            "{} dot 100 %",
-            frac(&format!("{} - {}", n(out.abs()), n(n_out)), &n(n_out))
-        ),
-        format!("{} %", num(delta, 2, lang)),
     );
 }
 

@@ -17,6 +17,7 @@ mod kinematics;
 mod machines;
 mod markup;
 mod rows;
+mod train;
 mod typeset;
 
 use crate::check::Report;

@@ -233,6 +233,28 @@ impl View {
         }
     }
 
+    /// The box of what the plate draws for `step` (a pair's symbol with its ground, an
+    /// arrowhead; a line by its centre) in the figure's coordinates (mm, y up): (lower left, upper right); `None`
+    /// when it draws nothing (a text).
+    pub fn step_bounds(step: &crate::construct::Step) -> Option<(DVec2, DVec2)> {
+        let map = path::Map::figure(DVec2::ZERO);
+        // Sheet y runs down: the figure's is its negative.
+        let points: Vec<DVec2> = items::item_outlines(&step.item, step.role, map)
+            .into_iter()
+            .flat_map(|o| match o.shape {
+                items::Shape::Line(a, b) => vec![a, b],
+                items::Shape::Area(pts) => pts,
+            })
+            .map(|p| DVec2::new(p.x, -p.y))
+            .collect();
+        let first = *points.first()?;
+        Some(
+            points
+                .iter()
+                .fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p))),
+        )
+    }
+
     /// The sheet position of a figure point.
     pub fn to_sheet(&self, p: DVec2) -> DVec2 {
         DVec2::new(self.origin.x + p.x, self.origin.y - p.y)

@@ -1,12 +1,13 @@
 //! `[planetary]` → [`PlanetarySpec`]: wheels on named shafts, meshes by wheel names, the
 //! input, output, fixed shaft, carrier and satellites by shaft name, each checked with its key
-//! path; a train whose roles are not distinct, whose mobility is not 1 or that is not coaxial
-//! is refused with the key that makes it so.
+//! path; a train whose roles are not distinct, whose mobility is not the number of its inputs
+//! or that is not coaxial (unless `closing_module` closes it) is refused with the key that
+//! makes it so; `[planetary.seed]`, what the source prints, is kept for the notes.
 
 use super::check::{item, join, Checker};
 use super::gear_values::{module_mm, teeth_from};
 use super::keys::Key;
-use crate::gears::{Mesh, PlanetarySpec, Train};
+use crate::gears::{Mesh, PlanetarySpec, Train, TrainSeed};
 use crate::gears::{TrainError, Wheel};
 use serde::Deserialize;
 
@@ -26,6 +27,8 @@ pub(crate) struct RawPlanetary {
     pub input2: Option<String>,
     pub n_input2: Option<f64>,
     pub count: Option<i64>,
+    pub closing_module: Option<bool>,
+    pub seed: Option<RawTrainSeed>,
     #[serde(default)]
     pub wheel: Vec<RawWheel>,
     #[serde(default)]
@@ -41,6 +44,14 @@ pub(crate) struct RawWheel {
     pub shaft: Option<String>,
     pub internal: Option<bool>,
     pub module: Option<f64>,
+}
+
+/// `[planetary.seed]`: what the source prints for the train.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawTrainSeed {
+    pub u: Option<f64>,
+    pub w: Option<i64>,
 }
 
 /// `[[planetary.mesh]]`.
@@ -59,8 +70,8 @@ fn key(k: &str) -> String {
 }
 
 /// Validate `[planetary]`: wheels on named shafts, meshes by wheel names, the input, output,
-/// fixed shaft, carrier and satellites by shaft name; the train must have mobility 1 and be
-/// drawable (coaxial).
+/// fixed shaft, carrier and satellites by shaft name; the train must have the mobility of its
+/// inputs and be drawable (coaxial, or closed by `closing_module`).
 pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<PlanetarySpec> {
     let before = check.problems.len();
     let module = raw
@@ -98,6 +109,7 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
     }
     distinct_shafts(check, raw, [input, output, fixed, carrier], &satellites);
     let (n_input, n_output, count) = speeds(check, raw);
+    let seed = train_seed(check, raw);
     let second = second_input(check, raw, [input, output, fixed, input2], n_input);
     let (Some(input), Some(output)) = (input, output) else {
         return None;
@@ -117,7 +129,8 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
         module,
         second,
     };
-    if !drawable(check, raw, &train) {
+    let closing = raw.closing_module.unwrap_or(false);
+    if !drawable(check, raw, &train, closing) {
         return None;
     }
     Some(PlanetarySpec {
@@ -125,6 +138,8 @@ pub(crate) fn planetary(check: &mut Checker, raw: &RawPlanetary) -> Option<Plane
         n_input,
         n_output,
         satellites: count,
+        closing,
+        seed,
     })
 }
 
@@ -312,10 +327,19 @@ fn speeds(check: &mut Checker, raw: &RawPlanetary) -> (Option<f64>, Option<f64>,
     (n_input, n_output, count)
 }
 
-/// The train has mobility 1 and can be drawn (coaxial); otherwise refused under the key
-/// that makes it so.
-fn drawable(check: &mut Checker, raw: &RawPlanetary, train: &Train) -> bool {
-    let Err(e) = train.ratio().and_then(|_| train.layout()) else {
+/// The train has the mobility of its inputs and can be drawn (coaxial, or with
+/// `closing_module` closed by [`Train::closing`]); otherwise refused under the key that makes
+/// it so. A train that is not coaxial at its one module but that the closing module would
+/// draw is refused with the key that asks for it.
+fn drawable(check: &mut Checker, raw: &RawPlanetary, train: &Train, closing: bool) -> bool {
+    let drawn = |closing: bool| {
+        if closing {
+            train.closing().map(|_| ())
+        } else {
+            train.layout().map(|_| ())
+        }
+    };
+    let Err(e) = train.ratio().and_then(|_| drawn(closing)) else {
         return true;
     };
     let (k, value) = match &e {
@@ -324,12 +348,51 @@ fn drawable(check: &mut Checker, raw: &RawPlanetary, train: &Train) -> bool {
         TrainError::NoCarrier(_) => ("carrier", None),
         _ => ("mesh", None),
     };
+    let hint = if !closing && matches!(e, TrainError::Layout(_)) && drawn(true).is_ok() {
+        format!(
+            "; a source that gives one module for a stage whose tooth sums do not close (seed 002 PZ2 examples 1 and 2) is drawn with `{} = true`: the satellite's mesh taken at the module that closes the carrier's arm, named in the notes",
+            key("closing_module")
+        )
+    } else {
+        String::new()
+    };
     check.push(
         key(k),
         value,
-        format!("a train of mobility 1 that can be drawn: {e}"),
+        format!("a train of mobility W with W inputs that can be drawn: {e}{hint}"),
     );
     false
+}
+
+/// `[planetary.seed]`: the printed ratio (finite, not 0) and mobility (0 … 100).
+fn train_seed(check: &mut Checker, raw: &RawPlanetary) -> TrainSeed {
+    let Some(s) = &raw.seed else {
+        return TrainSeed::default();
+    };
+    let k = |name: &str| join(&key("seed"), name);
+    let u = s.u.and_then(|u| {
+        let v = check.bounded(&k("u"), u, 1e9, "the printed ratio, within ±1e9, not 0");
+        if v == 0.0 && u.is_finite() {
+            check.push(
+                k("u"),
+                Some("0".into()),
+                "expected the printed ratio, not 0",
+            );
+        }
+        (v != 0.0).then_some(v)
+    });
+    let w = s.w.and_then(|w| {
+        let ok = (0..=100).contains(&w);
+        if !ok {
+            check.push(
+                k("w"),
+                Some(w.to_string()),
+                "expected the printed mobility, 0 to 100",
+            );
+        }
+        ok.then_some(w)
+    });
+    TrainSeed { u, w }
 }
 
 /// The roles of a train's shafts must be distinct: the output is not the input, neither is

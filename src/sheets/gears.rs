@@ -210,6 +210,8 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 GearText::ByTriangles.get(lang),
             ));
         }
+        lines.extend(differential_line(t, lang));
+        lines.extend(closing_lines(t, lang));
         if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {
             lines.push(format!(
                 "k = {k}: {} {}",
@@ -295,6 +297,52 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
         rows,
         lang,
     )
+}
+
+/// A differential's output speed from its two given ones: `n_{3} = 1000 об/мин, n_{5} = 200
+/// об/мин → n_{H} = 360 об/мин (формула Виллиса), 360 об/мин (треугольники)`.
+fn differential_line(t: &crate::gears::TrainStudy, lang: Lang) -> Option<String> {
+    let tr_ = &t.spec.train;
+    let (second, w2) = tr_.second?;
+    let n_in = t.spec.n_input?;
+    let rpm = unit_in("rpm", lang);
+    let n = |x: f64| format_sig(x, 6, lang);
+    let by_triangles = t.triangles.omega[tr_.output] * 30.0 / std::f64::consts::PI;
+    let by_formula = t.formula.map_or(String::new(), |u| {
+        format!("{} {rpm} ({}), ", n(n_in / u), GearText::Willis.get(lang))
+    });
+    Some(format!(
+        "n_{{{}}} = {} {rpm}, n_{{{}}} = {} {rpm} → n_{{{}}} = {by_formula}{} {rpm} ({})",
+        tr_.shafts[tr_.input],
+        n(n_in),
+        tr_.shafts[second],
+        n(w2 * n_in),
+        tr_.shafts[tr_.output],
+        n(by_triangles),
+        GearText::ByTriangles.get(lang),
+    ))
+}
+
+/// Each mesh the train's module does not close, at the module it is drawn at, beside the
+/// train's: `m = 1 мм, m_{3-4} = 2,8333 мм (модуль ступени в задаче не дан: принят по
+/// соосности)`.
+fn closing_lines(t: &crate::gears::TrainStudy, lang: Lang) -> Vec<String> {
+    let tr_ = &t.spec.train;
+    let mm = unit_in("mm", lang);
+    t.closings
+        .iter()
+        .map(|c| {
+            let (s, w) = c.mesh;
+            format!(
+                "m = {} {mm}, m_{{{}-{}}} = {} {mm} ({})",
+                format_sig(tr_.module * 1e3, 5, lang),
+                tr_.wheels[s].name,
+                tr_.wheels[w].name,
+                format_sig(c.module * 1e3, 5, lang),
+                GearText::ClosingModule.get(lang),
+            )
+        })
+        .collect()
 }
 
 /// The train's mobility as the textbook writes it: W = 3n − 2p₅ − p₄ = 3·4 − 2·4 − 3 = 1.

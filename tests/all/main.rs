@@ -41,3 +41,4 @@ mod seed_shaper;
 mod session;
 mod sheet_room;
 mod sheets;
+mod trains;

@@ -223,3 +223,55 @@ fn the_pz1_note_is_the_report_form_with_the_drawn_readings() {
     );
     assert_ne!(mm("s_b0"), "16,161");
 }
+
+/// The note of a train the seed prints at one module says what the seed leaves out and works
+/// the module taken for it (PZ2 example 1: a = m(z₁ + z₂)/2 = 68 mm, m′₃₄ = 2a/(z₃ + z₄) =
+/// 2,8333 mm); example 2's printed u₁H = 20 stands in the table of values not reproduced
+/// against 32 (−37,5 %), with the u₃₆^(H) = 6 it needs; the differential's note works
+/// Willis's formula to n_H = (1000 + 4·200)/5 = 360 rpm.
+#[test]
+fn the_train_notes_say_what_the_seed_leaves_out_and_work_the_differential() {
+    // The text without its spaces: a formula's digits come out of the typeset note apart.
+    let text = |scene: &str| {
+        let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(scene);
+        let s = tmm::load(&path).expect("scene");
+        text_of(&note(&s, Lang::Ru).0).replace(' ', "")
+    };
+    let bare = |part: String| part.replace(' ', "");
+    let sig5 = |x: f64| tmm::scale::format_sig(x, 5, Lang::Ru);
+    let ex1 = text("constructions/gears-pz2-ex1.toml");
+    for part in [
+        "Модуль в задаче дан один на всю передачу".to_string(),
+        sig5((88.0 + 48.0) / 2.0),
+        sig5(2.0 * 68.0 / (4.0 + 44.0)),
+    ] {
+        assert!(
+            ex1.contains(&bare(part.clone())),
+            "`{part}` not in example 1's note"
+        );
+    }
+    let ex2 = text("constructions/gears-pz2-ex2.toml");
+    for part in [
+        "Расхождения с источником".to_string(),
+        tmm::scale::format_sig((20.0 - 32.0) / 32.0 * 100.0, 3, Lang::Ru),
+        sig5(2.0 * 24.0 / (11.0 + 45.0)),
+        "напечатанное значение требует".to_string(),
+    ] {
+        assert!(
+            ex2.contains(&bare(part.clone())),
+            "`{part}` not in example 2's note"
+        );
+    }
+    let d = text("constructions/gears-differential.toml");
+    let nh = (1000.0 - (-4.0) * 200.0) / (1.0 - (-4.0));
+    for part in [
+        "при остановленном водиле отношение частот вращения центральных колёс".to_string(),
+        "Дифференциальный механизм".to_string(),
+        format!("= {} об/мин", sig5(nh)),
+    ] {
+        assert!(
+            d.contains(&bare(part.clone())),
+            "`{part}` not in the differential's note"
+        );
+    }
+}

@@ -24,6 +24,7 @@ catalogue! {
         PairPart => ("Зубчатая пара", "Зубчаста пара", "The gear pair"),
         RackCutPart => ("Колесо, нарезаемое рейкой", "Колесо, що нарізається рейкою", "The wheel cut by the rack"),
         TrainPart => ("Планетарный редуктор", "Планетарний редуктор", "The planetary train"),
+        DifferentialPart => ("Дифференциальный механизм", "Диференціальний механізм", "The differential"),
         Value => ("значение", "значення", "value"),
         StructureAndKinematics => (
             "Структурный и кинематический анализ механизма",
@@ -228,6 +229,11 @@ catalogue! {
             "Передаточне відношення планетарного редуктора — за формулою Вілліса і графічно за трикутниками швидкостей.",
             "The planetary train's ratio by Willis's formula and graphically by the velocity triangles."
         ),
+        GearsIntroDifferential => (
+            "Частота вращения выходного звена дифференциала по двум заданным входным — по формуле Виллиса и графически по треугольникам скоростей.",
+            "Частота обертання вихідної ланки диференціала за двома заданими вхідними — за формулою Вілліса і графічно за трикутниками швидкостей.",
+            "The differential's output speed from its two given inputs by Willis's formula and graphically by the velocity triangles."
+        ),
         PairWorked => (
             "Геометрический расчёт зацепления (размеры в мм):",
             "Геометричний розрахунок зачеплення (розміри в мм):",
@@ -271,6 +277,16 @@ catalogue! {
             "The involute starts above the base circle: there the tooth is bounded by the fillet and is thicker than the involute's formula S_b gives."
         ),
         RackTable => ("Нарезание колеса рейкой", "Нарізання колеса рейкою", "The wheel cut by the rack"),
+        TrainClosing => (
+            "Модуль в задаче дан один на всю передачу (или не дан вовсе), и при нём суммы чисел зубьев ступени не замыкаются: сателлит не достаёт до второго центрального колеса, передачу в таком виде не собрать. Формула Виллиса требует только чисел зубьев; для треугольников скоростей зацепление принято с модулем, при котором ось центрального колеса совпадает с осью водила (в задаче не дан):",
+            "Модуль у задачі дано один на всю передачу (або не дано зовсім), і за нього суми чисел зубців ступеня не замикаються: сателіт не дістає до другого центрального колеса, передачу в такому вигляді не зібрати. Формула Вілліса потребує лише чисел зубців; для трикутників швидкостей зачеплення прийнято з модулем, за якого вісь центрального колеса збігається з віссю водила (у задачі не дано):",
+            "The source gives one module for the whole train (or none), and with it the stage's tooth sums do not close: the satellite does not reach the second central wheel, and the train as given cannot be assembled. Willis's formula needs the teeth only; for the velocity triangles the mesh is taken at the module that brings the central wheel's axis onto the carrier's (the source gives none):"
+        ),
+        TrainDifferential => (
+            "Дифференциал (W = 2): при остановленном водиле отношение частот вращения центральных колёс — по числам зубьев; формула Виллиса даёт частоту вращения выходного звена по двум заданным:",
+            "Диференціал (W = 2): при зупиненому водилі відношення частот обертання центральних коліс — за числами зубців; формула Вілліса дає частоту обертання вихідної ланки за двома заданими:",
+            "A differential (W = 2): with the carrier stopped the central wheels' speeds are in the ratio of the teeth; Willis's formula gives the output's speed from the two given ones:"
+        ),
         TrainWorked => (
             "Передаточное отношение редуктора по ступеням: у зацепления на неподвижных осях — отношение чисел зубьев ведомого и ведущего колёс, со знаком минус для внешнего зацепления и плюс для внутреннего; планетарная ступень — по формуле Виллиса при остановленном водиле:",
             "Передаточне відношення редуктора за ступенями: у зачеплення на нерухомих осях — відношення чисел зубців веденого і ведучого коліс, зі знаком мінус для зовнішнього зачеплення і плюс для внутрішнього; планетарний ступінь — за формулою Вілліса при зупиненому водилі:",
@@ -335,6 +351,12 @@ catalogue! {
             "у джерелі основні радіуси взято як r·cos α_w, а крок — як πm·cos α_w",
             "the source takes the base radii as r·cos α_w and the base pitch as πm·cos α_w"
         ),
+        SeedTrainNeeds => (
+            "при остальных ступенях по числам зубьев напечатанное значение требует",
+            "при інших ступенях за числами зубців надруковане значення вимагає",
+            "with the other stages as their teeth give, the printed value needs"
+        ),
+        SeedTrainTeeth => ("а по числам зубьев", "а за числами зубців", "whereas the teeth give"),
         SeedMinRadius => (
             "при γ ≥ γ_min на всём цикле радиус не может быть меньше точного",
             "при γ ≥ γ_min на всьому циклі радіус не може бути меншим за точний",

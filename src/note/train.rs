@@ -1,0 +1,369 @@
+//! The train in the gears section: what the source leaves out (the module of a stage whose
+//! tooth sums do not close) and the module the triangles take for it; the ratio stage by
+//! stage (seed 000 §4: each mesh −(±)z_driven/z_driving, the planetary stage by Willis with
+//! the carrier stopped, u_aH^(f) = 1 − u_af^(H)) or a differential's output speed by Willis's
+//! formula, against Willis's relations solved together; and with the scene's speeds the
+//! required ratio, the stage it asks for and the output speed the chosen teeth give.
+
+use super::gears::worked;
+use super::markup::{frac, num, sym, unit};
+use super::Writer;
+use crate::gears::{Stage, Train, TrainStudy};
+use crate::sheets::captions::{unit_in, NoteText as T};
+
+/// A number of the worked formulas.
+fn n(x: f64, lang: crate::scale::Lang) -> String {
+    num(x, 5, lang)
+}
+
+/// A factor or a subtrahend: a negative one in parentheses.
+fn factor(x: f64, lang: crate::scale::Lang) -> String {
+    if x < 0.0 {
+        format!("({})", n(x, lang))
+    } else {
+        n(x, lang)
+    }
+}
+
+/// z_i of wheel `i` in a formula.
+fn z(t: &Train, i: usize) -> String {
+    sym(&format!("z_{{{}}}", t.wheels[i].name))
+}
+
+/// Mesh (x, y)'s ratio ω_x/ω_y in symbols and in numbers, signed.
+fn mesh(t: &Train, x: usize, y: usize, lang: crate::scale::Lang) -> (String, String) {
+    let sign = if t.mesh_ratio(x, y) < 0.0 { "-" } else { "" };
+    (
+        format!("{sign}{}", frac(&z(t, y), &z(t, x))),
+        format!(
+            "{sign}{}",
+            frac(&n(t.wheels[y].z, lang), &n(t.wheels[x].z, lang))
+        ),
+    )
+}
+
+/// A chain of meshes' ratios in symbols and in numbers, each in parentheses, joined by dots.
+fn chain(t: &Train, meshes: &[(usize, usize)], lang: crate::scale::Lang) -> (String, String) {
+    let (symbolic, substituted): (Vec<_>, Vec<_>) = meshes
+        .iter()
+        .map(|&(x, y)| {
+            let (s, v) = mesh(t, x, y, lang);
+            (format!("({s})"), format!("({v})"))
+        })
+        .unzip();
+    (symbolic.join(" dot "), substituted.join(" dot "))
+}
+
+/// The train worked: the closed stages, then its ratio by the stages (or a differential's
+/// output by Willis's formula) against Willis's relations, then the required ratio.
+pub(super) fn train_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
+    closing_worked(w, study);
+    let t = &study.spec.train;
+    if let Some(stages) = t.stages() {
+        let names = stages_worked(w, study, &stages);
+        required_worked(w, study, &stages, &names);
+    } else {
+        differential_worked(w, study);
+    }
+}
+
+/// Each mesh the train's one module does not close (the module the source leaves out): the
+/// carrier's arm by the mesh that sets it, the module that brings the other central wheel
+/// onto the carrier's axis.
+fn closing_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
+    if study.closings.is_empty() {
+        return;
+    }
+    let lang = w.lang;
+    let t = &study.spec.train;
+    let mm = unit(&unit_in("mm", lang));
+    w.doc.say(w.word(T::TrainClosing));
+    // The teeth across a mesh's centre distance: z_a + z_b, or the ring's less the other's.
+    let across = |x: usize, y: usize| {
+        let (wx, wy) = (&t.wheels[x], &t.wheels[y]);
+        let (ring, other) = match (wx.internal, wy.internal) {
+            (true, _) => (Some(x), y),
+            (_, true) => (Some(y), x),
+            _ => (None, y),
+        };
+        match ring {
+            Some(r) => (
+                format!("{} - {}", z(t, r), z(t, other)),
+                format!(
+                    "{} - {}",
+                    n(t.wheels[r].z, lang),
+                    n(t.wheels[other].z, lang)
+                ),
+            ),
+            None => (
+                format!("{} + {}", z(t, x), z(t, y)),
+                format!("{} + {}", n(wx.z, lang), n(wy.z, lang)),
+            ),
+        }
+    };
+    for c in &study.closings {
+        let ((s, wc), (sa, wa)) = (c.mesh, c.arm_mesh);
+        let (arm_sym, arm_num) = across(wa, sa);
+        worked(
+            w,
+            &sym("a"),
+            &frac(&format!("{} ({arm_sym})", sym("m")), "2"),
+            &frac(&format!("{} dot ({arm_num})", n(t.module * 1e3, lang)), "2"),
+            format!("{} {mm}", n(c.arm * 1e3, lang)),
+        );
+        let (sym_, num_) = across(s, wc);
+        let name = sym(&format!("m'_{{{}{}}}", t.wheels[s].name, t.wheels[wc].name));
+        worked(
+            w,
+            &name,
+            &frac(&format!("2 {}", sym("a")), &sym_),
+            &frac(&format!("2 dot {}", n(c.arm * 1e3, lang)), &num_),
+            format!("{} {mm}", n(c.module * 1e3, lang)),
+        );
+    }
+}
+
+/// The ratio stage by stage and their product against Willis's relations; gives each
+/// stage's name in the formulas.
+fn stages_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage]) -> Vec<String> {
+    let lang = w.lang;
+    let t = &study.spec.train;
+    let wheel = |i: usize| t.wheels[i].name.as_str();
+    let carrier = t.carrier.map_or("H", |h| t.shafts[h].as_str());
+    w.doc.say(w.word(T::TrainWorked));
+    let mut names = Vec::new();
+    for stage in stages {
+        let u = t.stage_ratio(stage);
+        match stage {
+            Stage::Mesh { driving, driven } => {
+                let name = sym(&format!("u_{{{}{}}}", wheel(*driving), wheel(*driven)));
+                let (symbolic, substituted) = mesh(t, *driving, *driven, lang);
+                worked(w, &name, &symbolic, &substituted, n(u, lang));
+                names.push(name);
+            }
+            Stage::Planetary { meshes } => {
+                let (Some(first), Some(last)) = (meshes.first(), meshes.last()) else {
+                    continue;
+                };
+                let (a, f) = (wheel(first.0), wheel(last.1));
+                let (symbolic, substituted) = chain(t, meshes, lang);
+                let stopped = sym(&format!("u_{{{a}{f}}}^{{({carrier})}}"));
+                worked(w, &stopped, &symbolic, &substituted, n(1.0 - u, lang));
+                let name = sym(&format!("u_{{{a}{carrier}}}^{{({f})}}"));
+                let substituted = format!("1 - {}", factor(1.0 - u, lang));
+                worked(
+                    w,
+                    &name,
+                    &format!("1 - {stopped}"),
+                    &substituted,
+                    n(u, lang),
+                );
+                names.push(name);
+            }
+        }
+    }
+    let ratios: Vec<f64> = stages.iter().map(|s| t.stage_ratio(s)).collect();
+    let whole = whole(t);
+    if stages.len() > 1 {
+        let factors: Vec<String> = ratios.iter().map(|&u| factor(u, lang)).collect();
+        let total = ratios.iter().product::<f64>();
+        worked(
+            w,
+            &whole,
+            &names.join(" dot "),
+            &factors.join(" dot "),
+            n(total, lang),
+        );
+    }
+    w.doc.say(w.word(T::TrainWillis));
+    w.doc
+        .formula(&format!("{whole} = {}", n(study.ratio, lang)));
+    names
+}
+
+/// u_in,out in a formula.
+fn whole(t: &Train) -> String {
+    sym(&format!(
+        "u_{{{}{}}}",
+        t.shafts[t.input], t.shafts[t.output]
+    ))
+}
+
+/// n of shaft `s` in a formula.
+fn speed(s: &str) -> String {
+    sym(&format!("n_{{{s}}}"))
+}
+
+/// A differential's output speed from its two given ones: u_ab^(H) with the carrier stopped
+/// from the teeth, the formula solved for the output, against Willis's relations.
+fn differential_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
+    let t = &study.spec.train;
+    let (Some(d), Some(h), Some(n_in)) = (t.differential(), t.carrier, study.spec.n_input) else {
+        return;
+    };
+    let (Some(first), Some(last)) = (d.meshes.first(), d.meshes.last()) else {
+        return;
+    };
+    let lang = w.lang;
+    let rpm = unit(&unit_in("rpm", lang));
+    let (a, b, hn) = (&t.shafts[d.a], &t.shafts[d.b], &t.shafts[h]);
+    let u = sym(&format!(
+        "u_{{{}{}}}^{{({hn})}}",
+        t.wheels[first.0].name, t.wheels[last.1].name
+    ));
+    w.doc.say(w.word(T::TrainDifferential));
+    let (symbolic, substituted) = chain(t, &d.meshes, lang);
+    let relation = frac(
+        &format!("{} - {}", speed(a), speed(hn)),
+        &format!("{} - {}", speed(b), speed(hn)),
+    );
+    worked(
+        w,
+        &u,
+        &format!("{relation} = {symbolic}"),
+        &substituted,
+        n(d.u, lang),
+    );
+    let [na, nb, nh] = d.omega.map(|x| factor(x * n_in, lang));
+    let uu = factor(d.u, lang);
+    let (out, symbolic, substituted, value) = if t.output == h {
+        (
+            hn,
+            frac(
+                &format!("{} - {u} {}", speed(a), speed(b)),
+                &format!("1 - {u}"),
+            ),
+            frac(&format!("{na} - {uu} dot {nb}"), &format!("1 - {uu}")),
+            d.omega[2],
+        )
+    } else if t.output == d.a {
+        (
+            a,
+            format!("{} + {u} ({} - {})", speed(hn), speed(b), speed(hn)),
+            format!("{nh} + {uu} dot ({nb} - {nh})"),
+            d.omega[0],
+        )
+    } else {
+        (
+            b,
+            format!(
+                "{} + {}",
+                speed(hn),
+                frac(&format!("{} - {}", speed(a), speed(hn)), &u)
+            ),
+            format!("{nh} + {}", frac(&format!("{na} - {nh}"), &uu)),
+            d.omega[1],
+        )
+    };
+    worked(
+        w,
+        &speed(out),
+        &symbolic,
+        &substituted,
+        format!("{} {rpm}", n(value * n_in, lang)),
+    );
+    w.doc.say(w.word(T::TrainWillis));
+    w.doc.formula(&format!(
+        "{} = {} {rpm}",
+        speed(out),
+        n(study.willis[t.output] * n_in, lang)
+    ));
+}
+
+/// With the scene's input and required output speeds: the required ratio, the fixed-axis
+/// stage it asks for (the other stages as chosen) and the output speed the chosen teeth give.
+fn required_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage], names: &[String]) {
+    let (Some(n_in), Some(n_out)) = (study.spec.n_input, study.spec.n_output) else {
+        return;
+    };
+    let lang = w.lang;
+    let t = &study.spec.train;
+    let (input, output) = (&t.shafts[t.input], &t.shafts[t.output]);
+    let whole = whole(t);
+    let wanted = |s: &str| format!("{s}^({})", sym("треб"));
+    let want = (n_in / n_out).abs();
+    w.doc.say(w.word(T::TrainRequired));
+    let req = wanted(&format!("abs({whole})"));
+    let speeds = frac(&speed(input), &wanted(&speed(output)));
+    worked(
+        w,
+        &req,
+        &speeds,
+        &frac(&n(n_in.abs(), lang), &n(n_out, lang)),
+        n(want, lang),
+    );
+    let ratios: Vec<f64> = stages.iter().map(|s| t.stage_ratio(s)).collect();
+    let fixed = t.fixed_axis_mesh().map(|k| t.meshes[k]);
+    let asked = stages.iter().position(|s| match (s, fixed) {
+        (Stage::Mesh { driving, driven }, Some(m)) => {
+            [(m.0, m.1), (m.1, m.0)].contains(&(*driving, *driven))
+        }
+        _ => false,
+    });
+    if let (Some(k), true) = (asked, stages.len() > 1) {
+        let Stage::Mesh { driving, driven } = stages[k] else {
+            return;
+        };
+        let others: Vec<&str> = names
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| *i != k)
+            .map(|(_, s)| s.as_str())
+            .collect();
+        let others_value: f64 = ratios
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| *i != k)
+            .map(|(_, u)| u)
+            .product();
+        let symbolic = frac(&req, &format!("abs({})", others.join(" dot ")));
+        let stage = format!("abs({})", names[k]);
+        let substituted = frac(&n(want, lang), &n(others_value.abs(), lang));
+        worked(
+            w,
+            &wanted(&stage),
+            &symbolic,
+            &substituted,
+            n(want / others_value.abs(), lang),
+        );
+        w.doc.say(w.word(T::TrainChosen));
+        let (zx, zy) = (t.wheels[driving].z, t.wheels[driven].z);
+        worked(
+            w,
+            &stage,
+            &frac(&z(t, driven), &z(t, driving)),
+            &frac(&n(zy, lang), &n(zx, lang)),
+            n(zy / zx, lang),
+        );
+    }
+    w.doc.say(w.word(T::TrainOutput));
+    let out = n_in / study.ratio;
+    let rpm = unit(&unit_in("rpm", lang));
+    let substituted = frac(&n(n_in, lang), &factor(study.ratio, lang));
+    let symbolic = frac(&speed(input), &whole);
+    worked(
+        w,
+        &speed(output),
+        &symbolic,
+        &substituted,
+        format!("{} {rpm}", n(out, lang)),
+    );
+    let delta = (out.abs() / n_out - 1.0) * 100.0;
+    let target = wanted(&speed(output));
+    worked(
+        w,
+        &sym("δ"),
+        &format!(
+            "{} dot 100 %",
+            frac(&format!("abs({}) - {target}", speed(output)), &target)
+        ),
+        &format!(
+            "{} dot 100 %",
+            frac(
+                &format!("{} - {}", n(out.abs(), lang), n(n_out, lang)),
+                &n(n_out, lang)
+            )
+        ),
+        format!("{} %", num(delta, 2, lang)),
+    );
+}
