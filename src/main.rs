@@ -65,8 +65,9 @@ struct RenderArgs {
     #[arg(long, value_enum, default_value = "ru")]
     lang: LangArg,
     /// Resolution (mm) to which measured lengths are read before μ converts them; 0 = exact.
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-    drafting: f64,
+    /// `render` reads as a hand construction does (0.5 mm), `batch` exactly (the answer key).
+    #[arg(long, allow_negative_numbers = true)]
+    drafting: Option<f64>,
     /// PNG resolution, dots per inch: 1…2400, within 2^30 pixels per image (an A1 sheet up
     /// to 1177 dpi, A0 up to 832 dpi).
     #[arg(long, default_value_t = 150)]
@@ -95,8 +96,9 @@ enum Command {
         /// The note's language.
         #[arg(long, value_enum, default_value = "ru")]
         lang: LangArg,
-        /// Resolution (mm) to which measured lengths are read before μ converts them; 0 = exact.
-        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+        /// Resolution (mm) to which measured lengths are read before μ converts them, as a
+        /// hand construction does; 0 = exact.
+        #[arg(long, default_value_t = Drafting::HAND.resolution_mm(), allow_negative_numbers = true)]
         drafting: f64,
     },
     /// Compare every value read off the plans and diagrams with its analytic twin.
@@ -284,9 +286,11 @@ fn render_failure(e: RenderError) -> Failure {
     }
 }
 
-/// What `--format`, `--lang`, `--drafting` and `--dpi` ask of a rendering.
-fn render_options(how: &RenderArgs) -> Result<render::Options, Failure> {
-    let (lang, drafting) = options(how.lang, how.drafting)?;
+/// What `--format`, `--lang`, `--drafting` (`fallback` when not given) and `--dpi` ask of a
+/// rendering.
+fn render_options(how: &RenderArgs, fallback: Drafting) -> Result<render::Options, Failure> {
+    let resolution = how.drafting.unwrap_or(fallback.resolution_mm());
+    let (lang, drafting) = options(how.lang, resolution)?;
     let (formats, dpi) = (&how.format, how.dpi);
     if !(1..=2400).contains(&dpi) {
         return Err(Failure::input(format!("--dpi {dpi}: expected 1…2400")));
@@ -305,7 +309,7 @@ fn render_options(how: &RenderArgs) -> Result<render::Options, Failure> {
 }
 
 fn render(paths: &[PathBuf], how: &RenderArgs) -> Result<(), Failure> {
-    let options = render_options(how)?;
+    let options = render_options(how, Drafting::HAND)?;
     let out = how.out.as_path();
     let scenes = load_all(paths)?;
     if let Some(s) = scenes.iter().find(|s| s.plates.is_empty()) {
@@ -330,7 +334,7 @@ fn read_text(path: &Path) -> Result<String, Failure> {
 /// is 1 when any did.
 fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> {
     use std::io::IsTerminal as _;
-    let options = render_options(how)?;
+    let options = render_options(how, Drafting::EXACT)?;
     let out = how.out.as_path();
     let scene = scene::load(template).map_err(|e| Failure::input(e.to_string()))?;
     if scene.plates.is_empty() {

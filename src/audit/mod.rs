@@ -67,7 +67,7 @@ pub const ANALYTIC: f64 = 0.005;
 /// degrees: the textbook's angles to 0.1°.
 pub const ANALYTIC_DEG: f64 = 0.1;
 /// The reading error of a hand construction, mm.
-pub const READING_MM: f64 = 0.5;
+pub const READING_MM: f64 = crate::construct::Drafting::HAND.resolution_mm();
 
 /// Why a table cannot be audited.
 #[derive(Debug, Error)]

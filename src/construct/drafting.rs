@@ -17,6 +17,13 @@ impl Drafting {
         bias_mm: 0.0,
     };
 
+    /// A hand construction read with dividers and a ruler: every length to 0.5 mm, the
+    /// default of `render` and `note` (what a student hands in).
+    pub const HAND: Drafting = Drafting {
+        resolution_mm: 0.5,
+        bias_mm: 0.0,
+    };
+
     /// `None` unless finite and ≥ 0.
     pub fn new(resolution_mm: f64) -> Option<Self> {
         (resolution_mm.is_finite() && resolution_mm >= 0.0).then_some(Self {
@@ -30,7 +37,7 @@ impl Drafting {
         bias_mm.is_finite().then_some(Self { bias_mm, ..self })
     }
     /// The resolution, mm.
-    pub fn resolution_mm(&self) -> f64 {
+    pub const fn resolution_mm(&self) -> f64 {
         self.resolution_mm
     }
     /// A length as read with this resolution (and bias).

@@ -264,7 +264,18 @@ pub(super) fn conclusions(w: &mut Writer<'_, '_>) {
         &[text(w.word(S::Method)), text(w.word(S::MeanError))],
         &by_method,
     );
-    w.doc.say(w.word(T::ExactAtDraftingZero));
+    let r = w.session.drafting().resolution_mm();
+    if r > 0.0 {
+        w.doc.say(&format!(
+            "{} {} {}, {}",
+            w.word(T::HandReadingLead),
+            crate::scale::format_sig(r, 3, w.lang),
+            unit_in("mm", w.lang),
+            w.word(T::HandReadingRest)
+        ));
+    } else {
+        w.doc.say(w.word(T::ExactReading));
+    }
     seed_values(w);
 }
 

@@ -275,3 +275,21 @@ fn the_train_notes_say_what_the_seed_leaves_out_and_work_the_differential() {
         );
     }
 }
+
+/// The note says how its lengths were read: to 0.5 mm as by hand (what the errors mean),
+/// or exactly; never a command-line flag.
+#[test]
+fn the_note_says_how_its_lengths_were_read() {
+    let scene = shaper();
+    let hand = Session::new(&scene, Drafting::HAND);
+    let text = text_of(&tmm::note::compose(&hand, Lang::Ru).expect("note"));
+    assert!(
+        text.contains("Длины отсчитаны с чертежа с точностью 0,5 мм, как при построении вручную"),
+        "{text}"
+    );
+    assert!(text.contains("следствие отсчёта, а не ошибка построения"));
+    let (exact, _) = note(&scene, Lang::Ru);
+    let text = text_of(&exact);
+    assert!(text.contains("Длины отсчитаны с чертежа точно"));
+    assert!(!text.contains("--drafting") && !text.contains("как при построении вручную"));
+}

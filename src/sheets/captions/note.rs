@@ -327,10 +327,20 @@ catalogue! {
         ErrorsByMethod => ("Средняя погрешность по методам", "Середня похибка за методами", "Mean error by method"),
         Count => ("число", "кількість", "count"),
         AtPosition => ("в положении", "у положенні", "at position"),
-        ExactAtDraftingZero => (
-            "Построения выполнены точно (без погрешности отсчёта с чертежа): погрешность планов скоростей, ускорений и сил — только округление, погрешность диаграмм — погрешность метода хорд; погрешность чертежа при отсчёте с точностью 0,5 мм показывает расчёт с параметром --drafting.",
-            "Побудови виконано точно (без похибки відліку з креслення): похибка планів швидкостей, прискорень і сил — лише округлення, похибка діаграм — похибка методу хорд; похибку креслення при відліку з точністю 0,5 мм показує розрахунок з параметром --drafting.",
-            "The constructions are exact (no reading error): the plans of velocities, accelerations and forces err by rounding only, the diagrams by the method of chords; a reading to 0.5 mm, as on paper, is shown by a run with --drafting."
+        ExactReading => (
+            "Длины отсчитаны с чертежа точно (без погрешности отсчёта): погрешность планов скоростей, ускорений и сил — только округление, погрешность диаграмм — погрешность метода хорд.",
+            "Довжини зчитано з креслення точно (без похибки відліку): похибка планів швидкостей, прискорень і сил — лише округлення, похибка діаграм — похибка методу хорд.",
+            "Lengths are read off the drawing exactly (no reading error): the plans of velocities, accelerations and forces err by rounding only, the diagrams by the method of chords."
+        ),
+        HandReadingLead => (
+            "Длины отсчитаны с чертежа с точностью",
+            "Довжини зчитано з креслення з точністю",
+            "Lengths are read off the drawing to"
+        ),
+        HandReadingRest => (
+            "как при построении вручную. Погрешность графического значения складывается из погрешности отсчёта, тем большей в процентах, чем короче отрезок на чертеже, и у диаграмм — из погрешности метода хорд; аналитические значения вычислены точно. Расхождение в несколько процентов на коротком отрезке — следствие отсчёта, а не ошибка построения.",
+            "як під час побудови вручну. Похибка графічного значення складається з похибки відліку, тим більшої у відсотках, чим коротший відрізок на кресленні, і в діаграм — з похибки методу хорд; аналітичні значення обчислено точно. Розбіжність у кілька відсотків на короткому відрізку — наслідок відліку, а не помилка побудови.",
+            "as in a construction by hand. A graphical value's error is the reading's, the larger in per cent the shorter the segment on the drawing, and for the diagrams also the method of chords'; the analytic values are exact. A few per cent on a short segment come from the reading, not from a wrong construction."
         ),
         SeedNotReproduced => (
             "Значения источника, которые проект не воспроизводит, с точным значением и причиной:",
