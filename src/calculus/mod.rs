@@ -79,7 +79,7 @@ pub struct Diagram {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum CalculusError {
     /// A given number is NaN or infinite.
-    #[error("{what} [{index}] is not a finite number: {value}")]
+    #[error("{what} [{index}] is not a finite number: {value}", value = crate::scale::format_plain(*value))]
     NonFinite {
         /// What the number is.
         what: &'static str,
@@ -89,7 +89,7 @@ pub enum CalculusError {
         value: f64,
     },
     /// The interval length is not positive.
-    #[error("the interval Δx = {dx} must be finite and > 0")]
+    #[error("the interval Δx = {dx} must be finite and > 0", dx = crate::scale::format_plain(*dx))]
     BadInterval {
         /// The given interval.
         dx: f64,
@@ -111,19 +111,19 @@ pub enum CalculusError {
         ordinates: usize,
     },
     /// The pole distance is not positive.
-    #[error("the pole distance H = {pole_mm} mm must be finite and > 0")]
+    #[error("the pole distance H = {pole_mm} mm must be finite and > 0", pole_mm = crate::scale::format_plain(*pole_mm))]
     BadPole {
         /// The given distance, mm.
         pole_mm: f64,
     },
     /// A preferred drawing size is not positive.
-    #[error("the preferred ordinate {mm} mm must be finite and > 0")]
+    #[error("the preferred ordinate {mm} mm must be finite and > 0", mm = crate::scale::format_plain(*mm))]
     BadPreferred {
         /// The given size, mm.
         mm: f64,
     },
     /// A derived scale is not a valid μ.
-    #[error("the derived scale μ = {value} is not finite and positive")]
+    #[error("the derived scale μ = {value} is not finite and positive", value = crate::scale::format_plain(*value))]
     BadScale {
         /// The derived value.
         value: f64,

@@ -232,7 +232,7 @@ pub enum CamError {
         offset: f64,
     },
     /// No round drawing scale can be chosen.
-    #[error("cam: no drawing scale {what} can be chosen for the size {size}")]
+    #[error("cam: no drawing scale {what} can be chosen for the size {size}", size = crate::scale::format_plain(*size))]
     NoScale {
         /// The scale.
         what: &'static str,

@@ -74,7 +74,7 @@ pub enum DynamicsError {
         work: f64,
     },
     /// No flywheel gives δ.
-    #[error("dynamics.delta: no flywheel up to 1e12 kg·m² gives δ = {delta}")]
+    #[error("dynamics.delta: no flywheel up to 1e12 kg·m² gives δ = {delta}", delta = crate::scale::format_plain(*delta))]
     NoFlywheel {
         /// The δ asked for.
         delta: f64,
@@ -96,7 +96,7 @@ pub enum DynamicsError {
         error: CalculusError,
     },
     /// A scale cannot be chosen.
-    #[error("no scale can be chosen for {what} ({value})")]
+    #[error("no scale can be chosen for {what} ({value})", value = crate::scale::format_plain(*value))]
     NoScale {
         /// What.
         what: &'static str,

@@ -60,7 +60,7 @@ pub const MIN_TIP: f64 = 0.3;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum GearError {
     /// A datum out of its range.
-    #[error("gears: {what} = {value}: expected {expected}")]
+    #[error("gears: {what} = {value}: expected {expected}", value = crate::scale::format_plain(*value))]
     Spec {
         /// The datum (`module`, `z1`).
         what: &'static str,
@@ -70,7 +70,7 @@ pub enum GearError {
         expected: &'static str,
     },
     /// A coefficient of the basic rack out of its range.
-    #[error("gears: the basic rack's {what} = {value}: expected {expected}")]
+    #[error("gears: the basic rack's {what} = {value}: expected {expected}", value = crate::scale::format_plain(*value))]
     Rack {
         /// The coefficient (`alpha`, `ha`, `c`, `rho_f`).
         what: &'static str,
@@ -80,13 +80,13 @@ pub enum GearError {
         expected: String,
     },
     /// inv α⁻¹ of a value outside its domain.
-    #[error("gears: inv α = {value} has no pressure angle in [0°, 90°)")]
+    #[error("gears: inv α = {value} has no pressure angle in [0°, 90°)", value = crate::scale::format_plain(*value))]
     InvoluteDomain {
         /// The value.
         value: f64,
     },
     /// An involute through a point inside its base circle.
-    #[error("gears: an involute of r_b = {rb} m cannot pass through a point {distance} m from the centre")]
+    #[error("gears: an involute of r_b = {rb} m cannot pass through a point {distance} m from the centre", rb = crate::scale::format_plain(*rb), distance = crate::scale::format_plain(*distance))]
     InvolutePoint {
         /// The point's distance from the centre, m.
         distance: f64,
@@ -94,7 +94,7 @@ pub enum GearError {
         rb: f64,
     },
     /// A centre distance the pair cannot have.
-    #[error("gears: a centre distance a_w = {a_w} m is infeasible: {why} ({least} m)")]
+    #[error("gears: a centre distance a_w = {a_w} m is infeasible: {why} ({least} m)", a_w = crate::scale::format_plain(*a_w), least = crate::scale::format_plain(*least))]
     CentreDistance {
         /// The asked a_w, m.
         a_w: f64,
@@ -104,7 +104,7 @@ pub enum GearError {
         why: &'static str,
     },
     /// The tip of a wheel passes the interference point of its mate.
-    #[error("gears: interference: the tip of wheel {wheel} reaches {reach} m along the line of action, beyond N₁N₂ = {g} m (the tip digs into the mate's root)")]
+    #[error("gears: interference: the tip of wheel {wheel} reaches {reach} m along the line of action, beyond N₁N₂ = {g} m (the tip digs into the mate's root)", reach = crate::scale::format_plain(*reach), g = crate::scale::format_plain(*g))]
     Interference {
         /// The wheel (1, 2).
         wheel: usize,
@@ -127,7 +127,7 @@ pub enum GearError {
         depth_mm: f64,
     },
     /// A pointed tooth.
-    #[error("gears: the tooth of wheel {wheel} is pointed: s_a = {sa} m (m = {module} m)")]
+    #[error("gears: the tooth of wheel {wheel} is pointed: s_a = {sa} m (m = {module} m)", sa = crate::scale::format_plain(*sa), module = crate::scale::format_plain(*module))]
     Pointed {
         /// The wheel.
         wheel: usize,
@@ -157,13 +157,13 @@ pub enum GearError {
         clearance: f64,
     },
     /// A contact ratio below 1.
-    #[error("gears: the contact ratio ε_α = {eps} < 1: the mesh is not continuous")]
+    #[error("gears: the contact ratio ε_α = {eps} < 1: the mesh is not continuous", eps = crate::scale::format_plain(*eps))]
     ContactRatio {
         /// ε_α.
         eps: f64,
     },
     /// No round drawing scale for a size.
-    #[error("gears: no drawing scale can be chosen for the size {size} m")]
+    #[error("gears: no drawing scale can be chosen for the size {size} m", size = crate::scale::format_plain(*size))]
     NoScale {
         /// The size, m.
         size: f64,

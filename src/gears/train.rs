@@ -130,7 +130,7 @@ pub enum TrainError {
     #[error("train: wheel {0} is on a satellite but the train has no carrier")]
     NoCarrier(String),
     /// The drafting resolution reads an intercept of the plan of angular velocities as 0.
-    #[error("train: --drafting {resolution_mm} mm reads the intercept of shaft {shaft} on the plan of angular velocities ({drawn_mm:.3} mm drawn) as 0, so the ratio cannot be read off the triangles; a resolution below {limit:.3} mm reads it", limit = 2.0 * .drawn_mm)]
+    #[error("train: --drafting {resolution_mm} mm reads the intercept of shaft {shaft} on the plan of angular velocities ({drawn_mm:.3} mm drawn) as 0, so the ratio cannot be read off the triangles; a resolution below {limit:.3} mm reads it", limit = 2.0 * .drawn_mm, resolution_mm = crate::scale::format_plain(*resolution_mm))]
     Unreadable {
         /// The shaft (the input or the output).
         shaft: String,

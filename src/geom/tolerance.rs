@@ -6,7 +6,7 @@ use thiserror::Error;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum InvalidTolerance {
     /// A field is not finite or not strictly positive.
-    #[error("tolerance `{field}` must be finite and > 0, got {value}")]
+    #[error("tolerance `{field}` must be finite and > 0, got {value}", value = crate::scale::format_plain(*value))]
     NotPositive {
         /// The field name.
         field: &'static str,

@@ -138,7 +138,7 @@ pub enum KinError {
         why: String,
     },
     /// No round scale can be chosen for a size.
-    #[error("no round scale μ_{} can be chosen for the size {value}", .quantity.symbol())]
+    #[error("no round scale μ_{} can be chosen for the size {value}", .quantity.symbol(), value = crate::scale::format_plain(*value))]
     NoScale {
         /// What the scale measures.
         quantity: Quantity,

@@ -30,12 +30,22 @@ impl fmt::Display for Problem {
 #[derive(Debug, Error)]
 pub enum SceneError {
     /// The file could not be read.
-    #[error("{}: cannot read the scene: {source}", path.display())]
+    #[error("{}: cannot read the file: {source}", path.display())]
     Read {
         /// The scene file.
         path: PathBuf,
         /// Why.
         source: std::io::Error,
+    },
+    /// The file is not UTF-8 text.
+    #[error("{}:{line}: not UTF-8 text (byte {byte} of the file): expected a text file saved as UTF-8", path.display())]
+    NotUtf8 {
+        /// The file.
+        path: PathBuf,
+        /// The 1-based line of the first byte that is not UTF-8.
+        line: usize,
+        /// Its offset in the file.
+        byte: usize,
     },
     /// The file is larger than a scene can be.
     #[error("{}: the scene file is larger than {limit} bytes: expected a scene of at most {limit} bytes (1 MiB)", path.display())]

@@ -70,8 +70,16 @@ pub fn read(path: &Path) -> Result<String, SceneError> {
             limit: MAX_SCENE_BYTES,
         });
     }
-    String::from_utf8(bytes)
-        .map_err(|e| read_err(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))
+    String::from_utf8(bytes).map_err(|e| {
+        let byte = e.utf8_error().valid_up_to();
+        let before = e.as_bytes().get(..byte).unwrap_or_default();
+        let line = 1 + before.iter().filter(|b| **b == b'\n').count();
+        SceneError::NotUtf8 {
+            path: path.to_path_buf(),
+            line,
+            byte,
+        }
+    })
 }
 
 /// Validate the scene text `text`; `path` names it in messages and gives the default title
@@ -348,6 +356,9 @@ fn toml_error(text: &str, path: &Path, e: &toml::de::Error) -> SceneError {
     if let Some(e) = unknown_table(text, path, span.clone(), e) {
         return e;
     }
+    if let Some(e) = duplicate_table(text, path, span.clone(), e) {
+        return e;
+    }
     let mut key = key_path_at(text, span.start);
     let is_key = text
         .get(span.end..)
@@ -425,6 +436,40 @@ fn unknown_table(
         key: Some(name.to_string()),
         value: None,
         message: format!("unknown table `{shown}`{tail}"),
+    })
+}
+
+/// A table written twice: the reader's "duplicate key" at a table header `[a.b]` said as
+/// "the table `[a.b]` is written twice", with the line of its first header.
+fn duplicate_table(
+    text: &str,
+    path: &Path,
+    span: std::ops::Range<usize>,
+    e: &toml::de::Error,
+) -> Option<SceneError> {
+    if !e.message().trim().starts_with("duplicate key") {
+        return None;
+    }
+    let line_start = text.get(..span.start)?.rfind('\n').map_or(0, |k| k + 1);
+    let header = text.get(line_start..)?.lines().next()?.trim();
+    let header = header.split('#').next().unwrap_or(header).trim();
+    if !header.starts_with('[') || header.starts_with("[[") {
+        return None;
+    }
+    let name = header.trim_start_matches('[').trim_end_matches(']').trim();
+    let first = text
+        .get(..line_start)?
+        .lines()
+        .position(|l| l.split('#').next().unwrap_or(l).trim() == header)
+        .map_or_else(String::new, |k| format!(" (first at line {})", k + 1));
+    let (line_no, column) = line_column(text, line_start);
+    Some(SceneError::Toml {
+        path: path.to_path_buf(),
+        line: line_no,
+        column,
+        key: Some(name.to_string()),
+        value: None,
+        message: format!("the table `[{name}]` is written twice{first}: each table once"),
     })
 }
 

@@ -369,7 +369,7 @@ fn unreadable_file_is_reported() {
         .map(|e| e.to_string());
     assert_names(
         &msg.unwrap_or_default(),
-        &["constructions/no-such.toml: cannot read the scene"],
+        &["constructions/no-such.toml: cannot read the file"],
     );
 }
 

@@ -31,7 +31,7 @@ pub enum StudyError {
     Dynamics(#[from] crate::dynamics::DynamicsError),
     /// The drafting resolution reads every ordinate of a diagram as 0, so no scale is left
     /// to choose for it.
-    #[error("dynamics: --drafting {resolution_mm} mm reads every ordinate of the diagram drawn at {what} as 0, so no scale can be chosen for it; a finer resolution reads it")]
+    #[error("dynamics: --drafting {resolution_mm} mm reads every ordinate of the diagram drawn at {what} as 0, so no scale can be chosen for it; a finer resolution reads it", resolution_mm = crate::scale::format_plain(*resolution_mm))]
     ReadAsZero {
         /// The scale that cannot be chosen (μ_T …).
         what: &'static str,

@@ -30,6 +30,7 @@ mod hard_cases;
 mod kinematics;
 mod languages;
 mod mechanism_limits;
+mod messages;
 mod mutations;
 mod note;
 mod output;

@@ -1,10 +1,11 @@
 //! The mutation sweep: every number of every scene in `constructions/` replaced by −1, 0, nan,
-//! inf, "x", 1e300, −1e-300, 1e-9, 1e9, or deleted, and every scene cut in half (by lines, each
+//! inf, "x", 1e300, −1e-300, 1e-9, 1e9, 2³¹, or deleted, and every scene cut in half (by lines, each
 //! half); each mutant is rendered (SVG and a low-dpi PNG) and reported. Every run must end
 //! with exit 0 and its output, or exit 1/2 with a message on standard error: no panic, no
 //! abort, no signal, no file left behind by a failed run, no temporary left by any run, and
 //! within 1 GiB of address space and 60 s of CPU (`ulimit -v`, `ulimit -t`: a run beyond
-//! either dies of a signal, which is a finding).
+//! either dies of a signal, which is a finding) and 60 s of wall time (a run that has not
+//! answered by then is killed and counted as a hang).
 //!
 //! `cargo test --release --test all mutations::` runs a deterministic sample (about
 //! [`SAMPLE`] mutants, spread over the scenes and mutations by a hash); `TMM_MUTATIONS=all`
@@ -26,10 +27,22 @@ const SAMPLE: usize = 160;
 const MEMORY_KIB: u64 = 1 << 20;
 /// CPU seconds per run.
 const CPU_SECONDS: u64 = 60;
+/// Wall-clock seconds per run: a run that neither answers nor spends CPU (a wait, a lock)
+/// is a hang.
+const WALL_SECONDS: u64 = 60;
 
-/// The replacements of a number (deletion is the eleventh mutation).
-const REPLACEMENTS: [&str; 9] = [
-    "-1", "0", "nan", "inf", "\"x\"", "1e300", "-1e-300", "1e-9", "1e9",
+/// The replacements of a number (deletion is the eleventh).
+const REPLACEMENTS: [&str; 10] = [
+    "-1",
+    "0",
+    "nan",
+    "inf",
+    "\"x\"",
+    "1e300",
+    "-1e-300",
+    "1e-9",
+    "1e9",
+    "2147483648",
 ];
 
 /// A number literal of a scene: its bytes and its key path.
@@ -300,34 +313,69 @@ fn files_under(dir: &Path) -> Vec<PathBuf> {
     out
 }
 
-/// Run `tmm args` within the limits; (exit code or signal description, stdout, stderr).
-fn run(args: &[&str]) -> (Result<i32, String>, String, String) {
+/// Run `tmm args` within the limits, its output kept in `dir`; (exit code or what ended it,
+/// stdout, stderr). A run with no answer within [`WALL_SECONDS`] is killed and counted as a
+/// hang: a finding like any other.
+fn run(args: &[&str], dir: &Path) -> (Result<i32, String>, String, String) {
+    let bin = std::env::var("TMM_BIN").unwrap_or_else(|_| env!("CARGO_BIN_EXE_tmm").into());
+    run_within(&bin, args, dir, WALL_SECONDS)
+}
+
+/// [`run`] of `bin` with a wall-clock limit of `wall` seconds.
+fn run_within(
+    bin: &str,
+    args: &[&str],
+    dir: &Path,
+    wall: u64,
+) -> (Result<i32, String>, String, String) {
+    use std::time::{Duration, Instant};
     let script = format!("ulimit -v {MEMORY_KIB}; ulimit -t {CPU_SECONDS}; exec \"$0\" \"$@\"",);
-    let o = Command::new("sh")
+    let (out, err) = (dir.join(".stdout"), dir.join(".stderr"));
+    let mut child = Command::new("sh")
         .arg("-c")
         .arg(script)
-        .arg(std::env::var("TMM_BIN").unwrap_or_else(|_| env!("CARGO_BIN_EXE_tmm").into()))
+        .arg(bin)
         .args(args)
-        .output()
+        .stdout(std::fs::File::create(&out).expect("stdout file"))
+        .stderr(std::fs::File::create(&err).expect("stderr file"))
+        .spawn()
         .expect("run sh");
-    let status = match o.status.code() {
-        Some(c) => Ok(c),
-        None => {
-            use std::os::unix::process::ExitStatusExt;
-            Err(match o.status.signal() {
-                Some(6) => "aborted (SIGABRT: memory beyond 1 GiB or a failed allocation)".into(),
-                Some(9) => "killed (SIGKILL)".into(),
-                Some(11) => "crashed (SIGSEGV: stack overflow?)".into(),
-                Some(24) => format!("killed after {CPU_SECONDS} s of CPU (SIGXCPU)"),
-                s => format!("killed by signal {s:?}"),
-            })
+    let deadline = Instant::now() + Duration::from_secs(wall);
+    let status = loop {
+        if let Some(s) = child.try_wait().expect("wait") {
+            break Some(s);
         }
+        if Instant::now() >= deadline {
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(Duration::from_millis(20));
     };
-    (
-        status,
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
+    let status = match status {
+        None => Err(format!("no answer within {wall} s (a hang)")),
+        Some(st) => match st.code() {
+            Some(c) => Ok(c),
+            None => {
+                use std::os::unix::process::ExitStatusExt;
+                Err(match st.signal() {
+                    Some(6) => {
+                        "aborted (SIGABRT: memory beyond 1 GiB or a failed allocation)".into()
+                    }
+                    Some(9) => "killed (SIGKILL)".into(),
+                    Some(11) => "crashed (SIGSEGV: stack overflow?)".into(),
+                    Some(24) => format!("killed after {CPU_SECONDS} s of CPU (SIGXCPU)"),
+                    s => format!("killed by signal {s:?}"),
+                })
+            }
+        },
+    };
+    let read =
+        |p: &Path| String::from_utf8_lossy(&std::fs::read(p).unwrap_or_default()).into_owned();
+    let (stdout, stderr) = (read(&out), read(&err));
+    let _ = std::fs::remove_file(&out);
+    let _ = std::fs::remove_file(&err);
+    (status, stdout, stderr)
 }
 
 /// The first line of a message, shortened.
@@ -431,7 +479,7 @@ fn sweep_one(index: usize, m: &Mutant, base: &Path) -> Vec<(String, String)> {
     let render = [
         "render", &scene_arg, "--out", &out_arg, "--format", "svg,png", "--dpi", "10",
     ];
-    let (status, stdout, stderr) = run(&render);
+    let (status, stdout, stderr) = run(&render, &dir);
     let written = files_under(&out);
     if let Some(f) = judge(&status, &stdout, &stderr, &written) {
         findings.push(("render".to_string(), f));
@@ -444,7 +492,7 @@ fn sweep_one(index: usize, m: &Mutant, base: &Path) -> Vec<(String, String)> {
             ));
         }
     }
-    let (status, stdout, stderr) = run(&["report", &scene_arg]);
+    let (status, stdout, stderr) = run(&["report", &scene_arg], &dir);
     if let Some(f) = judge(&status, &stdout, &stderr, &[]) {
         findings.push(("report".to_string(), f));
     } else if let Some(at) = bad_number(&stdout) {
@@ -452,6 +500,19 @@ fn sweep_one(index: usize, m: &Mutant, base: &Path) -> Vec<(String, String)> {
     }
     let _ = std::fs::remove_dir_all(&dir);
     findings
+}
+
+/// A run that does not answer in time is a finding, not a pass (a hang shows).
+#[test]
+fn a_run_with_no_answer_is_counted_as_a_hang() {
+    let dir = support::scratch("hang");
+    let (status, _, _) = run_within("sleep", &["30"], &dir, 1);
+    let status = status.expect_err("a hang is not an exit");
+    assert!(status.contains("a hang"), "{status}");
+    assert!(judge(&Err(status), "", "", &[]).is_some());
+    let (status, _, _) = run_within("true", &[], &dir, 5);
+    assert_eq!(status, Ok(0));
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -292,7 +292,7 @@ pub enum FrictionError {
         error: Box<ConstructionError>,
     },
     /// No round drawing scale can be formed.
-    #[error("friction case {case}: no drawing scale can be chosen for {value} {unit}")]
+    #[error("friction case {case}: no drawing scale can be chosen for {value} {unit}", value = crate::scale::format_plain(*value))]
     NoScale {
         /// The case's name.
         case: String,

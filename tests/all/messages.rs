@@ -1,0 +1,92 @@
+//! Messages on hostile input say what is wrong in a line a user reads (issue 43 §9): a tiny
+//! number written compactly, a table written twice named as such, a file that is not UTF-8
+//! said to be so, whatever file it is.
+
+use crate::support;
+use support::{scratch, tmm};
+
+/// The shaper's scene with `edit` applied, written to a scratch folder; its path.
+fn shaper_with(name: &str, edit: impl Fn(&str) -> String) -> std::path::PathBuf {
+    let text = std::fs::read_to_string(support::root().join("constructions/shaper.toml"))
+        .expect("the shaper");
+    let path = scratch(name).join(format!("{name}.toml"));
+    std::fs::write(&path, edit(&text)).expect("write the scene");
+    path
+}
+
+/// `tmm args…`: its exit code and standard error.
+fn run(args: &[&str]) -> (Option<i32>, String) {
+    let o = tmm(args);
+    (
+        o.status.code(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn a_tiny_delta_is_echoed_compactly() {
+    let scene = shaper_with("delta-tiny", |t| {
+        let start = t.find("\ndelta = ").expect("dynamics.delta") + 1;
+        let end = start + t[start..].find('\n').expect("its line");
+        format!("{}delta = 1e-300{}", &t[..start], &t[end..])
+    });
+    let (code, err) = run(&["check", scene.to_str().unwrap()]);
+    // No flywheel gives it: the construction fails (1), naming the key.
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        err.contains("dynamics.delta") && err.contains("δ = 1e-300"),
+        "{err}"
+    );
+    assert!(!err.contains("0000000000"), "{err}");
+}
+
+#[test]
+fn a_table_written_twice_is_named_with_its_first_line() {
+    let scene = shaper_with("table-twice", |t| {
+        let start = t.find("[mechanism.crank]").expect("the crank");
+        let end = start + 1 + t[start + 1..].find("\n[").expect("the next table");
+        format!("{}\n{}", &t[..end], &t[start..])
+    });
+    let first = std::fs::read_to_string(&scene)
+        .unwrap()
+        .lines()
+        .position(|l| l.trim() == "[mechanism.crank]")
+        .unwrap()
+        + 1;
+    let (code, err) = run(&["check", scene.to_str().unwrap()]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains(&format!(
+            "the table `[mechanism.crank]` is written twice (first at line {first})"
+        )),
+        "{err}"
+    );
+    assert!(!err.contains("answer_key"), "{err}");
+}
+
+#[test]
+fn a_file_that_is_not_utf8_is_said_to_be_so() {
+    let dir = scratch("not-utf8");
+    let table = dir.join("table.csv");
+    std::fs::write(
+        &table,
+        b"quantity,position,value,unit\nv_B,1,\xff\xfe,m/s\n",
+    )
+    .unwrap();
+    let (code, err) = run(&[
+        "audit",
+        "constructions/shaper.toml",
+        table.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("table.csv:2: not UTF-8 text (byte 35"),
+        "{err}"
+    );
+    assert!(!err.contains("scene"), "{err}");
+    let scene = dir.join("scene.toml");
+    std::fs::write(&scene, b"[task]\ntitle = \"\xc0\"\n").unwrap();
+    let (code, err) = run(&["check", scene.to_str().unwrap()]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("scene.toml:2: not UTF-8 text"), "{err}");
+}
