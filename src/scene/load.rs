@@ -428,15 +428,30 @@ fn unknown_table(
     if !name.ends_with(field) {
         return None;
     }
-    let (line_no, column) = line_column(text, span.start);
-    Some(SceneError::Toml {
+    Some(table_error(
+        (text, path),
+        span.start,
+        name,
+        format!("unknown table `{shown}`{tail}"),
+    ))
+}
+
+/// A refusal of the table `name` whose header is at byte `offset` of the scene.
+fn table_error(
+    (text, path): (&str, &Path),
+    offset: usize,
+    name: &str,
+    message: String,
+) -> SceneError {
+    let (line, column) = line_column(text, offset);
+    SceneError::Toml {
         path: path.to_path_buf(),
-        line: line_no,
+        line,
         column,
         key: Some(name.to_string()),
         value: None,
-        message: format!("unknown table `{shown}`{tail}"),
-    })
+        message,
+    }
 }
 
 /// A table written twice: the reader's "duplicate key" at a table header `[a.b]` said as
@@ -462,15 +477,12 @@ fn duplicate_table(
         .lines()
         .position(|l| l.split('#').next().unwrap_or(l).trim() == header)
         .map_or_else(String::new, |k| format!(" (first at line {})", k + 1));
-    let (line_no, column) = line_column(text, line_start);
-    Some(SceneError::Toml {
-        path: path.to_path_buf(),
-        line: line_no,
-        column,
-        key: Some(name.to_string()),
-        value: None,
-        message: format!("the table `[{name}]` is written twice{first}: each table once"),
-    })
+    Some(table_error(
+        (text, path),
+        line_start,
+        name,
+        format!("the table `[{name}]` is written twice{first}: each table once"),
+    ))
 }
 
 /// 1-based line and column (in characters) of byte `offset`.
