@@ -66,12 +66,18 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 const INV: &str = "op(\"inv\")";
 
 /// An angle (rad) in degrees in a formula: `26,581°`.
-fn deg(a: f64, lang: Lang) -> String {
+pub(super) fn deg(a: f64, lang: Lang) -> String {
     format!("{}°", num(a.to_degrees(), 5, lang))
 }
 
 /// Writes "`lhs` = `symbolic` = `substituted` = `value`" as one formula (`lhs` is math).
-fn worked(w: &mut Writer<'_, '_>, lhs: &str, symbolic: &str, substituted: &str, value: String) {
+pub(super) fn worked(
+    w: &mut Writer<'_, '_>,
+    lhs: &str,
+    symbolic: &str,
+    substituted: &str,
+    value: String,
+) {
     w.doc
         .formula(&format!("{lhs} = {symbolic} = {substituted} = {value}"));
 }
