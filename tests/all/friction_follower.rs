@@ -133,12 +133,7 @@ fn the_pivot_reads_its_friction_circle_couple_and_jamming_angle() {
 
 #[test]
 fn reading_to_half_a_millimetre_shows_a_drafting_error() {
-    let r = report(0.5);
-    let worst = r
-        .rel_errors()
-        .into_iter()
-        .flatten()
-        .fold(0.0f64, |m, e| m.max(e.abs()));
+    let worst = crate::friction::worst(&report(0.5));
     assert!(worst > 1e-4 && worst < 0.1, "{worst}");
 }
 

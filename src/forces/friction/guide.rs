@@ -298,6 +298,26 @@ fn plan(
     Ok((drawing, [t.p, r1, r2], t.crossing_deg))
 }
 
+/// The refusal of a `who` (the follower, the rocker) that jams: its pressure angle λ not
+/// below the jamming angle λ_кр read off the scheme by [`MIN_CROSSING_DEG`] (both rad), with
+/// `rule`, λ_кр's closed form and the data.
+pub(super) fn jams(
+    case: &FrictionCase,
+    who: &str,
+    (lambda, lock): (f64, f64),
+    rule: String,
+) -> FrictionError {
+    FrictionError::Impossible {
+        case: case.name.clone(),
+        why: format!(
+            "the {who} jams: λ = {:.2}° is not below the jamming angle λ_кр = {:.2}° ({rule}) \
+             by {MIN_CROSSING_DEG}°",
+            lambda.to_degrees(),
+            lock.to_degrees()
+        ),
+    }
+}
+
 /// Construct the case and read it.
 pub(super) fn solve(
     case: &FrictionCase,
@@ -308,24 +328,16 @@ pub(super) fn solve(
     let (scheme, lock_read) = scheme(case, c, ctx, wrap)?;
     let g = &c.guide;
     // The follower moves only while P's line passes the axis's side of Z (by the drawing).
+    let rule = || {
+        format!(
+            "tg λ_кр = b/(f(2l + b)), b = {} m, l = {} m, f = {}",
+            g.length, g.overhang, g.f
+        )
+    };
     if lock_read - c.angle < MIN_CROSSING_DEG.to_radians() {
-        return Err(FrictionError::Impossible {
-            case: case.name.clone(),
-            why: format!(
-                "the follower jams: λ = {:.2}° is not below the jamming angle λ_кр = {:.2}° \
-                 (tg λ_кр = b/(f(2l + b)), b = {} m, l = {} m, f = {}) by {MIN_CROSSING_DEG}°",
-                c.angle.to_degrees(),
-                lock_read.to_degrees(),
-                g.length,
-                g.overhang,
-                g.f
-            ),
-        });
+        return Err(jams(case, "follower", (c.angle, lock_read), rule()));
     }
-    let twin = guide_twin(c).ok_or_else(|| FrictionError::Impossible {
-        case: case.name.clone(),
-        why: format!("the follower jams at λ = {:.2}°", c.angle.to_degrees()),
-    })?;
+    let twin = guide_twin(c).ok_or_else(|| jams(case, "follower", (c.angle, lock_read), rule()))?;
     let kz = DVec2::new(lock_read.sin(), lock_read.cos());
     let largest = [c.load, twin.p, twin.r[0], twin.r[1]]
         .into_iter()

@@ -12,6 +12,7 @@
 //! cos λ_кр = ρ/L. The twin is [`crate::cam::force`]'s (`rocker_force`, `rocker_locking`).
 
 use super::draw::{angle_mark, arrow, thin_line, turned};
+use super::guide::jams;
 use super::incline::MIN_CROSSING_DEG;
 use super::{
     friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Reading,
@@ -292,24 +293,16 @@ pub(super) fn solve(
 ) -> Result<Solved, FrictionError> {
     let (scheme, read) = scheme(case, c, ctx, wrap)?;
     let v = &c.pivot;
+    let rule = || {
+        format!(
+            "cos λ_кр = ρ/L, ρ = (d/2)·sin φ, d = {} m, L = {} m, f = {}",
+            v.diameter, v.arm, v.f
+        )
+    };
     if read.lock - c.angle < MIN_CROSSING_DEG.to_radians() || read.h <= 0.0 {
-        return Err(FrictionError::Impossible {
-            case: case.name.clone(),
-            why: format!(
-                "the rocker jams: λ = {:.2}° is not below the jamming angle λ_кр = {:.2}° \
-                 (cos λ_кр = ρ/L, ρ = (d/2)·sin φ, d = {} m, L = {} m, f = {}) by {MIN_CROSSING_DEG}°",
-                c.angle.to_degrees(),
-                read.lock.to_degrees(),
-                v.diameter,
-                v.arm,
-                v.f
-            ),
-        });
+        return Err(jams(case, "rocker", (c.angle, read.lock), rule()));
     }
-    let twin = pivot_twin(c).ok_or_else(|| FrictionError::Impossible {
-        case: case.name.clone(),
-        why: format!("the rocker jams at λ = {:.2}°", c.angle.to_degrees()),
-    })?;
+    let twin = pivot_twin(c).ok_or_else(|| jams(case, "rocker", (c.angle, read.lock), rule()))?;
     let name = &case.name;
     let readings: Vec<Reading> = vec![
         reading(
