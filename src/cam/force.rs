@@ -8,10 +8,12 @@
 //!   (the overhang) and l + b from K. Equilibrium of the rod with the resistance Q along its
 //!   axis and the bearing reactions R₁, R₂ (each with its friction f·R against the motion)
 //!   gives P = Q/(cos λ − f·sin λ·(2l + b)/b), locking at tg λ_кр = b/(f(2l + b)).
-//! * Rocker: the roller at the arm's end L, the pivot of diameter d. The pivot carries the
-//!   whole of P, so P(L·cos λ − f·d/2) = M_с and the rocker locks at cos λ_кр = f·d/(2L). The
-//!   lecture's M_тр = P^n·f·d/2 takes the pivot's load as P^n = P·sin λ alone, which gives
-//!   tg λ_кр = 2L/(f·d) ([`rocker_locking_lecture`]): an approximation, larger.
+//! * Rocker: the roller at the arm's end L, the pivot a journal of diameter d. The pivot
+//!   carries the whole of P, its reaction tangent to the friction circle ρ = (d/2)·sin φ
+//!   (lecture 11; ≈ f·d/2 for small φ), so P(L·cos λ − ρ) = M_с and the rocker locks at
+//!   cos λ_кр = ρ/L. The lecture's M_тр = P^n·f·d/2 takes the pivot's load as P^n = P·sin λ
+//!   alone, which gives tg λ_кр = 2L/(f·d) ([`rocker_locking_lecture`]): an approximation,
+//!   smaller while d/2 < L.
 //!
 //! Each has two routes: the closed form, and the equilibrium solved as the linear system of
 //! the free body's equations (forces along and across, moments), its locking angle found by
@@ -94,18 +96,26 @@ pub struct Pivot {
     pub f: f64,
 }
 
+impl Pivot {
+    /// The friction circle's radius ρ = (d/2)·sin φ, φ = arctg f, m (lecture 11; the
+    /// lecture's ρ ≈ f·d/2 for small φ).
+    pub fn rho(&self) -> f64 {
+        self.diameter / 2.0 * self.f.atan().sin()
+    }
+}
+
 /// The cam's force P on a rocker against the moment of resistance `m` (N·m) at the pressure
-/// angle `lambda`: P(L·cos λ − f·d/2) = M_с, the pivot carrying the whole of P; `None` when
-/// the rocker jams.
+/// angle `lambda`: P(L·cos λ − ρ) = M_с, the pivot carrying the whole of P; `None` when the
+/// rocker jams.
 pub fn rocker_force(m: f64, lambda: f64, p: &Pivot) -> Option<f64> {
-    let useful = p.arm * lambda.cos() - p.f * p.diameter / 2.0;
+    let useful = p.arm * lambda.cos() - p.rho();
     (useful > 0.0).then(|| m / useful)
 }
 
-/// The rocker's locking angle, cos λ_кр = f·d/(2L), radians (π/2 when f·d/(2L) ≥ 1 is
-/// impossible: it jams at every angle, 0 is returned).
+/// The rocker's locking angle, cos λ_кр = ρ/L, radians (when ρ ≥ L it jams at every angle:
+/// 0 is returned).
 pub fn rocker_locking(p: &Pivot) -> f64 {
-    let c = p.f * p.diameter / (2.0 * p.arm);
+    let c = p.rho() / p.arm;
     if c >= 1.0 {
         0.0
     } else {
@@ -118,15 +128,17 @@ pub fn rocker_locking_lecture(p: &Pivot) -> f64 {
     (2.0 * p.arm / (p.f * p.diameter)).atan()
 }
 
-/// The twin route for a rocker: the moment balance about the pivot, P^τ·L = M_с + f·(d/2)·|R|
-/// with the pivot's reaction R = −P found from the rocker's force balance (its components
-/// P^τ = P cos λ, P^n = P sin λ summed as vectors), solved for P as the bracketed root of the
-/// moment's residue; `None` when no finite P balances it.
+/// The twin route for a rocker: the moment balance about the pivot, P^τ·L = M_с + ρ·|R|
+/// (the friction couple of the journal, ρ = (d/2)·sin φ) with the pivot's reaction R = −P
+/// found from the rocker's force balance (its components P^τ = P cos λ, P^n = P sin λ summed
+/// as vectors), solved for P as the bracketed root of the moment's residue; `None` when no
+/// finite P balances it.
 pub fn rocker_equilibrium(m: f64, lambda: f64, p: &Pivot) -> Option<f64> {
+    let rho = p.diameter / 2.0 * (p.f / p.f.hypot(1.0));
     let residue = |force: f64| {
         let (pt, pn) = (force * lambda.cos(), force * lambda.sin());
         let reaction = pt.hypot(pn);
-        pt * p.arm - m - p.f * p.diameter / 2.0 * reaction
+        pt * p.arm - m - rho * reaction
     };
     // The residue is linear in P: it grows when the useful arm is positive.
     let mut hi = m.abs().max(1.0);
@@ -192,8 +204,9 @@ mod tests {
             let lambda = share * lock;
             let (x, y) = (rocker_force(q, lambda, &p).unwrap(), rocker_equilibrium(q, lambda, &p).unwrap());
             prop_assert!((x - y).abs() <= 1e-9 * x, "{x} {y}");
-            // The lecture's M_тр = P^n·f·d/2 understates the pivot's load: its angle is larger.
-            prop_assert!(rocker_locking_lecture(&p) > rocker_locking(&p));
+            // The lecture's M_тр = P^n·f·d/2 counts the pivot's load as P^n only but its
+            // friction arm as f·d/2: with d/2 < L its angle is smaller.
+            prop_assert!(rocker_locking_lecture(&p) < rocker_locking(&p));
         }
     }
 
@@ -221,13 +234,15 @@ mod tests {
         // At λ = 0 the guide carries nothing: P = Q.
         let a = translating_forces(100.0, 0.0, &g).unwrap();
         assert!((a.p - 100.0).abs() < 1e-12 && a.r1 == 0.0 && a.r2 == 0.0);
-        // A rocker L = 120 mm (seed 000) in a pivot d = 20 mm, f = 0,1: cos λ_кр = 1/120.
+        // A rocker L = 120 mm (seed 000) in a pivot d = 20 mm, f = 0,1: ρ = 10·sin(arctg 0,1)
+        // = 0,995037 mm, cos λ_кр = ρ/L: λ_кр = 89,52490°.
         let p = Pivot {
             arm: 0.12,
             diameter: 0.02,
             f: 0.1,
         };
-        assert!((rocker_locking(&p) - (1.0f64 / 120.0).acos()).abs() < 1e-15);
+        assert!((p.rho() - 0.01 * 0.1 / 1.01f64.sqrt()).abs() < 1e-18);
+        assert!((rocker_locking(&p).to_degrees() - 89.524899).abs() < 1e-6);
         assert!((rocker_locking_lecture(&p) - 120f64.atan()).abs() < 1e-15);
     }
 }

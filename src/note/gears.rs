@@ -79,7 +79,7 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 const INV: &str = "op(\"inv\")";
 
 /// An angle (rad) in degrees in a formula: `26,581°`.
-fn deg(a: f64, lang: Lang) -> String {
+pub(super) fn deg(a: f64, lang: Lang) -> String {
     format!("{}°", num(a.to_degrees(), 5, lang))
 }
 

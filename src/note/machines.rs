@@ -400,6 +400,7 @@ pub(super) fn others(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         of_scene(w, caption, |r| {
             r.position().is_none() || r.key.subject.ends_with("_f")
         });
+        super::friction::followers(w);
         w.figures((PlateKind::Friction, None), |_| true, |own| own.to_string());
     }
     Ok(())

@@ -16,13 +16,15 @@ const MAX_FORCE: f64 = 1e9;
 /// The largest coefficient of friction a scene may give.
 const MAX_F: f64 = 5.0;
 /// The kinds, as written.
-const KINDS: [(&str, Kind); 6] = [
+const KINDS: [(&str, Kind); 8] = [
     ("incline", Kind::Incline),
     ("wedge", Kind::Wedge),
     ("screw", Kind::Screw),
     ("journal", Kind::Journal),
     ("rolling", Kind::Rolling),
     ("slider", Kind::Slider),
+    ("guide", Kind::Guide),
+    ("pivot", Kind::Pivot),
 ];
 
 /// The kind of a friction case a scene names.
@@ -34,6 +36,8 @@ enum Kind {
     Journal,
     Rolling,
     Slider,
+    Guide,
+    Pivot,
 }
 
 impl Kind {
@@ -54,6 +58,8 @@ impl Kind {
             Kind::Journal => &["load", "f", "radius", "rotation"],
             Kind::Rolling => &["load", "roller_weight", "diameter", "k1", "k2", "f1", "f2"],
             Kind::Slider => &["load", "f", "f0", "angle"],
+            Kind::Guide => &["load", "f", "angle", "length", "overhang"],
+            Kind::Pivot => &["moment", "f", "angle", "arm", "diameter"],
         }
     }
 }
@@ -90,6 +96,10 @@ pub(crate) struct RawCase {
     pub k2: Option<f64>,
     pub f1: Option<f64>,
     pub f2: Option<f64>,
+    pub length: Option<f64>,
+    pub overhang: Option<f64>,
+    pub moment: Option<f64>,
+    pub arm: Option<f64>,
 }
 
 impl RawCase {
@@ -111,6 +121,10 @@ impl RawCase {
             ("k2", self.k2),
             ("f1", self.f1),
             ("f2", self.f2),
+            ("length", self.length),
+            ("overhang", self.overhang),
+            ("moment", self.moment),
+            ("arm", self.arm),
         ];
         let words = [("motion", &self.motion), ("rotation", &self.rotation)];
         numbers
@@ -175,6 +189,8 @@ pub(crate) fn friction(check: &mut Checker, raw: Option<RawFriction>) -> Vec<Fri
             }),
             Kind::Rolling => rolling(check, &base, c),
             Kind::Slider => slider(check, &base, c),
+            Kind::Guide => super::follower::guide(check, &base, c),
+            Kind::Pivot => super::follower::pivot(check, &base, c),
         };
         out.push(FrictionCase {
             name,
@@ -316,7 +332,7 @@ fn rolling(check: &mut Checker, base: &str, c: &RawCase) -> CaseKind {
 }
 
 /// A required force in N, > 0 and at most [`MAX_FORCE`].
-fn force(check: &mut Checker, base: &str, key: &str, v: Option<f64>) -> f64 {
+pub(super) fn force(check: &mut Checker, base: &str, key: &str, v: Option<f64>) -> f64 {
     let key = join(base, key);
     const WANT: &str = "a force > 0 N and at most 1e9 N";
     match check.required(&key, v, WANT) {
@@ -326,7 +342,7 @@ fn force(check: &mut Checker, base: &str, key: &str, v: Option<f64>) -> f64 {
 }
 
 /// A required coefficient of friction, > 0 and at most [`MAX_F`].
-fn coefficient(check: &mut Checker, base: &str, key: &str, v: Option<f64>) -> f64 {
+pub(super) fn coefficient(check: &mut Checker, base: &str, key: &str, v: Option<f64>) -> f64 {
     let key = join(base, key);
     const WANT: &str = "a coefficient of friction > 0 and at most 5";
     match check.required(&key, v, WANT) {
@@ -337,7 +353,7 @@ fn coefficient(check: &mut Checker, base: &str, key: &str, v: Option<f64>) -> f6
 
 /// An angle in degrees within `(lo, hi)` (`lo` itself allowed when `closed`), in radians;
 /// `default` when the key is optional.
-fn angle(
+pub(super) fn angle(
     check: &mut Checker,
     base: &str,
     key: &str,

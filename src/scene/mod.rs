@@ -6,6 +6,7 @@ mod check;
 mod drawing;
 mod dynamics;
 mod error;
+mod follower;
 mod forces;
 mod friction;
 mod gear_values;

@@ -9,8 +9,8 @@ use super::layout::{lay_out_smallest, Block, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
 use crate::forces::friction::{
-    incline_twin, journal_twin, rolling_twin, screw_twin, slider_twin, wedge_twin, CaseKind,
-    Drawing, DrawingKind, Motion, SliderState, Solved,
+    guide_twin, incline_twin, journal_twin, pivot_twin, rolling_twin, screw_twin, slider_twin,
+    wedge_twin, CaseKind, Drawing, DrawingKind, Motion, SliderState, Solved,
 };
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang, Quantity};
@@ -39,6 +39,8 @@ fn what(kind: &CaseKind, d: DrawingKind, lang: Lang) -> String {
         (DrawingKind::Scheme, CaseKind::Journal(_)) => (FrictionText::Journal, None),
         (DrawingKind::Scheme, CaseKind::Rolling(_)) => (FrictionText::Rolling, None),
         (DrawingKind::Scheme, CaseKind::Slider(_)) => (FrictionText::Slider, None),
+        (DrawingKind::Scheme, CaseKind::Guide(_)) => (FrictionText::Guide, None),
+        (DrawingKind::Scheme, CaseKind::Pivot(_)) => (FrictionText::Pivot, None),
         (DrawingKind::Polygon | DrawingKind::Frictionless, _) => (FrictionText::Triangle, None),
         (DrawingKind::Flanks, _) => (FrictionText::Flanks, None),
         (DrawingKind::Balance, _) => (FrictionText::Balance, None),
@@ -123,20 +125,38 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
                 SliderState::Uniform => ("=", FrictionText::Uniform),
                 SliderState::Accelerating => (">", FrictionText::Accelerating),
             };
-            // At rest the static cone and the static friction's reserve.
-            let (phi, f) = if t.state == SliderState::Rest {
-                (format!("φ_{{0}} = {}", deg(t.phi0, lang)), "f_{0}")
+            // At rest the static cone, the static friction's reserve and the reaction that
+            // acts (−P) below the cone's limit; sliding, the reaction on the generator.
+            let (phi, f, r) = if t.state == SliderState::Rest {
+                (
+                    format!("φ_{{0}} = {}", deg(t.phi0, lang)),
+                    "f_{0}",
+                    format!(
+                        "R = P = {} {newton} < R_{{0}} = N/cos φ_{{0}} = {} {newton}",
+                        num(t.r, lang),
+                        num(t.r_limit, lang)
+                    ),
+                )
             } else {
-                (format!("φ = {}", deg(t.phi, lang)), "f")
+                (
+                    format!("φ = {}", deg(t.phi, lang)),
+                    "f",
+                    format!("R = N/cos φ = {} {newton}", num(t.r, lang)),
+                )
             };
-            vec![format!(
-                "{n}: N = P·cos α = {} {newton}, P_{{1}} = P·sin α = {} {newton}; ΔP = P_{{1}} − {f}·N = {} {newton}; α = {} {cmp} {phi} — {}",
-                num(t.n, lang),
-                num(t.p1, lang),
-                num(t.net, lang),
-                deg(c.alpha, lang),
-                state.get(lang)
-            )]
+            vec![
+                format!(
+                    "{n}: N = P·cos α = {} {newton}, P_{{1}} = P·sin α = {} {newton}; ΔP = P_{{1}} − {f}·N = {} {newton}",
+                    num(t.n, lang),
+                    num(t.p1, lang),
+                    num(t.net, lang),
+                ),
+                format!(
+                    "{n}: α = {} {cmp} {phi} — {}; {r}",
+                    deg(c.alpha, lang),
+                    state.get(lang)
+                ),
+            ]
         }
         CaseKind::Wedge(c) => {
             let t = wedge_twin(c);
@@ -173,6 +193,8 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
                 num(t.moment_textbook, lang)
             )]
         }
+        CaseKind::Guide(c) => guide_lines(n, c, lang),
+        CaseKind::Pivot(c) => pivot_lines(n, c, lang),
         CaseKind::Rolling(c) => {
             let t = rolling_twin(c);
             let lt = |ok: bool| if ok { "<" } else { "≥" };
@@ -206,6 +228,54 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
             ]
         }
     }
+}
+
+/// The closed forms of a cam's follower in its guide (case `n`): P and the bearings'
+/// reactions, the jamming angle against λ.
+fn guide_lines(n: usize, c: &crate::forces::friction::FollowerGuide, lang: Lang) -> Vec<String> {
+    let newton = unit_in("N", lang);
+    let Some(t) = guide_twin(c) else {
+        return Vec::new();
+    };
+    vec![
+        format!(
+            "{n}: P = Q/(cos λ − f·sin λ·(2l + b)/b) = {} {newton}; N_{{1}} = P·sin λ·(l + b)/b = {} {newton}, N_{{2}} = P·sin λ·l/b = {} {newton}; R = N·√(1 + f^2)",
+            num(t.p, lang),
+            num(t.n[0], lang),
+            num(t.n[1], lang)
+        ),
+        format!(
+            "{n}: tg λ_{{кр}} = b/(f·(2l + b)): λ_{{кр}} = {} > λ = {} — {}",
+            deg(t.lock, lang),
+            deg(c.angle, lang),
+            FrictionText::Moves.get(lang)
+        ),
+    ]
+}
+
+/// The closed forms of a cam's rocker in its pivot (case `n`): the friction circle, the
+/// couple's arm, P and the jamming angle against λ.
+fn pivot_lines(n: usize, c: &crate::forces::friction::RockerPivot, lang: Lang) -> Vec<String> {
+    let newton = unit_in("N", lang);
+    let metre = unit_in("m", lang);
+    let Some(t) = pivot_twin(c) else {
+        return Vec::new();
+    };
+    vec![
+        format!(
+            "{n}: ρ = (d/2)·sin φ = {} {metre}; h = L·cos λ − ρ = {} {metre}; P = M_{{с}}/h = {} {newton}",
+            num(t.rho, lang),
+            num(t.h, lang),
+            num(t.p, lang)
+        ),
+        format!(
+            "{n}: cos λ_{{кр}} = ρ/L: λ_{{кр}} = {} > λ = {} — {} (tg λ_{{кр}} = 2L/(f·d): {})",
+            deg(t.lock, lang),
+            deg(c.angle, lang),
+            FrictionText::Moves.get(lang),
+            deg(t.lock_lecture, lang)
+        ),
+    ]
 }
 
 /// A unit of the table in `lang`.

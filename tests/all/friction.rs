@@ -51,14 +51,17 @@ fn exact_reading_agrees_with_the_twins() {
     assert!(r.notes.iter().any(|n| n.contains("misprints")));
 }
 
-#[test]
-fn reading_to_half_a_millimetre_shows_percent_level_errors() {
-    let r = report(0.5);
-    let worst = r
-        .rel_errors()
+/// The largest relative error of a report's rows.
+pub(crate) fn worst(r: &tmm::Report) -> f64 {
+    r.rel_errors()
         .into_iter()
         .flatten()
-        .fold(0.0f64, |m, e| m.max(e.abs()));
+        .fold(0.0f64, |m, e| m.max(e.abs()))
+}
+
+#[test]
+fn reading_to_half_a_millimetre_shows_percent_level_errors() {
+    let worst = worst(&report(0.5));
     assert!(worst > 1e-3 && worst < 0.2, "{worst}");
 }
 

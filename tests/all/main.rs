@@ -23,6 +23,7 @@ mod dynamics;
 mod engine;
 mod forces;
 mod friction;
+mod friction_follower;
 mod fuzz_regressions;
 mod gears;
 mod guide_carrier;

@@ -172,6 +172,7 @@ rules! {
     rotor_static_balancing_texts_apart, rotor_static_balancing_inside_frame: "rotor-static" / "balancing",
     rotor_dynamic_balancing_texts_apart, rotor_dynamic_balancing_inside_frame: "rotor-dynamic" / "balancing",
     friction_texts_apart, friction_inside_frame: "friction" / "friction",
+    friction_follower_texts_apart, friction_follower_inside_frame: "friction-follower" / "friction",
     shaper_gears_texts_apart, shaper_gears_inside_frame: "shaper" / "gears",
     gears_pz1_texts_apart, gears_pz1_inside_frame: "gears-pz1" / "gears",
     gears_pz2_texts_apart, gears_pz2_inside_frame: "gears-pz2" / "gears",

@@ -147,6 +147,7 @@ plates! {
     rotor_static_balancing: "rotor-static" / "balancing",
     rotor_dynamic_balancing: "rotor-dynamic" / "balancing",
     friction_friction: "friction" / "friction",
+    friction_follower_friction: "friction-follower" / "friction",
     shaper_gears: "shaper" / "gears",
     gears_pz1_gears: "gears-pz1" / "gears",
     gears_pz2_gears: "gears-pz2" / "gears",

@@ -14,7 +14,7 @@ use crate::geom::{DVec2, Segment, Side};
 
 /// The smallest angle, degrees, between the lines of P and R that still closes a triangle a
 /// hand can draw; below it P would exceed ~29 Q and the motion is refused.
-pub(super) const MIN_CROSSING_DEG: f64 = 2.0;
+pub const MIN_CROSSING_DEG: f64 = 2.0;
 
 /// The closed form of uniform motion on an inclined plane.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,7 +1,9 @@
 //! Friction as the textbook draws it (seed 001, lectures 9–12): the friction angle and cone,
 //! the total reaction turned from the normal by φ against the relative velocity, uniform
-//! motion on an inclined plane, a slider's state against the static limit, the V-groove (wedge) slider, the screw, the revolute pair with
-//! its friction circle, and rolling friction (worked example W3).
+//! motion on an inclined plane, a slider's state against the static limit, the V-groove
+//! (wedge) slider, the screw, the revolute pair with its friction circle, rolling friction
+//! (worked example W3), and the friction that jams a cam's follower (lectures 15–16): a
+//! translating follower in the guide of two bearings, a rocker in its pivot.
 //!
 //! Every case is three things side by side: a **construction** through the recorder (the
 //! scheme with its loads, normal, friction cone or circle and reaction, and the force
@@ -20,8 +22,10 @@
 //! seed writes the ground reaction as `R_n1`; it is `R_n2 = Q + 2G`.
 
 mod draw;
+mod guide;
 mod incline;
 mod journal;
+mod pivot;
 mod rolling;
 mod screw;
 mod slider;
@@ -29,8 +33,11 @@ mod slider;
 mod tests;
 mod wedge;
 
+pub use guide::{guide_twin, GuideTwin};
+pub use incline::MIN_CROSSING_DEG;
 pub use incline::{incline_twin, InclineTwin};
 pub use journal::{journal_twin, JournalTwin};
+pub use pivot::{pivot_twin, PivotTwin};
 pub use rolling::{rolling_twin, RollingTwin, Slide};
 pub use screw::{screw_twin, ScrewTwin};
 pub use slider::{slider_twin, SliderState, SliderTwin};
@@ -226,6 +233,32 @@ pub struct Slider {
     pub alpha: f64,
 }
 
+/// A translating follower pushed by its cam at the pressure angle λ against the resistance
+/// Q along its axis, in a guide of two bearings (seed 001 lecture 15; the twin is
+/// [`crate::cam::force`]'s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FollowerGuide {
+    /// The resistance Q along the follower's axis, N.
+    pub load: f64,
+    /// The pressure angle λ, rad, in [0, π/2).
+    pub angle: f64,
+    /// The guide: its length b, the overhang l, f.
+    pub guide: crate::cam::force::Guide,
+}
+
+/// A rocker pushed by its cam at the pressure angle λ against the moment of resistance M_с,
+/// turning in a pivot with friction (seed 001 lecture 16; the twin is
+/// [`crate::cam::force`]'s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RockerPivot {
+    /// The moment of resistance M_с on the rocker, N·m.
+    pub moment: f64,
+    /// The pressure angle λ, rad, in [0, π/2).
+    pub angle: f64,
+    /// The pivot: the arm L, the journal's diameter d, f.
+    pub pivot: crate::cam::force::Pivot,
+}
+
 /// The kind of a friction case with its data (SI).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum CaseKind {
@@ -241,11 +274,15 @@ pub enum CaseKind {
     Rolling(Rolling),
     /// A slider's state: at rest, uniform, accelerating.
     Slider(Slider),
+    /// A cam's translating follower in its guide.
+    Guide(FollowerGuide),
+    /// A cam's rocker in its pivot.
+    Pivot(RockerPivot),
 }
 
 impl CaseKind {
     /// The scene word of the kind (`incline`, `wedge`, `screw`, `journal`, `rolling`,
-    /// `slider`).
+    /// `slider`, `guide`, `pivot`).
     pub fn word(&self) -> &'static str {
         match self {
             CaseKind::Incline(_) => "incline",
@@ -254,6 +291,8 @@ impl CaseKind {
             CaseKind::Journal(_) => "journal",
             CaseKind::Rolling(_) => "rolling",
             CaseKind::Slider(_) => "slider",
+            CaseKind::Guide(_) => "guide",
+            CaseKind::Pivot(_) => "pivot",
         }
     }
 }
@@ -422,6 +461,8 @@ pub fn solve(case: &FrictionCase, ctx: &Context) -> Result<Solved, FrictionError
         CaseKind::Journal(c) => journal::solve(case, c, ctx, &wrap),
         CaseKind::Rolling(c) => rolling::solve(case, c, ctx, &wrap),
         CaseKind::Slider(c) => slider::solve(case, c, ctx, &wrap),
+        CaseKind::Guide(c) => guide::solve(case, c, ctx, &wrap),
+        CaseKind::Pivot(c) => pivot::solve(case, c, ctx, &wrap),
     }
 }
 

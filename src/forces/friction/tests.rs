@@ -412,6 +412,25 @@ fn a_slider_is_at_rest_moves_uniformly_or_accelerates_as_its_force_meets_the_con
                     r.analytic
                 );
             }
+            // R is the reaction that acts: at rest −P (inside the cone, below the static
+            // limit N/cos φ₀), sliding N/cos φ on the generator.
+            let row = |q: &str| {
+                s.rows()
+                    .into_iter()
+                    .find(|r| r.quantity() == q)
+                    .unwrap_or_else(|| panic!("{q}"))
+            };
+            let (n, limit) = (p * alpha.cos(), p * alpha.cos() / f0.atan().cos());
+            let acting = if state == SliderState::Rest {
+                p
+            } else {
+                n / f.atan().cos()
+            };
+            assert!((row("R_s").analytic - acting).abs() < 1e-12 * p);
+            assert!((t.r_limit - limit).abs() < 1e-12 * p);
+            if state == SliderState::Rest {
+                assert!(row("R_s").graphical < limit);
+            }
             let word = match state {
                 SliderState::Rest => "at rest by the angles, at rest by the triangle",
                 SliderState::Uniform => {
@@ -423,5 +442,47 @@ fn a_slider_is_at_rest_moves_uniformly_or_accelerates_as_its_force_meets_the_con
             };
             assert!(s.notes[0].contains(word), "{}", s.notes[0]);
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The follower's guide and the rocker's pivot, constructed at drafting 0, equal their
+    /// twins over random data below the jamming angle; the guide's jamming angle is the one
+    /// where the closed form's P stops being finite.
+    #[test]
+    fn follower_constructions_equal_twins(
+        load in 1.0f64..1e5, f in 0.02f64..0.8, length in 0.01f64..0.2, overhang in 0.0f64..0.3,
+        moment in 0.1f64..1e3, arm in 0.03f64..0.5, ratio in 0.02f64..0.9, share in 0.0f64..0.95,
+    ) {
+        let guide = crate::cam::force::Guide { length, overhang, f };
+        let lock = (length / (f * (2.0 * overhang + length))).atan();
+        let pivot = crate::cam::force::Pivot { arm, diameter: 2.0 * arm * ratio, f };
+        let rho = arm * ratio * f / f.hypot(1.0);
+        let pivot_lock = (rho / arm).acos();
+        let mut kinds = Vec::new();
+        let top = lock - MIN_CROSSING_DEG.to_radians();
+        if top > 0.0 {
+            kinds.push(CaseKind::Guide(FollowerGuide { load, angle: share * top, guide }));
+        }
+        let top = pivot_lock - MIN_CROSSING_DEG.to_radians();
+        if top > 0.0 {
+            kinds.push(CaseKind::Pivot(RockerPivot { moment, angle: share * top, pivot }));
+        }
+        for kind in kinds {
+            let s = solve(&case("c", kind), &ctx(0.0)).map_err(|e| TestCaseError::fail(e.to_string()))?;
+            for r in &s.readings {
+                let scale = r.row.analytic.abs().max(1e-12);
+                prop_assert!((r.row.graphical - r.row.analytic).abs() <= 1e-9 * scale,
+                    "{}: {} vs {}", r.row.quantity(), r.row.graphical, r.row.analytic);
+            }
+            let want = if matches!(kind, CaseKind::Guide(_)) { lock } else { pivot_lock };
+            let read = s.readings.iter().find(|r| r.symbol == "λ_{кр}").map(|r| r.row.graphical);
+            prop_assert!(read.is_some_and(|x| (x - want).abs() <= 1e-9), "{read:?} {want}");
+        }
+        // Past the jamming angle the closed form gives no P.
+        let jammed = crate::cam::force::translating_forces(load, (lock + 1e-6).min(1.57), &guide);
+        prop_assert!(jammed.is_none());
     }
 }

@@ -11,8 +11,8 @@ pub(crate) mod symbols;
 
 pub(crate) use audit::AuditText;
 pub(crate) use linkage::Text;
-pub(crate) use machines::GearText;
-pub(super) use machines::{CamText, DynamicsText, FrictionText, RotorText};
+pub(super) use machines::{CamText, DynamicsText, RotorText};
+pub(crate) use machines::{FrictionText, GearText};
 pub(crate) use note::NoteText;
 pub(crate) use symbols::{quantity, subscripted};
 

@@ -317,6 +317,26 @@ catalogue! {
         BalancingTable => ("Уравновешивающие массы", "Зрівноважувальні маси", "The correcting masses"),
         FrictionSection => ("Трение в кинематических парах", "Тертя в кінематичних парах", "Friction in the kinematic pairs"),
         FrictionTable => ("Силы, моменты и КПД с учётом трения", "Сили, моменти і ККД з урахуванням тертя", "Forces, moments and efficiencies with friction"),
+        FollowerGuideWorked => (
+            "Кулачок давит на толкатель силой P по общей нормали под углом давления λ к оси; сопротивление Q — вдоль оси; опоры направляющей (на расстояниях l и l + b от точки контакта K) отвечают нормальными реакциями N₁, N₂, каждая с трением f·N против движения. Из равновесия толкателя (проекции на ось и поперёк неё, моменты относительно K):",
+            "Кулачок тисне на штовхач силою P по спільній нормалі під кутом тиску λ до осі; опір Q — уздовж осі; опори напрямної (на відстанях l і l + b від точки контакту K) відповідають нормальними реакціями N₁, N₂, кожна з тертям f·N проти руху. З рівноваги штовхача (проекції на вісь і поперек неї, моменти відносно K):",
+            "The cam pushes the follower with the force P along the common normal, at the pressure angle λ to its axis; the resistance Q acts along the axis; the guide's bearings (l and l + b from the contact K) answer with the normal reactions N₁, N₂, each with its friction f·N against the motion. The follower's equilibrium (along the axis, across it, moments about K) gives:"
+        ),
+        FollowerPivotWorked => (
+            "Опора коромысла (цапфа диаметром d) воспринимает всю силу P; её реакция R = −P, повёрнутая от нормали на угол трения φ, касается круга трения. Силы P и R образуют пару с плечом h, уравновешивающую момент сопротивления M_с:",
+            "Опора коромисла (цапфа діаметром d) сприймає всю силу P; її реакція R = −P, повернута від нормалі на кут тертя φ, дотикається до кола тертя. Сили P і R утворюють пару з плечем h, що врівноважує момент опору M_с:",
+            "The rocker's pivot (a journal of diameter d) carries the whole of P; its reaction R = −P, turned from the normal by the friction angle φ, is tangent to the friction circle. P and R make a couple of arm h that balances the moment of resistance M_с:"
+        ),
+        FollowerLock => (
+            "Механизм заклинивает (никакая сила P не сдвинет ведомое звено), когда угол давления достигает критического:",
+            "Механізм заклинює (жодна сила P не зрушить ведену ланку), коли кут тиску досягає критичного:",
+            "The mechanism jams (no force P moves the follower) when the pressure angle reaches the critical one:"
+        ),
+        FollowerLecture => (
+            "Лекционная оценка M_тр = P^n·f·d/2 (нагрузка опоры — лишь P^n = P·sin λ) даёт меньший угол:",
+            "Лекційна оцінка M_тр = P^n·f·d/2 (навантаження опори — лише P^n = P·sin λ) дає менший кут:",
+            "The lecture's estimate M_тр = P^n·f·d/2 (the pivot loaded by P^n = P·sin λ alone) gives a smaller angle:"
+        ),
         Conclusions => ("Выводы", "Висновки", "Conclusions"),
         ConclusionsErrors => (
             "Графические построения проверены аналитическим расчётом. Погрешности графических методов по величинам и методам — в таблицах ниже (δ — относительное расхождение графического значения с аналитическим).",

@@ -51,6 +51,8 @@ const SUBSCRIPTS: &[(&str, &str, &str)] = &[
     ("проф", "проф", "prof"),
     // огибающей: a generated tooth's deviation from the exact envelope, δ_env.
     ("огиб", "огиб", "env"),
+    // критический: the pressure angle at which a cam's follower jams, λ_cr.
+    ("кр", "кр", "cr"),
 ];
 
 fn cyrillic(c: char) -> bool {

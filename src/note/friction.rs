@@ -1,0 +1,154 @@
+//! The friction of a cam's follower worked in the note (seed 001 lectures 15–16): for each
+//! `guide` case the force P and the bearings' reactions from the rod's equilibrium, for each
+//! `pivot` case the friction circle, the couple's arm and P; each with its jamming angle.
+//! Symbols, numbers, result, as the other worked sections; the constructed values are in the
+//! friction table beside them.
+
+use super::gears::{deg, worked};
+use super::markup::{frac, num, sym, unit};
+use super::Writer;
+use crate::forces::friction::{guide_twin, pivot_twin, CaseKind, FollowerGuide, RockerPivot};
+use crate::sheets::captions::{unit_in, FrictionText, NoteText as T};
+
+/// Every follower case of the scene's friction, worked after its own title line
+/// (`Случай n: …` as the sheet numbers it).
+pub(super) fn followers(w: &mut Writer<'_, '_>) {
+    let cases = &w.session.scene().friction;
+    for (i, case) in cases.iter().enumerate() {
+        let (what, kind) = match case.kind {
+            CaseKind::Guide(_) => (FrictionText::Guide, case.kind),
+            CaseKind::Pivot(_) => (FrictionText::Pivot, case.kind),
+            _ => continue,
+        };
+        let title = format!("{} {}: {}", w.word(FrictionText::Case), i + 1, w.word(what));
+        w.doc.say(&title);
+        match kind {
+            CaseKind::Guide(c) => guide(w, &c),
+            CaseKind::Pivot(c) => pivot(w, &c),
+            _ => {}
+        }
+    }
+}
+
+/// A translating follower in its guide: P, N₁, N₂, R₁, R₂ and λ_кр.
+fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {
+    let Some(t) = guide_twin(c) else {
+        return;
+    };
+    let lang = w.lang;
+    let n = |x: f64| num(x, 4, lang);
+    let newton = unit(&unit_in("N", lang));
+    let mm = |x: f64| n(x * 1e3);
+    let g = &c.guide;
+    let (b, l, f) = (mm(g.length), mm(g.overhang), n(g.f));
+    let lambda = deg(c.angle, lang);
+    w.doc.say(w.word(T::FollowerGuideWorked));
+    worked(
+        w,
+        &sym("P"),
+        &frac(&sym("Q"), "cos λ - f sin λ (2 l + b)/b"),
+        &frac(
+            &n(c.load),
+            &format!("cos {lambda} - {f} dot sin {lambda} dot (2 dot {l} + {b})/{b}"),
+        ),
+        format!("{}{newton}", n(t.p)),
+    );
+    for (i, arm, value) in [(1, format!("({l} + {b})"), t.n[0]), (2, l.clone(), t.n[1])] {
+        let near = if i == 1 { "(l + b)" } else { "l" };
+        worked(
+            w,
+            &sym(&format!("N_{{{i}}}")),
+            &frac(&format!("P sin λ dot {near}"), "b"),
+            &frac(&format!("{} dot sin {lambda} dot {arm}", n(t.p)), &b),
+            format!("{}{newton}", n(value)),
+        );
+        worked(
+            w,
+            &sym(&format!("R_{{{i}}}")),
+            &format!("{} sqrt(1 + f^2)", sym(&format!("N_{{{i}}}"))),
+            &format!("{} dot sqrt(1 + {f}^2)", n(value)),
+            format!("{}{newton}", n(t.r[i - 1])),
+        );
+    }
+    w.doc.say(w.word(T::FollowerLock));
+    worked(
+        w,
+        &format!("op(\"tg\") {}", sym("λ_{кр}")),
+        &frac("b", "f (2 l + b)"),
+        &frac(&b, &format!("{f} dot (2 dot {l} + {b})")),
+        n(t.lock.tan()),
+    );
+    w.doc.formula(&format!(
+        "{} = {} > λ = {lambda}",
+        sym("λ_{кр}"),
+        deg(t.lock, lang)
+    ));
+}
+
+/// A rocker in its pivot: φ, ρ, h, P and λ_кр, the lecture's estimate beside it.
+fn pivot(w: &mut Writer<'_, '_>, c: &RockerPivot) {
+    let Some(t) = pivot_twin(c) else {
+        return;
+    };
+    let lang = w.lang;
+    let n = |x: f64| num(x, 4, lang);
+    let (newton, mmu) = (unit(&unit_in("N", lang)), unit(&unit_in("mm", lang)));
+    let v = &c.pivot;
+    let (arm, d, f) = (n(v.arm * 1e3), n(v.diameter * 1e3), n(v.f));
+    let (lambda, phi) = (deg(c.angle, lang), deg(v.f.atan(), lang));
+    w.doc.say(w.word(T::FollowerPivotWorked));
+    worked(
+        w,
+        "φ",
+        "op(\"arctg\") f",
+        &format!("op(\"arctg\") {f}"),
+        phi.clone(),
+    );
+    worked(
+        w,
+        "ρ",
+        "d/2 dot sin φ",
+        &format!("{d}/2 dot sin {phi}"),
+        format!("{}{mmu}", n(t.rho * 1e3)),
+    );
+    worked(
+        w,
+        "h",
+        "L cos λ - ρ",
+        &format!("{arm} dot cos {lambda} - {}", n(t.rho * 1e3)),
+        format!("{}{mmu}", n(t.h * 1e3)),
+    );
+    worked(
+        w,
+        &sym("P"),
+        &frac(&sym("M_{с}"), "h"),
+        &frac(&n(c.moment), &format!("{} dot 10^(-3)", n(t.h * 1e3))),
+        format!("{}{newton}", n(t.p)),
+    );
+    w.doc.say(w.word(T::FollowerLock));
+    worked(
+        w,
+        &format!("cos {}", sym("λ_{кр}")),
+        &frac("ρ", "L"),
+        &frac(&n(t.rho * 1e3), &arm),
+        n(t.lock.cos()),
+    );
+    w.doc.formula(&format!(
+        "{} = {} > λ = {lambda}",
+        sym("λ_{кр}"),
+        deg(t.lock, lang)
+    ));
+    w.doc.say(w.word(T::FollowerLecture));
+    worked(
+        w,
+        &format!("op(\"tg\") {}", sym("λ_{кр}")),
+        &frac("2 L", "f d"),
+        &frac(&format!("2 dot {arm}"), &format!("{f} dot {d}")),
+        n(t.lock_lecture.tan()),
+    );
+    w.doc.formula(&format!(
+        "{} = {}",
+        sym("λ_{кр}"),
+        deg(t.lock_lecture, lang)
+    ));
+}
