@@ -1,8 +1,10 @@
 //! The rows of a force analysis (graphical against analytic, zero references against the
 //! mechanism's size) and its notes.
 
+use super::pair_friction::sliding_friction;
 use super::{Analysis, Load, LoadKind, PositionForces, SeedValue};
 use crate::check::{Key, Method, Row, Symbol};
+use crate::geom::DVec2;
 
 /// A row of position `label` (its zero reference set by [`zero_references`]).
 pub(super) fn row(
@@ -67,12 +69,15 @@ pub(super) fn reaction_rows(label: &str, suffix: &str, analysis: &Analysis) -> V
             continue;
         };
         let subject = format!("{}_{}", r.pair.from, r.pair.to);
+        // The total reaction: in a sliding pair with friction the normal reaction N solved
+        // plus the friction force f·|N| the route carried as a load (turned by φ).
+        let total = |n: DVec2, loads: &[Load]| (n + sliding_friction(loads, r.pair)).length();
         push(
             Symbol::Reaction,
             subject.clone(),
             Method::Polygon,
-            g.force.length(),
-            r.force.length(),
+            total(g.force, &analysis.loads),
+            total(r.force, &analysis.loads_exact),
         );
         if let (Some(gs), Some(s)) = (g.offset, r.offset) {
             push(Symbol::Length, subject, Method::Polygon, gs, s);

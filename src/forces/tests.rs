@@ -282,6 +282,7 @@ proptest! {
         let gained = (w.analysis.twin.m_bal - c.twin.m_bal) * W1;
         prop_assert!((gained + w.lost).abs() <= REL * (mb + c.twin.m_bal.abs()) * W1.abs(), "{gained} vs {}", w.lost);
         let omega = |l: usize| if l == 0 { 0.0 } else { c.exact.omega[l] };
+        let rows = super::rows::reaction_rows("p", "_f", &w.analysis);
         for r in &w.analysis.twin.reactions {
             let (from, to) = (r.pair.from, r.pair.to);
             match r.pair.kind {
@@ -299,6 +300,13 @@ proptest! {
                     let total = r.force + fl.force;
                     let turned = r.force.angle_to(total).abs();
                     prop_assert!((turned - friction_angle(f)).abs() <= 1e-9, "turned {turned} vs φ {}", friction_angle(f));
+                    // The row R_i_j_f is that total reaction, N·√(1 + f²), by both routes
+                    // (not the normal force N the analysis solves for).
+                    let q = format!("R_{from}_{to}_f");
+                    let row = rows.iter().find(|x| x.quantity() == q).expect("the row");
+                    let want = r.force.length() * (1.0 + f * f).sqrt();
+                    prop_assert!((row.analytic - want).abs() <= 1e-9 * big, "{q}: {} vs N√(1 + f²) = {want}", row.analytic);
+                    prop_assert!((row.graphical - want).abs() <= 1e-9 * big, "{q}: {} vs {want}", row.graphical);
                 }
                 PairKind::Revolute(k) => {
                     let name = format!("M_{{тр{from}-{to}}}");

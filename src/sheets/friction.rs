@@ -123,20 +123,38 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
                 SliderState::Uniform => ("=", FrictionText::Uniform),
                 SliderState::Accelerating => (">", FrictionText::Accelerating),
             };
-            // At rest the static cone and the static friction's reserve.
-            let (phi, f) = if t.state == SliderState::Rest {
-                (format!("φ_{{0}} = {}", deg(t.phi0, lang)), "f_{0}")
+            // At rest the static cone, the static friction's reserve and the reaction that
+            // acts (−P) below the cone's limit; sliding, the reaction on the generator.
+            let (phi, f, r) = if t.state == SliderState::Rest {
+                (
+                    format!("φ_{{0}} = {}", deg(t.phi0, lang)),
+                    "f_{0}",
+                    format!(
+                        "R = P = {} {newton} < R_{{0}} = N/cos φ_{{0}} = {} {newton}",
+                        num(t.r, lang),
+                        num(t.r_limit, lang)
+                    ),
+                )
             } else {
-                (format!("φ = {}", deg(t.phi, lang)), "f")
+                (
+                    format!("φ = {}", deg(t.phi, lang)),
+                    "f",
+                    format!("R = N/cos φ = {} {newton}", num(t.r, lang)),
+                )
             };
-            vec![format!(
-                "{n}: N = P·cos α = {} {newton}, P_{{1}} = P·sin α = {} {newton}; ΔP = P_{{1}} − {f}·N = {} {newton}; α = {} {cmp} {phi} — {}",
-                num(t.n, lang),
-                num(t.p1, lang),
-                num(t.net, lang),
-                deg(c.alpha, lang),
-                state.get(lang)
-            )]
+            vec![
+                format!(
+                    "{n}: N = P·cos α = {} {newton}, P_{{1}} = P·sin α = {} {newton}; ΔP = P_{{1}} − {f}·N = {} {newton}",
+                    num(t.n, lang),
+                    num(t.p1, lang),
+                    num(t.net, lang),
+                ),
+                format!(
+                    "{n}: α = {} {cmp} {phi} — {}; {r}",
+                    deg(c.alpha, lang),
+                    state.get(lang)
+                ),
+            ]
         }
         CaseKind::Wedge(c) => {
             let t = wedge_twin(c);

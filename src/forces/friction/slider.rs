@@ -10,6 +10,10 @@
 //! along the plane: a negative F_и is the static friction's reserve P₁ − f₀·N, the slider
 //! stays; otherwise the triangle with R along the sliding cone's generator (φ) measures the
 //! net force ΔP = P₁ − f·N driving it (zero: uniform motion).
+//!
+//! `R_<name>` is the total reaction that acts: sliding, N/cos φ on the generator; at rest
+//! −P, inside the cone (R₀ + F_и read as the triangle's closing side), below the static
+//! cone's limit N/cos φ₀ (the side R₀, stated on the sheet) by up to 1/cos φ₀.
 
 use super::draw::{angle_mark, arrow, cone, thin_line, triangle, turned};
 use super::{
@@ -45,8 +49,12 @@ pub struct SliderTwin {
     pub n: f64,
     /// P₁ = P·sin α, N.
     pub p1: f64,
-    /// The total reaction on its cone's generator, N/cos φ (at rest N/cos φ₀), N.
+    /// The total reaction that acts, N: sliding, on the sliding cone's generator, N/cos φ;
+    /// at rest, −P (the static friction F₀ = P₁ balances P₁): √(N² + P₁²).
     pub r: f64,
+    /// The static cone's limit N/cos φ₀, N: the largest reaction the plane can give before
+    /// the slider moves (what R₀ of the triangle on the static generator measures).
+    pub r_limit: f64,
     /// ΔP = P₁ − f·N = P(sin α − f cos α), N: the net force along the plane when it slides;
     /// at rest P₁ − f₀·N < 0, the static friction's reserve.
     pub net: f64,
@@ -77,7 +85,12 @@ pub fn slider_twin(c: &Slider) -> SliderTwin {
         phi0,
         n,
         p1,
-        r: n / phi_state.cos(),
+        r: if state == SliderState::Rest {
+            n.hypot(p1)
+        } else {
+            n / phi_state.cos()
+        },
+        r_limit: n / phi0.cos(),
         net: p1 - f_state * n,
         state,
     }
@@ -88,15 +101,16 @@ fn p_vector(c: &Slider) -> DVec2 {
     DVec2::new(c.alpha.sin(), -c.alpha.cos()) * c.load
 }
 
-/// Construct the case and read it.
-pub(super) fn solve(
+/// The scheme: the plane, the slider, P at α from the normal, the friction cone and the
+/// reaction that acts — on the sliding cone's generator when the triangles say the slider
+/// moves, along −P inside the static cone when it stays (`rest`). Returns it with φ read off
+/// the cone's base.
+fn scheme(
     case: &FrictionCase,
     c: &Slider,
+    rest: bool,
     ctx: &Context,
-    wrap: &dyn Fn(ConstructionError) -> FrictionError,
-) -> Result<Solved, FrictionError> {
-    let twin = slider_twin(c);
-    // The scheme: the plane, the slider, P, the cone and R.
+) -> Result<(Drawing, f64), FrictionError> {
     let mut rec = case.schematic_recorder(ctx)?;
     rec.draw(
         "the plane",
@@ -140,10 +154,42 @@ pub(super) fn solve(
         "α",
     );
     let (left, _, top) = cone(&mut rec, DVec2::ZERO, DVec2::Y, c.f, 28.0);
-    let r_dir = turned(DVec2::Y, twin.phi);
+    if rest && c.f0 > c.f {
+        // The static cone (φ₀) the reaction stays within.
+        for side in [1.0, -1.0] {
+            rec.draw(
+                "the static friction cone's generator at φ₀",
+                Item::Segment(Segment::new(
+                    DVec2::ZERO,
+                    DVec2::new(-side * c.f0 * 28.0, 28.0),
+                )),
+                Role::Construction,
+                &[],
+            );
+        }
+        angle_mark(
+            &mut rec,
+            "φ₀, the static cone",
+            DVec2::ZERO,
+            22.0,
+            (DVec2::Y, DVec2::new(c.f0, 1.0)),
+            "φ_{0}",
+        );
+    }
+    let (note, r_dir) = if rest {
+        (
+            "the reaction R = −P inside the cone: the slider stays",
+            -p_dir,
+        )
+    } else {
+        (
+            "the total reaction R on the cone's generator",
+            turned(DVec2::Y, friction_angle(c.f)),
+        )
+    };
     arrow(
         &mut rec,
-        "the total reaction R on the cone's generator",
+        note,
         (DVec2::ZERO, r_dir * 32.0),
         Role::Result,
         "R",
@@ -151,19 +197,38 @@ pub(super) fn solve(
     );
     let across = rec.measure(top, left).read_mm;
     let along = rec.measure(DVec2::ZERO, top).read_mm;
-    let phi_read = across.atan2(along);
-    let scheme = Drawing {
+    let drawing = Drawing {
         kind: DrawingKind::Scheme,
         figure: rec.finish(),
         scaled: false,
         also: Vec::new(),
     };
-    // The triangle P + R + F_и = 0 with R along the static cone's generator (φ₀): a negative
-    // F_и is the static friction's reserve, the slider stays; otherwise (or at the limit)
-    // the triangle along the sliding cone's generator (φ) gives the net force.
-    let largest = [c.load, twin.r, twin.net.abs()]
-        .into_iter()
-        .fold(0.0_f64, f64::max);
+    Ok((drawing, across.atan2(along)))
+}
+
+/// What the force triangles read: the state they tell, the reaction that acts, N, ΔP (or the
+/// reserve) and the crossing angle of the deciding triangle.
+struct Triangles {
+    drawing: Drawing,
+    state: SliderState,
+    r: f64,
+    n: f64,
+    net: f64,
+    crossing_deg: f64,
+}
+
+/// The triangle P + R₀ + F_и = 0 with R₀ along the static cone's generator (φ₀): a negative
+/// F_и is the static friction's reserve, the slider stays, and the reaction that acts is
+/// R₀ + F_и = −P, the triangle's closing side read; otherwise (or at the limit) the triangle
+/// along the sliding cone's generator (φ) gives R and the net force.
+fn triangles(
+    case: &FrictionCase,
+    c: &Slider,
+    largest: f64,
+    ctx: &Context,
+    wrap: &dyn Fn(ConstructionError) -> FrictionError,
+) -> Result<Triangles, FrictionError> {
+    let (phi, phi0) = (friction_angle(c.f), friction_angle(c.f0));
     let mut rec = case.force_recorder(largest, ctx)?;
     // The net force is zero to the drawing's resolution (a rounding residue when exact).
     let eps = rec.scale().value() * ctx.drafting.resolution_mm().max(1e-9);
@@ -177,8 +242,10 @@ pub(super) fn solve(
             Role::Result,
         )
     };
-    let mut t = closed(&mut rec, twin.phi0, DVec2::ZERO, ["P", "R_{0}", "F_{и}"]).map_err(wrap)?;
+    let mut t = closed(&mut rec, phi0, DVec2::ZERO, ["P", "R_{0}", "F_{и}"]).map_err(wrap)?;
     let mut state = SliderState::Rest;
+    // At rest the reaction that acts closes P: R₀ and the reserve F_и summed, b → a.
+    let mut r = rec.measure(t.b, t.a).value;
     if t.r >= -eps {
         if c.f0 > c.f {
             let right = [t.a, t.b, t.c]
@@ -186,7 +253,7 @@ pub(super) fn solve(
                 .fold(f64::NEG_INFINITY, |m, p| m.max(p.x));
             t = closed(
                 &mut rec,
-                twin.phi,
+                phi,
                 DVec2::new(right + 20.0, 0.0),
                 ["P", "R", "F_{и}"],
             )
@@ -197,17 +264,41 @@ pub(super) fn solve(
         } else {
             SliderState::Accelerating
         };
+        r = t.p;
     }
     // N: R's component along the normal, projected across.
     let foot = DVec2::new(t.b.x, t.c.y);
     thin_line(&mut rec, "R's component along the normal: N", t.b, foot);
-    let n_read = rec.measure(t.b, foot).value;
-    let polygon = Drawing {
-        kind: DrawingKind::Polygon,
-        figure: rec.finish(),
-        scaled: true,
-        also: Vec::new(),
-    };
+    let n = rec.measure(t.b, foot).value;
+    Ok(Triangles {
+        drawing: Drawing {
+            kind: DrawingKind::Polygon,
+            figure: rec.finish(),
+            scaled: true,
+            also: Vec::new(),
+        },
+        state,
+        r,
+        n,
+        net: t.r,
+        crossing_deg: t.crossing_deg,
+    })
+}
+
+/// Construct the case and read it.
+pub(super) fn solve(
+    case: &FrictionCase,
+    c: &Slider,
+    ctx: &Context,
+    wrap: &dyn Fn(ConstructionError) -> FrictionError,
+) -> Result<Solved, FrictionError> {
+    let twin = slider_twin(c);
+    let largest = [c.load, twin.r, twin.r_limit, twin.net.abs()]
+        .into_iter()
+        .fold(0.0_f64, f64::max);
+    let t = triangles(case, c, largest, ctx, wrap)?;
+    let state = t.state;
+    let (scheme, phi_read) = scheme(case, c, state == SliderState::Rest, ctx)?;
     let cond = Some(t.crossing_deg);
     let name = &case.name;
     let readings: Vec<Reading> = vec![
@@ -221,21 +312,15 @@ pub(super) fn solve(
         reading(
             "R",
             (Symbol::Reaction, subject("", name)),
-            t.p,
+            t.r,
             twin.r,
             cond,
         ),
-        reading(
-            "N",
-            (Symbol::Force, subject("N", name)),
-            n_read,
-            twin.n,
-            cond,
-        ),
+        reading("N", (Symbol::Force, subject("N", name)), t.n, twin.n, cond),
         reading(
             "ΔP",
             (Symbol::Force, subject("dP", name)),
-            t.r,
+            t.net,
             twin.net,
             cond,
         ),
@@ -252,11 +337,11 @@ pub(super) fn solve(
         twin.phi0.to_degrees(),
         word(twin.state),
         word(state),
-        t.r
+        t.net
     )];
     Ok(Solved {
         case: case.clone(),
-        drawings: vec![scheme, polygon],
+        drawings: vec![scheme, t.drawing],
         readings,
         notes,
     })

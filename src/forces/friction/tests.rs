@@ -412,6 +412,25 @@ fn a_slider_is_at_rest_moves_uniformly_or_accelerates_as_its_force_meets_the_con
                     r.analytic
                 );
             }
+            // R is the reaction that acts: at rest −P (inside the cone, below the static
+            // limit N/cos φ₀), sliding N/cos φ on the generator.
+            let row = |q: &str| {
+                s.rows()
+                    .into_iter()
+                    .find(|r| r.quantity() == q)
+                    .unwrap_or_else(|| panic!("{q}"))
+            };
+            let (n, limit) = (p * alpha.cos(), p * alpha.cos() / f0.atan().cos());
+            let acting = if state == SliderState::Rest {
+                p
+            } else {
+                n / f.atan().cos()
+            };
+            assert!((row("R_s").analytic - acting).abs() < 1e-12 * p);
+            assert!((t.r_limit - limit).abs() < 1e-12 * p);
+            if state == SliderState::Rest {
+                assert!(row("R_s").graphical < limit);
+            }
             let word = match state {
                 SliderState::Rest => "at rest by the angles, at rest by the triangle",
                 SliderState::Uniform => {

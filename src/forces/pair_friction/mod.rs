@@ -144,13 +144,7 @@ pub fn friction_loads_of(
                 let shift = u * r.offset.unwrap_or(0.0);
                 let force = |l: usize, other: usize, f: DVec2| Load {
                     shift,
-                    ..Load::force(
-                        l,
-                        LoadKind::Friction,
-                        format!("F_{{тр{other}-{l}}}"),
-                        f,
-                        reference,
-                    )
+                    ..Load::force(l, LoadKind::Friction, sliding_name(other, l), f, reference)
                 };
                 push(to, force(to, from, f));
                 push(from, force(from, to, -f));
@@ -158,6 +152,26 @@ pub fn friction_loads_of(
         }
     }
     out
+}
+
+/// The name of the sliding friction force of link `from` on link `to`: `F_{тр0-3}`.
+fn sliding_name(from: usize, to: usize) -> String {
+    format!("F_{{тр{from}-{to}}}")
+}
+
+/// The sliding friction force among `loads` that the pair's `from` link exerts on its `to`
+/// link (zero when there is none: a revolute pair, a pair at rest, no friction): with the
+/// normal reaction N it makes the total reaction N + F, turned from the normal by φ.
+pub fn sliding_friction(loads: &[Load], pair: Pair) -> DVec2 {
+    if !matches!(pair.kind, PairKind::Prismatic { .. }) {
+        return DVec2::ZERO;
+    }
+    let name = sliding_name(pair.from, pair.to);
+    loads
+        .iter()
+        .filter(|l| l.kind == LoadKind::Friction && l.link == pair.to && l.name == name)
+        .map(|l| l.force)
+        .sum()
 }
 
 /// The power of the friction loads, W (never positive).
