@@ -261,13 +261,25 @@ pub enum CamError {
     /// The tolerances of the figures cannot be set up.
     #[error("cam: tolerances: {0}")]
     Tolerances(String),
-    /// The flat-faced rocker cannot be made.
+    /// The flat-faced rocker cannot be made (boxed: a construction's error is large).
     #[error(transparent)]
-    FlatRocker(#[from] flat_rocker::FlatRockerError),
+    FlatRocker(Box<flat_rocker::FlatRockerError>),
     /// The translating cam cannot be made.
     #[error(transparent)]
-    Sliding(#[from] sliding::SlidingError),
+    Sliding(Box<sliding::SlidingError>),
     /// A builder was handed a layout it does not make (a defect of the caller).
     #[error("cam: {0}")]
     Layout(&'static str),
+}
+
+impl From<flat_rocker::FlatRockerError> for CamError {
+    fn from(e: flat_rocker::FlatRockerError) -> Self {
+        CamError::FlatRocker(Box::new(e))
+    }
+}
+
+impl From<sliding::SlidingError> for CamError {
+    fn from(e: sliding::SlidingError) -> Self {
+        CamError::Sliding(Box::new(e))
+    }
 }
