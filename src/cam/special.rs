@@ -16,7 +16,7 @@ use crate::scale::{Quantity, Scale};
 
 /// The centre distance a of a flat-faced rocker is drawn at most this long, mm: the face
 /// lines reach from the turned pivots (on the circle a about O₁) to the profile.
-const CENTRES_MM: f64 = 100.0;
+const CENTRES_MM: f64 = 120.0;
 /// The travel X of a translating cam is drawn at most this long, mm.
 const TRAVEL_MM: f64 = 400.0;
 
