@@ -58,8 +58,13 @@ impl Cam {
 ///
 /// # Errors
 /// A failed integration, no admissible centre, a roller not smaller than the base radius,
-/// no drawing scale.
+/// no drawing scale, a layout other than the turning cam's.
 pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
+    if spec.layout != super::Layout::Turning {
+        return Err(CamError::Layout(
+            "the flat-faced rocker and the translating cam are built by build_special",
+        ));
+    }
     if spec.rotation == Rotation::Cw {
         // A clockwise cam is the mirror image of a counter-clockwise one whose offset lies on
         // the other side of the centre.

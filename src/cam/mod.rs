@@ -32,6 +32,8 @@ pub mod motion;
 mod radius;
 mod rows;
 pub mod sliding;
+pub mod special;
+mod special_rows;
 #[cfg(test)]
 mod tests;
 
@@ -41,6 +43,7 @@ pub use diagrams::{Analogue, Diagrams};
 pub use inversion::Inversion;
 pub use law::{Law, Shock};
 pub use radius::RadiusConstruction;
+pub use special::{build_special, Special, SpecialProfile};
 
 use crate::scale::Scale;
 use thiserror::Error;
@@ -127,6 +130,22 @@ pub struct CamSpec {
     pub given: Given,
     /// The cam's sense of rotation (`rotation`).
     pub rotation: Rotation,
+    /// The mechanism's layout: the turning cam of [`build`], or one of the two cams built by
+    /// their own modules ([`special`]).
+    pub layout: Layout,
+}
+
+/// The cam mechanism's layout (`follower = "flat_rocker"`, `travel`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Layout {
+    /// The cam turns about O₁ and drives the `follower` ([`build`]).
+    Turning,
+    /// The cam turns and the rocker (the spec's follower) carries a flat face
+    /// ([`flat_rocker`]).
+    FlatRocker(flat_rocker::FlatRocker),
+    /// The cam slides along its guide and drives a translating roller follower across it
+    /// ([`sliding`]).
+    Sliding(sliding::Sliding),
 }
 
 /// How the follower is kept on the cam (`closure = "geometric" | "force"`).
@@ -242,4 +261,25 @@ pub enum CamError {
     /// The tolerances of the figures cannot be set up.
     #[error("cam: tolerances: {0}")]
     Tolerances(String),
+    /// The flat-faced rocker cannot be made (boxed: a construction's error is large).
+    #[error(transparent)]
+    FlatRocker(Box<flat_rocker::FlatRockerError>),
+    /// The translating cam cannot be made.
+    #[error(transparent)]
+    Sliding(Box<sliding::SlidingError>),
+    /// A builder was handed a layout it does not make (a defect of the caller).
+    #[error("cam: {0}")]
+    Layout(&'static str),
+}
+
+impl From<flat_rocker::FlatRockerError> for CamError {
+    fn from(e: flat_rocker::FlatRockerError) -> Self {
+        CamError::FlatRocker(Box::new(e))
+    }
+}
+
+impl From<sliding::SlidingError> for CamError {
+    fn from(e: sliding::SlidingError) -> Self {
+        CamError::Sliding(Box::new(e))
+    }
 }

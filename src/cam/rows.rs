@@ -5,10 +5,12 @@
 
 use super::construct::Cam;
 use super::deviation::{deviation, exact_profile};
+use super::diagrams::Diagrams;
 use super::exact;
 use super::follower::{to_cam, Placement};
+use super::motion::Point;
 use super::motion::{motion, Motion};
-use super::{Closure, Follower, Given, Law, Rotation, Shock};
+use super::{CamSpec, Closure, Follower, Given, Law, Rotation, Shock};
 use crate::check::{
     self, At, BaseUsed, Cusp, Finding, Key, Limit, Method, Note, RadiusBasis, Row, Symbol,
 };
@@ -175,38 +177,7 @@ impl Cam {
     /// (combined diagram), the pressure or transmission angle and the profile's radius
     /// vector per point, the profile deviation, ρ_min and the admissible roller (inversion).
     pub fn rows(&self) -> Vec<Row> {
-        let mut out = Vec::new();
-        let ex = self.exact_motion();
-        let big = |f: fn(&Motion) -> f64| ex.iter().map(|m| f(m).abs()).fold(0.0, f64::max);
-        let (ss, sv, sa) = (big(|m| m.s), big(|m| m.ds), big(|m| m.d2s));
-        let d = &self.diagrams;
-        // The diagrams integrated from d²S/dφ², or differentiated from S by chords.
-        let method = if self.spec.given == Given::S {
-            Method::DiagramChords
-        } else {
-            Method::Integration
-        };
-        for (i, p) in self.points.iter().enumerate() {
-            let at = || At::Position(p.label.clone());
-            let e = ex[i];
-            out.push(row(Symbol::Displacement, at(), method, d.s[i], e.s, ss));
-            out.push(row(
-                Symbol::VelocityAnalogue,
-                at(),
-                method,
-                d.ds[i],
-                e.ds,
-                sv,
-            ));
-            out.push(row(
-                Symbol::AccelerationAnalogue,
-                at(),
-                method,
-                d.d2s[i],
-                e.d2s,
-                sa,
-            ));
-        }
+        let mut out = diagram_rows(&self.spec, &self.points, &self.diagrams);
         let r = &self.radius;
         let r_exact = self.exact_r_min();
         out.push(subject(
@@ -310,50 +281,8 @@ impl Cam {
                 "cam: it turns clockwise: constructed as its mirror image (counter-clockwise, the offset on the other side) and drawn mirrored back; the numbers are the same",
             ));
         }
+        out.extend(law_notes(s, &self.points, &self.diagrams));
         let st = s.starts();
-        for (name, law, from, to) in [
-            ("rise", s.rise, st[0], st[1]),
-            ("return", s.ret, st[2], st[3]),
-        ] {
-            let what = match law {
-                Law::ConstantAcceleration { ratio } => {
-                    format!("constant acceleration \"+ −\" (ratio {})", num(ratio))
-                }
-                other => other.key().to_string(),
-            };
-            let lead = format!("cam: {name} {}°–{}°: law {what}; ", deg(from), deg(to));
-            out.push(match law.shock() {
-                Shock::Rigid => Note::finding(
-                    lead,
-                    Finding::RigidShock {
-                        from,
-                        to,
-                        jump: s.stroke / (to - from),
-                    },
-                ),
-                Shock::Soft => Note::text(lead + "soft shocks: the acceleration jumps (finite)"),
-                Shock::None => Note::text(lead + "no shock"),
-            });
-        }
-        if s.law_assumed {
-            out.push(Note::text(format!(
-                "cam: the source's diagrams are lost: the law of the rise ({}) and of the return ({}) is assumed",
-                s.rise.key(),
-                s.ret.key()
-            )));
-        }
-        let d = &self.diagrams;
-        let top = self
-            .points
-            .iter()
-            .position(|p| p.last)
-            .and_then(|i| d.s.get(i))
-            .copied()
-            .unwrap_or(0.0);
-        out.push(Note::text(format!(
-            "cam: equal-return check: dS/dφ at the end of the rise = {} m, of the return = {} m (0 exact); S at the end of the rise y_max·μ_S = {} m against the stroke {} m",
-            num(d.ds_ends[0]), num(d.ds_ends[1]), num(top), num(s.stroke)
-        )));
         let r = &self.radius;
         let r_exact = self.exact_r_min();
         let basis = self.radius_basis();
@@ -493,4 +422,92 @@ impl Cam {
         }
         out
     }
+}
+
+/// S, dS/dφ, d²S/dφ² per point read off the diagrams against the law (integrated from
+/// d²S/dφ², or differentiated from S by chords), each against its largest exact value.
+pub(super) fn diagram_rows(spec: &CamSpec, points: &[Point], d: &Diagrams) -> Vec<Row> {
+    let ex: Vec<Motion> = points
+        .iter()
+        .map(|p| motion(spec, p.phi, p.after))
+        .collect();
+    let big = |f: fn(&Motion) -> f64| ex.iter().map(|m| f(m).abs()).fold(0.0, f64::max);
+    let (ss, sv, sa) = (big(|m| m.s), big(|m| m.ds), big(|m| m.d2s));
+    let method = if spec.given == Given::S {
+        Method::DiagramChords
+    } else {
+        Method::Integration
+    };
+    let mut out = Vec::with_capacity(3 * points.len());
+    for (i, p) in points.iter().enumerate() {
+        let at = || At::Position(p.label.clone());
+        let e = ex[i];
+        out.push(row(Symbol::Displacement, at(), method, d.s[i], e.s, ss));
+        out.push(row(
+            Symbol::VelocityAnalogue,
+            at(),
+            method,
+            d.ds[i],
+            e.ds,
+            sv,
+        ));
+        out.push(row(
+            Symbol::AccelerationAnalogue,
+            at(),
+            method,
+            d.d2s[i],
+            e.d2s,
+            sa,
+        ));
+    }
+    out
+}
+
+/// The notes of the law and its diagrams: each phase's law and shocks, an assumed law, the
+/// equal-return check read off the diagrams.
+pub(super) fn law_notes(s: &CamSpec, points: &[Point], d: &Diagrams) -> Vec<Note> {
+    let mut out = Vec::new();
+    let st = s.starts();
+    for (name, law, from, to) in [
+        ("rise", s.rise, st[0], st[1]),
+        ("return", s.ret, st[2], st[3]),
+    ] {
+        let what = match law {
+            Law::ConstantAcceleration { ratio } => {
+                format!("constant acceleration \"+ −\" (ratio {})", num(ratio))
+            }
+            other => other.key().to_string(),
+        };
+        let lead = format!("cam: {name} {}°–{}°: law {what}; ", deg(from), deg(to));
+        out.push(match law.shock() {
+            Shock::Rigid => Note::finding(
+                lead,
+                Finding::RigidShock {
+                    from,
+                    to,
+                    jump: s.stroke / (to - from),
+                },
+            ),
+            Shock::Soft => Note::text(lead + "soft shocks: the acceleration jumps (finite)"),
+            Shock::None => Note::text(lead + "no shock"),
+        });
+    }
+    if s.law_assumed {
+        out.push(Note::text(format!(
+                "cam: the source's diagrams are lost: the law of the rise ({}) and of the return ({}) is assumed",
+                s.rise.key(),
+                s.ret.key()
+            )));
+    }
+    let top = points
+        .iter()
+        .position(|p| p.last)
+        .and_then(|i| d.s.get(i))
+        .copied()
+        .unwrap_or(0.0);
+    out.push(Note::text(format!(
+            "cam: equal-return check: dS/dφ at the end of the rise = {} m, of the return = {} m (0 exact); S at the end of the rise y_max·μ_S = {} m against the stroke {} m",
+            num(d.ds_ends[0]), num(d.ds_ends[1]), num(top), num(s.stroke)
+        )));
+    out
 }

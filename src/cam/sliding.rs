@@ -147,6 +147,16 @@ pub fn exact_rho_min(spec: &CamSpec, s: &Sliding) -> Result<f64, SlidingError> {
     })
 }
 
+/// The shortest travel X_min that keeps the pressure angle within `lambda_max` where the
+/// scene checks it (the rise only under force closure), m: tg λ = S′·2π/X, so X_min =
+/// 2π·max|S′|/tg λ_max, with max|S′| the law's largest over every smooth piece, refined
+/// ([`super::extremum::max_over`]).
+pub fn exact_travel_min(spec: &CamSpec, lambda_max: f64) -> f64 {
+    let pieces = super::extremum::checked_pieces(spec);
+    let (v, _, _) = super::extremum::max_over(spec, &pieces, super::exact::DENSE, |m| m.ds.abs());
+    TAU * v / lambda_max.tan()
+}
+
 /// The cam on the drawing board at μ_l = `mu`.
 pub fn construct(
     spec: &CamSpec,
@@ -231,6 +241,12 @@ pub fn construct(
         });
         pitch.push(mm(c));
         profile.push(mm(point));
+    }
+    // The near dwell closes the cycle: the cam ends at ξ = X as it starts at ξ = 0.
+    if let (Some(&p0), Some(&q0)) = (pitch.first(), profile.first()) {
+        let end = DVec2::new(s.travel / mu.value(), 0.0);
+        pitch.push(p0 + end);
+        profile.push(q0 + end);
     }
     rec.set_group(0);
     rec.draw(

@@ -4,7 +4,7 @@
 use super::markup::{frac, num, sym, unit};
 use super::rows::{by_position, of_scene, quantities};
 use super::{NoteError, Writer};
-use crate::cam::{Follower, Law};
+use crate::cam::{Follower, Law, SpecialProfile};
 use crate::check::{Method, Symbol};
 use crate::scene::PlateKind;
 use crate::sheets::captions::{unit_in, NoteText as T};
@@ -12,10 +12,19 @@ use crate::sheets::captions::{unit_in, NoteText as T};
 /// The cam: the law, the diagrams, r_min, the profile and the transmission (pressure)
 /// angle, Table 7.
 pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    let special = w.session.special_cam()?;
     w.heading(1, T::CamSection);
-    w.doc.say(w.word(T::CamIntro));
+    let (intro, scene) = match special.as_deref().map(|c| &c.profile) {
+        Some(SpecialProfile::FlatRocker { .. }) => (T::CamFlatRockerIntro, T::CamSpecialScene),
+        Some(SpecialProfile::Sliding { .. }) => (T::CamSlidingIntro, T::CamSpecialScene),
+        None => (T::CamIntro, T::CamScene),
+    };
+    w.doc.say(w.word(intro));
     w.data_list(PlateKind::Cam, false);
-    worked(w)?;
+    match &special {
+        Some(c) => super::cam_special::worked(w, c)?,
+        None => worked(w)?,
+    }
     let q = quantities(&w.report.rows, |r| {
         r.position().is_some()
             && matches!(r.method, Method::Integration | Method::Inversion)
@@ -31,7 +40,7 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     });
     let caption = w.word(T::CamTable);
     by_position(w, caption, &q);
-    let caption = w.word(T::CamScene);
+    let caption = w.word(scene);
     // The dynamics integrates too (A_с, M_д): the cam's rows are its lengths.
     of_scene(w, caption, |r| {
         r.position().is_none()

@@ -11,6 +11,7 @@
 //! on the following ones. The words are the sheets' catalogue's (`sheets::captions`).
 
 mod cam;
+mod cam_special;
 mod friction;
 mod front;
 mod gears;

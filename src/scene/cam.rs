@@ -4,17 +4,18 @@
 
 use super::check::{item, join, number, Checker, MAX_MM};
 use super::keys::Key;
-use crate::cam::{CamSpec, Closure, Follower, Given, Law, Phases, RockerSense, Rotation};
+use crate::cam::{CamSpec, Closure, Follower, Given, Law, Layout, Phases, RockerSense, Rotation};
 use crate::scale::Quantity;
 use serde::Deserialize;
 
 /// The key path of the section.
 const CAM: &str = "cam";
 /// The followers, as written.
-const FOLLOWERS: [(&str, Kind); 3] = [
+const FOLLOWERS: [(&str, Kind); 4] = [
     ("translating", Kind::Translating),
     ("rocker", Kind::Rocker),
     ("flat", Kind::Flat),
+    ("flat_rocker", Kind::FlatRocker),
 ];
 /// The laws a scene may name, each written as [`Law::key`] gives it (the "+ −" law's ratio
 /// is the scene's `ratio`, set after).
@@ -46,6 +47,8 @@ enum Kind {
     Translating,
     Rocker,
     Flat,
+    /// A rocker with a flat face ([`crate::cam::flat_rocker`]).
+    FlatRocker,
 }
 /// The most intervals per moving phase a scene may ask for.
 const MAX_DIVISIONS: i64 = 720;
@@ -92,10 +95,12 @@ pub(crate) struct RawCam {
     pub closure: Option<String>,
     pub given: Option<String>,
     pub rotation: Option<String>,
+    pub centres: Option<f64>,
+    pub travel: Option<f64>,
 }
 
 /// `key` under `[cam]`.
-fn key(k: &str) -> String {
+pub(super) fn key(k: &str) -> String {
     join(CAM, k)
 }
 
@@ -151,7 +156,9 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         closure,
         given,
         rotation,
+        layout: Layout::Turning,
     };
+    let spec = super::cam_layout::laid_out(check, raw, kind == Some(Kind::FlatRocker), spec);
     for (k, scale) in [
         (Key::CamScaleS, spec.scale_s),
         (Key::CamScaleL, spec.scale_l),
@@ -215,13 +222,13 @@ fn laws(check: &mut Checker, raw: &RawCam) -> (Law, Law) {
 /// rocker's swing in degrees × its arm.
 fn follower(check: &mut Checker, raw: &RawCam, kind: Option<Kind>) -> (Follower, f64) {
     let arm = match kind {
-        Some(Kind::Rocker) => Some(check.length(&key("arm"), raw.arm)),
+        Some(Kind::Rocker | Kind::FlatRocker) => Some(check.length(&key("arm"), raw.arm)),
         _ => {
             if raw.arm.is_some() || raw.swing.is_some() || raw.sense.is_some() {
                 check.push(
                     key("arm"),
                     None,
-                    "`arm`, `swing` and `sense` belong to a rocker: expected follower = \"rocker\"",
+                    "`arm`, `swing` and `sense` belong to a rocker: expected follower = \"rocker\" or \"flat_rocker\"",
                 );
             }
             None
@@ -261,7 +268,7 @@ fn follower(check: &mut Checker, raw: &RawCam, kind: Option<Kind>) -> (Follower,
     let offset = check.distance(&key("offset"), raw.offset, 0.0);
     let sense = check.word_or_first(&key("sense"), raw.sense.as_ref(), &SENSES);
     let follower = match kind {
-        Some(Kind::Rocker) => Follower::Rocker {
+        Some(Kind::Rocker | Kind::FlatRocker) => Follower::Rocker {
             arm: arm.unwrap_or(0.0),
             sense,
         },

@@ -2,6 +2,7 @@
 
 mod balancing;
 mod cam;
+mod cam_layout;
 mod check;
 mod drawing;
 mod dynamics;

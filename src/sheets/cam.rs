@@ -6,8 +6,8 @@
 use super::captions::{unit_in, CamText, Text};
 use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
-use crate::cam::{Analogue, Cam, Follower, Law, Rotation};
-use crate::check::{Cusp, Finding};
+use crate::cam::{Analogue, Cam, CamSpec, Diagrams, Follower, Given, Law, Layout, Rotation};
+use crate::check::{Cusp, Finding, Row};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock, View, CAPTION_BAND_MM};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
@@ -32,52 +32,13 @@ fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
 /// Build the cam sheet.
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
+    if let Some(special) = session.special_cam()? {
+        return super::cam_special::build(session, &special, lang);
+    }
     let cam = session.cam()?;
     let d = &cam.diagrams;
     let mm = unit_in("mm", lang);
-    let h = |i: usize| format_sig(d.poles[i], 3, lang);
-    // The diagrams stacked as the construction runs through them, each with its axes and
-    // its caption: the analogue, μ_φ, its μ and the pole distance of the pole it carries.
-    let mut parts: Vec<Part> = Vec::with_capacity(3);
-    let mut bottom = 0.0;
-    for (which, figure) in d.stack(cam.spec.given) {
-        let (name, scale, pole) = match which {
-            Analogue::D2s => (
-                CamText::AccelerationAnalogue,
-                mu("S″", d.d2s_scale, lang),
-                Some(("H_1", h(0))),
-            ),
-            Analogue::Ds => (
-                CamText::VelocityAnalogue,
-                mu("S′", d.ds_scale, lang),
-                Some(("H_2", h(1))),
-            ),
-            Analogue::S => (CamText::Displacement, mu("S", d.s_scale, lang), None),
-        };
-        let mut caption = format!("{}: {}, {scale}", name.get(lang), mu("φ", d.phi, lang));
-        if let Some((symbol, value)) = pole {
-            caption.push_str(&format!(", {symbol} = {value} {mm}"));
-        }
-        let Some((lo, hi)) = figure.bounds() else {
-            continue;
-        };
-        // Under the one above, clear of its caption.
-        let at = if parts.is_empty() {
-            DVec2::ZERO
-        } else {
-            DVec2::new(0.0, bottom - CAPTION_BAND_MM - STACK_GAP_MM - hi.y)
-        };
-        let part = Part {
-            caption_drop: View::symbols_below(figure),
-            ..Part::new(figure.clone(), at, Some(caption))
-        };
-        bottom = at.y + lo.y - part.caption_drop;
-        parts.push(part);
-    }
-    let mut blocks = vec![Block::Views {
-        parts,
-        scale: keyed(Key::CamScalePhi, d.phi),
-    }];
+    let mut blocks = vec![diagram_block(d, cam.spec.given, lang)];
     let combined = match cam.spec.follower {
         Follower::Flat { .. } => CamText::FlatCombined,
         Follower::Rocker { .. } => CamText::RockerCombined,
@@ -120,7 +81,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         size_mm: TEXT_MM,
     });
     blocks.extend(points_table(&cam, lang).into_iter().map(Block::Table));
-    blocks.push(Block::Table(results_table(&cam, lang)));
+    blocks.push(Block::Table(results_table(&cam.rows(), lang)));
     let title = super::title_block(scene, CamText::Title.get(lang), cam.inversion.scale, lang);
     let sheet = Sheet {
         size: SheetSize::A1,
@@ -130,13 +91,62 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     one_sheet(sheet, blocks, drawings, &title, lang)
 }
 
+/// The diagrams stacked as the construction runs through them, each with its axes and its
+/// caption: the analogue, μ_φ, its μ and the pole distance of the pole it carries.
+pub(super) fn diagram_block(d: &Diagrams, given: Given, lang: Lang) -> Block {
+    let mm = unit_in("mm", lang);
+    let h = |i: usize| format_sig(d.poles[i], 3, lang);
+    // The diagrams stacked as the construction runs through them, each with its axes and
+    // its caption: the analogue, μ_φ, its μ and the pole distance of the pole it carries.
+    let mut parts: Vec<Part> = Vec::with_capacity(3);
+    let mut bottom = 0.0;
+    for (which, figure) in d.stack(given) {
+        let (name, scale, pole) = match which {
+            Analogue::D2s => (
+                CamText::AccelerationAnalogue,
+                mu("S″", d.d2s_scale, lang),
+                Some(("H_1", h(0))),
+            ),
+            Analogue::Ds => (
+                CamText::VelocityAnalogue,
+                mu("S′", d.ds_scale, lang),
+                Some(("H_2", h(1))),
+            ),
+            Analogue::S => (CamText::Displacement, mu("S", d.s_scale, lang), None),
+        };
+        let mut caption = format!("{}: {}, {scale}", name.get(lang), mu("φ", d.phi, lang));
+        if let Some((symbol, value)) = pole {
+            caption.push_str(&format!(", {symbol} = {value} {mm}"));
+        }
+        let Some((lo, hi)) = figure.bounds() else {
+            continue;
+        };
+        // Under the one above, clear of its caption.
+        let at = if parts.is_empty() {
+            DVec2::ZERO
+        } else {
+            DVec2::new(0.0, bottom - CAPTION_BAND_MM - STACK_GAP_MM - hi.y)
+        };
+        let part = Part {
+            caption_drop: View::symbols_below(figure),
+            ..Part::new(figure.clone(), at, Some(caption))
+        };
+        bottom = at.y + lo.y - part.caption_drop;
+        parts.push(part);
+    }
+    Block::Views {
+        parts,
+        scale: keyed(Key::CamScalePhi, d.phi),
+    }
+}
+
 /// The cam's blocks laid out on one sheet if some order of them fits one, else in the
 /// construction's order on as many as they need. `blocks` are the diagrams, the combined
 /// diagram, the profile, the angle graph if `drawings` is 4 (the first `drawings` blocks),
 /// then the text and the tables. The diagrams always go first, top left; the orders tried:
 /// the construction's; the text and the tables before the drawings they would otherwise be
 /// left under; the profile before the combined diagram.
-fn one_sheet(
+pub(super) fn one_sheet(
     sheet: Sheet,
     blocks: Vec<Block>,
     drawings: usize,
@@ -170,7 +180,7 @@ fn one_sheet(
 }
 
 /// A law's name in `lang`.
-fn law_name(law: Law, lang: Lang) -> String {
+pub(super) fn law_name(law: Law, lang: Lang) -> String {
     let word = match law {
         Law::ConstantAcceleration { ratio } => {
             return format!(
@@ -196,11 +206,9 @@ fn law_name(law: Law, lang: Lang) -> String {
     word.get(lang).into()
 }
 
-/// The task's data and the results, as text lines.
-fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
-    let s = &cam.spec;
-    let mm = unit_in("mm", lang);
-    let n = |x: f64| format_sig(x * 1e3, 4, lang);
+/// The data's heading and the law's lines: the phases, the cam's sense (its motion for a
+/// translating cam), the laws, an assumed law.
+pub(super) fn law_lines(s: &CamSpec, rotation: Rotation, lang: Lang) -> Vec<String> {
     let deg = |x: f64| format_sig(x.to_degrees(), 4, lang);
     let mut out = vec![Text::Data.get(lang).to_string()];
     let p = &s.phases;
@@ -212,10 +220,10 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
             .replace("{3}", &deg(p.ret))
             .replace("{4}", &deg(p.near)),
     );
-    let sense = if cam.rotation == Rotation::Cw {
-        CamText::Clockwise
-    } else {
-        CamText::CounterClockwise
+    let sense = match (s.layout, rotation) {
+        (Layout::Sliding(_), _) => CamText::Slides,
+        (_, Rotation::Cw) => CamText::Clockwise,
+        _ => CamText::CounterClockwise,
     };
     out.push(sense.get(lang).into());
     out.push(format!(
@@ -228,6 +236,16 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     if s.law_assumed {
         out.push(CamText::LawAssumed.get(lang).into());
     }
+    out
+}
+
+/// The task's data and the results, as text lines.
+fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
+    let s = &cam.spec;
+    let mm = unit_in("mm", lang);
+    let n = |x: f64| format_sig(x * 1e3, 4, lang);
+    let deg = |x: f64| format_sig(x.to_degrees(), 4, lang);
+    let mut out = law_lines(s, cam.rotation, lang);
     match s.follower {
         Follower::Rocker { arm, .. } => out.push(format!(
             "L = {} {mm}, β_{{max}} = {}°, S_{{max}} = Lβ_{{max}} = {} {mm}, γ_{{min}} = {}°",
@@ -352,8 +370,17 @@ fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
         columns.push((format!("{a} {}, °", Text::Exact.get(lang)), 18.0));
     }
     columns.push((format!("R, {mm}"), 16.0));
+    points_tables(columns, rows, lang)
+}
+
+/// The table of the points in tables of at most [`POINTS_PER_TABLE`] rows, each after the
+/// first titled as continued.
+pub(super) fn points_tables(
+    columns: Vec<(String, f64)>,
+    rows: Vec<Vec<String>>,
+    lang: Lang,
+) -> Vec<TableBlock> {
     let title = CamText::Points.get(lang);
-    let rows: Vec<Vec<String>> = rows;
     rows.chunks(POINTS_PER_TABLE)
         .enumerate()
         .map(|(i, chunk)| TableBlock {
@@ -371,11 +398,11 @@ fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
 }
 
 /// The values of the whole scene: graphical against exact, mm.
-fn results_table(cam: &Cam, lang: Lang) -> TableBlock {
-    let rows: Vec<_> = cam
-        .rows()
-        .into_iter()
+pub(super) fn results_table(rows: &[Row], lang: Lang) -> TableBlock {
+    let rows: Vec<Row> = rows
+        .iter()
         .filter(|r| r.key.at == crate::check::At::Scene)
+        .cloned()
         .collect();
     super::layout::results_table(
         &Results {

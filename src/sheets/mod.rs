@@ -4,6 +4,7 @@
 mod answer_key;
 mod balancing;
 mod cam;
+mod cam_special;
 pub(crate) mod captions;
 pub(crate) mod data;
 pub use answer_key::{answer_key, table_sheet, KeyLine};

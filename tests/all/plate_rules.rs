@@ -187,6 +187,8 @@ rules! {
     cam_undercut_texts_apart, cam_undercut_inside_frame: "cam-undercut" / "cam",
     cam_cusp_texts_apart, cam_cusp_inside_frame: "cam-cusp" / "cam",
     cam_shock_texts_apart, cam_shock_inside_frame: "cam-shock" / "cam",
+    cam_flat_rocker_texts_apart, cam_flat_rocker_inside_frame: "cam-flat-rocker" / "cam",
+    cam_sliding_texts_apart, cam_sliding_inside_frame: "cam-sliding" / "cam",
     v_engine_kinematics_texts_apart, v_engine_kinematics_inside_frame: "v-engine" / "kinematics",
     v_engine_forces_texts_apart, v_engine_forces_inside_frame: "v-engine" / "forces",
     v_engine_dynamics_texts_apart, v_engine_dynamics_inside_frame: "v-engine" / "dynamics",

@@ -162,6 +162,8 @@ plates! {
     cam_undercut_cam: "cam-undercut" / "cam",
     cam_cusp_cam: "cam-cusp" / "cam",
     cam_shock_cam: "cam-shock" / "cam",
+    cam_flat_rocker_cam: "cam-flat-rocker" / "cam",
+    cam_sliding_cam: "cam-sliding" / "cam",
     v_engine_kinematics: "v-engine" / "kinematics",
     v_engine_forces: "v-engine" / "forces",
     v_engine_dynamics: "v-engine" / "dynamics",

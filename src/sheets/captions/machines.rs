@@ -151,6 +151,23 @@ catalogue! {
         Read => ("граф.", "граф.", "graph."),
         Points => ("Точки диаграмм и профиля", "Точки діаграм і профілю", "Points of the diagrams and the profile"),
         Results => ("Графически и точно, мм", "Графічно і точно, мм", "Graphical against exact, mm"),
+        Slides => (
+            "Кулачок движется поступательно вдоль направляющей",
+            "Кулачок рухається поступально вздовж напрямної",
+            "The cam slides along its guide"
+        ),
+        FlatRockerProfile => (
+            "Профиль кулачка: тарелка коромысла в обращённом движении и огибающая",
+            "Профіль кулачка: тарілка коромисла в оберненому русі й обвідна",
+            "Cam profile: the rocker's flat face in the inverted motion and its envelope"
+        ),
+        SlidingProfile => (
+            "Поступательно движущийся кулачок: положения толкателя, центровой и рабочий профили",
+            "Кулачок, що рухається поступально: положення штовхача, центровий і робочий профілі",
+            "Translating cam: the follower's positions, the pitch and working profiles"
+        ),
+        Concave => ("ВОГНУТОСТЬ: ρ_{min} <", "УГНУТІСТЬ: ρ_{min} <", "CONCAVE: ρ_{min} <"),
+        Exceeded => ("ПРЕВЫШЕН λ_{max}: X < X_{min}", "ПЕРЕВИЩЕНО λ_{max}: X < X_{min}", "λ_{max} EXCEEDED: X < X_{min}"),
     }
 }
 

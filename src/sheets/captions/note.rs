@@ -196,6 +196,38 @@ catalogue! {
             "За заданим законом руху штовхача будуємо діаграму аналога прискорення, графічним інтегруванням — аналога швидкості і переміщення; за суміщеною діаграмою з променями під допустимим кутом передачі (тиску) знаходимо мінімальний радіус кулачка; профіль будуємо методом обернення руху.",
             "From the follower's law: the diagram of the acceleration analogue, by graphical integration those of the velocity analogue and the displacement; the least base radius from the combined diagram with the rays at the admissible transmission (pressure) angle; the profile by inversion."
         ),
+        CamFlatRockerIntro => (
+            "Коромысло с плоской тарелкой: по заданному закону качания коромысла строим диаграмму аналога ускорения, графическим интегрированием — аналога скорости и перемещения (дуги S = L·β); профиль строим методом обращения движения: центр качания O₂ поворачиваем вокруг O₁ на −φ, проводим тарелку под углом ψ = ψ₀ + β на расстоянии e от O₂, профиль — огибающая этих прямых; точку касания находим как середину между точками пересечения соседних прямых, радиус кривизны — по расстоянию между ними.",
+            "Коромисло з плоскою тарілкою: за заданим законом гойдання коромисла будуємо діаграму аналога прискорення, графічним інтегруванням — аналога швидкості і переміщення (дуги S = L·β); профіль будуємо методом обернення руху: центр гойдання O₂ повертаємо навколо O₁ на −φ, проводимо тарілку під кутом ψ = ψ₀ + β на відстані e від O₂, профіль — обвідна цих прямих; точку дотику знаходимо як середину між точками перетину сусідніх прямих, радіус кривини — за відстанню між ними.",
+            "A rocker with a flat face: from the rocker's law, the diagram of the acceleration analogue, by graphical integration those of the velocity analogue and the displacement (the arcs S = L·β); the profile by inversion: the pivot O₂ turned about O₁ by −φ, the face drawn at ψ = ψ₀ + β at the distance e from O₂, the profile the envelope of these lines; the contact is the middle of the crossings with the neighbouring lines, the radius of curvature follows from their distance."
+        ),
+        CamSlidingIntro => (
+            "Кулачок движется поступательно вдоль направляющей и поднимает роликовый толкатель, движущийся перпендикулярно ей. По заданному закону строим диаграммы аналогов графическим интегрированием; цикл закона 2π откладываем вдоль хода кулачка X (ξ = X·φ/2π). Профиль строим обращением движения: ось толкателя в каждом положении, центр ролика на высоте S, окружности ролика, рабочий профиль — их огибающая; угол давления читаем по нормали к хорде через соседние центры.",
+            "Кулачок рухається поступально вздовж напрямної і піднімає роликовий штовхач, що рухається перпендикулярно до неї. За заданим законом будуємо діаграми аналогів графічним інтегруванням; цикл закону 2π відкладаємо вздовж ходу кулачка X (ξ = X·φ/2π). Профіль будуємо оберненням руху: вісь штовхача в кожному положенні, центр ролика на висоті S, кола ролика, робочий профіль — їхня обвідна; кут тиску читаємо за нормаллю до хорди через сусідні центри.",
+            "The cam slides along its guide and lifts a roller follower moving across it. From the law, the analogues' diagrams by graphical integration; the law's cycle 2π laid along the cam's travel X (ξ = X·φ/2π). The profile by inversion: the follower's axis at every position, the roller's centre at the height S, the roller circles, the working profile their envelope; the pressure angle read off the normal to the chord through the neighbouring centres."
+        ),
+        CamFlatRockerStart => (
+            "На ближнем выстое тарелка касается начальной окружности r₀; её начальный угол:",
+            "На ближньому вистої тарілка дотикається до початкового кола r₀; її початковий кут:",
+            "On the near dwell the face touches the base circle r₀; its starting angle:"
+        ),
+        CamFlatRockerCurvature => (
+            "Радиус кривизны профиля (h — расстояние тарелки от O₁, α — угол её нормали в обращённом движении) должен оставаться положительным и не меньше заданного ρ_min:",
+            "Радіус кривини профілю (h — відстань тарілки від O₁, α — кут її нормалі в оберненому русі) має лишатися додатним і не меншим за заданий ρ_min:",
+            "The profile's radius of curvature (h the face's distance from O₁, α its normal's angle in the inverted motion) must stay positive and at least the ρ_min asked:"
+        ),
+        CamOnTheBoard => ("по чертежу", "за кресленням", "on the drawing"),
+        CamSlidingAngle => (
+            "Толкатель движется перпендикулярно направляющей, поэтому угол давления — наклон центрового профиля; наименьший ход кулачка, при котором λ ≤ λ_max:",
+            "Штовхач рухається перпендикулярно до напрямної, тому кут тиску — нахил центрового профілю; найменший хід кулачка, за якого λ ≤ λ_max:",
+            "The follower moves across the guide, so the pressure angle is the pitch curve's slope; the shortest travel keeping λ ≤ λ_max:"
+        ),
+        CamSlidingRoller => (
+            "Радиус ролика должен быть меньше наименьшего радиуса кривизны выпуклых участков центрового профиля, иначе рабочий профиль подрезается:",
+            "Радіус ролика має бути меншим за найменший радіус кривини опуклих ділянок центрового профілю, інакше робочий профіль підрізається:",
+            "The roller must be smaller than the least radius of curvature of the pitch curve's convex stretches, else the working profile is undercut:"
+        ),
+        CamSpecialScene => ("Наименьший размер, радиус кривизны и точность профиля", "Найменший розмір, радіус кривини і точність профілю", "The smallest size, the radius of curvature and the profile's accuracy"),
         CamPeaks => (
             "Наибольшие значения аналогов скорости и ускорения толкателя на фазах:",
             "Найбільші значення аналогів швидкості і прискорення штовхача на фазах:",

@@ -126,6 +126,10 @@ fn russian(symbol: Symbol, subject: &str) -> String {
     if let Some(base) = subject.strip_suffix("_req") {
         return format!("{}^{{треб}}", russian(symbol, base));
     }
+    // A translating cam's shortest travel: X_{min}.
+    if (symbol, subject) == (Symbol::Length, "travel_min") {
+        return "X_{min}".into();
+    }
     let letter = letter(symbol);
     // A reaction names two links, written apart as the textbooks do: R_{1-2}; so does the
     // arm of a reaction on a guide, as its drawing dimensions it: h_{0-5}.
@@ -233,6 +237,7 @@ mod tests {
         // The arm of the guide's reaction as its drawing dimensions it (issue 19).
         assert_eq!(ru(Symbol::Length, "0_5"), "h_{0-5}");
         assert_eq!(ru(Symbol::Length, "bal"), "h_{у}");
+        assert_eq!(ru(Symbol::Length, "travel_min"), "X_{min}");
         assert_eq!(ru(Symbol::Force, "in3"), "F_{и3}");
         assert_eq!(ru(Symbol::Moment, "bal"), "M_{у}");
         assert_eq!(ru(Symbol::Work, "res"), "A_{с}");

@@ -135,6 +135,38 @@ fn psi(r0: (f64, f64, f64), m: Motion) -> f64 {
     psi0 + sigma * m.s / arm
 }
 
+/// The face line's support function at motion `m`: h = a·sin ψ − e, dh/dα and d²h/dα²
+/// (α the face normal's angle in the cam's frame, dα/dφ = σ·S′/L − 1), with ψ and σ·S′/L;
+/// `None` where the face turns as fast as the cam or faster (no envelope).
+fn support(f: (f64, f64, f64), r: &FlatRocker, m: Motion) -> Option<Support> {
+    let (arm, sigma, _) = f;
+    let psi = psi(f, m);
+    let (p1, p2) = (sigma * m.ds / arm, sigma * m.d2s / arm);
+    let a1 = p1 - 1.0;
+    if a1 >= 0.0 {
+        return None;
+    }
+    let a = r.centres;
+    let (s, c) = psi.sin_cos();
+    let h = a * s - r.face_offset;
+    let h1 = a * c * p1;
+    let h2 = a * (c * p2 - s * p1 * p1);
+    Some(Support {
+        h,
+        ha: h1 / a1,
+        haa: (h2 * a1 - h1 * p2) / (a1 * a1 * a1),
+        psi,
+    })
+}
+
+/// The face line's support function and its derivatives over the normal's angle.
+struct Support {
+    h: f64,
+    ha: f64,
+    haa: f64,
+    psi: f64,
+}
+
 /// The exact profile at φ (`after`: the piece after a jump of the law).
 pub fn exact(
     spec: &CamSpec,
@@ -143,37 +175,48 @@ pub fn exact(
     after: bool,
 ) -> Result<Contact, FlatRockerError> {
     let f = frame(spec, r)?;
-    let (arm, sigma, _) = f;
     let m = motion(spec, phi, after);
-    let psi = psi(f, m);
-    let (p1, p2) = (sigma * m.ds / arm, sigma * m.d2s / arm);
-    let a1 = p1 - 1.0;
-    if a1 >= 0.0 {
+    let Some(Support { h, ha, haa, psi }) = support(f, r, m) else {
         return Err(FlatRockerError::Outruns {
             phi_deg: phi.to_degrees(),
-            rate: p1,
+            rate: f.1 * m.ds / f.0,
         });
-    }
-    let a = r.centres;
-    let (s, c) = psi.sin_cos();
-    let h = a * s - r.face_offset;
-    let h1 = a * c * p1;
-    let h2 = a * (c * p2 - s * p1 * p1);
-    let ha = h1 / a1;
-    let haa = (h2 * a1 - h1 * p2) / (a1 * a1 * a1);
+    };
     let alpha = psi - FRAC_PI_2 - phi;
     let u = DVec2::from_angle(alpha);
     let point = u * h + u.perp() * ha;
     // The contact in the fixed frame, against the face's direction from the foot of O₂.
     let fixed = rotate(point, phi);
     let dir = DVec2::from_angle(psi);
-    let t = (fixed - DVec2::new(a, 0.0)).dot(dir);
+    let t = (fixed - DVec2::new(r.centres, 0.0)).dot(dir);
     Ok(Contact {
         phi,
         point,
         rho: h + haa,
         lambda: r.face_offset.abs().atan2(t.abs()),
     })
+}
+
+/// The profile's smallest radius of curvature over the cycle, m (< 0: concave somewhere):
+/// the largest −ρ = −(h + d²h/dα²) on every smooth piece of the law (split at its jumps,
+/// each evaluated on its own side), dense samples each refined by golden section
+/// ([`super::extremum::max_over`]) — the true minimum, not a sampled one. Refused where the
+/// face outruns the cam (the fastest σ·S′/L found the same way).
+pub fn exact_rho_min(spec: &CamSpec, r: &FlatRocker) -> Result<f64, FlatRockerError> {
+    let f = frame(spec, r)?;
+    let pieces = super::extremum::pieces(spec, false);
+    let dense = super::exact::DENSE;
+    let (rate, piece, u) = super::extremum::max_over(spec, &pieces, dense, |m| f.1 * m.ds / f.0);
+    if rate >= 1.0 {
+        return Err(FlatRockerError::Outruns {
+            phi_deg: piece.phi(spec, u).to_degrees(),
+            rate,
+        });
+    }
+    let (worst, _, _) = super::extremum::max_over(spec, &pieces, dense, |m| {
+        support(f, r, m).map_or(f64::INFINITY, |s| -(s.h + s.haa))
+    });
+    Ok(-worst)
 }
 
 /// The face line at φ in the cam's frame (m): through the turned pivot's foot, along the
@@ -185,6 +228,74 @@ fn face_line(a: f64, e: f64, psi: f64, phi: f64) -> (DVec2, DVec2) {
     let n = dir.perp();
     let toward = if n.dot(-pivot) >= 0.0 { n } else { -n };
     (pivot + toward * e, dir)
+}
+
+/// The face lines in the inverted positions, each drawn from the foot of the turned pivot
+/// O₂ (with the offset e to it) through its contact and a fifth beyond, so that every line
+/// shows the rocker's face reaching the profile it envelopes.
+fn draw_faces(
+    rec: &mut Recorder,
+    r: &FlatRocker,
+    mu: Scale,
+    pts: &[super::motion::Point],
+    (lines, turned): (&[(DVec2, DVec2)], &[crate::construct::StepId]),
+    contacts: &[Contact],
+) {
+    let mm = |p: DVec2| p / mu.value();
+    for (i, p) in pts.iter().enumerate() {
+        rec.set_group(i as u32 + 1);
+        let (foot, dir) = lines[i];
+        let reach = (contacts[i].point - foot).dot(dir);
+        // At least a tenth of the centre distance either way, so a contact at the foot
+        // still shows its line.
+        let end = reach + reach.signum() * (0.2 * reach.abs()).max(0.1 * r.centres);
+        let start = -reach.signum() * 0.1 * r.centres;
+        rec.draw(
+            format!("face at position {i}"),
+            Item::Segment(Segment::new(mm(foot + dir * start), mm(foot + dir * end))),
+            Role::Construction,
+            &[turned[i]],
+        );
+        if r.face_offset != 0.0 {
+            let pivot = to_cam(DVec2::new(r.centres, 0.0), p.phi);
+            rec.draw(
+                format!("offset e of the face at {i}"),
+                Item::Segment(Segment::new(mm(pivot), mm(foot))),
+                Role::Construction,
+                &[turned[i]],
+            );
+        }
+    }
+}
+
+/// The profile through the contacts, with each dwell between two phases drawn as the arc
+/// about O₁ it is (the face stands still, so its contact turns back round O₁): from the
+/// contact at one phase's end to the next phase's first, clockwise, the radius carried
+/// linearly between theirs, a point every 3° or closer.
+fn with_dwells(pts: &[super::motion::Point], contacts: &[Contact]) -> Vec<DVec2> {
+    let mut out = Vec::with_capacity(contacts.len() + 64);
+    for (i, c) in contacts.iter().enumerate() {
+        out.push(c.point);
+        if !pts[i].last {
+            continue;
+        }
+        let next = contacts[(i + 1) % contacts.len()].point;
+        let (a, b) = (c.point.to_angle(), next.to_angle());
+        // Clockwise from a to b: a turn in (−2π, 0].
+        let turn = (b - a).rem_euclid(std::f64::consts::TAU) - std::f64::consts::TAU;
+        let turn = if turn <= -std::f64::consts::TAU + 1e-12 {
+            0.0
+        } else {
+            turn
+        };
+        let n = (turn.abs() / 3f64.to_radians()).ceil() as usize;
+        let (ra, rb) = (c.point.length(), next.length());
+        for k in 1..n {
+            let t = k as f64 / n as f64;
+            out.push(DVec2::from_angle(a + turn * t) * (ra + (rb - ra) * t));
+        }
+    }
+    out
 }
 
 /// The profile on the drawing board at μ_l = `mu`.
@@ -225,34 +336,19 @@ pub fn construct(
         direction: dir,
     };
     let mut lines = Vec::with_capacity(pts.len());
+    let mut turned = Vec::with_capacity(pts.len());
     for (i, p) in pts.iter().enumerate() {
         rec.set_group(i as u32 + 1);
         // S at the point as given (the S diagram's ordinate).
         let s = motion(spec, p.phi, p.after).s;
         let pivot = to_cam(DVec2::new(r.centres, 0.0), p.phi);
-        let turned = rec.draw(
+        turned.push(rec.draw(
             format!("pivot O_2 turned back by φ_{i}"),
             Item::Arc(Arc::notch(DVec2::ZERO, mm(pivot), ctx.notch_mm)),
             Role::Construction,
             &[o1],
-        );
-        let (foot, dir) = line_at(s, p.phi);
-        let half = mu.to_mm(0.6 * r.centres);
-        rec.draw(
-            format!("face at position {i}"),
-            Item::Segment(Segment::new(mm(foot) - dir * half, mm(foot) + dir * half)),
-            Role::Construction,
-            &[turned],
-        );
-        if r.face_offset != 0.0 {
-            rec.draw(
-                format!("offset e of the face at {i}"),
-                Item::Segment(Segment::new(mm(pivot), mm(foot))),
-                Role::Construction,
-                &[turned],
-            );
-        }
-        lines.push((foot, dir));
+        ));
+        lines.push(line_at(s, p.phi));
     }
     // The neighbouring face line before (`forward` false) or after point i.
     let neighbour = |i: usize, forward: bool| match neighbour(spec, &pts, i, forward) {
@@ -260,7 +356,6 @@ pub fn construct(
         Neighbour::Dwell { phi, s } => line_at(s, phi),
     };
     let mut contacts = Vec::with_capacity(pts.len());
-    let mut profile = Vec::with_capacity(pts.len());
     for (i, p) in pts.iter().enumerate() {
         rec.set_group(i as u32 + 1);
         let (before, after) = (as_line(neighbour(i, false)), as_line(neighbour(i, true)));
@@ -305,13 +400,13 @@ pub fn construct(
             rho,
             lambda,
         });
-        profile.push(mm(point));
     }
+    draw_faces(&mut rec, r, mu, &pts, (&lines, &turned), &contacts);
     rec.set_group(0);
     rec.draw(
         "practical profile: envelope of the face lines",
         Item::Polyline {
-            points: profile,
+            points: with_dwells(&pts, &contacts).into_iter().map(mm).collect(),
             closed: true,
         },
         Role::Result,
@@ -324,206 +419,4 @@ pub fn construct(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::cam::tests::seed000;
-    use crate::cam::{Law, Phases};
-    use crate::construct::Drafting;
-    use crate::scale::Quantity;
-
-    /// A rocker of arm 100 mm swinging 20° by the cosine law, rise and return over 120°.
-    fn spec(n: usize) -> CamSpec {
-        CamSpec {
-            phases: Phases {
-                rise: 120f64.to_radians(),
-                far: 30f64.to_radians(),
-                ret: 120f64.to_radians(),
-                near: 90f64.to_radians(),
-            },
-            rise: Law::Cosine,
-            ret: Law::Cosine,
-            stroke: 0.1 * 20f64.to_radians(),
-            follower: Follower::Rocker {
-                arm: 0.1,
-                sense: RockerSense::Same,
-            },
-            divisions: n,
-            ..seed000()
-        }
-    }
-
-    const FRAME: FlatRocker = FlatRocker {
-        centres: 0.12,
-        face_offset: 0.0,
-        base: 0.04,
-    };
-
-    fn board(s: &CamSpec, r: &FlatRocker) -> Result<Construction, FlatRockerError> {
-        let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("a context");
-        let mu = Scale::new(0.0005, Quantity::Length).expect("a μ");
-        construct(s, r, mu, &ctx)
-    }
-
-    /// The largest distance of the drawn contacts from the exact ones, m: within the
-    /// phases, and at their ends (where the cosine law's S″ jumps, so does ρ: the middle of
-    /// the crossings is off by (ρ₊ − ρ₋)·δ/4 there, first order).
-    fn deviation(s: &CamSpec, r: &FlatRocker) -> (f64, f64) {
-        let b = board(s, r).expect("the construction");
-        let mut worst = (0.0_f64, 0.0_f64);
-        for (p, c) in points(s).iter().zip(&b.contacts) {
-            let e = exact(s, r, p.phi, p.after).expect("the envelope");
-            let d = c.point.distance(e.point);
-            if p.k == 0 || p.last {
-                worst.1 = worst.1.max(d);
-            } else {
-                worst.0 = worst.0.max(d);
-            }
-        }
-        worst
-    }
-
-    #[test]
-    fn the_exact_profile_touches_every_face_line_and_turns_by_its_radius() {
-        let s = spec(12);
-        let (arm, sigma, psi0) = frame(&s, &FRAME).unwrap();
-        for k in 1..40 {
-            let phi = 0.05 + 0.12 * k as f64;
-            let c = exact(&s, &FRAME, phi, false).unwrap();
-            let m = motion(&s, phi, false);
-            let (foot, dir) = face_line(FRAME.centres, 0.0, psi0 + sigma * m.s / arm, phi);
-            assert!(
-                (c.point - foot).perp_dot(dir).abs() < 1e-15,
-                "on the line at {phi}"
-            );
-            // Along the profile the point moves along its face line, by ρ per radian of the
-            // normal's turn (central differences).
-            let d = 1e-5;
-            let (a, b) = (
-                exact(&s, &FRAME, phi - d, false).unwrap(),
-                exact(&s, &FRAME, phi + d, false).unwrap(),
-            );
-            let chord = b.point - a.point;
-            assert!(chord.perp_dot(dir).abs() < 1e-9 * chord.length().max(1e-12));
-            let turn = {
-                let ma = motion(&s, phi - d, false);
-                let mb = motion(&s, phi + d, false);
-                (sigma * (mb.s - ma.s) / arm) - 2.0 * d
-            };
-            let rho = chord.dot(dir) / turn;
-            assert!(
-                (rho - c.rho).abs() < 1e-6 * c.rho.abs().max(1e-3),
-                "ρ at {phi}"
-            );
-            // The face through O₂: no pressure angle.
-            assert!(c.lambda.abs() < 1e-12);
-        }
-    }
-
-    #[test]
-    fn the_board_agrees_with_the_envelope_to_second_order() {
-        let errors: Vec<(f64, f64)> = [12, 24, 48]
-            .iter()
-            .map(|&n| deviation(&spec(n), &FRAME))
-            .collect();
-        assert!(errors[1].0 < 2e-3 * FRAME.centres, "{errors:?}");
-        for w in errors.windows(2) {
-            assert!(
-                (w[0].0 / w[1].0).log2() > 1.8,
-                "within the phases: {errors:?}"
-            );
-            assert!((w[0].1 / w[1].1).log2() > 0.9, "at the ends: {errors:?}");
-        }
-    }
-
-    #[test]
-    fn the_board_reads_the_radius_and_the_angle_of_an_offset_face() {
-        let r = FlatRocker {
-            face_offset: 0.015,
-            ..FRAME
-        };
-        let s = spec(48);
-        let b = board(&s, &r).unwrap();
-        let mut worst = (0.0_f64, 0.0_f64);
-        for (p, c) in points(&s).iter().zip(&b.contacts) {
-            let e = exact(&s, &r, p.phi, p.after).unwrap();
-            if p.k != 0 && !p.last {
-                worst.0 = worst.0.max((c.rho - e.rho).abs() / e.rho.abs());
-            }
-            worst.1 = worst.1.max((c.lambda - e.lambda).abs());
-            assert!(e.lambda > 0.05, "an offset face has a pressure angle");
-        }
-        assert!(worst.0 < 0.01 && worst.1 < 2e-3, "{worst:?}");
-    }
-
-    #[test]
-    fn a_small_base_circle_is_concave_by_both_routes() {
-        // The smallest ρ over a dense sampling against the board's at the points.
-        let rho_min = |r: &FlatRocker| {
-            (0..=3600)
-                .map(|k| {
-                    exact(
-                        &spec(24),
-                        r,
-                        k as f64 * std::f64::consts::TAU / 3600.0,
-                        false,
-                    )
-                })
-                .map(|c| c.unwrap().rho)
-                .fold(f64::INFINITY, f64::min)
-        };
-        let good = rho_min(&FRAME);
-        assert!(good > 0.0);
-        let board_good = board(&spec(48), &FRAME).unwrap().rho_min();
-        assert!(
-            (board_good - good).abs() < 0.02 * good,
-            "{board_good} {good}"
-        );
-        let small = FlatRocker {
-            base: 0.004,
-            centres: 0.06,
-            ..FRAME
-        };
-        assert!(rho_min(&small) < 0.0);
-        assert!(board(&spec(48), &small).unwrap().rho_min() < 0.0);
-    }
-
-    #[test]
-    fn a_face_that_outruns_the_cam_and_a_frame_that_does_not_fit_are_refused() {
-        // A 60° swing of a short arm over 40°: the face turns faster than the cam.
-        let fast = CamSpec {
-            phases: Phases {
-                rise: 40f64.to_radians(),
-                far: 140f64.to_radians(),
-                ret: 40f64.to_radians(),
-                near: 140f64.to_radians(),
-            },
-            stroke: 0.1 * 60f64.to_radians(),
-            ..spec(12)
-        };
-        let mid = 20f64.to_radians();
-        assert!(matches!(
-            exact(&fast, &FRAME, mid, false),
-            Err(FlatRockerError::Outruns { .. })
-        ));
-        assert!(matches!(
-            board(&fast, &FRAME),
-            Err(FlatRockerError::Outruns { .. })
-        ));
-        let wide = FlatRocker {
-            base: 0.13,
-            ..FRAME
-        };
-        assert!(matches!(
-            board(&spec(12), &wide),
-            Err(FlatRockerError::Frame { .. })
-        ));
-        let translating = CamSpec {
-            follower: Follower::Translating { offset: 0.0 },
-            ..spec(12)
-        };
-        assert_eq!(
-            exact(&translating, &FRAME, 0.1, false),
-            Err(FlatRockerError::NotARocker)
-        );
-    }
-}
+mod tests;

@@ -1,0 +1,293 @@
+//! The check of a flat-faced rocker's and a translating cam's construction: every value read
+//! off the board against its module's closed form, and the notes (the law, the frame, the
+//! hard cases).
+//!
+//! Flat-faced rocker: the pressure angle and the contact's radius vector per point, the
+//! drawn contacts' largest distance from the exact envelope, ρ_min of the profile. The
+//! translating cam: the pressure angle per point, the profile's deviation, ρ_min of the
+//! pitch curve, and the shortest travel X_min that keeps λ ≤ λ_max (read off the drawn
+//! angles: X·max tg λ / tg λ_max; exact: 2π·max|S′|/tg λ_max).
+
+use super::flat_rocker::{self, FlatRocker};
+use super::rows::{diagram_rows, law_notes};
+use super::sliding::{self, Sliding};
+use super::special::{Special, SpecialProfile};
+use super::{CamError, Closure};
+use crate::check::{self, At, Finding, Key, Method, Note, Row, Symbol};
+use crate::scale::{format_sig, Lang};
+use std::f64::consts::FRAC_PI_2;
+
+/// A length in mm in a note.
+fn mm(x: f64) -> String {
+    format_sig(x * 1e3, 5, Lang::En)
+}
+/// An angle in degrees in a note.
+fn deg(x: f64) -> String {
+    format_sig(x.to_degrees(), 4, Lang::En)
+}
+
+fn row(symbol: Symbol, at: At, subject: &str, (graphical, exact): (f64, f64), scale: f64) -> Row {
+    let key = Key {
+        symbol,
+        subject: subject.to_string(),
+        at,
+    };
+    Row::new(key, Method::Inversion, graphical, exact, scale)
+}
+
+impl Special {
+    /// λ_max = 90° − γ_min.
+    pub fn lambda_max(&self) -> f64 {
+        FRAC_PI_2 - self.spec.gamma_min
+    }
+
+    /// The exact pressure angle at every point, rad.
+    pub fn angles_exact(&self) -> Result<Vec<f64>, CamError> {
+        self.points
+            .iter()
+            .map(|p| {
+                Ok(match &self.profile {
+                    SpecialProfile::FlatRocker { frame, .. } => {
+                        flat_rocker::exact(&self.spec, frame, p.phi, p.after)?.lambda
+                    }
+                    SpecialProfile::Sliding { frame, .. } => {
+                        sliding::exact(&self.spec, frame, p.phi, p.after)?.lambda
+                    }
+                })
+            })
+            .collect()
+    }
+
+    /// The exact smallest radius of curvature: of the flat-faced rocker's profile (< 0:
+    /// concave), of the translating cam's pitch curve (its convex crests; infinite if none).
+    pub fn exact_rho_min(&self) -> Result<f64, CamError> {
+        Ok(match &self.profile {
+            SpecialProfile::FlatRocker { frame, .. } => {
+                flat_rocker::exact_rho_min(&self.spec, frame)?
+            }
+            SpecialProfile::Sliding { frame, .. } => sliding::exact_rho_min(&self.spec, frame)?,
+        })
+    }
+
+    /// The smallest radius of curvature read off the board (as [`Self::exact_rho_min`]).
+    pub fn drawn_rho_min(&self) -> f64 {
+        match &self.profile {
+            SpecialProfile::FlatRocker { board, .. } => board.rho_min(),
+            SpecialProfile::Sliding { board, .. } => board.rho_min(),
+        }
+    }
+
+    /// The drawn profile's largest distance from the exact one at the points, m.
+    pub fn profile_deviation(&self) -> Result<f64, CamError> {
+        let mut worst = 0.0_f64;
+        for (i, p) in self.points.iter().enumerate() {
+            let d = match &self.profile {
+                SpecialProfile::FlatRocker { frame, board } => {
+                    let e = flat_rocker::exact(&self.spec, frame, p.phi, p.after)?;
+                    board.contacts[i].point.distance(e.point)
+                }
+                SpecialProfile::Sliding { frame, board } => {
+                    let e = sliding::exact(&self.spec, frame, p.phi, p.after)?;
+                    board.contacts[i].point.distance(e.point)
+                }
+            };
+            worst = worst.max(d);
+        }
+        Ok(worst)
+    }
+
+    /// The shortest travel keeping λ ≤ λ_max where the scene checks it, m: read off the
+    /// board's angles (X·max tg λ / tg λ_max over the checked points) and exact; `None` for
+    /// the flat-faced rocker.
+    pub fn travel_min(&self) -> Option<(f64, f64)> {
+        let SpecialProfile::Sliding { frame, board } = &self.profile else {
+            return None;
+        };
+        let rise_only = self.spec.closure == Closure::Force;
+        let steepest = self
+            .points
+            .iter()
+            .zip(&board.contacts)
+            .filter(|(p, _)| !rise_only || p.phase == 0)
+            .map(|(_, c)| c.lambda.tan())
+            .fold(0.0, f64::max);
+        let t = self.lambda_max().tan();
+        Some((
+            frame.travel * steepest / t,
+            sliding::exact_travel_min(&self.spec, self.lambda_max()),
+        ))
+    }
+
+    /// Every reading against its twin: S, dS/dφ, d²S/dφ² per point (integration), the
+    /// pressure angle per point, the flat-faced rocker's contact radius vector per point,
+    /// the profile's deviation, ρ_min and the translating cam's X_min (inversion).
+    ///
+    /// # Errors
+    /// A twin that refuses the frame (the board accepted it: a defect).
+    pub fn rows(&self) -> Result<Vec<Row>, CamError> {
+        let mut out = diagram_rows(&self.spec, &self.points, &self.diagrams);
+        let read = self.angles_read();
+        let exact = self.angles_exact()?;
+        for (i, p) in self.points.iter().enumerate() {
+            let at = At::Position(p.label.clone());
+            out.push(row(
+                Symbol::PressureAngle,
+                at,
+                "",
+                (read[i], exact[i]),
+                FRAC_PI_2,
+            ));
+        }
+        let size = match &self.profile {
+            SpecialProfile::FlatRocker { frame, board } => {
+                for (p, c) in self.points.iter().zip(&board.contacts) {
+                    let e = flat_rocker::exact(&self.spec, frame, p.phi, p.after)?;
+                    let at = At::Position(p.label.clone());
+                    let pair = (c.point.length(), e.point.length());
+                    out.push(row(Symbol::ProfileRadius, at, "", pair, frame.centres));
+                }
+                frame.centres
+            }
+            SpecialProfile::Sliding { frame, .. } => frame.travel,
+        };
+        let deviation = (self.profile_deviation()?, 0.0);
+        out.push(row(
+            Symbol::ProfileDeviation,
+            At::Scene,
+            "",
+            deviation,
+            size,
+        ));
+        let rho = self.exact_rho_min()?;
+        if rho.is_finite() {
+            let pair = (self.drawn_rho_min(), rho);
+            out.push(row(
+                Symbol::CurvatureRadius,
+                At::Scene,
+                "min",
+                pair,
+                rho.abs(),
+            ));
+        }
+        if let Some((read, exact)) = self.travel_min() {
+            out.push(row(
+                Symbol::Length,
+                At::Scene,
+                "travel_min",
+                (read, exact),
+                exact,
+            ));
+        }
+        Ok(out)
+    }
+
+    /// The notes as the report writes them.
+    pub fn notes(&self) -> Result<Vec<String>, CamError> {
+        Ok(check::finding::english(&self.noted()?))
+    }
+
+    /// The verdicts of the notes.
+    pub fn findings(&self) -> Result<Vec<Finding>, CamError> {
+        Ok(check::finding::findings(&self.noted()?))
+    }
+
+    /// The notes: the law and its diagrams, the frame, ρ_min exact and drawn, the largest
+    /// pressure angle against λ_max, and the hard cases (a concave flat-faced profile, a
+    /// roller larger than a crest's radius).
+    pub fn noted(&self) -> Result<Vec<Note>, CamError> {
+        let mut out = law_notes(&self.spec, &self.points, &self.diagrams);
+        let rho = self.exact_rho_min()?;
+        let drawn = self.drawn_rho_min();
+        match &self.profile {
+            SpecialProfile::FlatRocker { frame, .. } => {
+                out.extend(self.flat_rocker_notes(frame, rho, drawn)?);
+            }
+            SpecialProfile::Sliding { frame, .. } => {
+                out.extend(self.sliding_notes(frame, rho, drawn));
+            }
+        }
+        Ok(out)
+    }
+
+    fn flat_rocker_notes(
+        &self,
+        r: &FlatRocker,
+        rho: f64,
+        drawn: f64,
+    ) -> Result<Vec<Note>, CamError> {
+        let psi0 = ((r.base + r.face_offset) / r.centres).asin();
+        let mut out = vec![Note::text(format!(
+            "cam: flat-faced rocker: a = {} mm, e = {} mm, r₀ = {} mm: the face starts at ψ₀ = arcsin((r₀ + e)/a) = {}°",
+            mm(r.centres),
+            mm(r.face_offset),
+            mm(r.base),
+            deg(psi0)
+        ))];
+        out.push(Note::text(format!(
+            "cam: flat-faced rocker: the profile's smallest radius of curvature ρ = h + d²h/dα² is {} mm exact, {} mm read off the face lines' crossings at the {} points",
+            mm(rho),
+            mm(drawn),
+            self.points.len()
+        )));
+        let worst = self.angles_exact()?.into_iter().fold(0.0, f64::max);
+        out.push(Note::text(format!(
+            "cam: flat-faced rocker: the largest pressure angle at the points is {}° (tg λ = e/t, t the contact's distance along the face from the foot of O₂)",
+            deg(worst)
+        )));
+        if rho < self.spec.rho_min {
+            out.push(Note::text(format!(
+                "cam: CONCAVE: the flat-faced rocker's profile has ρ_min = {} mm below the {} mm asked (cam.rho_min): the face lines' envelope {}; a larger r₀ or centre distance is needed",
+                mm(rho),
+                mm(self.spec.rho_min),
+                if rho < 0.0 { "loops back (a cusp)" } else { "is too sharp" }
+            )));
+        }
+        Ok(out)
+    }
+
+    fn sliding_notes(&self, s: &Sliding, rho: f64, drawn: f64) -> Vec<Note> {
+        let mut out = vec![Note::text(format!(
+            "cam: translating cam: the law's cycle laid along the travel X = {} mm (ξ = X·φ/2π), roller r = {} mm",
+            mm(s.travel),
+            mm(s.roller)
+        ))];
+        let lambda_max = self.lambda_max();
+        let worst = self
+            .angles_exact()
+            .map(|a| a.into_iter().fold(0.0, f64::max))
+            .unwrap_or(f64::NAN);
+        if let Some((read, exact)) = self.travel_min() {
+            out.push(Note::text(format!(
+                "cam: translating cam: the largest pressure angle at the points is {}° (λ_max = {}°); the shortest travel keeping λ ≤ λ_max is X_min = 2π·max|dS/dφ|/tg λ_max = {} mm exact, {} mm from the drawn angles",
+                deg(worst),
+                deg(lambda_max),
+                mm(exact),
+                mm(read)
+            )));
+            if exact > s.travel * (1.0 + 1e-9) {
+                out.push(Note::text(format!(
+                    "cam: EXCEEDED: the travel X = {} mm is shorter than X_min = {} mm: the pressure angle passes λ_max = {}°",
+                    mm(s.travel),
+                    mm(exact),
+                    deg(lambda_max)
+                )));
+            }
+        }
+        if rho.is_finite() {
+            out.push(Note::text(format!(
+                "cam: translating cam: the pitch curve's smallest convex radius of curvature is {} mm exact, {} mm through three drawn roller centres; the roller must stay under it (0.8·ρ_min = {} mm)",
+                mm(rho),
+                mm(drawn),
+                mm(0.8 * rho)
+            )));
+            if s.roller > rho {
+                let f = Finding::Undercut {
+                    roller: s.roller,
+                    rho_min: rho,
+                };
+                out.push(Note::finding("cam: ", f));
+            }
+        }
+        out
+    }
+}

@@ -1,0 +1,103 @@
+//! The cam section's worked formulas for a flat-faced rocker (the face's start ψ₀, the
+//! profile's radius of curvature) and a translating cam (the pressure angle from the law
+//! laid along the travel, the shortest travel X_min, the roller against ρ_min): symbols,
+//! numbers, result, every number the session's.
+
+use super::markup::{frac, num, sym, unit};
+use super::{NoteError, Writer};
+use crate::cam::{Special, SpecialProfile};
+use crate::sheets::captions::{unit_in, NoteText as T};
+use crate::study::StudyError;
+use std::f64::consts::TAU;
+
+/// The worked formulas of `cam`.
+pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteError> {
+    let lang = w.lang;
+    let n = |x: f64| num(x, 4, lang);
+    let mm = |x: f64| format!("{}{}", num(x * 1e3, 4, lang), unit(&unit_in("mm", lang)));
+    let deg = |x: f64| format!("{}°", num(x.to_degrees(), 4, lang));
+    let study = |e| NoteError::Study(StudyError::Cam(e));
+    let rho = cam.exact_rho_min().map_err(study)?;
+    let drawn = cam.drawn_rho_min();
+    match &cam.profile {
+        SpecialProfile::FlatRocker { frame, .. } => {
+            let ratio = (frame.base + frame.face_offset) / frame.centres;
+            w.doc.say(w.word(T::CamFlatRockerStart));
+            w.doc.formula(&format!(
+                "sin {} = {} = {} = {}, quad {} = {}",
+                sym("ψ_{0}"),
+                frac(&format!("{} + {}", sym("r_{0}"), sym("e")), &sym("a")),
+                frac(
+                    &format!("{} + {}", n(frame.base * 1e3), n(frame.face_offset * 1e3)),
+                    &n(frame.centres * 1e3)
+                ),
+                n(ratio),
+                sym("ψ_{0}"),
+                deg(ratio.asin())
+            ));
+            w.doc.say(w.word(T::CamFlatRockerCurvature));
+            w.doc.formula(&format!(
+                "{} = {} + {}, quad {} = {} sin {} - {}",
+                sym("ρ"),
+                sym("h"),
+                frac(&format!("d^2 {}", sym("h")), &format!("d {}^2", sym("α"))),
+                sym("h"),
+                sym("a"),
+                sym("ψ"),
+                sym("e")
+            ));
+            w.doc.formula(&format!(
+                "{} = {} quad (\"{}\" {})",
+                sym("ρ_{min}"),
+                mm(rho),
+                w.word(T::CamOnTheBoard),
+                mm(drawn)
+            ));
+        }
+        SpecialProfile::Sliding { frame, .. } => {
+            let lambda_max = cam.lambda_max();
+            let Some((read, exact)) = cam.travel_min() else {
+                return Ok(());
+            };
+            // max|dS/dφ| from X_min = 2π·max|S′|/tg λ_max.
+            let v = exact * lambda_max.tan() / TAU;
+            w.doc.say(w.word(T::CamSlidingAngle));
+            w.doc.formula(&format!(
+                "tg {} = {} = {} dot {}",
+                sym("λ"),
+                frac(&sym("dS"), &sym("dξ")),
+                sym("dS/dφ"),
+                frac("2π", &sym("X"))
+            ));
+            w.doc.formula(&format!(
+                "{} = {} = {} = {} quad (\"{}\" {})",
+                sym("X_{min}"),
+                frac(
+                    &format!("2π dot max|{}|", sym("dS/dφ")),
+                    &format!("tg {}", sym("λ_{max}"))
+                ),
+                frac(
+                    &format!("2π dot {}", n(v * 1e3)),
+                    &format!("tg {}", deg(lambda_max))
+                ),
+                mm(exact),
+                w.word(T::CamOnTheBoard),
+                mm(read)
+            ));
+            if rho.is_finite() {
+                w.doc.say(w.word(T::CamSlidingRoller));
+                let sign = if frame.roller < rho { "<" } else { ">=" };
+                w.doc.formula(&format!(
+                    "{} = {} {sign} {} = {} quad (\"{}\" {})",
+                    sym("r_{р}"),
+                    mm(frame.roller),
+                    sym("ρ_{min}"),
+                    mm(rho),
+                    w.word(T::CamOnTheBoard),
+                    mm(drawn)
+                ));
+            }
+        }
+    }
+    Ok(())
+}

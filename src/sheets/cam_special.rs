@@ -1,0 +1,184 @@
+//! The cam sheet of a flat-faced rocker or a translating cam: the diagrams with their
+//! integration (as every cam's), the profile by inversion (the face lines in the inverted
+//! positions and their envelope; the translating cam's follower positions along it, the
+//! rollers and both profiles), the data, the table of the points and the results against
+//! the closed forms.
+
+use super::cam::{diagram_block, law_lines, one_sheet, points_tables, results_table};
+use super::captions::{unit_in, CamText, Text};
+use super::layout::{keyed, Block};
+use super::BuildError;
+use crate::cam::{Follower, Special, SpecialProfile};
+use crate::check::Finding;
+use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
+use crate::scale::{format_fixed, format_sig, Lang};
+use crate::scene::Key;
+use crate::study::{Session, StudyError};
+
+/// Text height of the data lines, mm.
+const TEXT_MM: f64 = 3.5;
+
+/// Build the sheet of the session's flat-faced rocker or translating cam.
+pub(super) fn build(
+    session: &Session<'_>,
+    cam: &Special,
+    lang: Lang,
+) -> Result<Vec<Plate>, BuildError> {
+    let study = |e| BuildError::Study(StudyError::Cam(e));
+    let rows = cam.rows().map_err(study)?;
+    let exact = cam.angles_exact().map_err(study)?;
+    let caption = match cam.profile {
+        SpecialProfile::FlatRocker { .. } => CamText::FlatRockerProfile,
+        SpecialProfile::Sliding { .. } => CamText::SlidingProfile,
+    };
+    let mut blocks = vec![
+        diagram_block(&cam.diagrams, cam.spec.given, lang),
+        Block::view(
+            cam.figure().clone(),
+            format!("{}, {}", caption.get(lang), cam.scale.caption(lang)),
+            keyed(Key::CamScaleL, cam.scale),
+        ),
+    ];
+    let drawings = blocks.len();
+    let mut lines = data_lines(cam, lang).map_err(study)?;
+    lines.push(String::new());
+    lines.push(super::drafting_line(session.drafting(), lang));
+    blocks.push(Block::Text {
+        lines,
+        size_mm: TEXT_MM,
+    });
+    blocks.extend(
+        points_table(cam, &exact, lang)
+            .into_iter()
+            .map(Block::Table),
+    );
+    blocks.push(Block::Table(results_table(&rows, lang)));
+    let title = super::title_block(session.scene(), CamText::Title.get(lang), cam.scale, lang);
+    let sheet = Sheet {
+        size: SheetSize::A1,
+        landscape: true,
+    };
+    let blocks: Vec<Block> = blocks.into_iter().map(Block::clear_of_symbols).collect();
+    one_sheet(sheet, blocks, drawings, &title, lang)
+}
+
+/// The data (the law, the frame) and the results (ρ_min, X_min, the verdicts).
+fn data_lines(cam: &Special, lang: Lang) -> Result<Vec<String>, crate::cam::CamError> {
+    let s = &cam.spec;
+    let mm = unit_in("mm", lang);
+    let n = |x: f64| format_sig(x * 1e3, 4, lang);
+    let deg = |x: f64| format_sig(x.to_degrees(), 4, lang);
+    let mut out = law_lines(s, s.rotation, lang);
+    let rho = cam.exact_rho_min()?;
+    let drawn = cam.drawn_rho_min();
+    let pair = |x: f64, y: f64| {
+        format!(
+            "{} {mm} ({}), {} {mm} ({})",
+            n(x),
+            Text::Graphical.get(lang),
+            n(y),
+            Text::Exact.get(lang)
+        )
+    };
+    match &cam.profile {
+        SpecialProfile::FlatRocker { frame, .. } => {
+            let arm = match s.follower {
+                Follower::Rocker { arm, .. } => arm,
+                _ => 0.0,
+            };
+            out.push(format!(
+                "L = {} {mm}, β_{{max}} = {}°, a = O_{{1}}O_{{2}} = {} {mm}, e = {} {mm}, r_{{0}} = {} {mm}",
+                n(arm),
+                deg(s.stroke / arm),
+                n(frame.centres),
+                n(frame.face_offset),
+                n(frame.base)
+            ));
+            out.push(String::new());
+            out.push(format!("ρ_{{min}} = {}", pair(drawn, rho)));
+            if rho < s.rho_min {
+                out.push(format!(
+                    "{} {} {mm}",
+                    CamText::Concave.get(lang),
+                    n(s.rho_min)
+                ));
+            }
+        }
+        SpecialProfile::Sliding { frame, .. } => {
+            out.push(format!(
+                "h = {} {mm}, X = {} {mm}, r_{{р}} = {} {mm}, γ_{{min}} = {}°",
+                n(s.stroke),
+                n(frame.travel),
+                n(frame.roller),
+                deg(s.gamma_min)
+            ));
+            out.push(String::new());
+            if let Some((read, exact)) = cam.travel_min() {
+                out.push(format!("X_{{min}} = {}", pair(read, exact)));
+                if exact > frame.travel * (1.0 + 1e-9) {
+                    out.push(CamText::Exceeded.get(lang).into());
+                }
+            }
+            if rho.is_finite() {
+                out.push(format!("ρ_{{min}} = {}", pair(drawn, rho)));
+            }
+            let undercut = cam.findings()?.into_iter().find_map(|f| match f {
+                Finding::Undercut { rho_min, .. } => Some(rho_min),
+                _ => None,
+            });
+            if let Some(rho_min) = undercut {
+                out.push(format!(
+                    "{} ρ_{{min}} = {} {mm}",
+                    CamText::Undercut.get(lang),
+                    n(rho_min)
+                ));
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// One row per point: φ, S, dS/dφ, d²S/dφ² (read), the pressure angle read and exact, and
+/// the contact's radius vector (flat-faced rocker) or the follower's place ξ on the cam.
+fn points_table(cam: &Special, exact: &[f64], lang: Lang) -> Vec<TableBlock> {
+    let f = |x: f64, d: usize| format_fixed(x, d, lang);
+    let read = cam.angles_read();
+    let d = &cam.diagrams;
+    let rows = cam
+        .points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let last = match &cam.profile {
+                SpecialProfile::FlatRocker { board, .. } => board.contacts[i].point.length(),
+                SpecialProfile::Sliding { board, .. } => board.contacts[i].xi,
+            };
+            vec![
+                p.label.clone(),
+                f(p.phi.to_degrees(), 1),
+                f(d.s[i] * 1e3, 2),
+                f(d.ds[i] * 1e3, 2),
+                f(d.d2s[i] * 1e3, 2),
+                f(read[i].to_degrees(), 1),
+                f(exact[i].to_degrees(), 1),
+                f(last * 1e3, 2),
+            ]
+        })
+        .collect();
+    let mm = unit_in("mm", lang);
+    let last = match cam.profile {
+        SpecialProfile::FlatRocker { .. } => "R",
+        SpecialProfile::Sliding { .. } => "ξ",
+    };
+    let columns = vec![
+        ("№".into(), 8.0),
+        ("φ, °".into(), 14.0),
+        (format!("S, {mm}"), 16.0),
+        (format!("dS/dφ, {mm}"), 20.0),
+        (format!("d^2S/dφ^2, {mm}"), 24.0),
+        (format!("λ {}, °", CamText::Read.get(lang)), 18.0),
+        (format!("λ {}, °", Text::Exact.get(lang)), 18.0),
+        (format!("{last}, {mm}"), 16.0),
+    ];
+    points_tables(columns, rows, lang)
+}
