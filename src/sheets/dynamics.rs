@@ -109,18 +109,24 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         lines,
         size_mm: TEXT_MM,
     });
-    blocks.push(Block::Table(positions_table(&d, lang)));
-    blocks.push(Block::Table(results_table(&d, lang)));
+    let sheet = Sheet {
+        size: SheetSize::A1,
+        landscape: true,
+    };
+    // A row per position: the tables continue on further sheets when long.
+    for table in [positions_table(&d, lang), results_table(&d, lang)] {
+        blocks.extend(
+            super::layout::split_table(&sheet, table, lang)
+                .into_iter()
+                .map(Block::Table),
+        );
+    }
     let title = super::title_block(
         scene,
         DynamicsText::Title.get(lang),
         session.scale_l()?,
         lang,
     );
-    let sheet = Sheet {
-        size: SheetSize::A1,
-        landscape: true,
-    };
     lay_out(sheet, blocks, "dynamics", &title, lang)
 }
 

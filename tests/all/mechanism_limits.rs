@@ -288,3 +288,35 @@ wanted = ["forces"]
     assert!(!err.contains("kinematics.acceleration_positions"), "{err}");
     assert_eq!(files_under(&out), 0);
 }
+
+/// `[dynamics] count` over its documented range 4 … 360 draws the dynamics plate: Tables 9
+/// and 10, a row per position, continue on further sheets (issue 43 §7: 360 needed
+/// 158 × 1809 mm of one sheet).
+#[test]
+fn every_documented_dynamics_count_draws_the_dynamics_plate() {
+    let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).expect("shaper");
+    let only = text.replace(
+        "wanted = [\"positions\", \"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\"]",
+        "wanted = [\"dynamics\"]",
+    );
+    assert_ne!(only, text, "the shaper's wanted plates");
+    for n in [4, 120, 360] {
+        let with = only.replacen("\n[dynamics]\n", &format!("\n[dynamics]\ncount = {n}\n"), 1);
+        let name = format!("dynamics-{n}");
+        let (o, out) = run_limited(&name, &with, &["render", "--format", "svg"]);
+        assert!(o.status.success(), "count {n}: {}", stderr(&o));
+        let second = out.join(&name).join("dynamics-2.svg");
+        if n == 360 {
+            let svg = std::fs::read_to_string(&second).expect("the continuation");
+            assert!(svg.contains("(продолжение)"), "count {n}");
+            // Every position's row is on some sheet: the last one's label.
+            let first = std::fs::read_to_string(out.join(&name).join("dynamics.svg")).unwrap();
+            assert!(
+                format!("{first}{svg}").contains(">359<"),
+                "count {n}: row 359"
+            );
+        } else if n == 4 {
+            assert!(!second.exists(), "count {n}: one sheet");
+        }
+    }
+}
