@@ -319,6 +319,16 @@ pub fn construct(
         Role::Construction,
         &[o1],
     );
+    // The circle the pivot O₂ runs round in the inverted motion (radius a = O₁O₂).
+    rec.draw(
+        "the circle of the pivot O_2 in the inverted motion",
+        Item::Circle(Circle {
+            center: DVec2::ZERO,
+            radius: mu.to_mm(r.centres),
+        }),
+        Role::Axis,
+        &[o1],
+    );
     let pts = points(spec);
     let line_at = |s: f64, phi: f64| {
         let psi = psi(
@@ -342,12 +352,22 @@ pub fn construct(
         // S at the point as given (the S diagram's ordinate).
         let s = motion(spec, p.phi, p.after).s;
         let pivot = to_cam(DVec2::new(r.centres, 0.0), p.phi);
-        turned.push(rec.draw(
+        let notch = rec.draw(
             format!("pivot O_2 turned back by φ_{i}"),
             Item::Arc(Arc::notch(DVec2::ZERO, mm(pivot), ctx.notch_mm)),
             Role::Construction,
             &[o1],
-        ));
+        );
+        // The phases' ends numbered outside the circle, as the rays of the inversion are.
+        if p.k == 0 || p.last {
+            rec.label(
+                notch,
+                p.label.clone(),
+                mm(pivot),
+                mm(pivot).normalize_or_zero(),
+            );
+        }
+        turned.push(notch);
         lines.push(line_at(s, p.phi));
     }
     // The neighbouring face line before (`forward` false) or after point i.
