@@ -24,6 +24,7 @@ mod friction;
 mod fuzz_regressions;
 mod gears;
 mod guide_carrier;
+mod hostile;
 mod hard_cases;
 mod kinematics;
 mod languages;

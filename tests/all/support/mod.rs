@@ -79,3 +79,19 @@ pub fn notes(v: &serde_json::Value) -> String {
         .collect::<Vec<_>>()
         .join("\n")
 }
+
+/// Run `tmm` with `args` in the repository root under a limit of `kib` KiB of address space
+/// (`ulimit -v`): an unbounded allocation aborts instead of taking the machine.
+pub fn tmm_limited(kib: u64, args: &[&str]) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
+        .arg(env!("CARGO_BIN_EXE_tmm"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("run tmm under a memory limit")
+}
+
+/// The memory limit the hostile-input tests run `tmm` under, KiB (1.5 GB).
+pub const LIMIT_KIB: u64 = 1_500_000;

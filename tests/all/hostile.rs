@@ -1,0 +1,109 @@
+//! Issue 43's reproducers: inputs a hostile user tried, each answered with a result or a clear
+//! refusal (exit 2 or 1 naming the key or the position) — never an abort, a panic, memory
+//! without bound or a half-written output.
+
+use crate::support::{report_json, rows_of, scratch, tmm_limited, LIMIT_KIB};
+use std::path::{Path, PathBuf};
+
+/// The shaper's scene with the ram's mass (`[[forces.link]] link = 5`) set to `mass`, kg,
+/// written into `dir`; its path.
+fn shaper_with_ram(dir: &Path, mass: &str) -> PathBuf {
+    let text = std::fs::read_to_string("constructions/shaper.toml").expect("shaper.toml");
+    let ram = "link = 5\nmass = 22.0\n";
+    assert!(text.contains(ram), "the template's ram");
+    let path = dir.join("shaper.toml");
+    std::fs::write(&path, text.replace(ram, &format!("link = 5\nmass = {mass}\n"))).unwrap();
+    path
+}
+
+/// Neither an abort nor a panic: a status, and no "panicked" on standard error.
+fn answered(o: &std::process::Output) -> String {
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(o.status.code().is_some(), "killed by a signal: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+    err
+}
+
+#[test]
+fn a_massless_ram_has_no_arm_and_its_sheets_are_drawn() {
+    for mass in ["0.0", "1e-12"] {
+        let dir = scratch("ram-mass");
+        let scene = shaper_with_ram(&dir, mass);
+        let out = dir.join("out");
+        let o = tmm_limited(
+            LIMIT_KIB,
+            &[
+                "render",
+                scene.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+                "--format",
+                "svg",
+            ],
+        );
+        let err = answered(&o);
+        assert!(o.status.success(), "mass {mass}: {err}");
+        assert!(out.join("shaper/forces.svg").is_file(), "mass {mass}");
+        // The guide's reaction on the ram is rounding noise of the loads (thousands of N):
+        // zero, with no arm, on both routes.
+        let report = report_json(scene.to_str().unwrap(), None);
+        let reactions = rows_of(&report, "R_0_5");
+        assert!(!reactions.is_empty(), "mass {mass}");
+        for r in reactions {
+            let exact = r["analytic"].as_f64().unwrap();
+            assert!(exact.abs() < 1e-9, "mass {mass}: {r}");
+        }
+        assert!(rows_of(&report, "h_0_5").is_empty(), "mass {mass}");
+    }
+}
+
+#[test]
+fn a_ram_of_a_milligram_is_drawn_or_refused_naming_the_scale() {
+    let dir = scratch("ram-mg");
+    let scene = shaper_with_ram(&dir, "1e-6");
+    let out = dir.join("out");
+    let o = tmm_limited(
+        LIMIT_KIB,
+        &["render", scene.to_str().unwrap(), "--out", out.to_str().unwrap()],
+    );
+    let err = answered(&o);
+    // Its arm is real (≈ 6·10⁶ m: the resistance's moment over a weight of 10 μN) and no
+    // sheet holds it: refused naming the scale, nothing of the scene written.
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("scale_l"), "{err}");
+    assert!(!out.join("shaper").exists());
+}
+
+#[test]
+fn a_grid_row_with_a_massless_ram_is_drawn_with_the_others() {
+    let dir = scratch("ram-grid");
+    let grid = std::fs::read_to_string("constructions/variants/shaper.csv").unwrap();
+    let mut lines: Vec<String> = grid.lines().take(4).map(str::to_string).collect();
+    // The ram's mass is the grid's ninth column (forces.link[3].mass).
+    let mut fields: Vec<&str> = lines[2].split(',').collect();
+    assert_eq!(lines[0].split(',').nth(8), Some("forces.link[3].mass"));
+    fields[8] = "0";
+    lines[2] = fields.join(",");
+    let path = dir.join("grid.csv");
+    std::fs::write(&path, lines.join("\n") + "\n").unwrap();
+    let out = dir.join("out");
+    let o = tmm_limited(
+        LIMIT_KIB,
+        &[
+            "batch",
+            "constructions/shaper.toml",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--format",
+            "svg",
+        ],
+    );
+    let err = answered(&o);
+    assert!(o.status.success(), "{err}");
+    for v in ["01", "02", "03"] {
+        assert!(out.join(v).join("task.pdf").is_file(), "{v}");
+    }
+    let key = std::fs::read_to_string(out.join("answer-key.csv")).unwrap();
+    assert_eq!(key.lines().filter(|l| l.ends_with(",ok")).count(), 3, "{key}");
+}
