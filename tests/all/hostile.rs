@@ -107,3 +107,35 @@ fn a_grid_row_with_a_massless_ram_is_drawn_with_the_others() {
     let key = std::fs::read_to_string(out.join("answer-key.csv")).unwrap();
     assert_eq!(key.lines().filter(|l| l.ends_with(",ok")).count(), 3, "{key}");
 }
+
+#[test]
+#[cfg(unix)]
+fn a_link_planted_at_a_temporarys_name_is_never_followed() {
+    let dir = scratch("planted-link");
+    let victim = dir.join("victim.txt");
+    std::fs::write(&victim, b"not yours").unwrap();
+    let dest = dir.join("out").join("plate.svg");
+    std::fs::create_dir_all(dest.parent().unwrap()).unwrap();
+    // The name this process's temporary for plate.svg takes first, and the backup's.
+    let pid = std::process::id();
+    let planted = [
+        dest.with_file_name(format!(".plate.svg.tmp-{pid}")),
+        dest.with_file_name(format!(".plate.svg.bak-{pid}")),
+    ];
+    std::os::unix::fs::symlink(&victim, &planted[0]).unwrap();
+    tmm::plate::write_atomic(&dest, b"first").expect("written beside the link");
+    std::os::unix::fs::symlink(&victim, &planted[1]).unwrap();
+    tmm::plate::write_atomic(&dest, b"second").expect("replaced beside the links");
+    assert_eq!(std::fs::read(&victim).unwrap(), b"not yours");
+    let meta = std::fs::symlink_metadata(&dest).unwrap();
+    assert!(meta.file_type().is_file(), "the destination is a file, not the link");
+    assert_eq!(std::fs::read(&dest).unwrap(), b"second");
+    // The planted temporary's link is not ours to remove; no temporary of ours stays.
+    assert!(std::fs::symlink_metadata(&planted[0]).unwrap().file_type().is_symlink());
+    let left: Vec<String> = std::fs::read_dir(dest.parent().unwrap())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains(".tmp-") && !planted.iter().any(|p| p.ends_with(n)))
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+}
