@@ -23,7 +23,6 @@ use crate::render::{self, Options};
 use crate::scene::user_table::{self, CellError};
 use crate::scene::{self, AnswerItem, Scene};
 use crate::study::Session;
-use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 use toml::{Table, Value};
@@ -395,12 +394,12 @@ fn one(
         ),
         None => None,
     };
-    let mut files = render::render_session(&session, out, options).map_err(|e| why(&e))?;
+    let mut files = render::session_files(&session, out, options).map_err(|e| why(&e))?;
     if let Some(pdf) = task {
-        let path = out.join(&v.name).join("task.pdf");
-        crate::plate::write_atomic(&path, &pdf).map_err(|e| why(&e))?;
-        files.push(path);
+        files.push((out.join(&v.name).join("task.pdf"), pdf));
     }
+    // The report's values before anything is written, and the variant's sheets with its
+    // task sheet written together: a variant is whole or absent.
     let values = if columns.is_empty() {
         Vec::new()
     } else {
@@ -410,12 +409,27 @@ fn one(
             .map(|c| row_of(&report.rows, &c.item).map(|r| r.analytic))
             .collect()
     };
-    Ok((files, values))
+    crate::plate::write_all_atomic(&files).map_err(|(path, e)| {
+        format!(
+            "line {}: {}: cannot write: {e} (nothing of the variant written)",
+            v.line,
+            path.display()
+        )
+    })?;
+    Ok((files.into_iter().map(|(path, _)| path).collect(), values))
 }
 
-/// Render every variant (in parallel) into `out/<name>/`, each written atomically on its
-/// own; a variant that fails is reported in its outcome and the others go on. `done` is
-/// called with each variant's name as it finishes (a progress bar). Outcomes in grid order.
+/// A memoized result not used by the last this many variants is dropped.
+const MEMO_AGE: usize = 8;
+
+/// Render every variant into `out/<name>/`, each written atomically on its own; a variant
+/// that fails is reported in its outcome and the others go on. `done` is called with each
+/// variant's name as it finishes (a progress bar). Outcomes in grid order.
+///
+/// The variants are drawn side by side on as many plain threads as rayon's pool has
+/// ([`crate::threads::each`]), not on the pool: a pool thread waiting inside one variant's
+/// PDF would take up the next variant on its stack, and a class of hundreds overflows it.
+/// At most that many variants are in memory at once, whatever the grid's length.
 pub fn run(
     variants: &[Variant],
     template: &Path,
@@ -424,17 +438,21 @@ pub fn run(
     columns: &[Column],
     done: &(dyn Fn(&str) + Sync),
 ) -> Vec<Outcome> {
-    variants
-        .par_iter()
-        .map(|v| {
-            let result = one(v, template, out, options, columns);
-            done(&v.name);
-            Outcome {
-                name: v.name.clone(),
-                result,
-            }
-        })
-        .collect()
+    let mut results: Vec<Option<Outcome>> = variants.iter().map(|_| None).collect();
+    crate::threads::each(
+        variants,
+        rayon::current_num_threads(),
+        |v| one(v, template, out, options, columns),
+        |k, result| {
+            // What the PDF writer and the typesetter memoized for variants long done goes:
+            // its caches would otherwise grow with every variant of the class.
+            comemo::evict(MEMO_AGE);
+            let name = variants[k].name.clone();
+            done(&name);
+            results[k] = Some(Outcome { name, result });
+        },
+    );
+    results.into_iter().flatten().collect()
 }
 
 /// The answer key as CSV: `variant`, a column per value (`v_E@3 (m/s)`: the exact value,

@@ -353,19 +353,63 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
         bar.inc(1);
     });
     bar.finish_and_clear();
-    let key = out.join("answer-key.csv");
-    let csv = tmm::batch::answer_key_csv(&columns, &outcomes).into_bytes();
-    let mut files = vec![(key, csv)];
+    // Every variant's diagnosis is printed before the answer key is written: a key that
+    // cannot be written loses none of them.
+    let failed = print_outcomes(&outcomes);
+    let key = answer_key(&scene, out, &columns, &outcomes, options.lang);
+    if let Err(f) = &key {
+        eprintln!("error: {}", f.message);
+    }
+    let code = match (&key, failed) {
+        (Err(f), _) => f.code,
+        (Ok(()), 0) => return Ok(()),
+        (Ok(()), _) => 1,
+    };
+    Err(Failure {
+        code,
+        message: match failed {
+            0 => String::new(),
+            _ => format!(
+                "{failed} of {} variants not drawn (listed above; the others are written)",
+                outcomes.len()
+            ),
+        },
+    })
+}
+
+/// The answer key of a batch (`answer-key.csv`, and its sheet `answer-key.pdf` when the
+/// template names values), written together into `out`; the files printed.
+fn answer_key(
+    scene: &Scene,
+    out: &Path,
+    columns: &[tmm::batch::Column],
+    outcomes: &[tmm::batch::Outcome],
+    lang: Lang,
+) -> Result<(), Failure> {
+    let csv = tmm::batch::answer_key_csv(columns, outcomes).into_bytes();
+    let mut files = vec![(out.join("answer-key.csv"), csv)];
     if !columns.is_empty() {
-        let pdf = tmm::batch::answer_key_pdf(&scene, &columns, &outcomes, options.lang)
+        let pdf = tmm::batch::answer_key_pdf(scene, columns, outcomes, lang)
             .map_err(|e| Failure::construction(format!("the answer key's sheet: {e}")))?;
         files.push((out.join("answer-key.pdf"), pdf));
     }
     tmm::plate::write_all_atomic(&files).map_err(|(path, e)| {
-        Failure::construction(format!("{}: cannot write: {e}", path.display()))
+        Failure::input(format!(
+            "{}: cannot write the answer key: {e} (the variants listed above are written)",
+            path.display()
+        ))
     })?;
+    for (path, _) in &files {
+        emit(&path.display().to_string());
+    }
+    Ok(())
+}
+
+/// Each variant of a batch on a line (its files on standard output, its diagnosis on
+/// standard error); how many were not drawn.
+fn print_outcomes(outcomes: &[tmm::batch::Outcome]) -> usize {
     let mut failed = 0;
-    for o in &outcomes {
+    for o in outcomes {
         match &o.result {
             Ok((files, _)) => emit(&format!(
                 "{}: {} file{}",
@@ -379,16 +423,7 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
             }
         }
     }
-    for (path, _) in &files {
-        emit(&path.display().to_string());
-    }
-    if failed > 0 {
-        return Err(Failure::construction(format!(
-            "{failed} of {} variants not drawn (listed above; the others are written)",
-            outcomes.len()
-        )));
-    }
-    Ok(())
+    failed
 }
 
 /// `tmm audit`: the table read whole against the scene's report (refused with its line,
