@@ -20,6 +20,7 @@ mod outputs;
 mod planetary;
 mod raw;
 mod structure;
+mod text;
 pub mod user_table;
 
 pub use crate::kinematics::KinematicsSpec;

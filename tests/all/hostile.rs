@@ -139,3 +139,45 @@ fn a_link_planted_at_a_temporarys_name_is_never_followed() {
         .collect();
     assert!(left.is_empty(), "{left:?}");
 }
+
+/// The four-bar's scene with the title `title`, written into a scratch folder; its path.
+fn four_bar_titled(title: &str) -> PathBuf {
+    let text = std::fs::read_to_string("constructions/four-bar.toml").expect("four-bar.toml");
+    let old = "title = \"Шарнирный четырёхзвенник\"";
+    assert!(text.contains(old), "the template's title");
+    let path = scratch("titled").join("titled.toml");
+    std::fs::write(&path, text.replace(old, &format!("title = \"{title}\""))).unwrap();
+    path
+}
+
+#[test]
+fn a_title_too_long_or_too_marked_for_a_note_is_refused_naming_its_key() {
+    for (title, says) in [
+        ("Я".repeat(32_768), "32768 characters: expected at most 1000"),
+        (format!("a{}", "\u{301}".repeat(5000)), "5001 characters"),
+        (format!("a{}", "\u{301}".repeat(900)), "900 combining marks"),
+    ] {
+        let scene = four_bar_titled(&title);
+        let out = scene.with_file_name("out");
+        let o = tmm_limited(
+            LIMIT_KIB,
+            &["note", scene.to_str().unwrap(), "--out", out.to_str().unwrap()],
+        );
+        let err = answered(&o);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains("task.title") && err.contains(says), "{err}");
+        assert!(!out.exists());
+    }
+    // As long and as marked as allowed: the note is typeset.
+    for title in ["Я".repeat(1000), format!("a{}", "\u{301}".repeat(30)).repeat(32)] {
+        let scene = four_bar_titled(&title);
+        let out = scene.with_file_name("out");
+        let o = tmm_limited(
+            LIMIT_KIB,
+            &["note", scene.to_str().unwrap(), "--out", out.to_str().unwrap()],
+        );
+        let err = answered(&o);
+        assert!(o.status.success(), "{err}");
+        assert!(out.join("titled/titled-note.pdf").is_file());
+    }
+}
