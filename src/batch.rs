@@ -335,11 +335,6 @@ pub fn answer_columns(template: &Scene, drafting: Drafting) -> Result<Vec<Column
         .collect()
 }
 
-/// `plates` as one PDF, a page each.
-fn pdf_of(plates: &[crate::plate::Plate]) -> Result<Vec<u8>, crate::plate::PdfError> {
-    let svgs: Vec<String> = plates.iter().map(crate::plate::to_svg).collect();
-    crate::plate::to_pdf(&svgs)
-}
 
 /// The progress bar of a batch of `n` variants, drawn to `target` (standard error on a
 /// terminal, hidden otherwise): the variants done and the last one's name.
@@ -390,7 +385,7 @@ fn one(
         Some(_) => Some(
             crate::sheets::task_sheet(&session, &v.name, options.lang)
                 .map_err(|e| why(&e))
-                .and_then(|plates| pdf_of(&plates).map_err(|e| why(&e)))?,
+                .and_then(|plates| crate::plate::plates_to_pdf(&plates).map_err(|e| why(&e)))?,
         ),
         None => None,
     };
@@ -519,7 +514,7 @@ pub fn answer_key_pdf(
         .collect();
     let plates =
         crate::sheets::answer_key(template, &heads, &lines, lang).map_err(|e| e.to_string())?;
-    pdf_of(&plates).map_err(|e| e.to_string())
+    crate::plate::plates_to_pdf(&plates).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

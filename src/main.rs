@@ -448,8 +448,7 @@ fn audit(
     if let Some(pdf) = pdf {
         let plates = tmm::audit::to_sheet(&s, &audited, lang)
             .map_err(|e| Failure::construction(format!("the audit's sheet: {e}")))?;
-        let svgs: Vec<String> = plates.iter().map(tmm::plate::to_svg).collect();
-        let bytes = tmm::plate::to_pdf(&svgs)
+        let bytes = tmm::plate::plates_to_pdf(&plates)
             .map_err(|e| Failure::construction(format!("the audit's sheet: {e}")))?;
         tmm::plate::write_atomic(pdf, &bytes)
             .map_err(|e| Failure::construction(format!("{}: cannot write: {e}", pdf.display())))?;

@@ -49,16 +49,34 @@ pub fn to_pdf(svgs: &[String]) -> Result<Vec<u8>, PdfError> {
     // holds more than one page's tree.
     let mut document = new_document(svgs.len())?;
     for (k, svg) in svgs.iter().enumerate() {
-        let parsed = ParsedSvg::new(svg).map_err(|e| PdfError::Svg {
-            page: k + 1,
-            message: match e {
-                super::PlateError::Svg(message) => message,
-                other => other.to_string(),
-            },
-        })?;
-        add_page(&mut document, k + 1, &parsed.tree)?;
+        add_page(&mut document, k + 1, &parsed_page(k + 1, svg)?.tree)?;
     }
     finish(document)
+}
+
+/// [`to_pdf`] of `plates`, each written as SVG only when its page is drawn (a sheet of a
+/// long table runs to many pages: one page's SVG and tree held at a time).
+///
+/// # Errors
+/// As [`to_pdf`].
+pub fn plates_to_pdf(plates: &[super::Plate]) -> Result<Vec<u8>, PdfError> {
+    let mut document = new_document(plates.len())?;
+    for (k, plate) in plates.iter().enumerate() {
+        let svg = super::to_svg(plate);
+        add_page(&mut document, k + 1, &parsed_page(k + 1, &svg)?.tree)?;
+    }
+    finish(document)
+}
+
+/// The SVG of page `page` (from 1) parsed.
+fn parsed_page(page: usize, svg: &str) -> Result<ParsedSvg<'_>, PdfError> {
+    ParsedSvg::new(svg).map_err(|e| PdfError::Svg {
+        page,
+        message: match e {
+            super::PlateError::Svg(message) => message,
+            other => other.to_string(),
+        },
+    })
 }
 
 /// [`to_pdf`] of SVGs already parsed (the same bytes).
@@ -102,8 +120,15 @@ fn add_page(document: &mut Document, page: usize, tree: &resvg::usvg::Tree) -> R
         .ok_or_else(|| convert("the SVG could not be drawn"))?;
     surface.finish();
     sheet.finish();
+    // The writer memoizes each page's compressed content, which no later page asks for
+    // again: a memo not used by the last few pages is dropped, or a long document holds
+    // every page twice.
+    comemo::evict(PAGE_MEMO_AGE);
     Ok(())
 }
+
+/// A memoized result of the PDF writer not used by the last this many pages is dropped.
+const PAGE_MEMO_AGE: usize = 4;
 
 /// The document's bytes.
 fn finish(document: Document) -> Result<Vec<u8>, PdfError> {

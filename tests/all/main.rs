@@ -25,6 +25,7 @@ mod fuzz_regressions;
 mod gears;
 mod guide_carrier;
 mod hostile;
+mod hostile_audit;
 mod hostile_batch;
 mod hard_cases;
 mod kinematics;
