@@ -335,7 +335,6 @@ pub fn answer_columns(template: &Scene, drafting: Drafting) -> Result<Vec<Column
         .collect()
 }
 
-
 /// The progress bar of a batch of `n` variants, drawn to `target` (standard error on a
 /// terminal, hidden otherwise): the variants done and the last one's name.
 pub fn progress_bar(n: usize, target: indicatif::ProgressDrawTarget) -> indicatif::ProgressBar {

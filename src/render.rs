@@ -319,7 +319,8 @@ fn files_of(
     };
     // The PNGs and the notes on plain threads, the PDF sets on the calling one: a PDF or a
     // note waiting for its parts on a thread of the pool would take up other work there.
-    let (pngs, (note_pdfs, set_pdfs)) = threads::beside(pngs, || threads::beside(note_pdfs, set_pdfs));
+    let (pngs, (note_pdfs, set_pdfs)) =
+        threads::beside(pngs, || threads::beside(note_pdfs, set_pdfs));
     let (set_pdfs, note_pdfs) = (set_pdfs?, note_pdfs?);
     let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     let mut pngs = pngs.into_iter();

@@ -108,7 +108,10 @@ mod tests {
         let items: Vec<u64> = (0..500).collect();
         let mut got = vec![None; items.len()];
         each(&items, 3, |x| x * x, |k, r| got[k] = Some(r));
-        assert!(got.iter().enumerate().all(|(k, r)| *r == Some((k * k) as u64)));
+        assert!(got
+            .iter()
+            .enumerate()
+            .all(|(k, r)| *r == Some((k * k) as u64)));
         let mut none = 0;
         each(&[] as &[u8], 4, |_| (), |_, _| none += 1);
         assert_eq!(none, 0);
@@ -141,7 +144,7 @@ mod tests {
 
     #[test]
     fn beside_gives_both_results_on_and_off_the_pool() {
-        let (a, b) = beside(|| rayon::current_thread_index(), || 2);
+        let (a, b) = beside(rayon::current_thread_index, || 2);
         assert_eq!((a, b), (None, 2));
         let (a, b) = rayon::scope(|_| beside(|| 1, || 2));
         assert_eq!((a, b), (1, 2));

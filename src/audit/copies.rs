@@ -50,10 +50,7 @@ impl<'a> Copies<'a> {
 
     /// The values of `entry`'s row whose number in SI is `entry`'s, one of each column
     /// (`entry`'s own among them), with how their columns are read.
-    pub fn of<'s>(
-        &'s self,
-        entry: &'a Entry,
-    ) -> impl Iterator<Item = (&'a Entry, Reading)> + 's {
+    pub fn of<'s>(&'s self, entry: &'a Entry) -> impl Iterator<Item = (&'a Entry, Reading)> + 's {
         let found: &'s [usize] = key(entry)
             .and_then(|k| self.index.get(&k))
             .map_or(&[], Vec::as_slice);

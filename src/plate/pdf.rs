@@ -105,7 +105,11 @@ fn new_document(pages: usize) -> Result<Document, PdfError> {
 }
 
 /// Draw `tree` on a new page (number `page`, from 1) of its own size.
-fn add_page(document: &mut Document, page: usize, tree: &resvg::usvg::Tree) -> Result<(), PdfError> {
+fn add_page(
+    document: &mut Document,
+    page: usize,
+    tree: &resvg::usvg::Tree,
+) -> Result<(), PdfError> {
     // usvg sizes are CSS pixels (96 per inch); the page is in points (72 per inch).
     let (w, h) = (tree.size().width() * 0.75, tree.size().height() * 0.75);
     let convert = |message: &str| PdfError::Convert {

@@ -310,7 +310,10 @@ fn create_temporary(dir: &Path, name: &str) -> io::Result<(PathBuf, fs::File)> {
     }
     Err(io::Error::new(
         io::ErrorKind::AlreadyExists,
-        format!("{TEMPORARY_TRIES} names of temporaries in {} are taken", dir.display()),
+        format!(
+            "{TEMPORARY_TRIES} names of temporaries in {} are taken",
+            dir.display()
+        ),
     ))
 }
 

@@ -27,18 +27,15 @@ pub(super) fn refused(s: &str) -> Option<String> {
     }
     let n = s.chars().count();
     if n > MAX_TEXT_CHARS {
-        return Some(format!(
-            "{n} characters: expected at most {MAX_TEXT_CHARS}"
-        ));
+        return Some(format!("{n} characters: expected at most {MAX_TEXT_CHARS}"));
     }
     let marks = s
         .graphemes(true)
         .map(|g| g.chars().count() - 1)
         .max()
         .unwrap_or(0);
-    (marks > MAX_MARKS).then(|| {
-        format!("a character with {marks} combining marks: expected at most {MAX_MARKS}")
-    })
+    (marks > MAX_MARKS)
+        .then(|| format!("a character with {marks} combining marks: expected at most {MAX_MARKS}"))
 }
 
 #[cfg(test)]

@@ -12,7 +12,11 @@ fn shaper_with_ram(dir: &Path, mass: &str) -> PathBuf {
     let ram = "link = 5\nmass = 22.0\n";
     assert!(text.contains(ram), "the template's ram");
     let path = dir.join("shaper.toml");
-    std::fs::write(&path, text.replace(ram, &format!("link = 5\nmass = {mass}\n"))).unwrap();
+    std::fs::write(
+        &path,
+        text.replace(ram, &format!("link = 5\nmass = {mass}\n")),
+    )
+    .unwrap();
     path
 }
 
@@ -64,7 +68,12 @@ fn a_ram_of_a_milligram_is_drawn_or_refused_naming_the_scale() {
     let out = dir.join("out");
     let o = tmm_limited(
         LIMIT_KIB,
-        &["render", scene.to_str().unwrap(), "--out", out.to_str().unwrap()],
+        &[
+            "render",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
     );
     let err = answered(&o);
     // Its arm is real (≈ 6·10⁶ m: the resistance's moment over a weight of 10 μN) and no
@@ -105,7 +114,11 @@ fn a_grid_row_with_a_massless_ram_is_drawn_with_the_others() {
         assert!(out.join(v).join("task.pdf").is_file(), "{v}");
     }
     let key = std::fs::read_to_string(out.join("answer-key.csv")).unwrap();
-    assert_eq!(key.lines().filter(|l| l.ends_with(",ok")).count(), 3, "{key}");
+    assert_eq!(
+        key.lines().filter(|l| l.ends_with(",ok")).count(),
+        3,
+        "{key}"
+    );
 }
 
 #[test]
@@ -128,10 +141,16 @@ fn a_link_planted_at_a_temporarys_name_is_never_followed() {
     tmm::plate::write_atomic(&dest, b"second").expect("replaced beside the links");
     assert_eq!(std::fs::read(&victim).unwrap(), b"not yours");
     let meta = std::fs::symlink_metadata(&dest).unwrap();
-    assert!(meta.file_type().is_file(), "the destination is a file, not the link");
+    assert!(
+        meta.file_type().is_file(),
+        "the destination is a file, not the link"
+    );
     assert_eq!(std::fs::read(&dest).unwrap(), b"second");
     // The planted temporary's link is not ours to remove; no temporary of ours stays.
-    assert!(std::fs::symlink_metadata(&planted[0]).unwrap().file_type().is_symlink());
+    assert!(std::fs::symlink_metadata(&planted[0])
+        .unwrap()
+        .file_type()
+        .is_symlink());
     let left: Vec<String> = std::fs::read_dir(dest.parent().unwrap())
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
@@ -153,7 +172,10 @@ fn four_bar_titled(title: &str) -> PathBuf {
 #[test]
 fn a_title_too_long_or_too_marked_for_a_note_is_refused_naming_its_key() {
     for (title, says) in [
-        ("Я".repeat(32_768), "32768 characters: expected at most 1000"),
+        (
+            "Я".repeat(32_768),
+            "32768 characters: expected at most 1000",
+        ),
         (format!("a{}", "\u{301}".repeat(5000)), "5001 characters"),
         (format!("a{}", "\u{301}".repeat(900)), "900 combining marks"),
     ] {
@@ -161,7 +183,12 @@ fn a_title_too_long_or_too_marked_for_a_note_is_refused_naming_its_key() {
         let out = scene.with_file_name("out");
         let o = tmm_limited(
             LIMIT_KIB,
-            &["note", scene.to_str().unwrap(), "--out", out.to_str().unwrap()],
+            &[
+                "note",
+                scene.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+            ],
         );
         let err = answered(&o);
         assert_eq!(o.status.code(), Some(2), "{err}");
@@ -169,12 +196,20 @@ fn a_title_too_long_or_too_marked_for_a_note_is_refused_naming_its_key() {
         assert!(!out.exists());
     }
     // As long and as marked as allowed: the note is typeset.
-    for title in ["Я".repeat(1000), format!("a{}", "\u{301}".repeat(30)).repeat(32)] {
+    for title in [
+        "Я".repeat(1000),
+        format!("a{}", "\u{301}".repeat(30)).repeat(32),
+    ] {
         let scene = four_bar_titled(&title);
         let out = scene.with_file_name("out");
         let o = tmm_limited(
             LIMIT_KIB,
-            &["note", scene.to_str().unwrap(), "--out", out.to_str().unwrap()],
+            &[
+                "note",
+                scene.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+            ],
         );
         let err = answered(&o);
         assert!(o.status.success(), "{err}");

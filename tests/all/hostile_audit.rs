@@ -59,8 +59,10 @@ fn a_long_table_gives_each_value_its_verdict_in_the_short_one() {
         assert_eq!(verdict(v), verdict(&short[k % n]), "value {k}");
     }
     // Some of them copied from another column of their row: the look-up by row and number.
-    assert!(short.iter().any(|v| v["text"].as_str().unwrap_or("").contains("copied")
-        || v["explanations"].to_string().contains("quantity:")));
+    assert!(short
+        .iter()
+        .any(|v| v["text"].as_str().unwrap_or("").contains("copied")
+            || v["explanations"].to_string().contains("quantity:")));
 }
 
 #[test]

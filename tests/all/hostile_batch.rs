@@ -23,7 +23,10 @@ fn batch(grid: &Path, out: &Path) -> (Option<i32>, String) {
     );
     let err = String::from_utf8_lossy(&o.stderr).into_owned();
     assert!(o.status.code().is_some(), "killed by a signal: {err}");
-    assert!(!err.contains("panicked") && !err.contains("overflow"), "{err}");
+    assert!(
+        !err.contains("panicked") && !err.contains("overflow"),
+        "{err}"
+    );
     (o.status.code(), err)
 }
 
@@ -64,7 +67,10 @@ fn a_class_of_hundreds_with_an_impossible_row_in_each_hundred_is_drawn() {
     assert_eq!(key.lines().filter(|l| l.ends_with(",ok")).count(), n - 5);
     for k in [0, 99, 250, 499] {
         let v = out.join(format!("v{k:04}"));
-        assert!(v.join("task.pdf").is_file() && v.join("kinematics.svg").is_file(), "{k}");
+        assert!(
+            v.join("task.pdf").is_file() && v.join("kinematics.svg").is_file(),
+            "{k}"
+        );
     }
 }
 
@@ -96,7 +102,10 @@ fn a_variant_that_cannot_be_written_is_absent_and_every_failure_is_reported() {
     for v in ["a", "d"] {
         let files = names(&out.join(v));
         assert!(files.contains(&"task.pdf".to_string()), "{v}: {files:?}");
-        assert!(files.contains(&"kinematics.svg".to_string()), "{v}: {files:?}");
+        assert!(
+            files.contains(&"kinematics.svg".to_string()),
+            "{v}: {files:?}"
+        );
         assert!(!files.iter().any(|f| f.starts_with('.')), "{v}: {files:?}");
     }
     assert!(out.join("answer-key.csv").is_dir() && !out.join("answer-key.pdf").exists());
