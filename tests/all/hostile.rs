@@ -2,7 +2,7 @@
 //! refusal (exit 2 or 1 naming the key or the position) — never an abort, a panic, memory
 //! without bound or a half-written output.
 
-use crate::support::{report_json, rows_of, scratch, tmm_limited, LIMIT_KIB};
+use crate::support::{report_json, rows_of, run_limited, scratch};
 use std::path::{Path, PathBuf};
 
 /// The shaper's scene with the ram's mass (`[[forces.link]] link = 5`) set to `mass`, kg,
@@ -20,33 +20,14 @@ fn shaper_with_ram(dir: &Path, mass: &str) -> PathBuf {
     path
 }
 
-/// Neither an abort nor a panic: a status, and no "panicked" on standard error.
-fn answered(o: &std::process::Output) -> String {
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert!(o.status.code().is_some(), "killed by a signal: {err}");
-    assert!(!err.contains("panicked"), "{err}");
-    err
-}
-
 #[test]
 fn a_massless_ram_has_no_arm_and_its_sheets_are_drawn() {
     for mass in ["0.0", "1e-12"] {
         let dir = scratch("ram-mass");
         let scene = shaper_with_ram(&dir, mass);
         let out = dir.join("out");
-        let o = tmm_limited(
-            LIMIT_KIB,
-            &[
-                "render",
-                scene.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-                "--format",
-                "svg",
-            ],
-        );
-        let err = answered(&o);
-        assert!(o.status.success(), "mass {mass}: {err}");
+        let (code, err) = run_limited("render", &[&scene], &out, &["--format", "svg"]);
+        assert_eq!(code, Some(0), "mass {mass}: {err}");
         assert!(out.join("shaper/forces.svg").is_file(), "mass {mass}");
         // The guide's reaction on the ram is rounding noise of the loads (thousands of N):
         // zero, with no arm, on both routes.
@@ -66,19 +47,10 @@ fn a_ram_of_a_milligram_is_drawn_or_refused_naming_the_scale() {
     let dir = scratch("ram-mg");
     let scene = shaper_with_ram(&dir, "1e-6");
     let out = dir.join("out");
-    let o = tmm_limited(
-        LIMIT_KIB,
-        &[
-            "render",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ],
-    );
-    let err = answered(&o);
+    let (code, err) = run_limited("render", &[&scene], &out, &[]);
     // Its arm is real (≈ 6·10⁶ m: the resistance's moment over a weight of 10 μN) and no
     // sheet holds it: refused naming the scale, nothing of the scene written.
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("scale_l"), "{err}");
     assert!(!out.join("shaper").exists());
 }
@@ -96,20 +68,9 @@ fn a_grid_row_with_a_massless_ram_is_drawn_with_the_others() {
     let path = dir.join("grid.csv");
     std::fs::write(&path, lines.join("\n") + "\n").unwrap();
     let out = dir.join("out");
-    let o = tmm_limited(
-        LIMIT_KIB,
-        &[
-            "batch",
-            "constructions/shaper.toml",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--format",
-            "svg",
-        ],
-    );
-    let err = answered(&o);
-    assert!(o.status.success(), "{err}");
+    let template = Path::new("constructions/shaper.toml");
+    let (code, err) = run_limited("batch", &[template, &path], &out, &["--format", "svg"]);
+    assert_eq!(code, Some(0), "{err}");
     for v in ["01", "02", "03"] {
         assert!(out.join(v).join("task.pdf").is_file(), "{v}");
     }
@@ -181,17 +142,8 @@ fn a_title_too_long_or_too_marked_for_a_note_is_refused_naming_its_key() {
     ] {
         let scene = four_bar_titled(&title);
         let out = scene.with_file_name("out");
-        let o = tmm_limited(
-            LIMIT_KIB,
-            &[
-                "note",
-                scene.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-            ],
-        );
-        let err = answered(&o);
-        assert_eq!(o.status.code(), Some(2), "{err}");
+        let (code, err) = run_limited("note", &[&scene], &out, &[]);
+        assert_eq!(code, Some(2), "{err}");
         assert!(err.contains("task.title") && err.contains(says), "{err}");
         assert!(!out.exists());
     }
@@ -202,17 +154,8 @@ fn a_title_too_long_or_too_marked_for_a_note_is_refused_naming_its_key() {
     ] {
         let scene = four_bar_titled(&title);
         let out = scene.with_file_name("out");
-        let o = tmm_limited(
-            LIMIT_KIB,
-            &[
-                "note",
-                scene.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-            ],
-        );
-        let err = answered(&o);
-        assert!(o.status.success(), "{err}");
+        let (code, err) = run_limited("note", &[&scene], &out, &[]);
+        assert_eq!(code, Some(0), "{err}");
         assert!(out.join("titled/titled-note.pdf").is_file());
     }
 }

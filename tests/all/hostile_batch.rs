@@ -3,31 +3,14 @@
 //! (a variant whole or absent, every diagnosis printed even when the answer key cannot be
 //! written).
 
-use crate::support::{scratch, tmm_limited, LIMIT_KIB};
+use crate::support::{run_limited, scratch};
 use std::path::Path;
 
 /// `tmm batch constructions/four-bar.toml GRID --out OUT --format svg` under the memory
 /// limit; neither an abort nor a panic. Its status and standard error.
 fn batch(grid: &Path, out: &Path) -> (Option<i32>, String) {
-    let o = tmm_limited(
-        LIMIT_KIB,
-        &[
-            "batch",
-            "constructions/four-bar.toml",
-            grid.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--format",
-            "svg",
-        ],
-    );
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert!(o.status.code().is_some(), "killed by a signal: {err}");
-    assert!(
-        !err.contains("panicked") && !err.contains("overflow"),
-        "{err}"
-    );
-    (o.status.code(), err)
+    let template = Path::new("constructions/four-bar.toml");
+    run_limited("batch", &[template, grid], out, &["--format", "svg"])
 }
 
 /// The files of folder `dir`, sorted (none when it does not exist).
