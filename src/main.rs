@@ -356,53 +356,34 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
     // Every variant's diagnosis is printed before the answer key is written: a key that
     // cannot be written loses none of them.
     let failed = print_outcomes(&outcomes);
-    let key = answer_key(&scene, out, &columns, &outcomes, options.lang);
-    if let Err(f) = &key {
-        eprintln!("error: {}", f.message);
-    }
-    let code = match (&key, failed) {
-        (Err(f), _) => f.code,
-        (Ok(()), 0) => return Ok(()),
-        (Ok(()), _) => 1,
+    let code = match tmm::batch::write_answer_key(&scene, out, &columns, &outcomes, options.lang) {
+        Ok(written) => {
+            written.iter().for_each(|p| emit(&p.display().to_string()));
+            u8::from(failed > 0)
+        }
+        Err((None, e)) => {
+            eprintln!("error: the answer key's sheet: {e}");
+            1
+        }
+        Err((Some(path), e)) => {
+            eprintln!(
+                "error: {}: cannot write the answer key: {e} (the variants listed above are written)",
+                path.display()
+            );
+            2
+        }
     };
-    Err(Failure {
-        code,
-        message: match failed {
-            0 => String::new(),
-            _ => format!(
-                "{failed} of {} variants not drawn (listed above; the others are written)",
-                outcomes.len()
-            ),
-        },
-    })
-}
-
-/// The answer key of a batch (`answer-key.csv`, and its sheet `answer-key.pdf` when the
-/// template names values), written together into `out`; the files printed.
-fn answer_key(
-    scene: &Scene,
-    out: &Path,
-    columns: &[tmm::batch::Column],
-    outcomes: &[tmm::batch::Outcome],
-    lang: Lang,
-) -> Result<(), Failure> {
-    let csv = tmm::batch::answer_key_csv(columns, outcomes).into_bytes();
-    let mut files = vec![(out.join("answer-key.csv"), csv)];
-    if !columns.is_empty() {
-        let pdf = tmm::batch::answer_key_pdf(scene, columns, outcomes, lang)
-            .map_err(|e| Failure::construction(format!("the answer key's sheet: {e}")))?;
-        files.push((out.join("answer-key.pdf"), pdf));
+    let message = match failed {
+        0 => String::new(),
+        _ => format!(
+            "{failed} of {} variants not drawn (listed above; the others are written)",
+            outcomes.len()
+        ),
+    };
+    match code {
+        0 => Ok(()),
+        _ => Err(Failure { code, message }),
     }
-    tmm::plate::write_all_atomic(&files).map_err(|(path, e)| {
-        Failure::input(format!(
-            "{}: cannot write the answer key: {e} (the variants listed above are written)",
-            path.display()
-        ))
-    })?;
-    for (path, _) in &files {
-        emit(&path.display().to_string());
-    }
-    Ok(())
 }
 
 /// Each variant of a batch on a line (its files on standard output, its diagnosis on
