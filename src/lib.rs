@@ -55,6 +55,7 @@ pub mod scale;
 pub mod scene;
 pub mod sheets;
 pub mod study;
+pub mod threads;
 
 pub use check::Report;
 pub use check::{Key, Method, Row};

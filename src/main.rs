@@ -357,19 +357,44 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
         bar.inc(1);
     });
     bar.finish_and_clear();
-    let key = out.join("answer-key.csv");
-    let csv = tmm::batch::answer_key_csv(&columns, &outcomes).into_bytes();
-    let mut files = vec![(key, csv)];
-    if !columns.is_empty() {
-        let pdf = tmm::batch::answer_key_pdf(&scene, &columns, &outcomes, options.lang)
-            .map_err(|e| Failure::construction(format!("the answer key's sheet: {e}")))?;
-        files.push((out.join("answer-key.pdf"), pdf));
+    // Every variant's diagnosis is printed before the answer key is written: a key that
+    // cannot be written loses none of them.
+    let failed = print_outcomes(&outcomes);
+    let code = match tmm::batch::write_answer_key(&scene, out, &columns, &outcomes, options.lang) {
+        Ok(written) => {
+            written.iter().for_each(|p| emit(&p.display().to_string()));
+            u8::from(failed > 0)
+        }
+        Err((None, e)) => {
+            eprintln!("error: the answer key's sheet: {e}");
+            1
+        }
+        Err((Some(path), e)) => {
+            eprintln!(
+                "error: {}: cannot write the answer key: {e} (the variants listed above are written)",
+                path.display()
+            );
+            2
+        }
+    };
+    let message = match failed {
+        0 => String::new(),
+        _ => format!(
+            "{failed} of {} variants not drawn (listed above; the others are written)",
+            outcomes.len()
+        ),
+    };
+    match code {
+        0 => Ok(()),
+        _ => Err(Failure { code, message }),
     }
-    tmm::plate::write_all_atomic(&files).map_err(|(path, e)| {
-        Failure::construction(format!("{}: cannot write: {e}", path.display()))
-    })?;
+}
+
+/// Each variant of a batch on a line (its files on standard output, its diagnosis on
+/// standard error); how many were not drawn.
+fn print_outcomes(outcomes: &[tmm::batch::Outcome]) -> usize {
     let mut failed = 0;
-    for o in &outcomes {
+    for o in outcomes {
         match &o.result {
             Ok((files, _)) => emit(&format!(
                 "{}: {} file{}",
@@ -383,16 +408,7 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
             }
         }
     }
-    for (path, _) in &files {
-        emit(&path.display().to_string());
-    }
-    if failed > 0 {
-        return Err(Failure::construction(format!(
-            "{failed} of {} variants not drawn (listed above; the others are written)",
-            outcomes.len()
-        )));
-    }
-    Ok(())
+    failed
 }
 
 /// `tmm audit`: the table read whole against the scene's report (refused with its line,
@@ -417,8 +433,7 @@ fn audit(
     if let Some(pdf) = pdf {
         let plates = tmm::audit::to_sheet(&s, &audited, lang)
             .map_err(|e| Failure::construction(format!("the audit's sheet: {e}")))?;
-        let svgs: Vec<String> = plates.iter().map(tmm::plate::to_svg).collect();
-        let bytes = tmm::plate::to_pdf(&svgs)
+        let bytes = tmm::plate::plates_to_pdf(&plates)
             .map_err(|e| Failure::construction(format!("the audit's sheet: {e}")))?;
         tmm::plate::write_atomic(pdf, &bytes)
             .map_err(|e| Failure::construction(format!("{}: cannot write: {e}", pdf.display())))?;

@@ -9,6 +9,7 @@ use crate::scale::Lang;
 use crate::scene::{PlateKind, Scene};
 use crate::sheets::{self, BuildError};
 use crate::study::Session;
+use crate::threads;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
@@ -316,7 +317,10 @@ fn files_of(
                 .collect(),
         }
     };
-    let ((set_pdfs, note_pdfs), pngs) = rayon::join(|| rayon::join(set_pdfs, note_pdfs), pngs);
+    // The PNGs and the notes on plain threads, the PDF sets on the calling one: a PDF or a
+    // note waiting for its parts on a thread of the pool would take up other work there.
+    let (pngs, (note_pdfs, set_pdfs)) =
+        threads::beside(pngs, || threads::beside(note_pdfs, set_pdfs));
     let (set_pdfs, note_pdfs) = (set_pdfs?, note_pdfs?);
     let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     let mut pngs = pngs.into_iter();
@@ -361,6 +365,20 @@ pub fn render_session(
     options: &Options,
 ) -> Result<Vec<PathBuf>, RenderError> {
     write(files_of(std::slice::from_ref(session), out, options)?)
+}
+
+/// Every file of the scene of `session` under `out` (as [`files`]), built in memory through
+/// that session, for a caller that writes them with files of its own (a batch's variant with
+/// its task sheet, all or none).
+///
+/// # Errors
+/// As [`files`].
+pub fn session_files(
+    session: &Session<'_>,
+    out: &Path,
+    options: &Options,
+) -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
+    files_of(std::slice::from_ref(session), out, options)
 }
 
 /// Write `files` atomically (all or none); the paths written, in order.

@@ -1,5 +1,6 @@
 //! The verdict on one value: right, the slips that explain it, or wrong with the nearest.
 
+use super::copies::Copies;
 use super::targets::Target;
 use super::{
     units, Auditor, Edit, Entry, Explanation, Formula, Reading, Slip, Verdict, Written, ANALYTIC,
@@ -18,11 +19,9 @@ const DIGITS: i32 = 3;
 pub(super) struct Case<'a> {
     /// The value.
     pub entry: &'a Entry,
-    /// The student's whole table (a value copied from another column of its row), and how
-    /// each of its values' columns is read.
-    pub table: &'a [Entry],
-    /// How the column of each value of `table` is read.
-    pub readings: &'a [Reading],
+    /// The student's whole table by row and number (a value copied from another column of
+    /// its row).
+    pub copies: &'a Copies<'a>,
     /// The report's value.
     pub target: &'a Target,
     /// The tolerance, SI.
@@ -313,11 +312,9 @@ impl Auditor {
                 found.push((vec![slip], (w_si - x).abs()));
             }
         }
-        for (s, &read) in case.table.iter().zip(case.readings).filter(|(s, _)| {
-            s.position == entry.position
-                && s.quantity != entry.quantity
-                && units::find(t.quantity.unit, s.unit.name).is_some()
-                && s.written.value * s.unit.factor == w_si
+        // The values of this row of this number, one of each column.
+        for (s, read) in case.copies.of(entry).filter(|(s, _)| {
+            s.quantity != entry.quantity && units::find(t.quantity.unit, s.unit.name).is_some()
         }) {
             // Copied from that column, not into it: nearer that quantity than this one, and
             // not of this one's magnitude (a sign names that).

@@ -36,6 +36,7 @@
 //! fits none is wrong, with its exact value, its relative error and, when one comes within
 //! 20 %, the nearest of the scale, unit and formula slips.
 
+mod copies;
 mod digits;
 mod explain;
 mod read;
@@ -488,6 +489,7 @@ impl Auditor {
                 },
             )
             .collect();
+        let copies = copies::Copies::new(entries, &readings);
         entries
             .iter()
             .zip(resolved)
@@ -496,8 +498,7 @@ impl Auditor {
                 Ok((t, held)) => {
                     let case = Case {
                         entry,
-                        table: entries,
-                        readings: &readings,
+                        copies: &copies,
                         target: t,
                         tol: self.tolerance(t, &held),
                         reading,

@@ -27,6 +27,9 @@
 //!   integrated exactly, with the route's time and the exact solve's.
 //! * **Rack generation** — the drawn tooth's deviation from the exact envelope (in modules)
 //!   and the time of one tooth for N = 12 … 720 rack positions.
+//! * **Class** — `tmm batch` over the four-bar's grid cycled to 3 000 variants and the
+//!   shaper's to 1 000 (30 and 10 in a quick bench), with the run's peak memory beside a tenth
+//!   of the class's.
 //! * **Batch** — `tmm batch` over the shipped shaper grid (30 variants; 2 in a quick bench),
 //!   every sheet as PNG, and its progress bar's updates timed on their own.
 //!
@@ -36,6 +39,7 @@
 mod batch;
 mod cam;
 mod chords;
+mod class;
 mod flywheel;
 mod peer;
 mod plot;
@@ -435,6 +439,24 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
             100.0 * b.bar_seconds / b.seconds
         ),
     });
+    // A department's class: thousands of variants in one run.
+    let (four_bar, shaper_class) = if opts.quick { (30, 10) } else { (3000, 1000) };
+    for (scene, n) in [("four-bar", four_bar), ("shaper", shaper_class)] {
+        let c = class::class_run(opts, scene, n)?;
+        let mb = |m: Option<f64>| m.map_or("n/a".to_string(), |m| format!("{m:.0} MB"));
+        throughput.push(Throughput {
+            name: format!("class {} × {} (svg)", c.scene, c.variants),
+            per_second: c.variants as f64 / c.seconds,
+            note: format!(
+                "`tmm batch` over the shipped grid cycled to {} variants (sheets as SVG and the task sheet): {:.0} s, {} not drawn; peak memory {} (a tenth of the class: {})",
+                c.variants,
+                c.seconds,
+                c.failed,
+                mb(c.peak_mb),
+                mb(c.tenth_peak_mb)
+            ),
+        });
+    }
     Ok(Bench {
         machine: machine(),
         rows,

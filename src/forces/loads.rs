@@ -104,6 +104,45 @@ impl Load {
     }
 }
 
+/// The part of the loads' scale ([`force_scale`]) below which a reaction's normal force is
+/// rounding noise of its solve (exact sums hold to ~1e-15 of it): zero, with no arm.
+pub const ZERO_PART: f64 = 1e-9;
+
+/// The scale of `loads` on a mechanism whose points lie within `reach` (m) of each other:
+/// their largest force, or couple over `reach`, N (zero when every load is).
+pub fn force_scale(loads: &[Load], reach: f64) -> f64 {
+    loads
+        .iter()
+        .map(|l| {
+            let couple = if reach > 0.0 {
+                l.moment.abs() / reach
+            } else {
+                0.0
+            };
+            l.force.length().max(couple)
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The diagonal of the box around `points` (m): the reach of [`force_scale`].
+pub fn reach(points: &[DVec2]) -> f64 {
+    let Some(first) = points.first() else {
+        return 0.0;
+    };
+    let (lo, hi) = points
+        .iter()
+        .fold((*first, *first), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    (hi - lo).length()
+}
+
+/// The arm `-k / n` (m) of a prismatic pair's reaction whose normal force is `n` (N) and
+/// whose moment about the pair's reference point must be `k` (N·m): `None` when `n` is zero
+/// to the loads' scale `scale` (N, [`ZERO_PART`]) — a reaction that vanishes has no arm,
+/// rather than rounding noise over rounding noise.
+pub fn arm(n: f64, k: f64, scale: f64) -> Option<f64> {
+    (n.abs() > ZERO_PART * scale).then(|| -k / n)
+}
+
 /// Which stroke a position is on: `Some(true)` on the working stroke, `Some(false)` on the
 /// return, `None` at an extreme or without extremes.
 pub type Phase = Option<bool>;

@@ -33,7 +33,9 @@ pub use spec::{
 
 pub use error::ForceError;
 pub use indicator::Indicator;
-pub use loads::{carrier, loads, Load, LoadKind, Motion, Phase};
+pub use loads::{
+    arm, carrier, force_scale, loads, reach, Load, LoadKind, Motion, Phase, ZERO_PART,
+};
 pub use pair_friction::{friction_loads, PairFriction, PairMotion};
 pub use polygons::{DriverPolygon, GroupPolygon, PolygonDetail, Polygons};
 pub use rows::{notes, seed_notes};

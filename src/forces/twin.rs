@@ -251,6 +251,7 @@ fn solve_on(
         }
     }
     let x = crate::geom::solve_linear(a).ok_or(ForceError::Singular)?;
+    let scale = super::force_scale(loads, super::reach(&pose.p));
     let reactions = pairs
         .iter()
         .enumerate()
@@ -266,7 +267,7 @@ fn solve_on(
                     pair,
                     force: pose.dir[dir_link].perp() * u,
                     // Couple v about the reference point = N·s.
-                    offset: (u != 0.0).then(|| v / u),
+                    offset: super::arm(u, -v, scale),
                 },
             }
         })

@@ -55,7 +55,7 @@ pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM};
 pub use labels::{
     layout, struck_dimension_texts, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR,
 };
-pub use pdf::{to_pdf, to_pdf_parsed, PdfError};
+pub use pdf::{plates_to_pdf, to_pdf, to_pdf_parsed, PdfError};
 pub use raster::{
     forget_pngs, png_of, png_size, render_only, to_png, to_png_dpi, to_png_dpi_all, ParsedSvg,
     MAX_PIXELS,

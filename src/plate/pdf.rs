@@ -45,20 +45,38 @@ pub enum PdfError {
 /// [`PdfError::NoPages`] for an empty slice; [`PdfError::Svg`] for an SVG that does not
 /// parse; [`PdfError::Convert`] when the writer fails.
 pub fn to_pdf(svgs: &[String]) -> Result<Vec<u8>, PdfError> {
-    let parsed = svgs
-        .iter()
-        .enumerate()
-        .map(|(k, svg)| {
-            ParsedSvg::new(svg).map_err(|e| PdfError::Svg {
-                page: k + 1,
-                message: match e {
-                    super::PlateError::Svg(message) => message,
-                    other => other.to_string(),
-                },
-            })
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    to_pdf_parsed(&parsed.iter().collect::<Vec<_>>())
+    // Each page parsed as it is drawn and dropped after: a document of many pages never
+    // holds more than one page's tree.
+    let mut document = new_document(svgs.len())?;
+    for (k, svg) in svgs.iter().enumerate() {
+        add_page(&mut document, k + 1, &parsed_page(k + 1, svg)?.tree)?;
+    }
+    finish(document)
+}
+
+/// [`to_pdf`] of `plates`, each written as SVG only when its page is drawn (a sheet of a
+/// long table runs to many pages: one page's SVG and tree held at a time).
+///
+/// # Errors
+/// As [`to_pdf`].
+pub fn plates_to_pdf(plates: &[super::Plate]) -> Result<Vec<u8>, PdfError> {
+    let mut document = new_document(plates.len())?;
+    for (k, plate) in plates.iter().enumerate() {
+        let svg = super::to_svg(plate);
+        add_page(&mut document, k + 1, &parsed_page(k + 1, &svg)?.tree)?;
+    }
+    finish(document)
+}
+
+/// The SVG of page `page` (from 1) parsed.
+fn parsed_page(page: usize, svg: &str) -> Result<ParsedSvg<'_>, PdfError> {
+    ParsedSvg::new(svg).map_err(|e| PdfError::Svg {
+        page,
+        message: match e {
+            super::PlateError::Svg(message) => message,
+            other => other.to_string(),
+        },
+    })
 }
 
 /// [`to_pdf`] of SVGs already parsed (the same bytes).
@@ -66,32 +84,58 @@ pub fn to_pdf(svgs: &[String]) -> Result<Vec<u8>, PdfError> {
 /// # Errors
 /// [`PdfError::NoPages`] for an empty slice; [`PdfError::Convert`] when the writer fails.
 pub fn to_pdf_parsed(pages: &[&ParsedSvg<'_>]) -> Result<Vec<u8>, PdfError> {
-    if pages.is_empty() {
+    let mut document = new_document(pages.len())?;
+    for (k, parsed) in pages.iter().enumerate() {
+        add_page(&mut document, k + 1, &parsed.tree)?;
+    }
+    finish(document)
+}
+
+/// An empty document for `pages` pages (none: [`PdfError::NoPages`]), with no metadata
+/// that would change from run to run.
+fn new_document(pages: usize) -> Result<Document, PdfError> {
+    if pages == 0 {
         return Err(PdfError::NoPages);
     }
-    let mut document = Document::new_with(SerializeSettings {
+    Ok(Document::new_with(SerializeSettings {
         xmp_metadata: false,
         enable_tagging: false,
         ..SerializeSettings::default()
-    });
-    for (k, parsed) in pages.iter().enumerate() {
-        let page = k + 1;
-        let tree = &parsed.tree;
-        // usvg sizes are CSS pixels (96 per inch); the page is in points (72 per inch).
-        let (w, h) = (tree.size().width() * 0.75, tree.size().height() * 0.75);
-        let convert = |message: &str| PdfError::Convert {
-            page: Some(page),
-            message: message.into(),
-        };
-        let size = Size::from_wh(w, h).ok_or_else(|| convert("empty page"))?;
-        let mut sheet = document.start_page_with(PageSettings::new(size));
-        let mut surface = sheet.surface();
-        surface
-            .draw_svg(tree, size, SvgSettings::default())
-            .ok_or_else(|| convert("the SVG could not be drawn"))?;
-        surface.finish();
-        sheet.finish();
-    }
+    }))
+}
+
+/// Draw `tree` on a new page (number `page`, from 1) of its own size.
+fn add_page(
+    document: &mut Document,
+    page: usize,
+    tree: &resvg::usvg::Tree,
+) -> Result<(), PdfError> {
+    // usvg sizes are CSS pixels (96 per inch); the page is in points (72 per inch).
+    let (w, h) = (tree.size().width() * 0.75, tree.size().height() * 0.75);
+    let convert = |message: &str| PdfError::Convert {
+        page: Some(page),
+        message: message.into(),
+    };
+    let size = Size::from_wh(w, h).ok_or_else(|| convert("empty page"))?;
+    let mut sheet = document.start_page_with(PageSettings::new(size));
+    let mut surface = sheet.surface();
+    surface
+        .draw_svg(tree, size, SvgSettings::default())
+        .ok_or_else(|| convert("the SVG could not be drawn"))?;
+    surface.finish();
+    sheet.finish();
+    // The writer memoizes each page's compressed content, which no later page asks for
+    // again: a memo not used by the last few pages is dropped, or a long document holds
+    // every page twice.
+    comemo::evict(PAGE_MEMO_AGE);
+    Ok(())
+}
+
+/// A memoized result of the PDF writer not used by the last this many pages is dropped.
+const PAGE_MEMO_AGE: usize = 4;
+
+/// The document's bytes.
+fn finish(document: Document) -> Result<Vec<u8>, PdfError> {
     document.finish().map_err(|e| PdfError::Convert {
         page: None,
         message: e.to_string(),

@@ -67,14 +67,20 @@ const OUR_EXTENSIONS: [&str; 5] = ["svg", "png", "pdf", "md", "json"];
 /// After this long a temporary is stale whatever its process (a pid reused by another).
 const STALE_AFTER: std::time::Duration = std::time::Duration::from_secs(24 * 3600);
 
-/// The process id of a name of our pattern, `.<name>.<ext>.tmp-<pid>` or `….bak-<pid>` with
-/// `<ext>` one of [`OUR_EXTENSIONS`]; `None` for any other name.
+/// The process id of a name of our pattern, `.<name>.<ext>.tmp-<pid>` (or
+/// `….tmp-<pid>-<k>`, [`create_temporary`]) or `….bak-<pid>` with `<ext>` one of
+/// [`OUR_EXTENSIONS`]; `None` for any other name.
 fn our_temporary(name: &str) -> Option<u32> {
     let rest = name.strip_prefix('.')?;
-    let (stem, pid) = rest
-        .rsplit_once(".tmp-")
-        .or_else(|| rest.rsplit_once(".bak-"))?;
-    if pid.is_empty() || !pid.bytes().all(|b| b.is_ascii_digit()) {
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    let (stem, pid) = match rest.rsplit_once(".tmp-") {
+        Some((stem, tail)) => match tail.split_once('-') {
+            Some((pid, k)) if digits(k) => (stem, pid),
+            _ => (stem, tail),
+        },
+        None => rest.rsplit_once(".bak-")?,
+    };
+    if !digits(pid) {
         return None;
     }
     let (base, ext) = stem.rsplit_once('.')?;
@@ -193,14 +199,10 @@ impl Staged {
             fs::create_dir(d).or_else(|e| if d.is_dir() { Ok(()) } else { Err(e) })?;
             self.dirs.push(d.to_path_buf());
         }
-        let tmp = dir.join(format!(
-            ".{}.tmp-{}",
-            name.to_string_lossy(),
-            std::process::id()
-        ));
-        // Registered first: a half-written temporary is removed too.
-        self.files.push((tmp.clone(), path.to_path_buf()));
-        write_synced(&tmp, bytes)
+        let (tmp, file) = create_temporary(dir, &name.to_string_lossy())?;
+        // Registered before writing: a half-written temporary is removed too.
+        self.files.push((tmp, path.to_path_buf()));
+        write_synced(file, bytes)
     }
 
     /// Remove every temporary and every directory created (those left empty).
@@ -259,7 +261,7 @@ fn replace(tmp: &Path, path: &Path) -> io::Result<Option<PathBuf>> {
                 std::process::id()
             ));
             let _ = fs::remove_file(&b);
-            fs::hard_link(path, &b).or_else(|_| fs::copy(path, &b).map(|_| ()))?;
+            fs::hard_link(path, &b).or_else(|_| copy_exclusive(path, &b))?;
             Some(b)
         }
         _ => None,
@@ -273,10 +275,62 @@ fn replace(tmp: &Path, path: &Path) -> io::Result<Option<PathBuf>> {
     Ok(backup)
 }
 
-fn write_synced(path: &Path, bytes: &[u8]) -> io::Result<()> {
-    let mut file = fs::File::create(path)?;
+/// Copy the file at `from` to a new file `to` ([`create_exclusive`]).
+fn copy_exclusive(from: &Path, to: &Path) -> io::Result<()> {
+    let mut source = fs::File::open(from)?;
+    io::copy(&mut source, &mut create_exclusive(to)?).map(|_| ())
+}
+
+fn write_synced(mut file: fs::File, bytes: &[u8]) -> io::Result<()> {
     file.write_all(bytes)?;
     file.sync_all()
+}
+
+/// Names tried for a temporary before giving up.
+const TEMPORARY_TRIES: u32 = 100;
+
+/// A new temporary for the file `name` in `dir`, created exclusively
+/// ([`create_exclusive`]): `.<name>.tmp-<pid>`, or `.<name>.tmp-<pid>-<k>` when that name is
+/// taken (by a link planted there, or a file of another writer). Its path and the file.
+///
+/// # Errors
+/// Any I/O error but a name taken; `AlreadyExists` when every name tried is.
+fn create_temporary(dir: &Path, name: &str) -> io::Result<(PathBuf, fs::File)> {
+    let pid = std::process::id();
+    for k in 0..TEMPORARY_TRIES {
+        let tmp = dir.join(match k {
+            0 => format!(".{name}.tmp-{pid}"),
+            _ => format!(".{name}.tmp-{pid}-{k}"),
+        });
+        match create_exclusive(&tmp) {
+            Ok(file) => return Ok((tmp, file)),
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(e),
+        }
+    }
+    Err(io::Error::new(
+        io::ErrorKind::AlreadyExists,
+        format!(
+            "{TEMPORARY_TRIES} names of temporaries in {} are taken",
+            dir.display()
+        ),
+    ))
+}
+
+/// A file created at `path` for writing, which must not exist: never a file or a link that
+/// is there already (O_CREAT | O_EXCL), and, on unix, never through a link (O_NOFOLLOW).
+///
+/// # Errors
+/// `AlreadyExists` when anything is at `path`; any other I/O error.
+pub(crate) fn create_exclusive(path: &Path) -> io::Result<fs::File> {
+    let mut options = fs::OpenOptions::new();
+    options.write(true).create_new(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt as _;
+        options.custom_flags(libc::O_NOFOLLOW);
+    }
+    options.open(path)
 }
 
 #[cfg(test)]
@@ -385,12 +439,15 @@ mod tests {
             format!(".positions.svg.tmp-{dead}"),
             format!(".shaper.pdf.tmp-{dead}"),
             format!(".bench.json.bak-{dead}"),
+            format!(".positions.svg.tmp-{dead}-2"),
         ];
         let kept = [
             format!(".positions.svg.tmp-{live}"),
             format!(".positions.svg.tmp-{}", std::process::id()),
             format!(".notes.txt.tmp-{dead}"),
             format!(".positions.svg.tmp-{dead}x"),
+            format!(".positions.svg.tmp-{dead}-"),
+            format!(".positions.svg.tmp-{dead}-2x"),
             format!("positions.svg.tmp-{dead}"),
             format!(".svg.tmp-{dead}"),
             "positions.svg".to_string(),

@@ -13,6 +13,7 @@ use super::kinematics::kinematics;
 use super::model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
 use super::structure::mechanism;
+use super::text::{not_text, refused};
 use crate::scale::{Quantity, Scale};
 use std::path::Path;
 
@@ -191,14 +192,8 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     }
 }
 
-/// A character that cannot be drawn as text (nor written in XML): a control character
-/// (U+0000–U+001F, U+007F–U+009F) or a non-character U+FFFE, U+FFFF.
-fn not_text(c: char) -> bool {
-    c.is_control() || c == '\u{fffe}' || c == '\u{ffff}'
-}
-
-/// Refuse every string value and key under `table` (at key path `base`) that holds a
-/// character that is [`not_text`], naming its key.
+/// Refuse every string value under `table` (at key path `base`) that is not text
+/// ([`refused`]) and every key that holds a character that is [`not_text`], naming its key.
 fn texts(check: &mut Checker, base: &str, table: &toml::Table) {
     for (key, value) in table {
         let path = if base.is_empty() {
@@ -220,13 +215,11 @@ fn texts(check: &mut Checker, base: &str, table: &toml::Table) {
 /// [`texts`] of one value.
 fn text_value(check: &mut Checker, path: &str, value: &toml::Value) {
     match value {
-        toml::Value::String(s) if s.chars().any(not_text) => {
-            let shown: String = quoted(s).chars().take(80).collect();
-            check.push(
-                path,
-                Some(shown),
-                "expected text without control characters (U+0000–U+001F, U+007F–U+009F)",
-            );
+        toml::Value::String(s) => {
+            if let Some(why) = refused(s) {
+                let shown: String = quoted(s).chars().take(80).collect();
+                check.push(path, Some(shown), why);
+            }
         }
         toml::Value::Array(items) => {
             for (i, v) in items.iter().enumerate() {

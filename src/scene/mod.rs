@@ -22,6 +22,7 @@ mod outputs;
 mod planetary;
 mod raw;
 mod structure;
+mod text;
 pub mod user_table;
 
 pub use crate::kinematics::KinematicsSpec;

@@ -256,13 +256,17 @@ const MAX_DETAILS: usize = 3;
 /// The details of `polygon` about its forces `laid` (polygon mm) drawn shorter than
 /// [`SMALL_FORCE_MM`]: from the shortest force not yet shown, the round μ_F that draws it
 /// about [`DETAIL_FORCE_MM`], and a zone about it and the other small forces near enough to
-/// share a detail [`DETAIL_MM`] wide; then the next. Empty when every force reads.
+/// share a detail [`DETAIL_MM`] wide; then the next. Empty when every force reads. A force
+/// zero to the polygon's scale (shorter than [`crate::forces::ZERO_PART`] of its longest) is
+/// drawn as the point it is, with no detail.
 fn details(polygon: &Figure, laid: &[(DVec2, DVec2)]) -> Vec<PolygonDetail> {
     let mu = polygon.scale;
+    let longest = laid.iter().map(|(a, b)| a.distance(*b)).fold(0.0, f64::max);
+    let zero = crate::forces::ZERO_PART * longest;
     let mut small: Vec<(DVec2, DVec2)> = laid
         .iter()
         .copied()
-        .filter(|(a, b)| a != b && a.distance(*b) < SMALL_FORCE_MM)
+        .filter(|(a, b)| a.distance(*b) > zero && a.distance(*b) < SMALL_FORCE_MM)
         .collect();
     small.sort_by(|x, y| x.0.distance(x.1).total_cmp(&y.0.distance(y.1)));
     let mut out = Vec::new();
@@ -476,11 +480,11 @@ fn on(loads: &[Load], l: usize) -> Vec<&Load> {
     loads.iter().filter(|x| x.link == l).collect()
 }
 
-/// The signed magnitude of `f` along the unit normal `n` and the offset `s` that makes its
-/// moment about the reference `k` (N·m) vanish: N·s + k = 0.
-fn offset(f: DVec2, n: DVec2, k: f64) -> Option<f64> {
-    let big_n = f.dot(n);
-    (big_n != 0.0).then(|| -k / big_n)
+/// The offset `s` along the slide that makes the moment about the reference of `f` (its
+/// magnitude N along the unit normal `n`) and `k` (N·m) vanish: N·s + k = 0 (`None`: N is
+/// zero to the loads' scale `scale`, N).
+fn offset(f: DVec2, n: DVec2, k: f64, scale: f64) -> Option<f64> {
+    crate::forces::arm(f.dot(n), k, scale)
 }
 
 /// The polygons of every group, last first, then the driving link. `loads` are the
@@ -493,6 +497,9 @@ pub fn polygons(
     let prog = board.setup.prog;
     let b = board.setup.built;
     let mut applied: Vec<Load> = loads.to_vec();
+    // The drawing's points are in mm: the reach in m.
+    let reach = crate::forces::reach(&b.p) * board.setup.mu_l.value();
+    let scale = crate::forces::force_scale(loads, reach);
     let mut groups = Vec::new();
     let dir = |l: usize| DVec2::from_angle(b.angle[l]);
     for g in prog.groups().rev() {
@@ -568,7 +575,7 @@ pub fn polygons(
                 let k = sch.moments(pb, &lj);
                 vec![
                     revolute(oa, i, a, r_a),
-                    prismatic(og, j, joint, j, r_g, offset(r_g, n_g, k)),
+                    prismatic(og, j, joint, j, r_g, offset(r_g, n_g, k, scale)),
                     revolute(i, j, joint, -r_ji),
                 ]
             }
@@ -600,7 +607,7 @@ pub fn polygons(
                 vec![
                     revolute(oa, i, a, r_oi),
                     revolute(oc, j, c, r_oj),
-                    prismatic(i, j, a, j, r_ij, offset(r_ij, n, -k_i)),
+                    prismatic(i, j, a, j, r_ij, offset(r_ij, n, -k_i, scale)),
                 ]
             }
             GroupPairs::Prp {
@@ -621,8 +628,8 @@ pub fn polygons(
                 let r_ji = pol.read(&reaction_name(j, i), pi, h);
                 let (k_i, k_j) = (sch.moments(pb, &li), sch.moments(pb, &lj));
                 vec![
-                    prismatic(ci, i, joint, i, r_i, offset(r_i, n_i, k_i)),
-                    prismatic(cj, j, joint, j, r_j, offset(r_j, n_j, k_j)),
+                    prismatic(ci, i, joint, i, r_i, offset(r_i, n_i, k_i, scale)),
+                    prismatic(cj, j, joint, j, r_j, offset(r_j, n_j, k_j, scale)),
                     revolute(i, j, joint, -r_ji),
                 ]
             }
@@ -646,7 +653,7 @@ pub fn polygons(
                 let r_oi = pol.read(&reaction_name(oa, i), q, p0);
                 // The block about A: where the inner reaction acts on the slide.
                 let k_i = sch.moments(pa, &li);
-                let s = offset(r_ij, n_s, -k_i);
+                let s = offset(r_ij, n_s, -k_i, scale);
                 // Link j about its joint, with the inner reaction at its point.
                 let shift = dir(i) * s.unwrap_or(0.0);
                 let mut inner = Load::force(j, LoadKind::Reaction, reaction_name(i, j), r_ij, a);
@@ -654,7 +661,7 @@ pub fn polygons(
                 let k_j = sch.moments(pj_, &lj) + sch.moment(pj_, &inner);
                 vec![
                     revolute(oa, i, a, r_oi),
-                    prismatic(og, j, joint, j, r_g, offset(r_g, n_g, k_j)),
+                    prismatic(og, j, joint, j, r_g, offset(r_g, n_g, k_j, scale)),
                     prismatic(i, j, a, i, r_ij, s),
                 ]
             }

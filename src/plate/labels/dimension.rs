@@ -17,6 +17,9 @@ const SLIDE_MM: f64 = 1.5;
 const ARROW_ROOM_MM: f64 = 3.0;
 /// Slides tried past each arrow, on the line's extension.
 const PAST_STEPS: usize = 8;
+/// Slides tried each way between the arrows: a text slid further than this from the middle
+/// of its line is no better placed (a dimension line of any length asks a bounded search).
+const MOST_SLIDES: usize = 200;
 /// Clearance a text keeps from a line while placing, mm.
 const CLEAR_MM: f64 = 0.3;
 
@@ -68,10 +71,12 @@ pub(super) fn placed(
 fn spots(length: f64, width: f64) -> Vec<TextSpot> {
     let free = 0.5 * length - ARROW_ROOM_MM - 0.5 * width;
     let mut alongs = vec![0.0];
-    let mut k = 1.0;
-    while k * SLIDE_MM <= free {
-        alongs.extend([k * SLIDE_MM, -k * SLIDE_MM]);
-        k += 1.0;
+    for k in 1..=MOST_SLIDES {
+        let along = k as f64 * SLIDE_MM;
+        if free.is_nan() || along > free {
+            break;
+        }
+        alongs.extend([along, -along]);
     }
     let past = 0.5 * length + ARROW_ROOM_MM + 0.5 * width;
     let pasts = (0..PAST_STEPS).flat_map(|k| {
@@ -163,6 +168,20 @@ mod tests {
         assert!(short[2..]
             .iter()
             .all(|t| t.along.abs() >= 1.0 + ARROW_ROOM_MM + 3.0));
+    }
+
+    #[test]
+    fn a_line_of_any_length_asks_a_bounded_search() {
+        let most = 4 * (MOST_SLIDES * 2 + 1) + 4 * PAST_STEPS;
+        for length in [1e3, 1e9, 8.0e17, f64::MAX, f64::INFINITY, f64::NAN] {
+            let s = spots(length, 6.0);
+            assert!(s.len() <= most, "{length}: {} places", s.len());
+            assert_eq!(s[0], TextSpot::MIDDLE, "{length}");
+        }
+        // A long line slides its text up to the cap, both ways.
+        let s = spots(1e6, 6.0);
+        let far = MOST_SLIDES as f64 * SLIDE_MM;
+        assert!(s.iter().any(|t| t.along == far) && s.iter().any(|t| t.along == -far));
     }
 
     #[test]

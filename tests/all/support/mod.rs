@@ -96,3 +96,41 @@ pub fn notes(v: &serde_json::Value) -> String {
         .collect::<Vec<_>>()
         .join("\n")
 }
+
+/// Run `tmm` with `args` in the repository root under a limit of `kib` KiB of address space
+/// (`ulimit -v`): an unbounded allocation aborts instead of taking the machine.
+pub fn tmm_limited(kib: u64, args: &[&str]) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
+        .arg(env!("CARGO_BIN_EXE_tmm"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("run tmm under a memory limit")
+}
+
+/// The memory limit the hostile-input tests run `tmm` under, KiB (1.5 GB).
+pub const LIMIT_KIB: u64 = 1_500_000;
+
+/// `tmm COMMAND INPUTS… --out OUT EXTRA…` under [`LIMIT_KIB`]: neither an abort (a signal)
+/// nor a panic. Its status and standard error.
+pub fn run_limited(
+    command: &str,
+    inputs: &[&std::path::Path],
+    out: &std::path::Path,
+    extra: &[&str],
+) -> (Option<i32>, String) {
+    let mut args = vec![command];
+    args.extend(inputs.iter().map(|p| p.to_str().expect("a UTF-8 path")));
+    args.extend(["--out", out.to_str().expect("a UTF-8 path")]);
+    args.extend_from_slice(extra);
+    let o = tmm_limited(LIMIT_KIB, &args);
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(o.status.code().is_some(), "killed by a signal: {err}");
+    assert!(
+        !err.contains("panicked") && !err.contains("overflow"),
+        "{err}"
+    );
+    (o.status.code(), err)
+}

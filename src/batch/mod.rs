@@ -17,13 +17,14 @@
 //! then refused (a length out of range) or cannot be assembled or drawn (a crank that cannot
 //! turn) is listed by [`run`] with its diagnosis, and the others are still written.
 
-use crate::check::Row;
-use crate::construct::Drafting;
+mod key;
+
 use crate::render::{self, Options};
+use crate::scene;
 use crate::scene::user_table::{self, CellError};
-use crate::scene::{self, AnswerItem, Scene};
 use crate::study::Session;
-use rayon::prelude::*;
+use key::row_of;
+pub use key::{answer_columns, answer_key_csv, answer_key_pdf, write_answer_key, Column};
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 use toml::{Table, Value};
@@ -286,62 +287,6 @@ pub fn read_grid(template: &str, grid: &str, grid_path: &Path) -> Result<Vec<Var
     Ok(variants)
 }
 
-/// A column of the answer key: the item and the template's row it names (its quantity,
-/// position, method and unit).
-#[derive(Debug, Clone)]
-pub struct Column {
-    /// The report row it names.
-    pub item: AnswerItem,
-    /// The template's row.
-    pub row: Row,
-}
-
-/// The first row of `rows` that `item` names.
-fn row_of<'r>(rows: &'r [Row], item: &AnswerItem) -> Option<&'r Row> {
-    rows.iter().find(|r| item.names(r))
-}
-
-/// The answer key's columns: every `[answer_key]` value of `template`, each found in the
-/// template's own report (which gives its unit).
-///
-/// # Errors
-/// [`GridError::Template`] when the template's report cannot be made or lacks a row.
-pub fn answer_columns(template: &Scene, drafting: Drafting) -> Result<Vec<Column>, GridError> {
-    let refuse = |message: String| GridError::Template {
-        path: template.path.clone(),
-        message,
-    };
-    if template.answer_key.is_empty() {
-        return Ok(Vec::new());
-    }
-    let report = Session::new(template, drafting)
-        .report()
-        .map_err(|e| refuse(format!("its report cannot be made: {e}")))?;
-    template
-        .answer_key
-        .iter()
-        .enumerate()
-        .map(|(k, item)| {
-            let row = row_of(&report.rows, item).ok_or_else(|| {
-                refuse(format!(
-                    "answer_key.values[{k}] = {:?}: the report has no such row (see `tmm report --format csv` for its quantities, positions and methods)",
-                    item.name()
-                ))
-            })?;
-            Ok(Column {
-                item: item.clone(),
-                row: row.clone(),
-            })
-        })
-        .collect()
-}
-
-/// `plates` as one PDF, a page each.
-fn pdf_of(plates: &[crate::plate::Plate]) -> Result<Vec<u8>, crate::plate::PdfError> {
-    let svgs: Vec<String> = plates.iter().map(crate::plate::to_svg).collect();
-    crate::plate::to_pdf(&svgs)
-}
-
 /// The progress bar of a batch of `n` variants, drawn to `target` (standard error on a
 /// terminal, hidden otherwise): the variants done and the last one's name.
 pub fn progress_bar(n: usize, target: indicatif::ProgressDrawTarget) -> indicatif::ProgressBar {
@@ -391,16 +336,16 @@ fn one(
         Some(_) => Some(
             crate::sheets::task_sheet(&session, &v.name, options.lang)
                 .map_err(|e| why(&e))
-                .and_then(|plates| pdf_of(&plates).map_err(|e| why(&e)))?,
+                .and_then(|plates| crate::plate::plates_to_pdf(&plates).map_err(|e| why(&e)))?,
         ),
         None => None,
     };
-    let mut files = render::render_session(&session, out, options).map_err(|e| why(&e))?;
+    let mut files = render::session_files(&session, out, options).map_err(|e| why(&e))?;
     if let Some(pdf) = task {
-        let path = out.join(&v.name).join("task.pdf");
-        crate::plate::write_atomic(&path, &pdf).map_err(|e| why(&e))?;
-        files.push(path);
+        files.push((out.join(&v.name).join("task.pdf"), pdf));
     }
+    // The report's values before anything is written, and the variant's sheets with its
+    // task sheet written together: a variant is whole or absent.
     let values = if columns.is_empty() {
         Vec::new()
     } else {
@@ -410,12 +355,27 @@ fn one(
             .map(|c| row_of(&report.rows, &c.item).map(|r| r.analytic))
             .collect()
     };
-    Ok((files, values))
+    crate::plate::write_all_atomic(&files).map_err(|(path, e)| {
+        format!(
+            "line {}: {}: cannot write: {e} (nothing of the variant written)",
+            v.line,
+            path.display()
+        )
+    })?;
+    Ok((files.into_iter().map(|(path, _)| path).collect(), values))
 }
 
-/// Render every variant (in parallel) into `out/<name>/`, each written atomically on its
-/// own; a variant that fails is reported in its outcome and the others go on. `done` is
-/// called with each variant's name as it finishes (a progress bar). Outcomes in grid order.
+/// A memoized result not used by the last this many variants is dropped.
+const MEMO_AGE: usize = 8;
+
+/// Render every variant into `out/<name>/`, each written atomically on its own; a variant
+/// that fails is reported in its outcome and the others go on. `done` is called with each
+/// variant's name as it finishes (a progress bar). Outcomes in grid order.
+///
+/// The variants are drawn side by side on as many plain threads as rayon's pool has
+/// ([`crate::threads::each`]), not on the pool: a pool thread waiting inside one variant's
+/// PDF would take up the next variant on its stack, and a class of hundreds overflows it.
+/// At most that many variants are in memory at once, whatever the grid's length.
 pub fn run(
     variants: &[Variant],
     template: &Path,
@@ -424,84 +384,21 @@ pub fn run(
     columns: &[Column],
     done: &(dyn Fn(&str) + Sync),
 ) -> Vec<Outcome> {
-    variants
-        .par_iter()
-        .map(|v| {
-            let result = one(v, template, out, options, columns);
-            done(&v.name);
-            Outcome {
-                name: v.name.clone(),
-                result,
-            }
-        })
-        .collect()
-}
-
-/// The answer key as CSV: `variant`, a column per value (`v_E@3 (m/s)`: the exact value,
-/// SI, 6 significant digits), and `status` (`ok`, or why the variant was not drawn).
-pub fn answer_key_csv(columns: &[Column], outcomes: &[Outcome]) -> String {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    let mut header = vec!["variant".to_string()];
-    header.extend(
-        columns
-            .iter()
-            .map(|c| format!("{} ({})", c.item.name(), c.row.unit())),
+    let mut results: Vec<Option<Outcome>> = variants.iter().map(|_| None).collect();
+    crate::threads::each(
+        variants,
+        rayon::current_num_threads(),
+        |v| one(v, template, out, options, columns),
+        |k, result| {
+            // What the PDF writer and the typesetter memoized for variants long done goes:
+            // its caches would otherwise grow with every variant of the class.
+            comemo::evict(MEMO_AGE);
+            let name = variants[k].name.clone();
+            done(&name);
+            results[k] = Some(Outcome { name, result });
+        },
     );
-    header.push("status".into());
-    let mut rows = vec![header];
-    for o in outcomes {
-        let mut row = vec![o.name.clone()];
-        match &o.result {
-            Ok((_, values)) => {
-                row.extend(values.iter().map(|v| {
-                    v.map(crate::scale::format_plain)
-                        .unwrap_or_else(|| "—".into())
-                }));
-                row.push("ok".into());
-            }
-            Err(why) => {
-                row.extend(columns.iter().map(|_| String::new()));
-                row.push(why.replace('\n', " "));
-            }
-        }
-        rows.push(row);
-    }
-    for r in rows {
-        // Writing to memory cannot fail.
-        let _ = w.write_record(&r);
-    }
-    w.into_inner()
-        .map(|b| String::from_utf8_lossy(&b).into_owned())
-        .unwrap_or_default()
-}
-
-/// The answer key as a PDF: the sheet of [`crate::sheets::answer_key`] in `lang` (a variant
-/// not drawn marked as such).
-///
-/// # Errors
-/// The sheet cannot be laid out or written as PDF (the message says why).
-pub fn answer_key_pdf(
-    template: &Scene,
-    columns: &[Column],
-    outcomes: &[Outcome],
-    lang: crate::scale::Lang,
-) -> Result<Vec<u8>, String> {
-    let heads: Vec<(Row, bool)> = columns
-        .iter()
-        .map(|c| (c.row.clone(), c.item.method.is_some()))
-        .collect();
-    let lines: Vec<crate::sheets::KeyLine> = outcomes
-        .iter()
-        .map(|o| {
-            (
-                o.name.clone(),
-                o.result.as_ref().ok().map(|(_, v)| v.clone()),
-            )
-        })
-        .collect();
-    let plates =
-        crate::sheets::answer_key(template, &heads, &lines, lang).map_err(|e| e.to_string())?;
-    pdf_of(&plates).map_err(|e| e.to_string())
+    results.into_iter().flatten().collect()
 }
 
 #[cfg(test)]

@@ -1,0 +1,95 @@
+//! Issue 43's reproducers for `tmm batch`: a class of hundreds of variants (it overflowed a
+//! worker's stack from 300 on), an impossible row in every hundred, and a write that fails
+//! (a variant whole or absent, every diagnosis printed even when the answer key cannot be
+//! written).
+
+use crate::support::{run_limited, scratch};
+use std::path::Path;
+
+/// `tmm batch constructions/four-bar.toml GRID --out OUT --format svg` under the memory
+/// limit; neither an abort nor a panic. Its status and standard error.
+fn batch(grid: &Path, out: &Path) -> (Option<i32>, String) {
+    let template = Path::new("constructions/four-bar.toml");
+    run_limited("batch", &[template, grid], out, &["--format", "svg"])
+}
+
+/// The files of folder `dir`, sorted (none when it does not exist).
+fn names(dir: &Path) -> Vec<String> {
+    let mut n: Vec<String> = std::fs::read_dir(dir)
+        .map(|d| {
+            d.map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    n.sort();
+    n
+}
+
+#[test]
+fn a_class_of_hundreds_with_an_impossible_row_in_each_hundred_is_drawn() {
+    let dir = scratch("batch-class");
+    let n = 500;
+    let mut grid = String::from("variant,mechanism.crank.length,mechanism.group[0].la\n");
+    for k in 0..n {
+        // Every hundredth crank cannot turn (longer than the others allow).
+        let crank = if k % 100 == 37 { 200 } else { 60 + k % 20 };
+        grid += &format!("v{k:04},{crank},{}\n", 220 + k % 30);
+    }
+    let path = dir.join("grid.csv");
+    std::fs::write(&path, grid).unwrap();
+    let out = dir.join("out");
+    let (code, err) = batch(&path, &out);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains(&format!("5 of {n} variants")), "{err}");
+    for k in (0..n).filter(|k| k % 100 == 37) {
+        assert!(err.contains(&format!("variant v{k:04}:")), "{err}");
+        assert!(!out.join(format!("v{k:04}")).exists());
+    }
+    let key = std::fs::read_to_string(out.join("answer-key.csv")).unwrap();
+    assert_eq!(key.lines().count(), n + 1);
+    assert_eq!(key.lines().filter(|l| l.ends_with(",ok")).count(), n - 5);
+    for k in [0, 99, 250, 499] {
+        let v = out.join(format!("v{k:04}"));
+        assert!(
+            v.join("task.pdf").is_file() && v.join("kinematics.svg").is_file(),
+            "{k}"
+        );
+    }
+}
+
+#[test]
+fn a_variant_that_cannot_be_written_is_absent_and_every_failure_is_reported() {
+    let dir = scratch("batch-write");
+    let path = dir.join("grid.csv");
+    std::fs::write(
+        &path,
+        "variant,mechanism.crank.length\na,60\nb,65\nc,200\nd,70\n",
+    )
+    .unwrap();
+    let out = dir.join("out");
+    // Injected write failures: b's task sheet and the answer key name taken by folders.
+    std::fs::create_dir_all(out.join("b").join("task.pdf")).unwrap();
+    std::fs::create_dir_all(out.join("answer-key.csv")).unwrap();
+    let (code, err) = batch(&path, &out);
+    // The key that cannot be written is exit 2, after every variant's diagnosis.
+    assert_eq!(code, Some(2), "{err}");
+    let at = |what: &str| err.find(what).unwrap_or_else(|| panic!("{what}: {err}"));
+    let (b, c, key) = (at("variant b:"), at("variant c:"), at("answer-key.csv"));
+    assert!(b < key && c < key, "diagnoses first: {err}");
+    assert!(err.contains("task.pdf"), "{err}");
+    assert!(err.contains("2 of 4 variants"), "{err}");
+    // b is absent: none of its sheets without its task sheet.
+    assert_eq!(names(&out.join("b")), ["task.pdf"]);
+    assert!(out.join("b/task.pdf").is_dir());
+    assert!(!out.join("c").exists());
+    for v in ["a", "d"] {
+        let files = names(&out.join(v));
+        assert!(files.contains(&"task.pdf".to_string()), "{v}: {files:?}");
+        assert!(
+            files.contains(&"kinematics.svg".to_string()),
+            "{v}: {files:?}"
+        );
+        assert!(!files.iter().any(|f| f.starts_with('.')), "{v}: {files:?}");
+    }
+    assert!(out.join("answer-key.csv").is_dir() && !out.join("answer-key.pdf").exists());
+}
