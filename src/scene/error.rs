@@ -48,7 +48,7 @@ pub enum SceneError {
         byte: usize,
     },
     /// The file is larger than a scene can be.
-    #[error("{}: the scene file is larger than {limit} bytes: expected a scene of at most {limit} bytes (1 MiB)", path.display())]
+    #[error("{}: the file is larger than {limit} bytes: expected a scene, grid or table of at most {limit} bytes (1 MiB)", path.display())]
     TooLarge {
         /// The scene file.
         path: PathBuf,

@@ -46,13 +46,19 @@ fn a_massless_ram_has_no_arm_and_its_sheets_are_drawn() {
 fn a_ram_of_a_milligram_is_drawn_or_refused_naming_the_scale() {
     let dir = scratch("ram-mg");
     let scene = shaper_with_ram(&dir, "1e-6");
-    let out = dir.join("out");
-    let (code, err) = run_limited("render", &[&scene], &out, &[]);
-    // Its arm is real (≈ 6·10⁶ m: the resistance's moment over a weight of 10 μN) and no
-    // sheet holds it: refused naming the scale, nothing of the scene written.
+    // Read exactly, its arm is real (≈ 6·10⁶ m: the resistance's moment over a weight of
+    // 10 μN) and no sheet holds it: refused naming the scale, nothing of the scene written.
+    let exact = dir.join("exact");
+    let (code, err) = run_limited("render", &[&scene], &exact, &["--drafting", "0"]);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("scale_l"), "{err}");
-    assert!(!out.join("shaper").exists());
+    assert!(!exact.join("shaper").exists());
+    // Read as by hand (the default), the 10 μN reaction is 0 mm on its polygon: no arm,
+    // the sheet drawn.
+    let hand = dir.join("hand");
+    let (code, err) = run_limited("render", &[&scene], &hand, &[]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(hand.join("shaper/forces.svg").is_file());
 }
 
 #[test]
