@@ -23,6 +23,7 @@ mod planetary;
 mod raw;
 mod structure;
 mod text;
+mod toml_error;
 pub mod user_table;
 
 pub use crate::kinematics::KinematicsSpec;

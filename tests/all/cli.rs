@@ -4,23 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::support;
-use support::{root, scratch, tmm};
-
-fn files_under(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    if let Ok(rd) = std::fs::read_dir(dir) {
-        for e in rd.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                out.extend(files_under(&p));
-            } else {
-                out.push(p);
-            }
-        }
-    }
-    out.sort();
-    out
-}
+use support::{files_under, root, scratch, tmm};
 
 #[test]
 fn render_writes_svg_and_png_and_is_byte_identical() {
@@ -609,40 +593,5 @@ fn scales_far_out_of_range_are_refused_at_load_in_every_section() {
             assert!(err.contains(" from "), "{key} = {v}: no range in {err}");
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
-}
-
-/// `render` and `note` read lengths as a hand construction does (0.5 mm) unless
-/// `--drafting 0` asks for the exact check; `batch` keeps its answer key exact.
-#[test]
-fn render_and_note_read_as_a_hand_construction_by_default() {
-    let dir = scratch("hand-reading");
-    let sheet = |extra: &[&str], name: &str| {
-        let out = dir.join(name);
-        let mut args = vec![
-            "render",
-            "constructions/four-bar.toml",
-            "--format",
-            "svg",
-            "--out",
-            out.to_str().unwrap(),
-        ];
-        args.extend_from_slice(extra);
-        let o = tmm(&args);
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        std::fs::read_to_string(out.join("four-bar/kinematics.svg")).expect("the sheet")
-    };
-    let hand = sheet(&[], "hand");
-    assert!(hand.contains("Длины считаны с чертежа с точностью 0,5 мм"));
-    assert!(!hand.contains("Построения точные"));
-    let exact = sheet(&["--drafting", "0"], "exact");
-    assert!(exact.contains("Построения точные"));
-    let help = |cmd: &str| String::from_utf8_lossy(&tmm(&[cmd, "--help"]).stdout).into_owned();
-    assert!(help("note").contains("[default: 0.5]"), "{}", help("note"));
-    assert!(
-        help("report").contains("[default: 0]"),
-        "{}",
-        help("report")
-    );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -28,6 +28,7 @@ mod friction_follower;
 mod fuzz_regressions;
 mod gears;
 mod guide_carrier;
+mod hand_reading;
 mod hard_cases;
 mod hostile;
 mod hostile_audit;

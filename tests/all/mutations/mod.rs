@@ -16,21 +16,15 @@
 
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use crate::support;
-use support::root;
+use support::{files_under, root};
+
+mod limits;
+use limits::{run, run_within};
 
 /// The mutants of the default sample.
 const SAMPLE: usize = 160;
-/// Address space per run, KiB (1 GiB).
-const MEMORY_KIB: u64 = 1 << 20;
-/// CPU seconds per run.
-const CPU_SECONDS: u64 = 60;
-/// Wall-clock seconds per run: a run that neither answers nor spends CPU (a wait, a lock)
-/// is a hang.
-const WALL_SECONDS: u64 = 60;
-
 /// The replacements of a number (deletion is the eleventh).
 const REPLACEMENTS: [&str; 10] = [
     "-1",
@@ -295,87 +289,6 @@ fn hash(s: &str) -> u64 {
     s.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
         (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
     })
-}
-
-/// Every file under `dir`.
-fn files_under(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    if let Ok(rd) = std::fs::read_dir(dir) {
-        for e in rd.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                out.extend(files_under(&p));
-            } else {
-                out.push(p);
-            }
-        }
-    }
-    out
-}
-
-/// Run `tmm args` within the limits, its output kept in `dir`; (exit code or what ended it,
-/// stdout, stderr). A run with no answer within [`WALL_SECONDS`] is killed and counted as a
-/// hang: a finding like any other.
-fn run(args: &[&str], dir: &Path) -> (Result<i32, String>, String, String) {
-    let bin = std::env::var("TMM_BIN").unwrap_or_else(|_| env!("CARGO_BIN_EXE_tmm").into());
-    run_within(&bin, args, dir, WALL_SECONDS)
-}
-
-/// [`run`] of `bin` with a wall-clock limit of `wall` seconds.
-fn run_within(
-    bin: &str,
-    args: &[&str],
-    dir: &Path,
-    wall: u64,
-) -> (Result<i32, String>, String, String) {
-    use std::time::{Duration, Instant};
-    let script = format!("ulimit -v {MEMORY_KIB}; ulimit -t {CPU_SECONDS}; exec \"$0\" \"$@\"",);
-    let (out, err) = (dir.join(".stdout"), dir.join(".stderr"));
-    let mut child = Command::new("sh")
-        .arg("-c")
-        .arg(script)
-        .arg(bin)
-        .args(args)
-        .stdout(std::fs::File::create(&out).expect("stdout file"))
-        .stderr(std::fs::File::create(&err).expect("stderr file"))
-        .spawn()
-        .expect("run sh");
-    let deadline = Instant::now() + Duration::from_secs(wall);
-    let status = loop {
-        if let Some(s) = child.try_wait().expect("wait") {
-            break Some(s);
-        }
-        if Instant::now() >= deadline {
-            let _ = child.kill();
-            let _ = child.wait();
-            break None;
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let status = match status {
-        None => Err(format!("no answer within {wall} s (a hang)")),
-        Some(st) => match st.code() {
-            Some(c) => Ok(c),
-            None => {
-                use std::os::unix::process::ExitStatusExt;
-                Err(match st.signal() {
-                    Some(6) => {
-                        "aborted (SIGABRT: memory beyond 1 GiB or a failed allocation)".into()
-                    }
-                    Some(9) => "killed (SIGKILL)".into(),
-                    Some(11) => "crashed (SIGSEGV: stack overflow?)".into(),
-                    Some(24) => format!("killed after {CPU_SECONDS} s of CPU (SIGXCPU)"),
-                    s => format!("killed by signal {s:?}"),
-                })
-            }
-        },
-    };
-    let read =
-        |p: &Path| String::from_utf8_lossy(&std::fs::read(p).unwrap_or_default()).into_owned();
-    let (stdout, stderr) = (read(&out), read(&err));
-    let _ = std::fs::remove_file(&out);
-    let _ = std::fs::remove_file(&err);
-    (status, stdout, stderr)
 }
 
 /// The first line of a message, shortened.
