@@ -112,7 +112,12 @@ impl RenderError {
     pub fn is_input(&self) -> bool {
         match self {
             RenderError::Build { error, .. } => {
-                matches!(error, BuildError::TooLarge { fits: Some(_), .. })
+                matches!(
+                    error,
+                    BuildError::TooLarge { fits: Some(_), .. }
+                        | BuildError::NoAdmissibleScale { .. }
+                        | BuildError::TooCoarse { .. }
+                )
             }
             RenderError::Resolution { .. } | RenderError::Write { .. } => true,
             RenderError::Png { .. }
@@ -172,24 +177,57 @@ fn plates_of(session: &Session<'_>, lang: Lang) -> Result<Vec<(PlateKind, Plate)
 }
 
 /// A drawing too large at a scale the scene gives: the scale suggested verified on every
-/// plate the key sets.
+/// plate the key sets; a drawing that fits when read exactly is blamed on the reading.
 fn refit(s: &Scene, e: BuildError, drafting: Drafting, lang: Lang) -> BuildError {
+    let e = suggest(s, e, drafting, lang);
+    let too_large_at = |e: &BuildError| match e {
+        BuildError::TooLarge {
+            fits: Some((k, _)), ..
+        }
+        | BuildError::NoAdmissibleScale { key: k, .. } => Some(k.key),
+        _ => None,
+    };
+    let Some(key) = too_large_at(&e).filter(|_| drafting.resolution_mm() > 0.0) else {
+        return e;
+    };
+    let exact = sheets::build_all(&Session::new(s, Drafting::EXACT), lang);
+    let fits_exactly = match &exact {
+        Ok(_) => true,
+        Err((_, other)) => too_large_at(other) != Some(key),
+    };
+    if fits_exactly {
+        BuildError::TooCoarse {
+            resolution_mm: drafting.resolution_mm(),
+            error: Box::new(e),
+        }
+    } else {
+        e
+    }
+}
+
+/// [`refit`]'s suggestion: verified, or none when the scene refuses every scale that fits.
+fn suggest(s: &Scene, e: BuildError, drafting: Drafting, lang: Lang) -> BuildError {
     match e {
         BuildError::TooLarge {
             what,
             need,
             fits: Some((key, first)),
         } => {
-            let fit = std::fs::read_to_string(&s.path)
-                .ok()
-                .and_then(|text| {
-                    sheets::verified_fit(&text, &s.path, key.key, first, drafting, lang)
-                })
-                .unwrap_or(first);
-            BuildError::TooLarge {
-                what,
-                need,
-                fits: Some((key, fit)),
+            let fit = std::fs::read_to_string(&s.path).map_or(sheets::Fit::Unverified, |text| {
+                sheets::verified_fit(&text, &s.path, key.key, first, drafting, lang)
+            });
+            match fit {
+                sheets::Fit::Refused => BuildError::NoAdmissibleScale { what, need, key },
+                sheets::Fit::Verified(fit) => BuildError::TooLarge {
+                    what,
+                    need,
+                    fits: Some((key, fit)),
+                },
+                sheets::Fit::Unverified => BuildError::TooLarge {
+                    what,
+                    need,
+                    fits: Some((key, first)),
+                },
             }
         }
         e => e,

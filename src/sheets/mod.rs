@@ -28,7 +28,7 @@ use crate::scale::Lang;
 use crate::scale::Scale;
 use crate::scene::{PlateKind, Scene};
 use crate::study::{Session, StudyError};
-pub use refit::verified_fit;
+pub use refit::{verified_fit, Fit};
 use thiserror::Error;
 
 /// Why a plate cannot be built.
@@ -49,6 +49,25 @@ pub enum BuildError {
     /// The tolerances of a drawing cannot be set up.
     #[error("tolerances: {0}")]
     Tolerances(String),
+    /// A drawing too large only because its lengths are read coarsely: read exactly, it
+    /// fits (a derivative of lengths read to 100 mm is their noise).
+    #[error("--drafting {} mm: {error} (read exactly it fits: the reading to {} mm makes it so large)", crate::scale::format_plain(*.resolution_mm), crate::scale::format_plain(*.resolution_mm))]
+    TooCoarse {
+        /// The reading's resolution, mm.
+        resolution_mm: f64,
+        /// The drawing too large at it.
+        error: Box<BuildError>,
+    },
+    /// A drawing larger than an empty sheet at every scale of its key the scene accepts.
+    #[error("{}: {}; no {} the scene accepts fits it: the drawing is too large by its other data", .key.key, too_large(.what, *.need, None), .key.key)]
+    NoAdmissibleScale {
+        /// The drawing.
+        what: String,
+        /// Its size with its labels and caption, mm.
+        need: DVec2,
+        /// The scene key of its scale, and that scale.
+        key: layout::ScaleKey,
+    },
     /// A drawing is larger than an empty sheet at the scale it must be drawn at.
     #[error("{}", too_large(.what, *.need, .fits.as_ref()))]
     TooLarge {

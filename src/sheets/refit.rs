@@ -14,9 +14,21 @@ use std::path::Path;
 /// At most this many rebuilds with a raised scale.
 const MAX_TRIES: usize = 8;
 
+/// What a suggested scale comes to when the scene is built again with it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Fit {
+    /// Every plate holds its drawings at this scale.
+    Verified(Scale),
+    /// The scene refuses the scale at load (outside the key's range): no scale the scene
+    /// accepts fits, the drawing is too large by its other data.
+    Refused,
+    /// The key cannot be set in the text, or no fit was found in [`MAX_TRIES`] rebuilds:
+    /// the suggestion stands unverified.
+    Unverified,
+}
+
 /// The scale `key` must take for every plate of the scene (`text`, read from `path`) to hold
-/// its drawings, starting from the suggestion `first`. `None` when the key cannot be set in
-/// the text or the scene no longer loads with it (the suggestion then stands unverified).
+/// its drawings, starting from the suggestion `first`.
 pub fn verified_fit(
     text: &str,
     path: &Path,
@@ -24,12 +36,20 @@ pub fn verified_fit(
     first: Scale,
     drafting: Drafting,
     lang: Lang,
-) -> Option<Scale> {
-    let mut table: toml::Table = text.parse().ok()?;
+) -> Fit {
+    let Ok(mut table) = text.parse::<toml::Table>() else {
+        return Fit::Unverified;
+    };
     let mut fit = first;
     for _ in 0..MAX_TRIES {
-        set(&mut table, key.path(), fit.value())?;
-        let scene = crate::scene::parse(&toml::to_string(&table).ok()?, path).ok()?;
+        let Some(text) =
+            set(&mut table, key.path(), fit.value()).and_then(|()| toml::to_string(&table).ok())
+        else {
+            return Fit::Unverified;
+        };
+        let Ok(scene) = crate::scene::parse(&text, path) else {
+            return Fit::Refused;
+        };
         match build_all(&Session::new(&scene, drafting), lang) {
             Err((
                 _,
@@ -42,10 +62,10 @@ pub fn verified_fit(
             }
             // Every drawing at this key fits (another failure is another key's or another
             // construction's).
-            _ => return Some(fit),
+            _ => return Fit::Verified(fit),
         }
     }
-    None
+    Fit::Unverified
 }
 
 /// Set the number at the dotted `key` (`kinematics.scale_v`, `gears.rack[1].scale_l`) of a

@@ -51,7 +51,13 @@ fn a_ram_of_a_milligram_is_drawn_or_refused_naming_the_scale() {
     let exact = dir.join("exact");
     let (code, err) = run_limited("render", &[&scene], &exact, &["--drafting", "0"]);
     assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("scale_l"), "{err}");
+    // No scale the scene accepts holds it: no suggestion the scene would refuse (the
+    // largest that fits, 10 000 m/mm, draws the crank 1e-5 mm long).
+    assert!(
+        err.contains("no mechanism.scale_l the scene accepts fits it"),
+        "{err}"
+    );
+    assert!(!err.contains("10000"), "{err}");
     assert!(!exact.join("shaper").exists());
     // Read as by hand (the default), the 10 μN reaction is 0 mm on its polygon: no arm,
     // the sheet drawn.

@@ -90,3 +90,27 @@ fn a_file_that_is_not_utf8_is_said_to_be_so() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("scene.toml:2: not UTF-8 text"), "{err}");
 }
+
+/// A drawing too large only because its lengths are read coarsely is blamed on the reading
+/// (issue 43 §8: `--drafting 100` blamed `kinematics.scale_s` alone).
+#[test]
+fn a_drawing_too_large_by_a_coarse_reading_names_the_reading() {
+    let out = scratch("coarse-reading");
+    let (code, err) = run(&[
+        "render",
+        "constructions/shaper.toml",
+        "--format",
+        "svg",
+        "--drafting",
+        "100",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("--drafting 100 mm: kinematics.scale_s"),
+        "{err}"
+    );
+    assert!(err.contains("read exactly it fits"), "{err}");
+    assert!(!out.join("shaper").exists());
+}

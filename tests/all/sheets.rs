@@ -174,8 +174,10 @@ fn a_view_too_large_at_its_given_scale_names_the_key_and_the_scale_that_fits() {
     assert_eq!(key.key.path(), "kinematics.scale_v");
     // Every velocity plan of the plate, not the first alone.
     assert_eq!(first.value(), 0.01);
-    let fit = sheets::verified_fit(&text, &path, key.key, first, Drafting::EXACT, Lang::Ru)
-        .expect("verified");
+    let fit = sheets::verified_fit(&text, &path, key.key, first, Drafting::EXACT, Lang::Ru);
+    let sheets::Fit::Verified(fit) = fit else {
+        panic!("verified: {fit:?}");
+    };
     assert_eq!(fit.value(), 0.025);
     for (v, fits) in [("0.01", false), ("0.025", true)] {
         let text = shaper_text().replace("scale_v = 0.05 ", &format!("scale_v = {v} "));
