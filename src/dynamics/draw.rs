@@ -101,6 +101,31 @@ fn scale_of(
     }
 }
 
+/// A scale the scene gives (`key`) must draw the largest `value` of its diagram within
+/// [`crate::scene::DRAWN_MM`]: beyond, no sheet holds it and the chords lose their meaning
+/// (μ_M = 1e-12 N·m/mm drew A_с 1e14 mm tall and failed in its integration).
+fn given_draws(
+    given: Option<Scale>,
+    key: crate::scene::Key,
+    value: f64,
+) -> Result<(), DynamicsError> {
+    let (lo, hi) = crate::scene::DRAWN_MM;
+    match given {
+        Some(s)
+            if value.is_finite() && value > 0.0 && !(lo..=hi).contains(&(value / s.value())) =>
+        {
+            Err(DynamicsError::Drawn {
+                key: key.path(),
+                scale: s.value(),
+                value,
+                drawn_mm: value / s.value(),
+                range: (value / hi, value / lo),
+            })
+        }
+        _ => Ok(()),
+    }
+}
+
 fn diagram_err(what: &'static str) -> impl Fn(crate::calculus::CalculusError) -> DynamicsError {
     move |error| DynamicsError::Diagram { what, error }
 }
@@ -165,6 +190,7 @@ pub fn diagrams(
     let mc: Vec<f64> = red.iter().map(|r| -sgn * r.m()).collect();
     let big_m = mc.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let mu_phi = scale_of(spec.scale_phi, TAU, TURN_MM, Quantity::Angle, "μ_φ")?;
+    given_draws(spec.scale_m, crate::scene::Key::DynamicsScaleM, big_m)?;
     let mu_m = scale_of(spec.scale_m, big_m, HEIGHT_MM, Quantity::Moment, "μ_M")?;
     let a_est: f64 = mc.iter().map(|v| v * dx).sum::<f64>().abs().max(big_m * dx);
     let (pole_h, mu_a) = match spec.pole_h {
@@ -244,6 +270,11 @@ pub fn diagrams(
     let w2 = w_avg * w_avg;
     let t1: Vec<f64> = (0..=n).map(|i| delta_t[i] - w2 * j[i % n] / 2.0).collect();
     let big = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    given_draws(
+        spec.scale_t,
+        crate::scene::Key::DynamicsScaleT,
+        big(&delta_t),
+    )?;
     let mu_t = scale_of(
         spec.scale_t,
         big(&delta_t),
@@ -254,6 +285,7 @@ pub fn diagrams(
     // T_I lies far from zero (it carries −ω²J_пр/2): its own scale.
     let mu_t1 = scale_of(None, big(&t1), 80.0, Quantity::Work, "μ_T of T_I")?;
     let big_j = j.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    given_draws(spec.scale_j, crate::scene::Key::DynamicsScaleJ, big_j)?;
     let mu_j = scale_of(spec.scale_j, big_j, 80.0, Quantity::Inertia, "μ_J")?;
 
     // 3: the ΔT diagram.

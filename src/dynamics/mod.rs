@@ -95,6 +95,20 @@ pub enum DynamicsError {
         /// Why.
         error: CalculusError,
     },
+    /// A scale the scene gives draws its diagram too small or too large to be drawn.
+    #[error("{key} = {}: draws the diagram's largest value {} as {} mm: expected {} … {} mm, a scale from {} to {}", crate::scale::format_plain(*scale), crate::scale::format_plain(*value), crate::scale::format_plain(*drawn_mm), crate::scale::format_plain(crate::scene::DRAWN_MM.0), crate::scale::format_plain(crate::scene::DRAWN_MM.1), crate::scale::format_plain(range.0), crate::scale::format_plain(range.1))]
+    Drawn {
+        /// The scene key.
+        key: &'static str,
+        /// The scale given.
+        scale: f64,
+        /// The diagram's largest value, SI.
+        value: f64,
+        /// Its drawn length, mm.
+        drawn_mm: f64,
+        /// The scales that draw it within range.
+        range: (f64, f64),
+    },
     /// A scale cannot be chosen.
     #[error("no scale can be chosen for {what} ({value})", value = crate::scale::format_plain(*value))]
     NoScale {

@@ -112,13 +112,20 @@ pub(crate) fn dynamics(
         }
     });
     let [scale_m, scale_phi, scale_j, scale_t] = scales(check, &raw);
+    // The pole distance of the work diagram's integration: a drawn length, within the
+    // range of every graphical integration's pole.
+    let (lo, hi) = super::drawing::POLE_MM;
     let pole_h = raw.pole_h.map(|h| {
-        check.in_range(
-            &key("pole_h"),
-            h,
-            1e4,
-            "a pole distance H > 0 mm (at most 1e4)",
-        )
+        if (lo..=hi).contains(&h) {
+            h
+        } else {
+            check.push(
+                key("pole_h"),
+                Some(super::check::number(h)),
+                format!("expected a pole distance H from {lo} to {hi} mm"),
+            );
+            h
+        }
     });
     let flywheel = flywheel(check, raw.flywheel.unwrap_or_default());
     let seed = raw.seed.map(|s| seed(check, s));

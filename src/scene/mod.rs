@@ -27,6 +27,7 @@ mod toml_error;
 pub mod user_table;
 
 pub use crate::kinematics::KinematicsSpec;
+pub(crate) use drawing::DRAWN_MM;
 pub use error::{Problem, SceneError};
 pub use keys::Key;
 pub use load::{files_in, load, parse, read};

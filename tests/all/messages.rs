@@ -114,3 +114,32 @@ fn a_drawing_too_large_by_a_coarse_reading_names_the_reading() {
     assert!(err.contains("read exactly it fits"), "{err}");
     assert!(!out.join("shaper").exists());
 }
+
+/// The dynamics' given scale and pole are refused by what they draw, naming the key
+/// (issue 43 §8: μ_M = 1e-12 with H = 1e-6 mm ended in "A_с: interval 0: the line does not
+/// cut the interval's end ordinate").
+#[test]
+fn the_dynamics_scale_and_pole_are_refused_by_what_they_draw() {
+    fn set(key: &'static str, value: &'static str) -> impl Fn(&str) -> String {
+        move |t: &str| {
+            let start = t.find(&format!("\n{key} = ")).expect("the key") + 1;
+            let end = start + t[start..].find('\n').expect("its line");
+            format!("{}{key} = {value}{}", &t[..start], &t[end..])
+        }
+    }
+    let scene = shaper_with("pole-tiny", set("pole_h", "1e-6"));
+    let (code, err) = run(&["check", scene.to_str().unwrap()]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("dynamics.pole_h = 1e-6: expected a pole distance H from 1 to 500 mm"),
+        "{err}"
+    );
+    let scene = shaper_with("scale-m-tiny", set("scale_m", "1e-12"));
+    let (code, err) = run(&["check", scene.to_str().unwrap()]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        err.contains("dynamics.scale_m = 1e-12: draws the diagram's largest value"),
+        "{err}"
+    );
+    assert!(err.contains("expected 0.1 … 10000 mm"), "{err}");
+}
