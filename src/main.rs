@@ -268,6 +268,12 @@ fn options(lang: LangArg, drafting: f64) -> Result<(Lang, Drafting), Failure> {
     Ok((language(lang), drafting))
 }
 
+/// A file that cannot be written: the output the user named is at fault (status 2, as
+/// `render`'s).
+fn cannot_write(path: &Path, e: &std::io::Error) -> Failure {
+    Failure::input(format!("{}: cannot write: {e}", path.display()))
+}
+
 fn language(lang: LangArg) -> Lang {
     match lang {
         LangArg::Ru => Lang::Ru,
@@ -435,8 +441,7 @@ fn audit(
             .map_err(|e| Failure::construction(format!("the audit's sheet: {e}")))?;
         let bytes = tmm::plate::plates_to_pdf(&plates)
             .map_err(|e| Failure::construction(format!("the audit's sheet: {e}")))?;
-        tmm::plate::write_atomic(pdf, &bytes)
-            .map_err(|e| Failure::construction(format!("{}: cannot write: {e}", pdf.display())))?;
+        tmm::plate::write_atomic(pdf, &bytes).map_err(|e| cannot_write(pdf, &e))?;
     }
     emit(&match format {
         AuditFormat::Md => tmm::audit::to_markdown(&s.stem, &audited, lang),
@@ -564,8 +569,7 @@ fn bench(json: bool, out: &Path, quick: bool, scenes: PathBuf) -> Result<(), Fai
         ("bench.svg", &b.to_svg_plot()),
     ] {
         let path = dir.join(name);
-        tmm::plate::write_atomic(&path, text.as_bytes())
-            .map_err(|e| Failure::construction(format!("{}: cannot write: {e}", path.display())))?;
+        tmm::plate::write_atomic(&path, text.as_bytes()).map_err(|e| cannot_write(&path, &e))?;
     }
     println!("{}", if json { js } else { md });
     Ok(())

@@ -143,3 +143,21 @@ fn the_dynamics_scale_and_pole_are_refused_by_what_they_draw() {
     );
     assert!(err.contains("expected 0.1 … 10000 mm"), "{err}");
 }
+
+/// An output that cannot be written is the user's to mend: exit 2 in `audit --pdf` as in
+/// `render` (issue 43 §9: it was 1).
+#[test]
+fn an_unwritable_audit_sheet_is_exit_2() {
+    let dir = scratch("audit-unwritable");
+    let pdf = dir.join("sheet.pdf");
+    std::fs::create_dir_all(&pdf).unwrap();
+    let (code, err) = run(&[
+        "audit",
+        "constructions/shaper.toml",
+        "constructions/tables/seed-000.csv",
+        "--pdf",
+        pdf.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("sheet.pdf: cannot write"), "{err}");
+}
