@@ -19,7 +19,10 @@ const TEMPLATES: [(&str, &str); 2] = [
         "four-bar.toml",
         include_str!("../../constructions/four-bar.toml"),
     ),
-    ("shaper.toml", include_str!("../../constructions/shaper.toml")),
+    (
+        "shaper.toml",
+        include_str!("../../constructions/shaper.toml"),
+    ),
 ];
 
 /// Read the grid `data` over each template; load the variants of those that accept it.
@@ -34,7 +37,10 @@ pub fn run(data: &[u8]) {
         let Ok(variants) = tmm::batch::read_grid(template, grid, Path::new("grid.csv")) else {
             continue;
         };
-        assert!(!variants.is_empty(), "{name}: a grid accepted with no variant");
+        assert!(
+            !variants.is_empty(),
+            "{name}: a grid accepted with no variant"
+        );
         for v in variants.iter().take(LOADED) {
             let _ = tmm::scene::parse(&v.text, Path::new(&format!("{}.toml", v.name)));
         }

@@ -32,8 +32,9 @@ fn scene() -> &'static Scene {
 
 /// A stable choice among inputs (by their bytes).
 fn choice(data: &[u8]) -> u32 {
-    data.iter()
-        .fold(0x9e37_79b9_u32, |h, &b| (h ^ u32::from(b)).wrapping_mul(0x0100_0193))
+    data.iter().fold(0x9e37_79b9_u32, |h, &b| {
+        (h ^ u32::from(b)).wrapping_mul(0x0100_0193)
+    })
 }
 
 /// The values of the string literals of `node`, in order.
@@ -78,14 +79,21 @@ pub fn check(data: &[u8], typeset: bool, whole: bool) {
     let lang = [Lang::Ru, Lang::Uk, Lang::En][data.len() % 3];
     let content = note::user_text(text, lang);
     let root = typst::syntax::parse(&format!("#{content}"));
-    assert!(!root.diagnosis().errors, "{content}: not valid Typst markup");
+    assert!(
+        !root.diagnosis().errors,
+        "{content}: not valid Typst markup"
+    );
     let mut values = Vec::new();
     strings(&root, &mut values);
     assert_eq!(values, [text], "{content}: not one string of the text");
     if typeset {
         let typeset = note::typeset_content(&content)
             .unwrap_or_else(|e| panic!("{content}: refused by the typesetter: {e}"));
-        assert_eq!(shown(&typeset), shown(text), "{content}: typeset as {typeset:?}");
+        assert_eq!(
+            shown(&typeset),
+            shown(text),
+            "{content}: typeset as {typeset:?}"
+        );
     }
     if whole {
         whole_note(text, lang);

@@ -87,7 +87,11 @@ fn shipped_task_strings_run_through_the_note_target() {
         note_body::check(s.as_bytes(), true, false);
         note_body::run(s.as_bytes());
     }
-    note_body::check("Поперечно-строгальный станок\nТММ.КП.000\n\"Студент\" \\".as_bytes(), true, true);
+    note_body::check(
+        "Поперечно-строгальный станок\nТММ.КП.000\n\"Студент\" \\".as_bytes(),
+        true,
+        true,
+    );
 }
 
 /// The inputs the fuzz runs stopped on (`fuzz/regressions/<target>/`, see `fuzz/README.md`):
@@ -98,9 +102,19 @@ fn fuzz_findings_run_through_the_fuzz_targets() {
     let scenes = files("fuzz/regressions/scene", ".toml");
     assert!(!scenes.is_empty());
     run_all(&scenes, scene_body::run);
-    run_all(&files("fuzz/regressions/grid", ""), grid_body::run);
-    run_all(&files("fuzz/regressions/audit", ""), audit_body::run);
-    run_all(&files("fuzz/regressions/note", ""), |data| {
+    // A target without a finding has no folder (git keeps no empty one).
+    let found = |target: &str| {
+        let dir = format!("fuzz/regressions/{target}");
+        let there = Path::new(env!("CARGO_MANIFEST_DIR")).join(&dir).is_dir();
+        if there {
+            files(&dir, "")
+        } else {
+            Vec::new()
+        }
+    };
+    run_all(&found("grid"), grid_body::run);
+    run_all(&found("audit"), audit_body::run);
+    run_all(&found("note"), |data| {
         note_body::check(data, true, true);
     });
 }
