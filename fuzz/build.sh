@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Build the libFuzzer target on the stable toolchain (no nightly, no -Zsanitizer): rustc's
+# Build the libFuzzer targets (every `[[bin]]` of Cargo.toml) on the stable toolchain (no nightly, no -Zsanitizer): rustc's
 # stable codegen flags run LLVM's SanitizerCoverage pass with the same options cargo-fuzz
 # uses, and libfuzzer-sys links libFuzzer (compiled from its bundled C++ sources by the
 # system C++ compiler). See README.md.
@@ -15,6 +15,6 @@ export RUSTFLAGS="${RUSTFLAGS:-} \
  -Cdebug-assertions \
  -Coverflow-checks"
 # An explicit --target keeps RUSTFLAGS off build scripts and proc macros (which cannot link
-# the coverage callbacks); the binary lands in target/<host>/release/scene.
+# the coverage callbacks); the binaries land in target/<host>/release/<target>.
 host=$(rustc -vV | sed -n "s/^host: //p")
-exec cargo build --release --target "$host" --bin scene "$@"
+exec cargo build --release --target "$host" --bins "$@"

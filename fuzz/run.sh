@@ -1,15 +1,41 @@
 #!/usr/bin/env bash
-# Fuzz the scene target with one worker: fuzz/run.sh [extra libFuzzer flags], e.g.
-# fuzz/run.sh -max_total_time=3600. The corpus (fuzz/corpus, not committed) starts from
-# constructions/*.toml; crashes go to fuzz/artifacts/.
+# Fuzz one target with one worker: fuzz/run.sh <target> [extra libFuzzer flags], e.g.
+# fuzz/run.sh grid -max_total_time=600. Targets: scene, grid, audit, note (README.md). The
+# corpus (fuzz/corpus/<target>, not committed) starts from the shipped files: the scenes, the
+# grids of constructions/variants, the tables of constructions/tables, the scenes' [task]
+# strings. Findings go to fuzz/artifacts/<target>/.
 set -euo pipefail
 cd "$(dirname "$0")"
+target="${1:?usage: fuzz/run.sh scene|grid|audit|note [libFuzzer flags]}"
+shift
 ./build.sh
 host=$(rustc -vV | sed -n "s/^host: //p")
-mkdir -p corpus artifacts
-if [ -z "$(ls -A corpus)" ]; then
-    cp ../constructions/*.toml corpus/
+corpus="corpus/$target"
+mkdir -p "$corpus" "artifacts/$target"
+flags=(-max_len=8192 -timeout=10)
+if [ -z "$(ls -A "$corpus")" ]; then
+    case "$target" in
+    scene) cp ../constructions/*.toml "$corpus/" ;;
+    grid) cp ../constructions/variants/*.csv "$corpus/" ;;
+    audit) cp ../constructions/tables/*.csv "$corpus/" ;;
+    note)
+        # Every string of every scene's [task], one file each.
+        n=0
+        for f in ../constructions/*.toml; do
+            awk '/^\[/ { task = ($0 ~ /^\[task\]/) } task && /=/' "$f" |
+                sed -n 's/^[a-z_]* *= *"\(.*\)".*$/\1/p' |
+                while IFS= read -r line; do
+                    n=$((n + 1))
+                    printf '%s' "$line" > "$corpus/$(basename "$f" .toml)-$n"
+                done
+        done
+        ;;
+    *) echo "no target $target" >&2; exit 2 ;;
+    esac
 fi
-exec "target/$host/release/scene" corpus \
-    -dict=scene.dict -max_len=8192 -rss_limit_mb=1024 -timeout=10 \
-    -artifact_prefix=artifacts/ -print_final_stats=1 "$@"
+case "$target" in
+scene | grid) flags+=(-dict=scene.dict) ;;
+note) flags=(-max_len=2048 -timeout=10) ;;
+esac
+exec "target/$host/release/$target" "$corpus" "${flags[@]}" -rss_limit_mb=1024 \
+    -artifact_prefix="artifacts/$target/" -print_final_stats=1 "$@"

@@ -8,7 +8,7 @@
 
 use libfuzzer_sys::{fuzz_mutator, fuzz_target, fuzzer_mutate};
 
-fuzz_target!(|data: &[u8]| tmm_fuzz::run(data));
+fuzz_target!(|data: &[u8]| tmm_fuzz::scene::run(data));
 
 /// The values a number is replaced with.
 const EDGES: &[&str] = &[

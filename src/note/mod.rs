@@ -234,6 +234,22 @@ pub fn compose_with(
     })
 }
 
+/// A user's text (a `[task]` string: the title, the author, the organisation, …) as the
+/// note's markup sets it in `lang`: content of one Typst string, so that no character of it
+/// is read as markup (the fuzzer's `note` target checks that it typesets to the text).
+pub fn user_text(text: &str, lang: Lang) -> String {
+    markup::localise_scripts(&markup::text(text), lang)
+}
+
+/// The text Typst `content` (markup such as [`user_text`] gives) shows typeset alone on a
+/// page with the note's fonts: each run of text followed by a space, as [`to_text`].
+///
+/// # Errors
+/// [`NoteError::Typeset`] when the typesetter refuses the content.
+pub fn typeset_content(content: &str) -> Result<String, NoteError> {
+    typeset::text(&format!("#{content}"), &[])
+}
+
 /// The note typeset as PDF: the same note always gives the same bytes.
 ///
 /// # Errors
