@@ -16,6 +16,7 @@
 //!    J_I = ΔT_I/(δ·ω_ср²), J_м = J_I − J_const.
 
 use super::reduce::Reduced;
+use super::scales::{given_draws, scale_of};
 use super::spec::{ConstantMoment, DynamicsSpec};
 use super::twin::{Cycle, Solution};
 use super::DynamicsError;
@@ -86,44 +87,6 @@ pub struct Diagrams {
     pub wittenbauer: Route,
     /// Merkin's flywheel.
     pub merkin: Route,
-}
-
-fn scale_of(
-    given: Option<Scale>,
-    value: f64,
-    mm: f64,
-    q: Quantity,
-    what: &'static str,
-) -> Result<Scale, DynamicsError> {
-    match given {
-        Some(s) => Ok(s),
-        None => Scale::round_for(value, mm, q).ok_or(DynamicsError::NoScale { what, value }),
-    }
-}
-
-/// A scale the scene gives (`key`) must draw the largest `value` of its diagram within
-/// [`crate::scene::DRAWN_MM`]: beyond, no sheet holds it and the chords lose their meaning
-/// (μ_M = 1e-12 N·m/mm drew A_с 1e14 mm tall and failed in its integration).
-fn given_draws(
-    given: Option<Scale>,
-    key: crate::scene::Key,
-    value: f64,
-) -> Result<(), DynamicsError> {
-    let (lo, hi) = crate::scene::DRAWN_MM;
-    match given {
-        Some(s)
-            if value.is_finite() && value > 0.0 && !(lo..=hi).contains(&(value / s.value())) =>
-        {
-            Err(DynamicsError::Drawn {
-                key: key.path(),
-                scale: s.value(),
-                value,
-                drawn_mm: value / s.value(),
-                range: (value / hi, value / lo),
-            })
-        }
-        _ => Ok(()),
-    }
 }
 
 fn diagram_err(what: &'static str) -> impl Fn(crate::calculus::CalculusError) -> DynamicsError {

@@ -20,6 +20,7 @@ mod engine_tests;
 mod flywheel;
 mod reduce;
 mod rows;
+mod scales;
 mod spec;
 #[cfg(test)]
 mod tests;
