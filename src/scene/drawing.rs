@@ -70,17 +70,22 @@ pub(crate) fn drawing_ranges(
         ("kinematics.pole_h1", spec.pole_h1),
         ("kinematics.pole_h2", spec.pole_h2),
     ] {
-        if let Some(h) = h.filter(|&h| !within(h, POLE_MM)) {
-            check.push(
-                key,
-                Some(number(h)),
-                format!(
-                    "expected a pole distance from {} to {} mm",
-                    short(POLE_MM.0),
-                    short(POLE_MM.1)
-                ),
-            );
-        }
+        pole(check, key, h, "a pole distance");
+    }
+}
+
+/// A given pole distance `h` of `key` (`what`, for the message) must lie in [`POLE_MM`].
+pub(crate) fn pole(check: &mut Checker, key: &str, h: Option<f64>, what: &str) {
+    if let Some(h) = h.filter(|&h| !within(h, POLE_MM)) {
+        check.push(
+            key,
+            Some(number(h)),
+            format!(
+                "expected {what} from {} to {} mm",
+                short(POLE_MM.0),
+                short(POLE_MM.1)
+            ),
+        );
     }
 }
 

@@ -114,19 +114,8 @@ pub(crate) fn dynamics(
     let [scale_m, scale_phi, scale_j, scale_t] = scales(check, &raw);
     // The pole distance of the work diagram's integration: a drawn length, within the
     // range of every graphical integration's pole.
-    let (lo, hi) = super::drawing::POLE_MM;
-    let pole_h = raw.pole_h.map(|h| {
-        if (lo..=hi).contains(&h) {
-            h
-        } else {
-            check.push(
-                key("pole_h"),
-                Some(super::check::number(h)),
-                format!("expected a pole distance H from {lo} to {hi} mm"),
-            );
-            h
-        }
-    });
+    let pole_h = raw.pole_h;
+    super::drawing::pole(check, &key("pole_h"), pole_h, "a pole distance H");
     let flywheel = flywheel(check, raw.flywheel.unwrap_or_default());
     let seed = raw.seed.map(|s| seed(check, s));
     let constant_moment = check.word_or_first(

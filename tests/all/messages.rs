@@ -14,6 +14,15 @@ fn shaper_with(name: &str, edit: impl Fn(&str) -> String) -> std::path::PathBuf 
     path
 }
 
+/// An edit of a scene's text that sets the first `key = …` line to `value`.
+fn set(key: &'static str, value: &'static str) -> impl Fn(&str) -> String {
+    move |t: &str| {
+        let start = t.find(&format!("\n{key} = ")).expect("the key") + 1;
+        let end = start + t[start..].find('\n').expect("its line");
+        format!("{}{key} = {value}{}", &t[..start], &t[end..])
+    }
+}
+
 /// `tmm args…`: its exit code and standard error.
 fn run(args: &[&str]) -> (Option<i32>, String) {
     let o = tmm(args);
@@ -25,11 +34,7 @@ fn run(args: &[&str]) -> (Option<i32>, String) {
 
 #[test]
 fn a_tiny_delta_is_echoed_compactly() {
-    let scene = shaper_with("delta-tiny", |t| {
-        let start = t.find("\ndelta = ").expect("dynamics.delta") + 1;
-        let end = start + t[start..].find('\n').expect("its line");
-        format!("{}delta = 1e-300{}", &t[..start], &t[end..])
-    });
+    let scene = shaper_with("delta-tiny", set("delta", "1e-300"));
     let (code, err) = run(&["check", scene.to_str().unwrap()]);
     // No flywheel gives it: the construction fails (1), naming the key.
     assert_eq!(code, Some(1), "{err}");
@@ -120,13 +125,6 @@ fn a_drawing_too_large_by_a_coarse_reading_names_the_reading() {
 /// cut the interval's end ordinate").
 #[test]
 fn the_dynamics_scale_and_pole_are_refused_by_what_they_draw() {
-    fn set(key: &'static str, value: &'static str) -> impl Fn(&str) -> String {
-        move |t: &str| {
-            let start = t.find(&format!("\n{key} = ")).expect("the key") + 1;
-            let end = start + t[start..].find('\n').expect("its line");
-            format!("{}{key} = {value}{}", &t[..start], &t[end..])
-        }
-    }
     let scene = shaper_with("pole-tiny", set("pole_h", "1e-6"));
     let (code, err) = run(&["check", scene.to_str().unwrap()]);
     assert_eq!(code, Some(2), "{err}");
