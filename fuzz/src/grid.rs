@@ -42,7 +42,10 @@ pub fn run(data: &[u8]) {
             "{name}: a grid accepted with no variant"
         );
         for v in variants.iter().take(LOADED) {
-            let _ = tmm::scene::parse(&v.text, Path::new(&format!("{}.toml", v.name)));
+            let text = v
+                .text()
+                .unwrap_or_else(|e| panic!("{name}: variant {} accepted, then: {e}", v.name));
+            let _ = tmm::scene::parse(&text, Path::new(&format!("{}.toml", v.name)));
         }
     }
 }

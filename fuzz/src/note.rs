@@ -49,14 +49,18 @@ fn strings(node: &SyntaxNode, out: &mut Vec<String>) {
     }
 }
 
-/// What a reader finds of `text`: its letters, digits and ASCII punctuation, sorted (a
-/// typeset line is laid out in runs, and the runs of mixed directions in visual order).
+/// What a reader finds of `text`: which letters, digits and ASCII punctuation it shows,
+/// sorted (a typeset line is laid out in runs, and the runs of mixed directions in visual
+/// order), each once: a letter whose mark the note's font lacks is laid out in two runs, the
+/// letter in that font and the mark in a fallback, and each run carries the whole cluster's
+/// text (`fuzz/regressions/note/mark-in-a-fallback-font`).
 fn shown(text: &str) -> Vec<char> {
     let mut v: Vec<char> = text
         .chars()
         .filter(|c| c.is_alphanumeric() || c.is_ascii_punctuation())
         .collect();
     v.sort_unstable();
+    v.dedup();
     v
 }
 

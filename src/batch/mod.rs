@@ -25,7 +25,9 @@ use crate::scene::user_table::{self, CellError};
 use crate::study::Session;
 use key::row_of;
 pub use key::{answer_columns, answer_key_csv, answer_key_pdf, write_answer_key, Column};
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 use thiserror::Error;
 use toml::{Table, Value};
 
@@ -53,15 +55,55 @@ pub enum GridError {
     },
 }
 
-/// One variant of a grid: its name and its scene's text (the template with the row's values).
+/// One variant of a grid: its name and its row. Its scene's text is made when it is drawn
+/// ([`Variant::text`]), so that a class of thousands holds its rows, not thousands of scenes.
 #[derive(Debug, Clone)]
 pub struct Variant {
     /// The variant's name: its output folder.
     pub name: String,
     /// The grid's line it came from.
     pub line: u64,
-    /// The scene: the template's text with the row's values set.
-    pub text: String,
+    /// The row's values, one per key of the grid's header (checked against the template).
+    cells: Vec<String>,
+    /// The template and the grid's keys, shared by every variant of the grid.
+    grid: Arc<Template>,
+}
+
+/// What every variant of a grid shares: the template's table and the keys the grid sets.
+#[derive(Debug)]
+struct Template {
+    base: Table,
+    paths: Vec<Vec<Step>>,
+    decimal_comma: bool,
+}
+
+impl Template {
+    /// The template with `cells` set (an empty cell takes its key out); the column (from 0,
+    /// among the keys) and the message of the first cell refused.
+    fn with(&self, cells: &[String]) -> Result<Table, (usize, String)> {
+        let mut table = self.base.clone();
+        for (c, (path, text)) in self.paths.iter().zip(cells).enumerate() {
+            if text.trim().is_empty() {
+                remove(&mut table, path).map_err(|m| (c, m))?;
+                continue;
+            }
+            let at = slot(&mut table, path).map_err(|m| (c, m))?;
+            assign(at, text, self.decimal_comma).map_err(|m| (c, m))?;
+        }
+        Ok(table)
+    }
+}
+
+impl Variant {
+    /// The variant's scene: the template's text with the row's values set.
+    ///
+    /// # Errors
+    /// The message when the scene cannot be written out as TOML (the row itself was checked
+    /// by [`read_grid`]).
+    pub fn text(&self) -> Result<String, String> {
+        let table = self.grid.with(&self.cells).map_err(|(_, m)| m)?;
+        toml::to_string(&table).map_err(|e| e.to_string())
+    }
 }
 
 /// One step of a key path: a table's key or an array's index.
@@ -235,7 +277,13 @@ pub fn read_grid(template: &str, grid: &str, grid_path: &Path) -> Result<Vec<Var
         }
         paths.push(path);
     }
+    let grid = Arc::new(Template {
+        base,
+        paths,
+        decimal_comma: semicolons,
+    });
     let mut variants: Vec<Variant> = Vec::new();
+    let mut names = HashSet::new();
     for record in reader.records() {
         let record = record.map_err(|e| whole(e.to_string()))?;
         let line = record.position().map_or(0, |p| p.line());
@@ -265,21 +313,20 @@ pub fn read_grid(template: &str, grid: &str, grid_path: &Path) -> Result<Vec<Var
                 format!("{name:?}: a variant's name is its folder: letters, digits, -, _ or ."),
             ));
         }
-        if variants.iter().any(|v| v.name == name) {
+        if !names.insert(name.clone()) {
             return Err(cell(0, format!("{name:?}: a second variant of that name")));
         }
-        let mut table = base.clone();
-        for (c, path) in paths.iter().enumerate() {
-            let text = &record[c + 1];
-            if text.trim().is_empty() {
-                remove(&mut table, path).map_err(|m| cell(c + 1, m))?;
-                continue;
-            }
-            let at = slot(&mut table, path).map_err(|m| cell(c + 1, m))?;
-            assign(at, text, semicolons).map_err(|m| cell(c + 1, m))?;
-        }
-        let text = toml::to_string(&table).map_err(|e| whole(e.to_string()))?;
-        variants.push(Variant { name, line, text });
+        let cells: Vec<String> = record.iter().skip(1).map(str::to_string).collect();
+        // Checked now, made again when drawn: nothing of a grid is drawn before all of it
+        // is accepted.
+        let table = grid.with(&cells).map_err(|(c, m)| cell(c + 1, m))?;
+        toml::to_string(&table).map_err(|e| whole(e.to_string()))?;
+        variants.push(Variant {
+            name,
+            line,
+            cells,
+            grid: Arc::clone(&grid),
+        });
     }
     if variants.is_empty() {
         return Err(whole("no variant: expected a row after the header".into()));
@@ -328,7 +375,8 @@ fn one(
             text.strip_prefix(&prefix).unwrap_or(&text)
         )
     };
-    let scene = scene::parse(&v.text, &path).map_err(|e| why(&e))?;
+    let text = v.text().map_err(|e| why(&e))?;
+    let scene = scene::parse(&text, &path).map_err(|e| why(&e))?;
     let session = Session::new(&scene, options.drafting);
     // The task sheet to hand out, for a task with a mechanism: made before anything of the
     // variant is written, so that a variant whose task sheet fails leaves no folder.
@@ -431,7 +479,7 @@ mod tests {
     #[test]
     fn a_row_sets_its_values_as_the_template_has_them() {
         let v = grid("variant,a.x,a.n,a.at[1],a.l[0].m,a.name\n01,2.5,4,7,9.5,q\n").unwrap();
-        let t: Table = toml::from_str(&v[0].text).unwrap();
+        let t: Table = toml::from_str(&v[0].text().unwrap()).unwrap();
         assert_eq!(t["a"]["x"].as_float(), Some(2.5));
         assert_eq!(t["a"]["n"].as_integer(), Some(4));
         assert_eq!(t["a"]["at"][1].as_float(), Some(7.0));
@@ -439,11 +487,11 @@ mod tests {
         assert_eq!(t["a"]["name"].as_str(), Some("q"));
         // Semicolons and decimal commas.
         let v = grid("variant;a.x\nv1;2,25\n").unwrap();
-        let t: Table = toml::from_str(&v[0].text).unwrap();
+        let t: Table = toml::from_str(&v[0].text().unwrap()).unwrap();
         assert_eq!(t["a"]["x"].as_float(), Some(2.25));
         // An empty cell takes the key out; a list's element cannot be.
         let v = grid("variant,a.x,a.l[0].m\nv1,,\n").unwrap();
-        let t: Table = toml::from_str(&v[0].text).unwrap();
+        let t: Table = toml::from_str(&v[0].text().unwrap()).unwrap();
         assert!(t["a"].get("x").is_none() && t["a"]["l"][0].get("m").is_none());
         assert!(t["a"].get("n").is_some());
         assert!(refused("variant,a.at[0]\nv1,\n").contains("cannot be left empty"));

@@ -171,3 +171,39 @@ fn a_title_too_long_or_too_marked_for_a_note_is_refused_naming_its_key() {
         assert!(out.join("titled/titled-note.pdf").is_file());
     }
 }
+
+#[test]
+fn a_pin_a_hair_off_the_rockers_pivot_is_drawn_or_refused_naming_the_scale() {
+    // The crank (A–B, 140 mm) made 430 mm − 1 pm long: its pin passes 1e-9 mm from the
+    // rocker's pivot C, the rocker turns through 180° there and the ram runs ±710 mm.
+    let text = std::fs::read_to_string("constructions/shaper.toml").expect("shaper.toml");
+    let (crank, scale) = ("length = 140.0\n", "scale_l = 0.0025 ");
+    assert!(text.contains(crank) && text.contains(scale), "the template");
+    let dir = scratch("pin-off-pivot");
+    let scene = dir.join("shaper.toml");
+    let write = |s: &str| {
+        let t = text
+            .replacen(crank, "length = 429.999999999\n", 1)
+            .replacen(scale, &format!("scale_l = {s} "), 1);
+        std::fs::write(&scene, t).unwrap();
+    };
+    // At the shipped scale the ram's run does not fit a sheet: refused naming the scale
+    // with one it accepts, nothing written.
+    write("0.0025");
+    let out = dir.join("at-0.0025");
+    let (code, err) = run_limited("render", &[&scene], &out, &["--format", "svg"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("mechanism.scale_l") && err.contains("mechanism.scale_l = 0.005"),
+        "{err}"
+    );
+    assert!(!out.join("shaper").exists());
+    // At the scale suggested every sheet is drawn.
+    write("0.005");
+    let out = dir.join("at-0.005");
+    let (code, err) = run_limited("render", &[&scene], &out, &["--format", "svg"]);
+    assert_eq!(code, Some(0), "{err}");
+    for sheet in ["kinematics", "forces", "dynamics", "cam"] {
+        assert!(out.join(format!("shaper/{sheet}.svg")).is_file(), "{sheet}");
+    }
+}

@@ -93,3 +93,101 @@ fn a_variant_that_cannot_be_written_is_absent_and_every_failure_is_reported() {
     }
     assert!(out.join("answer-key.csv").is_dir() && !out.join("answer-key.pdf").exists());
 }
+
+/// `sh -c SCRIPT` in a mount namespace of its own (`unshare -m`), where a small tmpfs can be
+/// mounted and is gone with the namespace; `None` when this machine allows no such
+/// namespace or mount (then the injected failure above stands for a full disk).
+fn in_own_mounts(script: &str, args: &[&str]) -> Option<std::process::Output> {
+    let probe = std::process::Command::new("unshare")
+        .args(["-m", "sh", "-c", "mount -t tmpfs -o size=64k tmpfs /mnt"])
+        .output()
+        .ok()?;
+    if !probe.status.success() {
+        return None;
+    }
+    std::process::Command::new("unshare")
+        .args(["-m", "sh", "-c", script, "sh"])
+        .args(args)
+        .current_dir(crate::support::root())
+        .output()
+        .ok()
+}
+
+#[test]
+fn a_batch_on_a_full_disk_writes_each_variant_whole_or_not_at_all() {
+    let dir = scratch("batch-enospc");
+    let path = dir.join("grid.csv");
+    let variants: Vec<String> = (1..=8).map(|k| format!("v{k}")).collect();
+    let mut grid = String::from("variant,mechanism.crank.length\n");
+    for (k, n) in variants.iter().enumerate() {
+        grid += &format!("{n},{}\n", 60 + k);
+    }
+    std::fs::write(&path, grid).unwrap();
+    // Each variant is about 150 kB (its sheet and its task sheet): a disk of 400 kB holds
+    // two or three of the eight.
+    let disk = dir.join("disk");
+    std::fs::create_dir_all(&disk).unwrap();
+    let script = "mount -t tmpfs -o size=400k tmpfs \"$1\" || exit 99
+        sh -c 'ulimit -v 1500000 && exec \"$0\" \"$@\"' \"$2\" batch constructions/four-bar.toml \"$3\" --out \"$1/out\" --format svg
+        echo \"status $?\"
+        cd \"$1/out\" && find . -print";
+    let bin = env!("CARGO_BIN_EXE_tmm");
+    let (disk_s, path_s) = (disk.to_str().unwrap(), path.to_str().unwrap());
+    let Some(o) = in_own_mounts(script, &[disk_s, bin, path_s]) else {
+        eprintln!("no mount namespace here: a full disk is tested by the injected failure");
+        return;
+    };
+    let (out, err) = (
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    );
+    assert!(
+        !err.contains("panicked") && !err.contains("overflow"),
+        "{err}"
+    );
+    let status = out.lines().find_map(|l| l.strip_prefix("status "));
+    // Some variants are not written: 1, or 2 when the answer key cannot be either.
+    assert!(matches!(status, Some("1") | Some("2")), "{out}\n{err}");
+    let listed: Vec<&str> = out.lines().filter(|l| l.starts_with("./")).collect();
+    assert!(
+        !listed
+            .iter()
+            .any(|l| l.contains(".tmp-") || l.contains(".bak-")),
+        "a temporary left: {listed:?}"
+    );
+    // Each variant as a batch with room writes it, or nothing of it.
+    let roomy = dir.join("roomy");
+    let (code, err_roomy) = batch(&path, &roomy);
+    assert_eq!(code, Some(0), "{err_roomy}");
+    let (mut whole, mut absent) = (0, 0);
+    for n in &variants {
+        let prefix = format!("./{n}/");
+        let mut files: Vec<&str> = listed
+            .iter()
+            .filter_map(|l| l.strip_prefix(prefix.as_str()))
+            .collect();
+        files.sort_unstable();
+        if files.is_empty() {
+            // Absent, and its diagnosis names the disk.
+            let line = err
+                .lines()
+                .find(|l| l.contains(&format!("variant {n}:")))
+                .unwrap_or_else(|| panic!("{n} not reported: {err}"));
+            assert!(
+                line.contains("No space left on device")
+                    && line.contains("nothing of the variant written"),
+                "{line}"
+            );
+            absent += 1;
+        } else {
+            assert_eq!(files, names(&roomy.join(n)), "{n} half-written");
+            whole += 1;
+        }
+    }
+    eprintln!("full disk: {whole} variants whole, {absent} absent");
+    assert!(
+        whole >= 1 && absent >= 1,
+        "{whole} whole, {absent} absent: {listed:?}\n{err}"
+    );
+    assert!(err.contains(&format!("{absent} of 8 variants")), "{err}");
+}

@@ -419,8 +419,11 @@ fn random_slips_on_random_variants_are_found_as_made() {
     let mut tally = Tally::default();
     let mut values_written = 0;
     for (template_path, v) in &variants {
-        let scene =
-            scene::parse(&v.text, &template_path.with_file_name("v.toml")).expect("a variant");
+        let scene = scene::parse(
+            &v.text().expect("a variant's text"),
+            &template_path.with_file_name("v.toml"),
+        )
+        .expect("a variant");
         let auditor = Auditor::new(&scene).expect("its report");
         let session = tmm::study::Session::new(&scene, tmm::construct::Drafting::EXACT);
         let report = session.report().expect("its report");
