@@ -27,7 +27,7 @@ pub(super) fn preamble(w: &mut Writer<'_, '_>) {
         Lang::En => "en",
     };
     let meta = format!(
-        "#let meta = (title: {}, lang: {}, designation: {}, document: {}, author: {}, checked: {}, organisation: {}, changes: {}, people: {}, letter: {}, sheet: {}, sheets: {})",
+        "#let meta = (title: {}, lang: {}, designation: {}, document: {}, author: {}, checked: {}, organisation: {}, changes: {}, people: {}, letter: {}, sheet: {}, sheets: {}, figure: {}, table: {}, continued: {})",
         string(&t.title),
         string(lang),
         string(designation.trim()),
@@ -40,6 +40,9 @@ pub(super) fn preamble(w: &mut Writer<'_, '_>) {
         string(c.letter),
         string(c.sheet),
         string(c.sheets),
+        string(w.word(T::FigureWord)),
+        string(w.word(T::TableWord)),
+        string(w.word(T::TableContinued)),
     );
     w.doc.raw(&meta);
     w.doc.raw(include_str!("template.typ"));

@@ -98,6 +98,28 @@ pub(super) fn inline(math: &str) -> String {
     format!("${math}$")
 }
 
+/// The pieces of Typst math `math` between its `=` signs outside brackets and strings.
+fn top_level_equals(math: &str) -> Vec<&str> {
+    let (mut parts, mut depth, mut quoted, mut escaped, mut from) =
+        (Vec::new(), 0i32, false, false, 0);
+    for (i, c) in math.char_indices() {
+        match c {
+            _ if escaped => escaped = false,
+            '\\' if quoted => escaped = true,
+            '"' => quoted = !quoted,
+            '(' | '[' | '{' if !quoted => depth += 1,
+            ')' | ']' | '}' if !quoted => depth -= 1,
+            '=' if !quoted && depth == 0 => {
+                parts.push(math[from..i].trim());
+                from = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(math[from..].trim());
+    parts
+}
+
 /// One cell of a table: content (from [`text`], [`label`] or a formula `$…$`).
 pub(super) type Cell = String;
 
@@ -148,13 +170,24 @@ impl Markup {
         self.par(&[label(t)]);
     }
 
-    /// A displayed formula (Typst math, built with [`sym`], [`num`], [`unit`], [`frac`]).
+    /// A displayed formula (Typst math, built with [`sym`], [`num`], [`unit`], [`frac`]),
+    /// numbered. A chain `a = b = c …` also as two lines, `a = b` and `= c …`, which the
+    /// note's `formula` shows instead when the one line would not leave room for the number
+    /// (ГОСТ 2.105: a long formula broken after a sign, the sign repeated).
     pub(super) fn formula(&mut self, math: &str) {
-        self.out.push_str(&format!("$ {math} $\n\n"));
+        let parts = top_level_equals(math);
+        if parts.len() < 3 {
+            self.out.push_str(&format!("$ {math} $\n\n"));
+            return;
+        }
+        let (first, rest) = (parts[..2].join(" &= "), parts[2..].join(" = "));
+        self.out.push_str(&format!(
+            "#formula($ {math} $, $ {first} \\ &= {rest} $)\n\n"
+        ));
     }
 
-    /// A table under its caption (ГОСТ 2.105: «Таблица N — caption» above it, the header
-    /// repeated on each page).
+    /// A table under its caption (ГОСТ 2.105: «Таблица N — caption» above it; on each page
+    /// it continues onto, «Продолжение таблицы N» and the header repeated).
     pub(super) fn table(
         &mut self,
         caption: &str,
@@ -170,7 +203,7 @@ impl Markup {
             })
             .collect();
         let mut t = format!(
-            "#figure(kind: table, caption: {}, table(columns: {columns}, align: ({}), table.header(",
+            "#figure(kind: table, caption: {}, table(columns: {columns}, align: ({}), table.header(table.cell(colspan: {columns}, stroke: none, inset: 0pt, align: left, continued()), ",
             text(caption),
             aligns.join(", ") + if columns == 1 { "," } else { "" }
         );
@@ -236,6 +269,15 @@ pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_chain_splits_at_its_own_equals_signs_only() {
+        assert_eq!(
+            top_level_equals(r#"a = f(x = 1) = "b = c" = #qs[#"="] = 2"#),
+            ["a", "f(x = 1)", r#""b = c""#, r#"#qs[#"="]"#, "2"]
+        );
+        assert_eq!(top_level_equals("a + b"), ["a + b"]);
+    }
 
     #[test]
     fn strings_escape_quotes_and_backslashes() {

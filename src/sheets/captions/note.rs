@@ -12,6 +12,9 @@ catalogue! {
             "to the course project in the theory of mechanisms and machines"
         ),
         NoteCode => ("ПЗ", "ПЗ", "EN"),
+        FigureWord => ("Рисунок", "Рисунок", "Figure"),
+        TableWord => ("Таблица", "Таблиця", "Table"),
+        TableContinued => ("Продолжение таблицы", "Продовження таблиці", "Continuation of Table"),
         Student => ("Выполнил студент", "Виконав студент", "Student"),
         OfGroup => ("группы", "групи", "group"),
         Supervisor => ("Руководитель", "Керівник", "Supervisor"),
