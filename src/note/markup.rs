@@ -22,19 +22,79 @@ pub(super) fn string(text: &str) -> String {
     out
 }
 
-/// Plain text as content: `[#"text"]`.
+/// The character a Unicode subscript stands for (`₁` → `1`, `₋` → `−`), `None` for any
+/// other character: the note's face has no subscript glyphs, so `ω₁` is set as `ω` with a
+/// subscript `1`, in the note's own face.
+fn subscript_of(c: char) -> Option<char> {
+    const LETTERS: [(char, char); 13] = [
+        ('ₐ', 'a'),
+        ('ₑ', 'e'),
+        ('ₒ', 'o'),
+        ('ₓ', 'x'),
+        ('ₕ', 'h'),
+        ('ₖ', 'k'),
+        ('ₗ', 'l'),
+        ('ₘ', 'm'),
+        ('ₙ', 'n'),
+        ('ₚ', 'p'),
+        ('ₛ', 's'),
+        ('ₜ', 't'),
+        ('ᵢ', 'i'),
+    ];
+    match c {
+        '₀'..='₉' => char::from_digit(c as u32 - '₀' as u32, 10),
+        '₊' => Some('+'),
+        '₋' => Some('−'),
+        '₌' => Some('='),
+        '₍' => Some('('),
+        '₎' => Some(')'),
+        _ => LETTERS.iter().find(|(s, _)| *s == c).map(|&(_, l)| l),
+    }
+}
+
+/// `text` as content pieces: `#"…"` for its runs of plain characters, `#sub("…")` for its
+/// runs of Unicode subscripts.
+fn pieces(text: &str, out: &mut String) {
+    let mut run = String::new();
+    let mut sub = false;
+    let flush = |run: &mut String, sub: bool, out: &mut String| {
+        if !run.is_empty() {
+            let s = string(run);
+            out.push_str(&if sub {
+                format!("#sub({s})")
+            } else {
+                format!("#{s}")
+            });
+            run.clear();
+        }
+    };
+    for c in text.chars() {
+        let (ch, is_sub) = subscript_of(c).map_or((c, false), |d| (d, true));
+        if is_sub != sub {
+            flush(&mut run, sub, out);
+            sub = is_sub;
+        }
+        run.push(ch);
+    }
+    flush(&mut run, sub, out);
+}
+
+/// Plain text as content: `[#"text"]` (its Unicode subscripts set as subscripts).
 pub(super) fn text(text: &str) -> String {
-    format!("[#{}]", string(text))
+    let mut out = String::from("[");
+    pieces(text, &mut out);
+    out.push(']');
+    out
 }
 
 /// Label markup (`V_{B3B1}`, `μ_{v} = 0,05 м/(с·мм)`, `R_{0-5}`) as content, its subscripts
-/// and superscripts set as such: `[#"V"#sub("B3B1")]`.
+/// and superscripts set as such: `[#"V"#sub("B3B1")]` (and its Unicode subscripts: `ω₁`).
 pub(super) fn label(markup: &str) -> String {
     let mut out = String::from("[");
     for run in parse(markup) {
         let s = string(&run.text);
         match run.script {
-            Script::Normal => out.push_str(&format!("#{s}")),
+            Script::Normal => pieces(&run.text, &mut out),
             Script::Sub => out.push_str(&format!("#sub({s})")),
             Script::Sup => out.push_str(&format!("#super({s})")),
         }
@@ -44,13 +104,25 @@ pub(super) fn label(markup: &str) -> String {
 }
 
 /// A quantity's symbol in a formula: the label markup set in the text face, italic
-/// (`#qs[...]`, defined by the note's template).
+/// (`#qs[...]`, defined by the note's template), a descriptive index written in Cyrillic
+/// (`b_{ст}`, `M_{пр}`) upright (`#qu[...]`), as ГОСТ 2.105 writes word indices.
 pub(super) fn sym(markup: &str) -> String {
     // The indices as the formula's own attachments: a text index inside a formula keeps its
     // digits full size.
     let mut out = String::new();
     for run in parse(markup) {
-        let s = format!("#qs[#{}]", string(&run.text));
+        let face = match run.script {
+            Script::Normal => "qs",
+            _ if run
+                .text
+                .chars()
+                .any(|c| matches!(c, 'а'..='я' | 'А'..='Я' | 'і' | 'ї' | 'є' | 'ґ')) =>
+            {
+                "qu"
+            }
+            _ => "qs",
+        };
+        let s = format!("#{face}[#{}]", string(&run.text));
         match run.script {
             Script::Normal if out.is_empty() => out.push_str(&s),
             Script::Normal => out.push_str(&format!(" {s}")),
@@ -96,6 +168,21 @@ pub(super) fn frac(top: &str, bottom: &str) -> String {
 /// An inline formula, a piece of a paragraph or a cell.
 pub(super) fn inline(math: &str) -> String {
     format!("${math}$")
+}
+
+/// A table's header cell with its first letter capital (ГОСТ 2.105), when it starts with
+/// text (`[#"величина"]` → `[#"Величина"]`); a formula or a symbol as it is.
+fn capitalised(cell: &str) -> String {
+    let Some(rest) = cell.strip_prefix("[#\"") else {
+        return cell.to_string();
+    };
+    let mut chars = rest.chars();
+    match chars.next() {
+        Some(c) if c.is_lowercase() && rest.chars().nth(1).is_some_and(char::is_alphabetic) => {
+            format!("[#\"{}{}", c.to_uppercase(), chars.as_str())
+        }
+        _ => cell.to_string(),
+    }
 }
 
 /// The pieces of Typst math `math` between its `=` signs outside brackets and strings.
@@ -207,6 +294,7 @@ impl Markup {
             text(caption),
             aligns.join(", ") + if columns == 1 { "," } else { "" }
         );
+        let header: Vec<String> = header.iter().map(|h| capitalised(h)).collect();
         t.push_str(&header.join(", "));
         t.push_str("),\n");
         for row in rows {
@@ -244,10 +332,17 @@ pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
     let mut out = String::with_capacity(source.len());
     let mut rest = source;
     loop {
-        let next = ["#sub(\"", "#super(\"", "_(#qs[#\"", "^(#qs[#\""]
-            .iter()
-            .filter_map(|open| rest.find(open).map(|i| (i, open.len())))
-            .min();
+        let next = [
+            "#sub(\"",
+            "#super(\"",
+            "_(#qs[#\"",
+            "^(#qs[#\"",
+            "_(#qu[#\"",
+            "^(#qu[#\"",
+        ]
+        .iter()
+        .filter_map(|open| rest.find(open).map(|i| (i, open.len())))
+        .min();
         let Some((at, open)) = next else {
             out.push_str(rest);
             return out;
@@ -271,12 +366,46 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_chain_of_equalities_may_break_after_its_first_sign() {
+        let mut m = Markup::default();
+        m.formula("a = b");
+        m.formula("a = b + c = 2");
+        assert_eq!(
+            m.finish(),
+            "$ a = b $\n\n#formula($ a = b + c = 2 $, $ a &= b + c \\ &= 2 $)\n\n"
+        );
+    }
+
+    #[test]
     fn a_chain_splits_at_its_own_equals_signs_only() {
         assert_eq!(
             top_level_equals(r#"a = f(x = 1) = "b = c" = #qs[#"="] = 2"#),
             ["a", "f(x = 1)", r#""b = c""#, r#"#qs[#"="]"#, "2"]
         );
         assert_eq!(top_level_equals("a + b"), ["a + b"]);
+    }
+
+    #[test]
+    fn unicode_subscripts_are_set_as_subscripts_in_the_notes_face() {
+        assert_eq!(text("ω₁ = const"), r##"[#"ω"#sub("1")#" = const"]"##);
+        assert_eq!(
+            label("R₄₋₃ и M_{пр}"),
+            r##"[#"R"#sub("4−3")#" и M"#sub("пр")]"##
+        );
+        assert_eq!(sym("b_{ст}"), r##"#qs[#"b"]_(#qu[#"ст"])"##);
+        assert_eq!(
+            localise_scripts(&sym("M_{пр}"), Lang::En),
+            r##"#qs[#"M"]_(#qu[#"red"])"##
+        );
+    }
+
+    #[test]
+    fn a_header_starts_with_a_capital_letter() {
+        assert_eq!(capitalised(r#"[#"величина"]"#), r#"[#"Величина"]"#);
+        assert_eq!(capitalised(r#"[#"ед."]"#), r#"[#"Ед."]"#);
+        // A symbol of one letter, a formula: as they are.
+        assert_eq!(capitalised(r##"[#"x"#sub("1")]"##), r##"[#"x"#sub("1")]"##);
+        assert_eq!(capitalised("$a$"), "$a$");
     }
 
     #[test]
@@ -294,7 +423,7 @@ mod tests {
         assert_eq!(localise_scripts(&src, Lang::Ru), src);
         assert_eq!(
             localise_scripts(&sym("M_{пс}^{тр}"), Lang::En),
-            r##"#qs[#"M"]_(#qs[#"r"])^(#qs[#"f"])"##
+            r##"#qs[#"M"]_(#qu[#"r"])^(#qu[#"f"])"##
         );
     }
 

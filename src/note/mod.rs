@@ -22,6 +22,8 @@ mod rows;
 mod train;
 mod typeset;
 
+pub use typeset::PAGE_BREAK;
+
 use crate::check::Report;
 use crate::plate::{self, Plate};
 use crate::scale::Lang;
@@ -259,8 +261,8 @@ pub fn to_pdf(note: &Note) -> Result<Vec<u8>, NoteError> {
 }
 
 /// The text the typeset note shows, page by page in the order it is laid out, each run of
-/// text (a line's stretch in one font) followed by a space: what a reader finds by searching
-/// the PDF.
+/// text (a line's stretch in one font) followed by a space and each page by a form feed
+/// ([`PAGE_BREAK`]): what a reader finds by searching the PDF.
 ///
 /// # Errors
 /// [`NoteError::Typeset`] when the typesetter refuses the source.

@@ -122,8 +122,11 @@ pub(super) fn pdf(source: &str, files: &[(String, Vec<u8>)]) -> Result<Vec<u8>, 
         .map_err(|errors| NoteError::Typeset(diagnostics(&world, &errors)))
 }
 
+/// What ends each page's text in [`text`]: a form feed.
+pub const PAGE_BREAK: char = '\u{c}';
+
 /// The text the pages of a Typst `source` show, in the order it is laid out: each run of
-/// text (a line's stretch in one font) followed by a space.
+/// text (a line's stretch in one font) followed by a space, each page by [`PAGE_BREAK`].
 ///
 /// # Errors
 /// As [`pdf`].
@@ -144,6 +147,7 @@ pub(super) fn text(source: &str, files: &[(String, Vec<u8>)]) -> Result<String, 
     let mut out = String::new();
     for page in document.pages() {
         runs(&page.frame, &mut out);
+        out.push(PAGE_BREAK);
     }
     Ok(out)
 }

@@ -1,0 +1,119 @@
+//! Issue 44 §2: the ГОСТ 2.105 form of every note, read off its typeset text (page by page,
+//! `tmm::note::PAGE_BREAK` between): formulas numbered within their section in sequence,
+//! «Рисунок N —» and «Таблица N —» captions numbered through the note, never «Рис.», and a
+//! table that runs onto the next page continued under «Продолжение таблицы N».
+
+use crate::support;
+use tmm::{Drafting, Lang, Session};
+
+/// The typeset text of the note of the scene at `path` in `lang`, page by page, each page's
+/// runs of white space made single spaces.
+fn pages(path: &std::path::Path, lang: Lang) -> Vec<String> {
+    let scene = tmm::load(path).expect("scene");
+    let session = Session::new(&scene, Drafting::EXACT);
+    let note = tmm::note::compose(&session, lang).expect("note");
+    let text = tmm::note::to_text(&note).expect("typeset");
+    text.split(tmm::note::PAGE_BREAK)
+        .map(|p| p.split_whitespace().collect::<Vec<_>>().join(" "))
+        .collect()
+}
+
+/// Every `(S.K)` of `text` in order, as (S, K).
+fn formula_numbers(text: &str) -> Vec<(u32, u32)> {
+    let mut out = Vec::new();
+    for (i, _) in text.match_indices('(') {
+        let rest = &text[i + 1..];
+        let Some(end) = rest.find(')') else { continue };
+        if let Some((s, k)) = rest[..end].split_once('.') {
+            if let (Ok(s), Ok(k)) = (s.parse(), k.parse()) {
+                out.push((s, k));
+            }
+        }
+    }
+    out
+}
+
+/// The numbers N of every `<word> N —` of `text`, in order.
+fn captions(text: &str, word: &str) -> Vec<u32> {
+    text.match_indices(&format!("{word} "))
+        .filter_map(|(i, m)| {
+            let rest = &text[i + m.len()..];
+            let (n, after) = rest.split_once(' ')?;
+            after.starts_with('—').then(|| n.parse().ok()).flatten()
+        })
+        .collect()
+}
+
+/// The numbers N of every `<word> N` of `text` (a continued table), in order.
+fn continued(text: &str, word: &str) -> Vec<u32> {
+    text.match_indices(&format!("{word} "))
+        .filter_map(|(i, m)| {
+            let digits: String = text[i + m.len()..]
+                .chars()
+                .take_while(char::is_ascii_digit)
+                .collect();
+            digits.parse().ok()
+        })
+        .collect()
+}
+
+/// The form of one note; its continued tables.
+fn check(name: &str, pages: &[String], lang: Lang) -> usize {
+    let (figure, table, cont) = match lang {
+        Lang::Uk => ("Рисунок", "Таблиця", "Продовження таблиці"),
+        _ => ("Рисунок", "Таблица", "Продолжение таблицы"),
+    };
+    let whole = pages.join(" ");
+    // Formulas: (S.1), (S.2), … within each section, the sections in order.
+    let numbers = formula_numbers(&whole);
+    let mut last = (0, 0);
+    for &(s, k) in &numbers {
+        let next = if s == last.0 { (s, last.1 + 1) } else { (s, 1) };
+        assert!(
+            s >= last.0 && (s, k) == next,
+            "{name}: formula ({s}.{k}) after ({}.{})",
+            last.0,
+            last.1
+        );
+        last = (s, k);
+    }
+    // Captions numbered through the note, the textbook's words.
+    for word in [figure, table] {
+        let n = captions(&whole, word);
+        assert_eq!(
+            n,
+            (1..=n.len() as u32).collect::<Vec<_>>(),
+            "{name}: {word}"
+        );
+    }
+    assert!(!whole.contains("Рис. "), "{name}: «Рис.»");
+    // Each continuation names the table running on from the page before, which is the last
+    // table captioned so far; a page beginning under the running table says so.
+    let mut running = 0;
+    let mut count = 0;
+    for (k, page) in pages.iter().enumerate() {
+        for n in continued(page, cont) {
+            assert_eq!(n, running, "{name}: page {}: {cont} {n}", k + 1);
+            count += 1;
+        }
+        running = captions(page, table).last().copied().unwrap_or(running);
+    }
+    count
+}
+
+#[test]
+fn every_note_keeps_the_form_of_gost_2_105() {
+    let mut continued_tables = 0;
+    for path in support::scene_paths() {
+        let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+        continued_tables += check(&name, &pages(&path, Lang::Ru), Lang::Ru);
+    }
+    let shaper = support::root().join("constructions/shaper.toml");
+    let uk = check("shaper (uk)", &pages(&shaper, Lang::Uk), Lang::Uk);
+    // The shaper's long tables (the data, the plans' tables, the errors) run on.
+    assert!(
+        uk >= 5,
+        "{uk} continued tables in the Ukrainian shaper note"
+    );
+    assert!(continued_tables >= 10, "{continued_tables}");
+}
