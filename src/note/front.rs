@@ -116,7 +116,10 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         for (n, case) in scene.friction.iter().enumerate() {
             let name = crate::sheets::friction::case_name(&case.kind, w.lang);
             let case_word = w.word(crate::sheets::captions::FrictionText::Case);
-            w.doc.raw(&format!("- #{}", text(&format!("{case_word} {}: {name}.", n + 1))));
+            w.doc.raw(&format!(
+                "- #{}",
+                text(&format!("{case_word} {}: {name}.", n + 1))
+            ));
         }
         w.doc.raw("");
     }
@@ -324,13 +327,16 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                         w.word(T::PositionShort),
                         s.position
                     ),
-                    format!("{} {}", fmt(s.printed_value, 4, lang), unit_of(s.printed_unit)),
+                    format!(
+                        "{} {}",
+                        fmt(s.printed_value, 4, lang),
+                        unit_of(s.printed_unit)
+                    ),
                     format!("{} {unit}", fmt(r.analytic.abs(), 4, lang)),
                     Some((s.value - r.analytic.abs()) / r.analytic.abs()),
-                    s.why.as_ref().map_or_else(
-                        || text(w.word(T::SeedNoReason)),
-                        |why| label(why.get(lang)),
-                    ),
+                    s.why
+                        .as_ref()
+                        .map_or_else(|| text(w.word(T::SeedNoReason)), |why| label(why.get(lang))),
                 );
             }
         }

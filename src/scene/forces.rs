@@ -3,9 +3,9 @@
 //! checked with its key path and converted to SI.
 
 use super::check::{item, join, number, quoted, Checker};
-use super::model::Localised;
 use super::keys::Key;
 use super::kinematics::{point, point_names, position_labels};
+use super::model::Localised;
 use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance, RawSeedValue};
 use crate::check::Method;
 use crate::forces::{carrier, PairFriction};
