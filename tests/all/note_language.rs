@@ -96,3 +96,32 @@ fn every_note_in_russian_and_ukrainian_is_written_in_its_language() {
         found.join("\n")
     );
 }
+
+/// The shaper's table of the seed's values not reproduced gives each reason in the note's
+/// language, its printed value in the note's units (кгс, not kgf).
+#[test]
+fn the_seeds_errata_are_explained_in_the_notes_language() {
+    let path = support::root().join("constructions/shaper.toml");
+    let scene = tmm::load(&path).expect("shaper");
+    let session = Session::new(&scene, Drafting::EXACT);
+    for (lang, words) in [
+        (
+            Lang::Ru,
+            ["вычисленабезмассы", "порычагуЖуковского", "112кгс"],
+        ),
+        (
+            Lang::Uk,
+            ["обчисленобезмаси", "заважелемЖуковського", "112кгс"],
+        ),
+        (Lang::En, ["withoutthemass", "byZhukovsky'slever", "112kgf"]),
+    ] {
+        let note = tmm::note::compose(&session, lang).expect("note");
+        let text: String = tmm::note::to_text(&note)
+            .expect("typeset")
+            .split_whitespace()
+            .collect();
+        for w in words {
+            assert!(text.contains(w), "{lang:?}: {w}");
+        }
+    }
+}
