@@ -175,8 +175,15 @@ pub struct SeedValue {
     pub value: f64,
     /// The value as the seed prints it (`112 kgf`).
     pub printed: String,
+    /// The number the seed prints, in its unit.
+    pub printed_value: f64,
+    /// The unit the seed prints it in (`kgf`, `mm`).
+    pub printed_unit: &'static str,
     /// Where the seed prints it and what is wrong with it.
     pub source: String,
+    /// What is wrong with it, in each language of the note (`None`: the note says only
+    /// that the value is not reproduced).
+    pub why: Option<crate::scene::Localised>,
 }
 
 /// The indicator diagram of one cylinder.

@@ -113,6 +113,19 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         let caption = w.word(T::GearsData);
         table_of_data(w, caption, &gears_data(g, w.lang));
     }
+    // The friction's cases, each as its sheet names it.
+    if !scene.friction.is_empty() {
+        w.doc.say(w.word(T::FrictionTask));
+        for (n, case) in scene.friction.iter().enumerate() {
+            let name = crate::sheets::friction::case_name(&case.kind, w.lang);
+            let case_word = w.word(crate::sheets::captions::FrictionText::Case);
+            w.doc.raw(&format!(
+                "- #{}",
+                text(&format!("{case_word} {}: {name}.", n + 1))
+            ));
+        }
+        w.doc.raw("");
+    }
     // The data of the other studies as their sheets print them, inputs only.
     for (kind, title) in [
         (PlateKind::Dynamics, T::Dynamics),
@@ -224,7 +237,7 @@ pub(super) fn conclusions(w: &mut Writer<'_, '_>) {
             .rows
             .iter()
             .find(|r| r.quantity() == q)
-            .map(|r| quantity(r.key.symbol, &r.key.subject, lang))
+            .map(|r| super::rows::symbol(w, r))
             .unwrap_or_else(|| q.to_string())
     };
     let rows: Vec<Vec<String>> = summary
@@ -288,6 +301,8 @@ fn seed_values(w: &mut Writer<'_, '_>) {
     let lang = w.lang;
     let scene = w.session.scene();
     let mut rows: Vec<Vec<String>> = Vec::new();
+    // A unit after a number in a cell, its power a superscript: `кг·м²`.
+    let unit_of = |u: &str| unit_in(u, lang).replace("^2", "²");
     // The reason as content: plain text, or label markup with its scripts.
     let mut add =
         |symbol: String, printed: String, exact: String, off: Option<f64>, why: String| {
@@ -315,10 +330,16 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                         w.word(T::PositionShort),
                         s.position
                     ),
-                    s.printed.clone(),
+                    format!(
+                        "{} {}",
+                        fmt(s.printed_value, 4, lang),
+                        unit_of(s.printed_unit)
+                    ),
                     format!("{} {unit}", fmt(r.analytic.abs(), 4, lang)),
                     Some((s.value - r.analytic.abs()) / r.analytic.abs()),
-                    text(&s.source),
+                    s.why
+                        .as_ref()
+                        .map_or_else(|| text(w.word(T::SeedNoReason)), |why| label(why.get(lang))),
                 );
             }
         }
@@ -337,8 +358,8 @@ fn seed_values(w: &mut Writer<'_, '_>) {
         ) {
             add(
                 "J_{м}".into(),
-                format!("{} kg·m²", fmt(seed, 4, lang)),
-                format!("{} kg·m²", fmt(exact, 5, lang)),
+                format!("{} {}", fmt(seed, 4, lang), unit_of("kg*m^2")),
+                format!("{} {}", fmt(exact, 5, lang), unit_of("kg*m^2")),
                 Some((seed - exact) / exact),
                 text(w.word(T::SeedFlywheel)),
             );
@@ -354,7 +375,7 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 fmt(seed, 3, lang),
                 fmt(exact, 5, lang),
                 Some((seed - exact) / exact),
-                text(w.word(T::SeedContactRatio)),
+                label(w.word(T::SeedContactRatio)),
             );
         }
     }
@@ -372,10 +393,10 @@ fn seed_values(w: &mut Writer<'_, '_>) {
         ) {
             add(
                 "r_{min}".into(),
-                format!("{} mm", mm(seed, lang)),
-                format!("{} mm", mm(exact, lang)),
+                format!("{} {}", mm(seed, lang), unit_of("mm")),
+                format!("{} {}", mm(exact, lang), unit_of("mm")),
                 Some((seed - exact) / exact),
-                text(w.word(T::SeedMinRadius)),
+                label(w.word(T::SeedMinRadius)),
             );
         }
     }

@@ -53,16 +53,27 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             && matches!(r.method, Method::Formula | Method::Meshing)
             && of_pair(r)
     });
-    let q = quantities(&w.report.rows, |r| r.key.symbol == Symbol::SpecificSliding);
+    // The values at the points of the blocking contour: a table of their own.
+    let blocking = study
+        .blocking
+        .as_ref()
+        .map(|b| b.rows())
+        .unwrap_or_default();
+    let on_contour = |r: &crate::check::Row| blocking.iter().any(|b| b.key == r.key);
+    let q = quantities(&w.report.rows, |r| {
+        r.key.symbol == Symbol::SpecificSliding && !on_contour(r)
+    });
     let caption = w.word(T::SlidingTable);
     by_position(w, caption, &q);
+    let caption = w.word(T::BlockingTable);
+    of_scene(w, caption, on_contour);
     for (name, g) in &study.racks {
         rack_form(w, name, g);
     }
     let caption = w.word(T::RackTable);
     // A rack-cut wheel's x_min (formula) beside what its envelope gives.
     of_scene(w, caption, |r| {
-        r.method == Method::Envelope || r.key.symbol == Symbol::ShiftCoefficient
+        (r.method == Method::Envelope || r.key.symbol == Symbol::ShiftCoefficient) && !on_contour(r)
     });
     if let Some(train) = &study.train {
         super::train::train_worked(w, train);

@@ -12,6 +12,7 @@ use crate::linkage::{DyadKind, GroupInfo, OutputCoord, Structure};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::sheets::captions::{quantity, subscripted, unit_in, NoteText as T, Text as S};
+use crate::sheets::data::plain;
 
 /// The structural analysis.
 pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
@@ -47,7 +48,7 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             .filter(|p| p.redundant)
             .map(|p| p.name.clone())
             .collect();
-        w.doc.par(&[text(&format!(
+        w.doc.par(&[label(&format!(
             "{} {}:",
             w.word(T::WithRedundantPairs),
             names.join(", ")
@@ -65,7 +66,7 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let mut rows = vec![vec![
         text(&format!("I (0, {})", s.crank_link)),
         text(w.word(S::DrivingLink)),
-        text(&s.pairs[0].name),
+        label(&s.pairs[0].name),
         text("W = 3·1 − 2·1 = 1"),
     ]];
     for g in &s.groups {
@@ -99,7 +100,7 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         rows.push(vec![
             text(&format!("II ({}, {})", g.links[0], g.links[1])),
             text(&kind),
-            text(&pairs.join("; ")),
+            label(&pairs.join("; ")),
             text("W = 3·2 − 2·3 = 0"),
         ]);
     }
@@ -120,7 +121,7 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 
 /// A point of link `link` as the plans name it: `B_{3}`; a point of one link keeps its name.
 fn on(name: &str, link: u32, shared: bool) -> String {
-    let plain = name.replace(['_', '{', '}'], "");
+    let plain = plain(name);
     if shared {
         format!("{}_{{{}{link}}}", &plain[..1], &plain[1..])
     } else {
@@ -152,7 +153,6 @@ struct Equation {
 
 impl Equation {
     fn new(point: &str, reference: &str, line: String, relative: Relative) -> Self {
-        let plain = |x: &str| x.replace(['_', '{', '}'], "");
         Self {
             point: plain(point),
             reference: plain(reference),
@@ -371,7 +371,9 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     // The plan of positions.
     w.heading(2, S::PlanOfPositions);
     let l = sc.l.value();
-    let crank = format!("l_{{{}{}}}", m.crank.centre, m.crank.pin);
+    // The points' names inside the length's subscript without their own markup: l_{O1A}.
+    let (centre, pin) = (plain(&m.crank.centre), plain(&m.crank.pin));
+    let crank = format!("l_{{{centre}{pin}}}");
     w.doc.par(&[text(w.word(T::LengthScale))]);
     w.doc.formula(&format!(
         "{} = {} = {} = {}{}",
@@ -732,7 +734,7 @@ fn coriolis(w: &mut Writer<'_, '_>, p: &str, s: &Structure) -> Result<(), NoteEr
             continue;
         }
         let [_, j] = g.links;
-        let a = g.pairs[0].name.replace(['_', '{', '}'], "");
+        let a = plain(&g.pairs[0].name);
         let own = g.pairs[0].links[0];
         let subject = format!("{a}{j}_{a}{own}");
         let (Some(omega), Some(v)) = (

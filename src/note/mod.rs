@@ -34,6 +34,36 @@ use crate::study::{Session, StudyError};
 use markup::Markup;
 use thiserror::Error;
 
+/// The Latin words of two letters or more a Russian or Ukrainian note may show: the
+/// functions and operators of its formulas (`sin`, `arccos`, `inv α`, `const`, the
+/// extremes' indices `max`, `min`) and the analogue's differential `dS` (`dS/dφ`). Its
+/// units are Cyrillic (`мм`, `Н·м`); any other Latin word is a leak of English or of a
+/// program's identifier ([`latin_allowed`]).
+pub const LATIN_WORDS: &[&str] = &[
+    "sin", "cos", "tg", "ctg", "arcsin", "arccos", "arctg", "inv", "max", "min", "const", "dS",
+];
+
+/// Whether a Russian or Ukrainian note may show the Latin `word` (a run of Latin letters
+/// between non-letters): one of [`LATIN_WORDS`]; a designation of points, in capitals (a
+/// link `AB`, a relative velocity's subscript `BA`, a plane `II`); or a segment of a plan,
+/// two small letters from the pole `p` (`pb`, `ps`) or between two of the points `a` … `e`
+/// (`ab`, `ce`), or Wittenbauer's `kl`. A single letter is a symbol.
+pub fn latin_allowed(word: &str) -> bool {
+    let letters = word.chars().count();
+    if letters < 2 || LATIN_WORDS.contains(&word) || word == "kl" {
+        return true;
+    }
+    if word.chars().all(|c| c.is_ascii_uppercase()) {
+        return letters <= 4;
+    }
+    let points = |c: char| ('a'..='e').contains(&c);
+    match word.chars().collect::<Vec<_>>()[..] {
+        ['p', b] => points(b) || "ks".contains(b),
+        [a, b] => a != b && points(a) && points(b),
+        _ => false,
+    }
+}
+
 /// A note ready to typeset: its Typst source and the files it reads (the figures).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Note {

@@ -39,10 +39,26 @@ pub(super) fn quantities(rows: &[Row], keep: impl Fn(&Row) -> bool) -> Vec<(Stri
     out
 }
 
+/// A row's quantity in label markup as the sheets name it: the textbook's symbol
+/// (`V_{B3}`, `F_{и3}`); a value of a friction case by its symbol on the friction sheet and
+/// the case's number (`P (случай 1)`).
+pub(super) fn symbol(w: &Writer<'_, '_>, r: &Row) -> String {
+    if !w.session.scene().friction.is_empty() {
+        if let Ok(solved) = w.session.friction() {
+            for (n, s) in solved.iter().enumerate() {
+                if let Some(x) = s.readings.iter().find(|x| x.row.key.same_quantity(&r.key)) {
+                    return format!("{} ({} {})", x.symbol, w.word(S::Case), n + 1);
+                }
+            }
+        }
+    }
+    quantity(r.key.symbol, &r.key.subject, w.lang)
+}
+
 /// A quantity's symbol and unit as a column head: `V_{B3}, м/с`.
 pub(super) fn head(w: &Writer<'_, '_>, r: &Row) -> String {
     let unit = unit_in(r.unit(), w.lang);
-    let symbol = quantity(r.key.symbol, &r.key.subject, w.lang);
+    let symbol = symbol(w, r);
     if unit.is_empty() || unit == "1" {
         symbol
     } else {

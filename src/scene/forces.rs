@@ -5,6 +5,7 @@
 use super::check::{item, join, number, quoted, Checker};
 use super::keys::Key;
 use super::kinematics::{point, point_names, position_labels};
+use super::model::Localised;
 use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance, RawSeedValue};
 use crate::check::Method;
 use crate::forces::{carrier, PairFriction};
@@ -155,7 +156,7 @@ fn seed_value(
     let k = |s: &str| join(base, s);
     const QUANTITY: &str = "a row of the force analysis (R_1_2, F_bal, M_bal, h_0_5, F_in2)";
     let quantity = check.required(&k("quantity"), raw.quantity.clone(), QUANTITY)?;
-    let units: &[(&str, f64)] = match quantity.split('_').next() {
+    let units: &[(&'static str, f64)] = match quantity.split('_').next() {
         Some("R" | "F") => &[("N", 1.0), ("kgf", KGF)],
         Some("M") => &[("N*m", 1.0), ("kgf*m", KGF)],
         Some("h") => &[("m", 1.0), ("mm", 1e-3)],
@@ -194,13 +195,32 @@ fn seed_value(
     let (unit, factor) = check.word(&k("unit"), raw.unit.as_ref(), &table)?;
     let value = check.in_range(&k("value"), value.abs(), MAX_LOAD, "a finite value, not 0");
     let source = check.required(&k("source"), raw.source.clone(), "where the seed prints it")?;
+    let why = match &raw.why {
+        None => None,
+        Some(w) => {
+            const WHY: &str = "what is wrong with the value, in this language";
+            let mut text = |lang: &str, t: &Option<String>| {
+                check.required(&join(&k("why"), lang), t.clone(), WHY)
+            };
+            let (ru, uk, en) = (text("ru", &w.ru), text("uk", &w.uk), text("en", &w.en));
+            Some(Localised {
+                ru: ru?,
+                uk: uk?,
+                en: en?,
+            })
+        }
+    };
+    let printed_value = raw.value.unwrap_or(value);
     Some(SeedValue {
         quantity,
         position: position?,
         method,
         value: value * factor,
-        printed: format!("{} {unit}", number(raw.value.unwrap_or(value))),
+        printed: format!("{} {unit}", number(printed_value)),
+        printed_value,
+        printed_unit: unit,
         source,
+        why,
     })
 }
 

@@ -31,7 +31,7 @@ pub(crate) use drawing::DRAWN_MM;
 pub use error::{Problem, SceneError};
 pub use keys::Key;
 pub use load::{files_in, load, parse, read};
-pub use model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
+pub use model::{AnswerItem, Localised, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 
 #[cfg(test)]
 mod tests;

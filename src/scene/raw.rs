@@ -329,6 +329,16 @@ pub(crate) struct RawSeedValue {
     pub value: Option<f64>,
     pub unit: Option<String>,
     pub source: Option<String>,
+    pub why: Option<RawLocalised>,
+}
+
+/// A text in each language: `{ ru = "…", uk = "…", en = "…" }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawLocalised {
+    pub ru: Option<String>,
+    pub uk: Option<String>,
+    pub en: Option<String>,
 }
 
 /// `[forces.friction]`: friction in the mechanism's pairs.

@@ -140,6 +140,6 @@ fn link_origin(m: &Mechanism, link: u32) -> Option<String> {
 }
 
 /// A point's name without its markup (`S_3` → `S3`).
-fn plain(name: &str) -> String {
+pub(crate) fn plain(name: &str) -> String {
     name.replace(['_', '{', '}'], "")
 }

@@ -52,6 +52,11 @@ fn what(kind: &CaseKind, d: DrawingKind, lang: Lang) -> String {
     }
 }
 
+/// A case in words, as its scheme's caption names it (`наклонная плоскость, подъём`).
+pub(crate) fn case_name(kind: &CaseKind, lang: Lang) -> String {
+    what(kind, DrawingKind::Scheme, lang)
+}
+
 /// `μ_{x} = v unit` for a named μ.
 fn mu(name: &str, value: f64, q: Quantity, lang: Lang) -> String {
     format!(

@@ -98,7 +98,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             let f = |x: f64| format_sig(x, 4, lang);
             for (tag, ix) in b.points() {
                 let name = crate::gears::blocking::point_label(tag);
-                let head = if tag == "bz" {
+                let head = if tag == crate::gears::blocking::POINT_TAGS[0] {
                     format!("{}, {name}", GearText::Blocking.get(lang))
                 } else {
                     name.to_string()

@@ -11,7 +11,7 @@ pub use answer_key::{answer_key, table_sheet, KeyLine};
 pub use task::task_sheet;
 mod dynamics;
 mod forces;
-mod friction;
+pub(crate) mod friction;
 mod gears;
 mod layout;
 pub(crate) use kinematics::verdict_lines;

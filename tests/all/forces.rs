@@ -376,8 +376,8 @@ fn the_seeds_errors_are_flagged_and_not_reproduced() {
     assert!((analytic("F_in2") - 2.0 * w1 * w1 * 0.14).abs() < 1e-9);
 }
 
-/// A `[[forces.seed]]` of an unknown kind of quantity, at a position not analysed or with a
-/// unit of another dimension is refused with its key.
+/// A `[[forces.seed]]` of an unknown kind of quantity, at a position not analysed, with a
+/// unit of another dimension or with its reason missing in a language is refused with its key.
 #[test]
 fn bad_seed_values_name_the_key() {
     refused_with_keys(
@@ -400,6 +400,12 @@ fn bad_seed_values_name_the_key() {
                 "forces.seed[3].unit",
             ),
             ("value = 0.238", "value = nan", "forces.seed[4].value"),
+            // A reason given in some of the note's languages and not in all.
+            (
+                "why.uk = \"плече h реакції",
+                "# why.uk = \"плече h реакції",
+                "forces.seed[4].why.uk",
+            ),
         ],
     );
 }

@@ -40,6 +40,7 @@ mod messages;
 mod mutations;
 mod note;
 mod note_form;
+mod note_language;
 mod output;
 mod plan_lines;
 mod plate_demo;

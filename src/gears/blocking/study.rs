@@ -115,7 +115,7 @@ impl Study {
 
     /// The points the rows and the sheet name: the scene's and each choice's, with a tag.
     pub fn points(&self) -> Vec<(&'static str, Indices)> {
-        let mut out = vec![("bz", self.placed.indices)];
+        let mut out = vec![(POINT_TAGS[0], self.placed.indices)];
         for (c, r) in &self.choices {
             if let Ok(ch) = r {
                 out.push((criterion_tag(*c), ch.indices));
@@ -292,6 +292,10 @@ impl Study {
     }
 }
 
+/// The tags of the points of [`Study::points`] in row subjects: the scene's point and each
+/// criterion's ([`criterion_tag`]).
+pub const POINT_TAGS: [&str; 4] = ["bz", "beps", "bsl", "bsum"];
+
 /// The short label of a point of [`Study::points`] on the drawing (the sheet's lines give
 /// its x₁, x₂ and indices under the same name): K the scene's point, ε_{α max}, λ (equal
 /// sliding), x_{Σ max}.
@@ -307,9 +311,9 @@ pub fn point_label(tag: &str) -> &'static str {
 /// A criterion's tag in row subjects.
 pub fn criterion_tag(c: Criterion) -> &'static str {
     match c {
-        Criterion::LargestContactRatio => "beps",
-        Criterion::EqualSliding { .. } => "bsl",
-        Criterion::GreatestSumWithTip { .. } => "bsum",
+        Criterion::LargestContactRatio => POINT_TAGS[1],
+        Criterion::EqualSliding { .. } => POINT_TAGS[2],
+        Criterion::GreatestSumWithTip { .. } => POINT_TAGS[3],
     }
 }
 

@@ -352,6 +352,16 @@ catalogue! {
         BalancingTable => ("Уравновешивающие массы", "Зрівноважувальні маси", "The correcting masses"),
         FrictionSection => ("Трение в кинематических парах", "Тертя в кінематичних парах", "Friction in the kinematic pairs"),
         FrictionTable => ("Силы, моменты и КПД с учётом трения", "Сили, моменти і ККД з урахуванням тертя", "Forces, moments and efficiencies with friction"),
+        BlockingTable => (
+            "Значения в точках блокирующего контура",
+            "Значення в точках блокуючого контуру",
+            "The values at the points of the blocking contour"
+        ),
+        FrictionTask => (
+            "Определить графически (планами сил) и проверить аналитическим расчётом силы, моменты и коэффициенты полезного действия с учётом трения в следующих случаях:",
+            "Визначити графічно (планами сил) і перевірити аналітичним розрахунком сили, моменти й коефіцієнти корисної дії з урахуванням тертя в таких випадках:",
+            "Find by force plans, and check by calculation, the forces, moments and efficiencies with friction in the following cases:"
+        ),
         FollowerGuideWorked => (
             "Кулачок давит на толкатель силой P по общей нормали под углом давления λ к оси; сопротивление Q — вдоль оси; опоры направляющей (на расстояниях l и l + b от точки контакта K) отвечают нормальными реакциями N₁, N₂, каждая с трением f·N против движения. Из равновесия толкателя (проекции на ось и поперёк неё, моменты относительно K):",
             "Кулачок тисне на штовхач силою P по спільній нормалі під кутом тиску λ до осі; опір Q — уздовж осі; опори напрямної (на відстанях l і l + b від точки контакту K) відповідають нормальними реакціями N₁, N₂, кожна з тертям f·N проти руху. З рівноваги штовхача (проекції на вісь і поперек неї, моменти відносно K):",
@@ -402,6 +412,11 @@ catalogue! {
             "Значення джерела, які проєкт не відтворює, з точним значенням і причиною:",
             "The source's values this project does not reproduce, with the exact value and the reason:"
         ),
+        SeedNoReason => (
+            "не следует из данных источника",
+            "не випливає з даних джерела",
+            "does not follow from the source's data"
+        ),
         SeedValues => ("Расхождения с источником", "Розбіжності з джерелом", "Differences from the source"),
         SeedPrints => ("в источнике", "у джерелі", "the source"),
         Deviation => ("расхождение, %", "розбіжність, %", "off by, %"),
@@ -412,9 +427,9 @@ catalogue! {
             "does not follow from the source's data: the equation of motion integrated exactly"
         ),
         SeedContactRatio => (
-            "в источнике основные радиусы взяты как r·cos α_w, а шаг — как πm·cos α_w",
-            "у джерелі основні радіуси взято як r·cos α_w, а крок — як πm·cos α_w",
-            "the source takes the base radii as r·cos α_w and the base pitch as πm·cos α_w"
+            "в источнике основные радиусы взяты как r·cos α_{w}, а шаг — как πm·cos α_{w}",
+            "у джерелі основні радіуси взято як r·cos α_{w}, а крок — як πm·cos α_{w}",
+            "the source takes the base radii as r·cos α_{w} and the base pitch as πm·cos α_{w}"
         ),
         SeedTrainNeeds => (
             "при остальных ступенях по числам зубьев напечатанное значение требует",
@@ -423,9 +438,9 @@ catalogue! {
         ),
         SeedTrainTeeth => ("а по числам зубьев", "а за числами зубців", "whereas the teeth give"),
         SeedMinRadius => (
-            "при γ ≥ γ_min на всём цикле радиус не может быть меньше точного",
-            "при γ ≥ γ_min на всьому циклі радіус не може бути меншим за точний",
-            "with γ ≥ γ_min over the whole cycle the radius cannot be below the exact one"
+            "при γ ≥ γ_{min} на всём цикле радиус не может быть меньше точного",
+            "при γ ≥ γ_{min} на всьому циклі радіус не може бути меншим за точний",
+            "with γ ≥ γ_{min} over the whole cycle the radius cannot be below the exact one"
         ),
         References => ("Список литературы", "Список літератури", "References"),
         Reference1 => (

@@ -126,6 +126,12 @@ fn russian(symbol: Symbol, subject: &str) -> String {
     if let Some(base) = subject.strip_suffix("_req") {
         return format!("{}^{{треб}}", russian(symbol, base));
     }
+    // A value at a point of the blocking contour: its own symbol, the point named after it
+    // as the contour's drawing names it: ε_{α} (K), x_{1} (ε_{α max}).
+    if let Some((own, tag)) = blocking_point(subject) {
+        let point = crate::gears::blocking::point_label(tag);
+        return format!("{} ({point})", russian(symbol, own));
+    }
     // A translating cam's shortest travel: X_{min}.
     if (symbol, subject) == (Symbol::Length, "travel_min") {
         return "X_{min}".into();
@@ -155,7 +161,9 @@ fn russian(symbol: Symbol, subject: &str) -> String {
         // A generated wheel's values name the wheel after the quantity's own subscript:
         // x_{min,p}, s_{a,p}, δ_{огиб,p} (the wheel `1` has none: x_{min}, s_{a1}).
         (Symbol::EnvelopeDeviation, s) => wheel("огиб", s.strip_prefix("deviation")),
-        (Symbol::ShiftCoefficient, s) => wheel("min", s.strip_prefix("min")),
+        (Symbol::ShiftCoefficient, s) if s.starts_with("min") => {
+            wheel("min", s.strip_prefix("min"))
+        }
         // The circle's letter first (a: tip, t: pitch, b: base), then the wheel's name.
         (Symbol::ToothThickness | Symbol::SpaceWidth, s)
             if s.len() > 1 && s.is_char_boundary(1) && !s[1..].starts_with(char::is_numeric) =>
@@ -165,6 +173,16 @@ fn russian(symbol: Symbol, subject: &str) -> String {
         (_, s) => s.replace('_', sep),
     };
     format!("{letter}_{{{subject}}}")
+}
+
+/// The subject of a value at a point of the blocking contour (`alpha_beps`, `1_bsl`, `bz`)
+/// split into the quantity's own subject and the point's tag
+/// ([`crate::gears::blocking::Study::points`]).
+fn blocking_point(subject: &str) -> Option<(&str, &str)> {
+    let (own, tag) = subject.rsplit_once('_').unwrap_or(("", subject));
+    crate::gears::blocking::POINT_TAGS
+        .contains(&tag)
+        .then_some((own, tag))
 }
 
 /// A quantity's own subscript `own` and the wheel it belongs to (`rest` is `_name` or
@@ -253,6 +271,13 @@ mod tests {
         assert_eq!(ru(Symbol::SpaceWidth, "tp"), "e_{t,p}");
         assert_eq!(ru(Symbol::EnvelopeDeviation, "deviation"), "δ_{огиб}");
         assert_eq!(ru(Symbol::Irregularity, ""), "δ");
+        // The values at the points of the blocking contour, each point named.
+        assert_eq!(ru(Symbol::ContactRatio, "alpha_bz"), "ε_{α} (K)");
+        assert_eq!(ru(Symbol::ToothThickness, "a1_beps"), "s_{a1} (ε_{α max})");
+        assert_eq!(ru(Symbol::EngagementAngle, "w_bsl"), "α_{w} (λ_1 = λ_2)");
+        assert_eq!(ru(Symbol::EqualisingShift, "bsum"), "Δy (x_{Σ max})");
+        assert_eq!(ru(Symbol::ShiftCoefficient, "2_beps"), "x_{2} (ε_{α max})");
+        assert_eq!(ru(Symbol::SpecificSliding, "1_bz"), "λ_{1} (K)");
         let en = |s, sub| quantity(s, sub, Lang::En);
         assert_eq!(en(Symbol::Force, "in3"), "F_{i3}");
         assert_eq!(en(Symbol::Moment, "bal"), "M_{b}");
