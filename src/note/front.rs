@@ -483,7 +483,15 @@ pub(super) fn references(w: &mut Writer<'_, '_>) {
         "#heading(numbering: none, {})",
         text(w.word(T::References))
     ));
-    for r in [T::Reference1, T::Reference2, T::Reference3, T::Reference4] {
-        w.doc.raw(&format!("+ {}", text(w.word(r))));
+    // ГОСТ Р 7.0.100 records, numbered, each as plain text (`#[…]`: no bracket of the
+    // content block shown).
+    for r in [
+        T::Reference1,
+        T::Reference2,
+        T::Reference3,
+        T::Reference4,
+        T::Reference5,
+    ] {
+        w.doc.raw(&format!("+ #{}", text(w.word(r))));
     }
 }
