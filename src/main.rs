@@ -2,18 +2,13 @@
 //!
 //! Exit status: 0 success, 2 bad input or usage, 1 a construction that cannot be carried out.
 
+mod allocator;
+
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use tmm::construct::Drafting;
 use tmm::render::{self, RenderError};
-
-/// jemalloc: a batch's peak memory stays flat over thousands of variants (69.4 MB for 300
-/// shaper variants, 69.8 MB for 1 000), where glibc's heaps grew (82 → 93 → 99 MB for 300,
-/// 1 000, 3 000) from fragments of the variants' sheets (README, "A department's class").
-#[cfg(not(target_env = "msvc"))]
-#[global_allocator]
-static ALLOCATOR: tikv_jemallocator::Jemalloc = tikv_jemallocator::Jemalloc;
 use tmm::scale::Lang;
 use tmm::scene::{self, Scene};
 use tmm::study::Session;
@@ -255,8 +250,7 @@ fn main() -> ExitCode {
 /// Print a line to standard output; a closed pipe (`tmm report … | head`) is not an error.
 fn emit(line: &str) {
     use std::io::Write;
-    let mut so = std::io::stdout().lock();
-    let _ = writeln!(so, "{line}");
+    let _ = writeln!(std::io::stdout().lock(), "{line}");
 }
 
 fn load_all(paths: &[PathBuf]) -> Result<Vec<Scene>, Failure> {
@@ -403,8 +397,7 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
     }
 }
 
-/// Each variant of a batch on a line (its files on standard output, its diagnosis on
-/// standard error); how many were not drawn.
+/// Each variant of a batch on a line (files on stdout, its diagnosis on stderr); the failed.
 fn print_outcomes(outcomes: &[tmm::batch::Outcome]) -> usize {
     let mut failed = 0;
     for o in outcomes {
