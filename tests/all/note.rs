@@ -55,7 +55,7 @@ fn the_shaper_note_holds_the_projects_values_as_the_report_gives_them() {
         "Синтез кулачкового механизма",
         "Зубчатые механизмы",
         "Выводы",
-        "Список литературы",
+        "СПИСОК ИСПОЛЬЗОВАННЫХ ИСТОЧНИКОВ",
     ];
     let mut from = text.find("Пояснительная записка").expect("the title page");
     for s in sections {
@@ -111,8 +111,8 @@ fn the_note_is_byte_identical_from_run_to_run() {
 fn the_note_is_written_in_ukrainian_and_english() {
     let s = shaper();
     for (lang, words) in [
-        (Lang::Uk, ["Пояснювальна записка", "Зміст", "Висновки"]),
-        (Lang::En, ["Explanatory note", "Contents", "Conclusions"]),
+        (Lang::Uk, ["Пояснювальна записка", "ЗМІСТ", "Висновки"]),
+        (Lang::En, ["Explanatory note", "CONTENTS", "Conclusions"]),
     ] {
         let (n, _) = note(&s, lang);
         let text = text_of(&n);

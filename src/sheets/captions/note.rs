@@ -442,7 +442,7 @@ catalogue! {
             "при γ ≥ γ_{min} на всьому циклі радіус не може бути меншим за точний",
             "with γ ≥ γ_{min} over the whole cycle the radius cannot be below the exact one"
         ),
-        References => ("Список литературы", "Список літератури", "References"),
+        References => ("Список использованных источников", "Список використаних джерел", "References"),
         // The references as ГОСТ Р 7.0.100 records, each in the language of the work it
         // cites (a Ukrainian note lists the Russian books and standards in Russian).
         Reference1 => (
