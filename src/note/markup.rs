@@ -52,31 +52,48 @@ fn subscript_of(c: char) -> Option<char> {
     }
 }
 
-/// `text` as content pieces: `#"…"` for its runs of plain characters, `#sub("…")` for its
-/// runs of Unicode subscripts.
+/// The character a Unicode superscript digit or sign stands for (`⁻` → `−`, `⁸` → `8`),
+/// `None` for any other character (`²` and `³` of a unit are the face's own).
+fn superscript_of(c: char) -> Option<char> {
+    match c {
+        '⁰' => Some('0'),
+        '¹' => Some('1'),
+        '⁴'..='⁹' => char::from_digit(c as u32 - '⁰' as u32, 10),
+        '⁺' => Some('+'),
+        '⁻' => Some('−'),
+        _ => None,
+    }
+}
+
+/// `text` as content pieces: `#"…"` for its runs of plain characters, `#sub("…")` and
+/// `#super("…")` for its runs of Unicode subscripts and superscripts.
 fn pieces(text: &str, out: &mut String) {
     let mut run = String::new();
-    let mut sub = false;
-    let flush = |run: &mut String, sub: bool, out: &mut String| {
+    let mut script = Script::Normal;
+    let flush = |run: &mut String, script: Script, out: &mut String| {
         if !run.is_empty() {
             let s = string(run);
-            out.push_str(&if sub {
-                format!("#sub({s})")
-            } else {
-                format!("#{s}")
+            out.push_str(&match script {
+                Script::Normal => format!("#{s}"),
+                Script::Sub => format!("#sub({s})"),
+                Script::Sup => format!("#super({s})"),
             });
             run.clear();
         }
     };
     for c in text.chars() {
-        let (ch, is_sub) = subscript_of(c).map_or((c, false), |d| (d, true));
-        if is_sub != sub {
-            flush(&mut run, sub, out);
-            sub = is_sub;
+        let (ch, kind) = match (subscript_of(c), superscript_of(c)) {
+            (Some(d), _) => (d, Script::Sub),
+            (_, Some(d)) => (d, Script::Sup),
+            _ => (c, Script::Normal),
+        };
+        if kind != script {
+            flush(&mut run, script, out);
+            script = kind;
         }
         run.push(ch);
     }
-    flush(&mut run, sub, out);
+    flush(&mut run, script, out);
 }
 
 /// Plain text as content: `[#"text"]` (its Unicode subscripts set as subscripts).
@@ -137,9 +154,18 @@ pub(super) fn sym(markup: &str) -> String {
 /// upright; a negative number with its minus sign.
 pub(super) fn num(x: f64, sig: usize, lang: Lang) -> String {
     let t = format_sig(x, sig, lang);
-    match t.strip_prefix('-').or_else(|| t.strip_prefix('−')) {
-        Some(abs) => format!("-{}", string(abs)),
-        None => string(&t),
+    let (sign, abs) = match t.strip_prefix('-').or_else(|| t.strip_prefix('−')) {
+        Some(abs) => ("-", abs),
+        None => ("", t.as_str()),
+    };
+    // A value past the plain form as a power of ten (ГОСТ 2.105 has no `e` form).
+    match abs.split_once('e') {
+        Some((mantissa, power)) => format!(
+            "{sign}{} dot 10^({})",
+            string(mantissa),
+            power.replace('−', "-")
+        ),
+        None => format!("{sign}{}", string(abs)),
     }
 }
 
@@ -388,6 +414,7 @@ mod tests {
     #[test]
     fn unicode_subscripts_are_set_as_subscripts_in_the_notes_face() {
         assert_eq!(text("ω₁ = const"), r##"[#"ω"#sub("1")#" = const"]"##);
+        assert_eq!(text("1,44·10⁻⁸ м²"), r##"[#"1,44·10"#super("−8")#" м²"]"##);
         assert_eq!(
             label("R₄₋₃ и M_{пр}"),
             r##"[#"R"#sub("4−3")#" и M"#sub("пр")]"##
@@ -443,5 +470,6 @@ mod tests {
     fn numbers_in_formulas_carry_the_decimal_sign_and_minus() {
         assert_eq!(num(2.19911, 4, Lang::Ru), r#""2,199""#);
         assert_eq!(num(-0.5456, 3, Lang::En), r#"-"0.546""#);
+        assert_eq!(num(2.01e-14, 3, Lang::Ru), r#""2,01" dot 10^(-14)"#);
     }
 }

@@ -6,7 +6,27 @@ use super::Writer;
 use crate::check::{is_zero, Method, Row, ZERO_FRACTION};
 use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
 
-pub(super) use crate::report::{md_percent as percent, md_value as fmt};
+pub(super) use crate::report::md_percent as percent;
+
+/// A value as the note prints it: [`crate::report::md_value`] to `sig` significant digits,
+/// its exponent form written as a power of ten (`1,44133e−8` → `1,44133·10⁻⁸`, set as a
+/// superscript by the note's markup; ГОСТ 2.105 has no `e` form).
+pub(super) fn fmt(x: f64, sig: usize, lang: crate::scale::Lang) -> String {
+    let s = crate::report::md_value(x, sig, lang);
+    let Some((mantissa, exponent)) = s.split_once('e') else {
+        return s;
+    };
+    const SUPERSCRIPT: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let power: String = exponent
+        .chars()
+        .map(|c| match c {
+            '−' | '-' => '⁻',
+            '+' => '⁺',
+            d => d.to_digit(10).map_or(d, |k| SUPERSCRIPT[k as usize]),
+        })
+        .collect();
+    format!("{mantissa}·10{power}")
+}
 
 /// Significant digits of a value in the note's tables.
 pub(super) const DIGITS: usize = 4;
@@ -322,4 +342,17 @@ pub(super) fn values_and_errors(
     }
     numbers(w, caption, &positions, &values);
     numbers(w, errors, &positions, &deltas);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scale::Lang;
+
+    #[test]
+    fn a_tiny_value_is_a_power_of_ten_not_an_e_form() {
+        assert_eq!(fmt(1.44133e-8, 6, Lang::Ru), "1,44133·10⁻⁸");
+        assert_eq!(fmt(-8.538e-7, 4, Lang::Ru), "−8,538·10⁻⁷");
+        assert_eq!(fmt(0.5, 4, Lang::Ru), "0,5");
+    }
 }

@@ -1,7 +1,8 @@
 //! Issue 44 §2: the ГОСТ 2.105 form of every note, read off its typeset text (page by page,
 //! `tmm::note::PAGE_BREAK` between): formulas numbered within their section in sequence,
-//! «Рисунок N —» and «Таблица N —» captions numbered through the note, never «Рис.», and a
-//! table that runs onto the next page continued under «Продолжение таблицы N».
+//! «Рисунок N —» and «Таблица N —» captions numbered through the note, never «Рис.», no
+//! number in exponent form, and a table that runs onto the next page continued under
+//! «Продолжение таблицы N».
 
 use crate::support;
 use tmm::{Drafting, Lang, Session};
@@ -87,6 +88,15 @@ fn check(name: &str, pages: &[String], lang: Lang) -> usize {
         );
     }
     assert!(!whole.contains("Рис. "), "{name}: «Рис.»");
+    // No number in the `1,44e−8` form: a power of ten.
+    let chars: Vec<char> = whole.chars().collect();
+    for w in chars.windows(4) {
+        assert!(
+            !(w[0].is_ascii_digit() && w[1] == 'e' && "−-".contains(w[2]) && w[3].is_ascii_digit()),
+            "{name}: an exponent form «{}»",
+            w.iter().collect::<String>()
+        );
+    }
     // Each continuation names the table running on from the page before, which is the last
     // table captioned so far; a page beginning under the running table says so.
     let mut running = 0;
