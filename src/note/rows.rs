@@ -257,16 +257,19 @@ pub(super) fn numbers(
         .map(|(k, p)| {
             let mut row = vec![text(p)];
             for c in columns {
-                let largest = c.scale.unwrap_or_else(|| {
-                    c.values
-                        .iter()
-                        .flatten()
-                        .fold(0.0f64, |m, x| m.max(x.abs()))
-                });
-                row.push(text(&match c.values.get(k).copied().flatten() {
-                    Some(x) if is_zero(x, largest) => "0".into(),
-                    Some(x) => fmt(x, c.digits, lang),
-                    None => "—".into(),
+                let largest = c
+                    .values
+                    .iter()
+                    .flatten()
+                    .fold(0.0f64, |m, x| m.max(x.abs()));
+                let zero = c.scale.unwrap_or(largest);
+                let x = c.values.get(k).copied().flatten();
+                let x = x.map(|x| if is_zero(x, zero) { 0.0 } else { x });
+                row.push(text(&match (x, decimals(largest, c.digits)) {
+                    (Some(x), Some(d)) => crate::scale::format_fixed(x, d, lang),
+                    (Some(0.0), None) => "0".into(),
+                    (Some(x), None) => fmt(x, c.digits, lang),
+                    (None, _) => "—".into(),
                 }));
             }
             row
@@ -274,6 +277,18 @@ pub(super) fn numbers(
         .collect();
     let align = vec![Align::Centre; header.len()];
     w.doc.table(caption, &align, &header, &rows);
+}
+
+/// The decimals every value of a column whose largest magnitude is `largest` is printed
+/// with (ГОСТ 2.105: one number of decimals in a column): as many as the largest needs for
+/// `digits` significant digits; `None` past 6 (a column of tiny values keeps its own
+/// significant digits, as powers of ten) or for a column of zeros.
+fn decimals(largest: f64, digits: usize) -> Option<usize> {
+    if largest == 0.0 || !largest.is_finite() {
+        return None;
+    }
+    let d = digits as i32 - 1 - largest.log10().floor() as i32;
+    (d <= 6).then_some(d.max(0) as usize)
 }
 
 /// The positions at which any of `quantities` was read, in the report's order.
@@ -354,5 +369,14 @@ mod tests {
         assert_eq!(fmt(1.44133e-8, 6, Lang::Ru), "1,44133·10⁻⁸");
         assert_eq!(fmt(-8.538e-7, 4, Lang::Ru), "−8,538·10⁻⁷");
         assert_eq!(fmt(0.5, 4, Lang::Ru), "0,5");
+    }
+
+    #[test]
+    fn a_column_prints_its_values_with_the_decimals_of_its_largest() {
+        assert_eq!(decimals(2.175, 4), Some(3));
+        assert_eq!(decimals(113.7, 4), Some(1));
+        assert_eq!(decimals(45_000.0, 4), Some(0));
+        assert_eq!(decimals(1.44e-8, 4), None);
+        assert_eq!(decimals(0.0, 4), None);
     }
 }
