@@ -5,6 +5,7 @@
 
 use crate::plate::text::{parse, Script};
 use crate::scale::{format_sig, Lang};
+use crate::sheets::captions::symbols::cyrillic;
 
 /// A Typst string literal of `text`.
 pub(super) fn string(text: &str) -> String {
@@ -52,17 +53,39 @@ fn subscript_of(c: char) -> Option<char> {
     }
 }
 
+/// The Unicode superscript digits, 0 … 9.
+const SUPERSCRIPT_DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+
 /// The character a Unicode superscript digit or sign stands for (`⁻` → `−`, `⁸` → `8`),
 /// `None` for any other character (`²` and `³` of a unit are the face's own).
 fn superscript_of(c: char) -> Option<char> {
     match c {
-        '⁰' => Some('0'),
-        '¹' => Some('1'),
-        '⁴'..='⁹' => char::from_digit(c as u32 - '⁰' as u32, 10),
+        '²' | '³' => None,
         '⁺' => Some('+'),
         '⁻' => Some('−'),
-        _ => None,
+        _ => SUPERSCRIPT_DIGITS
+            .iter()
+            .position(|&d| d == c)
+            .and_then(|k| char::from_digit(k as u32, 10)),
     }
+}
+
+/// A number as text, its exponent form (`1,44133e−8`, as [`format_sig`] writes past the
+/// plain range) as a power of ten in Unicode superscripts (`1,44133·10⁻⁸`), which [`text`]
+/// and [`label`] set as a superscript: ГОСТ 2.105 has no `e` form.
+pub(super) fn power_of_ten(number: &str) -> String {
+    let Some((mantissa, exponent)) = number.split_once('e') else {
+        return number.to_string();
+    };
+    let power: String = exponent
+        .chars()
+        .map(|c| match c {
+            '−' | '-' => '⁻',
+            '+' => '⁺',
+            d => d.to_digit(10).map_or(d, |k| SUPERSCRIPT_DIGITS[k as usize]),
+        })
+        .collect();
+    format!("{mantissa}·10{power}")
 }
 
 /// `text` as content pieces: `#"…"` for its runs of plain characters, `#sub("…")` and
@@ -130,13 +153,7 @@ pub(super) fn sym(markup: &str) -> String {
     for run in parse(markup) {
         let face = match run.script {
             Script::Normal => "qs",
-            _ if run
-                .text
-                .chars()
-                .any(|c| matches!(c, 'а'..='я' | 'А'..='Я' | 'і' | 'ї' | 'є' | 'ґ')) =>
-            {
-                "qu"
-            }
+            _ if run.text.chars().any(cyrillic) => "qu",
             _ => "qs",
         };
         let s = format!("#{face}[#{}]", string(&run.text));

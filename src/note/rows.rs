@@ -1,7 +1,7 @@
 //! The report's rows as the note's tables: by position (graphical, analytic and their
 //! difference for each quantity, the seed's Tables 2 and 9 shape) and of the whole scene.
 
-use super::markup::{label, text, Align};
+use super::markup::{label, power_of_ten, text, Align};
 use super::Writer;
 use crate::check::{is_zero, Method, Row, ZERO_FRACTION};
 use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
@@ -12,20 +12,7 @@ pub(super) use crate::report::md_percent as percent;
 /// its exponent form written as a power of ten (`1,44133e−8` → `1,44133·10⁻⁸`, set as a
 /// superscript by the note's markup; ГОСТ 2.105 has no `e` form).
 pub(super) fn fmt(x: f64, sig: usize, lang: crate::scale::Lang) -> String {
-    let s = crate::report::md_value(x, sig, lang);
-    let Some((mantissa, exponent)) = s.split_once('e') else {
-        return s;
-    };
-    const SUPERSCRIPT: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
-    let power: String = exponent
-        .chars()
-        .map(|c| match c {
-            '−' | '-' => '⁻',
-            '+' => '⁺',
-            d => d.to_digit(10).map_or(d, |k| SUPERSCRIPT[k as usize]),
-        })
-        .collect();
-    format!("{mantissa}·10{power}")
+    power_of_ten(&crate::report::md_value(x, sig, lang))
 }
 
 /// Significant digits of a value in the note's tables.

@@ -55,7 +55,8 @@ const SUBSCRIPTS: &[(&str, &str, &str)] = &[
     ("кр", "кр", "cr"),
 ];
 
-fn cyrillic(c: char) -> bool {
+/// Whether `c` is a Cyrillic letter (a Russian or Ukrainian descriptive index).
+pub(crate) fn cyrillic(c: char) -> bool {
     ('\u{0400}'..='\u{04FF}').contains(&c)
 }
 
