@@ -98,7 +98,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     if !lines.is_empty() {
         w.doc.say(w.word(T::CamPeaks));
         for l in &lines {
-            w.doc.formula(l);
+            w.formula(l);
         }
     }
     // The base radius: |O₁B₀| on the combined diagram at μ_S.
@@ -106,7 +106,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         let mu = cam.diagrams.s_scale;
         let r = cam.radius.graphical;
         w.doc.say(w.word(T::CamRadiusWorked));
-        w.doc.formula(&format!(
+        w.formula(&format!(
             "{} = {} dot {} = {} dot {} = {}{}",
             sym("r_{min}"),
             sym("O_{1}B_{0}"),
@@ -121,7 +121,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         let (base, rho) = (cam.base, cam.inversion.rho_min);
         w.doc.say(w.word(T::CamRollerWorked));
         let k = |x: f64| num(x, 1, lang);
-        w.doc.formula(&format!(
+        w.formula(&format!(
             "{} = min({} {}; {} {}) = min({} dot {}; {} dot {}) = {}",
             sym("r_{р}"),
             k(0.4),

@@ -23,7 +23,7 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
         SpecialProfile::FlatRocker { frame, .. } => {
             let ratio = (frame.base + frame.face_offset) / frame.centres;
             w.doc.say(w.word(T::CamFlatRockerStart));
-            w.doc.formula(&format!(
+            w.formula(&format!(
                 "sin {} = {} = {} = {}, quad {} = {}",
                 sym("ψ_{0}"),
                 frac(&format!("{} + {}", sym("r_{0}"), sym("e")), &sym("a")),
@@ -36,7 +36,7 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 deg(ratio.asin())
             ));
             w.doc.say(w.word(T::CamFlatRockerCurvature));
-            w.doc.formula(&format!(
+            w.formula(&format!(
                 "{} = {} + {}, quad {} = {} sin {} - {}",
                 sym("ρ"),
                 sym("h"),
@@ -46,7 +46,7 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 sym("ψ"),
                 sym("e")
             ));
-            w.doc.formula(&format!(
+            w.formula(&format!(
                 "{} = {} quad (\"{}\" {})",
                 sym("ρ_{min}"),
                 mm(rho),
@@ -62,14 +62,14 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
             // max|dS/dφ| from X_min = 2π·max|S′|/tg λ_max.
             let v = exact * lambda_max.tan() / TAU;
             w.doc.say(w.word(T::CamSlidingAngle));
-            w.doc.formula(&format!(
+            w.formula(&format!(
                 "tg {} = {} = {} dot {}",
                 sym("λ"),
                 frac(&sym("dS"), &sym("dξ")),
                 sym("dS/dφ"),
                 frac("2π", &sym("X"))
             ));
-            w.doc.formula(&format!(
+            w.formula(&format!(
                 "{} = {} = {} = {} quad (\"{}\" {})",
                 sym("X_{min}"),
                 frac(
@@ -87,7 +87,7 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
             if rho.is_finite() {
                 w.doc.say(w.word(T::CamSlidingRoller));
                 let sign = if frame.roller < rho { "<" } else { ">=" };
-                w.doc.formula(&format!(
+                w.formula(&format!(
                     "{} = {} {sign} {} = {} quad (\"{}\" {})",
                     sym("r_{р}"),
                     mm(frame.roller),

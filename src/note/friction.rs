@@ -78,7 +78,7 @@ fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {
         &frac(&b, &format!("{f} dot (2 dot {l} + {b})")),
         n(t.lock.tan()),
     );
-    w.doc.formula(&format!(
+    w.formula(&format!(
         "{} = {} > λ = {lambda}",
         sym("λ_{кр}"),
         deg(t.lock, lang)
@@ -133,7 +133,7 @@ fn pivot(w: &mut Writer<'_, '_>, c: &RockerPivot) {
         &frac(&n(t.rho * 1e3), &arm),
         n(t.lock.cos()),
     );
-    w.doc.formula(&format!(
+    w.formula(&format!(
         "{} = {} > λ = {lambda}",
         sym("λ_{кр}"),
         deg(t.lock, lang)
@@ -146,7 +146,7 @@ fn pivot(w: &mut Writer<'_, '_>, c: &RockerPivot) {
         &frac(&format!("2 dot {arm}"), &format!("{f} dot {d}")),
         n(t.lock_lecture.tan()),
     );
-    w.doc.formula(&format!(
+    w.formula(&format!(
         "{} = {}",
         sym("λ_{кр}"),
         deg(t.lock_lecture, lang)

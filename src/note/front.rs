@@ -27,7 +27,7 @@ pub(super) fn preamble(w: &mut Writer<'_, '_>) {
         Lang::En => "en",
     };
     let meta = format!(
-        "#let meta = (title: {}, lang: {}, designation: {}, document: {}, author: {}, checked: {}, organisation: {}, changes: {}, people: {}, letter: {}, sheet: {}, sheets: {}, figure: {}, table: {}, continued: {})",
+        "#let meta = (title: {}, lang: {}, designation: {}, document: {}, author: {}, checked: {}, organisation: {}, changes: {}, people: {}, letter: {}, sheet: {}, sheets: {}, figure: {}, table: {}, continued: {}, where: {})",
         string(&t.title),
         string(lang),
         string(designation.trim()),
@@ -43,6 +43,7 @@ pub(super) fn preamble(w: &mut Writer<'_, '_>) {
         string(w.word(T::FigureWord)),
         string(w.word(T::TableWord)),
         string(w.word(T::TableContinued)),
+        string(w.word(T::Where)),
     );
     w.doc.raw(&meta);
     w.doc.raw(include_str!("template.typ"));

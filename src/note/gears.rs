@@ -102,8 +102,7 @@ pub(super) fn worked(
     substituted: &str,
     value: String,
 ) {
-    w.doc
-        .formula(&format!("{lhs} = {symbolic} = {substituted} = {value}"));
+    w.formula(&format!("{lhs} = {symbolic} = {substituted} = {value}"));
 }
 
 /// The pair's geometry as seed 000 §4 works it: α_w from the involute function, y, Δy, a_w,
@@ -141,8 +140,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
         ),
         n(p.inv_w),
     );
-    w.doc
-        .formula(&format!("{} = {}", sym("α_{w}"), deg(p.alpha_w, lang)));
+    w.formula(&format!("{} = {}", sym("α_{w}"), deg(p.alpha_w, lang)));
     worked(
         w,
         &sym("y"),

@@ -11,7 +11,7 @@ use crate::check::{is_zero, Method, Row, Symbol};
 use crate::linkage::{DyadKind, GroupInfo, OutputCoord, Structure};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{quantity, subscripted, unit_in, NoteText as T, Text as S};
+use crate::sheets::captions::{quantity, subscripted, unit_in, Meaning, NoteText as T, Text as S};
 use crate::sheets::data::plain;
 
 /// The structural analysis.
@@ -40,7 +40,13 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         text(w.word(T::MobilityChebyshev)),
         text(&format!("n = {}, p₅ = {}, p₄ = {}:", s.n, s.p5, s.p4)),
     ]);
-    w.doc.formula(&chebyshev(s.p5, s.w));
+    w.formula(&chebyshev(s.p5, s.w));
+    w.explain(&[
+        ("W", w.word(Meaning::Mobility), ""),
+        ("n", w.word(Meaning::MovingLinks), ""),
+        ("p_{5}", w.word(Meaning::LowerPairs), ""),
+        ("p_{4}", w.word(Meaning::HigherPairs), ""),
+    ]);
     if redundant > 0 {
         let names: Vec<String> = s
             .pairs
@@ -53,7 +59,7 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             w.word(T::WithRedundantPairs),
             names.join(", ")
         ))]);
-        w.doc.formula(&chebyshev(s.p5_all, s.w_all));
+        w.formula(&chebyshev(s.p5_all, s.w_all));
         w.doc.say(w.word(T::RedundantPairExplained));
     }
     w.doc.say(w.word(T::AssurGroups));
@@ -339,7 +345,7 @@ impl CrankPin<'_> {
         };
         let pin = sym(&format!("{letter}_{{{}}}", self.name));
         w.doc.par(&[text(w.word(words.0))]);
-        w.doc.formula(&format!(
+        w.formula(&format!(
             "{pin} = {}{power} {} = {}{power} dot {} = {}{}",
             sym("ω_{1}"),
             sym(self.crank),
@@ -349,7 +355,7 @@ impl CrankPin<'_> {
             unit(&unit_in(si, lang))
         ));
         w.doc.par(&[text(w.word(words.1))]);
-        w.doc.formula(&format!(
+        w.formula(&format!(
             "{} = {} = {} = {}{}",
             sym(mu),
             frac(&pin, &sym(&format!("{pole}{}", self.name.to_lowercase()))),
@@ -375,7 +381,7 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let (centre, pin) = (plain(&m.crank.centre), plain(&m.crank.pin));
     let crank = format!("l_{{{centre}{pin}}}");
     w.doc.par(&[text(w.word(T::LengthScale))]);
-    w.doc.formula(&format!(
+    w.formula(&format!(
         "{} = {} = {} = {}{}",
         sym("μ_{l}"),
         frac(
@@ -418,7 +424,7 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         w.doc
             .par(&[text(w.word(T::StrokeIs)), inline(&strokes.join(", "))]);
         w.doc.par(&[text(w.word(T::ThetaAndK))]);
-        w.doc.formula(&format!(
+        w.formula(&format!(
             "{} = {} = {} = {}",
             sym("K"),
             frac("180° + θ", "180° - θ"),
@@ -514,7 +520,7 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         w.doc.say(w.word(T::ChordMethod));
         let (mu_s, mu_phi) = (d.scales.y.value(), d.scales.x.value());
         let (h1, h2) = (d.first.pole_mm, d.second.pole_mm);
-        w.doc.formula(&format!(
+        w.formula(&format!(
             "{} = {} = {} = {}, quad {} = {} = {} = {}",
             sym("μ_{S′}"),
             frac(&sym("μ_{S}"), &format!("{} {}", sym("μ_{φ}"), sym("H_{1}"))),
@@ -705,7 +711,7 @@ fn worked(
         ));
     }
     for l in lines {
-        w.doc.formula(&l);
+        w.formula(&l);
     }
     Ok(())
 }
@@ -758,7 +764,7 @@ fn coriolis(w: &mut Writer<'_, '_>, p: &str, s: &Structure) -> Result<(), NoteEr
     if !lines.is_empty() {
         w.doc.say(&format!("{} {p}:", w.word(T::CoriolisWorked)));
         for l in lines {
-            w.doc.formula(&l);
+            w.formula(&l);
         }
     }
     Ok(())

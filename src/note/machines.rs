@@ -80,7 +80,7 @@ pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             }
         }
         for l in lines {
-            w.doc.formula(&l);
+            w.formula(&l);
         }
         w.doc.say(w.word(T::GroupsEquations));
         group_equations(w, k)?;
@@ -91,7 +91,7 @@ pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         if let (Some(a), Some(b)) = (poly, lever) {
             w.doc.say(w.word(T::BalancingBothRoutes));
             let diff = (a.graphical - b.graphical).abs() / a.graphical.abs().max(f64::MIN_POSITIVE);
-            w.doc.formula(&format!(
+            w.formula(&format!(
                 "Δ = {} = {} = {} %",
                 frac(
                     &format!(
@@ -135,7 +135,7 @@ pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             if let Some(eta) = spec.efficiency {
                 let n = a.graphical.abs() * w1;
                 w.doc.say(w.word(T::MotorPower));
-                w.doc.formula(&format!(
+                w.formula(&format!(
                     "{} = {} = {} = {}{}",
                     sym("N_{дв}"),
                     frac(&sym("N"), &sym("η")),
@@ -321,14 +321,14 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         let (a, m) = (a.graphical.abs(), m.graphical.abs());
         let nm = unit(&unit_in("N*m", lang));
         w.doc.say(w.word(T::DriveMomentAndPower));
-        w.doc.formula(&format!(
+        w.formula(&format!(
             "{} = {} = {} = {}{nm}",
             sym("M_{д}"),
             frac(&sym("A_{с}"), "2 π"),
             frac(&num(a, 5, lang), "2 π"),
             num(m, 5, lang),
         ));
-        w.doc.formula(&format!(
+        w.formula(&format!(
             "{} = {} {} = {} dot {} = {}{}",
             sym("N_{ср}"),
             sym("M_{д}"),
@@ -516,7 +516,7 @@ fn resistance_power(w: &mut Writer<'_, '_>, k: usize, p: &str) -> Result<(), Not
     if !lines.is_empty() {
         w.doc.say(w.word(T::ResistancePower));
         for l in lines {
-            w.doc.formula(&l);
+            w.formula(&l);
         }
     }
     Ok(())

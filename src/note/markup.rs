@@ -228,6 +228,11 @@ fn capitalised(cell: &str) -> String {
     }
 }
 
+/// The left side of the Typst math `math`: up to its first `=` outside brackets and strings.
+pub(super) fn first_side(math: &str) -> &str {
+    top_level_equals(math)[0]
+}
+
 /// The pieces of Typst math `math` between its `=` signs outside brackets and strings.
 fn top_level_equals(math: &str) -> Vec<&str> {
     let (mut parts, mut depth, mut quoted, mut escaped, mut from) =

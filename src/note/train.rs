@@ -176,8 +176,7 @@ fn stages_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage]) -
         );
     }
     w.doc.say(w.word(T::TrainWillis));
-    w.doc
-        .formula(&format!("{whole} = {}", n(study.ratio, lang)));
+    w.formula(&format!("{whole} = {}", n(study.ratio, lang)));
     names
 }
 
@@ -263,7 +262,7 @@ fn differential_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
         format!("{} {rpm}", n(value * n_in, lang)),
     );
     w.doc.say(w.word(T::TrainWillis));
-    w.doc.formula(&format!(
+    w.formula(&format!(
         "{} = {} {rpm}",
         speed(out),
         n(study.willis[t.output] * n_in, lang)

@@ -6,6 +6,7 @@
 mod audit;
 mod linkage;
 mod machines;
+mod meanings;
 mod note;
 pub(crate) mod symbols;
 
@@ -13,6 +14,7 @@ pub(crate) use audit::AuditText;
 pub(crate) use linkage::Text;
 pub(super) use machines::{CamText, DynamicsText, RotorText};
 pub(crate) use machines::{FrictionText, GearText};
+pub(crate) use meanings::Meaning;
 pub(crate) use note::NoteText;
 pub(crate) use symbols::{quantity, subscripted};
 

@@ -15,6 +15,7 @@ catalogue! {
         FigureWord => ("Рисунок", "Рисунок", "Figure"),
         TableWord => ("Таблица", "Таблиця", "Table"),
         TableContinued => ("Продолжение таблицы", "Продовження таблиці", "Continuation of Table"),
+        Where => ("где", "де", "where"),
         Student => ("Выполнил студент", "Виконав студент", "Student"),
         OfGroup => ("группы", "групи", "group"),
         Supervisor => ("Руководитель", "Керівник", "Supervisor"),
