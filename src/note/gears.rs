@@ -9,7 +9,7 @@ use crate::check::{Method, Symbol};
 use crate::gears::{inv, Generation, Pair};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{unit_in, NoteText as T, Text as S};
+use crate::sheets::captions::{unit_in, Meaning as M, NoteText as T, Text as S};
 
 /// The gears section.
 pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
@@ -140,6 +140,21 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
         ),
         n(p.inv_w),
     );
+    let of = |m: M, k: usize| format!("{} {k}", m.get(lang));
+    let (x1w, x2w, z1w, z2w) = (
+        of(M::ShiftOfWheel, 1),
+        of(M::ShiftOfWheel, 2),
+        of(M::TeethOfWheel, 1),
+        of(M::TeethOfWheel, 2),
+    );
+    w.explain(&[
+        ("α_{w}", M::EngagementAngle.get(lang), "deg"),
+        ("x_{1}", &x1w, ""),
+        ("x_{2}", &x2w, ""),
+        ("α", M::ProfileAngle.get(lang), "deg"),
+        ("z_{1}", &z1w, ""),
+        ("z_{2}", &z2w, ""),
+    ]);
     w.formula(&format!("{} = {}", sym("α_{w}"), deg(p.alpha_w, lang)));
     worked(
         w,
@@ -159,6 +174,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
         ),
         n(p.y),
     );
+    w.explain(&[("y", M::TakenUpShift.get(lang), "")]);
     if spec.dy_table.is_none() {
         worked(
             w,
@@ -167,6 +183,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             &format!("{} + {} - {}", n(x1), n(x2), n(p.y)),
             n(p.dy),
         );
+        w.explain(&[("Δy", M::EqualisingShift.get(lang), "")]);
     }
     worked(
         w,
@@ -178,6 +195,10 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
         &format!("{m} dot ({} + {})", frac(&n(zs), "2"), n(p.y)),
         l(p.a_w),
     );
+    w.explain(&[
+        ("a_{w}", M::CentreDistance.get(lang), "mm"),
+        ("m", M::Module.get(lang), "mm"),
+    ]);
     for i in 0..2 {
         let k = i + 1;
         let (z, x) = (spec.z[i], spec.x[i]);
@@ -192,6 +213,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             &frac(&format!("{m} dot {z}"), "2"),
             l(p.r[i]),
         );
+        w.explain(&[(&format!("r_{{{k}}}"), &of(M::PitchRadius, k), "mm")]);
         worked(
             w,
             &sym(&format!("r_{{b{k}}}")),
@@ -199,6 +221,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             &format!("{} dot cos {}", n(p.r[i] * 1e3), deg(rack.alpha, lang)),
             l(p.rb[i]),
         );
+        w.explain(&[(&format!("r_{{b{k}}}"), &of(M::BaseRadius, k), "mm")]);
         worked(
             w,
             &sym(&format!("r_{{w{k}}}")),
@@ -214,6 +237,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             ),
             l(p.rw[i]),
         );
+        w.explain(&[(&format!("r_{{w{k}}}"), &of(M::RollingRadius, k), "mm")]);
         worked(
             w,
             &sym(&format!("r_{{f{k}}}")),
@@ -233,6 +257,11 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             ),
             l(p.rf[i]),
         );
+        w.explain(&[
+            (&format!("r_{{f{k}}}"), &of(M::RootRadius, k), "mm"),
+            ("h^{*}_{a}", M::AddendumCoefficient.get(lang), ""),
+            ("c^{*}", M::ClearanceCoefficient.get(lang), ""),
+        ]);
         worked(
             w,
             &sym(&format!("r_{{a{k}}}")),
@@ -246,6 +275,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             ),
             l(p.ra[i]),
         );
+        w.explain(&[(&format!("r_{{a{k}}}"), &of(M::TipRadius, k), "mm")]);
         worked(
             w,
             &sym(&format!("h_{{{k}}}")),
@@ -253,6 +283,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             &format!("{} - {}", n(p.ra[i] * 1e3), n(p.rf[i] * 1e3)),
             l(p.ra[i] - p.rf[i]),
         );
+        w.explain(&[(&format!("h_{{{k}}}"), &of(M::ToothHeight, k), "mm")]);
         worked(
             w,
             &sym(&format!("s_{{{k}}}")),
@@ -260,6 +291,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             &format!("{m} dot (π/2 + 2 dot {} dot {})", n(x), tg(rack.alpha)),
             l(p.s[i]),
         );
+        w.explain(&[(&format!("s_{{{k}}}"), &of(M::PitchThickness, k), "mm")]);
         worked(
             w,
             &sym(&format!("α_{{a{k}}}")),
@@ -267,6 +299,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             &format!("arccos {}", frac(&n(p.rb[i] * 1e3), &n(p.ra[i] * 1e3))),
             deg(p.alpha_a[i], lang),
         );
+        w.explain(&[(&format!("α_{{a{k}}}"), &of(M::TipAngle, k), "deg")]);
         worked(
             w,
             &sym(&format!("s_{{a{k}}}")),
@@ -284,8 +317,10 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
             ),
             l(p.sa[i]),
         );
+        w.explain(&[(&format!("s_{{a{k}}}"), &of(M::TipThickness, k), "mm")]);
     }
     worked(w, &sym("p"), "π m", &format!("π dot {m}"), l(p.p));
+    w.explain(&[("p", M::Pitch.get(lang), "mm")]);
     worked(
         w,
         &sym("p_{b}"),
@@ -293,6 +328,7 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
         &format!("{} dot cos {}", n(p.p * 1e3), deg(rack.alpha, lang)),
         l(p.p_b),
     );
+    w.explain(&[("p_{b}", M::BasePitch.get(lang), "mm")]);
 }
 
 /// ε_α by the textbook's formula and as the active line read off the meshing picture over
@@ -330,6 +366,7 @@ fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
         ),
         n(p.eps_formula),
     );
+    w.explain(&[("ε_{α}", M::ContactRatio.get(lang), "")]);
     w.doc.say(w.word(T::ContactRatioPicture));
     worked(
         w,
@@ -338,6 +375,10 @@ fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
         &frac(&n(ab_read * 1e3), &n(p.p_b * 1e3)),
         n(ab_read / p.p_b),
     );
+    w.explain(&[
+        ("ε′_{α}", M::ContactRatioDrawn.get(lang), ""),
+        ("B_{1}B_{2}", M::ActiveLine.get(lang), "mm"),
+    ]);
 }
 
 /// The practicum's report form of a wheel cut by the rack (seed 002 PZ1, Table 1.1 for the

@@ -127,3 +127,30 @@ fn every_note_keeps_the_form_of_gost_2_105() {
     );
     assert!(continued_tables >= 10, "{continued_tables}");
 }
+
+/// ГОСТ 2.105: under a formula that brings in a symbol, «где» and its meaning. Every
+/// displayed formula of every note, in every language, has its left side explained, under
+/// it or under an earlier one.
+#[test]
+fn every_formula_of_every_note_is_explained() {
+    let mut missing = Vec::new();
+    for path in support::scene_paths() {
+        let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+        let scene = tmm::load(&path).expect("scene");
+        let session = Session::new(&scene, Drafting::EXACT);
+        for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+            let note = tmm::note::compose(&session, lang).expect("note");
+            missing.extend(
+                note.unexplained
+                    .iter()
+                    .map(|m| format!("{name} {lang:?}: {m}")),
+            );
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "{} unexplained:\n{}",
+        missing.len(),
+        missing.join("\n")
+    );
+}
