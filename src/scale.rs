@@ -237,6 +237,13 @@ pub fn format_number(x: f64, lang: Lang) -> String {
 
 /// Format with at most `sig` significant digits (trailing zeros removed).
 pub fn format_sig(x: f64, sig: usize, lang: Lang) -> String {
+    format_sig_from(x, sig, lang, -6)
+}
+
+/// [`format_sig`] with the exponent form from magnitude `least` down (`-6`: from 1e-7;
+/// the note's `-3`: no run of more than two zeros after the decimal sign, 0,000724962 is
+/// 7,24962e−4).
+pub fn format_sig_from(x: f64, sig: usize, lang: Lang, least: i32) -> String {
     if x == 0.0 || !x.is_finite() {
         return if x.is_finite() {
             "0".into()
@@ -247,13 +254,13 @@ pub fn format_sig(x: f64, sig: usize, lang: Lang) -> String {
     let mag = x.abs().log10().floor() as i32;
     // Beyond 15 integer digits, below 1e-6 or beyond 15 decimals, the exponent form
     // (`1,73e−13`, `1e300`): never a long run of digits nor the significant digits cut off.
-    if !(-6..15).contains(&mag) || sig as i32 - 1 - mag > 15 {
+    if !(least..15).contains(&mag) || sig as i32 - 1 - mag > 15 {
         let sig = sig.max(1);
         let text = format!("{:.*e}", sig - 1, x);
         let (mantissa, exp) = text.split_once('e').unwrap_or((&text, "0"));
         let mantissa: f64 = mantissa.parse().unwrap_or(0.0);
         let exp = exp.replace('-', "−");
-        return format!("{}e{exp}", format_sig(mantissa, sig, lang));
+        return format!("{}e{exp}", format_sig_from(mantissa, sig, lang, least));
     }
     let decimals = (sig as i32 - 1 - mag).clamp(0, 15) as usize;
     let mut s = format!("{:.*}", decimals, x.abs());

@@ -4,7 +4,7 @@
 //! markup.
 
 use crate::plate::text::{parse, Script};
-use crate::scale::{format_sig, Lang};
+use crate::scale::{format_sig_from, Lang};
 use crate::sheets::captions::symbols::cyrillic;
 
 /// A Typst string literal of `text`.
@@ -70,7 +70,7 @@ fn superscript_of(c: char) -> Option<char> {
     }
 }
 
-/// A number as text, its exponent form (`1,44133e−8`, as [`format_sig`] writes past the
+/// A number as text, its exponent form (`1,44133e−8`, as [`format_sig_from`] writes past the
 /// plain range) as a power of ten in Unicode superscripts (`1,44133·10⁻⁸`), which [`text`]
 /// and [`label`] set as a superscript: ГОСТ 2.105 has no `e` form.
 pub(super) fn power_of_ten(number: &str) -> String {
@@ -167,10 +167,14 @@ pub(super) fn sym(markup: &str) -> String {
     out
 }
 
+/// The least magnitude the note writes as a plain number: 0,00724 (two zeros after the
+/// decimal sign at most); 0,000724 is 7,24·10⁻⁴ (ГОСТ 2.105: no run of zeros).
+pub(super) const LEAST_PLAIN: i32 = -3;
+
 /// A number in a formula, to `sig` significant digits with the language's decimal sign, set
 /// upright; a negative number with its minus sign.
 pub(super) fn num(x: f64, sig: usize, lang: Lang) -> String {
-    let t = format_sig(x, sig, lang);
+    let t = format_sig_from(x, sig, lang, LEAST_PLAIN);
     let (sign, abs) = match t.strip_prefix('-').or_else(|| t.strip_prefix('−')) {
         Some(abs) => ("-", abs),
         None => ("", t.as_str()),

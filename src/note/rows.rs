@@ -1,18 +1,22 @@
 //! The report's rows as the note's tables: by position (graphical, analytic and their
 //! difference for each quantity, the seed's Tables 2 and 9 shape) and of the whole scene.
 
-use super::markup::{label, power_of_ten, text, Align};
+use super::markup::{label, power_of_ten, text, Align, LEAST_PLAIN};
 use super::Writer;
 use crate::check::{is_zero, Method, Row, ZERO_FRACTION};
+use crate::scale::format_sig_from;
 use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
 
 pub(super) use crate::report::md_percent as percent;
 
-/// A value as the note prints it: [`crate::report::md_value`] to `sig` significant digits,
-/// its exponent form written as a power of ten (`1,44133e−8` → `1,44133·10⁻⁸`, set as a
-/// superscript by the note's markup; ГОСТ 2.105 has no `e` form).
+/// A value as the note prints it: to `sig` significant digits, below 0,001 as a power of ten
+/// (`1,44133·10⁻⁸`, the superscript set by the note's markup; ГОСТ 2.105 has neither the
+/// `e` form nor runs of zeros, [`LEAST_PLAIN`]); `—` for no number.
 pub(super) fn fmt(x: f64, sig: usize, lang: crate::scale::Lang) -> String {
-    power_of_ten(&crate::report::md_value(x, sig, lang))
+    if !x.is_finite() {
+        return crate::report::md_value(x, sig, lang);
+    }
+    power_of_ten(&format_sig_from(x, sig, lang, LEAST_PLAIN))
 }
 
 /// Significant digits of a value in the note's tables.
@@ -157,6 +161,7 @@ pub(super) fn of_scene(w: &mut Writer<'_, '_>, caption: &str, keep: impl Fn(&Row
         .zip(&rel)
         .filter(|(r, _)| keep(r))
         .map(|(r, d)| {
+            let pair = same_decimals([value(r.graphical, r), value(r.analytic, r)], 6, lang);
             vec![
                 label(&head(w, r)),
                 text(
@@ -164,8 +169,8 @@ pub(super) fn of_scene(w: &mut Writer<'_, '_>, caption: &str, keep: impl Fn(&Row
                         .map(|p| format!("{} {p}", r.method.name(lang)))
                         .unwrap_or_else(|| r.method.name(lang).to_string()),
                 ),
-                text(&fmt(value(r.graphical, r), 6, lang)),
-                text(&fmt(value(r.analytic, r), 6, lang)),
+                text(&pair[0]),
+                text(&pair[1]),
                 text(&d.map(|d| percent(d, lang)).unwrap_or_else(|| "—".into())),
             ]
         })
@@ -268,14 +273,26 @@ pub(super) fn numbers(
 
 /// The decimals every value of a column whose largest magnitude is `largest` is printed
 /// with (ГОСТ 2.105: one number of decimals in a column): as many as the largest needs for
-/// `digits` significant digits; `None` past 6 (a column of tiny values keeps its own
-/// significant digits, as powers of ten) or for a column of zeros.
+/// `digits` significant digits; `None` for a column whose largest value is below 0,001 (it
+/// keeps its own significant digits, as powers of ten: [`LEAST_PLAIN`]) or of zeros.
 fn decimals(largest: f64, digits: usize) -> Option<usize> {
     if largest == 0.0 || !largest.is_finite() {
         return None;
     }
-    let d = digits as i32 - 1 - largest.log10().floor() as i32;
-    (d <= 6).then_some(d.max(0) as usize)
+    let magnitude = largest.log10().floor() as i32;
+    let d = digits as i32 - 1 - magnitude;
+    (magnitude >= LEAST_PLAIN).then_some(d.max(0) as usize)
+}
+
+/// Two values of one quantity (graphical and analytic) with one number of decimals, those
+/// the larger needs for `digits` significant digits ([`decimals`]); as [`fmt`] past them.
+fn same_decimals(values: [f64; 2], digits: usize, lang: crate::scale::Lang) -> [String; 2] {
+    let largest = values[0].abs().max(values[1].abs());
+    values.map(|x| match decimals(largest, digits) {
+        _ if x == 0.0 => "0".into(),
+        Some(d) if x.is_finite() => crate::scale::format_fixed(x, d, lang),
+        _ => fmt(x, digits, lang),
+    })
 }
 
 /// The positions at which any of `quantities` was read, in the report's order.
