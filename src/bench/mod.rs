@@ -453,6 +453,16 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
             note_bytes / 1000
         ),
     });
+    let (composing, typesetting, pages) = rates::note_times(&shaper, reps)?;
+    throughput.push(Throughput {
+        name: format!("note {}", shaper.scene.stem),
+        per_second: 1.0 / (composing + typesetting),
+        note: format!(
+            "the explanatory note alone ({pages} pages, ru, read to 0,5 mm): composed {:.0} ms (a fresh session, the sheets it shows, the Typst source and its figures), typeset {:.0} ms (the `typst` crate: layout and PDF) — `tmm note`",
+            composing * 1e3,
+            typesetting * 1e3
+        ),
+    });
     let b = batch::batch_times(opts, reps)?;
     throughput.push(Throughput {
         name: format!("batch {} × {} (png)", shaper.scene.stem, b.variants),

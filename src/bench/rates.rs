@@ -358,6 +358,34 @@ pub(super) fn project_time(s: &Subject, reps: Reps) -> Result<(f64, usize), Benc
     Ok((t, note))
 }
 
+/// The explanatory note of `s` alone, best of the runs: composed (a fresh session, the
+/// sheets whose views it shows, the Typst source with its figures) and typeset (the PDF),
+/// seconds each, and its pages — what `tmm note` adds to the sheets.
+pub(super) fn note_times(s: &Subject, reps: Reps) -> Result<(f64, f64, usize), BenchError> {
+    let failed = |detail: String| BenchError::Plate {
+        scene: s.scene.stem.clone(),
+        plate: "note".into(),
+        detail,
+    };
+    let compose = || {
+        let session = Session::new(&s.scene, Drafting::HAND);
+        crate::note::compose(&session, Lang::Ru).map_err(|e| e.to_string())
+    };
+    let composing = best_time(reps.best_of.min(3), compose).map_err(failed)?;
+    let note = compose().map_err(failed)?;
+    let mut pdf = Vec::new();
+    let typesetting = best_time(reps.best_of.min(3), || {
+        pdf = crate::note::to_pdf(&note).map_err(|e| e.to_string())?;
+        Ok::<_, String>(pdf.len())
+    })
+    .map_err(failed)?;
+    let pages = crate::note::to_text(&note)
+        .map_err(|e| failed(e.to_string()))?
+        .matches(crate::note::PAGE_BREAK)
+        .count();
+    Ok((composing, typesetting, pages))
+}
+
 #[cfg(test)]
 mod tests {
     use super::StackFloor;

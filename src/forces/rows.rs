@@ -208,13 +208,12 @@ pub fn seed_notes(seed: &[SeedValue], rows: &[Row]) -> Vec<String> {
     let n = |x: f64| format_sig(x, 6, Lang::En);
     seed.iter()
         .map(|s| {
-            let row = rows.iter().find(|r| {
-                r.quantity() == s.quantity
-                    && r.position().as_deref() == Some(s.position.as_str())
-                    && s.method.is_none_or(|m| m == r.method)
-            });
             let method = s.method.map_or(String::new(), |m| format!(" ({})", m.key()));
-            match row {
+            let at = s
+                .position
+                .as_ref()
+                .map_or(String::new(), |p| format!("position {p}: "));
+            match s.row(rows) {
                 Some(r) => {
                     let a = r.analytic.abs();
                     let off = if a > 0.0 { (s.value - a) / a * 100.0 } else { f64::NAN };
@@ -225,8 +224,7 @@ pub fn seed_notes(seed: &[SeedValue], rows: &[Row]) -> Vec<String> {
                         format!(" = {} {unit}", n(s.value))
                     };
                     format!(
-                        "position {}: {}{method}: the seed prints {}{si} ({}); this analysis gives {} {unit} (analytic {} {unit}): the seed's value is {}{} % off and is not reproduced",
-                        s.position,
+                        "{at}{}{method}: the seed prints {}{si} ({}); this analysis gives {} {unit} (analytic {} {unit}): the seed's value is {}{} % off and is not reproduced",
                         s.quantity,
                         s.printed,
                         s.source,
@@ -237,8 +235,8 @@ pub fn seed_notes(seed: &[SeedValue], rows: &[Row]) -> Vec<String> {
                     )
                 }
                 None => format!(
-                    "position {}: {}{method}: the seed prints {} ({}), but this report has no such row",
-                    s.position, s.quantity, s.printed, s.source
+                    "{at}{}{method}: the seed prints {} ({}), but this report has no such row",
+                    s.quantity, s.printed, s.source
                 ),
             }
         })

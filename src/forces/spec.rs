@@ -161,14 +161,14 @@ impl ForceSpec {
     }
 }
 
-/// A value the seed prints for a row of the report (`[[forces.seed]]`): the report notes
+/// A value the seed prints for a row of the report (`[[seed]]`, `[[forces.seed]]`): the report notes
 /// how far it is from the analysis, so that a seed's error is flagged, never matched.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SeedValue {
     /// The row's quantity (`F_bal`, `h_0_5`).
     pub quantity: String,
-    /// The row's position label.
-    pub position: String,
+    /// The row's position label (`None`: a quantity of the whole scene, `r_b1`).
+    pub position: Option<String>,
     /// The row's method (`None`: the first row of the quantity at the position).
     pub method: Option<crate::check::Method>,
     /// The seed's value in the row's SI unit (its magnitude is compared).
@@ -184,6 +184,18 @@ pub struct SeedValue {
     /// What is wrong with it, in each language of the note (`None`: the note says only
     /// that the value is not reproduced).
     pub why: Option<crate::scene::Localised>,
+}
+
+impl SeedValue {
+    /// The report's row it names: its quantity at its position (none for a quantity of the
+    /// whole scene) by its method (the first such row when it names none).
+    pub fn row<'r>(&self, rows: &'r [crate::check::Row]) -> Option<&'r crate::check::Row> {
+        rows.iter().find(|r| {
+            r.quantity() == self.quantity
+                && r.position() == self.position
+                && self.method.is_none_or(|m| m == r.method)
+        })
+    }
 }
 
 /// The indicator diagram of one cylinder.

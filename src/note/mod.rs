@@ -12,6 +12,7 @@
 
 mod cam;
 mod cam_special;
+mod conclusions;
 mod explain;
 mod friction;
 mod front;
@@ -264,7 +265,7 @@ pub fn compose_with(
         gears::gears(&mut w)?;
     }
     machines::others(&mut w)?;
-    front::conclusions(&mut w);
+    conclusions::conclusions(&mut w);
     front::references(&mut w);
     w.explained.settle();
     Ok(Note {

@@ -5,12 +5,10 @@
 use super::check::{item, join, number, quoted, Checker};
 use super::keys::Key;
 use super::kinematics::{point, point_names, position_labels};
-use super::model::Localised;
-use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance, RawSeedValue};
-use crate::check::Method;
+use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance};
 use crate::forces::{carrier, PairFriction};
 use crate::forces::{
-    Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, SeedValue, Stroke, G_STANDARD,
+    Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke, G_STANDARD,
 };
 use crate::linkage::{Mechanism, Program};
 use crate::scale::Quantity;
@@ -126,7 +124,9 @@ pub(crate) fn forces(
             .seed
             .iter()
             .enumerate()
-            .filter_map(|(i, s)| seed_value(check, &item(&key("seed"), i), s, &positions))
+            .filter_map(|(i, s)| {
+                super::seed::seed_value(check, &item(&key("seed"), i), s, Some(&positions))
+            })
             .collect(),
         positions,
     };
@@ -140,88 +140,6 @@ pub(crate) fn forces(
     let what = "the largest load it declares";
     super::drawing::draws(check, Key::ForcesScaleF.path(), spec.scale_f, what, largest);
     spec
-}
-
-/// One kilogram-force, N.
-const KGF: f64 = 9.806_65;
-
-/// `[[forces.seed]]`: the quantity (a force, moment or length row of the force analysis),
-/// one of the analysed positions, the method, the value with its unit, the source.
-fn seed_value(
-    check: &mut Checker,
-    base: &str,
-    raw: &RawSeedValue,
-    positions: &[String],
-) -> Option<SeedValue> {
-    let k = |s: &str| join(base, s);
-    const QUANTITY: &str = "a row of the force analysis (R_1_2, F_bal, M_bal, h_0_5, F_in2)";
-    let quantity = check.required(&k("quantity"), raw.quantity.clone(), QUANTITY)?;
-    let units: &[(&'static str, f64)] = match quantity.split('_').next() {
-        Some("R" | "F") => &[("N", 1.0), ("kgf", KGF)],
-        Some("M") => &[("N*m", 1.0), ("kgf*m", KGF)],
-        Some("h") => &[("m", 1.0), ("mm", 1e-3)],
-        _ => {
-            check.push(
-                k("quantity"),
-                Some(quoted(&quantity)),
-                format!("expected {QUANTITY}"),
-            );
-            return None;
-        }
-    };
-    let position = check.required(&k("position"), raw.position.clone(), "an analysed position");
-    if let Some(p) = position.as_ref().filter(|p| !positions.contains(p)) {
-        let list: Vec<String> = positions.iter().map(|p| quoted(p)).collect();
-        check.push(
-            k("position"),
-            Some(quoted(p)),
-            format!("expected one of forces.positions ({})", list.join(", ")),
-        );
-    }
-    let method = match raw.method.as_deref() {
-        None => None,
-        Some(_) => check.word(
-            &k("method"),
-            raw.method.as_ref(),
-            &[
-                ("polygon", Method::Polygon),
-                ("lever", Method::Lever),
-                ("plan", Method::Plan),
-            ],
-        ),
-    };
-    let value = check.required(&k("value"), raw.value, "the value the seed prints")?;
-    let table: Vec<(&str, (&str, f64))> = units.iter().map(|u| (u.0, *u)).collect();
-    let (unit, factor) = check.word(&k("unit"), raw.unit.as_ref(), &table)?;
-    let value = check.in_range(&k("value"), value.abs(), MAX_LOAD, "a finite value, not 0");
-    let source = check.required(&k("source"), raw.source.clone(), "where the seed prints it")?;
-    let why = match &raw.why {
-        None => None,
-        Some(w) => {
-            const WHY: &str = "what is wrong with the value, in this language";
-            let mut text = |lang: &str, t: &Option<String>| {
-                check.required(&join(&k("why"), lang), t.clone(), WHY)
-            };
-            let (ru, uk, en) = (text("ru", &w.ru), text("uk", &w.uk), text("en", &w.en));
-            Some(Localised {
-                ru: ru?,
-                uk: uk?,
-                en: en?,
-            })
-        }
-    };
-    let printed_value = raw.value.unwrap_or(value);
-    Some(SeedValue {
-        quantity,
-        position: position?,
-        method,
-        value: value * factor,
-        printed: format!("{} {unit}", number(printed_value)),
-        printed_value,
-        printed_unit: unit,
-        source,
-        why,
-    })
 }
 
 /// `[forces.friction]`: f, the journals' radius and the journals of their own radius.

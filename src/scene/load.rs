@@ -167,6 +167,13 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         .dynamics
         .map(|d| dynamics(&mut check, d, forces.as_ref(), has_forces));
     let answer_key = answer_key(&mut check, raw.answer_key.unwrap_or_default());
+    let seed = raw
+        .seed
+        .unwrap_or_default()
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| super::seed::seed_value(&mut check, &format!("seed[{i}]"), s, None))
+        .collect();
     if check.problems.is_empty() {
         Ok(Scene {
             path: path.to_path_buf(),
@@ -184,6 +191,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             gears,
             cam,
             answer_key,
+            seed,
         })
     } else {
         Err(SceneError::Invalid {

@@ -21,6 +21,7 @@ mod model;
 mod outputs;
 mod planetary;
 mod raw;
+mod seed;
 mod structure;
 mod text;
 mod toml_error;

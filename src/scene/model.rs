@@ -212,6 +212,9 @@ pub struct Scene {
     pub cam: Option<crate::cam::CamSpec>,
     /// The values of the answer key of `tmm batch` (`[answer_key] values`), in file order.
     pub answer_key: Vec<AnswerItem>,
+    /// The values the seed prints for rows of the report that the analysis does not
+    /// reproduce (`[[seed]]`), in file order: flagged by the report, explained by the note.
+    pub seed: Vec<crate::forces::SeedValue>,
 }
 
 /// One value of an answer key: a report row named as the report names it,

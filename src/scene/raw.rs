@@ -23,6 +23,7 @@ pub(crate) struct RawScene {
     pub planetary: Option<super::planetary::RawPlanetary>,
     pub cam: Option<super::cam::RawCam>,
     pub answer_key: Option<RawAnswerKey>,
+    pub seed: Option<Vec<RawSeedValue>>,
 }
 
 /// `[answer_key]`: the values an instructor checks over a class's variants (`tmm batch`).

@@ -215,6 +215,8 @@ impl<'s> Session<'s> {
         for part in parts {
             (part.add)(self, &mut rep)?;
         }
+        rep.notes
+            .extend(crate::forces::seed_notes(&self.scene.seed, &rep.rows));
         Ok(rep)
     }
 }

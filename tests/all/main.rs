@@ -39,6 +39,7 @@ mod mechanism_limits;
 mod messages;
 mod mutations;
 mod note;
+mod note_errata;
 mod note_form;
 mod note_language;
 mod output;

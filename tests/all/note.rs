@@ -252,7 +252,7 @@ fn the_train_notes_say_what_the_seed_leaves_out_and_work_the_differential() {
     }
     let ex2 = text("constructions/gears-pz2-ex2.toml");
     for part in [
-        "Расхождения с источником".to_string(),
+        "Значения источника, которые проект не воспроизводит".to_string(),
         tmm::scale::format_sig((20.0 - 32.0) / 32.0 * 100.0, 3, Lang::Ru),
         sig5(2.0 * 24.0 / (11.0 + 45.0)),
         "напечатанное значение требует".to_string(),

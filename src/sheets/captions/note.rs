@@ -418,10 +418,9 @@ catalogue! {
             "не випливає з даних джерела",
             "does not follow from the source's data"
         ),
-        SeedValues => ("Расхождения с источником", "Розбіжності з джерелом", "Differences from the source"),
-        SeedPrints => ("в источнике", "у джерелі", "the source"),
-        Deviation => ("расхождение, %", "розбіжність, %", "off by, %"),
-        Why => ("причина", "причина", "reason"),
+        SeedGives => ("в источнике", "у джерелі", "the source gives"),
+        SeedExactValue => ("точное значение", "точне значення", "the exact value is"),
+        SeedOffBy => ("расхождение", "розбіжність", "off by"),
         SeedFlywheel => (
             "не следует из данных источника: точное интегрирование уравнения движения",
             "не випливає з даних джерела: точне інтегрування рівняння руху",
