@@ -299,6 +299,16 @@ pub fn to_pdf(note: &Note) -> Result<Vec<u8>, NoteError> {
     typeset::pdf(&note.source, &note.files)
 }
 
+/// How full each typeset page of the note is: the depth of its lowest line or picture over
+/// the text field's height, 0 … 1 (ГОСТ 2.105's note leaves no page more than a quarter
+/// empty but at a section's end).
+///
+/// # Errors
+/// [`NoteError::Typeset`] when the typesetter refuses the source.
+pub fn page_fills(note: &Note) -> Result<Vec<f64>, NoteError> {
+    typeset::fills(&note.source, &note.files)
+}
+
 /// The text the typeset note shows, page by page in the order it is laid out, each run of
 /// text (a line's stretch in one font) followed by a space and each page by a form feed
 /// ([`PAGE_BREAK`]): what a reader finds by searching the PDF.

@@ -152,6 +152,52 @@ pub(super) fn text(source: &str, files: &[(String, Vec<u8>)]) -> Result<String, 
     Ok(out)
 }
 
+/// The page's text field, mm from its top edge: under the top margin, above the bottom one
+/// (the template's `#set page(margin: …)`).
+const FIELD_MM: (f64, f64) = (15.0, 25.0);
+
+/// How full the text field of each page of a Typst `source` is: the depth of its lowest text
+/// or picture below the field's top over the field's height, 0 … 1 (the frame and its title
+/// block, under the field, left out).
+///
+/// # Errors
+/// As [`pdf`].
+pub(super) fn fills(source: &str, files: &[(String, Vec<u8>)]) -> Result<Vec<f64>, NoteError> {
+    /// The lowest point (pt from the page's top) of the text and pictures of `frame` at
+    /// `dy` that lie above `floor`.
+    fn lowest(frame: &Frame, dy: f64, floor: f64, low: &mut f64) {
+        for (at, item) in frame.items() {
+            let y = dy + at.y.to_pt();
+            let bottom = match item {
+                FrameItem::Text(_) => y,
+                FrameItem::Image(_, size, _) => y + size.y.to_pt(),
+                FrameItem::Group(group) => {
+                    let ty = group.transform.ty.to_pt();
+                    lowest(&group.frame, y + ty, floor, low);
+                    continue;
+                }
+                _ => continue,
+            };
+            if bottom <= floor {
+                *low = low.max(bottom);
+            }
+        }
+    }
+    let pt = |mm: f64| mm * 72.0 / 25.4;
+    let document = layout(&world(source, files)?)?;
+    Ok(document
+        .pages()
+        .iter()
+        .map(|page| {
+            let top = pt(FIELD_MM.0);
+            let floor = page.frame.height().to_pt() - pt(FIELD_MM.1);
+            let mut low = top;
+            lowest(&page.frame, 0.0, floor + 1.0, &mut low);
+            ((low - top) / (floor - top)).clamp(0.0, 1.0)
+        })
+        .collect())
+}
+
 /// The first few diagnostics, each with the source line it points at.
 fn diagnostics(world: &NoteWorld, errors: &[SourceDiagnostic]) -> String {
     errors

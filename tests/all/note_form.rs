@@ -155,3 +155,81 @@ fn every_formula_of_every_note_is_explained() {
         missing.join("\n")
     );
 }
+
+/// Issue 44 §2: no page of a note more than a quarter empty but the title page, the
+/// contents and a page a section's end leaves: the next page opens a section, or only the
+/// section's last figures stand between (the template places any still floating there).
+#[test]
+fn no_page_of_the_shapers_note_is_a_quarter_empty_inside_a_section() {
+    let path = support::root().join("constructions/shaper.toml");
+    for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+        let scene = tmm::load(&path).expect("scene");
+        let session = Session::new(&scene, Drafting::HAND);
+        let note = tmm::note::compose(&session, lang).expect("note");
+        let fills = tmm::note::page_fills(&note).expect("typeset");
+        let text = tmm::note::to_text(&note).expect("typeset");
+        let pages: Vec<String> = text
+            .split(tmm::note::PAGE_BREAK)
+            .map(|p| p.split_whitespace().collect::<Vec<_>>().join(" "))
+            .collect();
+        // A page opens a section when it starts with the title of a heading of the first
+        // level (`= …` in the source), after its number.
+        let titles: Vec<String> = note
+            .source
+            .lines()
+            .filter_map(|l| l.strip_prefix("= #\""))
+            .filter_map(|l| l.split('"').next())
+            .map(str::to_string)
+            .collect();
+        // Where on a page a section opens: the byte offset of the first title on it.
+        let opens = |page: &str| {
+            let page = page.to_lowercase();
+            titles
+                .iter()
+                .filter_map(|t| page.find(&t.to_lowercase().chars().take(24).collect::<String>()))
+                .min()
+        };
+        // A page of figures alone: no sentence on it but their captions' (three words of
+        // four letters running; a drawing's labels are short).
+        let figure = match lang {
+            Lang::En => "Figure ",
+            _ => "Рисунок ",
+        };
+        let figures_only = |page: &str| {
+            let mut run = 0;
+            for word in page.split(' ') {
+                if word.to_lowercase() == figure.trim().to_lowercase() {
+                    // A caption: its words are the figure's.
+                    run = -8;
+                } else if word.chars().count() >= 4 && word.chars().all(char::is_alphabetic) {
+                    run += 1;
+                    if run >= 3 {
+                        return false;
+                    }
+                } else {
+                    run = run.min(0);
+                }
+            }
+            true
+        };
+        // A section's end: up to the next section's title, its last figures alone.
+        let ends_section = |k: usize| {
+            for page in &pages[k + 1..] {
+                let lower = page.to_lowercase();
+                match opens(page) {
+                    Some(at) => return figures_only(&lower[..at]),
+                    None if !figures_only(page) => return false,
+                    None => {}
+                }
+            }
+            true
+        };
+        let mut sparse = Vec::new();
+        for (k, fill) in fills.iter().enumerate().skip(2) {
+            if *fill < 0.75 && !ends_section(k) {
+                sparse.push(format!("page {} {:.0} %", k + 1, fill * 100.0));
+            }
+        }
+        assert!(sparse.is_empty(), "{lang:?}: {}", sparse.join(", "));
+    }
+}
