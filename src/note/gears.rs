@@ -63,6 +63,9 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let q = quantities(&w.report.rows, |r| {
         r.key.symbol == Symbol::SpecificSliding && !on_contour(r)
     });
+    if let Some((pair, _)) = &study.pair {
+        sliding_table(w, pair);
+    }
     let caption = w.word(T::SlidingTable);
     by_position(w, caption, &q);
     let caption = w.word(T::BlockingTable);
@@ -329,6 +332,49 @@ fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
         l(p.p_b),
     );
     w.explain(&[("p_{b}", M::BasePitch.get(lang), "mm")]);
+}
+
+/// The specific sliding in the shape of seed 000's Table 6: λ₁ and λ₂ at N₁, at the ends of
+/// the active line B₁ and B₂, at the pitch point P, midway between P and B₂ and at N₂
+/// (the seed's points X = 0; 42,75; 66,5; 91,75; 117; g), X along N₁N₂ in mm.
+fn sliding_table(w: &mut Writer<'_, '_>, p: &Pair) {
+    let lang = w.lang;
+    let [b1, b2] = p.active_ends();
+    let pole = p.pole();
+    let points = [
+        ("N_{1}", 0.0),
+        ("B_{1}", b1),
+        ("P", pole),
+        ("", (pole + b2) / 2.0),
+        ("B_{2}", b2),
+        ("N_{2}", p.g),
+    ];
+    let value = |x: f64| {
+        if x.is_finite() {
+            crate::scale::format_fixed(x, 3, lang)
+        } else {
+            "−∞".into()
+        }
+    };
+    let mut head = vec![text(w.word(T::PointOfLine))];
+    head.extend(points.iter().map(|(name, _)| label(name)));
+    let mut xs = vec![label(&format!("X, {}", unit_in("mm", lang)))];
+    xs.extend(
+        points
+            .iter()
+            .map(|(_, x)| text(&crate::scale::format_fixed(x * 1e3, 2, lang))),
+    );
+    let mut rows = vec![xs];
+    for (i, name) in ["λ_{1}", "λ_{2}"].into_iter().enumerate() {
+        let mut row = vec![label(name)];
+        row.extend(points.iter().map(|(_, x)| text(&value(p.sliding(*x)[i]))));
+        rows.push(row);
+    }
+    let mut align = vec![Align::Centre; head.len()];
+    align[0] = Align::Left;
+    w.doc.say(w.word(T::SlidingWorked));
+    w.doc
+        .table(w.word(T::SlidingAtPoints), &align, &head, &rows);
 }
 
 /// ε_α by the textbook's formula and as the active line read off the meshing picture over

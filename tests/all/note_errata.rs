@@ -60,3 +60,77 @@ fn the_shapers_conclusions_give_every_erratum_of_seed_000_with_its_exact_value()
         );
     }
 }
+
+/// Issue 44 §1: the seed's Table 6 shape — the specific sliding at N₁, B₁, P, midway to B₂,
+/// B₂ and N₂, against seed-000-cases.md's real geometry (x_B1 = 27.168, x_P = 42.785,
+/// x_B2 = 74.906, N₁N₂ = 141.52 mm; λ₁(B₁) = −0.8239, λ₂(B₁) = 0.4517, λ₁(B₂) = 0.6146,
+/// λ₂(B₂) = −1.5949).
+#[test]
+fn the_shapers_note_gives_the_specific_sliding_at_the_seeds_points() {
+    let scene = tmm::load(&support::root().join("constructions/shaper.toml")).expect("scene");
+    let session = Session::new(&scene, Drafting::EXACT);
+    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    let text = tmm::note::to_text(&note).expect("typeset");
+    let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    let from = text
+        .find("Удельное скольжение в точках линии зацепления")
+        .expect("Table 6's caption");
+    let table = &text[from..];
+    let row = |head: &str| -> Vec<f64> {
+        // A subscript is a run of its own: `λ 1` as well as `λ1`.
+        let spaced = head
+            .char_indices()
+            .find(|(_, c)| c.is_ascii_digit())
+            .map_or(head.to_string(), |(i, _)| {
+                format!("{} {}", &head[..i], &head[i..])
+            });
+        let (at, len) = [head, spaced.as_str()]
+            .iter()
+            .find_map(|h| table.find(h).map(|at| (at, h.len())))
+            .unwrap_or_else(|| panic!("row {head}"));
+        let at = at + len;
+        table[at..]
+            .split(' ')
+            .filter(|w| !w.is_empty())
+            .take(6)
+            .map(|w| {
+                w.replace(',', ".")
+                    .replace('−', "-")
+                    .replace("-∞", "-inf")
+                    .parse()
+                    .expect(w)
+            })
+            .collect()
+    };
+    let close = |got: &[f64], want: &[f64], tol: f64, what: &str| {
+        for (g, w) in got.iter().zip(want) {
+            assert!(
+                (g == w) || (g - w).abs() <= tol,
+                "{what}: {got:?} against {want:?}"
+            );
+        }
+    };
+    // X to the table's 0,01 mm.
+    close(
+        &row("X, мм "),
+        &[0.0, 27.168, 42.785, 58.85, 74.906, 141.52],
+        0.011,
+        "X",
+    );
+    let l1 = row("λ1 ");
+    close(
+        &[l1[1], l1[2], l1[4]],
+        &[-0.8239, 0.0, 0.6146],
+        0.0006,
+        "λ₁",
+    );
+    assert_eq!(l1[0], f64::NEG_INFINITY);
+    let l2 = row("λ2 ");
+    close(
+        &[l2[1], l2[2], l2[4]],
+        &[0.4517, 0.0, -1.5949],
+        0.0006,
+        "λ₂",
+    );
+    assert_eq!(l2[5], f64::NEG_INFINITY);
+}
