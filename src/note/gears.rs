@@ -372,7 +372,24 @@ fn sliding_table(w: &mut Writer<'_, '_>, p: &Pair) {
     }
     let mut align = vec![Align::Centre; head.len()];
     align[0] = Align::Left;
-    w.doc.say(w.word(T::SlidingWorked));
+    w.doc.say(&format!("{}:", w.word(T::SlidingWorked)));
+    let (z1, z2) = (sym("z_{1}"), sym("z_{2}"));
+    w.formula(&format!(
+        "{} = 1 - {}",
+        sym("λ_{1}"),
+        frac(&format!("(g - X) {z1}"), &format!("{z2} X"))
+    ));
+    w.explain(&[
+        ("λ_{1}", &format!("{} 1", M::SlidingOfWheel.get(lang)), ""),
+        ("g", M::LineOfAction.get(lang), "mm"),
+        ("X", M::ContactDistance.get(lang), "mm"),
+    ]);
+    w.formula(&format!(
+        "{} = 1 - {}",
+        sym("λ_{2}"),
+        frac(&format!("{z2} X"), &format!("(g - X) {z1}"))
+    ));
+    w.explain(&[("λ_{2}", &format!("{} 2", M::SlidingOfWheel.get(lang)), "")]);
     w.doc
         .table(w.word(T::SlidingAtPoints), &align, &head, &rows);
 }

@@ -88,6 +88,30 @@ fn check(name: &str, pages: &[String], lang: Lang) -> usize {
         );
     }
     assert!(!whole.contains("Рис. "), "{name}: «Рис.»");
+    // «где» under a formula: every explanation («где W — …») follows a formula's number.
+    let word = match lang {
+        Lang::Uk => " де ",
+        _ => " где ",
+    };
+    for (at, _) in whole.match_indices(word) {
+        let after: String = whole[at + word.len()..].chars().take(40).collect();
+        if !after.contains('—') {
+            continue;
+        }
+        let before: String = whole[..at]
+            .chars()
+            .rev()
+            .take(500)
+            .collect::<Vec<_>>()
+            .into_iter()
+            .rev()
+            .collect();
+        assert!(
+            !formula_numbers(&before).is_empty(),
+            "{name}: «{}{after}» under no formula",
+            word.trim()
+        );
+    }
     // No number in the `1,44e−8` form: a power of ten.
     let chars: Vec<char> = whole.chars().collect();
     for w in chars.windows(4) {

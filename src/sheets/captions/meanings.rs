@@ -34,6 +34,9 @@ catalogue! {
         BasePitch => ("основной шаг", "основний крок", "the base pitch"),
         ContactRatio => ("коэффициент торцового перекрытия по формуле", "коефіцієнт торцевого перекриття за формулою", "the transverse contact ratio by the formula"),
         ContactRatioDrawn => ("коэффициент торцового перекрытия по картине зацепления", "коефіцієнт торцевого перекриття за картиною зачеплення", "the transverse contact ratio off the meshing picture"),
+        SlidingOfWheel => ("удельное скольжение профиля колеса", "питоме ковзання профілю колеса", "the specific sliding of the profile of wheel"),
+        ContactDistance => ("расстояние точки контакта от точки N_{1}", "відстань точки контакту від точки N_{1}", "the contact point's distance from N_{1}"),
+        LineOfAction => ("длина теоретической линии зацепления N_{1}N_{2}", "довжина теоретичної лінії зачеплення N_{1}N_{2}", "the length of the theoretical line of action N_{1}N_{2}"),
         ActiveLine => ("длина активной линии зацепления на чертеже", "довжина активної лінії зачеплення на кресленні", "the length of the active line of action on the drawing"),
     }
 }

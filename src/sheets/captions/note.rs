@@ -294,9 +294,9 @@ catalogue! {
             "Specific sliding at the points of the line of action"
         ),
         SlidingWorked => (
-            "Удельное скольжение профилей находим по формулам λ_{1} = 1 − (g − X)·z_{1}/(z_{2}·X), λ_{2} = 1 − z_{2}·X/((g − X)·z_{1}), где X — расстояние точки контакта от N_{1}, g = N_{1}N_{2} (таблица ниже; по концам активной линии — с чертежа, таблица за ней):",
-            "Питоме ковзання профілів знаходимо за формулами λ_{1} = 1 − (g − X)·z_{1}/(z_{2}·X), λ_{2} = 1 − z_{2}·X/((g − X)·z_{1}), де X — відстань точки контакту від N_{1}, g = N_{1}N_{2} (таблиця нижче; на кінцях активної лінії — з креслення, таблиця за нею):",
-            "The specific sliding of the profiles is found as λ_{1} = 1 − (g − X)·z_{1}/(z_{2}·X), λ_{2} = 1 − z_{2}·X/((g − X)·z_{1}), X being the contact point's distance from N_{1} and g = N_{1}N_{2} (the table below; at the ends of the active line off the drawing, the table after it):"
+            "Удельное скольжение профилей в точках линии зацепления находим по формулам",
+            "Питоме ковзання профілів у точках лінії зачеплення знаходимо за формулами",
+            "The specific sliding of the profiles at the points of the line of action is found by the formulas"
         ),
         PointOfLine => ("Точка", "Точка", "Point"),
         FormulaColumn => ("формула", "формула", "formula"),
