@@ -5,7 +5,7 @@
 //! ([`super::flywheel`]).
 
 use super::markup::{frac, inline, num, sym, text, unit};
-use super::moments::{explain_owned, fill};
+use super::moments::{explain_owned, fill, long_sum, visible, ONE_LINE_CHARS};
 use super::rows::{by_position, numbers, of_scene, quantities, Column};
 use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
@@ -218,7 +218,12 @@ fn inertia_table(w: &mut Writer<'_, '_>, d: &Dynamics) {
 /// reduction's numbers (the seed's example at its position 5).
 fn reduced_moment(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(), NoteError> {
     let lang = w.lang;
-    let w1 = w.session.mechanism("the explanatory note")?.crank.omega.abs();
+    let w1 = w
+        .session
+        .mechanism("the explanatory note")?
+        .crank
+        .omega
+        .abs();
     let b = &d.analytic_shares[i];
     w.doc.say(w.word(N::ReducedMoment));
     w.formula(&format!(
@@ -235,11 +240,19 @@ fn reduced_moment(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(), 
         )
     ));
     let items = [
-        ("M_{пр}".to_string(), w.word(M::ReducedMoment).to_string(), "N*m"),
+        (
+            "M_{пр}".to_string(),
+            w.word(M::ReducedMoment).to_string(),
+            "N*m",
+        ),
         ("F_{i}".to_string(), w.word(M::LoadForce).to_string(), "N"),
         ("V_{i}".to_string(), w.word(M::LoadSpeed).to_string(), "m/s"),
         ("α_{i}".to_string(), w.word(M::LoadAngle).to_string(), "deg"),
-        ("ω_{1}".to_string(), w.word(M::CrankSpeed).to_string(), "rad/s"),
+        (
+            "ω_{1}".to_string(),
+            w.word(M::CrankSpeed).to_string(),
+            "rad/s",
+        ),
     ];
     explain_owned(w, &items);
     let s = fill(w.word(N::ForPosition), &[("position", d.labels[i].clone())]);
@@ -270,20 +283,43 @@ fn reduced_moment(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(), 
             }
         }
     }
-    w.formula(&format!(
-        "{} = {} = {}{}",
-        sym("M_{пр}"),
-        frac(&numbers.join(" + "), &num(w1, 5, lang)),
-        num(b.reduced().m(), 5, lang),
-        unit(&unit_in("N*m", lang))
-    ));
+    let value = b.reduced().m();
+    let result = format!("{}{}", num(value, 5, lang), unit(&unit_in("N*m", lang)));
+    if visible(&numbers.join(" + ")) <= ONE_LINE_CHARS {
+        w.formula(&format!(
+            "{} = {} = {result}",
+            sym("M_{пр}"),
+            frac(&numbers.join(" + "), &num(w1, 5, lang)),
+        ));
+    } else {
+        // The powers on lines of their own, then their total through ω₁.
+        let pieces: Vec<(f64, String)> = numbers.into_iter().map(|n| (1.0, n)).collect();
+        let power = value * w1;
+        let total = format!("{}{}", num(power, 6, lang), unit(&unit_in("W", lang)));
+        long_sum(
+            w,
+            &format!("{} {}", sym("M_{пр}"), sym("ω_{1}")),
+            &pieces,
+            &total,
+        );
+        w.formula(&format!(
+            "{} = {} = {result}",
+            sym("M_{пр}"),
+            frac(&num(power, 6, lang), &num(w1, 5, lang)),
+        ));
+    }
     Ok(())
 }
 
 /// J_пр = J_const + Σ(m·(V_S/ω₁)² + J_S·(ω/ω₁)²) as a formula, then worked at position `i`.
 fn reduced_inertia(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(), NoteError> {
     let lang = w.lang;
-    let w1 = w.session.mechanism("the explanatory note")?.crank.omega.abs();
+    let w1 = w
+        .session
+        .mechanism("the explanatory note")?
+        .crank
+        .omega
+        .abs();
     let b = &d.analytic_shares[i];
     w.doc.say(w.word(N::ReducedInertia));
     let ratio = |top: &str| format!("({})^2", frac(&sym(top), &sym("ω_{1}")));
@@ -297,12 +333,32 @@ fn reduced_inertia(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(),
         ratio("ω_{i}")
     ));
     let items = [
-        ("J_{пр}".to_string(), w.word(M::ReducedInertia).to_string(), "kg*m^2"),
-        ("J_{const}".to_string(), w.word(M::ConstantInertia).to_string(), "kg*m^2"),
+        (
+            "J_{пр}".to_string(),
+            w.word(M::ReducedInertia).to_string(),
+            "kg*m^2",
+        ),
+        (
+            "J_{const}".to_string(),
+            w.word(M::ConstantInertia).to_string(),
+            "kg*m^2",
+        ),
         ("m_{i}".to_string(), w.word(M::LinkMass).to_string(), "kg"),
-        ("V_{Si}".to_string(), w.word(M::CentreSpeed).to_string(), "m/s"),
-        ("J_{Si}".to_string(), w.word(M::LinkInertia).to_string(), "kg*m^2"),
-        ("ω_{i}".to_string(), w.word(M::LinkSpeed).to_string(), "rad/s"),
+        (
+            "V_{Si}".to_string(),
+            w.word(M::CentreSpeed).to_string(),
+            "m/s",
+        ),
+        (
+            "J_{Si}".to_string(),
+            w.word(M::LinkInertia).to_string(),
+            "kg*m^2",
+        ),
+        (
+            "ω_{i}".to_string(),
+            w.word(M::LinkSpeed).to_string(),
+            "rad/s",
+        ),
     ];
     explain_owned(w, &items);
     let s = fill(w.word(N::ForPosition), &[("position", d.labels[i].clone())]);
@@ -325,13 +381,21 @@ fn reduced_inertia(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(),
             ));
         }
     }
-    w.formula(&format!(
-        "{} = {} = {}{}",
-        sym("J_{пр}"),
-        numbers.join(" + "),
+    let result = format!(
+        "{}{}",
         num(b.reduced().j, 5, lang),
         unit(&unit_in("kg*m^2", lang))
-    ));
+    );
+    if visible(&numbers.join(" + ")) <= ONE_LINE_CHARS {
+        w.formula(&format!(
+            "{} = {} = {result}",
+            sym("J_{пр}"),
+            numbers.join(" + ")
+        ));
+    } else {
+        let pieces: Vec<(f64, String)> = numbers.into_iter().map(|n| (1.0, n)).collect();
+        long_sum(w, &sym("J_{пр}"), &pieces, &result);
+    }
     Ok(())
 }
 
@@ -349,7 +413,12 @@ fn links_energy(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) {
         "{} = {} = {} = {}{}",
         sym("T_{зв}"),
         frac(
-            &format!("({} - {}) {}^2", sym("J_{пр}"), sym("J_{const}"), sym("ω_{ср}")),
+            &format!(
+                "({} - {}) {}^2",
+                sym("J_{пр}"),
+                sym("J_{const}"),
+                sym("ω_{ср}")
+            ),
             "2"
         ),
         frac(
@@ -365,8 +434,16 @@ fn links_energy(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) {
         unit(&unit_in("J", lang))
     ));
     let items = [
-        ("T_{зв}".to_string(), w.word(M::LinksEnergy).to_string(), "J"),
-        ("ω_{ср}".to_string(), w.word(M::MeanSpeed).to_string(), "rad/s"),
+        (
+            "T_{зв}".to_string(),
+            w.word(M::LinksEnergy).to_string(),
+            "J",
+        ),
+        (
+            "ω_{ср}".to_string(),
+            w.word(M::MeanSpeed).to_string(),
+            "rad/s",
+        ),
     ];
     explain_owned(w, &items);
     if j_const > 0.0 {
@@ -391,9 +468,21 @@ fn work_scale(w: &mut Writer<'_, '_>, d: &Dynamics) {
         unit(&unit_in("J/mm", lang))
     ));
     let items = [
-        ("μ_{A}".to_string(), w.word(M::WorkScale).to_string(), "J/mm"),
-        ("μ_{M}".to_string(), w.word(M::MomentScale).to_string(), "N*m/mm"),
-        ("μ_{φ}".to_string(), w.word(M::AngleScale).to_string(), "rad/mm"),
+        (
+            "μ_{A}".to_string(),
+            w.word(M::WorkScale).to_string(),
+            "J/mm",
+        ),
+        (
+            "μ_{M}".to_string(),
+            w.word(M::MomentScale).to_string(),
+            "N*m/mm",
+        ),
+        (
+            "μ_{φ}".to_string(),
+            w.word(M::AngleScale).to_string(),
+            "rad/mm",
+        ),
         ("H".to_string(), w.word(M::PoleDistance).to_string(), "mm"),
     ];
     explain_owned(w, &items);

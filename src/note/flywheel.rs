@@ -33,11 +33,23 @@ pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {
         num(g.wittenbauer.read, 5, lang),
     ));
     let items = [
-        ("J_{м}".to_string(), w.word(M::Flywheel).to_string(), "kg*m^2"),
-        ("μ_{T}".to_string(), w.word(M::EnergyScale).to_string(), "J/mm"),
+        (
+            "J_{м}".to_string(),
+            w.word(M::Flywheel).to_string(),
+            "kg*m^2",
+        ),
+        (
+            "μ_{T}".to_string(),
+            w.word(M::EnergyScale).to_string(),
+            "J/mm",
+        ),
         ("kl".to_string(), w.word(M::Segment).to_string(), "mm"),
         ("δ".to_string(), w.word(M::Irregularity).to_string(), ""),
-        ("ω_{ср}".to_string(), w.word(M::MeanSpeed).to_string(), "rad/s"),
+        (
+            "ω_{ср}".to_string(),
+            w.word(M::MeanSpeed).to_string(),
+            "rad/s",
+        ),
     ];
     explain_owned(w, &items);
     // Merkin: the range of T_I, less the constant inertia.
@@ -56,8 +68,16 @@ pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {
         num(g.merkin.read, 5, lang),
     ));
     let items = [
-        ("ΔT_{I}".to_string(), w.word(M::MerkinRange).to_string(), "J"),
-        ("J_{const}".to_string(), w.word(M::ConstantInertia).to_string(), "kg*m^2"),
+        (
+            "ΔT_{I}".to_string(),
+            w.word(M::MerkinRange).to_string(),
+            "J",
+        ),
+        (
+            "J_{const}".to_string(),
+            w.word(M::ConstantInertia).to_string(),
+            "kg*m^2",
+        ),
     ];
     explain_owned(w, &items);
 }
@@ -127,7 +147,11 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
     let lang = w.lang;
     let fw = &d.spec.flywheel;
     let s = &d.size;
-    let material = w.word(if fw.cast_iron() { N::CastIron } else { N::Steel });
+    let material = w.word(if fw.cast_iron() {
+        N::CastIron
+    } else {
+        N::Steel
+    });
     let shape = match fw.kind {
         FlywheelKind::Rim => N::RimWheel,
         FlywheelKind::Disc => N::DiscWheel,
@@ -144,7 +168,8 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
     w.doc.par(&[label(&sentence)]);
     let m_unit = unit(&unit_in("m", lang));
     w.formula(&format!(
-        "D = root(5, {}) = root(5, {}) = {}{m_unit}",
+        "{} = root(5, {}) = root(5, {}) = {}{m_unit}",
+        sym("D"),
         frac(&sym("J_{м}"), &format!("{} ρ", sym("K_{j}"))),
         frac(
             &num(s.j, 5, lang),
@@ -159,8 +184,10 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
     ];
     explain_owned(w, &items);
     w.formula(&format!(
-        "m = {} ρ D^3 = {} dot {} dot {}^3 = {}{}",
+        "{} = {} ρ {}^3 = {} dot {} dot {}^3 = {}{}",
+        sym("m"),
         sym("K_{m}"),
+        sym("D"),
         num(fw.k_m, 4, lang),
         num(fw.rho, 5, lang),
         num(s.d, 4, lang),
@@ -175,8 +202,9 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
     w.doc.say(w.word(N::RimSpeed));
     let v = s.rim_speed(d.w_avg);
     w.formula(&format!(
-        "v = {} = {} = {}{}",
-        frac(&format!("{} D", sym("ω_{ср}")), "2"),
+        "{} = {} = {} = {}{}",
+        sym("v"),
+        frac(&format!("{} {}", sym("ω_{ср}"), sym("D")), "2"),
         frac(
             &format!("{} dot {}", num(d.w_avg, 5, lang), num(s.d, 4, lang)),
             "2"

@@ -6,14 +6,18 @@
 
 use super::machines::row;
 use super::markup::{frac, label, num, sym, unit};
-use super::moments::{explain_owned, fill, meaning, moments_head, point_name, vector, worked_equation, Arms};
+use super::moments::{
+    explain_owned, fill, meaning, moments_head, point_name, vector, worked_equation, Arms,
+};
 use super::rows::{of_scene, DIGITS};
 use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
 use crate::geom::DVec2;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{quantity, unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+use crate::sheets::captions::{
+    quantity, unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T,
+};
 
 /// The kinetostatics: every analysed position in turn.
 pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
@@ -59,7 +63,9 @@ fn inertia(w: &mut Writer<'_, '_>, spec: &ForceSpec, f: &PositionForces, p: &str
         let k = link.link;
         let at = names.iter().position(|n| *n == link.centre);
         let centre = link.centre.replace(['_', '{', '}'], "");
-        let a = at.and_then(|i| f.drawn.a.get(i)).map_or(0.0, |a| a.length());
+        let a = at
+            .and_then(|i| f.drawn.a.get(i))
+            .map_or(0.0, |a| a.length());
         let force = row(&w.report.rows, &format!("F_in{k}"), Method::Plan, Some(p));
         if let Some(force) = force.filter(|r| r.graphical != 0.0) {
             let fi = quantity(Symbol::Force, &format!("in{k}"), lang);
@@ -260,8 +266,12 @@ pub(super) fn difference(w: &mut Writer<'_, '_>, q: &str, a: f64, b: f64, explai
     let pl = format!("{q}^{{{}}}", w.word(T::PolygonShort));
     let lv = format!("{q}^{{{}}}", w.word(T::LeverShort));
     w.formula(&format!(
-        "Δ = {} = {} = {} %",
-        frac(&format!("|{} - {}|", sym(&pl), sym(&lv)), &format!("|{}|", sym(&pl))),
+        "{} = {} = {} = {} %",
+        sym("Δ"),
+        frac(
+            &format!("|{} - {}|", sym(&pl), sym(&lv)),
+            &format!("|{}|", sym(&pl))
+        ),
         frac(
             &format!("|{} - ({})|", num(a, 7, lang), num(b, 7, lang)),
             &num(a.abs(), 7, lang)

@@ -9,7 +9,12 @@ use crate::scene::PlateKind;
 use crate::sheets::captions::NoteText as T;
 
 /// The row of `quantity` by `method` at `position` (`None`: of the whole scene).
-pub(super) fn row<'r>(rows: &'r [Row], q: &str, method: Method, position: Option<&str>) -> Option<&'r Row> {
+pub(super) fn row<'r>(
+    rows: &'r [Row],
+    q: &str,
+    method: Method,
+    position: Option<&str>,
+) -> Option<&'r Row> {
     rows.iter()
         .find(|r| r.quantity() == q && r.method == method && r.position().as_deref() == position)
 }

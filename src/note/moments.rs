@@ -118,7 +118,7 @@ fn terms(
 }
 
 /// A signed sum `a − b + c` of pieces.
-fn sum(pieces: &[(f64, String)]) -> String {
+pub(super) fn sum(pieces: &[(f64, String)]) -> String {
     let mut out = String::new();
     for (k, (s, p)) in pieces.iter().enumerate() {
         match (k, *s < 0.0) {
@@ -145,9 +145,10 @@ fn explained(
     for t in e.terms.iter().filter(|t| t.moment != 0.0) {
         let u = if t.couple { "N*m" } else { "N" };
         out.push((t.name.clone(), meaning(w, &t.name, loads), u));
-        if !t.couple {
-            out.push((arm_symbol(t), w.word(M::Arm).to_string(), arm_unit));
-        }
+    }
+    // The arms h₁, h₂, … of every drawing under one symbol, explained once.
+    if e.terms.iter().any(|t| t.moment != 0.0 && !t.couple) {
+        out.push(("h_{i}".into(), w.word(M::Arm).to_string(), arm_unit));
     }
     out
 }
@@ -182,11 +183,13 @@ pub(super) fn worked_equation(
             };
             pieces.push((arm.signum(), format!("{} {}", sym(name), sym(&h))));
             items.push((name.clone(), meaning(w, name, loads), "N"));
-            let hm = match link_length {
-                Some(k) if l.is_none() => fill(w.word(M::LinkLength), &[("k", k.to_string())]),
-                _ => w.word(M::Arm).to_string(),
-            };
-            items.push((h, hm, arm_unit));
+            match link_length {
+                Some(k) if l.is_none() => {
+                    let m = fill(w.word(M::LinkLength), &[("k", k.to_string())]);
+                    items.push((h, m, arm_unit));
+                }
+                _ => items.push(("h_{i}".into(), w.word(M::Arm).to_string(), arm_unit)),
+            }
             (name.clone(), "N", *value)
         }
         Unknown::Arm {
@@ -197,10 +200,7 @@ pub(super) fn worked_equation(
         } => {
             pieces.push((1.0, format!("{} {}", sym(reaction), sym(name))));
             items.push((reaction.clone(), meaning(w, reaction, loads), "N"));
-            let point = e
-                .about
-                .and_then(|p| point_name(w, p))
-                .unwrap_or_default();
+            let point = e.about.and_then(|p| point_name(w, p)).unwrap_or_default();
             let m = fill(
                 w.word(M::GuideArm),
                 &[("point", point), ("reaction", reaction.clone())],
@@ -214,14 +214,23 @@ pub(super) fn worked_equation(
             (name.clone(), "N*m", *value)
         }
     };
-    w.formula(&format!("{} = 0", sum(&pieces)));
+    if visible(&sum(&pieces)) <= EQUATION_CHARS {
+        w.formula(&format!("{} = 0", sum(&pieces)));
+    } else {
+        // On lines of its own, broken after a sign.
+        w.formula(&format!("& {} = 0", lines(&pieces).join(" \\ ")));
+    }
     explain_owned(w, &items);
     w.doc.par(&[text(w.word(N::Whence))]);
     worked_unknown(w, e, (arms, link_length), &lhs, unknown_unit, value);
 }
 
-/// A sum of more terms than this is set on several lines, this many to a line.
-const TERMS_A_LINE: usize = 4;
+/// A worked sum shows about this many characters at most on one line with its fraction;
+/// a longer one is set out on lines of its own ([`long_sum`]).
+pub(super) const ONE_LINE_CHARS: usize = 60;
+
+/// An equation `Σ … = 0` shows about this many characters at most on one line.
+const EQUATION_CHARS: usize = 72;
 
 /// The unknown of `e` worked: the known side moved across, divided by the unknown's
 /// factor, `value` its result in `unknown_unit`. A long sum is first set out on lines of its
@@ -235,7 +244,11 @@ fn worked_unknown(
     value: f64,
 ) {
     let lang = w.lang;
-    let result = format!("{}{}", num(value, 5, lang), unit(&unit_in(unknown_unit, lang)));
+    let result = format!(
+        "{}{}",
+        num(value, 5, lang),
+        unit(&unit_in(unknown_unit, lang))
+    );
     // The factor of the known moments on the unknown's side, the divisor's symbol and
     // number, and the known moments' total in the shown units.
     let (factor, divisor, divisor_value, total) = match &e.unknown {
@@ -265,10 +278,13 @@ fn worked_unknown(
         Unknown::Couple { .. } => (-1.0, String::new(), String::new(), -e.known()),
     };
     let moved = terms(e, arms, factor, w);
-    let symbols = sum(&moved.iter().map(|(s, a, _)| (*s, a.clone())).collect::<Vec<_>>());
+    let symbols = sum(&moved
+        .iter()
+        .map(|(s, a, _)| (*s, a.clone()))
+        .collect::<Vec<_>>());
     let pieces: Vec<(f64, String)> = moved.iter().map(|(s, _, n)| (*s, n.clone())).collect();
     let x = sym(lhs);
-    if pieces.len() <= TERMS_A_LINE {
+    if visible(&sum(&pieces)) <= ONE_LINE_CHARS {
         let numbers = sum(&pieces);
         let math = if divisor.is_empty() {
             format!("{x} = {symbols} = {numbers} = {result}")
@@ -283,8 +299,67 @@ fn worked_unknown(
         return;
     }
     // The sum on lines of its own, then its total through the fraction.
-    let lines: Vec<String> = pieces
-        .chunks(TERMS_A_LINE)
+    let left = if divisor.is_empty() {
+        x.clone()
+    } else {
+        format!("{x} {divisor}")
+    };
+    let moment_unit = match arms {
+        Arms::Metres => "N*m",
+        Arms::Millimetres => "N*mm",
+    };
+    let total_text = format!(
+        "{}{}",
+        num(total, 6, lang),
+        unit(&unit_in(moment_unit, lang))
+    );
+    long_sum(w, &left, &pieces, &total_text);
+    let math = if divisor.is_empty() {
+        format!("{x} = {result}")
+    } else if visible(&symbols) <= ONE_LINE_CHARS {
+        format!(
+            "{x} = {} = {} = {result}",
+            frac(&symbols, &divisor),
+            frac(&num(total, 6, lang), &divisor_value)
+        )
+    } else {
+        format!(
+            "{x} = {} = {result}",
+            frac(&num(total, 6, lang), &divisor_value)
+        )
+    };
+    w.formula(&math);
+}
+
+/// A long sum as one formula on lines as long as [`LINE_CHARS`], broken after a sign
+/// (ГОСТ 2.105: the sign repeated on the next line), ending with its total `total`:
+/// `left = a + b + … \ + … = total`. The closing equality is set as a relation the
+/// formula's chain does not break at, so the lines stay as they are laid out.
+pub(super) fn long_sum(w: &mut Writer<'_, '_>, left: &str, pieces: &[(f64, String)], total: &str) {
+    w.formula(&format!(
+        "{left} &= {} class(\"relation\", =) {total}",
+        lines(pieces).join(" \\ ")
+    ));
+}
+
+/// The lines of a long sum of `pieces`, each as long as [`LINE_CHARS`]: the first as it
+/// is, each next aligned and starting with its sign.
+fn lines(pieces: &[(f64, String)]) -> Vec<String> {
+    let mut lines: Vec<Vec<(f64, String)>> = vec![Vec::new()];
+    let mut room = 0;
+    for piece in pieces {
+        let width = visible(&piece.1) + 3;
+        if room + width > LINE_CHARS && !lines.last().is_some_and(Vec::is_empty) {
+            lines.push(Vec::new());
+            room = 0;
+        }
+        room += width;
+        if let Some(line) = lines.last_mut() {
+            line.push(piece.clone());
+        }
+    }
+    lines
+        .iter()
         .enumerate()
         .map(|(k, chunk)| {
             let line = sum(chunk);
@@ -296,23 +371,24 @@ fn worked_unknown(
                 format!("& + {line}")
             }
         })
-        .collect();
-    let left = if divisor.is_empty() {
-        x.clone()
-    } else {
-        format!("{x} {divisor}")
-    };
-    w.formula(&format!("{left} &= {}", lines.join(" \\ ")));
-    let math = if divisor.is_empty() {
-        format!("{x} = {result}")
-    } else {
-        format!(
-            "{x} = {} = {} = {result}",
-            frac(&symbols, &divisor),
-            frac(&num(total, 6, lang), &divisor_value)
-        )
-    };
-    w.formula(&math);
+        .collect()
+}
+
+/// The characters a line of a long sum holds (the text's width less the formula's left
+/// side and number).
+const LINE_CHARS: usize = 52;
+
+/// About how many characters the Typst math `math` shows: its quotes, its symbols' markup
+/// and its brackets left out, `dot` one character.
+pub(super) fn visible(math: &str) -> usize {
+    let shown = math
+        .replace("#qs[#", "")
+        .replace("#qu[#", "")
+        .replace(" dot ", "·");
+    shown
+        .chars()
+        .filter(|c| !matches!(c, '"' | '[' | ']' | '(' | ')' | '_' | '^' | ' '))
+        .count()
 }
 
 /// The name of point `k` of the mechanism (label markup).
@@ -348,20 +424,33 @@ pub(super) fn lever_couple(
 ) {
     let lang = w.lang;
     let moved = terms(e, Arms::Millimetres, -1.0, w);
-    let symbols = sum(&moved.iter().map(|(s, a, _)| (*s, a.clone())).collect::<Vec<_>>());
-    let numbers = sum(&moved.iter().map(|(s, _, n)| (*s, n.clone())).collect::<Vec<_>>());
+    let symbols = sum(&moved
+        .iter()
+        .map(|(s, a, _)| (*s, a.clone()))
+        .collect::<Vec<_>>());
+    let numbers = sum(&moved
+        .iter()
+        .map(|(s, _, n)| (*s, n.clone()))
+        .collect::<Vec<_>>());
     let name = "M_{у}";
     w.formula(&format!(
         "{} = {} = {} = {}{}",
         sym(name),
         frac(&format!("{} ({symbols})", sym("μ_{v}")), &sym("ω_{1}")),
-        frac(&format!("{} dot ({numbers})", num(mu_v, 4, lang)), &num(w1, 5, lang)),
+        frac(
+            &format!("{} dot ({numbers})", num(mu_v, 4, lang)),
+            &num(w1, 5, lang)
+        ),
         num(value, 5, lang),
         unit(&unit_in("N*m", lang))
     ));
     let mut items = explained(w, e, loads, "mm");
     items.push((name.into(), meaning(w, name, loads), "N*m"));
-    items.push(("μ_{v}".into(), w.word(M::LeverScale).to_string(), "m/(s*mm)"));
+    items.push((
+        "μ_{v}".into(),
+        w.word(M::LeverScale).to_string(),
+        "m/(s*mm)",
+    ));
     items.push(("ω_{1}".into(), w.word(M::CrankSpeed).to_string(), "rad/s"));
     explain_owned(w, &items);
 }

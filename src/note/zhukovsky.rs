@@ -76,7 +76,11 @@ pub(super) fn balancing_and_power(
     ));
     let items = [
         ("N".to_string(), w.word(meaning_n).to_string(), "W"),
-        ("ω_{1}".to_string(), w.word(M::CrankSpeed).to_string(), "rad/s"),
+        (
+            "ω_{1}".to_string(),
+            w.word(M::CrankSpeed).to_string(),
+            "rad/s",
+        ),
     ];
     explain_owned(w, &items);
     if engine {
@@ -154,7 +158,11 @@ fn resistance_power(
         };
         w.formula(&math);
         let items = [
-            ("N_{пс}".to_string(), w.word(M::ResistancePower).to_string(), "W"),
+            (
+                "N_{пс}".to_string(),
+                w.word(M::ResistancePower).to_string(),
+                "W",
+            ),
             (l.name.clone(), meaning(w, &l.name, &loads), "N"),
             (speed, w.word(M::PointSpeed).to_string(), "m/s"),
         ];

@@ -20,7 +20,7 @@ catalogue! {
         CoupleForce => ("сила пары, заменяющей момент сил инерции звена {k} на рычаге", "сила пари, що замінює момент сил інерції ланки {k} на важелі", "a force of the couple replacing the inertia moment of link {k} on the lever"),
         BalancingForce => ("уравновешивающая сила", "зрівноважувальна сила", "the balancing force"),
         BalancingMoment => ("уравновешивающий момент", "зрівноважувальний момент", "the balancing moment"),
-        Arm => ("плечо силы относительно центра моментов, измеренное на чертеже", "плече сили відносно центра моментів, виміряне на кресленні", "a force's arm about the moment centre, measured on the drawing"),
+        Arm => ("плечо i-й силы относительно центра моментов, измеренное на чертеже (на рычаге Жуковского — в миллиметрах)", "плече i-ї сили відносно центра моментів, виміряне на кресленні (на важелі Жуковського — у міліметрах)", "the arm of the i-th force about the moment centre, measured on the drawing (on Zhukovsky's lever in millimetres)"),
         LinkLength => ("длина звена {k}, измеренная на чертеже", "довжина ланки {k}, виміряна на кресленні", "the length of link {k}, measured on the drawing"),
         GuideArm => ("расстояние от точки {point} до точки приложения реакции {reaction}", "відстань від точки {point} до точки прикладання реакції {reaction}", "the distance from point {point} to the point where {reaction} acts"),
         LeverScale => ("масштаб рычага Жуковского", "масштаб важеля Жуковського", "the scale of Zhukovsky's lever"),
