@@ -5,7 +5,9 @@
 //! ([`super::flywheel`]).
 
 use super::markup::{frac, inline, num, sym, text, unit};
-use super::moments::{explain_owned, fill, long_sum, visible, ONE_LINE_CHARS};
+use super::moments::{
+    crank_speed, explain_words, fill, long_sum, product, visible, ONE_LINE_CHARS,
+};
 use super::rows::{by_position, numbers, of_scene, quantities, Column};
 use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
@@ -217,13 +219,7 @@ fn inertia_table(w: &mut Writer<'_, '_>, d: &Dynamics) {
 /// M_пр = Σ F·V·cos α/ω₁ as a formula, then worked at position `i` with the analytic
 /// reduction's numbers (the seed's example at its position 5).
 fn reduced_moment(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(), NoteError> {
-    let lang = w.lang;
-    let w1 = w
-        .session
-        .mechanism("the explanatory note")?
-        .crank
-        .omega
-        .abs();
+    let (lang, w1) = (w.lang, crank_speed(w)?.abs());
     let b = &d.analytic_shares[i];
     w.doc.say(w.word(N::ReducedMoment));
     w.formula(&format!(
@@ -240,21 +236,13 @@ fn reduced_moment(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(), 
         )
     ));
     let items = [
-        (
-            "M_{пр}".to_string(),
-            w.word(M::ReducedMoment).to_string(),
-            "N*m",
-        ),
-        ("F_{i}".to_string(), w.word(M::LoadForce).to_string(), "N"),
-        ("V_{i}".to_string(), w.word(M::LoadSpeed).to_string(), "m/s"),
-        ("α_{i}".to_string(), w.word(M::LoadAngle).to_string(), "deg"),
-        (
-            "ω_{1}".to_string(),
-            w.word(M::CrankSpeed).to_string(),
-            "rad/s",
-        ),
+        ("M_{пр}", M::ReducedMoment, "N*m"),
+        ("F_{i}", M::LoadForce, "N"),
+        ("V_{i}", M::LoadSpeed, "m/s"),
+        ("α_{i}", M::LoadAngle, "deg"),
+        ("ω_{1}", M::CrankSpeed, "rad/s"),
     ];
-    explain_owned(w, &items);
+    explain_words(w, &items);
     let s = fill(w.word(N::ForPosition), &[("position", d.labels[i].clone())]);
     w.doc.say(&s);
     let mut numbers = Vec::new();
@@ -313,13 +301,7 @@ fn reduced_moment(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(), 
 
 /// J_пр = J_const + Σ(m·(V_S/ω₁)² + J_S·(ω/ω₁)²) as a formula, then worked at position `i`.
 fn reduced_inertia(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(), NoteError> {
-    let lang = w.lang;
-    let w1 = w
-        .session
-        .mechanism("the explanatory note")?
-        .crank
-        .omega
-        .abs();
+    let (lang, w1) = (w.lang, crank_speed(w)?.abs());
     let b = &d.analytic_shares[i];
     w.doc.say(w.word(N::ReducedInertia));
     let ratio = |top: &str| format!("({})^2", frac(&sym(top), &sym("ω_{1}")));
@@ -328,39 +310,19 @@ fn reduced_inertia(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(),
         sym("J_{пр}"),
         sym("J_{const}"),
         sym("m_{i}"),
-        ratio("V_{Si}"),
-        sym("J_{Si}"),
+        ratio("V_{S i}"),
+        sym("J_{S i}"),
         ratio("ω_{i}")
     ));
     let items = [
-        (
-            "J_{пр}".to_string(),
-            w.word(M::ReducedInertia).to_string(),
-            "kg*m^2",
-        ),
-        (
-            "J_{const}".to_string(),
-            w.word(M::ConstantInertia).to_string(),
-            "kg*m^2",
-        ),
-        ("m_{i}".to_string(), w.word(M::LinkMass).to_string(), "kg"),
-        (
-            "V_{Si}".to_string(),
-            w.word(M::CentreSpeed).to_string(),
-            "m/s",
-        ),
-        (
-            "J_{Si}".to_string(),
-            w.word(M::LinkInertia).to_string(),
-            "kg*m^2",
-        ),
-        (
-            "ω_{i}".to_string(),
-            w.word(M::LinkSpeed).to_string(),
-            "rad/s",
-        ),
+        ("J_{пр}", M::ReducedInertia, "kg*m^2"),
+        ("J_{const}", M::ConstantInertia, "kg*m^2"),
+        ("m_{i}", M::LinkMass, "kg"),
+        ("V_{S i}", M::CentreSpeed, "m/s"),
+        ("J_{S i}", M::LinkInertia, "kg*m^2"),
+        ("ω_{i}", M::LinkSpeed, "rad/s"),
     ];
-    explain_owned(w, &items);
+    explain_words(w, &items);
     let s = fill(w.word(N::ForPosition), &[("position", d.labels[i].clone())]);
     w.doc.say(&s);
     let w1s = num(w1, 5, lang);
@@ -434,18 +396,10 @@ fn links_energy(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) {
         unit(&unit_in("J", lang))
     ));
     let items = [
-        (
-            "T_{зв}".to_string(),
-            w.word(M::LinksEnergy).to_string(),
-            "J",
-        ),
-        (
-            "ω_{ср}".to_string(),
-            w.word(M::MeanSpeed).to_string(),
-            "rad/s",
-        ),
+        ("T_{зв}", M::LinksEnergy, "J"),
+        ("ω_{ср}", M::MeanSpeed, "rad/s"),
     ];
-    explain_owned(w, &items);
+    explain_words(w, &items);
     if j_const > 0.0 {
         w.doc.say(w.word(N::LinksEnergySeed));
     }
@@ -456,34 +410,26 @@ fn work_scale(w: &mut Writer<'_, '_>, d: &Dynamics) {
     let lang = w.lang;
     let g = &d.diagrams;
     w.doc.say(w.word(N::WorkScale));
-    w.formula(&format!(
-        "{} = {} {} H = {} dot {} dot {} = {}{}",
-        sym("μ_{A}"),
-        sym("μ_{M}"),
-        sym("μ_{φ}"),
-        num(g.scale_m.value(), 4, lang),
-        num(g.scale_phi.value(), 4, lang),
-        num(g.pole_h, 4, lang),
-        num(g.scale_a.value(), 5, lang),
-        unit(&unit_in("J/mm", lang))
-    ));
+    product(
+        w,
+        "μ_{A}",
+        &[sym("μ_{M}"), sym("μ_{φ}"), sym("H")],
+        &[
+            num(g.scale_m.value(), 4, lang),
+            num(g.scale_phi.value(), 4, lang),
+            num(g.pole_h, 4, lang),
+        ],
+        &format!(
+            "{}{}",
+            num(g.scale_a.value(), 5, lang),
+            unit(&unit_in("J/mm", lang))
+        ),
+    );
     let items = [
-        (
-            "μ_{A}".to_string(),
-            w.word(M::WorkScale).to_string(),
-            "J/mm",
-        ),
-        (
-            "μ_{M}".to_string(),
-            w.word(M::MomentScale).to_string(),
-            "N*m/mm",
-        ),
-        (
-            "μ_{φ}".to_string(),
-            w.word(M::AngleScale).to_string(),
-            "rad/mm",
-        ),
-        ("H".to_string(), w.word(M::PoleDistance).to_string(), "mm"),
+        ("μ_{A}", M::WorkScale, "J/mm"),
+        ("μ_{M}", M::MomentScale, "N*m/mm"),
+        ("μ_{φ}", M::AngleScale, "rad/mm"),
+        ("H", M::PoleDistance, "mm"),
     ];
-    explain_owned(w, &items);
+    explain_words(w, &items);
 }

@@ -4,7 +4,7 @@
 //! the rim speed against the material's limit.
 
 use super::markup::{frac, inline, label, num, sym, text, unit};
-use super::moments::{explain_owned, fill};
+use super::moments::{explain_words, fill};
 use super::Writer;
 use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
 use crate::sheets::captions::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
@@ -33,25 +33,13 @@ pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {
         num(g.wittenbauer.read, 5, lang),
     ));
     let items = [
-        (
-            "J_{м}".to_string(),
-            w.word(M::Flywheel).to_string(),
-            "kg*m^2",
-        ),
-        (
-            "μ_{T}".to_string(),
-            w.word(M::EnergyScale).to_string(),
-            "J/mm",
-        ),
-        ("kl".to_string(), w.word(M::Segment).to_string(), "mm"),
-        ("δ".to_string(), w.word(M::Irregularity).to_string(), ""),
-        (
-            "ω_{ср}".to_string(),
-            w.word(M::MeanSpeed).to_string(),
-            "rad/s",
-        ),
+        ("J_{м}", M::Flywheel, "kg*m^2"),
+        ("μ_{T}", M::EnergyScale, "J/mm"),
+        ("kl", M::Segment, "mm"),
+        ("δ", M::Irregularity, ""),
+        ("ω_{ср}", M::MeanSpeed, "rad/s"),
     ];
-    explain_owned(w, &items);
+    explain_words(w, &items);
     // Merkin: the range of T_I, less the constant inertia.
     let j_const = d.spec.constant_inertia();
     w.doc.say(w.word(N::MerkinWorked));
@@ -68,18 +56,10 @@ pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {
         num(g.merkin.read, 5, lang),
     ));
     let items = [
-        (
-            "ΔT_{I}".to_string(),
-            w.word(M::MerkinRange).to_string(),
-            "J",
-        ),
-        (
-            "J_{const}".to_string(),
-            w.word(M::ConstantInertia).to_string(),
-            "kg*m^2",
-        ),
+        ("ΔT_{I}", M::MerkinRange, "J"),
+        ("J_{const}", M::ConstantInertia, "kg*m^2"),
     ];
-    explain_owned(w, &items);
+    explain_words(w, &items);
 }
 
 /// The constant moment from the work of the varying side over the cycle, the mean power,
@@ -107,11 +87,7 @@ pub(super) fn drive(w: &mut Writer<'_, '_>, d: &Dynamics) {
         num(mv, 5, lang),
         unit(&unit_in("N*m", lang))
     ));
-    let items = [
-        (m.to_string(), w.word(M::ConstantMoment).to_string(), "N*m"),
-        (y.to_string(), w.word(M::Ordinate).to_string(), "mm"),
-    ];
-    explain_owned(w, &items);
+    explain_words(w, &[(m, M::ConstantMoment, "N*m"), (y, M::Ordinate, "mm")]);
     w.formula(&format!(
         "{} = {} {} = {} dot {} = {}{}",
         sym("N_{ср}"),
@@ -122,8 +98,8 @@ pub(super) fn drive(w: &mut Writer<'_, '_>, d: &Dynamics) {
         num(mv * d.w_avg, 5, lang),
         unit(&unit_in("W", lang)),
     ));
-    let items = [("N_{ср}".to_string(), w.word(M::MeanPower).to_string(), "W")];
-    explain_owned(w, &items);
+    let items = [("N_{ср}", M::MeanPower, "W")];
+    explain_words(w, &items);
     w.doc.par(&[
         text(w.word(T::ExactFlywheel)),
         inline(&format!(
@@ -178,11 +154,11 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
         num(s.d, 4, lang),
     ));
     let items = [
-        ("D".to_string(), w.word(M::Diameter).to_string(), "m"),
-        ("K_{j}".to_string(), w.word(M::ShapeJ).to_string(), ""),
-        ("ρ".to_string(), w.word(M::Density).to_string(), "kg/m^3"),
+        ("D", M::Diameter, "m"),
+        ("K_{j}", M::ShapeJ, ""),
+        ("ρ", M::Density, "kg/m^3"),
     ];
-    explain_owned(w, &items);
+    explain_words(w, &items);
     w.formula(&format!(
         "{} = {} ρ {}^3 = {} dot {} dot {}^3 = {}{}",
         sym("m"),
@@ -194,11 +170,8 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
         num(s.mass, 4, lang),
         unit(&unit_in("kg", lang))
     ));
-    let items = [
-        ("m".to_string(), w.word(M::FlywheelMass).to_string(), "kg"),
-        ("K_{m}".to_string(), w.word(M::ShapeM).to_string(), ""),
-    ];
-    explain_owned(w, &items);
+    let items = [("m", M::FlywheelMass, "kg"), ("K_{m}", M::ShapeM, "")];
+    explain_words(w, &items);
     w.doc.say(w.word(N::RimSpeed));
     let v = s.rim_speed(d.w_avg);
     w.formula(&format!(
@@ -212,8 +185,8 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
         num(v, 4, lang),
         unit(&unit_in("m/s", lang))
     ));
-    let items = [("v".to_string(), w.word(M::RimSpeed).to_string(), "m/s")];
-    explain_owned(w, &items);
+    let items = [("v", M::RimSpeed, "m/s")];
+    explain_words(w, &items);
     let limit = fw.rim_speed_limit();
     let verdict = if v <= limit {
         N::RimSpeedWithin

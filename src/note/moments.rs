@@ -72,6 +72,34 @@ pub(super) fn explain_owned(w: &mut Writer<'_, '_>, items: &[(String, String, &s
     w.explain(&refs);
 }
 
+/// `lhs = f₁ f₂ … = n₁ · n₂ · … = result` as one formula: a product in symbols
+/// (formula markup), with its numbers, and its result with the unit.
+pub(super) fn product(
+    w: &mut Writer<'_, '_>,
+    lhs: &str,
+    factors: &[String],
+    numbers: &[String],
+    result: &str,
+) {
+    w.formula(&format!(
+        "{} = {} = {} = {result}",
+        sym(lhs),
+        factors.join(" "),
+        numbers.join(" dot ")
+    ));
+}
+
+/// The crank's angular velocity ω₁ (counter-clockwise positive), rad/s.
+pub(super) fn crank_speed(w: &Writer<'_, '_>) -> Result<f64, super::NoteError> {
+    Ok(w.session.mechanism("the explanatory note")?.crank.omega)
+}
+
+/// Explains the symbols of `items` (markup, the catalogue's meaning, unit).
+pub(super) fn explain_words(w: &mut Writer<'_, '_>, items: &[(&str, M, &str)]) {
+    let refs: Vec<(&str, &str, &str)> = items.iter().map(|&(s, m, u)| (s, w.word(m), u)).collect();
+    w.explain(&refs);
+}
+
 /// How an equation's arms are shown: in metres with their symbols (a group's drawing) or
 /// in millimetres read off the lever.
 #[derive(Clone, Copy, PartialEq)]

@@ -4,7 +4,10 @@
 use super::kinetostatics::difference;
 use super::machines::row;
 use super::markup::{frac, num, sym, unit};
-use super::moments::{explain_owned, lever_couple, meaning, worked_equation, Arms};
+use super::moments::{
+    crank_speed, explain_owned, explain_words, lever_couple, meaning, product, worked_equation,
+    Arms,
+};
 use super::{NoteError, Writer};
 use crate::check::Method;
 use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
@@ -25,7 +28,7 @@ pub(super) fn lever(w: &mut Writer<'_, '_>, f: &PositionForces) -> Result<(), No
         Unknown::Force { .. } => worked_equation(w, e, &loads, Arms::Millimetres, None),
         Unknown::Arm { .. } | Unknown::Couple { .. } => {
             w.doc.say(w.word(N::LeverMoment));
-            let w1 = w.session.mechanism("the explanatory note")?.crank.omega;
+            let w1 = crank_speed(w)?;
             let mu_v = lever.figure.scale.value();
             lever_couple(w, e, &loads, (mu_v, w1), lever.m_bal);
         }
@@ -42,7 +45,7 @@ pub(super) fn balancing_and_power(
     p: &str,
 ) -> Result<(), NoteError> {
     let lang = w.lang;
-    let w1 = w.session.mechanism("the explanatory note")?.crank.omega;
+    let w1 = crank_speed(w)?;
     let poly = &f.analysis.polygons.driver;
     let lever = &f.analysis.lever;
     if let (Some(a), Some(b)) = (poly.f_bal, lever.f_bal) {
@@ -64,25 +67,17 @@ pub(super) fn balancing_and_power(
         (w.word(T::DrivePower), M::DrivePower)
     };
     w.doc.say(intro);
-    w.formula(&format!(
-        "{} = |{}| {} = {} dot {} = {}{}",
-        sym("N"),
-        sym("M_{у}"),
-        sym("ω_{1}"),
-        num(a.graphical.abs(), 5, lang),
-        num(w1.abs(), 5, lang),
-        num(n, 5, lang),
-        unit(&unit_in("W", lang))
-    ));
-    let items = [
-        ("N".to_string(), w.word(meaning_n).to_string(), "W"),
-        (
-            "ω_{1}".to_string(),
-            w.word(M::CrankSpeed).to_string(),
-            "rad/s",
-        ),
-    ];
-    explain_owned(w, &items);
+    product(
+        w,
+        "N",
+        &[format!("|{}|", sym("M_{у}")), sym("ω_{1}")],
+        &[num(a.graphical.abs(), 5, lang), num(w1.abs(), 5, lang)],
+        &format!("{}{}", num(n, 5, lang), unit(&unit_in("W", lang))),
+    );
+    explain_words(
+        w,
+        &[("N", meaning_n, "W"), ("ω_{1}", M::CrankSpeed, "rad/s")],
+    );
     if engine {
         return Ok(());
     }
@@ -96,11 +91,8 @@ pub(super) fn balancing_and_power(
             num(n / eta, 5, lang),
             unit(&unit_in("W", lang))
         ));
-        let items = [
-            ("N_{дв}".to_string(), w.word(M::MotorPower).to_string(), "W"),
-            ("η".to_string(), w.word(M::Efficiency).to_string(), ""),
-        ];
-        explain_owned(w, &items);
+        let items = [("N_{дв}", M::MotorPower, "W"), ("η", M::Efficiency, "")];
+        explain_words(w, &items);
     }
     resistance_power(w, spec, f, p)
 }
