@@ -30,6 +30,35 @@ impl Size {
     }
 }
 
+impl Size {
+    /// The rim's peripheral speed at the crank's mean angular velocity `w` (rad/s):
+    /// v = ω·D/2, m/s.
+    pub fn rim_speed(&self, w: f64) -> f64 {
+        w.abs() * self.d / 2.0
+    }
+}
+
+/// The densest grey cast iron, kg/m³: a lighter flywheel is cast iron, a denser one steel.
+const CAST_IRON_RHO: f64 = 7600.0;
+
+impl FlywheelSpec {
+    /// Whether the flywheel is grey cast iron (ρ up to [`CAST_IRON_RHO`]), else steel.
+    pub fn cast_iron(&self) -> bool {
+        self.rho <= CAST_IRON_RHO
+    }
+
+    /// The rim speed its material allows, m/s: grey cast iron 25 m/s (seed 000 L1452 takes
+    /// СЧ12 for a rim below 25 m/s), steel 40 m/s (the course handbooks' limit of a
+    /// steel rim).
+    pub fn rim_speed_limit(&self) -> f64 {
+        if self.cast_iron() {
+            25.0
+        } else {
+            40.0
+        }
+    }
+}
+
 /// The size of a flywheel of inertia `j` (kg·m², ≥ 0).
 pub fn size(spec: &FlywheelSpec, j: f64) -> Size {
     let d = (j.max(0.0) / (spec.k_j * spec.rho)).powf(0.2);

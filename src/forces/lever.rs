@@ -6,6 +6,7 @@
 //! power balance drawn.
 
 use super::loads::Load;
+use super::polygons::{MomentEquation, MomentTerm, Unknown};
 use super::spec::Drive;
 use super::twin::line_of_action;
 use crate::construct::{Figure, Item, Recorder, Role};
@@ -25,6 +26,10 @@ pub struct Lever {
     pub m_bal: f64,
     /// The balancing force (gear drive), N.
     pub f_bal: Option<f64>,
+    /// ΣM about the pole with every arm read off the lever (plan mm; the terms' moments
+    /// are powers, W), which gives the balancing force (gear drive) or, through the
+    /// power, the balancing moment.
+    pub equation: MomentEquation,
 }
 
 /// Where a couple on a link of one point puts its second force: this far along the link's
@@ -107,6 +112,7 @@ fn lever_at(
         }
     }
     let mut arms = 0;
+    let mut log: Vec<MomentTerm> = Vec::new();
     // The moment of `f` at `x` about the pole; `slid`: the force drawn at the end of its arm,
     // moved along its line of action from its image (drawn thin).
     let mut moment = |rec: &mut Recorder, x: DVec2, f: DVec2, name: &str, slid: bool| -> f64 {
@@ -142,8 +148,10 @@ fn lever_at(
         );
         rec.label(id, name, at + e * ARROW_MM, e);
         let arm = rec.measure(DVec2::ZERO, foot);
+        let mut label = None;
         if arm.drawn_mm > 0.5 {
             arms += 1;
+            label = Some(format!("h_{{{arms}}}"));
             let id = rec.draw(
                 format!("arm of {name}"),
                 Item::Segment(Segment::new(DVec2::ZERO, foot)),
@@ -158,7 +166,17 @@ fn lever_at(
             );
         }
         // Moment about the pole in plan mm × N, turned into power with μ_v.
-        x.perp_dot(e).signum() * f.length() * arm.value
+        let power = x.perp_dot(e).signum() * f.length() * arm.value;
+        log.push(MomentTerm {
+            name: name.to_string(),
+            force: f.length(),
+            arm: arm.value,
+            arm_mm: arm.read_mm,
+            label,
+            moment: power,
+            couple: false,
+        });
+        power
     };
     let mu = setup.mu_l.value();
     let mut power = 0.0;
@@ -214,9 +232,32 @@ fn lever_at(
             (m_bal, Some(f))
         }
     };
+    // The balancing force's own term (gear drive) is the unknown's arm.
+    let unknown = match (f_bal, drive) {
+        (Some(value), Drive::Gear(_)) => {
+            let probe = log.pop();
+            Unknown::Force {
+                name: "F_{у}".into(),
+                arm: probe.as_ref().map_or(0.0, |t| t.moment),
+                arm_mm: probe.as_ref().map_or(0.0, |t| t.arm_mm),
+                label: probe.and_then(|t| t.label),
+                value,
+            }
+        }
+        _ => Unknown::Couple {
+            name: "M_{у}".into(),
+            value: m_bal * w1,
+        },
+    };
     Lever {
         figure: rec.finish(),
         m_bal,
         f_bal,
+        equation: MomentEquation {
+            about: None,
+            links: Vec::new(),
+            terms: log,
+            unknown,
+        },
     }
 }

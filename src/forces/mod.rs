@@ -37,7 +37,9 @@ pub use loads::{
     arm, carrier, force_scale, loads, reach, Load, LoadKind, Motion, Phase, ZERO_PART,
 };
 pub use pair_friction::{friction_loads, PairFriction, PairMotion};
-pub use polygons::{DriverPolygon, GroupPolygon, PolygonDetail, Polygons};
+pub use polygons::{
+    DriverPolygon, GroupPolygon, MomentEquation, MomentTerm, PolygonDetail, Polygons, Unknown,
+};
 pub use rows::{notes, seed_notes};
 use rows::{reaction_rows, row, rows, zero_references};
 pub use twin::{power_balance, solve as solve_twin, Equilibrium, Pair, PairKind, Reaction};
@@ -92,6 +94,8 @@ pub struct PositionForces {
     /// The equilibrium residuals (`residual`) of the polygons and of the twin, without and
     /// (when the scene has it) with friction in the pairs.
     pub residuals: Vec<Residual>,
+    /// The motion as the plans give it, which the loads are formed from.
+    pub drawn: Motion,
 }
 
 /// The equilibrium check of both routes of one analysis (`residual::residual`): every
@@ -319,6 +323,7 @@ pub fn analyse(
         friction,
         rows,
         residuals,
+        drawn,
     })
 }
 

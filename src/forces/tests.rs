@@ -214,6 +214,12 @@ proptest! {
             compared += 1;
         }
         prop_assert_eq!(compared, twin.reactions.len());
+        // Every moment equation the drawings work balances with its unknown put in.
+        let eqs = pol.groups.iter().flat_map(|g| &g.equations).chain([&pol.driver.equation, &lev.equation]);
+        for e in eqs {
+            let scale = e.terms.iter().map(|t| t.moment.abs()).fold(e.known().abs(), f64::max);
+            prop_assert!(e.residue().abs() <= 1e-9 * scale.max(1e-12), "{e:?}");
+        }
         let mb = twin.m_bal.abs() + big * 0.2;
         prop_assert!((pol.driver.m_bal - twin.m_bal).abs() <= REL * mb, "polygon {} vs {} (lever {}, power {}) {:?}", pol.driver.m_bal, twin.m_bal, lev.m_bal, power, twin.reactions.iter().map(|r| (r.pair.from, r.pair.to, r.offset)).collect::<Vec<_>>());
         prop_assert!((lev.m_bal - twin.m_bal).abs() <= REL * mb, "lever {} vs {}", lev.m_bal, twin.m_bal);

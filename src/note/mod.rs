@@ -13,16 +13,21 @@
 mod cam;
 mod cam_special;
 mod conclusions;
+mod dynamics;
 mod explain;
+mod flywheel;
 mod friction;
 mod front;
 mod gears;
 mod kinematics;
+mod kinetostatics;
 mod machines;
 mod markup;
+mod moments;
 mod rows;
 mod train;
 mod typeset;
+mod zhukovsky;
 
 pub use typeset::PAGE_BREAK;
 
@@ -253,10 +258,10 @@ pub fn compose_with(
         kinematics::kinematics(&mut w)?;
     }
     if scene.forces.is_some() && scene.mechanism.is_some() {
-        machines::kinetostatics(&mut w)?;
+        kinetostatics::kinetostatics(&mut w)?;
     }
     if scene.dynamics.is_some() {
-        machines::dynamics(&mut w)?;
+        dynamics::dynamics(&mut w)?;
     }
     if scene.cam.is_some() {
         cam::cam(&mut w)?;

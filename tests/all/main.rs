@@ -42,6 +42,7 @@ mod note;
 mod note_errata;
 mod note_form;
 mod note_language;
+mod note_worked_machines;
 mod output;
 mod plan_lines;
 mod plate_demo;

@@ -48,6 +48,7 @@ pub(super) fn driver(
     }
     let o = b.p[prog.centre];
     let k = sch.moments(o, &loads);
+    let known = sch.drain();
     let mut pol = Polygon::new(
         format!("force triangle of link {crank}"),
         board.mu_f,
@@ -55,8 +56,15 @@ pub(super) fn driver(
     );
     let p0 = pol.tip;
     pol.lay_all(&loads);
-    let (m_bal, f_bal) = match drive {
-        Drive::Coupling => (-k, None),
+    let (m_bal, f_bal, unknown) = match drive {
+        Drive::Coupling => (
+            -k,
+            None,
+            Unknown::Couple {
+                name: "M_{у}".into(),
+                value: -k,
+            },
+        ),
         Drive::Gear(g) => {
             let mu = board.setup.mu_l.value();
             let r = g.radius() / mu;
@@ -99,12 +107,20 @@ pub(super) fn driver(
             };
             let arm = sch.moment(o, &unit);
             let f = -k / arm;
+            let probe = sch.drain().pop();
+            let unknown = Unknown::Force {
+                name: "F_{у}".into(),
+                arm,
+                arm_mm: probe.as_ref().map_or(0.0, |t| t.arm_mm),
+                label: probe.and_then(|t| t.label),
+                value: f,
+            };
             sch.show(&Load {
                 force: d * f,
                 ..unit
             });
             pol.lay("F_{у}", d * f);
-            (-k, Some((f, arm.abs())))
+            (-k, Some((f, arm.abs())), unknown)
         }
     };
     let e = pol.tip;
@@ -120,5 +136,11 @@ pub(super) fn driver(
         m_bal,
         f_bal: f_bal.map(|(f, _)| f),
         arm: f_bal.map(|(_, arm)| arm),
+        equation: MomentEquation {
+            about: Some(prog.centre),
+            links: vec![crank],
+            terms: known,
+            unknown,
+        },
     })
 }

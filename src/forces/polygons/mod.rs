@@ -29,7 +29,9 @@ use crate::scale::Scale;
 use std::f64::consts::{PI, TAU};
 
 mod driver;
+mod equations;
 use driver::driver;
+pub use equations::{MomentEquation, MomentTerm, Unknown};
 
 /// Length of a load's arrow on a group's drawing, mm (the drawing shows where and which
 /// way; the polygon shows how much).
@@ -50,6 +52,8 @@ pub struct GroupPolygon {
     pub details: Vec<PolygonDetail>,
     /// The reactions read off the polygon: the two outer pairs, then the inner.
     pub reactions: Vec<Reaction>,
+    /// The moment equations the group's drawing works, in the order they are solved.
+    pub equations: Vec<MomentEquation>,
 }
 
 /// The driving link's analysis as drawn.
@@ -69,6 +73,8 @@ pub struct DriverPolygon {
     pub f_bal: Option<f64>,
     /// The balancing force's arm about the crank's centre, measured (gear drive), m.
     pub arm: Option<f64>,
+    /// ΣM about the crank's centre, which gives the balancing load.
+    pub equation: MomentEquation,
 }
 
 /// Everything one position's polygons give.
@@ -114,6 +120,8 @@ struct Scheme<'a> {
     board: &'a Board<'a>,
     rec: Recorder,
     arms: usize,
+    /// The moments taken since the log was last drained.
+    log: Vec<MomentTerm>,
 }
 
 impl<'a> Scheme<'a> {
@@ -122,6 +130,7 @@ impl<'a> Scheme<'a> {
             board,
             rec: Recorder::in_context(title, board.setup.mu_l, &board.setup.ctx),
             arms: 0,
+            log: Vec::new(),
         }
     }
 
@@ -180,6 +189,15 @@ impl<'a> Scheme<'a> {
     /// The moment of `l` about `c` (mm), N·m: the arm measured on the drawing.
     fn moment(&mut self, c: DVec2, l: &Load) -> f64 {
         if l.force == DVec2::ZERO {
+            self.log.push(MomentTerm {
+                name: l.name.clone(),
+                force: l.moment,
+                arm: 0.0,
+                arm_mm: 0.0,
+                label: None,
+                moment: l.moment,
+                couple: true,
+            });
             return l.moment;
         }
         let x = self.at(l);
@@ -187,8 +205,10 @@ impl<'a> Scheme<'a> {
         let foot = x + e * (c - x).dot(e);
         let arm = self.rec.measure(c, foot);
         let sign = (x - c).perp_dot(e).signum();
+        let mut label = None;
         if arm.drawn_mm > 0.5 {
             self.arms += 1;
+            label = Some(format!("h_{{{}}}", self.arms));
             // The line of action extended from the force's point to the arm's foot.
             let line = (foot.distance(x) > 0.5).then(|| {
                 self.rec.draw(
@@ -211,7 +231,17 @@ impl<'a> Scheme<'a> {
                 (foot - c).perp().normalize_or_zero(),
             );
         }
-        sign * l.force.length() * arm.value
+        let moment = sign * l.force.length() * arm.value;
+        self.log.push(MomentTerm {
+            name: l.name.clone(),
+            force: l.force.length(),
+            arm: arm.value,
+            arm_mm: arm.read_mm,
+            label,
+            moment,
+            couple: false,
+        });
+        moment
     }
 
     /// Σ moments of `loads` about `c`.
@@ -526,12 +556,18 @@ pub fn polygons(
         );
         let p = |k: usize| b.p[k];
         let err = |e| (group, e);
+        let mut equations = Vec::new();
         let reactions = match g.pairs {
             GroupPairs::Rrr { a, c, joint } => {
                 let (pa, pc, pb) = (p(a), p(c), p(joint));
-                let tau_i = sch.moments(pb, &li) / sch.length(pa, pb);
-                let tau_j = sch.moments(pb, &lj) / sch.length(pc, pb);
                 let (oa, oc) = (prog.owner(a), prog.owner(c));
+                sch.drain();
+                let tau_i = sch.moments(pb, &li) / sch.length(pa, pb);
+                let t = sch.tangential(pa, pb, (oa, i), tau_i);
+                equations.push(sch.equation(joint, &[i], t));
+                let tau_j = sch.moments(pb, &lj) / sch.length(pc, pb);
+                let t = sch.tangential(pc, pb, (oc, j), tau_j);
+                equations.push(sch.equation(joint, &[j], t));
                 let t_a = (pb - pa).normalize().perp() * tau_i;
                 let t_c = (pb - pc).normalize().perp() * tau_j;
                 let p0 = pol.tip;
@@ -559,7 +595,10 @@ pub fn polygons(
             } => {
                 let (pa, pb) = (p(a), p(joint));
                 let oa = prog.owner(a);
+                sch.drain();
                 let tau_i = sch.moments(pb, &li) / sch.length(pa, pb);
+                let t = sch.tangential(pa, pb, (oa, i), tau_i);
+                equations.push(sch.equation(joint, &[i], t));
                 let t_a = (pb - pa).normalize().perp() * tau_i;
                 let n_g = dir(j).perp();
                 let p0 = pol.tip;
@@ -572,10 +611,13 @@ pub fn polygons(
                 let r_a = pol.read(&reaction_name(oa, i), h, p1);
                 let r_g = pol.read(&reaction_name(og, j), e, h);
                 let r_ji = pol.read(&reaction_name(j, i), pi, h);
+                sch.drain();
                 let k = sch.moments(pb, &lj);
+                let s = offset(r_g, n_g, k, scale);
+                equations.extend(sch.arm_equation(joint, j, (og, j), r_g.dot(n_g), s));
                 vec![
                     revolute(oa, i, a, r_a),
-                    prismatic(og, j, joint, j, r_g, offset(r_g, n_g, k, scale)),
+                    prismatic(og, j, joint, j, r_g, s),
                     revolute(i, j, joint, -r_ji),
                 ]
             }
@@ -584,12 +626,15 @@ pub fn polygons(
                 let (oa, oc) = (prog.owner(a), prog.owner(c));
                 let u = dir(j);
                 let n = u.perp();
+                sch.drain();
                 let k_i = sch.moments(pa, &li);
                 let k_j = sch.moments(pc, &lj);
+                let known = sch.drain();
                 // The inner reaction N·n brought to A: its arm about C is measured.
                 let probe = Load::force(j, LoadKind::Reaction, reaction_name(i, j), n, a);
                 let arm = sch.moment(pc, &probe);
                 let big_n = -(k_j + k_i) / arm;
+                equations.push(sch.normal(c, [i, j], known, big_n));
                 let p0 = pol.tip;
                 let pi = pol.lay_all(&li);
                 let pj = pol.lay_all(&lj);
@@ -626,10 +671,16 @@ pub fn polygons(
                 let r_j = pol.read(&reaction_name(cj, j), e, h);
                 let r_i = pol.read(&reaction_name(ci, i), h, p0);
                 let r_ji = pol.read(&reaction_name(j, i), pi, h);
-                let (k_i, k_j) = (sch.moments(pb, &li), sch.moments(pb, &lj));
+                sch.drain();
+                let k_i = sch.moments(pb, &li);
+                let s_i = offset(r_i, n_i, k_i, scale);
+                equations.extend(sch.arm_equation(joint, i, (ci, i), r_i.dot(n_i), s_i));
+                let k_j = sch.moments(pb, &lj);
+                let s_j = offset(r_j, n_j, k_j, scale);
+                equations.extend(sch.arm_equation(joint, j, (cj, j), r_j.dot(n_j), s_j));
                 vec![
-                    prismatic(ci, i, joint, i, r_i, offset(r_i, n_i, k_i, scale)),
-                    prismatic(cj, j, joint, j, r_j, offset(r_j, n_j, k_j, scale)),
+                    prismatic(ci, i, joint, i, r_i, s_i),
+                    prismatic(cj, j, joint, j, r_j, s_j),
                     revolute(i, j, joint, -r_ji),
                 ]
             }
@@ -652,16 +703,20 @@ pub fn polygons(
                 let q = pol.lay_all(&li);
                 let r_oi = pol.read(&reaction_name(oa, i), q, p0);
                 // The block about A: where the inner reaction acts on the slide.
+                sch.drain();
                 let k_i = sch.moments(pa, &li);
                 let s = offset(r_ij, n_s, -k_i, scale);
+                equations.extend(sch.arm_equation(a, i, (i, j), -r_ij.dot(n_s), s));
                 // Link j about its joint, with the inner reaction at its point.
                 let shift = dir(i) * s.unwrap_or(0.0);
                 let mut inner = Load::force(j, LoadKind::Reaction, reaction_name(i, j), r_ij, a);
                 inner.shift = shift;
                 let k_j = sch.moments(pj_, &lj) + sch.moment(pj_, &inner);
+                let s_g = offset(r_g, n_g, k_j, scale);
+                equations.extend(sch.arm_equation(joint, j, (og, j), r_g.dot(n_g), s_g));
                 vec![
                     revolute(oa, i, a, r_oi),
-                    prismatic(og, j, joint, j, r_g, offset(r_g, n_g, k_j, scale)),
+                    prismatic(og, j, joint, j, r_g, s_g),
                     prismatic(i, j, a, i, r_ij, s),
                 ]
             }
@@ -692,6 +747,7 @@ pub fn polygons(
             polygon,
             details: detail,
             reactions,
+            equations,
         });
     }
     let driver = driver(board, &applied, drive).map_err(|e| (usize::MAX, e))?;

@@ -6,16 +6,20 @@
 mod audit;
 mod linkage;
 mod machines;
+mod meaning_machines;
 mod meanings;
 mod note;
+mod note_machines;
 pub(crate) mod symbols;
 
 pub(crate) use audit::AuditText;
 pub(crate) use linkage::Text;
 pub(super) use machines::{CamText, DynamicsText, RotorText};
 pub(crate) use machines::{FrictionText, GearText};
+pub(crate) use meaning_machines::MachinesMeaning;
 pub(crate) use meanings::Meaning;
 pub(crate) use note::NoteText;
+pub(crate) use note_machines::MachinesNote;
 pub(crate) use symbols::{quantity, subscripted};
 
 /// A word of the catalogue: its text in a language.

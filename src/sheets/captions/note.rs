@@ -149,12 +149,6 @@ catalogue! {
             "The force analysis by kinetostatics: the inertia forces and moments are added to the external loads; the Assur groups are taken from the last attached, their reactions from the moment equations and the force polygons; the balancing moment from the driving link and by Zhukovsky's lever."
         ),
         LoadsAtPosition => ("Силовой расчёт в положении", "Силовий розрахунок у положенні", "The force analysis at position"),
-        InertiaLoads => ("Силы и моменты сил инерции:", "Сили і моменти сил інерції:", "The inertia forces and moments:"),
-        GroupsEquations => (
-            "Для каждой группы: сумма моментов сил относительно внутренней пары по каждому звену даёт касательные составляющие реакций, векторное уравнение равновесия группы — план сил; реакции ведущего звена — из его плана сил.",
-            "Для кожної групи: сума моментів сил відносно внутрішньої пари для кожної ланки дає дотичні складові реакцій, векторне рівняння рівноваги групи — план сил; реакції ведучої ланки — з її плану сил.",
-            "For each group: the sum of moments about the inner pair for each link gives the reactions' tangential parts, the group's vector equation of equilibrium its force polygon; the driving link's reactions from its polygon."
-        ),
         ReactionsTable => ("Реакции и уравновешивающая сила, положение", "Реакції і зрівноважувальна сила, положення", "Reactions and the balancing load, position"),
         BalancingBothRoutes => (
             "Уравновешивающий момент по плану сил ведущего звена и по рычагу Жуковского; расхождение:",
@@ -163,7 +157,6 @@ catalogue! {
         ),
         PolygonShort => ("пл", "пл", "pol"),
         LeverShort => ("Ж", "Ж", "Zh"),
-        ResistancePower => ("Мощность сил полезного сопротивления в этом положении:", "Потужність сил корисного опору в цьому положенні:", "The power of the useful resistance at this position:"),
         MotorPower => (
             "Мощность двигателя с учётом КПД привода η:",
             "Потужність двигуна з урахуванням ККД приводу η:",
@@ -179,11 +172,6 @@ catalogue! {
         ReductionInput => ("Исходные данные для приведения сил и масс (аналитически)", "Вихідні дані для зведення сил і мас (аналітично)", "The input of the reduction of forces and masses (analytic)"),
         ReducedMoments => ("Приведённые моменты сил", "Зведені моменти сил", "Reduced moments of the forces"),
         ReducedInertias => ("Приведённые моменты инерции по звеньям и кинетическая энергия звеньев", "Зведені моменти інерції за ланками і кінетична енергія ланок", "Reduced moments of inertia by links and the links' kinetic energy"),
-        DriveMomentAndPower => (
-            "Момент движущих сил (постоянный) — по работе сил сопротивления за цикл; средняя мощность привода:",
-            "Момент рушійних сил (сталий) — за роботою сил опору за цикл; середня потужність привода:",
-            "The (constant) driving moment from the work of the resistances over the cycle; the drive's mean power:"
-        ),
         ConstantInertia => ("Постоянная часть приведённого момента инерции (редуктор, коробка скоростей):", "Стала частина зведеного моменту інерції (редуктор, коробка швидкостей):", "The constant part of the reduced moment of inertia (reducer, gearbox):"),
         EnergyTable => ("Изменение кинетической энергии", "Зміна кінетичної енергії", "Change of kinetic energy"),
         FlywheelSize => ("Размеры маховика:", "Розміри маховика:", "The flywheel's size:"),

@@ -1,0 +1,219 @@
+//! The flywheel worked (seed 000 §5.6–5.8): J_м by Wittenbauer's energy–mass diagram and by
+//! Merkin's T_I, each formula with the segment read off its diagram; the constant moment and
+//! the mean power; the exact flywheel; its material, D = (J/(K_j·ρ))^(1/5), m = K_m·ρ·D³ and
+//! the rim speed against the material's limit.
+
+use super::markup::{frac, inline, label, num, sym, text, unit};
+use super::moments::{explain_words, fill};
+use super::Writer;
+use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
+use crate::sheets::captions::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+
+/// J_м by each textbook route, worked from what its diagram gives.
+pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {
+    let lang = w.lang;
+    let g = &d.diagrams;
+    let (delta, om) = (d.spec.delta, d.w_avg);
+    let jm = unit(&unit_in("kg*m^2", lang));
+    // Wittenbauer: kl read off the energy–mass diagram at its μ_T.
+    let mu = g.scale_tw.value();
+    let kl = g.wittenbauer.range / mu;
+    w.doc.say(w.word(N::WittenbauerWorked));
+    w.formula(&format!(
+        "{} = {} = {} = {}{jm}",
+        sym("J_{м}"),
+        frac(
+            &format!("{} {}", sym("μ_{T}"), sym("kl")),
+            &format!("δ {}^2", sym("ω_{ср}"))
+        ),
+        frac(
+            &format!("{} dot {}", num(mu, 4, lang), num(kl, 4, lang)),
+            &format!("{} dot {}^2", num(delta, 4, lang), num(om, 5, lang))
+        ),
+        num(g.wittenbauer.read, 5, lang),
+    ));
+    let items = [
+        ("J_{м}", M::Flywheel, "kg*m^2"),
+        ("μ_{T}", M::EnergyScale, "J/mm"),
+        ("kl", M::Segment, "mm"),
+        ("δ", M::Irregularity, ""),
+        ("ω_{ср}", M::MeanSpeed, "rad/s"),
+    ];
+    explain_words(w, &items);
+    // Merkin: the range of T_I, less the constant inertia.
+    let j_const = d.spec.constant_inertia();
+    w.doc.say(w.word(N::MerkinWorked));
+    w.formula(&format!(
+        "{} = {} - {} = {} - {} = {}{jm}",
+        sym("J_{м}"),
+        frac(&sym("ΔT_{I}"), &format!("δ {}^2", sym("ω_{ср}"))),
+        sym("J_{const}"),
+        frac(
+            &num(g.merkin.range, 5, lang),
+            &format!("{} dot {}^2", num(delta, 4, lang), num(om, 5, lang))
+        ),
+        num(j_const, 5, lang),
+        num(g.merkin.read, 5, lang),
+    ));
+    let items = [
+        ("ΔT_{I}", M::MerkinRange, "J"),
+        ("J_{const}", M::ConstantInertia, "kg*m^2"),
+    ];
+    explain_words(w, &items);
+}
+
+/// The constant moment from the work of the varying side over the cycle, the mean power,
+/// and the exact flywheel.
+pub(super) fn drive(w: &mut Writer<'_, '_>, d: &Dynamics) {
+    let lang = w.lang;
+    let engine = d.spec.constant_moment == ConstantMoment::Resisting;
+    let (m, y, intro) = if engine {
+        ("M_{с}", "y_{с}", w.word(N::EngineMomentRead))
+    } else {
+        ("M_{д}", "y_{д}", w.word(N::DriveMomentRead))
+    };
+    // The moment as read through the pole: its ordinate, mm, at μ_M (seed 000 L1484).
+    let g = &d.diagrams;
+    let mu = g.scale_m.value();
+    let mv = g.m_drive.abs();
+    w.doc.par(&[label(intro)]);
+    w.formula(&format!(
+        "{} = {} {} = {} dot {} = {}{}",
+        sym(m),
+        sym("μ_{M}"),
+        sym(y),
+        num(mu, 4, lang),
+        num(mv / mu, 4, lang),
+        num(mv, 5, lang),
+        unit(&unit_in("N*m", lang))
+    ));
+    explain_words(w, &[(m, M::ConstantMoment, "N*m"), (y, M::Ordinate, "mm")]);
+    w.formula(&format!(
+        "{} = {} {} = {} dot {} = {}{}",
+        sym("N_{ср}"),
+        sym(m),
+        sym("ω_{ср}"),
+        num(mv, 5, lang),
+        num(d.w_avg, 5, lang),
+        num(mv * d.w_avg, 5, lang),
+        unit(&unit_in("W", lang)),
+    ));
+    let items = [("N_{ср}", M::MeanPower, "W")];
+    explain_words(w, &items);
+    w.doc.par(&[
+        text(w.word(T::ExactFlywheel)),
+        inline(&format!(
+            "{} = {}{}, {} = {}{}, {} = {}{}",
+            sym("J_{м}"),
+            num(d.exact.j_fw, 5, lang),
+            unit(&unit_in("kg*m^2", lang)),
+            sym("ω_{max}"),
+            num(d.exact.w_max.0, 5, lang),
+            unit(&unit_in("rad/s", lang)),
+            sym("ω_{min}"),
+            num(d.exact.w_min.0, 5, lang),
+            unit(&unit_in("rad/s", lang)),
+        )),
+    ]);
+}
+
+/// The flywheel's material and shape, its diameter and mass worked, the rim speed against
+/// the material's limit, and the main dimensions.
+pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
+    let lang = w.lang;
+    let fw = &d.spec.flywheel;
+    let s = &d.size;
+    let material = w.word(if fw.cast_iron() {
+        N::CastIron
+    } else {
+        N::Steel
+    });
+    let shape = match fw.kind {
+        FlywheelKind::Rim => N::RimWheel,
+        FlywheelKind::Disc => N::DiscWheel,
+    };
+    let sentence = fill(
+        w.word(shape),
+        &[
+            ("material", material.to_string()),
+            ("rho", crate::scale::format_sig(fw.rho, 5, lang)),
+            ("kj", crate::scale::format_sig(fw.k_j, 4, lang)),
+            ("km", crate::scale::format_sig(fw.k_m, 4, lang)),
+        ],
+    );
+    w.doc.par(&[label(&sentence)]);
+    let m_unit = unit(&unit_in("m", lang));
+    w.formula(&format!(
+        "{} = root(5, {}) = root(5, {}) = {}{m_unit}",
+        sym("D"),
+        frac(&sym("J_{м}"), &format!("{} ρ", sym("K_{j}"))),
+        frac(
+            &num(s.j, 5, lang),
+            &format!("{} dot {}", num(fw.k_j, 4, lang), num(fw.rho, 5, lang))
+        ),
+        num(s.d, 4, lang),
+    ));
+    let items = [
+        ("D", M::Diameter, "m"),
+        ("K_{j}", M::ShapeJ, ""),
+        ("ρ", M::Density, "kg/m^3"),
+    ];
+    explain_words(w, &items);
+    w.formula(&format!(
+        "{} = {} ρ {}^3 = {} dot {} dot {}^3 = {}{}",
+        sym("m"),
+        sym("K_{m}"),
+        sym("D"),
+        num(fw.k_m, 4, lang),
+        num(fw.rho, 5, lang),
+        num(s.d, 4, lang),
+        num(s.mass, 4, lang),
+        unit(&unit_in("kg", lang))
+    ));
+    let items = [("m", M::FlywheelMass, "kg"), ("K_{m}", M::ShapeM, "")];
+    explain_words(w, &items);
+    w.doc.say(w.word(N::RimSpeed));
+    let v = s.rim_speed(d.w_avg);
+    w.formula(&format!(
+        "{} = {} = {} = {}{}",
+        sym("v"),
+        frac(&format!("{} {}", sym("ω_{ср}"), sym("D")), "2"),
+        frac(
+            &format!("{} dot {}", num(d.w_avg, 5, lang), num(s.d, 4, lang)),
+            "2"
+        ),
+        num(v, 4, lang),
+        unit(&unit_in("m/s", lang))
+    ));
+    let items = [("v", M::RimSpeed, "m/s")];
+    explain_words(w, &items);
+    let limit = fw.rim_speed_limit();
+    let verdict = if v <= limit {
+        N::RimSpeedWithin
+    } else {
+        N::RimSpeedBeyond
+    };
+    let s2 = fill(
+        w.word(verdict),
+        &[
+            ("material", material.to_string()),
+            ("limit", crate::scale::format_sig(limit, 3, lang)),
+        ],
+    );
+    w.doc.say(&s2);
+    let dims: Vec<String> = s
+        .dims
+        .iter()
+        .filter(|(name, _)| *name != "D")
+        .map(|(name, x)| {
+            format!(
+                "{} = {}{}",
+                sym(name),
+                num(x * 1e3, 4, lang),
+                unit(w.word(T::MmUnit))
+            )
+        })
+        .collect();
+    w.doc
+        .par(&[text(w.word(T::FlywheelSize)), inline(&dims.join(", "))]);
+}

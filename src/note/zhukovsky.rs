@@ -1,0 +1,164 @@
+//! Zhukovsky's lever worked with every arm (seed 000 §2.4), the balancing load by the two
+//! routes compared, and the power (seed 000 §2.5: N = P·V/η; an engine's shaft power).
+
+use super::kinetostatics::difference;
+use super::machines::row;
+use super::markup::{frac, num, sym, unit};
+use super::moments::{
+    crank_speed, explain_owned, explain_words, lever_couple, meaning, product, worked_equation,
+    Arms,
+};
+use super::{NoteError, Writer};
+use crate::check::Method;
+use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
+use crate::geom::DVec2;
+use crate::sheets::captions::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+
+/// Zhukovsky's lever: its moment equation about the pole with every arm in mm and the
+/// balancing force (a gear drive) or moment (a coupling) it gives.
+pub(super) fn lever(w: &mut Writer<'_, '_>, f: &PositionForces) -> Result<(), NoteError> {
+    let lever = &f.analysis.lever;
+    let e = &lever.equation;
+    if e.terms.iter().all(|t| t.moment == 0.0) {
+        return Ok(());
+    }
+    w.doc.say(w.word(N::LeverIntro));
+    let loads = f.analysis.loads.clone();
+    match e.unknown {
+        Unknown::Force { .. } => worked_equation(w, e, &loads, Arms::Millimetres, None),
+        Unknown::Arm { .. } | Unknown::Couple { .. } => {
+            w.doc.say(w.word(N::LeverMoment));
+            let w1 = crank_speed(w)?;
+            let mu_v = lever.figure.scale.value();
+            lever_couple(w, e, &loads, (mu_v, w1), lever.m_bal);
+        }
+    }
+    Ok(())
+}
+
+/// The balancing load by the polygons against the lever, and the power: the drive's
+/// (N = |M_у|·ω₁, the motor's N/η, and the seed's N = P·V/η) or an engine's shaft power.
+pub(super) fn balancing_and_power(
+    w: &mut Writer<'_, '_>,
+    spec: &ForceSpec,
+    f: &PositionForces,
+    p: &str,
+) -> Result<(), NoteError> {
+    let lang = w.lang;
+    let w1 = crank_speed(w)?;
+    let poly = &f.analysis.polygons.driver;
+    let lever = &f.analysis.lever;
+    if let (Some(a), Some(b)) = (poly.f_bal, lever.f_bal) {
+        w.doc.say(w.word(N::CompareForces));
+        difference(w, "F_{у}", a, b, true);
+    }
+    let m_poly = row(&w.report.rows, "M_bal", Method::Polygon, Some(p)).cloned();
+    let m_lever = row(&w.report.rows, "M_bal", Method::Lever, Some(p)).cloned();
+    let (Some(a), Some(b)) = (m_poly, m_lever) else {
+        return Ok(());
+    };
+    w.doc.say(w.word(T::BalancingBothRoutes));
+    difference(w, "M_{у}", a.graphical, b.graphical, true);
+    let engine = !spec.indicators.is_empty();
+    let n = a.graphical.abs() * w1.abs();
+    let (intro, meaning_n) = if engine {
+        (w.word(N::EnginePower), M::ShaftPower)
+    } else {
+        (w.word(T::DrivePower), M::DrivePower)
+    };
+    w.doc.say(intro);
+    product(
+        w,
+        "N",
+        &[format!("|{}|", sym("M_{у}")), sym("ω_{1}")],
+        &[num(a.graphical.abs(), 5, lang), num(w1.abs(), 5, lang)],
+        &format!("{}{}", num(n, 5, lang), unit(&unit_in("W", lang))),
+    );
+    explain_words(
+        w,
+        &[("N", meaning_n, "W"), ("ω_{1}", M::CrankSpeed, "rad/s")],
+    );
+    if engine {
+        return Ok(());
+    }
+    if let Some(eta) = spec.efficiency {
+        w.doc.say(w.word(T::MotorPower));
+        w.formula(&format!(
+            "{} = {} = {} = {}{}",
+            sym("N_{дв}"),
+            frac(&sym("N"), &sym("η")),
+            frac(&num(n, 5, lang), &num(eta, 3, lang)),
+            num(n / eta, 5, lang),
+            unit(&unit_in("W", lang))
+        ));
+        let items = [("N_{дв}", M::MotorPower, "W"), ("η", M::Efficiency, "")];
+        explain_words(w, &items);
+    }
+    resistance_power(w, spec, f, p)
+}
+
+/// The seed's N = P·V/η: each working resistance at the position, its point's speed off
+/// the velocity plan and the drive's efficiency.
+fn resistance_power(
+    w: &mut Writer<'_, '_>,
+    spec: &ForceSpec,
+    f: &PositionForces,
+    p: &str,
+) -> Result<(), NoteError> {
+    let lang = w.lang;
+    let sc = w.session.kin_scales()?;
+    let names = w.session.positions(sc.l)?.program.names.clone();
+    let loads = f.analysis.loads.clone();
+    let working = loads
+        .iter()
+        .filter(|l| l.kind == LoadKind::Resistance && l.force != DVec2::ZERO);
+    let mut first = true;
+    for l in working {
+        let point = names.get(l.at).cloned().unwrap_or_default();
+        let plain = point.replace(['_', '{', '}'], "");
+        // The speed as the velocity plan reads it (the drawn motion where no row has it).
+        let v = row(&w.report.rows, &format!("v_{plain}"), Method::Plan, Some(p))
+            .map(|r| r.graphical.abs())
+            .unwrap_or_else(|| f.drawn.v.get(l.at).map_or(0.0, |v| v.length()));
+        let speed = format!("V_{{{plain}}}");
+        if first {
+            w.doc.say(w.word(N::PowerPV));
+            first = false;
+        }
+        let force = l.force.length();
+        let (top, value) = (
+            format!("{} dot {}", num(force, 5, lang), num(v, 4, lang)),
+            force * v,
+        );
+        let math = match spec.efficiency {
+            Some(eta) => format!(
+                "{} = {} = {} = {}{}",
+                sym("N_{пс}"),
+                frac(&format!("{} {}", sym(&l.name), sym(&speed)), &sym("η")),
+                frac(&top, &num(eta, 3, lang)),
+                num(value / eta, 5, lang),
+                unit(&unit_in("W", lang))
+            ),
+            None => format!(
+                "{} = {} {} = {top} = {}{}",
+                sym("N_{пс}"),
+                sym(&l.name),
+                sym(&speed),
+                num(value, 5, lang),
+                unit(&unit_in("W", lang))
+            ),
+        };
+        w.formula(&math);
+        let items = [
+            (
+                "N_{пс}".to_string(),
+                w.word(M::ResistancePower).to_string(),
+                "W",
+            ),
+            (l.name.clone(), meaning(w, &l.name, &loads), "N"),
+            (speed, w.word(M::PointSpeed).to_string(), "m/s"),
+        ];
+        explain_owned(w, &items);
+    }
+    Ok(())
+}
