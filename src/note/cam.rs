@@ -13,7 +13,7 @@ use crate::sheets::captions::{unit_in, NoteText as T};
 /// angle, Table 7.
 pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let special = w.session.special_cam()?;
-    w.heading(1, T::CamSection);
+    w.section(T::CamSection);
     let (intro, scene) = match special.as_deref().map(|c| &c.profile) {
         Some(SpecialProfile::FlatRocker { .. }) => (T::CamFlatRockerIntro, T::CamSpecialScene),
         Some(SpecialProfile::Sliding { .. }) => (T::CamSlidingIntro, T::CamSpecialScene),

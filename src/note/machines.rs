@@ -375,37 +375,6 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     Ok(())
 }
 
-/// The balancing and friction studies of a scene that has them.
-pub(super) fn others(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
-    let scene = w.session.scene();
-    if scene.balancing.is_some() {
-        w.heading(1, T::BalancingSection);
-        w.data_list(PlateKind::Balancing, false);
-        let caption = w.word(T::BalancingTable);
-        of_scene(w, caption, |r| {
-            matches!(
-                r.key.symbol,
-                Symbol::Mass | Symbol::StaticMoment | Symbol::UnbalanceMoment | Symbol::Angle
-            )
-        });
-        w.figures(
-            (PlateKind::Balancing, None),
-            |_| true,
-            |own| own.to_string(),
-        );
-    }
-    if !scene.friction.is_empty() {
-        w.heading(1, T::FrictionSection);
-        let caption = w.word(T::FrictionTable);
-        of_scene(w, caption, |r| {
-            r.position().is_none() || r.key.subject.ends_with("_f")
-        });
-        super::friction::followers(w);
-        w.figures((PlateKind::Friction, None), |_| true, |own| own.to_string());
-    }
-    Ok(())
-}
-
 /// Each group's vector equation of equilibrium at the `k`-th analysed position, in the order
 /// the groups are solved (from the last attached), then the driving link's: the reactions of
 /// its outer pairs, those of the links solved before it (R₄₋₃ = −R₃₋₄), the forces on its

@@ -14,9 +14,12 @@ mod cam;
 mod cam_special;
 mod explain;
 mod friction;
+mod friction_pairs;
 mod front;
 mod gears;
+mod genre;
 mod kinematics;
+mod lecture;
 mod machines;
 mod markup;
 mod rows;
@@ -263,7 +266,7 @@ pub fn compose_with(
     if scene.gears.is_some() {
         gears::gears(&mut w)?;
     }
-    machines::others(&mut w)?;
+    lecture::others(&mut w)?;
     front::conclusions(&mut w);
     front::references(&mut w);
     w.explained.settle();

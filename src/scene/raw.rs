@@ -45,6 +45,12 @@ pub(crate) struct RawTask {
     pub group: Option<String>,
     pub year: Option<String>,
     pub note: Option<String>,
+    pub university: Option<String>,
+    pub city: Option<String>,
+    pub genre: Option<String>,
+    pub ru: Option<super::task::RawTaskText>,
+    pub uk: Option<super::task::RawTaskText>,
+    pub en: Option<super::task::RawTaskText>,
 }
 
 /// `[mechanism]`.

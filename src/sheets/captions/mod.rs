@@ -6,16 +6,22 @@
 mod audit;
 mod linkage;
 mod machines;
+mod meaning_cases;
 mod meanings;
 mod note;
+mod note_cases;
+mod note_genres;
 pub(crate) mod symbols;
 
 pub(crate) use audit::AuditText;
 pub(crate) use linkage::Text;
 pub(super) use machines::{CamText, DynamicsText, RotorText};
 pub(crate) use machines::{FrictionText, GearText};
+pub(crate) use meaning_cases::CaseMeaning;
 pub(crate) use meanings::Meaning;
 pub(crate) use note::NoteText;
+pub(crate) use note_cases::CaseText;
+pub(crate) use note_genres::GenreText;
 pub(crate) use symbols::{quantity, subscripted};
 
 /// A word of the catalogue: its text in a language.
