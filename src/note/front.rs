@@ -156,7 +156,12 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         table_of_data(w, caption, &rows);
     }
     if let Some(f) = &scene.forces {
-        let caption = w.word(T::ForcesData);
+        // An engine's forces are its gases' pressure, a machine tool's its resistances.
+        let caption = if f.indicators.is_empty() {
+            w.word(T::ForcesData)
+        } else {
+            w.word(crate::sheets::captions::GenreText::EngineForcesData)
+        };
         table_of_data(w, caption, &crate::sheets::data::forces(f, w.lang));
     }
     if let Some(g) = &scene.gears {

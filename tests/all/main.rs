@@ -40,6 +40,7 @@ mod messages;
 mod mutations;
 mod note;
 mod note_form;
+mod note_genres;
 mod note_language;
 mod output;
 mod plan_lines;

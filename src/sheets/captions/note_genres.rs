@@ -20,6 +20,11 @@ catalogue! {
         Done => ("Работу выполнил", "Роботу виконав", "Done by"),
         Accepted => ("Работу принял", "Роботу прийняв", "Accepted by"),
         Date => ("Дата", "Дата", "Date"),
+        EngineForcesData => (
+            "Массы звеньев и силы давления газов",
+            "Маси ланок і сили тиску газів",
+            "The links' masses and the gas forces"
+        ),
         GoalAndData => ("Цель работы и исходные данные", "Мета роботи та вихідні дані", "The goal and the data"),
         Problem => ("Условие задачи", "Умова задачі", "The problem"),
         Pz1Topic => (
