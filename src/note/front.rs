@@ -276,6 +276,7 @@ fn table_of_data(w: &mut Writer<'_, '_>, caption: &str, rows: &[(String, String,
 /// reproduce of the source.
 pub(super) fn conclusions(w: &mut Writer<'_, '_>) {
     w.section(T::Conclusions);
+    super::practicum::summary(w);
     w.doc.say(w.word(T::ConclusionsErrors));
     let summary = w.report.summary();
     let header = [

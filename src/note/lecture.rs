@@ -106,7 +106,7 @@ fn rotor(w: &mut Writer<'_, '_>, spec: &BalancingSpec) {
             // Plane II from the moments about plane I, plane I from the static moments with
             // plane II's correction.
             let moment = projections(w, &spec.masses, Some(planes[0]));
-            let per = |axis: &str| frac(&sym(&format!("D_{{z{axis}}}")), "L");
+            let per = |axis: &str| frac(&sym(&format!("M_{{{axis}}}")), "L");
             if let Some(second) = corrections.get(1) {
                 let parts = (per("x"), per("y"));
                 correcting(w, second, (moment / span, parts), "уII");
@@ -132,16 +132,13 @@ fn projections(w: &mut Writer<'_, '_>, masses: &[Mass], about: Option<f64>) -> D
         None => main_vector(masses),
         Some(z0) => main_moment(masses, z0),
     };
+    // The static moments' sum D, the moments' sum M about plane I.
     let (name, unit_si) = match about {
         None => ("D", "kg*m"),
-        Some(_) => ("D_{z}", "kg*m^2"),
+        Some(_) => ("M", "kg*m^2"),
     };
     for (axis, f, value) in [("x", "cos", sum.x), ("y", "sin", sum.y)] {
-        let symbol = if about.is_none() {
-            format!("{name}_{{{axis}}}")
-        } else {
-            format!("D_{{z{axis}}}")
-        };
+        let symbol = format!("{name}_{{{axis}}}");
         let arm = |k: usize| match about {
             None => String::new(),
             Some(_) => format!(" {}", sym(&format!("z_{{{k}}}"))),

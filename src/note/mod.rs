@@ -22,6 +22,7 @@ mod kinematics;
 mod lecture;
 mod machines;
 mod markup;
+mod practicum;
 mod rows;
 mod train;
 mod typeset;

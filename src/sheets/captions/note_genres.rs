@@ -25,6 +25,26 @@ catalogue! {
             "Маси ланок і сили тиску газів",
             "The links' masses and the gas forces"
         ),
+        Wheel => ("Колесо", "Колесо", "Wheel"),
+        Undercut => ("зуб подрезан (x < x_{min})", "зуб підрізаний (x < x_{min})", "the tooth is undercut (x < x_{min})"),
+        NotUndercut => ("подреза нет (x ≥ x_{min})", "підрізу немає (x ≥ x_{min})", "no undercut (x ≥ x_{min})"),
+        Pointed => ("зуб заострён (s_{a} < 0,3m)", "зуб загострений (s_{a} < 0,3m)", "the tooth is pointed (s_{a} < 0.3m)"),
+        TipEnough => ("толщина зуба на окружности вершин достаточна (s_{a} ≥ 0,3m)", "товщина зуба на колі вершин достатня (s_{a} ≥ 0,3m)", "the tooth is thick enough at the tip (s_{a} ≥ 0.3m)"),
+        ShiftEffect => (
+            "Положительное смещение рейки устраняет подрез и утолщает зуб у основания и по делительной окружности (S_{t} = 0,5P_{t} + 2x·tg α), но утоняет его на окружности вершин; допустимое смещение лежит между x_{min} и смещением, при котором s_{a} = 0,3m.",
+            "Додатне зміщення рейки усуває підріз і потовщує зуб біля основи та по ділильному колу (S_{t} = 0,5P_{t} + 2x·tg α), але стоншує його на колі вершин; допустиме зміщення лежить між x_{min} і зміщенням, за якого s_{a} = 0,3m.",
+            "A positive shift of the rack removes the undercut and thickens the tooth at its root and on the pitch circle (S_{t} = 0.5P_{t} + 2x·tan α) but thins it at the tip; the shift allowed lies between x_{min} and the shift at which s_{a} = 0.3m."
+        ),
+        SameSense => (
+            "ведущее и выходное звенья вращаются в одну сторону (передаточное отношение положительно).",
+            "ведуча і вихідна ланки обертаються в один бік (передаточне відношення додатне).",
+            "the driving and the output link turn the same way (the ratio is positive)."
+        ),
+        OppositeSense => (
+            "ведущее и выходное звенья вращаются в противоположные стороны (передаточное отношение отрицательно).",
+            "ведуча і вихідна ланки обертаються в протилежні боки (передаточне відношення від'ємне).",
+            "the driving and the output link turn opposite ways (the ratio is negative)."
+        ),
         GoalAndData => ("Цель работы и исходные данные", "Мета роботи та вихідні дані", "The goal and the data"),
         Problem => ("Условие задачи", "Умова задачі", "The problem"),
         Pz1Topic => (
