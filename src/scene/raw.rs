@@ -48,9 +48,9 @@ pub(crate) struct RawTask {
     pub university: Option<String>,
     pub city: Option<String>,
     pub genre: Option<String>,
-    pub ru: Option<super::task::RawTaskText>,
-    pub uk: Option<super::task::RawTaskText>,
-    pub en: Option<super::task::RawTaskText>,
+    pub ru: Option<super::task::TaskText>,
+    pub uk: Option<super::task::TaskText>,
+    pub en: Option<super::task::TaskText>,
 }
 
 /// `[mechanism]`.

@@ -8,21 +8,10 @@ use super::raw::RawTask;
 use crate::scale::Lang;
 use serde::Deserialize;
 
-/// `[task.ru]`, `[task.uk]`, `[task.en]`: the texts of `[task]` in that language.
-#[derive(Debug, Default, Deserialize)]
+/// `[task.ru]`, `[task.uk]`, `[task.en]`: the texts of `[task]` a language replaces (each
+/// `None`: the scene's own), read as written.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub(crate) struct RawTaskText {
-    pub title: Option<String>,
-    pub author: Option<String>,
-    pub checked: Option<String>,
-    pub organisation: Option<String>,
-    pub university: Option<String>,
-    pub city: Option<String>,
-    pub group: Option<String>,
-}
-
-/// The texts of `[task]` a language's table replaces (each `None`: the scene's own).
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct TaskText {
     /// The title.
     pub title: Option<String>,
@@ -38,20 +27,6 @@ pub struct TaskText {
     pub city: Option<String>,
     /// The group.
     pub group: Option<String>,
-}
-
-impl From<RawTaskText> for TaskText {
-    fn from(r: RawTaskText) -> Self {
-        TaskText {
-            title: r.title,
-            author: r.author,
-            checked: r.checked,
-            organisation: r.organisation,
-            university: r.university,
-            city: r.city,
-            group: r.group,
-        }
-    }
 }
 
 /// The practical works of seed 002 (Михайленко и др., ТДАТУ 2023), each with its report form.
@@ -138,7 +113,7 @@ pub(super) fn title(check: &mut Checker, task: RawTask, stem: &str) -> TitleInfo
         (Lang::En, task.en),
     ]
     .into_iter()
-    .filter_map(|(lang, t)| t.map(|t| (lang, TaskText::from(t))))
+    .filter_map(|(lang, t)| t.map(|t| (lang, t)))
     .collect();
     TitleInfo {
         title: task.title.unwrap_or_else(|| stem.to_string()),
