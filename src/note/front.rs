@@ -60,7 +60,14 @@ pub(super) fn title_page(w: &mut Writer<'_, '_>) {
     let student = if t.group.is_empty() {
         w.word(T::Student).to_string()
     } else {
-        format!("{} {} {}", w.word(T::Student), w.word(T::OfGroup), t.group)
+        // English sets the group off: «Student, group TM-21».
+        let comma = if w.lang == Lang::En { "," } else { "" };
+        format!(
+            "{}{comma} {} {}",
+            w.word(T::Student),
+            w.word(T::OfGroup),
+            t.group
+        )
     };
     let supervisor = match w.genre() {
         crate::scene::Genre::CourseProject => w.word(T::Supervisor),
