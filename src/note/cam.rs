@@ -7,13 +7,13 @@ use super::{NoteError, Writer};
 use crate::cam::{Follower, Law, SpecialProfile};
 use crate::check::{Method, Symbol};
 use crate::scene::PlateKind;
-use crate::sheets::captions::{unit_in, NoteText as T};
+use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};
 
 /// The cam: the law, the diagrams, r_min, the profile and the transmission (pressure)
 /// angle, Table 7.
 pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let special = w.session.special_cam()?;
-    w.heading(1, T::CamSection);
+    w.section(T::CamSection);
     let (intro, scene) = match special.as_deref().map(|c| &c.profile) {
         Some(SpecialProfile::FlatRocker { .. }) => (T::CamFlatRockerIntro, T::CamSpecialScene),
         Some(SpecialProfile::Sliding { .. }) => (T::CamSlidingIntro, T::CamSpecialScene),
@@ -69,7 +69,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         (s.ret, s.phases.ret, lang.pick("п", "н", "ret")),
     ];
     let mut lines = Vec::new();
-    for (law, phase, index) in phases {
+    for (k, (law, phase, index)) in phases.into_iter().enumerate() {
         let Some((cv, v, ca, a)) = peaks(law) else {
             continue;
         };
@@ -80,25 +80,43 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
                 &format!("{}{power}", n(phase)),
             )
         };
-        lines.push(format!(
-            "({})_(max) = {} = {} = {}",
-            sym("dS/dφ"),
-            frac(&format!("{v} {stroke}"), &phi),
-            substituted(v, ""),
-            mm(cv * s.stroke / phase)
+        let phase_word = [M::RisePhase, M::ReturnPhase][k];
+        lines.push((
+            format!(
+                "({})_(max) = {} = {} = {}",
+                sym("dS/dφ"),
+                frac(&format!("{v} {stroke}"), &phi),
+                substituted(v, ""),
+                mm(cv * s.stroke / phase)
+            ),
+            vec![
+                ("dS/dφ", M::VelocityAnalogue, "mm"),
+                ("S_{max}", M::Stroke, "mm"),
+            ],
+            Some((format!("φ_{{{index}}}"), phase_word)),
         ));
-        lines.push(format!(
-            "({})_(max) = {} = {} = {}",
-            sym("d^{2}S/dφ^{2}"),
-            frac(&format!("{a} {stroke}"), &format!("{phi}^2")),
-            substituted(a, "^2"),
-            mm(ca * s.stroke / (phase * phase))
+        lines.push((
+            format!(
+                "({})_(max) = {} = {} = {}",
+                sym("d^{2}S/dφ^{2}"),
+                frac(&format!("{a} {stroke}"), &format!("{phi}^2")),
+                substituted(a, "^2"),
+                mm(ca * s.stroke / (phase * phase))
+            ),
+            vec![("d^{2}S/dφ^{2}", M::AccelerationAnalogue, "mm")],
+            None,
         ));
     }
     if !lines.is_empty() {
         w.doc.say(w.word(T::CamPeaks));
-        for l in &lines {
+        for (l, items, phase) in &lines {
             w.formula(l);
+            let mut words: Vec<(&str, &str, &str)> =
+                items.iter().map(|(s, m, u)| (*s, w.word(*m), *u)).collect();
+            if let Some((label, m)) = phase {
+                words.push((label.as_str(), w.word(*m), "rad"));
+            }
+            w.explain(&words);
         }
     }
     // The base radius: |O₁B₀| on the combined diagram at μ_S.
@@ -116,6 +134,11 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             num(r, 4, lang),
             unit(&unit_in("m", lang))
         ));
+        w.explain(&[
+            ("r_{min}", w.word(M::BaseRadius), "m"),
+            ("O_{1}B_{0}", w.word(M::DiagramSegment), "mm"),
+            ("μ_{S}", w.word(M::DisplacementScale), "m/mm"),
+        ]);
     }
     if cam.roller > 0.0 && s.roller.is_none() {
         let (base, rho) = (cam.base, cam.inversion.rho_min);
@@ -134,6 +157,11 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             n(rho * 1e3),
             mm(cam.roller)
         ));
+        w.explain(&[
+            ("r_{р}", w.word(M::RollerRadius), "mm"),
+            ("r_{0}", w.word(M::InitialRadius), "mm"),
+            ("ρ_{min}", w.word(M::CurvatureMin), "mm"),
+        ]);
     }
     Ok(())
 }

@@ -6,7 +6,7 @@
 use super::markup::{frac, num, sym, unit};
 use super::{NoteError, Writer};
 use crate::cam::{Special, SpecialProfile};
-use crate::sheets::captions::{unit_in, NoteText as T};
+use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};
 use crate::study::StudyError;
 use std::f64::consts::TAU;
 
@@ -35,6 +35,12 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 sym("ψ_{0}"),
                 deg(ratio.asin())
             ));
+            w.explain(&[
+                ("ψ_{0}", w.word(M::RockerStart), "deg"),
+                ("r_{0}", w.word(M::InitialRadius), "mm"),
+                ("e", w.word(M::FaceOffset), "mm"),
+                ("a", w.word(M::Centres), "mm"),
+            ]);
             w.doc.say(w.word(T::CamFlatRockerCurvature));
             w.formula(&format!(
                 "{} = {} + {}, quad {} = {} sin {} - {}",
@@ -46,6 +52,10 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 sym("ψ"),
                 sym("e")
             ));
+            w.explain(&[
+                ("ρ", w.word(M::Curvature), "mm"),
+                ("h", w.word(M::FaceDistance), "mm"),
+            ]);
             w.formula(&format!(
                 "{} = {} quad (\"{}\" {})",
                 sym("ρ_{min}"),
@@ -53,6 +63,7 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 w.word(T::CamOnTheBoard),
                 mm(drawn)
             ));
+            w.explain(&[("ρ_{min}", w.word(M::CurvatureMin), "mm")]);
         }
         SpecialProfile::Sliding { frame, .. } => {
             let lambda_max = cam.lambda_max();
@@ -69,6 +80,11 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 sym("dS/dφ"),
                 frac("2π", &sym("X"))
             ));
+            w.explain(&[
+                ("λ", w.word(M::PressureAngle), "deg"),
+                ("ξ", w.word(M::CamTravel), "mm"),
+                ("X", w.word(M::CamLength), "mm"),
+            ]);
             w.formula(&format!(
                 "{} = {} = {} = {} quad (\"{}\" {})",
                 sym("X_{min}"),
@@ -84,6 +100,10 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 w.word(T::CamOnTheBoard),
                 mm(read)
             ));
+            w.explain(&[
+                ("X_{min}", w.word(M::CamLengthMin), "mm"),
+                ("λ_{max}", w.word(M::PressureMax), "deg"),
+            ]);
             if rho.is_finite() {
                 w.doc.say(w.word(T::CamSlidingRoller));
                 let sign = if frame.roller < rho { "<" } else { ">=" };
@@ -96,6 +116,10 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                     w.word(T::CamOnTheBoard),
                     mm(drawn)
                 ));
+                w.explain(&[
+                    ("r_{р}", w.word(M::RollerRadius), "mm"),
+                    ("ρ_{min}", w.word(M::CurvatureMin), "mm"),
+                ]);
             }
         }
     }

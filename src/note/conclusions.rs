@@ -13,7 +13,8 @@ use crate::sheets::data::mm;
 /// seed's §1.6, for every quantity of the project), then what the project does not
 /// reproduce of the source.
 pub(super) fn conclusions(w: &mut Writer<'_, '_>) {
-    w.heading(1, T::Conclusions);
+    w.section(T::Conclusions);
+    super::practicum::summary(w);
     w.doc.say(w.word(T::ConclusionsErrors));
     let summary = w.report.summary();
     let header = [
@@ -86,6 +87,37 @@ pub(super) fn conclusions(w: &mut Writer<'_, '_>) {
         w.doc.say(w.word(T::ExactReading));
     }
     seed_values(w);
+    sign_off(w);
+}
+
+/// A practical work's form ends with the student's and the instructor's signatures and the
+/// date (seed 002: «Роботу виконав … Дата … Роботу прийняв …»).
+fn sign_off(w: &mut Writer<'_, '_>) {
+    if w.practicum_form().is_none() {
+        return;
+    }
+    use crate::sheets::captions::GenreText as G;
+    let t = w.session.scene().title.in_lang(w.lang);
+    // A signature's or a date's line, drawn (no underscores in the text).
+    let line = "#box(width: 35mm, stroke: (bottom: 0.5pt))";
+    let name = |s: &str| {
+        if s.is_empty() {
+            line.to_string()
+        } else {
+            format!("#{}", text(s))
+        }
+    };
+    w.doc.raw(&format!(
+        "#v(6mm)\n#{} {} {line} #h(8mm) #{} {line}\n",
+        text(w.word(G::Done)),
+        name(&t.author),
+        text(w.word(G::Date))
+    ));
+    w.doc.raw(&format!(
+        "\n#{} {} {line}\n",
+        text(w.word(G::Accepted)),
+        name(&t.checked)
+    ));
 }
 
 /// The source's values the project does not reproduce: the value printed, the exact one,

@@ -7,31 +7,11 @@
 use super::gears::{deg, worked};
 use super::markup::{frac, num, sym, unit};
 use super::Writer;
-use crate::forces::friction::{guide_twin, pivot_twin, CaseKind, FollowerGuide, RockerPivot};
-use crate::sheets::captions::{unit_in, FrictionText, NoteText as T};
-
-/// Every follower case of the scene's friction, worked after its own title line
-/// (`Случай n: …` as the sheet numbers it).
-pub(super) fn followers(w: &mut Writer<'_, '_>) {
-    let cases = &w.session.scene().friction;
-    for (i, case) in cases.iter().enumerate() {
-        let (what, kind) = match case.kind {
-            CaseKind::Guide(_) => (FrictionText::Guide, case.kind),
-            CaseKind::Pivot(_) => (FrictionText::Pivot, case.kind),
-            _ => continue,
-        };
-        let title = format!("{} {}: {}", w.word(FrictionText::Case), i + 1, w.word(what));
-        w.doc.say(&title);
-        match kind {
-            CaseKind::Guide(c) => guide(w, &c),
-            CaseKind::Pivot(c) => pivot(w, &c),
-            _ => {}
-        }
-    }
-}
+use crate::forces::friction::{guide_twin, pivot_twin, FollowerGuide, RockerPivot};
+use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};
 
 /// A translating follower in its guide: P, N₁, N₂, R₁, R₂ and λ_кр.
-fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {
+pub(super) fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {
     let Some(t) = guide_twin(c) else {
         return;
     };
@@ -53,6 +33,25 @@ fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {
         ),
         format!("{}{newton}", n(t.p)),
     );
+    let words = [
+        w.word(M::FollowerForce),
+        w.word(M::Resistance),
+        w.word(M::PressureAngle),
+        w.word(M::FrictionCoefficient),
+        w.word(M::GuideLength),
+        w.word(M::Overhang),
+        w.word(M::BearingNormal),
+        w.word(M::BearingReaction),
+        w.word(M::LockAngle),
+    ];
+    w.explain(&[
+        ("P", words[0], "N"),
+        ("Q", words[1], "N"),
+        ("λ", words[2], "deg"),
+        ("f", words[3], ""),
+        ("l", words[5], "mm"),
+        ("b", words[4], "mm"),
+    ]);
     for (i, arm, value) in [(1, format!("({l} + {b})"), t.n[0]), (2, l.clone(), t.n[1])] {
         let near = if i == 1 { "(l + b)" } else { "l" };
         worked(
@@ -62,6 +61,8 @@ fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {
             &frac(&format!("{} dot sin {lambda} dot {arm}", n(t.p)), &b),
             format!("{}{newton}", n(value)),
         );
+        let normal = format!("N_{{{i}}}");
+        w.explain(&[(normal.as_str(), words[6], "N")]);
         worked(
             w,
             &sym(&format!("R_{{{i}}}")),
@@ -69,6 +70,8 @@ fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {
             &format!("{} dot sqrt(1 + {f}^2)", n(value)),
             format!("{}{newton}", n(t.r[i - 1])),
         );
+        let total = format!("R_{{{i}}}");
+        w.explain(&[(total.as_str(), words[7], "N")]);
     }
     w.doc.say(w.word(T::FollowerLock));
     worked(
@@ -78,6 +81,7 @@ fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {
         &frac(&b, &format!("{f} dot (2 dot {l} + {b})")),
         n(t.lock.tan()),
     );
+    w.explain(&[("λ_{кр}", words[8], "deg")]);
     w.formula(&format!(
         "{} = {} > λ = {lambda}",
         sym("λ_{кр}"),
@@ -86,7 +90,7 @@ fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {
 }
 
 /// A rocker in its pivot: φ, ρ, h, P and λ_кр, the lecture's estimate beside it.
-fn pivot(w: &mut Writer<'_, '_>, c: &RockerPivot) {
+pub(super) fn pivot(w: &mut Writer<'_, '_>, c: &RockerPivot) {
     let Some(t) = pivot_twin(c) else {
         return;
     };
@@ -99,25 +103,44 @@ fn pivot(w: &mut Writer<'_, '_>, c: &RockerPivot) {
     w.doc.say(w.word(T::FollowerPivotWorked));
     worked(
         w,
-        "φ",
+        &sym("φ"),
         "op(\"arctg\") f",
         &format!("op(\"arctg\") {f}"),
         phi.clone(),
     );
+    let words = [
+        w.word(M::FrictionAngle),
+        w.word(M::FrictionCoefficient),
+        w.word(M::FrictionCircle),
+        w.word(M::PivotDiameter),
+        w.word(M::ForceArm),
+        w.word(M::RockerArm),
+        w.word(M::PressureAngle),
+        w.word(M::FollowerForce),
+        w.word(M::ResistanceMoment),
+        w.word(M::LockAngle),
+    ];
+    w.explain(&[("φ", words[0], "deg"), ("f", words[1], "")]);
     worked(
         w,
-        "ρ",
+        &sym("ρ"),
         "d/2 dot sin φ",
         &format!("{d}/2 dot sin {phi}"),
         format!("{}{mmu}", n(t.rho * 1e3)),
     );
+    w.explain(&[("ρ", words[2], "mm"), ("d", words[3], "mm")]);
     worked(
         w,
-        "h",
+        &sym("h"),
         "L cos λ - ρ",
         &format!("{arm} dot cos {lambda} - {}", n(t.rho * 1e3)),
         format!("{}{mmu}", n(t.h * 1e3)),
     );
+    w.explain(&[
+        ("h", words[4], "mm"),
+        ("L", words[5], "mm"),
+        ("λ", words[6], "deg"),
+    ]);
     worked(
         w,
         &sym("P"),
@@ -125,6 +148,7 @@ fn pivot(w: &mut Writer<'_, '_>, c: &RockerPivot) {
         &frac(&n(c.moment), &format!("{} dot 10^(-3)", n(t.h * 1e3))),
         format!("{}{newton}", n(t.p)),
     );
+    w.explain(&[("P", words[7], "N"), ("M_{с}", words[8], "N*m")]);
     w.doc.say(w.word(T::FollowerLock));
     worked(
         w,
@@ -133,6 +157,7 @@ fn pivot(w: &mut Writer<'_, '_>, c: &RockerPivot) {
         &frac(&n(t.rho * 1e3), &arm),
         n(t.lock.cos()),
     );
+    w.explain(&[("λ_{кр}", words[9], "deg")]);
     w.formula(&format!(
         "{} = {} > λ = {lambda}",
         sym("λ_{кр}"),

@@ -1,5 +1,5 @@
 //! The note's frame and its first and last sections: the page rules and the title block's
-//! data, the title page, the contents, the task and the references.
+//! data, the title page, the contents, the task, the conclusions and the references.
 
 use super::markup::{label, string, text, Align};
 use super::rows::fmt;
@@ -12,14 +12,14 @@ use crate::sheets::data::mm;
 
 /// The page rules (`template.typ`) after the title block's data.
 pub(super) fn preamble(w: &mut Writer<'_, '_>) {
-    let t = &w.session.scene().title;
+    let t = w.session.scene().title.in_lang(w.lang);
     let c = crate::plate::title_block_captions(w.lang);
     let list = |xs: &[&str]| {
         let items: Vec<String> = xs.iter().map(|x| string(x)).collect();
         format!("({},)", items.join(", "))
     };
-    let designation = format!("{} {}", t.designation, w.word(T::NoteCode));
-    let document = format!("{}\n{}", t.title, w.word(T::ExplanatoryNote));
+    let designation = w.designation();
+    let document = format!("{}\n{}", t.title, w.document_name());
     let lang = match w.lang {
         Lang::Ru => "ru",
         Lang::Uk => "uk",
@@ -29,7 +29,7 @@ pub(super) fn preamble(w: &mut Writer<'_, '_>) {
         "#let meta = (title: {}, lang: {}, designation: {}, document: {}, author: {}, checked: {}, organisation: {}, changes: {}, people: {}, letter: {}, sheet: {}, sheets: {}, figure: {}, table: {}, continued: {}, where: {})",
         string(&t.title),
         string(lang),
-        string(designation.trim()),
+        string(&designation),
         string(&document),
         string(&t.author),
         string(&t.checked),
@@ -48,34 +48,86 @@ pub(super) fn preamble(w: &mut Writer<'_, '_>) {
     w.doc.raw(include_str!("template.typ"));
 }
 
-/// The title page: the organisation, the work, the project's designation, the people.
+/// The title page in the note's language: the university and the department, the
+/// document's name after its genre (a practical work's topic), the work's title and
+/// designation, the student with the group and the instructor, the city and the year; a
+/// line the scene leaves empty is left out.
 pub(super) fn title_page(w: &mut Writer<'_, '_>) {
-    let t = &w.session.scene().title;
+    let t = w.session.scene().title.in_lang(w.lang);
     let line = |s: &str| format!("#{}", string(s));
-    let designation = format!("{} {}", t.designation, w.word(T::NoteCode));
+    // «Выполнил студент группы ТМ-21: …».
     let student = if t.group.is_empty() {
-        t.author.clone()
+        w.word(T::Student).to_string()
     } else {
-        format!("{} {}, {}", w.word(T::OfGroup), t.group, t.author)
+        // English sets the group off: «Student, group TM-21».
+        let comma = if w.lang == Lang::En { "," } else { "" };
+        format!(
+            "{}{comma} {} {}",
+            w.word(T::Student),
+            w.word(T::OfGroup),
+            t.group
+        )
     };
-    let people = [
-        (w.word(T::Student), student.as_str()),
-        (w.word(T::Supervisor), t.checked.as_str()),
-    ];
-    let mut body = format!(
-        "#page(margin: (x: 20mm, y: 20mm))[\n#set par(first-line-indent: 0mm, justify: false)\n#align(center)[#text(size: 14pt)[{}]]\n#v(55mm)\n#align(center)[#text(size: 18pt, weight: \"bold\")[{}] \\ #v(4mm) #text(size: 14pt)[{}] \\ #v(10mm) #text(size: 20pt, weight: \"bold\")[{}] \\ #v(8mm) #text(size: 14pt)[{}]]\n#v(40mm)\n#align(right)[#block(width: 90mm)[#set align(left)\n",
-        line(&t.organisation),
-        line(w.word(T::ExplanatoryNote)),
-        line(w.word(T::ToTheCourseProject)),
-        line(&t.title),
-        line(designation.trim()),
+    let supervisor = match w.genre() {
+        crate::scene::Genre::CourseProject => w.word(T::Supervisor),
+        _ => w.word(crate::sheets::captions::GenreText::Checked),
+    };
+    let mut body = String::from(
+        "#page(margin: (x: 20mm, y: 20mm))[\n#set par(first-line-indent: 0mm, justify: false)\n",
     );
-    for (role, name) in people {
+    let head: Vec<String> = [&t.university, &t.organisation]
+        .into_iter()
+        .filter(|s| !s.is_empty())
+        .map(|s| line(s))
+        .collect();
+    body.push_str(&format!(
+        "#align(center)[#text(size: 14pt)[{}]]\n#v(50mm)\n",
+        head.join(" \\ ")
+    ));
+    let mut centre = vec![
+        format!(
+            "#text(size: 18pt, weight: \"bold\")[{}]",
+            line(&w.document_name())
+        ),
+        format!("#text(size: 14pt)[{}]", line(w.document_of())),
+    ];
+    if let Some((topic, _)) = w.practicum_form() {
+        let g = crate::sheets::captions::GenreText::Topic;
+        centre.push(format!(
+            "#v(6mm) #text(size: 14pt)[{} {}]",
+            line(w.word(g)),
+            line(topic)
+        ));
+    }
+    centre.push(format!(
+        "#v(10mm) #text(size: 20pt, weight: \"bold\")[{}]",
+        line(&t.title)
+    ));
+    let designation = w.designation();
+    if !designation.is_empty() {
+        centre.push(format!("#v(8mm) #text(size: 14pt)[{}]", line(&designation)));
+    }
+    body.push_str(&format!(
+        "#align(center)[{}]\n#v(35mm)\n",
+        centre.join(" \\ ")
+    ));
+    body.push_str("#align(right)[#block(width: 90mm)[#set align(left)\n");
+    for (role, name) in [
+        (student.as_str(), t.author.as_str()),
+        (supervisor, t.checked.as_str()),
+    ] {
         body.push_str(&format!("{}: {} \\\n", line(role), line(name)));
     }
     body.push_str("]]\n");
-    if !t.year.is_empty() {
-        body.push_str(&format!("#v(1fr)\n#align(center)[{}]\n", line(&t.year)));
+    let place: Vec<&str> = [t.city.as_str(), t.year.as_str()]
+        .into_iter()
+        .filter(|s| !s.is_empty())
+        .collect();
+    if !place.is_empty() {
+        body.push_str(&format!(
+            "#v(1fr)\n#align(center)[{}]\n",
+            line(&place.join(" "))
+        ));
     }
     body.push_str("]\n");
     w.doc.raw(&body);
@@ -92,7 +144,11 @@ pub(super) fn contents(w: &mut Writer<'_, '_>) {
 /// The task: the scheme, then the data of every study the scene has, each a table of
 /// symbol, value and unit.
 pub(super) fn task(w: &mut Writer<'_, '_>) {
-    w.heading(1, T::Task);
+    w.section(T::Task);
+    if let Some((_, goal)) = w.practicum_form() {
+        let lead = w.word(crate::sheets::captions::GenreText::Goal);
+        w.doc.say(&format!("{lead} {goal}"));
+    }
     let scene = w.session.scene();
     if let Some(m) = &scene.mechanism {
         let scheme = S::StructuralScheme.get(w.lang);
@@ -106,7 +162,12 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         table_of_data(w, caption, &rows);
     }
     if let Some(f) = &scene.forces {
-        let caption = w.word(T::ForcesData);
+        // An engine's forces are its gases' pressure, a machine tool's its resistances.
+        let caption = if f.indicators.is_empty() {
+            w.word(T::ForcesData)
+        } else {
+            w.word(crate::sheets::captions::GenreText::EngineForcesData)
+        };
         table_of_data(w, caption, &crate::sheets::data::forces(f, w.lang));
     }
     if let Some(g) = &scene.gears {
@@ -216,21 +277,15 @@ fn table_of_data(w: &mut Writer<'_, '_>, caption: &str, rows: &[(String, String,
     );
 }
 
-/// The references: the course texts the project follows.
+/// The references: the sources of the scene's genre ([`Writer::sources`]), numbered,
+/// ГОСТ Р 7.0.100 records.
 pub(super) fn references(w: &mut Writer<'_, '_>) {
     w.doc.raw(&format!(
         "#heading(numbering: none, {})",
         text(w.word(T::References))
     ));
-    // ГОСТ Р 7.0.100 records, numbered, each as plain text (`#[…]`: no bracket of the
-    // content block shown).
-    for r in [
-        T::Reference1,
-        T::Reference2,
-        T::Reference3,
-        T::Reference4,
-        T::Reference5,
-    ] {
+    // Each record as plain text (`#[…]`: no bracket of the content block shown).
+    for r in w.sources() {
         w.doc.raw(&format!("+ #{}", text(w.word(r))));
     }
 }

@@ -13,7 +13,7 @@ use crate::sheets::captions::{unit_in, Meaning as M, NoteText as T, Text as S};
 
 /// The gears section.
 pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
-    w.heading(1, T::GearsSection);
+    w.section(T::GearsSection);
     let study = w.session.gears()?;
     // What the scene has of the pair, the rack-cut wheels and the train, in a sentence each.
     let intro: Vec<&str> = [

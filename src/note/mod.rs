@@ -17,13 +17,17 @@ mod dynamics;
 mod explain;
 mod flywheel;
 mod friction;
+mod friction_pairs;
 mod front;
 mod gears;
+mod genre;
 mod kinematics;
 mod kinetostatics;
+mod lecture;
 mod machines;
 mod markup;
 mod moments;
+mod practicum;
 mod rows;
 mod train;
 mod typeset;
@@ -269,7 +273,7 @@ pub fn compose_with(
     if scene.gears.is_some() {
         gears::gears(&mut w)?;
     }
-    machines::others(&mut w)?;
+    lecture::others(&mut w)?;
     conclusions::conclusions(&mut w);
     front::references(&mut w);
     w.explained.settle();

@@ -9,7 +9,7 @@ use super::gears::worked;
 use super::markup::{frac, num, sym, unit};
 use super::Writer;
 use crate::gears::{Stage, Train, TrainStudy};
-use crate::sheets::captions::{unit_in, NoteText as T};
+use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};
 
 /// A number of the worked formulas.
 fn n(x: f64, lang: crate::scale::Lang) -> String {
@@ -23,6 +23,25 @@ fn factor(x: f64, lang: crate::scale::Lang) -> String {
     } else {
         n(x, lang)
     }
+}
+
+/// «где» under a ratio: the ratio's `label` with its meaning and the teeth of the wheels of
+/// `meshes`.
+fn explain_ratio(
+    w: &mut Writer<'_, '_>,
+    (label, meaning): (&str, M),
+    t: &Train,
+    meshes: &[(usize, usize)],
+) {
+    let teeth: Vec<String> = meshes
+        .iter()
+        .flat_map(|&(x, y)| [x, y])
+        .map(|i| format!("z_{{{}}}", t.wheels[i].name))
+        .collect();
+    let (ratio, tooth) = (w.word(meaning), w.word(M::Teeth));
+    let mut items = vec![(label, ratio, "")];
+    items.extend(teeth.iter().map(|z| (z.as_str(), tooth, "")));
+    w.explain(&items);
 }
 
 /// z_i of wheel `i` in a formula.
@@ -111,8 +130,11 @@ fn closing_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
             &frac(&format!("{} dot ({arm_num})", n(t.module * 1e3, lang)), "2"),
             format!("{} {mm}", n(c.arm * 1e3, lang)),
         );
+        let (arm, module) = (w.word(M::CarrierArm), w.word(M::Module));
+        w.explain(&[("a", arm, "mm"), ("m", module, "mm")]);
         let (sym_, num_) = across(s, wc);
-        let name = sym(&format!("m'_{{{}{}}}", t.wheels[s].name, t.wheels[wc].name));
+        let label = format!("m'_{{{}{}}}", t.wheels[s].name, t.wheels[wc].name);
+        let name = sym(&label);
         worked(
             w,
             &name,
@@ -120,6 +142,8 @@ fn closing_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
             &frac(&format!("2 dot {}", n(c.arm * 1e3, lang)), &num_),
             format!("{} {mm}", n(c.module * 1e3, lang)),
         );
+        let closing = w.word(M::ClosingModule);
+        w.explain(&[(label.as_str(), closing, "mm")]);
     }
 }
 
@@ -136,9 +160,11 @@ fn stages_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage]) -
         let u = t.stage_ratio(stage);
         match stage {
             Stage::Mesh { driving, driven } => {
-                let name = sym(&format!("u_{{{}{}}}", wheel(*driving), wheel(*driven)));
+                let label = format!("u_{{{}{}}}", wheel(*driving), wheel(*driven));
+                let name = sym(&label);
                 let (symbolic, substituted) = mesh(t, *driving, *driven, lang);
                 worked(w, &name, &symbolic, &substituted, n(u, lang));
+                explain_ratio(w, (&label, M::StageRatio), t, &[(*driving, *driven)]);
                 names.push(name);
             }
             Stage::Planetary { meshes } => {
@@ -147,9 +173,12 @@ fn stages_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage]) -
                 };
                 let (a, f) = (wheel(first.0), wheel(last.1));
                 let (symbolic, substituted) = chain(t, meshes, lang);
-                let stopped = sym(&format!("u_{{{a}{f}}}^{{({carrier})}}"));
+                let stopped_label = format!("u_{{{a}{f}}}^{{({carrier})}}");
+                let stopped = sym(&stopped_label);
                 worked(w, &stopped, &symbolic, &substituted, n(1.0 - u, lang));
-                let name = sym(&format!("u_{{{a}{carrier}}}^{{({f})}}"));
+                explain_ratio(w, (&stopped_label, M::StoppedRatio), t, meshes);
+                let label = format!("u_{{{a}{carrier}}}^{{({f})}}");
+                let name = sym(&label);
                 let substituted = format!("1 - {}", factor(1.0 - u, lang));
                 worked(
                     w,
@@ -158,6 +187,7 @@ fn stages_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage]) -
                     &substituted,
                     n(u, lang),
                 );
+                explain_ratio(w, (&label, M::PlanetaryRatio), t, &[]);
                 names.push(name);
             }
         }
@@ -174,18 +204,33 @@ fn stages_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage]) -
             &factors.join(" dot "),
             n(total, lang),
         );
+        explain_ratio(w, (&whole_label(t), M::TrainRatio), t, &[]);
     }
     w.doc.say(w.word(T::TrainWillis));
     w.formula(&format!("{whole} = {}", n(study.ratio, lang)));
+    explain_ratio(w, (&whole_label(t), M::TrainRatio), t, &[]);
     names
+}
+
+/// u_in,out in label markup.
+fn whole_label(t: &Train) -> String {
+    format!("u_{{{}{}}}", t.shafts[t.input], t.shafts[t.output])
 }
 
 /// u_in,out in a formula.
 fn whole(t: &Train) -> String {
-    sym(&format!(
-        "u_{{{}{}}}",
-        t.shafts[t.input], t.shafts[t.output]
-    ))
+    sym(&whole_label(t))
+}
+
+/// «где» under a speed's formula: the speeds of `shafts`.
+fn explain_speeds(w: &mut Writer<'_, '_>, shafts: &[&str]) {
+    let labels: Vec<String> = shafts.iter().map(|s| format!("n_{{{s}}}")).collect();
+    let meaning = w.word(M::ShaftSpeed);
+    let items: Vec<(&str, &str, &str)> = labels
+        .iter()
+        .map(|l| (l.as_str(), meaning, "rpm"))
+        .collect();
+    w.explain(&items);
 }
 
 /// n of shaft `s` in a formula.
@@ -206,10 +251,11 @@ fn differential_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
     let lang = w.lang;
     let rpm = unit(&unit_in("rpm", lang));
     let (a, b, hn) = (&t.shafts[d.a], &t.shafts[d.b], &t.shafts[h]);
-    let u = sym(&format!(
+    let u_label = format!(
         "u_{{{}{}}}^{{({hn})}}",
         t.wheels[first.0].name, t.wheels[last.1].name
-    ));
+    );
+    let u = sym(&u_label);
     w.doc.say(w.word(T::TrainDifferential));
     let (symbolic, substituted) = chain(t, &d.meshes, lang);
     let relation = frac(
@@ -223,6 +269,8 @@ fn differential_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
         &substituted,
         n(d.u, lang),
     );
+    explain_ratio(w, (&u_label, M::StoppedRatio), t, &d.meshes);
+    explain_speeds(w, &[a.as_str(), b.as_str(), hn.as_str()]);
     let [na, nb, nh] = d.omega.map(|x| factor(x * n_in, lang));
     let uu = factor(d.u, lang);
     let (out, symbolic, substituted, value) = if t.output == h {
@@ -347,6 +395,7 @@ fn required_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage],
         &substituted,
         format!("{} {rpm}", n(out, lang)),
     );
+    explain_speeds(w, &[output.as_str(), input.as_str()]);
     let delta = (out.abs() / n_out - 1.0) * 100.0;
     let target = wanted(&speed(output));
     worked(
@@ -365,4 +414,6 @@ fn required_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage],
         ),
         format!("{} %", num(delta, 2, lang)),
     );
+    let deviation = w.word(M::SpeedDeviation);
+    w.explain(&[("δ", deviation, "")]);
 }

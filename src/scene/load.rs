@@ -10,8 +10,8 @@ use super::friction::friction;
 use super::gears::gear_sections;
 use super::keys::Key;
 use super::kinematics::kinematics;
-use super::model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
-use super::raw::{RawPlates, RawPositions, RawScene, RawStart, RawTask};
+use super::model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start};
+use super::raw::{RawPlates, RawPositions, RawScene, RawStart};
 use super::structure::mechanism;
 use super::text::{not_text, refused};
 use super::toml_error::toml_error;
@@ -104,7 +104,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             "missing: the title defaults to the file name, which holds a control character; expected a title",
         );
     }
-    let title = title(task, &stem);
+    let title = super::task::title(&mut check, task, &stem);
     // Every section is optional; a section that studies the mechanism needs `[mechanism]`.
     let has_mechanism = raw.mechanism.is_some();
     if !has_mechanism {
@@ -237,20 +237,6 @@ fn text_value(check: &mut Checker, path: &str, value: &toml::Value) {
         }
         toml::Value::Table(t) => texts(check, path, t),
         _ => {}
-    }
-}
-
-/// `[task]`, the title defaulting to the file stem.
-fn title(task: RawTask, stem: &str) -> TitleInfo {
-    TitleInfo {
-        title: task.title.unwrap_or_else(|| stem.to_string()),
-        designation: task.designation.unwrap_or_default(),
-        author: task.author.unwrap_or_default(),
-        checked: task.checked.unwrap_or_default(),
-        organisation: task.organisation.unwrap_or_default(),
-        group: task.group.unwrap_or_default(),
-        year: task.year.unwrap_or_default(),
-        note: task.note.unwrap_or_default(),
     }
 }
 

@@ -23,6 +23,7 @@ mod planetary;
 mod raw;
 mod seed;
 mod structure;
+mod task;
 mod text;
 mod toml_error;
 pub mod user_table;
@@ -33,6 +34,7 @@ pub use error::{Problem, SceneError};
 pub use keys::Key;
 pub use load::{files_in, load, parse, read};
 pub use model::{AnswerItem, Localised, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
+pub use task::{Genre, Practicum, TaskText};
 
 #[cfg(test)]
 mod tests;

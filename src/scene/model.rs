@@ -150,14 +150,22 @@ pub struct TitleInfo {
     pub author: String,
     /// Instructor (Пров.).
     pub checked: String,
-    /// The department or institution (the title block's organisation cell).
+    /// The department (the title block's organisation cell, the title page).
     pub organisation: String,
+    /// The university (the title page).
+    pub university: String,
+    /// The city (the title page, over the year).
+    pub city: String,
     /// The student's group (the note's title page).
     pub group: String,
     /// The year (the note's title page).
     pub year: String,
     /// A remark on the task's source (a reconstructed layout, say); not drawn.
     pub note: String,
+    /// The kind of work the scene is.
+    pub genre: super::task::Genre,
+    /// The texts in other languages (`[task.uk]`, …): see [`TitleInfo::in_lang`].
+    pub localised: Vec<(crate::scale::Lang, super::task::TaskText)>,
 }
 
 /// A text the scene gives in each language of the sheets and the note (`{ ru = "…",

@@ -46,6 +46,12 @@ pub(crate) struct RawTask {
     pub group: Option<String>,
     pub year: Option<String>,
     pub note: Option<String>,
+    pub university: Option<String>,
+    pub city: Option<String>,
+    pub genre: Option<String>,
+    pub ru: Option<super::task::TaskText>,
+    pub uk: Option<super::task::TaskText>,
+    pub en: Option<super::task::TaskText>,
 }
 
 /// `[mechanism]`.

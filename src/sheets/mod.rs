@@ -107,7 +107,7 @@ impl From<crate::kinematics::KinError> for BuildError {
 /// positions' μ_l as a ГОСТ 2.302 scale (μ_l = 0,0025 м/мм draws 2,5 mm of the machine in
 /// one millimetre: 1:2,5; μ_l = 0,0004 м/мм: 2,5:1).
 fn title_block(scene: &Scene, sheet_title: &str, plan: Scale, lang: Lang) -> TitleBlock {
-    let t = &scene.title;
+    let t = scene.title.in_lang(lang);
     TitleBlock {
         title: t.title.clone(),
         sheet_title: sheet_title.into(),

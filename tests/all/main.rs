@@ -41,6 +41,7 @@ mod mutations;
 mod note;
 mod note_errata;
 mod note_form;
+mod note_genres;
 mod note_language;
 mod note_worked_machines;
 mod output;

@@ -129,7 +129,13 @@ fn every_scene_gets_the_note_its_sections_allow() {
     for path in support::scene_paths() {
         let s = tmm::load(&path).expect("scene");
         let (n, _) = note(&s, Lang::Ru);
-        let text = text_of(&n);
+        let whole = text_of(&n);
+        // The body: past the title page, before the references (whose titles name sections).
+        let start = whole.find("СОДЕРЖАНИЕ").unwrap_or(0);
+        let end = whole.rfind("СПИСОК ИСПОЛЬЗОВАННЫХ").unwrap_or(whole.len());
+        let text = &whole[start..end];
+        // A practical work names its sections after its form (tests/all/note_genres.rs).
+        let practicum = matches!(s.title.genre, tmm::scene::Genre::Practicum(_));
         // Each study the scene has, its section; none it has not.
         for (has, heading) in [
             (s.mechanism.is_some(), "Структурный анализ"),
@@ -143,6 +149,10 @@ fn every_scene_gets_the_note_its_sections_allow() {
             (s.balancing.is_some(), "Уравновешивание ротора"),
             (!s.friction.is_empty(), "Трение в кинематических парах"),
         ] {
+            let renamed = ["Синтез кулачкового механизма", "Зубчатые механизмы"];
+            if practicum && renamed.contains(&heading) {
+                continue;
+            }
             assert_eq!(
                 text.contains(heading),
                 has,
@@ -150,7 +160,12 @@ fn every_scene_gets_the_note_its_sections_allow() {
                 path.display()
             );
         }
-        assert!(text.contains("Выводы"), "{}", path.display());
+        let ends = [
+            "Выводы",
+            "Итоги сравнения",
+            "Проверка передаточного отношения",
+        ];
+        assert!(ends.iter().any(|e| text.contains(e)), "{}", path.display());
     }
 }
 
