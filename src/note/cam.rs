@@ -1,7 +1,7 @@
 //! The cam section: the law's extremes and the least base radius worked (seed 000 §3:
 //! symbols, numbers, result), the roller's choice, the diagrams and the profile, Table 7.
 
-use super::markup::{frac, num, sym, unit};
+use super::markup::{frac, label, num, sym, text, unit, Align};
 use super::rows::{by_position, of_scene, quantities};
 use super::{NoteError, Writer};
 use crate::cam::{Follower, Law, SpecialProfile};
@@ -40,6 +40,9 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     });
     let caption = w.word(T::CamTable);
     by_position(w, caption, &q);
+    if special.is_none() {
+        angle_table(w)?;
+    }
     let caption = w.word(scene);
     // The dynamics integrates too (A_с, M_д): the cam's rows are its lengths.
     of_scene(w, caption, |r| {
@@ -51,6 +54,86 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             && !matches!(r.key.symbol, Symbol::Work | Symbol::Moment)
     });
     w.figures((PlateKind::Cam, None), |_| true, |own| own.to_string());
+    Ok(())
+}
+
+/// The seed's Table 7: the transmission angle γ (a rocker) or the pressure angle ϑ at every
+/// point in degrees, read off the drawing and exact, each with the exact value's verdict
+/// against the limit (γ ≥ γ_min, ϑ ≤ 90° − γ_min); then the extreme over the whole cycle, between the
+/// points too, and whether it keeps the limit.
+fn angle_table(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
+    let cam = w.session.cam()?;
+    let lang = w.lang;
+    let rows: Vec<&crate::check::Row> = w
+        .report
+        .rows
+        .iter()
+        .filter(|r| r.position().is_some() && r.method == Method::Inversion)
+        .filter(|r| {
+            matches!(
+                r.key.symbol,
+                Symbol::TransmissionAngle | Symbol::PressureAngle
+            )
+        })
+        .collect();
+    let Some(first) = rows.first() else {
+        return Ok(());
+    };
+    let rocker = first.key.symbol == Symbol::TransmissionAngle;
+    let limit = if rocker {
+        cam.spec.gamma_min
+    } else {
+        std::f64::consts::FRAC_PI_2 - cam.spec.gamma_min
+    };
+    let keeps = |a: f64| if rocker { a >= limit } else { a <= limit };
+    let deg = |a: f64| crate::scale::format_fixed(a.to_degrees(), 2, lang);
+    let (symbol, bound) = if rocker {
+        ("γ", format!("γ ≥ γ_{{min}} = {}°", deg(limit)))
+    } else {
+        ("ϑ", format!("ϑ ≤ ϑ_{{max}} = {}°", deg(limit)))
+    };
+    let verdict = |a: f64| {
+        if keeps(a) {
+            w.word(T::Holds)
+        } else {
+            w.word(T::Fails)
+        }
+    };
+    let body: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            vec![
+                text(&r.position().unwrap_or_default()),
+                text(&deg(r.graphical)),
+                text(&deg(r.analytic)),
+                text(verdict(r.analytic)),
+            ]
+        })
+        .collect();
+    let header = [
+        text(w.word(T::PositionShort)),
+        label(&format!("{symbol}, ° ({})", w.word(T::OnDrawing))),
+        label(&format!("{symbol}, ° ({})", w.word(T::ExactShort))),
+        label(&bound),
+    ];
+    let caption = w.word(if rocker {
+        T::TransmissionTable
+    } else {
+        T::PressureTable
+    });
+    w.doc.table(caption, &[Align::Centre; 4], &header, &body);
+    let worst = cam.worst_angle();
+    let lead = if keeps(worst) {
+        T::WorstKeeps
+    } else {
+        T::WorstBreaks
+    };
+    w.doc.say(&format!(
+        "{} {symbol} = {}° ({} {bound}).",
+        w.word(lead),
+        crate::scale::format_fixed(worst.to_degrees(), 2, lang),
+        w.word(T::Allowed),
+    ));
     Ok(())
 }
 

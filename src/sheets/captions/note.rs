@@ -236,6 +236,23 @@ catalogue! {
             "The roller's radius: at most 0.4 of the base radius and 0.8 of the pitch curve's least radius of curvature (else the profile comes to a point or is undercut):"
         ),
         CamTable => ("Перемещение, аналоги, углы и радиус-вектор профиля по положениям", "Переміщення, аналоги, кути і радіус-вектор профілю за положеннями", "Displacement, analogues, angles and the profile's radius vector by positions"),
+        TransmissionTable => ("Углы передачи в точках профиля", "Кути передачі в точках профілю", "The transmission angles at the profile's points"),
+        PressureTable => ("Углы давления в точках профиля", "Кути тиску в точках профілю", "The pressure angles at the profile's points"),
+        OnDrawing => ("по чертежу", "за кресленням", "drawn"),
+        ExactShort => ("точно", "точно", "exact"),
+        Allowed => ("допускается", "допускається", "allowed:"),
+        Holds => ("выполнено", "виконано", "holds"),
+        Fails => ("нарушено", "порушено", "fails"),
+        WorstKeeps => (
+            "Экстремальный угол на всём цикле, включая участки между точками, не выходит за допустимый:",
+            "Екстремальний кут на всьому циклі, включно з ділянками між точками, не виходить за допустимий:",
+            "The extreme angle over the whole cycle, between the points as well, keeps the limit:"
+        ),
+        WorstBreaks => (
+            "Между расчётными точками угол выходит за допустимый: центр кулачка выбран по минимальному радиусу, считанному с совмещённой диаграммы в расчётных точках, и на всём цикле экстремальный угол равен",
+            "Між розрахунковими точками кут виходить за допустимий: центр кулачка вибрано за мінімальним радіусом, зчитаним із суміщеної діаграми в розрахункових точках, і на всьому циклі екстремальний кут дорівнює",
+            "Between the points the angle passes the limit: the cam's centre is chosen by the least radius read off the combined diagram at the points, and over the whole cycle the extreme angle is"
+        ),
         CamScene => ("Минимальный радиус, ролик и точность профиля", "Мінімальний радіус, ролик і точність профілю", "The least radius, the roller and the profile's accuracy"),
         GearsSection => ("Зубчатые механизмы", "Зубчасті механізми", "Gear mechanisms"),
         GearsIntroPair => (
