@@ -10,8 +10,11 @@
 //! portrait, ГОСТ 2.105 text rules, ГОСТ 2.104 frames: form 2 on the first text page, form 2a
 //! on the following ones. The words are the sheets' catalogue's (`sheets::captions`).
 
+mod analytic;
 mod cam;
 mod cam_special;
+mod diagrams;
+mod equations;
 mod explain;
 mod friction;
 mod front;
@@ -19,6 +22,8 @@ mod gears;
 mod kinematics;
 mod machines;
 mod markup;
+mod plans;
+mod positions;
 mod rows;
 mod train;
 mod typeset;

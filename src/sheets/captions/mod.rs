@@ -6,15 +6,19 @@
 mod audit;
 mod linkage;
 mod machines;
+mod meaning_kinematics;
 mod meanings;
 mod note;
+mod note_kinematics;
 pub(crate) mod symbols;
 
 pub(crate) use audit::AuditText;
 pub(crate) use linkage::Text;
 pub(super) use machines::{CamText, DynamicsText, RotorText};
 pub(crate) use machines::{FrictionText, GearText};
+pub(crate) use meaning_kinematics::KinematicsMeaning;
 pub(crate) use meanings::Meaning;
+pub(crate) use note_kinematics::KinematicsNote;
 pub(crate) use note::NoteText;
 pub(crate) use symbols::{quantity, subscripted};
 
