@@ -151,18 +151,10 @@ impl Slot {
         w.formula(&format!(
             "{} = {}",
             s(&omega),
-            frac(
-                &format!("{} {} cos{d13}", s("ω_{1}"), s(&l1)),
-                &s(&big_l)
-            )
+            frac(&format!("{} {} cos{d13}", s("ω_{1}"), s(&l1)), &s(&big_l))
         ));
         w.explain(&[(&omega, w.word(M::SlotSpeed), "rad/s")]);
-        w.formula(&format!(
-            "{} = -{} {} sin{d13}",
-            s(&vr),
-            s("ω_{1}"),
-            s(&l1)
-        ));
+        w.formula(&format!("{} = -{} {} sin{d13}", s(&vr), s("ω_{1}"), s(&l1)));
         w.explain(&[(&vr, w.word(M::SlideSpeed), "m/s")]);
         w.doc.par(&[text(w.word(K::AccelerationFormulas))]);
         w.formula(&format!(

@@ -18,7 +18,10 @@ type Named = (String, String);
 /// `B_{3}`.
 fn on(name: &str, link: u32) -> Named {
     let plain = plain(name);
-    (format!("{}_{{{}{link}}}", &plain[..1], &plain[1..]), name.to_string())
+    (
+        format!("{}_{{{}{link}}}", &plain[..1], &plain[1..]),
+        name.to_string(),
+    )
 }
 
 /// A point of one link: its own name.
@@ -216,7 +219,7 @@ fn known(w: &Writer<'_, '_>, m: &Mechanism, e: &Equation, term: &str, kind: Kind
     let crank = super::positions::crank_length(m);
     let (centre, pin) = (plain(&m.crank.centre), plain(&m.crank.pin));
     let pair = e.pair();
-    let rp = format!("{}{}", e.reference, e.point);
+    let rp = format!("{}{}", plain(&e.names.1), plain(&e.names.0));
     if term.ends_with(&format!("{{{}}}", e.point)) && !term.contains(&pair) {
         return unknown();
     }
@@ -242,12 +245,16 @@ fn known(w: &Writer<'_, '_>, m: &Mechanism, e: &Equation, term: &str, kind: Kind
         (Kind::Velocity, _) => [text("?"), parallel],
         (Kind::Acceleration, Relative::Turn) if term.starts_with("a^{n}") => [
             label(&format!("ω_{{{j}}}^{{2}} l_{{{rp}}}")),
-            label(&format!("∥ {}, {} {}", e.line, w.word(K::Towards), e.reference)),
+            label(&format!(
+                "∥ {}, {} {}",
+                e.line,
+                w.word(K::Towards),
+                e.reference
+            )),
         ],
-        (Kind::Acceleration, Relative::Slide) if term.starts_with("a^{k}") => [
-            label(&format!("2 ω_{{{j}}} V_{{{pair}}}")),
-            across,
-        ],
+        (Kind::Acceleration, Relative::Slide) if term.starts_with("a^{k}") => {
+            [label(&format!("2 ω_{{{j}}} V_{{{pair}}}")), across]
+        }
         (Kind::Acceleration, Relative::Turn) => [text("?"), across],
         (Kind::Acceleration, _) => [text("?"), parallel],
     }

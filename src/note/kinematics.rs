@@ -146,3 +146,47 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     super::analytic::analytic(w, at.as_deref(), kin.w1)?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::{explain::Explained, markup::Markup, Writer};
+    use super::*;
+
+    /// Every displayed formula of the structural and kinematic analysis of every linkage
+    /// scene has its left side explained («где»), in every language.
+    #[test]
+    fn every_formula_of_the_kinematics_is_explained() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("constructions");
+        let scenes = [
+            "shaper",
+            "four-bar",
+            "slider-crank",
+            "six-bar",
+            "v-engine",
+            "tangent",
+        ];
+        for name in scenes {
+            let scene = crate::scene::load(&root.join(format!("{name}.toml"))).expect("scene");
+            let session = crate::study::Session::new(&scene, crate::construct::Drafting::EXACT);
+            for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+                let mut w = Writer {
+                    session: &session,
+                    lang,
+                    report: session.report().expect("report"),
+                    sheets: Vec::new(),
+                    doc: Markup::default(),
+                    files: Vec::new(),
+                    explained: Explained::default(),
+                };
+                structure(&mut w).expect("structure");
+                kinematics(&mut w).expect("kinematics");
+                w.explained.settle();
+                assert!(
+                    w.explained.missing.is_empty(),
+                    "{name} {lang:?}: {:?}",
+                    w.explained.missing
+                );
+            }
+        }
+    }
+}

@@ -369,7 +369,10 @@ fn similarity(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
                     continue;
                 }
                 lines.push((
-                    (segment("p", &x.name.replace('_', "")), segment("p", &e.point)),
+                    (
+                        segment("p", &x.name.replace('_', "")),
+                        segment("p", &e.point),
+                    ),
                     (format!("{pivot}{}", x.name), format!("{pivot}{point}")),
                     (plan.images[k].length(), image.length(), ox, ob),
                 ));
@@ -587,14 +590,27 @@ fn table_2(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
         if let Some(e) = eqs.first() {
             order.push(e.point.clone());
         }
-        let mut points: Vec<_> = p.m.points.iter().filter(|x| g.links.contains(&x.link)).collect();
+        let mut points: Vec<_> =
+            p.m.points
+                .iter()
+                .filter(|x| g.links.contains(&x.link))
+                .collect();
         points.sort_by(|a, b| a.along.hypot(a.across).total_cmp(&b.along.hypot(b.across)));
         order.extend(points.iter().map(|x| plain(&x.name)));
     }
     let pin = plain(&p.m.crank.pin);
     let mut picked: Vec<(String, Method)> = Vec::new();
-    for name in order.iter().chain(quantities.iter().filter_map(|q| subject(q)).collect::<Vec<_>>().iter()) {
-        let Some(q) = quantities.iter().find(|q| subject(q).as_deref() == Some(name.as_str())) else {
+    for name in order.iter().chain(
+        quantities
+            .iter()
+            .filter_map(|q| subject(q))
+            .collect::<Vec<_>>()
+            .iter(),
+    ) {
+        let Some(q) = quantities
+            .iter()
+            .find(|q| subject(q).as_deref() == Some(name.as_str()))
+        else {
             continue;
         };
         if *name == pin || picked.contains(q) {

@@ -60,10 +60,10 @@ pub(super) fn positions(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             sym("K"),
             frac("180° + θ", "180° - θ"),
             frac(
-                &format!("180° + {}°", num(theta, 4, lang)),
-                &format!("180° - {}°", num(theta, 4, lang))
+                &format!("180° + {}°", num(theta, 5, lang)),
+                &format!("180° - {}°", num(theta, 5, lang))
             ),
-            num(ex.k, 4, lang)
+            num(ex.k, 5, lang)
         ));
         w.explain(&[
             ("K", w.word(M::TimeRatio), ""),
@@ -97,7 +97,7 @@ fn stroke(w: &mut Writer<'_, '_>, ex: &Extremes) {
                 OutputCoord::Rocker(link) => (format!("ψ_{{{link}}}"), travel.to_degrees(), "°"),
                 OutputCoord::Slider(..) => ("H".to_string(), travel, w.word(T::MetreUnit)),
             };
-            format!("{} = {}{}", sym(&symbol), num(value, 4, lang), unit(u))
+            format!("{} = {}{}", sym(&symbol), num(value, 5, lang), unit(u))
         })
         .collect();
     w.doc
@@ -133,10 +133,10 @@ fn theta(w: &mut Writer<'_, '_>, m: &Mechanism, ex: &Extremes) {
     let ratio = m.crank.length / l_ac;
     w.formula(&format!(
         "{} = {} = {} = {}",
-        sym("sin θ/2"),
+        format!("sin {}/2", sym("θ")),
         frac(&sym(&crank), &sym(&between)),
-        frac(&num(m.crank.length, 4, lang), &num(l_ac, 4, lang)),
-        num(ratio, 4, lang)
+        frac(&num(m.crank.length, 5, lang), &num(l_ac, 5, lang)),
+        num(ratio, 5, lang)
     ));
     w.explain(&[
         ("θ", w.word(M::Overlap), "deg"),
@@ -146,8 +146,8 @@ fn theta(w: &mut Writer<'_, '_>, m: &Mechanism, ex: &Extremes) {
         "{} = 2 arcsin {} = 2 dot arcsin {} = {}°",
         sym("θ"),
         frac(&sym(&crank), &sym(&between)),
-        num(ratio, 4, lang),
-        num(ex.theta.to_degrees(), 4, lang)
+        num(ratio, 5, lang),
+        num(ex.theta.to_degrees(), 5, lang)
     ));
 }
 
@@ -188,7 +188,11 @@ fn lengths(m: &Mechanism, lang: Lang) -> Vec<Length> {
                 out.push((format!("{b}{joint}"), link, *lb));
             }
             Dyad::Rrp {
-                a, la, joint, guide, ..
+                a,
+                la,
+                joint,
+                guide,
+                ..
             } => {
                 out.push((format!("{a}{joint}"), M::LinkLength.get(lang), *la));
                 if guide.offset != 0.0 {
@@ -254,7 +258,11 @@ fn drawn_lengths(w: &mut Writer<'_, '_>, m: &Mechanism, mu_l: f64) {
     let header = [
         text(w.word(K::Dimension)),
         text(w.word(K::Segment)),
-        label(&format!("{}, {}", w.word(K::LengthWord), w.word(T::MetreUnit))),
+        label(&format!(
+            "{}, {}",
+            w.word(K::LengthWord),
+            w.word(T::MetreUnit)
+        )),
         label(&format!("{}, {}", w.word(K::OnDrawing), w.word(T::MmUnit))),
     ];
     let caption = w.word(K::DrawnLengthsTable);

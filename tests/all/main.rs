@@ -41,6 +41,7 @@ mod mutations;
 mod note;
 mod note_form;
 mod note_language;
+mod note_worked_kinematics;
 mod output;
 mod plan_lines;
 mod plate_demo;

@@ -18,8 +18,8 @@ pub(super) use machines::{CamText, DynamicsText, RotorText};
 pub(crate) use machines::{FrictionText, GearText};
 pub(crate) use meaning_kinematics::KinematicsMeaning;
 pub(crate) use meanings::Meaning;
-pub(crate) use note_kinematics::KinematicsNote;
 pub(crate) use note::NoteText;
+pub(crate) use note_kinematics::KinematicsNote;
 pub(crate) use symbols::{quantity, subscripted};
 
 /// A word of the catalogue: its text in a language.
