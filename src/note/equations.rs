@@ -213,6 +213,12 @@ fn reference(m: &Mechanism, name: &str) -> Reference {
     }
 }
 
+/// A product of symbols (label markup) as a cell's formula: `ω₁ l_AB`.
+fn product(factors: &[&str]) -> Cell {
+    let math: Vec<String> = factors.iter().map(|f| sym(f)).collect();
+    inline(&math.join(" "))
+}
+
 /// The magnitude and direction cells of one term of an equation.
 fn known(w: &Writer<'_, '_>, m: &Mechanism, e: &Equation, term: &str, kind: Kind) -> [Cell; 2] {
     let unknown = || [text("?"), text("?")];
@@ -226,11 +232,11 @@ fn known(w: &Writer<'_, '_>, m: &Mechanism, e: &Equation, term: &str, kind: Kind
     if term.ends_with(&format!("{{{}}}", e.reference)) {
         return match (reference(m, &e.reference), kind) {
             (Reference::Crank, Kind::Velocity) => [
-                label(&format!("ω_{{1}} {crank}")),
+                product(&["ω_{1}", &crank]),
                 label(&format!("⊥ {centre}{pin}")),
             ],
             (Reference::Crank, Kind::Acceleration) => [
-                label(&format!("ω_{{1}}^{{2}} {crank}")),
+                product(&["ω_{1}^{2}", &crank]),
                 label(&format!("∥ {pin}{centre}")),
             ],
             (Reference::Fixed, _) => [text("0"), text("—")],
@@ -244,7 +250,7 @@ fn known(w: &Writer<'_, '_>, m: &Mechanism, e: &Equation, term: &str, kind: Kind
         (Kind::Velocity, Relative::Turn) => [text("?"), across],
         (Kind::Velocity, _) => [text("?"), parallel],
         (Kind::Acceleration, Relative::Turn) if term.starts_with("a^{n}") => [
-            label(&format!("ω_{{{j}}}^{{2}} l_{{{rp}}}")),
+            product(&[&format!("ω_{{{j}}}^{{2}}"), &format!("l_{{{rp}}}")]),
             label(&format!(
                 "∥ {}, {} {}",
                 e.line,
@@ -252,9 +258,10 @@ fn known(w: &Writer<'_, '_>, m: &Mechanism, e: &Equation, term: &str, kind: Kind
                 e.reference
             )),
         ],
-        (Kind::Acceleration, Relative::Slide) if term.starts_with("a^{k}") => {
-            [label(&format!("2 ω_{{{j}}} V_{{{pair}}}")), across]
-        }
+        (Kind::Acceleration, Relative::Slide) if term.starts_with("a^{k}") => [
+            product(&["2", &format!("ω_{{{j}}}"), &format!("V_{{{pair}}}")]),
+            across,
+        ],
         (Kind::Acceleration, Relative::Turn) => [text("?"), across],
         (Kind::Acceleration, _) => [text("?"), parallel],
     }

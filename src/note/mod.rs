@@ -22,6 +22,7 @@ mod gears;
 mod kinematics;
 mod machines;
 mod markup;
+mod plan_worked;
 mod plans;
 mod positions;
 mod rows;

@@ -5,12 +5,14 @@
 
 use super::markup::{frac, inline, label, num, sym, text, unit, Align};
 use super::{NoteError, Writer};
+use crate::check::is_zero;
 use crate::linkage::{Dyad, Extremes, Mechanism, OutputCoord};
 use crate::scale::{format_fixed, Lang};
 use crate::sheets::captions::{
     KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
 };
 use crate::sheets::data::plain;
+use std::f64::consts::PI;
 
 /// The plan of positions: μ_l, the drawn lengths, the stroke, θ and K, the figure.
 pub(super) fn positions(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
@@ -52,6 +54,15 @@ pub(super) fn positions(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     w.doc.say(w.word(T::PositionsConstruction));
     if let Some(ex) = &kin.plan.extremes {
         stroke(w, ex);
+    }
+    // A mechanism whose strokes take equal turns of the crank (θ = 0, an engine's central
+    // slider-crank) has no time ratio to speak of.
+    let uneven = kin
+        .plan
+        .extremes
+        .as_ref()
+        .filter(|ex| !is_zero(ex.theta, PI));
+    if let Some(ex) = uneven {
         theta(w, m, ex);
         w.doc.par(&[text(w.word(K::TimeRatio))]);
         let theta = ex.theta.to_degrees();
@@ -132,8 +143,8 @@ fn theta(w: &mut Writer<'_, '_>, m: &Mechanism, ex: &Extremes) {
     w.doc.par(&[text(w.word(K::ThetaSlotted))]);
     let ratio = m.crank.length / l_ac;
     w.formula(&format!(
-        "{} = {} = {} = {}",
-        format!("sin {}/2", sym("θ")),
+        "sin {}/2 = {} = {} = {}",
+        sym("θ"),
         frac(&sym(&crank), &sym(&between)),
         frac(&num(m.crank.length, 5, lang), &num(l_ac, 5, lang)),
         num(ratio, 5, lang)
