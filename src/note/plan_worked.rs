@@ -59,12 +59,10 @@ pub(super) fn similarity(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
                     continue;
                 }
                 lines.push((
-                    (
-                        segment("p", &x.name.replace('_', "")),
-                        segment("p", &e.point),
-                    ),
+                    (segment("p", &plain(&x.name)), segment("p", &e.point)),
                     (format!("{pivot}{}", x.name), format!("{pivot}{point}")),
                     (plan.images[k].length(), image.length(), ox, ob),
+                    plain(&x.name),
                 ));
             }
         }
@@ -73,7 +71,7 @@ pub(super) fn similarity(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
         return;
     }
     w.doc.say(w.word(K::Similarity));
-    for ((px, pb), (ox_name, ob_name), (px_mm, pb_mm, ox, ob)) in lines {
+    for ((px, pb), (ox_name, ob_name), (px_mm, pb_mm, ox, ob), x) in lines {
         w.formula(&format!(
             "{} = {} = {} = {}{}",
             sym(&px),
@@ -88,7 +86,7 @@ pub(super) fn similarity(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
             num(px_mm, 4, lang),
             unit(w.word(T::MmUnit))
         ));
-        let seg_meaning = format!("{} {}", w.word(M::VelocitySegment), plain(&ox_name[1..]));
+        let seg_meaning = format!("{} {x}", w.word(M::VelocitySegment));
         w.explain(&[
             (&px, &seg_meaning, "mm"),
             (&ox_name, w.word(M::DrawnSegment), "mm"),

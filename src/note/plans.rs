@@ -27,6 +27,16 @@ pub(super) struct Plans<'k> {
 }
 
 impl Plans<'_> {
+    /// The crank's pin, `crank` its length's symbol.
+    fn crank_pin<'a>(&'a self, crank: &'a str) -> CrankPin<'a> {
+        CrankPin {
+            name: &self.m.crank.pin,
+            crank,
+            w1: self.kin.w1.abs(),
+            length: self.m.crank.length,
+        }
+    }
+
     /// The worked position as the plan of positions constructed it.
     pub(super) fn built(&self) -> Option<&PlanPosition> {
         let at = self.at.as_deref()?;
@@ -204,12 +214,7 @@ pub(super) fn velocities(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(), No
     let sc = p.kin.scales;
     w.heading(2, T::VelocityPlans);
     let crank = super::positions::crank_length(p.m);
-    let pin = CrankPin {
-        name: &p.m.crank.pin,
-        crank: &crank,
-        w1: p.kin.w1.abs(),
-        length: p.m.crank.length,
-    };
+    let pin = p.crank_pin(&crank);
     pin.worked(w, Kind::Velocity, sc.v);
     w.doc.say(w.word(T::VectorEquations));
     equations(w, p.m, &p.s.groups, Kind::Velocity);
@@ -240,12 +245,7 @@ pub(super) fn accelerations(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(),
     let sc = p.kin.scales;
     w.heading(2, T::AccelerationPlans);
     let crank = super::positions::crank_length(p.m);
-    let pin = CrankPin {
-        name: &p.m.crank.pin,
-        crank: &crank,
-        w1: p.kin.w1.abs(),
-        length: p.m.crank.length,
-    };
+    let pin = p.crank_pin(&crank);
     pin.worked(w, Kind::Acceleration, sc.a);
     w.doc.say(w.word(T::AccelerationEquations));
     equations(w, p.m, &p.s.groups, Kind::Acceleration);

@@ -11,7 +11,7 @@ use crate::scale::{format_fixed, Lang};
 use crate::sheets::captions::{
     KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
 };
-use crate::sheets::data::plain;
+use crate::sheets::data::{plain, spans, Span};
 use std::f64::consts::PI;
 
 /// The plan of positions: μ_l, the drawn lengths, the stroke, θ and K, the figure.
@@ -165,85 +165,23 @@ fn theta(w: &mut Writer<'_, '_>, m: &Mechanism, ex: &Extremes) {
 /// One drawn length: the segment's name (label markup), what it is, its length (m).
 type Length = (String, &'static str, f64);
 
-/// The lengths of the mechanism a plan of positions lays off: the crank, the distances from
-/// the crank's centre to the other fixed points, the links of each group and the points of
-/// the links from their link's origin.
+/// The lengths of the mechanism a plan of positions lays off, as its data gives them
+/// ([`crate::sheets::data::spans`]): the crank, the groups' links, the points of the links
+/// from their link's origin, the distances between fixed points, the slide lines' heights.
 fn lengths(m: &Mechanism, lang: Lang) -> Vec<Length> {
-    let mut out: Vec<Length> = vec![(
-        format!("{}{}", m.crank.centre, m.crank.pin),
-        M::CrankLength.get(lang),
-        m.crank.length,
-    )];
-    if let Some(centre) = m.fixed.iter().find(|f| f.name == m.crank.centre) {
-        for f in m.fixed.iter().filter(|f| f.name != m.crank.centre) {
-            let d = (f.at - centre.at).length();
-            out.push((
-                format!("{}{}", centre.name, f.name),
-                M::CentreDistance.get(lang),
-                d,
-            ));
-        }
-    }
-    for g in &m.groups {
-        match &g.dyad {
-            Dyad::Rrr {
-                a,
-                la,
-                b,
-                lb,
-                joint,
-                ..
-            } => {
-                let link = M::LinkLength.get(lang);
-                out.push((format!("{a}{joint}"), link, *la));
-                out.push((format!("{b}{joint}"), link, *lb));
-            }
-            Dyad::Rrp {
-                a,
-                la,
-                joint,
-                guide,
-                ..
-            } => {
-                out.push((format!("{a}{joint}"), M::LinkLength.get(lang), *la));
-                if guide.offset != 0.0 {
-                    out.push(("e".into(), M::Offset.get(lang), guide.offset.abs()));
-                }
-            }
-            Dyad::Rpr { offset, .. } if *offset != 0.0 => {
-                out.push(("e".into(), M::Offset.get(lang), offset.abs()));
-            }
-            _ => {}
-        }
-    }
-    for p in &m.points {
-        let Some(origin) = origin(m, p.link) else {
-            continue;
-        };
-        let d = p.along.hypot(p.across);
-        if d > 0.0 && origin != p.name {
-            out.push((format!("{origin}{}", p.name), M::PointDistance.get(lang), d));
-        }
-    }
-    out
-}
-
-/// The point a link's frame starts at (its further points are given from it): the crank's
-/// centre; an RRR link's outer pivot; … (the frames of [`crate::linkage::LinkPoint`]).
-fn origin(m: &Mechanism, link: u32) -> Option<String> {
-    if link == m.crank.link {
-        return Some(m.crank.centre.clone());
-    }
-    let g = m.groups.iter().find(|g| g.links.contains(&link))?;
-    let first = g.links[0] == link;
-    Some(match &g.dyad {
-        Dyad::Rrr { a, b, .. } => (if first { a } else { b }).clone(),
-        Dyad::Rrp { a, joint, .. } | Dyad::Rpp { a, joint, .. } => {
-            (if first { a } else { joint }).clone()
-        }
-        Dyad::Rpr { a, c, .. } => (if first { a } else { c }).clone(),
-        Dyad::Prp { joint, .. } => joint.clone(),
-    })
+    spans(m)
+        .into_iter()
+        .map(|(what, a, b, l)| {
+            let (name, meaning) = match what {
+                Span::Crank => (format!("{a}{b}"), M::CrankLength),
+                Span::Link => (format!("{a}{b}"), M::LinkLength),
+                Span::Point => (format!("{a}{b}"), M::PointDistance),
+                Span::Fixed => (format!("{a}{b}"), M::CentreDistance),
+                Span::Height => (format!("h_{{{}}}", plain(&a)), M::Offset),
+            };
+            (name, meaning.get(lang), l)
+        })
+        .collect()
 }
 
 /// The drawn lengths as a table (seed 000: AB = l_AB/μ_l = 56 mm, …), after the rule.

@@ -11,7 +11,7 @@ catalogue! {
         CrankDrawn => ("отрезок, изображающий кривошип на чертеже", "відрізок, що зображує кривошип на кресленні", "the crank's segment on the drawing"),
         CentreDistance => ("расстояние между неподвижными центрами", "відстань між нерухомими центрами", "the distance between the fixed centres"),
         LinkLength => ("длина звена", "довжина ланки", "a link's length"),
-        Offset => ("смещение направляющей", "зміщення напрямної", "the guide's offset"),
+        Offset => ("расстояние от точки до направляющей", "відстань від точки до напрямної", "the guide's distance from the point"),
         PointDistance => ("расстояние точки звена от его начала", "відстань точки ланки від її початку", "a point's distance from its link's origin"),
         Overlap => ("угол перекрытия (между положениями кривошипа в крайних положениях механизма)", "кут перекриття (між положеннями кривошипа в крайніх положеннях механізму)", "the angle between the crank's positions at the mechanism's extremes"),
         TimeRatio => ("коэффициент изменения средней скорости хода", "коефіцієнт зміни середньої швидкості ходу", "the time ratio of the strokes"),
