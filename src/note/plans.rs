@@ -208,16 +208,29 @@ impl CrankPin<'_> {
     }
 }
 
+/// A plan's subsection up to its worked values: the heading, the crank pin's vector and the
+/// plan's scale worked, each group's vector equations with the table of what is known.
+fn opening(w: &mut Writer<'_, '_>, p: &Plans<'_>, kind: Kind) {
+    let (heading, sentence, scale) = match kind {
+        Kind::Velocity => (T::VelocityPlans, T::VectorEquations, p.kin.scales.v),
+        Kind::Acceleration => (
+            T::AccelerationPlans,
+            T::AccelerationEquations,
+            p.kin.scales.a,
+        ),
+    };
+    w.heading(2, heading);
+    let crank = super::positions::crank_length(p.m);
+    p.crank_pin(&crank).worked(w, kind, scale);
+    w.doc.say(w.word(sentence));
+    equations(w, p.m, &p.s.groups, kind);
+}
+
 /// The velocity plans.
 pub(super) fn velocities(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(), NoteError> {
     let lang = w.lang;
     let sc = p.kin.scales;
-    w.heading(2, T::VelocityPlans);
-    let crank = super::positions::crank_length(p.m);
-    let pin = p.crank_pin(&crank);
-    pin.worked(w, Kind::Velocity, sc.v);
-    w.doc.say(w.word(T::VectorEquations));
-    equations(w, p.m, &p.s.groups, Kind::Velocity);
+    opening(w, p, Kind::Velocity);
     if let Some(at) = &p.at {
         worked(w, at, Symbol::Velocity, "p", sc.v);
         super::plan_worked::similarity(w, p);
@@ -243,12 +256,7 @@ pub(super) fn accelerations(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(),
         return Ok(());
     }
     let sc = p.kin.scales;
-    w.heading(2, T::AccelerationPlans);
-    let crank = super::positions::crank_length(p.m);
-    let pin = p.crank_pin(&crank);
-    pin.worked(w, Kind::Acceleration, sc.a);
-    w.doc.say(w.word(T::AccelerationEquations));
-    equations(w, p.m, &p.s.groups, Kind::Acceleration);
+    opening(w, p, Kind::Acceleration);
     if let Some(at) = &p.at {
         super::plan_worked::normals(w, p);
         super::plan_worked::coriolis(w, p);
