@@ -10,10 +10,13 @@
 //! portrait, ГОСТ 2.105 text rules, ГОСТ 2.104 frames: form 2 on the first text page, form 2a
 //! on the following ones. The words are the sheets' catalogue's (`sheets::captions`).
 
+mod analytic;
 mod cam;
 mod cam_special;
 mod conclusions;
+mod diagrams;
 mod dynamics;
+mod equations;
 mod explain;
 mod flywheel;
 mod friction;
@@ -27,6 +30,9 @@ mod lecture;
 mod machines;
 mod markup;
 mod moments;
+mod plan_worked;
+mod plans;
+mod positions;
 mod practicum;
 mod rows;
 mod train;

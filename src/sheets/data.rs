@@ -16,17 +16,31 @@ pub(crate) fn mm(x: f64, lang: Lang) -> String {
     fmt(x * 1e3, 5, lang)
 }
 
-/// Symbol (label markup), value and unit of the mechanism's data.
-pub fn mechanism(m: &Mechanism, lang: Lang) -> Vec<DataRow> {
-    let mut rows = Vec::new();
-    let len = |a: &str, b: &str, l: f64| {
-        (
-            format!("l_{{{}{}}}", plain(a), plain(b)),
-            mm(l, lang),
-            "mm".to_string(),
-        )
+/// What a length of the mechanism is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Span {
+    /// The crank.
+    Crank,
+    /// A link of a group between two of its pairs.
+    Link,
+    /// A further point of a link from the link's origin.
+    Point,
+    /// Two fixed points.
+    Fixed,
+    /// A slide line's distance from the point it is given through (its second name empty).
+    Height,
+}
+
+/// The lengths of the mechanism as its data gives them, in the data block's order: the
+/// crank, each group's links, the further points from their link's origin, the distances
+/// between fixed points and the slide lines' heights: what, the two points' names, the
+/// length (m).
+pub(crate) fn spans(m: &Mechanism) -> Vec<(Span, String, String, f64)> {
+    let mut out = Vec::new();
+    let mut push = |what: Span, a: &str, b: &str, l: f64| {
+        out.push((what, a.to_string(), b.to_string(), l));
     };
-    rows.push(len(&m.crank.centre, &m.crank.pin, m.crank.length));
+    push(Span::Crank, &m.crank.centre, &m.crank.pin, m.crank.length);
     for g in &m.groups {
         match &g.dyad {
             Dyad::Rrr {
@@ -37,28 +51,26 @@ pub fn mechanism(m: &Mechanism, lang: Lang) -> Vec<DataRow> {
                 joint,
                 ..
             } => {
-                rows.push(len(a, joint, *la));
-                rows.push(len(b, joint, *lb));
+                push(Span::Link, a, joint, *la);
+                push(Span::Link, b, joint, *lb);
             }
-            Dyad::Rrp { a, la, joint, .. } => rows.push(len(a, joint, *la)),
+            Dyad::Rrp { a, la, joint, .. } => push(Span::Link, a, joint, *la),
             _ => {}
         }
     }
     for p in &m.points {
         if p.across == 0.0 {
-            let origin = link_origin(m, p.link);
-            if let Some(o) = origin {
-                rows.push(len(&o, &p.name, p.along.abs()));
+            if let Some(o) = link_origin(m, p.link) {
+                push(Span::Point, &o, &p.name, p.along.abs());
             }
         }
     }
     let fixed = &m.fixed;
     for (k, a) in fixed.iter().enumerate() {
         for b in &fixed[k + 1..] {
-            rows.push(len(&a.name, &b.name, (a.at - b.at).length()));
+            push(Span::Fixed, &a.name, &b.name, (a.at - b.at).length());
         }
     }
-    // Each slide line's distance from the point it is given through (the guide's height).
     for g in &m.groups {
         let guides: Vec<(&str, f64)> = match &g.dyad {
             Dyad::Rrp { guide, .. } | Dyad::Rpp { guide, .. } => {
@@ -74,13 +86,24 @@ pub fn mechanism(m: &Mechanism, lang: Lang) -> Vec<DataRow> {
             Dyad::Rrr { .. } => Vec::new(),
         };
         for (through, offset) in guides.into_iter().filter(|g| g.1 != 0.0) {
-            rows.push((
-                format!("h_{{{}}}", plain(through)),
-                mm(offset.abs(), lang),
-                "mm".to_string(),
-            ));
+            push(Span::Height, through, "", offset.abs());
         }
     }
+    out
+}
+
+/// Symbol (label markup), value and unit of the mechanism's data.
+pub fn mechanism(m: &Mechanism, lang: Lang) -> Vec<DataRow> {
+    let mut rows: Vec<DataRow> = spans(m)
+        .into_iter()
+        .map(|(what, a, b, l)| {
+            let symbol = match what {
+                Span::Height => format!("h_{{{}}}", plain(&a)),
+                _ => format!("l_{{{}{}}}", plain(&a), plain(&b)),
+            };
+            (symbol, mm(l, lang), "mm".to_string())
+        })
+        .collect();
     rows.push(("ω_{1}".into(), fmt(m.crank.omega, 5, lang), "rad/s".into()));
     rows
 }

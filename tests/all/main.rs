@@ -43,6 +43,7 @@ mod note_errata;
 mod note_form;
 mod note_genres;
 mod note_language;
+mod note_worked_kinematics;
 mod note_worked_machines;
 mod output;
 mod plan_lines;

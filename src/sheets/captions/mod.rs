@@ -7,11 +7,13 @@ mod audit;
 mod linkage;
 mod machines;
 mod meaning_cases;
+mod meaning_kinematics;
 mod meaning_machines;
 mod meanings;
 mod note;
 mod note_cases;
 mod note_genres;
+mod note_kinematics;
 mod note_machines;
 pub(crate) mod symbols;
 
@@ -20,11 +22,13 @@ pub(crate) use linkage::Text;
 pub(super) use machines::{CamText, DynamicsText, RotorText};
 pub(crate) use machines::{FrictionText, GearText};
 pub(crate) use meaning_cases::CaseMeaning;
+pub(crate) use meaning_kinematics::KinematicsMeaning;
 pub(crate) use meaning_machines::MachinesMeaning;
 pub(crate) use meanings::Meaning;
 pub(crate) use note::NoteText;
 pub(crate) use note_cases::CaseText;
 pub(crate) use note_genres::GenreText;
+pub(crate) use note_kinematics::KinematicsNote;
 pub(crate) use note_machines::MachinesNote;
 pub(crate) use symbols::{quantity, subscripted};
 

@@ -75,11 +75,6 @@ catalogue! {
             "The plan of positions by compass arcs: the crank's circle divided into equal parts from the start of the working stroke; for each crank position the groups' points where the arcs of the links' lengths meet each other or a guide. The output's extreme positions by construction."
         ),
         StrokeIs => ("Ход (размах) выходного звена между крайними положениями:", "Хід (розмах) вихідної ланки між крайніми положеннями:", "The stroke (swing) of the output between its extremes:"),
-        ThetaAndK => (
-            "Угол перекрытия θ между положениями кривошипа в крайних положениях механизма и коэффициент изменения средней скорости хода:",
-            "Кут перекриття θ між положеннями кривошипа в крайніх положеннях механізму і коефіцієнт зміни середньої швидкості ходу:",
-            "The angle θ between the crank's extreme positions and the time ratio of the strokes:"
-        ),
         AlongGuideOf => ("направляющей звена", "напрямній ланки", "the guide of link"),
         VelocityPlans => ("Планы скоростей", "Плани швидкостей", "Velocity plans"),
         CrankPinVelocity => ("Скорость пальца кривошипа:", "Швидкість пальця кривошипа:", "The velocity of the crank pin:"),

@@ -1,0 +1,304 @@
+//! The kinematic diagrams of the note (seed 000 §1.2): μ_φ derived from the diagram's base,
+//! μ_S′ and μ_S″ of the chords' derivatives with their units, one value worked off each
+//! diagram (the seed's V = 45·0,00343·15,7), the seed's Table 1; the hodograph of a point's
+//! velocity with the seed's Table 4 (the plan's segment and the hodograph's ray in mm).
+
+use super::markup::{frac, num, sym, text, unit, Align};
+use super::rows::{numbers, values_and_errors, Column};
+use super::Writer;
+use crate::check::{Method, Row, Symbol};
+use crate::kinematics::Diagrams;
+use crate::scale::format_fixed;
+use crate::sheets::captions::{
+    quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
+};
+use crate::study::Kinematics;
+
+/// The diagrams by the method of chords, when the study charts a point.
+pub(super) fn diagrams(w: &mut Writer<'_, '_>, kin: &Kinematics, at: Option<&str>) {
+    let lang = w.lang;
+    let chords = super::rows::quantities(&w.report.rows, |r| r.method.is_diagram());
+    let Some(d) = &kin.diagrams else { return };
+    w.heading(2, T::KinematicDiagrams);
+    w.doc.say(w.word(T::ChordMethod));
+    scales(w, d);
+    w.doc.say(w.word(T::DiagramValues));
+    let w1 = kin.w1.abs();
+    diagram_table(w, d, w1, &chords, at);
+    // Every view of the kinematic sheets that is neither the scheme, the plan of positions,
+    // a plan nor the hodograph: the diagrams.
+    let shown = [
+        S::StructuralScheme,
+        S::PlanOfPositions,
+        S::Pos,
+        S::AccelerationPlanAt,
+        S::Hodograph,
+    ]
+    .map(|t| t.get(lang));
+    w.figures(
+        super::kinematics::KINEMATICS,
+        |own| !shown.iter().any(|s| own.starts_with(s)),
+        |own| own.to_string(),
+    );
+}
+
+/// The unit of μ_S′: the analogue dS/dφ (m/rad) per mm of the diagram.
+const FIRST_UNIT: &str = "m/(rad*mm)";
+/// The unit of μ_S″: d²S/dφ² (m/rad²) per mm.
+const SECOND_UNIT: &str = "m/(rad^2*mm)";
+
+/// μ_φ = 2π/L from the diagram's base L (mm: its intervals × their length), then
+/// μ_S′ = μ_S/(μ_φ·H₁) and μ_S″ = μ_S′/(μ_φ·H₂).
+fn scales(w: &mut Writer<'_, '_>, d: &Diagrams) {
+    let lang = w.lang;
+    let (mu_s, mu_phi) = (d.scales.y.value(), d.scales.x.value());
+    let intervals = if d.first.periodic {
+        d.first.x_node.len()
+    } else {
+        d.first.x_node.len().saturating_sub(1)
+    };
+    // The base in mm: the turn's intervals (rad) at μ_φ, as the chart lays them off.
+    let base = d.scales.x.to_mm(d.first.dx * intervals as f64);
+    w.doc.say(w.word(K::PhiScale));
+    w.formula(&format!(
+        "{} = {} = {} = {}{}",
+        sym("μ_{φ}"),
+        frac("2 π", &sym("L")),
+        frac(&num(std::f64::consts::TAU, 5, lang), &num(base, 5, lang)),
+        num(mu_phi, 4, lang),
+        unit(d.scales.x.quantity.unit(lang))
+    ));
+    w.explain(&[
+        ("μ_{φ}", w.word(M::PhiScale), "rad/mm"),
+        ("L", w.word(M::DiagramBase), "mm"),
+    ]);
+    let (h1, h2) = (d.first.pole_mm, d.second.pole_mm);
+    let unit_of = |si: &str| unit(&unit_in(si, lang));
+    w.formula(&format!(
+        "{} = {} = {} = {}{}",
+        sym("μ_{S′}"),
+        frac(&sym("μ_{S}"), &format!("{} {}", sym("μ_{φ}"), sym("H_{1}"))),
+        frac(
+            &num(mu_s, 4, lang),
+            &format!("{} dot {}", num(mu_phi, 4, lang), num(h1, 4, lang))
+        ),
+        num(d.first.scale.value(), 4, lang),
+        unit_of(FIRST_UNIT)
+    ));
+    w.explain(&[
+        ("μ_{S′}", w.word(M::FirstScale), FIRST_UNIT),
+        ("μ_{S}", w.word(M::DisplacementScale), "m/mm"),
+        ("H_{1}", w.word(M::PoleFirst), "mm"),
+    ]);
+    w.formula(&format!(
+        "{} = {} = {} = {}{}",
+        sym("μ_{S″}"),
+        frac(
+            &sym("μ_{S′}"),
+            &format!("{} {}", sym("μ_{φ}"), sym("H_{2}"))
+        ),
+        frac(
+            &num(d.first.scale.value(), 4, lang),
+            &format!("{} dot {}", num(mu_phi, 4, lang), num(h2, 4, lang))
+        ),
+        num(d.second.scale.value(), 4, lang),
+        unit_of(SECOND_UNIT)
+    ));
+    w.explain(&[
+        ("μ_{S″}", w.word(M::SecondScale), SECOND_UNIT),
+        ("H_{2}", w.word(M::PoleSecond), "mm"),
+    ]);
+}
+
+/// The seed's Table 1: the charted point's displacement, velocity and acceleration at each
+/// position as the diagrams give them, in the drawing's mm and in SI (mm = value over the
+/// diagram's μ: μ_S, |ω₁|·μ_S′, ω₁²·μ_S″), one value of each worked at position `at`, then
+/// their differences from the twin.
+fn diagram_table(
+    w: &mut Writer<'_, '_>,
+    d: &Diagrams,
+    w1: f64,
+    chords: &[(String, Method)],
+    at: Option<&str>,
+) {
+    let lang = w.lang;
+    let mus = [
+        d.scales.y.value(),
+        w1 * d.first.scale.value(),
+        w1 * w1 * d.second.scale.value(),
+    ];
+    let by_symbol = |s: Symbol| {
+        chords
+            .iter()
+            .find(|(q, m)| {
+                w.report
+                    .rows
+                    .iter()
+                    .any(|r| r.quantity() == *q && r.method == *m && r.key.symbol == s)
+            })
+            .cloned()
+    };
+    let picked: Vec<(String, Method)> =
+        [Symbol::Displacement, Symbol::Velocity, Symbol::Acceleration]
+            .into_iter()
+            .filter_map(by_symbol)
+            .collect();
+    if picked.len() < 3 {
+        return values_and_errors(
+            w,
+            (w.word(T::DiagramTable), w.word(T::DiagramErrors)),
+            chords,
+        );
+    }
+    let positions = super::rows::positions_of(&w.report.rows, &picked);
+    let mut cols = Vec::new();
+    let mut worked = Vec::new();
+    for (k, ((q, m), mu)) in picked.iter().zip(mus).enumerate() {
+        let rows: Vec<Option<&Row>> = positions
+            .iter()
+            .map(|p| {
+                w.report.rows.iter().find(|r| {
+                    r.quantity() == *q && r.method == *m && r.position().as_ref() == Some(p)
+                })
+            })
+            .collect();
+        let Some(first) = rows.iter().flatten().next() else {
+            continue;
+        };
+        let symbol = quantity(first.key.symbol, &first.key.subject, lang);
+        if let Some(r) = rows
+            .iter()
+            .flatten()
+            .find(|r| r.position().as_deref() == at)
+        {
+            let subject = (symbol.clone(), first.key.subject.clone());
+            worked.push((k, subject, r.graphical / mu, r.graphical, r.unit()));
+        }
+        cols.push(
+            Column::new(
+                format!("{symbol}, {}", w.word(T::MmUnit)),
+                rows.iter().map(|r| r.map(|r| r.graphical / mu)).collect(),
+            )
+            .against(first.scale / mu),
+        );
+        cols.push(
+            Column::new(
+                super::rows::head(w, first),
+                rows.iter().map(|r| r.map(|r| r.graphical)).collect(),
+            )
+            .against(first.scale),
+        );
+    }
+    if let (Some(at), false) = (at, worked.is_empty()) {
+        w.doc.say(&format!("{} {at}:", w.word(K::DiagramWorked)));
+        for (k, symbol, mm, value, si) in worked {
+            worked_value(w, d, w1, (k, &symbol.0, &symbol.1), (mm, value, si));
+        }
+    }
+    let caption = w.word(T::DiagramTable);
+    numbers(w, caption, &positions, &cols);
+    let captions = (w.word(T::DiagramAll), w.word(T::DiagramErrors));
+    values_and_errors(w, captions, chords);
+}
+
+/// One value read off diagram `k` (0 displacement, 1 its first, 2 its second derivative):
+/// the ordinate in mm times the diagram's μ (and |ω₁| or ω₁²).
+fn worked_value(
+    w: &mut Writer<'_, '_>,
+    d: &Diagrams,
+    w1: f64,
+    (k, symbol, point): (usize, &str, &str),
+    (mm, value, si): (f64, f64, &str),
+) {
+    let lang = w.lang;
+    let (y, mu, mu_value, power) = match k {
+        0 => ("y_{S}", "μ_{S}", d.scales.y.value(), ""),
+        1 => ("y_{S′}", "μ_{S′}", d.first.scale.value(), ""),
+        _ => ("y_{S″}", "μ_{S″}", d.second.scale.value(), "^2"),
+    };
+    let omega = if k == 0 {
+        (String::new(), String::new())
+    } else {
+        (
+            format!(" {}{power}", sym("ω_{1}")),
+            format!(" dot {}{power}", num(w1, 5, lang)),
+        )
+    };
+    w.formula(&format!(
+        "{} = {} {}{} = {} dot {}{} = {}{}",
+        sym(symbol),
+        sym(y),
+        sym(mu),
+        omega.0,
+        num(mm, 4, lang),
+        num(mu_value, 4, lang),
+        omega.1,
+        num(value, 4, lang),
+        unit(&unit_in(si, lang))
+    ));
+    let what = format!(
+        "{} {point} {}",
+        w.word([M::PointDisplacement, M::PointVelocity, M::PointAcceleration][k.min(2)]),
+        w.word(M::OffDiagram)
+    );
+    w.explain(&[(symbol, &what, si), (y, w.word(M::Ordinate), "mm")]);
+}
+
+/// The hodograph of the velocity of a point (seed 000 §1.4) and the seed's Table 4: the
+/// point's segment on the velocity plans at μ_v and the hodograph's ray at its own μ, in mm,
+/// the positions as columns.
+pub(super) fn hodograph(w: &mut Writer<'_, '_>, kin: &Kinematics) {
+    let lang = w.lang;
+    let Some((point, figure)) = &kin.hodograph else {
+        return;
+    };
+    w.heading(2, T::Hodograph);
+    w.doc.say(w.word(T::HodographText));
+    let q = format!("v_{point}");
+    let rows: Vec<Row> = w
+        .report
+        .rows
+        .iter()
+        .filter(|r| r.quantity() == q && r.method == Method::Plan)
+        .cloned()
+        .collect();
+    if let Some(first) = rows.first() {
+        let mu = figure.scale;
+        let mu_v = kin.scales.v;
+        let seg = format!("p{}", point.to_lowercase());
+        w.doc.say(&format!(
+            "{} {} {}; {} {}.",
+            w.word(K::HodographScale),
+            crate::scale::format_number(mu.value(), lang),
+            mu.quantity.unit(lang),
+            w.word(K::PlanSegments),
+            mu_v.caption(lang)
+        ));
+        let line = |head: String, f: &dyn Fn(f64) -> f64, decimals: usize| {
+            std::iter::once(super::markup::label(&head))
+                .chain(
+                    rows.iter()
+                        .map(|r| text(&format_fixed(f(r.graphical.abs()), decimals, lang))),
+                )
+                .collect::<Vec<String>>()
+        };
+        let mm = w.word(T::MmUnit);
+        let body = vec![
+            line(format!("{seg}, {mm}"), &|v| mu_v.to_mm(v), 1),
+            line(super::rows::head(w, first), &|v| v, 3),
+            line(format!("{}, {mm}", w.word(K::Ray)), &|v| mu.to_mm(v), 1),
+        ];
+        let mut header = vec![text(w.word(T::PositionShort))];
+        header.extend(rows.iter().filter_map(|r| r.position()).map(|p| text(&p)));
+        let mut align = vec![Align::Left];
+        align.extend(vec![Align::Centre; header.len() - 1]);
+        let caption = w.word(T::HodographTable);
+        w.doc.table(caption, &align, &header, &body);
+    }
+    let word = S::Hodograph.get(lang);
+    w.figures(
+        super::kinematics::KINEMATICS,
+        |own| own.starts_with(word),
+        |own| own.to_string(),
+    );
+}
