@@ -156,7 +156,6 @@ fn every_note_keeps_the_form_of_gost_2_105() {
 /// displayed formula of every note, in every language, has its left side explained, under
 /// it or under an earlier one.
 #[test]
-#[ignore = "issue 44 in progress: the kinematics, kinetostatics, dynamics, cam and case sections explain their formulas next"]
 fn every_formula_of_every_note_is_explained() {
     let mut missing = Vec::new();
     for path in support::scene_paths() {
