@@ -35,13 +35,20 @@ fn number_after(text: &str, word: &str) -> Option<f64> {
     n.replace(',', ".").parse().ok()
 }
 
-#[test]
-fn the_shapers_conclusions_give_every_erratum_of_seed_000_with_its_exact_value() {
+/// The typeset text of the shaper's Russian note (exact readings), its white space single
+/// spaces.
+fn shaper_text() -> String {
     let scene = tmm::load(&support::root().join("constructions/shaper.toml")).expect("scene");
     let session = Session::new(&scene, Drafting::EXACT);
     let note = tmm::note::compose(&session, Lang::Ru).expect("note");
     let text = tmm::note::to_text(&note).expect("typeset");
     let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    text
+}
+
+#[test]
+fn the_shapers_conclusions_give_every_erratum_of_seed_000_with_its_exact_value() {
+    let text = shaper_text();
     let from = text
         .find("Значения источника")
         .expect("the conclusions' errata");
@@ -67,11 +74,7 @@ fn the_shapers_conclusions_give_every_erratum_of_seed_000_with_its_exact_value()
 /// λ₂(B₂) = −1.5949).
 #[test]
 fn the_shapers_note_gives_the_specific_sliding_at_the_seeds_points() {
-    let scene = tmm::load(&support::root().join("constructions/shaper.toml")).expect("scene");
-    let session = Session::new(&scene, Drafting::EXACT);
-    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
-    let text = tmm::note::to_text(&note).expect("typeset");
-    let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    let text = shaper_text();
     let from = text
         .find("Удельное скольжение в точках линии зацепления")
         .expect("Table 6's caption");
