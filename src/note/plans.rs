@@ -104,10 +104,11 @@ pub(super) fn plan_quantities(rows: &[Row], symbol: Symbol) -> Vec<(String, Meth
 }
 
 /// The plans' values of `symbol` by position and their differences from the twin, as the
-/// two tables captioned `captions`.
-fn plan_tables(w: &mut Writer<'_, '_>, symbol: Symbol, captions: (T, T)) {
+/// two tables captioned `captions`; the differences alone without the first (the values
+/// stand in the seed's Table 2).
+fn plan_tables(w: &mut Writer<'_, '_>, symbol: Symbol, captions: (Option<T>, T)) {
     let quantities = plan_quantities(&w.report.rows, symbol);
-    let captions = (w.word(captions.0), w.word(captions.1));
+    let captions = (captions.0.map_or("", |c| w.word(c)), w.word(captions.1));
     values_and_errors(w, captions, &quantities);
 }
 
@@ -237,8 +238,8 @@ pub(super) fn velocities(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(), No
         super::plan_worked::rates(w, p, Kind::Velocity);
     }
     table_2(w, p);
-    plan_tables(w, Symbol::Velocity, (T::VelocitiesTable, T::VelocityErrors));
-    let captions = (T::AngularVelocitiesTable, T::AngularVelocityErrors);
+    plan_tables(w, Symbol::Velocity, (None, T::VelocityErrors));
+    let captions = (Some(T::AngularVelocitiesTable), T::AngularVelocityErrors);
     plan_tables(w, Symbol::AngularVelocity, captions);
     let worked_plan = p.at.as_ref().map(|at| format!("{} {at}", S::Pos.get(lang)));
     w.figures(
@@ -263,9 +264,12 @@ pub(super) fn accelerations(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(),
         worked(w, at, Symbol::Acceleration, "π", sc.a);
         super::plan_worked::rates(w, p, Kind::Acceleration);
     }
-    let captions = (T::AccelerationsTable, T::AccelerationErrors);
+    let captions = (Some(T::AccelerationsTable), T::AccelerationErrors);
     plan_tables(w, Symbol::Acceleration, captions);
-    let captions = (T::AngularAccelerationsTable, T::AngularAccelerationErrors);
+    let captions = (
+        Some(T::AngularAccelerationsTable),
+        T::AngularAccelerationErrors,
+    );
     plan_tables(w, Symbol::AngularAcceleration, captions);
     // Which links turn faster, which slower (seed 001 l. 686–689).
     let verdicts = crate::kinematics::verdicts(&w.report.rows);

@@ -311,8 +311,9 @@ pub(super) fn positions_of(rows: &[Row], quantities: &[(String, Method)]) -> Vec
 }
 
 /// The seed's shape of a table of readings (its Table 2): one column per quantity, its
-/// graphical value at each position; then the same quantities' relative difference from
-/// the analytic twin, in %, as a second table captioned `errors`.
+/// graphical value at each position (no such table for an empty `caption`: its values stand
+/// in another); then the same quantities' relative difference from the analytic twin, in %,
+/// as a second table captioned `errors`.
 pub(super) fn values_and_errors(
     w: &mut Writer<'_, '_>,
     (caption, errors): (&str, &str),
@@ -359,7 +360,9 @@ pub(super) fn values_and_errors(
         // The report's rule: a relative error of at most 1e-9 is a rounding residue, 0.
         deltas.push(delta.against(1e-9 * 100.0 / ZERO_FRACTION));
     }
-    numbers(w, caption, &positions, &values);
+    if !caption.is_empty() {
+        numbers(w, caption, &positions, &values);
+    }
     numbers(w, errors, &positions, &deltas);
 }
 

@@ -85,7 +85,6 @@ catalogue! {
             "Each structural group gives two vector equations; the known vectors are known in magnitude and direction, the unknown ones by their lines only:"
         ),
         WorkedVelocities => ("Скорости, измеренные на плане скоростей в положении", "Швидкості, виміряні на плані швидкостей у положенні", "The velocities measured on the velocity plan at position"),
-        VelocitiesTable => ("Скорости точек по планам скоростей", "Швидкості точок за планами швидкостей", "Velocities of the points by the velocity plans"),
         VelocityErrors => ("Расхождение скоростей с аналитическим расчётом", "Розбіжність швидкостей з аналітичним розрахунком", "The velocities' difference from the analytic solution"),
         AngularVelocityErrors => ("Расхождение угловых скоростей с аналитическим расчётом", "Розбіжність кутових швидкостей з аналітичним розрахунком", "The angular velocities' difference from the analytic solution"),
         AccelerationErrors => ("Расхождение ускорений с аналитическим расчётом", "Розбіжність прискорень з аналітичним розрахунком", "The accelerations' difference from the analytic solution"),
