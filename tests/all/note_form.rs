@@ -121,6 +121,21 @@ fn check(name: &str, pages: &[String], lang: Lang) -> usize {
             w.iter().collect::<String>()
         );
     }
+    // A formula keeps its «где» on its page: no page opens with an explanation.
+    for (k, page) in pages.iter().enumerate() {
+        let first_explanation = page.match_indices(word).find(|(at, _)| {
+            let after: String = page[at + word.len()..].chars().take(40).collect();
+            after.contains('—')
+        });
+        if let Some((at, _)) = first_explanation {
+            assert!(
+                !formula_numbers(&page[..at]).is_empty(),
+                "{name}: page {} opens with «{}» away from its formula",
+                k + 1,
+                word.trim()
+            );
+        }
+    }
     // Each continuation names the table running on from the page before, which is the last
     // table captioned so far; a page beginning under the running table says so.
     let mut running = 0;
