@@ -14,12 +14,14 @@
 
 pub mod finding;
 mod report;
+mod seed;
 mod summary;
 #[cfg(test)]
 mod tests;
 
 pub use finding::{BaseUsed, Cusp, Finding, Limit, NoFlywheel, Note, Part, RadiusBasis, Route};
 pub use report::{Column, Report, Table};
+pub use seed::{seed_notes, SeedValue};
 pub use summary::{Summary, SummaryEntry};
 
 use crate::scale::Lang;

@@ -27,9 +27,7 @@ mod spec;
 mod tests;
 mod twin;
 
-pub use spec::{
-    Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, SeedValue, Stroke, G_STANDARD,
-};
+pub use spec::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke, G_STANDARD};
 
 pub use error::ForceError;
 pub use indicator::Indicator;
@@ -40,7 +38,7 @@ pub use pair_friction::{friction_loads, PairFriction, PairMotion};
 pub use polygons::{
     DriverPolygon, GroupPolygon, MomentEquation, MomentTerm, PolygonDetail, Polygons, Unknown,
 };
-pub use rows::{notes, seed_notes};
+pub use rows::notes;
 use rows::{reaction_rows, row, rows, zero_references};
 pub use twin::{power_balance, solve as solve_twin, Equilibrium, Pair, PairKind, Reaction};
 

@@ -144,7 +144,7 @@ pub struct ForceSpec {
     /// Friction in the pairs (`[forces.friction]`), analysed beside the frictionless case.
     pub friction: Option<PairFriction>,
     /// The seed's printed values to compare with (`[[forces.seed]]`).
-    pub seed: Vec<SeedValue>,
+    pub seed: Vec<crate::check::SeedValue>,
 }
 
 impl ForceSpec {
@@ -158,43 +158,6 @@ impl ForceSpec {
     /// The weight of a mass `m` (kg) as a vector, N: m·g along the scene's gravity.
     pub fn weight(&self, m: f64) -> DVec2 {
         DVec2::from_angle(self.gravity_dir) * (m * self.g)
-    }
-}
-
-/// A value the seed prints for a row of the report (`[[seed]]`, `[[forces.seed]]`): the report notes
-/// how far it is from the analysis, so that a seed's error is flagged, never matched.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SeedValue {
-    /// The row's quantity (`F_bal`, `h_0_5`).
-    pub quantity: String,
-    /// The row's position label (`None`: a quantity of the whole scene, `r_b1`).
-    pub position: Option<String>,
-    /// The row's method (`None`: the first row of the quantity at the position).
-    pub method: Option<crate::check::Method>,
-    /// The seed's value in the row's SI unit (its magnitude is compared).
-    pub value: f64,
-    /// The value as the seed prints it (`112 kgf`).
-    pub printed: String,
-    /// The number the seed prints, in its unit.
-    pub printed_value: f64,
-    /// The unit the seed prints it in (`kgf`, `mm`).
-    pub printed_unit: &'static str,
-    /// Where the seed prints it and what is wrong with it.
-    pub source: String,
-    /// What is wrong with it, in each language of the note (`None`: the note says only
-    /// that the value is not reproduced).
-    pub why: Option<crate::scene::Localised>,
-}
-
-impl SeedValue {
-    /// The report's row it names: its quantity at its position (none for a quantity of the
-    /// whole scene) by its method (the first such row when it names none).
-    pub fn row<'r>(&self, rows: &'r [crate::check::Row]) -> Option<&'r crate::check::Row> {
-        rows.iter().find(|r| {
-            r.quantity() == self.quantity
-                && r.position() == self.position
-                && self.method.is_none_or(|m| m == r.method)
-        })
     }
 }
 

@@ -125,20 +125,18 @@ fn sign_off(w: &mut Writer<'_, '_>) {
 fn seed_values(w: &mut Writer<'_, '_>) {
     let lang = w.lang;
     let scene = w.session.scene();
-    let mut rows: Vec<Vec<String>> = Vec::new();
-    // A unit after a number in a cell, its power a superscript: `кг·м²`.
+    let mut rows: Vec<SeedRow> = Vec::new();
+    // A unit after a number, its power a superscript: `кг·м²`.
     let unit_of = |u: &str| unit_in(u, lang).replace("^2", "²");
-    // The reason as content: plain text, or label markup with its scripts.
-    let mut add =
-        |symbol: String, printed: String, exact: String, off: Option<f64>, why: String| {
-            rows.push(vec![
-                label(&symbol),
-                text(&printed),
-                text(&exact),
-                text(&off.map(|d| percent(d, lang)).unwrap_or_else(|| "—".into())),
-                why,
-            ]);
-        };
+    let mut add = |symbol: String, printed: String, exact: String, off: f64, why: &str| {
+        rows.push(SeedRow {
+            symbol,
+            printed,
+            exact,
+            off,
+            why: why.to_string(),
+        });
+    };
     let forces = scene.forces.iter().flat_map(|f| f.seed.iter());
     for s in scene.seed.iter().chain(forces) {
         let Some(r) = s.row(&w.report.rows) else {
@@ -158,10 +156,10 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 unit_of(s.printed_unit)
             ),
             format!("{} {}", fmt(exact, 4, lang), unit_of(s.printed_unit)),
-            Some((s.value - r.analytic.abs()) / r.analytic.abs()),
+            (s.value - r.analytic.abs()) / r.analytic.abs(),
             s.why
                 .as_ref()
-                .map_or_else(|| text(w.word(T::SeedNoReason)), |why| label(why.get(lang))),
+                .map_or(w.word(T::SeedNoReason), |why| why.get(lang)),
         );
     }
     let exact_of = |sym: Symbol, subject: &str, method: Method| {
@@ -180,8 +178,8 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 "J_{м}".into(),
                 format!("{} {}", fmt(seed, 4, lang), unit_of("kg*m^2")),
                 format!("{} {}", fmt(exact, 5, lang), unit_of("kg*m^2")),
-                Some((seed - exact) / exact),
-                text(w.word(T::SeedFlywheel)),
+                (seed - exact) / exact,
+                w.word(T::SeedFlywheel),
             );
         }
     }
@@ -194,13 +192,13 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 "ε_{α}".into(),
                 fmt(seed, 3, lang),
                 fmt(exact, 5, lang),
-                Some((seed - exact) / exact),
-                label(w.word(T::SeedContactRatio)),
+                (seed - exact) / exact,
+                w.word(T::SeedContactRatio),
             );
         }
     }
     if let Some(r) = train_seed(w) {
-        add(r.symbol, r.printed, r.exact, Some(r.off), label(&r.why));
+        add(r.symbol, r.printed, r.exact, r.off, &r.why);
     }
     if let Some(c) = &scene.cam {
         if let (Some(seed), Some(exact)) = (
@@ -215,37 +213,39 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 "r_{min}".into(),
                 format!("{} {}", mm(seed, lang), unit_of("mm")),
                 format!("{} {}", mm(exact, lang), unit_of("mm")),
-                Some((seed - exact) / exact),
-                label(w.word(T::SeedMinRadius)),
+                (seed - exact) / exact,
+                w.word(T::SeedMinRadius),
             );
         }
     }
-    seed_table(w, &rows);
+    seed_list(w, &rows);
 }
 
 /// The source's values the project does not reproduce, as a numbered list of sentences:
 /// each quantity, what the source gives, the exact value, how far off and why (nothing
 /// without rows).
-fn seed_table(w: &mut Writer<'_, '_>, rows: &[Vec<String>]) {
+fn seed_list(w: &mut Writer<'_, '_>, rows: &[SeedRow]) {
     if rows.is_empty() {
         return;
     }
     w.doc.say(w.word(T::SeedNotReproduced));
-    for row in rows {
-        let [symbol, printed, exact, off, why] = &row[..] else {
-            continue;
-        };
+    for r in rows {
         w.doc.raw(&format!(
-            "+ #{symbol}: #{} #{printed}, #{} #{exact} (#{} #{off}~%) — #{why}.",
+            "+ #{}: #{} #{}, #{} #{} (#{} #{}~%) — #{}.",
+            label(&r.symbol),
             text(w.word(T::SeedGives)),
+            text(&r.printed),
             text(w.word(T::SeedExactValue)),
+            text(&r.exact),
             text(w.word(T::SeedOffBy)),
+            text(&percent(r.off, w.lang)),
+            label(&r.why),
         ));
     }
     w.doc.raw("");
 }
 
-/// A row of the table of the source's values the project does not reproduce.
+/// A value of the source the project does not reproduce, as the conclusions give it.
 struct SeedRow {
     /// The quantity in label markup.
     symbol: String,
@@ -255,7 +255,7 @@ struct SeedRow {
     exact: String,
     /// (printed − exact)/exact.
     off: f64,
-    /// Why, in label markup.
+    /// Why, in label markup (`F_{и5}`).
     why: String,
 }
 

@@ -257,12 +257,10 @@ pub(super) fn numbers(
                 let zero = c.scale.unwrap_or(largest);
                 let x = c.values.get(k).copied().flatten();
                 let x = x.map(|x| if is_zero(x, zero) { 0.0 } else { x });
-                row.push(text(&match (x, decimals(largest, c.digits)) {
-                    (Some(x), Some(d)) => crate::scale::format_fixed(x, d, lang),
-                    (Some(0.0), None) => "0".into(),
-                    (Some(x), None) => fmt(x, c.digits, lang),
-                    (None, _) => "—".into(),
-                }));
+                let d = decimals(largest, c.digits);
+                row.push(text(
+                    &x.map_or_else(|| "—".into(), |x| in_column(x, d, c.digits, lang)),
+                ));
             }
             row
         })
@@ -288,11 +286,20 @@ fn decimals(largest: f64, digits: usize) -> Option<usize> {
 /// the larger needs for `digits` significant digits ([`decimals`]); as [`fmt`] past them.
 fn same_decimals(values: [f64; 2], digits: usize, lang: crate::scale::Lang) -> [String; 2] {
     let largest = values[0].abs().max(values[1].abs());
-    values.map(|x| match decimals(largest, digits) {
-        _ if x == 0.0 => "0".into(),
-        Some(d) if x.is_finite() => crate::scale::format_fixed(x, d, lang),
-        _ => fmt(x, digits, lang),
+    let d = decimals(largest, digits);
+    values.map(|x| match x {
+        0.0 => "0".into(),
+        _ => in_column(x, d.filter(|_| x.is_finite()), digits, lang),
     })
+}
+
+/// A value in a column of `d` decimals ([`decimals`]); as [`fmt`] to `digits` significant
+/// digits in a column without.
+fn in_column(x: f64, d: Option<usize>, digits: usize, lang: crate::scale::Lang) -> String {
+    match d {
+        Some(d) => crate::scale::format_fixed(x, d, lang),
+        None => fmt(x, digits, lang),
+    }
 }
 
 /// The positions at which any of `quantities` was read, in the report's order.

@@ -222,7 +222,7 @@ pub struct Scene {
     pub answer_key: Vec<AnswerItem>,
     /// The values the seed prints for rows of the report that the analysis does not
     /// reproduce (`[[seed]]`), in file order: flagged by the report, explained by the note.
-    pub seed: Vec<crate::forces::SeedValue>,
+    pub seed: Vec<crate::check::SeedValue>,
 }
 
 /// One value of an answer key: a report row named as the report names it,

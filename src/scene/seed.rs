@@ -7,7 +7,7 @@ use super::check::{join, number, quoted, Checker};
 use super::model::Localised;
 use super::raw::RawSeedValue;
 use crate::check::Method;
-use crate::forces::SeedValue;
+use crate::check::SeedValue;
 
 /// One kilogram-force, N.
 const KGF: f64 = 9.806_65;

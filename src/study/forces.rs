@@ -202,7 +202,7 @@ impl<'s> Session<'s> {
             rep.notes.extend(crate::forces::notes(&f));
         }
         let seed = &self.force_spec("the force analysis")?.seed;
-        rep.notes.extend(crate::forces::seed_notes(seed, &rows));
+        rep.notes.extend(crate::check::seed_notes(seed, &rows));
         rep.rows.extend(rows);
         Ok(())
     }

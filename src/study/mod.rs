@@ -216,7 +216,7 @@ impl<'s> Session<'s> {
             (part.add)(self, &mut rep)?;
         }
         rep.notes
-            .extend(crate::forces::seed_notes(&self.scene.seed, &rep.rows));
+            .extend(crate::check::seed_notes(&self.scene.seed, &rep.rows));
         Ok(rep)
     }
 }
