@@ -20,7 +20,7 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         None => (T::CamIntro, T::CamScene),
     };
     w.doc.say(w.word(intro));
-    w.data_list(PlateKind::Cam, false);
+    w.data_list(PlateKind::Cam, super::DataPart::Results);
     match &special {
         Some(c) => super::cam_special::worked(w, c)?,
         None => worked(w)?,

@@ -150,9 +150,10 @@ fn seed_values(w: &mut Writer<'_, '_>) {
                 Some(p) => format!("{symbol} ({} {p})", w.word(T::PositionShort)),
                 None => symbol,
             },
+            // As the source prints it (164,944), its digits kept: none has more than six.
             format!(
                 "{} {}",
-                fmt(s.printed_value, 4, lang),
+                fmt(s.printed_value, 6, lang),
                 unit_of(s.printed_unit)
             ),
             format!("{} {}", fmt(exact, 4, lang), unit_of(s.printed_unit)),

@@ -4,6 +4,7 @@
 //! velocity with the seed's Table 4 (the plan's segment and the hodograph's ray in mm).
 
 use super::markup::{frac, num, sym, text, unit, Align};
+use super::plans::Plans;
 use super::rows::{numbers, values_and_errors, Column};
 use super::Writer;
 use crate::check::{Method, Row, Symbol};
@@ -12,6 +13,7 @@ use crate::scale::format_fixed;
 use crate::sheets::captions::{
     quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
 };
+use crate::sheets::data::plain;
 use crate::study::Kinematics;
 
 /// The diagrams by the method of chords, when the study charts a point.
@@ -247,25 +249,29 @@ fn worked_value(
 /// The hodograph of the velocity of a point (seed 000 §1.4) and the seed's Table 4: the
 /// point's segment on the velocity plans at μ_v and the hodograph's ray at its own μ, in mm,
 /// the positions as columns.
-pub(super) fn hodograph(w: &mut Writer<'_, '_>, kin: &Kinematics) {
+pub(super) fn hodograph(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
     let lang = w.lang;
+    let kin = p.kin;
     let Some((point, figure)) = &kin.hodograph else {
         return;
     };
     w.heading(2, T::Hodograph);
     w.doc.say(w.word(T::HodographText));
-    let q = format!("v_{point}");
-    let rows: Vec<Row> = w
-        .report
-        .rows
-        .iter()
-        .filter(|r| r.quantity() == q && r.method == Method::Plan)
-        .cloned()
-        .collect();
+    let plan_rows = |q: &str| -> Vec<Row> {
+        let q = format!("v_{q}");
+        w.report
+            .rows
+            .iter()
+            .filter(|r| r.quantity() == q && r.method == Method::Plan)
+            .cloned()
+            .collect()
+    };
+    let rows = plan_rows(point);
+    let far = far_point(p, point, lang).filter(|f| plan_rows(&f.far).len() == rows.len());
     if let Some(first) = rows.first() {
         let mu = figure.scale;
         let mu_v = kin.scales.v;
-        let seg = format!("p{}", point.to_lowercase());
+        let seg = format!("p{}", indexed(&point.to_lowercase()));
         w.doc.say(&format!(
             "{} {} {}; {} {}.",
             w.word(K::HodographScale),
@@ -274,7 +280,7 @@ pub(super) fn hodograph(w: &mut Writer<'_, '_>, kin: &Kinematics) {
             w.word(K::PlanSegments),
             mu_v.caption(lang)
         ));
-        let line = |head: String, f: &dyn Fn(f64) -> f64, decimals: usize| {
+        let line = |head: String, rows: &[Row], f: &dyn Fn(f64) -> f64, decimals: usize| {
             std::iter::once(super::markup::label(&head))
                 .chain(
                     rows.iter()
@@ -283,11 +289,35 @@ pub(super) fn hodograph(w: &mut Writer<'_, '_>, kin: &Kinematics) {
                 .collect::<Vec<String>>()
         };
         let mm = w.word(T::MmUnit);
-        let body = vec![
-            line(format!("{seg}, {mm}"), &|v| mu_v.to_mm(v), 1),
-            line(super::rows::head(w, first), &|v| v, 3),
-            line(format!("{}, {mm}", w.word(K::Ray)), &|v| mu.to_mm(v), 1),
-        ];
+        let mut body = Vec::new();
+        // The seed's Table 4: the far point's segment first, the point's by similarity.
+        let own = match &far {
+            Some(f) => {
+                let far_seg = format!("p{}", indexed(&f.far.to_lowercase()));
+                body.push(line(
+                    format!("{far_seg}, {mm}"),
+                    &plan_rows(&f.far),
+                    &|v| mu_v.to_mm(v),
+                    1,
+                ));
+                format!(
+                    "{seg} = {far_seg}·{}/{}",
+                    indexed(&f.near_len),
+                    indexed(&f.far_len)
+                )
+            }
+            None => seg,
+        };
+        body.extend([
+            line(format!("{own}, {mm}"), &rows, &|v| mu_v.to_mm(v), 1),
+            line(super::rows::head(w, first), &rows, &|v| v, 3),
+            line(
+                format!("{}, {mm}", w.word(K::Ray)),
+                &rows,
+                &|v| mu.to_mm(v),
+                1,
+            ),
+        ]);
         let mut header = vec![text(w.word(T::PositionShort))];
         header.extend(rows.iter().filter_map(|r| r.position()).map(|p| text(&p)));
         let mut align = vec![Align::Left];
@@ -301,4 +331,44 @@ pub(super) fn hodograph(w: &mut Writer<'_, '_>, kin: &Kinematics) {
         |own| own.starts_with(word),
         |own| own.to_string(),
     );
+}
+
+/// The charted point's link's point farthest from the fixed pivot the link turns about
+/// (the rocker's end D for S₃): the seed lays off its segment first and the point's by
+/// similarity, ps₃ = pd·CS₃/CD.
+struct FarPoint {
+    /// The far point's name as the report writes it (`D`).
+    far: String,
+    /// The pivot-to-point and pivot-to-far-point names (`CS3`, `CD`).
+    near_len: String,
+    far_len: String,
+}
+
+/// [`FarPoint`] of the charted `point` (as the report writes it), when its link turns about
+/// a fixed pivot and has a point beyond it.
+fn far_point(p: &Plans<'_>, point: &str, lang: crate::scale::Lang) -> Option<FarPoint> {
+    let reach = |x: &crate::linkage::LinkPoint| x.along.hypot(x.across);
+    let own = p.m.points.iter().find(|x| plain(&x.name) == point)?;
+    let pivot = super::plan_worked::fixed_pivot(p, own.link, lang)?;
+    let far =
+        p.m.points
+            .iter()
+            .filter(|x| x.link == own.link && reach(x) > reach(own))
+            .max_by(|a, b| reach(a).total_cmp(&reach(b)))?;
+    let pivot = plain(&pivot);
+    Some(FarPoint {
+        far: plain(&far.name),
+        near_len: format!("{pivot}{point}"),
+        far_len: format!("{pivot}{}", plain(&far.name)),
+    })
+}
+
+/// A name with its trailing digits as the label's subscript: `ps3` → `ps_{3}`, `CS3` →
+/// `CS_{3}`.
+fn indexed(name: &str) -> String {
+    let head = name.trim_end_matches(|c: char| c.is_ascii_digit());
+    match &name[head.len()..] {
+        "" => name.to_string(),
+        digits => format!("{head}_{{{digits}}}"),
+    }
 }

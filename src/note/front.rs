@@ -193,11 +193,11 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         (PlateKind::Cam, T::CamSection),
         (PlateKind::Balancing, T::BalancingSection),
     ] {
-        if w.sheet_data(kind, true).is_empty() {
+        if w.sheet_data(kind, super::DataPart::Inputs).is_empty() {
             continue;
         }
         w.doc.par(&[text(&format!("{}:", w.word(title)))]);
-        w.data_list(kind, true);
+        w.data_list(kind, super::DataPart::Inputs);
     }
 }
 

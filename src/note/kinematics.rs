@@ -142,7 +142,7 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     super::plans::velocities(w, &plans)?;
     super::plans::accelerations(w, &plans)?;
     super::diagrams::diagrams(w, &kin, at.as_deref());
-    super::diagrams::hodograph(w, &kin);
+    super::diagrams::hodograph(w, &plans);
     super::analytic::analytic(w, at.as_deref(), kin.w1)?;
     Ok(())
 }

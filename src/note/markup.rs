@@ -217,19 +217,28 @@ pub(super) fn inline(math: &str) -> String {
     format!("${math}$")
 }
 
-/// A table's header cell with its first letter capital (ГОСТ 2.105), when it starts with
-/// text (`[#"величина"]` → `[#"Величина"]`); a formula or a symbol as it is.
+/// A table's header or row-head cell with its first letter capital (ГОСТ 2.105), when it
+/// starts with a word (`[#"величина"]` → `[#"Величина"]`); a formula or a symbol (`dS/dφ`,
+/// `x₁`, `pd`) as it is: a word is two or more Cyrillic or three or more Latin letters, all
+/// small.
 fn capitalised(cell: &str) -> String {
     let Some(rest) = cell.strip_prefix("[#\"") else {
         return cell.to_string();
     };
-    let mut chars = rest.chars();
-    match chars.next() {
-        Some(c) if c.is_lowercase() && rest.chars().nth(1).is_some_and(char::is_alphabetic) => {
-            format!("[#\"{}{}", c.to_uppercase(), chars.as_str())
-        }
-        _ => cell.to_string(),
+    let word: Vec<char> = rest.chars().take_while(|c| c.is_alphabetic()).collect();
+    // Two Latin letters are a segment of a plan (`pd`), two Cyrillic ones a word (`ед.`).
+    let cyrillic = word.iter().all(|c| ('\u{400}'..='\u{4ff}').contains(c));
+    let least = if cyrillic { 2 } else { 3 };
+    if word.len() < least || !word.iter().all(|c| c.is_lowercase()) {
+        return cell.to_string();
     }
+    let mut chars = rest.chars();
+    let first = chars.next().map(char::to_uppercase);
+    format!(
+        "[#\"{}{}",
+        first.into_iter().flatten().collect::<String>(),
+        chars.as_str()
+    )
 }
 
 /// The left side of the Typst math `math`: up to its first `=` outside brackets and strings.
@@ -352,6 +361,10 @@ impl Markup {
         for row in rows {
             let mut cells: Vec<String> = row.iter().take(columns).cloned().collect();
             cells.resize(columns, "[]".into());
+            // A row's head capital too (ГОСТ 2.105: the heads of columns and rows).
+            if let Some(head) = cells.first_mut() {
+                *head = capitalised(head);
+            }
             t.push_str("  ");
             t.push_str(&cells.join(", "));
             t.push_str(",\n");
@@ -459,6 +472,9 @@ mod tests {
         // A symbol of one letter, a formula: as they are.
         assert_eq!(capitalised(r##"[#"x"#sub("1")]"##), r##"[#"x"#sub("1")]"##);
         assert_eq!(capitalised("$a$"), "$a$");
+        assert_eq!(capitalised(r#"[#"dS/dφ, м"]"#), r#"[#"dS/dφ, м"]"#);
+        assert_eq!(capitalised(r#"[#"pd, мм"]"#), r#"[#"pd, мм"]"#);
+        assert_eq!(capitalised(r#"[#"луч, мм"]"#), r#"[#"Луч, мм"]"#);
     }
 
     #[test]

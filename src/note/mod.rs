@@ -179,12 +179,19 @@ impl Writer<'_, '_> {
     }
 }
 
+/// The part of a sheet's data block: the task's data, or the results the sheet adds.
+#[derive(Clone, Copy)]
+enum DataPart {
+    Inputs,
+    Results,
+}
+
 impl Writer<'_, '_> {
     /// The lines of the data blocks (headed «Исходные данные», «… и результаты») of the
     /// sheets of `kind`, as the sheets print them (label markup), without their heading and
-    /// the drafting remark; with `inputs_only`, up to the block's first blank line (the data
-    /// before the results).
-    fn sheet_data(&self, kind: PlateKind, inputs_only: bool) -> Vec<String> {
+    /// the drafting remark: the block's `part`, the data before its first blank line or the
+    /// results after it.
+    fn sheet_data(&self, kind: PlateKind, part: DataPart) -> Vec<String> {
         let heads = [
             Text::Data.get(self.lang),
             GearText::DataAndResults.get(self.lang),
@@ -202,10 +209,16 @@ impl Writer<'_, '_> {
                 if !heads.contains(&head.as_str()) {
                     continue;
                 }
+                let blank = lines
+                    .iter()
+                    .position(|l| l.trim().is_empty())
+                    .unwrap_or(lines.len());
+                let (inputs, results) = lines.split_at(blank);
+                let lines = match part {
+                    DataPart::Inputs => inputs,
+                    DataPart::Results => results,
+                };
                 for line in lines {
-                    if line.trim().is_empty() && inputs_only {
-                        break;
-                    }
                     if line.trim().is_empty() || remarks.iter().any(|r| line.starts_with(r)) {
                         continue;
                     }
@@ -218,9 +231,9 @@ impl Writer<'_, '_> {
         out
     }
 
-    /// The data blocks of the sheets of `kind` ([`Self::sheet_data`]) as a list.
-    fn data_list(&mut self, kind: PlateKind, inputs_only: bool) {
-        let lines = self.sheet_data(kind, inputs_only);
+    /// [`Self::sheet_data`] as a list.
+    fn data_list(&mut self, kind: PlateKind, part: DataPart) {
+        let lines = self.sheet_data(kind, part);
         for line in lines {
             self.doc.raw(&format!("- #{}", markup::label(&line)));
         }

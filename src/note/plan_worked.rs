@@ -8,6 +8,7 @@ use super::markup::{frac, num, sym, unit};
 use super::plans::{explain_one, segment, Plans};
 use super::Writer;
 use crate::check::Symbol;
+use crate::scale::Lang;
 use crate::sheets::captions::{
     unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T,
 };
@@ -37,8 +38,7 @@ pub(super) fn similarity(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
     for g in &p.s.groups {
         for e in velocity_equations(g, lang) {
             let (point, pivot) = &e.names;
-            let fixed = p.m.fixed.iter().any(|f| f.name == *pivot);
-            if e.relative != Relative::Turn || !fixed {
+            if !turns_about_fixed(p, &e) {
                 continue;
             }
             let image = plan
@@ -93,6 +93,22 @@ pub(super) fn similarity(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
             (&ob_name, w.word(M::DrawnSegment), "mm"),
         ]);
     }
+}
+
+/// Whether `e` is the turn of its link about a fixed pivot: the similarity of its further
+/// points holds about the pole.
+fn turns_about_fixed(p: &Plans<'_>, e: &Equation) -> bool {
+    e.relative == Relative::Turn && p.m.fixed.iter().any(|f| f.name == e.names.1)
+}
+
+/// The fixed pivot link `link` turns about, when a group turns it about one: the
+/// mechanism's name (`C`).
+pub(super) fn fixed_pivot(p: &Plans<'_>, link: u32, lang: Lang) -> Option<String> {
+    p.s.groups
+        .iter()
+        .flat_map(|g| velocity_equations(g, lang))
+        .find(|e| e.link == link && turns_about_fixed(p, e))
+        .map(|e| e.names.1)
 }
 
 /// The rates of the links turning in a group at the worked position: ω = V/l from the

@@ -22,6 +22,31 @@ const ERRATA: &[(&str, Option<f64>, &str)] = &[
     ("0,238 м", None, "§000.11 the arm h of R₀₋₅ (its own expression gives 0.2833 m; with the full loads farther still, no figure)"),
     ("17,1 кг·м²", Some(25.52), "§000.14 the flywheel (the energy equation: 25.52)"),
     ("1,22", Some(1.155), "§000.13 ε_α by cos α_w"),
+    ("0,92 м", Some(0.4602), "§000.4 Table 1, S in m twice the travel (μ_s = 0.005 for 0.0025)"),
+    ("0,5 м/с", Some(0.546), "§000.9 Table 5, V_B3B1(4) = −0.5 (−0.546)"),
+    ("4,485 м/с", Some(4.538), "§000.10 Table 8, V_S5(9) = 4.485 (4.538, a transposition)"),
+    ("5,307 Н·м", Some(2.152), "§000.12 Table 9, i = 8 inherits β₃ = 222.6° (2.152)"),
+    ("164,944 Н·м", Some(195.04), "§000.12 the worked example for i = 5 (−195.04)"),
+    ("40 мм", Some(69.86), "§000 verdicts: R_min = 40 mm (the γ ≥ 60° minimum 69.86)"),
+];
+
+/// Errata that are the cause of another's wrong result, each named in that erratum's
+/// reason: (what the reason must say, the cases' section).
+const CAUSES: &[(&str, &str)] = &[
+    ("CB = 263 мм", "§000.6 CB = 263 (225.7) behind ns₃ = 37"),
+    ("225,7 мм", "§000.6 CB on the plan"),
+    (
+        "1,75²/(212·0,005) = 2,9",
+        "§000.6 a^n_B3C with μ 0.005 for 0.0025",
+    ),
+    ("5,71", "§000.6 a^n_B3C exact"),
+    (
+        "H = 187·0,005 = 0,93 м",
+        "§000.4 the stroke S = 0.93 m (L196)",
+    ),
+    ("0,4623 м", "§000.4 the true stroke"),
+    ("222,6° вместо 252,65°", "§000.10 β₃(8) = 222.6 (252.65)"),
+    ("3,973, а не 3,4", "§000.12 Table 10's worked example"),
 ];
 
 /// The number after `word` in `text` (the note's decimal comma).
@@ -64,6 +89,12 @@ fn the_shapers_conclusions_give_every_erratum_of_seed_000_with_its_exact_value()
         assert!(
             (given - exact).abs() <= 0.01 * exact,
             "{what}: the note's exact value {given}, the cases' {exact}"
+        );
+    }
+    for &(said, what) in CAUSES {
+        assert!(
+            errata.contains(said),
+            "{what}: no «{said}» in the conclusions"
         );
     }
 }
