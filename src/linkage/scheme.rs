@@ -32,11 +32,13 @@ fn bounds_from(rec: &Recorder, start: usize) -> (DVec2, DVec2) {
 
 /// Draw the structural scheme of `prog` from its constructed position 1 (`first`, at μ_l =
 /// `plan_mu`) at the scale `scale`: the whole mechanism with its link numbers and the frame's
-/// guides, and to its right the class-I mechanism and each Assur group drawn apart (their
-/// outer pairs free), captioned with the terms of the structure formula.
+/// guides, and to its right, given the structure `st`, the class-I mechanism and each Assur
+/// group drawn apart (their outer pairs free), captioned with the terms of the structure
+/// formula; without `st`, the kinematic scheme alone (a task gives the mechanism whole: its
+/// groups are the student's to find).
 pub fn structure_figure(
     prog: &Program,
-    st: &Structure,
+    st: Option<&Structure>,
     first: &Built,
     plan_mu: f64,
     scale: Scale,
@@ -64,6 +66,9 @@ pub fn structure_figure(
         );
     }
     number_links(&mut rec, &anchors);
+    let Some(st) = st else {
+        return rec.finish();
+    };
     let (_, hi0) = bounds_from(&rec, 0);
     let mut x = hi0.x + 2.0 * GAP_MM;
     let parts = std::iter::once((Part::Driver, format!("I(0,{})", st.crank_link))).chain(
@@ -123,7 +128,7 @@ impl super::positions::PositionPlan {
     /// [`structure_figure`]) from the position that shows its links best: not an extreme
     /// position (where a crank and its rocker or slot fold into line), and of those the one
     /// whose construction crossed at the widest angle (first on a tie).
-    pub fn scheme(&self, st: &Structure, scale: Scale, ctx: &Context) -> Figure {
+    pub fn scheme(&self, st: Option<&Structure>, scale: Scale, ctx: &Context) -> Figure {
         let plan_mu = self.figure.scale.value();
         let openness = |p: &&super::positions::PlanPosition| {
             p.built

@@ -2,13 +2,10 @@
 //! data, the title page, the contents, the task, the conclusions and the references.
 
 use super::markup::{label, string, text, Align};
-use super::rows::fmt;
 use super::Writer;
-use crate::gears::GearsSpec;
 use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::sheets::captions::{unit_in, NoteText as T, Text as S};
-use crate::sheets::data::mm;
 
 /// The page rules (`template.typ`) after the title block's data.
 pub(super) fn preamble(w: &mut Writer<'_, '_>) {
@@ -172,7 +169,7 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
     }
     if let Some(g) = &scene.gears {
         let caption = w.word(T::GearsData);
-        table_of_data(w, caption, &gears_data(g, w.lang));
+        table_of_data(w, caption, &crate::sheets::data::gears(g, w.lang));
     }
     // The friction's cases, each as its sheet names it.
     if !scene.friction.is_empty() {
@@ -199,63 +196,6 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         w.doc.par(&[text(&format!("{}:", w.word(title)))]);
         w.data_list(kind, super::DataPart::Inputs);
     }
-}
-
-/// Symbol, value and unit of the gear pair, the wheels cut by the rack and the train's
-/// wheels, each part under its name.
-fn gears_data(g: &GearsSpec, lang: Lang) -> Vec<(String, String, String)> {
-    let mut rows = Vec::new();
-    let one = |s: &str, x: f64| (s.to_string(), fmt(x, 5, lang), String::new());
-    let part = |t: T| (t.get(lang).to_string(), String::new(), String::new());
-    if let Some(p) = &g.pair {
-        rows.push(part(T::PairPart));
-        rows.push(("m".into(), mm(p.module, lang), "mm".into()));
-        for i in 0..2 {
-            rows.push(one(&format!("z_{{{}}}", i + 1), f64::from(p.z[i])));
-            rows.push(one(&format!("x_{{{}}}", i + 1), p.x[i]));
-        }
-        rows.push((
-            "α".into(),
-            fmt(p.rack.alpha.to_degrees(), 4, lang),
-            "deg".into(),
-        ));
-        rows.push(one("h^{*}_{a}", p.rack.ha));
-        rows.push(one("c^{*}", p.rack.c));
-    }
-    for r in &g.racks {
-        rows.push(part(T::RackCutPart));
-        rows.push(("m".into(), mm(r.cutting.module, lang), "mm".into()));
-        rows.push(one(&format!("z_{{{}}}", r.name), f64::from(r.cutting.z)));
-        rows.push(one(&format!("x_{{{}}}", r.name), r.cutting.x));
-    }
-    if let Some(t) = &g.planetary {
-        rows.push(part(if t.train.second.is_some() {
-            T::DifferentialPart
-        } else {
-            T::TrainPart
-        }));
-        rows.push(("m".into(), mm(t.train.module, lang), "mm".into()));
-        for wheel in &t.train.wheels {
-            rows.push(one(&format!("z_{{{}}}", wheel.name), wheel.z));
-        }
-        if let Some(k) = t.satellites {
-            rows.push(one("k", f64::from(k)));
-        }
-        let tr = &t.train;
-        // The inputs' speeds (a differential's two), the required output speed.
-        let second = tr.second.map(|(k, w)| (k, t.n_input.map(|n| n * w)));
-        let speeds = [(tr.input, t.n_input)]
-            .into_iter()
-            .chain(second)
-            .chain([(tr.output, t.n_output)]);
-        for (shaft, n) in speeds {
-            if let Some(n) = n {
-                let s = format!("n_{{{}}}", tr.shafts[shaft]);
-                rows.push((s, fmt(n, 5, lang), "rpm".into()));
-            }
-        }
-    }
-    rows
 }
 
 /// A table of data: symbol, value, unit.

@@ -45,7 +45,8 @@ use crate::check::Report;
 use crate::plate::{self, Plate};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{GearText, NoteText, Text, Word};
+use crate::sheets::captions::{NoteText, Word};
+use crate::sheets::data::{data_block, DataPart};
 use crate::sheets::{self, BuildError};
 use crate::study::{Session, StudyError};
 use markup::Markup;
@@ -179,56 +180,15 @@ impl Writer<'_, '_> {
     }
 }
 
-/// The part of a sheet's data block: the task's data, or the results the sheet adds.
-#[derive(Clone, Copy)]
-enum DataPart {
-    Inputs,
-    Results,
-}
-
 impl Writer<'_, '_> {
-    /// The lines of the data blocks (headed «Исходные данные», «… и результаты») of the
-    /// sheets of `kind`, as the sheets print them (label markup), without their heading and
-    /// the drafting remark: the block's `part`, the data before its first blank line or the
-    /// results after it.
+    /// The lines of the data blocks of the sheets of `kind` ([`data_block`]).
     fn sheet_data(&self, kind: PlateKind, part: DataPart) -> Vec<String> {
-        let heads = [
-            Text::Data.get(self.lang),
-            GearText::DataAndResults.get(self.lang),
-        ];
-        let remarks = [
-            Text::ReadExactly.get(self.lang),
-            Text::ReadTo.get(self.lang),
-        ];
-        let mut out = Vec::new();
-        for (_, p) in self.sheets.iter().filter(|(k, _)| *k == kind) {
-            for block in &p.texts {
-                let Some((head, lines)) = block.lines.split_first() else {
-                    continue;
-                };
-                if !heads.contains(&head.as_str()) {
-                    continue;
-                }
-                let blank = lines
-                    .iter()
-                    .position(|l| l.trim().is_empty())
-                    .unwrap_or(lines.len());
-                let (inputs, results) = lines.split_at(blank);
-                let lines = match part {
-                    DataPart::Inputs => inputs,
-                    DataPart::Results => results,
-                };
-                for line in lines {
-                    if line.trim().is_empty() || remarks.iter().any(|r| line.starts_with(r)) {
-                        continue;
-                    }
-                    if !out.contains(line) {
-                        out.push(line.clone());
-                    }
-                }
-            }
-        }
-        out
+        let plates = self
+            .sheets
+            .iter()
+            .filter(|(k, _)| *k == kind)
+            .map(|(_, p)| p);
+        data_block(plates, part, self.lang)
     }
 
     /// [`Self::sheet_data`] as a list.

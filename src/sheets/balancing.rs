@@ -49,7 +49,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     ));
     let mut lines = data_lines(&b, lang);
     lines.push(String::new());
-    lines.push(super::drafting_line(session.drafting(), lang));
+    lines.push(super::drafting_line(
+        session.drafting(),
+        super::Errs::Rounding,
+        lang,
+    ));
     blocks.push(Block::Text {
         lines,
         size_mm: TEXT_MM,

@@ -42,7 +42,11 @@ pub(super) fn build(
     let drawings = blocks.len();
     let mut lines = data_lines(cam, lang).map_err(study)?;
     lines.push(String::new());
-    lines.push(super::drafting_line(session.drafting(), lang));
+    lines.push(super::drafting_line(
+        session.drafting(),
+        super::Errs::Diagrams,
+        lang,
+    ));
     blocks.push(Block::Text {
         lines,
         size_mm: TEXT_MM,

@@ -3,8 +3,11 @@
 //! inertia, working resistances). One place for the note's task tables and the task sheet
 //! of `tmm batch`.
 
+use super::captions::{GearText, NoteText, Text};
 use crate::forces::{Action, ForceSpec};
+use crate::gears::GearsSpec;
 use crate::linkage::{Dyad, Mechanism};
+use crate::plate::Plate;
 use crate::report::md_value as fmt;
 use crate::scale::Lang;
 
@@ -142,6 +145,63 @@ pub fn forces(f: &ForceSpec, lang: Lang) -> Vec<DataRow> {
     rows
 }
 
+/// Symbol, value and unit of the gear pair, the wheels cut by the rack and the train's
+/// wheels, each part under its name.
+pub fn gears(g: &GearsSpec, lang: Lang) -> Vec<DataRow> {
+    let mut rows = Vec::new();
+    let one = |s: &str, x: f64| (s.to_string(), fmt(x, 5, lang), String::new());
+    let part = |t: NoteText| (t.get(lang).to_string(), String::new(), String::new());
+    if let Some(p) = &g.pair {
+        rows.push(part(NoteText::PairPart));
+        rows.push(("m".into(), mm(p.module, lang), "mm".into()));
+        for i in 0..2 {
+            rows.push(one(&format!("z_{{{}}}", i + 1), f64::from(p.z[i])));
+            rows.push(one(&format!("x_{{{}}}", i + 1), p.x[i]));
+        }
+        rows.push((
+            "α".into(),
+            fmt(p.rack.alpha.to_degrees(), 4, lang),
+            "deg".into(),
+        ));
+        rows.push(one("h^{*}_{a}", p.rack.ha));
+        rows.push(one("c^{*}", p.rack.c));
+    }
+    for r in &g.racks {
+        rows.push(part(NoteText::RackCutPart));
+        rows.push(("m".into(), mm(r.cutting.module, lang), "mm".into()));
+        rows.push(one(&format!("z_{{{}}}", r.name), f64::from(r.cutting.z)));
+        rows.push(one(&format!("x_{{{}}}", r.name), r.cutting.x));
+    }
+    if let Some(t) = &g.planetary {
+        rows.push(part(if t.train.second.is_some() {
+            NoteText::DifferentialPart
+        } else {
+            NoteText::TrainPart
+        }));
+        rows.push(("m".into(), mm(t.train.module, lang), "mm".into()));
+        for wheel in &t.train.wheels {
+            rows.push(one(&format!("z_{{{}}}", wheel.name), wheel.z));
+        }
+        if let Some(k) = t.satellites {
+            rows.push(one("k", f64::from(k)));
+        }
+        let tr = &t.train;
+        // The inputs' speeds (a differential's two), the required output speed.
+        let second = tr.second.map(|(k, w)| (k, t.n_input.map(|n| n * w)));
+        let speeds = [(tr.input, t.n_input)]
+            .into_iter()
+            .chain(second)
+            .chain([(tr.output, t.n_output)]);
+        for (shaft, n) in speeds {
+            if let Some(n) = n {
+                let s = format!("n_{{{}}}", tr.shafts[shaft]);
+                rows.push((s, fmt(n, 5, lang), "rpm".into()));
+            }
+        }
+    }
+    rows
+}
+
 /// The point a link's frame starts at (its outer pivot), for the distances of its points.
 fn link_origin(m: &Mechanism, link: u32) -> Option<String> {
     if link == m.crank.link {
@@ -165,4 +225,51 @@ fn link_origin(m: &Mechanism, link: u32) -> Option<String> {
 /// A point's name without its markup (`S_3` → `S3`).
 pub(crate) fn plain(name: &str) -> String {
     name.replace(['_', '{', '}'], "")
+}
+
+/// The part of a sheet's data block: the task's data, or the results the sheet adds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DataPart {
+    /// The lines before the block's first blank line.
+    Inputs,
+    /// The lines after it.
+    Results,
+}
+
+/// The lines of the data blocks (headed «Исходные данные», «… и результаты») of `plates`,
+/// as the sheets print them (label markup), without their heading and the drafting remark:
+/// each block's `part`, the data before its first blank line or the results after it; a
+/// line that several sheets print, once.
+pub fn data_block<'p>(
+    plates: impl IntoIterator<Item = &'p Plate>,
+    part: DataPart,
+    lang: Lang,
+) -> Vec<String> {
+    let heads = [Text::Data.get(lang), GearText::DataAndResults.get(lang)];
+    let remarks = [Text::ReadExactly.get(lang), Text::ReadTo.get(lang)];
+    let mut out: Vec<String> = Vec::new();
+    for block in plates.into_iter().flat_map(|p| &p.texts) {
+        let Some((head, lines)) = block.lines.split_first() else {
+            continue;
+        };
+        if !heads.contains(&head.as_str()) {
+            continue;
+        }
+        let blank = lines
+            .iter()
+            .position(|l| l.trim().is_empty())
+            .unwrap_or(lines.len());
+        let (inputs, results) = lines.split_at(blank);
+        let lines = match part {
+            DataPart::Inputs => inputs,
+            DataPart::Results => results,
+        };
+        for line in lines {
+            let remark = remarks.iter().any(|r| line.starts_with(r));
+            if !line.trim().is_empty() && !remark && !out.contains(line) {
+                out.push(line.clone());
+            }
+        }
+    }
+    out
 }

@@ -104,7 +104,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }
     let mut lines = data_lines(&d, lang);
     lines.push(String::new());
-    lines.push(super::drafting_line(session.drafting(), lang));
+    lines.push(super::drafting_line(
+        session.drafting(),
+        super::Errs::Diagrams,
+        lang,
+    ));
     blocks.push(Block::Text {
         lines,
         size_mm: TEXT_MM,

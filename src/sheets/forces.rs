@@ -176,7 +176,7 @@ fn position_sheet(
     };
     let mut lines = vec![
         title("φ_{1}"),
-        super::drafting_line(session.drafting(), lang),
+        super::drafting_line(session.drafting(), super::Errs::Plans, lang),
     ];
     lines.extend(balance_lines(&f.rows, lang));
     blocks.push(Block::Text {

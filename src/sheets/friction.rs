@@ -343,7 +343,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let scene = session.scene();
     let solved = session.friction()?;
     let mut blocks = Vec::new();
-    let mut text = vec![super::drafting_line(session.drafting(), lang)];
+    let mut text = vec![super::drafting_line(
+        session.drafting(),
+        super::Errs::Plans,
+        lang,
+    )];
     for (n, s) in solved.iter().enumerate() {
         for d in &s.drawings {
             let key = d.scaled.then_some(ScaleKey {

@@ -6,7 +6,9 @@
 //! the textbook's choices, and names them in its lines. A1 landscape.
 
 use super::captions::{unit_in, GearText, Text};
-use super::layout::{lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey};
+use super::layout::{
+    drawn_value, lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey,
+};
 use super::BuildError;
 use crate::check::Row;
 use crate::gears::DETAIL_LETTER;
@@ -226,7 +228,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }
     blocks.append(&mut details);
     lines.push(String::new());
-    lines.push(super::drafting_line(session.drafting(), lang));
+    lines.push(super::drafting_line(
+        session.drafting(),
+        super::Errs::Rounding,
+        lang,
+    ));
     blocks.push(Block::Text {
         lines,
         size_mm: TEXT_MM,
@@ -270,9 +276,19 @@ fn view(
     Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))
 }
 
+/// The unit a row's value is written in and its factor from SI: a length in mm, one under
+/// 0,01 mm (a deviation from the exact envelope) in µm; an angle in degrees.
+fn table_unit(r: &Row) -> (&'static str, f64) {
+    match r.key.symbol.unit() {
+        "m" if r.graphical.abs().max(r.analytic.abs()) < 1e-5 => ("um", 1e6),
+        "m" => ("mm", 1e3),
+        "deg" => ("deg", 1.0),
+        _ => ("", 1.0),
+    }
+}
+
 /// The table graphical | analytic | error of the rows (lengths in mm).
 fn table(rows: &[Row], lang: Lang) -> TableBlock {
-    let mm = |r: &Row| r.key.symbol.unit() == "m";
     results_table(
         &Results {
             title: Text::GraphicalAndAnalytic.get(lang).into(),
@@ -285,13 +301,12 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
                 (Column::Error, 16.0),
             ],
             name: &|r| quantity(r, lang),
-            unit: &|r| match r.key.symbol.unit() {
-                "m" => unit_in("mm", lang),
-                "deg" => unit_in("deg", lang),
-                _ => String::new(),
+            unit: &|r| match table_unit(r).0 {
+                "" => String::new(),
+                u => unit_in(u, lang),
             },
-            value: &|r, x, _| format_sig(if mm(r) { x * 1e3 } else { x }, 7, lang),
-            error_decimals: 4,
+            value: &|r, x, _| drawn_value(r, x, table_unit(r).1, lang),
+            error_decimals: 3,
             size_mm: TABLE_MM,
         },
         rows,

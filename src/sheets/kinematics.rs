@@ -59,7 +59,11 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
         (Vec::new(), Vec::new())
     };
     let mut lines = vec![
-        super::drafting_line(session.drafting(), lang),
+        super::drafting_line(
+            session.drafting(),
+            super::Errs::of(true, a.diagrams.is_some()),
+            lang,
+        ),
         format!(
             "{}: {}; {}: {}",
             Text::VelocityPlans.get(lang),

@@ -337,6 +337,22 @@ pub(super) fn quantity(r: &Row, lang: Lang) -> String {
     }
 }
 
+/// A value of a results table's row to the precision a drawing table gives: four
+/// significant digits of the row's larger value (`factor` its unit from SI), the same
+/// decimals for its graphical and its analytic value.
+pub(super) fn drawn_value(r: &Row, x: f64, factor: f64, lang: Lang) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let reference = r.graphical.abs().max(r.analytic.abs()) * factor;
+    let decimals = if reference > 0.0 && reference.is_finite() {
+        (3 - reference.log10().floor() as i32).clamp(0, 6) as usize
+    } else {
+        0
+    };
+    format_fixed(x * factor, decimals, lang)
+}
+
 /// The table "graphical | analytic | error" of `rows`, the columns as `results` asks.
 pub(super) fn results_table(results: &Results<'_>, rows: &[Row], lang: Lang) -> TableBlock {
     let errors = crate::check::rel_errors(rows);

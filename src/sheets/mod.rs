@@ -132,8 +132,44 @@ fn gost_scale(plan: Scale, lang: Lang) -> String {
     }
 }
 
-/// The line that states how lengths were read off the drawing (the drafting model).
-fn drafting_line(d: crate::construct::Drafting, lang: Lang) -> String {
+/// What a sheet's graphical values err by when its lengths are read exactly: the sheet's
+/// own constructions, so that a gear or rotor sheet does not speak of plans and diagrams.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Errs {
+    /// Plans (velocity, acceleration, force) and diagrams by the method of chords.
+    PlansAndChords,
+    /// Plans only.
+    Plans,
+    /// Diagrams by the method of chords only.
+    Diagrams,
+    /// Drawn lengths, rounded.
+    Rounding,
+}
+
+impl Errs {
+    /// The sheet's plans and whether it has diagrams.
+    pub(crate) fn of(plans: bool, diagrams: bool) -> Self {
+        match (plans, diagrams) {
+            (true, true) => Self::PlansAndChords,
+            (true, false) => Self::Plans,
+            (false, true) => Self::Diagrams,
+            (false, false) => Self::Rounding,
+        }
+    }
+
+    fn word(self) -> captions::Text {
+        match self {
+            Self::PlansAndChords => captions::Text::ErrPlansAndChords,
+            Self::Plans => captions::Text::ErrPlans,
+            Self::Diagrams => captions::Text::ErrDiagrams,
+            Self::Rounding => captions::Text::ErrRounding,
+        }
+    }
+}
+
+/// The line that states how lengths were read off the drawing (the drafting model), and
+/// when exactly, what the sheet's values err by (`errs`).
+fn drafting_line(d: crate::construct::Drafting, errs: Errs, lang: Lang) -> String {
     let r = d.resolution_mm();
     if r > 0.0 {
         format!(
@@ -143,7 +179,11 @@ fn drafting_line(d: crate::construct::Drafting, lang: Lang) -> String {
             captions::Text::Millimetre.get(lang)
         )
     } else {
-        captions::Text::ReadExactly.get(lang).to_string()
+        format!(
+            "{}: {}",
+            captions::Text::ReadExactly.get(lang),
+            errs.word().get(lang)
+        )
     }
 }
 

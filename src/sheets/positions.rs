@@ -31,7 +31,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     );
     let (scheme, mut lines) = structure(session, lang)?;
     lines.push(String::new());
-    lines.push(super::drafting_line(session.drafting(), lang));
+    lines.push(super::drafting_line(
+        session.drafting(),
+        super::Errs::Rounding,
+        lang,
+    ));
     let blocks = vec![
         scheme,
         Block::view(
@@ -62,27 +66,36 @@ pub(super) fn structure(
     let scale = session.scale_l()?;
     let plan = session.positions(scale)?;
     let st = Structure::analyse(m);
-    let extent = plan
-        .figure
-        .bounds()
-        .map_or(1.0, |(lo, hi)| (hi - lo).max_element())
-        * scale.value();
     let mut lines = structure_lines(&st, m, lang);
     let extremes = extreme_lines(&plan, lang);
     if !extremes.is_empty() {
         lines.push(String::new());
         lines.extend(extremes);
     }
-    Ok((scheme_block(&plan, &st, extent, lang)?, lines))
+    Ok((scheme_block(&plan, Some(&st), lang)?, lines))
 }
 
-/// The structural scheme at the finest round scale whose drawing fits its room.
+/// The kinematic scheme of the session's mechanism as a task gives it: the mechanism whole
+/// with its link numbers, not yet split into its Assur groups.
+pub(super) fn kinematic_scheme(session: &Session<'_>, lang: Lang) -> Result<Block, BuildError> {
+    let scale = session.scale_l()?;
+    let plan = session.positions(scale)?;
+    scheme_block(&plan, None, lang)
+}
+
+/// The structural scheme (the kinematic scheme without `st`) at the finest round scale
+/// whose drawing fits its room.
 fn scheme_block(
     plan: &PositionPlan,
-    st: &Structure,
-    extent: f64,
+    st: Option<&Structure>,
     lang: Lang,
 ) -> Result<Block, BuildError> {
+    // The plan's extent, m.
+    let extent = plan
+        .figure
+        .bounds()
+        .map_or(1.0, |(lo, hi)| (hi - lo).max_element())
+        * plan.figure.scale.value();
     let ctx = Context::for_model_size(SCHEME_MM, Drafting::EXACT)
         .map_err(|e| BuildError::Tolerances(e.to_string()))?;
     let scheme = |s: Scale| plan.scheme(st, s, &ctx);
@@ -94,11 +107,11 @@ fn scheme_block(
         overflow(size, SCHEME_ROOM)
     })
     .ok_or(BuildError::NoScale(extent))?;
-    let caption = format!(
-        "{}, {}",
-        Text::StructuralScheme.get(lang),
-        s_scale.caption(lang)
-    );
+    let name = match st {
+        Some(_) => Text::StructuralScheme,
+        None => Text::KinematicScheme,
+    };
+    let caption = format!("{}, {}", name.get(lang), s_scale.caption(lang));
     // The caption under the grounds of the fixed pivots, not over their hatching.
     Ok(Block::view(scheme(s_scale), caption, None).clear_of_symbols())
 }

@@ -254,3 +254,56 @@ fn an_answer_key_naming_a_row_the_report_lacks_is_refused() {
     );
     assert!(!out.exists());
 }
+
+/// Issue 45: the task sheet a batch hands out draws the mechanism whole — its Assur groups
+/// are the student's to find — and carries every datum the project's sheets need: the
+/// shaper's gears (the pair's z and x, the train's wheels), the cam's phases and the
+/// machine's ω_ср and δ, with the scene's own values.
+#[test]
+fn the_task_sheet_gives_the_scheme_whole_and_every_datum() {
+    use tmm::scale::Lang;
+    let scene =
+        tmm::load(&crate::support::root().join("constructions/shaper.toml")).expect("scene");
+    let session = tmm::Session::new(&scene, tmm::Drafting::EXACT);
+    let sheets = tmm::sheets::task_sheet(&session, "07", Lang::Ru).expect("task sheet");
+    assert_eq!(sheets.len(), 1);
+    let p = &sheets[0];
+    let mut texts: Vec<String> = p.views.iter().filter_map(|v| v.caption.clone()).collect();
+    for v in &p.views {
+        texts.extend(
+            v.figure
+                .steps
+                .iter()
+                .filter_map(|s| s.label.as_ref().map(|l| l.text.clone())),
+        );
+    }
+    texts.extend(p.texts.iter().flat_map(|t| t.lines.iter().cloned()));
+    let all = texts.join("\n");
+    // The scheme whole: its caption, no group of the decomposition.
+    assert!(all.contains("Кинематическая схема"), "{all}");
+    assert!(!all.contains("II(2,3)") && !all.contains("I(0,1)"), "{all}");
+    // The gears' tables by part, with the scene's numbers.
+    let titles: Vec<&str> = p.tables.iter().map(|t| t.title.as_str()).collect();
+    assert!(titles.contains(&"Зубчатая пара"), "{titles:?}");
+    assert!(titles.contains(&"Планетарный редуктор"), "{titles:?}");
+    let pair = p
+        .tables
+        .iter()
+        .find(|t| t.title == "Зубчатая пара")
+        .expect("pair");
+    let value = |s: &str| {
+        pair.rows
+            .iter()
+            .find(|r| r[0] == s)
+            .map(|r| r[1].clone())
+            .unwrap_or_default()
+    };
+    assert_eq!(
+        (value("z_{1}"), value("x_{1}"), value("x_{2}")),
+        ("13".into(), "0,8".into(), "0,471".into())
+    );
+    // The cam's phases and the machine's ω_ср, δ.
+    assert!(all.contains("φ_{у} = 113,6°"), "{all}");
+    assert!(all.contains("ω_{ср} = 15,7"), "{all}");
+    assert!(all.contains("δ = 0,06667"), "{all}");
+}

@@ -95,13 +95,15 @@ pub(crate) const UNIT_WORDS: [(&str, &str); 14] = [
 
 /// A unit written in SI (`m/s^2`, `N*m`, `kg*m^2`, `rad/s`, `mm`) in `lang`: `·` for the
 /// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`); an
-/// angle in degrees (`deg`) as `°`; a speed in revolutions per minute (`rpm`) as `об/мин`,
+/// angle in degrees (`deg`) as `°`; a micrometre (`um`) as `мкм`, `µm`; a speed in revolutions per minute (`rpm`) as `об/мин`,
 /// `об/хв`, `rpm`.
 pub(crate) fn unit_in(unit: &str, lang: Lang) -> String {
     match (unit, lang) {
         ("deg", _) => return "°".into(),
         ("rpm", Lang::Ru) => return "об/мин".into(),
         ("rpm", Lang::Uk) => return "об/хв".into(),
+        ("um", Lang::En) => return "µm".into(),
+        ("um", _) => return "мкм".into(),
         _ => {}
     }
     let si = unit.replace('*', "·");

@@ -9,28 +9,30 @@ use crate::check::Symbol;
 use crate::scale::Lang;
 
 /// The Russian textbooks' subscripts (and superscripts) with their Ukrainian and English
-/// spellings. The Ukrainian course writes the Russian ones; the English course notation
-/// takes the initial of the English word.
+/// spellings. The Ukrainian course writes its own where its textbooks do (ін — інерції, зр —
+/// зрівноважувальний, зв — зведений, пк — корисного опору, л — ланок), the Russian ones
+/// where the word is the same; the English course notation takes the initial of the
+/// English word.
 const SUBSCRIPTS: &[(&str, &str, &str)] = &[
     // инерции: the inertia force and moment, F_i, M_i.
-    ("и", "и", "i"),
+    ("и", "ін", "i"),
     // полезного сопротивления: the useful resistance, F_r (as the resisting moment M_r).
-    ("пс", "пс", "r"),
+    ("пс", "пк", "r"),
     // сопротивления: the resisting moment and its work, M_r, A_r.
     ("с", "с", "r"),
     // движущих сил: the driving moment, its work, a gas force, M_d, A_d, F_d.
     ("д", "д", "d"),
     // уравновешивающий: the balancing force and moment, and a rotor's correcting masses,
     // F_b, M_b, m_b.
-    ("у", "у", "b"),
+    ("у", "зр", "b"),
     // приведённый: reduced to the crank, M_red, J_red.
-    ("пр", "пр", "red"),
+    ("пр", "зв", "red"),
     // приведённый, as the dynamics' data writes it: J_red.
     ("ред", "ред", "red"),
     // коробки скоростей: the gearbox's share of the reduced moment of inertia, J_gb.
     ("кс", "кс", "gb"),
     // звеньев: the links' kinetic energy, T_l.
-    ("зв", "зв", "l"),
+    ("зв", "л", "l"),
     // средняя: the mean angular velocity, ω_m.
     ("ср", "ср", "m"),
     // маховика: the flywheel's moment of inertia, J_fw.
@@ -50,7 +52,7 @@ const SUBSCRIPTS: &[(&str, &str, &str)] = &[
     // профиля: a cam profile's deviation, Δ_prof.
     ("проф", "проф", "prof"),
     // огибающей: a generated tooth's deviation from the exact envelope, δ_env.
-    ("огиб", "огиб", "env"),
+    ("огиб", "обв", "env"),
     // критический: the pressure angle at which a cam's follower jams, λ_cr.
     ("кр", "кр", "cr"),
 ];
