@@ -117,6 +117,7 @@ pub fn draw_links(
             }
         }
     }
+    super::slide_lines::draw_slide_lines(rec, prog, b, (role, note), part);
     joints.retain(|k| *k >= prog.fixed.len() || part != Part::All);
     joints.sort_unstable();
     joints.dedup();
