@@ -279,20 +279,17 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
             (first, second) = (f, s);
         }
     }
-    // The first sheet filled before the second is begun: each of the second's blocks, in
-    // their order, moves up when the first holds it, as long as a drawing stays for the second.
-    let drawing = |b: &(Block, Option<u8>)| matches!(b.0, Block::Views { .. });
+    // The first sheet filled before the second is begun: each table of the second, in their
+    // order, moves up when the first holds it (into the band the plans leave free); the
+    // drawings and the text that states their scales stay together on the second.
     let mut left: Run = Vec::new();
-    for (k, next) in second.iter().enumerate() {
-        let after = &second[k + 1..];
-        let drawn_after = left.iter().chain(after).any(drawing);
-        let all_up = left.is_empty() && after.is_empty();
+    for next in second {
         let mut f = first.clone();
         f.push(next.clone());
-        if (drawn_after || all_up) && lay(f.clone())?.len() == 1 {
+        if matches!(next.0, Block::Table(_)) && lay(f.clone())?.len() == 1 {
             first = f;
         } else {
-            left.push(next.clone());
+            left.push(next);
         }
     }
     let mut plates = lay(first)?;
