@@ -25,31 +25,25 @@ struct SlideLine {
 fn slide_lines(prog: &Program, b: &Built, mu: f64) -> Vec<SlideLine> {
     let n = prog.fixed.len();
     let mut v = Vec::new();
-    for op in &prog.ops {
-        let Op::Dyad { group, dyad, .. } = op else {
+    for (group, joint, g) in prog.dyad_guides() {
+        if g.is_fixed(n) || g.carrier == 0 {
+            continue;
+        }
+        let Some(line) = prog.drawn_guide(&g, &b.p, mu) else {
             continue;
         };
-        let Some(joint) = dyad.joint() else { continue };
-        for g in dyad.guides().into_iter().flatten() {
-            if g.is_fixed(n) || g.carrier == 0 {
-                continue;
-            }
-            let Some(line) = prog.drawn_guide(&g, &b.p, mu) else {
-                continue;
-            };
-            let (foot, end) = (line.project_t(b.p[g.through]), line.project_t(b.p[joint]));
-            let past = if end >= foot {
-                SLIDE_PAST_MM
-            } else {
-                -SLIDE_PAST_MM
-            };
-            v.push(SlideLine {
-                group: *group,
-                carrier: g.carrier as u32,
-                segment: Segment::new(b.p[g.through], line.eval(end + past)),
-                joint: b.p[joint],
-            });
-        }
+        let (foot, end) = (line.project_t(b.p[g.through]), line.project_t(b.p[joint]));
+        let past = if end >= foot {
+            SLIDE_PAST_MM
+        } else {
+            -SLIDE_PAST_MM
+        };
+        v.push(SlideLine {
+            group,
+            carrier: g.carrier as u32,
+            segment: Segment::new(b.p[g.through], line.eval(end + past)),
+            joint: b.p[joint],
+        });
     }
     v
 }

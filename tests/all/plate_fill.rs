@@ -86,11 +86,7 @@ fn largest_band(l: &Layout) -> (f64, f64) {
 /// drawing).
 fn sheets() -> Vec<(String, Plate, bool)> {
     let mut out = Vec::new();
-    for entry in std::fs::read_dir(root().join("constructions")).expect("constructions/") {
-        let path = entry.expect("entry").path();
-        if path.extension().is_none_or(|x| x != "toml") {
-            continue;
-        }
+    for path in crate::support::scene_paths() {
         let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
         for drafting in [Drafting::EXACT, Drafting::HAND] {
             let session = tmm::study::Session::new(&s, drafting);
