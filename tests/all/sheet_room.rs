@@ -41,7 +41,7 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("rotor-static/balancing", 0.15, "one disc and one polygon, each as large as its room (162 and 200 mm: one round step finer doubles them); its 14 lines of data keep it off an A3"),
     ("shaper/dynamics", 0.29, "the scene fixes μ_M and μ_φ (the seed's)"),
     ("v-engine/dynamics", 0.28, "the scene fixes μ_φ; the free diagrams' ordinates at their 80 mm"),
-    ("shaper/kinematics", 0.21, "the scene fixes μ_l, μ_v, μ_a (the seed's): the plan of positions, twelve plans and two acceleration plans leave the bottom half free, where the diagrams' stack (fixed μ_S, μ_φ, H₁, H₂: 480 mm tall) does not fit"),
+    ("shaper/kinematics", 0.21, "the scene fixes μ_l, μ_v, μ_a (the seed's): the plan of positions, twelve plans and two acceleration plans, and in the band under the plans the analytic and error tables, which hold no view line; the diagrams' stack (fixed μ_S, μ_φ, H₁, H₂: 405 mm tall) does not fit that band and opens sheet 2"),
     ("shaper/kinematics-2", 0.09, "the second of two sheets, begun once the first is filled: the diagrams' stack at the seed's fixed scales (μ_S, μ_φ, H₁, H₂: 405 mm tall, more than the first sheet's free band) and the error table, which holds no view line"),
     ("six-bar/kinematics", 0.25, "the scene fixes μ_v and μ_a (the seed's); the plan of positions at μ_l raised to fit its field"),
     ("six-bar/kinematics-2", 0.10, "the acceleration plan at the seed's μ_a, the hodograph and the diagrams beside the full analytic and error tables, which hold no view line"),
