@@ -62,6 +62,59 @@ pub fn target(
     Ok(Some((k, DVec2::from_angle(dir))))
 }
 
+/// The positions of the plan (indices) where the working stroke starts and ends: the first
+/// output's extremes, when the plan draws both.
+fn stroke_ends(plan: &PositionPlan) -> Option<(usize, usize)> {
+    let ex = plan.extremes.as_ref()?;
+    let at = |phi: f64| {
+        plan.positions.iter().position(|p| {
+            let d = (p.phi - phi).rem_euclid(TAU);
+            d.min(TAU - d) < 1e-9
+        })
+    };
+    Some((at(ex.phi_start)?, at(ex.phi_other)?))
+}
+
+/// The twin's origin of S and its direction: the charted slider's analytic extreme at the
+/// start of the working stroke and the way it runs from there (its range: from the minimum
+/// up, or from the maximum down), when the plan draws the stroke's ends; else position 1's
+/// point and the scene's direction.
+fn twin_origin(
+    plan: &PositionPlan,
+    outputs: &[Output],
+    (k, dir): (usize, DVec2),
+) -> (DVec2, DVec2) {
+    let first = || {
+        numbered(plan)
+            .first()
+            .map_or(DVec2::ZERO, |(_, p)| p.pose.p[k])
+    };
+    let (Some(ex), Some((start, end))) = (plan.extremes.as_ref(), stroke_ends(plan)) else {
+        return (first(), dir);
+    };
+    let origin = plan.positions[start].pose.p[k];
+    let slider = outputs.iter().find_map(|o| match o {
+        Output::Slider { point, dir } if plan.program.index(point) == Some(k) => Some(*dir),
+        _ => None,
+    });
+    let range = ex
+        .ranges
+        .iter()
+        .find(|r| matches!(r.coord, crate::linkage::OutputCoord::Slider(i, _) if i == k));
+    match (slider, range) {
+        (Some(dir), Some(r)) => {
+            let d = DVec2::from_angle(dir);
+            let from_max = (origin.dot(d) - r.max).abs() < (origin.dot(d) - r.min).abs();
+            (origin, if from_max { -d } else { d })
+        }
+        // Another point than the stroke's slider: the way it goes over the working stroke.
+        _ => {
+            let to = plan.positions[end].pose.p[k];
+            (origin, dir * (to - origin).dot(dir).signum())
+        }
+    }
+}
+
 /// How far below the lowest level its rays reach the pole distance's dimension line is
 /// drawn, mm: the rays fan out from the pole over the whole span of the derivative, so the
 /// dimension H and its text (over the line) stand clear of them under the fan.
@@ -110,14 +163,22 @@ pub fn diagrams(
         what: format!("{what} of {name}"),
         error,
     };
-    // S is read off the plan of positions: the distance from position 1, signed along the guide.
+    // S is read off the plan of positions: the distance from the start of the working stroke
+    // (position 1 when no extreme is drawn), positive along the working stroke.
     let reader = Recorder::in_context("S", scale_l, ctx);
-    let p1 = numbered[0].1.built.p[k];
+    let ends = stroke_ends(plan);
+    let (p1, read_dir) = match ends {
+        Some((a, b)) => {
+            let (pa, pb) = (plan.positions[a].built.p[k], plan.positions[b].built.p[k]);
+            (pa, dir * (pb - pa).dot(dir).signum())
+        }
+        None => (numbered[0].1.built.p[k], dir),
+    };
     let s: Vec<f64> = numbered
         .iter()
         .map(|(_, p)| {
             let d = p.built.p[k] - p1;
-            reader.measure(p1, p.built.p[k]).value * d.dot(dir).signum()
+            reader.measure(p1, p.built.p[k]).value * d.dot(read_dir).signum()
         })
         .collect();
     let src = turn_diagram(s.clone()).map_err(|e| fail("S", e))?;
@@ -172,7 +233,7 @@ pub fn diagrams(
         .map_err(|e| fail("d²S/dφ²", e))?;
     // Rows: S, v = |ω₁|·dS/dθ, a = ω₁²·d²S/dθ² at the numbered positions.
     let q = plain(&name);
-    let p0 = numbered[0].1.pose.p[k];
+    let (p0, dir) = twin_origin(plan, outputs, (k, dir));
     let analytic: Vec<[f64; 3]> = numbered
         .iter()
         .map(|(_, p)| {

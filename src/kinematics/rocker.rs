@@ -43,12 +43,13 @@ pub fn rocker_link(outputs: &[Output]) -> Option<usize> {
 /// ω of `link` at the numbered positions, read off the velocity plans (`velocity[k]`: the
 /// plan at position `k`, `None` where refused), then differentiated by chords: ε =
 /// |ω₁|·dω/dθ (θ the crank's travel). The seed's ε = 12·0.32 = 3.8 rad/s² (L574) forgets the
-/// factor ω₁; this does not. `None` when a numbered position has no velocity plan.
+/// factor ω₁; this does not. The abscissa at the scene's μ_φ (`phi`) when given. `None` when a
+/// numbered position has no velocity plan.
 pub fn rocker_diagram(
     plan: &PositionPlan,
     link: usize,
     velocity: &[Option<&KinPlan>],
-    w1: f64,
+    (w1, phi): (f64, Option<Scale>),
     ctx: &Context,
 ) -> Result<Option<RockerDiagram>, KinError> {
     let numbered = numbered(plan);
@@ -67,10 +68,14 @@ pub fn rocker_diagram(
     let src = turn_diagram(omega.clone()).map_err(fail)?;
     let peak = super::peak(omega.iter().copied());
     let scale = round_scale(peak.max(1e-12), ROCKER_MM, Quantity::AngularVelocity)?;
-    let scale_phi = Scale::new(TAU / ROCKER_TURN_MM, Quantity::Angle).ok_or(KinError::NoScale {
-        quantity: Quantity::Angle,
-        value: TAU,
-    })?;
+    // The scene's μ_φ when it gives one (the displacement diagram's too: one μ_φ a sheet).
+    let scale_phi = match phi {
+        Some(s) => s,
+        None => Scale::new(TAU / ROCKER_TURN_MM, Quantity::Angle).ok_or(KinError::NoScale {
+            quantity: Quantity::Angle,
+            value: TAU,
+        })?,
+    };
     let scales = Scales {
         x: scale_phi,
         y: scale,

@@ -66,7 +66,8 @@ impl Program {
         }
     }
 
-    fn drawn_guide(&self, g: &PGuide, p: &[DVec2], mu: f64) -> Option<Line> {
+    /// A guide's line at the drawn points `p` (mm) at μ_l = `mu`.
+    pub(super) fn drawn_guide(&self, g: &PGuide, p: &[DVec2], mu: f64) -> Option<Line> {
         let e = DVec2::from_angle(self.drawn_dir(&g.dir, p));
         Line::new(p[g.through], e).map(|l| l.offset(g.offset / mu))
     }

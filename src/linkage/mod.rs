@@ -14,6 +14,7 @@ mod program;
 #[cfg(test)]
 pub(crate) mod proptests;
 mod scheme;
+mod slide_lines;
 mod structure;
 #[cfg(test)]
 mod tests;

@@ -117,6 +117,7 @@ pub fn draw_links(
             }
         }
     }
+    super::slide_lines::draw_slide_lines(rec, prog, b, (role, note), part);
     joints.retain(|k| *k >= prog.fixed.len() || part != Part::All);
     joints.sort_unstable();
     joints.dedup();
@@ -231,24 +232,13 @@ pub fn guide_ends(poses: &PlanPoses) -> Vec<(DVec2, DVec2)> {
 /// The frame's guides: per guide, its group, the joint sliding on it and its direction.
 fn fixed_guides(prog: &Program) -> Vec<(usize, usize, DVec2)> {
     let n = prog.fixed.len();
-    let mut out = Vec::new();
-    for op in &prog.ops {
-        let Op::Dyad { group, dyad, .. } = op else {
-            continue;
-        };
-        let Some(joint) = dyad.joint() else { continue };
-        for g in dyad
-            .guides()
-            .into_iter()
-            .flatten()
-            .filter(|g| g.is_fixed(n))
-        {
-            if let PDir::Fixed(a) = g.dir {
-                out.push((*group, joint, DVec2::from_angle(a)));
-            }
-        }
-    }
-    out
+    prog.dyad_guides()
+        .filter(|(_, _, g)| g.is_fixed(n))
+        .filter_map(|(group, joint, g)| match g.dir {
+            PDir::Fixed(a) => Some((group, joint, DVec2::from_angle(a))),
+            PDir::Along { .. } => None,
+        })
+        .collect()
 }
 
 /// Draw the frame's guides with their hatching.

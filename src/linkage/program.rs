@@ -469,6 +469,20 @@ impl PDyad {
 }
 
 impl Program {
+    /// Every guide of the groups with its group and the joint that slides on it, in the
+    /// order of the program.
+    pub(super) fn dyad_guides(&self) -> impl Iterator<Item = (usize, usize, PGuide)> + '_ {
+        self.ops.iter().flat_map(|op| {
+            let (group, joint, guides) = match op {
+                Op::Dyad { group, dyad, .. } => (*group, dyad.joint(), dyad.guides()),
+                Op::Point { .. } => (0, None, [None, None]),
+            };
+            joint
+                .into_iter()
+                .flat_map(move |j| guides.into_iter().flatten().map(move |g| (group, j, g)))
+        })
+    }
+
     /// The link a point belongs to: the first that carried it (0 for fixed points, the crank
     /// for its pin, a point's own link, link i for a dyad's joint — link j for RPP, whose
     /// joint is on the translating link).

@@ -157,11 +157,15 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     if let Some(r) = &a.rocker {
         let c = format!("ω_{{{l}}}(φ), dω_{{{l}}}/dφ", l = r.link);
         rest.push((Block::view(r.figure.clone(), c, None), None));
+        // μ_φ stated once on a sheet: with the displacement diagram's when they share it.
+        let phi = match &a.diagrams {
+            Some(d) if d.scales.x == r.scale_phi => String::new(),
+            _ => format!(", {}", r.scale_phi.caption(lang)),
+        };
         lines.push(format!(
-            "ω_{{{}}}(φ): {}, {}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ",
+            "ω_{{{}}}(φ): {}{phi}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ",
             r.link,
             r.scale.caption(lang),
-            r.scale_phi.caption(lang),
             format_sig(r.derivative.pole_mm, 3, lang),
             Text::Millimetre.get(lang)
         ));
@@ -279,8 +283,23 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
             (first, second) = (f, s);
         }
     }
+    // The first sheet filled before the second is begun: each table of the second, in their
+    // order, moves up when the first holds it (into the band the plans leave free); the
+    // drawings and the text that states their scales stay together on the second.
+    let mut left: Run = Vec::new();
+    for next in second {
+        let mut f = first.clone();
+        f.push(next.clone());
+        if matches!(next.0, Block::Table(_)) && lay(f.clone())?.len() == 1 {
+            first = f;
+        } else {
+            left.push(next);
+        }
+    }
     let mut plates = lay(first)?;
-    plates.extend(lay(second)?);
+    if !left.is_empty() {
+        plates.extend(lay(left)?);
+    }
     Ok(renamed(plates))
 }
 

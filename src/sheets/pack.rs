@@ -1,7 +1,8 @@
 //! Laying views, texts and tables out on as many sheets as they need: each item goes to the
 //! highest, then leftmost, free place of the current sheet (inside the frame, clear of the
 //! title block and the designation box, a gap from everything placed); an item that fits
-//! nowhere there starts a further sheet. Items keep the order they are given in, so a sheet
+//! nowhere after the last one there takes a gap before it when it is no item of a series, and
+//! starts a further sheet only when the page has no room for it at all. Items keep the order they are given in, so a sheet
 //! reads like the textbook's: the plan of positions first, then the plans, diagrams, tables.
 //! The items of a series (the velocity plans 1 … 12 with 8′ in its place) go in rows: each
 //! to the right of the one before, on its row (level with it, or lower — not below its middle —
@@ -44,17 +45,29 @@ struct Row {
 impl Row {
     /// Whether a corner continues the row: to the right of its last item, its top level with
     /// the last item's or lower, but not below the last item's middle, so that the two still
-    /// read side by side (lower where a drawing placed before reaches into the row).
-    fn continues(&self, c: DVec2) -> bool {
+    /// read side by side (lower where a drawing placed before reaches into the row); and no
+    /// item of `taken` between the last item and an item `height` tall there, so that a row
+    /// does not run on across another drawing (the plan of positions).
+    fn continues(&self, c: DVec2, height: f64, taken: &[Rect]) -> bool {
+        let (top, bottom) = (
+            c.y.max(self.last.min.y),
+            (c.y + height).min(self.last.max.y),
+        );
         c.x >= self.last.max.x - EPS_MM
             && c.y >= self.last.min.y - EPS_MM
             && c.y <= (self.last.min.y + self.last.max.y) * 0.5 + EPS_MM
+            && !taken.iter().any(|t| {
+                t.min.x < c.x - EPS_MM
+                    && t.max.x > self.last.max.x + EPS_MM
+                    && t.min.y < bottom
+                    && t.max.y > top
+            })
     }
 
     /// A corner where the next item of the row's series may go: on its row
     /// ([`Row::continues`]), or under the whole row.
-    fn allows(&self, c: DVec2) -> bool {
-        self.continues(c) || c.y >= self.bottom + GAP_MM - EPS_MM
+    fn allows(&self, c: DVec2, height: f64, taken: &[Rect]) -> bool {
+        self.continues(c, height, taken) || c.y >= self.bottom + GAP_MM - EPS_MM
     }
 }
 
@@ -89,6 +102,13 @@ impl Page {
     /// last one, then as high), else starts a new row under it at the highest, then leftmost,
     /// place. Candidates are the area's corner and the corners just past each taken rectangle.
     fn place(&mut self, size: DVec2, series: Option<u8>) -> Option<Rect> {
+        self.place_from(size, series, true)
+    }
+
+    /// [`Page::place`], or with `in_order` false anywhere the page has room, highest then
+    /// leftmost, the reading position left where it was: an item that the page holds only in
+    /// a gap before its last item goes there rather than alone onto a further sheet.
+    fn place_from(&mut self, size: DVec2, series: Option<u8>, in_order: bool) -> Option<Rect> {
         let mut xs = vec![self.area.min.x];
         let mut ys = vec![self.area.min.y];
         for t in &self.taken {
@@ -99,9 +119,10 @@ impl Page {
         ys.sort_by(f64::total_cmp);
         let row = self.row.filter(|r| Some(r.series) == series);
         let after = |c: &DVec2| {
-            self.last
-                .is_none_or(|l| c.y > l.y + EPS_MM || (c.y >= l.y - EPS_MM && c.x > l.x + EPS_MM))
-                && row.is_none_or(|r| r.allows(*c))
+            !in_order
+                || self.last.is_none_or(|l| {
+                    c.y > l.y + EPS_MM || (c.y >= l.y - EPS_MM && c.x > l.x + EPS_MM)
+                }) && row.is_none_or(|r| r.allows(*c, size.y, &self.taken))
         };
         let mut grid: Vec<DVec2> = ys
             .iter()
@@ -111,7 +132,8 @@ impl Page {
         if let Some(r) = row {
             // On the row first, nearest the last item; the new row's places keep their order
             // (the sort is stable).
-            grid.sort_by(|a, b| match (r.continues(*a), r.continues(*b)) {
+            let on = |c: &DVec2| r.continues(*c, size.y, &self.taken);
+            grid.sort_by(|a, b| match (on(a), on(b)) {
                 (true, true) => a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)),
                 (true, false) => std::cmp::Ordering::Less,
                 (false, true) => std::cmp::Ordering::Greater,
@@ -124,10 +146,14 @@ impl Page {
             .chain(grid)
             .map(|c| Rect::new(c, c + size))
             .find(|r| self.free(r))?;
+        let on_row = row.is_some_and(|w| w.continues(r.min, size.y, &self.taken));
         self.taken.push(r);
+        if !in_order {
+            return Some(r);
+        }
         self.last = Some(r.min);
         self.row = series.map(|series| match row {
-            Some(w) if w.continues(r.min) => Row {
+            Some(w) if on_row => Row {
                 series,
                 last: r,
                 bottom: w.bottom.max(r.max.y),
@@ -161,6 +187,14 @@ pub(super) fn pack(
         if let Some(r) = pages[last].place(size, of) {
             out.push((last, r));
             continue;
+        }
+        // An item outside a series (a text, a table, a diagram) fills a gap of the page
+        // before a further sheet is begun.
+        if of.is_none() {
+            if let Some(r) = pages[last].place_from(size, None, false) {
+                out.push((last, r));
+                continue;
+            }
         }
         let mut page = Page::new(sheet);
         let r = page.place(size, of).ok_or(k)?;

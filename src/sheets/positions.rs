@@ -249,10 +249,19 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
             )),
         }
     }
-    v.push(format!(
-        "θ = {}°, K = (180° + θ)/(180° − θ) = {}",
-        format_fixed(ex.theta.to_degrees(), 4, lang),
+    // θ stated once: as the rocker's swing when it is the swing, else beside K.
+    let stated = ex.ranges.iter().any(|r| {
+        matches!(r.coord, OutputCoord::Rocker(_))
+            && ((r.max - r.min).abs() - ex.theta.abs()).abs() < 1e-9
+    });
+    let k = format!(
+        "K = (180° + θ)/(180° − θ) = {}",
         format_fixed(ex.k, 4, lang)
-    ));
+    );
+    v.push(if stated {
+        k
+    } else {
+        format!("θ = {}°, {k}", format_fixed(ex.theta.to_degrees(), 4, lang))
+    });
     v
 }

@@ -242,7 +242,8 @@ impl<'s> Session<'s> {
             let plan = self.positions(sc.l)?;
             let vel = self.velocities(sc)?;
             let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
-            let r = kinematics::rocker_diagram(&plan, link, &plans, self.w1()?, &self.ctx()?)?;
+            let rate = (self.w1()?, self.spec().scale_phi);
+            let r = kinematics::rocker_diagram(&plan, link, &plans, rate, &self.ctx()?)?;
             Ok(r.map(Arc::new))
         })
     }

@@ -66,9 +66,10 @@ fn the_shaper_grid_gives_thirty_variants_and_their_answer_key() {
             .unwrap()
             .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
             .collect();
+        // The kinematic analysis continues on kinematics-2 only when one A1 does not hold it
+        // (the sheets are filled before a further one is begun).
         for sheet in [
             "kinematics",
-            "kinematics-2",
             "forces",
             "forces-2",
             "cam",

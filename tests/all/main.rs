@@ -48,6 +48,7 @@ mod note_worked_machines;
 mod output;
 mod plan_lines;
 mod plate_demo;
+mod plate_fill;
 mod plate_rules;
 mod plates;
 mod seed_shaper;

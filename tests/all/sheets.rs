@@ -219,13 +219,13 @@ fn views_that_need_more_room_continue_on_a_further_sheet() {
     let all = sheets::build_all(&session, Lang::Ru).expect("plates");
     let names: Vec<&str> = all.iter().map(|(_, p)| p.name.as_str()).collect();
     // The plan of positions is folded into the kinematic sheets (the textbook's sheet 1): no
-    // sheet of its own; what one A1 does not hold continues on a second, which holds drawings
-    // (never a table alone).
+    // sheet of its own; what one A1 does not hold continues on a second, once the first is
+    // filled, and the second holds a drawing (never a table alone).
     assert_eq!(names, ["kinematics", "kinematics-2"]);
     for (k, (_, p)) in all.iter().enumerate() {
         assert_eq!(p.title_block.sheet_no as usize, k + 1);
         assert_eq!(p.title_block.sheets, 2);
-        assert!(p.views.len() >= 2, "{}: {} views", p.name, p.views.len());
+        assert!(!p.views.is_empty(), "{}: {} views", p.name, p.views.len());
     }
     // The first sheet reads: the structural scheme, the plan of positions, the velocity plans
     // 1 … 12 with 10′ in its place; the structural analysis is written on one of the two.

@@ -1,0 +1,92 @@
+//! The lines of the moving links that a group slides on (the tangent mechanism's crank,
+//! along which its block slides), drawn with their link on every drawing of the mechanism.
+
+use super::construction::Built;
+use super::positions_draw::Part;
+use super::program::{Op, Program};
+use crate::construct::{Item, Recorder, Role};
+use crate::geom::{DVec2, Segment};
+
+/// How far a moving link's slide line is drawn past the block that slides on it, mm.
+pub const SLIDE_PAST_MM: f64 = 12.0;
+
+/// A guide carried by a moving link, as drawn at one position: the group that slides on it,
+/// the carrying link and the piece of its line from the carrier's point to the joint (and
+/// [`SLIDE_PAST_MM`] past it).
+struct SlideLine {
+    group: usize,
+    carrier: u32,
+    segment: Segment,
+    joint: DVec2,
+}
+
+/// The guides of the moving links at position `b` (drawing mm): the crank's line that the
+/// tangent mechanism's block slides on, a rocker's line carrying a slider.
+fn slide_lines(prog: &Program, b: &Built, mu: f64) -> Vec<SlideLine> {
+    let n = prog.fixed.len();
+    let mut v = Vec::new();
+    for (group, joint, g) in prog.dyad_guides() {
+        if g.is_fixed(n) || g.carrier == 0 {
+            continue;
+        }
+        let Some(line) = prog.drawn_guide(&g, &b.p, mu) else {
+            continue;
+        };
+        let (foot, end) = (line.project_t(b.p[g.through]), line.project_t(b.p[joint]));
+        let past = if end >= foot {
+            SLIDE_PAST_MM
+        } else {
+            -SLIDE_PAST_MM
+        };
+        v.push(SlideLine {
+            group,
+            carrier: g.carrier as u32,
+            segment: Segment::new(b.p[g.through], line.eval(end + past)),
+            joint: b.p[joint],
+        });
+    }
+    v
+}
+
+/// The slide lines of the moving links that `part` draws, with `role`: every link a group
+/// slides on is drawn to the block that slides on it, on every drawing of the mechanism. A
+/// group drawn apart shows the line of the link it slides on (another part's) as its free
+/// element, thin, across its joint.
+pub(super) fn draw_slide_lines(
+    rec: &mut Recorder,
+    prog: &Program,
+    b: &Built,
+    (role, note): (Role, &str),
+    part: Part,
+) {
+    let mu = rec.scale().value();
+    let links_of = |g: usize| {
+        prog.ops.iter().find_map(|op| match op {
+            Op::Dyad { group, links, .. } if *group == g => Some(*links),
+            _ => None,
+        })
+    };
+    for s in slide_lines(prog, b, mu) {
+        let carried = match part {
+            Part::All => true,
+            Part::Driver => s.carrier == prog.crank_link,
+            Part::Group(g) => links_of(g).is_some_and(|l| l.contains(&s.carrier)),
+        };
+        if carried {
+            rec.draw(
+                format!("{note}: link {}: slide line", s.carrier),
+                Item::Segment(s.segment),
+                role,
+                &[],
+            );
+        } else if part == Part::Group(s.group) {
+            let u = (s.segment.to - s.segment.from).normalize_or_zero() * SLIDE_PAST_MM;
+            rec.draw(
+                format!("{note}: free slide line of link {}", s.carrier),
+                Item::Segment(Segment::new(s.joint - u, s.joint + u)),
+                Role::Construction,
+                &[],
+            );
+        }
+    }
+}
