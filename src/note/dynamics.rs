@@ -71,6 +71,9 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     super::flywheel::drive(w, &d);
     super::flywheel::size(w, &d);
     w.figures((PlateKind::Dynamics, None), |_| true, |own| own.to_string());
+    // The flywheel's part drawing, a sheet of its own.
+    let part = w.word(crate::sheets::captions::DynamicsText::Flywheel);
+    w.figures((PlateKind::Flywheel, None), |_| true, |_| part.to_string());
     Ok(())
 }
 

@@ -101,7 +101,7 @@ fn the_bench_times_a_scenes_plates_as_png() {
         .find(|t| t["name"] == "png shaper at 150 dpi")
         .expect("a PNG row");
     assert!(row["per_second"].as_f64().unwrap() > 0.0);
-    assert!(row["note"].as_str().unwrap().contains("(7)"), "{row}");
+    assert!(row["note"].as_str().unwrap().contains("(8)"), "{row}");
 }
 
 /// The text of a PDF's dictionaries with the optional spaces between names and values taken
@@ -152,8 +152,8 @@ fn render_writes_one_pdf_per_scene_with_every_sheet_a_page_at_1_to_1() {
     let text = pdf_dicts(&pdf);
     assert_eq!(
         text.matches("/Type/Page").count() - text.matches("/Type/Pages").count(),
-        7,
-        "the project's seven sheets, seven pages"
+        8,
+        "the project's eight sheets, eight pages"
     );
     assert!(text.contains("/Count 7"));
     let boxes = media_boxes_mm(&pdf);

@@ -43,8 +43,8 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
     let all = sheets::build_all(&session, Lang::Ru).expect("plates");
     assert_eq!(
         all.len(),
-        7,
-        "the project's set: kinematics on two sheets, the force analysis one per position, the cam, the gears, the dynamics"
+        8,
+        "the project's set: kinematics on two sheets, the force analysis one per position, the cam, the gears, the dynamics, the flywheel"
     );
     let text = all
         .iter()
