@@ -211,6 +211,10 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         return out;
     }
     let z = &d.size;
+    // The construction finds none needed: nothing to size (its line says so).
+    if z.d <= 0.0 {
+        return out;
+    }
     let kind = match z.kind {
         FlywheelKind::Rim => DynamicsText::Rim.get(lang),
         FlywheelKind::Disc => DynamicsText::Disc.get(lang),
