@@ -10,14 +10,18 @@
 //!   ψ_min, and Merkin's route T_I = ΔT − T_II, J_I = ΔT_I/(δ·ω_ср²) (the seed's);
 //! - `twin`: the work integrated exactly and the equation of motion in energy form solved
 //!   for the flywheel that gives δ, with ω(φ), ε(φ) and the cycle time;
-//! - `flywheel`: the rim's or disc's size from its moment of inertia;
-//! - rows `M_red`, `J_red`, `dT` per position; `A_res`, `M_drive`, `J_flywheel`, `delta` of
-//!   the whole scene.
+//! - `flywheel`: the rim's or disc's size from its moment of inertia — the one the sheet's
+//!   construction gives (Wittenbauer's tangents), as a hand-in sizes it; the twin sizes its
+//!   own from the exact inertia;
+//! - `part`: the flywheel as a part drawing, every dimension from its size;
+//! - rows `M_red`, `J_red`, `dT` per position; `A_res`, `M_drive`, `J_flywheel`, `delta`,
+//!   and the flywheel's `h_flywheel` (D) and `m_flywheel` of the whole scene.
 
 mod draw;
 #[cfg(test)]
 mod engine_tests;
 mod flywheel;
+mod part;
 mod reduce;
 mod rows;
 mod scales;
@@ -27,6 +31,8 @@ mod tests;
 mod twin;
 
 pub use draw::diagrams;
+pub use flywheel::Size;
+pub use part::PART_MM;
 pub use reduce::{Breakdown, LinkShare, LoadShare, Reduced, Reducer};
 pub use rows::{findings, noted, notes, rows};
 pub use spec::{
@@ -149,11 +155,14 @@ pub struct Dynamics {
     pub diagrams: draw::Diagrams,
     /// The δ each textbook route's flywheel really gives (Wittenbauer, Merkin).
     pub delta_of: [f64; 2],
-    /// The flywheel's size from the exact inertia.
+    /// The flywheel's size from the inertia the sheet's construction gives (Wittenbauer's
+    /// tangents): the flywheel a hand-in sizes and draws.
     pub size: flywheel::Size,
+    /// The twin's flywheel: its size from the exact inertia.
+    pub exact_size: flywheel::Size,
     /// ω(φ) with the flywheel.
     pub omega: crate::construct::Figure,
-    /// The flywheel's section.
+    /// The flywheel's part drawing ([`Self::size`]); empty when none is needed.
     pub wheel: crate::construct::Figure,
 }
 
@@ -226,9 +235,11 @@ pub fn analyse(
     let diagrams = draw::diagrams(spec, &graphical, w_avg, ctx)?;
     let delta_of = [diagrams.wittenbauer.j_fw, diagrams.merkin.j_fw]
         .map(|j| cycle.with_flywheel(j.max(0.0), w_avg).delta());
-    let size = flywheel::size(&spec.flywheel, exact.j_fw);
+    // The flywheel as the sheet's construction finds it; the twin's from the exact inertia.
+    let size = flywheel::size(&spec.flywheel, diagrams.wittenbauer.j_fw);
+    let exact_size = flywheel::size(&spec.flywheel, exact.j_fw);
     let omega = draw::omega_figure(&cycle, &exact, diagrams.scale_phi, ctx)?;
-    let wheel = flywheel::section(&size, ctx)?;
+    let wheel = part::drawing(&size, ctx)?;
     Ok(Dynamics {
         spec: spec.clone(),
         w_avg,
@@ -244,6 +255,7 @@ pub fn analyse(
         diagrams,
         delta_of,
         size,
+        exact_size,
         omega,
         wheel,
     })

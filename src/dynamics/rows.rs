@@ -6,7 +6,8 @@ use crate::scale::{format_sig, Lang};
 
 /// The rows: `M_red`, `J_red` (velocity plans) and `dT` (graphical integration) per
 /// position; `A_res`, `M_drive` (integration), `J_flywheel` and `delta` (Wittenbauer,
-/// Merkin) of the whole scene, each against the analytic twin.
+/// Merkin), the flywheel's D (`h_flywheel`) and mass (`m_flywheel`) sized from Wittenbauer's
+/// J_м of the whole scene, each against the analytic twin.
 pub fn rows(d: &Dynamics) -> Vec<Row> {
     let mut rows = Vec::new();
     let big = |f: &dyn Fn(usize) -> f64| (0..d.labels.len()).fold(0.0f64, |m, i| m.max(f(i).abs()));
@@ -88,6 +89,19 @@ pub fn rows(d: &Dynamics) -> Vec<Row> {
     }
     for (m, _, delta) in routes {
         scene(Symbol::Irregularity, "", m, delta, d.exact.delta());
+    }
+    // The flywheel a hand-in sizes, from Wittenbauer's J_м, against the twin's, sized from
+    // the exact J_м: its outer diameter D and its mass.
+    if d.size.d > 0.0 || d.exact_size.d > 0.0 {
+        let (g, a) = (&d.size, &d.exact_size);
+        scene(Symbol::Length, "flywheel", Method::Wittenbauer, g.d, a.d);
+        scene(
+            Symbol::Mass,
+            "flywheel",
+            Method::Wittenbauer,
+            g.mass,
+            a.mass,
+        );
     }
     rows
 }

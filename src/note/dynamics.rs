@@ -70,6 +70,11 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     super::flywheel::routes(w, &d);
     super::flywheel::drive(w, &d);
     super::flywheel::size(w, &d);
+    // The flywheel's part drawing (a sheet of its own) beside its sizing, then the dynamics
+    // sheet's diagrams: the section ends on a small figure, not on a page-high one floated
+    // past the next heading.
+    let part = w.word(crate::sheets::captions::DynamicsText::Flywheel);
+    w.figures((PlateKind::Flywheel, None), |_| true, |_| part.to_string());
     w.figures((PlateKind::Dynamics, None), |_| true, |own| own.to_string());
     Ok(())
 }

@@ -1,7 +1,9 @@
 //! The flywheel worked (seed 000 §5.6–5.8): J_м by Wittenbauer's energy–mass diagram and by
 //! Merkin's T_I, each formula with the segment read off its diagram; the constant moment and
-//! the mean power; the exact flywheel; its material, D = (J/(K_j·ρ))^(1/5), m = K_m·ρ·D³ and
-//! the rim speed against the material's limit.
+//! the mean power; the exact flywheel; its material, D = (J/(K_j·ρ))^(1/5), m = K_m·ρ·D³
+//! with the J_м the construction gives (Wittenbauer's, the sheet's: a hand-in sizes the
+//! flywheel it draws), beside the exact J_м and the δ each gives, and the rim speed against
+//! the material's limit.
 
 use super::markup::{frac, inline, label, num, sym, text, unit};
 use super::moments::{explain_words, fill};
@@ -132,13 +134,20 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
         FlywheelKind::Rim => N::RimWheel,
         FlywheelKind::Disc => N::DiscWheel,
     };
+    let sig = |x: f64, n: usize| crate::scale::format_sig(x, n, lang);
+    // Sized from the construction's J_м (the sheet's), the exact one and the δ each gives.
     let sentence = fill(
         w.word(shape),
         &[
             ("material", material.to_string()),
-            ("rho", crate::scale::format_sig(fw.rho, 5, lang)),
-            ("kj", crate::scale::format_sig(fw.k_j, 4, lang)),
-            ("km", crate::scale::format_sig(fw.k_m, 4, lang)),
+            ("rho", sig(fw.rho, 5)),
+            ("kj", sig(fw.k_j, 4)),
+            ("km", sig(fw.k_m, 4)),
+            ("jm", sig(s.j, 5)),
+            ("delta", sig(d.delta_of[0], 4)),
+            ("exact", sig(d.exact.j_fw, 5)),
+            ("asked", sig(d.exact.delta(), 4)),
+            ("exact_d", sig(d.exact_size.d, 4)),
         ],
     );
     w.doc.par(&[label(&sentence)]);

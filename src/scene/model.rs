@@ -48,8 +48,12 @@ pub enum PlateKind {
     /// Friction: each `[[friction.case]]`'s scheme and force triangle, with the error table.
     Friction,
     /// Machine dynamics: the reduced moment and the work diagrams, ΔT, J_пр, the energy–mass
-    /// diagram, ω(φ) with the flywheel, the flywheel's section and Tables 9/10.
+    /// diagram, ω(φ) with the flywheel and Tables 9/10.
     Dynamics,
+    /// The flywheel as a part drawing (a sheet of its own, seed 000's at 1:4): the rim, the
+    /// hub, the spokes and their sections, every dimension from the J_м the dynamics sheet's
+    /// construction gives; none when no flywheel is needed.
+    Flywheel,
     /// Gears: the meshing picture, the specific sliding, the generated wheels, the tables.
     Gears,
     /// The cam sheet: the diagrams by graphical integration, the combined diagram with the
@@ -109,6 +113,7 @@ impl PlateKind {
             PlateKind::Balancing => ("balancing", Section::Balancing),
             PlateKind::Friction => ("friction", Section::Friction),
             PlateKind::Dynamics => ("dynamics", Section::Dynamics),
+            PlateKind::Flywheel => ("flywheel", Section::Dynamics),
             PlateKind::Gears => ("gears", Section::Gears),
             PlateKind::Cam => ("cam", Section::Cam),
         }
@@ -122,13 +127,14 @@ impl PlateKind {
         self.names().1
     }
     /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 8] = [
+    pub const ALL: [PlateKind; 9] = [
         PlateKind::Positions,
         PlateKind::Kinematics,
         PlateKind::Forces,
         PlateKind::Balancing,
         PlateKind::Friction,
         PlateKind::Dynamics,
+        PlateKind::Flywheel,
         PlateKind::Gears,
         PlateKind::Cam,
     ];

@@ -94,7 +94,8 @@ fn shaper_loads_in_si_units() {
             PlateKind::Forces,
             PlateKind::Cam,
             PlateKind::Gears,
-            PlateKind::Dynamics
+            PlateKind::Dynamics,
+            PlateKind::Flywheel
         ]
     );
 }
@@ -474,7 +475,7 @@ fn kinematics_plate_kind_parses() {
     assert_eq!(PlateKind::Gears.section().to_string(), "gears");
     assert!(PlateKind::ALL.contains(&PlateKind::Kinematics));
     let text = shaper_text().replacen(
-        "wanted = [\"positions\", \"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\"]",
+        "wanted = [\"positions\", \"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\", \"flywheel\"]",
         "wanted = [\"positions\", \"kinematics\"]",
         1,
     );

@@ -1,8 +1,9 @@
 //! Plate "Динамика машины" (seed 000 §5): the diagram of the reduced moment of resistance with
 //! the works A_с (graphical integration) and A_д, ΔT, J_пр, the energy–mass diagram with its
-//! tangents, Merkin's T_I, ω(φ) with the flywheel, the flywheel's section, the data and
-//! Tables 9/10 in the seed's shape (graphical | analytic | error). One A1 sheet (more if the
-//! views need it).
+//! tangents, Merkin's T_I, ω(φ) with the flywheel, the data — the flywheel sized from the
+//! construction's J_м, with the δ each J_м gives — and Tables 9/10 in the seed's shape
+//! (graphical | analytic | error). One A1 sheet (more if the views need it); the flywheel's
+//! part drawing is a sheet of its own ([`super::flywheel`]).
 
 use super::captions::{unit_in, DynamicsText, Text};
 use super::layout::{keyed, lay_out, quantity, Block, Column, Results};
@@ -94,14 +95,6 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             None,
         ),
     ];
-    // A machine that runs within δ without a flywheel has none to draw.
-    if !d.wheel.steps.is_empty() {
-        blocks.push(Block::view(
-            d.wheel.clone(),
-            cap(DynamicsText::Flywheel.get(lang), &[(d.wheel.scale, false)]),
-            None,
-        ));
-    }
     let mut lines = data_lines(&d, lang);
     lines.push(String::new());
     lines.push(super::drafting_line(
@@ -184,9 +177,18 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
             format!("{} {kgm2}", num(j, lang))
         }
     };
+    // Each J_м with the δ it really gives (the exact one gives the δ asked for).
+    let with_delta = |j: String, delta: f64| {
+        if j == none {
+            j
+        } else {
+            format!("{j} (δ = {})", num(delta, lang))
+        }
+    };
     out.push(format!(
-        "J_{{м}} = {}; ω_{{max}} = {}, ω_{{min}} = {} {}",
-        j_or_none(e.j_fw, None),
+        "J_{{м}} {} = {}; ω_{{max}} = {}, ω_{{min}} = {} {}",
+        DynamicsText::Exact.get(lang),
+        with_delta(j_or_none(e.j_fw, None), e.delta()),
         num(e.w_max.0, lang),
         num(e.w_min.0, lang),
         rad_s
@@ -194,9 +196,15 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
     out.push(format!(
         "J_{{м}} {} = μ_{{T}}·kl/(δω_{{ср}}^2) = {}; {} = {}",
         DynamicsText::Wittenbauer.get(lang),
-        j_or_none(d.diagrams.wittenbauer.j_fw, Some(Route::Wittenbauer)),
+        with_delta(
+            j_or_none(d.diagrams.wittenbauer.j_fw, Some(Route::Wittenbauer)),
+            d.delta_of[0]
+        ),
         DynamicsText::Merkin.get(lang),
-        j_or_none(d.diagrams.merkin.j_fw, Some(Route::Merkin))
+        with_delta(
+            j_or_none(d.diagrams.merkin.j_fw, Some(Route::Merkin)),
+            d.delta_of[1]
+        )
     ));
     let exact_delta = found.iter().find_map(|n| match *n {
         NoFlywheel::Exact { delta, .. } => Some(delta),
@@ -207,12 +215,17 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         return out;
     }
     let z = &d.size;
+    // The construction finds none needed: nothing to size (its line says so).
+    if z.d <= 0.0 {
+        return out;
+    }
     let kind = match z.kind {
         FlywheelKind::Rim => DynamicsText::Rim.get(lang),
         FlywheelKind::Disc => DynamicsText::Disc.get(lang),
     };
     out.push(format!(
-        "{kind}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {}, m = K_{{m}}ρD^3 = {} {}",
+        "{kind}, {}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {}, m = K_{{m}}ρD^3 = {} {}",
+        DynamicsText::SizedByConstruction.get(lang),
         format_fixed(z.d * 1e3, 0, lang),
         unit_in("mm", lang),
         num(z.mass, lang),

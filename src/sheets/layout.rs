@@ -1,7 +1,7 @@
 //! What a sheet holds — views, stacks of views, text and tables — sized from what they really
 //! draw and laid out on as many sheets of a format as they need ([`super::pack`]).
 
-use super::captions::{symbols, Text};
+use super::captions::{symbols, Text, Word};
 use super::pack::{pack, sheet_overflow};
 use super::BuildError;
 use crate::check::Row;
@@ -272,9 +272,9 @@ impl Block {
 
 /// A table titled `title` with the columns (heading, width in mm) and `rows`, its text
 /// `size_mm` high, in `lang` (its `at` is set by the layout).
-pub(super) fn table(
-    title: Text,
-    columns: &[(Text, f64)],
+pub(super) fn table<W: Word>(
+    title: W,
+    columns: &[(W, f64)],
     rows: Vec<Vec<String>>,
     size_mm: f64,
     lang: Lang,

@@ -10,6 +10,7 @@ pub(crate) mod data;
 pub use answer_key::{answer_key, table_sheet, KeyLine};
 pub use task::task_sheet;
 mod dynamics;
+mod flywheel;
 mod forces;
 pub(crate) mod friction;
 mod gears;
@@ -199,6 +200,7 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
         PlateKind::Balancing => balancing::build(session, lang),
         PlateKind::Friction => friction::build(session, lang),
         PlateKind::Dynamics => dynamics::build(session, lang),
+        PlateKind::Flywheel => flywheel::build(session, lang),
         PlateKind::Gears => gears::build(session, lang),
         PlateKind::Cam => cam::build(session, lang),
     }

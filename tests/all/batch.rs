@@ -60,7 +60,7 @@ fn the_shaper_grid_gives_thirty_variants_and_their_answer_key() {
     let names = folders(&out);
     assert_eq!(names.len(), 30, "{names:?}");
     for name in &names {
-        // The project's seven sheets; a variant whose force plans or diagrams need more room
+        // The project's eight sheets; a variant whose force plans or diagrams need more room
         // at the template's scales continues them on a sheet of their own (forces-3, …).
         let sheets: Vec<String> = std::fs::read_dir(out.join(name))
             .unwrap()
@@ -75,6 +75,7 @@ fn the_shaper_grid_gives_thirty_variants_and_their_answer_key() {
             "cam",
             "gears",
             "dynamics",
+            "flywheel",
         ] {
             assert!(
                 sheets.contains(&format!("{sheet}.svg")),

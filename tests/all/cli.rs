@@ -31,6 +31,8 @@ fn render_writes_svg_and_png_and_is_byte_identical() {
             "shaper/cam.svg",
             "shaper/dynamics.png",
             "shaper/dynamics.svg",
+            "shaper/flywheel.png",
+            "shaper/flywheel.svg",
             "shaper/forces-2.png",
             "shaper/forces-2.svg",
             "shaper/forces.png",
@@ -455,7 +457,7 @@ fn render_of_a_scene_that_asks_for_nothing_says_so() {
     std::fs::write(&empty, "[task]\ntitle = \"Ничего\"\n").unwrap();
     let no_plates = edited_scene(&dir, "no-plates.toml", |t| {
         t.replace(
-            "wanted = [\"positions\", \"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\"]",
+            "wanted = [\"positions\", \"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\", \"flywheel\"]",
             "wanted = []",
         )
     });

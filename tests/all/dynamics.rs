@@ -17,7 +17,7 @@ fn shaper_without_dynamics() -> String {
         .find("# Machine dynamics")
         .expect("the dynamics comment");
     // The cam and the gears follow the dynamics in the project's scene: cut with it.
-    text[..cut].replace(", \"cam\", \"gears\", \"dynamics\"]", "]")
+    text[..cut].replace(", \"cam\", \"gears\", \"dynamics\", \"flywheel\"]", "]")
 }
 
 #[test]

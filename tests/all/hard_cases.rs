@@ -498,7 +498,7 @@ fn shaper_report_with_crank(length: &str) -> tmm::Report {
     let text = text.split("\n[forces]").next().unwrap_or_default();
     let text = text
         .replace(
-            "\"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\"]",
+            "\"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\", \"flywheel\"]",
             "\"kinematics\"]",
         )
         .replace("length = 140.0", &format!("length = {length}"))

@@ -22,6 +22,7 @@ mod cli;
 mod dimension_texts;
 mod dynamics;
 mod engine;
+mod flywheel_sheet;
 mod forces;
 mod friction;
 mod friction_follower;

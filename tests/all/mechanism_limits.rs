@@ -12,7 +12,7 @@ use support::{root, scratch};
 fn shaper_kinematics() -> String {
     let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).expect("shaper");
     text.split("\n[forces]").next().unwrap_or_default().replace(
-        "\"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\"]",
+        "\"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\", \"flywheel\"]",
         "\"kinematics\"]",
     )
 }
@@ -296,7 +296,7 @@ wanted = ["forces"]
 fn every_documented_dynamics_count_draws_the_dynamics_plate() {
     let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).expect("shaper");
     let only = text.replace(
-        "wanted = [\"positions\", \"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\"]",
+        "wanted = [\"positions\", \"kinematics\", \"forces\", \"cam\", \"gears\", \"dynamics\", \"flywheel\"]",
         "wanted = [\"dynamics\"]",
     );
     assert_ne!(only, text, "the shaper's wanted plates");

@@ -101,7 +101,7 @@ fn the_bench_times_a_scenes_plates_as_png() {
         .find(|t| t["name"] == "png shaper at 150 dpi")
         .expect("a PNG row");
     assert!(row["per_second"].as_f64().unwrap() > 0.0);
-    assert!(row["note"].as_str().unwrap().contains("(7)"), "{row}");
+    assert!(row["note"].as_str().unwrap().contains("(8)"), "{row}");
 }
 
 /// The text of a PDF's dictionaries with the optional spaces between names and values taken
@@ -152,18 +152,17 @@ fn render_writes_one_pdf_per_scene_with_every_sheet_a_page_at_1_to_1() {
     let text = pdf_dicts(&pdf);
     assert_eq!(
         text.matches("/Type/Page").count() - text.matches("/Type/Pages").count(),
-        7,
-        "the project's seven sheets, seven pages"
+        8,
+        "the project's eight sheets, eight pages"
     );
-    assert!(text.contains("/Count 7"));
+    assert!(text.contains("/Count 8"));
     let boxes = media_boxes_mm(&pdf);
-    assert_eq!(boxes.len(), 7, "{boxes:?}");
-    for (w, h) in &boxes {
-        assert!(
-            (w - 841.0).abs() < 0.5 && (h - 594.0).abs() < 0.5,
-            "A1: {w} × {h} mm"
-        );
-    }
+    assert_eq!(boxes.len(), 8, "{boxes:?}");
+    // Seven A1 sheets and the flywheel's part drawing on an A2, each page its sheet's size.
+    let a1 = |&(w, h): &(f64, f64)| (w - 841.0).abs() < 0.5 && (h - 594.0).abs() < 0.5;
+    let a2 = |&(w, h): &(f64, f64)| (w - 594.0).abs() < 0.5 && (h - 420.0).abs() < 0.5;
+    assert_eq!(boxes.iter().filter(|b| a1(b)).count(), 7, "{boxes:?}");
+    assert_eq!(boxes.iter().filter(|b| a2(b)).count(), 1, "{boxes:?}");
     assert!(
         text.contains("/FontFile2") || text.contains("/FontFile3"),
         "font embedded"
@@ -191,9 +190,9 @@ fn render_writes_one_pdf_per_scene_with_every_sheet_a_page_at_1_to_1() {
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .collect();
     files.sort();
-    assert_eq!(files.len(), 15, "{files:?}");
+    assert_eq!(files.len(), 17, "{files:?}");
     assert!(
-        files.iter().filter(|f| f.ends_with(".svg")).count() == 7,
+        files.iter().filter(|f| f.ends_with(".svg")).count() == 8,
         "{files:?}"
     );
 }

@@ -165,6 +165,7 @@ rules! {
     shaper_kinematics_texts_apart, shaper_kinematics_inside_frame: "shaper" / "kinematics",
     shaper_forces_texts_apart, shaper_forces_inside_frame: "shaper" / "forces",
     shaper_dynamics_texts_apart, shaper_dynamics_inside_frame: "shaper" / "dynamics",
+    shaper_flywheel_texts_apart, shaper_flywheel_inside_frame: "shaper" / "flywheel",
     slider_crank_kinematics_texts_apart, slider_crank_kinematics_inside_frame: "slider-crank" / "kinematics",
     four_bar_kinematics_texts_apart, four_bar_kinematics_inside_frame: "four-bar" / "kinematics",
     six_bar_kinematics_texts_apart, six_bar_kinematics_inside_frame: "six-bar" / "kinematics",
@@ -192,6 +193,7 @@ rules! {
     v_engine_kinematics_texts_apart, v_engine_kinematics_inside_frame: "v-engine" / "kinematics",
     v_engine_forces_texts_apart, v_engine_forces_inside_frame: "v-engine" / "forces",
     v_engine_dynamics_texts_apart, v_engine_dynamics_inside_frame: "v-engine" / "dynamics",
+    v_engine_flywheel_texts_apart, v_engine_flywheel_inside_frame: "v-engine" / "flywheel",
 }
 
 /// The scene files of `constructions/`.

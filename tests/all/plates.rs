@@ -140,6 +140,7 @@ plates! {
     shaper_kinematics: "shaper" / "kinematics",
     shaper_forces: "shaper" / "forces",
     shaper_dynamics: "shaper" / "dynamics",
+    shaper_flywheel: "shaper" / "flywheel",
     slider_crank_kinematics: "slider-crank" / "kinematics",
     four_bar_kinematics: "four-bar" / "kinematics",
     six_bar_kinematics: "six-bar" / "kinematics",
@@ -167,6 +168,7 @@ plates! {
     v_engine_kinematics: "v-engine" / "kinematics",
     v_engine_forces: "v-engine" / "forces",
     v_engine_dynamics: "v-engine" / "dynamics",
+    v_engine_flywheel: "v-engine" / "flywheel",
 }
 
 /// Every plate of every scene in `constructions/` has its test above.

@@ -43,8 +43,8 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
     let all = sheets::build_all(&session, Lang::Ru).expect("plates");
     assert_eq!(
         all.len(),
-        7,
-        "the project's set: kinematics on two sheets, the force analysis one per position, the cam, the gears, the dynamics"
+        8,
+        "the project's set: kinematics on two sheets, the force analysis one per position, the cam, the gears, the dynamics, the flywheel"
     );
     let text = all
         .iter()
@@ -89,8 +89,8 @@ fn the_shaper_sheets_print_the_scene_scales_as_given() {
             (tb.sheet_no, tb.sheets, tb.designation.clone())
         })
         .collect();
-    let want: Vec<(u32, u32, String)> = (1..=7)
-        .map(|k| (k, 7, format!("ТММ.КП.000.{k:02}")))
+    let want: Vec<(u32, u32, String)> = (1..=8)
+        .map(|k| (k, 8, format!("ТММ.КП.000.{k:02}")))
         .collect();
     assert_eq!(numbers, want);
 }

@@ -35,6 +35,31 @@ catalogue! {
         Merkin => ("Меркин", "Меркін", "Merkin"),
         Rim => ("обод", "обід", "rim"),
         Disc => ("диск", "диск", "disc"),
+        RimPart => ("Маховик с ободом, спицами и ступицей", "Маховик з ободом, спицями і маточиною", "Flywheel with a rim, spokes and a hub"),
+        DiscPart => ("Маховик-диск", "Маховик-диск", "Disc flywheel"),
+        Exact => ("точно", "точно", "exactly"),
+        SizedFrom => (
+            "Размеры — по J_{м} построения (диаграмма энергомасс):",
+            "Розміри — за J_{м} побудови (діаграма енергомас):",
+            "Sized from the construction's J_{м} (the energy–mass diagram):"
+        ),
+        SizedByConstruction => (
+            "размеры — по J_{м} построения",
+            "розміри — за J_{м} побудови",
+            "sized from the construction's J_{м}"
+        ),
+        CastIron => ("серый чугун", "сірий чавун", "grey cast iron"),
+        Steel => ("сталь", "сталь", "steel"),
+        Material => ("Материал", "Матеріал", "Material"),
+        Dimensions => ("Размеры маховика", "Розміри маховика", "The flywheel's dimensions"),
+        Dimension => ("Размер", "Розмір", "Dimension"),
+        Rule => ("Формула", "Формула", "Rule"),
+        Millimetres => ("мм", "мм", "mm"),
+        SpokeSections => (
+            "Сечения спицы у ступицы и у обода — эллипсы, b/a = {ratio}",
+            "Перерізи спиці біля маточини і біля обода — еліпси, b/a = {ratio}",
+            "The spoke's sections at the hub and at the rim are ellipses, b/a = {ratio}"
+        ),
         Tables => (
             "Таблицы 9, 10: {M}, J_{пр}, ΔT (графически | аналитически | δ, %)",
             "Таблиці 9, 10: {M}, J_{пр}, ΔT (графічно | аналітично | δ, %)",

@@ -19,7 +19,8 @@ pub(crate) mod symbols;
 
 pub(crate) use audit::AuditText;
 pub(crate) use linkage::Text;
-pub(super) use machines::{CamText, DynamicsText, RotorText};
+pub(crate) use machines::DynamicsText;
+pub(super) use machines::{CamText, RotorText};
 pub(crate) use machines::{FrictionText, GearText};
 pub(crate) use meaning_cases::CaseMeaning;
 pub(crate) use meaning_kinematics::KinematicsMeaning;

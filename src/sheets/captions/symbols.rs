@@ -139,6 +139,10 @@ fn russian(symbol: Symbol, subject: &str) -> String {
     if (symbol, subject) == (Symbol::Length, "travel_min") {
         return "X_{min}".into();
     }
+    // The flywheel's outer diameter: D_{м}.
+    if (symbol, subject) == (Symbol::Length, "flywheel") {
+        return "D_{м}".into();
+    }
     let letter = letter(symbol);
     // A reaction names two links, written apart as the textbooks do: R_{1-2}; so does the
     // arm of a reaction on a guide, as its drawing dimensions it: h_{0-5}.
@@ -158,7 +162,7 @@ fn russian(symbol: Symbol, subject: &str) -> String {
         (Symbol::Work | Symbol::Moment, "res") => "с".into(),
         (Symbol::Work | Symbol::Moment, "drive") => "д".into(),
         (Symbol::Inertia | Symbol::Moment, "red") => "пр".into(),
-        (Symbol::Inertia, "flywheel") => "м".into(),
+        (Symbol::Inertia | Symbol::Mass, "flywheel") => "м".into(),
         (Symbol::ContactRatio, "alpha") => "α".into(),
         (Symbol::Radius, "roller") => "р".into(),
         // A generated wheel's values name the wheel after the quantity's own subscript:
@@ -264,6 +268,8 @@ mod tests {
         assert_eq!(ru(Symbol::Work, "res"), "A_{с}");
         assert_eq!(ru(Symbol::Moment, "drive"), "M_{д}");
         assert_eq!(ru(Symbol::Inertia, "flywheel"), "J_{м}");
+        assert_eq!(ru(Symbol::Length, "flywheel"), "D_{м}");
+        assert_eq!(ru(Symbol::Mass, "flywheel"), "m_{м}");
         assert_eq!(ru(Symbol::ContactRatio, "alpha"), "ε_{α}");
         assert_eq!(ru(Symbol::GearRatio, "1_8_req"), "u_{18}^{треб}");
         assert_eq!(ru(Symbol::ShiftCoefficient, "min_p"), "x_{min,p}");

@@ -1,0 +1,137 @@
+//! Plate "Маховик" (seed 000 §5.7): the flywheel as a part drawing on a sheet of its own, at
+//! the round scale that draws it whole (the seed's 1:4), on the smallest sheet from A3 up
+//! that holds it: the axial section and the front view with the spokes' sections, every
+//! dimension from the J_м the dynamics sheet's construction gives (Wittenbauer's tangents) —
+//! the flywheel a hand-in sizes — with the exact J_м and the δ each gives, and the table of
+//! the dimensions with the proportions they follow. A scene whose machine needs no flywheel
+//! has no such sheet.
+
+use super::captions::{unit_in, DynamicsText};
+use super::layout::{lay_out_smallest, Block, Part};
+use super::BuildError;
+use crate::dynamics::{Dynamics, FlywheelKind};
+use crate::geom::DVec2;
+use crate::plate::{Plate, SheetSize, TableBlock};
+use crate::scale::{format_fixed, format_number, format_sig, Lang};
+use crate::study::Session;
+
+/// The sheets tried, smallest first.
+const SIZES: [SheetSize; 2] = [SheetSize::A3, SheetSize::A2];
+/// Text height of the data lines and the table, mm.
+const TEXT_MM: f64 = 3.5;
+
+/// Build the flywheel's sheet; none when no flywheel is needed.
+pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
+    let d = session.dynamics()?;
+    if d.wheel.steps.is_empty() {
+        return Ok(Vec::new());
+    }
+    let kind = match d.size.kind {
+        FlywheelKind::Rim => DynamicsText::RimPart,
+        FlywheelKind::Disc => DynamicsText::DiscPart,
+    };
+    let blocks = vec![
+        Block::Views {
+            parts: vec![Part::new(d.wheel.clone(), DVec2::ZERO, None)],
+            scale: None,
+        },
+        // The table beside the drawing, the data under it.
+        Block::Table(dimensions_table(&d, lang)),
+        Block::Text {
+            lines: data_lines(&d, lang),
+            size_mm: TEXT_MM,
+        },
+    ];
+    let title = super::title_block(session.scene(), kind.get(lang), d.wheel.scale, lang);
+    lay_out_smallest(&SIZES, blocks, "flywheel", &title, lang)
+}
+
+/// The flywheel's inertia by the construction and exactly, with the δ each gives; its
+/// material and coefficients; D and m worked.
+fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
+    let (s, fw) = (&d.size, &d.spec.flywheel);
+    let kgm2 = unit_in("kg*m^2", lang);
+    let mm = unit_in("mm", lang);
+    let delta = |x: f64| {
+        format!(
+            "δ = {} = 1/{}",
+            format_sig(x, 4, lang),
+            format_sig(1.0 / x, 3, lang)
+        )
+    };
+    let material = if fw.cast_iron() {
+        DynamicsText::CastIron
+    } else {
+        DynamicsText::Steel
+    };
+    let ratio = d
+        .size
+        .rule("b_{1}")
+        .map(|(r, _)| format_number(r, lang))
+        .unwrap_or_default();
+    let mut lines = vec![
+        DynamicsText::SizedFrom.get(lang).to_string(),
+        format!(
+            "J_{{м}} = μ_{{T}}·kl/(δω_{{ср}}^2) = {} {kgm2}, {}",
+            format_sig(s.j, 4, lang),
+            delta(d.delta_of[0]),
+        ),
+        format!(
+            "J_{{м}} {} = {} {kgm2}, {}, D = {} {mm}",
+            DynamicsText::Exact.get(lang),
+            format_sig(d.exact.j_fw, 4, lang),
+            delta(d.exact.delta()),
+            format_fixed(d.exact_size.d * 1e3, 0, lang),
+        ),
+        format!(
+            "{}: {}, ρ = {} {}; K_{{j}} = {}, K_{{m}} = {}",
+            DynamicsText::Material.get(lang),
+            material.get(lang),
+            format_sig(fw.rho, 5, lang),
+            unit_in("kg/m^3", lang),
+            format_sig(fw.k_j, 4, lang),
+            format_sig(fw.k_m, 4, lang),
+        ),
+        format!(
+            "D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {mm}, m = K_{{m}}ρD^3 = {} {}",
+            format_fixed(s.d * 1e3, 0, lang),
+            format_sig(s.mass, 4, lang),
+            unit_in("kg", lang),
+        ),
+    ];
+    if s.kind == FlywheelKind::Rim {
+        lines.push(
+            DynamicsText::SpokeSections
+                .get(lang)
+                .replace("{ratio}", &ratio),
+        );
+    }
+    lines
+}
+
+/// Every dimension with the proportion it follows (`d_{1}` = 0,2D) and its value, mm.
+fn dimensions_table(d: &Dynamics, lang: Lang) -> TableBlock {
+    let rows = d
+        .size
+        .dims
+        .iter()
+        .map(|&(name, value)| {
+            let rule = d.size.rule(name).map_or_else(
+                || "(J_{м}/(K_{j}ρ))^{1/5}".to_string(),
+                |(factor, of)| format!("{}{of}", format_number(factor, lang)),
+            );
+            vec![name.to_string(), rule, format_fixed(value * 1e3, 0, lang)]
+        })
+        .collect();
+    super::layout::table(
+        DynamicsText::Dimensions,
+        &[
+            (DynamicsText::Dimension, 26.0),
+            (DynamicsText::Rule, 36.0),
+            (DynamicsText::Millimetres, 16.0),
+        ],
+        rows,
+        TEXT_MM,
+        lang,
+    )
+}

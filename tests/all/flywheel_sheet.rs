@@ -1,0 +1,211 @@
+//! The flywheel as a part drawing (issue 45): the shaper's set carries it as a sheet of its
+//! own, the eighth, at 1:4 as seed 000 draws it; the flywheel is sized from the J_м the
+//! dynamics sheet's construction gives (Wittenbauer's tangents), not the exact one; every
+//! dimension on the sheet is its proportion of that D, worked here from the scene's numbers
+//! and the seed's proportions (000 §5.7, L1471–1480); a machine that needs no flywheel,
+//! or a scene without `[dynamics]`, has no such sheet.
+
+use crate::support::root;
+use tmm::check::{Method, Row, Symbol};
+use tmm::construct::{Drafting, Item};
+use tmm::plate::Plate;
+use tmm::scale::Lang;
+use tmm::scene::{self, PlateKind, Scene};
+use tmm::study::Session;
+
+fn load(name: &str) -> Scene {
+    scene::load(&root().join("constructions").join(name)).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn parse(text: &str) -> Scene {
+    scene::parse(text, std::path::Path::new("flywheel-test.toml")).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Every sheet of `s` in the order of the set.
+fn sheets(s: &Scene, drafting: Drafting) -> Vec<(PlateKind, Plate)> {
+    tmm::render::plates(s, Lang::Ru, drafting).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Seed 000's dimensions of a rim with spokes of outer diameter `d` (L1471–1480, the
+/// spokes' b/a = 0.4 of its values), m.
+fn seed_dimensions(d: f64) -> Vec<(&'static str, f64)> {
+    let b = 0.125 * d;
+    let (a1, a2) = (1.1 * b, 0.88 * b);
+    vec![
+        ("D", d),
+        ("d_{1}", 0.2 * d),
+        ("d_{2}", 0.3 * d),
+        ("d_{3}", 0.8 * d),
+        ("b", b),
+        ("b_{ст}", 1.05 * b),
+        ("a_{1}", a1),
+        ("a_{2}", a2),
+        ("b_{1}", 0.4 * a1),
+        ("b_{2}", 0.4 * a2),
+    ]
+}
+
+/// The report's row `symbol`/`subject` found by Wittenbauer's tangents.
+fn wittenbauer(rows: &[Row], symbol: Symbol, subject: &str) -> Row {
+    rows.iter()
+        .find(|r| {
+            r.key.symbol == symbol && r.key.subject == subject && r.method == Method::Wittenbauer
+        })
+        .cloned()
+        .unwrap_or_else(|| panic!("no {symbol:?} {subject} row by Wittenbauer"))
+}
+
+#[test]
+fn the_shaper_set_draws_the_flywheel_as_its_eighth_sheet_at_1_4() {
+    let s = load("shaper.toml");
+    let all = sheets(&s, Drafting::EXACT);
+    assert_eq!(
+        all.len(),
+        8,
+        "{:?}",
+        all.iter().map(|p| &p.1.name).collect::<Vec<_>>()
+    );
+    let (kind, p) = all.last().expect("a sheet");
+    assert_eq!(*kind, PlateKind::Flywheel);
+    assert_eq!(p.name, "flywheel");
+    let tb = &p.title_block;
+    assert_eq!((tb.sheet_no, tb.sheets), (8, 8));
+    assert_eq!(tb.designation, "ТММ.КП.000.08");
+    assert_eq!(tb.scale, "1:4");
+    // One drawing at μ_l = 0,004 m/mm, on a sheet no larger than A2.
+    assert_eq!(p.views.len(), 1);
+    assert!((p.views[0].figure.scale.value() - 0.004).abs() < 1e-15);
+    assert!(p.sheet.width_mm() <= 594.0 && p.sheet.height_mm() <= 420.0);
+    // The dynamics sheet no longer draws the flywheel.
+    for (k, p) in &all {
+        if *k == PlateKind::Dynamics {
+            for v in &p.views {
+                assert!(
+                    v.figure
+                        .steps
+                        .iter()
+                        .all(|st| !st.note.starts_with("dimension d_")),
+                    "{}: {}",
+                    p.name,
+                    v.figure.title
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn every_dimension_is_its_proportion_of_the_d_the_construction_gives() {
+    let s = load("shaper.toml");
+    let spec = s.dynamics.clone().expect("[dynamics]").flywheel;
+    for drafting in [Drafting::EXACT, Drafting::new(0.5).expect("0.5 mm")] {
+        let session = Session::new(&s, drafting);
+        let rows = session.report().expect("report").rows;
+        let j = wittenbauer(&rows, Symbol::Inertia, "flywheel");
+        // The sizing's J_м is the construction's, not the exact one.
+        let d = session.dynamics().expect("dynamics");
+        assert_eq!(d.size.j, j.graphical);
+        assert!(
+            (j.graphical - j.analytic).abs() > 0.05 * j.analytic,
+            "{j:?}"
+        );
+        // D = (J_м/(K_j·ρ))^(1/5) and the proportions, worked from the scene's numbers.
+        let outer = (j.graphical / (spec.k_j * spec.rho)).powf(0.2);
+        let want = seed_dimensions(outer);
+        // The report's D_м row: this D against the exact J_м's.
+        let dr = wittenbauer(&rows, Symbol::Length, "flywheel");
+        assert!((dr.graphical - outer).abs() < 1e-12 * outer, "{dr:?}");
+        let exact_d = (j.analytic / (spec.k_j * spec.rho)).powf(0.2);
+        assert!((dr.analytic - exact_d).abs() < 1e-12 * exact_d, "{dr:?}");
+        let mr = wittenbauer(&rows, Symbol::Mass, "flywheel");
+        let mass = spec.k_m * spec.rho * outer.powi(3);
+        assert!((mr.graphical - mass).abs() < 1e-9 * mass, "{mr:?}");
+
+        let all = sheets(&s, drafting);
+        let (_, p) = all
+            .iter()
+            .find(|(k, _)| *k == PlateKind::Flywheel)
+            .expect("the flywheel's sheet");
+        let figure = &p.views[0].figure;
+        let mu = figure.scale.value();
+        let mut seen = Vec::new();
+        for st in &figure.steps {
+            let Some(name) = st.note.strip_prefix("dimension ") else {
+                continue;
+            };
+            let Item::Dimension { from, to, .. } = st.item else {
+                panic!("{name}: not a dimension");
+            };
+            let value = want
+                .iter()
+                .find(|w| w.0 == name)
+                .unwrap_or_else(|| panic!("{name}: not a dimension of the flywheel"))
+                .1;
+            // Drawn at μ, and written in whole millimetres.
+            let drawn = from.distance(to) * mu;
+            assert!(
+                (drawn - value).abs() < 1e-9 * value,
+                "{name}: {drawn} vs {value}"
+            );
+            let text = st.label.as_ref().expect("its text").text.clone();
+            let diameter = ["D", "d_{1}", "d_{2}", "d_{3}"].contains(&name);
+            assert_eq!(text.starts_with('⌀'), diameter, "{name}: {text}");
+            let written: f64 = text.trim_start_matches('⌀').parse().expect(&text);
+            assert!(
+                (written - value * 1e3).abs() <= 0.5 + 1e-9,
+                "{name}: {text} vs {} mm",
+                value * 1e3
+            );
+            seen.push(name.to_string());
+        }
+        seen.sort();
+        let mut names: Vec<String> = want.iter().map(|w| w.0.to_string()).collect();
+        names.sort();
+        assert_eq!(seen, names, "every dimension once");
+        // The sheet states both J_м with the δ each gives.
+        let text: String = p.texts.iter().flat_map(|t| t.lines.clone()).collect();
+        let sig4 = |x: f64| tmm::scale::format_sig(x, 4, Lang::Ru);
+        for x in [j.graphical, j.analytic] {
+            assert!(text.contains(&sig4(x)), "{} not in {text}", sig4(x));
+        }
+        let delta = wittenbauer(&rows, Symbol::Irregularity, "");
+        assert!(text.contains(&sig4(delta.graphical)), "{text}");
+    }
+}
+
+#[test]
+fn no_flywheel_no_part_sheet() {
+    // A machine whose construction needs no flywheel for δ = 0,5.
+    let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).expect("shaper");
+    let loose = text.replace("delta = 0.06666666666666667", "delta = 0.5");
+    assert_ne!(loose, text);
+    let s = parse(&loose);
+    assert!(s.plates.contains(&PlateKind::Flywheel));
+    let session = Session::new(&s, Drafting::EXACT);
+    let d = session.dynamics().expect("dynamics");
+    assert_eq!(d.diagrams.wittenbauer.j_fw, 0.0);
+    let kinds: Vec<PlateKind> = tmm::sheets::build_all(&session, Lang::Ru)
+        .unwrap_or_else(|(k, e)| panic!("{k:?}: {e}"))
+        .into_iter()
+        .map(|(k, _)| k)
+        .collect();
+    assert!(kinds.contains(&PlateKind::Dynamics));
+    assert!(!kinds.contains(&PlateKind::Flywheel), "{kinds:?}");
+    // A scene without [dynamics]: nothing to size; asking for the sheet is refused by key.
+    let four = load("four-bar.toml");
+    assert!(sheets(&four, Drafting::EXACT)
+        .iter()
+        .all(|(k, _)| *k != PlateKind::Flywheel));
+    let text = std::fs::read_to_string(root().join("constructions/four-bar.toml")).expect("4");
+    let asks = text.replace(
+        "wanted = [\"positions\", \"kinematics\"]",
+        "wanted = [\"positions\", \"flywheel\"]",
+    );
+    assert_ne!(asks, text);
+    let e = scene::parse(&asks, std::path::Path::new("x.toml")).expect_err("refused");
+    let msg = e.to_string();
+    assert!(
+        msg.contains("plates.wanted") && msg.contains("[dynamics]"),
+        "{msg}"
+    );
+}
