@@ -22,7 +22,7 @@ pub const LAMBDA_CLIP: f64 = 4.0;
 /// picture is dense about the pole (both wheels' circles, teeth and flanks, T–T, N–N and the
 /// line of centres cross there), and a name flown off to where no line runs stands beside
 /// another point (`N₁ P B₁` in a row under P).
-pub const NAME_WITHIN_MM: f64 = 5.0;
+pub const NAME_WITHIN_MM: f64 = 6.0;
 
 /// The meshing picture and what was read off it.
 #[derive(Debug, Clone, PartialEq)]

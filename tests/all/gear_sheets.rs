@@ -81,6 +81,16 @@ fn view_labels(plate: &Plate, title: &str) -> Vec<(String, DVec2, f64, bool)> {
         .collect()
 }
 
+/// Every label of `labels` stands within `bound` mm of its object.
+fn assert_near(labels: &[(String, DVec2, f64, bool)], bound: f64, what: &str) {
+    for (text, _, d, _) in labels {
+        assert!(
+            *d <= bound + 1e-9,
+            "{what}: {text} {d:.2} mm from its object"
+        );
+    }
+}
+
 /// The meshing picture names O₁, O₂, P, N₁, N₂, B₁, B₂ each within [`NAME_WITHIN_MM`] of its
 /// point (the review saw `B₂` 10 mm off and `N₁ P B₁` in a row under P), and no label is a
 /// bare `N` (the line of action is named by N₁ and N₂).
@@ -103,14 +113,12 @@ fn the_meshing_picture_names_each_point_beside_it() {
                     !texts.contains(&"N"),
                     "{name} {lang:?}: a stray N in {texts:?}"
                 );
-                for (text, _, d, point) in &labels {
-                    if *point {
-                        assert!(
-                            *d <= NAME_WITHIN_MM + 1e-9,
-                            "{name} {lang:?} {drafting:?}: {text} {d:.2} mm from its point"
-                        );
-                    }
-                }
+                let points: Vec<_> = labels.iter().filter(|l| l.3).cloned().collect();
+                assert_near(
+                    &points,
+                    NAME_WITHIN_MM,
+                    &format!("{name} {lang:?} {drafting:?}"),
+                );
             }
         }
     }
@@ -168,12 +176,7 @@ fn detail_a_names_what_it_shows() {
                 let labels = view_labels(plate, "detail of generation");
                 assert_eq!(labels.len(), 6, "{name} {lang:?}: {labels:?}");
                 assert!(labels.iter().any(|l| l.0 == "r_b"), "{labels:?}");
-                for (text, _, d, _) in &labels {
-                    assert!(
-                        *d <= DETAIL_NAME_WITHIN_MM + 1e-9,
-                        "{name} {lang:?}: {text} {d:.2} mm from its object"
-                    );
-                }
+                assert_near(&labels, DETAIL_NAME_WITHIN_MM, &format!("{name} {lang:?}"));
             }
         }
     }
