@@ -110,6 +110,11 @@ pub struct Label {
     pub anchor: DVec2,
     /// Preferred direction from the anchor to the text (unit or zero for centred on the anchor).
     pub toward: DVec2,
+    /// The farthest the text may stand from its point, sheet mm (the nearest edge of its
+    /// box): a point of a dense picture (the pole P among the teeth and circles of a
+    /// meshing) keeps its name beside it, struck by a thin line rather than flown off to
+    /// where no line runs; `None`: wherever the placer finds the most room.
+    pub within_mm: Option<f64>,
 }
 
 /// One recorded step.
@@ -244,6 +249,7 @@ impl Figure {
                     text: l.text.clone(),
                     anchor: m(l.anchor),
                     toward: turn(l.toward),
+                    within_mm: l.within_mm,
                 });
                 Step {
                     item,
@@ -417,6 +423,7 @@ impl Figure {
                 text,
                 anchor: at,
                 toward,
+                within_mm: None,
             }),
             from: Vec::new(),
             group: 0,
@@ -489,6 +496,7 @@ mod tests {
                 text: "A".into(),
                 anchor: DVec2::new(1.0, 2.0),
                 toward: DVec2::new(0.6, 0.8),
+                within_mm: None,
             }),
             from: Vec::new(),
             group: 0,

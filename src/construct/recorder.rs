@@ -91,7 +91,21 @@ impl Recorder {
                 text: text.into(),
                 anchor,
                 toward,
+                within_mm: None,
             });
+        }
+    }
+
+    /// Keep the label of step `id` within `mm` of its point on the sheet
+    /// ([`Label::within_mm`]).
+    pub fn keep_label_within(&mut self, id: StepId, mm: f64) {
+        if let Some(label) = self
+            .figure
+            .steps
+            .get_mut(id.0 as usize)
+            .and_then(|s| s.label.as_mut())
+        {
+            label.within_mm = Some(mm);
         }
     }
 

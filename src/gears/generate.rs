@@ -8,6 +8,7 @@
 //! normal through P); undercut is detected where the drawn fillet crosses the
 //! drawn involute, pointing where the tip thickness read off the drawing falls below 0.3m.
 
+use super::detail::DetailMark;
 use super::rack::{Cutting, Piece};
 use super::trace::{outline_runs, polyline_crossing, refine, touching};
 use super::{GearError, MIN_TIP};
@@ -47,6 +48,10 @@ pub struct Generation {
     /// The undercut's detail view: its zone on the figure (figure mm) and its scale;
     /// `None` without undercut ([`Generation::detail_view`]).
     pub detail: Option<(crate::geom::Circle, Scale)>,
+    /// What the detail view names and where (figure mm of [`Generation::figure`]): the
+    /// involute, the limit point, the fillet, the undercut, r_b, the rack tip; empty
+    /// without a detail.
+    pub detail_marks: Vec<(DetailMark, DVec2)>,
     /// The touching points of the right half of the tooth (all positions, all pieces).
     pub touches: Vec<Touch>,
     /// The junction of the drawn involute and fillet, m (their crossing with undercut, the
@@ -327,6 +332,7 @@ pub fn generate(
     });
     let sb = if rb > rf { across(rb) } else { None };
     let mut detail = None;
+    let mut detail_marks = Vec::new();
     if undercut {
         // The undercut: uncut, the tooth would follow the involute down to the base circle
         // and the radial line below it; the fillet cuts into that outline from the junction
@@ -373,6 +379,13 @@ pub fn generate(
             let at = zone.center + DVec2::new(1.0, 1.0).normalize() * zone.radius;
             rec.label(id, DETAIL_LETTER, at, DVec2::new(1.0, 1.0));
             detail = Some((zone, scale_d));
+            let drawn_states: Vec<f64> = drawn
+                .iter()
+                .filter_map(|i| states.get(*i))
+                .copied()
+                .collect();
+            detail_marks =
+                super::detail::marks(&c, mu, &zone, junction, &fi, &region, &drawn_states);
         }
         for side in [1.0, -1.0] {
             let flip = |p: DVec2| mm(DVec2::new(side * p.x, p.y));
@@ -462,6 +475,7 @@ pub fn generate(
         figure: rec.finish(),
         drawn: drawn.iter().map(|i| *i as u32 + 1).collect(),
         detail,
+        detail_marks,
         touches,
         junction,
         undercut,
@@ -481,13 +495,6 @@ impl Generation {
     /// the rack positions only the [`drawn`](Generation::drawn) ones, numbered.
     pub fn drawing(&self) -> Figure {
         self.figure.only_groups(&self.drawn)
-    }
-
-    /// The undercut's detail view: the zone of [`drawing`](Generation::drawing) about the
-    /// right flank's undercut, enlarged ([`Figure::detail`]).
-    pub fn detail_view(&self) -> Option<Figure> {
-        self.detail
-            .map(|(zone, scale)| self.drawing().detail(&zone, scale))
     }
 }
 

@@ -18,6 +18,11 @@ use std::f64::consts::TAU;
 pub const LAMBDA_MM: f64 = 25.0;
 /// The ordinates a diagram of specific sliding shows, |λ| ≤ this.
 pub const LAMBDA_CLIP: f64 = 4.0;
+/// The farthest a point's name stands from its point on the meshing picture, sheet mm: the
+/// picture is dense about the pole (both wheels' circles, teeth and flanks, T–T, N–N and the
+/// line of centres cross there), and a name flown off to where no line runs stands beside
+/// another point (`N₁ P B₁` in a row under P).
+pub const NAME_WITHIN_MM: f64 = 6.0;
 
 /// The meshing picture and what was read off it.
 #[derive(Debug, Clone, PartialEq)]
@@ -78,6 +83,7 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         &[],
     );
     rec.label(j1, "O_1", o1, DVec2::new(-1.0, -0.3));
+    rec.keep_label_within(j1, NAME_WITHIN_MM);
     let j2 = rec.draw(
         "O₂",
         Item::Joint {
@@ -88,6 +94,7 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         &[],
     );
     rec.label(j2, "O_2", o2, DVec2::new(-1.0, 0.3));
+    rec.keep_label_within(j2, NAME_WITHIN_MM);
     rec.draw(
         "the line of centres O₁O₂",
         Item::Segment(Segment::new(o1, o2)),
@@ -119,6 +126,7 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         DVec2::new(-1.0, 0.4),
         &[],
     );
+    rec.keep_label_within(pid, NAME_WITHIN_MM);
     // 3. The common tangent T–T.
     let half = mm(pair.g) * 0.9;
     let tt = rec.draw(
@@ -132,13 +140,13 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
     let d = DVec2::new(aw.cos(), aw.sin());
     let n1 = p + d * (o1 - p).dot(d);
     let n2 = p + d * (o2 - p).dot(d);
+    // Named by its points N₁, N₂ alone: a letter at its end reads as a third point.
     let nn = rec.draw(
         "the line of action N–N at α_w to T–T",
         Item::Segment(Segment::new(n1 - d * 0.15 * half, n2 + d * 0.15 * half)),
         Role::Construction,
         &[pid],
     );
-    rec.label(nn, "N", n2 + d * 0.15 * half, d);
     let n1id = rec.point(
         "N₁: the foot of O₁",
         n1,
@@ -147,6 +155,7 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         DVec2::new(-0.5, 1.0),
         &[nn],
     );
+    rec.keep_label_within(n1id, NAME_WITHIN_MM);
     let n2id = rec.point(
         "N₂: the foot of O₂",
         n2,
@@ -155,6 +164,7 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         DVec2::new(0.5, -1.0),
         &[nn],
     );
+    rec.keep_label_within(n2id, NAME_WITHIN_MM);
     rec.draw(
         "O₁N₁",
         Item::Segment(Segment::new(o1, n1)),
@@ -246,6 +256,7 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         )
         .map_err(cons)?;
     rec.label(b1id, "B_1", b1, DVec2::new(0.6, -1.0));
+    rec.keep_label_within(b1id, NAME_WITHIN_MM);
     let (b2, _, b2id) = rec
         .meet_line_circle(
             "B₂",
@@ -259,6 +270,7 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         )
         .map_err(cons)?;
     rec.label(b2id, "B_2", b2, DVec2::new(-0.6, 1.0));
+    rec.keep_label_within(b2id, NAME_WITHIN_MM);
     rec.draw(
         "the practical line of action B₁B₂",
         Item::Segment(Segment::new(b1, b2)),

@@ -14,6 +14,7 @@
 //! a_w = 180.79 mm (exact 179.18) and ε_α = 1.14 (exact 1.1637), and lays off "p = 14.13 mm".
 
 pub mod blocking;
+mod detail;
 mod differential;
 mod generate;
 mod involute;
@@ -38,10 +39,11 @@ mod train_rank;
 mod train_study;
 mod triangles;
 
+pub use detail::{DetailMark, DETAIL_NAME_WITHIN_MM};
 pub use differential::Differential;
 pub use generate::{generate, Generation, DETAIL_LETTER};
 pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
-pub use mesh::LAMBDA_MM;
+pub use mesh::{LAMBDA_MM, NAME_WITHIN_MM};
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
 pub use rows::PairSeed;

@@ -43,20 +43,20 @@ pub(super) fn outline_runs(c: &Cutting, q: f64) -> Vec<Vec<DVec2>> {
         pts.push(DVec2::new(uc0 + flank(top), top));
     }
     let limit = c.ra + 0.5 * m;
-    let mut runs: Vec<Vec<DVec2>> = Vec::new();
-    let mut cur: Vec<DVec2> = Vec::new();
-    for p in pts {
-        let f = DVec2::new(p.x + q, base + p.y);
-        if f.length() <= limit {
-            cur.push(f);
-        } else if !cur.is_empty() {
-            runs.push(std::mem::take(&mut cur));
-        }
-    }
-    if cur.len() > 1 {
-        runs.push(cur);
-    }
-    runs.retain(|r| r.len() > 1);
+    let fixed: Vec<DVec2> = pts
+        .into_iter()
+        .map(|p| DVec2::new(p.x + q, base + p.y))
+        .collect();
+    // Cut where the outline crosses the circle (between its points), so that each run is
+    // seen to enter the blank.
+    let blank = crate::geom::Circle {
+        center: DVec2::ZERO,
+        radius: limit,
+    };
+    let mut runs = crate::geom::polyline_in_circle(&fixed, &blank);
+    // A run that never enters the tip circle cuts nothing: the tool's tip passing over the
+    // blank, its flanks out of the drawing (it would float beside the wheel).
+    runs.retain(|r| r.iter().any(|p| p.length() < c.ra));
     runs
 }
 

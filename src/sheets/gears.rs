@@ -5,13 +5,13 @@
 //! cut wheels, no train) also draws the pair's blocking contour with the scene's point and
 //! the textbook's choices, and names them in its lines. A1 landscape.
 
-use super::captions::{unit_in, GearText, Text};
+use super::captions::{unit_in, GearText};
 use super::layout::{
     drawn_value, lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey,
 };
 use super::BuildError;
-use crate::check::Row;
-use crate::gears::DETAIL_LETTER;
+use crate::check::{Method, Row};
+use crate::gears::{DetailMark, DETAIL_LETTER};
 use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_sig, Lang};
@@ -31,13 +31,13 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let mm_ = unit_in("mm", lang);
     let mut lines = vec![GearText::DataAndResults.get(lang).to_string()];
     let mut plan = None;
-    // The blocking contour on a pair's own sheet (seed 002 PZ3); the course project's A1
-    // gear sheet (a pair, its cut wheels and the train) has no room for it: its contour is
-    // in the report's rows and notes.
+    // The blocking contour on a pair's own sheet (seed 002 PZ3), and on any gear sheet
+    // whose shifts the contour chose (`choose`): the choice is shown where it was made. The
+    // course project's gear sheet of given shifts keeps it in the report's rows and notes.
     let contour = g
         .blocking
         .as_ref()
-        .filter(|_| g.racks.is_empty() && g.train.is_none());
+        .filter(|b| (g.racks.is_empty() && g.train.is_none()) || b.chosen.is_some());
     if let Some((p, m)) = &g.pair {
         plan = Some(m.scale);
         let caption = format!("{}, {}", GearText::Meshing.get(lang), m.scale.caption(lang));
@@ -115,6 +115,13 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                     f(ix.sa[1]),
                 ));
             }
+            if let Some(c) = b.chosen {
+                lines.push(format!(
+                    "{} {}",
+                    GearText::ChosenBy.get(lang),
+                    criterion_words(c, lang)
+                ));
+            }
         }
     }
     for (name, r) in &g.racks {
@@ -145,7 +152,8 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         blocks.push(view(&r.drawing(), caption, Key::GearsRackScaleL, r.scale));
         // The undercut's detail view, named by its letter and scale (ГОСТ 2.305: «А (20:1)»),
         // after the pictures (a detail may stand anywhere on the sheet).
-        if let (Some(detail), Some((_, scale))) = (r.detail_view(), r.detail) {
+        let names = |m: DetailMark| detail_name(m, lang);
+        if let (Some(detail), Some((_, scale))) = (r.detail_view(&names), r.detail) {
             let caption = format!("{DETAIL_LETTER} ({})", super::gost_scale(scale, lang));
             details.push(view(&detail, caption, Key::GearsRackScaleL, r.scale));
         }
@@ -237,17 +245,19 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         lines,
         size_mm: TEXT_MM,
     });
-    // The table in its two parts, the pair's and the rest, each finding its own room; the
-    // second titled as continued when both are drawn.
+    // Two tables, each finding its own room: what was read off the drawings (the meshing
+    // picture, the envelope, the triangles) against the analytic values, and what was
+    // computed by formula against another route — a formula's value is no graphical reading.
     let [pair, rest] = g.rows_by_part();
-    let mut first = true;
-    for part in [pair, rest].iter().filter(|p| !p.is_empty()) {
-        let mut t = table(part, lang);
-        if !first {
-            t.title = format!("{} {}", t.title, Text::Continued.get(lang));
-        }
-        first = false;
-        blocks.push(Block::Table(t));
+    let (computed, read): (Vec<Row>, Vec<Row>) = pair
+        .into_iter()
+        .chain(rest)
+        .partition(|r| r.method == Method::Formula);
+    if !read.is_empty() {
+        blocks.push(Block::Table(table(&read, lang)));
+    }
+    if !computed.is_empty() {
+        blocks.push(Block::Table(formula_table(&computed, lang)));
     }
     let Some(plan) =
         plan.or_else(|| crate::scale::Scale::new(0.001, crate::scale::Quantity::Length))
@@ -287,19 +297,50 @@ fn table_unit(r: &Row) -> (&'static str, f64) {
     }
 }
 
-/// The table graphical | analytic | error of the rows (lengths in mm).
+/// The table of the rows read off the drawings: quantity | method (the drawing read) | unit
+/// | graphical | analytic | error (lengths in mm).
 fn table(rows: &[Row], lang: Lang) -> TableBlock {
+    values_table(
+        rows,
+        GearText::ReadOff.get(lang).into(),
+        &[
+            (Column::Quantity, 26.0),
+            (Column::Method, 36.0),
+            (Column::Unit, 10.0),
+            (Column::Graphical, 24.0),
+            (Column::Analytic, 26.0),
+            (Column::Error, 16.0),
+        ],
+        lang,
+    )
+}
+
+/// The table of the rows computed by formula: quantity | unit | by formula (the textbook's
+/// chain) | check (an independent route) | error.
+fn formula_table(rows: &[Row], lang: Lang) -> TableBlock {
+    let mut t = values_table(
+        rows,
+        GearText::Computed.get(lang).into(),
+        &[
+            (Column::Quantity, 26.0),
+            (Column::Unit, 10.0),
+            (Column::Graphical, 26.0),
+            (Column::Analytic, 26.0),
+            (Column::Error, 16.0),
+        ],
+        lang,
+    );
+    t.columns[2].0 = GearText::ByFormula.get(lang).into();
+    t.columns[3].0 = GearText::OtherRoute.get(lang).into();
+    t
+}
+
+/// The rows as a table of `columns` titled `title` (lengths in mm).
+fn values_table(rows: &[Row], title: String, columns: &[(Column, f64)], lang: Lang) -> TableBlock {
     results_table(
         &Results {
-            title: Text::GraphicalAndAnalytic.get(lang).into(),
-            columns: &[
-                (Column::Quantity, 26.0),
-                (Column::Method, 36.0),
-                (Column::Unit, 10.0),
-                (Column::Graphical, 24.0),
-                (Column::Analytic, 26.0),
-                (Column::Error, 16.0),
-            ],
+            title,
+            columns,
             name: &|r| quantity(r, lang),
             unit: &|r| match table_unit(r).0 {
                 "" => String::new(),
@@ -312,6 +353,36 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
         rows,
         lang,
     )
+}
+
+/// The name of what the undercut's detail view shows.
+fn detail_name(m: DetailMark, lang: Lang) -> String {
+    match m {
+        DetailMark::Involute => GearText::DetailInvolute.get(lang).into(),
+        DetailMark::Junction => GearText::DetailJunction.get(lang).into(),
+        DetailMark::Fillet => GearText::DetailFillet.get(lang).into(),
+        DetailMark::Undercut => GearText::DetailUndercut.get(lang).into(),
+        DetailMark::BaseCircle => "r_b".into(),
+        DetailMark::RackTip => GearText::DetailRackTip.get(lang).into(),
+    }
+}
+
+/// The criterion a pair's shifts were chosen by, in words.
+fn criterion_words(c: crate::gears::blocking::Criterion, lang: Lang) -> String {
+    use crate::gears::blocking::Criterion;
+    match c {
+        Criterion::LargestContactRatio => GearText::LargestContactRatio.get(lang).into(),
+        Criterion::EqualSliding { x_sum } => format!(
+            "{} {}",
+            GearText::EqualSliding.get(lang),
+            format_sig(x_sum, 4, lang)
+        ),
+        Criterion::GreatestSumWithTip { sa_min } => format!(
+            "{} {}m",
+            GearText::GreatestSum.get(lang),
+            format_sig(sa_min, 3, lang)
+        ),
+    }
 }
 
 /// A differential's output speed from its two given ones: `n_{3} = 1000 об/мин, n_{5} = 200

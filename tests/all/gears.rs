@@ -676,8 +676,17 @@ fn rack_generation_draws_a_few_numbered_positions_and_the_undercut_in_a_detail()
     }
     let longest = strokes.iter().map(|s| s.length()).fold(0.0, f64::max);
     assert!(longest > 3.0, "{longest} mm");
-    // Every detail stroke lies inside its border.
-    let Some(Item::Circle(border)) = detail.figure.steps.last().map(|s| &s.item) else {
+    // Every detail stroke lies inside its border (the circle drawn last, before the names).
+    let Some(border) = detail
+        .figure
+        .steps
+        .iter()
+        .rev()
+        .find_map(|s| match &s.item {
+            Item::Circle(c) => Some(c),
+            _ => None,
+        })
+    else {
         panic!("the detail's border")
     };
     for s in &strokes {

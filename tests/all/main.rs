@@ -27,6 +27,7 @@ mod forces;
 mod friction;
 mod friction_follower;
 mod fuzz_regressions;
+mod gear_sheets;
 mod gears;
 mod guide_carrier;
 mod hand_reading;

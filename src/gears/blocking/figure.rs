@@ -37,6 +37,7 @@ impl Steps {
                 text,
                 anchor,
                 toward,
+                within_mm: None,
             }),
             from: Vec::new(),
             group: 0,
@@ -115,6 +116,11 @@ impl Study {
             scale,
             steps: steps.0,
         }
+    }
+
+    /// Where the point `x` = (x₁, x₂) lies on [`figure`](Study::figure), figure mm.
+    pub fn at(&self, x: DVec2) -> DVec2 {
+        self.plane().to(x)
     }
 
     /// The plotted plane: the admissible region and the points, 0.25 about them, within the

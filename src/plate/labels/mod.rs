@@ -208,6 +208,8 @@ struct Request {
     toward: DVec2,
     /// Least distance from the point to the text's box.
     gap: f64,
+    /// The farthest the text's box may stand from the point ([`Label::within_mm`]).
+    within: Option<f64>,
 }
 
 impl Request {
@@ -244,6 +246,7 @@ fn requests(
             text,
             anchor,
             toward,
+            within_mm,
         }) = &step.label
         else {
             continue;
@@ -275,6 +278,7 @@ fn requests(
             anchor: map.pt(*anchor),
             toward: map.dir(*toward).normalize_or_zero(),
             gap,
+            within: *within_mm,
         });
     }
     (join_coincident(single), fixed)
@@ -354,6 +358,10 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
                 let j = &mut joined[at];
                 j.steps.extend(r.steps);
                 j.gap = j.gap.max(r.gap);
+                j.within = match (j.within, r.within) {
+                    (Some(a), Some(b)) => Some(a.min(b)),
+                    (a, b) => a.or(b),
+                };
                 if j.toward == DVec2::ZERO {
                     j.toward = r.toward;
                 }

@@ -35,6 +35,8 @@ const STRUCK: f64 = 25.0;
 /// the same for a thin one.
 const MAIN_AREA: f64 = 40.0;
 const THIN_AREA: f64 = 6.0;
+/// The spacing of the rings of a label kept near its point ([`Request::within`]), mm.
+const NEAR_RING_MM: f64 = 1.0;
 /// Cost per rank of the candidate (the preferred position is rank 0).
 const RANK: f64 = 0.5;
 /// Rounds of moving the labels that still collide.
@@ -50,6 +52,8 @@ struct Job<'a> {
     /// The outlines near it, with their boxes.
     lines: Vec<(Rect, &'a Outline)>,
     points: Vec<DVec2>,
+    /// The cost per rank of its candidates.
+    rank_cost: f64,
 }
 
 /// Where a label is: its box and the rank of that candidate.
@@ -142,6 +146,13 @@ impl<'a> Placer<'a> {
         let text = request.text();
         let extent = measure(&text, LABEL_HEIGHT_MM);
         let candidates = candidates(&request, extent.max - extent.min);
+        // A near label's candidates are denser (see [`candidates`]): each costs less, so
+        // that a millimetre further out costs what it costs any label.
+        let rank_cost = if request.within.is_some() {
+            RANK * 0.5 * NEAR_RING_MM / SECOND_RING_MM
+        } else {
+            RANK
+        };
         let near = candidates
             .iter()
             .fold(Rect::new(request.anchor, request.anchor), |r, c| r.union(c))
@@ -168,6 +179,7 @@ impl<'a> Placer<'a> {
             near,
             lines,
             points,
+            rank_cost,
         }
     }
 
@@ -266,7 +278,7 @@ impl<'a> Placer<'a> {
     /// cost).
     fn cost(&self, job: &Job, slot: &Slot, others: &[Rect], bound: f64) -> f64 {
         let rect = &slot.rect;
-        let mut cost = slot.rank as f64 * RANK;
+        let mut cost = slot.rank as f64 * job.rank_cost;
         if !self.frame.contains(rect) || self.forbidden.iter().any(|f| f.intersects(rect)) {
             cost += OUTSIDE;
         }
@@ -327,9 +339,26 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
     } else {
         r.toward.y.atan2(r.toward.x)
     };
-    let step = TAU / DIRECTIONS as f64;
-    for gap in (0..RINGS).map(|k| r.gap + k as f64 * SECOND_RING_MM) {
-        for k in 0..DIRECTIONS {
+    // A label kept near its point tries more places nearer: rings [`NEAR_RING_MM`] apart
+    // out to its bound, in twice the directions.
+    let (gaps, directions): (Vec<f64>, usize) = match r.within {
+        Some(w) => (
+            (0..)
+                .map(|k| r.gap + f64::from(k) * NEAR_RING_MM)
+                .take_while(|g| *g <= w + 1e-9)
+                .collect(),
+            2 * DIRECTIONS,
+        ),
+        None => (
+            (0..RINGS)
+                .map(|k| r.gap + k as f64 * SECOND_RING_MM)
+                .collect(),
+            DIRECTIONS,
+        ),
+    };
+    let step = TAU / directions as f64;
+    for gap in gaps {
+        for k in 0..directions {
             // 0, +1, −1, +2, −2, …, +8.
             let turn = (k.div_ceil(2)) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };
             let t = DVec2::from_angle(start + turn * step);
@@ -358,7 +387,25 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
             }
         }
     }
+    // A label kept near its point keeps only the places that near (all of them when none
+    // is: its gap is wider than the bound).
+    if let Some(within) = r.within {
+        let near: Vec<Rect> = out
+            .iter()
+            .copied()
+            .filter(|c| box_distance(c, r.anchor) <= within + 1e-9)
+            .collect();
+        if !near.is_empty() {
+            return near;
+        }
+    }
     out
+}
+
+/// The distance from `p` to the nearest point of the box `r` (0 inside it), mm.
+pub(super) fn box_distance(r: &Rect, p: DVec2) -> f64 {
+    let d = (r.min - p).max(p - r.max).max(DVec2::ZERO);
+    d.length()
 }
 
 /// The text written so that its box is `rect`.

@@ -1,4 +1,4 @@
-use super::place::{candidates, clipped_area, clipped_length};
+use super::place::{self, candidates, clipped_area, clipped_length};
 use super::*;
 
 fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Rect {
@@ -40,6 +40,7 @@ fn request(name: &str, at: DVec2, step: u32) -> Request {
         anchor: at,
         toward: DVec2::X,
         gap: LABEL_GAP_MM,
+        within: None,
     }
 }
 
@@ -107,4 +108,21 @@ fn a_joint_label_is_also_tried_from_each_corner_of_its_point() {
         candidates(&request("b", at, 0), size).len(),
         RINGS * DIRECTIONS
     );
+}
+
+#[test]
+fn a_label_kept_near_its_point_has_only_the_near_places() {
+    let at = DVec2::new(50.0, 50.0);
+    let size = DVec2::new(6.0, 3.5);
+    let free = candidates(&request("P", at, 0), size);
+    let mut near = request("P", at, 0);
+    near.within = Some(4.0);
+    let kept = candidates(&near, size);
+    // Four rings (gap 1, 2, 3, 4 mm) of thirty-two directions.
+    assert_eq!(kept.len(), 4 * 32);
+    assert!(kept
+        .iter()
+        .all(|c| place::box_distance(c, at) <= 4.0 + 1e-9));
+    assert!(free.iter().any(|c| place::box_distance(c, at) > 10.0));
+    assert_eq!(kept[0], free[0]);
 }

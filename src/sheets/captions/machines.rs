@@ -107,6 +107,31 @@ catalogue! {
             "модуль ступеня в задачі не дано: прийнято за співвісністю",
             "the stage's module is not given: taken for coaxiality"
         ),
+        ReadOff => (
+            "Считано с чертежа и аналитический расчёт",
+            "Знято з креслення і аналітичний розрахунок",
+            "Read off the drawing against analytic"
+        ),
+        Computed => (
+            "Вычислено по формулам",
+            "Обчислено за формулами",
+            "Computed by formulas"
+        ),
+        ByFormula => ("по формуле", "за формулою", "by formula"),
+        OtherRoute => ("проверка", "перевірка", "check"),
+        ChosenBy => (
+            "K: x_1, x_2 выбраны на блокирующем контуре по критерию:",
+            "K: x_1, x_2 вибрано на блокуючому контурі за критерієм:",
+            "K: x_1, x_2 chosen on the blocking contour by the criterion:"
+        ),
+        LargestContactRatio => ("наибольший ε_α", "найбільший ε_α", "the largest ε_α"),
+        EqualSliding => ("равное скольжение λ_1(B_1) = λ_2(B_2) при x_1 + x_2 =", "рівне ковзання λ_1(B_1) = λ_2(B_2) при x_1 + x_2 =", "equal sliding λ_1(B_1) = λ_2(B_2) on x_1 + x_2 ="),
+        GreatestSum => ("наибольшая сумма x_1 + x_2 при s_a ≥", "найбільша сума x_1 + x_2 при s_a ≥", "the greatest x_1 + x_2 with s_a ≥"),
+        DetailInvolute => ("эвольвента", "евольвента", "involute"),
+        DetailJunction => ("граничная точка", "гранична точка", "limit point"),
+        DetailFillet => ("переходная кривая", "перехідна крива", "fillet"),
+        DetailUndercut => ("подрез", "підріз", "undercut"),
+        DetailRackTip => ("головка рейки", "головка рейки", "rack tip"),
         Title => ("Зубчатые передачи", "Зубчасті передачі", "Gears"),
     }
 }

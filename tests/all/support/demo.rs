@@ -15,6 +15,7 @@ impl Steps {
             text: text.into(),
             anchor,
             toward,
+            within_mm: None,
         });
         let id = StepId(self.0.len() as u32);
         self.0.push(Step {

@@ -1,0 +1,382 @@
+//! The gear sheets as an instructor reads them (issue 45), on the plate model of every
+//! shipped gear scene in ru, uk and en, at the drafting `render` uses (0.5 mm) and exact:
+//! - every point of the meshing picture named within a few millimetres of its point, and no
+//!   letter that names nothing (the line of action's stray `N`);
+//! - detail A of the rack cutting names what it shows (the involute, the limit point, the
+//!   fillet, the undercut, r_b, the rack tip), each name at its object;
+//! - no rack position drawn as a fragment detached from its outline: every run of a drawn
+//!   position enters the blank and comes in from outside its tip circle;
+//! - values computed by formula are never listed as read off the drawing;
+//! - a pair whose shifts `choose` picked draws the blocking contour on its gear sheet, the
+//!   chosen point marked at the chosen x₁, x₂ and the criterion named;
+//! - the seeds' errata stay in the note, off the sheet.
+
+use crate::support::{root, scratch};
+use glam::DVec2;
+use tmm::construct::{Drafting, Item};
+use tmm::gears::{DetailMark, DETAIL_NAME_WITHIN_MM, NAME_WITHIN_MM};
+use tmm::plate::{layout, Plate, Rect};
+use tmm::scale::Lang;
+use tmm::scene::PlateKind;
+use tmm::study::Session;
+
+/// The shipped scenes with a gear sheet.
+const GEAR_SCENES: [&str; 7] = [
+    "shaper",
+    "gears-pz1",
+    "gears-pz2",
+    "gears-pz2-ex1",
+    "gears-pz2-ex2",
+    "gears-pz3",
+    "gears-differential",
+];
+
+const LANGS: [Lang; 3] = [Lang::Ru, Lang::Uk, Lang::En];
+
+/// `render`'s default drafting and the exact one.
+fn draftings() -> [Drafting; 2] {
+    [Drafting::new(0.5).expect("0.5 mm"), Drafting::EXACT]
+}
+
+fn scene_at(path: &std::path::Path) -> tmm::scene::Scene {
+    tmm::load(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+fn scene(name: &str) -> tmm::scene::Scene {
+    scene_at(&root().join(format!("constructions/{name}.toml")))
+}
+
+/// The gear sheets of `scene`.
+fn gear_sheets(scene: &tmm::scene::Scene, drafting: Drafting, lang: Lang) -> Vec<Plate> {
+    let kind = PlateKind::parse("gears").expect("the gears plate");
+    tmm::build(&Session::new(scene, drafting), kind, lang).expect("the gear sheet builds")
+}
+
+/// The distance from `p` to the box `r` (0 inside it), mm.
+fn box_distance(r: &Rect, p: DVec2) -> f64 {
+    (r.min - p).max(p - r.max).max(DVec2::ZERO).length()
+}
+
+/// Every label of the views whose figure is titled `title`, with the item it names: (its
+/// text, its anchor, its box distance from the anchor, whether it names a point).
+fn view_labels(plate: &Plate, title: &str) -> Vec<(String, DVec2, f64, bool)> {
+    let l = layout(plate);
+    l.labels
+        .iter()
+        .filter(|x| plate.views[x.view].figure.title == title)
+        .map(|x| {
+            let fig = &plate.views[x.view].figure;
+            let point = x.steps.iter().any(|id| {
+                fig.steps
+                    .iter()
+                    .any(|s| s.id == *id && matches!(s.item, Item::Point(_) | Item::Joint { .. }))
+            });
+            (
+                x.text.clone(),
+                x.anchor,
+                box_distance(&x.rect, x.anchor),
+                point,
+            )
+        })
+        .collect()
+}
+
+/// Every label of `labels` stands within `bound` mm of its object.
+fn assert_near(labels: &[(String, DVec2, f64, bool)], bound: f64, what: &str) {
+    for (text, _, d, _) in labels {
+        assert!(
+            *d <= bound + 1e-9,
+            "{what}: {text} {d:.2} mm from its object"
+        );
+    }
+}
+
+/// The meshing picture names O₁, O₂, P, N₁, N₂, B₁, B₂ each within [`NAME_WITHIN_MM`] of its
+/// point (the review saw `B₂` 10 mm off and `N₁ P B₁` in a row under P), and no label is a
+/// bare `N` (the line of action is named by N₁ and N₂).
+#[test]
+fn the_meshing_picture_names_each_point_beside_it() {
+    for name in ["shaper", "gears-pz3"] {
+        let s = scene(name);
+        for drafting in draftings() {
+            for lang in LANGS {
+                let plate = &gear_sheets(&s, drafting, lang)[0];
+                let labels = view_labels(plate, "meshing picture");
+                let texts: Vec<&str> = labels.iter().map(|l| l.0.as_str()).collect();
+                for want in ["O_1", "O_2", "P", "N_1", "N_2", "B_1", "B_2", "T"] {
+                    assert!(
+                        texts.contains(&want),
+                        "{name} {lang:?}: {want} in {texts:?}"
+                    );
+                }
+                assert!(
+                    !texts.contains(&"N"),
+                    "{name} {lang:?}: a stray N in {texts:?}"
+                );
+                let points: Vec<_> = labels.iter().filter(|l| l.3).cloned().collect();
+                assert_near(
+                    &points,
+                    NAME_WITHIN_MM,
+                    &format!("{name} {lang:?} {drafting:?}"),
+                );
+            }
+        }
+    }
+}
+
+/// Detail A (the undercut at 20:1) names the involute, the limit point, the fillet, the
+/// undercut, r_b and the rack tip, each within [`DETAIL_NAME_WITHIN_MM`] of its object; the
+/// limit point is the junction of the drawn involute and fillet, the involute's name stands
+/// on the involute above it, the fillet's below it.
+#[test]
+fn detail_a_names_what_it_shows() {
+    for name in ["gears-pz1", "shaper"] {
+        let s = scene(name);
+        let session = Session::new(&s, Drafting::EXACT);
+        let g = session.gears().expect("the gear study");
+        let (_, wheel) = g
+            .racks
+            .iter()
+            .find(|(_, r)| r.detail.is_some())
+            .expect("an undercut wheel with its detail");
+        let mu = wheel.scale.value();
+        let at = |m: DetailMark| {
+            wheel
+                .detail_marks
+                .iter()
+                .find(|(k, _)| *k == m)
+                .map(|(_, p)| *p * mu)
+                .unwrap_or_else(|| panic!("{name}: {m:?} named"))
+        };
+        let c = &wheel.cutting;
+        let junction = at(DetailMark::Junction);
+        assert!(
+            (junction - wheel.junction).length() <= 1e-12,
+            "{name}: {junction}"
+        );
+        let inv = at(DetailMark::Involute);
+        assert!(inv.length() > junction.length(), "{name}: involute above");
+        let exact = c.involute_at_radius(inv.length());
+        assert!(
+            (exact - inv).length() <= 1e-9 * c.module,
+            "{name}: on the involute"
+        );
+        let fil = at(DetailMark::Fillet);
+        assert!(fil.length() < junction.length(), "{name}: fillet below");
+        let rb = at(DetailMark::BaseCircle);
+        assert!(
+            (rb.length() - c.rb()).abs() <= 1e-9 * c.module,
+            "{name}: on r_b"
+        );
+        let _ = at(DetailMark::Undercut);
+        let _ = at(DetailMark::RackTip);
+        for drafting in draftings() {
+            for lang in LANGS {
+                let plate = &gear_sheets(&s, drafting, lang)[0];
+                let labels = view_labels(plate, "detail of generation");
+                assert_eq!(labels.len(), 6, "{name} {lang:?}: {labels:?}");
+                assert!(labels.iter().any(|l| l.0 == "r_b"), "{labels:?}");
+                assert_near(&labels, DETAIL_NAME_WITHIN_MM, &format!("{name} {lang:?}"));
+            }
+        }
+    }
+}
+
+/// Every run of every drawn rack position enters the tip circle and both its ends stand
+/// outside it: the outline is seen to come into the blank (the review saw rack tips of the
+/// left space floating without their flanks, one 10 mm above the tip circle).
+#[test]
+fn rack_positions_are_never_detached_fragments() {
+    for name in ["gears-pz1", "shaper"] {
+        let s = scene(name);
+        let session = Session::new(&s, Drafting::EXACT);
+        let g = session.gears().expect("the gear study");
+        for (wheel, r) in &g.racks {
+            let mu = r.scale.value();
+            let ra = r.cutting.ra / mu;
+            let mut runs = 0;
+            for step in r.drawing().steps {
+                let Item::Polyline { points, .. } = &step.item else {
+                    continue;
+                };
+                if !step.note.starts_with("rack position") {
+                    continue;
+                }
+                runs += 1;
+                let inside = points
+                    .iter()
+                    .map(|p| p.length())
+                    .fold(f64::INFINITY, f64::min);
+                assert!(
+                    inside < ra,
+                    "{name}/{wheel} {}: never enters r_a",
+                    step.note
+                );
+                for end in [points[0], points[points.len() - 1]] {
+                    assert!(
+                        end.length() >= ra - 1e-6,
+                        "{name}/{wheel} {}: ends {:.3} mm inside r_a",
+                        step.note,
+                        ra - end.length()
+                    );
+                }
+            }
+            assert!(runs >= 7, "{name}/{wheel}: {runs} runs");
+        }
+    }
+}
+
+/// The method cell of every table row: a table headed "graphical" lists no row computed by
+/// formula, and the formula rows stand in a table of their own headed "by formula" /
+/// "check".
+#[test]
+fn formula_rows_are_never_listed_as_graphical() {
+    let words = |lang: Lang| match lang {
+        Lang::Ru => ("графически", "формула", "по формуле"),
+        Lang::Uk => ("графічно", "формула", "за формулою"),
+        Lang::En => ("graphical", "formula", "by formula"),
+    };
+    for name in GEAR_SCENES {
+        let s = scene(name);
+        for lang in LANGS {
+            let (graphical, formula, by_formula) = words(lang);
+            let mut computed = 0;
+            for plate in gear_sheets(&s, Drafting::new(0.5).expect("0.5"), lang) {
+                for t in &plate.tables {
+                    let head: Vec<&str> = t.columns.iter().map(|c| c.0.as_str()).collect();
+                    if head.contains(&graphical) {
+                        assert!(
+                            t.rows.iter().all(|r| !r.iter().any(|c| c == formula)),
+                            "{name} {lang:?}: a formula row under “{graphical}”"
+                        );
+                    }
+                    if head.contains(&by_formula) {
+                        computed += t.rows.len();
+                    }
+                }
+            }
+            assert!(computed > 0, "{name} {lang:?}: no table of computed values");
+        }
+    }
+}
+
+/// A course project's gear sheet (a pair, a cut wheel) whose shifts `choose` picked draws
+/// the blocking contour with the chosen point at the chosen x₁, x₂ (the scene's point K and
+/// the criterion's point one joint label), and names the criterion; a sheet of given shifts
+/// (the shaper's) does not draw it.
+#[test]
+fn a_chosen_pair_shows_its_choice_on_the_blocking_contour() {
+    let dir = scratch("gear-sheet-choose");
+    let cases = [
+        (
+            "choose = \"largest-contact-ratio\"\n",
+            "ε_{α max}",
+            "наибольший ε_α",
+        ),
+        (
+            "choose = \"equal-sliding\"\nx_sum = 1.078\n",
+            "λ_1 = λ_2",
+            "равное скольжение",
+        ),
+    ];
+    for (k, (choose, point, words)) in cases.iter().enumerate() {
+        let path = dir.join(format!("c{k}.toml"));
+        let text = format!(
+            "[gears]\nmodule = 10.0\n[gears.pair]\nz = [13, 21]\n{choose}\n[[gears.rack]]\nz = 13\nx = 0.0\npositions = 40\n"
+        );
+        std::fs::write(&path, text).expect("write the scene");
+        let s = scene_at(&path);
+        for drafting in draftings() {
+            let session = Session::new(&s, drafting);
+            let g = session.gears().expect("the gear study");
+            let study = g.blocking.as_ref().expect("the contour");
+            let (pair, _) = g.pair.as_ref().expect("the pair");
+            assert!(study.chosen.is_some());
+            let chosen = study.at(DVec2::new(pair.spec.x[0], pair.spec.x[1]));
+            for lang in LANGS {
+                let plates = gear_sheets(&s, drafting, lang);
+                let view = plates
+                    .iter()
+                    .flat_map(|p| &p.views)
+                    .find(|v| v.figure.title == "blocking contour")
+                    .unwrap_or_else(|| panic!("case {k} {lang:?}: no contour drawn"));
+                let named = |label: &str| {
+                    view.figure
+                        .steps
+                        .iter()
+                        .find_map(|s| match (&s.item, &s.label) {
+                            (Item::Point(p), Some(l)) if l.text == label => Some(*p),
+                            _ => None,
+                        })
+                };
+                for label in ["K", point] {
+                    let p = named(label).unwrap_or_else(|| panic!("case {k}: {label}"));
+                    assert!(
+                        p.distance(chosen) <= 0.3,
+                        "case {k} {lang:?}: {label} at {p}, chosen at {chosen}"
+                    );
+                }
+                if lang == Lang::Ru {
+                    let lines: Vec<&String> = plates
+                        .iter()
+                        .flat_map(|p| &p.texts)
+                        .flat_map(|t| &t.lines)
+                        .collect();
+                    assert!(
+                        lines
+                            .iter()
+                            .any(|l| l.contains("выбраны") && l.contains(words)),
+                        "case {k}: the criterion named in {lines:?}"
+                    );
+                }
+            }
+        }
+    }
+    let plates = gear_sheets(&scene("shaper"), Drafting::EXACT, Lang::Ru);
+    assert!(plates
+        .iter()
+        .flat_map(|p| &p.views)
+        .all(|v| v.figure.title != "blocking contour"));
+}
+
+/// No gear sheet prints a seed's erratum ("В источнике … ошибка"): those are the note's.
+#[test]
+fn gear_sheets_carry_no_errata() {
+    let banned = [
+        "источник",
+        "ошибк",
+        "джерел",
+        "помилк",
+        "source",
+        "erratum",
+        "errata",
+    ];
+    for name in GEAR_SCENES {
+        let s = scene(name);
+        for lang in LANGS {
+            for plate in gear_sheets(&s, Drafting::EXACT, lang) {
+                let mut words: Vec<String> =
+                    plate.texts.iter().flat_map(|t| t.lines.clone()).collect();
+                words.extend(plate.views.iter().filter_map(|v| v.caption.clone()));
+                words.extend(
+                    plate
+                        .views
+                        .iter()
+                        .flat_map(|v| &v.figure.steps)
+                        .filter_map(|s| s.label.as_ref().map(|l| l.text.clone())),
+                );
+                for t in &plate.tables {
+                    words.push(t.title.clone());
+                    words.extend(t.rows.iter().flatten().cloned());
+                }
+                for w in &words {
+                    let lower = w.to_lowercase();
+                    assert!(
+                        banned.iter().all(|b| !lower.contains(b)),
+                        "{name} {lang:?}: “{w}” on the sheet"
+                    );
+                }
+            }
+        }
+    }
+}
