@@ -1,6 +1,7 @@
 //! The figure model: what a construction records — steps with their item, role, label and
 //! provenance — and the figure they make up.
 
+use super::label::{Label, Names};
 use crate::geom::{Arc, Circle, DVec2, Segment, Side};
 use crate::scale::Scale;
 
@@ -98,18 +99,6 @@ impl Item {
     /// A slider block's half length along its slide and half width across it, mm: the block
     /// is drawn 10 × 6 mm whatever the scale.
     pub const SLIDER_HALF_MM: (f64, f64) = (5.0, 3.0);
-}
-
-/// A textbook label. `text` uses the label markup: `_x` or `_{xy}` for a subscript,
-/// `^x` or `^{xy}` for a superscript (`b_3`, `S_{3}`, `a^{k}`, `8′`).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Label {
-    /// The text, in label markup.
-    pub text: String,
-    /// The point the label belongs to.
-    pub anchor: DVec2,
-    /// Preferred direction from the anchor to the text (unit or zero for centred on the anchor).
-    pub toward: DVec2,
 }
 
 /// One recorded step.
@@ -244,6 +233,7 @@ impl Figure {
                     text: l.text.clone(),
                     anchor: m(l.anchor),
                     toward: turn(l.toward),
+                    names: l.names,
                 });
                 Step {
                     item,
@@ -334,8 +324,10 @@ impl Figure {
                         } else {
                             Item::Segment(Segment::new(a, b))
                         };
+                        // Set at the middle of the piece that shows, it names the vector.
                         let label = st.label.as_ref().map(|l| Label {
                             anchor: a.lerp(b, 0.5),
+                            names: Names::Item,
                             ..l.clone()
                         });
                         items.push((st, item, label));
@@ -417,6 +409,7 @@ impl Figure {
                 text,
                 anchor: at,
                 toward,
+                names: Names::Item,
             }),
             from: Vec::new(),
             group: 0,
@@ -489,6 +482,7 @@ mod tests {
                 text: "A".into(),
                 anchor: DVec2::new(1.0, 2.0),
                 toward: DVec2::new(0.6, 0.8),
+                names: Names::Point,
             }),
             from: Vec::new(),
             group: 0,
