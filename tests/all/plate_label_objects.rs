@@ -61,6 +61,11 @@ const EXEMPT: &[(&str, &str, &str)] = &[
     ("six-bar/kinematics-2", "s_4′", PLANS),
     ("tangent/kinematics", "p", PLANS),
     ("shaper/dynamics", "H", DYNAMICS),
+    ("four-bar/kinematics", "θ", ANGLES),
+    ("v-engine/kinematics", "θ", ANGLES),
+    ("six-bar/kinematics", "ψ", ANGLES),
+    ("gears-pz3/gears", "s_{a1} = 0,25m", CONTOUR),
+    ("gears-pz3/gears", "интерференция 1", CONTOUR),
     // Force and friction sheets: what this round left (issue 45's report names them).
     ("shaper/forces", "R_{3-2}", TWIN_LINES),
     ("shaper/forces", "G_{3}", LEVER_RAYS),
@@ -70,6 +75,21 @@ const EXEMPT: &[(&str, &str, &str)] = &[
     ("v-engine/forces-2", "F′_{и2}", LEVER_RAYS),
     ("v-engine/forces", "h_{7}", LEVER_RAYS),
     ("v-engine/forces", "R^τ_{1-4}", DETAIL_ZONE),
+    ("shaper/forces", "R_{3-4}", POLYGONS),
+    ("shaper/forces", "F_{и3}", POLYGONS),
+    ("shaper/forces", "F′_{и3}", LEVER_RAYS),
+    ("shaper/forces", "h_{4}", LEVER_RAYS),
+    ("shaper/forces", "F_{и4}", LEVER_RAYS),
+    ("shaper/forces-2", "G_{3}", POLYGONS),
+    ("shaper/forces-2", "h_{1}", LEVER_RAYS),
+    ("shaper/forces-2", "h_{3}", LEVER_RAYS),
+    ("v-engine/forces", "F_{д5}", POLYGONS),
+    ("v-engine/forces", "R^τ_{1-2}", DETAIL_ZONE),
+    ("v-engine/forces", "R_{1-2}", POLYGONS),
+    ("v-engine/forces", "h_{4}", LEVER_RAYS),
+    ("v-engine/forces-2", "R^τ_{1-4}", DETAIL_ZONE),
+    ("v-engine/forces-2", "R_{1-4}", POLYGONS),
+    ("v-engine/forces-2", "F_{д3}", POLYGONS),
     ("friction/friction", "πd_{1}", FRICTION_SCHEMES),
     ("friction/friction", "α", FRICTION_SCHEMES),
     ("friction-follower/friction", "O_{2}", FRICTION_SCHEMES),
@@ -90,11 +110,17 @@ const PLANS: &str = "a crowded plan (7–8 labels in 15–25 mm at the scene's �
     are being redrawn larger";
 const DYNAMICS: &str = "the pole distance H of the energy–mass fan written between the rays \
     it measures; the dynamics sheet is being reworked";
+const ANGLES: &str = "an angle's label on the plan of positions (θ, ψ) between its arc and \
+    a trajectory or a link crossing it; the kinematic sheets are being reworked";
+const POLYGONS: &str = "a force polygon's label in a fan of sides meeting at a vertex, or \
+    beside its detail's zone: the placer keeps it unstruck first and nearest its side \
+    second; not fixed in this round";
 const TWIN_LINES: &str = "group 2–3's polygon draws R₁₋₂ and R₃₋₂ about 1 mm apart (the \
     block's own loads are 0,2 % of them), so no place beside one is clear of the other; \
     detail В tells them apart";
-const LEVER_RAYS: &str = "on Zhukovsky's lever a force's label at its arrow's end meets the \
-    thin rays of the turned plan that converge on its image point; not fixed in this round";
+const LEVER_RAYS: &str = "on Zhukovsky's lever (and the crank's drawing) a force's or an \
+    arm's label among the thin rays of the turned plan, the arms and the lines of action that \
+    converge on the pole and the images; not fixed in this round";
 const DETAIL_ZONE: &str = "the polygon's τ-component beside its detail's zone circle; not \
     fixed in this round";
 const FRICTION_SCHEMES: &str = "a scheme's label 0,5–1 mm nearer a thin line of the scheme \

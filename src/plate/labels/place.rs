@@ -38,9 +38,11 @@ const THIN_AREA: f64 = 6.0;
 /// Cost per rank of the candidate (the preferred position is rank 0).
 const RANK: f64 = 0.5;
 /// Cost of a label of an item (a force, an arm) nearer to another line of its view than to
-/// its own: it would be read as that line's (issue 45); plus [`WRONG_LINE_MM`] per mm.
-const WRONG_LINE: f64 = 120.0;
-const WRONG_LINE_MM: f64 = 40.0;
+/// its own: it would be read as that line's (issue 45); plus [`WRONG_LINE_MM`] per mm. Less
+/// than a line striking the label ([`STRUCK`] and [`MAIN_LINE`]): a struck label cannot be
+/// read at all.
+const WRONG_LINE: f64 = 20.0;
+const WRONG_LINE_MM: f64 = 10.0;
 /// Rounds of moving the labels that still collide.
 const REPAIR_ROUNDS: usize = 4;
 
