@@ -12,9 +12,9 @@
 //! - "≡" is written only by the joining of points (a label text with "≡" of one step is
 //!   a quantity written as two).
 
-use crate::plate_model::{every_sheet, named_point, names_point, on_sheet, step};
+use crate::plate_model::{every_sheet, named_point, names_point, on_sheet, step, with_view};
 use glam::DVec2;
-use tmm::construct::{Figure, Item, Label, Names, Role, Step, StepId};
+use tmm::construct::{Item, Label, Names, Role, Step, StepId};
 use tmm::plate::{layout, Plate, COINCIDENT_MM, JOINT_SEPARATOR};
 
 /// A name of a quantity rather than a point: a reaction's or a load's subscript (with a
@@ -115,19 +115,6 @@ fn drawn(id: u32, item: Item, text: &str, anchor: DVec2, names: Names) -> Step {
         from: Vec::new(),
         group: 0,
     }
-}
-
-/// A plate with one more view: the figure `steps`, at a free place of the sheet.
-fn with_view(mut plate: Plate, steps: Vec<Step>) -> Plate {
-    let mut view = plate.views[0].clone();
-    view.figure = Figure {
-        title: "broken".into(),
-        scale: view.figure.scale,
-        steps,
-    };
-    view.caption = None;
-    plate.views.push(view);
-    plate
 }
 
 /// The rule fails where it should: two reactions at a block labelled as the point at their

@@ -11,9 +11,10 @@
 
 use crate::plate_model::{
     box_to_point, box_to_segment, every_sheet, lines, named_point, names_point, on_sheet, step,
+    with_view,
 };
 use glam::DVec2;
-use tmm::construct::{Figure, Item, Label, Role, Step, StepId};
+use tmm::construct::{Item, Label, Role, Step, StepId};
 use tmm::plate::{layout, Plate, View};
 
 /// A label of a point is written at most this far from it, mm: the label's gap and two
@@ -245,7 +246,7 @@ fn drawn(id: u32, item: Item, text: &str, anchor: DVec2, toward: DVec2) -> Step 
 /// another side of its polygon (`R₁₋₂` on the `R₄₋₃` line).
 #[test]
 fn the_object_rule_fails_on_a_plate_built_to_break_it() {
-    let (_, mut plate) = every_sheet()
+    let (_, plate) = every_sheet()
         .into_iter()
         .find(|(n, _)| n == "friction/friction")
         .expect("the friction sheet");
@@ -270,14 +271,7 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
         // R₁₋₂'s label anchored at the middle of R₄₋₃.
         side(2, a, b, "R_{1-2}", o.lerp(a, 0.5) + DVec2::new(0.0, 0.1)),
     ];
-    let mut view = plate.views[0].clone();
-    view.figure = Figure {
-        title: "broken".into(),
-        scale: view.figure.scale,
-        steps,
-    };
-    view.caption = None;
-    plate.views.push(view);
+    let plate = with_view(plate, steps);
     let found: Vec<String> = labels_away(&plate).into_iter().map(|x| x.1).collect();
     assert!(found.len() >= before + 2, "{found:?}");
     let all = found.join("\n");

@@ -130,6 +130,20 @@ pub fn lines(step: &Step) -> Vec<(DVec2, DVec2)> {
     }
 }
 
+/// `plate` with one more view, a copy of its first view's place drawing the figure `steps`:
+/// a plate built to break a rule.
+pub fn with_view(mut plate: Plate, steps: Vec<Step>) -> Plate {
+    let mut view = plate.views[0].clone();
+    view.figure = tmm::construct::Figure {
+        title: "broken".into(),
+        scale: view.figure.scale,
+        steps,
+    };
+    view.caption = None;
+    plate.views.push(view);
+    plate
+}
+
 /// The sheet position (mm, y down) of a figure point of `view`.
 pub fn on_sheet(view: &View, p: DVec2) -> DVec2 {
     view.to_sheet(p)
@@ -165,13 +179,7 @@ fn meets(lo: DVec2, hi: DVec2, a: DVec2, b: DVec2) -> bool {
 
 /// The distance from `p` to the segment `a`–`b`.
 fn point_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let d = b - a;
-    let t = if d.length_squared() > 0.0 {
-        ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.distance(a + d * t)
+    tmm::geom::Segment::new(a, b).distance_to(p)
 }
 
 /// The distance from the box `lo`–`hi` to the segment `a`–`b` (sheet mm), 0 when they meet:

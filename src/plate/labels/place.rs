@@ -420,15 +420,8 @@ pub(crate) fn rect_segment_distance(r: &Rect, a: DVec2, b: DVec2) -> f64 {
         return 0.0;
     }
     let to_rect = |p: DVec2| (p - p.clamp(r.min, r.max)).length();
-    let to_segment = |p: DVec2| {
-        let d = b - a;
-        let t = if d.length_squared() > 0.0 {
-            ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        p.distance(a + d * t)
-    };
+    let segment = crate::geom::Segment::new(a, b);
+    let to_segment = |p: DVec2| segment.distance_to(p);
     let corners = [
         r.min,
         r.max,
