@@ -12,9 +12,11 @@
 //! - "≡" is written only by the joining of points (a label text with "≡" of one step is
 //!   a quantity written as two).
 
-use crate::plate_model::{every_sheet, named_point, names_point, on_sheet, step, with_view};
+use crate::plate_model::{
+    self, every_sheet, named_point, names_point, on_sheet, sheet, step, with_view,
+};
 use glam::DVec2;
-use tmm::construct::{Item, Label, Names, Role, Step, StepId};
+use tmm::construct::{Item, Names, Step};
 use tmm::plate::{layout, Plate, COINCIDENT_MM, JOINT_SEPARATOR};
 
 /// A name of a quantity rather than a point: a reaction's or a load's subscript (with a
@@ -101,20 +103,13 @@ fn labels_joined_by_equivalence_name_coincident_points() {
     );
 }
 
-/// A step of a figure drawn by hand: `item` with a label `text` at `anchor` naming `names`.
+/// A step drawn by hand: `item` with a label `text` at `anchor` naming `names`.
 fn drawn(id: u32, item: Item, text: &str, anchor: DVec2, names: Names) -> Step {
-    Step {
-        id: StepId(id),
-        note: "drawn by the test".into(),
-        label: Some(Label {
-            names,
-            ..Label::on(&item, text, anchor, DVec2::X)
-        }),
-        item,
-        role: Role::Result,
-        from: Vec::new(),
-        group: 0,
+    let mut s = plate_model::drawn(id, item, text, (anchor, DVec2::X));
+    if let Some(l) = s.label.as_mut() {
+        l.names = names;
     }
+    s
 }
 
 /// The rule fails where it should: two reactions at a block labelled as the point at their
@@ -122,10 +117,7 @@ fn drawn(id: u32, item: Item, text: &str, anchor: DVec2, names: Names) -> Step {
 /// (`h₇ ≡ h₈`), and a quantity written with "≡" by hand.
 #[test]
 fn the_equivalence_rule_fails_on_a_plate_built_to_break_it() {
-    let (_, plate) = every_sheet()
-        .into_iter()
-        .find(|(n, _)| n == "shaper/forces")
-        .expect("the shaper's force sheet");
+    let plate = sheet("shaper/forces");
     assert!(false_equivalences(&plate).is_empty());
     let x = DVec2::new(40.0, -40.0);
     let tip = x + DVec2::new(14.0, 0.0);

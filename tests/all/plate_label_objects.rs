@@ -10,11 +10,11 @@
 //! failures are listed in [`EXEMPT`] with the reason; every exemption must still be needed.
 
 use crate::plate_model::{
-    box_to_point, box_to_segment, every_sheet, lines, named_point, names_point, on_sheet, step,
-    with_view,
+    box_to_point, box_to_segment, drawn, every_sheet, lines, named_point, names_point, on_sheet,
+    sheet, step, with_view,
 };
 use glam::DVec2;
-use tmm::construct::{Item, Label, Role, Step, StepId};
+use tmm::construct::{Item, StepId};
 use tmm::plate::{layout, Plate, View};
 
 /// A label of a point is written at most this far from it, mm: the label's gap and two
@@ -228,31 +228,15 @@ fn every_label_is_at_its_object() {
     }
 }
 
-/// A step drawn by hand with a label `text` at `anchor`, toward `toward`.
-fn drawn(id: u32, item: Item, text: &str, anchor: DVec2, toward: DVec2) -> Step {
-    Step {
-        id: StepId(id),
-        note: format!("drawn by the test: {text}"),
-        label: Some(Label::on(&item, text, anchor, toward)),
-        item,
-        role: Role::Result,
-        from: Vec::new(),
-        group: 0,
-    }
-}
-
 /// The rule fails where it should: a point's label anchored 30 mm from its point (the
 /// lever's image of P labelled at its force's arrow), and a reaction's label anchored on
 /// another side of its polygon (`R₁₋₂` on the `R₄₋₃` line).
 #[test]
 fn the_object_rule_fails_on_a_plate_built_to_break_it() {
-    let (_, plate) = every_sheet()
-        .into_iter()
-        .find(|(n, _)| n == "friction/friction")
-        .expect("the friction sheet");
+    let plate = sheet("friction/friction");
     let before = labels_away(&plate).len();
     let (o, a, b) = (DVec2::ZERO, DVec2::new(60.0, 0.0), DVec2::new(60.0, -40.0));
-    let mut point = drawn(0, Item::Point(o), "p_{P}", o, DVec2::Y);
+    let mut point = drawn(0, Item::Point(o), "p_{P}", (o, DVec2::Y));
     if let Some(l) = point.label.as_mut() {
         l.anchor = o + DVec2::new(30.0, 0.0);
     }

@@ -51,6 +51,15 @@ pub fn every_sheet() -> Vec<(String, Plate)> {
     out
 }
 
+/// The sheet `name` (`scene/sheet`) of [`every_sheet`].
+pub fn sheet(name: &str) -> Plate {
+    every_sheet()
+        .into_iter()
+        .find(|(n, _)| n == name)
+        .map(|(_, p)| p)
+        .unwrap_or_else(|| panic!("no sheet {name}"))
+}
+
 /// The step `id` of a view's figure.
 pub fn step(view: &View, id: tmm::construct::StepId) -> &Step {
     view.figure
@@ -127,6 +136,20 @@ pub fn lines(step: &Step) -> Vec<(DVec2, DVec2)> {
             vec![(*from + n, *to + n)]
         }
         _ => Vec::new(),
+    }
+}
+
+/// A step drawn by hand: `item` labelled `text` at `anchor`, toward `toward` (naming what
+/// [`tmm::construct::Names::of`] says).
+pub fn drawn(id: u32, item: Item, text: &str, (anchor, toward): (DVec2, DVec2)) -> Step {
+    Step {
+        id: tmm::construct::StepId(id),
+        note: format!("drawn by the test: {text}"),
+        label: Some(tmm::construct::Label::on(&item, text, anchor, toward)),
+        item,
+        role: Role::Result,
+        from: Vec::new(),
+        group: 0,
     }
 }
 
