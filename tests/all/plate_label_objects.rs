@@ -241,13 +241,8 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
         l.anchor = o + DVec2::new(30.0, 0.0);
     }
     let side = |id, from: DVec2, to: DVec2, text, at: DVec2| {
-        drawn(
-            id,
-            Item::Vector { from, to },
-            text,
-            at,
-            (to - from).perp().normalize(),
-        )
+        let toward = (to - from).perp().normalize();
+        drawn(id, Item::Vector { from, to }, text, (at, toward))
     };
     let steps = vec![
         point,
