@@ -1,6 +1,7 @@
 //! The figure model: what a construction records — steps with their item, role, label and
 //! provenance — and the figure they make up.
 
+use super::label::{Label, Names};
 use crate::geom::{Arc, Circle, DVec2, Segment, Side};
 use crate::scale::Scale;
 
@@ -98,23 +99,6 @@ impl Item {
     /// A slider block's half length along its slide and half width across it, mm: the block
     /// is drawn 10 × 6 mm whatever the scale.
     pub const SLIDER_HALF_MM: (f64, f64) = (5.0, 3.0);
-}
-
-/// A textbook label. `text` uses the label markup: `_x` or `_{xy}` for a subscript,
-/// `^x` or `^{xy}` for a superscript (`b_3`, `S_{3}`, `a^{k}`, `8′`).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Label {
-    /// The text, in label markup.
-    pub text: String,
-    /// The point the label belongs to.
-    pub anchor: DVec2,
-    /// Preferred direction from the anchor to the text (unit or zero for centred on the anchor).
-    pub toward: DVec2,
-    /// The farthest the text may stand from its point, sheet mm (the nearest edge of its
-    /// box): a point of a dense picture (the pole P among the teeth and circles of a
-    /// meshing) keeps its name beside it, struck by a thin line rather than flown off to
-    /// where no line runs; `None`: wherever the placer finds the most room.
-    pub within_mm: Option<f64>,
 }
 
 /// One recorded step.
@@ -250,6 +234,7 @@ impl Figure {
                     anchor: m(l.anchor),
                     toward: turn(l.toward),
                     within_mm: l.within_mm,
+                    names: l.names,
                 });
                 Step {
                     item,
@@ -340,8 +325,10 @@ impl Figure {
                         } else {
                             Item::Segment(Segment::new(a, b))
                         };
+                        // Set at the middle of the piece that shows, it names the vector.
                         let label = st.label.as_ref().map(|l| Label {
                             anchor: a.lerp(b, 0.5),
+                            names: Names::Item,
                             ..l.clone()
                         });
                         items.push((st, item, label));
@@ -424,6 +411,7 @@ impl Figure {
                 anchor: at,
                 toward,
                 within_mm: None,
+                names: Names::Item,
             }),
             from: Vec::new(),
             group: 0,
@@ -497,6 +485,7 @@ mod tests {
                 anchor: DVec2::new(1.0, 2.0),
                 toward: DVec2::new(0.6, 0.8),
                 within_mm: None,
+                names: Names::Point,
             }),
             from: Vec::new(),
             group: 0,

@@ -18,11 +18,13 @@ mod drafting;
 mod error;
 mod figure;
 pub(crate) mod fit;
+mod label;
 mod recorder;
 
 pub use compass::{Compass, Pick};
 pub use context::Context;
 pub use drafting::{Drafting, Measured};
 pub use error::ConstructionError;
-pub use figure::{Figure, Item, Label, Role, Step, StepId};
+pub use figure::{Figure, Item, Role, Step, StepId};
+pub use label::{Label, Names};
 pub use recorder::Recorder;

@@ -3,7 +3,8 @@
 
 use super::context::Context;
 use super::drafting::{Drafting, Measured};
-use super::figure::{Figure, Item, Label, Role, Step, StepId};
+use super::figure::{Figure, Item, Role, Step, StepId};
+use super::label::{Label, Names};
 use crate::geom::{DVec2, Tolerances};
 use crate::scale::Scale;
 
@@ -84,14 +85,28 @@ impl Recorder {
         id
     }
 
-    /// Attach a label to a recorded step.
+    /// Attach a label to a recorded step; it names what [`Names::of`] says (the point it
+    /// is anchored at when that is a point of the step's item, else the item).
     pub fn label(&mut self, id: StepId, text: impl Into<String>, anchor: DVec2, toward: DVec2) {
         if let Some(step) = self.figure.steps.get_mut(id.0 as usize) {
+            step.label = Some(Label::on(&step.item, text, anchor, toward));
+        }
+    }
+
+    /// Attach a label that names the step's item wherever it is anchored: a force's arrow
+    /// labelled at its free end names the force, not the point there, and is never joined
+    /// with another label at that point.
+    pub fn label_item(
+        &mut self,
+        id: StepId,
+        text: impl Into<String>,
+        anchor: DVec2,
+        toward: DVec2,
+    ) {
+        if let Some(step) = self.figure.steps.get_mut(id.0 as usize) {
             step.label = Some(Label {
-                text: text.into(),
-                anchor,
-                toward,
-                within_mm: None,
+                names: Names::Item,
+                ..Label::on(&step.item, text, anchor, toward)
             });
         }
     }

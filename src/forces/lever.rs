@@ -5,13 +5,14 @@
 //! Σ M_p = 0. The lever's moment of a force is its power divided by μ_v, so the lever is the
 //! power balance drawn.
 
+use super::arrows::{arm_named, arrow};
 use super::loads::Load;
 use super::polygons::{MomentEquation, MomentTerm, Unknown};
 use super::spec::Drive;
 use super::twin::line_of_action;
 use crate::construct::{Figure, Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
-use crate::linkage::{Built, KinPlan, PlanSetup};
+use crate::linkage::{image_label, Built, KinPlan, PlanKind, PlanSetup};
 use crate::scale::Scale;
 
 /// Length of a force's arrow on the lever, mm.
@@ -43,6 +44,10 @@ fn image(b: &Built, vp: &KinPlan, l: usize, x: DVec2, mu_l: f64) -> DVec2 {
     let w = vp.rate.get(l).copied().unwrap_or(0.0);
     vp.images[o] + (x - b.p[o]).perp() * (w * mu_l / vp.figure.scale.value())
 }
+
+/// The name of the pitch point's image on the lever, where the balancing force of a gear
+/// drive acts: the lever's points are named by the plan's small letters, and `p` is the pole.
+const PITCH_IMAGE: &str = "p_{P}";
 
 /// Turn a plan vector 90° clockwise.
 fn turn(v: DVec2) -> DVec2 {
@@ -106,50 +111,63 @@ fn lever_at(
                 Role::Construction,
                 &[pole],
             );
-            let name = crate::linkage::plain(&prog.names[k]).to_lowercase();
+            let name = image_label(&prog.names[k], PlanKind::Velocity);
             let id = rec.draw("image", Item::Point(x), Role::Given, &[]);
             rec.label(id, name, x, x.normalize_or_zero());
         }
     }
     let mut arms = 0;
     let mut log: Vec<MomentTerm> = Vec::new();
-    // The moment of `f` at `x` about the pole; `slid`: the force drawn at the end of its arm,
-    // moved along its line of action from its image (drawn thin).
-    let mut moment = |rec: &mut Recorder, x: DVec2, f: DVec2, name: &str, slid: bool| -> f64 {
+    // The moment of `f` at `x` about the pole; `image`: the name of its point's image when
+    // the turned plan has no such point (the pitch point's), drawn and labelled.
+    let mut moment = |rec: &mut Recorder, x: DVec2, f: DVec2, name: &str, image: Option<&str>| {
         let Some(e) = f.try_normalize() else {
             return 0.0;
         };
         let foot = x + e * (-x).dot(e);
-        let at = if slid {
+        if let Some(point) = image {
+            // The image on the turned plan: its ray from the pole, as every point's.
             rec.draw(
+                format!("{name}: the ray of its image"),
+                Item::Segment(Segment::new(DVec2::ZERO, x)),
+                Role::Construction,
+                &[],
+            );
+            let id = rec.draw(
                 format!("{name}: its image"),
                 Item::Point(x),
                 Role::Given,
                 &[],
             );
-            rec.draw(
-                format!("{name}: its line of action to the end of its arm"),
-                Item::Segment(Segment::new(x, foot)),
-                Role::Construction,
-                &[],
-            );
-            foot
-        } else {
-            x
-        };
-        let id = rec.draw(
+            rec.label(id, point, x, -e);
+        }
+        let id = arrow(
+            rec,
             format!("{name} at its image"),
-            Item::Vector {
-                from: at,
-                to: at + e * ARROW_MM,
-            },
-            Role::Result,
-            &[],
+            name,
+            (x, e, ARROW_MM),
+            false,
         );
-        rec.label(id, name, at + e * ARROW_MM, e);
+        // The line of action from the arrow to the end of its arm, when the arm's foot is
+        // off the arrow.
+        if let Some(Item::Vector { from, to }) = rec.steps().get(id.0 as usize).map(|s| &s.item) {
+            let (from, to) = (*from, *to);
+            let along = (foot - from).dot(e);
+            if along < -0.5 || along > (to - from).dot(e) + 0.5 {
+                let near = if along < 0.0 { from } else { to };
+                rec.draw(
+                    format!("{name}: its line of action to the end of its arm"),
+                    Item::Segment(Segment::new(near, foot)),
+                    Role::Construction,
+                    &[],
+                );
+            }
+        }
         let arm = rec.measure(DVec2::ZERO, foot);
         let mut label = None;
-        if arm.drawn_mm > 0.5 {
+        if let Some(same) = arm_named(rec, DVec2::ZERO, foot) {
+            label = Some(same);
+        } else if arm.drawn_mm > 0.5 {
             arms += 1;
             label = Some(format!("h_{{{arms}}}"));
             let id = rec.draw(
@@ -205,8 +223,8 @@ fn lever_at(
             let f = e * (l.moment / len);
             // The couple's two forces, primed apart from the link's inertia force.
             let name = |prime: &str| l.name.replacen('M', &format!("F{prime}"), 1);
-            power += moment(&mut rec, turn(i_far), f, &name("′"), false);
-            power += moment(&mut rec, turn(vp.images[o]), -f, &name("″"), false);
+            power += moment(&mut rec, turn(i_far), f, &name("′"), None);
+            power += moment(&mut rec, turn(vp.images[o]), -f, &name("″"), None);
         } else {
             // A force at a point of another link (friction on a guide) acts on its own link.
             let x = if l.shift == DVec2::ZERO && prog.links_of(l.at).contains(&l.link) {
@@ -214,7 +232,7 @@ fn lever_at(
             } else {
                 image(b, vp, l.link, b.p[l.at] + l.shift / mu, mu)
             };
-            power += moment(&mut rec, turn(x), l.force, &l.name, false);
+            power += moment(&mut rec, turn(x), l.force, &l.name, None);
         }
     }
     let crank = prog.crank_link as usize;
@@ -227,7 +245,7 @@ fn lever_at(
             let flank = if m_bal == 0.0 { w1 } else { m_bal }.signum();
             let (p, d) = line_of_action(o, g.radius() / mu, g.towards, g.pressure_angle, flank);
             let x = turn(image(b, vp, crank, p, mu));
-            let unit = moment(&mut rec, x, d, "F_{у}", true);
+            let unit = moment(&mut rec, x, d, "F_{у}", Some(PITCH_IMAGE));
             let f = -power / unit;
             (m_bal, Some(f))
         }

@@ -11,6 +11,7 @@
 //! - rows `R_<i>_<j>`, `h_<i>_<j>` (a guide reaction's point), `M_bal`, `F_bal` and the
 //!   inertia loads `F_in<l>`, `M_in<l>`, graphical against analytic.
 
+mod arrows;
 pub mod balancing;
 mod diagnose;
 mod error;

@@ -5,7 +5,7 @@
 
 use super::generate::Generation;
 use super::rack::Cutting;
-use crate::construct::{Figure, Item, Label, Role, Step, StepId};
+use crate::construct::{Figure, Item, Label, Names, Role, Step, StepId};
 use crate::geom::{rotate, Circle, DVec2};
 use std::f64::consts::PI;
 
@@ -183,6 +183,12 @@ impl Generation {
                     anchor: at,
                     toward,
                     within_mm: Some(DETAIL_NAME_WITHIN_MM),
+                    // The junction is a point; the other names name the curve they stand on.
+                    names: if mark == DetailMark::Junction {
+                        Names::Point
+                    } else {
+                        Names::Item
+                    },
                 }),
                 from: Vec::new(),
                 group: 0,

@@ -28,7 +28,9 @@ pub use model::{
     Branch, Crank, Dir, Dyad, DyadKind, FixedPoint, Group, Guide, LinkPoint, Mechanism, Output,
     RedundantPair, Sense,
 };
-pub use plans::{kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading};
+pub use plans::{
+    image_label, kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading,
+};
 pub use positions::{
     group_name, plan_poses, PlanPoses, PlanPosition, PlanRequest, PosePosition, Position,
     PositionPlan,

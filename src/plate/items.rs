@@ -67,14 +67,40 @@ impl Arrow {
 /// see [`layout`](super::layout)).
 pub(crate) fn step_marks(step: &Step, map: Map) -> Vec<Mark> {
     let mut out = Vec::new();
+    let point = short_vector(step).map(Item::Point);
     item_marks(
-        &step.item,
+        point.as_ref().unwrap_or(&step.item),
         step.role,
         Pen::for_role(step.role),
         map,
         &mut out,
     );
     out
+}
+
+/// The tail of a labelled vector shorter than its arrowhead: it is drawn as the point it is
+/// there, as the textbook writes `p ≡ b` — an arrowhead would overhang its tail, and several
+/// at a pole print as a cluster of heads (issue 45). An unlabelled short vector is an arc's
+/// arrowhead (the ω arrow) and stays one. `None` for any other step.
+pub(crate) fn short_vector(step: &Step) -> Option<DVec2> {
+    match step.item {
+        Item::Vector { from, to }
+            if step.label.is_some()
+                && from.distance(to) < Arrow::for_pen(Pen::for_role(step.role)).len =>
+        {
+            Some(from)
+        }
+        _ => None,
+    }
+}
+
+/// The outlines of what a step draws under `map` (a short labelled vector as its point, see
+/// [`short_vector`]).
+pub(crate) fn step_outlines(step: &Step, map: Map) -> Vec<Outline> {
+    match short_vector(step) {
+        Some(p) => item_outlines(&Item::Point(p), step.role, map),
+        None => item_outlines(&step.item, step.role, map),
+    }
 }
 
 /// What a drawn item covers on the sheet, for laying labels out clear of it and for the

@@ -218,7 +218,7 @@ impl View {
         let drawn = figure
             .steps
             .iter()
-            .flat_map(|s| items::item_outlines(&s.item, s.role, map))
+            .flat_map(|s| items::step_outlines(s, map))
             .flat_map(|o| match o.shape {
                 items::Shape::Line(a, b) => vec![a, b],
                 items::Shape::Area(pts) => pts,
@@ -239,7 +239,7 @@ impl View {
     pub fn step_bounds(step: &crate::construct::Step) -> Option<(DVec2, DVec2)> {
         let map = path::Map::figure(DVec2::ZERO);
         // Sheet y runs down: the figure's is its negative.
-        let points: Vec<DVec2> = items::item_outlines(&step.item, step.role, map)
+        let points: Vec<DVec2> = items::step_outlines(step, map)
             .into_iter()
             .flat_map(|o| match o.shape {
                 items::Shape::Line(a, b) => vec![a, b],

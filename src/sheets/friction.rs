@@ -74,10 +74,13 @@ fn caption(n: usize, s: &Solved, d: &Drawing, lang: Lang) -> String {
         what(&s.case.kind, d.kind, lang)
     );
     let scales = match (d.kind, d.also.as_slice()) {
+        // μ_k in millimetres of k per drawing millimetre: the arm is magnified (0,004 мм/мм,
+        // not 0,000004 м/мм).
         (DrawingKind::Balance, [f, k, l]) => format!(
-            "{}, μ_{{k}} = {}, μ_{{d}} = {} {}",
+            "{}, μ_{{k}} = {} {}, μ_{{d}} = {} {}",
             mu("F", f.value(), Quantity::Force, lang),
-            format_sig(k.value(), 3, lang),
+            format_sig(k.value() * 1e3, 3, lang),
+            unit_in("mm/mm", lang),
             format_sig(l.value(), 3, lang),
             Quantity::Length.unit(lang)
         ),

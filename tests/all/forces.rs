@@ -792,12 +792,32 @@ fn the_guide_reaction_stands_at_its_arm_and_the_balancing_force_at_the_end_of_it
             .into_iter()
             .find(|(n, ..)| n.starts_with("F_{у}"))
             .expect("F_у on the lever");
+        // Issue 45: F_у stands at the image of the pitch point, labelled, and its line of
+        // action runs on to the foot of its arm (before, it was slid to the foot, 100 mm
+        // from an unlabelled image).
         let e = (to - at).normalize();
+        let image = lever
+            .steps
+            .iter()
+            .find(|s| s.label.as_ref().is_some_and(|l| l.text == "p_{P}"))
+            .expect("the image of P labelled");
+        assert_eq!(image.item, Item::Point(at), "F_у is not at the image of P");
+        let foot = at + e * (-at).dot(e);
+        let reaches = |a: DVec2, b: DVec2| {
+            lever.steps.iter().any(|s| match s.item {
+                Item::Segment(seg) => {
+                    (seg.from.distance(a) < 1e-9 && seg.to.distance(b) < 1e-9)
+                        || (seg.from.distance(b) < 1e-9 && seg.to.distance(a) < 1e-9)
+                }
+                _ => false,
+            })
+        };
         assert!(
-            at.dot(e).abs() < 1e-9 * at.length().max(1.0),
-            "F_у is not at the foot of its arm"
+            reaches(at, foot) || reaches(to, foot),
+            "F_у's line of action does not reach its arm's foot"
         );
-        assert!(at.length() > 10.0, "its arm is {} mm", at.length());
+        assert!(reaches(DVec2::ZERO, foot), "F_у's arm is not drawn");
+        assert!(foot.length() > 10.0, "its arm is {} mm", foot.length());
     });
 }
 

@@ -234,39 +234,69 @@ fn scheme(case: &FrictionCase, c: &Rolling, ctx: &Context) -> Result<Drawing, Fr
     })
 }
 
-/// One term `L·k/d` of the moment balance by the intercept theorem on the lever AB; `side`
-/// +1 lays k to the right, −1 to the left. Returns the force read.
+/// One term `L·k/d` of the moment balance by the intercept theorem on the lever AB: the arm
+/// k laid across the lever at one end (`base`, +1 to the right, −1 to the left), the load L
+/// laid along the lever from the other end (`apex`) and on past `base` when it is longer; the
+/// line from `apex` through the arm's end, run on, cuts off on the parallel to k through the
+/// load's end the force L·k/d. Every piece is drawn from the one before (the load from the
+/// lever's end, the line from the arm's, the force from the load's), so the triangle and its
+/// force read as one construction. Returns the force read.
 fn term(
     rec: &mut Recorder,
-    (lever_mm, q_mm, k_mm): (f64, f64, f64),
+    (base, apex): (DVec2, DVec2),
+    (q_mm, k_mm): (f64, f64),
     side: f64,
-    names: (&str, &str),
+    names: (&str, &str, &str),
 ) -> Result<f64, ConstructionError> {
-    let b = DVec2::new(0.0, lever_mm);
-    let kc = DVec2::new(side * k_mm, 0.0);
+    let (arm, load, force) = names;
+    let kc = base + DVec2::X * (side * k_mm);
     let id = rec.draw(
-        format!("the arm {} at μ_k", names.0),
-        Item::Segment(Segment::new(DVec2::ZERO, kc)),
+        format!("the arm {arm} at μ_k"),
+        Item::Segment(Segment::new(base, kc)),
         Role::Given,
         &[],
     );
-    rec.label(id, names.0, kc / 2.0, -DVec2::Y);
-    thin_line(rec, &format!("B to the end of {}", names.0), b, kc);
-    let dpt = b - DVec2::Y * q_mm;
+    let onward = (base - apex).normalize_or(DVec2::Y);
+    rec.label(id, arm, (base + kc) / 2.0, onward);
+    // The load from the lever's far end, labelled on its piece past the lever (or at its
+    // middle when it is shorter), on the arm's side.
+    let dpt = apex + onward * q_mm;
+    let lever_mm = apex.distance(base);
+    let id = rec.draw(
+        format!("the load {load} along the lever at μ_F"),
+        Item::Vector {
+            from: apex,
+            to: dpt,
+        },
+        Role::Given,
+        &[],
+    );
+    let on = if q_mm > lever_mm {
+        base.lerp(dpt, 0.5)
+    } else {
+        apex.lerp(dpt, 0.5)
+    };
+    rec.label(id, load, on, DVec2::X * side);
     let hline = Line {
         point: dpt,
         direction: DVec2::X * side,
     };
-    let bc = Line {
-        point: b,
-        direction: (kc - b).normalize_or(DVec2::X),
+    let through = Line {
+        point: apex,
+        direction: (kc - apex).normalize_or(DVec2::X),
     };
     let (e, _, _) = rec.meet_lines(
-        &format!("the parallel to {}", names.0),
+        &format!("the parallel to {arm}"),
         ("the parallel", &hline),
-        ("B–k", &bc),
+        ("apex–k", &through),
     )?;
-    arrow(rec, names.1, (dpt, e), Role::Result, names.1, DVec2::Y);
+    thin_line(
+        rec,
+        &format!("from the lever's end through the end of {arm}"),
+        apex,
+        e,
+    );
+    arrow(rec, force, (dpt, e), Role::Result, force, onward);
     Ok(rec.measure(dpt, e).value)
 }
 
@@ -349,34 +379,34 @@ fn balance(
         unit: "N",
     })?;
     let mut rec = Recorder::in_context(name, mu_p, ctx);
+    let (a_pt, b_pt) = (DVec2::ZERO, DVec2::new(0.0, lever_mm));
     let lever = rec.draw(
         "the lever AB = d at μ_l",
-        Item::Segment(Segment::new(DVec2::ZERO, DVec2::new(0.0, lever_mm))),
+        Item::Segment(Segment::new(a_pt, b_pt)),
         Role::Given,
         &[],
     );
-    rec.label(lever, "d", DVec2::new(0.0, lever_mm / 2.0), -DVec2::X);
-    let b = rec.draw(
-        "B",
-        Item::Point(DVec2::new(0.0, lever_mm)),
-        Role::Given,
-        &[],
-    );
-    rec.label(b, "B", DVec2::new(0.0, lever_mm), DVec2::Y);
-    let a = rec.draw("A", Item::Point(DVec2::ZERO), Role::Given, &[]);
-    rec.label(a, "A", DVec2::ZERO, -DVec2::Y);
+    rec.label(lever, "d", a_pt.lerp(b_pt, 0.5), -DVec2::X);
+    let b = rec.draw("B", Item::Point(b_pt), Role::Given, &[]);
+    rec.label(b, "B", b_pt, DVec2::new(-1.0, 1.0).normalize());
+    let a = rec.draw("A", Item::Point(a_pt), Role::Given, &[]);
+    rec.label(a, "A", a_pt, DVec2::new(1.0, -1.0).normalize());
+    // P₁ hangs from B with k₁ at A, P₂ rises from A with k₂ at B: the two triangles
+    // apart, each force read off its own.
     let p1 = term(
         &mut rec,
-        (lever_mm, mu_f.to_mm(twin.r_n1), mu_k.to_mm(c.k1)),
+        (a_pt, b_pt),
+        (mu_f.to_mm(twin.r_n1), mu_k.to_mm(c.k1)),
         -1.0,
-        ("k_{1}", "P_{1}"),
+        ("k_{1}", "R_{n1}", "P_{1}"),
     )
     .map_err(wrap)?;
     let p2 = term(
         &mut rec,
-        (lever_mm, mu_f.to_mm(twin.r_n2), mu_k.to_mm(c.k2)),
+        (b_pt, a_pt),
+        (mu_f.to_mm(twin.r_n2), mu_k.to_mm(c.k2)),
         1.0,
-        ("k_{2}", "P_{2}"),
+        ("k_{2}", "R_{n2}", "P_{2}"),
     )
     .map_err(wrap)?;
     let balance = Drawing {

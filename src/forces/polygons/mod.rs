@@ -139,27 +139,12 @@ impl<'a> Scheme<'a> {
         self.board.setup.built.p[l.at] + l.shift / self.board.setup.mu_l.value()
     }
 
-    /// Draw a load: an arrow at its point (a couple: an arc arrow about the link's origin).
+    /// Draw a load: an arrow at its point (a couple: an arc arrow about the link's origin),
+    /// apart from the loads already drawn there ([`crate::forces::arrows`]).
     fn show(&mut self, l: &Load) {
         if l.is_couple() {
             let o = self.board.setup.built.p[self.board.setup.built.origin[l.link]];
-            let (a0, sweep) = if l.moment > 0.0 {
-                (0.3, 1.6)
-            } else {
-                (1.9, -1.6)
-            };
-            let arc = crate::geom::Arc {
-                center: o,
-                radius: 9.0,
-                start: a0,
-                sweep,
-            };
-            let id = self
-                .rec
-                .draw(l.name.clone(), Item::Angle(arc), Role::Result, &[]);
-            let mid = o + DVec2::from_angle(a0 + sweep / 2.0) * 9.0;
-            self.rec
-                .label(id, &l.name, mid, DVec2::from_angle(a0 + sweep / 2.0));
+            crate::forces::arrows::couple(&mut self.rec, &l.name, o, l.moment);
             return;
         }
         let Some(e) = l.force.try_normalize() else {
@@ -171,19 +156,13 @@ impl<'a> Scheme<'a> {
     /// A force's arrow along `e` at its point `x`: from `x`, or ending at `x` (`onto`);
     /// labelled `name` at the end away from the point.
     fn arrow(&mut self, name: &str, x: DVec2, e: DVec2, onto: bool) {
-        let away = if onto { -e } else { e };
-        let (from, to) = if onto {
-            (x - e * ARROW_MM, x)
-        } else {
-            (x, x + e * ARROW_MM)
-        };
-        let id = self.rec.draw(
+        crate::forces::arrows::arrow(
+            &mut self.rec,
             format!("load {name}"),
-            Item::Vector { from, to },
-            Role::Result,
-            &[],
+            name,
+            (x, e, ARROW_MM),
+            onto,
         );
-        self.rec.label(id, name, x + away * ARROW_MM, away);
     }
 
     /// The moment of `l` about `c` (mm), N·m: the arm measured on the drawing.
@@ -206,7 +185,9 @@ impl<'a> Scheme<'a> {
         let arm = self.rec.measure(c, foot);
         let sign = (x - c).perp_dot(e).signum();
         let mut label = None;
-        if arm.drawn_mm > 0.5 {
+        if let Some(name) = crate::forces::arrows::arm_named(&self.rec, c, foot) {
+            label = Some(name);
+        } else if arm.drawn_mm > 0.5 {
             self.arms += 1;
             label = Some(format!("h_{{{}}}", self.arms));
             // The line of action extended from the force's point to the arm's foot.

@@ -28,17 +28,13 @@ impl Steps {
         label: Option<(String, DVec2, DVec2)>,
     ) {
         let id = StepId(self.0.len() as u32);
+        let label = label.map(|(text, anchor, toward)| Label::on(&item, text, anchor, toward));
         self.0.push(Step {
             id,
             note,
             item,
             role,
-            label: label.map(|(text, anchor, toward)| Label {
-                text,
-                anchor,
-                toward,
-                within_mm: None,
-            }),
+            label,
             from: Vec::new(),
             group: 0,
         });

@@ -22,7 +22,7 @@ use crate::construct::{ConstructionError, Context, Figure, Recorder};
 use crate::geom::DVec2;
 use crate::scale::Scale;
 use builder::{Builder, Known, Links};
-pub use names::plain;
+pub use names::{image_label, plain};
 
 /// Which plan.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -18,7 +18,7 @@ pub(super) fn lower(name: &str) -> String {
 }
 
 /// Label of an image: lower-case, primed on the acceleration plan.
-pub(super) fn image_label(name: &str, kind: PlanKind) -> String {
+pub fn image_label(name: &str, kind: PlanKind) -> String {
     match kind {
         PlanKind::Velocity => lower(name),
         PlanKind::Acceleration => format!("{}′", lower(name)),

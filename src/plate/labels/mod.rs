@@ -2,7 +2,10 @@
 //!
 //! Labels are placed by the plate, not at a fixed offset from their point. Labels of one view
 //! whose points coincide on the sheet (within [`COINCIDENT_MM`]) become one joint label written
-//! as the textbook does, `p ≡ b₃ ≡ d` (the figure's order, the pole first). Every label then
+//! as the textbook does, `p ≡ b₃ ≡ d` (the figure's order, the pole first) — labels of points
+//! only ([`Names::Point`]): two forces, arms or couples drawn at one place are two labels,
+//! never `R₁₋₂ ≡ R₂₋₃` (issue 45). A label of a line, a vector or an arc keeps nearer its own
+//! item than any other line of its view where it can. Every label then
 //! tries positions around its point — its preferred direction first, then sixteen directions
 //! at five distances, a joint label also from each corner of its point — and keeps the one
 //! that collides least with what is already placed (labels, captions, text blocks, tables)
@@ -10,14 +13,14 @@
 //! the frame nor entering the title block when it can help it. Crowded labels are placed first; the order is deterministic, so is the layout.
 //! The SVG writer writes the texts from this layout, and the tests check its boxes.
 
-use super::items::{item_outlines, Outline, Shape, JOINT_RADIUS_MM};
+use super::items::{short_vector, step_outlines, Outline, Shape, JOINT_RADIUS_MM};
 use super::items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
 use super::path::Map;
 use super::style::{Mark, Pen};
 use super::table::table_marks;
 use super::text::{measure, plain, Align, Extent, Placed};
 use super::{Plate, Rect, TextBlock, View, CAPTION_BAND_MM};
-use crate::construct::{Item, Label, StepId};
+use crate::construct::{Item, Label, Names, StepId};
 use crate::geom::DVec2;
 use std::f64::consts::{FRAC_PI_4, TAU};
 
@@ -144,7 +147,7 @@ pub(super) fn view_outlines(view: &View) -> Vec<Outline> {
     view.figure
         .steps
         .iter()
-        .flat_map(|s| item_outlines(&s.item, s.role, map))
+        .flat_map(|s| step_outlines(s, map))
         .collect()
 }
 
@@ -210,6 +213,11 @@ struct Request {
     gap: f64,
     /// The farthest the text's box may stand from the point ([`Label::within_mm`]).
     within: Option<f64>,
+    /// What it names: only names of points are joined.
+    names_of: Names,
+    /// The outlines of its own item (a label of an item is read as belonging to the line
+    /// nearest to it), sheet mm; empty for a label of a point.
+    own: Vec<Outline>,
 }
 
 impl Request {
@@ -247,6 +255,7 @@ fn requests(
             anchor,
             toward,
             within_mm,
+            names: names_of,
         }) = &step.label
         else {
             continue;
@@ -271,14 +280,26 @@ fn requests(
             Item::Joint { .. } => LABEL_GAP_MM + JOINT_RADIUS_MM,
             _ => LABEL_GAP_MM,
         };
+        // A vector drawn as the point at its tail (shorter than its arrowhead): the name of
+        // its head is written at that point (`p ≡ b`).
+        let anchor = match (names_of, short_vector(step)) {
+            (Names::Point, Some(tail)) => tail,
+            _ => *anchor,
+        };
+        let own = match names_of {
+            Names::Point => Vec::new(),
+            Names::Item => step_outlines(step, map),
+        };
         single.push(Request {
             view: k,
             steps: vec![step.id],
             names: vec![text.clone()],
-            anchor: map.pt(*anchor),
+            anchor: map.pt(anchor),
             toward: map.dir(*toward).normalize_or_zero(),
             gap,
             within: *within_mm,
+            names_of: *names_of,
+            own,
         });
     }
     (join_coincident(single), fixed)
@@ -293,7 +314,7 @@ pub(super) fn line_length_in(figure: &crate::construct::Figure, lo: DVec2, hi: D
     figure
         .steps
         .iter()
-        .flat_map(|s| item_outlines(&s.item, s.role, map))
+        .flat_map(|s| step_outlines(s, map))
         .map(|o| match o.shape {
             Shape::Line(a, b) => place::clipped_length(a, b, &rect),
             Shape::Area(_) => 0.0,
@@ -321,9 +342,9 @@ pub(super) fn joint_labels(figure: &crate::construct::Figure) -> Vec<(DVec2, Str
         .collect()
 }
 
-/// Join the requests whose points coincide (transitively; names with names, position
+/// Join the labels of points whose points coincide (transitively; names with names, position
 /// numbers with position numbers), keeping the figure's order with the pole first; a name
-/// repeated at one point is written once.
+/// repeated at one point is written once. A label of an item is never joined.
 fn join_coincident(single: Vec<Request>) -> Vec<Request> {
     let n = single.len();
     let mut root: Vec<usize> = (0..n).collect();
@@ -337,7 +358,9 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
     for i in 0..n {
         for j in 0..i {
             let (a, b) = (&single[i], &single[j]);
-            if a.anchor.distance(b.anchor) <= COINCIDENT_MM
+            if a.names_of == Names::Point
+                && b.names_of == Names::Point
+                && a.anchor.distance(b.anchor) <= COINCIDENT_MM
                 && is_number(&a.names[0]) == is_number(&b.names[0])
             {
                 let (a, b) = (find(&mut root, i), find(&mut root, j));

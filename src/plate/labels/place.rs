@@ -10,9 +10,9 @@ pub(super) struct Placer<'a> {
     fixed: Vec<Rect>,
     /// Every view's outlines (a label avoids the lines of every view).
     outlines: &'a [Vec<Outline>],
-    /// Every view's outlines with their boxes, taken once (a gear's profile is thousands of
-    /// points, and every label looks for the lines near it).
-    boxed: Vec<(Rect, &'a Outline)>,
+    /// Every view's outlines with their boxes and their view, taken once (a gear's profile
+    /// is thousands of points, and every label looks for the lines near it).
+    boxed: Vec<(Rect, usize, &'a Outline)>,
 }
 
 /// Cost of a box leaving the frame or entering the title block.
@@ -39,6 +39,12 @@ const THIN_AREA: f64 = 6.0;
 const NEAR_RING_MM: f64 = 1.0;
 /// Cost per rank of the candidate (the preferred position is rank 0).
 const RANK: f64 = 0.5;
+/// Cost of a label of an item (a force, an arm) nearer to another line of its view than to
+/// its own: it would be read as that line's (issue 45); plus [`WRONG_LINE_MM`] per mm. Less
+/// than a line striking the label ([`STRUCK`] and [`MAIN_LINE`]): a struck label cannot be
+/// read at all.
+const WRONG_LINE: f64 = 20.0;
+const WRONG_LINE_MM: f64 = 10.0;
 /// Rounds of moving the labels that still collide.
 const REPAIR_ROUNDS: usize = 4;
 
@@ -51,6 +57,9 @@ struct Job<'a> {
     near: Rect,
     /// The outlines near it, with their boxes.
     lines: Vec<(Rect, &'a Outline)>,
+    /// The lines of its own view near it that are not its item's (a label of an item keeps
+    /// nearer its item than any of them).
+    rivals: Vec<(DVec2, DVec2)>,
     points: Vec<DVec2>,
     /// The cost per rank of its candidates.
     rank_cost: f64,
@@ -74,8 +83,9 @@ impl<'a> Placer<'a> {
             .collect();
         let boxed = outlines
             .iter()
-            .flatten()
-            .filter_map(|o| Some((shape_box(&o.shape)?, o)))
+            .enumerate()
+            .flat_map(|(k, v)| v.iter().map(move |o| (k, o)))
+            .filter_map(|(k, o)| Some((shape_box(&o.shape)?, k, o)))
             .collect();
         Placer {
             frame: layout.frame,
@@ -99,7 +109,9 @@ impl<'a> Placer<'a> {
         self.fixed.extend(out.iter().map(|l| l.rect));
         let points: Vec<(usize, DVec2)> = todo.iter().map(|r| (r.view, r.anchor)).collect();
         let jobs: Vec<Job> = todo.into_iter().map(|r| self.job(r, &points)).collect();
-        // The most crowded first: they have the fewest free places.
+        // Labels of points first, the most crowded first: a point's label has a few places
+        // about its point, an item's a whole line to sit along; among each, the most crowded
+        // have the fewest free places.
         let crowd = |j: &Job| {
             let r = &j.request;
             points
@@ -107,13 +119,16 @@ impl<'a> Placer<'a> {
                 .filter(|(v, p)| *v == r.view && p.distance(r.anchor) < 8.0)
                 .count()
         };
-        let mut order: Vec<(usize, usize, usize)> = jobs
+        let mut order: Vec<(usize, bool, usize, usize)> = jobs
             .iter()
             .enumerate()
-            .map(|(i, j)| (j.request.view, usize::MAX - crowd(j), i))
+            .map(|(i, j)| {
+                let item = j.request.names_of == Names::Item;
+                (j.request.view, item, usize::MAX - crowd(j), i)
+            })
             .collect();
         order.sort_unstable();
-        let order: Vec<usize> = order.into_iter().map(|o| o.2).collect();
+        let order: Vec<usize> = order.into_iter().map(|o| o.3).collect();
         let mut slots: Vec<Option<Slot>> = vec![None; jobs.len()];
         for &i in &order {
             slots[i] = Some(self.best(&jobs, &slots, i).0);
@@ -161,9 +176,23 @@ impl<'a> Placer<'a> {
         let lines = self
             .boxed
             .iter()
-            .filter(|(b, _)| b.touches(&near))
-            .copied()
+            .filter(|(b, _, _)| b.touches(&near))
+            .map(|&(b, _, o)| (b, o))
             .collect();
+        let rivals = match request.own.is_empty() {
+            true => Vec::new(),
+            false => self
+                .boxed
+                .iter()
+                .filter(|(b, k, o)| {
+                    *k == request.view && b.touches(&near) && !request.own.contains(*o)
+                })
+                .filter_map(|(_, _, o)| match o.shape {
+                    Shape::Line(a, b) => Some((a, b)),
+                    Shape::Area(_) => None,
+                })
+                .collect(),
+        };
         let points = points
             .iter()
             .filter(|(v, p)| {
@@ -178,6 +207,7 @@ impl<'a> Placer<'a> {
             candidates,
             near,
             lines,
+            rivals,
             points,
             rank_cost,
         }
@@ -297,6 +327,16 @@ impl<'a> Placer<'a> {
                 cost += OVER_POINT;
             }
         }
+        if let Some(own) = own_distance(&job.request.own, rect) {
+            let rival = job
+                .rivals
+                .iter()
+                .map(|(a, b)| rect_segment_distance(rect, *a, *b))
+                .fold(f64::INFINITY, f64::min);
+            if rival + NEARER_MM < own {
+                cost += WRONG_LINE + WRONG_LINE_MM * (own - rival);
+            }
+        }
         for (bounds, o) in &job.lines {
             if cost >= bound {
                 return cost;
@@ -406,6 +446,40 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
 pub(super) fn box_distance(r: &Rect, p: DVec2) -> f64 {
     let d = (r.min - p).max(p - r.max).max(DVec2::ZERO);
     d.length()
+}
+
+/// A label of an item counts as nearer another line only when it is this much nearer, mm.
+pub(crate) const NEARER_MM: f64 = 0.5;
+
+/// The distance from `rect` to the nearest of the lines among `own`; `None` without lines.
+fn own_distance(own: &[Outline], rect: &Rect) -> Option<f64> {
+    own.iter()
+        .filter_map(|o| match o.shape {
+            Shape::Line(a, b) => Some(rect_segment_distance(rect, a, b)),
+            Shape::Area(_) => None,
+        })
+        .reduce(f64::min)
+}
+
+/// The distance from the box `r` to the segment `a`–`b`, mm (0 when they meet).
+pub(crate) fn rect_segment_distance(r: &Rect, a: DVec2, b: DVec2) -> f64 {
+    if r.contains(&Rect::new(a, a)) || clipped_length(a, b, r) > 0.0 {
+        return 0.0;
+    }
+    let to_rect = |p: DVec2| (p - p.clamp(r.min, r.max)).length();
+    let segment = crate::geom::Segment::new(a, b);
+    let to_segment = |p: DVec2| segment.distance_to(p);
+    let corners = [
+        r.min,
+        r.max,
+        DVec2::new(r.min.x, r.max.y),
+        DVec2::new(r.max.x, r.min.y),
+    ];
+    corners
+        .into_iter()
+        .map(to_segment)
+        .chain([to_rect(a), to_rect(b)])
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// The text written so that its box is `rect`.

@@ -41,6 +41,8 @@ fn request(name: &str, at: DVec2, step: u32) -> Request {
         toward: DVec2::X,
         gap: LABEL_GAP_MM,
         within: None,
+        names_of: Names::Point,
+        own: Vec::new(),
     }
 }
 
@@ -60,6 +62,23 @@ fn coincident_labels_join_with_the_pole_first() {
     assert_eq!(joined[0].steps.len(), 4);
     assert_eq!(joined[1].text(), "c");
     assert_eq!(joined[2].text(), "1");
+}
+
+#[test]
+fn labels_of_items_are_never_joined() {
+    let o = DVec2::new(10.0, 10.0);
+    let force = |name: &str, step| Request {
+        names_of: Names::Item,
+        ..request(name, o, step)
+    };
+    let joined = join_coincident(vec![
+        force("R_{1-2}", 1),
+        force("R_{2-3}", 2),
+        request("b", o, 3),
+        request("s_3", o, 4),
+    ]);
+    let texts: Vec<String> = joined.iter().map(Request::text).collect();
+    assert_eq!(texts, ["R_{1-2}", "R_{2-3}", "b ≡ s_3"]);
 }
 
 #[test]

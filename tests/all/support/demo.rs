@@ -11,12 +11,7 @@ struct Steps(Vec<Step>);
 
 impl Steps {
     fn add(&mut self, item: Item, role: Role, label: Option<(&str, DVec2, DVec2)>) -> &mut Self {
-        let label = label.map(|(text, anchor, toward)| Label {
-            text: text.into(),
-            anchor,
-            toward,
-            within_mm: None,
-        });
+        let label = label.map(|(text, anchor, toward)| Label::on(&item, text, anchor, toward));
         let id = StepId(self.0.len() as u32);
         self.0.push(Step {
             id,

@@ -1,0 +1,217 @@
+//! Loads drawn on a link's drawing or on the lever: each force its own arrow and its own
+//! label, each couple its own arc. Two loads at one point along one line (the inertia force
+//! and the useful resistance on the ram, the crank's reaction and the inner one at a block)
+//! are two arrows — the second onto the point, or past the first — never one arrow with a
+//! joint label `F_и5 ≡ F_пс` (issue 45).
+
+use crate::construct::{Item, Recorder, Role, StepId};
+use crate::geom::{Arc, DVec2};
+
+/// An arrow lies on another when both its ends are this close to the other's line and they
+/// share more than [`SHARED_MM`] of their length, mm (a main line is 0.7 mm wide and an
+/// arrowhead about 1 mm: closer, two arrows print as one).
+const ON_LINE_MM: f64 = 1.0;
+/// See [`ON_LINE_MM`], mm.
+const SHARED_MM: f64 = 1.0;
+
+/// Whether the arrow `a`–`b` lies on the drawn vector `p`–`q` (see [`ON_LINE_MM`]).
+fn lies_on(a: DVec2, b: DVec2, p: DVec2, q: DVec2) -> bool {
+    let Some(u) = (q - p).try_normalize() else {
+        return false;
+    };
+    let off = |x: DVec2| (x - p).perp_dot(u).abs();
+    if off(a) > ON_LINE_MM || off(b) > ON_LINE_MM {
+        return false;
+    }
+    let (s0, s1) = ((a - p).dot(u), (b - p).dot(u));
+    let (lo, hi) = (s0.min(s1), s0.max(s1));
+    let len = (q - p).length();
+    hi.min(len) - lo.max(0.0) > SHARED_MM
+}
+
+/// Draw the arrow of a force along the unit `e` at its point `x`, `len` mm long, and label
+/// it `name` at its free end: from the point, or onto it (`onto`) — the first of these, then
+/// the other, then past an arrow already there, that no arrow drawn on `rec` covers. The
+/// label names the force ([`Recorder::label_item`]), never the point at its end.
+pub fn arrow(
+    rec: &mut Recorder,
+    note: String,
+    name: &str,
+    (x, e, len): (DVec2, DVec2, f64),
+    onto: bool,
+) -> StepId {
+    let drawn: Vec<(DVec2, DVec2)> = rec
+        .steps()
+        .iter()
+        .filter_map(|s| match s.item {
+            Item::Vector { from, to } => Some((from, to)),
+            _ => None,
+        })
+        .collect();
+    let from_point = (x, x + e * len);
+    let onto_point = (x - e * len, x);
+    let (first, second) = if onto {
+        (onto_point, from_point)
+    } else {
+        (from_point, onto_point)
+    };
+    let free = |(a, b): (DVec2, DVec2)| !drawn.iter().any(|&(p, q)| lies_on(a, b, p, q));
+    // Past the arrows already there: one arrow's length further out each time, on the side
+    // the force is drawn from.
+    let past = (1..=drawn.len() + 1).map(|k| {
+        let k = k as f64;
+        if onto {
+            (x - e * len * (k + 1.0), x - e * len * k)
+        } else {
+            (x + e * len * k, x + e * len * (k + 1.0))
+        }
+    });
+    let (from, to) = [first, second]
+        .into_iter()
+        .chain(past)
+        .find(|&c| free(c))
+        .unwrap_or(first);
+    // The label at the end away from the point; an arrow drawn onto the point in place of
+    // one from it is labelled beside its shaft, since its tail lies where the first arrow
+    // would have been labelled (or at a neighbouring point).
+    let id = rec.draw(note, Item::Vector { from, to }, Role::Result, &[]);
+    if (from, to) == second && !onto {
+        rec.label_item(id, name, from.lerp(to, 0.5), e.perp());
+    } else if from.distance(x) < to.distance(x) {
+        rec.label_item(id, name, to, e);
+    } else {
+        rec.label_item(id, name, from, -e);
+    }
+    id
+}
+
+/// Two arms this close at both ends are one arm, mm: drawn once, named once.
+const SAME_ARM_MM: f64 = 0.3;
+
+/// The name of the arm from `c` to `foot` when one is drawn on `rec` already (two forces on
+/// one line of action have one arm: `h₇`, not `h₇ ≡ h₈`).
+pub fn arm_named(rec: &Recorder, c: DVec2, foot: DVec2) -> Option<String> {
+    rec.steps().iter().find_map(|s| match (&s.item, &s.label) {
+        (Item::Segment(seg), Some(l))
+            if l.text.starts_with("h_")
+                && seg.from.distance(c) <= SAME_ARM_MM
+                && seg.to.distance(foot) <= SAME_ARM_MM =>
+        {
+            Some(l.text.clone())
+        }
+        _ => None,
+    })
+}
+
+/// A couple's arc arrow about `o` drawn by the shapers of link drawings: this radius, mm,
+/// and each further couple about the same centre [`COUPLE_STEP_MM`] further out.
+const COUPLE_MM: f64 = 9.0;
+/// See [`COUPLE_MM`], mm.
+const COUPLE_STEP_MM: f64 = 4.0;
+
+/// Draw a couple `moment` (its sign: counter-clockwise positive) named `name` as an arc
+/// arrow about `o`, outside every couple's arc already drawn about `o`, and label it at the
+/// arc's middle.
+pub fn couple(rec: &mut Recorder, name: &str, o: DVec2, moment: f64) -> StepId {
+    let (start, sweep) = if moment > 0.0 {
+        (0.3, 1.6)
+    } else {
+        (1.9, -1.6)
+    };
+    let around = rec
+        .steps()
+        .iter()
+        .filter(|s| matches!(s.item, Item::Angle(a) if a.center.distance(o) < ON_LINE_MM))
+        .count();
+    let radius = COUPLE_MM + COUPLE_STEP_MM * around as f64;
+    let arc = Arc {
+        center: o,
+        radius,
+        start,
+        sweep,
+    };
+    let id = rec.draw(name.to_string(), Item::Angle(arc), Role::Result, &[]);
+    let mid = DVec2::from_angle(start + sweep / 2.0);
+    rec.label_item(id, name, o + mid * radius, mid);
+    id
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::construct::{Context, Drafting};
+    use crate::scale::{Quantity, Scale};
+
+    fn recorder() -> Recorder {
+        let mu = Scale::new(0.0025, Quantity::Length).expect("a scale");
+        let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("a context");
+        Recorder::in_context("loads", mu, &ctx)
+    }
+
+    fn vectors(rec: &Recorder) -> Vec<(DVec2, DVec2, String)> {
+        rec.steps()
+            .iter()
+            .filter_map(|s| match (&s.item, &s.label) {
+                (Item::Vector { from, to }, Some(l)) => Some((*from, *to, l.text.clone())),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn two_forces_along_one_line_at_one_point_are_two_arrows() {
+        let mut rec = recorder();
+        let x = DVec2::new(10.0, 5.0);
+        let e = DVec2::X;
+        arrow(&mut rec, "a".into(), "F_{и5}", (x, e, 14.0), false);
+        arrow(&mut rec, "b".into(), "F_{пс}", (x, e, 14.0), false);
+        // A third along the same line, a hair off it: past the two.
+        let tilted = DVec2::new(1.0, 0.02).normalize();
+        arrow(&mut rec, "c".into(), "R", (x, tilted, 14.0), false);
+        let v = vectors(&rec);
+        assert_eq!(v[0], (x, x + e * 14.0, "F_{и5}".into()));
+        // Onto the point, labelled beside its shaft.
+        assert_eq!(v[1].0, x - e * 14.0);
+        assert_eq!(v[1].1, x);
+        assert!(v[2].0.distance(x + tilted * 14.0) < 1e-9, "{:?}", v[2]);
+        for (k, s) in rec.steps().iter().enumerate() {
+            let l = s.label.as_ref().expect("labelled");
+            assert_eq!(l.names, crate::construct::Names::Item, "arrow {k}");
+        }
+        // Each label at its arrow's free end: three places.
+        let ends: Vec<DVec2> = rec
+            .steps()
+            .iter()
+            .filter_map(|s| s.label.as_ref().map(|l| l.anchor))
+            .collect();
+        assert_eq!(ends[1], x - e * 7.0);
+        assert!(ends[0].distance(ends[2]) > 10.0);
+    }
+
+    #[test]
+    fn an_opposite_force_at_the_point_keeps_its_own_side() {
+        let mut rec = recorder();
+        let x = DVec2::ZERO;
+        arrow(&mut rec, "a".into(), "G", (x, -DVec2::Y, 14.0), false);
+        arrow(&mut rec, "b".into(), "R", (x, DVec2::Y, 14.0), false);
+        let v = vectors(&rec);
+        assert_eq!(v[1], (x, DVec2::Y * 14.0, "R".into()));
+    }
+
+    #[test]
+    fn two_couples_on_one_link_are_two_arcs() {
+        let mut rec = recorder();
+        let o = DVec2::new(3.0, 4.0);
+        couple(&mut rec, "M_{и3}", o, 1.0);
+        couple(&mut rec, "M_{пс}", o, 2.0);
+        let radii: Vec<f64> = rec
+            .steps()
+            .iter()
+            .filter_map(|s| match s.item {
+                Item::Angle(a) => Some(a.radius),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(radii, [COUPLE_MM, COUPLE_MM + COUPLE_STEP_MM]);
+    }
+}
