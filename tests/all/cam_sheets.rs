@@ -12,9 +12,9 @@
 //! Each rule also runs on a plate built to break it, and must fail there.
 
 use glam::DVec2;
-use std::path::PathBuf;
 use tmm::cam::{Cam, Follower, RAY_NOTE, R_MIN_NOTE, TANGENT_NOTE};
 use tmm::construct::{Drafting, Figure, Item, Role, Step};
+use tmm::geom::Segment;
 use tmm::plate::Plate;
 use tmm::scale::Lang;
 use tmm::scene::PlateKind;
@@ -31,16 +31,9 @@ const TURNING: [&str; 7] = [
     "cam-undercut",
 ];
 
-fn scene(name: &str) -> tmm::Scene {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("constructions")
-        .join(format!("{name}.toml"));
-    tmm::load(&path).unwrap_or_else(|e| panic!("{e}"))
-}
-
 /// The cam and its sheets in `lang`, read at `drafting` mm.
 fn sheets(name: &str, drafting: f64, lang: Lang) -> (Cam, Vec<Plate>, Drafting) {
-    let s = scene(name);
+    let s = crate::support::scene(name);
     let d = Drafting::new(drafting).expect("a drafting resolution");
     let session = Session::new(&s, d);
     let cam = (*session.cam().unwrap_or_else(|e| panic!("{name}: {e}"))).clone();
@@ -77,13 +70,7 @@ fn segments<'a>(f: &'a Figure, note: &str) -> Vec<(&'a Step, DVec2, DVec2)> {
 }
 
 fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let d = b - a;
-    let t = if d.length_squared() > 0.0 {
-        ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.distance(a + d * t)
+    Segment::new(a, b).distance_to(p)
 }
 
 fn distance_to_polyline(p: DVec2, pts: &[DVec2], closed: bool) -> f64 {
@@ -148,11 +135,12 @@ fn zone_hatched(f: &Figure) -> Result<(), String> {
     // at the apex may touch a ray).
     let mid = strokes.iter().fold(DVec2::ZERO, |a, p| a + *p) / strokes.len() as f64;
     let first = (u.perp_dot(mid - c).signum(), v.perp_dot(mid - c).signum());
-    let within = |p: DVec2| {
-        u.perp_dot(p - c) * first.0 >= -1e-3 && v.perp_dot(p - c) * first.1 >= -1e-3
-    };
+    let within =
+        |p: DVec2| u.perp_dot(p - c) * first.0 >= -1e-3 && v.perp_dot(p - c) * first.1 >= -1e-3;
     if let Some(p) = strokes.iter().find(|p| !within(**p)) {
-        return Err(format!("a hatch stroke at {p:?} lies outside the zone's angle"));
+        return Err(format!(
+            "a hatch stroke at {p:?} lies outside the zone's angle"
+        ));
     }
     let o = centre(f)?;
     let t = tol(f) * 1e3;
