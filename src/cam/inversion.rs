@@ -2,8 +2,9 @@
 //! the pitch curve, the roller circles (or the face lines) and the practical profile; the
 //! angle read off the drawing; the drawn pitch curve's smallest radius of curvature.
 
-use super::follower::{flat_contact, jay, to_cam, Kin, Placement};
-use super::motion::{end_step, Motion, Point};
+use super::follower::{flat_contact, to_cam, Kin, Placement};
+use super::motion::{Motion, Point};
+use super::reading::{read_angles, Drawn};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::fit::{overflow, raised};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
@@ -292,59 +293,19 @@ fn invert_at(
         Role::Result,
         &[o],
     );
-    // The angle read off the drawing: the normal to the chord through the neighbours against
-    // the follower's direction in its inverted position: the chord through the neighbours
-    // where they lie equally far, else the tangent at the point of the parabola through the
-    // three (in φ), which it is for equal steps — the reading stays second order beside a
-    // division point on a break of the law.
-    // At a phase's end the neighbour is read on the drawn dwell arc, one step on (the arc
-    // about O of the dwell's radius), so every chord is central.
-    let beyond = |i: usize, forward: bool| -> (DVec2, f64) {
-        let p = &points[i];
-        let step = end_step(points, i);
-        let dwell = match (p.phase, forward) {
-            (0, true) => spec.phases.far,
-            (0, false) | (2, true) => spec.phases.near,
-            _ => spec.phases.far,
-        };
-        if dwell <= 0.0 {
-            return (centres[i], 0.0);
-        }
-        let d = step.min(dwell);
-        let phi = if forward { p.phi + d } else { p.phi - d };
-        let s = if (p.phase == 0) == forward {
-            spec.stroke
-        } else {
-            0.0
-        };
-        let m = Motion {
-            s,
-            ds: 0.0,
-            d2s: 0.0,
-        };
-        (to_cam(place.kin(m).b, phi), d)
-    };
-    let angles = (0..points.len())
-        .map(|i| {
-            let (lo, hi) = neighbours(points, i);
-            let phi = points[i].phi;
-            let (a, ha) = if lo == i {
-                beyond(i, false)
-            } else {
-                (centres[lo], phi - points[lo].phi)
-            };
-            let (b, hb) = if hi == i {
-                beyond(i, true)
-            } else {
-                (centres[hi], points[hi].phi - phi)
-            };
-            let t = tangent_through((a, ha), centres[i], (b, hb));
-            let nrm = jay(t);
-            let path = to_cam(kins[i].path, points[i].phi);
-            let c = (nrm.dot(path).abs() / nrm.length()).clamp(0.0, 1.0);
-            c.acos()
-        })
+    // The angle read off the drawing ([`super::reading`]).
+    let paths: Vec<DVec2> = points
+        .iter()
+        .zip(&kins)
+        .map(|(p, k)| to_cam(k.path, p.phi))
         .collect();
+    let drawn = Drawn {
+        spec,
+        points,
+        centres: &centres,
+        place,
+    };
+    let angles = read_angles(&drawn, &paths);
     let rho_min = if flat {
         read.iter()
             .map(|m| base + m.s + m.d2s)
@@ -376,25 +337,6 @@ pub(super) fn cam_centre(rec: &mut Recorder) -> StepId {
     );
     rec.label(o, "O_1", DVec2::ZERO, DVec2::new(-0.7, -0.7));
     o
-}
-
-/// The direction of the curve at `c` read through its neighbours `a` and `b`, `ha` and `hb`
-/// before and after it (in φ): the chord a → b where the steps are equal or one neighbour
-/// is the point itself, else the tangent at `c` of the parabola through the three,
-/// ∝ ha²·(b − c) + hb²·(c − a).
-fn tangent_through((a, ha): (DVec2, f64), c: DVec2, (b, hb): (DVec2, f64)) -> DVec2 {
-    if ha <= 0.0 || hb <= 0.0 || ha == hb {
-        return b - a;
-    }
-    (b - c) * (ha * ha) + (c - a) * (hb * hb)
-}
-
-/// The neighbours of point `i` within its phase (one-sided at the phase's ends).
-fn neighbours(points: &[Point], i: usize) -> (usize, usize) {
-    let same = |j: usize| points.get(j).is_some_and(|q| q.phase == points[i].phase);
-    let lo = if i > 0 && same(i - 1) { i - 1 } else { i };
-    let hi = if same(i + 1) { i + 1 } else { i };
-    (lo, hi)
 }
 
 /// The smallest radius of the circles through three consecutive drawn pitch points that

@@ -30,20 +30,23 @@ mod inversion;
 mod law;
 pub mod motion;
 mod radius;
+mod reading;
 mod rows;
 pub mod sliding;
 pub mod special;
 mod special_rows;
 #[cfg(test)]
 mod tests;
+mod zone;
 
 pub use construct::{build, Cam};
 pub use deviation::{deviation, deviation_at, inversion_at};
 pub use diagrams::{Analogue, Diagrams};
 pub use inversion::Inversion;
 pub use law::{Law, Shock};
-pub use radius::RadiusConstruction;
+pub use radius::{RadiusConstruction, TANGENT_NOTE};
 pub use special::{build_special, Special, SpecialProfile};
+pub use zone::{RAY_NOTE, R_MIN_NOTE};
 
 use crate::scale::Scale;
 use thiserror::Error;

@@ -36,7 +36,7 @@ pub struct Point {
 
 /// A knot of a law closer than this to a division point (in u, the share of the phase) is
 /// on it: no extra division point is added for it.
-const KNOT_ON_NODE: f64 = 1e-9;
+pub(super) const KNOT_ON_NODE: f64 = 1e-9;
 
 /// The division points of a moving phase of the law `law` over the angle `len`, rad from
 /// its start: the scene's `divisions` equal intervals, and where the given acceleration

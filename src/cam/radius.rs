@@ -7,6 +7,7 @@
 use super::diagrams::{read_motion, Diagrams};
 use super::follower::{admits, rocker_of, Placement, REACH_ARMS};
 use super::motion::{Motion, Point};
+use super::zone;
 use super::{CamError, CamSpec, Closure, Follower};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{Arc, DVec2, Segment};
@@ -40,7 +41,7 @@ pub(super) fn min_radius(
     let read = match spec.follower {
         Follower::Translating { offset } => translating(&mut rec, &given, offset)?,
         Follower::Rocker { arm, .. } => rocker(&mut rec, &given, arm)?,
-        Follower::Flat { offset } => flat(&mut rec, &given, offset)?,
+        Follower::Flat { .. } => flat(&mut rec, &given)?,
     };
     Ok((
         RadiusConstruction {
@@ -93,12 +94,6 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
         .filter(|(i, _)| binds(*i))
         .map(|(_, k)| below(k))
         .fold(f64::INFINITY, f64::min);
-    // The point whose line is drawn to O: the first that binds, points that bind equally (a
-    // symmetric cam's rise and return) to the drawing's coincidence, not to rounding.
-    let tie = rec.tolerances().coincident;
-    let bind = (0..ks.len())
-        .find(|&i| binds(i) && below(&ks[i]) <= best + tie)
-        .unwrap_or(0);
     let o = DVec2::new(ox, best);
     let path = s_axis(rec, spec, mu, o.length());
     for (i, k) in ks.iter().enumerate() {
@@ -119,29 +114,15 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
         Role::Result,
         &[path],
     );
-    zone_lines(rec, &ks, o, gamma, bind);
-    let bound: Vec<DVec2> = ks
-        .iter()
-        .enumerate()
-        .filter(|(i, _)| binds(*i))
-        .map(|(_, k)| *k)
-        .collect();
-    hatch_zone(rec, &bound, o, t);
-    let oid = rec.point(
-        "cam centre O_1",
-        o,
-        Role::Result,
-        "O_1",
-        DVec2::new(-1.0, -0.5),
-        &[],
-    );
+    let apex = translating_zone(rec, &ks, &binds, o, gamma);
+    // O₁'s name outside the zone: on the side of the zone's edge it lies on.
+    let toward = if apex.is_some_and(|a| o.x < a.x) {
+        DVec2::new(-1.0, 0.0)
+    } else {
+        DVec2::new(1.0, 0.0)
+    };
+    zone::centre_and_r_min(rec, o, DVec2::ZERO, toward, 0.0);
     let r = rec.measure(o, DVec2::ZERO);
-    rec.draw(
-        "r_min",
-        Item::Segment(Segment::new(o, DVec2::ZERO)),
-        Role::Dimension,
-        &[oid],
-    );
     let base = spec.base_radius.unwrap_or(r.value);
     if base <= offset.abs() {
         return Err(CamError::BaseWithinOffset {
@@ -222,22 +203,8 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
         gamma_deg: gamma.to_degrees(),
         searched: REACH_ARMS * arm,
     })?;
-    rocker_lines(rec, &cons, o, gamma);
-    hatch_rocker_zone(rec, &cons, o, gamma);
-    let oid = rec.point(
-        "cam centre O_1",
-        o,
-        Role::Result,
-        "O_1",
-        DVec2::new(1.0, 0.5),
-        &[],
-    );
-    rec.draw(
-        "r_min",
-        Item::Segment(Segment::new(o, a0)),
-        Role::Dimension,
-        &[oid],
-    );
+    rocker_zone(rec, &cons, o, gamma);
+    let oid = zone::centre_and_r_min(rec, o, a0, DVec2::new(1.0, 0.5), 0.0);
     rec.draw(
         "centre distance",
         Item::Segment(Segment::new(o, pivot)),
@@ -264,8 +231,10 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
     })
 }
 
-/// The flat face: S(d²S/dφ²) with the 45° tangent; r_min from the convexity and ρ_min.
-fn flat(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamError> {
+/// The flat face: S(d²S/dφ²) with the 45° tangent from the curve to the S axis; the centre
+/// O₁ ρ_min below where it meets the axis, r_min = |OO₁| (the offset does not change a flat
+/// face's profile: the centre is drawn on the S axis).
+fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     let Given { spec, points, d } = *given;
     let mu = d.s_scale;
     // S vertical, S″ horizontal, both at μ_S; the 45° tangent on the negative side.
@@ -306,28 +275,31 @@ fn flat(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamE
         Role::Result,
         &[ax, hx],
     );
+    // The tangent from its touching point to its crossing with the S axis, at S = c.
     let touch = pts.get(i).copied().unwrap_or(DVec2::ZERO);
+    let cross = DVec2::new(0.0, c);
     rec.draw(
-        "tangent at 45°",
-        Item::Segment(Segment::new(
-            oi + DVec2::new(-15.0, 15.0),
-            touch + DVec2::new(15.0, -15.0),
-        )),
+        TANGENT_NOTE,
+        Item::Segment(Segment::new(touch, cross)),
         Role::Construction,
-        &[],
+        &[ax],
     );
-    rec.point("O_I", oi, Role::Result, "O_I", DVec2::new(1.0, -0.5), &[]);
-    let o = DVec2::new(mu.to_mm(offset), oi.y - rho);
     rec.point(
-        "cam centre O′_1 (with ρ_min)",
-        o,
-        Role::Result,
-        "O′_1",
-        DVec2::new(1.0, -0.5),
+        "the tangent's crossing with the S axis",
+        cross,
+        Role::Construction,
+        "",
+        DVec2::ZERO,
         &[],
     );
+    // The centre ρ_min below where the tangent meets the axis (at O when it meets it above).
+    let o = DVec2::new(0.0, oi.y - rho);
+    if oi.y < 0.0 {
+        rec.dimension("dimension ρ_min", (oi, o, 6.0), "ρ_{min}");
+    }
+    zone::centre_and_r_min(rec, o, DVec2::ZERO, DVec2::new(-1.0, -0.5), -12.0);
     let read_c = rec.measure(oi, DVec2::ZERO).value.copysign(-c);
-    let graphical = read_c.max(0.0) + spec.rho_min;
+    let graphical = rec.measure(o, DVec2::ZERO).value;
     let base = spec.base_radius.unwrap_or(graphical);
     Ok(Read {
         graphical,
@@ -339,6 +311,9 @@ fn flat(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamE
         },
     })
 }
+
+/// The note of the flat face's 45° tangent's step (the tests find it by it).
+pub const TANGENT_NOTE: &str = "tangent at 45° from the diagram to the S axis";
 
 /// The S axis of a combined diagram: from below the centre found on it (`depth` mm under
 /// B₀: the drawn r_min) to above the stroke, labelled.
@@ -362,64 +337,53 @@ fn combined(d: &Diagrams, n: usize, at: impl Fn(Motion) -> DVec2) -> Vec<DVec2> 
     (0..n).map(|i| at(read_motion(d, i))).collect()
 }
 
-/// The γ_min lines of the translating follower's combined diagram: the two tangents through
-/// the binding points (long), a short tick at every other point.
-fn zone_lines(rec: &mut Recorder, ks: &[DVec2], o: DVec2, gamma: f64, bind: usize) {
+/// The zone of the translating follower's centre: below every point's two γ_min lines,
+/// g(x) = min over the points of (K_y − |K_x − x|·tan γ_min) = min(R(x), L(x)), a wedge whose
+/// sides are the lowest line of each family (the tangents to the diagram at γ_min to its
+/// dS/dφ axis). Its two rays are drawn from their points to their crossing and the wedge is
+/// hatched along them; the centre `o` lies on its boundary. Returns the rays' crossing.
+fn translating_zone(
+    rec: &mut Recorder,
+    ks: &[DVec2],
+    binds: &impl Fn(usize) -> bool,
+    o: DVec2,
+    gamma: f64,
+) -> Option<DVec2> {
+    let t = gamma.tan();
+    // The lowest line of a family: the least K_y ± K_x·tan γ (the first of equals).
+    let lowest = |sign: f64| {
+        (0..ks.len())
+            .filter(|&i| binds(i))
+            .map(|i| (i, ks[i].y + sign * ks[i].x * t))
+            .fold(None, |a: Option<(usize, f64)>, b| match a {
+                Some(a) if a.1 <= b.1 => Some(a),
+                _ => Some(b),
+            })
+            .map(|(i, _)| ks[i])
+    };
+    let (kr, kl) = (lowest(1.0)?, lowest(-1.0)?);
     let (c, s) = (gamma.cos(), gamma.sin());
-    for (i, k) in ks.iter().enumerate() {
-        for dir in [DVec2::new(-c, -s), DVec2::new(c, -s)] {
-            let towards_o = (o - *k).dot(dir) > 0.0 && (o.x - k.x) * dir.x >= 0.0;
-            let len = if i == bind && towards_o {
-                (o - *k).length() + 15.0
-            } else {
-                8.0
-            };
-            rec.draw(
-                format!("γ_min line at point {i}"),
-                Item::Segment(Segment::new(*k, *k + dir * len)),
-                Role::Construction,
-                &[],
-            );
-        }
-    }
-}
-
-/// The admissible zone of the cam centre of a translating follower: its upper boundary
-/// g(x) = min over the points of (K_y − |K_x − x|·tan γ_min) near the centre, hatched below.
-fn hatch_zone(rec: &mut Recorder, ks: &[DVec2], o: DVec2, t: f64) {
+    let rays = [
+        zone::Ray {
+            k: kr,
+            dir: DVec2::new(c, -s),
+        },
+        zone::Ray {
+            k: kl,
+            dir: DVec2::new(-c, -s),
+        },
+    ];
+    let apex = zone::crossing(rec, rays[0], rays[1])?;
     let g = |x: f64| {
         ks.iter()
-            .map(|k| k.y - (k.x - x).abs() * t)
+            .enumerate()
+            .filter(|(i, _)| binds(*i))
+            .map(|(_, k)| k.y - (k.x - x).abs() * t)
             .fold(f64::INFINITY, f64::min)
     };
-    let half = 25.0;
-    let pts: Vec<DVec2> = (0..=50)
-        .map(|j| {
-            let x = o.x - half + j as f64;
-            DVec2::new(x, g(x))
-        })
-        .filter(|p| p.is_finite() && p.y > o.y - half)
-        .collect();
-    if pts.len() < 2 {
-        return;
-    }
-    let edge = rec.draw(
-        "boundary of the zone of the cam centre",
-        Item::Polyline {
-            points: pts.clone(),
-            closed: false,
-        },
-        Role::Construction,
-        &[],
-    );
-    for p in pts.iter().step_by(4) {
-        rec.draw(
-            "hatching of the zone",
-            Item::Segment(Segment::new(*p, *p + DVec2::new(-3.0, -3.0))),
-            Role::Hatch,
-            &[edge],
-        );
-    }
+    let reach = apex.distance(o) + 10.0;
+    zone::draw_zone(rec, rays, apex, reach, |p| p.y < g(p.x));
+    Some(apex)
 }
 
 /// The rocker's graphical centre: among the intersections of the γ_min lines and the feet
@@ -449,62 +413,47 @@ fn rocker_centre(cons: &[(DVec2, DVec2)], a0: DVec2, gamma: f64) -> Option<DVec2
     cands.into_iter().find(|c| admits(*c, cons, sin_g, 1e-9))
 }
 
-/// The rocker's γ_min lines: long through O where they bind, short ticks elsewhere.
-fn rocker_lines(rec: &mut Recorder, cons: &[(DVec2, DVec2)], o: DVec2, gamma: f64) {
-    for (i, &(k, e)) in cons.iter().enumerate() {
-        for s in [1.0, -1.0] {
-            let u = crate::geom::rotate(e, s * gamma);
-            let off = (o - k).perp_dot(u).abs();
-            let through = off < 1e-6 * (1.0 + (o - k).length());
-            let (a, b) = if through {
-                let t = (o - k).dot(u);
-                (k - u * 10.0 * t.signum(), k + u * (t + 15.0 * t.signum()))
-            } else {
-                (k - u * 6.0, k + u * 6.0)
-            };
-            rec.draw(
-                format!("γ_min line at K_{i}"),
-                Item::Segment(Segment::new(a, b)),
-                Role::Construction,
-                &[],
-            );
-        }
-    }
-}
-
-/// The admissible zone of a rocker cam's centre, hatched along its boundary near O: on every
-/// γ_min line through O, at each step where one side admits the centre and the other does
-/// not, a stroke into the admitted side, leaning away from O.
-fn hatch_rocker_zone(rec: &mut Recorder, cons: &[(DVec2, DVec2)], o: DVec2, gamma: f64) {
+/// The rocker's zone of the centre near `o`: its two bounding γ_min lines drawn from their
+/// points K to their crossing and the zone hatched along them. Two lines through `o` cross
+/// there; when one only passes through it (`o` the foot of the perpendicular from A₀), the
+/// zone's corner is the nearest admissible crossing of that line with another.
+fn rocker_zone(rec: &mut Recorder, cons: &[(DVec2, DVec2)], o: DVec2, gamma: f64) {
     let sin_g = gamma.sin();
-    let inside = |p: DVec2| admits(p, cons, sin_g, 0.0);
-    for &(k, e) in cons {
-        for s in [1.0, -1.0] {
-            let u = crate::geom::rotate(e, s * gamma);
-            if (o - k).perp_dot(u).abs() >= 1e-6 * (1.0 + (o - k).length()) {
-                continue;
-            }
-            let n = u.perp();
-            for j in (-ZONE_STEPS..=ZONE_STEPS).filter(|&j| j != 0) {
-                let p = o + u * (f64::from(j) * ZONE_STEP_MM);
-                // Leaning away from O, so no stroke crosses the zone's other side.
-                let away = u * f64::from(j.signum());
-                let side = match (inside(p + n * 0.3), inside(p - n * 0.3)) {
-                    (true, false) => n,
-                    (false, true) => -n,
-                    _ => continue,
-                };
-                rec.draw(
-                    "hatching of the zone",
-                    Item::Segment(Segment::new(p, p + (side + away) * (3.0 / 2f64.sqrt()))),
-                    Role::Hatch,
-                    &[],
-                );
-            }
-        }
-    }
+    let lines: Vec<zone::Ray> = cons
+        .iter()
+        .flat_map(|&(k, e)| {
+            [1.0, -1.0].map(|s| zone::Ray {
+                k,
+                dir: crate::geom::rotate(e, s * gamma),
+            })
+        })
+        .collect();
+    let through =
+        |r: &zone::Ray| (o - r.k).perp_dot(r.dir).abs() < 1e-6 * (1.0 + (o - r.k).length());
+    let at_o: Vec<zone::Ray> = lines.iter().copied().filter(through).collect();
+    let apart = |a: &zone::Ray, b: &zone::Ray| a.dir.perp_dot(b.dir).abs() > 0.05;
+    let pair = at_o
+        .iter()
+        .enumerate()
+        .find_map(|(i, a)| {
+            at_o[i + 1..]
+                .iter()
+                .find(|b| apart(a, b))
+                .map(|b| ([*a, *b], o))
+        })
+        .or_else(|| {
+            let first = *at_o.first()?;
+            lines
+                .iter()
+                .filter(|b| apart(&first, b))
+                .filter_map(|b| Some((*b, zone::crossing(rec, first, *b)?)))
+                .filter(|(_, c)| admits(*c, cons, sin_g, 1e-9))
+                .min_by(|x, y| x.1.distance(o).total_cmp(&y.1.distance(o)))
+                .map(|(b, c)| ([first, b], c))
+        });
+    let Some((rays, c)) = pair else {
+        return;
+    };
+    let reach = c.distance(o) + 10.0;
+    zone::draw_zone(rec, rays, c, reach, |p| admits(p, cons, sin_g, 0.0));
 }
-
-/// Steps each way along a boundary line of the rocker cam's zone, and their length, mm.
-const ZONE_STEPS: i32 = 8;
-const ZONE_STEP_MM: f64 = 2.0;

@@ -93,6 +93,36 @@ fn graph(pts: &[DVec2]) -> Vec<Piece> {
         into[i] = m;
         out[i] = m;
     }
+    // The extremes: where the points turn, the curve goes on to the extreme a French curve
+    // finds between them, as the parabola through the three points there does (its slope,
+    // Bessel's), instead of stopping flat at the highest point; a flat chord between a rise
+    // and a fall on curved sides (a peak the points straddle) bulges the same way.
+    // Where sparse points make that parabola wild (a steep chord beside a long flat one),
+    // its slope is cut so that the curve reaches past a point by about the steeper side's
+    // rise at most.
+    // A chord that rises less than [`STRAIGHT_MM`] is flat (rounding leaves a crest's two
+    // equal points a hair apart).
+    let d0: Vec<f64> = d
+        .iter()
+        .zip(&h)
+        .map(|(d, h)| if (d * h).abs() < STRAIGHT_MM { 0.0 } else { *d })
+        .collect();
+    let extreme = extremes(&h, &d0);
+    for i in (1..n - 1).filter(|&i| extreme[i]) {
+        let m = (h[i] * d0[i - 1] + h[i - 1] * d0[i]) / (h[i - 1] + h[i]);
+        // The piece the curve goes on into past the point: after it when it keeps the
+        // first chord's way (or the next chord is flat), else before it.
+        let far = if m * d0[i - 1] > 0.0 || d0[i] == 0.0 {
+            h[i]
+        } else {
+            h[i - 1]
+        };
+        let rise = (d0[i - 1] * h[i - 1]).abs().max((d0[i] * h[i]).abs());
+        let cap = 4.0 * rise / far.abs();
+        let m = m.clamp(-cap, cap);
+        into[i] = m;
+        out[i] = m;
+    }
     out[0] = end_slope(h[0], h[1], d[0], d[1]);
     into[n - 1] = end_slope(h[n - 2], h[n - 3], d[n - 2], d[n - 3]);
     // Straight runs: the chord's own slope at their inner points and ends.
@@ -134,9 +164,9 @@ fn graph(pts: &[DVec2]) -> Vec<Piece> {
         }
     }
     // Fritsch–Carlson: each piece's end slopes within the circle of radius 3 chords, so that
-    // it runs monotone between its two points.
+    // it runs monotone between its two points — except the pieces that hold an extreme.
     for i in 0..n - 1 {
-        if inner[i].is_some() {
+        if inner[i].is_some() || extreme[i] || extreme[i + 1] {
             continue;
         }
         if d[i] == 0.0 {
@@ -157,6 +187,34 @@ fn graph(pts: &[DVec2]) -> Vec<Piece> {
             None => vec![hermite(pts[i], out[i], pts[i + 1], into[i + 1])],
         })
         .collect()
+}
+
+/// Which points stand at an extreme of the points (`h`, `d` the chords' lengths in abscissa
+/// and slopes): the chords on their two sides rise and fall, and the points next to them
+/// do not stand on one straight line with them on both sides (a corner, drawn as such); or
+/// they end a flat chord that rises on one side and falls on the other, each side curved
+/// (its two chords not one line, or a single chord).
+fn extremes(h: &[f64], d: &[f64]) -> Vec<bool> {
+    let n = d.len() + 1;
+    let straight = |i: usize, j: usize| straight_on(d[i], d[j], h[i].abs().min(h[j].abs()));
+    let mut out = vec![false; n];
+    for i in 1..n - 1 {
+        if d[i - 1] * d[i] < 0.0 {
+            let left = i >= 2 && straight(i - 2, i - 1);
+            let right = i + 1 < d.len() && straight(i, i + 1);
+            out[i] = !(left && right);
+        }
+    }
+    for i in 1..d.len().saturating_sub(1) {
+        // A side too short to tell counts as curved.
+        let curved =
+            (i < 2 || !straight(i - 2, i - 1)) && (i + 2 >= d.len() || !straight(i + 1, i + 2));
+        if d[i] == 0.0 && d[i - 1] * d[i + 1] < 0.0 && curved {
+            out[i] = true;
+            out[i + 1] = true;
+        }
+    }
+    out
 }
 
 /// The slope at an end of the curve: the three-point estimate, kept on the side of the end
@@ -210,9 +268,11 @@ mod tests {
 
     proptest! {
         /// A diagram's curve stays, between two points, within their range of ordinates and
-        /// between their abscissae; it ends at the end points.
+        /// between their abscissae, where neither point is an extreme of the points; a piece
+        /// holding an extreme reaches past its points by no more than a neighbouring chord
+        /// rises. It ends at the end points.
         #[test]
-        fn a_graph_never_leaves_the_range_of_its_two_points(
+        fn a_graph_leaves_the_range_of_its_two_points_only_at_an_extreme(
             steps in prop::collection::vec((0.05f64..20.0, -50.0f64..50.0), 2..14),
             flat in prop::collection::vec(any::<bool>(), 14),
             backwards in any::<bool>(),
@@ -224,11 +284,20 @@ mod tests {
                 let dx = if backwards { -dx } else { *dx };
                 pts.push(DVec2::new(last.x + dx, y));
             }
+            let h: Vec<f64> = pts.windows(2).map(|w| w[1].x - w[0].x).collect();
+            let d: Vec<f64> = pts.windows(2).zip(&h).map(|(w, h)| (w[1].y - w[0].y) / h).collect();
+            let ext = if pts.len() > 2 { extremes(&h, &d) } else { vec![false; pts.len()] };
+            let rise = |j: usize| pts.get(j + 1).zip(pts.get(j)).map_or(0.0, |(b, a)| (b.y - a.y).abs());
             let mut start = pts[0];
             let mut i = 0;
             for p in pieces(&pts, false) {
                 let (a, b) = (pts[i], pts[i + 1]);
-                let (lo, hi) = (a.y.min(b.y) - 1e-9, a.y.max(b.y) + 1e-9);
+                let past = if ext[i] || ext[i + 1] {
+                    rise(i.wrapping_sub(1)).max(rise(i)).max(rise(i + 1))
+                } else {
+                    0.0
+                };
+                let (lo, hi) = (a.y.min(b.y) - past - 1e-9, a.y.max(b.y) + past + 1e-9);
                 let (l, r) = (a.x.min(b.x) - 1e-9, a.x.max(b.x) + 1e-9);
                 // The first half of a corner drawn inside a chord ends off the points: only
                 // its abscissae are bounded.
@@ -244,6 +313,34 @@ mod tests {
                 }
             }
             prop_assert_eq!(i, pts.len() - 1);
+        }
+    }
+
+    #[test]
+    fn a_peak_the_points_straddle_is_drawn_not_flattened() {
+        // The sine law's d²S/dφ² read at mid-interval points: its crest falls between two
+        // equal points (the review's flat tops), its trough on a point of a shallower side.
+        let f = |x: f64| 40.0 * (x * std::f64::consts::TAU / 8.0).sin();
+        for shift in [0.5, 0.3] {
+            let pts: Vec<DVec2> = (0..8)
+                .map(|k| DVec2::new(k as f64 + shift, f(k as f64 + shift)))
+                .collect();
+            let curve = drawn(&pts, false, 64);
+            let top = curve.iter().map(|q| q.y).fold(f64::MIN, f64::max);
+            let bottom = curve.iter().map(|q| q.y).fold(f64::MAX, f64::min);
+            let pts_top = pts.iter().map(|q| q.y).fold(f64::MIN, f64::max);
+            // The points' own crest is 40·cos(π/8) = 36,96 at shift 0,5: the curve reaches
+            // the true 40 to a fraction of the points' shortfall.
+            assert!(
+                top > pts_top + 0.5 * (40.0 - pts_top),
+                "shift {shift}: crest {top} of points' {pts_top}"
+            );
+            // Within 2 % of the amplitude: a French curve through 8 points a period.
+            assert!((top - 40.0).abs() < 0.8, "shift {shift}: crest {top}");
+            assert!(
+                (bottom + 40.0).abs() < 0.8,
+                "shift {shift}: trough {bottom}"
+            );
         }
     }
 

@@ -282,10 +282,10 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         n(cam.exact_r_min()),
         Text::Exact.get(lang)
     ));
+    // A source's erratum is the note's (its conclusions), not the student's sheet's.
     let found = cam.findings();
     let stated =
         |p: fn(&Finding) -> bool| found.iter().find(|f| p(f)).and_then(|f| verdict(f, lang));
-    out.extend(stated(|f| matches!(f, Finding::Erratum { .. })));
     out.push(format!("r_{{0}} = {} {mm}", n(cam.base)));
     if !matches!(s.follower, Follower::Flat { .. }) {
         out.push(format!(
@@ -305,18 +305,12 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
 }
 
 /// A verdict of the cam's check as a data line in `lang`; none for those the sheet does not
-/// state (the angle's limit is in the table of the points).
+/// state (the angle's limit is in the table of the points; a source's erratum is the note's).
 fn verdict(f: &Finding, lang: Lang) -> Option<String> {
     let mm = unit_in("mm", lang);
     let n = |x: f64| format_sig(x * 1e3, 4, lang);
     let with_rho = |t: CamText, rho: f64| format!("{} ρ_{{min}} = {} {mm}", t.get(lang), n(rho));
     Some(match *f {
-        Finding::Erratum { quoted, .. } => format!(
-            "{} r_{{min}} = {} {mm} {}",
-            CamText::SourceSays.get(lang),
-            n(quoted),
-            CamText::Erratum.get(lang)
-        ),
         Finding::Undercut { rho_min, .. } => with_rho(CamText::Undercut, rho_min),
         Finding::Cusp(Cusp::Roller { rho_min, .. }) => with_rho(CamText::RollerCusp, rho_min),
         Finding::Cusp(Cusp::Flat { .. }) => CamText::Cusp.get(lang).into(),

@@ -26,7 +26,7 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("cam-cusp/cam", 0.20, "the scene fixes μ_S (0,002 m/mm: the S diagram 33 mm tall, the combined diagram 190 × 110 mm)"),
     ("cam-pz4/cam", 0.25, "the diagrams fill the sheet's height; the profile at μ_l = 0,0005 (193 mm): 0,0004 draws it 241 mm, past its 240 mm room; the tables take the rest"),
     ("shaper/cam", 0.24, "the scene fixes the poles H₁, H₂ (the seed's), so the analogues' height is the seed's; the profile at μ_l = 0,002 (153 mm): 0,001 draws it 305 mm"),
-    ("cam-shock/cam", 0.21, "the profile at μ_l = 0,001 (123 mm): 0,0005 draws it 246 mm, past its 240 mm room; the uniform law's d²S/dφ² is the axis with the shocks' arrows"),
+    ("cam-shock/cam", 0.20, "the profile at μ_l = 0,001 (123 mm): 0,0005 draws it 246 mm, past its 240 mm room; the uniform law's d²S/dφ² is the axis with the shocks' arrows; the combined diagram draws its two rays, not a tick at every point"),
     ("cam-flat-rocker/cam", 0.25, "the profile at μ_l = 0,001: the face lines from the turned pivots (a = 120 mm) span 240 mm; 0,0005 draws them 480 mm, past their 240 mm room; the tables take the rest"),
     ("cam-sliding/cam", 0.20, "the translating cam at μ_l = 0,001 is its travel long and its stroke tall (360 × 70 mm): 0,0005 draws it 720 mm, wider than the sheet beside the diagrams"),
     ("cam-undercut/cam", 0.28, "the profile at μ_l = 0,0005 (229 mm tall): 0,0004 draws it 286 mm, past its 240 mm room"),

@@ -187,8 +187,6 @@ catalogue! {
             "Діаграми джерела втрачено: закон руху прийнято",
             "The source's diagrams are lost: the law is assumed"
         ),
-        SourceSays => ("В источнике", "У джерелі", "The source's"),
-        Erratum => ("— не согласовано с γ_{min} (ошибка)", "— не узгоджено з γ_{min} (помилка)", "is inconsistent with γ_{min} (erratum)"),
         Undercut => ("ПОДРЕЗ: r_{р} >", "ПІДРІЗ: r_{р} >", "UNDERCUT: r_{р} >"),
         RollerCusp => ("ЗАОСТРЕНИЕ: r_{р} =", "ЗАГОСТРЕННЯ: r_{р} =", "CUSP: r_{р} ="),
         Cusp => (

@@ -34,6 +34,12 @@ pub fn render_svg(scene: &std::path::Path, out: &std::path::Path, what: &str) {
     );
 }
 
+/// The scene `constructions/<name>.toml`, loaded (a test's scene that fails to load panics).
+pub fn scene(name: &str) -> tmm::Scene {
+    let path = root().join("constructions").join(format!("{name}.toml"));
+    tmm::load(&path).unwrap_or_else(|e| panic!("{e}"))
+}
+
 /// Every scene of `constructions/`, sorted; at least the eighteen there are.
 pub fn scene_paths() -> Vec<PathBuf> {
     let mut paths: Vec<PathBuf> = std::fs::read_dir(root().join("constructions"))

@@ -1,0 +1,170 @@
+//! The pressure (transmission) angle read off the profile drawing: at every drawn point of
+//! the pitch curve its tangent, read through its neighbours, and the normal to it against
+//! the follower's path in its inverted position.
+//!
+//! The tangent is read to the chord method's own (second-order) error everywhere, which
+//! takes knowing where the law's S″ jumps: a chord that spans such a point takes one
+//! curvature on one side and another on the other, and is only first order there (≈ 1° on
+//! the seed's cam at φ = 113,6° and 2° at its «+ −» law's middle — a step in γ(φ) where the
+//! law, and γ, are smooth). So:
+//! - inside a phase, the chord through the neighbours where they lie equally far, else the
+//!   tangent of the parabola through the three (in φ);
+//! - on a break of the law inside a phase ([`Law::breaks`]), the mean of the two parabolas'
+//!   tangents, one through the point and its two neighbours before, one through those after;
+//! - at a phase's end where the law meets the dwell smoothly (no shock), the chord to the
+//!   drawn dwell arc one step on; where its S″ (or S′) jumps there, the phase's own parabola
+//!   through the end and its two next points — a velocity jump is then drawn as the jump it
+//!   is, not smeared across the chord.
+
+use super::follower::{jay, to_cam, Placement};
+use super::law::Shock;
+use super::motion::{end_step, Motion, Point, KNOT_ON_NODE};
+use super::CamSpec;
+use crate::geom::DVec2;
+
+/// The drawing the angles are read on: the cam, its points and their pitch-curve points
+/// (cam frame), the follower's placement.
+pub(super) struct Drawn<'a> {
+    /// The cam.
+    pub spec: &'a CamSpec,
+    /// The drawn points.
+    pub points: &'a [Point],
+    /// The pitch curve's points, cam frame.
+    pub centres: &'a [DVec2],
+    /// The follower's placement.
+    pub place: &'a Placement,
+}
+
+/// The angle between the normal read at every point and the follower's path there (`paths`,
+/// cam frame), rad.
+pub(super) fn read_angles(d: &Drawn<'_>, paths: &[DVec2]) -> Vec<f64> {
+    (0..d.points.len())
+        .map(|i| {
+            let nrm = jay(tangent(d, i));
+            let c = (nrm.dot(paths[i]).abs() / nrm.length()).clamp(0.0, 1.0);
+            c.acos()
+        })
+        .collect()
+}
+
+/// The pitch curve's direction read at point `i`.
+fn tangent(d: &Drawn<'_>, i: usize) -> DVec2 {
+    let (points, c) = (d.points, d.centres);
+    let p = &points[i];
+    let law = if p.phase == 0 {
+        d.spec.rise
+    } else {
+        d.spec.ret
+    };
+    let (lo, hi) = neighbours(points, i);
+    let chord = || c[hi] - c[lo];
+    if lo == i || hi == i {
+        let forward = lo != i;
+        if law.shock() == Shock::None {
+            if let Some((b, h)) = beyond(d, i, forward) {
+                let a = if forward {
+                    (c[lo], p.phi - points[lo].phi)
+                } else {
+                    (c[hi], points[hi].phi - p.phi)
+                };
+                return if forward {
+                    tangent_through(a, c[i], (b, h))
+                } else {
+                    tangent_through((b, h), c[i], a)
+                };
+            }
+        }
+        return side(points, c, i, !forward).unwrap_or_else(chord);
+    }
+    let st = d.spec.starts();
+    let len = st[p.phase + 1] - st[p.phase];
+    let u = if len > 0.0 {
+        (p.phi - st[p.phase]) / len
+    } else {
+        0.0
+    };
+    if law.breaks().iter().any(|b| (b - u).abs() <= KNOT_ON_NODE) {
+        let sides = (side(points, c, i, false), side(points, c, i, true));
+        if let (Some(a), Some(b)) = sides {
+            // Both run the way φ grows: their mean, each of unit length.
+            return a.normalize_or_zero() + b.normalize_or_zero();
+        }
+    }
+    tangent_through(
+        (c[lo], p.phi - points[lo].phi),
+        c[i],
+        (c[hi], points[hi].phi - p.phi),
+    )
+}
+
+/// The drawn dwell arc's point one step beyond the phase's end `i` (forward: after it), and
+/// the step in φ; `None` with no dwell there.
+fn beyond(d: &Drawn<'_>, i: usize, forward: bool) -> Option<(DVec2, f64)> {
+    let p = &d.points[i];
+    let dwell = match (p.phase, forward) {
+        (0, true) | (2, false) => d.spec.phases.far,
+        _ => d.spec.phases.near,
+    };
+    if dwell <= 0.0 {
+        return None;
+    }
+    let step = end_step(d.points, i).min(dwell);
+    let phi = if forward { p.phi + step } else { p.phi - step };
+    let s = if (p.phase == 0) == forward {
+        d.spec.stroke
+    } else {
+        0.0
+    };
+    let m = Motion {
+        s,
+        ds: 0.0,
+        d2s: 0.0,
+    };
+    Some((to_cam(d.place.kin(m).b, phi), step))
+}
+
+/// The tangent at point `i` of the parabola (in φ) through it and its phase's next two
+/// points on one side (`forward`: after it), oriented the way φ grows:
+/// f′(φ₀) ≈ −(1/d₁ + 1/d₂)·c₀ + d₂/(d₁(d₂ − d₁))·c₁ − d₁/(d₂(d₂ − d₁))·c₂, d the signed
+/// steps from φ₀; `None` when the phase has no two points there.
+fn side(points: &[Point], c: &[DVec2], i: usize, forward: bool) -> Option<DVec2> {
+    let p = &points[i];
+    let at = |k: usize| {
+        let j = if forward {
+            i.checked_add(k)?
+        } else {
+            i.checked_sub(k)?
+        };
+        points
+            .get(j)
+            .filter(|q| q.phase == p.phase)
+            .map(|q| (j, q.phi - p.phi))
+    };
+    let ((j1, d1), (j2, d2)) = (at(1)?, at(2)?);
+    if d1 == 0.0 || d2 == 0.0 || d2 == d1 {
+        return None;
+    }
+    Some(
+        c[i] * -(1.0 / d1 + 1.0 / d2) + c[j1] * (d2 / (d1 * (d2 - d1)))
+            - c[j2] * (d1 / (d2 * (d2 - d1))),
+    )
+}
+
+/// The direction of the curve at `c` read through its neighbours `a` and `b`, `ha` and `hb`
+/// before and after it (in φ): the chord a → b where the steps are equal or one neighbour
+/// is the point itself, else the tangent at `c` of the parabola through the three,
+/// ∝ ha²·(b − c) + hb²·(c − a).
+fn tangent_through((a, ha): (DVec2, f64), c: DVec2, (b, hb): (DVec2, f64)) -> DVec2 {
+    if ha <= 0.0 || hb <= 0.0 || ha == hb {
+        return b - a;
+    }
+    (b - c) * (ha * ha) + (c - a) * (hb * hb)
+}
+
+/// The neighbours of point `i` within its phase (one-sided at the phase's ends).
+fn neighbours(points: &[Point], i: usize) -> (usize, usize) {
+    let same = |j: usize| points.get(j).is_some_and(|q| q.phase == points[i].phase);
+    let lo = if i > 0 && same(i - 1) { i - 1 } else { i };
+    let hi = if same(i + 1) { i + 1 } else { i };
+    (lo, hi)
+}

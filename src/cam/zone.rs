@@ -1,0 +1,167 @@
+//! The final elements of a minimum-radius construction, drawn as the textbook finishes it:
+//! the two γ_min rays that bound the zone of the cam's centre, each from its point to their
+//! crossing (and a little past it), the zone hatched along them inside (ГОСТ 2.306), the
+//! centre chosen marked and r_min dimensioned from it. The rays, the zone and the centre are
+//! the construction's own (its points and its decision); this file only draws them.
+
+use crate::construct::{Item, Recorder, Role, StepId};
+use crate::geom::{line_line, DVec2, Line, LineLine, Segment};
+use std::f64::consts::PI;
+
+/// The hatched band along the zone's two sides is this wide, mm.
+const BAND_MM: f64 = 5.0;
+/// The band runs at least this far from the crossing along each side, mm (and 10 mm past
+/// the centre chosen).
+const BAND_MIN_MM: f64 = 20.0;
+/// Hatch spacing, mm (ГОСТ 2.306: 1…10 mm by the area).
+const HATCH_MM: f64 = 2.0;
+/// Probe distance from the crossing when telling which of its four angles is the zone, mm.
+const PROBE_MM: f64 = 0.5;
+
+/// The note of a bounding ray's step (the tests find the rays by it).
+pub const RAY_NOTE: &str = "γ_min ray bounding the zone of the cam centre";
+/// The note of the r_min dimension's step.
+pub const R_MIN_NOTE: &str = "dimension r_min";
+
+/// A bounding ray: its point K and its direction from K through the crossing.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Ray {
+    /// The point of the diagram the ray is drawn from.
+    pub k: DVec2,
+    /// Its direction (any length).
+    pub dir: DVec2,
+}
+
+/// The crossing of two rays' lines; `None` for parallel ones.
+pub(super) fn crossing(rec: &Recorder, a: Ray, b: Ray) -> Option<DVec2> {
+    let (la, lb) = (Line::new(a.k, a.dir)?, Line::new(b.k, b.dir)?);
+    match line_line(&la, &lb, rec.tolerances()) {
+        LineLine::Point { point, .. } => Some(point),
+        _ => None,
+    }
+}
+
+/// Draw the two rays from their points through their crossing `c`, and hatch the zone: the
+/// angle at `c` between them where `inside` holds, as a band [`BAND_MM`] wide along its two
+/// sides out to `reach` mm from `c` (at least [`BAND_MIN_MM`]), the rays drawn as far.
+/// Returns the rays' steps.
+pub(super) fn draw_zone(
+    rec: &mut Recorder,
+    rays: [Ray; 2],
+    c: DVec2,
+    reach: f64,
+    inside: impl Fn(DVec2) -> bool,
+) -> Vec<StepId> {
+    let mut ids = Vec::with_capacity(2);
+    for r in rays {
+        let Some(u) = (c - r.k).try_normalize() else {
+            continue;
+        };
+        ids.push(rec.draw(
+            RAY_NOTE,
+            Item::Segment(Segment::new(r.k, c + u * band_length(reach))),
+            Role::Construction,
+            &[],
+        ));
+    }
+    let (Some(a), Some(b)) = (rays[0].dir.try_normalize(), rays[1].dir.try_normalize()) else {
+        return ids;
+    };
+    // The zone is the one of the four angles at the crossing where the centre is admitted.
+    let sides = [(a, b), (a, -b), (-a, b), (-a, -b)]
+        .into_iter()
+        .find(|(p, q)| {
+            (*p + *q)
+                .try_normalize()
+                .is_some_and(|m| inside(c + m * PROBE_MM))
+        });
+    if let Some((p, q)) = sides {
+        hatch_angle_between(rec, c, (p, q), reach, &ids);
+    }
+    ids
+}
+
+/// Hatch the band along the two sides `p`, `q` (unit, from the apex `c`) of an angle, inside
+/// it, `reach` mm long.
+fn hatch_angle_between(
+    rec: &mut Recorder,
+    c: DVec2,
+    (p, q): (DVec2, DVec2),
+    reach: f64,
+    from: &[StepId],
+) {
+    let half = 0.5 * p.angle_to(q).abs();
+    if half <= 1e-3 || half >= 0.5 * PI - 1e-3 {
+        return;
+    }
+    let Some(bis) = (p + q).try_normalize() else {
+        return;
+    };
+    // The inner corner of the band and how far along a side it lies from the apex.
+    let inner = c + bis * (BAND_MM / half.sin());
+    let len = band_length(reach);
+    if BAND_MM / half.tan() >= len {
+        return;
+    }
+    let inward = |side: DVec2, other: DVec2| {
+        let n = side.perp();
+        if n.dot(other) >= 0.0 {
+            n
+        } else {
+            -n
+        }
+    };
+    let outline = [
+        c + p * len,
+        c,
+        c + q * len,
+        c + q * len + inward(q, p) * BAND_MM,
+        inner,
+        c + p * len + inward(p, q) * BAND_MM,
+    ];
+    let angle = hatch_angle(&[p, q]);
+    // The outline is finite (its points are the drawing's): the hatcher refuses only
+    // non-finite ones.
+    let strokes = crate::geom::hatch(&outline, HATCH_MM, angle).unwrap_or_default();
+    for s in strokes {
+        rec.draw(
+            "hatching of the zone of the cam centre",
+            Item::Segment(s),
+            Role::Hatch,
+            from,
+        );
+    }
+}
+
+/// How far from the crossing the band (and the rays) run for a zone `reach` mm long, mm.
+fn band_length(reach: f64) -> f64 {
+    reach.max(BAND_MIN_MM)
+}
+
+/// The hatch's angle (ГОСТ 2.306): 45°, else the first of 135°, 30°, 150°, 60°, 120° at
+/// least 20° off every side's direction.
+fn hatch_angle(sides: &[DVec2]) -> f64 {
+    let off = |a: f64, d: DVec2| {
+        let x = (a - d.y.atan2(d.x)).rem_euclid(PI);
+        x.min(PI - x)
+    };
+    [45.0f64, 135.0, 30.0, 150.0, 60.0, 120.0]
+        .into_iter()
+        .map(f64::to_radians)
+        .find(|&a| sides.iter().all(|d| off(a, *d) >= 20f64.to_radians()))
+        .unwrap_or(PI / 4.0)
+}
+
+/// Mark the centre chosen at `o` and dimension r_min from it to `to` (the start of the
+/// rise), the dimension line on the piece itself (offset 0) or `offset` mm to its left.
+pub(super) fn centre_and_r_min(
+    rec: &mut Recorder,
+    o: DVec2,
+    to: DVec2,
+    toward: DVec2,
+    offset: f64,
+) -> StepId {
+    let oid = rec.point("cam centre O_1", o, Role::Result, "O_1", toward, &[]);
+    rec.dimension(R_MIN_NOTE, (o, to, offset), "r_{min}");
+    oid
+}
