@@ -22,13 +22,11 @@ const JUSTIFIED: &[(&str, &str)] = &[
     ("cam-shock/cam", "in uk and en: the profile at μ_l = 0,001 (123 mm; 0,0005 draws it 246 mm, past its 240 mm room) and the longer captions move the tables under the diagrams (the cam part of issue 45)"),
     ("shaper/cam", "read to 0,5 mm or in en: the scene fixes the poles H₁, H₂ (the seed's), so the analogues' height is the seed's (the cam part of issue 45)"),
     ("friction-follower/friction", "three views, the closed forms and the table on an A2, the friction sheet's smallest format, each scale as large as its 160 mm room holds"),
-    ("gears-differential/gears", "one narrow figure (the ring's radius 80 mm drawn 160 mm at μ_l = 0,0005) with its data and table on an A2 (the gear part of issue 45)"),
-    ("gears-pz2-ex1/gears", "one narrow figure (177 mm tall at μ_l = 0,0005) with its data and table on an A2 (the gear part of issue 45)"),
     ("gears-pz2-ex2/gears", "one narrow figure (141 mm tall at μ_l = 0,0004) with its data and table on an A2 (the gear part of issue 45)"),
     ("gears-pz3/gears", "the scene fixes μ_l (the gear part of issue 45)"),
     ("rotor-static/balancing", "one disc and one polygon, each as large as its room (one round step finer doubles them); its 14 lines of data keep it off an A3"),
-    ("rotor-dynamic/balancing", "in en the data's sentences are wider than the A2 holds beside the rotor: the drawings at the A2's scales on an A1"),
     ("v-engine/dynamics", "read to 0,5 mm: the scene fixes μ_φ; the free diagrams' ordinates at their 80 mm (the flywheel part of issue 45 adds a sheet to this set)"),
+    ("shaper/flywheel", "the part drawing at the seed's 1:4 (D = 824 mm drawn 206 mm with its section and the spokes' sections) is too tall for an A3's 208 mm field, so an A2, whose band beside the section stays free; 1:2,5 draws D 330 mm, past the A2's field with its dimensions"),
     ("tangent/kinematics", "the plan of positions is the slider's guide, 400 mm tall at μ_l = 0,004 (±746 mm near φ = 90°; 0,0025 draws it 600 mm, past the field's 584 mm), and the plans at μ_v beside it fill two rows; the bottom band is left under the two rows"),
 ];
 
