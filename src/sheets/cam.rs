@@ -166,12 +166,9 @@ pub(super) fn one_sheet(
     let mut words_first = figures[..1.min(figures.len())].to_vec();
     words_first.extend(words.iter().cloned());
     words_first.extend(figures.iter().skip(1).cloned());
-    // The tables before the text: a narrow text block may leave a table no room beside it.
-    let tables_first: Vec<Block> = figures.iter().chain(words.iter().rev()).cloned().collect();
     let others = [
         words_first,
         swapped.into_iter().chain(words.iter().cloned()).collect(),
-        tables_first,
     ];
     let first = lay_out(sheet, blocks, "cam", title, lang)?;
     if first.len() == 1 {

@@ -61,7 +61,11 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     let mut lines = vec![
         super::drafting_line(
             session.drafting(),
-            super::Errs::of(true, a.diagrams.is_some()),
+            if a.diagrams.is_some() {
+                super::Errs::PlansAndChords
+            } else {
+                super::Errs::Plans
+            },
             lang,
         ),
         format!(

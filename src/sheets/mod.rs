@@ -148,16 +148,6 @@ pub(crate) enum Errs {
 }
 
 impl Errs {
-    /// The sheet's plans and whether it has diagrams.
-    pub(crate) fn of(plans: bool, diagrams: bool) -> Self {
-        match (plans, diagrams) {
-            (true, true) => Self::PlansAndChords,
-            (true, false) => Self::Plans,
-            (false, true) => Self::Diagrams,
-            (false, false) => Self::Rounding,
-        }
-    }
-
     fn word(self) -> captions::Text {
         match self {
             Self::PlansAndChords => captions::Text::ErrPlansAndChords,
