@@ -254,10 +254,16 @@ fn emit(line: &str) {
 }
 
 fn load_all(paths: &[PathBuf]) -> Result<Vec<Scene>, Failure> {
-    paths
-        .iter()
-        .map(|p| scene::load(p).map_err(|e| Failure::input(e.to_string())))
-        .collect()
+    paths.iter().map(PathBuf::as_path).map(load).collect()
+}
+
+/// A scene read, its warnings on standard error (`warning: path: key: …`).
+fn load(path: &Path) -> Result<Scene, Failure> {
+    let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
+    for w in &s.warnings {
+        eprintln!("warning: {}: {w}", path.display());
+    }
+    Ok(s)
 }
 
 fn options(lang: LangArg, drafting: f64) -> Result<(Lang, Drafting), Failure> {
@@ -343,7 +349,7 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
     use std::io::IsTerminal as _;
     let options = render_options(how, Drafting::EXACT)?;
     let out = how.out.as_path();
-    let scene = scene::load(template).map_err(|e| Failure::input(e.to_string()))?;
+    let scene = load(template)?;
     if scene.plates.is_empty() {
         return Err(nothing_to_draw(&scene));
     }
@@ -428,8 +434,8 @@ fn audit(
     lang: LangArg,
 ) -> Result<(), Failure> {
     let lang = language(lang);
-    let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
-    if !has_study(&s) {
+    let s = load(path)?;
+    if !s.has_study() {
         return Err(nothing_to_construct(&s));
     }
     let auditor = tmm::audit::Auditor::new(&s).map_err(|e| Failure::construction(e.to_string()))?;
@@ -453,7 +459,7 @@ fn audit(
 fn note(paths: &[PathBuf], out: &Path, lang: LangArg, drafting: f64) -> Result<(), Failure> {
     let (lang, drafting) = options(lang, drafting)?;
     let scenes = load_all(paths)?;
-    if let Some(s) = scenes.iter().find(|s| !has_study(s)) {
+    if let Some(s) = scenes.iter().find(|s| !s.has_study()) {
         return Err(nothing_to_construct(s));
     }
     distinct_stems(&scenes, out)?;
@@ -481,8 +487,8 @@ fn distinct_stems(scenes: &[Scene], out: &Path) -> Result<(), Failure> {
 
 fn report(path: &Path, format: ReportFormat, drafting: f64, lang: LangArg) -> Result<(), Failure> {
     let (lang, drafting) = options(lang, drafting)?;
-    let s = scene::load(path).map_err(|e| Failure::input(e.to_string()))?;
-    if !has_study(&s) {
+    let s = load(path)?;
+    if !s.has_study() {
         return Err(nothing_to_construct(&s));
     }
     let rep = Session::new(&s, drafting)
@@ -507,7 +513,7 @@ fn nothing_to_construct(s: &Scene) -> Failure {
 
 /// A scene without a plate to draw: without a study, or with `[plates] wanted = []`.
 fn nothing_to_draw(s: &Scene) -> Failure {
-    if has_study(s) {
+    if s.has_study() {
         Failure::input(format!(
             "{}: plates.wanted = []: the scene asks for no plate to draw: expected at least one plate",
             s.path.display()
@@ -517,28 +523,17 @@ fn nothing_to_draw(s: &Scene) -> Failure {
     }
 }
 
-/// Whether the scene has a study to carry out (a report to give).
-fn has_study(s: &Scene) -> bool {
-    s.mechanism.is_some()
-        || s.balancing.is_some()
-        || !s.friction.is_empty()
-        || s.gears.is_some()
-        || s.cam.is_some()
-}
-
 /// Check every scene: a line for each (`path: ok` on standard output, `error: …` on standard
 /// error); the worst status (2 bad input > 1 construction > 0).
 fn check(paths: &[PathBuf]) -> Result<(), Failure> {
     let mut worst: Option<Failure> = None;
     for path in paths {
-        let result = scene::load(path)
-            .map_err(|e| Failure::input(e.to_string()))
-            .and_then(|s| {
-                if s.plates.is_empty() {
-                    return Err(nothing_to_draw(&s));
-                }
-                render::check(&s).map_err(render_failure)
-            });
+        let result = load(path).and_then(|s| {
+            if s.plates.is_empty() {
+                return Err(nothing_to_draw(&s));
+            }
+            render::check(&s).map_err(render_failure)
+        });
         match result {
             Ok(()) => emit(&format!("{}: ok", path.display())),
             Err(f) => {

@@ -4,7 +4,7 @@ use super::balancing::balancing;
 use super::cam::cam;
 use super::check::{item, quoted, Checker};
 use super::dynamics::dynamics;
-use super::error::SceneError;
+use super::error::{Problem, SceneError};
 use super::forces::forces;
 use super::friction::friction;
 use super::gears::gear_sections;
@@ -141,6 +141,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         .balancing
         .as_ref()
         .and_then(|b| balancing(&mut check, b));
+    let has_plates = raw.plates.is_some();
     let plates = plates(&mut check, raw.plates, |section| match section {
         Section::Mechanism => has_mechanism,
         Section::Forces => has_forces,
@@ -151,6 +152,10 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
         Section::Cam => has_cam,
     });
     let friction = friction(&mut check, raw.friction);
+    let warnings = match &raw.kinematics {
+        Some(_) if has_mechanism => undrawn_kinematics(has_plates, &plates),
+        _ => Vec::new(),
+    };
     let kinematics = kinematics(
         &mut check,
         raw.kinematics.unwrap_or_default(),
@@ -192,6 +197,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             cam,
             answer_key,
             seed,
+            warnings,
         })
     } else {
         Err(SceneError::Invalid {
@@ -331,6 +337,27 @@ fn plates(
         }
     }
     out
+}
+
+/// `[kinematics]` that no sheet draws: the kinematics plate is not among the plates wanted
+/// (`has_plates`: a `[plates]` table says so; else the default, `["positions"]`). Its scales
+/// and choices still reach the report and the note, so the scene is read, with a warning.
+fn undrawn_kinematics(has_plates: bool, plates: &[PlateKind]) -> Vec<Problem> {
+    if plates.contains(&PlateKind::Kinematics) {
+        return Vec::new();
+    }
+    let why = if has_plates {
+        "[plates] wanted does not ask for the kinematics plate"
+    } else {
+        "the scene has no [plates] table, and the default plates are [\"positions\"]"
+    };
+    vec![Problem {
+        key: "kinematics".into(),
+        value: None,
+        expected: format!(
+            "no sheet draws it: {why}; its scales and choices reach only the report and the note: expected \"kinematics\" in [plates] wanted to draw its plans and diagrams"
+        ),
+    }]
 }
 
 /// `[answer_key] values`: each `quantity[@position][:method]`, every part a name of letters,

@@ -229,6 +229,20 @@ pub struct Scene {
     /// The values the seed prints for rows of the report that the analysis does not
     /// reproduce (`[[seed]]`), in file order: flagged by the report, explained by the note.
     pub seed: Vec<crate::check::SeedValue>,
+    /// What is read but does not do all it could (a `[kinematics]` section that no sheet
+    /// draws): each a problem that does not refuse the scene, for the caller to warn of.
+    pub warnings: Vec<super::Problem>,
+}
+
+impl Scene {
+    /// Whether the scene has a study to carry out (a report to give).
+    pub fn has_study(&self) -> bool {
+        self.mechanism.is_some()
+            || self.balancing.is_some()
+            || !self.friction.is_empty()
+            || self.gears.is_some()
+            || self.cam.is_some()
+    }
 }
 
 /// One value of an answer key: a report row named as the report names it,

@@ -556,3 +556,41 @@ fn mobility_counts_with_the_linkage_structure() {
     let w = st.mobility();
     assert_eq!((w.n, w.p5, w.p4, w.w), (5, 7, 0, 1));
 }
+
+/// A `[kinematics]` section that no sheet draws (no kinematics plate wanted) is read with a
+/// warning naming its key and saying why; drawn, or absent, it gives none. No shipped scene
+/// has one.
+#[test]
+fn kinematics_no_sheet_draws_is_warned_of() {
+    let four_bar = std::fs::read_to_string(construction("four-bar.toml")).unwrap_or_default();
+    let drawn = "[plates]\nwanted = [\"positions\", \"kinematics\"]\n";
+    assert!(four_bar.contains(drawn));
+    let section = "\n[kinematics]\nscale_v = 0.01\n";
+    let warnings = |text: String| parse(&text, Path::new("x.toml")).map(|s| s.warnings);
+    let no_table = warnings(four_bar.replacen(drawn, "", 1) + section).unwrap_or_default();
+    assert_eq!(no_table.len(), 1, "{no_table:?}");
+    assert_eq!(no_table[0].key, "kinematics");
+    assert!(
+        no_table[0].expected.contains("no [plates] table"),
+        "{}",
+        no_table[0]
+    );
+    let positions = "[plates]\nwanted = [\"positions\"]\n";
+    let not_wanted = warnings(four_bar.replacen(drawn, positions, 1) + section);
+    let not_wanted = not_wanted.unwrap_or_default();
+    assert_eq!(not_wanted.len(), 1, "{not_wanted:?}");
+    assert!(not_wanted[0].to_string().starts_with(
+        "kinematics: no sheet draws it: [plates] wanted does not ask for the kinematics plate"
+    ));
+    assert_eq!(warnings(four_bar.clone() + section).ok(), Some(Vec::new()));
+    assert_eq!(
+        warnings(four_bar.replacen(drawn, "", 1)).ok(),
+        Some(Vec::new())
+    );
+    let shipped = super::files_in(&construction("")).unwrap_or_default();
+    assert!(shipped.len() >= 20, "{shipped:?}");
+    for name in shipped {
+        let s = load(&name).map(|s| s.warnings);
+        assert_eq!(s.ok(), Some(Vec::new()), "{}", name.display());
+    }
+}

@@ -21,6 +21,7 @@ mod cam_sheets;
 mod cam_special;
 mod cli;
 mod dimension_texts;
+mod docs;
 mod dynamics;
 mod engine;
 mod flywheel_sheet;

@@ -1,0 +1,87 @@
+//! The detail views of a force polygon: the zone of its forces too short to read drawn again
+//! at a larger μ_F.
+
+use crate::construct::Figure;
+use crate::geom::{Circle, DVec2};
+use crate::scale::Scale;
+
+/// A force shorter than this on its polygon, mm, is drawn again in the polygon's detail.
+const SMALL_FORCE_MM: f64 = 4.0;
+
+/// The detail draws the smallest force about this long, mm.
+const DETAIL_FORCE_MM: f64 = 12.0;
+
+/// The detail's zone is drawn at most this wide, mm.
+const DETAIL_MM: f64 = 110.0;
+
+/// A detail's zone is drawn at least this large in radius, mm: room for its forces' labels.
+const DETAIL_ROOM_MM: f64 = 30.0;
+
+/// The zone about the small forces reaches this far past them (a share of their extent).
+const DETAIL_MARGIN: f64 = 1.3;
+
+/// A detail view (выносной элемент) of a force polygon: the zone of its small forces drawn
+/// again at a larger μ_F, so that every force of the polygon can be read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PolygonDetail {
+    /// The zone on the polygon, polygon mm.
+    pub zone: Circle,
+    /// The zone enlarged: the vectors cut at its border, with their labels.
+    pub figure: Figure,
+}
+
+/// A polygon has at most this many details.
+const MAX_DETAILS: usize = 3;
+
+/// The details of `polygon` about its forces `laid` (polygon mm) drawn shorter than
+/// [`SMALL_FORCE_MM`]: from the shortest force not yet shown, the round μ_F that draws it
+/// about [`DETAIL_FORCE_MM`], and a zone about it and the other small forces near enough to
+/// share a detail [`DETAIL_MM`] wide; then the next. Empty when every force reads. A force
+/// zero to the polygon's scale (shorter than [`crate::forces::ZERO_PART`] of its longest) is
+/// drawn as the point it is, with no detail.
+pub(super) fn details(polygon: &Figure, laid: &[(DVec2, DVec2)]) -> Vec<PolygonDetail> {
+    let mu = polygon.scale;
+    let longest = laid.iter().map(|(a, b)| a.distance(*b)).fold(0.0, f64::max);
+    let zero = crate::forces::ZERO_PART * longest;
+    let mut small: Vec<(DVec2, DVec2)> = laid
+        .iter()
+        .copied()
+        .filter(|(a, b)| a.distance(*b) > zero && a.distance(*b) < SMALL_FORCE_MM)
+        .collect();
+    small.sort_by(|x, y| x.0.distance(x.1).total_cmp(&y.0.distance(y.1)));
+    let mut out = Vec::new();
+    while let (Some(&(a, b)), true) = (small.first(), out.len() < MAX_DETAILS) {
+        let Some(scale) =
+            Scale::round_for(a.distance(b) * mu.value(), DETAIL_FORCE_MM, mu.quantity)
+                .filter(|d| d.value() * 2.0 <= mu.value())
+        else {
+            break;
+        };
+        // The zone's largest radius on the polygon, and who fits in it with the margin.
+        let reach =
+            0.5 * DETAIL_MM * scale.value() / mu.value() / DETAIL_MARGIN / std::f64::consts::SQRT_2;
+        let c = a.lerp(b, 0.5);
+        let (members, rest): (Vec<_>, Vec<_>) = small
+            .iter()
+            .partition(|(p, q)| p.distance(c) <= reach && q.distance(c) <= reach);
+        let (lo, hi) = members.iter().fold(
+            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+            |(lo, hi), (p, q)| (lo.min(p.min(*q)), hi.max(p.max(*q))),
+        );
+        // At least a short force's room about it, at most the detail's width (drawing mm
+        // of the detail turned into polygon mm).
+        let k = mu.value() / scale.value();
+        let radius = (0.5 * (hi - lo).length() * DETAIL_MARGIN)
+            .max(DETAIL_ROOM_MM / k)
+            .min(0.5 * DETAIL_MM / k);
+        let Some(zone) = Circle::new(0.5 * (lo + hi), radius) else {
+            break;
+        };
+        out.push(PolygonDetail {
+            zone,
+            figure: polygon.detail_with_vectors(&zone, scale),
+        });
+        small = rest;
+    }
+    out
+}

@@ -1,0 +1,265 @@
+//! The documentation against the program: the synopsis of every command in
+//! `docs/commands.md` names exactly the flags (and the values of each enumerated flag) that
+//! `tmm <command> -h` lists; every command line written in `README.md` or `docs/*.md` uses
+//! only flags and values its command has; the README is a page (at most 150 lines) whose
+//! links lead to files that exist; a `[kinematics]` section that no sheet draws is warned of.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+use crate::support::{root, scratch, tmm};
+
+/// The flags a command's short help lists (`--help` and `--version` aside), each with its
+/// possible values (empty for a free value or a switch).
+fn help_flags(command: &str) -> BTreeMap<String, BTreeSet<String>> {
+    let o = tmm(&[command, "-h"]);
+    assert!(o.status.success(), "tmm {command} -h");
+    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    let options = text.split("Options:").nth(1).unwrap_or_default();
+    let mut flags = BTreeMap::new();
+    for line in options
+        .lines()
+        .map(str::trim)
+        .filter(|l| l.starts_with('-'))
+    {
+        let Some(flag) = line
+            .split_whitespace()
+            .map(|w| w.trim_end_matches(','))
+            .find(|w| w.starts_with("--"))
+        else {
+            continue;
+        };
+        if flag == "--help" || flag == "--version" {
+            continue;
+        }
+        let values = line
+            .split("[possible values: ")
+            .nth(1)
+            .and_then(|v| v.split(']').next())
+            .map(|v| v.split(", ").map(String::from).collect())
+            .unwrap_or_default();
+        flags.insert(flag.to_string(), values);
+    }
+    flags
+}
+
+/// The commands `tmm -h` lists (`help` aside).
+fn commands() -> Vec<String> {
+    let o = tmm(&["-h"]);
+    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    let listed = text.split("Commands:").nth(1).unwrap_or_default();
+    let listed = listed.split("Options:").next().unwrap_or_default();
+    listed
+        .lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|c| *c != "help")
+        .map(String::from)
+        .collect()
+}
+
+/// A command line written in the documentation: the command and its words after it.
+struct Line {
+    file: String,
+    command: String,
+    words: Vec<String>,
+}
+
+/// Every command line in the fenced code blocks of `text`: `tmm COMMAND …` or
+/// `cargo run --release [--features F] -- COMMAND …`, a trailing `# comment` left out.
+fn command_lines(file: &str, text: &str) -> Vec<Line> {
+    let mut out = Vec::new();
+    let mut fenced = false;
+    for line in text.lines() {
+        if line.trim_start().starts_with("```") {
+            fenced = !fenced;
+            continue;
+        }
+        if !fenced {
+            continue;
+        }
+        let code = line.split(" #").next().unwrap_or_default().trim();
+        let rest = if let Some(r) = code.strip_prefix("tmm ") {
+            r
+        } else if let Some((_, r)) = code
+            .strip_prefix("cargo run --release")
+            .and_then(|r| r.split_once("-- "))
+        {
+            r
+        } else {
+            continue;
+        };
+        let mut words = rest.split_whitespace().map(String::from);
+        if let Some(command) = words.next() {
+            out.push(Line {
+                file: file.to_string(),
+                command,
+                words: words.collect(),
+            });
+        }
+    }
+    out
+}
+
+/// The flags of a line and the value written after each (`[--lang ru|uk|en]` gives
+/// `--lang` with `ru`, `uk`, `en`; a switch, or a flag whose value is free, none).
+fn written_flags(line: &Line) -> BTreeMap<String, BTreeSet<String>> {
+    let words: Vec<&str> = line
+        .words
+        .iter()
+        .map(|w| w.trim_matches(|c| c == '[' || c == ']'))
+        .collect();
+    let mut flags = BTreeMap::new();
+    for (k, w) in words.iter().enumerate() {
+        if !w.starts_with("--") {
+            continue;
+        }
+        let value = words.get(k + 1).filter(|v| !v.starts_with("--"));
+        let values = value
+            .map(|v| {
+                v.split([',', '|'])
+                    .filter(|x| x.chars().all(|c| c.is_ascii_lowercase()))
+                    .map(String::from)
+                    .collect()
+            })
+            .unwrap_or_default();
+        flags.insert((*w).to_string(), values);
+    }
+    flags
+}
+
+/// The Markdown files of the documentation: the README and every page of `docs/`.
+fn pages() -> Vec<(String, String)> {
+    let mut files = vec![root().join("README.md")];
+    let mut docs: Vec<_> = std::fs::read_dir(root().join("docs"))
+        .expect("docs/")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "md"))
+        .collect();
+    docs.sort();
+    files.extend(docs);
+    files
+        .iter()
+        .map(|p| {
+            let name = p.strip_prefix(root()).unwrap_or(p).display().to_string();
+            (name, std::fs::read_to_string(p).unwrap_or_default())
+        })
+        .collect()
+}
+
+/// `docs/commands.md`'s synopsis (its first code block) names every command once, with exactly the flags its help
+/// lists and, for a flag of a few values, exactly those values.
+#[test]
+fn the_synopsis_names_every_flag_the_help_lists() {
+    let text = std::fs::read_to_string(root().join("docs/commands.md")).expect("docs/commands.md");
+    // The synopsis is the page's first code block.
+    let block = text.split("```").nth(1).unwrap_or_default();
+    let lines = command_lines("docs/commands.md", &format!("```{block}```"));
+    let listed = commands();
+    assert!(listed.len() >= 8, "{listed:?}");
+    for command in &listed {
+        let synopsis: Vec<&Line> = lines.iter().filter(|l| &l.command == command).collect();
+        assert_eq!(synopsis.len(), 1, "one synopsis line of `tmm {command}`");
+        let written = written_flags(synopsis[0]);
+        let help = help_flags(command);
+        let names = |m: &BTreeMap<String, BTreeSet<String>>| m.keys().cloned().collect::<Vec<_>>();
+        assert_eq!(
+            names(&written),
+            names(&help),
+            "the flags of `tmm {command}`"
+        );
+        for (flag, values) in help.iter().filter(|(_, v)| !v.is_empty()) {
+            assert_eq!(
+                &written[flag], values,
+                "the values of `tmm {command} {flag}`"
+            );
+        }
+    }
+}
+
+/// Every command line of the README and of `docs/` runs a command `tmm` has, with flags and
+/// values it takes.
+#[test]
+fn every_command_line_written_uses_flags_the_command_has() {
+    let listed = commands();
+    let mut helps = BTreeMap::new();
+    let mut seen = 0;
+    for (file, text) in pages() {
+        for line in command_lines(&file, &text) {
+            assert!(
+                listed.contains(&line.command),
+                "{}: `tmm {}` is no command of {listed:?}",
+                line.file,
+                line.command
+            );
+            let help = helps
+                .entry(line.command.clone())
+                .or_insert_with(|| help_flags(&line.command));
+            for (flag, values) in written_flags(&line) {
+                let Some(known) = help.get(&flag) else {
+                    panic!("{}: `tmm {}` has no flag {flag}", line.file, line.command);
+                };
+                if !known.is_empty() {
+                    assert!(
+                        values.is_subset(known),
+                        "{}: `tmm {} {flag}` takes {known:?}, not {values:?}",
+                        line.file,
+                        line.command
+                    );
+                }
+            }
+            seen += 1;
+        }
+    }
+    assert!(seen >= 12, "{seen} command lines");
+}
+
+/// The README is a page: at most 150 lines, the seed-000 project's command and the test
+/// command in it, and every relative link (a picture, a page of `docs/`) leads to a file.
+#[test]
+fn the_readme_is_a_page_whose_links_lead_somewhere() {
+    let pages = pages();
+    let readme = &pages[0].1;
+    let lines = readme.lines().count();
+    assert!(lines <= 150, "README.md: {lines} lines");
+    assert!(readme.contains("cargo run --release -- render constructions/shaper.toml"));
+    assert!(readme.contains("cargo test --release"));
+    for (file, text) in &pages {
+        let dir = root().join(file);
+        let dir = dir.parent().unwrap_or(Path::new("."));
+        for target in text.split("](").skip(1).filter_map(|t| t.split(')').next()) {
+            let target = target.split('#').next().unwrap_or_default();
+            if target.is_empty() || target.contains("://") {
+                continue;
+            }
+            assert!(
+                dir.join(target).exists(),
+                "{file}: the link {target} leads nowhere"
+            );
+        }
+    }
+}
+
+/// A `[kinematics]` section with no `[plates]` table (so no kinematics sheet) is read, and
+/// `tmm check` warns of it on standard error, naming the file and the key.
+#[test]
+fn a_kinematics_section_no_sheet_draws_is_warned_of() {
+    let dir = scratch("docs-kinematics-warning");
+    let text = std::fs::read_to_string(root().join("constructions/four-bar.toml")).unwrap();
+    let text = text.replacen(
+        "[plates]\nwanted = [\"positions\", \"kinematics\"]\n",
+        "",
+        1,
+    ) + "\n[kinematics]\nscale_v = 0.01\n";
+    let scene = dir.join("undrawn.toml");
+    std::fs::write(&scene, text).unwrap();
+    let o = tmm(&["check", scene.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    let want = format!(
+        "warning: {}: kinematics: no sheet draws it",
+        scene.display()
+    );
+    assert!(err.contains(&want), "{err}");
+    let o = tmm(&["check", "constructions/four-bar.toml"]);
+    assert!(o.status.success() && o.stderr.is_empty());
+}
