@@ -116,11 +116,107 @@ fn lever_at(
             rec.label(id, name, x, x.normalize_or_zero());
         }
     }
-    let mut arms = 0;
-    let mut log: Vec<MomentTerm> = Vec::new();
-    // The moment of `f` at `x` about the pole; `image`: the name of its point's image when
-    // the turned plan has no such point (the pitch point's), drawn and labelled.
-    let mut moment = |rec: &mut Recorder, x: DVec2, f: DVec2, name: &str, image: Option<&str>| {
+    let mut lb = Board {
+        rec,
+        arms: 0,
+        log: Vec::new(),
+    };
+    let mu = setup.mu_l.value();
+    let mut power = 0.0;
+    for l in loads {
+        if l.is_couple() {
+            // A couple as two forces ⊥ to the link at its origin and its farthest point (a
+            // link of one point — a block — at a point 20 mm along its frame, imaged by
+            // the similarity of its images).
+            let o = b.origin[l.link];
+            let far = (0..prog.names.len())
+                .filter(|&k| prog.links_of(k).contains(&l.link))
+                .max_by(|&x, &y| b.p[x].distance(b.p[o]).total_cmp(&b.p[y].distance(b.p[o])))
+                .filter(|&f| b.p[f] != b.p[o]);
+            let (p_far, i_far) = match far {
+                Some(f) => (b.p[f], vp.images[f]),
+                None => {
+                    let x = b.p[o] + DVec2::from_angle(b.angle[l.link]) * SECOND_POINT_MM;
+                    (x, image(b, vp, l.link, x, mu))
+                }
+            };
+            let len = lb.rec.measure(b.p[o], p_far).read_mm * mu;
+            if len.is_nan() || len <= 0.0 {
+                continue;
+            }
+            let e = (p_far - b.p[o]).normalize().perp();
+            let f = e * (l.moment / len);
+            // The couple's two forces, primed apart from the link's inertia force.
+            let name = |prime: &str| l.name.replacen('M', &format!("F{prime}"), 1);
+            power += lb.moment(turn(i_far), f, &name("′"), None);
+            power += lb.moment(turn(vp.images[o]), -f, &name("″"), None);
+        } else {
+            // A force at a point of another link (friction on a guide) acts on its own link.
+            let x = if l.shift == DVec2::ZERO && prog.links_of(l.at).contains(&l.link) {
+                vp.images[l.at]
+            } else {
+                image(b, vp, l.link, b.p[l.at] + l.shift / mu, mu)
+            };
+            power += lb.moment(turn(x), l.force, &l.name, None);
+        }
+    }
+    let crank = prog.crank_link as usize;
+    let (m_bal, f_bal) = match drive {
+        Drive::Coupling => (-power / w1, None),
+        Drive::Gear(g) => {
+            let o = b.p[prog.centre];
+            let m_bal = -power / w1;
+            // The tooth pushes on the flank that turns the crank the way M_у does.
+            let flank = if m_bal == 0.0 { w1 } else { m_bal }.signum();
+            let (p, d) = line_of_action(o, g.radius() / mu, g.towards, g.pressure_angle, flank);
+            let x = turn(image(b, vp, crank, p, mu));
+            let unit = lb.moment(x, d, "F_{у}", Some(PITCH_IMAGE));
+            let f = -power / unit;
+            (m_bal, Some(f))
+        }
+    };
+    // The balancing force's own term (gear drive) is the unknown's arm.
+    let unknown = match (f_bal, drive) {
+        (Some(value), Drive::Gear(_)) => {
+            let probe = lb.log.pop();
+            Unknown::Force {
+                name: "F_{у}".into(),
+                arm: probe.as_ref().map_or(0.0, |t| t.moment),
+                arm_mm: probe.as_ref().map_or(0.0, |t| t.arm_mm),
+                label: probe.and_then(|t| t.label),
+                value,
+            }
+        }
+        _ => Unknown::Couple {
+            name: "M_{у}".into(),
+            value: m_bal * w1,
+        },
+    };
+    Lever {
+        figure: lb.rec.finish(),
+        m_bal,
+        f_bal,
+        equation: MomentEquation {
+            about: None,
+            links: Vec::new(),
+            terms: lb.log,
+            unknown,
+        },
+    }
+}
+
+/// The lever being drawn: its recorder, the arms numbered so far and the moments taken.
+struct Board {
+    rec: Recorder,
+    arms: usize,
+    log: Vec<MomentTerm>,
+}
+
+impl Board {
+    /// The moment of `f` at `x` about the pole; `image`: the name of its point's image when
+    /// the turned plan has no such point (the pitch point's), drawn and labelled.
+    fn moment(&mut self, x: DVec2, f: DVec2, name: &str, image: Option<&str>) -> f64 {
+        let rec = &mut self.rec;
         let Some(e) = f.try_normalize() else {
             return 0.0;
         };
@@ -168,7 +264,8 @@ fn lever_at(
         if let Some(same) = arm_named(rec, DVec2::ZERO, foot) {
             label = Some(same);
         } else if arm.drawn_mm > 0.5 {
-            arms += 1;
+            self.arms += 1;
+            let arms = self.arms;
             label = Some(format!("h_{{{arms}}}"));
             let id = rec.draw(
                 format!("arm of {name}"),
@@ -185,7 +282,7 @@ fn lever_at(
         }
         // Moment about the pole in plan mm × N, turned into power with μ_v.
         let power = x.perp_dot(e).signum() * f.length() * arm.value;
-        log.push(MomentTerm {
+        self.log.push(MomentTerm {
             name: name.to_string(),
             force: f.length(),
             arm: arm.value,
@@ -195,87 +292,5 @@ fn lever_at(
             couple: false,
         });
         power
-    };
-    let mu = setup.mu_l.value();
-    let mut power = 0.0;
-    for l in loads {
-        if l.is_couple() {
-            // A couple as two forces ⊥ to the link at its origin and its farthest point (a
-            // link of one point — a block — at a point 20 mm along its frame, imaged by
-            // the similarity of its images).
-            let o = b.origin[l.link];
-            let far = (0..prog.names.len())
-                .filter(|&k| prog.links_of(k).contains(&l.link))
-                .max_by(|&x, &y| b.p[x].distance(b.p[o]).total_cmp(&b.p[y].distance(b.p[o])))
-                .filter(|&f| b.p[f] != b.p[o]);
-            let (p_far, i_far) = match far {
-                Some(f) => (b.p[f], vp.images[f]),
-                None => {
-                    let x = b.p[o] + DVec2::from_angle(b.angle[l.link]) * SECOND_POINT_MM;
-                    (x, image(b, vp, l.link, x, mu))
-                }
-            };
-            let len = rec.measure(b.p[o], p_far).read_mm * mu;
-            if len.is_nan() || len <= 0.0 {
-                continue;
-            }
-            let e = (p_far - b.p[o]).normalize().perp();
-            let f = e * (l.moment / len);
-            // The couple's two forces, primed apart from the link's inertia force.
-            let name = |prime: &str| l.name.replacen('M', &format!("F{prime}"), 1);
-            power += moment(&mut rec, turn(i_far), f, &name("′"), None);
-            power += moment(&mut rec, turn(vp.images[o]), -f, &name("″"), None);
-        } else {
-            // A force at a point of another link (friction on a guide) acts on its own link.
-            let x = if l.shift == DVec2::ZERO && prog.links_of(l.at).contains(&l.link) {
-                vp.images[l.at]
-            } else {
-                image(b, vp, l.link, b.p[l.at] + l.shift / mu, mu)
-            };
-            power += moment(&mut rec, turn(x), l.force, &l.name, None);
-        }
-    }
-    let crank = prog.crank_link as usize;
-    let (m_bal, f_bal) = match drive {
-        Drive::Coupling => (-power / w1, None),
-        Drive::Gear(g) => {
-            let o = b.p[prog.centre];
-            let m_bal = -power / w1;
-            // The tooth pushes on the flank that turns the crank the way M_у does.
-            let flank = if m_bal == 0.0 { w1 } else { m_bal }.signum();
-            let (p, d) = line_of_action(o, g.radius() / mu, g.towards, g.pressure_angle, flank);
-            let x = turn(image(b, vp, crank, p, mu));
-            let unit = moment(&mut rec, x, d, "F_{у}", Some(PITCH_IMAGE));
-            let f = -power / unit;
-            (m_bal, Some(f))
-        }
-    };
-    // The balancing force's own term (gear drive) is the unknown's arm.
-    let unknown = match (f_bal, drive) {
-        (Some(value), Drive::Gear(_)) => {
-            let probe = log.pop();
-            Unknown::Force {
-                name: "F_{у}".into(),
-                arm: probe.as_ref().map_or(0.0, |t| t.moment),
-                arm_mm: probe.as_ref().map_or(0.0, |t| t.arm_mm),
-                label: probe.and_then(|t| t.label),
-                value,
-            }
-        }
-        _ => Unknown::Couple {
-            name: "M_{у}".into(),
-            value: m_bal * w1,
-        },
-    };
-    Lever {
-        figure: rec.finish(),
-        m_bal,
-        f_bal,
-        equation: MomentEquation {
-            about: None,
-            links: Vec::new(),
-            terms: log,
-            unknown,
-        },
     }
 }

@@ -81,19 +81,9 @@ pub struct Generation {
     pub touch_error: f64,
 }
 
-/// Spacing of the undercut's hatching where it is read (its detail view, or the figure
-/// when there is none), mm.
-const UNDERCUT_HATCH_MM: f64 = 1.0;
-
 /// The size of the undercut's detail view, mm: its zone is enlarged by the largest ГОСТ 2.302
 /// enlargement that draws it at most this wide.
 pub const DETAIL_MM: f64 = 150.0;
-
-/// The enlargements of ГОСТ 2.302 (n:1), the smallest first.
-const ENLARGEMENTS: [f64; 9] = [2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0];
-
-/// The zone of the detail view: the circle about the undercut's extent, this much wider.
-const DETAIL_MARGIN: f64 = 1.4;
 
 /// The letter of the undercut's detail view (ГОСТ 2.305: the zone on the figure and the
 /// view are marked alike).
@@ -123,124 +113,15 @@ pub fn generate(
     }
     let mu = scale.value();
     let c = *cutting;
-    let (r, rb, ra, rf) = (c.r(), c.rb(), c.ra, c.rf());
     let mut rec = Recorder::in_context("generation", scale, ctx);
-    let mm = |p: DVec2| p / mu;
-    let o = rec.draw(
-        "the radius of the tooth's axis",
-        Item::Segment(Segment::new(
-            DVec2::new(0.0, rf / mu - 2.0),
-            DVec2::new(0.0, ra / mu + 2.0),
-        )),
-        Role::Axis,
-        &[],
-    );
     // The circles about the tooth, over three pitches.
     let pitch = 2.0 * PI / f64::from(c.z);
-    for (radius, name) in [(r, "r"), (rb, "r_b"), (ra, "r_a"), (rf, "r_f")] {
-        let arc = crate::geom::Arc {
-            center: DVec2::ZERO,
-            radius: radius / mu,
-            start: PI / 2.0 - 1.5 * pitch,
-            sweep: 3.0 * pitch,
-        };
-        let id = rec.draw(
-            format!("circle {name}"),
-            Item::Arc(arc),
-            if name == "r" {
-                Role::Axis
-            } else {
-                Role::Construction
-            },
-            &[o],
-        );
-        // Named at its left end, clear of the rack positions.
-        let end = arc.end();
-        rec.label(id, name, end, DVec2::new(-1.0, 0.0));
-    }
+    circles(&mut rec, &c, mu, pitch);
     let st = c.states();
-    let (lo, hi) = c.span();
-    let mut states: Vec<f64> = (0..steps)
-        .map(|i| lo + (hi - lo) * i as f64 / (steps - 1) as f64)
-        .collect();
-    // The marks of the device: the flank's end, the tip, the rounding under P, and the
-    // contact passing N (the foot of O on the line of action) when the flank reaches it.
-    let q_n = st.q_p - r * c.rack.alpha.tan();
-    let marks = [st.q_j, st.q_a, st.q_bottom, q_n];
-    for q in marks.into_iter().filter(|q| *q >= st.q_j) {
-        if !states.iter().any(|s| (s - q).abs() <= 1e-12 * c.module) {
-            states.push(q);
-        }
-    }
-    states.sort_by(f64::total_cmp);
+    let (states, q_n) = rack_states(&c, steps);
     let drawn = spread(states.len(), DRAWN_POSITIONS);
-    let mut touches = Vec::new();
-    for (i, &q) in states.iter().enumerate() {
-        rec.set_group(i as u32 + 1);
-        let turn = q / r;
-        let mut last = None;
-        for run in outline_runs(&c, q) {
-            let pts: Vec<DVec2> = run.into_iter().map(|p| mm(rotate(p, turn))).collect();
-            last = pts.last().copied();
-            rec.draw(
-                format!("rack position {}", i + 1),
-                Item::Polyline {
-                    points: pts,
-                    closed: false,
-                },
-                Role::Construction,
-                &[],
-            );
-        }
-        // A drawn position's number at the outer end of its outline, out of the blank.
-        if let (Some(k), Some(end)) = (drawn.iter().position(|d| *d == i), last) {
-            let id = rec.draw(
-                format!("the number of rack position {}", i + 1),
-                Item::Text(end),
-                Role::Dimension,
-                &[],
-            );
-            rec.label(id, (k + 1).to_string(), end, end.normalize_or_zero());
-        }
-        for (piece, k) in touching(&c, q) {
-            let at = mm(rotate(k, turn));
-            rec.draw(
-                format!("rack position {}: its normal through P touches", i + 1),
-                Item::Point(at),
-                Role::Construction,
-                &[],
-            );
-            // The normal through P is the envelope's normal: its tangent is ⊥ it (the
-            // flank's own direction where it touches at P itself).
-            let flank = DVec2::new(-c.rack.alpha.sin(), c.rack.alpha.cos());
-            let normal = k - DVec2::new(0.0, r);
-            let tangent = normal.try_normalize().map_or(flank, DVec2::perp);
-            touches.push(Touch {
-                q,
-                piece,
-                at: at * mu,
-                tangent: rotate(tangent, turn),
-            });
-        }
-    }
-    rec.set_group(0);
-    let by = |piece: Piece| -> Vec<Touch> {
-        let mut v: Vec<Touch> = touches
-            .iter()
-            .copied()
-            .filter(|t| t.piece == piece)
-            .collect();
-        v.sort_by(|a, b| a.q.total_cmp(&b.q));
-        v
-    };
-    // The involute proper starts where the contact passes N; beyond N the flank traces the
-    // branch the fillet cuts away.
-    let flank: Vec<Touch> = by(Piece::Flank)
-        .into_iter()
-        .filter(|t| t.q >= q_n - 1e-12 * c.module)
-        .collect();
-    let fillet = by(Piece::Fillet);
-    let root = by(Piece::Root);
+    let touches = trace(&mut rec, &c, &states, &drawn, mu);
+    let [flank, fillet, root] = pieces(&c, &touches, q_n);
     // The junction on the drawing: the first crossing of the drawn fillet (from the root
     // up) with the drawn involute; the flank's end without one.
     let fl: Vec<DVec2> = flank.iter().map(|t| t.at).collect();
@@ -291,182 +172,33 @@ pub fn generate(
     right.push(junction);
     right.extend(curve_through(&fillet_drawn));
     right.extend(curve_through(&root_drawn));
-    let tooth = whole_tooth(&right, ra);
-    rec.draw(
-        "the tooth: the envelope of the rack positions",
-        Item::Polyline {
-            points: tooth.iter().map(|p| mm(*p)).collect(),
-            closed: false,
-        },
-        Role::Result,
-        &[],
-    );
-    // The neighbouring teeth, cut alike a pitch either side, as the device's paper shows
-    // three teeth: the spaces either side of the tooth.
-    for turn in [pitch, -pitch] {
-        rec.draw(
-            "the neighbouring tooth",
-            Item::Polyline {
-                points: tooth.iter().map(|p| mm(rotate(*p, turn))).collect(),
-                closed: false,
-            },
-            Role::Result,
-            &[],
-        );
-    }
-    // The report form's readings: the chords where the drawn flanks cross the pitch and
-    // base circles, read with a ruler and turned into arcs. The space: from the tooth's
-    // right flank to its right neighbour's left flank.
-    let mirror = |p: DVec2| DVec2::new(-p.x, p.y);
-    let across = |radius: f64| {
-        let k = circle_crossing(&right, radius)?;
-        Some(chord_to_arc(
-            rec.measure(mm(mirror(k)), mm(k)).value,
-            radius,
-        ))
-    };
-    let st_read = across(r).unwrap_or(0.0);
-    let et_read = circle_crossing(&right, r).map_or(0.0, |k| {
-        let next = rotate(mirror(k), -pitch);
-        chord_to_arc(rec.measure(mm(k), mm(next)).value, r)
-    });
-    let sb = if rb > rf { across(rb) } else { None };
-    let mut detail = None;
-    let mut detail_marks = Vec::new();
-    if undercut {
-        // The undercut: uncut, the tooth would follow the involute down to the base circle
-        // and the radial line below it; the fillet cuts into that outline from the junction
-        // down to where it comes back to the radial line. That outline is drawn thin and
-        // the material removed hatched, on both flanks.
+    let tooth = whole_tooth(&right, c.ra);
+    draw_teeth(&mut rec, &tooth, pitch, mu);
+    let (pitch_reading, sb) = readings(&rec, &c, &right, pitch, mu);
+    let (detail, detail_marks) = if undercut {
+        let drawn_states: Vec<f64> = drawn
+            .iter()
+            .filter_map(|i| states.get(*i))
+            .copied()
+            .collect();
         let lost: Vec<DVec2> = flank[..inv_from].iter().map(|t| t.at).collect();
-        let off_axis = |p: DVec2| p.x.atan2(p.y);
-        let edge = off_axis(lost.first().copied().unwrap_or(junction));
-        let mut cut = Vec::new();
-        let down: Vec<DVec2> = fi[..fil_to].iter().rev().copied().collect();
-        for w in down.windows(2) {
-            cut.push(w[0]);
-            let (a, b) = (off_axis(w[0]), off_axis(w[1]));
-            if b >= edge {
-                let t = if b > a { (edge - a) / (b - a) } else { 1.0 };
-                cut.push(w[0].lerp(w[1], t.clamp(0.0, 1.0)));
-                break;
-            }
-        }
-        let mut uncut = vec![junction];
-        uncut.extend(lost.iter().rev());
-        uncut.extend(cut.last());
-        let region: Vec<DVec2> = uncut.iter().chain(cut.iter().rev()).copied().collect();
-        // The undercut is a sliver: it is drawn again enlarged, as a detail view of the zone
-        // about the right flank's, at the round scale that makes the zone about DETAIL_MM
-        // across; the hatching is spaced for the scale it is read at.
-        let (lo, hi) = region.iter().fold(
-            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-            |(lo, hi), p| (lo.min(*p), hi.max(*p)),
-        );
-        let radius = 0.5 * (hi - lo).length() * DETAIL_MARGIN;
-        let zone =
-            crate::geom::Circle::new(mm(0.5 * (lo + hi)), radius / mu).filter(|z| z.radius > 0.0);
-        let enlarged = detail_scale(2.0 * radius).filter(|d| d.value() < mu);
-        let mut spacing = UNDERCUT_HATCH_MM;
-        if let (Some(zone), Some(scale_d)) = (zone, enlarged) {
-            spacing *= scale_d.value() / mu;
-            let id = rec.draw(
-                "the zone of the undercut's detail view",
-                Item::Circle(zone),
-                Role::Construction,
-                &[],
-            );
-            let at = zone.center + DVec2::new(1.0, 1.0).normalize() * zone.radius;
-            rec.label(id, DETAIL_LETTER, at, DVec2::new(1.0, 1.0));
-            detail = Some((zone, scale_d));
-            let drawn_states: Vec<f64> = drawn
-                .iter()
-                .filter_map(|i| states.get(*i))
-                .copied()
-                .collect();
-            detail_marks =
-                super::detail::marks(&c, mu, &zone, junction, &fi, &region, &drawn_states);
-        }
-        for side in [1.0, -1.0] {
-            let flip = |p: DVec2| mm(DVec2::new(side * p.x, p.y));
-            let edge = rec.draw(
-                "the outline the undercut removed: the involute to r_b, the radial line",
-                Item::Polyline {
-                    points: uncut.iter().map(|p| flip(*p)).collect(),
-                    closed: false,
-                },
-                Role::Construction,
-                &[],
-            );
-            let outline: Vec<DVec2> = region.iter().map(|p| flip(*p)).collect();
-            let strokes = crate::geom::hatch(&outline, spacing, side * PI / 4.0)
-                .map_err(|e| GearError::Construction(format!("the undercut's hatching: {e}")))?;
-            for stroke in strokes {
-                rec.draw(
-                    "hatching of the undercut",
-                    Item::Segment(stroke),
-                    Role::Hatch,
-                    &[edge],
-                );
-            }
-        }
-    }
-    // The tip thickness: the chord between the two flanks' tip points, read with a ruler.
-    let tip = flank
-        .iter()
-        .find(|t| (t.q - st.q_a).abs() <= 1e-12 * c.module)
-        .map_or(c.involute_at(st.q_a), |t| t.at);
-    let tip_l = DVec2::new(-tip.x, tip.y);
-    let tip_chord = rec.measure(mm(tip_l), mm(tip));
-    let sa = chord_to_arc(tip_chord.value, ra);
+        super::undercut::undercut(
+            &mut rec,
+            (&c, mu),
+            &lost,
+            (junction, &fi, fil_to),
+            &drawn_states,
+        )?
+    } else {
+        (None, Vec::new())
+    };
+    let (tip_chord, sa) = tip_reading(&mut rec, &c, &flank, mu);
     let pointed = sa < MIN_TIP * c.module;
-    rec.draw(
-        "s_a: the tip chord",
-        Item::Dimension {
-            from: mm(tip_l),
-            to: mm(tip),
-            offset: 4.0,
-        },
-        Role::Dimension,
-        &[],
-    );
     // The drawn polyline against the exact envelope, piece by piece.
-    let (_, qi, qf) = c.junction();
-    let real = |t: &Touch| match t.piece {
-        Piece::Flank => t.q >= qi - 1e-12 * c.module && t.q <= st.q_a + 1e-12 * c.module,
-        Piece::Fillet => t.q >= qf - 1e-12 * c.module,
-        Piece::Root => t.q >= st.q_space - 1e-12 * c.module,
-    };
-    let twin = |piece: Piece, q: f64| match piece {
-        Piece::Flank => c.involute_at(q),
-        Piece::Fillet => c.trochoid_at(q),
-        Piece::Root => c.root_at(q),
-    };
-    let mut deviation: f64 = 0.0;
-    let (mut sum, mut count) = (0.0, 0usize);
-    for list in [&flank, &fillet, &root] {
-        let kept: Vec<&Touch> = list.iter().filter(|t| real(t)).collect();
-        for w in kept.windows(2) {
-            let curve = curve_through(&[*w[0], *w[1]]);
-            let mut worst: f64 = 0.0;
-            for k in 1..16 {
-                let q = w[0].q + (w[1].q - w[0].q) * f64::from(k) / 16.0;
-                let e = twin(w[0].piece, q);
-                let d = curve
-                    .windows(2)
-                    .map(|p| Segment::new(p[0], p[1]).distance_to(e))
-                    .fold(f64::INFINITY, f64::min);
-                worst = worst.max(d);
-            }
-            deviation = deviation.max(worst);
-            sum += worst;
-            count += 1;
-        }
-    }
-    let deviation_mean = if count > 0 { sum / count as f64 } else { 0.0 };
+    let (deviation, deviation_mean) = deviations(&c, [&flank, &fillet, &root]);
     let touch_error = touches
         .iter()
-        .map(|t| (t.at - twin(t.piece, t.q)).length())
+        .map(|t| (t.at - twin(&c, t.piece, t.q)).length())
         .fold(0.0, f64::max);
     Ok(Generation {
         cutting: c,
@@ -482,7 +214,7 @@ pub fn generate(
         tip_chord,
         sa,
         pointed,
-        pitch_reading: (st_read, et_read),
+        pitch_reading,
         sb,
         deviation,
         deviation_mean,
@@ -498,14 +230,274 @@ impl Generation {
     }
 }
 
-/// The largest ГОСТ 2.302 enlargement n:1 that draws `size` (m) at most [`DETAIL_MM`] wide,
-/// as μ_l = 0.001/n m/mm; `None` when even 2:1 draws it wider.
-fn detail_scale(size: f64) -> Option<Scale> {
-    ENLARGEMENTS
+/// The radius of the tooth's axis and the circles r, r_b, r_a, r_f of `c` over three
+/// pitches about it, each named at its left end, clear of the rack positions.
+fn circles(rec: &mut Recorder, c: &Cutting, mu: f64, pitch: f64) {
+    let (r, rb, ra, rf) = (c.r(), c.rb(), c.ra, c.rf());
+    let o = rec.draw(
+        "the radius of the tooth's axis",
+        Item::Segment(Segment::new(
+            DVec2::new(0.0, rf / mu - 2.0),
+            DVec2::new(0.0, ra / mu + 2.0),
+        )),
+        Role::Axis,
+        &[],
+    );
+    for (radius, name) in [(r, "r"), (rb, "r_b"), (ra, "r_a"), (rf, "r_f")] {
+        let arc = crate::geom::Arc {
+            center: DVec2::ZERO,
+            radius: radius / mu,
+            start: PI / 2.0 - 1.5 * pitch,
+            sweep: 3.0 * pitch,
+        };
+        let id = rec.draw(
+            format!("circle {name}"),
+            Item::Arc(arc),
+            if name == "r" {
+                Role::Axis
+            } else {
+                Role::Construction
+            },
+            &[o],
+        );
+        // Named at its left end, clear of the rack positions.
+        let end = arc.end();
+        rec.label(id, name, end, DVec2::new(-1.0, 0.0));
+    }
+}
+
+/// The rack's states traced: `steps` equal ones over the span, and the marks of the device
+/// (the flank's end, the tip, the rounding under P, and the contact passing N — the foot of
+/// O on the line of action — when the flank reaches it), sorted; and that state at N.
+fn rack_states(c: &Cutting, steps: usize) -> (Vec<f64>, f64) {
+    let st = c.states();
+    let r = c.r();
+    let (lo, hi) = c.span();
+    let mut states: Vec<f64> = (0..steps)
+        .map(|i| lo + (hi - lo) * i as f64 / (steps - 1) as f64)
+        .collect();
+    // The marks of the device: the flank's end, the tip, the rounding under P, and the
+    // contact passing N (the foot of O on the line of action) when the flank reaches it.
+    let q_n = st.q_p - r * c.rack.alpha.tan();
+    let marks = [st.q_j, st.q_a, st.q_bottom, q_n];
+    for q in marks.into_iter().filter(|q| *q >= st.q_j) {
+        if !states.iter().any(|s| (s - q).abs() <= 1e-12 * c.module) {
+            states.push(q);
+        }
+    }
+    states.sort_by(f64::total_cmp);
+    (states, q_n)
+}
+
+/// The touching points by piece, each in the order of the rack's states: the flank (the
+/// involute proper, from where the contact passes N at `q_n`: beyond N the flank traces the
+/// branch the fillet cuts away), the fillet and the root.
+fn pieces(c: &Cutting, touches: &[Touch], q_n: f64) -> [Vec<Touch>; 3] {
+    let by = |piece: Piece| -> Vec<Touch> {
+        let mut v: Vec<Touch> = touches
+            .iter()
+            .copied()
+            .filter(|t| t.piece == piece)
+            .collect();
+        v.sort_by(|a, b| a.q.total_cmp(&b.q));
+        v
+    };
+    let flank: Vec<Touch> = by(Piece::Flank)
+        .into_iter()
+        .filter(|t| t.q >= q_n - 1e-12 * c.module)
+        .collect();
+    let fillet = by(Piece::Fillet);
+    let root = by(Piece::Root);
+    [flank, fillet, root]
+}
+
+/// The tooth (wheel frame, m) drawn, and its neighbours cut alike a pitch either side, as
+/// the device's paper shows three teeth: the spaces either side of the tooth.
+fn draw_teeth(rec: &mut Recorder, tooth: &[DVec2], pitch: f64, mu: f64) {
+    let mm = |p: DVec2| p / mu;
+    rec.draw(
+        "the tooth: the envelope of the rack positions",
+        Item::Polyline {
+            points: tooth.iter().map(|p| mm(*p)).collect(),
+            closed: false,
+        },
+        Role::Result,
+        &[],
+    );
+    for turn in [pitch, -pitch] {
+        rec.draw(
+            "the neighbouring tooth",
+            Item::Polyline {
+                points: tooth.iter().map(|p| mm(rotate(*p, turn))).collect(),
+                closed: false,
+            },
+            Role::Result,
+            &[],
+        );
+    }
+}
+
+/// The report form's readings: the chords where the drawn flanks (`right`, the tooth's right
+/// half, m) cross the pitch and base circles, read with a ruler and turned into arcs — S_t
+/// and the space e_t (from the tooth's right flank to its right neighbour's left flank) on
+/// the pitch circle, S_b on the base circle when it lies outside the root circle.
+fn readings(
+    rec: &Recorder,
+    c: &Cutting,
+    right: &[DVec2],
+    pitch: f64,
+    mu: f64,
+) -> ((f64, f64), Option<f64>) {
+    let mm = |p: DVec2| p / mu;
+    let (r, rb, rf) = (c.r(), c.rb(), c.rf());
+    let mirror = |p: DVec2| DVec2::new(-p.x, p.y);
+    let across = |radius: f64| {
+        let k = circle_crossing(right, radius)?;
+        Some(chord_to_arc(
+            rec.measure(mm(mirror(k)), mm(k)).value,
+            radius,
+        ))
+    };
+    let st_read = across(r).unwrap_or(0.0);
+    let et_read = circle_crossing(right, r).map_or(0.0, |k| {
+        let next = rotate(mirror(k), -pitch);
+        chord_to_arc(rec.measure(mm(k), mm(next)).value, r)
+    });
+    let sb = if rb > rf { across(rb) } else { None };
+    ((st_read, et_read), sb)
+}
+
+/// The tip thickness: the chord between the two flanks' tip points (the flank's touching
+/// point at the tip, else the involute's), read with a ruler and dimensioned, and s_a from
+/// it, m.
+fn tip_reading(rec: &mut Recorder, c: &Cutting, flank: &[Touch], mu: f64) -> (Measured, f64) {
+    let mm = |p: DVec2| p / mu;
+    let st = c.states();
+    let ra = c.ra;
+    let tip = flank
         .iter()
-        .rev()
-        .find(|n| size * 1e3 * *n <= DETAIL_MM)
-        .and_then(|n| Scale::new(1e-3 / n, crate::scale::Quantity::Length))
+        .find(|t| (t.q - st.q_a).abs() <= 1e-12 * c.module)
+        .map_or(c.involute_at(st.q_a), |t| t.at);
+    let tip_l = DVec2::new(-tip.x, tip.y);
+    let tip_chord = rec.measure(mm(tip_l), mm(tip));
+    let sa = chord_to_arc(tip_chord.value, ra);
+    rec.draw(
+        "s_a: the tip chord",
+        Item::Dimension {
+            from: mm(tip_l),
+            to: mm(tip),
+            offset: 4.0,
+        },
+        Role::Dimension,
+        &[],
+    );
+    (tip_chord, sa)
+}
+
+/// Every rack position at its state in `states` drawn in the wheel's frame (each a group of
+/// its own, the `drawn` ones numbered at the outer end of their outline) and the points
+/// where its normal through P touches the envelope, with the envelope's tangent there.
+fn trace(rec: &mut Recorder, c: &Cutting, states: &[f64], drawn: &[usize], mu: f64) -> Vec<Touch> {
+    let r = c.r();
+    let mm = |p: DVec2| p / mu;
+    let mut touches = Vec::new();
+    for (i, &q) in states.iter().enumerate() {
+        rec.set_group(i as u32 + 1);
+        let turn = q / r;
+        let mut last = None;
+        for run in outline_runs(c, q) {
+            let pts: Vec<DVec2> = run.into_iter().map(|p| mm(rotate(p, turn))).collect();
+            last = pts.last().copied();
+            rec.draw(
+                format!("rack position {}", i + 1),
+                Item::Polyline {
+                    points: pts,
+                    closed: false,
+                },
+                Role::Construction,
+                &[],
+            );
+        }
+        // A drawn position's number at the outer end of its outline, out of the blank.
+        if let (Some(k), Some(end)) = (drawn.iter().position(|d| *d == i), last) {
+            let id = rec.draw(
+                format!("the number of rack position {}", i + 1),
+                Item::Text(end),
+                Role::Dimension,
+                &[],
+            );
+            rec.label(id, (k + 1).to_string(), end, end.normalize_or_zero());
+        }
+        for (piece, k) in touching(c, q) {
+            let at = mm(rotate(k, turn));
+            rec.draw(
+                format!("rack position {}: its normal through P touches", i + 1),
+                Item::Point(at),
+                Role::Construction,
+                &[],
+            );
+            // The normal through P is the envelope's normal: its tangent is ⊥ it (the
+            // flank's own direction where it touches at P itself).
+            let flank = DVec2::new(-c.rack.alpha.sin(), c.rack.alpha.cos());
+            let normal = k - DVec2::new(0.0, r);
+            let tangent = normal.try_normalize().map_or(flank, DVec2::perp);
+            touches.push(Touch {
+                q,
+                piece,
+                at: at * mu,
+                tangent: rotate(tangent, turn),
+            });
+        }
+    }
+    rec.set_group(0);
+    touches
+}
+
+/// The exact envelope of `c` at the state `q` of the rack's `piece`, m.
+fn twin(c: &Cutting, piece: Piece, q: f64) -> DVec2 {
+    match piece {
+        Piece::Flank => c.involute_at(q),
+        Piece::Fillet => c.trochoid_at(q),
+        Piece::Root => c.root_at(q),
+    }
+}
+
+/// The drawn tooth (the French curve through each piece's touching points: the flank, the
+/// fillet, the root) against the exact envelope of `c` between them: the largest distance
+/// and the mean of each segment's largest, m. Only the points on the envelope's real part
+/// count (the flank from the junction to the tip, the fillet below it, the root to the
+/// space's centre).
+fn deviations(c: &Cutting, pieces: [&[Touch]; 3]) -> (f64, f64) {
+    let st = c.states();
+    let (_, qi, qf) = c.junction();
+    let real = |t: &Touch| match t.piece {
+        Piece::Flank => t.q >= qi - 1e-12 * c.module && t.q <= st.q_a + 1e-12 * c.module,
+        Piece::Fillet => t.q >= qf - 1e-12 * c.module,
+        Piece::Root => t.q >= st.q_space - 1e-12 * c.module,
+    };
+    let mut deviation: f64 = 0.0;
+    let (mut sum, mut count) = (0.0, 0usize);
+    for list in pieces {
+        let kept: Vec<&Touch> = list.iter().filter(|t| real(t)).collect();
+        for w in kept.windows(2) {
+            let curve = curve_through(&[*w[0], *w[1]]);
+            let mut worst: f64 = 0.0;
+            for k in 1..16 {
+                let q = w[0].q + (w[1].q - w[0].q) * f64::from(k) / 16.0;
+                let e = twin(c, w[0].piece, q);
+                let d = curve
+                    .windows(2)
+                    .map(|p| Segment::new(p[0], p[1]).distance_to(e))
+                    .fold(f64::INFINITY, f64::min);
+                worst = worst.max(d);
+            }
+            deviation = deviation.max(worst);
+            sum += worst;
+            count += 1;
+        }
+    }
+    let deviation_mean = if count > 0 { sum / count as f64 } else { 0.0 };
+    (deviation, deviation_mean)
 }
 
 /// The indices of `count` of `n` items spread evenly, the first and the last among them

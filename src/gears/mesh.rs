@@ -7,9 +7,9 @@
 //! operating circle; ε′ = B₁B₂/p_b read off the drawing. Beside it the diagram of the
 //! specific sliding λ₁, λ₂ along N₁N₂.
 
-use super::involute::{compass_involute, involute_point, origin_angle};
+use super::involute::{compass_involute, involute_point, origin_angle, CompassInvolute};
 use super::{Cutting, GearError, Pair};
-use crate::construct::{Compass, Context, Figure, Item, Measured, Pick, Recorder, Role};
+use crate::construct::{Compass, Context, Figure, Item, Measured, Pick, Recorder, Role, StepId};
 use crate::geom::{rotate, Arc, Circle, DVec2, Line, Segment};
 use crate::scale::Scale;
 use std::f64::consts::TAU;
@@ -67,40 +67,12 @@ pub struct SlidingPoint {
 pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, GearError> {
     let mu = scale.value();
     let mm = |v: f64| v / mu;
-    let cons = |e: crate::construct::ConstructionError| GearError::Construction(e.to_string());
     let mut rec = Recorder::in_context("meshing picture", scale, ctx);
     let aw = pair.alpha_w;
     // 1. The line of centres: O₁ below, O₂ above at a_w.
     let o1 = DVec2::ZERO;
     let o2 = DVec2::new(0.0, mm(pair.a_w));
-    let j1 = rec.draw(
-        "O₁",
-        Item::Joint {
-            at: o1,
-            fixed: true,
-        },
-        Role::Given,
-        &[],
-    );
-    rec.label(j1, "O_1", o1, DVec2::new(-1.0, -0.3));
-    rec.keep_label_within(j1, NAME_WITHIN_MM);
-    let j2 = rec.draw(
-        "O₂",
-        Item::Joint {
-            at: o2,
-            fixed: true,
-        },
-        Role::Given,
-        &[],
-    );
-    rec.label(j2, "O_2", o2, DVec2::new(-1.0, 0.3));
-    rec.keep_label_within(j2, NAME_WITHIN_MM);
-    rec.draw(
-        "the line of centres O₁O₂",
-        Item::Segment(Segment::new(o1, o2)),
-        Role::Axis,
-        &[j1, j2],
-    );
+    line_of_centres(&mut rec, o1, o2);
     let a_w = rec.measure(o1, o2);
     // 2. The operating circles and the pole P.
     let p = DVec2::new(0.0, mm(pair.rw[0]));
@@ -178,6 +150,100 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         &[n2id],
     );
     let g = rec.measure(n1, n2);
+    // 6–7. The circles of both wheels, the involute of wheel 1 through P by the compass.
+    let ci = circles_and_involute(&mut rec, pair, mu, [o1, o2], p)?;
+    // 8–9. Three teeth of each wheel, the tooth of each through P.
+    teeth(&mut rec, pair, mu, [o1, o2], p)?;
+    // 10. The practical line of action: the tip circles cut N–N.
+    let ([b1, b2], [b1id, b2id]) = practical_line(&mut rec, pair, mu, (p, d), [o1, o2])?;
+    let ab = rec.measure(b1, b2);
+    // 11. The working portions: the flank of each wheel through P from the circle through
+    // the far end of B₁B₂ to its tip.
+    working_portions(&mut rec, pair, mu, p, [[o1, b1], [o2, b2]]);
+    // 12. The arc of action on the operating circle of wheel 1: the flank through B₁ and
+    // through B₂ cut r_w1.
+    let rb1 = mm(pair.rb[0]);
+    let rot = |b: DVec2| ((b - n1).dot(d) - (p - n1).dot(d)) / rb1;
+    let (d1, d2) = (rotate(p - o1, rot(b1)), rotate(p - o1, rot(b2)));
+    let arc = rec.draw(
+        "the arc of action on r_w1",
+        Item::Arc(Arc::between(o1, mm(pair.rw[0]), d1, d2)),
+        Role::Result,
+        &[b1id, b2id],
+    );
+    let _ = arc;
+    let eps = ab.value / pair.p_b;
+    let sliding = sliding_diagram(
+        pair,
+        scale,
+        ctx,
+        g.value,
+        [b1, b2].map(|b| (b - n1).dot(d)),
+        (p - n1).dot(d),
+    );
+    let (figure_s, lambda) = sliding?;
+    Ok(Meshing {
+        scale,
+        figure: rec.finish(),
+        sliding: figure_s,
+        g,
+        ab,
+        a_w,
+        eps,
+        compass: (ci.deviation * mu, ci.arc_minus_chord * mu),
+        lambda,
+    })
+}
+
+/// Step 1 of the meshing picture: the centres O₁, O₂ as fixed joints and the line of centres.
+fn line_of_centres(rec: &mut Recorder, o1: DVec2, o2: DVec2) {
+    let j1 = rec.draw(
+        "O₁",
+        Item::Joint {
+            at: o1,
+            fixed: true,
+        },
+        Role::Given,
+        &[],
+    );
+    rec.label(j1, "O_1", o1, DVec2::new(-1.0, -0.3));
+    rec.keep_label_within(j1, NAME_WITHIN_MM);
+    let j2 = rec.draw(
+        "O₂",
+        Item::Joint {
+            at: o2,
+            fixed: true,
+        },
+        Role::Given,
+        &[],
+    );
+    rec.label(j2, "O_2", o2, DVec2::new(-1.0, 0.3));
+    rec.keep_label_within(j2, NAME_WITHIN_MM);
+    rec.draw(
+        "the line of centres O₁O₂",
+        Item::Segment(Segment::new(o1, o2)),
+        Role::Axis,
+        &[j1, j2],
+    );
+}
+
+/// Steps 6–7 of the meshing picture: every circle of both wheels (centres `o`, picture mm)
+/// and the involute of wheel 1 through the pole `p` by the compass (N₁P in 4 parts).
+fn circles_and_involute(
+    rec: &mut Recorder,
+    pair: &Pair,
+    mu: f64,
+    o: [DVec2; 2],
+    p: DVec2,
+) -> Result<CompassInvolute, GearError> {
+    let mm = |v: f64| v / mu;
+    let circle = |c: DVec2, r: f64| {
+        Item::Circle(Circle {
+            center: c,
+            radius: r,
+        })
+    };
+    let [o1, o2] = o;
     // 6. The circles of both wheels.
     for (i, c) in [o1, o2].into_iter().enumerate() {
         for r in [pair.rb[i], pair.r[i], pair.ra[i], pair.rf[i]] {
@@ -208,7 +274,20 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         Role::Construction,
         &[],
     );
-    // 8–9. Three teeth of each wheel, the tooth of each through P.
+    Ok(ci)
+}
+
+/// Steps 8–9 of the meshing picture: three teeth of each wheel (centres `o`, picture mm),
+/// generated by the basic rack, the flank of each through the pole `p`.
+fn teeth(
+    rec: &mut Recorder,
+    pair: &Pair,
+    mu: f64,
+    o: [DVec2; 2],
+    p: DVec2,
+) -> Result<(), GearError> {
+    let mm = |v: f64| v / mu;
+    let [o1, o2] = o;
     for (i, c) in [o1, o2].into_iter().enumerate() {
         let x = pair.spec.x[i];
         let cut = Cutting::with_tip(
@@ -218,10 +297,8 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
             pair.spec.rack,
             pair.ra[i],
         )?;
-        let foot = if i == 0 { n1 } else { n2 };
         // The flank through P: the involute whose origin is N rolled back by NP.
         let theta = origin_angle(c, mm(pair.rb[i]), p, true).unwrap_or(0.0);
-        let _ = foot;
         let turn = theta - cut.theta0();
         let mut right = cut.profile(12);
         right.iter_mut().for_each(|q| *q /= mu);
@@ -241,7 +318,21 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
             &[],
         );
     }
-    // 10. The practical line of action: the tip circles cut N–N.
+    Ok(())
+}
+
+/// Step 10 of the meshing picture: the practical line of action B₁B₂, where the tip circles
+/// (about `o`, picture mm) cut N–N (through the pole `p` along `d`); B₁, B₂ and their steps.
+fn practical_line(
+    rec: &mut Recorder,
+    pair: &Pair,
+    mu: f64,
+    (p, d): (DVec2, DVec2),
+    o: [DVec2; 2],
+) -> Result<([DVec2; 2], [StepId; 2]), GearError> {
+    let mm = |v: f64| v / mu;
+    let cons = |e: crate::construct::ConstructionError| GearError::Construction(e.to_string());
+    let [o1, o2] = o;
     let line = Line::new(p, d).ok_or_else(|| GearError::Construction("N–N".into()))?;
     let (b1, _, b1id) = rec
         .meet_line_circle(
@@ -277,9 +368,15 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         Role::Result,
         &[b1id, b2id],
     );
-    let ab = rec.measure(b1, b2);
-    // 11. The working portions: the flank of each wheel through P from the circle through
-    // the far end of B₁B₂ to its tip.
+    Ok(([b1, b2], [b1id, b2id]))
+}
+
+/// Step 11 of the meshing picture: the working portion of each wheel's flank through the
+/// pole `p`, from the circle through the far end of B₁B₂ to the tip (each wheel's centre and
+/// that end, picture mm).
+fn working_portions(rec: &mut Recorder, pair: &Pair, mu: f64, p: DVec2, ends: [[DVec2; 2]; 2]) {
+    let mm = |v: f64| v / mu;
+    let [[o1, b1], [o2, b2]] = ends;
     for (i, c) in [o1, o2].into_iter().enumerate() {
         let rb = mm(pair.rb[i]);
         let theta = origin_angle(c, rb, p, true).unwrap_or(0.0);
@@ -298,39 +395,6 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
             &[],
         );
     }
-    // 12. The arc of action on the operating circle of wheel 1: the flank through B₁ and
-    // through B₂ cut r_w1.
-    let rb1 = mm(pair.rb[0]);
-    let rot = |b: DVec2| ((b - n1).dot(d) - (p - n1).dot(d)) / rb1;
-    let (d1, d2) = (rotate(p - o1, rot(b1)), rotate(p - o1, rot(b2)));
-    let arc = rec.draw(
-        "the arc of action on r_w1",
-        Item::Arc(Arc::between(o1, mm(pair.rw[0]), d1, d2)),
-        Role::Result,
-        &[b1id, b2id],
-    );
-    let _ = arc;
-    let eps = ab.value / pair.p_b;
-    let sliding = sliding_diagram(
-        pair,
-        scale,
-        ctx,
-        g.value,
-        [b1, b2].map(|b| (b - n1).dot(d)),
-        (p - n1).dot(d),
-    );
-    let (figure_s, lambda) = sliding?;
-    Ok(Meshing {
-        scale,
-        figure: rec.finish(),
-        sliding: figure_s,
-        g,
-        ab,
-        a_w,
-        eps,
-        compass: (ci.deviation * mu, ci.arc_minus_chord * mu),
-        lambda,
-    })
 }
 
 /// The roll angle of an involute of `rb` at the radius `ry`.

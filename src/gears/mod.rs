@@ -38,6 +38,7 @@ mod train_notes;
 mod train_rank;
 mod train_study;
 mod triangles;
+mod undercut;
 
 pub use detail::{DetailMark, DETAIL_NAME_WITHIN_MM};
 pub use differential::Differential;

@@ -24,18 +24,20 @@ use super::spec::Drive;
 use super::twin::{line_of_action, Pair, PairKind, Reaction};
 use crate::construct::{ConstructionError, Figure, Item, Recorder, Role};
 use crate::geom::{Circle, DVec2, Segment};
-use crate::linkage::{draw_links, Built, GroupPairs, Part, PlanSetup};
+use crate::linkage::{draw_links, Built, Part, PlanSetup};
 use crate::scale::Scale;
 use std::f64::consts::{PI, TAU};
 
 mod detail;
 mod driver;
 mod equations;
+mod kinds;
 mod polygon;
 mod scheme;
 pub use detail::PolygonDetail;
 use driver::driver;
 pub use equations::{MomentEquation, MomentTerm, Unknown};
+use kinds::Work;
 use polygon::Polygon;
 use scheme::{show_reaction, Scheme};
 
@@ -111,6 +113,16 @@ pub struct Board<'a> {
 }
 
 impl Board<'_> {
+    /// Point `k` of the position on the drawing, mm.
+    fn point(&self, k: usize) -> DVec2 {
+        self.setup.built.p[k]
+    }
+
+    /// The direction of link `l` on the drawing.
+    fn dir(&self, l: usize) -> DVec2 {
+        DVec2::from_angle(self.setup.built.angle[l])
+    }
+
     /// The crank's sense, +1 counter-clockwise.
     fn sense(&self) -> f64 {
         self.setup.w1.signum()
@@ -182,7 +194,6 @@ pub fn polygons(
     let reach = crate::forces::reach(&b.p) * board.setup.mu_l.value();
     let scale = crate::forces::force_scale(loads, reach);
     let mut groups = Vec::new();
-    let dir = |l: usize| DVec2::from_angle(b.angle[l]);
     for g in prog.groups().rev() {
         let (group, [i, j]) = (g.group, g.links);
         let title = format!("group {} ({}, {})", group + 1, i, j);
@@ -205,173 +216,10 @@ pub fn polygons(
             board.mu_f,
             &board.setup.ctx,
         );
-        let p = |k: usize| b.p[k];
-        let err = |e| (group, e);
         let mut equations = Vec::new();
-        let reactions = match g.pairs {
-            GroupPairs::Rrr { a, c, joint } => {
-                let (pa, pc, pb) = (p(a), p(c), p(joint));
-                let (oa, oc) = (prog.owner(a), prog.owner(c));
-                sch.drain();
-                let tau_i = sch.moments(pb, &li) / sch.length(pa, pb);
-                let t = sch.tangential(pa, pb, (oa, i), tau_i);
-                equations.push(sch.equation(joint, &[i], t));
-                let tau_j = sch.moments(pb, &lj) / sch.length(pc, pb);
-                let t = sch.tangential(pc, pb, (oc, j), tau_j);
-                equations.push(sch.equation(joint, &[j], t));
-                let t_a = (pb - pa).normalize().perp() * tau_i;
-                let t_c = (pb - pc).normalize().perp() * tau_j;
-                let p0 = pol.tip;
-                let p1 = pol.lay(&format!("R^τ_{{{oa}-{i}}}"), t_a);
-                let pi = pol.lay_all(&li);
-                pol.lay_all(&lj);
-                let pbj = pol.tip;
-                let e = pol.lay(&format!("R^τ_{{{oc}-{j}}}"), t_c);
-                let h = pol
-                    .close(("∥ CB", e, pb - pc), ("∥ AB", p0, pb - pa))
-                    .map_err(err)?;
-                let r_a = pol.read(&reaction_name(oa, i), h, p1);
-                let r_c = pol.read(&reaction_name(oc, j), pbj, h);
-                let r_ji = pol.read(&reaction_name(j, i), pi, h);
-                vec![
-                    revolute(oa, i, a, r_a),
-                    revolute(oc, j, c, r_c),
-                    revolute(i, j, joint, -r_ji),
-                ]
-            }
-            GroupPairs::Rrp {
-                a,
-                guide: og,
-                joint,
-            } => {
-                let (pa, pb) = (p(a), p(joint));
-                let oa = prog.owner(a);
-                sch.drain();
-                let tau_i = sch.moments(pb, &li) / sch.length(pa, pb);
-                let t = sch.tangential(pa, pb, (oa, i), tau_i);
-                equations.push(sch.equation(joint, &[i], t));
-                let t_a = (pb - pa).normalize().perp() * tau_i;
-                let n_g = dir(j).perp();
-                let p0 = pol.tip;
-                let p1 = pol.lay(&format!("R^τ_{{{oa}-{i}}}"), t_a);
-                let pi = pol.lay_all(&li);
-                let e = pol.lay_all(&lj);
-                let h = pol
-                    .close(("⊥ guide", e, n_g), ("∥ AB", p0, pb - pa))
-                    .map_err(err)?;
-                let r_a = pol.read(&reaction_name(oa, i), h, p1);
-                let r_g = pol.read(&reaction_name(og, j), e, h);
-                let r_ji = pol.read(&reaction_name(j, i), pi, h);
-                sch.drain();
-                let k = sch.moments(pb, &lj);
-                let s = offset(r_g, n_g, k, scale);
-                equations.extend(sch.arm_equation(joint, j, (og, j), r_g.dot(n_g), s));
-                vec![
-                    revolute(oa, i, a, r_a),
-                    prismatic(og, j, joint, j, r_g, s),
-                    revolute(i, j, joint, -r_ji),
-                ]
-            }
-            GroupPairs::Rpr { a, c } => {
-                let (pa, pc) = (p(a), p(c));
-                let (oa, oc) = (prog.owner(a), prog.owner(c));
-                let u = dir(j);
-                let n = u.perp();
-                sch.drain();
-                let k_i = sch.moments(pa, &li);
-                let k_j = sch.moments(pc, &lj);
-                let known = sch.drain();
-                // The inner reaction N·n brought to A: its arm about C is measured.
-                let probe = Load::force(j, LoadKind::Reaction, reaction_name(i, j), n, a);
-                let arm = sch.moment(pc, &probe);
-                let big_n = -(k_j + k_i) / arm;
-                equations.push(sch.normal(c, [i, j], known, big_n));
-                let p0 = pol.tip;
-                let pi = pol.lay_all(&li);
-                let pj = pol.lay_all(&lj);
-                let q = pi - n * big_n / board.mu_f.value();
-                pol.rec.draw(
-                    "R_{ij} laid from the end of i's loads",
-                    Item::Segment(Segment::new(pi, q)),
-                    Role::Construction,
-                    &[],
-                );
-                let r_ji = pol.read(&reaction_name(j, i), pi, q);
-                let r_oj = pol.read(&reaction_name(oc, j), pj, q);
-                let r_oi = pol.read(&reaction_name(oa, i), q, p0);
-                let r_ij = -r_ji;
-                vec![
-                    revolute(oa, i, a, r_oi),
-                    revolute(oc, j, c, r_oj),
-                    prismatic(i, j, a, j, r_ij, offset(r_ij, n, -k_i, scale)),
-                ]
-            }
-            GroupPairs::Prp {
-                gi: ci,
-                gj: cj,
-                joint,
-            } => {
-                let pb = p(joint);
-                let (n_i, n_j) = (dir(i).perp(), dir(j).perp());
-                let p0 = pol.tip;
-                let pi = pol.lay_all(&li);
-                let e = pol.lay_all(&lj);
-                let h = pol
-                    .close(("⊥ guide j", e, n_j), ("⊥ guide i", p0, n_i))
-                    .map_err(err)?;
-                let r_j = pol.read(&reaction_name(cj, j), e, h);
-                let r_i = pol.read(&reaction_name(ci, i), h, p0);
-                let r_ji = pol.read(&reaction_name(j, i), pi, h);
-                sch.drain();
-                let k_i = sch.moments(pb, &li);
-                let s_i = offset(r_i, n_i, k_i, scale);
-                equations.extend(sch.arm_equation(joint, i, (ci, i), r_i.dot(n_i), s_i));
-                let k_j = sch.moments(pb, &lj);
-                let s_j = offset(r_j, n_j, k_j, scale);
-                equations.extend(sch.arm_equation(joint, j, (cj, j), r_j.dot(n_j), s_j));
-                vec![
-                    prismatic(ci, i, joint, i, r_i, s_i),
-                    prismatic(cj, j, joint, j, r_j, s_j),
-                    revolute(i, j, joint, -r_ji),
-                ]
-            }
-            GroupPairs::Rpp {
-                a,
-                guide: og,
-                joint,
-            } => {
-                let (pa, pj_) = (p(a), p(joint));
-                let oa = prog.owner(a);
-                let (n_s, n_g) = (dir(i).perp(), dir(j).perp());
-                let p0 = pol.tip;
-                let pj = pol.lay_all(&lj);
-                let h = pol
-                    .close(("⊥ guide", pj, n_g), ("⊥ slide", p0, n_s))
-                    .map_err(err)?;
-                let r_g = pol.read(&reaction_name(og, j), pj, h);
-                let r_ij = pol.read(&reaction_name(i, j), h, p0);
-                pol.tip = h;
-                let q = pol.lay_all(&li);
-                let r_oi = pol.read(&reaction_name(oa, i), q, p0);
-                // The block about A: where the inner reaction acts on the slide.
-                sch.drain();
-                let k_i = sch.moments(pa, &li);
-                let s = offset(r_ij, n_s, -k_i, scale);
-                equations.extend(sch.arm_equation(a, i, (i, j), -r_ij.dot(n_s), s));
-                // Link j about its joint, with the inner reaction at its point.
-                let shift = dir(i) * s.unwrap_or(0.0);
-                let mut inner = Load::force(j, LoadKind::Reaction, reaction_name(i, j), r_ij, a);
-                inner.shift = shift;
-                let k_j = sch.moments(pj_, &lj) + sch.moment(pj_, &inner);
-                let s_g = offset(r_g, n_g, k_j, scale);
-                equations.extend(sch.arm_equation(joint, j, (og, j), r_g.dot(n_g), s_g));
-                vec![
-                    revolute(oa, i, a, r_oi),
-                    prismatic(og, j, joint, j, r_g, s_g),
-                    prismatic(i, j, a, i, r_ij, s),
-                ]
-            }
-        };
+        let reactions = Work(&mut sch, &mut pol, &li, &lj, [i, j], scale, &mut equations)
+            .reactions(g.pairs)
+            .map_err(|e| (group, e))?;
         // The reactions on earlier links become their loads.
         for r in &reactions[..2] {
             if r.pair.from != 0 {

@@ -1,0 +1,165 @@
+//! The bench's throughput rows past the methods' sweeps: the analytic kernel against its
+//! peer and its floor, the recorded construction and the force analysis (`kernel`); the
+//! plates, the PNGs, every scene's sheets, the whole project, the note and a batch
+//! (`drawing`). Each row is the best of its runs; times are never asserted.
+
+use super::*;
+
+/// The kernel's rows: the analytic sweep and single angles of the four-bar and the shaper
+/// (beside the `four-bar` crate's, when built with it), the libm floor, the recorded
+/// construction of a position, and the shaper's force analysis constructed and analytic.
+pub(super) fn kernel(
+    four_bar: &Subject,
+    shaper: &Subject,
+    reps: Reps,
+) -> Result<Vec<Throughput>, BenchError> {
+    let mut throughput = Vec::new();
+    let peer = peer::measure(four_bar, reps)?;
+    for s in [four_bar, shaper] {
+        let stem = &s.scene.stem;
+        let rate = sweep_rate(s, reps)?;
+        let against = match &peer {
+            Some(p) if s.scene.stem == four_bar.scene.stem => format!(
+                "; {:.2}× the `four-bar` crate's positions alone, same run",
+                rate / p.rate
+            ),
+            _ => String::new(),
+        };
+        throughput.push(Throughput {
+            name: format!("analytic {stem}"),
+            per_second: rate,
+            note: format!("one position: every point and link with dX/dφ₁, d²X/dφ₁², in sweeps of a turn at {TURN_STEPS} steps (sweep, 1 core){against}"),
+        });
+        throughput.push(Throughput {
+            name: format!("analytic {stem} (one angle)"),
+            per_second: kernel_rate(s, reps)?,
+            note: "the same, each angle solved on its own (solve_into, 1 core)".into(),
+        });
+    }
+    throughput.push(peer::row(peer.as_ref(), four_bar));
+    throughput.push(Throughput {
+        name: "libm floor four-bar".into(),
+        per_second: libm_floor_rate(reps),
+        note: "its transcendental and root calls alone: sin_cos + 4 sqrt".into(),
+    });
+    for s in [four_bar, shaper] {
+        throughput.push(Throughput {
+            name: format!("construction {}", s.scene.stem),
+            per_second: construction_rate(s, reps)?,
+            note: "one position: recorded compass construction + velocity plan + acceleration plan"
+                .into(),
+        });
+    }
+    let (constructed, analytic) = force_rates(shaper, reps)?;
+    throughput.push(Throughput {
+        name: format!("forces {} (construction)", shaper.scene.stem),
+        per_second: constructed,
+        note: "one position from its plans: the force polygons of every group and the driving link with measured arms, and Zhukovsky's lever".into(),
+    });
+    throughput.push(Throughput {
+        name: format!("forces {} (analytic)", shaper.scene.stem),
+        per_second: analytic,
+        note: "one position: the loads and one linear solve of every link's equilibrium (1 core)"
+            .into(),
+    });
+    Ok(throughput)
+}
+
+/// The drawing's rows: a plate of each kind built and written as SVG, the shaper's sheets as
+/// PNG, every scene's sheets as SVG and PNG, the whole project, the note and a batch.
+pub(super) fn drawing(
+    opts: &BenchOptions,
+    shaper: &Subject,
+    four_bar: &Subject,
+    reps: Reps,
+) -> Result<Vec<Throughput>, BenchError> {
+    let mut throughput = Vec::new();
+    for &(stem, kind) in PLATES {
+        let loaded;
+        let s = match [shaper, four_bar]
+            .into_iter()
+            .find(|s| s.scene.stem == stem)
+        {
+            Some(s) => s,
+            None => {
+                loaded = Subject::load(opts, stem)?;
+                &loaded
+            }
+        };
+        throughput.push(Throughput {
+            name: format!("plate {stem}/{}", kind.stem()),
+            per_second: 1.0 / plate_time(s, kind, reps)?,
+            note: "a fresh study::Session + sheets::build + plate::to_svg".into(),
+        });
+    }
+    let (png_seconds, sheets) = png_time(shaper, reps)?;
+    throughput.push(Throughput {
+        name: format!("png {} at {PNG_DPI} dpi", shaper.scene.stem),
+        per_second: 1.0 / png_seconds,
+        note: format!(
+            "every sheet of the scene ({sheets}), SVG → PNG in parallel, as `tmm render` writes them"
+        ),
+    });
+    // Every scene of the folder (a quick bench: the shaper alone), its whole set of sheets.
+    let files = if opts.quick {
+        vec![opts.scenes.join("shaper.toml")]
+    } else {
+        scene::files_in(&opts.scenes).map_err(|e| BenchError::Plate {
+            scene: opts.scenes.display().to_string(),
+            plate: "scenes".into(),
+            detail: e.to_string(),
+        })?
+    };
+    for file in files {
+        let scene = scene::load(&file)?;
+        let (seconds, sheets) = scene_time(&scene, reps)?;
+        let floor = stack_floor(&scene, reps)?;
+        let (parse, render) = (floor.parse_seconds(), floor.render_seconds());
+        let cores = rayon::current_num_threads();
+        throughput.push(Throughput {
+            name: format!("scene {} (svg+png)", scene.stem),
+            per_second: 1.0 / seconds,
+            note: format!(
+                "{:.0} ms: every sheet ({sheets}) of a fresh session as SVG and as PNG at {PNG_DPI} dpi, in memory, on all cores; usvg and resvg alone take {:.0} ms of one core (parse {:.0}, render {:.0}), {:.0} ms on {cores} core{} at best",
+                seconds * 1e3,
+                (parse + render) * 1e3,
+                parse * 1e3,
+                render * 1e3,
+                floor.on(cores) * 1e3,
+                if cores == 1 { "" } else { "s" }
+            ),
+        });
+    }
+    let (project_seconds, note_bytes) = project_time(shaper, reps)?;
+    throughput.push(Throughput {
+        name: format!("project {}", shaper.scene.stem),
+        per_second: 1.0 / project_seconds,
+        note: format!(
+            "the whole project in memory: every sheet ({sheets}) as SVG and PNG at {PNG_DPI} dpi, the PDF set and the explanatory note ({} kB) — `tmm render --format svg,png,pdf` and `tmm note`",
+            note_bytes / 1000
+        ),
+    });
+    let (composing, typesetting, pages) = rates::note_times(shaper, reps)?;
+    throughput.push(Throughput {
+        name: format!("note {}", shaper.scene.stem),
+        per_second: 1.0 / (composing + typesetting),
+        note: format!(
+            "the explanatory note alone ({pages} pages, ru, read to 0,5 mm): composed {:.0} ms (a fresh session, the sheets it shows, the Typst source and its figures), typeset {:.0} ms (the `typst` crate: layout and PDF) — `tmm note`",
+            composing * 1e3,
+            typesetting * 1e3
+        ),
+    });
+    let b = batch::batch_times(opts, reps)?;
+    throughput.push(Throughput {
+        name: format!("batch {} × {} (png)", shaper.scene.stem, b.variants),
+        per_second: 1.0 / b.seconds,
+        note: format!(
+            "`tmm batch` over constructions/variants/shaper.csv: every variant's sheets as PNG at {PNG_DPI} dpi and its task sheet, on all cores ({:.2} s per variant); its progress bar's {} updates drawn: {:.0} µs ({:.4} % of the batch)",
+            b.seconds / b.variants as f64,
+            b.variants,
+            b.bar_seconds * 1e6,
+            100.0 * b.bar_seconds / b.seconds
+        ),
+    });
+    Ok(throughput)
+}
