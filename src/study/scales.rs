@@ -171,7 +171,7 @@ fn two_sheet_room(kind: PlanKind, positions_mm2: f64) -> (DVec2, f64) {
 }
 
 /// `start` made finer along the round series while the largest of the plans `ks` fits `room`
-/// and all of them `area` mm².
+/// and all of them `area` mm², and `within` holds.
 fn plans_finer(
     poses: &PlanPoses,
     ks: &[usize],
@@ -179,10 +179,12 @@ fn plans_finer(
     kind: PlanKind,
     start: Scale,
     (room, area): (DVec2, f64),
+    within: impl Fn(Scale) -> bool,
 ) -> Scale {
     let largest = largest_plan(poses, ks, w1, kind);
-    let fits =
-        |&mu: &Scale| largest(mu).cmple(room).all() && plans_area(poses, ks, w1, kind, mu) <= area;
+    let fits = |&mu: &Scale| {
+        largest(mu).cmple(room).all() && plans_area(poses, ks, w1, kind, mu) <= area && within(mu)
+    };
     finest_fitting(start, start, Some, fits)
 }
 
@@ -237,31 +239,21 @@ impl<'s> Session<'s> {
     }
 
     /// The kinematic study's scales, decided once: μ_l ([`Session::scale_l`]); μ_v and μ_a the
-    /// scene's, else the crank pin's vector drawn about 80 mm and raised until the largest
-    /// typical plan fits `VECTOR_PLAN_ROOM` (a plan far larger takes its own,
-    /// [`Session::plan_scale`]) — and, on a study of two sheets ([`Session::kin_sheets`]), made
-    /// finer while the plans fit their sheet's room; the displacement chart's as the scene
-    /// gives them (the rest chosen for the chart by the study).
+    /// scene's, else the largest round ones the room allows: from the crank pin's vector drawn
+    /// about 80 mm, raised until the largest typical plan fits `VECTOR_PLAN_ROOM` (a plan far
+    /// larger takes its own, [`Session::plan_scale`]), then made finer while the plans fit the
+    /// room their sheet gives them ([`Session::kin_sheets`]: one sheet or two); the
+    /// displacement chart's as the scene gives them (the rest chosen for the chart by the
+    /// study).
     pub fn kin_scales(&self) -> Result<KinScales, StudyError> {
         self.caches.get::<Scales>((), || {
             let spec = self.spec();
             let (mut v, mut a) = self.textbook_plan_scales()?;
-            if self.kin_sheets()? == KinSheets::Two {
-                let (poses, w1) = (self.poses()?, self.w1()?);
-                let positions = positions_extent(&poses).labelled_size_at(self.scale_l()?);
-                let positions = positions.x * positions.y;
-                if spec.scale_v.is_none() {
-                    let kind = PlanKind::Velocity;
-                    let all: Vec<usize> = (0..poses.positions.len()).collect();
-                    let ks = typical_plans(&poses, &all, w1, kind, v);
-                    v = plans_finer(&poses, &ks, w1, kind, v, two_sheet_room(kind, positions));
-                }
-                if spec.scale_a.is_none() {
-                    let kind = PlanKind::Acceleration;
-                    let all = self.acceleration_positions()?;
-                    let ks = typical_plans(&poses, &all, w1, kind, a);
-                    a = plans_finer(&poses, &ks, w1, kind, a, two_sheet_room(kind, positions));
-                }
+            if spec.scale_v.is_none() {
+                v = self.largest_plans(PlanKind::Velocity, v, a)?;
+            }
+            if spec.scale_a.is_none() {
+                a = self.largest_plans(PlanKind::Acceleration, v, a)?;
             }
             Ok(KinScales {
                 l: self.scale_l()?,
@@ -269,6 +261,39 @@ impl<'s> Session<'s> {
                 a,
                 chart: self.chart_scales(),
             })
+        })
+    }
+
+    /// The free μ of the plans of `kind` (`v` or `a`, the other kept), made finer along the
+    /// round series while the typical plans fit the room their sheet gives them: on one sheet
+    /// `VECTOR_PLAN_ROOM` each and `PLANS_AREA_MM2` together, every drawing of the study
+    /// within [`ONE_SHEET_SHARE`] of the field; on two, [`two_sheet_room`].
+    fn largest_plans(&self, kind: PlanKind, v: Scale, a: Scale) -> Result<Scale, StudyError> {
+        let (poses, w1) = (self.poses()?, self.w1()?);
+        let (start, all) = match kind {
+            PlanKind::Velocity => (v, (0..poses.positions.len()).collect()),
+            PlanKind::Acceleration => (a, self.acceleration_positions()?),
+        };
+        let ks = typical_plans(&poses, &all, w1, kind, start);
+        Ok(match self.kin_sheets()? {
+            KinSheets::One => {
+                let room = (VECTOR_PLAN_ROOM, PLANS_AREA_MM2);
+                let within = |mu: Scale| {
+                    let (v, a) = match kind {
+                        PlanKind::Velocity => (mu, a),
+                        PlanKind::Acceleration => (v, mu),
+                    };
+                    self.drawn_mm2(v, a)
+                        .is_ok_and(|d| d <= ONE_SHEET_SHARE * A1_FIELD_MM2)
+                };
+                plans_finer(&poses, &ks, w1, kind, start, room, within)
+            }
+            KinSheets::Two => {
+                let l = self.scale_l()?;
+                let positions = positions_extent(&poses).labelled_size_at(l);
+                let room = two_sheet_room(kind, positions.x * positions.y);
+                plans_finer(&poses, &ks, w1, kind, start, room, |_| true)
+            }
         })
     }
 
@@ -311,38 +336,42 @@ impl<'s> Session<'s> {
     pub fn kin_sheets(&self) -> Result<KinSheets, StudyError> {
         self.caches.get::<Sheets>((), || {
             let (v, a) = self.textbook_plan_scales()?;
-            let (poses, w1, l) = (self.poses()?, self.w1()?, self.scale_l()?);
-            let positions = positions_extent(&poses).labelled_size_at(l);
-            let all: Vec<usize> = (0..poses.positions.len()).collect();
-            let velocity = typical_plans(&poses, &all, w1, PlanKind::Velocity, v);
-            let acc = self.acceleration_positions()?;
-            let acceleration = typical_plans(&poses, &acc, w1, PlanKind::Acceleration, a);
-            // No diagrams when there is nothing to chart or they are refused (the sheet says
-            // why in a line).
-            let charted = super::kinematics::refusable(
-                self.diagrams(l, self.chart_scales()),
-                &mut Vec::new(),
-            )?;
-            let diagrams = charted
-                .and_then(|d| {
-                    let second = d.second_figure.translated(d.second_at).bounds()?;
-                    let (lo, hi) = d.first_figure.bounds()?;
-                    Some((lo.min(second.0), hi.max(second.1)))
-                })
-                .map_or(0.0, |(lo, hi)| {
-                    let s = hi - lo + DVec2::splat(LABEL_MARGIN);
-                    s.x * s.y
-                });
-            let drawn = positions.x * positions.y
-                + plans_area(&poses, &velocity, w1, PlanKind::Velocity, v)
-                + plans_area(&poses, &acceleration, w1, PlanKind::Acceleration, a)
-                + diagrams;
-            Ok(if drawn > ONE_SHEET_SHARE * A1_FIELD_MM2 {
+            Ok(if self.drawn_mm2(v, a)? > ONE_SHEET_SHARE * A1_FIELD_MM2 {
                 KinSheets::Two
             } else {
                 KinSheets::One
             })
         })
+    }
+
+    /// The area the kinematic drawings take with the plans at `v` and `a`, mm²: the plan of
+    /// positions and the typical plans (their labelled sizes predicted from the analytic
+    /// twin) and the diagrams (constructed, as the sheet draws them).
+    fn drawn_mm2(&self, v: Scale, a: Scale) -> Result<f64, StudyError> {
+        let (poses, w1, l) = (self.poses()?, self.w1()?, self.scale_l()?);
+        let positions = positions_extent(&poses).labelled_size_at(l);
+        let all: Vec<usize> = (0..poses.positions.len()).collect();
+        let velocity = typical_plans(&poses, &all, w1, PlanKind::Velocity, v);
+        let acc = self.acceleration_positions()?;
+        let acceleration = typical_plans(&poses, &acc, w1, PlanKind::Acceleration, a);
+        // No diagrams when there is nothing to chart or they are refused (the sheet says
+        // why in a line).
+        let charted =
+            super::kinematics::refusable(self.diagrams(l, self.chart_scales()), &mut Vec::new())?;
+        let diagrams = charted
+            .and_then(|d| {
+                let second = d.second_figure.translated(d.second_at).bounds()?;
+                let (lo, hi) = d.first_figure.bounds()?;
+                Some((lo.min(second.0), hi.max(second.1)))
+            })
+            .map_or(0.0, |(lo, hi)| {
+                let s = hi - lo + DVec2::splat(LABEL_MARGIN);
+                s.x * s.y
+            });
+        Ok(positions.x * positions.y
+            + plans_area(&poses, &velocity, w1, PlanKind::Velocity, v)
+            + plans_area(&poses, &acceleration, w1, PlanKind::Acceleration, a)
+            + diagrams)
     }
 
     /// The field a single plan of `kind` has: `VECTOR_PLAN_ROOM`, or on two sheets
@@ -378,9 +407,13 @@ impl<'s> Session<'s> {
 mod tests {
     use super::*;
 
-    /// Whether the typical plans of `kind` at `mu` fit the two-sheet room.
-    fn fits_two_sheets(s: &Session<'_>, kind: PlanKind, mu: Scale) -> bool {
+    /// Whether the typical plans of `kind` at `mu` (the other kind at the session's μ) fit the
+    /// room of their sheet: on two sheets the room each sheet gives them; on one
+    /// `VECTOR_PLAN_ROOM` each, `PLANS_AREA_MM2` together, and every drawing of the study
+    /// within `ONE_SHEET_SHARE` of an A1 field.
+    fn fits_room(s: &Session<'_>, kind: PlanKind, mu: Scale) -> bool {
         let (poses, w1) = (s.poses().expect("poses"), s.w1().expect("ω₁"));
+        let sc = s.kin_scales().expect("scales");
         let all: Vec<usize> = match kind {
             PlanKind::Velocity => (0..poses.positions.len()).collect(),
             PlanKind::Acceleration => s.acceleration_positions().expect("positions"),
@@ -388,19 +421,33 @@ mod tests {
         let ks = typical_plans(&poses, &all, w1, kind, mu);
         let l = s.scale_l().expect("μ_l");
         let positions = positions_extent(&poses).labelled_size_at(l);
-        let (room, area) = two_sheet_room(kind, positions.x * positions.y);
+        let (room, area) = match s.kin_sheets().expect("sheets") {
+            KinSheets::Two => two_sheet_room(kind, positions.x * positions.y),
+            KinSheets::One => (VECTOR_PLAN_ROOM, PLANS_AREA_MM2),
+        };
+        let (v, a) = match kind {
+            PlanKind::Velocity => (mu, sc.a),
+            PlanKind::Acceleration => (sc.v, mu),
+        };
+        let one = s.kin_sheets().expect("sheets") == KinSheets::One;
+        let drawn = s.drawn_mm2(v, a).expect("drawn");
         largest_plan(&poses, &ks, w1, kind)(mu).cmple(room).all()
             && plans_area(&poses, &ks, w1, kind, mu) <= area
+            && (!one || drawn <= ONE_SHEET_SHARE * A1_FIELD_MM2)
     }
 
-    /// The linkage scenes whose kinematic drawings share one sheet with their tables keep the
-    /// textbook's μ_v and μ_a; the v-engine's (a plan of positions 314 × 201 mm and the
-    /// diagrams beside the twelve plans) take two sheets, and its free μ_v and μ_a are then
-    /// the finest round ones whose plans fit the room their sheet gives them — the velocity
-    /// plans at 0,05 (the pin's velocity 126 mm), the acceleration plans at 5 — one step finer
-    /// would not.
+    /// Every free μ_v and μ_a is the largest round scale the room allows: its typical plans
+    /// fit the room their sheet gives them and one step finer they would not. The linkage
+    /// scenes whose kinematic drawings share one sheet with their tables are at it from the
+    /// textbook's start (measured one step finer: the slider-crank's velocity plans at 0,01
+    /// take 223 000 mm², past `PLANS_AREA_MM2`, its acceleration plans at 0,4 are 167 mm tall;
+    /// the four-bar's at 0,005 and 0,05 are 199 × 178 and 241 × 209 mm; the tangent's at
+    /// 0,025 and 10 are 203 and 244 mm tall, past the 150 mm room). The v-engine's (a plan of
+    /// positions 314 × 201 mm and the diagrams beside the twelve plans) take two sheets, and
+    /// its free μ_v and μ_a are made finer than the textbook's — the velocity plans at 0,05
+    /// (the pin's velocity 126 mm), the acceleration plans at 5 — one step finer would not fit.
     #[test]
-    fn a_study_of_two_sheets_draws_its_free_plans_as_large_as_their_sheet_holds() {
+    fn every_free_plan_scale_is_the_largest_its_room_allows() {
         for name in ["slider-crank", "four-bar", "tangent"] {
             super::super::with_scene(name, |s| {
                 assert_eq!(s.kin_sheets().expect("sheets"), KinSheets::One, "{name}");
@@ -415,16 +462,21 @@ mod tests {
             let sc = s.kin_scales().expect("scales");
             assert_eq!((v.value(), a.value()), (0.1, 10.0));
             assert_eq!((sc.v.value(), sc.a.value()), (0.05, 5.0));
-            for (kind, mu) in [(PlanKind::Velocity, sc.v), (PlanKind::Acceleration, sc.a)] {
-                assert!(fits_two_sheets(s, kind, mu), "{kind:?}");
-                let finer = mu.finer().expect("finer");
-                assert!(
-                    !fits_two_sheets(s, kind, finer),
-                    "{kind:?} at {}",
-                    finer.value()
-                );
-            }
         });
+        for name in ["slider-crank", "four-bar", "tangent", "v-engine"] {
+            super::super::with_scene(name, |s| {
+                let sc = s.kin_scales().expect("scales");
+                for (kind, mu) in [(PlanKind::Velocity, sc.v), (PlanKind::Acceleration, sc.a)] {
+                    assert!(fits_room(s, kind, mu), "{name} {kind:?}");
+                    let finer = mu.finer().expect("finer");
+                    assert!(
+                        !fits_room(s, kind, finer),
+                        "{name} {kind:?} at {}",
+                        finer.value()
+                    );
+                }
+            });
+        }
         // A μ the scene fixes stands on two sheets too.
         super::super::with_scene("six-bar", |s| {
             let sc = s.kin_scales().expect("scales");
