@@ -9,7 +9,7 @@ use super::follower::{to_cam, Kin, Placement};
 use super::inversion::{drawn_rho_min, invert, Inversion};
 use super::motion::{points, Motion, Point};
 use super::radius::{min_radius, RadiusConstruction};
-use super::{CamError, CamSpec, Follower, Rotation};
+use super::{CamError, CamSpec, Follower, Rotation, Shock};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{french_curve, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
@@ -265,7 +265,8 @@ fn angle_graph(
 /// constant — at the drawn dwell's S (`motions`, read off the S diagram at the phase's last
 /// point), where the profile has it, not at the exact h or 0. Where the law's S′ is
 /// continuous the reading at the phase's end is that same angle ([`super::reading`]), so the
-/// curve runs on without a step; where S′ jumps (a rigid shock) so does the angle. The twin's
+/// curve runs on without a step; where S′ jumps (a rigid shock) so does the angle, drawn at
+/// φ = 0 too. The twin's
 /// exact curve is not drawn: the check compares them in the rows.
 fn read_curve(
     spec: &CamSpec,
@@ -283,7 +284,12 @@ fn read_curve(
             d2s: 0.0,
         }))
     };
-    let mut out = Vec::with_capacity(read.len() * 9 + 4);
+    let mut out = Vec::with_capacity(read.len() * 9 + 5);
+    // A rise that starts with a velocity jump starts from the near dwell's level, where the
+    // cycle's end leaves it; a smooth one from its first reading (the same angle).
+    if spec.rise.shock() == Shock::Rigid {
+        out.push(DVec2::new(0.0, dwell(points.len().saturating_sub(1))));
+    }
     for phase in [0usize, 2] {
         let idx: Vec<usize> = (0..points.len())
             .filter(|&i| points[i].phase == phase)

@@ -24,7 +24,7 @@
 
 use super::follower::jay;
 use super::law::Shock;
-use super::motion::{Point, KNOT_ON_NODE};
+use super::motion::{on_break, Point};
 use super::CamSpec;
 use crate::geom::DVec2;
 
@@ -69,14 +69,7 @@ fn tangent(d: &Drawn<'_>, i: usize) -> DVec2 {
         }
         return side(points, c, i, lo == i).unwrap_or_else(chord);
     }
-    let st = d.spec.starts();
-    let len = st[p.phase + 1] - st[p.phase];
-    let u = if len > 0.0 {
-        (p.phi - st[p.phase]) / len
-    } else {
-        0.0
-    };
-    if law.breaks().iter().any(|b| (b - u).abs() <= KNOT_ON_NODE) {
+    if on_break(d.spec, p) {
         let sides = (side(points, c, i, false), side(points, c, i, true));
         if let (Some(a), Some(b)) = sides {
             // Both run the way φ grows: their mean, each of unit length.
