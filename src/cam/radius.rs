@@ -300,8 +300,6 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
 /// The note of the flat face's 45° tangent's step (the tests find it by it).
 pub const TANGENT_NOTE: &str = "tangent at 45° from the diagram to the S axis";
 
-/// The S axis of a combined diagram: from below the centre found on it (`depth` mm under
-
 /// The combined diagram's closed curve through the points K (one per drawn point, in their
 /// order), drawn as a French curve follows them — smooth, where a polyline would show a
 /// corner at every point — with a corner kept where the law makes one: at a point on a
@@ -356,6 +354,8 @@ fn smooth_loop(rec: &mut Recorder, given: &Given<'_>, ks: &[DVec2], note: &str, 
         );
     }
 }
+
+/// The S axis of a combined diagram: from below the centre found on it (`depth` mm under
 /// B₀: the drawn r_min) to above the stroke, labelled.
 fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, depth: f64) -> StepId {
     let top = DVec2::new(0.0, mu.to_mm(spec.stroke) + 12.0);

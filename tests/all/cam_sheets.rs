@@ -5,10 +5,9 @@
 //!   dimension from O₁ whose length, read as the sheet reads it, is the report's graphical
 //!   r_min (translating and rocker followers);
 //! - the flat face's 45° tangent from its touching point on the S(S″) curve to the S axis,
-//!   each end on its line to a tolerance of the figure's size, with the r_min dimension;
-//! (γ(φ) without a step the law does not make: `cam_angle_steps`.)
+//!   each end on its line to a tolerance of the figure's size, with the r_min dimension.
 //!
-//! Each rule also runs on a plate built to break it, and must fail there.
+//! (γ(φ) without a step the law does not make: `cam_angle_steps`.) Each rule also runs on a plate built to break it, and must fail there.
 
 use glam::DVec2;
 use tmm::cam::{Cam, Follower, RAY_NOTE, R_MIN_NOTE, TANGENT_NOTE};
