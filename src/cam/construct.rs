@@ -9,7 +9,7 @@ use super::follower::{to_cam, Kin, Placement};
 use super::inversion::{drawn_rho_min, invert, Inversion};
 use super::motion::{points, Motion, Point};
 use super::radius::{min_radius, RadiusConstruction};
-use super::{CamError, CamSpec, Follower, Rotation};
+use super::{CamError, CamSpec, Follower, Rotation, Shock};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{french_curve, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
@@ -107,7 +107,7 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
         Follower::Flat { .. } => None,
         _ => Some(angle_graph(
             spec,
-            &points,
+            (&points, &read),
             &inversion,
             &placement,
             diagrams.phi,
@@ -148,7 +148,7 @@ fn chosen_roller(points: &[Point], read: &[Motion], place: &Placement, base: f64
 /// check's rows.
 fn angle_graph(
     spec: &CamSpec,
-    points: &[Point],
+    (points, motions): (&[Point], &[Motion]),
     inv: &Inversion,
     place: &Placement,
     phi: Scale,
@@ -242,7 +242,14 @@ fn angle_graph(
     rec.draw(
         "the angle read off the profile",
         Item::Polyline {
-            points: read_curve(spec, points, &read, place, |k| mu.to_mm(value(k)), phi),
+            points: read_curve(
+                spec,
+                (points, motions),
+                &read,
+                place,
+                |k| mu.to_mm(value(k)),
+                phi,
+            ),
             closed: false,
         },
         Role::Result,
@@ -253,41 +260,54 @@ fn angle_graph(
 
 /// The curve of the angle graph, drawn through the read values only: the French curve
 /// through each moving phase's points (tangents along the chords through the neighbours),
-/// and on each dwell, where the pitch curve is an arc about O₁ and the normal is its radius,
-/// the angle between O₁B and the follower's path, constant (the far dwell at S = h, the near
-/// one at S = 0). The twin's exact curve is not drawn: the check compares them in the rows.
+/// and on each dwell, where the pitch curve is the arc about O₁ drawn through the phase's
+/// end and the normal is its radius, the angle between O₁B and the follower's path,
+/// constant — at the drawn dwell's S (`motions`, read off the S diagram at the phase's last
+/// point), where the profile has it, not at the exact h or 0. Where the law's S′ is
+/// continuous the reading at the phase's end is that same angle ([`super::reading`]), so the
+/// curve runs on without a step; where S′ jumps (a rigid shock) so does the angle, drawn at
+/// φ = 0 too. The twin's
+/// exact curve is not drawn: the check compares them in the rows.
 fn read_curve(
     spec: &CamSpec,
-    points: &[Point],
+    (points, motions): (&[Point], &[Motion]),
     read: &[DVec2],
     place: &Placement,
     angle_mm: impl Fn(&Kin) -> f64,
     phi: Scale,
 ) -> Vec<DVec2> {
     let st = spec.starts();
-    let dwell = |s: f64| {
+    let dwell = |i: usize| {
         angle_mm(&place.kin(Motion {
-            s,
+            s: motions.get(i).map_or(0.0, |m| m.s),
             ds: 0.0,
             d2s: 0.0,
         }))
     };
-    let (far, near) = (dwell(spec.stroke), dwell(0.0));
-    let mut out = vec![DVec2::new(0.0, near)];
+    let mut out = Vec::with_capacity(read.len() * 9 + 5);
+    // A rise that starts with a velocity jump starts from the near dwell's level, where the
+    // cycle's end leaves it; a smooth one from its first reading (the same angle).
+    if spec.rise.shock() == Shock::Rigid {
+        out.push(DVec2::new(0.0, dwell(points.len().saturating_sub(1))));
+    }
     for phase in [0usize, 2] {
         let idx: Vec<usize> = (0..points.len())
             .filter(|&i| points[i].phase == phase)
             .collect();
+        let (Some(&first), Some(&last)) = (idx.first(), idx.last()) else {
+            continue;
+        };
         let tangent = |j: usize| {
             let (lo, hi) = (j.saturating_sub(1), (j + 1).min(idx.len() - 1));
             read[idx[hi]] - read[idx[lo]]
         };
-        out.push(read[idx[0]]);
+        out.push(read[first]);
         for j in 0..idx.len().saturating_sub(1) {
             let (a, b) = (read[idx[j]], read[idx[j + 1]]);
             out.extend_from_slice(&french_curve(a, tangent(j), b, tangent(j + 1), 8)[1..]);
         }
-        let y = if phase == 0 { far } else { near };
+        // The dwell after the phase, at the S its last point is drawn at.
+        let y = dwell(last);
         out.push(DVec2::new(phi.to_mm(st[phase + 1]), y));
         out.push(DVec2::new(phi.to_mm(st[phase + 2]), y));
     }

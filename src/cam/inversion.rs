@@ -303,7 +303,6 @@ fn invert_at(
         spec,
         points,
         centres: &centres,
-        place,
     };
     let angles = read_angles(&drawn, &paths);
     let rho_min = if flat {

@@ -110,6 +110,24 @@ pub fn motion(spec: &CamSpec, phi: f64, after: bool) -> Motion {
     motion_u(spec, phase, u, after)
 }
 
+/// Whether point `p` of a moving phase stands on a break of its law's d²S/dφ² inside the
+/// phase ([`Law::breaks`](super::Law::breaks)): S″ jumps there, and so does the slope of any
+/// curve drawn through the point against S′.
+pub(super) fn on_break(spec: &CamSpec, p: &Point) -> bool {
+    let st = spec.starts();
+    let (law, len) = if p.phase == 0 {
+        (spec.rise, spec.phases.rise)
+    } else {
+        (spec.ret, spec.phases.ret)
+    };
+    let u = if len > 0.0 {
+        (p.phi - st[p.phase]) / len
+    } else {
+        0.0
+    };
+    law.breaks().iter().any(|b| (b - u).abs() <= KNOT_ON_NODE)
+}
+
 /// The phase (0 rise, 1 far dwell, 2 return, 3 near dwell) and u ∈ [0, 1] of φ, by the rule
 /// of [`motion`].
 pub fn locate(spec: &CamSpec, phi: f64, after: bool) -> (usize, f64) {

@@ -6,7 +6,8 @@
 
 use super::diagrams::{read_motion, Diagrams};
 use super::follower::{admits, rocker_of, Placement, REACH_ARMS};
-use super::motion::{Motion, Point};
+use super::law::Shock;
+use super::motion::{on_break, Motion, Point};
 use super::zone;
 use super::{CamError, CamSpec, Closure, Follower};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
@@ -105,15 +106,7 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
             &[],
         );
     }
-    rec.draw(
-        "combined diagram S(dS/dφ)",
-        Item::Polyline {
-            points: ks.clone(),
-            closed: true,
-        },
-        Role::Result,
-        &[path],
-    );
+    smooth_loop(rec, given, &ks, "combined diagram S(dS/dφ)", &[path]);
     let apex = translating_zone(rec, &ks, &binds, o, gamma);
     // O₁'s name outside the zone: on the side of the zone's edge it lies on.
     let toward = if apex.is_some_and(|a| o.x < a.x) {
@@ -190,15 +183,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
             cons.push((k, e));
         }
     }
-    rec.draw(
-        "curve of the points K",
-        Item::Polyline {
-            points: ks.clone(),
-            closed: true,
-        },
-        Role::Result,
-        &[],
-    );
+    smooth_loop(rec, given, &ks, "curve of the points K", &[]);
     let o = rocker_centre(&cons, a0, gamma).ok_or(CamError::NoCentre {
         gamma_deg: gamma.to_degrees(),
         searched: REACH_ARMS * arm,
@@ -314,6 +299,61 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
 
 /// The note of the flat face's 45° tangent's step (the tests find it by it).
 pub const TANGENT_NOTE: &str = "tangent at 45° from the diagram to the S axis";
+
+/// The combined diagram's closed curve through the points K (one per drawn point, in their
+/// order), drawn as a French curve follows them — smooth, where a polyline would show a
+/// corner at every point — with a corner kept where the law makes one: at a point on a
+/// break of d²S/dφ² ([`on_break`]; the slope dS/dS′ = S′/S″ changes sign there), and at a
+/// phase's ends where dS/dφ jumps (a rigid shock), the jump drawn straight at its S.
+fn smooth_loop(rec: &mut Recorder, given: &Given<'_>, ks: &[DVec2], note: &str, deps: &[StepId]) {
+    let (spec, points) = (given.spec, given.points);
+    // One point where two coincide on the paper (a phase's end and the next phase's start
+    // at dS/dφ = 0): the curve passes it once, smoothly.
+    let same = rec.tolerances().flatten_mm;
+    let mut kept: Vec<(DVec2, bool)> = Vec::with_capacity(ks.len());
+    for (k, p) in ks.iter().zip(points) {
+        let law = if p.phase == 0 { spec.rise } else { spec.ret };
+        let corner = on_break(spec, p) || (law.shock() == Shock::Rigid && (p.k == 0 || p.last));
+        match kept.last_mut() {
+            Some((q, c)) if q.distance(*k) <= same => *c |= corner,
+            _ => kept.push((*k, corner)),
+        }
+    }
+    if kept.len() > 1 && kept[0].0.distance(kept[kept.len() - 1].0) <= same {
+        if let Some((_, c)) = kept.pop() {
+            kept[0].1 |= c;
+        }
+    }
+    let ks: Vec<DVec2> = kept.iter().map(|(k, _)| *k).collect();
+    let corners: Vec<usize> = (0..kept.len()).filter(|&i| kept[i].1).collect();
+    if corners.is_empty() {
+        rec.draw(
+            note,
+            Item::Curve {
+                points: ks,
+                closed: true,
+            },
+            Role::Result,
+            deps,
+        );
+        return;
+    }
+    // From each corner on round the loop to the next.
+    for (j, &a) in corners.iter().enumerate() {
+        let b = corners[(j + 1) % corners.len()];
+        let len = (b + ks.len() - a - 1) % ks.len() + 1;
+        let run: Vec<DVec2> = (0..=len).map(|k| ks[(a + k) % ks.len()]).collect();
+        rec.draw(
+            note,
+            Item::Curve {
+                points: run,
+                closed: false,
+            },
+            Role::Result,
+            deps,
+        );
+    }
+}
 
 /// The S axis of a combined diagram: from below the centre found on it (`depth` mm under
 /// B₀: the drawn r_min) to above the stroke, labelled.

@@ -5,11 +5,9 @@
 //!   dimension from O₁ whose length, read as the sheet reads it, is the report's graphical
 //!   r_min (translating and rocker followers);
 //! - the flat face's 45° tangent from its touching point on the S(S″) curve to the S axis,
-//!   each end on its line to a tolerance of the figure's size, with the r_min dimension;
-//! - γ(φ) (λ(φ)) without a step at a dwell where the law's dS/dφ is continuous larger than
-//!   the chord reading's own error (read exactly, the drafting's error aside).
+//!   each end on its line to a tolerance of the figure's size, with the r_min dimension.
 //!
-//! Each rule also runs on a plate built to break it, and must fail there.
+//! (γ(φ) without a step the law does not make: `cam_angle_steps`.) Each rule also runs on a plate built to break it, and must fail there.
 
 use glam::DVec2;
 use tmm::cam::{Cam, Follower, RAY_NOTE, R_MIN_NOTE, TANGENT_NOTE};
@@ -217,65 +215,6 @@ fn finished(cam: &Cam, f: &Figure, d: Drafting) -> Result<(), String> {
     r_min_dimensioned(f, cam.radius.graphical, d)
 }
 
-/// The largest step of the angle graph at a dwell's end where the law's dS/dφ is continuous
-/// (mm at 1°/mm), against the reading's own error there: the largest |read − exact| at the
-/// phase's inner points, doubled (the end's one-sided parabola has twice the error constant
-/// of the central one, h²/3 against h²/6).
-fn steps_at_smooth_dwells(cam: &Cam, graph: &Figure) -> Result<(), String> {
-    let curve = graph
-        .steps
-        .iter()
-        .find_map(|s| match &s.item {
-            Item::Polyline { points, .. } if s.role == Role::Result => Some(points.clone()),
-            _ => None,
-        })
-        .ok_or("no angle curve")?;
-    let phi = cam.diagrams.phi;
-    let st = cam.spec.starts();
-    let deg = |a: f64| a.to_degrees();
-    for (phase, ends) in [(0usize, [st[0], st[1]]), (2, [st[2], st[3]])] {
-        let idx: Vec<usize> = (0..cam.points.len())
-            .filter(|&i| cam.points[i].phase == phase)
-            .collect();
-        let rocker = matches!(cam.spec.follower, Follower::Rocker { .. });
-        let err = |i: usize| {
-            let p = &cam.points[i];
-            let read = cam.inversion.angles[i];
-            let read = if rocker {
-                std::f64::consts::FRAC_PI_2 - read
-            } else {
-                read
-            };
-            deg(read - cam.angle_at(p.phi, p.after)).abs()
-        };
-        let inner = idx[1..idx.len() - 1]
-            .iter()
-            .map(|&i| err(i))
-            .fold(0.0, f64::max);
-        for (end, at) in ends.into_iter().enumerate() {
-            let p = &cam.points[if end == 0 { idx[0] } else { idx[idx.len() - 1] }];
-            let ds = tmm::cam::motion::motion(&cam.spec, at, p.after).ds;
-            if ds.abs() > 1e-9 * cam.spec.stroke {
-                continue;
-            }
-            let x = phi.to_mm(at);
-            let step = curve
-                .windows(2)
-                .filter(|w| (w[0].x - x).abs() < 1e-6 && (w[1].x - x).abs() < 1e-6)
-                .map(|w| (w[1].y - w[0].y).abs())
-                .fold(0.0, f64::max);
-            if step > 2.0 * inner + 1e-9 {
-                return Err(format!(
-                    "γ(φ) steps {step:.3}° at φ = {:.1}° where the law is smooth; the reading's \
-                     own error inside the phase is {inner:.3}°",
-                    at.to_degrees()
-                ));
-            }
-        }
-    }
-    Ok(())
-}
-
 #[test]
 fn every_combined_diagram_has_its_final_elements() {
     for name in TURNING {
@@ -285,24 +224,6 @@ fn every_combined_diagram_has_its_final_elements() {
             if let Err(e) = finished(&cam, &f, d) {
                 panic!("{name} ({drafting} mm, {lang:?}): {e}");
             }
-        }
-    }
-}
-
-#[test]
-fn the_angle_graph_has_no_step_where_the_law_is_smooth() {
-    for name in [
-        "shaper",
-        "cam-pz5",
-        "cam-central",
-        "cam-shock",
-        "cam-undercut",
-    ] {
-        // Read exactly: the chord method's own error, the drafting's aside.
-        let (cam, _, _) = sheets(name, 0.0, Lang::Ru);
-        let g = cam.angle_graph.as_ref().expect("an angle graph");
-        if let Err(e) = steps_at_smooth_dwells(&cam, g) {
-            panic!("{name}: {e}");
         }
     }
 }
@@ -369,18 +290,4 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
         }
     });
     assert!(tangent_touches(&floating).is_err());
-
-    // γ(φ) with the seed's 1° step at the end of the rise put back.
-    let (cam, _, _) = sheets("shaper", 0.0, Lang::Ru);
-    let mut g = cam.angle_graph.clone().expect("an angle graph");
-    assert!(steps_at_smooth_dwells(&cam, &g).is_ok());
-    let x = cam.diagrams.phi.to_mm(cam.spec.starts()[1]);
-    for s in g.steps.iter_mut().filter(|s| s.role == Role::Result) {
-        if let Item::Polyline { points, .. } = &mut s.item {
-            if let Some(k) = points.iter().position(|p| (p.x - x).abs() < 1e-6) {
-                points[k].y += 1.0;
-            }
-        }
-    }
-    assert!(steps_at_smooth_dwells(&cam, &g).is_err());
 }

@@ -14,6 +14,7 @@ mod blocking;
 mod blocking_region;
 mod blocking_scenes;
 mod cam;
+mod cam_angle_steps;
 mod cam_breaks;
 mod cam_diagrams;
 mod cam_oracle;

@@ -18,9 +18,9 @@ const BAND_MM: f64 = 120.0;
 
 /// The sheets whose band is wider, and why.
 const JUSTIFIED: &[(&str, &str)] = &[
-    ("cam-cusp/cam", "read to 0,5 mm: the scene fixes μ_S (0,002 m/mm), the S diagram 33 mm tall leaves the foot of its column free (the cam sheet's layout is the cam part of issue 45)"),
-    ("cam-shock/cam", "in uk and en: the profile at μ_l = 0,001 (123 mm; 0,0005 draws it 246 mm, past its 240 mm room) and the longer captions move the tables under the diagrams (the cam part of issue 45)"),
-    ("shaper/cam", "read to 0,5 mm or in en: the scene fixes the poles H₁, H₂ (the seed's), so the analogues' height is the seed's (the cam part of issue 45)"),
+    ("cam-cusp/cam", "in uk and en, and in ru read to 0,5 mm: the bottom 168 mm; the scene fixes μ_S = 0,002 m/mm (the combined diagram's S″ is large and both its axes share μ_S), so the S diagram is 33 mm tall and the column of the three diagrams, the combined diagram, the profile and the tables all end 420 mm down the sheet — the whole cam on one sheet, nothing left to go below"),
+    ("cam-shock/cam", "in uk and en: the bottom 170 mm; the profile at μ_l = 0,001 (123 mm; 0,0005 draws it 246 mm, past its 240 mm room) and the uniform law's low analogues leave the three diagrams, the combined diagram, λ(φ), the data and the tables in the upper 415 mm — the whole cam on one sheet, nothing left to go below"),
+    ("shaper/cam", "in uk and en, and in ru read to 0,5 mm: the bottom 138 mm; the scene fixes the poles H₁ = 30 mm, H₂ = 40 mm (the seed's), so the analogues stand at the seed's height, and the 26 points' table, the longest item, ends 450 mm down the sheet — the whole cam on one sheet, nothing left to go below"),
     ("friction-follower/friction", "three views, the closed forms and the table on an A2, the friction sheet's smallest format, each scale as large as its 160 mm room holds"),
     ("gears-pz2-ex2/gears", "one narrow figure (141 mm tall at μ_l = 0,0004) with its data and table on an A2 (the gear part of issue 45)"),
     ("gears-pz3/gears", "the scene fixes μ_l (the gear part of issue 45)"),

@@ -170,13 +170,16 @@ fn seed000_zone_of_the_centre_is_hatched_into_the_admitted_side() {
             _ => None,
         })
         .unwrap();
-    let ks = steps
+    // The points K: every point of the curve's runs (drawn smooth, split at the law's
+    // corners), each on its rocker's line.
+    let ks: Vec<DVec2> = steps
         .iter()
-        .find_map(|s| match (&s.item, s.note.as_str()) {
-            (Item::Polyline { points, .. }, "curve of the points K") => Some(points.clone()),
+        .filter_map(|s| match (&s.item, s.note.as_str()) {
+            (Item::Curve { points, .. }, "curve of the points K") => Some(points.clone()),
             _ => None,
         })
-        .unwrap();
+        .flatten()
+        .collect();
     let rockers: Vec<DVec2> = steps
         .iter()
         .filter_map(|s| match &s.item {
@@ -184,7 +187,19 @@ fn seed000_zone_of_the_centre_is_hatched_into_the_admitted_side() {
             _ => None,
         })
         .collect();
-    let cons: Vec<(DVec2, DVec2)> = ks.into_iter().zip(rockers).collect();
+    assert!(ks.len() >= rockers.len());
+    let cons: Vec<(DVec2, DVec2)> = ks
+        .into_iter()
+        .map(|k| {
+            let e = rockers
+                .iter()
+                .copied()
+                .min_by(|a, b| a.perp_dot(k).abs().total_cmp(&b.perp_dot(k).abs()))
+                .unwrap();
+            assert!(e.perp_dot(k).abs() < 1e-9 * k.length().max(1.0), "{k:?}");
+            (k, e)
+        })
+        .collect();
     let sin_g = spec.gamma_min.sin();
     assert!(follower::admits(o, &cons, sin_g, 1e-9));
     let strokes: Vec<_> = steps
