@@ -30,6 +30,12 @@ fn short(step: &Step) -> bool {
 /// Every sheet of every plate of every scene in `constructions/`, in Russian, named
 /// `scene/sheet`.
 pub fn every_sheet() -> Vec<(String, Plate)> {
+    every_sheet_in(Lang::Ru, Drafting::EXACT)
+}
+
+/// Every sheet of every plate of every scene in `constructions/`, in `lang` under
+/// `drafting`, named `scene/sheet`.
+pub fn every_sheet_in(lang: Lang, drafting: Drafting) -> Vec<(String, Plate)> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("constructions");
     let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
         .expect("constructions/")
@@ -40,8 +46,8 @@ pub fn every_sheet() -> Vec<(String, Plate)> {
     let mut out = Vec::new();
     for path in paths {
         let s = tmm::scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
-        let session = Session::new(&s, Drafting::EXACT);
-        let all = tmm::sheets::build_all(&session, Lang::Ru)
+        let session = Session::new(&s, drafting);
+        let all = tmm::sheets::build_all(&session, lang)
             .unwrap_or_else(|(k, e)| panic!("{}/{}: {e}", s.stem, k.stem()));
         out.extend(
             all.into_iter()

@@ -405,6 +405,7 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
     joined
 }
 
+mod candidates;
 mod dimension;
 pub use dimension::struck_dimension_texts;
 mod place;

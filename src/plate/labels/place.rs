@@ -1,6 +1,7 @@
 //! Placing labels: candidate boxes around each anchor, scored against text, points and
 //! lines already on the view, in a fixed order with repair rounds.
 
+use super::candidates::{box_distance, candidates, near_bound, NEAR_RING_MM, POINT_REACH_MM};
 use super::*;
 
 pub(super) struct Placer<'a> {
@@ -35,16 +36,24 @@ const STRUCK: f64 = 25.0;
 /// the same for a thin one.
 const MAIN_AREA: f64 = 40.0;
 const THIN_AREA: f64 = 6.0;
-/// The spacing of the rings of a label kept near its point ([`Request::within`]), mm.
-const NEAR_RING_MM: f64 = 1.0;
 /// Cost per rank of the candidate (the preferred position is rank 0).
 const RANK: f64 = 0.5;
 /// Cost of a label of an item (a force, an arm) nearer to another line of its view than to
-/// its own: it would be read as that line's (issue 45); plus [`WRONG_LINE_MM`] per mm. Less
-/// than a line striking the label ([`STRUCK`] and [`MAIN_LINE`]): a struck label cannot be
-/// read at all.
-const WRONG_LINE: f64 = 20.0;
-const WRONG_LINE_MM: f64 = 10.0;
+/// its own: it would be read as that line's (issue 45); plus [`WRONG_LINE_MM`] per mm. More
+/// than a line grazing the label's corner, less than a line striking through it
+/// ([`STRUCK`] and [`MAIN_LINE`] over a millimetre): a struck label cannot be read at all.
+const WRONG_LINE: f64 = 30.0;
+const WRONG_LINE_MM: f64 = 15.0;
+/// Cost of a label of a point standing further than [`POINT_REACH_MM`] from its point: it
+/// would be read as another point's (issue 45); plus [`BEYOND_MM`] per mm beyond. As
+/// [`WRONG_LINE`], less than a line striking through the label.
+const BEYOND: f64 = 30.0;
+const BEYOND_MM: f64 = 15.0;
+/// The most a label away from its object costs ([`WRONG_LINE`], [`BEYOND`]): what a thin
+/// line striking through 2 mm of it costs (a main one through 1 mm), so that a label struck
+/// through stays the worst (`h₄` on the V engine's lever struck by an arm 3,8 mm rather
+/// than written 2 mm nearer another arm than its own).
+const AWAY_MAX: f64 = STRUCK + 2.0 * THIN_LINE;
 /// Rounds of moving the labels that still collide.
 const REPAIR_ROUNDS: usize = 4;
 
@@ -163,7 +172,7 @@ impl<'a> Placer<'a> {
         let candidates = candidates(&request, extent.max - extent.min);
         // A near label's candidates are denser (see [`candidates`]): each costs less, so
         // that a millimetre further out costs what it costs any label.
-        let rank_cost = if request.within.is_some() {
+        let rank_cost = if near_bound(&request).is_some() {
             RANK * 0.5 * NEAR_RING_MM / SECOND_RING_MM
         } else {
             RANK
@@ -327,6 +336,12 @@ impl<'a> Placer<'a> {
                 cost += OVER_POINT;
             }
         }
+        if job.request.names_of == Names::Point {
+            let beyond = box_distance(rect, job.request.anchor) - POINT_REACH_MM;
+            if beyond > 1e-9 {
+                cost += (BEYOND + BEYOND_MM * beyond).min(AWAY_MAX);
+            }
+        }
         if let Some(own) = own_distance(&job.request.own, rect) {
             let rival = job
                 .rivals
@@ -334,7 +349,7 @@ impl<'a> Placer<'a> {
                 .map(|(a, b)| rect_segment_distance(rect, *a, *b))
                 .fold(f64::INFINITY, f64::min);
             if rival + NEARER_MM < own {
-                cost += WRONG_LINE + WRONG_LINE_MM * (own - rival);
+                cost += (WRONG_LINE + WRONG_LINE_MM * (own - rival)).min(AWAY_MAX);
             }
         }
         for (bounds, o) in &job.lines {
@@ -365,87 +380,6 @@ impl<'a> Placer<'a> {
         }
         cost
     }
-}
-
-/// The candidate boxes of a request in order of preference: centred on the point when it has
-/// no preferred direction; then sixteen directions, the preferred one first and the others
-/// alternating about it, at the request's gap and [`SECOND_RING_MM`] further.
-pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
-    let half = size * 0.5;
-    let mut out = Vec::with_capacity(RINGS * DIRECTIONS + 1);
-    let start = if r.toward == DVec2::ZERO {
-        out.push(Rect::new(r.anchor - half, r.anchor + half));
-        -FRAC_PI_4
-    } else {
-        r.toward.y.atan2(r.toward.x)
-    };
-    // A label kept near its point tries more places nearer: rings [`NEAR_RING_MM`] apart
-    // out to its bound, in twice the directions.
-    let (gaps, directions): (Vec<f64>, usize) = match r.within {
-        Some(w) => (
-            (0..)
-                .map(|k| r.gap + f64::from(k) * NEAR_RING_MM)
-                .take_while(|g| *g <= w + 1e-9)
-                .collect(),
-            2 * DIRECTIONS,
-        ),
-        None => (
-            (0..RINGS)
-                .map(|k| r.gap + k as f64 * SECOND_RING_MM)
-                .collect(),
-            DIRECTIONS,
-        ),
-    };
-    let step = TAU / directions as f64;
-    for gap in gaps {
-        for k in 0..directions {
-            // 0, +1, −1, +2, −2, …, +8.
-            let turn = (k.div_ceil(2)) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };
-            let t = DVec2::from_angle(start + turn * step);
-            // From the centre to the box's edge along t.
-            let reach = [(half.x, t.x), (half.y, t.y)]
-                .iter()
-                .filter(|(_, c)| c.abs() > 1e-9)
-                .map(|(h, c)| h / c.abs())
-                .fold(f64::INFINITY, f64::min);
-            let c = r.anchor + t * (gap + reach);
-            out.push(Rect::new(c - half, c + half));
-        }
-        // A joint label (`d₅ ≡ e ≡ s₅`) is also written from a corner, as a draughtsman
-        // writes it: its box in one quadrant of the point, clear of both lines through it
-        // (the direction lines of a plan), the quadrant nearest the preferred side first.
-        if r.names.len() > 1 {
-            let d = gap;
-            let mut quadrants =
-                [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)].map(|(x, y)| DVec2::new(x, y));
-            let pref = DVec2::from_angle(start);
-            quadrants.sort_by(|a, b| b.dot(pref).total_cmp(&a.dot(pref)));
-            for q in quadrants {
-                let corner = r.anchor + q * d;
-                let far = corner + q * size;
-                out.push(Rect::new(corner.min(far), corner.max(far)));
-            }
-        }
-    }
-    // A label kept near its point keeps only the places that near (all of them when none
-    // is: its gap is wider than the bound).
-    if let Some(within) = r.within {
-        let near: Vec<Rect> = out
-            .iter()
-            .copied()
-            .filter(|c| box_distance(c, r.anchor) <= within + 1e-9)
-            .collect();
-        if !near.is_empty() {
-            return near;
-        }
-    }
-    out
-}
-
-/// The distance from `p` to the nearest point of the box `r` (0 inside it), mm.
-pub(super) fn box_distance(r: &Rect, p: DVec2) -> f64 {
-    let d = (r.min - p).max(p - r.max).max(DVec2::ZERO);
-    d.length()
 }
 
 /// A label of an item counts as nearer another line only when it is this much nearer, mm.

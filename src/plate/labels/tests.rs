@@ -1,4 +1,5 @@
-use super::place::{self, candidates, clipped_area, clipped_length};
+use super::candidates::{self, candidates, POINT_REACH_MM};
+use super::place::{clipped_area, clipped_length};
 use super::*;
 
 fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Rect {
@@ -83,7 +84,9 @@ fn labels_of_items_are_never_joined() {
 
 #[test]
 fn candidates_keep_the_gap_and_start_with_the_preferred_side() {
-    let r = request("B", DVec2::new(50.0, 50.0), 0);
+    let mut r = request("B", DVec2::new(50.0, 50.0), 0);
+    // A label of an item without lines of its own: the rings alone.
+    r.names_of = Names::Item;
     let size = DVec2::new(3.0, 4.0);
     let c = candidates(&r, size);
     assert_eq!(c.len(), RINGS * DIRECTIONS);
@@ -107,11 +110,12 @@ fn a_joint_label_is_also_tried_from_each_corner_of_its_point() {
     r.names.extend(["e".to_string(), "s_5".to_string()]);
     let size = DVec2::new(25.0, 4.0);
     let c = candidates(&r, size);
-    assert_eq!(c.len(), RINGS * (DIRECTIONS + 4));
-    // After the sixteen directions of the first ring: the four quadrants, the preferred
+    // Seven near rings (gap 1 to 7 mm) of thirty-two directions, two far ones of sixteen.
+    assert_eq!(c.len(), 7 * (2 * DIRECTIONS + 4) + 2 * (DIRECTIONS + 4));
+    // After the thirty-two directions of the first ring: the four quadrants, the preferred
     // side (+x) first; each box wholly in its quadrant, its corner the gap from the point
     // on both axes, so that neither line through the point meets it.
-    let corners = &c[DIRECTIONS..DIRECTIONS + 4];
+    let corners = &c[2 * DIRECTIONS..2 * DIRECTIONS + 4];
     assert!(
         corners[0].min.x > at.x && corners[1].min.x > at.x,
         "{corners:?}"
@@ -122,10 +126,10 @@ fn a_joint_label_is_also_tried_from_each_corner_of_its_point() {
         let dy = (b.min.y - at.y).max(at.y - b.max.y);
         assert!((dx - LABEL_GAP_MM).abs() < 1e-9 && (dy - LABEL_GAP_MM).abs() < 1e-9);
     }
-    // A single name keeps the sixteen directions only.
+    // A single name keeps the directions only.
     assert_eq!(
         candidates(&request("b", at, 0), size).len(),
-        RINGS * DIRECTIONS
+        7 * 2 * DIRECTIONS + 2 * DIRECTIONS
     );
 }
 
@@ -141,7 +145,56 @@ fn a_label_kept_near_its_point_has_only_the_near_places() {
     assert_eq!(kept.len(), 4 * 32);
     assert!(kept
         .iter()
-        .all(|c| place::box_distance(c, at) <= 4.0 + 1e-9));
-    assert!(free.iter().any(|c| place::box_distance(c, at) > 10.0));
+        .all(|c| candidates::box_distance(c, at) <= 4.0 + 1e-9));
+    assert!(free.iter().any(|c| candidates::box_distance(c, at) > 10.0));
     assert_eq!(kept[0], free[0]);
+}
+
+#[test]
+fn a_label_of_a_point_is_tried_densely_within_its_reach_first() {
+    let at = DVec2::new(50.0, 50.0);
+    let size = DVec2::new(6.0, 3.5);
+    let c = candidates(&request("B", at, 0), size);
+    let d: Vec<f64> = c.iter().map(|b| candidates::box_distance(b, at)).collect();
+    let near = d
+        .iter()
+        .take_while(|x| **x <= POINT_REACH_MM + 1e-9)
+        .count();
+    // Every place within the reach comes before any beyond it, and there are places beyond
+    // (taken at a cost when every near one is struck).
+    assert_eq!(near, 7 * 2 * DIRECTIONS);
+    assert!(d[near..].iter().all(|x| *x > POINT_REACH_MM));
+    assert!(!d[near..].is_empty());
+}
+
+#[test]
+fn a_label_of_an_item_is_also_tried_along_its_own_line_on_both_sides() {
+    let (a, b) = (DVec2::new(0.0, 0.0), DVec2::new(40.0, 0.0));
+    let mut r = request("R_{1-2}", a.lerp(b, 0.5), 0);
+    r.names_of = Names::Item;
+    r.toward = DVec2::new(0.0, -1.0);
+    r.own = vec![Outline {
+        shape: Shape::Line(a, b),
+        main: true,
+    }];
+    let size = DVec2::new(8.0, 3.5);
+    let c = candidates(&r, size);
+    let along = &c[DIRECTIONS..DIRECTIONS + 28];
+    // The middle first, on the preferred side (above, y down), its gap from the line.
+    assert!((along[0].center().x - 20.0).abs() < 1e-9, "{:?}", along[0]);
+    assert!(
+        (along[0].max.y + LABEL_GAP_MM).abs() < 1e-9,
+        "{:?}",
+        along[0]
+    );
+    assert!(
+        (along[1].min.y - LABEL_GAP_MM).abs() < 1e-9,
+        "{:?}",
+        along[1]
+    );
+    // Every place along is beside the line, none over it, and they cover both halves.
+    assert!(along.iter().all(|b| b.min.y > 0.0 || b.max.y < 0.0));
+    assert!(along.iter().any(|b| b.center().x < 8.0));
+    assert!(along.iter().any(|b| b.center().x > 32.0));
+    assert_eq!(c.len(), RINGS * DIRECTIONS + 28);
 }
