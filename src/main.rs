@@ -72,7 +72,7 @@ struct RenderArgs {
     drafting: Option<f64>,
     /// PNG resolution, dots per inch: 1…2400, within 2^30 pixels per image (an A1 sheet up
     /// to 1177 dpi, A0 up to 832 dpi).
-    #[arg(long, default_value_t = 150)]
+    #[arg(long, default_value_t = render::DEFAULT_DPI)]
     dpi: u32,
 }
 
@@ -170,6 +170,16 @@ enum Command {
         #[arg(long, value_enum, default_value = "ru")]
         lang: LangArg,
     },
+    /// The studio: a local web page (127.0.0.1) to pick a shipped scene, edit it as a form
+    /// or as text, and see its sheets and report re-drawn after each edit.
+    Serve {
+        /// Port to listen on (0: any free port; the address is printed).
+        #[arg(long, default_value_t = 8040)]
+        port: u16,
+        /// Open the page in the system's browser.
+        #[arg(long)]
+        open: bool,
+    },
     /// List the scenes in constructions/ with their plates.
     List {
         /// Folder to list.
@@ -229,6 +239,13 @@ fn main() -> ExitCode {
             lang,
         } => audit(&scene, &table, format, pdf.as_deref(), lang),
         Command::List { dir } => list(&dir),
+        Command::Serve { port, open } => tmm::studio::serve(port, |addr| {
+            emit(&format!("tmm studio: http://{addr}/ (Ctrl-C stops it)"));
+            if open {
+                tmm::studio::open_browser(&format!("http://{addr}/"));
+            }
+        })
+        .map_err(|e| Failure::input(e.to_string())),
         Command::Bench {
             json,
             out,

@@ -61,4 +61,5 @@ mod seed_shaper;
 mod session;
 mod sheet_room;
 mod sheets;
+mod studio;
 mod trains;
