@@ -198,3 +198,15 @@ pub(super) async fn download(
         Err(busy) => busy.into_response(),
     }
 }
+
+/// `POST /api/replay`: the figures of one sheet with their construction protocols.
+pub(super) async fn replay(
+    State(studio): State<Arc<Studio>>,
+    Json(r): Json<super::ReplayJob>,
+) -> Response {
+    match studio.run(move || super::replay(&r)).await {
+        Ok(Ok(views)) => Json(views).into_response(),
+        Ok(Err(problems)) => (StatusCode::UNPROCESSABLE_ENTITY, Json(problems)).into_response(),
+        Err(busy) => busy.into_response(),
+    }
+}

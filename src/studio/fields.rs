@@ -294,7 +294,7 @@ mod tests {
             .iter()
             .find(|f| f.key == "mechanism.crank.length")
             .expect("crank");
-        assert_eq!(crank.value, "150");
+        assert_eq!(crank.value, "150.0", "a float stays a float");
         assert_eq!(
             changed.matches('#').count(),
             text.matches('#').count(),

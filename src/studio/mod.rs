@@ -13,8 +13,10 @@ mod api;
 pub mod fields;
 pub mod gallery;
 mod redraw;
+mod replay;
 
 pub use redraw::{redraw, Job, Problem, Redrawn, Sheet};
+pub use replay::{replay, ReplayJob, ReplayStep, ReplayView};
 
 use axum::extract::DefaultBodyLimit;
 use axum::http::{header, StatusCode};
@@ -120,6 +122,7 @@ pub fn router() -> Router {
         .route("/api/set", post(api::set))
         .route("/api/render", post(api::render))
         .route("/api/download", post(api::download))
+        .route("/api/replay", post(api::replay))
         .layer(DefaultBodyLimit::max(MAX_BODY))
         .with_state(Arc::new(Studio::new()))
 }

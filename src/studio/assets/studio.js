@@ -27,6 +27,8 @@ const WORDS = {
   set: ["Листы PDF", "Аркуші PDF", "Sheets PDF"],
   csv: ["Отчёт CSV", "Звіт CSV", "Report CSV"],
   busy: ["Сервер занят", "Сервер зайнятий", "The server is busy"],
+  replay: ["Повтор построения:", "Повтор побудови:", "Replay:"],
+  whole: ["— весь лист —", "— весь аркуш —", "— the whole sheet —"],
 };
 const LANGS = ["ru", "uk", "en"];
 
@@ -211,6 +213,109 @@ function sheets() {
   $("canvas").replaceChildren(document.importNode(svg, true));
   if (first) fit();
   place();
+  loadReplay();
+}
+
+// The replay: the figures of the shown sheet with their protocols; a figure chosen is drawn
+// up to its current step, the step in red and its sentence marked in the step list.
+const replay = { views: [], view: null, at: 0, timer: 0 };
+
+async function loadReplay() {
+  stopPlay();
+  replay.views = [];
+  replay.view = null;
+  const sheet = state.shown;
+  let views = [];
+  try {
+    views = await (await post("/api/replay", { ...job(), sheet })).json();
+  } catch (e) {
+    views = [];
+  }
+  if (sheet !== state.shown) return;
+  replay.views = views;
+  const sel = $("figure");
+  const before = sel.value;
+  sel.replaceChildren(el("option", { value: "" }, word("whole")));
+  for (const v of views) sel.append(el("option", { value: String(v.view) }, v.caption || "view " + v.view));
+  // The figure chosen stays chosen when the scene is edited, at its last step.
+  if (views.some((v) => String(v.view) === before)) {
+    sel.value = before;
+    chooseFigure();
+  } else showReplay();
+}
+
+function chooseFigure() {
+  const k = $("figure").value;
+  replay.view = k === "" ? null : replay.views.find((v) => String(v.view) === k);
+  replay.at = replay.view ? replay.view.steps.length - 1 : 0;
+  stopPlay();
+  showReplay();
+}
+
+function showReplay() {
+  const svg = $("canvas").querySelector("svg");
+  const list = $("r-steps");
+  const v = replay.view;
+  if (!svg) return;
+  for (const e of svg.querySelectorAll(".replay-hidden, .replay-dim, .replay-now")) e.classList.remove("replay-hidden", "replay-dim", "replay-now");
+  $("r-slider").max = v ? String(v.steps.length - 1) : "0";
+  $("r-slider").value = String(replay.at);
+  if (!v) {
+    list.replaceChildren();
+    $("r-count").textContent = "";
+    return;
+  }
+  for (const g of svg.querySelectorAll(":scope > g[id^='view-']")) {
+    if (g.id !== "view-" + v.view) g.classList.add("replay-dim");
+  }
+  const shown = new Set(v.steps.slice(0, replay.at + 1).map((s) => s.id));
+  for (const s of v.steps) {
+    const g = svg.getElementById("view-" + v.view + "-step-" + s.id);
+    if (!g) continue;
+    if (!shown.has(s.id)) g.classList.add("replay-hidden");
+    if (s.id === v.steps[replay.at].id) g.classList.add("replay-now");
+  }
+  v.labels.forEach((steps, n) => {
+    const t = svg.getElementById("view-" + v.view + "-labels-text-" + (n + 1));
+    if (t && !steps.some((id) => shown.has(id))) t.classList.add("replay-hidden");
+  });
+  $("r-count").textContent = replay.at + 1 + " / " + v.steps.length;
+  if (list.dataset.view !== String(v.view) || list.children.length !== v.steps.length) {
+    list.dataset.view = String(v.view);
+    list.replaceChildren(...v.steps.map((s, i) => el("li", { "data-step": String(s.id), onclick: () => go(i) }, s.sentence)));
+  }
+  [...list.children].forEach((li, i) => {
+    li.className = i === replay.at ? "now" : i > replay.at ? "later" : "";
+  });
+  list.children[replay.at]?.scrollIntoView({ block: "nearest" });
+}
+
+function go(i) {
+  if (!replay.view) return;
+  replay.at = Math.max(0, Math.min(replay.view.steps.length - 1, i));
+  showReplay();
+}
+
+function stopPlay() {
+  clearInterval(replay.timer);
+  replay.timer = 0;
+  $("r-play").textContent = "▶";
+}
+
+// Play to the next breakpoint: the end, or where the step's group (a position) changes.
+function play() {
+  if (replay.timer) return stopPlay();
+  const v = replay.view;
+  if (!v) return;
+  if (replay.at >= v.steps.length - 1) go(0);
+  $("r-play").textContent = "⏸";
+  replay.timer = setInterval(() => {
+    const next = replay.at + 1;
+    if (next >= v.steps.length) return stopPlay();
+    const breaks = v.steps[next].group !== v.steps[replay.at].group;
+    go(next);
+    if (breaks) stopPlay();
+  }, 250);
 }
 
 // The sheet's whole width in the viewport.
@@ -280,6 +385,16 @@ function panZoom() {
   v.addEventListener("pointerup", () => { drag = null; });
 }
 
+function replayControls() {
+  $("figure").onchange = chooseFigure;
+  $("r-first").onclick = () => { stopPlay(); go(0); };
+  $("r-back").onclick = () => { stopPlay(); go(replay.at - 1); };
+  $("r-forward").onclick = () => { stopPlay(); go(replay.at + 1); };
+  $("r-last").onclick = () => { stopPlay(); go(Infinity); };
+  $("r-play").onclick = play;
+  $("r-slider").oninput = () => { stopPlay(); go(parseInt($("r-slider").value, 10)); };
+}
+
 function tabs() {
   const show = (text) => {
     $("form").hidden = text;
@@ -298,5 +413,6 @@ $("drafting").onchange = () => redraw();
 $("to-gallery").onclick = () => gallery();
 words();
 tabs();
+replayControls();
 panZoom();
 gallery();

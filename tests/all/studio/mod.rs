@@ -97,6 +97,39 @@ fn a_student_edits_the_shaper_in_the_browser() {
         eprintln!("the edit redrawn: {status}");
         b.shot(&shots.join("3-crank-150.png")).await;
 
+        // The first velocity plan replayed from its first step to its last: each step's
+        // element highlighted is the recorder's next step, its sentence marked.
+        let figure = b
+            .until("[...document.querySelectorAll('#figure option')].find(o => o.textContent.startsWith('Пол. 1,'))?.value")
+            .await;
+        let figure = figure.as_str().expect("a velocity plan").to_string();
+        b.eval(&format!(
+            "const s = document.getElementById('figure'); s.value = '{figure}'; s.dispatchEvent(new Event('change'));"
+        ))
+        .await;
+        b.click("#r-first").await;
+        let steps = b
+            .eval("return replay.view.steps.map(s => [s.id, s.sentence])")
+            .await;
+        let steps = steps.as_array().expect("steps").clone();
+        assert!(steps.len() >= 5, "{steps:?}");
+        for (i, step) in steps.iter().enumerate() {
+            let now = b
+                .eval("const g = document.querySelector('#canvas .replay-now'); const li = document.querySelector('#r-steps li.now'); return [g && g.id, li && li.dataset.step, li && li.textContent, document.querySelectorAll('#canvas svg .replay-hidden').length]")
+                .await;
+            assert_eq!(now[0], format!("view-{figure}-step-{}", step[0]), "step {i}");
+            assert_eq!(now[1], step[0].to_string(), "step {i}");
+            assert_eq!(now[2], step[1], "step {i}");
+            if i == 2 {
+                b.shot(&shots.join("4-replay.png")).await;
+            }
+            if i + 1 < steps.len() {
+                b.click("#r-forward").await;
+            }
+        }
+        let first = steps[0][1].as_str().unwrap_or_default();
+        eprintln!("the velocity plan's {} steps, the first: «{first}»", steps.len());
+
         // The PDF downloaded from the page is `tmm render`'s.
         let got = b
             .eval_async(
@@ -121,7 +154,7 @@ fn a_student_edits_the_shaper_in_the_browser() {
         let message = message.as_str().unwrap_or_default();
         assert!(message.contains("expected a length > 0 mm"), "{message}");
         assert!(b.eval("return !!document.querySelector('#canvas svg')").await == true);
-        b.shot(&shots.join("4-impossible.png")).await;
+        b.shot(&shots.join("5-impossible.png")).await;
         b.close().await;
     });
 }
