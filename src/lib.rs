@@ -54,6 +54,7 @@ pub mod report;
 pub mod scale;
 pub mod scene;
 pub mod sheets;
+pub mod studio;
 pub mod study;
 pub mod threads;
 

@@ -4,7 +4,10 @@
 
 mod allocator;
 
-use clap::{Parser, Subcommand, ValueEnum};
+mod cli;
+
+use clap::Parser;
+use cli::{AuditFormat, Cli, Command, Format, LangArg, RenderArgs, ReportFormat};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use tmm::construct::Drafting;
@@ -12,171 +15,6 @@ use tmm::render::{self, RenderError};
 use tmm::scale::Lang;
 use tmm::scene::{self, Scene};
 use tmm::study::Session;
-
-#[derive(Parser)]
-#[command(
-    name = "tmm",
-    version,
-    about = "Graphical methods of the Theory of Mechanisms and Machines, drawn on scaled plates"
-)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum Format {
-    Svg,
-    Png,
-    /// One PDF per scene, DIR/<scene>/<scene>.pdf: every sheet a page, 1:1.
-    Pdf,
-    /// The scene's explanatory note, DIR/<scene>/<scene>-note.pdf (as `tmm note`).
-    Note,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum ReportFormat {
-    Md,
-    Csv,
-    Json,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum AuditFormat {
-    Md,
-    Json,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum LangArg {
-    Ru,
-    Uk,
-    En,
-}
-
-/// Where and how `render` and `batch` draw.
-#[derive(clap::Args)]
-struct RenderArgs {
-    /// Output folder.
-    #[arg(long, default_value = "out")]
-    out: PathBuf,
-    /// Formats to write.
-    #[arg(long, value_delimiter = ',', default_value = "svg,png")]
-    format: Vec<Format>,
-    /// Label language.
-    #[arg(long, value_enum, default_value = "ru")]
-    lang: LangArg,
-    /// Resolution (mm) to which measured lengths are read before μ converts them; 0 = exact.
-    /// `render` reads as a hand construction does (0.5 mm), `batch` exactly (the answer key).
-    #[arg(long, allow_negative_numbers = true)]
-    drafting: Option<f64>,
-    /// PNG resolution, dots per inch: 1…2400, within 2^30 pixels per image (an A1 sheet up
-    /// to 1177 dpi, A0 up to 832 dpi).
-    #[arg(long, default_value_t = 150)]
-    dpi: u32,
-}
-
-#[derive(Subcommand)]
-enum Command {
-    /// Render the plates of scenes to DIR/<scene>/<plate>.<ext> (PDF: DIR/<scene>/<scene>.pdf).
-    Render {
-        /// Scene files (constructions/*.toml).
-        #[arg(required = true)]
-        scenes: Vec<PathBuf>,
-        #[command(flatten)]
-        how: RenderArgs,
-    },
-    /// Write the explanatory note of scenes: DIR/<scene>/<scene>-note.pdf (A4, ГОСТ 2.105
-    /// text, ГОСТ 2.104 frames), every section the scene's studies allow.
-    Note {
-        /// Scene files (constructions/*.toml).
-        #[arg(required = true)]
-        scenes: Vec<PathBuf>,
-        /// Output folder.
-        #[arg(long, default_value = "out")]
-        out: PathBuf,
-        /// The note's language.
-        #[arg(long, value_enum, default_value = "ru")]
-        lang: LangArg,
-        /// Resolution (mm) to which measured lengths are read before μ converts them, as a
-        /// hand construction does; 0 = exact.
-        #[arg(long, default_value_t = Drafting::HAND.resolution_mm(), allow_negative_numbers = true)]
-        drafting: f64,
-    },
-    /// Compare every value read off the plans and diagrams with its analytic twin.
-    Report {
-        /// Scene file.
-        scene: PathBuf,
-        /// Output format.
-        #[arg(long, value_enum, default_value = "md")]
-        format: ReportFormat,
-        /// Resolution (mm) to which measured lengths are read; 0 = exact.
-        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-        drafting: f64,
-        /// Language of the Markdown headings.
-        #[arg(long, value_enum, default_value = "ru")]
-        lang: LangArg,
-    },
-    /// Validate scenes and carry out their constructions without writing anything.
-    Check {
-        /// Scene files.
-        #[arg(required = true)]
-        scenes: Vec<PathBuf>,
-    },
-    /// Speed against error: sweep each method's resolution, time it against its error, and
-    /// write DIR/bench/bench.md, bench.json and bench.svg.
-    Bench {
-        /// Print the JSON instead of the Markdown table.
-        #[arg(long)]
-        json: bool,
-        /// Output folder.
-        #[arg(long, default_value = "out")]
-        out: PathBuf,
-        /// Small repetition counts (rough times, same errors).
-        #[arg(long)]
-        quick: bool,
-        /// Folder holding shaper.toml and four-bar.toml.
-        #[arg(long, default_value = "constructions")]
-        scenes: PathBuf,
-    },
-    /// Every variant of a class: the template scene with each row of a variant grid (CSV:
-    /// `variant,<scene key>,…`) set, rendered to DIR/<variant>/ on all cores, and the answer
-    /// key of the template's `[answer_key]` values, DIR/answer-key.csv and .pdf.
-    Batch {
-        /// The template scene (constructions/*.toml).
-        template: PathBuf,
-        /// The variant grid (CSV).
-        variants: PathBuf,
-        #[command(flatten)]
-        how: RenderArgs,
-    },
-    /// Check a student's table against the scene: each value (CSV: quantity, position,
-    /// value, unit[, method]) right within the drafting error of a hand construction, a
-    /// slip (scale, unit, sign, digits, another position or quantity, a known wrong formula)
-    /// or wrong, with its exact value; the marked-up table on standard output, and with
-    /// --pdf the sheet to return to the student.
-    Audit {
-        /// The scene the table belongs to (constructions/*.toml).
-        scene: PathBuf,
-        /// The student's table (CSV).
-        table: PathBuf,
-        /// Output format.
-        #[arg(long, value_enum, default_value = "md")]
-        format: AuditFormat,
-        /// Write the marked-up table as a PDF sheet to this file.
-        #[arg(long)]
-        pdf: Option<PathBuf>,
-        /// Language of the verdicts and the sheet.
-        #[arg(long, value_enum, default_value = "ru")]
-        lang: LangArg,
-    },
-    /// List the scenes in constructions/ with their plates.
-    List {
-        /// Folder to list.
-        #[arg(long, default_value = "constructions")]
-        dir: PathBuf,
-    },
-}
 
 /// A failure with its exit status; an empty message has been reported already.
 struct Failure {
@@ -229,6 +67,13 @@ fn main() -> ExitCode {
             lang,
         } => audit(&scene, &table, format, pdf.as_deref(), lang),
         Command::List { dir } => list(&dir),
+        Command::Serve { port, open } => tmm::studio::serve(port, |addr| {
+            emit(&format!("tmm studio: http://{addr}/ (Ctrl-C stops it)"));
+            if open {
+                tmm::studio::open_browser(&format!("http://{addr}/"));
+            }
+        })
+        .map_err(|e| Failure::input(e.to_string())),
         Command::Bench {
             json,
             out,

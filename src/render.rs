@@ -28,6 +28,9 @@ pub struct Formats {
     pub note: bool,
 }
 
+/// The PNG resolution `tmm render` writes unless asked otherwise, dots per inch.
+pub const DEFAULT_DPI: u32 = 150;
+
 /// How the plates are rendered.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {

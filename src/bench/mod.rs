@@ -30,6 +30,8 @@
 //! * **Class** — `tmm batch` over the four-bar's grid cycled to 3 000 variants and the
 //!   shaper's to 1 000 (30 and 10 in a quick bench), with the run's peak memory beside a tenth
 //!   of the class's.
+//! * **Studio** — every shipped scene's edit in `tmm serve`: its text to its sheets as SVG and
+//!   its report, the median of 7 edits.
 //! * **Batch** — `tmm batch` over the shipped shaper grid (30 variants; 2 in a quick bench),
 //!   every sheet as PNG, and its progress bar's updates timed on their own.
 //!
@@ -47,6 +49,7 @@ mod rack;
 mod rates;
 #[cfg(test)]
 pub(crate) mod sample;
+mod studio;
 mod table;
 mod throughput;
 
@@ -343,6 +346,7 @@ pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
     });
     throughput.extend(throughput::kernel(&four_bar, &shaper, reps)?);
     throughput.extend(throughput::drawing(opts, &shaper, &four_bar, reps)?);
+    throughput.extend(studio::edit_rows(reps)?);
     throughput.extend(classes);
     Ok(Bench {
         machine: machine(),

@@ -32,7 +32,7 @@ pub use crate::kinematics::KinematicsSpec;
 pub(crate) use drawing::DRAWN_MM;
 pub use error::{Problem, SceneError};
 pub use keys::Key;
-pub use load::{files_in, load, parse, read};
+pub use load::{files_in, load, parse, read, MAX_SCENE_BYTES};
 pub use model::{AnswerItem, Localised, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 pub use task::{Genre, Practicum, TaskText};
 

@@ -20,6 +20,7 @@ pub use layout::ScaleKey;
 mod kinematics;
 mod pack;
 mod positions;
+pub mod protocol;
 mod refit;
 mod task;
 

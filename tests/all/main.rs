@@ -63,4 +63,5 @@ mod seed_shaper;
 mod session;
 mod sheet_room;
 mod sheets;
+mod studio;
 mod trains;

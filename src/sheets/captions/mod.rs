@@ -15,6 +15,7 @@ mod note_cases;
 mod note_genres;
 mod note_kinematics;
 mod note_machines;
+mod protocol;
 pub(crate) mod symbols;
 
 pub(crate) use audit::AuditText;
@@ -31,6 +32,7 @@ pub(crate) use note_cases::CaseText;
 pub(crate) use note_genres::GenreText;
 pub(crate) use note_kinematics::KinematicsNote;
 pub(crate) use note_machines::MachinesNote;
+pub(crate) use protocol::StepText;
 pub(crate) use symbols::{quantity, subscripted};
 
 /// A word of the catalogue: its text in a language.

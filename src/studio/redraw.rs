@@ -1,0 +1,162 @@
+//! What an edit costs: a scene's text made into its sheets as SVG and its report — what the
+//! studio answers to each edit, and what `tmm bench` times per shipped scene.
+
+use crate::construct::Drafting;
+use crate::plate;
+use crate::scale::Lang;
+use crate::scene::{self, Scene};
+use crate::study::Session;
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// The language `s` names (`uk`), Russian when absent or unknown.
+pub(crate) fn lang_of(s: Option<&str>) -> Lang {
+    s.and_then(Lang::parse).unwrap_or_default()
+}
+
+/// A scene to render: its text, its stem (names it in messages and files), the language and
+/// the drafting resolution.
+#[derive(Debug, Clone, Deserialize)]
+pub struct Job {
+    /// The scene's text.
+    pub toml: String,
+    /// Its stem (`shaper`).
+    #[serde(default)]
+    pub stem: String,
+    /// The language (`ru`, `uk`, `en`).
+    #[serde(default)]
+    pub lang: String,
+    /// The drafting resolution, mm (0: exact).
+    #[serde(default = "hand")]
+    pub drafting: f64,
+}
+
+fn hand() -> f64 {
+    Drafting::HAND.resolution_mm()
+}
+
+/// A problem the page shows at its field: the key it names, when it names one.
+#[derive(Debug, Serialize)]
+pub struct Problem {
+    /// The scene key it names.
+    pub key: Option<String>,
+    /// The program's message.
+    pub message: String,
+}
+
+/// A sheet as the page shows it.
+#[derive(Debug, Serialize)]
+pub struct Sheet {
+    /// The sheet's name (`kinematics`, `forces-2`).
+    pub name: String,
+    /// The sheet as SVG.
+    pub svg: String,
+}
+
+/// What `POST /api/render` answers: the sheets, the report (as `tmm report --format json`),
+/// or the problems; with the time the server took.
+#[derive(Debug, Serialize, Default)]
+pub struct Redrawn {
+    /// Every sheet, in the set's order.
+    pub sheets: Vec<Sheet>,
+    /// The report, as `tmm report --format json` gives it.
+    pub report: Option<serde_json::Value>,
+    /// Why there are no sheets.
+    pub problems: Vec<Problem>,
+    /// The time taken, ms.
+    pub ms: f64,
+}
+
+/// The stem a page's scene is named by: its own letters, digits, `-` and `_` only.
+pub(crate) fn stem_of(stem: &str) -> String {
+    let clean: String = stem
+        .chars()
+        .filter(|c| c.is_ascii_alphanumeric() || matches!(c, '-' | '_'))
+        .take(64)
+        .collect();
+    if clean.is_empty() {
+        "scene".into()
+    } else {
+        clean
+    }
+}
+
+impl Job {
+    fn path(&self) -> PathBuf {
+        Path::new(&stem_of(&self.stem)).with_extension("toml")
+    }
+
+    pub(crate) fn lang(&self) -> Lang {
+        lang_of(Some(&self.lang))
+    }
+
+    /// The scene, or the problems to show.
+    pub(crate) fn scene(&self) -> Result<(Scene, Drafting), Vec<Problem>> {
+        let drafting = Drafting::new(self.drafting).ok_or_else(|| {
+            vec![Problem {
+                key: None,
+                message: format!("drafting {}: expected a resolution ≥ 0 mm", self.drafting),
+            }]
+        })?;
+        let s = scene::parse(&self.toml, &self.path()).map_err(|e| {
+            let listed: Vec<Problem> = e
+                .problems()
+                .iter()
+                .map(|p| Problem {
+                    key: Some(p.key.clone()),
+                    message: p.to_string(),
+                })
+                .collect();
+            match listed.is_empty() {
+                true => vec![Problem {
+                    key: toml_key(&e),
+                    message: e.to_string(),
+                }],
+                false => listed,
+            }
+        })?;
+        Ok((s, drafting))
+    }
+}
+
+/// The key a TOML reader's message names.
+fn toml_key(e: &scene::SceneError) -> Option<String> {
+    match e {
+        scene::SceneError::Toml { key, .. } => key.clone(),
+        _ => None,
+    }
+}
+
+/// The sheets and report of `job` (blocking): what the studio answers to an edit.
+pub fn redraw(job: &Job) -> Redrawn {
+    let t0 = Instant::now();
+    let mut out = Redrawn::default();
+    match job.scene() {
+        Err(p) => out.problems = p,
+        Ok((s, drafting)) => {
+            let session = Session::new(&s, drafting);
+            match crate::sheets::build_all(&session, job.lang()) {
+                Ok(plates) => {
+                    out.sheets = plates
+                        .iter()
+                        .map(|(_, p)| Sheet {
+                            name: p.name.clone(),
+                            svg: plate::to_svg(p),
+                        })
+                        .collect();
+                    out.report = session
+                        .report()
+                        .ok()
+                        .and_then(|r| serde_json::from_str(&r.to_json()).ok());
+                }
+                Err((kind, error)) => out.problems.push(Problem {
+                    key: None,
+                    message: format!("{}: {error}", kind.stem()),
+                }),
+            }
+        }
+    }
+    out.ms = t0.elapsed().as_secs_f64() * 1e3;
+    out
+}
