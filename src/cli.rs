@@ -179,4 +179,3 @@ pub(crate) enum Command {
         dir: PathBuf,
     },
 }
-
