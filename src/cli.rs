@@ -24,6 +24,9 @@ pub(crate) enum Format {
     Pdf,
     /// The scene's explanatory note, DIR/<scene>/<scene>-note.pdf (as `tmm note`).
     Note,
+    /// One self-contained page per scene, DIR/<scene>/<scene>.html: every sheet, the replay
+    /// of every figure and the report, nothing fetched (`render` only).
+    Html,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -174,7 +174,13 @@ fn render(paths: &[PathBuf], how: &RenderArgs) -> Result<(), Failure> {
         return Err(nothing_to_draw(s));
     }
     distinct_stems(&scenes, out)?;
-    let written = render::render(&scenes, out, &options).map_err(render_failure)?;
+    let mut files = render::files(&scenes, out, &options).map_err(render_failure)?;
+    if how.format.contains(&Format::Html) {
+        let (lang, drafting) = (options.lang, options.drafting);
+        let pages = tmm::studio::html::files(&scenes, out, lang, drafting);
+        files.extend(pages.map_err(render_failure)?);
+    }
+    let written = render::write(files).map_err(render_failure)?;
     for path in &written {
         emit(&path.display().to_string());
     }
@@ -192,6 +198,11 @@ fn read_text(path: &Path) -> Result<String, Failure> {
 /// is 1 when any did.
 fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> {
     use std::io::IsTerminal as _;
+    if how.format.contains(&Format::Html) {
+        return Err(Failure::input(
+            "--format html: a class's variants are drawn as sheets; write a variant's page with tmm render",
+        ));
+    }
     let options = render_options(how, Drafting::EXACT)?;
     let out = how.out.as_path();
     let scene = load(template)?;

@@ -423,7 +423,10 @@ pub fn session_files(
 }
 
 /// Write `files` atomically (all or none); the paths written, in order.
-fn write(files: Vec<(PathBuf, Vec<u8>)>) -> Result<Vec<PathBuf>, RenderError> {
+///
+/// # Errors
+/// A file that cannot be written (then nothing is).
+pub fn write(files: Vec<(PathBuf, Vec<u8>)>) -> Result<Vec<PathBuf>, RenderError> {
     plate::write_all_atomic(&files).map_err(|(path, error)| RenderError::Write { path, error })?;
     Ok(files.into_iter().map(|(path, _)| path).collect())
 }

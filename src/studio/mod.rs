@@ -12,11 +12,12 @@
 mod api;
 pub mod fields;
 pub mod gallery;
+pub mod html;
 mod redraw;
 mod replay;
 
 pub use redraw::{redraw, Job, Problem, Redrawn, Sheet};
-pub use replay::{replay, ReplayJob, ReplayStep, ReplayView};
+pub use replay::{replay, views_of, ReplayJob, ReplayStep, ReplayView};
 
 use axum::extract::DefaultBodyLimit;
 use axum::http::{header, StatusCode};

@@ -62,8 +62,13 @@ pub fn replay(r: &ReplayJob) -> Result<Vec<ReplayView>, Vec<Problem>> {
             message: format!("sheet {}: the scene has {} sheets", r.sheet, plates.len()),
         }]);
     };
+    Ok(views_of(sheet, lang))
+}
+
+/// The figures of `sheet` with their protocols in `lang`.
+pub fn views_of(sheet: &plate::Plate, lang: crate::scale::Lang) -> Vec<ReplayView> {
     let laid = plate::layout(sheet);
-    Ok(sheet
+    sheet
         .views
         .iter()
         .enumerate()
@@ -87,7 +92,7 @@ pub fn replay(r: &ReplayJob) -> Result<Vec<ReplayView>, Vec<Problem>> {
                 .map(|l| l.steps.iter().map(|s| s.0 as usize).collect())
                 .collect(),
         })
-        .collect())
+        .collect()
 }
 
 #[cfg(test)]

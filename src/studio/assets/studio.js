@@ -227,7 +227,7 @@ async function loadReplay() {
   const sheet = state.shown;
   let views = [];
   try {
-    views = await (await post("/api/replay", { ...job(), sheet })).json();
+    views = window.TMM_DATA ? window.TMM_DATA.replays[sheet] : await (await post("/api/replay", { ...job(), sheet })).json();
   } catch (e) {
     views = [];
   }
@@ -415,4 +415,13 @@ words();
 tabs();
 replayControls();
 panZoom();
-gallery();
+if (window.TMM_DATA) offline(); else gallery();
+
+// The page written by `tmm render --format html`: the scene's sheets, replays and report
+// are in the page itself, nothing is asked of a server.
+function offline() {
+  state.sheets = window.TMM_DATA.sheets;
+  state.shown = 0;
+  sheets();
+  report(window.TMM_DATA.report);
+}
