@@ -33,14 +33,57 @@ fn render_body(toml: &str, stem: &str) -> Vec<u8> {
     serde_json::to_vec(&serde_json::json!({ "toml": toml, "stem": stem })).expect("json")
 }
 
+/// `tmm serve --port 0` in a process of its own (its memory is its own), killed on drop.
+struct Served {
+    child: std::process::Child,
+    addr: SocketAddr,
+}
+
+impl Drop for Served {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+impl Served {
+    fn start() -> Served {
+        use std::io::BufRead as _;
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_tmm"))
+            .args(["serve", "--port", "0"])
+            .stdout(std::process::Stdio::piped())
+            .spawn()
+            .expect("tmm serve");
+        let mut line = String::new();
+        let stdout = child.stdout.take().expect("stdout");
+        std::io::BufReader::new(stdout)
+            .read_line(&mut line)
+            .expect("its address");
+        let addr = line
+            .split("http://")
+            .nth(1)
+            .and_then(|a| a.split('/').next())
+            .and_then(|a| a.parse().ok())
+            .unwrap_or_else(|| panic!("no address in «{line}»"));
+        Served { child, addr }
+    }
+
+    /// Its resident memory, KiB (Linux; 0 elsewhere).
+    fn resident_kib(&self) -> u64 {
+        std::fs::read_to_string(format!("/proc/{}/status", self.child.id()))
+            .ok()
+            .and_then(|s| {
+                let line = s.lines().find(|l| l.starts_with("VmRSS:"))?.to_string();
+                line.split_whitespace().nth(1)?.parse().ok()
+            })
+            .unwrap_or(0)
+    }
+}
+
 #[test]
 fn the_server_refuses_what_it_must_and_answers_the_rest() {
-    let runtime = tokio::runtime::Runtime::new().expect("tokio");
-    let addr = runtime.block_on(async {
-        let (listener, addr) = tmm::studio::bind(0).await.expect("bind");
-        tokio::spawn(tmm::studio::serve_on(listener));
-        addr
-    });
+    let served = Served::start();
+    let addr = served.addr;
     let four_bar = tmm::studio::gallery::text("four-bar").expect("shipped");
     // A body past the cap.
     let big = render_body(&"#".repeat(tmm::studio::MAX_BODY), "x");
@@ -73,6 +116,32 @@ fn the_server_refuses_what_it_must_and_answers_the_rest() {
         !svg.contains("<script>") && svg.contains("&lt;script&gt;"),
         "escaped"
     );
+    // Markup in every string of the scene: refused with the program's message, or drawn as
+    // text — never markup in a sheet.
+    let strings: Vec<String> = tmm::studio::fields::fields(four_bar)
+        .expect("fields")
+        .into_iter()
+        .filter(|f| f.value.starts_with('"'))
+        .map(|f| f.key)
+        .collect();
+    assert!(strings.len() >= 5, "{strings:?}");
+    for key in &strings {
+        let text =
+            tmm::studio::fields::set(four_bar, key, "\"<script>alert(1)</script>\"").expect("set");
+        let (status, body) = request(addr, "POST", "/api/render", &render_body(&text, "x"));
+        assert_eq!(status, 200, "{key}: {body}");
+        let v: serde_json::Value = serde_json::from_str(&body).expect("json");
+        let sheets = v["sheets"].as_array().cloned().unwrap_or_default();
+        assert!(
+            !sheets.is_empty() || !v["problems"].as_array().is_none_or(Vec::is_empty),
+            "{key}: neither sheets nor a message"
+        );
+        for sheet in sheets {
+            let svg = sheet["svg"].as_str().unwrap_or_default();
+            assert!(!svg.contains("<script"), "{key}: markup in the sheet");
+        }
+    }
+    let before = served.resident_kib();
     // Many edits at once: every one answered, each a sheet or "busy", none lost.
     let answers: Vec<u16> = std::thread::scope(|scope| {
         let all: Vec<_> = (0..24)
@@ -93,4 +162,11 @@ fn the_server_refuses_what_it_must_and_answers_the_rest() {
         answers.iter().filter(|s| **s == 200).count() >= tmm::studio::RUNNING,
         "{answers:?}"
     );
+    // Nothing is kept between requests: 24 edits leave the server about where one left it.
+    let grown = served.resident_kib().saturating_sub(before);
+    eprintln!(
+        "resident memory after 24 concurrent edits: +{} MiB",
+        grown / 1024
+    );
+    assert!(grown < 256 * 1024, "+{grown} KiB after 24 edits");
 }
