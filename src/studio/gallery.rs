@@ -5,6 +5,7 @@
 
 use crate::scale::Lang;
 use crate::scene::{self, PlateKind, Scene};
+use crate::sheets::captions::StudioText;
 use serde::Serialize;
 use std::path::Path;
 
@@ -142,20 +143,16 @@ impl Group {
 
     /// The section's heading.
     pub fn heading(self, lang: Lang) -> &'static str {
-        let [ru, uk, en] = match self {
-            Group::Project => ["Курсовой проект", "Курсовий проєкт", "Course project"],
-            Group::Linkage => ["Рычажные механизмы", "Важільні механізми", "Linkages"],
-            Group::Cam => ["Кулачковые механизмы", "Кулачкові механізми", "Cams"],
-            Group::Gears => ["Зубчатые зацепления", "Зубчасті зачеплення", "Gears"],
-            Group::Train => ["Зубчатые передачи", "Зубчасті передачі", "Gear trains"],
-            Group::Friction => ["Трение", "Тертя", "Friction"],
-            Group::Balancing => ["Уравновешивание", "Зрівноваження", "Balancing"],
+        let word = match self {
+            Group::Project => StudioText::Project,
+            Group::Linkage => StudioText::Linkages,
+            Group::Cam => StudioText::Cams,
+            Group::Gears => StudioText::Gears,
+            Group::Train => StudioText::Trains,
+            Group::Friction => StudioText::Friction,
+            Group::Balancing => StudioText::Balancing,
         };
-        match lang {
-            Lang::Ru => ru,
-            Lang::Uk => uk,
-            Lang::En => en,
-        }
+        word.get(lang)
     }
 }
 

@@ -28,7 +28,7 @@ struct Data<'a> {
 }
 
 /// `s` in JSON that may stand inside a `<script>` element: no `</` closes it early.
-fn script_json<T: Serialize>(value: &T) -> String {
+pub(super) fn script_json<T: Serialize>(value: &T) -> String {
     serde_json::to_string(value)
         .unwrap_or_else(|_| "null".into())
         .replace("</", "<\\/")
@@ -84,6 +84,7 @@ pub fn page(s: &Scene, lang: Lang, drafting: Drafting) -> Result<String, RenderE
             ("{{lang}}", code),
             ("{{title}}", &escape(&title)),
             ("{{style}}", STYLE),
+            ("{{words}}", &super::words_json()),
             ("{{data}}", &script_json(&data)),
             ("{{script}}", &script),
         ],
@@ -92,7 +93,7 @@ pub fn page(s: &Scene, lang: Lang, drafting: Drafting) -> Result<String, RenderE
 
 /// The template with each mark put in its value, in one pass: a value is never read for
 /// marks (a title `{{script}}` stays text).
-fn fill(template: &str, marks: &[(&str, &str)]) -> String {
+pub(super) fn fill(template: &str, marks: &[(&str, &str)]) -> String {
     let mut out = String::with_capacity(template.len());
     let mut rest = template;
     while let Some((at, (mark, value))) = marks

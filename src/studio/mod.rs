@@ -104,13 +104,35 @@ impl Studio {
     }
 }
 
+/// The page's words from the catalogue, as the script reads them: key → [ru, uk, en].
+fn words_json() -> String {
+    use crate::scale::Lang;
+    let words: serde_json::Map<String, serde_json::Value> = crate::sheets::captions::STUDIO_KEYS
+        .iter()
+        .map(|(key, w)| {
+            let all = [Lang::Ru, Lang::Uk, Lang::En].map(|l| w.get(l));
+            (key.to_string(), serde_json::json!(all))
+        })
+        .collect();
+    html::script_json(&words)
+}
+
+/// The page with its words in place (made once).
+fn page() -> &'static str {
+    static PAGE_WITH_WORDS: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    PAGE_WITH_WORDS.get_or_init(|| html::fill(PAGE, &[("{{words}}", &words_json())]))
+}
+
 /// The studio's routes.
 pub fn router() -> Router {
     let asset = |kind: &'static str, body: &'static str| {
         get(move || async move { ([(header::CONTENT_TYPE, kind)], body) })
     };
     Router::new()
-        .route("/", asset("text/html; charset=utf-8", PAGE))
+        .route(
+            "/",
+            get(|| async { ([(header::CONTENT_TYPE, "text/html; charset=utf-8")], page()) }),
+        )
         .route(
             "/studio.js",
             asset("text/javascript; charset=utf-8", SCRIPT),

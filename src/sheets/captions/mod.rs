@@ -16,6 +16,7 @@ mod note_genres;
 mod note_kinematics;
 mod note_machines;
 mod protocol;
+mod studio;
 pub(crate) mod symbols;
 
 pub(crate) use audit::AuditText;
@@ -33,6 +34,7 @@ pub(crate) use note_genres::GenreText;
 pub(crate) use note_kinematics::KinematicsNote;
 pub(crate) use note_machines::MachinesNote;
 pub(crate) use protocol::StepText;
+pub(crate) use studio::{StudioText, STUDIO_KEYS};
 pub(crate) use symbols::{quantity, subscripted};
 
 /// A word of the catalogue: its text in a language.

@@ -4,32 +4,8 @@
 // program's own, its texts escaped by the SVG writer.
 "use strict";
 
-const WORDS = {
-  gallery: ["Галерея", "Галерея", "Gallery"],
-  language: ["Язык", "Мова", "Language"],
-  drafting: ["Построение", "Побудова", "Drafting"],
-  hand: ["с точностью 0,5 мм", "з точністю 0,5 мм", "read to 0.5 mm"],
-  exact: ["точное", "точна", "exact"],
-  form: ["Форма", "Форма", "Form"],
-  text: ["Текст TOML", "Текст TOML", "TOML text"],
-  report: ["Графически и аналитически", "Графічно й аналітично", "Graphical and analytic"],
-  from: ["Новый из этого", "Новий з цього", "New from this"],
-  quantity: ["величина", "величина", "quantity"],
-  graphical: ["графически", "графічно", "graphical"],
-  analytic: ["аналитически", "аналітично", "analytic"],
-  error: ["δ, %", "δ, %", "δ, %"],
-  drawing: ["Строится…", "Будується…", "Drawing…"],
-  drawn: ["Построено за", "Побудовано за", "Drawn in"],
-  ms: ["мс", "мс", "ms"],
-  kept: ["Показаны последние построенные листы", "Показано останні побудовані аркуші", "The last sheets drawn are shown"],
-  scene: ["Сцена", "Сцена", "Scene"],
-  note: ["Записка", "Записка", "Note"],
-  set: ["Листы PDF", "Аркуші PDF", "Sheets PDF"],
-  csv: ["Отчёт CSV", "Звіт CSV", "Report CSV"],
-  busy: ["Сервер занят", "Сервер зайнятий", "The server is busy"],
-  replay: ["Повтор построения:", "Повтор побудови:", "Replay:"],
-  whole: ["— весь лист —", "— весь аркуш —", "— the whole sheet —"],
-};
+// The page's words, from the catalogue (`sheets/captions/studio.rs`): key → [ru, uk, en].
+const WORDS = window.TMM_WORDS;
 const LANGS = ["ru", "uk", "en"];
 
 const state = { stem: "", toml: "", fields: [], sheets: [], shown: 0, zoom: 0.25, pan: [10, 10], timer: 0, seq: 0 };
