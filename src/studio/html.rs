@@ -4,7 +4,7 @@
 //! a student opens it offline.
 
 use super::replay::{views_of, ReplayView};
-use super::{SCRIPT, STYLE};
+use super::{SCRIPT, SHEETS, STYLE};
 use crate::construct::Drafting;
 use crate::plate;
 use crate::render::RenderError;
@@ -85,6 +85,7 @@ pub fn page(s: &Scene, lang: Lang, drafting: Drafting) -> Result<String, RenderE
             ("{{title}}", &escape(&title)),
             ("{{style}}", STYLE),
             ("{{words}}", &super::words_json()),
+            ("{{sheets}}", SHEETS),
             ("{{data}}", &script_json(&data)),
             ("{{script}}", &script),
         ],

@@ -42,6 +42,9 @@ pub const WAITING: usize = 16;
 const PAGE: &str = include_str!("assets/index.html");
 const SCRIPT: &str = include_str!("assets/studio.js");
 const STYLE: &str = include_str!("assets/studio.css");
+/// The sheets, their replay and the report: the part of the page the served and the offline
+/// page share.
+const SHEETS: &str = include_str!("assets/sheets.html");
 
 /// Why the studio cannot serve.
 #[derive(Debug, Error)]
@@ -120,7 +123,12 @@ fn words_json() -> String {
 /// The page with its words in place (made once).
 fn page() -> &'static str {
     static PAGE_WITH_WORDS: std::sync::OnceLock<String> = std::sync::OnceLock::new();
-    PAGE_WITH_WORDS.get_or_init(|| html::fill(PAGE, &[("{{words}}", &words_json())]))
+    PAGE_WITH_WORDS.get_or_init(|| {
+        html::fill(
+            PAGE,
+            &[("{{words}}", &words_json()), ("{{sheets}}", SHEETS)],
+        )
+    })
 }
 
 /// The studio's routes.
