@@ -60,6 +60,14 @@ fn name_at(names: &[(DVec2, String)], p: DVec2) -> Option<&str> {
         .map(|(_, n)| n.as_str())
 }
 
+/// The name of the piece `a`–`b` by its two named ends (`BC`), when they are two points.
+fn pair_name(names: &[(DVec2, String)], a: DVec2, b: DVec2) -> Option<String> {
+    match (name_at(names, a), name_at(names, b)) {
+        (Some(x), Some(y)) if x != y => Some(format!("{x}{y}")),
+        _ => None,
+    }
+}
+
 fn mm(x: f64, lang: Lang) -> String {
     format_sig(if x.abs() < NOTHING_MM { 0.0 } else { x }, 4, lang)
 }
@@ -67,10 +75,7 @@ fn mm(x: f64, lang: Lang) -> String {
 /// The sentence of step `s`.
 fn sentence(figure: &Figure, s: &Step, names: &[(DVec2, String)], lang: Lang) -> String {
     let label = s.label.as_ref().map(|l| plain(&l.text)).unwrap_or_default();
-    let between = |a: DVec2, b: DVec2| match (name_at(names, a), name_at(names, b)) {
-        (Some(x), Some(y)) if x != y => format!("{x}{y}"),
-        _ => label.clone(),
-    };
+    let between = |a: DVec2, b: DVec2| pair_name(names, a, b).unwrap_or_else(|| label.clone());
     let point = |p: DVec2| name_at(names, p).map_or_else(|| label.clone(), str::to_string);
     let (text, n) = match (&s.item, s.role) {
         (_, Role::Hatch) => (StepText::Hatch, label.clone()),
@@ -170,12 +175,12 @@ fn line(
         let t = template.get(lang).replace("{p}", through);
         return fill(&t, &whose, "");
     }
-    match (name_at(names, a), name_at(names, b)) {
-        (Some(x), Some(y)) if x != y => fill(StepText::Line.get(lang), &format!("{x}{y}"), ""),
-        (Some(p), _) | (None, Some(p)) => {
-            fill(&StepText::Through.get(lang).replace("{p}", p), label, "")
-        }
-        (None, None) => fill(StepText::Line.get(lang), label, ""),
+    if let Some(n) = pair_name(names, a, b) {
+        return fill(StepText::Line.get(lang), &n, "");
+    }
+    match name_at(names, a).or_else(|| name_at(names, b)) {
+        Some(p) => fill(&StepText::Through.get(lang).replace("{p}", p), label, ""),
+        None => fill(StepText::Line.get(lang), label, ""),
     }
 }
 

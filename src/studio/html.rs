@@ -3,10 +3,10 @@
 //! with the page's script and style inline and nothing fetched: an instructor publishes it,
 //! a student opens it offline.
 
+use super::redraw::{report_of, sheets_of};
 use super::replay::{views_of, ReplayView};
 use super::{SCRIPT, SHEETS, STYLE};
 use crate::construct::Drafting;
-use crate::plate;
 use crate::render::RenderError;
 use crate::scale::Lang;
 use crate::scene::Scene;
@@ -64,18 +64,9 @@ pub fn page(s: &Scene, lang: Lang, drafting: Drafting) -> Result<String, RenderE
     let data = Data {
         title: &title,
         lang: code,
-        sheets: plates
-            .iter()
-            .map(|(_, p)| super::Sheet {
-                name: p.name.clone(),
-                svg: plate::to_svg(p),
-            })
-            .collect(),
+        sheets: sheets_of(&plates),
         replays: plates.iter().map(|(_, p)| views_of(p, lang)).collect(),
-        report: session
-            .report()
-            .ok()
-            .and_then(|r| serde_json::from_str(&r.to_json()).ok()),
+        report: report_of(&session),
     };
     let script = SCRIPT.replace("</", "<\\/");
     Ok(fill(

@@ -4,7 +4,7 @@
 use crate::construct::Drafting;
 use crate::plate;
 use crate::scale::Lang;
-use crate::scene::{self, Scene};
+use crate::scene::{self, PlateKind, Scene};
 use crate::study::Session;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -128,34 +128,48 @@ fn toml_key(e: &scene::SceneError) -> Option<String> {
     }
 }
 
+/// The sheets of `session` in `lang`, or the problem to show: the plate that cannot be built.
+pub(crate) fn plates_of(
+    session: &Session<'_>,
+    lang: Lang,
+) -> Result<Vec<(PlateKind, plate::Plate)>, Vec<Problem>> {
+    crate::sheets::build_all(session, lang).map_err(|(kind, error)| {
+        vec![Problem {
+            key: None,
+            message: format!("{}: {error}", kind.stem()),
+        }]
+    })
+}
+
+/// Every sheet as the page shows it: its name and its SVG.
+pub(crate) fn sheets_of(plates: &[(PlateKind, plate::Plate)]) -> Vec<Sheet> {
+    plates
+        .iter()
+        .map(|(_, p)| Sheet {
+            name: p.name.clone(),
+            svg: plate::to_svg(p),
+        })
+        .collect()
+}
+
+/// The session's report as `tmm report --format json` gives it; `None` when it has none.
+pub(crate) fn report_of(session: &Session<'_>) -> Option<serde_json::Value> {
+    let report = session.report().ok()?;
+    serde_json::from_str(&report.to_json()).ok()
+}
+
 /// The sheets and report of `job` (blocking): what the studio answers to an edit.
 pub fn redraw(job: &Job) -> Redrawn {
     let t0 = Instant::now();
     let mut out = Redrawn::default();
-    match job.scene() {
-        Err(p) => out.problems = p,
-        Ok((s, drafting)) => {
-            let session = Session::new(&s, drafting);
-            match crate::sheets::build_all(&session, job.lang()) {
-                Ok(plates) => {
-                    out.sheets = plates
-                        .iter()
-                        .map(|(_, p)| Sheet {
-                            name: p.name.clone(),
-                            svg: plate::to_svg(p),
-                        })
-                        .collect();
-                    out.report = session
-                        .report()
-                        .ok()
-                        .and_then(|r| serde_json::from_str(&r.to_json()).ok());
-                }
-                Err((kind, error)) => out.problems.push(Problem {
-                    key: None,
-                    message: format!("{}: {error}", kind.stem()),
-                }),
-            }
-        }
+    let drawn = job.scene().and_then(|(s, drafting)| {
+        let session = Session::new(&s, drafting);
+        let plates = plates_of(&session, job.lang())?;
+        Ok((sheets_of(&plates), report_of(&session)))
+    });
+    match drawn {
+        Ok((sheets, report)) => (out.sheets, out.report) = (sheets, report),
+        Err(problems) => out.problems = problems,
     }
     out.ms = t0.elapsed().as_secs_f64() * 1e3;
     out

@@ -4,7 +4,7 @@
 //! each of the view's labels in the order the SVG writes them, the steps it names, so that
 //! the page shows a label with its step.
 
-use super::redraw::{Job, Problem};
+use super::redraw::{plates_of, Job, Problem};
 use crate::plate::{self, text::plain};
 use crate::sheets::protocol::protocol;
 use crate::study::Session;
@@ -50,12 +50,7 @@ pub fn replay(r: &ReplayJob) -> Result<Vec<ReplayView>, Vec<Problem>> {
     let (s, drafting) = r.job.scene()?;
     let lang = r.job.lang();
     let session = Session::new(&s, drafting);
-    let plates = crate::sheets::build_all(&session, lang).map_err(|(kind, error)| {
-        vec![Problem {
-            key: None,
-            message: format!("{}: {error}", kind.stem()),
-        }]
-    })?;
+    let plates = plates_of(&session, lang)?;
     let Some((_, sheet)) = plates.get(r.sheet) else {
         return Err(vec![Problem {
             key: None,
