@@ -53,7 +53,8 @@ pub use fonts::font_database;
 pub use ink::{view_ink, Cell};
 pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM};
 pub use labels::{
-    layout, struck_dimension_texts, Layout, PlacedLabel, ViewLayout, COINCIDENT_MM, JOINT_SEPARATOR,
+    layout, struck_dimension_texts, Layout, Leader, PlacedLabel, ViewLayout, COINCIDENT_MM,
+    JOINT_SEPARATOR,
 };
 pub use pdf::{plates_to_pdf, to_pdf, to_pdf_parsed, PdfError};
 pub use raster::{

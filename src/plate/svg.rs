@@ -1,7 +1,7 @@
 //! The SVG writer: a plate as one deterministic SVG document printing 1:1 in millimetres.
 
 use super::items::step_marks;
-use super::labels::{layout, text_block_lines, Layout};
+use super::labels::{layout, text_block_lines, Layout, Leader};
 use super::path::{num, Map, PathData};
 use super::sheet::{frame_marks, title_block_marks};
 use super::style::{Mark, Paint, Pen};
@@ -129,6 +129,22 @@ fn group(id: &str, marks: Vec<Mark>) -> Group {
     g
 }
 
+/// A leader as drawn: its line and shelf, and its dot on an item's line.
+fn leader_group(l: &Leader) -> Group {
+    let mut line = PathData::new(Map::SHEET);
+    line.polyline(&[l.from, l.knee, l.end]);
+    let g = Group::new().add(path(Paint::Stroke(Pen::THIN), line));
+    if !l.dot {
+        return g;
+    }
+    let mut dot = PathData::new(Map::SHEET);
+    dot.circle(l.to, LEADER_DOT_MM);
+    g.add(path(Paint::Solid, dot))
+}
+
+/// The radius of a leader's dot on an item's line, mm.
+const LEADER_DOT_MM: f64 = 0.35;
+
 fn path(paint: Paint, d: PathData) -> Path {
     let p = Path::new().set("d", d.into_string());
     match paint {
@@ -161,14 +177,16 @@ fn view_group(k: usize, view: &View, laid: &Layout, captioned: bool) -> Group {
             step_marks(step, map),
         ));
     }
-    let labels: Vec<Mark> = laid
-        .labels
-        .iter()
-        .filter(|l| l.view == k)
-        .map(|l| Mark::Text(l.placed.clone()))
-        .collect();
-    if !labels.is_empty() {
-        g = g.add(group(&format!("view-{k}-labels"), labels));
+    let id = format!("view-{k}-labels");
+    let mut labels = Group::new().set("id", id.as_str());
+    for (n, l) in laid.labels.iter().filter(|l| l.view == k).enumerate() {
+        if let Some(leader) = &l.leader {
+            labels = labels.add(leader_group(leader).set("id", format!("{id}-leader-{}", n + 1)));
+        }
+        labels = labels.add(Blob::new(l.placed.to_xml(&format!("{id}-text-{}", n + 1))));
+    }
+    if laid.labels.iter().any(|l| l.view == k) {
+        g = g.add(labels);
     }
     if let Some(caption) = laid.views[k].caption_text.as_ref().filter(|_| captioned) {
         g = g.add(group(

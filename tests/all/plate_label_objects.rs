@@ -5,10 +5,12 @@
 //!   step's item: a marked point, a pair, a block, an end of a line or vector);
 //! - a label of a line, a vector or an arc (a force, an arm, a couple, a dimension) is
 //!   nearer to its own item than to any other line of its view (by [`NEARER_MM`]): a reader
-//!   takes a label for the nearest line's.
+//!   takes a label for the nearest line's;
+//! - or it is written on a leader's shelf (ГОСТ 2.316) whose line ends on its object, within
+//!   [`LEADER_AT_MM`]; no leader runs through another label or crosses another leader.
 //!
-//! The placer keeps both itself (it pays for a label beyond its reach or nearer another
-//! line); where a crowded figure leaves it no place both clear and at its object, the
+//! The placer keeps these itself (it pays for a label beyond its reach or nearer another
+//! line, and takes a leader where that costs less); where a crowded figure leaves it no place both clear and at its object, the
 //! failure is listed in [`EXEMPT`] with the reason; every exemption must still be needed.
 
 use crate::plate_model::{
@@ -26,98 +28,37 @@ use tmm::scale::Lang;
 /// dot, issue 45).
 const POINT_REACH_MM: f64 = 7.5;
 
+/// A leader ends on its object: within this of its point or its item's line (a thin line's
+/// width: an arc is flattened to chords differently here and in the placer), mm.
+const LEADER_AT_MM: f64 = 0.25;
+
 /// A label of an item counts as nearer another line only by more than this, mm (two lines
 /// of a polygon meeting at a vertex are as near as each other there).
 const NEARER_MM: f64 = 0.5;
 
 /// Failures known and stated: (sheet, the note of the label's step, why) — where the
 /// placer, which pays for a label beyond its reach or nearer another line (and pays more
-/// for a line striking through a label), finds no place both clear and at its object. A
-/// failure matches an entry of its sheet and its step's note (the same in every language).
+/// for a line striking through a label), finds no place both clear and at its object, on a
+/// leader either. A failure matches an entry of its sheet and its step's note (the same in
+/// every language).
 const EXEMPT: &[(&str, &str, &str)] = &[
-    // Labels of points in a fan of lines: the placer's nearest clear place is beyond reach.
-    ("tangent/kinematics", "fixed pivot O", FAN_POINT),
-    ("six-bar/kinematics", "image s_4", FAN_POINT),
-    ("six-bar/kinematics-2", "image s_4′", FAN_POINT),
-    ("cam-pz5/cam", "cam centre O_1", FAN_POINT),
-    ("friction-follower/friction", "the pivot O₂", FAN_POINT),
-    ("six-bar/kinematics", "fixed pivot O", FAN_POINT),
-    (
-        "slider-crank/kinematics",
-        "point S_2 of position 1",
-        FAN_POINT,
-    ),
-    ("tangent/kinematics", "pole", PLANS),
-    // Labels of items among other lines nearer than their own at every clear place.
-    (
-        "four-bar/kinematics",
-        "angle θ between the crank's extreme positions",
-        ANGLES,
-    ),
-    (
-        "v-engine/kinematics",
-        "angle θ between the crank's extreme positions",
-        ANGLES,
-    ),
-    ("six-bar/kinematics", "swing angle of the rocker", ANGLES),
-    ("shaper/dynamics", "pole distance H", DYNAMICS),
+    // Dimension texts: placed over their dimension lines by their own rule (ГОСТ 2.307).
+    ("shaper/dynamics", "pole distance H", DIMENSION),
+    ("friction/friction", "one turn unrolled: πd₁", DIMENSION),
+    // A curve's label on the blocking contour.
     ("gears-pz3/gears", "the curve s_a1 ≥ 0.25m", CONTOUR),
-    ("gears-pz3/gears", "the curve s_a2 ≥ 0.25m", CONTOUR),
-    (
-        "friction/friction",
-        "one turn unrolled: πd₁",
-        FRICTION_SCHEMES,
-    ),
-    (
-        "friction/friction",
-        "α, P from the normal",
-        FRICTION_SCHEMES,
-    ),
-    ("shaper/forces", "F_{и4} at its image", LEVER_RAYS),
-    ("shaper/forces", "F′_{и3} at its image", LEVER_RAYS),
-    ("shaper/forces", "G_{3} at its image", LEVER_RAYS),
-    ("shaper/forces", "arm of G_{4}", LEVER_RAYS),
-    ("v-engine/forces", "F′_{и2} at its image", LEVER_RAYS),
-    ("v-engine/forces", "F′_{и4} at its image", LEVER_RAYS),
-    ("v-engine/forces", "arm of G_{4}", LEVER_RAYS),
-    ("v-engine/forces", "arm of F″_{и2}", LEVER_RAYS),
-    ("v-engine/forces-2", "F′_{и2} at its image", LEVER_RAYS),
-    ("shaper/forces", "detail: read R_{3-4}", DETAIL_ZONE),
-    ("shaper/forces", "lay off F_{и3}", DETAIL_ZONE),
-    ("shaper/forces-2", "lay off G_{3}", DETAIL_ZONE),
-    ("v-engine/forces", "lay off R^τ_{1-4}", DETAIL_ZONE),
-    ("v-engine/forces-2", "detail: lay off F_{д3}", DETAIL_ZONE),
-    ("v-engine/forces-2", "lay off F_{и2}", DETAIL_ZONE),
-    ("v-engine/forces-2", "detail: read R_{1-2}", DETAIL_ZONE),
 ];
 
-const FAN_POINT: &str = "a point inside a fan or ring of lines drawn about it (the crank's \
-    twelve positions as spokes about O, the connecting rod's positions about S₂, the \
-    direction lines through a plan's image, the circle and support about a pivot): every place within the reach is struck through by \
-    one of them or covers another label, so the placer pays the reach's cost and writes the \
-    label at the nearest clear place, 8–11 mm out; the fix is a leader from the point to the \
-    label (ГОСТ 2.316), not made in this round";
-const PLANS: &str = "the pole of a crowded plan (its images and their direction lines \
-    within 10 mm at the scene's μ_v): every place within the reach is struck or covers \
-    another label (the plans' scales are other work of issue 45)";
-const ANGLES: &str = "an angle's label on the plan of positions (θ, ψ) between its arc and \
-    the trajectories and link positions crossing it: every place beside the arc is struck \
-    or nearer one of them by 0,6–2,4 mm (the kinematic sheets' scales are other work of \
-    issue 45)";
-const DYNAMICS: &str = "the pole distance H of the energy–mass fan written between the rays \
-    it measures, 0,7 mm nearer ray 11 than the distance's own line";
+const DIMENSION: &str = "a dimension's text, which the dimension placer writes over its \
+    dimension line, 1,0 mm from it, where the first place clear of every line is 0,3 mm from \
+    another line of its scheme (ray 11 of the energy–mass fan; the load beside the thread's \
+    development): the text over its own line is how ГОСТ 2.307 reads a dimension; the rule \
+    of the nearer line is not the dimension placer's, and a text on a leader's shelf \
+    (ГОСТ 2.307 where there is no room) is not made for dimensions";
 const CONTOUR: &str = "a blocking-contour curve's text (s_a ≥ 0,25m) where the curves, the \
-    axes x₁, x₂ and the isolines cross every 5–10 mm: written beside its curve but across \
-    an axis";
-const LEVER_RAYS: &str = "on Zhukovsky's lever a force's or an arm's label among the rays \
-    of the turned plan, the arms and the lines of action converging on the pole and the \
-    images (a dozen lines within 10 mm): every clear place is 0,5–2 mm nearer another of \
-    them (an arm a few millimetres long at the pole, 10 mm)";
-const DETAIL_ZONE: &str = "a polygon's short force beside its detail's zone circle (the \
-    circle drawn round the forces the detail enlarges), or in the detail among its closing \
-    lines: its clear places are nearer the circle or a closing line by 0,5–4 mm";
-const FRICTION_SCHEMES: &str = "a scheme's label 0,5–1 mm nearer a thin line of the \
-    scheme than its own (the thread's development beside the load, the cone at φ₀)";
+    axes x₁, x₂ and the isolines cross every 5–10 mm: written beside its curve, 1,4 mm from \
+    it, with another curve touching its box; every place on a leader crosses more curves than \
+    that costs";
 
 /// Every label of `plate` away from its object: the note of its (first) step, and
 /// `view N “text”: why`.
@@ -137,6 +78,12 @@ fn labels_away_in(plate: &Plate, l: &Layout) -> Vec<(String, String)> {
                 format!("view {} “{}”: {why}", x.view, x.text),
             )
         };
+        if let Some(l) = &x.leader {
+            if let Some(d) = leader_miss(view, first, x.steps.len() > 1, l.to) {
+                out.push(say(format!("its leader ends {d:.2} mm from its object")));
+            }
+            continue;
+        }
         let (lo, hi) = (x.rect.min, x.rect.max);
         if names_point(first) || x.steps.len() > 1 {
             let Some(p) = named_point(first, f64::INFINITY) else {
@@ -170,6 +117,20 @@ fn labels_away_in(plate: &Plate, l: &Layout) -> Vec<(String, String)> {
         }
     }
     out
+}
+
+/// How far a leader ending at `to` (sheet mm) misses the object of the label of `step`
+/// (`joint`: a joint label, which names a point), when by more than [`LEADER_AT_MM`].
+fn leader_miss(view: &View, step: &tmm::construct::Step, joint: bool, to: DVec2) -> Option<f64> {
+    let d = if names_point(step) || joint {
+        on_sheet(view, named_point(step, f64::INFINITY)?).distance(to)
+    } else {
+        lines(step)
+            .into_iter()
+            .map(|(a, b)| box_to_segment(to, to, on_sheet(view, a), on_sheet(view, b)))
+            .fold(f64::INFINITY, f64::min)
+    };
+    (d > LEADER_AT_MM).then_some(d)
 }
 
 /// The nearest line of `view` to the box `lo`–`hi` not drawn by the steps `own`, with the
@@ -293,4 +254,106 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
     // Laid out by the placer, the reaction's label is at its own side.
     let placed: Vec<String> = labels_away(&plate).into_iter().map(|x| x.1).collect();
     assert!(!placed.join("\n").contains("“R_{1-2}”:"), "{placed:?}");
+}
+
+/// Where the leaders of the layout `l` break ГОСТ 2.316: a leader (its line or shelf) through
+/// another label's text, or two leaders crossing; `view N “text”: why` for each.
+fn leaders_crossing(l: &Layout) -> Vec<String> {
+    let mut out = Vec::new();
+    for (i, x) in l.labels.iter().enumerate() {
+        let Some(leader) = &x.leader else { continue };
+        let pieces = leader.pieces();
+        for (j, y) in l.labels.iter().enumerate().filter(|(j, _)| *j != i) {
+            let inside = |p: DVec2| {
+                p.x > y.rect.min.x && p.x < y.rect.max.x && p.y > y.rect.min.y && p.y < y.rect.max.y
+            };
+            // Sampled every 0,1 mm: a leader through a text crosses it over more than that.
+            let through = pieces.iter().any(|s| {
+                let n = (s.length() / 0.1).ceil().max(1.0) as usize;
+                (0..=n).any(|k| inside(s.eval(k as f64 / n as f64)))
+            });
+            if through {
+                out.push(format!(
+                    "view {} “{}”: its leader runs through “{}”",
+                    x.view, x.text, y.text
+                ));
+            }
+            let crosses = y.leader.is_some_and(|other| {
+                other
+                    .pieces()
+                    .iter()
+                    .any(|o| pieces.iter().any(|s| s.crossing(o).is_some()))
+            });
+            if crosses && j > i {
+                out.push(format!(
+                    "view {} “{}”: its leader crosses “{}”'s",
+                    x.view, x.text, y.text
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// No leader on any sheet runs through another label or crosses another leader, in every
+/// configuration; and the shipped sheets write some labels on leaders (the rule is checked
+/// on real leaders).
+#[test]
+fn leaders_cross_no_label_and_no_leader() {
+    let mut found = Vec::new();
+    let mut leaders = 0;
+    for (lang, drafting, said) in CONFIGURATIONS {
+        for (name, plate) in every_sheet_in(lang, drafting) {
+            let l = layout(&plate);
+            leaders += l.labels.iter().filter(|x| x.leader.is_some()).count();
+            found.extend(
+                leaders_crossing(&l)
+                    .into_iter()
+                    .map(|w| format!("{said}: {name}: {w}")),
+            );
+        }
+    }
+    assert!(found.is_empty(), "{}", found.join("\n"));
+    assert!(leaders >= 40, "{leaders} leaders in 4 configurations");
+}
+
+/// The leader rules fail where they should: a label moved onto another's leader, a leader
+/// moved off its object.
+#[test]
+fn the_leader_rules_fail_on_a_plate_built_to_break_them() {
+    let plate = sheet("shaper/forces");
+    let mut l = layout(&plate);
+    let on = l
+        .labels
+        .iter()
+        .position(|x| x.leader.is_some())
+        .expect("a leader on shaper/forces");
+    let leader = l.labels[on].leader.expect("leader");
+    assert!(leaders_crossing(&l).is_empty());
+    assert!(labels_away_in(&plate, &l)
+        .iter()
+        .all(|x| !x.1.contains("its leader")));
+    // Another label of its view written over the middle of its leader's line.
+    let other = (0..l.labels.len())
+        .find(|&k| k != on && l.labels[k].view == l.labels[on].view)
+        .expect("another label");
+    let mid = leader.pieces()[0].eval(0.5);
+    let size = l.labels[other].rect.max - l.labels[other].rect.min;
+    l.labels[other].rect.min = mid - size * 0.5;
+    l.labels[other].rect.max = mid + size * 0.5;
+    let crossing = leaders_crossing(&l).join("\n");
+    assert!(crossing.contains("its leader runs through"), "{crossing}");
+    // The leader moved 1 mm off its object.
+    let mut l = layout(&plate);
+    if let Some(x) = l.labels[on].leader.as_mut() {
+        x.to += DVec2::new(0.8, -0.6);
+    }
+    let away: Vec<String> = labels_away_in(&plate, &l)
+        .into_iter()
+        .map(|x| x.1)
+        .collect();
+    assert!(
+        away.iter().any(|w| w.contains("its leader ends")),
+        "{away:?}"
+    );
 }

@@ -10,7 +10,8 @@
 //! at five distances, a joint label also from each corner of its point — and keeps the one
 //! that collides least with what is already placed (labels, captions, text blocks, tables)
 //! and with the lines and symbols of the drawing (the main lines weigh most), never leaving
-//! the frame nor entering the title block when it can help it. Crowded labels are placed first; the order is deterministic, so is the layout.
+//! the frame nor entering the title block when it can help it. A label left away from its
+//! object takes a leader line to it where one costs less ([`Leader`], ГОСТ 2.316). Crowded labels are placed first; the order is deterministic, so is the layout.
 //! The SVG writer writes the texts from this layout, and the tests check its boxes.
 
 use super::items::{short_vector, step_outlines, Outline, Shape, JOINT_RADIUS_MM};
@@ -52,6 +53,8 @@ pub struct PlacedLabel {
     pub anchor: DVec2,
     /// The box its text covers, sheet mm.
     pub rect: Rect,
+    /// Its leader line, where it is written away from its object ([`Leader`]).
+    pub leader: Option<Leader>,
     /// The text as written.
     pub(crate) placed: Placed,
 }
@@ -271,6 +274,7 @@ fn requests(
                     text: text.clone(),
                     anchor: map.pt((*from + *to) * 0.5),
                     rect: placed.bounds(),
+                    leader: None,
                     placed,
                 });
             }
@@ -407,7 +411,9 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
 
 mod candidates;
 mod dimension;
+mod leader;
 pub use dimension::struck_dimension_texts;
+pub use leader::Leader;
 mod place;
 #[cfg(test)]
 mod tests;

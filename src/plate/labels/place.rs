@@ -2,6 +2,7 @@
 //! lines already on the view, in a fixed order with repair rounds.
 
 use super::candidates::{box_distance, candidates, near_bound, NEAR_RING_MM, POINT_REACH_MM};
+use super::leader::{self, Leader};
 use super::*;
 
 pub(super) struct Placer<'a> {
@@ -63,6 +64,8 @@ struct Job<'a> {
     text: String,
     extent: Extent,
     candidates: Vec<Rect>,
+    /// The leader of each candidate, where its candidates are on leaders ([`leader`]).
+    leaders: Vec<Leader>,
     near: Rect,
     /// The outlines near it, with their boxes.
     lines: Vec<(Rect, &'a Outline)>,
@@ -79,6 +82,13 @@ struct Job<'a> {
 struct Slot {
     rect: Rect,
     rank: usize,
+    leader: Option<Leader>,
+}
+
+/// The other texts near a label, and the other labels' leaders.
+struct Others {
+    texts: Vec<Rect>,
+    leaders: Vec<Leader>,
 }
 
 impl<'a> Placer<'a> {
@@ -140,7 +150,7 @@ impl<'a> Placer<'a> {
         let order: Vec<usize> = order.into_iter().map(|o| o.3).collect();
         let mut slots: Vec<Option<Slot>> = vec![None; jobs.len()];
         for &i in &order {
-            slots[i] = Some(self.best(&jobs, &slots, i).0);
+            slots[i] = Some(self.best(&jobs[i], &slots, i).0);
         }
         for _ in 0..REPAIR_ROUNDS {
             let mut moved = false;
@@ -151,18 +161,48 @@ impl<'a> Placer<'a> {
                 break;
             }
         }
+        self.put_on_leaders(&jobs, &mut slots, &order, &points);
         out.extend(jobs.into_iter().zip(slots).filter_map(|(j, s)| {
-            let rect = s?.rect;
+            let Slot { rect, leader, .. } = s?;
             Some(PlacedLabel {
                 view: j.request.view,
                 steps: j.request.steps,
                 anchor: j.request.anchor,
                 placed: written(&j.text, &j.extent, rect),
                 rect,
+                leader,
                 text: j.text,
             })
         }));
         out
+    }
+
+    /// Every label whose place stands away from its object (beyond its reach, nearer another
+    /// line) takes the best place on a leader instead where that costs less, in the placing
+    /// order, each among the places and leaders the others have by then. A label kept near its
+    /// point by its own bound keeps its place.
+    fn put_on_leaders(
+        &self,
+        jobs: &[Job],
+        slots: &mut [Option<Slot>],
+        order: &[usize],
+        points: &[(usize, DVec2)],
+    ) {
+        for &i in order {
+            let (job, Some(now)) = (&jobs[i], slots[i]) else {
+                continue;
+            };
+            if job.request.within.is_some() || away(job, &now.rect, 0.0) == 0.0 {
+                continue;
+            }
+            let on_leader = self.leader_job(job.request.clone(), points);
+            let others = self.others_near(job.near, slots, i);
+            let cost_now = self.cost(job, &now, &others, f64::INFINITY);
+            let (slot, cost) = self.best(&on_leader, slots, i);
+            if cost < cost_now - 1e-9 {
+                slots[i] = Some(slot);
+            }
+        }
     }
 
     /// A request with its candidates and what lies near them.
@@ -170,6 +210,30 @@ impl<'a> Placer<'a> {
         let text = request.text();
         let extent = measure(&text, LABEL_HEIGHT_MM);
         let candidates = candidates(&request, extent.max - extent.min);
+        self.job_at(request, points, text, extent, (candidates, Vec::new()))
+    }
+
+    /// The job of `request` on leaders: its places on a leader ([`leader::candidates`]).
+    fn leader_job(&self, request: Request, points: &[(usize, DVec2)]) -> Job<'a> {
+        let text = request.text();
+        let extent = measure(&text, LABEL_HEIGHT_MM);
+        let (rects, leaders) = leader::candidates(&request, extent.max - extent.min)
+            .into_iter()
+            .unzip();
+        let mut job = self.job_at(request, points, text, extent, (rects, leaders));
+        job.rank_cost = leader::RANK;
+        job
+    }
+
+    /// A job of `request` with its `candidates` (and their leaders, where they have any).
+    fn job_at(
+        &self,
+        request: Request,
+        points: &[(usize, DVec2)],
+        text: String,
+        extent: Extent,
+        (candidates, leaders): (Vec<Rect>, Vec<Leader>),
+    ) -> Job<'a> {
         // A near label's candidates are denser (see [`candidates`]): each costs less, so
         // that a millimetre further out costs what it costs any label.
         let rank_cost = if near_bound(&request).is_some() {
@@ -179,7 +243,11 @@ impl<'a> Placer<'a> {
         };
         let near = candidates
             .iter()
-            .fold(Rect::new(request.anchor, request.anchor), |r, c| r.union(c))
+            .copied()
+            .chain(leaders.iter().map(|l| Rect::new(l.to, l.to)))
+            .fold(Rect::new(request.anchor, request.anchor), |r, c| {
+                r.union(&c)
+            })
             .inflate(CLEARANCE_MM);
         // Every view's lines: a long joint label must not run over the next plan either.
         let lines = self
@@ -214,6 +282,7 @@ impl<'a> Placer<'a> {
             text,
             extent,
             candidates,
+            leaders,
             near,
             lines,
             rivals,
@@ -222,20 +291,21 @@ impl<'a> Placer<'a> {
         }
     }
 
-    /// The least colliding candidate of job `i` with the other labels where `slots` has them
-    /// (the first of equals), and its cost.
-    fn best(&self, jobs: &[Job], slots: &[Option<Slot>], i: usize) -> (Slot, f64) {
-        let job = &jobs[i];
-        let others = self.texts_near(jobs, slots, i);
+    /// The least colliding candidate of `job`, label `i`, with the other labels where `slots`
+    /// has them (the first of equals), and its cost.
+    fn best(&self, job: &Job, slots: &[Option<Slot>], i: usize) -> (Slot, f64) {
+        let others = self.others_near(job.near, slots, i);
         let mut best = (
             Slot {
                 rect: job.candidates[0],
                 rank: 0,
+                leader: job.leaders.first().copied(),
             },
             f64::INFINITY,
         );
         for (rank, &rect) in job.candidates.iter().enumerate() {
-            let slot = Slot { rect, rank };
+            let leader = job.leaders.get(rank).copied();
+            let slot = Slot { rect, rank, leader };
             let cost = self.cost(job, &slot, &others, best.1);
             if cost < best.1 {
                 best = (slot, cost);
@@ -244,20 +314,26 @@ impl<'a> Placer<'a> {
         best
     }
 
-    /// The boxes of texts near job `i`: the fixed ones and the other placed labels.
-    fn texts_near(&self, jobs: &[Job], slots: &[Option<Slot>], i: usize) -> Vec<Rect> {
-        let near = jobs[i].near;
-        let placed = slots
-            .iter()
-            .enumerate()
-            .filter(|(j, _)| *j != i)
-            .filter_map(|(_, s)| s.map(|s| s.rect));
-        self.fixed
-            .iter()
-            .copied()
-            .chain(placed)
-            .filter(|t| t.intersects(&near))
-            .collect()
+    /// The boxes of texts within `near` — the fixed ones and the placed labels but `i` — and
+    /// the other labels' leaders.
+    fn others_near(&self, near: Rect, slots: &[Option<Slot>], i: usize) -> Others {
+        let placed = || {
+            slots
+                .iter()
+                .enumerate()
+                .filter(|(j, _)| *j != i)
+                .filter_map(|(_, s)| *s)
+        };
+        Others {
+            texts: self
+                .fixed
+                .iter()
+                .copied()
+                .chain(placed().map(|s| s.rect))
+                .filter(|t| t.intersects(&near))
+                .collect(),
+            leaders: placed().filter_map(|s| s.leader).collect(),
+        }
     }
 
     /// Move label `i` if it collides with another text and a better place is found for it
@@ -277,10 +353,10 @@ impl<'a> Placer<'a> {
         let cost_now = self.cost(
             &jobs[i],
             &now,
-            &self.texts_near(jobs, slots, i),
+            &self.others_near(jobs[i].near, slots, i),
             f64::INFINITY,
         );
-        let (alone, cost) = self.best(jobs, slots, i);
+        let (alone, cost) = self.best(&jobs[i], slots, i);
         if cost < cost_now - 1e-9 {
             slots[i] = Some(alone);
             return true;
@@ -293,16 +369,16 @@ impl<'a> Placer<'a> {
                 self.cost(
                     &jobs[j],
                     &s,
-                    &self.texts_near(jobs, &without, j),
+                    &self.others_near(jobs[j].near, &without, j),
                     f64::INFINITY,
                 )
             };
             let mut trial = slots.to_vec();
             trial[i] = None;
             trial[j] = None;
-            let (si, ci) = self.best(jobs, &trial, i);
+            let (si, ci) = self.best(&jobs[i], &trial, i);
             trial[i] = Some(si);
-            let (sj, cj) = self.best(jobs, &trial, j);
+            let (sj, cj) = self.best(&jobs[j], &trial, j);
             if ci + cj < before - 1e-9 {
                 slots[i] = Some(si);
                 slots[j] = Some(sj);
@@ -315,17 +391,20 @@ impl<'a> Placer<'a> {
     /// What placing `job` at `slot` costs among the texts `others`; once the sum (of terms
     /// never negative) reaches `bound`, the sum so far (the slot cannot beat a slot of that
     /// cost).
-    fn cost(&self, job: &Job, slot: &Slot, others: &[Rect], bound: f64) -> f64 {
+    fn cost(&self, job: &Job, slot: &Slot, others: &Others, bound: f64) -> f64 {
         let rect = &slot.rect;
         let mut cost = slot.rank as f64 * job.rank_cost;
-        if !self.frame.contains(rect) || self.forbidden.iter().any(|f| f.intersects(rect)) {
+        let drawn = slot.leader.map_or(*rect, |l| {
+            rect.union(&Rect::new(l.knee.min(l.end), l.knee.max(l.end)))
+        });
+        if !self.frame.contains(&drawn) || self.forbidden.iter().any(|f| f.intersects(&drawn)) {
             cost += OUTSIDE;
         }
         if cost >= bound {
             return cost;
         }
         let padded = rect.inflate(CLEARANCE_MM * 0.5);
-        for t in others {
+        for t in &others.texts {
             let a = t.inflate(CLEARANCE_MM * 0.5).overlap(&padded);
             if a > 0.0 {
                 cost += OVER_TEXT + TEXT_AREA * a;
@@ -336,22 +415,19 @@ impl<'a> Placer<'a> {
                 cost += OVER_POINT;
             }
         }
-        if job.request.names_of == Names::Point {
-            let beyond = box_distance(rect, job.request.anchor) - POINT_REACH_MM;
-            if beyond > 1e-9 {
-                cost += (BEYOND + BEYOND_MM * beyond).min(AWAY_MAX);
+        cost = match slot.leader {
+            None => away(job, rect, cost),
+            Some(l) => {
+                cost + leader::cost(
+                    &l,
+                    rect,
+                    &job.lines,
+                    &job.points,
+                    &others.texts,
+                    &others.leaders,
+                )
             }
-        }
-        if let Some(own) = own_distance(&job.request.own, rect) {
-            let rival = job
-                .rivals
-                .iter()
-                .map(|(a, b)| rect_segment_distance(rect, *a, *b))
-                .fold(f64::INFINITY, f64::min);
-            if rival + NEARER_MM < own {
-                cost += (WRONG_LINE + WRONG_LINE_MM * (own - rival)).min(AWAY_MAX);
-            }
-        }
+        };
         for (bounds, o) in &job.lines {
             if cost >= bound {
                 return cost;
@@ -384,6 +460,29 @@ impl<'a> Placer<'a> {
 
 /// A label of an item counts as nearer another line only when it is this much nearer, mm.
 pub(crate) const NEARER_MM: f64 = 0.5;
+
+/// `cost` and what a label at `rect` costs for standing away from its object: a label of a
+/// point beyond [`POINT_REACH_MM`] from it, a label of an item nearer another line of its view
+/// than its own (nothing at its object).
+fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
+    if job.request.names_of == Names::Point {
+        let beyond = box_distance(rect, job.request.anchor) - POINT_REACH_MM;
+        if beyond > 1e-9 {
+            cost += (BEYOND + BEYOND_MM * beyond).min(AWAY_MAX);
+        }
+    }
+    if let Some(own) = own_distance(&job.request.own, rect) {
+        let rival = job
+            .rivals
+            .iter()
+            .map(|(a, b)| rect_segment_distance(rect, *a, *b))
+            .fold(f64::INFINITY, f64::min);
+        if rival + NEARER_MM < own {
+            cost += (WRONG_LINE + WRONG_LINE_MM * (own - rival)).min(AWAY_MAX);
+        }
+    }
+    cost
+}
 
 /// The distance from `rect` to the nearest of the lines among `own`; `None` without lines.
 fn own_distance(own: &[Outline], rect: &Rect) -> Option<f64> {

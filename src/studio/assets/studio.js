@@ -252,8 +252,10 @@ function showReplay() {
     if (s.id === v.steps[replay.at].id) g.classList.add("replay-now");
   }
   v.labels.forEach((steps, n) => {
-    const t = svg.getElementById("view-" + v.view + "-labels-text-" + (n + 1));
-    if (t && !steps.some((id) => shown.has(id))) t.classList.add("replay-hidden");
+    if (steps.some((id) => shown.has(id))) return;
+    for (const part of ["-labels-text-", "-labels-leader-"]) {
+      svg.getElementById("view-" + v.view + part + (n + 1))?.classList.add("replay-hidden");
+    }
   });
   $("r-count").textContent = replay.at + 1 + " / " + v.steps.length;
   if (list.dataset.view !== String(v.view) || list.children.length !== v.steps.length) {

@@ -1,0 +1,223 @@
+//! A leader line (ГОСТ 2.316, линия-выноска): a label that finds no clear place at its object
+//! — a point inside a fan of spokes, a force among the lever's rays — is written further out
+//! on a shelf, and a thin line runs from the shelf's near end to its object (the point
+//! itself, or the point of its item's line nearest the label's anchor). A draughtsman takes it
+//! only where the label written beside its object would be read as another's: the placer
+//! tries the leader's places after every label has its place, for those whose place is beyond
+//! their reach or nearer another line than their own, and keeps the leader where it costs less.
+
+use super::*;
+use crate::geom::Segment;
+
+/// A label's leader: from its object to the shelf under its text, and along the shelf.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Leader {
+    /// Its object's point: the labelled point, or the point of the labelled item's line it
+    /// ends on (with a dot), sheet mm.
+    pub to: DVec2,
+    /// Where the drawn line starts: at the item's line, or a label's gap short of its point
+    /// (a leader does not strike through the point it names).
+    pub from: DVec2,
+    /// True when it ends on an item's line, with a dot.
+    pub dot: bool,
+    /// The shelf's end the line from the object comes to.
+    pub knee: DVec2,
+    /// The shelf's other end.
+    pub end: DVec2,
+}
+
+impl Leader {
+    /// Its two pieces as drawn: from the object to the knee, and the shelf.
+    pub fn pieces(&self) -> [Segment; 2] {
+        [
+            Segment::new(self.from, self.knee),
+            Segment::new(self.knee, self.end),
+        ]
+    }
+}
+
+/// Between the text's box and its shelf, mm.
+const SHELF_GAP_MM: f64 = 0.6;
+/// The shelf runs this far past the text at either end, mm.
+const SHELF_OVERHANG_MM: f64 = 0.5;
+/// Lengths of the line from the object to the shelf tried, mm: the shortest first.
+const LENGTHS_MM: [f64; 5] = [6.0, 9.0, 12.0, 16.0, 20.0];
+/// Its angles from the shelf tried, degrees: never along it (ГОСТ 2.316 — not parallel to the
+/// lines it crosses where it can help it, and a leader along its shelf reads as one line).
+const ANGLES_DEG: [f64; 9] = [45.0, 60.0, 30.0, 75.0, 52.5, 37.5, 67.5, 22.5, 82.5];
+
+/// Where a label's leader touches its object: its point, or, for a label of an item, the
+/// point of the item's lines nearest its anchor.
+pub(super) fn target(r: &Request) -> DVec2 {
+    r.own
+        .iter()
+        .filter_map(|o| match o.shape {
+            Shape::Line(a, b) => {
+                let s = Segment::new(a, b);
+                let d = b - a;
+                let t = match d.length_squared() {
+                    0.0 => 0.0,
+                    l2 => ((r.anchor - a).dot(d) / l2).clamp(0.0, 1.0),
+                };
+                Some((s.distance_to(r.anchor), s.eval(t)))
+            }
+            Shape::Area(_) => None,
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map_or(r.anchor, |(_, p)| p)
+}
+
+/// The places of a label of box size `size` on a leader, in order of preference: the
+/// shortest leader first, the quadrant of the preferred direction first.
+pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<(Rect, Leader)> {
+    let to = target(r);
+    let dot = r.names_of == Names::Item;
+    let mut quadrants =
+        [(1.0, -1.0), (-1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].map(|(x, y)| DVec2::new(x, y));
+    if r.toward != DVec2::ZERO {
+        quadrants.sort_by(|a, b| b.dot(r.toward).total_cmp(&a.dot(r.toward)));
+    }
+    let mut out = Vec::with_capacity(LENGTHS_MM.len() * ANGLES_DEG.len() * 4);
+    for length in LENGTHS_MM {
+        for q in quadrants {
+            for deg in ANGLES_DEG {
+                let (s, c) = deg.to_radians().sin_cos();
+                let knee = to + DVec2::new(q.x * c, q.y * s) * length;
+                let from = match dot {
+                    true => to,
+                    false => to + (knee - to) * (r.gap / length),
+                };
+                out.push(on_shelf(
+                    Leader {
+                        to,
+                        from,
+                        dot,
+                        knee,
+                        end: knee,
+                    },
+                    q.x,
+                    size,
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// The text of box size `size` on the leader's shelf from its knee towards `side` (+1 right,
+/// −1 left).
+fn on_shelf(leader: Leader, side: f64, size: DVec2) -> (Rect, Leader) {
+    let knee = leader.knee;
+    let shelf = size.x + 2.0 * SHELF_OVERHANG_MM;
+    let end = knee + DVec2::new(side * shelf, 0.0);
+    let left = knee.x.min(end.x) + SHELF_OVERHANG_MM;
+    let bottom = knee.y - SHELF_GAP_MM;
+    let rect = Rect::new(
+        DVec2::new(left, bottom - size.y),
+        DVec2::new(left + size.x, bottom),
+    );
+    (rect, Leader { end, ..leader })
+}
+
+/// Cost of a leader at all: less than a label beyond its reach or nearer another line
+/// (`place::BEYOND`, `place::WRONG_LINE`), more than a clear place at the object; and per mm
+/// of the line from the object.
+const LEADER: f64 = 12.0;
+const LEADER_MM: f64 = 0.5;
+/// Cost per rank of a place on a leader: its order only breaks ties (its length is paid by
+/// [`LEADER_MM`]).
+pub(super) const RANK: f64 = 0.01;
+/// Cost of the leader or its shelf crossing a main line of the drawing, a thin one.
+const CROSS_MAIN: f64 = 6.0;
+const CROSS_THIN: f64 = 3.0;
+/// Cost of crossing another text, another leader, or passing this near another label's
+/// point (mm): the leader would be read as that point's.
+pub(super) const OVER_TEXT: f64 = 1e3;
+const OVER_LEADER: f64 = 200.0;
+const PAST_POINT_MM: f64 = 1.0;
+const PAST_POINT: f64 = 60.0;
+/// Lines through the object itself are not crossings: within this of it, mm.
+const AT_OBJECT_MM: f64 = 1.0;
+/// A leader (or its shelf) within this of a line of the drawing and within [`ALONG_DEG`] of
+/// its direction runs along it and is lost in it, mm: it is sampled every [`ALONG_STEP_MM`]
+/// from [`ALONG_FROM_MM`] of its object on (where the lines through a point converge), and
+/// each sample on such a line costs [`ALONG_LINE`].
+const ALONG_MM: f64 = 1.0;
+const ALONG_DEG: f64 = 20.0;
+const ALONG_STEP_MM: f64 = 0.5;
+const ALONG_FROM_MM: f64 = 1.5;
+const ALONG_LINE: f64 = 10.0;
+
+/// What the leader `l` of a label at `rect` costs among the drawing's `lines`, the other
+/// labels' `points`, the other `texts` and the other `leaders`.
+pub(super) fn cost(
+    l: &Leader,
+    rect: &Rect,
+    lines: &[(Rect, &Outline)],
+    points: &[DVec2],
+    texts: &[Rect],
+    leaders: &[Leader],
+) -> f64 {
+    let [line, shelf] = l.pieces();
+    let mut cost = LEADER + LEADER_MM * line.length();
+    for (_, o) in lines {
+        let Shape::Line(a, b) = o.shape else { continue };
+        let other = Segment::new(a, b);
+        for piece in [&line, &shelf] {
+            if piece
+                .crossing(&other)
+                .is_some_and(|p| p.distance(l.to) > AT_OBJECT_MM)
+            {
+                cost += if o.main { CROSS_MAIN } else { CROSS_THIN };
+            }
+        }
+    }
+    cost +=
+        ALONG_LINE * (along_lines(&line, l.to, lines) + along_lines(&shelf, l.to, lines)) as f64;
+    for p in points {
+        if line.distance_to(*p) < PAST_POINT_MM {
+            cost += PAST_POINT;
+        }
+    }
+    for t in texts {
+        if [&line, &shelf]
+            .iter()
+            .any(|s| place::clipped_length(s.from, s.to, t) > 0.0)
+        {
+            cost += OVER_TEXT;
+        }
+    }
+    for other in leaders {
+        let crossed = other.pieces().iter().any(|o| {
+            place::clipped_length(o.from, o.to, rect) > 0.0
+                || [&line, &shelf].iter().any(|s| s.crossing(o).is_some())
+        });
+        if crossed {
+            cost += OVER_LEADER;
+        }
+    }
+    cost
+}
+
+/// How many samples of `piece` beyond [`ALONG_FROM_MM`] of the object `to` lie within
+/// [`ALONG_MM`] of a line of the drawing running within [`ALONG_DEG`] of its direction.
+fn along_lines(piece: &Segment, to: DVec2, lines: &[(Rect, &Outline)]) -> usize {
+    let d = (piece.to - piece.from).normalize_or_zero();
+    let beside: Vec<Segment> = lines
+        .iter()
+        .filter_map(|(_, o)| match o.shape {
+            Shape::Line(a, b) => Some(Segment::new(a, b)),
+            Shape::Area(_) => None,
+        })
+        .filter(|s| {
+            let e = (s.to - s.from).normalize_or_zero();
+            e != DVec2::ZERO && e.perp_dot(d).abs() < ALONG_DEG.to_radians().sin()
+        })
+        .collect();
+    let n = (piece.length() / ALONG_STEP_MM).floor() as usize;
+    (0..=n)
+        .map(|k| piece.eval(k as f64 / n.max(1) as f64))
+        .filter(|p| p.distance(to) > ALONG_FROM_MM)
+        .filter(|p| beside.iter().any(|s| s.distance_to(*p) < ALONG_MM))
+        .count()
+}
