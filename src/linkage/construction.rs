@@ -1,10 +1,22 @@
 //! The plan of positions as a drawing-board construction: every point of every position is
 //! found by compass arcs and straightedge lines through the recorder, in drawing millimetres.
 
-use super::model::Branch;
 use super::program::{Op, PDir, PDyad, PGuide, Program};
 use crate::construct::{Compass, ConstructionError, Item, Pick, Recorder, Role, StepId};
 use crate::geom::{rotate, Arc, DVec2, Line, Segment};
+
+/// What a group's construction gives besides its joint: the frames of its links i and j
+/// (their angles and the points they start from) and the acute crossing angle of the
+/// intersection that fixed it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Frames {
+    /// The angles of links i, j, radians.
+    pub angle: [f64; 2],
+    /// The origins (point indices) of links i, j.
+    pub origin: [usize; 2],
+    /// The crossing angle, radians.
+    pub crossing: f64,
+}
 
 /// One constructed position, in drawing mm.
 ///
@@ -35,14 +47,18 @@ pub struct Failed {
     pub error: ConstructionError,
 }
 
-fn heading(v: DVec2) -> f64 {
+pub(super) fn heading(v: DVec2) -> f64 {
     v.y.atan2(v.x)
 }
 
 impl Built {
     /// Record the joint a group's intersection found: its position and step; gives the point
     /// and the crossing angle.
-    fn place(&mut self, joint: usize, (x, crossing, id): (DVec2, f64, StepId)) -> (DVec2, f64) {
+    pub(super) fn place(
+        &mut self,
+        joint: usize,
+        (x, crossing, id): (DVec2, f64, StepId),
+    ) -> (DVec2, f64) {
         self.p[joint] = x;
         self.step[joint] = Some(id);
         (x, crossing)
@@ -51,7 +67,7 @@ impl Built {
 
 /// The solution a two-solution intersection takes: the one nearest to the previous
 /// position's `joint` when there is one, else `first` (the scene's branch).
-fn pick(prev: Option<&Built>, joint: usize, first: Pick) -> Pick {
+pub(super) fn pick(prev: Option<&Built>, joint: usize, first: Pick) -> Pick {
     match prev {
         Some(q) => Pick::Near(q.p[joint]),
         None => first,
@@ -59,7 +75,8 @@ fn pick(prev: Option<&Built>, joint: usize, first: Pick) -> Pick {
 }
 
 impl Program {
-    fn drawn_dir(&self, d: &PDir, p: &[DVec2]) -> f64 {
+    /// A direction at the drawn points `p`, radians.
+    pub(super) fn drawn_dir(&self, d: &PDir, p: &[DVec2]) -> f64 {
         match *d {
             PDir::Fixed(a) => a,
             PDir::Along { from, to, angle } => heading(p[to] - p[from]) + angle,
@@ -72,12 +89,13 @@ impl Program {
         Line::new(p[g.through], e).map(|l| l.offset(g.offset / mu))
     }
 
-    fn guide_name(&self, g: &PGuide) -> String {
+    /// How a step names a guide.
+    pub(super) fn guide_name(&self, g: &PGuide) -> String {
         format!("guide through {}", self.names[g.through])
     }
 
     /// The compass set at point `k` with `radius` (drawing mm).
-    fn compass(&self, p: &[DVec2], k: usize, radius: f64) -> Compass<'_> {
+    pub(super) fn compass(&self, p: &[DVec2], k: usize, radius: f64) -> Compass<'_> {
         Compass {
             name: &self.names[k],
             center: p[k],
@@ -86,7 +104,7 @@ impl Program {
     }
 
     /// The step that finds a group's `joint`.
-    fn joint_step(&self, s: &str, joint: usize) -> String {
+    pub(super) fn joint_step(&self, s: &str, joint: usize) -> String {
         format!("{s}: point {}", self.names[joint])
     }
 
@@ -194,89 +212,11 @@ impl Program {
         [i, j]: [usize; 2],
         dyad: PDyad,
     ) -> Result<(), ConstructionError> {
-        let mu = rec.scale().value();
-        let ([ti, tj], [oi, oj], cr) = match dyad {
-            PDyad::Rrr {
-                a,
-                la,
-                b,
-                lb,
-                joint,
-                branch,
-            } => {
-                let side = if branch == Branch::Right {
-                    Pick::Right
-                } else {
-                    Pick::Left
-                };
-                let (ca, cb) = (
-                    self.compass(&pos.p, a, la / mu),
-                    self.compass(&pos.p, b, lb / mu),
-                );
-                let met =
-                    rec.meet_circles(&self.joint_step(s, joint), ca, cb, pick(prev, joint, side))?;
-                let (x, cr) = pos.place(joint, met);
-                ([heading(x - pos.p[a]), heading(x - pos.p[b])], [a, b], cr)
-            }
-            PDyad::Rrp {
-                a,
-                la,
-                guide,
-                joint,
-                branch,
-            } => {
-                let line = self.line_or_fail(&guide, &pos.p, mu, s)?;
-                let side = if branch == Branch::Backward {
-                    Pick::Backward
-                } else {
-                    Pick::Forward
-                };
-                let c = self.compass(&pos.p, a, la / mu);
-                let on = (&*self.guide_name(&guide), &line);
-                let met = rec.meet_line_circle(
-                    &self.joint_step(s, joint),
-                    on,
-                    c,
-                    pick(prev, joint, side),
-                )?;
-                let (x, cr) = pos.place(joint, met);
-                ([heading(x - pos.p[a]), line.angle()], [a, joint], cr)
-            }
-            PDyad::Rpr { a, c, offset } => {
-                let prev = prev.map(|q| q.angle[j]);
-                let th = self.slide_line(rec, s, &pos.p, (a, c), offset, prev)?;
-                ([th, th], [a, c], std::f64::consts::FRAC_PI_2)
-            }
-            PDyad::Prp { gi, gj, joint } => {
-                let l1 = self.line_or_fail(&gi, &pos.p, mu, s)?;
-                let l2 = self.line_or_fail(&gj, &pos.p, mu, s)?;
-                let (n1, n2) = (self.guide_name(&gi), self.guide_name(&gj));
-                let met = rec.meet_lines(&self.joint_step(s, joint), (&n1, &l1), (&n2, &l2))?;
-                let (_, cr) = pos.place(joint, met);
-                ([l1.angle(), l2.angle()], [joint, joint], cr)
-            }
-            PDyad::Rpp {
-                a,
-                slide,
-                guide,
-                joint,
-            } => {
-                let sl = Line::new(pos.p[a], DVec2::from_angle(self.drawn_dir(&slide, &pos.p)))
-                    .ok_or_else(|| other(s, "slide direction"))?;
-                let g = self.line_or_fail(&guide, &pos.p, mu, s)?;
-                let name = format!("slide line through {}", self.names[a]);
-                let on = (&*self.guide_name(&guide), &g);
-                let met = rec.meet_lines(&self.joint_step(s, joint), (&name, &sl), on)?;
-                rec.draw(
-                    format!("{s}: {name}"),
-                    Item::Segment(Segment::new(pos.p[a], met.0)),
-                    Role::Construction,
-                    &[met.2],
-                );
-                let (_, cr) = pos.place(joint, met);
-                ([sl.angle(), g.angle()], [a, joint], cr)
-            }
-        };
+        let Frames {
+            angle: [ti, tj],
+            origin: [oi, oj],
+            crossing: cr,
+        } = dyad.group().construct(self, rec, pos, prev, (s, j))?;
         pos.angle[i] = ti;
         pos.angle[j] = tj;
         pos.origin[i] = oi;
@@ -289,7 +229,7 @@ impl Program {
     /// tangent to the path of `a` when the pin stands on the pivot (`prev`: the previous
     /// position's slide), else the line through the two points, or with an offset the
     /// tangent from `a` to the offset circle of `c`, its foot T on the Thales circle on ca.
-    fn slide_line(
+    pub(super) fn slide_line(
         &self,
         rec: &mut Recorder,
         s: &str,
@@ -398,7 +338,8 @@ impl Program {
         Ok(heading(t))
     }
 
-    fn line_or_fail(
+    /// A guide's line at the drawn points, or the step's failure naming it.
+    pub(super) fn line_or_fail(
         &self,
         g: &PGuide,
         p: &[DVec2],
@@ -410,7 +351,8 @@ impl Program {
     }
 }
 
-fn other(step: &str, what: &str) -> ConstructionError {
+/// A step that cannot go on: the direction of `what` is not defined.
+pub(super) fn other(step: &str, what: &str) -> ConstructionError {
     ConstructionError::Other {
         step: step.into(),
         message: format!("the direction of the {what} is not defined (coincident points)"),

@@ -2,7 +2,7 @@
 //! points and guide carriers of their pairs, the points placed on known links, a piston's
 //! axis. Topology only: lengths, branches and guide geometry stay inside the program.
 
-use super::program::{Op, PDir, PDyad};
+use super::program::{Op, PDir};
 use super::Program;
 use crate::geom::DVec2;
 
@@ -90,37 +90,10 @@ impl Program {
             Op::Dyad { group, links, dyad } => Some(GroupView {
                 group,
                 links: links.map(|l| l as usize),
-                pairs: self.pairs_of(&dyad),
+                pairs: dyad.group().pairs(),
             }),
             Op::Point { .. } => None,
         })
-    }
-
-    /// A dyad's pairs with its guides' carriers resolved.
-    fn pairs_of(&self, dyad: &PDyad) -> GroupPairs {
-        match *dyad {
-            PDyad::Rrr { a, b, joint, .. } => GroupPairs::Rrr { a, c: b, joint },
-            PDyad::Rrp {
-                a, guide, joint, ..
-            } => GroupPairs::Rrp {
-                a,
-                guide: guide.carrier,
-                joint,
-            },
-            PDyad::Rpr { a, c, .. } => GroupPairs::Rpr { a, c },
-            PDyad::Prp { gi, gj, joint } => GroupPairs::Prp {
-                gi: gi.carrier,
-                gj: gj.carrier,
-                joint,
-            },
-            PDyad::Rpp {
-                a, guide, joint, ..
-            } => GroupPairs::Rpp {
-                a,
-                guide: guide.carrier,
-                joint,
-            },
-        }
     }
 
     /// The points placed on known links (not the joints of groups), in program order.
@@ -135,12 +108,8 @@ impl Program {
     /// its guide with the points at `at`, and the slider's link.
     pub fn piston(&self, k: usize, at: impl Fn(usize) -> DVec2) -> Option<(DVec2, usize)> {
         let (guide, slider) = self.ops.iter().find_map(|op| match *op {
-            Op::Dyad {
-                links,
-                dyad: PDyad::Rrp { guide, joint, .. },
-                ..
-            } if joint == k => Some((guide, links[1] as usize)),
-            _ => None,
+            Op::Dyad { links, dyad, .. } => dyad.group().piston(k).map(|g| (g, links[1] as usize)),
+            Op::Point { .. } => None,
         })?;
         let axis = match guide.dir {
             PDir::Fixed(a) => DVec2::from_angle(a),

@@ -6,6 +6,7 @@ mod carrier;
 mod construction;
 mod extremes;
 mod groups;
+mod kinds;
 mod model;
 mod plans;
 mod positions;

@@ -112,33 +112,15 @@ pub enum DyadKind {
 impl DyadKind {
     /// The kind number of the Russian/Ukrainian textbooks (вид 1…5).
     pub fn number(self) -> u32 {
-        match self {
-            DyadKind::Rrr => 1,
-            DyadKind::Rrp => 2,
-            DyadKind::Rpr => 3,
-            DyadKind::Prp => 4,
-            DyadKind::Rpp => 5,
-        }
+        self.words().number
     }
     /// Latin pair letters (`RRP`).
     pub fn letters(self) -> &'static str {
-        match self {
-            DyadKind::Rrr => "RRR",
-            DyadKind::Rrp => "RRP",
-            DyadKind::Rpr => "RPR",
-            DyadKind::Prp => "PRP",
-            DyadKind::Rpp => "RPP",
-        }
+        self.words().letters
     }
     /// Cyrillic pair letters (`ВВП`).
     pub fn letters_ru(self) -> &'static str {
-        match self {
-            DyadKind::Rrr => "ВВВ",
-            DyadKind::Rrp => "ВВП",
-            DyadKind::Rpr => "ВПВ",
-            DyadKind::Prp => "ПВП",
-            DyadKind::Rpp => "ВПП",
-        }
+        self.words().letters_ru
     }
 }
 

@@ -8,7 +8,7 @@ use super::positions::{
     cannot_assemble, start_of, walk, PlanPoses, PlanPosition, PlanRequest, PosePosition,
     PositionPlan,
 };
-use super::program::{Op, PDir, PDyad, Program};
+use super::program::{Op, PDir, Program};
 use super::{LinkageError, ModelError};
 use crate::construct::{Context, Drafting, Item, Recorder, Role};
 use crate::geom::{Arc, Circle, DVec2, Segment, Side, Tolerances};
@@ -26,6 +26,43 @@ pub enum Part {
     Group(usize),
 }
 
+/// What a group draws its links with: the recorder, the drawing's role and note, and the
+/// points it puts its link numbers at and the joints it draws.
+pub(super) struct Pen<'r> {
+    /// The recorder.
+    pub rec: &'r mut Recorder,
+    /// The role of every item.
+    pub role: Role,
+    /// The note every item's step starts with.
+    pub note: &'r str,
+    /// Per link number drawn, a point to put its number at.
+    pub anchors: Vec<(u32, DVec2)>,
+    /// The joints to draw.
+    pub joints: Vec<usize>,
+}
+
+impl Pen<'_> {
+    /// Link `l` as a bar from `from` to `to`.
+    pub fn link(&mut self, l: u32, from: DVec2, to: DVec2) {
+        self.rec.draw(
+            format!("{}: link {l}", self.note),
+            Item::Segment(Segment::new(from, to)),
+            self.role,
+            &[],
+        );
+    }
+
+    /// Link `l` as a slider at `at`, along `angle`.
+    pub fn slider(&mut self, l: u32, at: DVec2, angle: f64) {
+        self.rec.draw(
+            format!("{}: slider {l}", self.note),
+            Item::Slider { at, angle },
+            self.role,
+            &[],
+        );
+    }
+}
+
 /// Draw one position's links with `role`; returns, per link number drawn, a point to put its
 /// number at.
 pub fn draw_links(
@@ -36,19 +73,23 @@ pub fn draw_links(
     note: &str,
     part: Part,
 ) -> Vec<(u32, DVec2)> {
-    let mut anchors = Vec::new();
-    let mu = rec.scale().value();
-    let mut joints = Vec::new();
+    let mut pen = Pen {
+        rec,
+        role,
+        note,
+        anchors: Vec::new(),
+        joints: Vec::new(),
+    };
     if matches!(part, Part::All | Part::Driver) {
         let (centre, pin) = (b.p[prog.centre], b.p[prog.pin]);
-        rec.draw(
+        pen.rec.draw(
             format!("{note}: crank"),
             Item::Segment(Segment::new(centre, pin)),
             role,
             &[],
         );
-        anchors.push((prog.crank_link, centre.lerp(pin, 0.5)));
-        joints.extend([prog.centre, prog.pin]);
+        pen.anchors.push((prog.crank_link, centre.lerp(pin, 0.5)));
+        pen.joints.extend([prog.centre, prog.pin]);
     }
     for op in &prog.ops {
         let Op::Dyad { group, links, dyad } = op else {
@@ -57,66 +98,14 @@ pub fn draw_links(
         if !matches!(part, Part::All) && part != Part::Group(*group) {
             continue;
         }
-        let [i, j] = *links;
-        let seg = |rec: &mut Recorder, l: u32, from: DVec2, to: DVec2| {
-            rec.draw(
-                format!("{note}: link {l}"),
-                Item::Segment(Segment::new(from, to)),
-                role,
-                &[],
-            );
-        };
-        let slider = |rec: &mut Recorder, l: u32, at: DVec2, angle: f64| {
-            rec.draw(
-                format!("{note}: slider {l}"),
-                Item::Slider { at, angle },
-                role,
-                &[],
-            );
-        };
-        match *dyad {
-            PDyad::Rrr {
-                a, b: bb, joint, ..
-            } => {
-                seg(rec, i, b.p[a], b.p[joint]);
-                seg(rec, j, b.p[bb], b.p[joint]);
-                anchors.extend([
-                    (i, b.p[a].lerp(b.p[joint], 0.5)),
-                    (j, b.p[bb].lerp(b.p[joint], 0.5)),
-                ]);
-                joints.extend([a, bb, joint]);
-            }
-            PDyad::Rrp { a, joint, .. } => {
-                seg(rec, i, b.p[a], b.p[joint]);
-                slider(rec, j, b.p[joint], b.angle[j as usize]);
-                anchors.extend([(i, b.p[a].lerp(b.p[joint], 0.5)), (j, b.p[joint])]);
-                joints.extend([a, joint]);
-            }
-            PDyad::Rpr { a, c, .. } => {
-                let th = b.angle[j as usize];
-                let u = DVec2::from_angle(th);
-                let reach = link_reach(prog, j, mu).max((b.p[a] - b.p[c]).dot(u) + 6.0);
-                seg(rec, j, b.p[c], b.p[c] + u * reach);
-                slider(rec, i, b.p[a], th);
-                anchors.extend([(i, b.p[a]), (j, b.p[c] + u * (reach * 0.8))]);
-                joints.extend([a, c]);
-            }
-            PDyad::Prp { joint, .. } => {
-                slider(rec, i, b.p[joint], b.angle[i as usize]);
-                let u = DVec2::from_angle(b.angle[j as usize]) * 8.0;
-                seg(rec, j, b.p[joint] - u, b.p[joint] + u);
-                anchors.extend([(i, b.p[joint]), (j, b.p[joint] + u)]);
-                joints.push(joint);
-            }
-            PDyad::Rpp { a, joint, .. } => {
-                seg(rec, j, b.p[a], b.p[joint]);
-                slider(rec, i, b.p[a], b.angle[i as usize]);
-                slider(rec, j, b.p[joint], b.angle[j as usize]);
-                anchors.extend([(i, b.p[a]), (j, b.p[joint])]);
-                joints.push(a);
-            }
-        }
+        dyad.group().draw(&mut pen, prog, b, *links);
     }
+    let Pen {
+        rec,
+        anchors,
+        mut joints,
+        ..
+    } = pen;
     super::slide_lines::draw_slide_lines(rec, prog, b, (role, note), part);
     joints.retain(|k| *k >= prog.fixed.len() || part != Part::All);
     joints.sort_unstable();
@@ -149,12 +138,7 @@ pub fn fixed_pivots(prog: &Program) -> Vec<usize> {
     let mut v = vec![prog.centre];
     for op in &prog.ops {
         if let Op::Dyad { dyad, .. } = op {
-            match *dyad {
-                PDyad::Rrr { a, b, .. } => v.extend([a, b]),
-                PDyad::Rrp { a, .. } | PDyad::Rpp { a, .. } => v.push(a),
-                PDyad::Rpr { a, c, .. } => v.extend([a, c]),
-                PDyad::Prp { .. } => {}
-            }
+            v.extend(dyad.group().pivots());
         }
     }
     v.retain(|k| *k < prog.fixed.len());

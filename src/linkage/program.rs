@@ -1,7 +1,9 @@
 //! A mechanism compiled into an indexed program: names resolved once, so solving a position
 //! is a straight run over the operations with no lookups.
 
-use super::model::{Branch, Dir, Dyad, DyadKind, Group, Guide, LinkPoint, Mechanism};
+pub(super) use super::kinds::PDyad;
+use super::kinds::{Prp, Rpp, Rpr, Rrp, Rrr};
+use super::model::{Dir, Dyad, Group, Guide, LinkPoint, Mechanism};
 use super::{LinkageError, ModelError};
 use crate::geom::DVec2;
 use std::collections::HashMap;
@@ -40,66 +42,6 @@ impl PGuide {
     /// True when the guide belongs to the frame.
     pub fn is_fixed(&self, fixed_count: usize) -> bool {
         self.through < fixed_count && matches!(self.dir, PDir::Fixed(_))
-    }
-}
-
-/// A dyad with resolved indices. Fields as in [`Dyad`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[allow(missing_docs)]
-pub(super) enum PDyad {
-    Rrr {
-        a: usize,
-        la: f64,
-        b: usize,
-        lb: f64,
-        joint: usize,
-        branch: Branch,
-    },
-    Rrp {
-        a: usize,
-        la: f64,
-        guide: PGuide,
-        joint: usize,
-        branch: Branch,
-    },
-    Rpr {
-        a: usize,
-        c: usize,
-        offset: f64,
-    },
-    Prp {
-        gi: PGuide,
-        gj: PGuide,
-        joint: usize,
-    },
-    Rpp {
-        a: usize,
-        slide: PDir,
-        guide: PGuide,
-        joint: usize,
-    },
-}
-
-impl PDyad {
-    /// The kind.
-    pub fn kind(&self) -> DyadKind {
-        match self {
-            PDyad::Rrr { .. } => DyadKind::Rrr,
-            PDyad::Rrp { .. } => DyadKind::Rrp,
-            PDyad::Rpr { .. } => DyadKind::Rpr,
-            PDyad::Prp { .. } => DyadKind::Prp,
-            PDyad::Rpp { .. } => DyadKind::Rpp,
-        }
-    }
-    /// The point the dyad creates, if any (RPR creates none).
-    pub fn joint(&self) -> Option<usize> {
-        match *self {
-            PDyad::Rrr { joint, .. }
-            | PDyad::Rrp { joint, .. }
-            | PDyad::Prp { joint, .. }
-            | PDyad::Rpp { joint, .. } => Some(joint),
-            PDyad::Rpr { .. } => None,
-        }
     }
 }
 
@@ -217,14 +159,14 @@ impl Names {
                 branch,
             } => {
                 let (a, b) = (self.look(a, what)?, self.look(b, what)?);
-                PDyad::Rrr {
+                PDyad::Rrr(Rrr {
                     a,
                     la: *la,
                     b,
                     lb: *lb,
                     joint: self.add(joint)?,
                     branch: *branch,
-                }
+                })
             }
             Dyad::Rrp {
                 a,
@@ -234,30 +176,30 @@ impl Names {
                 branch,
             } => {
                 let (a, guide) = (self.look(a, what)?, self.guide(guide, what)?);
-                PDyad::Rrp {
+                PDyad::Rrp(Rrp {
                     a,
                     la: *la,
                     guide,
                     joint: self.add(joint)?,
                     branch: *branch,
-                }
+                })
             }
-            Dyad::Rpr { a, c, offset } => PDyad::Rpr {
+            Dyad::Rpr { a, c, offset } => PDyad::Rpr(Rpr {
                 a: self.look(a, what)?,
                 c: self.look(c, what)?,
                 offset: *offset,
-            },
+            }),
             Dyad::Prp {
                 guide_i,
                 guide_j,
                 joint,
             } => {
                 let (gi, gj) = (self.guide(guide_i, what)?, self.guide(guide_j, what)?);
-                PDyad::Prp {
+                PDyad::Prp(Prp {
                     gi,
                     gj,
                     joint: self.add(joint)?,
-                }
+                })
             }
             Dyad::Rpp {
                 a,
@@ -270,12 +212,12 @@ impl Names {
                     self.dir(slide, what)?,
                     self.guide(guide, what)?,
                 );
-                PDyad::Rpp {
+                PDyad::Rpp(Rpp {
                     a,
                     slide,
                     guide,
                     joint: self.add(joint)?,
-                }
+                })
             }
         })
     }
@@ -331,9 +273,9 @@ fn slide_with_guide(
     what: &str,
     link: u32,
 ) -> Result<(), LinkageError> {
-    if let PDyad::Rpp {
+    if let PDyad::Rpp(Rpp {
         a, slide, guide, ..
-    } = *dyad
+    }) = *dyad
     {
         let same = match (slide, guide.dir) {
             (PDir::Fixed(_), PDir::Fixed(_)) => true,
@@ -373,12 +315,7 @@ fn fixed_dirs(ops: &[Op]) -> Vec<(f64, DVec2)> {
     let mut fixed_dirs: Vec<(f64, DVec2)> = Vec::new();
     for op in ops {
         let Op::Dyad { dyad, .. } = op else { continue };
-        let [g0, g1] = dyad.guides();
-        let dirs = match *dyad {
-            PDyad::Rpp { slide, .. } => [Some(slide), g0.map(|g| g.dir)],
-            _ => [g0.map(|g| g.dir), g1.map(|g| g.dir)],
-        };
-        for d in dirs.into_iter().flatten() {
+        for d in dyad.group().directions().into_iter().flatten() {
             if let PDir::Fixed(a) = d {
                 if !fixed_dirs.iter().any(|f| f.0.to_bits() == a.to_bits()) {
                     fixed_dirs.push((a, DVec2::from_angle(a)));
@@ -448,26 +385,6 @@ impl Program {
     }
 }
 
-impl PDyad {
-    /// The guides of the dyad, in the order of its pairs (RRP, RPP: the guide; PRP: i, j).
-    pub fn guides(&self) -> [Option<PGuide>; 2] {
-        match *self {
-            PDyad::Rrp { guide, .. } | PDyad::Rpp { guide, .. } => [Some(guide), None],
-            PDyad::Prp { gi, gj, .. } => [Some(gi), Some(gj)],
-            PDyad::Rrr { .. } | PDyad::Rpr { .. } => [None, None],
-        }
-    }
-
-    /// The guides of the dyad to change, in the order of [`PDyad::guides`].
-    pub(super) fn guides_mut(&mut self) -> [Option<&mut PGuide>; 2] {
-        match self {
-            PDyad::Rrp { guide, .. } | PDyad::Rpp { guide, .. } => [Some(guide), None],
-            PDyad::Prp { gi, gj, .. } => [Some(gi), Some(gj)],
-            PDyad::Rrr { .. } | PDyad::Rpr { .. } => [None, None],
-        }
-    }
-}
-
 impl Program {
     /// Every guide of the groups with its group and the joint that slides on it, in the
     /// order of the program.
@@ -497,10 +414,7 @@ impl Program {
             match *op {
                 Op::Point { idx, link, .. } if idx == k => return link as usize,
                 Op::Dyad { links, dyad, .. } if dyad.joint() == Some(k) => {
-                    return match dyad {
-                        PDyad::Rpp { .. } => links[1] as usize,
-                        _ => links[0] as usize,
-                    }
+                    return links[usize::from(dyad.group().joint_on_j())] as usize;
                 }
                 _ => {}
             }
@@ -516,19 +430,9 @@ impl Program {
             .ops
             .iter()
             .any(|op| matches!(*op, Op::Point { idx, .. } if idx == k));
-        let dir_uses = |d: PDir| matches!(d, PDir::Along { from, to, .. } if from == k || to == k);
-        let guide_uses = |g: PGuide| g.through == k || dir_uses(g.dir);
         let used = self.ops.iter().any(|op| match *op {
             Op::Point { .. } => false,
-            Op::Dyad { dyad, .. } => match dyad {
-                PDyad::Rrr { a, b, .. } => a == k || b == k,
-                PDyad::Rrp { a, guide, .. } => a == k || guide_uses(guide),
-                PDyad::Rpr { a, c, .. } => a == k || c == k,
-                PDyad::Prp { gi, gj, .. } => guide_uses(gi) || guide_uses(gj),
-                PDyad::Rpp {
-                    a, slide, guide, ..
-                } => a == k || dir_uses(slide) || guide_uses(guide),
-            },
+            Op::Dyad { dyad, .. } => dyad.group().uses(k),
         });
         is_point && !used
     }
@@ -562,15 +466,7 @@ impl Program {
                     dyad,
                     ..
                 } => {
-                    let (on_i, on_j) = match dyad {
-                        PDyad::Rrr { a, b, joint, .. } => {
-                            (a == k || joint == k, b == k || joint == k)
-                        }
-                        PDyad::Rrp { a, joint, .. } => (a == k || joint == k, joint == k),
-                        PDyad::Rpr { a, c, .. } => (a == k, c == k),
-                        PDyad::Prp { joint, .. } => (joint == k, joint == k),
-                        PDyad::Rpp { a, joint, .. } => (a == k, joint == k),
-                    };
+                    let [on_i, on_j] = dyad.group().on_links(k);
                     if on_i {
                         v.push(i as usize);
                     }

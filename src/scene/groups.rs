@@ -8,15 +8,6 @@ use crate::linkage::{
     candidates, carrier, Branch, CarrierError, Dir, Dyad, DyadKind, Group, Guide,
 };
 
-/// The five kinds, Latin and Cyrillic letters accepted.
-const KINDS: [DyadKind; 5] = [
-    DyadKind::Rrr,
-    DyadKind::Rrp,
-    DyadKind::Rpr,
-    DyadKind::Prp,
-    DyadKind::Rpp,
-];
-
 impl Builder<'_> {
     /// `[[mechanism.group]]` in file order.
     pub(super) fn groups(&mut self, raw: &[RawGroup]) -> Vec<Group> {
@@ -57,14 +48,15 @@ impl Builder<'_> {
 
     /// `kind = "RRR"` … (case-insensitive, Cyrillic accepted).
     pub(super) fn kind(&mut self, key: &str, v: Option<&String>) -> Option<DyadKind> {
-        let words: Vec<&str> = KINDS.iter().map(|k| k.letters()).collect();
+        let words: Vec<&str> = DyadKind::ALL.iter().map(|k| k.letters()).collect();
         let s = self.check.required(key, v, &one_of(&words))?;
         let upper = s.to_uppercase();
-        let found = KINDS
+        let found = DyadKind::ALL
             .into_iter()
             .find(|k| k.letters() == upper || k.letters_ru() == upper);
         if found.is_none() {
-            let expected = format!("expected {} (or ВВВ, ВВП, ВПВ, ПВП, ВПП)", one_of(&words));
+            let ru: Vec<&str> = DyadKind::ALL.iter().map(|k| k.letters_ru()).collect();
+            let expected = format!("expected {} (or {})", one_of(&words), ru.join(", "));
             self.check.push(key, Some(quoted(s)), expected);
         }
         found
@@ -72,7 +64,7 @@ impl Builder<'_> {
 
     /// Report the keys that belong to other kinds.
     pub(super) fn refuse_foreign_keys(&mut self, base: &str, kind: DyadKind, g: &RawGroup) {
-        let allowed = keys_of(kind);
+        let allowed = kind.words().keys;
         for (key, value) in g.present() {
             if !allowed.contains(&key) {
                 let expected = format!(
@@ -262,16 +254,5 @@ impl Builder<'_> {
                 Dir::Along { from, to, angle }
             }
         }
-    }
-}
-
-/// The keys of a group of `kind`, besides `kind` itself.
-fn keys_of(kind: DyadKind) -> &'static [&'static str] {
-    match kind {
-        DyadKind::Rrr => &["links", "a", "la", "b", "lb", "joint", "branch"],
-        DyadKind::Rrp => &["links", "a", "la", "guide", "joint", "branch"],
-        DyadKind::Rpr => &["links", "a", "c", "offset"],
-        DyadKind::Prp => &["links", "guide_i", "guide_j", "joint"],
-        DyadKind::Rpp => &["links", "a", "slide", "guide", "joint"],
     }
 }

@@ -1,6 +1,8 @@
 //! The scene keys named outside the loader: the scales a sheet asks the user to set when a
-//! drawing does not fit. Each key is spelled here once, in [`KEYS`]; the loader reads the
-//! same key by its [`Key::path`], and the sheets' refusals name it by the variant.
+//! drawing does not fit. Each key is spelled here once, in [`Key::path`]; the loader reads
+//! the same key by it, the sheets' refusals name it by the variant, and each study lists its
+//! keys in its row of the registration table (`scene::STUDIES`), whose test holds every key
+//! to one row and one path.
 
 use std::fmt;
 
@@ -49,55 +51,37 @@ pub enum Key {
     FrictionCaseScaleF,
 }
 
-/// Every key and its dotted path in the scene.
-const KEYS: [(Key, &str); 20] = [
-    (Key::MechanismScaleL, "mechanism.scale_l"),
-    (Key::KinematicsScaleS, "kinematics.scale_s"),
-    (Key::KinematicsScaleV, "kinematics.scale_v"),
-    (Key::KinematicsScaleA, "kinematics.scale_a"),
-    (Key::KinematicsScalePhi, "kinematics.scale_phi"),
-    (Key::ForcesScaleF, "forces.scale_f"),
-    (Key::CamScaleS, "cam.scale_s"),
-    (Key::CamScaleL, "cam.scale_l"),
-    (Key::CamScalePhi, "cam.scale_phi"),
-    (Key::GearsScaleL, "gears.scale_l"),
-    (Key::GearsRackScaleL, "gears.rack.scale_l"),
-    (Key::PlanetaryModule, "planetary.module"),
-    (Key::DynamicsScaleM, "dynamics.scale_m"),
-    (Key::DynamicsScalePhi, "dynamics.scale_phi"),
-    (Key::DynamicsScaleT, "dynamics.scale_t"),
-    (Key::DynamicsScaleJ, "dynamics.scale_j"),
-    (Key::BalancingScaleL, "balancing.scale_l"),
-    (Key::BalancingScaleMr, "balancing.scale_mr"),
-    (Key::BalancingScaleMrz, "balancing.scale_mrz"),
-    (Key::FrictionCaseScaleF, "friction.case.scale_f"),
-];
-
 impl Key {
-    /// The dotted path in the scene (`kinematics.scale_v`).
+    /// The dotted path in the scene (`kinematics.scale_v`). Which study's drawings the key
+    /// scales is its row of the registration table (`scene::STUDIES`).
     pub fn path(self) -> &'static str {
-        KEYS.iter()
-            .find(|(k, _)| *k == self)
-            .map(|(_, p)| *p)
-            .expect("every key is in KEYS")
+        match self {
+            Key::MechanismScaleL => "mechanism.scale_l",
+            Key::KinematicsScaleS => "kinematics.scale_s",
+            Key::KinematicsScaleV => "kinematics.scale_v",
+            Key::KinematicsScaleA => "kinematics.scale_a",
+            Key::KinematicsScalePhi => "kinematics.scale_phi",
+            Key::ForcesScaleF => "forces.scale_f",
+            Key::CamScaleS => "cam.scale_s",
+            Key::CamScaleL => "cam.scale_l",
+            Key::CamScalePhi => "cam.scale_phi",
+            Key::GearsScaleL => "gears.scale_l",
+            Key::GearsRackScaleL => "gears.rack.scale_l",
+            Key::PlanetaryModule => "planetary.module",
+            Key::DynamicsScaleM => "dynamics.scale_m",
+            Key::DynamicsScalePhi => "dynamics.scale_phi",
+            Key::DynamicsScaleT => "dynamics.scale_t",
+            Key::DynamicsScaleJ => "dynamics.scale_j",
+            Key::BalancingScaleL => "balancing.scale_l",
+            Key::BalancingScaleMr => "balancing.scale_mr",
+            Key::BalancingScaleMrz => "balancing.scale_mrz",
+            Key::FrictionCaseScaleF => "friction.case.scale_f",
+        }
     }
 }
 
 impl fmt::Display for Key {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.path())
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::KEYS;
-
-    #[test]
-    fn every_key_has_one_path_and_back() {
-        for (i, (k, p)) in KEYS.iter().enumerate() {
-            assert_eq!(k.path(), *p);
-            assert!(KEYS[..i].iter().all(|(o, q)| o != k && q != p), "{p} twice");
-        }
     }
 }

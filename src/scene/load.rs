@@ -13,6 +13,7 @@ use super::kinematics::kinematics;
 use super::model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart};
 use super::structure::mechanism;
+use super::studies::{default_plates, plates_of, study_of, Study, STUDIES};
 use super::text::{not_text, refused};
 use super::toml_error::toml_error;
 use crate::scale::{Quantity, Scale};
@@ -88,6 +89,12 @@ pub fn read(path: &Path) -> Result<String, SceneError> {
 /// (the file stem).
 pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let raw: RawScene = toml::from_str(text).map_err(|e| toml_error(text, path, &e))?;
+    // The sections of the studies the file has, each asked of its row once.
+    let studied: Vec<Section> = STUDIES
+        .iter()
+        .filter(|s| (s.present)(&raw))
+        .map(|s| s.section)
+        .collect();
     let mut check = Checker::default();
     let stem = path
         .file_stem()
@@ -130,26 +137,15 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let scale_l = scale_l(&mut check, raw.mechanism.as_ref().and_then(|m| m.scale_l));
     let positions = positions(&mut check, raw.positions.unwrap_or_default());
     let has_forces = raw.forces.is_some();
-    let has_balancing = raw.balancing.is_some();
-    let has_friction = raw.friction.is_some();
-    let has_dynamics = raw.dynamics.is_some();
-    let has_gears = raw.gears.is_some() || raw.planetary.is_some();
     let gears = gear_sections(&mut check, raw.gears.as_ref(), raw.planetary.as_ref());
-    let has_cam = raw.cam.is_some();
     let cam = raw.cam.as_ref().and_then(|c| cam(&mut check, c));
     let balancing = raw
         .balancing
         .as_ref()
         .and_then(|b| balancing(&mut check, b));
     let has_plates = raw.plates.is_some();
-    let plates = plates(&mut check, raw.plates, |section| match section {
-        Section::Mechanism => has_mechanism,
-        Section::Forces => has_forces,
-        Section::Balancing => has_balancing,
-        Section::Friction => has_friction,
-        Section::Dynamics => has_dynamics,
-        Section::Gears => has_gears,
-        Section::Cam => has_cam,
+    let plates = plates(&mut check, raw.plates, STUDIES, |section| {
+        studied.contains(&section)
     });
     let friction = friction(&mut check, raw.friction);
     let warnings = match &raw.kinematics {
@@ -293,33 +289,30 @@ fn positions(check: &mut Checker, raw: RawPositions) -> PositionSpec {
     }
 }
 
-/// `[plates] wanted`, default `["positions"]` for a mechanism, `["balancing"]` for a rotor
-/// and `["friction"]` for a `[friction]` section (each that the scene has). Every plate draws
-/// from a section of the scene ([`PlateKind::section`]), which `present` tells is there.
-fn plates(
+/// `[plates] wanted`, by default the default plates of every study of `table` whose section
+/// the scene has (`["positions"]` for a mechanism, `["balancing"]` for a rotor, …). Every
+/// plate draws from the section of the study that registers it, which `present` tells is
+/// there.
+pub(super) fn plates(
     check: &mut Checker,
     raw: Option<RawPlates>,
+    table: &'static [Study],
     present: impl Fn(Section) -> bool,
 ) -> Vec<PlateKind> {
-    let defaults = [
-        PlateKind::Positions,
-        PlateKind::Balancing,
-        PlateKind::Friction,
-        PlateKind::Gears,
-        PlateKind::Cam,
-    ]
-    .into_iter()
-    .filter(|k| present(k.section()))
-    .map(|k| k.stem().to_string())
-    .collect();
-    let wanted = raw.and_then(|r| r.wanted).unwrap_or(defaults);
-    let known: Vec<&str> = PlateKind::ALL.iter().map(|k| k.stem()).collect();
+    let wanted = raw.and_then(|r| r.wanted).unwrap_or_else(|| {
+        default_plates(table, &present)
+            .into_iter()
+            .map(|k| k.stem().to_string())
+            .collect()
+    });
     let mut out = Vec::new();
     for (i, stem) in wanted.iter().enumerate() {
-        match PlateKind::parse(stem) {
-            Some(kind) if !present(kind.section()) => {
+        let row = plates_of(table)
+            .find(|k| k.stem() == stem)
+            .and_then(|k| study_of(table, k).map(|s| (k, s.section)));
+        match row {
+            Some((_, section)) if !present(section) => {
                 let key = item("plates.wanted", i);
-                let section = kind.section();
                 check.push(
                     key,
                     Some(quoted(stem)),
@@ -328,9 +321,10 @@ fn plates(
                     ),
                 );
             }
-            Some(kind) => out.push(kind),
+            Some((kind, _)) => out.push(kind),
             None => {
                 let key = item("plates.wanted", i);
+                let known: Vec<&str> = plates_of(table).map(|k| k.stem()).collect();
                 let expected = format!("expected a plate kind ({})", known.join(", "));
                 check.push(key, Some(quoted(stem)), expected);
             }

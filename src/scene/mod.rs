@@ -23,6 +23,7 @@ mod planetary;
 mod raw;
 mod seed;
 mod structure;
+mod studies;
 mod task;
 mod text;
 mod toml_error;
@@ -34,6 +35,7 @@ pub use error::{Problem, SceneError};
 pub use keys::Key;
 pub use load::{files_in, load, parse, read, MAX_SCENE_BYTES};
 pub use model::{AnswerItem, Localised, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
+pub use studies::{PlateRow, Study, STUDIES};
 pub use task::{Genre, Practicum, TaskText};
 
 #[cfg(test)]

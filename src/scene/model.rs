@@ -103,45 +103,20 @@ impl std::fmt::Display for Section {
 }
 
 impl PlateKind {
-    /// The plate's file stem and the scene section it draws from: one table for
-    /// [`PlateKind::stem`] and [`PlateKind::section`].
-    fn names(self) -> (&'static str, Section) {
-        match self {
-            PlateKind::Positions => ("positions", Section::Mechanism),
-            PlateKind::Kinematics => ("kinematics", Section::Mechanism),
-            PlateKind::Forces => ("forces", Section::Forces),
-            PlateKind::Balancing => ("balancing", Section::Balancing),
-            PlateKind::Friction => ("friction", Section::Friction),
-            PlateKind::Dynamics => ("dynamics", Section::Dynamics),
-            PlateKind::Flywheel => ("flywheel", Section::Dynamics),
-            PlateKind::Gears => ("gears", Section::Gears),
-            PlateKind::Cam => ("cam", Section::Cam),
-        }
-    }
-    /// File stem of the plate (`positions`).
+    /// File stem of the plate (`positions`). The study that draws it, and so the scene
+    /// section it draws from, is its row of the registration table (`scene::STUDIES`).
     pub fn stem(self) -> &'static str {
-        self.names().0
-    }
-    /// The scene section a plate of this kind draws from.
-    pub fn section(self) -> Section {
-        self.names().1
-    }
-    /// All kinds, for `tmm list`.
-    pub const ALL: [PlateKind; 9] = [
-        PlateKind::Positions,
-        PlateKind::Kinematics,
-        PlateKind::Forces,
-        PlateKind::Balancing,
-        PlateKind::Friction,
-        PlateKind::Dynamics,
-        PlateKind::Flywheel,
-        PlateKind::Gears,
-        PlateKind::Cam,
-    ];
-
-    /// Parse a stem.
-    pub fn parse(s: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|k| k.stem() == s)
+        match self {
+            PlateKind::Positions => "positions",
+            PlateKind::Kinematics => "kinematics",
+            PlateKind::Forces => "forces",
+            PlateKind::Balancing => "balancing",
+            PlateKind::Friction => "friction",
+            PlateKind::Dynamics => "dynamics",
+            PlateKind::Flywheel => "flywheel",
+            PlateKind::Gears => "gears",
+            PlateKind::Cam => "cam",
+        }
     }
 }
 

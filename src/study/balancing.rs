@@ -3,10 +3,7 @@
 use super::*;
 
 /// The balancing's part of the report.
-pub(super) const PART: Part = Part {
-    has: |scene| scene.balancing.is_some(),
-    add: |session, rep| session.report_balancing(rep),
-};
+pub(super) const PART: Part = |session, rep| session.report_balancing(rep);
 use crate::construct::fit::{finest_fitting, fit_room};
 use crate::construct::{Context, Figure};
 use crate::forces::balancing::{self, BalancingSpec};

@@ -6,10 +6,7 @@ use super::*;
 use crate::cam::Layout;
 
 /// The cam's part of the report.
-pub(super) const PART: Part = Part {
-    has: |scene| scene.cam.is_some(),
-    add: |session, rep| session.report_cam(rep),
-};
+pub(super) const PART: Part = |session, rep| session.report_cam(rep);
 
 /// The scene's cam.
 struct Cams;

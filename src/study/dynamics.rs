@@ -4,10 +4,7 @@ use super::*;
 use crate::kinematics;
 
 /// The dynamic study's part of the report.
-pub(super) const PART: Part = Part {
-    has: |scene| scene.dynamics.is_some(),
-    add: |session, rep| session.report_dynamics(rep),
-};
+pub(super) const PART: Part = |session, rep| session.report_dynamics(rep);
 
 /// The dynamic study.
 struct Flywheel;

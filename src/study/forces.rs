@@ -5,10 +5,7 @@ use crate::construct::fit::{finest_fitting, fit_room};
 use crate::geom::DVec2;
 
 /// The force analysis's part of the report (after the kinematic study's, whose plans it reads).
-pub(super) const PART: Part = Part {
-    has: |scene| scene.mechanism.is_some() && scene.forces.is_some(),
-    add: |session, rep| session.report_forces(rep),
-};
+pub(super) const PART: Part = |session, rep| session.report_forces(rep);
 
 /// The force analysis by (μ_l of the groups, the kinematic μ_l, μ_v, μ_a, position).
 struct Polygons;

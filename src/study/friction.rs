@@ -3,10 +3,7 @@
 use super::*;
 
 /// The friction cases' part of the report.
-pub(super) const PART: Part = Part {
-    has: |scene| !scene.friction.is_empty(),
-    add: |session, rep| session.report_friction(rep),
-};
+pub(super) const PART: Part = |session, rep| session.report_friction(rep);
 use crate::construct::fit::{finest_fitting, fit_room};
 use crate::construct::Figure;
 use crate::forces::friction::{self, DrawingKind, FrictionCase, FrictionError};

@@ -3,10 +3,7 @@
 use super::*;
 
 /// The gear study's part of the report.
-pub(super) const PART: Part = Part {
-    has: |scene| scene.gears.is_some(),
-    add: |session, rep| session.report_gears(rep),
-};
+pub(super) const PART: Part = |session, rep| session.report_gears(rep);
 
 /// The gear study.
 struct Wheels;

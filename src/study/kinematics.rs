@@ -5,10 +5,7 @@
 use super::*;
 
 /// The kinematic study's part of the report.
-pub(super) const PART: Part = Part {
-    has: |scene| scene.mechanism.is_some(),
-    add: |session, rep| session.report_kinematics(rep),
-};
+pub(super) const PART: Part = |session, rep| session.report_kinematics(rep);
 use crate::kinematics;
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a

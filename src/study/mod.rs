@@ -9,7 +9,8 @@
 //! very constructions the plates draw.
 //!
 //! Each study lives in its own file: its caches (a `memo::Cache` marker each, kept in the
-//! session's `memo::Caches`) and its part of the report, registered once in `PARTS`.
+//! session's `memo::Caches`) and its part of the report, reached from its row of the
+//! registration table (`scene::STUDIES`, which gives the report's order) by one `match`.
 //!
 //! Every construction the session carries out is logged ([`Session::constructions`]), so
 //! a test can show that nothing is constructed twice.
@@ -44,7 +45,7 @@ use crate::linkage::{
     PlanRequest, PositionPlan,
 };
 use crate::scale::Scale;
-use crate::scene::{Scene, Start};
+use crate::scene::{Scene, Section, Start, STUDIES};
 use memo::{Cache, Caches};
 use std::sync::{Arc, Mutex};
 use thiserror::Error;
@@ -85,23 +86,22 @@ impl Cache for Positions {
     type Value = Cached<PositionPlan>;
 }
 
-/// One study's part of the report: whether the scene has the study, and what it adds.
-struct Part {
-    has: fn(&Scene) -> bool,
-    add: fn(&Session<'_>, &mut Report) -> Result<(), StudyError>,
-}
+/// One study's part of the report: what it adds.
+type Part = fn(&Session<'_>, &mut Report) -> Result<(), StudyError>;
 
-/// Every study's part of the report, in the report's order. A study registers here once; its
-/// caches and its part are declared in its own file.
-const PARTS: [Part; 7] = [
-    kinematics::PART,
-    forces::PART,
-    balancing::PART,
-    friction::PART,
-    dynamics::PART,
-    gears::PART,
-    cam::PART,
-];
+/// The part of the report of the study of `section`'s row of the registration table
+/// ([`STUDIES`]); its caches and its part are declared in its own file.
+fn part(section: Section) -> Part {
+    match section {
+        Section::Mechanism => kinematics::PART,
+        Section::Forces => forces::PART,
+        Section::Balancing => balancing::PART,
+        Section::Friction => friction::PART,
+        Section::Dynamics => dynamics::PART,
+        Section::Gears => gears::PART,
+        Section::Cam => cam::PART,
+    }
+}
 
 /// The session over one scene.
 pub struct Session<'s> {
@@ -199,8 +199,8 @@ impl<'s> Session<'s> {
         self.ctx.clone()
     }
 
-    /// The report of every study of the scene (`PARTS`, each the scene has, rows and notes
-    /// in that order). A scene with none is refused for want of a mechanism.
+    /// The report of every study of the scene (each row of [`STUDIES`] the scene has, its
+    /// rows and notes in that order). A scene with none is refused for want of a mechanism.
     pub fn report(&self) -> Result<Report, StudyError> {
         let mut rep = Report {
             scene: self.scene.stem.clone(),
@@ -208,12 +208,12 @@ impl<'s> Session<'s> {
             tables: Vec::new(),
             notes: Vec::new(),
         };
-        let mut parts = PARTS.iter().filter(|p| (p.has)(self.scene)).peekable();
-        if parts.peek().is_none() {
+        let mut studies = STUDIES.iter().filter(|s| (s.has)(self.scene)).peekable();
+        if studies.peek().is_none() {
             return Err(StudyError::NoMechanism("the report"));
         }
-        for part in parts {
-            (part.add)(self, &mut rep)?;
+        for study in studies {
+            part(study.section)(self, &mut rep)?;
         }
         rep.notes
             .extend(crate::check::seed_notes(&self.scene.seed, &rep.rows));

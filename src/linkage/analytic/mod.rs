@@ -4,6 +4,7 @@
 //! constant ω₁ the velocities are ω₁·dX/dφ₁ and the accelerations ω₁²·d²X/dφ₁².
 //! Shares nothing with the construction but the program's index tables.
 
+use super::kinds::{Prp, Rpp, Rpr, Rrp, Rrr};
 use super::model::Branch;
 use super::program::{Op, PDir, PDyad, PGuide, Program};
 use crate::geom::DVec2;
@@ -312,23 +313,23 @@ impl Program {
         let fail = |detail: String| Unassembled { group, detail };
         let (i, j) = (links[0] as usize, links[1] as usize);
         match *dyad {
-            PDyad::Rrr {
+            PDyad::Rrr(Rrr {
                 a,
                 la,
                 b,
                 lb,
                 joint,
                 branch,
-            } => self.rrr(st, group, [i, j], [(a, la), (b, lb)], (joint, branch))?,
-            PDyad::Rrp {
+            }) => self.rrr(st, group, [i, j], [(a, la), (b, lb)], (joint, branch))?,
+            PDyad::Rrp(Rrp {
                 a,
                 la,
                 guide,
                 joint,
                 branch,
-            } => self.rrp(st, group, [i, j], (a, la), &guide, (joint, branch))?,
-            PDyad::Rpr { a, c, offset } => self.rpr(st, group, [i, j], (a, c), offset)?,
-            PDyad::Prp { gi, gj, joint } => {
+            }) => self.rrp(st, group, [i, j], (a, la), &guide, (joint, branch))?,
+            PDyad::Rpr(Rpr { a, c, offset }) => self.rpr(st, group, [i, j], (a, c), offset)?,
+            PDyad::Prp(Prp { gi, gj, joint }) => {
                 let (l1, l2) = (st.guide(&gi), st.guide(&gj));
                 let (x, s) = meet(l1, l2)
                     .ok_or_else(|| fail(format!("the guides of links {i} and {j} are parallel")))?;
@@ -337,12 +338,12 @@ impl Program {
                 st.set_link(j, l2.t, joint);
                 st.pose.crossing_sin.push(s);
             }
-            PDyad::Rpp {
+            PDyad::Rpp(Rpp {
                 a,
                 slide,
                 guide,
                 joint,
-            } => {
+            }) => {
                 let ts = st.dir(&slide);
                 let l1 = LineJet {
                     g: st.jet(a),

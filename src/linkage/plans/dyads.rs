@@ -6,6 +6,7 @@ use super::names::plain;
 use super::PlanKind;
 use crate::construct::ConstructionError;
 use crate::geom::DVec2;
+use crate::linkage::kinds::{Prp, Rpp, Rpr, Rrp, Rrr};
 use crate::linkage::program::{PDir, PDyad, PGuide};
 
 impl Builder<'_> {
@@ -15,18 +16,18 @@ impl Builder<'_> {
         let ij = links.map(|l| l as usize);
         let step = format!("group ({},{})", ij[0], ij[1]);
         match *dyad {
-            PDyad::Rrr { a, b, joint, .. } => self.rrr(&step, ij, [a, b], joint),
-            PDyad::Rrp {
+            PDyad::Rrr(Rrr { a, b, joint, .. }) => self.rrr(&step, ij, [a, b], joint),
+            PDyad::Rrp(Rrp {
                 a, guide, joint, ..
-            } => self.rrp(&step, ij, a, &guide, joint),
-            PDyad::Rpr { a, c, offset } => self.rpr(&step, ij, (a, c), offset),
-            PDyad::Prp { gi, gj, joint } => self.prp(&step, ij, [&gi, &gj], joint),
-            PDyad::Rpp {
+            }) => self.rrp(&step, ij, a, &guide, joint),
+            PDyad::Rpr(Rpr { a, c, offset }) => self.rpr(&step, ij, (a, c), offset),
+            PDyad::Prp(Prp { gi, gj, joint }) => self.prp(&step, ij, [&gi, &gj], joint),
+            PDyad::Rpp(Rpp {
                 a,
                 slide,
                 guide,
                 joint,
-            } => self.rpp(&step, ij, a, (&slide, &guide), joint),
+            }) => self.rpp(&step, ij, a, (&slide, &guide), joint),
         }
     }
 
