@@ -30,6 +30,7 @@ mod lecture;
 mod machines;
 mod markup;
 mod moments;
+mod pair_worked;
 mod plan_worked;
 mod plans;
 mod positions;
