@@ -16,22 +16,16 @@
 //!    J_I = ΔT_I/(δ·ω_ср²), J_м = J_I − J_const.
 
 use super::reduce::Reduced;
-use super::scales::{given_draws, scale_of};
+use super::scales::{given_draws, scale_of, HEIGHT_MM};
 use super::spec::DynamicsSpec;
 use super::twin::{Cycle, Solution};
-use super::work::{work, WorkScales};
+use super::work::{read_up, work, WorkScales};
 use super::DynamicsError;
 use crate::calculus::{draw_axes, thin};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{hermite, DVec2};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
-
-/// Preferred drawn length of the abscissa 2π, mm.
-pub(super) const TURN_MM: f64 = 180.0;
-/// Preferred height of a diagram's largest ordinate, mm: the M, A and ΔT diagrams fill
-/// their part of the A1 dynamics sheet (50 mm left a quarter of it empty).
-pub(super) const HEIGHT_MM: f64 = 80.0;
 
 /// A textbook route to the flywheel, as read off its diagram.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -116,16 +110,6 @@ fn plot(
         Role::Result,
         &[],
     )
-}
-
-/// Signed ordinate read from `a` up to `b` (same abscissa), in the recorder's mm as read.
-pub(super) fn read_up(rec: &Recorder, a: DVec2, b: DVec2) -> f64 {
-    let m = rec.measure(a, b);
-    if b.y < a.y {
-        -m.read_mm
-    } else {
-        m.read_mm
-    }
 }
 
 /// Construct the diagrams from the reduction at the N equally spaced positions.

@@ -2,9 +2,8 @@
 //! integrated by chords into A_с at μ_A = μ_M·μ_φ·H; A_д the straight line to A_с(2π), the ray
 //! from the pole parallel to it reading M_д; ΔT = A_д − A_с measured between them.
 
-use super::draw::{read_up, HEIGHT_MM, TURN_MM};
 use super::reduce::Reduced;
-use super::scales::{given_draws, scale_of};
+use super::scales::{given_draws, scale_of, HEIGHT_MM, TURN_MM};
 use super::spec::{ConstantMoment, DynamicsSpec};
 use super::DynamicsError;
 use crate::calculus::{integrate_chords, thin, Diagram, Layout, Sampling, Scales};
@@ -162,4 +161,14 @@ pub(super) fn work(
         m_drive,
         delta_t,
     })
+}
+
+/// Signed ordinate read from `a` up to `b` (same abscissa), in the recorder's mm as read.
+pub(super) fn read_up(rec: &Recorder, a: DVec2, b: DVec2) -> f64 {
+    let m = rec.measure(a, b);
+    if b.y < a.y {
+        -m.read_mm
+    } else {
+        m.read_mm
+    }
 }

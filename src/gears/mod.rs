@@ -245,11 +245,16 @@ pub fn generation_scale(c: &Cutting) -> Result<Scale, GearError> {
     scale_for(4.0 * std::f64::consts::PI * c.module, 400.0)
 }
 
-/// Carry out `spec` in `ctx`.
+/// Carry out `spec` in `ctx`, the pair's blocking contour through the caller's `studies`
+/// (the one kept there, else traced and kept).
 ///
 /// # Errors
 /// A [`GearError`] from the pair's geometry or a construction.
-pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearStudy, GearError> {
+pub fn study(
+    spec: &GearsSpec,
+    ctx: &crate::construct::Context,
+    studies: &blocking::Studies,
+) -> Result<GearStudy, GearError> {
     let pair = match &spec.pair {
         Some(ps) => {
             let p = Pair::working(*ps)?;
@@ -284,7 +289,7 @@ pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearSt
     let blocking = spec
         .pair
         .as_ref()
-        .and_then(|ps| blocking::Study::of(ps, spec.chosen).ok());
+        .and_then(|ps| studies.of(ps, spec.chosen).ok());
     Ok(GearStudy {
         pair,
         seed: spec.seed,

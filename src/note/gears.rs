@@ -4,10 +4,10 @@
 
 use super::markup::{frac, inline, label, num, sym, text, Align};
 use super::rows::{by_position, of_scene, quantities};
+use super::worked::{deg, worked, INV};
 use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
 use crate::gears::{inv, Generation, Pair};
-use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::sheets::captions::{unit_in, Meaning as M, NoteText as T, Text as S};
 
@@ -87,25 +87,6 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     });
     w.figures((PlateKind::Gears, None), |_| true, |own| own.to_string());
     Ok(())
-}
-
-/// The involute function in a formula.
-pub(super) const INV: &str = "op(\"inv\")";
-
-/// An angle (rad) in degrees in a formula: `26,581°`.
-pub(super) fn deg(a: f64, lang: Lang) -> String {
-    format!("{}°", num(a.to_degrees(), 5, lang))
-}
-
-/// Writes "`lhs` = `symbolic` = `substituted` = `value`" as one formula (`lhs` is math).
-pub(super) fn worked(
-    w: &mut Writer<'_, '_>,
-    lhs: &str,
-    symbolic: &str,
-    substituted: &str,
-    value: String,
-) {
-    w.formula(&format!("{lhs} = {symbolic} = {substituted} = {value}"));
 }
 
 /// The specific sliding in the shape of seed 000's Table 6: λ₁ and λ₂ at N₁, at the ends of

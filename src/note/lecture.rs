@@ -3,9 +3,9 @@
 //! found, the formula, the numbers, the result — then its table checking the construction
 //! against the calculation and its figures.
 
-use super::gears::{deg, worked};
 use super::markup::{frac, num, sym, unit};
 use super::rows::of_scene;
+use super::worked::{deg, worked};
 use super::{NoteError, Writer};
 use crate::check::Symbol;
 use crate::forces::balancing::{

@@ -38,6 +38,7 @@ mod practicum;
 mod rows;
 mod train;
 mod typeset;
+mod worked;
 mod zhukovsky;
 
 pub use typeset::PAGE_BREAK;

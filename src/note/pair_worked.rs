@@ -1,8 +1,8 @@
 //! The pair's geometry in the note as seed 000 §4 works it, formula by formula (symbols,
 //! numbers, result): the operating engagement, then each wheel's radii and tooth.
 
-use super::gears::{deg, worked, INV};
 use super::markup::{frac, num, sym, unit};
+use super::worked::{deg, worked, INV};
 use super::Writer;
 use crate::gears::{inv, Pair};
 use crate::scale::Lang;
