@@ -29,14 +29,12 @@ mod tests;
 mod tests_closing;
 #[cfg(test)]
 mod tests_limits;
-#[cfg(test)]
-mod tests_train;
 mod trace;
 mod train;
-mod train_layout;
+// The train's notes stay beside the room until the typed notes (issue 46 §3) land: they
+// reach its layout and study by these names.
 mod train_notes;
-mod train_rank;
-mod train_study;
+use train::{layout as train_layout, study as train_study};
 mod triangles;
 mod undercut;
 
@@ -48,10 +46,11 @@ pub use mesh::{LAMBDA_MM, NAME_WITHIN_MM};
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
 pub use rows::PairSeed;
-pub use train::{Mesh, Stage, Train, TrainError, TrainMobility, Wheel};
-pub use train_layout::Closing;
+pub use train::{
+    train_study, Closing, Mesh, PlanetarySpec, Stage, Train, TrainError, TrainMobility, TrainSeed,
+    TrainStudy, Wheel,
+};
 pub use train_notes::SeedStage;
-pub use train_study::{train_study, PlanetarySpec, TrainSeed, TrainStudy};
 
 use crate::scale::Scale;
 use thiserror::Error;
