@@ -8,7 +8,7 @@ use super::captions::{unit_in, FrictionText, Text};
 use super::layout::{lay_out_smallest, Block, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
-use crate::forces::friction::{
+use crate::friction::{
     guide_twin, incline_twin, journal_twin, pivot_twin, rolling_twin, screw_twin, slider_twin,
     wedge_twin, CaseKind, Drawing, DrawingKind, Motion, Rolling, Slider, SliderState, Solved,
 };
@@ -238,8 +238,8 @@ fn rolling_lines(n: usize, c: &Rolling, lang: Lang) -> Vec<String> {
             "{n}: R_{{n1}} = Q, R_{{n2}} = Q + 2G; P = {} = {} {newton}; {}: P = Q·f_{{2}} = {} {newton}",
             match t.slide {
                 None => "(Q·k_{1} + (Q + 2G)·k_{2})/d",
-                Some(crate::forces::friction::Slide::OnRollers) => "Q·f_{1}",
-                Some(crate::forces::friction::Slide::OnPlane) => "(Q + 2G)·f_{2}",
+                Some(crate::friction::Slide::OnRollers) => "Q·f_{1}",
+                Some(crate::friction::Slide::OnPlane) => "(Q + 2G)·f_{2}",
             },
             num(t.p, lang),
             FrictionText::Sliding.get(lang),
@@ -250,7 +250,7 @@ fn rolling_lines(n: usize, c: &Rolling, lang: Lang) -> Vec<String> {
 
 /// The closed forms of a cam's follower in its guide (case `n`): P and the bearings'
 /// reactions, the jamming angle against λ.
-fn guide_lines(n: usize, c: &crate::forces::friction::FollowerGuide, lang: Lang) -> Vec<String> {
+fn guide_lines(n: usize, c: &crate::friction::FollowerGuide, lang: Lang) -> Vec<String> {
     let newton = unit_in("N", lang);
     let Some(t) = guide_twin(c) else {
         return Vec::new();
@@ -273,7 +273,7 @@ fn guide_lines(n: usize, c: &crate::forces::friction::FollowerGuide, lang: Lang)
 
 /// The closed forms of a cam's rocker in its pivot (case `n`): the friction circle, the
 /// couple's arm, P and the jamming angle against λ.
-fn pivot_lines(n: usize, c: &crate::forces::friction::RockerPivot, lang: Lang) -> Vec<String> {
+fn pivot_lines(n: usize, c: &crate::friction::RockerPivot, lang: Lang) -> Vec<String> {
     let newton = unit_in("N", lang);
     let metre = unit_in("m", lang);
     let Some(t) = pivot_twin(c) else {

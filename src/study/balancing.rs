@@ -7,9 +7,9 @@ pub(super) const PART: Part = Part {
     has: |scene| scene.balancing.is_some(),
     add: |session, rep| session.report_balancing(rep),
 };
+use crate::balancing::{self, BalancingSpec};
 use crate::construct::fit::{finest_fitting, fit_room};
 use crate::construct::{Context, Figure};
-use crate::forces::balancing::{self, BalancingSpec};
 use crate::geom::DVec2;
 use crate::scale::Scale;
 

@@ -9,7 +9,7 @@ pub(super) const PART: Part = Part {
 };
 use crate::construct::fit::{finest_fitting, fit_room};
 use crate::construct::Figure;
-use crate::forces::friction::{self, DrawingKind, FrictionCase, FrictionError};
+use crate::friction::{self, DrawingKind, FrictionCase, FrictionError};
 use crate::geom::DVec2;
 use crate::scale::Quantity;
 

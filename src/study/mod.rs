@@ -30,12 +30,12 @@ pub use forces::EQUILIBRIUM_TOLERANCE;
 pub use kinematics::{ChartScales, KinScales, Kinematics};
 pub use scales::KinSheets;
 
+use crate::balancing::{Balancing, BalancingError};
 use crate::check::Row;
 use crate::check::{Report, Table};
 use crate::construct::{Context, Drafting, Figure};
-use crate::forces::balancing::{Balancing, BalancingError};
-use crate::forces::friction::{FrictionError, Solved};
 use crate::forces::{ForceError, ForceSpec, PositionForces};
+use crate::friction::{FrictionError, Solved};
 use crate::kinematics::{
     acceleration_indices, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
 };
