@@ -34,6 +34,7 @@
 //! resolved dyads) stays inside `linkage`.
 
 pub mod audit;
+pub mod balancing;
 pub mod batch;
 pub mod bench;
 pub mod calculus;
@@ -42,6 +43,7 @@ pub mod check;
 pub mod construct;
 pub mod dynamics;
 pub mod forces;
+pub mod friction;
 pub mod gears;
 pub mod geom;
 pub mod kept;

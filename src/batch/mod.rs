@@ -22,7 +22,7 @@ mod key;
 use crate::render::{self, Options};
 use crate::scene;
 use crate::scene::user_table::{self, CellError};
-use crate::study::Session;
+use crate::study::{Session, Shared};
 use key::row_of;
 pub use key::{answer_columns, answer_key_csv, answer_key_pdf, write_answer_key, Column};
 use std::collections::HashSet;
@@ -355,10 +355,12 @@ pub struct Outcome {
 
 /// One variant: its scene (named `<name>.toml` beside the template), its files rendered and
 /// written into `out/<name>/` with its task sheet (`task.pdf`, a task with a mechanism), and
-/// the exact values of `columns` from its report.
+/// the exact values of `columns` from its report; its session shares `shared` with the
+/// other variants'.
 fn one(
     v: &Variant,
     template: &Path,
+    shared: &Arc<Shared>,
     out: &Path,
     options: &Options,
     columns: &[Column],
@@ -377,7 +379,7 @@ fn one(
     };
     let text = v.text().map_err(|e| why(&e))?;
     let scene = scene::parse(&text, &path).map_err(|e| why(&e))?;
-    let session = Session::new(&scene, options.drafting);
+    let session = Session::sharing(&scene, options.drafting, Arc::clone(shared));
     // The task sheet to hand out, for a task with a mechanism: made before anything of the
     // variant is written, so that a variant whose task sheet fails leaves no folder.
     let task = match scene.mechanism {
@@ -433,10 +435,13 @@ pub fn run(
     done: &(dyn Fn(&str) + Sync),
 ) -> Vec<Outcome> {
     let mut results: Vec<Option<Outcome>> = variants.iter().map(|_| None).collect();
+    // What the variants' sessions share (the gear pair's blocking contour, traced once for
+    // the variants of one pair).
+    let shared = Arc::new(Shared::default());
     crate::threads::each(
         variants,
         rayon::current_num_threads(),
-        |v| one(v, template, out, options, columns),
+        |v| one(v, template, &shared, out, options, columns),
         |k, result| {
             // What the PDF writer and the typesetter memoized for variants long done goes:
             // its caches would otherwise grow with every variant of the class.

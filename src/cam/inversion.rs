@@ -54,7 +54,16 @@ pub(crate) fn invert(
     (base, roller): (f64, f64),
     ctx: &Context,
 ) -> Result<Inversion, CamError> {
-    let at = |mu: Scale| invert_at(spec, points, read, place, (base, roller), mu, ctx);
+    let cam = Inverting {
+        spec,
+        points,
+        read,
+        place,
+        base,
+        roller,
+        flat: matches!(spec.follower, Follower::Flat { .. }),
+    };
+    let at = |mu: Scale| cam.at(mu, ctx);
     if let Some(mu) = spec.scale_l {
         return at(mu);
     }
@@ -82,80 +91,123 @@ pub(crate) fn invert(
     Ok(inv)
 }
 
-/// The profile by inversion at `mu`.
-fn invert_at(
-    spec: &CamSpec,
-    points: &[Point],
-    read: &[Motion],
-    place: &Placement,
-    (base, roller): (f64, f64),
-    mu: Scale,
-    ctx: &Context,
-) -> Result<Inversion, CamError> {
-    let mm = |p: DVec2| p / mu.value();
-    let mut rec = Recorder::in_context("inversion", mu, ctx);
-    let o = cam_centre(&mut rec);
-    // The cam's sense of rotation: an arrowed arc about O₁ (counter-clockwise here; the
-    // mirror image of a clockwise cam turns it round).
-    let turn = Arc {
-        center: DVec2::ZERO,
-        radius: 0.3 * mu.to_mm(base),
-        start: -1.2,
-        sweep: 0.9,
-    };
-    let w = rec.draw("the cam's rotation ω_1", Item::Arc(turn), Role::Given, &[o]);
-    let end = turn.end();
-    let along = DVec2::from_angle(turn.start + turn.sweep).perp();
-    rec.draw(
-        "the cam's rotation ω_1: the arrow",
-        Item::Vector {
-            from: end - along * 0.1,
-            to: end,
-        },
-        Role::Given,
-        &[w],
-    );
-    rec.label(
-        w,
-        "ω_1",
-        turn.eval(0.5),
-        DVec2::from_angle(turn.start + 0.5 * turn.sweep),
-    );
-    let flat = matches!(spec.follower, Follower::Flat { .. });
-    rec.draw(
-        "base circle r_0",
-        Item::Circle(Circle {
-            center: DVec2::ZERO,
-            radius: mu.to_mm(base),
-        }),
-        Role::Construction,
-        &[o],
-    );
-    if let Placement::Translating { offset, .. } = *place {
-        if offset != 0.0 && !flat {
-            rec.draw(
-                "offset circle e",
-                Item::Circle(Circle {
-                    center: DVec2::ZERO,
-                    radius: mu.to_mm(offset.abs()),
-                }),
-                Role::Construction,
-                &[o],
-            );
+/// What the profile by inversion is drawn from: the law's points with the follower's motion
+/// read at each, its placement, the base circle's and the roller's radii.
+struct Inverting<'a> {
+    spec: &'a CamSpec,
+    points: &'a [Point],
+    read: &'a [Motion],
+    place: &'a Placement,
+    base: f64,
+    roller: f64,
+    /// A flat-faced follower: no pitch curve, the face lines' contacts.
+    flat: bool,
+}
+
+/// The follower's inverted positions as drawn, in the cam frame.
+#[derive(Default)]
+struct Turned {
+    /// The pitch points.
+    centres: Vec<DVec2>,
+    /// The practical profile's points.
+    profile: Vec<DVec2>,
+    /// The practical profile's tangents.
+    tangents: Vec<DVec2>,
+    /// The follower's kinematics at each.
+    kins: Vec<Kin>,
+}
+
+impl Inverting<'_> {
+    /// The profile by inversion at `mu`.
+    fn at(&self, mu: Scale, ctx: &Context) -> Result<Inversion, CamError> {
+        let mut rec = Recorder::in_context("inversion", mu, ctx);
+        let o = cam_centre(&mut rec);
+        rotation(&mut rec, o, mu.to_mm(self.base));
+        self.circles(&mut rec, o, mu);
+        let mut turned = Turned::default();
+        for (i, p) in self.points.iter().enumerate() {
+            rec.set_group(i as u32 + 1);
+            self.position(&mut rec, o, mu, (i, p), &mut turned);
+        }
+        rec.set_group(0);
+        self.profiles(&mut rec, o, mu, &turned);
+        // The angle read off the drawing ([`super::reading`]).
+        let paths: Vec<DVec2> = self
+            .points
+            .iter()
+            .zip(&turned.kins)
+            .map(|(p, k)| to_cam(k.path, p.phi))
+            .collect();
+        let drawn = Drawn {
+            spec: self.spec,
+            points: self.points,
+            centres: &turned.centres,
+        };
+        let angles = read_angles(&drawn, &paths);
+        let rho_min = if self.flat {
+            self.read
+                .iter()
+                .map(|m| self.base + m.s + m.d2s)
+                .fold(f64::INFINITY, f64::min)
+        } else {
+            drawn_rho_min(self.points, &turned.centres)
+        };
+        Ok(Inversion {
+            figure: rec.finish(),
+            scale: mu,
+            centres: turned.centres,
+            profile: turned.profile,
+            tangents: turned.tangents,
+            angles,
+            rho_min,
+        })
+    }
+
+    /// The base circle, and a translating follower's offset circle (a roller's or a knife
+    /// edge's, offset).
+    fn circles(&self, rec: &mut Recorder, o: StepId, mu: Scale) {
+        rec.draw(
+            "base circle r_0",
+            Item::Circle(Circle {
+                center: DVec2::ZERO,
+                radius: mu.to_mm(self.base),
+            }),
+            Role::Construction,
+            &[o],
+        );
+        if let Placement::Translating { offset, .. } = *self.place {
+            if offset != 0.0 && !self.flat {
+                rec.draw(
+                    "offset circle e",
+                    Item::Circle(Circle {
+                        center: DVec2::ZERO,
+                        radius: mu.to_mm(offset.abs()),
+                    }),
+                    Role::Construction,
+                    &[o],
+                );
+            }
         }
     }
-    let mut centres = Vec::with_capacity(points.len());
-    let mut profile = Vec::with_capacity(points.len());
-    let mut tangents = Vec::with_capacity(points.len());
-    let mut kins: Vec<Kin> = Vec::with_capacity(points.len());
-    for (i, p) in points.iter().enumerate() {
-        rec.set_group(i as u32 + 1);
-        let m = read.get(i).copied().unwrap_or(Motion {
+
+    /// The follower at point `i` turned back by its φ: the compass arc to its ray, the
+    /// follower, the roller, the pitch point (the phases' ends labelled).
+    fn position(
+        &self,
+        rec: &mut Recorder,
+        o: StepId,
+        mu: Scale,
+        (i, p): (usize, &Point),
+        turned: &mut Turned,
+    ) {
+        let mm = |p: DVec2| p / mu.value();
+        let (base, roller, flat) = (self.base, self.roller, self.flat);
+        let m = self.read.get(i).copied().unwrap_or(Motion {
             s: 0.0,
             ds: 0.0,
             d2s: 0.0,
         });
-        let kin = place.kin(m);
+        let kin = self.place.kin(m);
         let c = to_cam(kin.b, p.phi);
         // The compass arc about O₁ through B_i (radius O₁B_i), notched where it meets ray i.
         rec.draw(
@@ -165,7 +217,7 @@ fn invert_at(
             &[o],
         );
         // The follower in its inverted position.
-        let fol = match *place {
+        let fol = match *self.place {
             Placement::Rocker { pivot, .. } => Segment::new(mm(to_cam(pivot, p.phi)), mm(c)),
             // The follower's axis from inside the base circle out to the pitch point: the
             // axes would meet in a blot at the centre (tangent to the circle e, about it).
@@ -174,7 +226,7 @@ fn invert_at(
             }
             Placement::Translating { .. } => {
                 let dir = to_cam(DVec2::X, p.phi);
-                let half = mu.to_mm(spec.stroke.max(m.ds.abs()) * 0.6 + 0.002);
+                let half = mu.to_mm(self.spec.stroke.max(m.ds.abs()) * 0.6 + 0.002);
                 let foot = mm(to_cam(DVec2::new(0.0, base + m.s), p.phi));
                 Segment::new(foot - dir * half, foot + dir * half)
             }
@@ -215,112 +267,127 @@ fn invert_at(
         if p.k == 0 || p.last {
             rec.label(pid, p.label.clone(), mm(c), mm(c).normalize_or_zero());
         }
-        centres.push(c);
-        profile.push(t);
-        tangents.push(if flat {
+        turned.centres.push(c);
+        turned.profile.push(t);
+        turned.tangents.push(if flat {
             to_cam(DVec2::X, p.phi)
         } else {
             to_cam(kin.normal().perp(), p.phi)
         });
-        kins.push(kin);
+        turned.kins.push(kin);
     }
-    rec.set_group(0);
-    let dwell = |from: DVec2, to: DVec2| -> Vec<DVec2> {
-        let a = Arc::between(DVec2::ZERO, from.length(), from, to);
-        // The dwell is swept clockwise in the cam frame (the short way is right for < 180°).
-        let sweep = if a.sweep > 0.0 {
-            a.sweep - TAU
-        } else {
-            a.sweep
+
+    /// The pitch (theoretical) profile through the pitch points, unless flat, and the
+    /// practical profile: the French curve along each moving phase, the dwells' arcs.
+    fn profiles(&self, rec: &mut Recorder, o: StepId, mu: Scale, turned: &Turned) {
+        let closed = |pts: &[DVec2], curve: bool| -> Vec<DVec2> {
+            closed_profile(self.points, pts, curve.then_some(&turned.tangents[..]))
+                .into_iter()
+                .map(|p| p / mu.value())
+                .collect()
         };
-        let n = 24;
-        (1..n)
-            .map(|j| DVec2::from_angle(a.start + sweep * j as f64 / n as f64) * from.length())
-            .collect()
-    };
-    // The last point of the rise (the return's first follows it) and of the return.
-    let n = points.iter().position(|p| p.last).unwrap_or(0);
-    let m = points.len().saturating_sub(1);
-    // A moving phase's points, the practical profile's with the French curve between them.
-    let phase = |pts: &[DVec2], range: std::ops::RangeInclusive<usize>, curve: bool| {
-        let (a, b) = (*range.start(), *range.end());
-        let mut out = vec![pts[a]];
-        for i in a..b {
-            if curve {
-                out.extend_from_slice(
-                    &french_curve(
-                        pts[i],
-                        tangents[i],
-                        pts[i + 1],
-                        tangents[i + 1],
-                        CURVE_PIECES,
-                    )[1..],
-                );
-            } else {
-                out.push(pts[i + 1]);
-            }
+        if !self.flat {
+            rec.draw(
+                "pitch (theoretical) profile",
+                Item::Polyline {
+                    points: closed(&turned.centres, false),
+                    closed: true,
+                },
+                Role::Construction,
+                &[o],
+            );
         }
-        out
-    };
-    let closed = |pts: &[DVec2], curve: bool| -> Vec<DVec2> {
-        let mut out = phase(pts, 0..=n, curve);
-        out.extend(dwell(pts[n], pts[n + 1]));
-        out.extend(phase(pts, n + 1..=m, curve));
-        out.extend(dwell(pts[m], pts[0]));
-        out.into_iter().map(mm).collect()
-    };
-    if !flat {
         rec.draw(
-            "pitch (theoretical) profile",
+            if self.flat {
+                "practical profile: envelope of the face lines"
+            } else {
+                "practical profile: envelope of the rollers"
+            },
             Item::Polyline {
-                points: closed(&centres, false),
+                points: closed(&turned.profile, true),
                 closed: true,
             },
-            Role::Construction,
+            Role::Result,
             &[o],
         );
     }
+}
+
+/// The cam's sense of rotation: an arrowed arc about O₁ of radius 0.3·r₀ (`r0_mm` the base
+/// radius drawn; counter-clockwise here, the mirror image of a clockwise cam turns it round).
+fn rotation(rec: &mut Recorder, o: StepId, r0_mm: f64) {
+    let turn = Arc {
+        center: DVec2::ZERO,
+        radius: 0.3 * r0_mm,
+        start: -1.2,
+        sweep: 0.9,
+    };
+    let w = rec.draw("the cam's rotation ω_1", Item::Arc(turn), Role::Given, &[o]);
+    let end = turn.end();
+    let along = DVec2::from_angle(turn.start + turn.sweep).perp();
     rec.draw(
-        if flat {
-            "practical profile: envelope of the face lines"
-        } else {
-            "practical profile: envelope of the rollers"
+        "the cam's rotation ω_1: the arrow",
+        Item::Vector {
+            from: end - along * 0.1,
+            to: end,
         },
-        Item::Polyline {
-            points: closed(&profile, true),
-            closed: true,
-        },
-        Role::Result,
-        &[o],
+        Role::Given,
+        &[w],
     );
-    // The angle read off the drawing ([`super::reading`]).
-    let paths: Vec<DVec2> = points
-        .iter()
-        .zip(&kins)
-        .map(|(p, k)| to_cam(k.path, p.phi))
-        .collect();
-    let drawn = Drawn {
-        spec,
-        points,
-        centres: &centres,
-    };
-    let angles = read_angles(&drawn, &paths);
-    let rho_min = if flat {
-        read.iter()
-            .map(|m| base + m.s + m.d2s)
-            .fold(f64::INFINITY, f64::min)
+    rec.label(
+        w,
+        "ω_1",
+        turn.eval(0.5),
+        DVec2::from_angle(turn.start + 0.5 * turn.sweep),
+    );
+}
+
+/// The closed profile through `pts` (one per point of the law, cam frame): each moving
+/// phase through its points — with the French curve between them when their `tangents` are
+/// given — and each dwell the arc about O₁ it is.
+fn closed_profile(points: &[Point], pts: &[DVec2], tangents: Option<&[DVec2]>) -> Vec<DVec2> {
+    // The last point of the rise (the return's first follows it) and of the return.
+    let n = points.iter().position(|p| p.last).unwrap_or(0);
+    let m = points.len().saturating_sub(1);
+    let mut out = phase(pts, 0..=n, tangents);
+    out.extend(dwell(pts[n], pts[n + 1]));
+    out.extend(phase(pts, n + 1..=m, tangents));
+    out.extend(dwell(pts[m], pts[0]));
+    out
+}
+
+/// A moving phase's points, the practical profile's with the French curve between them.
+fn phase(
+    pts: &[DVec2],
+    range: std::ops::RangeInclusive<usize>,
+    tangents: Option<&[DVec2]>,
+) -> Vec<DVec2> {
+    let (a, b) = (*range.start(), *range.end());
+    let mut out = vec![pts[a]];
+    for i in a..b {
+        match tangents {
+            Some(t) => out.extend_from_slice(
+                &french_curve(pts[i], t[i], pts[i + 1], t[i + 1], CURVE_PIECES)[1..],
+            ),
+            None => out.push(pts[i + 1]),
+        }
+    }
+    out
+}
+
+/// The dwell from `from` to `to`: the arc about O₁, swept clockwise in the cam frame (the
+/// short way is right for < 180°), its inner points.
+fn dwell(from: DVec2, to: DVec2) -> Vec<DVec2> {
+    let a = Arc::between(DVec2::ZERO, from.length(), from, to);
+    let sweep = if a.sweep > 0.0 {
+        a.sweep - TAU
     } else {
-        drawn_rho_min(points, &centres)
+        a.sweep
     };
-    Ok(Inversion {
-        figure: rec.finish(),
-        scale: mu,
-        centres,
-        profile,
-        tangents,
-        angles,
-        rho_min,
-    })
+    let n = 24;
+    (1..n)
+        .map(|j| DVec2::from_angle(a.start + sweep * j as f64 / n as f64) * from.length())
+        .collect()
 }
 
 /// The cam's centre O₁ at the origin, fixed and labelled: the first step of every profile.

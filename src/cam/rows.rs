@@ -282,7 +282,6 @@ impl Cam {
             ));
         }
         out.extend(law_notes(s, &self.points, &self.diagrams));
-        let st = s.starts();
         let r = &self.radius;
         let r_exact = self.exact_r_min();
         let basis = self.radius_basis();
@@ -303,7 +302,18 @@ impl Cam {
                 },
             ));
         }
-        if let Some(read) = r.convexity {
+        out.extend(self.flat_face_notes());
+        out.extend(self.curvature_notes(r_exact));
+        out.extend(self.offset_notes(r_exact));
+        out
+    }
+
+    /// A flat face's notes: the convexity's worst value against the one read at the 45°
+    /// tangent, and the face's half-length.
+    fn flat_face_notes(&self) -> Vec<Note> {
+        let s = &self.spec;
+        let mut out = Vec::new();
+        if let Some(read) = self.radius.convexity {
             let (_, worst) = exact::min_radius_flat(s);
             out.push(Note::text(format!(
                 "cam: flat face: max(−(S + S″)) = {} mm exact, {} mm read at the 45° tangent",
@@ -316,6 +326,14 @@ impl Cam {
                 .fold(0.0, f64::max);
             out.push(Note::text(format!("cam: flat face: the face's half-length from the follower's axis ≥ max|dS/dφ − e| = {} mm", mm(half))));
         }
+        out
+    }
+
+    /// The notes on the profile's curvature: a flat face's cusp; or the worst pressure
+    /// (transmission) angle against its limit, the roller's choice, its cusp or undercut.
+    fn curvature_notes(&self, r_exact: f64) -> Vec<Note> {
+        let s = &self.spec;
+        let mut out = Vec::new();
         let rho = self.exact_rho_min();
         if self.flat() {
             if rho < 0.0 {
@@ -375,9 +393,9 @@ impl Cam {
             };
             let drawn = self.inversion.rho_min;
             out.push(Note::text(format!(
-                "cam: roller: 0.4·r₀ = {} mm, 0.8·ρ_min = {} mm (ρ_min of the drawn pitch curve {} mm, exact {} mm): r = {} mm ({chosen})",
-                mm(0.4 * self.base), mm(0.8 * drawn), mm(drawn), mm(rho), mm(self.roller)
-            )));
+            "cam: roller: 0.4·r₀ = {} mm, 0.8·ρ_min = {} mm (ρ_min of the drawn pitch curve {} mm, exact {} mm): r = {} mm ({chosen})",
+            mm(0.4 * self.base), mm(0.8 * drawn), mm(drawn), mm(rho), mm(self.roller)
+        )));
             let (roller, rho_min) = (self.roller, rho);
             if (roller - rho).abs() <= 1e-12 * rho {
                 let cusp = Cusp::Roller { roller, rho_min };
@@ -387,15 +405,24 @@ impl Cam {
                 out.push(Note::finding("cam: ", f));
             }
         }
+        out
+    }
+
+    /// A translating follower's notes: the smallest cam with the offset free, and an offset
+    /// on the wrong side.
+    fn offset_notes(&self, r_exact: f64) -> Vec<Note> {
+        let s = &self.spec;
+        let st = s.starts();
+        let mut out = Vec::new();
         if let Follower::Translating { offset } = s.follower {
             let (r_free, e_free) = exact::min_radius_free(s);
             out.push(Note::text(format!(
-                "cam: with the offset free the smallest cam (lecture 15: O₁ where the two γ_min tangents meet) has r_min = {} mm at e = {} mm; the scene's e = {} mm gives {} mm",
-                mm(r_free),
-                mm(self.scene_offset(e_free)),
-                mm(self.scene_offset(offset)),
-                mm(r_exact)
-            )));
+            "cam: with the offset free the smallest cam (lecture 15: O₁ where the two γ_min tangents meet) has r_min = {} mm at e = {} mm; the scene's e = {} mm gives {} mm",
+            mm(r_free),
+            mm(self.scene_offset(e_free)),
+            mm(self.scene_offset(offset)),
+            mm(r_exact)
+        )));
             if offset < 0.0 {
                 let mirrored = Placement::Translating {
                     offset: -offset,

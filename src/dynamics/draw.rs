@@ -16,21 +16,16 @@
 //!    J_I = ΔT_I/(δ·ω_ср²), J_м = J_I − J_const.
 
 use super::reduce::Reduced;
-use super::scales::{given_draws, scale_of};
-use super::spec::{ConstantMoment, DynamicsSpec};
+use super::scales::{given_draws, scale_of, HEIGHT_MM};
+use super::spec::DynamicsSpec;
 use super::twin::{Cycle, Solution};
+use super::work::{read_up, work, WorkScales};
 use super::DynamicsError;
-use crate::calculus::{draw_axes, integrate_chords, thin, Diagram, Layout, Sampling, Scales};
+use crate::calculus::{draw_axes, thin};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
-use crate::geom::{hermite, DVec2, Segment};
+use crate::geom::{hermite, DVec2};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
-
-/// Preferred drawn length of the abscissa 2π, mm.
-const TURN_MM: f64 = 180.0;
-/// Preferred height of a diagram's largest ordinate, mm: the M, A and ΔT diagrams fill
-/// their part of the A1 dynamics sheet (50 mm left a quarter of it empty).
-const HEIGHT_MM: f64 = 80.0;
 
 /// A textbook route to the flywheel, as read off its diagram.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -89,10 +84,6 @@ pub struct Diagrams {
     pub merkin: Route,
 }
 
-fn diagram_err(what: &'static str) -> impl Fn(crate::calculus::CalculusError) -> DynamicsError {
-    move |error| DynamicsError::Diagram { what, error }
-}
-
 /// A curve through points with its axes around them (the abscissa `extent` mm long).
 fn plot(
     rec: &mut Recorder,
@@ -121,16 +112,6 @@ fn plot(
     )
 }
 
-/// Signed ordinate read from `a` up to `b` (same abscissa), in the recorder's mm as read.
-fn read_up(rec: &Recorder, a: DVec2, b: DVec2) -> f64 {
-    let m = rec.measure(a, b);
-    if b.y < a.y {
-        -m.read_mm
-    } else {
-        m.read_mm
-    }
-}
-
 /// Construct the diagrams from the reduction at the N equally spaced positions.
 ///
 /// # Errors
@@ -142,92 +123,12 @@ pub fn diagrams(
     ctx: &Context,
 ) -> Result<Diagrams, DynamicsError> {
     let n = red.len();
-    let dx = TAU / n.max(1) as f64;
-    // The varying side: M_с = −M_пр against a constant driving moment, M_д = M_пр against a
-    // constant resisting moment (an engine); the constant one is the straight line.
-    let sgn = spec.constant_moment.sign();
-    let (vary, fixed) = match spec.constant_moment {
-        ConstantMoment::Driving => (["M_{с}", "A_{с}"], ["A_{д}", "M_{д}"]),
-        ConstantMoment::Resisting => (["M_{д}", "A_{д}"], ["A_{с}", "M_{с}"]),
-    };
-    let mc: Vec<f64> = red.iter().map(|r| -sgn * r.m()).collect();
-    let big_m = mc.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let mu_phi = scale_of(spec.scale_phi, TAU, TURN_MM, Quantity::Angle, "μ_φ")?;
-    given_draws(spec.scale_m, crate::scene::Key::DynamicsScaleM, big_m)?;
-    let mu_m = scale_of(spec.scale_m, big_m, HEIGHT_MM, Quantity::Moment, "μ_M")?;
-    let a_est: f64 = mc.iter().map(|v| v * dx).sum::<f64>().abs().max(big_m * dx);
-    let (pole_h, mu_a) = match spec.pole_h {
-        Some(h) => (h, mu_m.value() * mu_phi.value() * h),
-        None => {
-            let a = scale_of(None, a_est, 60.0, Quantity::Work, "μ_A")?;
-            (a.value() / (mu_m.value() * mu_phi.value()), a.value())
-        }
-    };
-    let mu_a = Scale::new(mu_a, Quantity::Work).ok_or(DynamicsError::NoScale {
-        what: "μ_A",
-        value: mu_a,
-    })?;
-    let run = mu_phi.to_mm(dx);
+    let sc = WorkScales::of(spec, red)?;
+    let run = sc.phi.to_mm(sc.dx);
     let turn = run * n as f64;
-
-    // 1–2: M_с, A_с by chords, A_д and M_д through the pole.
-    let mut rec = Recorder::in_context("M_с, A_с, A_д", mu_a, ctx);
-    let src = Diagram::new(0.0, dx, mc.clone(), true).map_err(diagram_err("M_с"))?;
-    let m_lo = mc.iter().fold(0.0f64, |m, &v| m.min(mu_m.to_mm(v)));
-    let a_hi = a_est / mu_a.value();
-    let so = DVec2::new(0.0, a_hi + 30.0 - m_lo);
-    let layout = Layout::new(so, DVec2::ZERO)
-        .named("φ", vary[0], "A")
-        .pole_named("P", "H");
-    let scales = Scales { x: mu_phi, y: mu_m };
-    let integral = integrate_chords(
-        &mut rec,
-        &src,
-        Sampling::Nodes,
-        scales,
-        pole_h,
-        0.0,
-        &layout,
-    )
-    .map_err(diagram_err("A_с"))?;
-    let a_c = integral.node.clone();
-    let a_n = a_c.last().copied().unwrap_or(0.0);
-    let end = DVec2::new(turn, mu_a.to_mm(a_n));
-    let ad = rec.draw(
-        "A_д: the straight line to A_с(2π)",
-        Item::Segment(Segment::new(DVec2::ZERO, end)),
-        Role::Result,
-        &[integral.curve],
-    );
-    rec.label(ad, fixed[0], end, DVec2::new(0.6, 0.8));
-    let q = integral.pole + end * (pole_h / turn);
-    let ray = thin(&mut rec, "ray from P ∥ A_д".into(), integral.pole, q, &[ad]);
-    let m_drive = read_up(&rec, so, q) * mu_m.value();
-    let md = rec.draw(
-        "M_д across the M diagram",
-        Item::Segment(Segment::new(q, DVec2::new(so.x + turn, q.y))),
-        Role::Result,
-        &[ray],
-    );
-    rec.label(
-        md,
-        fixed[1],
-        DVec2::new(so.x + turn, q.y),
-        DVec2::new(1.0, 0.3),
-    );
-    // 3: ΔT = A_д − A_с, the ordinates between the line and the curve.
-    let mut delta_t = Vec::with_capacity(n + 1);
-    for (i, a) in a_c.iter().enumerate() {
-        let x = run * i as f64;
-        let pd = DVec2::new(x, end.y * i as f64 / n as f64);
-        let pc = DVec2::new(x, mu_a.to_mm(*a));
-        if pd.distance(pc) > 0.2 {
-            thin(&mut rec, format!("ΔT ordinate {i}"), pc, pd, &[ad]);
-        }
-        delta_t.push(sgn * read_up(&rec, pc, pd) * mu_a.value());
-    }
-    let work = rec.finish();
-
+    // 1–3: M_с, A_с by chords, A_д and M_д through the pole, ΔT.
+    let done = work(spec, &sc, ctx)?;
+    let delta_t = &done.delta_t;
     // The energy scale: ΔT and Merkin's T_I.
     let j: Vec<f64> = red.iter().map(|r| r.j).collect();
     let w2 = w_avg * w_avg;
@@ -236,69 +137,79 @@ pub fn diagrams(
     given_draws(
         spec.scale_t,
         crate::scene::Key::DynamicsScaleT,
-        big(&delta_t),
+        big(delta_t),
     )?;
-    let mu_t = scale_of(
-        spec.scale_t,
-        big(&delta_t),
-        HEIGHT_MM,
-        Quantity::Work,
-        "μ_T",
-    )?;
+    let mu_t = scale_of(spec.scale_t, big(delta_t), HEIGHT_MM, Quantity::Work, "μ_T")?;
     // T_I lies far from zero (it carries −ω²J_пр/2): its own scale.
     let mu_t1 = scale_of(None, big(&t1), 80.0, Quantity::Work, "μ_T of T_I")?;
     let big_j = j.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     given_draws(spec.scale_j, crate::scene::Key::DynamicsScaleJ, big_j)?;
     let mu_j = scale_of(spec.scale_j, big_j, 80.0, Quantity::Inertia, "μ_J")?;
-
-    // 3: the ΔT diagram.
-    let mut rec = Recorder::in_context("ΔT", mu_t, ctx);
-    let pts = (0..=n)
-        .map(|i| DVec2::new(run * i as f64, mu_t.to_mm(delta_t[i])))
-        .collect();
-    plot(&mut rec, pts, turn, ("φ", "ΔT"), false);
-    let energy = rec.finish();
-
-    // 4: J_пр(φ).
-    let mut rec = Recorder::in_context("J_пр", mu_j, ctx);
-    let pts = (0..=n)
-        .map(|i| DVec2::new(run * i as f64, mu_j.to_mm(j[i % n])))
-        .collect();
-    plot(&mut rec, pts, turn, ("φ", "J_{пр}"), false);
-    let inertia = rec.finish();
-
+    // 3: the ΔT diagram; 4: J_пр(φ).
+    let energy = plotted(
+        ["ΔT", "ΔT"],
+        mu_t,
+        (0..=n).map(|i| delta_t[i]),
+        (run, turn),
+        ctx,
+    );
+    let inertia = plotted(
+        ["J_пр", "J_{пр}"],
+        mu_j,
+        (0..=n).map(|i| j[i % n]),
+        (run, turn),
+        ctx,
+    );
     // 5: Wittenbauer.
     // The tangents cut the ΔT axis (J = 0) below the curve by about ω_ср²·J_пр/2: the
     // energy–mass diagram's μ_T takes them in (unless the scene gives μ_T).
     let reach = (0..n)
         .map(|i| (delta_t[i] - w2 * (1.0 + spec.delta) * j[i] / 2.0).abs())
-        .fold(big(&delta_t), f64::max);
+        .fold(big(delta_t), f64::max);
     let mu_tw = scale_of(spec.scale_t, reach, 180.0, Quantity::Work, "μ_T")?;
     let (wittenbauer_figure, wittenbauer) =
         wittenbauer(&delta_t[..n], &j, (mu_tw, mu_j), w_avg, spec.delta, ctx);
     // 6: Merkin.
     let (merkin_figure, merkin) = merkin(&t1, run, mu_t1, w_avg, spec, ctx);
     Ok(Diagrams {
-        scale_phi: mu_phi,
-        scale_m: mu_m,
-        scale_a: mu_a,
+        scale_phi: sc.phi,
+        scale_m: sc.m,
+        scale_a: sc.a,
         scale_t: mu_t,
         scale_j: mu_j,
         scale_t1: mu_t1,
         scale_tw: mu_tw,
-        pole_h,
-        work,
+        pole_h: sc.pole_h,
+        work: done.figure,
         energy,
         inertia,
         wittenbauer_figure,
         merkin_figure,
-        a_c,
-        m_drive,
-        delta_t,
+        a_c: done.a_c,
+        m_drive: done.m_drive,
+        delta_t: done.delta_t,
         j,
         wittenbauer,
         merkin,
     })
+}
+
+/// The diagram `[title, ordinate]` of `values` at the nodes 0 … N at `mu` over φ (`run` mm
+/// apart, `turn` the whole turn).
+fn plotted(
+    [title, name]: [&str; 2],
+    mu: Scale,
+    values: impl Iterator<Item = f64>,
+    (run, turn): (f64, f64),
+    ctx: &Context,
+) -> Figure {
+    let mut rec = Recorder::in_context(title, mu, ctx);
+    let pts = values
+        .enumerate()
+        .map(|(i, v)| DVec2::new(run * i as f64, mu.to_mm(v)))
+        .collect();
+    plot(&mut rec, pts, turn, ("φ", name), false);
+    rec.finish()
 }
 
 /// The energy–mass diagram of the points (J_i, ΔT_i) with its two tangents.

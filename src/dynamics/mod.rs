@@ -29,6 +29,7 @@ mod spec;
 #[cfg(test)]
 mod tests;
 mod twin;
+mod work;
 
 pub use draw::diagrams;
 pub use flywheel::Size;

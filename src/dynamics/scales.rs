@@ -4,6 +4,12 @@
 use super::DynamicsError;
 use crate::scale::{Quantity, Scale};
 
+/// Preferred drawn length of the abscissa 2π, mm.
+pub(super) const TURN_MM: f64 = 180.0;
+/// Preferred height of a diagram's largest ordinate, mm: the M, A and ΔT diagrams fill
+/// their part of the A1 dynamics sheet (50 mm left a quarter of it empty).
+pub(super) const HEIGHT_MM: f64 = 80.0;
+
 /// The scale the scene gives, or the round one that draws `value` about `mm` long.
 pub(super) fn scale_of(
     given: Option<Scale>,

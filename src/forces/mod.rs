@@ -1,6 +1,8 @@
 //! Force analysis: kinetostatics of Assur groups by force polygons, the driving link,
-//! Zhukovsky's lever, friction and rotor balancing — each a construction, an analytic twin
-//! and a check.
+//! Zhukovsky's lever and the friction in the pairs — each a construction, an analytic twin
+//! and a check. (Friction as the lectures draw it and rotor balancing, which import nothing
+//! of this and which this imports nothing of, are rooms of their own: [`crate::friction`],
+//! [`crate::balancing`].)
 //!
 //! One position's force analysis ([`analyse`]) gives:
 //! - the loads ([`loads`]) from the acceleration plan (graphical) and from the analytic twin;
@@ -12,10 +14,8 @@
 //!   inertia loads `F_in<l>`, `M_in<l>`, graphical against analytic.
 
 mod arrows;
-pub mod balancing;
 mod diagnose;
 mod error;
-pub mod friction;
 mod indicator;
 mod lever;
 mod loads;

@@ -268,7 +268,7 @@ proptest! {
         radius in 0.0..0.03f64,
     ) {
         use super::pair_friction::PairFriction;
-        use super::friction::{friction_angle, friction_circle_tangent};
+        use crate::friction::{friction_angle, friction_circle_tangent};
         let mut spec = spec(&masses, f5, gear);
         let fr = PairFriction { f, radius, radii: Vec::new() };
         spec.friction = Some(fr.clone());

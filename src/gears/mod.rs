@@ -29,14 +29,12 @@ mod tests;
 mod tests_closing;
 #[cfg(test)]
 mod tests_limits;
-#[cfg(test)]
-mod tests_train;
 mod trace;
 mod train;
-mod train_layout;
+// The train's notes stay beside the room until the typed notes (issue 46 §3) land: they
+// reach its layout and study by these names.
 mod train_notes;
-mod train_rank;
-mod train_study;
+use train::{layout as train_layout, study as train_study};
 mod triangles;
 mod undercut;
 
@@ -48,10 +46,11 @@ pub use mesh::{LAMBDA_MM, NAME_WITHIN_MM};
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
 pub use rows::PairSeed;
-pub use train::{Mesh, Stage, Train, TrainError, TrainMobility, Wheel};
-pub use train_layout::Closing;
+pub use train::{
+    train_study, Closing, Mesh, PlanetarySpec, Stage, Train, TrainError, TrainMobility, TrainSeed,
+    TrainStudy, Wheel,
+};
 pub use train_notes::SeedStage;
-pub use train_study::{train_study, PlanetarySpec, TrainSeed, TrainStudy};
 
 use crate::scale::Scale;
 use thiserror::Error;
@@ -245,11 +244,16 @@ pub fn generation_scale(c: &Cutting) -> Result<Scale, GearError> {
     scale_for(4.0 * std::f64::consts::PI * c.module, 400.0)
 }
 
-/// Carry out `spec` in `ctx`.
+/// Carry out `spec` in `ctx`, the pair's blocking contour through the caller's `studies`
+/// (the one kept there, else traced and kept).
 ///
 /// # Errors
 /// A [`GearError`] from the pair's geometry or a construction.
-pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearStudy, GearError> {
+pub fn study(
+    spec: &GearsSpec,
+    ctx: &crate::construct::Context,
+    studies: &blocking::Studies,
+) -> Result<GearStudy, GearError> {
     let pair = match &spec.pair {
         Some(ps) => {
             let p = Pair::working(*ps)?;
@@ -284,7 +288,7 @@ pub fn study(spec: &GearsSpec, ctx: &crate::construct::Context) -> Result<GearSt
     let blocking = spec
         .pair
         .as_ref()
-        .and_then(|ps| blocking::Study::of(ps, spec.chosen).ok());
+        .and_then(|ps| studies.of(ps, spec.chosen).ok());
     Ok(GearStudy {
         pair,
         seed: spec.seed,

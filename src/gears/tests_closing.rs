@@ -4,7 +4,7 @@
 //! outputs.
 
 use super::tests::ctx;
-use super::tests_train::{pz2_example_1, pz2_example_2, pz2_james, train};
+use super::train::tests::{pz2_example_1, pz2_example_2, pz2_james, train};
 use super::*;
 
 /// The module of wheel `name`.

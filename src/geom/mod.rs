@@ -5,6 +5,7 @@ mod clip;
 mod hatch;
 mod intersect;
 mod primitives;
+mod rect;
 mod solve;
 mod tolerance;
 
@@ -16,5 +17,6 @@ pub use primitives::{
     french_curve, hermite, nearest, polygon_contains, rotate, wrap_pi, Arc, Circle, Line, Ray,
     Segment, Side,
 };
+pub use rect::Rect;
 pub use solve::{bracketed_root, golden_max, illinois, solve_linear};
 pub use tolerance::{InvalidTolerance, Tolerances};

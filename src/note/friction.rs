@@ -4,10 +4,10 @@
 //! Symbols, numbers, result, as the other worked sections; the constructed values are in the
 //! friction table beside them.
 
-use super::gears::{deg, worked};
 use super::markup::{frac, num, sym, unit};
+use super::worked::{deg, worked};
 use super::Writer;
-use crate::forces::friction::{guide_twin, pivot_twin, FollowerGuide, RockerPivot};
+use crate::friction::{guide_twin, pivot_twin, FollowerGuide, RockerPivot};
 use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};
 
 /// A translating follower in its guide: P, N₁, N₂, R₁, R₂ and λ_кр.

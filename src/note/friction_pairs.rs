@@ -5,10 +5,10 @@
 //! against its cones. Every number is the case's twin's, the value the friction table checks
 //! the force plans against.
 
-use super::gears::{deg, worked};
 use super::markup::{frac, num, sym, unit};
+use super::worked::{deg, worked};
 use super::Writer;
-use crate::forces::friction::{
+use crate::friction::{
     incline_twin, journal_twin, rolling_twin, screw_twin, slider_twin, wedge_twin, CaseKind,
     Incline, Journal, Motion, Rolling, Screw, Slider, SliderState, Wedge,
 };

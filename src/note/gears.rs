@@ -2,12 +2,12 @@
 //! numbers, result), ε_α by formula and off the meshing picture, the specific sliding
 //! (Table 6), the rack-cut wheel and the train by Willis and by the triangles.
 
-use super::markup::{frac, inline, label, num, sym, text, unit, Align};
+use super::markup::{frac, inline, label, num, sym, text, Align};
 use super::rows::{by_position, of_scene, quantities};
+use super::worked::{deg, worked, INV};
 use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
 use crate::gears::{inv, Generation, Pair};
-use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::sheets::captions::{unit_in, Meaning as M, NoteText as T, Text as S};
 
@@ -41,7 +41,7 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     w.doc.say(&intro.join(" "));
     // The data are the task's; the results are worked below.
     if let Some((pair, mesh)) = &study.pair {
-        pair_geometry(w, pair);
+        super::pair_worked::pair_geometry(w, pair);
         contact_ratio(w, pair, mesh.ab.value);
     }
     // The pair's own rows (its u₁₂ among them, not the train's).
@@ -87,251 +87,6 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     });
     w.figures((PlateKind::Gears, None), |_| true, |own| own.to_string());
     Ok(())
-}
-
-/// The involute function in a formula.
-const INV: &str = "op(\"inv\")";
-
-/// An angle (rad) in degrees in a formula: `26,581°`.
-pub(super) fn deg(a: f64, lang: Lang) -> String {
-    format!("{}°", num(a.to_degrees(), 5, lang))
-}
-
-/// Writes "`lhs` = `symbolic` = `substituted` = `value`" as one formula (`lhs` is math).
-pub(super) fn worked(
-    w: &mut Writer<'_, '_>,
-    lhs: &str,
-    symbolic: &str,
-    substituted: &str,
-    value: String,
-) {
-    w.formula(&format!("{lhs} = {symbolic} = {substituted} = {value}"));
-}
-
-/// The pair's geometry as seed 000 §4 works it: α_w from the involute function, y, Δy, a_w,
-/// then each wheel's r, r_b, r_w, r_f, r_a, h, s, α_a and s_a, lengths in mm.
-fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
-    let lang = w.lang;
-    let mm = unit(&unit_in("mm", lang));
-    let n = |x: f64| num(x, 5, lang);
-    let l = |x: f64| format!("{}{mm}", num(x * 1e3, 5, lang));
-    let spec = &p.spec;
-    let rack = spec.rack;
-    let m = n(spec.module * 1e3);
-    let [z1, z2] = spec.z;
-    let zs = f64::from(z1 + z2);
-    let [x1, x2] = spec.x;
-    let tg = |a: f64| format!("tg {}", deg(a, lang));
-    w.doc.say(w.word(T::PairWorked));
-    worked(
-        w,
-        &format!("{INV} {}", sym("α_{w}")),
-        &format!(
-            "{} + {INV} α",
-            frac(
-                &format!("2 ({} + {}) tg α", sym("x_{1}"), sym("x_{2}")),
-                &format!("{} + {}", sym("z_{1}"), sym("z_{2}"))
-            )
-        ),
-        &format!(
-            "{} + {}",
-            frac(
-                &format!("2 dot ({} + {}) dot {}", n(x1), n(x2), tg(rack.alpha)),
-                &format!("{z1} + {z2}")
-            ),
-            num(inv(rack.alpha), 5, lang)
-        ),
-        n(p.inv_w),
-    );
-    let of = |m: M, k: usize| format!("{} {k}", m.get(lang));
-    let (x1w, x2w, z1w, z2w) = (
-        of(M::ShiftOfWheel, 1),
-        of(M::ShiftOfWheel, 2),
-        of(M::TeethOfWheel, 1),
-        of(M::TeethOfWheel, 2),
-    );
-    w.explain(&[
-        ("α_{w}", M::EngagementAngle.get(lang), "deg"),
-        ("x_{1}", &x1w, ""),
-        ("x_{2}", &x2w, ""),
-        ("α", M::ProfileAngle.get(lang), "deg"),
-        ("z_{1}", &z1w, ""),
-        ("z_{2}", &z2w, ""),
-    ]);
-    w.formula(&format!("{} = {}", sym("α_{w}"), deg(p.alpha_w, lang)));
-    worked(
-        w,
-        &sym("y"),
-        &format!(
-            "{} ({} - 1)",
-            frac(&format!("{} + {}", sym("z_{1}"), sym("z_{2}")), "2"),
-            frac("cos α", &format!("cos {}", sym("α_{w}")))
-        ),
-        &format!(
-            "{} ({} - 1)",
-            frac(&format!("{z1} + {z2}"), "2"),
-            frac(
-                &format!("cos {}", deg(rack.alpha, lang)),
-                &format!("cos {}", deg(p.alpha_w, lang))
-            )
-        ),
-        n(p.y),
-    );
-    w.explain(&[("y", M::TakenUpShift.get(lang), "")]);
-    if spec.dy_table.is_none() {
-        worked(
-            w,
-            &sym("Δy"),
-            &format!("{} + {} - y", sym("x_{1}"), sym("x_{2}")),
-            &format!("{} + {} - {}", n(x1), n(x2), n(p.y)),
-            n(p.dy),
-        );
-        w.explain(&[("Δy", M::EqualisingShift.get(lang), "")]);
-    }
-    worked(
-        w,
-        &sym("a_{w}"),
-        &format!(
-            "m ({} + y)",
-            frac(&format!("{} + {}", sym("z_{1}"), sym("z_{2}")), "2")
-        ),
-        &format!("{m} dot ({} + {})", frac(&n(zs), "2"), n(p.y)),
-        l(p.a_w),
-    );
-    w.explain(&[
-        ("a_{w}", M::CentreDistance.get(lang), "mm"),
-        ("m", M::Module.get(lang), "mm"),
-    ]);
-    for i in 0..2 {
-        let k = i + 1;
-        let (z, x) = (spec.z[i], spec.x[i]);
-        let s = |name: &str| sym(&format!("{name}_{{{k}}}"));
-        let ra = sym(&format!("r_{{a{k}}}"));
-        let rb = sym(&format!("r_{{b{k}}}"));
-        w.doc.say(&format!("{} {k}:", w.word(T::WheelWord)));
-        worked(
-            w,
-            &sym(&format!("r_{{{k}}}")),
-            &frac(&format!("m {}", s("z")), "2"),
-            &frac(&format!("{m} dot {z}"), "2"),
-            l(p.r[i]),
-        );
-        w.explain(&[(&format!("r_{{{k}}}"), &of(M::PitchRadius, k), "mm")]);
-        worked(
-            w,
-            &sym(&format!("r_{{b{k}}}")),
-            &format!("{} cos α", s("r")),
-            &format!("{} dot cos {}", n(p.r[i] * 1e3), deg(rack.alpha, lang)),
-            l(p.rb[i]),
-        );
-        w.explain(&[(&format!("r_{{b{k}}}"), &of(M::BaseRadius, k), "mm")]);
-        worked(
-            w,
-            &sym(&format!("r_{{w{k}}}")),
-            &format!(
-                "{} (1 + {})",
-                s("r"),
-                frac("2 y", &format!("{} + {}", sym("z_{1}"), sym("z_{2}")))
-            ),
-            &format!(
-                "{} dot (1 + {})",
-                n(p.r[i] * 1e3),
-                frac(&format!("2 dot {}", n(p.y)), &n(zs))
-            ),
-            l(p.rw[i]),
-        );
-        w.explain(&[(&format!("r_{{w{k}}}"), &of(M::RollingRadius, k), "mm")]);
-        worked(
-            w,
-            &sym(&format!("r_{{f{k}}}")),
-            &format!(
-                "{} - ({} + {} - {}) m",
-                s("r"),
-                sym("h^{*}_{a}"),
-                sym("c^{*}"),
-                s("x")
-            ),
-            &format!(
-                "{} - ({} + {} - {}) dot {m}",
-                n(p.r[i] * 1e3),
-                n(rack.ha),
-                n(rack.c),
-                n(x)
-            ),
-            l(p.rf[i]),
-        );
-        w.explain(&[
-            (&format!("r_{{f{k}}}"), &of(M::RootRadius, k), "mm"),
-            ("h^{*}_{a}", M::AddendumCoefficient.get(lang), ""),
-            ("c^{*}", M::ClearanceCoefficient.get(lang), ""),
-        ]);
-        worked(
-            w,
-            &sym(&format!("r_{{a{k}}}")),
-            &format!("{} + ({} + {} - Δ y) m", s("r"), sym("h^{*}_{a}"), s("x")),
-            &format!(
-                "{} + ({} + {} - {}) dot {m}",
-                n(p.r[i] * 1e3),
-                n(rack.ha),
-                n(x),
-                n(p.dy)
-            ),
-            l(p.ra[i]),
-        );
-        w.explain(&[(&format!("r_{{a{k}}}"), &of(M::TipRadius, k), "mm")]);
-        worked(
-            w,
-            &sym(&format!("h_{{{k}}}")),
-            &format!("{ra} - {}", sym(&format!("r_{{f{k}}}"))),
-            &format!("{} - {}", n(p.ra[i] * 1e3), n(p.rf[i] * 1e3)),
-            l(p.ra[i] - p.rf[i]),
-        );
-        w.explain(&[(&format!("h_{{{k}}}"), &of(M::ToothHeight, k), "mm")]);
-        worked(
-            w,
-            &sym(&format!("s_{{{k}}}")),
-            &format!("m (π/2 + 2 {} tg α)", s("x")),
-            &format!("{m} dot (π/2 + 2 dot {} dot {})", n(x), tg(rack.alpha)),
-            l(p.s[i]),
-        );
-        w.explain(&[(&format!("s_{{{k}}}"), &of(M::PitchThickness, k), "mm")]);
-        worked(
-            w,
-            &sym(&format!("α_{{a{k}}}")),
-            &format!("arccos {}", frac(&rb, &ra)),
-            &format!("arccos {}", frac(&n(p.rb[i] * 1e3), &n(p.ra[i] * 1e3))),
-            deg(p.alpha_a[i], lang),
-        );
-        w.explain(&[(&format!("α_{{a{k}}}"), &of(M::TipAngle, k), "deg")]);
-        worked(
-            w,
-            &sym(&format!("s_{{a{k}}}")),
-            &format!(
-                "2 {ra} ({} + {INV} α - {INV} {})",
-                frac(&s("s"), &format!("2 {}", s("r"))),
-                sym(&format!("α_{{a{k}}}"))
-            ),
-            &format!(
-                "2 dot {} dot ({} + {} - {})",
-                n(p.ra[i] * 1e3),
-                frac(&n(p.s[i] * 1e3), &format!("2 dot {}", n(p.r[i] * 1e3))),
-                n(inv(rack.alpha)),
-                n(inv(p.alpha_a[i]))
-            ),
-            l(p.sa[i]),
-        );
-        w.explain(&[(&format!("s_{{a{k}}}"), &of(M::TipThickness, k), "mm")]);
-    }
-    worked(w, &sym("p"), "π m", &format!("π dot {m}"), l(p.p));
-    w.explain(&[("p", M::Pitch.get(lang), "mm")]);
-    worked(
-        w,
-        &sym("p_{b}"),
-        "p cos α",
-        &format!("{} dot cos {}", n(p.p * 1e3), deg(rack.alpha, lang)),
-        l(p.p_b),
-    );
-    w.explain(&[("p_{b}", M::BasePitch.get(lang), "mm")]);
 }
 
 /// The specific sliding in the shape of seed 000's Table 6: λ₁ and λ₂ at N₁, at the ends of
@@ -529,25 +284,7 @@ fn rack_form(w: &mut Writer<'_, '_>, name: &str, g: &Generation) {
         g.sb.map_or_else(none, mm),
         exact(exact_sb),
     ]);
-    let header = [
-        text(w.word(S::Quantity)),
-        text(w.word(T::FormulaColumn)),
-        text(&format!(
-            "{}, {}",
-            w.word(T::ByFormula),
-            unit_in("mm", lang)
-        )),
-        text(&format!(
-            "{}, {}",
-            w.word(T::OnTheDrawing),
-            unit_in("mm", lang)
-        )),
-        text(&format!(
-            "{}, {}",
-            w.word(T::ByEnvelope),
-            unit_in("mm", lang)
-        )),
-    ];
+    let header = form_header(w);
     let form = if c.x == 0.0 {
         T::ZeroWheelForm
     } else {
@@ -573,4 +310,29 @@ fn rack_form(w: &mut Writer<'_, '_>, name: &str, g: &Generation) {
     } else if exact_sb.is_some_and(|s| s > sb_formula * (1.0 + 1e-4)) {
         w.doc.say(w.word(T::FilletAboveBase));
     }
+}
+
+/// The report form's header: quantity | formula | by formula | on the drawing | by the
+/// envelope (the values in mm).
+fn form_header(w: &Writer<'_, '_>) -> [String; 5] {
+    let lang = w.lang;
+    [
+        text(w.word(S::Quantity)),
+        text(w.word(T::FormulaColumn)),
+        text(&format!(
+            "{}, {}",
+            w.word(T::ByFormula),
+            unit_in("mm", lang)
+        )),
+        text(&format!(
+            "{}, {}",
+            w.word(T::OnTheDrawing),
+            unit_in("mm", lang)
+        )),
+        text(&format!(
+            "{}, {}",
+            w.word(T::ByEnvelope),
+            unit_in("mm", lang)
+        )),
+    ]
 }

@@ -3,14 +3,14 @@
 //! found, the formula, the numbers, the result — then its table checking the construction
 //! against the calculation and its figures.
 
-use super::gears::{deg, worked};
 use super::markup::{frac, num, sym, unit};
 use super::rows::of_scene;
+use super::worked::{deg, worked};
 use super::{NoteError, Writer};
-use crate::check::Symbol;
-use crate::forces::balancing::{
+use crate::balancing::{
     analytic, inertia_force, main_moment, main_vector, BalancingSpec, Correction, Corrective, Mass,
 };
+use crate::check::Symbol;
 use crate::geom::DVec2;
 use crate::scene::PlateKind;
 use crate::sheets::captions::{unit_in, CaseMeaning as M, CaseText as C, NoteText as T};

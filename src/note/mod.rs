@@ -30,6 +30,7 @@ mod lecture;
 mod machines;
 mod markup;
 mod moments;
+mod pair_worked;
 mod plan_worked;
 mod plans;
 mod positions;
@@ -37,6 +38,7 @@ mod practicum;
 mod rows;
 mod train;
 mod typeset;
+mod worked;
 mod zhukovsky;
 
 pub use typeset::PAGE_BREAK;

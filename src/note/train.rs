@@ -5,8 +5,8 @@
 //! formula, against Willis's relations solved together; and with the scene's speeds the
 //! required ratio, the stage it asks for and the output speed the chosen teeth give.
 
-use super::gears::worked;
 use super::markup::{frac, num, sym, unit};
+use super::worked::worked;
 use super::Writer;
 use crate::gears::{Stage, Train, TrainStudy};
 use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};

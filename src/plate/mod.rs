@@ -69,75 +69,9 @@ pub use table::TableBlock;
 
 pub use write::{write_all_atomic, write_atomic};
 
-/// An axis-aligned rectangle on the sheet, millimetres, origin top-left, y down.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Rect {
-    /// Top-left corner.
-    pub min: DVec2,
-    /// Bottom-right corner.
-    pub max: DVec2,
-}
-
-impl Rect {
-    /// The rectangle with corners `min` and `max`.
-    pub fn new(min: DVec2, max: DVec2) -> Self {
-        Self { min, max }
-    }
-    /// Width, mm.
-    pub fn width(&self) -> f64 {
-        self.max.x - self.min.x
-    }
-    /// Height, mm.
-    pub fn height(&self) -> f64 {
-        self.max.y - self.min.y
-    }
-    /// The centre.
-    pub fn center(&self) -> DVec2 {
-        (self.min + self.max) * 0.5
-    }
-    /// (width, height), mm.
-    pub fn size(&self) -> DVec2 {
-        self.max - self.min
-    }
-    /// True when the two rectangles share interior points (touching edges do not count).
-    pub fn intersects(&self, other: &Rect) -> bool {
-        let s = self.max.min(other.max) - self.min.max(other.min);
-        s.x > 0.0 && s.y > 0.0
-    }
-    /// True when the two rectangles share any point, edges and degenerate (zero-width or
-    /// zero-height) rectangles included: the box of a horizontal line touches what it crosses.
-    pub fn touches(&self, other: &Rect) -> bool {
-        let s = self.max.min(other.max) - self.min.max(other.min);
-        s.x >= 0.0 && s.y >= 0.0
-    }
-    /// Area of the common part, mm².
-    pub fn overlap(&self, other: &Rect) -> f64 {
-        let s = self.max.min(other.max) - self.min.max(other.min);
-        s.x.max(0.0) * s.y.max(0.0)
-    }
-    /// True when `other` lies inside this rectangle (edges included).
-    pub fn contains(&self, other: &Rect) -> bool {
-        other.min.cmpge(self.min).all() && other.max.cmple(self.max).all()
-    }
-    /// The smallest rectangle holding both.
-    pub fn union(&self, other: &Rect) -> Rect {
-        Rect::new(self.min.min(other.min), self.max.max(other.max))
-    }
-    /// The rectangle grown by `d` on every side (shrunk for a negative `d`).
-    pub fn inflate(&self, d: f64) -> Rect {
-        Rect::new(self.min - DVec2::splat(d), self.max + DVec2::splat(d))
-    }
-    /// The box of a set of points; `None` when there is no finite one.
-    pub fn around(points: impl IntoIterator<Item = DVec2>) -> Option<Rect> {
-        let (lo, hi) = points
-            .into_iter()
-            .filter(|p| p.is_finite())
-            .fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), p| {
-                (lo.min(p), hi.max(p))
-            });
-        lo.is_finite().then(|| Rect::new(lo, hi))
-    }
-}
+/// An axis-aligned rectangle on the sheet, millimetres, origin top-left, y down: `min` the
+/// top-left corner, `max` the bottom-right.
+pub use crate::geom::Rect;
 
 /// A figure placed on the sheet.
 #[derive(Debug, Clone, PartialEq)]

@@ -5,7 +5,7 @@
 use super::check::{item, join, number, Checker};
 use super::keys::Key;
 use super::raw::{RawBalancing, RawMass};
-use crate::forces::balancing::{BalancingSpec, Correction, Mass};
+use crate::balancing::{BalancingSpec, Correction, Mass};
 use crate::scale::Quantity;
 
 /// The key path of the section.

@@ -6,7 +6,7 @@
 use super::check::{join, number, Checker};
 use super::friction::{angle, coefficient, force, RawCase};
 use crate::cam::force::{rocker_locking, translating_locking, Guide, Pivot};
-use crate::forces::friction::{CaseKind, FollowerGuide, RockerPivot, MIN_CROSSING_DEG};
+use crate::friction::{CaseKind, FollowerGuide, RockerPivot, MIN_CROSSING_DEG};
 
 /// The largest moment a scene may give, N·m.
 const MAX_MOMENT: f64 = 1e9;

@@ -3,7 +3,7 @@
 //! `profile` of a screw), each checked with its key path and converted to SI (N, m, rad).
 
 use super::check::{item, join, number, quoted, Checker};
-use crate::forces::friction::{
+use crate::friction::{
     CaseKind, FrictionCase, Incline, Journal, Motion, Rolling, Screw, Slider, Wedge,
 };
 use crate::scale::Quantity;
@@ -399,7 +399,7 @@ fn motion(check: &mut Checker, base: &str, v: Option<&String>) -> Motion {
 
 #[cfg(test)]
 mod tests {
-    use crate::forces::friction::CaseKind;
+    use crate::friction::CaseKind;
     use crate::scene::{load, parse, PlateKind};
     use std::path::Path;
 

@@ -1,7 +1,7 @@
 //! A validated scene: everything downstream may trust (finite, positive where required).
 
-use crate::forces::balancing::BalancingSpec;
-use crate::forces::friction::FrictionCase;
+use crate::balancing::BalancingSpec;
+use crate::friction::FrictionCase;
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::Mechanism;
 use crate::scale::Scale;

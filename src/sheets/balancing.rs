@@ -6,8 +6,8 @@
 use super::captions::{unit_in, RotorText, Text};
 use super::layout::{keyed, lay_out_smallest, results_table, Block, Column, Results};
 use super::BuildError;
+use crate::balancing::{Balancing, Correction, Plane};
 use crate::check::{Row, Symbol};
-use crate::forces::balancing::{Balancing, Correction, Plane};
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang};
 use crate::scene::Key;
@@ -165,8 +165,8 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
     if let Some(w) = b.spec.omega {
         let n = unit_in("N", lang);
         for (i, m) in b.spec.masses.iter().enumerate() {
-            let f = crate::forces::balancing::inertia_force(m, w);
-            let g = m.mass * crate::forces::balancing::COURSE_G;
+            let f = crate::balancing::inertia_force(m, w);
+            let g = m.mass * crate::balancing::COURSE_G;
             out.push(format!(
                 "P_{{и{k}}} = m_{{{k}}}ω^2ρ_{{{k}}} = {} {n}, P_{{и{k}}}/G_{{{k}}} = {}",
                 num(f, lang),

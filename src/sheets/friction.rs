@@ -8,9 +8,9 @@ use super::captions::{unit_in, FrictionText, Text};
 use super::layout::{lay_out_smallest, Block, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
-use crate::forces::friction::{
+use crate::friction::{
     guide_twin, incline_twin, journal_twin, pivot_twin, rolling_twin, screw_twin, slider_twin,
-    wedge_twin, CaseKind, Drawing, DrawingKind, Motion, SliderState, Solved,
+    wedge_twin, CaseKind, Drawing, DrawingKind, Motion, Rolling, Slider, SliderState, Solved,
 };
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang, Quantity};
@@ -126,46 +126,7 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
             );
             locking(first, t.self_braking.then_some(format!("{n}: α ≤ φ")), lang)
         }
-        CaseKind::Slider(c) => {
-            let t = slider_twin(c);
-            let (cmp, state) = match t.state {
-                SliderState::Rest => ("<", FrictionText::AtRest),
-                SliderState::Uniform => ("=", FrictionText::Uniform),
-                SliderState::Accelerating => (">", FrictionText::Accelerating),
-            };
-            // At rest the static cone, the static friction's reserve and the reaction that
-            // acts (−P) below the cone's limit; sliding, the reaction on the generator.
-            let (phi, f, r) = if t.state == SliderState::Rest {
-                (
-                    format!("φ_{{0}} = {}", deg(t.phi0, lang)),
-                    "f_{0}",
-                    format!(
-                        "R = P = {} {newton} < R_{{0}} = N/cos φ_{{0}} = {} {newton}",
-                        num(t.r, lang),
-                        num(t.r_limit, lang)
-                    ),
-                )
-            } else {
-                (
-                    format!("φ = {}", deg(t.phi, lang)),
-                    "f",
-                    format!("R = N/cos φ = {} {newton}", num(t.r, lang)),
-                )
-            };
-            vec![
-                format!(
-                    "{n}: N = P·cos α = {} {newton}, P_{{1}} = P·sin α = {} {newton}; ΔP = P_{{1}} − {f}·N = {} {newton}",
-                    num(t.n, lang),
-                    num(t.p1, lang),
-                    num(t.net, lang),
-                ),
-                format!(
-                    "{n}: α = {} {cmp} {phi} — {}; {r}",
-                    deg(c.alpha, lang),
-                    state.get(lang)
-                ),
-            ]
-        }
+        CaseKind::Slider(c) => slider_lines(n, c, lang),
         CaseKind::Wedge(c) => {
             let t = wedge_twin(c);
             vec![format!(
@@ -203,44 +164,93 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
         }
         CaseKind::Guide(c) => guide_lines(n, c, lang),
         CaseKind::Pivot(c) => pivot_lines(n, c, lang),
-        CaseKind::Rolling(c) => {
-            let t = rolling_twin(c);
-            let lt = |ok: bool| if ok { "<" } else { "≥" };
-            vec![
-                format!(
-                    "{n}: k_{{1}}/h = {} {} f_{{1}} = {}; k_{{2}}/h = {} {} f_{{2}} = {} — {}",
-                    num(t.ratio1, lang),
-                    lt(t.ratio1 < c.f1),
-                    num(c.f1, lang),
-                    num(t.ratio2, lang),
-                    lt(t.ratio2 < c.f2),
-                    num(c.f2, lang),
-                    if t.pure {
-                        FrictionText::PureRolling
-                    } else {
-                        FrictionText::RollersSlide
-                    }
-                    .get(lang)
-                ),
-                format!(
-                    "{n}: R_{{n1}} = Q, R_{{n2}} = Q + 2G; P = {} = {} {newton}; {}: P = Q·f_{{2}} = {} {newton}",
-                    match t.slide {
-                        None => "(Q·k_{1} + (Q + 2G)·k_{2})/d",
-                        Some(crate::forces::friction::Slide::OnRollers) => "Q·f_{1}",
-                        Some(crate::forces::friction::Slide::OnPlane) => "(Q + 2G)·f_{2}",
-                    },
-                    num(t.p, lang),
-                    FrictionText::Sliding.get(lang),
-                    num(t.p_sliding, lang)
-                ),
-            ]
-        }
+        CaseKind::Rolling(c) => rolling_lines(n, c, lang),
     }
+}
+
+/// The closed forms of a slider on an incline (case `n`): the forces along and across it,
+/// rest, uniform motion or acceleration against the cone of friction.
+fn slider_lines(n: usize, c: &Slider, lang: Lang) -> Vec<String> {
+    let newton = unit_in("N", lang);
+    let t = slider_twin(c);
+    let (cmp, state) = match t.state {
+        SliderState::Rest => ("<", FrictionText::AtRest),
+        SliderState::Uniform => ("=", FrictionText::Uniform),
+        SliderState::Accelerating => (">", FrictionText::Accelerating),
+    };
+    // At rest the static cone, the static friction's reserve and the reaction that
+    // acts (−P) below the cone's limit; sliding, the reaction on the generator.
+    let (phi, f, r) = if t.state == SliderState::Rest {
+        (
+            format!("φ_{{0}} = {}", deg(t.phi0, lang)),
+            "f_{0}",
+            format!(
+                "R = P = {} {newton} < R_{{0}} = N/cos φ_{{0}} = {} {newton}",
+                num(t.r, lang),
+                num(t.r_limit, lang)
+            ),
+        )
+    } else {
+        (
+            format!("φ = {}", deg(t.phi, lang)),
+            "f",
+            format!("R = N/cos φ = {} {newton}", num(t.r, lang)),
+        )
+    };
+    vec![
+        format!(
+            "{n}: N = P·cos α = {} {newton}, P_{{1}} = P·sin α = {} {newton}; ΔP = P_{{1}} − {f}·N = {} {newton}",
+            num(t.n, lang),
+            num(t.p1, lang),
+            num(t.net, lang),
+        ),
+        format!(
+            "{n}: α = {} {cmp} {phi} — {}; {r}",
+            deg(c.alpha, lang),
+            state.get(lang)
+        ),
+    ]
+}
+
+/// The closed forms of rollers between a load and a plane (case `n`): pure rolling or
+/// sliding, and the force that moves the load.
+fn rolling_lines(n: usize, c: &Rolling, lang: Lang) -> Vec<String> {
+    let newton = unit_in("N", lang);
+    let t = rolling_twin(c);
+    let lt = |ok: bool| if ok { "<" } else { "≥" };
+    vec![
+        format!(
+            "{n}: k_{{1}}/h = {} {} f_{{1}} = {}; k_{{2}}/h = {} {} f_{{2}} = {} — {}",
+            num(t.ratio1, lang),
+            lt(t.ratio1 < c.f1),
+            num(c.f1, lang),
+            num(t.ratio2, lang),
+            lt(t.ratio2 < c.f2),
+            num(c.f2, lang),
+            if t.pure {
+                FrictionText::PureRolling
+            } else {
+                FrictionText::RollersSlide
+            }
+            .get(lang)
+        ),
+        format!(
+            "{n}: R_{{n1}} = Q, R_{{n2}} = Q + 2G; P = {} = {} {newton}; {}: P = Q·f_{{2}} = {} {newton}",
+            match t.slide {
+                None => "(Q·k_{1} + (Q + 2G)·k_{2})/d",
+                Some(crate::friction::Slide::OnRollers) => "Q·f_{1}",
+                Some(crate::friction::Slide::OnPlane) => "(Q + 2G)·f_{2}",
+            },
+            num(t.p, lang),
+            FrictionText::Sliding.get(lang),
+            num(t.p_sliding, lang)
+        ),
+    ]
 }
 
 /// The closed forms of a cam's follower in its guide (case `n`): P and the bearings'
 /// reactions, the jamming angle against λ.
-fn guide_lines(n: usize, c: &crate::forces::friction::FollowerGuide, lang: Lang) -> Vec<String> {
+fn guide_lines(n: usize, c: &crate::friction::FollowerGuide, lang: Lang) -> Vec<String> {
     let newton = unit_in("N", lang);
     let Some(t) = guide_twin(c) else {
         return Vec::new();
@@ -263,7 +273,7 @@ fn guide_lines(n: usize, c: &crate::forces::friction::FollowerGuide, lang: Lang)
 
 /// The closed forms of a cam's rocker in its pivot (case `n`): the friction circle, the
 /// couple's arm, P and the jamming angle against λ.
-fn pivot_lines(n: usize, c: &crate::forces::friction::RockerPivot, lang: Lang) -> Vec<String> {
+fn pivot_lines(n: usize, c: &crate::friction::RockerPivot, lang: Lang) -> Vec<String> {
     let newton = unit_in("N", lang);
     let metre = unit_in("m", lang);
     let Some(t) = pivot_twin(c) else {

@@ -11,6 +11,8 @@ use super::layout::{
 };
 use super::BuildError;
 use crate::check::{Method, Row};
+use crate::construct::Figure;
+use crate::gears::blocking::Study;
 use crate::gears::{DetailMark, DETAIL_LETTER};
 use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
@@ -26,11 +28,14 @@ const TABLE_MM: f64 = 2.5;
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
     let g = session.gears()?;
-    let mut blocks = Vec::new();
-    let mut details = Vec::new();
-    let mm_ = unit_in("mm", lang);
-    let mut lines = vec![GearText::DataAndResults.get(lang).to_string()];
-    let mut plan = None;
+    let mut sheet = Filling {
+        lang,
+        mm: unit_in("mm", lang),
+        blocks: Vec::new(),
+        details: Vec::new(),
+        lines: vec![GearText::DataAndResults.get(lang).to_string()],
+        plan: None,
+    };
     // The blocking contour on a pair's own sheet (seed 002 PZ3), and on any gear sheet
     // whose shifts the contour chose (`choose`): the choice is shown where it was made. The
     // course project's gear sheet of given shifts keeps it in the report's rows and notes.
@@ -39,201 +44,25 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         .as_ref()
         .filter(|b| (g.racks.is_empty() && g.train.is_none()) || b.chosen.is_some());
     if let Some((p, m)) = &g.pair {
-        plan = Some(m.scale);
-        let caption = format!("{}, {}", GearText::Meshing.get(lang), m.scale.caption(lang));
-        blocks.push(view(&m.figure, caption, Key::GearsScaleL, m.scale));
-        let caption = format!(
-            "{}: λ_1, λ_2 {} N_1N_2, λ = 1 ↔ {} {}",
-            GearText::Sliding.get(lang),
-            GearText::Along.get(lang),
-            format_sig(crate::gears::LAMBDA_MM, 3, lang),
-            mm_,
-        );
-        blocks.push(view(&m.sliding, caption, Key::GearsScaleL, m.scale));
+        sheet.pair_views(p, (&m.figure, &m.sliding, m.scale), contour);
+        sheet.pair_lines(p, m.eps);
         if let Some(b) = contour {
-            let words = crate::gears::blocking::Words {
-                interference: GearText::Interference.get(lang),
-            };
-            let caption = format!(
-                "{} z_1 = {}, z_2 = {}",
-                GearText::Blocking.get(lang),
-                p.spec.z[0],
-                p.spec.z[1]
-            );
-            blocks.push(Block::view(b.figure(m.scale, lang, words), caption, None));
-        }
-        let mm = |x: f64| format_sig(x * 1e3, 6, lang);
-        lines.push(format!(
-            "m = {} {u}, z_1 = {}, z_2 = {}, x_1 = {}, x_2 = {}",
-            mm(p.spec.module),
-            p.spec.z[0],
-            p.spec.z[1],
-            format_sig(p.spec.x[0], 4, lang),
-            format_sig(p.spec.x[1], 4, lang),
-            u = mm_,
-        ));
-        lines.push(format!(
-            "α_w = {}°, a_w = {}, y = {}, Δy = {}",
-            format_sig(p.alpha_w.to_degrees(), 7, lang),
-            mm(p.a_w),
-            format_sig(p.y, 5, lang),
-            format_sig(p.dy, 4, lang),
-        ));
-        lines.push(format!(
-            "r_{{w1}} = {}, r_{{w2}} = {}, r_{{a1}} = {}, r_{{a2}} = {}, r_{{f1}} = {}, r_{{f2}} = {}",
-            mm(p.rw[0]), mm(p.rw[1]), mm(p.ra[0]), mm(p.ra[1]), mm(p.rf[0]), mm(p.rf[1])
-        ));
-        lines.push(format!(
-            "p = {}, p_b = {}, p_w = {}, s_{{a1}} = {}, s_{{a2}} = {}",
-            mm(p.p),
-            mm(p.p_b),
-            mm(p.p_w),
-            mm(p.sa[0]),
-            mm(p.sa[1])
-        ));
-        lines.push(format!(
-            "ε_α = B_1B_2/p_b = {}; ε′_α = {}",
-            format_sig(p.eps, 5, lang),
-            format_sig(m.eps, 5, lang)
-        ));
-        if let Some(b) = contour {
-            let f = |x: f64| format_sig(x, 4, lang);
-            for (tag, ix) in b.points() {
-                let name = crate::gears::blocking::point_label(tag);
-                let head = if tag == crate::gears::blocking::POINT_TAGS[0] {
-                    format!("{}, {name}", GearText::Blocking.get(lang))
-                } else {
-                    name.to_string()
-                };
-                lines.push(format!(
-                    "{head}: x_1 = {}, x_2 = {}, Δy = {}, ε_α = {}, s_{{a1}} = {}m, s_{{a2}} = {}m",
-                    f(ix.x[0]),
-                    f(ix.x[1]),
-                    f(ix.dy),
-                    f(ix.eps),
-                    f(ix.sa[0]),
-                    f(ix.sa[1]),
-                ));
-            }
-            if let Some(c) = b.chosen {
-                lines.push(format!(
-                    "{} {}",
-                    GearText::ChosenBy.get(lang),
-                    criterion_words(c, lang)
-                ));
-            }
+            sheet.contour_lines(b);
         }
     }
     for (name, r) in &g.racks {
-        let c = &r.cutting;
-        // A blank shortened by Δy (a pair's wheel) says so.
-        let dy = c.shortening();
-        let shortened = if dy.abs() > 1e-9 {
-            format!(", Δy = {}", format_sig(dy, 4, lang))
-        } else {
-            String::new()
-        };
-        let caption = format!(
-            "{} z = {}, x = {}{shortened}, N = {} ({}), {}{}",
-            GearText::CutByRack.get(lang),
-            c.z,
-            format_sig(c.x, 4, lang),
-            r.steps,
-            GearText::PositionsDrawn
-                .get(lang)
-                .replace("{n}", &r.drawn.len().to_string()),
-            r.scale.caption(lang),
-            if r.undercut {
-                GearText::UndercutHatched.get(lang)
-            } else {
-                ""
-            }
-        );
-        blocks.push(view(&r.drawing(), caption, Key::GearsRackScaleL, r.scale));
-        // The undercut's detail view, named by its letter and scale (ГОСТ 2.305: «А (20:1)»),
-        // after the pictures (a detail may stand anywhere on the sheet).
-        let names = |m: DetailMark| detail_name(m, lang);
-        if let (Some(detail), Some((_, scale))) = (r.detail_view(&names), r.detail) {
-            let caption = format!("{DETAIL_LETTER} ({})", super::gost_scale(scale, lang));
-            details.push(view(&detail, caption, Key::GearsRackScaleL, r.scale));
-        }
-        plan.get_or_insert(r.scale);
-        lines.push(format!(
-            "{name}: z = {}, x = {}, x_{{min}} = {}, s_a = {} {}{}{}",
-            c.z,
-            format_sig(c.x, 4, lang),
-            format_sig(c.x_min(), 4, lang),
-            format_sig(r.sa * 1e3, 4, lang),
-            mm_,
-            if r.undercut {
-                GearText::Undercut.get(lang)
-            } else {
-                ""
-            },
-            if r.pointed {
-                GearText::Pointed.get(lang)
-            } else {
-                ""
-            },
-        ));
+        sheet.rack(name, r);
     }
     if let Some(t) = &g.train {
-        let tri = &t.triangles;
-        let caption = format!(
-            "{}, {}, {}, H = {} {}",
-            GearText::Triangles.get(lang),
-            tri.scale_l.caption(lang),
-            tri.scale_v.caption(lang),
-            format_sig(tri.plan_h, 3, lang),
-            mm_,
-        );
-        // μ_ω beside the plan, at the end of its reading line, as the textbook writes it.
-        let scale_w = format!(
-            "μ_{{ω}} = μ_{{v}}/(μ_{{l}}·H) = {} {}",
-            format_sig(tri.scale_w.value(), 6, lang),
-            tri.scale_w.quantity.unit(lang),
-        );
-        let figure = tri.figure.clone().with_text(
-            "μ_ω of the plan of angular velocities",
-            tri.scale_w_at,
-            scale_w,
-            DVec2::X,
-        );
-        blocks.push(view(&figure, caption, Key::PlanetaryModule, tri.scale_v));
-        let tr_ = &t.spec.train;
-        // The mobility heads the ratio's line (the sheet's text block is as tall as PZ2's A3
-        // holds).
-        for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
-            let Some(s) = s else { continue };
-            let head = if sup.is_empty() {
-                format!("{}; ", train_mobility_line(tr_))
-            } else {
-                String::new()
-            };
-            lines.push(format!(
-                "{head}u_{{{}-{}}}{sup} = {} ({}), {} ({})",
-                tr_.shafts[tr_.input],
-                tr_.shafts[tr_.output],
-                format_sig(s.ratio, 6, lang),
-                GearText::Willis.get(lang),
-                format_sig(s.triangles.ratio, 6, lang),
-                GearText::ByTriangles.get(lang),
-            ));
-        }
-        lines.extend(differential_line(t, lang));
-        lines.extend(closing_lines(t, lang));
-        if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {
-            lines.push(format!(
-                "k = {k}: {} {}",
-                GearText::Assembly.get(lang),
-                match (a.fits(), a.p) {
-                    (true, Some(p)) => format!("p = {p}"),
-                    (true, None) => GearText::Holds.get(lang).to_string(),
-                    (false, _) => GearText::Fails.get(lang).to_string(),
-                },
-            ));
-        }
+        sheet.train(t);
     }
+    let Filling {
+        mut blocks,
+        mut details,
+        mut lines,
+        plan,
+        ..
+    } = sheet;
     blocks.append(&mut details);
     lines.push(String::new());
     lines.push(super::drafting_line(
@@ -441,4 +270,247 @@ fn train_mobility_line(t: &crate::gears::Train) -> String {
         m.p4,
         m.w()
     )
+}
+
+/// The gear sheet as it is filled: its views, the detail views (after the pictures), the
+/// lines of its text block and the μ of its title block.
+struct Filling {
+    lang: Lang,
+    /// The unit mm in the sheet's words.
+    mm: String,
+    blocks: Vec<Block>,
+    details: Vec<Block>,
+    lines: Vec<String>,
+    plan: Option<crate::scale::Scale>,
+}
+
+impl Filling {
+    /// The pair's meshing picture and its diagram of specific sliding (both at the picture's
+    /// μ_l), and the blocking contour when the sheet shows it.
+    fn pair_views(
+        &mut self,
+        p: &crate::gears::Pair,
+        (figure, sliding, scale): (&Figure, &Figure, crate::scale::Scale),
+        contour: Option<&Study>,
+    ) {
+        let (lang, mm_) = (self.lang, &self.mm);
+        self.plan = Some(scale);
+        let caption = format!("{}, {}", GearText::Meshing.get(lang), scale.caption(lang));
+        self.blocks
+            .push(view(figure, caption, Key::GearsScaleL, scale));
+        let caption = format!(
+            "{}: λ_1, λ_2 {} N_1N_2, λ = 1 ↔ {} {}",
+            GearText::Sliding.get(lang),
+            GearText::Along.get(lang),
+            format_sig(crate::gears::LAMBDA_MM, 3, lang),
+            mm_,
+        );
+        self.blocks
+            .push(view(sliding, caption, Key::GearsScaleL, scale));
+        if let Some(b) = contour {
+            let words = crate::gears::blocking::Words {
+                interference: GearText::Interference.get(lang),
+            };
+            let caption = format!(
+                "{} z_1 = {}, z_2 = {}",
+                GearText::Blocking.get(lang),
+                p.spec.z[0],
+                p.spec.z[1]
+            );
+            self.blocks
+                .push(Block::view(b.figure(scale, lang, words), caption, None));
+        }
+    }
+
+    /// The pair's data and results: m, z, x; α_w, a_w, y, Δy; the radii, the pitches and
+    /// s_a; ε_α by formula and as drawn (`eps_drawn`).
+    fn pair_lines(&mut self, p: &crate::gears::Pair, eps_drawn: f64) {
+        let (lang, mm_) = (self.lang, &self.mm);
+        let mm = |x: f64| format_sig(x * 1e3, 6, lang);
+        self.lines.push(format!(
+            "m = {} {u}, z_1 = {}, z_2 = {}, x_1 = {}, x_2 = {}",
+            mm(p.spec.module),
+            p.spec.z[0],
+            p.spec.z[1],
+            format_sig(p.spec.x[0], 4, lang),
+            format_sig(p.spec.x[1], 4, lang),
+            u = mm_,
+        ));
+        self.lines.push(format!(
+            "α_w = {}°, a_w = {}, y = {}, Δy = {}",
+            format_sig(p.alpha_w.to_degrees(), 7, lang),
+            mm(p.a_w),
+            format_sig(p.y, 5, lang),
+            format_sig(p.dy, 4, lang),
+        ));
+        self.lines.push(format!(
+            "r_{{w1}} = {}, r_{{w2}} = {}, r_{{a1}} = {}, r_{{a2}} = {}, r_{{f1}} = {}, r_{{f2}} = {}",
+            mm(p.rw[0]), mm(p.rw[1]), mm(p.ra[0]), mm(p.ra[1]), mm(p.rf[0]), mm(p.rf[1])
+        ));
+        self.lines.push(format!(
+            "p = {}, p_b = {}, p_w = {}, s_{{a1}} = {}, s_{{a2}} = {}",
+            mm(p.p),
+            mm(p.p_b),
+            mm(p.p_w),
+            mm(p.sa[0]),
+            mm(p.sa[1])
+        ));
+        self.lines.push(format!(
+            "ε_α = B_1B_2/p_b = {}; ε′_α = {}",
+            format_sig(p.eps, 5, lang),
+            format_sig(eps_drawn, 5, lang)
+        ));
+    }
+
+    /// The blocking contour's points, each with its indices, and the criterion the scene's
+    /// point was chosen by.
+    fn contour_lines(&mut self, b: &Study) {
+        let lang = self.lang;
+        let f = |x: f64| format_sig(x, 4, lang);
+        for (tag, ix) in b.points() {
+            let name = crate::gears::blocking::point_label(tag);
+            let head = if tag == crate::gears::blocking::POINT_TAGS[0] {
+                format!("{}, {name}", GearText::Blocking.get(lang))
+            } else {
+                name.to_string()
+            };
+            self.lines.push(format!(
+                "{head}: x_1 = {}, x_2 = {}, Δy = {}, ε_α = {}, s_{{a1}} = {}m, s_{{a2}} = {}m",
+                f(ix.x[0]),
+                f(ix.x[1]),
+                f(ix.dy),
+                f(ix.eps),
+                f(ix.sa[0]),
+                f(ix.sa[1]),
+            ));
+        }
+        if let Some(c) = b.chosen {
+            self.lines.push(format!(
+                "{} {}",
+                GearText::ChosenBy.get(lang),
+                criterion_words(c, lang)
+            ));
+        }
+    }
+
+    /// A wheel cut by the rack: its view (and the undercut's detail view), its line.
+    fn rack(&mut self, name: &str, r: &crate::gears::Generation) {
+        let (lang, mm_) = (self.lang, &self.mm);
+        let c = &r.cutting;
+        // A blank shortened by Δy (a pair's wheel) says so.
+        let dy = c.shortening();
+        let shortened = if dy.abs() > 1e-9 {
+            format!(", Δy = {}", format_sig(dy, 4, lang))
+        } else {
+            String::new()
+        };
+        let caption = format!(
+            "{} z = {}, x = {}{shortened}, N = {} ({}), {}{}",
+            GearText::CutByRack.get(lang),
+            c.z,
+            format_sig(c.x, 4, lang),
+            r.steps,
+            GearText::PositionsDrawn
+                .get(lang)
+                .replace("{n}", &r.drawn.len().to_string()),
+            r.scale.caption(lang),
+            if r.undercut {
+                GearText::UndercutHatched.get(lang)
+            } else {
+                ""
+            }
+        );
+        self.blocks
+            .push(view(&r.drawing(), caption, Key::GearsRackScaleL, r.scale));
+        // The undercut's detail view, named by its letter and scale (ГОСТ 2.305: «А (20:1)»),
+        // after the pictures (a detail may stand anywhere on the sheet).
+        let names = |m: DetailMark| detail_name(m, lang);
+        if let (Some(detail), Some((_, scale))) = (r.detail_view(&names), r.detail) {
+            let caption = format!("{DETAIL_LETTER} ({})", super::gost_scale(scale, lang));
+            self.details
+                .push(view(&detail, caption, Key::GearsRackScaleL, r.scale));
+        }
+        self.plan.get_or_insert(r.scale);
+        self.lines.push(format!(
+            "{name}: z = {}, x = {}, x_{{min}} = {}, s_a = {} {}{}{}",
+            c.z,
+            format_sig(c.x, 4, lang),
+            format_sig(c.x_min(), 4, lang),
+            format_sig(r.sa * 1e3, 4, lang),
+            mm_,
+            if r.undercut {
+                GearText::Undercut.get(lang)
+            } else {
+                ""
+            },
+            if r.pointed {
+                GearText::Pointed.get(lang)
+            } else {
+                ""
+            },
+        ));
+    }
+
+    /// The train: the triangles of velocities with μ_ω, the ratio by Willis and by the
+    /// triangles (and the required one), the differential's and the closing's lines, the
+    /// assembly of the satellites.
+    fn train(&mut self, t: &crate::gears::TrainStudy) {
+        let (lang, mm_) = (self.lang, &self.mm);
+        let tri = &t.triangles;
+        let caption = format!(
+            "{}, {}, {}, H = {} {}",
+            GearText::Triangles.get(lang),
+            tri.scale_l.caption(lang),
+            tri.scale_v.caption(lang),
+            format_sig(tri.plan_h, 3, lang),
+            mm_,
+        );
+        // μ_ω beside the plan, at the end of its reading line, as the textbook writes it.
+        let scale_w = format!(
+            "μ_{{ω}} = μ_{{v}}/(μ_{{l}}·H) = {} {}",
+            format_sig(tri.scale_w.value(), 6, lang),
+            tri.scale_w.quantity.unit(lang),
+        );
+        let figure = tri.figure.clone().with_text(
+            "μ_ω of the plan of angular velocities",
+            tri.scale_w_at,
+            scale_w,
+            DVec2::X,
+        );
+        self.blocks
+            .push(view(&figure, caption, Key::PlanetaryModule, tri.scale_v));
+        let tr_ = &t.spec.train;
+        // The mobility heads the ratio's line (the sheet's text block is as tall as PZ2's A3
+        // holds).
+        for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
+            let Some(s) = s else { continue };
+            let head = if sup.is_empty() {
+                format!("{}; ", train_mobility_line(tr_))
+            } else {
+                String::new()
+            };
+            self.lines.push(format!(
+                "{head}u_{{{}-{}}}{sup} = {} ({}), {} ({})",
+                tr_.shafts[tr_.input],
+                tr_.shafts[tr_.output],
+                format_sig(s.ratio, 6, lang),
+                GearText::Willis.get(lang),
+                format_sig(s.triangles.ratio, 6, lang),
+                GearText::ByTriangles.get(lang),
+            ));
+        }
+        self.lines.extend(differential_line(t, lang));
+        self.lines.extend(closing_lines(t, lang));
+        if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {
+            self.lines.push(format!(
+                "k = {k}: {} {}",
+                GearText::Assembly.get(lang),
+                match (a.fits(), a.p) {
+                    (true, Some(p)) => format!("p = {p}"),
+                    (true, None) => GearText::Holds.get(lang).to_string(),
+                    (false, _) => GearText::Fails.get(lang).to_string(),
+                },
+            ));
+        }
+    }
 }

@@ -13,7 +13,7 @@ use crate::linkage::KinPlan;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::scene::Key;
-use crate::study::{Kinematics, Session};
+use crate::study::{KinScales, Kinematics, Session};
 
 /// The widest an analytic table may be drawn, mm (the A1 frame's width less margins); its
 /// columns are narrowed to 12 mm before any is left out.
@@ -58,148 +58,15 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     } else {
         (Vec::new(), Vec::new())
     };
-    let mut lines = vec![
-        super::drafting_line(
-            session.drafting(),
-            if a.diagrams.is_some() {
-                super::Errs::PlansAndChords
-            } else {
-                super::Errs::Plans
-            },
-            lang,
-        ),
-        format!(
-            "{}: {}; {}: {}",
-            Text::VelocityPlans.get(lang),
-            sc.v.caption(lang),
-            Text::AccelerationPlans.get(lang),
-            sc.a.caption(lang)
-        ),
-    ];
-    lines.extend(verdict_lines(&crate::kinematics::verdicts(&a.rows()), lang));
-    let mut diagrams: Run = Vec::new();
-    if let Some(d) = &a.diagrams {
-        let w = a.w1.abs();
-        let dec = |x: f64| format_sig(x, 4, lang);
-        // The second differentiation's chords are drawn on the first derivative's curve: one
-        // drawing, one view.
-        let stack = d
-            .first_figure
-            .clone()
-            .joined(d.second_figure.translated(d.second_at));
-        diagrams.push((
-            Block::view(
-                stack,
-                // The stack's caption names its three diagrams (the S and dS/dφ had none).
-                format!(
-                    "S, dS/dφ, d²S/dφ²: H_{{1}} = {}, H_{{2}} = {} {}",
-                    dec(d.first.pole_mm),
-                    dec(d.second.pole_mm),
-                    Text::Millimetre.get(lang)
-                ),
-                keyed(Key::KinematicsScaleS, d.scales.y),
-            ),
-            None,
-        ));
-        lines.push(format!(
-            "{} {}: μ_{{S}} = {} {}, μ_{{φ}} = {} {}, H_{{1}} = {} {}; μ_{{v}} = μ_{{S}}·ω_{{1}}/(H_{{1}}·μ_{{φ}}) = {} {}, μ_{{a}} = {} {}",
-            Text::DiagramsOfPoint.get(lang),
-            d.point,
-            dec(d.scales.y.value()),
-            Quantity::Length.unit(lang),
-            dec(d.scales.x.value()),
-            Quantity::Angle.unit(lang),
-            dec(d.first.pole_mm),
-            Text::Millimetre.get(lang),
-            dec(d.first.scale.value() * w),
-            Quantity::Velocity.unit(lang),
-            dec(d.second.scale.value() * w * w),
-            Quantity::Acceleration.unit(lang)
-        ));
-    }
-    // Each plan's view, its caption stating its μ when `stated` (a plan at its own μ always
-    // states it): on two sheets the plans' scales are stated on the sheet that draws them —
-    // μ_v under the first velocity plan, μ_a under each acceleration plan — as the sheet's
-    // text, which states them on one sheet, goes onto the second.
-    let velocity_run = |stated: bool| -> Run {
-        let mut run = Vec::new();
-        for (pos, vp) in a.plan.positions.iter().zip(a.velocity_plans()) {
-            let c = format!("{} {}", Text::Pos.get(lang), pos.label);
-            let first = run.is_empty();
-            run.push((
-                match vp {
-                    Some(vp) => {
-                        plan_view(vp, c, (Key::KinematicsScaleV, sc.v), stated && first, lang)
-                    }
-                    None => Block::Text {
-                        lines: vec![
-                            c,
-                            Text::NoPlan.get(lang).into(),
-                            Text::TogglePosition.get(lang).into(),
-                        ],
-                        size_mm: 3.5,
-                    },
-                },
-                VELOCITY,
-            ));
-        }
-        run
+    let mut lines = head_lines(session, &a, &sc, lang);
+    let diagrams = diagram_views(&a, lang, &mut lines);
+    let plans = Plans {
+        a: &a,
+        sc: &sc,
+        lang,
     };
-    let acceleration_run = |stated: bool| -> Run {
-        a.acceleration
-            .iter()
-            .map(|(k, ap)| {
-                let label = &a.plan.positions[*k].label;
-                let c = format!("{} {label}", Text::AccelerationPlanAt.get(lang));
-                let scale = (Key::KinematicsScaleA, sc.a);
-                (plan_view(&ap.0, c, scale, stated, lang), ACCELERATION)
-            })
-            .collect()
-    };
-    let (velocity, acceleration) = (velocity_run(false), acceleration_run(false));
-    let mut rest: Run = Vec::new();
-    if let Some(r) = &a.rocker {
-        let c = format!("ω_{{{l}}}(φ), dω_{{{l}}}/dφ", l = r.link);
-        rest.push((Block::view(r.figure.clone(), c, None), None));
-        // μ_φ stated once on a sheet: with the displacement diagram's when they share it.
-        let phi = match &a.diagrams {
-            Some(d) if d.scales.x == r.scale_phi => String::new(),
-            _ => format!(", {}", r.scale_phi.caption(lang)),
-        };
-        lines.push(format!(
-            "ω_{{{}}}(φ): {}{phi}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ",
-            r.link,
-            r.scale.caption(lang),
-            format_sig(r.derivative.pole_mm, 3, lang),
-            Text::Millimetre.get(lang)
-        ));
-    }
-    if let Some((name, h)) = &a.hodograph {
-        let c = format!("{} v_{{{}}}", Text::Hodograph.get(lang), name);
-        rest.push((Block::view(h.as_ref().clone(), c, None), None));
-        lines.push(format!(
-            "{} v_{{{}}}: {}",
-            Text::Hodograph.get(lang),
-            name,
-            h.scale.caption(lang)
-        ));
-    }
-    for r in &a.refusals {
-        let (text, phi_deg) = match r {
-            crate::kinematics::KinError::NoFullTurn { phi_deg, .. } => (Text::NoDiagrams, phi_deg),
-            crate::kinematics::KinError::Leap { phi_deg, .. } => (Text::NoDiagramsLeap, phi_deg),
-            _ => continue,
-        };
-        let line = format!(
-            "{} φ_{{1}} = {}°",
-            text.get(lang),
-            format_fixed(*phi_deg, 1, lang)
-        );
-        // The diagrams and the rocker's diagram refused for one reason: one line.
-        if !lines.contains(&line) {
-            lines.push(line);
-        }
-    }
+    let (velocity, acceleration) = (plans.velocity(false), plans.acceleration(false));
+    let mut rest = rest_views(&a, lang, &mut lines);
     rest.push((
         Block::Text {
             lines,
@@ -263,8 +130,194 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     // and the two are then filled more evenly. Never a table alone on a sheet: the second
     // always holds the diagrams or the acceleration plans.
     let head: Run = scheme.into_iter().chain(plan).collect();
-    let (velocity, acceleration) = (velocity_run(true), acceleration_run(true));
-    let groups = [head, velocity, acceleration, analysis, diagrams, rest];
+    let (velocity, acceleration) = (plans.velocity(true), plans.acceleration(true));
+    two_sheets(
+        &lay,
+        [head, velocity, acceleration, analysis, diagrams, rest],
+    )
+}
+
+/// The sheet's first lines: the drafting model's errors, the plans' scales, the verdicts.
+fn head_lines(session: &Session<'_>, a: &Kinematics, sc: &KinScales, lang: Lang) -> Vec<String> {
+    let mut lines = vec![
+        super::drafting_line(
+            session.drafting(),
+            if a.diagrams.is_some() {
+                super::Errs::PlansAndChords
+            } else {
+                super::Errs::Plans
+            },
+            lang,
+        ),
+        format!(
+            "{}: {}; {}: {}",
+            Text::VelocityPlans.get(lang),
+            sc.v.caption(lang),
+            Text::AccelerationPlans.get(lang),
+            sc.a.caption(lang)
+        ),
+    ];
+    lines.extend(verdict_lines(&crate::kinematics::verdicts(&a.rows()), lang));
+    lines
+}
+
+/// The displacement diagram stacked on its two derivatives (a view), with its line of
+/// scales and poles added to `lines`.
+fn diagram_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
+    let mut diagrams: Run = Vec::new();
+    if let Some(d) = &a.diagrams {
+        let w = a.w1.abs();
+        let dec = |x: f64| format_sig(x, 4, lang);
+        // The second differentiation's chords are drawn on the first derivative's curve: one
+        // drawing, one view.
+        let stack = d
+            .first_figure
+            .clone()
+            .joined(d.second_figure.translated(d.second_at));
+        diagrams.push((
+            Block::view(
+                stack,
+                // The stack's caption names its three diagrams (the S and dS/dφ had none).
+                format!(
+                    "S, dS/dφ, d²S/dφ²: H_{{1}} = {}, H_{{2}} = {} {}",
+                    dec(d.first.pole_mm),
+                    dec(d.second.pole_mm),
+                    Text::Millimetre.get(lang)
+                ),
+                keyed(Key::KinematicsScaleS, d.scales.y),
+            ),
+            None,
+        ));
+        lines.push(format!(
+            "{} {}: μ_{{S}} = {} {}, μ_{{φ}} = {} {}, H_{{1}} = {} {}; μ_{{v}} = μ_{{S}}·ω_{{1}}/(H_{{1}}·μ_{{φ}}) = {} {}, μ_{{a}} = {} {}",
+            Text::DiagramsOfPoint.get(lang),
+            d.point,
+            dec(d.scales.y.value()),
+            Quantity::Length.unit(lang),
+            dec(d.scales.x.value()),
+            Quantity::Angle.unit(lang),
+            dec(d.first.pole_mm),
+            Text::Millimetre.get(lang),
+            dec(d.first.scale.value() * w),
+            Quantity::Velocity.unit(lang),
+            dec(d.second.scale.value() * w * w),
+            Quantity::Acceleration.unit(lang)
+        ));
+    }
+    diagrams
+}
+
+/// The velocity and acceleration plans' views of a sheet, in their series: each plan's
+/// caption states its μ when `stated` (a plan at its own μ always states it). On two sheets
+/// the plans' scales are stated on the sheet that draws them — μ_v under the first velocity
+/// plan, μ_a under each acceleration plan — as the sheet's text, which states them on one
+/// sheet, goes onto the second.
+struct Plans<'a> {
+    a: &'a Kinematics,
+    sc: &'a KinScales,
+    lang: Lang,
+}
+
+impl Plans<'_> {
+    /// The velocity plans' views, a text in place of a plan the position has none of.
+    fn velocity(&self, stated: bool) -> Run {
+        let (a, sc, lang) = (self.a, self.sc, self.lang);
+        let mut run = Vec::new();
+        for (pos, vp) in a.plan.positions.iter().zip(a.velocity_plans()) {
+            let c = format!("{} {}", Text::Pos.get(lang), pos.label);
+            let first = run.is_empty();
+            run.push((
+                match vp {
+                    Some(vp) => {
+                        plan_view(vp, c, (Key::KinematicsScaleV, sc.v), stated && first, lang)
+                    }
+                    None => Block::Text {
+                        lines: vec![
+                            c,
+                            Text::NoPlan.get(lang).into(),
+                            Text::TogglePosition.get(lang).into(),
+                        ],
+                        size_mm: 3.5,
+                    },
+                },
+                VELOCITY,
+            ));
+        }
+        run
+    }
+
+    /// The acceleration plans' views.
+    fn acceleration(&self, stated: bool) -> Run {
+        let (a, sc, lang) = (self.a, self.sc, self.lang);
+        a.acceleration
+            .iter()
+            .map(|(k, ap)| {
+                let label = &a.plan.positions[*k].label;
+                let c = format!("{} {label}", Text::AccelerationPlanAt.get(lang));
+                let scale = (Key::KinematicsScaleA, sc.a);
+                (plan_view(&ap.0, c, scale, stated, lang), ACCELERATION)
+            })
+            .collect()
+    }
+}
+
+/// The rocker's diagram and the hodograph (views, their lines added to `lines`), and the
+/// diagrams refused (a line each).
+fn rest_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
+    let mut rest: Run = Vec::new();
+    if let Some(r) = &a.rocker {
+        let c = format!("ω_{{{l}}}(φ), dω_{{{l}}}/dφ", l = r.link);
+        rest.push((Block::view(r.figure.clone(), c, None), None));
+        // μ_φ stated once on a sheet: with the displacement diagram's when they share it.
+        let phi = match &a.diagrams {
+            Some(d) if d.scales.x == r.scale_phi => String::new(),
+            _ => format!(", {}", r.scale_phi.caption(lang)),
+        };
+        lines.push(format!(
+            "ω_{{{}}}(φ): {}{phi}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ",
+            r.link,
+            r.scale.caption(lang),
+            format_sig(r.derivative.pole_mm, 3, lang),
+            Text::Millimetre.get(lang)
+        ));
+    }
+    if let Some((name, h)) = &a.hodograph {
+        let c = format!("{} v_{{{}}}", Text::Hodograph.get(lang), name);
+        rest.push((Block::view(h.as_ref().clone(), c, None), None));
+        lines.push(format!(
+            "{} v_{{{}}}: {}",
+            Text::Hodograph.get(lang),
+            name,
+            h.scale.caption(lang)
+        ));
+    }
+    for r in &a.refusals {
+        let (text, phi_deg) = match r {
+            crate::kinematics::KinError::NoFullTurn { phi_deg, .. } => (Text::NoDiagrams, phi_deg),
+            crate::kinematics::KinError::Leap { phi_deg, .. } => (Text::NoDiagramsLeap, phi_deg),
+            _ => continue,
+        };
+        let line = format!(
+            "{} φ_{{1}} = {}°",
+            text.get(lang),
+            format_fixed(*phi_deg, 1, lang)
+        );
+        // The diagrams and the rocker's diagram refused for one reason: one line.
+        if !lines.contains(&line) {
+            lines.push(line);
+        }
+    }
+    rest
+}
+
+/// The blocks over two sheets, `groups` in the textbook's order (the head, the velocity
+/// plans, the acceleration plans, the structural analysis, the diagrams, the rest): the
+/// first sheet takes the first two groups, or more when it holds them and the two sheets
+/// are then filled more evenly; then each table the first sheet holds moves up.
+fn two_sheets(
+    lay: &dyn Fn(Run) -> Result<Vec<Plate>, BuildError>,
+    groups: [Run; 6],
+) -> Result<Vec<Plate>, BuildError> {
     let area = |run: &[(Block, Option<u8>)]| -> f64 {
         run.iter()
             .map(|(b, _)| {

@@ -4,9 +4,9 @@ use super::*;
 
 /// The balancing's part of the report.
 pub(super) const PART: Part = |session, rep| session.report_balancing(rep);
+use crate::balancing::{self, BalancingSpec};
 use crate::construct::fit::{finest_fitting, fit_room};
 use crate::construct::{Context, Figure};
-use crate::forces::balancing::{self, BalancingSpec};
 use crate::geom::DVec2;
 use crate::scale::Scale;
 

@@ -6,7 +6,7 @@ use super::*;
 pub(super) const PART: Part = |session, rep| session.report_friction(rep);
 use crate::construct::fit::{finest_fitting, fit_room};
 use crate::construct::Figure;
-use crate::forces::friction::{self, DrawingKind, FrictionCase, FrictionError};
+use crate::friction::{self, DrawingKind, FrictionCase, FrictionError};
 use crate::geom::DVec2;
 use crate::scale::Quantity;
 

@@ -22,7 +22,7 @@ impl<'s> Session<'s> {
                 .gears
                 .as_ref()
                 .ok_or(StudyError::NoGears("the gear study"))?;
-            let g = crate::gears::study(spec, &self.ctx()?)?;
+            let g = crate::gears::study(spec, &self.ctx()?, &self.shared.blocking)?;
             if let Some((_, m)) = &g.pair {
                 self.logged("meshing picture", "", m.scale);
             }

@@ -31,12 +31,12 @@ pub use forces::EQUILIBRIUM_TOLERANCE;
 pub use kinematics::{ChartScales, KinScales, Kinematics};
 pub use scales::KinSheets;
 
+use crate::balancing::{Balancing, BalancingError};
 use crate::check::Row;
 use crate::check::{Report, Table};
 use crate::construct::{Context, Drafting, Figure};
-use crate::forces::balancing::{Balancing, BalancingError};
-use crate::forces::friction::{FrictionError, Solved};
 use crate::forces::{ForceError, ForceSpec, PositionForces};
+use crate::friction::{FrictionError, Solved};
 use crate::kinematics::{
     acceleration_indices, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
 };
@@ -103,24 +103,41 @@ fn part(section: Section) -> Part {
     }
 }
 
+/// What sessions over several scenes share: the results that are a function of a part of a
+/// scene alone (the gear pair's blocking contour), so that a batch's variants, which mostly
+/// share their gears, make each about once. A session made alone keeps its own.
+#[derive(Default)]
+pub struct Shared {
+    /// The blocking contours, by pair and criterion.
+    pub blocking: crate::gears::blocking::Studies,
+}
+
 /// The session over one scene.
 pub struct Session<'s> {
     scene: &'s Scene,
     drafting: Drafting,
     ctx: Result<Context, StudyError>,
     caches: Caches,
+    shared: Arc<Shared>,
     log: Mutex<Vec<Constructed>>,
 }
 
 impl<'s> Session<'s> {
     /// A session over `scene`, reading every length with `drafting`.
     pub fn new(scene: &'s Scene, drafting: Drafting) -> Self {
+        Self::sharing(scene, drafting, Arc::default())
+    }
+
+    /// A session over `scene` (as [`Session::new`]) that takes what it shares with other
+    /// sessions from `shared` and keeps it there.
+    pub fn sharing(scene: &'s Scene, drafting: Drafting, shared: Arc<Shared>) -> Self {
         Self {
             scene,
             drafting,
             ctx: Context::for_model_size(FIGURE_MM, drafting)
                 .map_err(|e| StudyError::Tolerances(e.to_string())),
             caches: Caches::default(),
+            shared,
             log: Mutex::new(Vec::new()),
         }
     }

@@ -258,7 +258,7 @@ fn a_scene_with_a_mechanism_and_a_rotor_reports_both() {
 
 #[test]
 fn the_scene_converts_to_si_at_the_boundary() {
-    use tmm::forces::balancing::Correction;
+    use tmm::balancing::Correction;
     let s = tmm::load(&root().join("constructions/rotor-dynamic.toml")).expect("scene");
     assert!(s.mechanism.is_none());
     assert_eq!(s.plates, [tmm::PlateKind::Balancing]);

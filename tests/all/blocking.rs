@@ -15,8 +15,8 @@
 use glam::DVec2;
 use proptest::prelude::*;
 use tmm::gears::blocking::{
-    levels, twin_margin, twin_pair, twin_rho_l, Blocking, Contour, Criterion, Hard, Kind, Study,
-    CHOICE_MARGIN,
+    levels, twin_margin, twin_pair, twin_rho_l, Blocking, Contour, Criterion, Hard, Kind, Studies,
+    Study, CHOICE_MARGIN,
 };
 use tmm::gears::{BasicRack, Cutting, PairSpec};
 
@@ -409,15 +409,20 @@ fn a_kept_study_is_the_pairs_own_and_its_choices_those_made_alone() {
         dy_table: None,
     };
     let (a, b) = (spec([13, 27], [0.5, 0.3]), spec([17, 40], [0.3, 0.1]));
-    let first = Study::of(&a, None).unwrap();
-    let other = Study::of(&b, None).unwrap();
+    let kept = Studies::default();
+    let first = kept.of(&a, None).unwrap();
+    let other = kept.of(&b, None).unwrap();
     assert_ne!(first.contour.blocking.z, other.contour.blocking.z);
-    assert_eq!(Study::of(&a, None).unwrap(), first);
-    Study::forget();
+    assert_eq!(kept.of(&a, None).unwrap(), first);
+    assert_eq!(
+        Studies::default().of(&a, None).unwrap(),
+        first,
+        "traced afresh, the same"
+    );
     assert_eq!(
         Study::of(&a, None).unwrap(),
         first,
-        "traced afresh, the same"
+        "traced alone, the same"
     );
     let alone = Blocking::new(a.z, a.rack).unwrap();
     for (criterion, chosen) in &first.choices {

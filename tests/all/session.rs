@@ -228,8 +228,7 @@ fn plates_built_side_by_side_are_those_built_one_after_another() {
         sheets::build_all(&Session::new(&s, Drafting::EXACT), Lang::Ru)
             .unwrap_or_else(|(k, e)| panic!("{k:?}: {e}")),
     );
-    // The contour traced afresh, on the pool.
-    tmm::gears::blocking::Study::forget();
+    // The contour traced afresh (each session its own), on the pool.
     let (tx, rx) = std::sync::mpsc::channel();
     let scene = s.clone();
     std::thread::spawn(move || {

@@ -26,9 +26,9 @@
 
 use super::follower::to_cam;
 use super::inversion::cam_centre;
-use super::motion::{motion, neighbour, points, Motion, Neighbour};
+use super::motion::{motion, neighbour, points, Motion, Neighbour, Point};
 use super::{CamSpec, Follower, RockerSense};
-use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role};
+use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{rotate, Arc, Circle, DVec2, Line, Segment};
 use crate::scale::Scale;
 use std::f64::consts::FRAC_PI_2;
@@ -298,88 +298,114 @@ fn with_dwells(pts: &[super::motion::Point], contacts: &[Contact]) -> Vec<DVec2>
     out
 }
 
-/// The profile on the drawing board at μ_l = `mu`.
-pub fn construct(
-    spec: &CamSpec,
-    r: &FlatRocker,
+/// What every step of the profile's construction reads: the scene's law, the rocker's frame
+/// (L, σ, ψ₀) and the drawing's μ_l.
+struct Board<'a> {
+    spec: &'a CamSpec,
+    r: &'a FlatRocker,
+    frame: (f64, f64, f64),
     mu: Scale,
-    ctx: &Context,
-) -> Result<Construction, FlatRockerError> {
-    let f = frame(spec, r)?;
-    let (arm, sigma, _) = f;
-    let mm = |p: DVec2| p / mu.value();
-    let mut rec = Recorder::in_context("flat-faced rocker: profile by inversion", mu, ctx);
-    let o1 = cam_centre(&mut rec);
-    rec.draw(
-        "base circle r_0",
-        Item::Circle(Circle {
-            center: DVec2::ZERO,
-            radius: mu.to_mm(r.base),
-        }),
-        Role::Construction,
-        &[o1],
-    );
-    // The circle the pivot O₂ runs round in the inverted motion (radius a = O₁O₂).
-    rec.draw(
-        "the circle of the pivot O_2 in the inverted motion",
-        Item::Circle(Circle {
-            center: DVec2::ZERO,
-            radius: mu.to_mm(r.centres),
-        }),
-        Role::Axis,
-        &[o1],
-    );
-    let pts = points(spec);
-    let line_at = |s: f64, phi: f64| {
+}
+
+impl Board<'_> {
+    /// A point of the cam's frame on the drawing, mm.
+    fn mm(&self, p: DVec2) -> DVec2 {
+        p / self.mu.value()
+    }
+
+    /// The face line (its foot and direction, m) at displacement `s` and cam angle `phi`.
+    fn line_at(&self, s: f64, phi: f64) -> (DVec2, DVec2) {
         let psi = psi(
-            f,
+            self.frame,
             Motion {
                 s,
                 ds: 0.0,
                 d2s: 0.0,
             },
         );
-        face_line(r.centres, r.face_offset, psi, phi)
-    };
-    let as_line = |(foot, dir): (DVec2, DVec2)| Line {
-        point: mm(foot),
-        direction: dir,
-    };
-    let mut lines = Vec::with_capacity(pts.len());
-    let mut turned = Vec::with_capacity(pts.len());
-    for (i, p) in pts.iter().enumerate() {
-        rec.set_group(i as u32 + 1);
-        // S at the point as given (the S diagram's ordinate).
-        let s = motion(spec, p.phi, p.after).s;
-        let pivot = to_cam(DVec2::new(r.centres, 0.0), p.phi);
-        let notch = rec.draw(
-            format!("pivot O_2 turned back by φ_{i}"),
-            Item::Arc(Arc::notch(DVec2::ZERO, mm(pivot), ctx.notch_mm)),
+        face_line(self.r.centres, self.r.face_offset, psi, phi)
+    }
+
+    /// A face line on the drawing.
+    fn as_line(&self, (foot, dir): (DVec2, DVec2)) -> Line {
+        Line {
+            point: self.mm(foot),
+            direction: dir,
+        }
+    }
+
+    /// The base circle r₀ and the circle the pivot O₂ runs round in the inverted motion
+    /// (radius a = O₁O₂).
+    fn circles(&self, rec: &mut Recorder, o1: StepId) {
+        rec.draw(
+            "base circle r_0",
+            Item::Circle(Circle {
+                center: DVec2::ZERO,
+                radius: self.mu.to_mm(self.r.base),
+            }),
             Role::Construction,
             &[o1],
         );
-        // The phases' ends numbered outside the circle, as the rays of the inversion are.
-        if p.k == 0 || p.last {
-            rec.label(
-                notch,
-                p.label.clone(),
-                mm(pivot),
-                mm(pivot).normalize_or_zero(),
-            );
-        }
-        turned.push(notch);
-        lines.push(line_at(s, p.phi));
+        rec.draw(
+            "the circle of the pivot O_2 in the inverted motion",
+            Item::Circle(Circle {
+                center: DVec2::ZERO,
+                radius: self.mu.to_mm(self.r.centres),
+            }),
+            Role::Axis,
+            &[o1],
+        );
     }
-    // The neighbouring face line before (`forward` false) or after point i.
-    let neighbour = |i: usize, forward: bool| match neighbour(spec, &pts, i, forward) {
-        Neighbour::Point(j) => lines[j],
-        Neighbour::Dwell { phi, s } => line_at(s, phi),
-    };
-    let mut contacts = Vec::with_capacity(pts.len());
-    for (i, p) in pts.iter().enumerate() {
-        rec.set_group(i as u32 + 1);
-        let (before, after) = (as_line(neighbour(i, false)), as_line(neighbour(i, true)));
-        let this = as_line(lines[i]);
+
+    /// The pivot O₂ turned back by each point's φ (notched on its circle, the phases' ends
+    /// numbered), and the face line there: the lines and the notches.
+    fn turned_back(
+        &self,
+        rec: &mut Recorder,
+        o1: StepId,
+        pts: &[Point],
+        notch_mm: f64,
+    ) -> (Vec<(DVec2, DVec2)>, Vec<StepId>) {
+        let mut lines = Vec::with_capacity(pts.len());
+        let mut turned = Vec::with_capacity(pts.len());
+        for (i, p) in pts.iter().enumerate() {
+            rec.set_group(i as u32 + 1);
+            // S at the point as given (the S diagram's ordinate).
+            let s = motion(self.spec, p.phi, p.after).s;
+            let pivot = self.mm(to_cam(DVec2::new(self.r.centres, 0.0), p.phi));
+            let notch = rec.draw(
+                format!("pivot O_2 turned back by φ_{i}"),
+                Item::Arc(Arc::notch(DVec2::ZERO, pivot, notch_mm)),
+                Role::Construction,
+                &[o1],
+            );
+            // The phases' ends numbered outside the circle, as the rays of the inversion are.
+            if p.k == 0 || p.last {
+                rec.label(notch, p.label.clone(), pivot, pivot.normalize_or_zero());
+            }
+            turned.push(notch);
+            lines.push(self.line_at(s, p.phi));
+        }
+        (lines, turned)
+    }
+
+    /// The neighbouring face line before (`forward` false) or after point `i`.
+    fn neighbour(&self, pts: &[Point], lines: &[(DVec2, DVec2)], i: usize, forward: bool) -> Line {
+        self.as_line(match neighbour(self.spec, pts, i, forward) {
+            Neighbour::Point(j) => lines[j],
+            Neighbour::Dwell { phi, s } => self.line_at(s, phi),
+        })
+    }
+
+    /// The contact of face `i` (`this`) with its neighbours `before` and `after`: the middle
+    /// of its two crossings, the radius of curvature from their spread, the pressure angle.
+    fn contact(
+        &self,
+        rec: &mut Recorder,
+        (i, p): (usize, &Point),
+        [before, this, after]: [Line; 3],
+    ) -> Result<Contact, FlatRockerError> {
+        let mu = self.mu.value();
         let name = format!("face {i}");
         let (q0, _, _) = rec.meet_lines(
             &format!("contact {i}"),
@@ -391,14 +417,15 @@ pub fn construct(
             (&name, &this),
             ("the face after", &after),
         )?;
-        let point = (q0 + q1) * 0.5 * mu.value();
+        let point = (q0 + q1) * 0.5 * mu;
         // The turn between the neighbours' lines (their directions in the cam frame).
         let turn = after
             .direction
             .perp_dot(before.direction)
             .atan2(after.direction.dot(before.direction));
         if turn <= 0.0 {
-            let s1 = motion(spec, p.phi, p.after).ds;
+            let (arm, sigma, _) = self.frame;
+            let s1 = motion(self.spec, p.phi, p.after).ds;
             return Err(FlatRockerError::Outruns {
                 phi_deg: p.phi.to_degrees(),
                 rate: sigma * s1 / arm,
@@ -408,25 +435,58 @@ pub fn construct(
         // the earlier one ahead along the face's direction (the profile runs clockwise in
         // the cam frame, against it): ρ = −2·(q₁ − q₀)·d / (δ_a + δ_b), < 0 where concave.
         let along = (q1 - q0).dot(this.direction);
-        let rho = -2.0 * along * mu.value() / turn;
+        let rho = -2.0 * along * mu / turn;
         // The pressure angle read at the contact: the face's normal against the arm O₂K's
         // perpendicular.
-        let pivot = to_cam(DVec2::new(r.centres, 0.0), p.phi);
+        let pivot = to_cam(DVec2::new(self.r.centres, 0.0), p.phi);
         let arm_dir = (point - pivot).normalize_or_zero();
         let lambda = this.direction.dot(arm_dir).abs().clamp(0.0, 1.0).acos();
-        contacts.push(Contact {
+        Ok(Contact {
             phi: p.phi,
             point,
             rho,
             lambda,
-        });
+        })
+    }
+}
+
+/// The profile on the drawing board at μ_l = `mu`.
+pub fn construct(
+    spec: &CamSpec,
+    r: &FlatRocker,
+    mu: Scale,
+    ctx: &Context,
+) -> Result<Construction, FlatRockerError> {
+    let board = Board {
+        spec,
+        r,
+        frame: frame(spec, r)?,
+        mu,
+    };
+    let mut rec = Recorder::in_context("flat-faced rocker: profile by inversion", mu, ctx);
+    let o1 = cam_centre(&mut rec);
+    board.circles(&mut rec, o1);
+    let pts = points(spec);
+    let (lines, turned) = board.turned_back(&mut rec, o1, &pts, ctx.notch_mm);
+    let mut contacts = Vec::with_capacity(pts.len());
+    for (i, p) in pts.iter().enumerate() {
+        rec.set_group(i as u32 + 1);
+        let (before, after) = (
+            board.neighbour(&pts, &lines, i, false),
+            board.neighbour(&pts, &lines, i, true),
+        );
+        let this = board.as_line(lines[i]);
+        contacts.push(board.contact(&mut rec, (i, p), [before, this, after])?);
     }
     draw_faces(&mut rec, r, mu, &pts, (&lines, &turned), &contacts);
     rec.set_group(0);
     rec.draw(
         "practical profile: envelope of the face lines",
         Item::Polyline {
-            points: with_dwells(&pts, &contacts).into_iter().map(mm).collect(),
+            points: with_dwells(&pts, &contacts)
+                .into_iter()
+                .map(|p| board.mm(p))
+                .collect(),
             closed: true,
         },
         Role::Result,

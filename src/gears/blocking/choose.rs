@@ -79,9 +79,11 @@ impl Blocking {
     /// [`BlockingError::NotFinite`], [`BlockingError::Domain`].
     pub fn place(&self, x: DVec2, hard: Hard) -> Result<Placement, BlockingError> {
         if !(x.x.is_finite() && x.y.is_finite()) {
-            return Err(BlockingError::NotFinite(x.x, x.y));
+            return Err(BlockingError::NotFinite { x1: x.x, x2: x.y });
         }
-        let indices = self.indices(x).ok_or(BlockingError::Domain(x.x, x.y))?;
+        let indices = self
+            .indices(x)
+            .ok_or(BlockingError::Domain { x1: x.x, x2: x.y })?;
         let sides = levels(&self.rack, self.z)
             .into_iter()
             .filter_map(|(kind, limit)| {
@@ -134,15 +136,11 @@ impl Blocking {
         let hard = region.hard;
         let empty = || {
             let (lo, hi) = self.window;
-            BlockingError::Empty(
-                lo.x,
-                hi.x,
-                lo.y,
-                hi.y,
-                hard.sa_min,
-                hard.eps_min,
-                hard.inset,
-            )
+            BlockingError::Empty {
+                x1: [lo.x, hi.x],
+                x2: [lo.y, hi.y],
+                hard,
+            }
         };
         if region.boundary.is_empty() {
             return Err(empty());
@@ -153,7 +151,9 @@ impl Blocking {
             Criterion::EqualSliding { x_sum } => Some(self.equal_sliding(region, x_sum)?),
         };
         let x = x.ok_or_else(empty)?;
-        let indices = self.indices(x).ok_or(BlockingError::Domain(x.x, x.y))?;
+        let indices = self
+            .indices(x)
+            .ok_or(BlockingError::Domain { x1: x.x, x2: x.y })?;
         let mut on: Vec<(Kind, f64)> = self
             .hard_levels(hard)
             .into_iter()
@@ -277,12 +277,19 @@ impl Blocking {
     fn equal_sliding(&self, region: &Contour, x_sum: f64) -> Result<DVec2, BlockingError> {
         let hard = region.hard;
         if !x_sum.is_finite() {
-            return Err(BlockingError::NotFinite(x_sum, x_sum));
+            return Err(BlockingError::NotFinite {
+                x1: x_sum,
+                x2: x_sum,
+            });
         }
         let (lo, hi) = self.window;
         let a = lo.x.max(x_sum - hi.y);
         let b = hi.x.min(x_sum - lo.y);
-        let outside = |m: f64| BlockingError::LineOutside(x_sum, hard.inset, m + hard.inset);
+        let outside = |m: f64| BlockingError::LineOutside {
+            x_sum,
+            inset: hard.inset,
+            deepest: m + hard.inset,
+        };
         if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
             return Err(outside(f64::NEG_INFINITY));
         }

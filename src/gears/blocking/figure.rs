@@ -4,7 +4,7 @@
 use super::study::{level_name, point_label, Study};
 use super::{levels, Kind};
 use crate::construct::{Figure, Item, Label, Role, Step, StepId};
-use crate::geom::{DVec2, Segment};
+use crate::geom::{DVec2, Rect, Segment};
 use crate::scale::{format_sig, Lang, Scale};
 use std::f64::consts::PI;
 
@@ -52,6 +52,11 @@ impl Plane {
     fn to(&self, p: DVec2) -> DVec2 {
         (p - self.lo) * self.per_unit
     }
+    /// The plane's window on the drawing, figure mm: what its curves are clipped to.
+    fn window(&self) -> Rect {
+        Rect::new(DVec2::ZERO, self.size())
+    }
+
     fn size(&self) -> DVec2 {
         (self.hi - self.lo) * self.per_unit
     }
@@ -72,7 +77,7 @@ impl Study {
         // The admissible region's boundary, bold.
         for ring in &self.contour.boundary {
             let ring: Vec<DVec2> = ring.iter().map(|p| plane.to(*p)).collect();
-            for piece in clip_polyline(&ring, size.x, size.y) {
+            for piece in plane.window().polyline_inside(&ring) {
                 steps.push(
                     "the admissible region's boundary".into(),
                     Item::Polyline {
@@ -192,7 +197,7 @@ impl Study {
                 .filter(|cv| cv.kind == *kind && cv.limit == *limit)
                 .flat_map(|cv| {
                     let pts: Vec<DVec2> = cv.points.iter().map(|p| plane.to(*p)).collect();
-                    clip_polyline(&pts, size.x, size.y)
+                    plane.window().polyline_inside(&pts)
                 })
                 .collect();
             pieces.sort_by_key(|p| std::cmp::Reverse(p.len()));
@@ -293,56 +298,6 @@ fn axes(plane: &Plane, lang: Lang, steps: &mut Steps) {
             k += 1;
         }
     }
-}
-
-/// Clip the segment a–b to the rectangle [0, w] × [0, h] (Liang–Barsky).
-fn clip(a: DVec2, b: DVec2, w: f64, h: f64) -> Option<(DVec2, DVec2)> {
-    let d = b - a;
-    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
-    for (p, q) in [(-d.x, a.x), (d.x, w - a.x), (-d.y, a.y), (d.y, h - a.y)] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return None;
-            }
-        } else {
-            let r = q / p;
-            if p < 0.0 {
-                t0 = t0.max(r);
-            } else {
-                t1 = t1.min(r);
-            }
-        }
-    }
-    (t0 <= t1).then(|| (a + d * t0, a + d * t1))
-}
-
-/// The polyline `pts` clipped to [0, w] × [0, h]: its pieces inside.
-fn clip_polyline(pts: &[DVec2], w: f64, h: f64) -> Vec<Vec<DVec2>> {
-    let mut out: Vec<Vec<DVec2>> = Vec::new();
-    let mut cur: Vec<DVec2> = Vec::new();
-    for s in pts.windows(2) {
-        match clip(s[0], s[1], w, h) {
-            Some((a, b)) => {
-                if cur.last().is_none_or(|l| (*l - a).length() > 1e-9) {
-                    if cur.len() >= 2 {
-                        out.push(std::mem::take(&mut cur));
-                    }
-                    cur = vec![a];
-                }
-                cur.push(b);
-            }
-            None => {
-                if cur.len() >= 2 {
-                    out.push(std::mem::take(&mut cur));
-                }
-                cur.clear();
-            }
-        }
-    }
-    if cur.len() >= 2 {
-        out.push(cur);
-    }
-    out
 }
 
 /// The room about `p` (figure mm): its distance to the drawn curves (but the level `skip`),

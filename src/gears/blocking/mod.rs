@@ -40,7 +40,7 @@ pub use choose::{Choice, Criterion, Placement, Side, CHOICE_MARGIN};
 pub use figure::Words;
 pub use indices::{twin_deviation, twin_margin, twin_pair, twin_rho_l, twin_value, Indices};
 pub use plane::{distance_to, inside_rings};
-pub use study::{criterion_tag, point_label, Study, POINT_TAGS};
+pub use study::{criterion_tag, point_label, Studies, Study, POINT_TAGS};
 pub use trace::{twin_check, Contour};
 
 use super::involute::inv;
@@ -132,22 +132,46 @@ pub enum BlockingError {
     #[error("blocking contour: {0}")]
     Gear(#[from] GearError),
     /// A point not finite.
-    #[error("blocking contour: the point ({0}, {1}) is not finite")]
-    NotFinite(f64, f64),
+    #[error("blocking contour: the point ({x1}, {x2}) is not finite")]
+    NotFinite {
+        /// x₁.
+        x1: f64,
+        /// x₂.
+        x2: f64,
+    },
     /// The involute formulas have no value at the point.
-    #[error("blocking contour: the pair has no geometry at x₁ = {0}, x₂ = {1} (no α_w or a tip inside the base circle)")]
-    Domain(f64, f64),
+    #[error("blocking contour: the pair has no geometry at x₁ = {x1}, x₂ = {x2} (no α_w or a tip inside the base circle)")]
+    Domain {
+        /// x₁.
+        x1: f64,
+        /// x₂.
+        x2: f64,
+    },
     /// No point of the plane meets every hard limit.
-    #[error("blocking contour: no point of x₁ ∈ [{0:.3}, {1:.3}], x₂ ∈ [{2:.3}, {3:.3}] meets every hard limit {6} inside (s_a ≥ {4}m, ε_α ≥ {5}, no undercut, no interference)")]
-    Empty(f64, f64, f64, f64, f64, f64, f64),
-    /// The criterion's line misses the admissible region taken `.1` inside its limits: the
-    /// line's x_Σ and its deepest point's margin (−∞: it misses the window).
-    #[error("blocking contour: the line x₁ + x₂ = {0} does not cross the admissible region {1} inside its limits ({deepest})", deepest = deepest(*.2))]
-    LineOutside(f64, f64, f64),
+    #[error("blocking contour: no point of x₁ ∈ [{:.3}, {:.3}], x₂ ∈ [{:.3}, {:.3}] meets every hard limit {} inside (s_a ≥ {}m, ε_α ≥ {}, no undercut, no interference)", .x1[0], .x1[1], .x2[0], .x2[1], .hard.inset, .hard.sa_min, .hard.eps_min)]
+    Empty {
+        /// The plane's window: x₁ from, to.
+        x1: [f64; 2],
+        /// x₂ from, to.
+        x2: [f64; 2],
+        /// The hard limits, and how far inside them.
+        hard: Hard,
+    },
+    /// The criterion's line misses the admissible region taken `inset` inside its limits:
+    /// the line's x_Σ and its deepest point's margin (−∞: it misses the window).
+    #[error("blocking contour: the line x₁ + x₂ = {x_sum} does not cross the admissible region {inset} inside its limits ({words})", words = deepest_words(*.deepest))]
+    LineOutside {
+        /// The line's x₁ + x₂.
+        x_sum: f64,
+        /// How far inside the limits the region was taken.
+        inset: f64,
+        /// Its deepest point's margin inside the limits (−∞: it misses the window).
+        deepest: f64,
+    },
 }
 
 /// How deep inside its limits a line gets, in words.
-fn deepest(margin: f64) -> String {
+fn deepest_words(margin: f64) -> String {
     if margin.is_finite() {
         format!("its deepest point {margin:.3} inside them")
     } else {

@@ -12,11 +12,36 @@ use crate::geom::DVec2;
 use crate::kept::Recent;
 use rayon::prelude::*;
 
-/// The studies [`Study::of`] keeps.
+/// The studies a [`Studies`] keeps.
 const KEPT: usize = 8;
-/// The studies [`Study::of`] keeps: the pair, the criterion asked, the study.
-static STUDIES: Recent<(PairSpec, Option<Criterion>), Result<Study, BlockingError>> =
-    Recent::new(KEPT);
+
+/// The last [`KEPT`] studies made through it, kept by their caller (a batch's variants
+/// mostly share their gears: a store the batch's sessions share traces each pair about
+/// once): the pair, the criterion asked, the study.
+pub struct Studies(Recent<(PairSpec, Option<Criterion>), Result<Study, BlockingError>>);
+
+impl Default for Studies {
+    fn default() -> Self {
+        Self(Recent::new(KEPT))
+    }
+}
+
+impl Studies {
+    /// The study of the pair `spec` with `chosen` ([`Study::of`]): the one kept, else made
+    /// and kept.
+    ///
+    /// # Errors
+    /// Those of [`Study::of`].
+    pub fn of(&self, spec: &PairSpec, chosen: Option<Criterion>) -> Result<Study, BlockingError> {
+        let key = (*spec, chosen);
+        if let Some(study) = self.0.find(|k| *k == key) {
+            return study;
+        }
+        let study = Study::of(spec, chosen);
+        self.0.keep(key, study.clone());
+        study
+    }
+}
 
 /// The contour of a scene's pair: traced, the scene's point placed, the textbook's choices.
 #[derive(Debug, Clone, PartialEq)]
@@ -48,29 +73,12 @@ impl Study {
     /// ε_α, equal sliding on the scene's x_Σ, the greatest x_Σ with s_a ≥ 0.25m — or, of
     /// the kind the scene `chosen` its point by, that criterion as the scene put it.
     ///
-    /// A study is a function of the pair and `chosen` alone, and a class's variants mostly
-    /// share their gears: the last [`KEPT`] studies are kept ([`Recent`]), so a batch traces
-    /// each pair about once.
+    /// A study is a function of the pair and `chosen` alone: a caller that asks for it
+    /// again keeps it ([`Studies`]).
     ///
     /// # Errors
     /// Those of [`Blocking::new`] and [`Blocking::place`].
     pub fn of(spec: &PairSpec, chosen: Option<Criterion>) -> Result<Self, BlockingError> {
-        let key = (*spec, chosen);
-        if let Some(study) = STUDIES.find(|k| *k == key) {
-            return study;
-        }
-        let study = Self::trace_of(spec, chosen);
-        STUDIES.keep(key, study.clone());
-        study
-    }
-
-    /// Forget the studies [`Self::of`] keeps (the bench times each run as a fresh process).
-    pub fn forget() {
-        STUDIES.clear();
-    }
-
-    /// [`Self::of`], traced.
-    fn trace_of(spec: &PairSpec, chosen: Option<Criterion>) -> Result<Self, BlockingError> {
         let b = Blocking::new(spec.z, spec.rack)?;
         let criteria = [
             Criterion::LargestContactRatio,

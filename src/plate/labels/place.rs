@@ -522,31 +522,9 @@ fn written(text: &str, e: &Extent, rect: Rect) -> Placed {
 
 /// Length of the segment `a`–`b` inside `r` (Liang–Barsky clipping).
 pub(super) fn clipped_length(a: DVec2, b: DVec2, r: &Rect) -> f64 {
-    let d = b - a;
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [
-        (-d.x, a.x - r.min.x),
-        (d.x, r.max.x - a.x),
-        (-d.y, a.y - r.min.y),
-        (d.y, r.max.y - a.y),
-    ] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return 0.0;
-            }
-        } else {
-            let t = q / p;
-            if p < 0.0 {
-                t0 = t0.max(t);
-            } else {
-                t1 = t1.min(t);
-            }
-        }
-    }
-    if t1 > t0 {
-        (t1 - t0) * d.length()
-    } else {
-        0.0
+    match r.segment_inside(a, b) {
+        Some((t0, t1)) if t1 > t0 => (t1 - t0) * (b - a).length(),
+        _ => 0.0,
     }
 }
 

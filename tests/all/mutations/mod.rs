@@ -65,19 +65,115 @@ enum Nest {
     Table(usize),
 }
 
+/// The lexer's state over a TOML text: the current table, the keys of the current value,
+/// what it is inside of, and the numbers found so far.
+struct Lexer<'t> {
+    text: &'t str,
+    out: Vec<Number>,
+    table: String,
+    /// How many of each array of tables were opened.
+    counts: Vec<(String, usize)>,
+    /// The keys of the current value: the table's key, then inline tables' keys.
+    keys: Vec<(String, usize)>,
+    nest: Vec<Nest>,
+    word_start: Option<usize>,
+    /// The last significant byte: a number starts a value after `=`, `[` or `,` in an array.
+    last: u8,
+}
+
+impl Lexer<'_> {
+    /// The table header at `i` (`[name]` or `[[name]]`, counted): the end of its line.
+    fn header(&mut self, i: usize) -> usize {
+        let text = self.text;
+        let end = text[i..].find('\n').map_or(text.len(), |k| i + k);
+        let line = text[i..end].trim();
+        if let Some(name) = line.strip_prefix("[[").and_then(|l| l.split("]]").next()) {
+            let name = name.trim().to_string();
+            let n = match self.counts.iter_mut().find(|(n, _)| *n == name) {
+                Some((_, k)) => {
+                    *k += 1;
+                    *k - 1
+                }
+                None => {
+                    self.counts.push((name.clone(), 1));
+                    0
+                }
+            };
+            self.table = format!("{name}[{n}]");
+        } else if let Some(name) = line.strip_prefix('[').and_then(|l| l.split(']').next()) {
+            self.table = name.trim().to_string();
+        }
+        end
+    }
+
+    /// The `=` at `i`: the key before it opens a value at the current depth.
+    fn key(&mut self, i: usize) {
+        let from = self.word_start.unwrap_or(i);
+        let key = self.text[from..i].trim().to_string();
+        let depth = match self.nest.last() {
+            Some(Nest::Table(d)) => *d,
+            _ => 0,
+        };
+        self.keys.truncate(depth);
+        self.keys.push((key, from));
+        self.word_start = None;
+        self.last = b'=';
+    }
+
+    /// The number starting at `i` when it is in value position (recorded with its key
+    /// path): its end.
+    fn number(&mut self, i: usize) -> Option<usize> {
+        let (text, bytes, c) = (self.text, self.text.as_bytes(), self.text.as_bytes()[i]);
+        let last = self.last;
+        let value_position = last == b'=' || last == b'[' || last == b',';
+        let in_array = matches!(self.nest.last(), Some(Nest::Array(_)));
+        let starts_number = c.is_ascii_digit()
+            || ((c == b'-' || c == b'+') && bytes.get(i + 1).is_some_and(|b| b.is_ascii_digit()));
+        if !(value_position && (in_array || last == b'=') && starts_number) {
+            return None;
+        }
+        let end = (i..bytes.len())
+            .find(|&k| !(bytes[k].is_ascii_alphanumeric() || b"._+-:".contains(&bytes[k])))
+            .unwrap_or(bytes.len());
+        let token = text[i..end].replace('_', "");
+        if token.parse::<f64>().is_ok() {
+            let mut path: Vec<&str> = vec![];
+            if !self.table.is_empty() {
+                path.push(&self.table);
+            }
+            path.extend(self.keys.iter().map(|(k, _)| k.as_str()));
+            let mut key = path.join(".");
+            let delete_from = if let Some(Nest::Array(k)) = self.nest.last() {
+                key.push_str(&format!("[{k}]"));
+                i
+            } else {
+                self.keys.last().map_or(i, |(_, from)| *from)
+            };
+            self.out.push(Number {
+                start: i,
+                end,
+                delete_from,
+                key,
+            });
+        }
+        Some(end)
+    }
+}
+
 /// The number literals of a TOML text in value position, with their key paths. A small
 /// lexer: table headers, comments, basic and literal strings, arrays and inline tables.
 fn numbers(text: &str) -> Vec<Number> {
     let bytes = text.as_bytes();
-    let mut out = Vec::new();
-    let mut table = String::new();
-    let mut counts: Vec<(String, usize)> = Vec::new();
-    // The keys of the current value: the table's key, then inline tables' keys.
-    let mut keys: Vec<(String, usize)> = Vec::new();
-    let mut nest: Vec<Nest> = Vec::new();
-    let mut word_start: Option<usize> = None;
-    // The last significant byte: a number starts a value after `=`, `[` or `,` in an array.
-    let mut last = b'\n';
+    let mut lx = Lexer {
+        text,
+        out: Vec::new(),
+        table: String::new(),
+        counts: Vec::new(),
+        keys: Vec::new(),
+        nest: Vec::new(),
+        word_start: None,
+        last: b'\n',
+    };
     let mut i = 0;
     while i < bytes.len() {
         let c = bytes[i];
@@ -88,32 +184,13 @@ fn numbers(text: &str) -> Vec<Number> {
                 }
                 continue;
             }
-            b'\n' if nest.is_empty() => {
-                last = b'\n';
-                word_start = None;
+            b'\n' if lx.nest.is_empty() => {
+                lx.last = b'\n';
+                lx.word_start = None;
             }
             b' ' | b'\t' | b'\r' | b'\n' => {}
-            b'[' if nest.is_empty() && last == b'\n' => {
-                let end = text[i..].find('\n').map_or(text.len(), |k| i + k);
-                let line = text[i..end].trim();
-                if let Some(name) = line.strip_prefix("[[").and_then(|l| l.split("]]").next()) {
-                    let name = name.trim().to_string();
-                    let n = match counts.iter_mut().find(|(n, _)| *n == name) {
-                        Some((_, k)) => {
-                            *k += 1;
-                            *k - 1
-                        }
-                        None => {
-                            counts.push((name.clone(), 1));
-                            0
-                        }
-                    };
-                    table = format!("{name}[{n}]");
-                } else if let Some(name) = line.strip_prefix('[').and_then(|l| l.split(']').next())
-                {
-                    table = name.trim().to_string();
-                }
-                i = end;
+            b'[' if lx.nest.is_empty() && lx.last == b'\n' => {
+                i = lx.header(i);
                 continue;
             }
             b'"' | b'\'' => {
@@ -124,85 +201,43 @@ fn numbers(text: &str) -> Vec<Number> {
                     }
                     i += 1;
                 }
-                last = c;
+                lx.last = c;
             }
-            b'=' => {
-                let from = word_start.unwrap_or(i);
-                let key = text[from..i].trim().to_string();
-                let depth = match nest.last() {
-                    Some(Nest::Table(d)) => *d,
-                    _ => 0,
-                };
-                keys.truncate(depth);
-                keys.push((key, from));
-                word_start = None;
-                last = c;
-            }
+            b'=' => lx.key(i),
             b'[' => {
-                nest.push(Nest::Array(0));
-                last = c;
+                lx.nest.push(Nest::Array(0));
+                lx.last = c;
             }
             b'{' => {
-                nest.push(Nest::Table(keys.len()));
-                last = c;
+                lx.nest.push(Nest::Table(lx.keys.len()));
+                lx.last = c;
             }
             b']' | b'}' => {
-                nest.pop();
-                last = c;
+                lx.nest.pop();
+                lx.last = c;
             }
             b',' => {
-                if let Some(Nest::Array(k)) = nest.last_mut() {
+                if let Some(Nest::Array(k)) = lx.nest.last_mut() {
                     *k += 1;
                 }
-                word_start = None;
-                last = c;
+                lx.word_start = None;
+                lx.last = c;
             }
             _ => {
-                let value_position = last == b'=' || last == b'[' || last == b',';
-                let in_array = matches!(nest.last(), Some(Nest::Array(_)));
-                let starts_number = c.is_ascii_digit()
-                    || ((c == b'-' || c == b'+')
-                        && bytes.get(i + 1).is_some_and(|b| b.is_ascii_digit()));
-                if value_position && (in_array || last == b'=') && starts_number {
-                    let end = (i..bytes.len())
-                        .find(|&k| {
-                            !(bytes[k].is_ascii_alphanumeric() || b"._+-:".contains(&bytes[k]))
-                        })
-                        .unwrap_or(bytes.len());
-                    let token = text[i..end].replace('_', "");
-                    if token.parse::<f64>().is_ok() {
-                        let mut path: Vec<&str> = vec![];
-                        if !table.is_empty() {
-                            path.push(&table);
-                        }
-                        path.extend(keys.iter().map(|(k, _)| k.as_str()));
-                        let mut key = path.join(".");
-                        let delete_from = if let Some(Nest::Array(k)) = nest.last() {
-                            key.push_str(&format!("[{k}]"));
-                            i
-                        } else {
-                            keys.last().map_or(i, |(_, from)| *from)
-                        };
-                        out.push(Number {
-                            start: i,
-                            end,
-                            delete_from,
-                            key,
-                        });
-                    }
+                if let Some(end) = lx.number(i) {
                     i = end;
-                    last = b'0';
+                    lx.last = b'0';
                     continue;
                 }
-                if word_start.is_none() {
-                    word_start = Some(i);
+                if lx.word_start.is_none() {
+                    lx.word_start = Some(i);
                 }
-                last = c;
+                lx.last = c;
             }
         }
         i += 1;
     }
-    out
+    lx.out
 }
 
 /// The text without `[from, to)` and one comma beside it (the following one, else the

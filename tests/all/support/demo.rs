@@ -43,6 +43,14 @@ pub fn demo_mechanism(mu_l: Scale) -> Figure {
     let c = v(b.x + (110f64.powi(2) - b.y * b.y).sqrt(), 0.0);
     let s2 = (b + c) * 0.5;
     let mut s = Steps(Vec::new());
+    mechanism_items(&mut s, [a, b, c, s2]);
+    marking_items(&mut s, [a, b, c, s2]);
+    s.figure("План механизма", mu_l)
+}
+
+/// The mechanism's own items: the axis, the crank's circle, a notch, the guide, the links,
+/// the joints (`[A, B, C, S₂]` its points).
+fn mechanism_items(s: &mut Steps, [a, b, c, s2]: [DVec2; 4]) {
     s.add(
         Item::Segment(Segment::new(v(-50.0, 0.0), v(170.0, 0.0))),
         Role::Axis,
@@ -100,8 +108,13 @@ pub fn demo_mechanism(mu_l: Scale) -> Figure {
         },
         Role::Given,
         Some(("C", c, v(1.0, 1.0))),
-    )
-    .add(
+    );
+}
+
+/// The marks on the mechanism: points, vectors, an angle, a dimension, polylines, a curve
+/// and a text (`[A, B, C, S₂]` its points).
+fn marking_items(s: &mut Steps, [a, b, c, s2]: [DVec2; 4]) {
+    s.add(
         Item::Point(s2),
         Role::Result,
         Some(("S_2", s2, v(0.0, -1.0))),
@@ -183,7 +196,6 @@ pub fn demo_mechanism(mu_l: Scale) -> Figure {
         Role::Dimension,
         Some(("ω_1 = 10 рад/с, l_{AB} = 0,1 м", v(60.0, 60.0), DVec2::ZERO)),
     );
-    s.figure("План механизма", mu_l)
 }
 
 /// A velocity plan: the pole and vectors with subscripted and superscripted labels.

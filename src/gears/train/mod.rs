@@ -14,6 +14,15 @@
 
 use thiserror::Error;
 
+pub(super) mod layout;
+mod rank;
+pub(super) mod study;
+#[cfg(test)]
+pub(super) mod tests;
+
+pub use layout::Closing;
+pub use study::{train_study, PlanetarySpec, TrainSeed, TrainStudy};
+
 /// A wheel of a train.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Wheel {

@@ -1,12 +1,12 @@
 //! Tests of the gear trains: Willis, the stages and the velocity triangles against the seeds'
 //! worked examples, the assembly condition, the first stage at a required ratio.
 
-use super::tests::ctx;
-use super::*;
+use crate::gears::tests::ctx;
+use crate::gears::*;
 use proptest::prelude::*;
 
 /// A train from (shaft, wheel name, z, internal) and meshes by wheel names.
-pub(super) fn train(
+pub(in crate::gears) fn train(
     wheels: &[(&str, &str, u32, bool)],
     meshes: &[(&str, &str)],
     io: (&str, &str),
@@ -110,7 +110,7 @@ fn seed000_reducer_by_willis_stages_and_triangles() {
 
 /// PZ2 example 1 as printed (L546): sun 1, satellite block 2–3, wheel 4 fixed, carrier H
 /// carrying wheel 5; 5–6–7 on fixed axes, 7 internal.
-pub(super) fn pz2_example_1() -> Train {
+pub(in crate::gears) fn pz2_example_1() -> Train {
     train(
         &[
             ("A", "1", 88, false),
@@ -132,7 +132,7 @@ pub(super) fn pz2_example_1() -> Train {
 /// PZ2 example 2 as printed (L588, L603–L607): 1–2 on fixed axes into the sun 3 (2 and 3 on
 /// one shaft), the satellite block 4–5, wheel 6 fixed, the carrier H out; every mesh
 /// external.
-pub(super) fn pz2_example_2() -> Train {
+pub(in crate::gears) fn pz2_example_2() -> Train {
     train(
         &[
             ("A", "1", 13, false),
@@ -309,7 +309,7 @@ fn blocks_fit(za: u32, a_ring: bool, zg: u32, zf: u32, zb: u32, b_ring: bool, k:
 }
 
 /// PZ2 example 3's James stage alone: sun 3 in, satellite 4, ring 5 fixed, carrier out.
-pub(super) fn pz2_james() -> Train {
+pub(in crate::gears) fn pz2_james() -> Train {
     train(
         &[
             ("A", "3", 20, false),

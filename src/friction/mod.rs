@@ -66,7 +66,7 @@ pub fn friction_angle(f: f64) -> f64 {
 /// `None` when `normal` is zero or not finite, or `f` is negative or not finite.
 ///
 /// ```
-/// use tmm::forces::friction::tilt_reaction;
+/// use tmm::friction::tilt_reaction;
 /// use tmm::geom::DVec2;
 /// let r = tilt_reaction(DVec2::new(0.0, 100.0), DVec2::new(1.0, 0.0), 0.1).unwrap();
 /// assert!((r - DVec2::new(-10.0, 100.0)).length() < 1e-12);
@@ -96,7 +96,7 @@ pub fn tilt_reaction(normal: DVec2, velocity: DVec2, f: f64) -> Option<DVec2> {
 /// not finite.
 ///
 /// ```
-/// use tmm::forces::friction::friction_circle_tangent;
+/// use tmm::friction::friction_circle_tangent;
 /// use tmm::geom::DVec2;
 /// // A shaft turning counter-clockwise, its load carried upward: the reaction passes left
 /// // of the centre, its moment clockwise.

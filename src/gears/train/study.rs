@@ -3,10 +3,9 @@
 //! differential) and the velocity triangles (the construction), with their rows; the notes
 //! live in `train_notes`.
 
-use super::rows;
-use super::train::{Train, TrainError};
-use super::train_layout::Closing;
-use super::triangles;
+use super::layout::Closing;
+use super::{Train, TrainError};
+use crate::gears::{rows, triangles};
 
 /// What a source prints for the train (`[planetary.seed]`), checked in the notes.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

@@ -3,7 +3,7 @@
 //! holds the input at rest: u = 0) from links left free (the input turning does not fix
 //! them).
 
-use super::train::{Train, TrainError};
+use super::{Train, TrainError};
 
 /// A basis of the null space of the `rows` (each `n` long), by reduced row echelon form with
 /// partial pivoting; a pivot below `1e-12` of the largest entry counts as zero.

@@ -4,7 +4,7 @@
 //! tooth sums do not close (seed 002 PZ2 examples 1 and 2: z₁ + z₂ = 136 against
 //! z₃ + z₄ = 48) — the datum the source leaves out, taken so that the train can be drawn.
 
-use super::train::{Train, TrainError};
+use super::{Train, TrainError};
 
 /// A satellite's mesh with a central wheel taken at the module that brings the central wheel
 /// onto the carrier's axis ([`Train::closing`]).
@@ -24,7 +24,7 @@ pub struct Closing {
 
 /// The teeth across a mesh's centre distance a = m·teeth/2: the sum of an external mesh, the
 /// ring's less the other wheel's of an internal one (0 or less: no centre distance).
-pub(super) fn teeth_across(train: &Train, x: usize, y: usize) -> f64 {
+pub(in crate::gears) fn teeth_across(train: &Train, x: usize, y: usize) -> f64 {
     let (wx, wy) = (&train.wheels[x], &train.wheels[y]);
     match (wx.internal, wy.internal) {
         (true, _) => wx.z - wy.z,
