@@ -3,6 +3,14 @@
 
 use std::fmt::Write as _;
 
+/// The acceleration of gravity the course computes weights with (G = m·g), m/s²: the
+/// textbooks' 9,81 (seed 001), the default of `[forces] g`.
+pub const G: f64 = 9.81;
+
+/// One kilogram-force, N: a kilogram under the standard gravity 9,80665 m/s² (the unit the
+/// older textbooks give forces and moments in, read in a seed's values and by the audit).
+pub const KGF: f64 = 9.806_65;
+
 /// The label language of a plate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Lang {

@@ -2,8 +2,7 @@
 //! report's) with the units of its kind a table may carry instead (`mm` for a length, `rpm`
 //! for an angular velocity, `kgf` for a force, in Latin or Cyrillic letters).
 
-/// The standard acceleration of gravity: 1 kgf = 9.80665 N.
-const G: f64 = 9.806_65;
+use crate::scale::KGF;
 
 /// A unit of one kind: its name (as the audit writes it) and its factor to the SI unit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -27,17 +26,17 @@ pub fn kind(si: &str) -> &'static [Unit] {
     const K2: &[Unit] = &[u("m/s^2", 1.0), u("mm/s^2", 1e-3), u("cm/s^2", 1e-2)];
     const K3: &[Unit] = &[u("rad/s", 1.0), u("rpm", PI / 30.0), u("deg/s", PI / 180.0)];
     const K4: &[Unit] = &[u("rad/s^2", 1.0), u("deg/s^2", PI / 180.0)];
-    const K5: &[Unit] = &[u("N", 1.0), u("kN", 1e3), u("kgf", G)];
+    const K5: &[Unit] = &[u("N", 1.0), u("kN", 1e3), u("kgf", KGF)];
     const K6: &[Unit] = &[
         u("N*m", 1.0),
         u("kN*m", 1e3),
-        u("kgf*m", G),
+        u("kgf*m", KGF),
         u("N*mm", 1e-3),
     ];
     const K7: &[Unit] = &[u("kg", 1.0), u("g", 1e-3)];
     const K8: &[Unit] = &[u("kg*m", 1.0), u("kg*mm", 1e-3), u("g*mm", 1e-6)];
-    const K9: &[Unit] = &[u("kg*m^2", 1.0), u("kgf*m*s^2", G)];
-    const K10: &[Unit] = &[u("J", 1.0), u("kJ", 1e3), u("kgf*m", G)];
+    const K9: &[Unit] = &[u("kg*m^2", 1.0), u("kgf*m*s^2", KGF)];
+    const K10: &[Unit] = &[u("J", 1.0), u("kJ", 1e3), u("kgf*m", KGF)];
     const K11: &[Unit] = &[u("W", 1.0), u("kW", 1e3)];
     const K12: &[Unit] = &[u("rad", 1.0), u("deg", PI / 180.0)];
     const K13: &[Unit] = &[u("deg", 1.0), u("rad", 180.0 / PI)];
@@ -135,10 +134,10 @@ mod tests {
         assert_eq!(normalise("кг·м²"), "kg*m^2");
         assert_eq!(normalise("Н·м"), "N*m");
         assert_eq!(normalise("°"), "deg");
-        assert_eq!(find("N", "кгс").map(|u| u.factor), Some(G));
+        assert_eq!(find("N", "кгс").map(|u| u.factor), Some(KGF));
         assert_eq!(find("m", "мм").map(|u| u.factor), Some(1e-3));
         assert_eq!(find("m", "kgf"), None);
-        assert_eq!(any("кгс").map(|u| u.factor), Some(G));
+        assert_eq!(any("кгс").map(|u| u.factor), Some(KGF));
         assert_eq!(any("furlong"), None);
         // Every kind is reachable.
         assert!(SI.iter().all(|si| !kind(si).is_empty()));

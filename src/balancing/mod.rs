@@ -27,7 +27,7 @@ mod rows;
 mod tests;
 
 pub use construct::{balance, Balancing, Closing};
-pub use rows::{inertia_force, inertia_notes, w4_erratum, COURSE_G, W4};
+pub use rows::{inertia_force, inertia_notes, w4_erratum, W4};
 
 use crate::geom::DVec2;
 use crate::scale::Scale;
@@ -171,9 +171,6 @@ pub enum BalancingError {
         /// The size it was to draw.
         size: f64,
     },
-    /// The tolerances of the figures cannot be set up.
-    #[error("balancing: tolerances: {0}")]
-    Tolerances(String),
 }
 
 /// The main vector Σ mᵢρᵢ of the static moments of `masses`, kg·m (the main vector of their

@@ -8,11 +8,8 @@ use super::{
 };
 use crate::check::{Key, Method, Row, Symbol};
 use crate::geom::wrap_pi;
-use crate::scale::{format_sig, Lang};
+use crate::scale::{format_sig, Lang, G};
 use std::f64::consts::PI;
-
-/// The acceleration of gravity of the course's examples, m/s² (seed 001 uses 9,81).
-pub const COURSE_G: f64 = 9.81;
 
 /// A row of the whole scene, by the polygon method.
 fn row(symbol: Symbol, subject: &str, graphical: f64, analytic: f64, scale: f64) -> Row {
@@ -179,7 +176,7 @@ pub fn inertia_notes(masses: &[Mass], omega: f64) -> Vec<String> {
         .enumerate()
         .map(|(i, m)| {
             let p = inertia_force(m, omega);
-            let g = m.mass * COURSE_G;
+            let g = m.mass * G;
             format!(
                 "balancing: m{} = {} kg at ρ = {} m, ω = {} rad/s: inertia force P = m·ω²·ρ = {} N; \
                  weight G = m·g = {} N (g = {} m/s²); P/G = ω²·ρ/g = {}",
@@ -189,7 +186,7 @@ pub fn inertia_notes(masses: &[Mass], omega: f64) -> Vec<String> {
                 num(omega),
                 num(p),
                 num(g),
-                num(COURSE_G),
+                num(G),
                 num(p / g)
             )
         })
@@ -220,7 +217,7 @@ pub const W4: (Mass, f64) = (
 pub fn w4_erratum() -> String {
     let (ball, omega) = W4;
     let p = inertia_force(&ball, omega);
-    let g = ball.mass * COURSE_G;
+    let g = ball.mass * G;
     let num = |x: f64| format_sig(x, 4, Lang::En);
     format!(
         "balancing: erratum of seed 001 (lecture 19, W4: m = {} kg, l = {} m, ω = {} 1/s): its \
@@ -230,7 +227,7 @@ pub fn w4_erratum() -> String {
         num(ball.radius),
         num(omega),
         num(p),
-        num(COURSE_G),
+        num(G),
         num(p),
         num(g),
         num(p / g)

@@ -110,7 +110,7 @@ fn w4_ball_inertia_force_is_900_n_and_917_times_its_weight() {
     let (ball, omega) = W4;
     let p = inertia_force(&ball, omega);
     assert!(close(p, 900.0, 1e-12), "{p}");
-    let ratio = p / (ball.mass * COURSE_G);
+    let ratio = p / (ball.mass * crate::scale::G);
     assert!((ratio - 917.43).abs() < 0.01, "{ratio}");
     assert!((ratio - 900.0).abs() > 10.0);
     let notes = inertia_notes(&[ball], omega);

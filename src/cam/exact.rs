@@ -9,7 +9,7 @@ use super::extremum::{checked_pieces, max_over, pieces};
 use super::follower::{rocker_of, Kin, Placement};
 use super::motion::{motion, Motion};
 use super::{CamSpec, Closure};
-use crate::geom::DVec2;
+use crate::geom::{golden_section, DVec2, GoldenRule, Tie};
 use std::f64::consts::FRAC_PI_2;
 
 /// Samples of each moving phase the whole-cycle minimisations use (plus every break).
@@ -137,17 +137,14 @@ pub fn min_radius_free(spec: &CamSpec) -> (f64, f64) {
         }
     }
     let h = 2.0 * span / steps as f64;
-    let (mut a, mut b) = (best_e - h, best_e + h);
-    let g = 0.618_033_988_749_894_9;
-    for _ in 0..60 {
-        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
-        if r(x1) < r(x2) {
-            b = x2;
-        } else {
-            a = x1;
-        }
-    }
-    let e = 0.5 * (a + b);
+    // 60 steps, both points afresh each step, the bracket's middle taken.
+    let rule = GoldenRule {
+        steps: 60,
+        tie: Tie::Upper,
+        fresh: true,
+    };
+    let end = golden_section(best_e - h, best_e + h, rule, |_, _| false, |e| -r(e));
+    let e = 0.5 * (end.lo + end.hi);
     let v = r(e);
     if v < best_r {
         (v, e)

@@ -19,7 +19,8 @@
 //! the free body's equations (forces along and across, moments), its locking angle found by
 //! bisection where the system's force P stops being finite and positive.
 
-use crate::geom::{bracketed_root, solve_linear};
+use crate::geom::{bisect, bracketed_root, solve_linear, Midpoint};
+use std::convert::Infallible;
 use std::f64::consts::FRAC_PI_2;
 
 /// A translating follower's guide.
@@ -156,18 +157,23 @@ pub fn rocker_equilibrium(m: f64, lambda: f64, p: &Pivot) -> Option<f64> {
 /// The angle in (0, π/2) where `moves` turns false (the follower jams), by bisection to
 /// `1e-13` rad; `None` when it moves at every angle or at none.
 pub fn locking_by_bisection(moves: impl Fn(f64) -> bool) -> Option<f64> {
-    let (mut lo, mut hi) = (0.0, FRAC_PI_2);
+    let (lo, hi) = (0.0, FRAC_PI_2);
     if !moves(lo) || moves(hi - 1e-12) {
         return None;
     }
-    while hi - lo > 1e-13 {
-        let mid = 0.5 * (lo + hi);
-        if moves(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
+    let Ok((lo, hi)) = bisect(
+        lo,
+        hi,
+        200,
+        |lo, hi| hi - lo <= 1e-13,
+        |mid| {
+            Ok::<_, Infallible>(if moves(mid) {
+                Midpoint::First
+            } else {
+                Midpoint::Second
+            })
+        },
+    );
     Some(0.5 * (lo + hi))
 }
 

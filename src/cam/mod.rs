@@ -261,9 +261,6 @@ pub enum CamError {
         /// The size, SI.
         size: f64,
     },
-    /// The tolerances of the figures cannot be set up.
-    #[error("cam: tolerances: {0}")]
-    Tolerances(String),
     /// The flat-faced rocker cannot be made (boxed: a construction's error is large).
     #[error(transparent)]
     FlatRocker(Box<flat_rocker::FlatRockerError>),

@@ -15,7 +15,7 @@
 
 use super::reduce::Reducer;
 use super::DynamicsError;
-use crate::geom::bracketed_root;
+use crate::geom::{bracketed_root, golden_section, GoldenRule, Tie};
 use std::f64::consts::TAU;
 
 /// Panels of the cycle (at most 0.5° each).
@@ -211,29 +211,15 @@ impl Cycle {
                 k = i;
             }
         }
-        let (mut a, mut b) = (self.psi[k.saturating_sub(1)], self.psi[(k + 1).min(n)]);
-        let r = (5f64.sqrt() - 1.0) / 2.0;
-        let mut c = b - r * (b - a);
-        let mut d = a + r * (b - a);
-        let (mut fc, mut fd) = (s * g(c), s * g(d));
-        for _ in 0..80 {
-            if fc > fd {
-                b = d;
-                d = c;
-                fd = fc;
-                c = b - r * (b - a);
-                fc = s * g(c);
-            } else {
-                a = c;
-                c = d;
-                fc = fd;
-                d = a + r * (b - a);
-                fd = s * g(d);
-            }
-            if b - a < 1e-13 {
-                break;
-            }
-        }
+        let (a, b) = (self.psi[k.saturating_sub(1)], self.psi[(k + 1).min(n)]);
+        let narrow = |a: f64, b: f64| b - a < 1e-13;
+        let rule = GoldenRule {
+            steps: 80,
+            tie: Tie::Upper,
+            fresh: false,
+        };
+        let end = golden_section(a, b, rule, narrow, |x| s * g(x));
+        let [(c, fc), (d, fd)] = end.inner;
         let (p, v) = if fc > fd { (c, fc) } else { (d, fd) };
         if v >= best {
             (p, s * v)

@@ -3,7 +3,7 @@
 //! toggle or dead position). Diagnosis only: neither route's values come from here.
 
 use super::twin::{pairs, PairKind};
-use crate::geom::DVec2;
+use crate::geom::{smallest_pivot, DVec2};
 use crate::linkage::{Pose, Program};
 
 /// The name of the group that link `link` belongs to, as the polygons title it (`group 2
@@ -77,42 +77,13 @@ pub fn singular_group(prog: &Program, pose: &Pose) -> Option<String> {
                 }
             }
         }
-        let measure = smallest_pivot(a);
+        let measure = smallest_pivot(a.iter().map(|r| r.to_vec()).collect());
         if measure <= 1e-9 && worst.as_ref().is_none_or(|(w, _)| measure < *w) {
             let name = format!("group {} (links {}, {})", group + 1, i, j);
             worst = Some((measure, name));
         }
     }
     worst.map(|(_, name)| name)
-}
-
-/// The smallest pivot of Gaussian elimination with partial pivoting, relative to the
-/// largest coefficient (0: singular).
-fn smallest_pivot(mut a: [[f64; 6]; 6]) -> f64 {
-    let big = a.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
-    if !(big > 0.0 && big.is_finite()) {
-        return 0.0;
-    }
-    let mut least = f64::INFINITY;
-    for c in 0..6 {
-        let p = (c..6)
-            .max_by(|&x, &y| a[x][c].abs().total_cmp(&a[y][c].abs()))
-            .unwrap_or(c);
-        a.swap(c, p);
-        let pivot = a[c][c];
-        least = least.min(pivot.abs() / big);
-        if pivot == 0.0 {
-            return 0.0;
-        }
-        let (top, rest) = a.split_at_mut(c + 1);
-        for row in rest {
-            let f = row[c] / pivot;
-            for (x, p) in row[c..].iter_mut().zip(&top[c][c..]) {
-                *x -= f * p;
-            }
-        }
-    }
-    least
 }
 
 #[cfg(test)]

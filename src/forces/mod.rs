@@ -28,7 +28,7 @@ mod spec;
 mod tests;
 mod twin;
 
-pub use spec::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke, G_STANDARD};
+pub use spec::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke};
 
 pub use error::ForceError;
 pub use indicator::Indicator;

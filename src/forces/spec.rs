@@ -5,9 +5,6 @@
 use crate::geom::DVec2;
 use crate::scale::Scale;
 
-/// Standard gravity, m/s².
-pub const G_STANDARD: f64 = 9.81;
-
 /// The mass properties of one link.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LinkMass {

@@ -17,7 +17,7 @@ const WELL: f64 = 1e-2;
 
 fn spec(masses: &[(f64, f64)], f5: (f64, f64), gear: Option<f64>) -> ForceSpec {
     ForceSpec {
-        g: G_STANDARD,
+        g: crate::scale::G,
         gravity_dir: -std::f64::consts::FRAC_PI_2,
         positions: vec!["1".into()],
         scale_f: None,

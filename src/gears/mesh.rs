@@ -331,35 +331,30 @@ fn practical_line(
     o: [DVec2; 2],
 ) -> Result<([DVec2; 2], [StepId; 2]), GearError> {
     let mm = |v: f64| v / mu;
-    let cons = |e: crate::construct::ConstructionError| GearError::Construction(e.to_string());
     let [o1, o2] = o;
-    let line = Line::new(p, d).ok_or_else(|| GearError::Construction("N–N".into()))?;
-    let (b1, _, b1id) = rec
-        .meet_line_circle(
-            "B₁",
-            ("N–N", &line),
-            Compass {
-                name: "O_2",
-                center: o2,
-                radius: mm(pair.ra[1]),
-            },
-            Pick::Backward,
-        )
-        .map_err(cons)?;
+    let line = Line::new(p, d).ok_or(GearError::LineOfAction)?;
+    let (b1, _, b1id) = rec.meet_line_circle(
+        "B₁",
+        ("N–N", &line),
+        Compass {
+            name: "O_2",
+            center: o2,
+            radius: mm(pair.ra[1]),
+        },
+        Pick::Backward,
+    )?;
     rec.label(b1id, "B_1", b1, DVec2::new(0.6, -1.0));
     rec.keep_label_within(b1id, NAME_WITHIN_MM);
-    let (b2, _, b2id) = rec
-        .meet_line_circle(
-            "B₂",
-            ("N–N", &line),
-            Compass {
-                name: "O_1",
-                center: o1,
-                radius: mm(pair.ra[0]),
-            },
-            Pick::Forward,
-        )
-        .map_err(cons)?;
+    let (b2, _, b2id) = rec.meet_line_circle(
+        "B₂",
+        ("N–N", &line),
+        Compass {
+            name: "O_1",
+            center: o1,
+            radius: mm(pair.ra[0]),
+        },
+        Pick::Forward,
+    )?;
     rec.label(b2id, "B_2", b2, DVec2::new(-0.6, 1.0));
     rec.keep_label_within(b2id, NAME_WITHIN_MM);
     rec.draw(

@@ -170,9 +170,31 @@ pub enum GearError {
         /// The size, m.
         size: f64,
     },
-    /// The construction failed.
+    /// A step of the meshing construction cannot be carried out (boxed: a construction's
+    /// error is large).
     #[error("gears: {0}")]
-    Construction(String),
+    Construction(Box<crate::construct::ConstructionError>),
+    /// The line of action N–N has no direction (the pole's normal is zero).
+    #[error("gears: N–N")]
+    LineOfAction,
+    /// The undercut cut from a generated tooth cannot be hatched.
+    #[error("gears: the undercut's hatching: {0}")]
+    UndercutHatching(#[from] crate::geom::HatchError),
+    /// The planetary train cannot be solved or drawn (boxed: a train's error is large).
+    #[error("gears: {0}")]
+    Train(Box<TrainError>),
+}
+
+impl From<crate::construct::ConstructionError> for GearError {
+    fn from(e: crate::construct::ConstructionError) -> Self {
+        Self::Construction(Box::new(e))
+    }
+}
+
+impl From<TrainError> for GearError {
+    fn from(e: TrainError) -> Self {
+        Self::Train(Box::new(e))
+    }
 }
 
 /// The round μ_l drawing `size` (m) about `preferred_mm` long.
@@ -280,7 +302,7 @@ pub fn study(
         })
         .collect::<Result<Vec<_>, GearError>>()?;
     let train = match &spec.planetary {
-        Some(p) => Some(train_study(p, ctx).map_err(|e| GearError::Construction(e.to_string()))?),
+        Some(p) => Some(train_study(p, ctx)?),
         None => None,
     };
     // The contour is of the pair's tooth numbers and rack; a pair too odd for it (its

@@ -14,7 +14,8 @@
 
 use super::involute::{inv, involute_point, origin_angle, pressure_angle, thickness_at};
 use super::GearError;
-use crate::geom::{rotate, wrap_pi, DVec2};
+use crate::geom::{bisect, rotate, wrap_pi, DVec2, Midpoint};
+use std::convert::Infallible;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// A basic rack (исходный контур): profile angle, addendum and clearance coefficients and the
@@ -370,21 +371,26 @@ impl Cutting {
         // so each end is a bisection on it. (With a small profile angle the flank's end q_j
         // lies many pitch radii out, where the far branches cross the involute again.)
         let leaves = |radius: f64| {
-            let (mut out, mut inside) = (st.q_j, st.q_bottom);
+            let (out, inside) = (st.q_j, st.q_bottom);
             if self.trochoid_at(out).length() < radius {
                 return out;
             }
             if self.trochoid_at(inside).length() >= radius {
                 return inside;
             }
-            for _ in 0..200 {
-                let mid = 0.5 * (out + inside);
-                if self.trochoid_at(mid).length() >= radius {
-                    out = mid;
-                } else {
-                    inside = mid;
-                }
-            }
+            let Ok((out, _)) = bisect(
+                out,
+                inside,
+                200,
+                |_, _| false,
+                |mid| {
+                    Ok::<_, Infallible>(if self.trochoid_at(mid).length() >= radius {
+                        Midpoint::First
+                    } else {
+                        Midpoint::Second
+                    })
+                },
+            );
             out
         };
         let (a, b) = (leaves(self.ra), leaves(rb));
@@ -398,18 +404,14 @@ impl Cutting {
             };
             if let Some((q0, v0)) = prev {
                 if (v0 < 0.0) != (v < 0.0) {
-                    let (mut lo, mut hi) = (q0, q);
                     let s0 = v0 < 0.0;
-                    for _ in 0..200 {
-                        let mid = 0.5 * (lo + hi);
-                        match g(mid) {
-                            Some(gm) if (gm < 0.0) == s0 => lo = mid,
-                            _ => hi = mid,
-                        }
-                        if hi - lo <= 1e-17 * self.module.max(hi.abs()) {
-                            break;
-                        }
-                    }
+                    let narrow = |lo: f64, hi: f64| hi - lo <= 1e-17 * self.module.max(hi.abs());
+                    let Ok((lo, hi)) = bisect(q0, q, 200, narrow, |mid| {
+                        Ok::<_, Infallible>(match g(mid) {
+                            Some(gm) if (gm < 0.0) == s0 => Midpoint::First,
+                            _ => Midpoint::Second,
+                        })
+                    });
                     let qf = 0.5 * (lo + hi);
                     let p = self.trochoid_at(qf);
                     return (p, self.flank_state(p.length()), qf);
@@ -435,18 +437,23 @@ impl Cutting {
         }
         // Down the fillet from the junction (qf) to the root (q_bottom) the radius falls.
         let off = |q: f64| self.trochoid_at(q).length() - rho;
-        let (mut hi, mut lo) = (qf, self.states().q_bottom);
+        let (hi, lo) = (qf, self.states().q_bottom);
         if off(hi) < 0.0 || off(lo) > 0.0 {
             return None;
         }
-        for _ in 0..100 {
-            let mid = 0.5 * (hi + lo);
-            if off(mid) >= 0.0 {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
+        let Ok((hi, lo)) = bisect(
+            hi,
+            lo,
+            100,
+            |_, _| false,
+            |mid| {
+                Ok::<_, Infallible>(if off(mid) >= 0.0 {
+                    Midpoint::First
+                } else {
+                    Midpoint::Second
+                })
+            },
+        );
         let p = self.trochoid_at(0.5 * (hi + lo));
         Some(2.0 * rho * p.x.atan2(p.y))
     }
@@ -510,21 +517,24 @@ pub fn x_for_tip(z: u32, rack: &BasicRack, sa_min: f64) -> Option<f64> {
         let c = Cutting::alone(1.0, z, x, *rack).ok()?;
         Some(c.sa() - sa_min)
     };
-    let (mut lo, mut hi) = (-1.0, 3.0);
+    let (lo, hi) = (-1.0, 3.0);
     let (flo, fhi) = (sa(lo)?, sa(hi)?);
     if flo < 0.0 || fhi > 0.0 {
         return None;
     }
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if sa(mid)? > 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-        if hi - lo < 1e-15 {
-            break;
-        }
-    }
+    let (lo, hi) = bisect(
+        lo,
+        hi,
+        200,
+        |lo, hi| hi - lo < 1e-15,
+        |mid| {
+            Ok::<_, ()>(if sa(mid).ok_or(())? > 0.0 {
+                Midpoint::First
+            } else {
+                Midpoint::Second
+            })
+        },
+    )
+    .ok()?;
     Some(0.5 * (lo + hi))
 }

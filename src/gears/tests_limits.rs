@@ -288,7 +288,9 @@ fn a_generation_far_larger_or_smaller_than_a_sheet_neither_panics_nor_runs_away(
     // μ_l = 1e-10: a 1.3e9 mm tooth; its undercut's hatching is refused before it is drawn
     // (it took 24 GB).
     match at(1e-10) {
-        Err(GearError::Construction(e)) => assert!(e.contains("hatching"), "{e}"),
+        Err(e @ GearError::UndercutHatching(_)) => {
+            assert!(e.to_string().contains("the undercut's hatching"), "{e}");
+        }
         other => panic!("{:?}", other.map(|g| g.junction)),
     }
     // μ_l = 1e300: lyon's hatcher unwrapped `None` on the collapsed outline.

@@ -95,8 +95,7 @@ pub(super) fn undercut(
             &[],
         );
         let outline: Vec<DVec2> = region.iter().map(|p| flip(*p)).collect();
-        let strokes = crate::geom::hatch(&outline, spacing, side * PI / 4.0)
-            .map_err(|e| GearError::Construction(format!("the undercut's hatching: {e}")))?;
+        let strokes = crate::geom::hatch(&outline, spacing, side * PI / 4.0)?;
         for stroke in strokes {
             rec.draw(
                 "hatching of the undercut",

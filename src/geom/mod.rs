@@ -2,21 +2,27 @@
 //! explicit tolerances. Knows nothing of plates, scenes or mechanisms.
 
 mod clip;
+mod golden;
 mod hatch;
 mod intersect;
+mod linear;
 mod primitives;
 mod rect;
-mod solve;
+mod root;
 mod tolerance;
 
 pub use clip::{arc_in_circle, polyline_in_circle};
 pub use glam::DVec2;
+pub use golden::{golden_max, golden_section, Golden, GoldenRule, Tie};
 pub use hatch::{hatch, HatchError, MAX_HATCH_LINES};
 pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};
+pub use linear::{
+    determinant, eliminate, smallest_pivot, solve_linear, solve_linear_above, SINGULAR_REL,
+};
 pub use primitives::{
     french_curve, hermite, nearest, polygon_contains, rotate, wrap_pi, Arc, Circle, Line, Ray,
     Segment, Side,
 };
 pub use rect::Rect;
-pub use solve::{bracketed_root, golden_max, illinois, solve_linear};
+pub use root::{bisect, bracketed_root, illinois, Midpoint};
 pub use tolerance::{InvalidTolerance, Tolerances};

@@ -90,12 +90,14 @@ impl Segment {
         (p - (self.from + d * t)).length()
     }
     /// Where the carrying lines of `self` and `other` meet, and how far outside the segments
-    /// that is, in their parameters (0 when inside both); `None` for parallel lines.
+    /// that is, in their parameters (0 when inside both); `None` for lines parallel to
+    /// rounding (the sine of their angle within an ulp of 1, where the cross product is
+    /// rounding noise whatever the segments' size) or a segment of no length.
     pub fn meet(&self, other: &Segment) -> Option<(DVec2, f64)> {
         let r = self.to - self.from;
         let s = other.to - other.from;
         let den = r.perp_dot(s);
-        if den.abs() <= 1e-300 {
+        if den.abs() <= f64::EPSILON * r.length() * s.length() {
             return None;
         }
         let w = other.from - self.from;

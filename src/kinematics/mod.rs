@@ -27,9 +27,10 @@ pub use verdict::{by_position, verdict_notes, verdicts, Turning, Verdict};
 use crate::calculus::{self, Diagram, Scales};
 use crate::check::Row;
 use crate::construct::ConstructionError;
-use crate::geom::DVec2;
+use crate::geom::{bisect, DVec2, Midpoint};
 use crate::linkage::{LinkageError, PlanKind, PositionPlan};
 use crate::scale::{Quantity, Scale};
+use std::convert::Infallible;
 use std::f64::consts::TAU;
 use thiserror::Error;
 
@@ -330,23 +331,28 @@ fn full_turn(plan: &PositionPlan) -> Result<(), KinError> {
 /// Where between crank angles `a` and `b` (with link `l`'s directions there) the link leaps:
 /// the half-interval over which it turns more, halved down to the rounding.
 fn leap(plan: &PositionPlan, l: usize, a: (f64, DVec2), b: (f64, DVec2)) -> f64 {
-    let (mut a, mut b) = (a, b);
-    for _ in 0..60 {
-        let mid = 0.5 * (a.0 + b.0);
-        if mid <= a.0 || mid >= b.0 {
-            break;
-        }
-        let Ok(p) = plan.program.solve(mid, None) else {
-            break;
-        };
-        let m = (mid, p.dir[l]);
-        if a.1.dot(m.1) < m.1.dot(b.1) {
-            b = m;
-        } else {
-            a = m;
-        }
-    }
-    0.5 * (a.0 + b.0)
+    // The directions at the bracket's ends, kept with them.
+    let (mut at_a, mut at_b) = (a.1, b.1);
+    let Ok((a, b)) = bisect(
+        a.0,
+        b.0,
+        60,
+        |_, _| false,
+        |mid| {
+            let Ok(p) = plan.program.solve(mid, None) else {
+                return Ok::<_, Infallible>(Midpoint::Stop);
+            };
+            let m = p.dir[l];
+            Ok(if at_a.dot(m) < m.dot(at_b) {
+                at_b = m;
+                Midpoint::Second
+            } else {
+                at_a = m;
+                Midpoint::First
+            })
+        },
+    );
+    0.5 * (a + b)
 }
 
 /// The position of the plan nearest to crank angle `phi`, as "position 4 at φ₁ = 270°".

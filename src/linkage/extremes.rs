@@ -5,7 +5,8 @@ use super::analytic::Pose;
 use super::model::{Output, Sense};
 use super::program::Program;
 use super::{LinkageError, ModelError};
-use crate::geom::{wrap_pi, DVec2, Tolerances};
+use crate::geom::{bisect, wrap_pi, DVec2, Midpoint, Tolerances};
+use std::convert::Infallible;
 use std::f64::consts::{PI, TAU};
 
 /// An output coordinate of the program.
@@ -239,47 +240,48 @@ impl Program {
     fn arrival(&self, c: OutputCoord, moving: f64, still: f64, reference: f64, tol: f64) -> f64 {
         // Adjacent samples across 0 = 2π: unwrap `still` next to `moving`.
         let still = moving + wrap_pi(still - moving);
-        let (mut go, mut stop) = (moving, still);
-        for _ in 0..80 {
-            let mid = 0.5 * (go + stop);
-            if mid == go || mid == stop {
-                break;
-            }
-            let stands = self.solve(mid, None).map_or(true, |p| {
-                p.toggle.is_some() || c.eval(&p, reference).1.abs() <= tol
-            });
-            if stands {
-                stop = mid;
-            } else {
-                go = mid;
-            }
-        }
+        let Ok((_, stop)) = bisect(
+            moving,
+            still,
+            80,
+            |_, _| false,
+            |mid| {
+                let stands = self.solve(mid, None).map_or(true, |p| {
+                    p.toggle.is_some() || c.eval(&p, reference).1.abs() <= tol
+                });
+                Ok::<_, Infallible>(if stands {
+                    Midpoint::Second
+                } else {
+                    Midpoint::First
+                })
+            },
+        );
         stop
     }
 
     /// Bisection on dq/dφ between `a.phi` (a solved pose) and `b_phi`: the sign change is
     /// bracketed, so this converges to the last bit without any derivative of dq/dφ.
     fn bisect(&self, c: OutputCoord, a: &Pose, b_phi: f64, reference: f64) -> f64 {
-        let (mut lo, mut hi) = (a.phi, b_phi);
         let d_lo = c.eval(a, reference).1;
-        for _ in 0..80 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            let Ok(p) = self.solve(mid, None) else {
-                break;
-            };
-            let d = c.eval(&p, reference).1;
-            if d == 0.0 {
-                return mid;
-            }
-            if (d > 0.0) == (d_lo > 0.0) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        let Ok((lo, hi)) = bisect(
+            a.phi,
+            b_phi,
+            80,
+            |_, _| false,
+            |mid| {
+                let Ok(p) = self.solve(mid, None) else {
+                    return Ok::<_, Infallible>(Midpoint::Stop);
+                };
+                let d = c.eval(&p, reference).1;
+                Ok(if d == 0.0 {
+                    Midpoint::Root
+                } else if (d > 0.0) == (d_lo > 0.0) {
+                    Midpoint::First
+                } else {
+                    Midpoint::Second
+                })
+            },
+        );
         0.5 * (lo + hi)
     }
 }

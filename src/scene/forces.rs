@@ -7,9 +7,7 @@ use super::keys::Key;
 use super::kinematics::{point, point_names, position_labels};
 use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance};
 use crate::forces::{carrier, PairFriction};
-use crate::forces::{
-    Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke, G_STANDARD,
-};
+use crate::forces::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke};
 use crate::linkage::{Mechanism, Program};
 use crate::scale::Quantity;
 
@@ -43,7 +41,7 @@ pub(crate) fn forces(
     let count = if count == 0 { u32::MAX } else { count };
     let g = match raw.g {
         Some(g) => check.in_range(&key("g"), g, 1e3, "g > 0 m/s², at most 1000"),
-        None => G_STANDARD,
+        None => crate::scale::G,
     };
     let positions = match raw.positions {
         Some(labels) => position_labels(check, &key("positions"), &labels, count, MAX_POSITIONS),

@@ -8,9 +8,8 @@ use super::model::Localised;
 use super::raw::RawSeedValue;
 use crate::check::Method;
 use crate::check::SeedValue;
+use crate::scale::KGF;
 
-/// One kilogram-force, N.
-const KGF: f64 = 9.806_65;
 /// The largest magnitude a seed's value may have in its SI unit.
 const MAX_VALUE: f64 = 1e9;
 

@@ -166,7 +166,7 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
         let n = unit_in("N", lang);
         for (i, m) in b.spec.masses.iter().enumerate() {
             let f = crate::balancing::inertia_force(m, w);
-            let g = m.mass * crate::balancing::COURSE_G;
+            let g = m.mass * crate::scale::G;
             out.push(format!(
                 "P_{{и{k}}} = m_{{{k}}}ω^2ρ_{{{k}}} = {} {n}, P_{{и{k}}}/G_{{{k}}} = {}",
                 num(f, lang),

@@ -50,7 +50,7 @@ pub enum BuildError {
     NoFit(&'static str),
     /// The tolerances of a drawing cannot be set up.
     #[error("tolerances: {0}")]
-    Tolerances(String),
+    Tolerances(#[from] crate::geom::InvalidTolerance),
     /// A drawing too large only because its lengths are read coarsely: read exactly, it
     /// fits (a derivative of lengths read to 100 mm is their noise).
     #[error("--drafting {} mm: {error} (read exactly it fits: the reading to {} mm makes it so large)", crate::scale::format_plain(*.resolution_mm), crate::scale::format_plain(*.resolution_mm))]

@@ -96,8 +96,7 @@ fn scheme_block(
         .bounds()
         .map_or(1.0, |(lo, hi)| (hi - lo).max_element())
         * plan.figure.scale.value();
-    let ctx = Context::for_model_size(SCHEME_MM, Drafting::EXACT)
-        .map_err(|e| BuildError::Tolerances(e.to_string()))?;
+    let ctx = Context::for_model_size(SCHEME_MM, Drafting::EXACT)?;
     let scheme = |s: Scale| plan.scheme(st, s, &ctx);
     let start =
         Scale::round_for(extent, SCHEME_MM, Quantity::Length).ok_or(BuildError::NoScale(extent))?;

@@ -16,7 +16,7 @@ pub enum StudyError {
     Kinematics(#[from] KinError),
     /// The tolerances of the figures cannot be set up.
     #[error("tolerances: {0}")]
-    Tolerances(String),
+    Tolerances(#[from] crate::geom::InvalidTolerance),
     /// The force analysis cannot be carried out.
     #[error(transparent)]
     Forces(#[from] ForceError),

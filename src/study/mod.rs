@@ -134,8 +134,7 @@ impl<'s> Session<'s> {
         Self {
             scene,
             drafting,
-            ctx: Context::for_model_size(FIGURE_MM, drafting)
-                .map_err(|e| StudyError::Tolerances(e.to_string())),
+            ctx: Context::for_model_size(FIGURE_MM, drafting).map_err(StudyError::from),
             caches: Caches::default(),
             shared,
             log: Mutex::new(Vec::new()),

@@ -14,6 +14,7 @@ use crate::construct::fit::{finest_fitting, fit_scale, overflow, Extent, LABEL_M
 use crate::geom::DVec2;
 use crate::kinematics::{self, drawn_points};
 use crate::linkage::{guide_ends, GUIDE_MARGIN_MM};
+use crate::plate::Sheet;
 use crate::scale::Quantity;
 
 /// Preferred drawn length of the crank when the scene gives no μ_l (textbook: 40–60 mm).
@@ -126,9 +127,13 @@ fn plans_fit(poses: &PlanPoses, ks: &[usize], w1: f64, kind: PlanKind, start: Sc
     .unwrap_or(start)
 }
 
-/// The drawing field of an A1 sheet, mm²: 816 × 584 mm inside the frame, the title block
-/// (185 × 55 mm) left out.
-const A1_FIELD_MM2: f64 = 816.0 * 584.0 - 185.0 * 55.0;
+/// The drawing field of the course's plate (an A1 sheet, landscape), mm²: inside its frame
+/// (816 × 584 mm), its title block (185 × 55 mm) left out.
+fn a1_field_mm2() -> f64 {
+    let sheet = Sheet::default();
+    let (frame, block) = (sheet.frame(), sheet.title_block());
+    frame.width() * frame.height() - block.width() * block.height()
+}
 
 /// The share of an A1 field the kinematic drawings (the plan of positions, the velocity and
 /// acceleration plans, the diagrams) may take on one sheet: the analytic tables, the texts,
@@ -164,7 +169,7 @@ pub enum KinSheets {
 /// of the second's (`PLANS_AREA_MM2`) beside the diagrams and the tables.
 fn two_sheet_room(kind: PlanKind, positions_mm2: f64) -> (DVec2, f64) {
     let area = match kind {
-        PlanKind::Velocity => LAID_OUT_SHARE * A1_FIELD_MM2 - positions_mm2,
+        PlanKind::Velocity => LAID_OUT_SHARE * a1_field_mm2() - positions_mm2,
         PlanKind::Acceleration => PLANS_AREA_MM2,
     };
     (TWO_SHEET_PLAN_ROOM, area)
@@ -284,7 +289,7 @@ impl<'s> Session<'s> {
                         PlanKind::Acceleration => (v, mu),
                     };
                     self.drawn_mm2(v, a)
-                        .is_ok_and(|d| d <= ONE_SHEET_SHARE * A1_FIELD_MM2)
+                        .is_ok_and(|d| d <= ONE_SHEET_SHARE * a1_field_mm2())
                 };
                 plans_finer(&poses, &ks, w1, kind, start, room, within)
             }
@@ -336,11 +341,13 @@ impl<'s> Session<'s> {
     pub fn kin_sheets(&self) -> Result<KinSheets, StudyError> {
         self.caches.get::<Sheets>((), || {
             let (v, a) = self.textbook_plan_scales()?;
-            Ok(if self.drawn_mm2(v, a)? > ONE_SHEET_SHARE * A1_FIELD_MM2 {
-                KinSheets::Two
-            } else {
-                KinSheets::One
-            })
+            Ok(
+                if self.drawn_mm2(v, a)? > ONE_SHEET_SHARE * a1_field_mm2() {
+                    KinSheets::Two
+                } else {
+                    KinSheets::One
+                },
+            )
         })
     }
 
@@ -433,7 +440,7 @@ mod tests {
         let drawn = s.drawn_mm2(v, a).expect("drawn");
         largest_plan(&poses, &ks, w1, kind)(mu).cmple(room).all()
             && plans_area(&poses, &ks, w1, kind, mu) <= area
-            && (!one || drawn <= ONE_SHEET_SHARE * A1_FIELD_MM2)
+            && (!one || drawn <= ONE_SHEET_SHARE * a1_field_mm2())
     }
 
     /// Every free μ_v and μ_a is the largest round scale the room allows: its typical plans

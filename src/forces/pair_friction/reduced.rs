@@ -10,7 +10,7 @@
 //! (the equations' Jacobian turns singular there): for f ≥ t*·f the given loads cannot be
 //! carried — the mechanism self-locks — and past t* the path has no continuation.
 
-use crate::geom::DVec2;
+use crate::geom::{determinant, solve_linear_above, DVec2};
 
 /// The reduced friction equations: `r0[k]` the reactions without friction, `y[k][j]` reaction
 /// k's change per newton of pair j's friction magnitude.
@@ -220,33 +220,6 @@ impl Reduced {
     }
 }
 
-/// The determinant of a small dense matrix (Gaussian elimination with partial pivoting).
-fn determinant(mut a: Vec<Vec<f64>>) -> f64 {
-    let n = a.len();
-    let mut det = 1.0;
-    for c in 0..n {
-        let Some(p) = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs())) else {
-            return 0.0;
-        };
-        if a[p][c] == 0.0 {
-            return 0.0;
-        }
-        if p != c {
-            a.swap(c, p);
-            det = -det;
-        }
-        det *= a[c][c];
-        let (top, rest) = a.split_at_mut(c + 1);
-        for row in rest {
-            let f = row[c] / top[c][c];
-            for (x, p) in row[c..].iter_mut().zip(&top[c][c..]) {
-                *x -= f * p;
-            }
-        }
-    }
-    det
-}
-
 /// A fold at `t` with the magnitudes `m` there.
 fn fold(t: f64, m: &[f64]) -> Outcome {
     let big = m.iter().fold(0.0f64, |a, m| a.max(m.abs()));
@@ -256,35 +229,18 @@ fn fold(t: f64, m: &[f64]) -> Outcome {
     }
 }
 
-/// Solve `a·x = b` (a small dense system) by Gaussian elimination with partial pivoting;
-/// `None` when it is singular.
-fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
-    let n = b.len();
-    for c in 0..n {
-        let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
-        if a[p][c] == 0.0 || !a[p][c].is_finite() {
-            return None;
-        }
-        a.swap(c, p);
-        b.swap(c, p);
-        let (top, rest) = a.split_at_mut(c + 1);
-        let (bt, br) = b.split_at_mut(c + 1);
-        for (row, rb) in rest.iter_mut().zip(br) {
-            let f = row[c] / top[c][c];
-            if f != 0.0 {
-                for (x, p) in row[c..].iter_mut().zip(&top[c][c..]) {
-                    *x -= f * p;
-                }
-                *rb -= f * bt[c];
-            }
-        }
-    }
-    let mut x = vec![0.0; n];
-    for c in (0..n).rev() {
-        let s: f64 = (c + 1..n).map(|k| a[c][k] * x[k]).sum();
-        x[c] = (b[c] - s) / a[c][c];
-    }
-    x.iter().all(|v| v.is_finite()).then_some(x)
+/// Solve `a·x = b` (a small dense system) by [`solve_linear_above`], any pivot that is not
+/// zero accepted; `None` when it is singular.
+fn solve(a: Vec<Vec<f64>>, b: Vec<f64>) -> Option<Vec<f64>> {
+    let rows = a
+        .into_iter()
+        .zip(b)
+        .map(|(mut row, b)| {
+            row.push(b);
+            row
+        })
+        .collect();
+    solve_linear_above(rows, 0.0)
 }
 
 #[cfg(test)]
