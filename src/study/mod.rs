@@ -31,7 +31,7 @@ pub use kinematics::{ChartScales, KinScales, Kinematics};
 pub use scales::KinSheets;
 
 use crate::check::Row;
-use crate::check::{Report, Table};
+use crate::check::{Note, Report, Table};
 use crate::construct::{Context, Drafting, Figure};
 use crate::forces::balancing::{Balancing, BalancingError};
 use crate::forces::friction::{FrictionError, Solved};
@@ -215,8 +215,8 @@ impl<'s> Session<'s> {
         for part in parts {
             (part.add)(self, &mut rep)?;
         }
-        rep.notes
-            .extend(crate::check::seed_notes(&self.scene.seed, &rep.rows));
+        let seed = crate::check::seed_notes(&self.scene.seed, &rep.rows);
+        rep.notes.extend(seed.into_iter().map(Note::from));
         Ok(rep)
     }
 }
