@@ -6,9 +6,10 @@ use super::{
     main_moment, main_vector, residual_moment, residual_vector, Balancing, Correction, Corrective,
     Mass,
 };
+use crate::check::notes::balancing::{BalancingNote, Inertia};
 use crate::check::{Key, Method, Row, Symbol};
 use crate::geom::wrap_pi;
-use crate::scale::{format_sig, Lang, G};
+use crate::scale::G;
 use std::f64::consts::PI;
 
 /// A row of the whole scene, by the polygon method.
@@ -148,14 +149,13 @@ impl Balancing {
 
     /// The notes of the report: the inertia force of every mass and its ratio to the mass's
     /// weight (with ω), and a plane that needs no correction.
-    pub fn notes(&self) -> Vec<String> {
+    pub fn notes(&self) -> Vec<BalancingNote> {
         let mut out = Vec::new();
         for a in &self.analytic {
             if a.angle().is_none() {
-                out.push(format!(
-                    "balancing: plane {}: m·ρ = 0, no correcting mass is needed",
-                    a.plane.subject()
-                ));
+                out.push(BalancingNote::NoCorrection {
+                    plane: a.plane.subject().to_string(),
+                });
             }
         }
         if let Some(w) = self.spec.omega {
@@ -165,31 +165,28 @@ impl Balancing {
     }
 }
 
+/// A mass's inertia force at ω and its weight.
+fn inertia(index: usize, m: &Mass, omega: f64) -> Inertia {
+    Inertia {
+        index,
+        mass: m.mass,
+        radius: m.radius,
+        omega,
+        force: inertia_force(m, omega),
+        weight: m.mass * G,
+        g: G,
+    }
+}
+
 /// The inertia force of each mass at ω (`P_и = m·ω²·ρ`), its weight `G = m·g` and their
 /// ratio `ω²ρ/g`, one note per mass — seed 001's worked example W4 (m = 0,1 kg, l = 0,1 m,
 /// ω = 300 1/s: P_и = 900 N, P_и/G = 917) — and, when W4's ball is among the masses, the
 /// erratum of its text, which calls the ratio "900 times" (true only for g = 10 m/s²).
-pub fn inertia_notes(masses: &[Mass], omega: f64) -> Vec<String> {
-    let num = |x: f64| format_sig(x, 4, Lang::En);
-    let mut out: Vec<String> = masses
+pub fn inertia_notes(masses: &[Mass], omega: f64) -> Vec<BalancingNote> {
+    let mut out: Vec<BalancingNote> = masses
         .iter()
         .enumerate()
-        .map(|(i, m)| {
-            let p = inertia_force(m, omega);
-            let g = m.mass * G;
-            format!(
-                "balancing: m{} = {} kg at ρ = {} m, ω = {} rad/s: inertia force P = m·ω²·ρ = {} N; \
-                 weight G = m·g = {} N (g = {} m/s²); P/G = ω²·ρ/g = {}",
-                i + 1,
-                num(m.mass),
-                num(m.radius),
-                num(omega),
-                num(p),
-                num(g),
-                num(G),
-                num(p / g)
-            )
-        })
+        .map(|(i, m)| BalancingNote::Inertia(inertia(i + 1, m, omega)))
         .collect();
     // The seed's ball itself: its text's ratio is an erratum.
     let (ball, w4_omega) = W4;
@@ -214,24 +211,9 @@ pub const W4: (Mass, f64) = (
 
 /// The erratum of W4: its text calls the inertia force "900 times" the ball's weight, which
 /// holds only for g = 10 m/s²; with g = 9,81 m/s² the ratio is ω²l/g ≈ 917.
-pub fn w4_erratum() -> String {
+pub fn w4_erratum() -> BalancingNote {
     let (ball, omega) = W4;
-    let p = inertia_force(&ball, omega);
-    let g = ball.mass * G;
-    let num = |x: f64| format_sig(x, 4, Lang::En);
-    format!(
-        "balancing: erratum of seed 001 (lecture 19, W4: m = {} kg, l = {} m, ω = {} 1/s): its \
-         inertia force P = {} N is called \"900 times\" the ball's weight; with g = {} m/s² the \
-         ratio is {} N / {} N = {} (900 holds only for g = 10 m/s²)",
-        num(ball.mass),
-        num(ball.radius),
-        num(omega),
-        num(p),
-        num(G),
-        num(p),
-        num(g),
-        num(p / g)
-    )
+    BalancingNote::W4Erratum(inertia(1, &ball, omega))
 }
 
 /// The inertia force of a mass turning at ω, `m·ω²·ρ`, N.

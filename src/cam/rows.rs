@@ -11,8 +11,9 @@ use super::follower::{to_cam, Placement};
 use super::motion::Point;
 use super::motion::{motion, Motion};
 use super::{CamSpec, Closure, Follower, Given, Law, Rotation, Shock};
+use crate::check::finding::Note;
 use crate::check::{
-    self, At, BaseUsed, Cusp, Finding, Key, Limit, Method, Note, RadiusBasis, Row, Symbol,
+    self, At, BaseUsed, Cusp, Finding, Key, Limit, Method, RadiusBasis, Row, Symbol,
 };
 use crate::geom::DVec2;
 use crate::scale::{format_sig, Lang};
@@ -259,11 +260,6 @@ impl Cam {
             ));
         }
         out
-    }
-
-    /// The notes as the report writes them.
-    pub fn notes(&self) -> Vec<String> {
-        check::finding::english(&self.noted())
     }
 
     /// The verdicts of the notes.

@@ -13,7 +13,8 @@ use super::rows::{diagram_rows, law_notes};
 use super::sliding::{self, Sliding};
 use super::special::{Special, SpecialProfile};
 use super::{CamError, Closure};
-use crate::check::{self, At, Finding, Key, Method, Note, Row, Symbol};
+use crate::check::finding::Note;
+use crate::check::{self, At, Finding, Key, Method, Row, Symbol};
 use crate::scale::{format_sig, Lang};
 use std::f64::consts::FRAC_PI_2;
 
@@ -179,11 +180,6 @@ impl Special {
             ));
         }
         Ok(out)
-    }
-
-    /// The notes as the report writes them.
-    pub fn notes(&self) -> Result<Vec<String>, CamError> {
-        Ok(check::finding::english(&self.noted()?))
     }
 
     /// The verdicts of the notes.

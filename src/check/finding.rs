@@ -369,11 +369,6 @@ pub fn findings(notes: &[Note]) -> Vec<Finding> {
     notes.iter().flat_map(Note::findings).cloned().collect()
 }
 
-/// The notes as the report writes them.
-pub fn english(notes: &[Note]) -> Vec<String> {
-    notes.iter().map(Note::to_string).collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -395,7 +390,7 @@ mod tests {
         assert!(text.ends_with("just under 14.9999 mm."), "{text}");
         let notes = [Note::text("plain"), note];
         assert_eq!(findings(&notes), vec![undercut]);
-        assert_eq!(english(&notes)[0], "plain");
+        assert_eq!(notes[0].to_string(), "plain");
     }
 
     #[test]

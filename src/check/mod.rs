@@ -13,13 +13,15 @@
 //! and the sheets ([`is_zero`]).
 
 pub mod finding;
+pub mod notes;
 mod report;
 mod seed;
 mod summary;
 #[cfg(test)]
 mod tests;
 
-pub use finding::{BaseUsed, Cusp, Finding, Limit, NoFlywheel, Note, Part, RadiusBasis, Route};
+pub use finding::{BaseUsed, Cusp, Finding, Limit, NoFlywheel, Part, RadiusBasis, Route};
+pub use notes::Note;
 pub use report::{Column, Report, Table};
 pub use seed::{seed_notes, SeedValue};
 pub use summary::{Summary, SummaryEntry};

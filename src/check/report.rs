@@ -33,8 +33,9 @@ pub struct Report {
     pub rows: Vec<Row>,
     /// Analytic tables, written after the rows.
     pub tables: Vec<Table>,
-    /// Notes: what could not be constructed, and why.
-    pub notes: Vec<String>,
+    /// Notes: what could not be constructed, and why; typed, their English written by
+    /// `report`.
+    pub notes: Vec<super::Note>,
 }
 
 impl Report {

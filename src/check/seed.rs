@@ -1,9 +1,9 @@
 //! A value a seed (a textbook) prints for a row of the report (`[[seed]]`, `[[forces.seed]]`)
-//! and the report's note on it: how far it is from the analysis, so that a seed's error is
-//! flagged, never matched.
+//! and the report's note on it ([`SeedNote`]): how far it is from the analysis, so that a
+//! seed's error is flagged, never matched.
 
+use super::notes::seed::{Analysed, SeedNote};
 use super::{Method, Row};
-use crate::scale::{format_sig, Lang};
 
 /// A value the seed prints for a row of the report (`[[seed]]`, `[[forces.seed]]`): the report notes
 /// how far it is from the analysis, so that a seed's error is flagged, never matched.
@@ -45,41 +45,15 @@ impl SeedValue {
 /// The seed's printed values against the rows of the analysis: each note gives the seed's
 /// value, the analysis' (graphical and analytic) and how far apart they are; a seed value
 /// whose row the report does not have says so.
-pub fn seed_notes(seed: &[SeedValue], rows: &[Row]) -> Vec<String> {
-    let n = |x: f64| format_sig(x, 6, Lang::En);
+pub fn seed_notes(seed: &[SeedValue], rows: &[Row]) -> Vec<SeedNote> {
     seed.iter()
-        .map(|s| {
-            let method = s.method.map_or(String::new(), |m| format!(" ({})", m.key()));
-            let at = s
-                .position
-                .as_ref()
-                .map_or(String::new(), |p| format!("position {p}: "));
-            match s.row(rows) {
-                Some(r) => {
-                    let a = r.analytic.abs();
-                    let off = if a > 0.0 { (s.value - a) / a * 100.0 } else { f64::NAN };
-                    let unit = r.unit();
-                    let si = if s.printed.ends_with(&format!(" {unit}")) {
-                        String::new()
-                    } else {
-                        format!(" = {} {unit}", n(s.value))
-                    };
-                    format!(
-                        "{at}{}{method}: the seed prints {}{si} ({}); this analysis gives {} {unit} (analytic {} {unit}): the seed's value is {}{} % off and is not reproduced",
-                        s.quantity,
-                        s.printed,
-                        s.source,
-                        n(r.graphical.abs()),
-                        n(a),
-                        if off > 0.0 { "+" } else { "" },
-                        format_sig(off, 3, Lang::En),
-                    )
-                }
-                None => format!(
-                    "{at}{}{method}: the seed prints {} ({}), but this report has no such row",
-                    s.quantity, s.printed, s.source
-                ),
-            }
+        .map(|s| SeedNote {
+            seed: s.clone(),
+            row: s.row(rows).map(|r| Analysed {
+                graphical: r.graphical,
+                analytic: r.analytic,
+                unit: r.unit(),
+            }),
         })
         .collect()
 }

@@ -35,7 +35,7 @@ pub use draw::diagrams;
 pub use flywheel::Size;
 pub use part::PART_MM;
 pub use reduce::{Breakdown, LinkShare, LoadShare, Reduced, Reducer};
-pub use rows::{findings, noted, notes, rows};
+pub use rows::{findings, noted, rows};
 pub use spec::{
     ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
 };

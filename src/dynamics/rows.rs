@@ -1,7 +1,8 @@
 //! The rows and notes of the dynamic study.
 
 use super::{ConstantMoment, Dynamics, SeedClaims};
-use crate::check::{self, Finding, Key, Method, NoFlywheel, Note, Route, Row, Symbol};
+use crate::check::finding::Note;
+use crate::check::{self, Finding, Key, Method, NoFlywheel, Route, Row, Symbol};
 use crate::scale::{format_sig, Lang};
 
 /// The rows: `M_red`, `J_red` (velocity plans) and `dT` (graphical integration) per
@@ -104,11 +105,6 @@ pub fn rows(d: &Dynamics) -> Vec<Row> {
         );
     }
     rows
-}
-
-/// The notes as the report writes them.
-pub fn notes(d: &Dynamics) -> Vec<String> {
-    check::finding::english(&noted(d))
 }
 
 /// The verdicts of the notes.

@@ -290,7 +290,11 @@ fn graphical_work_converges_at_the_chord_rate() {
 #[test]
 fn the_seed_errors_are_flagged_and_never_matched() {
     let d = study();
-    let notes = notes(&d).join("\n");
+    let notes = noted(&d)
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join("\n");
     assert!(notes.contains("its flywheel J = 17.1"), "{notes}");
     assert!(notes.contains("1/10.8"), "{notes}");
     assert!(notes.contains("evaluates to 18.58"), "{notes}");

@@ -3,6 +3,7 @@
 
 use super::pair_friction::sliding_friction;
 use super::{Analysis, Load, LoadKind, PositionForces};
+use crate::check::notes::forces::{ForcesNote, PairFriction};
 use crate::check::{Key, Method, Row, Symbol};
 use crate::geom::DVec2;
 
@@ -139,63 +140,53 @@ pub(super) fn zero_references(rows: &mut [Row], size: f64) {
 /// The notes of one position for the report: the power balance against the linear solve,
 /// the polygon against the lever (the seed's «погрешность»), every slider whose guide
 /// reaction falls outside it, and the friction in the pairs.
-pub fn notes(f: &PositionForces) -> Vec<String> {
-    use crate::scale::{format_sig, Lang};
-    let n = |x: f64| format_sig(x, 6, Lang::En);
-    let (p, l) = (f.analysis.polygons.driver.m_bal, f.analysis.lever.m_bal);
-    let mut out = vec![format!(
-        "position {}: the balancing moment by the power balance Σ F·v + Σ M·ω + M_bal·ω₁ = 0 is {} N·m; the linear solve of the links' equilibrium gives {} N·m",
-        f.label,
-        format_sig(f.analysis.m_power, 10, Lang::En),
-        format_sig(f.analysis.twin.m_bal, 10, Lang::En),
-    ), format!(
-        "position {}: M_bal by the force polygons {} N·m, by Zhukovsky's lever {} N·m: they differ by {} % of the polygons' value",
-        f.label,
-        n(p),
-        n(l),
-        format_sig(if p != 0.0 { (p - l).abs() / p.abs() * 100.0 } else { 0.0 }, 3, Lang::En),
-    )];
+pub fn notes(f: &PositionForces) -> Vec<ForcesNote> {
+    let label = || f.label.clone();
+    let mut out = vec![
+        ForcesNote::PowerBalance {
+            label: label(),
+            power: f.analysis.m_power,
+            solve: f.analysis.twin.m_bal,
+        },
+        ForcesNote::Lever {
+            label: label(),
+            polygons: f.analysis.polygons.driver.m_bal,
+            lever: f.analysis.lever.m_bal,
+        },
+    ];
     if let Some(force) = f
         .analysis
         .twin
         .f_bal
         .filter(|_| f.analysis.twin.m_bal * f.sense < 0.0)
     {
-        out.push(format!(
-            "position {}: the balancing moment {} N·m opposes ω₁: the pinion holds the crank back, so its tooth pushes on the other flank and the balancing force F_bal = {} N acts on the line of action mirrored about the line of centres",
-            f.label,
-            n(f.analysis.twin.m_bal),
-            n(force),
-        ));
+        out.push(ForcesNote::Opposes {
+            label: label(),
+            moment: f.analysis.twin.m_bal,
+            force,
+        });
     }
     for s in f.sliders.iter().filter(|s| s.outside()) {
-        let [a, b] = s.ends();
-        out.push(format!(
-            "position {}: the reaction R_{}_{} = {} N acts {} m from the slider's centre, outside the slider (length {} m): a force at the centre and a couple on the ends, which carry {} N and {} N",
-            f.label, s.pair.from, s.pair.to, n(s.force), n(s.offset), n(s.length), n(a), n(b)
-        ));
+        out.push(ForcesNote::SliderOutside {
+            label: label(),
+            pair: (s.pair.from, s.pair.to),
+            force: s.force,
+            offset: s.offset,
+            length: s.length,
+            ends: s.ends(),
+        });
     }
     if let Some(w) = &f.friction {
-        let (m0, m) = (f.analysis.twin.m_bal, w.analysis.twin.m_bal);
-        let eta = if m != 0.0 { m0 / m } else { f64::NAN };
-        let eta = if eta > 0.0 && eta < 1.0 {
-            format!(
-                ", the instantaneous efficiency η = M_bal/M_bal_f = {}",
-                format_sig(eta, 4, Lang::En)
-            )
-        } else {
-            String::new()
-        };
-        out.push(format!(
-            "position {}: with friction in the pairs M_bal_f = {} N·m against M_bal = {} N·m without: the pairs lose {} W{eta}; the power balance with the friction's power gives {} N·m; the friction equations (Newton's method on the friction loads' magnitudes) took {} drawings of the force polygons and {} linear solves",
-            f.label,
-            format_sig(m, 10, Lang::En),
-            format_sig(m0, 10, Lang::En),
-            n(-w.lost),
-            format_sig(w.analysis.m_power, 10, Lang::En),
-            w.approximations[0],
-            w.approximations[1],
-        ));
+        out.push(ForcesNote::Friction {
+            label: label(),
+            friction: PairFriction {
+                with: w.analysis.twin.m_bal,
+                without: f.analysis.twin.m_bal,
+                lost: -w.lost,
+                by_power: w.analysis.m_power,
+                approximations: w.approximations,
+            },
+        });
     }
     out
 }

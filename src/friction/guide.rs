@@ -20,6 +20,7 @@ use super::{
     FrictionError, Reading, Solved,
 };
 use crate::cam::force::{translating_forces, translating_locking};
+use crate::check::notes::FrictionNote;
 use crate::check::Symbol;
 use crate::construct::{ConstructionError, Context, Item, Recorder, Role};
 use crate::geom::{DVec2, Line, Segment, Side};
@@ -369,15 +370,13 @@ pub(super) fn solve(
             None,
         ),
     ];
-    let notes = vec![format!(
-        "{name}: the follower moves while λ = {:.2}° < λ_кр = {:.2}° (tg λ_кр = b/(f(2l + b))); \
-         P·cos λ = {:.4} N = Q + f(N₁ + N₂), the useful part of P; P·sin λ = {:.4} N loads the \
-         guide",
-        c.angle.to_degrees(),
-        twin.lock.to_degrees(),
-        twin.p * c.angle.cos(),
-        twin.p * c.angle.sin()
-    )];
+    let notes = vec![FrictionNote::Guide {
+        case: name.to_string(),
+        angle: c.angle,
+        lock: twin.lock,
+        useful: twin.p * c.angle.cos(),
+        across: twin.p * c.angle.sin(),
+    }];
     Ok(Solved {
         case: case.clone(),
         drawings: vec![scheme, plan],

@@ -8,6 +8,7 @@ use super::{
     friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Incline,
     Motion, Reading, Solved,
 };
+use crate::check::notes::FrictionNote;
 use crate::check::Symbol;
 use crate::construct::{ConstructionError, Context, Item, Recorder, Role};
 use crate::geom::{DVec2, Segment, Side};
@@ -288,20 +289,16 @@ pub(super) fn solve(
         None,
     )];
     out.extend(readings(&case.name, &twin, &with, eta));
-    let mut notes = vec![format!(
-        "{}: twin P = Q·sin(α {} φ)/cos(α {} φ − β′) from the vector solution of Q + P + R = 0; \
-         the seed's printed P = Q·sin(α + φ)/cos(α + β + φ) is an erratum (sin[π − x] is not cos x)",
-        case.name,
-        if c.motion == Motion::Up { "+" } else { "−" },
-        if c.motion == Motion::Up { "+" } else { "−" },
-    )];
+    let mut notes = vec![FrictionNote::InclineErratum {
+        case: case.name.clone(),
+        up: c.motion == Motion::Up,
+    }];
     if twin.self_braking {
-        notes.push(format!(
-            "{}: self-braking: α = {:.2}° ≤ φ = {:.2}°, the body must be pushed down (P < 0)",
-            case.name,
-            c.alpha.to_degrees(),
-            twin.phi.to_degrees()
-        ));
+        notes.push(FrictionNote::SelfBraking {
+            case: case.name.clone(),
+            alpha: c.alpha,
+            phi: twin.phi,
+        });
     }
     Ok(Solved {
         case: case.clone(),

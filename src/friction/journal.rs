@@ -9,6 +9,7 @@ use super::{
     friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Journal,
     Solved,
 };
+use crate::check::notes::FrictionNote;
 use crate::check::Symbol;
 use crate::construct::{Compass, ConstructionError, Context, Item, Pick, Recorder, Role};
 use crate::geom::{Arc, Circle, DVec2, Line, Segment};
@@ -77,15 +78,12 @@ pub(super) fn solve(
             None,
         ),
     ];
-    let notes = vec![format!(
-        "{}: the friction circle drawn and read is ρ = r·sin φ = {:.6} m; the textbook's \
-         ρ = f·r = {:.6} m (M_f = f·Q·r = {:.4} N·m) is {:.3}% larger",
-        case.name,
-        twin.rho,
-        twin.rho_textbook,
-        twin.moment_textbook,
-        (twin.rho_textbook / twin.rho - 1.0) * 100.0
-    )];
+    let notes = vec![FrictionNote::Journal {
+        case: case.name.clone(),
+        rho: twin.rho,
+        textbook: twin.rho_textbook,
+        moment: twin.moment_textbook,
+    }];
     Ok(Solved {
         case: case.clone(),
         drawings: vec![Drawing {

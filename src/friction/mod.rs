@@ -392,7 +392,7 @@ pub struct Solved {
     /// Its readings against the twin.
     pub readings: Vec<Reading>,
     /// Notes (self-braking, the textbook's approximations, the seed's errata).
-    pub notes: Vec<String>,
+    pub notes: Vec<crate::check::notes::FrictionNote>,
 }
 
 impl Solved {

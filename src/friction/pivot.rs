@@ -19,6 +19,7 @@ use super::{
     RockerPivot, Solved,
 };
 use crate::cam::force::{rocker_force, rocker_locking, rocker_locking_lecture};
+use crate::check::notes::FrictionNote;
 use crate::check::Symbol;
 use crate::construct::{Compass, ConstructionError, Context, Item, Pick, Recorder, Role};
 use crate::geom::{Arc, Circle, DVec2, Line, Segment};
@@ -334,14 +335,13 @@ pub(super) fn solve(
             None,
         ),
     ];
-    let notes = vec![format!(
-        "{name}: the rocker moves while λ = {:.2}° < λ_кр = {:.2}° (cos λ_кр = ρ/L, ρ = (d/2)·sin φ \
-         = {:.6} m); the lecture's M_тр = P^n·f·d/2 gives tg λ_кр = 2L/(f·d): λ_кр = {:.2}°",
-        c.angle.to_degrees(),
-        twin.lock.to_degrees(),
-        twin.rho,
-        twin.lock_lecture.to_degrees()
-    )];
+    let notes = vec![FrictionNote::Pivot {
+        case: name.to_string(),
+        angle: c.angle,
+        lock: twin.lock,
+        rho: twin.rho,
+        lecture: twin.lock_lecture,
+    }];
     Ok(Solved {
         case: case.clone(),
         drawings: vec![scheme],

@@ -19,6 +19,7 @@ use super::{
     choose_scale, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Incline,
     Motion, Rolling, Solved,
 };
+use crate::check::notes::friction::{FrictionNote, RollerMotion};
 use crate::check::Symbol;
 use crate::construct::{ConstructionError, Context, Item, Recorder, Role};
 use crate::geom::{Circle, DVec2, Line, Segment, Side};
@@ -420,34 +421,23 @@ fn balance(
 
 /// The notes: k/h against f at each contact (pure rolling, or where the rollers slide), and
 /// the erratum R_n2 with the gain of the rollers.
-fn notes(name: &str, c: &Rolling, twin: &RollingTwin) -> Vec<String> {
-    let verdict = |ratio: f64, f: f64| if ratio < f { "<" } else { "≥" };
+fn notes(name: &str, c: &Rolling, twin: &RollingTwin) -> Vec<FrictionNote> {
+    let (p, rolling) = (twin.p, twin.p_rolling);
     vec![
-        format!(
-            "{name}: k₁/h = {:.3e} {} f₁ = {}, k₂/h = {:.3e} {} f₂ = {}: {}",
-            twin.ratio1,
-            verdict(twin.ratio1, c.f1),
-            c.f1,
-            twin.ratio2,
-            verdict(twin.ratio2, c.f2),
-            c.f2,
-            match twin.slide {
-                None => "pure rolling".to_string(),
-                Some(Slide::OnRollers) => format!(
-                    "the rollers slide: the load slides on them, P = Q·f₁ = {} N (rolling would take {} N)",
-                    twin.p, twin.p_rolling
-                ),
-                Some(Slide::OnPlane) => format!(
-                    "the rollers slide: the load slides on the plane with them, P = (Q + 2G)·f₂ = {} N (rolling would take {} N)",
-                    twin.p, twin.p_rolling
-                ),
-            }
-        ),
-        format!(
-            "{name}: R_n1 = Q, R_n2 = Q + 2G = {} N (the seed misprints the second as R_n1); \
-             without rollers P = Q·f₂ is {:.1} times larger",
-            twin.r_n2,
-            twin.p_sliding / twin.p
-        ),
+        FrictionNote::Rolling {
+            case: name.to_string(),
+            first: (twin.ratio1, c.f1),
+            second: (twin.ratio2, c.f2),
+            motion: match twin.slide {
+                None => RollerMotion::Rolling,
+                Some(Slide::OnRollers) => RollerMotion::OnRollers { p, rolling },
+                Some(Slide::OnPlane) => RollerMotion::OnPlane { p, rolling },
+            },
+        },
+        FrictionNote::RollingErratum {
+            case: name.to_string(),
+            r_n2: twin.r_n2,
+            gain: twin.p_sliding / twin.p,
+        },
     ]
 }

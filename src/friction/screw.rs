@@ -9,6 +9,7 @@ use super::{
     friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Incline,
     Motion, Screw, Solved,
 };
+use crate::check::notes::FrictionNote;
 use crate::check::Symbol;
 use crate::construct::{ConstructionError, Context, Item, Role};
 use crate::geom::{DVec2, Segment, Side};
@@ -151,19 +152,16 @@ pub(super) fn solve(
         twin.moment,
         cond,
     ));
-    let mut notes = vec![format!(
-        "{}: screw as an inclined plane of the lead angle, P = Q·tg(λ {} φ′), f′ = f/cos(δ/2); \
-         the seed's substitution cos(λ + π/2 + φ) = cos(λ + φ) is false as written",
-        case.name,
-        if c.motion == Motion::Up { "+" } else { "−" }
-    )];
+    let mut notes = vec![FrictionNote::ScrewErratum {
+        case: case.name.clone(),
+        up: c.motion == Motion::Up,
+    }];
     if twin.self_locking {
-        notes.push(format!(
-            "{}: self-locking: λ = {:.2}° ≤ φ′ = {:.2}°",
-            case.name,
-            c.lead.to_degrees(),
-            twin.phi_reduced.to_degrees()
-        ));
+        notes.push(FrictionNote::SelfLocking {
+            case: case.name.clone(),
+            lead: c.lead,
+            phi: twin.phi_reduced,
+        });
     }
     Ok(Solved {
         case: case.clone(),

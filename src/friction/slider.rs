@@ -20,6 +20,7 @@ use super::{
     friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Reading,
     Slider, Solved,
 };
+use crate::check::notes::friction::{FrictionNote, SliderMotion};
 use crate::check::Symbol;
 use crate::construct::{ConstructionError, Context, Item, Role};
 use crate::geom::{DVec2, Segment, Side};
@@ -325,20 +326,20 @@ pub(super) fn solve(
             cond,
         ),
     ];
-    let word = |s: SliderState| match s {
-        SliderState::Rest => "at rest",
-        SliderState::Uniform => "uniform motion",
-        SliderState::Accelerating => "accelerating",
+    let motion = |s: SliderState| match s {
+        SliderState::Rest => SliderMotion::Rest,
+        SliderState::Uniform => SliderMotion::Uniform,
+        SliderState::Accelerating => SliderMotion::Accelerating,
     };
-    let notes = vec![format!(
-        "{name}: α = {:.2}°, φ = {:.2}°, φ₀ = {:.2}°: {} by the angles, {} by the triangle (ΔP = {:.4} N read)",
-        c.alpha.to_degrees(),
-        twin.phi.to_degrees(),
-        twin.phi0.to_degrees(),
-        word(twin.state),
-        word(state),
-        t.net
-    )];
+    let notes = vec![FrictionNote::Slider {
+        case: name.to_string(),
+        alpha: c.alpha,
+        phi: twin.phi,
+        phi0: twin.phi0,
+        by_angles: motion(twin.state),
+        by_triangle: motion(state),
+        net: t.net,
+    }];
     Ok(Solved {
         case: case.clone(),
         drawings: vec![scheme, t.drawing],

@@ -2,6 +2,7 @@
 //! against the twins, and the properties of friction.
 
 use super::*;
+use crate::check::notes::friction::{FrictionNote, RollerMotion, SliderMotion};
 use crate::construct::Drafting;
 use proptest::prelude::*;
 
@@ -193,7 +194,10 @@ fn w3_read_at_half_a_millimetre_shows_a_percent_level_error() {
     let p = &s.readings[0].row;
     let rel = (p.graphical - p.analytic).abs() / p.analytic;
     assert!(rel > 0.0 && rel < 0.05, "{rel}");
-    assert!(s.notes.iter().any(|n| n.contains("R_n1")));
+    assert!(s
+        .notes
+        .iter()
+        .any(|n| matches!(n, FrictionNote::RollingErratum { .. })));
 }
 
 /// Rollers whose rolling resistance exceeds the friction (k/h ≥ f): they slide, and the force
@@ -236,11 +240,12 @@ fn rollers_that_slide_take_the_sliding_force() {
             p.analytic
         );
         assert!(close(p.analytic, rolling_twin(&c).p, 1e-15));
-        assert!(s
-            .notes
-            .iter()
-            .any(|n| n.contains("the rollers slide")
-                && n.contains(&format!("{} N", rolling_twin(&c).p))));
+        let p = rolling_twin(&c).p;
+        assert!(s.notes.iter().any(|n| matches!(n,
+            FrictionNote::Rolling {
+                motion: RollerMotion::OnRollers { p: q, .. } | RollerMotion::OnPlane { p: q, .. },
+                ..
+            } if *q == p)));
     }
 }
 
@@ -431,16 +436,17 @@ fn a_slider_is_at_rest_moves_uniformly_or_accelerates_as_its_force_meets_the_con
             if state == SliderState::Rest {
                 assert!(row("R_s").graphical < limit);
             }
-            let word = match state {
-                SliderState::Rest => "at rest by the angles, at rest by the triangle",
-                SliderState::Uniform => {
-                    "uniform motion by the angles, uniform motion by the triangle"
-                }
-                SliderState::Accelerating => {
-                    "accelerating by the angles, accelerating by the triangle"
-                }
+            let motion = match state {
+                SliderState::Rest => SliderMotion::Rest,
+                SliderState::Uniform => SliderMotion::Uniform,
+                SliderState::Accelerating => SliderMotion::Accelerating,
             };
-            assert!(s.notes[0].contains(word), "{}", s.notes[0]);
+            assert!(
+                matches!(s.notes[0], FrictionNote::Slider { by_angles, by_triangle, .. }
+                    if by_angles == motion && by_triangle == motion),
+                "{:?}",
+                s.notes[0]
+            );
         }
     }
 }

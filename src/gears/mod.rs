@@ -31,26 +31,21 @@ mod tests_closing;
 mod tests_limits;
 mod trace;
 mod train;
-// The train's notes stay beside the room until the typed notes (issue 46 §3) land: they
-// reach its layout and study by these names.
-mod train_notes;
-use train::{layout as train_layout, study as train_study};
 mod triangles;
 mod undercut;
 
 pub use detail::{DetailMark, DETAIL_NAME_WITHIN_MM};
 pub use differential::Differential;
 pub use generate::{generate, Generation, DETAIL_LETTER};
-pub use involute::{compass_involute, inv, inv_inverse, CompassInvolute};
+pub use involute::{compass_involute, dms, inv, inv_inverse, CompassInvolute, TABLE_DIGITS};
 pub use mesh::{LAMBDA_MM, NAME_WITHIN_MM};
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
 pub use rows::PairSeed;
 pub use train::{
-    train_study, Closing, Mesh, PlanetarySpec, Stage, Train, TrainError, TrainMobility, TrainSeed,
-    TrainStudy, Wheel,
+    train_study, Closing, Mesh, PlanetarySpec, SeedStage, Stage, Train, TrainError, TrainMobility,
+    TrainSeed, TrainStudy, Wheel,
 };
-pub use train_notes::SeedStage;
 
 use crate::scale::Scale;
 use thiserror::Error;
@@ -349,24 +344,29 @@ impl GearStudy {
         [pair, rest]
     }
     /// The notes: the pair's (with the seeds' errata), each generation's.
-    pub fn notes(&self) -> Vec<String> {
-        let mut out = Vec::new();
+    pub fn notes(&self) -> Vec<crate::check::Note> {
+        use crate::check::notes::GearsNote;
+        use crate::check::Note;
+        let mut out: Vec<Note> = Vec::new();
         if let Some((p, m)) = &self.pair {
-            out.extend(rows::pair_notes(p, self.seed.as_ref()));
-            out.push(format!(
-                "gears: the compass involute of wheel 1 through P (N₁P in 4 parts) deviates from the exact one by {} mm (chord-vs-arc error of one step {} mm)",
-                crate::scale::format_sig(m.compass.0 * 1e3, 3, crate::scale::Lang::En),
-                crate::scale::format_sig(m.compass.1 * 1e3, 3, crate::scale::Lang::En),
-            ));
+            out.extend(
+                rows::pair_notes(p, self.seed.as_ref())
+                    .into_iter()
+                    .map(Note::from),
+            );
+            out.push(Note::from(GearsNote::Compass {
+                deviation: m.compass.0,
+                step: m.compass.1,
+            }));
         }
         if let Some(b) = &self.blocking {
-            out.extend(b.notes());
+            out.extend(b.notes().into_iter().map(Note::from));
         }
         for (name, g) in &self.racks {
-            out.extend(rows::generation_notes(name, g));
+            out.extend(rows::generation_notes(name, g).into_iter().map(Note::from));
         }
         if let Some(t) = &self.train {
-            out.extend(t.notes());
+            out.extend(t.notes().into_iter().map(Note::from));
         }
         out
     }

@@ -5,8 +5,8 @@ use super::generate::Generation;
 use super::involute::thickness_at;
 use super::mesh::Meshing;
 use super::{x_for_tip, x_min_textbook, Pair, MIN_TIP};
+use crate::check::notes::gears::{Cut, GearsNote, Junction, PairIndices, WrongBase};
 use crate::check::{Key, Method, Row, Symbol};
-use crate::scale::{format_sig, Lang};
 use std::f64::consts::FRAC_PI_2;
 
 /// A row of the whole scene.
@@ -25,11 +25,6 @@ pub(super) fn row(
         analytic,
         scale,
     )
-}
-
-/// A number for the notes.
-fn num(x: f64, sig: usize) -> String {
-    format_sig(x, sig, Lang::En)
 }
 
 /// The pair's rows by formula: each quantity by the textbook's chain (graphical column)
@@ -310,75 +305,44 @@ pub fn generation_rows(name: &str, g: &Generation) -> Vec<Row> {
 
 /// The notes of a generation: undercut (drawing and criterion), pointing, x_min, the
 /// feasible range of x, the junction.
-pub fn generation_notes(name: &str, g: &Generation) -> Vec<String> {
+pub fn generation_notes(name: &str, g: &Generation) -> Vec<GearsNote> {
     let c = &g.cutting;
     let m = c.module;
-    let mut out = Vec::new();
-    let depth = (-c.rack.per_module().vj - c.x) * m;
-    let limit = c.r() * c.rack.alpha.sin().powi(2);
-    out.push(format!(
-        "gears: wheel {name} (z = {}, x = {}) cut by the rack in {} steps: undercut {} on the drawing ({}), {} by the criterion (the flank's end {} mm below the pitch line, the limit r·sin²α = {} mm)",
-        c.z,
-        num(c.x, 4),
-        g.steps,
-        if g.undercut { "shown" } else { "not shown" },
-        if g.undercut {
-            "the fillet crosses the involute"
-        } else {
-            "the fillet meets the involute tangentially"
-        },
-        if c.undercut() { "undercut" } else { "no undercut" },
-        num(depth * 1e3, 5),
-        num(limit * 1e3, 5),
-    ));
-    let range = x_for_tip(c.z, &c.rack, MIN_TIP).map_or_else(
-        || "no shift gives s_a = 0.3m".to_string(),
-        |x| {
-            let empty = if x < c.x_min() {
-                " (empty: no shift avoids both undercut and pointing)"
-            } else {
-                ""
-            };
-            format!(
-                "x_min = {} … x(s_a = 0.3m) = {}{empty}",
-                num(c.x_min(), 4),
-                num(x, 4)
-            )
-        },
-    );
-    let rule = if textbook_rule_holds(&c.rack) {
-        format!(
-            " (the textbook's (17 − z)/17 = {})",
-            num(x_min_textbook(c.z), 4)
-        )
-    } else {
-        String::new()
-    };
-    out.push(format!(
-        "gears: wheel {name}: x_min = h_a* − z·sin²α/2 = {}{rule}; feasible shift: {range}",
-        num(c.x_min(), 4),
-    ));
+    let wheel = || name.to_string();
     let exact = c.junction().0;
-    out.push(format!(
-        "gears: wheel {name}: the involute meets the fillet at r = {} mm on the drawing, {} mm exactly (the involute and the trochoid intersected{}): {}·m apart; the touching points lie on the exact curves to {}·m",
-        num(g.junction.length() * 1e3, 6),
-        num(exact.length() * 1e3, 6),
-        if c.undercut() { "" } else { ": they meet tangentially at the flank's end" },
-        num((g.junction - exact).length() / m, 3),
-        num(g.touch_error / m, 2),
-    ));
-    out.push(format!(
-        "gears: wheel {name}: tip thickness s_a = {} mm = {}·m read off the drawing ({} mm exact){}",
-        num(g.sa * 1e3, 5),
-        num(g.sa / m, 4),
-        num(c.sa() * 1e3, 5),
-        if g.pointed {
-            ": pointed (s_a < 0.3m)"
-        } else {
-            ""
-        }
-    ));
-    out
+    vec![
+        GearsNote::Cut(Cut {
+            wheel: wheel(),
+            z: c.z,
+            x: c.x,
+            steps: g.steps,
+            drawn: g.undercut,
+            undercut: c.undercut(),
+            depth: (-c.rack.per_module().vj - c.x) * m,
+            limit: c.r() * c.rack.alpha.sin().powi(2),
+        }),
+        GearsNote::Shift {
+            wheel: wheel(),
+            x_min: c.x_min(),
+            textbook: textbook_rule_holds(&c.rack).then(|| x_min_textbook(c.z)),
+            pointing: x_for_tip(c.z, &c.rack, MIN_TIP),
+        },
+        GearsNote::Junction(Junction {
+            wheel: wheel(),
+            drawn: g.junction.length(),
+            exact: exact.length(),
+            undercut: c.undercut(),
+            apart: (g.junction - exact).length() / m,
+            touch: g.touch_error / m,
+        }),
+        GearsNote::Tip {
+            wheel: wheel(),
+            read: g.sa,
+            module: m,
+            exact: c.sa(),
+            pointed: g.pointed,
+        },
+    ]
 }
 
 /// The centre distance of the textbook's table route: y = x_Σ − Δy with the table's Δy,
@@ -409,83 +373,67 @@ pub struct PairSeed {
 /// checked against this pair — an α_w off the table's own reading, an ε_α from the base
 /// radius r·cos α_w (seed 000: 1.22), a cos α_w misread with the a_w it gives (seed 002 PZ3:
 /// 0.8836, 180.79 mm), a pitch that is not πm.
-pub fn pair_notes(p: &Pair, seed: Option<&PairSeed>) -> Vec<String> {
+pub fn pair_notes(p: &Pair, seed: Option<&PairSeed>) -> Vec<GearsNote> {
     let m = p.spec.module;
     let seed = seed.copied().unwrap_or_default();
-    let mut out = vec![format!(
-        "gears: pair z = {}/{}, x = {}/{}: α_w = {}°, a_w = {} mm, y = {}, Δy = {}, ε_α = {}{}; radial clearances {} and {} mm (c*·m = {} mm)",
-        p.spec.z[0],
-        p.spec.z[1],
-        num(p.spec.x[0], 4),
-        num(p.spec.x[1], 4),
-        num(p.alpha_w.to_degrees(), 7),
-        num(p.a_w * 1e3, 7),
-        num(p.y, 5),
-        num(p.dy, 5),
-        num(p.eps, 5),
-        if p.eps < 1.1 { " (below the 1.1 the course asks for)" } else { "" },
-        num(p.clearance[0] * 1e3, 5),
-        num(p.clearance[1] * 1e3, 5),
-        num(p.spec.rack.c * m * 1e3, 4),
-    )];
+    let mut out = vec![GearsNote::Pair(PairIndices {
+        z: p.spec.z,
+        x: p.spec.x,
+        alpha_w: p.alpha_w,
+        a_w: p.a_w,
+        y: p.y,
+        dy: p.dy,
+        eps: p.eps,
+        clearance: p.clearance,
+        nominal: p.spec.rack.c * m,
+    })];
     // The table route: inv α_w written to six decimals and read in the inv table.
     if let Some(table) = super::involute::alpha_by_table(p.inv_w) {
-        use super::involute::{dms, TABLE_DIGITS};
         // A printed α_w more than half a second off the table's reading is not reproduced.
         let printed = seed
             .alpha_w
             .filter(|a| (a - table).abs() > (0.5 / 3600.0_f64).to_radians());
-        out.push(format!(
-            "gears: by the inv table (a row every 1′ to {TABLE_DIGITS} decimals, read linearly): inv α_w = {:.6} → α_w = {} (exact {}){}",
-            p.inv_w,
-            dms(table, 0),
-            dms(p.alpha_w, 1),
-            printed.map_or_else(String::new, |a| format!(
-                "; the seed prints {}, {}″ off the table's own reading: not reproduced",
-                dms(a, 0),
-                num(((a - table).abs().to_degrees() * 3600.0).round(), 3),
-            ))
-        ));
+        out.push(GearsNote::InvTable {
+            inv: p.inv_w,
+            table,
+            exact: p.alpha_w,
+            printed,
+        });
     }
     if p.spec.dy_table.is_some() {
-        let y = p.spec.x_sum() - p.dy;
-        out.push(format!(
-            "gears: by the tables: Δy = {} (table), y = x_Σ − Δy = {}, a_w = m(z_Σ/2 + y) = {} mm against the exact {} mm (y = {}); the tip radii take the table's Δy",
-            num(p.dy, 4),
-            num(y, 5),
-            num(table_a_w(p) * 1e3, 7),
-            num(p.a_w * 1e3, 7),
-            num(p.y, 5),
-        ));
+        out.push(GearsNote::Tables {
+            dy: p.dy,
+            y: p.spec.x_sum() - p.dy,
+            a_w: table_a_w(p),
+            exact: p.a_w,
+            y_exact: p.y,
+        });
     }
     out.extend(seed_notes(p, &seed));
     out
 }
 
 /// The erratum notes of the printed values that this pair does not reproduce.
-fn seed_notes(p: &Pair, seed: &PairSeed) -> Vec<String> {
+fn seed_notes(p: &Pair, seed: &PairSeed) -> Vec<GearsNote> {
     let mut out = Vec::new();
     // The base radius r·cos α_w and the base pitch πm·cos α_w (seed 000 §4).
     let wrong_pb = p.p * p.alpha_w.cos();
     let from_wrong_base = p.ab / wrong_pb;
     if let Some(e) = seed.eps_alpha.filter(|e| (e - p.eps).abs() > 0.005) {
         out.push(if (e - from_wrong_base).abs() < 0.01 {
-            format!(
-                "gears: erratum: the seed's ε_α = {} comes from the base radii r·cos α_w = {}/{} mm and the base pitch πm·cos α_w = {} mm (ε_α = B₁B₂/(πm·cos α_w) = {}); the base pitch is πm·cos α = {} mm and ε_α = {}",
-                num(e, 4),
-                num(p.r[0] * p.alpha_w.cos() * 1e3, 5),
-                num(p.r[1] * p.alpha_w.cos() * 1e3, 5),
-                num(wrong_pb * 1e3, 5),
-                num(from_wrong_base, 4),
-                num(p.p_b * 1e3, 5),
-                num(p.eps, 5),
-            )
+            GearsNote::EpsFromWrongBase(WrongBase {
+                printed: e,
+                radii: [p.r[0] * p.alpha_w.cos(), p.r[1] * p.alpha_w.cos()],
+                pitch: wrong_pb,
+                eps_from: from_wrong_base,
+                p_b: p.p_b,
+                eps: p.eps,
+            })
         } else {
-            format!(
-                "gears: erratum: the seed's ε_α = {} is not reproducible; ε_α = {}",
-                num(e, 4),
-                num(p.eps, 5),
-            )
+            GearsNote::EpsNotReproduced {
+                printed: e,
+                eps: p.eps,
+            }
         });
     }
     // A misread cos α_w and the centre distance a·cos α / cos α_w it gives (seed 002 PZ3).
@@ -493,31 +441,24 @@ fn seed_notes(p: &Pair, seed: &PairSeed) -> Vec<String> {
         .cos_alpha_w
         .filter(|c| (c - p.alpha_w.cos()).abs() > 5e-5)
     {
-        let wrong_aw = p.a * p.spec.rack.alpha.cos() / c;
-        let printed = seed.a_w.map_or_else(String::new, |a| {
-            format!(" (the seed prints {} mm)", num(a * 1e3, 5))
+        out.push(GearsNote::CosMisread {
+            read: c,
+            a_w_read: p.a * p.spec.rack.alpha.cos() / c,
+            printed: seed.a_w,
+            cos: p.alpha_w.cos(),
+            a_w: p.a_w,
         });
-        out.push(format!(
-            "gears: erratum: cos α_w read as {} (= cos {}°) gives a_w = {} mm{printed}; cos α_w = {} gives a_w = {} mm",
-            num(c, 4),
-            num(c.clamp(-1.0, 1.0).acos().to_degrees(), 4),
-            num(wrong_aw * 1e3, 5),
-            num(p.alpha_w.cos(), 4),
-            num(p.a_w * 1e3, 5),
-        ));
     } else if let Some(a) = seed.a_w.filter(|a| (a - p.a_w).abs() > 5e-6) {
-        out.push(format!(
-            "gears: erratum: the seed's a_w = {} mm is not reproducible; a_w = {} mm",
-            num(a * 1e3, 5),
-            num(p.a_w * 1e3, 5),
-        ));
+        out.push(GearsNote::AwNotReproduced {
+            printed: a,
+            a_w: p.a_w,
+        });
     }
     if let Some(t) = seed.pitch.filter(|t| (t - p.p).abs() > 5e-6) {
-        out.push(format!(
-            "gears: erratum: the printed \"p = {} mm\" contradicts p = πm = {} mm",
-            num(t * 1e3, 4),
-            num(p.p * 1e3, 5),
-        ));
+        out.push(GearsNote::Pitch {
+            printed: t,
+            pitch: p.p,
+        });
     }
     out
 }

@@ -7,6 +7,7 @@ use super::involute::{
 };
 use super::mesh::meshing;
 use super::*;
+use crate::check::notes::GearsNote;
 use crate::construct::{Context, Drafting, Item, Role};
 use crate::geom::{DVec2, Segment};
 use crate::scale::{Quantity, Scale};
@@ -108,25 +109,48 @@ fn pz3_pair_geometry_and_its_errata() {
         pitch: Some(0.01413),
         ..Default::default()
     };
-    let notes = rows::pair_notes(&p, Some(&printed)).join("\n");
+    let notes = rows::pair_notes(&p, Some(&printed));
     assert!(
-        notes.contains("a_w = 180.79 mm")
-            && notes.contains("p = 14.13 mm")
-            && notes.contains("ε_α = 1.14 is not reproducible"),
-        "{notes}"
+        notes.contains(&GearsNote::CosMisread {
+            read: 0.8836,
+            a_w_read: p.a * p.spec.rack.alpha.cos() / 0.8836,
+            printed: Some(0.18079),
+            cos: p.alpha_w.cos(),
+            a_w: p.a_w,
+        }) && notes.contains(&GearsNote::Pitch {
+            printed: 0.01413,
+            pitch: p.p,
+        }) && notes.contains(&GearsNote::EpsNotReproduced {
+            printed: 1.14,
+            eps: p.eps,
+        }),
+        "{notes:?}"
     );
-    assert!(!rows::pair_notes(&p, None).join("\n").contains("erratum"));
+    assert!(!rows::pair_notes(&p, None).iter().any(erratum));
+}
+
+/// A note that flags a value the seed prints.
+fn erratum(n: &GearsNote) -> bool {
+    matches!(
+        n,
+        GearsNote::EpsFromWrongBase(_)
+            | GearsNote::EpsNotReproduced { .. }
+            | GearsNote::CosMisread { .. }
+            | GearsNote::AwNotReproduced { .. }
+            | GearsNote::Pitch { .. }
+            | GearsNote::InvTable {
+                printed: Some(_),
+                ..
+            }
+    )
 }
 
 #[test]
 fn a_pair_without_printed_values_gets_no_erratum() {
     // A student's own pair (z = 12/28, m = 6): no seed, no seed's erratum.
     let p = pair(6.0, [12, 28], [0.3, 0.0]);
-    let notes = rows::pair_notes(&p, None).join("\n");
-    assert!(
-        !notes.contains("erratum") && !notes.contains("seed"),
-        "{notes}"
-    );
+    let notes = rows::pair_notes(&p, None);
+    assert!(!notes.iter().any(erratum), "{notes:?}");
     // Seed 000's printed ε_α = 1.22 and α_w = 26°34′45″ against its pair: both flagged, the
     // ε_α traced to the base radius r·cos α_w.
     let s0 = seed000();
@@ -135,23 +159,26 @@ fn a_pair_without_printed_values_gets_no_erratum() {
         alpha_w: Some((26.0 + 34.0 / 60.0 + 45.0 / 3600.0_f64).to_radians()),
         ..Default::default()
     };
-    let notes = rows::pair_notes(&s0, Some(&printed)).join("\n");
+    let notes = rows::pair_notes(&s0, Some(&printed));
     assert!(
-        notes.contains("the seed's ε_α = 1.22 comes from the base radii r·cos α_w"),
-        "{notes}"
+        notes
+            .iter()
+            .any(|n| matches!(n, GearsNote::EpsFromWrongBase(w) if w.printed == 1.22)),
+        "{notes:?}"
     );
+    // 6″ off the table's own reading.
     assert!(
-        notes.contains("the seed prints 26°34′45″, 6″ off the table's own reading"),
-        "{notes}"
+        notes.iter().any(|n| matches!(n,
+            GearsNote::InvTable { table, printed: Some(a), .. }
+                if ((a - table).abs().to_degrees() * 3600.0).round() == 6.0)),
+        "{notes:?}"
     );
     // A printed value the pair reproduces is not flagged.
     let right = rows::PairSeed {
         eps_alpha: Some((s0.eps * 100.0).round() / 100.0),
         ..Default::default()
     };
-    assert!(!rows::pair_notes(&s0, Some(&right))
-        .join("\n")
-        .contains("erratum"));
+    assert!(!rows::pair_notes(&s0, Some(&right)).iter().any(erratum));
 }
 
 #[test]
@@ -485,7 +512,6 @@ fn the_tables_delta_y_reproduces_the_seeds_rounded_numbers() {
         (p.a_w * 1e3 - 316.2764).abs() < 1e-4,
         "the centre distance stays exact"
     );
-    assert!(super::rows::pair_notes(&p, None)
-        .iter()
-        .any(|n| n.contains("316.274")));
+    assert!(super::rows::pair_notes(&p, None).iter().any(|n| matches!(n,
+        GearsNote::Tables { a_w, .. } if (a_w * 1e3 - 316.274).abs() < 5e-4)));
 }

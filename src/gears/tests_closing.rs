@@ -6,6 +6,7 @@
 use super::tests::ctx;
 use super::train::tests::{pz2_example_1, pz2_example_2, pz2_james, train};
 use super::*;
+use crate::check::notes::TrainNote;
 
 /// The module of wheel `name`.
 fn module_of(t: &Train, name: &str) -> Option<f64> {
@@ -122,15 +123,21 @@ fn a_printed_ratio_is_reproduced_or_traced_to_its_stage() {
     let s = ex2.seed_stage().unwrap();
     assert_eq!((s.a.as_str(), s.f.as_str()), ("3", "6"));
     assert!((s.needed - 6.0).abs() < 1e-12 && (s.teeth - 9.0).abs() < 1e-12);
-    let notes = ex2.notes().join("\n");
+    let notes = ex2.notes();
     assert!(
-        notes.contains("erratum: the seed prints u_A_H = 20"),
-        "{notes}"
+        notes.iter().any(|n| matches!(n,
+            TrainNote::SeedRatioErratum { name, printed, stage: Some(s), .. }
+                if name == "u_A_H" && *printed == 20.0 && s.a == "3")),
+        "{notes:?}"
     );
-    assert!(notes.contains("the seed's W = 1 reproduced"), "{notes}");
+    assert!(
+        notes.contains(&TrainNote::SeedMobility { w: 1 }),
+        "{notes:?}"
+    );
     let ex1 = study(pz2_example_1(), 20.0);
     assert!(TrainSeed::reproduces(20.0, ex1.ratio));
-    assert!(ex1.notes().join("\n").contains("u_A_E = 20 reproduced"));
+    assert!(ex1.notes().iter().any(|n| matches!(n,
+        TrainNote::SeedRatio { name, printed, .. } if name == "u_A_E" && *printed == 20.0)));
     // The rounding a print allows, and no more.
     assert!(TrainSeed::reproduces(9.31, 9.30818) && !TrainSeed::reproduces(9.4, 9.30818));
 }

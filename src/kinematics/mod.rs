@@ -25,6 +25,7 @@ pub use table::analytic_table;
 pub use verdict::{by_position, verdict_notes, verdicts, Turning, Verdict};
 
 use crate::calculus::{self, Diagram, Scales};
+use crate::check::notes::kinematics::{KinematicsNote, NearPivot};
 use crate::check::Row;
 use crate::construct::ConstructionError;
 use crate::geom::{bisect, DVec2, Midpoint};
@@ -236,24 +237,21 @@ pub fn numbered(plan: &PositionPlan) -> Vec<(usize, &crate::linkage::PlanPositio
 
 /// A note for every position where a slotted link's pin passes close to its pivot
 /// ([`crate::linkage::NearPivot`]): the link's rate there is true but huge and ill-conditioned.
-pub fn near_pivot_notes(plan: &PositionPlan, w1: f64) -> Vec<String> {
+pub fn near_pivot_notes(plan: &PositionPlan, w1: f64) -> Vec<KinematicsNote> {
     let names = &plan.program.names;
     let mut out = Vec::new();
     for p in &plan.positions {
         for n in &p.pose.near_pivot {
-            let (pin, pivot) = (&names[n.pin], &names[n.pivot]);
-            out.push(format!(
-                "position {}: the pin {pin} passes {:.3e} m from the pivot {pivot} of the slotted link {} (group {}, |d{pivot}{pin}/dφ₁| = {:.4} m): the link turns at ω_{} = {:.4e} rad/s, {:.2e} times the crank's rate; the values at this position are true but ill-conditioned (a change of {:.1e} m in a length of the mechanism changes them by about 100 %)",
-                p.label,
-                n.distance,
-                n.link,
-                n.group + 1,
-                n.speed,
-                n.link,
-                p.pose.dangle[n.link] * w1,
-                n.speed / n.distance,
-                n.distance
-            ));
+            out.push(KinematicsNote::NearPivot(NearPivot {
+                position: p.label.clone(),
+                pin: names[n.pin].clone(),
+                pivot: names[n.pivot].clone(),
+                distance: n.distance,
+                link: n.link,
+                group: n.group,
+                speed: n.speed,
+                omega: p.pose.dangle[n.link] * w1,
+            }));
         }
     }
     out

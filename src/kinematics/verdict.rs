@@ -4,6 +4,7 @@
 //! ω and ε read off them, the twin from its closed forms — so a sense read wrongly on the
 //! plan shows as a disagreement.
 
+use crate::check::notes::KinematicsNote;
 use crate::check::{At, Method, Row, Symbol};
 
 /// How a link turns at an instant.
@@ -123,28 +124,15 @@ pub fn by_position(verdicts: &[Verdict]) -> Vec<(&str, [Vec<&str>; 3])> {
 
 /// The report's notes: per position, the links accelerating and decelerating by the plans,
 /// and whether the twin agrees.
-pub fn verdict_notes(verdicts: &[Verdict]) -> Vec<String> {
-    let links = |l: &[&str]| {
-        if l.is_empty() {
-            "none".to_string()
-        } else {
-            format!("links {}", l.join(", "))
-        }
-    };
+pub fn verdict_notes(verdicts: &[Verdict]) -> Vec<KinematicsNote> {
+    let owned = |l: Vec<&str>| l.into_iter().map(str::to_string).collect();
     by_position(verdicts)
         .into_iter()
-        .map(|(p, [up, down, differ])| {
-            let twin = if differ.is_empty() {
-                "the analytic twin agrees".to_string()
-            } else {
-                let l: Vec<String> = differ.iter().map(|l| format!("link {l}")).collect();
-                format!("the analytic twin differs for {}", l.join(", "))
-            };
-            format!(
-                "position {p}: accelerating (ω and ε in one sense) by the plans: {}; decelerating: {}; {twin}",
-                links(&up),
-                links(&down)
-            )
+        .map(|(p, [up, down, differ])| KinematicsNote::Turning {
+            position: p.to_string(),
+            accelerating: owned(up),
+            decelerating: owned(down),
+            differ: owned(differ),
         })
         .collect()
 }
@@ -194,9 +182,15 @@ mod tests {
             [("2", D, Some(D)), ("3", A, Some(A)), ("4", D, Some(A))]
         );
         let notes = verdict_notes(&v);
+        let owned = |l: &[&str]| l.iter().map(|s| s.to_string()).collect::<Vec<_>>();
         assert_eq!(
             notes,
-            ["position 1: accelerating (ω and ε in one sense) by the plans: links 3; decelerating: links 2, 4; the analytic twin differs for link 4"]
+            [KinematicsNote::Turning {
+                position: "1".into(),
+                accelerating: owned(&["3"]),
+                decelerating: owned(&["2", "4"]),
+                differ: owned(&["4"]),
+            }]
         );
     }
 }

@@ -31,7 +31,7 @@ struct JsonReport<'a> {
     rows: Vec<JsonRow>,
     summary: JsonSummary<'a>,
     tables: Vec<JsonTable<'a>>,
-    notes: &'a [String],
+    notes: Vec<String>,
 }
 
 #[derive(Serialize)]
@@ -136,7 +136,7 @@ impl Report {
                     .collect(),
             },
             tables: self.tables.iter().map(json_table).collect(),
-            notes: &self.notes,
+            notes: self.note_texts(),
         })
     }
 
@@ -225,7 +225,7 @@ impl Report {
         for t in &self.tables {
             table_markdown(&mut out, t, lang);
         }
-        for n in &self.notes {
+        for n in self.note_texts() {
             out.push_str(&format!("* {n}\n"));
         }
         out

@@ -23,6 +23,7 @@
 //! for an absent value; Markdown writes it the same way.
 
 mod format;
+mod notes;
 #[cfg(test)]
 pub(crate) mod tests;
 

@@ -58,12 +58,12 @@ impl<'s> Session<'s> {
     fn report_cam(&self, rep: &mut Report) -> Result<(), StudyError> {
         if let Some(c) = self.special_cam()? {
             rep.rows.extend(c.rows()?);
-            rep.notes.extend(c.notes()?);
+            rep.notes.extend(c.noted()?.into_iter().map(Note::from));
             return Ok(());
         }
         let c = self.cam()?;
         rep.rows.extend(c.rows());
-        rep.notes.extend(c.notes());
+        rep.notes.extend(c.noted().into_iter().map(Note::from));
         Ok(())
     }
 }

@@ -76,7 +76,8 @@ impl<'s> Session<'s> {
     fn report_dynamics(&self, rep: &mut Report) -> Result<(), StudyError> {
         let d = self.dynamics()?;
         rep.rows.extend(crate::dynamics::rows(&d));
-        rep.notes.extend(crate::dynamics::notes(&d));
+        rep.notes
+            .extend(crate::dynamics::noted(&d).into_iter().map(Note::from));
         Ok(())
     }
 }

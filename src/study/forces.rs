@@ -196,10 +196,15 @@ impl<'s> Session<'s> {
             let f = self.forces(&sc, i)?;
             rows.extend(f.rows.iter().cloned());
             rows.extend(f.residual_rows());
-            rep.notes.extend(crate::forces::notes(&f));
+            rep.notes
+                .extend(crate::forces::notes(&f).into_iter().map(Note::from));
         }
         let seed = &self.force_spec("the force analysis")?.seed;
-        rep.notes.extend(crate::check::seed_notes(seed, &rows));
+        rep.notes.extend(
+            crate::check::seed_notes(seed, &rows)
+                .into_iter()
+                .map(Note::from),
+        );
         rep.rows.extend(rows);
         Ok(())
     }

@@ -6,6 +6,7 @@ use super::*;
 
 /// The kinematic study's part of the report.
 pub(super) const PART: Part = |session, rep| session.report_kinematics(rep);
+use crate::check::notes::KinematicsNote;
 use crate::kinematics;
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
@@ -298,21 +299,22 @@ impl<'s> Session<'s> {
     /// its analytic twin, the analytic table, the notes.
     fn report_kinematics(&self, rep: &mut Report) -> Result<(), StudyError> {
         let k = self.kinematics(&self.kin_scales()?)?;
-        let mut notes: Vec<String> = k.refusals.iter().map(ToString::to_string).collect();
+        let mut notes: Vec<KinematicsNote> = k
+            .refusals
+            .iter()
+            .map(|e| KinematicsNote::Refused(e.to_string()))
+            .collect();
         // The diagrams and the rocker's diagram refused for one reason: one note.
         notes.dedup();
         notes.extend(
             k.refused()
                 .into_iter()
-                .map(|(pos, why)| format!("position {pos}: no velocity plan: {why}")),
+                .map(|(position, why)| KinematicsNote::NoPlan { position, why }),
         );
         notes.extend(k.plan.positions.iter().filter_map(|p| {
-            p.pose.toggle.as_ref().map(|t| {
-                format!(
-                    "position {}: the analytic velocities and accelerations are not determined (group {} at its toggle): null",
-                    p.label,
-                    t.group + 1
-                )
+            p.pose.toggle.as_ref().map(|t| KinematicsNote::Toggle {
+                position: p.label.clone(),
+                group: t.group,
             })
         }));
         notes.extend(crate::kinematics::near_pivot_notes(&k.plan, k.w1));
@@ -322,7 +324,7 @@ impl<'s> Session<'s> {
         ));
         rep.rows.extend(rows);
         rep.tables.push(k.table.as_ref().clone());
-        rep.notes.extend(notes);
+        rep.notes.extend(notes.into_iter().map(Note::from));
         Ok(())
     }
 }

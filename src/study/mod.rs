@@ -33,7 +33,7 @@ pub use scales::KinSheets;
 
 use crate::balancing::{Balancing, BalancingError};
 use crate::check::Row;
-use crate::check::{Report, Table};
+use crate::check::{Note, Report, Table};
 use crate::construct::{Context, Drafting, Figure};
 use crate::forces::{ForceError, ForceSpec, PositionForces};
 use crate::friction::{FrictionError, Solved};
@@ -231,8 +231,8 @@ impl<'s> Session<'s> {
         for study in studies {
             part(study.section)(self, &mut rep)?;
         }
-        rep.notes
-            .extend(crate::check::seed_notes(&self.scene.seed, &rep.rows));
+        let seed = crate::check::seed_notes(&self.scene.seed, &rep.rows);
+        rep.notes.extend(seed.into_iter().map(Note::from));
         Ok(rep)
     }
 }

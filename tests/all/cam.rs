@@ -68,7 +68,7 @@ fn seed000_report_matches_the_closed_form() {
     // The seed's 40 mm is flagged, never produced.
     assert!((rmin.analytic - 0.040).abs() > 0.02 && (rmin.graphical - 0.040).abs() > 0.02);
     assert!(r
-        .notes
+        .note_texts()
         .iter()
         .any(|n| n.contains("ERRATUM") && n.contains("40 mm")));
     // γ ≥ 60° over the whole cycle; the transmission angle per point by inversion.
@@ -118,9 +118,9 @@ fn every_cam_scene_reports_and_every_hard_case_is_diagnosed() {
     ] {
         let r = report(name, 0.0);
         assert!(
-            r.notes.iter().any(|n| n.contains(needle)),
+            r.note_texts().iter().any(|n| n.contains(needle)),
             "{name}: no note with {needle}: {:?}",
-            r.notes
+            r.note_texts()
         );
     }
     // Undercut: the largest admissible roller is below the given one.
@@ -234,9 +234,11 @@ fn a_clockwise_cam_is_the_mirror_image() {
     assert_eq!(ca.radius.figure.mirrored_x(), cb.radius.figure);
     // The scene's own offset in the notes.
     assert!(
-        rb.notes.iter().any(|n| n.contains("the scene's e = −3 mm")),
+        rb.note_texts()
+            .iter()
+            .any(|n| n.contains("the scene's e = −3 mm")),
         "{:?}",
-        rb.notes
+        rb.note_texts()
     );
     let wrong = tmm::scene::parse(
         &text.replace("offset = 3.0", "offset = 3.0\nrotation = \"cw\""),
@@ -245,11 +247,11 @@ fn a_clockwise_cam_is_the_mirror_image() {
     .unwrap();
     let rw = Session::new(&wrong, d).report().unwrap();
     assert!(
-        rw.notes
+        rw.note_texts()
             .iter()
             .any(|n| n.contains("OFFSET ON THE WRONG SIDE: e = 3 mm")),
         "{:?}",
-        rw.notes
+        rw.note_texts()
     );
     let e = refused(&format!("{GOOD}rotation = \"left\"\n"));
     assert!(e.contains("cam.rotation"), "{e}");

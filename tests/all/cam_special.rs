@@ -112,7 +112,7 @@ fn the_flat_rocker_reports_its_envelope_against_the_tests_own() {
     assert!((rho[0].analytic - 0.019128).abs() < 1e-6);
     // The drawn ρ_min (the crossings at the points): 20,33 mm, 6 % high.
     assert!((rho[0].graphical / rho[0].analytic - 1.063).abs() < 0.01);
-    assert!(r.notes.iter().all(|n| !n.contains("CONCAVE")));
+    assert!(r.note_texts().iter().all(|n| !n.contains("CONCAVE")));
 }
 
 #[test]
@@ -122,9 +122,9 @@ fn a_flat_rocker_on_too_small_a_base_circle_is_concave() {
     let rho = rows(&r, "rho_min")[0];
     assert!(rho.analytic < 0.0 && rho.graphical < 0.0, "{rho:?}");
     assert!(
-        r.notes.iter().any(|n| n.contains("CONCAVE")),
+        r.note_texts().iter().any(|n| n.contains("CONCAVE")),
         "{:?}",
-        r.notes
+        r.note_texts()
     );
 }
 
@@ -176,7 +176,7 @@ fn the_translating_cam_reports_its_closed_forms() {
     assert!((rho.graphical / rho.analytic - 1.0404).abs() < 1e-3);
     assert!(rows(&r, "profile_deviation")[0].graphical < 1e-4);
     assert!(r
-        .notes
+        .note_texts()
         .iter()
         .all(|n| !n.contains("UNDERCUT") && !n.contains("EXCEEDED")));
 }
@@ -187,7 +187,7 @@ fn a_short_travel_and_a_large_roller_are_noted() {
         .replace("travel = 360.0", "travel = 300.0")
         .replace("roller = 10.0", "roller = 70.0");
     let r = report_of(&text);
-    let notes = r.notes.join("\n");
+    let notes = r.note_texts().join("\n");
     assert!(notes.contains("EXCEEDED"), "{notes}");
     // The crest's radius scales with the travel squared near a straight: below 70 mm here.
     assert!(rows(&r, "rho_min")[0].analytic < 0.07);

@@ -176,7 +176,7 @@ fn a_guide_reaction_outside_the_slider_is_split_on_its_ends() {
     );
     let report = session.report().expect("report");
     assert!(report
-        .notes
+        .note_texts()
         .iter()
         .any(|n| n.contains("outside the slider")));
 }

@@ -44,11 +44,11 @@ fn exact_reading_agrees_with_the_twins() {
         value("F_dP_rest")
     );
     assert!(r
-        .notes
+        .note_texts()
         .iter()
         .any(|n| n.contains("rest: α = 15.00°") && n.contains("at rest by the triangle")));
-    assert!(r.notes.iter().any(|n| n.contains("erratum")));
-    assert!(r.notes.iter().any(|n| n.contains("misprints")));
+    assert!(r.note_texts().iter().any(|n| n.contains("erratum")));
+    assert!(r.note_texts().iter().any(|n| n.contains("misprints")));
 }
 
 /// The largest relative error of a report's rows.

@@ -126,7 +126,7 @@ fn the_pivot_reads_its_friction_circle_couple_and_jamming_angle() {
     // The lecture's tg λ_кр = 2L/(f·d) = 240/15 = 16: 86,42°, smaller, stated in the notes.
     assert!((16f64.atan().to_degrees() - 86.42).abs() < 0.005);
     assert!(r
-        .notes
+        .note_texts()
         .iter()
         .any(|n| n.contains("pivot") && n.contains("86.42°")));
 }

@@ -259,11 +259,11 @@ fn a_diagram_across_an_asymptote_is_refused_with_a_note() {
     let r = report("tangent");
     assert!(r.rows.iter().all(|row| row.method == tmm::Method::Plan));
     assert!(
-        r.notes
+        r.note_texts()
             .iter()
             .any(|n| n.contains("φ₁ = 90.00°") && n.contains("refused")),
         "{:?}",
-        r.notes
+        r.note_texts()
     );
     let s = scene::load(&root().join("constructions/tangent.toml")).expect("scene");
     let text = sheet_text(&s);
@@ -293,9 +293,9 @@ fn values_undetermined_at_the_change_point_are_null_not_zero() {
         .collect();
     assert!(at6.iter().all(|row| row["analytic"].is_null()));
     assert!(
-        r.notes.iter().any(|n| n.contains("not determined")),
+        r.note_texts().iter().any(|n| n.contains("not determined")),
         "{:?}",
-        r.notes
+        r.note_texts()
     );
     // The analytic table leaves the rates empty there, keeps the angles and the crank pin.
     let t = &r.tables[0];

@@ -15,12 +15,14 @@
 use thiserror::Error;
 
 pub(super) mod layout;
+mod notes;
 mod rank;
 pub(super) mod study;
 #[cfg(test)]
 pub(super) mod tests;
 
 pub use layout::Closing;
+pub use notes::SeedStage;
 pub use study::{train_study, PlanetarySpec, TrainSeed, TrainStudy};
 
 /// A wheel of a train.

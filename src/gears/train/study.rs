@@ -1,7 +1,7 @@
 //! The train study of a scene's `[planetary]`: Willis's relations solved together (the
 //! twin), the textbook's formula (the stages of a planetary train, Willis's formula of a
 //! differential) and the velocity triangles (the construction), with their rows; the notes
-//! live in `train_notes`.
+//! live in `notes`.
 
 use super::layout::Closing;
 use super::{Train, TrainError};

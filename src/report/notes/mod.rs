@@ -1,0 +1,46 @@
+//! The English of a report's notes: the one place where each typed note
+//! ([`Note`](crate::check::Note)) becomes the sentence the report writes (Markdown, JSON). The
+//! cam's and the dynamics' findings are written by
+//! [`Finding::english`](crate::check::Finding::english) inside their statements.
+
+mod balancing;
+mod forces;
+mod friction;
+mod gears;
+mod kinematics;
+mod seed;
+#[cfg(test)]
+mod tests;
+#[cfg(test)]
+mod tests_gears;
+mod train;
+
+use crate::check::{Note, Report};
+use crate::scale::{format_sig, Lang};
+
+/// A number in a note: `digits` significant digits, English decimal point.
+fn sig(x: f64, digits: usize) -> String {
+    format_sig(x, digits, Lang::En)
+}
+
+/// The note as the report writes it.
+pub fn english(note: &Note) -> String {
+    match note {
+        Note::Stated(s) => s.to_string(),
+        Note::Gears(n) => gears::english(n),
+        Note::Train(n) => train::english(n),
+        Note::Forces(n) => forces::english(n),
+        Note::Seed(n) => seed::english(n),
+        Note::Balancing(n) => balancing::english(n),
+        Note::Friction(n) => friction::english(n),
+        Note::Kinematics(n) => kinematics::english(n),
+        Note::Text(s) => s.clone(),
+    }
+}
+
+impl Report {
+    /// The notes as the report writes them, in order.
+    pub fn note_texts(&self) -> Vec<String> {
+        self.notes.iter().map(english).collect()
+    }
+}
