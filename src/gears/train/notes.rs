@@ -4,9 +4,9 @@
 //! neighbour and assembly conditions — typed ([`TrainNote`]), their English written by
 //! `report`.
 
-use super::{best_pairs, Stage, Train};
 use super::layout::teeth_across;
 use super::study::{TrainSeed, TrainStudy};
+use super::{best_pairs, Stage, Train};
 pub use crate::check::notes::train::SeedStage;
 use crate::check::notes::train::{
     Across, Assembly, Closing, Differential, FormulaBy, MeshNeeds, MeshRatio, SolvedFor, TrainNote,
