@@ -79,15 +79,19 @@ impl Segment {
     pub fn to_line(&self) -> Option<Line> {
         Line::through(self.from, self.to)
     }
-    /// The distance from `p` to the segment (to its nearer end beyond them).
-    pub fn distance_to(&self, p: DVec2) -> f64 {
+    /// The point of the segment nearest `p` (its nearer end beyond them).
+    pub fn closest(&self, p: DVec2) -> DVec2 {
         let d = self.to - self.from;
         let len2 = d.length_squared();
         if len2 == 0.0 {
-            return (p - self.from).length();
+            return self.from;
         }
         let t = ((p - self.from).dot(d) / len2).clamp(0.0, 1.0);
-        (p - (self.from + d * t)).length()
+        self.from + d * t
+    }
+    /// The distance from `p` to the segment (to its nearer end beyond them).
+    pub fn distance_to(&self, p: DVec2) -> f64 {
+        (p - self.closest(p)).length()
     }
     /// Where the carrying lines of `self` and `other` meet, and how far outside the segments
     /// that is, in their parameters (0 when inside both); `None` for lines parallel to

@@ -179,13 +179,15 @@ fn view_group(k: usize, view: &View, laid: &Layout, captioned: bool) -> Group {
     }
     let id = format!("view-{k}-labels");
     let mut labels = Group::new().set("id", id.as_str());
-    for (n, l) in laid.labels.iter().filter(|l| l.view == k).enumerate() {
+    let mut written = 0;
+    for l in laid.labels.iter().filter(|l| l.view == k) {
+        written += 1;
         if let Some(leader) = &l.leader {
-            labels = labels.add(leader_group(leader).set("id", format!("{id}-leader-{}", n + 1)));
+            labels = labels.add(leader_group(leader).set("id", format!("{id}-leader-{written}")));
         }
-        labels = labels.add(Blob::new(l.placed.to_xml(&format!("{id}-text-{}", n + 1))));
+        labels = labels.add(Blob::new(l.placed.to_xml(&format!("{id}-text-{written}"))));
     }
-    if laid.labels.iter().any(|l| l.view == k) {
+    if written > 0 {
         g = g.add(labels);
     }
     if let Some(caption) = laid.views[k].caption_text.as_ref().filter(|_| captioned) {

@@ -52,19 +52,11 @@ pub(super) fn target(r: &Request) -> DVec2 {
     r.own
         .iter()
         .filter_map(|o| match o.shape {
-            Shape::Line(a, b) => {
-                let s = Segment::new(a, b);
-                let d = b - a;
-                let t = match d.length_squared() {
-                    0.0 => 0.0,
-                    l2 => ((r.anchor - a).dot(d) / l2).clamp(0.0, 1.0),
-                };
-                Some((s.distance_to(r.anchor), s.eval(t)))
-            }
+            Shape::Line(a, b) => Some(Segment::new(a, b).closest(r.anchor)),
             Shape::Area(_) => None,
         })
-        .min_by(|a, b| a.0.total_cmp(&b.0))
-        .map_or(r.anchor, |(_, p)| p)
+        .min_by(|a, b| a.distance(r.anchor).total_cmp(&b.distance(r.anchor)))
+        .unwrap_or(r.anchor)
 }
 
 /// The places of a label of box size `size` on a leader, in order of preference: the
@@ -130,12 +122,11 @@ pub(super) const RANK: f64 = 0.01;
 /// Cost of the leader or its shelf crossing a main line of the drawing, a thin one.
 const CROSS_MAIN: f64 = 6.0;
 const CROSS_THIN: f64 = 3.0;
-/// Cost of crossing another text, another leader, or passing this near another label's
-/// point (mm): the leader would be read as that point's.
-pub(super) const OVER_TEXT: f64 = 1e3;
+/// Cost of crossing another leader; of passing this near another label's point (mm), which
+/// costs what covering it does (`place::OVER_POINT`): the leader would be read as that
+/// point's. Crossing a text costs what covering it does (`place::OVER_TEXT`).
 const OVER_LEADER: f64 = 200.0;
 const PAST_POINT_MM: f64 = 1.0;
-const PAST_POINT: f64 = 60.0;
 /// Lines through the object itself are not crossings: within this of it, mm.
 const AT_OBJECT_MM: f64 = 1.0;
 /// A leader (or its shelf) within this of a line of the drawing and within [`ALONG_DEG`] of
@@ -176,7 +167,7 @@ pub(super) fn cost(
         ALONG_LINE * (along_lines(&line, l.to, lines) + along_lines(&shelf, l.to, lines)) as f64;
     for p in points {
         if line.distance_to(*p) < PAST_POINT_MM {
-            cost += PAST_POINT;
+            cost += place::OVER_POINT;
         }
     }
     for t in texts {
@@ -184,7 +175,7 @@ pub(super) fn cost(
             .iter()
             .any(|s| place::clipped_length(s.from, s.to, t) > 0.0)
         {
-            cost += OVER_TEXT;
+            cost += place::OVER_TEXT;
         }
     }
     for other in leaders {

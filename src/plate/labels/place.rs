@@ -20,10 +20,10 @@ pub(super) struct Placer<'a> {
 /// Cost of a box leaving the frame or entering the title block.
 const OUTSIDE: f64 = 1e5;
 /// Cost of a box over another text, plus its overlap area (mm²) times [`TEXT_AREA`].
-const OVER_TEXT: f64 = 1e3;
+pub(super) const OVER_TEXT: f64 = 1e3;
 const TEXT_AREA: f64 = 100.0;
 /// Cost of covering another label's point.
-const OVER_POINT: f64 = 60.0;
+pub(super) const OVER_POINT: f64 = 60.0;
 /// Cost per mm of a main line crossing the box; of a thin line (a label a ring further out is
 /// cheaper than one struck through by a construction line).
 const MAIN_LINE: f64 = 20.0;
