@@ -51,7 +51,7 @@ use thiserror::Error;
 pub(crate) use fonts::faces as bundled_faces;
 pub use fonts::font_database;
 pub use ink::{view_ink, Cell};
-pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM};
+pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
 pub use labels::{
     layout, struck_dimension_texts, Layout, Leader, PlacedLabel, ViewLayout, COINCIDENT_MM,
     JOINT_SEPARATOR,

@@ -178,9 +178,10 @@ impl<'a> Placer<'a> {
     }
 
     /// Every label whose place stands away from its object (beyond its reach, nearer another
-    /// line) takes the best place on a leader instead where that costs less, in the placing
-    /// order, each among the places and leaders the others have by then. A label kept near its
-    /// point by its own bound keeps its place.
+    /// line) or is struck through by a line takes the best place on a leader instead where
+    /// that costs less, in the placing order, each among the places and leaders the others
+    /// have by then. A label kept near its point by its own bound keeps a place no line runs
+    /// through.
     fn put_on_leaders(
         &self,
         jobs: &[Job],
@@ -192,7 +193,8 @@ impl<'a> Placer<'a> {
             let (job, Some(now)) = (&jobs[i], slots[i]) else {
                 continue;
             };
-            if job.request.within.is_some() || away(job, &now.rect, 0.0) == 0.0 {
+            let bound = job.request.within.is_some();
+            if !struck(job, &now.rect) && (bound || away(job, &now.rect, 0.0) == 0.0) {
                 continue;
             }
             let on_leader = self.leader_job(job.request.clone(), points);
@@ -482,6 +484,19 @@ fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
         }
     }
     cost
+}
+
+/// Whether a line or symbol of the view runs through the label at `rect` (within half the
+/// clearance a label keeps).
+fn struck(job: &Job, rect: &Rect) -> bool {
+    let padded = rect.inflate(CLEARANCE_MM * 0.5);
+    job.lines.iter().any(|(bounds, o)| {
+        bounds.touches(&padded)
+            && match &o.shape {
+                Shape::Line(a, b) => clipped_length(*a, *b, &padded) > 0.0,
+                Shape::Area(pts) => clipped_area(pts, &padded) > 0.0,
+            }
+    })
 }
 
 /// The distance from `rect` to the nearest of the lines among `own`; `None` without lines.
