@@ -131,10 +131,12 @@ fn group(id: &str, marks: Vec<Mark>) -> Group {
 
 /// A leader as drawn ([`Leader::marks`]): its line and shelf, and its dot on an item's line.
 fn leader_group(l: &Leader) -> Group {
-    l.marks().into_iter().fold(Group::new(), |g, mark| match mark {
-        Mark::Path(paint, d) => g.add(path(paint, d)),
-        Mark::Text(_) => g,
-    })
+    l.marks()
+        .into_iter()
+        .fold(Group::new(), |g, mark| match mark {
+            Mark::Path(paint, d) => g.add(path(paint, d)),
+            Mark::Text(_) => g,
+        })
 }
 
 fn path(paint: Paint, d: PathData) -> Path {

@@ -9,20 +9,10 @@ use acadrust::tables::{Layer, LineType, LineTypeElement};
 use acadrust::types::LineWeight;
 
 /// A layer of the DXF: what a student hides or recolours as one.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum DxfLayer {
-    /// Steps of [`Role::Given`].
-    Given,
-    /// Steps of [`Role::Construction`].
-    Construction,
-    /// Steps of [`Role::Result`].
-    Result,
-    /// Steps of [`Role::Axis`].
-    Axis,
-    /// Steps of [`Role::Dimension`] and their texts.
-    Dimension,
-    /// Steps of [`Role::Hatch`].
-    Hatch,
+    /// The recorded steps of one role (and, for [`Role::Dimension`], their texts).
+    Role(Role),
     /// Labels (with their leaders), captions, text blocks and tables.
     Text,
     /// The trim border, the frame, the title block and the designation box.
@@ -32,54 +22,37 @@ pub enum DxfLayer {
 impl DxfLayer {
     /// Every layer, in the order of the LAYER table.
     pub const ALL: [DxfLayer; 8] = [
-        DxfLayer::Given,
-        DxfLayer::Construction,
-        DxfLayer::Result,
-        DxfLayer::Axis,
-        DxfLayer::Dimension,
-        DxfLayer::Hatch,
+        DxfLayer::Role(Role::Given),
+        DxfLayer::Role(Role::Construction),
+        DxfLayer::Role(Role::Result),
+        DxfLayer::Role(Role::Axis),
+        DxfLayer::Role(Role::Dimension),
+        DxfLayer::Role(Role::Hatch),
         DxfLayer::Text,
         DxfLayer::Frame,
     ];
 
-    /// The layer of a recorded step of `role`.
-    pub fn for_role(role: Role) -> DxfLayer {
-        match role {
-            Role::Given => DxfLayer::Given,
-            Role::Construction => DxfLayer::Construction,
-            Role::Result => DxfLayer::Result,
-            Role::Axis => DxfLayer::Axis,
-            Role::Dimension => DxfLayer::Dimension,
-            Role::Hatch => DxfLayer::Hatch,
-        }
-    }
-
     /// Its name in the sheet's language (the names a student reads in the CAD program's
     /// layer list, as the title block's captions are in that language).
     pub fn name(self, lang: Lang) -> &'static str {
-        let p = |ru, uk, en| lang.pick(ru, uk, en);
-        match self {
-            DxfLayer::Given => p("Заданное", "Задане", "Given"),
-            DxfLayer::Construction => p("Построения", "Побудови", "Construction"),
-            DxfLayer::Result => p("Результаты", "Результати", "Results"),
-            DxfLayer::Axis => p("Оси", "Осі", "Axes"),
-            DxfLayer::Dimension => p("Размеры", "Розміри", "Dimensions"),
-            DxfLayer::Hatch => p("Штриховка", "Штрихування", "Hatching"),
-            DxfLayer::Text => p("Надписи", "Написи", "Text"),
-            DxfLayer::Frame => p("Рамка", "Рамка", "Frame"),
-        }
+        let [ru, uk, en] = match self {
+            DxfLayer::Role(Role::Given) => ["Заданное", "Задане", "Given"],
+            DxfLayer::Role(Role::Construction) => ["Построения", "Побудови", "Construction"],
+            DxfLayer::Role(Role::Result) => ["Результаты", "Результати", "Results"],
+            DxfLayer::Role(Role::Axis) => ["Оси", "Осі", "Axes"],
+            DxfLayer::Role(Role::Dimension) => ["Размеры", "Розміри", "Dimensions"],
+            DxfLayer::Role(Role::Hatch) => ["Штриховка", "Штрихування", "Hatching"],
+            DxfLayer::Text => ["Надписи", "Написи", "Text"],
+            DxfLayer::Frame => ["Рамка", "Рамка", "Frame"],
+        };
+        lang.pick(ru, uk, en)
     }
 
     /// The pen most of its lines are drawn with: the layer's line type and weight, which its
     /// entities drawn with that pen take `BYLAYER`.
     pub fn pen(self) -> Pen {
         match self {
-            DxfLayer::Given => Pen::for_role(Role::Given),
-            DxfLayer::Construction => Pen::for_role(Role::Construction),
-            DxfLayer::Result => Pen::for_role(Role::Result),
-            DxfLayer::Axis => Pen::for_role(Role::Axis),
-            DxfLayer::Dimension => Pen::for_role(Role::Dimension),
-            DxfLayer::Hatch => Pen::for_role(Role::Hatch),
+            DxfLayer::Role(role) => Pen::for_role(role),
             DxfLayer::Text => Pen::THIN,
             DxfLayer::Frame => Pen::MAIN,
         }
@@ -155,36 +128,36 @@ impl LineKind {
         }
     }
 
-    /// Its description in the sheet's language: the ГОСТ 2.303 name.
+    /// Its description in the sheet's language: the ГОСТ 2.303 name (ru, uk, en).
     fn description(self, lang: Lang) -> &'static str {
-        let p = |ru, uk, en| lang.pick(ru, uk, en);
-        match self {
-            LineKind::Main => p(
+        let [ru, uk, en] = match self {
+            LineKind::Main => [
                 "Сплошная толстая основная, ГОСТ 2.303",
                 "Суцільна товста основна, ГОСТ 2.303",
                 "Solid thick main line, GOST 2.303",
-            ),
-            LineKind::Thin => p(
+            ],
+            LineKind::Thin => [
                 "Сплошная тонкая, ГОСТ 2.303",
                 "Суцільна тонка, ГОСТ 2.303",
                 "Solid thin line, GOST 2.303",
-            ),
-            LineKind::Dashed => p(
+            ],
+            LineKind::Dashed => [
                 "Штриховая, ГОСТ 2.303",
                 "Штрихова, ГОСТ 2.303",
                 "Dashed line, GOST 2.303",
-            ),
-            LineKind::DashDot => p(
+            ],
+            LineKind::DashDot => [
                 "Штрихпунктирная тонкая, ГОСТ 2.303",
                 "Штрихпунктирна тонка, ГОСТ 2.303",
                 "Thin dash-dot line, GOST 2.303",
-            ),
-            LineKind::Wavy => p(
+            ],
+            LineKind::Wavy => [
                 "Сплошная волнистая (как сплошная), ГОСТ 2.303",
                 "Суцільна хвиляста (як суцільна), ГОСТ 2.303",
                 "Solid wavy line (as continuous), GOST 2.303",
-            ),
-        }
+            ],
+        };
+        lang.pick(ru, uk, en)
     }
 
     /// The LTYPE table's entry: the pen's dash pattern (dash, gap, …) as dashes and spaces.
@@ -234,16 +207,22 @@ mod tests {
 
     #[test]
     fn pens_map_to_gost_line_types_and_standard_weights() {
-        assert_eq!(LineKind::of(Pen::MAIN), LineKind::Main);
-        assert_eq!(LineKind::of(Pen::THIN), LineKind::Thin);
-        assert_eq!(LineKind::of(Pen::AXIS), LineKind::DashDot);
-        assert_eq!(LineKind::of(Pen::DASHED), LineKind::Dashed);
-        assert_eq!(line_weight(Pen::MAIN.width), LineWeight::Value(50));
-        assert_eq!(line_weight(Pen::THIN.width), LineWeight::Value(25));
-        assert_eq!(line_weight(Pen::TRIM.width), LineWeight::Value(9));
+        let kinds = [Pen::MAIN, Pen::THIN, Pen::AXIS, Pen::DASHED].map(LineKind::of);
+        let want = [
+            LineKind::Main,
+            LineKind::Thin,
+            LineKind::DashDot,
+            LineKind::Dashed,
+        ];
+        assert_eq!(kinds, want);
+        let weights = [Pen::MAIN, Pen::THIN, Pen::TRIM].map(|p| line_weight(p.width));
+        assert_eq!(weights, [50, 25, 9].map(LineWeight::Value));
         let dash_dot = LineKind::DashDot.table_entry(Lang::Ru);
         let lengths: Vec<f64> = dash_dot.elements.iter().map(|e| e.length).collect();
         assert_eq!(lengths, [12.0, -3.0, 1.0, -3.0]);
         assert_eq!(dash_dot.pattern_length, 19.0);
+        let names: std::collections::BTreeSet<&str> =
+            DxfLayer::ALL.iter().map(|l| l.name(Lang::Uk)).collect();
+        assert_eq!(names.len(), DxfLayer::ALL.len(), "{names:?}");
     }
 }

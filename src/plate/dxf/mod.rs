@@ -116,7 +116,7 @@ fn marks(plate: &Plate) -> Vec<(DxfLayer, Mark)> {
     for (k, view) in plate.views.iter().enumerate() {
         let map = Map::figure(view.origin);
         for step in &view.figure.steps {
-            let layer = DxfLayer::for_role(step.role);
+            let layer = DxfLayer::Role(step.role);
             out.extend(step_marks(step, map).into_iter().map(|m| (layer, m)));
         }
         for l in laid.labels.iter().filter(|l| l.view == k) {
@@ -129,7 +129,11 @@ fn marks(plate: &Plate) -> Vec<(DxfLayer, Mark)> {
             out.push((DxfLayer::Text, Mark::Text(caption.clone())));
         }
     }
-    let texts = plate.texts.iter().flat_map(text_block_lines).map(Mark::Text);
+    let texts = plate
+        .texts
+        .iter()
+        .flat_map(text_block_lines)
+        .map(Mark::Text);
     out.extend(texts.map(|m| (DxfLayer::Text, m)));
     let tables = plate.tables.iter().flat_map(table_marks);
     out.extend(tables.map(|m| (DxfLayer::Text, m)));
@@ -146,7 +150,7 @@ fn label_layer(view: &super::View, steps: &[crate::construct::StepId]) -> DxfLay
             .any(|s| s.id == *id && s.role == Role::Dimension)
     };
     if !steps.is_empty() && steps.iter().all(of_dimension) {
-        DxfLayer::Dimension
+        DxfLayer::Role(Role::Dimension)
     } else {
         DxfLayer::Text
     }

@@ -53,10 +53,16 @@ fn drawn(start: DVec2, segs: &[Seg], sheet: &Flip) -> Option<Drawn> {
         [] | [Seg::Close] => None,
         [Seg::Line(b)] => Some(Drawn::Line(sheet.pt(start), sheet.pt(*b))),
         [Seg::Arc {
-            center, radius, sweep, ..
+            center,
+            radius,
+            sweep,
+            ..
         }]
         | [Seg::Arc {
-            center, radius, sweep, ..
+            center,
+            radius,
+            sweep,
+            ..
         }, Seg::Close]
             if full(*sweep) =>
         {
@@ -228,7 +234,10 @@ mod tests {
             panic!("{:?}", drawn[2]);
         };
         assert_eq!((c, r), (DVec2::new(10.0, 50.0), 4.0));
-        assert!((a0 - 1.5 * PI).abs() < 1e-12 && a1.abs() < 1e-12, "{a0} {a1}");
+        assert!(
+            (a0 - 1.5 * PI).abs() < 1e-12 && a1.abs() < 1e-12,
+            "{a0} {a1}"
+        );
     }
 
     #[test]

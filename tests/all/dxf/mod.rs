@@ -9,12 +9,12 @@ mod read;
 mod svg;
 
 use acadrust::entities::EntityType;
-use acadrust::types::Vector3;
 use acadrust::DxfWriter;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use tmm::construct::Drafting;
+use tmm::construct::{Drafting, Role};
+use tmm::plate::text::SCRIPT_SCALE;
 use tmm::plate::{to_dxf, to_svg, DxfLayer, Plate};
 use tmm::scale::Lang;
 
@@ -85,7 +85,7 @@ fn every_sheet_reads_back_as_its_svg_draws_and_ezdxf_repairs_nothing() {
         entities: a.entities + s.entities,
     });
     eprintln!("{} sheets: {total:?}", sheets.len());
-    assert!(sheets.len() >= 60, "{} sheets", sheets.len());
+    assert!(sheets.len() >= 30, "{} sheets", sheets.len());
     assert!(
         total.cyrillic > 100 && total.primes > 10 && total.scripts > 100,
         "{total:?}"
@@ -175,94 +175,92 @@ fn shaper_sheet() -> (Plate, acadrust::CadDocument) {
     (plate, doc)
 }
 
-/// `doc` changed by `change` on its first entity `pick` chooses, written and read again.
-fn broken(
-    doc: &acadrust::CadDocument,
-    pick: impl Fn(&EntityType) -> bool,
-    change: impl FnOnce(&mut EntityType),
-) -> Vec<u8> {
+/// `doc` with its first entity `change` changes (it says whether it did), written and read
+/// again.
+fn broken(doc: &acadrust::CadDocument, mut change: impl FnMut(&mut EntityType) -> bool) -> Vec<u8> {
     let mut doc = doc.clone();
-    let e = doc.entities_mut().find(|e| pick(e)).expect("an entity");
-    change(e);
+    assert!(doc.entities_mut().any(|e| change(e)), "an entity to break");
     DxfWriter::new(&doc).write_to_vec().expect("written")
 }
 
 #[test]
 fn each_check_fails_on_a_dxf_built_to_break_it() {
     let (plate, doc) = shaper_sheet();
-    let given = DxfLayer::Given.name(Lang::Ru);
+    let given = DxfLayer::Role(Role::Given).name(Lang::Ru);
+    let construction = DxfLayer::Role(Role::Construction).name(Lang::Ru);
     let ok = DxfWriter::new(&doc).write_to_vec().expect("written");
     holds(&plate, &ok).expect("the DXF as written, read and written again, holds");
     let breaks: Vec<(&str, Vec<u8>)> = vec![
         (
             "an entity on another layer",
-            broken(
-                &doc,
-                |e| e.common().layer == given,
-                |e| e.common_mut().layer = DxfLayer::Construction.name(Lang::Ru).into(),
-            ),
+            broken(&doc, |e| {
+                let on = e.common().layer == given;
+                if on {
+                    e.common_mut().layer = construction.into();
+                }
+                on
+            }),
         ),
         (
             "a Cyrillic letter changed",
-            broken(
-                &doc,
-                |e| matches!(e, EntityType::Text(t) if t.value.contains('л')),
-                |e| {
-                    if let EntityType::Text(t) = e {
-                        t.value = t.value.replacen('л', "п", 1);
-                    }
-                },
-            ),
+            broken(&doc, |e| match e {
+                EntityType::Text(t) if t.value.contains('л') => {
+                    t.value = t.value.replacen('л', "п", 1);
+                    true
+                }
+                _ => false,
+            }),
         ),
         (
             "a line's end 0.02 mm off",
-            broken(
-                &doc,
-                |e| matches!(e, EntityType::Line(_)),
-                |e| {
-                    if let EntityType::Line(l) = e {
-                        l.end = l.end + Vector3::new(0.0, 0.02, 0.0);
-                    }
-                },
-            ),
+            broken(&doc, |e| {
+                let EntityType::Line(l) = e else { return false };
+                l.end.y += 0.02;
+                true
+            }),
         ),
         (
             "a circle's centre 0.015 mm off",
-            broken(
-                &doc,
-                |e| matches!(e, EntityType::Circle(_)),
-                |e| {
-                    if let EntityType::Circle(c) = e {
-                        c.center = c.center + Vector3::new(0.015, 0.0, 0.0);
-                    }
-                },
-            ),
+            broken(&doc, |e| {
+                let EntityType::Circle(c) = e else {
+                    return false;
+                };
+                c.center.x += 0.015;
+                true
+            }),
         ),
         (
-            "a subscript written as normal text",
-            broken(
-                &doc,
-                |e| matches!(e, EntityType::Text(t) if t.height < 3.0),
-                |e| {
-                    if let EntityType::Text(t) = e {
-                        t.height = 3.5;
-                    }
-                },
-            ),
+            "a subscript at the text's full height",
+            broken(&doc, |e| match e {
+                EntityType::Text(t) if (t.height - 3.5 * SCRIPT_SCALE).abs() < 1e-9 => {
+                    t.height = 3.5;
+                    true
+                }
+                _ => false,
+            }),
         ),
     ];
     for (what, bytes) in &breaks {
         assert!(holds(&plate, bytes).is_err(), "{what}: not caught");
     }
-    // The independent reader finds an entity drawn in a line type the table lacks.
+    // The independent reader repairs an entity drawn in a line type the table lacks (the
+    // trim border's GOST_THIN renamed in the bytes: the crate writes no unknown name).
     let dir = std::env::temp_dir().join(format!("tmm-dxf-broken-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("a temporary folder");
-    let unknown = broken(&doc, |_| true, |e| e.common_mut().linetype = "NOPE".into());
+    let unknown = unknown_line_type(&ok);
     std::fs::write(dir.join("unknown-linetype.dxf"), unknown).expect("written");
     std::fs::write(dir.join("as-written.dxf"), &ok).expect("written");
     ezdxf_accepts(&dir, &["unknown-linetype.dxf"]);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `dxf` with its first entity's line type `GOST_THIN` renamed to one the table lacks.
+fn unknown_line_type(dxf: &[u8]) -> Vec<u8> {
+    let text = String::from_utf8(dxf.to_vec()).expect("UTF-8");
+    let entities = text.find("ENTITIES").expect("an ENTITIES section");
+    let at = entities + text[entities..].find("GOST_THIN").expect("a thin entity");
+    format!("{}NOPE{}", &text[..at], &text[at + "GOST_THIN".len()..]).into_bytes()
 }
 
 #[test]
@@ -281,15 +279,23 @@ fn render_format_dxf_writes_one_drawing_per_sheet_and_nothing_else() {
     let plates = tmm::render::plates(&scene, Lang::Ru, Drafting::HAND).expect("plates");
     let mut names: Vec<String> = std::fs::read_dir(out.join("four-bar"))
         .expect("the scene's folder")
-        .map(|e| e.expect("an entry").file_name().to_string_lossy().into_owned())
+        .map(|e| {
+            e.expect("an entry")
+                .file_name()
+                .to_string_lossy()
+                .into_owned()
+        })
         .collect();
     names.sort();
-    let mut want: Vec<String> = plates.iter().map(|(_, p)| format!("{}.dxf", p.name)).collect();
+    let mut want: Vec<String> = plates
+        .iter()
+        .map(|(_, p)| format!("{}.dxf", p.name))
+        .collect();
     want.sort();
     assert_eq!(names, want);
     for (_, p) in &plates {
-        let bytes = std::fs::read(out.join("four-bar").join(format!("{}.dxf", p.name)))
-            .expect("the DXF");
+        let bytes =
+            std::fs::read(out.join("four-bar").join(format!("{}.dxf", p.name))).expect("the DXF");
         assert!(bytes == to_dxf(p).expect("the DXF"), "{}", p.name);
     }
     let _ = std::fs::remove_dir_all(&out);

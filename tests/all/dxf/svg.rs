@@ -15,7 +15,7 @@ pub struct Subpath {
     pub points: Vec<DVec2>,
     /// Ends with `Z`.
     pub closed: bool,
-    /// Arcs only, back to its start.
+    /// Arcs only, back to its start: a full circle (closed by `Z` or not).
     pub arcs_only: bool,
     /// Its arcs' radius (of the last one), mm.
     pub radius: f64,
@@ -89,7 +89,7 @@ fn layer_of(
     let (k, rest) = rest.split_once('-').expect("view-K-…");
     let k: usize = k.parse().expect("a view's index");
     let view = &plate.views[k];
-    let role_of = |id: usize| {
+    let role_of = |id: u32| {
         view.figure
             .steps
             .iter()
@@ -98,7 +98,7 @@ fn layer_of(
             .expect("the group's step")
     };
     if let Some(id) = rest.strip_prefix("step-") {
-        return DxfLayer::for_role(role_of(id.parse().expect("a step id")));
+        return DxfLayer::Role(role_of(id.parse().expect("a step id")));
     }
     let Some(tail) = rest.strip_prefix("labels") else {
         return DxfLayer::Text;
@@ -126,7 +126,7 @@ fn layer_of(
             .iter()
             .all(|id| role_of(id.0) == Role::Dimension);
     if dimension {
-        DxfLayer::Dimension
+        DxfLayer::Role(Role::Dimension)
     } else {
         DxfLayer::Text
     }
@@ -185,7 +185,7 @@ fn path(line: &str) -> Drawn {
     subpaths.retain(|s| s.points.len() > 1);
     for s in &mut subpaths {
         let back = s.points.first() == s.points.last();
-        s.arcs_only &= back && s.closed;
+        s.arcs_only &= back;
     }
     match attr(line, "fill") {
         Some("#000") => Drawn::Fill(subpaths),
