@@ -307,17 +307,10 @@ fn files_of(
         }
     }
     // Each sheet's DXF from its plate, before the plates go to their SVGs.
-    let dxfs: Vec<Vec<u8>> = match formats.dxf {
-        true => plates
-            .par_iter()
-            .map(|(base, plate)| {
-                plate::to_dxf(plate).map_err(|error| RenderError::Dxf {
-                    path: base.with_extension("dxf"),
-                    error,
-                })
-            })
-            .collect::<Result<_, _>>()?,
-        false => Vec::new(),
+    let dxfs = if formats.dxf {
+        dxfs_of(&plates)?
+    } else {
+        Vec::new()
     };
     // Each sheet written as SVG on a core of its own (a blocking contour's sheet is half a
     // megabyte of SVG).
@@ -408,6 +401,22 @@ fn files_of(
     files.extend(set_pdfs);
     files.extend(note_pdfs);
     Ok(files)
+}
+
+/// Each sheet as DXF ([`plate::to_dxf`]), in parallel, in order.
+///
+/// # Errors
+/// The first sheet the DXF writer refuses.
+fn dxfs_of(plates: &[(PathBuf, Plate)]) -> Result<Vec<Vec<u8>>, RenderError> {
+    plates
+        .par_iter()
+        .map(|(base, plate)| {
+            plate::to_dxf(plate).map_err(|error| RenderError::Dxf {
+                path: base.with_extension("dxf"),
+                error,
+            })
+        })
+        .collect()
 }
 
 /// Render `scenes` to `out`: every file of [`files`], written atomically. Returns the files

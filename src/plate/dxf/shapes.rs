@@ -17,6 +17,10 @@ use std::f64::consts::{PI, TAU};
 /// precision (it writes coordinates to 0.01 mm), halved.
 pub const CURVE_TOLERANCE_MM: f64 = 0.005;
 
+/// A closed subpath's last vertex this near its first is the first (a circle's last quarter
+/// ends where it began, up to rounding), mm: far below the drawing's 0.01 mm precision.
+const SAME_POINT_MM: f64 = 1e-6;
+
 /// A subpath as the DXF draws it, in DXF coordinates (mm, y up).
 #[derive(Debug, Clone, PartialEq)]
 pub(super) enum Drawn {
@@ -132,7 +136,7 @@ fn polyline(start: DVec2, segs: &[Seg], sheet: &Flip) -> Drawn {
     }
     if closed && verts.len() > 2 {
         let (first, last) = (verts[0].0, verts[verts.len() - 1].0);
-        if first.distance(last) <= CURVE_TOLERANCE_MM * 1e-3 {
+        if first.distance(last) <= SAME_POINT_MM {
             verts.pop();
         }
     }

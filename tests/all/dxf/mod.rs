@@ -177,9 +177,9 @@ fn shaper_sheet() -> (Plate, acadrust::CadDocument) {
 
 /// `doc` with its first entity `change` changes (it says whether it did), written and read
 /// again.
-fn broken(doc: &acadrust::CadDocument, mut change: impl FnMut(&mut EntityType) -> bool) -> Vec<u8> {
+fn broken(doc: &acadrust::CadDocument, change: impl FnMut(&mut EntityType) -> bool) -> Vec<u8> {
     let mut doc = doc.clone();
-    assert!(doc.entities_mut().any(|e| change(e)), "an entity to break");
+    assert!(doc.entities_mut().any(change), "an entity to break");
     DxfWriter::new(&doc).write_to_vec().expect("written")
 }
 

@@ -93,7 +93,8 @@ pub fn compare(
 }
 
 /// A stroked subpath against its entity: a LINE's ends, a CIRCLE's centre and radius, an
-/// ARC's ends, a polyline's first (and, open, last) vertex.
+/// ARC's ends, a polyline's first (and, open, last) vertex, and every vertex of one of
+/// straight pieces.
 fn stroke(s: &Subpath, e: &EntityType, height: f64) -> Result<(), String> {
     let (first, last) = (s.points[0], s.points[s.points.len() - 1]);
     let ok = match e {
@@ -125,10 +126,19 @@ fn stroke(s: &Subpath, e: &EntityType, height: f64) -> Result<(), String> {
                 sheet(DVec2::new(l.x, l.y), height)
             };
             let n = pl.vertices.len();
+            // A closed outline that returns to its start by a piece of its own is written
+            // without that last, repeated vertex.
+            let mut points = s.points.clone();
+            if s.closed && points.len() > 2 && near(first, last) {
+                points.pop();
+            }
+            let every = !s.straight
+                || (points.len() == n && points.iter().enumerate().all(|(k, p)| near(v(k), *p)));
             n >= 2
                 && pl.is_closed == s.closed
                 && near(v(0), first)
                 && (s.closed || near(v(n - 1), last))
+                && every
         }
         other => {
             let kind = format!("{other:?}");

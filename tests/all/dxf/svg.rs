@@ -19,6 +19,8 @@ pub struct Subpath {
     pub arcs_only: bool,
     /// Its arcs' radius (of the last one), mm.
     pub radius: f64,
+    /// Straight pieces only: every point is a vertex of its polyline.
+    pub straight: bool,
 }
 
 /// What the SVG draws, in order.
@@ -158,6 +160,7 @@ fn path(line: &str) -> Drawn {
                 closed: false,
                 arcs_only: true,
                 radius: 0.0,
+                straight: true,
             }),
             "L" | "C" | "A" => {
                 let end = match cmd {
@@ -175,6 +178,7 @@ fn path(line: &str) -> Drawn {
                 };
                 let sub = subpaths.last_mut().expect("a subpath");
                 sub.arcs_only &= cmd == "A";
+                sub.straight &= cmd == "L";
                 sub.points.push(end);
             }
             "Z" => subpaths.last_mut().expect("a subpath").closed = true,
