@@ -34,7 +34,28 @@ impl Leader {
             Segment::new(self.knee, self.end),
         ]
     }
+
+    /// Its marks as drawn: the thin line through the knee to the shelf's end, then its dot
+    /// on an item's line (where it ends on one).
+    pub(crate) fn marks(&self) -> Vec<Mark> {
+        use crate::plate::path::PathData;
+        use crate::plate::style::Paint;
+        let mut line = PathData::new(Map::SHEET);
+        line.polyline(&[self.from, self.knee, self.end]);
+        let mut out: Vec<Mark> = Mark::path(Paint::Stroke(Pen::THIN), line)
+            .into_iter()
+            .collect();
+        if self.dot {
+            let mut dot = PathData::new(Map::SHEET);
+            dot.circle(self.to, LEADER_DOT_MM);
+            out.extend(Mark::path(Paint::Solid, dot));
+        }
+        out
+    }
 }
+
+/// The radius of a leader's dot on an item's line, mm.
+const LEADER_DOT_MM: f64 = 0.35;
 
 /// Between the text's box and its shelf, mm.
 const SHELF_GAP_MM: f64 = 0.6;
