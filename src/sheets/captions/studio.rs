@@ -38,6 +38,9 @@ catalogue! {
         Trains => ("Зубчатые передачи", "Зубчасті передачі", "Gear trains"),
         Friction => ("Трение", "Тертя", "Friction"),
         Balancing => ("Уравновешивание", "Зрівноваження", "Balancing"),
+        Where => ("Щелчок: где это значение измерено на листе", "Клацання: де це значення виміряно на аркуші", "Click: where this value is read on the sheet"),
+        Computed => ("вычислено по формуле, не измерено на листе", "обчислено за формулою, не виміряно на аркуші", "computed by formula, not measured on the sheet"),
+        Derived => ("вычислено из нескольких отсчётов построения, не измерено одним отрезком листа", "обчислено з кількох відліків побудови, не виміряно одним відрізком аркуша", "worked out from several readings of the construction, not measured as one segment of the sheet"),
     }
 }
 
@@ -67,4 +70,7 @@ pub(crate) const STUDIO_KEYS: &[(&str, StudioText)] = &[
     ("busy", StudioText::Busy),
     ("replay", StudioText::Replay),
     ("whole", StudioText::Whole),
+    ("where", StudioText::Where),
+    ("computed", StudioText::Computed),
+    ("derived", StudioText::Derived),
 ];
