@@ -74,6 +74,67 @@ fn shaper_rows(length: &str, quantity: &str, at: &str) -> (usize, ReadAt, usize,
     (i, found[i].expect("read on a sheet"), formula, names)
 }
 
+/// A click on the row of v_B at position 1 (the shaper, crank 150 mm): its sheet shown, the
+/// segment of the plan it is read off drawn in red over it (sheet mm, the SVG's viewBox units),
+/// in view; Enter on a row computed by formula: the page says so in its place.
+async fn where_read(b: &Browser, shots: &Path) {
+    let (row, want, formula, names) = shaper_rows("150", "v_B", "1");
+    b.click(&format!("#rows tbody tr:nth-child({})", row + 1))
+        .await;
+    let line = b
+        .until("(l => l && [l.x1.baseVal.value, l.y1.baseVal.value, l.x2.baseVal.value, l.y2.baseVal.value, l.getAttribute('stroke'), l.getAttribute('stroke-width')])(document.querySelector('#canvas svg line.reading'))")
+        .await;
+    let ends = [want.x1, want.y1, want.x2, want.y2];
+    for (k, w) in ends.iter().enumerate() {
+        let got = line[k].as_f64().unwrap_or(f64::NAN);
+        assert!(
+            (got - w).abs() <= 0.05,
+            "end {k}: {got} mm, expected {w} mm"
+        );
+    }
+    assert_eq!(line[4], "#e00000");
+    assert_eq!(line[5], "0.8");
+    let shown = b
+        .eval("return document.querySelector('#sheet-tabs button.on').textContent")
+        .await;
+    assert_eq!(shown, names[want.sheet].as_str());
+    let inside = b
+        .eval(
+            "const l = document.querySelector('#canvas svg line.reading').getBoundingClientRect();
+             const v = document.getElementById('viewport').getBoundingClientRect();
+             return [l.left >= v.left, l.right <= v.right, l.top >= v.top, l.bottom <= v.bottom, l.width + l.height];",
+        )
+        .await;
+    assert_eq!(
+        inside.as_array().map(|a| a[..4].to_vec()),
+        Some(vec![serde_json::Value::Bool(true); 4]),
+        "the segment in view: {inside}"
+    );
+    assert!(
+        inside[4].as_f64().unwrap_or(0.0) > 40.0,
+        "zoomed to it: {inside}"
+    );
+    eprintln!(
+        "v_B (1) read on {} from ({:.2}, {:.2}) to ({:.2}, {:.2}) mm",
+        names[want.sheet], want.x1, want.y1, want.x2, want.y2
+    );
+    b.shot(&shots.join("5-reading.png")).await;
+
+    // Enter on a row computed by formula: the page says so in its place, no segment drawn.
+    b.press_enter(&format!("#rows tbody tr:nth-child({})", formula + 1))
+        .await;
+    let note = b
+        .until("document.querySelector('#rows tr.chosen + tr.reading-note')?.textContent")
+        .await;
+    assert_eq!(note, "вычислено по формуле, не измерено на листе");
+    assert!(
+        b.eval("return !document.querySelector('#canvas svg line.reading')")
+            .await
+            == true
+    );
+    b.shot(&shots.join("6-computed.png")).await;
+}
+
 #[test]
 fn a_student_edits_the_shaper_in_the_browser() {
     let runtime = tokio::runtime::Runtime::new().expect("tokio");
@@ -172,52 +233,7 @@ fn a_student_edits_the_shaper_in_the_browser() {
         let pdf = shaper_pdf("150");
         assert_eq!(got, serde_json::json!([pdf.len(), fnv(&pdf)]), "the page's PDF");
 
-        // A click on the row of v_B at position 1: its sheet shown, the segment of the plan it
-        // is read off drawn in red over it (sheet mm, the SVG's viewBox units), in view.
-        let (row, want, formula, names) = shaper_rows("150", "v_B", "1");
-        b.click(&format!("#rows tbody tr:nth-child({})", row + 1)).await;
-        let line = b
-            .until("(l => l && [l.x1.baseVal.value, l.y1.baseVal.value, l.x2.baseVal.value, l.y2.baseVal.value, l.getAttribute('stroke'), l.getAttribute('stroke-width')])(document.querySelector('#canvas svg line.reading'))")
-            .await;
-        let ends = [want.x1, want.y1, want.x2, want.y2];
-        for (k, w) in ends.iter().enumerate() {
-            let got = line[k].as_f64().unwrap_or(f64::NAN);
-            assert!((got - w).abs() <= 0.05, "end {k}: {got} mm, expected {w} mm");
-        }
-        assert_eq!(line[4], "#e00000");
-        assert_eq!(line[5], "0.8");
-        let shown = b
-            .eval("return document.querySelector('#sheet-tabs button.on').textContent")
-            .await;
-        assert_eq!(shown, names[want.sheet].as_str());
-        let inside = b
-            .eval(
-                "const l = document.querySelector('#canvas svg line.reading').getBoundingClientRect();
-                 const v = document.getElementById('viewport').getBoundingClientRect();
-                 return [l.left >= v.left, l.right <= v.right, l.top >= v.top, l.bottom <= v.bottom, l.width + l.height];",
-            )
-            .await;
-        assert_eq!(
-            inside.as_array().map(|a| a[..4].to_vec()),
-            Some(vec![serde_json::Value::Bool(true); 4]),
-            "the segment in view: {inside}"
-        );
-        assert!(inside[4].as_f64().unwrap_or(0.0) > 40.0, "zoomed to it: {inside}");
-        eprintln!(
-            "v_B (1) read on {} from ({:.2}, {:.2}) to ({:.2}, {:.2}) mm",
-            names[want.sheet], want.x1, want.y1, want.x2, want.y2
-        );
-        b.shot(&shots.join("5-reading.png")).await;
-
-        // Enter on a row computed by formula: the page says so in its place, no segment drawn.
-        b.press_enter(&format!("#rows tbody tr:nth-child({})", formula + 1))
-            .await;
-        let note = b
-            .until("document.querySelector('#rows tr.chosen + tr.reading-note')?.textContent")
-            .await;
-        assert_eq!(note, "вычислено по формуле, не измерено на листе");
-        assert!(b.eval("return !document.querySelector('#canvas svg line.reading')").await == true);
-        b.shot(&shots.join("6-computed.png")).await;
+        where_read(&b, &shots).await;
 
         // An impossible length: the message at its field, the last sheets kept.
         b.type_into("mechanism.crank.length", "-5").await;
