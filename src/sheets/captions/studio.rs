@@ -40,7 +40,7 @@ catalogue! {
         Balancing => ("Уравновешивание", "Зрівноваження", "Balancing"),
         Where => ("Щелчок: где это значение измерено на листе", "Клацання: де це значення виміряно на аркуші", "Click: where this value is read on the sheet"),
         Computed => ("вычислено по формуле, не измерено на листе", "обчислено за формулою, не виміряно на аркуші", "computed by formula, not measured on the sheet"),
-        Derived => ("вычислено из нескольких отсчётов построения, не измерено одним отрезком листа", "обчислено з кількох відліків побудови, не виміряно одним відрізком аркуша", "worked out from several readings of the construction, not measured as one segment of the sheet"),
+        Derived => ("не показано одним отрезком листа: получено из отсчётов построения", "не показано одним відрізком аркуша: отримано з відліків побудови", "not shown as one segment of the sheet: worked out from the construction's readings"),
     }
 }
 
