@@ -116,6 +116,7 @@ impl Study {
             title: "blocking contour".into(),
             scale,
             steps: steps.0,
+            readings: Vec::new(),
         }
     }
 
