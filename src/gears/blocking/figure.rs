@@ -95,7 +95,7 @@ impl Study {
             if !(at.x >= 0.0 && at.y >= 0.0 && at.x <= size.x && at.y <= size.y) {
                 continue;
             }
-            let room = |p: DVec2| room(&drawn, None, &taken, p, size);
+            let room = |p: DVec2| room(&drawn, None, &taken, (p, p), size);
             // Toward the most room of eight directions, 6 mm out.
             let toward = (0..8)
                 .map(|k| {
@@ -228,7 +228,7 @@ impl Study {
             let first = std::mem::replace(&mut first_of[*k], false);
             let label = (first || long).then(|| {
                 let text = level_label(kind, limit, lang, words);
-                let room = |p: DVec2| room(&drawn, Some(*k), &taken, p, size);
+                let room = |b: (DVec2, DVec2)| room(&drawn, Some(*k), &taken, b, size);
                 let (p, nrm, centre) = label_place(piece, label_extent(&text), room);
                 taken.push(centre);
                 (text, p, nrm)
@@ -310,25 +310,20 @@ fn axes(plane: &Plane, lang: Lang, steps: &mut Steps) {
 }
 
 /// Where a curve's label goes: of twenty points along `piece` and the two sides of each, the
-/// one whose label box (of `extent`, set a label's gap out along the curve's normal)
-/// has the most `room` at its centre, corners and edges' middles — a label fits where its
-/// whole box is clear, not its anchor. The point, the side's normal and the box's centre.
+/// one whose label box (of `extent`, set a label's gap out along the curve's normal) has the
+/// most `room` — a label fits where its whole box is clear, not its anchor. The point, the
+/// side's normal and the box's centre.
 fn label_place(
     piece: &[DVec2],
     extent: DVec2,
-    room: impl Fn(DVec2) -> f64,
+    room: impl Fn((DVec2, DVec2)) -> f64,
 ) -> (DVec2, DVec2, DVec2) {
     let n = piece.len() - 1;
     let half = extent * 0.5;
     let box_at = |p: DVec2, nrm: DVec2| {
         let out = LABEL_GAP_MM + nrm.x.abs() * half.x + nrm.y.abs() * half.y;
         let centre = p + nrm * out;
-        let clear = [-1.0, 0.0, 1.0]
-            .into_iter()
-            .flat_map(|i| [-1.0, 0.0, 1.0].map(|j| centre + DVec2::new(i, j) * half))
-            .map(&room)
-            .fold(f64::INFINITY, f64::min);
-        ((p, nrm, centre), clear)
+        ((p, nrm, centre), room((centre - half, centre + half)))
     };
     let along = (1..20).flat_map(|f| {
         let at = n * f / 20;
@@ -360,25 +355,26 @@ fn label_extent(markup: &str) -> DVec2 {
     DVec2::new(2.3 * chars as f64, 4.5)
 }
 
-/// The room about `p` (figure mm): its distance to the drawn curves (but the level `skip`),
-/// to the labels already placed and to the plane's lower and left edges (`size`), and
-/// [`PAST_EDGE_MM`] past its upper and right ones.
+/// The room about the box `lo`–`hi` (figure mm; a point when they are one): its distance to
+/// the drawn curves (but the level `skip`), to the labels already placed and to the plane's
+/// lower and left edges (`size`), and [`PAST_EDGE_MM`] past its upper and right ones; zero
+/// where any of these enters it.
 fn room(
     drawn: &[(usize, Vec<DVec2>)],
     skip: Option<usize>,
     taken: &[DVec2],
-    p: DVec2,
+    (lo, hi): (DVec2, DVec2),
     size: DVec2,
 ) -> f64 {
     let others = drawn
         .iter()
         .filter(|(j, _)| Some(*j) != skip)
-        .flat_map(|(_, q)| q.iter().step_by(2))
+        .flat_map(|(_, q)| q.iter())
         .chain(taken.iter())
-        .map(|q| (*q - p).length())
+        .map(|q| (*q - q.clamp(lo, hi)).length())
         .fold(f64::INFINITY, f64::min);
-    let past = size + DVec2::splat(PAST_EDGE_MM) - p;
-    others.min(p.x).min(p.y).min(past.x).min(past.y)
+    let past = size + DVec2::splat(PAST_EDGE_MM) - hi;
+    others.min(lo.x).min(lo.y).min(past.x).min(past.y)
 }
 
 /// The label of a level in label markup.
