@@ -80,6 +80,9 @@ fn same(row: &Row, r: &ReadAt) -> bool {
     a.is_finite() && !is_zero(a, row.scale) && (a - b).abs() <= SAME_VALUE * a.max(b)
 }
 
+/// A view (sheet, view) and how many rows of one position are read on it.
+type ViewCount = ((usize, usize), usize);
+
 /// Where each row's value is read, in row order; `None` for a row computed by formula or
 /// not read as one segment.
 ///
@@ -105,13 +108,33 @@ pub fn read_at(rows: &[Row], plates: &[(PlateKind, Plate)]) -> Vec<Option<ReadAt
             v
         })
         .collect();
+    // For each position (or angle), how many of its rows are read on each view.
+    let mut tally: Vec<(&At, Vec<ViewCount>)> = Vec::new();
+    for (row, v) in rows.iter().zip(&views) {
+        if row.key.at == At::Scene || v.is_empty() {
+            continue;
+        }
+        let k = match tally.iter().position(|(a, _)| **a == row.key.at) {
+            Some(k) => k,
+            None => {
+                tally.push((&row.key.at, Vec::new()));
+                tally.len() - 1
+            }
+        };
+        for view in v {
+            match tally[k].1.iter_mut().find(|(w, _)| w == view) {
+                Some(e) => e.1 += 1,
+                None => tally[k].1.push((*view, 1)),
+            }
+        }
+    }
     let score = |at: &At, view: (usize, usize)| match at {
         At::Scene => 0,
-        at => rows
+        at => tally
             .iter()
-            .zip(&views)
-            .filter(|(r, v)| &r.key.at == at && v.contains(&view))
-            .count(),
+            .find(|(a, _)| *a == at)
+            .and_then(|(_, c)| c.iter().find(|(w, _)| *w == view))
+            .map_or(0, |e| e.1),
     };
     rows.iter()
         .zip(&views)

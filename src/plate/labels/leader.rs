@@ -172,7 +172,10 @@ pub(super) fn cost(
 ) -> f64 {
     let [line, shelf] = l.pieces();
     let mut cost = LEADER + LEADER_MM * line.length();
-    for (_, o) in lines {
+    // A line whose box stays clear of the leader's crosses it nowhere.
+    let reach = Rect::around([line.from, line.to, shelf.from, shelf.to]);
+    let near = |b: &Rect| reach.is_some_and(|r| r.touches(b));
+    for (_, o) in lines.iter().filter(|(b, _)| near(b)) {
         let Shape::Line(a, b) = o.shape else { continue };
         let other = Segment::new(a, b);
         for piece in [&line, &shelf] {
@@ -215,8 +218,11 @@ pub(super) fn cost(
 /// [`ALONG_MM`] of a line of the drawing running within [`ALONG_DEG`] of its direction.
 fn along_lines(piece: &Segment, to: DVec2, lines: &[(Rect, &Outline)]) -> usize {
     let d = (piece.to - piece.from).normalize_or_zero();
+    // A line whose box is farther than ALONG_MM from the piece's runs beside it nowhere.
+    let reach = Rect::around([piece.from, piece.to]).map(|r| r.inflate(ALONG_MM));
     let beside: Vec<Segment> = lines
         .iter()
+        .filter(|(b, _)| reach.is_some_and(|r| r.touches(b)))
         .filter_map(|(_, o)| match o.shape {
             Shape::Line(a, b) => Some(Segment::new(a, b)),
             Shape::Area(_) => None,

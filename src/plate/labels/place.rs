@@ -200,7 +200,7 @@ impl<'a> Placer<'a> {
             let on_leader = self.leader_job(job.request.clone(), points);
             let others = self.others_near(job.near, slots, i);
             let cost_now = self.cost(job, &now, &others, f64::INFINITY);
-            let (slot, cost) = self.best(&on_leader, slots, i);
+            let (slot, cost) = self.best_below(&on_leader, slots, i, cost_now - 1e-9);
             if cost < cost_now - 1e-9 {
                 slots[i] = Some(slot);
             }
@@ -296,6 +296,12 @@ impl<'a> Placer<'a> {
     /// The least colliding candidate of `job`, label `i`, with the other labels where `slots`
     /// has them (the first of equals), and its cost.
     fn best(&self, job: &Job, slots: &[Option<Slot>], i: usize) -> (Slot, f64) {
+        self.best_below(job, slots, i, f64::INFINITY)
+    }
+
+    /// The cheapest place of `job` ([`best`](Self::best)) among those costing less than
+    /// `bound`; a place costing no less, with the cost `bound`, when there is none.
+    fn best_below(&self, job: &Job, slots: &[Option<Slot>], i: usize, bound: f64) -> (Slot, f64) {
         let others = self.others_near(job.near, slots, i);
         let mut best = (
             Slot {
@@ -303,7 +309,7 @@ impl<'a> Placer<'a> {
                 rank: 0,
                 leader: job.leaders.first().copied(),
             },
-            f64::INFINITY,
+            bound,
         );
         for (rank, &rect) in job.candidates.iter().enumerate() {
             let leader = job.leaders.get(rank).copied();
@@ -416,6 +422,9 @@ impl<'a> Placer<'a> {
             if padded.contains(&Rect::new(*p, *p)) {
                 cost += OVER_POINT;
             }
+        }
+        if cost >= bound {
+            return cost;
         }
         cost = match slot.leader {
             None => away(job, rect, cost),
