@@ -2,7 +2,7 @@
 //! dimension line when that is free (ГОСТ 2.307), else slid along the line, under it, or past
 //! its arrows on the line's extension — never struck through by a line of its own view.
 
-use super::place::{clipped_area, clipped_length, rect_segment_distance, NEARER_MM};
+use super::place::{clipped_area, clipped_length, own_distance, NEARER_MM};
 use super::{Outline, Shape};
 use crate::construct::Item;
 use crate::geom::DVec2;
@@ -73,18 +73,11 @@ pub(super) fn placed(
 /// What a text whose box is `rect` costs for standing nearer another line of `lines` than
 /// its own dimension's lines `own` (zero when it is not, or `own` has no line).
 fn wrong_line(rect: &Rect, lines: &[Outline], own: &[Outline]) -> f64 {
-    let distance = |o: &Outline| match o.shape {
-        Shape::Line(a, b) => Some(rect_segment_distance(rect, a, b)),
-        Shape::Area(_) => None,
-    };
-    let Some(mine) = own.iter().filter_map(distance).reduce(f64::min) else {
+    let Some(mine) = own_distance(own, rect) else {
         return 0.0;
     };
-    let rival = lines
-        .iter()
-        .filter(|o| !own.contains(o))
-        .filter_map(distance)
-        .fold(f64::INFINITY, f64::min);
+    let others = lines.iter().filter(|o| !own.contains(o));
+    let rival = own_distance(others, rect).unwrap_or(f64::INFINITY);
     match rival + NEARER_MM < mine {
         true => WRONG_LINE + WRONG_LINE_MM * (mine - rival),
         false => 0.0,

@@ -448,20 +448,14 @@ impl<'a> Placer<'a> {
             if !bounds.touches(&padded) {
                 continue;
             }
-            cost += match &o.shape {
-                Shape::Line(a, b) => {
-                    let inside = clipped_length(*a, *b, &padded);
-                    let struck = if inside > 0.0 { STRUCK } else { 0.0 };
-                    struck + inside * if o.main { MAIN_LINE } else { THIN_LINE }
+            let inside = ink_inside(o, &padded);
+            cost += match (&o.shape, inside > 0.0) {
+                (_, false) => 0.0,
+                (Shape::Line(..), true) => {
+                    STRUCK + inside * if o.main { MAIN_LINE } else { THIN_LINE }
                 }
-                Shape::Area(pts) => {
-                    let per = if o.main { MAIN_AREA } else { THIN_AREA };
-                    let a = clipped_area(pts, &padded);
-                    if a > 0.0 {
-                        per * (1.0 + a)
-                    } else {
-                        0.0
-                    }
+                (Shape::Area(_), true) => {
+                    (1.0 + inside) * if o.main { MAIN_AREA } else { THIN_AREA }
                 }
             };
         }
@@ -499,18 +493,25 @@ fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
 /// clearance a label keeps).
 fn struck(job: &Job, rect: &Rect) -> bool {
     let padded = rect.inflate(CLEARANCE_MM * 0.5);
-    job.lines.iter().any(|(bounds, o)| {
-        bounds.touches(&padded)
-            && match &o.shape {
-                Shape::Line(a, b) => clipped_length(*a, *b, &padded) > 0.0,
-                Shape::Area(pts) => clipped_area(pts, &padded) > 0.0,
-            }
-    })
+    job.lines
+        .iter()
+        .any(|(bounds, o)| bounds.touches(&padded) && ink_inside(o, &padded) > 0.0)
+}
+
+/// How much of the outline `o` lies inside `r`: mm of a line, mm² of an area.
+fn ink_inside(o: &Outline, r: &Rect) -> f64 {
+    match &o.shape {
+        Shape::Line(a, b) => clipped_length(*a, *b, r),
+        Shape::Area(pts) => clipped_area(pts, r),
+    }
 }
 
 /// The distance from `rect` to the nearest of the lines among `own`; `None` without lines.
-fn own_distance(own: &[Outline], rect: &Rect) -> Option<f64> {
-    own.iter()
+pub(super) fn own_distance<'o>(
+    own: impl IntoIterator<Item = &'o Outline>,
+    rect: &Rect,
+) -> Option<f64> {
+    own.into_iter()
         .filter_map(|o| match o.shape {
             Shape::Line(a, b) => Some(rect_segment_distance(rect, a, b)),
             Shape::Area(_) => None,
