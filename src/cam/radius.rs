@@ -132,6 +132,10 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     })
 }
 
+/// How far from the pivot O₂ the rocker's later positions begin, mm: beyond the hinge and the
+/// few millimetres where the fan's rays would run together.
+const FAN_CLEAR_MM: f64 = 8.0;
+
 /// The rocker: dS/dφ laid along the rocker at every point, the γ_min lines through the
 /// points K and the centre below them all.
 fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamError> {
@@ -172,9 +176,16 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
         let e = DVec2::from_angle(psi);
         let a = pivot + e * l;
         let k = a - e * (sigma * mu.to_mm(m.ds));
+        // Each later position starts clear of the pivot: a dozen or more rays meeting at O₂
+        // print as a black wedge there; the first, the rocker as given, runs from O₂.
+        let from = if i == 0 {
+            pivot
+        } else {
+            pivot + e * FAN_CLEAR_MM
+        };
         rec.draw(
             format!("rocker O_2A_{i}"),
-            Item::Segment(Segment::new(pivot, a)),
+            Item::Segment(Segment::new(from, a)),
             Role::Construction,
             &[pid],
         );

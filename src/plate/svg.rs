@@ -6,6 +6,7 @@ use super::path::{num, Map, PathData};
 use super::sheet::{frame_marks, title_block_marks};
 use super::style::{Mark, Paint, Pen};
 use super::View;
+use crate::construct::{Item, Step};
 use svg::node::element::{Group, Path, Rectangle};
 use svg::node::Blob;
 use svg::Document;
@@ -161,11 +162,25 @@ fn pen_attrs(p: Path, pen: Pen) -> Path {
     }
 }
 
-/// A view: one group per step (in order), its labels, then its caption when `captioned`.
+/// The steps of a view in the order they are painted: the recorder's order, except that the
+/// hinges (joints) come last, so that a link or a line drawn after its hinge stops at the
+/// hinge's white circle as on the drawing board, instead of running to its centre. (A slider
+/// block keeps its place: the friction pictures draw their forces across the block.) The
+/// replay addresses steps by id, so the order is the painter's only.
+fn hinges_last(steps: &[Step]) -> impl Iterator<Item = &Step> {
+    let pair = |s: &&Step| matches!(s.item, Item::Joint { .. });
+    steps
+        .iter()
+        .filter(move |s| !pair(s))
+        .chain(steps.iter().filter(pair))
+}
+
+/// A view: one group per step (hinges last, [`hinges_last`]), its labels, then its caption
+/// when `captioned`.
 fn view_group(k: usize, view: &View, laid: &Layout, captioned: bool) -> Group {
     let map = Map::figure(view.origin);
     let mut g = Group::new().set("id", format!("view-{k}"));
-    for step in &view.figure.steps {
+    for step in hinges_last(&view.figure.steps) {
         g = g.add(group(
             &format!("view-{k}-step-{}", step.id.0),
             step_marks(step, map),

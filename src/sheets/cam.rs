@@ -9,7 +9,7 @@ use super::BuildError;
 use crate::cam::{Analogue, Cam, CamSpec, Diagrams, Follower, Given, Law, Layout, Rotation};
 use crate::check::{Cusp, Finding, Row};
 use crate::geom::DVec2;
-use crate::plate::{Plate, Sheet, SheetSize, TableBlock, View, CAPTION_BAND_MM};
+use crate::plate::{Plate, Sheet, SheetSize, TableBlock, CAPTION_BAND_MM};
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
 use crate::scene::Key;
 use crate::study::Session;
@@ -91,7 +91,6 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         size: SheetSize::A1,
         landscape: true,
     };
-    let blocks: Vec<Block> = blocks.into_iter().map(Block::clear_of_symbols).collect();
     one_sheet(sheet, blocks, drawings, &title, lang)
 }
 
@@ -131,10 +130,7 @@ pub(super) fn diagram_block(d: &Diagrams, given: Given, lang: Lang) -> Block {
         } else {
             DVec2::new(0.0, bottom - CAPTION_BAND_MM - STACK_GAP_MM - hi.y)
         };
-        let part = Part {
-            caption_drop: View::symbols_below(figure),
-            ..Part::new(figure.clone(), at, Some(caption))
-        };
+        let part = Part::new(figure.clone(), at, Some(caption));
         bottom = at.y + lo.y - part.caption_drop;
         parts.push(part);
     }

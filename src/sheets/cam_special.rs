@@ -62,7 +62,6 @@ pub(super) fn build(
         size: SheetSize::A1,
         landscape: true,
     };
-    let blocks: Vec<Block> = blocks.into_iter().map(Block::clear_of_symbols).collect();
     one_sheet(sheet, blocks, drawings, &title, lang)
 }
 

@@ -59,9 +59,7 @@ fn degrees(a: f64, lang: Lang) -> String {
 /// under what the figure's symbols draw below its points (the ground of the crank's pivot).
 fn view(figure: &Figure, what: String, (key, scale): (Key, Scale), lang: Lang) -> Block {
     let caption = format!("{what}, {}", scale.caption(lang));
-    Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))
-        .clear_of_symbols()
-        .with_label_room()
+    Block::view(figure.clone(), caption, Some(ScaleKey { key, scale })).with_label_room()
 }
 
 /// The letters of detail views (ГОСТ 2.316: capitals, without Й, О, Х, Ъ, Ы, Ь).

@@ -51,13 +51,14 @@ pub(super) struct Part {
 }
 
 impl Part {
-    /// A view at `at` with `caption` under it.
+    /// A view at `at` with `caption` under it, clear of what the figure's symbols draw below
+    /// its points (the ground of a fixed pivot, an arrowhead), not over it.
     pub fn new(figure: Figure, at: DVec2, caption: Option<String>) -> Self {
         Part {
+            caption_drop: View::symbols_below(&figure),
             figure,
             at,
             caption,
-            caption_drop: 0.0,
             label_room: None,
         }
     }
@@ -103,15 +104,6 @@ impl Block {
             },
             other => other,
         }
-    }
-
-    /// The block with each caption under what its figure's symbols draw below its points
-    /// (the ground of a fixed pivot), not over it.
-    pub fn clear_of_symbols(self) -> Self {
-        self.map_parts(|p| Part {
-            caption_drop: View::symbols_below(&p.figure),
-            ..p
-        })
     }
 
     /// The block with room beside each long joint label's point for the label (the pole of a

@@ -112,7 +112,7 @@ fn scheme_block(
     };
     let caption = format!("{}, {}", name.get(lang), s_scale.caption(lang));
     // The caption under the grounds of the fixed pivots, not over their hatching.
-    Ok(Block::view(scheme(s_scale), caption, None).clear_of_symbols())
+    Ok(Block::view(scheme(s_scale), caption, None))
 }
 
 fn kind_name(k: DyadKind, lang: Lang) -> String {

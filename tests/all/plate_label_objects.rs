@@ -77,6 +77,17 @@ fn labels_away_in(plate: &Plate, l: &Layout) -> Vec<(String, String)> {
             if d > POINT_REACH_MM {
                 out.push(say(format!("{d:.1} mm from its point")));
             }
+            let rival = l
+                .labels
+                .iter()
+                .filter(|o| o.view == x.view && o.anchor.distance(x.anchor) > 1e-6)
+                .map(|o| (box_to_point(lo, hi, o.anchor), &o.text))
+                .min_by(|a, b| a.0.total_cmp(&b.0));
+            if let Some((r, other)) = rival.filter(|(r, _)| r + NEARER_MM < d) {
+                out.push(say(format!(
+                    "{d:.1} mm from its point, {r:.1} mm from “{other}”'s"
+                )));
+            }
             continue;
         }
         let own: Vec<(DVec2, DVec2)> = lines(first)
@@ -194,7 +205,8 @@ fn every_label_is_at_its_object() {
 /// The rule fails where it should: a point's label anchored 30 mm from its point (the
 /// lever's image of P labelled at its force's arrow), and a reaction's label written on
 /// another side of its polygon (`R₁₋₂` on the `R₄₋₃` line) — the placer would move a label
-/// merely anchored there, so its placed box is moved there.
+/// merely anchored there, so its placed box is moved there; and a position number written
+/// past the next point, nearer it than its own.
 #[test]
 fn the_object_rule_fails_on_a_plate_built_to_break_it() {
     let plate = sheet("friction/friction");
@@ -208,10 +220,14 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
         let toward = (to - from).perp().normalize();
         drawn(id, Item::Vector { from, to }, text, (at, toward))
     };
+    // Two position numbers 6 mm apart.
+    let (p8, p9) = (DVec2::new(0.0, -60.0), DVec2::new(6.0, -60.0));
     let steps = vec![
         point,
         side(1, o, a, "R_{4-3}", o.lerp(a, 0.5)),
         side(2, a, b, "R_{1-2}", a.lerp(b, 0.5)),
+        drawn(3, Item::Point(p8), "8", (p8, -DVec2::Y)),
+        drawn(4, Item::Point(p9), "9", (p9, -DVec2::Y)),
     ];
     let plate = with_view(plate, steps);
     let mut l = layout(&plate);
@@ -226,11 +242,20 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
             x.rect.max = x.rect.min + size;
         }
     }
+    // "8" written past point 9, within its reach of its own point but nearer 9.
+    let past_nine = on_sheet(view, p9) + DVec2::new(2.5, 0.0);
+    for x in l.labels.iter_mut() {
+        if x.view == broken && x.text == "8" {
+            let size = x.rect.max - x.rect.min;
+            x.rect.min = past_nine - size * 0.5;
+            x.rect.max = x.rect.min + size;
+        }
+    }
     let found: Vec<String> = labels_away_in(&plate, &l)
         .into_iter()
         .map(|x| x.1)
         .collect();
-    assert!(found.len() >= before + 2, "{found:?}");
+    assert!(found.len() >= before + 3, "{found:?}");
     let all = found.join("\n");
     assert!(
         all.contains("“p_{P}”:") && all.contains("mm from its point"),
@@ -240,9 +265,14 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
         all.contains("“R_{1-2}”:") && all.contains("R_{4-3}"),
         "{all}"
     );
-    // Laid out by the placer, the reaction's label is at its own side.
+    assert!(all.contains("“8”:") && all.contains("from “9”'s"), "{all}");
+    // Laid out by the placer, the reaction's label is at its own side and "8" at its point.
     let placed: Vec<String> = labels_away(&plate).into_iter().map(|x| x.1).collect();
-    assert!(!placed.join("\n").contains("“R_{1-2}”:"), "{placed:?}");
+    let placed = placed.join("\n");
+    assert!(
+        !placed.contains("“R_{1-2}”:") && !placed.contains("“8”:"),
+        "{placed}"
+    );
 }
 
 /// Where the leaders of the layout `l` break ГОСТ 2.316: a leader (its line or shelf) through

@@ -40,7 +40,8 @@ const THIN_AREA: f64 = 6.0;
 /// Cost per rank of the candidate (the preferred position is rank 0).
 const RANK: f64 = 0.5;
 /// Cost of a label of an item (a force, an arm) nearer to another line of its view than to
-/// its own: it would be read as that line's (issue 45); plus [`WRONG_LINE_MM`] per mm. More
+/// its own, or of a point nearer another labelled point: it would be read as that line's or
+/// that point's (issue 45); plus [`WRONG_LINE_MM`] per mm. More
 /// than a line grazing the label's corner, less than a line striking through it
 /// ([`STRUCK`] and [`MAIN_LINE`] over a millimetre): a struck label cannot be read at all.
 const WRONG_LINE: f64 = 30.0;
@@ -467,13 +468,23 @@ impl<'a> Placer<'a> {
 pub(crate) const NEARER_MM: f64 = 0.5;
 
 /// `cost` and what a label at `rect` costs for standing away from its object: a label of a
-/// point beyond [`POINT_REACH_MM`] from it, a label of an item nearer another line of its view
-/// than its own (nothing at its object).
+/// point beyond [`POINT_REACH_MM`] from it or nearer another labelled point of its view (the
+/// position number "8" written nearer point 9, issue 45), a label of an item nearer another
+/// line of its view than its own (nothing at its object).
 fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
     if job.request.names_of == Names::Point {
-        let beyond = box_distance(rect, job.request.anchor) - POINT_REACH_MM;
+        let own = box_distance(rect, job.request.anchor);
+        let beyond = own - POINT_REACH_MM;
         if beyond > 1e-9 {
             cost += (BEYOND + BEYOND_MM * beyond).min(AWAY_MAX);
+        }
+        let rival = job
+            .points
+            .iter()
+            .map(|p| box_distance(rect, *p))
+            .fold(f64::INFINITY, f64::min);
+        if rival + NEARER_MM < own {
+            cost += (WRONG_LINE + WRONG_LINE_MM * (own - rival)).min(AWAY_MAX);
         }
     }
     if let Some(own) = own_distance(&job.request.own, rect) {
