@@ -11,26 +11,12 @@ use super::follower::{to_cam, Placement};
 use super::motion::Point;
 use super::motion::{motion, Motion};
 use super::{CamSpec, Closure, Follower, Given, Law, Rotation, Shock};
-use crate::check::finding::Note;
+use crate::check::notes::cam::{AngleCheck, CamNote, LawName, Phase, Shocks};
 use crate::check::{
     self, At, BaseUsed, Cusp, Finding, Key, Limit, Method, RadiusBasis, Row, Symbol,
 };
 use crate::geom::DVec2;
-use crate::scale::{format_sig, Lang};
 use std::f64::consts::FRAC_PI_2;
-
-/// A number in a note: 5 significant digits.
-fn num(x: f64) -> String {
-    format_sig(x, 5, Lang::En)
-}
-/// A length in mm in a note.
-fn mm(x: f64) -> String {
-    format_sig(x * 1e3, 5, Lang::En)
-}
-/// An angle in degrees in a note.
-fn deg(x: f64) -> String {
-    format_sig(x.to_degrees(), 4, Lang::En)
-}
 
 fn row(symbol: Symbol, at: At, method: Method, graphical: f64, analytic: f64, scale: f64) -> Row {
     let key = Key {
@@ -264,39 +250,32 @@ impl Cam {
 
     /// The verdicts of the notes.
     pub fn findings(&self) -> Vec<Finding> {
-        check::finding::findings(&self.noted())
+        check::notes::cam::findings(&self.noted())
     }
 
     /// The notes: laws and shocks, the assumed law, the equal-return check, r_min against a
     /// quoted value, the roller's choice, and every hard case detected.
-    pub fn noted(&self) -> Vec<Note> {
+    pub fn noted(&self) -> Vec<CamNote> {
         let s = &self.spec;
         let mut out = Vec::new();
         if self.rotation == Rotation::Cw {
-            out.push(Note::text(
-                "cam: it turns clockwise: constructed as its mirror image (counter-clockwise, the offset on the other side) and drawn mirrored back; the numbers are the same",
-            ));
+            out.push(CamNote::Mirrored);
         }
         out.extend(law_notes(s, &self.points, &self.diagrams));
-        let r = &self.radius;
         let r_exact = self.exact_r_min();
         let basis = self.radius_basis();
-        out.push(Note::text(format!(
-            "cam: r_min = {} mm exact ({}); {} mm read off the combined diagram at its {} points",
-            mm(r_exact),
-            basis.english(),
-            mm(r.graphical),
-            self.points.len()
-        )));
+        out.push(CamNote::RMin {
+            exact: r_exact,
+            basis,
+            read: self.radius.graphical,
+            points: self.points.len(),
+        });
         if let Some(quoted) = s.quoted_r_min {
-            out.push(Note::finding(
-                "cam: ",
-                Finding::Erratum {
-                    quoted,
-                    exact: r_exact,
-                    basis,
-                },
-            ));
+            out.push(CamNote::Found(Finding::Erratum {
+                quoted,
+                exact: r_exact,
+                basis,
+            }));
         }
         out.extend(self.flat_face_notes());
         out.extend(self.curvature_notes(r_exact));
@@ -306,99 +285,69 @@ impl Cam {
 
     /// A flat face's notes: the convexity's worst value against the one read at the 45°
     /// tangent, and the face's half-length.
-    fn flat_face_notes(&self) -> Vec<Note> {
+    fn flat_face_notes(&self) -> Vec<CamNote> {
         let s = &self.spec;
         let mut out = Vec::new();
         if let Some(read) = self.radius.convexity {
             let (_, worst) = exact::min_radius_flat(s);
-            out.push(Note::text(format!(
-                "cam: flat face: max(−(S + S″)) = {} mm exact, {} mm read at the 45° tangent",
-                mm(worst),
-                mm(read)
-            )));
+            out.push(CamNote::FlatConvexity { exact: worst, read });
             let half = exact::dense(s, 500)
                 .into_iter()
                 .map(|(p, a)| (motion(s, p, a).ds - s.offset()).abs())
                 .fold(0.0, f64::max);
-            out.push(Note::text(format!("cam: flat face: the face's half-length from the follower's axis ≥ max|dS/dφ − e| = {} mm", mm(half))));
+            out.push(CamNote::FlatHalfLength(half));
         }
         out
     }
 
     /// The notes on the profile's curvature: a flat face's cusp; or the worst pressure
     /// (transmission) angle against its limit, the roller's choice, its cusp or undercut.
-    fn curvature_notes(&self, r_exact: f64) -> Vec<Note> {
+    fn curvature_notes(&self, r_exact: f64) -> Vec<CamNote> {
         let s = &self.spec;
         let mut out = Vec::new();
         let rho = self.exact_rho_min();
         if self.flat() {
             if rho < 0.0 {
-                let cusp = Cusp::Flat {
+                out.push(CamNote::from(Cusp::Flat {
                     rho,
                     base: self.base,
                     r_min: r_exact,
-                };
-                out.push(Note::finding("cam: ", Finding::Cusp(cusp)));
+                }));
             }
         } else {
             let worst = self.worst_angle();
-            let (what, limit, passed, lead) = if self.rocker() {
+            let (what, limit, passed) = if self.rocker() {
                 (
                     Limit::TransmissionAngle,
                     s.gamma_min,
                     worst < s.gamma_min - 1e-9,
-                    format!(
-                        "cam: the smallest transmission angle over the cycle is {}° (γ_min = {}°)",
-                        deg(worst),
-                        deg(s.gamma_min)
-                    ),
                 )
             } else {
                 (
                     Limit::PressureAngle,
                     FRAC_PI_2 - s.gamma_min,
                     worst > FRAC_PI_2 - s.gamma_min + 1e-9,
-                    format!(
-                        "cam: the largest pressure angle {} is {}° (λ_max = {}°)",
-                        if s.closure == Closure::Force {
-                            "on the rise (force closure)"
-                        } else {
-                            "over the cycle"
-                        },
-                        deg(worst),
-                        deg(FRAC_PI_2 - s.gamma_min)
-                    ),
                 )
             };
-            out.push(if passed {
-                let base = self.base_used(r_exact);
-                let f = Finding::LimitExceeded {
-                    what,
-                    worst,
-                    limit,
-                    base,
-                };
-                Note::finding(lead + ": ", f)
-            } else {
-                Note::text(lead)
+            out.push(CamNote::Angle(AngleCheck {
+                what,
+                on_rise: s.closure == Closure::Force,
+                worst,
+                limit,
+                exceeded: passed.then(|| self.base_used(r_exact)),
+            }));
+            out.push(CamNote::Roller {
+                base: self.base,
+                drawn: self.inversion.rho_min,
+                exact: rho,
+                roller: self.roller,
+                given: s.roller.is_some(),
             });
-            let chosen = if s.roller.is_some() {
-                "given"
-            } else {
-                "chosen"
-            };
-            let drawn = self.inversion.rho_min;
-            out.push(Note::text(format!(
-            "cam: roller: 0.4·r₀ = {} mm, 0.8·ρ_min = {} mm (ρ_min of the drawn pitch curve {} mm, exact {} mm): r = {} mm ({chosen})",
-            mm(0.4 * self.base), mm(0.8 * drawn), mm(drawn), mm(rho), mm(self.roller)
-        )));
             let (roller, rho_min) = (self.roller, rho);
             if (roller - rho).abs() <= 1e-12 * rho {
-                let cusp = Cusp::Roller { roller, rho_min };
-                out.push(Note::finding("cam: ", Finding::Cusp(cusp)));
+                out.push(CamNote::from(Cusp::Roller { roller, rho_min }));
             } else if roller > rho {
-                let f = Finding::Undercut { roller, rho_min };
-                out.push(Note::finding("cam: ", f));
+                out.push(CamNote::Found(Finding::Undercut { roller, rho_min }));
             }
         }
         out
@@ -406,19 +355,18 @@ impl Cam {
 
     /// A translating follower's notes: the smallest cam with the offset free, and an offset
     /// on the wrong side.
-    fn offset_notes(&self, r_exact: f64) -> Vec<Note> {
+    fn offset_notes(&self, r_exact: f64) -> Vec<CamNote> {
         let s = &self.spec;
         let st = s.starts();
         let mut out = Vec::new();
         if let Follower::Translating { offset } = s.follower {
             let (r_free, e_free) = exact::min_radius_free(s);
-            out.push(Note::text(format!(
-            "cam: with the offset free the smallest cam (lecture 15: O₁ where the two γ_min tangents meet) has r_min = {} mm at e = {} mm; the scene's e = {} mm gives {} mm",
-            mm(r_free),
-            mm(self.scene_offset(e_free)),
-            mm(self.scene_offset(offset)),
-            mm(r_exact)
-        )));
+            out.push(CamNote::OffsetFree {
+                r_min: r_free,
+                offset: self.scene_offset(e_free),
+                scene_offset: self.scene_offset(offset),
+                scene_r_min: r_exact,
+            });
             if offset < 0.0 {
                 let mirrored = Placement::Translating {
                     offset: -offset,
@@ -434,13 +382,12 @@ impl Cam {
                         .map(|(phi, a)| p.kin(motion(s, phi, a)).pressure_angle())
                         .fold(0.0, f64::max)
                 };
-                let f = Finding::WrongSide {
+                out.push(CamNote::Found(Finding::WrongSide {
                     offset: self.scene_offset(offset),
                     rise_max: rise_max(&self.placement),
                     other_offset: self.scene_offset(-offset),
                     other_max: rise_max(&mirrored),
-                };
-                out.push(Note::finding("cam: ", f));
+                }));
             }
         }
         out
@@ -488,39 +435,37 @@ pub(super) fn diagram_rows(spec: &CamSpec, points: &[Point], d: &Diagrams) -> Ve
 
 /// The notes of the law and its diagrams: each phase's law and shocks, an assumed law, the
 /// equal-return check read off the diagrams.
-pub(super) fn law_notes(s: &CamSpec, points: &[Point], d: &Diagrams) -> Vec<Note> {
+pub(super) fn law_notes(s: &CamSpec, points: &[Point], d: &Diagrams) -> Vec<CamNote> {
     let mut out = Vec::new();
     let st = s.starts();
-    for (name, law, from, to) in [
-        ("rise", s.rise, st[0], st[1]),
-        ("return", s.ret, st[2], st[3]),
+    for (phase, law, from, to) in [
+        (Phase::Rise, s.rise, st[0], st[1]),
+        (Phase::Return, s.ret, st[2], st[3]),
     ] {
-        let what = match law {
-            Law::ConstantAcceleration { ratio } => {
-                format!("constant acceleration \"+ −\" (ratio {})", num(ratio))
-            }
-            other => other.key().to_string(),
+        let name = match law {
+            Law::ConstantAcceleration { ratio } => LawName::ConstantAcceleration { ratio },
+            other => LawName::Key(other.key()),
         };
-        let lead = format!("cam: {name} {}°–{}°: law {what}; ", deg(from), deg(to));
-        out.push(match law.shock() {
-            Shock::Rigid => Note::finding(
-                lead,
-                Finding::RigidShock {
-                    from,
-                    to,
-                    jump: s.stroke / (to - from),
-                },
-            ),
-            Shock::Soft => Note::text(lead + "soft shocks: the acceleration jumps (finite)"),
-            Shock::None => Note::text(lead + "no shock"),
+        let shocks = match law.shock() {
+            Shock::Rigid => Shocks::Rigid {
+                jump: s.stroke / (to - from),
+            },
+            Shock::Soft => Shocks::Soft,
+            Shock::None => Shocks::None,
+        };
+        out.push(CamNote::Law {
+            phase,
+            from,
+            to,
+            law: name,
+            shocks,
         });
     }
     if s.law_assumed {
-        out.push(Note::text(format!(
-                "cam: the source's diagrams are lost: the law of the rise ({}) and of the return ({}) is assumed",
-                s.rise.key(),
-                s.ret.key()
-            )));
+        out.push(CamNote::LawAssumed {
+            rise: s.rise.key(),
+            ret: s.ret.key(),
+        });
     }
     let top = points
         .iter()
@@ -528,9 +473,10 @@ pub(super) fn law_notes(s: &CamSpec, points: &[Point], d: &Diagrams) -> Vec<Note
         .and_then(|i| d.s.get(i))
         .copied()
         .unwrap_or(0.0);
-    out.push(Note::text(format!(
-            "cam: equal-return check: dS/dφ at the end of the rise = {} m, of the return = {} m (0 exact); S at the end of the rise y_max·μ_S = {} m against the stroke {} m",
-            num(d.ds_ends[0]), num(d.ds_ends[1]), num(top), num(s.stroke)
-        )));
+    out.push(CamNote::EqualReturn {
+        ends: d.ds_ends,
+        top,
+        stroke: s.stroke,
+    });
     out
 }

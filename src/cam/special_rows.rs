@@ -13,19 +13,9 @@ use super::rows::{diagram_rows, law_notes};
 use super::sliding::{self, Sliding};
 use super::special::{Special, SpecialProfile};
 use super::{CamError, Closure};
-use crate::check::finding::Note;
+use crate::check::notes::cam::{CamNote, SpecialNote};
 use crate::check::{self, At, Finding, Key, Method, Row, Symbol};
-use crate::scale::{format_sig, Lang};
 use std::f64::consts::FRAC_PI_2;
-
-/// A length in mm in a note.
-fn mm(x: f64) -> String {
-    format_sig(x * 1e3, 5, Lang::En)
-}
-/// An angle in degrees in a note.
-fn deg(x: f64) -> String {
-    format_sig(x.to_degrees(), 4, Lang::En)
-}
 
 fn row(symbol: Symbol, at: At, subject: &str, (graphical, exact): (f64, f64), scale: f64) -> Row {
     let key = Key {
@@ -184,13 +174,13 @@ impl Special {
 
     /// The verdicts of the notes.
     pub fn findings(&self) -> Result<Vec<Finding>, CamError> {
-        Ok(check::finding::findings(&self.noted()?))
+        Ok(check::notes::cam::findings(&self.noted()?))
     }
 
     /// The notes: the law and its diagrams, the frame, ρ_min exact and drawn, the largest
     /// pressure angle against λ_max, and the hard cases (a concave flat-faced profile, a
     /// roller larger than a crest's radius).
-    pub fn noted(&self) -> Result<Vec<Note>, CamError> {
+    pub fn noted(&self) -> Result<Vec<CamNote>, CamError> {
         let mut out = law_notes(&self.spec, &self.points, &self.diagrams);
         let rho = self.exact_rho_min()?;
         let drawn = self.drawn_rho_min();
@@ -210,78 +200,67 @@ impl Special {
         r: &FlatRocker,
         rho: f64,
         drawn: f64,
-    ) -> Result<Vec<Note>, CamError> {
+    ) -> Result<Vec<CamNote>, CamError> {
         let psi0 = ((r.base + r.face_offset) / r.centres).asin();
-        let mut out = vec![Note::text(format!(
-            "cam: flat-faced rocker: a = {} mm, e = {} mm, r₀ = {} mm: the face starts at ψ₀ = arcsin((r₀ + e)/a) = {}°",
-            mm(r.centres),
-            mm(r.face_offset),
-            mm(r.base),
-            deg(psi0)
-        ))];
-        out.push(Note::text(format!(
-            "cam: flat-faced rocker: the profile's smallest radius of curvature ρ = h + d²h/dα² is {} mm exact, {} mm read off the face lines' crossings at the {} points",
-            mm(rho),
-            mm(drawn),
-            self.points.len()
-        )));
+        let mut out = vec![
+            SpecialNote::RockerFrame {
+                centres: r.centres,
+                face_offset: r.face_offset,
+                base: r.base,
+                psi0,
+            },
+            SpecialNote::RockerCurvature {
+                exact: rho,
+                read: drawn,
+                points: self.points.len(),
+            },
+        ];
         let worst = self.angles_exact()?.into_iter().fold(0.0, f64::max);
-        out.push(Note::text(format!(
-            "cam: flat-faced rocker: the largest pressure angle at the points is {}° (tg λ = e/t, t the contact's distance along the face from the foot of O₂)",
-            deg(worst)
-        )));
+        out.push(SpecialNote::RockerAngle(worst));
         if rho < self.spec.rho_min {
-            out.push(Note::text(format!(
-                "cam: CONCAVE: the flat-faced rocker's profile has ρ_min = {} mm below the {} mm asked (cam.rho_min): the face lines' envelope {}; a larger r₀ or centre distance is needed",
-                mm(rho),
-                mm(self.spec.rho_min),
-                if rho < 0.0 { "loops back (a cusp)" } else { "is too sharp" }
-            )));
+            out.push(SpecialNote::Concave {
+                rho,
+                asked: self.spec.rho_min,
+            });
         }
-        Ok(out)
+        Ok(out.into_iter().map(CamNote::Special).collect())
     }
 
-    fn sliding_notes(&self, s: &Sliding, rho: f64, drawn: f64) -> Vec<Note> {
-        let mut out = vec![Note::text(format!(
-            "cam: translating cam: the law's cycle laid along the travel X = {} mm (ξ = X·φ/2π), roller r = {} mm",
-            mm(s.travel),
-            mm(s.roller)
-        ))];
+    fn sliding_notes(&self, s: &Sliding, rho: f64, drawn: f64) -> Vec<CamNote> {
+        let mut out = vec![CamNote::Special(SpecialNote::Sliding {
+            travel: s.travel,
+            roller: s.roller,
+        })];
         let lambda_max = self.lambda_max();
         let worst = self
             .angles_exact()
             .map(|a| a.into_iter().fold(0.0, f64::max))
             .unwrap_or(f64::NAN);
         if let Some((read, exact)) = self.travel_min() {
-            out.push(Note::text(format!(
-                "cam: translating cam: the largest pressure angle at the points is {}° (λ_max = {}°); the shortest travel keeping λ ≤ λ_max is X_min = 2π·max|dS/dφ|/tg λ_max = {} mm exact, {} mm from the drawn angles",
-                deg(worst),
-                deg(lambda_max),
-                mm(exact),
-                mm(read)
-            )));
+            out.push(CamNote::Special(SpecialNote::SlidingAngle {
+                worst,
+                lambda_max,
+                exact,
+                read,
+            }));
             if exact > s.travel * (1.0 + 1e-9) {
-                out.push(Note::text(format!(
-                    "cam: EXCEEDED: the travel X = {} mm is shorter than X_min = {} mm: the pressure angle passes λ_max = {}°",
-                    mm(s.travel),
-                    mm(exact),
-                    deg(lambda_max)
-                )));
+                out.push(CamNote::Special(SpecialNote::ShortTravel {
+                    travel: s.travel,
+                    x_min: exact,
+                    lambda_max,
+                }));
             }
         }
         if rho.is_finite() {
-            out.push(Note::text(format!(
-                "cam: translating cam: the pitch curve's smallest convex radius of curvature is {} mm exact, {} mm through three drawn roller centres; the roller must stay under it (0.8·ρ_min = {} mm)",
-                mm(rho),
-                mm(drawn),
-                mm(0.8 * rho)
-            )));
+            out.push(CamNote::Special(SpecialNote::SlidingCurvature {
+                exact: rho,
+                read: drawn,
+            }));
             if s.roller > rho {
-                let f = Finding::Undercut {
+                out.push(CamNote::Found(Finding::Undercut {
                     roller: s.roller,
                     rho_min: rho,
-                };
-                out.push(Note::finding("cam: ", f));
+                }));
             }
         }
         out

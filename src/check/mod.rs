@@ -20,7 +20,7 @@ mod summary;
 #[cfg(test)]
 mod tests;
 
-pub use finding::{BaseUsed, Cusp, Finding, Limit, NoFlywheel, Part, RadiusBasis, Route};
+pub use finding::{BaseUsed, Cusp, Finding, Limit, NoFlywheel, RadiusBasis, Route};
 pub use notes::Note;
 pub use report::{Column, Report, Table};
 pub use seed::{seed_notes, SeedValue};

@@ -1,9 +1,10 @@
 //! The rows and notes of the dynamic study.
 
 use super::{ConstantMoment, Dynamics, SeedClaims};
-use crate::check::finding::Note;
+use crate::check::notes::dynamics::{
+    Balance, DynamicsNote, Exact, Flywheel, RouteFlywheel, Routes,
+};
 use crate::check::{self, Finding, Key, Method, NoFlywheel, Route, Row, Symbol};
-use crate::scale::{format_sig, Lang};
 
 /// The rows: `M_red`, `J_red` (velocity plans) and `dT` (graphical integration) per
 /// position; `A_res`, `M_drive` (integration), `J_flywheel` and `delta` (Wittenbauer,
@@ -109,22 +110,12 @@ pub fn rows(d: &Dynamics) -> Vec<Row> {
 
 /// The verdicts of the notes.
 pub fn findings(d: &Dynamics) -> Vec<Finding> {
-    check::finding::findings(&noted(d))
-}
-
-/// A value in the notes: 6 significant digits.
-fn n(x: f64) -> String {
-    format_sig(x, 6, Lang::En)
-}
-
-/// How far `x` is from `r`, per cent of `r`: 3 significant digits.
-fn pct(x: f64, r: f64) -> String {
-    format_sig((x - r) / r * 100.0, 3, Lang::En)
+    check::notes::dynamics::findings(&noted(d))
 }
 
 /// The notes: the exact solution, the textbook routes against it, the seed's numbers that do
 /// not follow from its data.
-pub fn noted(d: &Dynamics) -> Vec<Note> {
+pub fn noted(d: &Dynamics) -> Vec<DynamicsNote> {
     let mut out = vec![exact_note(d), routes_note(d)];
     if let Some(seed) = &d.spec.seed {
         seed_notes(d, seed, &mut out);
@@ -134,132 +125,97 @@ pub fn noted(d: &Dynamics) -> Vec<Note> {
 
 /// The exact solution: its flywheel (or none needed) for δ, ω_avg with the extremes of ω,
 /// the cycle's time and the constant moment.
-fn exact_note(d: &Dynamics) -> Note {
+fn exact_note(d: &Dynamics) -> DynamicsNote {
     let e = &d.exact;
-    let exact = if e.j_fw > 0.0 {
-        Note::text(format!(
-            "the energy equation integrated exactly gives J_flywheel = {} kg·m² for δ = {}",
-            n(e.j_fw),
-            n(e.delta())
-        ))
+    let flywheel = if e.j_fw > 0.0 {
+        Flywheel::Needed((e.j_fw, e.delta()))
     } else {
-        Note::default().with(Finding::NoFlywheelNeeded(NoFlywheel::Exact {
+        Flywheel::None(NoFlywheel::Exact {
             delta: e.delta(),
             asked: d.spec.delta,
-        }))
+        })
     };
-    Note::text("dynamics: ").append(exact).then(format!(
-        " at ω_avg = {} rad/s (ω_max = {} at {}°, ω_min = {} at {}° of crank travel from position {}); the cycle takes {} s; {}",
-        n(e.omega_avg()),
-        n(e.w_max.0),
-        format_sig(e.w_max.1.to_degrees(), 4, Lang::En),
-        n(e.w_min.0),
-        format_sig(e.w_min.1.to_degrees(), 4, Lang::En),
-        d.labels.first().map_or("1", String::as_str),
-        n(d.cycle_time),
-        match d.spec.constant_moment {
-            ConstantMoment::Driving => format!(
-                "A_res = {} J, M_drive = {} N·m",
-                n(d.cycle.a_res),
-                n(d.cycle.m_drive)
-            ),
-            ConstantMoment::Resisting => format!(
-                "A_drive = {} J of the indicator diagrams, the constant resisting moment M_res = {} N·m",
-                n(d.cycle.a_drive),
-                n(-d.cycle.m_drive)
-            ),
+    DynamicsNote::Exact(Exact {
+        flywheel,
+        omega_avg: e.omega_avg(),
+        w_max: e.w_max,
+        w_min: e.w_min,
+        from: d.labels.first().map_or("1", String::as_str).to_string(),
+        cycle_time: d.cycle_time,
+        balance: match d.spec.constant_moment {
+            ConstantMoment::Driving => Balance::Driving {
+                a_res: d.cycle.a_res,
+                m_drive: d.cycle.m_drive,
+            },
+            ConstantMoment::Resisting => Balance::Resisting {
+                a_drive: d.cycle.a_drive,
+                m_res: -d.cycle.m_drive,
+            },
         },
-    ))
+    })
 }
 
 /// The textbook routes against the exact flywheel: Wittenbauer's tangents, Merkin's route,
 /// and Merkin's on the continuous exact data.
-fn routes_note(d: &Dynamics) -> Note {
+fn routes_note(d: &Dynamics) -> DynamicsNote {
     let merkin_exact = d.cycle.merkin(d.w_avg, d.spec.delta).0 - d.spec.constant_inertia();
     let continuous = if merkin_exact > 0.0 {
-        Note::text(format!("gives {} kg·m²", n(merkin_exact)))
+        Flywheel::Needed(merkin_exact)
     } else {
-        Note::default().with(Finding::NoFlywheelNeeded(NoFlywheel::Continuous {
-            j: merkin_exact,
-        }))
+        Flywheel::None(NoFlywheel::Continuous { j: merkin_exact })
     };
-    Note::text(format!("dynamics: at {} positions ", d.labels.len()))
-        .append(route_note(
+    DynamicsNote::Routes(Routes {
+        positions: d.labels.len(),
+        wittenbauer: route_note(
             d,
-            ("Wittenbauer's tangents give", Route::Wittenbauer),
+            Route::Wittenbauer,
             &d.diagrams.wittenbauer,
             d.delta_of[0],
-        ))
-        .then(", ")
-        .append(route_note(
-            d,
-            ("Merkin's route gives", Route::Merkin),
-            &d.diagrams.merkin,
-            d.delta_of[1],
-        ))
-        .then("; Merkin on the continuous exact data ")
-        .append(continuous)
-        .then(" (T_II with ω = ω_avg is the method's own error)")
+        ),
+        merkin: route_note(d, Route::Merkin, &d.diagrams.merkin, d.delta_of[1]),
+        continuous,
+    })
 }
 
-/// One textbook route (`name`, `by`): its flywheel against the exact one, or none needed;
-/// `delta` the δ it really gives.
-fn route_note(d: &Dynamics, (name, by): (&str, Route), r: &super::draw::Route, delta: f64) -> Note {
-    let e = &d.exact;
+/// One textbook route (`by`): its flywheel against the exact one, or none needed; `delta`
+/// the δ it really gives.
+fn route_note(
+    d: &Dynamics,
+    by: Route,
+    r: &super::draw::Route,
+    delta: f64,
+) -> Flywheel<RouteFlywheel> {
     if r.j_fw <= 0.0 {
-        Note::finding(
-            format!("{name}: "),
-            Finding::NoFlywheelNeeded(NoFlywheel::Reads {
-                route: by,
-                read: r.read,
-            }),
-        )
-    } else if e.j_fw > 0.0 {
-        Note::text(format!(
-            "{name} J_flywheel = {} kg·m² ({} %, δ really {})",
-            n(r.j_fw),
-            pct(r.j_fw, e.j_fw),
-            n(delta)
-        ))
+        Flywheel::None(NoFlywheel::Reads {
+            route: by,
+            read: r.read,
+        })
     } else {
-        Note::text(format!(
-            "{name} J_flywheel = {} kg·m² where none is needed (δ really {})",
-            n(r.j_fw),
-            n(delta)
-        ))
+        Flywheel::Needed(RouteFlywheel {
+            j: r.j_fw,
+            exact: (d.exact.j_fw > 0.0).then_some(d.exact.j_fw),
+            delta,
+        })
     }
 }
 
 /// The seed's numbers that do not follow from its data: its flywheel, its expression, its
 /// table of reduced inertias.
-fn seed_notes(d: &Dynamics, seed: &SeedClaims, out: &mut Vec<Note>) {
+fn seed_notes(d: &Dynamics, seed: &SeedClaims, out: &mut Vec<DynamicsNote>) {
     let e = &d.exact;
     if let Some(j) = seed.flywheel {
-        let got = d.cycle.with_flywheel(j, d.w_avg).delta();
-        let exact = if e.j_fw > 0.0 {
-            format!(
-                "the exact value is {} kg·m² ({} % off)",
-                n(e.j_fw),
-                pct(j, e.j_fw)
-            )
-        } else {
-            "no flywheel is needed".to_string()
-        };
-        out.push(Note::text(format!(
-            "dynamics: seed error: its flywheel J = {} kg·m² does not follow from its data: {exact}; with J = {} the machine runs at δ = {} = 1/{} instead of {}",
-            n(j),
-            n(j),
-            n(got),
-            format_sig(1.0 / got, 3, Lang::En),
-            n(d.spec.delta),
-        )));
+        out.push(DynamicsNote::SeedFlywheel {
+            j,
+            exact: (e.j_fw > 0.0).then_some(e.j_fw),
+            delta: d.cycle.with_flywheel(j, d.w_avg).delta(),
+            asked: d.spec.delta,
+        });
     }
-    if let Some(v) = seed.expression_value(d.spec.delta, d.w_avg) {
-        out.push(Note::text(format!(
-            "dynamics: seed error: its expression μ_T·BD/(δ·ω²) − (J_b + J_d)/2 evaluates to {} kg·m², not the {} it prints",
-            n(v),
-            seed.flywheel.map_or_else(|| "value".into(), n),
-        )));
+    if let Some(value) = seed.expression_value(d.spec.delta, d.w_avg) {
+        out.push(DynamicsNote::SeedExpression {
+            value,
+            printed: seed.flywheel,
+        });
     }
     if !seed.j_red.is_empty() {
         let c = d.spec.constant_inertia();
@@ -277,13 +233,11 @@ fn seed_notes(d: &Dynamics, seed: &SeedClaims, out: &mut Vec<Note>) {
             ratios.iter().copied().reduce(f64::min),
             ratios.iter().copied().reduce(f64::max),
         ) {
-            out.push(Note::text(format!(
-                "dynamics: seed error: its table of reduced inertias J_пр is wrong wherever the links move: its variable part J_пр − {} is {}…{} × the correct one at {} positions",
-                n(c),
-                format_sig(lo, 3, Lang::En),
-                format_sig(hi, 3, Lang::En),
-                ratios.len(),
-            )));
+            out.push(DynamicsNote::SeedInertias {
+                constant: c,
+                ratio: (lo, hi),
+                positions: ratios.len(),
+            });
         }
     }
 }

@@ -1,9 +1,12 @@
 //! The notes of a report as typed values carrying their numbers, one kind per study; the
 //! report's English of every one is written by `report` (its `notes` writer), so that no
-//! study builds a sentence. The cam's and the dynamics' notes are [`Statement`]s: text with
-//! their [`Finding`](super::Finding)s in place.
+//! study builds a sentence. A note that states a verdict carries it as a
+//! [`Finding`](super::Finding) in its place.
 
 pub mod balancing;
+pub mod blocking;
+pub mod cam;
+pub mod dynamics;
 pub mod forces;
 pub mod friction;
 pub mod gears;
@@ -11,9 +14,10 @@ pub mod kinematics;
 pub mod seed;
 pub mod train;
 
-use super::finding::Note as Statement;
-
 pub use balancing::BalancingNote;
+pub use blocking::BlockingNote;
+pub use cam::CamNote;
+pub use dynamics::DynamicsNote;
 pub use forces::ForcesNote;
 pub use friction::FrictionNote;
 pub use gears::GearsNote;
@@ -24,8 +28,10 @@ pub use train::{SeedStage, TrainNote};
 /// A note of a report.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Note {
-    /// A cam's or the dynamics' note: text and findings.
-    Stated(Statement),
+    /// A cam's.
+    Cam(CamNote),
+    /// The dynamics'.
+    Dynamics(DynamicsNote),
     /// A gear pair's or a wheel cut by the rack's.
     Gears(GearsNote),
     /// A gear train's.
@@ -40,8 +46,8 @@ pub enum Note {
     Friction(FrictionNote),
     /// A kinematic study's.
     Kinematics(KinematicsNote),
-    /// A note still written as English where it is found (the blocking contour's).
-    Text(String),
+    /// A blocking contour's.
+    Blocking(BlockingNote),
 }
 
 /// `From` each study's note into [`Note`], by its variant.
@@ -56,7 +62,8 @@ macro_rules! note_from {
 }
 
 note_from! {
-    Statement => Stated,
+    CamNote => Cam,
+    DynamicsNote => Dynamics,
     GearsNote => Gears,
     TrainNote => Train,
     ForcesNote => Forces,
@@ -64,5 +71,5 @@ note_from! {
     BalancingNote => Balancing,
     FrictionNote => Friction,
     KinematicsNote => Kinematics,
-    String => Text,
+    BlockingNote => Blocking,
 }

@@ -7,33 +7,14 @@
 use super::plane::BRACKET_TO;
 use super::trace::Contour;
 use super::{
-    levels, twin_value, Blocking, BlockingError, Hard, Indices, Kind, DIFF_STEP, NEWTON_TO,
-    ON_LIMIT,
+    levels, twin_value, Blocking, BlockingError, Criterion, Hard, Indices, Kind, DIFF_STEP,
+    NEWTON_TO, ON_LIMIT,
 };
 use crate::geom::{golden_max, illinois, DVec2};
 
 /// How far inside every hard limit a choice lies, in the index's own unit: s_a ≥ (s_a,min +
 /// 0.05)m, ε_α ≥ ε_min + 0.05, x ≥ x_min + 0.05, N_iB_i ≥ ρ_l,i + 0.05m.
 pub const CHOICE_MARGIN: f64 = 0.05;
-
-/// A criterion of the choice of x₁, x₂ inside the contour.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Criterion {
-    /// Maximise ε_α over the admissible region.
-    LargestContactRatio,
-    /// On the line x₁ + x₂ = x_Σ, the point where λ₁ at B₁ equals λ₂ at B₂ (or, when that
-    /// point is outside the admissible region, the admissible point of the line with the
-    /// least |λ₁ − λ₂|).
-    EqualSliding {
-        /// x_Σ.
-        x_sum: f64,
-    },
-    /// Maximise x₁ + x₂ (the stiffest, strongest teeth) with both tips s_a ≥ `sa_min`·m.
-    GreatestSumWithTip {
-        /// The least tip thickness, × m.
-        sa_min: f64,
-    },
-}
 
 /// A chosen point.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,7 +1,7 @@
 //! The drawing of a study's contour: the axes x₁, x₂ with their ticks, every traced curve
 //! labelled, the admissible region's boundary bold, the scene's point and each choice.
 
-use super::study::{level_name, point_label, Study};
+use super::study::{point_label, Study};
 use super::{levels, Kind};
 use crate::construct::{Figure, Item, Label, Role, Step, StepId};
 use crate::geom::{DVec2, Rect, Segment};
@@ -387,5 +387,17 @@ fn level_label(kind: Kind, limit: f64, lang: Lang, words: Words<'_>) -> String {
         Kind::ContactRatio => format!("ε_α = {l}"),
         Kind::Interference(i) => format!("{} {}", words.interference, i + 1),
         Kind::EqualSliding => "λ_1 = λ_2".into(),
+    }
+}
+
+/// A level in the name of the step that draws its curve.
+fn level_name(kind: Kind, limit: f64) -> String {
+    let l = format_sig(limit, 4, Lang::En);
+    match kind {
+        Kind::Undercut(i) => format!("x{0} ≥ x_min{0} = {l}", i + 1),
+        Kind::Tip(i) => format!("s_a{} ≥ {l}m", i + 1),
+        Kind::ContactRatio => format!("ε_α ≥ {l}"),
+        Kind::Interference(i) => format!("no interference with the fillet of wheel {}", i + 1),
+        Kind::EqualSliding => "λ₁ = λ₂".into(),
     }
 }

@@ -36,7 +36,8 @@ mod study;
 mod tests;
 mod trace;
 
-pub use choose::{Choice, Criterion, Placement, Side, CHOICE_MARGIN};
+pub use crate::check::notes::blocking::{Criterion, Kind};
+pub use choose::{Choice, Placement, Side, CHOICE_MARGIN};
 pub use figure::Words;
 pub use indices::{twin_deviation, twin_margin, twin_pair, twin_rho_l, twin_value, Indices};
 pub use plane::{distance_to, inside_rings};
@@ -65,21 +66,6 @@ pub(super) const NEWTON_TO: f64 = 1e-12;
 pub(super) const DIFF_STEP: f64 = 1e-7;
 /// The shifts the plane spans at most: |x| ≤ 3, what a scene accepts and a rack cuts.
 pub const X_MAX: f64 = 3.0;
-
-/// What a curve of the contour bounds.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Kind {
-    /// Undercut of wheel 0 or 1 (index x_i, limit x_min,i).
-    Undercut(usize),
-    /// The tip thickness of wheel i (index s_a,i/m).
-    Tip(usize),
-    /// The contact ratio ε_α.
-    ContactRatio,
-    /// Interference with the fillet of wheel i (index (N_iB_i − ρ_l,i)/m, limit 0).
-    Interference(usize),
-    /// Equal specific sliding (index λ₁(B₁) − λ₂(B₂), limit 0).
-    EqualSliding,
-}
 
 impl Kind {
     /// The index is at least its limit on the admissible side (`None`: a line, no side).

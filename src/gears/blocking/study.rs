@@ -3,9 +3,10 @@
 
 use super::trace::{twin_check, Contour};
 use super::{
-    twin_pair, Blocking, BlockingError, Choice, Criterion, Hard, Indices, Kind, Placement,
-    CHOICE_MARGIN, SPACING,
+    twin_pair, Blocking, BlockingError, Choice, Criterion, Hard, Indices, Placement, CHOICE_MARGIN,
+    SPACING,
 };
+use crate::check::notes::blocking::{BlockingNote, Level, Point, Traced};
 use crate::check::{Key, Method, Row, Symbol};
 use crate::gears::PairSpec;
 use crate::geom::DVec2;
@@ -205,98 +206,76 @@ impl Study {
     }
 
     /// The notes: the contour traced and checked, the scene's point and the choices.
-    pub fn notes(&self) -> Vec<String> {
-        let num = |x: f64, s| crate::scale::format_sig(x, s, crate::scale::Lang::En);
+    pub fn notes(&self) -> Vec<BlockingNote> {
         let c = &self.contour;
         let b = &c.blocking;
-        let n: usize = c.curves.iter().map(|c| c.points.len()).sum();
         let (lo, hi) = b.window;
-        let mut out = vec![format!(
-            "blocking contour z₁ = {}, z₂ = {}: traced on a grid of spacing {SPACING} over x₁ ∈ [{}, {}], x₂ ∈ [{}, {}] (each point bracketed along a grid edge to 1e-13 of m or its index to 1e-14 of its limit; the region's corners, where the binding limit changes, solved by Newton's steps to 1e-12): {} curves, {n} points; the admissible region {} ring(s) of {} points; at {} sampled points the twins (Pair::new, Cutting) give the limits to {:.1e}; undercut limit x_min = h_l* − z sin²α/2 with h_l* = {} (the flank's end): x_min1 = {}, x_min2 = {}",
-            b.z[0],
-            b.z[1],
-            num(lo.x, 4),
-            num(hi.x, 4),
-            num(lo.y, 4),
-            num(hi.y, 4),
-            c.curves.len(),
-            c.boundary.len(),
-            c.boundary.iter().map(Vec::len).sum::<usize>(),
-            self.twin_check.1,
-            self.twin_check.0,
-            num(b.hl, 6),
-            num(b.x_min(0), 5),
-            num(b.x_min(1), 5),
-        )];
-        let describe = |ix: &Indices| {
-            let l = ix.lambda.map_or("—".to_string(), |l| {
-                format!("λ₁(B₁) = {}, λ₂(B₂) = {}", num(l[0], 5), num(l[1], 5))
-            });
-            format!(
-                "x₁ = {}, x₂ = {}: α_w = {}°, y = {}, Δy = {}, ε_α = {}, s_a1 = {}m, s_a2 = {}m, {l}",
-                num(ix.x[0], 6),
-                num(ix.x[1], 6),
-                num(ix.alpha_w.to_degrees(), 6),
-                num(ix.y, 5),
-                num(ix.dy, 5),
-                num(ix.eps, 5),
-                num(ix.sa[0], 4),
-                num(ix.sa[1], 4),
-            )
-        };
-        let outside: Vec<String> = self
+        let mut out = vec![BlockingNote::Traced(Traced {
+            z: b.z,
+            spacing: SPACING,
+            window: [[lo.x, hi.x], [lo.y, hi.y]],
+            curves: c.curves.len(),
+            points: c.curves.iter().map(|c| c.points.len()).sum(),
+            rings: c.boundary.len(),
+            ring_points: c.boundary.iter().map(Vec::len).sum(),
+            sampled: self.twin_check.1,
+            twin_deviation: self.twin_check.0,
+            hl: b.hl,
+            x_min: [b.x_min(0), b.x_min(1)],
+        })];
+        let outside = self
             .placed
             .sides
             .iter()
             .filter(|s| s.inside == Some(false))
-            .map(|s| level_name(s.kind, s.limit))
+            .map(|s| Level {
+                kind: s.kind,
+                limit: s.limit,
+                inset: 0.0,
+            })
             .collect();
-        out.push(format!(
-            "blocking contour: the scene's point{} {}; {} (s_a ≥ 0.25m, ε_α ≥ 1, no undercut, no interference){}",
-            self.chosen.map_or(String::new(), |c| format!(
-                ", chosen on the contour by {} (`choose`),",
-                criterion_name(c)
-            )),
-            describe(&self.placed.indices),
-            if self.placed.admissible {
-                "inside"
-            } else {
-                "outside"
-            },
-            if outside.is_empty() {
-                String::new()
-            } else {
-                format!("; on the wrong side of {}", outside.join(", "))
-            }
-        ));
-        out.push(format!(
-            "blocking contour: each choice searches the whole region and keeps {CHOICE_MARGIN} inside every hard limit (s_a ≥ (s_a,min + {CHOICE_MARGIN})m, ε_α ≥ {}, x_i ≥ x_min,i + {CHOICE_MARGIN}, N_iB_i ≥ ρ_l,i + {CHOICE_MARGIN}m): on a limit itself the supremum can be a pair that does not work (the largest ε_α of 13/30 lies where the mate's tip reaches N₁, λ₁(B₁) = −∞)",
-            num(Self::HARD.eps_min + CHOICE_MARGIN, 3),
-        ));
+        out.push(BlockingNote::Placed {
+            chosen: self.chosen,
+            point: point(&self.placed.indices),
+            admissible: self.placed.admissible,
+            outside,
+        });
+        out.push(BlockingNote::Margin {
+            margin: CHOICE_MARGIN,
+            eps: Self::HARD.eps_min + CHOICE_MARGIN,
+        });
         for (c, r) in &self.choices {
-            out.push(match r {
+            let result = match r {
                 Ok(ch) => {
                     let inset = Blocking::choice_hard(*c, Self::HARD).inset;
-                    let on: Vec<String> = ch
+                    let on = ch
                         .on
                         .iter()
-                        .map(|(k, l)| inset_name(*k, *l, inset))
+                        .map(|&(kind, limit)| Level { kind, limit, inset })
                         .collect();
-                    format!(
-                        "blocking contour: {}: {}; on {}",
-                        criterion_name(*c),
-                        describe(&ch.indices),
-                        if on.is_empty() {
-                            "no limit (an inner maximum)".to_string()
-                        } else {
-                            on.join(", ")
-                        }
-                    )
+                    Ok((point(&ch.indices), on))
                 }
-                Err(e) => format!("blocking contour: {}: none ({e})", criterion_name(*c)),
+                Err(e) => Err(e.to_string()),
+            };
+            out.push(BlockingNote::Choice {
+                criterion: *c,
+                result,
             });
         }
         out
+    }
+}
+
+/// A point's indices as the notes state them.
+fn point(ix: &Indices) -> Point {
+    Point {
+        x: ix.x,
+        alpha_w: ix.alpha_w,
+        y: ix.y,
+        dy: ix.dy,
+        eps: ix.eps,
+        sa: ix.sa,
+        lambda: ix.lambda,
     }
 }
 
@@ -322,42 +301,5 @@ pub fn criterion_tag(c: Criterion) -> &'static str {
         Criterion::LargestContactRatio => POINT_TAGS[1],
         Criterion::EqualSliding { .. } => POINT_TAGS[2],
         Criterion::GreatestSumWithTip { .. } => POINT_TAGS[3],
-    }
-}
-
-/// A criterion in words (the notes).
-fn criterion_name(c: Criterion) -> String {
-    match c {
-        Criterion::LargestContactRatio => "the largest ε_α".into(),
-        Criterion::EqualSliding { x_sum } => format!(
-            "equal sliding λ₁(B₁) = λ₂(B₂) on x₁ + x₂ = {}",
-            crate::scale::format_sig(x_sum, 6, crate::scale::Lang::En)
-        ),
-        Criterion::GreatestSumWithTip { sa_min } => format!(
-            "the greatest x₁ + x₂ with s_a ≥ {}m",
-            crate::scale::format_sig(sa_min, 3, crate::scale::Lang::En)
-        ),
-    }
-}
-
-/// A level in words (the notes).
-pub(super) fn level_name(kind: Kind, limit: f64) -> String {
-    inset_name(kind, limit, 0.0)
-}
-
-/// [`level_name`] of a limit taken `inset` inside.
-fn inset_name(kind: Kind, limit: f64, inset: f64) -> String {
-    let num = |x: f64| crate::scale::format_sig(x, 4, crate::scale::Lang::En);
-    let (l, by) = (num(limit), num(inset));
-    match kind {
-        Kind::Undercut(i) if inset == 0.0 => format!("x{0} ≥ x_min{0} = {l}", i + 1),
-        Kind::Undercut(i) => format!("x{0} ≥ x_min{0} + {by} = {l}", i + 1),
-        Kind::Tip(i) => format!("s_a{} ≥ {l}m", i + 1),
-        Kind::ContactRatio => format!("ε_α ≥ {l}"),
-        Kind::Interference(i) if inset == 0.0 => {
-            format!("no interference with the fillet of wheel {}", i + 1)
-        }
-        Kind::Interference(i) => format!("N{0}B{0} ≥ ρ_l{0} + {by}m", i + 1),
-        Kind::EqualSliding => "λ₁ = λ₂".into(),
     }
 }

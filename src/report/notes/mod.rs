@@ -1,13 +1,18 @@
 //! The English of a report's notes: the one place where each typed note
-//! ([`Note`](crate::check::Note)) becomes the sentence the report writes (Markdown, JSON). The
-//! cam's and the dynamics' findings are written by
-//! [`Finding::english`](crate::check::Finding::english) inside their statements.
+//! ([`Note`](crate::check::Note)) becomes the sentence the report writes (Markdown, JSON),
+//! with the verdicts ([`Finding`](crate::check::Finding)) it states in their place.
 
 mod balancing;
+mod blocking;
+mod cam;
+mod dynamics;
+mod finding;
 mod forces;
 mod friction;
 mod gears;
 mod kinematics;
+#[cfg(test)]
+mod scan;
 mod seed;
 #[cfg(test)]
 mod tests;
@@ -26,7 +31,8 @@ fn sig(x: f64, digits: usize) -> String {
 /// The note as the report writes it.
 pub fn english(note: &Note) -> String {
     match note {
-        Note::Stated(s) => s.to_string(),
+        Note::Cam(n) => cam::english(n),
+        Note::Dynamics(n) => dynamics::english(n),
         Note::Gears(n) => gears::english(n),
         Note::Train(n) => train::english(n),
         Note::Forces(n) => forces::english(n),
@@ -34,7 +40,7 @@ pub fn english(note: &Note) -> String {
         Note::Balancing(n) => balancing::english(n),
         Note::Friction(n) => friction::english(n),
         Note::Kinematics(n) => kinematics::english(n),
-        Note::Text(s) => s.clone(),
+        Note::Blocking(n) => blocking::english(n),
     }
 }
 
