@@ -226,24 +226,19 @@ fn suggest(s: &Scene, e: BuildError, drafting: Drafting, lang: Lang) -> BuildErr
             what,
             need,
             fits: Some((key, first)),
-        } => {
-            let fit = std::fs::read_to_string(&s.path).map_or(sheets::Fit::Unverified, |text| {
-                sheets::verified_fit(&text, &s.path, key.key, first, drafting, lang)
-            });
-            match fit {
-                sheets::Fit::Refused => BuildError::NoAdmissibleScale { what, need, key },
-                sheets::Fit::Verified(fit) => BuildError::TooLarge {
-                    what,
-                    need,
-                    fits: Some((key, fit)),
-                },
-                sheets::Fit::Unverified => BuildError::TooLarge {
-                    what,
-                    need,
-                    fits: Some((key, first)),
-                },
-            }
-        }
+        } => match sheets::verified_fit(s, key.key, first, drafting, lang) {
+            sheets::Fit::Refused => BuildError::NoAdmissibleScale { what, need, key },
+            sheets::Fit::Verified(fit) => BuildError::TooLarge {
+                what,
+                need,
+                fits: Some((key, fit)),
+            },
+            sheets::Fit::Unverified => BuildError::TooLarge {
+                what,
+                need,
+                fits: Some((key, first)),
+            },
+        },
         e => e,
     }
 }

@@ -67,7 +67,7 @@ const POLE_MM: (f64, f64) = (5.0, 200.0);
 const MIN_MOVING_DEG: f64 = 1.0;
 
 /// `[cam]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawCam {
     pub follower: Option<String>,

@@ -22,7 +22,7 @@ const MAX_COUNT: i64 = 360;
 const MAX_J: f64 = 1e9;
 
 /// `[dynamics]` as written.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawDynamics {
     pub omega_avg: Option<f64>,
@@ -42,7 +42,7 @@ pub(crate) struct RawDynamics {
 }
 
 /// `[[dynamics.constant]]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawConstant {
     pub name: Option<String>,
@@ -50,7 +50,7 @@ pub(crate) struct RawConstant {
 }
 
 /// `[dynamics.flywheel]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawFlywheel {
     pub kind: Option<String>,
@@ -60,7 +60,7 @@ pub(crate) struct RawFlywheel {
 }
 
 /// `[dynamics.seed]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawSeed {
     pub flywheel: Option<f64>,

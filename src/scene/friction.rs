@@ -65,7 +65,7 @@ impl Kind {
 }
 
 /// `[friction]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawFriction {
     #[serde(default)]
@@ -73,7 +73,7 @@ pub(crate) struct RawFriction {
 }
 
 /// `[[friction.case]]`: the union of the keys of every kind.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawCase {
     pub kind: Option<String>,

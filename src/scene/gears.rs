@@ -29,7 +29,7 @@ const MAX_FIGURE_MM: f64 = 5000.0;
 const MAX_POSITIONS: i64 = 5000;
 
 /// `[gears]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawGears {
     pub module: Option<f64>,
@@ -45,7 +45,7 @@ pub(crate) struct RawGears {
 }
 
 /// `[gears.seed]`: what the source prints for the pair, checked and flagged, never matched.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawSeed {
     pub eps_alpha: Option<f64>,
@@ -56,7 +56,7 @@ pub(crate) struct RawSeed {
 }
 
 /// `[gears.pair]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawPair {
     pub z: Option<Vec<i64>>,
@@ -69,7 +69,7 @@ pub(crate) struct RawPair {
 }
 
 /// `[[gears.rack]]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawRack {
     pub name: Option<String>,

@@ -12,12 +12,15 @@ use super::keys::Key;
 use super::kinematics::kinematics;
 use super::model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart};
+use super::rescale::Source;
 use super::structure::mechanism;
 use super::studies::{default_plates, plates_of, study_of, Study, STUDIES};
 use super::text::{not_text, refused};
 use super::toml_error::toml_error;
 use crate::scale::{Quantity, Scale};
+use serde::Deserialize as _;
 use std::path::Path;
+use toml::de::{DeTable, DeValue};
 
 /// The scene files (`*.toml`) of `dir`, sorted; an entry that cannot be read is passed over.
 ///
@@ -87,22 +90,47 @@ pub fn read(path: &Path) -> Result<String, SceneError> {
 
 /// Validate the scene text `text`; `path` names it in messages and gives the default title
 /// (the file stem).
+///
+/// The text is read as TOML once: its texts are checked on the document read (every string
+/// and key, wherever it stands), and the document, with the places of its values, becomes the
+/// raw scene, so that a bad key or value is reported at its line and column.
 pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
-    let raw: RawScene = toml::from_str(text).map_err(|e| toml_error(text, path, &e))?;
+    #[cfg(test)]
+    PARSES.with(|n| n.set(n.get() + 1));
+    let document = toml::de::DeTable::parse(text).map_err(|e| toml_error(text, path, &e))?;
+    // Every text (names, titles, notes, words) becomes SVG text: no control characters.
+    let mut check = Checker::default();
+    texts(&mut check, "", document.get_ref());
+    let raw = RawScene::deserialize(toml::de::Deserializer::from(document))
+        .map_err(|e| toml_error(text, path, &e))?;
+    validate(check, raw, path)
+}
+
+#[cfg(test)]
+thread_local! {
+    /// How many scene texts [`parse`] has read on this thread: the tests count the readings
+    /// after a scene is loaded (none).
+    pub(crate) static PARSES: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+/// The scene of the raw values `raw` of the file `path`, validated (`check` holds what the
+/// reading found already). The scene keeps `raw` as its [`Source`], for the same scene at
+/// another scale ([`Scene::with_scale`]).
+pub(super) fn validate(
+    mut check: Checker,
+    raw: RawScene,
+    path: &Path,
+) -> Result<Scene, SceneError> {
+    let source = Source::new(raw.clone());
     // The sections of the studies the file has, each asked of its row once.
     let studied: Vec<Section> = STUDIES
         .iter()
         .filter(|s| (s.present)(&raw))
         .map(|s| s.section)
         .collect();
-    let mut check = Checker::default();
     let stem = path
         .file_stem()
         .map_or_else(|| "scene".to_string(), |s| s.to_string_lossy().into_owned());
-    // Every text (names, titles, notes, words) becomes SVG text: no control characters.
-    if let Ok(table) = toml::from_str::<toml::Table>(text) {
-        texts(&mut check, "", &table);
-    }
     let task = raw.task.unwrap_or_default();
     if task.title.is_none() && stem.chars().any(not_text) {
         check.push(
@@ -194,6 +222,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             answer_key,
             seed,
             warnings,
+            source,
         })
     } else {
         Err(SceneError::Invalid {
@@ -205,10 +234,11 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
 
 /// Refuse every string value under `table` (at key path `base`) that is not text
 /// ([`refused`]) and every key that holds a character that is [`not_text`], naming its key.
-fn texts(check: &mut Checker, base: &str, table: &toml::Table) {
+fn texts(check: &mut Checker, base: &str, table: &DeTable<'_>) {
     for (key, value) in table {
+        let key = key.get_ref();
         let path = if base.is_empty() {
-            key.clone()
+            key.to_string()
         } else {
             format!("{base}.{key}")
         };
@@ -219,25 +249,25 @@ fn texts(check: &mut Checker, base: &str, table: &toml::Table) {
                 "expected a key without control characters",
             );
         }
-        text_value(check, &path, value);
+        text_value(check, &path, value.get_ref());
     }
 }
 
 /// [`texts`] of one value.
-fn text_value(check: &mut Checker, path: &str, value: &toml::Value) {
+fn text_value(check: &mut Checker, path: &str, value: &DeValue<'_>) {
     match value {
-        toml::Value::String(s) => {
+        DeValue::String(s) => {
             if let Some(why) = refused(s) {
                 let shown: String = quoted(s).chars().take(80).collect();
                 check.push(path, Some(shown), why);
             }
         }
-        toml::Value::Array(items) => {
+        DeValue::Array(items) => {
             for (i, v) in items.iter().enumerate() {
-                text_value(check, &item(path, i), v);
+                text_value(check, &item(path, i), v.get_ref());
             }
         }
-        toml::Value::Table(t) => texts(check, path, t),
+        DeValue::Table(t) => texts(check, path, t),
         _ => {}
     }
 }

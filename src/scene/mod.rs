@@ -21,6 +21,7 @@ mod model;
 mod outputs;
 mod planetary;
 mod raw;
+mod rescale;
 mod seed;
 mod structure;
 mod studies;
@@ -33,8 +34,11 @@ pub use crate::kinematics::KinematicsSpec;
 pub(crate) use drawing::DRAWN_MM;
 pub use error::{Problem, SceneError};
 pub use keys::Key;
+#[cfg(test)]
+pub(crate) use load::PARSES;
 pub use load::{files_in, load, parse, read, MAX_SCENE_BYTES};
 pub use model::{AnswerItem, Localised, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
+pub use rescale::{RescaleError, Source};
 pub use studies::{PlateRow, Study, STUDIES};
 pub use task::{Genre, Practicum, TaskText};
 

@@ -207,6 +207,9 @@ pub struct Scene {
     /// What is read but does not do all it could (a `[kinematics]` section that no sheet
     /// draws): each a problem that does not refuse the scene, for the caller to warn of.
     pub warnings: Vec<super::Problem>,
+    /// The file's values as it gave them, read once: the same scene at another scale is
+    /// validated from them ([`Scene::with_scale`]), never from the text again.
+    pub source: super::Source,
 }
 
 impl Scene {

@@ -12,7 +12,7 @@ use crate::gears::{TrainError, Wheel};
 use serde::Deserialize;
 
 /// `[planetary]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawPlanetary {
     pub module: Option<f64>,
@@ -36,7 +36,7 @@ pub(crate) struct RawPlanetary {
 }
 
 /// `[[planetary.wheel]]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawWheel {
     pub name: Option<String>,
@@ -47,7 +47,7 @@ pub(crate) struct RawWheel {
 }
 
 /// `[planetary.seed]`: what the source prints for the train.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawTrainSeed {
     pub u: Option<f64>,
@@ -55,7 +55,7 @@ pub(crate) struct RawTrainSeed {
 }
 
 /// `[[planetary.mesh]]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawMesh {
     pub wheels: Option<Vec<String>>,

@@ -7,7 +7,7 @@ use serde::Deserialize;
 use std::fmt;
 
 /// The whole file.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawScene {
     pub task: Option<RawTask>,
@@ -27,7 +27,7 @@ pub(crate) struct RawScene {
 }
 
 /// `[answer_key]`: the values an instructor checks over a class's variants (`tmm batch`).
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawAnswerKey {
     #[serde(default)]
@@ -35,7 +35,7 @@ pub(crate) struct RawAnswerKey {
 }
 
 /// `[task]`: the title block.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawTask {
     pub title: Option<String>,
@@ -55,7 +55,7 @@ pub(crate) struct RawTask {
 }
 
 /// `[mechanism]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawMechanism {
     pub scale_l: Option<f64>,
@@ -73,7 +73,7 @@ pub(crate) struct RawMechanism {
 }
 
 /// `[[mechanism.fixed]]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawFixed {
     pub name: Option<String>,
@@ -81,7 +81,7 @@ pub(crate) struct RawFixed {
 }
 
 /// `[mechanism.crank]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawCrank {
     pub link: Option<i64>,
@@ -94,7 +94,7 @@ pub(crate) struct RawCrank {
 }
 
 /// `[[mechanism.group]]`: the union of the keys of all five kinds.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawGroup {
     pub kind: Option<String>,
@@ -114,7 +114,7 @@ pub(crate) struct RawGroup {
 }
 
 /// A guide: `{ through = "C", dir = 0.0, offset = 745.0 }`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawGuide {
     pub through: Option<String>,
@@ -124,7 +124,7 @@ pub(crate) struct RawGuide {
 }
 
 /// A direction: degrees in the frame, or along two known points.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(
     untagged,
     expecting = "expected a direction: degrees, or { from = \"A\", to = \"B\", angle = 0.0 }"
@@ -137,7 +137,7 @@ pub(crate) enum RawDir {
 }
 
 /// The table form of a direction.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawAlong {
     pub from: Option<String>,
@@ -146,7 +146,7 @@ pub(crate) struct RawAlong {
 }
 
 /// `[[mechanism.point]]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawPoint {
     pub name: Option<String>,
@@ -156,7 +156,7 @@ pub(crate) struct RawPoint {
 }
 
 /// `[[mechanism.redundant]]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawRedundant {
     pub name: Option<String>,
@@ -166,7 +166,7 @@ pub(crate) struct RawRedundant {
 }
 
 /// `[[mechanism.output]]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawOutput {
     pub rocker: Option<i64>,
@@ -175,7 +175,7 @@ pub(crate) struct RawOutput {
 }
 
 /// `[positions]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawPositions {
     pub count: Option<i64>,
@@ -185,7 +185,7 @@ pub(crate) struct RawPositions {
 }
 
 /// `start = "working-stroke"` or a crank angle in degrees.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(
     untagged,
     expecting = "expected \"working-stroke\" or a crank angle in degrees"
@@ -198,14 +198,14 @@ pub(crate) enum RawStart {
 }
 
 /// `[plates]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawPlates {
     pub wanted: Option<Vec<String>>,
 }
 
 /// `[kinematics]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawKinematics {
     pub scale_v: Option<f64>,
@@ -221,7 +221,7 @@ pub(crate) struct RawKinematics {
 }
 
 /// `[balancing]`.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawBalancing {
     pub kind: Option<String>,
@@ -237,7 +237,7 @@ pub(crate) struct RawBalancing {
 }
 
 /// `[[balancing.mass]]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawMass {
     pub mass: Option<f64>,
@@ -307,7 +307,7 @@ impl RawGroup {
 }
 
 /// `[forces]`: the loads of the force analysis.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawForces {
     pub g: Option<f64>,
@@ -327,7 +327,7 @@ pub(crate) struct RawForces {
 }
 
 /// `[[forces.seed]]`: a value the seed prints for a row of the report.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawSeedValue {
     pub quantity: Option<String>,
@@ -340,7 +340,7 @@ pub(crate) struct RawSeedValue {
 }
 
 /// A text in each language: `{ ru = "…", uk = "…", en = "…" }`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawLocalised {
     pub ru: Option<String>,
@@ -349,7 +349,7 @@ pub(crate) struct RawLocalised {
 }
 
 /// `[forces.friction]`: friction in the mechanism's pairs.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawPairFriction {
     pub f: Option<f64>,
@@ -358,7 +358,7 @@ pub(crate) struct RawPairFriction {
 }
 
 /// `[[forces.link]]`: a link's mass, centre of mass and moment of inertia.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawLinkLoad {
     pub link: Option<i64>,
@@ -370,7 +370,7 @@ pub(crate) struct RawLinkLoad {
 }
 
 /// `[[forces.resistance]]`: a force on a point or a moment on a link.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawResistance {
     pub point: Option<String>,
@@ -382,7 +382,7 @@ pub(crate) struct RawResistance {
 }
 
 /// `[forces.drive]`: a coupling or a gear pair.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawDrive {
     pub kind: Option<String>,
@@ -395,7 +395,7 @@ pub(crate) struct RawDrive {
 }
 
 /// `[[forces.indicator]]` as written.
-#[derive(Debug, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawIndicator {
     pub point: Option<String>,

@@ -174,7 +174,7 @@ fn a_view_too_large_at_its_given_scale_names_the_key_and_the_scale_that_fits() {
     assert_eq!(key.key.path(), "kinematics.scale_v");
     // Every velocity plan of the plate, not the first alone.
     assert_eq!(first.value(), 0.01);
-    let fit = sheets::verified_fit(&text, &path, key.key, first, Drafting::EXACT, Lang::Ru);
+    let fit = sheets::verified_fit(&s, key.key, first, Drafting::EXACT, Lang::Ru);
     let sheets::Fit::Verified(fit) = fit else {
         panic!("verified: {fit:?}");
     };
