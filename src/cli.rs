@@ -27,6 +27,9 @@ pub(crate) enum Format {
     /// One self-contained page per scene, DIR/<scene>/<scene>.html: every sheet, the replay
     /// of every figure and the report, nothing fetched (`render` only).
     Html,
+    /// One DXF drawing per sheet, DIR/<scene>/<plate>.dxf: 1:1 in mm, a layer per role,
+    /// ГОСТ 2.303 line types (for KOMPAS-3D, AutoCAD; see docs/dxf.md).
+    Dxf,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -161,6 +161,7 @@ fn render_options(how: &RenderArgs, fallback: Drafting) -> Result<render::Option
             png: formats.contains(&Format::Png),
             pdf: formats.contains(&Format::Pdf),
             note: formats.contains(&Format::Note),
+            dxf: formats.contains(&Format::Dxf),
         },
         dpi,
     })

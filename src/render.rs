@@ -14,7 +14,7 @@ use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
-/// Which files [`render`] writes: `<out>/<scene>/<plate>.svg`, `.png`, and
+/// Which files [`render`] writes: `<out>/<scene>/<plate>.svg`, `.png`, `.dxf`, and
 /// `<out>/<scene>/<scene>.pdf`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Formats {
@@ -26,6 +26,8 @@ pub struct Formats {
     pub pdf: bool,
     /// The scene's explanatory note, `<scene>-note.pdf`.
     pub note: bool,
+    /// One DXF drawing per sheet (`<out>/<scene>/<plate>.dxf`, [`plate::to_dxf`]).
+    pub dxf: bool,
 }
 
 /// The PNG resolution `tmm render` writes unless asked otherwise, dots per inch.
@@ -83,6 +85,14 @@ pub enum RenderError {
         /// Why.
         error: plate::PlateError,
     },
+    /// A DXF that cannot be written.
+    #[error("{}: {error}", .path.display())]
+    Dxf {
+        /// The DXF's file.
+        path: PathBuf,
+        /// Why.
+        error: plate::PlateError,
+    },
     /// A PDF that cannot be produced.
     #[error("{}: {error}", .path.display())]
     Pdf {
@@ -124,6 +134,7 @@ impl RenderError {
             }
             RenderError::Resolution { .. } | RenderError::Write { .. } => true,
             RenderError::Png { .. }
+            | RenderError::Dxf { .. }
             | RenderError::Pdf { .. }
             | RenderError::Note { .. }
             | RenderError::Unbalanced { .. } => false,
@@ -295,6 +306,12 @@ fn files_of(
             sets.push((path, first..plates.len()));
         }
     }
+    // Each sheet's DXF from its plate, before the plates go to their SVGs.
+    let dxfs = if formats.dxf {
+        dxfs_of(&plates)?
+    } else {
+        Vec::new()
+    };
     // Each sheet written as SVG on a core of its own (a blocking contour's sheet is half a
     // megabyte of SVG).
     let svgs: Vec<(PathBuf, String)> = plates
@@ -365,6 +382,7 @@ fn files_of(
     let (set_pdfs, note_pdfs) = (set_pdfs?, note_pdfs?);
     let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
     let mut pngs = pngs.into_iter();
+    let mut dxfs = dxfs.into_iter();
     for (base, svg) in svgs {
         if let Some(png) = pngs.next() {
             let png = png.map_err(|error| RenderError::Png {
@@ -376,10 +394,29 @@ fn files_of(
         if formats.svg {
             files.push((base.with_extension("svg"), svg.into_bytes()));
         }
+        if let Some(dxf) = dxfs.next() {
+            files.push((base.with_extension("dxf"), dxf));
+        }
     }
     files.extend(set_pdfs);
     files.extend(note_pdfs);
     Ok(files)
+}
+
+/// Each sheet as DXF ([`plate::to_dxf`]), in parallel, in order.
+///
+/// # Errors
+/// The first sheet the DXF writer refuses.
+fn dxfs_of(plates: &[(PathBuf, Plate)]) -> Result<Vec<Vec<u8>>, RenderError> {
+    plates
+        .par_iter()
+        .map(|(base, plate)| {
+            plate::to_dxf(plate).map_err(|error| RenderError::Dxf {
+                path: base.with_extension("dxf"),
+                error,
+            })
+        })
+        .collect()
 }
 
 /// Render `scenes` to `out`: every file of [`files`], written atomically. Returns the files

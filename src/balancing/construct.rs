@@ -240,7 +240,7 @@ impl Polygon {
         let (from, to) = (self.at, DVec2::ZERO);
         let measured = self.rec.measure(from, to);
         let d = to - from;
-        let read = |dx: f64, dy: f64| self.rec.measure(DVec2::ZERO, DVec2::new(dx, dy)).read_mm;
+        let mut read = |dx: f64, dy: f64| self.rec.measure(DVec2::ZERO, DVec2::new(dx, dy)).read_mm;
         let (px, py) = (read(d.x, 0.0) * d.x.signum(), read(0.0, d.y) * d.y.signum());
         // A closing vector shorter than the coincidence tolerance is no vector: the polygon
         // closes by itself and no correction is needed.

@@ -85,6 +85,7 @@ pub(super) fn batch_times(opts: &BenchOptions, reps: Reps) -> Result<BatchTimes,
             png: true,
             pdf: false,
             note: false,
+            dxf: false,
         },
         dpi: super::PNG_DPI,
     };

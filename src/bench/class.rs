@@ -80,6 +80,7 @@ pub(super) fn class_run(
             png: false,
             pdf: false,
             note: false,
+            dxf: false,
         },
         dpi: super::PNG_DPI,
     };

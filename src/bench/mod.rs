@@ -20,7 +20,8 @@
 //!   rise and return: the drawn profile's deviation from the exact envelope (falls as N⁻²)
 //!   beside the time of the recorded inversion.
 //! * **Plates** — building a plate and writing it as SVG; a scene's plates (already SVG)
-//!   rasterised to PNG at 150 dpi, as `tmm render` does.
+//!   rasterised to PNG at 150 dpi, as `tmm render` does; the same plates written as DXF,
+//!   the cost per sheet.
 //!
 //! * **Flywheel** — the shaper's flywheel (seed 000 §5) by Wittenbauer's tangents and by
 //!   Merkin's route on diagrams of N = 12 … 360 positions, each against the energy equation
@@ -60,7 +61,7 @@ use crate::scale::Quantity;
 use crate::scene::{self, PlateKind, Scene};
 use chords::{chord_rows, Charted, Coord};
 use rates::{
-    construction_rate, force_rates, kernel_rate, libm_floor_rate, plate_time, png_time,
+    construction_rate, dxf_time, force_rates, kernel_rate, libm_floor_rate, plate_time, png_time,
     project_time, scene_time, stack_floor, sweep_rate, PNG_DPI, TURN_STEPS,
 };
 use std::f64::consts::TAU;

@@ -167,6 +167,25 @@ pub(super) fn png_time(s: &Subject, reps: Reps) -> Result<(f64, usize), BenchErr
     .map_err(|e| png_error(&s.scene, e))
 }
 
+/// Seconds to write every sheet of a scene, already built, as DXF ([`crate::plate::to_dxf`])
+/// on one core, and the number of sheets.
+pub(super) fn dxf_time(s: &Subject, reps: Reps) -> Result<(f64, usize), BenchError> {
+    let plates = render::plates(&s.scene, Lang::Ru, Drafting::EXACT)
+        .map_err(|e| render_error(&s.scene, e))?;
+    best_time(reps.best_of.min(3), || {
+        plates
+            .iter()
+            .map(|(_, p)| crate::plate::to_dxf(p))
+            .collect::<Result<Vec<_>, _>>()
+    })
+    .map(|t| (t, plates.len()))
+    .map_err(|e| BenchError::Plate {
+        scene: s.scene.stem.clone(),
+        plate: "dxf".into(),
+        detail: e.to_string(),
+    })
+}
+
 /// Every sheet of `scene` (a fresh session) as SVG.
 fn sheet_svgs(scene: &Scene) -> Result<Vec<String>, BenchError> {
     let plates =
@@ -343,6 +362,7 @@ pub(super) fn project_time(s: &Subject, reps: Reps) -> Result<(f64, usize), Benc
         png: true,
         pdf: true,
         note: true,
+        dxf: false,
     };
     let mut note = 0;
     let t = best_time(reps.best_of.min(3), || {

@@ -100,6 +100,15 @@ pub(super) fn drawing(
             "every sheet of the scene ({sheets}), SVG → PNG in parallel, as `tmm render` writes them"
         ),
     });
+    let (dxf_seconds, dxf_sheets) = dxf_time(shaper, reps)?;
+    throughput.push(Throughput {
+        name: format!("dxf {}", shaper.scene.stem),
+        per_second: dxf_sheets as f64 / dxf_seconds,
+        note: format!(
+            "{:.1} ms per sheet: every sheet of the scene ({dxf_sheets}), already built, written as DXF (plate::to_dxf) on one core, as `tmm render --format dxf` does",
+            dxf_seconds * 1e3 / dxf_sheets.max(1) as f64
+        ),
+    });
     // Every scene of the folder (a quick bench: the shaper alone), its whole set of sheets.
     let files = if opts.quick {
         vec![opts.scenes.join("shaper.toml")]

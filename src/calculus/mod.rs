@@ -335,7 +335,7 @@ fn check_pole(pole_mm: f64) -> Result<(), CalculusError> {
 
 /// Signed ordinate of a drawn point `p` above the abscissa through `origin`, as read:
 /// (read mm, physical value) through `Recorder::measure`.
-fn read_ordinate(rec: &Recorder, origin: DVec2, p: DVec2) -> (f64, f64) {
+fn read_ordinate(rec: &mut Recorder, origin: DVec2, p: DVec2) -> (f64, f64) {
     let foot = DVec2::new(p.x, origin.y);
     let m = rec.measure(foot, p);
     let sign = if p.y < origin.y { -1.0 } else { 1.0 };

@@ -186,6 +186,7 @@ fn axes(rec: &mut Recorder, cycle: f64, name: &str) {
             .filter(|s| s.role != Role::Dimension)
             .cloned()
             .collect(),
+        readings: Vec::new(),
     };
     if let Some((a, b)) = figure.bounds() {
         lo = lo.min(a);

@@ -2,6 +2,7 @@
 //! provenance — and the figure they make up.
 
 use super::label::{Label, Names};
+use super::reading::Reading;
 use crate::geom::{Arc, Circle, DVec2, Segment, Side};
 use crate::scale::Scale;
 
@@ -129,6 +130,8 @@ pub struct Figure {
     pub scale: Scale,
     /// The steps in drawing order.
     pub steps: Vec<Step>,
+    /// The segments measured off it, in the order they were read; they draw nothing.
+    pub readings: Vec<Reading>,
 }
 
 impl Figure {
@@ -156,6 +159,7 @@ impl Figure {
             from: st.from.iter().copied().map(shift).collect(),
             ..st
         }));
+        self.readings.extend(other.readings);
         self
     }
 
@@ -247,6 +251,7 @@ impl Figure {
             title: self.title.clone(),
             scale: self.scale,
             steps,
+            readings: self.readings.iter().map(|r| r.moved(&m)).collect(),
         }
     }
 
@@ -262,6 +267,12 @@ impl Figure {
                 .iter()
                 .filter(|s| s.group == 0 || keep.contains(&s.group))
                 .cloned()
+                .collect(),
+            readings: self
+                .readings
+                .iter()
+                .filter(|r| r.group == 0 || keep.contains(&r.group))
+                .copied()
                 .collect(),
         }
     }
@@ -389,10 +400,12 @@ impl Figure {
             from: Vec::new(),
             group: 0,
         });
+        // The readings stay on the main view, where the segments are drawn whole.
         Figure {
             title: format!("detail of {}", self.title),
             scale,
             steps,
+            readings: Vec::new(),
         }
     }
 
@@ -510,6 +523,7 @@ mod tests {
                     },
                 ),
             ],
+            readings: Vec::new(),
         };
         let g = f.mirrored_x();
         let Item::Arc(a) = &g.steps[0].item else {

@@ -10,6 +10,7 @@
 //!
 //! * [`Figure`] — the figure model: [`Step`]s with their [`Item`], [`Role`] and [`Label`];
 //! * [`Drafting`] — how a length is read off the drawing, and [`Measured`] lengths;
+//! * [`Reading`] — a segment measured off a figure and the value it gave;
 //! * [`Recorder`] — records steps into a figure; [`Compass`] and [`Pick`] — its compass steps.
 
 mod compass;
@@ -19,6 +20,7 @@ mod error;
 mod figure;
 pub(crate) mod fit;
 mod label;
+mod reading;
 mod recorder;
 
 pub use compass::{Compass, Pick};
@@ -27,4 +29,5 @@ pub use drafting::{Drafting, Measured};
 pub use error::ConstructionError;
 pub use figure::{Figure, Item, Role, Step, StepId};
 pub use label::{Label, Names};
+pub use reading::Reading;
 pub use recorder::Recorder;

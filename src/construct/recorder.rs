@@ -5,6 +5,7 @@ use super::context::Context;
 use super::drafting::{Drafting, Measured};
 use super::figure::{Figure, Item, Role, Step, StepId};
 use super::label::{Label, Names};
+use super::reading::Reading;
 use crate::geom::{DVec2, Tolerances};
 use crate::scale::Scale;
 
@@ -25,6 +26,7 @@ impl Recorder {
                 title: title.into(),
                 scale,
                 steps: Vec::new(),
+                readings: Vec::new(),
             },
             ctx: *ctx,
             group: 0,
@@ -177,15 +179,29 @@ impl Recorder {
         )
     }
 
-    /// Measure a drawn segment: exact length, length as read, physical value.
-    pub fn measure(&self, from: DVec2, to: DVec2) -> Measured {
+    /// Measure a drawn segment: exact length, length as read, physical value. The figure
+    /// keeps it as a [`Reading`] (where the value was read; it draws nothing).
+    pub fn measure(&mut self, from: DVec2, to: DVec2) -> Measured {
         let drawn_mm = from.distance(to);
         let read_mm = self.ctx.drafting.read(drawn_mm);
+        let value = self.figure.scale.to_physical(read_mm);
+        self.figure.readings.push(Reading {
+            from,
+            to,
+            read_mm,
+            value,
+            group: self.group,
+        });
         Measured {
             drawn_mm,
             read_mm,
-            value: self.figure.scale.to_physical(read_mm),
+            value,
         }
+    }
+
+    /// The segments measured so far.
+    pub fn readings(&self) -> &[Reading] {
+        &self.figure.readings
     }
 }
 
@@ -284,8 +300,17 @@ mod tests {
 
     #[test]
     fn drafting_rounds_before_scaling() {
-        let r = rec();
+        let mut r = rec();
+        r.set_group(3);
         let m = r.measure(DVec2::ZERO, DVec2::new(42.6, 0.0));
+        // The figure keeps where it was read, and nothing is drawn.
+        assert!(r.steps().is_empty());
+        let read = r.readings()[0];
+        assert_eq!(
+            (read.from, read.to, read.group),
+            (DVec2::ZERO, DVec2::new(42.6, 0.0), 3)
+        );
+        assert_eq!((read.read_mm, read.value), (m.read_mm, m.value));
         assert_eq!(m.read_mm, 42.5);
         assert!((m.value - 42.5 * 0.0025).abs() < 1e-15);
         assert!(Drafting::new(-1.0).is_none());

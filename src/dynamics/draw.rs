@@ -305,7 +305,7 @@ fn wittenbauer(
         Role::Dimension,
         &[],
     );
-    let kl = read_up(&rec, ends[1], ends[0]) * mu_t.value();
+    let kl = read_up(&mut rec, ends[1], ends[0]) * mu_t.value();
     rec.label(dim, "kl", (ends[0] + ends[1]) * 0.5, DVec2::new(-1.0, 0.0));
     let read = kl / (delta * w2);
     let route = Route {
@@ -435,7 +435,7 @@ fn merkin(
         &[],
     );
     rec.label(dim, "ΔT_{I}", (a + b) * 0.5, DVec2::new(1.0, 0.0));
-    let range = read_up(&rec, a, b) * mu_t.value();
+    let range = read_up(&mut rec, a, b) * mu_t.value();
     let j_i = range / (spec.delta * w_avg * w_avg);
     let read = j_i - spec.constant_inertia();
     let route = Route {

@@ -131,7 +131,7 @@ pub(super) fn work(
     rec.label(ad, fixed[0], end, DVec2::new(0.6, 0.8));
     let q = integral.pole + end * (pole_h / turn);
     let ray = thin(&mut rec, "ray from P ∥ A_д".into(), integral.pole, q, &[ad]);
-    let m_drive = read_up(&rec, so, q) * mu_m.value();
+    let m_drive = read_up(&mut rec, so, q) * mu_m.value();
     let md = rec.draw(
         "M_д across the M diagram",
         Item::Segment(Segment::new(q, DVec2::new(so.x + turn, q.y))),
@@ -153,7 +153,7 @@ pub(super) fn work(
         if pd.distance(pc) > 0.2 {
             thin(&mut rec, format!("ΔT ordinate {i}"), pc, pd, &[ad]);
         }
-        delta_t.push(sgn * read_up(&rec, pc, pd) * mu_a.value());
+        delta_t.push(sgn * read_up(&mut rec, pc, pd) * mu_a.value());
     }
     Ok(Work {
         figure: rec.finish(),
@@ -164,7 +164,7 @@ pub(super) fn work(
 }
 
 /// Signed ordinate read from `a` up to `b` (same abscissa), in the recorder's mm as read.
-pub(super) fn read_up(rec: &Recorder, a: DVec2, b: DVec2) -> f64 {
+pub(super) fn read_up(rec: &mut Recorder, a: DVec2, b: DVec2) -> f64 {
     let m = rec.measure(a, b);
     if b.y < a.y {
         -m.read_mm

@@ -174,7 +174,7 @@ pub fn generate(
     right.extend(curve_through(&root_drawn));
     let tooth = whole_tooth(&right, c.ra);
     draw_teeth(&mut rec, &tooth, pitch, mu);
-    let (pitch_reading, sb) = readings(&rec, &c, &right, pitch, mu);
+    let (pitch_reading, sb) = readings(&mut rec, &c, &right, pitch, mu);
     let (detail, detail_marks) = if undercut {
         let drawn_states: Vec<f64> = drawn
             .iter()
@@ -342,7 +342,7 @@ fn draw_teeth(rec: &mut Recorder, tooth: &[DVec2], pitch: f64, mu: f64) {
 /// and the space e_t (from the tooth's right flank to its right neighbour's left flank) on
 /// the pitch circle, S_b on the base circle when it lies outside the root circle.
 fn readings(
-    rec: &Recorder,
+    rec: &mut Recorder,
     c: &Cutting,
     right: &[DVec2],
     pitch: f64,
@@ -351,19 +351,19 @@ fn readings(
     let mm = |p: DVec2| p / mu;
     let (r, rb, rf) = (c.r(), c.rb(), c.rf());
     let mirror = |p: DVec2| DVec2::new(-p.x, p.y);
-    let across = |radius: f64| {
+    let across = |rec: &mut Recorder, radius: f64| {
         let k = circle_crossing(right, radius)?;
         Some(chord_to_arc(
             rec.measure(mm(mirror(k)), mm(k)).value,
             radius,
         ))
     };
-    let st_read = across(r).unwrap_or(0.0);
+    let st_read = across(rec, r).unwrap_or(0.0);
     let et_read = circle_crossing(right, r).map_or(0.0, |k| {
         let next = rotate(mirror(k), -pitch);
         chord_to_arc(rec.measure(mm(k), mm(next)).value, r)
     });
-    let sb = if rb > rf { across(rb) } else { None };
+    let sb = if rb > rf { across(rec, rb) } else { None };
     ((st_read, et_read), sb)
 }
 

@@ -165,7 +165,7 @@ pub fn diagrams(
     };
     // S is read off the plan of positions: the distance from the start of the working stroke
     // (position 1 when no extreme is drawn), positive along the working stroke.
-    let reader = Recorder::in_context("S", scale_l, ctx);
+    let mut reader = Recorder::in_context("S", scale_l, ctx);
     let ends = stroke_ends(plan);
     let (p1, read_dir) = match ends {
         Some((a, b)) => {

@@ -26,6 +26,7 @@ fn bounds_from(rec: &Recorder, start: usize) -> (DVec2, DVec2) {
         title: String::new(),
         scale: rec.scale(),
         steps: rec.steps()[start..].to_vec(),
+        readings: Vec::new(),
     };
     f.bounds().unwrap_or((DVec2::ZERO, DVec2::ZERO))
 }
@@ -155,6 +156,7 @@ impl super::positions::PositionPlan {
                 title: String::new(),
                 scale,
                 steps: Vec::new(),
+                readings: Vec::new(),
             },
         }
     }

@@ -28,6 +28,7 @@
 
 pub mod chart;
 pub mod curve;
+mod dxf;
 mod fonts;
 mod ink;
 mod items;
@@ -48,10 +49,11 @@ use crate::geom::DVec2;
 use crate::scale::Lang;
 use thiserror::Error;
 
+pub use dxf::{to_dxf, DxfLayer, CURVE_TOLERANCE_MM};
 pub(crate) use fonts::faces as bundled_faces;
 pub use fonts::font_database;
 pub use ink::{view_ink, Cell};
-pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM};
+pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
 pub use labels::{
     layout, struck_dimension_texts, Layout, Leader, PlacedLabel, ViewLayout, COINCIDENT_MM,
     JOINT_SEPARATOR,
@@ -252,6 +254,9 @@ pub enum PlateError {
     /// The SVG could not be rasterised or encoded.
     #[error("PNG cannot be rendered: {0}")]
     Raster(String),
+    /// The DXF writer refused the drawing.
+    #[error("DXF cannot be written: {0}")]
+    Dxf(String),
 }
 
 #[cfg(test)]

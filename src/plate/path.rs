@@ -98,11 +98,39 @@ impl Map {
     }
 }
 
+/// One piece of a path as drawn, in sheet mm (y down), unrounded: what the DXF writer reads
+/// (the SVG writes the same pieces as its `d` text).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Seg {
+    /// Start a subpath at a point.
+    Move(DVec2),
+    /// A straight piece to a point.
+    Line(DVec2),
+    /// A cubic Bézier piece: two control points and its end.
+    Cubic(DVec2, DVec2, DVec2),
+    /// A circular arc from the current point: its centre and radius, the angle of its start
+    /// and its sweep, radians, measured on the sheet (y down, so a positive sweep turns
+    /// clockwise as seen).
+    Arc {
+        /// Centre.
+        center: DVec2,
+        /// Radius, mm.
+        radius: f64,
+        /// Angle of the start point about the centre.
+        start: f64,
+        /// Signed sweep.
+        sweep: f64,
+    },
+    /// Close the subpath back to its start.
+    Close,
+}
+
 /// Path data being built; points are given in source coordinates and mapped.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct PathData {
     map: Map,
     d: String,
+    segs: Vec<Seg>,
 }
 
 impl PathData {
@@ -111,6 +139,7 @@ impl PathData {
         Self {
             map,
             d: String::new(),
+            segs: Vec::new(),
         }
     }
     /// True when nothing was drawn.
@@ -120,6 +149,10 @@ impl PathData {
     /// The `d` attribute.
     pub(crate) fn into_string(self) -> String {
         self.d
+    }
+    /// The pieces drawn, in sheet mm, in order.
+    pub(crate) fn segs(&self) -> &[Seg] {
+        &self.segs
     }
 
     fn cmd(&mut self, c: char, pts: &[DVec2]) -> &mut Self {
@@ -136,19 +169,24 @@ impl PathData {
     }
     /// Start a subpath.
     pub(crate) fn move_to(&mut self, p: DVec2) -> &mut Self {
+        self.segs.push(Seg::Move(self.map.pt(p)));
         self.cmd('M', &[p])
     }
     /// A straight piece.
     pub(crate) fn line_to(&mut self, p: DVec2) -> &mut Self {
+        self.segs.push(Seg::Line(self.map.pt(p)));
         self.cmd('L', &[p])
     }
     /// A cubic Bézier piece.
     pub(crate) fn cubic_to(&mut self, c1: DVec2, c2: DVec2, p: DVec2) -> &mut Self {
+        let m = self.map;
+        self.segs.push(Seg::Cubic(m.pt(c1), m.pt(c2), m.pt(p)));
         self.cmd('C', &[c1, c2, p])
     }
     /// Close the subpath.
     pub(crate) fn close(&mut self) -> &mut Self {
         self.d.push_str(" Z");
+        self.segs.push(Seg::Close);
         self
     }
     /// A separate straight stroke.
@@ -196,6 +234,13 @@ impl PathData {
         let r = num(arc.radius);
         let piece = Arc { sweep, ..*arc };
         self.move_to(piece.eval(0.0));
+        let turn = self.map.dir(DVec2::from_angle(piece.start));
+        self.segs.push(Seg::Arc {
+            center: self.map.pt(piece.center),
+            radius: piece.radius,
+            start: turn.y.atan2(turn.x),
+            sweep: if self.map.flip { -sweep } else { sweep },
+        });
         for i in 1..=n {
             let q = self.map.pt(piece.eval(i as f64 / n as f64));
             let _ = write!(self.d, " A{r},{r} 0 0 {flag} {},{}", Num(q.x), Num(q.y));

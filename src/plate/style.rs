@@ -33,6 +33,13 @@ impl Pen {
         width: 0.25,
         dash: &[12.0, 3.0, 1.0, 3.0],
     };
+    /// Thin dashed line for invisible contours (штриховая): 4 mm strokes, 1.5 mm gaps
+    /// (ГОСТ 2.303: strokes 2…8 mm, gaps 1…2 mm). No recorded role draws it; the DXF's line
+    /// type table offers it to whoever finishes the sheet in a CAD program.
+    pub const DASHED: Pen = Pen {
+        width: 0.25,
+        dash: &[4.0, 1.5],
+    };
     /// The trim border of the sheet: thinnest line.
     pub const TRIM: Pen = Pen {
         width: 0.1,

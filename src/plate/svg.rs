@@ -129,21 +129,15 @@ fn group(id: &str, marks: Vec<Mark>) -> Group {
     g
 }
 
-/// A leader as drawn: its line and shelf, and its dot on an item's line.
+/// A leader as drawn ([`Leader::marks`]): its line and shelf, and its dot on an item's line.
 fn leader_group(l: &Leader) -> Group {
-    let mut line = PathData::new(Map::SHEET);
-    line.polyline(&[l.from, l.knee, l.end]);
-    let g = Group::new().add(path(Paint::Stroke(Pen::THIN), line));
-    if !l.dot {
-        return g;
-    }
-    let mut dot = PathData::new(Map::SHEET);
-    dot.circle(l.to, LEADER_DOT_MM);
-    g.add(path(Paint::Solid, dot))
+    l.marks()
+        .into_iter()
+        .fold(Group::new(), |g, mark| match mark {
+            Mark::Path(paint, d) => g.add(path(paint, d)),
+            Mark::Text(_) => g,
+        })
 }
-
-/// The radius of a leader's dot on an item's line, mm.
-const LEADER_DOT_MM: f64 = 0.35;
 
 fn path(paint: Paint, d: PathData) -> Path {
     let p = Path::new().set("d", d.into_string());

@@ -24,6 +24,7 @@ fn figure(items: Vec<Item>) -> Figure {
         title: "test".into(),
         scale: Scale::new(0.001, Quantity::Length).unwrap(),
         steps,
+        readings: Vec::new(),
     }
 }
 

@@ -62,7 +62,7 @@ fn write_all_atomic_with<B: AsRef<[u8]>>(
 }
 
 /// The suffixes of the files `tmm` writes; a temporary or backup of another name is not ours.
-const OUR_EXTENSIONS: [&str; 5] = ["svg", "png", "pdf", "md", "json"];
+const OUR_EXTENSIONS: [&str; 6] = ["svg", "png", "pdf", "dxf", "md", "json"];
 
 /// After this long a temporary is stale whatever its process (a pid reused by another).
 const STALE_AFTER: std::time::Duration = std::time::Duration::from_secs(24 * 3600);

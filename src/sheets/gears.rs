@@ -317,8 +317,9 @@ impl Filling {
                 p.spec.z[0],
                 p.spec.z[1]
             );
-            self.blocks
-                .push(Block::view(b.figure(scale, lang, words), caption, None));
+            self.blocks.push(
+                Block::view(b.figure(scale, lang, words), caption, None).with_edge_label_room(),
+            );
         }
     }
 

@@ -2,6 +2,7 @@
 //! draw and laid out on as many sheets of a format as they need ([`super::pack`]).
 
 use super::captions::{symbols, Text, Word};
+use super::label_room;
 use super::pack::{pack, sheet_overflow};
 use super::BuildError;
 use crate::check::Row;
@@ -10,7 +11,7 @@ use crate::construct::Figure;
 use crate::geom::DVec2;
 use crate::plate::{
     text, Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM,
-    CAPTION_HEIGHT_MM, LABEL_GAP_MM,
+    CAPTION_HEIGHT_MM,
 };
 use crate::scale::{format_fixed, Lang, Scale};
 use crate::scene::Key;
@@ -60,48 +61,6 @@ impl Part {
             label_room: None,
         }
     }
-}
-
-/// A joint label longer than this is given room beside its point in its block, mm (a shorter
-/// one fits the block's label margin or the gap between blocks).
-const LONG_LABEL_MM: f64 = 12.0;
-
-/// Line length inside a label's box below which the box counts as clear, mm.
-const CLEAR_OF_LINES_MM: f64 = 0.5;
-
-/// The box of `figure`'s long joint labels, each on the side of its point that the
-/// figure's lines leave clear, and of two clear sides (or two struck) the one where it
-/// reaches least past the figure's bounds (figure mm, y up); `None` when it has none. A
-/// label at a point near the figure's edge, with the figure's lines on its inner side (the
-/// reactions `R₃₋₄ ≡ R₄₋₅` at the slide block, the load G₄ under it), is given its room
-/// outside.
-fn label_room(figure: &Figure) -> Option<(DVec2, DVec2)> {
-    let (lo, hi) = figure.bounds()?;
-    let gap = 2.0 * LABEL_GAP_MM;
-    View::joint_labels(figure)
-        .into_iter()
-        .filter(|(_, _, size)| size.x > LONG_LABEL_MM)
-        .map(|(at, _, size)| {
-            let half = size.y * 0.5 + LABEL_GAP_MM;
-            let room = |x0: f64| {
-                (
-                    DVec2::new(x0, at.y - half),
-                    DVec2::new(x0 + size.x, at.y + half),
-                )
-            };
-            let (right, left) = (room(at.x + gap), room(at.x - gap - size.x));
-            let struck =
-                |(a, b): (DVec2, DVec2)| View::line_length_in(figure, a, b) > CLEAR_OF_LINES_MM;
-            let past_right = (right.1.x - hi.x).max(0.0);
-            let past_left = (lo.x - left.0.x).max(0.0);
-            match (struck(right), struck(left)) {
-                (false, true) => right,
-                (true, false) => left,
-                _ if past_right <= past_left => right,
-                _ => left,
-            }
-        })
-        .reduce(|(a, b), (c, d)| (a.min(c), b.max(d)))
 }
 
 /// One thing on a sheet.
@@ -160,7 +119,17 @@ impl Block {
     /// written over the next block.
     pub fn with_label_room(self) -> Self {
         self.map_parts(|p| Part {
-            label_room: label_room(&p.figure),
+            label_room: label_room::long_joint_labels(&p.figure),
+            ..p
+        })
+    }
+
+    /// The block with room for every label written outward beside a point at its figure's
+    /// edge (the numbers of a chart's axis), so that it is not written over the next block's
+    /// texts.
+    pub fn with_edge_label_room(self) -> Self {
+        self.map_parts(|p| Part {
+            label_room: label_room::edge_labels(&p.figure),
             ..p
         })
     }

@@ -18,6 +18,7 @@ mod layout;
 pub(crate) use kinematics::verdict_lines;
 pub use layout::ScaleKey;
 mod kinematics;
+mod label_room;
 mod pack;
 mod positions;
 pub mod protocol;

@@ -149,6 +149,7 @@ fn download_bytes(d: &Download) -> Result<(String, Vec<u8>), String> {
         png: d.what.ends_with(".png"),
         pdf: d.what == "pdf",
         note: d.what == "note",
+        dxf: false,
     };
     let options = Options {
         lang: d.job.lang(),

@@ -66,7 +66,7 @@ pub fn page(s: &Scene, lang: Lang, drafting: Drafting) -> Result<String, RenderE
         lang: code,
         sheets: sheets_of(&plates),
         replays: plates.iter().map(|(_, p)| views_of(p, lang)).collect(),
-        report: report_of(&session),
+        report: report_of(&session, &plates),
     };
     let script = SCRIPT.replace("</", "<\\/");
     Ok(fill(

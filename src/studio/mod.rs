@@ -1,8 +1,9 @@
 //! `tmm serve`: the studio, `tmm` in a browser. A local web server (axum on tokio) bound to
 //! 127.0.0.1 serves one page, embedded in the binary with everything it needs (no network at
 //! run time): the gallery of the shipped scenes, a scene as a form beside its text, its
-//! sheets re-drawn as SVG after each edit with the report beside them, and the downloads —
-//! the same bytes `tmm render` writes.
+//! sheets re-drawn as SVG after each edit with the report beside them (each row with where
+//! its value is read on the sheets, [`readings`]), and the downloads — the same bytes
+//! `tmm render` writes.
 //!
 //! Limits: a request body is at most a scene's size ([`MAX_BODY`]); at most [`RUNNING`]
 //! scenes are built at once and [`WAITING`] more wait, a further one is told the server is
@@ -13,6 +14,7 @@ mod api;
 pub mod fields;
 pub mod gallery;
 pub mod html;
+pub mod readings;
 mod redraw;
 mod replay;
 

@@ -152,10 +152,24 @@ pub(crate) fn sheets_of(plates: &[(PlateKind, plate::Plate)]) -> Vec<Sheet> {
         .collect()
 }
 
-/// The session's report as `tmm report --format json` gives it; `None` when it has none.
-pub(crate) fn report_of(session: &Session<'_>) -> Option<serde_json::Value> {
+/// The session's report as `tmm report --format json` gives it, each row with `read_at`:
+/// where its value is read on `plates` ([`super::readings::read_at`]), `null` when it is
+/// computed; `None` when the session has no report.
+pub(crate) fn report_of(
+    session: &Session<'_>,
+    plates: &[(PlateKind, plate::Plate)],
+) -> Option<serde_json::Value> {
     let report = session.report().ok()?;
-    serde_json::from_str(&report.to_json()).ok()
+    let mut json: serde_json::Value = serde_json::from_str(&report.to_json()).ok()?;
+    let read = super::readings::read_at(&report.rows, plates);
+    if let Some(rows) = json.get_mut("rows").and_then(|r| r.as_array_mut()) {
+        for (row, at) in rows.iter_mut().zip(read) {
+            if let Some(row) = row.as_object_mut() {
+                row.insert("read_at".into(), serde_json::json!(at));
+            }
+        }
+    }
+    Some(json)
 }
 
 /// The sheets and report of `job` (blocking): what the studio answers to an edit.
@@ -165,7 +179,7 @@ pub fn redraw(job: &Job) -> Redrawn {
     let drawn = job.scene().and_then(|(s, drafting)| {
         let session = Session::new(&s, drafting);
         let plates = plates_of(&session, job.lang())?;
-        Ok((sheets_of(&plates), report_of(&session)))
+        Ok((sheets_of(&plates), report_of(&session, &plates)))
     });
     match drawn {
         Ok((sheets, report)) => (out.sheets, out.report) = (sheets, report),

@@ -58,7 +58,8 @@ fn box_distance(r: &Rect, p: DVec2) -> f64 {
 }
 
 /// Every label of the views whose figure is titled `title`, with the item it names: (its
-/// text, its anchor, its box distance from the anchor, whether it names a point).
+/// text, its anchor, its box distance from the anchor — or its leader's end's —, whether it
+/// names a point).
 fn view_labels(plate: &Plate, title: &str) -> Vec<(String, DVec2, f64, bool)> {
     let l = layout(plate);
     l.labels
@@ -71,12 +72,12 @@ fn view_labels(plate: &Plate, title: &str) -> Vec<(String, DVec2, f64, bool)> {
                     .iter()
                     .any(|s| s.id == *id && matches!(s.item, Item::Point(_) | Item::Joint { .. }))
             });
-            (
-                x.text.clone(),
-                x.anchor,
-                box_distance(&x.rect, x.anchor),
-                point,
-            )
+            // A label on a leader (ГОСТ 2.316) stands where its leader's end is.
+            let d = match &x.leader {
+                Some(l) => l.to.distance(x.anchor),
+                None => box_distance(&x.rect, x.anchor),
+            };
+            (x.text.clone(), x.anchor, d, point)
         })
         .collect()
 }

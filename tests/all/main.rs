@@ -23,6 +23,7 @@ mod cam_special;
 mod cli;
 mod dimension_texts;
 mod docs;
+mod dxf;
 mod dynamics;
 mod engine;
 mod flywheel_sheet;

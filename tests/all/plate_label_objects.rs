@@ -41,24 +41,7 @@ const NEARER_MM: f64 = 0.5;
 /// for a line striking through a label), finds no place both clear and at its object, on a
 /// leader either. A failure matches an entry of its sheet and its step's note (the same in
 /// every language).
-const EXEMPT: &[(&str, &str, &str)] = &[
-    // Dimension texts: placed over their dimension lines by their own rule (ГОСТ 2.307).
-    ("shaper/dynamics", "pole distance H", DIMENSION),
-    ("friction/friction", "one turn unrolled: πd₁", DIMENSION),
-    // A curve's label on the blocking contour.
-    ("gears-pz3/gears", "the curve s_a1 ≥ 0.25m", CONTOUR),
-];
-
-const DIMENSION: &str = "a dimension's text, which the dimension placer writes over its \
-    dimension line, 1,0 mm from it, where the first place clear of every line is 0,3 mm from \
-    another line of its scheme (ray 11 of the energy–mass fan; the load beside the thread's \
-    development): the text over its own line is how ГОСТ 2.307 reads a dimension; the rule \
-    of the nearer line is not the dimension placer's, and a text on a leader's shelf \
-    (ГОСТ 2.307 where there is no room) is not made for dimensions";
-const CONTOUR: &str = "a blocking-contour curve's text (s_a ≥ 0,25m) where the curves, the \
-    axes x₁, x₂ and the isolines cross every 5–10 mm: written beside its curve, 1,4 mm from \
-    it, with another curve touching its box; every place on a leader crosses more curves than \
-    that costs";
+const EXEMPT: &[(&str, &str, &str)] = &[];
 
 /// Every label of `plate` away from its object: the note of its (first) step, and
 /// `view N “text”: why`.
@@ -120,15 +103,21 @@ fn labels_away_in(plate: &Plate, l: &Layout) -> Vec<(String, String)> {
 }
 
 /// How far a leader ending at `to` (sheet mm) misses the object of the label of `step`
-/// (`joint`: a joint label, which names a point), when by more than [`LEADER_AT_MM`].
+/// (`joint`: a joint label, which names a point; a step drawing no point or line names its
+/// anchor), when by more than [`LEADER_AT_MM`].
 fn leader_miss(view: &View, step: &tmm::construct::Step, joint: bool, to: DVec2) -> Option<f64> {
-    let d = if names_point(step) || joint {
-        on_sheet(view, named_point(step, f64::INFINITY)?).distance(to)
-    } else {
-        lines(step)
-            .into_iter()
+    let own = lines(step);
+    let point = named_point(step, f64::INFINITY);
+    let d = if (names_point(step) || joint) && point.is_some() {
+        on_sheet(view, point?).distance(to)
+    } else if !own.is_empty() {
+        own.into_iter()
             .map(|(a, b)| box_to_segment(to, to, on_sheet(view, a), on_sheet(view, b)))
             .fold(f64::INFINITY, f64::min)
+    } else {
+        // A text item (a position's number, a curve's name in a detail) names what stands
+        // at its anchor.
+        on_sheet(view, step.label.as_ref()?.anchor).distance(to)
     };
     (d > LEADER_AT_MM).then_some(d)
 }

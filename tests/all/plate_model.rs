@@ -167,6 +167,7 @@ pub fn with_view(mut plate: Plate, steps: Vec<Step>) -> Plate {
         title: "broken".into(),
         scale: view.figure.scale,
         steps,
+        readings: Vec::new(),
     };
     view.caption = None;
     plate.views.push(view);

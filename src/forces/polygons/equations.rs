@@ -121,7 +121,7 @@ impl super::Scheme<'_> {
     /// The tangential part `value` (N) of the reaction `(from, to)` at `a` on a link of
     /// length AB (drawing points `a`, `b`, mm): its moment about B is −value·AB.
     pub(super) fn tangential(
-        &self,
+        &mut self,
         a: DVec2,
         b: DVec2,
         (from, to): (usize, usize),

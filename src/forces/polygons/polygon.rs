@@ -31,6 +31,7 @@ impl Polygon {
             title: String::new(),
             scale: self.rec.scale(),
             steps: self.rec.steps().to_vec(),
+            readings: Vec::new(),
         };
         let d = details(&drawn, &self.laid);
         for d in &d {

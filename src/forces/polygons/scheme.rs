@@ -129,7 +129,7 @@ impl<'a> Scheme<'a> {
     }
 
     /// A length measured on the drawing, m.
-    pub(super) fn length(&self, a: DVec2, b: DVec2) -> f64 {
+    pub(super) fn length(&mut self, a: DVec2, b: DVec2) -> f64 {
         self.rec.measure(a, b).value
     }
 }

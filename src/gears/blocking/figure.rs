@@ -95,7 +95,7 @@ impl Study {
             if !(at.x >= 0.0 && at.y >= 0.0 && at.x <= size.x && at.y <= size.y) {
                 continue;
             }
-            let room = |p: DVec2| room(&drawn, None, &taken, p, size);
+            let room = |p: DVec2| room(&drawn, None, &taken, (p, p), size);
             // Toward the most room of eight directions, 6 mm out.
             let toward = (0..8)
                 .map(|k| {
@@ -116,6 +116,7 @@ impl Study {
             title: "blocking contour".into(),
             scale,
             steps: steps.0,
+            readings: Vec::new(),
         }
     }
 
@@ -203,7 +204,11 @@ impl Study {
             pieces.sort_by_key(|p| std::cmp::Reverse(p.len()));
             drawn.extend(pieces.into_iter().map(|p| (k, p)));
         }
-        let mut taken: Vec<DVec2> = Vec::new();
+        // The axes' names at their ends are taken.
+        let mut taken = vec![
+            DVec2::new(size.x + AXIS_END_MM, 0.0),
+            DVec2::new(0.0, size.y + AXIS_END_MM),
+        ];
         let mut first_of = vec![true; levels.len()];
         for (k, piece) in &drawn {
             let (kind, limit) = levels[*k];
@@ -222,21 +227,11 @@ impl Study {
                 >= 15.0;
             let first = std::mem::replace(&mut first_of[*k], false);
             let label = (first || long).then(|| {
-                let room = |p: DVec2| room(&drawn, Some(*k), &taken, p, size);
-                let n = piece.len() - 1;
-                let at = (1..20)
-                    .map(|f| n * f / 20)
-                    .max_by(|a, b| room(piece[*a]).total_cmp(&room(piece[*b])))
-                    .unwrap_or(n / 2);
-                let p = piece[at];
-                let t = (piece[(at + 1).min(n)] - piece[at.saturating_sub(1)]).normalize_or_zero();
-                let mut nrm = DVec2::new(-t.y, t.x);
-                // Toward the side with more room.
-                if room(p + nrm * 4.0) < room(p - nrm * 4.0) {
-                    nrm = -nrm;
-                }
-                taken.push(p + nrm * 6.0);
-                (level_label(kind, limit, lang, words), p, nrm)
+                let text = level_label(kind, limit, lang, words);
+                let room = |b: (DVec2, DVec2)| room(&drawn, Some(*k), &taken, b, size);
+                let (p, nrm, centre) = label_place(piece, label_extent(&text), room);
+                taken.push(centre);
+                (text, p, nrm)
             });
             steps.push(
                 format!("the curve {}", level_name(kind, limit)),
@@ -252,13 +247,27 @@ impl Study {
     }
 }
 
+/// How far each axis runs past the plane, figure mm.
+const AXIS_END_MM: f64 = 6.0;
+/// How far past the plane's upper and right edges a label may stand, figure mm (the ticks'
+/// numbers take the room past its lower and left edges).
+const PAST_EDGE_MM: f64 = 12.0;
+
 /// The axes along the plane's lower and left edges, with their ticks every 0.2 (0.1 on a
 /// plane of at most a unit).
 fn axes(plane: &Plane, lang: Lang, steps: &mut Steps) {
     let size = plane.size();
     for (axis, end, toward) in [
-        (0, DVec2::new(size.x + 6.0, 0.0), DVec2::new(1.0, -0.6)),
-        (1, DVec2::new(0.0, size.y + 6.0), DVec2::new(-0.6, 1.0)),
+        (
+            0,
+            DVec2::new(size.x + AXIS_END_MM, 0.0),
+            DVec2::new(1.0, -0.6),
+        ),
+        (
+            1,
+            DVec2::new(0.0, size.y + AXIS_END_MM),
+            DVec2::new(-0.6, 1.0),
+        ),
     ] {
         steps.push(
             format!("the axis x{}", if axis == 0 { '₁' } else { '₂' }),
@@ -300,23 +309,72 @@ fn axes(plane: &Plane, lang: Lang, steps: &mut Steps) {
     }
 }
 
-/// The room about `p` (figure mm): its distance to the drawn curves (but the level `skip`),
-/// to the labels already placed and to the plane's edges (`size`).
+/// Where a curve's label goes: of twenty points along `piece` and the two sides of each, the
+/// one whose label box (of `extent`, set a label's gap out along the curve's normal) has the
+/// most `room` — a label fits where its whole box is clear, not its anchor. The point, the
+/// side's normal and the box's centre.
+fn label_place(
+    piece: &[DVec2],
+    extent: DVec2,
+    room: impl Fn((DVec2, DVec2)) -> f64,
+) -> (DVec2, DVec2, DVec2) {
+    let n = piece.len() - 1;
+    let half = extent * 0.5;
+    let box_at = |p: DVec2, nrm: DVec2| {
+        let out = LABEL_GAP_MM + nrm.x.abs() * half.x + nrm.y.abs() * half.y;
+        let centre = p + nrm * out;
+        ((p, nrm, centre), room((centre - half, centre + half)))
+    };
+    let along = (1..20).flat_map(|f| {
+        let at = n * f / 20;
+        let p = piece[at];
+        let t = (piece[(at + 1).min(n)] - piece[at.saturating_sub(1)]).normalize_or_zero();
+        [1.0, -1.0].map(|side| box_at(p, DVec2::new(-t.y, t.x) * side))
+    });
+    along
+        .fold(
+            None,
+            |best: Option<((DVec2, DVec2, DVec2), f64)>, c| match best {
+                Some(b) if b.1 >= c.1 => Some(b),
+                _ => Some(c),
+            },
+        )
+        .map_or((piece[n / 2], DVec2::Y, piece[n / 2]), |b| b.0)
+}
+
+/// Gap from a curve to its label's box, figure mm (the plate's label gap).
+const LABEL_GAP_MM: f64 = 2.0;
+
+/// The box a curve's label takes, figure mm: an estimate of the 3,5 mm label text (2,3 mm a
+/// character, a subscript line's height) for choosing its place; the plate measures it.
+fn label_extent(markup: &str) -> DVec2 {
+    let chars = markup
+        .chars()
+        .filter(|c| !matches!(c, '_' | '{' | '}'))
+        .count();
+    DVec2::new(2.3 * chars as f64, 4.5)
+}
+
+/// The room about the box `lo`–`hi` (figure mm; a point when they are one): its distance to
+/// the drawn curves (but the level `skip`), to the labels already placed and to the plane's
+/// lower and left edges (`size`), and [`PAST_EDGE_MM`] past its upper and right ones; zero
+/// where any of these enters it.
 fn room(
     drawn: &[(usize, Vec<DVec2>)],
     skip: Option<usize>,
     taken: &[DVec2],
-    p: DVec2,
+    (lo, hi): (DVec2, DVec2),
     size: DVec2,
 ) -> f64 {
     let others = drawn
         .iter()
         .filter(|(j, _)| Some(*j) != skip)
-        .flat_map(|(_, q)| q.iter().step_by(2))
+        .flat_map(|(_, q)| q.iter())
         .chain(taken.iter())
-        .map(|q| (*q - p).length())
+        .map(|q| (*q - q.clamp(lo, hi)).length())
         .fold(f64::INFINITY, f64::min);
-    others.min(p.x).min(p.y).min(size.x - p.x).min(size.y - p.y)
+    let past = size + DVec2::splat(PAST_EDGE_MM) - hi;
+    others.min(lo.x).min(lo.y).min(past.x).min(past.y)
 }
 
 /// The label of a level in label markup.

@@ -191,7 +191,7 @@ impl<'a> Builder<'a> {
         to
     }
     /// Read a drawn segment as a physical magnitude.
-    pub(in crate::linkage) fn read(&self, from: DVec2, to: DVec2) -> f64 {
+    pub(in crate::linkage) fn read(&mut self, from: DVec2, to: DVec2) -> f64 {
         self.rec.measure(from, to).value
     }
     pub(in crate::linkage) fn reading(
@@ -210,7 +210,7 @@ impl<'a> Builder<'a> {
     }
     /// The rate of a link from a relative image vector `rel` (plan mm) of a point at radius `r` (m):
     /// ω = r × v / |r|² (velocity plan) or ε from the tangential component (acceleration plan).
-    pub(in crate::linkage) fn rate_from(&self, r: DVec2, from: DVec2, to: DVec2) -> f64 {
+    pub(in crate::linkage) fn rate_from(&mut self, r: DVec2, from: DVec2, to: DVec2) -> f64 {
         let v = (to - from) * self.mu();
         let sign = r.perp_dot(v).signum();
         let mag = self.read(from, to);

@@ -2,7 +2,7 @@
 //! dimension line when that is free (ГОСТ 2.307), else slid along the line, under it, or past
 //! its arrows on the line's extension — never struck through by a line of its own view.
 
-use super::place::{clipped_area, clipped_length};
+use super::place::{clipped_area, clipped_length, own_distance, NEARER_MM};
 use super::{Outline, Shape};
 use crate::construct::Item;
 use crate::geom::DVec2;
@@ -26,15 +26,20 @@ const CLEAR_MM: f64 = 0.3;
 /// Cost of a place over another text (a caption, a table, another dimension's text), as mm
 /// of line struck.
 const OVER_TEXT: f64 = 100.0;
+/// Cost of a place nearer another line of the view than its own dimension's (a reader takes
+/// the text for that line's), as mm of line struck, and per mm it is nearer.
+const WRONG_LINE: f64 = 50.0;
+const WRONG_LINE_MM: f64 = 10.0;
 
 /// The dimension `(from, to, offset)`'s text `text` placed (see the module documentation):
 /// the first place, in order of preference, whose box meets no line of `lines` (the view's
-/// outlines) and no text of `texts`; the least struck when none is free.
+/// outlines) and no text of `texts`, and is no nearer another line than its own dimension's
+/// (`own`, its outlines among `lines`); the least struck when none is free.
 pub(super) fn placed(
     map: Map,
     dim: (DVec2, DVec2, f64),
     text: &str,
-    lines: &[Outline],
+    (lines, own): (&[Outline], &[Outline]),
     texts: &[Rect],
 ) -> Option<Placed> {
     let first = dimension_text(map, dim, text, TextSpot::MIDDLE)?;
@@ -53,7 +58,7 @@ pub(super) fn placed(
             .filter(|&a| a > 0.0)
             .map(|a| OVER_TEXT + a)
             .sum();
-        let ink = struck(&p, lines, CLEAR_MM) + over;
+        let ink = struck(&p, lines, CLEAR_MM) + over + wrong_line(&p.bounds(), lines, own);
         if ink == 0.0 {
             return Some(p);
         }
@@ -63,6 +68,20 @@ pub(super) fn placed(
         }
     }
     best.map(|b| b.0)
+}
+
+/// What a text whose box is `rect` costs for standing nearer another line of `lines` than
+/// its own dimension's lines `own` (zero when it is not, or `own` has no line).
+fn wrong_line(rect: &Rect, lines: &[Outline], own: &[Outline]) -> f64 {
+    let Some(mine) = own_distance(own, rect) else {
+        return 0.0;
+    };
+    let others = lines.iter().filter(|o| !own.contains(o));
+    let rival = own_distance(others, rect).unwrap_or(f64::INFINITY);
+    match rival + NEARER_MM < mine {
+        true => WRONG_LINE + WRONG_LINE_MM * (mine - rival),
+        false => 0.0,
+    }
 }
 
 /// The places tried for a text `width` mm long beside a dimension line `length` mm long, in
@@ -195,7 +214,8 @@ mod tests {
         };
         let middle = dimension_text(map, dim, "H", TextSpot::MIDDLE).expect("text");
         assert!(struck(&middle, std::slice::from_ref(&cross), 0.0) > 1.0);
-        let p = placed(map, dim, "H", std::slice::from_ref(&cross), &[]).expect("placed");
+        let lines = std::slice::from_ref(&cross);
+        let p = placed(map, dim, "H", (lines, &[]), &[]).expect("placed");
         assert_eq!(struck(&p, &[cross], CLEAR_MM), 0.0);
         assert!(
             (p.at.x - 30.0).abs() < 6.0,
@@ -207,12 +227,41 @@ mod tests {
             Rect::new(DVec2::new(0.0, 0.5), DVec2::new(60.0, 6.0)),
             Rect::new(DVec2::new(0.0, -6.0), DVec2::new(30.0, -0.5)),
         ];
-        let q = placed(map, dim, "H", &[], &captions).expect("placed");
+        let q = placed(map, dim, "H", (&[], &[]), &captions).expect("placed");
         assert!(
             captions.iter().all(|c| !c.intersects(&q.bounds())),
             "{:?}",
             q.bounds()
         );
         assert!(q.bounds().min.x > 30.0 && q.bounds().max.y < 0.0);
+    }
+
+    #[test]
+    fn a_line_nearer_than_its_own_slides_the_text_away_from_it() {
+        let map = Map::figure(DVec2::ZERO);
+        let dim = (DVec2::ZERO, DVec2::new(60.0, 0.0), 0.0);
+        let own = vec![Outline {
+            shape: Shape::Line(map.pt(dim.0), map.pt(dim.1)),
+            main: false,
+        }];
+        let middle = dimension_text(map, dim, "H", TextSpot::MIDDLE).expect("text");
+        let top = middle.bounds().min.y;
+        // A ray 0,4 mm over the middle text's box (clear of it, but nearer than the
+        // dimension line 1 mm under it), over the middle third of the line only.
+        let ray = Outline {
+            shape: Shape::Line(DVec2::new(20.0, top - 0.4), DVec2::new(40.0, top - 0.4)),
+            main: false,
+        };
+        let lines = vec![own[0].clone(), ray.clone()];
+        assert_eq!(struck(&middle, &lines, CLEAR_MM), 0.0);
+        assert!(wrong_line(&middle.bounds(), &lines, &own) > 0.0);
+        let p = placed(map, dim, "H", (&lines, &own), &[]).expect("placed");
+        assert_eq!(wrong_line(&p.bounds(), &lines, &own), 0.0);
+        let b = p.bounds();
+        assert!(b.max.x < 20.0 || b.min.x > 40.0, "{b:?}");
+        assert!(b.max.y < 0.0, "still over its line: {b:?}");
+        // Without its own lines nothing is nearer: the middle stays.
+        let q = placed(map, dim, "H", (&lines, &[]), &[]).expect("placed");
+        assert_eq!(q.at, middle.at);
     }
 }

@@ -34,7 +34,28 @@ impl Leader {
             Segment::new(self.knee, self.end),
         ]
     }
+
+    /// Its marks as drawn: the thin line through the knee to the shelf's end, then its dot
+    /// on an item's line (where it ends on one).
+    pub(crate) fn marks(&self) -> Vec<Mark> {
+        use crate::plate::path::PathData;
+        use crate::plate::style::Paint;
+        let mut line = PathData::new(Map::SHEET);
+        line.polyline(&[self.from, self.knee, self.end]);
+        let mut out: Vec<Mark> = Mark::path(Paint::Stroke(Pen::THIN), line)
+            .into_iter()
+            .collect();
+        if self.dot {
+            let mut dot = PathData::new(Map::SHEET);
+            dot.circle(self.to, LEADER_DOT_MM);
+            out.extend(Mark::path(Paint::Solid, dot));
+        }
+        out
+    }
 }
+
+/// The radius of a leader's dot on an item's line, mm.
+const LEADER_DOT_MM: f64 = 0.35;
 
 /// Between the text's box and its shelf, mm.
 const SHELF_GAP_MM: f64 = 0.6;
@@ -151,7 +172,10 @@ pub(super) fn cost(
 ) -> f64 {
     let [line, shelf] = l.pieces();
     let mut cost = LEADER + LEADER_MM * line.length();
-    for (_, o) in lines {
+    // A line whose box stays clear of the leader's crosses it nowhere.
+    let reach = Rect::around([line.from, line.to, shelf.from, shelf.to]);
+    let near = |b: &Rect| reach.is_some_and(|r| r.touches(b));
+    for (_, o) in lines.iter().filter(|(b, _)| near(b)) {
         let Shape::Line(a, b) = o.shape else { continue };
         let other = Segment::new(a, b);
         for piece in [&line, &shelf] {
@@ -194,8 +218,11 @@ pub(super) fn cost(
 /// [`ALONG_MM`] of a line of the drawing running within [`ALONG_DEG`] of its direction.
 fn along_lines(piece: &Segment, to: DVec2, lines: &[(Rect, &Outline)]) -> usize {
     let d = (piece.to - piece.from).normalize_or_zero();
+    // A line whose box is farther than ALONG_MM from the piece's runs beside it nowhere.
+    let reach = Rect::around([piece.from, piece.to]).map(|r| r.inflate(ALONG_MM));
     let beside: Vec<Segment> = lines
         .iter()
+        .filter(|(b, _)| reach.is_some_and(|r| r.touches(b)))
         .filter_map(|(_, o)| match o.shape {
             Shape::Line(a, b) => Some(Segment::new(a, b)),
             Shape::Area(_) => None,

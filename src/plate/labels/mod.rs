@@ -267,7 +267,8 @@ fn requests(
             let mut near: Vec<Rect> = texts.to_vec();
             near.extend(fixed.iter().map(|f: &PlacedLabel| f.rect));
             let dim = (*from, *to, *offset);
-            if let Some(placed) = dimension::placed(map, dim, text, lines, &near) {
+            let own = step_outlines(step, map);
+            if let Some(placed) = dimension::placed(map, dim, text, (lines, &own), &near) {
                 fixed.push(PlacedLabel {
                     view: k,
                     steps: vec![step.id],

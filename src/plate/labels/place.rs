@@ -178,9 +178,10 @@ impl<'a> Placer<'a> {
     }
 
     /// Every label whose place stands away from its object (beyond its reach, nearer another
-    /// line) takes the best place on a leader instead where that costs less, in the placing
-    /// order, each among the places and leaders the others have by then. A label kept near its
-    /// point by its own bound keeps its place.
+    /// line) or is struck through by a line takes the best place on a leader instead where
+    /// that costs less, in the placing order, each among the places and leaders the others
+    /// have by then. A label kept near its point by its own bound keeps a place no line runs
+    /// through.
     fn put_on_leaders(
         &self,
         jobs: &[Job],
@@ -192,13 +193,14 @@ impl<'a> Placer<'a> {
             let (job, Some(now)) = (&jobs[i], slots[i]) else {
                 continue;
             };
-            if job.request.within.is_some() || away(job, &now.rect, 0.0) == 0.0 {
+            let bound = job.request.within.is_some();
+            if !struck(job, &now.rect) && (bound || away(job, &now.rect, 0.0) == 0.0) {
                 continue;
             }
             let on_leader = self.leader_job(job.request.clone(), points);
             let others = self.others_near(job.near, slots, i);
             let cost_now = self.cost(job, &now, &others, f64::INFINITY);
-            let (slot, cost) = self.best(&on_leader, slots, i);
+            let (slot, cost) = self.best_below(&on_leader, slots, i, cost_now - 1e-9);
             if cost < cost_now - 1e-9 {
                 slots[i] = Some(slot);
             }
@@ -294,6 +296,12 @@ impl<'a> Placer<'a> {
     /// The least colliding candidate of `job`, label `i`, with the other labels where `slots`
     /// has them (the first of equals), and its cost.
     fn best(&self, job: &Job, slots: &[Option<Slot>], i: usize) -> (Slot, f64) {
+        self.best_below(job, slots, i, f64::INFINITY)
+    }
+
+    /// The cheapest place of `job` ([`best`](Self::best)) among those costing less than
+    /// `bound`; a place costing no less, with the cost `bound`, when there is none.
+    fn best_below(&self, job: &Job, slots: &[Option<Slot>], i: usize, bound: f64) -> (Slot, f64) {
         let others = self.others_near(job.near, slots, i);
         let mut best = (
             Slot {
@@ -301,7 +309,7 @@ impl<'a> Placer<'a> {
                 rank: 0,
                 leader: job.leaders.first().copied(),
             },
-            f64::INFINITY,
+            bound,
         );
         for (rank, &rect) in job.candidates.iter().enumerate() {
             let leader = job.leaders.get(rank).copied();
@@ -415,6 +423,9 @@ impl<'a> Placer<'a> {
                 cost += OVER_POINT;
             }
         }
+        if cost >= bound {
+            return cost;
+        }
         cost = match slot.leader {
             None => away(job, rect, cost),
             Some(l) => {
@@ -437,20 +448,14 @@ impl<'a> Placer<'a> {
             if !bounds.touches(&padded) {
                 continue;
             }
-            cost += match &o.shape {
-                Shape::Line(a, b) => {
-                    let inside = clipped_length(*a, *b, &padded);
-                    let struck = if inside > 0.0 { STRUCK } else { 0.0 };
-                    struck + inside * if o.main { MAIN_LINE } else { THIN_LINE }
+            let inside = ink_inside(o, &padded);
+            cost += match (&o.shape, inside > 0.0) {
+                (_, false) => 0.0,
+                (Shape::Line(..), true) => {
+                    STRUCK + inside * if o.main { MAIN_LINE } else { THIN_LINE }
                 }
-                Shape::Area(pts) => {
-                    let per = if o.main { MAIN_AREA } else { THIN_AREA };
-                    let a = clipped_area(pts, &padded);
-                    if a > 0.0 {
-                        per * (1.0 + a)
-                    } else {
-                        0.0
-                    }
+                (Shape::Area(_), true) => {
+                    (1.0 + inside) * if o.main { MAIN_AREA } else { THIN_AREA }
                 }
             };
         }
@@ -484,9 +489,29 @@ fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
     cost
 }
 
+/// Whether a line or symbol of the view runs through the label at `rect` (within half the
+/// clearance a label keeps).
+fn struck(job: &Job, rect: &Rect) -> bool {
+    let padded = rect.inflate(CLEARANCE_MM * 0.5);
+    job.lines
+        .iter()
+        .any(|(bounds, o)| bounds.touches(&padded) && ink_inside(o, &padded) > 0.0)
+}
+
+/// How much of the outline `o` lies inside `r`: mm of a line, mm² of an area.
+fn ink_inside(o: &Outline, r: &Rect) -> f64 {
+    match &o.shape {
+        Shape::Line(a, b) => clipped_length(*a, *b, r),
+        Shape::Area(pts) => clipped_area(pts, r),
+    }
+}
+
 /// The distance from `rect` to the nearest of the lines among `own`; `None` without lines.
-fn own_distance(own: &[Outline], rect: &Rect) -> Option<f64> {
-    own.iter()
+pub(super) fn own_distance<'o>(
+    own: impl IntoIterator<Item = &'o Outline>,
+    rect: &Rect,
+) -> Option<f64> {
+    own.into_iter()
         .filter_map(|o| match o.shape {
             Shape::Line(a, b) => Some(rect_segment_distance(rect, a, b)),
             Shape::Area(_) => None,

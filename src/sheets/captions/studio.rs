@@ -38,6 +38,9 @@ catalogue! {
         Trains => ("Зубчатые передачи", "Зубчасті передачі", "Gear trains"),
         Friction => ("Трение", "Тертя", "Friction"),
         Balancing => ("Уравновешивание", "Зрівноваження", "Balancing"),
+        Where => ("Щелчок: где это значение измерено на листе", "Клацання: де це значення виміряно на аркуші", "Click: where this value is read on the sheet"),
+        Computed => ("вычислено по формуле, не измерено на листе", "обчислено за формулою, не виміряно на аркуші", "computed by formula, not measured on the sheet"),
+        Derived => ("не показано одним отрезком листа: получено из отсчётов построения", "не показано одним відрізком аркуша: отримано з відліків побудови", "not shown as one segment of the sheet: worked out from the construction's readings"),
     }
 }
 
@@ -67,4 +70,7 @@ pub(crate) const STUDIO_KEYS: &[(&str, StudioText)] = &[
     ("busy", StudioText::Busy),
     ("replay", StudioText::Replay),
     ("whole", StudioText::Whole),
+    ("where", StudioText::Where),
+    ("computed", StudioText::Computed),
+    ("derived", StudioText::Derived),
 ];

@@ -189,6 +189,7 @@ function sheets() {
   $("canvas").replaceChildren(document.importNode(svg, true));
   if (first) fit();
   place();
+  if (state.reading && state.reading.sheet === state.shown) drawReading(state.reading);
   loadReplay();
 }
 
@@ -313,14 +314,75 @@ function report(rep) {
   head.replaceChildren(el("tr", {}, el("th", {}, word("quantity")), el("th", {}, word("graphical")), el("th", {}, word("analytic")), el("th", {}, word("error"))));
   const body = $("rows").tBodies[0];
   body.replaceChildren();
+  state.reading = null;
+  $("canvas").querySelector("line.reading")?.remove();
   if (!rep) return;
   // Four significant digits, as a drawing's table; a residue of the solver (|x| < 1e-12) is 0.
   const fmt = (x) => (x === null ? "—" : Math.abs(x) < 1e-12 ? "0" : Number(x.toPrecision(4)).toString().replace(".", lang() === "en" ? "." : ","));
   for (const row of rep.rows) {
     const name = row.quantity + (row.position ? " (" + row.position + ")" : "");
     const pct = row.rel_error === null ? "—" : fmt(row.rel_error * 100);
-    body.append(el("tr", {}, el("td", {}, name), el("td", {}, fmt(row.graphical)), el("td", {}, fmt(row.analytic)), el("td", {}, pct)));
+    const tr = el("tr", {}, el("td", {}, name), el("td", {}, fmt(row.graphical)), el("td", {}, fmt(row.analytic)), el("td", {}, pct));
+    // A row of a report that says where its values are read (`read_at`, null when computed)
+    // shows it on a click or Enter.
+    if ("read_at" in row) {
+      tr.tabIndex = 0;
+      tr.className = row.read_at ? "read" : "computed";
+      if (row.read_at) tr.title = word("where");
+      const show = () => showReading(tr, row);
+      tr.addEventListener("click", show);
+      tr.addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); show(); } });
+    }
+    body.append(tr);
   }
+}
+
+// Where a row's value is read: its sheet shown, the segment measured drawn over it in red and
+// brought to the middle of the viewport; a row computed says so in its place.
+function showReading(tr, row) {
+  for (const e of document.querySelectorAll("#rows tr.chosen")) e.classList.remove("chosen");
+  document.querySelector("#rows tr.reading-note")?.remove();
+  tr.classList.add("chosen");
+  const at = row.read_at;
+  if (!at) {
+    state.reading = null;
+    $("canvas").querySelector("line.reading")?.remove();
+    const why = row.method === "formula" ? word("computed") : word("derived");
+    tr.after(el("tr", { class: "reading-note", role: "status" }, el("td", { colspan: "4" }, why)));
+    return;
+  }
+  state.reading = at;
+  if (state.shown !== at.sheet) {
+    state.shown = at.sheet;
+    sheets();
+  } else drawReading(at);
+  toReading(at);
+  $("viewport").scrollIntoView({ block: "nearest" });
+}
+
+// The segment `at` (sheet mm, the SVG's viewBox units) as a red line over the sheet.
+function drawReading(at) {
+  const svg = $("canvas").querySelector("svg");
+  if (!svg) return;
+  svg.querySelector("line.reading")?.remove();
+  const line = document.createElementNS("http://www.w3.org/2000/svg", "line");
+  const attrs = { class: "reading", x1: at.x1, y1: at.y1, x2: at.x2, y2: at.y2, stroke: "#e00000", "stroke-width": "0.8", "stroke-linecap": "round" };
+  for (const [k, v] of Object.entries(attrs)) line.setAttribute(k, String(v));
+  svg.append(line);
+}
+
+// Pan and zoom so that the segment `at` and 40 mm around it fill the viewport, centred.
+function toReading(at) {
+  const svg = $("canvas").querySelector("svg");
+  const box = svg && svg.viewBox.baseVal;
+  if (!box || !box.width) return;
+  const px = (svg.width.baseVal.value || svg.getBoundingClientRect().width / state.zoom) / box.width;
+  const v = $("viewport");
+  const span = Math.max(Math.abs(at.x2 - at.x1), Math.abs(at.y2 - at.y1)) + 80;
+  state.zoom = Math.min(v.clientWidth, v.clientHeight) / (span * px);
+  const [cx, cy] = [(at.x1 + at.x2) / 2, (at.y1 + at.y2) / 2];
+  state.pan = [v.clientWidth / 2 - cx * px * state.zoom, v.clientHeight / 2 - cy * px * state.zoom];
+  place();
 }
 
 function downloads() {

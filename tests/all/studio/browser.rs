@@ -118,6 +118,19 @@ impl Browser {
         e.click().await.expect("click");
     }
 
+    /// Focus the element `css` and press Enter on it, as a keyboard user does.
+    pub async fn press_enter(&self, css: &str) {
+        let e = self.c().find(Locator::Css(css)).await.expect(css);
+        self.c()
+            .execute(
+                "arguments[0].scrollIntoView({block: 'center'}); arguments[0].focus();",
+                vec![serde_json::to_value(&e).expect("element")],
+            )
+            .await
+            .expect("focus");
+        e.send_keys("\u{E007}").await.expect("Enter");
+    }
+
     /// Replace the text of the form's field `key` by `text`, as a user types it.
     pub async fn type_into(&self, key: &str, text: &str) {
         let css = format!("input[name=\"{key}\"]");

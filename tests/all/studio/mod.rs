@@ -2,7 +2,9 @@
 //! (WebDriver) against `tmm serve`'s router on a free port of 127.0.0.1. It opens the
 //! gallery, starts from the shaper, changes the crank length in the form and sees the
 //! kinematic sheet and its report rows change, downloads the PDF and compares it with
-//! `tmm render`'s bytes, and types an impossible length and sees the message at its field.
+//! `tmm render`'s bytes, clicks a velocity row of the report and sees the segment it is read
+//! off drawn in red on its sheet, presses Enter on a row computed by formula and reads why
+//! it has none, and types an impossible length and sees the message at its field.
 //! A screenshot of each state goes to `out/studio/` for a person to look at.
 //!
 //! Needs Debian's `chromium` and `chromium-driver` (`.ci/run` installs them).
@@ -15,6 +17,7 @@ use std::path::{Path, PathBuf};
 use tmm::construct::Drafting;
 use tmm::render::{self, Formats, Options};
 use tmm::scale::Lang;
+use tmm::studio::readings::{read_at, ReadAt};
 use tmm::studio::{fields, gallery};
 
 fn out_dir() -> PathBuf {
@@ -46,6 +49,90 @@ fn shaper_pdf(length: &str) -> Vec<u8> {
     };
     let files = render::files(&[s], Path::new(""), &options).expect("render");
     files.into_iter().next().expect("the pdf").1
+}
+
+/// The shaper with the crank `length` as the page draws it (ru, read to 0,5 mm): the index of
+/// its report's row of `quantity` at position `at` and where that row is read, the index of
+/// its first row computed by formula, and the sheets' names.
+fn shaper_rows(length: &str, quantity: &str, at: &str) -> (usize, ReadAt, usize, Vec<String>) {
+    let text = gallery::text("shaper").expect("shipped");
+    let text = fields::set(text, "mechanism.crank.length", length).expect("set");
+    let s = tmm::scene::parse(&text, Path::new("shaper.toml")).expect("scene");
+    let session = tmm::study::Session::new(&s, Drafting::HAND);
+    let plates = tmm::sheets::build_all(&session, Lang::Ru).expect("sheets");
+    let rows = session.report().expect("report").rows;
+    let found = read_at(&rows, &plates);
+    let i = rows
+        .iter()
+        .position(|r| r.quantity() == quantity && r.position().as_deref() == Some(at))
+        .expect("the row");
+    let formula = rows
+        .iter()
+        .position(|r| r.method == tmm::check::Method::Formula)
+        .expect("a row computed by formula");
+    let names = plates.iter().map(|(_, p)| p.name.clone()).collect();
+    (i, found[i].expect("read on a sheet"), formula, names)
+}
+
+/// A click on the row of v_B at position 1 (the shaper, crank 150 mm): its sheet shown, the
+/// segment of the plan it is read off drawn in red over it (sheet mm, the SVG's viewBox units),
+/// in view; Enter on a row computed by formula: the page says so in its place.
+async fn where_read(b: &Browser, shots: &Path) {
+    let (row, want, formula, names) = shaper_rows("150", "v_B", "1");
+    b.click(&format!("#rows tbody tr:nth-child({})", row + 1))
+        .await;
+    let line = b
+        .until("(l => l && [l.x1.baseVal.value, l.y1.baseVal.value, l.x2.baseVal.value, l.y2.baseVal.value, l.getAttribute('stroke'), l.getAttribute('stroke-width')])(document.querySelector('#canvas svg line.reading'))")
+        .await;
+    let ends = [want.x1, want.y1, want.x2, want.y2];
+    for (k, w) in ends.iter().enumerate() {
+        let got = line[k].as_f64().unwrap_or(f64::NAN);
+        assert!(
+            (got - w).abs() <= 0.05,
+            "end {k}: {got} mm, expected {w} mm"
+        );
+    }
+    assert_eq!(line[4], "#e00000");
+    assert_eq!(line[5], "0.8");
+    let shown = b
+        .eval("return document.querySelector('#sheet-tabs button.on').textContent")
+        .await;
+    assert_eq!(shown, names[want.sheet].as_str());
+    let inside = b
+        .eval(
+            "const l = document.querySelector('#canvas svg line.reading').getBoundingClientRect();
+             const v = document.getElementById('viewport').getBoundingClientRect();
+             return [l.left >= v.left, l.right <= v.right, l.top >= v.top, l.bottom <= v.bottom, l.width + l.height];",
+        )
+        .await;
+    assert_eq!(
+        inside.as_array().map(|a| a[..4].to_vec()),
+        Some(vec![serde_json::Value::Bool(true); 4]),
+        "the segment in view: {inside}"
+    );
+    assert!(
+        inside[4].as_f64().unwrap_or(0.0) > 40.0,
+        "zoomed to it: {inside}"
+    );
+    eprintln!(
+        "v_B (1) read on {} from ({:.2}, {:.2}) to ({:.2}, {:.2}) mm",
+        names[want.sheet], want.x1, want.y1, want.x2, want.y2
+    );
+    b.shot(&shots.join("5-reading.png")).await;
+
+    // Enter on a row computed by formula: the page says so in its place, no segment drawn.
+    b.press_enter(&format!("#rows tbody tr:nth-child({})", formula + 1))
+        .await;
+    let note = b
+        .until("document.querySelector('#rows tr.chosen + tr.reading-note')?.textContent")
+        .await;
+    assert_eq!(note, "вычислено по формуле, не измерено на листе");
+    assert!(
+        b.eval("return !document.querySelector('#canvas svg line.reading')")
+            .await
+            == true
+    );
+    b.shot(&shots.join("6-computed.png")).await;
 }
 
 #[test]
@@ -146,6 +233,8 @@ fn a_student_edits_the_shaper_in_the_browser() {
         let pdf = shaper_pdf("150");
         assert_eq!(got, serde_json::json!([pdf.len(), fnv(&pdf)]), "the page's PDF");
 
+        where_read(&b, &shots).await;
+
         // An impossible length: the message at its field, the last sheets kept.
         b.type_into("mechanism.crank.length", "-5").await;
         let message = b
@@ -154,7 +243,7 @@ fn a_student_edits_the_shaper_in_the_browser() {
         let message = message.as_str().unwrap_or_default();
         assert!(message.contains("expected a length > 0 mm"), "{message}");
         assert!(b.eval("return !!document.querySelector('#canvas svg')").await == true);
-        b.shot(&shots.join("5-impossible.png")).await;
+        b.shot(&shots.join("7-impossible.png")).await;
         b.close().await;
     });
 }

@@ -29,6 +29,7 @@ impl Steps {
             title: title.into(),
             scale,
             steps: self.0,
+            readings: Vec::new(),
         }
     }
 }
