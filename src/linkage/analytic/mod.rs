@@ -315,11 +315,14 @@ impl Program {
                     st.set(idx, j);
                 }
                 // One Assur group: its joint (RPR: its slide line) with the rates, by its
-                // kind's own solve.
-                Op::Dyad { group, links, dyad } => {
+                // kind's own solve (borrowed from the program, not copied).
+                Op::Dyad {
+                    group,
+                    links,
+                    ref dyad,
+                } => {
                     st.group = group;
-                    dyad.group()
-                        .solve(self, &mut st, links.map(|l| l as usize))?;
+                    dyad.solve(self, &mut st, links.map(|l| l as usize))?;
                 }
             }
         }

@@ -5,8 +5,8 @@
 //! drawing, its twin's closed-form solve and its steps on the velocity and acceleration
 //! plans — and its words in the scene ([`Words`]: the kind's number, its letters, the scene
 //! keys of its table). A kind's data (the indices and lengths of its compiled group) is its
-//! own struct; [`PDyad`] holds one of them and dispatches to it by one `match`
-//! ([`PDyad::group`]).
+//! own struct; [`PDyad`] holds one of them and dispatches to it by a `match`
+//! ([`PDyad::group`]; the twin's solve by [`PDyad::solve`], inlined into its run).
 //!
 //! The construction, the twin and the plans are separate routes in one file (DESIGN §1):
 //! each decides by itself from the program, sharing primitives only (the recorder, the
@@ -108,7 +108,9 @@ pub(in crate::linkage) trait GroupKind {
     /// links `[i, j]`: its joint (RPR: its slide line) and its links' frames with their
     /// first and second derivatives with respect to φ₁. The analytic twin's own route: it
     /// shares primitives with [`GroupKind::construct`] but no decision, and neither calls
-    /// the other (DESIGN §1).
+    /// the other (DESIGN §1). The twin's run calls it through [`PDyad::solve`], not through
+    /// `dyn GroupKind`, and a kind marks it `#[inline(always)]`: it is the analytic kernel's
+    /// inner loop.
     fn solve(&self, prog: &Program, st: &mut State<'_>, links: [usize; 2]) -> Solved;
     /// Draw its two vector equations on the plan `bl` (steps named after `step`, its links
     /// `[i, j]`): the image of its joint (RPR, RPP: of the slider's coincident point), its
@@ -146,7 +148,8 @@ pub(in crate::linkage) enum PDyad {
 }
 
 impl PDyad {
-    /// The group behind the trait: the one `match` a new kind adds an arm to.
+    /// The group behind the trait: a new kind adds an arm here, in [`PDyad::group_mut`] and
+    /// in [`PDyad::solve`].
     pub(in crate::linkage) fn group(&self) -> &dyn GroupKind {
         match self {
             PDyad::Rrr(g) => g,
@@ -154,6 +157,28 @@ impl PDyad {
             PDyad::Rpr(g) => g,
             PDyad::Prp(g) => g,
             PDyad::Rpp(g) => g,
+        }
+    }
+
+    /// Solve the group by its kind's [`GroupKind::solve`], dispatched by the variant rather
+    /// than through [`PDyad::group`]'s `&dyn GroupKind`: the twin's run over the program is
+    /// the analytic kernel's inner loop, and a solve called through the trait object stays a
+    /// call of its own (its state passed through memory, its helpers no longer inlined)
+    /// where, inlined, it is one function with the run, as fast as the run was when it
+    /// matched on the kinds itself.
+    #[inline(always)]
+    pub(in crate::linkage) fn solve(
+        &self,
+        prog: &Program,
+        st: &mut State<'_>,
+        links: [usize; 2],
+    ) -> Solved {
+        match self {
+            PDyad::Rrr(g) => g.solve(prog, st, links),
+            PDyad::Rrp(g) => g.solve(prog, st, links),
+            PDyad::Rpr(g) => g.solve(prog, st, links),
+            PDyad::Prp(g) => g.solve(prog, st, links),
+            PDyad::Rpp(g) => g.solve(prog, st, links),
         }
     }
 
@@ -276,9 +301,10 @@ mod tests {
     /// (its construction and drawing its own; its twin's solve and its plan steps borrowed
     /// from the RRR group of the same radii, since the toy is one); registering it as a
     /// kind of the scene also takes a `DyadKind` variant (its `words` arm and its file's
-    /// `WORDS`), a `PDyad` variant (its `group` arm), a model `Dyad` variant with its
-    /// compilation (`program.rs`), its `GroupPairs` and force method (`forces/twin.rs`,
-    /// `forces/polygons/`) and its table in the scene (`scene/groups.rs`).
+    /// `WORDS`), a `PDyad` variant (its `group`, `group_mut` and `solve` arms), a model
+    /// `Dyad` variant with its compilation (`program.rs`), its `GroupPairs` and force
+    /// method (`forces/twin.rs`, `forces/polygons/`) and its table in the scene
+    /// (`scene/groups.rs`).
     struct Toy {
         a: usize,
         b: usize,

@@ -92,6 +92,7 @@ impl GroupKind for Prp {
         }
     }
     /// PRP: the joint where the two guides meet, its rates from the two moving lines.
+    #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
     fn solve(&self, _: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let (l1, l2) = (st.guide(&self.gi), st.guide(&self.gj));
         let (x, s) = meet(l1, l2)

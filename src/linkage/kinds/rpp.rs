@@ -110,6 +110,7 @@ impl GroupKind for Rpp {
     }
     /// RPP: the joint where the slide line through `a` meets link j's guide, its rates from
     /// the two moving lines.
+    #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
     fn solve(&self, _: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let Rpp {
             a,

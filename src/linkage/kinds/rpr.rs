@@ -95,6 +95,7 @@ impl GroupKind for Rpr {
     }
     /// RPR: the slide line through the pin `a` at `offset` from the pivot `c` (without
     /// offset at the pivot: the slot's limit), with its rates.
+    #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
     fn solve(&self, prog: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let Rpr { a, c, offset } = *self;
         let w = sub(st.jet(a), st.jet(c));

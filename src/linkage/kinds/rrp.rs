@@ -105,6 +105,7 @@ impl GroupKind for Rrp {
     }
     /// RRP: the joint where the circle of radius `la` about `a` crosses the guide, its rates
     /// from x = g + t·e with |x − a|² = la².
+    #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
     fn solve(&self, prog: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let Rrp {
             a,

@@ -102,6 +102,7 @@ impl GroupKind for Rrr {
     }
     /// RRR: the joint where the circles of radius `la` about `a` and `lb` about `b` cross
     /// (law of cosines), its rates from |x − a|² = la², |x − b|² = lb².
+    #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
     fn solve(&self, prog: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let Rrr {
             a,

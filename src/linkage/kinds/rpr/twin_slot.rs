@@ -48,7 +48,9 @@ fn third_derivative(prog: &Program, pose: &Pose, k: usize) -> Option<DVec2> {
 }
 
 /// The slot of an RPR group without offset at pin `a`, pivot `c`, `w` = a − c; `prev`:
-/// the previous slot direction (continuity).
+/// the previous slot direction (continuity). Inlined into the kind's solve, the kernel's
+/// inner loop, as the rest of it (see `PDyad::solve`).
+#[inline(always)]
 pub(super) fn limit(
     prog: &Program,
     pose: &Pose,
