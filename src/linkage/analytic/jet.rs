@@ -6,25 +6,25 @@ use crate::geom::DVec2;
 
 /// A point with its first and second derivatives.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub(super) struct Jet {
-    pub(super) p: DVec2,
-    pub(super) d: DVec2,
-    pub(super) dd: DVec2,
+pub(in crate::linkage) struct Jet {
+    pub(in crate::linkage) p: DVec2,
+    pub(in crate::linkage) d: DVec2,
+    pub(in crate::linkage) dd: DVec2,
 }
 
 /// An angle with its first and second derivatives, and its unit vector `e` = (cos a, sin a)
 /// (kept alongside so that no angle is turned back into a vector by sin and cos).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub(super) struct AngleJet {
-    pub(super) d: f64,
-    pub(super) dd: f64,
-    pub(super) e: DVec2,
+pub(in crate::linkage) struct AngleJet {
+    pub(in crate::linkage) d: f64,
+    pub(in crate::linkage) dd: f64,
+    pub(in crate::linkage) e: DVec2,
 }
 
 impl AngleJet {
     /// The angle `a` with its rates, its unit vector from sin and cos.
     #[inline]
-    pub(super) fn at(a: f64, d: f64, dd: f64) -> Self {
+    pub(in crate::linkage) fn at(a: f64, d: f64, dd: f64) -> Self {
         Self {
             d,
             dd,
@@ -34,7 +34,7 @@ impl AngleJet {
 
     /// Turned by the constant angle `by`.
     #[inline]
-    pub(super) fn turned(self, by: f64) -> Self {
+    pub(in crate::linkage) fn turned(self, by: f64) -> Self {
         if by == 0.0 {
             return self;
         }
@@ -48,33 +48,33 @@ impl AngleJet {
 /// A line with its derivatives: point `g`, unit direction `e` (both as jets), and the
 /// direction's angle `t`.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct LineJet {
-    pub(super) g: Jet,
-    pub(super) e: Jet,
-    pub(super) t: AngleJet,
+pub(in crate::linkage) struct LineJet {
+    pub(in crate::linkage) g: Jet,
+    pub(in crate::linkage) e: Jet,
+    pub(in crate::linkage) t: AngleJet,
 }
 
 /// Relative slack with which a tangency survives rounding (a circle pair whose centre
 /// distance misses r₁ ± r₂ by 1e-12 of the radii touches).
-pub(super) const TANGENT_REL: f64 = 1e-12;
+pub(in crate::linkage) const TANGENT_REL: f64 = 1e-12;
 
 #[inline]
-pub(super) fn cross(a: DVec2, b: DVec2) -> f64 {
+pub(in crate::linkage) fn cross(a: DVec2, b: DVec2) -> f64 {
     a.perp_dot(b)
 }
 
 /// The 2×2 system `[r0; r1] x = rhs`, checked once and solved for several right-hand sides.
 #[derive(Clone, Copy)]
-pub(super) struct Rows {
-    pub(super) r0: DVec2,
-    pub(super) r1: DVec2,
-    pub(super) det: f64,
+pub(in crate::linkage) struct Rows {
+    pub(in crate::linkage) r0: DVec2,
+    pub(in crate::linkage) r1: DVec2,
+    pub(in crate::linkage) det: f64,
 }
 
 impl Rows {
     /// `None` when singular (a toggle position): |det| ≤ 1e-14·|r0|·|r1|.
     #[inline]
-    pub(super) fn new(r0: DVec2, r1: DVec2) -> Option<Self> {
+    pub(in crate::linkage) fn new(r0: DVec2, r1: DVec2) -> Option<Self> {
         let det = cross(r0, r1);
         let scale = r0.length() * r1.length();
         if scale == 0.0 || det.abs() <= 1e-14 * scale {
@@ -85,7 +85,7 @@ impl Rows {
 
     /// The solution for `rhs`.
     #[inline]
-    pub(super) fn solve(&self, rhs: DVec2) -> DVec2 {
+    pub(in crate::linkage) fn solve(&self, rhs: DVec2) -> DVec2 {
         let Self { r0, r1, det } = *self;
         DVec2::new(rhs.x * r1.y - rhs.y * r0.y, r0.x * rhs.y - r1.x * rhs.x) / det
     }
@@ -93,7 +93,7 @@ impl Rows {
 
 /// Angle of a vector jet with its rates; its unit vector is the vector over its length.
 #[inline]
-pub(super) fn heading(v: Jet) -> AngleJet {
+pub(in crate::linkage) fn heading(v: Jet) -> AngleJet {
     let q = v.p.length_squared();
     let inv = 1.0 / q;
     let d = cross(v.p, v.d) * inv;
@@ -107,7 +107,7 @@ pub(super) fn heading(v: Jet) -> AngleJet {
 
 /// The unit vector at an angle jet, as a jet.
 #[inline]
-pub(super) fn unit(t: AngleJet) -> Jet {
+pub(in crate::linkage) fn unit(t: AngleJet) -> Jet {
     let e = t.e;
     let n = e.perp();
     Jet {
@@ -118,7 +118,7 @@ pub(super) fn unit(t: AngleJet) -> Jet {
 }
 
 #[inline]
-pub(super) fn sub(a: Jet, b: Jet) -> Jet {
+pub(in crate::linkage) fn sub(a: Jet, b: Jet) -> Jet {
     Jet {
         p: a.p - b.p,
         d: a.d - b.d,
@@ -128,7 +128,7 @@ pub(super) fn sub(a: Jet, b: Jet) -> Jet {
 
 /// A point fixed in a link frame: origin + R(θ)·local.
 #[inline]
-pub(super) fn carried(o: Jet, t: AngleJet, local: DVec2) -> Jet {
+pub(in crate::linkage) fn carried(o: Jet, t: AngleJet, local: DVec2) -> Jet {
     let r = t.e.rotate(local);
     Jet {
         p: o.p + r,
@@ -138,7 +138,7 @@ pub(super) fn carried(o: Jet, t: AngleJet, local: DVec2) -> Jet {
 }
 
 /// Intersection of two moving lines with its rates and the sine of their crossing angle.
-pub(super) fn meet(l1: LineJet, l2: LineJet) -> Option<(Jet, f64)> {
+pub(in crate::linkage) fn meet(l1: LineJet, l2: LineJet) -> Option<(Jet, f64)> {
     let det = cross(l1.e.p, l2.e.p);
     if det.abs() <= 1e-12 {
         return None;

@@ -1,15 +1,20 @@
 //! The Assur group kinds, one file each (`rrr`, `rrp`, `rpr`, `prp`, `rpp`), behind one
 //! trait, [`GroupKind`]: what the compiled program asks of a group — the point it creates,
 //! its guides and frame directions, the links a point lies on, the points it is given, its
-//! pairs for the force analysis, its pivots on the frame — and its words in the scene
-//! ([`Words`]: the kind's number, its letters, the scene keys of its table). A kind's data
-//! (the indices and lengths of its compiled group) is its own struct; [`PDyad`] holds one
-//! of them and dispatches to it by one `match` ([`PDyad::group`]).
+//! pairs for the force analysis, its pivots on the frame, its construction by compass, its
+//! drawing, its twin's closed-form solve and its steps on the velocity and acceleration
+//! plans — and its words in the scene ([`Words`]: the kind's number, its letters, the scene
+//! keys of its table). A kind's data (the indices and lengths of its compiled group) is its
+//! own struct; [`PDyad`] holds one of them and dispatches to it by a `match`
+//! ([`PDyad::group`]; the twin's solve by [`PDyad::solve`], inlined into its run).
 //!
-//! The construction by compass (`construction.rs`), the twin's solve (`analytic/`), the
-//! plans' steps (`plans/dyads.rs`), the drawing (`positions_draw.rs`) and the validation of
-//! the scene's table (`scene/groups.rs`) still match on the kinds in their own files: the
-//! construction and the twin stay separate routes (DESIGN §1), each deciding by itself.
+//! The construction, the twin and the plans are separate routes in one file (DESIGN §1):
+//! each decides by itself from the program, sharing primitives only (the recorder, the
+//! jets, the plan builder); none calls another. RPR, whose pin may pass through its pivot,
+//! has a room beside its file (`rpr/`): each route's answer to that case is a file.
+//! What still matches on the kind elsewhere: the model's `Dyad` and its readers (the
+//! compilation in `program.rs`, the scene's validation, the structure, the data table, the
+//! note) and the force analysis (`GroupPairs`).
 
 mod prp;
 mod rpp;
@@ -23,9 +28,11 @@ pub(in crate::linkage) use rpr::Rpr;
 pub(in crate::linkage) use rrp::Rrp;
 pub(in crate::linkage) use rrr::Rrr;
 
+use super::analytic::{State, Unassembled};
 use super::construction::{Built, Frames};
 use super::groups::GroupPairs;
 use super::model::DyadKind;
+use super::plans::Builder;
 use super::positions_draw::Pen;
 use super::program::Program;
 use super::program::{PDir, PGuide};
@@ -43,6 +50,13 @@ pub(crate) struct Words {
     /// The keys of its `[[mechanism.group]]` table besides `kind`.
     pub keys: &'static [&'static str],
 }
+
+/// What a kind's twin solve gives: its group solved into the state, or why it cannot be
+/// assembled at this crank angle.
+pub(in crate::linkage) type Solved = Result<(), Unassembled>;
+
+/// What a kind's plan steps give: its group drawn on the plan, or the step that failed.
+pub(in crate::linkage) type Planned = Result<(), ConstructionError>;
 
 /// What a compiled Assur group of one kind answers. Links i and j are the group's, in its
 /// order; points are program indices.
@@ -90,6 +104,18 @@ pub(in crate::linkage) trait GroupKind {
     /// Draw its links `[i, j]` at the constructed position `b` with `pen` (a link's number
     /// at its anchor, its joints to be drawn).
     fn draw(&self, pen: &mut Pen<'_>, prog: &Program, b: &Built, links: [u32; 2]);
+    /// Solve it in closed form at the position held by `st` (its group `st.group`), its
+    /// links `[i, j]`: its joint (RPR: its slide line) and its links' frames with their
+    /// first and second derivatives with respect to φ₁. The analytic twin's own route: it
+    /// shares primitives with [`GroupKind::construct`] but no decision, and neither calls
+    /// the other (DESIGN §1). The twin's run calls it through [`PDyad::solve`], not through
+    /// `dyn GroupKind`, and a kind marks it `#[inline(always)]`: it is the analytic kernel's
+    /// inner loop.
+    fn solve(&self, prog: &Program, st: &mut State<'_>, links: [usize; 2]) -> Solved;
+    /// Draw its two vector equations on the plan `bl` (steps named after `step`, its links
+    /// `[i, j]`): the image of its joint (RPR, RPP: of the slider's coincident point), its
+    /// links' rates and its relative motions.
+    fn plan(&self, bl: &mut Builder<'_>, step: &str, links: [usize; 2]) -> Planned;
     /// The guide of the slider whose joint is `k`, when `k` is a piston (RRP's joint).
     fn piston(&self, _k: usize) -> Option<PGuide> {
         None
@@ -122,7 +148,8 @@ pub(in crate::linkage) enum PDyad {
 }
 
 impl PDyad {
-    /// The group behind the trait: the one `match` a new kind adds an arm to.
+    /// The group behind the trait: a new kind adds an arm here, in [`PDyad::group_mut`] and
+    /// in [`PDyad::solve`].
     pub(in crate::linkage) fn group(&self) -> &dyn GroupKind {
         match self {
             PDyad::Rrr(g) => g,
@@ -130,6 +157,28 @@ impl PDyad {
             PDyad::Rpr(g) => g,
             PDyad::Prp(g) => g,
             PDyad::Rpp(g) => g,
+        }
+    }
+
+    /// Solve the group by its kind's [`GroupKind::solve`], dispatched by the variant rather
+    /// than through [`PDyad::group`]'s `&dyn GroupKind`: the twin's run over the program is
+    /// the analytic kernel's inner loop, and a solve called through the trait object stays a
+    /// call of its own (its state passed through memory, its helpers no longer inlined)
+    /// where, inlined, it is one function with the run, as fast as the run was when it
+    /// matched on the kinds itself.
+    #[inline(always)]
+    pub(in crate::linkage) fn solve(
+        &self,
+        prog: &Program,
+        st: &mut State<'_>,
+        links: [usize; 2],
+    ) -> Solved {
+        match self {
+            PDyad::Rrr(g) => g.solve(prog, st, links),
+            PDyad::Rrp(g) => g.solve(prog, st, links),
+            PDyad::Rpr(g) => g.solve(prog, st, links),
+            PDyad::Prp(g) => g.solve(prog, st, links),
+            PDyad::Rpp(g) => g.solve(prog, st, links),
         }
     }
 
@@ -189,12 +238,14 @@ impl DyadKind {
 
 #[cfg(test)]
 mod tests {
-    use super::{GroupKind, PDyad, Rpr, Rrr, Words};
+    use super::{GroupKind, PDyad, Planned, Rpr, Rrr, Solved, Words};
     use crate::construct::{ConstructionError, Context, Drafting, Item, Pick, Recorder, Role};
     use crate::geom::DVec2;
+    use crate::linkage::analytic::State;
     use crate::linkage::construction::{heading, pick, Built, Frames};
     use crate::linkage::groups::GroupPairs;
     use crate::linkage::model::{Branch, DyadKind};
+    use crate::linkage::plans::Builder;
     use crate::linkage::positions_draw::Pen;
     use crate::linkage::program::Program;
     use crate::scale::{Quantity, Scale};
@@ -246,11 +297,13 @@ mod tests {
 
     /// A toy kind, written in test code as a new kind is written in its file: two links
     /// pinned at the known `a` and `b` and jointed at the new point, whose compass arcs the
-    /// toy sets with its own radii. Its struct and its `GroupKind` are all of its behaviour;
-    /// registering it as a kind of the scene also takes a `DyadKind` variant (its `words`
-    /// arm and its file's `WORDS`), a `PDyad` variant (its `group` arm), its `GroupPairs`
-    /// and force method (`forces/twin.rs`, `forces/polygons/`), its twin's solve
-    /// (`analytic/`), its plan steps (`plans/dyads.rs`) and its table in the scene
+    /// toy sets with its own radii. Its struct and its `GroupKind` are all of its behaviour
+    /// (its construction and drawing its own; its twin's solve and its plan steps borrowed
+    /// from the RRR group of the same radii, since the toy is one); registering it as a
+    /// kind of the scene also takes a `DyadKind` variant (its `words` arm and its file's
+    /// `WORDS`), a `PDyad` variant (its `group`, `group_mut` and `solve` arms), a model
+    /// `Dyad` variant with its compilation (`program.rs`), its `GroupPairs` and force
+    /// method (`forces/twin.rs`, `forces/polygons/`) and its table in the scene
     /// (`scene/groups.rs`).
     struct Toy {
         a: usize,
@@ -309,6 +362,26 @@ mod tests {
             pen.link(i, b.p[self.a], b.p[self.joint]);
             pen.link(j, b.p[self.b], b.p[self.joint]);
             pen.joints.extend([self.a, self.b, self.joint]);
+        }
+        fn solve(&self, prog: &Program, st: &mut State<'_>, links: [usize; 2]) -> Solved {
+            self.as_rrr().solve(prog, st, links)
+        }
+        fn plan(&self, bl: &mut Builder<'_>, step: &str, links: [usize; 2]) -> Planned {
+            self.as_rrr().plan(bl, step, links)
+        }
+    }
+
+    impl Toy {
+        /// The RRR group of the toy's radii.
+        fn as_rrr(&self) -> Rrr {
+            Rrr {
+                a: self.a,
+                la: self.radii[0],
+                b: self.b,
+                lb: self.radii[1],
+                joint: self.joint,
+                branch: Branch::Left,
+            }
         }
     }
 

@@ -1,12 +1,15 @@
 //! Kind 4, PRP (ПВП): link i slides along one guide, link j along another, the two jointed
 //! at the new point `joint`, where the guides meet.
 
-use super::{guide_uses, GroupKind, Words};
+use super::{guide_uses, GroupKind, Planned, Solved, Words};
 use crate::construct::{ConstructionError, Recorder};
 use crate::geom::DVec2;
+use crate::linkage::analytic::jet::meet;
+use crate::linkage::analytic::State;
 use crate::linkage::construction::{Built, Frames};
 use crate::linkage::groups::GroupPairs;
 use crate::linkage::model::DyadKind;
+use crate::linkage::plans::{plain, Builder, PlanKind};
 use crate::linkage::positions_draw::Pen;
 use crate::linkage::program::PGuide;
 use crate::linkage::program::Program;
@@ -87,5 +90,49 @@ impl GroupKind for Prp {
             gj: self.gj.carrier,
             joint: self.joint,
         }
+    }
+    /// PRP: the joint where the two guides meet, its rates from the two moving lines.
+    #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
+    fn solve(&self, _: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
+        let (l1, l2) = (st.guide(&self.gi), st.guide(&self.gj));
+        let (x, s) = meet(l1, l2)
+            .ok_or_else(|| st.fail(format!("the guides of links {i} and {j} are parallel")))?;
+        st.set(self.joint, x);
+        st.set_link(i, l1.t, self.joint);
+        st.set_link(j, l2.t, self.joint);
+        st.pose.crossing_sin.push(s);
+        Ok(())
+    }
+    /// PRP: the joint's image where the lines ∥ the two guides through the images of their
+    /// coincident points meet.
+    fn plan(&self, bl: &mut Builder<'_>, step: &str, [i, j]: [usize; 2]) -> Planned {
+        let Prp { gi, gj, joint } = *self;
+        let vel = bl.kind == PlanKind::Velocity;
+        let (k1, k2) = (gi.carrier, gj.carrier);
+        let (e1, e2) = (bl.dir(&gi.dir), bl.dir(&gj.dir));
+        let n1 = format!("{}{k1}", plain(bl.name(joint)));
+        let n2 = format!("{}{k2}", plain(bl.name(joint)));
+        let at = bl.b.p[joint];
+        let (j1, j2) = (bl.image_on(k1, at, &n1), bl.image_on(k2, at, &n2));
+        let (s1, s2) = if vel {
+            (j1, j2)
+        } else {
+            let vj = bl.vel_image(joint);
+            let (c1, c2) = (bl.vel_coincident(&n1), bl.vel_coincident(&n2));
+            (bl.coriolis(k1, c1, vj, j1), bl.coriolis(k2, c2, vj, j2))
+        };
+        let (x, cr) = bl.meet(
+            &format!("{step}: image of {}", bl.name(joint)),
+            ("∥ guide i", s1, e1),
+            ("∥ guide j", s2, e2),
+        )?;
+        bl.set_image(joint, x, &[]);
+        bl.coincident.push((n1, j1));
+        bl.coincident.push((n2, j2));
+        let (r1, r2) = (bl.rate(k1), bl.rate(k2));
+        bl.finish_link(i, &[(joint, x)], r1);
+        bl.finish_link(j, &[(joint, x)], r2);
+        let _ = cr;
+        Ok(())
     }
 }

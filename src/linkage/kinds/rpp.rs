@@ -2,12 +2,15 @@
 //! slide direction; link j translates along a guide; the new point `joint` of link j is where
 //! the slide line through `a` meets the guide.
 
-use super::{dir_uses, guide_uses, GroupKind, Words};
+use super::{dir_uses, guide_uses, GroupKind, Planned, Solved, Words};
 use crate::construct::{ConstructionError, Item, Recorder, Role};
 use crate::geom::{DVec2, Line, Segment};
+use crate::linkage::analytic::jet::{meet, unit, LineJet};
+use crate::linkage::analytic::State;
 use crate::linkage::construction::{other, Built, Frames};
 use crate::linkage::groups::GroupPairs;
 use crate::linkage::model::DyadKind;
+use crate::linkage::plans::{plain, Builder, PlanKind};
 use crate::linkage::positions_draw::Pen;
 use crate::linkage::program::Program;
 use crate::linkage::program::{PDir, PGuide};
@@ -104,5 +107,77 @@ impl GroupKind for Rpp {
             guide: self.guide.carrier,
             joint: self.joint,
         }
+    }
+    /// RPP: the joint where the slide line through `a` meets link j's guide, its rates from
+    /// the two moving lines.
+    #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
+    fn solve(&self, _: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
+        let Rpp {
+            a,
+            slide,
+            guide,
+            joint,
+        } = *self;
+        let ts = st.dir(&slide);
+        let l1 = LineJet {
+            g: st.jet(a),
+            e: unit(ts),
+            t: ts,
+        };
+        let l2 = st.guide(&guide);
+        let (x, s) = meet(l1, l2).ok_or_else(|| {
+            st.fail(format!(
+                "the slide of link {i} is parallel to the guide of link {j}"
+            ))
+        })?;
+        st.set(joint, x);
+        st.set_link(i, ts, a);
+        st.set_link(j, l2.t, joint);
+        st.pose.crossing_sin.push(s);
+        Ok(())
+    }
+    /// RPP: the image of link j's point coincident with `a`, where the line ∥ the slide
+    /// through the image of `a` meets the line ∥ the guide through the image of the guide's
+    /// coincident point; the joint's image follows on link j.
+    fn plan(&self, bl: &mut Builder<'_>, step: &str, [i, j]: [usize; 2]) -> Planned {
+        let Rpp {
+            a,
+            slide,
+            guide,
+            joint,
+        } = *self;
+        let vel = bl.kind == PlanKind::Velocity;
+        let k = guide.carrier;
+        let (es, eg) = (bl.dir(&slide), bl.dir(&guide.dir));
+        let ai = bl.image(a);
+        let rk0 = bl.rate(k);
+        bl.links.rate[i] = Some(rk0);
+        let an = format!("{}{j}", plain(bl.name(a)));
+        let ak_name = format!("{}{k}", plain(bl.name(a)));
+        let ak = bl.image_on(k, bl.b.p[a], &ak_name);
+        bl.coincident.push((ak_name.clone(), ak));
+        let (s1, s2) = if vel {
+            (ai, ak)
+        } else {
+            let va = bl.vel_coincident(&an);
+            let (v_a, v_k) = (bl.vel_image(a), bl.vel_coincident(&ak_name));
+            (bl.coriolis(i, v_a, va, ai), bl.coriolis(k, v_k, va, ak))
+        };
+        let (x, cr) = bl.meet(
+            &format!("{step}: image of {an}"),
+            ("∥ slide", s1, es),
+            ("∥ guide", s2, eg),
+        )?;
+        bl.coincident_image(&an, a, j, x);
+        let rk = bl.rate(k);
+        bl.links.add(j, bl.b.p[a], x);
+        bl.links.rate[j] = Some(rk);
+        let jx = bl.image_on(j, bl.b.p[joint], bl.prog.names[joint].as_str());
+        bl.set_image(joint, jx, &[]);
+        bl.finish_link(j, &[(joint, jx)], rk);
+        bl.finish_link(i, &[(a, ai)], rk);
+        let owner_a = bl.prog.owner(a);
+        bl.relative((a, j), x, (a, owner_a), ai, cr);
+        Ok(())
     }
 }

@@ -1,16 +1,29 @@
 //! Kind 3, RPR (ВПВ): the block i pivoted at the known point `a` slides along link j, which
 //! turns about the known pivot `c`; j's slide line passes `offset` m to the left of `c`. It
-//! creates no point: its slide line is found (here, with the slot's tangent when the pin stands on the
-//! pivot).
+//! creates no point: its slide line is found. Without offset the pin may pass through the
+//! pivot, where the two points no longer fix the slot: each route meets that case by itself —
+//! the construction with the tangent to the pin's path (`slide`), the twin with the limit of
+//! the slot's direction and rates (`twin_slot`), the plans with the limit of the slotted
+//! link's rate (`plan_slot`).
 
-use super::{GroupKind, Words};
-use crate::construct::{Compass, ConstructionError, Item, Pick, Recorder, Role};
-use crate::geom::{DVec2, Segment};
-use crate::linkage::construction::{heading, Built, Frames};
+mod plan_slot;
+mod slide;
+mod twin_slot;
+
+use super::{GroupKind, Planned, Solved, Words};
+use crate::construct::{ConstructionError, Recorder};
+use crate::geom::DVec2;
+use crate::linkage::analytic::jet::{heading, sub, AngleJet};
+use crate::linkage::analytic::State;
+use crate::linkage::construction::{Built, Frames};
 use crate::linkage::groups::GroupPairs;
 use crate::linkage::model::DyadKind;
+use crate::linkage::plans::{plain, Builder, PlanKind};
 use crate::linkage::positions_draw::{link_reach, Pen};
 use crate::linkage::program::Program;
+use crate::linkage::{NearPivot, NEAR_PIVOT_RATIO};
+use slide::slide_line;
+use twin_slot::Slot;
 
 /// The kind's words.
 pub(super) const WORDS: Words = Words {
@@ -80,116 +93,123 @@ impl GroupKind for Rpr {
             c: self.c,
         }
     }
-}
-
-/// The slide line of an RPR group (pin `a`, pivot `c`, `offset` m), its direction: the
-/// tangent to the path of `a` when the pin stands on the pivot (`prev`: the previous
-/// position's slide), else the line through the two points, or with an offset the
-/// tangent from `a` to the offset circle of `c`, its foot T on the Thales circle on ca.
-fn slide_line(
-    prog: &Program,
-    rec: &mut Recorder,
-    s: &str,
-    p: &[DVec2],
-    (a, c): (usize, usize),
-    offset: f64,
-    prev: Option<f64>,
-) -> Result<f64, ConstructionError> {
-    if offset == 0.0
-        && p[a].distance(p[c]) <= rec.tolerances().coincident
-        && path_through_pivot(prog, a, c, p)
-    {
-        return slot_tangent(prog, rec, s, (a, c), p, prev);
+    /// RPR: the slide line through the pin `a` at `offset` from the pivot `c` (without
+    /// offset at the pivot: the slot's limit), with its rates.
+    #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
+    fn solve(&self, prog: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
+        let Rpr { a, c, offset } = *self;
+        let w = sub(st.jet(a), st.jet(c));
+        if offset == 0.0 {
+            let prev = st.continuity.then(|| st.pose.dir[j]);
+            let th = match twin_slot::limit(prog, st.pose, (a, c), w, prev) {
+                Slot::Direct => None,
+                Slot::Limit(th) => Some(th),
+                Slot::Undetermined { e, detail } => {
+                    let e = e.ok_or_else(|| st.fail(detail.clone()))?;
+                    st.toggle(detail);
+                    Some(AngleJet { d: 0.0, dd: 0.0, e })
+                }
+            };
+            if let Some(th) = th {
+                st.set_link(i, th, a);
+                st.set_link(j, th, c);
+                st.pose.crossing_sin.push(1.0);
+                return Ok(());
+            }
+        }
+        let d = w.p.length();
+        if d < offset.abs() || d == 0.0 {
+            return Err(st.fail(format!(
+                "{} is {d:.6} m from {}, less than the offset {} m of the slide line",
+                prog.names[a],
+                prog.names[c],
+                offset.abs()
+            )));
+        }
+        let speed = w.d.length();
+        if offset == 0.0 && speed > NEAR_PIVOT_RATIO * d {
+            st.pose.near_pivot.push(NearPivot {
+                group: st.group,
+                link: j,
+                pin: a,
+                pivot: c,
+                distance: d,
+                speed,
+            });
+        }
+        let beta = heading(w);
+        // γ = asin(u), u = −offset/d.
+        let dd1 = w.p.dot(w.d) / d;
+        let dd2 = (w.d.length_squared() + w.p.dot(w.dd) - dd1 * dd1) / d;
+        let u = -offset / d;
+        let du = offset * dd1 / (d * d);
+        let ddu = offset * (dd2 / (d * d) - 2.0 * dd1 * dd1 / (d * d * d));
+        let k = 1.0 - u * u;
+        if k <= 1e-28 {
+            return Err(st.fail(format!(
+                "{} lies on the offset circle of {}: the slide line is not determined",
+                prog.names[a], prog.names[c]
+            )));
+        }
+        // sin γ = u, cos γ = √k.
+        let sk = k.sqrt();
+        let gamma = AngleJet {
+            d: du / sk,
+            dd: ddu / sk + u * du * du / (k * sk),
+            e: DVec2::new(sk, u),
+        };
+        let th = AngleJet {
+            d: beta.d + gamma.d,
+            dd: beta.dd + gamma.dd,
+            e: gamma.e.rotate(beta.e),
+        };
+        st.set_link(i, th, a);
+        st.set_link(j, th, c);
+        st.pose.crossing_sin.push(1.0);
+        Ok(())
     }
-    if offset == 0.0 {
-        let line = rec.line_through(
-            &format!("{s}: slide line"),
-            (&prog.names[c], p[c]),
-            (&prog.names[a], p[a]),
+    /// RPR: the image of the slider's point coincident with the pin `a`, where the line ⊥ the
+    /// slotted link through the image of the pivot `c` meets the line ∥ the slide through the
+    /// image of `a` (at the pivot without offset: the slotted link's limit rate).
+    fn plan(&self, bl: &mut Builder<'_>, step: &str, [i, j]: [usize; 2]) -> Planned {
+        let Rpr { a, c, offset } = *self;
+        let vel = bl.kind == PlanKind::Velocity;
+        let rc = bl.r(c, a);
+        let (ai, ci) = (bl.image(a), bl.image(c));
+        let e = DVec2::from_angle(bl.b.angle[j]);
+        let an = format!("{}{j}", plain(bl.name(a)));
+        let limit = if offset == 0.0 {
+            plan_slot::limit(bl, step, (a, c), j)?
+        } else {
+            None
+        };
+        // At the pivot the radius c → a vanishes: the slotted link's line stands for it.
+        let across = if limit.is_some() { e.perp() } else { rc.perp() };
+        let n = bl.turning_base("slotted link", j, ci, rc);
+        let kk = if vel {
+            ai
+        } else {
+            bl.coriolis(i, bl.vel_image(a), bl.vel_coincident(&an), ai)
+        };
+        let (x, cr) = bl.meet(
+            &format!("{step}: image of {an}"),
+            ("⊥ to the slotted link", n, across),
+            ("∥ slide", kk, e),
         )?;
-        return Ok(line.angle());
+        bl.coincident_image(&an, a, j, x);
+        let rj = match limit {
+            Some(rate) => rate,
+            None => bl.rate_from(rc, n, x),
+        };
+        bl.finish_link(j, &[(c, ci)], rj);
+        // Beside the pivot the image of the coincident point is no base for the
+        // similarity: further points of the link follow from the rate.
+        if limit.is_none() {
+            bl.links.add(j, bl.b.p[a], x);
+        }
+        bl.finish_link(i, &[(a, ai)], rj);
+        let owner_a = bl.prog.owner(a);
+        bl.relative((a, j), x, (a, owner_a), ai, cr);
+        Ok(())
     }
-    // Tangent from a to the offset circle of c: Thales circle on ca.
-    let mid = (p[a] + p[c]) * 0.5;
-    let thales = Compass {
-        name: "the midpoint of the slide",
-        center: mid,
-        radius: p[a].distance(p[c]) * 0.5,
-    };
-    let off = prog.compass(p, c, offset.abs() / rec.scale().value());
-    let side = if offset > 0.0 {
-        Pick::Right
-    } else {
-        Pick::Left
-    };
-    let (t, _, _) = rec.meet_circles(&format!("{s}: foot of the slide line"), thales, off, side)?;
-    Ok(rec
-        .line_through(
-            &format!("{s}: slide line"),
-            ("T", t),
-            (&prog.names[a], p[a]),
-        )?
-        .angle())
-}
-
-/// Whether the path of the pin `a` passes through the pivot `c` (within the rounding of
-/// the drawing's coordinates), so that the slot at their coincidence is the tangent to
-/// that path: for a crank pin about a fixed pivot, the crank circle through `a` meets `c`.
-/// A pin whose path misses the pivot, however closely, fixes the slot as the line through
-/// the two points (a true, ill-conditioned direction). Other pins: assumed (the tangent is
-/// then refused by [`slot_tangent`]).
-fn path_through_pivot(prog: &Program, a: usize, c: usize, p: &[DVec2]) -> bool {
-    if !prog.on_frame_or_crank(a) || c >= prog.fixed.len() {
-        return true;
-    }
-    let o = p[prog.centre];
-    let (ra, rc) = (p[a].distance(o), p[c].distance(o));
-    let rounding = 8.0 * f64::EPSILON * (p[a].length() + p[c].length() + o.length() + ra);
-    (ra - rc).abs() <= rounding
-}
-
-/// The slide line of an RPR group without offset when the pin `a` stands on the pivot
-/// `c`: the two points no longer fix it, its limit is the tangent to the path of `a`
-/// (for a crank pin: perpendicular to the crank, in the sense of increasing φ₁, or the
-/// one nearest to the previous position's slide `prev`). Refused for a pin whose path's
-/// tangent the drawing does not give (a point not on the crank, or a moving pivot).
-fn slot_tangent(
-    prog: &Program,
-    rec: &mut Recorder,
-    s: &str,
-    (a, c): (usize, usize),
-    p: &[DVec2],
-    prev: Option<f64>,
-) -> Result<f64, ConstructionError> {
-    if !prog.on_frame_or_crank(a) || c >= prog.fixed.len() {
-        return Err(ConstructionError::Other {
-            step: format!("{s}: slide line"),
-            message: format!(
-                "the pin {} stands on the pivot {} (|{}{}| = {:.3e} mm ≤ {:.3e} mm): the slide line is the tangent to the path of {}, which the drawing gives only for a point of the crank about a fixed pivot",
-                prog.names[a],
-                prog.names[c],
-                prog.names[c],
-                prog.names[a],
-                p[a].distance(p[c]),
-                rec.tolerances().coincident,
-                prog.names[a]
-            ),
-        });
-    }
-    let radius = p[a] - p[prog.centre];
-    let mut t = radius.perp().normalize_or(DVec2::X);
-    if prev.is_some_and(|q| DVec2::from_angle(q).dot(t) < 0.0) {
-        t = -t;
-    }
-    let reach = radius.length().max(1.0);
-    rec.draw(
-        format!(
-            "{s}: slide line, tangent to the path of {} at {}",
-            prog.names[a], prog.names[c]
-        ),
-        Item::Segment(Segment::new(p[c] - t * reach, p[c] + t * reach)),
-        Role::Construction,
-        &[],
-    );
-    Ok(heading(t))
 }

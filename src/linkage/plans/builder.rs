@@ -10,59 +10,64 @@ use crate::linkage::construction::Built;
 use crate::linkage::program::{PDir, Program};
 
 /// The values one plan needs from the velocity plan (for the acceleration plan).
-pub(super) struct Known<'a> {
-    pub(super) vel: Option<&'a KinPlan>,
-    pub(super) mu_v: f64,
+pub(in crate::linkage) struct Known<'a> {
+    pub(in crate::linkage) vel: Option<&'a KinPlan>,
+    pub(in crate::linkage) mu_v: f64,
 }
 
 /// Per-link knowledge while a plan is built: points of the link (mechanism mm) with images.
-pub(super) struct Links {
-    pub(super) pts: Vec<Vec<(DVec2, DVec2)>>,
-    pub(super) rate: Vec<Option<f64>>,
+pub(in crate::linkage) struct Links {
+    pub(in crate::linkage) pts: Vec<Vec<(DVec2, DVec2)>>,
+    pub(in crate::linkage) rate: Vec<Option<f64>>,
 }
 
 impl Links {
-    pub(super) fn add(&mut self, link: usize, at: DVec2, img: DVec2) {
+    pub(in crate::linkage) fn add(&mut self, link: usize, at: DVec2, img: DVec2) {
         self.pts[link].push((at, img));
     }
 }
 
 /// Everything the builder carries.
-pub(super) struct Builder<'a> {
-    pub(super) prog: &'a Program,
-    pub(super) b: &'a Built,
-    pub(super) kind: PlanKind,
-    pub(super) rec: Recorder,
-    pub(super) mu_l: f64,
-    pub(super) img: Vec<Option<DVec2>>,
-    pub(super) links: Links,
-    pub(super) readings: Vec<Reading>,
-    pub(super) coincident: Vec<(String, DVec2)>,
-    pub(super) known: Known<'a>,
+pub(in crate::linkage) struct Builder<'a> {
+    pub(in crate::linkage) prog: &'a Program,
+    pub(in crate::linkage) b: &'a Built,
+    pub(in crate::linkage) kind: PlanKind,
+    pub(in crate::linkage) rec: Recorder,
+    pub(in crate::linkage) mu_l: f64,
+    pub(in crate::linkage) img: Vec<Option<DVec2>>,
+    pub(in crate::linkage) links: Links,
+    pub(in crate::linkage) readings: Vec<Reading>,
+    pub(in crate::linkage) coincident: Vec<(String, DVec2)>,
+    pub(in crate::linkage) known: Known<'a>,
     /// Crossing angle (radians) of the intersection that fixed each point's image.
-    pub(super) cond: Vec<Option<f64>>,
+    pub(in crate::linkage) cond: Vec<Option<f64>>,
     /// Crank speed ω₁, rad/s, signed counter-clockwise.
-    pub(super) w1: f64,
+    pub(in crate::linkage) w1: f64,
 }
 
 impl<'a> Builder<'a> {
-    pub(super) fn mu(&self) -> f64 {
+    pub(in crate::linkage) fn mu(&self) -> f64 {
         self.rec.scale().value()
     }
     /// Physical vector of a mechanism segment, m.
-    pub(super) fn r(&self, from: usize, to: usize) -> DVec2 {
+    pub(in crate::linkage) fn r(&self, from: usize, to: usize) -> DVec2 {
         (self.b.p[to] - self.b.p[from]) * self.mu_l
     }
-    pub(super) fn name(&self, k: usize) -> &str {
+    pub(in crate::linkage) fn name(&self, k: usize) -> &str {
         &self.prog.names[k]
     }
-    pub(super) fn image(&self, k: usize) -> DVec2 {
+    pub(in crate::linkage) fn image(&self, k: usize) -> DVec2 {
         self.img[k].unwrap_or(DVec2::ZERO)
     }
     /// Draw the vector from the pole to the image of point `k` and label it: a main line,
     /// or a thin one for a secondary point that no group is built on (a centre of mass,
     /// [`Program::is_leaf_point`]), so that the vectors meeting at the pole stay apart.
-    pub(super) fn set_image(&mut self, k: usize, at: DVec2, from: &[crate::construct::StepId]) {
+    pub(in crate::linkage) fn set_image(
+        &mut self,
+        k: usize,
+        at: DVec2,
+        from: &[crate::construct::StepId],
+    ) {
         self.img[k] = Some(at);
         let label = image_label(self.name(k), self.kind);
         let role = if self.prog.is_leaf_point(k) {
@@ -83,7 +88,7 @@ impl<'a> Builder<'a> {
         self.rec.label(id, label, at, toward);
     }
     /// The image of a point of a link at mechanism position `at` (similarity theorem).
-    pub(super) fn image_on(&mut self, link: usize, at: DVec2, name: &str) -> DVec2 {
+    pub(in crate::linkage) fn image_on(&mut self, link: usize, at: DVec2, name: &str) -> DVec2 {
         if link == 0 {
             return DVec2::ZERO;
         }
@@ -128,7 +133,13 @@ impl<'a> Builder<'a> {
         img
     }
     /// A thin direction line through `through` along `dir`, drawn to `to` (and a little beyond).
-    pub(super) fn dir_line(&mut self, note: &str, through: DVec2, dir: DVec2, to: DVec2) {
+    pub(in crate::linkage) fn dir_line(
+        &mut self,
+        note: &str,
+        through: DVec2,
+        dir: DVec2,
+        to: DVec2,
+    ) {
         let u = dir.normalize_or_zero();
         let (t0, t1) = (
             0.0f64.min((to - through).dot(u)),
@@ -145,7 +156,7 @@ impl<'a> Builder<'a> {
         );
     }
     /// Intersect two direction lines; record them; return the point and its crossing angle.
-    pub(super) fn meet(
+    pub(in crate::linkage) fn meet(
         &mut self,
         step: &str,
         a: (&str, DVec2, DVec2),
@@ -159,7 +170,13 @@ impl<'a> Builder<'a> {
         Ok((x, cr))
     }
     /// Lay a known vector (a normal or Coriolis component) from `from`, label its end.
-    pub(super) fn lay(&mut self, note: &str, from: DVec2, v: DVec2, label: &str) -> DVec2 {
+    pub(in crate::linkage) fn lay(
+        &mut self,
+        note: &str,
+        from: DVec2,
+        v: DVec2,
+        label: &str,
+    ) -> DVec2 {
         let to = from + v / self.mu();
         let id = self.rec.draw(
             note.to_string(),
@@ -174,10 +191,10 @@ impl<'a> Builder<'a> {
         to
     }
     /// Read a drawn segment as a physical magnitude.
-    pub(super) fn read(&mut self, from: DVec2, to: DVec2) -> f64 {
+    pub(in crate::linkage) fn read(&mut self, from: DVec2, to: DVec2) -> f64 {
         self.rec.measure(from, to).value
     }
-    pub(super) fn reading(
+    pub(in crate::linkage) fn reading(
         &mut self,
         quantity: String,
         what: Measure,
@@ -193,7 +210,7 @@ impl<'a> Builder<'a> {
     }
     /// The rate of a link from a relative image vector `rel` (plan mm) of a point at radius `r` (m):
     /// ω = r × v / |r|² (velocity plan) or ε from the tangential component (acceleration plan).
-    pub(super) fn rate_from(&mut self, r: DVec2, from: DVec2, to: DVec2) -> f64 {
+    pub(in crate::linkage) fn rate_from(&mut self, r: DVec2, from: DVec2, to: DVec2) -> f64 {
         let v = (to - from) * self.mu();
         let sign = r.perp_dot(v).signum();
         let mag = self.read(from, to);
@@ -205,14 +222,20 @@ impl<'a> Builder<'a> {
     }
     /// The normal component of the acceleration of a point at radius `r` about a centre on a
     /// link turning with the velocity-plan rate `w`: ω²·r toward the centre.
-    pub(super) fn normal(&self, link: usize, r: DVec2) -> DVec2 {
+    pub(in crate::linkage) fn normal(&self, link: usize, r: DVec2) -> DVec2 {
         let w = self.known.vel.map_or(0.0, |v| v.rate[link]);
         -r * (w * w)
     }
     /// Where the line ⊥ to a turning link starts: the image `from` of its known point on the
     /// velocity plan; on the acceleration plan the end `n` of the normal component (radius
     /// `r` from that point) laid from it. The link's rate is read from the same point.
-    pub(super) fn turning_base(&mut self, note: &str, link: usize, from: DVec2, r: DVec2) -> DVec2 {
+    pub(in crate::linkage) fn turning_base(
+        &mut self,
+        note: &str,
+        link: usize,
+        from: DVec2,
+        r: DVec2,
+    ) -> DVec2 {
         match self.kind {
             PlanKind::Velocity => from,
             PlanKind::Acceleration => self.lay(
@@ -225,19 +248,19 @@ impl<'a> Builder<'a> {
     }
 
     /// The relative velocity of two images on the velocity plan, physical.
-    pub(super) fn vel_between(&self, from: DVec2, to: DVec2) -> DVec2 {
+    pub(in crate::linkage) fn vel_between(&self, from: DVec2, to: DVec2) -> DVec2 {
         (to - from) * self.known.mu_v
     }
-    pub(super) fn vel_image(&self, k: usize) -> DVec2 {
+    pub(in crate::linkage) fn vel_image(&self, k: usize) -> DVec2 {
         self.known.vel.map_or(DVec2::ZERO, |v| v.images[k])
     }
-    pub(super) fn vel_coincident(&self, name: &str) -> DVec2 {
+    pub(in crate::linkage) fn vel_coincident(&self, name: &str) -> DVec2 {
         self.known
             .vel
             .and_then(|v| v.coincident.iter().find(|c| c.0 == name).map(|c| c.1))
             .unwrap_or(DVec2::ZERO)
     }
-    pub(super) fn dir(&self, d: &PDir) -> DVec2 {
+    pub(in crate::linkage) fn dir(&self, d: &PDir) -> DVec2 {
         match *d {
             PDir::Fixed(a) => DVec2::from_angle(a),
             PDir::Along { from, to, angle } => {
@@ -245,30 +268,47 @@ impl<'a> Builder<'a> {
             }
         }
     }
-    pub(super) fn rate(&self, link: usize) -> f64 {
+    pub(in crate::linkage) fn rate(&self, link: usize) -> f64 {
         self.links.rate[link].unwrap_or(0.0)
     }
 }
 
-pub(super) fn degenerate(step: &str, what: &str) -> ConstructionError {
+pub(in crate::linkage) fn degenerate(step: &str, what: &str) -> ConstructionError {
     ConstructionError::Other {
         step: step.into(),
         message: format!("the direction of {what} is not defined"),
     }
 }
 
-pub(super) fn complex_mul(a: DVec2, b: DVec2) -> DVec2 {
+pub(in crate::linkage) fn complex_mul(a: DVec2, b: DVec2) -> DVec2 {
     DVec2::new(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x)
 }
 
-pub(super) fn complex_div(a: DVec2, b: DVec2) -> DVec2 {
+pub(in crate::linkage) fn complex_div(a: DVec2, b: DVec2) -> DVec2 {
     let d = b.length_squared();
     DVec2::new(a.x * b.x + a.y * b.y, a.y * b.x - a.x * b.y) / d
 }
 
 impl Builder<'_> {
+    /// The condition `cr` of a group's joint and its motion relative to `a` on link `i`.
+    pub(in crate::linkage) fn joint_relative(
+        &mut self,
+        joint: usize,
+        (a, i): (usize, usize),
+        cr: f64,
+    ) {
+        let (x, ai) = (self.image(joint), self.image(a));
+        self.cond[joint] = Some(cr);
+        self.relative((joint, i), x, (a, i), ai, cr);
+    }
+
     /// Record a link's new known images and its rate.
-    pub(super) fn finish_link(&mut self, link: usize, pts: &[(usize, DVec2)], rate: f64) {
+    pub(in crate::linkage) fn finish_link(
+        &mut self,
+        link: usize,
+        pts: &[(usize, DVec2)],
+        rate: f64,
+    ) {
         for &(k, img) in pts {
             let at = self.b.p[k];
             if !self.links.pts[link]
@@ -282,7 +322,13 @@ impl Builder<'_> {
     }
 
     /// Draw and label the image of the point of `link` under the point `point` (`b₃`).
-    pub(super) fn coincident_image(&mut self, name: &str, point: usize, link: usize, x: DVec2) {
+    pub(in crate::linkage) fn coincident_image(
+        &mut self,
+        name: &str,
+        point: usize,
+        link: usize,
+        x: DVec2,
+    ) {
         let prime = if self.kind == PlanKind::Acceleration {
             "′"
         } else {
@@ -312,7 +358,7 @@ impl Builder<'_> {
     /// The Coriolis component 2ω·v_r of a point moving relative to `link`, v_r read on the
     /// velocity plan from the image `rel_from` to `rel_to`, turned 90° in the sense of ω; laid
     /// from `from`. Returns its end `k` (`from` itself when it vanishes).
-    pub(super) fn coriolis(
+    pub(in crate::linkage) fn coriolis(
         &mut self,
         link: usize,
         rel_from: DVec2,
@@ -331,7 +377,7 @@ impl Builder<'_> {
 
     /// Reading of the velocity (acceleration) of `p` carried by link `p.1` relative to `q`
     /// carried by `q.1`: the plan segment from the image of `q` to the image of `p`.
-    pub(super) fn relative(
+    pub(in crate::linkage) fn relative(
         &mut self,
         p: (usize, usize),
         p_img: DVec2,
@@ -357,7 +403,13 @@ impl Builder<'_> {
         self.cond_reading(quantity, Measure::Relative { p, q }, value, cr);
     }
 
-    pub(super) fn cond_reading(&mut self, quantity: String, what: Measure, value: f64, cr: f64) {
+    pub(in crate::linkage) fn cond_reading(
+        &mut self,
+        quantity: String,
+        what: Measure,
+        value: f64,
+        cr: f64,
+    ) {
         self.reading(quantity, what, value, Some(cr));
     }
 }

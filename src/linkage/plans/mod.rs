@@ -11,9 +11,10 @@
 //! coincident points of the carrying links; RPP: ∥ to the slide and ∥ to the guide.
 //! Acceleration plan (pole `π`): the same equations with the normal components (ends `n`) laid
 //! from the known images along the links and the Coriolis components (end `k`, 2ω·v_r turned
+//! 90° in the sense of ω of the carrying link) laid before the direction lines. Each kind draws
+//! its own equations (`GroupKind::plan`, in its file of `kinds/`) with the builder's steps.
 
 mod builder;
-mod dyads;
 mod names;
 
 use super::construction::Built;
@@ -21,7 +22,8 @@ use super::program::{Op, Program};
 use crate::construct::{ConstructionError, Context, Figure, Recorder};
 use crate::geom::DVec2;
 use crate::scale::Scale;
-use builder::{Builder, Known, Links};
+pub(in crate::linkage) use builder::Builder;
+use builder::{Known, Links};
 pub use names::{image_label, plain};
 
 /// Which plan.
@@ -179,7 +181,15 @@ pub fn kin_plan(
                 bl.set_image(idx, x, &[]);
                 bl.links.add(link as usize, at, x);
             }
-            Op::Dyad { group, links, dyad } => bl.dyad(links, &dyad).map_err(|e| (group, e))?,
+            // One Assur group: the image of its joint (of the slider's coincident point for
+            // RPR, RPP) from its two vector equations, by its kind's own steps.
+            Op::Dyad { group, links, dyad } => {
+                let ij = links.map(|l| l as usize);
+                let step = format!("group ({},{})", ij[0], ij[1]);
+                dyad.group()
+                    .plan(&mut bl, &step, ij)
+                    .map_err(|e| (group, e))?;
+            }
         }
     }
     // Readings: every moving point, every link rate.

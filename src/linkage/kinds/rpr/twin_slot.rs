@@ -19,13 +19,13 @@
 //! 4δ and the neglected term |w‴||s|³. A pin that passes the pivot at a distance m (a crank
 //! 0.01 mm shorter than the centre distance) makes the slot turn at ≈ |w′|/m times the crank's
 //! rate there: the direct formula gives that true, huge value to δ/m relative; the pose
-//! records it as [`NearPivot`](super::NearPivot) (ill-conditioned: a change of m in a length
+//! records it as [`NearPivot`](crate::linkage::NearPivot) (ill-conditioned: a change of m in a length
 //! changes it by ~100 %).
 
-use super::super::program::Program;
-use super::jet::{cross, AngleJet, Jet};
-use super::Pose;
 use crate::geom::DVec2;
+use crate::linkage::analytic::jet::{cross, AngleJet, Jet};
+use crate::linkage::program::Program;
+use crate::linkage::Pose;
 
 /// How the slot line of an RPR group without offset is found.
 pub(super) enum Slot {
@@ -42,75 +42,74 @@ pub(super) enum Slot {
     },
 }
 
-impl Program {
-    /// The third derivative of point `k` with respect to φ₁, when known.
-    fn third_derivative(&self, pose: &Pose, k: usize) -> Option<DVec2> {
-        self.on_frame_or_crank(k).then(|| -pose.dp[k])
-    }
+/// The third derivative of point `k` with respect to φ₁, when known.
+fn third_derivative(prog: &Program, pose: &Pose, k: usize) -> Option<DVec2> {
+    prog.on_frame_or_crank(k).then(|| -pose.dp[k])
+}
 
-    /// The slot of an RPR group without offset at pin `a`, pivot `c`, `w` = a − c; `prev`:
-    /// the previous slot direction (continuity).
-    pub(super) fn slot(
-        &self,
-        pose: &Pose,
-        (a, c): (usize, usize),
-        w: Jet,
-        prev: Option<DVec2>,
-    ) -> Slot {
-        let v2 = w.d.length_squared();
-        let v = v2.sqrt();
-        let hp = w.p.length();
-        // Rounding of w: the magnitudes it is computed from (the points, and |w′| for the
-        // link lengths that carry them) at the machine epsilon.
-        let delta = f64::EPSILON * (pose.p[a].length() + pose.p[c].length() + v);
-        if hp.powi(4) > 2.0 * delta * v * v2 {
-            return Slot::Direct;
-        }
-        let (na, nc) = (&self.names[a], &self.names[c]);
-        let phi = pose.phi.to_degrees();
-        if v == 0.0 {
-            let e = if hp > 0.0 { Some(w.p / hp) } else { prev };
-            return Slot::Undetermined {
+/// The slot of an RPR group without offset at pin `a`, pivot `c`, `w` = a − c; `prev`:
+/// the previous slot direction (continuity). Inlined into the kind's solve, the kernel's
+/// inner loop, as the rest of it (see `PDyad::solve`).
+#[inline(always)]
+pub(super) fn limit(
+    prog: &Program,
+    pose: &Pose,
+    (a, c): (usize, usize),
+    w: Jet,
+    prev: Option<DVec2>,
+) -> Slot {
+    let v2 = w.d.length_squared();
+    let v = v2.sqrt();
+    let hp = w.p.length();
+    // Rounding of w: the magnitudes it is computed from (the points, and |w′| for the
+    // link lengths that carry them) at the machine epsilon.
+    let delta = f64::EPSILON * (pose.p[a].length() + pose.p[c].length() + v);
+    if hp.powi(4) > 2.0 * delta * v * v2 {
+        return Slot::Direct;
+    }
+    let (na, nc) = (&prog.names[a], &prog.names[c]);
+    let phi = pose.phi.to_degrees();
+    if v == 0.0 {
+        let e = if hp > 0.0 { Some(w.p / hp) } else { prev };
+        return Slot::Undetermined {
                 e,
                 detail: format!(
                     "the pin {na} is {hp:.3e} m from the pivot {nc} at φ₁ = {phi:.4}° and does not move relative to it (|d{nc}{na}/dφ₁| = 0): the slot's direction and rates are not determined"
                 ),
             };
+    }
+    // Crank travel since the coincidence, rad.
+    let s = w.p.dot(w.d) / v2;
+    let third = third_derivative(prog, pose, a)
+        .zip(third_derivative(prog, pose, c))
+        .map(|(ta, tc)| ta - tc);
+    // The closest approach to O(s³): beyond the rounding the pin passes the pivot at a
+    // distance and the direct formula holds (true, ill-conditioned values).
+    let miss = (w.p - w.d * s + w.dd * (0.5 * s * s)).length();
+    let reach = third.map_or(w.dd.length() + v, DVec2::length);
+    if miss > 4.0 * delta + reach * s.abs().powi(3) {
+        return Slot::Direct;
+    }
+    // The slot direction to O(s²).
+    let lim = (w.d - w.dd * (0.5 * s)).normalize_or(w.d / v);
+    let sign = if hp > 4.0 * delta {
+        s.signum()
+    } else {
+        match prev {
+            Some(q) if q.dot(lim) < 0.0 => -1.0,
+            _ => 1.0,
         }
-        // Crank travel since the coincidence, rad.
-        let s = w.p.dot(w.d) / v2;
-        let third = self
-            .third_derivative(pose, a)
-            .zip(self.third_derivative(pose, c))
-            .map(|(ta, tc)| ta - tc);
-        // The closest approach to O(s³): beyond the rounding the pin passes the pivot at a
-        // distance and the direct formula holds (true, ill-conditioned values).
-        let miss = (w.p - w.d * s + w.dd * (0.5 * s * s)).length();
-        let reach = third.map_or(w.dd.length() + v, DVec2::length);
-        if miss > 4.0 * delta + reach * s.abs().powi(3) {
-            return Slot::Direct;
-        }
-        // The slot direction to O(s²).
-        let lim = (w.d - w.dd * (0.5 * s)).normalize_or(w.d / v);
-        let sign = if hp > 4.0 * delta {
-            s.signum()
-        } else {
-            match prev {
-                Some(q) if q.dot(lim) < 0.0 => -1.0,
-                _ => 1.0,
-            }
-        };
-        let e = lim * sign;
-        let Some(w3) = third else {
-            return Slot::Undetermined {
+    };
+    let e = lim * sign;
+    let Some(w3) = third else {
+        return Slot::Undetermined {
                 e: Some(e),
                 detail: format!(
                     "the pin {na} passes {hp:.3e} m from the pivot {nc} at φ₁ = {phi:.4}° (|d{nc}{na}/dφ₁| = {v:.6} m): the slot's rates are limits that need the third derivative of {na} relative to {nc}, known only for points of the frame and the crank"
                 ),
             };
-        };
-        let d = cross(w.d, w.dd) / (2.0 * v2);
-        let dd = cross(w.d, w3) / (3.0 * v2) - d * w.d.dot(w.dd) / v2;
-        Slot::Limit(AngleJet { d, dd, e })
-    }
+    };
+    let d = cross(w.d, w.dd) / (2.0 * v2);
+    let dd = cross(w.d, w3) / (3.0 * v2) - d * w.d.dot(w.dd) / v2;
+    Slot::Limit(AngleJet { d, dd, e })
 }
