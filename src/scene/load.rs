@@ -130,7 +130,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
             }
         }
     }
-    let mechanism = raw
+    let mut mechanism = raw
         .mechanism
         .as_ref()
         .and_then(|m| mechanism(&mut check, Some(m)));
@@ -164,6 +164,9 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let forces = raw
         .forces
         .map(|f| forces(&mut check, f, mechanism.as_ref(), positions.count));
+    if let (Some(m), Some(f)) = (mechanism.as_mut(), forces.as_ref()) {
+        m.driving = driving_output(m, &f.indicators);
+    }
     let dynamics = raw
         .dynamics
         .map(|d| dynamics(&mut check, d, forces.as_ref(), has_forces));
@@ -239,6 +242,18 @@ fn text_value(check: &mut Checker, path: &str, value: &toml::Value) {
         }
         toml::Value::Table(t) => texts(check, path, t),
         _ => {}
+    }
+}
+
+/// True when the mechanism's first output is a slider pushed by a `[[forces.indicator]]`: an
+/// engine's piston, whose working stroke is the expansion from its outer dead centre
+/// ([`crate::linkage::Program::extremes`]).
+fn driving_output(m: &crate::linkage::Mechanism, indicators: &[crate::forces::Indicator]) -> bool {
+    match m.outputs.first() {
+        Some(crate::linkage::Output::Slider { point, .. }) => {
+            indicators.iter().any(|i| &i.point == point)
+        }
+        _ => false,
     }
 }
 
