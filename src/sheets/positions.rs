@@ -235,9 +235,8 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
         format!(" ({})", Text::SlowerStroke.get(lang))
     };
     v.push(format!(
-        "{} {start} → {other}{why}: {} {}°, {} {other} → {start} — {}°",
+        "{} {start} → {other}{why}: {}°, {} — {}°",
         Text::WorkingStroke.get(lang),
-        Text::CrankTurns.get(lang),
         format_fixed(ex.work_travel.to_degrees(), digits(2), lang),
         Text::Return.get(lang),
         format_fixed(360.0 - ex.work_travel.to_degrees(), digits(2), lang)
