@@ -465,6 +465,14 @@ impl Row {
     pub fn unit(&self) -> &'static str {
         self.key.symbol.unit()
     }
+    /// True when the graphical value comes off a drawing: a length measured on it ÷ μ, or a
+    /// value worked out from such readings only. False for a value computed: by formula, or
+    /// from the construction's points at full precision — the drawn envelope's deviation from
+    /// the exact one, fractions of a micrometre no drawing read to 0,5 mm shows. The one place
+    /// that decides whether a row stands under "графически".
+    pub fn is_read_off(&self) -> bool {
+        self.method != Method::Formula && self.key.symbol != Symbol::EnvelopeDeviation
+    }
     /// |graphical − analytic|, in the row's unit.
     pub fn abs_error(&self) -> f64 {
         (self.graphical - self.analytic).abs()

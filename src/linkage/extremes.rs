@@ -65,7 +65,7 @@ pub struct OutputRange {
 /// Extreme positions and the working stroke, from the first output.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Extremes {
-    /// Crank angle at the start of the working (slower) stroke, radians in [0, 2π).
+    /// Crank angle at the start of the working stroke, radians in [0, 2π).
     pub phi_start: f64,
     /// Crank angle at its end (the other extreme).
     pub phi_other: f64,
@@ -77,6 +77,9 @@ pub struct Extremes {
     pub theta: f64,
     /// Every output's range, in the order given.
     pub ranges: Vec<OutputRange>,
+    /// The working stroke is the one from the outer dead centre (a driving slider, an
+    /// engine's expansion stroke), not the slower one.
+    pub from_outer: bool,
 }
 
 /// Samples of a full crank turn for bracketing the zeros of dq/dφ.
@@ -92,8 +95,18 @@ impl Program {
         })
     }
 
-    /// Find the extreme positions of the outputs over a full turn of the crank.
-    pub fn extremes(&self, outputs: &[Output], sense: Sense) -> Result<Extremes, LinkageError> {
+    /// Find the extreme positions of the outputs over a full turn of the crank, and the
+    /// working stroke between the first output's: for a driving slider (`driving`, an
+    /// engine's piston) the stroke away from its outer dead centre (the extreme farther from
+    /// the crank centre), where the expansion begins, whatever the angles; otherwise the
+    /// slower stroke (the larger turn of the crank), and for strokes of equal turns (θ = 0)
+    /// the one from the output's minimum along its direction.
+    pub fn extremes(
+        &self,
+        outputs: &[Output],
+        sense: Sense,
+        driving: bool,
+    ) -> Result<Extremes, LinkageError> {
         let coords: Vec<OutputCoord> = outputs
             .iter()
             .map(|o| OutputCoord::resolve(o, self))
@@ -116,7 +129,12 @@ impl Program {
         let t_up = (s * (r0.phi_max - r0.phi_min)).rem_euclid(TAU);
         let t_down = TAU - t_up;
         let tie = (t_up - t_down).abs() <= 1e-9;
-        let (phi_start, phi_other, work) = if t_up > t_down || tie {
+        let outer_max = match coords[0] {
+            OutputCoord::Slider(i, _) if driving => Some(self.outer_is_max(i, r0)?),
+            _ => None,
+        };
+        let up = outer_max.map_or(t_up > t_down || tie, |max| !max);
+        let (phi_start, phi_other, work) = if up {
             (r0.phi_min, r0.phi_max, t_up)
         } else {
             (r0.phi_max, r0.phi_min, t_down)
@@ -129,7 +147,18 @@ impl Program {
             k: work / ret,
             theta: work - PI,
             ranges,
+            from_outer: outer_max.is_some(),
         })
+    }
+
+    /// True when the slider point `i` is farther from the crank centre at its maximum along
+    /// its direction than at its minimum: the maximum is its outer dead centre.
+    fn outer_is_max(&self, i: usize, r: &OutputRange) -> Result<bool, LinkageError> {
+        let off = |phi: f64| -> Result<f64, LinkageError> {
+            let pose = self.solve_turning(phi)?;
+            Ok(pose.p[i].distance(pose.p[self.centre]))
+        };
+        Ok(off(r.phi_max)? > off(r.phi_min)?)
     }
 
     /// The extremes of one output over the sampled turn `poses` (φ₁ = 0 … 2π, the last

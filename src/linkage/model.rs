@@ -284,4 +284,9 @@ pub struct Mechanism {
     pub redundant: Vec<RedundantPair>,
     /// The output whose extremes define the working stroke; the first one listed decides.
     pub outputs: Vec<Output>,
+    /// The first output is a driving slider — an engine's piston, pushed by the gas of a
+    /// `[[forces.indicator]]` — whose working (expansion) stroke begins at its outer dead
+    /// centre; otherwise the working stroke is the slower one
+    /// ([`super::Program::extremes`]).
+    pub driving: bool,
 }

@@ -173,7 +173,7 @@ pub(super) fn start_of(
     m: &Mechanism,
     req: &PlanRequest,
 ) -> Result<(Option<Extremes>, f64), LinkageError> {
-    let found = program.extremes(&m.outputs, m.crank.sense);
+    let found = program.extremes(&m.outputs, m.crank.sense, m.driving);
     match req.start {
         Some(s) => Ok((found.ok(), s)),
         None => {

@@ -77,6 +77,7 @@ pub(crate) fn shaper() -> Mechanism {
                 dir: 0.0,
             },
         ],
+        driving: false,
     }
 }
 
@@ -95,7 +96,7 @@ fn shaper_structure_matches_seed() {
 fn shaper_extremes_are_exact() {
     let m = shaper();
     let prog = Program::compile(&m).unwrap();
-    let ex = prog.extremes(&m.outputs, m.crank.sense).unwrap();
+    let ex = prog.extremes(&m.outputs, m.crank.sense, m.driving).unwrap();
     let theta = ex.theta.to_degrees();
     assert!((theta - 38.0016).abs() < 1e-4, "θ = {theta}");
     let exact = 2.0 * (0.14f64 / 0.43).asin();

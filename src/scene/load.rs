@@ -158,7 +158,7 @@ pub(super) fn validate(
             }
         }
     }
-    let mechanism = raw
+    let mut mechanism = raw
         .mechanism
         .as_ref()
         .and_then(|m| mechanism(&mut check, Some(m)));
@@ -192,6 +192,9 @@ pub(super) fn validate(
     let forces = raw
         .forces
         .map(|f| forces(&mut check, f, mechanism.as_ref(), positions.count));
+    if let (Some(m), Some(f)) = (mechanism.as_mut(), forces.as_ref()) {
+        m.driving = driving_output(m, &f.indicators);
+    }
     let dynamics = raw
         .dynamics
         .map(|d| dynamics(&mut check, d, forces.as_ref(), has_forces));
@@ -269,6 +272,18 @@ fn text_value(check: &mut Checker, path: &str, value: &DeValue<'_>) {
         }
         DeValue::Table(t) => texts(check, path, t),
         _ => {}
+    }
+}
+
+/// True when the mechanism's first output is a slider pushed by a `[[forces.indicator]]`: an
+/// engine's piston, whose working stroke is the expansion from its outer dead centre
+/// ([`crate::linkage::Program::extremes`]).
+fn driving_output(m: &crate::linkage::Mechanism, indicators: &[crate::forces::Indicator]) -> bool {
+    match m.outputs.first() {
+        Some(crate::linkage::Output::Slider { point, .. }) => {
+            indicators.iter().any(|i| &i.point == point)
+        }
+        _ => false,
     }
 }
 

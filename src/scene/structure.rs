@@ -68,6 +68,7 @@ pub(crate) fn mechanism(check: &mut Checker, raw: Option<&RawMechanism>) -> Opti
         points: std::mem::take(&mut b.points),
         redundant,
         outputs,
+        driving: false,
     };
     b.mobility(&m);
     Some(m)

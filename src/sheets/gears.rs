@@ -10,7 +10,7 @@ use super::layout::{
     drawn_value, lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey,
 };
 use super::BuildError;
-use crate::check::{Method, Row};
+use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
 use crate::gears::blocking::Study;
 use crate::gears::{DetailMark, DETAIL_LETTER};
@@ -65,6 +65,12 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     } = sheet;
     blocks.append(&mut details);
     lines.push(String::new());
+    if g.rows_by_part()[1]
+        .iter()
+        .any(|r| r.key.symbol == Symbol::ShiftCoefficient && r.method == Method::Formula)
+    {
+        lines.push(GearText::XMinRule.get(lang).into());
+    }
     lines.push(super::drafting_line(
         session.drafting(),
         super::Errs::Rounding,
@@ -77,11 +83,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     // Two tables, each finding its own room: what was read off the drawings (the meshing
     // picture, the envelope, the triangles) against the analytic values, and what was
     // computed by formula against another route — a formula's value is no graphical reading.
-    let [pair, rest] = g.rows_by_part();
-    let (computed, read): (Vec<Row>, Vec<Row>) = pair
-        .into_iter()
-        .chain(rest)
-        .partition(|r| r.method == Method::Formula);
+    let (read, computed) = tables_rows(&g);
     if !read.is_empty() {
         blocks.push(Block::Table(table(&read, lang)));
     }
@@ -115,13 +117,22 @@ fn view(
     Block::view(figure.clone(), caption, Some(ScaleKey { key, scale }))
 }
 
-/// The unit a row's value is written in and its factor from SI: a length in mm, one under
-/// 0,01 mm (a deviation from the exact envelope) in µm; an angle in degrees.
+/// The gear sheet's rows as its two tables hold them: those read off the drawings (under
+/// "графически") and those computed ([`Row::is_read_off`]), each in the order of the parts.
+pub(crate) fn tables_rows(g: &crate::gears::GearStudy) -> (Vec<Row>, Vec<Row>) {
+    let [pair, rest] = g.rows_by_part();
+    pair.into_iter().chain(rest).partition(Row::is_read_off)
+}
+
+/// The unit a row's value is written in and its factor from SI, one per quantity on the
+/// sheet: a length in mm, the drawn envelope's deviation from the exact one in µm (each
+/// wheel's, whatever its size); an angle in degrees; an angular velocity in rad/s.
 fn table_unit(r: &Row) -> (&'static str, f64) {
-    match r.key.symbol.unit() {
-        "m" if r.graphical.abs().max(r.analytic.abs()) < 1e-5 => ("um", 1e6),
-        "m" => ("mm", 1e3),
-        "deg" => ("deg", 1.0),
+    match (r.key.symbol, r.key.symbol.unit()) {
+        (Symbol::EnvelopeDeviation, _) => ("um", 1e6),
+        (_, "m") => ("mm", 1e3),
+        (_, "deg") => ("deg", 1.0),
+        (_, "rad/s") => ("rad/s", 1.0),
         _ => ("", 1.0),
     }
 }
@@ -144,8 +155,9 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
     )
 }
 
-/// The table of the rows computed by formula: quantity | unit | by formula (the textbook's
-/// chain) | check (an independent route) | error.
+/// The table of the rows computed — by formula (the textbook's chain), or from the
+/// construction's points (the envelope's deviation) —: quantity | unit | computed | check (an
+/// independent route, the exact value) | error.
 fn formula_table(rows: &[Row], lang: Lang) -> TableBlock {
     let mut t = values_table(
         rows,
@@ -159,7 +171,7 @@ fn formula_table(rows: &[Row], lang: Lang) -> TableBlock {
         ],
         lang,
     );
-    t.columns[2].0 = GearText::ByFormula.get(lang).into();
+    t.columns[2].0 = GearText::ComputedValue.get(lang).into();
     t.columns[3].0 = GearText::OtherRoute.get(lang).into();
     t
 }

@@ -14,6 +14,8 @@ mod flywheel;
 mod forces;
 pub(crate) mod friction;
 mod gears;
+#[cfg(test)]
+mod gears_tables_tests;
 mod layout;
 pub(crate) use kinematics::verdict_lines;
 pub use layout::ScaleKey;

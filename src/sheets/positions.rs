@@ -4,6 +4,7 @@
 use super::captions::Text;
 use super::layout::{lay_out, Block, ScaleKey};
 use super::BuildError;
+use crate::check::is_zero;
 use crate::construct::fit::{fit_scale, overflow};
 use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
@@ -12,6 +13,7 @@ use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
 use crate::scene::Key;
 use crate::study::Session;
+use std::f64::consts::PI;
 
 /// The room of the structural scheme, mm.
 const SCHEME_ROOM: DVec2 = DVec2::new(268.0, 274.0);
@@ -220,12 +222,24 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
         label(ex.phi_other),
         deg(ex.phi_other)
     )];
+    // Strokes of equal turns (θ = 0, an engine's central slider-crank): 180°, θ = 0°, K = 1,
+    // no digits that say nothing; which half is working is said by its ends and its rule.
+    let even = is_zero(ex.theta, PI);
+    let digits = |d: usize| if even { 0 } else { d };
+    let (start, other) = (label(ex.phi_start), label(ex.phi_other));
+    let why = if ex.from_outer {
+        format!(" ({})", Text::FromOuterDeadCentre.get(lang))
+    } else if even {
+        String::new()
+    } else {
+        format!(" ({})", Text::SlowerStroke.get(lang))
+    };
     v.push(format!(
-        "{} {}°, {} {}°",
+        "{} {start} → {other}{why}: {}°, {} — {}°",
         Text::WorkingStroke.get(lang),
-        format_fixed(ex.work_travel.to_degrees(), 2, lang),
+        format_fixed(ex.work_travel.to_degrees(), digits(2), lang),
         Text::Return.get(lang),
-        format_fixed(360.0 - ex.work_travel.to_degrees(), 2, lang)
+        format_fixed(360.0 - ex.work_travel.to_degrees(), digits(2), lang)
     ));
     for r in &ex.ranges {
         match r.coord {
@@ -255,12 +269,15 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     });
     let k = format!(
         "K = (180° + θ)/(180° − θ) = {}",
-        format_fixed(ex.k, 4, lang)
+        format_fixed(ex.k, digits(4), lang)
     );
     v.push(if stated {
         k
     } else {
-        format!("θ = {}°, {k}", format_fixed(ex.theta.to_degrees(), 4, lang))
+        format!(
+            "θ = {}°, {k}",
+            format_fixed(ex.theta.to_degrees(), digits(4), lang)
+        )
     });
     v
 }

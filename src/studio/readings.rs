@@ -4,7 +4,7 @@
 //! with), and each row matched to the reading that gave its value. A row computed by formula,
 //! or one whose value is worked out from several readings, has none.
 
-use crate::check::{is_zero, At, Method, Row};
+use crate::check::{is_zero, At, Row};
 use crate::geom::DVec2;
 use crate::plate::Plate;
 use crate::scene::PlateKind;
@@ -66,9 +66,10 @@ pub fn placed(plates: &[(PlateKind, Plate)]) -> Vec<ReadAt> {
     out
 }
 
-/// True when `row` gives a value read off a drawing (not computed by formula).
+/// True when `row` gives a value read off a drawing ([`Row::is_read_off`]: not computed by
+/// formula nor from the construction's points).
 pub fn is_graphical(row: &Row) -> bool {
-    row.method != Method::Formula
+    row.is_read_off()
 }
 
 /// True when the row's value is the reading's: its magnitude (a row may carry a sign the
@@ -154,7 +155,7 @@ pub fn read_at(rows: &[Row], plates: &[(PlateKind, Plate)]) -> Vec<Option<ReadAt
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::check::Symbol;
+    use crate::check::{Method, Symbol};
     use crate::construct::Drafting;
     use crate::scale::Lang;
     use crate::studio::gallery;

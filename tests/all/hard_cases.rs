@@ -140,7 +140,7 @@ fn change_point_four_bar_passes_its_folded_positions_without_nan() {
 fn four_bar_dead_centres_have_crank_and_coupler_in_line() {
     let m = four_bar(0.08, 0.28, 0.25, 0.18);
     let prog = Program::compile(&m).unwrap();
-    let ex = prog.extremes(&m.outputs, m.crank.sense).unwrap();
+    let ex = prog.extremes(&m.outputs, m.crank.sense, m.driving).unwrap();
     for phi in [ex.phi_start, ex.phi_other] {
         let pose = prog.solve(phi, None).unwrap();
         let (o, a, b) = (
@@ -302,7 +302,7 @@ fn crank_rocker_at_toggle_has_the_toggle_as_an_extreme() {
     let m = four_bar(0.08, 0.28, 0.25, 0.11);
     let prog = Program::compile(&m).unwrap();
     let ex = prog
-        .extremes(&m.outputs, m.crank.sense)
+        .extremes(&m.outputs, m.crank.sense, m.driving)
         .unwrap_or_else(|e| panic!("{e}"));
     let x = (0.33f64.powi(2) - 0.11f64.powi(2) + 0.28f64.powi(2)) / (2.0 * 0.28);
     let y = (0.33f64.powi(2) - x * x).sqrt();
@@ -345,7 +345,7 @@ fn slider_crank_with_coupler_equal_to_crank_has_one_extreme_per_dwell() {
     let m = slider_crank(0.1, 0.1);
     let prog = Program::compile(&m).unwrap();
     let ex = prog
-        .extremes(&m.outputs, m.crank.sense)
+        .extremes(&m.outputs, m.crank.sense, m.driving)
         .unwrap_or_else(|e| panic!("{e}"));
     let r = &ex.ranges[0];
     let d0 = r.phi_max.min(std::f64::consts::TAU - r.phi_max);
@@ -576,4 +576,41 @@ fn report_of_a_pin_beside_the_pivot_gives_the_true_values_with_a_note() {
         "{:#?}",
         report.note_texts()
     );
+}
+
+/// The working stroke of a central slider-crank (θ = 0: both strokes take 180°) by the rule
+/// of `Program::extremes`: driven (a pump, a compressor), the stroke from the slider's minimum
+/// along `dir`; driving (an engine's piston), the stroke from the outer dead centre, the
+/// crank along the cylinder (φ₁ = 0 here: B at r + l from O) — whichever way `dir` points.
+#[test]
+fn an_engine_works_from_its_outer_dead_centre() {
+    let (r, l) = (0.04, 0.16);
+    for dir in [0.0, std::f64::consts::PI] {
+        let mut m = slider_crank(r, l);
+        if let Some(Output::Slider { dir: d, .. }) = m.outputs.first_mut() {
+            *d = dir;
+        }
+        let prog = Program::compile(&m).unwrap();
+        let driven = prog.extremes(&m.outputs, m.crank.sense, false).unwrap();
+        let engine = prog.extremes(&m.outputs, m.crank.sense, true).unwrap();
+        let b = prog.index("B").unwrap();
+        let reach = |phi: f64| prog.solve(phi, None).unwrap().p[b].length();
+        // The outer dead centre: B at r + l from O, the crank at φ₁ = 0.
+        assert!(
+            (reach(engine.phi_start) - (r + l)).abs() < 1e-12,
+            "dir {dir}"
+        );
+        assert!(
+            (reach(engine.phi_other) - (l - r)).abs() < 1e-12,
+            "dir {dir}"
+        );
+        assert!(engine.from_outer && !driven.from_outer);
+        assert!((engine.work_travel - std::f64::consts::PI).abs() < 1e-9);
+        assert!(engine.theta.abs() < 1e-9 && (engine.k - 1.0).abs() < 1e-9);
+        // Driven: from the minimum along `dir`, the inner dead centre for dir 0, the outer
+        // for dir 180°.
+        let inner_first = dir == 0.0;
+        let want = if inner_first { l - r } else { r + l };
+        assert!((reach(driven.phi_start) - want).abs() < 1e-12, "dir {dir}");
+    }
 }

@@ -364,6 +364,7 @@ fn coriolis_vanishes_with_the_relative_sliding_velocity() {
         }],
         redundant: vec![],
         outputs: vec![Output::Rocker { link: 3 }],
+        driving: false,
     };
     for (phi, vanishes) in [(90f64, true), (120f64, false)] {
         let prog = Program::compile(&m).unwrap();

@@ -52,6 +52,7 @@ pub(crate) fn one_group(
         points,
         redundant: vec![],
         outputs: vec![Output::Rocker { link: 3 }],
+        driving: false,
     }
 }
 

@@ -113,11 +113,16 @@ catalogue! {
             "Read off the drawing against analytic"
         ),
         Computed => (
-            "Вычислено по формулам",
-            "Обчислено за формулами",
-            "Computed by formulas"
+            "Вычислено, не считано с чертежа",
+            "Обчислено, не знято з креслення",
+            "Computed, not read off the drawing"
         ),
-        ByFormula => ("по формуле", "за формулою", "by formula"),
+        ComputedValue => ("вычислено", "обчислено", "computed"),
+        XMinRule => (
+            "x_{min}: вычислено по (17 − z)/17 (1/17 ≈ sin²20°/2, округление), проверка — точное h_{a}* − z·sin²α/2",
+            "x_{min}: обчислено за (17 − z)/17 (1/17 ≈ sin²20°/2, округлення), перевірка — точне h_{a}* − z·sin²α/2",
+            "x_{min}: computed by (17 − z)/17 (1/17 ≈ sin²20°/2, rounded), check — the exact h_{a}* − z·sin²α/2"
+        ),
         OtherRoute => ("проверка", "перевірка", "check"),
         ChosenBy => (
             "K: x_1, x_2 выбраны на блокирующем контуре по критерию:",

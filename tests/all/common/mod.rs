@@ -41,6 +41,7 @@ fn mechanism(
         points,
         redundant: vec![],
         outputs: vec![output],
+        driving: false,
     }
 }
 
