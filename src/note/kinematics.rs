@@ -146,6 +146,7 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 mod tests {
     use super::super::{explain::Explained, markup::Markup, Writer};
     use super::*;
+    use crate::scale::Lang;
 
     /// Every displayed formula of the structural and kinematic analysis of every linkage
     /// scene has its left side explained («где»), in every language.
