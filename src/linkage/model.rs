@@ -122,6 +122,16 @@ impl DyadKind {
     pub fn letters_ru(self) -> &'static str {
         self.words().letters_ru
     }
+    /// The pair letters as the sheets of `lang` write them: `RRP` in English, `ВВП`
+    /// (вращательная, поступательная) in Russian, `ООП` (обертальна, поступальна) in
+    /// Ukrainian.
+    pub fn letters_in(self, lang: crate::scale::Lang) -> String {
+        match lang {
+            crate::scale::Lang::En => self.letters().to_string(),
+            crate::scale::Lang::Ru => self.letters_ru().to_string(),
+            crate::scale::Lang::Uk => self.letters_ru().replace('В', "О"),
+        }
+    }
 }
 
 /// The geometry of a dyad. Its two links are `i` (the first listed) and `j`.

@@ -7,7 +7,6 @@
 use super::markup::{label, num, sym, text, Align};
 use super::{NoteError, Writer};
 use crate::linkage::Structure;
-use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::sheets::captions::{Meaning, NoteText as T, Text as S};
 
@@ -77,11 +76,7 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             "{} {} ({})",
             w.word(T::KindWord),
             g.kind.number(),
-            if lang == Lang::En {
-                g.kind.letters()
-            } else {
-                g.kind.letters_ru()
-            }
+            g.kind.letters_in(lang)
         );
         let pairs: Vec<String> = g
             .pairs
@@ -151,6 +146,7 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 mod tests {
     use super::super::{explain::Explained, markup::Markup, Writer};
     use super::*;
+    use crate::scale::Lang;
 
     /// Every displayed formula of the structural and kinematic analysis of every linkage
     /// scene has its left side explained («где»), in every language.

@@ -171,7 +171,7 @@ pub(crate) struct Captions {
     pub(crate) scale: &'static str,
     /// Лист.
     pub(crate) sheet: &'static str,
-    /// Листов.
+    /// Листов (en: "of", as "Sheet 1 of 2").
     pub(crate) sheets: &'static str,
 }
 
@@ -198,7 +198,8 @@ pub(crate) fn captions(lang: Lang) -> Captions {
         mass: p("Масса", "Маса", "Mass"),
         scale: p("Масштаб", "Масштаб", "Scale"),
         sheet: p("Лист", "Арк.", "Sheet"),
-        sheets: p("Листов", "Аркушів", "Sheets"),
+        // An English drawing numbers its sheets "Sheet 1 of 2".
+        sheets: p("Листов", "Аркушів", "of"),
     }
 }
 

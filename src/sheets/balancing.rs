@@ -147,6 +147,7 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
     }
     out.push(String::new());
     out.push(RotorText::CorrectingMasses.get(lang).into());
+    let kgmm = unit_in(sheet_unit(Symbol::StaticMoment).0, lang);
     for c in &b.graphical {
         let idx = c.plane.index();
         let u = c.unbalance.length();
@@ -155,9 +156,9 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
             |a| format_fixed(a.to_degrees(), 1, lang),
         );
         out.push(format!(
-            "m_{{{idx}}} = m_{{{idx}}}ρ_{{{idx}}}/ρ_{{{idx}}} = {}/{} = {} {kg}, α_{{{idx}}} = {}°",
-            num(u, lang),
-            num(c.radius, lang),
+            "m_{{{idx}}} = m_{{{idx}}}ρ_{{{idx}}}/ρ_{{{idx}}} = {} {kgmm}/{} {mm} = {} {kg}, α_{{{idx}}} = {}°",
+            num(u * sheet_unit(Symbol::StaticMoment).1, lang),
+            num(c.radius * 1e3, lang),
             num(c.mass(), lang),
             angle
         ));
@@ -198,7 +199,7 @@ fn quantity(r: &Row, lang: Lang) -> (String, String) {
         RotorText::Before
     }
     .get(lang);
-    let unit = unit_in(r.key.symbol.unit(), lang);
+    let unit = unit_in(sheet_unit(r.key.symbol).0, lang);
     match r.key.symbol {
         Symbol::StaticMoment => (format!("m_{{{idx}}}ρ_{{{idx}}}"), unit),
         Symbol::UnbalanceMoment => (format!("m_{{{idx}}}ρ_{{{idx}}}z_{{II}}"), unit),
@@ -210,14 +211,23 @@ fn quantity(r: &Row, lang: Lang) -> (String, String) {
     }
 }
 
-/// The table graphical | analytic | error of the rows (angles in degrees).
+/// The unit a row's value is printed in on the sheet and its factor from SI: an
+/// unbalance in kg·mm (kg·mm² about a plane) as the rotor's radii are in mm, so that no
+/// value runs into zeros (0,0085 кг·м is 8,5 кг·мм); an angle in degrees.
+fn sheet_unit(symbol: Symbol) -> (&'static str, f64) {
+    match symbol {
+        Symbol::StaticMoment => ("kg*mm", 1e3),
+        Symbol::UnbalanceMoment => ("kg*mm^2", 1e6),
+        Symbol::Angle => ("deg", 180.0 / std::f64::consts::PI),
+        s => (s.unit(), 1.0),
+    }
+}
+
+/// The table graphical | analytic | error of the rows (angles in degrees, unbalances in
+/// kg·mm, [`sheet_unit`]).
 fn table(rows: &[Row], lang: Lang) -> TableBlock {
     let value = |r: &Row, x: f64, s: f64| {
-        let k = if r.key.symbol == Symbol::Angle {
-            180.0 / std::f64::consts::PI
-        } else {
-            1.0
-        };
+        let k = sheet_unit(r.key.symbol).1;
         if crate::check::is_zero(x, s) {
             "0".to_string()
         } else {

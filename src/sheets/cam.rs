@@ -184,7 +184,8 @@ pub(super) fn law_name(law: Law, lang: Lang) -> String {
     let word = match law {
         Law::ConstantAcceleration { ratio } => {
             return format!(
-                "«+ −» ({} {})",
+                "{} ({} {})",
+                lang.pick("«+ −»", "«+ −»", "“+ −”"),
                 CamText::Ratio.get(lang),
                 format_sig(ratio, 3, lang)
             )
@@ -282,8 +283,10 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     out.push(format!("r_{{0}} = {} {mm}", n(cam.base)));
     if !matches!(s.follower, Follower::Flat { .. }) {
         out.push(format!(
-            "0,4·r_{{0}} = {} {mm}, 0,8·ρ_{{min}} = {} {mm} → r_{{р}} = {} {mm}",
+            "{}·r_{{0}} = {} {mm}, {}·ρ_{{min}} = {} {mm} → r_{{р}} = {} {mm}",
+            format_sig(0.4, 1, lang),
             n(0.4 * cam.base),
+            format_sig(0.8, 1, lang),
             // The roller is chosen from the drawn pitch curve's ρ_min.
             n(0.8 * cam.inversion.rho_min),
             n(cam.roller)

@@ -145,8 +145,12 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         format_sig(1.0 / s.delta, 3, lang)
     ));
     for c in &s.constant {
+        // The part the inertia belongs to, named where the catalogue knows it: J_{ред}
+        // (редуктор).
+        let part = crate::sheets::captions::symbols::part(&c.name, lang)
+            .map_or_else(String::new, |p| format!(" ({p})"));
         out.push(format!(
-            "J_{{{}}} = {} {kgm2}",
+            "J_{{{}}}{part} = {} {kgm2}",
             c.name,
             num(c.inertia, lang)
         ));

@@ -118,10 +118,7 @@ fn position_sheet(
         let kind = st
             .groups
             .get(g.group)
-            .map(|x| match lang {
-                Lang::En => x.kind.letters(),
-                Lang::Ru | Lang::Uk => x.kind.letters_ru(),
-            })
+            .map(|x| x.kind.letters_in(lang))
             .unwrap_or_default();
         blocks.push(view(
             &g.scheme,

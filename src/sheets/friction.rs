@@ -5,6 +5,7 @@
 //! room; further sheets only when an A1 cannot hold them.
 
 use super::captions::{unit_in, FrictionText, Text};
+use super::digits::{degrees as deg, mm, value as num};
 use super::layout::{lay_out_smallest, Block, ScaleKey};
 use super::BuildError;
 use crate::check::Row;
@@ -90,16 +91,6 @@ fn caption(n: usize, s: &Solved, d: &Drawing, lang: Lang) -> String {
     format!("{head}, {scales}")
 }
 
-/// A number with 4 significant digits.
-fn num(x: f64, lang: Lang) -> String {
-    format_sig(x, 4, lang)
-}
-
-/// Degrees with two decimals.
-fn deg(x: f64, lang: Lang) -> String {
-    format!("{}°", format_fixed(x.to_degrees(), 2, lang))
-}
-
 /// A case's line, followed by its condition of self-braking when it holds.
 fn locking(first: String, condition: Option<String>, lang: Lang) -> Vec<String> {
     let braking = FrictionText::SelfBraking.get(lang);
@@ -112,7 +103,6 @@ fn locking(first: String, condition: Option<String>, lang: Lang) -> Vec<String> 
 fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
     let newton = unit_in("N", lang);
     let nm = unit_in("N*m", lang);
-    let metre = unit_in("m", lang);
     let sign = |m: Motion| if m == Motion::Up { "+" } else { "−" };
     match &s.case.kind {
         CaseKind::Incline(c) => {
@@ -155,9 +145,9 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
         CaseKind::Journal(c) => {
             let t = journal_twin(c);
             vec![format!(
-                "{n}: ρ = r·sin φ = {} {metre} (ρ ≈ f·r = {} {metre}); M_{{f}} = Q·ρ = {} {nm} (f·Q·r = {} {nm})",
-                num(t.rho, lang),
-                num(t.rho_textbook, lang),
+                "{n}: ρ = r·sin φ = {} (ρ ≈ f·r = {}); M_{{f}} = Q·ρ = {} {nm} (f·Q·r = {} {nm})",
+                mm(t.rho, lang),
+                mm(t.rho_textbook, lang),
                 num(t.moment, lang),
                 num(t.moment_textbook, lang)
             )]
@@ -275,15 +265,14 @@ fn guide_lines(n: usize, c: &crate::friction::FollowerGuide, lang: Lang) -> Vec<
 /// couple's arm, P and the jamming angle against λ.
 fn pivot_lines(n: usize, c: &crate::friction::RockerPivot, lang: Lang) -> Vec<String> {
     let newton = unit_in("N", lang);
-    let metre = unit_in("m", lang);
     let Some(t) = pivot_twin(c) else {
         return Vec::new();
     };
     vec![
         format!(
-            "{n}: ρ = (d/2)·sin φ = {} {metre}; h = L·cos λ − ρ = {} {metre}; P = M_{{с}}/h = {} {newton}",
-            num(t.rho, lang),
-            num(t.h, lang),
+            "{n}: ρ = (d/2)·sin φ = {}; h = L·cos λ − ρ = {}; P = M_{{с}}/h = {} {newton}",
+            mm(t.rho, lang),
+            mm(t.h, lang),
             num(t.p, lang)
         ),
         format!(

@@ -338,23 +338,23 @@ impl Filling {
     /// The pair's data and results: m, z, x; α_w, a_w, y, Δy; the radii, the pitches and
     /// s_a; ε_α by formula and as drawn (`eps_drawn`).
     fn pair_lines(&mut self, p: &crate::gears::Pair, eps_drawn: f64) {
-        let (lang, mm_) = (self.lang, &self.mm);
-        let mm = |x: f64| format_sig(x * 1e3, 6, lang);
+        use super::digits::{degrees, mm, value};
+        let lang = self.lang;
+        let mm = |x: f64| mm(x, lang);
         self.lines.push(format!(
-            "m = {} {u}, z_1 = {}, z_2 = {}, x_1 = {}, x_2 = {}",
+            "m = {}, z_1 = {}, z_2 = {}, x_1 = {}, x_2 = {}",
             mm(p.spec.module),
             p.spec.z[0],
             p.spec.z[1],
-            format_sig(p.spec.x[0], 4, lang),
-            format_sig(p.spec.x[1], 4, lang),
-            u = mm_,
+            value(p.spec.x[0], lang),
+            value(p.spec.x[1], lang),
         ));
         self.lines.push(format!(
-            "α_w = {}°, a_w = {}, y = {}, Δy = {}",
-            format_sig(p.alpha_w.to_degrees(), 7, lang),
+            "α_w = {}, a_w = {}, y = {}, Δy = {}",
+            degrees(p.alpha_w, lang),
             mm(p.a_w),
-            format_sig(p.y, 5, lang),
-            format_sig(p.dy, 4, lang),
+            value(p.y, lang),
+            value(p.dy, lang),
         ));
         self.lines.push(format!(
             "r_{{w1}} = {}, r_{{w2}} = {}, r_{{a1}} = {}, r_{{a2}} = {}, r_{{f1}} = {}, r_{{f2}} = {}",
@@ -370,8 +370,8 @@ impl Filling {
         ));
         self.lines.push(format!(
             "ε_α = B_1B_2/p_b = {}; ε′_α = {}",
-            format_sig(p.eps, 5, lang),
-            format_sig(eps_drawn, 5, lang)
+            value(p.eps, lang),
+            value(eps_drawn, lang)
         ));
     }
 

@@ -7,6 +7,7 @@ mod cam;
 mod cam_special;
 pub(crate) mod captions;
 pub(crate) mod data;
+mod digits;
 pub use answer_key::{answer_key, table_sheet, KeyLine};
 pub use task::task_sheet;
 mod dynamics;

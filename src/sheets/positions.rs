@@ -10,7 +10,7 @@ use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
 use crate::linkage::{DyadKind, OutputCoord, PositionPlan, Structure};
 use crate::plate::{Plate, Sheet};
-use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
+use crate::scale::{format_fixed, Lang, Quantity, Scale};
 use crate::scene::Key;
 use crate::study::Session;
 use std::f64::consts::PI;
@@ -124,7 +124,7 @@ fn kind_name(k: DyadKind, lang: Lang) -> String {
             "{} {} ({})",
             Text::OfKind.get(lang),
             k.number(),
-            k.letters_ru()
+            k.letters_in(lang)
         ),
     }
 }
@@ -155,7 +155,7 @@ fn structure_lines(st: &Structure, m: &crate::linkage::Mechanism, lang: Lang) ->
             "{} — {}: {}",
             r.name,
             Text::RedundantPair.get(lang),
-            r.reason
+            super::captions::redundant_reason(&r.reason, lang)
         ));
     }
     v.push(format!(
@@ -244,21 +244,20 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     for r in &ex.ranges {
         match r.coord {
             OutputCoord::Rocker(l) => v.push(format!(
-                "{} {l}: {} = {}°",
+                "{} {l}: {} = {}",
                 Text::SwingOfLink.get(lang),
                 if ((r.max - r.min).abs() - ex.theta.abs()).abs() < 1e-9 {
                     "θ"
                 } else {
                     "ψ"
                 },
-                format_fixed((r.max - r.min).to_degrees(), 4, lang)
+                super::digits::degrees(r.max - r.min, lang)
             )),
             OutputCoord::Slider(i, _) => v.push(format!(
-                "{} {}: H = {} {}",
+                "{} {}: H = {}",
                 Text::StrokeOfPoint.get(lang),
                 plan.point_name(i),
-                format_sig(r.max - r.min, 5, lang),
-                Text::Metre.get(lang)
+                super::digits::mm(r.max - r.min, lang)
             )),
         }
     }
@@ -274,10 +273,7 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     v.push(if stated {
         k
     } else {
-        format!(
-            "θ = {}°, {k}",
-            format_fixed(ex.theta.to_degrees(), digits(4), lang)
-        )
+        format!("θ = {}, {k}", super::digits::degrees(ex.theta, lang))
     });
     v
 }

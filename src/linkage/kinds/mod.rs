@@ -278,6 +278,11 @@ mod tests {
                 .all(|o| o.letters != w.letters && o.letters_ru != w.letters_ru));
         }
         assert_eq!(DyadKind::Rpp.letters_ru(), "ВПП");
+        // Ukrainian sheets name the pairs обертальна (О) and поступальна (П).
+        use crate::scale::Lang;
+        assert_eq!(DyadKind::Rrp.letters_in(Lang::Uk), "ООП");
+        assert_eq!(DyadKind::Prp.letters_in(Lang::Uk), "ПОП");
+        assert_eq!(DyadKind::Rrp.letters_in(Lang::En), "RRP");
     }
 
     #[test]

@@ -44,7 +44,6 @@ catalogue! {
         Return => ("холостой", "холостий", "return"),
         SwingOfLink => ("Угол размаха звена", "Кут розмаху ланки", "Swing of link"),
         StrokeOfPoint => ("Ход точки", "Хід точки", "Stroke of point"),
-        Metre => ("м", "м", "m"),
         Millimetre => ("мм", "мм", "mm"),
         NoDiagrams => ("Диаграммы по углу поворота не строятся: механизм не проходит положение", "Діаграми за кутом повороту не будуються: механізм не проходить положення", "No diagrams over the crank turn: the mechanism cannot pass"),
         NoDiagramsLeap => ("Диаграммы по углу поворота не строятся: звено поворачивается скачком около положения", "Діаграми за кутом повороту не будуються: ланка повертається стрибком біля положення", "No diagrams over the crank turn: a link turns by a leap near"),
@@ -79,5 +78,56 @@ catalogue! {
             "Графічний розв'язок і аналітичний розрахунок",
             "Graphical against analytic"
         ),
+    }
+}
+
+catalogue! {
+    /// The standard reasons for a redundant pair, which a scene names by key
+    /// (`reason = "second_guide"`, [`REDUNDANT_REASONS`]).
+    RedundantReason {
+        SecondGuide => (
+            "вторая направляющая ползуна, разгружающая его от изгиба",
+            "друга напрямна повзуна, що розвантажує його від згину",
+            "a second guide of the slider, relieving it of bending"
+        ),
+        SecondBearing => (
+            "вторая опора вала, разгружающая его от изгиба",
+            "друга опора вала, що розвантажує його від згину",
+            "a second bearing of the shaft, relieving it of bending"
+        ),
+    }
+}
+
+/// The keys a scene names a standard reason by.
+pub(crate) const REDUNDANT_REASONS: [(&str, RedundantReason); 2] = [
+    ("second_guide", RedundantReason::SecondGuide),
+    ("second_bearing", RedundantReason::SecondBearing),
+];
+
+/// A redundant pair's `reason` in `lang`: the catalogue's phrase for a standard key, any
+/// other text printed as written.
+pub(crate) fn redundant_reason(reason: &str, lang: crate::scale::Lang) -> &str {
+    REDUNDANT_REASONS
+        .iter()
+        .find(|(key, _)| *key == reason)
+        .map_or(reason, |(_, r)| r.get(lang))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::redundant_reason;
+    use crate::scale::Lang;
+
+    #[test]
+    fn a_standard_reason_is_written_in_the_sheets_language_and_free_text_as_written() {
+        assert_eq!(
+            redundant_reason("second_guide", Lang::Uk),
+            "друга напрямна повзуна, що розвантажує його від згину"
+        );
+        assert_eq!(
+            redundant_reason("second_bearing", Lang::En),
+            "a second bearing of the shaft, relieving it of bending"
+        );
+        assert_eq!(redundant_reason("своя причина", Lang::En), "своя причина");
     }
 }

@@ -20,7 +20,7 @@ mod studio;
 pub(crate) mod symbols;
 
 pub(crate) use audit::AuditText;
-pub(crate) use linkage::Text;
+pub(crate) use linkage::{redundant_reason, Text};
 pub(crate) use machines::DynamicsText;
 pub(super) use machines::{CamText, RotorText};
 pub(crate) use machines::{FrictionText, GearText};

@@ -27,26 +27,28 @@ const SUBSCRIPTS: &[(&str, &str, &str)] = &[
     ("у", "зр", "b"),
     // приведённый: reduced to the crank, M_red, J_red.
     ("пр", "зв", "red"),
-    // приведённый, as the dynamics' data writes it: J_red.
-    ("ред", "ред", "red"),
-    // коробки скоростей: the gearbox's share of the reduced moment of inertia, J_gb.
-    ("кс", "кс", "gb"),
+    // редуктора: the reducer's share of the reduced moment of inertia, as the dynamics'
+    // data writes it: J_gr (the gear reducer; J_red is the reduced inertia itself).
+    ("ред", "ред", "gr"),
+    // коробки скоростей (коробки швидкостей): the gearbox's share of the reduced moment of
+    // inertia, J_gb.
+    ("кс", "кш", "gb"),
     // звеньев: the links' kinetic energy, T_l.
     ("зв", "л", "l"),
     // средняя: the mean angular velocity, ω_m.
     ("ср", "ср", "m"),
     // маховика: the flywheel's moment of inertia, J_fw.
     ("м", "м", "fw"),
-    // ступицы: the width of the flywheel's hub, b_h.
-    ("ст", "ст", "h"),
+    // ступицы (маточини): the width of the flywheel's hub, b_h.
+    ("ст", "мат", "h"),
     // трения: friction, F_f, M_f and the values with friction in the pairs, R^f.
     ("тр", "тр", "f"),
     // двигателя: the motor's power, N_mot.
     ("дв", "дв", "mot"),
-    // требуемое: the ratio a required speed asks for, u^req.
-    ("треб", "треб", "req"),
-    // скольжения: the force that drags a load on rollers, P_sl.
-    ("ск", "ск", "sl"),
+    // требуемое (потрібне): the ratio a required speed asks for, u^req.
+    ("треб", "потр", "req"),
+    // скольжения (ковзання): the force that drags a load on rollers, P_sl.
+    ("ск", "ковз", "sl"),
     // ролика: a cam's roller, r_r.
     ("р", "р", "r"),
     // профиля: a cam profile's deviation, Δ_prof.
@@ -56,6 +58,22 @@ const SUBSCRIPTS: &[(&str, &str, &str)] = &[
     // критический: the pressure angle at which a cam's follower jams, λ_cr.
     ("кр", "кр", "cr"),
 ];
+
+/// The machine's parts a constant moment of inertia may be named after (`J_{ред}`), with
+/// the part's name in each language, printed beside the symbol so that the sheet explains it.
+const PARTS: &[(&str, &str, &str, &str)] = &[
+    ("ред", "редуктор", "редуктор", "reducer"),
+    ("кс", "коробка скоростей", "коробка швидкостей", "gearbox"),
+];
+
+/// The name in `lang` of the part a constant inertia's subscript `word` names (`ред`:
+/// редуктор, reducer), `None` for a name the catalogue does not know.
+pub(crate) fn part(word: &str, lang: Lang) -> Option<&'static str> {
+    PARTS
+        .iter()
+        .find(|(ru, ..)| *ru == word)
+        .map(|&(_, ru, uk, en)| lang.pick(ru, uk, en))
+}
 
 /// Whether `c` is a Cyrillic letter (a Russian or Ukrainian descriptive index).
 pub(crate) fn cyrillic(c: char) -> bool {
@@ -313,6 +331,21 @@ mod tests {
         assert_eq!(localise("F_{и2}", Lang::Ru), "F_{и2}");
         // A subscript the table does not know (a user's name) is kept.
         assert_eq!(localise("J_{кор}, b_1", Lang::En), "J_{кор}, b_1");
-        assert_eq!(localise("J_{ред} + J_{кс}", Lang::En), "J_{red} + J_{gb}");
+        assert_eq!(localise("J_{ред} + J_{кс}", Lang::En), "J_{gr} + J_{gb}");
+        // The reducer's inertia and the reduced inertia are two symbols in every language.
+        for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+            assert_ne!(
+                localise("J_{ред}", lang),
+                quantity(Symbol::Inertia, "red", lang)
+            );
+        }
+        // Ukrainian sheets write Ukrainian words (issue 45): коробка швидкостей, маточина,
+        // ковзання, потрібне.
+        assert_eq!(
+            localise("J_{кс}, b_{ст}, P_{ск}, u^{треб}", Lang::Uk),
+            "J_{кш}, b_{мат}, P_{ковз}, u^{потр}"
+        );
+        assert_eq!(super::part("кс", Lang::Uk), Some("коробка швидкостей"));
+        assert_eq!(super::part("кор", Lang::En), None);
     }
 }

@@ -1,0 +1,48 @@
+//! The precision of the numbers a sheet's text prints, one place for every sheet (issue 45):
+//! what a drawing's table gives — four significant digits, an angle to 0,01°, a length in
+//! millimetres with its unit — so that no text block prints six or seven digits, nor a
+//! length in metres with a run of zeros (`0,004975 м` is `4,975 мм`).
+
+use super::captions::unit_in;
+use crate::scale::{format_fixed, format_sig, Lang};
+
+/// Significant digits of a value in a sheet's text.
+pub(crate) const SIG: usize = 4;
+/// Decimals of an angle in degrees in a sheet's text (0,01°).
+pub(crate) const ANGLE_DECIMALS: usize = 2;
+
+/// A value in a sheet's text: [`SIG`] significant digits.
+pub(crate) fn value(x: f64, lang: Lang) -> String {
+    format_sig(x, SIG, lang)
+}
+
+/// An angle given in radians, in degrees to [`ANGLE_DECIMALS`] with the degree sign.
+pub(crate) fn degrees(radians: f64, lang: Lang) -> String {
+    format!(
+        "{}°",
+        format_fixed(radians.to_degrees(), ANGLE_DECIMALS, lang)
+    )
+}
+
+/// A length given in metres, in millimetres to [`SIG`] digits with the unit: `316,3 мм`.
+pub(crate) fn mm(metres: f64, lang: Lang) -> String {
+    format!("{} {}", value(metres * 1e3, lang), unit_in("mm", lang))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{degrees, mm, value};
+    use crate::scale::Lang;
+
+    #[test]
+    fn a_sheet_prints_a_drawings_precision() {
+        // The review's strings (issue 45): α_w = 26,58075°, a_w = 316,276 (m),
+        // ρ = 0,004975 м, H = 0,46233 м.
+        assert_eq!(degrees(26.58075f64.to_radians(), Lang::Ru), "26,58°");
+        assert_eq!(mm(0.316276, Lang::Uk), "316,3 мм");
+        assert_eq!(mm(0.004975, Lang::Ru), "4,975 мм");
+        assert_eq!(mm(0.46233, Lang::En), "462,3 mm");
+        assert_eq!(value(5.43944, Lang::En), "5.439");
+        assert_eq!(degrees(38.0f64.to_radians(), Lang::Uk), "38,00°");
+    }
+}
