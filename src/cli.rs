@@ -133,6 +133,10 @@ pub(crate) enum Command {
         /// Small repetition counts (rough times, same errors).
         #[arg(long)]
         quick: bool,
+        /// Only the studio's rows, `studio edit <scene>`: for every shipped scene the median
+        /// time from an edit to its sheets as SVG and its report (what `tmm serve` answers).
+        #[arg(long)]
+        studio: bool,
         /// Folder holding shaper.toml and four-bar.toml.
         #[arg(long, default_value = "constructions")]
         scenes: PathBuf,

@@ -78,8 +78,9 @@ fn main() -> ExitCode {
             json,
             out,
             quick,
+            studio,
             scenes,
-        } => bench(json, &out, quick, scenes),
+        } => bench(json, &out, quick, studio, scenes),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -410,8 +411,18 @@ fn check(paths: &[PathBuf]) -> Result<(), Failure> {
     })
 }
 
-fn bench(json: bool, out: &Path, quick: bool, scenes: PathBuf) -> Result<(), Failure> {
-    let opts = tmm::bench::BenchOptions { scenes, quick };
+fn bench(
+    json: bool,
+    out: &Path,
+    quick: bool,
+    studio: bool,
+    scenes: PathBuf,
+) -> Result<(), Failure> {
+    let opts = tmm::bench::BenchOptions {
+        scenes,
+        quick,
+        studio,
+    };
     let b = tmm::bench::run(&opts).map_err(|e| Failure::construction(e.to_string()))?;
     let (md, js) = (b.to_markdown(), b.to_json());
     let dir = out.join("bench");

@@ -97,6 +97,8 @@ pub struct BenchOptions {
     /// Small repetition counts: checks the structure and the errors in well under a second
     /// of timing, the times themselves are rough.
     pub quick: bool,
+    /// Only the studio's edit rows (`tmm bench --studio`): nothing else is run.
+    pub studio: bool,
 }
 
 impl Default for BenchOptions {
@@ -104,6 +106,7 @@ impl Default for BenchOptions {
         Self {
             scenes: PathBuf::from("constructions"),
             quick: false,
+            studio: false,
         }
     }
 }
@@ -305,6 +308,13 @@ fn classes(opts: &BenchOptions) -> Result<Vec<Throughput>, BenchError> {
 /// turn, a failed differentiation or plate.
 pub fn run(opts: &BenchOptions) -> Result<Bench, BenchError> {
     let reps = Reps::new(opts.quick);
+    if opts.studio {
+        return Ok(Bench {
+            machine: machine(),
+            rows: Vec::new(),
+            throughput: studio::edit_rows(reps)?,
+        });
+    }
     let shaper = Subject::load(opts, "shaper")?;
     let four_bar = Subject::load(opts, "four-bar")?;
     let classes = classes(opts)?;
@@ -364,9 +374,33 @@ mod tests {
         let opts = BenchOptions {
             scenes: PathBuf::from("no-such-folder"),
             quick: true,
+            studio: false,
         };
         let e = run(&opts).expect_err("no scenes");
         assert!(e.to_string().contains("shaper.toml"), "{e}");
+    }
+
+    /// `--studio`: a row for every shipped scene (the scenes are in the binary, no folder
+    /// is read), each a time, and nothing else.
+    #[test]
+    fn the_studio_bench_times_every_shipped_scene_and_nothing_else() {
+        let opts = BenchOptions {
+            scenes: PathBuf::from("no-such-folder"),
+            quick: true,
+            studio: true,
+        };
+        let b = run(&opts).expect("the studio's rows");
+        assert!(b.rows.is_empty());
+        let names: Vec<&str> = b.throughput.iter().map(|t| t.name.as_str()).collect();
+        let want: Vec<String> = crate::studio::gallery::SHIPPED
+            .iter()
+            .map(|(stem, _)| format!("studio edit {stem}"))
+            .collect();
+        assert_eq!(names, want);
+        assert!(b
+            .throughput
+            .iter()
+            .all(|t| t.per_second.is_finite() && t.per_second > 0.0));
     }
 
     #[test]

@@ -34,6 +34,11 @@ pub struct Diagrams {
     pub second: Derivative,
     /// The displacement read off the plan at the numbered positions, m.
     pub s: Vec<f64>,
+    /// The segments S is read off, from the start of the working stroke to the charted
+    /// point at each numbered position (in that position's group), in the plan of positions'
+    /// mm at its μ_l: a figure that draws nothing, whose readings the plan's figure takes
+    /// where a sheet draws it ([`crate::study::Kinematics::plan_figure`]).
+    pub readings: Figure,
     /// S, v = |ω₁|·dS/dφ₁, a = ω₁²·d²S/dφ₁² at the numbered positions against the twin.
     pub rows: Vec<Row>,
 }
@@ -176,7 +181,9 @@ pub fn diagrams(
     };
     let s: Vec<f64> = numbered
         .iter()
-        .map(|(_, p)| {
+        .map(|&(i, p)| {
+            // The group the plan of positions draws this position in.
+            reader.set_group(i as u32 + 1);
             let d = p.built.p[k] - p1;
             reader.measure(p1, p.built.p[k]).value * d.dot(read_dir).signum()
         })
@@ -274,6 +281,7 @@ pub fn diagrams(
         first,
         second,
         s,
+        readings: reader.finish(),
         rows,
     }))
 }

@@ -41,11 +41,7 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
         Text::PlanOfPositions.get(lang),
         sc.l.caption(lang)
     );
-    let plan = Block::view(
-        a.plan.figure.clone(),
-        caption,
-        keyed(Key::MechanismScaleL, sc.l),
-    );
+    let plan = Block::view(a.plan_figure(), caption, keyed(Key::MechanismScaleL, sc.l));
     let plan: Run = vec![(plan, None)];
     // The structural scheme before the plan, the structural analysis after the plans.
     let (scheme, analysis): (Run, Run) = if structure {

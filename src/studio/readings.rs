@@ -81,16 +81,56 @@ fn same(row: &Row, r: &ReadAt) -> bool {
     a.is_finite() && !is_zero(a, row.scale) && (a - b).abs() <= SAME_VALUE * a.max(b)
 }
 
-/// A view (sheet, view) and how many rows of one position are read on it.
+/// A view (sheet, view) and how many rows of one key (a position, a quantity) are read on it.
 type ViewCount = ((usize, usize), usize);
+
+/// For each key (a row's position, or its quantity), how many of its rows are read on each
+/// view: `keys` gives each row's key (`None`: not counted), `views` the views holding a
+/// reading of its value.
+fn tally<K: PartialEq>(
+    keys: impl Iterator<Item = Option<K>>,
+    views: &[Vec<(usize, usize)>],
+) -> Vec<(K, Vec<ViewCount>)> {
+    let mut out: Vec<(K, Vec<ViewCount>)> = Vec::new();
+    for (key, v) in keys.zip(views) {
+        let Some(key) = key.filter(|_| !v.is_empty()) else {
+            continue;
+        };
+        let k = match out.iter().position(|(a, _)| *a == key) {
+            Some(k) => k,
+            None => {
+                out.push((key, Vec::new()));
+                out.len() - 1
+            }
+        };
+        for view in v {
+            match out[k].1.iter_mut().find(|(w, _)| w == view) {
+                Some(e) => e.1 += 1,
+                None => out[k].1.push((*view, 1)),
+            }
+        }
+    }
+    out
+}
+
+/// How many rows of `key` a [`tally`] counts on `view`.
+fn count<K: PartialEq>(tally: &[(K, Vec<ViewCount>)], key: &K, view: (usize, usize)) -> usize {
+    tally
+        .iter()
+        .find(|(a, _)| a == key)
+        .and_then(|(_, c)| c.iter().find(|(w, _)| *w == view))
+        .map_or(0, |e| e.1)
+}
 
 /// Where each row's value is read, in row order; `None` for a row computed by formula or
 /// not read as one segment.
 ///
 /// A value equal to several readings is taken from the view where most of the rows of its
 /// position (or angle) are read — a position's velocities are read off that position's plan,
-/// not off another plan where a vector happens to read the same — and within that view from
-/// the first reading in drawing order; a row of the whole scene takes the first in drawing
+/// not off another plan where a vector happens to read the same; where as many are, from the
+/// view whose rows are most of the row's quantity (the shaper's S at position 8 and its λ₂ at
+/// B1 both read 0,46 at 0,5 mm: S is taken off the plan of positions, where the S rows are
+/// read, λ₂ off the meshing picture); and within that view from the first reading in drawing
 /// order.
 pub fn read_at(rows: &[Row], plates: &[(PlateKind, Plate)]) -> Vec<Option<ReadAt>> {
     let all = placed(plates);
@@ -109,42 +149,31 @@ pub fn read_at(rows: &[Row], plates: &[(PlateKind, Plate)]) -> Vec<Option<ReadAt
             v
         })
         .collect();
-    // For each position (or angle), how many of its rows are read on each view.
-    let mut tally: Vec<(&At, Vec<ViewCount>)> = Vec::new();
-    for (row, v) in rows.iter().zip(&views) {
-        if row.key.at == At::Scene || v.is_empty() {
-            continue;
-        }
-        let k = match tally.iter().position(|(a, _)| **a == row.key.at) {
-            Some(k) => k,
-            None => {
-                tally.push((&row.key.at, Vec::new()));
-                tally.len() - 1
-            }
+    let positions = tally(
+        rows.iter()
+            .map(|r| (r.key.at != At::Scene).then_some(&r.key.at)),
+        &views,
+    );
+    let quantities = tally(rows.iter().map(|r| Some(r.key.symbol)), &views);
+    let all_rows = tally(rows.iter().map(|_| Some(())), &views);
+    // How many rows of the row's position a view reads, then what share of the rows it
+    // reads are of the row's quantity.
+    let score = |row: &Row, view: (usize, usize)| {
+        let at = match row.key.at {
+            At::Scene => 0,
+            _ => count(&positions, &&row.key.at, view),
         };
-        for view in v {
-            match tally[k].1.iter_mut().find(|(w, _)| w == view) {
-                Some(e) => e.1 += 1,
-                None => tally[k].1.push((*view, 1)),
-            }
-        }
-    }
-    let score = |at: &At, view: (usize, usize)| match at {
-        At::Scene => 0,
-        at => tally
-            .iter()
-            .find(|(a, _)| *a == at)
-            .and_then(|(_, c)| c.iter().find(|(w, _)| *w == view))
-            .map_or(0, |e| e.1),
+        let of_kind = count(&quantities, &row.key.symbol, view) as f64;
+        (at, of_kind / count(&all_rows, &(), view).max(1) as f64)
     };
     rows.iter()
         .zip(&views)
         .map(|(row, candidates)| {
-            // The first of the best: `max_by_key` keeps the last of equals, so reversed.
-            let best = candidates
-                .iter()
-                .rev()
-                .max_by_key(|&&v| score(&row.key.at, v))?;
+            // The first of the best: `max_by` keeps the last of equals, so reversed.
+            let best = candidates.iter().rev().max_by(|&&a, &&b| {
+                let (a, b) = (score(row, a), score(row, b));
+                a.0.cmp(&b.0).then(a.1.total_cmp(&b.1))
+            })?;
             all.iter()
                 .find(|r| (r.sheet, r.view) == *best && same(row, r))
                 .copied()
@@ -161,15 +190,60 @@ mod tests {
     use crate::studio::gallery;
     use crate::study::Session;
 
+    /// The displacement rows S of the kinematic diagrams (S(φ₁) of a slider or of the
+    /// charted point) as the kinematic study gives them, and the title of the plan of
+    /// positions they are read off; none for a scene without a kinematic study.
+    fn diagram_s_rows(session: &Session<'_>) -> (Vec<Row>, String) {
+        let Some(k) = session
+            .kin_scales()
+            .and_then(|sc| session.kinematics(&sc))
+            .ok()
+        else {
+            return (Vec::new(), String::new());
+        };
+        let rows = k.diagrams.as_ref().map_or_else(Vec::new, |d| {
+            d.rows
+                .iter()
+                .filter(|r| r.key.symbol == Symbol::Displacement)
+                .cloned()
+                .collect()
+        });
+        (rows, k.plan.figure.title.clone())
+    }
+
+    /// What the rows of the shipped scenes came to.
+    #[derive(Default)]
+    struct Counts {
+        /// Rows read as one segment of a sheet.
+        mapped: usize,
+        /// Rows computed by formula.
+        computed: usize,
+        /// Graphical rows worked out from several readings, or read as zero.
+        derived: usize,
+        /// Plan rows (a velocity or acceleration, not zero) read as no segment.
+        missed: Vec<String>,
+        /// S rows of the kinematic diagrams: read as a segment of the plan of positions.
+        s_mapped: usize,
+        /// S rows that read zero (the start of the stroke: no segment).
+        s_zero: usize,
+        /// S rows not zero and read as no segment of the plan of positions.
+        s_missed: Vec<String>,
+        /// Other rows placed on the plan of positions, where only S is read (a value that
+        /// reads the same there by chance).
+        off_plan: Vec<String>,
+    }
+
     /// Over every shipped scene, exact and read to 0,5 mm: each row matched to a reading is
     /// a segment of its sheet whose length, read under the drafting model and times its view's
     /// μ, gives the row's value back (recomputed from the sheet coordinates, not taken from
     /// the reading); a row computed by formula is matched to none; every velocity and
-    /// acceleration read off a plan (a vector of the plan, not zero) is matched.
+    /// acceleration read off a plan (a vector of the plan, not zero) is matched, and every
+    /// displacement S of the kinematic diagrams (not zero) is matched to a segment of the
+    /// plan of positions, where it is read — and no other row is (λ₂ at B1 of the shaper
+    /// reads 0,46 as S at position 8 does).
     #[test]
     fn every_row_read_off_a_sheet_is_a_segment_of_it_giving_its_value() {
-        let (mut mapped, mut computed, mut derived) = (0, 0, 0);
-        let mut missed: Vec<String> = Vec::new();
+        let mut c = Counts::default();
         for &(stem, _) in gallery::SHIPPED {
             let s = gallery::scene(stem).expect("a shipped scene");
             for drafting in [Drafting::EXACT, Drafting::HAND] {
@@ -178,6 +252,7 @@ mod tests {
                 let Ok(report) = session.report() else {
                     continue;
                 };
+                let (s_rows, plan_title) = diagram_s_rows(&session);
                 let found = read_at(&report.rows, &plates);
                 for (row, at) in report.rows.iter().zip(found) {
                     let name = format!(
@@ -188,19 +263,24 @@ mod tests {
                         row.position(),
                         row.graphical
                     );
+                    let s_row = s_rows.contains(row);
                     if !is_graphical(row) {
                         assert_eq!(at, None, "{name}");
-                        computed += 1;
+                        c.computed += 1;
                         continue;
                     }
                     let Some(at) = at else {
+                        let zero = is_zero(row.graphical, row.scale);
                         let on_plan = row.method == Method::Plan
-                            && matches!(row.key.symbol, Symbol::Velocity | Symbol::Acceleration)
-                            && !is_zero(row.graphical, row.scale);
-                        if on_plan {
-                            missed.push(name);
+                            && matches!(row.key.symbol, Symbol::Velocity | Symbol::Acceleration);
+                        if on_plan && !zero {
+                            c.missed.push(name);
+                        } else if s_row && !zero {
+                            c.s_missed.push(name);
+                        } else if s_row {
+                            c.s_zero += 1;
                         }
-                        derived += 1;
+                        c.derived += 1;
                         continue;
                     };
                     let view = &plates[at.sheet].1.views[at.view];
@@ -211,19 +291,51 @@ mod tests {
                         (read - want).abs() <= 1e-9 * want,
                         "{name}: the segment reads {read}, the row {want}"
                     );
-                    mapped += 1;
+                    if s_row {
+                        assert_eq!(view.figure.title, plan_title, "{name}: S off another view");
+                        c.s_mapped += 1;
+                    } else if view.figure.title == plan_title {
+                        c.off_plan.push(name);
+                    }
+                    c.mapped += 1;
                 }
             }
         }
         eprintln!(
-            "rows read off a sheet as one segment: {mapped}; computed by formula: {computed}; \
-             graphical but worked out from readings (or read as zero): {derived}"
+            "rows read off a sheet as one segment: {}; computed by formula: {}; \
+             graphical but worked out from readings (or read as zero): {}; \
+             S of the kinematic diagrams: {} read off the plan of positions, {} zero, {} not found",
+            c.mapped,
+            c.computed,
+            c.derived,
+            c.s_mapped,
+            c.s_zero,
+            c.s_missed.len()
         );
         assert!(
-            missed.is_empty(),
-            "{} plan rows not found: {missed:#?}",
-            missed.len()
+            c.missed.is_empty(),
+            "{} plan rows not found: {:#?}",
+            c.missed.len(),
+            c.missed
         );
-        assert!(mapped > 1000, "{mapped} rows read off a sheet");
+        assert!(
+            c.s_missed.is_empty(),
+            "{} S rows not found on the plan of positions: {:#?}",
+            c.s_missed.len(),
+            c.s_missed
+        );
+        assert!(
+            c.off_plan.is_empty(),
+            "rows placed on the plan of positions: {:#?}",
+            c.off_plan
+        );
+        assert!(c.mapped > 1000, "{} rows read off a sheet", c.mapped);
+        // Four scenes chart a point over 12 positions, exact and at 0,5 mm: at most the
+        // stroke's start reads zero in each.
+        assert!(
+            c.s_mapped >= 4 * 2 * 11,
+            "{} S rows read off a plan",
+            c.s_mapped
+        );
     }
 }

@@ -67,6 +67,16 @@ impl Kinematics {
     pub fn velocity_plans(&self) -> Vec<Option<&KinPlan>> {
         self.velocity.iter().map(|v| v.plan()).collect()
     }
+    /// The plan of positions as the kinematic sheet draws it: its figure, with the segments
+    /// the displacement S of the diagrams is read off ([`Diagrams::readings`]) when a point
+    /// is charted — they draw nothing, and travel with the figure wherever it is placed.
+    pub fn plan_figure(&self) -> Figure {
+        let plan = self.plan.figure.clone();
+        match &self.diagrams {
+            Some(d) => plan.joined(d.readings.clone()),
+            None => plan,
+        }
+    }
     /// Every reading against its analytic twin, in report order.
     pub fn rows(&self) -> Vec<Row> {
         kinematics::rows(
