@@ -63,6 +63,19 @@ impl Arrow {
     }
 }
 
+/// The steps of a view in the order they are painted: the recorder's order, except that the
+/// hinges (joints) come last, so that a link or a line drawn after its hinge stops at the
+/// hinge's white circle as on the drawing board, instead of running to its centre. (A slider
+/// block keeps its place: the friction pictures draw their forces across the block.) The
+/// replay addresses steps by id, so the order is the painter's only.
+pub(crate) fn hinges_last(steps: &[Step]) -> impl Iterator<Item = &Step> {
+    let pair = |s: &&Step| matches!(s.item, Item::Joint { .. });
+    steps
+        .iter()
+        .filter(move |s| !pair(s))
+        .chain(steps.iter().filter(pair))
+}
+
 /// The marks of one step's item under `map` (its label is laid out with the plate's others,
 /// see [`layout`](super::layout)).
 pub(crate) fn step_marks(step: &Step, map: Map) -> Vec<Mark> {

@@ -1,12 +1,11 @@
 //! The SVG writer: a plate as one deterministic SVG document printing 1:1 in millimetres.
 
-use super::items::step_marks;
+use super::items::{hinges_last, step_marks};
 use super::labels::{layout, text_block_lines, Layout, Leader};
 use super::path::{num, Map, PathData};
 use super::sheet::{frame_marks, title_block_marks};
 use super::style::{Mark, Paint, Pen};
 use super::View;
-use crate::construct::{Item, Step};
 use svg::node::element::{Group, Path, Rectangle};
 use svg::node::Blob;
 use svg::Document;
@@ -160,19 +159,6 @@ fn pen_attrs(p: Path, pen: Pen) -> Path {
         let dash: Vec<String> = pen.dash.iter().map(|&x| num(x)).collect();
         p.set("stroke-dasharray", dash.join(" "))
     }
-}
-
-/// The steps of a view in the order they are painted: the recorder's order, except that the
-/// hinges (joints) come last, so that a link or a line drawn after its hinge stops at the
-/// hinge's white circle as on the drawing board, instead of running to its centre. (A slider
-/// block keeps its place: the friction pictures draw their forces across the block.) The
-/// replay addresses steps by id, so the order is the painter's only.
-fn hinges_last(steps: &[Step]) -> impl Iterator<Item = &Step> {
-    let pair = |s: &&Step| matches!(s.item, Item::Joint { .. });
-    steps
-        .iter()
-        .filter(move |s| !pair(s))
-        .chain(steps.iter().filter(pair))
 }
 
 /// A view: one group per step (hinges last, [`hinges_last`]), its labels, then its caption

@@ -41,7 +41,7 @@ mod tests {
         assert_eq!(degrees(26.58075f64.to_radians(), Lang::Ru), "26,58°");
         assert_eq!(mm(0.316276, Lang::Uk), "316,3 мм");
         assert_eq!(mm(0.004975, Lang::Ru), "4,975 мм");
-        assert_eq!(mm(0.46233, Lang::En), "462,3 mm");
+        assert_eq!(mm(0.46233, Lang::En), "462.3 mm");
         assert_eq!(value(5.43944, Lang::En), "5.439");
         assert_eq!(degrees(38.0f64.to_radians(), Lang::Uk), "38,00°");
     }

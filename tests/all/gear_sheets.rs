@@ -228,14 +228,14 @@ fn rack_positions_are_never_detached_fragments() {
 }
 
 /// The method cell of every table row: a table headed "graphical" lists no row computed by
-/// formula, and the formula rows stand in a table of their own headed "by formula" /
+/// formula, and the formula rows stand in a table of their own headed "computed" /
 /// "check".
 #[test]
 fn formula_rows_are_never_listed_as_graphical() {
     let words = |lang: Lang| match lang {
-        Lang::Ru => ("графически", "формула", "по формуле"),
-        Lang::Uk => ("графічно", "формула", "за формулою"),
-        Lang::En => ("graphical", "formula", "by formula"),
+        Lang::Ru => ("графически", "формула", "вычислено"),
+        Lang::Uk => ("графічно", "формула", "обчислено"),
+        Lang::En => ("graphical", "formula", "computed"),
     };
     for name in GEAR_SCENES {
         let s = scene(name);

@@ -115,7 +115,7 @@ fn marks(plate: &Plate) -> Vec<(DxfLayer, Mark)> {
     let mut out: Vec<(DxfLayer, Mark)> = frame.map(|m| (DxfLayer::Frame, m)).collect();
     for (k, view) in plate.views.iter().enumerate() {
         let map = Map::figure(view.origin);
-        for step in &view.figure.steps {
+        for step in super::items::hinges_last(&view.figure.steps) {
             let layer = DxfLayer::Role(step.role);
             out.extend(step_marks(step, map).into_iter().map(|m| (layer, m)));
         }
