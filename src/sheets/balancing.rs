@@ -9,7 +9,7 @@ use super::BuildError;
 use crate::balancing::{Balancing, Correction, Plane};
 use crate::check::{Row, Symbol};
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang};
+use crate::scale::{format_fixed, Lang};
 use crate::scene::Key;
 use crate::study::Session;
 
@@ -93,7 +93,7 @@ fn rotor_blocks(b: &Balancing, lang: Lang) -> Vec<Block> {
         .collect()
 }
 
-/// A number of the sheet: 4 significant digits; beyond 10⁶ or under 10⁻⁴ as `1,5·10^{7}`,
+/// A number of the sheet: [`super::digits::value`]; beyond 10⁶ or under 10⁻⁴ as `1,5·10^{7}`,
 /// so that no value widens a line past the sheet.
 fn num(x: f64, lang: Lang) -> String {
     let a = x.abs();
@@ -101,12 +101,12 @@ fn num(x: f64, lang: Lang) -> String {
         let e = a.log10().floor();
         format!(
             "{}·10^{{{}}}",
-            format_sig(x / 10f64.powf(e), 4, lang),
+            super::digits::value(x / 10f64.powf(e), lang),
             e as i32
         )
         .replace("{-", "{−")
     } else {
-        format_sig(x, 4, lang)
+        super::digits::value(x, lang)
     }
 }
 

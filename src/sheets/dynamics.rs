@@ -6,6 +6,7 @@
 //! part drawing is a sheet of its own ([`super::flywheel`]).
 
 use super::captions::{unit_in, DynamicsText, Text};
+use super::digits::value as num;
 use super::layout::{keyed, lay_out, quantity, Block, Column, Results};
 use super::BuildError;
 use crate::check::{Finding, NoFlywheel, Route};
@@ -125,10 +126,6 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         lang,
     );
     lay_out(sheet, blocks, "dynamics", &title, lang)
-}
-
-fn num(x: f64, lang: Lang) -> String {
-    format_sig(x, 4, lang)
 }
 
 /// The data and the results as text.

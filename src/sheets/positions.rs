@@ -2,6 +2,7 @@
 //! construction, trajectories and extreme positions, θ, H and K.
 
 use super::captions::Text;
+use super::digits::ANGLE_DECIMALS;
 use super::layout::{lay_out, Block, ScaleKey};
 use super::BuildError;
 use crate::check::is_zero;
@@ -213,7 +214,7 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
             .find(|p| (p.phi - phi).abs() < 1e-9)
             .map_or_else(String::new, |p| p.label.clone())
     };
-    let deg = |a: f64| format_fixed(a.to_degrees().rem_euclid(360.0), 2, lang);
+    let deg = |a: f64| format_fixed(a.to_degrees().rem_euclid(360.0), ANGLE_DECIMALS, lang);
     let mut v = vec![format!(
         "{}: {} (φ_1 = {}°), {} (φ_1 = {}°)",
         Text::ExtremePositions.get(lang),
@@ -237,9 +238,13 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     v.push(format!(
         "{} {start} → {other}{why}: {}°, {} — {}°",
         Text::WorkingStroke.get(lang),
-        format_fixed(ex.work_travel.to_degrees(), digits(2), lang),
+        format_fixed(ex.work_travel.to_degrees(), digits(ANGLE_DECIMALS), lang),
         Text::Return.get(lang),
-        format_fixed(360.0 - ex.work_travel.to_degrees(), digits(2), lang)
+        format_fixed(
+            360.0 - ex.work_travel.to_degrees(),
+            digits(ANGLE_DECIMALS),
+            lang
+        )
     ));
     for r in &ex.ranges {
         match r.coord {
