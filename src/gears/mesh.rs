@@ -24,6 +24,17 @@ pub const LAMBDA_CLIP: f64 = 4.0;
 /// another point (`N₁ P B₁` in a row under P).
 pub const NAME_WITHIN_MM: f64 = 6.0;
 
+/// Where the arc of α_w stands from the pole, a fraction of T–T's half length: past the
+/// teeth about P.
+const ALPHA_MARK_AT: f64 = 0.75;
+/// How far the dimension line of a_w stands past the larger tip circle, mm.
+const A_W_CLEAR_MM: f64 = 12.0;
+/// The radii that name a wheel's circles (tip, reference, base, root, operating): their
+/// angles from the line of centres' far end, radians, clear of the centre's support.
+const NAME_AT: [f64; 5] = [1.2, 0.8, 0.4, -0.4, -0.8];
+/// Where a radius's name stands along it, a fraction of the radius.
+const NAME_ALONG: f64 = 0.7;
+
 /// The meshing picture and what was read off it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Meshing {
@@ -82,13 +93,14 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
             radius: r,
         })
     };
-    for (c, r) in [(o1, pair.rw[0]), (o2, pair.rw[1])] {
+    for (i, (c, r)) in [(o1, pair.rw[0]), (o2, pair.rw[1])].into_iter().enumerate() {
         rec.draw(
             "the operating circle r_w",
             circle(c, mm(r)),
             Role::Axis,
             &[],
         );
+        radius(&mut rec, c, mm(r), (i, 4), &format!("r_{{w{}}}", i + 1));
     }
     let pid = rec.point(
         "the pole P",
@@ -137,19 +149,18 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         &[nn],
     );
     rec.keep_label_within(n2id, NAME_WITHIN_MM);
-    rec.draw(
-        "O₁N₁",
-        Item::Segment(Segment::new(o1, n1)),
-        Role::Construction,
-        &[n1id],
-    );
-    rec.draw(
-        "O₂N₂",
-        Item::Segment(Segment::new(o2, n2)),
-        Role::Construction,
-        &[n2id],
-    );
+    for (note, o, n, id) in [("O₁N₁", o1, n1, n1id), ("O₂N₂", o2, n2, n2id)] {
+        let seg = Item::Segment(Segment::new(o, n));
+        rec.draw(note, seg, Role::Construction, &[id]);
+    }
     let g = rec.measure(n1, n2);
+    marks(
+        &mut rec,
+        (p, d),
+        (tt, nn),
+        half,
+        (o1, o2, mm(pair.ra[0].max(pair.ra[1]))),
+    );
     // 6–7. The circles of both wheels, the involute of wheel 1 through P by the compass.
     let ci = circles_and_involute(&mut rec, pair, mu, [o1, o2], p)?;
     // 8–9. Three teeth of each wheel, the tooth of each through P.
@@ -193,6 +204,52 @@ pub fn meshing(pair: &Pair, scale: Scale, ctx: &Context) -> Result<Meshing, Gear
         compass: (ci.deviation * mu, ci.arc_minus_chord * mu),
         lambda,
     })
+}
+
+/// The angle of engagement α_w between T–T (`tt`) and N–N (`nn`) at the pole `p` (the line of
+/// action along `d`), marked out along both past the teeth (`half` the tangent's half
+/// length); the centre distance a_w from `o1` to `o2`, dimensioned clear of the larger
+/// wheel's tip circle (`tip`, mm).
+fn marks(
+    rec: &mut Recorder,
+    (p, d): (DVec2, DVec2),
+    (tt, nn): (StepId, StepId),
+    half: f64,
+    (o1, o2, tip): (DVec2, DVec2, f64),
+) {
+    let reach = half * ALPHA_MARK_AT;
+    let alpha = rec.draw(
+        "the angle of engagement α_w",
+        Item::Angle(Arc::between(p, reach, DVec2::X, d)),
+        Role::Dimension,
+        &[tt, nn],
+    );
+    let mid = (DVec2::X + d).normalize_or_zero();
+    rec.label(alpha, "α_{w}", p + mid * (reach + 1.0), mid);
+    rec.dimension(
+        "the centre distance a_w",
+        (o1, o2, tip + A_W_CLEAR_MM),
+        "a_{w}",
+    );
+}
+
+/// A circle of wheel `i` named as a drawing names it: the radius `r` (mm) from the centre
+/// `c` with its arrow on the circle and its name along it, the `k`-th of the wheel's radii
+/// on its far side from the pole ([`NAME_AT`]).
+fn radius(rec: &mut Recorder, c: DVec2, r: f64, (i, k): (usize, usize), name: &str) {
+    let far = if i == 0 { -DVec2::Y } else { DVec2::Y };
+    let u = rotate(far, NAME_AT[k]);
+    let id = rec.draw(
+        format!("the radius {name}"),
+        Item::Vector {
+            from: c,
+            to: c + u * r,
+        },
+        Role::Dimension,
+        &[],
+    );
+    let side = if u.x < 0.0 { u.perp() } else { -u.perp() };
+    rec.label(id, name, c + u * r * NAME_ALONG, side);
 }
 
 /// Step 1 of the meshing picture: the centres O₁, O₂ as fixed joints and the line of centres.
@@ -244,15 +301,23 @@ fn circles_and_involute(
         })
     };
     let [o1, o2] = o;
-    // 6. The circles of both wheels.
+    // 6. The circles of both wheels, each named on the wheel's far side from the pole
+    // (wheel 1 below, wheel 2 above), the outermost nearest the line of centres.
     for (i, c) in [o1, o2].into_iter().enumerate() {
-        for r in [pair.rb[i], pair.r[i], pair.ra[i], pair.rf[i]] {
+        let circles = [
+            ("a", pair.ra[i]),
+            ("", pair.r[i]),
+            ("b", pair.rb[i]),
+            ("f", pair.rf[i]),
+        ];
+        for (k, (sub, r)) in circles.into_iter().enumerate() {
             rec.draw(
                 "a circle of the wheel",
                 circle(c, mm(r)),
                 Role::Construction,
                 &[],
             );
+            radius(rec, c, mm(r), (i, k), &format!("r_{{{sub}{}}}", i + 1));
         }
     }
     // 7. The involute of wheel 1 through P by the compass (N₁P in 4 parts).
@@ -397,6 +462,42 @@ fn roll(rb: f64, ry: f64) -> f64 {
     ((ry / rb).powi(2) - 1.0).max(0.0).sqrt()
 }
 
+/// The diagram's axis of λ through N₁, a thin solid line as a diagram's axis is drawn, over
+/// the whole λ the curves reach (`lo`…`hi`, λ units): a tick and its number at every whole
+/// λ, its name at the top.
+fn lambda_axis(rec: &mut Recorder, (lo, hi): (f64, f64)) {
+    let (lo, hi) = (lo.floor().min(0.0), hi.ceil().max(0.0));
+    let (bottom, top) = (
+        DVec2::new(0.0, lo * LAMBDA_MM),
+        DVec2::new(0.0, hi * LAMBDA_MM),
+    );
+    let axis = rec.draw(
+        "the axis of λ",
+        Item::Segment(Segment::new(bottom, top)),
+        Role::Construction,
+        &[],
+    );
+    rec.label(axis, "λ", top, DVec2::Y);
+    for k in (lo as i32..=hi as i32).filter(|&k| k != 0) {
+        let at = DVec2::new(0.0, f64::from(k) * LAMBDA_MM);
+        let tick = rec.draw(
+            format!("the tick λ = {k}"),
+            Item::Segment(Segment::new(at, at - DVec2::X * TICK_MM)),
+            Role::Construction,
+            &[axis],
+        );
+        rec.label(
+            tick,
+            k.to_string().replace('-', "−"),
+            at - DVec2::X * TICK_MM,
+            -DVec2::X,
+        );
+    }
+}
+
+/// The length of a tick of the λ axis, mm.
+const TICK_MM: f64 = 2.0;
+
 /// The diagram of specific sliding: the abscissa N₁N₂ as laid off on the picture (`g` read,
 /// m), the ordinates λ₁, λ₂ at [`LAMBDA_MM`] per unit, the curves through 41 points and the
 /// values read at B₁, P, B₂ (`ends` and `pole`: figure mm from N₁).
@@ -428,6 +529,7 @@ fn sliding_diagram(
     );
     let _ = n2;
     let clip = |v: f64| v.clamp(-LAMBDA_CLIP, LAMBDA_CLIP);
+    let mut reach = (0.0_f64, 0.0_f64);
     for (i, name) in ["λ_1", "λ_2"].into_iter().enumerate() {
         let pts: Vec<DVec2> = (0..=80)
             .map(|k| {
@@ -436,6 +538,9 @@ fn sliding_diagram(
             })
             .filter(|q| q.y.abs() < LAMBDA_CLIP * LAMBDA_MM)
             .collect();
+        for q in &pts {
+            reach = (reach.0.min(q.y / LAMBDA_MM), reach.1.max(q.y / LAMBDA_MM));
+        }
         let id = rec.draw(
             format!("the curve {name}"),
             Item::Curve {
@@ -453,6 +558,7 @@ fn sliding_diagram(
             rec.label(id, name, *end, DVec2::new(0.0, 1.0));
         }
     }
+    lambda_axis(&mut rec, reach);
     let _ = g_read;
     let mut out = Vec::new();
     for (name, x) in [("B1", ends[0]), ("P", pole), ("B2", ends[1])] {

@@ -181,6 +181,8 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
     ));
     let items = [("m", M::FlywheelMass, "kg"), ("K_{m}", M::ShapeM, "")];
     explain_words(w, &items);
+    let verdict = crate::sheets::flywheel_verdict(d, lang).join(" ");
+    w.doc.par(&[label(&verdict)]);
     w.doc.say(w.word(N::RimSpeed));
     let v = s.rim_speed(d.w_avg);
     w.formula(&format!(

@@ -154,6 +154,12 @@ pub struct TitleBlock {
     pub sheet_no: u32,
     /// Number of sheets.
     pub sheets: u32,
+    /// The part's mass in kg as written in the «Масса» cell (a part drawing's; empty on a
+    /// scheme).
+    pub mass: String,
+    /// The part's material designation, the cell under the title (ГОСТ 2.104 graph 3; empty
+    /// on a scheme).
+    pub material: String,
 }
 
 /// Captions of the title block cells in one language (the explanatory note's frames write
@@ -433,6 +439,20 @@ fn filling_into(tb: &TitleBlock, out: &mut Vec<Placed>) {
         3.5,
         Align::Middle,
     ));
+    // A part drawing's mass (kg, ГОСТ 2.104 graph 5) and material (graph 3); a scheme has
+    // neither.
+    if !tb.mass.is_empty() {
+        out.push(in_cell(
+            (150.0, 20.0, 167.0, 35.0),
+            &tb.mass,
+            3.5,
+            Align::Middle,
+        ));
+    }
+    if !tb.material.is_empty() {
+        let cell = (65.0, 40.0, RIGHT, 55.0);
+        wrapped_in_cell(cell, &tb.material, 5.0, TITLE_MIN_MM, Align::Middle, out);
+    }
 }
 
 /// The «Лист N» and «Листов M» cells (captions and numbers together).

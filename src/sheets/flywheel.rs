@@ -42,7 +42,15 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             size_mm: TEXT_MM,
         },
     ];
-    let title = super::title_block(session.scene(), kind.get(lang), d.wheel.scale, lang);
+    let mut title = super::title_block(session.scene(), kind.get(lang), d.wheel.scale, lang);
+    // A part drawing's title block gives its mass, kg, and its material.
+    title.mass = format_sig(d.size.mass, 3, lang);
+    let grade = if d.spec.flywheel.cast_iron() {
+        DynamicsText::CastIronGrade
+    } else {
+        DynamicsText::SteelGrade
+    };
+    title.material = grade.get(lang).to_string();
     lay_out_smallest(&SIZES, blocks, "flywheel", &title, lang)
 }
 
@@ -99,6 +107,7 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
             unit_in("kg", lang),
         ),
     ];
+    lines.extend(verdict(d, lang));
     if s.kind == FlywheelKind::Rim {
         lines.push(
             DynamicsText::SpokeSections
@@ -107,6 +116,42 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         );
     }
     lines
+}
+
+/// The relative margin within which the δ a flywheel gives still meets the δ asked: the
+/// printed 1/δ's last digit.
+const DELTA_MARGIN: f64 = 1e-3;
+
+/// The conclusion on the flywheel a hand-in draws (sized from the construction's J_м): the δ
+/// it gives against the δ asked and, when it falls short, by how much the construction's
+/// J_м is under the exact one and the J_м and D that keep δ (lines of label markup; the sheet
+/// writes a line each, the note one paragraph).
+pub(crate) fn verdict(d: &Dynamics, lang: Lang) -> Vec<String> {
+    let inverse = |x: f64| format!("1/{}", format_sig(1.0 / x, 3, lang));
+    let (got, asked) = (d.delta_of[0], d.spec.delta);
+    let met = got <= asked * (1.0 + DELTA_MARGIN);
+    let first = DynamicsText::DeltaVerdict
+        .get(lang)
+        .replace("{got}", &inverse(got))
+        .replace("{rel}", if met { "≤" } else { ">" })
+        .replace("{asked}", &inverse(asked));
+    if met {
+        return vec![first, DynamicsText::DeltaMet.get(lang).to_string()];
+    }
+    let short = 100.0 * (1.0 - d.size.j / d.exact.j_fw);
+    vec![
+        first,
+        DynamicsText::DeltaShort
+            .get(lang)
+            .replace("{pct}", &format_fixed(short, 1, lang))
+            .replace("{n}", &d.labels.len().to_string()),
+        DynamicsText::DeltaNeeds
+            .get(lang)
+            .replace("{exact}", &format_sig(d.exact.j_fw, 4, lang))
+            .replace("{kgm2}", &unit_in("kg*m^2", lang))
+            .replace("{d}", &format_fixed(d.exact_size.d * 1e3, 0, lang))
+            .replace("{mm}", &unit_in("mm", lang)),
+    ]
 }
 
 /// Every dimension with the proportion it follows (`d_{1}` = 0,2D) and its value, mm.

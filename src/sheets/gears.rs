@@ -262,10 +262,10 @@ fn closing_lines(t: &crate::gears::TrainStudy, lang: Lang) -> Vec<String> {
             let (s, w) = c.mesh;
             format!(
                 "m = {} {mm}, m_{{{}-{}}} = {} {mm} ({})",
-                format_sig(tr_.module * 1e3, 5, lang),
+                super::digits::value(tr_.module * 1e3, lang),
                 tr_.wheels[s].name,
                 tr_.wheels[w].name,
-                format_sig(c.module * 1e3, 5, lang),
+                super::digits::value(c.module * 1e3, lang),
                 GearText::ClosingModule.get(lang),
             )
         })
@@ -481,7 +481,7 @@ impl Filling {
         // μ_ω beside the plan, at the end of its reading line, as the textbook writes it.
         let scale_w = format!(
             "μ_{{ω}} = μ_{{v}}/(μ_{{l}}·H) = {} {}",
-            format_sig(tri.scale_w.value(), 6, lang),
+            super::digits::value(tri.scale_w.value(), lang),
             tri.scale_w.quantity.unit(lang),
         );
         let figure = tri.figure.clone().with_text(
@@ -506,9 +506,9 @@ impl Filling {
                 "{head}u_{{{}-{}}}{sup} = {} ({}), {} ({})",
                 tr_.shafts[tr_.input],
                 tr_.shafts[tr_.output],
-                format_sig(s.ratio, 6, lang),
+                super::digits::value(s.ratio, lang),
                 GearText::Willis.get(lang),
-                format_sig(s.triangles.ratio, 6, lang),
+                super::digits::value(s.triangles.ratio, lang),
                 GearText::ByTriangles.get(lang),
             ));
         }

@@ -18,6 +18,7 @@ mod gears;
 #[cfg(test)]
 mod gears_tables_tests;
 mod layout;
+pub(crate) use flywheel::verdict as flywheel_verdict;
 pub(crate) use kinematics::verdict_lines;
 pub use layout::ScaleKey;
 mod kinematics;
@@ -125,6 +126,9 @@ fn title_block(scene: &Scene, sheet_title: &str, plan: Scale, lang: Lang) -> Tit
         // Numbered across the scene by `build_all`.
         sheet_no: 1,
         sheets: 1,
+        // A part drawing's own (the flywheel's sheet fills them).
+        mass: String::new(),
+        material: String::new(),
     }
 }
 

@@ -278,7 +278,8 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     v.push(if stated {
         k
     } else {
-        format!("θ = {}, {k}", super::digits::degrees(ex.theta, lang))
+        let theta = format_fixed(ex.theta.to_degrees(), digits(ANGLE_DECIMALS), lang);
+        format!("θ = {theta}°, {k}")
     });
     v
 }

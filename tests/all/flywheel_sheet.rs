@@ -209,3 +209,57 @@ fn no_flywheel_no_part_sheet() {
         "{msg}"
     );
 }
+
+/// The part drawing's title block gives the flywheel's mass (kg, 3 significant digits) and its
+/// material (ГОСТ 2.104 graphs 5 and 3); the sheet concludes on δ: the shaper's flywheel,
+/// sized from the construction's J_м, gives δ over [δ] and the sheet says by how much J_м is
+/// short and which J_м and D keep δ — the numbers worked here from the study's.
+#[test]
+fn the_part_sheet_names_its_mass_and_material_and_concludes_on_delta() {
+    for (scene, material) in [
+        ("shaper.toml", "СЧ 15 ГОСТ 1412–85"),
+        ("v-engine.toml", "Сталь 35Л ГОСТ 977–88"),
+    ] {
+        let s = load(scene);
+        let session = Session::new(&s, Drafting::HAND);
+        let d = session.dynamics().unwrap_or_else(|e| panic!("{e}"));
+        let p = tmm::sheets::build(&session, PlateKind::Flywheel, Lang::Ru)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .remove(0);
+        let tb = &p.title_block;
+        let mass = format!("{:.3}", d.size.mass);
+        let sig3 = tmm::scale::format_sig(d.size.mass, 3, Lang::Ru);
+        assert_eq!(tb.mass, sig3, "{scene}: m = {mass}");
+        assert_eq!(tb.material, material, "{scene}");
+        let lines: Vec<&str> = p
+            .texts
+            .iter()
+            .flat_map(|t| t.lines.iter())
+            .map(String::as_str)
+            .collect();
+        let (got, asked) = (d.delta_of[0], d.spec.delta);
+        assert!(
+            got > asked,
+            "{scene}: δ {got} within {asked}: the test wants a flywheel short"
+        );
+        let inv = |x: f64| tmm::scale::format_sig(1.0 / x, 3, Lang::Ru);
+        let first = format!("Вывод: δ = 1/{} > [δ] = 1/{}.", inv(got), inv(asked));
+        let at = lines
+            .iter()
+            .position(|l| *l == first)
+            .unwrap_or_else(|| panic!("{scene}: no «{first}» in {lines:?}"));
+        let short = 100.0 * (1.0 - d.size.j / d.exact.j_fw);
+        let pct = tmm::scale::format_fixed(short, 1, Lang::Ru);
+        assert!(
+            lines[at + 1].contains(&format!("на {pct} % меньше точного")),
+            "{}",
+            lines[at + 1]
+        );
+        let d_mm = tmm::scale::format_fixed(d.exact_size.d * 1e3, 0, Lang::Ru);
+        assert!(
+            lines[at + 2].contains(&format!("(D ≥ {d_mm} мм)")),
+            "{}",
+            lines[at + 2]
+        );
+    }
+}

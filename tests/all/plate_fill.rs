@@ -23,6 +23,7 @@ const JUSTIFIED: &[(&str, &str)] = &[
     ("shaper/cam", "in uk and en, and in ru read to 0,5 mm: the bottom 138 mm; the scene fixes the poles H₁ = 30 mm, H₂ = 40 mm (the seed's), so the analogues stand at the seed's height, and the 26 points' table, the longest item, ends 450 mm down the sheet — the whole cam on one sheet, nothing left to go below"),
     ("friction-follower/friction", "three views, the closed forms and the table on an A2, the friction sheet's smallest format, each scale as large as its 160 mm room holds"),
     ("gears-pz2-ex2/gears", "one narrow figure (141 mm tall at μ_l = 0,0004) with its data and table on an A2 (the gear part of issue 45)"),
+    ("gears-differential/gears", "in en only: one figure (the train, its triangles and the plan of ω) on an A3, the smallest sheet; the English data lines are short enough for both tables to stand beside them, so the band under the text and the tables, left of the title block, is 124 mm (ru 57, uk 78)"),
     ("gears-pz3/gears", "the scene fixes μ_l (the gear part of issue 45)"),
     ("rotor-static/balancing", "one disc and one polygon, each as large as its room (one round step finer doubles them); its 14 lines of data keep it off an A3"),
     ("v-engine/dynamics", "the scene fixes μ_φ (2π on 251 mm); the free diagrams' ordinates at their 80 mm, the energy–mass diagram beside the T₁ and ω diagrams; the flywheel is drawn on a sheet of its own (v-engine/flywheel), so the band under them stays free (124 mm exactly, 126 mm read to 0,5 mm)"),

@@ -50,7 +50,33 @@ catalogue! {
         ),
         CastIron => ("серый чугун", "сірий чавун", "grey cast iron"),
         Steel => ("сталь", "сталь", "steel"),
+        // The title block's material (ГОСТ 2.104 graph 3): the grades the course takes for
+        // a flywheel (seed 000 L1452: grey cast iron for a rim under 25 m/s).
+        CastIronGrade => ("СЧ 15 ГОСТ 1412–85", "СЧ 15 ГОСТ 1412–85", "Grey cast iron SCh 15, GOST 1412–85"),
+        SteelGrade => ("Сталь 35Л ГОСТ 977–88", "Сталь 35Л ГОСТ 977–88", "Cast steel 35L, GOST 977–88"),
         Material => ("Материал", "Матеріал", "Material"),
+        // The flywheel's conclusion, a line each (a line of the sheet's data stays under
+        // 55 characters, within the field beside an A3's title block).
+        DeltaVerdict => (
+            "Вывод: δ = {got} {rel} [δ] = {asked}.",
+            "Висновок: δ = {got} {rel} [δ] = {asked}.",
+            "Conclusion: δ = {got} {rel} [δ] = {asked}."
+        ),
+        DeltaMet => (
+            "Маховик по J_{м} построения обеспечивает [δ].",
+            "Маховик за J_{м} побудови забезпечує [δ].",
+            "The flywheel of the construction's J_{м} keeps [δ]."
+        ),
+        DeltaShort => (
+            "J_{м} построения на {pct} % меньше точного (по {n} положениям);",
+            "J_{м} побудови на {pct} % менший за точний (за {n} положеннями);",
+            "The construction's J_{м} is {pct} % under the exact one ({n} positions);"
+        ),
+        DeltaNeeds => (
+            "[δ] обеспечивает J_{м} ≥ {exact} {kgm2} (D ≥ {d} {mm}).",
+            "[δ] забезпечує J_{м} ≥ {exact} {kgm2} (D ≥ {d} {mm}).",
+            "[δ] needs J_{м} ≥ {exact} {kgm2} (D ≥ {d} {mm})."
+        ),
         Dimensions => ("Размеры маховика", "Розміри маховика", "The flywheel's dimensions"),
         Dimension => ("Размер", "Розмір", "Dimension"),
         Rule => ("Формула", "Формула", "Rule"),

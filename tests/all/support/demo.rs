@@ -267,6 +267,7 @@ pub fn demo_plate(lang: Lang) -> Result<Plate, PlateError> {
         scale: "1:1".into(),
         sheet_no: 1,
         sheets: 3,
+        ..TitleBlock::default()
     };
     Ok(Plate {
         name: "demo".into(),
