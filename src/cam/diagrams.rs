@@ -32,7 +32,9 @@ use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
 mod differentiated;
+mod phi_axis;
 use differentiated::differentiated;
+pub use phi_axis::{PHASE_NOTES, TICK_NOTE};
 
 /// Drawn length of the cycle on the diagrams' abscissa, mm (μ_φ = 2π / 240 mm = 1,5°/mm):
 /// the diagrams' column takes about 300 mm of an A1 sheet's width.
@@ -157,15 +159,27 @@ impl Views {
         }
     }
 
-    /// Each figure's axes, around what it draws.
-    fn finish(mut self, phi: Scale) -> [Figure; 3] {
+    /// Each figure's axes, around what it draws, its φ axis marked ([`phi_axis::mark`]:
+    /// the numbers of `points` on the side away from the figure's `values` — d²S/dφ², dS/dφ,
+    /// S at the points — and the phases on the displacement diagram).
+    fn finish(
+        mut self,
+        (spec, points): (&CamSpec, &[Point]),
+        phi: Scale,
+        values: [&[f64]; 3],
+    ) -> [Figure; 3] {
         let cycle = phi.to_mm(TAU);
-        for (rec, name) in [
+        for (k, (rec, name)) in [
             (&mut self.a, "d^2S/dφ^2"),
             (&mut self.v, "dS/dφ"),
             (&mut self.s, "S"),
-        ] {
+        ]
+        .into_iter()
+        .enumerate()
+        {
             axes(rec, cycle, name);
+            rec.set_group(0);
+            phi_axis::mark(rec, spec, points, phi, values[k], k == 2);
         }
         [self.a.finish(), self.v.finish(), self.s.finish()]
     }
@@ -435,7 +449,7 @@ pub(super) fn diagrams(
     }
     views.dwells(spec, phi, Given::D2s, level);
     // d²S/dφ² at the points, read off the given diagram.
-    let d2s = points
+    let d2s: Vec<f64> = points
         .iter()
         .map(|p| {
             let m = motion(spec, p.phi, p.after);
@@ -445,7 +459,8 @@ pub(super) fn diagrams(
             d2s_scale.to_physical(read.read_mm).copysign(m.d2s)
         })
         .collect();
-    let [d2s_view, ds_view, s_view] = views.finish(phi);
+    let [d2s_view, ds_view, s_view] =
+        views.finish((spec, points), phi, [&d2s, &ds_nodes, &s_nodes]);
     Ok(Diagrams {
         d2s_view,
         ds_view,

@@ -9,14 +9,16 @@
 //! face lines and their envelope) and an analytic twin ([`exact`] and `centre`: the minimum
 //! radius over the whole cycle, the pitch curve's curvature; the exact envelope and angles in
 //! [`Cam::rows`], which compares them). They share only the given law ([`motion`]) and the
-//! follower's primitives ([`follower`]): the construction builds the profile on the r_min
-//! read off its own drawing (or the scene's base radius) and never calls the twin.
+//! follower's primitives ([`follower`]): the construction builds the profile on the r₀ it
+//! accepts from the r_min read off its own drawing (`accept`; or on the scene's base
+//! radius) and never calls the twin.
 //!
 //! Frame: the cam turns counter-clockwise about O at the origin; in the inverted motion the
 //! follower turns clockwise (by −φ). A translating follower moves along +y, its axis at
 //! x = e (e > 0 is the side that lowers the pressure angle on the rise). A rocker's pivot O₂
 //! is placed by the minimum-radius construction.
 
+mod accept;
 mod centre;
 mod construct;
 mod deviation;
@@ -37,15 +39,17 @@ pub mod special;
 mod special_rows;
 #[cfg(test)]
 mod tests;
+mod travel;
 mod zone;
 
 pub use construct::{build, Cam};
 pub use deviation::{deviation, deviation_at, inversion_at};
-pub use diagrams::{Analogue, Diagrams};
+pub use diagrams::{Analogue, Diagrams, PHASE_NOTES, TICK_NOTE};
 pub use inversion::Inversion;
 pub use law::{Law, Shock};
 pub use radius::{RadiusConstruction, TANGENT_NOTE};
 pub use special::{build_special, Special, SpecialProfile};
+pub use travel::{TravelConstruction, TRAVEL_NOTE, TRAVEL_RAY_NOTE};
 pub use zone::{RAY_NOTE, R_MIN_NOTE};
 
 use crate::scale::Scale;

@@ -1,9 +1,10 @@
 //! The minimum radius as a construction: the combined diagram S(dS/dφ) with the γ_min lines
 //! and the zone (translating), dS/dφ laid along the rocker with the γ_min lines (rocker), the
-//! S(d²S/dφ²) diagram with its 45° tangent (flat face). The profile is built on the r_min
-//! read off this drawing (or the scene's base radius); the exact r_min over the whole cycle
-//! is the twin's ([`super::exact`], compared in [`super::Cam::rows`]).
+//! S(d²S/dφ²) diagram with its 45° tangent (flat face). The profile is built on the r₀
+//! accepted from the r_min read off this drawing ([`super::accept`]) or on the scene's base
+//! radius; the exact r_min over the whole cycle is the twin's ([`super::exact`], compared in [`super::Cam::rows`]).
 
+use super::accept::accepted;
 use super::diagrams::{read_motion, Diagrams};
 use super::follower::{admits, rocker_of, Placement, REACH_ARMS};
 use super::law::Shock;
@@ -28,9 +29,9 @@ pub struct RadiusConstruction {
 }
 
 /// The minimum radius constructed at the drawn points, and the base radius and placement of
-/// the follower for the profile: the scene's base radius, else the r_min read off the
-/// drawing (translating: |O₁B₀|; rocker: O₁ found on the drawing, its direction and
-/// distance from A₀; flat face: read at the 45° tangent, plus ρ_min).
+/// the follower for the profile: the scene's base radius, else the r₀ accepted from the r_min
+/// read off the drawing (translating: |O₁B₀|; rocker: O₁ found on the drawing, r₀ along its
+/// direction from A₀; flat face: read at the 45° tangent, plus ρ_min).
 pub(super) fn min_radius(
     spec: &CamSpec,
     points: &[Point],
@@ -58,10 +59,10 @@ pub(super) fn min_radius(
 /// What every follower's construction starts from: the cam, its drawn points and their
 /// diagrams.
 #[derive(Clone, Copy)]
-struct Given<'a> {
-    spec: &'a CamSpec,
-    points: &'a [Point],
-    d: &'a Diagrams,
+pub(super) struct Given<'a> {
+    pub(super) spec: &'a CamSpec,
+    pub(super) points: &'a [Point],
+    pub(super) d: &'a Diagrams,
 }
 
 /// What one follower's construction reads: r_min, the flat face's convexity, the base
@@ -114,9 +115,9 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     } else {
         DVec2::new(1.0, 0.0)
     };
-    zone::centre_and_r_min(rec, o, DVec2::ZERO, toward, 0.0);
+    zone::centre_and_r_min(rec, o, DVec2::ZERO, toward, r_min_offset(o.x));
     let r = rec.measure(o, DVec2::ZERO);
-    let base = spec.base_radius.unwrap_or(r.value);
+    let base = base_radius(rec, spec, r.value);
     if base <= offset.abs() {
         return Err(CamError::BaseWithinOffset {
             base,
@@ -211,7 +212,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
     // The profile uses the centre found on the drawing: its direction from A₀ and its
     // distance read (or the given base radius along that direction).
     let dir = (o - a0).normalize_or_zero();
-    let base = spec.base_radius.unwrap_or(r.value);
+    let base = base_radius(rec, spec, r.value);
     let o_used = DVec2::new(0.0, arm) + dir * base;
     let pivot_cam = -o_used;
     Ok(Read {
@@ -296,7 +297,7 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     zone::centre_and_r_min(rec, o, DVec2::ZERO, DVec2::new(-1.0, -0.5), -12.0);
     let read_c = rec.measure(oi, DVec2::ZERO).value.copysign(-c);
     let graphical = rec.measure(o, DVec2::ZERO).value;
-    let base = spec.base_radius.unwrap_or(graphical);
+    let base = base_radius(rec, spec, graphical);
     Ok(Read {
         graphical,
         convexity: Some(read_c),
@@ -308,6 +309,28 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     })
 }
 
+/// The translating follower's r_min dimension stands clear of the S axis, mm.
+const R_MIN_CLEAR_MM: f64 = 4.0;
+
+/// Where a translating follower's r_min dimension O₁B₀ is drawn (left of O₁ → B₀, mm): on the
+/// piece itself for a central follower (O₁ on the S axis, the text beside the axis); for an
+/// offset one past the S axis on the side away from O₁, clear of it — its text (with the
+/// value) is too long for the narrow wedge of the zone's lines between O₁ and the axis.
+fn r_min_offset(ox: f64) -> f64 {
+    if ox.abs() < 1e-9 {
+        0.0
+    } else {
+        ox.signum() * (ox.abs() + R_MIN_CLEAR_MM)
+    }
+}
+
+/// The base radius the profile is built on: the scene's, else the one accepted from the r_min
+/// `read` off this drawing ([`accepted`]).
+fn base_radius(rec: &Recorder, spec: &CamSpec, read: f64) -> f64 {
+    spec.base_radius
+        .unwrap_or_else(|| accepted(read, rec.scale(), rec.drafting()))
+}
+
 /// The note of the flat face's 45° tangent's step (the tests find it by it).
 pub const TANGENT_NOTE: &str = "tangent at 45° from the diagram to the S axis";
 
@@ -316,7 +339,13 @@ pub const TANGENT_NOTE: &str = "tangent at 45° from the diagram to the S axis";
 /// corner at every point — with a corner kept where the law makes one: at a point on a
 /// break of d²S/dφ² ([`on_break`]; the slope dS/dS′ = S′/S″ changes sign there), and at a
 /// phase's ends where dS/dφ jumps (a rigid shock), the jump drawn straight at its S.
-fn smooth_loop(rec: &mut Recorder, given: &Given<'_>, ks: &[DVec2], note: &str, deps: &[StepId]) {
+pub(super) fn smooth_loop(
+    rec: &mut Recorder,
+    given: &Given<'_>,
+    ks: &[DVec2],
+    note: &str,
+    deps: &[StepId],
+) {
     let (spec, points) = (given.spec, given.points);
     // One point where two coincide on the paper (a phase's end and the next phase's start
     // at dS/dφ = 0): the curve passes it once, smoothly.
@@ -368,7 +397,7 @@ fn smooth_loop(rec: &mut Recorder, given: &Given<'_>, ks: &[DVec2], note: &str, 
 
 /// The S axis of a combined diagram: from below the centre found on it (`depth` mm under
 /// B₀: the drawn r_min) to above the stroke, labelled.
-fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, depth: f64) -> StepId {
+pub(super) fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, depth: f64) -> StepId {
     let top = DVec2::new(0.0, mu.to_mm(spec.stroke) + 12.0);
     let ax = rec.draw(
         "S axis",
@@ -384,7 +413,7 @@ fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, depth: f64) -> StepId {
 }
 
 /// The points of a combined diagram: `at` of the motion read at each of the `n` points.
-fn combined(d: &Diagrams, n: usize, at: impl Fn(Motion) -> DVec2) -> Vec<DVec2> {
+pub(super) fn combined(d: &Diagrams, n: usize, at: impl Fn(Motion) -> DVec2) -> Vec<DVec2> {
     (0..n).map(|i| at(read_motion(d, i))).collect()
 }
 

@@ -2,7 +2,8 @@
 //! with a flat face ([`super::flat_rocker`]) and the translating cam ([`super::sliding`]).
 //! The law's diagrams come first, by graphical integration as for every cam
 //! ([`super::diagrams`]); then the profile on the board by the mechanism's own module at a
-//! round μ_l (the scene's, else one that draws the mechanism a preferred size). The twin of
+//! round μ_l (the scene's, else one that draws the mechanism a preferred size), and the
+//! translating cam's shortest travel X_min on its combined diagram ([`super::travel`]). The twin of
 //! each is its module's closed form; [`Special::rows`] compares them
 //! ([`super::special_rows`]).
 
@@ -10,6 +11,7 @@ use super::diagrams::{diagrams, Diagrams};
 use super::flat_rocker::{self, FlatRocker};
 use super::motion::{points, Point};
 use super::sliding::{self, Sliding};
+use super::travel::{travel_min, TravelConstruction};
 use super::{CamError, CamSpec, Layout, Rotation};
 use crate::construct::{Context, Figure};
 use crate::scale::{Quantity, Scale};
@@ -51,6 +53,8 @@ pub enum SpecialProfile {
         frame: Sliding,
         /// The follower's positions along the cam, the rollers and the profiles.
         board: sliding::Construction,
+        /// The shortest travel X_min constructed beside the diagrams.
+        travel: TravelConstruction,
     },
 }
 
@@ -104,7 +108,15 @@ pub fn build_special(spec: &CamSpec, ctx: &Context) -> Result<Special, CamError>
         Layout::Sliding(frame) => {
             let mu = chosen(frame.travel, TRAVEL_MM)?;
             let board = sliding::construct(spec, &frame, mu, ctx)?;
-            (mu, SpecialProfile::Sliding { frame, board })
+            let travel = travel_min(spec, &points, &diagrams, ctx);
+            (
+                mu,
+                SpecialProfile::Sliding {
+                    frame,
+                    board,
+                    travel,
+                },
+            )
         }
         Layout::Turning => {
             return Err(CamError::Layout("the turning cam is built by build"));

@@ -5,14 +5,14 @@
 //! Flat-faced rocker: the pressure angle and the contact's radius vector per point, the
 //! drawn contacts' largest distance from the exact envelope, ρ_min of the profile. The
 //! translating cam: the pressure angle per point, the profile's deviation, ρ_min of the
-//! pitch curve, and the shortest travel X_min that keeps λ ≤ λ_max (read off the drawn
-//! angles: X·max tg λ / tg λ_max; exact: 2π·max|S′|/tg λ_max).
+//! pitch curve, and the shortest travel X_min that keeps λ ≤ λ_max (constructed on the
+//! combined diagram, [`super::travel`]; exact: 2π·max|S′|/tg λ_max).
 
 use super::flat_rocker::{self, FlatRocker};
 use super::rows::{diagram_rows, law_notes};
 use super::sliding::{self, Sliding};
 use super::special::{Special, SpecialProfile};
-use super::{CamError, Closure};
+use super::CamError;
 use crate::check::notes::cam::{CamNote, SpecialNote};
 use crate::check::{self, At, Finding, Key, Method, Row, Symbol};
 use std::f64::consts::FRAC_PI_2;
@@ -77,7 +77,7 @@ impl Special {
                     let e = flat_rocker::exact(&self.spec, frame, p.phi, p.after)?;
                     board.contacts[i].point.distance(e.point)
                 }
-                SpecialProfile::Sliding { frame, board } => {
+                SpecialProfile::Sliding { frame, board, .. } => {
                     let e = sliding::exact(&self.spec, frame, p.phi, p.after)?;
                     board.contacts[i].point.distance(e.point)
                 }
@@ -87,24 +87,15 @@ impl Special {
         Ok(worst)
     }
 
-    /// The shortest travel keeping λ ≤ λ_max where the scene checks it, m: read off the
-    /// board's angles (X·max tg λ / tg λ_max over the checked points) and exact; `None` for
-    /// the flat-faced rocker.
+    /// The shortest travel keeping λ ≤ λ_max where the scene checks it, m: constructed on
+    /// the combined diagram (2π·X_min/2π read, [`super::travel`]) and exact; `None` for the
+    /// flat-faced rocker.
     pub fn travel_min(&self) -> Option<(f64, f64)> {
-        let SpecialProfile::Sliding { frame, board } = &self.profile else {
+        let SpecialProfile::Sliding { travel, .. } = &self.profile else {
             return None;
         };
-        let rise_only = self.spec.closure == Closure::Force;
-        let steepest = self
-            .points
-            .iter()
-            .zip(&board.contacts)
-            .filter(|(p, _)| !rise_only || p.phase == 0)
-            .map(|(_, c)| c.lambda.tan())
-            .fold(0.0, f64::max);
-        let t = self.lambda_max().tan();
         Some((
-            frame.travel * steepest / t,
+            travel.graphical,
             sliding::exact_travel_min(&self.spec, self.lambda_max()),
         ))
     }

@@ -223,6 +223,13 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             ("μ_{S}", w.word(M::DisplacementScale), "m/mm"),
         ]);
     }
+    // The base radius accepted from the r_min read, as the sheet says it.
+    if s.base_radius.is_none() {
+        w.doc.say(&format!(
+            "{}.",
+            crate::sheets::cam_marks::base_line(&cam, lang)
+        ));
+    }
     if cam.roller > 0.0 && s.roller.is_none() {
         let (base, rho) = (cam.base, cam.inversion.rho_min);
         w.doc.say(w.word(T::CamRollerWorked));

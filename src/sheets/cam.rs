@@ -3,10 +3,11 @@
 //! cam centre (or the flat face's 45° tangent), the profile by inversion with the roller
 //! circles and both profiles, the angle graph, the data and the table of the points.
 
+use super::cam_marks;
 use super::captions::{unit_in, CamText, Text};
 use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
-use crate::cam::{Analogue, Cam, CamSpec, Diagrams, Follower, Given, Law, Layout, Rotation};
+use crate::cam::{Analogue, Cam, CamSpec, Diagrams, Follower, Law, Layout, Rotation, R_MIN_NOTE};
 use crate::check::{Cusp, Finding, Row};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock, CAPTION_BAND_MM};
@@ -21,7 +22,7 @@ const TABLE_MM: f64 = 2.5;
 const STACK_GAP_MM: f64 = 8.0;
 
 /// A scale's caption with its own symbol (`μ_{S′} = 0,00093 м/мм`).
-fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
+pub(super) fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
     format!(
         "μ_{{{symbol}}} = {} {}",
         format_sig(s.value(), 4, lang),
@@ -38,15 +39,16 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let cam = session.cam()?;
     let d = &cam.diagrams;
     let mm = unit_in("mm", lang);
-    let mut blocks = vec![diagram_block(d, cam.spec.given, lang)];
+    let mut blocks = vec![diagram_block(d, &cam.spec, lang)];
     let combined = match cam.spec.follower {
         Follower::Flat { .. } => CamText::FlatCombined,
         Follower::Rocker { .. } => CamText::RockerCombined,
         Follower::Translating { .. } => CamText::TranslatingCombined,
     }
     .get(lang);
+    let r_min = cam_marks::valued("r_{min}", cam.radius.graphical, lang);
     blocks.push(Block::view(
-        cam.radius.figure.clone(),
+        cam_marks::relabelled(&cam.radius.figure, R_MIN_NOTE, &r_min),
         format!("{combined}, {}", mu("S", d.s_scale, lang)),
         keyed(Key::CamScaleS, d.s_scale),
     ));
@@ -95,15 +97,16 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
 }
 
 /// The diagrams stacked as the construction runs through them, each with its axes and its
-/// caption: the analogue, μ_φ, its μ and the pole distance of the pole it carries.
-pub(super) fn diagram_block(d: &Diagrams, given: Given, lang: Lang) -> Block {
+/// caption: the analogue, μ_φ, its μ and the pole distance of the pole it carries; the
+/// phases under the displacement diagram's φ axis in `lang`.
+pub(super) fn diagram_block(d: &Diagrams, spec: &CamSpec, lang: Lang) -> Block {
     let mm = unit_in("mm", lang);
     let h = |i: usize| format_sig(d.poles[i], 3, lang);
     // The diagrams stacked as the construction runs through them, each with its axes and
     // its caption: the analogue, μ_φ, its μ and the pole distance of the pole it carries.
     let mut parts: Vec<Part> = Vec::with_capacity(3);
     let mut bottom = 0.0;
-    for (which, figure) in d.stack(given) {
+    for (which, figure) in d.stack(spec.given) {
         let (name, scale, pole) = match which {
             Analogue::D2s => (
                 CamText::AccelerationAnalogue,
@@ -130,7 +133,12 @@ pub(super) fn diagram_block(d: &Diagrams, given: Given, lang: Lang) -> Block {
         } else {
             DVec2::new(0.0, bottom - CAPTION_BAND_MM - STACK_GAP_MM - hi.y)
         };
-        let part = Part::new(figure.clone(), at, Some(caption));
+        let figure = if which == Analogue::S {
+            cam_marks::phases_marked(figure, spec, lang)
+        } else {
+            figure.clone()
+        };
+        let part = Part::new(figure, at, Some(caption));
         bottom = at.y + lo.y - part.caption_drop;
         parts.push(part);
     }
@@ -210,17 +218,8 @@ pub(super) fn law_name(law: Law, lang: Lang) -> String {
 /// The data's heading and the law's lines: the phases, the cam's sense (its motion for a
 /// translating cam), the laws, an assumed law.
 pub(super) fn law_lines(s: &CamSpec, rotation: Rotation, lang: Lang) -> Vec<String> {
-    let deg = |x: f64| format_sig(x.to_degrees(), 4, lang);
     let mut out = vec![Text::Data.get(lang).to_string()];
-    let p = &s.phases;
-    out.push(
-        CamText::Phases
-            .get(lang)
-            .replace("{1}", &deg(p.rise))
-            .replace("{2}", &deg(p.far))
-            .replace("{3}", &deg(p.ret))
-            .replace("{4}", &deg(p.near)),
-    );
+    out.push(cam_marks::phases_line(s, lang));
     let sense = match (s.layout, rotation) {
         (Layout::Sliding(_), _) => CamText::Slides,
         (_, Rotation::Cw) => CamText::Clockwise,
@@ -280,7 +279,7 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     let found = cam.findings();
     let stated =
         |p: fn(&Finding) -> bool| found.iter().find(|f| p(f)).and_then(|f| verdict(f, lang));
-    out.push(format!("r_{{0}} = {} {mm}", n(cam.base)));
+    out.push(cam_marks::base_line(cam, lang));
     if !matches!(s.follower, Follower::Flat { .. }) {
         out.push(format!(
             "{}·r_{{0}} = {} {mm}, {}·ρ_{{min}} = {} {mm} → r_{{р}} = {} {mm}",

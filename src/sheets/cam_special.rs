@@ -4,11 +4,12 @@
 //! rollers and both profiles), the data, the table of the points and the results against
 //! the closed forms.
 
-use super::cam::{diagram_block, law_lines, one_sheet, points_tables, results_table};
+use super::cam::{diagram_block, law_lines, mu, one_sheet, points_tables, results_table};
+use super::cam_marks;
 use super::captions::{unit_in, CamText, Text};
 use super::layout::{keyed, Block};
 use super::BuildError;
-use crate::cam::{Follower, Special, SpecialProfile};
+use crate::cam::{Follower, Special, SpecialProfile, TRAVEL_NOTE};
 use crate::check::Finding;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Lang};
@@ -31,14 +32,25 @@ pub(super) fn build(
         SpecialProfile::FlatRocker { .. } => CamText::FlatRockerProfile,
         SpecialProfile::Sliding { .. } => CamText::SlidingProfile,
     };
-    let mut blocks = vec![
-        diagram_block(&cam.diagrams, cam.spec.given, lang),
-        Block::view(
-            cam.figure().clone(),
-            format!("{}, {}", caption.get(lang), cam.scale.caption(lang)),
-            keyed(Key::CamScaleL, cam.scale),
-        ),
-    ];
+    let mut blocks = vec![diagram_block(&cam.diagrams, &cam.spec, lang)];
+    if let SpecialProfile::Sliding { travel, .. } = &cam.profile {
+        let s = cam.diagrams.s_scale;
+        let text = cam_marks::valued("X_{min}/2π", travel.read, lang);
+        blocks.push(Block::view(
+            cam_marks::relabelled(&travel.figure, TRAVEL_NOTE, &text),
+            format!(
+                "{}, {}",
+                CamText::TravelCombined.get(lang),
+                mu("S", s, lang)
+            ),
+            keyed(Key::CamScaleS, s),
+        ));
+    }
+    blocks.push(Block::view(
+        cam.figure().clone(),
+        format!("{}, {}", caption.get(lang), cam.scale.caption(lang)),
+        keyed(Key::CamScaleL, cam.scale),
+    ));
     let drawings = blocks.len();
     let mut lines = data_lines(cam, lang).map_err(study)?;
     lines.push(String::new());

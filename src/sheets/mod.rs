@@ -4,6 +4,7 @@
 mod answer_key;
 mod balancing;
 mod cam;
+pub(crate) mod cam_marks;
 mod cam_special;
 pub(crate) mod captions;
 pub(crate) mod data;

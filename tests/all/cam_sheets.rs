@@ -5,7 +5,10 @@
 //!   dimension from O₁ whose length, read as the sheet reads it, is the report's graphical
 //!   r_min (translating and rocker followers);
 //! - the flat face's 45° tangent from its touching point on the S(S″) curve to the S axis,
-//!   each end on its line to a tolerance of the figure's size, with the r_min dimension.
+//!   each end on its line to a tolerance of the figure's size, with the r_min dimension;
+//! - the r_min dimension written with its value (r_min = 69 мм), and, where the scene leaves
+//!   r₀ to the construction, the data accepting it no smaller: «Принимаем r₀ = 70 мм ≥ r_min
+//!   = 69 мм», the r₀ the profile is built on (and the twin's check that it keeps [γ]).
 //!
 //! (γ(φ) without a step the law does not make: `cam_angle_steps`.) Each rule also runs on a plate built to break it, and must fail there.
 
@@ -149,14 +152,42 @@ fn zone_hatched(f: &Figure) -> Result<(), String> {
     Ok(())
 }
 
-/// The r_min dimension from O₁, its length read at the sheet's drafting equal to `graphical`.
+/// The number written after `key` in `text` (`r_{min} = 43,77 мм` → 43.77 for `r_{min} = `),
+/// either decimal sign.
+fn number_after(text: &str, key: &str) -> Option<f64> {
+    let rest = &text[text.find(key)? + key.len()..];
+    let digits: String = rest
+        .chars()
+        .take_while(|c| c.is_ascii_digit() || *c == ',' || *c == '.')
+        .collect();
+    digits.replace(',', ".").parse().ok()
+}
+
+/// `written` (mm, as a sheet writes it to four significant digits) is `metres`.
+fn written_as(written: f64, metres: f64) -> bool {
+    (written - metres * 1e3).abs() <= 5e-4 * (metres * 1e3).abs().max(1.0)
+}
+
+/// The r_min dimension from O₁, its length read at the sheet's drafting equal to `graphical`
+/// and its text `r_min = <that value> мм`.
 fn r_min_dimensioned(f: &Figure, graphical: f64, d: Drafting) -> Result<(), String> {
     let dims = segments(f, R_MIN_NOTE);
     let [(step, a, b)] = dims[..] else {
         return Err(format!("{} r_min dimensions", dims.len()));
     };
-    if step.role != Role::Dimension || step.label.as_ref().is_none_or(|l| l.text != "r_{min}") {
-        return Err("the r_min dimension is not a dimension labelled r_min".into());
+    let text = step.label.as_ref().map_or("", |l| l.text.as_str());
+    if step.role != Role::Dimension || !text.starts_with("r_{min} = ") {
+        return Err(format!(
+            "the r_min dimension is not a dimension labelled r_min = …: “{text}”"
+        ));
+    }
+    match number_after(text, "r_{min} = ") {
+        Some(v) if written_as(v, graphical) => {}
+        _ => {
+            return Err(format!(
+                "the r_min dimension reads “{text}”, the report's {graphical} m"
+            ))
+        }
     }
     let o = centre(f)?;
     if a.distance(o).min(b.distance(o)) > tol(f) {
@@ -205,7 +236,40 @@ fn tangent_touches(f: &Figure) -> Result<(), String> {
     Ok(())
 }
 
-/// The final elements the combined diagram's caption promises.
+/// The data's line of the base radius: when the scene gives none, r₀ accepted ≥ the r_min
+/// read, both as the cam has them (`Принимаем r_{0} = 70 мм ≥ r_{min} = 69 мм`).
+fn r0_accepted(cam: &Cam, plates: &[Plate]) -> Result<(), String> {
+    if cam.spec.base_radius.is_some() {
+        return Ok(());
+    }
+    let lines: Vec<&String> = plates
+        .iter()
+        .flat_map(|p| &p.texts)
+        .flat_map(|t| &t.lines)
+        .filter(|l| l.contains("r_{0} = ") && l.contains(" ≥ r_{min} = "))
+        .collect();
+    let [line] = lines[..] else {
+        return Err(format!("{} lines accept r₀ ≥ r_min", lines.len()));
+    };
+    let (Some(r0), Some(r)) = (
+        number_after(line, "r_{0} = "),
+        number_after(line, " ≥ r_{min} = "),
+    ) else {
+        return Err(format!("no numbers in “{line}”"));
+    };
+    if r0 < r {
+        return Err(format!("“{line}”: r₀ below the r_min read"));
+    }
+    if !written_as(r0, cam.base) || !written_as(r, cam.radius.graphical) {
+        return Err(format!(
+            "“{line}”: the profile is built on r₀ = {} m from r_min = {} m",
+            cam.base, cam.radius.graphical
+        ));
+    }
+    Ok(())
+}
+
+/// The final elements the combined diagram's caption promises, and r₀ accepted from it.
 fn finished(cam: &Cam, f: &Figure, d: Drafting) -> Result<(), String> {
     if matches!(cam.spec.follower, Follower::Flat { .. }) {
         tangent_touches(f)?;
@@ -221,11 +285,51 @@ fn every_combined_diagram_has_its_final_elements() {
         for (drafting, lang) in [(0.5, Lang::Ru), (0.0, Lang::Uk), (0.5, Lang::En)] {
             let (cam, plates, d) = sheets(name, drafting, lang);
             let f = combined(&plates).unwrap_or_else(|| panic!("{name}: no combined diagram"));
-            if let Err(e) = finished(&cam, &f, d) {
+            if let Err(e) = finished(&cam, &f, d).and_then(|()| r0_accepted(&cam, &plates)) {
                 panic!("{name} ({drafting} mm, {lang:?}): {e}");
             }
         }
     }
+}
+
+/// The r₀ accepted from the reading keeps the limit the reading was made for: at least the
+/// twin's exact r_min, and the twin's extreme angle over the whole cycle (between the points
+/// too) within [γ] — every shipped turning cam whose scene leaves r₀ to the construction,
+/// read by hand and exactly. The twin computes both itself; the construction never sees them.
+#[test]
+fn the_accepted_base_radius_keeps_the_angle_limit() {
+    let mut checked = 0;
+    for name in TURNING {
+        for drafting in [0.5, 0.0] {
+            let (cam, _, _) = sheets(name, drafting, Lang::Ru);
+            if cam.spec.base_radius.is_some() {
+                continue;
+            }
+            checked += 1;
+            let exact = cam.exact_r_min();
+            assert!(
+                cam.base >= exact,
+                "{name} ({drafting} mm): r₀ = {} m < exact r_min = {exact} m",
+                cam.base
+            );
+            if matches!(cam.spec.follower, Follower::Flat { .. }) {
+                continue;
+            }
+            let worst = cam.worst_angle();
+            let gamma = cam.spec.gamma_min;
+            let keeps = match cam.spec.follower {
+                Follower::Rocker { .. } => worst >= gamma,
+                _ => worst <= std::f64::consts::FRAC_PI_2 - gamma,
+            };
+            assert!(
+                keeps,
+                "{name} ({drafting} mm): the worst angle {}° breaks γ_min = {}°",
+                worst.to_degrees(),
+                gamma.to_degrees()
+            );
+        }
+    }
+    assert!(checked >= 10, "{checked} cams checked");
 }
 
 /// A figure with `f` applied to the steps whose note is `note`.
@@ -277,6 +381,36 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
     let mut none = f.clone();
     none.steps.retain(|s| s.note != R_MIN_NOTE);
     assert!(r_min_dimensioned(&none, cam.radius.graphical, d).is_err());
+    // The dimension without its value (the review's mark), or with another.
+    for text in ["r_{min}", "r_{min} = 12,5 мм"] {
+        let bare = broken(&f, R_MIN_NOTE, |s| {
+            if let Some(l) = s.label.as_mut() {
+                l.text = text.into();
+            }
+        });
+        assert!(r_min_dimensioned(&bare, cam.radius.graphical, d).is_err());
+    }
+    // r₀ taken at the r_min read off the drawing below the exact one (the review's
+    // 69 < 69,4 мм), and no line accepting it at all.
+    assert!(r0_accepted(&cam, &plates).is_ok());
+    let under = |l: &String| {
+        if l.contains(" ≥ r_{min} = ") {
+            let r = number_after(l, " ≥ r_{min} = ").unwrap_or(0.0);
+            format!("Принимаем r_{{0}} = {} мм ≥ r_{{min}} = {} мм", r - 1.0, r)
+        } else {
+            l.clone()
+        }
+    };
+    let mut lowered = plates.clone();
+    for t in lowered.iter_mut().flat_map(|p| p.texts.iter_mut()) {
+        t.lines = t.lines.iter().map(under).collect();
+    }
+    assert!(r0_accepted(&cam, &lowered).is_err());
+    let mut silent = plates.clone();
+    for t in silent.iter_mut().flat_map(|p| p.texts.iter_mut()) {
+        t.lines.retain(|l| !l.contains(" ≥ r_{min} = "));
+    }
+    assert!(r0_accepted(&cam, &silent).is_err());
 
     // The flat face: the tangent floating 5 mm off both its lines (the review's PZ4).
     let (flat, plates, d) = sheets("cam-pz4", 0.5, Lang::Ru);

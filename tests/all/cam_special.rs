@@ -156,7 +156,8 @@ fn the_translating_cam_reports_its_closed_forms() {
     let x_min = TAU * (2.0 * 0.03 / (TAU / 3.0)) / 30f64.to_radians().tan();
     assert!((x.analytic - x_min).abs() < 1e-12 * x_min, "{}", x.analytic);
     assert!((x.analytic - 0.311769).abs() < 1e-6);
-    assert!((x.graphical - 0.30474).abs() < 1e-5, "{}", x.graphical);
+    // Constructed: 2π·(X_min/2π read on the combined diagram, at the largest dS/dφ drawn).
+    assert!((x.graphical - 0.315359).abs() < 1e-5, "{}", x.graphical);
     // The crest's smallest radius against a dense evaluation (u in (½, 1): S_ξξ < 0).
     let m = 1_000_000;
     let dense = (1..m)
@@ -234,5 +235,98 @@ fn keys_of_the_wrong_layout_are_refused_by_name() {
     ] {
         let e = refused(&text);
         assert!(e.contains(key), "{key}: {e}");
+    }
+}
+
+/// The translating cam's X_min as its sheet draws it: the γ_min line from the point K of the
+/// largest dS/dφ to the point C on the S axis, at γ_min to dS/dφ; the dimension X_min/2π from
+/// K's level down to C, written with its value; 2π times that value the report's graphical
+/// X_min. `Err` names what is missing.
+fn travel_constructed(f: &tmm::construct::Figure, graphical: f64) -> Result<(), String> {
+    use tmm::cam::{TRAVEL_NOTE, TRAVEL_RAY_NOTE};
+    use tmm::construct::Item;
+    let find = |note: &str| f.steps.iter().find(|s| s.note == note);
+    let ray = find(TRAVEL_RAY_NOTE).ok_or("no γ_min line")?;
+    let Item::Segment(g) = &ray.item else {
+        return Err("the γ_min line is no segment".into());
+    };
+    let (k, c) = (g.from, g.to);
+    if c.x.abs() > 1e-9 {
+        return Err(format!("the γ_min line ends {} mm off the S axis", c.x));
+    }
+    let slope = ((k.y - c.y) / k.x.abs()).atan().to_degrees();
+    if (slope - 60.0).abs() > 1e-6 {
+        return Err(format!(
+            "the line stands at {slope}° to dS/dφ, not γ_min = 60°"
+        ));
+    }
+    let dim = find(TRAVEL_NOTE).ok_or("no X_min/2π dimension")?;
+    let Item::Dimension { from, to, .. } = dim.item else {
+        return Err("the X_min/2π dimension is no dimension".into());
+    };
+    if (from.y - k.y).abs() > 1e-9 || to.distance(c) > 1e-9 || from.x.abs() > 1e-9 {
+        return Err("the dimension does not run from K's level down to C".into());
+    }
+    let text = dim.label.as_ref().map_or("", |l| l.text.as_str());
+    let value: Option<f64> = text
+        .strip_prefix("X_{min}/2π = ")
+        .and_then(|r| r.split(' ').next())
+        .and_then(|v| v.replace(',', ".").parse().ok());
+    match value {
+        Some(v) if (std::f64::consts::TAU * v * 1e-3 - graphical).abs() < 1e-3 * graphical => {
+            Ok(())
+        }
+        _ => Err(format!("the dimension reads “{text}”, X_min {graphical} m")),
+    }
+}
+
+#[test]
+fn the_translating_cams_x_min_is_constructed_with_its_value() {
+    use tmm::scale::Lang;
+    use tmm::scene::PlateKind;
+    let text = scene_text("cam-sliding");
+    let s = tmm::scene::parse(&text, Path::new("t.toml")).unwrap_or_else(|e| panic!("{e}"));
+    for (drafting, lang) in [(0.5, Lang::Ru), (0.0, Lang::En)] {
+        let session = Session::new(&s, Drafting::new(drafting).expect("a resolution"));
+        let cam = session
+            .special_cam()
+            .expect("built")
+            .expect("a translating cam");
+        let (read, exact) = cam.travel_min().expect("X_min");
+        assert!((read - exact).abs() < 0.02 * exact, "{read} {exact}");
+        let plates = tmm::build(&session, PlateKind::Cam, lang).expect("the sheet");
+        let f = plates
+            .iter()
+            .flat_map(|p| &p.views)
+            .find(|v| v.figure.title == "travel")
+            .map(|v| v.figure.clone())
+            .expect("the X_min construction on the sheet");
+        travel_constructed(&f, read).unwrap_or_else(|e| panic!("{drafting} mm {lang:?}: {e}"));
+        // Broken: the dimension without its value; the line off the axis; no line.
+        let mut bare = f.clone();
+        for st in bare
+            .steps
+            .iter_mut()
+            .filter(|x| x.note == tmm::cam::TRAVEL_NOTE)
+        {
+            if let Some(l) = st.label.as_mut() {
+                l.text = "X_{min}/2π".into();
+            }
+        }
+        assert!(travel_constructed(&bare, read).is_err());
+        let mut off = f.clone();
+        for st in off
+            .steps
+            .iter_mut()
+            .filter(|x| x.note == tmm::cam::TRAVEL_RAY_NOTE)
+        {
+            if let tmm::construct::Item::Segment(g) = &mut st.item {
+                g.to.x += 3.0;
+            }
+        }
+        assert!(travel_constructed(&off, read).is_err());
+        let mut none = f.clone();
+        none.steps.retain(|x| x.note != tmm::cam::TRAVEL_RAY_NOTE);
+        assert!(travel_constructed(&none, read).is_err());
     }
 }

@@ -100,7 +100,7 @@ pub(super) fn differentiated(
     }
     views.dwells(spec, phi, Given::S, [s_scale.to_mm(spec.stroke), 0.0]);
     // S at the points, read off the given diagram.
-    let s = points
+    let s: Vec<f64> = points
         .iter()
         .map(|p| {
             let m = motion(spec, p.phi, p.after);
@@ -112,7 +112,7 @@ pub(super) fn differentiated(
         })
         .collect();
     let ends = |i: usize| ds.get(i).copied().unwrap_or(0.0);
-    let [d2s_view, ds_view, s_view] = views.finish(phi);
+    let [d2s_view, ds_view, s_view] = views.finish((spec, points), phi, [&d2s, &ds, &s]);
     Ok(Diagrams {
         d2s_view,
         ds_view,

@@ -1,0 +1,82 @@
+//! What the cam's figures and data write in the sheet's language (issue 45): a construction's
+//! dimension with the value it read (r_min = 69 мм, X_min/2π = 49,5 мм), the phases under
+//! the displacement diagram's φ axis with their symbols and angles (φ_у = 113,6°), and the
+//! line that accepts the base radius from the r_min read (Принимаем r₀ = 70 мм ≥ r_min =
+//! 69 мм). The constructions record these steps with the Russian textbooks' symbols; here
+//! they get the sheet's words and numbers, one place for the cam sheet and the note.
+
+use super::captions::CamText;
+use super::digits;
+use crate::cam::{Cam, CamSpec, PHASE_NOTES};
+use crate::construct::Figure;
+use crate::scale::{format_sig, Lang};
+
+/// The symbols of the phases in `lang`: rise, far dwell, return, near dwell.
+fn phase_symbols(lang: Lang) -> [&'static str; 4] {
+    [
+        CamText::PhaseRise,
+        CamText::PhaseFar,
+        CamText::PhaseReturn,
+        CamText::PhaseNear,
+    ]
+    .map(|t| t.get(lang))
+}
+
+/// A phase's angle (rad) as the sheets write it: degrees to four digits, `113,6°`.
+fn phase_angle(x: f64, lang: Lang) -> String {
+    format!("{}°", format_sig(x.to_degrees(), 4, lang))
+}
+
+/// The four phases with their angles: `φ_{у} = 113,6°, φ_{д.в.} = 14,2°, …`.
+pub(super) fn phases_line(spec: &CamSpec, lang: Lang) -> String {
+    let p = &spec.phases;
+    phase_symbols(lang)
+        .iter()
+        .zip([p.rise, p.far, p.ret, p.near])
+        .map(|(sym, x)| format!("{sym} = {}", phase_angle(x, lang)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// `figure` with the label of every step noted `note` written `text`.
+pub(super) fn relabelled(figure: &Figure, note: &str, text: &str) -> Figure {
+    let mut out = figure.clone();
+    for step in out.steps.iter_mut().filter(|s| s.note == note) {
+        if let Some(label) = step.label.as_mut() {
+            label.text = text.to_string();
+        }
+    }
+    out
+}
+
+/// A dimension's text with its value: `r_{min} = 69 мм` for `symbol` `r_{min}` and
+/// `metres` 0.069.
+pub(super) fn valued(symbol: &str, metres: f64, lang: Lang) -> String {
+    format!("{symbol} = {}", digits::mm(metres, lang))
+}
+
+/// The displacement diagram with its phases' dimensions written in `lang`.
+pub(super) fn phases_marked(figure: &Figure, spec: &CamSpec, lang: Lang) -> Figure {
+    let p = &spec.phases;
+    let mut out = figure.clone();
+    for ((note, sym), x) in PHASE_NOTES
+        .iter()
+        .zip(phase_symbols(lang))
+        .zip([p.rise, p.far, p.ret, p.near])
+    {
+        out = relabelled(&out, note, &format!("{sym} = {}", phase_angle(x, lang)));
+    }
+    out
+}
+
+/// The base radius the profile is built on, as the data say it: accepted from the r_min
+/// read (`Принимаем r_{0} = 70 мм ≥ r_{min} = 69 мм`), or the scene's (`r_{0} = 20 мм`).
+pub(crate) fn base_line(cam: &Cam, lang: Lang) -> String {
+    if cam.spec.base_radius.is_some() {
+        return format!("r_{{0}} = {}", digits::mm(cam.base, lang));
+    }
+    CamText::Accepted
+        .get(lang)
+        .replace("{r0}", &digits::mm(cam.base, lang))
+        .replace("{rmin}", &digits::mm(cam.radius.graphical, lang))
+}
