@@ -129,10 +129,21 @@ pub fn arm(rec: &mut Recorder, note: String, (c, foot): (DVec2, DVec2), label: &
             .flat_map(|side| (1..=ARMS_BESIDE).map(move |k| side * k as f64 * ARM_BESIDE_MM))
             .filter(|&d| !on_ink(c + n * d, foot + n * d))
             .collect();
-        let roomy = clear
+        // The named points, whose labels the dimension line keeps clear of.
+        let points: Vec<DVec2> = rec
+            .steps()
             .iter()
-            .copied()
-            .find(|&d| room(c + n * d, foot + n * d, &drawn) >= TEXT_ROOM_MM);
+            .filter_map(|s| match (&s.item, &s.label) {
+                (Item::Point(x), Some(_)) => Some(*x),
+                _ => None,
+            })
+            .collect();
+        let roomy = clear.iter().copied().find(|&d| {
+            let (a, b) = (c + n * d, foot + n * d);
+            let line = Segment::new(a, b);
+            room(a, b, &drawn) >= TEXT_ROOM_MM
+                && points.iter().all(|&x| line.distance_to(x) >= POINT_ROOM_MM)
+        });
         let beside = roomy
             .or_else(|| clear.first().copied())
             .unwrap_or(ARM_BESIDE_MM);
@@ -157,6 +168,10 @@ pub fn arm(rec: &mut Recorder, note: String, (c, foot): (DVec2, DVec2), label: &
 /// and its arrowheads: its width (`h₁₂`, about 6 mm) and on each side more than its
 /// distance from its own line, that no crossing line stands nearer to it.
 const TEXT_ROOM_MM: f64 = 16.0;
+
+/// A dimension line beside an arm passes at least this far from a named point, mm: clear
+/// of the point's label.
+const POINT_ROOM_MM: f64 = 6.0;
 
 /// Room of an arrowhead at each end of a dimension line, mm.
 const ARROWHEAD_MM: f64 = 3.0;

@@ -306,11 +306,22 @@ fn the_engines_note_turns_the_levers_force_into_the_balancing_moment() {
     let session = Session::new(&scene, Drafting::HAND);
     let sc = session.kin_scales().expect("scales");
     let k = session.force_positions().expect("positions")[0];
-    let lever = session.forces(&sc, k).expect("forces").analysis.lever.clone();
+    let lever = session
+        .forces(&sc, k)
+        .expect("forces")
+        .analysis
+        .lever
+        .clone();
     let force = lever.f_bal.expect("F_у");
     for (lang, words) in [
-        (tmm::scale::Lang::Ru, "приложенавточкеAкривошипаперпендикулярноOA"),
-        (tmm::scale::Lang::Uk, "прикладенавточціAкривошипаперпендикулярнодоOA"),
+        (
+            tmm::scale::Lang::Ru,
+            "приложенавточкеAкривошипаперпендикулярноOA",
+        ),
+        (
+            tmm::scale::Lang::Uk,
+            "прикладенавточціAкривошипаперпендикулярнодоOA",
+        ),
         (tmm::scale::Lang::En, "pointAatrightanglestoOA"),
     ] {
         let note = tmm::note::compose(&session, lang).expect("note");
