@@ -5,7 +5,7 @@
 //! joint label `F_и5 ≡ F_пс` (issue 45).
 
 use crate::construct::{Item, Recorder, Role, StepId};
-use crate::geom::{Arc, DVec2};
+use crate::geom::{Arc, DVec2, Segment};
 
 /// An arrow lies on another when both its ends are this close to the other's line and they
 /// share more than [`SHARED_MM`] of their length, mm (a main line is 0.7 mm wide and an
@@ -85,21 +85,128 @@ pub fn arrow(
     id
 }
 
-/// Two arms this close at both ends are one arm, mm: drawn once, named once.
-const SAME_ARM_MM: f64 = 0.3;
+/// Two arms this close at both ends are one arm, mm: drawn once, named once (and a force
+/// whose arm's foot is this close to its point on the lever has its image's ray for arm).
+pub const SAME_ARM_MM: f64 = 0.3;
+
+/// An arm that would lie on a line already drawn (a link, a load's arrow) is dimensioned
+/// this far beside it, mm (a second there this far again, up to [`ARMS_BESIDE`] deep).
+const ARM_BESIDE_MM: f64 = 8.0;
+/// See [`ARM_BESIDE_MM`].
+const ARMS_BESIDE: usize = 4;
+
+/// Draw the arm of a force from the moment centre `c` to the foot of the perpendicular on
+/// its line `foot`, labelled `label` (`h_{n}`): a thin line labelled at its middle; where
+/// that line is drawn already (a link, a load's arrow, another arm: drawn there it would
+/// read as that line, and the label would name nothing one can see — issue 45), dimensioned
+/// beside it instead, with extension lines from `c` and `foot`, one step further out for
+/// each arm dimensioned there (the weights' arms on the lever all run level from the pole).
+/// The one way every drawing of the force analysis draws an arm, so that [`arm_named`]
+/// finds it.
+pub fn arm(rec: &mut Recorder, note: String, (c, foot): (DVec2, DVec2), label: &str) -> StepId {
+    // The lines drawn: links, arrows, thin lines and the dimension lines of other arms.
+    let drawn: Vec<(DVec2, DVec2)> = rec
+        .steps()
+        .iter()
+        .filter_map(|s| match s.item {
+            Item::Vector { from, to } => Some((from, to)),
+            Item::Segment(seg) => Some((seg.from, seg.to)),
+            Item::Dimension { from, to, offset } => {
+                let n = (to - from).normalize_or_zero().perp() * offset;
+                Some((from + n, to + n))
+            }
+            _ => None,
+        })
+        .collect();
+    let on_ink = |a: DVec2, b: DVec2| drawn.iter().any(|&(p, q)| lies_on(a, b, p, q));
+    if on_ink(c, foot) {
+        // One side first, stacked outwards as baseline dimensions are, then the other: the
+        // first place clear of the lines drawn whose dimension line leaves its text room
+        // between the lines crossing it, else the first clear one.
+        let n = (foot - c).normalize_or_zero().perp();
+        let clear: Vec<f64> = [1.0, -1.0]
+            .into_iter()
+            .flat_map(|side| (1..=ARMS_BESIDE).map(move |k| side * k as f64 * ARM_BESIDE_MM))
+            .filter(|&d| !on_ink(c + n * d, foot + n * d))
+            .collect();
+        // The named points, whose labels the dimension line keeps clear of.
+        let points: Vec<DVec2> = rec
+            .steps()
+            .iter()
+            .filter_map(|s| match (&s.item, &s.label) {
+                (Item::Point(x), Some(_)) => Some(*x),
+                _ => None,
+            })
+            .collect();
+        let roomy = clear.iter().copied().find(|&d| {
+            let (a, b) = (c + n * d, foot + n * d);
+            let line = Segment::new(a, b);
+            room(a, b, &drawn) >= TEXT_ROOM_MM
+                && points.iter().all(|&x| line.distance_to(x) >= POINT_ROOM_MM)
+        });
+        let beside = roomy
+            .or_else(|| clear.first().copied())
+            .unwrap_or(ARM_BESIDE_MM);
+        return rec.dimension(note, (c, foot, beside), label);
+    }
+    let id = rec.draw(
+        note,
+        Item::Segment(Segment::new(c, foot)),
+        Role::Construction,
+        &[],
+    );
+    rec.label(
+        id,
+        label,
+        c.lerp(foot, 0.5),
+        (foot - c).perp().normalize_or_zero(),
+    );
+    id
+}
+
+/// A dimension's text wants this much of its line free, mm, between the lines crossing it
+/// and its arrowheads: its width (`h₁₂`, about 6 mm) and on each side more than its
+/// distance from its own line, that no crossing line stands nearer to it.
+const TEXT_ROOM_MM: f64 = 16.0;
+
+/// A dimension line beside an arm passes at least this far from a named point, mm: clear
+/// of the point's label.
+const POINT_ROOM_MM: f64 = 6.0;
+
+/// Room of an arrowhead at each end of a dimension line, mm.
+const ARROWHEAD_MM: f64 = 3.0;
+
+/// The longest stretch of the dimension line `a`–`b` between its arrowheads that no line of
+/// `drawn` crosses, mm.
+fn room(a: DVec2, b: DVec2, drawn: &[(DVec2, DVec2)]) -> f64 {
+    let line = Segment::new(a, b);
+    let length = a.distance(b);
+    let (lo, hi) = (ARROWHEAD_MM, length - ARROWHEAD_MM);
+    let mut cuts: Vec<f64> = drawn
+        .iter()
+        .filter_map(|&(p, q)| line.crossing(&Segment::new(p, q)))
+        .map(|x| x.distance(a))
+        .filter(|&t| t > lo && t < hi)
+        .collect();
+    cuts.extend([lo, hi]);
+    cuts.sort_by(f64::total_cmp);
+    cuts.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max)
+}
 
 /// The name of the arm from `c` to `foot` when one is drawn on `rec` already (two forces on
 /// one line of action have one arm: `h₇`, not `h₇ ≡ h₈`).
 pub fn arm_named(rec: &Recorder, c: DVec2, foot: DVec2) -> Option<String> {
-    rec.steps().iter().find_map(|s| match (&s.item, &s.label) {
-        (Item::Segment(seg), Some(l))
-            if l.text.starts_with("h_")
-                && seg.from.distance(c) <= SAME_ARM_MM
-                && seg.to.distance(foot) <= SAME_ARM_MM =>
-        {
-            Some(l.text.clone())
-        }
-        _ => None,
+    rec.steps().iter().find_map(|s| {
+        let (a, b) = match s.item {
+            Item::Segment(seg) => (seg.from, seg.to),
+            Item::Dimension { from, to, .. } => (from, to),
+            _ => return None,
+        };
+        let l = s.label.as_ref()?;
+        (l.text.starts_with("h_")
+            && a.distance(c) <= SAME_ARM_MM
+            && b.distance(foot) <= SAME_ARM_MM)
+            .then(|| l.text.clone())
     })
 }
 

@@ -264,6 +264,7 @@ pub fn analyse(
             ctx: *ctx,
         },
         mu_f: scale_f,
+        own: own_scales(spec, prog, (&twin, &loads_exact), scale_f),
     };
     let polygons = polygons::polygons(&board, &loads, &spec.drive)
         .map_err(|e| polygon_error(&pos.label, e))?;
@@ -338,6 +339,50 @@ fn polygon_scale(spec: &ForceSpec, twin: &Equilibrium) -> Result<Scale, ForceErr
         None => Scale::round_for(twin.largest(), POLYGON_MM, Quantity::Force)
             .ok_or(ForceError::NoScale(twin.largest()))?,
     })
+}
+
+/// Each polygon's own μ_F (by group index, then the driving link's), as the textbook
+/// chooses it for each plan of forces: the round scale that draws the largest force the
+/// polygon lays off or reads (the twin's, as [`polygon_scale`] sizes the position's `mu_f`)
+/// about [`POLYGON_MM`] long — a group whose forces are small against the position's largest
+/// is not drawn a few millimetres long, its reactions read to a resolution far coarser than
+/// the course's few per cent (issue 45: R₀₋₃ of the v-engine at position 6, 1,7 mm at the
+/// position's μ_F, read 11,8 % short). Empty when the scene sets μ_F: one scale for all.
+fn own_scales(
+    spec: &ForceSpec,
+    prog: &Program,
+    (twin, loads): (&Equilibrium, &[Load]),
+    mu_f: Scale,
+) -> Vec<Scale> {
+    if spec.scale_f.is_some() {
+        return Vec::new();
+    }
+    let largest = |links: &[usize], extra: f64| {
+        let reactions = twin
+            .reactions
+            .iter()
+            .filter(|r| links.contains(&r.pair.from) || links.contains(&r.pair.to))
+            .map(|r| r.force.length());
+        let loads = loads
+            .iter()
+            .filter(|l| links.contains(&l.link))
+            .map(|l| l.force.length());
+        reactions.chain(loads).fold(extra, f64::max)
+    };
+    let mut parts: Vec<(usize, f64)> = prog
+        .groups()
+        .map(|g| (g.group, largest(&g.links, 0.0)))
+        .collect();
+    parts.sort_by_key(|&(group, _)| group);
+    let crank = prog.crank_link as usize;
+    let driver = largest(&[crank], twin.f_bal.map_or(0.0, f64::abs));
+    parts
+        .iter()
+        .map(|&(_, f)| f)
+        .chain(std::iter::once(driver))
+        // A polygon without forces: the position's scale.
+        .map(|f| Scale::round_for(f, POLYGON_MM, Quantity::Force).unwrap_or(mu_f))
+        .collect()
 }
 
 /// The position's rows: the loads, the reactions (with friction also their rows `_f`), each

@@ -152,6 +152,13 @@ impl ForceSpec {
             .filter(move |r| r.stroke.acts(phase))
     }
 
+    /// The machine is an engine: the gas forces of its indicator diagrams drive it, and its
+    /// balancing moment is the resisting moment on its shaft (the textbook's M_у of an
+    /// engine: what the driven machine takes off the crank).
+    pub fn engine(&self) -> bool {
+        !self.indicators.is_empty()
+    }
+
     /// The weight of a mass `m` (kg) as a vector, N: m·g along the scene's gravity.
     pub fn weight(&self, m: f64) -> DVec2 {
         DVec2::from_angle(self.gravity_dir) * (m * self.g)

@@ -141,6 +141,7 @@ impl Case {
                 ctx: plan_context(),
             },
             mu_f: self.mu_f,
+            own: Vec::new(),
         }
     }
 

@@ -1,5 +1,5 @@
 //! Drawing-board steps shared by the friction cases: labelled arrows, angle marks, the
-//! friction cone at a contact, and the force triangle Q + P + R = 0.
+//! friction cone at a contact, and the force triangle Q + P + R = 0 (or Q + P = R).
 
 use crate::construct::{ConstructionError, Item, Recorder, Role, StepId};
 use crate::geom::{rotate, Arc, DVec2, Line, Segment};
@@ -115,16 +115,27 @@ pub(super) struct Triangle {
 /// The names of a triangle's three forces (label markup).
 pub(super) type Names<'a> = [&'a str; 3];
 
-/// The force triangle Q + P + R = 0 at the recorder's μ_F: Q (N, a vector) laid from `a`;
-/// through its end a line along `p_dir`, through `a` a line along `r_dir` (the direction of
-/// R acting on the body); their intersection closes the triangle. P and R are measured.
+/// What a triangle's third side is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Third {
+    /// A force that closes it, Q + P + R = 0: drawn from the end of P to the start of Q.
+    Closes,
+    /// The resultant of the first two, Q + P = R (the net force ΔP a slider's triangle
+    /// reads): drawn from the start of Q to the end of P.
+    Resultant,
+}
+
+/// The force triangle Q + P + R = 0 (or Q + P = R, [`Third::Resultant`]) at the recorder's
+/// μ_F: Q (N, a vector) laid from `a`; through its end a line along `p_dir`, through `a` a
+/// line along `r_dir` (the direction of R acting on the body, or of the resultant); their
+/// intersection closes the triangle. P and R are measured.
 pub(super) fn triangle(
     rec: &mut Recorder,
     a: DVec2,
     q: DVec2,
     (p_dir, r_dir): (DVec2, DVec2),
     names: Names<'_>,
-    role: Role,
+    (role, third): (Role, Third),
 ) -> Result<Triangle, ConstructionError> {
     let mu = rec.scale().value();
     let b = a + q / mu;
@@ -163,10 +174,14 @@ pub(super) fn triangle(
     let centroid = (a + b + c) / 3.0;
     let side = |m: DVec2| (m - centroid).normalize_or(DVec2::X);
     arrow(rec, pn, (b, c), role, pn, side(b.lerp(c, 0.5)));
-    arrow(rec, rn, (c, a), role, rn, side(c.lerp(a, 0.5)));
+    let (r_from, r_to) = match third {
+        Third::Closes => (c, a),
+        Third::Resultant => (a, c),
+    };
+    arrow(rec, rn, (r_from, r_to), role, rn, side(c.lerp(a, 0.5)));
     let sign = |v: DVec2, d: DVec2| if v.dot(d) < 0.0 { -1.0 } else { 1.0 };
     let p = rec.measure(b, c).value * sign(c - b, p_dir);
-    let r = rec.measure(c, a).value * sign(a - c, r_dir);
+    let r = rec.measure(r_from, r_to).value * sign(r_to - r_from, r_dir);
     Ok(Triangle {
         a,
         b,

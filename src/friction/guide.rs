@@ -13,7 +13,7 @@
 //! R₁₂ split along the two reactions' lines into R₁ and R₂. The twin is
 //! [`crate::cam::force`]'s closed form (`translating_forces`, `translating_locking`).
 
-use super::draw::{angle_mark, arrow, thin_line, triangle};
+use super::draw::{angle_mark, arrow, thin_line, triangle, Third};
 use super::incline::MIN_CROSSING_DEG;
 use super::{
     friction_angle, reading, subject, Drawing, DrawingKind, FollowerGuide, FrictionCase,
@@ -253,7 +253,7 @@ fn plan(
         DVec2::new(0.0, -c.load),
         (p_dir, -kz),
         ["Q", "P", "R_{12}"],
-        Role::Result,
+        (Role::Result, Third::Closes),
     )
     .map_err(wrap)?;
     let dirs = reaction_dirs(c.guide.f);

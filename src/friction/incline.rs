@@ -3,7 +3,7 @@
 //! Q + P + R = 0 with R turned from the normal by φ against the motion; beside it the same
 //! triangle without friction, whose P₀ gives the efficiency.
 
-use super::draw::{angle_mark, arrow, cone, triangle, turned, Triangle};
+use super::draw::{angle_mark, arrow, cone, triangle, turned, Third, Triangle};
 use super::{
     friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Incline,
     Motion, Reading, Solved,
@@ -204,7 +204,7 @@ pub(super) fn polygon(
         q,
         (p_dir, r_dir),
         ["Q", "P", "R"],
-        Role::Result,
+        (Role::Result, Third::Closes),
     )
     .map_err(wrap)?;
     // Without friction (η): on a level plane nothing is lifted, no triangle.
@@ -219,7 +219,7 @@ pub(super) fn polygon(
             q,
             (p_dir, u.perp()),
             ["Q", "P_{0}", "R_{0}"],
-            Role::Result,
+            (Role::Result, Third::Closes),
         )
         .map_err(wrap)?;
         Some(t)

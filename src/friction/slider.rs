@@ -5,17 +5,19 @@
 //! force's line against the friction cone. Its weight on an inclined plane (Fig. 43) is the
 //! same case with P = G and α the slope.
 //!
-//! The construction: the scheme with the friction cone and P; the triangle P + R₀ + F_и = 0
-//! with R₀ along the static cone's generator (turned by φ₀ against the motion) and F_и = −m·a
-//! along the plane: a negative F_и is the static friction's reserve P₁ − f₀·N, the slider
-//! stays; otherwise the triangle with R along the sliding cone's generator (φ) measures the
-//! net force ΔP = P₁ − f·N driving it (zero: uniform motion).
+//! The construction: the scheme with the friction cone and P; the triangle P + R₀ = ΔP with
+//! R₀ along the static cone's generator (turned by φ₀ against the motion) and their resultant
+//! ΔP along the plane (the side from P's start to R₀'s end): a negative ΔP is the static
+//! friction's reserve P₁ − f₀·N, the slider stays; otherwise the triangle with R along the
+//! sliding cone's generator (φ) measures the net force ΔP = P₁ − f·N driving it (zero:
+//! uniform motion). The side is named by the quantity it reads, ΔP (issue 45), not as an
+//! inertia force.
 //!
 //! `R_<name>` is the total reaction that acts: sliding, N/cos φ on the generator; at rest
-//! −P, inside the cone (R₀ + F_и read as the triangle's closing side), below the static
+//! −P, inside the cone (R₀ − ΔP read as the triangle's closing side), below the static
 //! cone's limit N/cos φ₀ (the side R₀, stated on the sheet) by up to 1/cos φ₀.
 
-use super::draw::{angle_mark, arrow, cone, thin_line, triangle, turned};
+use super::draw::{angle_mark, arrow, cone, thin_line, triangle, turned, Third};
 use super::{
     friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Reading,
     Slider, Solved,
@@ -218,10 +220,10 @@ struct Triangles {
     crossing_deg: f64,
 }
 
-/// The triangle P + R₀ + F_и = 0 with R₀ along the static cone's generator (φ₀): a negative
-/// F_и is the static friction's reserve, the slider stays, and the reaction that acts is
-/// R₀ + F_и = −P, the triangle's closing side read; otherwise (or at the limit) the triangle
-/// along the sliding cone's generator (φ) gives R and the net force.
+/// The triangle P + R₀ = ΔP with R₀ along the static cone's generator (φ₀): a negative ΔP
+/// is the static friction's reserve, the slider stays, and the reaction that acts is
+/// R₀ − ΔP = −P, the side from P's end to its start read; otherwise (or at the limit) the
+/// triangle along the sliding cone's generator (φ) gives R and the net force ΔP.
 fn triangles(
     case: &FrictionCase,
     c: &Slider,
@@ -238,14 +240,14 @@ fn triangles(
             rec,
             at,
             p_vector(c),
-            (turned(DVec2::Y, phi), -DVec2::X),
+            (turned(DVec2::Y, phi), DVec2::X),
             names,
-            Role::Result,
+            (Role::Result, Third::Resultant),
         )
     };
-    let mut t = closed(&mut rec, phi0, DVec2::ZERO, ["P", "R_{0}", "F_{и}"]).map_err(wrap)?;
+    let mut t = closed(&mut rec, phi0, DVec2::ZERO, ["P", "R_{0}", "ΔP"]).map_err(wrap)?;
     let mut state = SliderState::Rest;
-    // At rest the reaction that acts closes P: R₀ and the reserve F_и summed, b → a.
+    // At rest the reaction that acts closes P: R₀ less the reserve ΔP, b → a.
     let mut r = rec.measure(t.b, t.a).value;
     if t.r >= -eps {
         if c.f0 > c.f {
@@ -256,7 +258,7 @@ fn triangles(
                 &mut rec,
                 phi,
                 DVec2::new(right + 20.0, 0.0),
-                ["P", "R", "F_{и}"],
+                ["P", "R", "ΔP"],
             )
             .map_err(wrap)?;
         }

@@ -375,6 +375,46 @@ fn feasible_up(c: &Incline) -> bool {
     incline::feasible("c", c, friction_angle(c.f)).is_ok()
 }
 
+/// The slider's force triangle names the side it reads by its quantity (issue 45): ΔP, the
+/// resultant of P and R drawn from P's start to R's end along the plane (at rest the reserve,
+/// against the lean of P), never an inertia force F_и.
+#[test]
+fn the_sliders_triangle_names_its_net_force_delta_p() {
+    let c = Slider {
+        load: 100.0,
+        f: 0.2,
+        f0: 0.5,
+        alpha: 15f64.to_radians(),
+    };
+    let s = solve(&case("rest", CaseKind::Slider(c)), &ctx(0.0)).unwrap();
+    let triangle = &s.drawings[1].figure;
+    let vector = |name: &str| {
+        triangle
+            .steps
+            .iter()
+            .find_map(|st| match (&st.item, &st.label) {
+                (crate::construct::Item::Vector { from, to }, Some(l)) if l.text == name => {
+                    Some((*from, *to))
+                }
+                _ => None,
+            })
+    };
+    assert!(
+        vector("F_{и}").is_none(),
+        "no inertia force on the triangle"
+    );
+    let (from, to) = vector("ΔP").expect("ΔP drawn");
+    let (p_from, _) = vector("P").expect("P drawn");
+    let (_, r_to) = vector("R_{0}").expect("R₀ drawn");
+    // The resultant: from P's start to R₀'s end, along the plane.
+    assert!(from.distance(p_from) < 1e-9 && to.distance(r_to) < 1e-9);
+    assert!((to.y - from.y).abs() < 1e-9);
+    // At rest the reserve P(sin α − f₀ cos α) < 0: against +x, where P leans.
+    let reserve = 100.0 * (c.alpha.sin() - c.f0 * c.alpha.cos());
+    let read = (to.x - from.x) * triangle.scale.value();
+    assert!((read - reserve).abs() < 1e-9, "{read} against {reserve}");
+}
+
 /// A slider pressed at α (seed 001 L1238–1268): at rest for α < φ₀, uniform at α = φ (= φ₀),
 /// accelerating beyond, whatever P is; the triangles P + R + F_и = 0 read R, N = P·cos α and
 /// ΔP (at rest the static reserve P(sin α − f₀ cos α) < 0, sliding the net force

@@ -3,7 +3,7 @@
 //! pushes the slider, `P = 2·f·N = f·Q/sin(β/2)`: a flat slider with the reduced coefficient
 //! `f′ = f/sin(β/2) = tg φ′`.
 
-use super::draw::{angle_mark, arrow, triangle};
+use super::draw::{angle_mark, arrow, triangle, Third};
 use super::{
     friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Solved,
     Wedge,
@@ -130,7 +130,7 @@ pub(super) fn solve(
         q,
         (n1, n2),
         ["Q", "N_{1}", "N_{2}"],
-        Role::Result,
+        (Role::Result, Third::Closes),
     )
     .map_err(wrap)?;
     let p = c.f * (t.p + t.r);

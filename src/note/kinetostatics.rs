@@ -186,7 +186,7 @@ fn groups(w: &mut Writer<'_, '_>, f: &PositionForces) -> Result<(), NoteError> {
                 }
             }
         }
-        polygon_scale(w, f, &g.links);
+        polygon_scale(w, f, (&g.links, g.polygon.scale.value()));
     }
     let crank = w.session.mechanism("the explanatory note")?.crank.link as usize;
     let driver = &a.polygons.driver;
@@ -206,7 +206,7 @@ fn groups(w: &mut Writer<'_, '_>, f: &PositionForces) -> Result<(), NoteError> {
     let s = fill(w.word(N::DriverMoments), &[("point", point)]);
     w.doc.par(&[label(&s)]);
     worked_equation(w, e, &loads, Arms::Metres, None);
-    polygon_scale(w, f, &[crank]);
+    polygon_scale(w, f, (&[crank], driver.polygon.scale.value()));
     Ok(())
 }
 
@@ -221,10 +221,9 @@ fn vector_equation(w: &mut Writer<'_, '_>, terms: &[String], loads: &[crate::for
     explain_owned(w, &items);
 }
 
-/// The polygon's μ_F, shown by the largest load on `links` drawn at it.
-fn polygon_scale(w: &mut Writer<'_, '_>, f: &PositionForces, links: &[usize]) {
+/// The polygon's μ_F `mu`, shown by the largest load on `links` drawn at it.
+fn polygon_scale(w: &mut Writer<'_, '_>, f: &PositionForces, (links, mu): (&[usize], f64)) {
     let lang = w.lang;
-    let mu = f.scale_f.value();
     let largest = f
         .analysis
         .loads

@@ -174,11 +174,33 @@ fn explained(
         let u = if t.couple { "N*m" } else { "N" };
         out.push((t.name.clone(), meaning(w, &t.name, loads), u));
     }
-    // The arms h₁, h₂, … of every drawing under one symbol, explained once.
-    if e.terms.iter().any(|t| t.moment != 0.0 && !t.couple) {
+    let arms = e.terms.iter().filter(|t| t.moment != 0.0 && !t.couple);
+    // The arms h₁, h₂, … of every drawing under one symbol, explained once; a lever's
+    // segment of the turned plan that is a force's arm (`pb`, a pair's `ab`) by its name.
+    if arms.clone().any(|t| !plan_arm(t)) {
         out.push(("h_{i}".into(), w.word(M::Arm).to_string(), arm_unit));
     }
+    let mut segments: Vec<String> = Vec::new();
+    for t in arms.filter(|t| plan_arm(t)) {
+        let s = arm_symbol(t);
+        if !segments.contains(&s) {
+            segments.push(s);
+        }
+    }
+    if !segments.is_empty() {
+        out.push((
+            segments.join(", "),
+            w.word(M::PlanArm).to_string(),
+            arm_unit,
+        ));
+    }
     out
+}
+
+/// Whether a term's arm is a segment of the lever's turned plan (its label names the
+/// segment by its ends, `pb`, `ab`), not an arm `h_{n}` drawn for it.
+fn plan_arm(t: &MomentTerm) -> bool {
+    t.label.as_ref().is_some_and(|l| !l.starts_with("h_"))
 }
 
 /// The equation `Σ … = 0` of `e` displayed with the unknown's term, and its symbols
@@ -215,6 +237,10 @@ pub(super) fn worked_equation(
                 Some(k) if l.is_none() => {
                     let m = fill(w.word(M::LinkLength), &[("k", k.to_string())]);
                     items.push((h, m, arm_unit));
+                }
+                // A segment of the turned plan (`pa`) explained by its own name.
+                _ if l.as_ref().is_some_and(|l| !l.starts_with("h_")) => {
+                    items.push((h, w.word(M::PlanArm).to_string(), arm_unit));
                 }
                 _ => items.push(("h_{i}".into(), w.word(M::Arm).to_string(), arm_unit)),
             }

@@ -3,16 +3,18 @@
 
 use super::kinetostatics::difference;
 use super::machines::row;
-use super::markup::{frac, num, sym, unit};
+use super::markup::{frac, label, num, sym, unit};
 use super::moments::{
-    crank_speed, explain_owned, explain_words, lever_couple, meaning, product, worked_equation,
-    Arms,
+    crank_speed, explain_owned, explain_words, fill, lever_couple, meaning, product,
+    worked_equation, Arms,
 };
 use super::{NoteError, Writer};
 use crate::check::Method;
 use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
 use crate::geom::DVec2;
-use crate::sheets::captions::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+use crate::sheets::captions::{
+    unit_in, KinematicsMeaning as K, MachinesMeaning as M, MachinesNote as N, NoteText as T,
+};
 
 /// Zhukovsky's lever: its moment equation about the pole with every arm in mm and the
 /// balancing force (a gear drive) or moment (a coupling) it gives.
@@ -25,7 +27,12 @@ pub(super) fn lever(w: &mut Writer<'_, '_>, f: &PositionForces) -> Result<(), No
     w.doc.say(w.word(N::LeverIntro));
     let loads = f.analysis.loads.clone();
     match e.unknown {
-        Unknown::Force { .. } => worked_equation(w, e, &loads, Arms::Millimetres, None),
+        Unknown::Force { value, .. } => {
+            worked_equation(w, e, &loads, Arms::Millimetres, None);
+            if let Some(l) = lever.crank_arm {
+                crank_moment(w, value, l, lever.m_bal);
+            }
+        }
         Unknown::Arm { .. } | Unknown::Couple { .. } => {
             w.doc.say(w.word(N::LeverMoment));
             let w1 = crank_speed(w)?;
@@ -34,6 +41,47 @@ pub(super) fn lever(w: &mut Writer<'_, '_>, f: &PositionForces) -> Result<(), No
         }
     }
     Ok(())
+}
+
+/// A coupling's balancing moment from the lever's balancing force at the crank pin:
+/// M_у = F_у·l_OA (`force`, N; the crank's length `l`, m; `moment` the lever's M_у, N·m).
+fn crank_moment(w: &mut Writer<'_, '_>, force: f64, l: f64, moment: f64) {
+    let lang = w.lang;
+    let (centre, pin) = crank_points(w);
+    let crank = format!("l_{{{centre}{pin}}}");
+    let sentence = fill(
+        w.word(N::LeverCrankMoment),
+        &[("pin", pin.clone()), ("centre", centre.clone())],
+    );
+    w.doc.par(&[label(&sentence)]);
+    // The moment's sign is its sense (counter-clockwise positive), the force's magnitude.
+    let sign = if moment < 0.0 { "-" } else { "" };
+    w.formula(&format!(
+        "{} = {sign}{} {} = {sign}{} dot {} = {}{}",
+        sym("M_{у}"),
+        sym("F_{у}"),
+        sym(&crank),
+        num(force.abs(), 5, lang),
+        num(l, 4, lang),
+        num(moment, 5, lang),
+        unit(&unit_in("N*m", lang))
+    ));
+    explain_owned(w, &[(crank, w.word(K::CrankLength).to_string(), "m")]);
+}
+
+/// The names of the crank's centre and pin (`O`, `A`; empty when the session has none).
+fn crank_points(w: &Writer<'_, '_>) -> (String, String) {
+    let names = w
+        .session
+        .kin_scales()
+        .ok()
+        .and_then(|sc| w.session.positions(sc.l).ok())
+        .map(|plan| {
+            let p = &plan.program;
+            let name = |k: usize| p.names.get(k).cloned().unwrap_or_default();
+            (name(p.centre), name(p.pin))
+        });
+    names.unwrap_or_default()
 }
 
 /// The balancing load by the polygons against the lever, and the power: the drive's
@@ -59,7 +107,7 @@ pub(super) fn balancing_and_power(
     };
     w.doc.say(w.word(T::BalancingBothRoutes));
     difference(w, "M_{у}", a.graphical, b.graphical, true);
-    let engine = !spec.indicators.is_empty();
+    let engine = spec.engine();
     let n = a.graphical.abs() * w1.abs();
     let (intro, meaning_n) = if engine {
         (w.word(N::EnginePower), M::ShaftPower)

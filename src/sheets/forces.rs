@@ -173,7 +173,8 @@ fn position_sheet(
         title("φ_{1}"),
         super::drafting_line(session.drafting(), super::Errs::Plans, lang),
     ];
-    lines.extend(balance_lines(&f.rows, lang));
+    let engine = session.force_spec("the force sheets")?.engine();
+    lines.extend(balance_lines(&f.rows, engine, lang));
     blocks.push(Block::Text {
         lines,
         size_mm: TEXT_MM,
@@ -232,8 +233,8 @@ fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
 
 /// The balancing load by the polygon against the lever (the seed's «погрешность»):
 /// "M_у: по плану сил …, по рычагу Жуковского …, расхождение … %", and F_у likewise
-/// through a gear.
-fn balance_lines(rows: &[Row], lang: Lang) -> Vec<String> {
+/// through a gear; an engine's M_у named for what it is, the resisting moment on its shaft.
+fn balance_lines(rows: &[Row], engine: bool, lang: Lang) -> Vec<String> {
     [Symbol::Moment, Symbol::Force]
         .into_iter()
         .filter_map(|symbol| {
@@ -249,9 +250,14 @@ fn balance_lines(rows: &[Row], lang: Lang) -> Vec<String> {
             } else {
                 "—".into()
             };
+            let name = symbols::quantity(symbol, "bal", lang);
+            let name = if engine && symbol == Symbol::Moment {
+                format!("{name} ({})", Text::ShaftResistance.get(lang))
+            } else {
+                name
+            };
             Some(format!(
-                "{}: {} {} {unit}, {} {} {unit}, {} {diff} %",
-                symbols::quantity(symbol, "bal", lang),
+                "{name}: {} {} {unit}, {} {} {unit}, {} {diff} %",
                 Text::ByPolygon.get(lang),
                 value(p, lang),
                 Text::ByLever.get(lang),

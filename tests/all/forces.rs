@@ -739,7 +739,9 @@ fn the_guide_reaction_stands_at_its_arm_and_the_balancing_force_at_the_end_of_it
         let dim = steps
             .iter()
             .find_map(|s| match s.item {
-                Item::Dimension { from, to, .. } => Some((from, to, s)),
+                Item::Dimension { from, to, .. } if s.note.ends_with("on the guide") => {
+                    Some((from, to, s))
+                }
                 _ => None,
             })
             .expect("the arm dimensioned");
@@ -804,12 +806,15 @@ fn the_guide_reaction_stands_at_its_arm_and_the_balancing_force_at_the_end_of_it
         assert_eq!(image.item, Item::Point(at), "F_у is not at the image of P");
         let foot = at + e * (-at).dot(e);
         let reaches = |a: DVec2, b: DVec2| {
-            lever.steps.iter().any(|s| match s.item {
-                Item::Segment(seg) => {
-                    (seg.from.distance(a) < 1e-9 && seg.to.distance(b) < 1e-9)
-                        || (seg.from.distance(b) < 1e-9 && seg.to.distance(a) < 1e-9)
-                }
-                _ => false,
+            lever.steps.iter().any(|s| {
+                let (from, to) = match s.item {
+                    Item::Segment(seg) => (seg.from, seg.to),
+                    // An arm is dimensioned (issue 45).
+                    Item::Dimension { from, to, .. } => (from, to),
+                    _ => return false,
+                };
+                (from.distance(a) < 1e-9 && to.distance(b) < 1e-9)
+                    || (from.distance(b) < 1e-9 && to.distance(a) < 1e-9)
             })
         };
         assert!(
@@ -837,9 +842,15 @@ fn every_arm_ends_on_its_forces_line_of_action() {
         each_position(scene, |f| {
             for g in &f.analysis.polygons.groups {
                 let steps = &g.scheme.steps;
-                for arm in steps.iter().filter(|s| s.note.starts_with("arm of ")) {
-                    let Item::Segment(h) = arm.item else {
-                        continue;
+                let about = |s: &&tmm::construct::Step| {
+                    s.note.starts_with("arm of ") && s.note.ends_with(" about the moment centre")
+                };
+                for arm in steps.iter().filter(about) {
+                    // Issue 45: an arm on other lines is dimensioned beside them.
+                    let h = match arm.item {
+                        Item::Segment(h) => h,
+                        Item::Dimension { from, to, .. } => tmm::geom::Segment::new(from, to),
+                        _ => panic!("{scene} {}: {} is not drawn", f.label, arm.note),
                     };
                     let name = arm
                         .note

@@ -27,6 +27,7 @@ mod dxf;
 mod dynamics;
 mod engine;
 mod flywheel_sheet;
+mod force_marks;
 mod forces;
 mod friction;
 mod friction_follower;

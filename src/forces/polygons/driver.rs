@@ -1,5 +1,6 @@
-//! The driving link's polygon: the balancing moment (a coupling) or the tooth force on the
-//! line of action (a gear drive), and the frame's reaction.
+//! The driving link's polygon: the balancing moment (a coupling, drawn on the crank about
+//! its centre) or the tooth force on the line of action (a gear drive), and the frame's
+//! reaction.
 
 use super::*;
 
@@ -51,20 +52,26 @@ pub(super) fn driver(
     let known = sch.drain();
     let mut pol = Polygon::new(
         format!("force triangle of link {crank}"),
-        board.mu_f,
+        board.scale_of(None),
         &board.setup.ctx,
     );
     let p0 = pol.tip;
     pol.lay_all(&loads);
     let (m_bal, f_bal, unknown) = match drive {
-        Drive::Coupling => (
-            -k,
-            None,
-            Unknown::Couple {
-                name: "M_{у}".into(),
-                value: -k,
-            },
-        ),
+        Drive::Coupling => {
+            // The balancing moment drawn on the crank about O, the way it turns it.
+            if k != 0.0 {
+                crate::forces::arrows::couple(&mut sch.rec, "M_{у}", o, -k);
+            }
+            (
+                -k,
+                None,
+                Unknown::Couple {
+                    name: "M_{у}".into(),
+                    value: -k,
+                },
+            )
+        }
         Drive::Gear(g) => {
             let mu = board.setup.mu_l.value();
             let r = g.radius() / mu;

@@ -135,7 +135,7 @@ impl Work<'_, '_> {
         let p0 = pol.tip;
         let pi = pol.lay_all(li);
         let pj = pol.lay_all(lj);
-        let q = pi - n * big_n / board.mu_f.value();
+        let q = pi - n * big_n / pol.rec.scale().value();
         pol.rec.draw(
             "R_{ij} laid from the end of i's loads",
             Item::Segment(Segment::new(pi, q)),

@@ -108,11 +108,21 @@ impl Polygons {
 pub struct Board<'a> {
     /// The mechanism, the constructed position, μ_l, ω₁ and the context.
     pub setup: PlanSetup<'a>,
-    /// μ_F of the polygons.
+    /// μ_F of the position (its largest force's): every polygon's where `own` gives none.
     pub mu_f: Scale,
+    /// Each polygon's own μ_F, the textbook's choice for each plan of forces (its own
+    /// largest force about [`crate::forces::POLYGON_MM`] long): by group index (file order),
+    /// then the driving link's; empty when the scene sets one μ_F for all.
+    pub own: Vec<Scale>,
 }
 
 impl Board<'_> {
+    /// μ_F of group `group`'s polygon (`None`: the driving link's).
+    fn scale_of(&self, group: Option<usize>) -> Scale {
+        let k = group.unwrap_or_else(|| self.setup.prog.groups().count());
+        self.own.get(k).copied().unwrap_or(self.mu_f)
+    }
+
     /// Point `k` of the position on the drawing, mm.
     fn point(&self, k: usize) -> DVec2 {
         self.setup.built.p[k]
@@ -213,7 +223,7 @@ pub fn polygons(
         }
         let mut pol = Polygon::new(
             format!("force polygon of {title}"),
-            board.mu_f,
+            board.scale_of(Some(group)),
             &board.setup.ctx,
         );
         let mut equations = Vec::new();

@@ -89,25 +89,19 @@ impl<'a> Scheme<'a> {
             self.arms += 1;
             label = Some(format!("h_{{{}}}", self.arms));
             // The line of action extended from the force's point to the arm's foot.
-            let line = (foot.distance(x) > 0.5).then(|| {
+            if foot.distance(x) > 0.5 {
                 self.rec.draw(
                     format!("line of action of {} to the foot of its arm", l.name),
                     Item::Segment(Segment::new(x, foot)),
                     Role::Construction,
                     &[],
-                )
-            });
-            let id = self.rec.draw(
+                );
+            }
+            crate::forces::arrows::arm(
+                &mut self.rec,
                 format!("arm of {} about the moment centre", l.name),
-                Item::Segment(Segment::new(c, foot)),
-                Role::Construction,
-                line.as_slice(),
-            );
-            self.rec.label(
-                id,
-                format!("h_{{{}}}", self.arms),
-                c.lerp(foot, 0.5),
-                (foot - c).perp().normalize_or_zero(),
+                (c, foot),
+                &format!("h_{{{}}}", self.arms),
             );
         }
         let moment = sign * l.force.length() * arm.value;

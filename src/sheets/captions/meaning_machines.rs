@@ -21,6 +21,7 @@ catalogue! {
         BalancingForce => ("уравновешивающая сила", "зрівноважувальна сила", "the balancing force"),
         BalancingMoment => ("уравновешивающий момент", "зрівноважувальний момент", "the balancing moment"),
         Arm => ("плечо i-й силы относительно центра моментов, измеренное на чертеже (на рычаге Жуковского — в миллиметрах)", "плече i-ї сили відносно центра моментів, виміряне на кресленні (на важелі Жуковського — у міліметрах)", "the arm of the i-th force about the moment centre, measured on the drawing (on Zhukovsky's lever in millimetres)"),
+        PlanArm => ("отрезок повёрнутого плана скоростей, перпендикулярный силе (пары сил — между изображениями её точек): её плечо, измеренное на рычаге в миллиметрах", "відрізок повернутого плану швидкостей, перпендикулярний до сили (пари сил — між зображеннями її точок): її плече, виміряне на важелі в міліметрах", "the segment of the turned velocity plan at right angles to the force (to a couple's forces, between their points' images): its arm, measured on the lever in millimetres"),
         LinkLength => ("длина звена {k}, измеренная на чертеже", "довжина ланки {k}, виміряна на кресленні", "the length of link {k}, measured on the drawing"),
         GuideArm => ("расстояние от точки {point} до точки приложения реакции {reaction}", "відстань від точки {point} до точки прикладання реакції {reaction}", "the distance from point {point} to the point where {reaction} acts"),
         LeverScale => ("масштаб рычага Жуковского", "масштаб важеля Жуковського", "the scale of Zhukovsky's lever"),
