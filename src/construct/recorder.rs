@@ -113,6 +113,24 @@ impl Recorder {
         }
     }
 
+    /// Attach a label that names the point at `anchor` whatever the step's item: a position's
+    /// number written at its crank pin (a text item) names that point, is kept near it as a
+    /// point's label is, and is never joined with a letter there.
+    pub fn label_point(
+        &mut self,
+        id: StepId,
+        text: impl Into<String>,
+        anchor: DVec2,
+        toward: DVec2,
+    ) {
+        if let Some(step) = self.figure.steps.get_mut(id.0 as usize) {
+            step.label = Some(Label {
+                names: Names::Point,
+                ..Label::on(&step.item, text, anchor, toward)
+            });
+        }
+    }
+
     /// Keep the label of step `id` within `mm` of its point on the sheet
     /// ([`Label::within_mm`]).
     pub fn keep_label_within(&mut self, id: StepId, mm: f64) {

@@ -208,7 +208,8 @@ impl<'s> Session<'s> {
     }
 
     /// The positions whose acceleration plans the scene asks for (or the textbook's two:
-    /// mid working stroke, mid return), as indices into the plan's positions.
+    /// mid working stroke, mid return, none of those whose plans take a μ of their own), as
+    /// indices into the plan's positions.
     pub fn acceleration_positions(&self) -> Result<Vec<usize>, StudyError> {
         let poses = self.poses()?;
         let labels: Vec<(&str, bool)> = poses
@@ -216,10 +217,27 @@ impl<'s> Session<'s> {
             .iter()
             .map(|p| (p.label.as_str(), p.extreme))
             .collect();
+        let own = self.own_scale_positions()?;
         Ok(acceleration_indices(
             &labels,
             poses.extremes.as_ref().map(|ex| ex.work_travel),
-            self.spec().acceleration_positions.as_deref(),
+            (self.spec().acceleration_positions.as_deref(), &own),
+        )?)
+    }
+
+    /// The positions whose plans the scene draws at a μ of their own (`kinematics.own_scale`),
+    /// as indices into the plan's positions.
+    pub fn own_scale_positions(&self) -> Result<Vec<usize>, StudyError> {
+        let poses = self.poses()?;
+        let labels: Vec<(&str, bool)> = poses
+            .positions
+            .iter()
+            .map(|p| (p.label.as_str(), p.extreme))
+            .collect();
+        Ok(position_indices(
+            &labels,
+            &self.spec().own_scale,
+            "own_scale",
         )?)
     }
 
