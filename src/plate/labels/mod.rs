@@ -332,7 +332,9 @@ pub(super) fn line_length_in(figure: &crate::construct::Figure, lo: DVec2, hi: D
 }
 
 /// The joint labels of `figure` (see [`View::joint_labels`]).
-pub(super) fn joint_labels(figure: &crate::construct::Figure) -> Vec<(DVec2, String, DVec2)> {
+pub(super) fn joint_labels(
+    figure: &crate::construct::Figure,
+) -> Vec<(DVec2, String, DVec2, Vec<StepId>)> {
     let view = View {
         figure: figure.clone(),
         origin: DVec2::ZERO,
@@ -346,14 +348,16 @@ pub(super) fn joint_labels(figure: &crate::construct::Figure) -> Vec<(DVec2, Str
         .map(|r| {
             let text = r.text();
             let e = measure(&text, LABEL_HEIGHT_MM);
-            (DVec2::new(r.anchor.x, -r.anchor.y), text, e.max - e.min)
+            let at = DVec2::new(r.anchor.x, -r.anchor.y);
+            (at, text, e.max - e.min, r.steps)
         })
         .collect()
 }
 
 /// Join the labels of points whose points coincide (each within [`COINCIDENT_MM`] of every
-/// other; names with names, position numbers with position numbers), keeping the figure's order with the pole first; a name
-/// repeated at one point is written once. A label of an item is never joined.
+/// other; names with names, position numbers with position numbers), keeping the figure's
+/// order with the pole first; a name repeated at one point is written once. A label of an item
+/// is never joined.
 fn join_coincident(single: Vec<Request>) -> Vec<Request> {
     // Each label joins the first group (in the figure's order) whose every point lies within
     // `COINCIDENT_MM` of its own: no chain of near points joins two points farther apart.
