@@ -105,9 +105,33 @@ impl Recorder {
         anchor: DVec2,
         toward: DVec2,
     ) {
+        self.label_naming(id, Names::Item, text.into(), (anchor, toward));
+    }
+
+    /// Attach a label that names the point at `anchor` whatever the step's item: a position's
+    /// number written at its crank pin (a text item) names that point, is kept near it as a
+    /// point's label is, and is never joined with a letter there.
+    pub fn label_point(
+        &mut self,
+        id: StepId,
+        text: impl Into<String>,
+        anchor: DVec2,
+        toward: DVec2,
+    ) {
+        self.label_naming(id, Names::Point, text.into(), (anchor, toward));
+    }
+
+    /// Attach a label that names what `names` says, at `anchor` toward `toward`.
+    fn label_naming(
+        &mut self,
+        id: StepId,
+        names: Names,
+        text: String,
+        (anchor, toward): (DVec2, DVec2),
+    ) {
         if let Some(step) = self.figure.steps.get_mut(id.0 as usize) {
             step.label = Some(Label {
-                names: Names::Item,
+                names,
                 ..Label::on(&step.item, text, anchor, toward)
             });
         }

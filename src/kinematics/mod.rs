@@ -19,7 +19,9 @@ mod verdict;
 
 pub use diagrams::{diagrams, Diagrams};
 pub use hodograph::{hodograph, hodograph_point};
-pub use plans::{acceleration, acceleration_indices, drawn_points, velocity, Velocity};
+pub use plans::{
+    acceleration, acceleration_indices, drawn_points, position_indices, velocity, Velocity,
+};
 pub use rocker::{rocker_diagram, rocker_link, RockerDiagram};
 pub use table::analytic_table;
 pub use verdict::{by_position, verdict_notes, verdicts, Turning, Verdict};
@@ -58,6 +60,12 @@ pub struct KinematicsSpec {
     /// entries. A numbered label is at most the position count; a primed (extreme) label is
     /// checked against the plan of positions when it exists.
     pub acceleration_positions: Option<Vec<String>>,
+    /// The positions whose velocity and acceleration plans are drawn at a μ of their own,
+    /// stated beside them, by label (a plan near a singular position, the tangent
+    /// mechanism's v_B = 29,9 m/s beside v_A = 0,8 m/s); every other plan of a kind is drawn
+    /// at the one common μ, and the default acceleration positions avoid these. Empty: one
+    /// μ_v and one μ_a for every plan.
+    pub own_scale: Vec<String>,
     /// The point whose displacement S(φ₁) is charted and differentiated (`S_5`).
     pub diagram_point: Option<String>,
     /// μ_S of the displacement chart, m/mm.
@@ -113,8 +121,10 @@ pub enum KinError {
         name: String,
     },
     /// A position label that the plan of positions does not have.
-    #[error("kinematics.acceleration_positions: there is no position {label}; the positions are {}", position_list(.valid))]
+    #[error("kinematics.{key}: there is no position {label}; the positions are {}", position_list(.valid))]
     NoSuchPosition {
+        /// The key (`acceleration_positions`, `own_scale`).
+        key: &'static str,
         /// The label given.
         label: String,
         /// The plan's labels.

@@ -235,28 +235,41 @@ fn rows(plan: &PositionPlan, k: usize, kp: &KinPlan, w1: f64) -> Vec<Row> {
         .collect()
 }
 
+/// The positions named by the scene key `kinematics.{key}` (`asked`), as indices into
+/// `labels` (each position's label and whether it is an extreme position).
+pub fn position_indices(
+    labels: &[(&str, bool)],
+    asked: &[String],
+    key: &'static str,
+) -> Result<Vec<usize>, KinError> {
+    asked
+        .iter()
+        .map(|l| {
+            labels
+                .iter()
+                .position(|p| p.0 == l)
+                .ok_or_else(|| KinError::NoSuchPosition {
+                    key,
+                    label: l.clone(),
+                    valid: labels.iter().map(|p| p.0.to_string()).collect(),
+                })
+        })
+        .collect()
+}
+
 /// The positions that get an acceleration plan, as indices into `labels` (each position's
 /// label and whether it is an extreme position): as asked, or one in the middle of the
 /// working stroke (`work_travel` of crank, when the output has extremes) and one in the
-/// middle of the return.
+/// middle of the return — the nearest to them that is not an extreme position nor one of
+/// `avoid` (the positions whose plans take a μ of their own, `kinematics.own_scale`: near a
+/// singular position, where the crank pin's acceleration is a dot beside the others).
 pub fn acceleration_indices(
     labels: &[(&str, bool)],
     work_travel: Option<f64>,
-    asked: Option<&[String]>,
+    (asked, avoid): (Option<&[String]>, &[usize]),
 ) -> Result<Vec<usize>, KinError> {
     if let Some(asked) = asked {
-        return asked
-            .iter()
-            .map(|l| {
-                labels
-                    .iter()
-                    .position(|p| p.0 == l)
-                    .ok_or_else(|| KinError::NoSuchPosition {
-                        label: l.clone(),
-                        valid: labels.iter().map(|p| p.0.to_string()).collect(),
-                    })
-            })
-            .collect();
+        return position_indices(labels, asked, "acceleration_positions");
     }
     let work = work_travel.unwrap_or(TAU / 2.0);
     let numbered = labels.iter().filter(|p| p.0.parse::<u32>().is_ok()).count();
@@ -269,7 +282,7 @@ pub fn acceleration_indices(
     let mut out = Vec::new();
     for target in [work / 2.0, work + (TAU - work) / 2.0] {
         let best = (0..labels.len())
-            .filter(|&k| !labels[k].1)
+            .filter(|&k| !labels[k].1 && !avoid.contains(&k))
             .min_by(|&a, &b| angular(travel(a), target).total_cmp(&angular(travel(b), target)));
         if let Some(k) = best.filter(|k| !out.contains(k)) {
             out.push(k);

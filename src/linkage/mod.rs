@@ -5,6 +5,7 @@ mod analytic;
 mod carrier;
 mod construction;
 mod extremes;
+mod grashof;
 mod groups;
 mod kinds;
 mod model;
@@ -14,6 +15,7 @@ mod positions_draw;
 mod program;
 #[cfg(test)]
 pub(crate) mod proptests;
+mod rigid;
 mod scheme;
 mod slide_lines;
 mod structure;
@@ -24,6 +26,7 @@ pub use analytic::{NearPivot, Pose, Unassembled, NEAR_PIVOT_RATIO, SWEEP_ANCHOR}
 pub use carrier::{candidates, carrier, CarrierError};
 pub use construction::{Built, Failed};
 pub use extremes::{Extremes, OutputCoord};
+pub use grashof::{Bar, FourBar, Relation};
 pub use groups::{GroupPairs, GroupView};
 pub use model::{
     Branch, Crank, Dir, Dyad, DyadKind, FixedPoint, Group, Guide, LinkPoint, Mechanism, Output,

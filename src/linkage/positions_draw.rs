@@ -9,6 +9,7 @@ use super::positions::{
     PositionPlan,
 };
 use super::program::{Op, PDir, Program};
+use super::rigid::{covers, draw_rigid, rigid_links, RigidLink};
 use super::{LinkageError, ModelError};
 use crate::construct::{Context, Drafting, Item, Recorder, Role};
 use crate::geom::{Arc, Circle, DVec2, Segment, Side, Tolerances};
@@ -39,11 +40,18 @@ pub(super) struct Pen<'r> {
     pub anchors: Vec<(u32, DVec2)>,
     /// The joints to draw.
     pub joints: Vec<usize>,
+    /// The links drawn as their contour ([`super::rigid`]), each with its hinges' points:
+    /// a bar between two of them is not drawn.
+    pub rigid: Vec<(u32, Vec<DVec2>)>,
 }
 
 impl Pen<'_> {
-    /// Link `l` as a bar from `from` to `to`.
+    /// Link `l` as a bar from `from` to `to` (nothing when it joins two hinges of a link
+    /// drawn as its contour).
     pub fn link(&mut self, l: u32, from: DVec2, to: DVec2) {
+        if covers(&self.rigid, l, (from, to)) {
+            return;
+        }
         self.rec.draw(
             format!("{}: link {l}", self.note),
             Item::Segment(Segment::new(from, to)),
@@ -73,21 +81,28 @@ pub fn draw_links(
     note: &str,
     part: Part,
 ) -> Vec<(u32, DVec2)> {
+    let rigid: Vec<RigidLink> = rigid_links(prog)
+        .into_iter()
+        .filter(|r| in_part(prog, part, r.link))
+        .collect();
     let mut pen = Pen {
         rec,
         role,
         note,
         anchors: Vec::new(),
         joints: Vec::new(),
+        rigid: rigid.iter().map(|r| r.placed(b)).collect(),
     };
     if matches!(part, Part::All | Part::Driver) {
         let (centre, pin) = (b.p[prog.centre], b.p[prog.pin]);
-        pen.rec.draw(
-            format!("{note}: crank"),
-            Item::Segment(Segment::new(centre, pin)),
-            role,
-            &[],
-        );
+        if !covers(&pen.rigid, prog.crank_link, (centre, pin)) {
+            pen.rec.draw(
+                format!("{note}: crank"),
+                Item::Segment(Segment::new(centre, pin)),
+                role,
+                &[],
+            );
+        }
         pen.anchors.push((prog.crank_link, centre.lerp(pin, 0.5)));
         pen.joints.extend([prog.centre, prog.pin]);
     }
@@ -99,6 +114,10 @@ pub fn draw_links(
             continue;
         }
         dyad.group().draw(&mut pen, prog, b, *links);
+    }
+    for r in &rigid {
+        draw_rigid(pen.rec, r, b, role, note);
+        pen.joints.extend(&r.hinges);
     }
     let Pen {
         rec,
@@ -120,6 +139,17 @@ pub fn draw_links(
         );
     }
     anchors
+}
+
+/// Whether link `l` is drawn with `part`.
+fn in_part(prog: &Program, part: Part, l: u32) -> bool {
+    match part {
+        Part::All => true,
+        Part::Driver => l == prog.crank_link,
+        Part::Group(g) => prog.ops.iter().any(
+            |op| matches!(op, Op::Dyad { group, links, .. } if *group == g && links.contains(&l)),
+        ),
+    }
 }
 
 /// Farthest `along` of a link's points, mm.
@@ -309,7 +339,8 @@ pub(super) fn draw_plan(
             Role::Dimension,
             &[],
         );
-        rec.label(id, pos.label.clone(), pin, out);
+        // The number names the crank pin of its position: kept near it as a point's label.
+        rec.label_point(id, pos.label.clone(), pin, out);
     }
     rec.set_group(0);
     // Trajectories of the link points.

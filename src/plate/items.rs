@@ -1,9 +1,10 @@
 //! Recorded steps as marks: the textbook symbols of every [`Item`], and the labels.
 
+use super::labels::COINCIDENT_MM;
 use super::path::{pieces, Map, PathData};
 use super::style::{Mark, Paint, Pen};
 use super::text::{Align, Placed};
-use crate::construct::{Item, Role, Step};
+use crate::construct::{Item, Names, Role, Step};
 use crate::geom::{Arc, DVec2, Segment, Side};
 use std::f64::consts::TAU;
 
@@ -55,6 +56,19 @@ impl Arrow {
         Mark::path(Paint::Solid, d)
     }
 
+    /// The head of a vector `length` mm long: this one, or, on a vector shorter than it, one
+    /// scaled down to the vector's length, so that its base does not overhang the tail.
+    fn fitted(self, length: f64) -> Arrow {
+        if length >= self.len {
+            return self;
+        }
+        let k = length / self.len;
+        Arrow {
+            len: length,
+            width: self.width * k,
+        }
+    }
+
     /// The head's triangle: the tip, then the two corners of the base (`u`: unit direction).
     fn corners(self, tip: DVec2, u: DVec2) -> [DVec2; 3] {
         let base = tip - u * self.len;
@@ -83,7 +97,7 @@ pub(crate) fn step_marks(step: &Step, map: Map) -> Vec<Mark> {
     let point = short_vector(step).map(Item::Point);
     item_marks(
         point.as_ref().unwrap_or(&step.item),
-        step.role,
+        (step.role, step.label.is_some()),
         Pen::for_role(step.role),
         map,
         &mut out,
@@ -91,28 +105,31 @@ pub(crate) fn step_marks(step: &Step, map: Map) -> Vec<Mark> {
     out
 }
 
-/// The tail of a labelled vector shorter than its arrowhead: it is drawn as the point it is
-/// there, as the textbook writes `p ≡ b` — an arrowhead would overhang its tail, and several
-/// at a pole print as a cluster of heads (issue 45). An unlabelled short vector is an arc's
-/// arrowhead (the ω arrow) and stays one. `None` for any other step.
+/// The tail of a labelled vector drawn as the point it is there. A plan's image (a label
+/// naming the point at its head) that ends where it starts on the drawing — shorter than the
+/// drafting resolution ([`COINCIDENT_MM`], 0,5 mm) — as the textbook writes `p ≡ b` (issue
+/// 45); a longer one is a vector, its arrowhead fitted to its length ([`Arrow::fitted`]): its
+/// head is another point, 1,6 mm from its tail is not `p ≡ a`. A force (a label naming its
+/// item, never joined) shorter than its arrowhead, as the point it acts at: the polygon's
+/// detail draws it to scale. An unlabelled short vector is an arc's arrowhead (the ω arrow)
+/// and stays one. `None` for any other step.
 pub(crate) fn short_vector(step: &Step) -> Option<DVec2> {
-    match step.item {
-        Item::Vector { from, to }
-            if step.label.is_some()
-                && from.distance(to) < Arrow::for_pen(Pen::for_role(step.role)).len =>
-        {
-            Some(from)
-        }
-        _ => None,
-    }
+    let Item::Vector { from, to } = step.item else {
+        return None;
+    };
+    let shorter = match step.label.as_ref()?.names {
+        Names::Point => COINCIDENT_MM,
+        Names::Item => Arrow::for_pen(Pen::for_role(step.role)).len,
+    };
+    (from.distance(to) < shorter).then_some(from)
 }
 
 /// The outlines of what a step draws under `map` (a short labelled vector as its point, see
 /// [`short_vector`]).
 pub(crate) fn step_outlines(step: &Step, map: Map) -> Vec<Outline> {
     match short_vector(step) {
-        Some(p) => item_outlines(&Item::Point(p), step.role, map),
-        None => item_outlines(&step.item, step.role, map),
+        Some(p) => item_outlines(&Item::Point(p), (step.role, true), map),
+        None => item_outlines(&step.item, (step.role, step.label.is_some()), map),
     }
 }
 
@@ -136,8 +153,9 @@ pub(crate) struct Outline {
 }
 
 /// The outlines of what `item` draws in `role` under `map`, following [`step_marks`]: the
-/// same symbol sizes, curves and arcs as polylines.
-pub(crate) fn item_outlines(item: &Item, role: Role, map: Map) -> Vec<Outline> {
+/// same symbol sizes, curves and arcs as polylines (`labelled`: a labelled vector's head is
+/// fitted to its length, [`Arrow::fitted`]; an unlabelled one is an arc's arrowhead).
+pub(crate) fn item_outlines(item: &Item, (role, labelled): (Role, bool), map: Map) -> Vec<Outline> {
     let main = Pen::for_role(role).is_main();
     let mut lines: Vec<(DVec2, DVec2)> = Vec::new();
     let mut areas: Vec<(Vec<DVec2>, bool)> = Vec::new();
@@ -172,10 +190,13 @@ pub(crate) fn item_outlines(item: &Item, role: Role, map: Map) -> Vec<Outline> {
         Item::Vector { from, to } => {
             lines.push((*from, *to));
             if let Some(u) = (*to - *from).try_normalize() {
-                areas.push((
-                    Arrow::for_pen(Pen::for_role(role)).corners(*to, u).to_vec(),
-                    main,
-                ));
+                let arrow = Arrow::for_pen(Pen::for_role(role));
+                let arrow = if labelled {
+                    arrow.fitted(from.distance(*to))
+                } else {
+                    arrow
+                };
+                areas.push((arrow.corners(*to, u).to_vec(), main));
             }
         }
         Item::Slider { at, angle } => areas.push((slider_corners(*at, *angle).to_vec(), main)),
@@ -248,7 +269,13 @@ fn paint(map: Map, paint: Paint, build: impl FnOnce(&mut PathData)) -> Option<Ma
     Mark::path(paint, d)
 }
 
-fn item_marks(item: &Item, role: Role, pen: Pen, map: Map, out: &mut Vec<Mark>) {
+fn item_marks(
+    item: &Item,
+    (role, labelled): (Role, bool),
+    pen: Pen,
+    map: Map,
+    out: &mut Vec<Mark>,
+) {
     match item {
         Item::Point(p) => out.extend(paint(map, Paint::Solid, |d| {
             d.circle(*p, dot_radius(role));
@@ -280,7 +307,7 @@ fn item_marks(item: &Item, role: Role, pen: Pen, map: Map, out: &mut Vec<Mark>) 
         Item::Curve { points, closed } => {
             out.extend(stroke(map, pen, |d| smooth(d, points, *closed)))
         }
-        Item::Vector { from, to } => vector(map, pen, *from, *to, out),
+        Item::Vector { from, to } => vector(map, (pen, labelled), *from, *to, out),
         Item::Slider { at, angle } => out.extend(slider(map, pen, *at, *angle)),
         Item::Guide { segment, hatch } => guide(map, pen, segment, *hatch, out),
         Item::Dimension { from, to, offset } => dimension(map, *from, *to, *offset, out),
@@ -291,15 +318,19 @@ fn item_marks(item: &Item, role: Role, pen: Pen, map: Map, out: &mut Vec<Mark>) 
 
 /// A vector: the line stopped inside its arrowhead (so a thick line does not show past the
 /// head's flanks), and the head.
-fn vector(map: Map, pen: Pen, from: DVec2, to: DVec2, out: &mut Vec<Mark>) {
+fn vector(map: Map, (pen, labelled): (Pen, bool), from: DVec2, to: DVec2, out: &mut Vec<Mark>) {
     let arrow = Arrow::for_pen(pen);
     let Some(u) = (to - from).try_normalize() else {
         return;
     };
-    let stop = if from.distance(to) > arrow.len {
-        to - u * (arrow.len * 0.85)
+    let (arrow, stop) = if labelled {
+        let arrow = arrow.fitted(from.distance(to));
+        (arrow, to - u * (arrow.len * 0.85))
+    } else if from.distance(to) > arrow.len {
+        (arrow, to - u * (arrow.len * 0.85))
     } else {
-        from
+        // An arc's arrowhead (the ω arrow): its head whole, no line.
+        (arrow, from)
     };
     out.extend(stroke(map, pen, |d| {
         d.segment(from, stop);

@@ -44,7 +44,7 @@ mod table;
 pub mod text;
 mod write;
 
-use crate::construct::Figure;
+use crate::construct::{Figure, StepId};
 use crate::geom::DVec2;
 use crate::scale::Lang;
 use thiserror::Error;
@@ -134,8 +134,8 @@ impl View {
 
     /// The joint labels the plate will write for `figure` (the names of points that coincide,
     /// joined as `p ≡ b₃ ≡ d`): each with its point in the figure's coordinates (mm, y up),
-    /// its text, and the width and height it takes on the sheet, mm.
-    pub fn joint_labels(figure: &Figure) -> Vec<(DVec2, String, DVec2)> {
+    /// its text, the width and height it takes on the sheet, mm, and the steps it names.
+    pub fn joint_labels(figure: &Figure) -> Vec<(DVec2, String, DVec2, Vec<StepId>)> {
         labels::joint_labels(figure)
     }
 

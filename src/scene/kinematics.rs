@@ -45,6 +45,13 @@ pub(crate) fn kinematics(
             let key = key("acceleration_positions");
             position_labels(check, &key, &labels, count, MAX_ACCELERATION_POSITIONS)
         }),
+        own_scale: raw
+            .own_scale
+            .map(|labels| {
+                let key = key("own_scale");
+                position_labels(check, &key, &labels, count, count as usize)
+            })
+            .unwrap_or_default(),
         diagram_point: point(check, &key("diagram"), raw.diagram, names.as_deref()),
         scale_s: check.scale(
             Key::KinematicsScaleS.path(),

@@ -349,7 +349,12 @@ fn two_sheets(
             left.push(next);
         }
     }
-    let mut plates = lay(first)?;
+    let mut plates = lay(first.clone())?;
+    if plates.len() > 1 {
+        // The first sheet's drawings run onto a further page: the second's go on after them
+        // there, not on a page of their own (a page holding the last two velocity plans alone).
+        return Ok(renamed(lay(first.into_iter().chain(left).collect())?));
+    }
     if !left.is_empty() {
         plates.extend(lay(left)?);
     }

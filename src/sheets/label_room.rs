@@ -2,7 +2,7 @@
 //! not written over the next block: long joint labels ([`long_joint_labels`]) and labels
 //! written outward at the figure's edge ([`edge_labels`]). Figure mm, y up.
 
-use crate::construct::Figure;
+use crate::construct::{Figure, StepId};
 use crate::geom::DVec2;
 use crate::plate::text::measure;
 use crate::plate::{View, LABEL_GAP_MM, LABEL_HEIGHT_MM};
@@ -14,19 +14,40 @@ const LONG_LABEL_MM: f64 = 12.0;
 /// Line length inside a label's box below which the box counts as clear, mm.
 const CLEAR_OF_LINES_MM: f64 = 0.5;
 
+/// `figure` with its long joint labels' rooms kept: each label is written on the side of its
+/// point its room is on (its steps' labels point there: the placer tries that side first, the
+/// six-bar's 10′ `p ≡ b ≡ c ≡ s₃ ≡ e ≡ s₄` written over the plan before it, issue 45), and the
+/// box of the rooms ([`long_joint_labels`]).
+pub(super) fn with_long_joint_labels(mut figure: Figure) -> (Figure, Option<(DVec2, DVec2)>) {
+    let rooms = long_joint_labels(&figure);
+    for (steps, side) in rooms.iter().flat_map(|(_, sides)| sides) {
+        let toward = DVec2::new(*side, 0.0);
+        for s in figure.steps.iter_mut().filter(|s| steps.contains(&s.id)) {
+            if let Some(l) = s.label.as_mut() {
+                l.toward = toward;
+            }
+        }
+    }
+    (figure, rooms.map(|(room, _)| room))
+}
+
+/// The steps of a long joint label and the side of its point its room is on (+1 right, −1
+/// left).
+type Side = (Vec<StepId>, f64);
+
 /// The box of `figure`'s long joint labels, each on the side of its point that the
 /// figure's lines leave clear, and of two clear sides (or two struck) the one where it
-/// reaches least past the figure's bounds (figure mm, y up); `None` when it has none. A
-/// label at a point near the figure's edge, with the figure's lines on its inner side (the
-/// reactions `R₃₋₄ ≡ R₄₋₅` at the slide block, the load G₄ under it), is given its room
-/// outside.
-pub(super) fn long_joint_labels(figure: &Figure) -> Option<(DVec2, DVec2)> {
+/// reaches least past the figure's bounds (figure mm, y up), with each label's side; `None`
+/// when it has none. A label at a point near the figure's edge, with the figure's lines on
+/// its inner side (the reactions `R₃₋₄ ≡ R₄₋₅` at the slide block, the load G₄ under it), is
+/// given its room outside.
+fn long_joint_labels(figure: &Figure) -> Option<((DVec2, DVec2), Vec<Side>)> {
     let (lo, hi) = figure.bounds()?;
     let gap = 2.0 * LABEL_GAP_MM;
     View::joint_labels(figure)
         .into_iter()
-        .filter(|(_, _, size)| size.x > LONG_LABEL_MM)
-        .map(|(at, _, size)| {
+        .filter(|(_, _, size, _)| size.x > LONG_LABEL_MM)
+        .map(|(at, _, size, steps)| {
             let half = size.y * 0.5 + LABEL_GAP_MM;
             let room = |x0: f64| {
                 (
@@ -39,14 +60,18 @@ pub(super) fn long_joint_labels(figure: &Figure) -> Option<(DVec2, DVec2)> {
                 |(a, b): (DVec2, DVec2)| View::line_length_in(figure, a, b) > CLEAR_OF_LINES_MM;
             let past_right = (right.1.x - hi.x).max(0.0);
             let past_left = (lo.x - left.0.x).max(0.0);
-            match (struck(right), struck(left)) {
-                (false, true) => right,
-                (true, false) => left,
-                _ if past_right <= past_left => right,
-                _ => left,
-            }
+            let (room, side) = match (struck(right), struck(left)) {
+                (false, true) => (right, 1.0),
+                (true, false) => (left, -1.0),
+                _ if past_right <= past_left => (right, 1.0),
+                _ => (left, -1.0),
+            };
+            (room, vec![(steps, side)])
         })
-        .reduce(|(a, b), (c, d)| (a.min(c), b.max(d)))
+        .reduce(|((a, b), mut s), ((c, d), t)| {
+            s.extend(t);
+            ((a.min(c), b.max(d)), s)
+        })
 }
 
 /// The box of every label of `figure` set beside its anchor in its own direction, a label's

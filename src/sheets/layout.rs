@@ -110,9 +110,13 @@ impl Block {
     /// plan where every point coincides: `p ≡ b₃ ≡ d ≡ s₃ ≡ d₅ ≡ e ≡ s₅`), so that it is not
     /// written over the next block.
     pub fn with_label_room(self) -> Self {
-        self.map_parts(|p| Part {
-            label_room: label_room::long_joint_labels(&p.figure),
-            ..p
+        self.map_parts(|p| {
+            let (figure, label_room) = label_room::with_long_joint_labels(p.figure);
+            Part {
+                figure,
+                label_room,
+                ..p
+            }
         })
     }
 

@@ -9,7 +9,7 @@ use crate::check::is_zero;
 use crate::construct::fit::{fit_scale, overflow};
 use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
-use crate::linkage::{DyadKind, OutputCoord, PositionPlan, Structure};
+use crate::linkage::{DyadKind, FourBar, OutputCoord, PositionPlan, Relation, Structure};
 use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, Lang, Quantity, Scale};
 use crate::scene::Key;
@@ -70,6 +70,7 @@ pub(super) fn structure(
     let plan = session.positions(scale)?;
     let st = Structure::analyse(m);
     let mut lines = structure_lines(&st, m, lang);
+    lines.extend(grashof_lines(m, &plan, lang));
     let extremes = extreme_lines(&plan, lang);
     if !extremes.is_empty() {
         lines.push(String::new());
@@ -192,6 +193,81 @@ fn structure_lines(st: &Structure, m: &crate::linkage::Mechanism, lang: Lang) ->
         Lang::Ru => format!("Механизм {} класса", st.class),
         Lang::Uk => format!("Механізм {} класу", st.class),
     });
+    v
+}
+
+/// Grashof's condition of each hinged four-bar of `m` as a student writes it: the condition,
+/// the sums with the lengths and the verdict; with the equality, the change point and the
+/// positions of `plan` where it falls (the velocity plan refused there).
+fn grashof_lines(m: &crate::linkage::Mechanism, plan: &PositionPlan, lang: Lang) -> Vec<String> {
+    let mut v = Vec::new();
+    for f in FourBar::of(m) {
+        let name = |b: &crate::linkage::Bar| {
+            let plain: String = b
+                .ends
+                .concat()
+                .chars()
+                .filter(|c| !"_{}".contains(*c))
+                .collect();
+            format!("l_{{{plain}}}")
+        };
+        let mm = |x: f64| super::digits::value(x * 1e3, lang);
+        let ([s, l], [p, q]) = f.ranked();
+        let sum = |i: usize, j: usize| {
+            let (a, b) = (&f.bars[i], &f.bars[j]);
+            format!(
+                "{} + {} = {} + {} = {}",
+                name(a),
+                name(b),
+                mm(a.length),
+                mm(b.length),
+                super::digits::mm(a.length + b.length, lang)
+            )
+        };
+        let [crank, coupler, rocker, _] = &f.bars;
+        let points = [
+            &crank.ends[0],
+            &crank.ends[1],
+            &coupler.ends[1],
+            &rocker.ends[0],
+        ]
+        .map(String::as_str);
+        v.push(format!(
+            "{} ({}): l_{{min}} + l_{{max}} ≤ l′ + l″",
+            Text::GrashofCondition.get(lang),
+            points.join("–")
+        ));
+        let relation = f.relation();
+        let sign = match relation {
+            Relation::Less => "<",
+            Relation::Equal => "=",
+            Relation::Greater => ">",
+        };
+        let verdict = if f.crank_exists() {
+            Text::CrankExists
+        } else {
+            Text::NoCrank
+        };
+        v.push(format!("{} {sign} {}", sum(s, l), sum(p, q)));
+        v.push(verdict.get(lang).to_string());
+        if relation == Relation::Equal {
+            let at: Vec<&str> = plan
+                .positions
+                .iter()
+                .filter(|x| x.pose.toggle.as_ref().is_some_and(|t| t.group == f.group))
+                .map(|x| x.label.as_str())
+                .collect();
+            v.push(Text::ChangePoint.get(lang).to_string());
+            if !at.is_empty() {
+                v.push(format!(
+                    "{} {}: {}",
+                    Text::Pos.get(lang),
+                    at.join(", "),
+                    Text::NoVelocityPlanThere.get(lang)
+                ));
+            }
+        }
+    }
     v
 }
 

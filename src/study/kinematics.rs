@@ -208,18 +208,28 @@ impl<'s> Session<'s> {
     }
 
     /// The positions whose acceleration plans the scene asks for (or the textbook's two:
-    /// mid working stroke, mid return), as indices into the plan's positions.
+    /// mid working stroke, mid return, none of those whose plans take a μ of their own), as
+    /// indices into the plan's positions.
     pub fn acceleration_positions(&self) -> Result<Vec<usize>, StudyError> {
         let poses = self.poses()?;
-        let labels: Vec<(&str, bool)> = poses
-            .positions
-            .iter()
-            .map(|p| (p.label.as_str(), p.extreme))
-            .collect();
+        let labels = position_labels(&poses);
+        let own = self.own_scale_positions()?;
         Ok(acceleration_indices(
             &labels,
             poses.extremes.as_ref().map(|ex| ex.work_travel),
-            self.spec().acceleration_positions.as_deref(),
+            (self.spec().acceleration_positions.as_deref(), &own),
+        )?)
+    }
+
+    /// The positions whose plans the scene draws at a μ of their own (`kinematics.own_scale`),
+    /// as indices into the plan's positions.
+    pub fn own_scale_positions(&self) -> Result<Vec<usize>, StudyError> {
+        let poses = self.poses()?;
+        let labels = position_labels(&poses);
+        Ok(position_indices(
+            &labels,
+            &self.spec().own_scale,
+            "own_scale",
         )?)
     }
 
@@ -337,4 +347,13 @@ impl<'s> Session<'s> {
         rep.notes.extend(notes.into_iter().map(Note::from));
         Ok(())
     }
+}
+
+/// Each position's label and whether it is an extreme one, in the plan's order.
+fn position_labels(poses: &PlanPoses) -> Vec<(&str, bool)> {
+    poses
+        .positions
+        .iter()
+        .map(|p| (p.label.as_str(), p.extreme))
+        .collect()
 }

@@ -38,7 +38,8 @@ use crate::construct::{Context, Drafting, Figure};
 use crate::forces::{ForceError, ForceSpec, PositionForces};
 use crate::friction::{FrictionError, Solved};
 use crate::kinematics::{
-    acceleration_indices, Diagrams, KinError, KinematicsSpec, RockerDiagram, Velocity,
+    acceleration_indices, position_indices, Diagrams, KinError, KinematicsSpec, RockerDiagram,
+    Velocity,
 };
 use crate::linkage::{
     plain, plan_poses, plan_positions, KinPlan, LinkageError, Mechanism, PlanKind, PlanPoses,

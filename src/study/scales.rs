@@ -70,35 +70,11 @@ fn largest_plan(
     }
 }
 
-/// A plan more than this many times larger than the typical plan of its kind (the lower
-/// median) at the common μ is drawn at its own μ, stated beside it: the common μ is not set by
-/// a few plans near a singular position (the tangent mechanism's 29.9 m/s near φ = 90°),
-/// which would leave the others a few millimetres long.
-const OWN_SCALE_RATIO: f64 = 3.0;
-
-/// The positions `ks` without the plans far larger than the typical one ([`OWN_SCALE_RATIO`]),
-/// sized at `mu`.
-fn typical_plans(
-    poses: &PlanPoses,
-    ks: &[usize],
-    w1: f64,
-    kind: PlanKind,
-    mu: Scale,
-) -> Vec<usize> {
-    let sizes: Vec<f64> = ks
-        .iter()
-        .map(|&k| largest_plan(poses, &[k], w1, kind)(mu).max_element())
-        .collect();
-    let mut sorted = sizes.clone();
-    sorted.sort_by(f64::total_cmp);
-    let Some(&typical) = sorted.get(sorted.len().saturating_sub(1) / 2) else {
-        return Vec::new();
-    };
-    ks.iter()
-        .zip(&sizes)
-        .filter(|(_, &size)| size <= OWN_SCALE_RATIO * typical)
-        .map(|(&k, _)| k)
-        .collect()
+/// The positions `ks` without those whose plans the scene draws at a μ of their own
+/// (`own`, `kinematics.own_scale`): the plans the common μ of their kind is chosen for, one μ
+/// for every plan of a sheet unless the scene gives more (issue 45: the tangent's two μ_v).
+fn common_plans(ks: &[usize], own: &[usize]) -> Vec<usize> {
+    ks.iter().copied().filter(|k| !own.contains(k)).collect()
 }
 
 /// The room all the velocity (or acceleration) plans of a sheet share, mm²: about a third of
@@ -150,7 +126,7 @@ const LAID_OUT_SHARE: f64 = 0.75;
 const TWO_SHEET_PLAN_ROOM: DVec2 = DVec2::new(250.0, 250.0);
 
 /// How many A1 sheets the kinematic study's drawings take, decided with its scales: the
-/// drawings at the textbook's μ predicted (the plan of positions, the typical velocity and
+/// drawings at the textbook's μ predicted (the plan of positions, the common velocity and
 /// acceleration plans) and measured (the diagrams), against [`ONE_SHEET_SHARE`] of the field.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum KinSheets {
@@ -245,8 +221,8 @@ impl<'s> Session<'s> {
 
     /// The kinematic study's scales, decided once: μ_l ([`Session::scale_l`]); μ_v and μ_a the
     /// scene's, else the largest round ones the room allows: from the crank pin's vector drawn
-    /// about 80 mm, raised until the largest typical plan fits `VECTOR_PLAN_ROOM` (a plan far
-    /// larger takes its own, [`Session::plan_scale`]), then made finer while the plans fit the
+    /// about 80 mm, raised until the largest plan fits `VECTOR_PLAN_ROOM` (a plan the scene
+    /// draws at a μ of its own aside, [`Session::plan_scale`]), then made finer while the plans fit the
     /// room their sheet gives them ([`Session::kin_sheets`]: one sheet or two); the
     /// displacement chart's as the scene gives them (the rest chosen for the chart by the
     /// study).
@@ -270,7 +246,7 @@ impl<'s> Session<'s> {
     }
 
     /// The free μ of the plans of `kind` (`v` or `a`, the other kept), made finer along the
-    /// round series while the typical plans fit the room their sheet gives them: on one sheet
+    /// round series while the common plans fit the room their sheet gives them: on one sheet
     /// `VECTOR_PLAN_ROOM` each and `PLANS_AREA_MM2` together, every drawing of the study
     /// within [`ONE_SHEET_SHARE`] of the field; on two, [`two_sheet_room`].
     fn largest_plans(&self, kind: PlanKind, v: Scale, a: Scale) -> Result<Scale, StudyError> {
@@ -279,7 +255,7 @@ impl<'s> Session<'s> {
             PlanKind::Velocity => (v, (0..poses.positions.len()).collect()),
             PlanKind::Acceleration => (a, self.acceleration_positions()?),
         };
-        let ks = typical_plans(&poses, &all, w1, kind, start);
+        let ks = common_plans(&all, &self.own_scale_positions()?);
         Ok(match self.kin_sheets()? {
             KinSheets::One => {
                 let room = (VECTOR_PLAN_ROOM, PLANS_AREA_MM2);
@@ -314,28 +290,27 @@ impl<'s> Session<'s> {
     }
 
     /// μ_v and μ_a the textbook's way: the scene's, else the crank pin's vector drawn about
-    /// 80 mm, raised until the largest typical plan fits `VECTOR_PLAN_ROOM` and the typical
+    /// 80 mm, raised until the largest common plan fits `VECTOR_PLAN_ROOM` and the common
     /// plans of a kind together `PLANS_AREA_MM2`.
     fn textbook_plan_scales(&self) -> Result<(Scale, Scale), StudyError> {
         let m = self.mechanism("the kinematic analysis")?;
         let spec = self.spec();
         let (mut v, mut a) = kinematics::plan_scales(&m.crank, spec)?;
-        let (poses, w1) = (self.poses()?, self.w1()?);
+        let (poses, w1, own) = (self.poses()?, self.w1()?, self.own_scale_positions()?);
         if spec.scale_v.is_none() {
             let all: Vec<usize> = (0..poses.positions.len()).collect();
-            let ks = typical_plans(&poses, &all, w1, PlanKind::Velocity, v);
+            let ks = common_plans(&all, &own);
             v = plans_fit(&poses, &ks, w1, PlanKind::Velocity, v);
         }
         if spec.scale_a.is_none() {
-            let all = self.acceleration_positions()?;
-            let ks = typical_plans(&poses, &all, w1, PlanKind::Acceleration, a);
+            let ks = common_plans(&self.acceleration_positions()?, &own);
             a = plans_fit(&poses, &ks, w1, PlanKind::Acceleration, a);
         }
         Ok((v, a))
     }
 
     /// How many sheets the kinematic study's drawings take, decided once ([`KinSheets`]): two
-    /// when the plan of positions, the typical plans at the textbook's μ_v and μ_a (their
+    /// when the plan of positions, the common plans at the textbook's μ_v and μ_a (their
     /// labelled sizes predicted from the analytic twin) and the diagrams (constructed, as the
     /// sheet draws them) take more than [`ONE_SHEET_SHARE`] of an A1 field.
     pub fn kin_sheets(&self) -> Result<KinSheets, StudyError> {
@@ -352,15 +327,15 @@ impl<'s> Session<'s> {
     }
 
     /// The area the kinematic drawings take with the plans at `v` and `a`, mm²: the plan of
-    /// positions and the typical plans (their labelled sizes predicted from the analytic
+    /// positions and the common plans (their labelled sizes predicted from the analytic
     /// twin) and the diagrams (constructed, as the sheet draws them).
     fn drawn_mm2(&self, v: Scale, a: Scale) -> Result<f64, StudyError> {
         let (poses, w1, l) = (self.poses()?, self.w1()?, self.scale_l()?);
         let positions = positions_extent(&poses).labelled_size_at(l);
         let all: Vec<usize> = (0..poses.positions.len()).collect();
-        let velocity = typical_plans(&poses, &all, w1, PlanKind::Velocity, v);
-        let acc = self.acceleration_positions()?;
-        let acceleration = typical_plans(&poses, &acc, w1, PlanKind::Acceleration, a);
+        let own = self.own_scale_positions()?;
+        let velocity = common_plans(&all, &own);
+        let acceleration = common_plans(&self.acceleration_positions()?, &own);
         // No diagrams when there is nothing to chart or they are refused (the sheet says
         // why in a line).
         let charted =
@@ -390,22 +365,30 @@ impl<'s> Session<'s> {
         })
     }
 
-    /// The μ of the plan of `kind` at position `k`: the common one of [`Session::kin_scales`],
-    /// or, for a plan that does not fit its field at it (`VECTOR_PLAN_ROOM`, on two sheets
-    /// `TWO_SHEET_PLAN_ROOM`: one far larger than the typical plan), its own, raised until it
-    /// fits. A scale the scene gives is every plan's.
+    /// The μ of the plan of `kind` at position `k`: the common one of [`Session::kin_scales`]
+    /// (the scene's, when it gives one), which every plan of the kind fits; or, for a position
+    /// the scene draws at a μ of its own (`kinematics.own_scale`), the textbook's choice for
+    /// that plan alone: the crank pin's vector drawn at least 80 mm, raised until the plan
+    /// fits its field (`VECTOR_PLAN_ROOM`, on two sheets `TWO_SHEET_PLAN_ROOM`) — coarser for
+    /// a plan near a singular position (the tangent's), finer for one whose images crowd
+    /// near an extreme position (the six-bar's 10 and 11 at the seed's μ_v).
     pub fn plan_scale(&self, kind: PlanKind, k: usize) -> Result<Scale, StudyError> {
         self.caches.get::<PlanScales>((kind, k), || {
             let sc = self.kin_scales()?;
-            let (common, given) = match kind {
-                PlanKind::Velocity => (sc.v, self.spec().scale_v.is_some()),
-                PlanKind::Acceleration => (sc.a, self.spec().scale_a.is_some()),
-            };
-            if given {
-                return Ok(common);
+            if !self.own_scale_positions()?.contains(&k) {
+                return Ok(match kind {
+                    PlanKind::Velocity => sc.v,
+                    PlanKind::Acceleration => sc.a,
+                });
             }
+            let m = self.mechanism("the kinematic analysis")?;
+            let (v, a) = kinematics::plan_scales(&m.crank, &KinematicsSpec::default())?;
+            let start = match kind {
+                PlanKind::Velocity => v,
+                PlanKind::Acceleration => a,
+            };
             let size = largest_plan(&*self.poses()?, &[k], self.w1()?, kind);
-            Ok(raised_to_fit(common, self.plan_room()?, size))
+            Ok(raised_to_fit(start, self.plan_room()?, size))
         })
     }
 }
@@ -414,7 +397,7 @@ impl<'s> Session<'s> {
 mod tests {
     use super::*;
 
-    /// Whether the typical plans of `kind` at `mu` (the other kind at the session's μ) fit the
+    /// Whether the common plans of `kind` at `mu` (the other kind at the session's μ) fit the
     /// room of their sheet: on two sheets the room each sheet gives them; on one
     /// `VECTOR_PLAN_ROOM` each, `PLANS_AREA_MM2` together, and every drawing of the study
     /// within `ONE_SHEET_SHARE` of an A1 field.
@@ -425,7 +408,7 @@ mod tests {
             PlanKind::Velocity => (0..poses.positions.len()).collect(),
             PlanKind::Acceleration => s.acceleration_positions().expect("positions"),
         };
-        let ks = typical_plans(&poses, &all, w1, kind, mu);
+        let ks = common_plans(&all, &s.own_scale_positions().expect("own"));
         let l = s.scale_l().expect("μ_l");
         let positions = positions_extent(&poses).labelled_size_at(l);
         let (room, area) = match s.kin_sheets().expect("sheets") {
@@ -443,7 +426,7 @@ mod tests {
             && (!one || drawn <= ONE_SHEET_SHARE * a1_field_mm2())
     }
 
-    /// Every free μ_v and μ_a is the largest round scale the room allows: its typical plans
+    /// Every free μ_v and μ_a is the largest round scale the room allows: its common plans
     /// fit the room their sheet gives them and one step finer they would not. The linkage
     /// scenes whose kinematic drawings share one sheet with their tables are at it from the
     /// textbook's start (measured one step finer: the slider-crank's velocity plans at 0,01

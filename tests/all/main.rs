@@ -61,6 +61,7 @@ mod plate_label_objects;
 mod plate_model;
 mod plate_rules;
 mod plates;
+mod rigid_links;
 mod seed_shaper;
 mod session;
 mod sheet_room;

@@ -6,18 +6,20 @@
 //! - every name joined is written for a step of the label's view whose label names a point;
 //! - that point is a point of the step's item (a marked point, a pair, a block, an end of a
 //!   line or vector), not a place along a line or on an arc;
-//! - the named points coincide on the sheet (each within [`COINCIDENT_MM`] of another);
+//! - the named points coincide on the drawing: each within the drafting resolution (0,5 mm,
+//!   [`resolution_mm`]) of every other (the tangent's `p ≡ a ≡ k` joined points 3,2 and
+//!   1,6 mm apart);
 //! - no name joined is a quantity's (a reaction `R₁₋₂`, a load with a Cyrillic subscript,
 //!   an arm `h₇`);
 //! - "≡" is written only by the joining of points (a label text with "≡" of one step is
 //!   a quantity written as two).
 
 use crate::plate_model::{
-    self, every_sheet, named_point, names_point, on_sheet, sheet, step, with_view,
+    self, every_sheet, named_point, names_point, on_sheet, resolution_mm, sheet, step, with_view,
 };
 use glam::DVec2;
 use tmm::construct::{Item, Names, Step};
-use tmm::plate::{layout, Plate, COINCIDENT_MM, JOINT_SEPARATOR};
+use tmm::plate::{layout, Layout, Plate, JOINT_SEPARATOR};
 
 /// A name of a quantity rather than a point: a reaction's or a load's subscript (with a
 /// dash, `R_{1-2}`, or a Cyrillic word, `F_{пс}`), or an arm `h_{7}`.
@@ -29,7 +31,11 @@ fn names_a_quantity(name: &str) -> bool {
 
 /// What is wrong with every "≡" of `plate`, described.
 fn false_equivalences(plate: &Plate) -> Vec<String> {
-    let l = layout(plate);
+    false_equivalences_in(plate, &layout(plate))
+}
+
+/// What is wrong with every "≡" of `plate` laid out as `l`, described.
+fn false_equivalences_in(plate: &Plate, l: &Layout) -> Vec<String> {
     let mut out = Vec::new();
     for x in &l.labels {
         let names: Vec<&str> = x.text.split(JOINT_SEPARATOR).collect();
@@ -58,7 +64,7 @@ fn false_equivalences(plate: &Plate) -> Vec<String> {
             if names_a_quantity(name) {
                 out.push(say(format!("{name} is a quantity's name")));
             }
-            match named_point(s, COINCIDENT_MM) {
+            match named_point(s, resolution_mm()) {
                 Some(p) => points.push(on_sheet(view, p)),
                 None => out.push(say(format!(
                     "{name} is anchored off every point of its item ({:?})",
@@ -66,14 +72,16 @@ fn false_equivalences(plate: &Plate) -> Vec<String> {
                 ))),
             }
         }
-        let apart = points.iter().enumerate().find(|(i, p)| {
-            !points
+        let apart = points.iter().enumerate().find_map(|(i, p)| {
+            points[i + 1..]
                 .iter()
-                .enumerate()
-                .any(|(j, q)| j != *i && p.distance(*q) <= COINCIDENT_MM + 1e-9)
+                .find(|q| p.distance(**q) > resolution_mm() + 1e-9)
+                .map(|q| (p, p.distance(*q)))
         });
-        if let (Some((_, p)), true) = (apart, points.len() > 1) {
-            out.push(say(format!("its point {p:?} is apart from the others")));
+        if let Some((p, d)) = apart {
+            out.push(say(format!(
+                "its point {p:?} is {d:.2} mm from another it is joined with"
+            )));
         }
     }
     out
@@ -156,4 +164,43 @@ fn the_equivalence_rule_fails_on_a_plate_built_to_break_it() {
     ] {
         assert!(found.contains(expected), "{expected} not in:\n{found}");
     }
+}
+
+/// The tolerance fails where it should: a plan's image `a` 1,6 mm from the pole (a vector
+/// 1,6 mm long, drawn as one, its head fitted) is written apart from `p` by the layout, and
+/// the same two written as one label, `p ≡ a` (the old drawing: a vector shorter than its
+/// arrowhead drawn as the point at its tail), are found.
+#[test]
+fn the_equivalence_tolerance_is_the_drafting_resolution() {
+    let plate = sheet("tangent/kinematics");
+    let x = DVec2::new(40.0, -40.0);
+    let head = x + DVec2::new(1.6, 0.0);
+    let vector = Item::Vector { from: x, to: head };
+    let broken = with_view(
+        plate,
+        vec![
+            drawn(0, Item::Point(x), "p", x, Names::Point),
+            drawn(1, vector.clone(), "a", head, Names::of(&vector, head)),
+        ],
+    );
+    let view = broken.views.len() - 1;
+    let mut l = layout(&broken);
+    let texts: Vec<&str> = l
+        .labels
+        .iter()
+        .filter(|x| x.view == view)
+        .map(|x| x.text.as_str())
+        .collect();
+    assert_eq!(texts, ["p", "a"]);
+    assert!(false_equivalences_in(&broken, &l).is_empty());
+    // Written as one, the old way.
+    let at = l.labels.iter().position(|x| x.view == view).expect("p");
+    let a = l.labels.remove(at + 1);
+    l.labels[at].steps.extend(a.steps);
+    l.labels[at].text = format!("p{JOINT_SEPARATOR}a");
+    let found = false_equivalences_in(&broken, &l).join("\n");
+    assert!(
+        found.contains("“p ≡ a”: its point") && found.contains("is 1.60 mm from another"),
+        "{found}"
+    );
 }

@@ -18,7 +18,7 @@ use crate::plate_model::{
     sheet, step, with_view,
 };
 use glam::DVec2;
-use tmm::construct::{Drafting, Item, StepId};
+use tmm::construct::{Drafting, Item, Names, StepId};
 use tmm::plate::{layout, Layout, Plate, View};
 use tmm::scale::Lang;
 
@@ -205,8 +205,10 @@ fn every_label_is_at_its_object() {
 /// The rule fails where it should: a point's label anchored 30 mm from its point (the
 /// lever's image of P labelled at its force's arrow), and a reaction's label written on
 /// another side of its polygon (`R₁₋₂` on the `R₄₋₃` line) — the placer would move a label
-/// merely anchored there, so its placed box is moved there; and a position number written
-/// past the next point, nearer it than its own.
+/// merely anchored there, so its placed box is moved there; a position number written
+/// past the next point, nearer it than its own; and a position number as the plan of
+/// positions writes it (a text naming its crank pin) 10 mm from its pin (the four-bar's "8",
+/// issue 45: a text's label was not measured).
 #[test]
 fn the_object_rule_fails_on_a_plate_built_to_break_it() {
     let plate = sheet("friction/friction");
@@ -222,12 +224,18 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
     };
     // Two position numbers 6 mm apart.
     let (p8, p9) = (DVec2::new(0.0, -60.0), DVec2::new(6.0, -60.0));
+    let p10 = DVec2::new(0.0, -90.0);
+    let mut number = drawn(5, Item::Text(p10), "10", (p10, -DVec2::Y));
+    if let Some(l) = number.label.as_mut() {
+        l.names = Names::Point;
+    }
     let steps = vec![
         point,
         side(1, o, a, "R_{4-3}", o.lerp(a, 0.5)),
         side(2, a, b, "R_{1-2}", a.lerp(b, 0.5)),
         drawn(3, Item::Point(p8), "8", (p8, -DVec2::Y)),
         drawn(4, Item::Point(p9), "9", (p9, -DVec2::Y)),
+        number,
     ];
     let plate = with_view(plate, steps);
     let mut l = layout(&plate);
@@ -251,11 +259,26 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
             x.rect.max = x.rect.min + size;
         }
     }
+    // "10" written 10 mm to the right of its pin.
+    let off_ten = on_sheet(view, p10) + DVec2::new(10.0, 0.0);
+    for x in l.labels.iter_mut() {
+        if x.view == broken && x.text == "10" {
+            let size = x.rect.max - x.rect.min;
+            x.rect.min = off_ten - DVec2::new(0.0, size.y * 0.5);
+            x.rect.max = x.rect.min + size;
+        }
+    }
     let found: Vec<String> = labels_away_in(&plate, &l)
         .into_iter()
         .map(|x| x.1)
         .collect();
-    assert!(found.len() >= before + 3, "{found:?}");
+    assert!(found.len() >= before + 4, "{found:?}");
+    assert!(
+        found
+            .iter()
+            .any(|w| w.contains("“10”: 10.0 mm from its point")),
+        "{found:?}"
+    );
     let all = found.join("\n");
     assert!(
         all.contains("“p_{P}”:") && all.contains("mm from its point"),
@@ -270,7 +293,7 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
     let placed: Vec<String> = labels_away(&plate).into_iter().map(|x| x.1).collect();
     let placed = placed.join("\n");
     assert!(
-        !placed.contains("“R_{1-2}”:") && !placed.contains("“8”:"),
+        !placed.contains("“R_{1-2}”:") && !placed.contains("“8”:") && !placed.contains("“10”:"),
         "{placed}"
     );
 }

@@ -10,8 +10,15 @@ use tmm::plate::{Plate, View};
 use tmm::scale::Lang;
 use tmm::study::Session;
 
-/// A vector shorter than its arrowhead is drawn as the point at its tail (issue 45): the
-/// arrowhead of a main line (a given or resulting vector) is 4 mm long, of a thin one 3 mm
+/// The drafting resolution, mm: a length is read off the drawing to 0,5 mm, so points
+/// nearer than this coincide on it and a plan's image this near its tail is drawn as the
+/// point there (issue 45: `p ≡ a ≡ k` may not join points 3,2 and 1,6 mm apart).
+pub fn resolution_mm() -> f64 {
+    Drafting::HAND.resolution_mm()
+}
+
+/// A force shorter than its arrowhead is drawn as the point at its tail: the arrowhead of a
+/// main line (a given or resulting vector) is 4 mm long, of a thin one 3 mm
 /// (`docs/STYLE.md`).
 pub fn arrowhead_mm(role: Role) -> f64 {
     match role {
@@ -20,11 +27,19 @@ pub fn arrowhead_mm(role: Role) -> f64 {
     }
 }
 
-/// Whether a step is a vector drawn as the point at its tail: a labelled one shorter than
-/// its arrowhead (an unlabelled one is an arc's arrowhead).
+/// Whether a step is a vector drawn as the point at its tail: a plan's image (a label naming
+/// a point) shorter than the drafting resolution, a force (a label naming its item) shorter
+/// than its arrowhead; an unlabelled one is an arc's arrowhead.
 fn short(step: &Step) -> bool {
-    step.label.is_some()
-        && matches!(step.item, Item::Vector { from, to } if from.distance(to) < arrowhead_mm(step.role))
+    let Item::Vector { from, to } = step.item else {
+        return false;
+    };
+    let shorter = match step.label.as_ref().map(|l| l.names) {
+        Some(Names::Point) => resolution_mm(),
+        Some(Names::Item) => arrowhead_mm(step.role),
+        None => return false,
+    };
+    from.distance(to) < shorter
 }
 
 /// Every sheet of every plate of every scene in `constructions/`, in Russian, named
@@ -77,7 +92,7 @@ pub fn step(view: &View, id: tmm::construct::StepId) -> &Step {
 
 /// The point a label of a point names, figure mm: the point of its step's item nearest its
 /// anchor (a marked point, a pair, a block, an end of a line or vector; the tail of a
-/// vector drawn as a point). `None` when the item has no point there (within `reach`).
+/// vector drawn as a point; a text's anchor when its label names a point). `None` when the item has no point there (within `reach`).
 pub fn named_point(step: &Step, reach: f64) -> Option<DVec2> {
     let label = step.label.as_ref()?;
     let a = label.anchor;
@@ -86,6 +101,8 @@ pub fn named_point(step: &Step, reach: f64) -> Option<DVec2> {
         Item::Joint { at, .. } | Item::Slider { at, .. } => vec![*at],
         Item::Segment(s) | Item::Guide { segment: s, .. } => vec![s.from, s.to],
         Item::Vector { from, to } => vec![*from, *to],
+        // A text that names a point (a position's number at its crank pin) names its anchor.
+        Item::Text(p) if names_point(step) => vec![*p],
         _ => Vec::new(),
     };
     let at = points

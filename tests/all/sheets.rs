@@ -477,3 +477,30 @@ fn every_scene_has_a_designation_of_its_own() {
         seen.push((name, d));
     }
 }
+
+/// The structural analysis states Grashof's condition as a student writes it (issue 45): the
+/// six-bar's O–A–B–D is a change-point linkage (100 + 500 = 300 + 300 mm), its velocity plan
+/// refused at position 6; the four-bar's 80 + 280 < 250 + 180 has no change point.
+#[test]
+fn the_structural_analysis_states_grashofs_condition() {
+    let six = scene::load(&root().join("constructions/six-bar.toml")).expect("six-bar");
+    let text = sheet_text(&six);
+    for line in [
+        "Условие Грасгофа (O–A–B–D): l_{min} + l_{max} ≤ l′ + l″",
+        "l_{OA} + l_{AB} = 100 + 500 = 600 мм = l_{DB} + l_{OD} = 300 + 300 = 600 мм",
+        "Кривошип существует",
+        "Равенство: звенья ложатся на одну прямую (особое положение)",
+        "Пол. 6: план скоростей не строится",
+    ] {
+        assert!(text.lines().any(|l| l == line), "{line} not in:\n{text}");
+    }
+    let four = scene::load(&root().join("constructions/four-bar.toml")).expect("four-bar");
+    let text = sheet_text(&four);
+    for line in [
+        "l_{O1A} + l_{O1O3} = 80 + 280 = 360 мм < l_{AB} + l_{O3B} = 250 + 180 = 430 мм",
+        "Кривошип существует",
+    ] {
+        assert!(text.lines().any(|l| l == line), "{line} not in:\n{text}");
+    }
+    assert!(!text.contains("Равенство"), "{text}");
+}

@@ -455,6 +455,7 @@ mod tests {
                 note: "toy",
                 anchors: Vec::new(),
                 joints: Vec::new(),
+                rigid: Vec::new(),
             };
             group.draw(&mut pen, &prog, &pos, [2, 3]);
             joints.push(pen.joints.clone());

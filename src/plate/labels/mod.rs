@@ -21,12 +21,15 @@ use super::style::{Mark, Pen};
 use super::table::table_marks;
 use super::text::{measure, plain, Align, Extent, Placed};
 use super::{Plate, Rect, TextBlock, View, CAPTION_BAND_MM};
-use crate::construct::{Item, Label, Names, StepId};
+use crate::construct::{Drafting, Item, Label, Names, StepId};
 use crate::geom::DVec2;
 use std::f64::consts::{FRAC_PI_4, TAU};
 
-/// Label points closer than this on the sheet are one point: their labels are joined, mm.
-pub const COINCIDENT_MM: f64 = 0.3;
+/// Label points closer than this on the sheet are one point: their labels are joined, mm —
+/// the drafting resolution a length is read to (0,5 mm, [`Drafting::HAND`]): points that
+/// far apart are drawn apart, and "≡" joins only points that coincide on the drawing (the
+/// tangent's `p ≡ a ≡ k` over 3,2 and 1,6 mm, issue 45).
+pub const COINCIDENT_MM: f64 = Drafting::HAND.resolution_mm();
 /// How a joint label joins its names.
 pub const JOINT_SEPARATOR: &str = " ≡ ";
 /// Each further ring of candidate positions lies this much further from the point, mm.
@@ -285,8 +288,9 @@ fn requests(
             Item::Joint { .. } => LABEL_GAP_MM + JOINT_RADIUS_MM,
             _ => LABEL_GAP_MM,
         };
-        // A vector drawn as the point at its tail (shorter than its arrowhead): the name of
-        // its head is written at that point (`p ≡ b`).
+        // A vector drawn as the point at its tail (`short_vector`: an image nearer its tail
+        // than the drafting resolution): the name of its head is written at that point
+        // (`p ≡ b`).
         let anchor = match (names_of, short_vector(step)) {
             (Names::Point, Some(tail)) => tail,
             _ => *anchor,
@@ -328,7 +332,9 @@ pub(super) fn line_length_in(figure: &crate::construct::Figure, lo: DVec2, hi: D
 }
 
 /// The joint labels of `figure` (see [`View::joint_labels`]).
-pub(super) fn joint_labels(figure: &crate::construct::Figure) -> Vec<(DVec2, String, DVec2)> {
+pub(super) fn joint_labels(
+    figure: &crate::construct::Figure,
+) -> Vec<(DVec2, String, DVec2, Vec<StepId>)> {
     let view = View {
         figure: figure.clone(),
         origin: DVec2::ZERO,
@@ -342,47 +348,35 @@ pub(super) fn joint_labels(figure: &crate::construct::Figure) -> Vec<(DVec2, Str
         .map(|r| {
             let text = r.text();
             let e = measure(&text, LABEL_HEIGHT_MM);
-            (DVec2::new(r.anchor.x, -r.anchor.y), text, e.max - e.min)
+            let at = DVec2::new(r.anchor.x, -r.anchor.y);
+            (at, text, e.max - e.min, r.steps)
         })
         .collect()
 }
 
-/// Join the labels of points whose points coincide (transitively; names with names, position
-/// numbers with position numbers), keeping the figure's order with the pole first; a name
-/// repeated at one point is written once. A label of an item is never joined.
+/// Join the labels of points whose points coincide (each within [`COINCIDENT_MM`] of every
+/// other; names with names, position numbers with position numbers), keeping the figure's
+/// order with the pole first; a name repeated at one point is written once. A label of an item
+/// is never joined.
 fn join_coincident(single: Vec<Request>) -> Vec<Request> {
-    let n = single.len();
-    let mut root: Vec<usize> = (0..n).collect();
-    fn find(root: &mut [usize], mut i: usize) -> usize {
-        while root[i] != i {
-            root[i] = root[root[i]];
-            i = root[i];
-        }
-        i
-    }
-    for i in 0..n {
-        for j in 0..i {
-            let (a, b) = (&single[i], &single[j]);
-            if a.names_of == Names::Point
-                && b.names_of == Names::Point
-                && a.anchor.distance(b.anchor) <= COINCIDENT_MM
-                && is_number(&a.names[0]) == is_number(&b.names[0])
-            {
-                let (a, b) = (find(&mut root, i), find(&mut root, j));
-                root[a.max(b)] = a.min(b);
-            }
-        }
-    }
+    // Each label joins the first group (in the figure's order) whose every point lies within
+    // `COINCIDENT_MM` of its own: no chain of near points joins two points farther apart.
     let mut joined: Vec<Request> = Vec::new();
-    let mut slot: Vec<Option<usize>> = vec![None; n];
-    for (i, r) in single.into_iter().enumerate() {
-        let g = find(&mut root, i);
-        match slot[g] {
+    let mut members: Vec<Vec<DVec2>> = Vec::new();
+    for r in single {
+        let fits = |j: &Request, points: &Vec<DVec2>| {
+            j.names_of == Names::Point
+                && r.names_of == Names::Point
+                && is_number(&j.names[0]) == is_number(&r.names[0])
+                && points.iter().all(|p| p.distance(r.anchor) <= COINCIDENT_MM)
+        };
+        match joined.iter().zip(&members).position(|(j, m)| fits(j, m)) {
             None => {
-                slot[g] = Some(joined.len());
+                members.push(vec![r.anchor]);
                 joined.push(r);
             }
             Some(at) => {
+                members[at].push(r.anchor);
                 let j = &mut joined[at];
                 j.steps.extend(r.steps);
                 j.gap = j.gap.max(r.gap);

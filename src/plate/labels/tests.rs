@@ -65,6 +65,24 @@ fn coincident_labels_join_with_the_pole_first() {
     assert_eq!(joined[2].text(), "1");
 }
 
+/// "≡" joins only points within the drafting resolution (0,5 mm) of each other: the
+/// tangent's `a` 1,6 mm from the pole and `k` 3,2 mm from it are written apart (issue 45),
+/// and a chain of near points does not join its ends 0,9 mm apart.
+#[test]
+fn only_points_within_the_drafting_resolution_are_joined() {
+    assert_eq!(COINCIDENT_MM, 0.5);
+    let o = DVec2::new(10.0, 10.0);
+    let joined = join_coincident(vec![
+        request("p", o, 1),
+        request("a", o + DVec2::new(1.6, 0.0), 2),
+        request("k", o + DVec2::new(0.0, 3.2), 3),
+        request("b", o + DVec2::new(0.45, 0.0), 4),
+        request("c", o + DVec2::new(0.9, 0.0), 5),
+    ]);
+    let texts: Vec<String> = joined.iter().map(Request::text).collect();
+    assert_eq!(texts, ["p ≡ b", "a", "k", "c"]);
+}
+
 #[test]
 fn labels_of_items_are_never_joined() {
     let o = DVec2::new(10.0, 10.0);

@@ -44,6 +44,15 @@ catalogue! {
         Return => ("холостой", "холостий", "return"),
         SwingOfLink => ("Угол размаха звена", "Кут розмаху ланки", "Swing of link"),
         StrokeOfPoint => ("Ход точки", "Хід точки", "Stroke of point"),
+        GrashofCondition => ("Условие Грасгофа", "Умова Грасгофа", "Grashof's condition"),
+        CrankExists => ("Кривошип существует", "Кривошип існує", "A crank exists"),
+        NoCrank => ("Кривошипа нет", "Кривошипа немає", "No crank"),
+        ChangePoint => (
+            "Равенство: звенья ложатся на одну прямую (особое положение)",
+            "Рівність: ланки лягають на одну пряму (особливе положення)",
+            "The equality: the links fall into one line (a change point)"
+        ),
+        NoVelocityPlanThere => ("план скоростей не строится", "план швидкостей не будується", "no velocity plan there"),
         Millimetre => ("мм", "мм", "mm"),
         NoDiagrams => ("Диаграммы по углу поворота не строятся: механизм не проходит положение", "Діаграми за кутом повороту не будуються: механізм не проходить положення", "No diagrams over the crank turn: the mechanism cannot pass"),
         NoDiagramsLeap => ("Диаграммы по углу поворота не строятся: звено поворачивается скачком около положения", "Діаграми за кутом повороту не будуються: ланка повертається стрибком біля положення", "No diagrams over the crank turn: a link turns by a leap near"),
