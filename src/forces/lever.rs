@@ -10,7 +10,7 @@ use super::loads::Load;
 use super::polygons::{MomentEquation, MomentTerm, Unknown};
 use super::spec::Drive;
 use super::twin::line_of_action;
-use crate::construct::{Figure, Item, Recorder, Role};
+use crate::construct::{Figure, Item, Measured, Recorder, Role};
 use crate::geom::{DVec2, Segment};
 use crate::linkage::{image_label, Built, KinPlan, PlanKind, PlanSetup};
 use crate::scale::Scale;
@@ -295,16 +295,7 @@ impl Board {
             }
         };
         let power = (x_far - x_o).perp_dot(f).signum() * f.length() * arm.value;
-        self.log.push(MomentTerm {
-            name: first,
-            force: f.length(),
-            arm: arm.value,
-            arm_mm: arm.read_mm,
-            label,
-            moment: power,
-            couple: false,
-        });
-        power
+        self.log_force(first, f.length(), &arm, label, power)
     }
 
     /// The balancing force of a coupling (the textbook's F_у at the crank pin A ⊥ OA): on the
@@ -435,9 +426,22 @@ impl Board {
         };
         // Moment about the pole in plan mm × N, turned into power with μ_v.
         let power = x.perp_dot(e).signum() * f.length() * arm.value;
+        self.log_force(name.to_string(), f.length(), &arm, label, power)
+    }
+
+    /// Log a force's term of the lever's equation — its magnitude, N, its arm as read and
+    /// labelled, its power — and return the power.
+    fn log_force(
+        &mut self,
+        name: String,
+        force: f64,
+        arm: &Measured,
+        label: Option<String>,
+        power: f64,
+    ) -> f64 {
         self.log.push(MomentTerm {
-            name: name.to_string(),
-            force: f.length(),
+            name,
+            force,
             arm: arm.value,
             arm_mm: arm.read_mm,
             label,
