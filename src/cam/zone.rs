@@ -120,17 +120,14 @@ fn hatch_angle_between(
         c + p * len + inward(p, q) * BAND_MM,
     ];
     let angle = hatch_angle(&[p, q]);
-    // The outline is finite (its points are the drawing's): the hatcher refuses only
-    // non-finite ones.
-    let strokes = crate::geom::hatch(&outline, HATCH_MM, angle).unwrap_or_default();
-    for s in strokes {
-        rec.draw(
-            "hatching of the zone of the cam centre",
-            Item::Segment(s),
-            Role::Hatch,
-            from,
-        );
-    }
+    // The outline is finite (its points are the drawing's) and a band a few spacings wide:
+    // the hatcher refuses neither.
+    let _ = rec.hatching(
+        "hatching of the zone of the cam centre",
+        outline.to_vec(),
+        (HATCH_MM, angle),
+        from,
+    );
 }
 
 /// How far from the crossing the band (and the rays) run for a zone `reach` mm long, mm.

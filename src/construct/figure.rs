@@ -94,12 +94,36 @@ pub enum Item {
     Angle(Arc),
     /// Free text anchored at a point (the label carries the text).
     Text(DVec2),
+    /// A region hatched with parallel thin lines (ГОСТ 2.306: a section of a part, a zone of
+    /// a diagram), drawn as [`crate::geom::hatch`] strokes it; one step, so that a CAD
+    /// drawing can hold it as one patterned hatch.
+    Hatching {
+        /// The closed outline (even-odd inside).
+        outline: Vec<DVec2>,
+        /// The lines' spacing, mm.
+        spacing: f64,
+        /// The lines' angle from +x, radians.
+        angle: f64,
+    },
 }
 
 impl Item {
     /// A slider block's half length along its slide and half width across it, mm: the block
     /// is drawn 10 × 6 mm whatever the scale.
     pub const SLIDER_HALF_MM: (f64, f64) = (5.0, 3.0);
+
+    /// The strokes a hatching draws (none for any other item, or an outline the recorder
+    /// would have refused: [`crate::construct::Recorder::hatching`]).
+    pub fn hatch_strokes(&self) -> Vec<Segment> {
+        match self {
+            Item::Hatching {
+                outline,
+                spacing,
+                angle,
+            } => crate::geom::hatch(outline, *spacing, *angle).unwrap_or_default(),
+            _ => Vec::new(),
+        }
+    }
 }
 
 /// One recorded step.
@@ -232,6 +256,19 @@ impl Figure {
                     },
                     Item::Angle(a) => Item::Angle(arc(a)),
                     Item::Text(p) => Item::Text(m(*p)),
+                    Item::Hatching {
+                        outline,
+                        spacing,
+                        angle,
+                    } => Item::Hatching {
+                        outline: outline.iter().map(|p| m(*p)).collect(),
+                        spacing: *spacing,
+                        angle: if mirror {
+                            std::f64::consts::PI - angle
+                        } else {
+                            *angle
+                        },
+                    },
                 };
                 let label = st.label.as_ref().map(|l| Label {
                     text: l.text.clone(),
@@ -274,138 +311,6 @@ impl Figure {
                 .filter(|r| r.group == 0 || keep.contains(&r.group))
                 .copied()
                 .collect(),
-        }
-    }
-
-    /// A detail view (ГОСТ 2.305 выносной элемент) of the zone `zone` (figure mm) drawn at
-    /// `scale`: what the figure draws inside the circle, enlarged by μ/μ_detail about its
-    /// centre (the detail's origin), each line cut where it leaves the circle, and the circle
-    /// itself, thin. Points and joints inside keep their place; vectors, sliders, guides,
-    /// dimensions, angles, texts and labels stay on the main view. Each step notes the step
-    /// it copies in `from`.
-    pub fn detail(&self, zone: &Circle, scale: Scale) -> Figure {
-        self.detail_keeping(zone, scale, false)
-    }
-
-    /// A detail view of a force polygon ([`detail`](Figure::detail)) that also keeps its
-    /// vectors: each cut where it leaves the circle, its arrowhead kept when its end lies
-    /// inside, its label set at the middle of the piece that shows.
-    pub fn detail_with_vectors(&self, zone: &Circle, scale: Scale) -> Figure {
-        self.detail_keeping(zone, scale, true)
-    }
-
-    fn detail_keeping(&self, zone: &Circle, scale: Scale, vectors: bool) -> Figure {
-        let k = self.scale.value() / scale.value();
-        let t = |p: DVec2| (p - zone.center) * k;
-        let inside = |p: DVec2| p.distance(zone.center) <= zone.radius;
-        let mut items: Vec<(&Step, Item, Option<Label>)> = Vec::new();
-        let arc = |a: &Arc| {
-            crate::geom::arc_in_circle(a, zone)
-                .into_iter()
-                .map(|a| {
-                    Item::Arc(Arc {
-                        center: t(a.center),
-                        radius: a.radius * k,
-                        ..a
-                    })
-                })
-                .collect::<Vec<_>>()
-        };
-        let runs = |points: &[DVec2], closed: bool| {
-            let mut pts = points.to_vec();
-            if closed {
-                pts.extend(points.first());
-            }
-            crate::geom::polyline_in_circle(&pts, zone)
-                .into_iter()
-                .map(|r| r.into_iter().map(t).collect::<Vec<_>>())
-                .collect::<Vec<_>>()
-        };
-        for st in &self.steps {
-            let copies: Vec<Item> = match &st.item {
-                Item::Point(p) if inside(*p) => vec![Item::Point(t(*p))],
-                Item::Joint { at, fixed } if inside(*at) => vec![Item::Joint {
-                    at: t(*at),
-                    fixed: *fixed,
-                }],
-                Item::Vector { from, to } if vectors => {
-                    for r in runs(&[*from, *to], false) {
-                        let (a, b) = (r[0], r[r.len() - 1]);
-                        let item = if inside(*to) {
-                            Item::Vector { from: a, to: b }
-                        } else {
-                            Item::Segment(Segment::new(a, b))
-                        };
-                        // Set at the middle of the piece that shows, it names the vector.
-                        let label = st.label.as_ref().map(|l| Label {
-                            anchor: a.lerp(b, 0.5),
-                            names: Names::Item,
-                            ..l.clone()
-                        });
-                        items.push((st, item, label));
-                    }
-                    Vec::new()
-                }
-                Item::Segment(s) => runs(&[s.from, s.to], false)
-                    .into_iter()
-                    .map(|r| Item::Segment(Segment::new(r[0], r[r.len() - 1])))
-                    .collect(),
-                Item::Circle(c) => arc(&Arc {
-                    center: c.center,
-                    radius: c.radius,
-                    start: 0.0,
-                    sweep: std::f64::consts::TAU,
-                }),
-                Item::Arc(a) => arc(a),
-                Item::Polyline { points, closed } => runs(points, *closed)
-                    .into_iter()
-                    .map(|points| Item::Polyline {
-                        points,
-                        closed: false,
-                    })
-                    .collect(),
-                Item::Curve { points, closed } => runs(points, *closed)
-                    .into_iter()
-                    .map(|points| Item::Curve {
-                        points,
-                        closed: false,
-                    })
-                    .collect(),
-                _ => Vec::new(),
-            };
-            items.extend(copies.into_iter().map(|item| (st, item, None)));
-        }
-        let mut steps: Vec<Step> = items
-            .into_iter()
-            .enumerate()
-            .map(|(i, (st, item, label))| Step {
-                id: StepId(i as u32),
-                note: format!("detail: {}", st.note),
-                item,
-                role: st.role,
-                label,
-                from: vec![st.id],
-                group: st.group,
-            })
-            .collect();
-        steps.push(Step {
-            id: StepId(steps.len() as u32),
-            note: "detail: its border".into(),
-            item: Item::Circle(Circle {
-                center: DVec2::ZERO,
-                radius: zone.radius * k,
-            }),
-            role: Role::Construction,
-            label: None,
-            from: Vec::new(),
-            group: 0,
-        });
-        // The readings stay on the main view, where the segments are drawn whole.
-        Figure {
-            title: format!("detail of {}", self.title),
-            scale,
-            steps,
-            readings: Vec::new(),
         }
     }
 
@@ -457,9 +362,11 @@ impl Figure {
                         add(a.eval(i as f64 / 16.0));
                     }
                 }
-                Item::Polyline { points, .. } | Item::Curve { points, .. } => {
-                    points.iter().for_each(|p| add(*p))
-                }
+                Item::Polyline { points, .. }
+                | Item::Curve { points, .. }
+                | Item::Hatching {
+                    outline: points, ..
+                } => points.iter().for_each(|p| add(*p)),
                 Item::Vector { from, to } => {
                     add(*from);
                     add(*to)

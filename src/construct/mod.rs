@@ -15,6 +15,7 @@
 
 mod compass;
 mod context;
+mod detail;
 mod drafting;
 mod error;
 mod figure;

@@ -6,7 +6,7 @@ use super::drafting::{Drafting, Measured};
 use super::figure::{Figure, Item, Role, Step, StepId};
 use super::label::{Label, Names};
 use super::reading::Reading;
-use crate::geom::{DVec2, Tolerances};
+use crate::geom::{DVec2, HatchError, Tolerances};
 use crate::scale::Scale;
 
 /// Records a construction into a [`Figure`].
@@ -85,6 +85,29 @@ impl Recorder {
             group: self.group,
         });
         id
+    }
+
+    /// Record the hatching of the closed `outline` (figure mm), its lines `spacing` mm apart
+    /// at `angle` radians from +x (ГОСТ 2.306), with the hatch's role: one step however many
+    /// lines it draws.
+    ///
+    /// # Errors
+    /// The hatcher's refusal ([`HatchError`]): a coordinate that is not finite, or an outline
+    /// too many spacings across.
+    pub fn hatching(
+        &mut self,
+        note: impl Into<String>,
+        outline: Vec<DVec2>,
+        (spacing, angle): (f64, f64),
+        from: &[StepId],
+    ) -> Result<StepId, HatchError> {
+        crate::geom::hatch(&outline, spacing, angle)?;
+        let item = Item::Hatching {
+            outline,
+            spacing,
+            angle,
+        };
+        Ok(self.draw(note, item, Role::Hatch, from))
     }
 
     /// Attach a label to a recorded step; it names what [`Names::of`] says (the point it

@@ -277,11 +277,9 @@ fn hatched(rec: &mut Recorder, note: &str, outline: &[DVec2]) {
         Role::Given,
         &[],
     );
-    // The outline is finite (the scale is): the hatcher refuses only non-finite ones.
-    let strokes = crate::geom::hatch(outline, HATCH_MM, FRAC_PI_4).unwrap_or_default();
-    for s in strokes {
-        rec.draw("hatching", Item::Segment(s), Role::Hatch, &[id]);
-    }
+    // The outline is finite (the scale is), and a part's section is a few spacings across:
+    // the hatcher refuses neither.
+    let _ = rec.hatching("hatching", outline.to_vec(), (HATCH_MM, FRAC_PI_4), &[id]);
 }
 
 #[cfg(test)]
@@ -347,7 +345,14 @@ mod tests {
         assert_eq!(count("spoke"), 2 * 2 + 4 * 2);
         assert_eq!(count("the spoke's section at the hub"), 1);
         assert_eq!(count("the spoke's section at the rim"), 1);
-        assert!(count("hatching") > 20, "{}", count("hatching"));
+        // Hatched regions: the rim's and the hub's halves, their strokes many.
+        let strokes: usize = f
+            .steps
+            .iter()
+            .filter(|s| s.note == "hatching")
+            .map(|s| s.item.hatch_strokes().len())
+            .sum();
+        assert!(count("hatching") >= 2 && strokes > 20, "{strokes}");
     }
 
     /// A disc: its section with the bore, ⌀D, ⌀d₁ and b; no spokes.

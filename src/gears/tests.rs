@@ -8,7 +8,7 @@ use super::involute::{
 use super::mesh::meshing;
 use super::*;
 use crate::check::notes::GearsNote;
-use crate::construct::{Context, Drafting, Item, Role};
+use crate::construct::{Context, Drafting, Role};
 use crate::geom::{DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use proptest::prelude::*;
@@ -316,10 +316,8 @@ fn undercut_is_detected_for_z13_x0_and_not_for_x08() {
         g.figure
             .steps
             .iter()
-            .filter_map(|s| match (&s.role, &s.item) {
-                (Role::Hatch, Item::Segment(seg)) => Some(*seg),
-                _ => None,
-            })
+            .filter(|s| s.role == Role::Hatch)
+            .flat_map(|s| s.item.hatch_strokes())
             .collect()
     };
     let strokes = hatching(&g0);

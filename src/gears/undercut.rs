@@ -95,15 +95,12 @@ pub(super) fn undercut(
             &[],
         );
         let outline: Vec<DVec2> = region.iter().map(|p| flip(*p)).collect();
-        let strokes = crate::geom::hatch(&outline, spacing, side * PI / 4.0)?;
-        for stroke in strokes {
-            rec.draw(
-                "hatching of the undercut",
-                Item::Segment(stroke),
-                Role::Hatch,
-                &[edge],
-            );
-        }
+        rec.hatching(
+            "hatching of the undercut",
+            outline,
+            (spacing, side * PI / 4.0),
+            &[edge],
+        )?;
     }
     Ok((detail, detail_marks))
 }

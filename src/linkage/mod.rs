@@ -5,6 +5,7 @@ mod analytic;
 mod carrier;
 mod construction;
 mod extremes;
+mod fan;
 mod grashof;
 mod groups;
 mod kinds;

@@ -3,6 +3,7 @@
 
 use super::construction::Built;
 use super::extremes::{Extremes, OutputCoord};
+use super::fan::{clearances, trim};
 use super::model::Mechanism;
 use super::positions::{
     cannot_assemble, start_of, walk, PlanPoses, PlanPosition, PlanRequest, PosePosition,
@@ -43,6 +44,8 @@ pub(super) struct Pen<'r> {
     /// The links drawn as their contour ([`super::rigid`]), each with its hinges' points:
     /// a bar between two of them is not drawn.
     pub rigid: Vec<(u32, Vec<DVec2>)>,
+    /// The crowded fixed pivots and the radius their lines begin at ([`super::fan`]).
+    pub clear: &'r [(DVec2, f64)],
 }
 
 impl Pen<'_> {
@@ -52,6 +55,9 @@ impl Pen<'_> {
         if covers(&self.rigid, l, (from, to)) {
             return;
         }
+        let Some((from, to)) = trim(self.clear, from, to) else {
+            return;
+        };
         self.rec.draw(
             format!("{}: link {l}", self.note),
             Item::Segment(Segment::new(from, to)),
@@ -81,6 +87,19 @@ pub fn draw_links(
     note: &str,
     part: Part,
 ) -> Vec<(u32, DVec2)> {
+    draw_links_from(rec, prog, b, (role, note), part, &[])
+}
+
+/// [`draw_links`], the lines at the crowded pivots `clear` begun at their clearance
+/// ([`super::fan`]: the further positions of the plan).
+fn draw_links_from(
+    rec: &mut Recorder,
+    prog: &Program,
+    b: &Built,
+    (role, note): (Role, &str),
+    part: Part,
+    clear: &[(DVec2, f64)],
+) -> Vec<(u32, DVec2)> {
     let rigid: Vec<RigidLink> = rigid_links(prog)
         .into_iter()
         .filter(|r| in_part(prog, part, r.link))
@@ -92,13 +111,17 @@ pub fn draw_links(
         anchors: Vec::new(),
         joints: Vec::new(),
         rigid: rigid.iter().map(|r| r.placed(b)).collect(),
+        clear,
     };
     if matches!(part, Part::All | Part::Driver) {
         let (centre, pin) = (b.p[prog.centre], b.p[prog.pin]);
-        if !covers(&pen.rigid, prog.crank_link, (centre, pin)) {
+        let bar = trim(clear, centre, pin);
+        if let Some((from, to)) =
+            bar.filter(|_| !covers(&pen.rigid, prog.crank_link, (centre, pin)))
+        {
             pen.rec.draw(
                 format!("{note}: crank"),
-                Item::Segment(Segment::new(centre, pin)),
+                Item::Segment(Segment::new(from, to)),
                 role,
                 &[],
             );
@@ -116,7 +139,7 @@ pub fn draw_links(
         dyad.group().draw(&mut pen, prog, b, *links);
     }
     for r in &rigid {
-        draw_rigid(pen.rec, r, b, role, note);
+        draw_rigid(pen.rec, r, b, (role, note), clear);
         pen.joints.extend(&r.hinges);
     }
     let Pen {
@@ -315,21 +338,23 @@ pub(super) fn draw_plan(
     let all: Vec<&Built> = positions.iter().map(|p| &p.built).collect();
     draw_guides(rec, &frame_guides(prog, &all, GUIDE_MARGIN_MM));
     // Every position thin, the extremes too (numbered, with the stroke or the swing
-    // between them); position 1, the one the letters name, thick (ГОСТ 2.303 main line).
+    // between them), begun clear of a crowded pivot; position 1, the one the letters name,
+    // thick (ГОСТ 2.303 main line).
+    let clear = clearances(prog, &all[1..]);
     for (k, pos) in positions.iter().enumerate() {
         rec.set_group(k as u32 + 1);
-        let role = if k == 0 {
-            Role::Given
+        let (role, clear) = if k == 0 {
+            (Role::Given, &[][..])
         } else {
-            Role::Construction
+            (Role::Construction, &clear[..])
         };
-        draw_links(
+        draw_links_from(
             rec,
             prog,
             &pos.built,
-            role,
-            &format!("position {}", pos.label),
+            (role, &format!("position {}", pos.label)),
             Part::All,
+            clear,
         );
         let pin = pos.built.p[prog.pin];
         let out = (pin - centre).normalize_or_zero();

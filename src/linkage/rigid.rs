@@ -8,6 +8,7 @@
 //! ([`covers`]).
 
 use super::construction::Built;
+use super::fan::trim_contour;
 use super::program::Program;
 use crate::construct::{Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
@@ -105,17 +106,24 @@ fn contour(points: &[DVec2]) -> (Vec<DVec2>, bool) {
 /// of the plan, a group of the force analysis), the hatching of each corner (thin strokes
 /// across the corner, [`CORNER_MM`] along its sides, at most [`CORNER_SHARE`] of the
 /// shorter); the further positions of a plan, drawn thin, keep the contour alone (twelve
-/// hatchings at a common pivot would print as a blot). Hinges on one line are drawn as the
-/// bar through them.
-pub(super) fn draw_rigid(rec: &mut Recorder, rigid: &RigidLink, b: &Built, role: Role, note: &str) {
+/// hatchings at a common pivot would print as a blot), opened at a crowded pivot of `clear`
+/// ([`super::fan`]). Hinges on one line are drawn as the bar through them.
+pub(super) fn draw_rigid(
+    rec: &mut Recorder,
+    rigid: &RigidLink,
+    b: &Built,
+    (role, note): (Role, &str),
+    clear: &[(DVec2, f64)],
+) {
     let points: Vec<DVec2> = rigid.hinges.iter().map(|&k| b.p[k]).collect();
     let (points, closed) = contour(&points);
     let l = rigid.link;
+    let opened = closed.then(|| trim_contour(clear, &points)).flatten();
     let id = rec.draw(
         format!("{note}: link {l}"),
         Item::Polyline {
-            points: points.clone(),
-            closed,
+            closed: closed && opened.is_none(),
+            points: opened.unwrap_or_else(|| points.clone()),
         },
         role,
         &[],

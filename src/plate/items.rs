@@ -219,6 +219,7 @@ pub(crate) fn item_outlines(item: &Item, (role, labelled): (Role, bool), map: Ma
         }
         Item::Angle(a) => chain(&arc_points(a), false, &mut lines),
         Item::Text(_) => {}
+        Item::Hatching { .. } => lines.extend(item.hatch_strokes().iter().map(|s| (s.from, s.to))),
     }
     let lines = lines.into_iter().map(|(a, b)| Outline {
         shape: Shape::Line(map.pt(a), map.pt(b)),
@@ -290,6 +291,11 @@ fn item_marks(
         }
         Item::Segment(s) => out.extend(stroke(map, pen, |d| {
             d.segment(s.from, s.to);
+        })),
+        Item::Hatching { .. } => out.extend(stroke(map, pen, |d| {
+            for s in item.hatch_strokes() {
+                d.segment(s.from, s.to);
+            }
         })),
         Item::Circle(c) => out.extend(stroke(map, pen, |d| {
             d.circle(c.center, c.radius);

@@ -247,7 +247,6 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
             name: &|r| quantity(r, lang).0,
             unit: &|r| quantity(r, lang).1,
             value: &value,
-            error_decimals: 3,
             size_mm: TABLE_MM,
         },
         rows,

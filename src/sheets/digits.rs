@@ -10,6 +10,8 @@ use crate::scale::{format_fixed, format_sig, Lang};
 pub(crate) const SIG: usize = 4;
 /// Decimals of an angle in degrees in a sheet's text (0,01°).
 pub(crate) const ANGLE_DECIMALS: usize = 2;
+/// Decimals of a relative error in per cent in a sheet's tables (0,01 %).
+const ERROR_DECIMALS: usize = 2;
 
 /// A value in a sheet's text: [`SIG`] significant digits.
 pub(crate) fn value(x: f64, lang: Lang) -> String {
@@ -24,6 +26,12 @@ pub(crate) fn degrees(radians: f64, lang: Lang) -> String {
     )
 }
 
+/// A relative error given as a fraction, in per cent to [`ERROR_DECIMALS`] (the unit is the
+/// column's): `−16,67`.
+pub(crate) fn error_pct(fraction: f64, lang: Lang) -> String {
+    format_fixed(fraction * 100.0, ERROR_DECIMALS, lang)
+}
+
 /// A length given in metres, in millimetres to [`SIG`] digits with the unit: `316,3 мм`.
 pub(crate) fn mm(metres: f64, lang: Lang) -> String {
     format!("{} {}", value(metres * 1e3, lang), unit_in("mm", lang))
@@ -31,7 +39,7 @@ pub(crate) fn mm(metres: f64, lang: Lang) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{degrees, mm, value};
+    use super::{degrees, error_pct, mm, value};
     use crate::scale::Lang;
 
     #[test]
@@ -44,5 +52,8 @@ mod tests {
         assert_eq!(mm(0.46233, Lang::En), "462.3 mm");
         assert_eq!(value(5.43944, Lang::En), "5.439");
         assert_eq!(degrees(38.0f64.to_radians(), Lang::Uk), "38,00°");
+        // The gear table's δ of a ratio read 16,667 % off, the cam's 0,034 %.
+        assert_eq!(error_pct(-0.16667, Lang::Ru), "−16,67");
+        assert_eq!(error_pct(0.00034, Lang::En), "0.03");
     }
 }

@@ -327,7 +327,6 @@ fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
             name: &|r| quantity(r, lang),
             unit: &|_| String::new(),
             value: &|_, x, _| format_sig(x, 5, lang),
-            error_decimals: 2,
             size_mm: TABLE_MM,
         },
         &rows,

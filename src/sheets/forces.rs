@@ -223,7 +223,6 @@ fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
             },
             unit: &|_| String::new(),
             value: &|_, x, scale| cell(x, scale, lang),
-            error_decimals: 2,
             size_mm: TABLE_MM,
         },
         rows,

@@ -188,7 +188,6 @@ fn values_table(rows: &[Row], title: String, columns: &[(Column, f64)], lang: La
                 u => unit_in(u, lang),
             },
             value: &|r, x, _| drawn_value(r, x, table_unit(r).1, lang),
-            error_decimals: 3,
             size_mm: TABLE_MM,
         },
         rows,

@@ -287,8 +287,6 @@ pub(super) struct Results<'a> {
     pub unit: &'a dyn Fn(&Row) -> String,
     /// A value of a row, given the row's zero reference ([`crate::check::scales`]).
     pub value: &'a dyn Fn(&Row, f64, f64) -> String,
-    /// Decimals of the error, %.
-    pub error_decimals: usize,
     /// Text height, mm.
     pub size_mm: f64,
 }
@@ -335,10 +333,9 @@ pub(super) fn results_table(results: &Results<'_>, rows: &[Row], lang: Lang) -> 
                     Column::Unit => (results.unit)(r),
                     Column::Graphical => (results.value)(r, r.graphical, s),
                     Column::Analytic | Column::Exact => (results.value)(r, r.analytic, s),
-                    Column::Error => e.map_or_else(
-                        || "—".into(),
-                        |e| format_fixed(e * 100.0, results.error_decimals, lang),
-                    ),
+                    Column::Error => {
+                        e.map_or_else(|| "—".into(), |e| super::digits::error_pct(e, lang))
+                    }
                 })
                 .collect()
         })

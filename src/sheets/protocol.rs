@@ -78,7 +78,7 @@ fn sentence(figure: &Figure, s: &Step, names: &[(DVec2, String)], lang: Lang) ->
     let between = |a: DVec2, b: DVec2| pair_name(names, a, b).unwrap_or_else(|| label.clone());
     let point = |p: DVec2| name_at(names, p).map_or_else(|| label.clone(), str::to_string);
     let (text, n) = match (&s.item, s.role) {
-        (_, Role::Hatch) => (StepText::Hatch, label.clone()),
+        (_, Role::Hatch) | (Item::Hatching { .. }, _) => (StepText::Hatch, label.clone()),
         (Item::Point(p), _) => (StepText::Point, point(*p)),
         (Item::Joint { at, fixed }, _) => {
             let t = if *fixed {

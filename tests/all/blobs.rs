@@ -22,14 +22,7 @@ const BLOB: f64 = 0.6;
 /// Squares known and stated: (sheet, square, why) — where the drawing the textbook asks for
 /// meets at one point more lines than a 5 mm square holds apart. Every exemption must still
 /// be needed.
-const EXEMPT: &[(&str, &str, &str)] = &[(
-    "six-bar/kinematics",
-    "(525, 80) mm",
-    "the square under the rocker's pivot D on the plan of positions: the rocker is the \
-     triangle DBC (a link with three hinges, ГОСТ 2.770, issue 45) at each of the 14 \
-     positions, so 28 of its sides meet at D within the rocker's 96° swing (the bars D–B \
-     alone, before, inked it 58 %)",
-)];
+const EXEMPT: &[(&str, &str, &str)] = &[];
 
 /// The squares of `p`'s views more than [`BLOB`] inked, as "(x, y) mm".
 fn blobs(p: &Plate) -> Vec<String> {

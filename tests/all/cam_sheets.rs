@@ -124,10 +124,8 @@ fn zone_hatched(f: &Figure) -> Result<(), String> {
         .steps
         .iter()
         .filter(|s| s.role == Role::Hatch)
-        .filter_map(|s| match &s.item {
-            Item::Segment(g) => Some((g.from + g.to) * 0.5),
-            _ => None,
-        })
+        .flat_map(|s| s.item.hatch_strokes())
+        .map(|g| (g.from + g.to) * 0.5)
         .collect();
     if strokes.len() < 3 {
         return Err(format!("the zone has {} hatch strokes", strokes.len()));
@@ -362,12 +360,12 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
     bare.steps.retain(|s| s.role != Role::Hatch);
     assert!(zone_hatched(&bare).is_err());
     let mut flipped = f.clone();
+    // The hatched region turned half round the crossing, into the opposite angle.
     if let Some(s) = flipped.steps.iter_mut().find(|s| s.role == Role::Hatch) {
-        if let Item::Segment(g) = &mut s.item {
-            let m = (g.from + g.to) * 0.5;
-            let (from, to) = (c * 2.0 - m + (g.from - m), c * 2.0 - m + (g.to - m));
-            g.from = from;
-            g.to = to;
+        if let Item::Hatching { outline, .. } = &mut s.item {
+            for p in outline.iter_mut() {
+                *p = c * 2.0 - *p;
+            }
         }
     }
     assert!(zone_hatched(&flipped).is_err());

@@ -567,13 +567,14 @@ fn labels_of(f: &tmm::construct::Figure, note: &str) -> Vec<String> {
 }
 
 /// The hatch strokes of `f`.
-fn hatching(f: &tmm::construct::Figure) -> Vec<&tmm::geom::Segment> {
+fn hatching(f: &tmm::construct::Figure) -> Vec<tmm::geom::Segment> {
     use tmm::construct::{Item, Role};
     f.steps
         .iter()
-        .filter_map(|s| match (&s.role, &s.item) {
-            (Role::Hatch, Item::Segment(seg)) => Some(seg),
-            _ => None,
+        .filter(|s| s.role == Role::Hatch)
+        .flat_map(|s| match &s.item {
+            Item::Segment(seg) => vec![*seg],
+            item => item.hatch_strokes(),
         })
         .collect()
 }

@@ -23,6 +23,31 @@ fn contour<'a>(f: &'a Figure, note: &str) -> Option<&'a [DVec2]> {
     })
 }
 
+/// The contour of the step noted `note` opened at a crowded pivot (a further position of the
+/// plan: begun `clear` mm out from the pivot on both sides): its hinges, the pivot put back
+/// where the two ends point, and `clear`.
+fn opened(f: &Figure, note: &str) -> Option<(Vec<DVec2>, f64)> {
+    f.steps.iter().find_map(|s| match &s.item {
+        Item::Polyline {
+            points,
+            closed: false,
+        } if s.note == note && points.len() >= 4 => {
+            let (a, b) = (points[0], points[points.len() - 1]);
+            let (u, v) = (
+                (a - points[1]).normalize(),
+                (b - points[points.len() - 2]).normalize(),
+            );
+            // The pivot: where the two end pieces, carried on, meet.
+            let t = (b - a).perp_dot(v) / u.perp_dot(v);
+            let pivot = a + u * t;
+            let mut hinges = points[1..points.len() - 1].to_vec();
+            hinges.push(pivot);
+            Some((hinges, pivot.distance(a)))
+        }
+        _ => None,
+    })
+}
+
 /// How many strokes of `f` hatch the corners of the contour noted `note`.
 fn hatching(f: &Figure, note: &str) -> usize {
     let hatch = format!("{note}: corner hatching");
@@ -62,10 +87,21 @@ fn the_six_bar_rocker_is_the_triangle_dbc_wherever_it_is_drawn() {
     let dbc = |k: usize| [at(k, "D"), at(k, "B"), at(k, "C")];
     // The plan of positions: every position's rocker a triangle, hatched at position 1 (the
     // main line) only; no bar D–B.
+    // The further positions, drawn thin, begin 8 mm out from the crowded pivot D (both
+    // sides of the triangle at D, as the rocker's fan does).
     for (k, p) in plan.positions.iter().enumerate() {
         let note = format!("position {}: link 3", p.label);
-        let points = contour(&plan.figure, &note).unwrap_or_else(|| panic!("{note}"));
-        assert!(through(points, &dbc(k)), "{note}: {points:?}");
+        let points = match contour(&plan.figure, &note) {
+            Some(points) if k == 0 => points.to_vec(),
+            _ => {
+                let (hinges, clear) = opened(&plan.figure, &note)
+                    .filter(|_| k > 0)
+                    .unwrap_or_else(|| panic!("{note}"));
+                assert!((clear - 8.0).abs() < 1e-9, "{note}: begun {clear} mm out");
+                hinges
+            }
+        };
+        assert!(through(&points, &dbc(k)), "{note}: {points:?}");
         assert!(!bar(&plan.figure, &note), "{note} is also a bar");
         let strokes = if k == 0 { 9 } else { 0 };
         assert_eq!(hatching(&plan.figure, &note), strokes, "{note}");

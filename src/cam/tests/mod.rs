@@ -222,10 +222,8 @@ fn seed000_zone_of_the_centre_is_hatched_into_the_admitted_side() {
     assert!(follower::admits(o, &cons, sin_g, 1e-9));
     let strokes: Vec<_> = steps
         .iter()
-        .filter_map(|s| match (&s.item, s.role) {
-            (Item::Segment(seg), Role::Hatch) => Some(*seg),
-            _ => None,
-        })
+        .filter(|s| s.role == Role::Hatch)
+        .flat_map(|s| s.item.hatch_strokes())
         .collect();
     assert!(strokes.len() >= 6, "{}", strokes.len());
     // The band along the zone's sides at O (the two rays cross there): every stroke inside

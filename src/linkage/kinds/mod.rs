@@ -456,6 +456,7 @@ mod tests {
                 anchors: Vec::new(),
                 joints: Vec::new(),
                 rigid: Vec::new(),
+                clear: &[],
             };
             group.draw(&mut pen, &prog, &pos, [2, 3]);
             joints.push(pen.joints.clone());

@@ -6,9 +6,12 @@
 //! with its leader, the captions, the text blocks and the tables — in the SVG's order, each
 //! on its [`DxfLayer`]. Sheet millimetres (y down) become the DXF's (y up) by a flip about the
 //! sheet's height. A stroked path is one entity per subpath (LINE, CIRCLE, ARC or
-//! LWPOLYLINE), a filled one (dots, arrowheads) one solid HATCH; a path filled white (a
-//! pair's circle, a slider's block) is stroked only: the DXF has no paint order to cover what
-//! lies under it. A text is one TEXT per run ([`text`]). The bytes are the same on every run:
+//! LWPOLYLINE), a filled one (dots, arrowheads) one solid HATCH, a hatched region (a part's
+//! section, a zone: [`crate::construct::Item::Hatching`]) one HATCH of the ГОСТ 2.306 lines,
+//! user-defined at its angle and spacing, on its outline. A path the SVG fills white (a pair's
+//! circle, a slider's block) is a WIPEOUT under each closed subpath and then its strokes: the
+//! pairs come after the links (`hinges_last`), so, drawn in order, they cover the links' ends
+//! as on the sheet. A text is one TEXT per run ([`text`]). The bytes are the same on every run:
 //! the crate writes no clock and numbers handles in the order entities are added.
 
 mod layers;
@@ -56,12 +59,18 @@ pub fn to_dxf(plate: &Plate) -> Result<Vec<u8>, PlateError> {
     let flip = Flip {
         height: plate.sheet.height_mm(),
     };
-    for (layer, mark) in marks(plate) {
-        for mut entity in entities(&mark, &flip) {
-            let pen = match mark {
-                Mark::Path(Paint::Stroke(pen) | Paint::Opaque(pen), _) => Some(pen),
-                Mark::Path(Paint::Solid, _) | Mark::Text(_) => None,
-            };
+    for (layer, piece) in marks(plate) {
+        let (drawn, pen) = match piece {
+            Piece::Mark(mark) => {
+                let pen = match mark {
+                    Mark::Path(Paint::Stroke(pen) | Paint::Opaque(pen), _) => Some(pen),
+                    Mark::Path(Paint::Solid, _) | Mark::Text(_) => None,
+                };
+                (entities(&mark, &flip), pen)
+            }
+            Piece::Hatching(h) => (vec![shapes::hatching_entity(&h, &flip)], None),
+        };
+        for mut entity in drawn {
             dress(&mut entity, layer, pen, plate);
             doc.add_entity(entity).map_err(refused)?;
         }
@@ -102,8 +111,17 @@ fn document(plate: &Plate) -> Result<CadDocument, acadrust::DxfError> {
 /// The file of the sheet's font, italic as the SVG writes it ([`FONT_FAMILY`](super::FONT_FAMILY)).
 const FONT_FILE: &str = "DejaVuSans-Oblique.ttf";
 
-/// Every mark of the plate with its layer, in the order the SVG writes them.
-fn marks(plate: &Plate) -> Vec<(DxfLayer, Mark)> {
+/// One thing the plate draws, as the DXF writes it.
+enum Piece {
+    /// A mark: its entities ([`entities`]).
+    Mark(Mark),
+    /// A hatching ([`crate::construct::Item::Hatching`]): one patterned HATCH, not its strokes.
+    Hatching(shapes::Hatching),
+}
+
+/// Every mark of the plate with its layer, in the order the SVG writes them; a hatching as
+/// its region (the SVG strokes it).
+fn marks(plate: &Plate) -> Vec<(DxfLayer, Piece)> {
     let laid = layout(plate);
     let frame = frame_marks(&plate.sheet, &plate.title_block)
         .into_iter()
@@ -112,31 +130,36 @@ fn marks(plate: &Plate) -> Vec<(DxfLayer, Mark)> {
             &plate.title_block,
             plate.lang,
         ));
-    let mut out: Vec<(DxfLayer, Mark)> = frame.map(|m| (DxfLayer::Frame, m)).collect();
+    let mut out: Vec<(DxfLayer, Piece)> =
+        frame.map(|m| (DxfLayer::Frame, Piece::Mark(m))).collect();
     for (k, view) in plate.views.iter().enumerate() {
         let map = Map::figure(view.origin);
         for step in super::items::hinges_last(&view.figure.steps) {
             let layer = DxfLayer::Role(step.role);
-            out.extend(step_marks(step, map).into_iter().map(|m| (layer, m)));
+            if let Some(h) = shapes::Hatching::of(&step.item, map) {
+                out.push((layer, Piece::Hatching(h)));
+                continue;
+            }
+            out.extend(
+                step_marks(step, map)
+                    .into_iter()
+                    .map(|m| (layer, Piece::Mark(m))),
+            );
         }
         for l in laid.labels.iter().filter(|l| l.view == k) {
             let layer = label_layer(view, &l.steps);
             let leader = l.leader.iter().flat_map(|leader| leader.marks());
-            out.extend(leader.map(|m| (layer, m)));
-            out.push((layer, Mark::Text(l.placed.clone())));
+            out.extend(leader.map(|m| (layer, Piece::Mark(m))));
+            out.push((layer, Piece::Mark(Mark::Text(l.placed.clone()))));
         }
         if let Some(caption) = &laid.views[k].caption_text {
-            out.push((DxfLayer::Text, Mark::Text(caption.clone())));
+            out.push((DxfLayer::Text, Piece::Mark(Mark::Text(caption.clone()))));
         }
     }
-    let texts = plate
-        .texts
-        .iter()
-        .flat_map(text_block_lines)
-        .map(Mark::Text);
-    out.extend(texts.map(|m| (DxfLayer::Text, m)));
+    let texts = plate.texts.iter().flat_map(text_block_lines);
+    out.extend(texts.map(|t| (DxfLayer::Text, Piece::Mark(Mark::Text(t)))));
     let tables = plate.tables.iter().flat_map(table_marks);
-    out.extend(tables.map(|m| (DxfLayer::Text, m)));
+    out.extend(tables.map(|m| (DxfLayer::Text, Piece::Mark(m))));
     out
 }
 
@@ -164,9 +187,15 @@ fn entities(mark: &Mark, flip: &Flip) -> Vec<EntityType> {
             match paint {
                 Paint::Solid if !drawn.is_empty() => vec![shapes::fill_entity(drawn)],
                 Paint::Solid => Vec::new(),
-                Paint::Stroke(_) | Paint::Opaque(_) => {
-                    drawn.into_iter().map(shapes::stroke_entity).collect()
-                }
+                Paint::Stroke(_) => drawn.into_iter().map(shapes::stroke_entity).collect(),
+                // Each subpath masked white, then stroked.
+                Paint::Opaque(_) => drawn
+                    .into_iter()
+                    .flat_map(|d| {
+                        let mask = shapes::wipeout_entity(&d);
+                        mask.into_iter().chain([shapes::stroke_entity(d)])
+                    })
+                    .collect(),
             }
         }
         Mark::Text(t) => text::entities(t, flip)

@@ -3,12 +3,14 @@
 //! precision) — and a filled path one solid HATCH whose loops are its subpaths.
 
 use super::Flip;
+use crate::construct::Item;
 use crate::geom::DVec2;
 use crate::plate::curve;
+use crate::plate::path::Map;
 use crate::plate::path::{pieces, Seg};
 use acadrust::entities::{
-    Arc, BoundaryEdge, BoundaryPath, Circle, EntityType, Hatch, Line, LwPolyline, LwVertex,
-    PolylineEdge,
+    Arc, BoundaryEdge, BoundaryPath, Circle, EntityType, Hatch, HatchPattern, HatchPatternLine,
+    HatchPatternType, Line, LwPolyline, LwVertex, PolylineEdge, Wipeout,
 };
 use acadrust::types::{Vector2, Vector3};
 use std::f64::consts::{PI, TAU};
@@ -188,6 +190,98 @@ pub(super) fn fill_entity(subpaths: Vec<Drawn>) -> EntityType {
     }
     EntityType::Hatch(Box::new(hatch))
 }
+
+/// A hatched region as the sheet draws it: its outline (sheet mm, y down) and its lines'
+/// spacing (mm) and direction on the sheet.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Hatching {
+    outline: Vec<DVec2>,
+    spacing: f64,
+    along: DVec2,
+}
+
+impl Hatching {
+    /// The region of a hatching step drawn under `map`; `None` for any other item.
+    pub(super) fn of(item: &Item, map: Map) -> Option<Self> {
+        let Item::Hatching {
+            outline,
+            spacing,
+            angle,
+        } = item
+        else {
+            return None;
+        };
+        // The direction the strokes are drawn in (the hatcher's own convention for its
+        // angle), else the angle's.
+        let along = item
+            .hatch_strokes()
+            .first()
+            .and_then(|s| (s.to - s.from).try_normalize())
+            .unwrap_or_else(|| DVec2::from_angle(*angle));
+        Some(Self {
+            outline: outline.iter().map(|p| map.pt(*p)).collect(),
+            spacing: *spacing,
+            along: map.dir(along),
+        })
+    }
+}
+
+/// A hatched region as one HATCH: a user-defined pattern of one family of continuous lines
+/// at the region's angle and spacing (AutoCAD's "User defined", KOMPAS's hatch by angle and
+/// step), on one polyline loop, the outline.
+pub(super) fn hatching_entity(h: &Hatching, flip: &Flip) -> EntityType {
+    let along = DVec2::new(h.along.x, -h.along.y);
+    let angle = along.to_angle().rem_euclid(PI);
+    let across = DVec2::from_angle(angle).perp() * h.spacing;
+    let mut pattern = HatchPattern::new(USER_PATTERN);
+    pattern.add_line(HatchPatternLine {
+        angle,
+        base_point: Vector2::new(0.0, 0.0),
+        offset: Vector2::new(across.x, across.y),
+        dash_lengths: Vec::new(),
+    });
+    let mut hatch = Hatch::with_pattern(pattern);
+    hatch.pattern_type = HatchPatternType::UserDefined;
+    hatch.pattern_angle = angle;
+    // A user-defined pattern's "scale" is its spacing (group code 41).
+    hatch.pattern_scale = h.spacing;
+    let mut edge = PolylineEdge::new(Vec::new(), true);
+    for p in &h.outline {
+        let p = flip.pt(*p);
+        edge.add_vertex(Vector2::new(p.x, p.y), 0.0);
+    }
+    let mut path = BoundaryPath::external();
+    path.add_edge(BoundaryEdge::Polyline(edge));
+    hatch.add_path(path);
+    EntityType::Hatch(Box::new(hatch))
+}
+
+/// Sides of the polygon a pair's circle is masked by, its vertices on the circle: the
+/// chord's sag, r·(1 − cos(π/n)), is 0,013 mm for the 1,5 mm pair.
+const WIPEOUT_SIDES: usize = 24;
+
+/// The white inside of a closed subpath the SVG fills white (a pair's circle, a slider's
+/// block): a polygonal WIPEOUT on it, which covers what lies under it as the SVG's fill
+/// does (a CAD program draws entities in the order they were added, and the pairs are
+/// added after the links). `None` for an open subpath or a curved one that is not a circle.
+pub(super) fn wipeout_entity(d: &Drawn) -> Option<EntityType> {
+    let mut polygon: Vec<DVec2> = match d {
+        Drawn::Circle(c, r) => (0..WIPEOUT_SIDES)
+            .map(|k| *c + DVec2::from_angle(TAU * k as f64 / WIPEOUT_SIDES as f64) * *r)
+            .collect(),
+        Drawn::Poly(verts, true) if verts.iter().all(|(_, bulge)| *bulge == 0.0) => {
+            verts.iter().map(|(p, _)| *p).collect()
+        }
+        _ => return None,
+    };
+    // The boundary closed by its first vertex, as AutoCAD writes a polygonal clip.
+    polygon.push(polygon[0]);
+    let vertices: Vec<Vector2> = polygon.iter().map(|p| Vector2::new(p.x, p.y)).collect();
+    Some(EntityType::Wipeout(Wipeout::polygonal(&vertices, 0.0)))
+}
+
+/// The name AutoCAD gives a user-defined hatch pattern.
+pub const USER_PATTERN: &str = "_USER";
 
 /// A subpath as a loop of vertices with bulges.
 fn loop_vertices(d: Drawn) -> Vec<(DVec2, f64)> {

@@ -230,6 +230,16 @@ fn each_check_fails_on_a_dxf_built_to_break_it() {
             }),
         ),
         (
+            "a pair's white inside 0.05 mm wide",
+            broken(&doc, |e| {
+                let EntityType::Wipeout(w) = e else {
+                    return false;
+                };
+                w.u_vector.x += 0.05;
+                true
+            }),
+        ),
+        (
             "a subscript at the text's full height",
             broken(&doc, |e| match e {
                 EntityType::Text(t) if (t.height - 3.5 * SCRIPT_SCALE).abs() < 1e-9 => {
@@ -253,6 +263,68 @@ fn each_check_fails_on_a_dxf_built_to_break_it() {
     std::fs::write(dir.join("as-written.dxf"), &ok).expect("written");
     ezdxf_accepts(&dir, &["unknown-linetype.dxf"]);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The flywheel's part drawing holds its section as hatched regions: each one patterned HATCH
+/// in the DXF, whose lines are the SVG's strokes; a hatch of another spacing, or one whose
+/// loop leaves strokes out, is caught.
+#[test]
+fn a_section_is_one_patterned_hatch_per_region_and_a_wrong_one_is_caught() {
+    let scene = tmm::load(&root().join("constructions/shaper.toml")).expect("the shaper");
+    let plate = tmm::render::plates(&scene, Lang::Ru, Drafting::EXACT)
+        .expect("plates")
+        .into_iter()
+        .find(|(kind, _)| *kind == tmm::PlateKind::Flywheel)
+        .expect("the flywheel's sheet")
+        .1;
+    let regions = plate
+        .views
+        .iter()
+        .flat_map(|v| &v.figure.steps)
+        .filter(|s| matches!(s.item, tmm::construct::Item::Hatching { .. }))
+        .count();
+    assert!(regions >= 2, "the rim's and the hub's sections: {regions}");
+    let doc = read::read(&to_dxf(&plate).expect("the DXF"));
+    let patterned = doc
+        .entities()
+        .filter(|e| matches!(e, EntityType::Hatch(h) if !h.is_solid))
+        .count();
+    assert_eq!(patterned, regions);
+    let ok = DxfWriter::new(&doc).write_to_vec().expect("written");
+    holds(&plate, &ok).expect("the DXF holds");
+    let hatch = |change: fn(&mut acadrust::entities::Hatch)| {
+        broken(&doc, |e| match e {
+            EntityType::Hatch(h) if !h.is_solid => {
+                change(h);
+                true
+            }
+            _ => false,
+        })
+    };
+    let breaks = [
+        (
+            "a spacing half as large again",
+            hatch(|h| {
+                let o = &mut h.pattern.lines[0].offset;
+                *o = *o * 1.5;
+            }),
+        ),
+        (
+            "a loop 3 mm short",
+            hatch(|h| {
+                if let Some(acadrust::entities::BoundaryEdge::Polyline(p)) =
+                    h.paths[0].edges.first_mut()
+                {
+                    for v in &mut p.vertices {
+                        v.x += 3.0;
+                    }
+                }
+            }),
+        ),
+    ];
+    for (what, bytes) in &breaks {
+        assert!(holds(&plate, bytes).is_err(), "{what}: not caught");
+    }
 }
 
 /// `dxf` with its first entity's line type `GOST_THIN` renamed to one the table lacks.

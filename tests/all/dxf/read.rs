@@ -38,7 +38,9 @@ fn by_layer(doc: &CadDocument) -> BTreeMap<String, Vec<&EntityType>> {
 fn expected_count(d: &Drawn) -> usize {
     match d {
         Drawn::Stroke(subs) => subs.len(),
+        Drawn::White(subs) => subs.len() + subs.iter().filter(|s| masked(s)).count(),
         Drawn::Fill(subs) => usize::from(!subs.is_empty()),
+        Drawn::Hatching(_) => 1,
         Drawn::Text { runs, .. } => runs.len(),
     }
 }
@@ -84,8 +86,22 @@ pub fn compare(
                     stroke(s, e, height).map_err(|m| format!("{name}: {m}"))?;
                 }
             }
+            Drawn::White(subs) => {
+                let mut next = mine.iter();
+                for s in subs {
+                    if masked(s) {
+                        let e = next.next().expect("counted");
+                        wipeout(s, e, height).map_err(|m| format!("{name}: {m}"))?;
+                    }
+                    let e = next.next().expect("counted");
+                    stroke(s, e, height).map_err(|m| format!("{name}: {m}"))?;
+                }
+            }
             Drawn::Fill(subs) if n > 0 => fill(subs, mine[0], height)?,
             Drawn::Fill(_) => {}
+            Drawn::Hatching(strokes) => {
+                hatching(strokes, mine[0], height).map_err(|m| format!("{name}: {m}"))?
+            }
             Drawn::Text { at, rotate, runs } => text(*at, *rotate, runs, mine, height)?,
         }
     }
@@ -152,6 +168,46 @@ fn stroke(s: &Subpath, e: &EntityType, height: f64) -> Result<(), String> {
     }
 }
 
+/// Whether the DXF masks a subpath the SVG fills white: a full circle, or closed of straight
+/// pieces.
+fn masked(s: &Subpath) -> bool {
+    s.arcs_only || (s.closed && s.straight)
+}
+
+/// A white subpath against its WIPEOUT: a circle's every boundary vertex on the circle, a
+/// polygon's boundary its vertices.
+fn wipeout(s: &Subpath, e: &EntityType, height: f64) -> Result<(), String> {
+    let EntityType::Wipeout(w) = e else {
+        return Err(format!("{e:?} for the white inside of {s:?}"));
+    };
+    let mut boundary: Vec<DVec2> = w
+        .world_boundary_vertices()
+        .iter()
+        .map(|v| sheet(DVec2::new(v.x, v.y), height))
+        .collect();
+    if boundary.len() > 1 && near(boundary[0], boundary[boundary.len() - 1]) {
+        boundary.pop();
+    }
+    let ok = if s.arcs_only {
+        let ends = &s.points[1..];
+        let centre = ends.iter().copied().sum::<DVec2>() / ends.len() as f64;
+        boundary.len() >= 3
+            && boundary
+                .iter()
+                .all(|p| (p.distance(centre) - s.radius).abs() <= COORD_MM)
+    } else {
+        let mut points = s.points.clone();
+        if points.len() > 1 && near(points[0], points[points.len() - 1]) {
+            points.pop();
+        }
+        points.len() == boundary.len() && points.iter().zip(&boundary).all(|(a, b)| near(*a, *b))
+    };
+    match ok {
+        true => Ok(()),
+        false => Err(format!("WIPEOUT {boundary:?} is not the inside of {s:?}")),
+    }
+}
+
 /// A filled path against its HATCH: a loop per subpath, each from the subpath's start.
 fn fill(subs: &[Subpath], e: &EntityType, height: f64) -> Result<(), String> {
     let EntityType::Hatch(h) = e else {
@@ -176,6 +232,99 @@ fn fill(subs: &[Subpath], e: &EntityType, height: f64) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// The strokes the SVG draws for a hatched region against its HATCH: a pattern of one family
+/// of continuous lines on one loop; every stroke along the pattern's lines, both its ends in
+/// the loop (or on it), and the strokes one pattern spacing apart (or a whole number of
+/// spacings, where the region narrows between them).
+fn hatching(strokes: &[Subpath], e: &EntityType, height: f64) -> Result<(), String> {
+    let EntityType::Hatch(h) = e else {
+        return Err(format!("{e:?} for a hatching"));
+    };
+    let [line] = &h.pattern.lines[..] else {
+        return Err(format!("{h:?} is not one family of lines"));
+    };
+    if h.is_solid || !line.dash_lengths.is_empty() || h.paths.len() != 1 {
+        return Err(format!("{h:?} is not a hatching of one loop"));
+    }
+    let outline: Vec<DVec2> = h.paths[0]
+        .edges
+        .iter()
+        .flat_map(|edge| match edge {
+            acadrust::entities::BoundaryEdge::Polyline(p) => p.vertices.clone(),
+            _ => Vec::new(),
+        })
+        .map(|v| sheet(DVec2::new(v.x, v.y), height))
+        .collect();
+    // On the sheet (y down) the pattern's direction and its normal.
+    let u = DVec2::new(line.angle.cos(), -line.angle.sin());
+    let spacing = DVec2::new(line.offset.x, line.offset.y).length();
+    let mut across: Vec<f64> = Vec::new();
+    for s in strokes {
+        let [a, b] = s.points[..] else {
+            return Err(format!("a hatch stroke {s:?} is not one straight piece"));
+        };
+        // How far b lies off the pattern's line through a, mm: the SVG's rounding of both
+        // ends at most.
+        let off_line = (b - a).perp_dot(u).abs();
+        let within = |p: DVec2| inside(&outline, p) || on_outline(&outline, p);
+        if off_line > 2.0 * COORD_MM || !within(a) || !within(b) {
+            return Err(format!(
+                "stroke {a}–{b} is not a line of {h:?} inside its loop"
+            ));
+        }
+        across.push(a.dot(u.perp()));
+    }
+    // Two pieces of one line (an outline that is not convex cuts it) lie 0 spacings apart;
+    // neighbouring lines one, or a whole number where the region narrows between them — and
+    // somewhere exactly one, when there are two lines or more.
+    across.sort_by(f64::total_cmp);
+    let mut neighbours = false;
+    for w in across.windows(2) {
+        let k = (w[1] - w[0]) / spacing;
+        if (k - k.round()).abs() * spacing > 2.0 * COORD_MM {
+            return Err(format!(
+                "strokes {:.3} mm apart, the pattern's spacing {spacing:.3} mm",
+                w[1] - w[0]
+            ));
+        }
+        neighbours |= k.round() == 1.0;
+    }
+    let lines = across
+        .windows(2)
+        .filter(|w| w[1] - w[0] > 2.0 * COORD_MM)
+        .count()
+        + 1;
+    match neighbours || lines < 2 {
+        true => Ok(()),
+        false => Err(format!(
+            "no two strokes one spacing ({spacing:.3} mm) apart"
+        )),
+    }
+}
+
+/// Whether `p` lies inside the polygon `outline` (even-odd).
+fn inside(outline: &[DVec2], p: DVec2) -> bool {
+    let n = outline.len();
+    (0..n)
+        .filter(|&i| {
+            let (a, b) = (outline[i], outline[(i + 1) % n]);
+            (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x)
+        })
+        .count()
+        % 2
+        == 1
+}
+
+/// Whether `p` lies on an edge of the polygon `outline`, to [`COORD_MM`].
+fn on_outline(outline: &[DVec2], p: DVec2) -> bool {
+    let n = outline.len();
+    (0..n).any(|i| {
+        let (a, b) = (outline[i], outline[(i + 1) % n]);
+        let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-12)).clamp(0.0, 1.0);
+        p.distance(a + (b - a) * t) <= COORD_MM
+    })
 }
 
 /// A text against its TEXTs: one per run, each run's characters and height, the first at the

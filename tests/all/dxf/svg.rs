@@ -4,7 +4,7 @@
 //! steps), not by the DXF writer.
 
 use glam::DVec2;
-use tmm::construct::Role;
+use tmm::construct::{Item, Role};
 use tmm::plate::{layout, DxfLayer, Plate};
 
 /// A subpath of an SVG path: its points (the move, then each piece's end) and whether it is
@@ -26,10 +26,16 @@ pub struct Subpath {
 /// What the SVG draws, in order.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Drawn {
-    /// A stroked path (filled white or not): one DXF entity per subpath.
+    /// A stroked path: one DXF entity per subpath.
     Stroke(Vec<Subpath>),
+    /// A stroked path filled white (a pair, a slider's block): per subpath one entity, and
+    /// before it a WIPEOUT when it is closed and a full circle or of straight pieces.
+    White(Vec<Subpath>),
     /// A path filled black: one solid HATCH, a loop per subpath.
     Fill(Vec<Subpath>),
+    /// The strokes of a hatched region (a step the plate model holds as a hatching): one
+    /// patterned HATCH.
+    Hatching(Vec<Subpath>),
     /// A text: its point before rotation, its rotation (degrees, about the point), its runs
     /// (the characters, the font size).
     Text {
@@ -68,6 +74,10 @@ pub fn items(plate: &Plate, svg: &str) -> Vec<(DxfLayer, Drawn)> {
             continue;
         };
         let layer = layer_of(plate, &laid, group, &drawn, &mut label_texts);
+        let drawn = match drawn {
+            Drawn::Stroke(subs) if is_hatching(plate, group) => Drawn::Hatching(subs),
+            d => d,
+        };
         out.push((layer, drawn));
     }
     out
@@ -134,6 +144,24 @@ fn layer_of(
     }
 }
 
+/// Whether `group` is a step's whose item the plate model holds as a hatching.
+fn is_hatching(plate: &Plate, group: &str) -> bool {
+    let Some((k, id)) = group
+        .strip_prefix("view-")
+        .and_then(|r| r.split_once("-step-"))
+    else {
+        return false;
+    };
+    let (Ok(k), Ok(id)) = (k.parse::<usize>(), id.parse::<u32>()) else {
+        return false;
+    };
+    plate.views[k]
+        .figure
+        .steps
+        .iter()
+        .any(|s| s.id.0 == id && matches!(s.item, Item::Hatching { .. }))
+}
+
 /// The value of attribute `name` on the element's line.
 fn attr<'a>(line: &'a str, name: &str) -> Option<&'a str> {
     let key = format!(" {name}=\"");
@@ -193,6 +221,7 @@ fn path(line: &str) -> Drawn {
     }
     match attr(line, "fill") {
         Some("#000") => Drawn::Fill(subpaths),
+        Some("#fff") => Drawn::White(subpaths),
         _ => Drawn::Stroke(subpaths),
     }
 }
