@@ -12,6 +12,7 @@
 use super::construction::Built;
 use super::positions_draw::fixed_pivots;
 use super::program::Program;
+use super::rigid::AT_MM;
 use crate::geom::DVec2;
 use std::f64::consts::TAU;
 
@@ -24,9 +25,6 @@ const LINES_PER_SPOT: usize = 5;
 const STEP_MM: f64 = 0.5;
 /// The farthest a fan begins from its pivot, mm (as the cam rocker's fan).
 const MAX_CLEAR_MM: f64 = 8.0;
-/// Points closer than this are one point, mm (a line is drawn from the pivot's own numbers:
-/// only rounding parts them).
-const AT_MM: f64 = 1e-6;
 
 /// Per fixed pivot whose fan is crowded, its point and the radius its thin lines begin at,
 /// mm ([`clear_radius`] of the lines the positions `thin` draw from it). Pivots whose lines

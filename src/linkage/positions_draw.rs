@@ -115,10 +115,8 @@ fn draw_links_from(
     };
     if matches!(part, Part::All | Part::Driver) {
         let (centre, pin) = (b.p[prog.centre], b.p[prog.pin]);
-        let bar = trim(clear, centre, pin);
-        if let Some((from, to)) =
-            bar.filter(|_| !covers(&pen.rigid, prog.crank_link, (centre, pin)))
-        {
+        let covered = covers(&pen.rigid, prog.crank_link, (centre, pin));
+        if let Some((from, to)) = trim(clear, centre, pin).filter(|_| !covered) {
             pen.rec.draw(
                 format!("{note}: crank"),
                 Item::Segment(Segment::new(from, to)),

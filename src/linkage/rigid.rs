@@ -21,8 +21,8 @@ const CORNER_SHARE: f64 = 0.3;
 /// clear of the hinge's circle.
 const STROKES: [f64; 3] = [0.55, 0.775, 1.0];
 /// Hinges closer than this to a bar's end are its end, mm (the bar is drawn from the same
-/// numbers: only rounding parts them).
-const AT_MM: f64 = 1e-6;
+/// numbers: only rounding parts them); a pivot of the plan's fans likewise ([`super::fan`]).
+pub(super) const AT_MM: f64 = 1e-6;
 
 /// A link with three or more hinges.
 #[derive(Debug, Clone, PartialEq, Eq)]

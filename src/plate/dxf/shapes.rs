@@ -180,15 +180,21 @@ pub(super) fn stroke_entity(d: Drawn) -> EntityType {
 pub(super) fn fill_entity(subpaths: Vec<Drawn>) -> EntityType {
     let mut hatch = Hatch::solid();
     for d in subpaths {
-        let mut edge = PolylineEdge::new(Vec::new(), true);
-        for (p, bulge) in loop_vertices(d) {
-            edge.add_vertex(Vector2::new(p.x, p.y), bulge);
-        }
-        let mut path = BoundaryPath::external();
-        path.add_edge(BoundaryEdge::Polyline(edge));
-        hatch.add_path(path);
+        hatch.add_path(loop_path(loop_vertices(d)));
     }
     EntityType::Hatch(Box::new(hatch))
+}
+
+/// A HATCH's boundary: one closed polyline loop through `vertices` (DXF mm, each with the
+/// bulge of the piece it starts).
+fn loop_path(vertices: impl IntoIterator<Item = (DVec2, f64)>) -> BoundaryPath {
+    let mut edge = PolylineEdge::new(Vec::new(), true);
+    for (p, bulge) in vertices {
+        edge.add_vertex(Vector2::new(p.x, p.y), bulge);
+    }
+    let mut path = BoundaryPath::external();
+    path.add_edge(BoundaryEdge::Polyline(edge));
+    path
 }
 
 /// A hatched region as the sheet draws it: its outline (sheet mm, y down) and its lines'
@@ -245,14 +251,7 @@ pub(super) fn hatching_entity(h: &Hatching, flip: &Flip) -> EntityType {
     hatch.pattern_angle = angle;
     // A user-defined pattern's "scale" is its spacing (group code 41).
     hatch.pattern_scale = h.spacing;
-    let mut edge = PolylineEdge::new(Vec::new(), true);
-    for p in &h.outline {
-        let p = flip.pt(*p);
-        edge.add_vertex(Vector2::new(p.x, p.y), 0.0);
-    }
-    let mut path = BoundaryPath::external();
-    path.add_edge(BoundaryEdge::Polyline(edge));
-    hatch.add_path(path);
+    hatch.add_path(loop_path(h.outline.iter().map(|p| (flip.pt(*p), 0.0))));
     EntityType::Hatch(Box::new(hatch))
 }
 

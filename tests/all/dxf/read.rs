@@ -7,6 +7,7 @@ use acadrust::entities::{EntityType, TextHorizontalAlignment};
 use acadrust::{CadDocument, DxfReader};
 use glam::DVec2;
 use std::collections::BTreeMap;
+use tmm::geom::{polygon_contains, Segment};
 use tmm::plate::text::CAP_HEIGHT_EM;
 use tmm::plate::DxfLayer;
 use tmm::scale::Lang;
@@ -268,7 +269,7 @@ fn hatching(strokes: &[Subpath], e: &EntityType, height: f64) -> Result<(), Stri
         // How far b lies off the pattern's line through a, mm: the SVG's rounding of both
         // ends at most.
         let off_line = (b - a).perp_dot(u).abs();
-        let within = |p: DVec2| inside(&outline, p) || on_outline(&outline, p);
+        let within = |p: DVec2| polygon_contains(&outline, p) || on_outline(&outline, p);
         if off_line > 2.0 * COORD_MM || !within(a) || !within(b) {
             return Err(format!(
                 "stroke {a}–{b} is not a line of {h:?} inside its loop"
@@ -304,27 +305,10 @@ fn hatching(strokes: &[Subpath], e: &EntityType, height: f64) -> Result<(), Stri
     }
 }
 
-/// Whether `p` lies inside the polygon `outline` (even-odd).
-fn inside(outline: &[DVec2], p: DVec2) -> bool {
-    let n = outline.len();
-    (0..n)
-        .filter(|&i| {
-            let (a, b) = (outline[i], outline[(i + 1) % n]);
-            (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x)
-        })
-        .count()
-        % 2
-        == 1
-}
-
 /// Whether `p` lies on an edge of the polygon `outline`, to [`COORD_MM`].
 fn on_outline(outline: &[DVec2], p: DVec2) -> bool {
     let n = outline.len();
-    (0..n).any(|i| {
-        let (a, b) = (outline[i], outline[(i + 1) % n]);
-        let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-12)).clamp(0.0, 1.0);
-        p.distance(a + (b - a) * t) <= COORD_MM
-    })
+    (0..n).any(|i| Segment::new(outline[i], outline[(i + 1) % n]).distance_to(p) <= COORD_MM)
 }
 
 /// A text against its TEXTs: one per run, each run's characters and height, the first at the
