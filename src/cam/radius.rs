@@ -12,7 +12,7 @@ use super::motion::{on_break, Motion, Point};
 use super::zone;
 use super::{CamError, CamSpec, Closure, Follower};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
-use crate::geom::{Arc, DVec2, Segment};
+use crate::geom::{fan_start, Arc, DVec2, Segment};
 use crate::scale::Scale;
 use std::f64::consts::FRAC_PI_2;
 
@@ -115,7 +115,7 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     } else {
         DVec2::new(1.0, 0.0)
     };
-    zone::centre_and_r_min(rec, o, DVec2::ZERO, toward, r_min_offset(o.x));
+    zone::centre_and_r_min(rec, o, DVec2::ZERO, toward, r_min_offset(o, apex));
     let r = rec.measure(o, DVec2::ZERO);
     let base = base_radius(rec, spec, r.value);
     if base <= offset.abs() {
@@ -133,8 +133,9 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     })
 }
 
-/// How far from the pivot O₂ the rocker's later positions begin, mm: beyond the hinge and the
-/// few millimetres where the fan's rays would run together.
+/// The least distance from the pivot O₂ at which the rocker's later positions begin, mm:
+/// beyond the hinge; further out where their rays still run together ([`fan_start`], up to a
+/// third of the rocker).
 const FAN_CLEAR_MM: f64 = 8.0;
 
 /// The rocker: dS/dφ laid along the rocker at every point, the γ_min lines through the
@@ -169,11 +170,14 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
         Role::Construction,
         &[pid],
     );
+    let psi_at = |i: usize| FRAC_PI_2 + sigma * read_motion(d, i).s / arm;
+    let later: Vec<f64> = (1..points.len()).map(psi_at).collect();
+    let begin = fan_start(later, (FAN_CLEAR_MM, l / 3.0)).max(FAN_CLEAR_MM);
     let mut cons = Vec::new();
     let mut ks = Vec::new();
     for (i, p) in points.iter().enumerate() {
         let m = read_motion(d, i);
-        let psi = FRAC_PI_2 + sigma * m.s / arm;
+        let psi = psi_at(i);
         let e = DVec2::from_angle(psi);
         let a = pivot + e * l;
         let k = a - e * (sigma * mu.to_mm(m.ds));
@@ -182,7 +186,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
         let from = if i == 0 {
             pivot
         } else {
-            pivot + e * FAN_CLEAR_MM
+            pivot + e * begin.min(l)
         };
         rec.draw(
             format!("rocker O_2A_{i}"),
@@ -246,7 +250,14 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
         .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
     let oi = DVec2::new(0.0, c.min(0.0));
     let rho = mu.to_mm(spec.rho_min);
-    let ax = s_axis(rec, spec, mu, rho - oi.y);
+    // The S axis runs on below O₁ for ρ_min's text past its arrow where the text has room
+    // neither between the arrows nor above them, under the d²S/dφ² axis.
+    let room = if rho < RHO_TEXT_MM && -oi.y < RHO_TEXT_MM {
+        RHO_TEXT_MM
+    } else {
+        0.0
+    };
+    let ax = s_axis(rec, spec, mu, rho - oi.y + room);
     let xs = pts.iter().fold(0.0f64, |a, p| a.max(p.x.abs()));
     let hx = rec.draw(
         "d²S/dφ² axis",
@@ -291,10 +302,12 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     );
     // The centre ρ_min below where the tangent meets the axis (at O when it meets it above).
     let o = DVec2::new(0.0, oi.y - rho);
+    // ρ_min and r_min right of the S axis (the tangent comes from the left), one beside
+    // the other, each with the room for its text left of its line.
     if oi.y < 0.0 {
-        rec.dimension("dimension ρ_min", (oi, o, 6.0), "ρ_{min}");
+        rec.dimension(RHO_MIN_NOTE, (oi, o, RHO_MIN_MM), "ρ_{min}");
     }
-    zone::centre_and_r_min(rec, o, DVec2::ZERO, DVec2::new(-1.0, -0.5), -12.0);
+    zone::centre_and_r_min(rec, o, DVec2::ZERO, DVec2::new(-1.0, -0.5), -FLAT_R_MIN_MM);
     let read_c = rec.measure(oi, DVec2::ZERO).value.copysign(-c);
     let graphical = rec.measure(o, DVec2::ZERO).value;
     let base = base_radius(rec, spec, graphical);
@@ -309,18 +322,24 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     })
 }
 
-/// The translating follower's r_min dimension stands clear of the S axis, mm.
+/// The translating follower's r_min dimension, drawn beside O₁B₀, stands clear of the S axis,
+/// mm.
 const R_MIN_CLEAR_MM: f64 = 4.0;
 
-/// Where a translating follower's r_min dimension O₁B₀ is drawn (left of O₁ → B₀, mm): on the
-/// piece itself for a central follower (O₁ on the S axis, the text beside the axis); for an
-/// offset one past the S axis on the side away from O₁, clear of it — its text (with the
-/// value) is too long for the narrow wedge of the zone's lines between O₁ and the axis.
-fn r_min_offset(ox: f64) -> f64 {
-    if ox.abs() < 1e-9 {
+/// Where a translating follower's r_min dimension O₁B₀ is drawn (left of O₁ → B₀, mm), so that
+/// it crosses no line of the diagram but the S axis it ends on: on the piece itself, its text
+/// beside it (the textbook's way), for a central follower (the piece on the S axis) and where
+/// the zone lies between O₁ and the S axis (its apex at `apex`: then the γ_min line O₁ lies
+/// below separates O₁ from B₀, and any line beside the piece would cross the zone, its
+/// other ray and the axis besides); else, the zone lying beyond O₁, past the S axis on the
+/// side away from O₁ — the wedge between the piece and the zone's ray from B₀ is too narrow
+/// for its text (with the value).
+fn r_min_offset(o: DVec2, apex: Option<DVec2>) -> f64 {
+    let beyond = apex.is_some_and(|a| (a.x - o.x) * o.x > 0.0);
+    if o.x.abs() < 1e-9 || !beyond {
         0.0
     } else {
-        ox.signum() * (ox.abs() + R_MIN_CLEAR_MM)
+        o.x.signum() * (o.x.abs() + R_MIN_CLEAR_MM)
     }
 }
 
@@ -330,6 +349,18 @@ fn base_radius(rec: &Recorder, spec: &CamSpec, read: f64) -> f64 {
     spec.base_radius
         .unwrap_or_else(|| accepted(read, rec.scale(), rec.drafting()))
 }
+
+/// The flat face's ρ_min dimension stands this far right of the S axis, mm: its text (with
+/// the value) fits between the axis and its line.
+const RHO_MIN_MM: f64 = 9.0;
+/// The length ρ_min's text (with its value) takes beside the S axis, its gaps included, mm.
+const RHO_TEXT_MM: f64 = 40.0;
+/// The flat face's r_min dimension stands this far right of the S axis, mm: its text fits
+/// between the ρ_min dimension (its line, its extension lines) and its own line.
+const FLAT_R_MIN_MM: f64 = 20.0;
+
+/// The note of the flat face's ρ_min dimension's step (the sheet writes its value).
+pub const RHO_MIN_NOTE: &str = "dimension ρ_min";
 
 /// The note of the flat face's 45° tangent's step (the tests find it by it).
 pub const TANGENT_NOTE: &str = "tangent at 45° from the diagram to the S axis";

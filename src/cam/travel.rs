@@ -25,8 +25,6 @@ pub const TRAVEL_NOTE: &str = "dimension X_min/2π";
 /// The note of the γ_min line from the steepest point to the S axis.
 pub const TRAVEL_RAY_NOTE: &str = "γ_min line from the point of the largest dS/dφ";
 
-/// The dimension line stands this far beside the S axis, mm, on the side away from K.
-const DIMENSION_MM: f64 = 10.0;
 /// The radius of the γ_min angle's arc at K, mm.
 const ARC_MM: f64 = 12.0;
 
@@ -99,12 +97,12 @@ pub(super) fn travel_min(
     let aid = rec.draw("γ_min at K", Item::Angle(arc), Role::Dimension, &[ray]);
     let mid = (along + to_c).normalize_or_zero();
     rec.label(aid, "γ_{min}", steep + mid * (arc.radius + 1.0), mid);
-    // C's name below it on K's side, clear of the dimension's extension line.
+    // C's name below it on K's side, clear of the dimension's text.
     let toward = DVec2::new(0.6 * steep.x.signum(), -1.0);
     rec.point("C", c, Role::Result, "C", toward, &[ray]);
-    // B → C runs down the S axis: its left is +x; the dimension away from K.
-    let side = if steep.x > 0.0 { -1.0 } else { 1.0 };
-    rec.dimension(TRAVEL_NOTE, (b, c, side * DIMENSION_MM), "X_{min}/2π");
+    // B → C on the S axis itself, its text beside it: a line beside the axis would cross
+    // the diagram and the dS/dφ segments away from K, or the γ_min line on K's side.
+    rec.dimension(TRAVEL_NOTE, (b, c, 0.0), "X_{min}/2π");
     let read = rec.measure(b, c).value;
     TravelConstruction {
         figure: rec.finish(),

@@ -1,8 +1,9 @@
 //! The final elements of a minimum-radius construction, drawn as the textbook finishes it:
 //! the two γ_min rays that bound the zone of the cam's centre, each from its point to their
-//! crossing (and a little past it), the zone hatched along them inside (ГОСТ 2.306), the
-//! centre chosen marked and r_min dimensioned from it. The rays, the zone and the centre are
-//! the construction's own (its points and its decision); this file only draws them.
+//! crossing (and a little past it), the zone hatched along them inside (ГОСТ 2.306) up to
+//! the chord between their ends, the centre chosen marked and r_min dimensioned from it.
+//! The rays, the zone and the centre are the construction's own (its points and its
+//! decision); this file only draws them.
 
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::{line_line, DVec2, Line, LineLine, Segment};
@@ -82,7 +83,8 @@ pub(super) fn draw_zone(
 }
 
 /// Hatch the band along the two sides `p`, `q` (unit, from the apex `c`) of an angle, inside
-/// it, `reach` mm long.
+/// it, `reach` mm long: [`BAND_MM`] wide along each side, its two ends cut along the chord
+/// between the rays' drawn ends — no stroke stands past the rays that bound it.
 fn hatch_angle_between(
     rec: &mut Recorder,
     c: DVec2,
@@ -94,31 +96,24 @@ fn hatch_angle_between(
     if half <= 1e-3 || half >= 0.5 * PI - 1e-3 {
         return;
     }
-    let Some(bis) = (p + q).try_normalize() else {
-        return;
-    };
-    // The inner corner of the band and how far along a side it lies from the apex.
-    let inner = c + bis * (BAND_MM / half.sin());
     let len = band_length(reach);
-    if BAND_MM / half.tan() >= len {
-        return;
-    }
-    let inward = |side: DVec2, other: DVec2| {
-        let n = side.perp();
-        if n.dot(other) >= 0.0 {
-            n
-        } else {
-            -n
-        }
+    let (a, b) = (c + p * len, c + q * len);
+    // A point c + s·p + t·q lies in the band's inner edge parallel to q at s = w, to p at
+    // t = w, on the chord a–b at s + t = len.
+    let w = BAND_MM / (2.0 * half).sin();
+    let outline = if 2.0 * w >= len {
+        // The band fills the triangle the rays' ends close.
+        vec![a, c, b]
+    } else {
+        vec![
+            a,
+            c,
+            b,
+            c + p * w + q * (len - w),
+            c + (p + q) * w,
+            c + p * (len - w) + q * w,
+        ]
     };
-    let outline = [
-        c + p * len,
-        c,
-        c + q * len,
-        c + q * len + inward(q, p) * BAND_MM,
-        inner,
-        c + p * len + inward(p, q) * BAND_MM,
-    ];
     let angle = hatch_angle(&[p, q]);
     // The outline is finite (its points are the drawing's) and a band a few spacings wide:
     // the hatcher refuses neither.

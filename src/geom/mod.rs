@@ -2,6 +2,7 @@
 //! explicit tolerances. Knows nothing of plates, scenes or mechanisms.
 
 mod clip;
+mod fan;
 mod golden;
 mod hatch;
 mod intersect;
@@ -12,6 +13,7 @@ mod root;
 mod tolerance;
 
 pub use clip::{arc_in_circle, polyline_in_circle};
+pub use fan::{fan_start, SPOT_MM};
 pub use glam::DVec2;
 pub use golden::{golden_max, golden_section, Golden, GoldenRule, Tie};
 pub use hatch::{hatch, HatchError, MAX_HATCH_LINES};

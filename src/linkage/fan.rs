@@ -13,16 +13,8 @@ use super::construction::Built;
 use super::positions_draw::fixed_pivots;
 use super::program::Program;
 use super::rigid::AT_MM;
-use crate::geom::DVec2;
-use std::f64::consts::TAU;
+use crate::geom::{fan_start, DVec2, SPOT_MM};
 
-/// Side of the square the eye reads as one spot (the legibility measure's cell), mm.
-const SPOT_MM: f64 = 5.0;
-/// Thin lines a spot holds apart: a thin line prints about 0,5 mm wide (the 0,25 mm pen and
-/// its anti-aliased edges), so five of them ink half of a spot.
-const LINES_PER_SPOT: usize = 5;
-/// The step of the radius tried, mm.
-const STEP_MM: f64 = 0.5;
 /// The farthest a fan begins from its pivot, mm (as the cam rocker's fan).
 const MAX_CLEAR_MM: f64 = 8.0;
 
@@ -42,7 +34,7 @@ pub(super) fn clearances(prog: &Program, thin: &[&Built]) -> Vec<(DVec2, f64)> {
                     partners(prog, k)
                         .into_iter()
                         .filter_map(move |j| (b.p[j] - b.p[k]).try_normalize())
-                        .map(|u| u.to_angle().rem_euclid(TAU))
+                        .map(|u| u.to_angle())
                 })
                 .collect();
             let r = clear_radius(angles);
@@ -65,35 +57,10 @@ fn partners(prog: &Program, k: usize) -> Vec<usize> {
         .collect()
 }
 
-/// Where the lines at `angles` (radians in [0, 2π)) begin, mm. A fan is crowded when one
-/// spot at a spot's distance from the pivot (an arc of [`SPOT_MM`] at radius [`SPOT_MM`])
-/// holds more than [`LINES_PER_SPOT`] of its lines; it then begins at the least radius past
-/// that (a multiple of [`STEP_MM`], at most [`MAX_CLEAR_MM`]) at which no spot's arc holds
-/// more. An uncrowded fan begins at its pivot (0).
-fn clear_radius(mut angles: Vec<f64>) -> f64 {
-    angles.sort_by(f64::total_cmp);
-    let crowded = |r: f64| most_within(&angles, SPOT_MM / r) > LINES_PER_SPOT;
-    if !crowded(SPOT_MM) {
-        return 0.0;
-    }
-    let mut r = SPOT_MM;
-    while r < MAX_CLEAR_MM && crowded(r) {
-        r += STEP_MM;
-    }
-    r.min(MAX_CLEAR_MM)
-}
-
-/// The most of the sorted `angles` within one window `width` radians wide, round the circle.
-fn most_within(angles: &[f64], width: f64) -> usize {
-    let n = angles.len();
-    (0..n)
-        .map(|i| {
-            (0..n)
-                .filter(|&j| (angles[j] - angles[i]).rem_euclid(TAU) <= width)
-                .count()
-        })
-        .max()
-        .unwrap_or(0)
+/// Where the lines at `angles` begin, mm: [`fan_start`] searched from a spot's distance from
+/// the pivot up to [`MAX_CLEAR_MM`].
+fn clear_radius(angles: Vec<f64>) -> f64 {
+    fan_start(angles, (SPOT_MM, MAX_CLEAR_MM))
 }
 
 /// The line `from`–`to` begun at its pivot's clearance (`clear`, [`clearances`]) at either
@@ -132,25 +99,6 @@ fn radius_at(clear: &[(DVec2, f64)], at: DVec2) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_crank_fan_stands_apart_and_a_narrow_fan_begins_out() {
-        // Twelve crank positions 30° apart and the extreme 5° past one of them stand apart.
-        let mut crank: Vec<f64> = (0..12).map(|i| i as f64 * TAU / 12.0).collect();
-        crank.push(5f64.to_radians());
-        assert_eq!(clear_radius(crank), 0.0);
-        // 26 lines within 97°: five to a spot only at 5 mm / (97° · 5/26) ≈ 15 mm, capped.
-        let narrow: Vec<f64> = (0..26)
-            .map(|i| (180.0 + i as f64 * 97.0 / 25.0).to_radians())
-            .collect();
-        assert_eq!(clear_radius(narrow), MAX_CLEAR_MM);
-        // Four lines 10° apart stand apart; six are crowded at 5 mm (all within 57°) and five
-        // to a spot once its arc is under 50°: 5 mm / 6 mm = 47,7°.
-        let four: Vec<f64> = (0..4).map(|i| (i as f64 * 10.0).to_radians()).collect();
-        assert_eq!(clear_radius(four), 0.0);
-        let six: Vec<f64> = (0..6).map(|i| (i as f64 * 10.0).to_radians()).collect();
-        assert_eq!(clear_radius(six), 6.0);
-    }
 
     #[test]
     fn lines_and_contours_begin_at_the_clearance() {

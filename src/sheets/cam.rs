@@ -7,7 +7,9 @@ use super::cam_marks;
 use super::captions::{unit_in, CamText, Text};
 use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
-use crate::cam::{Analogue, Cam, CamSpec, Diagrams, Follower, Law, Layout, Rotation, R_MIN_NOTE};
+use crate::cam::{
+    Analogue, Cam, CamSpec, Diagrams, Follower, Law, Layout, Rotation, RHO_MIN_NOTE, R_MIN_NOTE,
+};
 use crate::check::{Cusp, Finding, Row};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock, CAPTION_BAND_MM};
@@ -47,8 +49,10 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }
     .get(lang);
     let r_min = cam_marks::valued("r_{min}", cam.radius.graphical, lang);
+    let rho_min = cam_marks::valued("ρ_{min}", cam.spec.rho_min, lang);
+    let radius = cam_marks::relabelled(&cam.radius.figure, R_MIN_NOTE, &r_min);
     blocks.push(Block::view(
-        cam_marks::relabelled(&cam.radius.figure, R_MIN_NOTE, &r_min),
+        cam_marks::relabelled(&radius, RHO_MIN_NOTE, &rho_min),
         format!("{combined}, {}", mu("S", d.s_scale, lang)),
         keyed(Key::CamScaleS, d.s_scale),
     ));

@@ -1,9 +1,10 @@
 //! What the cam's figures and data write in the sheet's language (issue 45): a construction's
-//! dimension with the value it read (r_min = 69 мм, X_min/2π = 49,5 мм), the phases under
-//! the displacement diagram's φ axis with their symbols and angles (φ_у = 113,6°), and the
-//! line that accepts the base radius from the r_min read (Принимаем r₀ = 70 мм ≥ r_min =
-//! 69 мм). The constructions record these steps with the Russian textbooks' symbols; here
-//! they get the sheet's words and numbers, one place for the cam sheet and the note.
+//! dimension with the value it read or laid off (r_min = 69 мм, X_min/2π = 49,5 мм, ρ_min =
+//! 10 мм), the phases under the displacement diagram's φ axis with their symbols and angles
+//! (φ_у = 113,6°), and the line that accepts the base radius from the r_min read (Принимаем
+//! r₀ = 70 мм ≥ r_min = 69 мм). The constructions record these steps with the Russian
+//! textbooks' symbols; here they get the sheet's words and numbers, one place for the cam
+//! sheet and the note.
 
 use super::captions::CamText;
 use super::digits;

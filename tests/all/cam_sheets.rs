@@ -117,28 +117,64 @@ fn rays_reach_their_crossing(f: &Figure) -> Result<(DVec2, [DVec2; 2]), String> 
     Ok((c, [u, v]))
 }
 
-/// The zone hatched in one angle of the two rays at their crossing, the one holding O₁.
+/// The zone hatched in one angle of the two rays at their crossing, the one holding O₁, and
+/// only up to the rays' drawn ends: every stroke within the triangle the crossing and the
+/// two ends on the zone's side close (a stroke past a ray's end reads as stray).
 fn zone_hatched(f: &Figure) -> Result<(), String> {
     let (c, [u, v]) = rays_reach_their_crossing(f)?;
-    let strokes: Vec<DVec2> = f
+    let strokes: Vec<(DVec2, DVec2)> = f
         .steps
         .iter()
         .filter(|s| s.role == Role::Hatch)
         .flat_map(|s| s.item.hatch_strokes())
-        .map(|g| (g.from + g.to) * 0.5)
+        .map(|g| (g.from, g.to))
         .collect();
     if strokes.len() < 3 {
         return Err(format!("the zone has {} hatch strokes", strokes.len()));
     }
     // The angle the strokes fill: their centroid's; every stroke in it (to 1 µm: a stroke
     // at the apex may touch a ray).
-    let mid = strokes.iter().fold(DVec2::ZERO, |a, p| a + *p) / strokes.len() as f64;
+    let mid =
+        strokes.iter().fold(DVec2::ZERO, |a, (p, q)| a + *p + *q) / (2 * strokes.len()) as f64;
     let first = (u.perp_dot(mid - c).signum(), v.perp_dot(mid - c).signum());
     let within =
         |p: DVec2| u.perp_dot(p - c) * first.0 >= -1e-3 && v.perp_dot(p - c) * first.1 >= -1e-3;
-    if let Some(p) = strokes.iter().find(|p| !within(**p)) {
+    if let Some(p) = strokes
+        .iter()
+        .map(|(p, q)| (*p + *q) * 0.5)
+        .find(|p| !within(*p))
+    {
         return Err(format!(
             "a hatch stroke at {p:?} lies outside the zone's angle"
+        ));
+    }
+    // Each ray's drawn end on the zone's side: the end on the side of the other ray the
+    // zone is on.
+    let rays = segments(f, RAY_NOTE);
+    let end = |k: usize, other: DVec2, sign: f64| {
+        let (_, a, b) = rays[k];
+        if other.perp_dot(a - c) * sign > other.perp_dot(b - c) * sign {
+            a
+        } else {
+            b
+        }
+    };
+    let (ea, eb) = (end(0, v, first.1), end(1, u, first.0));
+    let inside = |p: DVec2| {
+        let side = |a: DVec2, b: DVec2| {
+            let o = (c + ea + eb) / 3.0;
+            let n = (b - a).perp();
+            n.dot(p - a) * n.dot(o - a).signum() >= -1e-3 * (b - a).length()
+        };
+        side(c, ea) && side(ea, eb) && side(eb, c)
+    };
+    let past = strokes
+        .iter()
+        .flat_map(|(p, q)| [*p, *q])
+        .find(|p| !inside(*p));
+    if let Some(p) = past {
+        return Err(format!(
+            "a hatch stroke ends at {p:?}, past the rays' drawn ends {ea:?}, {eb:?}"
         ));
     }
     let o = centre(f)?;
@@ -369,6 +405,25 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
         }
     }
     assert!(zone_hatched(&flipped).is_err());
+    // The strokes moved past the rays' drawn ends, still in their angle (the review's stray
+    // stroke).
+    let ends: Vec<DVec2> = f
+        .steps
+        .iter()
+        .filter(|s| s.role == Role::Hatch)
+        .flat_map(|s| s.item.hatch_strokes())
+        .map(|g| g.from + g.to)
+        .collect();
+    let mid = ends.iter().fold(DVec2::ZERO, |a, p| a + *p) / (2 * ends.len()) as f64;
+    let out = (mid - c).normalize() * 100.0;
+    let stray = broken(&f, "hatching of the zone of the cam centre", |s| {
+        if let Item::Hatching { outline, .. } = &mut s.item {
+            for p in outline.iter_mut() {
+                *p += out;
+            }
+        }
+    });
+    assert!(zone_hatched(&stray).is_err());
     // A dimension 1 mm longer than the centre found; none at all.
     let long = broken(&f, R_MIN_NOTE, |s| {
         if let Item::Dimension { to, from, .. } = &mut s.item {

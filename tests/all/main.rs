@@ -17,6 +17,7 @@ mod cam;
 mod cam_angle_steps;
 mod cam_breaks;
 mod cam_diagrams;
+mod cam_dimensions;
 mod cam_oracle;
 mod cam_sheets;
 mod cam_special;

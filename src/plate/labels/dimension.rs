@@ -1,14 +1,17 @@
 //! A dimension's text beside its line, clear of the lines of its view: over the middle of the
 //! dimension line when that is free (ГОСТ 2.307), else slid along the line, under it, or past
-//! its arrows on the line's extension — never struck through by a line of its own view.
+//! its arrows on the line's extension; where none of these is free, on the shelf of a leader
+//! from the middle of the line (ГОСТ 2.307: a line with no room for its number) — never
+//! struck through by a line of its own view.
 
+use super::leader::{self, Leader};
 use super::place::{clipped_area, clipped_length, own_distance, NEARER_MM};
-use super::{Outline, Shape};
-use crate::construct::Item;
+use super::{shape_box, Outline, Request, Shape, LABEL_HEIGHT_MM};
+use crate::construct::{Item, Names};
 use crate::geom::DVec2;
 use crate::plate::items::{dimension_text, TextSpot};
 use crate::plate::path::Map;
-use crate::plate::text::Placed;
+use crate::plate::text::{measure, Align, Placed};
 use crate::plate::{Plate, Rect};
 
 /// Step of the slide along the dimension line, mm.
@@ -34,14 +37,16 @@ const WRONG_LINE_MM: f64 = 10.0;
 /// The dimension `(from, to, offset)`'s text `text` placed (see the module documentation):
 /// the first place, in order of preference, whose box meets no line of `lines` (the view's
 /// outlines) and no text of `texts`, and is no nearer another line than its own dimension's
-/// (`own`, its outlines among `lines`); the least struck when none is free.
+/// (`own`, its outlines among `lines`); when none is, the least struck — or, where that one is
+/// struck through by a line or covers a text, the least costly leader whose text is clear
+/// ([`on_leader`]).
 pub(super) fn placed(
     map: Map,
     dim: (DVec2, DVec2, f64),
     text: &str,
     (lines, own): (&[Outline], &[Outline]),
     texts: &[Rect],
-) -> Option<Placed> {
+) -> Option<(Placed, Option<Leader>)> {
     let first = dimension_text(map, dim, text, TextSpot::MIDDLE)?;
     let width = first.own_box().width();
     let (from, to, _) = dim;
@@ -60,14 +65,68 @@ pub(super) fn placed(
             .sum();
         let ink = struck(&p, lines, CLEAR_MM) + over + wrong_line(&p.bounds(), lines, own);
         if ink == 0.0 {
-            return Some(p);
+            return Some((p, None));
         }
         let cost = ink + rank as f64 * 1e-3;
         if best.as_ref().is_none_or(|b| cost < b.1) {
             best = Some((p, cost));
         }
     }
-    best.map(|b| b.0)
+    let (p, _) = best?;
+    // Within the clearance of a line is kept; through a line or a text, a leader is taken.
+    let through =
+        struck(&p, lines, 0.0) > 0.0 || texts.iter().any(|t| t.overlap(&p.bounds()) > 0.0);
+    match through
+        .then(|| on_leader(map, dim, text, lines, texts))
+        .flatten()
+    {
+        Some((q, l)) => Some((q, Some(l))),
+        None => Some((p, None)),
+    }
+}
+
+/// The dimension's text written level on the shelf of a leader from the middle of its line
+/// (no dot: the leader starts on the line), among the places [`leader::candidates`] tries:
+/// the least costly leader ([`leader::cost`]) whose text meets no line of `lines` and no text
+/// of `texts`; `None` when every one is struck or covered.
+fn on_leader(
+    map: Map,
+    (from, to, offset): (DVec2, DVec2, f64),
+    text: &str,
+    lines: &[Outline],
+    texts: &[Rect],
+) -> Option<(Placed, Leader)> {
+    let u = (to - from).try_normalize()?;
+    let middle = map.pt((from + to) * 0.5 + u.perp() * offset);
+    let request = Request {
+        view: 0,
+        steps: Vec::new(),
+        names: vec![text.to_string()],
+        anchor: middle,
+        toward: DVec2::ZERO,
+        gap: 0.0,
+        within: None,
+        names_of: Names::Point,
+        own: Vec::new(),
+    };
+    let boxed: Vec<(Rect, &Outline)> = lines
+        .iter()
+        .filter_map(|o| Some((shape_box(&o.shape)?, o)))
+        .collect();
+    let e = measure(text, LABEL_HEIGHT_MM);
+    leader::candidates(&request, e.max - e.min)
+        .into_iter()
+        .enumerate()
+        .filter_map(|(rank, (rect, l))| {
+            let p = Placed::new(rect.min - e.min, text, LABEL_HEIGHT_MM, Align::Start);
+            let b = p.bounds().inflate(CLEAR_MM);
+            let clear =
+                struck(&p, lines, CLEAR_MM) == 0.0 && texts.iter().all(|t| t.overlap(&b) <= 0.0);
+            let cost = leader::cost(&l, &rect, &boxed, &[], texts, &[]);
+            clear.then_some((cost + rank as f64 * leader::RANK, p, l))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, p, l)| (p, l))
 }
 
 /// What a text whose box is `rect` costs for standing nearer another line of `lines` than
@@ -215,7 +274,7 @@ mod tests {
         let middle = dimension_text(map, dim, "H", TextSpot::MIDDLE).expect("text");
         assert!(struck(&middle, std::slice::from_ref(&cross), 0.0) > 1.0);
         let lines = std::slice::from_ref(&cross);
-        let p = placed(map, dim, "H", (lines, &[]), &[]).expect("placed");
+        let (p, _) = placed(map, dim, "H", (lines, &[]), &[]).expect("placed");
         assert_eq!(struck(&p, &[cross], CLEAR_MM), 0.0);
         assert!(
             (p.at.x - 30.0).abs() < 6.0,
@@ -227,7 +286,7 @@ mod tests {
             Rect::new(DVec2::new(0.0, 0.5), DVec2::new(60.0, 6.0)),
             Rect::new(DVec2::new(0.0, -6.0), DVec2::new(30.0, -0.5)),
         ];
-        let q = placed(map, dim, "H", (&[], &[]), &captions).expect("placed");
+        let (q, _) = placed(map, dim, "H", (&[], &[]), &captions).expect("placed");
         assert!(
             captions.iter().all(|c| !c.intersects(&q.bounds())),
             "{:?}",
@@ -255,13 +314,45 @@ mod tests {
         let lines = vec![own[0].clone(), ray.clone()];
         assert_eq!(struck(&middle, &lines, CLEAR_MM), 0.0);
         assert!(wrong_line(&middle.bounds(), &lines, &own) > 0.0);
-        let p = placed(map, dim, "H", (&lines, &own), &[]).expect("placed");
+        let (p, _) = placed(map, dim, "H", (&lines, &own), &[]).expect("placed");
         assert_eq!(wrong_line(&p.bounds(), &lines, &own), 0.0);
         let b = p.bounds();
         assert!(b.max.x < 20.0 || b.min.x > 40.0, "{b:?}");
         assert!(b.max.y < 0.0, "still over its line: {b:?}");
         // Without its own lines nothing is nearer: the middle stays.
-        let q = placed(map, dim, "H", (&lines, &[]), &[]).expect("placed");
+        let (q, _) = placed(map, dim, "H", (&lines, &[]), &[]).expect("placed");
         assert_eq!(q.at, middle.at);
+    }
+
+    #[test]
+    fn a_line_with_no_clear_place_beside_it_takes_its_text_to_a_leader() {
+        let map = Map::figure(DVec2::ZERO);
+        // A dimension 10 mm long in a comb of upright lines 2 mm apart, 16 mm tall: every
+        // place beside the line or past its arrows is struck through.
+        let dim = (DVec2::ZERO, DVec2::new(10.0, 0.0), 0.0);
+        let comb: Vec<Outline> = (-30..=40)
+            .step_by(2)
+            .map(|x| Outline {
+                shape: Shape::Line(
+                    DVec2::new(x as f64 + 0.5, -8.0),
+                    DVec2::new(x as f64 + 0.5, 8.0),
+                ),
+                main: false,
+            })
+            .collect();
+        let (p, l) = placed(map, dim, "H", (&comb, &[]), &[]).expect("placed");
+        let l = l.expect("a leader");
+        assert_eq!(struck(&p, &comb, CLEAR_MM), 0.0);
+        assert_eq!(p.rotate, 0.0, "level on its shelf");
+        // From the middle of the line, no dot, the text on the shelf.
+        assert!(l.to.distance(DVec2::new(5.0, 0.0)) < 1e-9 && l.from == l.to && !l.dot);
+        let b = p.bounds();
+        assert!(
+            b.max.y <= l.knee.y && b.min.x < l.knee.x.max(l.end.x),
+            "{b:?} {l:?}"
+        );
+        // With room beside the line, no leader.
+        let (_, none) = placed(map, dim, "H", (&[], &[]), &[]).expect("placed");
+        assert!(none.is_none());
     }
 }

@@ -271,14 +271,15 @@ fn requests(
             near.extend(fixed.iter().map(|f: &PlacedLabel| f.rect));
             let dim = (*from, *to, *offset);
             let own = step_outlines(step, map);
-            if let Some(placed) = dimension::placed(map, dim, text, (lines, &own), &near) {
+            if let Some((placed, leader)) = dimension::placed(map, dim, text, (lines, &own), &near)
+            {
                 fixed.push(PlacedLabel {
                     view: k,
                     steps: vec![step.id],
                     text: text.clone(),
                     anchor: map.pt((*from + *to) * 0.5),
                     rect: placed.bounds(),
-                    leader: None,
+                    leader,
                     placed,
                 });
             }

@@ -207,7 +207,7 @@ catalogue! {
         Accepted => (
             "Принимаем r_{0} = {r0} ≥ r_{min} = {rmin}",
             "Приймаємо r_{0} = {r0} ≥ r_{min} = {rmin}",
-            "Taken: r_{0} = {r0} ≥ r_{min} = {rmin}"
+            "Accept r_{0} = {r0} ≥ r_{min} = {rmin}"
         ),
         TravelCombined => (
             "Определение X_{min}: совмещённая диаграмма S(dS/dφ), луч γ_{min}",
