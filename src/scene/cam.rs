@@ -3,9 +3,8 @@
 //! scales, each checked with its key path and converted to SI.
 
 use super::check::{item, join, number, Checker, MAX_MM};
-use super::keys::Key;
 use crate::cam::{CamSpec, Closure, Follower, Given, Law, Layout, Phases, RockerSense, Rotation};
-use crate::scale::Quantity;
+use crate::scale::{Key, Quantity};
 use serde::Deserialize;
 
 /// The key path of the section.

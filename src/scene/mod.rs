@@ -14,7 +14,6 @@ mod gear_values;
 mod gears;
 mod groups;
 mod indicator;
-mod keys;
 mod kinematics;
 mod load;
 mod model;
@@ -31,13 +30,11 @@ mod toml_error;
 pub mod user_table;
 
 pub use crate::kinematics::KinematicsSpec;
-pub(crate) use drawing::DRAWN_MM;
 pub use error::{Problem, SceneError};
-pub use keys::Key;
 #[cfg(test)]
 pub(crate) use load::PARSES;
 pub use load::{files_in, load, parse, read, MAX_SCENE_BYTES};
-pub use model::{AnswerItem, Localised, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
+pub use model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
 pub use rescale::{RescaleError, Source};
 pub use studies::{PlateRow, Study, STUDIES};
 pub use task::{Genre, Practicum, TaskText};

@@ -149,25 +149,6 @@ pub struct TitleInfo {
     pub localised: Vec<(crate::scale::Lang, super::task::TaskText)>,
 }
 
-/// A text the scene gives in each language of the sheets and the note (`{ ru = "…",
-/// uk = "…", en = "…" }`), in label markup.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Localised {
-    /// Russian.
-    pub ru: String,
-    /// Ukrainian.
-    pub uk: String,
-    /// English.
-    pub en: String,
-}
-
-impl Localised {
-    /// The text in `lang`.
-    pub fn get(&self, lang: crate::scale::Lang) -> &str {
-        lang.pick(&self.ru, &self.uk, &self.en)
-    }
-}
-
 /// A validated scene file.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {

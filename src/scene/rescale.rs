@@ -7,9 +7,9 @@
 
 use super::check::Checker;
 use super::error::SceneError;
-use super::keys::Key;
 use super::model::Scene;
 use super::raw::RawScene;
+use crate::scale::Key;
 use std::sync::Arc;
 use thiserror::Error;
 

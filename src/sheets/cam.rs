@@ -11,8 +11,7 @@ use crate::cam::{Analogue, Cam, CamSpec, Diagrams, Follower, Law, Layout, Rotati
 use crate::check::{Cusp, Finding, Row};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock, CAPTION_BAND_MM};
-use crate::scale::{format_fixed, format_sig, Lang, Scale};
-use crate::scene::Key;
+use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
 use crate::study::Session;
 
 /// Text height of the data lines and the tables, mm.

@@ -16,8 +16,7 @@ use crate::gears::blocking::Study;
 use crate::gears::{DetailMark, DETAIL_LETTER};
 use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_sig, Lang};
-use crate::scene::Key;
+use crate::scale::{format_sig, Key, Lang};
 use crate::study::Session;
 
 /// Text height of the data lines and the table, mm.

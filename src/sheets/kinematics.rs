@@ -11,8 +11,7 @@ use crate::check::Method;
 use crate::geom::DVec2;
 use crate::linkage::KinPlan;
 use crate::plate::{Plate, Sheet, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
-use crate::scene::Key;
+use crate::scale::{format_fixed, format_sig, Key, Lang, Quantity, Scale};
 use crate::study::{KinScales, Kinematics, Session};
 
 /// The widest an analytic table may be drawn, mm (the A1 frame's width less margins); its
