@@ -34,9 +34,9 @@ mod train;
 mod triangles;
 mod undercut;
 
-pub use detail::{DetailMark, DETAIL_NAME_WITHIN_MM};
+pub use detail::{DetailMark, DETAIL_LETTER, DETAIL_NAME_WITHIN_MM};
 pub use differential::Differential;
-pub use generate::{generate, Generation, DETAIL_LETTER};
+pub use generate::{generate, Generation};
 pub use involute::{compass_involute, dms, inv, inv_inverse, CompassInvolute, TABLE_DIGITS};
 pub use mesh::{LAMBDA_MM, NAME_WITHIN_MM};
 pub use pair::{Pair, PairSpec};

@@ -11,7 +11,7 @@ use super::gears::gear_sections;
 use super::kinematics::kinematics;
 use super::model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start};
 use super::raw::{RawPlates, RawPositions, RawScene, RawStart};
-use super::rescale::Source;
+use super::source::Source;
 use super::structure::mechanism;
 use super::studies::{default_plates, plates_of, study_of, Study, STUDIES};
 use super::text::{not_text, refused};

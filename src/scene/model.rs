@@ -144,9 +144,9 @@ pub struct TitleInfo {
     /// A remark on the task's source (a reconstructed layout, say); not drawn.
     pub note: String,
     /// The kind of work the scene is.
-    pub genre: super::task::Genre,
+    pub genre: super::genre::Genre,
     /// The texts in other languages (`[task.uk]`, …): see [`TitleInfo::in_lang`].
-    pub localised: Vec<(crate::scale::Lang, super::task::TaskText)>,
+    pub localised: Vec<(crate::scale::Lang, super::raw::TaskText)>,
 }
 
 /// A validated scene file.

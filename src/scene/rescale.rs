@@ -10,19 +10,7 @@ use super::error::SceneError;
 use super::model::Scene;
 use super::raw::RawScene;
 use crate::scale::Key;
-use std::sync::Arc;
 use thiserror::Error;
-
-/// What a scene was validated from: the file's values as it gave them, in its units.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Source(Arc<RawScene>);
-
-impl Source {
-    /// The source holding `raw`.
-    pub(super) fn new(raw: RawScene) -> Self {
-        Source(Arc::new(raw))
-    }
-}
 
 /// Why [`Scene::with_scale`] gives no scene.
 #[derive(Debug, Error)]

@@ -29,12 +29,10 @@ pub(super) fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
     )
 }
 
-/// Build the cam sheet.
+/// Build the cam sheet of a turning cam with a translating or rocking follower (a flat-faced
+/// rocker's and a translating cam's is [`super::cam_special`]'s).
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
-    if let Some(special) = session.special_cam()? {
-        return super::cam_special::build(session, &special, lang);
-    }
     let cam = session.cam()?;
     let d = &cam.diagrams;
     let mm = unit_in("mm", lang);
