@@ -323,7 +323,7 @@ pub(super) fn force_rates(s: &Subject, reps: Reps) -> Result<(f64, f64), BenchEr
     let constructed = best_time(reps.best_of, || {
         for _ in 0..count {
             black_box(crate::forces::analyse(
-                spec, &plan, k, sc.l, vp, &ap.0, s.w1, &ctx,
+                spec, &plan, k, sc.l, vp, &ap.plan, s.w1, &ctx,
             )?);
         }
         Ok(())

@@ -27,7 +27,7 @@ pub struct SeedValue {
     pub source: String,
     /// What is wrong with it, in each language of the note (`None`: the note says only
     /// that the value is not reproduced).
-    pub why: Option<crate::scene::Localised>,
+    pub why: Option<crate::scale::Localised>,
 }
 
 impl SeedValue {

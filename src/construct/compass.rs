@@ -3,7 +3,8 @@
 //! whose numbers are physical values in the unit of the figure's μ.
 
 use super::error::ConstructionError;
-use super::figure::{Item, Role, StepId};
+use super::figure::{Role, StepId};
+use super::item::Item;
 use super::recorder::Recorder;
 use crate::geom::{
     circle_circle, line_circle, line_line, Arc, Circle, CircleCircle, DVec2, Line, LineCircle,

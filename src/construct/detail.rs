@@ -1,7 +1,8 @@
 //! Detail views (ГОСТ 2.305 выносной элемент): a zone of a figure cut out by its circle and
 //! drawn enlarged beside it.
 
-use super::figure::{Figure, Item, Role, Step, StepId};
+use super::figure::{Figure, Role, Step, StepId};
+use super::item::Item;
 use super::label::{Label, Names};
 use crate::geom::{Arc, Circle, DVec2, Segment};
 use crate::scale::Scale;

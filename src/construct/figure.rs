@@ -1,6 +1,7 @@
 //! The figure model: what a construction records — steps with their item, role, label and
 //! provenance — and the figure they make up.
 
+use super::item::Item;
 use super::label::{Label, Names};
 use super::reading::Reading;
 use crate::geom::{Arc, Circle, DVec2, Segment, Side};
@@ -25,105 +26,6 @@ pub enum Role {
     Dimension,
     /// Hatching (thin).
     Hatch,
-}
-
-/// What a step draws, in figure millimetres (y up).
-#[derive(Debug, Clone, PartialEq)]
-pub enum Item {
-    /// A marked point (a small dot).
-    Point(DVec2),
-    /// A revolute pair: a small circle; `fixed` adds the ground support symbol.
-    Joint {
-        /// Centre of the pair.
-        at: DVec2,
-        /// Attached to the frame.
-        fixed: bool,
-    },
-    /// A straight piece: a link, a chord, a construction line.
-    Segment(Segment),
-    /// A full circle.
-    Circle(Circle),
-    /// An arc (compass notch, angle mark).
-    Arc(Arc),
-    /// A polyline through points.
-    Polyline {
-        /// Vertices.
-        points: Vec<DVec2>,
-        /// Join the last point to the first.
-        closed: bool,
-    },
-    /// A smooth curve through points (trajectories, diagram curves).
-    Curve {
-        /// Points the curve passes through, in order.
-        points: Vec<DVec2>,
-        /// A closed curve.
-        closed: bool,
-    },
-    /// An arrowed vector (plans, forces).
-    Vector {
-        /// Tail.
-        from: DVec2,
-        /// Head.
-        to: DVec2,
-    },
-    /// A slider block centred at `at`, its long side along `angle` (radians).
-    Slider {
-        /// Centre.
-        at: DVec2,
-        /// Direction of sliding.
-        angle: f64,
-    },
-    /// A fixed guide: the line piece with hatching on one side.
-    Guide {
-        /// The guide line piece.
-        segment: Segment,
-        /// Side of `segment` (from → to) that carries the hatching.
-        hatch: Side,
-    },
-    /// A linear dimension between two points, its line offset by `offset` mm to the left
-    /// of `from → to`; the label is the dimension text.
-    Dimension {
-        /// First point.
-        from: DVec2,
-        /// Second point.
-        to: DVec2,
-        /// Offset of the dimension line, mm (positive: left of from → to).
-        offset: f64,
-    },
-    /// An angle mark: arc with arrows at both ends; the label is the angle's name.
-    Angle(Arc),
-    /// Free text anchored at a point (the label carries the text).
-    Text(DVec2),
-    /// A region hatched with parallel thin lines (ГОСТ 2.306: a section of a part, a zone of
-    /// a diagram), drawn as [`crate::geom::hatch`] strokes it; one step, so that a CAD
-    /// drawing can hold it as one patterned hatch.
-    Hatching {
-        /// The closed outline (even-odd inside).
-        outline: Vec<DVec2>,
-        /// The lines' spacing, mm.
-        spacing: f64,
-        /// The lines' angle from +x, radians.
-        angle: f64,
-    },
-}
-
-impl Item {
-    /// A slider block's half length along its slide and half width across it, mm: the block
-    /// is drawn 10 × 6 mm whatever the scale.
-    pub const SLIDER_HALF_MM: (f64, f64) = (5.0, 3.0);
-
-    /// The strokes a hatching draws (none for any other item, or an outline the recorder
-    /// would have refused: [`crate::construct::Recorder::hatching`]).
-    pub fn hatch_strokes(&self) -> Vec<Segment> {
-        match self {
-            Item::Hatching {
-                outline,
-                spacing,
-                angle,
-            } => crate::geom::hatch(outline, *spacing, *angle).unwrap_or_default(),
-            _ => Vec::new(),
-        }
-    }
 }
 
 /// One recorded step.

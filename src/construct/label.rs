@@ -5,7 +5,7 @@
 //! quantity (a force, an arm, a couple), and two quantities that happen to be drawn at one
 //! place are two labels, never `R₁₋₂ ≡ R₂₋₃` (issue 45).
 
-use super::figure::Item;
+use super::item::Item;
 use crate::geom::DVec2;
 
 /// A label's anchor this close to a point of its item is at that point, mm (figure mm: the

@@ -8,7 +8,8 @@
 //! [`Recorder::meet_line_circle`], [`Recorder::meet_lines`]) record their notches and return a
 //! diagnostic error carrying the numbers when the construction cannot be carried out.
 //!
-//! * [`Figure`] — the figure model: [`Step`]s with their [`Item`], [`Role`] and [`Label`];
+//! * [`Figure`] — the figure model: [`Step`]s with their [`Item`] (what is drawn), [`Role`]
+//!   and [`Label`];
 //! * [`Drafting`] — how a length is read off the drawing, and [`Measured`] lengths;
 //! * [`Reading`] — a segment measured off a figure and the value it gave;
 //! * [`Recorder`] — records steps into a figure; [`Compass`] and [`Pick`] — its compass steps.
@@ -20,6 +21,7 @@ mod drafting;
 mod error;
 mod figure;
 pub(crate) mod fit;
+mod item;
 mod label;
 mod reading;
 mod recorder;
@@ -28,7 +30,8 @@ pub use compass::{Compass, Pick};
 pub use context::Context;
 pub use drafting::{Drafting, Measured};
 pub use error::ConstructionError;
-pub use figure::{Figure, Item, Role, Step, StepId};
+pub use figure::{Figure, Role, Step, StepId};
+pub use item::Item;
 pub use label::{Label, Names};
 pub use reading::Reading;
 pub use recorder::Recorder;

@@ -3,7 +3,8 @@
 
 use super::context::Context;
 use super::drafting::{Drafting, Measured};
-use super::figure::{Figure, Item, Role, Step, StepId};
+use super::figure::{Figure, Role, Step, StepId};
+use super::item::Item;
 use super::label::{Label, Names};
 use super::reading::Reading;
 use crate::geom::{DVec2, HatchError, Tolerances};

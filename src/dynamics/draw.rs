@@ -136,14 +136,14 @@ pub fn diagrams(
     let big = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     given_draws(
         spec.scale_t,
-        crate::scene::Key::DynamicsScaleT,
+        crate::scale::Key::DynamicsScaleT,
         big(delta_t),
     )?;
     let mu_t = scale_of(spec.scale_t, big(delta_t), HEIGHT_MM, Quantity::Work, "μ_T")?;
     // T_I lies far from zero (it carries −ω²J_пр/2): its own scale.
     let mu_t1 = scale_of(None, big(&t1), 80.0, Quantity::Work, "μ_T of T_I")?;
     let big_j = j.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    given_draws(spec.scale_j, crate::scene::Key::DynamicsScaleJ, big_j)?;
+    given_draws(spec.scale_j, crate::scale::Key::DynamicsScaleJ, big_j)?;
     let mu_j = scale_of(spec.scale_j, big_j, 80.0, Quantity::Inertia, "μ_J")?;
     // 3: the ΔT diagram; 4: J_пр(φ).
     let energy = plotted(

@@ -104,7 +104,7 @@ pub enum DynamicsError {
         error: CalculusError,
     },
     /// A scale the scene gives draws its diagram too small or too large to be drawn.
-    #[error("{key} = {}: draws the diagram's largest value {} as {} mm: expected {} … {} mm, a scale from {} to {}", crate::scale::format_plain(*scale), crate::scale::format_plain(*value), crate::scale::format_plain(*drawn_mm), crate::scale::format_plain(crate::scene::DRAWN_MM.0), crate::scale::format_plain(crate::scene::DRAWN_MM.1), crate::scale::format_plain(range.0), crate::scale::format_plain(range.1))]
+    #[error("{key} = {}: draws the diagram's largest value {} as {} mm: expected {} … {} mm, a scale from {} to {}", crate::scale::format_plain(*scale), crate::scale::format_plain(*value), crate::scale::format_plain(*drawn_mm), crate::scale::format_plain(crate::scale::DRAWN_MM.0), crate::scale::format_plain(crate::scale::DRAWN_MM.1), crate::scale::format_plain(range.0), crate::scale::format_plain(range.1))]
     Drawn {
         /// The scene key.
         key: &'static str,

@@ -25,14 +25,14 @@ pub(super) fn scale_of(
 }
 
 /// A scale the scene gives (`key`) must draw the largest `value` of its diagram within
-/// [`crate::scene::DRAWN_MM`]: beyond, no sheet holds it and the chords lose their meaning
+/// [`crate::scale::DRAWN_MM`]: beyond, no sheet holds it and the chords lose their meaning
 /// (μ_M = 1e-12 N·m/mm drew A_с 1e14 mm tall and failed in its integration).
 pub(super) fn given_draws(
     given: Option<Scale>,
-    key: crate::scene::Key,
+    key: crate::scale::Key,
     value: f64,
 ) -> Result<(), DynamicsError> {
-    let (lo, hi) = crate::scene::DRAWN_MM;
+    let (lo, hi) = crate::scale::DRAWN_MM;
     match given {
         Some(s)
             if value.is_finite() && value > 0.0 && !(lo..=hi).contains(&(value / s.value())) =>

@@ -40,7 +40,7 @@ impl WorkScales {
         let mc: Vec<f64> = red.iter().map(|r| -sgn * r.m()).collect();
         let big_m = mc.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let mu_phi = scale_of(spec.scale_phi, TAU, TURN_MM, Quantity::Angle, "μ_φ")?;
-        given_draws(spec.scale_m, crate::scene::Key::DynamicsScaleM, big_m)?;
+        given_draws(spec.scale_m, crate::scale::Key::DynamicsScaleM, big_m)?;
         let mu_m = scale_of(spec.scale_m, big_m, HEIGHT_MM, Quantity::Moment, "μ_M")?;
         let a_est: f64 = mc.iter().map(|v| v * dx).sum::<f64>().abs().max(big_m * dx);
         let (pole_h, mu_a) = match spec.pole_h {

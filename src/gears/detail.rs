@@ -3,11 +3,18 @@
 //! undercut hatched between the fillet and the outline it removed, the base circle r_b, and
 //! the rounding of the rack's tip that cut the fillet.
 
-use super::generate::Generation;
 use super::rack::Cutting;
 use crate::construct::{Figure, Item, Label, Names, Role, Step, StepId};
 use crate::geom::{rotate, Circle, DVec2};
 use std::f64::consts::PI;
+
+/// The size of the undercut's detail view, mm: its zone is enlarged by the largest ГОСТ 2.302
+/// enlargement that draws it at most this wide.
+pub const DETAIL_MM: f64 = 150.0;
+
+/// The letter of the undercut's detail view (ГОСТ 2.305: the zone on the figure and the
+/// view are marked alike).
+pub const DETAIL_LETTER: &str = "A";
 
 /// The farthest a name stands from its object on the detail view, sheet mm.
 pub const DETAIL_NAME_WITHIN_MM: f64 = 4.0;
@@ -142,59 +149,58 @@ fn circle_at_distance(r: f64, c: DVec2, d: f64) -> Option<DVec2> {
     Some(if p.x < q.x { p } else { q })
 }
 
-impl Generation {
-    /// The undercut's detail view: the zone of [`drawing`](Generation::drawing) about the
-    /// right flank's undercut, enlarged ([`Figure::detail`]), each of its
-    /// [`marks`](Generation::detail_marks) named by `name` beside its object (the limit
-    /// point a dot).
-    pub fn detail_view(&self, name: &dyn Fn(DetailMark) -> String) -> Option<Figure> {
-        let (zone, scale) = self.detail?;
-        let mut view = self.drawing().detail(&zone, scale);
-        let k = self.scale.value() / scale.value();
-        let mut next = view.steps.iter().map(|s| s.id.0 + 1).max().unwrap_or(0);
-        for mark in DetailMark::ALL {
-            let Some((_, at)) = self.detail_marks.iter().find(|(m, _)| *m == mark) else {
-                continue;
-            };
-            let at = (*at - zone.center) * k;
-            // Written away from the zone's centre, off the flank that crosses it.
-            let toward = match mark {
-                DetailMark::Junction => DVec2::new(-1.0, -0.5),
-                DetailMark::Involute => DVec2::new(-1.0, 0.5),
-                DetailMark::Fillet => -DVec2::X,
-                DetailMark::Undercut => DVec2::new(-1.0, -0.3),
-                _ => at.normalize_or_zero(),
-            };
-            view.steps.push(Step {
-                id: StepId(next),
-                note: format!("detail A: the name of {mark:?}"),
-                item: if mark == DetailMark::Junction {
-                    Item::Point(at)
+/// Name the marks on `view`, the zone `zone` of the main figure enlarged `k` times: each of
+/// `marks` (main figure mm) named by `name` beside its object, the limit point a dot.
+pub(super) fn view(
+    mut view: Figure,
+    zone: &Circle,
+    k: f64,
+    marks: &[(DetailMark, DVec2)],
+    name: &dyn Fn(DetailMark) -> String,
+) -> Figure {
+    let mut next = view.steps.iter().map(|s| s.id.0 + 1).max().unwrap_or(0);
+    for mark in DetailMark::ALL {
+        let Some((_, at)) = marks.iter().find(|(m, _)| *m == mark) else {
+            continue;
+        };
+        let at = (*at - zone.center) * k;
+        // Written away from the zone's centre, off the flank that crosses it.
+        let toward = match mark {
+            DetailMark::Junction => DVec2::new(-1.0, -0.5),
+            DetailMark::Involute => DVec2::new(-1.0, 0.5),
+            DetailMark::Fillet => -DVec2::X,
+            DetailMark::Undercut => DVec2::new(-1.0, -0.3),
+            _ => at.normalize_or_zero(),
+        };
+        view.steps.push(Step {
+            id: StepId(next),
+            note: format!("detail A: the name of {mark:?}"),
+            item: if mark == DetailMark::Junction {
+                Item::Point(at)
+            } else {
+                Item::Text(at)
+            },
+            role: if mark == DetailMark::Junction {
+                Role::Result
+            } else {
+                Role::Dimension
+            },
+            label: Some(Label {
+                text: name(mark),
+                anchor: at,
+                toward,
+                within_mm: Some(DETAIL_NAME_WITHIN_MM),
+                // The junction is a point; the other names name the curve they stand on.
+                names: if mark == DetailMark::Junction {
+                    Names::Point
                 } else {
-                    Item::Text(at)
+                    Names::Item
                 },
-                role: if mark == DetailMark::Junction {
-                    Role::Result
-                } else {
-                    Role::Dimension
-                },
-                label: Some(Label {
-                    text: name(mark),
-                    anchor: at,
-                    toward,
-                    within_mm: Some(DETAIL_NAME_WITHIN_MM),
-                    // The junction is a point; the other names name the curve they stand on.
-                    names: if mark == DetailMark::Junction {
-                        Names::Point
-                    } else {
-                        Names::Item
-                    },
-                }),
-                from: Vec::new(),
-                group: 0,
-            });
-            next += 1;
-        }
-        Some(view)
+            }),
+            from: Vec::new(),
+            group: 0,
+        });
+        next += 1;
     }
+    view
 }

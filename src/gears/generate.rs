@@ -81,14 +81,6 @@ pub struct Generation {
     pub touch_error: f64,
 }
 
-/// The size of the undercut's detail view, mm: its zone is enlarged by the largest ГОСТ 2.302
-/// enlargement that draws it at most this wide.
-pub const DETAIL_MM: f64 = 150.0;
-
-/// The letter of the undercut's detail view (ГОСТ 2.305: the zone on the figure and the
-/// view are marked alike).
-pub const DETAIL_LETTER: &str = "A";
-
 /// The rack positions drawn, as the textbook draws them: a few, thin, numbered. Every
 /// position is traced (its touching points make the tooth); only these are left on the
 /// drawing, spread evenly over the traced ones, the first and the last among them.
@@ -227,6 +219,22 @@ impl Generation {
     /// the rack positions only the [`drawn`](Generation::drawn) ones, numbered.
     pub fn drawing(&self) -> Figure {
         self.figure.only_groups(&self.drawn)
+    }
+
+    /// The undercut's detail view: the zone of [`drawing`](Generation::drawing) about the
+    /// right flank's undercut, enlarged, each of its [`marks`](Generation::detail_marks)
+    /// named by `name` beside its object ([`super::detail::view`]); `None` without undercut.
+    pub fn detail_view(&self, name: &dyn Fn(DetailMark) -> String) -> Option<Figure> {
+        let (zone, scale) = self.detail?;
+        let k = self.scale.value() / scale.value();
+        let view = self.drawing().detail(&zone, scale);
+        Some(super::detail::view(
+            view,
+            &zone,
+            k,
+            &self.detail_marks,
+            name,
+        ))
     }
 }
 

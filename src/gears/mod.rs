@@ -34,9 +34,9 @@ mod train;
 mod triangles;
 mod undercut;
 
-pub use detail::{DetailMark, DETAIL_NAME_WITHIN_MM};
+pub use detail::{DetailMark, DETAIL_LETTER, DETAIL_NAME_WITHIN_MM};
 pub use differential::Differential;
-pub use generate::{generate, Generation, DETAIL_LETTER};
+pub use generate::{generate, Generation};
 pub use involute::{compass_involute, dms, inv, inv_inverse, CompassInvolute, TABLE_DIGITS};
 pub use mesh::{LAMBDA_MM, NAME_WITHIN_MM};
 pub use pair::{Pair, PairSpec};
@@ -233,15 +233,33 @@ pub struct RackSpec {
 /// The default number of rack positions of a generation.
 pub const DEFAULT_POSITIONS: usize = 90;
 
+/// The pair of a gear study: its dimensions and its meshing picture.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshedPair {
+    /// The pair's dimensions by formula.
+    pub pair: Pair,
+    /// Its meshing picture and what was read off it.
+    pub meshing: mesh::Meshing,
+}
+
+/// A wheel of a gear study cut by the rack.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CutWheel {
+    /// Its name in report keys (`1`: `s_a1`, `x_min`), as the scene gives it.
+    pub name: String,
+    /// Its generation by the rack.
+    pub generation: generate::Generation,
+}
+
 /// The gear study carried out: the pair with its meshing picture, the generated wheels.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GearStudy {
     /// The pair and its meshing picture.
-    pub pair: Option<(Pair, mesh::Meshing)>,
+    pub pair: Option<MeshedPair>,
     /// What the source prints for the pair.
     pub seed: Option<PairSeed>,
-    /// The generated wheels, by name.
-    pub racks: Vec<(String, generate::Generation)>,
+    /// The generated wheels, in the scene's order.
+    pub racks: Vec<CutWheel>,
     /// The train.
     pub train: Option<TrainStudy>,
     /// The pair's blocking contour with the scene's point placed and the textbook's
@@ -278,7 +296,10 @@ pub fn study(
                 Some(s) => s,
                 None => meshing_scale(&p)?,
             };
-            Some((p, mesh::meshing(&p, scale, ctx)?))
+            Some(MeshedPair {
+                meshing: mesh::meshing(&p, scale, ctx)?,
+                pair: p,
+            })
         }
         None => None,
     };
@@ -290,10 +311,10 @@ pub fn study(
                 Some(s) => s,
                 None => generation_scale(&r.cutting)?,
             };
-            Ok((
-                r.name.clone(),
-                generate::generate(&r.cutting, r.positions, scale, ctx)?,
-            ))
+            Ok(CutWheel {
+                name: r.name.clone(),
+                generation: generate::generate(&r.cutting, r.positions, scale, ctx)?,
+            })
         })
         .collect::<Result<Vec<_>, GearError>>()?;
     let train = match &spec.planetary {
@@ -330,13 +351,17 @@ impl GearStudy {
     /// cut wheels' with the train's.
     pub fn rows_by_part(&self) -> [Vec<crate::check::Row>; 2] {
         let mut pair = Vec::new();
-        if let Some((p, m)) = &self.pair {
+        if let Some(MeshedPair {
+            pair: p,
+            meshing: m,
+        }) = &self.pair
+        {
             pair.extend(rows::pair_rows(p));
             pair.extend(rows::meshing_rows(p, m));
         }
         let mut rest = Vec::new();
-        for (name, g) in &self.racks {
-            rest.extend(rows::generation_rows(name, g));
+        for w in &self.racks {
+            rest.extend(rows::generation_rows(&w.name, &w.generation));
         }
         if let Some(t) = &self.train {
             rest.extend(t.rows());
@@ -348,7 +373,11 @@ impl GearStudy {
         use crate::check::notes::GearsNote;
         use crate::check::Note;
         let mut out: Vec<Note> = Vec::new();
-        if let Some((p, m)) = &self.pair {
+        if let Some(MeshedPair {
+            pair: p,
+            meshing: m,
+        }) = &self.pair
+        {
             out.extend(
                 rows::pair_notes(p, self.seed.as_ref())
                     .into_iter()
@@ -362,8 +391,12 @@ impl GearStudy {
         if let Some(b) = &self.blocking {
             out.extend(b.notes().into_iter().map(Note::from));
         }
-        for (name, g) in &self.racks {
-            out.extend(rows::generation_notes(name, g).into_iter().map(Note::from));
+        for w in &self.racks {
+            out.extend(
+                rows::generation_notes(&w.name, &w.generation)
+                    .into_iter()
+                    .map(Note::from),
+            );
         }
         if let Some(t) = &self.train {
             out.extend(t.notes().into_iter().map(Note::from));

@@ -2,8 +2,7 @@
 //! the base circle and the radial line below it) drawn thin and the material removed hatched
 //! on both flanks, and the zone of its detail view at a ГОСТ 2.302 enlargement.
 
-use super::detail::DetailMark;
-use super::generate::{DETAIL_LETTER, DETAIL_MM};
+use super::detail::{DetailMark, DETAIL_LETTER, DETAIL_MM};
 use super::rack::Cutting;
 use super::GearError;
 use crate::construct::{Item, Recorder, Role};

@@ -1,5 +1,6 @@
 //! Dense linear algebra for the small systems the domains solve: one forward elimination
-//! with partial pivoting, and the solution and the determinant read from it.
+//! with partial pivoting, and the solution and the determinant read from it; the null space
+//! of a system of relations by its reduced row echelon form.
 
 /// The smallest pivot [`solve_linear`] accepts, as a fraction of the largest coefficient:
 /// below it the system is singular to rounding.
@@ -88,6 +89,58 @@ pub fn determinant(mut a: Vec<Vec<f64>>) -> f64 {
     det
 }
 
+/// A basis of the null space of the `rows` (each `n` long), by reduced row echelon form with
+/// partial pivoting; a pivot below `1e-12` of the largest entry counts as zero. One vector
+/// for each column without a pivot: 1 there, 0 at the other free columns.
+pub fn null_space(rows: &[Vec<f64>], n: usize) -> Vec<Vec<f64>> {
+    let mut a: Vec<Vec<f64>> = rows.to_vec();
+    let big = a
+        .iter()
+        .flat_map(|r| r.iter())
+        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    let tiny = 1e-12 * big.max(f64::MIN_POSITIVE);
+    let mut pivots: Vec<usize> = Vec::new();
+    let mut r = 0;
+    for c in 0..n {
+        if r == a.len() {
+            break;
+        }
+        let Some(p) = (r..a.len()).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs())) else {
+            break;
+        };
+        if a[p][c].abs() <= tiny {
+            continue;
+        }
+        a.swap(r, p);
+        let d = a[r][c];
+        for v in &mut a[r] {
+            *v /= d;
+        }
+        let pivot = a[r].clone();
+        for (i, row) in a.iter_mut().enumerate() {
+            if i != r && row[c] != 0.0 {
+                let f = row[c];
+                for (x, p) in row.iter_mut().zip(&pivot) {
+                    *x -= f * p;
+                }
+            }
+        }
+        pivots.push(c);
+        r += 1;
+    }
+    (0..n)
+        .filter(|c| !pivots.contains(c))
+        .map(|free| {
+            let mut v = vec![0.0; n];
+            v[free] = 1.0;
+            for (i, &c) in pivots.iter().enumerate() {
+                v[c] = -a[i][free];
+            }
+            v
+        })
+        .collect()
+}
+
 /// The smallest pivot of the elimination of the square matrix `a`, relative to its largest
 /// coefficient: a measure of how near singular it is (0: singular, or not finite).
 pub fn smallest_pivot(mut a: Vec<Vec<f64>>) -> f64 {
@@ -147,6 +200,23 @@ mod tests {
         let swapped = vec![rows[1].clone(), rows[0].clone(), rows[2].clone()];
         assert!((determinant(swapped) + sarrus).abs() < 1e-12 * sarrus.abs());
         assert_eq!(determinant(vec![vec![1.0, 2.0], vec![2.0, 4.0]]), 0.0);
+    }
+
+    /// x + y − z = 0 and 2x + 2y − 2z = 0 (rank 1): the null space is two vectors, each
+    /// with a 1 at its free column, each a solution; a regular system has none.
+    #[test]
+    fn the_null_space_holds_what_the_relations_allow() {
+        let rows = vec![vec![1.0, 1.0, -1.0], vec![2.0, 2.0, -2.0]];
+        let basis = null_space(&rows, 3);
+        assert_eq!(basis, vec![vec![-1.0, 1.0, 0.0], vec![1.0, 0.0, 1.0]]);
+        for v in &basis {
+            for r in &rows {
+                let s: f64 = r.iter().zip(v).map(|(a, x)| a * x).sum();
+                assert_eq!(s, 0.0, "{v:?}");
+            }
+        }
+        assert!(null_space(&[vec![2.0, 1.0], vec![1.0, 3.0]], 2).is_empty());
+        assert_eq!(null_space(&[], 2), vec![vec![1.0, 0.0], vec![0.0, 1.0]]);
     }
 
     /// diag(4, 1e-6): the smallest pivot is 1e-6/4 of the largest coefficient; a zero

@@ -19,7 +19,8 @@ pub use golden::{golden_max, golden_section, Golden, GoldenRule, Tie};
 pub use hatch::{hatch, HatchError, MAX_HATCH_LINES};
 pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};
 pub use linear::{
-    determinant, eliminate, smallest_pivot, solve_linear, solve_linear_above, SINGULAR_REL,
+    determinant, eliminate, null_space, smallest_pivot, solve_linear, solve_linear_above,
+    SINGULAR_REL,
 };
 pub use primitives::{
     french_curve, hermite, nearest, polygon_contains, rotate, wrap_pi, Arc, Circle, Line, Ray,

@@ -252,7 +252,7 @@ fn worked_value(
 pub(super) fn hodograph(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
     let lang = w.lang;
     let kin = p.kin;
-    let Some((point, figure)) = &kin.hodograph else {
+    let Some(crate::study::Hodograph { point, figure }) = &kin.hodograph else {
         return;
     };
     w.heading(2, T::Hodograph);

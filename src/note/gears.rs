@@ -40,9 +40,9 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     .collect();
     w.doc.say(&intro.join(" "));
     // The data are the task's; the results are worked below.
-    if let Some((pair, mesh)) = &study.pair {
-        super::pair_worked::pair_geometry(w, pair);
-        contact_ratio(w, pair, mesh.ab.value);
+    if let Some(p) = &study.pair {
+        super::pair_worked::pair_geometry(w, &p.pair);
+        contact_ratio(w, &p.pair, p.meshing.ab.value);
     }
     // The pair's own rows (its u₁₂ among them, not the train's).
     let [pair_rows, _] = study.rows_by_part();
@@ -63,15 +63,15 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let q = quantities(&w.report.rows, |r| {
         r.key.symbol == Symbol::SpecificSliding && !on_contour(r)
     });
-    if let Some((pair, _)) = &study.pair {
-        sliding_table(w, pair);
+    if let Some(p) = &study.pair {
+        sliding_table(w, &p.pair);
     }
     let caption = w.word(T::SlidingTable);
     by_position(w, caption, &q);
     let caption = w.word(T::BlockingTable);
     of_scene(w, caption, on_contour);
-    for (name, g) in &study.racks {
-        rack_form(w, name, g);
+    for cut in &study.racks {
+        rack_form(w, &cut.name, &cut.generation);
     }
     let caption = w.word(T::RackTable);
     // A rack-cut wheel's x_min (formula) beside what its envelope gives.

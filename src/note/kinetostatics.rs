@@ -5,7 +5,7 @@
 //! Zhukovsky's lever with every arm; the balancing load by both routes and the power.
 
 use super::machines::row;
-use super::markup::{frac, label, num, sym, unit};
+use super::markup::{label, num, sym, unit};
 use super::moments::{
     explain_owned, fill, meaning, moments_head, point_name, vector, worked_equation, Arms,
 };
@@ -255,30 +255,4 @@ fn of_scene_at(w: &mut Writer<'_, '_>, p: &str) {
         r.position().as_deref() == Some(p.as_str())
             && matches!(r.method, Method::Polygon | Method::Lever)
     });
-}
-
-/// The relative difference `|a − b|/|a|` of two values of one quantity `q` (label markup)
-/// by the polygons and by the lever, worked.
-pub(super) fn difference(w: &mut Writer<'_, '_>, q: &str, a: f64, b: f64, explain_delta: bool) {
-    let lang = w.lang;
-    let diff = (a - b).abs() / a.abs().max(f64::MIN_POSITIVE);
-    let pl = format!("{q}^{{{}}}", w.word(T::PolygonShort));
-    let lv = format!("{q}^{{{}}}", w.word(T::LeverShort));
-    w.formula(&format!(
-        "{} = {} = {} = {} %",
-        sym("Δ"),
-        frac(
-            &format!("|{} - {}|", sym(&pl), sym(&lv)),
-            &format!("|{}|", sym(&pl))
-        ),
-        frac(
-            &format!("|{} - ({})|", num(a, 7, lang), num(b, 7, lang)),
-            &num(a.abs(), 7, lang)
-        ),
-        num(crate::scale::residue_to_zero(diff, 1.0) * 100.0, 3, lang),
-    ));
-    if explain_delta {
-        let d = w.word(M::Difference).to_string();
-        explain_owned(w, &[("Δ".into(), d, "")]);
-    }
 }

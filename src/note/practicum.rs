@@ -33,7 +33,8 @@ fn wheels(w: &mut Writer<'_, '_>) {
     let mm = unit_in("mm", lang);
     let n = |x: f64| crate::scale::format_sig(x, 5, lang);
     let mut lines = Vec::new();
-    for (name, g) in &study.racks {
+    for cut in &study.racks {
+        let (name, g) = (&cut.name, &cut.generation);
         let c = &g.cutting;
         let (Some(x_min), Some(st), Some(sa)) = (
             analytic(format!("x_min_{name}")),

@@ -1,7 +1,6 @@
 //! Zhukovsky's lever worked with every arm (seed 000 §2.4), the balancing load by the two
 //! routes compared, and the power (seed 000 §2.5: N = P·V/η; an engine's shaft power).
 
-use super::kinetostatics::difference;
 use super::machines::row;
 use super::markup::{frac, label, num, sym, unit};
 use super::moments::{
@@ -209,4 +208,30 @@ fn resistance_power(
         explain_owned(w, &items);
     }
     Ok(())
+}
+
+/// The relative difference `|a − b|/|a|` of two values of one quantity `q` (label markup)
+/// by the polygons and by the lever, worked.
+fn difference(w: &mut Writer<'_, '_>, q: &str, a: f64, b: f64, explain_delta: bool) {
+    let lang = w.lang;
+    let diff = (a - b).abs() / a.abs().max(f64::MIN_POSITIVE);
+    let pl = format!("{q}^{{{}}}", w.word(T::PolygonShort));
+    let lv = format!("{q}^{{{}}}", w.word(T::LeverShort));
+    w.formula(&format!(
+        "{} = {} = {} = {} %",
+        sym("Δ"),
+        frac(
+            &format!("|{} - {}|", sym(&pl), sym(&lv)),
+            &format!("|{}|", sym(&pl))
+        ),
+        frac(
+            &format!("|{} - ({})|", num(a, 7, lang), num(b, 7, lang)),
+            &num(a.abs(), 7, lang)
+        ),
+        num(crate::scale::residue_to_zero(diff, 1.0) * 100.0, 3, lang),
+    ));
+    if explain_delta {
+        let d = w.word(M::Difference).to_string();
+        explain_owned(w, &[("Δ".into(), d, "")]);
+    }
 }

@@ -3,10 +3,9 @@
 //! path and converted to SI.
 
 use super::check::{item, join, number, Checker};
-use super::keys::Key;
 use super::raw::{RawBalancing, RawMass};
 use crate::balancing::{BalancingSpec, Correction, Mass};
-use crate::scale::Quantity;
+use crate::scale::{Key, Quantity};
 
 /// The key path of the section.
 const BAL: &str = "balancing";

@@ -2,14 +2,11 @@
 //! stroke (mm, or a rocker's swing in degrees × its arm), the roller, the limits and the
 //! scales, each checked with its key path and converted to SI.
 
+use super::cam_raw::{key, RawCam, CAM};
 use super::check::{item, join, number, Checker, MAX_MM};
-use super::keys::Key;
 use crate::cam::{CamSpec, Closure, Follower, Given, Law, Layout, Phases, RockerSense, Rotation};
-use crate::scale::Quantity;
-use serde::Deserialize;
+use crate::scale::{Key, Quantity};
 
-/// The key path of the section.
-const CAM: &str = "cam";
 /// The followers, as written.
 const FOLLOWERS: [(&str, Kind); 4] = [
     ("translating", Kind::Translating),
@@ -65,44 +62,6 @@ const BLEND: (f64, f64) = (0.05, 0.5);
 const POLE_MM: (f64, f64) = (5.0, 200.0);
 /// The shortest rise or return, degrees.
 const MIN_MOVING_DEG: f64 = 1.0;
-
-/// `[cam]`.
-#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(crate) struct RawCam {
-    pub follower: Option<String>,
-    pub law: Option<String>,
-    pub return_law: Option<String>,
-    pub ratio: Option<f64>,
-    pub blend: Option<f64>,
-    pub phases: Option<Vec<f64>>,
-    pub stroke: Option<f64>,
-    pub swing: Option<f64>,
-    pub arm: Option<f64>,
-    pub sense: Option<String>,
-    pub offset: Option<f64>,
-    pub roller: Option<f64>,
-    pub gamma_min: Option<f64>,
-    pub rho_min: Option<f64>,
-    pub base_radius: Option<f64>,
-    pub divisions: Option<i64>,
-    pub poles: Option<Vec<f64>>,
-    pub scale_s: Option<f64>,
-    pub scale_l: Option<f64>,
-    pub scale_phi: Option<f64>,
-    pub law_assumed: Option<bool>,
-    pub quoted_r_min: Option<f64>,
-    pub closure: Option<String>,
-    pub given: Option<String>,
-    pub rotation: Option<String>,
-    pub centres: Option<f64>,
-    pub travel: Option<f64>,
-}
-
-/// `key` under `[cam]`.
-pub(super) fn key(k: &str) -> String {
-    join(CAM, k)
-}
 
 /// Validate `[cam]`.
 pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {

@@ -4,7 +4,7 @@
 //! drives a translating roller follower across it, `roller` r). Each key that belongs to
 //! another layout is refused on its own path.
 
-use super::cam::{key, RawCam};
+use super::cam_raw::{key, RawCam};
 use super::check::{number, Checker};
 use crate::cam::flat_rocker::{self, FlatRocker, FlatRockerError};
 use crate::cam::sliding::Sliding;

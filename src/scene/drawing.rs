@@ -9,14 +9,11 @@
 //! every drawing it sets fits.
 
 use super::check::{number, short, Checker};
-use super::keys::Key;
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::Mechanism;
-use crate::scale::{Lang, Scale};
+use crate::scale::{Key, Lang, Scale, DRAWN_MM};
 use std::f64::consts::TAU;
 
-/// The shortest and longest a scale may draw its reference quantity, mm.
-pub(crate) const DRAWN_MM: (f64, f64) = (0.1, 1e4);
 /// The shortest and longest crank-angle axis 2π/μ_φ of the charts, mm.
 pub(crate) const AXIS_MM: (f64, f64) = (10.0, 1e4);
 /// The smallest and largest pole distance of a graphical differentiation, mm.

@@ -3,12 +3,11 @@
 //! coefficients, and the seed's own numbers to check — each checked with its key path.
 
 use super::check::{item, join, number, Checker};
-use super::keys::Key;
 use crate::dynamics::{
     ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
 };
 use crate::forces::ForceSpec;
-use crate::scale::{Quantity, Scale};
+use crate::scale::{Key, Quantity, Scale};
 use serde::Deserialize;
 
 /// The lightest flywheel material a scene may give, kg/m³.

@@ -4,7 +4,7 @@
 //! the follower would jam (λ not below λ_кр by 2°), converted to SI.
 
 use super::check::{join, number, Checker};
-use super::friction::{angle, coefficient, force, RawCase};
+use super::friction_case::{angle, coefficient, force, RawCase};
 use crate::cam::force::{rocker_locking, translating_locking, Guide, Pivot};
 use crate::friction::{CaseKind, FollowerGuide, RockerPivot, MIN_CROSSING_DEG};
 

@@ -3,13 +3,12 @@
 //! checked with its key path and converted to SI.
 
 use super::check::{item, join, number, quoted, Checker};
-use super::keys::Key;
 use super::kinematics::{point, point_names, position_labels};
 use super::raw::{RawDrive, RawForces, RawLinkLoad, RawPairFriction, RawResistance};
 use crate::forces::{carrier, PairFriction};
 use crate::forces::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke};
 use crate::linkage::{Mechanism, Program};
-use crate::scale::Quantity;
+use crate::scale::{Key, Quantity};
 
 /// The key path of the section.
 const KEY: &str = "forces";

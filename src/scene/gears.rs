@@ -6,13 +6,12 @@
 
 use super::check::{item, join, number, Checker};
 use super::gear_values::{module_mm, teeth};
-use super::keys::Key;
 use super::planetary::{planetary, RawPlanetary};
 use crate::gears::blocking::{Blocking, Criterion, Study};
 use crate::gears::{
     BasicRack, Cutting, GearError, GearsSpec, Pair, PairSeed, PairSpec, RackSpec, DEFAULT_POSITIONS,
 };
-use crate::scale::{Quantity, Scale};
+use crate::scale::{Key, Quantity, Scale};
 use serde::Deserialize;
 
 /// The key path of the section.

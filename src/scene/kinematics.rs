@@ -2,11 +2,10 @@
 //! optional and checked with its key path.
 
 use super::check::{item, quoted, Checker};
-use super::keys::Key;
 use super::raw::RawKinematics;
 use crate::kinematics::KinematicsSpec;
 use crate::linkage::{Dyad, Mechanism};
-use crate::scale::Quantity;
+use crate::scale::{Key, Quantity};
 
 /// The key path of the section.
 const KIN: &str = "kinematics";

@@ -3,6 +3,7 @@
 mod balancing;
 mod cam;
 mod cam_layout;
+mod cam_raw;
 mod check;
 mod drawing;
 mod dynamics;
@@ -10,11 +11,12 @@ mod error;
 mod follower;
 mod forces;
 mod friction;
+mod friction_case;
 mod gear_values;
 mod gears;
+mod genre;
 mod groups;
 mod indicator;
-mod keys;
 mod kinematics;
 mod load;
 mod model;
@@ -23,6 +25,7 @@ mod planetary;
 mod raw;
 mod rescale;
 mod seed;
+mod source;
 mod structure;
 mod studies;
 mod task;
@@ -31,16 +34,16 @@ mod toml_error;
 pub mod user_table;
 
 pub use crate::kinematics::KinematicsSpec;
-pub(crate) use drawing::DRAWN_MM;
 pub use error::{Problem, SceneError};
-pub use keys::Key;
+pub use genre::{Genre, Practicum};
 #[cfg(test)]
 pub(crate) use load::PARSES;
 pub use load::{files_in, load, parse, read, MAX_SCENE_BYTES};
-pub use model::{AnswerItem, Localised, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
-pub use rescale::{RescaleError, Source};
+pub use model::{AnswerItem, PlateKind, PositionSpec, Scene, Section, Start, TitleInfo};
+pub use raw::TaskText;
+pub use rescale::RescaleError;
+pub use source::Source;
 pub use studies::{PlateRow, Study, STUDIES};
-pub use task::{Genre, Practicum, TaskText};
 
 #[cfg(test)]
 mod tests;

@@ -144,28 +144,9 @@ pub struct TitleInfo {
     /// A remark on the task's source (a reconstructed layout, say); not drawn.
     pub note: String,
     /// The kind of work the scene is.
-    pub genre: super::task::Genre,
+    pub genre: super::genre::Genre,
     /// The texts in other languages (`[task.uk]`, …): see [`TitleInfo::in_lang`].
-    pub localised: Vec<(crate::scale::Lang, super::task::TaskText)>,
-}
-
-/// A text the scene gives in each language of the sheets and the note (`{ ru = "…",
-/// uk = "…", en = "…" }`), in label markup.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Localised {
-    /// Russian.
-    pub ru: String,
-    /// Ukrainian.
-    pub uk: String,
-    /// English.
-    pub en: String,
-}
-
-impl Localised {
-    /// The text in `lang`.
-    pub fn get(&self, lang: crate::scale::Lang) -> &str {
-        lang.pick(&self.ru, &self.uk, &self.en)
-    }
+    pub localised: Vec<(crate::scale::Lang, super::raw::TaskText)>,
 }
 
 /// A validated scene file.

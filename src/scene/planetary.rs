@@ -6,9 +6,9 @@
 
 use super::check::{item, join, Checker};
 use super::gear_values::{module_mm, teeth_from};
-use super::keys::Key;
 use crate::gears::{Mesh, PlanetarySpec, Train, TrainSeed};
 use crate::gears::{TrainError, Wheel};
+use crate::scale::Key;
 use serde::Deserialize;
 
 /// `[planetary]`.

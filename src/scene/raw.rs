@@ -21,7 +21,7 @@ pub(crate) struct RawScene {
     pub dynamics: Option<super::dynamics::RawDynamics>,
     pub gears: Option<super::gears::RawGears>,
     pub planetary: Option<super::planetary::RawPlanetary>,
-    pub cam: Option<super::cam::RawCam>,
+    pub cam: Option<super::cam_raw::RawCam>,
     pub answer_key: Option<RawAnswerKey>,
     pub seed: Option<Vec<RawSeedValue>>,
 }
@@ -49,9 +49,30 @@ pub(crate) struct RawTask {
     pub university: Option<String>,
     pub city: Option<String>,
     pub genre: Option<String>,
-    pub ru: Option<super::task::TaskText>,
-    pub uk: Option<super::task::TaskText>,
-    pub en: Option<super::task::TaskText>,
+    pub ru: Option<TaskText>,
+    pub uk: Option<TaskText>,
+    pub en: Option<TaskText>,
+}
+
+/// `[task.ru]`, `[task.uk]`, `[task.en]`: the texts of `[task]` a language replaces (each
+/// `None`: the scene's own), read as written.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TaskText {
+    /// The title.
+    pub title: Option<String>,
+    /// The student.
+    pub author: Option<String>,
+    /// The instructor.
+    pub checked: Option<String>,
+    /// The department.
+    pub organisation: Option<String>,
+    /// The university.
+    pub university: Option<String>,
+    /// The city.
+    pub city: Option<String>,
+    /// The group.
+    pub group: Option<String>,
 }
 
 /// `[mechanism]`.

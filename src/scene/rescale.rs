@@ -7,22 +7,10 @@
 
 use super::check::Checker;
 use super::error::SceneError;
-use super::keys::Key;
 use super::model::Scene;
 use super::raw::RawScene;
-use std::sync::Arc;
+use crate::scale::Key;
 use thiserror::Error;
-
-/// What a scene was validated from: the file's values as it gave them, in its units.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Source(Arc<RawScene>);
-
-impl Source {
-    /// The source holding `raw`.
-    pub(super) fn new(raw: RawScene) -> Self {
-        Source(Arc::new(raw))
-    }
-}
 
 /// Why [`Scene::with_scale`] gives no scene.
 #[derive(Debug, Error)]

@@ -4,11 +4,10 @@
 //! never matched.
 
 use super::check::{join, number, quoted, Checker};
-use super::model::Localised;
 use super::raw::RawSeedValue;
 use crate::check::Method;
 use crate::check::SeedValue;
-use crate::scale::KGF;
+use crate::scale::{Localised, KGF};
 
 /// The largest magnitude a seed's value may have in its SI unit.
 const MAX_VALUE: f64 = 1e9;

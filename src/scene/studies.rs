@@ -10,9 +10,9 @@
 //! `match` on the row's section or plate, which the compiler checks (a table of function
 //! pointers here would point from the scene up into the session and the sheets).
 
-use super::keys::Key;
 use super::model::{PlateKind, Scene, Section};
 use super::raw::RawScene;
+use crate::scale::Key;
 
 /// A plate a study draws.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -180,8 +180,8 @@ pub(crate) fn default_plates(
 #[cfg(test)]
 mod tests {
     use super::{default, plates_of, study_of, Study, STUDIES};
+    use crate::scale::Key;
     use crate::scene::check::Checker;
-    use crate::scene::keys::Key;
     use crate::scene::model::{PlateKind, Section};
     use crate::scene::raw::RawPlates;
 

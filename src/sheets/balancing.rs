@@ -9,8 +9,7 @@ use super::BuildError;
 use crate::balancing::{Balancing, Correction, Plane};
 use crate::check::{Row, Symbol};
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_fixed, Lang};
-use crate::scene::Key;
+use crate::scale::{format_fixed, Key, Lang};
 use crate::study::Session;
 
 /// The sheets tried, smallest first.

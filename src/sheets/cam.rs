@@ -13,8 +13,7 @@ use crate::cam::{
 use crate::check::{Cusp, Finding, Row};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock, CAPTION_BAND_MM};
-use crate::scale::{format_fixed, format_sig, Lang, Scale};
-use crate::scene::Key;
+use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
 use crate::study::Session;
 
 /// Text height of the data lines and the tables, mm.
@@ -32,12 +31,10 @@ pub(super) fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
     )
 }
 
-/// Build the cam sheet.
+/// Build the cam sheet of a turning cam with a translating or rocking follower (a flat-faced
+/// rocker's and a translating cam's is [`super::cam_special`]'s).
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
-    if let Some(special) = session.special_cam()? {
-        return super::cam_special::build(session, &special, lang);
-    }
     let cam = session.cam()?;
     let d = &cam.diagrams;
     let mm = unit_in("mm", lang);

@@ -12,8 +12,7 @@ use super::BuildError;
 use crate::cam::{Follower, Special, SpecialProfile, TRAVEL_NOTE};
 use crate::check::Finding;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang};
-use crate::scene::Key;
+use crate::scale::{format_fixed, format_sig, Key, Lang};
 use crate::study::{Session, StudyError};
 
 /// Text height of the data lines, mm.

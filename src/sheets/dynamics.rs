@@ -13,8 +13,7 @@ use crate::check::{Finding, NoFlywheel, Route};
 use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang, Scale};
-use crate::scene::Key;
+use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
 use crate::study::Session;
 
 /// Text height of the data lines and the tables, mm.

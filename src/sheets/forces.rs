@@ -15,8 +15,7 @@ use crate::forces::{PolygonDetail, PositionForces};
 use crate::geom::DVec2;
 use crate::linkage::Structure;
 use crate::plate::{Plate, Sheet, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang, Scale};
-use crate::scene::Key;
+use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
 use crate::study::Session;
 
 /// Height of the sheet's text and table, mm.

@@ -14,8 +14,7 @@ use crate::friction::{
     wedge_twin, CaseKind, Drawing, DrawingKind, Motion, Rolling, Slider, SliderState, Solved,
 };
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_fixed, format_number, format_sig, Lang, Quantity};
-use crate::scene::Key;
+use crate::scale::{format_fixed, format_number, format_sig, Key, Lang, Quantity};
 use crate::study::Session;
 
 /// Text height of the sheet's lines and table, mm.

@@ -16,8 +16,7 @@ use crate::gears::blocking::Study;
 use crate::gears::{DetailMark, DETAIL_LETTER};
 use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_sig, Lang};
-use crate::scene::Key;
+use crate::scale::{format_sig, Key, Lang};
 use crate::study::Session;
 
 /// Text height of the data lines and the table, mm.
@@ -43,15 +42,19 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         .blocking
         .as_ref()
         .filter(|b| (g.racks.is_empty() && g.train.is_none()) || b.chosen.is_some());
-    if let Some((p, m)) = &g.pair {
+    if let Some(crate::gears::MeshedPair {
+        pair: p,
+        meshing: m,
+    }) = &g.pair
+    {
         sheet.pair_views(p, (&m.figure, &m.sliding, m.scale), contour);
         sheet.pair_lines(p, m.eps);
         if let Some(b) = contour {
             sheet.contour_lines(b);
         }
     }
-    for (name, r) in &g.racks {
-        sheet.rack(name, r);
+    for w in &g.racks {
+        sheet.rack(&w.name, &w.generation);
     }
     if let Some(t) = &g.train {
         sheet.train(t);

@@ -11,8 +11,7 @@ use crate::check::Method;
 use crate::geom::DVec2;
 use crate::linkage::KinPlan;
 use crate::plate::{Plate, Sheet, TableBlock};
-use crate::scale::{format_fixed, format_sig, Lang, Quantity, Scale};
-use crate::scene::Key;
+use crate::scale::{format_fixed, format_sig, Key, Lang, Quantity, Scale};
 use crate::study::{KinScales, Kinematics, Session};
 
 /// The widest an analytic table may be drawn, mm (the A1 frame's width less margins); its
@@ -251,7 +250,7 @@ impl Plans<'_> {
                 let label = &a.plan.positions[*k].label;
                 let c = format!("{} {label}", Text::AccelerationPlanAt.get(lang));
                 let scale = (Key::KinematicsScaleA, sc.a);
-                (plan_view(&ap.0, c, scale, stated, lang), ACCELERATION)
+                (plan_view(&ap.plan, c, scale, stated, lang), ACCELERATION)
             })
             .collect()
     }
@@ -277,7 +276,11 @@ fn rest_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
             Text::Millimetre.get(lang)
         ));
     }
-    if let Some((name, h)) = &a.hodograph {
+    if let Some(crate::study::Hodograph {
+        point: name,
+        figure: h,
+    }) = &a.hodograph
+    {
         let c = format!("{} v_{{{}}}", Text::Hodograph.get(lang), name);
         rest.push((Block::view(h.as_ref().clone(), c, None), None));
         lines.push(format!(

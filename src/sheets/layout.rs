@@ -13,8 +13,7 @@ use crate::plate::{
     text, Plate, Rect, Sheet, SheetSize, TableBlock, TextBlock, TitleBlock, View, CAPTION_BAND_MM,
     CAPTION_HEIGHT_MM,
 };
-use crate::scale::{format_fixed, Lang, Scale};
-use crate::scene::Key;
+use crate::scale::{format_fixed, Key, Lang, Scale};
 
 /// The scale a block is drawn at and the scene key that sets it, for the message when the
 /// block does not fit a sheet.

@@ -202,7 +202,11 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
         PlateKind::Dynamics => dynamics::build(session, lang),
         PlateKind::Flywheel => flywheel::build(session, lang),
         PlateKind::Gears => gears::build(session, lang),
-        PlateKind::Cam => cam::build(session, lang),
+        // A flat-faced rocker and a translating cam have a sheet of their own.
+        PlateKind::Cam => match session.special_cam()? {
+            Some(special) => cam_special::build(session, &special, lang),
+            None => cam::build(session, lang),
+        },
     }
 }
 

@@ -11,8 +11,7 @@ use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
 use crate::linkage::{DyadKind, FourBar, OutputCoord, PositionPlan, Relation, Structure};
 use crate::plate::{Plate, Sheet};
-use crate::scale::{format_fixed, Lang, Quantity, Scale};
-use crate::scene::Key;
+use crate::scale::{format_fixed, Key, Lang, Quantity, Scale};
 use crate::study::Session;
 use std::f64::consts::PI;
 

@@ -6,8 +6,8 @@
 
 use super::{build_all, BuildError};
 use crate::construct::Drafting;
-use crate::scale::{Lang, Scale};
-use crate::scene::{Key, RescaleError, Scene};
+use crate::scale::{Key, Lang, Scale};
+use crate::scene::{RescaleError, Scene};
 use crate::study::Session;
 
 /// At most this many rebuilds with a raised scale.
@@ -58,8 +58,9 @@ pub fn verified_fit(scene: &Scene, key: Key, first: Scale, drafting: Drafting, l
 mod tests {
     use super::{verified_fit, Fit};
     use crate::construct::Drafting;
+    use crate::scale::Key;
     use crate::scale::Lang;
-    use crate::scene::{self, Key, RescaleError};
+    use crate::scene::{self, RescaleError};
     use std::path::Path;
 
     /// The shaper with μ_v = 0.002 (m/s)/mm, read from a text under a file name that does not

@@ -137,7 +137,7 @@ impl<'s> Session<'s> {
             k,
             l,
             vp,
-            &ap.0,
+            &ap.plan,
             w1,
             &self.ctx()?,
         )?)

@@ -23,11 +23,11 @@ impl<'s> Session<'s> {
                 .as_ref()
                 .ok_or(StudyError::NoGears("the gear study"))?;
             let g = crate::gears::study(spec, &self.ctx()?, &self.shared.blocking)?;
-            if let Some((_, m)) = &g.pair {
-                self.logged("meshing picture", "", m.scale);
+            if let Some(p) = &g.pair {
+                self.logged("meshing picture", "", p.meshing.scale);
             }
-            for (name, r) in &g.racks {
-                self.logged("rack generation", name, r.scale);
+            for w in &g.racks {
+                self.logged("rack generation", &w.name, w.generation.scale);
             }
             Ok(Arc::new(g))
         })

@@ -81,7 +81,7 @@ impl Kinematics {
     pub fn rows(&self) -> Vec<Row> {
         kinematics::rows(
             self.velocity.iter().map(|v| v.rows()),
-            self.acceleration.iter().map(|(_, a)| a.1.as_slice()),
+            self.acceleration.iter().map(|(_, a)| a.rows.as_slice()),
             self.diagrams.as_deref(),
             self.rocker.as_deref(),
         )
@@ -201,9 +201,10 @@ impl<'s> Session<'s> {
                 }
             };
             let w1 = self.w1()?;
-            let ap = kinematics::acceleration(&plan, k, sc.l.value(), w1, vp, a, &self.ctx()?)?;
+            let (ap, rows) =
+                kinematics::acceleration(&plan, k, sc.l.value(), w1, vp, a, &self.ctx()?)?;
             self.logged("acceleration plan", &plan.positions[k].label, a);
-            Ok(Arc::new(ap))
+            Ok(Arc::new(Acceleration { plan: ap, rows }))
         })
     }
 
@@ -277,7 +278,10 @@ impl<'s> Session<'s> {
             let vel = self.velocities(sc)?;
             let plans: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
             let fig = kinematics::hodograph(&plan, k, &plans, sc.v, &self.ctx()?);
-            Ok(Some((plain(plan.point_name(k)), Arc::new(fig))))
+            Ok(Some(Hodograph {
+                point: plain(plan.point_name(k)),
+                figure: Arc::new(fig),
+            }))
         })
     }
 

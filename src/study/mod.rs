@@ -69,9 +69,22 @@ type Cached<T> = Result<Arc<T>, StudyError>;
 
 type MaybeCached<T> = Result<Option<Arc<T>>, StudyError>;
 /// An acceleration plan with its rows.
-pub type Acceleration = (KinPlan, Vec<Row>);
-/// The hodograph: its point's name without markup (`S3`) and its figure.
-pub type Hodograph = (String, Arc<Figure>);
+#[derive(Debug, Clone)]
+pub struct Acceleration {
+    /// The plan.
+    pub plan: KinPlan,
+    /// Its readings against their analytic twins.
+    pub rows: Vec<Row>,
+}
+
+/// The hodograph of the scene's point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Hodograph {
+    /// The point's name without markup (`S3`).
+    pub point: String,
+    /// The hodograph's figure.
+    pub figure: Arc<Figure>,
+}
 
 /// The positions solved analytically.
 struct Poses;

@@ -135,11 +135,12 @@ fn detail_a_names_what_it_shows() {
         let s = scene(name);
         let session = Session::new(&s, Drafting::EXACT);
         let g = session.gears().expect("the gear study");
-        let (_, wheel) = g
+        let wheel = &g
             .racks
             .iter()
-            .find(|(_, r)| r.detail.is_some())
-            .expect("an undercut wheel with its detail");
+            .find(|w| w.generation.detail.is_some())
+            .expect("an undercut wheel with its detail")
+            .generation;
         let mu = wheel.scale.value();
         let at = |m: DetailMark| {
             wheel
@@ -192,7 +193,8 @@ fn rack_positions_are_never_detached_fragments() {
         let s = scene(name);
         let session = Session::new(&s, Drafting::EXACT);
         let g = session.gears().expect("the gear study");
-        for (wheel, r) in &g.racks {
+        for cut in &g.racks {
+            let (wheel, r) = (&cut.name, &cut.generation);
             let mu = r.scale.value();
             let ra = r.cutting.ra / mu;
             let mut runs = 0;
@@ -291,7 +293,7 @@ fn a_chosen_pair_shows_its_choice_on_the_blocking_contour() {
             let session = Session::new(&s, drafting);
             let g = session.gears().expect("the gear study");
             let study = g.blocking.as_ref().expect("the contour");
-            let (pair, _) = g.pair.as_ref().expect("the pair");
+            let pair = &g.pair.as_ref().expect("the pair").pair;
             assert!(study.chosen.is_some());
             let chosen = study.at(DVec2::new(pair.spec.x[0], pair.spec.x[1]));
             for lang in LANGS {

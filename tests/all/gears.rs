@@ -710,7 +710,7 @@ fn the_drawn_rack_positions_are_recorded_ones() {
     let s = tmm::load(&path).expect("scene");
     let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
     let g = session.gears().expect("gears");
-    let (_, r) = &g.racks[0];
+    let r = &g.racks[0].generation;
     let drawn = r.drawing();
     // 60 steps and the device's marks traced, 7 drawn.
     let traced = r.figure.steps.iter().map(|s| s.group).max().unwrap_or(0);

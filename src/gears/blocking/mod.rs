@@ -46,7 +46,8 @@ pub use trace::{twin_check, Contour};
 
 use super::involute::inv;
 use super::{BasicRack, GearError};
-use crate::geom::DVec2;
+use crate::geom::{bisect, DVec2, Midpoint};
+use std::convert::Infallible;
 use std::f64::consts::PI;
 
 /// The quality isolines of the tip thickness, × m.
@@ -266,17 +267,22 @@ fn pointed_alone(z: f64, rack: &BasicRack, from: f64) -> f64 {
         let s = PI / 2.0 + 2.0 * x * rack.alpha.tan();
         2.0 * ra * (s / (2.0 * r) + inv(rack.alpha) - inv((rb / ra).acos()))
     };
-    let (mut a, mut b) = (from, X_MAX);
-    if sa(b) > 0.0 {
+    if sa(X_MAX) > 0.0 {
         return X_MAX;
     }
-    for _ in 0..100 {
-        let mid = 0.5 * (a + b);
-        if sa(mid) > 0.0 {
-            a = mid;
-        } else {
-            b = mid;
-        }
-    }
-    b
+    // s_a > 0 on the first end's side (it falls as x grows); the same 100 halvings.
+    let Ok((_, pointed)) = bisect(
+        from,
+        X_MAX,
+        100,
+        |_, _| false,
+        |mid| {
+            Ok::<_, Infallible>(if sa(mid) > 0.0 {
+                Midpoint::First
+            } else {
+                Midpoint::Second
+            })
+        },
+    );
+    pointed
 }

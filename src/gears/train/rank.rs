@@ -4,57 +4,7 @@
 //! them).
 
 use super::{Train, TrainError};
-
-/// A basis of the null space of the `rows` (each `n` long), by reduced row echelon form with
-/// partial pivoting; a pivot below `1e-12` of the largest entry counts as zero.
-pub(super) fn null_space(rows: &[Vec<f64>], n: usize) -> Vec<Vec<f64>> {
-    let mut a: Vec<Vec<f64>> = rows.to_vec();
-    let big = a
-        .iter()
-        .flat_map(|r| r.iter())
-        .fold(0.0_f64, |m, v| m.max(v.abs()));
-    let tiny = 1e-12 * big.max(f64::MIN_POSITIVE);
-    let mut pivots: Vec<usize> = Vec::new();
-    let mut r = 0;
-    for c in 0..n {
-        if r == a.len() {
-            break;
-        }
-        let Some(p) = (r..a.len()).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs())) else {
-            break;
-        };
-        if a[p][c].abs() <= tiny {
-            continue;
-        }
-        a.swap(r, p);
-        let d = a[r][c];
-        for v in &mut a[r] {
-            *v /= d;
-        }
-        let pivot = a[r].clone();
-        for (i, row) in a.iter_mut().enumerate() {
-            if i != r && row[c] != 0.0 {
-                let f = row[c];
-                for (x, p) in row.iter_mut().zip(&pivot) {
-                    *x -= f * p;
-                }
-            }
-        }
-        pivots.push(c);
-        r += 1;
-    }
-    (0..n)
-        .filter(|c| !pivots.contains(c))
-        .map(|free| {
-            let mut v = vec![0.0; n];
-            v[free] = 1.0;
-            for (i, &c) in pivots.iter().enumerate() {
-                v[c] = -a[i][free];
-            }
-            v
-        })
-        .collect()
-}
+use crate::geom::null_space;
 
 impl Train {
     /// The diagnosis of a singular Willis system whose relations other than the input's are

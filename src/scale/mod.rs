@@ -3,6 +3,13 @@
 
 use std::fmt::Write as _;
 
+mod key;
+mod localised;
+
+pub use key::Key;
+pub(crate) use key::DRAWN_MM;
+pub use localised::Localised;
+
 /// The acceleration of gravity the course computes weights with (G = m·g), m/s²: the
 /// textbooks' 9,81 (seed 001), the default of `[forces] g`.
 pub const G: f64 = 9.81;

@@ -1,10 +1,14 @@
-//! The scene keys named outside the loader: the scales a sheet asks the user to set when a
-//! drawing does not fit. Each key is spelled here once, in [`Key::path`]; the loader reads
-//! the same key by it, the sheets' refusals name it by the variant, and each study lists its
-//! keys in its row of the registration table (`scene::STUDIES`), whose test holds every key
-//! to one row and one path.
+//! The scales a scene gives: the keys that name them outside the loader (the scales a sheet
+//! asks the user to set when a drawing does not fit) and the lengths a given scale may draw
+//! its reference quantity within ([`DRAWN_MM`]). Each key is spelled here once, in
+//! [`Key::path`]; the loader reads the same key by it, the sheets' refusals and the
+//! dynamics' checks name it by the variant, and each study lists its keys in its row of the
+//! registration table (`scene::STUDIES`), whose test holds every key to one row and one path.
 
 use std::fmt;
+
+/// The shortest and longest a scale may draw its reference quantity, mm.
+pub(crate) const DRAWN_MM: (f64, f64) = (0.1, 1e4);
 
 /// A scene key a sheet names: the scale that sets a drawing's size.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
