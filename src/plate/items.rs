@@ -1,13 +1,17 @@
 //! Recorded steps as marks: the textbook symbols of every [`Item`], and the labels.
 
-use super::labels::COINCIDENT_MM;
 use super::path::{pieces, Map, PathData};
 use super::style::{Mark, Paint, Pen};
 use super::text::{Align, Placed};
-use crate::construct::{Item, Names, Role, Step};
+use crate::construct::{Drafting, Item, Names, Role, Step};
 use crate::geom::{Arc, DVec2, Segment, Side};
 use std::f64::consts::TAU;
 
+/// Label points closer than this on the sheet are one point: their labels are joined, mm —
+/// the drafting resolution a length is read to (0,5 mm, [`Drafting::HAND`]): points that
+/// far apart are drawn apart, and "≡" joins only points that coincide on the drawing (the
+/// tangent's `p ≡ a ≡ k` over 3,2 and 1,6 mm, issue 45).
+pub const COINCIDENT_MM: f64 = Drafting::HAND.resolution_mm();
 /// ГОСТ 2.304 size of labels (height of capitals), mm.
 pub const LABEL_HEIGHT_MM: f64 = 3.5;
 /// ГОСТ 2.304 size of view captions, mm.

@@ -53,10 +53,9 @@ pub use dxf::{to_dxf, DxfLayer, CURVE_TOLERANCE_MM};
 pub(crate) use fonts::faces as bundled_faces;
 pub use fonts::font_database;
 pub use ink::{view_ink, Cell};
-pub use items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
+pub use items::{CAPTION_HEIGHT_MM, COINCIDENT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
 pub use labels::{
-    layout, struck_dimension_texts, Layout, Leader, PlacedLabel, ViewLayout, COINCIDENT_MM,
-    JOINT_SEPARATOR,
+    layout, struck_dimension_texts, Layout, Leader, PlacedLabel, ViewLayout, JOINT_SEPARATOR,
 };
 pub use pdf::{plates_to_pdf, to_pdf, to_pdf_parsed, PdfError};
 pub use raster::{

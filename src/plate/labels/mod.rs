@@ -14,22 +14,17 @@
 //! object takes a leader line to it where one costs less ([`Leader`], ГОСТ 2.316). Crowded labels are placed first; the order is deterministic, so is the layout.
 //! The SVG writer writes the texts from this layout, and the tests check its boxes.
 
-use super::items::{short_vector, step_outlines, Outline, Shape, JOINT_RADIUS_MM};
+use super::items::{short_vector, step_outlines, Outline, Shape, COINCIDENT_MM, JOINT_RADIUS_MM};
 use super::items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
 use super::path::Map;
 use super::style::{Mark, Pen};
 use super::table::table_marks;
 use super::text::{measure, plain, Align, Extent, Placed};
 use super::{Plate, Rect, TextBlock, View, CAPTION_BAND_MM};
-use crate::construct::{Drafting, Item, Label, Names, StepId};
+use crate::construct::{Item, Label, Names, StepId};
 use crate::geom::DVec2;
 use std::f64::consts::{FRAC_PI_4, TAU};
 
-/// Label points closer than this on the sheet are one point: their labels are joined, mm —
-/// the drafting resolution a length is read to (0,5 mm, [`Drafting::HAND`]): points that
-/// far apart are drawn apart, and "≡" joins only points that coincide on the drawing (the
-/// tangent's `p ≡ a ≡ k` over 3,2 and 1,6 mm, issue 45).
-pub const COINCIDENT_MM: f64 = Drafting::HAND.resolution_mm();
 /// How a joint label joins its names.
 pub const JOINT_SEPARATOR: &str = " ≡ ";
 /// Each further ring of candidate positions lies this much further from the point, mm.
