@@ -170,14 +170,16 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
         Role::Construction,
         &[pid],
     );
-    let psi_at = |i: usize| FRAC_PI_2 + sigma * read_motion(d, i).s / arm;
-    let later: Vec<f64> = (1..points.len()).map(psi_at).collect();
+    let psi_of = |s: f64| FRAC_PI_2 + sigma * s / arm;
+    let later: Vec<f64> = (1..points.len())
+        .map(|i| psi_of(read_motion(d, i).s))
+        .collect();
     let begin = fan_start(later, (FAN_CLEAR_MM, l / 3.0)).max(FAN_CLEAR_MM);
     let mut cons = Vec::new();
     let mut ks = Vec::new();
     for (i, p) in points.iter().enumerate() {
         let m = read_motion(d, i);
-        let psi = psi_at(i);
+        let psi = psi_of(m.s);
         let e = DVec2::from_angle(psi);
         let a = pivot + e * l;
         let k = a - e * (sigma * mu.to_mm(m.ds));

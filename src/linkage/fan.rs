@@ -2,9 +2,9 @@
 //! of a link turning about a pivot of the frame is a line from that pivot; when the links
 //! swing through a narrow angle, or a link with three hinges sends two sides to the pivot
 //! at every position (the six-bar's rocker DBC at D: 26 thin lines within 97°), the lines
-//! run together near the pivot and print there as a black spot. The draughtsman's rule is
-//! the one of the cam rocker's fan: the further positions begin where their lines stand
-//! apart — [`clearances`] finds that radius per pivot from the positions themselves, and the
+//! run together near the pivot and print there as a black spot. The draughtsman's rule
+//! (`geom::fan_start`, as for the cam rocker's fan): the further positions begin where their
+//! lines stand apart — [`clearances`] finds that radius per pivot from the positions, and the
 //! pen ([`trim`], [`trim_contour`]) starts the thin lines there. The given position, drawn
 //! with the main line, still runs to its pivot; a fan whose lines stand apart at the hinge
 //! (a crank's twelve positions) is not touched.
@@ -15,7 +15,8 @@ use super::program::Program;
 use super::rigid::AT_MM;
 use crate::geom::{fan_start, DVec2, SPOT_MM};
 
-/// The farthest a fan begins from its pivot, mm (as the cam rocker's fan).
+/// The farthest a plan's fan begins from its pivot, mm: its links are short beside a cam's
+/// rocker, and a hinge's lines 8 mm out already read as one fan.
 const MAX_CLEAR_MM: f64 = 8.0;
 
 /// Per fixed pivot whose fan is crowded, its point and the radius its thin lines begin at,

@@ -5,13 +5,13 @@
 //! struck through by a line of its own view.
 
 use super::leader::{self, Leader};
-use super::place::{clipped_area, clipped_length, own_distance, NEARER_MM};
+use super::place::{clipped_area, clipped_length, own_distance, written, NEARER_MM};
 use super::{shape_box, Outline, Request, Shape, LABEL_HEIGHT_MM};
 use crate::construct::{Item, Names};
 use crate::geom::DVec2;
 use crate::plate::items::{dimension_text, TextSpot};
 use crate::plate::path::Map;
-use crate::plate::text::{measure, Align, Placed};
+use crate::plate::text::{measure, Placed};
 use crate::plate::{Plate, Rect};
 
 /// Step of the slide along the dimension line, mm.
@@ -56,13 +56,7 @@ pub(super) fn placed(
         let Some(p) = dimension_text(map, dim, text, spot) else {
             continue;
         };
-        let b = p.bounds().inflate(CLEAR_MM);
-        let over: f64 = texts
-            .iter()
-            .map(|t| t.overlap(&b))
-            .filter(|&a| a > 0.0)
-            .map(|a| OVER_TEXT + a)
-            .sum();
+        let over = over_texts(texts, &p.bounds().inflate(CLEAR_MM));
         let ink = struck(&p, lines, CLEAR_MM) + over + wrong_line(&p.bounds(), lines, own);
         if ink == 0.0 {
             return Some((p, None));
@@ -74,8 +68,7 @@ pub(super) fn placed(
     }
     let (p, _) = best?;
     // Within the clearance of a line is kept; through a line or a text, a leader is taken.
-    let through =
-        struck(&p, lines, 0.0) > 0.0 || texts.iter().any(|t| t.overlap(&p.bounds()) > 0.0);
+    let through = struck(&p, lines, 0.0) + over_texts(texts, &p.bounds()) > 0.0;
     match through
         .then(|| on_leader(map, dim, text, lines, texts))
         .flatten()
@@ -118,15 +111,24 @@ fn on_leader(
         .into_iter()
         .enumerate()
         .filter_map(|(rank, (rect, l))| {
-            let p = Placed::new(rect.min - e.min, text, LABEL_HEIGHT_MM, Align::Start);
+            let p = written(text, &e, rect);
             let b = p.bounds().inflate(CLEAR_MM);
-            let clear =
-                struck(&p, lines, CLEAR_MM) == 0.0 && texts.iter().all(|t| t.overlap(&b) <= 0.0);
+            let clear = struck(&p, lines, CLEAR_MM) + over_texts(texts, &b) == 0.0;
             let cost = leader::cost(&l, &rect, &boxed, &[], texts, &[]);
             clear.then_some((cost + rank as f64 * leader::RANK, p, l))
         })
         .min_by(|a, b| a.0.total_cmp(&b.0))
         .map(|(_, p, l)| (p, l))
+}
+
+/// What a text whose box is `rect` costs for covering texts of `texts` (zero: it covers none).
+fn over_texts(texts: &[Rect], rect: &Rect) -> f64 {
+    texts
+        .iter()
+        .map(|t| t.overlap(rect))
+        .filter(|&a| a > 0.0)
+        .map(|a| OVER_TEXT + a)
+        .sum()
 }
 
 /// What a text whose box is `rect` costs for standing nearer another line of `lines` than

@@ -552,7 +552,7 @@ pub(crate) fn rect_segment_distance(r: &Rect, a: DVec2, b: DVec2) -> f64 {
 }
 
 /// The text written so that its box is `rect`.
-fn written(text: &str, e: &Extent, rect: Rect) -> Placed {
+pub(super) fn written(text: &str, e: &Extent, rect: Rect) -> Placed {
     Placed::new(rect.min - e.min, text, LABEL_HEIGHT_MM, Align::Start)
 }
 
