@@ -59,6 +59,7 @@ pub mod sheets;
 pub mod studio;
 pub mod study;
 pub mod threads;
+pub mod words;
 
 pub use check::Report;
 pub use check::{Key, Method, Row};

@@ -42,9 +42,7 @@ impl Quantity {
     /// The quantity in the textbook's notation in `lang` (label markup).
     pub fn notation(&self, lang: Lang) -> String {
         match &self.notation {
-            Notation::Row(symbol, subject) => {
-                crate::sheets::captions::quantity(*symbol, subject, lang)
-            }
+            Notation::Row(symbol, subject) => crate::words::quantity(*symbol, subject, lang),
             Notation::Column(markup) => markup.clone(),
         }
     }
@@ -208,7 +206,7 @@ fn column_quantity(name: &str, unit: &str, rows: &[Row]) -> Option<Quantity> {
             name: format!("{prefix}_{sub}"),
             unit: si,
             turn: head == "φ",
-            notation: Notation::Column(crate::sheets::captions::subscripted(name)),
+            notation: Notation::Column(crate::words::subscripted(name)),
         },
     })
 }

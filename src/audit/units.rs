@@ -76,7 +76,7 @@ pub fn normalise(written: &str) -> String {
         s = s.replace(from, to);
     }
     // The sheets' Cyrillic names, the longest first (кгс before кг, мм before м).
-    let mut words = crate::sheets::captions::UNIT_WORDS;
+    let mut words = crate::words::UNIT_WORDS;
     words.sort_by_key(|(_, cyrillic)| std::cmp::Reverse(cyrillic.chars().count()));
     for (latin, cyrillic) in words {
         s = s.replace(cyrillic, latin);

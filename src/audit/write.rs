@@ -5,8 +5,8 @@ use crate::plate::text::plain;
 use crate::plate::{Plate, SheetSize};
 use crate::scale::{format_sig, Lang};
 use crate::scene::Scene;
-use crate::sheets::captions::{AuditText as T, Text};
 use crate::sheets::BuildError;
+use crate::words::{AuditText as T, Text};
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -48,7 +48,7 @@ fn slip(s: &Slip, lang: Lang) -> String {
         Slip::Unit { meant } => format!(
             "{} {}",
             T::UnitSlip.get(lang),
-            crate::sheets::captions::unit_in(meant, lang)
+            crate::words::unit_in(meant, lang)
         ),
         Slip::Digits { edits, meant } => {
             let words: Vec<&str> = edits
@@ -423,7 +423,7 @@ pub fn to_sheet(scene: &Scene, audited: &[Audited], lang: Lang) -> Result<Vec<Pl
             let e = &a.entry;
             let unit = match e.unit.name {
                 "1" => String::new(),
-                name => crate::sheets::captions::unit_in(name, lang),
+                name => crate::words::unit_in(name, lang),
             };
             let quantity = match &a.checked {
                 Some(c) if c.reading == Reading::Magnitudes => {

@@ -10,10 +10,10 @@ use super::rows::{fmt, DIGITS};
 use super::{NoteError, Writer};
 use crate::check::{is_zero, Table};
 use crate::linkage::{Dyad, Mechanism};
-use crate::sheets::captions::{
+use crate::sheets::data::plain;
+use crate::words::{
     subscripted, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T,
 };
-use crate::sheets::data::plain;
 
 /// The analytic method: the slotted link's loop worked where the mechanism has one, then
 /// the analytic table.

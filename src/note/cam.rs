@@ -7,7 +7,7 @@ use super::{NoteError, Writer};
 use crate::cam::{Follower, Law, SpecialProfile};
 use crate::check::{Method, Symbol};
 use crate::scene::PlateKind;
-use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};
+use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
 
 /// The cam: the law, the diagrams, r_min, the profile and the transmission (pressure)
 /// angle, Table 7.

@@ -6,8 +6,8 @@
 use super::markup::{frac, num, sym, unit};
 use super::{NoteError, Writer};
 use crate::cam::{Special, SpecialProfile};
-use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};
 use crate::study::StudyError;
+use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
 use std::f64::consts::TAU;
 
 /// The worked formulas of `cam`.

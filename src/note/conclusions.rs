@@ -6,8 +6,8 @@ use super::markup::{label, text, Align};
 use super::rows::{fmt, percent};
 use super::Writer;
 use crate::check::{Method, Symbol};
-use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
 use crate::sheets::data::mm;
+use crate::words::{quantity, unit_in, NoteText as T, Text as S};
 
 /// The conclusions: the error of every graphical method against the analytic twin (the
 /// seed's §1.6, for every quantity of the project), then what the project does not
@@ -96,7 +96,7 @@ fn sign_off(w: &mut Writer<'_, '_>) {
     if w.practicum_form().is_none() {
         return;
     }
-    use crate::sheets::captions::GenreText as G;
+    use crate::words::GenreText as G;
     let t = w.session.scene().title.in_lang(w.lang);
     // A signature's or a date's line, drawn (no underscores in the text).
     let line = "#box(width: 35mm, stroke: (bottom: 0.5pt))";

@@ -10,11 +10,11 @@ use super::Writer;
 use crate::check::{Method, Row, Symbol};
 use crate::kinematics::Diagrams;
 use crate::scale::format_fixed;
-use crate::sheets::captions::{
-    quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
-};
 use crate::sheets::data::plain;
 use crate::study::Kinematics;
+use crate::words::{
+    quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
+};
 
 /// The diagrams by the method of chords, when the study charts a point.
 pub(super) fn diagrams(w: &mut Writer<'_, '_>, kin: &Kinematics, at: Option<&str>) {

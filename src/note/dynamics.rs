@@ -13,7 +13,7 @@ use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
 use crate::dynamics::{Breakdown, Dynamics, LinkShare};
 use crate::scene::PlateKind;
-use crate::sheets::captions::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+use crate::words::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
 
 /// The loads over the cycle (a resistance acts on the working stroke only) and the links
 /// that count.
@@ -73,7 +73,7 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     // The flywheel's part drawing (a sheet of its own) beside its sizing, then the dynamics
     // sheet's diagrams: the section ends on a small figure, not on a page-high one floated
     // past the next heading.
-    let part = w.word(crate::sheets::captions::DynamicsText::Flywheel);
+    let part = w.word(crate::words::DynamicsText::Flywheel);
     w.figures((PlateKind::Flywheel, None), |_| true, |_| part.to_string());
     w.figures((PlateKind::Dynamics, None), |_| true, |own| own.to_string());
     Ok(())

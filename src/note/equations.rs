@@ -8,8 +8,8 @@ use super::markup::{inline, label, sym, text, Align, Cell};
 use super::Writer;
 use crate::linkage::{DyadKind, GroupInfo, Mechanism};
 use crate::scale::Lang;
-use crate::sheets::captions::{KinematicsNote as K, NoteText as T};
 use crate::sheets::data::plain;
+use crate::words::{KinematicsNote as K, NoteText as T};
 
 /// A point as an equation names it (`B_{3}`) and the mechanism's point it is (`B`).
 type Named = (String, String);
@@ -275,7 +275,7 @@ pub(super) fn equations(w: &mut Writer<'_, '_>, m: &Mechanism, groups: &[GroupIn
         let eqs = velocity_equations(g, lang);
         w.doc.par(&[text(&format!(
             "{} ({}, {}):",
-            w.word(crate::sheets::captions::Text::Group),
+            w.word(crate::words::Text::Group),
             g.links[0],
             g.links[1]
         ))]);

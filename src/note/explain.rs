@@ -7,7 +7,7 @@
 
 use super::markup::{label, sym};
 use super::Writer;
-use crate::sheets::captions::unit_in;
+use crate::words::unit_in;
 use std::collections::HashSet;
 
 /// What the note has explained so far, and what it left unexplained.

@@ -9,7 +9,7 @@ use super::markup::{frac, inline, label, num, sym, text, unit};
 use super::moments::{explain_words, fill};
 use super::Writer;
 use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
-use crate::sheets::captions::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+use crate::words::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
 
 /// J_м by each textbook route, worked from what its diagram gives.
 pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {

@@ -8,7 +8,7 @@ use super::markup::{frac, num, sym, unit};
 use super::worked::{deg, worked};
 use super::Writer;
 use crate::friction::{guide_twin, pivot_twin, FollowerGuide, RockerPivot};
-use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};
+use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
 
 /// A translating follower in its guide: P, N₁, N₂, R₁, R₂ and λ_кр.
 pub(super) fn guide(w: &mut Writer<'_, '_>, c: &FollowerGuide) {

@@ -12,7 +12,7 @@ use crate::friction::{
     incline_twin, journal_twin, rolling_twin, screw_twin, slider_twin, wedge_twin, CaseKind,
     Incline, Journal, Motion, Rolling, Screw, Slider, SliderState, Wedge,
 };
-use crate::sheets::captions::{unit_in, CaseMeaning as M, CaseText as C, FrictionText};
+use crate::words::{unit_in, CaseMeaning as M, CaseText as C, FrictionText};
 
 /// Every case of the scene's friction under its title line (`Случай n: …`, as the sheet
 /// numbers it), worked; a cam follower's case by [`super::friction`].

@@ -5,7 +5,7 @@ use super::markup::{label, string, text, Align};
 use super::Writer;
 use crate::scale::Lang;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{unit_in, NoteText as T, Text as S};
+use crate::words::{unit_in, NoteText as T, Text as S};
 
 /// The page rules (`template.typ`) after the title block's data.
 pub(super) fn preamble(w: &mut Writer<'_, '_>) {
@@ -67,7 +67,7 @@ pub(super) fn title_page(w: &mut Writer<'_, '_>) {
     };
     let supervisor = match w.genre() {
         crate::scene::Genre::CourseProject => w.word(T::Supervisor),
-        _ => w.word(crate::sheets::captions::GenreText::Checked),
+        _ => w.word(crate::words::GenreText::Checked),
     };
     let mut body = String::from(
         "#page(margin: (x: 20mm, y: 20mm))[\n#set par(first-line-indent: 0mm, justify: false)\n",
@@ -89,7 +89,7 @@ pub(super) fn title_page(w: &mut Writer<'_, '_>) {
         format!("#text(size: 14pt)[{}]", line(w.document_of())),
     ];
     if let Some((topic, _)) = w.practicum_form() {
-        let g = crate::sheets::captions::GenreText::Topic;
+        let g = crate::words::GenreText::Topic;
         centre.push(format!(
             "#v(6mm) #text(size: 14pt)[{} {}]",
             line(w.word(g)),
@@ -143,7 +143,7 @@ pub(super) fn contents(w: &mut Writer<'_, '_>) {
 pub(super) fn task(w: &mut Writer<'_, '_>) {
     w.section(T::Task);
     if let Some((_, goal)) = w.practicum_form() {
-        let lead = w.word(crate::sheets::captions::GenreText::Goal);
+        let lead = w.word(crate::words::GenreText::Goal);
         w.doc.say(&format!("{lead} {goal}"));
     }
     let scene = w.session.scene();
@@ -163,7 +163,7 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         let caption = if f.indicators.is_empty() {
             w.word(T::ForcesData)
         } else {
-            w.word(crate::sheets::captions::GenreText::EngineForcesData)
+            w.word(crate::words::GenreText::EngineForcesData)
         };
         table_of_data(w, caption, &crate::sheets::data::forces(f, w.lang));
     }
@@ -176,7 +176,7 @@ pub(super) fn task(w: &mut Writer<'_, '_>) {
         w.doc.say(w.word(T::FrictionTask));
         for (n, case) in scene.friction.iter().enumerate() {
             let name = crate::sheets::friction::case_name(&case.kind, w.lang);
-            let case_word = w.word(crate::sheets::captions::FrictionText::Case);
+            let case_word = w.word(crate::words::FrictionText::Case);
             w.doc.raw(&format!(
                 "- #{}",
                 text(&format!("{case_word} {}: {name}.", n + 1))

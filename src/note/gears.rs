@@ -9,7 +9,7 @@ use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
 use crate::gears::{inv, Generation, Pair};
 use crate::scene::PlateKind;
-use crate::sheets::captions::{unit_in, Meaning as M, NoteText as T, Text as S};
+use crate::words::{unit_in, Meaning as M, NoteText as T, Text as S};
 
 /// The gears section.
 pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {

@@ -6,7 +6,7 @@
 use super::Writer;
 use crate::scale::Lang;
 use crate::scene::{Genre, Practicum};
-use crate::sheets::captions::{GenreText as G, NoteText as T};
+use crate::words::{GenreText as G, NoteText as T};
 
 impl Writer<'_, '_> {
     /// The scene's genre.

@@ -8,7 +8,7 @@ use super::markup::{label, num, sym, text, Align};
 use super::{NoteError, Writer};
 use crate::linkage::Structure;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{Meaning, NoteText as T, Text as S};
+use crate::words::{Meaning, NoteText as T, Text as S};
 
 /// The structural analysis.
 pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {

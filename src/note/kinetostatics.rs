@@ -15,9 +15,7 @@ use crate::check::{Method, Row, Symbol};
 use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
 use crate::geom::DVec2;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{
-    quantity, unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T,
-};
+use crate::words::{quantity, unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
 
 /// The kinetostatics: every analysed position in turn.
 pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {

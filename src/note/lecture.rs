@@ -13,7 +13,7 @@ use crate::balancing::{
 use crate::check::Symbol;
 use crate::geom::DVec2;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{unit_in, CaseMeaning as M, CaseText as C, NoteText as T};
+use crate::words::{unit_in, CaseMeaning as M, CaseText as C, NoteText as T};
 
 /// The balancing and friction studies of a scene that has them.
 pub(super) fn others(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {

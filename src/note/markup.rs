@@ -5,7 +5,7 @@
 
 use crate::plate::text::{parse, Script};
 use crate::scale::{format_sig_from, Lang};
-use crate::sheets::captions::symbols::cyrillic;
+use crate::words::symbols::cyrillic;
 
 /// A Typst string literal of `text`.
 pub(super) fn string(text: &str) -> String {
@@ -392,7 +392,7 @@ impl Markup {
 
 /// The note's Typst source with every subscript and superscript a label or a symbol set
 /// (`#sub("и3")`, `#super("тр")`, `_(#qs[#"и3"])`) in the textbook notation of `lang` (`F_{и3}` is `F_{i3}` in English), as
-/// every sheet's text is ([`crate::sheets::captions::symbols`]).
+/// every sheet's text is ([`crate::words::symbols`]).
 pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
     let mut out = String::with_capacity(source.len());
     let mut rest = source;
@@ -418,7 +418,7 @@ pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
             return out;
         };
         out.push_str(&rest[..body]);
-        out.push_str(&crate::sheets::captions::symbols::script(
+        out.push_str(&crate::words::symbols::script(
             &rest[body..body + len],
             lang,
         ));

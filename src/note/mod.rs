@@ -8,7 +8,7 @@
 //! [`compose`] writes the note as Typst markup with its figures (SVG, one per view cut out of
 //! its sheet); [`to_pdf`] typesets it with the `typst` crate and bundled fonts only. A4
 //! portrait, ГОСТ 2.105 text rules, ГОСТ 2.104 frames: form 2 on the first text page, form 2a
-//! on the following ones. The words are the sheets' catalogue's (`sheets::captions`).
+//! on the following ones. The words are the catalogue's ([`crate::words`]).
 
 mod analytic;
 mod cam;
@@ -47,10 +47,10 @@ use crate::check::Report;
 use crate::plate::{self, Plate};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
-use crate::sheets::captions::{NoteText, Word};
 use crate::sheets::data::{data_block, DataPart};
 use crate::sheets::{self, BuildError};
 use crate::study::{Session, StudyError};
+use crate::words::{NoteText, Word};
 use markup::Markup;
 use thiserror::Error;
 

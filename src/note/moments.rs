@@ -7,7 +7,7 @@
 use super::markup::{frac, label, num, sym, text, unit};
 use super::Writer;
 use crate::forces::{Load, LoadKind, MomentEquation, MomentTerm, Unknown};
-use crate::sheets::captions::{unit_in, MachinesMeaning as M, MachinesNote as N};
+use crate::words::{unit_in, MachinesMeaning as M, MachinesNote as N};
 
 /// `template` with each `{key}` replaced by its value.
 pub(super) fn fill(template: &str, pairs: &[(&str, String)]) -> String {

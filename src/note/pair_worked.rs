@@ -6,7 +6,7 @@ use super::worked::{deg, worked, INV};
 use super::Writer;
 use crate::gears::{inv, Pair};
 use crate::scale::Lang;
-use crate::sheets::captions::{unit_in, Meaning as M, NoteText as T};
+use crate::words::{unit_in, Meaning as M, NoteText as T};
 
 /// How the worked formulas write their numbers: five significant digits, lengths in mm.
 struct Nums {

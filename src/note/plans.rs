@@ -11,11 +11,11 @@ use super::rows::{numbers, values_and_errors, Column, DIGITS};
 use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::linkage::{Mechanism, PlanPosition, Structure};
-use crate::sheets::captions::{
-    quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
-};
 use crate::sheets::data::plain;
 use crate::study::Kinematics;
+use crate::words::{
+    quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
+};
 
 /// What the plans' subsections read: the study, the mechanism, its structure and the
 /// worked position.

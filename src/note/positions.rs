@@ -8,10 +8,8 @@ use super::{NoteError, Writer};
 use crate::check::is_zero;
 use crate::linkage::{Dyad, Extremes, Mechanism, OutputCoord};
 use crate::scale::{format_fixed, Lang};
-use crate::sheets::captions::{
-    KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
-};
 use crate::sheets::data::{plain, spans, Span};
+use crate::words::{KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S};
 use std::f64::consts::PI;
 
 /// The plan of positions: μ_l, the drawn lengths, the stroke, θ and K, the figure.

@@ -5,7 +5,7 @@
 
 use super::Writer;
 use crate::scene::{Genre, Practicum};
-use crate::sheets::captions::{unit_in, GenreText as G};
+use crate::words::{unit_in, GenreText as G};
 
 /// The form's own summary of a practical work, before the table of errors.
 pub(super) fn summary(w: &mut Writer<'_, '_>) {

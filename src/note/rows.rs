@@ -5,16 +5,16 @@ use super::markup::{label, power_of_ten, text, Align, LEAST_PLAIN};
 use super::Writer;
 use crate::check::{is_zero, Method, Row, ZERO_FRACTION};
 use crate::scale::format_sig_from;
-use crate::sheets::captions::{quantity, unit_in, NoteText as T, Text as S};
+use crate::words::{quantity, unit_in, NoteText as T, Text as S};
 
-pub(super) use crate::report::md_percent as percent;
+pub(super) use crate::words::md_percent as percent;
 
 /// A value as the note prints it: to `sig` significant digits, below 0,001 as a power of ten
 /// (`1,44133·10⁻⁸`, the superscript set by the note's markup; ГОСТ 2.105 has neither the
 /// `e` form nor runs of zeros, [`LEAST_PLAIN`]); `—` for no number.
 pub(super) fn fmt(x: f64, sig: usize, lang: crate::scale::Lang) -> String {
     if !x.is_finite() {
-        return crate::report::md_value(x, sig, lang);
+        return crate::words::md_value(x, sig, lang);
     }
     power_of_ten(&format_sig_from(x, sig, lang, LEAST_PLAIN))
 }

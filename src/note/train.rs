@@ -9,7 +9,7 @@ use super::markup::{frac, num, sym, unit};
 use super::worked::worked;
 use super::Writer;
 use crate::gears::{Stage, Train, TrainStudy};
-use crate::sheets::captions::{unit_in, CaseMeaning as M, NoteText as T};
+use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
 
 /// A number of the worked formulas.
 fn n(x: f64, lang: crate::scale::Lang) -> String {

@@ -11,7 +11,7 @@ use super::{NoteError, Writer};
 use crate::check::Method;
 use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
 use crate::geom::DVec2;
-use crate::sheets::captions::{
+use crate::words::{
     unit_in, KinematicsMeaning as K, MachinesMeaning as M, MachinesNote as N, NoteText as T,
 };
 

@@ -1,14 +1,13 @@
 //! The writers of a [`Report`](crate::check::Report): JSON, CSV and Markdown.
 
 use crate::check::{Column, Method, Report, Summary, SummaryEntry, Table};
-use crate::scale::{format_sig, residue_to_zero, Lang};
+use crate::scale::{format_sig, Lang};
+use crate::words::number::{md_percent, md_value, ERROR_DIGITS};
 use serde::Serialize;
 use std::fmt::Write as _;
 
 /// Significant digits of values in Markdown.
 const VALUE_DIGITS: usize = 6;
-/// Significant digits of errors in Markdown.
-const ERROR_DIGITS: usize = 3;
 
 /// `Some(x)` for a finite `x`, else `None` (written as `null`).
 pub(crate) fn finite(x: f64) -> Option<f64> {
@@ -285,21 +284,6 @@ pub(crate) fn md_header(out: &mut String, names: &[&str]) {
 /// A Markdown table row of ready cells.
 pub(crate) fn md_row(out: &mut String, cells: &[String]) {
     let _ = writeln!(out, "| {} |", cells.join(" | "));
-}
-
-/// A value of a row: "—" where it does not exist (the analytic rate at a change point is NaN).
-pub(crate) fn md_value(x: f64, sig: usize, lang: Lang) -> String {
-    if x.is_finite() {
-        format_sig(x, sig, lang)
-    } else {
-        "—".into()
-    }
-}
-
-/// A relative error in %, to [`ERROR_DIGITS`] significant digits; a rounding residue (at most
-/// 1e-9 of the value, [`residue_to_zero`]) is 0 — the construction at drafting 0 is exact.
-pub(crate) fn md_percent(rel: f64, lang: Lang) -> String {
-    format_sig(residue_to_zero(rel, 1.0) * 100.0, ERROR_DIGITS, lang)
 }
 
 fn md_number(x: Option<f64>, sig: usize, lang: Lang) -> String {

@@ -28,4 +28,4 @@ mod notes;
 pub(crate) mod tests;
 
 pub use format::CSV_HEADER;
-pub(crate) use format::{finite, json, md_cell, md_header, md_percent, md_row, md_value};
+pub(crate) use format::{finite, json, md_cell, md_header, md_row};

@@ -3,13 +3,13 @@
 //! smallest landscape sheet from A3 up as wide as it (further sheets when the class is long);
 //! and [`table_sheet`], a table on sheets, which `tmm audit`'s marked-up table shares.
 
-use super::captions::{unit_in, Text};
 use super::layout::{lay_out, quantity, Block};
 use super::BuildError;
 use crate::check::Row;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_sig, Lang, Quantity, Scale};
 use crate::scene::Scene;
+use crate::words::{unit_in, Text};
 
 /// The sheets tried, smallest first.
 const SIZES: [SheetSize; 3] = [SheetSize::A3, SheetSize::A2, SheetSize::A1];

@@ -3,7 +3,6 @@
 //! of moments), the data and results, and a table of the corrections read off the polygons
 //! against their analytic twin. The smallest landscape sheet from A3 up that holds it all.
 
-use super::captions::{unit_in, RotorText, Text};
 use super::layout::{keyed, lay_out_smallest, results_table, Block, Column, Results};
 use super::BuildError;
 use crate::balancing::{Balancing, Correction, Plane};
@@ -11,6 +10,7 @@ use crate::check::{Row, Symbol};
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, Key, Lang};
 use crate::study::Session;
+use crate::words::{unit_in, RotorText, Text};
 
 /// The sheets tried, smallest first.
 const SIZES: [SheetSize; 3] = [SheetSize::A3, SheetSize::A2, SheetSize::A1];

@@ -4,7 +4,6 @@
 //! circles and both profiles, the angle graph, the data and the table of the points.
 
 use super::cam_marks;
-use super::captions::{unit_in, CamText, Text};
 use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
 use crate::cam::{
@@ -15,6 +14,7 @@ use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock, CAPTION_BAND_MM};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
 use crate::study::Session;
+use crate::words::{unit_in, CamText, Text};
 
 /// Text height of the data lines and the tables, mm.
 const TEXT_MM: f64 = 3.5;

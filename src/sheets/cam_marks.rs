@@ -6,11 +6,11 @@
 //! textbooks' symbols; here they get the sheet's words and numbers, one place for the cam
 //! sheet and the note.
 
-use super::captions::CamText;
 use super::digits;
 use crate::cam::{Cam, CamSpec, PHASE_NOTES};
 use crate::construct::Figure;
 use crate::scale::{format_sig, Lang};
+use crate::words::CamText;
 
 /// The symbols of the phases in `lang`: rise, far dwell, return, near dwell.
 fn phase_symbols(lang: Lang) -> [&'static str; 4] {

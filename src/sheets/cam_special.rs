@@ -6,7 +6,6 @@
 
 use super::cam::{diagram_block, law_lines, mu, one_sheet, points_tables, results_table};
 use super::cam_marks;
-use super::captions::{unit_in, CamText, Text};
 use super::layout::{keyed, Block};
 use super::BuildError;
 use crate::cam::{Follower, Special, SpecialProfile, TRAVEL_NOTE};
@@ -14,6 +13,7 @@ use crate::check::Finding;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Key, Lang};
 use crate::study::{Session, StudyError};
+use crate::words::{unit_in, CamText, Text};
 
 /// Text height of the data lines, mm.
 const TEXT_MM: f64 = 3.5;

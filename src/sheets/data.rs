@@ -3,13 +3,13 @@
 //! inertia, working resistances). One place for the note's task tables and the task sheet
 //! of `tmm batch`.
 
-use super::captions::{GearText, NoteText, Text};
 use crate::forces::{Action, ForceSpec};
 use crate::gears::GearsSpec;
 use crate::linkage::{Dyad, Mechanism};
 use crate::plate::Plate;
-use crate::report::md_value as fmt;
 use crate::scale::Lang;
+use crate::words::md_value as fmt;
+use crate::words::{GearText, NoteText, Text};
 
 /// One line of data: symbol (label markup), value, unit (as `unit_in` takes it).
 pub type DataRow = (String, String, String);

@@ -3,8 +3,8 @@
 //! millimetres with its unit — so that no text block prints six or seven digits, nor a
 //! length in metres with a run of zeros (`0,004975 м` is `4,975 мм`).
 
-use super::captions::unit_in;
 use crate::scale::{format_fixed, format_sig, Lang};
+use crate::words::unit_in;
 
 /// Significant digits of a value in a sheet's text.
 pub(crate) const SIG: usize = 4;

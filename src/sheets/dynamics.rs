@@ -5,7 +5,6 @@
 //! (graphical | analytic | error). One A1 sheet (more if the views need it); the flywheel's
 //! part drawing is a sheet of its own ([`super::flywheel`]).
 
-use super::captions::{unit_in, DynamicsText, Text};
 use super::digits::value as num;
 use super::layout::{keyed, lay_out, quantity, Block, Column, Results};
 use super::BuildError;
@@ -15,6 +14,7 @@ use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
 use crate::study::Session;
+use crate::words::{unit_in, DynamicsText, Text};
 
 /// Text height of the data lines and the tables, mm.
 const TEXT_MM: f64 = 3.5;
@@ -143,7 +143,7 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
     for c in &s.constant {
         // The part the inertia belongs to, named where the catalogue knows it: J_{ред}
         // (редуктор).
-        let part = crate::sheets::captions::symbols::part(&c.name, lang)
+        let part = crate::words::symbols::part(&c.name, lang)
             .map_or_else(String::new, |p| format!(" ({p})"));
         out.push(format!(
             "J_{{{}}}{part} = {} {kgm2}",

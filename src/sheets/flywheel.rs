@@ -6,7 +6,6 @@
 //! the dimensions with the proportions they follow. A scene whose machine needs no flywheel
 //! has no such sheet.
 
-use super::captions::{unit_in, DynamicsText};
 use super::layout::{lay_out_smallest, Block, Part};
 use super::BuildError;
 use crate::dynamics::{Dynamics, FlywheelKind};
@@ -14,6 +13,7 @@ use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang};
 use crate::study::Session;
+use crate::words::{unit_in, DynamicsText};
 
 /// The sheets tried, smallest first.
 const SIZES: [SheetSize; 2] = [SheetSize::A3, SheetSize::A2];

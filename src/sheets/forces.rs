@@ -6,7 +6,6 @@
 //! table of inertia loads and reactions (graphical | analytic | error) and the balancing
 //! moment by the polygon against the lever.
 
-use super::captions::{symbols, unit_in, Text};
 use super::layout::{lay_out, results_table, sheet_name, Block, Column, Results, ScaleKey};
 use super::BuildError;
 use crate::check::{Method, Row, Symbol};
@@ -17,6 +16,7 @@ use crate::linkage::Structure;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
 use crate::study::Session;
+use crate::words::{symbols, unit_in, Text};
 
 /// Height of the sheet's text and table, mm.
 const TEXT_MM: f64 = 3.5;

@@ -4,7 +4,6 @@
 //! table graphical | analytic | error. On one sheet: A2 landscape, A1 when the cases need more
 //! room; further sheets only when an A1 cannot hold them.
 
-use super::captions::{unit_in, FrictionText, Text};
 use super::digits::{degrees as deg, mm, value as num};
 use super::layout::{lay_out_smallest, Block, ScaleKey};
 use super::BuildError;
@@ -16,6 +15,7 @@ use crate::friction::{
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Key, Lang, Quantity};
 use crate::study::Session;
+use crate::words::{unit_in, FrictionText, Text};
 
 /// Text height of the sheet's lines and table, mm.
 const TEXT_MM: f64 = 3.5;

@@ -5,7 +5,6 @@
 //! cut wheels, no train) also draws the pair's blocking contour with the scene's point and
 //! the textbook's choices, and names them in its lines. A1 landscape.
 
-use super::captions::{unit_in, GearText};
 use super::layout::{
     drawn_value, lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey,
 };
@@ -18,6 +17,7 @@ use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_sig, Key, Lang};
 use crate::study::Session;
+use crate::words::{unit_in, GearText};
 
 /// Text height of the data lines and the table, mm.
 const TEXT_MM: f64 = 3.5;
@@ -383,8 +383,8 @@ impl Filling {
         let lang = self.lang;
         let f = |x: f64| format_sig(x, 4, lang);
         for (tag, ix) in b.points() {
-            let name = crate::gears::blocking::point_label(tag);
-            let head = if tag == crate::gears::blocking::POINT_TAGS[0] {
+            let name = crate::words::point_label(tag);
+            let head = if tag == crate::words::POINT_TAGS[0] {
                 format!("{}, {name}", GearText::Blocking.get(lang))
             } else {
                 name.to_string()

@@ -4,7 +4,6 @@
 //! The scales are the session's ([`Session::kin_scales`]: decided once, each fitted to its
 //! field), so the sheet draws the very plans the report reads.
 
-use super::captions::{symbols, unit_in, Text};
 use super::layout::{keyed, lay_out_in_rows, sheet_name, split_table, table, Block};
 use super::BuildError;
 use crate::check::Method;
@@ -13,6 +12,7 @@ use crate::linkage::KinPlan;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Quantity, Scale};
 use crate::study::{KinScales, Kinematics, Session};
+use crate::words::{symbols, unit_in, Text};
 
 /// The widest an analytic table may be drawn, mm (the A1 frame's width less margins); its
 /// columns are narrowed to 12 mm before any is left out.

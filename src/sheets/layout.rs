@@ -1,7 +1,6 @@
 //! What a sheet holds — views, stacks of views, text and tables — sized from what they really
 //! draw and laid out on as many sheets of a format as they need ([`super::pack`]).
 
-use super::captions::{symbols, Text, Word};
 use super::label_room;
 use super::pack::{pack, sheet_overflow};
 use super::BuildError;
@@ -14,6 +13,7 @@ use crate::plate::{
     CAPTION_HEIGHT_MM,
 };
 use crate::scale::{format_fixed, Key, Lang, Scale};
+use crate::words::{symbols, Text, Word};
 
 /// The scale a block is drawn at and the scene key that sets it, for the message when the
 /// block does not fit a sheet.

@@ -6,7 +6,6 @@ mod balancing;
 mod cam;
 pub(crate) mod cam_marks;
 mod cam_special;
-pub(crate) mod captions;
 pub(crate) mod data;
 mod digits;
 pub use answer_key::{answer_key, table_sheet, KeyLine};
@@ -158,12 +157,12 @@ pub(crate) enum Errs {
 }
 
 impl Errs {
-    fn word(self) -> captions::Text {
+    fn word(self) -> crate::words::Text {
         match self {
-            Self::PlansAndChords => captions::Text::ErrPlansAndChords,
-            Self::Plans => captions::Text::ErrPlans,
-            Self::Diagrams => captions::Text::ErrDiagrams,
-            Self::Rounding => captions::Text::ErrRounding,
+            Self::PlansAndChords => crate::words::Text::ErrPlansAndChords,
+            Self::Plans => crate::words::Text::ErrPlans,
+            Self::Diagrams => crate::words::Text::ErrDiagrams,
+            Self::Rounding => crate::words::Text::ErrRounding,
         }
     }
 }
@@ -175,14 +174,14 @@ fn drafting_line(d: crate::construct::Drafting, errs: Errs, lang: Lang) -> Strin
     if r > 0.0 {
         format!(
             "{} {} {}",
-            captions::Text::ReadTo.get(lang),
+            crate::words::Text::ReadTo.get(lang),
             crate::scale::format_sig(r, 3, lang),
-            captions::Text::Millimetre.get(lang)
+            crate::words::Text::Millimetre.get(lang)
         )
     } else {
         format!(
             "{}: {}",
-            captions::Text::ReadExactly.get(lang),
+            crate::words::Text::ReadExactly.get(lang),
             errs.word().get(lang)
         )
     }

@@ -1,7 +1,6 @@
 //! Plate "План положений": structural scheme and analysis, the plan of positions with its
 //! construction, trajectories and extreme positions, θ, H and K.
 
-use super::captions::Text;
 use super::digits::ANGLE_DECIMALS;
 use super::layout::{lay_out, Block, ScaleKey};
 use super::BuildError;
@@ -13,6 +12,7 @@ use crate::linkage::{DyadKind, FourBar, OutputCoord, PositionPlan, Relation, Str
 use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, Key, Lang, Quantity, Scale};
 use crate::study::Session;
+use crate::words::Text;
 use std::f64::consts::PI;
 
 /// The room of the structural scheme, mm.
@@ -156,7 +156,7 @@ fn structure_lines(st: &Structure, m: &crate::linkage::Mechanism, lang: Lang) ->
             "{} — {}: {}",
             r.name,
             Text::RedundantPair.get(lang),
-            super::captions::redundant_reason(&r.reason, lang)
+            crate::words::redundant_reason(&r.reason, lang)
         ));
     }
     v.push(format!(

@@ -5,11 +5,11 @@
 //! named points it starts from, and the figure's μ. The studio's replay shows it beside the
 //! drawing, step by step.
 
-use super::captions::{unit_in, StepText};
 use crate::construct::{Figure, Item, Names, Role, Step};
 use crate::geom::DVec2;
 use crate::plate::text::plain;
 use crate::scale::{format_sig, Lang, Quantity};
+use crate::words::{unit_in, StepText};
 
 /// How near a named point must be to a step's point to name it, figure mm.
 const SAME_POINT_MM: f64 = 0.05;

@@ -3,7 +3,6 @@
 //! need (lengths, ω₁, masses, moments of inertia, working resistances; the gears, the cam's
 //! phases and laws, the machine's ω_ср, δ and constant inertias), one page to hand out.
 
-use super::captions::{unit_in, NoteText, Text};
 use super::data::{data_block, forces, gears, mechanism, DataPart, DataRow};
 use super::layout::{lay_out_smallest, Block};
 use super::BuildError;
@@ -12,6 +11,7 @@ use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::study::Session;
+use crate::words::{unit_in, NoteText, Text};
 
 /// The sheets tried, smallest first.
 const SIZES: [SheetSize; 3] = [SheetSize::A4, SheetSize::A3, SheetSize::A2];

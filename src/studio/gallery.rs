@@ -5,7 +5,7 @@
 
 use crate::scale::Lang;
 use crate::scene::{self, PlateKind, Scene};
-use crate::sheets::captions::StudioText;
+use crate::words::StudioText;
 use serde::Serialize;
 use std::path::Path;
 

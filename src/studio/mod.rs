@@ -112,7 +112,7 @@ impl Studio {
 /// The page's words from the catalogue, as the script reads them: key → [ru, uk, en].
 fn words_json() -> String {
     use crate::scale::Lang;
-    let words: serde_json::Map<String, serde_json::Value> = crate::sheets::captions::STUDIO_KEYS
+    let words: serde_json::Map<String, serde_json::Value> = crate::words::STUDIO_KEYS
         .iter()
         .map(|(key, w)| {
             let all = [Lang::Ru, Lang::Uk, Lang::En].map(|l| w.get(l));

@@ -1,11 +1,12 @@
 //! The drawing of a study's contour: the axes x₁, x₂ with their ticks, every traced curve
 //! labelled, the admissible region's boundary bold, the scene's point and each choice.
 
-use super::study::{point_label, Study};
+use super::study::Study;
 use super::{levels, Kind};
 use crate::construct::{Figure, Item, Label, Role, Step, StepId};
 use crate::geom::{DVec2, Rect, Segment};
 use crate::scale::{format_sig, Lang, Scale};
+use crate::words::point_label;
 use std::f64::consts::PI;
 
 /// The words a drawing of the contour needs from the sheet's catalogue.

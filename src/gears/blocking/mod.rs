@@ -41,7 +41,7 @@ pub use choose::{Choice, Placement, Side, CHOICE_MARGIN};
 pub use figure::Words;
 pub use indices::{twin_deviation, twin_margin, twin_pair, twin_rho_l, twin_value, Indices};
 pub use plane::{distance_to, inside_rings};
-pub use study::{criterion_tag, point_label, Studies, Study, POINT_TAGS};
+pub use study::{criterion_tag, Studies, Study};
 pub use trace::{twin_check, Contour};
 
 use super::involute::inv;

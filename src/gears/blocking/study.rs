@@ -11,6 +11,7 @@ use crate::check::{Key, Method, Row, Symbol};
 use crate::gears::PairSpec;
 use crate::geom::DVec2;
 use crate::kept::Recent;
+use crate::words::POINT_TAGS;
 use rayon::prelude::*;
 
 /// The studies a [`Studies`] keeps.
@@ -276,22 +277,6 @@ fn point(ix: &Indices) -> Point {
         eps: ix.eps,
         sa: ix.sa,
         lambda: ix.lambda,
-    }
-}
-
-/// The tags of the points of [`Study::points`] in row subjects: the scene's point and each
-/// criterion's ([`criterion_tag`]).
-pub const POINT_TAGS: [&str; 4] = ["bz", "beps", "bsl", "bsum"];
-
-/// The short label of a point of [`Study::points`] on the drawing (the sheet's lines give
-/// its x₁, x₂ and indices under the same name): K the scene's point, ε_{α max}, λ (equal
-/// sliding), x_{Σ max}.
-pub fn point_label(tag: &str) -> &'static str {
-    match tag {
-        "bz" => "K",
-        "beps" => "ε_{α max}",
-        "bsl" => "λ_1 = λ_2",
-        _ => "x_{Σ max}",
     }
 }
 

@@ -1,7 +1,7 @@
 //! No English sentence built outside the report writer: a scan of `src/` for string literals
 //! that build text (`format!`, `write!`, `push_str`, `.to_string()`, `.into()` …) and read as
 //! an English sentence (four or more lower-case words in a row). The writer (`src/report/`),
-//! the word catalogue (`src/sheets/captions/`) and test code are not scanned; every other
+//! the word catalogue (`src/words/`) and test code are not scanned; every other
 //! file that still builds such text is listed in [`ALLOWED`] with its count and the reason,
 //! and the test fails when a file builds more or fewer than listed — a note's sentence
 //! written in a study fails it, and a file that sheds its sentences must leave the list.
@@ -253,7 +253,7 @@ fn english_builders() -> BTreeMap<String, usize> {
             .map_or_else(|_| path.display().to_string(), |p| p.display().to_string());
         // A whole file of tests (`#[cfg(test)] mod …_tests;`) is test code too.
         let test_file = rel.ends_with("_tests.rs") || rel.ends_with("/tests.rs");
-        if rel.starts_with("src/report/") || rel.starts_with("src/sheets/captions/") || test_file {
+        if rel.starts_with("src/report/") || rel.starts_with("src/words/") || test_file {
             continue;
         }
         let Ok(src) = std::fs::read_to_string(&path) else {

@@ -4,7 +4,7 @@
 // program's own, its texts escaped by the SVG writer.
 "use strict";
 
-// The page's words, from the catalogue (`sheets/captions/studio.rs`): key → [ru, uk, en].
+// The page's words, from the catalogue (`words/studio.rs`): key → [ru, uk, en].
 const WORDS = window.TMM_WORDS;
 const LANGS = ["ru", "uk", "en"];
 

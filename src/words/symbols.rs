@@ -5,7 +5,7 @@
 //! Russian spelling for a quantity ([`quantity`]), then every Russian subscript through the
 //! table [`SUBSCRIPTS`] ([`localise`]), which every sheet's text passes on its way out.
 
-use crate::check::Symbol;
+use super::Symbol;
 use crate::scale::Lang;
 
 /// The Russian textbooks' subscripts (and superscripts) with their Ukrainian and English
@@ -92,7 +92,7 @@ pub(crate) fn script(text: &str, lang: Lang) -> String {
 }
 
 /// Label markup with every braced subscript and superscript (`_{и3}`, `^{тр}`) in `lang`.
-pub(in crate::sheets) fn localise(markup: &str, lang: Lang) -> String {
+pub(crate) fn localise(markup: &str, lang: Lang) -> String {
     if lang == Lang::Ru || !markup.chars().any(cyrillic) {
         return markup.to_string();
     }
@@ -150,7 +150,7 @@ fn russian(symbol: Symbol, subject: &str) -> String {
     // A value at a point of the blocking contour: its own symbol, the point named after it
     // as the contour's drawing names it: ε_{α} (K), x_{1} (ε_{α max}).
     if let Some((own, tag)) = blocking_point(subject) {
-        let point = crate::gears::blocking::point_label(tag);
+        let point = super::point_label(tag);
         return format!("{} ({point})", russian(symbol, own));
     }
     // A translating cam's shortest travel: X_{min}.
@@ -202,12 +202,10 @@ fn russian(symbol: Symbol, subject: &str) -> String {
 
 /// The subject of a value at a point of the blocking contour (`alpha_beps`, `1_bsl`, `bz`)
 /// split into the quantity's own subject and the point's tag
-/// ([`crate::gears::blocking::Study::points`]).
+/// ([`POINT_TAGS`](super::POINT_TAGS)).
 fn blocking_point(subject: &str) -> Option<(&str, &str)> {
     let (own, tag) = subject.rsplit_once('_').unwrap_or(("", subject));
-    crate::gears::blocking::POINT_TAGS
-        .contains(&tag)
-        .then_some((own, tag))
+    super::POINT_TAGS.contains(&tag).then_some((own, tag))
 }
 
 /// A quantity's own subscript `own` and the wheel it belongs to (`rest` is `_name` or
@@ -266,8 +264,8 @@ fn letter(symbol: Symbol) -> &'static str {
 
 #[cfg(test)]
 mod tests {
+    use super::Symbol;
     use super::{localise, quantity, subscripted};
-    use crate::check::Symbol;
     use crate::scale::Lang;
 
     #[test]

@@ -1,9 +1,13 @@
-//! The captions, words and symbols of the sheets in the three languages, in one catalogue:
-//! the words of the linkage sheets and those every sheet shares ([`Text`]), the words of
-//! each machine sheet ([`machines`]), and the textbook's symbols with their subscripts
-//! ([`symbols`]). A sheet writes no word of its own.
+//! The words and the numbers every writer shares, on the ground floor beside `scale`: the
+//! captions, words and symbols of the sheets, the note, the audit and the studio in the three
+//! languages, in one catalogue — the words of the linkage sheets and those every sheet shares
+//! ([`Text`]), the words of each machine sheet ([`machines`]), the textbook's symbols with
+//! their subscripts ([`symbols`], [`Symbol`]), the blocking contour's points
+//! ([`blocking_points`]) — and the numbers of the tables as they are written ([`number`]).
+//! A sheet or a note writes no word of its own; this room imports nothing but `scale`.
 
 mod audit;
+mod blocking_points;
 mod linkage;
 mod machines;
 mod meaning_cases;
@@ -15,15 +19,17 @@ mod note_cases;
 mod note_genres;
 mod note_kinematics;
 mod note_machines;
+pub(crate) mod number;
 mod protocol;
 mod studio;
+mod symbol;
 pub(crate) mod symbols;
 
 pub(crate) use audit::AuditText;
+pub(crate) use blocking_points::{point_label, POINT_TAGS};
 pub(crate) use linkage::{redundant_reason, Text};
 pub(crate) use machines::DynamicsText;
-pub(super) use machines::{CamText, RotorText};
-pub(crate) use machines::{FrictionText, GearText};
+pub(crate) use machines::{CamText, FrictionText, GearText, RotorText};
 pub(crate) use meaning_cases::CaseMeaning;
 pub(crate) use meaning_kinematics::KinematicsMeaning;
 pub(crate) use meaning_machines::MachinesMeaning;
@@ -33,8 +39,10 @@ pub(crate) use note_cases::CaseText;
 pub(crate) use note_genres::GenreText;
 pub(crate) use note_kinematics::KinematicsNote;
 pub(crate) use note_machines::MachinesNote;
+pub(crate) use number::{md_percent, md_value};
 pub(crate) use protocol::StepText;
 pub(crate) use studio::{StudioText, STUDIO_KEYS};
+pub use symbol::Symbol;
 pub(crate) use symbols::{quantity, subscripted};
 
 /// A word of the catalogue: its text in a language.
@@ -70,7 +78,7 @@ macro_rules! catalogue {
             }
         }
 
-        impl super::Word for $name {
+        impl crate::words::Word for $name {
             fn get(self, lang: crate::scale::Lang) -> &'static str {
                 $name::get(self, lang)
             }
