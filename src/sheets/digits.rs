@@ -32,6 +32,50 @@ pub(crate) fn error_pct(fraction: f64, lang: Lang) -> String {
     format_fixed(fraction * 100.0, ERROR_DECIMALS, lang)
 }
 
+/// A table column's precision (issue 45: the same per column): the decimals that give its
+/// largest magnitude [`SIG`] significant digits, kept for every value of it, so that a column
+/// reads `−3,200 / −2,504 / −0,337`, not `−3,2 / −2,504 / −0,3366`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Column {
+    largest: f64,
+    decimals: usize,
+}
+
+impl Column {
+    /// The precision of a column holding `values` (the non-finite left out).
+    pub(crate) fn of(values: impl IntoIterator<Item = f64>) -> Self {
+        let largest = values
+            .into_iter()
+            .filter(|x| x.is_finite())
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        // The decimals of the largest value's last significant digit, one fewer when the
+        // rounding carries it into the next decade (9999,6 → 10000).
+        let decimals = if largest > 0.0 {
+            let mag = largest.log10().floor() as i32;
+            let d = (SIG as i32 - 1 - mag).clamp(0, 15) as usize;
+            let rounded: f64 = format!("{largest:.d$}").parse().unwrap_or(largest);
+            if rounded >= 10f64.powi(mag + 1) {
+                d.saturating_sub(1)
+            } else {
+                d
+            }
+        } else {
+            0
+        };
+        Self { largest, decimals }
+    }
+
+    /// `x` in this column: 0 when it is zero to rounding against the column's largest (the
+    /// report's rule, [`crate::check::is_zero`]), else to the column's decimals.
+    pub(crate) fn cell(&self, x: f64, lang: Lang) -> String {
+        if crate::check::is_zero(x, self.largest) {
+            "0".into()
+        } else {
+            format_fixed(x, self.decimals, lang)
+        }
+    }
+}
+
 /// A length given in metres, in millimetres to [`SIG`] digits with the unit: `316,3 мм`.
 pub(crate) fn mm(metres: f64, lang: Lang) -> String {
     format!("{} {}", value(metres * 1e3, lang), unit_in("mm", lang))
@@ -39,7 +83,7 @@ pub(crate) fn mm(metres: f64, lang: Lang) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{degrees, error_pct, mm, value};
+    use super::{degrees, error_pct, mm, value, Column};
     use crate::scale::Lang;
 
     #[test]
@@ -55,5 +99,23 @@ mod tests {
         // The gear table's δ of a ratio read 16,667 % off, the cam's 0,034 %.
         assert_eq!(error_pct(-0.16667, Lang::Ru), "−16,67");
         assert_eq!(error_pct(0.00034, Lang::En), "0.03");
+    }
+
+    #[test]
+    fn a_column_keeps_its_largest_values_decimals() {
+        // The review's four-bar ω₂ column (issue 45).
+        let c = Column::of([-3.2, -2.50412, -0.33661, f64::NAN]);
+        let cells: Vec<String> = [-3.2, -2.50412, -0.33661]
+            .iter()
+            .map(|x| c.cell(*x, Lang::Ru))
+            .collect();
+        assert_eq!(cells, ["−3,200", "−2,504", "−0,337"]);
+        // A column of hundreds keeps one decimal, its small values too; zero is 0.
+        let c = Column::of([316.27, 5.123, 0.0]);
+        assert_eq!(c.cell(316.27, Lang::En), "316.3");
+        assert_eq!(c.cell(5.123, Lang::En), "5.1");
+        assert_eq!(c.cell(0.0, Lang::En), "0");
+        // 9999,6 rounds to five digits: no decimals.
+        assert_eq!(Column::of([9999.6, 1.26]).cell(1.26, Lang::En), "1");
     }
 }

@@ -4,6 +4,7 @@
 //! The scales are the session's ([`Session::kin_scales`]: decided once, each fitted to its
 //! field), so the sheet draws the very plans the report reads.
 
+use super::digits;
 use super::layout::{keyed, lay_out_in_rows, sheet_name, split_table, table, Block};
 use super::BuildError;
 use crate::check::Method;
@@ -162,7 +163,7 @@ fn diagram_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
     let mut diagrams: Run = Vec::new();
     if let Some(d) = &a.diagrams {
         let w = a.w1.abs();
-        let dec = |x: f64| format_sig(x, 4, lang);
+        let dec = |x: f64| digits::value(x, lang);
         // The second differentiation's chords are drawn on the first derivative's curve: one
         // drawing, one view.
         let stack = d
@@ -266,7 +267,11 @@ fn rest_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
         // μ_φ stated once on a sheet: with the displacement diagram's when they share it.
         let phi = match &a.diagrams {
             Some(d) if d.scales.x == r.scale_phi => String::new(),
-            _ => format!(", {}", r.scale_phi.caption(lang)),
+            _ => format!(
+                ", μ_{{φ}} = {} {}",
+                digits::value(r.scale_phi.value(), lang),
+                r.scale_phi.quantity.unit(lang)
+            ),
         };
         lines.push(format!(
             "ω_{{{}}}(φ): {}{phi}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ",
@@ -428,14 +433,14 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
         let name = symbols::subscripted(&c.name);
         (format!("{name}, {}", unit_in(&c.unit, lang)), col_w)
     }));
-    // Each column's scale: its largest magnitude over the positions.
-    let scales: Vec<f64> = (0..shown)
+    // Each column's precision from its largest magnitude over the positions.
+    let precision: Vec<digits::Column> = (0..shown)
         .map(|c| {
-            t.rows
-                .iter()
-                .filter_map(|(_, v)| v.get(c).copied().flatten())
-                .filter(|x| x.is_finite())
-                .fold(0.0f64, |m, x| m.max(x.abs()))
+            digits::Column::of(
+                t.rows
+                    .iter()
+                    .filter_map(|(_, v)| v.get(c).copied().flatten()),
+            )
         })
         .collect();
     let rows = t
@@ -445,8 +450,8 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
             std::iter::once(label.clone())
                 .chain(
                     vals.iter()
-                        .zip(&scales)
-                        .map(|(v, &sc)| v.map_or(String::new(), |x| cell(x, sc, lang))),
+                        .zip(&precision)
+                        .map(|(v, c)| v.map_or(String::new(), |x| c.cell(x, lang))),
                 )
                 .collect()
         })
@@ -517,11 +522,15 @@ pub(crate) fn verdict_lines(verdicts: &[crate::kinematics::Verdict], lang: Lang)
     crate::kinematics::by_position(verdicts)
         .into_iter()
         .map(|(p, [up, down, _])| {
+            // «звено 2», «звенья 3, 4», or none at all.
+            let accelerating = match up.as_slice() {
+                [] => Text::NoneAccelerating.get(lang).to_string(),
+                [one] => format!("{} {one}", Text::AcceleratingLink.get(lang)),
+                many => format!("{} {}", Text::AcceleratingLinks.get(lang), many.join(", ")),
+            };
             format!(
-                "{} {p}: {} {}; {} {}",
+                "{} {p}: {accelerating}; {} {}",
                 Text::Pos.get(lang),
-                Text::AcceleratingLinks.get(lang),
-                links(&up),
                 Text::DeceleratingLinks.get(lang),
                 links(&down)
             )

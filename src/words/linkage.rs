@@ -13,6 +13,8 @@ catalogue! {
         VelocityPlans => ("Планы скоростей", "Плани швидкостей", "Velocity plans"),
         AccelerationPlans => ("планы ускорений", "плани прискорень", "acceleration plans"),
         AcceleratingLinks => ("ускоренно вращаются звенья", "прискорено обертаються ланки", "accelerating (ω, ε in one sense): links"),
+        AcceleratingLink => ("ускоренно вращается звено", "прискорено обертається ланка", "accelerating (ω, ε in one sense): link"),
+        NoneAccelerating => ("ни одно звено не вращается ускоренно", "жодна ланка не обертається прискорено", "no link accelerating"),
         DeceleratingLinks => ("замедленно —", "сповільнено —", "decelerating:"),
         NoLinks => ("нет", "немає", "none"),
         DiagramsOfPoint => ("Диаграммы точки", "Діаграми точки", "Diagrams of point"),

@@ -538,3 +538,41 @@ fn the_six_bar_links_accelerate_and_decelerate_as_seed_001_concludes() {
         "{texts:#?}"
     );
 }
+
+/// The verdict of one link and of none reads as Russian does (a strict instructor's mark on
+/// the four-bar: «вращаются звенья 3», «вращаются звенья нет»): one link in the singular, none
+/// as a sentence of its own, in ru, uk and en.
+#[test]
+fn a_verdict_of_one_link_or_none_reads_in_its_number() {
+    let scene = tmm::load(&root().join("constructions/four-bar.toml")).expect("four-bar");
+    for (lang, one, none) in [
+        (
+            tmm::Lang::Ru,
+            "Пол. 4: ускоренно вращается звено 3; замедленно — 2",
+            "Пол. 10: ни одно звено не вращается ускоренно; замедленно — 2, 3",
+        ),
+        (
+            tmm::Lang::Uk,
+            "Пол. 4: прискорено обертається ланка 3; сповільнено — 2",
+            "Пол. 10: жодна ланка не обертається прискорено; сповільнено — 2, 3",
+        ),
+        (
+            tmm::Lang::En,
+            "Pos. 4: accelerating (ω, ε in one sense): link 3; decelerating: 2",
+            "Pos. 10: no link accelerating; decelerating: 2, 3",
+        ),
+    ] {
+        let plates = tmm::render::plates(&scene, lang, Drafting::new(0.5).expect("drafting"))
+            .expect("plates");
+        let texts: Vec<&String> = plates
+            .iter()
+            .flat_map(|(_, p)| p.texts.iter().flat_map(|t| t.lines.iter()))
+            .collect();
+        for want in [one, none] {
+            assert!(
+                texts.iter().any(|t| *t == want),
+                "{lang:?}: {want}\n{texts:#?}"
+            );
+        }
+    }
+}
