@@ -3,7 +3,7 @@
 //! millimetres with its unit — so that no text block prints six or seven digits, nor a
 //! length in metres with a run of zeros (`0,004975 м` is `4,975 мм`).
 
-use crate::scale::{format_fixed, format_sig, Lang};
+use crate::scale::{format_fixed, format_sig, Lang, Scale};
 use crate::words::unit_in;
 
 /// Significant digits of a value in a sheet's text.
@@ -51,14 +51,9 @@ impl Column {
         // The decimals of the largest value's last significant digit, one fewer when the
         // rounding carries it into the next decade (9999,6 → 10000).
         let decimals = if largest > 0.0 {
-            let mag = largest.log10().floor() as i32;
-            let d = (SIG as i32 - 1 - mag).clamp(0, 15) as usize;
-            let rounded: f64 = format!("{largest:.d$}").parse().unwrap_or(largest);
-            if rounded >= 10f64.powi(mag + 1) {
-                d.saturating_sub(1)
-            } else {
-                d
-            }
+            let d = (SIG as i32 - 1 - largest.log10().floor() as i32).clamp(0, 15);
+            let carried = (largest * 10f64.powi(d)).round() >= 10f64.powi(SIG as i32);
+            (d - i32::from(carried)).max(0) as usize
         } else {
             0
         };
@@ -74,6 +69,27 @@ impl Column {
             format_fixed(x, self.decimals, lang)
         }
     }
+}
+
+/// A table cell: [`SIG`] significant digits; what is zero to rounding against `scale` (the
+/// report's rule, [`crate::check::is_zero`]) is written 0.
+pub(crate) fn cell(x: f64, scale: f64, lang: Lang) -> String {
+    if crate::check::is_zero(x, scale) {
+        "0".into()
+    } else {
+        value(x, lang)
+    }
+}
+
+/// A scale in a sheet's text at the sheet's precision: `μ_{φ} = 0,05236 рад/мм` (a derived
+/// μ, not round, printed to [`SIG`] digits as every value of the sheet).
+pub(crate) fn caption(scale: Scale, lang: Lang) -> String {
+    format!(
+        "μ_{{{}}} = {} {}",
+        scale.quantity.symbol(),
+        value(scale.value(), lang),
+        scale.quantity.unit(lang)
+    )
 }
 
 /// A length given in metres, in millimetres to [`SIG`] digits with the unit: `316,3 мм`.

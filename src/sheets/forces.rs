@@ -196,7 +196,7 @@ fn value(x: f64, lang: Lang) -> String {
 /// ([`crate::check::is_zero`]).
 fn cell(x: f64, scale: f64, lang: Lang) -> String {
     if x.is_finite() {
-        super::kinematics::cell(x, scale, lang)
+        super::digits::cell(x, scale, lang)
     } else {
         value(x, lang)
     }

@@ -267,11 +267,7 @@ fn rest_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
         // μ_φ stated once on a sheet: with the displacement diagram's when they share it.
         let phi = match &a.diagrams {
             Some(d) if d.scales.x == r.scale_phi => String::new(),
-            _ => format!(
-                ", μ_{{φ}} = {} {}",
-                digits::value(r.scale_phi.value(), lang),
-                r.scale_phi.quantity.unit(lang)
-            ),
+            _ => format!(", {}", digits::caption(r.scale_phi, lang)),
         };
         lines.push(format!(
             "ω_{{{}}}(φ): {}{phi}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ",
@@ -407,16 +403,6 @@ fn symbol_of(rows: &[crate::check::Row], quantity: &str, lang: Lang) -> String {
         || quantity.to_string(),
         |r| symbols::quantity(r.key.symbol, &r.key.subject, lang),
     )
-}
-
-/// A table cell: 4 significant digits; what is zero to rounding against its column's
-/// scale (the rule of the report, [`crate::check::is_zero`]) is written 0.
-pub(super) fn cell(x: f64, scale: f64, lang: Lang) -> String {
-    if crate::check::is_zero(x, scale) {
-        "0".into()
-    } else {
-        format_sig(x, 4, lang)
-    }
 }
 
 /// The analytic table and the error estimates (section 1.6 of the seed), side by side, kept
