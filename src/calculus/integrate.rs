@@ -1,7 +1,7 @@
 //! Graphical integration (§15.3, Fig. 71): rays from the pole to the mid-interval ordinates,
 //! chords parallel to them.
 
-use super::read::read;
+use super::read::{drawn, read};
 use super::*;
 use crate::scale::Quantity;
 
@@ -175,10 +175,16 @@ pub fn integrate_chords_in(
     };
     let run = scales.x.to_mm(src.dx);
     let so = layout.source_origin;
+    // The integrand's curve as the draughtsman draws it through the nodes, at READ_PIECES
+    // points an interval; every mean ordinate read above ends on it (read::drawn).
     let curve = match sampling {
         Sampling::Nodes => Some(
-            (0..=n)
-                .map(|k| at_mm(so, k as f64 * run, scales.y.to_mm(src.at(k))))
+            (0..=n * READ_PIECES)
+                .map(|j| {
+                    let t = j as f64 / READ_PIECES as f64;
+                    let y = drawn(&src.y, src.periodic, t);
+                    at_mm(so, t * run, scales.y.to_mm(y))
+                })
                 .collect(),
         ),
         Sampling::Midpoints => None,
@@ -223,6 +229,10 @@ pub fn integrate_divided_in(
     let out = chords_through(figs, &drawn, scales, pole_mm, start, layout)?;
     Ok(out.into_integral(src.x, pole_mm))
 }
+
+/// The points an interval of the integrand's curve (from nodes) is drawn through, as near as
+/// the plate's smooth curve through them follows [`drawn`]'s.
+const READ_PIECES: usize = 8;
 
 /// The integrand as the construction draws it, abscissae in mm from the origins.
 struct Drawn {

@@ -46,9 +46,70 @@ pub(super) fn read(samples: &[f64], offset: f64, periodic: bool, t: f64) -> f64 
         .sum()
 }
 
+/// The value at `t` (interval units, node j at j) of the smooth curve the draughtsman draws
+/// through the nodes `samples`: on each interval the cubic Hermite whose slopes at the nodes
+/// are the central differences (Catmull–Rom, so the curve turns without a corner at a node);
+/// an open set's end slopes such that its end intervals' middles are those of [`read`]. At
+/// the middle of every interval it is [`read`]'s cubic through the four nearest nodes (the
+/// Hermite's middle is (y_k + y_{k+1})/2 + (m_k − m_{k+1})/8 = (−y_{k−1} + 9y_k + 9y_{k+1} −
+/// y_{k+2})/16), so the mean ordinates read there end on the drawn curve. Too few nodes for a
+/// slope: [`read`] itself.
+pub(super) fn drawn(samples: &[f64], periodic: bool, t: f64) -> f64 {
+    let n = samples.len();
+    if n < if periodic { 3 } else { 4 } {
+        return read(samples, 0.0, periodic, t);
+    }
+    let intervals = if periodic { n } else { n - 1 };
+    let y = |j: i64| samples[j.rem_euclid(n as i64) as usize];
+    let last = intervals as i64 - 1;
+    let k = (t.floor() as i64).clamp(0, last);
+    let central = |j: i64| 0.5 * (y(j + 1) - y(j - 1));
+    let slope = |j: i64| {
+        if periodic || (1..n as i64 - 1).contains(&j) {
+            central(j)
+        } else if j == 0 {
+            8.0 * (read(samples, 0.0, false, 0.5) - 0.5 * (y(0) + y(1))) + central(1)
+        } else {
+            let mid = read(samples, 0.0, false, last as f64 + 0.5);
+            central(j - 1) - 8.0 * (mid - 0.5 * (y(j - 1) + y(j)))
+        }
+    };
+    let u = t - k as f64;
+    let (u2, u3) = (u * u, u * u * u);
+    (2.0 * u3 - 3.0 * u2 + 1.0) * y(k)
+        + (u3 - 2.0 * u2 + u) * slope(k)
+        + (-2.0 * u3 + 3.0 * u2) * y(k + 1)
+        + (u3 - u2) * slope(k + 1)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_drawn_curve_passes_the_nodes_and_the_cubic_s_middles() {
+        let ys = [
+            0.0, 119.5, 186.6, 218.1, 220.7, 195.2, 138.1, 37.9, 2.8, 2.8, -1.9, -2.8,
+        ];
+        for periodic in [true, false] {
+            let intervals = if periodic { ys.len() } else { ys.len() - 1 };
+            for k in 0..intervals {
+                let node = drawn(&ys, periodic, k as f64);
+                assert!((node - ys[k]).abs() < 1e-12, "node {k}: {node}");
+                let t = k as f64 + 0.5;
+                let (d, r) = (drawn(&ys, periodic, t), read(&ys, 0.0, periodic, t));
+                assert!(
+                    (d - r).abs() < 1e-9,
+                    "periodic {periodic}, middle {k}: {d} ≠ {r}"
+                );
+            }
+        }
+        // No corner at a node: the slopes either side agree.
+        let h = 1e-6;
+        let left = (drawn(&ys, true, 3.0) - drawn(&ys, true, 3.0 - h)) / h;
+        let right = (drawn(&ys, true, 3.0 + h) - drawn(&ys, true, 3.0)) / h;
+        assert!((left - right).abs() < 1e-3, "{left} ≠ {right}");
+    }
 
     #[test]
     fn cubic_reads_cubics_exactly_and_wraps() {

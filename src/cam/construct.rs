@@ -10,7 +10,7 @@ use super::inversion::{drawn_rho_min, invert, Inversion};
 use super::motion::{points, Motion, Point};
 use super::radius::{min_radius, RadiusConstruction};
 use super::{CamError, CamSpec, Follower, Rotation, Shock};
-use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{french_curve, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::{FRAC_PI_2, TAU};
@@ -159,7 +159,8 @@ fn angle_graph(
         what: "μ_γ",
         size: 1.0,
     })?;
-    let mut rec = Recorder::in_context(if rocker { "γ(φ)" } else { "λ(φ)" }, mu, ctx);
+    let symbol = spec.angle_symbol();
+    let mut rec = Recorder::in_context(format!("{symbol}(φ)"), mu, ctx);
     let value = |k: &Kin| {
         if rocker {
             k.transmission_angle()
@@ -195,17 +196,14 @@ fn angle_graph(
     );
     rec.label(
         ya,
-        if rocker { "γ, °" } else { "λ, °" },
+        format!("{symbol}, °"),
         DVec2::new(0.0, top + 10.0),
         DVec2::new(1.0, 0.2),
     );
-    let limit = if rocker {
-        spec.gamma_min
-    } else {
-        FRAC_PI_2 - spec.gamma_min
-    };
+    graduate(&mut rec, ya, mu, top);
+    let limit = spec.angle_limit();
     let lim = rec.draw(
-        "limit",
+        ANGLE_LIMIT_NOTE,
         Item::Segment(Segment::new(
             DVec2::new(0.0, mu.to_mm(limit)),
             DVec2::new(width, mu.to_mm(limit)),
@@ -215,7 +213,7 @@ fn angle_graph(
     );
     rec.label(
         lim,
-        if rocker { "γ_{min}" } else { "λ_{max}" },
+        spec.angle_limit_symbol(),
         DVec2::new(width, mu.to_mm(limit)),
         DVec2::new(1.0, 0.0),
     );
@@ -257,6 +255,37 @@ fn angle_graph(
     );
     Ok(rec.finish())
 }
+
+/// The angle axis at `mu` graduated every [`GRADUATION_DEG`] up to `top` mm: a tick to the
+/// left of the axis with its degrees.
+fn graduate(rec: &mut Recorder, axis: StepId, mu: Scale, top: f64) {
+    let mut deg = GRADUATION_DEG;
+    while mu.to_mm(deg.to_radians()) <= top + 1e-9 {
+        let y = mu.to_mm(deg.to_radians());
+        let tick = rec.draw(
+            format!("tick {deg}°"),
+            Item::Segment(Segment::new(DVec2::new(-TICK_MM, y), DVec2::new(0.0, y))),
+            Role::Construction,
+            &[axis],
+        );
+        rec.label(
+            tick,
+            format!("{deg}"),
+            DVec2::new(-TICK_MM, y),
+            DVec2::new(-1.0, 0.0),
+        );
+        deg += GRADUATION_DEG;
+    }
+}
+
+/// The note of the angle graph's limit line (γ_min or λ_max), labelled by its symbol; a
+/// sheet writes its value.
+pub const ANGLE_LIMIT_NOTE: &str = "limit";
+
+/// The angle graph's graduation, degrees.
+const GRADUATION_DEG: f64 = 10.0;
+/// A graduation tick's length, mm.
+const TICK_MM: f64 = 2.0;
 
 /// The curve of the angle graph, drawn through the read values only: the French curve
 /// through each moving phase's points (tangents along the chords through the neighbours),

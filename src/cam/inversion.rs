@@ -315,7 +315,7 @@ impl Inverting<'_> {
 
 /// The cam's sense of rotation: an arrowed arc about O₁ of radius 0.3·r₀ (`r0_mm` the base
 /// radius drawn; counter-clockwise here, the mirror image of a clockwise cam turns it round).
-fn rotation(rec: &mut Recorder, o: StepId, r0_mm: f64) {
+pub(super) fn rotation(rec: &mut Recorder, o: StepId, r0_mm: f64) {
     let turn = Arc {
         center: DVec2::ZERO,
         radius: 0.3 * r0_mm,

@@ -42,6 +42,7 @@ mod tests;
 mod travel;
 mod zone;
 
+pub use construct::ANGLE_LIMIT_NOTE;
 pub use construct::{build, Cam};
 pub use deviation::{deviation, deviation_at, inversion_at};
 pub use diagrams::{Analogue, Diagrams, PHASE_NOTES, TICK_NOTE};
@@ -211,6 +212,31 @@ impl CamSpec {
         match self.follower {
             Follower::Rocker { arm, .. } => Some(arm),
             _ => None,
+        }
+    }
+    /// The angle its graph and tables show: the rocker's transmission angle γ, a translating
+    /// or flat follower's pressure angle λ.
+    pub fn angle_symbol(&self) -> &'static str {
+        if self.arm().is_some() {
+            "γ"
+        } else {
+            "λ"
+        }
+    }
+    /// The limit of that angle: γ_min for a rocker, λ_max = 90° − γ_min otherwise.
+    pub fn angle_limit_symbol(&self) -> &'static str {
+        if self.arm().is_some() {
+            "γ_{min}"
+        } else {
+            "λ_{max}"
+        }
+    }
+    /// That limit's value: γ_min, or 90° − γ_min.
+    pub fn angle_limit(&self) -> f64 {
+        if self.arm().is_some() {
+            self.gamma_min
+        } else {
+            std::f64::consts::FRAC_PI_2 - self.gamma_min
         }
     }
     /// The follower's offset e (0 for a rocker).

@@ -237,11 +237,20 @@ impl Cam {
             ),
             "min",
         ));
-        if !self.flat() {
-            let g = (0.4 * r.graphical).min(0.8 * self.inversion.rho_min);
-            let a = (0.4 * r_exact).min(0.8 * rho);
+        // The roller the drawing took (0.4·r₀ or 0.8·ρ_min read off the pitch curve) against
+        // the same rule on the exact ρ_min, at the same r₀; a roller the scene gives is a
+        // datum, not a result.
+        if !self.flat() && self.spec.roller.is_none() {
+            let a = (0.4 * self.base).min(0.8 * rho);
             out.push(subject(
-                row(Symbol::Radius, At::Scene, Method::Inversion, g, a, a),
+                row(
+                    Symbol::Radius,
+                    At::Scene,
+                    Method::Inversion,
+                    self.roller,
+                    a,
+                    a,
+                ),
                 "roller",
             ));
         }

@@ -157,6 +157,43 @@ pub fn exact_travel_min(spec: &CamSpec, lambda_max: f64) -> f64 {
     TAU * v / lambda_max.tan()
 }
 
+/// The note of the cam's travel X dimensioned under its guide, labelled `X`; a sheet writes
+/// its value.
+pub const TRAVEL_X_NOTE: &str = "dimension X";
+
+/// Under the guide at `low` mm: the travel X (`x_mm` long, from ξ = 0) dimensioned below the
+/// phases' numbers, and left of the guide the arrow of the cam's motion V₁, against ξ (in the
+/// inverted motion the follower runs along ξ).
+fn travel_marks(rec: &mut Recorder, x_mm: f64, low: f64) {
+    let start = DVec2::new(0.0, low);
+    rec.dimension(
+        TRAVEL_X_NOTE,
+        (start, DVec2::new(x_mm, low), -X_DIMENSION_MM),
+        "X",
+    );
+    let arrow = rec.draw(
+        "the cam's motion V_1",
+        Item::Vector {
+            from: start - DVec2::X * MOTION_GAP_MM,
+            to: start - DVec2::X * (MOTION_GAP_MM + MOTION_MM),
+        },
+        Role::Given,
+        &[],
+    );
+    rec.label(
+        arrow,
+        "V_1",
+        start - DVec2::X * (MOTION_GAP_MM + 0.5 * MOTION_MM),
+        DVec2::Y,
+    );
+}
+
+/// How far under the guide the travel X is dimensioned, mm (below the phases' numbers).
+const X_DIMENSION_MM: f64 = 12.0;
+/// The cam's motion arrow: its gap from the guide's start and its length, mm.
+const MOTION_GAP_MM: f64 = 4.0;
+const MOTION_MM: f64 = 20.0;
+
 /// The cam on the drawing board at μ_l = `mu`.
 pub fn construct(
     spec: &CamSpec,
@@ -177,6 +214,7 @@ pub fn construct(
         Role::Given,
         &[],
     );
+    travel_marks(&mut rec, s.travel / mu.value(), mu.to_mm(low));
     let pts = points(spec);
     let centre_of = |p: &Point| DVec2::new(p.phi / k, motion(spec, p.phi, p.after).s);
     let centres: Vec<DVec2> = pts.iter().map(centre_of).collect();
@@ -191,6 +229,16 @@ pub fn construct(
             Role::Construction,
             &[],
         );
+        // The phases' ends numbered under the guide, as the turning cam's rays are.
+        let p = &pts[i];
+        if p.k == 0 || p.last {
+            rec.label(
+                axis,
+                p.label.clone(),
+                mm(DVec2::new(c.x, low)),
+                DVec2::NEG_Y,
+            );
+        }
         rec.point(
             format!("roller centre B_{i}"),
             mm(*c),

@@ -20,6 +20,13 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         None => (T::CamIntro, T::CamScene),
     };
     w.doc.say(w.word(intro));
+    let assumed = match &special {
+        Some(c) => c.spec.law_assumed,
+        None => w.session.cam()?.spec.law_assumed,
+    };
+    if assumed {
+        w.doc.say(w.word(T::CamLawAssumed));
+    }
     w.data_list(PlateKind::Cam, super::DataPart::Results);
     match &special {
         Some(c) => super::cam_special::worked(w, c)?,

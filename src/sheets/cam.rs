@@ -7,7 +7,8 @@ use super::cam_marks;
 use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
 use crate::cam::{
-    Analogue, Cam, CamSpec, Diagrams, Follower, Law, Layout, Rotation, RHO_MIN_NOTE, R_MIN_NOTE,
+    Analogue, Cam, CamSpec, Diagrams, Follower, Law, Layout, Rotation, ANGLE_LIMIT_NOTE,
+    RHO_MIN_NOTE, R_MIN_NOTE,
 };
 use crate::check::{Cusp, Finding, Row};
 use crate::geom::DVec2;
@@ -70,8 +71,17 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         }
         .get(lang);
         blocks.push(Block::view(
-            g.clone(),
-            format!("{what}, {}, μ_{{γ}} = 1 °/{}", mu("φ", d.phi, lang), mm),
+            cam_marks::relabelled(
+                g,
+                ANGLE_LIMIT_NOTE,
+                &cam_marks::angle_limit(&cam.spec, lang),
+            ),
+            format!(
+                "{what}, {}, μ_{{{}}} = 1 °/{}",
+                mu("φ", d.phi, lang),
+                cam.spec.angle_symbol(),
+                mm
+            ),
             None,
         ));
     }
@@ -217,7 +227,8 @@ pub(super) fn law_name(law: Law, lang: Lang) -> String {
 }
 
 /// The data's heading and the law's lines: the phases, the cam's sense (its motion for a
-/// translating cam), the laws, an assumed law.
+/// translating cam), the laws. That the source lost its law is the note's (a remark on the
+/// source), not the sheet's.
 pub(super) fn law_lines(s: &CamSpec, rotation: Rotation, lang: Lang) -> Vec<String> {
     let mut out = vec![Text::Data.get(lang).to_string()];
     out.push(cam_marks::phases_line(s, lang));
@@ -234,9 +245,6 @@ pub(super) fn law_lines(s: &CamSpec, rotation: Rotation, lang: Lang) -> Vec<Stri
         CamText::ReturnLaw.get(lang),
         law_name(s.ret, lang)
     ));
-    if s.law_assumed {
-        out.push(CamText::LawAssumed.get(lang).into());
-    }
     out
 }
 
@@ -282,15 +290,23 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
         |p: fn(&Finding) -> bool| found.iter().find(|f| p(f)).and_then(|f| verdict(f, lang));
     out.push(cam_marks::base_line(cam, lang));
     if !matches!(s.follower, Follower::Flat { .. }) {
-        out.push(format!(
-            "{}·r_{{0}} = {} {mm}, {}·ρ_{{min}} = {} {mm} → r_{{р}} = {} {mm}",
+        // The rule's two bounds, ρ_min the drawn pitch curve's; they choose the roller unless
+        // the task gives it.
+        let bounds = format!(
+            "{}·r_{{0}} = {} {mm}, {}·ρ_{{min}} = {} {mm}",
             format_sig(0.4, 1, lang),
             n(0.4 * cam.base),
             format_sig(0.8, 1, lang),
-            // The roller is chosen from the drawn pitch curve's ρ_min.
             n(0.8 * cam.inversion.rho_min),
-            n(cam.roller)
-        ));
+        );
+        out.push(match s.roller {
+            Some(_) => format!(
+                "r_{{р}} = {} {mm} ({}); {bounds}",
+                n(cam.roller),
+                CamText::Given.get(lang)
+            ),
+            None => format!("{bounds} → r_{{р}} = {} {mm}", n(cam.roller)),
+        });
     }
     out.extend(stated(|f| {
         matches!(f, Finding::Undercut { .. } | Finding::Cusp(_))
@@ -353,10 +369,10 @@ fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
             r
         })
         .collect();
-    let a = if rocker { "γ" } else { "λ" };
+    let a = cam.spec.angle_symbol();
     let mm = unit_in("mm", lang);
     let mut columns = vec![
-        ("№".into(), 8.0),
+        (Text::Number.get(lang).into(), 8.0),
         ("φ, °".into(), 14.0),
         (format!("S, {mm}"), 16.0),
         (format!("dS/dφ, {mm}"), 20.0),

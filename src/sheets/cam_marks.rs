@@ -50,6 +50,15 @@ pub(super) fn relabelled(figure: &Figure, note: &str, text: &str) -> Figure {
     out
 }
 
+/// The angle graph's limit line with its value: `λ_{max} = 30°`, `γ_{min} = 60°`.
+pub(super) fn angle_limit(spec: &CamSpec, lang: Lang) -> String {
+    format!(
+        "{} = {}",
+        spec.angle_limit_symbol(),
+        phase_angle(spec.angle_limit(), lang)
+    )
+}
+
 /// A dimension's text with its value: `r_{min} = 69 мм` for `symbol` `r_{min}` and
 /// `metres` 0.069.
 pub(super) fn valued(symbol: &str, metres: f64, lang: Lang) -> String {

@@ -8,6 +8,7 @@ use super::cam::{diagram_block, law_lines, mu, one_sheet, points_tables, results
 use super::cam_marks;
 use super::layout::{keyed, Block};
 use super::BuildError;
+use crate::cam::sliding::TRAVEL_X_NOTE;
 use crate::cam::{Follower, Special, SpecialProfile, TRAVEL_NOTE};
 use crate::check::Finding;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
@@ -45,8 +46,16 @@ pub(super) fn build(
             keyed(Key::CamScaleS, s),
         ));
     }
+    let profile = match &cam.profile {
+        SpecialProfile::Sliding { frame, .. } => cam_marks::relabelled(
+            cam.figure(),
+            TRAVEL_X_NOTE,
+            &cam_marks::valued("X", frame.travel, lang),
+        ),
+        SpecialProfile::FlatRocker { .. } => cam.figure().clone(),
+    };
     blocks.push(Block::view(
-        cam.figure().clone(),
+        profile,
         format!("{}, {}", caption.get(lang), cam.scale.caption(lang)),
         keyed(Key::CamScaleL, cam.scale),
     ));
@@ -129,8 +138,15 @@ fn data_lines(cam: &Special, lang: Lang) -> Result<Vec<String>, crate::cam::CamE
             out.push(String::new());
             if let Some((read, exact)) = cam.travel_min() {
                 out.push(format!("X_{{min}} = {}", pair(read, exact)));
+                // The verdict on the travel the task gives against the X_min the drawing read.
                 if exact > frame.travel * (1.0 + 1e-9) {
                     out.push(CamText::Exceeded.get(lang).into());
+                } else if read <= frame.travel {
+                    out.push(format!(
+                        "X = {} {mm} ≥ X_{{min}} = {} {mm}",
+                        n(frame.travel),
+                        n(read)
+                    ));
                 }
             }
             if rho.is_finite() {
@@ -185,7 +201,7 @@ fn points_table(cam: &Special, exact: &[f64], lang: Lang) -> Vec<TableBlock> {
         SpecialProfile::Sliding { .. } => "ξ",
     };
     let columns = vec![
-        ("№".into(), 8.0),
+        (Text::Number.get(lang).into(), 8.0),
         ("φ, °".into(), 14.0),
         (format!("S, {mm}"), 16.0),
         (format!("dS/dφ, {mm}"), 20.0),

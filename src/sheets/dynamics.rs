@@ -286,7 +286,7 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
             },
         ),
         columns: vec![
-            ("№".into(), 8.0),
+            (Text::Number.get(lang).into(), 8.0),
             ("φ, °".into(), 10.0),
             (format!("{mv}, {nm}"), 18.0),
             (format!("{mv}*, {nm}"), 18.0),
@@ -302,7 +302,16 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
     }
 }
 
-/// The results of the whole cycle: graphical | analytic | error.
+/// The factor and unit a result is shown in: a length in mm (the flywheel's D_м, as its
+/// text and its part drawing give it), every other quantity in its SI unit.
+fn shown(r: &crate::check::Row) -> (f64, &'static str) {
+    match r.unit() {
+        "m" => (1e3, "mm"),
+        u => (1.0, u),
+    }
+}
+
+/// The results of the whole cycle: graphical | unit | analytic | error.
 fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
     let rows: Vec<_> = crate::dynamics::rows(d)
         .into_iter()
@@ -317,15 +326,23 @@ fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
         &Results {
             title: title.get(lang).into(),
             columns: &[
-                (Column::Quantity, 22.0),
+                (Column::Quantity, 16.0),
                 (Column::Method, 28.0),
-                (Column::Graphical, 24.0),
-                (Column::Exact, 24.0),
+                (Column::Unit, 14.0),
+                (Column::Graphical, 20.0),
+                (Column::Exact, 20.0),
                 (Column::Error, 14.0),
             ],
             name: &|r| quantity(r, lang),
-            unit: &|_| String::new(),
-            value: &|_, x, _| format_sig(x, 5, lang),
+            unit: &|r| match shown(r).1 {
+                "1" => String::new(),
+                u => unit_in(u, lang),
+            },
+            // A row's two values at one precision, the larger to four digits.
+            value: &|r, x, _| {
+                let k = shown(r).0;
+                super::digits::Column::of([r.graphical * k, r.analytic * k]).cell(x * k, lang)
+            },
             size_mm: TABLE_MM,
         },
         &rows,

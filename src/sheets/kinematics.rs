@@ -414,7 +414,7 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
     let avail = TABLES_WIDTH_MM;
     let col_w = ((avail - pos_w) / t.columns.len().max(1) as f64).clamp(12.0, 22.0);
     let shown = (((avail - pos_w) / col_w) as usize).min(t.columns.len());
-    let mut columns = vec![("№".to_string(), pos_w)];
+    let mut columns = vec![(Text::Number.get(lang).to_string(), pos_w)];
     columns.extend(t.columns.iter().take(shown).map(|c| {
         let name = symbols::subscripted(&c.name);
         (format!("{name}, {}", unit_in(&c.unit, lang)), col_w)

@@ -222,11 +222,7 @@ catalogue! {
         ),
         RiseLaw => ("закон удаления", "закон віддалення", "rise law"),
         ReturnLaw => ("приближения", "наближення", "return"),
-        LawAssumed => (
-            "Диаграммы источника утеряны: закон движения принят",
-            "Діаграми джерела втрачено: закон руху прийнято",
-            "The source's diagrams are lost: the law is assumed"
-        ),
+        Given => ("задано", "задано", "given"),
         Undercut => ("ПОДРЕЗ: r_{р} >", "ПІДРІЗ: r_{р} >", "UNDERCUT: r_{р} >"),
         RollerCusp => ("ЗАОСТРЕНИЕ: r_{р} =", "ЗАГОСТРЕННЯ: r_{р} =", "CUSP: r_{р} ="),
         Cusp => (
@@ -281,7 +277,7 @@ catalogue! {
         Flanks => ("план сил: N₁, N₂; вид сбоку", "план сил: N₁, N₂; вид збоку", "forces: N₁, N₂; side view"),
         Balance => ("равновесие моментов", "рівновага моментів", "moment balance"),
         Sliding => ("без катков", "без котків", "without rollers"),
-        SelfBraking => ("самоторможение", "самогальмування", "self-braking"),
+        SelfBraking => ("самоторможение", "самогальмування", "self-locking"),
         PureRolling => ("чистое качение", "чисте кочення", "pure rolling"),
         RollersSlide => ("катки скользят", "котки ковзають", "the rollers slide"),
         Title => ("Трение", "Тертя", "Friction"),

@@ -16,6 +16,7 @@ mod blocking_scenes;
 mod cam;
 mod cam_angle_steps;
 mod cam_breaks;
+mod cam_data;
 mod cam_diagrams;
 mod cam_dimensions;
 mod cam_oracle;

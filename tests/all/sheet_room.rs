@@ -41,7 +41,7 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("rotor-static/balancing", 0.15, "one disc and one polygon, each as large as its room (162 and 200 mm: one round step finer doubles them); its 14 lines of data keep it off an A3"),
     ("shaper/dynamics", 0.27, "the scene fixes μ_M and μ_φ (the seed's); the flywheel is drawn on a sheet of its own"),
     ("shaper/flywheel", 0.26, "the part drawing at the seed's 1:4 (D = 824 mm drawn 206 mm with its section and the spokes' sections, 380 × 230 mm): too tall for an A3's 208 mm field, so an A2; 1:2,5 draws D 330 mm, past the A2's 341 mm field with its dimensions"),
-    ("v-engine/dynamics", 0.27, "the scene fixes μ_φ; the free diagrams' ordinates at their 80 mm; the flywheel is drawn on a sheet of its own"),
+    ("v-engine/dynamics", 0.26, "the scene fixes μ_φ; the free diagrams' ordinates at their 80 mm; the flywheel is drawn on a sheet of its own"),
     ("shaper/kinematics", 0.21, "the scene fixes μ_l, μ_v, μ_a (the seed's): the plan of positions, twelve plans and two acceleration plans, and in the band under the plans the analytic and error tables, which hold no view line; the diagrams' stack (fixed μ_S, μ_φ, H₁, H₂: 405 mm tall) does not fit that band and opens sheet 2"),
     ("shaper/kinematics-2", 0.09, "the second of two sheets, begun once the first is filled (the tables went into its band under the plans): the structural analysis, the diagrams' stack at the seed's fixed scales (μ_S, μ_φ, H₁, H₂: 405 mm tall, more than the first sheet's free band), the rocker's ω diagram and the hodograph"),
     ("six-bar/kinematics", 0.25, "the scene fixes μ_v and μ_a (the seed's); the plan of positions at μ_l raised to fit its field"),

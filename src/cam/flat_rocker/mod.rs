@@ -25,7 +25,7 @@
 //! small makes the profile concave (ρ < 0) — both routes say so.
 
 use super::follower::to_cam;
-use super::inversion::cam_centre;
+use super::inversion::{cam_centre, rotation};
 use super::motion::{motion, neighbour, points, Motion, Neighbour, Point};
 use super::{CamSpec, Follower, RockerSense};
 use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role, StepId};
@@ -357,6 +357,18 @@ impl Board<'_> {
         );
     }
 
+    /// The rocker's pivot O₂ where the frame has it (φ = 0), named below its notch's number.
+    fn pivot(&self, rec: &mut Recorder, o1: StepId) {
+        let at = self.mm(DVec2::new(self.r.centres, 0.0));
+        let id = rec.draw(
+            "the rocker's pivot O_2",
+            Item::Joint { at, fixed: true },
+            Role::Given,
+            &[o1],
+        );
+        rec.label(id, "O_2", at, DVec2::new(0.0, -1.0));
+    }
+
     /// The pivot O₂ turned back by each point's φ (notched on its circle, the phases' ends
     /// numbered), and the face line there: the lines and the notches.
     fn turned_back(
@@ -465,7 +477,9 @@ pub fn construct(
     };
     let mut rec = Recorder::in_context("flat-faced rocker: profile by inversion", mu, ctx);
     let o1 = cam_centre(&mut rec);
+    rotation(&mut rec, o1, mu.to_mm(r.base));
     board.circles(&mut rec, o1);
+    board.pivot(&mut rec, o1);
     let pts = points(spec);
     let (lines, turned) = board.turned_back(&mut rec, o1, &pts, ctx.notch_mm);
     let mut contacts = Vec::with_capacity(pts.len());

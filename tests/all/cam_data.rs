@@ -1,0 +1,172 @@
+//! Issue 45, what the cam sheets say in their data and tables, checked on the plate model:
+//! - a remark on the source (the seed's lost diagrams) is the note's, never the sheet's;
+//! - the roller the table reports is the roller the data line takes (0,4·r₀ or 0,8·ρ_min
+//!   read), and a roller the task gives is stated as given, with no row of its own;
+//! - the angle graph (λ or γ) is graduated, its limit line carries its value, and its μ is
+//!   named by the angle it draws;
+//! - the translating cam's travel stands dimensioned on its profile and accepted against the
+//!   X_min read.
+
+use tmm::cam::ANGLE_LIMIT_NOTE;
+use tmm::check::Symbol;
+use tmm::construct::{Drafting, Item};
+use tmm::plate::Plate;
+use tmm::scale::{format_sig, Lang};
+use tmm::scene::PlateKind;
+use tmm::study::Session;
+
+/// The cam sheets of scene `name` in `lang`, read exactly.
+fn plates(name: &str, lang: Lang) -> Vec<Plate> {
+    let s = crate::support::scene(name);
+    let session = Session::new(&s, Drafting::EXACT);
+    tmm::build(&session, PlateKind::Cam, lang).unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+/// Every text line, table cell and label of `plates`.
+fn words(plates: &[Plate]) -> Vec<String> {
+    let mut out = Vec::new();
+    for p in plates {
+        out.extend(p.texts.iter().flat_map(|t| t.lines.iter().cloned()));
+        for t in &p.tables {
+            out.push(t.title.clone());
+            out.extend(t.rows.iter().flatten().cloned());
+        }
+        for v in &p.views {
+            out.extend(v.caption.iter().cloned());
+            out.extend(
+                v.figure
+                    .steps
+                    .iter()
+                    .filter_map(|s| s.label.as_ref().map(|l| l.text.clone())),
+            );
+        }
+    }
+    out
+}
+
+#[test]
+fn the_sources_lost_diagrams_are_told_in_the_note_not_on_the_sheet() {
+    for name in ["cam-pz4", "cam-pz5"] {
+        let on_sheet = words(&plates(name, Lang::Ru));
+        assert!(
+            !on_sheet.iter().any(|w| w.contains("утеряны")),
+            "{name}: the source's remark is on the sheet"
+        );
+        let s = crate::support::scene(name);
+        let session = Session::new(&s, Drafting::EXACT);
+        let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+        assert!(
+            note.source.contains("в источнике утеряны"),
+            "{name}: the note does not say the source lost its diagrams"
+        );
+    }
+}
+
+#[test]
+fn the_roller_in_the_table_is_the_roller_the_data_take() {
+    // Chosen: the data's «0,4·r₀ = …, 0,8·ρ_min = … → r_р = … мм», the table's row r_р
+    // graphical the same.
+    let s = crate::support::scene("cam-central");
+    let session = Session::new(&s, Drafting::EXACT);
+    let cam = session.cam().expect("cam");
+    let row = cam
+        .rows()
+        .into_iter()
+        .find(|r| r.key.symbol == Symbol::Radius && r.key.subject == "roller")
+        .expect("the roller's row");
+    assert!((row.graphical - cam.roller).abs() < 1e-12, "{row:?}");
+    // 0,4·r₀ under 0,8·ρ_min read (about 28 мм): the roller is 0,4·r₀.
+    assert!(
+        (cam.roller - 0.4 * cam.base).abs() < 1e-12,
+        "r_р = {}",
+        cam.roller
+    );
+    let stated = format!(
+        "→ r_{{р}} = {} мм",
+        format_sig(cam.roller * 1e3, 4, Lang::Ru)
+    );
+    let data = words(&plates("cam-central", Lang::Ru));
+    assert!(
+        data.iter().any(|w| w.ends_with(&stated)),
+        "{stated}: {data:?}"
+    );
+    // Given: stated as given, no row of its own.
+    let s = crate::support::scene("cam-undercut");
+    let session = Session::new(&s, Drafting::EXACT);
+    let cam = session.cam().expect("cam");
+    assert!(cam
+        .rows()
+        .iter()
+        .all(|r| !(r.key.symbol == Symbol::Radius && r.key.subject == "roller")));
+    let data = words(&plates("cam-undercut", Lang::Ru));
+    assert!(
+        data.iter()
+            .any(|w| w.starts_with("r_{р} = 15 мм (задано);")),
+        "{data:?}"
+    );
+}
+
+#[test]
+fn the_angle_graph_is_graduated_its_limit_valued_its_scale_named_by_its_angle() {
+    for (name, symbol, limit) in [
+        ("cam-central", "λ", "λ_{max} = 30°"),
+        ("shaper", "γ", "γ_{min} = 60°"),
+    ] {
+        let plates = plates(name, Lang::Ru);
+        let view = plates
+            .iter()
+            .flat_map(|p| &p.views)
+            .find(|v| v.figure.title == format!("{symbol}(φ)"))
+            .unwrap_or_else(|| panic!("{name}: no angle graph"));
+        let ticks: Vec<String> = view
+            .figure
+            .steps
+            .iter()
+            .filter(|s| s.note.starts_with("tick "))
+            .filter_map(|s| s.label.as_ref().map(|l| l.text.clone()))
+            .collect();
+        assert!(ticks.len() >= 5, "{name}: {ticks:?}");
+        assert_eq!(ticks[..3], ["10", "20", "30"], "{name}");
+        let lim = view
+            .figure
+            .steps
+            .iter()
+            .find(|s| s.note == ANGLE_LIMIT_NOTE)
+            .and_then(|s| s.label.as_ref())
+            .map(|l| l.text.as_str());
+        assert_eq!(lim, Some(limit), "{name}");
+        let caption = view.caption.as_deref().unwrap_or("");
+        assert!(
+            caption.ends_with(&format!("μ_{{{symbol}}} = 1 °/мм")),
+            "{name}: {caption}"
+        );
+    }
+}
+
+#[test]
+fn the_translating_cam_dimensions_its_travel_and_accepts_it() {
+    let s = crate::support::scene("cam-sliding");
+    let session = Session::new(&s, Drafting::EXACT);
+    let special = session
+        .special_cam()
+        .expect("cam")
+        .expect("a translating cam");
+    let (read, _) = special.travel_min().expect("X_min");
+    let accepted = format!(
+        "X = 360 мм ≥ X_{{min}} = {} мм",
+        format_sig(read * 1e3, 4, Lang::Ru)
+    );
+    assert!(read < 0.36, "X_min read {read}");
+    let plates = plates("cam-sliding", Lang::Ru);
+    let data = words(&plates);
+    assert!(data.contains(&accepted), "{accepted}: {data:?}");
+    let dimensioned = plates.iter().flat_map(|p| &p.views).any(|v| {
+        v.figure.steps.iter().any(|s| {
+            s.note == tmm::cam::sliding::TRAVEL_X_NOTE
+                && matches!(s.item, Item::Dimension { from, to, .. }
+                    if ((to - from).length() - 360.0).abs() < 1e-6)
+                && s.label.as_ref().is_some_and(|l| l.text == "X = 360 мм")
+        })
+    });
+    assert!(dimensioned, "no X = 360 мм dimension at 1:1 on the profile");
+}
