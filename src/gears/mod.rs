@@ -46,6 +46,7 @@ pub use train::{
     train_study, Closing, Mesh, PlanetarySpec, SeedStage, Stage, Train, TrainError, TrainMobility,
     TrainSeed, TrainStudy, Wheel,
 };
+pub use triangles::{SlowLinks, POLE_DISTANCE};
 
 use crate::scale::Scale;
 use thiserror::Error;

@@ -13,7 +13,6 @@ use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
 use crate::gears::blocking::Study;
 use crate::gears::{DetailMark, DETAIL_LETTER};
-use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_sig, Key, Lang};
 use crate::study::Session;
@@ -253,8 +252,8 @@ fn differential_line(t: &crate::gears::TrainStudy, lang: Lang) -> Option<String>
 }
 
 /// Each mesh the train's module does not close, at the module it is drawn at, beside the
-/// train's: `m = 1 мм, m_{3-4} = 2,8333 мм (модуль ступени в задаче не дан: принят по
-/// соосности)`.
+/// train's, with the decision only: `m = 1 мм, m_{3-4} = 2,833 мм (по соосности)` (why the
+/// source's module does not serve is the note's to say).
 fn closing_lines(t: &crate::gears::TrainStudy, lang: Lang) -> Vec<String> {
     let tr_ = &t.spec.train;
     let mm = unit_in("mm", lang);
@@ -268,7 +267,7 @@ fn closing_lines(t: &crate::gears::TrainStudy, lang: Lang) -> Vec<String> {
                 tr_.wheels[s].name,
                 tr_.wheels[w].name,
                 super::digits::value(c.module * 1e3, lang),
-                GearText::ClosingModule.get(lang),
+                GearText::ForCoaxiality.get(lang),
             )
         })
         .collect()
@@ -470,30 +469,9 @@ impl Filling {
     /// triangles (and the required one), the differential's and the closing's lines, the
     /// assembly of the satellites.
     fn train(&mut self, t: &crate::gears::TrainStudy) {
-        let (lang, mm_) = (self.lang, &self.mm);
-        let tri = &t.triangles;
-        let caption = format!(
-            "{}, {}, {}, H = {} {}",
-            GearText::Triangles.get(lang),
-            tri.scale_l.caption(lang),
-            tri.scale_v.caption(lang),
-            format_sig(tri.plan_h, 3, lang),
-            mm_,
-        );
-        // μ_ω beside the plan, at the end of its reading line, as the textbook writes it.
-        let scale_w = format!(
-            "μ_{{ω}} = μ_{{v}}/(μ_{{l}}·H) = {} {}",
-            super::digits::value(tri.scale_w.value(), lang),
-            tri.scale_w.quantity.unit(lang),
-        );
-        let figure = tri.figure.clone().with_text(
-            "μ_ω of the plan of angular velocities",
-            tri.scale_w_at,
-            scale_w,
-            DVec2::X,
-        );
+        let lang = self.lang;
         self.blocks
-            .push(view(&figure, caption, Key::PlanetaryModule, tri.scale_v));
+            .push(super::train_view::triangles_block(t, lang));
         let tr_ = &t.spec.train;
         // The mobility heads the ratio's line (the sheet's text block is as tall as PZ2's A3
         // holds).

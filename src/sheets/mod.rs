@@ -18,6 +18,7 @@ mod gears;
 #[cfg(test)]
 mod gears_tables_tests;
 mod layout;
+mod train_view;
 pub(crate) use flywheel::verdict as flywheel_verdict;
 pub(crate) use kinematics::verdict_lines;
 pub use layout::ScaleKey;

@@ -123,16 +123,17 @@ catalogue! {
             "Трикутники швидкостей і план кутових швидкостей",
             "Velocity triangles and the plan of angular velocities"
         ),
+        SlowLinks => (
+            "Звенья {links} (ω_{{pivot}} с первого плана)",
+            "Ланки {links} (ω_{{pivot}} з першого плану)",
+            "Links {links} (ω_{{pivot}} from the first plan)"
+        ),
         Willis => ("формула Виллиса", "формула Вілліса", "Willis"),
         ByTriangles => ("треугольники", "трикутники", "triangles"),
         Assembly => ("условие сборки", "умова складання", "assembly condition"),
         Holds => ("выполнено", "виконано", "holds"),
         Fails => ("не выполнено", "не виконано", "fails"),
-        ClosingModule => (
-            "модуль ступени в задаче не дан: принят по соосности",
-            "модуль ступеня в задачі не дано: прийнято за співвісністю",
-            "the stage's module is not given: taken for coaxiality"
-        ),
+        ForCoaxiality => ("по соосности", "за співвісністю", "for coaxiality"),
         ReadOff => (
             "Считано с чертежа и аналитический расчёт",
             "Знято з креслення і аналітичний розрахунок",

@@ -342,7 +342,8 @@ fn a_chosen_pair_shows_its_choice_on_the_blocking_contour() {
         .all(|v| v.figure.title != "blocking contour"));
 }
 
-/// No gear sheet prints a seed's erratum ("В источнике … ошибка"): those are the note's.
+/// No gear sheet prints a seed's erratum ("В источнике … ошибка") or a remark on what the
+/// task leaves out ("в задаче не дан"): those are the note's.
 #[test]
 fn gear_sheets_carry_no_errata() {
     let banned = [
@@ -353,6 +354,9 @@ fn gear_sheets_carry_no_errata() {
         "source",
         "erratum",
         "errata",
+        "в задаче",
+        "у задачі",
+        "not given",
     ];
     for name in GEAR_SCENES {
         let s = scene(name);
@@ -381,5 +385,24 @@ fn gear_sheets_carry_no_errata() {
                 }
             }
         }
+    }
+}
+
+/// A module the train's does not close is written on the sheet as the decision only (issue
+/// 45): PZ2 example 1's stage 3-4 at 2,833 mm for coaxiality; why the task's module does not
+/// serve is the note's.
+#[test]
+fn a_closing_module_is_written_as_the_decision() {
+    let s = scene("gears-pz2-ex1");
+    for (lang, want) in [
+        (Lang::Ru, "m = 1 мм, m_{3-4} = 2,833 мм (по соосности)"),
+        (Lang::Uk, "m = 1 мм, m_{3-4} = 2,833 мм (за співвісністю)"),
+        (Lang::En, "m = 1 mm, m_{3-4} = 2.833 mm (for coaxiality)"),
+    ] {
+        let lines: Vec<String> = gear_sheets(&s, Drafting::EXACT, lang)
+            .iter()
+            .flat_map(|p| p.texts.iter().flat_map(|t| t.lines.clone()))
+            .collect();
+        assert!(lines.iter().any(|l| l == want), "{lang:?}: {lines:?}");
     }
 }

@@ -730,9 +730,13 @@ fn the_drawn_rack_positions_are_recorded_ones() {
     assert!(r.deviation < 1e-4 * r.cutting.module, "{}", r.deviation);
 }
 
-/// A scene's plan of angular velocities: the scene, the language, its μ_ω as printed and as
-/// a number, and ω of some shafts (rad/s).
-type PlanCase<'a> = (&'a str, tmm::Lang, &'a str, f64, &'a [(&'a str, f64)]);
+/// A plan of angular velocities: its μ_ω as printed and as a number, and ω of some shafts
+/// (rad/s).
+type Plan<'a> = (&'a str, f64, &'a [(&'a str, f64)]);
+
+/// A scene's plans of angular velocities: the scene, the language, its first plan, and the
+/// slow links' own, if any.
+type PlanCase<'a> = (&'a str, tmm::Lang, Plan<'a>, Option<Plan<'a>>);
 
 #[test]
 fn the_plan_of_angular_velocities_names_every_ray_and_prints_mu_omega() {
@@ -746,79 +750,121 @@ fn the_plan_of_angular_velocities_names_every_ray_and_prints_mu_omega() {
         (
             "constructions/gears-pz2.toml",
             tmm::Lang::Ru,
-            "μ_{ω} = μ_{v}/(μ_{l}·H) = 0,02 рад/(с·мм)",
-            0.02,
-            &[
-                ("1", 1.0),
-                ("2-3", 0.25),
-                ("H", 0.05),
-                ("4", omega_4),
-                ("5", 0.0),
-            ],
+            (
+                "μ_{ω} = μ_{v}/(μ_{l}·h) = 0,02 рад/(с·мм)",
+                0.02,
+                &[
+                    ("1", 1.0),
+                    ("2-3", 0.25),
+                    ("H", 0.05),
+                    ("4", omega_4),
+                    ("5", 0.0),
+                ],
+            ),
+            // H read 2,5 mm from the foot: the stage 3-4-5-H read again at the same h and
+            // μ_v = 0,0001, five times finer: 2-3 at 62,5 mm, H at 12,5 mm.
+            Some((
+                "μ_{v} = 0,0001 м/(с·мм), μ_{ω} = μ_{v}/(μ_{l}·h) = 0,004 рад/(с·мм)",
+                0.004,
+                &[("2-3", 0.25), ("H", 0.05), ("4", omega_4), ("5", 0.0)],
+            )),
         ),
         (
             "constructions/gears-pz2.toml",
             tmm::Lang::En,
-            "μ_{ω} = μ_{v}/(μ_{l}·H) = 0.02 rad/(s·mm)",
-            0.02,
-            &[("1", 1.0), ("H", 0.05)],
+            (
+                "μ_{ω} = μ_{v}/(μ_{l}·h) = 0.02 rad/(s·mm)",
+                0.02,
+                &[("1", 1.0), ("H", 0.05)],
+            ),
+            Some((
+                "μ_{v} = 0.0001 m/(s·mm), μ_{ω} = μ_{v}/(μ_{l}·h) = 0.004 rad/(s·mm)",
+                0.004,
+                &[("H", 0.05)],
+            )),
         ),
         // Seed 000's reducer at n₁ = 1400 rpm: ω₁ = 146.608 rad/s, u₁₈ = i₁₂·i₃H·i₇₈ = −9.30818
         // (i₁₂ = −74/29, i₃H = 1 − z₄z₆/(z₃z₅), i₇₈ = −100/25).
         (
             "constructions/shaper.toml",
             tmm::Lang::Uk,
-            "μ_{ω} = μ_{v}/(μ_{l}·H) = 2,5 рад/(с·мм)",
-            2.5,
-            &[("1", w1), ("6", 0.0), ("8", w1 / u18)],
+            (
+                "μ_{ω} = μ_{v}/(μ_{l}·h) = 2,5 рад/(с·мм)",
+                2.5,
+                &[("1", w1), ("6", 0.0), ("8", w1 / u18)],
+            ),
+            None,
         ),
     ];
-    for (scene, lang, mu_text, mu_w, omegas) in cases {
+    for (scene, lang, first, slow) in cases {
         let views = gear_views(scene, lang);
         let v = views
             .iter()
             .find(|v| v.figure.title == "velocity triangles")
             .expect("the triangles");
         let f = &v.figure;
-        assert_eq!(labels_of(f, "μ_ω of the plan"), [mu_text], "{scene}");
-        assert_eq!(labels_of(f, "the pole of the plan"), ["p_ω"]);
-        assert_eq!(labels_of(f, "the foot of the pole"), ["0"]);
-        assert_eq!(labels_of(f, "the pole distance H"), ["H"]);
-        let foot = f
+        // One plan, or two (the slow links' drawn after the first): each with its pole, its
+        // foot, its h and its μ_ω.
+        let plans: Vec<Plan<'_>> = std::iter::once(first).chain(slow).collect();
+        let n = plans.len();
+        assert_eq!(labels_of(f, "μ_ω of the plan"), [first.0], "{scene}");
+        let second: Vec<&str> = slow.iter().map(|p| p.0).collect();
+        assert_eq!(
+            labels_of(f, "μ_ω of the slow links' plan"),
+            second,
+            "{scene}"
+        );
+        assert_eq!(labels_of(f, "the pole of the plan"), vec!["p_ω"; n]);
+        assert_eq!(labels_of(f, "the foot of the pole"), vec!["0"; n]);
+        assert_eq!(labels_of(f, "the pole distance H"), vec!["h"; n]);
+        let feet: Vec<_> = f
             .steps
             .iter()
-            .find(|s| s.note.starts_with("the foot of the pole"))
-            .and_then(|s| s.label.as_ref())
-            .expect("0")
-            .anchor;
-        for (shaft, omega) in omegas {
-            let ray = f
-                .steps
-                .iter()
-                .find(|s| s.note == format!("the ray of ω of {shaft}"))
-                .unwrap_or_else(|| panic!("{scene}: the ray of {shaft}"));
-            let label = ray.label.as_ref().expect("every ray named");
-            assert_eq!(&label.text, shaft);
-            // Named where it meets the reading line; its intercept from 0 reads ω at μ_ω.
-            assert!((label.anchor.y - foot.y).abs() < 1e-9);
-            let read = (label.anchor.x - foot.x) * mu_w;
-            assert!(
-                (read - omega).abs() <= 1e-9 * omega.abs().max(1.0),
-                "{scene}: ω_{shaft} read {read}, want {omega}"
-            );
-            // And the intercept is marked.
-            assert!(f
-                .steps
-                .iter()
-                .any(|s| s.note == format!("the intercept of ω of {shaft}")
-                    && s.item == tmm::construct::Item::Point(label.anchor)));
+            .filter(|s| s.note.starts_with("the foot of the pole"))
+            .filter_map(|s| s.label.as_ref())
+            .map(|l| l.anchor)
+            .collect();
+        for (k, (_, mu_w, omegas)) in plans.iter().enumerate() {
+            let foot = feet[k];
+            for (shaft, omega) in omegas.iter() {
+                // The plan's own ray of the shaft.
+                let ray = f
+                    .steps
+                    .iter()
+                    .filter(|s| s.note == format!("the ray of ω of {shaft}"))
+                    .nth(k)
+                    .unwrap_or_else(|| panic!("{scene}: the ray of {shaft} on plan {k}"));
+                let label = ray.label.as_ref().expect("every ray named");
+                assert_eq!(&label.text, shaft);
+                // Named where it meets the reading line; its intercept from 0 reads ω at μ_ω.
+                assert!((label.anchor.y - foot.y).abs() < 1e-9);
+                let read = (label.anchor.x - foot.x) * mu_w;
+                assert!(
+                    (read - omega).abs() <= 1e-9 * omega.abs().max(1.0),
+                    "{scene}: ω_{shaft} read {read} on plan {k}, want {omega}"
+                );
+                // And the intercept is marked.
+                assert!(f
+                    .steps
+                    .iter()
+                    .any(|s| s.note == format!("the intercept of ω of {shaft}")
+                        && s.item == tmm::construct::Item::Point(label.anchor)));
+            }
         }
-        // Every link's ray named, none twice.
-        let mut rays = labels_of(f, "the ray of ω of");
-        let n = rays.len();
-        rays.dedup();
-        assert_eq!(rays.len(), n);
-        assert!(n >= omegas.len());
+        // Every link's ray named, none twice on a plan (the first draws every link's).
+        let rays = labels_of(f, "the ray of ω of");
+        let mut names = rays.clone();
+        names.sort();
+        names.dedup();
+        let (one, two) = rays.split_at(names.len());
+        for plan in [one, two] {
+            let mut distinct = plan.to_vec();
+            distinct.sort();
+            distinct.dedup();
+            assert_eq!(distinct.len(), plan.len(), "{scene}: {rays:?}");
+        }
+        assert_eq!(two.is_empty(), n == 1, "{scene}: {rays:?}");
+        assert!(one.len() >= first.2.len());
     }
 }
 

@@ -32,9 +32,9 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("cam-undercut/cam", 0.28, "the profile at μ_l = 0,0005 (229 mm tall): 0,0004 draws it 286 mm, past its 240 mm room"),
     ("friction/friction", 0.18, "every free scale as large as its 160 mm room holds: the schemes drawn to scale at μ_l = 0,0004 (the screw's turn 141 mm: 0,00025 draws it 226 mm), 0,001 (the journal 114 × 136 mm: 0,0005 draws it 228 × 238 mm) and 0,004 (the rollers 121 mm: 0,0025 draws them 178 mm); the force triangles at μ_F = 10 and 100 (Q = 1000 N drawn 100 mm: one step finer draws it 200 mm, and the cases spill onto a second sheet, 3 % inked); the inclines and the wedge are schematic (not to scale, about 60 mm)"),
     ("friction-follower/friction", 0.14, "every free scale as large as its 160 mm room holds: the guide at μ_l = 0,001 (Z 133 mm from the axis: 0,0005 draws it 267 mm), the rocker at 0,001 (L = 120 mm: 0,0005 draws it 240 mm), the force triangle at μ_F = 10 (P = 883 N drawn 88 mm: 5 draws it 177 mm); three views, the closed forms and the table on an A2, the friction sheet's smallest format"),
-    ("gears-pz2/gears", 0.08, "one narrow figure (a vertical train's triangles, 125 mm tall at μ_l = 0,001: 0,0005 draws it 265 mm, more than an A3 holds beside its data) on the smallest format, A3"),
-    ("gears-pz2-ex1/gears", 0.12, "one narrow figure: the train's triangles with the plan of ω above and the scheme beside them, the heights from the ring 7's axis 20,5 mm below the sun's to the satellites' 68 mm above drawn 177 mm at μ_l = 0,0005 (0,001 draws them 88 mm); with its data and table it goes on an A2"),
-    ("gears-pz2-ex2/gears", 0.09, "one narrow figure: the train's triangles with the plan of ω above and the scheme beside them, the heights from the input's axis to the satellites' 56,5 mm above drawn 141 mm at μ_l = 0,0004 (0,0005 draws them 113 mm); with its data and table it goes on an A2"),
+    ("gears-pz2/gears", 0.08, "one view: a vertical train's triangles (125 mm tall at μ_l = 0,001: 0,0005 draws them 265 mm, more than an A3 holds beside its data) and the slow links' picture beside them (its plan at the same h, no higher than the first's), on the smallest format, A3"),
+    ("gears-pz2-ex1/gears", 0.12, "one view: the train's triangles with the plan of ω above and the scheme beside them, and the slow links' own picture beside those; the heights from the ring 7's axis 20,5 mm below the sun's to the satellites' 68 mm above drawn 177 mm at μ_l = 0,0005 (0,001 draws them 88 mm); with its data and table it goes on an A2"),
+    ("gears-pz2-ex2/gears", 0.09, "one view: the train's triangles with the plan of ω above and the scheme beside them, and the slow links' own picture beside those; the heights from the input's axis to the satellites' 56,5 mm above drawn 141 mm at μ_l = 0,0004 (0,0005 draws them 113 mm); with its data and table it goes on an A2"),
     ("gears-differential/gears", 0.09, "one narrow figure: the differential's triangles with the plan of ω above and the scheme beside them, the ring's radius 80 mm drawn 160 mm at μ_l = 0,0005 (0,001 draws it 80 mm); with its data and its table of six rows it goes on an A2"),
     ("gears-pz3/gears", 0.13, "the scene fixes μ_l"),
     ("shaper/gears", 0.21, "the meshing picture at μ_l = 0,002 fills the sheet's height (329 mm: 0,001 draws it 658 mm); the two rack-cut pinions (§4.4.1 x = 0, §4.4.2 x = 0,8 shortened) at 1 : 1 beside it, so that they, the train and the two parts of the table share one A1 (at 2 : 1 the table went to a second sheet holding nothing else)"),
@@ -121,7 +121,7 @@ fn shares() -> Vec<(String, f64)> {
 }
 
 /// A train's triangles alone go on the smallest format (PZ2: an A3, not the A2 a 265 mm
-/// tall figure needed).
+/// tall figure needed), the slow links' own picture beside them.
 #[test]
 fn a_trains_triangles_go_on_an_a3() {
     let pz2: Vec<Plate> = sheets()

@@ -433,3 +433,72 @@ fn the_required_stage_is_a_fixed_axis_mesh_or_none() {
     assert!((req.ratio.abs() - 1000.0 / 190.0).abs() < 1e-12);
     assert!((req.triangles.ratio - req.ratio).abs() < 1e-9 * req.ratio.abs());
 }
+
+/// A slow output read on a picture of its own (issue 45): PZ2's examples at u = 20 and 32
+/// put the output's intercept a few millimetres from the foot of one plan, where a reading
+/// to 0,5 mm errs by a sixth; the links from a pivot to the output drawn again at their own
+/// μ_v read u within the bound of the four intercepts read (each to 0,25 mm), and exactly
+/// when read exactly.
+#[test]
+fn a_slow_output_is_read_on_a_picture_of_its_own() {
+    for (t, u) in [(pz2_example_1(), 20.0), (pz2_example_2(), 32.0)] {
+        let (t, _) = t.closing().unwrap();
+        let exact = triangles::triangles(&t, 1.0, &ctx(0.0)).unwrap();
+        assert!((exact.ratio.abs() - u).abs() < 1e-9 * u, "{}", exact.ratio);
+        let tri = triangles::triangles(&t, 1.0, &ctx(0.5)).unwrap();
+        let slow = tri
+            .slow
+            .as_ref()
+            .unwrap_or_else(|| panic!("u = {u}: one plan"));
+        assert!(slow.links.contains(&t.output) && slow.links.contains(&slow.pivot));
+        assert!(!slow.links.contains(&t.input), "{:?}", slow.links);
+        // The picture draws the route's stage only: every velocity at a pole of a mesh of
+        // two of its links (the pivot's given one among them), its axis of heights no
+        // higher than their poles and axes.
+        let (ys, poles) = t.layout().unwrap();
+        let lo = ys
+            .iter()
+            .chain(&poles)
+            .fold(f64::INFINITY, |a, v| a.min(*v));
+        let drawn = |y: f64| (y - lo) / tri.scale_l.value();
+        let on = |w: usize| slow.links.contains(&t.wheels[w].shaft);
+        let own: Vec<f64> = t
+            .meshes
+            .iter()
+            .zip(&poles)
+            .filter(|(m, _)| on(m.0) && on(m.1))
+            .map(|(_, y)| drawn(*y))
+            .collect();
+        let top = slow
+            .links
+            .iter()
+            .map(|k| drawn(ys[*k]))
+            .chain(own.iter().copied())
+            .fold(f64::NEG_INFINITY, f64::max);
+        for step in &slow.figure.steps {
+            match (&step.item, step.note.as_str()) {
+                (crate::construct::Item::Vector { to, .. }, "the velocity of the pole") => {
+                    assert!(own.iter().any(|y| (y - to.y).abs() < 1e-9), "u = {u}: {to}");
+                }
+                (crate::construct::Item::Segment(s), "the axis of heights") => {
+                    assert!(s.from.y.max(s.to.y) <= top + 5.0 + 1e-9, "u = {u}: {s:?}");
+                }
+                _ => {}
+            }
+        }
+        // The four intercepts as drawn: the input's and the pivot's on the first plan, the
+        // pivot's and the output's on the second.
+        let first = |k: usize| (exact.omega[k] / tri.scale_w.value()).abs();
+        let second = |k: usize| (exact.omega[k] / slow.scale_w.value()).abs();
+        let bound = 0.25 / first(t.input)
+            + 0.25 / first(slow.pivot)
+            + 0.25 / second(slow.pivot)
+            + 0.25 / second(t.output);
+        let err = ((tri.ratio.abs() - u) / u).abs();
+        assert!(
+            err <= bound * 1.01 && err < 0.05,
+            "u = {u}: {} ({err} > {bound})",
+            tri.ratio
+        );
+    }
+}
