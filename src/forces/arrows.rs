@@ -7,20 +7,34 @@
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::{Arc, DVec2, Segment};
 
-/// An arrow lies on another when both its ends are this close to the other's line and they
-/// share more than [`SHARED_MM`] of their length, mm (a main line is 0.7 mm wide and an
-/// arrowhead about 1 mm: closer, two arrows print as one).
-const ON_LINE_MM: f64 = 1.0;
+/// A line lies on another when both its ends are this close to the other's line and they
+/// share more than [`SHARED_MM`] of their length, mm (a main line is 0.5 mm wide: closer,
+/// two lines print as one).
+pub const ON_LINE_MM: f64 = 1.0;
 /// See [`ON_LINE_MM`], mm.
 const SHARED_MM: f64 = 1.0;
 
-/// Whether the arrow `a`–`b` lies on the drawn vector `p`–`q` (see [`ON_LINE_MM`]).
-fn lies_on(a: DVec2, b: DVec2, p: DVec2, q: DVec2) -> bool {
+/// Two arrows of a drawing whose ends lie this close to each other's line read as one arrow,
+/// mm: a result's arrowhead is 4 mm long, and two heads nearer than its length print as one
+/// doubled head (two forces from one point a few degrees apart: F_и5 and R₄₋₅ along the
+/// V-engine's cylinder, their heads 1.4 mm apart, F_и3 and R₂₋₃ 2.6 mm — issue 45).
+const HEADS_APART_MM: f64 = 4.0;
+
+/// Whether the lines `a`–`b` and `p`–`q` lie on each other: one of them on the other
+/// ([`lies_on`]; a short line on a long one that leaves it at a small angle is on it, though
+/// the long one's far end is not near the short one's line).
+pub fn overlap(a: DVec2, b: DVec2, (p, q): (DVec2, DVec2), near: f64) -> bool {
+    lies_on(a, b, (p, q), near) || lies_on(p, q, (a, b), near)
+}
+
+/// Whether the line `a`–`b` lies on the drawn line `p`–`q`: both its ends within `near` mm
+/// of that line, and the two sharing more than [`SHARED_MM`] of their length.
+pub fn lies_on(a: DVec2, b: DVec2, (p, q): (DVec2, DVec2), near: f64) -> bool {
     let Some(u) = (q - p).try_normalize() else {
         return false;
     };
     let off = |x: DVec2| (x - p).perp_dot(u).abs();
-    if off(a) > ON_LINE_MM || off(b) > ON_LINE_MM {
+    if off(a) > near || off(b) > near {
         return false;
     }
     let (s0, s1) = ((a - p).dot(u), (b - p).dot(u));
@@ -29,9 +43,21 @@ fn lies_on(a: DVec2, b: DVec2, p: DVec2, q: DVec2) -> bool {
     hi.min(len) - lo.max(0.0) > SHARED_MM
 }
 
+/// The vectors drawn on `rec`: (tail, head), mm.
+pub fn vectors(rec: &Recorder) -> Vec<(DVec2, DVec2)> {
+    rec.steps()
+        .iter()
+        .filter_map(|s| match s.item {
+            Item::Vector { from, to } => Some((from, to)),
+            _ => None,
+        })
+        .collect()
+}
+
 /// Draw the arrow of a force along the unit `e` at its point `x`, `len` mm long, and label
 /// it `name` at its free end: from the point, or onto it (`onto`) — the first of these, then
-/// the other, then past an arrow already there, that no arrow drawn on `rec` covers. The
+/// the other, then past an arrow already there, that no arrow drawn on `rec` covers (lies
+/// within [`HEADS_APART_MM`] of it along it: two arrows a few degrees apart are covered). The
 /// label names the force ([`Recorder::label_item`]), never the point at its end.
 pub fn arrow(
     rec: &mut Recorder,
@@ -40,14 +66,7 @@ pub fn arrow(
     (x, e, len): (DVec2, DVec2, f64),
     onto: bool,
 ) -> StepId {
-    let drawn: Vec<(DVec2, DVec2)> = rec
-        .steps()
-        .iter()
-        .filter_map(|s| match s.item {
-            Item::Vector { from, to } => Some((from, to)),
-            _ => None,
-        })
-        .collect();
+    let drawn = vectors(rec);
     let from_point = (x, x + e * len);
     let onto_point = (x - e * len, x);
     let (first, second) = if onto {
@@ -55,7 +74,7 @@ pub fn arrow(
     } else {
         (from_point, onto_point)
     };
-    let free = |(a, b): (DVec2, DVec2)| !drawn.iter().any(|&(p, q)| lies_on(a, b, p, q));
+    let free = |(a, b): (DVec2, DVec2)| !drawn.iter().any(|&pq| overlap(a, b, pq, HEADS_APART_MM));
     // Past the arrows already there: one arrow's length further out each time, on the side
     // the force is drawn from.
     let past = (1..=drawn.len() + 1).map(|k| {
@@ -74,6 +93,21 @@ pub fn arrow(
     // The label at the end away from the point; an arrow drawn onto the point in place of
     // one from it is labelled beside its shaft, since its tail lies where the first arrow
     // would have been labelled (or at a neighbouring point).
+    // An arrow drawn past another stands on its line of action away from its point: a thin
+    // line joins it to the point (where an arm about the point ends).
+    let near = if from.distance(x) < to.distance(x) {
+        from
+    } else {
+        to
+    };
+    if near.distance(x) > ON_LINE_MM {
+        rec.draw(
+            format!("{note}: to its point"),
+            Item::Segment(Segment::new(x, near)),
+            Role::Construction,
+            &[],
+        );
+    }
     let id = rec.draw(note, Item::Vector { from, to }, Role::Result, &[]);
     if (from, to) == second && !onto {
         rec.label_item(id, name, from.lerp(to, 0.5), e.perp());
@@ -118,7 +152,7 @@ pub fn arm(rec: &mut Recorder, note: String, (c, foot): (DVec2, DVec2), label: &
             _ => None,
         })
         .collect();
-    let on_ink = |a: DVec2, b: DVec2| drawn.iter().any(|&(p, q)| lies_on(a, b, p, q));
+    let on_ink = |a: DVec2, b: DVec2| drawn.iter().any(|&pq| lies_on(a, b, pq, ON_LINE_MM));
     if on_ink(c, foot) {
         // One side first, stacked outwards as baseline dimensions are, then the other: the
         // first place clear of the lines drawn whose dimension line leaves its text room
@@ -281,7 +315,21 @@ mod tests {
         assert_eq!(v[1].0, x - e * 14.0);
         assert_eq!(v[1].1, x);
         assert!(v[2].0.distance(x + tilted * 14.0) < 1e-9, "{:?}", v[2]);
-        for (k, s) in rec.steps().iter().enumerate() {
+        // The third joined to its point by a thin line along its line of action.
+        let joined: Vec<Segment> = rec
+            .steps()
+            .iter()
+            .filter_map(|s| match s.item {
+                Item::Segment(seg) => Some(seg),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(joined, [Segment::new(x, v[2].0)]);
+        let arrows = rec
+            .steps()
+            .iter()
+            .filter(|s| matches!(s.item, Item::Vector { .. }));
+        for (k, s) in arrows.enumerate() {
             let l = s.label.as_ref().expect("labelled");
             assert_eq!(l.names, crate::construct::Names::Item, "arrow {k}");
         }
@@ -293,6 +341,23 @@ mod tests {
             .collect();
         assert_eq!(ends[1], x - e * 7.0);
         assert!(ends[0].distance(ends[2]) > 10.0);
+    }
+
+    #[test]
+    fn two_forces_a_few_degrees_apart_at_one_point_are_two_arrows() {
+        // F_и5 along the V-engine's cylinder and R₄₋₅ 5.6° off it, from one point: their
+        // heads were 1.4 mm apart, one arrow with a doubled head.
+        let mut rec = recorder();
+        let x = DVec2::new(3.0, 4.0);
+        let e = DVec2::from_angle(2.356);
+        let r = DVec2::from_angle(2.356 + 0.098);
+        arrow(&mut rec, "a".into(), "F_{и5}", (x, e, 14.0), false);
+        arrow(&mut rec, "b".into(), "R_{4-5}", (x, r, 14.0), false);
+        let v = vectors(&rec);
+        let (from, to) = (v[1].0, v[1].1);
+        // Not from the point: onto it, its head at the point and its tail away from F_и5's.
+        assert_eq!((from, to), (x - r * 14.0, x));
+        assert!(from.distance(x + e * 14.0) > 20.0);
     }
 
     #[test]

@@ -340,3 +340,97 @@ fn the_engines_note_turns_the_levers_force_into_the_balancing_moment() {
         }
     }
 }
+
+/// The vectors a figure draws, with their labels: (label, tail, head), mm.
+fn arrows(f: &Figure) -> Vec<(&str, DVec2, DVec2)> {
+    f.steps
+        .iter()
+        .filter_map(|s| match (&s.item, &s.label) {
+            (Item::Vector { from, to }, Some(l)) => Some((l.text.as_str(), *from, *to)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Issue 45 (the V-engine's force sheets): on a group's drawing two loads that share a line
+/// are two arrows — F_и5 and R₄₋₅ from C a few degrees apart printed as one arrow with a
+/// doubled head — and every force is an arrow, its head clear of the joints (R₀₋₅ pulling
+/// the piston to its guide had its head under the joint C, a line with no arrowhead).
+#[test]
+fn a_groups_loads_are_arrows_apart_with_their_heads_in_sight() {
+    let mut pairs = 0;
+    for scene in SCENES {
+        each_position(scene, |f| {
+            for g in &f.analysis.polygons.groups {
+                let v = arrows(&g.scheme);
+                for (k, &(n1, a1, b1)) in v.iter().enumerate() {
+                    for &(n2, a2, b2) in &v[k + 1..] {
+                        let (e1, e2) = ((b1 - a1).normalize(), (b2 - a2).normalize());
+                        if e1.dot(e2) < 15f64.to_radians().cos() {
+                            continue;
+                        }
+                        pairs += 1;
+                        assert!(
+                            b1.distance(b2) >= 4.0,
+                            "{scene} {}: {n1} and {n2} have their heads {} mm apart",
+                            f.label,
+                            b1.distance(b2)
+                        );
+                    }
+                }
+                // Its head's base clear of every joint's circle (1.5 mm), drawn over it.
+                for s in &g.scheme.steps {
+                    let Item::Joint { at, .. } = s.item else {
+                        continue;
+                    };
+                    for &(name, tail, head) in &v {
+                        let base = head + (tail - head).normalize() * 4.0;
+                        assert!(
+                            base.distance(at) > 1.6,
+                            "{scene} {}: the head of {name} lies under the joint at {at}",
+                            f.label
+                        );
+                    }
+                }
+            }
+        });
+    }
+    assert!(pairs > 0, "no two loads along one line were met");
+}
+
+/// Issue 45: a force polygon lets a reader follow each vector — two forces along one line
+/// (F_д5 laid back over F_и5) drawn side by side, not one over the other.
+#[test]
+fn no_vector_of_a_polygon_lies_on_another() {
+    let mut beside = 0;
+    for scene in SCENES {
+        each_position(scene, |f| {
+            for g in &f.analysis.polygons.groups {
+                let v = arrows(&g.polygon);
+                for (k, &(n1, a1, b1)) in v.iter().enumerate() {
+                    for &(n2, a2, b2) in &v[k + 1..] {
+                        if a1.distance(b1) < 4.0 || a2.distance(b2) < 4.0 {
+                            continue; // read on the polygon's detail
+                        }
+                        let u = (b2 - a2).normalize();
+                        let off = |x: DVec2| (x - a2).perp_dot(u).abs();
+                        let (s0, s1) = ((a1 - a2).dot(u), (b1 - a2).dot(u));
+                        let shared = s0.max(s1).min(a2.distance(b2)) - s0.min(s1).max(0.0);
+                        assert!(
+                            off(a1) > 1.0 || off(b1) > 1.0 || shared <= 1.0,
+                            "{scene} {}: {n1} lies on {n2} on the polygon",
+                            f.label
+                        );
+                    }
+                }
+                beside += g
+                    .polygon
+                    .steps
+                    .iter()
+                    .filter(|s| s.note.ends_with("beside the vector on its line"))
+                    .count();
+            }
+        });
+    }
+    assert!(beside > 0, "no polygon drew a vector beside another");
+}

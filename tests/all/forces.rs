@@ -864,11 +864,13 @@ fn every_arm_ends_on_its_forces_line_of_action() {
                             Item::Vector { from, to } if s.note == format!("load {name}") => {
                                 Some((from, to))
                             }
+                            // An arrow drawn past another on its line, joined to its point.
                             Item::Segment(l)
                                 if s.note
                                     == format!(
                                         "line of action of {name} to the foot of its arm"
-                                    ) =>
+                                    )
+                                    || s.note == format!("load {name}: to its point") =>
                             {
                                 Some((l.from, l.to))
                             }

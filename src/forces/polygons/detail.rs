@@ -6,7 +6,7 @@ use crate::geom::{Circle, DVec2};
 use crate::scale::Scale;
 
 /// A force shorter than this on its polygon, mm, is drawn again in the polygon's detail.
-const SMALL_FORCE_MM: f64 = 4.0;
+pub(super) const SMALL_FORCE_MM: f64 = 4.0;
 
 /// The detail draws the smallest force about this long, mm.
 const DETAIL_FORCE_MM: f64 = 12.0;
@@ -33,14 +33,18 @@ pub struct PolygonDetail {
 /// A polygon has at most this many details.
 const MAX_DETAILS: usize = 3;
 
-/// The details of `polygon` about its forces `laid` (polygon mm) drawn shorter than
+/// The details of a polygon at `mu` about its forces `laid` (polygon mm) drawn shorter than
 /// [`SMALL_FORCE_MM`]: from the shortest force not yet shown, the round μ_F that draws it
 /// about [`DETAIL_FORCE_MM`], and a zone about it and the other small forces near enough to
 /// share a detail [`DETAIL_MM`] wide; then the next. Empty when every force reads. A force
 /// zero to the polygon's scale (shorter than [`crate::forces::ZERO_PART`] of its longest) is
-/// drawn as the point it is, with no detail.
-pub(super) fn details(polygon: &Figure, laid: &[(DVec2, DVec2)]) -> Vec<PolygonDetail> {
-    let mu = polygon.scale;
+/// drawn as the point it is, with no detail. `polygon` is the polygon as a detail at the
+/// given μ_F shows it.
+pub(super) fn details(
+    mu: Scale,
+    laid: &[(DVec2, DVec2)],
+    polygon: &dyn Fn(Scale) -> Figure,
+) -> Vec<PolygonDetail> {
     let longest = laid.iter().map(|(a, b)| a.distance(*b)).fold(0.0, f64::max);
     let zero = crate::forces::ZERO_PART * longest;
     let mut small: Vec<(DVec2, DVec2)> = laid
@@ -79,7 +83,7 @@ pub(super) fn details(polygon: &Figure, laid: &[(DVec2, DVec2)]) -> Vec<PolygonD
         };
         out.push(PolygonDetail {
             zone,
-            figure: polygon.detail_with_vectors(&zone, scale),
+            figure: polygon(scale).detail_with_vectors(&zone, scale),
         });
         small = rest;
     }

@@ -1,8 +1,9 @@
 //! A force polygon laid off head to tail at μ_F, closed by two known directions, its
 //! reactions read off under the drafting model.
 
-use super::detail::{details, PolygonDetail};
+use super::detail::{details, PolygonDetail, SMALL_FORCE_MM};
 use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role};
+use crate::forces::arrows::{overlap, vectors, ON_LINE_MM};
 use crate::forces::loads::Load;
 use crate::geom::{DVec2, Line, Segment};
 use crate::scale::Scale;
@@ -13,6 +14,17 @@ pub(super) struct Polygon {
     pub(super) tip: DVec2,
     /// The forces laid off, polygon mm.
     pub(super) laid: Vec<(DVec2, DVec2)>,
+    /// The vectors drawn beside another on its line.
+    beside: Vec<Beside>,
+}
+
+/// A vector drawn beside the one whose line it shares: its step, the steps of the thin lines
+/// joining its tail and its head to the polygon's points, and its shift off its line,
+/// polygon mm.
+struct Beside {
+    vector: usize,
+    joins: [usize; 2],
+    shift: DVec2,
 }
 
 impl Polygon {
@@ -21,7 +33,31 @@ impl Polygon {
             rec: Recorder::in_context(title, mu_f, ctx),
             tip: DVec2::ZERO,
             laid: Vec::new(),
+            beside: Vec::new(),
         }
+    }
+
+    /// The polygon `drawn` as a detail enlarging it `k` times shows it: each vector drawn
+    /// beside another [`BESIDE_MM`] off it on the detail, not `k` times that (on a detail
+    /// ten times larger it stood 20 mm off its point).
+    fn enlarged(&self, drawn: &Figure, k: f64) -> Figure {
+        let mut f = drawn.clone();
+        for b in &self.beside {
+            let back = b.shift - b.shift / k;
+            if let Item::Vector { from, to } = f.steps[b.vector].item {
+                f.steps[b.vector].item = Item::Vector {
+                    from: from - back,
+                    to: to - back,
+                };
+            }
+            if let Item::Segment(s) = f.steps[b.joins[0]].item {
+                f.steps[b.joins[0]].item = Item::Segment(Segment::new(s.from, s.to - back));
+            }
+            if let Item::Segment(s) = f.steps[b.joins[1]].item {
+                f.steps[b.joins[1]].item = Item::Segment(Segment::new(s.from - back, s.to));
+            }
+        }
+        f
     }
 
     /// The polygon as drawn, and the details its small forces need (their zones circled on
@@ -33,7 +69,10 @@ impl Polygon {
             steps: self.rec.steps().to_vec(),
             readings: Vec::new(),
         };
-        let d = details(&drawn, &self.laid);
+        let mu = drawn.scale;
+        let d = details(mu, &self.laid, &|detail: Scale| {
+            self.enlarged(&drawn, mu.value() / detail.value())
+        });
         for d in &d {
             self.rec.draw(
                 "the zone of the polygon's detail",
@@ -49,21 +88,64 @@ impl Polygon {
         let to = self.tip + f / self.rec.scale().value();
         if to != self.tip {
             self.laid.push((self.tip, to));
-            let id = self.rec.draw(
-                format!("lay off {name}"),
-                Item::Vector { from: self.tip, to },
-                Role::Given,
-                &[],
-            );
-            self.rec.label(
-                id,
-                name,
-                self.tip.lerp(to, 0.5),
-                (to - self.tip).perp().normalize_or_zero(),
-            );
+            self.vector(format!("lay off {name}"), name, (self.tip, to), Role::Given);
         }
         self.tip = to;
         to
+    }
+
+    /// Draw the polygon's vector `from`–`to` labelled `name` at its middle; where it would
+    /// lie on a vector drawn already (two forces along one line, the second laid back over
+    /// the first: F_д5 over F_и5 on the V-engine's cylinder), beside it, [`BESIDE_MM`] off
+    /// on the first free side, its ends joined to the polygon's points by thin lines — the
+    /// textbook's collinear vectors drawn side by side. The polygon's points stay where the
+    /// forces put them. A force read on a detail ([`SMALL_FORCE_MM`]) stays on its line.
+    fn vector(&mut self, note: String, name: &str, (from, to): (DVec2, DVec2), role: Role) {
+        let drawn = vectors(&self.rec);
+        let n = (to - from).perp().normalize_or_zero();
+        let free = |d: &DVec2| {
+            !drawn
+                .iter()
+                .any(|&pq| overlap(from + *d, to + *d, pq, ON_LINE_MM))
+        };
+        let beside = if from.distance(to) < SMALL_FORCE_MM {
+            DVec2::ZERO
+        } else {
+            [0.0, 1.0, -1.0, 2.0, -2.0]
+                .map(|k| n * (k * BESIDE_MM))
+                .into_iter()
+                .find(free)
+                .unwrap_or(DVec2::ZERO)
+        };
+        let mut joins = [0; 2];
+        if beside != DVec2::ZERO {
+            for (k, (a, b)) in [(from, from + beside), (to + beside, to)]
+                .into_iter()
+                .enumerate()
+            {
+                let id = self.rec.draw(
+                    format!("{note}: beside the vector on its line"),
+                    Item::Segment(Segment::new(a, b)),
+                    Role::Construction,
+                    &[],
+                );
+                joins[k] = id.0 as usize;
+            }
+        }
+        let (a, b) = (from + beside, to + beside);
+        let id = self
+            .rec
+            .draw(note, Item::Vector { from: a, to: b }, role, &[]);
+        if beside != DVec2::ZERO {
+            self.beside.push(Beside {
+                vector: id.0 as usize,
+                joins,
+                shift: beside,
+            });
+        }
+        // Labelled on its side, away from the vector it stands beside.
+        let side = beside.try_normalize().unwrap_or(n);
+        self.rec.label(id, name, a.lerp(b, 0.5), side);
     }
     pub(super) fn lay_all(&mut self, loads: &[&Load]) -> DVec2 {
         for l in loads {
@@ -118,22 +200,60 @@ impl Polygon {
     pub(super) fn read(&mut self, name: &str, from: DVec2, to: DVec2) -> DVec2 {
         let m = self.rec.measure(from, to);
         if m.drawn_mm > 0.0 {
-            let id = self.rec.draw(
-                format!("read {name}"),
-                Item::Vector { from, to },
-                Role::Result,
-                &[],
-            );
-            self.rec.label(
-                id,
-                name,
-                from.lerp(to, 0.5),
-                (to - from).perp().normalize_or_zero(),
-            );
+            self.vector(format!("read {name}"), name, (from, to), Role::Result);
         }
         (to - from).normalize_or_zero() * m.value
     }
 }
 
+/// A vector of the polygon on the line of one drawn already is drawn this far beside it, mm
+/// (a result's arrowhead is 1.2 mm wide: two heads side by side with a gap between them).
+const BESIDE_MM: f64 = 2.0;
+
 /// How far a polygon's closing direction is drawn past the closing point, mm.
 const CLOSING_PAST_MM: f64 = 5.0;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::construct::Drafting;
+    use crate::scale::Quantity;
+
+    fn vectors(f: &Figure) -> Vec<(DVec2, DVec2)> {
+        f.steps
+            .iter()
+            .filter_map(|s| match s.item {
+                Item::Vector { from, to } => Some((from, to)),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_force_laid_back_along_another_is_drawn_beside_it() {
+        let mu = Scale::new(40.0, Quantity::Force).expect("μ_F");
+        let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("a context");
+        let mut pol = Polygon::new("polygon".into(), mu, &ctx);
+        let e = DVec2::from_angle(2.356);
+        // F_и5 = 884 N up the cylinder, F_д5 = 5280 N back down it.
+        let t = pol.lay("F_{и5}", e * 884.0);
+        let end = pol.lay("F_{д5}", -e * 5280.0);
+        // The polygon's points are where the forces put them.
+        assert!(t.distance(e * 884.0 / 40.0) < 1e-9);
+        assert!(end.distance(-e * (5280.0 - 884.0) / 40.0) < 1e-9);
+        let (figure, _) = pol.finish();
+        let v = vectors(&figure);
+        assert_eq!(v[0], (DVec2::ZERO, t));
+        // F_д5 beside F_и5, 2 mm off its line, parallel and as long as it is.
+        let off = (v[1].0 - t).perp_dot(e);
+        assert!((off.abs() - BESIDE_MM).abs() < 1e-9, "{off} mm off");
+        assert!((v[1].1 - v[1].0 - (end - t)).length() < 1e-9);
+        // Its ends joined to the polygon's points by thin lines.
+        let joins = figure
+            .steps
+            .iter()
+            .filter(|s| s.note.ends_with("beside the vector on its line"))
+            .count();
+        assert_eq!(joins, 2);
+    }
+}

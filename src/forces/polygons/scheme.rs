@@ -203,7 +203,17 @@ pub(super) fn show_reaction(sch: &mut Scheme<'_>, r: &Reaction) {
             // The frame's reaction stands on the guide's line: from it when it pushes the
             // block off the guide, onto it when it pulls the block to the guide.
             let name = reaction_name(r.pair.from, r.pair.to);
-            sch.arrow(&name, g, e, e.dot(towards) >= 0.0);
+            let pulls = e.dot(towards) >= 0.0;
+            let mu = sch.board.setup.mu_l.value();
+            // A pull at a point of the block is the push of the guide's other side on the
+            // block's other face: drawn onto that face, its arrow stays clear of the block
+            // (onto the guide's line it crossed the block and its head lay under the joint).
+            let across = if pulls && (offset / mu).abs() <= Item::SLIDER_HALF_MM.0 {
+                towards * (2.0 * Item::SLIDER_HALF_MM.1)
+            } else {
+                DVec2::ZERO
+            };
+            sch.arrow(&name, g - across, e, pulls);
             return;
         }
     }
