@@ -154,7 +154,7 @@ fn angle_graph(
     phi: Scale,
     ctx: &Context,
 ) -> Result<Figure, CamError> {
-    let rocker = matches!(spec.follower, Follower::Rocker { .. });
+    let rocker = spec.shows_transmission_angle();
     let mu = Scale::new(1f64.to_radians(), Quantity::Angle).ok_or(CamError::NoScale {
         what: "μ_γ",
         size: 1.0,

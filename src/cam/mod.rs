@@ -214,10 +214,15 @@ impl CamSpec {
             _ => None,
         }
     }
+    /// Whether its angle graph and tables show the transmission angle γ (a rocker), not the
+    /// pressure angle λ (a translating or flat follower).
+    pub fn shows_transmission_angle(&self) -> bool {
+        self.arm().is_some()
+    }
     /// The angle its graph and tables show: the rocker's transmission angle γ, a translating
     /// or flat follower's pressure angle λ.
     pub fn angle_symbol(&self) -> &'static str {
-        if self.arm().is_some() {
+        if self.shows_transmission_angle() {
             "γ"
         } else {
             "λ"
@@ -225,7 +230,7 @@ impl CamSpec {
     }
     /// The limit of that angle: γ_min for a rocker, λ_max = 90° − γ_min otherwise.
     pub fn angle_limit_symbol(&self) -> &'static str {
-        if self.arm().is_some() {
+        if self.shows_transmission_angle() {
             "γ_{min}"
         } else {
             "λ_{max}"
@@ -233,7 +238,7 @@ impl CamSpec {
     }
     /// That limit's value: γ_min, or 90° − γ_min.
     pub fn angle_limit(&self) -> f64 {
-        if self.arm().is_some() {
+        if self.shows_transmission_angle() {
             self.gamma_min
         } else {
             std::f64::consts::FRAC_PI_2 - self.gamma_min

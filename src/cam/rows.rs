@@ -33,10 +33,6 @@ fn subject(mut r: Row, s: &str) -> Row {
 }
 
 impl Cam {
-    /// Whether the follower is a rocker (transmission angles) or translating (pressure).
-    fn rocker(&self) -> bool {
-        matches!(self.spec.follower, Follower::Rocker { .. })
-    }
     fn flat(&self) -> bool {
         matches!(self.spec.follower, Follower::Flat { .. })
     }
@@ -65,7 +61,7 @@ impl Cam {
     /// The exact pressure (translating) or transmission (rocker) angle at φ, rad.
     pub fn angle_at(&self, phi: f64, after: bool) -> f64 {
         let k = self.placement.kin(motion(&self.spec, phi, after));
-        if self.rocker() {
+        if self.spec.shows_transmission_angle() {
             k.transmission_angle()
         } else {
             k.pressure_angle()
@@ -77,7 +73,7 @@ impl Cam {
     /// piece, refined.
     pub fn worst_angle(&self) -> f64 {
         let pieces = super::extremum::checked_pieces(&self.spec);
-        let rocker = self.rocker();
+        let rocker = self.spec.shows_transmission_angle();
         let (v, _, _) = super::extremum::max_over(&self.spec, &pieces, exact::DENSE, |m| {
             let k = self.placement.kin(m);
             if rocker {
@@ -179,14 +175,18 @@ impl Cam {
             "min",
         ));
         if !self.flat() {
-            let symbol = if self.rocker() {
+            let symbol = if self.spec.shows_transmission_angle() {
                 Symbol::TransmissionAngle
             } else {
                 Symbol::PressureAngle
             };
             for (i, p) in self.points.iter().enumerate() {
                 let g = self.inversion.angles[i];
-                let g = if self.rocker() { FRAC_PI_2 - g } else { g };
+                let g = if self.spec.shows_transmission_angle() {
+                    FRAC_PI_2 - g
+                } else {
+                    g
+                };
                 let a = self.angle_at(p.phi, p.after);
                 out.push(row(
                     symbol,
@@ -325,7 +325,7 @@ impl Cam {
             }
         } else {
             let worst = self.worst_angle();
-            let (what, limit, passed) = if self.rocker() {
+            let (what, limit, passed) = if self.spec.shows_transmission_angle() {
                 (
                     Limit::TransmissionAngle,
                     s.gamma_min,

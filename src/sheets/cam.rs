@@ -64,7 +64,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         keyed(Key::CamScaleL, cam.inversion.scale),
     ));
     if let Some(g) = &cam.angle_graph {
-        let what = if matches!(cam.spec.follower, Follower::Rocker { .. }) {
+        let what = if cam.spec.shows_transmission_angle() {
             CamText::TransmissionAngle
         } else {
             CamText::PressureAngle
@@ -340,7 +340,7 @@ const POINTS_PER_TABLE: usize = 40;
 /// radius vector; in tables of at most [`POINTS_PER_TABLE`] rows, each after the first
 /// titled as continued.
 fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
-    let rocker = matches!(cam.spec.follower, Follower::Rocker { .. });
+    let rocker = cam.spec.shows_transmission_angle();
     let flat = matches!(cam.spec.follower, Follower::Flat { .. });
     let f = |x: f64, d: usize| format_fixed(x, d, lang);
     let rows = cam

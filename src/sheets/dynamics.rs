@@ -302,15 +302,6 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
     }
 }
 
-/// The factor and unit a result is shown in: a length in mm (the flywheel's D_м, as its
-/// text and its part drawing give it), every other quantity in its SI unit.
-fn shown(r: &crate::check::Row) -> (f64, &'static str) {
-    match r.unit() {
-        "m" => (1e3, "mm"),
-        u => (1.0, u),
-    }
-}
-
 /// The results of the whole cycle: graphical | unit | analytic | error.
 fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
     let rows: Vec<_> = crate::dynamics::rows(d)
@@ -334,13 +325,13 @@ fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
                 (Column::Error, 14.0),
             ],
             name: &|r| quantity(r, lang),
-            unit: &|r| match shown(r).1 {
+            unit: &|r| match super::digits::sheet_unit(r.unit()).1 {
                 "1" => String::new(),
                 u => unit_in(u, lang),
             },
             // A row's two values at one precision, the larger to four digits.
             value: &|r, x, _| {
-                let k = shown(r).0;
+                let k = super::digits::sheet_unit(r.unit()).0;
                 super::digits::Column::of([r.graphical * k, r.analytic * k]).cell(x * k, lang)
             },
             size_mm: TABLE_MM,

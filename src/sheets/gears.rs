@@ -130,12 +130,12 @@ pub(crate) fn tables_rows(g: &crate::gears::GearStudy) -> (Vec<Row>, Vec<Row>) {
 /// sheet: a length in mm, the drawn envelope's deviation from the exact one in µm (each
 /// wheel's, whatever its size); an angle in degrees; an angular velocity in rad/s.
 fn table_unit(r: &Row) -> (&'static str, f64) {
-    match (r.key.symbol, r.key.symbol.unit()) {
-        (Symbol::EnvelopeDeviation, _) => ("um", 1e6),
-        (_, "m") => ("mm", 1e3),
-        (_, "deg") => ("deg", 1.0),
-        (_, "rad/s") => ("rad/s", 1.0),
-        _ => ("", 1.0),
+    match r.key.symbol {
+        Symbol::EnvelopeDeviation => ("um", 1e6),
+        s => match super::digits::sheet_unit(s.unit()) {
+            (k, u @ ("mm" | "deg" | "rad/s")) => (u, k),
+            _ => ("", 1.0),
+        },
     }
 }
 

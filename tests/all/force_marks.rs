@@ -8,7 +8,7 @@ use crate::support;
 use serde_json::Value;
 use support::{root, tmm};
 use tmm::construct::{Drafting, Figure, Item};
-use tmm::forces::{PositionForces, Unknown};
+use tmm::forces::{GroupPolygon, PositionForces, Unknown};
 use tmm::geom::DVec2;
 use tmm::study::Session;
 
@@ -352,50 +352,64 @@ fn arrows(f: &Figure) -> Vec<(&str, DVec2, DVec2)> {
         .collect()
 }
 
+type Arrow<'a> = (&'a str, DVec2, DVec2);
+
+/// Every group's drawing of every analysed position of every scene, exactly; `check` sees
+/// the scene and position named, and the group.
+fn each_group(mut check: impl FnMut(&str, &GroupPolygon)) {
+    for scene in SCENES {
+        each_position(scene, |f| {
+            for g in &f.analysis.polygons.groups {
+                check(&format!("{scene} {}", f.label), g);
+            }
+        });
+    }
+}
+
+/// Every two of the labelled vectors `figure` draws.
+fn pairs(figure: &Figure) -> Vec<(Arrow<'_>, Arrow<'_>)> {
+    let v = arrows(figure);
+    (0..v.len())
+        .flat_map(|k| (k + 1..v.len()).map(move |j| (k, j)))
+        .map(|(k, j)| (v[k], v[j]))
+        .collect()
+}
+
 /// Issue 45 (the V-engine's force sheets): on a group's drawing two loads that share a line
 /// are two arrows — F_и5 and R₄₋₅ from C a few degrees apart printed as one arrow with a
 /// doubled head — and every force is an arrow, its head clear of the joints (R₀₋₅ pulling
 /// the piston to its guide had its head under the joint C, a line with no arrowhead).
 #[test]
 fn a_groups_loads_are_arrows_apart_with_their_heads_in_sight() {
-    let mut pairs = 0;
-    for scene in SCENES {
-        each_position(scene, |f| {
-            for g in &f.analysis.polygons.groups {
-                let v = arrows(&g.scheme);
-                for (k, &(n1, a1, b1)) in v.iter().enumerate() {
-                    for &(n2, a2, b2) in &v[k + 1..] {
-                        let (e1, e2) = ((b1 - a1).normalize(), (b2 - a2).normalize());
-                        if e1.dot(e2) < 15f64.to_radians().cos() {
-                            continue;
-                        }
-                        pairs += 1;
-                        assert!(
-                            b1.distance(b2) >= 4.0,
-                            "{scene} {}: {n1} and {n2} have their heads {} mm apart",
-                            f.label,
-                            b1.distance(b2)
-                        );
-                    }
-                }
-                // Its head's base clear of every joint's circle (1.5 mm), drawn over it.
-                for s in &g.scheme.steps {
-                    let Item::Joint { at, .. } = s.item else {
-                        continue;
-                    };
-                    for &(name, tail, head) in &v {
-                        let base = head + (tail - head).normalize() * 4.0;
-                        assert!(
-                            base.distance(at) > 1.6,
-                            "{scene} {}: the head of {name} lies under the joint at {at}",
-                            f.label
-                        );
-                    }
-                }
+    let mut along_one_line = 0;
+    each_group(|what, g| {
+        for ((n1, a1, b1), (n2, a2, b2)) in pairs(&g.scheme) {
+            if (b1 - a1).normalize().dot((b2 - a2).normalize()) < 15f64.to_radians().cos() {
+                continue;
             }
-        });
-    }
-    assert!(pairs > 0, "no two loads along one line were met");
+            along_one_line += 1;
+            let apart = b1.distance(b2);
+            assert!(
+                apart >= 4.0,
+                "{what}: {n1} and {n2} have their heads {apart} mm apart"
+            );
+        }
+        // Every head's base clear of every joint's circle (1.5 mm), drawn over it.
+        for s in &g.scheme.steps {
+            let Item::Joint { at, .. } = s.item else {
+                continue;
+            };
+            for (name, tail, head) in arrows(&g.scheme) {
+                let base = head + (tail - head).normalize() * 4.0;
+                let clear = base.distance(at) > 1.6;
+                assert!(
+                    clear,
+                    "{what}: the head of {name} lies under the joint at {at}"
+                );
+            }
+        }
+    });
+    assert!(along_one_line > 0, "no two loads along one line were met");
 }
 
 /// Issue 45: a force polygon lets a reader follow each vector — two forces along one line
@@ -403,34 +417,17 @@ fn a_groups_loads_are_arrows_apart_with_their_heads_in_sight() {
 #[test]
 fn no_vector_of_a_polygon_lies_on_another() {
     let mut beside = 0;
-    for scene in SCENES {
-        each_position(scene, |f| {
-            for g in &f.analysis.polygons.groups {
-                let v = arrows(&g.polygon);
-                for (k, &(n1, a1, b1)) in v.iter().enumerate() {
-                    for &(n2, a2, b2) in &v[k + 1..] {
-                        if a1.distance(b1) < 4.0 || a2.distance(b2) < 4.0 {
-                            continue; // read on the polygon's detail
-                        }
-                        let u = (b2 - a2).normalize();
-                        let off = |x: DVec2| (x - a2).perp_dot(u).abs();
-                        let (s0, s1) = ((a1 - a2).dot(u), (b1 - a2).dot(u));
-                        let shared = s0.max(s1).min(a2.distance(b2)) - s0.min(s1).max(0.0);
-                        assert!(
-                            off(a1) > 1.0 || off(b1) > 1.0 || shared <= 1.0,
-                            "{scene} {}: {n1} lies on {n2} on the polygon",
-                            f.label
-                        );
-                    }
-                }
-                beside += g
-                    .polygon
-                    .steps
-                    .iter()
-                    .filter(|s| s.note.ends_with("beside the vector on its line"))
-                    .count();
-            }
-        });
-    }
+    each_group(|what, g| {
+        for ((n1, a1, b1), (n2, a2, b2)) in pairs(&g.polygon) {
+            // A short vector is read on the polygon's detail.
+            let long = a1.distance(b1) >= 4.0 && a2.distance(b2) >= 4.0;
+            let on = long && along(a1, b1, a2, b2);
+            assert!(!on, "{what}: {n1} lies on {n2} on the polygon");
+        }
+        let notes = g.polygon.steps.iter().map(|s| s.note.as_str());
+        beside += notes
+            .filter(|n| n.ends_with("beside the vector on its line"))
+            .count();
+    });
     assert!(beside > 0, "no polygon drew a vector beside another");
 }
