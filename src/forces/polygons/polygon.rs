@@ -108,11 +108,25 @@ impl Polygon {
                 .iter()
                 .any(|&pq| overlap(from + *d, to + *d, pq, ON_LINE_MM))
         };
+        // The side it lies on already, off the lines it would lie on (R₃₋₄ 0,5 mm above
+        // R₄₋₅ on the shaper's polygon 4–5): moved further that way, the two keep the order
+        // their detail shows them in.
+        let mid = from.lerp(to, 0.5);
+        let lean: f64 = drawn
+            .iter()
+            .filter(|&&pq| overlap(from, to, pq, ON_LINE_MM))
+            .map(|&(p, q)| {
+                let u = (q - p).normalize_or_zero();
+                let off = mid - p - u * (mid - p).dot(u);
+                off.dot(n)
+            })
+            .sum();
+        let sense = if lean < 0.0 { -1.0 } else { 1.0 };
         let beside = if from.distance(to) < SMALL_FORCE_MM {
             DVec2::ZERO
         } else {
             [0.0, 1.0, -1.0, 2.0, -2.0]
-                .map(|k| n * (k * BESIDE_MM))
+                .map(|k| n * (k * sense * BESIDE_MM))
                 .into_iter()
                 .find(free)
                 .unwrap_or(DVec2::ZERO)
@@ -255,5 +269,27 @@ mod tests {
             .filter(|s| s.note.ends_with("beside the vector on its line"))
             .count();
         assert_eq!(joins, 2);
+    }
+
+    /// Two reactions laid back to one point along nearly one line (the shaper's R₃₋₄ 0,5 mm
+    /// off R₄₋₅): the second moves further to the side it lies on, so the polygon shows the
+    /// two in the order its detail, ten times larger, shows them.
+    #[test]
+    fn a_vector_beside_another_keeps_its_side() {
+        let mu = Scale::new(20.0, Quantity::Force).expect("μ_F");
+        let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("a context");
+        for lean in [0.5, -0.5] {
+            let mut pol = Polygon::new("polygon".into(), mu, &ctx);
+            pol.lay("R_{3-4}", DVec2::new(-1750.0, 0.0));
+            let drawn = (DVec2::new(0.0, lean), DVec2::new(-87.5, lean));
+            pol.vector("read".into(), "R_{4-5}", drawn, Role::Result);
+            let (figure, _) = pol.finish();
+            let v = vectors(&figure);
+            let off = v[1].0.y;
+            assert!(
+                off * lean > 0.0 && off.abs() > 1.5,
+                "lean {lean}: drawn {off} mm off"
+            );
+        }
     }
 }
