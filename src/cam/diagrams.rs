@@ -28,23 +28,16 @@ use crate::calculus::{
 };
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{DVec2, Segment};
-use crate::scale::{Quantity, Scale};
+use crate::scale::Scale;
 use std::f64::consts::TAU;
 
 mod differentiated;
 mod phi_axis;
+mod scales;
 use differentiated::differentiated;
 pub use phi_axis::{PHASE_NOTES, TICK_NOTE};
+use scales::scales;
 
-/// Drawn length of the cycle on the diagrams' abscissa, mm (μ_φ = 2π / 240 mm = 1,5°/mm):
-/// the diagrams' column takes about 300 mm of an A1 sheet's width.
-const CYCLE_MM: f64 = 240.0;
-/// Drawn stroke on the diagrams (at most, μ_S round), mm: the S diagram and the combined
-/// diagram about a sixth of an A1 sheet's height.
-const STROKE_MM: f64 = 100.0;
-/// Drawn height of the analogues' peaks when the scene gives no poles, mm: the three
-/// diagrams stacked fill an A1 sheet's height.
-const PEAK_MM: f64 = 65.0;
 /// The return's pole lies this far past the end of the return, mm.
 const FAN_GAP_MM: f64 = 12.0;
 /// The pole distance's dimension line lies this far below the lowest ray, mm.
@@ -80,6 +73,9 @@ pub struct Diagrams {
     pub d2s: Vec<f64>,
     /// S′ at the end of the rise and of the return, as read (the equal-return check: 0).
     pub ds_ends: [f64; 2],
+    /// The S diagram's largest ordinate as read, mm, when μ_S = h / y_max was found from it
+    /// (d²S/dφ² integrated at a μ_S the scene does not give; seed 002 (4.2)).
+    pub y_max: Option<f64>,
 }
 
 /// Which diagram a figure of [`Diagrams`] is.
@@ -107,10 +103,6 @@ impl Diagrams {
             Given::S => [s, v, a],
         }
     }
-}
-
-fn scale(v: f64, what: &'static str) -> Result<Scale, CamError> {
-    Scale::new(v, Quantity::Length).ok_or(CamError::NoScale { what, size: v })
 }
 
 /// The three recorders of the diagrams.
@@ -332,36 +324,11 @@ fn drawn_end(rec: &Recorder, id: StepId) -> Option<DVec2> {
     }
 }
 
-/// The scales and poles of the diagrams: μ_φ, μ_S (given or chosen), H₁, H₂ (given or
-/// chosen), μ_S′ = μ_S/(H₂·μ_φ), μ_S″ = μ_S′/(H₁·μ_φ).
-fn scales(spec: &CamSpec) -> Result<(Scale, [Scale; 3], [f64; 2]), CamError> {
-    let phi = match spec.scale_phi {
-        Some(s) => s,
-        None => Scale::new(TAU / CYCLE_MM, Quantity::Angle).ok_or(CamError::NoScale {
-            what: "μ_φ",
-            size: TAU,
-        })?,
-    };
-    let s_scale = match spec.scale_s {
-        Some(s) => s,
-        None => {
-            Scale::round_for(spec.stroke, STROKE_MM, Quantity::Length).ok_or(CamError::NoScale {
-                what: "μ_S",
-                size: spec.stroke,
-            })?
-        }
-    };
-    let [h1, h2] = spec
-        .poles
-        .unwrap_or_else(|| chosen_poles(spec, s_scale, phi));
-    let ds_scale = scale(s_scale.value() / (h2 * phi.value()), "μ_S′")?;
-    let d2s_scale = scale(ds_scale.value() / (h1 * phi.value()), "μ_S″")?;
-    Ok((phi, [s_scale, ds_scale, d2s_scale], [h1, h2]))
-}
-
 /// The diagrams: the given d²S/dφ² (closed form at the mid-interval points and the nodes)
 /// integrated twice, phase by phase, with the poles H₁, H₂ (see the module's documentation);
-/// or the given S differentiated twice.
+/// or the given S differentiated twice. Integrated at a μ_S the scene does not give, the
+/// law's shape is drawn and integrated once, and read at the scales μ_S = h / y_max gives
+/// ([`scales::fitted`]): the drawing is the same, its values are the fitted scales'.
 pub(super) fn diagrams(
     spec: &CamSpec,
     points: &[Point],
@@ -371,6 +338,32 @@ pub(super) fn diagrams(
     if spec.given == Given::S {
         return differentiated(spec, points, phi, sc, poles, ctx);
     }
+    let drawn = integrated(spec, (points, ctx), (phi, sc, poles), 1.0)?;
+    if spec.scale_s.is_some() {
+        return Ok(drawn);
+    }
+    let s_max = drawn.s.iter().fold(0.0f64, |m, &s| m.max(s));
+    match scales::fitted(sc, spec.stroke, s_max) {
+        Some(fit) => {
+            let k = fit[0].value() / sc[0].value();
+            let d = integrated(spec, (points, ctx), (phi, fit, poles), k)?;
+            Ok(Diagrams {
+                y_max: Some(sc[0].to_mm(s_max)),
+                ..d
+            })
+        }
+        None => Ok(drawn),
+    }
+}
+
+/// The diagrams integrated from the given d²S/dφ² at the scales `sc`, the law's values
+/// taken `k` times (the law's shape drawn at `sc` / `k`).
+fn integrated(
+    spec: &CamSpec,
+    (points, ctx): (&[Point], &Context),
+    (phi, sc, poles): (Scale, [Scale; 3], [f64; 2]),
+    k: f64,
+) -> Result<Diagrams, CamError> {
     let [s_scale, ds_scale, d2s_scale] = sc;
     let [h1, h2] = poles;
     let st = spec.starts();
@@ -391,11 +384,11 @@ pub(super) fn diagrams(
         let x: Vec<f64> = at.iter().map(|&i| points[i].phi).collect();
         let mids: Vec<f64> = x
             .windows(2)
-            .map(|w| motion(spec, 0.5 * (w[0] + w[1]), true).d2s)
+            .map(|w| k * motion(spec, 0.5 * (w[0] + w[1]), true).d2s)
             .collect();
         // The given diagram itself: its curve through the nodes, the mid-interval points and
         // both sides of a jump.
-        let curve = given_curve(spec, phase, &x, phi, d2s_scale);
+        let curve = given_curve(spec, phase, &x, phi, d2s_scale, k);
         views.a.draw(
             format!("given d²S/dφ² of phase {phase}"),
             Item::Polyline {
@@ -410,7 +403,7 @@ pub(super) fn diagrams(
         let lie = Lie::of(spec, phi, idx);
         // A uniform law starts at dS/dφ = h/Φ: the jump (a δ of acceleration, the rigid
         // shock) is no ordinate of the given diagram, so it is laid off as the start value.
-        let v0 = motion(spec, st[phase], true).ds;
+        let v0 = k * motion(spec, st[phase], true).ds;
         let v = lie
             .pass(h1, ["φ", "d^2S/dφ^2", "dS/dφ"], ["P_1", "P_1′", "H_1"])
             .integrate(
@@ -454,7 +447,7 @@ pub(super) fn diagrams(
         .map(|p| {
             let m = motion(spec, p.phi, p.after);
             let x = phi.to_mm(p.phi);
-            let top = DVec2::new(x, d2s_scale.to_mm(m.d2s));
+            let top = DVec2::new(x, d2s_scale.to_mm(k * m.d2s));
             let read = views.a.measure(DVec2::new(x, 0.0), top);
             d2s_scale.to_physical(read.read_mm).copysign(m.d2s)
         })
@@ -474,6 +467,7 @@ pub(super) fn diagrams(
         ds: ds_nodes,
         d2s,
         ds_ends,
+        y_max: None,
     })
 }
 
@@ -506,49 +500,18 @@ fn shock_arrows(rec: &mut Recorder, spec: &CamSpec, phase: usize, phi: Scale) {
     }
 }
 
-/// The largest |dS/dφ| and |d²S/dφ²| of the given law over the cycle (the tallest ordinates
-/// the diagrams must hold): each moving phase at 200 intervals, both sides of every jump.
-fn peaks(spec: &CamSpec) -> (f64, f64) {
-    const PER_PHASE: usize = 200;
-    let mut out = (0.0f64, 0.0f64);
-    for (phase, law) in [(0usize, spec.rise), (2, spec.ret)] {
-        let nodes = (0..=PER_PHASE).map(|k| (k as f64 / PER_PHASE as f64, k < PER_PHASE));
-        let jumps = law
-            .breaks()
-            .into_iter()
-            .flat_map(|b| [(b, false), (b, true)]);
-        for (u, after) in nodes.chain(jumps) {
-            let m = motion_u(spec, phase, u, after);
-            out = (out.0.max(m.ds.abs()), out.1.max(m.d2s.abs()));
-        }
-    }
-    out
-}
-
-/// The pole distances a student chooses: H₂ = μ_S/(μ_S′·μ_φ) and H₁ = μ_S′/(μ_S″·μ_φ) with
-/// μ_S′, μ_S″ drawing the analogues' peaks about [`PEAK_MM`] tall, rounded to whole millimetres.
-/// A law without acceleration (uniform) sets no μ_S″: H₁ is then H₂.
-fn chosen_poles(spec: &CamSpec, s: Scale, phi: Scale) -> [f64; 2] {
-    let (v, a) = peaks(spec);
-    let h2 = (s.value() / (v.max(1e-12) / PEAK_MM * phi.value()))
-        .round()
-        .clamp(5.0, 200.0);
-    let mu_v = s.value() / (h2 * phi.value());
-    let h1 = if a > 1e-9 * v {
-        (mu_v / (a / PEAK_MM * phi.value()))
-            .round()
-            .clamp(5.0, 200.0)
-    } else {
-        h2
-    };
-    [h1, h2]
-}
-
-/// The given d²S/dφ² of one phase as drawn: from the abscissa up the jump at its start,
+/// The given d²S/dφ² of one phase as drawn (its values `k` times the law's): from the abscissa up the jump at its start,
 /// through the nodes, the middles of the intervals between the division points `x` (the
 /// tops of the mid-interval ordinates lie on it) and both sides of every jump, down to the
 /// abscissa at its end.
-fn given_curve(spec: &CamSpec, phase: usize, x: &[f64], phi: Scale, mu: Scale) -> Vec<DVec2> {
+fn given_curve(
+    spec: &CamSpec,
+    phase: usize,
+    x: &[f64],
+    phi: Scale,
+    mu: Scale,
+    k: f64,
+) -> Vec<DVec2> {
     let st = spec.starts()[phase];
     let (law, len) = if phase == 0 {
         (spec.rise, spec.phases.rise)
@@ -570,7 +533,7 @@ fn given_curve(spec: &CamSpec, phase: usize, x: &[f64], phi: Scale, mu: Scale) -
     for (u, after) in us {
         let after = if u >= 1.0 { false } else { after };
         let m = motion_u(spec, phase, u, after);
-        pts.push(DVec2::new(phi.to_mm(st + u * len), mu.to_mm(m.d2s)));
+        pts.push(DVec2::new(phi.to_mm(st + u * len), mu.to_mm(k * m.d2s)));
     }
     pts.push(DVec2::new(phi.to_mm(st + len), 0.0));
     pts

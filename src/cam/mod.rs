@@ -219,6 +219,15 @@ impl CamSpec {
     pub fn shows_transmission_angle(&self) -> bool {
         self.arm().is_some()
     }
+    /// The stroke's symbol on its sheet and in the note: a rocker's arc S_max = Lβ_max, a
+    /// translating follower's h.
+    pub fn stroke_symbol(&self) -> &'static str {
+        if self.arm().is_some() {
+            "S_{max}"
+        } else {
+            "h"
+        }
+    }
     /// The angle its graph and tables show: the rocker's transmission angle γ, a translating
     /// or flat follower's pressure angle λ.
     pub fn angle_symbol(&self) -> &'static str {

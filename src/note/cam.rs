@@ -4,7 +4,7 @@
 use super::markup::{frac, label, num, sym, text, unit, Align};
 use super::rows::{by_position, of_scene, quantities};
 use super::{NoteError, Writer};
-use crate::cam::{Follower, Law, SpecialProfile};
+use crate::cam::{Follower, Given, Law, SpecialProfile};
 use crate::check::{Method, Symbol};
 use crate::scene::PlateKind;
 use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
@@ -17,6 +17,7 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let (intro, scene) = match special.as_deref().map(|c| &c.profile) {
         Some(SpecialProfile::FlatRocker { .. }) => (T::CamFlatRockerIntro, T::CamSpecialScene),
         Some(SpecialProfile::Sliding { .. }) => (T::CamSlidingIntro, T::CamSpecialScene),
+        None if w.session.cam()?.spec.given == Given::S => (T::CamIntroDifferentiated, T::CamScene),
         None => (T::CamIntro, T::CamScene),
     };
     w.doc.say(w.word(intro));
@@ -28,6 +29,13 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         w.doc.say(w.word(T::CamLawAssumed));
     }
     w.data_list(PlateKind::Cam, super::DataPart::Results);
+    match &special {
+        Some(c) => super::cam_scales::scales(w, &c.diagrams, &c.spec),
+        None => {
+            let cam = w.session.cam()?;
+            super::cam_scales::scales(w, &cam.diagrams, &cam.spec);
+        }
+    }
     match &special {
         Some(c) => super::cam_special::worked(w, c)?,
         None => worked(w)?,
@@ -153,7 +161,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let n = |x: f64| num(x, 4, lang);
     let mm = |x: f64| format!("{}{}", num(x * 1e3, 4, lang), unit(&unit_in("mm", lang)));
     let s = &cam.spec;
-    let stroke = sym("S_{max}");
+    let stroke = sym(s.stroke_symbol());
     let phases = [
         (s.rise, s.phases.rise, lang.pick("у", "в", "rise")),
         (s.ret, s.phases.ret, lang.pick("п", "н", "ret")),
@@ -181,7 +189,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             ),
             vec![
                 ("dS/dφ", M::VelocityAnalogue, "mm"),
-                ("S_{max}", M::Stroke, "mm"),
+                (s.stroke_symbol(), M::Stroke, "mm"),
             ],
             Some((format!("φ_{{{index}}}"), phase_word)),
         ));
@@ -220,7 +228,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             sym("O_{1}B_{0}"),
             sym("μ_{S}"),
             num(mu.to_mm(r), 4, lang),
-            num(mu.value(), 3, lang),
+            num(mu.value(), 4, lang),
             num(r, 4, lang),
             unit(&unit_in("m", lang))
         ));

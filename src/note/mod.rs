@@ -12,6 +12,7 @@
 
 mod analytic;
 mod cam;
+mod cam_scales;
 mod cam_special;
 mod conclusions;
 mod diagrams;

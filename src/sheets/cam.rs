@@ -32,6 +32,22 @@ pub(super) fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
     )
 }
 
+/// μ_S as the S diagram's caption gives it: found from the stroke where it was
+/// (`μ_S = h/y_max = 0,038/94,00 = 0,0004043 м/мм`, seed 002 (4.2)), else its value.
+fn s_scale(d: &Diagrams, spec: &CamSpec, lang: Lang) -> String {
+    let Some(y) = d.y_max else {
+        return mu("S", d.s_scale, lang);
+    };
+    format!(
+        "μ_{{S}} = {h}/y_{{max}} = {}/{} = {} {}",
+        format_sig(spec.stroke, 4, lang),
+        format_sig(y, 4, lang),
+        format_sig(d.s_scale.value(), 4, lang),
+        d.s_scale.quantity.unit(lang),
+        h = spec.stroke_symbol(),
+    )
+}
+
 /// Build the cam sheet of a turning cam with a translating or rocking follower (a flat-faced
 /// rocker's and a translating cam's is [`super::cam_special`]'s).
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
@@ -129,7 +145,7 @@ pub(super) fn diagram_block(d: &Diagrams, spec: &CamSpec, lang: Lang) -> Block {
                 mu("S′", d.ds_scale, lang),
                 Some(("H_2", h(1))),
             ),
-            Analogue::S => (CamText::Displacement, mu("S", d.s_scale, lang), None),
+            Analogue::S => (CamText::Displacement, s_scale(d, spec, lang), None),
         };
         let mut caption = format!("{}: {}, {scale}", name.get(lang), mu("φ", d.phi, lang));
         if let Some((symbol, value)) = pole {
@@ -254,23 +270,24 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     let mm = unit_in("mm", lang);
     let n = |x: f64| format_sig(x * 1e3, 4, lang);
     let deg = |x: f64| format_sig(x.to_degrees(), 4, lang);
+    let h = s.stroke_symbol();
     let mut out = law_lines(s, cam.rotation, lang);
     match s.follower {
         Follower::Rocker { arm, .. } => out.push(format!(
-            "L = {} {mm}, β_{{max}} = {}°, S_{{max}} = Lβ_{{max}} = {} {mm}, γ_{{min}} = {}°",
+            "L = {} {mm}, β_{{max}} = {}°, {h} = Lβ_{{max}} = {} {mm}, γ_{{min}} = {}°",
             n(arm),
             deg(s.stroke / arm),
             n(s.stroke),
             deg(s.gamma_min)
         )),
         Follower::Translating { offset } => out.push(format!(
-            "h = {} {mm}, e = {} {mm}, γ_{{min}} = {}°",
+            "{h} = {} {mm}, e = {} {mm}, γ_{{min}} = {}°",
             n(s.stroke),
             n(cam.scene_offset(offset)),
             deg(s.gamma_min)
         )),
         Follower::Flat { offset } => out.push(format!(
-            "h = {} {mm}, e = {} {mm}, ρ_{{min}} = {} {mm}",
+            "{h} = {} {mm}, e = {} {mm}, ρ_{{min}} = {} {mm}",
             n(s.stroke),
             n(cam.scene_offset(offset)),
             n(s.rho_min)

@@ -110,9 +110,14 @@ fn data_lines(cam: &Special, lang: Lang) -> Result<Vec<String>, crate::cam::CamE
                 _ => 0.0,
             };
             out.push(format!(
-                "L = {} {mm}, β_{{max}} = {}°, a = O_{{1}}O_{{2}} = {} {mm}, e = {} {mm}, r_{{0}} = {} {mm}",
+                "L = {} {mm}, β_{{max}} = {}°, {} = Lβ_{{max}} = {} {mm}",
                 n(arm),
                 deg(s.stroke / arm),
+                s.stroke_symbol(),
+                n(s.stroke),
+            ));
+            out.push(format!(
+                "a = O_{{1}}O_{{2}} = {} {mm}, e = {} {mm}, r_{{0}} = {} {mm}",
                 n(frame.centres),
                 n(frame.face_offset),
                 n(frame.base)

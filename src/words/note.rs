@@ -182,6 +182,11 @@ catalogue! {
             "За заданим законом руху штовхача будуємо діаграму аналога прискорення, графічним інтегруванням — аналога швидкості і переміщення; за суміщеною діаграмою з променями під допустимим кутом передачі (тиску) знаходимо мінімальний радіус кулачка; профіль будуємо методом обернення руху.",
             "From the follower's law: the diagram of the acceleration analogue, by graphical integration those of the velocity analogue and the displacement; the least base radius from the combined diagram with the rays at the admissible transmission (pressure) angle; the profile by inversion."
         ),
+        CamIntroDifferentiated => (
+            "По заданному закону движения толкателя строим диаграмму перемещений, графическим дифференцированием (методом хорд) — аналога скорости и аналога ускорения; по совмещённой диаграмме с лучами под допустимым углом передачи (давления) находим минимальный радиус кулачка; профиль строим методом обращения движения.",
+            "За заданим законом руху штовхача будуємо діаграму переміщень, графічним диференціюванням (методом хорд) — аналога швидкості і аналога прискорення; за суміщеною діаграмою з променями під допустимим кутом передачі (тиску) знаходимо мінімальний радіус кулачка; профіль будуємо методом обернення руху.",
+            "From the follower's law: the displacement diagram, by graphical differentiation (chords) those of the velocity and the acceleration analogues; the least base radius from the combined diagram with the rays at the admissible transmission (pressure) angle; the profile by inversion."
+        ),
         CamLawAssumed => (
             "Диаграммы закона движения в источнике утеряны; закон движения толкателя принят, как указано в исходных данных.",
             "Діаграми закону руху в джерелі втрачено; закон руху штовхача прийнято, як зазначено у вихідних даних.",
@@ -223,6 +228,11 @@ catalogue! {
             "Наибольшие значения аналогов скорости и ускорения толкателя на фазах:",
             "Найбільші значення аналогів швидкості і прискорення штовхача на фазах:",
             "The largest values of the follower's velocity and acceleration analogues on the phases:"
+        ),
+        CamScalesWorked => (
+            "Масштабы диаграмм: ось абсцисс — один оборот кулачка; масштабы аналогов следуют из масштаба перемещений через полюсные расстояния:",
+            "Масштаби діаграм: вісь абсцис — один оберт кулачка; масштаби аналогів випливають з масштабу переміщень через полюсні відстані:",
+            "The diagrams' scales: the abscissa spans one turn of the cam; the analogues' scales follow from the displacement scale through the pole distances:"
         ),
         CamRadiusWorked => (
             "Минимальный радиус кулачка — расстояние от центра O₁, выбранного в зоне допустимых центров совмещённой диаграммы, до начальной точки B₀, в масштабе диаграммы:",

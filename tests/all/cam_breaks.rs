@@ -23,18 +23,22 @@ use proptest::prelude::*;
 use std::f64::consts::FRAC_PI_2;
 use tmm::cam::{build, Cam, CamSpec, Closure, Follower, Law};
 use tmm::construct::{Context, Drafting};
+use tmm::scale::{Quantity, Scale};
 
 fn ctx() -> Context {
     Context::for_model_size(300.0, Drafting::EXACT).expect("context")
 }
 
 /// A translating roller follower (knife edge), H = 30 mm, e = 3 mm, γ_min = 60°: phases
-/// [rise, far, return] in degrees (near: the rest), `n` divisions.
+/// [rise, far, return] in degrees (near: the rest), `n` divisions. μ_S is given (0,0004
+/// m/mm, the round one the stroke takes), so that the diagrams are the chord method's own:
+/// μ_S found from the stroke (seed 002 (4.2)) would put the rise's error into the analogues.
 fn spec(law: Law, deg: [f64; 3], n: usize, closure: Closure) -> CamSpec {
     let follower = Follower::Translating { offset: 0.003 };
     let force = closure == Closure::Force;
     CamSpec {
         divisions: n,
+        scale_s: Scale::new(0.0004, Quantity::Length),
         ..crate::cam_oracle::spec(deg, law, law, 0.030, follower, 60.0, force)
     }
 }

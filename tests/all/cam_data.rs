@@ -170,3 +170,50 @@ fn the_translating_cam_dimensions_its_travel_and_accepts_it() {
     });
     assert!(dimensioned, "no X = 360 мм dimension at 1:1 on the profile");
 }
+
+/// Seed 002 (4.2): where the law's d²S/dφ² is integrated at a μ_S the scene does not give,
+/// μ_S = h / y_max — the S diagram's caption writes it with its numbers, the far dwell reads
+/// the stroke, and the note works it; a scene's μ_S (the cusp) stays as given.
+#[test]
+fn the_displacement_scale_is_found_from_the_stroke() {
+    for (name, stroke_mm) in [("cam-pz4", 38.0), ("cam-sliding", 30.0), ("shaper", 52.36)] {
+        let s = crate::support::scene(name);
+        let session = Session::new(&s, Drafting::HAND);
+        let cam = match session.cam() {
+            Ok(c) => c.diagrams.clone(),
+            Err(_) => session
+                .special_cam()
+                .expect("cam")
+                .expect("special")
+                .diagrams
+                .clone(),
+        };
+        let y = cam.y_max.unwrap_or_else(|| panic!("{name}: μ_S given"));
+        let top = cam.s.iter().fold(0.0f64, |m, &x| m.max(x));
+        assert!(
+            (top * 1e3 - stroke_mm).abs() < 0.01,
+            "{name}: S reaches {top}"
+        );
+        let mu = format_sig(cam.s_scale.value(), 4, Lang::Ru);
+        let caption = format!(
+            "/y_{{max}} = {}/{} = {mu}",
+            format_sig(top, 4, Lang::Ru),
+            format_sig(y, 4, Lang::Ru)
+        );
+        let sheet = words(&tmm::build(&session, PlateKind::Cam, Lang::Ru).expect("sheet"));
+        assert!(
+            sheet.iter().any(|w| w.contains(&caption)),
+            "{name}: no «{caption}»"
+        );
+        let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+        let said = note
+            .source
+            .contains("наибольшая ордината диаграммы перемещений");
+        assert!(said, "{name}: the note does not work μ_S out of y_max");
+    }
+    let cusp = crate::support::scene("cam-cusp");
+    let session = Session::new(&cusp, Drafting::HAND);
+    let d = &session.cam().expect("cam").diagrams;
+    assert_eq!(d.y_max, None);
+    assert!((d.s_scale.value() - 0.002).abs() < 1e-15);
+}

@@ -156,8 +156,13 @@ fn the_translating_cam_reports_its_closed_forms() {
     let x_min = TAU * (2.0 * 0.03 / (TAU / 3.0)) / 30f64.to_radians().tan();
     assert!((x.analytic - x_min).abs() < 1e-12 * x_min, "{}", x.analytic);
     assert!((x.analytic - 0.311769).abs() < 1e-6);
-    // Constructed: 2π·(X_min/2π read on the combined diagram, at the largest dS/dφ drawn).
-    assert!((x.graphical - 0.315359).abs() < 1e-5, "{}", x.graphical);
+    // Constructed: 2π·(X_min/2π read on the combined diagram, at the largest dS/dφ drawn),
+    // the diagrams' μ_S found from the stroke (h/y_max): within the reading's 0,5 %.
+    assert!(
+        (x.graphical - x_min).abs() < 0.005 * x_min,
+        "{}",
+        x.graphical
+    );
     // The crest's smallest radius against a dense evaluation (u in (½, 1): S_ξξ < 0).
     let m = 1_000_000;
     let dense = (1..m)

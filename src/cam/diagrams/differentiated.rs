@@ -126,5 +126,6 @@ pub(super) fn differentiated(
         ds_scale,
         d2s_scale,
         poles: [h1, h2],
+        y_max: None,
     })
 }

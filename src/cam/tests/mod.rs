@@ -248,10 +248,47 @@ fn inversion_centres_equal_the_exact_pitch_curve() {
     }
 }
 
+/// Seed 002 (4.2): μ_S = h / y_max, so the S diagram reaches the stroke exactly at the far
+/// dwell; the cosine law's chord integrals are the law scaled (a sine's midpoint rule), so
+/// the fit leaves S exact at every point, the analogues carrying the integration's loss.
+#[test]
+fn the_displacement_scale_is_the_stroke_over_the_largest_ordinate() {
+    let mut s = translating(Law::Cosine, 0.0);
+    s.divisions = 8;
+    let cam = build(&s, &ctx(0.0)).unwrap();
+    let d = &cam.diagrams;
+    let y = d.y_max.expect("μ_S found from the stroke");
+    assert!((d.s_scale.value() * y - s.stroke).abs() < 1e-15);
+    let top = d.s.iter().fold(0.0f64, |m, &x| m.max(x));
+    assert!((top - s.stroke).abs() < 1e-12, "{top}");
+    let exact = cam.exact_motion();
+    for (m, (g, v)) in exact.iter().zip(d.s.iter().zip(&d.ds)) {
+        assert!((m.s - g).abs() < 1e-12, "{} {g}", m.s);
+        assert!(
+            (m.ds - v).abs() < 0.03 * m.ds.abs().max(1e-3),
+            "{} {v}",
+            m.ds
+        );
+    }
+    // The analogues off by what the integration lost: a few per cent at 8 intervals.
+    let worst = exact
+        .iter()
+        .zip(&d.ds)
+        .map(|(m, v)| (m.ds - v).abs())
+        .fold(0.0, f64::max);
+    assert!(worst > 1e-5, "{worst}");
+    // A scene's μ_S is kept.
+    let given = Scale::new(0.0005, crate::scale::Quantity::Length).expect("μ_S");
+    s.scale_s = Some(given);
+    let kept = build(&s, &ctx(0.0)).unwrap();
+    assert_eq!(kept.diagrams.s_scale, given);
+    assert_eq!(kept.diagrams.y_max, None);
+}
+
 #[test]
 fn integration_converges_at_the_chord_rate() {
     let err = |n: usize| {
-        let mut s = translating(Law::Cosine, 0.0);
+        let mut s = translating(Law::Sine, 0.0);
         s.divisions = n;
         let cam = build(&s, &ctx(0.0)).unwrap();
         cam.exact_motion()
