@@ -307,7 +307,7 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     // ρ_min and r_min right of the S axis (the tangent comes from the left), one beside
     // the other, each with the room for its text left of its line.
     if oi.y < 0.0 {
-        rec.dimension(RHO_MIN_NOTE, (oi, o, RHO_MIN_MM), "ρ_{min}");
+        rec.dimension(RHO_MIN_NOTE, (oi, o, RHO_MIN_MM), RHO_ADMITTED);
     }
     zone::centre_and_r_min(rec, o, DVec2::ZERO, DVec2::new(-1.0, -0.5), -FLAT_R_MIN_MM);
     let read_c = rec.measure(oi, DVec2::ZERO).value.copysign(-c);
@@ -363,6 +363,11 @@ const FLAT_R_MIN_MM: f64 = 20.0;
 
 /// The note of the flat face's ρ_min dimension's step (the sheet writes its value).
 pub const RHO_MIN_NOTE: &str = "dimension ρ_min";
+
+/// The symbol of the flat face's given margin over convexity, the least radius of curvature
+/// the profile is admitted (r₀ ≥ max(−(S + S″)) + [ρ]): the admissible value's brackets
+/// keep it apart from the profile's own ρ_min, which the tables compare.
+pub const RHO_ADMITTED: &str = "[ρ]";
 
 /// The note of the flat face's 45° tangent's step (the tests find it by it).
 pub const TANGENT_NOTE: &str = "tangent at 45° from the diagram to the S axis";

@@ -8,7 +8,7 @@ use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
 use crate::cam::{
     Analogue, Cam, CamSpec, Diagrams, Follower, Law, Layout, Rotation, ANGLE_LIMIT_NOTE,
-    RHO_MIN_NOTE, R_MIN_NOTE,
+    RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
 };
 use crate::check::{Cusp, Finding, Row};
 use crate::geom::DVec2;
@@ -63,7 +63,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }
     .get(lang);
     let r_min = cam_marks::valued("r_{min}", cam.radius.graphical, lang);
-    let rho_min = cam_marks::valued("ρ_{min}", cam.spec.rho_min, lang);
+    let rho_min = cam_marks::valued(RHO_ADMITTED, cam.spec.rho_min, lang);
     let radius = cam_marks::relabelled(&cam.radius.figure, R_MIN_NOTE, &r_min);
     blocks.push(Block::view(
         cam_marks::relabelled(&radius, RHO_MIN_NOTE, &rho_min),
@@ -287,7 +287,7 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
             deg(s.gamma_min)
         )),
         Follower::Flat { offset } => out.push(format!(
-            "{h} = {} {mm}, e = {} {mm}, ρ_{{min}} = {} {mm}",
+            "{h} = {} {mm}, e = {} {mm}, {RHO_ADMITTED} = {} {mm}",
             n(s.stroke),
             n(cam.scene_offset(offset)),
             n(s.rho_min)

@@ -217,3 +217,27 @@ fn the_displacement_scale_is_found_from_the_stroke() {
     assert_eq!(d.y_max, None);
     assert!((d.s_scale.value() - 0.002).abs() < 1e-15);
 }
+
+/// One symbol, one quantity (the review's C4): a flat face's given margin is the admitted
+/// [ρ] on the data line and the combined diagram, the profile's least radius of curvature
+/// the ρ_min of the results table — never both ρ_min.
+#[test]
+fn a_flat_faces_admitted_radius_is_not_its_least_radius() {
+    for (name, given) in [("cam-pz4", "10"), ("cam-cusp", "5")] {
+        let sheet = words(&plates(name, Lang::Ru));
+        let admitted = format!("[ρ] = {given} мм");
+        assert!(
+            sheet.iter().any(|w| w.contains(&admitted)),
+            "{name}: no «{admitted}»"
+        );
+        let twice = format!("ρ_{{min}} = {given} мм");
+        assert!(
+            !sheet.iter().any(|w| w.contains(&twice)),
+            "{name}: «{twice}»"
+        );
+        assert!(
+            sheet.iter().any(|w| w.contains("ρ_{min}")),
+            "{name}: no ρ_min row"
+        );
+    }
+}

@@ -15,7 +15,7 @@
 
 use crate::plate_model::lines;
 use glam::DVec2;
-use tmm::cam::{RHO_MIN_NOTE, R_MIN_NOTE};
+use tmm::cam::{RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE};
 use tmm::construct::{Drafting, Figure, Item, Role, Step};
 use tmm::plate::{struck_dimension_texts, Plate};
 use tmm::scale::Lang;
@@ -146,7 +146,7 @@ fn rho_min_valued(f: &Figure, rho: f64) -> Result<(), String> {
         return Err(format!("{} ρ_min dimensions", dims.len()));
     };
     let text = dim.label.as_ref().map_or("", |l| l.text.as_str());
-    match value_after(text, "ρ_{min}") {
+    match value_after(text, RHO_ADMITTED) {
         Some(v) if (v - rho * 1e3).abs() <= 5e-4 * (rho * 1e3).max(1.0) => Ok(()),
         _ => Err(format!(
             "the ρ_min dimension reads “{text}”, ρ_min = {rho} m"
@@ -225,7 +225,7 @@ fn the_dimension_rules_fail_on_a_plate_built_to_break_them() {
     let mut bare = plates[pv.0].views[pv.1].figure.clone();
     for s in bare.steps.iter_mut().filter(|s| s.note == RHO_MIN_NOTE) {
         if let Some(l) = s.label.as_mut() {
-            l.text = "ρ_{min}".into();
+            l.text = RHO_ADMITTED.into();
         }
     }
     assert!(rho_min_valued(&bare, rho.expect("a flat face's ρ_min")).is_err());
