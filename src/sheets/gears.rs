@@ -52,8 +52,12 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             sheet.contour_lines(b);
         }
     }
+    // A sheet of cut wheels with no pair states the module and the rack they are cut with.
+    if let (None, Some(first)) = (&g.pair, g.racks.first()) {
+        sheet.rack_data(&first.generation.cutting);
+    }
     for w in &g.racks {
-        sheet.rack(&w.name, &w.generation);
+        sheet.rack(&w.generation);
     }
     if let Some(t) = &g.train {
         sheet.train(t);
@@ -407,8 +411,21 @@ impl Filling {
         }
     }
 
+    /// The module and the basic rack of wheels cut with no pair of their own:
+    /// «m = 10 мм, α = 20°, h_a* = 1, c* = 0,25».
+    fn rack_data(&mut self, c: &crate::gears::Cutting) {
+        let (lang, mm_) = (self.lang, &self.mm);
+        self.lines.push(format!(
+            "m = {} {mm_}, α = {}°, h_a* = {}, c* = {}",
+            format_sig(c.module * 1e3, 4, lang),
+            format_sig(c.rack.alpha.to_degrees(), 4, lang),
+            format_sig(c.rack.ha, 4, lang),
+            format_sig(c.rack.c, 4, lang),
+        ));
+    }
+
     /// A wheel cut by the rack: its view (and the undercut's detail view), its line.
-    fn rack(&mut self, name: &str, r: &crate::gears::Generation) {
+    fn rack(&mut self, r: &crate::gears::Generation) {
         let (lang, mm_) = (self.lang, &self.mm);
         let c = &r.cutting;
         // A blank shortened by Δy (a pair's wheel) says so.
@@ -445,13 +462,25 @@ impl Filling {
                 .push(view(&detail, caption, Key::GearsRackScaleL, r.scale));
         }
         self.plan.get_or_insert(r.scale);
+        // Named by its z and x as its picture's caption names it (the scene's own name of
+        // the wheel, «0», «1p», is no word of the sheet's); x_min is the table's, by the
+        // textbook's rule against the exact one, not a third time here.
         self.lines.push(format!(
-            "{name}: z = {}, x = {}, x_{{min}} = {}, s_a = {} {}{}{}",
+            "z = {}, x = {}: s_a = {} {}{}{}{}",
             c.z,
             format_sig(c.x, 4, lang),
-            format_sig(c.x_min(), 4, lang),
             format_sig(r.sa * 1e3, 4, lang),
             mm_,
+            // A pointed tip against the least the course admits.
+            if r.pointed {
+                format!(
+                    " < {}m = {} {mm_}",
+                    format_sig(crate::gears::MIN_TIP, 2, lang),
+                    format_sig(crate::gears::MIN_TIP * c.module * 1e3, 4, lang)
+                )
+            } else {
+                String::new()
+            },
             if r.undercut {
                 GearText::Undercut.get(lang)
             } else {

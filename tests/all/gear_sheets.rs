@@ -406,3 +406,46 @@ fn a_closing_module_is_written_as_the_decision() {
         assert!(lines.iter().any(|l| l == want), "{lang:?}: {lines:?}");
     }
 }
+
+/// A rack-cut wheel's data line names the wheel by its z and x, as its picture's caption
+/// does — never by the scene's own name («0:», «1p:», the review's G6) — and leaves x_min
+/// to the table, which gives it by the textbook's rule against the exact one (G3, G4).
+#[test]
+fn a_cut_wheels_line_names_it_as_its_picture_does() {
+    for (name, want, scene_names) in [
+        ("gears-pz1", "z = 10, x = 0: s_a = ", ["0:", "p:"]),
+        ("shaper", "z = 13, x = ", ["1:", "1p:"]),
+    ] {
+        let lines: Vec<String> = gear_sheets(&scene(name), Drafting::EXACT, Lang::Ru)
+            .iter()
+            .flat_map(|p| p.texts.iter().flat_map(|t| t.lines.clone()))
+            .collect();
+        assert!(
+            lines.iter().any(|l| l.starts_with(want)),
+            "{name}: {lines:?}"
+        );
+        if name == "gears-pz1" {
+            // No pair states the module: the cut wheels' sheet does, and the pointed tip is
+            // set against the least the course admits.
+            for said in [
+                "m = 10 мм, α = 20°, h_a* = 1, c* = 0,25",
+                "< 0,3m = 3 мм, заострение",
+            ] {
+                assert!(
+                    lines.iter().any(|l| l.contains(said)),
+                    "{name}: no «{said}»"
+                );
+            }
+        }
+        for l in &lines {
+            assert!(
+                !scene_names.iter().any(|n| l.starts_with(n)),
+                "{name}: «{l}»"
+            );
+            assert!(
+                !(l.starts_with("z = ") && l.contains("x_{min}")),
+                "{name}: «{l}»"
+            );
+        }
+    }
+}
