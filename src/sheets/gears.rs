@@ -238,7 +238,8 @@ fn differential_line(t: &crate::gears::TrainStudy, lang: Lang) -> Option<String>
     let (second, w2) = tr_.second?;
     let n_in = t.spec.n_input?;
     let rpm = unit_in("rpm", lang);
-    let n = |x: f64| format_sig(x, 6, lang);
+    // A drawing's four digits (the triangles' 362,873 read as 362,9).
+    let n = |x: f64| super::digits::value(x, lang);
     let by_triangles = t.triangles.omega[tr_.output] * 30.0 / std::f64::consts::PI;
     let by_formula = t.formula.map_or(String::new(), |u| {
         format!("{} {rpm} ({}), ", n(n_in / u), GearText::Willis.get(lang))

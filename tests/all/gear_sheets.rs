@@ -449,3 +449,15 @@ fn a_cut_wheels_line_names_it_as_its_picture_does() {
         }
     }
 }
+
+/// A differential's output speed read off the triangles at a drawing's four digits (the
+/// review's G8: «362,873 об/мин»), beside Willis's 360.
+#[test]
+fn a_differentials_speed_is_written_at_four_digits() {
+    let lines: Vec<String> = gear_sheets(&scene("gears-differential"), Drafting::HAND, Lang::Ru)
+        .iter()
+        .flat_map(|p| p.texts.iter().flat_map(|t| t.lines.clone()))
+        .collect();
+    let want = "n_{3} = 1000 об/мин, n_{5} = 200 об/мин → n_{H} = 360 об/мин (формула Виллиса), 362,9 об/мин";
+    assert!(lines.iter().any(|l| l.starts_with(want)), "{lines:?}");
+}
