@@ -344,8 +344,7 @@ pub(super) fn diagrams(
     }
     let s_max = drawn.s.iter().fold(0.0f64, |m, &s| m.max(s));
     match scales::fitted(sc, spec.stroke, s_max) {
-        Some(fit) => {
-            let k = fit[0].value() / sc[0].value();
+        Some((k, fit)) => {
             let d = integrated(spec, (points, ctx), (phi, fit, poles), k)?;
             Ok(Diagrams {
                 y_max: Some(sc[0].to_mm(s_max)),

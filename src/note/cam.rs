@@ -4,7 +4,7 @@
 use super::markup::{frac, label, num, sym, text, unit, Align};
 use super::rows::{by_position, of_scene, quantities};
 use super::{NoteError, Writer};
-use crate::cam::{Follower, Given, Law, SpecialProfile};
+use crate::cam::{Closure, Follower, Given, Law, SpecialProfile};
 use crate::check::{Method, Symbol};
 use crate::scene::PlateKind;
 use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
@@ -30,15 +30,15 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     }
     w.data_list(PlateKind::Cam, super::DataPart::Results);
     match &special {
-        Some(c) => super::cam_scales::scales(w, &c.diagrams, &c.spec),
+        Some(c) => {
+            super::cam_scales::scales(w, &c.diagrams, &c.spec);
+            super::cam_special::worked(w, c)?;
+        }
         None => {
             let cam = w.session.cam()?;
             super::cam_scales::scales(w, &cam.diagrams, &cam.spec);
+            worked(w)?;
         }
-    }
-    match &special {
-        Some(c) => super::cam_special::worked(w, c)?,
-        None => worked(w)?,
     }
     let q = quantities(&w.report.rows, |r| {
         r.position().is_some()
@@ -72,10 +72,10 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     Ok(())
 }
 
-/// The seed's Table 7: the transmission angle γ (a rocker) or the pressure angle ϑ at every
+/// The seed's Table 7: the transmission angle γ (a rocker) or the pressure angle λ at every
 /// point in degrees, read off the drawing and exact, each with the exact value's verdict
-/// against the limit (γ ≥ γ_min, ϑ ≤ 90° − γ_min); then the extreme over the whole cycle, between the
-/// points too, and whether it keeps the limit.
+/// against the limit (γ ≥ γ_min, λ ≤ λ_max = 90° − γ_min); then the extreme over the whole
+/// cycle, between the points too, and whether it keeps the limit.
 fn angle_table(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let cam = w.session.cam()?;
     let lang = w.lang;
@@ -91,28 +91,35 @@ fn angle_table(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             )
         })
         .collect();
-    let Some(first) = rows.first() else {
+    if rows.is_empty() {
         return Ok(());
-    };
-    let rocker = first.key.symbol == Symbol::TransmissionAngle;
-    let limit = if rocker {
-        cam.spec.gamma_min
-    } else {
-        std::f64::consts::FRAC_PI_2 - cam.spec.gamma_min
-    };
+    }
+    // The sheet's angle and limit (one notation: λ, λ_max on both, was ϑ here).
+    let rocker = cam.spec.shows_transmission_angle();
+    let limit = cam.spec.angle_limit();
     let keeps = |a: f64| if rocker { a >= limit } else { a <= limit };
     let deg = |a: f64| crate::scale::format_fixed(a.to_degrees(), 2, lang);
-    let (symbol, bound) = if rocker {
-        ("γ", format!("γ ≥ γ_{{min}} = {}°", deg(limit)))
-    } else {
-        ("ϑ", format!("ϑ ≤ ϑ_{{max}} = {}°", deg(limit)))
+    let symbol = cam.spec.angle_symbol();
+    let bound = format!(
+        "{symbol} {} {} = {}°",
+        if rocker { "≥" } else { "≤" },
+        cam.spec.angle_limit_symbol(),
+        deg(limit)
+    );
+    // Under force closure the angle binds on the rise only (seed 002, L1477; the extreme
+    // below is taken there): a point off the rise has no verdict.
+    let checked = |position: &str| {
+        let phase = cam
+            .points
+            .iter()
+            .find(|p| p.label == position)
+            .map(|p| p.phase);
+        cam.spec.closure != Closure::Force || phase.is_none_or(|p| p == 0)
     };
-    let verdict = |a: f64| {
-        if keeps(a) {
-            w.word(T::Holds)
-        } else {
-            w.word(T::Fails)
-        }
+    let verdict = |r: &crate::check::Row| match r.position() {
+        Some(p) if !checked(&p) => "—",
+        _ if keeps(r.analytic) => w.word(T::Holds),
+        _ => w.word(T::Fails),
     };
     let body: Vec<Vec<String>> = rows
         .iter()
@@ -121,7 +128,7 @@ fn angle_table(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
                 text(&r.position().unwrap_or_default()),
                 text(&deg(r.graphical)),
                 text(&deg(r.analytic)),
-                text(verdict(r.analytic)),
+                text(verdict(r)),
             ]
         })
         .collect();

@@ -241,3 +241,27 @@ fn a_flat_faces_admitted_radius_is_not_its_least_radius() {
         );
     }
 }
+
+/// One notation through the sheet and the note (issue 45): the pressure angle is λ with its
+/// limit λ_max on both (the note wrote ϑ).
+#[test]
+fn the_note_names_the_pressure_angle_as_the_sheet_does() {
+    let s = crate::support::scene("cam-pz5");
+    let session = Session::new(&s, Drafting::HAND);
+    let sheet = words(&tmm::build(&session, PlateKind::Cam, Lang::Ru).expect("sheet"));
+    assert!(sheet.iter().any(|w| w.contains("λ")), "the sheet's angle");
+    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    assert!(note.source.contains("λ ≤ λ"), "the note's bound");
+    assert!(!note.source.contains('ϑ'), "ϑ in the note");
+}
+
+/// Under force closure the note's angle table gives no verdict off the rise, where the angle
+/// does not bind (PZ5's return reached 37° «нарушено» beside «the extreme keeps the limit»).
+#[test]
+fn the_note_judges_the_angle_only_where_it_binds() {
+    let s = crate::support::scene("cam-pz5");
+    let session = Session::new(&s, Drafting::HAND);
+    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    assert!(!note.source.contains("нарушено"), "a return point judged");
+    assert!(note.source.contains("выполнено"), "no rise point judged");
+}

@@ -93,10 +93,10 @@ fn chosen_poles(spec: &CamSpec, s: Scale, phi: Scale) -> [f64; 2] {
 /// The scales of diagrams integrated from the given d²S/dφ²'s shape drawn at `drawn`
 /// (seed 002 (4.2), seed 000's μ_S = S_max/60 мм): μ_S = h / y_max, y_max the S diagram's
 /// largest ordinate as read (`s_max_read` is the S it reads at the drawn μ_S), and μ_S′,
-/// μ_S″ from it through the same poles — each the drawn one times h / S read. The S
-/// diagram then reaches the stroke exactly; the analogues carry what the integration lost.
-/// `None` when nothing was read (no stroke).
-pub(super) fn fitted(drawn: [Scale; 3], stroke: f64, s_max_read: f64) -> Option<[Scale; 3]> {
+/// μ_S″ from it through the same poles — each the drawn one times k = h / S read, returned
+/// with them. The S diagram then reaches the stroke exactly; the analogues carry what the
+/// integration lost. `None` when nothing was read (no stroke).
+pub(super) fn fitted(drawn: [Scale; 3], stroke: f64, s_max_read: f64) -> Option<(f64, [Scale; 3])> {
     let k = stroke / s_max_read;
     if !(k.is_finite() && k > 0.0) {
         return None;
@@ -105,5 +105,5 @@ pub(super) fn fitted(drawn: [Scale; 3], stroke: f64, s_max_read: f64) -> Option<
     for (o, d) in out.iter_mut().zip(drawn) {
         *o = Scale::new(d.value() * k, d.quantity)?;
     }
-    Some(out)
+    Some((k, out))
 }
