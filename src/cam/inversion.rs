@@ -36,7 +36,9 @@ pub struct Inversion {
     /// The practical profile's unit tangent at its points (⊥ the roller's radius to the
     /// tangency, along the face line), cam frame: the French curve touches every roller.
     pub tangents: Vec<DVec2>,
-    /// The pressure (transmission) angle read off the drawing at every point, rad.
+    /// The pressure angle read off the drawing at every point (the normal against the
+    /// follower's path), rad; a rocker's transmission angle is its complement
+    /// ([`super::Cam::angle_read`]).
     pub angles: Vec<f64>,
     /// The smallest convex radius of curvature of the drawn pitch curve (or of the flat
     /// profile r₀ + S + S″ from the drawn values), m.

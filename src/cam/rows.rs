@@ -58,6 +58,18 @@ impl Cam {
             .collect()
     }
 
+    /// The pressure (translating) or transmission (rocker) angle read off the drawing at
+    /// point `i`, rad: the inversion reads the pressure angle, the transmission angle is its
+    /// complement.
+    pub fn angle_read(&self, i: usize) -> f64 {
+        let pressure = self.inversion.angles[i];
+        if self.spec.shows_transmission_angle() {
+            FRAC_PI_2 - pressure
+        } else {
+            pressure
+        }
+    }
+
     /// The exact pressure (translating) or transmission (rocker) angle at φ, rad.
     pub fn angle_at(&self, phi: f64, after: bool) -> f64 {
         let k = self.placement.kin(motion(&self.spec, phi, after));
@@ -181,12 +193,7 @@ impl Cam {
                 Symbol::PressureAngle
             };
             for (i, p) in self.points.iter().enumerate() {
-                let g = self.inversion.angles[i];
-                let g = if self.spec.shows_transmission_angle() {
-                    FRAC_PI_2 - g
-                } else {
-                    g
-                };
+                let g = self.angle_read(i);
                 let a = self.angle_at(p.phi, p.after);
                 out.push(row(
                     symbol,
@@ -334,8 +341,8 @@ impl Cam {
             } else {
                 (
                     Limit::PressureAngle,
-                    FRAC_PI_2 - s.gamma_min,
-                    worst > FRAC_PI_2 - s.gamma_min + 1e-9,
+                    s.angle_limit(),
+                    worst > s.angle_limit() + 1e-9,
                 )
             };
             out.push(CamNote::Angle(AngleCheck {

@@ -357,7 +357,6 @@ const POINTS_PER_TABLE: usize = 40;
 /// radius vector; in tables of at most [`POINTS_PER_TABLE`] rows, each after the first
 /// titled as continued.
 fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
-    let rocker = cam.spec.shows_transmission_angle();
     let flat = matches!(cam.spec.follower, Follower::Flat { .. });
     let f = |x: f64, d: usize| format_fixed(x, d, lang);
     let rows = cam
@@ -373,13 +372,7 @@ fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
                 f(cam.diagrams.d2s[i] * 1e3, 2),
             ];
             if !flat {
-                let g = cam.inversion.angles[i];
-                let g = if rocker {
-                    std::f64::consts::FRAC_PI_2 - g
-                } else {
-                    g
-                };
-                r.push(f(g.to_degrees(), 1));
+                r.push(f(cam.angle_read(i).to_degrees(), 1));
                 r.push(f(cam.angle_at(p.phi, p.after).to_degrees(), 1));
             }
             r.push(f(cam.inversion.profile[i].length() * 1e3, 2));
