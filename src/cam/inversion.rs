@@ -280,10 +280,12 @@ impl Inverting<'_> {
     }
 
     /// The pitch (theoretical) profile through the pitch points, unless flat, and the
-    /// practical profile: the French curve along each moving phase, the dwells' arcs.
+    /// practical profile: each the French curve along each moving phase (the two share
+    /// their tangents: the roller's envelope runs parallel to the pitch curve), the dwells'
+    /// arcs.
     fn profiles(&self, rec: &mut Recorder, o: StepId, mu: Scale, turned: &Turned) {
-        let closed = |pts: &[DVec2], curve: bool| -> Vec<DVec2> {
-            closed_profile(self.points, pts, curve.then_some(&turned.tangents[..]))
+        let closed = |pts: &[DVec2]| -> Vec<DVec2> {
+            closed_profile(self.points, pts, &turned.tangents)
                 .into_iter()
                 .map(|p| p / mu.value())
                 .collect()
@@ -292,7 +294,7 @@ impl Inverting<'_> {
             rec.draw(
                 "pitch (theoretical) profile",
                 Item::Polyline {
-                    points: closed(&turned.centres, false),
+                    points: closed(&turned.centres),
                     closed: true,
                 },
                 Role::Construction,
@@ -306,7 +308,7 @@ impl Inverting<'_> {
                 "practical profile: envelope of the rollers"
             },
             Item::Polyline {
-                points: closed(&turned.profile, true),
+                points: closed(&turned.profile),
                 closed: true,
             },
             Role::Result,
@@ -345,9 +347,9 @@ pub(super) fn rotation(rec: &mut Recorder, o: StepId, r0_mm: f64) {
 }
 
 /// The closed profile through `pts` (one per point of the law, cam frame): each moving
-/// phase through its points — with the French curve between them when their `tangents` are
-/// given — and each dwell the arc about O₁ it is.
-fn closed_profile(points: &[Point], pts: &[DVec2], tangents: Option<&[DVec2]>) -> Vec<DVec2> {
+/// phase through its points, the French curve between them touching their `tangents`, and
+/// each dwell the arc about O₁ it is.
+fn closed_profile(points: &[Point], pts: &[DVec2], tangents: &[DVec2]) -> Vec<DVec2> {
     // The last point of the rise (the return's first follows it) and of the return.
     let n = points.iter().position(|p| p.last).unwrap_or(0);
     let m = points.len().saturating_sub(1);
@@ -358,21 +360,12 @@ fn closed_profile(points: &[Point], pts: &[DVec2], tangents: Option<&[DVec2]>) -
     out
 }
 
-/// A moving phase's points, the practical profile's with the French curve between them.
-fn phase(
-    pts: &[DVec2],
-    range: std::ops::RangeInclusive<usize>,
-    tangents: Option<&[DVec2]>,
-) -> Vec<DVec2> {
+/// A moving phase's points with the French curve between them.
+fn phase(pts: &[DVec2], range: std::ops::RangeInclusive<usize>, t: &[DVec2]) -> Vec<DVec2> {
     let (a, b) = (*range.start(), *range.end());
     let mut out = vec![pts[a]];
     for i in a..b {
-        match tangents {
-            Some(t) => out.extend_from_slice(
-                &french_curve(pts[i], t[i], pts[i + 1], t[i + 1], CURVE_PIECES)[1..],
-            ),
-            None => out.push(pts[i + 1]),
-        }
+        out.extend_from_slice(&french_curve(pts[i], t[i], pts[i + 1], t[i + 1], CURVE_PIECES)[1..]);
     }
     out
 }
