@@ -40,22 +40,28 @@ pub(super) fn cam(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             worked(w)?;
         }
     }
+    // The angles by position in the table of their own when it follows (with the limit's
+    // verdict), else here.
+    let angles_apart = special.is_none();
     let q = quantities(&w.report.rows, |r| {
         r.position().is_some()
             && matches!(r.method, Method::Integration | Method::Inversion)
-            && matches!(
-                r.key.symbol,
+            && match r.key.symbol {
                 Symbol::Displacement
-                    | Symbol::VelocityAnalogue
-                    | Symbol::AccelerationAnalogue
-                    | Symbol::PressureAngle
-                    | Symbol::TransmissionAngle
-                    | Symbol::ProfileRadius
-            )
+                | Symbol::VelocityAnalogue
+                | Symbol::AccelerationAnalogue
+                | Symbol::ProfileRadius => true,
+                Symbol::PressureAngle | Symbol::TransmissionAngle => !angles_apart,
+                _ => false,
+            }
     });
-    let caption = w.word(T::CamTable);
+    let caption = w.word(if angles_apart {
+        T::CamTableNoAngles
+    } else {
+        T::CamTable
+    });
     by_position(w, caption, &q);
-    if special.is_none() {
+    if angles_apart {
         angle_table(w)?;
     }
     let caption = w.word(scene);
@@ -144,11 +150,20 @@ fn angle_table(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         T::PressureTable
     });
     w.doc.table(caption, &[Align::Centre; 4], &header, &body);
+    let force = cam.spec.closure == Closure::Force;
+    if rows
+        .iter()
+        .filter_map(|r| r.position())
+        .any(|p| !checked(&p))
+    {
+        w.doc.say(w.word(T::ForceClosureUnchecked));
+    }
     let worst = cam.worst_angle();
-    let lead = if keeps(worst) {
-        T::WorstKeeps
-    } else {
-        T::WorstBreaks
+    let lead = match (keeps(worst), force) {
+        (true, false) => T::WorstKeeps,
+        (false, false) => T::WorstBreaks,
+        (true, true) => T::WorstKeepsRise,
+        (false, true) => T::WorstBreaksRise,
     };
     w.doc.say(&format!(
         "{} {symbol} = {}° ({} {bound}).",

@@ -52,7 +52,7 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &Diagrams, spec: &CamSpec) {
     for ((scale, value), of, pole, h, meaning, pole_meaning, si) in [
         (
             ("μ_{S′}", d.ds_scale.value()),
-            ("μ_{S}", d.s_scale.value()),
+            ("μ_{S}", d.s_scale.value(), M::DisplacementScale, "m/mm"),
             "H_{2}",
             h2,
             M::VelocityAnalogueScale,
@@ -61,7 +61,12 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &Diagrams, spec: &CamSpec) {
         ),
         (
             ("μ_{S″}", d.d2s_scale.value()),
-            ("μ_{S′}", d.ds_scale.value()),
+            (
+                "μ_{S′}",
+                d.ds_scale.value(),
+                M::VelocityAnalogueScale,
+                VELOCITY_UNIT,
+            ),
             "H_{1}",
             h1,
             M::AccelerationAnalogueScale,
@@ -79,7 +84,7 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &Diagrams, spec: &CamSpec) {
         ));
         w.explain(&[
             (scale, w.word(meaning), si),
-            (of.0, w.word(M::DisplacementScale), "m/mm"),
+            (of.0, w.word(of.2), of.3),
             (pole, w.word(pole_meaning), "mm"),
         ]);
     }

@@ -186,9 +186,11 @@ fn diagram_table(
         cols.push(
             Column::new(
                 super::rows::head(w, first),
-                rows.iter().map(|r| r.map(|r| r.graphical)).collect(),
+                rows.iter()
+                    .map(|r| r.map(|r| super::rows::shown(r, r.graphical)))
+                    .collect(),
             )
-            .against(first.scale),
+            .against(super::rows::shown(first, first.scale)),
         );
     }
     if let (Some(at), false) = (at, worked.is_empty()) {
@@ -310,7 +312,12 @@ pub(super) fn hodograph(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
         };
         body.extend([
             line(format!("{own}, {mm}"), &rows, &|v| mu_v.to_mm(v), 1),
-            line(super::rows::head(w, first), &rows, &|v| v, 3),
+            line(
+                super::rows::head(w, first),
+                &rows,
+                &|v| super::rows::shown(first, v),
+                3,
+            ),
             line(
                 format!("{}, {mm}", w.word(K::Ray)),
                 &rows,

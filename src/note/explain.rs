@@ -1,6 +1,7 @@
 //! The displayed formulas of the note and the explanation of their symbols under them
 //! (ГОСТ 2.105): after a formula that brings in a symbol, «где» and each new symbol with its
-//! meaning and unit, each symbol explained once in the note. Every formula goes through
+//! meaning and unit, each symbol explained once in the note for each meaning (the cam's μ_φ,
+//! the scale of the cam's angle, is not the crank's μ_φ of the kinematic diagrams). Every formula goes through
 //! [`Writer::formula`], every explanation through [`Writer::explain`]; a formula whose left
 //! side no explanation has reached by the next formula is recorded in
 //! [`super::Note::unexplained`], which the tests hold empty.
@@ -15,6 +16,8 @@ use std::collections::HashSet;
 pub(super) struct Explained {
     /// The explained symbols' formula markup ([`sym`] of their label markup).
     known: HashSet<String>,
+    /// The explanations given: a symbol's formula markup and its meaning.
+    given: HashSet<(String, String)>,
     /// The left side of the last formula, until an explanation reaches it.
     pending: Option<String>,
     /// The left sides of the formulas left unexplained.
@@ -55,13 +58,19 @@ impl Writer<'_, '_> {
         self.doc.formula(math);
     }
 
-    /// «где» and the symbols of `items` not yet explained in the note, each «— meaning,
-    /// unit», in the order given (the formula's); nothing when all are known.
+    /// «где» and the symbols of `items` not yet explained in the note with this meaning,
+    /// each «— meaning, unit», in the order given (the formula's); nothing when all are
+    /// known.
     pub(super) fn explain(&mut self, items: &[Explanation<'_>]) {
         let mut rows = Vec::new();
         for &(symbol, meaning, unit) in items {
             let math = sym(symbol);
-            if !self.explained.known.insert(math.clone()) {
+            self.explained.known.insert(math.clone());
+            if !self
+                .explained
+                .given
+                .insert((math.clone(), meaning.to_owned()))
+            {
                 continue;
             }
             let unit = unit_in(unit, self.lang);

@@ -412,10 +412,11 @@ fn table_2(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
                     these
                         .iter()
                         .find(|r| r.position().as_ref() == Some(p))
-                        .map(|r| super::rows::value(r.graphical, r).abs())
+                        .map(|r| super::rows::shown(r, super::rows::value(r.graphical, r).abs()))
                 })
                 .collect();
-            Some(Column::new(super::rows::head(w, first), values).against(first.scale))
+            let zero = super::rows::shown(first, first.scale);
+            Some(Column::new(super::rows::head(w, first), values).against(zero))
         })
         .collect();
     let caption = w.word(K::Table2);

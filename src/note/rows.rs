@@ -5,7 +5,7 @@ use super::markup::{label, power_of_ten, text, Align, LEAST_PLAIN};
 use super::Writer;
 use crate::check::{is_zero, Method, Row, ZERO_FRACTION};
 use crate::scale::format_sig_from;
-use crate::words::{quantity, unit_in, NoteText as T, Text as S};
+use crate::words::{drawing_unit, quantity, unit_in, NoteText as T, Text as S};
 
 pub(super) use crate::words::md_percent as percent;
 
@@ -66,9 +66,16 @@ pub(super) fn symbol(w: &Writer<'_, '_>, r: &Row) -> String {
     quantity(r.key.symbol, &r.key.subject, w.lang)
 }
 
-/// A quantity's symbol and unit as a column head: `V_{B3}, м/с`.
+/// A row's value `x` (in SI) in the unit its column shows, as the sheets show it
+/// ([`drawing_unit`]: a length in millimetres, no run of zeros).
+pub(super) fn shown(r: &Row, x: f64) -> f64 {
+    x * drawing_unit(r.unit()).0
+}
+
+/// A quantity's symbol and the unit it is shown in ([`shown`]) as a column head:
+/// `V_{B3}, м/с`, `S, мм`.
 pub(super) fn head(w: &Writer<'_, '_>, r: &Row) -> String {
-    let unit = unit_in(r.unit(), w.lang);
+    let unit = unit_in(drawing_unit(r.unit()).1, w.lang);
     let symbol = symbol(w, r);
     if unit.is_empty() || unit == "1" {
         symbol
@@ -96,7 +103,12 @@ pub(super) fn by_position(w: &mut Writer<'_, '_>, caption: &str, quantities: &[(
         ps
     };
     let rel = w.report.rel_errors();
-    let chunks: Vec<&[(String, Method)]> = quantities.chunks(3).collect();
+    // At most three quantities to a table, the tables as even as the count allows (four
+    // are two and two, not three and one).
+    let tables = quantities.len().div_ceil(3).max(1);
+    let chunks: Vec<&[(String, Method)]> = quantities
+        .chunks(quantities.len().div_ceil(tables).max(1))
+        .collect();
     let parts = chunks.len();
     for (c, chunk) in chunks.into_iter().enumerate() {
         let find = |q: &(String, Method), p: &str| {
@@ -122,17 +134,37 @@ pub(super) fn by_position(w: &mut Writer<'_, '_>, caption: &str, quantities: &[(
             header.push(text("δ, %"));
             align.extend([Align::Centre; 3]);
         }
+        // One precision per quantity: the decimals its largest value needs, graphical and
+        // analytic alike (a drawing's table, issue 45).
+        let decimals: Vec<Option<usize>> = chunk
+            .iter()
+            .map(|q| {
+                let largest = positions
+                    .iter()
+                    .filter_map(|p| find(q, p))
+                    .flat_map(|(r, _)| [shown(r, r.graphical), shown(r, r.analytic)])
+                    .filter(|x| x.is_finite())
+                    .fold(0.0f64, |m, x| m.max(x.abs()));
+                decimals(largest, DIGITS)
+            })
+            .collect();
         let body: Vec<Vec<String>> = positions
             .iter()
             .map(|p| {
                 let mut row = vec![text(p)];
-                for q in chunk {
+                for (q, &d) in chunk.iter().zip(&decimals) {
                     match find(q, p) {
-                        Some((r, d)) => {
-                            row.push(text(&fmt(value(r.graphical, r), DIGITS, lang)));
-                            row.push(text(&fmt(value(r.analytic, r), DIGITS, lang)));
+                        Some((r, e)) => {
+                            for x in [r.graphical, r.analytic] {
+                                let x = shown(r, value(x, r));
+                                let cell = match x {
+                                    0.0 => "0".into(),
+                                    _ => in_column(x, d.filter(|_| x.is_finite()), DIGITS, lang),
+                                };
+                                row.push(text(&cell));
+                            }
                             row.push(text(
-                                &d.map(|d| percent(d, lang)).unwrap_or_else(|| "—".into()),
+                                &e.map(|e| percent(e, lang)).unwrap_or_else(|| "—".into()),
                             ));
                         }
                         None => row.extend([text("—"), text("—"), text("—")]),
@@ -161,7 +193,11 @@ pub(super) fn of_scene(w: &mut Writer<'_, '_>, caption: &str, keep: impl Fn(&Row
         .zip(&rel)
         .filter(|(r, _)| keep(r))
         .map(|(r, d)| {
-            let pair = same_decimals([value(r.graphical, r), value(r.analytic, r)], 6, lang);
+            let pair = same_decimals(
+                [r.graphical, r.analytic].map(|x| shown(r, value(x, r))),
+                DIGITS,
+                lang,
+            );
             vec![
                 label(&head(w, r)),
                 text(

@@ -26,15 +26,6 @@ pub(crate) fn degrees(radians: f64, lang: Lang) -> String {
     )
 }
 
-/// The unit a row's value is shown in on a sheet, with the factor to it from the SI unit
-/// `si`: a length in millimetres, every other quantity in its SI unit.
-pub(crate) fn sheet_unit(si: &'static str) -> (f64, &'static str) {
-    match si {
-        "m" => (1e3, "mm"),
-        u => (1.0, u),
-    }
-}
-
 /// A relative error given as a fraction, in per cent to [`ERROR_DECIMALS`] (the unit is the
 /// column's): `−16,67`.
 pub(crate) fn error_pct(fraction: f64, lang: Lang) -> String {

@@ -136,7 +136,7 @@ pub(crate) fn tables_rows(g: &crate::gears::GearStudy) -> (Vec<Row>, Vec<Row>) {
 fn table_unit(r: &Row) -> (&'static str, f64) {
     match r.key.symbol {
         Symbol::EnvelopeDeviation => ("um", 1e6),
-        s => match super::digits::sheet_unit(s.unit()) {
+        s => match crate::words::drawing_unit(s.unit()) {
             (k, u @ ("mm" | "deg" | "rad/s")) => (u, k),
             _ => ("", 1.0),
         },

@@ -106,6 +106,18 @@ pub(crate) const UNIT_WORDS: [(&str, &str); 14] = [
     ("kW", "кВт"),
 ];
 
+/// The unit a value is shown in on a sheet and in the note's tables, with the factor to it
+/// from its SI unit `si`: a length in millimetres (a drawing's unit: `4,975 мм`, not
+/// `0,004975 м`), an angle in degrees (the protractor's: `29,14°`, not `0,5086 рад`), every
+/// other quantity in its SI unit.
+pub(crate) fn drawing_unit(si: &'static str) -> (f64, &'static str) {
+    match si {
+        "m" => (1e3, "mm"),
+        "rad" => (180.0 / std::f64::consts::PI, "deg"),
+        u => (1.0, u),
+    }
+}
+
 /// A unit written in SI (`m/s^2`, `N*m`, `kg*m^2`, `rad/s`, `mm`) in `lang`: `·` for the
 /// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`); an
 /// angle in degrees (`deg`) as `°`; a micrometre (`um`) as `мкм`, `µm`; a speed in revolutions per minute (`rpm`) as `об/мин`,

@@ -245,6 +245,7 @@ catalogue! {
             "The roller's radius: at most 0.4 of the base radius and 0.8 of the pitch curve's least radius of curvature (else the profile comes to a point or is undercut):"
         ),
         CamTable => ("Перемещение, аналоги, углы и радиус-вектор профиля по положениям", "Переміщення, аналоги, кути і радіус-вектор профілю за положеннями", "Displacement, analogues, angles and the profile's radius vector by positions"),
+        CamTableNoAngles => ("Перемещение, аналоги и радиус-вектор профиля по положениям", "Переміщення, аналоги і радіус-вектор профілю за положеннями", "Displacement, analogues and the profile's radius vector by positions"),
         TransmissionTable => ("Углы передачи в точках профиля", "Кути передачі в точках профілю", "The transmission angles at the profile's points"),
         PressureTable => ("Углы давления в точках профиля", "Кути тиску в точках профілю", "The pressure angles at the profile's points"),
         OnDrawing => ("по чертежу", "за кресленням", "drawn"),
@@ -256,6 +257,21 @@ catalogue! {
             "Экстремальный угол на всём цикле, включая участки между точками, не выходит за допустимый:",
             "Екстремальний кут на всьому циклі, включно з ділянками між точками, не виходить за допустимий:",
             "The extreme angle over the whole cycle, between the points as well, keeps the limit:"
+        ),
+        WorstKeepsRise => (
+            "Экстремальный угол на фазе удаления, включая участки между точками, не выходит за допустимый:",
+            "Екстремальний кут на фазі віддалення, включно з ділянками між точками, не виходить за допустимий:",
+            "The extreme angle over the rise, between the points as well, keeps the limit:"
+        ),
+        WorstBreaksRise => (
+            "Между расчётными точками угол выходит за допустимый: центр кулачка выбран по минимальному радиусу, считанному с совмещённой диаграммы в расчётных точках, и на фазе удаления экстремальный угол равен",
+            "Між розрахунковими точками кут виходить за допустимий: центр кулачка вибрано за мінімальним радіусом, зчитаним із суміщеної діаграми в розрахункових точках, і на фазі віддалення екстремальний кут дорівнює",
+            "Between the points the angle passes the limit: the cam's centre is chosen by the least radius read off the combined diagram at the points, and over the rise the extreme angle is"
+        ),
+        ForceClosureUnchecked => (
+            "Прочерк в графе допустимости: при силовом замыкании угол ограничивают только на фазе удаления, на фазе возвращения толкатель ведёт замыкающая пружина.",
+            "Прочерк у графі допустимості: при силовому замиканні кут обмежують лише на фазі віддалення, на фазі повернення штовхач веде замикальна пружина.",
+            "A dash in the limit's column: under force closure the angle is limited on the rise only; on the return the closing spring drives the follower."
         ),
         WorstBreaks => (
             "Между расчётными точками угол выходит за допустимый: центр кулачка выбран по минимальному радиусу, считанному с совмещённой диаграммы в расчётных точках, и на всём цикле экстремальный угол равен",

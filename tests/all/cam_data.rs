@@ -265,3 +265,50 @@ fn the_note_judges_the_angle_only_where_it_binds() {
     assert!(!note.source.contains("нарушено"), "a return point judged");
     assert!(note.source.contains("выполнено"), "no rise point judged");
 }
+
+/// Under force closure the dash is explained under the table and the extreme is the rise's
+/// (the note said «на всём цикле» of an extreme taken on the rise).
+#[test]
+fn the_note_says_why_a_point_has_no_verdict_and_where_the_extreme_is() {
+    let s = crate::support::scene("cam-pz5");
+    let session = Session::new(&s, Drafting::HAND);
+    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    assert!(
+        note.source.contains("Прочерк в графе допустимости"),
+        "the dash unexplained"
+    );
+    assert!(
+        note.source.contains("на фазе удаления, включая"),
+        "the rise's extreme"
+    );
+    assert!(
+        !note.source.contains("на всём цикле"),
+        "the whole cycle's extreme"
+    );
+    // Under form closure the limit binds on the whole cycle: no dash, the cycle's extreme.
+    let s = crate::support::scene("cam-central");
+    let session = Session::new(&s, Drafting::HAND);
+    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    assert!(!note.source.contains("Прочерк в графе допустимости"));
+}
+
+/// The note's tables by position show a length as the sheets do, in millimetres, each
+/// quantity at one precision (issue 45: PZ5's S read 0,001208 м), and the angles once, in
+/// degrees, in the table of their own.
+#[test]
+fn the_notes_cam_tables_show_lengths_in_mm_at_one_precision() {
+    let s = crate::support::scene("cam-pz5");
+    let session = Session::new(&s, Drafting::HAND);
+    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    let text: String = tmm::note::to_text(&note)
+        .expect("typeset")
+        .split_whitespace()
+        .collect();
+    assert!(text.contains("S,мм(гр.)"), "S not in mm");
+    assert!(!text.contains(",м(гр.)"), "a length in metres");
+    // The far dwell (positions 8 and 9) at the stroke, 30 mm, at the column's two decimals,
+    // both routes, then their difference 0.
+    assert_eq!(text.matches("30,0030,000").count(), 2, "the far dwell's S");
+    assert!(!text.contains("рад(гр.)"), "an angle in radians");
+    assert_eq!(text.matches("(почертежу)").count(), 1, "the angles twice");
+}

@@ -33,7 +33,9 @@ fn printed(r: &Report, q: &str, method: Method, position: Option<&str>, sig: usi
         .iter()
         .find(|x| x.quantity() == q && x.method == method && x.position().as_deref() == position)
         .unwrap_or_else(|| panic!("no row {q} {method:?} {position:?}"));
-    tmm::scale::format_sig(row.graphical, sig, Lang::Ru)
+    // A length as the sheets show it, in millimetres.
+    let k = if row.unit() == "m" { 1e3 } else { 1.0 };
+    tmm::scale::format_sig(row.graphical * k, sig, Lang::Ru)
 }
 
 #[test]
@@ -69,15 +71,16 @@ fn the_shaper_note_holds_the_projects_values_as_the_report_gives_them() {
     let want = [
         // V_B3 at position 3 (Table 2's V_B3), 4 digits.
         printed(&r, "v_B3", Method::Plan, Some("3"), 4),
-        // M_bal at position 3 by the force polygons and by Zhukovsky's lever, 6 digits.
-        printed(&r, "M_bal", Method::Polygon, Some("3"), 6),
-        printed(&r, "M_bal", Method::Lever, Some("3"), 6),
-        // J_м by Wittenbauer, r_min, α_w, ε_α, U₁₋₈ (the tables of the whole scene: 6 digits).
-        printed(&r, "J_flywheel", Method::Wittenbauer, None, 6),
-        printed(&r, "r_min", Method::CombinedDiagram, None, 6),
-        printed(&r, "alpha_w", Method::Formula, None, 6),
-        printed(&r, "eps_alpha", Method::Formula, None, 6),
-        printed(&r, "u_1_8", Method::Formula, None, 6),
+        // M_bal at position 3 by the force polygons and by Zhukovsky's lever, J_м by
+        // Wittenbauer, r_min (in mm), α_w, ε_α, U₁₋₈: the tables of the whole scene, 4 digits
+        // (a drawing table's, issue 45).
+        printed(&r, "M_bal", Method::Polygon, Some("3"), 4),
+        printed(&r, "M_bal", Method::Lever, Some("3"), 4),
+        printed(&r, "J_flywheel", Method::Wittenbauer, None, 4),
+        printed(&r, "r_min", Method::CombinedDiagram, None, 4),
+        printed(&r, "alpha_w", Method::Formula, None, 4),
+        printed(&r, "eps_alpha", Method::Formula, None, 4),
+        printed(&r, "u_1_8", Method::Formula, None, 4),
     ];
     for w in &want {
         assert!(text.contains(w.as_str()), "{w} not in the note");

@@ -259,3 +259,35 @@ fn the_engine_note_speaks_of_an_engine() {
         );
     }
 }
+
+/// A symbol is explained once for each meaning (issue 45): in the shaper's note the cam's
+/// μ_φ, μ_S, μ_S′, μ_S″ are the cam diagrams' scales, explained in the cam's section after the
+/// kinematic diagrams explained theirs, each with its own unit (μ_S′ was the displacement's
+/// scale in м/мм there).
+#[test]
+fn the_cams_scales_are_explained_as_the_cams() {
+    let s = scene("shaper");
+    let session = Session::new(&s, Drafting::HAND);
+    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    // An explanation's meaning and unit as the note's markup writes them.
+    let entry = |meaning: &str, unit: &str| format!("[#[#\"{meaning}\"], #[#\"{unit}\"]]");
+    let src = &note.source;
+    let crank = src
+        .find(&entry("масштаб угла поворота кривошипа", "рад/мм"))
+        .expect("the kinematics' μ_φ");
+    for (meaning, unit) in [
+        ("масштаб угла поворота кулачка", "рад/мм"),
+        ("масштаб диаграммы перемещений толкателя", "м/мм"),
+        ("масштаб диаграммы аналога скорости толкателя", "м/(рад·мм)"),
+    ] {
+        let at = src.find(&entry(meaning, unit));
+        assert!(at.is_some_and(|at| at > crank), "{meaning}, {unit}");
+    }
+    assert!(src.contains("масштаб диаграммы аналога ускорения толкателя"));
+    // μ_S′ was explained as the displacement's scale a second time.
+    assert_eq!(
+        src.matches("масштаб диаграммы перемещений толкателя")
+            .count(),
+        1
+    );
+}
