@@ -495,33 +495,16 @@ impl Filling {
         ));
     }
 
-    /// The train: the triangles of velocities with μ_ω, the ratio by Willis and by the
-    /// triangles (and the required one), the differential's and the closing's lines, the
-    /// assembly of the satellites.
+    /// The train: the triangles of velocities with μ_ω, the mobility, the differential's and
+    /// the closing's lines, the assembly of the satellites.
     fn train(&mut self, t: &crate::gears::TrainStudy) {
         let lang = self.lang;
         self.blocks
             .push(super::train_view::triangles_block(t, lang));
         let tr_ = &t.spec.train;
-        // The mobility heads the ratio's line (the sheet's text block is as tall as PZ2's A3
-        // holds).
-        for (s, sup) in [(Some(t), ""), (t.required.as_deref(), "^{треб}")] {
-            let Some(s) = s else { continue };
-            let head = if sup.is_empty() {
-                format!("{}; ", train_mobility_line(tr_))
-            } else {
-                String::new()
-            };
-            self.lines.push(format!(
-                "{head}u_{{{}-{}}}{sup} = {} ({}), {} ({})",
-                tr_.shafts[tr_.input],
-                tr_.shafts[tr_.output],
-                super::digits::value(s.ratio, lang),
-                GearText::Willis.get(lang),
-                super::digits::value(s.triangles.ratio, lang),
-                GearText::ByTriangles.get(lang),
-            ));
-        }
+        // The mobility; the ratio (by the formula and by the triangles, the required one too)
+        // is the tables' (the line printed it a third and fourth time).
+        self.lines.push(train_mobility_line(tr_));
         self.lines.extend(differential_line(t, lang));
         self.lines.extend(closing_lines(t, lang));
         if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {

@@ -461,3 +461,44 @@ fn a_differentials_speed_is_written_at_four_digits() {
     let want = "n_{3} = 1000 об/мин, n_{5} = 200 об/мин → n_{H} = 360 об/мин (формула Виллиса), 362,9 об/мин";
     assert!(lines.iter().any(|l| l.starts_with(want)), "{lines:?}");
 }
+
+/// A train's ratio stands once in each table, not again in the text block (the review: u
+/// printed four and five times on the shaper's sheet); the required ratio has its formula's
+/// row only, for no triangles of it are drawn.
+#[test]
+fn a_trains_ratio_stands_in_its_tables_only() {
+    for name in ["shaper", "gears-pz2", "gears-pz2-ex1"] {
+        let s = scene(name);
+        let plates = gear_sheets(&s, Drafting::HAND, Lang::Ru);
+        let lines: Vec<&String> = plates
+            .iter()
+            .flat_map(|p| p.texts.iter().flat_map(|t| t.lines.iter()))
+            .collect();
+        assert!(
+            lines.iter().any(|l| l.starts_with("W = 3n")),
+            "{name}: no mobility"
+        );
+        assert!(
+            !lines.iter().any(|l| l.contains("u_{")),
+            "{name}: a ratio in the text: {lines:?}"
+        );
+        let cells: Vec<&String> = plates
+            .iter()
+            .flat_map(|p| p.tables.iter().flat_map(|t| t.rows.iter().flatten()))
+            .collect();
+        assert!(
+            cells.iter().any(|c| c.starts_with("u_{")),
+            "{name}: no ratio row"
+        );
+    }
+    let s = scene("shaper");
+    let session = tmm::study::Session::new(&s, Drafting::HAND);
+    let report = session.report().expect("report");
+    let required: Vec<_> = report
+        .rows
+        .iter()
+        .filter(|r| r.quantity().ends_with("_req"))
+        .map(|r| r.method)
+        .collect();
+    assert_eq!(required, vec![tmm::check::Method::Formula]);
+}

@@ -125,15 +125,17 @@ pub fn train_study(
 
 impl TrainStudy {
     /// `u_<in>_<out>` by formula (the stages or the differential's formula against Willis)
-    /// and by the triangles; with n_input, ω of every shaft read off the plan of angular
-    /// velocities.
+    /// and by the triangles, the required one by formula; with n_input, ω of every shaft
+    /// read off the plan of angular velocities.
     pub fn rows(&self) -> Vec<crate::check::Row> {
         use crate::check::{Method, Symbol};
         use rows::row;
         let t = &self.spec.train;
         let subject = format!("{}_{}", t.shafts[t.input], t.shafts[t.output]);
         let mut out = Vec::new();
-        let ratio_rows = |t: &TrainStudy, subject: &str| {
+        // The required train's triangles are not drawn (the sheet draws the scene's): it has
+        // its formula's row only.
+        let ratio_rows = |t: &TrainStudy, subject: &str, drawn: bool| {
             let at = |method, graphical| {
                 row(
                     Symbol::GearRatio,
@@ -147,11 +149,11 @@ impl TrainStudy {
             t.formula
                 .map(|s| at(Method::Formula, s))
                 .into_iter()
-                .chain([at(Method::Triangles, t.triangles.ratio)])
+                .chain(drawn.then(|| at(Method::Triangles, t.triangles.ratio)))
         };
-        out.extend(ratio_rows(self, &subject));
+        out.extend(ratio_rows(self, &subject, true));
         if let Some(r) = &self.required {
-            out.extend(ratio_rows(r, &format!("{subject}_req")));
+            out.extend(ratio_rows(r, &format!("{subject}_req"), false));
         }
         if self.spec.n_input.is_some() {
             let w_in = omega_in(&self.spec);
