@@ -369,6 +369,20 @@ impl GearStudy {
         }
         [pair, rest]
     }
+    /// The generated wheel a row of [`Self::rows`] belongs to, with the row's subject
+    /// without the wheel's name (`a` of `s_a` for the wheel's `a0`); `None` for a row of no
+    /// generated wheel. A row is the wheel's by its key and its method: the shaper's cut
+    /// wheel `1` has an `s_a1` off its envelope, the pair's wheel 1 one by formula.
+    pub fn cut_wheel_of(&self, row: &crate::check::Row) -> Option<(&CutWheel, &'static str)> {
+        self.racks.iter().find_map(|w| {
+            let bare = rows::bare_subject(&row.key.subject, &w.name)?;
+            rows::generation_rows(&w.name, &w.generation)
+                .iter()
+                .any(|r| r.key == row.key && r.method == row.method)
+                .then_some((w, bare))
+        })
+    }
+
     /// The notes: the pair's (with the seeds' errata), each generation's.
     pub fn notes(&self) -> Vec<crate::check::Note> {
         use crate::check::notes::GearsNote;

@@ -225,6 +225,18 @@ fn suffix(name: &str) -> String {
     }
 }
 
+/// The subject a generated wheel's row `subject` has without the wheel's `name` (`a` of
+/// `a0`, `min` of `min_p`, `deviation` of `deviation`): the quantity's own subscript; `None`
+/// for a subject not the wheel's ([`generation_rows`] names them).
+pub fn bare_subject(subject: &str, name: &str) -> Option<&'static str> {
+    let own = |bare: &'static str, tail: &str| (subject == format!("{bare}{tail}")).then_some(bare);
+    let sfx = suffix(name);
+    ["min", "deviation"]
+        .into_iter()
+        .find_map(|b| own(b, &sfx))
+        .or_else(|| ["a", "t", "b"].into_iter().find_map(|b| own(b, name)))
+}
+
 /// The textbook's x_min = (17 − z)/17 is h_a* − z sin²α/2 rounded for h_a* = 1 and α = 20°
 /// (1/17 ≈ sin²20°/2): it holds for that rack only (at α = 25° it gives −1.82 for z = 48
 /// against the exact −3.29).

@@ -71,7 +71,7 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let caption = w.word(T::BlockingTable);
     of_scene(w, caption, on_contour);
     for cut in &study.racks {
-        rack_form(w, &cut.name, &cut.generation);
+        rack_form(w, &cut.generation);
     }
     let caption = w.word(T::RackTable);
     // A rack-cut wheel's x_min (formula) beside what its envelope gives.
@@ -204,7 +204,7 @@ fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
 /// the drawing (the chords where the drawn flanks cross the pitch and base circles, turned
 /// into arcs) and by the exact envelope; lengths in mm. The form's S_b is the uncut
 /// involute's: an undercut thins the drawn and the exact tooth below it.
-fn rack_form(w: &mut Writer<'_, '_>, name: &str, g: &Generation) {
+fn rack_form(w: &mut Writer<'_, '_>, g: &Generation) {
     let lang = w.lang;
     let c = &g.cutting;
     let n = |x: f64| num(x, 5, lang);
@@ -291,7 +291,7 @@ fn rack_form(w: &mut Writer<'_, '_>, name: &str, g: &Generation) {
         T::ShiftedWheelForm
     };
     let caption = format!(
-        "{} {name} (z = {}, x = {}): {}",
+        "{} (z = {}, x = {}): {}",
         w.word(T::WheelWord),
         c.z,
         crate::scale::format_sig(c.x, 4, lang),

@@ -54,7 +54,7 @@ fn wheels(w: &mut Writer<'_, '_>) {
             G::TipEnough
         };
         lines.push(format!(
-            "{} {name} (z = {}, x = {}, x_{{min}} = {}): {}; S_{{t}} = {} {mm}, s_{{a}} = {} {mm}, {}m = {} {mm}: {}.",
+            "{} (z = {}, x = {}, x_{{min}} = {}): {}; S_{{t}} = {} {mm}, s_{{a}} = {} {mm}, {}m = {} {mm}: {}.",
             w.word(G::Wheel),
             c.z,
             n(c.x),

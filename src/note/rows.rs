@@ -5,7 +5,7 @@ use super::markup::{label, power_of_ten, text, Align, LEAST_PLAIN};
 use super::Writer;
 use crate::check::{is_zero, Method, Row, ZERO_FRACTION};
 use crate::scale::format_sig_from;
-use crate::words::{drawing_unit, quantity, unit_in, NoteText as T, Text as S};
+use crate::words::{quantity, shown_unit, unit_in, NoteText as T, Text as S};
 
 pub(super) use crate::words::md_percent as percent;
 
@@ -52,7 +52,7 @@ pub(super) fn quantities(rows: &[Row], keep: impl Fn(&Row) -> bool) -> Vec<(Stri
 
 /// A row's quantity in label markup as the sheets name it: the textbook's symbol
 /// (`V_{B3}`, `F_{и3}`); a value of a friction case by its symbol on the friction sheet and
-/// the case's number (`P (случай 1)`).
+/// the case's number (`P (случай 1)`); a cut wheel's by its shift (`s_{a} (x = 0,6)`).
 pub(super) fn symbol(w: &Writer<'_, '_>, r: &Row) -> String {
     if !w.session.scene().friction.is_empty() {
         if let Ok(solved) = w.session.friction() {
@@ -63,19 +63,26 @@ pub(super) fn symbol(w: &Writer<'_, '_>, r: &Row) -> String {
             }
         }
     }
+    if w.session.scene().gears.is_some() {
+        if let Ok(g) = w.session.gears() {
+            if g.cut_wheel_of(r).is_some() {
+                return crate::sheets::cut_wheel_quantity(&g, r, w.lang);
+            }
+        }
+    }
     quantity(r.key.symbol, &r.key.subject, w.lang)
 }
 
 /// A row's value `x` (in SI) in the unit its column shows, as the sheets show it
-/// ([`drawing_unit`]: a length in millimetres, no run of zeros).
+/// ([`shown_unit`]: a length in millimetres, no run of zeros).
 pub(super) fn shown(r: &Row, x: f64) -> f64 {
-    x * drawing_unit(r.unit()).0
+    x * shown_unit(r.key.symbol).0
 }
 
 /// A quantity's symbol and the unit it is shown in ([`shown`]) as a column head:
 /// `V_{B3}, м/с`, `S, мм`.
 pub(super) fn head(w: &Writer<'_, '_>, r: &Row) -> String {
-    let unit = unit_in(drawing_unit(r.unit()).1, w.lang);
+    let unit = unit_in(shown_unit(r.key.symbol).1, w.lang);
     let symbol = symbol(w, r);
     if unit.is_empty() || unit == "1" {
         symbol
@@ -182,11 +189,12 @@ pub(super) fn by_position(w: &mut Writer<'_, '_>, caption: &str, quantities: &[(
     }
 }
 
-/// The rows of the whole scene `keep` accepts: quantity, method, graphical, analytic, δ.
+/// The rows of the whole scene `keep` accepts: quantity, method, graphical, analytic, δ;
+/// each row as printed once.
 pub(super) fn of_scene(w: &mut Writer<'_, '_>, caption: &str, keep: impl Fn(&Row) -> bool) {
     let lang = w.lang;
     let rel = w.report.rel_errors();
-    let body: Vec<Vec<String>> = w
+    let mut body: Vec<Vec<String>> = w
         .report
         .rows
         .iter()
@@ -211,6 +219,9 @@ pub(super) fn of_scene(w: &mut Writer<'_, '_>, caption: &str, keep: impl Fn(&Row
             ]
         })
         .collect();
+    // A row the table already holds word for word once (x_min of two wheels of one z).
+    let mut seen = std::collections::HashSet::new();
+    body.retain(|row| seen.insert(row.clone()));
     if body.is_empty() {
         return;
     }

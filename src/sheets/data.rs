@@ -169,8 +169,9 @@ pub fn gears(g: &GearsSpec, lang: Lang) -> Vec<DataRow> {
     for r in &g.racks {
         rows.push(part(NoteText::RackCutPart));
         rows.push(("m".into(), mm(r.cutting.module, lang), "mm".into()));
-        rows.push(one(&format!("z_{{{}}}", r.name), f64::from(r.cutting.z)));
-        rows.push(one(&format!("x_{{{}}}", r.name), r.cutting.x));
+        // Under the wheel's own heading: z and x, not the scene's name of it (z₀, x_p).
+        rows.push(one("z", f64::from(r.cutting.z)));
+        rows.push(one("x", r.cutting.x));
     }
     if let Some(t) = &g.planetary {
         rows.push(part(if t.train.second.is_some() {

@@ -91,10 +91,10 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     // computed by formula against another route — a formula's value is no graphical reading.
     let (read, computed) = tables_rows(&g);
     if !read.is_empty() {
-        blocks.push(Block::Table(table(&read, lang)));
+        blocks.push(Block::Table(table(&read, &g, lang)));
     }
     if !computed.is_empty() {
-        blocks.push(Block::Table(formula_table(&computed, lang)));
+        blocks.push(Block::Table(formula_table(&computed, &g, lang)));
     }
     let Some(plan) =
         plan.or_else(|| crate::scale::Scale::new(0.001, crate::scale::Quantity::Length))
@@ -127,27 +127,59 @@ fn view(
 /// "графически") and those computed ([`Row::is_read_off`]), each in the order of the parts.
 pub(crate) fn tables_rows(g: &crate::gears::GearStudy) -> (Vec<Row>, Vec<Row>) {
     let [pair, rest] = g.rows_by_part();
-    pair.into_iter().chain(rest).partition(Row::is_read_off)
+    // x_min depends on z alone: once for the wheels of one z (PZ1 listed it for each).
+    let mut minima = Vec::new();
+    pair.into_iter()
+        .chain(rest)
+        .filter(|r| match g.cut_wheel_of(r) {
+            Some((w, "min")) => {
+                let z = w.generation.cutting.z;
+                let first = !minima.contains(&z);
+                minima.push(z);
+                first
+            }
+            _ => true,
+        })
+        .partition(Row::is_read_off)
+}
+
+/// A row's quantity on the gear sheet ([`quantity`]); a cut wheel's by its own subscript and
+/// the wheel as its picture's caption names it, `s_a (x = 0,6)`, with its z when the sheet's
+/// cut wheels differ in it (x_min by its z only): the scene's name of the wheel («0», «1p»)
+/// is no word of the sheet's, and a cut wheel's s_a is not the pair's s_a1 (the shaper's
+/// sheet wrote s_a1 for both).
+pub(crate) fn gear_quantity(g: &crate::gears::GearStudy, r: &Row, lang: Lang) -> String {
+    let Some((w, bare)) = g.cut_wheel_of(r) else {
+        return quantity(r, lang);
+    };
+    let name = crate::words::symbols::quantity(r.key.symbol, bare, lang);
+    let c = &w.generation.cutting;
+    let one_z = g.racks.iter().all(|o| o.generation.cutting.z == c.z);
+    let x = format!("x = {}", format_sig(c.x, 4, lang));
+    match (bare, one_z) {
+        ("min", true) => name,
+        ("min", false) => format!("{name} (z = {})", c.z),
+        (_, true) => format!("{name} ({x})"),
+        (_, false) => format!("{name} (z = {}, {x})", c.z),
+    }
 }
 
 /// The unit a row's value is written in and its factor from SI, one per quantity on the
 /// sheet: a length in mm, the drawn envelope's deviation from the exact one in µm (each
 /// wheel's, whatever its size); an angle in degrees; an angular velocity in rad/s.
 fn table_unit(r: &Row) -> (&'static str, f64) {
-    match r.key.symbol {
-        Symbol::EnvelopeDeviation => ("um", 1e6),
-        s => match crate::words::drawing_unit(s.unit()) {
-            (k, u @ ("mm" | "deg" | "rad/s")) => (u, k),
-            _ => ("", 1.0),
-        },
+    match crate::words::shown_unit(r.key.symbol) {
+        (k, u @ ("mm" | "um" | "deg" | "rad/s")) => (u, k),
+        _ => ("", 1.0),
     }
 }
 
 /// The table of the rows read off the drawings: quantity | method (the drawing read) | unit
 /// | graphical | analytic | error (lengths in mm).
-fn table(rows: &[Row], lang: Lang) -> TableBlock {
+fn table(rows: &[Row], g: &crate::gears::GearStudy, lang: Lang) -> TableBlock {
     values_table(
         rows,
+        g,
         GearText::ReadOff.get(lang).into(),
         &[
             (Column::Quantity, 26.0),
@@ -164,9 +196,10 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
 /// The table of the rows computed — by formula (the textbook's chain), or from the
 /// construction's points (the envelope's deviation) —: quantity | unit | computed | check (an
 /// independent route, the exact value) | error.
-fn formula_table(rows: &[Row], lang: Lang) -> TableBlock {
+fn formula_table(rows: &[Row], g: &crate::gears::GearStudy, lang: Lang) -> TableBlock {
     let mut t = values_table(
         rows,
+        g,
         GearText::Computed.get(lang).into(),
         &[
             (Column::Quantity, 26.0),
@@ -183,12 +216,18 @@ fn formula_table(rows: &[Row], lang: Lang) -> TableBlock {
 }
 
 /// The rows as a table of `columns` titled `title` (lengths in mm).
-fn values_table(rows: &[Row], title: String, columns: &[(Column, f64)], lang: Lang) -> TableBlock {
+fn values_table(
+    rows: &[Row],
+    g: &crate::gears::GearStudy,
+    title: String,
+    columns: &[(Column, f64)],
+    lang: Lang,
+) -> TableBlock {
     results_table(
         &Results {
             title,
             columns,
-            name: &|r| quantity(r, lang),
+            name: &|r| gear_quantity(g, r, lang),
             unit: &|r| match table_unit(r).0 {
                 "" => String::new(),
                 u => unit_in(u, lang),

@@ -118,6 +118,16 @@ pub(crate) fn drawing_unit(si: &'static str) -> (f64, &'static str) {
     }
 }
 
+/// The unit a row of `symbol` is shown in on a sheet and in the note's tables, with the
+/// factor to it from SI: [`drawing_unit`], but a drawn envelope's deviation from the exact
+/// one in micrometres (each wheel's, whatever its size: `0,5690 мкм`, not `5,69·10⁻⁴ мм`).
+pub(crate) fn shown_unit(symbol: Symbol) -> (f64, &'static str) {
+    match symbol {
+        Symbol::EnvelopeDeviation => (1e6, "um"),
+        s => drawing_unit(s.unit()),
+    }
+}
+
 /// A unit written in SI (`m/s^2`, `N*m`, `kg*m^2`, `rad/s`, `mm`) in `lang`: `·` for the
 /// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`); an
 /// angle in degrees (`deg`) as `°`; a micrometre (`um`) as `мкм`, `µm`; a speed in revolutions per minute (`rpm`) as `об/мин`,

@@ -502,3 +502,47 @@ fn a_trains_ratio_stands_in_its_tables_only() {
         .collect();
     assert_eq!(required, vec![tmm::check::Method::Formula]);
 }
+
+/// A cut wheel's values are named by the wheel's shift as its picture's caption names it,
+/// `s_{a} (x = 0,6)`, never by the scene's name of the wheel (PZ1's `x_{min,0}`, `s_{a,p}`;
+/// the shaper's `s_{a1}` of the cut wheel beside the pair's s_{a1}); x_min, which depends on
+/// z alone, once for wheels of one z — on the sheet and in the note.
+#[test]
+fn a_cut_wheels_values_are_named_by_its_shift() {
+    for (name, shifted) in [("gears-pz1", "0,6"), ("shaper", "0,8")] {
+        let s = scene(name);
+        let plates = gear_sheets(&s, Drafting::HAND, Lang::Ru);
+        let names: Vec<&String> = plates
+            .iter()
+            .flat_map(|p| {
+                p.tables
+                    .iter()
+                    .flat_map(|t| t.rows.iter().filter_map(|r| r.first()))
+            })
+            .collect();
+        for want in ["s_{a} (x = 0)", &format!("s_{{a}} (x = {shifted})")] {
+            assert!(
+                names.iter().any(|n| *n == want),
+                "{name}: no {want} in {names:?}"
+            );
+        }
+        assert!(
+            !names
+                .iter()
+                .any(|n| n.contains("min,") || n.contains(",p}") || n.contains("1p}")),
+            "{name}: a scene's wheel name: {names:?}"
+        );
+        // s_{a1} is the pair's wheel 1's, by formula, once.
+        assert!(
+            names.iter().filter(|n| **n == "s_{a1}").count() <= 1,
+            "{names:?}"
+        );
+        assert!(names.iter().filter(|n| n.starts_with("x_{min")).count() <= 1);
+        let session = tmm::study::Session::new(&s, Drafting::HAND);
+        let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+        assert!(
+            !note.source.contains("min,"),
+            "{name}: the note's x_min of a wheel name"
+        );
+    }
+}
