@@ -86,6 +86,10 @@ pub enum Quantity {
     StaticMoment,
     /// Moment of an unbalance about a plane m·ρ·z, kg·m²/mm (μ_mρz).
     UnbalanceMoment,
+    /// The velocity analogue dS/dφ of a follower, m/(rad·mm) (μ_S′).
+    VelocityAnalogue,
+    /// The acceleration analogue d²S/dφ² of a follower, m/(rad²·mm) (μ_S″).
+    AccelerationAnalogue,
 }
 
 impl Quantity {
@@ -108,6 +112,8 @@ impl Quantity {
             AngularAcceleration => ("rad/s²", "rad/(s^2·mm)", "рад/(с^2·мм)"),
             StaticMoment => ("kg·m", "kg·m/mm", "кг·м/мм"),
             UnbalanceMoment => ("kg·m²", "kg·m^2/mm", "кг·м^2/мм"),
+            VelocityAnalogue => ("m/rad", "m/(rad·mm)", "м/(рад·мм)"),
+            AccelerationAnalogue => ("m/rad²", "m/(rad^2·mm)", "м/(рад^2·мм)"),
         };
         Units { si, en, cyrillic }
     }
@@ -141,6 +147,8 @@ impl Quantity {
             AngularAcceleration => "ε",
             StaticMoment => "mρ",
             UnbalanceMoment => "mρz",
+            VelocityAnalogue => "S′",
+            AccelerationAnalogue => "S″",
         }
     }
 }

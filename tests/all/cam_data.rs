@@ -312,3 +312,23 @@ fn the_notes_cam_tables_show_lengths_in_mm_at_one_precision() {
     assert!(!text.contains("рад(гр.)"), "an angle in radians");
     assert_eq!(text.matches("(почертежу)").count(), 1, "the angles twice");
 }
+
+/// The analogues' scales in one unit on the sheet and in the note (issue 45: the sheet wrote
+/// μ_S′ in м/мм, the note in м/(рад·мм)).
+#[test]
+fn the_analogues_scales_have_the_notes_units_on_the_sheet() {
+    for name in ["cam-pz5", "cam-central"] {
+        let on_sheet = words(&plates(name, Lang::Ru));
+        for (mu, unit) in [("μ_{S′}", "м/(рад·мм)"), ("μ_{S″}", "м/(рад^2·мм)")] {
+            let caption = on_sheet
+                .iter()
+                .find(|w| w.contains(mu))
+                .unwrap_or_else(|| panic!("{name}: no {mu}"));
+            assert!(caption.contains(unit), "{name}: «{caption}»");
+        }
+        let s = crate::support::scene(name);
+        let session = Session::new(&s, Drafting::EXACT);
+        let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+        assert!(note.source.contains("м/(рад·мм)"), "{name}: the note's unit");
+    }
+}

@@ -19,8 +19,10 @@ const STROKE_MM: f64 = 100.0;
 /// diagrams stacked fill an A1 sheet's height.
 const PEAK_MM: f64 = 65.0;
 
-pub(super) fn scale(v: f64, what: &'static str) -> Result<Scale, CamError> {
-    Scale::new(v, Quantity::Length).ok_or(CamError::NoScale { what, size: v })
+/// An analogue's scale: μ_S′ in m/(rad·mm), μ_S″ in m/(rad²·mm), as the note works them
+/// (the sheet wrote м/мм), named `what` in the error.
+fn analogue(v: f64, quantity: Quantity, what: &'static str) -> Result<Scale, CamError> {
+    Scale::new(v, quantity).ok_or(CamError::NoScale { what, size: v })
 }
 
 /// The scales and poles the diagrams are drawn at: μ_φ, μ_S (given, or round for the
@@ -47,8 +49,10 @@ pub(super) fn scales(spec: &CamSpec) -> Result<(Scale, [Scale; 3], [f64; 2]), Ca
     let [h1, h2] = spec
         .poles
         .unwrap_or_else(|| chosen_poles(spec, s_scale, phi));
-    let ds_scale = scale(s_scale.value() / (h2 * phi.value()), "μ_S′")?;
-    let d2s_scale = scale(ds_scale.value() / (h1 * phi.value()), "μ_S″")?;
+    let ds = s_scale.value() / (h2 * phi.value());
+    let ds_scale = analogue(ds, Quantity::VelocityAnalogue, "μ_S′")?;
+    let d2s = ds_scale.value() / (h1 * phi.value());
+    let d2s_scale = analogue(d2s, Quantity::AccelerationAnalogue, "μ_S″")?;
     Ok((phi, [s_scale, ds_scale, d2s_scale], [h1, h2]))
 }
 
