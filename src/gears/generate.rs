@@ -389,7 +389,7 @@ fn tip_reading(rec: &mut Recorder, c: &Cutting, flank: &[Touch], mu: f64) -> (Me
     let tip_l = DVec2::new(-tip.x, tip.y);
     let tip_chord = rec.measure(mm(tip_l), mm(tip));
     let sa = chord_to_arc(tip_chord.value, ra);
-    rec.draw(
+    let dim = rec.draw(
         "s_a: the tip chord",
         Item::Dimension {
             from: mm(tip_l),
@@ -399,6 +399,10 @@ fn tip_reading(rec: &mut Recorder, c: &Cutting, flank: &[Touch], mu: f64) -> (Me
         Role::Dimension,
         &[],
     );
+    // Named on its dimension line, as the data line names its value (a dimension without
+    // its text was the review's mark).
+    let over = mm((tip_l + tip) * 0.5) + DVec2::Y * 4.0;
+    rec.label(dim, "s_a", over, DVec2::Y);
     (tip_chord, sa)
 }
 

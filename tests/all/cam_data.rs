@@ -319,7 +319,8 @@ fn the_notes_cam_tables_show_lengths_in_mm_at_one_precision() {
 fn the_analogues_scales_have_the_notes_units_on_the_sheet() {
     for name in ["cam-pz5", "cam-central"] {
         let on_sheet = words(&plates(name, Lang::Ru));
-        for (mu, unit) in [("μ_{S′}", "м/(рад·мм)"), ("μ_{S″}", "м/(рад^2·мм)")] {
+        for (mu, unit) in [("μ_{S′}", "м/(рад·мм)"), ("μ_{S″}", "м/(рад^2·мм)")]
+        {
             let caption = on_sheet
                 .iter()
                 .find(|w| w.contains(mu))
@@ -329,6 +330,9 @@ fn the_analogues_scales_have_the_notes_units_on_the_sheet() {
         let s = crate::support::scene(name);
         let session = Session::new(&s, Drafting::EXACT);
         let note = tmm::note::compose(&session, Lang::Ru).expect("note");
-        assert!(note.source.contains("м/(рад·мм)"), "{name}: the note's unit");
+        assert!(
+            note.source.contains("м/(рад·мм)"),
+            "{name}: the note's unit"
+        );
     }
 }

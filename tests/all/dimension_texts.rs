@@ -37,3 +37,39 @@ fn no_dimension_text_is_struck_by_a_line_of_its_view() {
     assert!(sheets > 50, "{sheets} sheets");
     assert!(struck.is_empty(), "{}", struck.join("\n"));
 }
+
+/// Every dimension line carries its text (issue 45: the rack-cut tooth's s_a was a
+/// dimension line with nothing on it): over every view of every sheet of every scene, each
+/// step drawn as a dimension has its label, or a step drawn from it does.
+#[test]
+fn every_dimension_carries_its_text() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("constructions");
+    let mut bare = Vec::new();
+    for entry in std::fs::read_dir(dir).expect("constructions/") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+        let plates = tmm::render::plates(&s, Lang::Ru, Drafting::EXACT)
+            .unwrap_or_else(|e| panic!("{}: {e}", s.stem));
+        for (_, p) in plates {
+            for (v, view) in p.views.iter().enumerate() {
+                let steps = &view.figure.steps;
+                for st in steps {
+                    if !matches!(st.item, tmm::construct::Item::Dimension { .. }) {
+                        continue;
+                    }
+                    let named = st.label.is_some()
+                        || steps
+                            .iter()
+                            .any(|o| o.from.contains(&st.id) && o.label.is_some());
+                    if !named {
+                        bare.push(format!("{}/{} view {v}: «{}»", s.stem, p.name, st.note));
+                    }
+                }
+            }
+        }
+    }
+    assert!(bare.is_empty(), "{}", bare.join("\n"));
+}
