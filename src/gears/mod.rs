@@ -250,6 +250,8 @@ pub struct CutWheel {
     pub name: String,
     /// Its generation by the rack.
     pub generation: generate::Generation,
+    /// Its rows ([`rows::generation_rows`]), made once.
+    pub rows: Vec<crate::check::Row>,
 }
 
 /// The gear study carried out: the pair with its meshing picture, the generated wheels.
@@ -312,9 +314,11 @@ pub fn study(
                 Some(s) => s,
                 None => generation_scale(&r.cutting)?,
             };
+            let generation = generate::generate(&r.cutting, r.positions, scale, ctx)?;
             Ok(CutWheel {
                 name: r.name.clone(),
-                generation: generate::generate(&r.cutting, r.positions, scale, ctx)?,
+                rows: rows::generation_rows(&r.name, &generation),
+                generation,
             })
         })
         .collect::<Result<Vec<_>, GearError>>()?;
@@ -362,7 +366,7 @@ impl GearStudy {
         }
         let mut rest = Vec::new();
         for w in &self.racks {
-            rest.extend(rows::generation_rows(&w.name, &w.generation));
+            rest.extend(w.rows.iter().cloned());
         }
         if let Some(t) = &self.train {
             rest.extend(t.rows());
@@ -376,7 +380,7 @@ impl GearStudy {
     pub fn cut_wheel_of(&self, row: &crate::check::Row) -> Option<(&CutWheel, &'static str)> {
         self.racks.iter().find_map(|w| {
             let bare = rows::bare_subject(&row.key.subject, &w.name)?;
-            rows::generation_rows(&w.name, &w.generation)
+            w.rows
                 .iter()
                 .any(|r| r.key == row.key && r.method == row.method)
                 .then_some((w, bare))

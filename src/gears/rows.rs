@@ -229,7 +229,8 @@ fn suffix(name: &str) -> String {
 /// `a0`, `min` of `min_p`, `deviation` of `deviation`): the quantity's own subscript; `None`
 /// for a subject not the wheel's ([`generation_rows`] names them).
 pub fn bare_subject(subject: &str, name: &str) -> Option<&'static str> {
-    let own = |bare: &'static str, tail: &str| (subject == format!("{bare}{tail}")).then_some(bare);
+    let own =
+        |bare: &'static str, tail: &str| (subject.strip_prefix(bare) == Some(tail)).then_some(bare);
     let sfx = suffix(name);
     ["min", "deviation"]
         .into_iter()

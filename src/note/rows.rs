@@ -141,14 +141,18 @@ pub(super) fn by_position(w: &mut Writer<'_, '_>, caption: &str, quantities: &[(
             header.push(text("δ, %"));
             align.extend([Align::Centre; 3]);
         }
+        // Each cell's row, found once: [position][quantity].
+        let found: Vec<Vec<_>> = positions
+            .iter()
+            .map(|p| chunk.iter().map(|q| find(q, p)).collect())
+            .collect();
         // One precision per quantity: the decimals its largest value needs, graphical and
         // analytic alike (a drawing's table, issue 45).
-        let decimals: Vec<Option<usize>> = chunk
-            .iter()
-            .map(|q| {
-                let largest = positions
+        let decimals: Vec<Option<usize>> = (0..chunk.len())
+            .map(|k| {
+                let largest = found
                     .iter()
-                    .filter_map(|p| find(q, p))
+                    .filter_map(|cells| cells[k])
                     .flat_map(|(r, _)| [shown(r, r.graphical), shown(r, r.analytic)])
                     .filter(|x| x.is_finite())
                     .fold(0.0f64, |m, x| m.max(x.abs()));
@@ -157,18 +161,15 @@ pub(super) fn by_position(w: &mut Writer<'_, '_>, caption: &str, quantities: &[(
             .collect();
         let body: Vec<Vec<String>> = positions
             .iter()
-            .map(|p| {
+            .zip(&found)
+            .map(|(p, cells)| {
                 let mut row = vec![text(p)];
-                for (q, &d) in chunk.iter().zip(&decimals) {
-                    match find(q, p) {
+                for (cell, &d) in cells.iter().zip(&decimals) {
+                    match cell {
                         Some((r, e)) => {
                             for x in [r.graphical, r.analytic] {
                                 let x = shown(r, value(x, r));
-                                let cell = match x {
-                                    0.0 => "0".into(),
-                                    _ => in_column(x, d.filter(|_| x.is_finite()), DIGITS, lang),
-                                };
-                                row.push(text(&cell));
+                                row.push(text(&column_cell(x, d, DIGITS, lang)));
                             }
                             row.push(text(
                                 &e.map(|e| percent(e, lang)).unwrap_or_else(|| "—".into()),
@@ -334,10 +335,15 @@ fn decimals(largest: f64, digits: usize) -> Option<usize> {
 fn same_decimals(values: [f64; 2], digits: usize, lang: crate::scale::Lang) -> [String; 2] {
     let largest = values[0].abs().max(values[1].abs());
     let d = decimals(largest, digits);
-    values.map(|x| match x {
+    values.map(|x| column_cell(x, d, digits, lang))
+}
+
+/// A value in a column of `d` decimals ([`in_column`]), 0 written «0».
+fn column_cell(x: f64, d: Option<usize>, digits: usize, lang: crate::scale::Lang) -> String {
+    match x {
         0.0 => "0".into(),
         _ => in_column(x, d.filter(|_| x.is_finite()), digits, lang),
-    })
+    }
 }
 
 /// A value in a column of `d` decimals ([`decimals`]); as [`fmt`] to `digits` significant
