@@ -2,7 +2,6 @@
 
 use super::path::{pieces, Map, PathData};
 use super::style::{Mark, Paint, Pen};
-use super::text::{Align, Placed};
 use crate::construct::{Drafting, Item, Names, Role, Step};
 use crate::geom::{Arc, DVec2, Segment, Side};
 use std::f64::consts::TAU;
@@ -219,7 +218,8 @@ pub(crate) fn item_outlines(item: &Item, (role, labelled): (Role, bool), map: Ma
         }
         Item::Dimension { from, to, offset } => {
             let n = (*to - *from).normalize_or_zero().perp() * *offset;
-            lines.extend([(*from, *from + n), (*to, *to + n), (*from + n, *to + n)]);
+            let (start, end, _) = dimension_line(*from + n, *to + n);
+            lines.extend([(*from, *from + n), (*to, *to + n), (start, end)]);
         }
         Item::Angle(a) => chain(&arc_points(a), false, &mut lines),
         Item::Text(_) => {}
@@ -447,6 +447,24 @@ fn smooth(d: &mut PathData, pts: &[DVec2], closed: bool) {
     }
 }
 
+/// Room a dimension line needs between its extension lines for its two arrows, mm.
+pub(super) const ARROWS_INSIDE_MM: f64 = 2.0 * Arrow::THIN.len + 1.0;
+/// How far a short dimension's line runs past each extension line, mm: its arrow and a
+/// little more.
+pub(super) const LINE_PAST_MM: f64 = Arrow::THIN.len + 2.0;
+
+/// The dimension line of a dimension from `a` to `b` (on the line): its ends, and whether
+/// its arrows stand inside, or — too short for them (ГОСТ 2.307: [ρ] = 5 мм drawn 2,5 mm
+/// on the cusp) — outside, pointing in, the line run past each extension line.
+pub(super) fn dimension_line(a: DVec2, b: DVec2) -> (DVec2, DVec2, bool) {
+    let u = (b - a).normalize_or_zero();
+    if a.distance(b) >= ARROWS_INSIDE_MM {
+        (a, b, true)
+    } else {
+        (a - u * LINE_PAST_MM, b + u * LINE_PAST_MM, false)
+    }
+}
+
 /// A linear dimension: extension lines, the dimension line with arrows at both ends.
 fn dimension(map: Map, from: DVec2, to: DVec2, offset: f64, out: &mut Vec<Mark>) {
     let Some(u) = (to - from).try_normalize() else {
@@ -454,71 +472,18 @@ fn dimension(map: Map, from: DVec2, to: DVec2, offset: f64, out: &mut Vec<Mark>)
     };
     let n = u.perp();
     let (a, b) = (from + n * offset, to + n * offset);
+    let (start, end, inside) = dimension_line(a, b);
     // Extension lines run 2 mm past the dimension line (ГОСТ 2.307: 1…5 mm).
     let beyond = n * (2.0 * offset.signum());
     out.extend(stroke(map, Pen::THIN, |d| {
         if offset != 0.0 {
             d.segment(from, a + beyond).segment(to, b + beyond);
         }
-        d.segment(a, b);
+        d.segment(start, end);
     }));
-    out.extend(Arrow::THIN.head(map, a, -u));
-    out.extend(Arrow::THIN.head(map, b, u));
-}
-
-/// Gap between a dimension line and its text, mm.
-pub(crate) const DIMENSION_TEXT_GAP_MM: f64 = 1.0;
-
-/// Where a dimension text is written beside its line: `along` mm from the middle of the
-/// dimension line in the text's reading direction, over the line or under it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct TextSpot {
-    /// Distance from the middle of the dimension line, along it, mm.
-    pub along: f64,
-    /// Under the line (as read) instead of over it.
-    pub under: bool,
-}
-
-impl TextSpot {
-    /// Over the middle of the line: ГОСТ 2.307's place.
-    pub(crate) const MIDDLE: TextSpot = TextSpot {
-        along: 0.0,
-        under: false,
-    };
-}
-
-/// The dimension text at `spot` beside the dimension line, parallel to it, readable, its box
-/// (subscripts included) [`DIMENSION_TEXT_GAP_MM`] clear of it.
-pub(crate) fn dimension_text(
-    map: Map,
-    (from, to, offset): (DVec2, DVec2, f64),
-    text: &str,
-    spot: TextSpot,
-) -> Option<Placed> {
-    let u = (to - from).try_normalize()?;
-    let mid = map.pt((from + to) * 0.5 + u.perp() * offset);
-    let s = map.dir(u);
-    let mut deg = s.y.atan2(s.x).to_degrees();
-    // ГОСТ 2.307: horizontal texts read left to right, vertical ones bottom to top.
-    if deg >= 90.0 {
-        deg -= 180.0;
-    } else if deg < -90.0 {
-        deg += 180.0;
-    }
-    let (sin, cos) = deg.to_radians().sin_cos();
-    let (read, up) = (DVec2::new(cos, sin), DVec2::new(sin, -cos));
-    let mut placed = Placed::new(mid, text, LABEL_HEIGHT_MM, Align::Middle);
-    placed.rotate = deg;
-    // The text's box keeps the gap from the line: over it, the baseline (or the foot of a
-    // subscript); under it, the capitals' top.
-    let own = placed.own_box();
-    let lift = if spot.under {
-        -(DIMENSION_TEXT_GAP_MM - own.min.y)
-    } else {
-        DIMENSION_TEXT_GAP_MM + own.max.y.max(0.0)
-    };
-    placed.at = mid + up * lift + read * spot.along;
-    Some(placed)
+    let out_of = if inside { 1.0 } else { -1.0 };
+    out.extend(Arrow::THIN.head(map, a, -u * out_of));
+    out.extend(Arrow::THIN.head(map, b, u * out_of));
 }
 
 /// An angle mark: the thin arc with an arrowhead at each end, following the arc.
@@ -536,39 +501,4 @@ fn angle_mark(map: Map, a: &Arc, out: &mut Vec<Mark>) {
     let (start, end) = (a.start, a.start + a.sweep);
     out.extend(arrow.head(map, at(end), at(end) - at(end - back)));
     out.extend(arrow.head(map, at(start), at(start) - at(start + back)));
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn dimension_text_is_readable_and_above_its_line() {
-        let text = |dim: (DVec2, DVec2, f64), s: &str, spot: TextSpot| {
-            dimension_text(Map::figure(DVec2::ZERO), dim, s, spot).expect("a text")
-        };
-        let (o, x50) = (DVec2::ZERO, DVec2::new(50.0, 0.0));
-        let t = text((x50, o, 10.0), "50", TextSpot::MIDDLE);
-        // Right to left with the offset below: the text still reads left to right, above.
-        assert_eq!(t.rotate, 0.0);
-        assert!((t.at.x - 25.0).abs() < 1e-9, "{:?}", t.at);
-        assert!((t.bounds().max.y - 9.0).abs() < 1e-9, "{:?}", t.bounds());
-        let v = text((o, DVec2::new(0.0, 40.0), 5.0), "40", TextSpot::MIDDLE);
-        assert_eq!(v.rotate, -90.0);
-        // Slid along and written under the line: the capitals' top the gap under it.
-        let spot = TextSpot {
-            along: 7.0,
-            under: true,
-        };
-        let under = text((x50, o, 10.0), "50", spot);
-        let b = under.bounds();
-        assert!((under.at.x - 32.0).abs() < 1e-9, "{:?}", under.at);
-        assert!(
-            (b.min.y - (10.0 + DIMENSION_TEXT_GAP_MM)).abs() < 1e-9,
-            "{b:?}"
-        );
-        // A subscript's foot keeps the gap over the line too.
-        let z = text((o, x50, 0.0), "z_{1}", TextSpot::MIDDLE).bounds();
-        assert!((z.max.y + DIMENSION_TEXT_GAP_MM).abs() < 1e-9, "{z:?}");
-    }
 }

@@ -28,6 +28,7 @@
 
 pub mod chart;
 pub mod curve;
+mod dimension;
 mod dxf;
 mod fonts;
 mod ink;

@@ -9,7 +9,7 @@ use super::place::{clipped_area, clipped_length, own_distance, written, NEARER_M
 use super::{shape_box, Outline, Request, Shape, LABEL_HEIGHT_MM};
 use crate::construct::{Item, Names};
 use crate::geom::DVec2;
-use crate::plate::items::{dimension_text, TextSpot};
+use crate::plate::dimension::{dimension_text, TextSpot};
 use crate::plate::path::Map;
 use crate::plate::text::{measure, Placed};
 use crate::plate::{Plate, Rect};
