@@ -9,15 +9,14 @@
 use super::markup::{label, sym};
 use super::Writer;
 use crate::words::unit_in;
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 /// What the note has explained so far, and what it left unexplained.
 #[derive(Debug, Default)]
 pub(super) struct Explained {
-    /// The explained symbols' formula markup ([`sym`] of their label markup).
-    known: HashSet<String>,
-    /// The explanations given: a symbol's formula markup and its meaning.
-    given: HashSet<(String, String)>,
+    /// The explained symbols' formula markup ([`sym`] of their label markup), each with the
+    /// meanings it was explained with.
+    known: HashMap<String, HashSet<String>>,
     /// The left side of the last formula, until an explanation reaches it.
     pending: Option<String>,
     /// The left sides of the formulas left unexplained.
@@ -28,7 +27,7 @@ impl Explained {
     /// Whether the formula markup `lhs` shows an explained symbol whole (not the `α` of
     /// `α_w`).
     fn covers(&self, lhs: &str) -> bool {
-        self.known.iter().any(|s| {
+        self.known.keys().any(|s| {
             lhs.match_indices(s.as_str())
                 .any(|(at, _)| !matches!(lhs[at + s.len()..].chars().next(), Some('_' | '^')))
         })
@@ -65,12 +64,8 @@ impl Writer<'_, '_> {
         let mut rows = Vec::new();
         for &(symbol, meaning, unit) in items {
             let math = sym(symbol);
-            self.explained.known.insert(math.clone());
-            if !self
-                .explained
-                .given
-                .insert((math.clone(), meaning.to_owned()))
-            {
+            let meanings = self.explained.known.entry(math.clone()).or_default();
+            if !meanings.insert(meaning.to_owned()) {
                 continue;
             }
             let unit = unit_in(unit, self.lang);
@@ -96,10 +91,10 @@ mod tests {
     #[test]
     fn a_symbol_is_covered_whole_not_by_its_stem() {
         let mut e = Explained::default();
-        e.known.insert(sym("α"));
+        e.known.entry(sym("α")).or_default();
         assert!(!e.covers(&sym("α_{w}")));
         assert!(e.covers(&format!("op(\"inv\") {}", sym("α"))));
-        e.known.insert(sym("α_{w}"));
+        e.known.entry(sym("α_{w}")).or_default();
         assert!(e.covers(&sym("α_{w}")));
         e.pending = Some(sym("y"));
         e.settle();

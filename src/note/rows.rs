@@ -64,10 +64,13 @@ pub(super) fn symbol(w: &Writer<'_, '_>, r: &Row) -> String {
         }
     }
     if w.session.scene().gears.is_some() {
-        if let Ok(g) = w.session.gears() {
-            if g.cut_wheel_of(r).is_some() {
-                return crate::sheets::cut_wheel_quantity(&g, r, w.lang);
-            }
+        if let Some(name) = w
+            .session
+            .gears()
+            .ok()
+            .and_then(|g| crate::sheets::cut_wheel_quantity(&g, r, w.lang))
+        {
+            return name;
         }
     }
     quantity(r.key.symbol, &r.key.subject, w.lang)

@@ -63,7 +63,6 @@ pub(crate) fn dimension_text(
 
 #[cfg(test)]
 mod tests {
-    use super::super::items::{dimension_line, ARROWS_INSIDE_MM, LINE_PAST_MM};
     use super::*;
 
     #[test]
@@ -94,17 +93,5 @@ mod tests {
         // A subscript's foot keeps the gap over the line too.
         let z = text((o, x50, 0.0), "z_{1}", TextSpot::MIDDLE).bounds();
         assert!((z.max.y + DIMENSION_TEXT_GAP_MM).abs() < 1e-9, "{z:?}");
-    }
-
-    #[test]
-    fn a_short_dimension_has_its_arrows_outside() {
-        let (a, b) = (DVec2::ZERO, DVec2::new(2.5, 0.0));
-        let (start, end, inside) = dimension_line(a, b);
-        assert!(!inside);
-        assert!(
-            (start.x + LINE_PAST_MM).abs() < 1e-12 && (end.x - 2.5 - LINE_PAST_MM).abs() < 1e-12
-        );
-        let long = DVec2::new(ARROWS_INSIDE_MM, 0.0);
-        assert_eq!(dimension_line(a, long), (a, long, true));
     }
 }

@@ -448,15 +448,15 @@ fn smooth(d: &mut PathData, pts: &[DVec2], closed: bool) {
 }
 
 /// Room a dimension line needs between its extension lines for its two arrows, mm.
-pub(super) const ARROWS_INSIDE_MM: f64 = 2.0 * Arrow::THIN.len + 1.0;
+const ARROWS_INSIDE_MM: f64 = 2.0 * Arrow::THIN.len + 1.0;
 /// How far a short dimension's line runs past each extension line, mm: its arrow and a
 /// little more.
-pub(super) const LINE_PAST_MM: f64 = Arrow::THIN.len + 2.0;
+const LINE_PAST_MM: f64 = Arrow::THIN.len + 2.0;
 
 /// The dimension line of a dimension from `a` to `b` (on the line): its ends, and whether
 /// its arrows stand inside, or — too short for them (ГОСТ 2.307: [ρ] = 5 мм drawn 2,5 mm
 /// on the cusp) — outside, pointing in, the line run past each extension line.
-pub(super) fn dimension_line(a: DVec2, b: DVec2) -> (DVec2, DVec2, bool) {
+fn dimension_line(a: DVec2, b: DVec2) -> (DVec2, DVec2, bool) {
     let u = (b - a).normalize_or_zero();
     if a.distance(b) >= ARROWS_INSIDE_MM {
         (a, b, true)
@@ -501,4 +501,21 @@ fn angle_mark(map: Map, a: &Arc, out: &mut Vec<Mark>) {
     let (start, end) = (a.start, a.start + a.sweep);
     out.extend(arrow.head(map, at(end), at(end) - at(end - back)));
     out.extend(arrow.head(map, at(start), at(start) - at(start + back)));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_short_dimension_has_its_arrows_outside() {
+        let (a, b) = (DVec2::ZERO, DVec2::new(2.5, 0.0));
+        let (start, end, inside) = dimension_line(a, b);
+        assert!(!inside);
+        assert!(
+            (start.x + LINE_PAST_MM).abs() < 1e-12 && (end.x - 2.5 - LINE_PAST_MM).abs() < 1e-12
+        );
+        let long = DVec2::new(ARROWS_INSIDE_MM, 0.0);
+        assert_eq!(dimension_line(a, long), (a, long, true));
+    }
 }

@@ -325,13 +325,13 @@ fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
                 (Column::Error, 14.0),
             ],
             name: &|r| quantity(r, lang),
-            unit: &|r| match crate::words::drawing_unit(r.unit()).1 {
+            unit: &|r| match crate::words::shown_unit(r.key.symbol).1 {
                 "1" => String::new(),
                 u => unit_in(u, lang),
             },
             // A row's two values at one precision, the larger to four digits.
             value: &|r, x, _| {
-                let k = crate::words::drawing_unit(r.unit()).0;
+                let k = crate::words::shown_unit(r.key.symbol).0;
                 super::digits::Column::of([r.graphical * k, r.analytic * k]).cell(x * k, lang)
             },
             size_mm: TABLE_MM,

@@ -148,20 +148,27 @@ pub(crate) fn tables_rows(g: &crate::gears::GearStudy) -> (Vec<Row>, Vec<Row>) {
 /// cut wheels differ in it (x_min by its z only): the scene's name of the wheel («0», «1p»)
 /// is no word of the sheet's, and a cut wheel's s_a is not the pair's s_a1 (the shaper's
 /// sheet wrote s_a1 for both).
-pub(crate) fn gear_quantity(g: &crate::gears::GearStudy, r: &Row, lang: Lang) -> String {
-    let Some((w, bare)) = g.cut_wheel_of(r) else {
-        return quantity(r, lang);
-    };
+fn gear_quantity(g: &crate::gears::GearStudy, r: &Row, lang: Lang) -> String {
+    cut_wheel_quantity(g, r, lang).unwrap_or_else(|| quantity(r, lang))
+}
+
+/// A cut wheel's row named as [`gear_quantity`] names it; `None` for a row of no cut wheel.
+pub(crate) fn cut_wheel_quantity(
+    g: &crate::gears::GearStudy,
+    r: &Row,
+    lang: Lang,
+) -> Option<String> {
+    let (w, bare) = g.cut_wheel_of(r)?;
     let name = crate::words::symbols::quantity(r.key.symbol, bare, lang);
     let c = &w.generation.cutting;
     let one_z = g.racks.iter().all(|o| o.generation.cutting.z == c.z);
     let x = format!("x = {}", format_sig(c.x, 4, lang));
-    match (bare, one_z) {
+    Some(match (bare, one_z) {
         ("min", true) => name,
         ("min", false) => format!("{name} (z = {})", c.z),
         (_, true) => format!("{name} ({x})"),
         (_, false) => format!("{name} (z = {}, {x})", c.z),
-    }
+    })
 }
 
 /// The unit a row's value is written in and its factor from SI, one per quantity on the

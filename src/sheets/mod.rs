@@ -20,7 +20,7 @@ mod gears_tables_tests;
 mod layout;
 mod train_view;
 pub(crate) use flywheel::verdict as flywheel_verdict;
-pub(crate) use gears::gear_quantity as cut_wheel_quantity;
+pub(crate) use gears::cut_wheel_quantity;
 pub(crate) use kinematics::verdict_lines;
 pub use layout::ScaleKey;
 mod kinematics;

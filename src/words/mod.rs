@@ -106,25 +106,17 @@ pub(crate) const UNIT_WORDS: [(&str, &str); 14] = [
     ("kW", "кВт"),
 ];
 
-/// The unit a value is shown in on a sheet and in the note's tables, with the factor to it
-/// from its SI unit `si`: a length in millimetres (a drawing's unit: `4,975 мм`, not
-/// `0,004975 м`), an angle in degrees (the protractor's: `29,14°`, not `0,5086 рад`), every
-/// other quantity in its SI unit.
-pub(crate) fn drawing_unit(si: &'static str) -> (f64, &'static str) {
-    match si {
-        "m" => (1e3, "mm"),
-        "rad" => (180.0 / std::f64::consts::PI, "deg"),
-        u => (1.0, u),
-    }
-}
-
 /// The unit a row of `symbol` is shown in on a sheet and in the note's tables, with the
-/// factor to it from SI: [`drawing_unit`], but a drawn envelope's deviation from the exact
-/// one in micrometres (each wheel's, whatever its size: `0,5690 мкм`, not `5,69·10⁻⁴ мм`).
+/// factor to it from SI: a length in millimetres (a drawing's unit: `4,975 мм`, not
+/// `0,004975 м`), an angle in degrees (the protractor's: `29,14°`, not `0,5086 рад`), a drawn
+/// envelope's deviation from the exact one in micrometres (each wheel's, whatever its size:
+/// `0,5690 мкм`, not `5,69·10⁻⁴ мм`), every other quantity in its SI unit.
 pub(crate) fn shown_unit(symbol: Symbol) -> (f64, &'static str) {
-    match symbol {
-        Symbol::EnvelopeDeviation => (1e6, "um"),
-        s => drawing_unit(s.unit()),
+    match (symbol, symbol.unit()) {
+        (Symbol::EnvelopeDeviation, _) => (1e6, "um"),
+        (_, "m") => (1e3, "mm"),
+        (_, "rad") => (180.0 / std::f64::consts::PI, "deg"),
+        (_, u) => (1.0, u),
     }
 }
 

@@ -22,6 +22,12 @@ fn plates(name: &str, lang: Lang) -> Vec<Plate> {
     tmm::build(&session, PlateKind::Cam, lang).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
+/// The explanatory note of scene `name` in Russian, read to `drafting`.
+fn note_of(name: &str, drafting: Drafting) -> tmm::note::Note {
+    let s = crate::support::scene(name);
+    tmm::note::compose(&Session::new(&s, drafting), Lang::Ru).expect("note")
+}
+
 /// Every text line, table cell and label of `plates`.
 fn words(plates: &[Plate]) -> Vec<String> {
     let mut out = Vec::new();
@@ -52,9 +58,7 @@ fn the_sources_lost_diagrams_are_told_in_the_note_not_on_the_sheet() {
             !on_sheet.iter().any(|w| w.contains("утеряны")),
             "{name}: the source's remark is on the sheet"
         );
-        let s = crate::support::scene(name);
-        let session = Session::new(&s, Drafting::EXACT);
-        let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+        let note = note_of(name, Drafting::EXACT);
         assert!(
             note.source.contains("в источнике утеряны"),
             "{name}: the note does not say the source lost its diagrams"
@@ -259,9 +263,7 @@ fn the_note_names_the_pressure_angle_as_the_sheet_does() {
 /// does not bind (PZ5's return reached 37° «нарушено» beside «the extreme keeps the limit»).
 #[test]
 fn the_note_judges_the_angle_only_where_it_binds() {
-    let s = crate::support::scene("cam-pz5");
-    let session = Session::new(&s, Drafting::HAND);
-    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    let note = note_of("cam-pz5", Drafting::HAND);
     assert!(!note.source.contains("нарушено"), "a return point judged");
     assert!(note.source.contains("выполнено"), "no rise point judged");
 }
@@ -270,9 +272,7 @@ fn the_note_judges_the_angle_only_where_it_binds() {
 /// (the note said «на всём цикле» of an extreme taken on the rise).
 #[test]
 fn the_note_says_why_a_point_has_no_verdict_and_where_the_extreme_is() {
-    let s = crate::support::scene("cam-pz5");
-    let session = Session::new(&s, Drafting::HAND);
-    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    let note = note_of("cam-pz5", Drafting::HAND);
     assert!(
         note.source.contains("Прочерк в графе допустимости"),
         "the dash unexplained"
@@ -286,9 +286,7 @@ fn the_note_says_why_a_point_has_no_verdict_and_where_the_extreme_is() {
         "the whole cycle's extreme"
     );
     // Under form closure the limit binds on the whole cycle: no dash, the cycle's extreme.
-    let s = crate::support::scene("cam-central");
-    let session = Session::new(&s, Drafting::HAND);
-    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    let note = note_of("cam-central", Drafting::HAND);
     assert!(!note.source.contains("Прочерк в графе допустимости"));
 }
 
@@ -297,9 +295,7 @@ fn the_note_says_why_a_point_has_no_verdict_and_where_the_extreme_is() {
 /// degrees, in the table of their own.
 #[test]
 fn the_notes_cam_tables_show_lengths_in_mm_at_one_precision() {
-    let s = crate::support::scene("cam-pz5");
-    let session = Session::new(&s, Drafting::HAND);
-    let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+    let note = note_of("cam-pz5", Drafting::HAND);
     let text: String = tmm::note::to_text(&note)
         .expect("typeset")
         .split_whitespace()
@@ -327,9 +323,7 @@ fn the_analogues_scales_have_the_notes_units_on_the_sheet() {
                 .unwrap_or_else(|| panic!("{name}: no {mu}"));
             assert!(caption.contains(unit), "{name}: «{caption}»");
         }
-        let s = crate::support::scene(name);
-        let session = Session::new(&s, Drafting::EXACT);
-        let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+        let note = note_of(name, Drafting::EXACT);
         assert!(
             note.source.contains("м/(рад·мм)"),
             "{name}: the note's unit"
