@@ -14,6 +14,39 @@ use std::f64::consts::TAU;
 /// Abscissa of one crank turn on a diagram when μ_φ is not given, mm.
 const TURN_MM: f64 = 240.0;
 
+/// The size the chart is drawn at where the scene leaves a scale or a pole distance to it:
+/// one crank turn's abscissa (when μ_φ is free) and a diagram's ordinates (when μ_S, H₁ or H₂
+/// is free), mm.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ChartSize {
+    /// One crank turn along φ, mm.
+    pub turn_mm: f64,
+    /// A diagram's height, mm.
+    pub ordinate_mm: f64,
+}
+
+impl ChartSize {
+    /// The textbook's chart: 2π on 240 mm, each diagram about 35 mm tall.
+    pub const TEXTBOOK: Self = Self {
+        turn_mm: TURN_MM,
+        ordinate_mm: DIAGRAM_MM,
+    };
+
+    /// The textbook's chart drawn `along` times as long and `up` times as tall.
+    pub fn times(along: f64, up: f64) -> Self {
+        Self {
+            turn_mm: TURN_MM * along,
+            ordinate_mm: DIAGRAM_MM * up,
+        }
+    }
+}
+
+impl Default for ChartSize {
+    fn default() -> Self {
+        Self::TEXTBOOK
+    }
+}
+
 /// The displacement diagram and its two graphical derivatives.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagrams {
@@ -127,16 +160,17 @@ pub(super) const POLE_DIMENSION_MM: f64 = 7.0;
 /// The pole's label: up and left of the pole, away from the rays (which run right).
 pub(super) const POLE_LABEL: DVec2 = DVec2::new(-0.6, 1.0);
 
-/// The chart's scales: μ_S and μ_φ as given, or chosen for the displacement's span.
-fn chart_scales(spec: &KinematicsSpec, s: &[f64]) -> Result<Scales, KinError> {
+/// The chart's scales: μ_S and μ_φ as given, or chosen for the displacement's span and the
+/// chart's `size`.
+fn chart_scales(spec: &KinematicsSpec, s: &[f64], size: ChartSize) -> Result<Scales, KinError> {
     let span = super::peak(s.iter().copied());
     let y = match spec.scale_s {
         Some(s) => s,
-        None => super::round_scale(span.max(1e-9), DIAGRAM_MM, Quantity::Length)?,
+        None => super::round_scale(span.max(1e-9), size.ordinate_mm, Quantity::Length)?,
     };
     let x = match spec.scale_phi {
         Some(s) => s,
-        None => Scale::new(TAU / TURN_MM, Quantity::Angle).ok_or(KinError::NoScale {
+        None => Scale::new(TAU / size.turn_mm, Quantity::Angle).ok_or(KinError::NoScale {
             quantity: Quantity::Angle,
             value: TAU,
         })?,
@@ -145,12 +179,12 @@ fn chart_scales(spec: &KinematicsSpec, s: &[f64]) -> Result<Scales, KinError> {
 }
 
 /// S(φ₁) of the charted point read off the plan at the numbered positions (at μ_l =
-/// `scale_l`), its two graphical derivatives, and their rows. `None` when the mechanism has
-/// no point to chart or fewer than three numbered positions.
+/// `scale_l`), its two graphical derivatives at the chart's `size`, and their rows. `None`
+/// when the mechanism has no point to chart or fewer than three numbered positions.
 pub fn diagrams(
     plan: &PositionPlan,
     outputs: &[Output],
-    spec: &KinematicsSpec,
+    (spec, size): (&KinematicsSpec, ChartSize),
     scale_l: Scale,
     w1: f64,
     ctx: &Context,
@@ -189,9 +223,15 @@ pub fn diagrams(
         })
         .collect();
     let src = turn_diagram(s.clone()).map_err(|e| fail("S", e))?;
-    let scales = chart_scales(spec, &s)?;
-    let (h1, mu1) = pole_and_scale(spec.pole_h1, &src, scales, DIAGRAM_MM, Quantity::Length)
-        .map_err(|e| fail("dS/dφ", e))?;
+    let scales = chart_scales(spec, &s, size)?;
+    let (h1, mu1) = pole_and_scale(
+        spec.pole_h1,
+        &src,
+        scales,
+        size.ordinate_mm,
+        Quantity::Length,
+    )
+    .map_err(|e| fail("dS/dφ", e))?;
     // The textbook's stack: S on top, dS/dφ under it, d²S/dφ² under that; the second
     // differentiation's chords are drawn on the dS/dφ curve itself (its figure's source axes
     // coincide with the first figure's result axes). Each diagram is placed from the
@@ -226,8 +266,14 @@ pub fn diagrams(
         x: scales.x,
         y: mu1,
     };
-    let (h2, mu2) = pole_and_scale(spec.pole_h2, &d1, scales2, DIAGRAM_MM, Quantity::Length)
-        .map_err(|e| fail("d²S/dφ²", e))?;
+    let (h2, mu2) = pole_and_scale(
+        spec.pole_h2,
+        &d1,
+        scales2,
+        size.ordinate_mm,
+        Quantity::Length,
+    )
+    .map_err(|e| fail("d²S/dφ²", e))?;
     let (d2_lo, d2_hi) = ordinates(&d1, scales2, h2, mu2, ctx).map_err(|e| fail("d²S/dφ²", e))?;
     let mut rec2 = Recorder::in_context("d²S/dφ²", mu2, ctx);
     let lay2 = Layout::new(DVec2::ZERO, DVec2::new(0.0, d1_lo - DIAGRAM_GAP - d2_hi))

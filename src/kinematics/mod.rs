@@ -17,7 +17,7 @@ mod rocker;
 mod table;
 mod verdict;
 
-pub use diagrams::{diagrams, Diagrams};
+pub use diagrams::{diagrams, ChartSize, Diagrams};
 pub use hodograph::{hodograph, hodograph_point};
 pub use plans::{
     acceleration, acceleration_indices, drawn_points, position_indices, velocity, Velocity,

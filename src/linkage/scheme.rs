@@ -53,12 +53,14 @@ pub fn structure_figure(
     draw_guides(&mut rec, &guides);
     draw_pivots(&mut rec, prog, &whole);
     for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
-        let id = rec.draw(
-            format!("point {name}"),
-            Item::Text(whole.p[k]),
-            Role::Dimension,
-            &[],
-        );
+        // A point on one link only (a centre of mass, a point of a guide's direction) is a
+        // dot of its own; a joint's letter names the hinge or the block drawn there.
+        let (item, role) = if prog.links_of(k).len() < 2 {
+            (Item::Point(whole.p[k]), Role::Given)
+        } else {
+            (Item::Text(whole.p[k]), Role::Dimension)
+        };
+        let id = rec.draw(format!("point {name}"), item, role, &[]);
         rec.label(
             id,
             name.clone(),

@@ -7,7 +7,7 @@ use super::*;
 /// The kinematic study's part of the report.
 pub(super) const PART: Part = |session, rep| session.report_kinematics(rep);
 use crate::check::notes::KinematicsNote;
-use crate::kinematics;
+use crate::kinematics::{self, ChartSize};
 
 /// The scales of the kinematic study, all chosen: μ_l of the plan of positions, μ_v and μ_a
 /// of the plans, and the displacement chart's scales and poles (`None`: chosen for the
@@ -35,6 +35,8 @@ pub struct ChartScales {
     pub h1: Option<f64>,
     /// H₂, mm.
     pub h2: Option<f64>,
+    /// The size the chart chooses a free scale or pole distance for.
+    pub size: ChartSize,
 }
 
 /// The kinematic study of a scene at one set of scales, assembled from the session's parts.
@@ -246,7 +248,14 @@ impl<'s> Session<'s> {
                 pole_h2: chart.h2,
                 ..self.spec().clone()
             };
-            let d = kinematics::diagrams(&plan, &m.outputs, &spec, l, self.w1()?, &self.ctx()?)?;
+            let d = kinematics::diagrams(
+                &plan,
+                &m.outputs,
+                (&spec, chart.size),
+                l,
+                self.w1()?,
+                &self.ctx()?,
+            )?;
             Ok(d.map(Arc::new))
         })
     }

@@ -7,12 +7,13 @@
 //! plans of a kind together `PLANS_AREA_MM2`). A study whose drawings cannot share one sheet
 //! with its tables takes two ([`KinSheets`]); its free μ_v and μ_a are then made finer while
 //! the plans fit the room their sheet gives them (`TWO_SHEET_PLAN_ROOM`, the first sheet's
-//! field beside the plan of positions for the velocity plans).
+//! field beside the plan of positions for the velocity plans), and the displacement chart is
+//! drawn as large as the second sheet's share allows (`LARGER_CHARTS`).
 
 use super::*;
 use crate::construct::fit::{finest_fitting, fit_scale, overflow, Extent, LABEL_MARGIN};
 use crate::geom::DVec2;
-use crate::kinematics::{self, drawn_points};
+use crate::kinematics::{self, drawn_points, ChartSize};
 use crate::linkage::{guide_ends, GUIDE_MARGIN_MM};
 use crate::plate::Sheet;
 use crate::scale::Quantity;
@@ -119,6 +120,13 @@ const ONE_SHEET_SHARE: f64 = 0.5;
 /// The share of a field the blocks of a sheet take once laid out: the gaps between them and
 /// the ragged ends of their rows take the rest.
 const LAID_OUT_SHARE: f64 = 0.75;
+
+/// The sizes, against the textbook's (along φ, up), the chart may be drawn at on the second of
+/// two sheets, the largest first: 2π on 360 mm (1° a millimetre) with the diagrams 87,5, 70 or
+/// 52,5 mm tall; 2π on 300 mm, 49 mm tall. Each is taller against its length than the
+/// textbook's, which steepens its chords and with them the rays its poles send: a dozen rays
+/// within a few degrees of one another print black at the pole.
+const LARGER_CHARTS: [(f64, f64); 4] = [(1.5, 2.5), (1.5, 2.0), (1.5, 1.5), (1.25, 1.4)];
 
 /// The field of a velocity or acceleration plan on a study of two sheets, mm: a sheet shared
 /// with one other drawing (the plan of positions; the diagrams) holds plans up to a little
@@ -240,7 +248,7 @@ impl<'s> Session<'s> {
                 l: self.scale_l()?,
                 v,
                 a,
-                chart: self.chart_scales(),
+                chart: self.sheet_chart(a)?,
             })
         })
     }
@@ -278,7 +286,7 @@ impl<'s> Session<'s> {
         })
     }
 
-    /// The displacement chart's scales as the scene gives them.
+    /// The displacement chart's scales as the scene gives them, at the textbook's size.
     fn chart_scales(&self) -> ChartScales {
         let spec = self.spec();
         ChartScales {
@@ -286,6 +294,7 @@ impl<'s> Session<'s> {
             phi: spec.scale_phi,
             h1: spec.pole_h1,
             h2: spec.pole_h2,
+            size: ChartSize::TEXTBOOK,
         }
     }
 
@@ -336,11 +345,18 @@ impl<'s> Session<'s> {
         let own = self.own_scale_positions()?;
         let velocity = common_plans(&all, &own);
         let acceleration = common_plans(&self.acceleration_positions()?, &own);
-        // No diagrams when there is nothing to chart or they are refused (the sheet says
-        // why in a line).
-        let charted =
-            super::kinematics::refusable(self.diagrams(l, self.chart_scales()), &mut Vec::new())?;
-        let diagrams = charted
+        Ok(positions.x * positions.y
+            + plans_area(&poses, &velocity, w1, PlanKind::Velocity, v)
+            + plans_area(&poses, &acceleration, w1, PlanKind::Acceleration, a)
+            + self.diagrams_mm2(l, self.chart_scales())?)
+    }
+
+    /// The labelled area of the displacement diagrams at `chart`, constructed as the sheet
+    /// draws them, mm²: none when there is nothing to chart or they are refused (the sheet
+    /// says why in a line).
+    fn diagrams_mm2(&self, l: Scale, chart: ChartScales) -> Result<f64, StudyError> {
+        let charted = super::kinematics::refusable(self.diagrams(l, chart), &mut Vec::new())?;
+        Ok(charted
             .and_then(|d| {
                 let second = d.second_figure.translated(d.second_at).bounds()?;
                 let (lo, hi) = d.first_figure.bounds()?;
@@ -349,11 +365,32 @@ impl<'s> Session<'s> {
             .map_or(0.0, |(lo, hi)| {
                 let s = hi - lo + DVec2::splat(LABEL_MARGIN);
                 s.x * s.y
-            });
-        Ok(positions.x * positions.y
-            + plans_area(&poses, &velocity, w1, PlanKind::Velocity, v)
-            + plans_area(&poses, &acceleration, w1, PlanKind::Acceleration, a)
-            + diagrams)
+            }))
+    }
+
+    /// The chart the sheets draw: the scene's scales at the textbook's size; on a study of two
+    /// sheets, the largest of [`LARGER_CHARTS`] at which the second sheet's drawings (the
+    /// common acceleration plans at `a` and the diagrams) take at most [`ONE_SHEET_SHARE`] of
+    /// its field, as the first sheet's do — the room the velocity plans left there.
+    fn sheet_chart(&self, a: Scale) -> Result<ChartScales, StudyError> {
+        let textbook = self.chart_scales();
+        if self.kin_sheets()? == KinSheets::One {
+            return Ok(textbook);
+        }
+        let (poses, w1, l) = (self.poses()?, self.w1()?, self.scale_l()?);
+        let own = self.own_scale_positions()?;
+        let acceleration = common_plans(&self.acceleration_positions()?, &own);
+        let plans = plans_area(&poses, &acceleration, w1, PlanKind::Acceleration, a);
+        for (along, up) in LARGER_CHARTS {
+            let chart = ChartScales {
+                size: ChartSize::times(along, up),
+                ..textbook
+            };
+            if plans + self.diagrams_mm2(l, chart)? <= ONE_SHEET_SHARE * a1_field_mm2() {
+                return Ok(chart);
+            }
+        }
+        Ok(textbook)
     }
 
     /// The field a single plan of `kind` has: `VECTOR_PLAN_ROOM`, or on two sheets

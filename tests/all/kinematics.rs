@@ -576,3 +576,36 @@ fn a_verdict_of_one_link_or_none_reads_in_its_number() {
         }
     }
 }
+
+/// The displacement chart is drawn as large as its sheet allows: on the second of two sheets
+/// the six-bar's (no chart scale given) takes 2π on 360 mm, the V engine's (two large
+/// acceleration plans beside it) 2π on 300 mm; a one-sheet study keeps the textbook's 240 mm,
+/// and the shaper's scene fixes μ_φ (the seed's; its diagrams go on a second sheet only when
+/// the first sheet's packing leaves them no room).
+#[test]
+fn the_chart_takes_the_room_of_its_sheet() {
+    use std::f64::consts::TAU;
+    use tmm::study::{KinSheets, Session};
+    for (scene, sheets, turn_mm) in [
+        ("six-bar", KinSheets::Two, Some(360.0)),
+        ("v-engine", KinSheets::Two, Some(300.0)),
+        ("slider-crank", KinSheets::One, Some(240.0)),
+        ("shaper", KinSheets::One, None),
+    ] {
+        let s =
+            tmm::scene::load(&root().join(format!("constructions/{scene}.toml"))).expect("scene");
+        let session = Session::new(&s, Drafting::EXACT);
+        assert_eq!(session.kin_sheets().expect("sheets"), sheets, "{scene}");
+        let sc = session.kin_scales().expect("scales");
+        let d = session
+            .kinematics(&sc)
+            .expect("study")
+            .diagrams
+            .expect("diagrams");
+        let phi = d.scales.x.value();
+        match turn_mm {
+            Some(mm) => assert!((TAU / phi - mm).abs() < 1e-9, "{scene}: {} mm", TAU / phi),
+            None => assert_eq!(Some(d.scales.x), s.kinematics.scale_phi, "{scene}"),
+        }
+    }
+}
