@@ -178,6 +178,36 @@ fn chart_scales(spec: &KinematicsSpec, s: &[f64], size: ChartSize) -> Result<Sca
     Ok(Scales { x, y })
 }
 
+/// S of point `k` read off the plan of positions (at μ_l = `scale_l`) at the `numbered`
+/// positions: the distance from the start of the working stroke (position 1 when no extreme
+/// is drawn), positive along the working stroke; and the figure of the segments read, each
+/// in the group its position is drawn in, m.
+fn read_displacement(
+    plan: &PositionPlan,
+    numbered: &[(usize, &crate::linkage::PlanPosition)],
+    (k, dir): (usize, DVec2),
+    scale_l: Scale,
+    ctx: &Context,
+) -> (Vec<f64>, Figure) {
+    let mut reader = Recorder::in_context("S", scale_l, ctx);
+    let (p1, read_dir) = match stroke_ends(plan) {
+        Some((a, b)) => {
+            let (pa, pb) = (plan.positions[a].built.p[k], plan.positions[b].built.p[k]);
+            (pa, dir * (pb - pa).dot(dir).signum())
+        }
+        None => (numbered[0].1.built.p[k], dir),
+    };
+    let s = numbered
+        .iter()
+        .map(|&(i, p)| {
+            reader.set_group(i as u32 + 1);
+            let d = p.built.p[k] - p1;
+            reader.measure(p1, p.built.p[k]).value * d.dot(read_dir).signum()
+        })
+        .collect();
+    (s, reader.finish())
+}
+
 /// S(φ₁) of the charted point read off the plan at the numbered positions (at μ_l =
 /// `scale_l`), its two graphical derivatives at the chart's `size`, and their rows. `None`
 /// when the mechanism has no point to chart or fewer than three numbered positions.
@@ -202,26 +232,7 @@ pub fn diagrams(
         what: format!("{what} of {name}"),
         error,
     };
-    // S is read off the plan of positions: the distance from the start of the working stroke
-    // (position 1 when no extreme is drawn), positive along the working stroke.
-    let mut reader = Recorder::in_context("S", scale_l, ctx);
-    let ends = stroke_ends(plan);
-    let (p1, read_dir) = match ends {
-        Some((a, b)) => {
-            let (pa, pb) = (plan.positions[a].built.p[k], plan.positions[b].built.p[k]);
-            (pa, dir * (pb - pa).dot(dir).signum())
-        }
-        None => (numbered[0].1.built.p[k], dir),
-    };
-    let s: Vec<f64> = numbered
-        .iter()
-        .map(|&(i, p)| {
-            // The group the plan of positions draws this position in.
-            reader.set_group(i as u32 + 1);
-            let d = p.built.p[k] - p1;
-            reader.measure(p1, p.built.p[k]).value * d.dot(read_dir).signum()
-        })
-        .collect();
+    let (s, reader) = read_displacement(plan, &numbered, (k, dir), scale_l, ctx);
     let src = turn_diagram(s.clone()).map_err(|e| fail("S", e))?;
     let scales = chart_scales(spec, &s, size)?;
     let (h1, mu1) = pole_and_scale(
@@ -327,7 +338,7 @@ pub fn diagrams(
         first,
         second,
         s,
-        readings: reader.finish(),
+        readings: reader,
         rows,
     }))
 }

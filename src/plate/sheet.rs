@@ -306,21 +306,21 @@ fn thin_lines() -> Vec<Line> {
 /// A cell of the block: (x0, y0, x1, y1) in block mm.
 type Cell = (f64, f64, f64, f64);
 
-/// Text in a cell, vertically centred, shrunk when it would not fit the cell's width.
-fn in_cell(cell: Cell, text: &str, height: f64, align: Align) -> Placed {
-    let (x0, y0, x1, y1) = cell;
+/// Where a text stands in a cell (its capitals' centre, vertically centred) and the width
+/// it may take.
+fn cell_anchor((x0, y0, x1, y1): Cell, align: Align) -> (DVec2, f64) {
     let x = match align {
         Align::Start => x0 + 1.0,
         Align::Middle => (x0 + x1) * 0.5,
         Align::End => x1 - 1.0,
     };
-    fitted(
-        DVec2::new(x, (y0 + y1) * 0.5),
-        text,
-        height,
-        x1 - x0 - 3.0,
-        align,
-    )
+    (DVec2::new(x, (y0 + y1) * 0.5), x1 - x0 - 3.0)
+}
+
+/// Text in a cell, vertically centred, shrunk when it would not fit the cell's width.
+fn in_cell(cell: Cell, text: &str, height: f64, align: Align) -> Placed {
+    let (at, width) = cell_anchor(cell, align);
+    fitted(at, text, height, width, align)
 }
 
 /// A long text in a cell: on one line while fitting it keeps at least `min_height`, else
@@ -346,8 +346,18 @@ fn wrapped_in_cell(
             let (a, b) = (text[..i].trim(), text[i..].trim());
             let h = (y1 - y0) / 4.0;
             let line_h = height.min((y1 - y0) / 2.6);
-            out.push(in_cell((x0, y0, x1, y0 + 2.0 * h), a, line_h, align));
-            out.push(in_cell((x0, y0 + 2.0 * h, x1, y1), b, line_h, align));
+            // Both lines narrowed alike, as the longer needs: one size, one condensing.
+            let natural = |line: &str| super::text::approx_width(line, line_h);
+            let ratio = (width / natural(a).max(natural(b))).min(1.0);
+            for (line, (top, bottom)) in [(a, (y0, y0 + 2.0 * h)), (b, (y0 + 2.0 * h, y1))] {
+                let (at, _) = cell_anchor((x0, top, x1, bottom), align);
+                let placed = Placed::centred(at, line, line_h, align);
+                out.push(if ratio < 1.0 {
+                    placed.narrowed(ratio)
+                } else {
+                    placed
+                });
+            }
         }
         _ => out.push(in_cell((x0, y0, x1, y1), text, height, align)),
     }

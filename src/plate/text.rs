@@ -257,16 +257,23 @@ impl Placed {
 
     /// Fit the text into `width`: condensed down to [`MIN_CONDENSE`], then made smaller.
     /// The height is reduced about the vertical centre of the capitals.
-    pub(crate) fn fit(mut self, width: f64) -> Self {
+    pub(crate) fn fit(self, width: f64) -> Self {
         let natural = approx_width(&self.markup, self.height);
         if !(natural > width && width > 0.0) {
             return self;
         }
-        let ratio = width / natural;
+        self.narrowed(width / natural)
+    }
+
+    /// The text drawn `ratio` (< 1) of its natural width: condensed down to
+    /// [`MIN_CONDENSE`], then made smaller about the vertical centre of the capitals (lines
+    /// narrowed by one ratio keep one height and one condensing).
+    pub(crate) fn narrowed(mut self, ratio: f64) -> Self {
+        let natural = approx_width(&self.markup, self.height);
         let k = ratio / ratio.max(MIN_CONDENSE);
         self.at.y -= self.height * (1.0 - k) * 0.5;
         self.height *= k;
-        self.length = Some(width);
+        self.length = Some(natural * ratio);
         self
     }
     /// The box the text covers on the sheet ([`measure`] aligned, condensed to `length`

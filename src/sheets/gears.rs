@@ -545,6 +545,9 @@ impl Filling {
     /// the closing's lines, the assembly of the satellites.
     fn train(&mut self, t: &crate::gears::TrainStudy) {
         let lang = self.lang;
+        // A sheet of a train alone is drawn at its triangles' μ_l (the title block read 1:1
+        // over the differential's 2:1).
+        self.plan.get_or_insert(t.triangles.scale_l);
         self.blocks
             .push(super::train_view::triangles_block(t, lang));
         let tr_ = &t.spec.train;

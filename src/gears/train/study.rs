@@ -126,7 +126,8 @@ pub fn train_study(
 impl TrainStudy {
     /// `u_<in>_<out>` by formula (the stages or the differential's formula against Willis)
     /// and by the triangles, the required one by formula; with n_input, ω of every shaft
-    /// read off the plan of angular velocities.
+    /// read off the plan of angular velocities but the given ones (the inputs, the fixed
+    /// shaft).
     pub fn rows(&self) -> Vec<crate::check::Row> {
         use crate::check::{Method, Symbol};
         use rows::row;
@@ -158,7 +159,12 @@ impl TrainStudy {
         if self.spec.n_input.is_some() {
             let w_in = omega_in(&self.spec);
             let scale = self.willis.iter().fold(0.0_f64, |a, w| a.max(w.abs())) * w_in.abs();
-            for (k, name) in t.shafts.iter().enumerate() {
+            // A given ω — an input's, the fixed shaft's zero — is what the plan is drawn
+            // from, not a result read off it.
+            let given = |k: usize| {
+                k == t.input || t.fixed == Some(k) || t.second.is_some_and(|(s, _)| s == k)
+            };
+            for (k, name) in t.shafts.iter().enumerate().filter(|(k, _)| !given(*k)) {
                 out.push(row(
                     Symbol::AngularVelocity,
                     name,
