@@ -311,12 +311,14 @@ fn circles_and_involute(
             ("f", pair.rf[i]),
         ];
         for (k, (sub, r)) in circles.into_iter().enumerate() {
-            rec.draw(
-                "a circle of the wheel",
-                circle(c, mm(r)),
-                Role::Construction,
-                &[],
-            );
+            // The pitch circle thin dash-dot (ГОСТ 2.402), as the operating circle and the
+            // rack-cut wheel's pitch circle are.
+            let role = if sub.is_empty() {
+                Role::Axis
+            } else {
+                Role::Construction
+            };
+            rec.draw("a circle of the wheel", circle(c, mm(r)), role, &[]);
             radius(rec, c, mm(r), (i, k), &format!("r_{{{sub}{}}}", i + 1));
         }
     }

@@ -10,18 +10,18 @@ use crate::scale::Lang;
 
 /// The Russian textbooks' subscripts (and superscripts) with their Ukrainian and English
 /// spellings. The Ukrainian course writes its own where its textbooks do (ін — інерції, зр —
-/// зрівноважувальний, зв — зведений, пк — корисного опору, л — ланок), the Russian ones
-/// where the word is the same; the English course notation takes the initial of the
+/// зрівноважувальний, зв — зведений, пк — корисного опору, о — опору, р — рушійних, л —
+/// ланок), the Russian ones where the word is the same; the English course notation takes the initial of the
 /// English word.
 const SUBSCRIPTS: &[(&str, &str, &str)] = &[
     // инерции: the inertia force and moment, F_i, M_i.
     ("и", "ін", "i"),
     // полезного сопротивления: the useful resistance, F_r (as the resisting moment M_r).
     ("пс", "пк", "r"),
-    // сопротивления: the resisting moment and its work, M_r, A_r.
-    ("с", "с", "r"),
-    // движущих сил: the driving moment, its work, a gas force, M_d, A_d, F_d.
-    ("д", "д", "d"),
+    // сопротивления (сил опору): the resisting moment and its work, M_r, A_r.
+    ("с", "о", "r"),
+    // движущих сил (рушійних сил): the driving moment, its work, a gas force, M_d, A_d, F_d.
+    ("д", "р", "d"),
     // уравновешивающий: the balancing force and moment, and a rotor's correcting masses,
     // F_b, M_b, m_b.
     ("у", "зр", "b"),
