@@ -155,6 +155,18 @@ pub(super) fn work(
         }
         delta_t.push(sgn * read_up(&mut rec, pc, pd) * mu_a.value());
     }
+    // The curve named where it stands farthest from the line, on its side away from it (the
+    // two meet at 2π, where the line's name stands).
+    let apart = |i: usize| mu_a.to_mm(a_c[i]) - end.y * i as f64 / n as f64;
+    if let Some(i) = (0..a_c.len()).max_by(|&i, &j| apart(i).abs().total_cmp(&apart(j).abs())) {
+        let at = DVec2::new(run * i as f64, mu_a.to_mm(a_c[i]));
+        rec.label(
+            integral.curve,
+            vary[1],
+            at,
+            DVec2::new(0.0, apart(i).signum()),
+        );
+    }
     Ok(Work {
         figure: rec.finish(),
         a_c,
