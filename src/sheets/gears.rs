@@ -71,11 +71,17 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     } = sheet;
     blocks.append(&mut details);
     lines.push(String::new());
-    if g.rows_by_part()[1]
-        .iter()
-        .any(|r| r.key.symbol == Symbol::ShiftCoefficient && r.method == Method::Formula)
-    {
+    let computed = |symbol, method| {
+        g.rows_by_part()[1]
+            .iter()
+            .any(|r| r.key.symbol == symbol && r.method == method)
+    };
+    if computed(Symbol::ShiftCoefficient, Method::Formula) {
         lines.push(GearText::XMinRule.get(lang).into());
+    }
+    // The deviation's rows stand in the computed table: what they measure, once.
+    if computed(Symbol::EnvelopeDeviation, Method::Envelope) {
+        lines.push(GearText::EnvelopeRule.get(lang).into());
     }
     lines.push(super::drafting_line(
         session.drafting(),

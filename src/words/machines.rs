@@ -150,6 +150,11 @@ catalogue! {
             "x_{min}: обчислено за (17 − z)/17 (1/17 ≈ sin²20°/2, округлення), перевірка — точне h_{a}* − z·sin²α/2",
             "x_{min}: computed by (17 − z)/17 (1/17 ≈ sin²20°/2, rounded), check — the exact h_{a}* − z·sin²α/2"
         ),
+        EnvelopeRule => (
+            "δ_{огиб}: отклонение профиля, проведённого лекалом, от точной огибающей",
+            "δ_{обв}: відхилення профілю, проведеного лекалом, від точної обвідної",
+            "δ_{env}: how far the profile drawn with the French curve departs from the exact envelope"
+        ),
         OtherRoute => ("проверка", "перевірка", "check"),
         ChosenBy => (
             "K: x_1, x_2 выбраны на блокирующем контуре по критерию:",
