@@ -397,6 +397,9 @@ pub(super) fn draw_plan(
     }
 }
 
+/// The shortest arc θ is marked with, mm: below it the crank's extremes are drawn in line.
+const THETA_ARC_MM: f64 = 1.0;
+
 fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition], ex: &Extremes) {
     let find = |phi: f64| {
         positions.iter().find(|p| {
@@ -462,6 +465,11 @@ fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition],
             (b.built.p[prog.pin] - c).normalize_or_zero(),
         );
         let r = b.built.p[prog.pin].distance(c) * 0.7;
+        // No angle to mark where the two extremes are in line (θ = 0: the V engine's
+        // central cylinders; the text states it): an arc of no length under its letter.
+        if ua.angle_to(ub).abs() * r < THETA_ARC_MM {
+            return;
+        }
         let id = rec.draw(
             "angle θ between the crank's extreme positions",
             Item::Angle(Arc::between(c, r, ua, ub)),

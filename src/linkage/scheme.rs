@@ -86,7 +86,14 @@ pub fn structure_figure(
         // Draw once to measure the part, then again in its place, top-aligned with the whole.
         let mut probe = Recorder::in_context("part", scale, ctx);
         draw_links(&mut probe, prog, &whole, Role::Given, "part", part);
-        let (lo, hi) = bounds_from(&probe, 0);
+        let (mut lo, mut hi) = bounds_from(&probe, 0);
+        // The group's free guide element is drawn with it: the part's room holds it too
+        // (the V engine's blocks 3 and 5 stood 3 mm apart, their guides crossing).
+        for g in guides.iter().filter(|g| Part::Group(g.group) == part) {
+            for p in [g.segment.from, g.segment.to] {
+                (lo, hi) = (lo.min(p), hi.max(p));
+            }
+        }
         let shift = DVec2::new(x - lo.x, hi0.y - hi.y);
         let placed = shifted(first, factor, shift);
         let anchors = draw_links(&mut rec, prog, &placed, Role::Given, &caption, part);
