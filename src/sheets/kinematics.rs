@@ -269,12 +269,16 @@ fn rest_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
             Some(d) if d.scales.x == r.scale_phi => String::new(),
             _ => format!(", {}", digits::caption(r.scale_phi, lang)),
         };
+        // The derivative's scale as the displacement diagram's μ_a is stated: ε is read off
+        // dω/dφ's ordinates at μ_ε = |ω₁|·μ_ω/(H_ω·μ_φ).
         lines.push(format!(
-            "ω_{{{}}}(φ): {}{phi}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ",
+            "ω_{{{}}}(φ): {}{phi}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ, μ_{{ε}} = |ω_{{1}}|·μ_{{ω}}/(H_{{ω}}·μ_{{φ}}) = {} {}",
             r.link,
             r.scale.caption(lang),
             format_sig(r.derivative.pole_mm, 3, lang),
-            Text::Millimetre.get(lang)
+            Text::Millimetre.get(lang),
+            format_sig(r.derivative.scale.value() * a.w1.abs(), 4, lang),
+            Quantity::AngularAcceleration.unit(lang)
         ));
     }
     if let Some(crate::study::Hodograph {
