@@ -559,7 +559,18 @@ impl Filling {
         let tr_ = &t.spec.train;
         // The mobility; the ratio (by the formula and by the triangles, the required one too)
         // is the tables' (the line printed it a third and fourth time).
-        self.lines.push(train_mobility_line(tr_));
+        // The train's module beside its mobility (the pair's, on a sheet that has one, is
+        // the pair's data line's), where no mesh is closed at a module of its own (the
+        // closing's line then gives both).
+        let mut mobility = train_mobility_line(tr_);
+        if t.closings.is_empty() {
+            mobility.push_str(&format!(
+                "; m = {} {}",
+                super::digits::value(tr_.module * 1e3, lang),
+                unit_in("mm", lang)
+            ));
+        }
+        self.lines.push(mobility);
         self.lines.extend(differential_line(t, lang));
         self.lines.extend(closing_lines(t, lang));
         if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {

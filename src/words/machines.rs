@@ -111,7 +111,7 @@ catalogue! {
         Meshing => ("Картина зацепления", "Картина зачеплення", "Meshing picture"),
         Sliding => ("Удельное скольжение", "Питоме ковзання", "Specific sliding"),
         Along => ("вдоль", "уздовж", "along"),
-        Blocking => ("Блокирующий контур", "Блокуючий контур", "Blocking contour"),
+        Blocking => ("Блокирующий контур", "Блокувальний контур", "Blocking contour"),
         Interference => ("интерференция", "інтерференція", "interference"),
         CutByRack => ("Нарезание рейкой:", "Нарізання рейкою:", "Cut by the rack:"),
         UndercutHatched => ("; подрез заштрихован", "; підріз заштриховано", "; the undercut hatched"),
@@ -158,7 +158,7 @@ catalogue! {
         OtherRoute => ("проверка", "перевірка", "check"),
         ChosenBy => (
             "K: x_1, x_2 выбраны на блокирующем контуре по критерию:",
-            "K: x_1, x_2 вибрано на блокуючому контурі за критерієм:",
+            "K: x_1, x_2 вибрано на блокувальному контурі за критерієм:",
             "K: x_1, x_2 chosen on the blocking contour by the criterion:"
         ),
         LargestContactRatio => ("наибольший ε_α", "найбільший ε_α", "the largest ε_α"),

@@ -396,7 +396,7 @@ catalogue! {
         FrictionTable => ("Силы, моменты и КПД с учётом трения", "Сили, моменти і ККД з урахуванням тертя", "Forces, moments and efficiencies with friction"),
         BlockingTable => (
             "Значения в точках блокирующего контура",
-            "Значення в точках блокуючого контуру",
+            "Значення в точках блокувального контуру",
             "The values at the points of the blocking contour"
         ),
         FrictionTask => (
