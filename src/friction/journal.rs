@@ -194,7 +194,9 @@ fn contact(rec: &mut Recorder, r: f64, turn: f64) -> Result<DVec2, ConstructionE
 /// the friction circle, balancing Q; the angle φ from the normal marked.
 fn reaction(rec: &mut Recorder, (r, rho_mm): (f64, f64), a1: DVec2, s: f64) {
     let o = DVec2::ZERO;
-    let fc = rec.draw(
+    // Unnamed: its radius is R's arm, dimensioned ρ ([`arm`]); a second ρ on the circle
+    // named one quantity twice (the review's case 5).
+    rec.draw(
         "the friction circle",
         Item::Circle(Circle {
             center: o,
@@ -202,12 +204,6 @@ fn reaction(rec: &mut Recorder, (r, rho_mm): (f64, f64), a1: DVec2, s: f64) {
         }),
         Role::Construction,
         &[],
-    );
-    rec.label(
-        fc,
-        "ρ",
-        o + DVec2::new(0.0, rho_mm),
-        DVec2::new(-1.0, 1.0).normalize(),
     );
     // R balances Q: through A₁, upward, tangent to the friction circle.
     // Drawn pushing on the contact from below; its line run on past the friction circle.
