@@ -319,8 +319,8 @@ fn closing_lines(t: &crate::gears::TrainStudy, lang: Lang) -> Vec<String> {
         .map(|c| {
             let (s, w) = c.mesh;
             format!(
-                "m = {} {mm}, m_{{{}-{}}} = {} {mm} ({})",
-                super::digits::value(tr_.module * 1e3, lang),
+                "{}, m_{{{}-{}}} = {} {mm} ({})",
+                module_text(tr_, lang),
                 tr_.wheels[s].name,
                 tr_.wheels[w].name,
                 super::digits::value(c.module * 1e3, lang),
@@ -328,6 +328,15 @@ fn closing_lines(t: &crate::gears::TrainStudy, lang: Lang) -> Vec<String> {
             )
         })
         .collect()
+}
+
+/// The module the train's wheels are cut with: `m = 2 мм`.
+fn module_text(t: &crate::gears::Train, lang: Lang) -> String {
+    format!(
+        "m = {} {}",
+        super::digits::value(t.module * 1e3, lang),
+        unit_in("mm", lang)
+    )
 }
 
 /// The train's mobility as the textbook writes it: W = 3n − 2p₅ − p₄ = 3·4 − 2·4 − 3 = 1.
@@ -564,11 +573,7 @@ impl Filling {
         // closing's line then gives both).
         let mut mobility = train_mobility_line(tr_);
         if t.closings.is_empty() {
-            mobility.push_str(&format!(
-                "; m = {} {}",
-                super::digits::value(tr_.module * 1e3, lang),
-                unit_in("mm", lang)
-            ));
+            mobility.push_str(&format!("; {}", module_text(tr_, lang)));
         }
         self.lines.push(mobility);
         self.lines.extend(differential_line(t, lang));

@@ -342,13 +342,21 @@ impl<'s> Session<'s> {
         let (poses, w1, l) = (self.poses()?, self.w1()?, self.scale_l()?);
         let positions = positions_extent(&poses).labelled_size_at(l);
         let all: Vec<usize> = (0..poses.positions.len()).collect();
-        let own = self.own_scale_positions()?;
-        let velocity = common_plans(&all, &own);
-        let acceleration = common_plans(&self.acceleration_positions()?, &own);
+        let velocity = common_plans(&all, &self.own_scale_positions()?);
         Ok(positions.x * positions.y
             + plans_area(&poses, &velocity, w1, PlanKind::Velocity, v)
-            + plans_area(&poses, &acceleration, w1, PlanKind::Acceleration, a)
+            + self.acceleration_mm2(a)?
             + self.diagrams_mm2(l, self.chart_scales())?)
+    }
+
+    /// The labelled area of the common acceleration plans at `a`, summed, mm².
+    fn acceleration_mm2(&self, a: Scale) -> Result<f64, StudyError> {
+        let (poses, w1) = (self.poses()?, self.w1()?);
+        let ks = common_plans(
+            &self.acceleration_positions()?,
+            &self.own_scale_positions()?,
+        );
+        Ok(plans_area(&poses, &ks, w1, PlanKind::Acceleration, a))
     }
 
     /// The labelled area of the displacement diagrams at `chart`, constructed as the sheet
@@ -377,10 +385,7 @@ impl<'s> Session<'s> {
         if self.kin_sheets()? == KinSheets::One {
             return Ok(textbook);
         }
-        let (poses, w1, l) = (self.poses()?, self.w1()?, self.scale_l()?);
-        let own = self.own_scale_positions()?;
-        let acceleration = common_plans(&self.acceleration_positions()?, &own);
-        let plans = plans_area(&poses, &acceleration, w1, PlanKind::Acceleration, a);
+        let (l, plans) = (self.scale_l()?, self.acceleration_mm2(a)?);
         for (along, up) in LARGER_CHARTS {
             let chart = ChartScales {
                 size: ChartSize::times(along, up),
