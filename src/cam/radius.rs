@@ -288,7 +288,7 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     // The tangent from its touching point to its crossing with the S axis, at S = c.
     let touch = pts.get(i).copied().unwrap_or(DVec2::ZERO);
     let cross = DVec2::new(0.0, c);
-    rec.draw(
+    let tangent = rec.draw(
         TANGENT_NOTE,
         Item::Segment(Segment::new(touch, cross)),
         Role::Construction,
@@ -304,6 +304,19 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     );
     // The centre ρ_min below where the tangent meets the axis (at O when it meets it above).
     let o = DVec2::new(0.0, oi.y - rho);
+    // The zone of the centre (the textbook's hatching between the tangent and the S axis):
+    // below the tangent, along it toward its touching point and down the axis to O₁.
+    let up = (touch - cross)
+        .try_normalize()
+        .unwrap_or(DVec2::new(-1.0, 1.0).normalize());
+    let down = cross.distance(o);
+    zone::hatch_angle_between(
+        rec,
+        cross,
+        (up, touch.distance(cross).min(zone::band_length(down))),
+        (DVec2::NEG_Y, down),
+        &[tangent, ax],
+    );
     // ρ_min and r_min right of the S axis (the tangent comes from the left), one beside
     // the other, each with the room for its text left of its line.
     if oi.y < 0.0 {

@@ -3,7 +3,8 @@
 //! crossing (and a little past it), the zone hatched along them inside (ГОСТ 2.306) up to
 //! the chord between their ends, the centre chosen marked and r_min dimensioned from it.
 //! The rays, the zone and the centre are the construction's own (its points and its
-//! decision); this file only draws them.
+//! decision); this file only draws them. The flat face's zone, between its 45° tangent and the S
+//! axis, is hatched by the same band.
 
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::{line_line, DVec2, Line, LineLine, Segment};
@@ -77,41 +78,42 @@ pub(super) fn draw_zone(
                 .is_some_and(|m| inside(c + m * PROBE_MM))
         });
     if let Some((p, q)) = sides {
-        hatch_angle_between(rec, c, (p, q), reach, &ids);
+        let len = band_length(reach);
+        hatch_angle_between(rec, c, (p, len), (q, len), &ids);
     }
     ids
 }
 
-/// Hatch the band along the two sides `p`, `q` (unit, from the apex `c`) of an angle, inside
-/// it, `reach` mm long: [`BAND_MM`] wide along each side, its two ends cut along the chord
-/// between the rays' drawn ends — no stroke stands past the rays that bound it.
-fn hatch_angle_between(
+/// Hatch the band along the two sides of an angle at its apex `c`, inside it: side `p` (unit)
+/// `lp` mm long, side `q` `lq` mm; [`BAND_MM`] wide along each side, its two ends cut along
+/// the chord between the sides' ends — no stroke stands past the lines that bound it. Where
+/// the sides are too short for the band, the triangle they close is hatched whole.
+pub(super) fn hatch_angle_between(
     rec: &mut Recorder,
     c: DVec2,
-    (p, q): (DVec2, DVec2),
-    reach: f64,
+    (p, lp): (DVec2, f64),
+    (q, lq): (DVec2, f64),
     from: &[StepId],
 ) {
-    let half = 0.5 * p.angle_to(q).abs();
-    if half <= 1e-3 || half >= 0.5 * PI - 1e-3 {
+    let angle = p.angle_to(q).abs();
+    if angle <= 2e-3 || angle >= PI - 2e-3 || lp <= 0.0 || lq <= 0.0 {
         return;
     }
-    let len = band_length(reach);
-    let (a, b) = (c + p * len, c + q * len);
-    // A point c + s·p + t·q lies in the band's inner edge parallel to q at s = w, to p at
-    // t = w, on the chord a–b at s + t = len.
-    let w = BAND_MM / (2.0 * half).sin();
-    let outline = if 2.0 * w >= len {
-        // The band fills the triangle the rays' ends close.
+    let (a, b) = (c + p * lp, c + q * lq);
+    // A point c + s·p + t·q lies on the band's inner edge parallel to q at s = w, to p at
+    // t = w, on the chord a–b at s/lp + t/lq = 1.
+    let w = BAND_MM / angle.sin();
+    let outline = if w / lp + w / lq >= 1.0 {
+        // The band fills the triangle the sides' ends close.
         vec![a, c, b]
     } else {
         vec![
             a,
             c,
             b,
-            c + p * w + q * (len - w),
+            c + p * w + q * (lq * (1.0 - w / lp)),
             c + (p + q) * w,
-            c + p * (len - w) + q * w,
+            c + p * (lp * (1.0 - w / lq)) + q * w,
         ]
     };
     let angle = hatch_angle(&[p, q]);
@@ -119,14 +121,14 @@ fn hatch_angle_between(
     // the hatcher refuses neither.
     let _ = rec.hatching(
         "hatching of the zone of the cam centre",
-        outline.to_vec(),
+        outline,
         (HATCH_MM, angle),
         from,
     );
 }
 
 /// How far from the crossing the band (and the rays) run for a zone `reach` mm long, mm.
-fn band_length(reach: f64) -> f64 {
+pub(super) fn band_length(reach: f64) -> f64 {
     reach.max(BAND_MIN_MM)
 }
 

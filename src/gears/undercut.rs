@@ -97,7 +97,8 @@ pub(super) fn undercut(
         rec.hatching(
             "hatching of the undercut",
             outline,
-            (spacing, side * PI / 4.0),
+            // Across the flank (the strokes at ∓45°, short over the narrow region).
+            (spacing, -side * PI / 4.0),
             &[edge],
         )?;
     }

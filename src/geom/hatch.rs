@@ -72,8 +72,10 @@ pub fn hatch(outline: &[DVec2], spacing: f64, angle: f64) -> Result<Vec<Segment>
     builder.end(true);
     let path = builder.build();
     let mut out = Vec::new();
+    // lyon turns its angle clockwise from +x (its y axis points down): strokes at `angle`
+    // counterclockwise in the outline's y-up axes are its −angle.
     let options = HatchingOptions::tolerance((spacing * 1e-3) as f32)
-        .with_angle(Angle::radians(angle as f32));
+        .with_angle(Angle::radians(-angle as f32));
     let back = |p: lyon::math::Point| DVec2::new(f64::from(p.x), f64::from(p.y)) + origin;
     Hatcher::new().hatch_path(
         path.iter(),
@@ -91,6 +93,25 @@ pub fn hatch(outline: &[DVec2], spacing: f64, angle: f64) -> Result<Vec<Segment>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn strokes_run_at_the_angle_counted_counterclockwise_from_x() {
+        let square = [
+            DVec2::new(0.0, 0.0),
+            DVec2::new(20.0, 0.0),
+            DVec2::new(20.0, 20.0),
+            DVec2::new(0.0, 20.0),
+        ];
+        for deg in [30.0f64, 45.0, 60.0, 135.0] {
+            let a = deg.to_radians();
+            let strokes = hatch(&square, 2.0, a).unwrap();
+            assert!(!strokes.is_empty());
+            for s in &strokes {
+                let d = (s.to - s.from).normalize();
+                assert!(d.perp_dot(DVec2::from_angle(a)).abs() < 1e-5, "{deg}°: {d}");
+            }
+        }
+    }
 
     #[test]
     fn a_square_hatched_at_45_degrees_is_covered_at_its_spacing() {

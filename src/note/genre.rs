@@ -41,10 +41,10 @@ impl Writer<'_, '_> {
     /// The designation with the document's code: a course project's note `… ПЗ`; a report
     /// has no code of ГОСТ 2.102.
     pub(super) fn designation(&self) -> String {
-        let d = &self.session.scene().title.designation;
+        let d = self.session.scene().title.in_lang(self.lang).designation;
         match self.genre() {
             Genre::CourseProject => format!("{d} {}", self.word(T::NoteCode)).trim().to_string(),
-            _ => d.clone(),
+            _ => d,
         }
     }
 

@@ -4,10 +4,12 @@
 use std::fmt::Write as _;
 
 mod key;
+mod latin;
 mod localised;
 
 pub use key::Key;
 pub(crate) use key::DRAWN_MM;
+pub use latin::latin;
 pub use localised::Localised;
 
 /// The acceleration of gravity the course computes weights with (G = m·g), m/s²: the

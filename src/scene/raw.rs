@@ -61,6 +61,8 @@ pub(crate) struct RawTask {
 pub struct TaskText {
     /// The title.
     pub title: Option<String>,
+    /// The designation (English: else the scene's own in Latin letters).
+    pub designation: Option<String>,
     /// The student.
     pub author: Option<String>,
     /// The instructor.

@@ -48,14 +48,18 @@ pub(super) fn title(check: &mut Checker, task: RawTask, stem: &str) -> TitleInfo
 
 impl TitleInfo {
     /// The texts in `lang`: each the language's table gives (`[task.uk]`), else the scene's
-    /// own.
+    /// own — the designation in Latin letters in English (ТММ.КП.000 → TMM.KP.000).
     pub fn in_lang(&self, lang: Lang) -> TitleInfo {
         let mut t = self.clone();
+        if lang == Lang::En {
+            t.designation = crate::scale::latin(&t.designation);
+        }
         let Some((_, own)) = self.localised.iter().find(|(l, _)| *l == lang) else {
             return t;
         };
         for (field, value) in [
             (&mut t.title, &own.title),
+            (&mut t.designation, &own.designation),
             (&mut t.author, &own.author),
             (&mut t.checked, &own.checked),
             (&mut t.organisation, &own.organisation),

@@ -26,23 +26,26 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     if d.wheel.steps.is_empty() {
         return Ok(Vec::new());
     }
-    let kind = match d.size.kind {
-        FlywheelKind::Rim => DynamicsText::RimPart,
-        FlywheelKind::Disc => DynamicsText::DiscPart,
-    };
     let blocks = vec![
         Block::Views {
             parts: vec![Part::new(d.wheel.clone(), DVec2::ZERO, None)],
             scale: None,
         },
-        // The table beside the drawing, the data under it.
+        // The table beside the drawing, the technical requirements under it (above the title
+        // block), the data under the drawing.
         Block::Table(dimensions_table(&d, lang)),
+        Block::Text {
+            lines: requirements(lang),
+            size_mm: TEXT_MM,
+        },
         Block::Text {
             lines: data_lines(&d, lang),
             size_mm: TEXT_MM,
         },
     ];
-    let mut title = super::title_block(session.scene(), kind.get(lang), d.wheel.scale, lang);
+    // A part drawing's title block names the part (ГОСТ 2.104 graph 1), not the machine.
+    let mut title = super::title_block(session.scene(), "", d.wheel.scale, lang);
+    title.title = DynamicsText::Flywheel.get(lang).to_string();
     // A part drawing's title block gives its mass, kg, and its material.
     title.mass = format_sig(d.size.mass, 3, lang);
     let grade = if d.spec.flywheel.cast_iron() {
@@ -52,6 +55,20 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     };
     title.material = grade.get(lang).to_string();
     lay_out_smallest(&SIZES, blocks, "flywheel", &title, lang)
+}
+
+/// The technical requirements of the cast part: the numbered items, a line each piece of
+/// theirs.
+fn requirements(lang: Lang) -> Vec<String> {
+    [
+        DynamicsText::CastRadii,
+        DynamicsText::Tolerances,
+        DynamicsText::BalanceStatically,
+    ]
+    .iter()
+    .flat_map(|w| w.get(lang).split('\n'))
+    .map(str::to_string)
+    .collect()
 }
 
 /// The flywheel's inertia by the construction and exactly, with the δ each gives; its

@@ -35,8 +35,25 @@ catalogue! {
         Merkin => ("Меркин", "Меркін", "Merkin"),
         Rim => ("обод", "обід", "rim"),
         Disc => ("диск", "диск", "disc"),
-        RimPart => ("Маховик с ободом, спицами и ступицей", "Маховик з ободом, спицями і маточиною", "Flywheel with a rim, spokes and a hub"),
-        DiscPart => ("Маховик-диск", "Маховик-диск", "Disc flywheel"),
+        // The part drawing's technical requirements for a cast flywheel (ГОСТ 2.316: numbered
+        // items above the title block, under no heading where the drawing gives no technical
+        // characteristic); "\n" breaks a line, each under 35 characters, the column beside an
+        // A3's views.
+        CastRadii => (
+            "1. Литейные радиусы R3…5 мм.",
+            "1. Ливарні радіуси R3…5 мм.",
+            "1. Casting radii R3…5 mm."
+        ),
+        Tolerances => (
+            "2. Неуказанные предельные\nотклонения размеров: отверстий\nH14, валов h14, остальных ±IT14/2.",
+            "2. Невказані граничні відхилення\nрозмірів: отворів H14, валів h14,\nінших ±IT14/2.",
+            "2. Limit deviations not shown:\nholes H14, shafts h14,\nothers ±IT14/2."
+        ),
+        BalanceStatically => (
+            "3. Маховик балансировать\nстатически.",
+            "3. Маховик балансувати статично.",
+            "3. Balance the flywheel\nstatically."
+        ),
         Exact => ("точно", "точно", "exactly"),
         SizedFrom => (
             "Размеры — по J_{м} построения (диаграмма энергомасс):",

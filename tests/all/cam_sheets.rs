@@ -5,7 +5,8 @@
 //!   dimension from O₁ whose length, read as the sheet reads it, is the report's graphical
 //!   r_min (translating and rocker followers);
 //! - the flat face's 45° tangent from its touching point on the S(S″) curve to the S axis,
-//!   each end on its line to a tolerance of the figure's size, with the r_min dimension;
+//!   each end on its line to a tolerance of the figure's size, the zone of the centre
+//!   hatched between it and the S axis down to O₁, with the r_min dimension;
 //! - the r_min dimension written with its value (r_min = 69 мм), and, where the scene leaves
 //!   r₀ to the construction, the data accepting it no smaller: «Принимаем r₀ = 70 мм ≥ r_min
 //!   = 69 мм», the r₀ the profile is built on (and the twin's check that it keeps [γ]).
@@ -270,6 +271,49 @@ fn tangent_touches(f: &Figure) -> Result<(), String> {
     Ok(())
 }
 
+/// The flat face's zone hatched as the textbook hatches it: in the angle at the tangent's
+/// crossing between the tangent (toward its touching point) and the S axis below, no stroke
+/// past the tangent's drawn end nor below O₁, and the hatching reaching down to O₁.
+fn flat_zone_hatched(f: &Figure) -> Result<(), String> {
+    let t = segments(f, TANGENT_NOTE);
+    let [(_, touch, c)] = t[..] else {
+        return Err(format!("{} 45° tangents", t.len()));
+    };
+    let o = centre(f)?;
+    let (u, v) = ((touch - c).normalize(), DVec2::NEG_Y);
+    let (lu, lv) = (touch.distance(c), c.y - o.y);
+    let strokes: Vec<DVec2> = f
+        .steps
+        .iter()
+        .filter(|s| s.role == Role::Hatch)
+        .flat_map(|s| s.item.hatch_strokes())
+        .flat_map(|g| [g.from, g.to])
+        .collect();
+    if strokes.len() < 6 {
+        return Err(format!("the zone has {} hatch strokes", strokes.len() / 2));
+    }
+    let slack = 1e-3;
+    for p in &strokes {
+        let (along_u, along_v) = (u.dot(*p - c), v.dot(*p - c));
+        let inside = u.perp_dot(*p - c) * u.perp_dot(v) >= -slack
+            && v.perp_dot(*p - c) * v.perp_dot(u) >= -slack;
+        if !inside || along_u > lu + slack || along_v > lv + slack {
+            return Err(format!(
+                "a hatch stroke ends at {p:?}, outside the angle of the tangent and the S axis \
+                 down to O₁ {o:?}"
+            ));
+        }
+    }
+    let deepest = strokes.iter().map(|p| v.dot(*p - c)).fold(0.0, f64::max);
+    if deepest < lv - 3.0 {
+        return Err(format!(
+            "the hatching stops {:.1} mm above O₁",
+            lv - deepest
+        ));
+    }
+    Ok(())
+}
+
 /// The data's line of the base radius: when the scene gives none, r₀ accepted ≥ the r_min
 /// read, both as the cam has them (`Принимаем r_{0} = 70 мм ≥ r_{min} = 69 мм`).
 fn r0_accepted(cam: &Cam, plates: &[Plate]) -> Result<(), String> {
@@ -307,6 +351,7 @@ fn r0_accepted(cam: &Cam, plates: &[Plate]) -> Result<(), String> {
 fn finished(cam: &Cam, f: &Figure, d: Drafting) -> Result<(), String> {
     if matches!(cam.spec.follower, Follower::Flat { .. }) {
         tangent_touches(f)?;
+        flat_zone_hatched(f)?;
     } else {
         zone_hatched(f)?;
     }
@@ -477,4 +522,17 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
         }
     });
     assert!(tangent_touches(&floating).is_err());
+    // The flat face's zone: no hatching; hatching turned into the angle right of the axis.
+    let mut bare = f.clone();
+    bare.steps.retain(|s| s.role != Role::Hatch);
+    assert!(flat_zone_hatched(&bare).is_err());
+    let mut mirrored = f.clone();
+    for s in mirrored.steps.iter_mut().filter(|s| s.role == Role::Hatch) {
+        if let Item::Hatching { outline, .. } = &mut s.item {
+            for p in outline.iter_mut() {
+                p.x = -p.x;
+            }
+        }
+    }
+    assert!(flat_zone_hatched(&mirrored).is_err());
 }

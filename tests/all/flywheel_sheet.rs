@@ -1,5 +1,6 @@
 //! The flywheel as a part drawing (issue 45): the shaper's set carries it as a sheet of its
-//! own, the eighth, at 1:4 as seed 000 draws it; the flywheel is sized from the J_м the
+//! own, the eighth, at 1:4 as seed 000 draws it, titled as the part with its material and
+//! technical requirements; the flywheel is sized from the J_м the
 //! dynamics sheet's construction gives (Wittenbauer's tangents), not the exact one; every
 //! dimension on the sheet is its proportion of that D, worked here from the scene's numbers
 //! and the seed's proportions (000 §5.7, L1471–1480); a machine that needs no flywheel,
@@ -72,6 +73,27 @@ fn the_shaper_set_draws_the_flywheel_as_its_eighth_sheet_at_1_4() {
     assert_eq!((tb.sheet_no, tb.sheets), (8, 8));
     assert_eq!(tb.designation, "ТММ.КП.000.08");
     assert_eq!(tb.scale, "1:4");
+    // A part drawing: the title block names the part, not the machine, and gives its
+    // material; the technical requirements stand on the sheet, numbered.
+    assert_eq!(tb.title, "Маховик");
+    assert!(tb.sheet_title.is_empty(), "{}", tb.sheet_title);
+    assert!(tb.material.starts_with("СЧ 15"), "{}", tb.material);
+    let lines: Vec<&String> = p.texts.iter().flat_map(|t| &t.lines).collect();
+    for item in [
+        "1. Литейные радиусы",
+        "2. Неуказанные предельные",
+        "3. Маховик балансировать",
+    ] {
+        assert!(
+            lines.iter().any(|l| l.starts_with(item)),
+            "{item}: {lines:?}"
+        );
+    }
+    // In English, the part's name and its designation in Latin letters.
+    let en = tmm::render::plates(&s, Lang::En, Drafting::EXACT).unwrap_or_else(|e| panic!("{e}"));
+    let (_, p) = en.last().expect("a sheet");
+    assert_eq!(p.title_block.title, "Flywheel");
+    assert_eq!(p.title_block.designation, "TMM.KP.000.08");
     // One drawing at μ_l = 0,004 m/mm, on a sheet no larger than A2.
     assert_eq!(p.views.len(), 1);
     assert!((p.views[0].figure.scale.value() - 0.004).abs() < 1e-15);

@@ -217,17 +217,11 @@ impl Hatching {
         else {
             return None;
         };
-        // The direction the strokes are drawn in (the hatcher's own convention for its
-        // angle), else the angle's.
-        let along = item
-            .hatch_strokes()
-            .first()
-            .and_then(|s| (s.to - s.from).try_normalize())
-            .unwrap_or_else(|| DVec2::from_angle(*angle));
+        // The strokes run at the angle, counterclockwise from the figure's +x.
         Some(Self {
             outline: outline.iter().map(|p| map.pt(*p)).collect(),
             spacing: *spacing,
-            along: map.dir(along),
+            along: map.dir(DVec2::from_angle(*angle)),
         })
     }
 }
