@@ -86,6 +86,14 @@ fn scheme(case: &FrictionCase, c: &Screw, ctx: &Context) -> Result<(Drawing, f64
         Role::Given,
         &[],
     );
+    // The development's base, one turn long: with the lead it closes the triangle whose
+    // angle at its start is λ.
+    rec.draw(
+        "the base of the development: one turn",
+        Item::Segment(Segment::new(start, corner)),
+        Role::Construction,
+        &[],
+    );
     let id = rec.draw(
         "one turn unrolled: πd₁",
         Item::Dimension {

@@ -525,7 +525,7 @@ fn tangent_loads_with_a_crank_point_in_a_direction() {
     assert_eq!(
         guide_i.dir,
         Dir::Along {
-            from: "K".into(),
+            from: "C".into(),
             to: "A".into(),
             angle: 0.0
         }

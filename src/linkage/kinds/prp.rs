@@ -114,6 +114,13 @@ impl GroupKind for Prp {
         let n2 = format!("{}{k2}", plain(bl.name(joint)));
         let at = bl.b.p[joint];
         let (j1, j2) = (bl.image_on(k1, at, &n1), bl.image_on(k2, at, &n2));
+        // The coincident points' images the guides' lines start from, named (b₁): a frame's
+        // is the pole.
+        for (k, img) in [(k1, j1), (k2, j2)] {
+            if k != 0 {
+                bl.mark_coincident(joint, k, img);
+            }
+        }
         let (s1, s2) = if vel {
             (j1, j2)
         } else {

@@ -329,12 +329,7 @@ impl Builder<'_> {
         link: usize,
         x: DVec2,
     ) {
-        let prime = if self.kind == PlanKind::Acceleration {
-            "′"
-        } else {
-            ""
-        };
-        let label = format!("{}_{{{link}}}{prime}", lower(self.name(point)));
+        let label = self.coincident_label(point, link);
         let id = self.rec.draw(
             format!("image {label}"),
             Item::Vector {
@@ -353,6 +348,31 @@ impl Builder<'_> {
             PlanKind::Acceleration => format!("a_{name}"),
         };
         self.reading(quantity, Measure::Carried(point, link), value, None);
+    }
+
+    /// The label of the image of the point of `link` under the point `point`: `b₃`, `b₃′`.
+    fn coincident_label(&self, point: usize, link: usize) -> String {
+        let prime = if self.kind == PlanKind::Acceleration {
+            "′"
+        } else {
+            ""
+        };
+        format!("{}_{{{link}}}{prime}", lower(self.name(point)))
+    }
+
+    /// Mark and label the image `x` of the point of `link` under the point `point` (`b₁`)
+    /// where the similarity line that found it ends: a vertex of the plan, no vector of its
+    /// own and no reading (nothing is asked of it but the line it starts).
+    pub(in crate::linkage) fn mark_coincident(&mut self, point: usize, link: usize, x: DVec2) {
+        let label = self.coincident_label(point, link);
+        self.rec.point(
+            format!("image {label}"),
+            x,
+            Role::Construction,
+            &label,
+            x.normalize_or(DVec2::Y),
+            &[],
+        );
     }
 
     /// The Coriolis component 2ω·v_r of a point moving relative to `link`, v_r read on the
