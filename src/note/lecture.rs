@@ -53,7 +53,7 @@ fn rotor(w: &mut Writer<'_, '_>, spec: &BalancingSpec) {
         w.doc.say(w.word(C::RotorIntro));
         for (i, m) in spec.masses.iter().enumerate() {
             let k = i + 1;
-            let force = format!("P_{{и{k}}}");
+            let force = format!("F_{{и{k}}}");
             worked(
                 w,
                 &sym(&force),

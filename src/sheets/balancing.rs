@@ -8,7 +8,7 @@ use super::BuildError;
 use crate::balancing::{Balancing, Correction, Plane};
 use crate::check::{Row, Symbol};
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_fixed, Key, Lang};
+use crate::scale::{format_fixed, format_number, Key, Lang, Scale};
 use crate::study::Session;
 use crate::words::{unit_in, RotorText, Text};
 
@@ -28,7 +28,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         let caption = format!(
             "{}, {}",
             RotorText::MomentsPolygon.get(lang),
-            mu.caption(lang)
+            polygon_scale(mu, Symbol::UnbalanceMoment, lang)
         );
         blocks.push(Block::view(
             fig.clone(),
@@ -39,7 +39,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let caption = format!(
         "{}, {}",
         RotorText::StaticMomentsPolygon.get(lang),
-        b.scale_mr.caption(lang)
+        polygon_scale(b.scale_mr, Symbol::StaticMoment, lang)
     );
     blocks.push(Block::view(
         b.statics.clone(),
@@ -168,7 +168,7 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
             let f = crate::balancing::inertia_force(m, w);
             let g = m.mass * crate::scale::G;
             out.push(format!(
-                "P_{{и{k}}} = m_{{{k}}}ω^2ρ_{{{k}}} = {} {n}, P_{{и{k}}}/G_{{{k}}} = {}",
+                "F_{{и{k}}} = m_{{{k}}}ω^2ρ_{{{k}}} = {} {n}, F_{{и{k}}}/G_{{{k}}} = {}",
                 num(f, lang),
                 num(f / g, lang),
                 k = i + 1
@@ -220,6 +220,19 @@ fn sheet_unit(symbol: Symbol) -> (&'static str, f64) {
         Symbol::Angle => ("deg", 180.0 / std::f64::consts::PI),
         s => (s.unit(), 1.0),
     }
+}
+
+/// The μ of a polygon of `symbol` in the unit the table gives its values in
+/// ([`sheet_unit`]): μ_{mρz} = 20 кг·мм²/мм beside 1340 кг·мм², not 0,00002 кг·м²/мм.
+fn polygon_scale(mu: Scale, symbol: Symbol, lang: Lang) -> String {
+    let (unit, factor) = sheet_unit(symbol);
+    format!(
+        "μ_{{{}}} = {} {}/{}",
+        mu.quantity.symbol(),
+        format_number(mu.value() * factor, lang),
+        unit_in(unit, lang),
+        unit_in("mm", lang)
+    )
 }
 
 /// The table graphical | analytic | error of the rows (angles in degrees, unbalances in

@@ -5,7 +5,7 @@
 //! (graphical | analytic | error). One A1 sheet (more if the views need it); the flywheel's
 //! part drawing is a sheet of its own ([`super::flywheel`]).
 
-use super::digits::value as num;
+use super::digits::{value as num, Column as Precision};
 use super::layout::{keyed, lay_out, quantity, Block, Column, Results};
 use super::BuildError;
 use crate::check::{Finding, NoFlywheel, Route};
@@ -250,25 +250,42 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
         ConstantMoment::Driving => (-1.0, "M_{с}"),
         ConstantMoment::Resisting => (1.0, "M_{д}"),
     };
+    let n = d.labels.len();
+    let dt = |i: usize| {
+        (
+            d.diagrams.delta_t.get(i).copied().unwrap_or(f64::NAN),
+            d.cycle.delta_t(d.travel[i]),
+        )
+    };
+    // Each quantity's two columns at one precision (digits::Column: four digits of its
+    // largest), as a drawing's table gives it.
+    let both = |f: &dyn Fn(usize) -> (f64, f64)| {
+        Precision::of((0..n).flat_map(|i| {
+            let (g, a) = f(i);
+            [g, a]
+        }))
+    };
+    let m_col = both(&|i| (d.graphical[i].m(), d.analytic[i].m()));
+    let j_col = both(&|i| (d.graphical[i].j, d.analytic[i].j));
+    let t_col = both(&dt);
     let rows = d
         .labels
         .iter()
         .enumerate()
         .map(|(i, label)| {
             let (g, a) = (&d.graphical[i], &d.analytic[i]);
-            let dt = d.diagrams.delta_t.get(i).copied().unwrap_or(f64::NAN);
-            let dt_a = d.cycle.delta_t(d.travel[i]);
+            let (dt, dt_a) = dt(i);
             vec![
                 label.clone(),
                 format_fixed(d.travel[i].to_degrees(), 0, lang),
-                format_fixed(sgn * g.m(), 2, lang),
-                format_fixed(sgn * a.m(), 2, lang),
+                m_col.cell(sgn * g.m(), lang),
+                m_col.cell(sgn * a.m(), lang),
                 err(g.m(), a.m(), m_scale),
-                format_fixed(g.j, 4, lang),
-                format_fixed(a.j, 4, lang),
+                j_col.cell(g.j, lang),
+                j_col.cell(a.j, lang),
                 err(g.j, a.j, 1.0),
-                format_fixed(dt, 1, lang),
-                format_fixed(dt_a, 1, lang),
+                t_col.cell(dt, lang),
+                t_col.cell(dt_a, lang),
             ]
         })
         .collect();
