@@ -7,7 +7,7 @@ use super::cam_marks;
 use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
 use crate::cam::{
-    Analogue, Cam, CamSpec, Diagrams, Follower, Law, Layout, Rotation, ANGLE_LIMIT_NOTE,
+    Analogue, Cam, CamSpec, Closure, Diagrams, Follower, Law, Layout, Rotation, ANGLE_LIMIT_NOTE,
     RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
 };
 use crate::check::{Cusp, Finding, Row};
@@ -16,6 +16,7 @@ use crate::plate::{Plate, Sheet, SheetSize, TableBlock, CAPTION_BAND_MM};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
 use crate::study::Session;
 use crate::words::{unit_in, CamText, Text};
+use std::f64::consts::FRAC_PI_2;
 
 /// Text height of the data lines and the tables, mm.
 const TEXT_MM: f64 = 3.5;
@@ -330,7 +331,41 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     }));
     out.extend(stated(|f| matches!(f, Finding::RigidShock { .. })));
     out.extend(stated(|f| matches!(f, Finding::WrongSide { .. })));
+    out.extend(return_line(cam, lang));
     out
+}
+
+/// Under force closure the angle's limit holds on the rise only (seed 002 L1463: the spring
+/// returns the follower, nothing jams): where the return's angle passes it — λ over
+/// 90° − γ_min, or a rocker's γ under γ_min — the sheet says why its graph may cross the
+/// limit's line. None for a flat face (its angle is 0).
+fn return_line(cam: &Cam, lang: Lang) -> Option<String> {
+    let s = &cam.spec;
+    if s.closure != Closure::Force || matches!(s.follower, Follower::Flat { .. }) {
+        return None;
+    }
+    let on_return = cam
+        .points
+        .iter()
+        .filter(|p| p.phase == 2)
+        .map(|p| cam.angle_at(p.phi, p.after).abs());
+    let (angle, value, rel, limit, passes) = if s.shows_transmission_angle() {
+        let least = on_return.fold(f64::INFINITY, f64::min);
+        let limit = s.gamma_min;
+        ("γ_{min}", least, "<", limit, least < limit - 1e-9)
+    } else {
+        let most = on_return.fold(0.0, f64::max);
+        let limit = FRAC_PI_2 - s.gamma_min;
+        ("λ_{max}", most, ">", limit, most > limit + 1e-9)
+    };
+    passes.then(|| {
+        CamText::ReturnUnlimited
+            .get(lang)
+            .replace("{angle}", angle)
+            .replace("{value}", &format_fixed(value.to_degrees(), 1, lang))
+            .replace("{rel}", rel)
+            .replace("{limit}", &format_sig(limit.to_degrees(), 4, lang))
+    })
 }
 
 /// A verdict of the cam's check as a data line in `lang`; none for those the sheet does not

@@ -254,6 +254,12 @@ catalogue! {
             "CUSP: the profile is concave, r_{0} + S + S″ < 0"
         ),
         RigidShocks => ("Жёсткие удары на границах фаз", "Жорсткі удари на межах фаз", "Rigid shocks at the phase ends"),
+        // The angle's limit holds on the rise only under force closure (seed 002 L1463).
+        ReturnUnlimited => (
+            "На фазе приближения {angle} = {value}° {rel} {limit}°: допустимо — ведомое звено возвращает пружина (силовое замыкание)",
+            "На фазі наближення {angle} = {value}° {rel} {limit}°: допустимо — ведену ланку повертає пружина (силове замикання)",
+            "On the return {angle} = {value}° {rel} {limit}°: admitted — the spring returns the follower (force closure)"
+        ),
         WrongSide => ("Смещение e с неблагоприятной стороны", "Зміщення e з несприятливого боку", "The offset e is on the unfavourable side"),
         Read => ("граф.", "граф.", "graph."),
         Points => ("Точки диаграмм и профиля", "Точки діаграм і профілю", "Points of the diagrams and the profile"),

@@ -536,3 +536,46 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
     }
     assert!(flat_zone_hatched(&mirrored).is_err());
 }
+
+/// Under force closure the angle's limit binds the rise only (seed 002 L1463): PZ5's return
+/// reads past 30° on its graph, and its sheet says why, with the twin's largest angle there;
+/// the same cam closed by a groove is built for the whole cycle, keeps the limit and says
+/// nothing of it.
+#[test]
+fn a_return_past_the_limit_is_explained_under_force_closure_only() {
+    let stated = |plates: &[Plate]| {
+        plates
+            .iter()
+            .flat_map(|p| &p.texts)
+            .flat_map(|t| &t.lines)
+            .find(|l| l.starts_with("На фазе приближения"))
+            .cloned()
+    };
+    let (cam, plates, _) = sheets("cam-pz5", 0.5, Lang::Ru);
+    let read = cam
+        .points
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.phase == 2)
+        .map(|(i, _)| cam.angle_read(i).to_degrees().abs())
+        .fold(0.0, f64::max);
+    assert!(read > 31.0, "the return reads {read}°");
+    let line = stated(&plates).expect("PZ5's sheet explains its return");
+    let value = number_after(&line, "λ_{max} = ").expect(&line);
+    // Read at 0,5 mm against the twin's exact angle (the points' table: 35,5° and 37,4°).
+    assert!((value - read).abs() < 3.0, "{line} against {read}° read");
+    assert!(
+        line.contains("> 30°") && line.contains("силовое замыкание"),
+        "{line}"
+    );
+
+    let text = std::fs::read_to_string(crate::support::root().join("constructions/cam-pz5.toml"))
+        .expect("cam-pz5");
+    let grooved = text.replace("closure = \"force\"", "closure = \"geometric\"");
+    assert_ne!(grooved, text);
+    let s = tmm::scene::parse(&grooved, std::path::Path::new("cam-pz5-groove.toml"))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let session = Session::new(&s, Drafting::new(0.5).expect("0.5 mm"));
+    let plates = tmm::build(&session, PlateKind::Cam, Lang::Ru).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(stated(&plates), None);
+}
