@@ -3,8 +3,8 @@
 //! crossing (and a little past it), the zone hatched along them inside (ГОСТ 2.306) up to
 //! the chord between their ends, the centre chosen marked and r_min dimensioned from it.
 //! The rays, the zone and the centre are the construction's own (its points and its
-//! decision); this file only draws them. The flat face's zone, between its 45° tangent and the S
-//! axis, is hatched by the same band.
+//! decision); this file only draws them. The flat face's zone, between its 45° tangent and
+//! the S axis, is hatched by the same band.
 
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::{line_line, DVec2, Line, LineLine, Segment};
