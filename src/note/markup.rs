@@ -321,7 +321,9 @@ impl Markup {
     /// A displayed formula (Typst math, built with [`sym`], [`num`], [`unit`], [`frac`]),
     /// numbered. A chain `a = b = c …` also as two lines, `a = b` and `= c …`, which the
     /// note's `formula` shows instead when the one line would not leave room for the number
-    /// (ГОСТ 2.105: a long formula broken after a sign, the sign repeated).
+    /// (ГОСТ 2.105: a long formula broken after a sign, the sign repeated); a chain of four
+    /// sides or more also a line each side, shown when the second line is still too long
+    /// (a sum of substituted terms and its value).
     pub(super) fn formula(&mut self, math: &str) {
         let parts = top_level_equals(math);
         if parts.len() < 3 {
@@ -329,8 +331,13 @@ impl Markup {
             return;
         }
         let (first, rest) = (parts[..2].join(" &= "), parts[2..].join(" = "));
+        let steps = if parts.len() > 3 {
+            format!(", $ {first} \\ &= {} $", parts[2..].join(" \\ &= "))
+        } else {
+            String::new()
+        };
         self.out.push_str(&format!(
-            "#formula($ {math} $, $ {first} \\ &= {rest} $)\n\n"
+            "#formula($ {math} $, $ {first} \\ &= {rest} ${steps})\n\n"
         ));
     }
 
@@ -431,13 +438,17 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_chain_of_equalities_may_break_after_its_first_sign() {
+    fn a_chain_of_equalities_may_break_after_its_first_sign_or_each() {
         let mut m = Markup::default();
         m.formula("a = b");
         m.formula("a = b + c = 2");
+        // Four sides: also a line each, for a sum of substituted terms too long for one.
+        m.formula("a = b + c = 1 + 1 = 2");
         assert_eq!(
             m.finish(),
-            "$ a = b $\n\n#formula($ a = b + c = 2 $, $ a &= b + c \\ &= 2 $)\n\n"
+            "$ a = b $\n\n#formula($ a = b + c = 2 $, $ a &= b + c \\ &= 2 $)\n\n\
+             #formula($ a = b + c = 1 + 1 = 2 $, $ a &= b + c \\ &= 1 + 1 = 2 $, \
+             $ a &= b + c \\ &= 1 + 1 \\ &= 2 $)\n\n"
         );
     }
 
