@@ -57,6 +57,14 @@ impl Writer<'_, '_> {
         self.doc.formula(math);
     }
 
+    /// [`Self::formula`] set on one line or, when that is too wide, as `broken`
+    /// ([`super::markup::Markup::formula_or`]).
+    pub(super) fn formula_or(&mut self, one: &str, broken: &str) {
+        self.explained.settle();
+        self.explained.pending = Some(super::markup::first_side(one).to_owned());
+        self.doc.formula_or(one, broken);
+    }
+
     /// «где» and the symbols of `items` not yet explained in the note with this meaning,
     /// each «— meaning, unit», in the order given (the formula's); nothing when all are
     /// known.

@@ -341,6 +341,15 @@ impl Markup {
         ));
     }
 
+    /// A displayed formula, numbered: `one` on one line, or `broken` (its lines laid out by
+    /// the caller) where the note's `formula` measures `one` too wide to leave room for the
+    /// number — a count of characters only estimates the width a sum of primed, indexed
+    /// symbols takes.
+    pub(super) fn formula_or(&mut self, one: &str, broken: &str) {
+        self.out
+            .push_str(&format!("#formula($ {one} $, $ {broken} $)\n\n"));
+    }
+
     /// A table under its caption (ГОСТ 2.105: «Таблица N — caption» above it; on each page
     /// it continues onto, «Продолжение таблицы N» and the header repeated).
     pub(super) fn table(
@@ -449,6 +458,16 @@ mod tests {
             "$ a = b $\n\n#formula($ a = b + c = 2 $, $ a &= b + c \\ &= 2 $)\n\n\
              #formula($ a = b + c = 1 + 1 = 2 $, $ a &= b + c \\ &= 1 + 1 = 2 $, \
              $ a &= b + c \\ &= 1 + 1 \\ &= 2 $)\n\n"
+        );
+    }
+
+    #[test]
+    fn a_sum_laid_out_by_the_caller_is_the_other_form() {
+        let mut m = Markup::default();
+        m.formula_or("a + b = 0", "& a \\ & + b = 0");
+        assert_eq!(
+            m.finish(),
+            "#formula($ a + b = 0 $, $ & a \\ & + b = 0 $)\n\n"
         );
     }
 

@@ -268,11 +268,12 @@ pub(super) fn worked_equation(
             (name.clone(), "N*m", *value)
         }
     };
+    // On lines of its own, broken after a sign, where one line is too long.
+    let broken = format!("& {} = 0", lines(&pieces).join(" \\ "));
     if visible(&sum(&pieces)) <= EQUATION_CHARS {
-        w.formula(&format!("{} = 0", sum(&pieces)));
+        w.formula_or(&format!("{} = 0", sum(&pieces)), &broken);
     } else {
-        // On lines of its own, broken after a sign.
-        w.formula(&format!("& {} = 0", lines(&pieces).join(" \\ ")));
+        w.formula(&broken);
     }
     explain_owned(w, &items);
     w.doc.par(&[text(w.word(N::Whence))]);
