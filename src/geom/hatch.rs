@@ -94,14 +94,19 @@ pub fn hatch(outline: &[DVec2], spacing: f64, angle: f64) -> Result<Vec<Segment>
 mod tests {
     use super::*;
 
+    /// The square from (lo, lo) to (hi, hi), counterclockwise.
+    fn square(lo: f64, hi: f64) -> [DVec2; 4] {
+        [
+            DVec2::new(lo, lo),
+            DVec2::new(hi, lo),
+            DVec2::new(hi, hi),
+            DVec2::new(lo, hi),
+        ]
+    }
+
     #[test]
     fn strokes_run_at_the_angle_counted_counterclockwise_from_x() {
-        let square = [
-            DVec2::new(0.0, 0.0),
-            DVec2::new(20.0, 0.0),
-            DVec2::new(20.0, 20.0),
-            DVec2::new(0.0, 20.0),
-        ];
+        let square = square(0.0, 20.0);
         for deg in [30.0f64, 45.0, 60.0, 135.0] {
             let a = deg.to_radians();
             let strokes = hatch(&square, 2.0, a).unwrap();
@@ -115,12 +120,7 @@ mod tests {
 
     #[test]
     fn a_square_hatched_at_45_degrees_is_covered_at_its_spacing() {
-        let square = [
-            DVec2::new(10.0, 10.0),
-            DVec2::new(30.0, 10.0),
-            DVec2::new(30.0, 30.0),
-            DVec2::new(10.0, 30.0),
-        ];
+        let square = square(10.0, 30.0);
         let strokes = hatch(&square, 2.0, std::f64::consts::FRAC_PI_4).unwrap();
         // Area / spacing, within one stroke's length at either end.
         let total: f64 = strokes.iter().map(Segment::length).sum();

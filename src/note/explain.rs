@@ -51,18 +51,22 @@ impl Writer<'_, '_> {
     /// A displayed formula, numbered ([`super::markup::Markup::formula`]); its left side
     /// (up to the first sign of equality) is to be explained, here or before.
     pub(super) fn formula(&mut self, math: &str) {
-        self.explained.settle();
-        let lhs = super::markup::first_side(math).to_owned();
-        self.explained.pending = Some(lhs);
+        self.left_side_pending(math);
         self.doc.formula(math);
     }
 
     /// [`Self::formula`] set on one line or, when that is too wide, as `broken`
     /// ([`super::markup::Markup::formula_or`]).
     pub(super) fn formula_or(&mut self, one: &str, broken: &str) {
-        self.explained.settle();
-        self.explained.pending = Some(super::markup::first_side(one).to_owned());
+        self.left_side_pending(one);
         self.doc.formula_or(one, broken);
+    }
+
+    /// The left side of the formula `math` (up to its first sign of equality) to be
+    /// explained next, the one before settled.
+    fn left_side_pending(&mut self, math: &str) {
+        self.explained.settle();
+        self.explained.pending = Some(super::markup::first_side(math).to_owned());
     }
 
     /// «где» and the symbols of `items` not yet explained in the note with this meaning,

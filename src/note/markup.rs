@@ -330,15 +330,14 @@ impl Markup {
             self.out.push_str(&format!("$ {math} $\n\n"));
             return;
         }
-        let (first, rest) = (parts[..2].join(" &= "), parts[2..].join(" = "));
-        let steps = if parts.len() > 3 {
-            format!(", $ {first} \\ &= {} $", parts[2..].join(" \\ &= "))
+        let first = parts[..2].join(" &= ");
+        let broken = format!("{first} \\ &= {}", parts[2..].join(" = "));
+        if parts.len() > 3 {
+            let steps = format!("{first} \\ &= {}", parts[2..].join(" \\ &= "));
+            self.forms(&[math, &broken, &steps]);
         } else {
-            String::new()
-        };
-        self.out.push_str(&format!(
-            "#formula($ {math} $, $ {first} \\ &= {rest} ${steps})\n\n"
-        ));
+            self.forms(&[math, &broken]);
+        }
     }
 
     /// A displayed formula, numbered: `one` on one line, or `broken` (its lines laid out by
@@ -346,8 +345,15 @@ impl Markup {
     /// number — a count of characters only estimates the width a sum of primed, indexed
     /// symbols takes.
     pub(super) fn formula_or(&mut self, one: &str, broken: &str) {
+        self.forms(&[one, broken]);
+    }
+
+    /// The template's `formula` with its forms, the one line first: it sets the first that
+    /// leaves room for the number, else the last.
+    fn forms(&mut self, forms: &[&str]) {
+        let forms: Vec<String> = forms.iter().map(|f| format!("$ {f} $")).collect();
         self.out
-            .push_str(&format!("#formula($ {one} $, $ {broken} $)\n\n"));
+            .push_str(&format!("#formula({})\n\n", forms.join(", ")));
     }
 
     /// A table under its caption (ГОСТ 2.105: «Таблица N — caption» above it; on each page
