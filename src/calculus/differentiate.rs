@@ -1,6 +1,6 @@
 //! Graphical differentiation: the methods of chords (Fig. 9) and of tangents (Fig. 8).
 
-use super::read::read;
+use super::breaks::NodeReads;
 use super::*;
 use crate::scale::Quantity;
 
@@ -74,13 +74,17 @@ pub struct Derivative {
     pub mid: Vec<f64>,
     /// Abscissae of the nodes (node N of a periodic diagram is left out, as in the source).
     pub x_node: Vec<f64>,
-    /// Values at the nodes, physical units, as read from the smooth curve.
+    /// Values at the nodes, physical units, as read from the smooth curve (at a break of the
+    /// source, the piece's after it).
     pub node: Vec<f64>,
+    /// At every break of the source, the value the piece before it reaches there.
+    pub breaks: Vec<Break>,
     /// The source was periodic.
     pub periodic: bool,
-    /// The recorded rays from the pole, one per interval (chords) or node (tangents).
+    /// The recorded rays from the pole, one per interval (chords) or node (tangents; two at
+    /// a break, the piece's before it first).
     pub rays: Vec<StepId>,
-    /// The recorded smooth curve.
+    /// The recorded smooth curve (its last piece, when the source breaks).
     pub curve: StepId,
 }
 
@@ -90,7 +94,8 @@ impl Derivative {
     /// # Errors
     /// See [`Diagram::validate`].
     pub fn diagram(&self) -> Result<Diagram, CalculusError> {
-        Diagram::new(self.x0, self.dx, self.node.clone(), self.periodic)
+        Diagram::new(self.x0, self.dx, self.node.clone(), self.periodic)?
+            .with_breaks(self.breaks.clone())
     }
 }
 
@@ -124,7 +129,7 @@ pub fn pole_for(src: &Diagram, scales: Scales, preferred_mm: f64) -> Result<f64,
     }
     let run_mm = scales.x.to_mm(src.dx);
     let steepest = (0..src.intervals())
-        .map(|k| (scales.y.to_mm(src.at(k + 1)) - scales.y.to_mm(src.at(k))).abs() / run_mm)
+        .map(|k| (scales.y.to_mm(src.before(k + 1)) - scales.y.to_mm(src.at(k))).abs() / run_mm)
         .fold(0.0f64, f64::max);
     let h = if steepest > 0.0 && steepest.is_finite() {
         preferred_mm / steepest
@@ -151,8 +156,10 @@ struct Start<'a> {
     n: usize,
     /// Interval length on the drawing, mm.
     run: f64,
-    /// The given diagram's nodes 0..=N, figure mm.
+    /// The given diagram's nodes 0..=N, figure mm (at a break, the piece's after it).
     pts: Vec<DVec2>,
+    /// Where each interval's piece ends: node k + 1 of interval k (another point at a jump).
+    ends: Vec<DVec2>,
     /// The pole distance H, mm.
     pole_mm: f64,
 }
@@ -174,21 +181,30 @@ impl<'a> Start<'a> {
         )?;
         let n = src.intervals();
         let run = scales.x.to_mm(src.dx);
+        let node = |k: usize, y: f64| {
+            let p = at_mm(layout.source_origin, k as f64 * run, scales.y.to_mm(y));
+            finite(p, "given diagram")
+        };
         let pts = (0..=n)
-            .map(|k| {
-                let p = at_mm(
-                    layout.source_origin,
-                    k as f64 * run,
-                    scales.y.to_mm(src.at(k)),
-                );
-                finite(p, "given diagram")
-            })
+            .map(|k| node(k, src.at(k)))
+            .collect::<Result<Vec<_>, _>>()?;
+        let ends = (1..=n)
+            .map(|k| node(k, src.before(k)))
             .collect::<Result<Vec<_>, _>>()?;
         if layout.draw_source {
+            let pieces = src
+                .spans()
+                .into_iter()
+                .map(|(a, b)| {
+                    let mut piece = pts[a..b].to_vec();
+                    piece.push(ends[b - 1]);
+                    piece
+                })
+                .collect();
             draw_diagram(
                 figs.given(),
                 layout.source_origin,
-                pts.clone(),
+                pieces,
                 (6.0, run * n as f64),
                 (&layout.x_name, &layout.source_name),
                 Role::Given,
@@ -201,6 +217,7 @@ impl<'a> Start<'a> {
             n,
             run,
             pts,
+            ends,
             pole_mm,
         })
     }
@@ -220,6 +237,7 @@ impl<'a> Start<'a> {
             mid: Vec::new(),
             x_node: (0..nodes).map(|k| src.x(k)).collect(),
             node: Vec::with_capacity(nodes),
+            breaks: Vec::new(),
             periodic: src.periodic,
             rays: Vec::with_capacity(nodes),
             curve: pc.pole_id,
@@ -228,7 +246,9 @@ impl<'a> Start<'a> {
 }
 
 /// The pole construction shared by both methods: for each direction, the point where the
-/// ray from P parallel to it cuts the ordinate axis. Draws the axes and the pole.
+/// ray from P parallel to it cuts the ordinate axis. Draws the axes, around the cuts and the
+/// ordinates (figure mm) `curve` finds the derivative's curve reaching from them, and the
+/// pole.
 struct PoleCut {
     pole_mm: f64,
     pole: DVec2,
@@ -243,6 +263,7 @@ fn pole_cuts(
     pole_mm: f64,
     dirs: &[DVec2],
     extent: f64,
+    curve: impl FnOnce(&[DVec2]) -> Vec<f64>,
 ) -> Result<PoleCut, CalculusError> {
     let o = layout.origin;
     let axis_x = layout.ray_x(o);
@@ -255,11 +276,13 @@ fn pole_cuts(
         .map(|(k, &d)| cut(rec, Line::new(pole, d), axis, k, "ordinate axis"))
         .collect::<Result<Vec<_>, _>>()?;
     let axis_id = if layout.draw_axes {
+        let mut reached = cuts.clone();
+        reached.extend(curve(&cuts).into_iter().map(|y| DVec2::new(o.x, y)));
         Some(
             axes_around(
                 rec,
                 o,
-                &cuts,
+                &reached,
                 (pole_mm + 6.0, extent),
                 (&layout.x_name, &layout.name),
             )
@@ -324,25 +347,30 @@ fn ray_and_project(
 fn chords(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusError> {
     let (n, run, pts) = (st.n, st.run, &st.pts);
     let (src, layout) = (st.src, st.layout);
-    let chords: Vec<StepId> = pts
-        .windows(2)
-        .enumerate()
-        .map(|(k, w)| {
+    let chords: Vec<StepId> = (0..n)
+        .map(|k| {
             thin(
                 figs.given(),
                 format!("chord {k}–{}", k + 1),
-                w[0],
-                w[1],
+                pts[k],
+                st.ends[k],
                 &[],
             )
         })
         .collect();
     let chords = figs.across(&chords);
     let rec = figs.built();
-    let dirs: Vec<DVec2> = pts.windows(2).map(|w| w[1] - w[0]).collect();
-    let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64)?;
-    let mut d = st.derivative(Method::Chords, &pc);
+    let dirs: Vec<DVec2> = (0..n).map(|k| st.ends[k] - pts[k]).collect();
     let o = layout.origin;
+    let curve = |cuts: &[DVec2]| {
+        let mids: Vec<f64> = cuts.iter().map(|c| c.y - o.y).collect();
+        let reads = NodeReads::of(src, &mids);
+        (reads.right.iter().chain(&reads.left))
+            .map(|y| o.y + y)
+            .collect()
+    };
+    let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64, curve)?;
+    let mut d = st.derivative(Method::Chords, &pc);
     for k in 0..n {
         // The cut goes across to the end of its interval nearer the vertical it lies on.
         let (start, end) = (o.x + k as f64 * run, o.x + (k + 1) as f64 * run);
@@ -387,45 +415,77 @@ fn chords(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusErro
         mid.push(read_ordinate(rec, o, p).1);
         mid_pts.push(p);
     }
+    let curve = chord_nodes(figs, st, &pc, &mid_pts, stair, &mut d)?;
+    d.x_mid = (0..n).map(|k| src.x0 + (k as f64 + 0.5) * src.dx).collect();
+    d.mid = mid;
+    d.curve = curve;
+    finish(d)
+}
+
+/// The chords' node values read off the smooth curve through the mid-interval points
+/// `mid_pts` (each piece's own, when the source breaks; an end the law's tangent fixes from
+/// the ray parallel to it) into `d`, with the values before the breaks marked; the curve
+/// drawn a piece a span. Returns the (last) curve step.
+fn chord_nodes(
+    figs: &mut Figures<'_>,
+    st: &Start,
+    pc: &PoleCut,
+    mid_pts: &[DVec2],
+    stair: StepId,
+    d: &mut Derivative,
+) -> Result<StepId, CalculusError> {
+    let (n, run, src, layout) = (st.n, st.run, st.src, st.layout);
+    let o = layout.origin;
     let drawn: Vec<f64> = mid_pts.iter().map(|p| p.y - o.y).collect();
-    let mut node_pts: Vec<DVec2> = (0..=n)
-        .map(|k| {
-            let y = read(&drawn, 0.5, src.periodic, k as f64);
-            DVec2::new(o.x + k as f64 * run, o.y + y)
-        })
-        .collect();
+    let reads = NodeReads::of(src, &drawn);
+    let at = |k: usize, y: f64| DVec2::new(o.x + k as f64 * run, o.y + y);
+    let mut node_pts: Vec<DVec2> = (0..=n).map(|k| at(k, reads.right[k])).collect();
     // An end whose tangent the law fixes: the node there from the ray parallel to it.
     for (k, dir) in [(0, layout.end_tangents[0]), (n, layout.end_tangents[1])] {
         if let Some(dir) = dir {
-            node_pts[k] = end_node(figs, st, &pc, k, dir)?;
+            node_pts[k] = end_node(figs, st, pc, k, dir)?;
         }
     }
     let rec = figs.built();
-    let node: Vec<f64> = node_pts[..d.x_node.len()]
+    d.node = node_pts[..d.x_node.len()]
         .iter()
         .map(|&p| read_ordinate(rec, o, p).1)
         .collect();
-    let mut curve_pts = Vec::with_capacity(n + 2);
-    curve_pts.push(node_pts[0]);
-    curve_pts.extend_from_slice(&mid_pts);
-    curve_pts.push(node_pts[n]);
-    let curve = rec.draw(
-        format!(
-            "smooth curve {} through the mid-interval points",
-            layout.name
-        ),
-        Item::Curve {
-            points: curve_pts,
-            closed: false,
-        },
-        Role::Result,
-        &[stair],
-    );
-    d.x_mid = (0..n).map(|k| src.x0 + (k as f64 + 0.5) * src.dx).collect();
-    d.mid = mid;
-    d.node = node;
-    d.curve = curve;
-    finish(d)
+    for (b, &left) in src.breaks.iter().zip(&reads.left) {
+        let p = at(b.node, left);
+        rec.draw(
+            format!(
+                "node point {} where the piece before the break ends",
+                b.node
+            ),
+            Item::Point(p),
+            Role::Result,
+            &[stair],
+        );
+        d.breaks.push(Break {
+            node: b.node,
+            left: read_ordinate(rec, o, p).1,
+        });
+    }
+    let mut curve = pc.pole_id;
+    for (a, b) in src.spans() {
+        let mut points = vec![node_pts[a]];
+        points.extend_from_slice(&mid_pts[a..b]);
+        points.push(reads.left_at(src, b).map_or(node_pts[b], |y| at(b, y)));
+        curve = rec.draw(
+            format!(
+                "smooth curve {} through the mid-interval points",
+                layout.name
+            ),
+            Item::Curve {
+                points,
+                closed: false,
+            },
+            Role::Result,
+            &[stair],
+        );
+    }
+    Ok(curve)
 }
 
 /// Half the length of a tangent drawn at a diagram's end, mm.
@@ -511,66 +571,127 @@ fn finish(d: Derivative) -> Result<Derivative, CalculusError> {
 /// # Errors
 /// As for the method of chords.
 fn tangents(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusError> {
-    let (n, run, pts) = (st.n, st.run, &st.pts);
+    let (n, run) = (st.n, st.run);
     let (src, layout) = (st.src, st.layout);
-    let nodes = if src.periodic { n } else { n + 1 };
-    let shift = DVec2::new(run * n as f64, 0.0);
-    let mut tangents = Vec::with_capacity(nodes);
-    let mut dirs = Vec::with_capacity(nodes);
+    let lines = tangent_lines(st);
     let given = figs.given();
-    for k in 0..nodes {
-        let (a, b) = match (k, src.periodic) {
-            (0, true) => (pts[n - 1] - shift, pts[1]),
-            (0, false) => (pts[0], pts[1]),
-            (k, false) if k == n => (pts[n - 1], pts[n]),
-            (k, _) => (pts[k - 1], pts[k + 1]),
-        };
-        let half = (b - a) * 0.5;
-        tangents.push(thin(
-            given,
-            format!("tangent at node {k} ∥ chord of its neighbours"),
-            pts[k] - half,
-            pts[k] + half,
-            &[],
-        ));
-        dirs.push(b - a);
-    }
+    let tangents: Vec<StepId> = lines
+        .iter()
+        .map(|t| {
+            let half = (t.to - t.from) * 0.5;
+            let note = match (src.break_at(t.node), t.before) {
+                (None, _) => format!("tangent at node {} ∥ chord of its neighbours", t.node),
+                (Some(_), true) => format!("tangent at node {} ∥ the chord before it", t.node),
+                (Some(_), false) => format!("tangent at node {} ∥ the chord after it", t.node),
+            };
+            thin(given, note, t.through - half, t.through + half, &[])
+        })
+        .collect();
     let tangents = figs.across(&tangents);
     let rec = figs.built();
-    let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64)?;
+    let dirs: Vec<DVec2> = lines.iter().map(|t| t.to - t.from).collect();
+    let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64, |_| {
+        Vec::new()
+    })?;
     let mut d = st.derivative(Method::Tangents, &pc);
     let o = layout.origin;
-    let mut curve_pts = Vec::with_capacity(nodes + 1);
-    for k in 0..nodes {
-        let (ray, p) = ray_and_project(
-            rec,
-            &pc,
-            k,
-            o.x + k as f64 * run,
-            tangents.get(k..=k).unwrap_or(&[]),
-        );
+    let mut node_pts = vec![DVec2::ZERO; n + 1];
+    let mut left_pts = Vec::with_capacity(src.breaks.len());
+    for (i, t) in lines.iter().enumerate() {
+        let x = o.x + t.node as f64 * run;
+        let (ray, p) = ray_and_project(rec, &pc, i, x, tangents.get(i..=i).unwrap_or(&[]));
         rec.draw(
-            format!("node point {k}"),
+            format!("node point {}", t.node),
             Item::Point(p),
             Role::Result,
             &[ray],
         );
-        d.node.push(read_ordinate(rec, o, p).1);
-        curve_pts.push(p);
+        let value = read_ordinate(rec, o, p).1;
+        if t.before {
+            d.breaks.push(Break {
+                node: t.node,
+                left: value,
+            });
+            left_pts.push(p);
+        } else {
+            d.node.push(value);
+            node_pts[t.node] = p;
+        }
         d.rays.push(ray);
     }
     if src.periodic {
-        let first = curve_pts[0];
-        curve_pts.push(first + shift);
+        node_pts[n] = node_pts[0] + DVec2::new(run * n as f64, 0.0);
     }
-    d.curve = rec.draw(
-        format!("smooth curve {} through the node points", layout.name),
-        Item::Curve {
-            points: curve_pts,
-            closed: false,
-        },
-        Role::Result,
-        &d.rays,
-    );
+    for (a, b) in src.spans() {
+        let mut points = node_pts[a..b].to_vec();
+        let left = src.breaks.iter().position(|x| Some(x) == src.break_at(b));
+        points.push(match left {
+            Some(i) => left_pts[i] + DVec2::new(if b == n { run * n as f64 } else { 0.0 }, 0.0),
+            None => node_pts[b],
+        });
+        d.curve = rec.draw(
+            format!("smooth curve {} through the node points", layout.name),
+            Item::Curve {
+                points,
+                closed: false,
+            },
+            Role::Result,
+            &d.rays,
+        );
+    }
     finish(d)
+}
+
+/// A draughtsman's tangent of the method of tangents.
+struct Tangent {
+    /// Its node.
+    node: usize,
+    /// It is the tangent of the piece ending at the node (a break's left side).
+    before: bool,
+    /// The chord it is parallel to, from and to (figure mm).
+    from: DVec2,
+    to: DVec2,
+    /// The point it is drawn through.
+    through: DVec2,
+}
+
+/// The tangent at every node, parallel to the chord joining its two neighbouring nodes
+/// (wrapping for a periodic diagram; at the ends of an open one, the adjacent chord); at a
+/// break one for each piece, parallel to the piece's chord at the node. A break's left side
+/// comes before its right.
+fn tangent_lines(st: &Start) -> Vec<Tangent> {
+    let (n, src, pts, ends) = (st.n, st.src, &st.pts, &st.ends);
+    let nodes = if src.periodic { n } else { n + 1 };
+    let shift = DVec2::new(st.run * n as f64, 0.0);
+    // The interval before node k (k > 0, or a periodic diagram's last): its start and end.
+    let before = |k: usize| {
+        if k == 0 {
+            (pts[n - 1] - shift, ends[n - 1] - shift)
+        } else {
+            (pts[k - 1], ends[k - 1])
+        }
+    };
+    let mut out = Vec::with_capacity(nodes + src.breaks.len());
+    for k in 0..nodes {
+        let tangent = |before: bool, (from, to): (DVec2, DVec2), through: DVec2| Tangent {
+            node: k,
+            before,
+            from,
+            to,
+            through,
+        };
+        if src.break_at(k).is_some() {
+            let (from, to) = before(k);
+            out.push(tangent(true, (from, to), to));
+            out.push(tangent(false, (pts[k], ends[k]), pts[k]));
+            continue;
+        }
+        let chord = match (k, src.periodic) {
+            (0, false) => (pts[0], ends[0]),
+            (k, false) if k == n => before(n),
+            (k, _) => (before(k).0, ends[k]),
+        };
+        out.push(tangent(false, chord, pts[k]));
+    }
+    out
 }

@@ -118,7 +118,8 @@ pub fn integral_scale(
 /// Node values are the drawn ordinates measured with `Recorder::measure`.
 ///
 /// # Errors
-/// An invalid integrand, H ≤ 0, a recorder at another scale, or values too large to draw.
+/// An invalid integrand, one with breaks ([`CalculusError::Broken`]), H ≤ 0, a recorder at
+/// another scale, or values too large to draw.
 pub fn integrate_chords(
     rec: &mut Recorder,
     src: &Diagram,
@@ -154,6 +155,9 @@ pub fn integrate_chords_in(
     start: f64,
     layout: &Layout,
 ) -> Result<Integral, CalculusError> {
+    if let Some(b) = src.breaks.first() {
+        return Err(CalculusError::Broken { node: b.node });
+    }
     let (n, means) = match sampling {
         Sampling::Nodes => {
             src.validate()?;
@@ -303,7 +307,7 @@ fn chords_through(
         draw_diagram(
             given,
             so,
-            d.curve.clone().unwrap_or_else(|| m_pts.clone()),
+            vec![d.curve.clone().unwrap_or_else(|| m_pts.clone())],
             (pole_mm + 6.0, extent),
             (&layout.x_name, &layout.source_name),
             Role::Given,

@@ -38,6 +38,7 @@
 //! point belongs on every jump (the intervals need not then be equal).
 
 mod bounds;
+mod breaks;
 mod differentiate;
 mod integrate;
 mod layout;
@@ -46,9 +47,12 @@ mod read;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_breaks;
+#[cfg(test)]
 mod tests_divided;
 
 pub use bounds::{chord_mid_bound, chord_node_bound, midpoint_rule_bound};
+pub use breaks::Break;
 pub use differentiate::{derivative_scale, pole_for, Derivative, Method};
 pub use integrate::{
     integral_scale, integrate_chords, integrate_chords_in, integrate_divided_in, Divided, Integral,
@@ -73,11 +77,28 @@ pub struct Diagram {
     /// `y` is one full cycle: node N ≡ node 0 is not stored and the intervals wrap around
     /// (N = `y.len()` intervals); otherwise N = `y.len() − 1`.
     pub periodic: bool,
+    /// Nodes where the curve has a corner or a jump, in node order (none: smooth throughout).
+    pub breaks: Vec<Break>,
 }
 
 /// Why a graphical-calculus construction cannot be carried out.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum CalculusError {
+    /// A break outside the diagram's inner nodes, or given twice.
+    #[error("a break at node {node} lies outside the diagram's inner nodes or is given twice")]
+    BadBreak {
+        /// The node given.
+        node: usize,
+    },
+    /// Graphical integration over equal intervals of a diagram that breaks.
+    #[error(
+        "the integrand breaks at node {node}: integrate it over a division with a division \
+         point at every break (integrate_divided_in)"
+    )]
+    Broken {
+        /// The first break.
+        node: usize,
+    },
     /// A given number is NaN or infinite.
     #[error("{what} [{index}] is not a finite number: {value}", value = crate::scale::format_plain(*value))]
     NonFinite {
@@ -166,6 +187,7 @@ impl Diagram {
             dx,
             y,
             periodic,
+            breaks: Vec::new(),
         };
         d.validate()?;
         Ok(d)
@@ -189,11 +211,11 @@ impl Diagram {
         Self::new(x0, dx, y, periodic)
     }
 
-    /// Finite values, `dx > 0`, at least 2 intervals.
+    /// Finite values, `dx > 0`, at least 2 intervals, breaks at inner nodes.
     ///
     /// # Errors
     /// [`CalculusError::NonFinite`], [`CalculusError::BadInterval`],
-    /// [`CalculusError::TooFewIntervals`].
+    /// [`CalculusError::TooFewIntervals`], [`CalculusError::BadBreak`].
     pub fn validate(&self) -> Result<(), CalculusError> {
         if !self.x0.is_finite() {
             return Err(CalculusError::NonFinite {
@@ -217,7 +239,7 @@ impl Diagram {
                 intervals: self.intervals(),
             });
         }
-        Ok(())
+        self.validate_breaks()
     }
 
     /// Number of intervals N.
@@ -411,27 +433,30 @@ fn cut(
     }
 }
 
-/// Draw a diagram's curve through `points` (figure mm) with its axes; `extent` is the
-/// abscissa length in mm. Returns the curve step.
+/// Draw a diagram's curve, a piece through each run of `pieces` (figure mm; one run unless
+/// the curve breaks), with its axes; `extent` is the abscissa length in mm.
 fn draw_diagram(
     rec: &mut Recorder,
     origin: DVec2,
-    points: Vec<DVec2>,
+    pieces: Vec<Vec<DVec2>>,
     span: (f64, f64),
     names: (&str, &str),
     role: Role,
-) -> StepId {
-    let (ax, ay) = axes_around(rec, origin, &points, span, names);
+) {
+    let all: Vec<DVec2> = pieces.iter().flatten().copied().collect();
+    let (ax, ay) = axes_around(rec, origin, &all, span, names);
     // The division ordinates are implied by the nodes; the curve itself:
-    rec.draw(
-        format!("curve {}", names.1),
-        Item::Curve {
-            points,
-            closed: false,
-        },
-        role,
-        &[ax, ay],
-    )
+    for points in pieces {
+        rec.draw(
+            format!("curve {}", names.1),
+            Item::Curve {
+                points,
+                closed: false,
+            },
+            role,
+            &[ax, ay],
+        );
+    }
 }
 
 /// Draw the pole at `pole` with its label and the dimension H to `origin` (the foot of the

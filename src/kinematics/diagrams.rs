@@ -74,6 +74,8 @@ pub struct Diagrams {
     pub readings: Figure,
     /// S, v = |ω₁|·dS/dφ₁, a = ω₁²·d²S/dφ₁² at the numbered positions against the twin.
     pub rows: Vec<Row>,
+    /// The positions where S has a corner (a change point): each side differentiated alone.
+    pub corners: Vec<String>,
 }
 
 /// The charted point (the scene's, or the first slider output) and the direction its
@@ -233,7 +235,7 @@ pub fn diagrams(
         error,
     };
     let (s, reader) = read_displacement(plan, &numbered, (k, dir), scale_l, ctx);
-    let src = turn_diagram(s.clone()).map_err(|e| fail("S", e))?;
+    let src = displacement(&numbered, s.clone()).map_err(|e| fail("S", e))?;
     let scales = chart_scales(spec, &s, size)?;
     let (h1, mu1) = pole_and_scale(
         spec.pole_h1,
@@ -340,7 +342,24 @@ pub fn diagrams(
         s,
         readings: reader,
         rows,
+        corners: (src.breaks.iter())
+            .map(|b| numbered[b.node].1.label.clone())
+            .collect(),
     }))
+}
+
+/// S over the crank's turn at the `numbered` positions: a corner at every position where a
+/// group's links lie on one line (a change point), which the mechanism leaves on its other
+/// branch, so that each side is differentiated alone.
+fn displacement(
+    numbered: &[(usize, &crate::linkage::PlanPosition)],
+    s: Vec<f64>,
+) -> Result<Diagram, calculus::CalculusError> {
+    let corners: Vec<usize> = (numbered.iter().enumerate())
+        .filter(|(_, (_, p))| p.pose.toggle.is_some())
+        .map(|(idx, _)| idx)
+        .collect();
+    turn_diagram(s)?.with_corners(&corners)
 }
 
 /// Lowest and highest drawn ordinate (mm) of the chord derivative of `d` at μ = `mu`, with 0
@@ -356,5 +375,6 @@ pub(super) fn ordinates(
     let mut r = Recorder::in_context("scratch", mu, &ctx.with_drafting(Drafting::EXACT));
     let lay = Layout::new(DVec2::ZERO, DVec2::ZERO).with_source(false);
     let dv = calculus::Method::Chords.differentiate(&mut r, d, scales, h, &lay)?;
-    Ok(extent(dv.mid.iter().chain(&dv.node), mu))
+    let left = dv.breaks.iter().map(|b| &b.left);
+    Ok(extent(dv.mid.iter().chain(&dv.node).chain(left), mu))
 }

@@ -24,6 +24,11 @@ pub(super) fn diagrams(w: &mut Writer<'_, '_>, kin: &Kinematics, at: Option<&str
     w.heading(2, T::KinematicDiagrams);
     w.doc.say(w.word(T::ChordMethod));
     scales(w, d);
+    if !d.corners.is_empty() {
+        let at = d.corners.join(", ");
+        let (when, what) = (w.word(T::AtPositions), w.word(T::CornerOfS));
+        w.doc.say(&format!("{when} {at} {what}"));
+    }
     w.doc.say(w.word(T::DiagramValues));
     let w1 = kin.w1.abs();
     diagram_table(w, d, w1, &chords, at);

@@ -199,6 +199,14 @@ fn diagram_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
             dec(d.second.scale.value() * w * w),
             Quantity::Acceleration.unit(lang)
         ));
+        if !d.corners.is_empty() {
+            lines.push(format!(
+                "{} {}: {}",
+                Text::Pos.get(lang),
+                d.corners.join(", "),
+                Text::CornerOfS.get(lang)
+            ));
+        }
     }
     diagrams
 }

@@ -18,6 +18,7 @@ catalogue! {
         DeceleratingLinks => ("замедленно —", "сповільнено —", "decelerating:"),
         NoLinks => ("нет", "немає", "none"),
         DiagramsOfPoint => ("Диаграммы точки", "Діаграми точки", "Diagrams of point"),
+        CornerOfS => ("излом диаграммы S: каждая ветвь дифференцируется отдельно", "злам діаграми S: кожна гілка диференціюється окремо", "a corner of S: each branch is differentiated on its own"),
         Hodograph => ("Годограф", "Годограф", "Hodograph"),
         KinematicAnalysis => ("Кинематический анализ", "Кінематичний аналіз", "Kinematic analysis"),
         AnalyticSolution => ("Аналитический расчёт", "Аналітичний розрахунок", "Analytic solution"),

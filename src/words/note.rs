@@ -116,6 +116,12 @@ catalogue! {
             "Діаграму переміщень будуємо за планом положень; діаграми аналогів швидкості і прискорення отримуємо графічним диференціюванням методом хорд з полюсними відстанями H₁ і H₂. Масштаби похідних:",
             "The displacement diagram from the plan of positions; the analogues of velocity and acceleration by graphical differentiation (the method of chords) with the pole distances H₁ and H₂. The scales of the derivatives:"
         ),
+        AtPositions => ("В положении", "У положенні", "At position"),
+        CornerOfS => (
+            "звенья группы ложатся на одну прямую, и механизм переходит на другую ветвь: диаграмма перемещений имеет здесь излом. Каждую её ветвь дифференцируем отдельно, и производные в этом положении имеют по два значения — в конце одной ветви и в начале другой.",
+            "ланки групи лягають на одну пряму, і механізм переходить на іншу гілку: діаграма переміщень має тут злам. Кожну її гілку диференціюємо окремо, і похідні в цьому положенні мають по два значення — в кінці однієї гілки і на початку іншої.",
+            "the group's links fall into one line and the mechanism passes onto its other branch: the displacement diagram has a corner there. Each branch is differentiated on its own, and the derivatives have two values at that position, at the end of one branch and at the start of the other."
+        ),
         DiagramValues => (
             "Скорость и ускорение: V = ω₁·(dS/dφ), a = ω₁²·(d²S/dφ²); значения в положениях механизма — в таблице.",
             "Швидкість і прискорення: V = ω₁·(dS/dφ), a = ω₁²·(d²S/dφ²); значення в положеннях механізму — у таблиці.",

@@ -609,3 +609,56 @@ fn the_chart_takes_the_room_of_its_sheet() {
         }
     }
 }
+
+/// The six-bar's change point (position 6, links 2 and 3 in line) is a corner of S(φ): the
+/// chart draws S as a piece on each side and differentiates each alone, so the positions
+/// beside it read their v and a off their own piece. One smooth curve across the corner read
+/// v 28 % off at position 5 and 63 % at 7, a 95 % at 5.
+#[test]
+fn the_six_bar_chart_breaks_at_its_change_point() {
+    let v = report_json("constructions/six-bar.toml", "0");
+    let delta = |q: &str, position: &str| {
+        rows(&v)
+            .into_iter()
+            .find(|r| {
+                r["quantity"] == q && r["position"] == position && r["method"] == "diagram-chords"
+            })
+            .and_then(|r| r["rel_error"].as_f64())
+            .unwrap_or_else(|| panic!("no {q} at {position}"))
+            .abs()
+    };
+    for (q, position, bound) in [
+        ("v_E", "5", 0.01),
+        ("v_E", "7", 0.16),
+        ("a_E", "4", 0.04),
+        ("a_E", "5", 0.03),
+        ("a_E", "7", 0.04),
+    ] {
+        let d = delta(q, position);
+        assert!(d < bound, "{q} at {position}: {:.1} %", 100.0 * d);
+    }
+    let scene = tmm::load(&root().join("constructions/six-bar.toml")).expect("six-bar");
+    let session = tmm::study::Session::new(&scene, Drafting::EXACT);
+    let study = session
+        .kinematics(&session.kin_scales().expect("scales"))
+        .expect("kinematics");
+    let chart = study.diagrams.as_ref().expect("the S chart");
+    assert_eq!(
+        chart
+            .first
+            .breaks
+            .iter()
+            .map(|b| b.node)
+            .collect::<Vec<_>>(),
+        vec![5],
+        "position 6 is node 5"
+    );
+    let curves = |f: &tmm::construct::Figure| {
+        (f.steps.iter())
+            .filter(|s| matches!(s.item, tmm::construct::Item::Curve { .. }))
+            .count()
+    };
+    // S and dS/dφ a piece on each side of the corner; d²S/dφ² likewise.
+    assert_eq!(curves(&chart.first_figure), 4);
+    assert_eq!(curves(&chart.second_figure), 2);
+}
