@@ -52,6 +52,11 @@ struct Span {
     stub: (f64, f64),
 }
 
+/// Whether a box and a horizontal line (a box of no height) cross.
+fn crosses(room: &Room, line: &Room) -> bool {
+    room.0.y < line.0.y && line.0.y < room.1.y && room.0.x < line.1.x && line.0.x < room.1.x
+}
+
 /// Whether two boxes overlap.
 fn overlaps(a: &Room, b: &Room) -> bool {
     a.0.x < b.1.x && b.0.x < a.1.x && a.0.y < b.1.y && b.0.y < a.1.y
@@ -66,12 +71,15 @@ struct Run {
 }
 
 /// A wheel as the scheme draws it: its plane's x, its axis's height, the heights of its
-/// poles, and whether it is a ring.
+/// poles, whether it is a ring, and where a ring's name stands: left of its cup (else
+/// right), and how far from the axis up the cup (a fraction of the way to its pole).
 struct WheelMark {
     x: f64,
     y: f64,
     ends: Vec<f64>,
     internal: bool,
+    name_left: bool,
+    name_up: f64,
 }
 
 impl WheelMark {
@@ -82,12 +90,17 @@ impl WheelMark {
             .fold((self.y, self.y), |(l, h), e| (l.min(*e), h.max(*e)))
     }
 
+    /// The way its name is written from [`WheelMark::name_at`].
+    fn name_toward(&self) -> DVec2 {
+        DVec2::new(if self.name_left { -1.0 } else { 1.0 }, 0.0)
+    }
+
     /// Where its name `z_i = N` is written: beside its line (a ring's cup), halfway to its
     /// farther pole.
     fn name_at(&self) -> DVec2 {
         if self.internal {
             let first = self.ends.first().copied().unwrap_or(self.y);
-            return DVec2::new(self.x + CUP_MM, 0.5 * (self.y + first));
+            return DVec2::new(self.x + CUP_MM, self.y + self.name_up * (first - self.y));
         }
         let (lo, hi) = self.extent();
         let top = if hi - self.y >= self.y - lo { hi } else { lo };
@@ -102,15 +115,22 @@ impl WheelMark {
         } else {
             self.x + BAR_MM
         };
-        let at = self.name_at();
-        let half = 0.5 * SUPPORT_ROOM_MM[3];
         vec![
             (DVec2::new(self.x - BAR_MM, lo), DVec2::new(right, hi)),
-            (
-                DVec2::new(at.x, at.y - half),
-                DVec2::new(at.x + 1.0 + name_width(name), at.y + half),
-            ),
+            self.name_room(name),
         ]
+    }
+
+    /// The box its name `name` takes.
+    fn name_room(&self, name: &str) -> Room {
+        let at = self.name_at();
+        let half = 0.5 * SUPPORT_ROOM_MM[3];
+        let wide = 1.0 + name_width(name);
+        let x0 = if self.name_left { at.x - wide } else { at.x };
+        (
+            DVec2::new(x0, at.y - half),
+            DVec2::new(x0 + wide, at.y + half),
+        )
     }
 }
 
@@ -154,7 +174,7 @@ pub(super) fn draw_scheme(
         let same = (0..k).filter(|&j| axis[j] == axis[k]).count();
         drawn_y[k] = height(*y) - same as f64 * COAXIAL_MM;
     }
-    let marks: Vec<WheelMark> = train
+    let mut marks: Vec<WheelMark> = train
         .wheels
         .iter()
         .enumerate()
@@ -169,15 +189,28 @@ pub(super) fn draw_scheme(
                 .map(|(_, p)| height(*p))
                 .collect(),
             internal: wheel.internal,
+            name_left: false,
+            name_up: 0.5,
         })
         .collect();
+    let arm = arm_x(train, &wheel_x);
+    let spans = spans(train, &wheel_x, arm);
+    // The shafts as far as their wheels reach (run out to their supports later).
+    let shafts: Vec<Room> = (spans.iter().zip(&drawn_y))
+        .filter_map(|(span, &y)| {
+            let s = span.as_ref()?;
+            Some((
+                DVec2::new(s.lo - s.stub.0, y),
+                DVec2::new(s.hi + s.stub.1, y),
+            ))
+        })
+        .collect();
+    name_rings_clear(&mut marks, train, &shafts);
     let mut taken: Vec<Room> = marks
         .iter()
         .enumerate()
         .flat_map(|(w, m)| m.rooms(&wheel_name(train, w)))
         .collect();
-    let arm = arm_x(train, &wheel_x);
-    let spans = spans(train, &wheel_x, arm);
     let mut runs = runs(train, (&spans, &axis), &drawn_y, &mut taken);
     let edge = taken
         .iter()
@@ -196,6 +229,55 @@ pub(super) fn draw_scheme(
         }
     }
     draw_shafts(rec, train, &runs, &drawn_y, arm.map(|x| x + dx));
+}
+
+/// Where a ring's name is tried, in order: (left of the cup, the fraction of the way up it).
+const RING_NAME_PLACES: [(bool, f64); 8] = [
+    (false, 0.5),
+    (true, 0.5),
+    (false, 0.35),
+    (false, 0.65),
+    (true, 0.35),
+    (true, 0.65),
+    (false, 0.2),
+    (false, 0.8),
+];
+/// How clear of the other lines a ring's name is set, figure mm.
+const NAME_CLEAR_MM: f64 = 1.5;
+
+/// A ring's name goes to the first of [`RING_NAME_PLACES`] where its box, [`NAME_CLEAR_MM`]
+/// about, meets no other wheel's line and no shaft (`shafts`): beside the cup's middle, level
+/// with a satellite's axle or the end of a wheel inside it, it reads as theirs. Where none is
+/// clear, the first.
+fn name_rings_clear(marks: &mut [WheelMark], train: &Train, shafts: &[Room]) {
+    let lines: Vec<Room> = marks
+        .iter()
+        .map(|m| {
+            let (lo, hi) = m.extent();
+            let x = if m.internal { m.x + CUP_MM } else { m.x };
+            (DVec2::new(x - BAR_MM, lo), DVec2::new(x + BAR_MM, hi))
+        })
+        .collect();
+    for (w, mark) in marks.iter_mut().enumerate() {
+        if !mark.internal {
+            continue;
+        }
+        let name = wheel_name(train, w);
+        let clear = |m: &WheelMark| {
+            let (lo, hi) = m.name_room(&name);
+            let room = (
+                lo - DVec2::splat(NAME_CLEAR_MM),
+                hi + DVec2::splat(NAME_CLEAR_MM),
+            );
+            !(lines.iter().enumerate()).any(|(j, line)| j != w && overlaps(&room, line))
+                && !shafts.iter().any(|shaft| crosses(&room, shaft))
+        };
+        let place = RING_NAME_PLACES.into_iter().find(|&(left, up)| {
+            (mark.name_left, mark.name_up) = (left, up);
+            clear(mark)
+        });
+        (mark.name_left, mark.name_up) = place.unwrap_or(RING_NAME_PLACES[0]);
+    }
 }
 
 /// Wheel `w` edge-on in its plane: from the axis to the poles where it meshes (the half of
@@ -235,7 +317,7 @@ fn draw_wheel(rec: &mut Recorder, train: &Train, w: usize, mark: &WheelMark) {
             id.get_or_insert(rim);
         }
         if let Some(id) = id {
-            rec.label(id, name, mark.name_at(), DVec2::new(1.0, 0.0));
+            rec.label(id, name, mark.name_at(), mark.name_toward());
         }
         return;
     }

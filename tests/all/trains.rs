@@ -304,3 +304,79 @@ fn pz2_examples_read_by_hand_within_five_per_cent() {
         assert!(((g - a) / a).abs() < 0.05, "{scene}: {g} against {a}");
     }
 }
+
+/// How clear of another wheel's line or a shaft a wheel's name stands, sheet mm.
+const NAME_CLEAR_MM: f64 = 1.0;
+
+/// Every wheel of a train's scheme is named clear of every line that is not its own — the
+/// other wheels', the shafts and axles: PZ2's ring «z₂ = 100» stood beside the satellite's
+/// axle, level with it and touching its end, and read as the satellite's name.
+#[test]
+fn every_wheel_of_a_train_scheme_is_named_clear_of_the_other_lines() {
+    use tmm::construct::Item;
+    use tmm::plate::{layout, Rect, View};
+    let mut near = Vec::new();
+    for scene in [
+        "gears-differential",
+        "gears-pz2",
+        "gears-pz2-ex1",
+        "gears-pz2-ex2",
+        "shaper",
+    ] {
+        let path = support::root().join(format!("constructions/{scene}.toml"));
+        let s = tmm::load(&path).expect("scene");
+        let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
+        let plates =
+            tmm::sheets::build(&session, tmm::PlateKind::Gears, tmm::Lang::Ru).expect("plates");
+        let (plate, index) = plates
+            .iter()
+            .find_map(|p| {
+                let i = (p.views.iter()).position(|v| v.figure.title == "velocity triangles")?;
+                Some((p, i))
+            })
+            .expect("the triangles' sheet");
+        let view = &plate.views[index];
+        let placed = layout(plate);
+        let bounds = |s: &tmm::construct::Step| {
+            let (lo, hi) = View::step_bounds(s).expect("drawn");
+            let (a, b) = (view.to_sheet(lo), view.to_sheet(hi));
+            Rect::new(a.min(b), a.max(b))
+        };
+        let wheel_of = |note: &str| {
+            let rest = note
+                .strip_prefix("wheel ")
+                .or_else(|| note.strip_prefix("ring "))?;
+            Some(rest.split([' ', '\'']).next()?.to_string())
+        };
+        let mut named = 0;
+        for step in &view.figure.steps {
+            let Some(wheel) = wheel_of(&step.note) else {
+                continue;
+            };
+            let Some(label) =
+                (placed.labels.iter()).find(|l| l.view == index && l.steps.contains(&step.id))
+            else {
+                continue;
+            };
+            named += 1;
+            for other in view.figure.steps.iter().filter(|o| {
+                matches!(o.item, Item::Segment(_))
+                    && wheel_of(&o.note).as_deref() != Some(wheel.as_str())
+                    && (o.note.starts_with("wheel ")
+                        || o.note.starts_with("the shaft ")
+                        || o.note.starts_with("the axle of ")
+                        || o.note.starts_with("the carrier's arm"))
+            }) {
+                let g = gap(&label.rect, &bounds(other));
+                if g <= NAME_CLEAR_MM {
+                    near.push(format!(
+                        "{scene}: «{}» {g:.2} mm from «{}»",
+                        label.text, other.note
+                    ));
+                }
+            }
+        }
+        assert!(named >= 3, "{scene}: {named} wheels named");
+    }
+    assert!(near.is_empty(), "{near:#?}");
+}
