@@ -66,9 +66,15 @@ impl Diagram {
 
     /// The break at node `k` (node N of a periodic diagram is node 0).
     pub fn break_at(&self, k: usize) -> Option<&Break> {
+        self.break_index(k).map(|i| &self.breaks[i])
+    }
+
+    /// The index in [`Diagram::breaks`] of the break at node `k` (node N of a periodic
+    /// diagram is node 0).
+    pub(super) fn break_index(&self, k: usize) -> Option<usize> {
         let n = self.intervals();
         let k = if self.periodic && n > 0 { k % n } else { k };
-        self.breaks.iter().find(|b| b.node == k)
+        self.breaks.iter().position(|b| b.node == k)
     }
 
     /// The ordinate at node `k` as the piece ending there reaches it: [`Diagram::at`] but at a
@@ -142,8 +148,7 @@ impl NodeReads {
             let piece: Vec<f64> = (a..b).map(|k| mids[k % n]).collect();
             for k in a..=b {
                 let v = read(&piece, 0.5, false, (k - a) as f64);
-                let at_break = src.breaks.iter().position(|x| x.node == k % n);
-                match at_break {
+                match src.break_index(k) {
                     Some(i) if k == b => left[i] = v,
                     _ if src.periodic => right[k % n] = v,
                     _ => right[k] = v,
@@ -158,7 +163,7 @@ impl NodeReads {
 
     /// The value the piece ending at node `k` (0 < k ≤ N) reaches there, when `k` is a break.
     pub(super) fn left_at(&self, src: &Diagram, k: usize) -> Option<f64> {
-        let i = src.breaks.iter().position(|b| Some(b) == src.break_at(k))?;
+        let i = src.break_index(k)?;
         (k > 0).then(|| self.left[i])
     }
 }

@@ -624,8 +624,7 @@ fn tangents(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusEr
     }
     for (a, b) in src.spans() {
         let mut points = node_pts[a..b].to_vec();
-        let left = src.breaks.iter().position(|x| Some(x) == src.break_at(b));
-        points.push(match left {
+        points.push(match src.break_index(b) {
             Some(i) => left_pts[i] + DVec2::new(if b == n { run * n as f64 } else { 0.0 }, 0.0),
             None => node_pts[b],
         });
