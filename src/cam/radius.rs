@@ -45,6 +45,9 @@ pub(super) fn min_radius(
         Follower::Rocker { arm, .. } => rocker(&mut rec, &given, arm)?,
         Follower::Flat { .. } => flat(&mut rec, &given)?,
     };
+    if spec.base_radius.is_some_and(|r0| r0 < read.graphical) {
+        zone::chosen_centre(&mut rec, read.placement);
+    }
     Ok((
         RadiusConstruction {
             figure: rec.finish(),

@@ -6,6 +6,7 @@
 //! decision); this file only draws them. The flat face's zone, between its 45° tangent and
 //! the S axis, is hatched by the same band.
 
+use super::follower::Placement;
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::{line_line, DVec2, Line, LineLine, Segment};
 use std::f64::consts::PI;
@@ -24,6 +25,8 @@ const PROBE_MM: f64 = 0.5;
 pub const RAY_NOTE: &str = "γ_min ray bounding the zone of the cam centre";
 /// The note of the r_min dimension's step.
 pub const R_MIN_NOTE: &str = "dimension r_min";
+/// The note of the dimension r₀ of a base radius the scene chose under r_min.
+pub const R0_NOTE: &str = "dimension r_0 of the base radius chosen";
 
 /// A bounding ray: its point K and its direction from K through the crossing.
 #[derive(Debug, Clone, Copy)]
@@ -158,4 +161,30 @@ pub(super) fn centre_and_r_min(
     let oid = rec.point("cam centre O_1", o, Role::Result, "O_1", toward, &[]);
     rec.dimension(R_MIN_NOTE, (o, to, offset), "r_{min}");
     oid
+}
+
+/// A chosen base radius's r₀ dimension stands this far left of the S axis (r_min's and
+/// ρ_min's stand right of it), mm.
+const R0_MM: f64 = 9.0;
+
+/// Mark the centre of a base radius the scene chose under r_min (a hard case), where the
+/// translating follower's `placement` puts it (e left of the S axis, s₀ below B₀ at the
+/// figure's μ) — inside the zone no centre may take, which is why its profile comes out
+/// pointed or too steep — and dimension r₀ from it to B₀, beside the r_min constructed.
+/// Nothing for a rocker.
+pub(super) fn chosen_centre(rec: &mut Recorder, placement: Placement) {
+    let Placement::Translating { offset, s0 } = placement else {
+        return;
+    };
+    let mu = rec.scale();
+    let at = DVec2::new(-mu.to_mm(offset), -mu.to_mm(s0));
+    rec.point(
+        "the centre O_1′ of the base radius chosen",
+        at,
+        Role::Result,
+        "O_1′",
+        DVec2::new(-1.0, 0.0),
+        &[],
+    );
+    rec.dimension(R0_NOTE, (at, DVec2::ZERO, R0_MM), "r_0");
 }

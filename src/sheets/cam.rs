@@ -8,7 +8,7 @@ use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
 use crate::cam::{
     Analogue, Cam, CamSpec, Closure, Diagrams, Follower, Law, Layout, Rotation, ANGLE_LIMIT_NOTE,
-    RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
+    R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
 };
 use crate::check::{Cusp, Finding, Row};
 use crate::geom::DVec2;
@@ -66,8 +66,10 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let r_min = cam_marks::valued("r_{min}", cam.radius.graphical, lang);
     let rho_min = cam_marks::valued(RHO_ADMITTED, cam.spec.rho_min, lang);
     let radius = cam_marks::relabelled(&cam.radius.figure, R_MIN_NOTE, &r_min);
+    let radius = cam_marks::relabelled(&radius, RHO_MIN_NOTE, &rho_min);
+    let r0 = cam_marks::valued("r_{0}", cam.base, lang);
     blocks.push(Block::view(
-        cam_marks::relabelled(&radius, RHO_MIN_NOTE, &rho_min),
+        cam_marks::relabelled(&radius, R0_NOTE, &r0),
         format!("{combined}, {}", mu("S", d.s_scale, lang)),
         keyed(Key::CamScaleS, d.s_scale),
     ));

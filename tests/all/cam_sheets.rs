@@ -14,7 +14,7 @@
 //! (γ(φ) without a step the law does not make: `cam_angle_steps`.) Each rule also runs on a plate built to break it, and must fail there.
 
 use glam::DVec2;
-use tmm::cam::{Cam, Follower, RAY_NOTE, R_MIN_NOTE, TANGENT_NOTE};
+use tmm::cam::{Cam, Follower, R0_NOTE, RAY_NOTE, R_MIN_NOTE, TANGENT_NOTE};
 use tmm::construct::{Drafting, Figure, Item, Role, Step};
 use tmm::geom::Segment;
 use tmm::plate::Plate;
@@ -237,6 +237,35 @@ fn r_min_dimensioned(f: &Figure, graphical: f64, d: Drafting) -> Result<(), Stri
     Ok(())
 }
 
+/// A base radius the scene chose under the r_min read (cam-cusp's r₀ = 10 mm against 150):
+/// its centre marked and r₀ dimensioned from it to the start of the rise, its length and its
+/// text the scene's r₀; no such dimension where the profile takes r₀ ≥ r_min.
+fn chosen_r0_dimensioned(f: &Figure, cam: &Cam, d: Drafting) -> Result<(), String> {
+    let dims = segments(f, R0_NOTE);
+    let under = cam.spec.base_radius.filter(|&r0| r0 < cam.radius.graphical);
+    let (r0, [(step, a, b)]) = (under, &dims[..]) else {
+        return match (under, dims.len()) {
+            (None, 0) => Ok(()),
+            (r0, n) => Err(format!("r₀ {r0:?} under r_min, {n} r₀ dimensions")),
+        };
+    };
+    let Some(r0) = r0 else {
+        return Err("an r₀ dimension where r₀ ≥ r_min".into());
+    };
+    let text = step.label.as_ref().map_or("", |l| l.text.as_str());
+    if !number_after(text, "r_{0} = ").is_some_and(|v| written_as(v, r0)) {
+        return Err(format!(
+            "the r₀ dimension reads “{text}”, the scene's {r0} m"
+        ));
+    }
+    let read = f.scale.to_physical(d.read(a.distance(*b)));
+    let at_start = a.length().min(b.length()) <= tol(f);
+    if (read - r0).abs() > 1e-9 * r0 || !at_start {
+        return Err(format!("r₀ dimensioned {read} m from {a} to {b}"));
+    }
+    Ok(())
+}
+
 /// The flat face's 45° tangent: from the S(S″) curve to the S axis, each end on its line.
 fn tangent_touches(f: &Figure) -> Result<(), String> {
     let t = segments(f, TANGENT_NOTE);
@@ -355,6 +384,7 @@ fn finished(cam: &Cam, f: &Figure, d: Drafting) -> Result<(), String> {
     } else {
         zone_hatched(f)?;
     }
+    chosen_r0_dimensioned(f, cam, d)?;
     r_min_dimensioned(f, cam.radius.graphical, d)
 }
 
