@@ -42,21 +42,19 @@ pub(super) fn outline_runs(c: &Cutting, q: f64) -> Vec<Vec<DVec2>> {
         pts.push(DVec2::new(uc0 + flank(sh.vj), sh.vj));
         pts.push(DVec2::new(uc0 + flank(top), top));
     }
-    let limit = c.ra + 0.5 * m;
     let fixed: Vec<DVec2> = pts
         .into_iter()
         .map(|p| DVec2::new(p.x + q, base + p.y))
         .collect();
-    // Cut where the outline crosses the circle (between its points), so that each run is
-    // seen to enter the blank.
+    // Traced on the paper blank, whose edge is the tip circle (seed 002 PZ1, L259): every
+    // run ends on r_a or at the tool's own end, none in the air beside the wheel. A run
+    // shorter than a thousandth of the module is the tool's root line grazing r_a.
     let blank = crate::geom::Circle {
         center: DVec2::ZERO,
-        radius: limit,
+        radius: c.ra,
     };
     let mut runs = crate::geom::polyline_in_circle(&fixed, &blank);
-    // A run that never enters the tip circle cuts nothing: the tool's tip passing over the
-    // blank, its flanks out of the drawing (it would float beside the wheel).
-    runs.retain(|r| r.iter().any(|p| p.length() < c.ra));
+    runs.retain(|r| r.windows(2).map(|w| w[0].distance(w[1])).sum::<f64>() > 1e-3 * m);
     runs
 }
 
