@@ -1,6 +1,7 @@
 //! Rack generation: the drawn envelope's deviation from the exact tooth (involute, trochoidal
 //! fillet, root circle) and the time of one generated tooth, for N = 12 … 720 rack positions
-//! (seed 000's pinion z = 13, m = 14 mm, x = 0: undercut, and x = 0.8).
+//! (seed 000's pinion z = 13, m = 14 mm, over the course's shifts: x = −0.5 and 0 undercut,
+//! 0.5, and 0.8 nearly pointed).
 
 use super::BenchRow;
 use super::{best_time, Reps};
@@ -18,7 +19,7 @@ pub(super) fn rack_rows(reps: Reps) -> Result<Vec<BenchRow>, super::BenchError> 
     };
     let ctx = Context::for_model_size(400.0, Drafting::EXACT)?;
     let mut out = Vec::new();
-    for x in [0.0, 0.8] {
+    for x in [-0.5, 0.0, 0.5, 0.8] {
         let c =
             Cutting::alone(0.014, 13, x, BasicRack::GOST_13755).map_err(|e| fail(e.to_string()))?;
         let scale = generation_scale(&c).map_err(|e| fail(e.to_string()))?;

@@ -66,7 +66,9 @@ pub(super) fn marks(
     drawn_states: &[f64],
 ) -> Vec<(DetailMark, DVec2)> {
     let mm = |p: DVec2| p / mu;
-    let shows = |p: DVec2| p.distance(zone.center) <= ANCHOR_ZONE * zone.radius;
+    // A hair over the share: an anchor put at the share's own distance is shown (it was lost
+    // to rounding, r_b of the shaper's pinion).
+    let shows = |p: DVec2| p.distance(zone.center) <= ANCHOR_ZONE * zone.radius * (1.0 + 1e-9);
     let reach = zone.radius * mu;
     let mut out = vec![(DetailMark::Junction, mm(junction))];
     // The involute half way up the zone above the junction, or nearer when that is out.

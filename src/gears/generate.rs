@@ -1,7 +1,8 @@
 //! Rack generation as a construction (seed 002 PZ1, the TMM-42 device): the basic rack,
 //! shifted by x·m, is rolled along the pitch circle in N equal steps (rack step q ↔ wheel
-//! turn q/r); at every position its outline is drawn in the wheel's frame, clipped to the
-//! blank, and the points where it touches the envelope are found the textbook way — where
+//! turn q/r), set again in finer steps where the fillet turns into the root (a step of its
+//! angle for every two equal ones, [`rack_states`]); at every position its outline is drawn
+//! in the wheel's frame, clipped to the blank, and the points where it touches the envelope are found the textbook way — where
 //! the rack's normal passes through the pole P — on the straight flank (the involute), on the
 //! tip rounding (the fillet) and on the tip line (the root circle). The tooth is drawn
 //! through the touching points as the French curve touching the envelope there (⊥ the
@@ -110,8 +111,7 @@ pub fn generate(
     let pitch = 2.0 * PI / f64::from(c.z);
     circles(&mut rec, &c, mu, pitch);
     let st = c.states();
-    let (states, q_n) = rack_states(&c, steps);
-    let drawn = spread(states.len(), DRAWN_POSITIONS);
+    let (states, q_n, drawn) = rack_states(&c, steps);
     let touches = trace(&mut rec, &c, &states, &drawn, mu);
     let [flank, fillet, root] = pieces(&c, &touches, q_n);
     // The junction on the drawing: the first crossing of the drawn fillet (from the root
@@ -274,28 +274,50 @@ fn circles(rec: &mut Recorder, c: &Cutting, mu: f64, pitch: f64) {
     }
 }
 
-/// The rack's states traced: `steps` equal ones over the span, and the marks of the device
+/// The rack's states traced: `steps` equal ones over the span; the marks of the device
 /// (the flank's end, the tip, the rounding under P, and the contact passing N — the foot of
-/// O on the line of action — when the flank reaches it), sorted; and that state at N.
-fn rack_states(c: &Cutting, steps: usize) -> (Vec<f64>, f64) {
+/// O on the line of action — when the flank reaches it); and the fillet's own states, where
+/// the envelope bends: sorted, with that state at N and the indices of the drawn positions
+/// (spread over the equal states).
+///
+/// The rounding touches where the ray from P through its centre meets it, at the angle β
+/// below the pitch line (α at the flank's end, 90° under P): the state is
+/// q_bottom − H·cot β, H the centre's depth under P. Equal states crowd the fillet's points
+/// near the flank and leave them sparse where it turns into the root circle, fastest on a
+/// wheel shifted far out (x = 0.8: the fillet is a twentieth of the span), so the fillet
+/// gets [`FILLET_SHARE`] of the states at equal steps of β.
+fn rack_states(c: &Cutting, steps: usize) -> (Vec<f64>, f64, Vec<usize>) {
     let st = c.states();
     let r = c.r();
     let (lo, hi) = c.span();
-    let mut states: Vec<f64> = (0..steps)
+    let equal: Vec<f64> = (0..steps)
         .map(|i| lo + (hi - lo) * i as f64 / (steps - 1) as f64)
         .collect();
-    // The marks of the device: the flank's end, the tip, the rounding under P, and the
-    // contact passing N (the foot of O on the line of action) when the flank reaches it.
+    let mut states = equal.clone();
     let q_n = st.q_p - r * c.rack.alpha.tan();
     let marks = [st.q_j, st.q_a, st.q_bottom, q_n];
-    for q in marks.into_iter().filter(|q| *q >= st.q_j) {
+    let depth = -(c.x * c.module + c.shape().vc);
+    let alpha = c.rack.alpha;
+    let fillet_steps = steps / FILLET_SHARE;
+    let fillet = (1..fillet_steps).map(|k| {
+        let beta = alpha + (0.5 * PI - alpha) * k as f64 / fillet_steps as f64;
+        st.q_bottom - depth / beta.tan()
+    });
+    for q in marks.into_iter().filter(|q| *q >= st.q_j).chain(fillet) {
         if !states.iter().any(|s| (s - q).abs() <= 1e-12 * c.module) {
             states.push(q);
         }
     }
     states.sort_by(f64::total_cmp);
-    (states, q_n)
+    let drawn = spread(steps, DRAWN_POSITIONS)
+        .into_iter()
+        .filter_map(|i| states.iter().position(|s| *s == equal[i]))
+        .collect();
+    (states, q_n, drawn)
 }
+
+/// The fillet is traced at one state for this many of the equal ones ([`rack_states`]).
+const FILLET_SHARE: usize = 2;
 
 /// The touching points by piece, each in the order of the rack's states: the flank (the
 /// involute proper, from where the contact passes N at `q_n`: beyond N the flank traces the

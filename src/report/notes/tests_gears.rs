@@ -52,7 +52,7 @@ fn a_wheel_cut_by_the_rack_reads_as_pz1_printed_it() {
     for line in [
         "gears: wheel 0 (z = 10, x = 0) cut by the rack in 40 steps: undercut shown on the drawing (the fillet crosses the involute), undercut by the criterion (the flank's end 9.9997 mm below the pitch line, the limit r·sin²α = 5.8489 mm)",
         "gears: wheel 0: x_min = h_a* − z·sin²α/2 = 0.4151 (the textbook's (17 − z)/17 = 0.4118); feasible shift: x_min = 0.4151 … x(s_a = 0.3m) = 0.3877 (empty: no shift avoids both undercut and pointing)",
-        "gears: wheel 0: the involute meets the fillet at r = 47.256 mm on the drawing, 47.256 mm exactly (the involute and the trochoid intersected): 8.31e−15·m apart; the touching points lie on the exact curves to 1.6e−15·m",
+        "gears: wheel 0: the involute meets the fillet at r = 47.256 mm on the drawing, 47.256 mm exactly (the involute and the trochoid intersected): 8.38e−15·m apart; the touching points lie on the exact curves to 1.6e−15·m",
         "gears: wheel p (z = 10, x = 0.6) cut by the rack in 40 steps: undercut not shown on the drawing (the fillet meets the involute tangentially), no undercut by the criterion (the flank's end 3.9997 mm below the pitch line, the limit r·sin²α = 5.8489 mm)",
         "gears: wheel p: the involute meets the fillet at r = 47.2947 mm on the drawing, 47.2947 mm exactly (the involute and the trochoid intersected: they meet tangentially at the flank's end): 1.11e−15·m apart; the touching points lie on the exact curves to 2.8e−15·m",
     ] {
