@@ -18,6 +18,9 @@ const BAND_MM: f64 = 5.0;
 const BAND_MIN_MM: f64 = 20.0;
 /// Hatch spacing, mm (ГОСТ 2.306: 1…10 mm by the area).
 const HATCH_MM: f64 = 2.0;
+/// A zone whose bands along its two sides would leave unhatched less than this share of
+/// its size (the inner triangle's scale is 1 − w/l_p − w/l_q) is hatched whole.
+const WHOLE_BEYOND: f64 = 0.5;
 /// Probe distance from the crossing when telling which of its four angles is the zone, mm.
 const PROBE_MM: f64 = 0.5;
 
@@ -90,7 +93,8 @@ pub(super) fn draw_zone(
 /// Hatch the band along the two sides of an angle at its apex `c`, inside it: side `p` (unit)
 /// `lp` mm long, side `q` `lq` mm; [`BAND_MM`] wide along each side, its two ends cut along
 /// the chord between the sides' ends — no stroke stands past the lines that bound it. Where
-/// the sides are too short for the band, the triangle they close is hatched whole.
+/// the sides are too short for the band to leave half the triangle they close unhatched,
+/// that triangle is hatched whole ([`WHOLE_BEYOND`]).
 pub(super) fn hatch_angle_between(
     rec: &mut Recorder,
     c: DVec2,
@@ -106,8 +110,9 @@ pub(super) fn hatch_angle_between(
     // A point c + s·p + t·q lies on the band's inner edge parallel to q at s = w, to p at
     // t = w, on the chord a–b at s/lp + t/lq = 1.
     let w = BAND_MM / angle.sin();
-    let outline = if w / lp + w / lq >= 1.0 {
-        // The band fills the triangle the sides' ends close.
+    let outline = if w / lp + w / lq >= WHOLE_BEYOND {
+        // The band fills the triangle the sides' ends close, or leaves inside it a sliver
+        // that reads as a gap in the hatching rather than as the zone's inside.
         vec![a, c, b]
     } else {
         vec![
