@@ -27,8 +27,10 @@ use crate::scale::{Quantity, Scale};
 
 /// Preferred drawn diameter of a roller in the scheme, mm.
 const ROLLER_MM: f64 = 24.0;
-/// Preferred drawn lever (the diameter d) of the moment balance, mm.
-const LEVER_MM: f64 = 40.0;
+/// Preferred drawn load of the moment balance without a μ_F given, mm.
+const LOAD_MM: f64 = 60.0;
+/// The loads of the moment balance are drawn at least this many levers long.
+const LOAD_PAST: f64 = 1.5;
 /// Preferred drawn arm k of the moment balance, mm.
 const ARM_MM: f64 = 30.0;
 
@@ -369,10 +371,20 @@ fn balance(
     wrap: &dyn Fn(ConstructionError) -> FrictionError,
 ) -> Result<(Drawing, f64), FrictionError> {
     let name = &case.name;
-    let mu_l = choose_scale(name, None, c.diameter, LEVER_MM, Quantity::Length)?;
+    // The loads at the case's μ_F (the textbook's about LOAD_MM without one), the lever d
+    // at the round μ_l that draws it at most 1/LOAD_PAST of the smaller load: each load,
+    // laid along the lever from one end, runs on past the other end by half the lever at
+    // least, where it is seen and named apart from the other.
+    let mu_f = choose_scale(name, case.scale_f, twin.r_n2, LOAD_MM, Quantity::Force)?;
+    let mu_l = choose_scale(
+        name,
+        None,
+        c.diameter,
+        mu_f.to_mm(twin.r_n1) / LOAD_PAST,
+        Quantity::Length,
+    )?;
     let lever_mm = mu_l.to_mm(c.diameter);
     let mu_k = choose_scale(name, None, c.k1.max(c.k2), ARM_MM, Quantity::Length)?;
-    let mu_f = choose_scale(name, case.scale_f, twin.r_n2, lever_mm, Quantity::Force)?;
     let mu_p = mu_f.value() * mu_k.value() / mu_l.value();
     let mu_p = Scale::new(mu_p, Quantity::Force).ok_or(FrictionError::NoScale {
         case: name.clone(),
