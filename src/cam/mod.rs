@@ -51,7 +51,7 @@ pub use law::{Law, Shock};
 pub use radius::{RadiusConstruction, RHO_ADMITTED, RHO_MIN_NOTE, TANGENT_NOTE};
 pub use special::{build_special, Special, SpecialProfile};
 pub use travel::{TravelConstruction, TRAVEL_NOTE, TRAVEL_RAY_NOTE};
-pub use zone::{R0_NOTE, RAY_NOTE, R_MIN_NOTE};
+pub use zone::{E_LINE_NOTE, E_NOTE, R0_NOTE, RAY_NOTE, R_MIN_NOTE};
 
 use crate::scale::Scale;
 use thiserror::Error;

@@ -112,6 +112,9 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     }
     smooth_loop(rec, given, &ks, "combined diagram S(dS/dφ)", &[path]);
     let apex = translating_zone(rec, &ks, &binds, o, gamma);
+    if offset != 0.0 {
+        zone::offset_line(rec, o);
+    }
     // O₁'s name outside the zone: on the side of the zone's edge it lies on.
     let toward = if apex.is_some_and(|a| o.x < a.x) {
         DVec2::new(-1.0, 0.0)

@@ -30,6 +30,10 @@ pub const RAY_NOTE: &str = "γ_min ray bounding the zone of the cam centre";
 pub const R_MIN_NOTE: &str = "dimension r_min";
 /// The note of the dimension r₀ of a base radius the scene chose under r_min.
 pub const R0_NOTE: &str = "dimension r_0 of the base radius chosen";
+/// The note of the line x = −e on which an offset follower's cam centre is chosen.
+pub const E_LINE_NOTE: &str = "the line x = −e of the cam centre";
+/// The note of the offset e's dimension.
+pub const E_NOTE: &str = "dimension e";
 
 /// A bounding ray: its point K and its direction from K through the crossing.
 #[derive(Debug, Clone, Copy)]
@@ -192,4 +196,23 @@ pub(super) fn chosen_centre(rec: &mut Recorder, placement: Placement) {
         &[],
     );
     rec.dimension(R0_NOTE, (at, DVec2::ZERO, R0_MM), "r_0");
+}
+
+/// The line x = −e runs this far under the centre chosen on it, mm.
+const E_BELOW_MM: f64 = 5.0;
+
+/// An offset follower's centre `o` is chosen on the line x = −e, parallel to the S axis
+/// (the follower's path): that line drawn from under the centre up to B₀'s level, and e
+/// dimensioned between it and the S axis halfway up (under the centre lies the zone's
+/// hatching, at it the centre's name).
+pub(super) fn offset_line(rec: &mut Recorder, o: DVec2) {
+    let (top, bottom) = (DVec2::new(o.x, 0.0), DVec2::new(o.x, o.y - E_BELOW_MM));
+    rec.draw(
+        E_LINE_NOTE,
+        Item::Segment(Segment::new(bottom, top)),
+        Role::Construction,
+        &[],
+    );
+    let y = 0.5 * o.y;
+    rec.dimension(E_NOTE, (DVec2::new(0.0, y), DVec2::new(o.x, y), 0.0), "e");
 }

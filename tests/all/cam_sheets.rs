@@ -14,7 +14,7 @@
 //! (γ(φ) without a step the law does not make: `cam_angle_steps`.) Each rule also runs on a plate built to break it, and must fail there.
 
 use glam::DVec2;
-use tmm::cam::{Cam, Follower, R0_NOTE, RAY_NOTE, R_MIN_NOTE, TANGENT_NOTE};
+use tmm::cam::{Cam, Follower, E_LINE_NOTE, E_NOTE, R0_NOTE, RAY_NOTE, R_MIN_NOTE, TANGENT_NOTE};
 use tmm::construct::{Drafting, Figure, Item, Role, Step};
 use tmm::geom::Segment;
 use tmm::plate::Plate;
@@ -266,6 +266,60 @@ fn chosen_r0_dimensioned(f: &Figure, cam: &Cam, d: Drafting) -> Result<(), Strin
     Ok(())
 }
 
+/// An offset roller follower's centre O₁ is chosen on the line x = −e parallel to the S
+/// axis: that line drawn through O₁ up to B₀'s level, and e dimensioned between it and the
+/// S axis at μ_S; none of either where e = 0 or the face is flat (the review: O₁ off
+/// the axis by e, the line neither drawn nor dimensioned, cam-pz5).
+fn offset_line_drawn(f: &Figure, cam: &Cam) -> Result<(), String> {
+    let e = match cam.spec.follower {
+        Follower::Translating { offset } => offset,
+        _ => 0.0,
+    };
+    let (lines, dims) = (segments(f, E_LINE_NOTE), segments(f, E_NOTE));
+    if e == 0.0 {
+        return match (lines.len(), dims.len()) {
+            (0, 0) => Ok(()),
+            (l, n) => Err(format!("e = 0 with {l} e lines, {n} e dimensions")),
+        };
+    }
+    let ([(_, a, b)], [(_, p, q)]) = (&lines[..], &dims[..]) else {
+        return Err(format!(
+            "{} e lines, {} e dimensions",
+            lines.len(),
+            dims.len()
+        ));
+    };
+    let o = f
+        .steps
+        .iter()
+        .find_map(|s| match s.item {
+            Item::Point(p) if s.note == "cam centre O_1" => Some(p),
+            _ => None,
+        })
+        .ok_or("no centre O_1")?;
+    let t = tol(f);
+    // O₁ stands e off the S axis, on the side the construction takes for the sign of e.
+    let x = o.x;
+    if (x.abs() - f.scale.to_mm(e.abs())).abs() > t {
+        return Err(format!("O₁ {} mm off the S axis, e = {e} m", x.abs()));
+    }
+    let (lo, hi) = (a.y.min(b.y), a.y.max(b.y));
+    if (a.x - x).abs() > t || (b.x - x).abs() > t {
+        return Err(format!("the e line at x = {} and {}, O₁ at {x}", a.x, b.x));
+    }
+    if lo > o.y - t || hi < -t {
+        return Err(format!("the e line from {lo} to {hi} mm, O₁ at {}", o.y));
+    }
+    // e is given, not read: its dimension spans the offset drawn at μ_S exactly.
+    let ends = [p.x.min(q.x), p.x.max(q.x)];
+    if (ends[0] - x.min(0.0)).abs() > t || (ends[1] - x.max(0.0)).abs() > t {
+        return Err(format!(
+            "e dimensioned from {p} to {q}, the line at x = {x}"
+        ));
+    }
+    Ok(())
+}
+
 /// The flat face's 45° tangent: from the S(S″) curve to the S axis, each end on its line.
 fn tangent_touches(f: &Figure) -> Result<(), String> {
     let t = segments(f, TANGENT_NOTE);
@@ -385,6 +439,7 @@ fn finished(cam: &Cam, f: &Figure, d: Drafting) -> Result<(), String> {
         zone_hatched(f)?;
     }
     chosen_r0_dimensioned(f, cam, d)?;
+    offset_line_drawn(f, cam)?;
     r_min_dimensioned(f, cam.radius.graphical, d)
 }
 
@@ -466,6 +521,10 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
         }
     });
     assert!(rays_reach_their_crossing(&short).is_err());
+    // The offset's line taken off (the review's pz5).
+    let mut no_e = f.clone();
+    no_e.steps.retain(|s| s.note != E_LINE_NOTE);
+    assert!(offset_line_drawn(&no_e, &cam).is_err());
     // No hatching; hatching on the wrong side of a ray.
     let mut bare = f.clone();
     bare.steps.retain(|s| s.role != Role::Hatch);
