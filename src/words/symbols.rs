@@ -85,6 +85,11 @@ pub(crate) fn cyrillic(c: char) -> bool {
 pub(crate) fn script(text: &str, lang: Lang) -> String {
     let head = text.find(|c: char| !cyrillic(c)).unwrap_or(text.len());
     let (word, rest) = text.split_at(head);
+    // An abbreviation with its dots (`д.в.`, the far dwell: дальнего выстоя, дальнього
+    // вистою) is a word of its own, not the subscript `д` of the driving forces.
+    if rest.starts_with('.') {
+        return text.to_string();
+    }
     match SUBSCRIPTS.iter().find(|(ru, ..)| *ru == word) {
         Some(&(ru, uk, en)) => format!("{}{rest}", lang.pick(ru, uk, en)),
         None => text.to_string(),
@@ -327,6 +332,11 @@ mod tests {
         );
         assert_eq!(localise("ω − ω_{ср}^2", Lang::En), "ω − ω_{m}^2");
         assert_eq!(localise("F_{и2}", Lang::Ru), "F_{и2}");
+        // The dwells' abbreviations stay (uk φ_{д.в.} was written φ_{р.в.}); F_{д} does not.
+        assert_eq!(
+            localise("φ_{д.в.}, φ_{б.в.}, F_{д}", Lang::Uk),
+            "φ_{д.в.}, φ_{б.в.}, F_{р}"
+        );
         // A subscript the table does not know (a user's name) is kept.
         assert_eq!(localise("J_{кор}, b_1", Lang::En), "J_{кор}, b_1");
         assert_eq!(localise("J_{ред} + J_{кс}", Lang::En), "J_{gr} + J_{gb}");
