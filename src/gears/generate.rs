@@ -2,12 +2,13 @@
 //! shifted by x·m, is rolled along the pitch circle in N equal steps (rack step q ↔ wheel
 //! turn q/r), set again in finer steps where the fillet turns into the root (a step of its
 //! angle for every two equal ones, [`rack_states`]); at every position its outline is drawn
-//! in the wheel's frame, clipped to the blank, and the points where it touches the envelope are found the textbook way — where
-//! the rack's normal passes through the pole P — on the straight flank (the involute), on the
-//! tip rounding (the fillet) and on the tip line (the root circle). The tooth is drawn
-//! through the touching points as the French curve touching the envelope there (⊥ the
-//! normal through P); undercut is detected where the drawn fillet crosses the
-//! drawn involute, pointing where the tip thickness read off the drawing falls below 0.3m.
+//! in the wheel's frame, clipped to the blank, and the points where it touches the envelope
+//! are found the textbook way — where the rack's normal passes through the pole P — on the
+//! straight flank (the involute), on the tip rounding (the fillet) and on the tip line (the
+//! root circle). The tooth is drawn through the touching points as the French curve touching
+//! the envelope there (⊥ the normal through P); undercut is detected where the drawn fillet
+//! crosses the drawn involute, pointing where the tip thickness read off the drawing falls
+//! below 0.3m.
 
 use super::detail::DetailMark;
 use super::rack::{Cutting, Piece};
@@ -285,7 +286,7 @@ fn circles(rec: &mut Recorder, c: &Cutting, mu: f64, pitch: f64) {
 /// q_bottom − H·cot β, H the centre's depth under P. Equal states crowd the fillet's points
 /// near the flank and leave them sparse where it turns into the root circle, fastest on a
 /// wheel shifted far out (x = 0.8: the fillet is a twentieth of the span), so the fillet
-/// gets [`FILLET_SHARE`] of the states at equal steps of β.
+/// is traced again at equal steps of β, one for every [`FILLET_SHARE`] equal states.
 fn rack_states(c: &Cutting, steps: usize) -> (Vec<f64>, f64, Vec<usize>) {
     let st = c.states();
     let r = c.r();

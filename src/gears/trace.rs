@@ -47,8 +47,9 @@ pub(super) fn outline_runs(c: &Cutting, q: f64) -> Vec<Vec<DVec2>> {
         .map(|p| DVec2::new(p.x + q, base + p.y))
         .collect();
     // Traced on the paper blank, whose edge is the tip circle (seed 002 PZ1, L259): every
-    // run ends on r_a or at the tool's own end, none in the air beside the wheel. A run
-    // shorter than a thousandth of the module is the tool's root line grazing r_a.
+    // run ends on r_a (the tool's own ends lie outside it), none in the air beside the
+    // wheel. A run shorter than a thousandth of the module is the tool's root line grazing
+    // r_a.
     let blank = crate::geom::Circle {
         center: DVec2::ZERO,
         radius: c.ra,
