@@ -177,6 +177,19 @@ impl Inverting<'_> {
             Role::Construction,
             &[o],
         );
+        // The rocker's pivot O₂ turns back about O₁ on its circle, where its positions are
+        // numbered (the textbook's O₂⁰ … O₂ⁿ).
+        if let Placement::Rocker { pivot, .. } = *self.place {
+            rec.draw(
+                "circle of the pivot O_2 turned back",
+                Item::Circle(Circle {
+                    center: DVec2::ZERO,
+                    radius: mu.to_mm(pivot.length()),
+                }),
+                Role::Construction,
+                &[o],
+            );
+        }
         if let Placement::Translating { offset, .. } = *self.place {
             if offset != 0.0 && !self.flat {
                 rec.draw(
@@ -264,9 +277,19 @@ impl Inverting<'_> {
             DVec2::ZERO,
             &[],
         );
-        // The phases' ends are labelled (the textbook's 0, n, n + 1, 2n + 1 when no point is
-        // added on a break of the law).
-        if p.k == 0 || p.last {
+        // A rocker's every position is numbered at its pivot O₂ⁱ, on the pivot's circle; a
+        // translating follower's phases' ends at their pitch points (the textbook's 0, n,
+        // n + 1, 2n + 1 when no point is added on a break of the law).
+        if let Placement::Rocker { pivot, .. } = *self.place {
+            let at = mm(to_cam(pivot, p.phi));
+            let id = rec.draw(
+                format!("pivot O_2 at position {i}"),
+                Item::Point(at),
+                Role::Construction,
+                &[],
+            );
+            rec.label_point(id, p.label.clone(), at, at.normalize_or_zero());
+        } else if p.k == 0 || p.last {
             rec.label(pid, p.label.clone(), mm(c), mm(c).normalize_or_zero());
         }
         turned.centres.push(c);

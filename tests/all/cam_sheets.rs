@@ -540,3 +540,39 @@ fn a_return_past_the_limit_is_explained_under_force_closure_only() {
     let plates = tmm::build(&session, PlateKind::Cam, Lang::Ru).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(stated(&plates), None);
 }
+
+/// A rocker's profile by inversion numbers every position at its pivot O₂ⁱ turned back on
+/// the pivot's circle about O₁, as the textbook does (the review saw only 0, 12, 13 and 25
+/// numbered, at their pitch points); a translating follower numbers no pivot.
+#[test]
+fn a_rockers_profile_numbers_every_pivot_on_its_circle() {
+    for name in ["shaper", "cam-central"] {
+        let (cam, _, _) = sheets(name, 0.5, Lang::Ru);
+        let f = &cam.inversion.figure;
+        let pivots: Vec<(DVec2, String)> = f
+            .steps
+            .iter()
+            .filter(|s| s.note.starts_with("pivot O_2 at position "))
+            .filter_map(|s| match (&s.item, &s.label) {
+                (Item::Point(p), Some(l)) => Some((*p, l.text.clone())),
+                _ => None,
+            })
+            .collect();
+        let tmm::cam::follower::Placement::Rocker { pivot, .. } = cam.placement else {
+            assert!(pivots.is_empty(), "{name}: {} pivots numbered", pivots.len());
+            continue;
+        };
+        let radius = f.scale.to_mm(pivot.length());
+        let labels: Vec<&str> = pivots.iter().map(|(_, l)| l.as_str()).collect();
+        let want: Vec<&str> = cam.points.iter().map(|p| p.label.as_str()).collect();
+        assert_eq!(labels, want, "{name}");
+        for (p, l) in &pivots {
+            assert!((p.length() - radius).abs() < tol(f), "{name}: O₂ of {l} off its circle");
+        }
+        assert!(
+            f.steps.iter().any(|s| matches!(s.item, Item::Circle(c)
+                if (c.radius - radius).abs() < tol(f) && c.center.length() < tol(f))),
+            "{name}: the pivot's circle"
+        );
+    }
+}
