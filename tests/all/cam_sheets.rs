@@ -559,7 +559,11 @@ fn a_rockers_profile_numbers_every_pivot_on_its_circle() {
             })
             .collect();
         let tmm::cam::follower::Placement::Rocker { pivot, .. } = cam.placement else {
-            assert!(pivots.is_empty(), "{name}: {} pivots numbered", pivots.len());
+            assert!(
+                pivots.is_empty(),
+                "{name}: {} pivots numbered",
+                pivots.len()
+            );
             continue;
         };
         let radius = f.scale.to_mm(pivot.length());
@@ -567,7 +571,10 @@ fn a_rockers_profile_numbers_every_pivot_on_its_circle() {
         let want: Vec<&str> = cam.points.iter().map(|p| p.label.as_str()).collect();
         assert_eq!(labels, want, "{name}");
         for (p, l) in &pivots {
-            assert!((p.length() - radius).abs() < tol(f), "{name}: O₂ of {l} off its circle");
+            assert!(
+                (p.length() - radius).abs() < tol(f),
+                "{name}: O₂ of {l} off its circle"
+            );
         }
         assert!(
             f.steps.iter().any(|s| matches!(s.item, Item::Circle(c)

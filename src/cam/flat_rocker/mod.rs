@@ -369,8 +369,8 @@ impl Board<'_> {
         rec.label(id, "O_2", at, DVec2::new(0.0, -1.0));
     }
 
-    /// The pivot O₂ turned back by each point's φ (notched on its circle, the phases' ends
-    /// numbered), and the face line there: the lines and the notches.
+    /// The pivot O₂ turned back by each point's φ (notched on its circle and numbered), and
+    /// the face line there: the lines and the notches.
     fn turned_back(
         &self,
         rec: &mut Recorder,
@@ -391,10 +391,9 @@ impl Board<'_> {
                 Role::Construction,
                 &[o1],
             );
-            // The phases' ends numbered outside the circle, as the rays of the inversion are.
-            if p.k == 0 || p.last {
-                rec.label(notch, p.label.clone(), pivot, pivot.normalize_or_zero());
-            }
+            // Every position numbered outside the circle, as the textbook's inversion numbers
+            // the pivot's positions O₂ⁱ.
+            rec.label(notch, p.label.clone(), pivot, pivot.normalize_or_zero());
             turned.push(notch);
             lines.push(self.line_at(s, p.phi));
         }

@@ -201,3 +201,21 @@ fn a_face_that_outruns_the_cam_and_a_frame_that_does_not_fit_are_refused() {
         Err(FlatRockerError::NotARocker)
     );
 }
+
+/// Every position of the pivot turned back is numbered on its circle, in order (the review
+/// saw only the phases' ends, 0, 12, 13 and 25, numbered).
+#[test]
+fn every_turned_back_pivot_is_numbered() {
+    let s = spec(12);
+    let b = board(&s, &FRAME).expect("the board");
+    let labels: Vec<String> = b
+        .figure
+        .steps
+        .iter()
+        .filter(|st| st.note.starts_with("pivot O_2 turned back by"))
+        .map(|st| st.label.as_ref().map_or(String::new(), |l| l.text.clone()))
+        .collect();
+    let want: Vec<String> = points(&s).iter().map(|p| p.label.clone()).collect();
+    assert_eq!(labels, want);
+    assert_eq!(labels.len(), 26);
+}
