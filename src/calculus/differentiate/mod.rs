@@ -256,6 +256,8 @@ struct PoleCut {
     pole: DVec2,
     pole_id: StepId,
     axis: Option<StepId>,
+    /// The ordinate axis the rays are cut by.
+    ordinate: Option<Line>,
     cuts: Vec<DVec2>,
 }
 
@@ -301,6 +303,7 @@ fn pole_cuts(
         pole,
         pole_id,
         axis: axis_id,
+        ordinate: axis,
         cuts,
     })
 }
@@ -364,14 +367,23 @@ fn chords(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusErro
     let rec = figs.built();
     let dirs: Vec<DVec2> = (0..n).map(|k| st.ends[k] - pts[k]).collect();
     let o = layout.origin;
-    let curve = |cuts: &[DVec2]| {
+    // The nodes read off the curve through the cuts' heights (the mid-interval points stand
+    // level with them): read once, for the axes' reach and for the nodes.
+    let node_reads = |cuts: &[DVec2]| {
         let mids: Vec<f64> = cuts.iter().map(|c| c.y - o.y).collect();
-        let reads = NodeReads::of(src, &mids);
-        (reads.right.iter().chain(&reads.left))
+        NodeReads::of(src, &mids)
+    };
+    let mut read = None;
+    let curve = |cuts: &[DVec2]| {
+        let reads = node_reads(cuts);
+        let reach = (reads.right.iter().chain(&reads.left))
             .map(|y| o.y + y)
-            .collect()
+            .collect();
+        read = Some(reads);
+        reach
     };
     let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64, curve)?;
+    let reads = read.unwrap_or_else(|| node_reads(&pc.cuts));
     let mut d = st.derivative(Method::Chords, &pc);
     for k in 0..n {
         // The cut goes across to the end of its interval nearer the vertical it lies on.
@@ -417,29 +429,27 @@ fn chords(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusErro
         mid.push(read_ordinate(rec, o, p).1);
         mid_pts.push(p);
     }
-    let curve = chord_nodes(figs, st, &pc, &mid_pts, stair, &mut d)?;
+    let curve = chord_nodes(figs, st, (&pc, &reads), &mid_pts, stair, &mut d)?;
     d.x_mid = (0..n).map(|k| src.x0 + (k as f64 + 0.5) * src.dx).collect();
     d.mid = mid;
     d.curve = curve;
     finish(d)
 }
 
-/// The chords' node values read off the smooth curve through the mid-interval points
-/// `mid_pts` (each piece's own, when the source breaks; an end the law's tangent fixes from
-/// the ray parallel to it) into `d`, with the values before the breaks marked; the curve
+/// The chords' node values `reads`, read off the smooth curve through the mid-interval
+/// points `mid_pts` (each piece's own, when the source breaks; an end the law's tangent fixes
+/// from the ray parallel to it) into `d`, with the values before the breaks marked; the curve
 /// drawn a piece a span. Returns the (last) curve step.
 fn chord_nodes(
     figs: &mut Figures<'_>,
     st: &Start,
-    pc: &PoleCut,
+    (pc, reads): (&PoleCut, &NodeReads),
     mid_pts: &[DVec2],
     stair: StepId,
     d: &mut Derivative,
 ) -> Result<StepId, CalculusError> {
     let (n, run, src, layout) = (st.n, st.run, st.src, st.layout);
     let o = layout.origin;
-    let drawn: Vec<f64> = mid_pts.iter().map(|p| p.y - o.y).collect();
-    let reads = NodeReads::of(src, &drawn);
     let at = |k: usize, y: f64| DVec2::new(o.x + k as f64 * run, o.y + y);
     let mut node_pts: Vec<DVec2> = (0..=n).map(|k| at(k, reads.right[k])).collect();
     // An end whose tangent the law fixes: the node there from the ray parallel to it.
@@ -515,11 +525,10 @@ fn end_node(
     let from = figs.across(&[tangent]);
     let rec = figs.built();
     let o = st.layout.origin;
-    let foot = DVec2::new(st.layout.ray_x(o), o.y);
     let c = cut(
         rec,
         Line::new(pc.pole, dir),
-        Line::new(foot, DVec2::Y),
+        pc.ordinate,
         k,
         "ordinate axis",
     )?;

@@ -55,7 +55,7 @@ struct Span {
     stub: (f64, f64),
 }
 
-/// Whether two boxes overlap.
+/// Whether two boxes overlap (a box of no height is a horizontal line: whether it crosses).
 fn overlaps(a: &Room, b: &Room) -> bool {
     a.0.x < b.1.x && b.0.x < a.1.x && a.0.y < b.1.y && b.0.y < a.1.y
 }

@@ -44,7 +44,7 @@ pub(super) fn name_rings_clear(marks: &mut [WheelMark], train: &Train, shafts: &
                 hi + DVec2::splat(NAME_CLEAR_MM),
             );
             !(lines.iter().enumerate()).any(|(j, line)| j != w && overlaps(&room, line))
-                && !shafts.iter().any(|shaft| crosses(&room, shaft))
+                && !shafts.iter().any(|shaft| overlaps(&room, shaft))
         };
         let place = RING_NAME_PLACES.into_iter().find(|&(left, up)| {
             (mark.name_left, mark.name_up) = (left, up);
@@ -52,9 +52,4 @@ pub(super) fn name_rings_clear(marks: &mut [WheelMark], train: &Train, shafts: &
         });
         (mark.name_left, mark.name_up) = place.unwrap_or(RING_NAME_PLACES[0]);
     }
-}
-
-/// Whether a box and a horizontal line (a box of no height) cross.
-fn crosses(room: &Room, line: &Room) -> bool {
-    room.0.y < line.0.y && line.0.y < room.1.y && room.0.x < line.1.x && line.0.x < room.1.x
 }
