@@ -274,15 +274,14 @@ fn files_of(
     } = *options;
     let mut plates: Vec<(PathBuf, Plate)> = Vec::new();
     let mut sets: Vec<(PathBuf, std::ops::Range<usize>)> = Vec::new();
-    let mut notes: Vec<(&Scene, crate::note::Note)> = Vec::new();
+    // A note is composed from its session's sheets beside the drawings' rasterising.
+    let mut notes: Vec<(&Session<'_>, Vec<(PlateKind, Plate)>)> = Vec::new();
     for session in sessions {
         let s = session.scene();
         let first = plates.len();
         let all = plates_of(session, lang)?;
         if formats.note {
-            let note = crate::note::compose_with(session, lang, all.clone())
-                .map_err(|error| note_failed(s, error))?;
-            notes.push((s, note));
+            notes.push((session, all.clone()));
         }
         for (_, plate) in all {
             let base = out.join(&s.stem).join(&plate.name);
@@ -350,9 +349,12 @@ fn files_of(
     };
     let note_pdfs = || -> Result<Vec<(PathBuf, Vec<u8>)>, RenderError> {
         notes
-            .iter()
-            .map(|(s, note)| {
-                let pdf = crate::note::to_pdf(note).map_err(|error| note_failed(s, error))?;
+            .into_iter()
+            .map(|(session, sheets)| {
+                let s = session.scene();
+                let pdf = crate::note::compose_with(session, lang, sheets)
+                    .and_then(|note| crate::note::to_pdf(&note))
+                    .map_err(|error| note_failed(s, error))?;
                 Ok((note_path(out, s), pdf))
             })
             .collect()

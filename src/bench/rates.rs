@@ -348,40 +348,26 @@ pub(super) fn force_rates(s: &Subject, reps: Reps) -> Result<(f64, f64), BenchEr
     Ok((count as f64 / constructed, poses.len() as f64 / analytic))
 }
 
-/// Seconds to write a scene's whole project in memory: every sheet as SVG and PNG at
-/// [`PNG_DPI`], the PDF set, and the explanatory note composed and typeset — what
-/// `tmm render --format svg,png,pdf` and `tmm note` write — and the note's size in bytes.
-pub(super) fn project_time(s: &Subject, reps: Reps) -> Result<(f64, usize), BenchError> {
-    let failed = |e: RenderError| BenchError::Plate {
-        scene: s.scene.stem.clone(),
-        plate: "project".into(),
-        detail: e.to_string(),
-    };
-    let formats = render::Formats {
-        svg: true,
-        png: true,
-        pdf: true,
-        note: true,
-        dxf: false,
-    };
-    let mut note = 0;
-    let t = best_time(reps.best_of.min(3), || {
-        let files = rendered(&s.scene, formats)?;
-        note = files
-            .iter()
-            .filter(|(p, _)| p.to_string_lossy().ends_with("-note.pdf"))
-            .map(|(_, b)| b.len())
-            .sum();
-        Ok::<_, RenderError>(files)
-    })
-    .map_err(failed)?;
-    Ok((t, note))
+/// The explanatory note of `s` in this process, best of the runs (each as cold as a fresh
+/// process: [`super::best_time`] empties the typesetter's memo).
+pub(super) struct NoteTimes {
+    /// Composed, s: a fresh session, the sheets whose views it shows, the Typst source with
+    /// its figures.
+    pub composing: f64,
+    /// Typeset, s: layout and PDF.
+    pub typesetting: f64,
+    /// Typeset, s, of the note's text set plain in its template ([`crate::note::plain_twin`]):
+    /// the typesetter's floor for a note of this length.
+    pub floor: f64,
+    /// Pages of the note.
+    pub pages: usize,
+    /// Characters of its text.
+    pub chars: usize,
 }
 
-/// The explanatory note of `s` alone, best of the runs: composed (a fresh session, the
-/// sheets whose views it shows, the Typst source with its figures) and typeset (the PDF),
-/// seconds each, and its pages — what `tmm note` adds to the sheets.
-pub(super) fn note_times(s: &Subject, reps: Reps) -> Result<(f64, f64, usize), BenchError> {
+/// The note of `s` alone, composed and typeset ([`NoteTimes`]) — what `tmm note` adds to
+/// the sheets.
+pub(super) fn note_times(s: &Subject, reps: Reps) -> Result<NoteTimes, BenchError> {
     let failed = |detail: String| BenchError::Plate {
         scene: s.scene.stem.clone(),
         plate: "note".into(),
@@ -393,17 +379,25 @@ pub(super) fn note_times(s: &Subject, reps: Reps) -> Result<(f64, f64, usize), B
     };
     let composing = best_time(reps.best_of.min(3), compose).map_err(failed)?;
     let note = compose().map_err(failed)?;
-    let mut pdf = Vec::new();
-    let typesetting = best_time(reps.best_of.min(3), || {
-        pdf = crate::note::to_pdf(&note).map_err(|e| e.to_string())?;
-        Ok::<_, String>(pdf.len())
+    let typeset = |note: &crate::note::Note| {
+        best_time(reps.best_of.min(3), || {
+            crate::note::to_pdf(note).map_err(|e| e.to_string())
+        })
+    };
+    let typesetting = typeset(&note).map_err(failed)?;
+    let plain = crate::note::plain_twin(&note).map_err(|e| failed(e.to_string()))?;
+    let floor = typeset(&plain).map_err(failed)?;
+    let text = crate::note::to_text(&note).map_err(|e| failed(e.to_string()))?;
+    Ok(NoteTimes {
+        composing,
+        typesetting,
+        floor,
+        pages: text.matches(crate::note::PAGE_BREAK).count(),
+        chars: text
+            .chars()
+            .filter(|&c| c != crate::note::PAGE_BREAK)
+            .count(),
     })
-    .map_err(failed)?;
-    let pages = crate::note::to_text(&note)
-        .map_err(|e| failed(e.to_string()))?
-        .matches(crate::note::PAGE_BREAK)
-        .count();
-    Ok((composing, typesetting, pages))
 }
 
 #[cfg(test)]

@@ -139,25 +139,7 @@ pub(super) fn drawing(
             ),
         });
     }
-    let (project_seconds, note_bytes) = project_time(shaper, reps)?;
-    throughput.push(Throughput {
-        name: format!("project {}", shaper.scene.stem),
-        per_second: 1.0 / project_seconds,
-        note: format!(
-            "the whole project in memory: every sheet ({sheets}) as SVG and PNG at {PNG_DPI} dpi, the PDF set and the explanatory note ({} kB) — `tmm render --format svg,png,pdf` and `tmm note`",
-            note_bytes / 1000
-        ),
-    });
-    let (composing, typesetting, pages) = rates::note_times(shaper, reps)?;
-    throughput.push(Throughput {
-        name: format!("note {}", shaper.scene.stem),
-        per_second: 1.0 / (composing + typesetting),
-        note: format!(
-            "the explanatory note alone ({pages} pages, ru, read to 0,5 mm): composed {:.0} ms (a fresh session, the sheets it shows, the Typst source and its figures), typeset {:.0} ms (the `typst` crate: layout and PDF) — `tmm note`",
-            composing * 1e3,
-            typesetting * 1e3
-        ),
-    });
+    throughput.extend(waits(opts, shaper, sheets, reps)?);
     let b = batch::batch_times(opts, reps)?;
     throughput.push(Throughput {
         name: format!("batch {} × {} (png)", shaper.scene.stem, b.variants),
@@ -171,4 +153,64 @@ pub(super) fn drawing(
         ),
     });
     Ok(throughput)
+}
+
+/// The rows of what a student waits for: the whole project and the note from fresh
+/// processes (medians), the note's composing and typesetting in this process, and the
+/// typesetter's floor for a note of its length.
+fn waits(
+    opts: &BenchOptions,
+    shaper: &Subject,
+    sheets: usize,
+    reps: Reps,
+) -> Result<Vec<Throughput>, BenchError> {
+    let ms = |s: f64| format!("{:.0} ms", s * 1e3);
+    let stem = &shaper.scene.stem;
+    let runs = if opts.quick { 1 } else { 7 };
+    let fresh = fresh::note_and_project(shaper, &opts.scenes, runs)?;
+    let n = rates::note_times(shaper, reps)?;
+    let inside = format!(
+        "in this process: composed {} (a fresh session, the sheets it shows, the Typst source and its figures), typeset {} (the `typst` crate: layout and PDF); Typst's floor, the note's {} characters set as plain text in its template: {}",
+        ms(n.composing),
+        ms(n.typesetting),
+        n.chars,
+        ms(n.floor)
+    );
+    // A command's row: its runs' medians, then what it made.
+    let command = |name: &str, command: &str, w: &fresh::Waited, made: &str| Throughput {
+        name: format!("{name} {stem} (fresh process)"),
+        per_second: 1.0 / w.wall,
+        note: format!(
+            "{} of `tmm {command} constructions/{stem}.toml`: {} wall, {}{made}",
+            match w.runs {
+                1 => "one run".to_string(),
+                k => format!("median of {k} runs"),
+            },
+            ms(w.wall),
+            w.cpu
+                .map_or("CPU not read".into(), |c| format!("{} of CPU", ms(c)))
+        ),
+    };
+    let rows = match fresh {
+        Some((note, project)) => vec![
+            command(
+                "project",
+                "render",
+                &project,
+                &format!(" with `--format svg,png,pdf,note` — every sheet ({sheets}) as SVG and PNG at {PNG_DPI} dpi, the PDF set and the explanatory note"),
+            ),
+            command(
+                "note",
+                "note",
+                &note,
+                &format!(" ({} pages, ru, read to 0,5 mm); {inside}", n.pages),
+            ),
+        ],
+        None => vec![Throughput {
+            name: format!("note {stem}"),
+            per_second: 1.0 / (n.composing + n.typesetting),
+            note: format!("{} pages, ru, read to 0,5 mm (not run as a command: this process is not `tmm`); {inside}", n.pages),
+        }],
+    };
+    Ok(rows)
 }

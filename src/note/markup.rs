@@ -284,6 +284,8 @@ pub(super) enum Align {
 #[derive(Debug, Default)]
 pub(super) struct Markup {
     out: String,
+    /// The numbered sections (level-1 headings) written so far.
+    sections: usize,
 }
 
 impl Markup {
@@ -294,10 +296,21 @@ impl Markup {
     }
 
     /// A numbered heading of `level` (1 a section, 2 a subsection) with its label `<key>`.
+    ///
+    /// A section's displayed formulas are numbered (S.n) within it (ГОСТ 2.105), S written
+    /// here: Typst counts n, and no formula's number waits for the layout to know its
+    /// section, which would lay the note out once more.
     pub(super) fn heading(&mut self, level: usize, title: &str) {
         let marks = "=".repeat(level.max(1));
         self.out
             .push_str(&format!("\n{marks} #{}\n\n", string(title)));
+        if level <= 1 {
+            self.sections += 1;
+            self.out.push_str(&format!(
+                "#set math.equation(numbering: n => \"({}.\" + str(n) + \")\")\n\n",
+                self.sections
+            ));
+        }
     }
 
     /// A paragraph of pieces: content (from [`text`], [`label`]) and inline formulas
@@ -451,6 +464,19 @@ pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn formulas_are_numbered_by_the_section_they_follow() {
+        let mut m = Markup::default();
+        m.heading(1, "A");
+        m.heading(2, "a");
+        m.heading(1, "B");
+        let s = m.finish();
+        let rule = |k: usize| format!("numbering: n => \"({k}.\" + str(n)");
+        assert_eq!(s.matches("#set math.equation").count(), 2, "{s}");
+        assert!(s.contains(&rule(1)) && s.contains(&rule(2)), "{s}");
+        assert!(s.find(&rule(2)) > s.find("= #\"B\""), "{s}");
+    }
 
     #[test]
     fn a_chain_of_equalities_may_break_after_its_first_sign_or_each() {

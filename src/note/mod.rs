@@ -309,3 +309,31 @@ pub fn page_fills(note: &Note) -> Result<Vec<f64>, NoteError> {
 pub fn to_text(note: &Note) -> Result<String, NoteError> {
     typeset::text(&note.source, &note.files)
 }
+
+/// Typst's floor for `note`: the same preamble (the page, its frame and title blocks, the
+/// faces) with the note's typeset text ([`to_text`], the same characters) set as plain
+/// paragraphs, one a page of the note, without a formula, table or figure — what the
+/// typesetter costs whatever the markup, beside which the note's own time is read.
+///
+/// # Errors
+/// [`NoteError::Typeset`] when the note does not typeset, or its source does not hold the
+/// template.
+pub fn plain_twin(note: &Note) -> Result<Note, NoteError> {
+    let template = include_str!("template.typ");
+    let end = note
+        .source
+        .find(template)
+        .map(|at| at + template.len())
+        .ok_or_else(|| NoteError::Typeset("the note's source holds no template".into()))?;
+    let mut source = note.source[..end].to_string();
+    for page in to_text(note)?.split(PAGE_BREAK) {
+        if !page.trim().is_empty() {
+            source.push_str(&format!("\n#{}\n", markup::text(page.trim())));
+        }
+    }
+    Ok(Note {
+        source,
+        files: Vec::new(),
+        unexplained: Vec::new(),
+    })
+}
