@@ -79,9 +79,18 @@ fn title_block_captions_follow_the_language() {
         .iter()
         .all(|c| uk.contains(c)));
     let en = svg(Lang::En);
-    assert!(["Drawn", "Checked", ">of ", "Mass", "Scale"]
-        .iter()
-        .all(|c| en.contains(c)));
+    assert!([
+        "Drawn",
+        "Checked",
+        "Tech. check",
+        "Std. check",
+        "Letter",
+        ">of ",
+        "Mass",
+        "Scale"
+    ]
+    .iter()
+    .all(|c| en.contains(c)));
     // "Sheet 1 of 2", as an English drawing writes it (issue 45), not "Sheets 1".
     assert!(!en.contains("Sheets"));
 }
