@@ -8,7 +8,7 @@ use super::reading::{read_angles, Drawn};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::fit::{overflow, raised};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
-use crate::geom::{french_curve, Arc, Circle, DVec2, Segment};
+use crate::geom::{french_piece, Arc, Circle, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
@@ -307,19 +307,19 @@ impl Inverting<'_> {
     /// their tangents: the roller's envelope runs parallel to the pitch curve), the dwells'
     /// arcs.
     fn profiles(&self, rec: &mut Recorder, o: StepId, mu: Scale, turned: &Turned) {
-        let closed = |pts: &[DVec2]| -> Vec<DVec2> {
-            closed_profile(self.points, pts, &turned.tangents)
-                .into_iter()
-                .map(|p| p / mu.value())
-                .collect()
+        let closed = |pts: &[DVec2]| -> Item {
+            let (start, pieces) = closed_profile(self.points, pts, &turned.tangents);
+            let mm = |p: DVec2| p / mu.value();
+            Item::Bezier {
+                start: mm(start),
+                pieces: pieces.iter().map(|p| p.map(mm)).collect(),
+                closed: true,
+            }
         };
         if !self.flat {
             rec.draw(
                 "pitch (theoretical) profile",
-                Item::Polyline {
-                    points: closed(&turned.centres),
-                    closed: true,
-                },
+                closed(&turned.centres),
                 Role::Construction,
                 &[o],
             );
@@ -330,10 +330,7 @@ impl Inverting<'_> {
             } else {
                 "practical profile: envelope of the rollers"
             },
-            Item::Polyline {
-                points: closed(&turned.profile),
-                closed: true,
-            },
+            closed(&turned.profile),
             Role::Result,
             &[o],
         );
@@ -369,44 +366,57 @@ pub(super) fn rotation(rec: &mut Recorder, o: StepId, r0_mm: f64) {
     );
 }
 
-/// The closed profile through `pts` (one per point of the law, cam frame): each moving
-/// phase through its points, the French curve between them touching their `tangents`, and
-/// each dwell the arc about O₁ it is.
-fn closed_profile(points: &[Point], pts: &[DVec2], tangents: &[DVec2]) -> Vec<DVec2> {
+/// The closed profile through `pts` (one per point of the law, cam frame) as cubic Bézier
+/// pieces from its first point: each moving phase the French curve between its points,
+/// touching their `tangents` (the curve itself, not points on it), and each dwell the arc
+/// about O₁ it is.
+pub(super) fn closed_profile(
+    points: &[Point],
+    pts: &[DVec2],
+    tangents: &[DVec2],
+) -> (DVec2, Vec<[DVec2; 3]>) {
     // The last point of the rise (the return's first follows it) and of the return.
     let n = points.iter().position(|p| p.last).unwrap_or(0);
     let m = points.len().saturating_sub(1);
-    let mut out = phase(pts, 0..=n, tangents);
+    let phase = |range: std::ops::Range<usize>| {
+        range.map(|i| french_piece(pts[i], tangents[i], pts[i + 1], tangents[i + 1]))
+    };
+    let mut out: Vec<[DVec2; 3]> = phase(0..n).collect();
     out.extend(dwell(pts[n], pts[n + 1]));
-    out.extend(phase(pts, n + 1..=m, tangents));
+    out.extend(phase(n + 1..m));
     out.extend(dwell(pts[m], pts[0]));
-    out
-}
-
-/// A moving phase's points with the French curve between them.
-fn phase(pts: &[DVec2], range: std::ops::RangeInclusive<usize>, t: &[DVec2]) -> Vec<DVec2> {
-    let (a, b) = (*range.start(), *range.end());
-    let mut out = vec![pts[a]];
-    for i in a..b {
-        out.extend_from_slice(&french_curve(pts[i], t[i], pts[i + 1], t[i + 1], CURVE_PIECES)[1..]);
-    }
-    out
+    (pts[0], out)
 }
 
 /// The dwell from `from` to `to`: the arc about O₁, swept clockwise in the cam frame (the
-/// short way is right for < 180°), its inner points.
-fn dwell(from: DVec2, to: DVec2) -> Vec<DVec2> {
-    let a = Arc::between(DVec2::ZERO, from.length(), from, to);
+/// short way is right for < 180°), as cubic pieces of at most [`DWELL_PIECE`] each (the
+/// control points 4/3·tan(δ/4)·r along the tangents: within 4e-7·r of the arc).
+fn dwell(from: DVec2, to: DVec2) -> Vec<[DVec2; 3]> {
+    let r = from.length();
+    let a = Arc::between(DVec2::ZERO, r, from, to);
     let sweep = if a.sweep > 0.0 {
         a.sweep - TAU
     } else {
         a.sweep
     };
-    let n = 24;
-    (1..n)
-        .map(|j| DVec2::from_angle(a.start + sweep * j as f64 / n as f64) * from.length())
+    let k = (sweep.abs() / DWELL_PIECE).ceil().max(1.0);
+    let delta = sweep / k;
+    let arm = 4.0 / 3.0 * (delta / 4.0).tan() * r;
+    (0..k as usize)
+        .map(|j| {
+            let (t0, t1) = (a.start + delta * j as f64, a.start + delta * (j + 1) as f64);
+            let (p0, p1) = (DVec2::from_angle(t0) * r, DVec2::from_angle(t1) * r);
+            [
+                p0 + DVec2::from_angle(t0).perp() * arm,
+                p1 - DVec2::from_angle(t1).perp() * arm,
+                if j + 1 == k as usize { to } else { p1 },
+            ]
+        })
         .collect()
 }
+
+/// The largest angle of a dwell's cubic piece, radians (30°).
+const DWELL_PIECE: f64 = std::f64::consts::PI / 6.0;
 
 /// The cam's centre O₁ at the origin, fixed and labelled: the first step of every profile.
 pub(super) fn cam_centre(rec: &mut Recorder) -> StepId {
@@ -453,6 +463,3 @@ pub(super) fn drawn_rho_min(points: &[Point], c: &[DVec2]) -> f64 {
     }
     best
 }
-
-/// Pieces of the French curve between two points of the practical profile.
-pub const CURVE_PIECES: usize = 8;

@@ -4,7 +4,7 @@
 use super::figure::{Figure, Role, Step, StepId};
 use super::item::Item;
 use super::label::{Label, Names};
-use crate::geom::{Arc, Circle, DVec2, Segment};
+use crate::geom::{bezier_points, Arc, Circle, DVec2, Segment};
 use crate::scale::Scale;
 
 impl Figure {
@@ -88,20 +88,14 @@ impl Figure {
                     sweep: std::f64::consts::TAU,
                 }),
                 Item::Arc(a) => arc(a),
-                Item::Polyline { points, closed } => runs(points, *closed)
-                    .into_iter()
-                    .map(|points| Item::Polyline {
-                        points,
-                        closed: false,
-                    })
-                    .collect(),
-                Item::Curve { points, closed } => runs(points, *closed)
-                    .into_iter()
-                    .map(|points| Item::Curve {
-                        points,
-                        closed: false,
-                    })
-                    .collect(),
+                Item::Polyline { points, closed } => lines(runs(points, *closed), false),
+                Item::Curve { points, closed } => lines(runs(points, *closed), true),
+                // Cut as the curve it is, in chords of a sixteenth of a piece.
+                Item::Bezier {
+                    start,
+                    pieces,
+                    closed,
+                } => lines(runs(&bezier_points(*start, pieces, 16), *closed), false),
                 // Its strokes, cut by the circle as lines are (an outline that is not finite
                 // hatches nothing).
                 Item::Hatching { .. } => st
@@ -148,4 +142,20 @@ impl Figure {
             readings: Vec::new(),
         }
     }
+}
+
+/// The pieces of a line inside a detail's zone, each a polyline or, `smooth`, a curve.
+fn lines(runs: Vec<Vec<DVec2>>, smooth: bool) -> Vec<Item> {
+    runs.into_iter()
+        .map(|points| match smooth {
+            true => Item::Curve {
+                points,
+                closed: false,
+            },
+            false => Item::Polyline {
+                points,
+                closed: false,
+            },
+        })
+        .collect()
 }

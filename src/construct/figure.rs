@@ -130,6 +130,15 @@ impl Figure {
                         points: points.iter().map(|p| m(*p)).collect(),
                         closed: *closed,
                     },
+                    Item::Bezier {
+                        start,
+                        pieces,
+                        closed,
+                    } => Item::Bezier {
+                        start: m(*start),
+                        pieces: pieces.iter().map(|p| p.map(&m)).collect(),
+                        closed: *closed,
+                    },
                     Item::Vector { from, to } => Item::Vector {
                         from: m(*from),
                         to: m(*to),
@@ -269,6 +278,11 @@ impl Figure {
                 | Item::Hatching {
                     outline: points, ..
                 } => points.iter().for_each(|p| add(*p)),
+                // Within the hull of its control points, and nearly all of it.
+                Item::Bezier { start, pieces, .. } => {
+                    add(*start);
+                    pieces.iter().flatten().for_each(|p| add(*p))
+                }
                 Item::Vector { from, to } => {
                     add(*from);
                     add(*to)

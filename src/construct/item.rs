@@ -35,6 +35,17 @@ pub enum Item {
         /// A closed curve.
         closed: bool,
     },
+    /// A curve given piece by piece as cubic Bézier pieces from `start`, each its two
+    /// control points and its end: the French curve between points whose tangents the
+    /// construction knows (a cam's profile by inversion), drawn as it was computed.
+    Bezier {
+        /// Where the first piece starts.
+        start: DVec2,
+        /// The pieces: two control points and the end.
+        pieces: Vec<[DVec2; 3]>,
+        /// The last piece ends at `start`.
+        closed: bool,
+    },
     /// An arrowed vector (plans, forces).
     Vector {
         /// Tail.

@@ -23,8 +23,8 @@ pub use linear::{
     SINGULAR_REL,
 };
 pub use primitives::{
-    french_curve, hermite, nearest, polygon_contains, rotate, wrap_pi, Arc, Circle, Line, Ray,
-    Segment, Side,
+    bezier_at, bezier_points, french_curve, french_piece, hermite, nearest, polygon_contains,
+    rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,
 };
 pub use rect::Rect;
 pub use root::{bisect, bracketed_root, illinois, Midpoint};

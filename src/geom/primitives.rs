@@ -301,6 +301,19 @@ pub fn nearest(candidates: &[DVec2], previous: DVec2) -> Option<usize> {
 /// directions `ta` there and `tb` here (the cubic with those end tangents, each turned along
 /// the chord and as long as it), as `pieces + 1` points from `a` to `b`.
 pub fn french_curve(a: DVec2, ta: DVec2, b: DVec2, tb: DVec2, pieces: usize) -> Vec<DVec2> {
+    let (ma, mb) = french_derivatives(a, ta, b, tb);
+    hermite(a, ma, b, mb, pieces)
+}
+
+/// [`french_curve`] as one cubic Bézier piece from `a`: its two control points and its end
+/// `b` (the curve itself, not points on it).
+pub fn french_piece(a: DVec2, ta: DVec2, b: DVec2, tb: DVec2) -> [DVec2; 3] {
+    let (ma, mb) = french_derivatives(a, ta, b, tb);
+    [a + ma / 3.0, b - mb / 3.0, b]
+}
+
+/// The French curve's end derivatives: each tangent turned along the chord and as long as it.
+fn french_derivatives(a: DVec2, ta: DVec2, b: DVec2, tb: DVec2) -> (DVec2, DVec2) {
     let chord = b - a;
     let len = chord.length();
     let along = |t: DVec2| {
@@ -311,7 +324,27 @@ pub fn french_curve(a: DVec2, ta: DVec2, b: DVec2, tb: DVec2, pieces: usize) -> 
             t * len
         }
     };
-    hermite(a, along(ta), b, along(tb), pieces)
+    (along(ta), along(tb))
+}
+
+/// The point at `t` ∈ [0, 1] of the cubic Bézier piece from `start` with the control points
+/// and end `p`.
+pub fn bezier_at(start: DVec2, p: &[DVec2; 3], t: f64) -> DVec2 {
+    let s = 1.0 - t;
+    start * (s * s * s) + p[0] * (3.0 * s * s * t) + p[1] * (3.0 * s * t * t) + p[2] * (t * t * t)
+}
+
+/// The curve of cubic Bézier `pieces` from `start` as points, `per` chords a piece (the
+/// start, then each piece's inner points and its end).
+pub fn bezier_points(start: DVec2, pieces: &[[DVec2; 3]], per: usize) -> Vec<DVec2> {
+    let per = per.max(1);
+    let mut out = vec![start];
+    let mut at = start;
+    for p in pieces {
+        out.extend((1..=per).map(|k| bezier_at(at, p, k as f64 / per as f64)));
+        at = p[2];
+    }
+    out
 }
 
 /// The cubic Hermite piece from `a` to `b` with the derivatives `ma`, `mb` (per the whole

@@ -38,8 +38,7 @@ pub fn pieces(pts: &[DVec2], closed: bool) -> Vec<Piece> {
 
 /// The point at `t` ∈ [0, 1] of the piece from `start`.
 pub fn eval(start: DVec2, p: &Piece, t: f64) -> DVec2 {
-    let s = 1.0 - t;
-    start * (s * s * s) + p[0] * (3.0 * s * s * t) + p[1] * (3.0 * s * t * t) + p[2] * (t * t * t)
+    crate::geom::bezier_at(start, p, t)
 }
 
 /// Whether the abscissae of `pts` all increase or all decrease.

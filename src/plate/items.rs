@@ -190,6 +190,15 @@ pub(crate) fn item_outlines(item: &Item, (role, labelled): (Role, bool), map: Ma
         Item::Polyline { points, closed } | Item::Curve { points, closed } => {
             chain(points, *closed, &mut lines)
         }
+        Item::Bezier {
+            start,
+            pieces,
+            closed,
+        } => chain(
+            &crate::geom::bezier_points(*start, pieces, BEZIER_CHORDS),
+            *closed,
+            &mut lines,
+        ),
         Item::Vector { from, to } => {
             lines.push((*from, *to));
             if let Some(u) = (*to - *from).try_normalize() {
@@ -317,6 +326,19 @@ fn item_marks(
         Item::Curve { points, closed } => {
             out.extend(stroke(map, pen, |d| smooth(d, points, *closed)))
         }
+        Item::Bezier {
+            start,
+            pieces,
+            closed,
+        } => out.extend(stroke(map, pen, |d| {
+            d.move_to(*start);
+            for [c1, c2, to] in pieces {
+                d.cubic_to(*c1, *c2, *to);
+            }
+            if *closed {
+                d.close();
+            }
+        })),
         Item::Vector { from, to } => vector(map, (pen, labelled), *from, *to, out),
         Item::Slider { at, angle } => out.extend(slider(map, pen, *at, *angle)),
         Item::Guide { segment, hatch } => guide(map, pen, segment, *hatch, out),
@@ -446,6 +468,9 @@ fn smooth(d: &mut PathData, pts: &[DVec2], closed: bool) {
         d.close();
     }
 }
+
+/// Chords of each piece of a Bézier curve where the labels' placer reads it as lines.
+const BEZIER_CHORDS: usize = 8;
 
 /// Room a dimension line needs between its extension lines for its two arrows, mm.
 const ARROWS_INSIDE_MM: f64 = 2.0 * Arrow::THIN.len + 1.0;

@@ -112,6 +112,12 @@ fn sentence(figure: &Figure, s: &Step, names: &[(DVec2, String)], lang: Lang) ->
                 .replace("{k}", &points.len().to_string());
             return fill(&t, &label, "");
         }
+        // Through its pieces' ends.
+        (Item::Bezier { pieces, closed, .. }, _) => {
+            let ends = pieces.len() + usize::from(!*closed);
+            let t = StepText::Curve.get(lang).replace("{k}", &ends.to_string());
+            return fill(&t, &label, "");
+        }
         (Item::Polyline { points, .. }, _) => {
             let t = StepText::Polyline
                 .get(lang)
