@@ -75,7 +75,7 @@ fn waited(exe: &Path, args: &[&str], out: &Path, runs: usize) -> Result<Waited, 
         let _ = std::fs::remove_dir_all(out);
         let cpu0 = children_cpu();
         let start = Instant::now();
-        let status = Command::new(exe)
+        let done = Command::new(exe)
             .args(args)
             .arg("--out")
             .arg(out)
@@ -83,11 +83,11 @@ fn waited(exe: &Path, args: &[&str], out: &Path, runs: usize) -> Result<Waited, 
             .map_err(|e| format!("{}: {e}", exe.display()))?;
         walls.push(start.elapsed().as_secs_f64());
         let _ = std::fs::remove_dir_all(out);
-        if !status.status.success() {
+        if !done.status.success() {
             return Err(format!(
                 "`tmm {}` failed: {}",
                 args.join(" "),
-                String::from_utf8_lossy(&status.stderr).trim()
+                String::from_utf8_lossy(&done.stderr).trim()
             ));
         }
         if let (Some(a), Some(b)) = (cpu0, children_cpu()) {

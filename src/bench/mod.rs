@@ -185,8 +185,8 @@ impl Reps {
 }
 
 /// The best (least) wall time of `best_of` runs of `f`, seconds. Each run starts as a fresh
-/// process does, with no image ([`crate::plate::to_png_dpi`]) and no typeset layout kept (a blocking contour is
-/// kept by the session that traced it, and each run makes its own).
+/// process does, with no image ([`crate::plate::to_png_dpi`]) and no typeset layout kept (a
+/// blocking contour is kept by the session that traced it, and each run makes its own).
 fn best_time<T, E>(best_of: usize, mut f: impl FnMut() -> Result<T, E>) -> Result<f64, E> {
     let mut best = f64::INFINITY;
     for _ in 0..best_of.max(1) {
