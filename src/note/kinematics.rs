@@ -170,6 +170,7 @@ mod tests {
                     lang,
                     report: session.report().expect("report"),
                     sheets: Vec::new(),
+                    views: Vec::new(),
                     doc: Markup::default(),
                     files: Vec::new(),
                     explained: Explained::default(),

@@ -128,6 +128,9 @@ struct Writer<'a, 's> {
     lang: Lang,
     report: Report,
     sheets: Vec<(PlateKind, Plate)>,
+    /// Each sheet's views as figures, laid out once (a sheet's labels are placed over the
+    /// whole sheet) when a section first shows one of them.
+    views: Vec<Option<Vec<Option<plate::ViewSvg>>>>,
     doc: Markup,
     files: Vec<(String, Vec<u8>)>,
     explained: explain::Explained,
@@ -156,12 +159,16 @@ impl Writer<'_, '_> {
     ) {
         let sheet_word = self.word(NoteText::SheetNo);
         let mut out = Vec::new();
-        let sheets = self.sheets.iter().filter(|(k, _)| *k == kind).enumerate();
-        for (_, (_, p)) in sheets.filter(|(n, _)| nth.is_none_or(|k| k == *n)) {
-            let svgs = plate::view_svgs(p);
-            for (i, (view, svg)) in p.views.iter().zip(svgs).enumerate() {
+        let Writer { sheets, views, .. } = self;
+        let of_kind = sheets.iter().zip(views).filter(|((k, _), _)| *k == kind);
+        for (_, ((_, p), svgs)) in of_kind
+            .enumerate()
+            .filter(|(n, _)| nth.is_none_or(|k| k == *n))
+        {
+            let svgs = svgs.get_or_insert_with(|| plate::view_svgs(p));
+            for (i, (view, svg)) in p.views.iter().zip(svgs.iter()).enumerate() {
                 let own = view.caption.as_deref().unwrap_or("");
-                let Some(svg) = svg.filter(|_| pick(own)) else {
+                let Some(svg) = svg.as_ref().filter(|_| pick(own)).cloned() else {
                     continue;
                 };
                 let path = format!("/fig/{}-{i}.svg", p.name);
@@ -229,6 +236,7 @@ pub fn compose_with(
         session,
         lang,
         report,
+        views: sheets.iter().map(|_| None).collect(),
         sheets,
         doc: Markup::default(),
         files: Vec::new(),
