@@ -7,7 +7,10 @@ use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::words::{unit_in, NoteText as T, Text as S};
 
-/// The page rules (`template.typ`) after the title block's data.
+/// The note's page rules, formulas' and tables' forms and title blocks (Typst).
+pub(super) const TEMPLATE: &str = include_str!("template.typ");
+
+/// The page rules ([`TEMPLATE`]) after the title block's data.
 pub(super) fn preamble(w: &mut Writer<'_, '_>) {
     let t = w.session.scene().title.in_lang(w.lang);
     let c = crate::plate::title_block_captions(w.lang);
@@ -42,7 +45,7 @@ pub(super) fn preamble(w: &mut Writer<'_, '_>) {
         string(w.word(T::Where)),
     );
     w.doc.raw(&meta);
-    w.doc.raw(include_str!("template.typ"));
+    w.doc.raw(TEMPLATE);
 }
 
 /// The title page in the note's language: the university and the department, the

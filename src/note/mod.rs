@@ -327,11 +327,10 @@ pub fn to_text(note: &Note) -> Result<String, NoteError> {
 /// [`NoteError::Typeset`] when the note does not typeset, or its source does not hold the
 /// template.
 pub fn plain_twin(note: &Note) -> Result<Note, NoteError> {
-    let template = include_str!("template.typ");
     let end = note
         .source
-        .find(template)
-        .map(|at| at + template.len())
+        .find(front::TEMPLATE)
+        .map(|at| at + front::TEMPLATE.len())
         .ok_or_else(|| NoteError::Typeset("the note's source holds no template".into()))?;
     let mut source = note.source[..end].to_string();
     for page in to_text(note)?.split(PAGE_BREAK) {
