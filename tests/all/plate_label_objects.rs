@@ -4,8 +4,9 @@
 //! - a label of a point is written within [`POINT_REACH_MM`] of its point (the point of its
 //!   step's item: a marked point, a pair, a block, an end of a line or vector);
 //! - a label of a line, a vector or an arc (a force, an arm, a couple, a dimension) is
-//!   nearer to its own item than to any other line of its view (by [`NEARER_MM`]): a reader
-//!   takes a label for the nearest line's;
+//!   written within [`ITEM_REACH_MM`] of its own item, and nearer to it than to any other
+//!   line of its view (by [`NEARER_MM`]): a reader takes a label for the nearest line's, and
+//!   a label far from every line for nobody's;
 //! - or it is written on a leader's shelf (ГОСТ 2.316) whose line ends on its object, within
 //!   [`LEADER_AT_MM`]; no leader runs through another label or crosses another leader.
 //!
@@ -27,6 +28,10 @@ use tmm::scale::Lang;
 /// writes it. Ten millimetres and more is read as another point's (`B₂` 10 mm from its
 /// dot, issue 45).
 const POINT_REACH_MM: f64 = 7.5;
+
+/// A label of a line, a vector or an arc is written at most this far from it, mm (as a
+/// point's: the lever's `F_и5` 12 mm under its arrow, nothing else near, issue 45).
+const ITEM_REACH_MM: f64 = POINT_REACH_MM;
 
 /// A leader ends on its object: within this of its point or its item's line (a thin line's
 /// width: an arc is flattened to chords differently here and in the placer), mm.
@@ -101,6 +106,9 @@ fn labels_away_in(plate: &Plate, l: &Layout) -> Vec<(String, String)> {
             .iter()
             .map(|&(a, b)| box_to_segment(lo, hi, a, b))
             .fold(f64::INFINITY, f64::min);
+        if d_own > ITEM_REACH_MM {
+            out.push(say(format!("{d_own:.1} mm from its item")));
+        }
         if let Some((d, other)) = nearest_other(view, &x.steps, (lo, hi)) {
             if d + NEARER_MM < d_own {
                 out.push(say(format!(
@@ -225,6 +233,8 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
     // Two position numbers 6 mm apart.
     let (p8, p9) = (DVec2::new(0.0, -60.0), DVec2::new(6.0, -60.0));
     let p10 = DVec2::new(0.0, -90.0);
+    // A force alone, nothing else near it.
+    let (f0, f1) = (DVec2::new(0.0, -130.0), DVec2::new(20.0, -130.0));
     let mut number = drawn(5, Item::Text(p10), "10", (p10, -DVec2::Y));
     if let Some(l) = number.label.as_mut() {
         l.names = Names::Point;
@@ -236,6 +246,7 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
         drawn(3, Item::Point(p8), "8", (p8, -DVec2::Y)),
         drawn(4, Item::Point(p9), "9", (p9, -DVec2::Y)),
         number,
+        side(6, f0, f1, "F_{и5}", f0.lerp(f1, 0.5)),
     ];
     let plate = with_view(plate, steps);
     let mut l = layout(&plate);
@@ -268,11 +279,27 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
             x.rect.max = x.rect.min + size;
         }
     }
+    // The force's label 12 mm under its arrow: nearer it than any other line, and read as
+    // nobody's.
+    let under = on_sheet(view, f0.lerp(f1, 0.5));
+    for x in l.labels.iter_mut() {
+        if x.view == broken && x.text == "F_{и5}" {
+            let size = x.rect.max - x.rect.min;
+            x.rect.min = under + DVec2::new(-size.x * 0.5, 12.0);
+            x.rect.max = x.rect.min + size;
+        }
+    }
     let found: Vec<String> = labels_away_in(&plate, &l)
         .into_iter()
         .map(|x| x.1)
         .collect();
-    assert!(found.len() >= before + 4, "{found:?}");
+    assert!(found.len() >= before + 5, "{found:?}");
+    assert!(
+        found
+            .iter()
+            .any(|w| w.contains("“F_{и5}”: 12.0 mm from its item")),
+        "{found:?}"
+    );
     assert!(
         found
             .iter()
@@ -293,7 +320,10 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
     let placed: Vec<String> = labels_away(&plate).into_iter().map(|x| x.1).collect();
     let placed = placed.join("\n");
     assert!(
-        !placed.contains("“R_{1-2}”:") && !placed.contains("“8”:") && !placed.contains("“10”:"),
+        !placed.contains("“R_{1-2}”:")
+            && !placed.contains("“8”:")
+            && !placed.contains("“10”:")
+            && !placed.contains("“F_{и5}”:"),
         "{placed}"
     );
 }

@@ -51,6 +51,11 @@ const WRONG_LINE_MM: f64 = 15.0;
 /// [`WRONG_LINE`], less than a line striking through the label.
 const BEYOND: f64 = 30.0;
 const BEYOND_MM: f64 = 15.0;
+/// The farthest a label of an item (a force, an arm) stands from its own line before it
+/// costs [`BEYOND`] (and [`BEYOND_MM`] per mm beyond), mm: as far as a point's label
+/// ([`POINT_REACH_MM`]). Nearer than every other line is not enough: a label 12 mm under an
+/// arrow, with nothing else near, is read as nobody's (issue 45: the lever's `F_и5`).
+pub(crate) const ITEM_REACH_MM: f64 = POINT_REACH_MM;
 /// The most a label away from its object costs ([`WRONG_LINE`], [`BEYOND`]): what a thin
 /// line striking through 2 mm of it costs (a main one through 1 mm), so that a label struck
 /// through stays the worst (`h₄` on the V engine's lever struck by an arm 3,8 mm rather
@@ -469,8 +474,9 @@ pub(crate) const NEARER_MM: f64 = 0.5;
 
 /// `cost` and what a label at `rect` costs for standing away from its object: a label of a
 /// point beyond [`POINT_REACH_MM`] from it or nearer another labelled point of its view (the
-/// position number "8" written nearer point 9, issue 45), a label of an item nearer another
-/// line of its view than its own (nothing at its object).
+/// position number "8" written nearer point 9, issue 45), a label of an item beyond
+/// [`ITEM_REACH_MM`] from its own line or nearer another line of its view than its own
+/// (nothing at its object).
 fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
     if job.request.names_of == Names::Point {
         let own = box_distance(rect, job.request.anchor);
@@ -488,6 +494,10 @@ fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
         }
     }
     if let Some(own) = own_distance(&job.request.own, rect) {
+        let beyond = own - ITEM_REACH_MM;
+        if beyond > 1e-9 {
+            cost += (BEYOND + BEYOND_MM * beyond).min(AWAY_MAX);
+        }
         let rival = job
             .rivals
             .iter()
