@@ -328,8 +328,14 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
     );
 }
 
+/// A text whose top stands at most this far under a shelf, across from half of the shorter
+/// of the two, reads as the denominator of a fraction the shelf is the bar of (`0` over
+/// `O₂`, issue 45), mm.
+const UNDER_SHELF_MM: f64 = 2.5;
+
 /// Where the leaders of the layout `l` break ГОСТ 2.316: a leader (its line or shelf) through
-/// another label's text, or two leaders crossing; `view N “text”: why` for each.
+/// another label's text, two leaders crossing, a shelf right over another text; `view N
+/// “text”: why` for each.
 fn leaders_crossing(l: &Layout) -> Vec<String> {
     let mut out = Vec::new();
     for (i, x) in l.labels.iter().enumerate() {
@@ -362,14 +368,28 @@ fn leaders_crossing(l: &Layout) -> Vec<String> {
                     x.view, x.text, y.text
                 ));
             }
+            let (lo, hi) = (
+                leader.knee.x.min(leader.end.x),
+                leader.knee.x.max(leader.end.x),
+            );
+            let across = hi.min(y.rect.max.x) - lo.max(y.rect.min.x);
+            let below = y.rect.min.y - leader.knee.y;
+            if across > 0.5 * (hi - lo).min(y.rect.max.x - y.rect.min.x)
+                && (0.0..=UNDER_SHELF_MM).contains(&below)
+            {
+                out.push(format!(
+                    "view {} “{}”: its shelf stands right over “{}” (a fraction)",
+                    x.view, x.text, y.text
+                ));
+            }
         }
     }
     out
 }
 
-/// No leader on any sheet runs through another label or crosses another leader, in every
-/// configuration; and the shipped sheets write some labels on leaders (the rule is checked
-/// on real leaders).
+/// No leader on any sheet runs through another label, crosses another leader or stands its
+/// shelf right over another label, in every configuration; and the shipped sheets write
+/// some labels on leaders (the rule is checked on real leaders).
 #[test]
 fn leaders_cross_no_label_and_no_leader() {
     let mut found = Vec::new();
@@ -415,6 +435,17 @@ fn the_leader_rules_fail_on_a_plate_built_to_break_them() {
     l.labels[other].rect.max = mid + size * 0.5;
     let crossing = leaders_crossing(&l).join("\n");
     assert!(crossing.contains("its leader runs through"), "{crossing}");
+    // Another label written right under its shelf, 1 mm below it.
+    let mut l = layout(&plate);
+    let (lo, hi) = (
+        leader.knee.x.min(leader.end.x),
+        leader.knee.x.max(leader.end.x),
+    );
+    let size = l.labels[other].rect.max - l.labels[other].rect.min;
+    l.labels[other].rect.min = DVec2::new((lo + hi - size.x) * 0.5, leader.knee.y + 1.0);
+    l.labels[other].rect.max = l.labels[other].rect.min + size;
+    let crossing = leaders_crossing(&l).join("\n");
+    assert!(crossing.contains("right over"), "{crossing}");
     // The leader moved 1 mm off its object.
     let mut l = layout(&plate);
     if let Some(x) = l.labels[on].leader.as_mut() {

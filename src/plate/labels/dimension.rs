@@ -4,8 +4,9 @@
 //! from the middle of the line (ГОСТ 2.307: a line with no room for its number) — never
 //! struck through by a line of its own view.
 
+use super::clip::{clipped_area, clipped_length, own_distance};
 use super::leader::{self, Leader};
-use super::place::{clipped_area, clipped_length, own_distance, written, NEARER_MM};
+use super::place::{written, NEARER_MM};
 use super::{shape_box, Outline, Request, Shape, LABEL_HEIGHT_MM};
 use crate::construct::{Item, Names};
 use crate::geom::DVec2;

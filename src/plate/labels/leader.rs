@@ -160,6 +160,24 @@ const ALONG_STEP_MM: f64 = 0.5;
 const ALONG_FROM_MM: f64 = 1.5;
 const ALONG_LINE: f64 = 10.0;
 
+/// A text this near under a shelf, across from it over at least [`UNDER_SHELF_ACROSS`] of
+/// the shorter of the two, reads as the denominator of a fraction whose bar is the shelf
+/// (the flat rocker's position number `0` on a shelf right over `O₂`, issue 45), mm; and
+/// what that costs (`place::Placer::lift_fractions`), as a leader passing another label's
+/// point. A text beside the shelf's end, across from a corner of it, reads as its own.
+const UNDER_SHELF_MM: f64 = 2.5;
+const UNDER_SHELF_ACROSS: f64 = 0.5;
+pub(super) const UNDER_SHELF: f64 = place::OVER_POINT;
+
+/// Whether the text box `t` stands right under the shelf of `l` (see [`UNDER_SHELF_MM`]).
+pub(super) fn under_shelf(l: &Leader, t: &Rect) -> bool {
+    let (lo, hi) = (l.knee.x.min(l.end.x), l.knee.x.max(l.end.x));
+    let across = hi.min(t.max.x) - lo.max(t.min.x);
+    let shorter = (hi - lo).min(t.max.x - t.min.x);
+    let below = t.min.y - l.knee.y;
+    across > UNDER_SHELF_ACROSS * shorter && (0.0..=UNDER_SHELF_MM).contains(&below)
+}
+
 /// What the leader `l` of a label at `rect` costs among the drawing's `lines`, the other
 /// labels' `points`, the other `texts` and the other `leaders`.
 pub(super) fn cost(
@@ -197,14 +215,14 @@ pub(super) fn cost(
     for t in texts {
         if [&line, &shelf]
             .iter()
-            .any(|s| place::clipped_length(s.from, s.to, t) > 0.0)
+            .any(|s| clip::clipped_length(s.from, s.to, t) > 0.0)
         {
             cost += place::OVER_TEXT;
         }
     }
     for other in leaders {
         let crossed = other.pieces().iter().any(|o| {
-            place::clipped_length(o.from, o.to, rect) > 0.0
+            clip::clipped_length(o.from, o.to, rect) > 0.0
                 || [&line, &shelf].iter().any(|s| s.crossing(o).is_some())
         });
         if crossed {

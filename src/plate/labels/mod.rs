@@ -321,7 +321,7 @@ pub(super) fn line_length_in(figure: &crate::construct::Figure, lo: DVec2, hi: D
         .iter()
         .flat_map(|s| step_outlines(s, map))
         .map(|o| match o.shape {
-            Shape::Line(a, b) => place::clipped_length(a, b, &rect),
+            Shape::Line(a, b) => clip::clipped_length(a, b, &rect),
             Shape::Area(_) => 0.0,
         })
         .sum()
@@ -401,6 +401,7 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
 }
 
 mod candidates;
+mod clip;
 mod dimension;
 mod leader;
 pub use dimension::struck_dimension_texts;

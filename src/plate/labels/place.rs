@@ -2,6 +2,7 @@
 //! lines already on the view, in a fixed order with repair rounds.
 
 use super::candidates::{box_distance, candidates, near_bound, NEAR_RING_MM, POINT_REACH_MM};
+use super::clip::{ink_inside, own_distance, rect_segment_distance};
 use super::leader::{self, Leader};
 use super::*;
 
@@ -81,6 +82,10 @@ struct Job<'a> {
     points: Vec<DVec2>,
     /// The cost per rank of its candidates.
     rank_cost: f64,
+    /// Whether a place on a leader pays for each other text right under its shelf
+    /// ([`leader::under_shelf`]): in [`Placer::lift_fractions`], once every label stands
+    /// where it will (before, a text under a shelf may be one about to move).
+    fractions: bool,
 }
 
 /// Where a label is: its box and the rank of that candidate.
@@ -168,6 +173,7 @@ impl<'a> Placer<'a> {
             }
         }
         self.put_on_leaders(&jobs, &mut slots, &order, &points);
+        self.lift_fractions(&jobs, &mut slots, &order, &points);
         out.extend(jobs.into_iter().zip(slots).filter_map(|(j, s)| {
             let Slot { rect, leader, .. } = s?;
             Some(PlacedLabel {
@@ -210,6 +216,33 @@ impl<'a> Placer<'a> {
             if cost < cost_now - 1e-9 {
                 slots[i] = Some(slot);
             }
+        }
+    }
+
+    /// Every label on a shelf with another text right under it (read as a fraction, the
+    /// shelf its bar: `0` over `O₂`) takes the best place on a leader paying for that, in the
+    /// placing order.
+    fn lift_fractions(
+        &self,
+        jobs: &[Job],
+        slots: &mut [Option<Slot>],
+        order: &[usize],
+        points: &[(usize, DVec2)],
+    ) {
+        for &i in order {
+            let Some(Slot {
+                leader: Some(now), ..
+            }) = slots[i]
+            else {
+                continue;
+            };
+            let mut on_leader = self.leader_job(jobs[i].request.clone(), points);
+            let others = self.others_near(on_leader.near, slots, i);
+            if !others.texts.iter().any(|t| leader::under_shelf(&now, t)) {
+                continue;
+            }
+            on_leader.fractions = true;
+            slots[i] = Some(self.best(&on_leader, slots, i).0);
         }
     }
 
@@ -296,6 +329,7 @@ impl<'a> Placer<'a> {
             rivals,
             points,
             rank_cost,
+            fractions: false,
         }
     }
 
@@ -435,6 +469,14 @@ impl<'a> Placer<'a> {
         cost = match slot.leader {
             None => away(job, rect, cost),
             Some(l) => {
+                let fractions = match job.fractions {
+                    true => others
+                        .texts
+                        .iter()
+                        .filter(|t| leader::under_shelf(&l, t))
+                        .count(),
+                    false => 0,
+                };
                 cost + leader::cost(
                     &l,
                     rect,
@@ -442,7 +484,7 @@ impl<'a> Placer<'a> {
                     &job.points,
                     &others.texts,
                     &others.leaders,
-                )
+                ) + fractions as f64 * leader::UNDER_SHELF
             }
         };
         for (bounds, o) in &job.lines {
@@ -519,90 +561,7 @@ fn struck(job: &Job, rect: &Rect) -> bool {
         .any(|(bounds, o)| bounds.touches(&padded) && ink_inside(o, &padded) > 0.0)
 }
 
-/// How much of the outline `o` lies inside `r`: mm of a line, mm² of an area.
-fn ink_inside(o: &Outline, r: &Rect) -> f64 {
-    match &o.shape {
-        Shape::Line(a, b) => clipped_length(*a, *b, r),
-        Shape::Area(pts) => clipped_area(pts, r),
-    }
-}
-
-/// The distance from `rect` to the nearest of the lines among `own`; `None` without lines.
-pub(super) fn own_distance<'o>(
-    own: impl IntoIterator<Item = &'o Outline>,
-    rect: &Rect,
-) -> Option<f64> {
-    own.into_iter()
-        .filter_map(|o| match o.shape {
-            Shape::Line(a, b) => Some(rect_segment_distance(rect, a, b)),
-            Shape::Area(_) => None,
-        })
-        .reduce(f64::min)
-}
-
-/// The distance from the box `r` to the segment `a`–`b`, mm (0 when they meet).
-pub(crate) fn rect_segment_distance(r: &Rect, a: DVec2, b: DVec2) -> f64 {
-    if r.contains(&Rect::new(a, a)) || clipped_length(a, b, r) > 0.0 {
-        return 0.0;
-    }
-    let to_rect = |p: DVec2| (p - p.clamp(r.min, r.max)).length();
-    let segment = crate::geom::Segment::new(a, b);
-    let to_segment = |p: DVec2| segment.distance_to(p);
-    let corners = [
-        r.min,
-        r.max,
-        DVec2::new(r.min.x, r.max.y),
-        DVec2::new(r.max.x, r.min.y),
-    ];
-    corners
-        .into_iter()
-        .map(to_segment)
-        .chain([to_rect(a), to_rect(b)])
-        .fold(f64::INFINITY, f64::min)
-}
-
 /// The text written so that its box is `rect`.
 pub(super) fn written(text: &str, e: &Extent, rect: Rect) -> Placed {
     Placed::new(rect.min - e.min, text, LABEL_HEIGHT_MM, Align::Start)
-}
-
-/// Length of the segment `a`–`b` inside `r` (Liang–Barsky clipping).
-pub(super) fn clipped_length(a: DVec2, b: DVec2, r: &Rect) -> f64 {
-    match r.segment_inside(a, b) {
-        Some((t0, t1)) if t1 > t0 => (t1 - t0) * (b - a).length(),
-        _ => 0.0,
-    }
-}
-
-/// Area of the convex polygon `pts` inside `r` (Sutherland–Hodgman clipping).
-pub(super) fn clipped_area(pts: &[DVec2], r: &Rect) -> f64 {
-    let mut poly = pts.to_vec();
-    let edges: [(usize, f64, f64); 4] = [
-        (0, r.min.x, 1.0),
-        (0, r.max.x, -1.0),
-        (1, r.min.y, 1.0),
-        (1, r.max.y, -1.0),
-    ];
-    for (axis, at, sign) in edges {
-        let inside = |p: DVec2| (p[axis] - at) * sign >= 0.0;
-        let mut next = Vec::with_capacity(poly.len() + 2);
-        for (i, &p) in poly.iter().enumerate() {
-            let q = poly[(i + 1) % poly.len()];
-            if inside(p) {
-                next.push(p);
-            }
-            if inside(p) != inside(q) {
-                let t = (at - p[axis]) / (q[axis] - p[axis]);
-                next.push(p + (q - p) * t);
-            }
-        }
-        poly = next;
-        if poly.is_empty() {
-            return 0.0;
-        }
-    }
-    let twice: f64 = (0..poly.len())
-        .map(|i| poly[i].perp_dot(poly[(i + 1) % poly.len()]))
-        .sum();
-    twice.abs() * 0.5
 }

@@ -1,5 +1,5 @@
 use super::candidates::{self, candidates, POINT_REACH_MM};
-use super::place::{clipped_area, clipped_length};
+use super::clip::{clipped_area, clipped_length};
 use super::*;
 
 fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Rect {
