@@ -10,7 +10,7 @@ use super::rows::{fmt, DIGITS};
 use super::{NoteError, Writer};
 use crate::check::{is_zero, Table};
 use crate::linkage::{Dyad, Mechanism};
-use crate::sheets::data::plain;
+use crate::words::plain;
 use crate::words::{
     subscripted, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T,
 };

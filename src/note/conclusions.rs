@@ -6,7 +6,7 @@ use super::markup::{label, text, Align};
 use super::rows::{fmt, percent};
 use super::Writer;
 use crate::check::{Method, Symbol};
-use crate::sheets::data::mm;
+use crate::words::mm;
 use crate::words::{quantity, unit_in, NoteText as T, Text as S};
 
 /// The conclusions: the error of every graphical method against the analytic twin (the

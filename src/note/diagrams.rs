@@ -10,8 +10,8 @@ use super::Writer;
 use crate::check::{Method, Row, Symbol};
 use crate::kinematics::Diagrams;
 use crate::scale::format_fixed;
-use crate::sheets::data::plain;
 use crate::study::Kinematics;
+use crate::words::plain;
 use crate::words::{
     quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
 };

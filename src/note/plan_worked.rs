@@ -9,7 +9,7 @@ use super::plans::{explain_one, segment, Plans};
 use super::Writer;
 use crate::check::Symbol;
 use crate::scale::Lang;
-use crate::sheets::data::plain;
+use crate::words::plain;
 use crate::words::{unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T};
 
 /// The similarity proportions of the further points of a link turning about a fixed pivot

@@ -11,8 +11,8 @@ use super::rows::{numbers, values_and_errors, Column, DIGITS};
 use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::linkage::{Mechanism, PlanPosition, Structure};
-use crate::sheets::data::plain;
 use crate::study::Kinematics;
+use crate::words::plain;
 use crate::words::{
     quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
 };

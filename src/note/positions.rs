@@ -8,7 +8,8 @@ use super::{NoteError, Writer};
 use crate::check::is_zero;
 use crate::linkage::{Dyad, Extremes, Mechanism, OutputCoord};
 use crate::scale::{format_fixed, Lang};
-use crate::sheets::data::{plain, spans, Span};
+use crate::sheets::data::{spans, Span};
+use crate::words::plain;
 use crate::words::{KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S};
 use std::f64::consts::PI;
 

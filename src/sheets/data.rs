@@ -9,15 +9,11 @@ use crate::linkage::{Dyad, Mechanism};
 use crate::plate::Plate;
 use crate::scale::Lang;
 use crate::words::md_value as fmt;
+use crate::words::{mm, plain};
 use crate::words::{GearText, NoteText, Text};
 
 /// One line of data: symbol (label markup), value, unit (as `unit_in` takes it).
 pub type DataRow = (String, String, String);
-
-/// A length in mm as the task sheet writes it.
-pub(crate) fn mm(x: f64, lang: Lang) -> String {
-    fmt(x * 1e3, 5, lang)
-}
 
 /// What a length of the mechanism is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -221,11 +217,6 @@ fn link_origin(m: &Mechanism, link: u32) -> Option<String> {
             _ => None,
         }
     })
-}
-
-/// A point's name without its markup (`S_3` → `S3`).
-pub(crate) fn plain(name: &str) -> String {
-    name.replace(['_', '{', '}'], "")
 }
 
 /// The part of a sheet's data block: the task's data, or the results the sheet adds.

@@ -39,11 +39,11 @@ pub(crate) use note_cases::CaseText;
 pub(crate) use note_genres::GenreText;
 pub(crate) use note_kinematics::KinematicsNote;
 pub(crate) use note_machines::MachinesNote;
-pub(crate) use number::{md_percent, md_value};
+pub(crate) use number::{md_percent, md_value, mm};
 pub(crate) use protocol::StepText;
 pub(crate) use studio::{StudioText, STUDIO_KEYS};
 pub use symbol::Symbol;
-pub(crate) use symbols::{quantity, subscripted};
+pub(crate) use symbols::{plain, quantity, subscripted};
 
 /// A word of the catalogue: its text in a language.
 pub(crate) trait Word: Copy {

@@ -16,6 +16,11 @@ pub(crate) fn md_value(x: f64, sig: usize, lang: Lang) -> String {
     }
 }
 
+/// A length (m) in mm, to 5 significant digits: as the task's data gives it.
+pub(crate) fn mm(x: f64, lang: Lang) -> String {
+    md_value(x * 1e3, 5, lang)
+}
+
 /// A relative error in %, to [`ERROR_DIGITS`] significant digits; a rounding residue (at most
 /// 1e-9 of the value, [`residue_to_zero`]) is 0 — the construction at drafting 0 is exact.
 pub(crate) fn md_percent(rel: f64, lang: Lang) -> String {

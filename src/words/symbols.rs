@@ -131,7 +131,6 @@ pub(crate) fn quantity(symbol: Symbol, subject: &str, lang: Lang) -> String {
     localise(&russian(symbol, subject), lang)
 }
 
-/// The Russian textbooks' spelling of a quantity.
 /// A plain column name (`V_B3B1`, `φ_1`) as label markup: everything after the first `_` is
 /// the subscript (`V_{B3B1}`); a name in markup already or without a subscript is kept.
 pub(crate) fn subscripted(name: &str) -> String {
@@ -143,6 +142,12 @@ pub(crate) fn subscripted(name: &str) -> String {
     }
 }
 
+/// A point's name without its markup (`S_3` → `S3`).
+pub(crate) fn plain(name: &str) -> String {
+    name.replace(['_', '{', '}'], "")
+}
+
+/// The Russian textbooks' spelling of a quantity.
 fn russian(symbol: Symbol, subject: &str) -> String {
     // A value of the analysis with friction in the pairs: R_{1-2}^{тр}.
     if let Some(base) = subject.strip_suffix("_f") {

@@ -1,8 +1,8 @@
 //! How much of a line or an area a label's box takes in, and how far a box stands from a
 //! line: the measures the placer's costs are made of.
 
-use super::{Outline, Shape};
 use super::Rect;
+use super::{Outline, Shape};
 use crate::geom::DVec2;
 
 /// How much of the outline `o` lies inside `r`: mm of a line, mm² of an area.
