@@ -47,6 +47,11 @@ impl<'s> Session<'s> {
                 let vel = (0..plan.positions.len())
                     .map(|k| kinematics::velocity(&plan, k, sc.l.value(), w1, sc.v, &ctx))
                     .collect::<Result<Vec<_>, _>>()?;
+                // Its own positions and plans, made once with the study (cached with it).
+                for p in &plan.positions {
+                    self.logged("dynamics position", &p.label, sc.l);
+                    self.logged("dynamics velocity plan", &p.label, sc.v);
+                }
                 let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
                 crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)
                     .map_err(|e| self.dynamics_error(e))?

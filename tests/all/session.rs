@@ -245,3 +245,22 @@ fn plates_built_side_by_side_are_those_built_one_after_another() {
         assert_eq!(svgs(built.unwrap_or_else(|e| panic!("{e}"))), side_by_side);
     }
 }
+
+/// A dynamic study at a count of its own (`[dynamics] count` ≠ `[positions] count`) builds its
+/// own plan of positions and velocity plans: in the session's log, each once, and not again
+/// when asked again.
+#[test]
+fn a_dynamics_count_of_its_own_is_constructed_once_and_logged() {
+    let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).expect("shaper");
+    let text = text.replacen("[dynamics]\n", "[dynamics]\ncount = 24\n", 1);
+    let s = scene::parse(&text, &root().join("constructions/shaper.toml")).expect("parsed");
+    let session = Session::new(&s, Drafting::EXACT);
+    session.dynamics().expect("dynamics");
+    let log = session.constructions();
+    assert_once("shaper, dynamics.count = 24", &log);
+    let count = |what: &str| log.iter().filter(|c| c.what == what).count();
+    assert_eq!(count("dynamics position"), 24);
+    assert_eq!(count("dynamics velocity plan"), 24);
+    session.dynamics().expect("dynamics again");
+    assert_eq!(session.constructions().len(), log.len());
+}
