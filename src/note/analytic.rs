@@ -10,9 +10,8 @@ use super::rows::{fmt, DIGITS};
 use super::{NoteError, Writer};
 use crate::check::{is_zero, Table};
 use crate::linkage::{Dyad, Mechanism};
-use crate::words::plain;
 use crate::words::{
-    subscripted, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T,
+    plain, subscripted, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T,
 };
 
 /// The analytic method: the slotted link's loop worked where the mechanism has one, then

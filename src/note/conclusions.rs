@@ -6,8 +6,7 @@ use super::markup::{label, text, Align};
 use super::rows::{fmt, percent};
 use super::Writer;
 use crate::check::{Method, Symbol};
-use crate::words::mm;
-use crate::words::{quantity, unit_in, NoteText as T, Text as S};
+use crate::words::{mm, quantity, unit_in, NoteText as T, Text as S};
 
 /// The conclusions: the error of every graphical method against the analytic twin (the
 /// seed's §1.6, for every quantity of the project), then what the project does not

@@ -11,9 +11,8 @@ use crate::check::{Method, Row, Symbol};
 use crate::kinematics::Diagrams;
 use crate::scale::format_fixed;
 use crate::study::Kinematics;
-use crate::words::plain;
 use crate::words::{
-    quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
+    plain, quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
 };
 
 /// The diagrams by the method of chords, when the study charts a point.

@@ -8,8 +8,7 @@ use super::markup::{inline, label, sym, text, Align, Cell};
 use super::Writer;
 use crate::linkage::{DyadKind, GroupInfo, Mechanism};
 use crate::scale::Lang;
-use crate::words::plain;
-use crate::words::{KinematicsNote as K, NoteText as T};
+use crate::words::{plain, KinematicsNote as K, NoteText as T};
 
 /// A point as an equation names it (`B_{3}`) and the mechanism's point it is (`B`).
 type Named = (String, String);

@@ -9,8 +9,7 @@ use super::plans::{explain_one, segment, Plans};
 use super::Writer;
 use crate::check::Symbol;
 use crate::scale::Lang;
-use crate::words::plain;
-use crate::words::{unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T};
+use crate::words::{plain, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T};
 
 /// The similarity proportions of the further points of a link turning about a fixed pivot
 /// at the worked position: px = pb·OX/OB, the images' lengths and the plan of positions'

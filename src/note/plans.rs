@@ -12,9 +12,8 @@ use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::linkage::{Mechanism, PlanPosition, Structure};
 use crate::study::Kinematics;
-use crate::words::plain;
 use crate::words::{
-    quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
+    plain, quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
 };
 
 /// What the plans' subsections read: the study, the mechanism, its structure and the

@@ -9,8 +9,7 @@ use crate::check::is_zero;
 use crate::linkage::{Dyad, Extremes, Mechanism, OutputCoord};
 use crate::scale::{format_fixed, Lang};
 use crate::sheets::data::{spans, Span};
-use crate::words::plain;
-use crate::words::{KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S};
+use crate::words::{plain, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S};
 use std::f64::consts::PI;
 
 /// The plan of positions: μ_l, the drawn lengths, the stroke, θ and K, the figure.

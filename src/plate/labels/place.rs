@@ -56,7 +56,7 @@ const BEYOND_MM: f64 = 15.0;
 /// costs [`BEYOND`] (and [`BEYOND_MM`] per mm beyond), mm: as far as a point's label
 /// ([`POINT_REACH_MM`]). Nearer than every other line is not enough: a label 12 mm under an
 /// arrow, with nothing else near, is read as nobody's (issue 45: the lever's `F_и5`).
-pub(crate) const ITEM_REACH_MM: f64 = POINT_REACH_MM;
+const ITEM_REACH_MM: f64 = POINT_REACH_MM;
 /// The most a label away from its object costs ([`WRONG_LINE`], [`BEYOND`]): what a thin
 /// line striking through 2 mm of it costs (a main one through 1 mm), so that a label struck
 /// through stays the worst (`h₄` on the V engine's lever struck by an arm 3,8 mm rather
