@@ -28,6 +28,7 @@ mod docs;
 mod dxf;
 mod dynamics;
 mod engine;
+mod file_lengths;
 mod flywheel_sheet;
 mod force_marks;
 mod forces;
