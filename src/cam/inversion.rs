@@ -400,12 +400,12 @@ fn dwell(from: DVec2, to: DVec2) -> Vec<[DVec2; 3]> {
     let arm = 4.0 / 3.0 * (delta / 4.0).tan() * r;
     (0..k as usize)
         .map(|j| {
-            let (t0, t1) = (a.start + delta * j as f64, a.start + delta * (j + 1) as f64);
-            let (p0, p1) = (DVec2::from_angle(t0) * r, DVec2::from_angle(t1) * r);
+            let e0 = DVec2::from_angle(a.start + delta * j as f64);
+            let e1 = DVec2::from_angle(a.start + delta * (j + 1) as f64);
             [
-                p0 + DVec2::from_angle(t0).perp() * arm,
-                p1 - DVec2::from_angle(t1).perp() * arm,
-                if j + 1 == k as usize { to } else { p1 },
+                e0 * r + e0.perp() * arm,
+                e1 * r - e1.perp() * arm,
+                if j + 1 == k as usize { to } else { e1 * r },
             ]
         })
         .collect()

@@ -36,11 +36,6 @@ pub fn pieces(pts: &[DVec2], closed: bool) -> Vec<Piece> {
     }
 }
 
-/// The point at `t` ∈ [0, 1] of the piece from `start`.
-pub fn eval(start: DVec2, p: &Piece, t: f64) -> DVec2 {
-    crate::geom::bezier_at(start, p, t)
-}
-
 /// Whether the abscissae of `pts` all increase or all decrease.
 fn runs_one_way(pts: &[DVec2]) -> bool {
     let dx: Vec<f64> = pts.windows(2).map(|w| w[1].x - w[0].x).collect();
@@ -256,13 +251,7 @@ mod tests {
 
     /// Points along the drawn curve: `per` on each piece, with the first point.
     fn drawn(pts: &[DVec2], closed: bool, per: usize) -> Vec<DVec2> {
-        let mut start = pts[0];
-        let mut out = vec![start];
-        for p in pieces(pts, closed) {
-            out.extend((1..=per).map(|k| eval(start, &p, k as f64 / per as f64)));
-            start = p[2];
-        }
-        out
+        crate::geom::bezier_points(pts[0], &pieces(pts, closed), per)
     }
 
     proptest! {
@@ -302,7 +291,7 @@ mod tests {
                 // its abscissae are bounded.
                 let corner = p[2] != b;
                 for k in 0..=32 {
-                    let q = eval(start, &p, k as f64 / 32.0);
+                    let q = crate::geom::bezier_at(start, &p, k as f64 / 32.0);
                     prop_assert!(corner || (q.y >= lo && q.y <= hi), "{q:?} outside {a:?}–{b:?}");
                     prop_assert!(q.x >= l && q.x <= r, "{q:?} outside {a:?}–{b:?}");
                 }

@@ -4,7 +4,7 @@
 
 use super::Flip;
 use crate::construct::Item;
-use crate::geom::DVec2;
+use crate::geom::{bezier_at, DVec2};
 use crate::plate::curve;
 use crate::plate::path::Map;
 use crate::plate::path::{pieces, Seg};
@@ -110,7 +110,7 @@ fn polyline(start: DVec2, segs: &[Seg], sheet: &Flip) -> Drawn {
                 let piece = [c1, c2, p];
                 let n = flat_pieces(at, &piece);
                 for i in 1..=n {
-                    let q = curve::eval(at, &piece, i as f64 / n as f64);
+                    let q = bezier_at(at, &piece, i as f64 / n as f64);
                     verts.push((sheet.pt(q), 0.0));
                 }
                 at = p;
@@ -347,7 +347,7 @@ mod tests {
         // Every point of the curve lies within the tolerance of the chords.
         let pts: Vec<DVec2> = verts.iter().map(|(p, _)| *p).collect();
         for i in 0..=1000 {
-            let q = sheet().pt(curve::eval(a, &[c1, c2, b], f64::from(i) / 1000.0));
+            let q = sheet().pt(bezier_at(a, &[c1, c2, b], f64::from(i) / 1000.0));
             let near = pts
                 .windows(2)
                 .map(|w| crate::geom::Segment::new(w[0], w[1]).distance_to(q))

@@ -169,6 +169,16 @@ const UNDER_SHELF_MM: f64 = 2.5;
 const UNDER_SHELF_ACROSS: f64 = 0.5;
 pub(super) const UNDER_SHELF: f64 = place::OVER_POINT;
 
+/// Where a text right under the shelf of `l` stands (see [`under_shelf`]): the band
+/// [`UNDER_SHELF_MM`] deep under it.
+pub(super) fn under_shelf_band(l: &Leader) -> Rect {
+    let (lo, hi) = (l.knee.x.min(l.end.x), l.knee.x.max(l.end.x));
+    Rect::new(
+        DVec2::new(lo, l.knee.y),
+        DVec2::new(hi, l.knee.y + UNDER_SHELF_MM),
+    )
+}
+
 /// Whether the text box `t` stands right under the shelf of `l` (see [`UNDER_SHELF_MM`]).
 pub(super) fn under_shelf(l: &Leader, t: &Rect) -> bool {
     let (lo, hi) = (l.knee.x.min(l.end.x), l.knee.x.max(l.end.x));

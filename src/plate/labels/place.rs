@@ -236,11 +236,12 @@ impl<'a> Placer<'a> {
             else {
                 continue;
             };
-            let mut on_leader = self.leader_job(jobs[i].request.clone(), points);
-            let others = self.others_near(on_leader.near, slots, i);
+            let band = leader::under_shelf_band(&now).inflate(CLEARANCE_MM);
+            let others = self.others_near(band, slots, i);
             if !others.texts.iter().any(|t| leader::under_shelf(&now, t)) {
                 continue;
             }
+            let mut on_leader = self.leader_job(jobs[i].request.clone(), points);
             on_leader.fractions = true;
             slots[i] = Some(self.best(&on_leader, slots, i).0);
         }
@@ -469,13 +470,14 @@ impl<'a> Placer<'a> {
         cost = match slot.leader {
             None => away(job, rect, cost),
             Some(l) => {
-                let fractions = match job.fractions {
-                    true => others
+                let fractions = if job.fractions {
+                    others
                         .texts
                         .iter()
                         .filter(|t| leader::under_shelf(&l, t))
-                        .count(),
-                    false => 0,
+                        .count()
+                } else {
+                    0
                 };
                 cost + leader::cost(
                     &l,
