@@ -1,22 +1,11 @@
 //! One concept per file (issue 46, DESIGN): no source file of the crate, its examples or its
-//! tests runs over [`MAX_LINES`] lines, counted as `wc -l` counts them. The test files
-//! written before the limit was held here are listed with their length today: each may
-//! shrink, none may grow, and a file leaves the list once it is split.
+//! tests runs over [`MAX_LINES`] lines, counted as `wc -l` counts them.
 
 use crate::support::root;
 use std::path::{Path, PathBuf};
 
 /// The most lines a file holds.
 const MAX_LINES: usize = 600;
-
-/// Test files over the limit, with their length when it was first held (split them along
-/// their seams; each is a room of tests for one study).
-const OVER: &[(&str, usize)] = &[
-    ("tests/all/gears.rs", 953),
-    ("tests/all/forces.rs", 930),
-    ("tests/all/kinematics.rs", 664),
-    ("tests/all/hard_cases.rs", 616),
-];
 
 /// Every `.rs` file under `dir`.
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
@@ -50,21 +39,9 @@ fn no_file_runs_over_six_hundred_lines() {
             .unwrap_or(f)
             .to_string_lossy()
             .into_owned();
-        let allowed = OVER
-            .iter()
-            .find(|(n, _)| *n == name)
-            .map_or(MAX_LINES, |&(_, l)| l);
-        if lines > allowed {
-            over.push(format!("{name}: {lines} lines (at most {allowed})"));
+        if lines > MAX_LINES {
+            over.push(format!("{name}: {lines} lines"));
         }
     }
     assert!(over.is_empty(), "{}", over.join("\n"));
-    // Every listed file is still over the limit (a file split leaves the list).
-    for (name, _) in OVER {
-        let text = std::fs::read_to_string(root.join(name)).unwrap_or_default();
-        assert!(
-            text.lines().count() > MAX_LINES,
-            "{name} is within the limit now: take it off OVER"
-        );
-    }
 }

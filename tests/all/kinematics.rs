@@ -11,11 +11,11 @@ use crate::common;
 use common::four_bar;
 use tmm::scale::{Quantity, Scale};
 
-fn root() -> PathBuf {
+pub(crate) fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn report_json(scene: &str, drafting: &str) -> serde_json::Value {
+pub(crate) fn report_json(scene: &str, drafting: &str) -> serde_json::Value {
     let o = Command::new(env!("CARGO_BIN_EXE_tmm"))
         .args(["report", scene, "--format", "json", "--drafting", drafting])
         .current_dir(root())
@@ -25,7 +25,7 @@ fn report_json(scene: &str, drafting: &str) -> serde_json::Value {
     serde_json::from_slice(&o.stdout).expect("report JSON")
 }
 
-fn rows(v: &serde_json::Value) -> Vec<&serde_json::Value> {
+pub(crate) fn rows(v: &serde_json::Value) -> Vec<&serde_json::Value> {
     v["rows"].as_array().expect("rows").iter().collect()
 }
 
@@ -509,156 +509,4 @@ fn tangent_method_is_an_option_of_the_scene() {
         .unwrap();
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("kinematics.differentiation"));
-}
-
-/// Seed 001's conclusion of W1 (l. 687–689), drawn from the six-bar's acceleration plan at
-/// position 1: links 3 and 4 accelerate, link 2 decelerates — in the report's notes (both
-/// routes agreeing) and on the kinematic sheet.
-#[test]
-fn the_six_bar_links_accelerate_and_decelerate_as_seed_001_concludes() {
-    let v = report_json("constructions/six-bar.toml", "0.5");
-    let notes: Vec<&str> = v["notes"]
-        .as_array()
-        .expect("notes")
-        .iter()
-        .filter_map(|n| n.as_str())
-        .collect();
-    let want = "position 1: accelerating (ω and ε in one sense) by the plans: links 3, 4; decelerating: links 2; the analytic twin agrees";
-    assert!(notes.contains(&want), "{notes:#?}");
-    let scene = tmm::load(&root().join("constructions/six-bar.toml")).expect("six-bar");
-    let plates = tmm::render::plates(&scene, tmm::Lang::Ru, Drafting::EXACT).expect("plates");
-    let texts: Vec<&String> = plates
-        .iter()
-        .flat_map(|(_, p)| p.texts.iter().flat_map(|t| t.lines.iter()))
-        .collect();
-    assert!(
-        texts
-            .iter()
-            .any(|t| *t == "Пол. 1: ускоренно вращаются звенья 3, 4; замедленно — 2"),
-        "{texts:#?}"
-    );
-}
-
-/// The verdict of one link and of none reads as Russian does (a strict instructor's mark on
-/// the four-bar: «вращаются звенья 3», «вращаются звенья нет»): one link in the singular, none
-/// as a sentence of its own, in ru, uk and en.
-#[test]
-fn a_verdict_of_one_link_or_none_reads_in_its_number() {
-    let scene = tmm::load(&root().join("constructions/four-bar.toml")).expect("four-bar");
-    for (lang, one, none) in [
-        (
-            tmm::Lang::Ru,
-            "Пол. 4: ускоренно вращается звено 3; замедленно — 2",
-            "Пол. 10: ни одно звено не вращается ускоренно; замедленно — 2, 3",
-        ),
-        (
-            tmm::Lang::Uk,
-            "Пол. 4: прискорено обертається ланка 3; сповільнено — 2",
-            "Пол. 10: жодна ланка не обертається прискорено; сповільнено — 2, 3",
-        ),
-        (
-            tmm::Lang::En,
-            "Pos. 4: accelerating (ω, ε in one sense): link 3; decelerating: 2",
-            "Pos. 10: no link accelerating; decelerating: 2, 3",
-        ),
-    ] {
-        let plates = tmm::render::plates(&scene, lang, Drafting::new(0.5).expect("drafting"))
-            .expect("plates");
-        let texts: Vec<&String> = plates
-            .iter()
-            .flat_map(|(_, p)| p.texts.iter().flat_map(|t| t.lines.iter()))
-            .collect();
-        for want in [one, none] {
-            assert!(
-                texts.iter().any(|t| *t == want),
-                "{lang:?}: {want}\n{texts:#?}"
-            );
-        }
-    }
-}
-
-/// The displacement chart is drawn as large as its sheet allows: on the second of two sheets
-/// the six-bar's (no chart scale given) takes 2π on 360 mm, the V engine's (two large
-/// acceleration plans beside it) 2π on 300 mm; a one-sheet study keeps the textbook's 240 mm,
-/// and the shaper's scene fixes μ_φ (the seed's; its diagrams go on a second sheet only when
-/// the first sheet's packing leaves them no room).
-#[test]
-fn the_chart_takes_the_room_of_its_sheet() {
-    use std::f64::consts::TAU;
-    use tmm::study::{KinSheets, Session};
-    for (scene, sheets, turn_mm) in [
-        ("six-bar", KinSheets::Two, Some(360.0)),
-        ("v-engine", KinSheets::Two, Some(300.0)),
-        ("slider-crank", KinSheets::One, Some(240.0)),
-        ("shaper", KinSheets::One, None),
-    ] {
-        let s =
-            tmm::scene::load(&root().join(format!("constructions/{scene}.toml"))).expect("scene");
-        let session = Session::new(&s, Drafting::EXACT);
-        assert_eq!(session.kin_sheets().expect("sheets"), sheets, "{scene}");
-        let sc = session.kin_scales().expect("scales");
-        let d = session
-            .kinematics(&sc)
-            .expect("study")
-            .diagrams
-            .expect("diagrams");
-        let phi = d.scales.x.value();
-        match turn_mm {
-            Some(mm) => assert!((TAU / phi - mm).abs() < 1e-9, "{scene}: {} mm", TAU / phi),
-            None => assert_eq!(Some(d.scales.x), s.kinematics.scale_phi, "{scene}"),
-        }
-    }
-}
-
-/// The six-bar's change point (position 6, links 2 and 3 in line) is a corner of S(φ): the
-/// chart draws S as a piece on each side and differentiates each alone, so the positions
-/// beside it read their v and a off their own piece. One smooth curve across the corner read
-/// v 28 % off at position 5 and 63 % at 7, a 95 % at 5.
-#[test]
-fn the_six_bar_chart_breaks_at_its_change_point() {
-    let v = report_json("constructions/six-bar.toml", "0");
-    let delta = |q: &str, position: &str| {
-        rows(&v)
-            .into_iter()
-            .find(|r| {
-                r["quantity"] == q && r["position"] == position && r["method"] == "diagram-chords"
-            })
-            .and_then(|r| r["rel_error"].as_f64())
-            .unwrap_or_else(|| panic!("no {q} at {position}"))
-            .abs()
-    };
-    for (q, position, bound) in [
-        ("v_E", "5", 0.01),
-        ("v_E", "7", 0.16),
-        ("a_E", "4", 0.04),
-        ("a_E", "5", 0.03),
-        ("a_E", "7", 0.04),
-    ] {
-        let d = delta(q, position);
-        assert!(d < bound, "{q} at {position}: {:.1} %", 100.0 * d);
-    }
-    let scene = tmm::load(&root().join("constructions/six-bar.toml")).expect("six-bar");
-    let session = tmm::study::Session::new(&scene, Drafting::EXACT);
-    let study = session
-        .kinematics(&session.kin_scales().expect("scales"))
-        .expect("kinematics");
-    let chart = study.diagrams.as_ref().expect("the S chart");
-    assert_eq!(
-        chart
-            .first
-            .breaks
-            .iter()
-            .map(|b| b.node)
-            .collect::<Vec<_>>(),
-        vec![5],
-        "position 6 is node 5"
-    );
-    let curves = |f: &tmm::construct::Figure| {
-        (f.steps.iter())
-            .filter(|s| matches!(s.item, tmm::construct::Item::Curve { .. }))
-            .count()
-    };
-    // S and dS/dφ a piece on each side of the corner; d²S/dφ² likewise.
-    assert_eq!(curves(&chart.first_figure), 4);
-    assert_eq!(curves(&chart.second_figure), 2);
 }

@@ -1,0 +1,277 @@
+//! The force sheets read from their plate model: every force of a polygon on it or on its
+//! detail, the guide reaction at its arm and the balancing force at its arm's end, every arm
+//! ending on its force's line of action, every caption under its drawing.
+
+use crate::support;
+use support::root;
+use tmm::construct::Drafting;
+use tmm::construct::Item;
+use tmm::geom::DVec2;
+use tmm::study::Session;
+
+/// Every analysed position of the shaper and the v-engine, with its session's scales.
+fn each_position(scene: &str, mut check: impl FnMut(&tmm::forces::PositionForces)) {
+    let scene = tmm::scene::load(&root().join(scene)).expect("scene");
+    let session = Session::new(&scene, Drafting::EXACT);
+    let sc = session.kin_scales().expect("scales");
+    for k in session.force_positions().expect("positions") {
+        check(&session.forces(&sc, k).expect("forces"));
+    }
+}
+
+/// The drawn vectors of a figure: (note, from, to), mm.
+fn vectors(f: &tmm::construct::Figure) -> Vec<(&str, DVec2, DVec2)> {
+    f.steps
+        .iter()
+        .filter_map(|s| match s.item {
+            Item::Vector { from, to } => Some((s.note.as_str(), from, to)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Issue 19 item 1: every force laid off on a polygon reads — at least 4 mm on the polygon,
+/// or on its detail view (drawn at a larger μ_F, at least 4 mm there), whose zone holds it.
+#[test]
+fn every_force_of_a_polygon_reads_on_it_or_on_its_detail() {
+    for scene in ["constructions/shaper.toml", "constructions/v-engine.toml"] {
+        let mut details = 0;
+        each_position(scene, |f| {
+            let p = &f.analysis.polygons;
+            let all = p
+                .groups
+                .iter()
+                .map(|g| (&g.polygon, &g.details))
+                .chain([(&p.driver.polygon, &p.driver.details)]);
+            for (polygon, detail) in all {
+                assert!(detail.len() <= 3);
+                for (note, a, b) in vectors(polygon) {
+                    let len = a.distance(b);
+                    if !note.starts_with("lay off") || len >= 4.0 {
+                        continue;
+                    }
+                    let inside = |d: &&tmm::forces::PolygonDetail| {
+                        a.distance(d.zone.center) <= d.zone.radius
+                            && b.distance(d.zone.center) <= d.zone.radius
+                    };
+                    let d = detail.iter().find(inside).unwrap_or_else(|| {
+                        panic!("{scene} {}: {note}, {len} mm, in no detail", f.label)
+                    });
+                    let k = polygon.scale.value() / d.figure.scale.value();
+                    assert!(len * k >= 4.0, "{note}: {} mm on the detail", len * k);
+                    details += 1;
+                }
+            }
+        });
+        assert!(details > 0, "{scene}: no small force was detailed");
+    }
+}
+
+/// Issue 19 item 1: the guide's reaction on the shaper's ram (R₀₋₅) stands on the drawn
+/// guide at its arm h₀₋₅ from the slider's joint, the arm dimensioned; the lever's F_у
+/// starts at the end of its arm (the foot of the perpendicular from the pole).
+#[test]
+fn the_guide_reaction_stands_at_its_arm_and_the_balancing_force_at_the_end_of_its_arm() {
+    each_position("constructions/shaper.toml", |f| {
+        let g = &f.analysis.polygons.groups[0];
+        assert_eq!(g.links, [4, 5]);
+        let r05 = g.reactions.iter().find(|r| r.pair.from == 0).expect("R₀₋₅");
+        let h = r05.offset.expect("its arm");
+        let mu = g.scheme.scale.value();
+        let steps = &g.scheme.steps;
+        let guide = steps
+            .iter()
+            .find(|s| matches!(s.item, Item::Guide { .. }))
+            .expect("the guide drawn");
+        let dim = steps
+            .iter()
+            .find_map(|s| match s.item {
+                Item::Dimension { from, to, .. } if s.note.ends_with("on the guide") => {
+                    Some((from, to, s))
+                }
+                _ => None,
+            })
+            .expect("the arm dimensioned");
+        assert!(
+            (dim.0.distance(dim.1) - h.abs() / mu).abs() < 1e-9,
+            "{}: dimension {} mm, h = {h} m",
+            f.label,
+            dim.0.distance(dim.1)
+        );
+        assert_eq!(
+            dim.2.label.as_ref().map(|l| l.text.as_str()),
+            Some("h_{0-5}")
+        );
+        let Item::Guide { segment, .. } = guide.item else {
+            unreachable!()
+        };
+        let along = (segment.to - segment.from).normalize();
+        // Signed distance from the guide's line, mm.
+        let off = |p: DVec2| (p - segment.from).perp_dot(along);
+        let (_, from, to) = vectors(&g.scheme)
+            .into_iter()
+            .find(|(n, ..)| *n == "load R_{0-5}")
+            .expect("R₀₋₅ drawn");
+        let on = if off(from).abs() < 1e-9 { from } else { to };
+        assert!(
+            off(on).abs() < 1e-9,
+            "R₀₋₅ stands {} mm off its guide",
+            off(on)
+        );
+        assert!(
+            [dim.0, dim.1].iter().any(|p| p.distance(on) < 1e-9),
+            "R₀₋₅ is not at the end of its arm"
+        );
+        // The loads along the slide's axis (F_и5, F_пс) keep off the guide's line: the
+        // block rides against it.
+        for (name, a, b) in vectors(&g.scheme) {
+            if name == "load R_{0-5}" {
+                continue;
+            }
+            assert!(
+                off(a) * off(b) > 0.0 && off(a).abs().min(off(b).abs()) >= 2.0,
+                "{}: {name} lies on the guide ({} mm, {} mm)",
+                f.label,
+                off(a),
+                off(b)
+            );
+        }
+        let lever = &f.analysis.lever.figure;
+        let (_, at, to) = vectors(lever)
+            .into_iter()
+            .find(|(n, ..)| n.starts_with("F_{у}"))
+            .expect("F_у on the lever");
+        // Issue 45: F_у stands at the image of the pitch point, labelled, and its line of
+        // action runs on to the foot of its arm (before, it was slid to the foot, 100 mm
+        // from an unlabelled image).
+        let e = (to - at).normalize();
+        let image = lever
+            .steps
+            .iter()
+            .find(|s| s.label.as_ref().is_some_and(|l| l.text == "p_{P}"))
+            .expect("the image of P labelled");
+        assert_eq!(image.item, Item::Point(at), "F_у is not at the image of P");
+        let foot = at + e * (-at).dot(e);
+        let reaches = |a: DVec2, b: DVec2| {
+            lever.steps.iter().any(|s| {
+                let (from, to) = match s.item {
+                    Item::Segment(seg) => (seg.from, seg.to),
+                    // An arm is dimensioned (issue 45).
+                    Item::Dimension { from, to, .. } => (from, to),
+                    _ => return false,
+                };
+                (from.distance(a) < 1e-9 && to.distance(b) < 1e-9)
+                    || (from.distance(b) < 1e-9 && to.distance(a) < 1e-9)
+            })
+        };
+        assert!(
+            reaches(at, foot) || reaches(to, foot),
+            "F_у's line of action does not reach its arm's foot"
+        );
+        assert!(reaches(DVec2::ZERO, foot), "F_у's arm is not drawn");
+        assert!(foot.length() > 10.0, "its arm is {} mm", foot.length());
+    });
+}
+
+/// Issue 19 item 1: a force whose moment a group's equation takes has its arm h drawn from
+/// the moment centre at right angles to its line of action, and the line of action drawn on
+/// to the arm's foot: the foot lies on the force's arrow or on a thin line from its point
+/// (before, the arms of G₂ and F_и2 ended in empty paper, 100 mm from their forces).
+#[test]
+fn every_arm_ends_on_its_forces_line_of_action() {
+    /// The distance from `p` to the segment `a`–`b`, mm.
+    fn off(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+        let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+        p.distance(a + (b - a) * t)
+    }
+    let mut arms = 0;
+    for scene in ["constructions/shaper.toml", "constructions/v-engine.toml"] {
+        each_position(scene, |f| {
+            for g in &f.analysis.polygons.groups {
+                let steps = &g.scheme.steps;
+                let about = |s: &&tmm::construct::Step| {
+                    s.note.starts_with("arm of ") && s.note.ends_with(" about the moment centre")
+                };
+                for arm in steps.iter().filter(about) {
+                    // Issue 45: an arm on other lines is dimensioned beside them.
+                    let h = match arm.item {
+                        Item::Segment(h) => h,
+                        Item::Dimension { from, to, .. } => tmm::geom::Segment::new(from, to),
+                        _ => panic!("{scene} {}: {} is not drawn", f.label, arm.note),
+                    };
+                    let name = arm
+                        .note
+                        .trim_start_matches("arm of ")
+                        .split(" about")
+                        .next()
+                        .unwrap_or_default();
+                    let lines: Vec<(DVec2, DVec2)> = steps
+                        .iter()
+                        .filter_map(|s| match s.item {
+                            Item::Vector { from, to } if s.note == format!("load {name}") => {
+                                Some((from, to))
+                            }
+                            // An arrow drawn past another on its line, joined to its point.
+                            Item::Segment(l)
+                                if s.note
+                                    == format!(
+                                        "line of action of {name} to the foot of its arm"
+                                    )
+                                    || s.note == format!("load {name}: to its point") =>
+                            {
+                                Some((l.from, l.to))
+                            }
+                            _ => None,
+                        })
+                        .collect();
+                    assert!(!lines.is_empty(), "{scene} {}: {name} not drawn", f.label);
+                    let (a, b) = lines[0];
+                    let square = (h.to - h.from).normalize().dot((b - a).normalize());
+                    assert!(square.abs() < 1e-9, "{}: arm of {name} not square", f.label);
+                    let gap = lines
+                        .iter()
+                        .map(|&(a, b)| off(h.to, a, b))
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(
+                        gap < 1e-6,
+                        "{scene} {}: the arm of {name} ends {gap} mm off it",
+                        f.label
+                    );
+                    arms += 1;
+                }
+            }
+        });
+    }
+    assert!(arms >= 8, "{arms} arms");
+}
+
+/// On every force sheet each view's caption stands under everything its figure draws — the
+/// ground of the crank's pivot, drawn below the pivot, stood on the driving link's caption
+/// ("Ведущее звено 1, μ_l = …" struck by its hatching).
+#[test]
+fn every_caption_of_a_force_sheet_stands_under_its_drawing() {
+    let mut seen = 0;
+    for name in ["constructions/shaper.toml", "constructions/v-engine.toml"] {
+        let scene = tmm::scene::load(&root().join(name)).expect("scene");
+        let session = Session::new(&scene, Drafting::EXACT);
+        let kind = tmm::scene::PlateKind::parse("forces").expect("a plate kind");
+        let plates = tmm::sheets::build(&session, kind, tmm::scale::Lang::Ru).expect("sheets");
+        for p in &plates {
+            for (v, l) in p.views.iter().zip(tmm::plate::layout(p).views) {
+                let (Some(drawn), Some(caption)) = (l.drawn, l.caption) else {
+                    continue;
+                };
+                seen += 1;
+                assert!(
+                    caption.min.y >= drawn.max.y,
+                    "{name} {}: “{}” at {:.1} mm, its drawing down to {:.1} mm",
+                    p.name,
+                    v.caption.as_deref().unwrap_or_default(),
+                    caption.min.y,
+                    drawn.max.y
+                );
+            }
+        }
+    }
+    assert!(seen >= 40, "{seen} captions");
+}
