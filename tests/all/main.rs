@@ -68,6 +68,7 @@ mod plate_equivalence;
 mod plate_fill;
 mod plate_label_objects;
 mod plate_model;
+mod plate_phrases;
 mod plate_rules;
 mod plates;
 mod rigid_links;

@@ -160,7 +160,7 @@ fn nearest_other(view: &View, own: &[StepId], (lo, hi): (DVec2, DVec2)) -> Optio
 /// The languages and draftings the rule is checked in: the tests' exact reading in
 /// Russian, and what `render` hands in by default (0,5 mm) in every language — the texts'
 /// widths differ, and so do the places found.
-const CONFIGURATIONS: [(Lang, Drafting, &str); 4] = [
+pub(crate) const CONFIGURATIONS: [(Lang, Drafting, &str); 4] = [
     (Lang::Ru, Drafting::EXACT, "ru exact"),
     (Lang::Ru, Drafting::HAND, "ru 0,5"),
     (Lang::Uk, Drafting::HAND, "uk 0,5"),

@@ -404,6 +404,8 @@ mod candidates;
 mod clip;
 mod dimension;
 mod leader;
+mod misreadings;
+mod phrase;
 pub use dimension::struck_dimension_texts;
 pub use leader::Leader;
 mod place;

@@ -4,6 +4,7 @@
 use super::candidates::{box_distance, candidates, near_bound, NEAR_RING_MM, POINT_REACH_MM};
 use super::clip::{ink_inside, own_distance, rect_segment_distance};
 use super::leader::{self, Leader};
+use super::phrase;
 use super::*;
 
 pub(super) struct Placer<'a> {
@@ -66,14 +67,14 @@ const AWAY_MAX: f64 = STRUCK + 2.0 * THIN_LINE;
 const REPAIR_ROUNDS: usize = 4;
 
 /// A request with what lies near its point: its text, the outlines, the other labels' points.
-struct Job<'a> {
-    request: Request,
-    text: String,
+pub(super) struct Job<'a> {
+    pub(super) request: Request,
+    pub(super) text: String,
     extent: Extent,
     candidates: Vec<Rect>,
     /// The leader of each candidate, where its candidates are on leaders ([`leader`]).
     leaders: Vec<Leader>,
-    near: Rect,
+    pub(super) near: Rect,
     /// The outlines near it, with their boxes.
     lines: Vec<(Rect, &'a Outline)>,
     /// The lines of its own view near it that are not its item's (a label of an item keeps
@@ -85,20 +86,24 @@ struct Job<'a> {
     /// Whether a place on a leader pays for each other text right under its shelf
     /// ([`leader::under_shelf`]): in [`Placer::lift_fractions`], once every label stands
     /// where it will (before, a text under a shelf may be one about to move).
-    fractions: bool,
+    pub(super) fractions: bool,
+    /// The other word labels (with whether each is on a shelf) a place of this one, if words,
+    /// pays for reading on from or into ([`phrase::read_as_one`]): in
+    /// [`Placer::part_phrases`], once every label stands where it will.
+    pub(super) words: Vec<(Rect, bool)>,
 }
 
 /// Where a label is: its box and the rank of that candidate.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Slot {
-    rect: Rect,
-    rank: usize,
-    leader: Option<Leader>,
+pub(super) struct Slot {
+    pub(super) rect: Rect,
+    pub(super) rank: usize,
+    pub(super) leader: Option<Leader>,
 }
 
 /// The other texts near a label, and the other labels' leaders.
-struct Others {
-    texts: Vec<Rect>,
+pub(super) struct Others {
+    pub(super) texts: Vec<Rect>,
     leaders: Vec<Leader>,
 }
 
@@ -174,6 +179,7 @@ impl<'a> Placer<'a> {
         }
         self.put_on_leaders(&jobs, &mut slots, &order, &points);
         self.lift_fractions(&jobs, &mut slots, &order, &points);
+        self.part_phrases(&jobs, &mut slots, &order, &points);
         out.extend(jobs.into_iter().zip(slots).filter_map(|(j, s)| {
             let Slot { rect, leader, .. } = s?;
             Some(PlacedLabel {
@@ -189,66 +195,8 @@ impl<'a> Placer<'a> {
         out
     }
 
-    /// Every label whose place stands away from its object (beyond its reach, nearer another
-    /// line) or is struck through by a line takes the best place on a leader instead where
-    /// that costs less, in the placing order, each among the places and leaders the others
-    /// have by then. A label kept near its point by its own bound keeps a place no line runs
-    /// through.
-    fn put_on_leaders(
-        &self,
-        jobs: &[Job],
-        slots: &mut [Option<Slot>],
-        order: &[usize],
-        points: &[(usize, DVec2)],
-    ) {
-        for &i in order {
-            let (job, Some(now)) = (&jobs[i], slots[i]) else {
-                continue;
-            };
-            let bound = job.request.within.is_some();
-            if !struck(job, &now.rect) && (bound || away(job, &now.rect, 0.0) == 0.0) {
-                continue;
-            }
-            let on_leader = self.leader_job(job.request.clone(), points);
-            let others = self.others_near(job.near, slots, i);
-            let cost_now = self.cost(job, &now, &others, f64::INFINITY);
-            let (slot, cost) = self.best_below(&on_leader, slots, i, cost_now - 1e-9);
-            if cost < cost_now - 1e-9 {
-                slots[i] = Some(slot);
-            }
-        }
-    }
-
-    /// Every label on a shelf with another text right under it (read as a fraction, the
-    /// shelf its bar: `0` over `O₂`) takes the best place on a leader paying for that, in the
-    /// placing order.
-    fn lift_fractions(
-        &self,
-        jobs: &[Job],
-        slots: &mut [Option<Slot>],
-        order: &[usize],
-        points: &[(usize, DVec2)],
-    ) {
-        for &i in order {
-            let Some(Slot {
-                leader: Some(now), ..
-            }) = slots[i]
-            else {
-                continue;
-            };
-            let band = leader::under_shelf_band(&now).inflate(CLEARANCE_MM);
-            let others = self.others_near(band, slots, i);
-            if !others.texts.iter().any(|t| leader::under_shelf(&now, t)) {
-                continue;
-            }
-            let mut on_leader = self.leader_job(jobs[i].request.clone(), points);
-            on_leader.fractions = true;
-            slots[i] = Some(self.best(&on_leader, slots, i).0);
-        }
-    }
-
     /// A request with its candidates and what lies near them.
-    fn job(&self, request: Request, points: &[(usize, DVec2)]) -> Job<'a> {
+    pub(super) fn job(&self, request: Request, points: &[(usize, DVec2)]) -> Job<'a> {
         let text = request.text();
         let extent = measure(&text, LABEL_HEIGHT_MM);
         let candidates = candidates(&request, extent.max - extent.min);
@@ -256,7 +204,7 @@ impl<'a> Placer<'a> {
     }
 
     /// The job of `request` on leaders: its places on a leader ([`leader::candidates`]).
-    fn leader_job(&self, request: Request, points: &[(usize, DVec2)]) -> Job<'a> {
+    pub(super) fn leader_job(&self, request: Request, points: &[(usize, DVec2)]) -> Job<'a> {
         let text = request.text();
         let extent = measure(&text, LABEL_HEIGHT_MM);
         let (rects, leaders) = leader::candidates(&request, extent.max - extent.min)
@@ -331,18 +279,25 @@ impl<'a> Placer<'a> {
             points,
             rank_cost,
             fractions: false,
+            words: Vec::new(),
         }
     }
 
     /// The least colliding candidate of `job`, label `i`, with the other labels where `slots`
     /// has them (the first of equals), and its cost.
-    fn best(&self, job: &Job, slots: &[Option<Slot>], i: usize) -> (Slot, f64) {
+    pub(super) fn best(&self, job: &Job, slots: &[Option<Slot>], i: usize) -> (Slot, f64) {
         self.best_below(job, slots, i, f64::INFINITY)
     }
 
     /// The cheapest place of `job` ([`best`](Self::best)) among those costing less than
     /// `bound`; a place costing no less, with the cost `bound`, when there is none.
-    fn best_below(&self, job: &Job, slots: &[Option<Slot>], i: usize, bound: f64) -> (Slot, f64) {
+    pub(super) fn best_below(
+        &self,
+        job: &Job,
+        slots: &[Option<Slot>],
+        i: usize,
+        bound: f64,
+    ) -> (Slot, f64) {
         let others = self.others_near(job.near, slots, i);
         let mut best = (
             Slot {
@@ -365,7 +320,7 @@ impl<'a> Placer<'a> {
 
     /// The boxes of texts within `near` — the fixed ones and the placed labels but `i` — and
     /// the other labels' leaders.
-    fn others_near(&self, near: Rect, slots: &[Option<Slot>], i: usize) -> Others {
+    pub(super) fn others_near(&self, near: Rect, slots: &[Option<Slot>], i: usize) -> Others {
         let placed = || {
             slots
                 .iter()
@@ -440,7 +395,7 @@ impl<'a> Placer<'a> {
     /// What placing `job` at `slot` costs among the texts `others`; once the sum (of terms
     /// never negative) reaches `bound`, the sum so far (the slot cannot beat a slot of that
     /// cost).
-    fn cost(&self, job: &Job, slot: &Slot, others: &Others, bound: f64) -> f64 {
+    pub(super) fn cost(&self, job: &Job, slot: &Slot, others: &Others, bound: f64) -> f64 {
         let rect = &slot.rect;
         let mut cost = slot.rank as f64 * job.rank_cost;
         let drawn = slot.leader.map_or(*rect, |l| {
@@ -462,6 +417,12 @@ impl<'a> Placer<'a> {
         for p in &job.points {
             if padded.contains(&Rect::new(*p, *p)) {
                 cost += OVER_POINT;
+            }
+        }
+        let shelf = slot.leader.is_some();
+        for (t, on) in &job.words {
+            if phrase::read_as_one(rect, shelf, t, *on) {
+                cost += phrase::STACKED;
             }
         }
         if cost >= bound {
@@ -521,7 +482,7 @@ pub(crate) const NEARER_MM: f64 = 0.5;
 /// position number "8" written nearer point 9, issue 45), a label of an item beyond
 /// [`ITEM_REACH_MM`] from its own line or nearer another line of its view than its own
 /// (nothing at its object).
-fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
+pub(super) fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
     if job.request.names_of == Names::Point {
         let own = box_distance(rect, job.request.anchor);
         let beyond = own - POINT_REACH_MM;
@@ -556,7 +517,7 @@ fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
 
 /// Whether a line or symbol of the view runs through the label at `rect` (within half the
 /// clearance a label keeps).
-fn struck(job: &Job, rect: &Rect) -> bool {
+pub(super) fn struck(job: &Job, rect: &Rect) -> bool {
     let padded = rect.inflate(CLEARANCE_MM * 0.5);
     job.lines
         .iter()

@@ -1,0 +1,109 @@
+//! The passes over the labels once each has its place, reading the layout as a reader
+//! would: a label away from its object or struck through takes a leader, a shelf standing
+//! over another text as a fraction's bar moves, a word read on into another is parted.
+
+use super::leader;
+use super::phrase;
+use super::place::{away, struck, Job, Placer, Slot};
+use super::*;
+
+impl Placer<'_> {
+    /// Every label whose place stands away from its object (beyond its reach, nearer another
+    /// line) or is struck through by a line takes the best place on a leader instead where
+    /// that costs less, in the placing order, each among the places and leaders the others
+    /// have by then. A label kept near its point by its own bound keeps a place no line runs
+    /// through.
+    pub(super) fn put_on_leaders(
+        &self,
+        jobs: &[Job],
+        slots: &mut [Option<Slot>],
+        order: &[usize],
+        points: &[(usize, DVec2)],
+    ) {
+        for &i in order {
+            let (job, Some(now)) = (&jobs[i], slots[i]) else {
+                continue;
+            };
+            let bound = job.request.within.is_some();
+            if !struck(job, &now.rect) && (bound || away(job, &now.rect, 0.0) == 0.0) {
+                continue;
+            }
+            let on_leader = self.leader_job(job.request.clone(), points);
+            let others = self.others_near(job.near, slots, i);
+            let cost_now = self.cost(job, &now, &others, f64::INFINITY);
+            let (slot, cost) = self.best_below(&on_leader, slots, i, cost_now - 1e-9);
+            if cost < cost_now - 1e-9 {
+                slots[i] = Some(slot);
+            }
+        }
+    }
+
+    /// Every label on a shelf with another text right under it (read as a fraction, the
+    /// shelf its bar: `0` over `O₂`) takes the best place on a leader paying for that, in the
+    /// placing order.
+    pub(super) fn lift_fractions(
+        &self,
+        jobs: &[Job],
+        slots: &mut [Option<Slot>],
+        order: &[usize],
+        points: &[(usize, DVec2)],
+    ) {
+        for &i in order {
+            let Some(Slot {
+                leader: Some(now), ..
+            }) = slots[i]
+            else {
+                continue;
+            };
+            let band = leader::under_shelf_band(&now).inflate(CLEARANCE_MM);
+            let others = self.others_near(band, slots, i);
+            if !others.texts.iter().any(|t| leader::under_shelf(&now, t)) {
+                continue;
+            }
+            let mut on_leader = self.leader_job(jobs[i].request.clone(), points);
+            on_leader.fractions = true;
+            slots[i] = Some(self.best(&on_leader, slots, i).0);
+        }
+    }
+
+    /// Every word label written right under or over another word label without a shelf
+    /// between (read as one phrase: «involute» over «limit point») takes the best place,
+    /// free or on a leader, paying for each word it would read on from or into, in the
+    /// placing order.
+    pub(super) fn part_phrases(
+        &self,
+        jobs: &[Job],
+        slots: &mut [Option<Slot>],
+        order: &[usize],
+        points: &[(usize, DVec2)],
+    ) {
+        let words: Vec<usize> = order
+            .iter()
+            .copied()
+            .filter(|&i| phrase::is_words(&jobs[i].text))
+            .collect();
+        for &i in &words {
+            let Some(now) = slots[i] else { continue };
+            let others: Vec<(Rect, bool)> = words
+                .iter()
+                .filter(|&&j| j != i)
+                .filter_map(|&j| slots[j].map(|s| (s.rect, s.leader.is_some())))
+                .collect();
+            let shelf = now.leader.is_some();
+            if !others
+                .iter()
+                .any(|(t, on)| phrase::read_as_one(&now.rect, shelf, t, *on))
+            {
+                continue;
+            }
+            let mut free = self.job(jobs[i].request.clone(), points);
+            free.words.clone_from(&others);
+            let mut on_leader = self.leader_job(jobs[i].request.clone(), points);
+            on_leader.words = others;
+            on_leader.fractions = true;
+            let (a, cost_a) = self.best(&free, slots, i);
+            let (b, cost_b) = self.best(&on_leader, slots, i);
+            slots[i] = Some(if cost_a <= cost_b { a } else { b });
+        }
+    }
+}

@@ -1,0 +1,88 @@
+//! Two word labels that read as one phrase: a name of a curve written right over another
+//! (en PZ1's detail A: «involute» over «limit point», read "involute limit point"). A symbol,
+//! a number or a formula is not read on into the next line; a shelf under the upper text
+//! parts the two.
+
+use super::place;
+use super::Rect;
+
+/// The most a word stands under the text above it and still reads as the next line of it:
+/// about a line of text (en PZ1's «limit point» 2,8 mm under «involute»), mm.
+const LINE_GAP_MM: f64 = 4.0;
+/// Across from each other over more than this share of the shorter of the two.
+const ACROSS: f64 = 0.5;
+/// What a place costs for each word it would read on from or into: what covering another
+/// label's point costs.
+pub(super) const STACKED: f64 = place::OVER_POINT;
+
+/// Whether a label's text (its markup) is words: letters, spaces and hyphens only, with a
+/// word of three letters or more — a curve's name («граничная точка»), not a symbol
+/// (`F_{и5}`, `O₂`), a position number or a formula.
+pub(super) fn is_words(text: &str) -> bool {
+    let only = text
+        .chars()
+        .all(|c| c.is_alphabetic() || c == ' ' || c == '-');
+    let longest = text
+        .split(|c: char| !c.is_alphabetic())
+        .map(|w| w.chars().count())
+        .max()
+        .unwrap_or(0);
+    only && longest >= 3
+}
+
+/// Whether the text box `lower` stands right under `upper` (its top within
+/// [`LINE_GAP_MM`] under `upper`'s bottom, across from it over [`ACROSS`] of the shorter).
+pub(super) fn under(upper: &Rect, lower: &Rect) -> bool {
+    let across = upper.max.x.min(lower.max.x) - upper.min.x.max(lower.min.x);
+    let shorter = upper.width().min(lower.width());
+    let gap = lower.min.y - upper.max.y;
+    across > ACROSS * shorter && (0.0..=LINE_GAP_MM).contains(&gap)
+}
+
+/// Whether a word label at `rect` (on a shelf: `shelf`) and another word at `other` (on a
+/// shelf: `other_shelf`) read as one phrase: one right under the other, the upper without
+/// a shelf.
+pub(super) fn read_as_one(rect: &Rect, shelf: bool, other: &Rect, other_shelf: bool) -> bool {
+    (!shelf && under(rect, other)) || (!other_shelf && under(other, rect))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::DVec2;
+
+    fn rect(x: f64, y: f64, w: f64) -> Rect {
+        Rect::new(DVec2::new(x, y), DVec2::new(x + w, y + 3.7))
+    }
+
+    #[test]
+    fn words_are_names_not_symbols_numbers_or_formulas() {
+        for w in ["involute", "limit point", "граничная точка", "rack tip"] {
+            assert!(is_words(w), "{w}");
+        }
+        for s in [
+            "F_{и5}",
+            "O₂",
+            "12",
+            "7′",
+            "μ_{v} = 0,004",
+            "Б",
+            "интерференция 1",
+        ] {
+            assert!(!is_words(s), "{s}");
+        }
+    }
+
+    /// en PZ1: «involute» 2,8 mm over «limit point», right-aligned: one phrase; beside it,
+    /// a line further down or on a shelf of its own: two.
+    #[test]
+    fn a_word_right_under_another_reads_on_from_it() {
+        let upper = rect(10.0, 0.0, 14.0);
+        let lower = rect(5.0, 6.5, 19.0);
+        assert!(read_as_one(&upper, false, &lower, false));
+        assert!(read_as_one(&lower, false, &upper, false));
+        assert!(!read_as_one(&upper, true, &lower, false));
+        assert!(!read_as_one(&upper, false, &rect(5.0, 9.0, 19.0), false));
+        assert!(!read_as_one(&upper, false, &rect(30.0, 6.5, 19.0), false));
+    }
+}
