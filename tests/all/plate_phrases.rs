@@ -1,7 +1,9 @@
-//! No two word labels read as one phrase (issue 45): a name of a curve written right over
-//! another without a shelf between reads on into it (en PZ1's detail A: «involute» over
-//! «limit point», read "involute limit point"). Computed from each sheet's layout, on every
-//! sheet of every scene in every configuration of the label rules.
+//! No word label reads on into another text (issue 45): a name of a curve written right over
+//! another without a shelf between (en PZ1's detail A: «involute» over «limit point», read
+//! "involute limit point"), or another label right after or before it on its row (PZ3's
+//! «интерференция 1» 2 mm before the axis's «0», read «интерференция 10»). Computed from
+//! each sheet's layout, on every sheet of every scene in every configuration of the label
+//! rules.
 
 use crate::plate_label_objects::CONFIGURATIONS;
 use crate::plate_model::every_sheet_in;
@@ -13,12 +15,16 @@ use tmm::scale::Lang;
 /// (a line of text is about 3,5 mm high).
 const LINE_GAP_MM: f64 = 4.0;
 
-/// Whether a label is words (letters, spaces and hyphens, a word of three letters or more),
-/// not a symbol, a number or a formula, which a reader does not read on into the next line.
+/// A text stands at most this far after or before a word on its row and reads on from it,
+/// mm (a digit's width; a word space is about 1 mm).
+const SIDE_GAP_MM: f64 = 2.5;
+
+/// Whether a label is words (letters, digits, spaces and hyphens, a word of three letters or
+/// more), not a symbol, a number or a formula, which a reader does not read on.
 fn words(text: &str) -> bool {
     let only = text
         .chars()
-        .all(|c| c.is_alphabetic() || c == ' ' || c == '-');
+        .all(|c| c.is_alphanumeric() || c == ' ' || c == '-');
     let long = text
         .split(|c: char| !c.is_alphabetic())
         .any(|w| w.chars().count() >= 3);
@@ -35,15 +41,31 @@ fn reads_on(upper: &PlacedLabel, lower: &PlacedLabel) -> bool {
     upper.leader.is_none() && across > 0.5 * narrower && (0.0..=LINE_GAP_MM).contains(&gap)
 }
 
-/// `view N “upper” over “lower”` for each pair of word labels of `l` read as one phrase.
+/// Whether `other` stands on the row of `word` (across from it over half the lower of the
+/// two) within [`SIDE_GAP_MM`] after or before it.
+fn beside(word: &PlacedLabel, other: &PlacedLabel) -> bool {
+    let (a, b) = (&word.rect, &other.rect);
+    let row = a.max.y.min(b.max.y) - a.min.y.max(b.min.y);
+    let lower = (a.max.y - a.min.y).min(b.max.y - b.min.y);
+    let gap = (b.min.x - a.max.x).max(a.min.x - b.max.x);
+    row > 0.5 * lower && (0.0..=SIDE_GAP_MM).contains(&gap)
+}
+
+/// `view N “upper” over “lower”` for each pair of word labels of `l` read as one phrase, and
+/// `view N “word” beside “other”` for each label on a word's row read on from it.
 fn phrases(l: &Layout) -> Vec<String> {
-    let word: Vec<&PlacedLabel> = l.labels.iter().filter(|x| words(&x.text)).collect();
     let mut out = Vec::new();
-    for a in &word {
-        for b in word.iter().filter(|b| b.view == a.view) {
-            if reads_on(a, b) {
+    for a in l.labels.iter().filter(|x| words(&x.text)) {
+        for b in l.labels.iter().filter(|b| !std::ptr::eq(*b, a)) {
+            if words(&b.text) && b.view == a.view && reads_on(a, b) {
                 out.push(format!(
                     "view {} “{}” over “{}”: read as one phrase",
+                    a.view, a.text, b.text
+                ));
+            }
+            if beside(a, b) {
+                out.push(format!(
+                    "view {} “{}” beside “{}”: read on from it",
                     a.view, a.text, b.text
                 ));
             }
@@ -52,8 +74,8 @@ fn phrases(l: &Layout) -> Vec<String> {
     out
 }
 
-/// No sheet writes two word labels as one phrase, in any configuration; the sheets do
-/// write word labels (detail A's curve names, the cams' zones, the gears' notes).
+/// No sheet writes a word label read on into another, in any configuration; the sheets do
+/// write word labels (detail A's curve names, the blocking contour's curves).
 #[test]
 fn no_two_word_labels_read_as_one_phrase() {
     let mut found = Vec::new();
@@ -74,7 +96,8 @@ fn no_two_word_labels_read_as_one_phrase() {
 }
 
 /// The rule fails where it should: en PZ1's «limit point» moved back right under
-/// «involute», off its shelf (as the placer wrote it before the rule).
+/// «involute», off its shelf (as the placer wrote it before the rule); «fillet» moved right
+/// after «involute» on its row.
 #[test]
 fn the_phrase_rule_fails_on_a_plate_built_to_break_it() {
     let (_, plate) = every_sheet_in(Lang::En, Drafting::HAND)
@@ -103,4 +126,14 @@ fn the_phrase_rule_fails_on_a_plate_built_to_break_it() {
     // On a shelf of its own the upper word is parted from the lower.
     l.labels[upper].leader = l.labels.iter().find_map(|x| x.leader);
     assert!(phrases(&l).is_empty(), "{:?}", phrases(&l));
+    // «fillet» moved onto «involute»'s row, 2 mm after it.
+    let fillet = find(&l, "fillet");
+    let size = l.labels[fillet].rect.max - l.labels[fillet].rect.min;
+    l.labels[fillet].rect.min = glam::DVec2::new(above.max.x + 2.0, above.min.y);
+    l.labels[fillet].rect.max = l.labels[fillet].rect.min + size;
+    let found = phrases(&l).join("\n");
+    assert!(
+        found.contains("“involute” beside “fillet”: read on from it"),
+        "{found}"
+    );
 }

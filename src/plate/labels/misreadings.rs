@@ -67,8 +67,9 @@ impl Placer<'_> {
     }
 
     /// Every word label written right under or over another word label without a shelf
-    /// between (read as one phrase: «involute» over «limit point») takes the best place,
-    /// free or on a leader, paying for each word it would read on from or into, in the
+    /// between (read as one phrase: «involute» over «limit point»), or with a text right
+    /// beside it on its row («интерференция 1» before the axis's «0»), takes the best place,
+    /// free or on a leader, paying for each text it would read on from or into, in the
     /// placing order.
     pub(super) fn part_phrases(
         &self,
@@ -90,16 +91,20 @@ impl Placer<'_> {
                 .filter_map(|&j| slots[j].map(|s| (s.rect, s.leader.is_some())))
                 .collect();
             let shelf = now.leader.is_some();
-            if !others
+            let stacked = others
                 .iter()
-                .any(|(t, on)| phrase::read_as_one(&now.rect, shelf, t, *on))
-            {
+                .any(|(t, on)| phrase::read_as_one(&now.rect, shelf, t, *on));
+            let near = self.others_near(now.rect.inflate(phrase::SIDE_GAP_MM), slots, i);
+            if !stacked && !near.texts.iter().any(|t| phrase::beside(&now.rect, t)) {
                 continue;
             }
+            // The texts a place reads on into stand up to a gap beside it.
             let mut free = self.job(jobs[i].request.clone(), points);
-            free.words.clone_from(&others);
+            free.phrases = Some(others.clone());
+            free.near = free.near.inflate(phrase::SIDE_GAP_MM);
             let mut on_leader = self.leader_job(jobs[i].request.clone(), points);
-            on_leader.words = others;
+            on_leader.phrases = Some(others);
+            on_leader.near = on_leader.near.inflate(phrase::SIDE_GAP_MM);
             on_leader.fractions = true;
             let (a, cost_a) = self.best(&free, slots, i);
             let (b, cost_b) = self.best(&on_leader, slots, i);

@@ -1,7 +1,8 @@
-//! Two word labels that read as one phrase: a name of a curve written right over another
-//! (en PZ1's detail A: «involute» over «limit point», read "involute limit point"). A symbol,
-//! a number or a formula is not read on into the next line; a shelf under the upper text
-//! parts the two.
+//! A word label read on into another text: a name of a curve written right over another
+//! (en PZ1's detail A: «involute» over «limit point», read "involute limit point"), or
+//! beside a text on its row (PZ3's «интерференция 1» 2 mm before the axis's «0», read
+//! «интерференция 10»). A symbol, a number or a formula is not read on into the next line;
+//! a shelf under the upper text parts the two.
 
 use super::place;
 use super::Rect;
@@ -11,17 +12,20 @@ use super::Rect;
 const LINE_GAP_MM: f64 = 4.0;
 /// Across from each other over more than this share of the shorter of the two.
 const ACROSS: f64 = 0.5;
+/// The most a text stands after or before a word on its row and still reads on from it:
+/// a digit's width (a word space is about 1 mm at the labels' height), mm.
+pub(super) const SIDE_GAP_MM: f64 = 2.5;
 /// What a place costs for each word it would read on from or into: what covering another
 /// label's point costs.
 pub(super) const STACKED: f64 = place::OVER_POINT;
 
-/// Whether a label's text (its markup) is words: letters, spaces and hyphens only, with a
-/// word of three letters or more — a curve's name («граничная точка»), not a symbol
-/// (`F_{и5}`, `O₂`), a position number or a formula.
+/// Whether a label's text (its markup) is words: letters, digits, spaces and hyphens only,
+/// with a word of three letters or more — a curve's name («граничная точка», «интерференция
+/// 1»), not a symbol (`F_{и5}`, `O₂`), a position number or a formula.
 pub(super) fn is_words(text: &str) -> bool {
     let only = text
         .chars()
-        .all(|c| c.is_alphabetic() || c == ' ' || c == '-');
+        .all(|c| c.is_alphanumeric() || c == ' ' || c == '-');
     let longest = text
         .split(|c: char| !c.is_alphabetic())
         .map(|w| w.chars().count())
@@ -37,6 +41,14 @@ pub(super) fn under(upper: &Rect, lower: &Rect) -> bool {
     let shorter = upper.width().min(lower.width());
     let gap = lower.min.y - upper.max.y;
     across > ACROSS * shorter && (0.0..=LINE_GAP_MM).contains(&gap)
+}
+
+/// Whether the text box `other` stands on the row of `rect` (across from it over half the
+/// lower of the two) within [`SIDE_GAP_MM`] after or before it.
+pub(super) fn beside(rect: &Rect, other: &Rect) -> bool {
+    let row = rect.max.y.min(other.max.y) - rect.min.y.max(other.min.y);
+    let gap = (other.min.x - rect.max.x).max(rect.min.x - other.max.x);
+    row > ACROSS * rect.height().min(other.height()) && (0.0..=SIDE_GAP_MM).contains(&gap)
 }
 
 /// Whether a word label at `rect` (on a shelf: `shelf`) and another word at `other` (on a
@@ -57,7 +69,12 @@ mod tests {
 
     #[test]
     fn words_are_names_not_symbols_numbers_or_formulas() {
-        for w in ["involute", "limit point", "граничная точка", "rack tip"] {
+        for w in [
+            "involute",
+            "limit point",
+            "граничная точка",
+            "интерференция 1",
+        ] {
             assert!(is_words(w), "{w}");
         }
         for s in [
@@ -67,7 +84,7 @@ mod tests {
             "7′",
             "μ_{v} = 0,004",
             "Б",
-            "интерференция 1",
+            "s_{a1} = 0",
         ] {
             assert!(!is_words(s), "{s}");
         }
@@ -84,5 +101,16 @@ mod tests {
         assert!(!read_as_one(&upper, true, &lower, false));
         assert!(!read_as_one(&upper, false, &rect(5.0, 9.0, 19.0), false));
         assert!(!read_as_one(&upper, false, &rect(30.0, 6.5, 19.0), false));
+    }
+
+    /// PZ3: the axis's «0» 2 mm after «интерференция 1» on its row reads on from it; 3 mm
+    /// after it, or a row lower, not.
+    #[test]
+    fn a_text_right_after_a_word_on_its_row_reads_on_from_it() {
+        let word = rect(0.0, 0.0, 30.0);
+        assert!(beside(&word, &rect(32.0, 0.5, 2.0)));
+        assert!(beside(&rect(32.0, 0.5, 2.0), &word));
+        assert!(!beside(&word, &rect(33.0, 0.5, 2.0)));
+        assert!(!beside(&word, &rect(31.0, 3.0, 2.0)));
     }
 }

@@ -87,10 +87,11 @@ pub(super) struct Job<'a> {
     /// ([`leader::under_shelf`]): in [`Placer::lift_fractions`], once every label stands
     /// where it will (before, a text under a shelf may be one about to move).
     pub(super) fractions: bool,
-    /// The other word labels (with whether each is on a shelf) a place of this one, if words,
-    /// pays for reading on from or into ([`phrase::read_as_one`]): in
-    /// [`Placer::part_phrases`], once every label stands where it will.
-    pub(super) words: Vec<(Rect, bool)>,
+    /// In [`Placer::part_phrases`] (once every label stands where it will), for a word
+    /// label: the other word labels, each with whether it is on a shelf. A place pays for
+    /// each it reads on from or into ([`phrase::read_as_one`]) and for each text beside it
+    /// on its row ([`phrase::beside`]).
+    pub(super) phrases: Option<Vec<(Rect, bool)>>,
 }
 
 /// Where a label is: its box and the rank of that candidate.
@@ -279,7 +280,7 @@ impl<'a> Placer<'a> {
             points,
             rank_cost,
             fractions: false,
-            words: Vec::new(),
+            phrases: None,
         }
     }
 
@@ -419,11 +420,18 @@ impl<'a> Placer<'a> {
                 cost += OVER_POINT;
             }
         }
-        let shelf = slot.leader.is_some();
-        for (t, on) in &job.words {
-            if phrase::read_as_one(rect, shelf, t, *on) {
-                cost += phrase::STACKED;
-            }
+        if let Some(words) = &job.phrases {
+            let shelf = slot.leader.is_some();
+            let read_on = words
+                .iter()
+                .filter(|(t, on)| phrase::read_as_one(rect, shelf, t, *on))
+                .count()
+                + others
+                    .texts
+                    .iter()
+                    .filter(|t| phrase::beside(rect, t))
+                    .count();
+            cost += read_on as f64 * phrase::STACKED;
         }
         if cost >= bound {
             return cost;
