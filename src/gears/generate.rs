@@ -11,6 +11,7 @@
 //! below 0.3m.
 
 use super::detail::DetailMark;
+use super::numbers;
 use super::rack::{Cutting, Piece};
 use super::trace::{outline_runs, polyline_crossing, refine, touching};
 use super::{GearError, MIN_TIP};
@@ -435,14 +436,13 @@ fn tip_reading(rec: &mut Recorder, c: &Cutting, flank: &[Touch], mu: f64) -> (Me
 fn trace(rec: &mut Recorder, c: &Cutting, states: &[f64], drawn: &[usize], mu: f64) -> Vec<Touch> {
     let r = c.r();
     let mm = |p: DVec2| p / mu;
+    let places = numbers::places(c, states, drawn, mu);
     let mut touches = Vec::new();
     for (i, &q) in states.iter().enumerate() {
         rec.set_group(i as u32 + 1);
         let turn = q / r;
-        let mut last = None;
         for run in outline_runs(c, q) {
             let pts: Vec<DVec2> = run.into_iter().map(|p| mm(rotate(p, turn))).collect();
-            last = pts.last().copied();
             rec.draw(
                 format!("rack position {}", i + 1),
                 Item::Polyline {
@@ -453,15 +453,10 @@ fn trace(rec: &mut Recorder, c: &Cutting, states: &[f64], drawn: &[usize], mu: f
                 &[],
             );
         }
-        // A drawn position's number at the outer end of its outline, out of the blank.
-        if let (Some(k), Some(end)) = (drawn.iter().position(|d| *d == i), last) {
-            let id = rec.draw(
-                format!("the number of rack position {}", i + 1),
-                Item::Text(end),
-                Role::Dimension,
-                &[],
-            );
-            rec.label(id, (k + 1).to_string(), end, end.normalize_or_zero());
+        // A drawn position's number at the outer end of its outline, out of the blank (or
+        // carried out from it, [`numbers::places`]).
+        if let Some((k, Some(place))) = drawn.iter().position(|d| *d == i).map(|k| (k, places[k])) {
+            numbers::number(rec, i, k, place);
         }
         for (piece, k) in touching(c, q) {
             let at = mm(rotate(k, turn));

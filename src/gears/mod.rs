@@ -19,6 +19,7 @@ mod differential;
 mod generate;
 mod involute;
 mod mesh;
+mod numbers;
 mod pair;
 mod rack;
 mod rows;

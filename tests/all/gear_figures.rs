@@ -34,6 +34,58 @@ fn hatching(f: &tmm::construct::Figure) -> Vec<tmm::geom::Segment> {
         .collect()
 }
 
+/// The drawn rack positions' numbers read in order along the blank, as placed on the sheet:
+/// seed 000's pinion at 1:1, whose positions' ends stand 1,4–2,8 mm apart (the numbers
+/// carried out on leaders and spread: they stood 7 5 6 4 3 1 2, «2» inside r_a), and PZ1's
+/// wheels at 5:1, whose ends stand apart (each number at its end), in Russian and English.
+#[test]
+fn the_rack_positions_numbers_read_in_order_along_the_blank() {
+    for scene in ["constructions/shaper.toml", "constructions/gears-pz1.toml"] {
+        for lang in [tmm::Lang::Ru, tmm::Lang::En] {
+            let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(scene);
+            let s = tmm::load(&path).expect("scene");
+            let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
+            let plates = tmm::sheets::build(&session, tmm::PlateKind::Gears, lang).expect("plates");
+            let mut racks = 0;
+            for plate in &plates {
+                let l = tmm::plate::layout(plate);
+                for (v, view) in plate.views.iter().enumerate() {
+                    if view.figure.title != "generation" {
+                        continue;
+                    }
+                    racks += 1;
+                    let mut numbers: Vec<(usize, glam::DVec2, glam::DVec2)> = l
+                        .labels
+                        .iter()
+                        .filter(|x| x.view == v)
+                        .filter(|x| {
+                            x.steps.iter().any(|id| {
+                                view.figure.steps.iter().any(|s| {
+                                    s.id == *id && s.note.starts_with("the number of rack position")
+                                })
+                            })
+                        })
+                        .map(|x| {
+                            let k: usize = x.text.parse().expect("a number");
+                            (k, x.anchor, (x.rect.min + x.rect.max) * 0.5)
+                        })
+                        .collect();
+                    numbers.sort_by_key(|n| n.0);
+                    assert!(numbers.len() >= 5, "{scene}: {} numbers", numbers.len());
+                    let way = numbers[numbers.len() - 1].1 - numbers[0].1;
+                    let along: Vec<f64> = numbers.iter().map(|n| n.2.dot(way)).collect();
+                    assert!(
+                        along.windows(2).all(|w| w[1] > w[0]),
+                        "{scene} {lang:?}: the numbers stand out of order along the blank: {:?}",
+                        numbers.iter().map(|n| (n.0, n.2)).collect::<Vec<_>>()
+                    );
+                }
+            }
+            assert_eq!(racks, 2, "{scene}: two rack cuttings");
+        }
+    }
+}
+
 #[test]
 fn rack_generation_draws_a_few_numbered_positions_and_the_undercut_in_a_detail() {
     use tmm::construct::{Item, Role};
