@@ -15,8 +15,8 @@ const ACROSS: f64 = 0.5;
 /// The most a text stands after or before a word on its row and still reads on from it:
 /// a digit's width (a word space is about 1 mm at the labels' height), mm.
 pub(super) const SIDE_GAP_MM: f64 = 2.5;
-/// What a place costs for each word it would read on from or into: what covering another
-/// label's point costs.
+/// What a place costs for each word it would read on from or into, and for each text beside
+/// it on its row: what covering another label's point costs.
 pub(super) const STACKED: f64 = place::OVER_POINT;
 
 /// Whether a label's text (its markup) is words: letters, digits, spaces and hyphens only,
@@ -36,7 +36,7 @@ pub(super) fn is_words(text: &str) -> bool {
 
 /// Whether the text box `lower` stands right under `upper` (its top within
 /// [`LINE_GAP_MM`] under `upper`'s bottom, across from it over [`ACROSS`] of the shorter).
-pub(super) fn under(upper: &Rect, lower: &Rect) -> bool {
+fn under(upper: &Rect, lower: &Rect) -> bool {
     let across = upper.max.x.min(lower.max.x) - upper.min.x.max(lower.min.x);
     let shorter = upper.width().min(lower.width());
     let gap = lower.min.y - upper.max.y;
