@@ -20,7 +20,7 @@ use crate::plate_model::{
 };
 use glam::DVec2;
 use tmm::construct::{Drafting, Item, Names, StepId};
-use tmm::plate::{layout, Layout, Plate, View};
+use tmm::plate::{layout, Layout, PlacedLabel, Plate, View};
 use tmm::scale::Lang;
 
 /// A label of a point is written at most this far from it, mm: the label's gap and two
@@ -160,7 +160,7 @@ fn nearest_other(view: &View, own: &[StepId], (lo, hi): (DVec2, DVec2)) -> Optio
 /// The languages and draftings the rule is checked in: the tests' exact reading in
 /// Russian, and what `render` hands in by default (0,5 mm) in every language — the texts'
 /// widths differ, and so do the places found.
-pub(crate) const CONFIGURATIONS: [(Lang, Drafting, &str); 4] = [
+const CONFIGURATIONS: [(Lang, Drafting, &str); 4] = [
     (Lang::Ru, Drafting::EXACT, "ru exact"),
     (Lang::Ru, Drafting::HAND, "ru 0,5"),
     (Lang::Uk, Drafting::HAND, "uk 0,5"),
@@ -387,24 +387,31 @@ fn leaders_crossing(l: &Layout) -> Vec<String> {
     out
 }
 
+/// A rule read off each sheet's layout, on every sheet in every configuration: its findings,
+/// each prefixed with the configuration and the sheet, and how many labels `counted` takes
+/// (so that a test sees the rule checked on real labels).
+pub(crate) fn on_every_layout(
+    rule: impl Fn(&Layout) -> Vec<String>,
+    counted: impl Fn(&PlacedLabel) -> bool,
+) -> (Vec<String>, usize) {
+    let mut found = Vec::new();
+    let mut count = 0;
+    for (lang, drafting, said) in CONFIGURATIONS {
+        for (name, plate) in every_sheet_in(lang, drafting) {
+            let l = layout(&plate);
+            count += l.labels.iter().filter(|x| counted(x)).count();
+            found.extend(rule(&l).into_iter().map(|w| format!("{said}: {name}: {w}")));
+        }
+    }
+    (found, count)
+}
+
 /// No leader on any sheet runs through another label, crosses another leader or stands its
 /// shelf right over another label, in every configuration; and the shipped sheets write
 /// some labels on leaders (the rule is checked on real leaders).
 #[test]
 fn leaders_cross_no_label_and_no_leader() {
-    let mut found = Vec::new();
-    let mut leaders = 0;
-    for (lang, drafting, said) in CONFIGURATIONS {
-        for (name, plate) in every_sheet_in(lang, drafting) {
-            let l = layout(&plate);
-            leaders += l.labels.iter().filter(|x| x.leader.is_some()).count();
-            found.extend(
-                leaders_crossing(&l)
-                    .into_iter()
-                    .map(|w| format!("{said}: {name}: {w}")),
-            );
-        }
-    }
+    let (found, leaders) = on_every_layout(leaders_crossing, |x| x.leader.is_some());
     assert!(found.is_empty(), "{}", found.join("\n"));
     assert!(leaders >= 40, "{leaders} leaders in 4 configurations");
 }

@@ -5,7 +5,7 @@
 //! each sheet's layout, on every sheet of every scene in every configuration of the label
 //! rules.
 
-use crate::plate_label_objects::CONFIGURATIONS;
+use crate::plate_label_objects::on_every_layout;
 use crate::plate_model::every_sheet_in;
 use tmm::construct::Drafting;
 use tmm::plate::{layout, Layout, PlacedLabel};
@@ -78,19 +78,7 @@ fn phrases(l: &Layout) -> Vec<String> {
 /// write word labels (detail A's curve names, the blocking contour's curves).
 #[test]
 fn no_two_word_labels_read_as_one_phrase() {
-    let mut found = Vec::new();
-    let mut word_labels = 0;
-    for (lang, drafting, said) in CONFIGURATIONS {
-        for (name, plate) in every_sheet_in(lang, drafting) {
-            let l = layout(&plate);
-            word_labels += l.labels.iter().filter(|x| words(&x.text)).count();
-            found.extend(
-                phrases(&l)
-                    .into_iter()
-                    .map(|w| format!("{said}: {name}: {w}")),
-            );
-        }
-    }
+    let (found, word_labels) = on_every_layout(phrases, |x| words(&x.text));
     assert!(found.is_empty(), "{}", found.join("\n"));
     assert!(word_labels >= 20, "{word_labels} word labels");
 }
