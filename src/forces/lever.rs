@@ -72,10 +72,17 @@ const LEVER_MAX_MM: f64 = 300.0;
 /// Build the lever from the velocity plan `vp` of the position `setup` and its loads, at
 /// the round μ_v that draws its turned plan about [`LEVER_PLAN_MM`] long and the whole lever
 /// within [`LEVER_MAX_MM`] (never smaller than the plan): the lever balances powers, so its
-/// scale is free, and a larger lever reads its arms more exactly.
-pub fn lever(setup: &PlanSetup<'_>, vp: &KinPlan, loads: &[Load], drive: &Drive) -> Lever {
+/// scale is free, and a larger lever reads its arms more exactly. Its arms are numbered on
+/// from `arms`, the arms the position's other drawings numbered (one sheet holds them all).
+pub fn lever(
+    setup: &PlanSetup<'_>,
+    vp: &KinPlan,
+    loads: &[Load],
+    drive: &Drive,
+    arms: usize,
+) -> Lever {
     let mu_v = vp.figure.scale;
-    let at_plan = lever_at(setup, vp, loads, drive, mu_v);
+    let at_plan = lever_at(setup, vp, (loads, drive), mu_v, arms);
     let ray = vp.images.iter().map(|x| x.length()).fold(0.0, f64::max);
     let reach = at_plan
         .figure
@@ -89,25 +96,26 @@ pub fn lever(setup: &PlanSetup<'_>, vp: &KinPlan, loads: &[Load], drive: &Drive)
     .flatten()
     .max_by(|a, b| a.value().total_cmp(&b.value()));
     match larger {
-        Some(mu) if mu.value() < mu_v.value() => lever_at(setup, vp, loads, drive, mu),
+        Some(mu) if mu.value() < mu_v.value() => lever_at(setup, vp, (loads, drive), mu, arms),
         _ => at_plan,
     }
 }
 
-/// The lever drawn at `mu` (the plan `vp` enlarged by μ_v/μ).
+/// The lever drawn at `mu` (the plan `vp` enlarged by μ_v/μ), its arms numbered on from
+/// `arms`.
 fn lever_at(
     setup: &PlanSetup<'_>,
     vp: &KinPlan,
-    loads: &[Load],
-    drive: &Drive,
+    (loads, drive): (&[Load], &Drive),
     mu: Scale,
+    arms: usize,
 ) -> Lever {
     let enlarge = vp.figure.scale.value() / mu.value();
     let mut rec = Recorder::in_context("Zhukovsky's lever", mu, &setup.ctx);
     let names = turned_plan(&mut rec, setup.prog, vp, enlarge);
     let mut lb = Board {
         rec,
-        arms: 0,
+        arms,
         log: Vec::new(),
         names,
         turned: vp.images.iter().map(|x| turn(*x * enlarge)).collect(),

@@ -268,7 +268,7 @@ pub fn analyse(
     };
     let polygons = polygons::polygons(&board, &loads, &spec.drive)
         .map_err(|e| polygon_error(&pos.label, e))?;
-    let lever = lever::lever(&board.setup, vp, &loads, &spec.drive);
+    let lever = lever::lever(&board.setup, vp, &loads, &spec.drive, polygons.arms);
     let friction = match &spec.friction {
         Some(fr) => {
             let route = Route {
@@ -537,7 +537,13 @@ fn with_friction(
         |r, m| friction_loads_of(fr, &drawn, r, m),
     )?;
     let all: Vec<Load> = route.loads.iter().chain(&polygons.loads).cloned().collect();
-    let lever = lever::lever(&board.setup, route.vp, &all, &spec.drive);
+    let lever = lever::lever(
+        &board.setup,
+        route.vp,
+        &all,
+        &spec.drive,
+        polygons.solution.arms,
+    );
     let lost = friction_power(&twin.loads, &exact);
     Ok(WithFriction {
         analysis: Analysis {

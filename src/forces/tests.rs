@@ -186,7 +186,7 @@ fn analyse_random(
     let pol = polygons(&c.board(), &c.lg, &spec.drive)
         .map_err(|(g, e)| TestCaseError::fail(format!("group {g}: {e}")))?;
     let board = c.board();
-    let lev = lever::lever(&board.setup, &c.vp, &c.lg, &spec.drive);
+    let lev = lever::lever(&board.setup, &c.vp, &c.lg, &spec.drive, pol.arms);
     Ok((c.twin, pol, lev, power))
 }
 

@@ -275,3 +275,30 @@ fn every_caption_of_a_force_sheet_stands_under_its_drawing() {
     }
     assert!(seen >= 40, "{seen} captions");
 }
+
+/// Issue 45: an arm's name `h_{n}` names one arm of the sheet: the drawings of a position
+/// (its groups, the driving link, the lever) number their arms on, as a student numbers
+/// them on one sheet, instead of each starting again at h₁ (seed 000's shaper wrote h₁ on
+/// four drawings of one sheet, each a different arm).
+#[test]
+fn no_arm_name_names_two_arms_of_a_sheet() {
+    let mut arms = 0;
+    for (name, plate) in crate::plate_model::every_sheet_in(tmm::scale::Lang::Ru, Drafting::EXACT) {
+        let l = tmm::plate::layout(&plate);
+        let mut views: std::collections::BTreeMap<&str, std::collections::BTreeSet<usize>> =
+            Default::default();
+        for x in &l.labels {
+            for t in x.text.split(tmm::plate::JOINT_SEPARATOR) {
+                let number = t.strip_prefix("h_{").and_then(|n| n.strip_suffix('}'));
+                if number.is_some_and(|n| n.chars().all(|c| c.is_ascii_digit())) {
+                    views.entry(t).or_default().insert(x.view);
+                    arms += 1;
+                }
+            }
+        }
+        for (t, v) in views {
+            assert!(v.len() == 1, "{name}: {t} names an arm on views {v:?}");
+        }
+    }
+    assert!(arms >= 30, "{arms} numbered arms");
+}

@@ -37,11 +37,12 @@ pub(super) fn driver(
     board: &Board<'_>,
     applied: &[Load],
     drive: &Drive,
-) -> Result<DriverPolygon, ConstructionError> {
+    arms: usize,
+) -> Result<(DriverPolygon, usize), ConstructionError> {
     let prog = board.setup.prog;
     let b = board.setup.built;
     let crank = prog.crank_link as usize;
-    let mut sch = Scheme::new(board, format!("driving link {crank}"));
+    let mut sch = Scheme::new(board, format!("driving link {crank}"), arms);
     draw_links(&mut sch.rec, prog, b, Role::Given, "crank", Part::Driver);
     let loads = on(applied, crank);
     for l in &loads {
@@ -135,7 +136,8 @@ pub(super) fn driver(
     let reaction = revolute(0, crank, prog.centre, r01);
     show_reaction(&mut sch, &reaction);
     let (polygon, detail) = pol.finish();
-    Ok(DriverPolygon {
+    let arms = sch.arms;
+    let driver = DriverPolygon {
         scheme: sch.rec.finish(),
         polygon,
         details: detail,
@@ -149,5 +151,6 @@ pub(super) fn driver(
             terms: known,
             unknown,
         },
-    })
+    };
+    Ok((driver, arms))
 }

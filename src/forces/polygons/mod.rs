@@ -88,6 +88,8 @@ pub struct Polygons {
     pub groups: Vec<GroupPolygon>,
     /// The driving link.
     pub driver: DriverPolygon,
+    /// The arms numbered on these drawings, `h_{1}` … `h_{arms}`: the lever numbers on.
+    pub arms: usize,
 }
 
 impl Polygons {
@@ -204,10 +206,11 @@ pub fn polygons(
     let reach = crate::forces::reach(&b.p) * board.setup.mu_l.value();
     let scale = crate::forces::force_scale(loads, reach);
     let mut groups = Vec::new();
+    let mut arms = 0;
     for g in prog.groups().rev() {
         let (group, [i, j]) = (g.group, g.links);
         let title = format!("group {} ({}, {})", group + 1, i, j);
-        let mut sch = Scheme::new(board, title.clone());
+        let mut sch = Scheme::new(board, title.clone(), arms);
         draw_links(
             &mut sch.rec,
             prog,
@@ -249,6 +252,7 @@ pub fn polygons(
             show_reaction(&mut sch, r);
         }
         let (polygon, detail) = pol.finish();
+        arms = sch.arms;
         groups.push(GroupPolygon {
             group,
             links: [i, j],
@@ -259,8 +263,12 @@ pub fn polygons(
             equations,
         });
     }
-    let driver = driver(board, &applied, drive).map_err(|e| (usize::MAX, e))?;
-    Ok(Polygons { groups, driver })
+    let (driver, arms) = driver(board, &applied, drive, arms).map_err(|e| (usize::MAX, e))?;
+    Ok(Polygons {
+        groups,
+        driver,
+        arms,
+    })
 }
 
 /// Where a reaction acts: its pair's point, shifted along the slide by its offset.

@@ -17,17 +17,20 @@ const ARROW_MM: f64 = 14.0;
 pub(super) struct Scheme<'a> {
     pub(super) board: &'a Board<'a>,
     pub(super) rec: Recorder,
+    /// The arms numbered so far on the position's drawings: a new arm is `h_{arms + 1}`.
     pub(super) arms: usize,
     /// The moments taken since the log was last drained.
     pub(super) log: Vec<MomentTerm>,
 }
 
 impl<'a> Scheme<'a> {
-    pub(super) fn new(board: &'a Board<'a>, title: String) -> Self {
+    /// A drawing of the position titled `title`, its arms numbered on from `arms` (the
+    /// drawings of one sheet number their arms on, so that no `h_{n}` names two arms).
+    pub(super) fn new(board: &'a Board<'a>, title: String, arms: usize) -> Self {
         Self {
             board,
             rec: Recorder::in_context(title, board.setup.mu_l, &board.setup.ctx),
-            arms: 0,
+            arms,
             log: Vec::new(),
         }
     }
