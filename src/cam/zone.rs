@@ -201,10 +201,16 @@ pub(super) fn chosen_centre(rec: &mut Recorder, placement: Placement) {
 /// The line x = −e runs this far under the centre chosen on it, mm.
 const E_BELOW_MM: f64 = 5.0;
 
+/// e is dimensioned this share of the way from B₀'s level down to the centre, clear of the
+/// middle of r_min's dimension line (O₁ to B₀), where r_min's text or its leader stands
+/// (halfway, e crossed r_min's line where r_min's leader ended: cam-shock); there r_min's
+/// line passes near the middle of e's and e's text goes past its arrow.
+const E_AT: f64 = 0.35;
+
 /// An offset follower's centre `o` is chosen on the line x = −e, parallel to the S axis
 /// (the follower's path): that line drawn from under the centre up to B₀'s level, and e
-/// dimensioned between it and the S axis halfway up (under the centre lies the zone's
-/// hatching, at it the centre's name).
+/// dimensioned between it and the S axis [`E_AT`] of the way down (under the centre lies the
+/// zone's hatching, at it the centre's name).
 pub(super) fn offset_line(rec: &mut Recorder, o: DVec2) {
     let (top, bottom) = (DVec2::new(o.x, 0.0), DVec2::new(o.x, o.y - E_BELOW_MM));
     rec.draw(
@@ -213,6 +219,6 @@ pub(super) fn offset_line(rec: &mut Recorder, o: DVec2) {
         Role::Construction,
         &[],
     );
-    let y = 0.5 * o.y;
+    let y = E_AT * o.y;
     rec.dimension(E_NOTE, (DVec2::new(0.0, y), DVec2::new(o.x, y), 0.0), "e");
 }

@@ -9,15 +9,19 @@
 //!   the piece; drawn beside it, it adds no crossing (the review's r_min across the zone's
 //!   ray on cam-shock);
 //! - its text is struck by no line of its view;
-//! - the flat face's ρ_min is written with its value (ρ_min = 10 мм), as r_min is.
+//! - the flat face's ρ_min is written with its value (ρ_min = 10 мм), as r_min is;
+//! - a dimension's text on a leader (r_min's beside its line) has the leader end on the
+//!   dimension's line clear of every other line of the view: ending where another crosses
+//!   (cam-shock's e dimension, halfway down O₁B₀ where r_min's leader ended) it names both.
 //!
 //! Each rule also runs on a plate built to break it, and must fail there.
 
-use crate::plate_model::lines;
+use crate::plate_model::{lines, on_sheet};
 use glam::DVec2;
 use tmm::cam::{RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE};
 use tmm::construct::{Drafting, Figure, Item, Role, Step};
-use tmm::plate::{struck_dimension_texts, Plate};
+use tmm::geom::Segment;
+use tmm::plate::{layout, struck_dimension_texts, Plate};
 use tmm::scale::Lang;
 use tmm::scene::PlateKind;
 use tmm::study::Session;
@@ -40,6 +44,10 @@ const TITLES: [&str; 2] = ["combined", "travel"];
 
 /// Two pieces meeting nearer than this to an end of either touch, they do not cross, mm.
 const TOUCH_MM: f64 = 0.05;
+
+/// A dimension's leader ends at least this far from every other line of its view, mm: two
+/// lines' widths and a leader's dot, and a reader tells which line it ends on.
+const LEADER_CLEAR_MM: f64 = 1.5;
 
 /// The cam sheets of scene `name` in `lang`, read at `drafting` mm.
 fn cam_sheets(name: &str, drafting: f64, lang: Lang) -> Vec<Plate> {
@@ -154,10 +162,39 @@ fn rho_min_valued(f: &Figure, rho: f64) -> Result<(), String> {
     }
 }
 
+/// Every dimension's leader of view `v` of `plate` ending nearer than [`LEADER_CLEAR_MM`]
+/// to another line of the view: “dimension”'s leader ends x mm from “line”.
+fn leaders_at_crossings(plate: &Plate, v: usize) -> Vec<String> {
+    let view = &plate.views[v];
+    let mut out = Vec::new();
+    for l in layout(plate).labels.iter().filter(|l| l.view == v) {
+        let Some(leader) = l.leader else { continue };
+        let dims = view.figure.steps.iter().filter(|s| l.steps.contains(&s.id));
+        for d in dims.filter(|s| matches!(s.item, Item::Dimension { .. })) {
+            for other in view.figure.steps.iter().filter(|s| s.id != d.id) {
+                let near = drawn(other)
+                    .into_iter()
+                    .map(|(a, b)| {
+                        Segment::new(on_sheet(view, a), on_sheet(view, b)).distance_to(leader.to)
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                if near < LEADER_CLEAR_MM {
+                    out.push(format!(
+                        "“{}”'s leader ends {near:.2} mm from “{}”",
+                        d.note, other.note
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
 /// What a combined diagram's dimensions break on sheet `plates[p]`, view `v`.
 fn broken_rules(plates: &[Plate], (p, v): (usize, usize), flat: Option<f64>) -> Vec<String> {
     let f = &plates[p].views[v].figure;
     let mut out = dimensions_crossing(f);
+    out.extend(leaders_at_crossings(&plates[p], v));
     for (view, text, mm) in struck_dimension_texts(&plates[p]) {
         if view == v {
             out.push(format!("“{text}” holds {mm:.2} mm of line"));
@@ -215,6 +252,24 @@ fn the_dimension_rules_fail_on_a_plate_built_to_break_them() {
     }
     let crossing = dimensions_crossing(&moved[pv.0].views[pv.1].figure);
     assert!(!crossing.is_empty(), "the moved r_min crosses nothing");
+    // e dimensioned halfway down O₁B₀ again, across r_min's line where its leader ends.
+    let mut halfway = plates.clone();
+    let f = &mut halfway[pv.0].views[pv.1].figure;
+    let r_min = f.steps.iter().find_map(|s| match s.item {
+        Item::Dimension { from, to, .. } if s.note == R_MIN_NOTE => Some((from, to)),
+        _ => None,
+    });
+    let (o, b0) = r_min.expect("r_min's dimension");
+    for s in f.steps.iter_mut().filter(|s| s.note == tmm::cam::E_NOTE) {
+        let y = 0.5 * (o.y + b0.y);
+        s.item = Item::Dimension {
+            from: DVec2::new(b0.x, y),
+            to: DVec2::new(o.x, y),
+            offset: 0.0,
+        };
+    }
+    let at = leaders_at_crossings(&halfway[pv.0], pv.1).join("\n");
+    assert!(at.contains("dimension e"), "{at}");
     // The flat face's ρ_min without its value (the review's PZ4).
     let plates = cam_sheets("cam-pz4", 0.5, Lang::Ru);
     let [pv] = combined_views(&plates)[..] else {
