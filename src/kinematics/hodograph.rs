@@ -7,8 +7,10 @@ use crate::geom::DVec2;
 use crate::linkage::{KinPlan, PositionPlan};
 use crate::scale::{Quantity, Scale};
 
-/// Length of the longest hodograph vector, mm.
-const HODOGRAPH_MM: f64 = 60.0;
+/// The longest hodograph vector is drawn at most this long, mm (at the round μ, half to all
+/// of it): a hodograph is read by its twelve ends and their numbers, which crowd about the
+/// pole at 30–60 mm (the shaper's «1 ≡ 8′ 2 3 4 5» within 15 mm, the six-bar's «12 11 p 10′»).
+const HODOGRAPH_MM: f64 = 100.0;
 
 /// The point whose hodograph is drawn: the scene's, or the first point of a link.
 pub fn hodograph_point(
@@ -36,8 +38,8 @@ pub fn hodograph_point(
 }
 
 /// The hodograph of point `k` from the velocity plans (each at its own μ_v, the common one
-/// `scale_v`; `None` where a plan is refused), at its own μ: the longest vector drawn about
-/// 60 mm.
+/// `scale_v`; `None` where a plan is refused), at its own μ: the longest vector drawn at most
+/// [`HODOGRAPH_MM`] long.
 pub fn hodograph(
     plan: &PositionPlan,
     k: usize,
