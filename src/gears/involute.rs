@@ -4,7 +4,7 @@
 //! the unrolled lengths laid off) against the exact curve.
 
 use super::GearError;
-use crate::geom::DVec2;
+use crate::geom::{bracketed_newton, DVec2, NewtonEnd};
 use std::f64::consts::FRAC_PI_2;
 
 /// inv α = tg α − α (radians).
@@ -48,8 +48,9 @@ const MAX_ANGLE: f64 = FRAC_PI_2 - 1e-6;
 
 /// The inverse of the involute function: the α in [0, π/2) with inv α = `v`.
 ///
-/// Safeguarded Newton iteration inside a bracket [lo, hi] that always contains the root
-/// (inv is increasing): each Newton step that leaves the bracket is replaced by bisection,
+/// Safeguarded Newton iteration inside a bracket [0, MAX_ANGLE] that always contains the
+/// root (inv is increasing; [`bracketed_newton`]): each Newton step that leaves the bracket
+/// is replaced by bisection,
 /// so the iteration converges for every admissible `v`. It starts from three terms of the
 /// series and stops when the error Newton's step leaves (estimated from the step) or the
 /// bracket is at the resolution of f64: two steps at a gear's pressure angles.
@@ -73,49 +74,36 @@ pub fn inv_inverse_with_tan(v: f64) -> Result<(f64, f64), GearError> {
     if v == 0.0 {
         return Ok((0.0, 0.0));
     }
-    let (mut lo, mut hi) = (0.0_f64, MAX_ANGLE);
     // inv α = α³/3 + 2α⁵/15 + 17α⁷/315 + …, so with q = (3 inv α)^⅓,
     // α = q − 2q³/15 + 3q⁵/175 + O(q⁷): a start inside the bracket (the series where it
     // helps, q < 1, below about 50°; 3e-6 of α at 20°).
     let q = (3.0 * v).cbrt();
     let q2 = q * q;
-    let mut a = if q < 1.0 {
+    let start = if q < 1.0 {
         q * (1.0 - q2 * (2.0 / 15.0 - q2 * (3.0 / 175.0)))
     } else {
         q
-    }
-    .clamp(lo, hi);
-    for _ in 0..200 {
+    };
+    // inv′ α = tg²α; the tangent rides along as the evaluation's extra.
+    let f = |a: f64| {
         let (inv_a, t) = inv_and_tan(a);
-        let f = inv_a - v;
-        if f == 0.0 {
-            return Ok((a, t));
-        }
-        if f > 0.0 {
-            hi = a;
-        } else {
-            lo = a;
-        }
-        let newton = a - f / (t * t);
-        if newton > lo && newton < hi {
-            // Newton's error after a step δ is about δ²·inv″/(2 inv′) = δ²(1 + tg²)/tg: once
-            // that is below a quarter of an ulp, the step has landed on the root.
-            let step = newton - a;
-            if step * step * (1.0 + t * t) <= 0.25 * f64::EPSILON * a * t
-                || step.abs() <= 4.0 * f64::EPSILON * a
-            {
-                return Ok((newton, t + (1.0 + t * t) * step * (1.0 + t * step)));
+        (inv_a - v, t * t, t)
+    };
+    // Newton's error after a step δ is about δ²·inv″/(2 inv′) = δ²(1 + tg²)/tg: once that
+    // is below a quarter of an ulp, the step has landed on the root.
+    let landed = |a: f64, step: f64, &t: &f64| {
+        step * step * (1.0 + t * t) <= 0.25 * f64::EPSILON * a * t
+            || step.abs() <= 4.0 * f64::EPSILON * a
+    };
+    Ok(
+        match bracketed_newton(f, (0.0, MAX_ANGLE), start, 200, landed) {
+            NewtonEnd::Root(a, t) => (a, t),
+            NewtonEnd::Landed { to, step, from: t } => {
+                (to, t + (1.0 + t * t) * step * (1.0 + t * step))
             }
-            a = newton;
-        } else {
-            let next = 0.5 * (lo + hi);
-            if (next - a).abs() <= 4.0 * f64::EPSILON * a || hi - lo <= 4.0 * f64::EPSILON * hi {
-                return Ok((next, next.tan()));
-            }
-            a = next;
-        }
-    }
-    Ok((a, a.tan()))
+            NewtonEnd::Middle(a) | NewtonEnd::Spent(a) => (a, a.tan()),
+        },
+    )
 }
 
 /// The inverse by plain Newton iteration from (3v)^{1/3} (seed 002's recipe), the twin of

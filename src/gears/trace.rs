@@ -4,7 +4,7 @@
 //! the traced pieces.
 
 use super::rack::{Cutting, Piece};
-use crate::geom::{rotate, DVec2, Segment};
+use crate::geom::{pin_crossing, rotate, CurvePoint, DVec2, Segment};
 use std::f64::consts::PI;
 
 /// Points per rounding arc of a drawn rack outline.
@@ -114,47 +114,26 @@ pub(super) fn polyline_crossing(a: &[DVec2], b: &[DVec2]) -> Option<(DVec2, usiz
 }
 
 /// A state and the touching point of one piece there (wheel frame, m).
-pub(super) type Traced = (f64, DVec2);
+pub(super) type Traced = CurvePoint;
 
 /// Pin the crossing of the fillet step `f` with the flank step `l`: set the rack at the
 /// middle of each step, trace the touching points there, keep the halves that cross; until
-/// the steps shrink to rounding.
-pub(super) fn refine(c: &Cutting, mut f: [Traced; 2], mut l: [Traced; 2]) -> Option<DVec2> {
-    let at = |piece: Piece, q: f64| {
-        touching(c, q)
-            .into_iter()
-            .find(|(p, _)| *p == piece)
-            .map(|(_, k)| rotate(k, q / c.r()))
+/// the steps shrink to rounding ([`pin_crossing`]).
+pub(super) fn refine(c: &Cutting, f: [Traced; 2], l: [Traced; 2]) -> Option<DVec2> {
+    let at = |piece: Piece| {
+        move |q: f64| {
+            touching(c, q)
+                .into_iter()
+                .find(|(p, _)| *p == piece)
+                .map(|(_, k)| rotate(k, q / c.r()))
+        }
     };
-    let mut best = Segment::new(f[0].1, f[1].1).crossing(&Segment::new(l[0].1, l[1].1));
-    for _ in 0..80 {
-        let (fq, lq) = (0.5 * (f[0].0 + f[1].0), 0.5 * (l[0].0 + l[1].0));
-        let (Some(fm), Some(lm)) = (at(Piece::Fillet, fq), at(Piece::Flank, lq)) else {
-            break;
-        };
-        let halves_f = [[f[0], (fq, fm)], [(fq, fm), f[1]]];
-        let halves_l = [[l[0], (lq, lm)], [(lq, lm), l[1]]];
-        // The halves that cross; at rounding level, the pair whose lines meet nearest to
-        // both halves.
-        let mut found: Option<([Traced; 2], [Traced; 2], DVec2, f64)> = None;
-        for a in &halves_f {
-            for b in &halves_l {
-                if let Some((p, miss)) =
-                    Segment::new(a[0].1, a[1].1).meet(&Segment::new(b[0].1, b[1].1))
-                {
-                    if found.as_ref().is_none_or(|f| miss < f.3) {
-                        found = Some((*a, *b, p, miss));
-                    }
-                }
-            }
-        }
-        let Some((a, b, p, _)) = found else { break };
-        (f, l, best) = (a, b, Some(p));
-        // Steps of 1e-10·m: their chords are the curves to ~1e-20·m, and shorter ones would
-        // meet at the mercy of rounding (the fillet crosses the involute at a shallow angle).
-        if (f[1].1 - f[0].1).length() + (l[1].1 - l[0].1).length() <= 1e-10 * c.module {
-            break;
-        }
-    }
-    best
+    // Steps of 1e-10·m: their chords are the curves to ~1e-20·m, and shorter ones would
+    // meet at the mercy of rounding (the fillet crosses the involute at a shallow angle).
+    pin_crossing(
+        (at(Piece::Fillet), at(Piece::Flank)),
+        [f, l],
+        80,
+        1e-10 * c.module,
+    )
 }

@@ -2,17 +2,20 @@
 //! explicit tolerances. Knows nothing of plates, scenes or mechanisms.
 
 mod clip;
+mod crossing;
 mod fan;
 mod golden;
 mod hatch;
 mod intersect;
 mod linear;
+mod newton;
 mod primitives;
 mod rect;
 mod root;
 mod tolerance;
 
 pub use clip::{arc_in_circle, polyline_in_circle};
+pub use crossing::{pin_crossing, CurvePoint};
 pub use fan::{fan_start, SPOT_MM};
 pub use glam::DVec2;
 pub use golden::{golden_max, golden_section, Golden, GoldenRule, Tie};
@@ -22,6 +25,7 @@ pub use linear::{
     determinant, eliminate, null_space, smallest_pivot, solve_linear, solve_linear_above,
     SINGULAR_REL,
 };
+pub use newton::{bracketed_newton, NewtonEnd};
 pub use primitives::{
     bezier_at, bezier_points, french_curve, french_piece, hermite, nearest, polygon_contains,
     rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,
