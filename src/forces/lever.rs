@@ -82,7 +82,7 @@ pub fn lever(
     arms: usize,
 ) -> Lever {
     let mu_v = vp.figure.scale;
-    let at_plan = lever_at(setup, vp, (loads, drive), mu_v, arms);
+    let at_plan = lever_at(setup, vp, loads, drive, mu_v, arms);
     let ray = vp.images.iter().map(|x| x.length()).fold(0.0, f64::max);
     let reach = at_plan
         .figure
@@ -96,7 +96,7 @@ pub fn lever(
     .flatten()
     .max_by(|a, b| a.value().total_cmp(&b.value()));
     match larger {
-        Some(mu) if mu.value() < mu_v.value() => lever_at(setup, vp, (loads, drive), mu, arms),
+        Some(mu) if mu.value() < mu_v.value() => lever_at(setup, vp, loads, drive, mu, arms),
         _ => at_plan,
     }
 }
@@ -106,7 +106,8 @@ pub fn lever(
 fn lever_at(
     setup: &PlanSetup<'_>,
     vp: &KinPlan,
-    (loads, drive): (&[Load], &Drive),
+    loads: &[Load],
+    drive: &Drive,
     mu: Scale,
     arms: usize,
 ) -> Lever {
