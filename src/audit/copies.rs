@@ -2,7 +2,7 @@
 //! column of its row is looked for. One look-up per value, whatever the table's length (a
 //! scan of the whole table for each value made an audit quadratic in its rows).
 
-use super::{Entry, Reading};
+use super::{ColumnReading, Entry};
 use std::collections::HashMap;
 
 /// A value's row (its position) and its number in SI, `-0` taken as `0`.
@@ -13,7 +13,7 @@ type Key<'a> = (Option<&'a str>, u64);
 /// copy.
 pub(super) struct Copies<'a> {
     table: &'a [Entry],
-    readings: &'a [Reading],
+    readings: &'a [ColumnReading],
     index: HashMap<Key<'a>, Vec<usize>>,
 }
 
@@ -25,13 +25,13 @@ fn key(e: &Entry) -> Option<Key<'_>> {
 }
 
 /// The column of a value: its quantity, method, unit and reading.
-fn column(e: &Entry, r: Reading) -> (&str, Option<&str>, &str, Reading) {
+fn column(e: &Entry, r: ColumnReading) -> (&str, Option<&str>, &str, ColumnReading) {
     (e.quantity.as_str(), e.method.as_deref(), e.unit.name, r)
 }
 
 impl<'a> Copies<'a> {
     /// The index of `table`, whose values' columns are read as `readings` (in order).
-    pub fn new(table: &'a [Entry], readings: &'a [Reading]) -> Self {
+    pub fn new(table: &'a [Entry], readings: &'a [ColumnReading]) -> Self {
         let mut index: HashMap<Key<'a>, Vec<usize>> = HashMap::new();
         for (k, e) in table.iter().enumerate() {
             let Some(at) = key(e) else { continue };
@@ -50,7 +50,10 @@ impl<'a> Copies<'a> {
 
     /// The values of `entry`'s row whose number in SI is `entry`'s, one of each column
     /// (`entry`'s own among them), with how their columns are read.
-    pub fn of<'s>(&'s self, entry: &'a Entry) -> impl Iterator<Item = (&'a Entry, Reading)> + 's {
+    pub fn of<'s>(
+        &'s self,
+        entry: &'a Entry,
+    ) -> impl Iterator<Item = (&'a Entry, ColumnReading)> + 's {
         let found: &'s [usize] = key(entry)
             .and_then(|k| self.index.get(&k))
             .map_or(&[], Vec::as_slice);

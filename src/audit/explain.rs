@@ -3,7 +3,8 @@
 use super::copies::Copies;
 use super::targets::Target;
 use super::{
-    units, Auditor, Edit, Entry, Explanation, Formula, Reading, Slip, Verdict, Written, ANALYTIC,
+    units, Auditor, ColumnReading, Edit, Entry, Explanation, Formula, Slip, Verdict, Written,
+    ANALYTIC,
 };
 use crate::check::{Method, Symbol};
 
@@ -27,7 +28,7 @@ pub(super) struct Case<'a> {
     /// The tolerance, SI.
     pub tol: f64,
     /// How the value's column is read.
-    pub reading: Reading,
+    pub reading: ColumnReading,
     /// Held to the analytic method's tolerance (and so are the rows it may belong to).
     pub analytic: bool,
 }
@@ -59,7 +60,7 @@ impl Case<'_> {
 }
 
 /// `o`'s value as `reading` reads it, in the turn nearest `w_si` for an angle.
-fn near(o: &Target, reading: Reading, w_si: f64) -> f64 {
+fn near(o: &Target, reading: ColumnReading, w_si: f64) -> f64 {
     let x = reading.of(o.value);
     if o.quantity.turn && (w_si - x).is_finite() {
         x + 360.0 * ((w_si - x) / 360.0).round()

@@ -23,8 +23,9 @@
 //! Signs: the exact values are signed as the textbook's tables sign them (`targets`); a
 //! column of the student's table (a quantity by the method written) with no value written
 //! negative where some exact value is negative is a table of magnitudes, and is read so
-//! ([`Reading`]). A written 0 is right only where the exact value is 0 to the tolerance and
-//! three digits of the quantity's scale; no scale, unit or digit slip explains it.
+//! ([`ColumnReading`]). A written 0 is right only where the exact value is 0 to the
+//! tolerance and three digits of the quantity's scale; no scale, unit or digit slip explains
+//! it.
 //!
 //! A value that is not right is explained, when it can be, by the slips the course's
 //! tables show ([`Slip`]): a scale slip (×2, ×½, ×10; a μ of another plan), a unit slip (mm
@@ -200,19 +201,19 @@ pub enum Verdict {
 
 /// How a column of the student's table (a quantity by the method written) is read.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Reading {
+pub enum ColumnReading {
     /// Signed, as the textbook's tables sign the quantity.
     Signed,
     /// Magnitudes: no value of the column is written negative, and some exact value is.
     Magnitudes,
 }
 
-impl Reading {
+impl ColumnReading {
     /// `x` as this reading compares it.
     pub fn of(self, x: f64) -> f64 {
         match self {
-            Reading::Signed => x,
-            Reading::Magnitudes => x.abs(),
+            ColumnReading::Signed => x,
+            ColumnReading::Magnitudes => x.abs(),
         }
     }
 }
@@ -242,7 +243,7 @@ pub struct Checked {
     /// How its tolerance is held.
     pub held: Held,
     /// How its column is read.
-    pub reading: Reading,
+    pub reading: ColumnReading,
     /// The exact value in the unit the student wrote, as read (0 when it is zero to
     /// rounding; an angle of a turn in the turn nearest the value written).
     pub exact: f64,
@@ -480,12 +481,12 @@ impl Auditor {
                 c.1 |= t.value < 0.0 && !crate::check::is_zero(t.value, t.zero);
             }
         }
-        let readings: Vec<Reading> = entries
+        let readings: Vec<ColumnReading> = entries
             .iter()
             .map(
                 |e| match columns.get(&(e.quantity.as_str(), e.method.as_deref())) {
-                    Some((false, true)) => Reading::Magnitudes,
-                    _ => Reading::Signed,
+                    Some((false, true)) => ColumnReading::Magnitudes,
+                    _ => ColumnReading::Signed,
                 },
             )
             .collect();

@@ -1,6 +1,6 @@
 //! The audited table as Markdown, JSON and a sheet to return to the student.
 
-use super::{Audited, Edit, Explanation, Formula, Held, Known, Reading, Slip, Verdict};
+use super::{Audited, ColumnReading, Edit, Explanation, Formula, Held, Known, Slip, Verdict};
 use crate::plate::text::plain;
 use crate::plate::{Plate, SheetSize};
 use crate::scale::{format_sig, Lang};
@@ -225,7 +225,7 @@ fn magnitudes(audited: &[Audited]) -> Vec<Column<'_>> {
     for a in audited {
         let read = a.checked.as_ref().map(|c| c.reading);
         let column = (a.entry.quantity.as_str(), a.entry.method.as_deref());
-        if read == Some(Reading::Magnitudes) && !out.contains(&column) {
+        if read == Some(ColumnReading::Magnitudes) && !out.contains(&column) {
             out.push(column);
         }
     }
@@ -281,7 +281,7 @@ fn signs(audited: &[Audited], lang: Lang) -> String {
         && checked.clone().all(|a| {
             a.checked
                 .as_ref()
-                .is_some_and(|c| c.reading == Reading::Magnitudes)
+                .is_some_and(|c| c.reading == ColumnReading::Magnitudes)
         });
     let mut s = format!("{}: ", T::Signs.get(lang));
     if all {
@@ -391,8 +391,8 @@ pub fn to_json(audited: &[Audited]) -> String {
                 tolerance: c.map(|c| c.tolerance),
                 rel_error: c.and_then(|c| c.rel_error).filter(|r| r.is_finite()),
                 reading: c.map(|c| match c.reading {
-                    Reading::Signed => "signed",
-                    Reading::Magnitudes => "magnitudes",
+                    ColumnReading::Signed => "signed",
+                    ColumnReading::Magnitudes => "magnitudes",
                 }),
                 tolerance_of: c.and_then(|c| match &c.held {
                     Held::Borrowed { position } => position.as_deref(),
@@ -426,7 +426,7 @@ pub fn to_sheet(scene: &Scene, audited: &[Audited], lang: Lang) -> Result<Vec<Pl
                 name => crate::words::unit_in(name, lang),
             };
             let quantity = match &a.checked {
-                Some(c) if c.reading == Reading::Magnitudes => {
+                Some(c) if c.reading == ColumnReading::Magnitudes => {
                     format!("|{}|", c.quantity.notation(lang))
                 }
                 Some(c) => c.quantity.notation(lang),

@@ -15,7 +15,7 @@ pub(super) const POLYGON_MM: f64 = 120.0;
 
 /// A closing vector read off a polygon.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Closing {
+pub struct ClosingVector {
     /// Its length as drawn, as read and the physical magnitude.
     pub measured: Measured,
     /// Its direction as read (from its two projections, each read under the drafting
@@ -47,7 +47,7 @@ pub struct Balancing {
     /// Their analytic twin.
     pub analytic: Vec<Corrective>,
     /// The closing vector of the polygon of moments: U_II·(z_II − z_I) as read.
-    pub moment_closing: Option<Closing>,
+    pub moment_closing: Option<ClosingVector>,
     /// The main vector Σ mᵢρᵢ of the unbalanced rotor as read off the polygon of static
     /// moments (from the start of the first vector to the end of the last mass's), kg·m.
     pub unbalance_read: f64,
@@ -236,7 +236,7 @@ impl Polygon {
 
     /// Draw the closing vector from the end of the last vector to the pole and read it: its
     /// length with the ruler, its direction from its two projections.
-    fn close(&mut self, name: &str, vertices: &[DVec2]) -> Closing {
+    fn close(&mut self, name: &str, vertices: &[DVec2]) -> ClosingVector {
         let (from, to) = (self.at, DVec2::ZERO);
         let measured = self.rec.measure(from, to);
         let d = to - from;
@@ -256,7 +256,7 @@ impl Polygon {
             let note = format!("closing vector {name}");
             self.vector(&note, from, to, Role::Result, name, centre);
         }
-        Closing {
+        ClosingVector {
             measured,
             angle,
             vector: DVec2::from_angle(angle) * value,

@@ -26,7 +26,7 @@ mod rows;
 #[cfg(test)]
 mod tests;
 
-pub use construct::{balance, Balancing, Closing};
+pub use construct::{balance, Balancing, ClosingVector};
 pub use rows::{inertia_force, inertia_notes, w4_erratum, W4};
 
 use crate::geom::DVec2;

@@ -29,7 +29,7 @@ use std::f64::consts::TAU;
 
 /// A textbook route to the flywheel, as read off its diagram.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Route {
+pub struct RouteReading {
     /// The flywheel's moment of inertia, kg·m²: 0 when the route finds none needed.
     pub j_fw: f64,
     /// The moment of inertia as read off the diagram, kg·m² (≤ 0: the constant inertia
@@ -79,9 +79,9 @@ pub struct Diagrams {
     /// J_пр at the nodes 0 … N−1 (from the velocity plans), kg·m².
     pub j: Vec<f64>,
     /// Wittenbauer's flywheel.
-    pub wittenbauer: Route,
+    pub wittenbauer: RouteReading,
     /// Merkin's flywheel.
-    pub merkin: Route,
+    pub merkin: RouteReading,
 }
 
 /// A curve through points with its axes around them (the abscissa `extent` mm long).
@@ -220,7 +220,7 @@ fn wittenbauer(
     w_avg: f64,
     delta: f64,
     ctx: &Context,
-) -> (Figure, Route) {
+) -> (Figure, RouteReading) {
     let mut rec = Recorder::in_context("ΔT(J_пр)", mu_t, ctx);
     let pts: Vec<DVec2> = dt
         .iter()
@@ -308,7 +308,7 @@ fn wittenbauer(
     let kl = read_up(&mut rec, ends[1], ends[0]) * mu_t.value();
     rec.label(dim, "kl", (ends[0] + ends[1]) * 0.5, DVec2::new(-1.0, 0.0));
     let read = kl / (delta * w2);
-    let route = Route {
+    let route = RouteReading {
         j_fw: read.max(0.0),
         read,
         range: kl,
@@ -394,7 +394,7 @@ fn merkin(
     w_avg: f64,
     spec: &DynamicsSpec,
     ctx: &Context,
-) -> (Figure, Route) {
+) -> (Figure, RouteReading) {
     let mut rec = Recorder::in_context("T_I", mu_t, ctx);
     let n = t1.len().saturating_sub(1);
     let pts: Vec<DVec2> = t1
@@ -438,7 +438,7 @@ fn merkin(
     let range = read_up(&mut rec, a, b) * mu_t.value();
     let j_i = range / (spec.delta * w_avg * w_avg);
     let read = j_i - spec.constant_inertia();
-    let route = Route {
+    let route = RouteReading {
         j_fw: read.max(0.0),
         read,
         range,

@@ -182,7 +182,7 @@ fn routes_note(d: &Dynamics) -> DynamicsNote {
 fn route_note(
     d: &Dynamics,
     by: Route,
-    r: &super::draw::Route,
+    r: &super::draw::RouteReading,
     delta: f64,
 ) -> Flywheel<RouteFlywheel> {
     if r.j_fw <= 0.0 {

@@ -104,12 +104,12 @@ pub struct Residual {
     /// The analysis with friction in the pairs.
     pub friction: bool,
     /// The force polygons' reactions and balancing load.
-    pub polygons: residual::Verdict,
+    pub polygons: residual::Residuals,
     /// The linear solve's.
-    pub twin: residual::Verdict,
+    pub twin: residual::Residuals,
 }
 
-pub use residual::Verdict;
+pub use residual::Residuals;
 
 impl PositionForces {
     /// The rows `equilibrium_residual` and `power_residual` (`_f` with friction): the
@@ -122,9 +122,9 @@ impl PositionForces {
             for (symbol, of) in [
                 (
                     Symbol::EquilibriumResidual,
-                    (|v: &Verdict| v.equilibrium) as fn(&Verdict) -> f64,
+                    (|v: &Residuals| v.equilibrium) as fn(&Residuals) -> f64,
                 ),
-                (Symbol::PowerResidual, |v: &Verdict| v.power),
+                (Symbol::PowerResidual, |v: &Residuals| v.power),
             ] {
                 rows.push(Row {
                     scale: 1.0,
@@ -498,7 +498,7 @@ fn with_friction(
         origin: &pose.origin,
         motion: route.exact,
     };
-    let on = |name, absolute| pair_friction::Route {
+    let on = |name, absolute| pair_friction::FrictionRoute {
         prog,
         label: route.label,
         name,

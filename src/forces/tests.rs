@@ -374,7 +374,7 @@ fn verdict_of(
     c: &Case,
     drawn: bool,
     reported: residual::Reported<'_>,
-) -> residual::Verdict {
+) -> residual::Residuals {
     let built_dir: Vec<crate::geom::DVec2> = c
         .built
         .angle

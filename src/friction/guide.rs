@@ -16,8 +16,8 @@
 use super::draw::{angle_mark, arrow, thin_line, triangle, Third};
 use super::incline::MIN_CROSSING_DEG;
 use super::{
-    friction_angle, reading, subject, Drawing, DrawingKind, FollowerGuide, FrictionCase,
-    FrictionError, Reading, Solved,
+    friction_angle, reading, subject, CaseReading, Drawing, DrawingKind, FollowerGuide,
+    FrictionCase, FrictionError, Solved,
 };
 use crate::cam::force::{translating_forces, translating_locking};
 use crate::check::notes::FrictionNote;
@@ -346,7 +346,7 @@ pub(super) fn solve(
     let (plan, [p, r1, r2], crossing) = plan(case, c, kz, largest, ctx, wrap)?;
     let cond = Some(crossing);
     let name = &case.name;
-    let readings: Vec<Reading> = vec![
+    let readings: Vec<CaseReading> = vec![
         reading("P", (Symbol::Force, subject("P", name)), p, twin.p, cond),
         reading(
             "R_{1}",

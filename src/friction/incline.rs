@@ -5,8 +5,8 @@
 
 use super::draw::{angle_mark, arrow, cone, triangle, turned, Third, Triangle};
 use super::{
-    friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Incline,
-    Motion, Reading, Solved,
+    friction_angle, reading, subject, CaseReading, Drawing, DrawingKind, FrictionCase,
+    FrictionError, Incline, Motion, Solved,
 };
 use crate::check::notes::FrictionNote;
 use crate::check::Symbol;
@@ -248,7 +248,12 @@ pub(super) fn eta_read(motion: Motion, p: f64, p0: Option<f64>) -> f64 {
 }
 
 /// The readings of an incline-like case (shared with the screw, whose P is tangential).
-pub(super) fn readings(name: &str, twin: &InclineTwin, with: &Triangle, eta: f64) -> Vec<Reading> {
+pub(super) fn readings(
+    name: &str,
+    twin: &InclineTwin,
+    with: &Triangle,
+    eta: f64,
+) -> Vec<CaseReading> {
     let cond = Some(with.crossing_deg);
     vec![
         reading(

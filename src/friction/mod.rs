@@ -375,7 +375,7 @@ pub struct Drawing {
 
 /// A value read off a case's drawings with its textbook symbol.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Reading {
+pub struct CaseReading {
     /// The symbol in label markup (`P`, `R`, `η`, `φ′`, `ρ`, `M_{f}`).
     pub symbol: &'static str,
     /// The row.
@@ -390,7 +390,7 @@ pub struct Solved {
     /// Its drawings, in drawing order.
     pub drawings: Vec<Drawing>,
     /// Its readings against the twin.
-    pub readings: Vec<Reading>,
+    pub readings: Vec<CaseReading>,
     /// Notes (self-braking, the textbook's approximations, the seed's errata).
     pub notes: Vec<crate::check::notes::FrictionNote>,
 }
@@ -413,8 +413,8 @@ pub(crate) fn reading(
     graphical: f64,
     analytic: f64,
     conditioning: Option<f64>,
-) -> Reading {
-    Reading {
+) -> CaseReading {
+    CaseReading {
         symbol,
         row: Row::new(
             Key::of_scene(key.0, key.1),

@@ -15,8 +15,8 @@ use super::draw::{angle_mark, arrow, thin_line, turned};
 use super::guide::jams;
 use super::incline::MIN_CROSSING_DEG;
 use super::{
-    friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Reading,
-    RockerPivot, Solved,
+    friction_angle, reading, subject, CaseReading, Drawing, DrawingKind, FrictionCase,
+    FrictionError, RockerPivot, Solved,
 };
 use crate::cam::force::{rocker_force, rocker_locking, rocker_locking_lecture};
 use crate::check::notes::FrictionNote;
@@ -305,7 +305,7 @@ pub(super) fn solve(
     }
     let twin = pivot_twin(c).ok_or_else(|| jams(case, "rocker", (c.angle, read.lock), rule()))?;
     let name = &case.name;
-    let readings: Vec<Reading> = vec![
+    let readings: Vec<CaseReading> = vec![
         reading(
             "ρ",
             (Symbol::Length, subject("rho", name)),

@@ -19,8 +19,8 @@
 
 use super::draw::{angle_mark, arrow, cone, thin_line, triangle, turned, Third};
 use super::{
-    friction_angle, reading, subject, Drawing, DrawingKind, FrictionCase, FrictionError, Reading,
-    Slider, Solved,
+    friction_angle, reading, subject, CaseReading, Drawing, DrawingKind, FrictionCase,
+    FrictionError, Slider, Solved,
 };
 use crate::check::notes::friction::{FrictionNote, SliderMotion};
 use crate::check::Symbol;
@@ -304,7 +304,7 @@ pub(super) fn solve(
     let (scheme, phi_read) = scheme(case, c, state == SliderState::Rest, ctx)?;
     let cond = Some(t.crossing_deg);
     let name = &case.name;
-    let readings: Vec<Reading> = vec![
+    let readings: Vec<CaseReading> = vec![
         reading(
             "φ",
             (Symbol::Angle, subject("phi", name)),

@@ -44,8 +44,8 @@ pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
 pub use rows::PairSeed;
 pub use train::{
-    train_study, Closing, Mesh, PlanetarySpec, SeedStage, Stage, Train, TrainError, TrainMobility,
-    TrainSeed, TrainStudy, Wheel,
+    train_study, ClosedMesh, Mesh, PlanetarySpec, SeedStage, Stage, Train, TrainError,
+    TrainMobility, TrainSeed, TrainStudy, Wheel,
 };
 pub use triangles::{SlowLinks, POLE_DISTANCE};
 

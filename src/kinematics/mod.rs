@@ -24,7 +24,7 @@ pub use plans::{
 };
 pub use rocker::{rocker_diagram, rocker_link, RockerDiagram};
 pub use table::analytic_table;
-pub use verdict::{by_position, verdict_notes, verdicts, Turning, Verdict};
+pub use verdict::{by_position, verdict_notes, verdicts, LinkVerdict, Turning};
 
 use crate::calculus::{self, Diagram, Scales};
 use crate::check::notes::kinematics::{KinematicsNote, NearPivot};

@@ -18,7 +18,7 @@ pub enum Turning {
 
 /// One link's verdict at one position.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Verdict {
+pub struct LinkVerdict {
     /// The position's label.
     pub position: String,
     /// The link's number.
@@ -37,7 +37,7 @@ const NEGLIGIBLE: f64 = 1e-9;
 /// the plan rows (`omega_<link>`, `eps_<link>` by [`Method::Plan`]), in the rows' order.
 /// A link at rest or turning uniformly on the plans (the crank at constant ω₁, a slider)
 /// gets none.
-pub fn verdicts(rows: &[Row]) -> Vec<Verdict> {
+pub fn verdicts(rows: &[Row]) -> Vec<LinkVerdict> {
     let plan = |symbol: Symbol| {
         rows.iter()
             .filter(move |r| r.method == Method::Plan && r.key.symbol == symbol)
@@ -84,7 +84,7 @@ pub fn verdicts(rows: &[Row]) -> Vec<Verdict> {
             largest(Symbol::AngularVelocity, &e.key.at, analytic),
             largest(Symbol::AngularAcceleration, &e.key.at, analytic),
         );
-        out.push(Verdict {
+        out.push(LinkVerdict {
             position: position.clone(),
             link: e.key.subject.clone(),
             graphical: g,
@@ -96,20 +96,20 @@ pub fn verdicts(rows: &[Row]) -> Vec<Verdict> {
 
 /// The links by the plans at each position, in order: (position, accelerating links,
 /// decelerating links, the links whose twin's verdict differs).
-pub fn by_position(verdicts: &[Verdict]) -> Vec<(&str, [Vec<&str>; 3])> {
+pub fn by_position(verdicts: &[LinkVerdict]) -> Vec<(&str, [Vec<&str>; 3])> {
     let mut positions: Vec<&str> = verdicts.iter().map(|v| v.position.as_str()).collect();
     positions.dedup();
     positions
         .into_iter()
         .map(|p| {
-            let links = |keep: &dyn Fn(&Verdict) -> bool| -> Vec<&str> {
+            let links = |keep: &dyn Fn(&LinkVerdict) -> bool| -> Vec<&str> {
                 verdicts
                     .iter()
                     .filter(|v| v.position == p && keep(v))
                     .map(|v| v.link.as_str())
                     .collect()
             };
-            let turning = |t: Turning| move |v: &Verdict| v.graphical == t;
+            let turning = |t: Turning| move |v: &LinkVerdict| v.graphical == t;
             (
                 p,
                 [
@@ -124,7 +124,7 @@ pub fn by_position(verdicts: &[Verdict]) -> Vec<(&str, [Vec<&str>; 3])> {
 
 /// The report's notes: per position, the links accelerating and decelerating by the plans,
 /// and whether the twin agrees.
-pub fn verdict_notes(verdicts: &[Verdict]) -> Vec<KinematicsNote> {
+pub fn verdict_notes(verdicts: &[LinkVerdict]) -> Vec<KinematicsNote> {
     let owned = |l: Vec<&str>| l.into_iter().map(str::to_string).collect();
     by_position(verdicts)
         .into_iter()

@@ -34,7 +34,7 @@ pub use model::{
     RedundantPair, Sense,
 };
 pub use plans::{
-    image_label, kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanSetup, Reading,
+    image_label, kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanReading, PlanSetup,
 };
 pub use positions::{
     group_name, plan_poses, PlanPoses, PlanPosition, PlanRequest, PosePosition, Position,

@@ -509,7 +509,10 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
 
 /// The acceleration plans' verdict per position (seed 001 l. 686–689), as the plans give it:
 /// «Положение 1: ускоренно вращаются звенья 3, 4; замедленно — 2».
-pub(crate) fn verdict_lines(verdicts: &[crate::kinematics::Verdict], lang: Lang) -> Vec<String> {
+pub(crate) fn verdict_lines(
+    verdicts: &[crate::kinematics::LinkVerdict],
+    lang: Lang,
+) -> Vec<String> {
     let links = |l: &[&str]| {
         if l.is_empty() {
             Text::NoLinks.get(lang).to_string()

@@ -198,7 +198,7 @@ pub struct Settled<T> {
 }
 
 /// What a route's friction equations are about, for its diagnoses.
-pub struct Route<'a> {
+pub struct FrictionRoute<'a> {
     /// The mechanism.
     pub prog: &'a Program,
     /// The position's label.
@@ -213,7 +213,7 @@ pub struct Route<'a> {
     pub absolute: f64,
 }
 
-impl Route<'_> {
+impl FrictionRoute<'_> {
     /// The lock of `pair`'s group past the fraction `t` of the friction.
     fn lock(&self, pair: Option<Pair>, t: f64, detail: String) -> ForceError {
         ForceError::SelfLocking {
@@ -234,7 +234,7 @@ const MOST_REANCHORINGS: usize = 50;
 /// solution (in a fixed order), `friction(reactions, sizes)` the friction loads of reaction
 /// magnitudes `sizes` (see the module's documentation).
 pub fn settle<T>(
-    route: &Route<'_>,
+    route: &FrictionRoute<'_>,
     loads: &[Load],
     mut solve: impl FnMut(&[Load]) -> Result<T, ForceError>,
     reactions: impl Fn(&T) -> Vec<Reaction>,

@@ -65,7 +65,7 @@ pub struct State<'a> {
 /// ~1e-15 in f64, and 1 where the check cannot set up its own equations (a toggle, a scene
 /// whose guide is not to be told).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Verdict {
+pub struct Residuals {
     /// The worst of every body's ΣF − m·a_S (to the largest force) and ΣM − I_S·ε (to the
     /// largest moment), and of a reaction on a pair the picture lacks or along a guide.
     pub equilibrium: f64,
@@ -74,9 +74,9 @@ pub struct Verdict {
     pub power: f64,
 }
 
-impl Verdict {
+impl Residuals {
     /// The check could not be made.
-    const UNSET: Verdict = Verdict {
+    const UNSET: Residuals = Residuals {
         equilibrium: 1.0,
         power: 1.0,
     };
@@ -146,16 +146,16 @@ pub fn residual(
     state: &State<'_>,
     reported: &Reported<'_>,
     friction: Option<&PairFriction>,
-) -> Verdict {
+) -> Residuals {
     let Some(pic) = Picture::of(mech) else {
-        return Verdict::UNSET;
+        return Residuals::UNSET;
     };
     let at = |name: &str| {
         prog.index(name)
             .and_then(|k| state.motion.p.get(k).copied())
     };
     let Some(screws) = motion::solve(&pic, &at, state.w1) else {
-        return Verdict::UNSET;
+        return Residuals::UNSET;
     };
     let sc = Scene {
         pic,
@@ -174,7 +174,7 @@ pub fn residual(
     drive(spec, &sc, reported, &mut b);
     inertia(spec, &sc, &mut b);
     let o = sc.at(&sc.pic.crank.1).unwrap_or(DVec2::ZERO);
-    Verdict {
+    Residuals {
         equilibrium: b.equilibrium(&sc.pic.bodies, o, &state.motion.p),
         power: b.power(&sc.screws),
     }

@@ -9,7 +9,7 @@ use super::{Train, TrainError};
 /// A satellite's mesh with a central wheel taken at the module that brings the central wheel
 /// onto the carrier's axis ([`Train::closing`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Closing {
+pub struct ClosedMesh {
     /// The mesh (index into [`Train::meshes`]): its satellite's wheel first, then the
     /// central wheel.
     pub mesh: (usize, usize),
@@ -180,7 +180,7 @@ impl Train {
     /// # Errors
     /// As [`Train::layout`] for the train so taken: a stage that no module closes is still
     /// refused.
-    pub fn closing(&self) -> Result<(Train, Vec<Closing>), TrainError> {
+    pub fn closing(&self) -> Result<(Train, Vec<ClosedMesh>), TrainError> {
         let Some(h) = self.carrier else {
             self.layout()?;
             return Ok((self.clone(), Vec::new()));
@@ -221,7 +221,7 @@ impl Train {
                 for w in [s, c] {
                     closed.wheels[w].module = Some(module);
                 }
-                closings.push(Closing {
+                closings.push(ClosedMesh {
                     mesh: (s, c),
                     arm_mesh,
                     arm,

@@ -21,7 +21,7 @@ pub(super) mod study;
 #[cfg(test)]
 pub(super) mod tests;
 
-pub use layout::Closing;
+pub use layout::ClosedMesh;
 pub use notes::SeedStage;
 pub use study::{train_study, PlanetarySpec, TrainSeed, TrainStudy};
 

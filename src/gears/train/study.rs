@@ -3,7 +3,7 @@
 //! differential) and the velocity triangles (the construction), with their rows; the notes
 //! live in `notes`.
 
-use super::layout::Closing;
+use super::layout::ClosedMesh;
 use super::{Train, TrainError};
 use crate::gears::{rows, triangles};
 
@@ -54,7 +54,7 @@ pub struct TrainStudy {
     /// module when the spec asks for it.
     pub drawn: Train,
     /// The meshes taken at the module that closes them.
-    pub closings: Vec<Closing>,
+    pub closings: Vec<ClosedMesh>,
     /// ω of every shaft for ω_in = 1 (Willis).
     pub willis: Vec<f64>,
     /// u_in,out by Willis.

@@ -3,7 +3,7 @@
 //! vectors, the similarity theorem, the Coriolis component, readings.
 
 use super::names::{image_label, lower, plain};
-use super::{KinPlan, Measure, PlanKind, Reading};
+use super::{KinPlan, Measure, PlanKind, PlanReading};
 use crate::construct::{ConstructionError, Item, Recorder, Role};
 use crate::geom::{DVec2, Line, Segment};
 use crate::linkage::construction::Built;
@@ -36,7 +36,7 @@ pub(in crate::linkage) struct Builder<'a> {
     pub(in crate::linkage) mu_l: f64,
     pub(in crate::linkage) img: Vec<Option<DVec2>>,
     pub(in crate::linkage) links: Links,
-    pub(in crate::linkage) readings: Vec<Reading>,
+    pub(in crate::linkage) readings: Vec<PlanReading>,
     pub(in crate::linkage) coincident: Vec<(String, DVec2)>,
     pub(in crate::linkage) known: Known<'a>,
     /// Crossing angle (radians) of the intersection that fixed each point's image.
@@ -201,7 +201,7 @@ impl<'a> Builder<'a> {
         value: f64,
         conditioning: Option<f64>,
     ) {
-        self.readings.push(Reading {
+        self.readings.push(PlanReading {
             quantity,
             what,
             value,

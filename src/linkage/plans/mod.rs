@@ -37,7 +37,7 @@ pub enum PlanKind {
 
 /// A value read off a plan.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Reading {
+pub struct PlanReading {
     /// Quantity name (`v_D`, `v_B3_B1`, `omega_3`, `a_S5`, `eps_3`).
     pub quantity: String,
     /// What was read, structurally (for the analytic twin).
@@ -84,7 +84,7 @@ pub struct KinPlan {
     /// as read off the plan, signed counter-clockwise.
     pub rate: Vec<f64>,
     /// The readings.
-    pub readings: Vec<Reading>,
+    pub readings: Vec<PlanReading>,
 }
 
 /// The link a known point belongs to (the first that carried it; 0 for fixed points):

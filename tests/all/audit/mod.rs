@@ -10,7 +10,7 @@ mod values;
 
 use crate::support::{root, scratch, tmm};
 use std::path::Path;
-use tmm::audit::{read_table, Audited, Auditor, Edit, Formula, Held, Reading, Slip, Verdict};
+use tmm::audit::{read_table, Audited, Auditor, ColumnReading, Edit, Formula, Held, Slip, Verdict};
 use tmm::scene::{self, Scene};
 
 /// Every value of `table` (CSV text) audited against `scene`.
@@ -167,7 +167,11 @@ fn seed_000s_table_5_has_35_sign_errors_and_all_are_found() {
         assert_eq!(column.len(), 13, "{q}: a value at every position");
         for a in column {
             let c = a.checked.as_ref().expect("checked");
-            assert_eq!(c.reading, Reading::Signed, "{q}: the column carries signs");
+            assert_eq!(
+                c.reading,
+                ColumnReading::Signed,
+                "{q}: the column carries signs"
+            );
             if a.entry.written.is_zero() {
                 assert_eq!(a.verdict, Verdict::Right, "{q} at {:?}", a.entry.position);
                 continue;
@@ -257,9 +261,9 @@ fn seed_000s_columns_of_magnitudes_and_of_the_analytic_table_are_read_as_printed
         for a in column {
             let c = a.checked.as_ref().expect("checked");
             let reading = if q == "v_S3" {
-                Reading::Magnitudes
+                ColumnReading::Magnitudes
             } else {
-                Reading::Signed
+                ColumnReading::Signed
             };
             assert_eq!(c.reading, reading, "{q}");
         }
@@ -270,7 +274,7 @@ fn seed_000s_columns_of_magnitudes_and_of_the_analytic_table_are_read_as_printed
             .find(|a| a.entry.quantity == q && a.entry.method.as_deref() == Some("plan"))
             .and_then(|a| a.checked.as_ref())
             .expect("Table 2");
-        assert_eq!(plan.reading, Reading::Magnitudes, "{q} (plan)");
+        assert_eq!(plan.reading, ColumnReading::Magnitudes, "{q} (plan)");
     }
     // Table 8: V_S5 at i = 9 (position 10) is 1.2 % low — no slip of the pen makes 4.485 of
     // 4.538 (the digits differ: 4, 4, 8, 5 against 4, 5, 3, 8), so it is wrong.

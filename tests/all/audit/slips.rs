@@ -6,7 +6,7 @@
 use super::values::{values, Value};
 use crate::support::root;
 use std::path::Path;
-use tmm::audit::{read_table, Auditor, Edit, Formula, Reading, Slip, Verdict, Written};
+use tmm::audit::{read_table, Auditor, ColumnReading, Edit, Formula, Slip, Verdict, Written};
 use tmm::check::{Method, Symbol};
 use tmm::scene;
 
@@ -278,9 +278,9 @@ fn exact_tables_are_right(
                 .iter()
                 .any(|o| o.q == v.q && o.m == v.m && o.e < 0.0 && !o.zero);
             let reading = if magnitudes && negative {
-                Reading::Magnitudes
+                ColumnReading::Magnitudes
             } else {
-                Reading::Signed
+                ColumnReading::Signed
             };
             assert_eq!(c.reading, reading, "{name} {:?}", a.entry);
             tolerance.insert((v.q.clone(), v.p.clone(), v.m.clone()), c.tolerance);
