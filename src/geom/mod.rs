@@ -25,7 +25,7 @@ pub use linear::{
     determinant, eliminate, null_space, smallest_pivot, solve_linear, solve_linear_above,
     SINGULAR_REL,
 };
-pub use newton::{bracketed_newton, NewtonEnd};
+pub use newton::{bracketed_newton, level_newton, plane_newton, NewtonEnd, PlaneNewton};
 pub use primitives::{
     bezier_at, bezier_points, french_curve, french_piece, hermite, nearest, polygon_contains,
     rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,

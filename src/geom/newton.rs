@@ -1,6 +1,9 @@
-//! Newton's method kept inside a bracket: the root of a function rising through a bracket,
-//! each Newton step taken where it lands inside the bracket, the bracket's middle where it
-//! does not, so that a poor start or a flat slope never throws it out.
+//! Newton's method: kept inside a bracket, the root of a function rising through it (each
+//! step taken where it lands inside the bracket, the bracket's middle where it does not, so
+//! that a poor start or a flat slope never throws it out); and in the plane, where two
+//! levels cross or a point of one level, the slopes by central differences.
+
+use super::DVec2;
 
 /// Where [`bracketed_newton`] ended.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -72,6 +75,107 @@ pub fn bracketed_newton<T>(
     NewtonEnd::Spent(x)
 }
 
+/// Where [`plane_newton`] or [`level_newton`] ended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PlaneNewton {
+    /// Every equation within its tolerance at this point.
+    Settled(DVec2),
+    /// The last point reached after the steps allowed, not within the tolerance.
+    Unsettled(DVec2),
+    /// The equations' slopes give no step (their Jacobian singular there).
+    Flat,
+    /// An equation had no value at a point tried.
+    Undefined,
+}
+
+/// The slope of `f` at `p` by central differences `diff` apart, each way.
+fn slope(f: &impl Fn(DVec2) -> Option<f64>, p: DVec2, diff: f64) -> Option<DVec2> {
+    let (dx, dy) = (DVec2::new(diff, 0.0), DVec2::new(0.0, diff));
+    Some(DVec2::new(f(p + dx)? - f(p - dx)?, f(p + dy)? - f(p - dy)?) / (2.0 * diff))
+}
+
+/// The Jacobian of the two equations `f` at `p` by central differences `diff` apart: its
+/// columns, the derivatives along x and along y.
+fn columns(f: &impl Fn(DVec2) -> Option<DVec2>, p: DVec2, diff: f64) -> Option<(DVec2, DVec2)> {
+    let (ex, ey) = (DVec2::new(diff, 0.0), DVec2::new(0.0, diff));
+    Some((
+        (f(p + ex)? - f(p - ex)?) / (2.0 * diff),
+        (f(p + ey)? - f(p - ey)?) / (2.0 * diff),
+    ))
+}
+
+/// The point of the plane where both equations `f` (its x and y) are zero, by Newton's steps
+/// from `from`, the Jacobian by central differences `diff` apart: settled once both are
+/// within `to`; flat where the Jacobian's determinant is no more than `flat` times its
+/// columns' lengths' product (or not a number). At most `steps` steps.
+pub fn plane_newton(
+    f: impl Fn(DVec2) -> Option<DVec2>,
+    from: DVec2,
+    (diff, to): (f64, f64),
+    steps: usize,
+    flat: f64,
+) -> PlaneNewton {
+    let mut p = from;
+    for _ in 0..steps {
+        let Some(v) = f(p) else {
+            return PlaneNewton::Undefined;
+        };
+        if v.abs().max_element() <= to {
+            return PlaneNewton::Settled(p);
+        }
+        let Some((dx, dy)) = columns(&f, p, diff) else {
+            return PlaneNewton::Undefined;
+        };
+        // [dx dy] · step = −v.
+        let det = dx.x * dy.y - dy.x * dx.y;
+        let scale = dx.length() * dy.length();
+        if det.abs().partial_cmp(&(flat * scale)) != Some(std::cmp::Ordering::Greater) {
+            return PlaneNewton::Flat;
+        }
+        p += DVec2::new(
+            (-v.x * dy.y + v.y * dy.x) / det,
+            (-v.y * dx.x + v.x * dx.y) / det,
+        );
+    }
+    PlaneNewton::Unsettled(p)
+}
+
+/// A point of the plane where the equation `f` is zero, by Newton's steps from `from`, the
+/// slope by central differences `diff` apart: along `along` (a line through `from`), or down
+/// the slope itself (the nearest point of the level, to first order), settled once within
+/// `to`; flat where the slope along the line is zero. At most `steps` steps.
+pub fn level_newton(
+    f: impl Fn(DVec2) -> Option<f64>,
+    from: DVec2,
+    along: Option<DVec2>,
+    (diff, to): (f64, f64),
+    steps: usize,
+) -> PlaneNewton {
+    let mut p = from;
+    for _ in 0..steps {
+        let Some(v) = f(p) else {
+            return PlaneNewton::Undefined;
+        };
+        if v.abs() <= to {
+            return PlaneNewton::Settled(p);
+        }
+        let Some(g) = slope(&f, p, diff) else {
+            return PlaneNewton::Undefined;
+        };
+        p += match along {
+            Some(dir) => {
+                let rate = g.dot(dir);
+                if rate == 0.0 {
+                    return PlaneNewton::Flat;
+                }
+                -dir * (v / rate)
+            }
+            None => -g * (v / g.length_squared()),
+        };
+    }
+    PlaneNewton::Unsettled(p)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -121,5 +225,44 @@ mod tests {
             panic!("no middle");
         };
         assert!((m - 1.0).abs() <= 1e-15, "{m}");
+    }
+
+    /// The circle x² + y² = 4 and the line y = x cross at (√2, √2): reached from (1, 0,5);
+    /// two equal equations are flat; an equation without a value is undefined.
+    #[test]
+    fn newton_in_the_plane_finds_where_two_levels_cross() {
+        let f = |p: DVec2| Some(DVec2::new(p.length_squared() - 4.0, p.y - p.x));
+        let end = plane_newton(f, DVec2::new(1.0, 0.5), (1e-7, 1e-12), 30, 1e-9);
+        let PlaneNewton::Settled(p) = end else {
+            panic!("{end:?}");
+        };
+        assert!(p.distance(DVec2::splat(2f64.sqrt())) < 1e-12, "{p}");
+        let same = |p: DVec2| Some(DVec2::splat(p.x + p.y - 1.0));
+        let end = plane_newton(same, DVec2::ZERO, (1e-7, 1e-12), 30, 1e-9);
+        assert_eq!(end, PlaneNewton::Flat);
+        let none = |_: DVec2| None::<DVec2>;
+        let end = plane_newton(none, DVec2::ZERO, (1e-7, 1e-12), 30, 1e-9);
+        assert_eq!(end, PlaneNewton::Undefined);
+    }
+
+    /// The circle x² + y² = 4 reached along the line through (1, 1) at 45° — (√2, √2) —
+    /// and down its slope from (3, 0) — (2, 0); along a line the level runs parallel to, flat.
+    #[test]
+    fn newton_on_one_level_goes_along_a_line_or_down_the_slope() {
+        let f = |p: DVec2| Some(p.length_squared() - 4.0);
+        let d = Some(DVec2::ONE);
+        let end = level_newton(f, DVec2::ONE, d, (1e-7, 1e-12), 30);
+        let PlaneNewton::Settled(p) = end else {
+            panic!("{end:?}");
+        };
+        assert!(p.distance(DVec2::splat(2f64.sqrt())) < 1e-12, "{p}");
+        let end = level_newton(f, DVec2::new(3.0, 0.0), None, (1e-7, 1e-12), 30);
+        let PlaneNewton::Settled(p) = end else {
+            panic!("{end:?}");
+        };
+        assert!(p.distance(DVec2::new(2.0, 0.0)) < 1e-12, "{p}");
+        let line = |p: DVec2| Some(p.y - 1.0);
+        let end = level_newton(line, DVec2::ZERO, Some(DVec2::X), (1e-7, 1e-12), 30);
+        assert_eq!(end, PlaneNewton::Flat);
     }
 }

@@ -10,7 +10,7 @@ use super::{
     levels, twin_value, Blocking, BlockingError, Criterion, Hard, Indices, Kind, DIFF_STEP,
     NEWTON_TO, ON_LIMIT,
 };
-use crate::geom::{golden_max, illinois, DVec2};
+use crate::geom::{golden_max, illinois, level_newton, plane_newton, DVec2, PlaneNewton};
 
 /// How far inside every hard limit a choice lies, in the index's own unit: s_a ≥ (s_a,min +
 /// 0.05)m, ε_α ≥ ε_min + 0.05, x ≥ x_min + 0.05, N_iB_i ≥ ρ_l,i + 0.05m.
@@ -360,15 +360,6 @@ impl Choice {
             let (kind, limit) = self.on[k];
             twin_value(b, module, kind, limit, p)
         };
-        let e = DIFF_STEP;
-        let grad = |k: usize, p: DVec2| {
-            Some(
-                DVec2::new(
-                    f(k, p + DVec2::new(e, 0.0))? - f(k, p - DVec2::new(e, 0.0))?,
-                    f(k, p + DVec2::new(0.0, e))? - f(k, p - DVec2::new(0.0, e))?,
-                ) / (2.0 * e),
-            )
-        };
         let line = match self.criterion {
             Criterion::EqualSliding { .. } => Some(DVec2::new(1.0, -1.0)),
             _ => None,
@@ -380,32 +371,15 @@ impl Choice {
             (1, None) => vec![0],
             (_, None) => vec![0, 1],
         };
-        let mut p = x0;
-        for _ in 0..30 {
-            let v: Vec<f64> = solved.iter().map(|k| f(*k, p)).collect::<Option<_>>()?;
-            if v.iter().all(|v| v.abs() <= NEWTON_TO) {
-                break;
-            }
-            let g: Vec<DVec2> = solved.iter().map(|k| grad(*k, p)).collect::<Option<_>>()?;
-            p += match (line, g.as_slice()) {
-                (Some(dir), [g]) => {
-                    let slope = g.dot(dir);
-                    if slope == 0.0 {
-                        return None;
-                    }
-                    -dir * (v[0] / slope)
-                }
-                (None, [g]) => -*g * (v[0] / g.length_squared()),
-                (_, [ga, gb]) => {
-                    let det = ga.x * gb.y - ga.y * gb.x;
-                    if det == 0.0 {
-                        return None;
-                    }
-                    DVec2::new(-v[0] * gb.y + v[1] * ga.y, -v[1] * ga.x + v[0] * gb.x) / det
-                }
-                _ => return None,
-            };
-        }
+        let steps = (DIFF_STEP, NEWTON_TO);
+        let end = match solved[..] {
+            [k] => level_newton(|p| f(k, p), x0, line, steps, 30),
+            [a, b] => plane_newton(|p| Some(DVec2::new(f(a, p)?, f(b, p)?)), x0, steps, 30, 0.0),
+            _ => return None,
+        };
+        let (PlaneNewton::Settled(p) | PlaneNewton::Unsettled(p)) = end else {
+            return None;
+        };
         let settled = solved
             .iter()
             .all(|k| f(*k, p).is_some_and(|v| v.abs() <= 1e-10));

@@ -12,7 +12,7 @@ use super::{
     levels, twin_deviation, Blocking, Curve, Hard, Indices, Kind, DIFF_STEP, NEWTON_TO, ON_LIMIT,
     SPACING,
 };
-use crate::geom::DVec2;
+use crate::geom::{plane_newton, DVec2, PlaneNewton};
 
 /// The traced contour.
 #[derive(Debug, Clone, PartialEq)]
@@ -236,28 +236,10 @@ impl Blocking {
             let ix = self.indices(p)?;
             Some(DVec2::new(ix.of(a.0)? - a.1, ix.of(b.0)? - b.1))
         };
-        let e = DIFF_STEP;
-        let mut p = from;
-        for _ in 0..30 {
-            let v = f(p)?;
-            if v.abs().max_element() <= NEWTON_TO {
-                return Some(p);
-            }
-            let dx = (f(p + DVec2::new(e, 0.0))? - f(p - DVec2::new(e, 0.0))?) / (2.0 * e);
-            let dy = (f(p + DVec2::new(0.0, e))? - f(p - DVec2::new(0.0, e))?) / (2.0 * e);
-            // [dx dy] · step = −v.
-            let det = dx.x * dy.y - dy.x * dx.y;
-            let scale = dx.length() * dy.length();
-            if det.abs().partial_cmp(&(1e-9 * scale)) != Some(std::cmp::Ordering::Greater) {
-                return None;
-            }
-            let step = DVec2::new(
-                (-v.x * dy.y + v.y * dy.x) / det,
-                (-v.y * dx.x + v.x * dx.y) / det,
-            );
-            p += step;
+        match plane_newton(f, from, (DIFF_STEP, NEWTON_TO), 30, 1e-9) {
+            PlaneNewton::Settled(p) => Some(p),
+            _ => None,
         }
-        None
     }
 }
 
