@@ -54,6 +54,20 @@ pub fn solve_linear(a: Vec<Vec<f64>>) -> Option<Vec<f64>> {
     solve_linear_above(a, SINGULAR_REL)
 }
 
+/// Solve `a·x = b` (a small dense system, `b` beside `a`) by [`solve_linear_above`] with the
+/// pivot floor `rel`; `None` when it is singular.
+pub fn solve_system(a: Vec<Vec<f64>>, b: Vec<f64>, rel: f64) -> Option<Vec<f64>> {
+    let rows = a
+        .into_iter()
+        .zip(b)
+        .map(|(mut row, b)| {
+            row.push(b);
+            row
+        })
+        .collect();
+    solve_linear_above(rows, rel)
+}
+
 /// [`solve_linear`] with the pivot floor `rel` (a fraction of the largest coefficient) given:
 /// 0 takes any pivot that is not zero.
 pub fn solve_linear_above(mut a: Vec<Vec<f64>>, rel: f64) -> Option<Vec<f64>> {

@@ -23,9 +23,11 @@ pub use hatch::{hatch, HatchError, MAX_HATCH_LINES};
 pub use intersect::{circle_circle, line_circle, line_line, CircleCircle, LineCircle, LineLine};
 pub use linear::{
     determinant, eliminate, null_space, smallest_pivot, solve_linear, solve_linear_above,
-    SINGULAR_REL,
+    solve_system, SINGULAR_REL,
 };
-pub use newton::{bracketed_newton, level_newton, plane_newton, NewtonEnd, PlaneNewton};
+pub use newton::{
+    bracketed_newton, damped_newton, level_newton, plane_newton, NewtonEnd, PlaneNewton,
+};
 pub use primitives::{
     bezier_at, bezier_points, french_curve, french_piece, hermite, nearest, polygon_contains,
     rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,

@@ -10,7 +10,7 @@
 //! (the equations' Jacobian turns singular there): for f ≥ t*·f the given loads cannot be
 //! carried — the mechanism self-locks — and past t* the path has no continuation.
 
-use crate::geom::{determinant, solve_linear_above, DVec2};
+use crate::geom::{damped_newton, determinant, solve_system, DVec2};
 
 /// The reduced friction equations: `r0[k]` the reactions without friction, `y[k][j]` reaction
 /// k's change per newton of pair j's friction magnitude.
@@ -97,35 +97,10 @@ impl Reduced {
         m.iter().fold(s, |a, m| a.max(m.abs()))
     }
 
-    /// Newton's method at `t` from `start`, with a halving line search on the residual;
-    /// `None` when it does not converge (to 1e-14 of the problem's size).
+    /// Newton's method at `t` from `start`, with a halving line search on the residual
+    /// ([`damped_newton`]); `None` when it does not converge (to 1e-14 of the problem's size).
     fn newton(&self, t: f64, start: &[f64]) -> Option<(Vec<f64>, usize)> {
-        let norm = |g: &[f64]| g.iter().fold(0.0f64, |a, g| a.max(g.abs()));
-        let mut m = start.to_vec();
-        let (mut g, mut jac) = self.residual(&m, t);
-        for step in 0..60 {
-            let size = self.size(&m);
-            if norm(&g) <= 1e-14 * size {
-                return Some((m, step));
-            }
-            let rhs: Vec<f64> = g.iter().map(|g| -g).collect();
-            let d = solve(jac, rhs)?;
-            let g0 = norm(&g);
-            let mut lambda = 1.0;
-            loop {
-                let trial: Vec<f64> = m.iter().zip(&d).map(|(m, d)| m + lambda * d).collect();
-                let (gt, jt) = self.residual(&trial, t);
-                if norm(&gt) < (1.0 - 1e-4 * lambda) * g0 || norm(&gt) <= 1e-14 * size {
-                    (m, g, jac) = (trial, gt, jt);
-                    break;
-                }
-                lambda /= 2.0;
-                if lambda < 1.0 / 1024.0 {
-                    return None;
-                }
-            }
-        }
-        None
+        damped_newton(|m| self.residual(m, t), start, |m| 1e-14 * self.size(m), 60)
     }
 
     /// Follow the solution from t = 0 to t = 1 (see the module's documentation).
@@ -145,7 +120,7 @@ impl Reduced {
             let rhs: Vec<f64> = (0..n)
                 .map(|k| now[k].normalize_or_zero().dot(full[k] - self.r0[k]))
                 .collect();
-            let tangent = solve(jac, rhs).unwrap_or_else(|| vec![0.0; n]);
+            let tangent = solve_system(jac, rhs, 0.0).unwrap_or_else(|| vec![0.0; n]);
             let guess: Vec<f64> = m
                 .iter()
                 .zip(&tangent)
@@ -227,20 +202,6 @@ fn fold(t: f64, m: &[f64]) -> Outcome {
         t,
         direction: m.iter().map(|m| m.abs() / big).collect(),
     }
-}
-
-/// Solve `a·x = b` (a small dense system) by [`solve_linear_above`], any pivot that is not
-/// zero accepted; `None` when it is singular.
-fn solve(a: Vec<Vec<f64>>, b: Vec<f64>) -> Option<Vec<f64>> {
-    let rows = a
-        .into_iter()
-        .zip(b)
-        .map(|(mut row, b)| {
-            row.push(b);
-            row
-        })
-        .collect();
-    solve_linear_above(rows, 0.0)
 }
 
 #[cfg(test)]
