@@ -8,7 +8,7 @@ use super::inversion::{invert, Inversion};
 use super::motion::{motion, points, Motion, Point};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::Context;
-use crate::geom::{bezier_at, french_piece, DVec2};
+use crate::geom::{bezier_distance, french_piece, DVec2};
 
 /// The exact practical-profile point at φ (cam frame): the roller's tangency or the flat
 /// face's contact.
@@ -27,38 +27,6 @@ pub fn exact_profile(
         place.kin(m).roller_point(roller)
     };
     to_cam(q, phi)
-}
-
-/// Distance from `p` to the cubic Bézier piece from `start` (its control points and end
-/// `piece`): the nearest of 16 equal steps of its parameter, refined by Newton's method on
-/// (B(t) − p)·B′(t) = 0 within the piece.
-fn to_piece(p: DVec2, start: DVec2, piece: &[DVec2; 3]) -> f64 {
-    let at = |t: f64| bezier_at(start, piece, t);
-    let [c1, c2, end] = *piece;
-    // B′ and B″ of the piece at t.
-    let d1 = |t: f64| {
-        let s = 1.0 - t;
-        (c1 - start) * (3.0 * s * s) + (c2 - c1) * (6.0 * s * t) + (end - c2) * (3.0 * t * t)
-    };
-    let d2 =
-        |t: f64| (c2 - 2.0 * c1 + start) * (6.0 * (1.0 - t)) + (end - 2.0 * c2 + c1) * (6.0 * t);
-    let mut t = (0..=16)
-        .map(|k| k as f64 / 16.0)
-        .min_by(|a, b| {
-            at(*a)
-                .distance_squared(p)
-                .total_cmp(&at(*b).distance_squared(p))
-        })
-        .unwrap_or(0.0);
-    for _ in 0..8 {
-        let (q, v, w) = (at(t) - p, d1(t), d2(t));
-        let slope = v.length_squared() + q.dot(w);
-        if slope.abs() <= f64::MIN_POSITIVE {
-            break;
-        }
-        t = (t - q.dot(v) / slope).clamp(0.0, 1.0);
-    }
-    at(t).distance(p)
 }
 
 /// The largest and the mean normal distance between the drawn practical profile (the French
@@ -88,7 +56,7 @@ pub fn deviation(
             let phi = p.phi + (q.phi - p.phi) * j as f64 / 16.0;
             let after = j == 0 && p.after;
             let e = exact_profile(cam_spec, place, base, roller, phi, after);
-            let d = to_piece(e, inv.profile[i], &piece);
+            let d = bezier_distance(e, inv.profile[i], &piece);
             worst = worst.max(d);
             sum += d;
             count += 1;

@@ -29,8 +29,8 @@ pub use newton::{
     bracketed_newton, damped_newton, level_newton, plane_newton, NewtonEnd, PlaneNewton,
 };
 pub use primitives::{
-    bezier_at, bezier_points, french_curve, french_piece, hermite, nearest, polygon_contains,
-    rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,
+    bezier_at, bezier_distance, bezier_points, french_curve, french_piece, hermite, nearest,
+    polygon_contains, rotate, wrap_pi, Arc, Circle, Line, Ray, Segment, Side,
 };
 pub use rect::Rect;
 pub use root::{bisect, bracketed_root, illinois, Midpoint};

@@ -334,6 +334,38 @@ pub fn bezier_at(start: DVec2, p: &[DVec2; 3], t: f64) -> DVec2 {
     start * (s * s * s) + p[0] * (3.0 * s * s * t) + p[1] * (3.0 * s * t * t) + p[2] * (t * t * t)
 }
 
+/// Distance from `p` to the cubic Bézier piece from `start` (its control points and end
+/// `piece`): the nearest of 16 equal steps of its parameter, refined by Newton's method on
+/// (B(t) − p)·B′(t) = 0 within the piece.
+pub fn bezier_distance(p: DVec2, start: DVec2, piece: &[DVec2; 3]) -> f64 {
+    let at = |t: f64| bezier_at(start, piece, t);
+    let [c1, c2, end] = *piece;
+    // B′ and B″ of the piece at t.
+    let d1 = |t: f64| {
+        let s = 1.0 - t;
+        (c1 - start) * (3.0 * s * s) + (c2 - c1) * (6.0 * s * t) + (end - c2) * (3.0 * t * t)
+    };
+    let d2 =
+        |t: f64| (c2 - 2.0 * c1 + start) * (6.0 * (1.0 - t)) + (end - 2.0 * c2 + c1) * (6.0 * t);
+    let mut t = (0..=16)
+        .map(|k| k as f64 / 16.0)
+        .min_by(|a, b| {
+            at(*a)
+                .distance_squared(p)
+                .total_cmp(&at(*b).distance_squared(p))
+        })
+        .unwrap_or(0.0);
+    for _ in 0..8 {
+        let (q, v, w) = (at(t) - p, d1(t), d2(t));
+        let slope = v.length_squared() + q.dot(w);
+        if slope.abs() <= f64::MIN_POSITIVE {
+            break;
+        }
+        t = (t - q.dot(v) / slope).clamp(0.0, 1.0);
+    }
+    at(t).distance(p)
+}
+
 /// The curve of cubic Bézier `pieces` from `start` as points, `per` chords a piece (the
 /// start, then each piece's inner points and its end).
 pub fn bezier_points(start: DVec2, pieces: &[[DVec2; 3]], per: usize) -> Vec<DVec2> {
@@ -362,4 +394,30 @@ pub fn hermite(a: DVec2, ma: DVec2, b: DVec2, mb: DVec2, pieces: usize) -> Vec<D
                 + mb * (u3 - u2)
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A straight piece (0, 0) → (3, 0): 2 from a point 2 over its middle, 2 past its end, √2
+    /// before its start; the quarter circle's cubic (k = 0,5523) lies within 3e-4 of radius 1
+    /// from its centre, and 1 from (2, 0) at its start.
+    #[test]
+    fn the_distance_to_a_bezier_piece_is_to_its_nearest_point() {
+        let line = [
+            DVec2::new(1.0, 0.0),
+            DVec2::new(2.0, 0.0),
+            DVec2::new(3.0, 0.0),
+        ];
+        let d = |p: DVec2| bezier_distance(p, DVec2::ZERO, &line);
+        assert!((d(DVec2::new(1.5, 2.0)) - 2.0).abs() < 1e-12);
+        assert!((d(DVec2::new(5.0, 0.0)) - 2.0).abs() < 1e-12);
+        assert!((d(DVec2::new(-1.0, 1.0)) - 2f64.sqrt()).abs() < 1e-12);
+        let k = 0.5523;
+        let arc = [DVec2::new(1.0, k), DVec2::new(k, 1.0), DVec2::new(0.0, 1.0)];
+        let d = |p: DVec2| bezier_distance(p, DVec2::X, &arc);
+        assert!((d(DVec2::ZERO) - 1.0).abs() < 3e-4, "{}", d(DVec2::ZERO));
+        assert!((d(DVec2::new(2.0, 0.0)) - 1.0).abs() < 1e-12);
+    }
 }
