@@ -285,16 +285,25 @@ pub fn settle<T>(
     for _ in 0..MOST_REANCHORINGS {
         let m = match model.solve() {
             reduced::Outcome::Solved(m, _) => m,
-            reduced::Outcome::Fold { t, direction } => {
+            reduced::Outcome::Fold {
+                t,
+                direction,
+                bounded,
+            } => {
                 // The group that locks is the last (in the order of attachment) whose pairs
-                // carry the unbounded reactions: the groups before it only pass them on.
+                // carry the unbounded (or turning) reactions: the groups before it only pass
+                // them on.
                 let pair = rubbing
                     .iter()
                     .zip(&direction)
                     .filter(|(_, d)| **d >= 1e-3)
                     .map(|(&k, _)| r0[k].pair)
                     .max_by_key(|p| order_of(route.prog, p.to));
-                let detail = "the reactions grow without bound as f approaches it".to_string();
+                let detail = if bounded {
+                    "the solution turns back there, every reaction bounded".to_string()
+                } else {
+                    "the reactions grow without bound as f approaches it".to_string()
+                };
                 return Err(route.lock(pair, t, detail));
             }
             reduced::Outcome::Turn { t, pair } => {

@@ -6,9 +6,11 @@
 //! They are solved by Newton's method (the Jacobian δ_kj − e_k·y_kj, e_k the unit direction of
 //! R_k), continued in the friction's size: t·f for t from 0 (no friction, m = |r0|) to 1, each
 //! step's solution the next one's start. Convergence does not hang on a count of steps: the
-//! path either reaches t = 1, or its magnitudes grow without bound as t approaches a t* < 1
-//! (the equations' Jacobian turns singular there): for f ≥ t*·f the given loads cannot be
-//! carried — the mechanism self-locks — and past t* the path has no continuation.
+//! path either reaches t = 1, or ends at a t* < 1 where the equations' Jacobian turns singular
+//! — its magnitudes growing without bound, or the path meeting a second solution and turning
+//! back (where a reaction vanishes, or with every reaction bounded) —: for f ≥ t*·f the given
+//! loads cannot be carried — the mechanism self-locks — and past t* the path has no
+//! continuation.
 
 use crate::geom::{damped_newton, determinant, solve_system, DVec2};
 
@@ -27,13 +29,19 @@ pub struct Reduced {
 pub enum Outcome {
     /// The magnitudes at t = 1 and the Newton steps taken in all.
     Solved(Vec<f64>, usize),
-    /// The magnitudes grow without bound as t approaches `t` (< 1): a lock; `direction` is the
-    /// magnitudes there, normalised to a largest of 1 (the pairs that lock).
+    /// The path ends at `t` (< 1) where the equations' Jacobian turns singular: the
+    /// magnitudes grow without bound as t approaches it, or (`bounded`) the path meets a
+    /// second solution there and turns back with every reaction bounded and none vanishing
+    /// (one pair, r0·y < 0: m = |r0 + t·y·m|'s two roots meet at t = |r0|/|r0 × y|). A lock
+    /// either way; `direction` is the magnitudes there (unbounded) or their change along the
+    /// turn (bounded), normalised to a largest of 1: the pairs that lock.
     Fold {
-        /// The friction's fraction t* at which the reactions become unbounded.
+        /// The friction's fraction t* at which the path ends.
         t: f64,
-        /// The normalised magnitudes at the last point of the path.
+        /// The normalised magnitudes, or their change, at the last point of the path.
         direction: Vec<f64>,
+        /// Whether the reactions stay bounded there (the path turns back).
+        bounded: bool,
     },
     /// The path turns back at `t` (< 1) where the reaction of pair `pair` falls to zero: the
     /// solution meets a second one there (the Jacobian's determinant has opposite signs on the
@@ -55,6 +63,11 @@ pub enum Outcome {
 
 /// Magnitudes beyond this multiple of the frictionless reactions are unbounded.
 const UNBOUNDED: f64 = 1e9;
+/// Where the path stops with bounded magnitudes, its Jacobian I − t·e·y is singular (the path
+/// turns back) when its determinant is below this share of the product of its rows' lengths,
+/// each at least the identity's 1: it falls as √(t* − t), about 1e-6 at the smallest step from
+/// the turn.
+const SINGULAR_TURN: f64 = 1e-3;
 /// A continuation step below this is no step.
 const SMALLEST_STEP: f64 = 1e-12;
 /// The continuation's bound on its steps (a safety net; the path ends well before it).
@@ -137,16 +150,19 @@ impl Reduced {
                     }
                     dt = (dt * 2.0).min(1.0);
                 }
-                Some((m1, _)) => return fold(t1, &m1),
+                Some((m1, _)) => return fold(t1, &m1, false),
                 None => {
                     dt /= 4.0;
                     if dt < SMALLEST_STEP {
                         // Bounded magnitudes that cannot be followed: a fold only if they
                         // have grown far beyond the frictionless ones.
                         if self.size(&m) > 1e3 * s {
-                            return fold(t, &m);
+                            return fold(t, &m, false);
                         }
-                        return self.turn(t, &m).unwrap_or(Outcome::Stalled { t });
+                        return self
+                            .turn(t, &m)
+                            .or_else(|| self.meet(t, &m))
+                            .unwrap_or(Outcome::Stalled { t });
                     }
                 }
             }
@@ -193,14 +209,33 @@ impl Reduced {
         };
         (det_with(e) * det_with(-e) < 0.0).then_some(Outcome::Turn { t, pair: k })
     }
+
+    /// Where the path stops at `t`, `m` with bounded magnitudes and no reaction vanishing: a
+    /// turn where it meets a second solution if the Jacobian is singular there
+    /// ([`SINGULAR_TURN`]), the magnitudes' change along the turn read by one step of inverse
+    /// iteration (J·x = 1 is dominated by J's near-null vector).
+    fn meet(&self, t: f64, m: &[f64]) -> Option<Outcome> {
+        let (_, jac) = self.residual(m, t);
+        let rows: f64 = jac
+            .iter()
+            .map(|row| row.iter().map(|x| x * x).sum::<f64>().sqrt().max(1.0))
+            .product();
+        if determinant(jac.clone()).abs() > SINGULAR_TURN * rows {
+            return None;
+        }
+        let n = self.len();
+        let change = solve_system(jac, vec![1.0; n], 0.0).unwrap_or_else(|| vec![1.0; n]);
+        Some(fold(t, &change, true))
+    }
 }
 
-/// A fold at `t` with the magnitudes `m` there.
-fn fold(t: f64, m: &[f64]) -> Outcome {
+/// A fold at `t` with the magnitudes `m` there (`bounded`: their change along the turn).
+fn fold(t: f64, m: &[f64], bounded: bool) -> Outcome {
     let big = m.iter().fold(0.0f64, |a, m| a.max(m.abs()));
     Outcome::Fold {
         t,
         direction: m.iter().map(|m| m.abs() / big).collect(),
+        bounded,
     }
 }
 
@@ -231,12 +266,35 @@ mod tests {
                 y: vec![vec![DVec2::new(y, 0.0)]],
             };
             match r.solve() {
-                Outcome::Fold { t, direction } => {
+                Outcome::Fold { t, direction, .. } => {
                     assert!((t - 1.0 / y).abs() <= 1e-6 / y, "y = {y}: t* = {t}");
                     assert_eq!(direction, vec![1.0]);
                 }
                 o => panic!("y = {y}: {o:?}"),
             }
+        }
+    }
+
+    /// One pair with its friction against its reaction and across it, r0 = (100, 0),
+    /// y = (−1, 2): m = |r0 + t·y·m| has (5t² − 1)m² − 200t·m + 10⁴ = 0, whose two positive
+    /// roots meet at t* = 1/2 (m = 200, R = (0, 200): bounded, not vanishing) and do not exist
+    /// past it — a lock where the path turns back, not a stall.
+    #[test]
+    fn a_path_that_turns_back_with_bounded_reactions_is_a_lock() {
+        let r = Reduced {
+            r0: vec![DVec2::new(100.0, 0.0)],
+            y: vec![vec![DVec2::new(-1.0, 2.0)]],
+        };
+        match r.solve() {
+            Outcome::Fold {
+                t,
+                direction,
+                bounded: true,
+            } => {
+                assert!((t - 0.5).abs() <= 1e-6, "t* = {t}");
+                assert_eq!(direction, vec![1.0]);
+            }
+            o => panic!("{o:?}"),
         }
     }
 
