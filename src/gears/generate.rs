@@ -13,7 +13,7 @@
 use super::detail::DetailMark;
 use super::numbers;
 use super::rack::{Cutting, Piece};
-use super::trace::{outline_runs, polyline_crossing, refine, touching};
+use super::trace::{drawn_outline, polyline_crossing, refine, touching};
 use super::{GearError, MIN_TIP};
 use crate::construct::{Context, Figure, Item, Measured, Recorder, Role};
 use crate::geom::{french_curve, rotate, DVec2, Segment};
@@ -436,13 +436,19 @@ fn tip_reading(rec: &mut Recorder, c: &Cutting, flank: &[Touch], mu: f64) -> (Me
 fn trace(rec: &mut Recorder, c: &Cutting, states: &[f64], drawn: &[usize], mu: f64) -> Vec<Touch> {
     let r = c.r();
     let mm = |p: DVec2| p / mu;
-    let places = numbers::places(c, states, drawn, mu);
+    // Every position's outline in sheet mm, first: the drawn ones' outer ends place their
+    // numbers together ([`numbers::places`]).
+    let outlines: Vec<Vec<Vec<DVec2>>> = states.iter().map(|&q| drawn_outline(c, q, mu)).collect();
+    let ends: Vec<Option<DVec2>> = drawn
+        .iter()
+        .map(|&i| outlines[i].last()?.last().copied())
+        .collect();
+    let places = numbers::places(&ends);
     let mut touches = Vec::new();
-    for (i, &q) in states.iter().enumerate() {
+    for ((i, &q), runs) in states.iter().enumerate().zip(outlines) {
         rec.set_group(i as u32 + 1);
         let turn = q / r;
-        for run in outline_runs(c, q) {
-            let pts: Vec<DVec2> = run.into_iter().map(|p| mm(rotate(p, turn))).collect();
+        for pts in runs {
             rec.draw(
                 format!("rack position {}", i + 1),
                 Item::Polyline {

@@ -3,10 +3,8 @@
 //! (a small wheel at a coarse μ_l), carried out on thin lines to a circle beyond them and
 //! spread there in the positions' order, as a draftsman fans out leaders.
 
-use super::rack::Cutting;
-use super::trace::outline_runs;
 use crate::construct::{Item, Recorder, Role};
-use crate::geom::{rotate, DVec2, Segment};
+use crate::geom::{DVec2, Segment};
 
 /// Two drawn positions' outer ends nearer than this cannot both carry their numbers there
 /// in order (a number, its gap and the next number at the labels' height); the numbers are
@@ -15,25 +13,12 @@ const NUMBER_PITCH_MM: f64 = 4.0;
 /// How far beyond the farthest end the circle of spread numbers runs, mm.
 const NUMBER_OUT_MM: f64 = 6.0;
 
-/// Where each drawn position's number stands (sheet mm, in `drawn`'s order): at its
-/// outline's outer end; or, where two ends stand nearer than [`NUMBER_PITCH_MM`], every
-/// number on the circle [`NUMBER_OUT_MM`] beyond the farthest end, [`NUMBER_PITCH_MM`]
-/// apart about the ends' mean direction, in the order of the ends along the blank.
-/// Each with its end (`None`: no outline drawn).
-pub(super) fn places(
-    c: &Cutting,
-    states: &[f64],
-    drawn: &[usize],
-    mu: f64,
-) -> Vec<Option<(DVec2, DVec2)>> {
-    let ends: Vec<Option<DVec2>> = drawn
-        .iter()
-        .map(|&i| {
-            let q = states[i];
-            let end = outline_runs(c, q).last()?.last().copied()?;
-            Some(rotate(end, q / c.r()) / mu)
-        })
-        .collect();
+/// Where each drawn position's number stands, from its outline's outer end (sheet mm, in
+/// `drawn`'s order; `None`: no outline drawn): at the end; or, where two ends stand nearer
+/// than [`NUMBER_PITCH_MM`], every number on the circle [`NUMBER_OUT_MM`] beyond the
+/// farthest end, [`NUMBER_PITCH_MM`] apart about the ends' mean direction, in the order of
+/// the ends along the blank. Each with its end.
+pub(super) fn places(ends: &[Option<DVec2>]) -> Vec<Option<(DVec2, DVec2)>> {
     let known: Vec<DVec2> = ends.iter().flatten().copied().collect();
     let crowded = known
         .windows(2)

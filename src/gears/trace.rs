@@ -12,7 +12,7 @@ const ARC_POINTS: usize = 24;
 
 /// The rack's outline at the state `q` in the fixed frame (before turning into the wheel's
 /// frame), in runs inside the blank (slightly enlarged, so the outline is seen to enter it).
-pub(super) fn outline_runs(c: &Cutting, q: f64) -> Vec<Vec<DVec2>> {
+fn outline_runs(c: &Cutting, q: f64) -> Vec<Vec<DVec2>> {
     let m = c.module;
     let sh = c.shape();
     let ta = c.rack.alpha.tan();
@@ -95,6 +95,16 @@ pub(super) fn touching(c: &Cutting, q: f64) -> Vec<(Piece, DVec2)> {
         out.push((Piece::Root, DVec2::new(0.0, base + sh.vt)));
     }
     out
+}
+
+/// The rack's outline at the state `q` ([`outline_runs`]) turned into the wheel's frame and
+/// drawn at `mu` (m per mm): its runs, sheet mm.
+pub(super) fn drawn_outline(c: &Cutting, q: f64, mu: f64) -> Vec<Vec<DVec2>> {
+    let turn = q / c.r();
+    outline_runs(c, q)
+        .into_iter()
+        .map(|run| run.into_iter().map(|p| rotate(p, turn) / mu).collect())
+        .collect()
 }
 
 /// The first crossing of polyline `a` (walked from its start) with polyline `b`: the point
