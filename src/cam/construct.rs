@@ -9,7 +9,7 @@ use super::follower::{to_cam, Kin, Placement};
 use super::inversion::{drawn_rho_min, invert, Inversion};
 use super::motion::{points, Motion, Point};
 use super::radius::{min_radius, RadiusConstruction};
-use super::{CamError, CamSpec, Follower, Rotation, Shock};
+use super::{CamError, CamSpec, Closure, Follower, Rotation, Shock};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{french_curve, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
@@ -37,10 +37,26 @@ pub struct Cam {
     /// The pressure (transmission) angle over the cycle: read off the profile drawing at the
     /// points (marked) and the curve drawn through them, at μ_φ and 1°/mm.
     pub angle_graph: Option<Figure>,
+    /// The r₀ first accepted from the reading when the angle read off its profile broke the
+    /// limit, and r₀ was taken up a millimetre at a time until it held (or
+    /// [`MAX_RAISE_MM`] were added).
+    pub raised: Option<Raised>,
     /// The cam's sense. Clockwise: `spec` is then its counter-clockwise mirror image (the
     /// offset on the other side), every number is the mirror image's, and the mechanism's
     /// drawings (the centre's construction, the profile) are mirrored back.
     pub rotation: Rotation,
+}
+
+/// The profile's check that took r₀ up: the r₀ first accepted, the point where the angle
+/// read off its profile broke the limit most, and that angle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Raised {
+    /// The base radius first accepted, m.
+    pub base: f64,
+    /// The drawn point.
+    pub at: usize,
+    /// The angle read there (pressure angle; a rocker's transmission angle), rad.
+    pub angle: f64,
 }
 
 impl Cam {
@@ -89,20 +105,33 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
     }
     let points = points(spec);
     let diagrams = diagrams(spec, &points, ctx)?;
-    let (radius, base, placement) = min_radius(spec, &points, &diagrams, ctx)?;
     let read: Vec<Motion> = (0..points.len())
         .map(|i| read_motion(&diagrams, i))
         .collect();
-    let roller = match spec.follower {
-        Follower::Flat { .. } => 0.0,
-        _ => spec
-            .roller
-            .unwrap_or_else(|| chosen_roller(&points, &read, &placement, base)),
+    let mut raised = None;
+    let mut raise = 0;
+    let (radius, base, placement, roller, inversion) = loop {
+        let (radius, base, placement) =
+            min_radius(spec, &points, &diagrams, ctx, f64::from(raise) * 1e-3)?;
+        let roller = match spec.follower {
+            Follower::Flat { .. } => 0.0,
+            _ => spec
+                .roller
+                .unwrap_or_else(|| chosen_roller(&points, &read, &placement, base)),
+        };
+        if roller >= base {
+            return Err(CamError::RollerTooLarge { roller, base });
+        }
+        let inversion = invert(spec, &points, &read, &placement, (base, roller), ctx)?;
+        let over = over_limit(spec, &points, &inversion);
+        match over {
+            Some((at, angle)) if spec.base_radius.is_none() && raise < MAX_RAISE_MM => {
+                raised.get_or_insert(Raised { base, at, angle });
+                raise += 1;
+            }
+            _ => break (radius, base, placement, roller, inversion),
+        }
     };
-    if roller >= base {
-        return Err(CamError::RollerTooLarge { roller, base });
-    }
-    let inversion = invert(spec, &points, &read, &placement, (base, roller), ctx)?;
     let angle_graph = match spec.follower {
         Follower::Flat { .. } => None,
         _ => Some(angle_graph(
@@ -124,9 +153,45 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
         roller,
         inversion,
         angle_graph,
+        raised,
         rotation: Rotation::Ccw,
     })
 }
+
+/// The most whole millimetres the profile's check adds to the accepted r₀ before it leaves
+/// the angle over its limit to the check's verdict.
+const MAX_RAISE_MM: u8 = 10;
+
+/// The point whose angle, read off the profile drawing, is furthest past the limit, with
+/// that angle (the pressure angle, or a rocker's transmission angle): `None` when every
+/// point that binds keeps it (under force closure the rise's; else all).
+fn over_limit(spec: &CamSpec, points: &[Point], inv: &Inversion) -> Option<(usize, f64)> {
+    if matches!(spec.follower, Follower::Flat { .. }) {
+        return None;
+    }
+    let most = FRAC_PI_2 - spec.gamma_min;
+    let binds = |i: usize| spec.closure == Closure::Geometric || points[i].phase == 0;
+    let (at, worst) = inv
+        .angles
+        .iter()
+        .enumerate()
+        .filter(|&(i, _)| binds(i))
+        .fold(None, |w: Option<(usize, f64)>, (i, &a)| match w {
+            Some((_, b)) if b >= a => w,
+            _ => Some((i, a)),
+        })?;
+    (worst > most + ANGLE_SLACK).then(|| {
+        let angle = if spec.shows_transmission_angle() {
+            FRAC_PI_2 - worst
+        } else {
+            worst
+        };
+        (at, angle)
+    })
+}
+
+/// An angle read within this of its limit keeps it, rad.
+const ANGLE_SLACK: f64 = 1e-9;
 
 /// The roller a student chooses when the scene gives none: r = min(0.4·r₀, 0.8·ρ_min), with
 /// r₀ the base radius used and ρ_min found on the drawing — the smallest circle through three

@@ -20,6 +20,7 @@
 
 mod accept;
 mod centre;
+mod combined;
 mod construct;
 mod deviation;
 mod diagrams;
@@ -43,7 +44,7 @@ mod travel;
 mod zone;
 
 pub use construct::ANGLE_LIMIT_NOTE;
-pub use construct::{build, Cam};
+pub use construct::{build, Cam, Raised};
 pub use deviation::{deviation, deviation_at, inversion_at};
 pub use diagrams::{Analogue, Diagrams, PHASE_NOTES, TICK_NOTE};
 pub use inversion::Inversion;

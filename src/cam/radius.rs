@@ -5,15 +5,14 @@
 //! radius; the exact r_min over the whole cycle is the twin's ([`super::exact`], compared in [`super::Cam::rows`]).
 
 use super::accept::accepted;
+use super::combined::{combined, s_axis, smooth_loop};
 use super::diagrams::{read_motion, Diagrams};
 use super::follower::{admits, rocker_of, Placement, REACH_ARMS};
-use super::law::Shock;
-use super::motion::{on_break, Motion, Point};
+use super::motion::Point;
 use super::zone;
 use super::{CamError, CamSpec, Closure, Follower};
-use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
+use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{fan_start, Arc, DVec2, Segment};
-use crate::scale::Scale;
 use std::f64::consts::FRAC_PI_2;
 
 /// The minimum-radius construction.
@@ -37,9 +36,15 @@ pub(super) fn min_radius(
     points: &[Point],
     d: &Diagrams,
     ctx: &Context,
+    raise: f64,
 ) -> Result<(RadiusConstruction, f64, Placement), CamError> {
     let mut rec = Recorder::in_context("combined", d.s_scale, ctx);
-    let given = Given { spec, points, d };
+    let given = Given {
+        spec,
+        points,
+        d,
+        raise,
+    };
     let read = match spec.follower {
         Follower::Translating { offset } => translating(&mut rec, &given, offset)?,
         Follower::Rocker { arm, .. } => rocker(&mut rec, &given, arm)?,
@@ -62,10 +67,14 @@ pub(super) fn min_radius(
 /// What every follower's construction starts from: the cam, its drawn points and their
 /// diagrams.
 #[derive(Clone, Copy)]
-pub(super) struct Given<'a> {
+struct Given<'a> {
     pub(super) spec: &'a CamSpec,
     pub(super) points: &'a [Point],
     pub(super) d: &'a Diagrams,
+    /// What the profile's own check adds to the r₀ accepted from the reading, m: whole
+    /// millimetres, 0 until the angle read off a profile exceeds its limit
+    /// ([`super::construct`]).
+    pub(super) raise: f64,
 }
 
 /// What one follower's construction reads: r_min, the flat face's convexity, the base
@@ -80,7 +89,9 @@ struct Read {
 /// The translating follower: the combined diagram S(dS/dφ), the γ_min lines and the zone
 /// of admissible centres on the vertical x = −e.
 fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Read, CamError> {
-    let Given { spec, points, d } = *given;
+    let Given {
+        spec, points, d, ..
+    } = *given;
     let mu = d.s_scale;
     let gamma = spec.gamma_min;
     // Combined diagram: B₀ at the origin, the path vertical, K_i = B_i − (S′_i, 0).
@@ -110,7 +121,13 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
             &[],
         );
     }
-    smooth_loop(rec, given, &ks, "combined diagram S(dS/dφ)", &[path]);
+    smooth_loop(
+        rec,
+        (spec, points),
+        &ks,
+        "combined diagram S(dS/dφ)",
+        &[path],
+    );
     let apex = translating_zone(rec, &ks, &binds, o, gamma);
     if offset != 0.0 {
         zone::offset_line(rec, o);
@@ -123,7 +140,7 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     };
     zone::centre_and_r_min(rec, o, DVec2::ZERO, toward, r_min_offset(o, apex));
     let r = rec.measure(o, DVec2::ZERO);
-    let base = base_radius(rec, spec, r.value);
+    let base = base_radius(rec, given, r.value);
     if base <= offset.abs() {
         return Err(CamError::BaseWithinOffset {
             base,
@@ -147,7 +164,9 @@ const FAN_CLEAR_MM: f64 = 8.0;
 /// The rocker: dS/dφ laid along the rocker at every point, the γ_min lines through the
 /// points K and the centre below them all.
 fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamError> {
-    let Given { spec, points, d } = *given;
+    let Given {
+        spec, points, d, ..
+    } = *given;
     let mu = d.s_scale;
     let gamma = spec.gamma_min;
     let (_, sigma) = rocker_of(spec);
@@ -207,7 +226,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
             cons.push((k, e));
         }
     }
-    smooth_loop(rec, given, &ks, "curve of the points K", &[]);
+    smooth_loop(rec, (spec, points), &ks, "curve of the points K", &[]);
     let o = rocker_centre(&cons, a0, gamma).ok_or(CamError::NoCentre {
         gamma_deg: gamma.to_degrees(),
         searched: REACH_ARMS * arm,
@@ -224,7 +243,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
     // The profile uses the centre found on the drawing: its direction from A₀ and its
     // distance read (or the given base radius along that direction).
     let dir = (o - a0).normalize_or_zero();
-    let base = base_radius(rec, spec, r.value);
+    let base = base_radius(rec, given, r.value);
     let o_used = DVec2::new(0.0, arm) + dir * base;
     let pivot_cam = -o_used;
     Ok(Read {
@@ -244,7 +263,9 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
 /// O₁ ρ_min below where it meets the axis, r_min = |OO₁| (the offset does not change a flat
 /// face's profile: the centre is drawn on the S axis).
 fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
-    let Given { spec, points, d } = *given;
+    let Given {
+        spec, points, d, ..
+    } = *given;
     let mu = d.s_scale;
     // S vertical, S″ horizontal, both at μ_S; the 45° tangent on the negative side.
     let pts = combined(d, points.len(), |m| {
@@ -331,7 +352,7 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     zone::centre_and_r_min(rec, o, DVec2::ZERO, DVec2::new(-1.0, -0.5), -FLAT_R_MIN_MM);
     let read_c = rec.measure(oi, DVec2::ZERO).value.copysign(-c);
     let graphical = rec.measure(o, DVec2::ZERO).value;
-    let base = base_radius(rec, spec, graphical);
+    let base = base_radius(rec, given, graphical);
     Ok(Read {
         graphical,
         convexity: Some(read_c),
@@ -365,10 +386,12 @@ fn r_min_offset(o: DVec2, apex: Option<DVec2>) -> f64 {
 }
 
 /// The base radius the profile is built on: the scene's, else the one accepted from the r_min
-/// `read` off this drawing ([`accepted`]).
-fn base_radius(rec: &Recorder, spec: &CamSpec, read: f64) -> f64 {
-    spec.base_radius
-        .unwrap_or_else(|| accepted(read, rec.scale(), rec.drafting()))
+/// `read` off this drawing ([`accepted`]) and raised as the profile's check asks.
+fn base_radius(rec: &Recorder, given: &Given<'_>, read: f64) -> f64 {
+    given
+        .spec
+        .base_radius
+        .unwrap_or_else(|| accepted(read, rec.scale(), rec.drafting()) + given.raise)
 }
 
 /// The flat face's ρ_min dimension stands this far right of the S axis, mm: its text (with
@@ -390,89 +413,6 @@ pub const RHO_ADMITTED: &str = "[ρ]";
 
 /// The note of the flat face's 45° tangent's step (the tests find it by it).
 pub const TANGENT_NOTE: &str = "tangent at 45° from the diagram to the S axis";
-
-/// The combined diagram's closed curve through the points K (one per drawn point, in their
-/// order), drawn as a French curve follows them — smooth, where a polyline would show a
-/// corner at every point — with a corner kept where the law makes one: at a point on a
-/// break of d²S/dφ² ([`on_break`]; the slope dS/dS′ = S′/S″ changes sign there), and at a
-/// phase's ends where dS/dφ jumps (a rigid shock), the jump drawn straight at its S.
-pub(super) fn smooth_loop(
-    rec: &mut Recorder,
-    given: &Given<'_>,
-    ks: &[DVec2],
-    note: &str,
-    deps: &[StepId],
-) {
-    let (spec, points) = (given.spec, given.points);
-    // One point where two coincide on the paper (a phase's end and the next phase's start
-    // at dS/dφ = 0): the curve passes it once, smoothly.
-    let same = rec.tolerances().flatten_mm;
-    let mut kept: Vec<(DVec2, bool)> = Vec::with_capacity(ks.len());
-    for (k, p) in ks.iter().zip(points) {
-        let law = if p.phase == 0 { spec.rise } else { spec.ret };
-        let corner = on_break(spec, p) || (law.shock() == Shock::Rigid && (p.k == 0 || p.last));
-        match kept.last_mut() {
-            Some((q, c)) if q.distance(*k) <= same => *c |= corner,
-            _ => kept.push((*k, corner)),
-        }
-    }
-    if kept.len() > 1 && kept[0].0.distance(kept[kept.len() - 1].0) <= same {
-        if let Some((_, c)) = kept.pop() {
-            kept[0].1 |= c;
-        }
-    }
-    let ks: Vec<DVec2> = kept.iter().map(|(k, _)| *k).collect();
-    let corners: Vec<usize> = (0..kept.len()).filter(|&i| kept[i].1).collect();
-    if corners.is_empty() {
-        rec.draw(
-            note,
-            Item::Curve {
-                points: ks,
-                closed: true,
-            },
-            Role::Result,
-            deps,
-        );
-        return;
-    }
-    // From each corner on round the loop to the next.
-    for (j, &a) in corners.iter().enumerate() {
-        let b = corners[(j + 1) % corners.len()];
-        let len = (b + ks.len() - a - 1) % ks.len() + 1;
-        let run: Vec<DVec2> = (0..=len).map(|k| ks[(a + k) % ks.len()]).collect();
-        rec.draw(
-            note,
-            Item::Curve {
-                points: run,
-                closed: false,
-            },
-            Role::Result,
-            deps,
-        );
-    }
-}
-
-/// The S axis of a combined diagram: from below the centre found on it (`depth` mm under
-/// B₀: the drawn r_min) to above the stroke, labelled.
-pub(super) fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, depth: f64) -> StepId {
-    let top = DVec2::new(0.0, mu.to_mm(spec.stroke) + 12.0);
-    let ax = rec.draw(
-        "S axis",
-        Item::Vector {
-            from: DVec2::new(0.0, -depth - 10.0),
-            to: top,
-        },
-        Role::Axis,
-        &[],
-    );
-    rec.label(ax, "S", top, DVec2::new(1.0, 0.0));
-    ax
-}
-
-/// The points of a combined diagram: `at` of the motion read at each of the `n` points.
-pub(super) fn combined(d: &Diagrams, n: usize, at: impl Fn(Motion) -> DVec2) -> Vec<DVec2> {
-    (0..n).map(|i| at(read_motion(d, i))).collect()
-}
 
 /// The zone of the translating follower's centre: below every point's two γ_min lines,
 /// g(x) = min over the points of (K_y − |K_x − x|·tan γ_min) = min(R(x), L(x)), a wedge whose

@@ -12,9 +12,9 @@
 //! B. The dimension BC, read, times 2π is X_min. The twin's is the closed form
 //! ([`super::sliding::exact_travel_min`]), compared in the rows.
 
+use super::combined::{combined, s_axis, smooth_loop};
 use super::diagrams::Diagrams;
 use super::motion::Point;
-use super::radius::{combined, s_axis, smooth_loop, Given};
 use super::{CamSpec, Closure};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{Arc, DVec2, Segment};
@@ -72,8 +72,13 @@ pub(super) fn travel_min(
             &[],
         );
     }
-    let given = Given { spec, points, d };
-    smooth_loop(&mut rec, &given, &ks, "combined diagram S(dS/dφ)", &[axis]);
+    smooth_loop(
+        &mut rec,
+        (spec, points),
+        &ks,
+        "combined diagram S(dS/dφ)",
+        &[axis],
+    );
     let kid = rec.point(
         "the point of the largest dS/dφ",
         steep,

@@ -262,10 +262,8 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     }
     // The base radius accepted from the r_min read, as the sheet says it.
     if s.base_radius.is_none() {
-        w.doc.say(&format!(
-            "{}.",
-            crate::sheets::cam_marks::base_line(&cam, lang)
-        ));
+        let lines = crate::sheets::cam_marks::base_lines(&cam, lang);
+        w.doc.say(&format!("{}.", lines.join(". ")));
     }
     if cam.roller > 0.0 && s.roller.is_none() {
         let (base, rho) = (cam.base, cam.inversion.rho_min);

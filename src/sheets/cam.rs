@@ -308,7 +308,7 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     let found = cam.findings();
     let stated =
         |p: fn(&Finding) -> bool| found.iter().find(|f| p(f)).and_then(|f| verdict(f, lang));
-    out.push(cam_marks::base_line(cam, lang));
+    out.extend(cam_marks::base_lines(cam, lang));
     if !matches!(s.follower, Follower::Flat { .. }) {
         // The rule's two bounds, ρ_min the drawn pitch curve's; they choose the roller unless
         // the task gives it.

@@ -80,13 +80,36 @@ pub(super) fn phases_marked(figure: &Figure, spec: &CamSpec, lang: Lang) -> Figu
 }
 
 /// The base radius the profile is built on, as the data say it: accepted from the r_min
-/// read (`Принимаем r_{0} = 70 мм ≥ r_{min} = 69 мм`), or the scene's (`r_{0} = 20 мм`).
-pub(crate) fn base_line(cam: &Cam, lang: Lang) -> String {
+/// read (`Принимаем r_{0} = 70 мм ≥ r_{min} = 69 мм`), after the reason when the profile's
+/// check took it up (`При r_{0} = 33 мм по профилю в точке 0 λ = 30,18° > λ_{max} = 30°`),
+/// or the scene's (`r_{0} = 20 мм`): one sentence a line.
+pub(crate) fn base_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     if cam.spec.base_radius.is_some() {
-        return format!("r_{{0}} = {}", digits::mm(cam.base, lang));
+        return vec![format!("r_{{0}} = {}", digits::mm(cam.base, lang))];
     }
-    CamText::Accepted
+    let accepted = CamText::Accepted
         .get(lang)
         .replace("{r0}", &digits::mm(cam.base, lang))
-        .replace("{rmin}", &digits::mm(cam.radius.graphical, lang))
+        .replace("{rmin}", &digits::mm(cam.radius.graphical, lang));
+    let Some(raised) = cam.raised else {
+        return vec![accepted];
+    };
+    let spec = &cam.spec;
+    let broken = format!(
+        "{} = {} {} {}",
+        spec.angle_symbol(),
+        digits::degrees(raised.angle, lang),
+        if spec.shows_transmission_angle() {
+            "<"
+        } else {
+            ">"
+        },
+        angle_limit(spec, lang)
+    );
+    let reason = CamText::Raised
+        .get(lang)
+        .replace("{r0}", &digits::mm(raised.base, lang))
+        .replace("{point}", &raised.at.to_string())
+        .replace("{angle}", &broken);
+    vec![reason, accepted]
 }

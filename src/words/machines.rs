@@ -232,6 +232,11 @@ catalogue! {
             "Приймаємо r_{0} = {r0} ≥ r_{min} = {rmin}",
             "Accept r_{0} = {r0} ≥ r_{min} = {rmin}"
         ),
+        Raised => (
+            "При r_{0} = {r0} по профилю в точке {point} {angle}",
+            "При r_{0} = {r0} за профілем у точці {point} {angle}",
+            "At r_{0} = {r0} the profile reads {angle} at point {point}"
+        ),
         TravelCombined => (
             "Определение X_{min}: совмещённая диаграмма S(dS/dφ), луч γ_{min}",
             "Визначення X_{min}: суміщена діаграма S(dS/dφ), промінь γ_{min}",

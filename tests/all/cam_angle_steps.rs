@@ -238,3 +238,52 @@ fn a_step_at_a_smooth_dwell_breaks_the_rule() {
     vs[end].read += 1.6;
     assert!(steps_within_the_law(&vs).is_err());
 }
+
+/// A profile whose r₀ the project accepts from its own r_min (no base radius in the scene)
+/// keeps the angle read off it within the limit at every point that binds (under force
+/// closure the rise's), read exactly and at 0,5 mm: when the reading at the r₀ first accepted
+/// breaks it, r₀ goes up a millimetre at a time, and the cam keeps that first r₀, the point
+/// and the angle read there. cam-shock at 0,5 mm: the rise starts with a velocity jump, where
+/// the one-sided reading and the S read to 0,5 mm put λ at 30,18° on the profile at 33 mm,
+/// over λ_max = 30° (29,22° exact); at 34 mm it reads under.
+#[test]
+fn an_accepted_base_radius_keeps_the_angle_read_off_its_profile() {
+    for name in GRAPHED {
+        for drafting in [0.0, 0.5] {
+            let cam = cam(name, drafting);
+            let spec = &cam.spec;
+            if spec.base_radius.is_some() {
+                continue;
+            }
+            let rocker = matches!(spec.follower, Follower::Rocker { .. });
+            let binds =
+                |i: usize| spec.closure == tmm::cam::Closure::Geometric || cam.points[i].phase == 0;
+            for i in (0..cam.points.len()).filter(|&i| binds(i)) {
+                let (read, limit) = (read_deg(&cam, i), spec.angle_limit().to_degrees());
+                let kept = if rocker {
+                    read >= limit - 1e-7
+                } else {
+                    read <= limit + 1e-7
+                };
+                assert!(
+                    kept,
+                    "{name} at {drafting} mm: point {i} reads {read:.3}° against {limit}°"
+                );
+            }
+            match (name, drafting) {
+                ("cam-shock", d) if d > 0.0 => {
+                    let r = cam.raised.expect("cam-shock's r₀ taken up");
+                    assert!((r.base - 0.033).abs() < 1e-12, "{r:?}");
+                    assert_eq!(r.at, 0);
+                    assert!((r.angle.to_degrees() - 30.18).abs() < 0.005, "{r:?}");
+                    assert!((cam.base - 0.034).abs() < 1e-12, "{}", cam.base);
+                }
+                _ => assert!(
+                    cam.raised.is_none(),
+                    "{name} at {drafting} mm: {:?}",
+                    cam.raised
+                ),
+            }
+        }
+    }
+}
