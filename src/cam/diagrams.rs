@@ -334,7 +334,7 @@ pub(super) fn diagrams(
     points: &[Point],
     ctx: &Context,
 ) -> Result<Diagrams, CamError> {
-    let (phi, sc, poles) = scales(spec)?;
+    let (phi, sc, poles) = scales(spec, points)?;
     if spec.given == Given::S {
         return differentiated(spec, points, phi, sc, poles, ctx);
     }

@@ -424,3 +424,29 @@ fn a_differentiated_s_gives_d2s_from_the_abscissa_where_the_law_has_it_there() {
         }
     }
 }
+
+/// Every division point has its number on each diagram's φ axis, on every cam scene (issue
+/// 45: cam-cusp and cam-undercut, 12 divisions of a 60° phase, 3,33 mm apart at the cycle's
+/// 240 mm, numbered 13, 15, 17 … and left 14, 16 … out: two two-digit numbers need 3,7 mm
+/// a row). The cycle is drawn 300 mm long there (1,2°/mm).
+#[test]
+fn every_point_is_numbered_on_every_phi_axis() {
+    for name in SCENES {
+        let cam = cam(name);
+        let d = &cam.diagrams;
+        for (what, view) in [("d²S", &d.d2s_view), ("dS", &d.ds_view), ("S", &d.s_view)] {
+            for p in &cam.points {
+                let note = format!("number of point {} on the φ axis", p.label);
+                assert!(
+                    view.steps.iter().any(|s| s.note == note),
+                    "{name} {what}: point {} has no number",
+                    p.label
+                );
+            }
+        }
+        let cycle = std::f64::consts::TAU / d.phi.value();
+        let dense = matches!(name, "cam-cusp" | "cam-undercut");
+        let expected = if dense { 300.0 } else { 240.0 };
+        assert!((cycle - expected).abs() < 1e-9, "{name}: the cycle {cycle} mm");
+    }
+}

@@ -194,6 +194,18 @@ fn dimension_phases(
     }
 }
 
+/// How far apart the numbers `a` and `b` must stand side by side in one row, mm.
+fn pitch(a: &str, b: &str) -> f64 {
+    let digits = (a.chars().count() + b.chars().count()) as f64;
+    0.5 * DIGIT_MM * digits + NUMBER_GAP_MM
+}
+
+/// Whether neighbouring points `step_mm` apart on the φ axis each get their numbers `a`
+/// and `b`, alternating between the two rows.
+pub(super) fn numbers_fit(step_mm: f64, a: &str, b: &str) -> bool {
+    step_mm >= 0.5 * pitch(a, b)
+}
+
 /// The points whose numbers are written, each with its row (0 at the axis, 1 further): the
 /// phase's first and last in the second row (clear of the boundary's tick), the others in the
 /// first where their numbers stand clear side by side ([`DIGIT_MM`], [`NUMBER_GAP_MM`]),
@@ -203,11 +215,7 @@ fn dimension_phases(
 /// return's first unless it stands that near the rise's last).
 fn numbered(points: &[Point], phi: Scale) -> Vec<(usize, usize)> {
     let x = |i: usize| phi.to_mm(points[i].phi);
-    // How far apart two numbers side by side must stand, mm.
-    let pitch = |i: usize, j: usize| {
-        let digits = (points[i].label.chars().count() + points[j].label.chars().count()) as f64;
-        0.5 * DIGIT_MM * digits + NUMBER_GAP_MM
-    };
+    let pitch = |i: usize, j: usize| pitch(&points[i].label, &points[j].label);
     let least = |i: usize, j: usize| 0.5 * pitch(i, j);
     let mut out: Vec<(usize, usize)> = Vec::with_capacity(points.len());
     for phase in [0usize, 2] {

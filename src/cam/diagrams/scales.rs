@@ -2,7 +2,8 @@
 //! chooses, the analogues' scales that follow from them, and μ_S found from the stroke when
 //! the law's d²S/dφ² is integrated (seed 002 (4.2)).
 
-use crate::cam::motion::motion_u;
+use super::phi_axis::numbers_fit;
+use crate::cam::motion::{motion_u, Point};
 use crate::cam::{CamError, CamSpec};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
@@ -10,6 +11,11 @@ use std::f64::consts::TAU;
 /// Drawn length of the cycle on the diagrams' abscissa, mm (μ_φ = 2π / 240 mm = 1,5°/mm):
 /// the diagrams' column takes about 300 mm of an A1 sheet's width.
 const CYCLE_MM: f64 = 240.0;
+
+/// The cycle's drawn length where [`CYCLE_MM`] would crowd the φ axis's numbers, mm
+/// (μ_φ = 2π / 300 mm = 1,2°/mm): 12 divisions of a 60° phase stand 4,2 mm apart, room for
+/// two two-digit numbers a row (3,7 mm), and the sheet's other views beside the diagrams.
+const LONG_CYCLE_MM: f64 = 300.0;
 
 /// Drawn stroke on the diagrams (at most, μ_S round), mm: the S diagram and the combined
 /// diagram about a sixth of an A1 sheet's height.
@@ -29,10 +35,13 @@ fn analogue(v: f64, quantity: Quantity, what: &'static str) -> Result<Scale, Cam
 /// stroke to take about [`STROKE_MM`]), H₁, H₂ (given or chosen), μ_S′ = μ_S/(H₂·μ_φ),
 /// μ_S″ = μ_S′/(H₁·μ_φ). When d²S/dφ² is given and μ_S is not, these draw the law's shape,
 /// and [`fitted`] gives the scales it is read at.
-pub(super) fn scales(spec: &CamSpec) -> Result<(Scale, [Scale; 3], [f64; 2]), CamError> {
+pub(super) fn scales(
+    spec: &CamSpec,
+    points: &[Point],
+) -> Result<(Scale, [Scale; 3], [f64; 2]), CamError> {
     let phi = match spec.scale_phi {
         Some(s) => s,
-        None => Scale::new(TAU / CYCLE_MM, Quantity::Angle).ok_or(CamError::NoScale {
+        None => Scale::new(TAU / cycle_mm(points), Quantity::Angle).ok_or(CamError::NoScale {
             what: "μ_φ",
             size: TAU,
         })?,
@@ -54,6 +63,21 @@ pub(super) fn scales(spec: &CamSpec) -> Result<(Scale, [Scale; 3], [f64; 2]), Ca
     let d2s = ds_scale.value() / (h1 * phi.value());
     let d2s_scale = analogue(d2s, Quantity::AccelerationAnalogue, "μ_S″")?;
     Ok((phi, [s_scale, ds_scale, d2s_scale], [h1, h2]))
+}
+
+/// The cycle's drawn length, mm: [`CYCLE_MM`], or [`LONG_CYCLE_MM`] where two neighbouring
+/// points of a phase would stand too near there for their numbers on the φ axis, each
+/// in its row ([`super::phi_axis::numbers_fit`]).
+fn cycle_mm(points: &[Point]) -> f64 {
+    let crowded = points.windows(2).any(|w| {
+        let step = (w[1].phi - w[0].phi) / TAU * CYCLE_MM;
+        w[0].phase == w[1].phase && !numbers_fit(step, &w[0].label, &w[1].label)
+    });
+    if crowded {
+        LONG_CYCLE_MM
+    } else {
+        CYCLE_MM
+    }
 }
 
 /// The largest |dS/dφ| and |d²S/dφ²| of the given law over the cycle (the tallest ordinates
