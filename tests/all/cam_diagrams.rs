@@ -447,6 +447,9 @@ fn every_point_is_numbered_on_every_phi_axis() {
         let cycle = std::f64::consts::TAU / d.phi.value();
         let dense = matches!(name, "cam-cusp" | "cam-undercut");
         let expected = if dense { 300.0 } else { 240.0 };
-        assert!((cycle - expected).abs() < 1e-9, "{name}: the cycle {cycle} mm");
+        assert!(
+            (cycle - expected).abs() < 1e-9,
+            "{name}: the cycle {cycle} mm"
+        );
     }
 }

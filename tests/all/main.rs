@@ -63,6 +63,7 @@ mod note_worked_kinematics;
 mod note_worked_machines;
 mod output;
 mod plan_lines;
+mod plate_blocks;
 mod plate_demo;
 mod plate_equivalence;
 mod plate_fill;
