@@ -1,9 +1,10 @@
 //! No word label reads on into another text (issue 45): a name of a curve written right over
 //! another without a shelf between (en PZ1's detail A: «involute» over «limit point», read
 //! "involute limit point"), or another label right after or before it on its row (PZ3's
-//! «интерференция 1» 2 mm before the axis's «0», read «интерференция 10»). Computed from
-//! each sheet's layout, on every sheet of every scene in every configuration of the label
-//! rules.
+//! «интерференция 1» 2 mm before the axis's «0», read «интерференция 10»); nor a chain of a
+//! point's names into a symbol beside it (the shaper's «d₅′ ≡ e′ ≡ s₅′» 1,35 mm before «b₃′»,
+//! read as one more name of the point). Computed from each sheet's layout, on every sheet of
+//! every scene in every configuration of the label rules.
 
 use crate::plate_label_objects::on_every_layout;
 use crate::plate_model::every_sheet_in;
@@ -31,6 +32,12 @@ fn words(text: &str) -> bool {
     only && long
 }
 
+/// Whether a label is a chain of a point's names joined by «≡» (`d_{5}′ ≡ e′ ≡ s_{5}′`),
+/// which a symbol beside it on its row reads on from as one more name.
+fn chain(text: &str) -> bool {
+    text.contains('≡')
+}
+
 /// Whether `lower` stands right under `upper`, written without a shelf: its top within
 /// [`LINE_GAP_MM`] of `upper`'s bottom, across from it over half the narrower of the two.
 fn reads_on(upper: &PlacedLabel, lower: &PlacedLabel) -> bool {
@@ -52,12 +59,13 @@ fn beside(word: &PlacedLabel, other: &PlacedLabel) -> bool {
 }
 
 /// `view N “upper” over “lower”` for each pair of word labels of `l` read as one phrase, and
-/// `view N “word” beside “other”` for each label on a word's row read on from it.
+/// `view N “word” beside “other”` for each label on the row of a word or a chain of names
+/// read on from it.
 fn phrases(l: &Layout) -> Vec<String> {
     let mut out = Vec::new();
-    for a in l.labels.iter().filter(|x| words(&x.text)) {
+    for a in l.labels.iter().filter(|x| words(&x.text) || chain(&x.text)) {
         for b in l.labels.iter().filter(|b| !std::ptr::eq(*b, a)) {
-            if words(&b.text) && b.view == a.view && reads_on(a, b) {
+            if words(&a.text) && words(&b.text) && b.view == a.view && reads_on(a, b) {
                 out.push(format!(
                     "view {} “{}” over “{}”: read as one phrase",
                     a.view, a.text, b.text
@@ -122,6 +130,30 @@ fn the_phrase_rule_fails_on_a_plate_built_to_break_it() {
     let found = phrases(&l).join("\n");
     assert!(
         found.contains("“involute” beside “fillet”: read on from it"),
+        "{found}"
+    );
+}
+
+/// A chain of a point's names read on into a symbol: the shaper's «b₃′» moved back to 1,35 mm
+/// after «d₅′ ≡ e′ ≡ s₅′» on its row, as the placer wrote it before the rule.
+#[test]
+fn the_chain_rule_fails_on_a_plate_built_to_break_it() {
+    let plate = crate::plate_model::sheet("shaper/kinematics");
+    let mut l = layout(&plate);
+    assert!(phrases(&l).is_empty(), "{:?}", phrases(&l));
+    let chain = (l.labels.iter())
+        .position(|x| x.view == 16 && x.text.contains('≡'))
+        .expect("the chain of view 16");
+    let b3 = (l.labels.iter())
+        .position(|x| x.view == 16 && x.text == "b_{3}′")
+        .expect("b₃′ of view 16");
+    let at = l.labels[chain].rect;
+    let size = l.labels[b3].rect.max - l.labels[b3].rect.min;
+    l.labels[b3].rect.min = glam::DVec2::new(at.max.x + 1.35, at.min.y);
+    l.labels[b3].rect.max = l.labels[b3].rect.min + size;
+    let found = phrases(&l).join("\n");
+    assert!(
+        found.contains("beside “b_{3}′”: read on from it"),
         "{found}"
     );
 }

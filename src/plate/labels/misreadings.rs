@@ -67,8 +67,9 @@ impl Placer<'_> {
     }
 
     /// Every word label written right under or over another word label without a shelf
-    /// between (read as one phrase: «involute» over «limit point»), or with a text right
-    /// beside it on its row («интерференция 1» before the axis's «0»), takes the best place,
+    /// between (read as one phrase: «involute» over «limit point»), and every word label or
+    /// chain of a point's names with a text right beside it on its row («интерференция 1»
+    /// before the axis's «0», «d₅′ ≡ e′ ≡ s₅′» before «b₃′»), takes the best place,
     /// free or on a leader, paying for each text it would read on from or into, in the
     /// placing order.
     pub(super) fn part_phrases(
@@ -78,22 +79,24 @@ impl Placer<'_> {
         order: &[usize],
         points: &[(usize, DVec2)],
     ) {
-        let words: Vec<usize> = order
+        let words = |i: usize| phrase::is_words(&jobs[i].text);
+        let readers: Vec<usize> = order
             .iter()
             .copied()
-            .filter(|&i| phrase::is_words(&jobs[i].text))
+            .filter(|&i| words(i) || phrase::is_chain(&jobs[i].text))
             .collect();
-        for &i in &words {
+        for &i in &readers {
             let Some(now) = slots[i] else { continue };
-            let others: Vec<(Rect, bool)> = words
+            let others: Vec<(Rect, bool)> = readers
                 .iter()
-                .filter(|&&j| j != i)
+                .filter(|&&j| j != i && words(j))
                 .filter_map(|&j| slots[j].map(|s| (s.rect, s.leader.is_some())))
                 .collect();
             let shelf = now.leader.is_some();
-            let stacked = others
-                .iter()
-                .any(|(t, on)| phrase::read_as_one(&now.rect, shelf, t, *on));
+            let stacked = words(i)
+                && others
+                    .iter()
+                    .any(|(t, on)| phrase::read_as_one(&now.rect, shelf, t, *on));
             let near = self.others_near(now.rect.inflate(phrase::SIDE_GAP_MM), slots, i);
             if !stacked && !near.texts.iter().any(|t| phrase::beside(&now.rect, t)) {
                 continue;

@@ -34,6 +34,13 @@ pub(super) fn is_words(text: &str) -> bool {
     only && longest >= 3
 }
 
+/// Whether a label's text is a chain of names of one point joined by «≡» (`d_{5}′ ≡ e′ ≡
+/// s_{5}′`): a symbol right after or before it on its row reads as one more name of the
+/// point (the shaper's «d₅′ ≡ e′ ≡ s₅′ b₃′», b₃′ the point 10 mm away).
+pub(super) fn is_chain(text: &str) -> bool {
+    text.contains('≡')
+}
+
 /// Whether the text box `lower` stands right under `upper` (its top within
 /// [`LINE_GAP_MM`] under `upper`'s bottom, across from it over [`ACROSS`] of the shorter).
 fn under(upper: &Rect, lower: &Rect) -> bool {
