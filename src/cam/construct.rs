@@ -9,7 +9,7 @@ use super::follower::{to_cam, Kin, Placement};
 use super::inversion::{drawn_rho_min, invert, Inversion};
 use super::motion::{points, Motion, Point};
 use super::radius::{min_radius, RadiusConstruction};
-use super::{CamError, CamSpec, Closure, Follower, Rotation, Shock};
+use super::{CamError, CamSpec, Follower, Rotation, Shock};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{french_curve, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
@@ -170,7 +170,7 @@ fn over_limit(spec: &CamSpec, points: &[Point], inv: &Inversion) -> Option<(usiz
         return None;
     }
     let most = FRAC_PI_2 - spec.gamma_min;
-    let binds = |i: usize| spec.closure == Closure::Geometric || points[i].phase == 0;
+    let binds = |i: usize| spec.binds(&points[i]);
     let (at, worst) = inv
         .angles
         .iter()

@@ -215,6 +215,12 @@ impl CamSpec {
             _ => None,
         }
     }
+    /// Whether the angle at drawn point `p` limits the cam (its r_min, its check): every
+    /// point under geometric closure, the rise's alone under force closure (the spring drives
+    /// the return). The construction's decision; the twin ([`exact`]) makes its own.
+    pub fn binds(&self, p: &motion::Point) -> bool {
+        self.closure == Closure::Geometric || p.phase == 0
+    }
     /// Whether its angle graph and tables show the transmission angle γ (a rocker), not the
     /// pressure angle λ (a translating or flat follower).
     pub fn shows_transmission_angle(&self) -> bool {

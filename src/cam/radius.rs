@@ -10,7 +10,7 @@ use super::diagrams::{read_motion, Diagrams};
 use super::follower::{admits, rocker_of, Placement, REACH_ARMS};
 use super::motion::Point;
 use super::zone;
-use super::{CamError, CamSpec, Closure, Follower};
+use super::{CamError, CamSpec, Follower};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{fan_start, Arc, DVec2, Segment};
 use std::f64::consts::FRAC_PI_2;
@@ -102,7 +102,7 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     let ox = -mu.to_mm(offset);
     let t = gamma.tan();
     // Under force closure only the rise's points bind.
-    let binds = |i: usize| spec.closure == Closure::Geometric || points[i].phase == 0;
+    let binds = |i: usize| spec.binds(&points[i]);
     let below = |k: &DVec2| k.y - (k.x - ox).abs() * t;
     let best = ks
         .iter()
@@ -222,7 +222,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
             &[pid],
         );
         ks.push(k);
-        if spec.closure == Closure::Geometric || p.phase == 0 {
+        if spec.binds(p) {
             cons.push((k, e));
         }
     }

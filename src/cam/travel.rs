@@ -15,7 +15,7 @@
 use super::combined::{combined, s_axis, smooth_loop};
 use super::diagrams::Diagrams;
 use super::motion::Point;
-use super::{CamSpec, Closure};
+use super::CamSpec;
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{Arc, DVec2, Segment};
 use std::f64::consts::TAU;
@@ -52,7 +52,7 @@ pub(super) fn travel_min(
     let ks = combined(d, points.len(), |m| {
         DVec2::new(mu.to_mm(m.ds), mu.to_mm(m.s))
     });
-    let binds = |i: usize| spec.closure == Closure::Geometric || points[i].phase == 0;
+    let binds = |i: usize| spec.binds(&points[i]);
     // The steepest point: the first of the largest |dS/dφ| among the checked points.
     let steep = (0..ks.len())
         .filter(|&i| binds(i))

@@ -82,6 +82,13 @@ fn phrases(l: &Layout) -> Vec<String> {
     out
 }
 
+/// Label `i` of `l` moved onto the row of the box `at`, `gap` mm after it.
+fn put_after(l: &mut Layout, i: usize, at: tmm::plate::Rect, gap: f64) {
+    let size = l.labels[i].rect.max - l.labels[i].rect.min;
+    l.labels[i].rect.min = glam::DVec2::new(at.max.x + gap, at.min.y);
+    l.labels[i].rect.max = l.labels[i].rect.min + size;
+}
+
 /// No sheet writes a word label read on into another, in any configuration; the sheets do
 /// write word labels (detail A's curve names, the blocking contour's curves).
 #[test]
@@ -124,9 +131,7 @@ fn the_phrase_rule_fails_on_a_plate_built_to_break_it() {
     assert!(phrases(&l).is_empty(), "{:?}", phrases(&l));
     // «fillet» moved onto «involute»'s row, 2 mm after it.
     let fillet = find(&l, "fillet");
-    let size = l.labels[fillet].rect.max - l.labels[fillet].rect.min;
-    l.labels[fillet].rect.min = glam::DVec2::new(above.max.x + 2.0, above.min.y);
-    l.labels[fillet].rect.max = l.labels[fillet].rect.min + size;
+    put_after(&mut l, fillet, above, 2.0);
     let found = phrases(&l).join("\n");
     assert!(
         found.contains("“involute” beside “fillet”: read on from it"),
@@ -148,9 +153,7 @@ fn the_chain_rule_fails_on_a_plate_built_to_break_it() {
         .position(|x| x.view == 16 && x.text == "b_{3}′")
         .expect("b₃′ of view 16");
     let at = l.labels[chain].rect;
-    let size = l.labels[b3].rect.max - l.labels[b3].rect.min;
-    l.labels[b3].rect.min = glam::DVec2::new(at.max.x + 1.35, at.min.y);
-    l.labels[b3].rect.max = l.labels[b3].rect.min + size;
+    put_after(&mut l, b3, at, 1.35);
     let found = phrases(&l).join("\n");
     assert!(
         found.contains("beside “b_{3}′”: read on from it"),
