@@ -89,7 +89,8 @@ pub(super) fn power_of_ten(number: &str) -> String {
 }
 
 /// `text` as content pieces: `#"…"` for its runs of plain characters, `#sub("…")` and
-/// `#super("…")` for its runs of Unicode subscripts and superscripts.
+/// `#super("…")` for its runs of Unicode subscripts and superscripts; a space between a
+/// digit and a letter (a number and its unit) non-breaking.
 fn pieces(text: &str, out: &mut String) {
     let mut run = String::new();
     let mut script = Script::Normal;
@@ -104,7 +105,13 @@ fn pieces(text: &str, out: &mut String) {
             run.clear();
         }
     };
-    for c in text.chars() {
+    let chars: Vec<char> = text.chars().collect();
+    for (k, &c) in chars.iter().enumerate() {
+        // A number and the unit after it are not parted at a line's end (`34 мм`).
+        let c = match (k.checked_sub(1).map(|j| chars[j]), chars.get(k + 1)) {
+            (Some(a), Some(b)) if c == ' ' && a.is_ascii_digit() && b.is_alphabetic() => '\u{a0}',
+            _ => c,
+        };
         let (ch, kind) = match (subscript_of(c), superscript_of(c)) {
             (Some(d), _) => (d, Script::Sub),
             (_, Some(d)) => (d, Script::Sup),
@@ -471,6 +478,13 @@ pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_number_keeps_its_unit_on_its_line() {
+        assert_eq!(label("r0 = 34 мм"), "[#\"r0 = 34\u{a0}мм\"]");
+        assert_eq!(label("0 ≡ 4 и 5"), "[#\"0 ≡ 4\u{a0}и 5\"]");
+        assert_eq!(label("a = 5"), "[#\"a = 5\"]");
+    }
 
     #[test]
     fn formulas_are_numbered_by_the_section_they_follow() {
