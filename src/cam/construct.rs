@@ -123,8 +123,7 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
             return Err(CamError::RollerTooLarge { roller, base });
         }
         let inversion = invert(spec, &points, &read, &placement, (base, roller), ctx)?;
-        let over = over_limit(spec, &points, &inversion);
-        match over {
+        match over_limit(spec, &points, &inversion) {
             Some((at, angle)) if spec.base_radius.is_none() && raise < MAX_RAISE_MM => {
                 raised.get_or_insert(Raised { base, at, angle });
                 raise += 1;
@@ -170,16 +169,10 @@ fn over_limit(spec: &CamSpec, points: &[Point], inv: &Inversion) -> Option<(usiz
         return None;
     }
     let most = FRAC_PI_2 - spec.gamma_min;
-    let binds = |i: usize| spec.binds(&points[i]);
-    let (at, worst) = inv
-        .angles
-        .iter()
-        .enumerate()
-        .filter(|&(i, _)| binds(i))
-        .fold(None, |w: Option<(usize, f64)>, (i, &a)| match w {
-            Some((_, b)) if b >= a => w,
-            _ => Some((i, a)),
-        })?;
+    // The first of the largest.
+    let (at, worst) = (inv.angles.iter().copied().enumerate())
+        .filter(|&(i, _)| spec.binds(&points[i]))
+        .reduce(|w, x| if x.1 > w.1 { x } else { w })?;
     (worst > most + ANGLE_SLACK).then(|| {
         let angle = if spec.shows_transmission_angle() {
             FRAC_PI_2 - worst

@@ -215,8 +215,9 @@ pub(super) fn numbers_fit(step_mm: f64, a: &str, b: &str) -> bool {
 /// return's first unless it stands that near the rise's last).
 fn numbered(points: &[Point], phi: Scale) -> Vec<(usize, usize)> {
     let x = |i: usize| phi.to_mm(points[i].phi);
-    let pitch = |i: usize, j: usize| pitch(&points[i].label, &points[j].label);
-    let least = |i: usize, j: usize| 0.5 * pitch(i, j);
+    let one_row = |i: usize, j: usize| pitch(&points[i].label, &points[j].label);
+    // Point `i` after `j` keeps its number, the two alternating between the rows.
+    let fits = |i: usize, j: usize| numbers_fit(x(i) - x(j), &points[i].label, &points[j].label);
     let mut out: Vec<(usize, usize)> = Vec::with_capacity(points.len());
     for phase in [0usize, 2] {
         let idx: Vec<usize> = (0..points.len())
@@ -227,14 +228,14 @@ fn numbered(points: &[Point], phi: Scale) -> Vec<(usize, usize)> {
         let mut kept: Vec<usize> = before.into_iter().collect();
         for &i in &idx {
             match kept.last() {
-                Some(&j) if x(i) - x(j) < least(i, j) => {}
+                Some(&j) if !fits(i, j) => {}
                 _ => kept.push(i),
             }
         }
         // The phase's last point is numbered: the ones too near before it give way.
         if let Some(&last) = idx.last() {
             let first = kept.first().copied();
-            kept.retain(|&j| Some(j) == first || x(last) - x(j) >= least(last, j));
+            kept.retain(|&j| Some(j) == first || fits(last, j));
             if kept.last() != Some(&last) {
                 kept.push(last);
             }
@@ -242,7 +243,7 @@ fn numbered(points: &[Point], phi: Scale) -> Vec<(usize, usize)> {
         kept.retain(|i| points[*i].phase == phase);
         let crowded = kept
             .windows(2)
-            .any(|w| x(w[1]) - x(w[0]) < pitch(w[0], w[1]));
+            .any(|w| x(w[1]) - x(w[0]) < one_row(w[0], w[1]));
         let m = kept.len().saturating_sub(1);
         let row = |k: usize| match (k == 0 || k == m, crowded) {
             (true, _) => 1,
