@@ -166,6 +166,7 @@ impl Figure {
                         offset: if mirror { -offset } else { *offset },
                     },
                     Item::Angle(a) => Item::Angle(arc(a)),
+                    Item::Moment(a) => Item::Moment(arc(a)),
                     Item::Text(p) => Item::Text(m(*p)),
                     Item::Hatching {
                         outline,
@@ -268,7 +269,7 @@ impl Figure {
                     add(c.center - DVec2::splat(c.radius));
                     add(c.center + DVec2::splat(c.radius))
                 }
-                Item::Arc(a) | Item::Angle(a) => {
+                Item::Arc(a) | Item::Angle(a) | Item::Moment(a) => {
                     for i in 0..=16 {
                         add(a.eval(i as f64 / 16.0));
                     }

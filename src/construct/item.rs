@@ -79,6 +79,9 @@ pub enum Item {
     },
     /// An angle mark: arc with arrows at both ends; the label is the angle's name.
     Angle(Arc),
+    /// A moment (a couple): an arc with one arrowhead, at its end, so that the sweep's sign
+    /// is the sense of rotation; the label is the moment's name.
+    Moment(Arc),
     /// Free text anchored at a point (the label carries the text).
     Text(DVec2),
     /// A region hatched with parallel thin lines (ГОСТ 2.306: a section of a part, a zone of

@@ -262,7 +262,7 @@ pub fn couple(rec: &mut Recorder, name: &str, o: DVec2, moment: f64) -> StepId {
     let around = rec
         .steps()
         .iter()
-        .filter(|s| matches!(s.item, Item::Angle(a) if a.center.distance(o) < ON_LINE_MM))
+        .filter(|s| matches!(s.item, Item::Moment(a) if a.center.distance(o) < ON_LINE_MM))
         .count();
     let radius = COUPLE_MM + COUPLE_STEP_MM * around as f64;
     let arc = Arc {
@@ -271,7 +271,7 @@ pub fn couple(rec: &mut Recorder, name: &str, o: DVec2, moment: f64) -> StepId {
         start,
         sweep,
     };
-    let id = rec.draw(name.to_string(), Item::Angle(arc), Role::Result, &[]);
+    let id = rec.draw(name.to_string(), Item::Moment(arc), Role::Result, &[]);
     let mid = DVec2::from_angle(start + sweep / 2.0);
     rec.label_item(id, name, o + mid * radius, mid);
     id
@@ -380,7 +380,7 @@ mod tests {
             .steps()
             .iter()
             .filter_map(|s| match s.item {
-                Item::Angle(a) => Some(a.radius),
+                Item::Moment(a) => Some(a.radius),
                 _ => None,
             })
             .collect();

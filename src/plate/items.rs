@@ -230,7 +230,7 @@ pub(crate) fn item_outlines(item: &Item, (role, labelled): (Role, bool), map: Ma
             let (start, end, _) = dimension_line(*from + n, *to + n);
             lines.extend([(*from, *from + n), (*to, *to + n), (start, end)]);
         }
-        Item::Angle(a) => chain(&arc_points(a), false, &mut lines),
+        Item::Angle(a) | Item::Moment(a) => chain(&arc_points(a), false, &mut lines),
         Item::Text(_) => {}
         Item::Hatching { .. } => lines.extend(item.hatch_strokes().iter().map(|s| (s.from, s.to))),
     }
@@ -343,7 +343,8 @@ fn item_marks(
         Item::Slider { at, angle } => out.extend(slider(map, pen, *at, *angle)),
         Item::Guide { segment, hatch } => guide(map, pen, segment, *hatch, out),
         Item::Dimension { from, to, offset } => dimension(map, *from, *to, *offset, out),
-        Item::Angle(a) => angle_mark(map, a, out),
+        Item::Angle(a) => arc_mark(map, a, true, out),
+        Item::Moment(a) => arc_mark(map, a, false, out),
         Item::Text(_) => {}
     }
 }
@@ -512,7 +513,9 @@ fn dimension(map: Map, from: DVec2, to: DVec2, offset: f64, out: &mut Vec<Mark>)
 }
 
 /// An angle mark: the thin arc with an arrowhead at each end, following the arc.
-fn angle_mark(map: Map, a: &Arc, out: &mut Vec<Mark>) {
+/// A thin arc with an arrowhead at its end, and at its start too when `both` (an angle's
+/// dimension; a moment's arc has one, its sense).
+fn arc_mark(map: Map, a: &Arc, both: bool, out: &mut Vec<Mark>) {
     out.extend(stroke(map, Pen::THIN, |d| {
         d.arc(a);
     }));
@@ -525,12 +528,35 @@ fn angle_mark(map: Map, a: &Arc, out: &mut Vec<Mark>) {
     let at = |angle: f64| a.center + DVec2::from_angle(angle) * a.radius;
     let (start, end) = (a.start, a.start + a.sweep);
     out.extend(arrow.head(map, at(end), at(end) - at(end - back)));
-    out.extend(arrow.head(map, at(start), at(start) - at(start + back)));
+    if both {
+        out.extend(arrow.head(map, at(start), at(start) - at(start + back)));
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A moment's arc shows its sense by one arrowhead, at its end; an angle's dimension has
+    /// one at each end (issue 45: the couples on the force sheets had both, and no sense).
+    #[test]
+    fn a_moment_has_one_arrowhead_and_an_angle_two() {
+        let arc = Arc {
+            center: DVec2::ZERO,
+            radius: 9.0,
+            start: 0.3,
+            sweep: 1.6,
+        };
+        let heads = |item: Item| {
+            let mut out = Vec::new();
+            item_marks(&item, (Role::Result, true), Pen::THIN, Map::SHEET, &mut out);
+            out.iter()
+                .filter(|m| matches!(m, Mark::Path(Paint::Solid, _)))
+                .count()
+        };
+        assert_eq!(heads(Item::Moment(arc)), 1);
+        assert_eq!(heads(Item::Angle(arc)), 2);
+    }
 
     #[test]
     fn a_short_dimension_has_its_arrows_outside() {

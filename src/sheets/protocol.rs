@@ -128,6 +128,7 @@ fn sentence(figure: &Figure, s: &Step, names: &[(DVec2, String)], lang: Lang) ->
         (Item::Guide { segment, .. }, _) => (StepText::Guide, between(segment.from, segment.to)),
         (Item::Dimension { .. }, _) => (StepText::Dimension, label.clone()),
         (Item::Angle(_), _) => (StepText::Angle, label.clone()),
+        (Item::Moment(_), _) => (StepText::Moment, label.clone()),
         (Item::Text(_), _) => (StepText::Text, label.clone()),
     };
     fill(text.get(lang), &n, "")
