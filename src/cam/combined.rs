@@ -88,6 +88,27 @@ pub(super) fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, depth: f64) 
     ax
 }
 
+/// The abscissa of a combined diagram through B₀ (S = 0), across the points `ks` with room
+/// past them, labelled `name` at its arrow (dS/dφ: the diagram's other quantity, without
+/// which the reader has a curve beside one axis).
+pub(super) fn abscissa(rec: &mut Recorder, ks: &[DVec2], name: &str) -> StepId {
+    let (lo, hi) = ks
+        .iter()
+        .fold((0.0f64, 0.0f64), |(lo, hi), k| (lo.min(k.x), hi.max(k.x)));
+    let end = DVec2::new(hi + 12.0, 0.0);
+    let ax = rec.draw(
+        format!("{name} axis"),
+        Item::Vector {
+            from: DVec2::new(lo - 10.0, 0.0),
+            to: end,
+        },
+        Role::Axis,
+        &[],
+    );
+    rec.label(ax, name, end, DVec2::new(0.0, -1.0));
+    ax
+}
+
 /// The points of a combined diagram: `at` of the motion read at each of the `n` points.
 pub(super) fn combined(d: &Diagrams, n: usize, at: impl Fn(Motion) -> DVec2) -> Vec<DVec2> {
     (0..n).map(|i| at(read_motion(d, i))).collect()

@@ -5,7 +5,7 @@
 //! radius; the exact r_min over the whole cycle is the twin's ([`super::exact`], compared in [`super::Cam::rows`]).
 
 use super::accept::accepted;
-use super::combined::{combined, s_axis, smooth_loop};
+use super::combined::{abscissa, combined, s_axis, smooth_loop};
 use super::diagrams::{read_motion, Diagrams};
 use super::follower::{admits, rocker_of, Placement, REACH_ARMS};
 use super::motion::Point;
@@ -112,6 +112,7 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
         .fold(f64::INFINITY, f64::min);
     let o = DVec2::new(ox, best);
     let path = s_axis(rec, spec, mu, o.length());
+    abscissa(rec, &ks, "dS/dφ");
     for (i, k) in ks.iter().enumerate() {
         let b = DVec2::new(0.0, k.y);
         rec.draw(
@@ -288,21 +289,8 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     };
     let ax = s_axis(rec, spec, mu, rho - oi.y + room);
     let xs = pts.iter().fold(0.0f64, |a, p| a.max(p.x.abs()));
-    let hx = rec.draw(
-        "d²S/dφ² axis",
-        Item::Vector {
-            from: DVec2::new(-xs - 10.0, 0.0),
-            to: DVec2::new(xs + 12.0, 0.0),
-        },
-        Role::Axis,
-        &[],
-    );
-    rec.label(
-        hx,
-        "d^2S/dφ^2",
-        DVec2::new(xs + 12.0, 0.0),
-        DVec2::new(0.0, -1.0),
-    );
+    // The abscissa as wide each side as the curve's widest side: the 45° tangent runs left.
+    let hx = abscissa(rec, &[DVec2::X * -xs, DVec2::X * xs], "d^2S/dφ^2");
     rec.draw(
         "combined diagram S(d²S/dφ²)",
         Item::Polyline {

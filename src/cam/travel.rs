@@ -12,7 +12,7 @@
 //! B. The dimension BC, read, times 2π is X_min. The twin's is the closed form
 //! ([`super::sliding::exact_travel_min`]), compared in the rows.
 
-use super::combined::{combined, s_axis, smooth_loop};
+use super::combined::{abscissa, combined, s_axis, smooth_loop};
 use super::diagrams::Diagrams;
 use super::motion::Point;
 use super::CamSpec;
@@ -64,6 +64,7 @@ pub(super) fn travel_min(
     let b = DVec2::new(0.0, steep.y);
     let c = DVec2::new(0.0, steep.y - steep.x.abs() * spec.gamma_min.tan());
     let axis = s_axis(&mut rec, spec, mu, (-c.y).max(0.0));
+    abscissa(&mut rec, &ks, "dS/dφ");
     for (i, k) in ks.iter().enumerate() {
         rec.draw(
             format!("dS/dφ at point {i}"),

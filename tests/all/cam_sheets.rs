@@ -1,5 +1,7 @@
 //! Issue 45: the cam sheets finish the constructions their captions promise, checked on the
 //! plate model (the views' recorded figures and the cam's own numbers), never on pixels:
+//! - the combined diagram's two axes through B₀, each labelled (S and dS/dφ, or d²S/dφ² for
+//!   a flat face), the abscissa across the whole curve (a translating follower);
 //! - r_min by the combined diagram: the two γ_min rays drawn from their points to their
 //!   crossing, the zone of the centre hatched in the angle at it that holds O₁, and the r_min
 //!   dimension from O₁ whose length, read as the sheet reads it, is the report's graphical
@@ -16,7 +18,8 @@
 mod dimensions;
 
 use dimensions::{
-    chosen_r0_dimensioned, number_after, offset_line_drawn, r_min_dimensioned, written_as,
+    axes_drawn, chosen_r0_dimensioned, number_after, offset_line_drawn, r_min_dimensioned,
+    written_as,
 };
 use glam::DVec2;
 use tmm::cam::{Cam, Follower, E_LINE_NOTE, RAY_NOTE, R_MIN_NOTE, TANGENT_NOTE};
@@ -312,6 +315,7 @@ fn finished(cam: &Cam, f: &Figure, d: Drafting) -> Result<(), String> {
     }
     chosen_r0_dimensioned(f, cam, d)?;
     offset_line_drawn(f, cam)?;
+    axes_drawn(f, cam)?;
     r_min_dimensioned(f, cam.radius.graphical, d)
 }
 
@@ -393,6 +397,10 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
         }
     });
     assert!(rays_reach_their_crossing(&short).is_err());
+    // The abscissa taken off (the review's combined diagrams beside one axis).
+    let mut one_axis = f.clone();
+    one_axis.steps.retain(|s| s.note != "dS/dφ axis");
+    assert!(axes_drawn(&one_axis, &cam).is_err());
     // The offset's line taken off (the review's pz5).
     let mut no_e = f.clone();
     no_e.steps.retain(|s| s.note != E_LINE_NOTE);

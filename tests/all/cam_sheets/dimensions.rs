@@ -4,7 +4,7 @@
 
 use super::{centre, segments, tol};
 use tmm::cam::{Cam, Follower, E_LINE_NOTE, E_NOTE, R0_NOTE, R_MIN_NOTE};
-use tmm::construct::{Drafting, Figure, Role};
+use tmm::construct::{Drafting, Figure, Item, Role};
 
 /// The number written after `key` in `text` (`r_{min} = 43,77 мм` → 43.77 for `r_{min} = `),
 /// either decimal sign.
@@ -130,4 +130,49 @@ pub(super) fn offset_line_drawn(f: &Figure, cam: &Cam) -> Result<(), String> {
         ));
     }
     Ok(())
+}
+
+/// The combined diagram's two axes of a translating follower, through B₀ (the origin): the S
+/// axis and the abscissa of the quantity laid off across it (dS/dφ; d²S/dφ² for a flat
+/// face), each labelled, the abscissa spanning every point of the curve. A rocker's dS/dφ is
+/// laid off along its arm's positions, with no abscissa.
+pub(super) fn axes_drawn(f: &Figure, cam: &Cam) -> Result<(), String> {
+    let across = match cam.spec.follower {
+        Follower::Rocker { .. } => return Ok(()),
+        Follower::Flat { .. } => "d^2S/dφ^2",
+        Follower::Translating { .. } => "dS/dφ",
+    };
+    let labelled = |note: &str, text: &str| {
+        let axes = segments(f, note);
+        let [(s, a, b)] = axes[..] else {
+            return Err(format!("{} {note}es drawn", axes.len()));
+        };
+        match &s.label {
+            Some(l) if l.text == text => Ok((a, b)),
+            _ => Err(format!("the {note} is not labelled {text}")),
+        }
+    };
+    let (s0, s1) = labelled("S axis", "S")?;
+    let (a, b) = labelled(&format!("{across} axis"), across)?;
+    let t = tol(f);
+    if a.y.abs() > t || b.y.abs() > t || s0.x.abs() > t || s1.x.abs() > t {
+        return Err(format!(
+            "the axes do not cross at B₀: S from {s0:?} to {s1:?}, {across} from {a:?} to {b:?}"
+        ));
+    }
+    let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
+    let curve = f
+        .steps
+        .iter()
+        .filter(|s| s.role == Role::Result && s.note.starts_with("combined diagram"))
+        .flat_map(|s| match &s.item {
+            Item::Curve { points, .. } | Item::Polyline { points, .. } => points.clone(),
+            _ => Vec::new(),
+        });
+    match curve.map(|p| p.x).find(|x| *x < lo || *x > hi) {
+        Some(x) => Err(format!(
+            "the curve reaches {x:.1} mm, past the {across} axis ({lo:.1} … {hi:.1} mm)"
+        )),
+        None => Ok(()),
+    }
 }
