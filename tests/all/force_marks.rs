@@ -106,7 +106,7 @@ fn an_engines_balancing_moment_is_on_its_crank_and_its_force_on_the_lever() {
         let d = &f.analysis.polygons.driver;
         let arcs: Vec<_> = labelled(&d.scheme)
             .into_iter()
-            .filter(|(t, i)| *t == "M_{у}" && matches!(i, Item::Angle(_)))
+            .filter(|(t, i)| *t == "M_{у}" && matches!(i, Item::Moment(_)))
             .collect();
         assert_eq!(arcs.len(), 1, "{}: M_у on the driving link", f.label);
         let lever = &f.analysis.lever;

@@ -150,7 +150,7 @@ pub fn lines(step: &Step) -> Vec<(DVec2, DVec2)> {
             }),
             false,
         ),
-        Item::Arc(a) | Item::Angle(a) => chain(&arc_points(a), false),
+        Item::Arc(a) | Item::Angle(a) | Item::Moment(a) => chain(&arc_points(a), false),
         Item::Polyline { points, closed } | Item::Curve { points, closed } => {
             chain(points, *closed)
         }
