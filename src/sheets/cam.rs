@@ -107,6 +107,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let drawings = blocks.len();
     let mut lines = data_lines(&cam, lang);
     lines.push(String::new());
+    lines.extend(legend(CamText::RadiusVector, lang));
     lines.push(super::drafting_line(
         session.drafting(),
         super::Errs::Diagrams,
@@ -431,6 +432,12 @@ fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
     }
     columns.push((format!("R, {mm}"), 16.0));
     points_tables(columns, rows, lang)
+}
+
+/// What the tables' letters mean, a line each: the points table's last column (`last`), and
+/// Δ_проф of the results table.
+pub(super) fn legend(last: CamText, lang: Lang) -> [String; 2] {
+    [last, CamText::DeviationRule].map(|t| t.get(lang).to_string())
 }
 
 /// The table of the points in tables of at most [`POINTS_PER_TABLE`] rows, each after the

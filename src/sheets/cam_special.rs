@@ -4,7 +4,7 @@
 //! rollers and both profiles), the data, the table of the points and the results against
 //! the closed forms.
 
-use super::cam::{diagram_block, law_lines, mu, one_sheet, points_tables, results_table};
+use super::cam::{diagram_block, law_lines, legend, mu, one_sheet, points_tables, results_table};
 use super::cam_marks;
 use super::layout::{keyed, Block};
 use super::BuildError;
@@ -62,6 +62,11 @@ pub(super) fn build(
     let drawings = blocks.len();
     let mut lines = data_lines(cam, lang).map_err(study)?;
     lines.push(String::new());
+    let last = match cam.profile {
+        SpecialProfile::FlatRocker { .. } => CamText::RadiusVector,
+        SpecialProfile::Sliding { .. } => CamText::TravelAt,
+    };
+    lines.extend(legend(last, lang));
     lines.push(super::drafting_line(
         session.drafting(),
         super::Errs::Diagrams,

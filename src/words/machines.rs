@@ -269,6 +269,13 @@ catalogue! {
         Read => ("граф.", "граф.", "graph."),
         Points => ("Точки диаграмм и профиля", "Точки діаграм і профілю", "Points of the diagrams and the profile"),
         Results => ("Графически и точно, мм", "Графічно і точно, мм", "Graphical against exact, mm"),
+        RadiusVector => ("R: радиус-вектор точки профиля", "R: радіус-вектор точки профілю", "R: the radius vector of a profile point"),
+        TravelAt => ("ξ: положение оси толкателя на кулачке", "ξ: положення осі штовхача на кулачку", "ξ: where the follower's axis stands on the cam"),
+        DeviationRule => (
+            "Δ_{проф}: наибольшее отклонение профиля, проведённого лекалом, от точного",
+            "Δ_{проф}: найбільше відхилення профілю, проведеного лекалом, від точного",
+            "Δ_{prof}: how far the profile drawn with the French curve departs from the exact one, at most"
+        ),
         Slides => (
             "Кулачок движется поступательно вдоль направляющей",
             "Кулачок рухається поступально вздовж напрямної",

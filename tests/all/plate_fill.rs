@@ -18,9 +18,7 @@ const BAND_MM: f64 = 120.0;
 
 /// The sheets whose band is wider, and why.
 const JUSTIFIED: &[(&str, &str)] = &[
-    ("cam-cusp/cam", "in uk and en, and in ru read to 0,5 mm: the bottom 168 mm; the scene fixes μ_S = 0,002 m/mm (the combined diagram's S″ is large and both its axes share μ_S), so the S diagram is 33 mm tall and the column of the three diagrams, the combined diagram, the profile and the tables all end 420 mm down the sheet — the whole cam on one sheet, nothing left to go below"),
     ("cam-shock/cam", "in uk and en: the bottom 170 mm; the profile at μ_l = 0,001 (123 mm; 0,0005 draws it 246 mm, past its 240 mm room) and the uniform law's low analogues leave the three diagrams, the combined diagram, λ(φ), the data and the tables in the upper 415 mm — the whole cam on one sheet, nothing left to go below"),
-    ("shaper/cam", "in uk and en, and in ru read to 0,5 mm: the bottom 138 mm; the scene fixes the poles H₁ = 30 mm, H₂ = 40 mm (the seed's), so the analogues stand at the seed's height, and the 26 points' table, the longest item, ends 450 mm down the sheet — the whole cam on one sheet, nothing left to go below"),
     ("friction-follower/friction", "three views, the closed forms and the table on an A2, the friction sheet's smallest format, each scale as large as its 160 mm room holds"),
     ("gears-pz2-ex1/gears", "in en only: the train's triangles (its heights drawn 177 mm at μ_l = 0,0005) and the slow links' picture beside them, with the data and the tables on an A2; the English lines are short, so the tables stand beside the text and leave 129 mm under them (read to 0,5 mm, 132 mm right of them); ru and uk at most 104 mm"),
     ("gears-pz2-ex2/gears", "the train's triangles (141 mm tall at μ_l = 0,0004) and the slow links' picture beside them, with the data and the tables on an A2 (the gear part of issue 45)"),
