@@ -187,6 +187,7 @@ impl Figure {
                     anchor: m(l.anchor),
                     toward: turn(l.toward),
                     within_mm: l.within_mm,
+                    column_mm: l.column_mm,
                     names: l.names,
                 });
                 Step {
@@ -241,6 +242,7 @@ impl Figure {
                 anchor: at,
                 toward,
                 within_mm: None,
+                column_mm: None,
                 names: Names::Item,
             }),
             from: Vec::new(),
@@ -322,6 +324,7 @@ mod tests {
                 anchor: DVec2::new(1.0, 2.0),
                 toward: DVec2::new(0.6, 0.8),
                 within_mm: None,
+                column_mm: None,
                 names: Names::Point,
             }),
             from: Vec::new(),

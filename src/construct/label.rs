@@ -61,6 +61,11 @@ pub struct Label {
     /// meshing) keeps its name beside it, struck by a thin line rather than flown off to
     /// where no line runs; `None`: wherever the placer finds the most room.
     pub within_mm: Option<f64>,
+    /// The farthest the text's middle may stand left and right of its point, sheet mm (its
+    /// x): a division point's number on a diagram's φ axis stays in its point's column,
+    /// nearer its point than the next — written over a line there rather than beside the
+    /// next point, and never on a leader; `None`: no such bound.
+    pub column_mm: Option<[f64; 2]>,
 }
 
 impl Label {
@@ -72,6 +77,7 @@ impl Label {
             toward,
             names: Names::of(item, anchor),
             within_mm: None,
+            column_mm: None,
         }
     }
 }

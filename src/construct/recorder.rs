@@ -164,13 +164,21 @@ impl Recorder {
     /// Keep the label of step `id` within `mm` of its point on the sheet
     /// ([`Label::within_mm`]).
     pub fn keep_label_within(&mut self, id: StepId, mm: f64) {
-        if let Some(label) = self
-            .figure
-            .steps
-            .get_mut(id.0 as usize)
-            .and_then(|s| s.label.as_mut())
-        {
+        if let Some(label) = self.label_mut(id) {
             label.within_mm = Some(mm);
+        }
+    }
+
+    /// The label of step `id`, where it has one.
+    fn label_mut(&mut self, id: StepId) -> Option<&mut Label> {
+        (self.figure.steps.get_mut(id.0 as usize)).and_then(|s| s.label.as_mut())
+    }
+
+    /// Keep the label of step `id` in its point's column: its middle at most `mm` left and
+    /// right of its point on the sheet, never on a leader ([`Label::column_mm`]).
+    pub fn keep_label_in_column(&mut self, id: StepId, mm: [f64; 2]) {
+        if let Some(label) = self.label_mut(id) {
+            label.column_mm = Some(mm);
         }
     }
 

@@ -192,6 +192,7 @@ pub(super) fn view(
                 anchor: at,
                 toward,
                 within_mm: Some(DETAIL_NAME_WITHIN_MM),
+                column_mm: None,
                 // The junction is a point; the other names name the curve they stand on.
                 names: if mark == DetailMark::Junction {
                     Names::Point

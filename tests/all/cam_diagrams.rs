@@ -453,3 +453,54 @@ fn every_point_is_numbered_on_every_phi_axis() {
         );
     }
 }
+
+/// Every number on a φ axis stands in its point's column as the sheet lays it out — its
+/// middle at least 1 mm nearer its own point than any other numbered point of the axis, and
+/// never on a leader — on every cam sheet, the special cams' too (issue 45: cam-flat-rocker
+/// wrote 19 under 20, 3,5 mm off its point where the curve crosses the axis; cam-undercut put
+/// 19 on a leader to the place it left).
+#[test]
+fn every_phi_axis_number_stands_under_its_point() {
+    let names = SCENES.iter().chain(&["cam-flat-rocker", "cam-sliding"]);
+    for name in names {
+        let s = scene(name);
+        let session = Session::new(&s, Drafting::HAND);
+        for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+            let plates =
+                tmm::build(&session, PlateKind::Cam, lang).unwrap_or_else(|e| panic!("{e}"));
+            let mut seen = 0;
+            for p in &plates {
+                let labels = tmm::plate::layout(p).labels;
+                let numbers: Vec<_> = labels
+                    .iter()
+                    .filter(|l| {
+                        let steps = &p.views[l.view].figure.steps;
+                        (l.steps.iter())
+                            .any(|id| steps[id.0 as usize].note.starts_with("number of point "))
+                    })
+                    .collect();
+                seen += numbers.len();
+                for l in &numbers {
+                    let middle = (l.rect.min.x + l.rect.max.x) * 0.5;
+                    let own = (middle - l.anchor.x).abs();
+                    let other = (numbers.iter())
+                        .filter(|o| o.view == l.view && o.anchor.x != l.anchor.x)
+                        .map(|o| (middle - o.anchor.x).abs())
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(
+                        own + 1.0 <= other + 1e-6 && l.leader.is_none(),
+                        "{name} {lang:?}: {} stands {own:.2} mm from its point, {other:.2} mm \
+                         from the next{}",
+                        l.text,
+                        if l.leader.is_some() {
+                            ", on a leader"
+                        } else {
+                            ""
+                        }
+                    );
+                }
+            }
+            assert!(seen > 30, "{name} {lang:?}: {seen} numbers on the φ axes");
+        }
+    }
+}

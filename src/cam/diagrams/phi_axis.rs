@@ -44,6 +44,16 @@ const ROW_MM: f64 = 5.6;
 /// A number stands at most this far from its place, sheet mm: at its point, not flown off
 /// above the curve where the diagram's lines crowd (the placer's limit).
 const NUMBER_REACH_MM: f64 = 1.5;
+/// A number's middle stands at least this far across from its point where it must, sheet
+/// mm, and at most [`NUMBER_SIDE_MM`]: on each side as far as keeps it [`NUMBER_CLEAR_MM`]
+/// nearer its point than the next point's on that side (they stand 4 mm apart and more), so
+/// that a number the curve or a construction line crosses stands clear of it beside its
+/// point, not beside the next one.
+const NUMBER_COLUMN_MM: f64 = 1.0;
+/// See [`NUMBER_COLUMN_MM`], mm: the first number of an axis clear of the ordinate axis.
+const NUMBER_SIDE_MM: f64 = 3.0;
+/// See [`NUMBER_COLUMN_MM`], mm.
+const NUMBER_CLEAR_MM: f64 = 1.0;
 /// The phases' dimension line lies this far over the displacement diagram's top, mm: under
 /// the tip of its ordinate axis (12 mm over it), which is the first phase's extension line,
 /// and under the axis's name.
@@ -86,7 +96,12 @@ pub(super) fn mark(
             &[],
         );
     }
-    for (i, row) in numbered(points, phi) {
+    let numbers = numbered(points, phi);
+    let xs: Vec<f64> = numbers
+        .iter()
+        .map(|&(i, _)| phi.to_mm(points[i].phi))
+        .collect();
+    for (n, &(i, row)) in numbers.iter().enumerate() {
         let p = &points[i];
         // A phase's end stands where its diagram meets the axis (dS/dφ = 0 there): its
         // number on the side of its phase's, by its neighbour in the phase.
@@ -113,6 +128,15 @@ pub(super) fn mark(
         // Centred at its place (the first the placer tries), kept there.
         rec.label(id, p.label.clone(), at, DVec2::ZERO);
         rec.keep_label_within(id, NUMBER_REACH_MM);
+        // Each side as far as keeps it nearer its point than the neighbour's on that side.
+        let side_room = |next: Option<&f64>| {
+            next.map_or(NUMBER_SIDE_MM, |x| {
+                (x - xs[n]).abs() * 0.5 - NUMBER_CLEAR_MM
+            })
+            .clamp(NUMBER_COLUMN_MM, NUMBER_SIDE_MM)
+        };
+        let left = side_room(n.checked_sub(1).and_then(|k| xs.get(k)));
+        rec.keep_label_in_column(id, [left, side_room(xs.get(n + 1))]);
     }
     if phases {
         dimension_phases(rec, spec, points, phi, values);

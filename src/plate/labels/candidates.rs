@@ -83,7 +83,18 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
             .filter(|c| box_distance(c, r.anchor) <= within + 1e-9)
             .collect();
         if !near.is_empty() {
-            return near;
+            out = near;
+        }
+    }
+    // A label kept in its point's column keeps the places whose middle stands that near left
+    // and right, or, with none, its place at the point itself.
+    if let Some([left, right]) = r.column {
+        out.retain(|c| {
+            let across = (c.min.x + c.max.x) * 0.5 - r.anchor.x;
+            -left - 1e-9 <= across && across <= right + 1e-9
+        });
+        if out.is_empty() {
+            out.push(Rect::new(r.anchor - half, r.anchor + half));
         }
     }
     out

@@ -100,6 +100,7 @@ fn on_leader(
         toward: DVec2::ZERO,
         gap: 0.0,
         within: None,
+        column: None,
         names_of: Names::Point,
         own: Vec::new(),
     };

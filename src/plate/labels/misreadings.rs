@@ -25,7 +25,11 @@ impl Placer<'_> {
                 continue;
             };
             let bound = job.request.within.is_some();
-            if !struck(job, &now.rect) && (bound || away(job, &now.rect, 0.0) == 0.0) {
+            // A number in its column stays there, struck or not: a leader would point at
+            // its place, not at its point on the axis.
+            if job.request.column.is_some()
+                || (!struck(job, &now.rect) && (bound || away(job, &now.rect, 0.0) == 0.0))
+            {
                 continue;
             }
             let on_leader = self.leader_job(job.request.clone(), points);

@@ -214,6 +214,9 @@ struct Request {
     gap: f64,
     /// The farthest the text's box may stand from the point ([`Label::within_mm`]).
     within: Option<f64>,
+    /// The farthest the text's middle may stand left and right of the point
+    /// ([`Label::column_mm`]).
+    column: Option<[f64; 2]>,
     /// What it names: only names of points are joined.
     names_of: Names,
     /// The outlines of its own item (a label of an item is read as belonging to the line
@@ -256,6 +259,7 @@ fn requests(
             anchor,
             toward,
             within_mm,
+            column_mm,
             names: names_of,
         }) = &step.label
         else {
@@ -303,6 +307,7 @@ fn requests(
             toward: map.dir(*toward).normalize_or_zero(),
             gap,
             within: *within_mm,
+            column: *column_mm,
             names_of: *names_of,
             own,
         });
@@ -378,6 +383,10 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
                 j.gap = j.gap.max(r.gap);
                 j.within = match (j.within, r.within) {
                     (Some(a), Some(b)) => Some(a.min(b)),
+                    (a, b) => a.or(b),
+                };
+                j.column = match (j.column, r.column) {
+                    (Some(a), Some(b)) => Some([a[0].min(b[0]), a[1].min(b[1])]),
                     (a, b) => a.or(b),
                 };
                 if j.toward == DVec2::ZERO {

@@ -42,6 +42,7 @@ fn request(name: &str, at: DVec2, step: u32) -> Request {
         toward: DVec2::X,
         gap: LABEL_GAP_MM,
         within: None,
+        column: None,
         names_of: Names::Point,
         own: Vec::new(),
     }
