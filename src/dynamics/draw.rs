@@ -386,6 +386,9 @@ fn within_tangents(pts: &[DVec2], lines: [(f64, f64, usize); 2]) -> Vec<DVec2> {
         .collect()
 }
 
+/// Points read along each piece of a drawn curve for its extremes.
+const CURVE_SAMPLES: usize = 64;
+
 /// Merkin's T_I = ΔT − ω_ср²·J_пр/2 over the cycle, its range between two horizontals.
 fn merkin(
     t1: &[f64],
@@ -403,27 +406,26 @@ fn merkin(
         .map(|(i, t)| DVec2::new(run * i as f64, mu_t.to_mm(*t)))
         .collect();
     let curve = plot(&mut rec, pts.clone(), run * n as f64, ("φ", "T_{I}"), false);
-    let (mut hi, mut lo) = (0, 0);
-    for (i, p) in pts.iter().enumerate() {
-        if p.y > pts[hi].y {
-            hi = i;
-        }
-        if p.y < pts[lo].y {
-            lo = i;
-        }
-    }
+    // The horizontals touch the curve as drawn: past a turning point of the points it goes
+    // on to the extreme a French curve finds between them.
+    let drawn = crate::geom::curve::points(&pts, false, CURVE_SAMPLES);
+    let by_y = |a: &DVec2, b: &DVec2| a.y.total_cmp(&b.y);
+    let top = drawn.iter().copied().max_by(by_y).unwrap_or_default();
+    let bottom = drawn.iter().copied().min_by(by_y).unwrap_or_default();
+    let nearest = |p: DVec2| ((p.x / run).round().max(0.0) as usize).min(n);
+    let (hi, lo) = (nearest(top), nearest(bottom));
     let right = run * n as f64 + 6.0;
-    for (i, name) in [(hi, "T_{I max}"), (lo, "T_{I min}")] {
+    for (p, name) in [(top, "T_{I max}"), (bottom, "T_{I min}")] {
         let id = thin(
             &mut rec,
             format!("horizontal through {name}"),
-            pts[i],
-            DVec2::new(right, pts[i].y),
+            p,
+            DVec2::new(right, p.y),
             &[curve],
         );
-        rec.label(id, name, DVec2::new(right, pts[i].y), DVec2::new(1.0, 0.0));
+        rec.label(id, name, DVec2::new(right, p.y), DVec2::new(1.0, 0.0));
     }
-    let (a, b) = (DVec2::new(right, pts[lo].y), DVec2::new(right, pts[hi].y));
+    let (a, b) = (DVec2::new(right, bottom.y), DVec2::new(right, top.y));
     let dim = rec.draw(
         "ΔT_I",
         Item::Dimension {

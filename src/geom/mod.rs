@@ -3,6 +3,7 @@
 
 mod clip;
 mod crossing;
+pub mod curve;
 mod fan;
 mod golden;
 mod hatch;

@@ -462,7 +462,7 @@ fn smooth(d: &mut PathData, pts: &[DVec2], closed: bool) {
         return;
     }
     d.move_to(pts[0]);
-    for [c1, c2, to] in super::curve::pieces(pts, closed) {
+    for [c1, c2, to] in crate::geom::curve::pieces(pts, closed) {
         d.cubic_to(c1, c2, to);
     }
     if closed {

@@ -27,7 +27,6 @@
 //! ```
 
 pub mod chart;
-pub mod curve;
 mod dimension;
 mod dxf;
 mod fonts;

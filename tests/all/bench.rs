@@ -144,9 +144,13 @@ fn quick_bench_times_the_flywheel_routes_against_the_exact_one() {
             })
             .collect();
         // Wittenbauer's tangents approach the exact flywheel (25.52 kg·m²) as N grows;
-        // Merkin's route approaches its own method error (continuous: 27.00, +1.48 kg·m²).
-        assert!(errors[5] < errors[0], "{family}: {errors:?}");
+        // Merkin's route approaches its own method error (continuous: 27.00, +1.48 kg·m²),
+        // from below since its range is read off the drawn curve's extremes.
         let floor = if family == "merkin" { 1.48 } else { 0.0 };
+        assert!(
+            (errors[5] - floor).abs() < (errors[0] - floor).abs(),
+            "{family}: {errors:?}"
+        );
         assert!((errors[5] - floor).abs() < 0.15, "{family}: {errors:?}");
     }
     let _ = std::fs::remove_dir_all(&dir);

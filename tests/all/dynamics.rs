@@ -261,6 +261,14 @@ fn drawn(item: &tmm::construct::Item) -> Vec<glam::DVec2> {
     }
 }
 
+/// The scene's dynamics, read exactly.
+fn dynamics(name: &str) -> std::sync::Arc<tmm::dynamics::Dynamics> {
+    let s = tmm::load(&support::root().join(format!("constructions/{name}.toml")))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
+    session.dynamics().unwrap_or_else(|e| panic!("{e}"))
+}
+
 /// Issue 19 §7: Wittenbauer's tangents touch the energy–mass curve drawn and do not cut it —
 /// the whole drawn curve lies on one side of each tangent (to 1 µm), and touches it. The
 /// smooth curve drawn before through the twelve points bulged about 1 mm past both.
@@ -268,11 +276,8 @@ fn drawn(item: &tmm::construct::Item) -> Vec<glam::DVec2> {
 fn wittenbauer_tangents_touch_the_drawn_curve() {
     use tmm::construct::Item;
     for name in ["shaper", "v-engine"] {
-        let s = tmm::load(&support::root().join(format!("constructions/{name}.toml")))
-            .unwrap_or_else(|e| panic!("{e}"));
-        let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
-        let dynamics = session.dynamics().unwrap_or_else(|e| panic!("{e}"));
-        let fig = &dynamics.diagrams.wittenbauer_figure;
+        let d = dynamics(name);
+        let fig = &d.diagrams.wittenbauer_figure;
         let curve = fig
             .steps
             .iter()
@@ -306,6 +311,45 @@ fn wittenbauer_tangents_touch_the_drawn_curve() {
                 hi - lo > 5.0,
                 "{name}: {tangent}: the curve spans {} mm across it",
                 hi - lo
+            );
+        }
+    }
+}
+
+/// Issue 45: Merkin's horizontals T_I max and T_I min touch the T_I curve as the sheet draws
+/// it (the French curve goes on past a turning point of the points to the extreme between
+/// them): no part of the drawn curve lies past either, and each is level with the curve's
+/// extreme (to 0,01 mm). The shaper's T_I min stood at the lowest point, 0,94 mm above the
+/// curve drawn just before it, and ΔT_I was read 10 % short.
+#[test]
+fn merkin_horizontals_touch_the_drawn_curve() {
+    use tmm::construct::Item;
+    for name in ["shaper", "v-engine"] {
+        let d = dynamics(name);
+        let fig = &d.diagrams.merkin_figure;
+        let curve = fig
+            .steps
+            .iter()
+            .find_map(|s| match &s.item {
+                Item::Curve { points, closed } if s.note == "curve T_{I}" => {
+                    Some(tmm::geom::curve::points(points, *closed, 1024))
+                }
+                _ => None,
+            })
+            .expect("the T_I curve");
+        let (lo, hi) = curve.iter().fold((f64::MAX, f64::MIN), |(lo, hi), p| {
+            (lo.min(p.y), hi.max(p.y))
+        });
+        for (name_of, extreme) in [("T_{I max}", hi), ("T_{I min}", lo)] {
+            let note = format!("horizontal through {name_of}");
+            let Some(Item::Segment(h)) = fig.steps.iter().find(|s| s.note == note).map(|s| &s.item)
+            else {
+                panic!("{name}: no {note}");
+            };
+            assert!(
+                (h.from.y - extreme).abs() <= 0.01 && (h.to.y - h.from.y).abs() < 1e-12,
+                "{name}: {name_of} at {:.3} mm, the drawn curve's extreme at {extreme:.3} mm",
+                h.from.y
             );
         }
     }

@@ -4,8 +4,8 @@
 
 use super::Flip;
 use crate::construct::Item;
+use crate::geom::curve;
 use crate::geom::{bezier_at, DVec2};
-use crate::plate::curve;
 use crate::plate::path::Map;
 use crate::plate::path::{pieces, Seg};
 use acadrust::entities::{

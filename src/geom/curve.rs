@@ -36,6 +36,15 @@ pub fn pieces(pts: &[DVec2], closed: bool) -> Vec<Piece> {
     }
 }
 
+/// Points along the curve through `pts` as [`pieces`] draws it: `per` on each piece, after
+/// the first point.
+pub fn points(pts: &[DVec2], closed: bool, per: usize) -> Vec<DVec2> {
+    match pts.first() {
+        Some(first) => crate::geom::bezier_points(*first, &pieces(pts, closed), per),
+        None => Vec::new(),
+    }
+}
+
 /// Whether the abscissae of `pts` all increase or all decrease.
 fn runs_one_way(pts: &[DVec2]) -> bool {
     let dx: Vec<f64> = pts.windows(2).map(|w| w[1].x - w[0].x).collect();
@@ -249,9 +258,8 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    /// Points along the drawn curve: `per` on each piece, with the first point.
     fn drawn(pts: &[DVec2], closed: bool, per: usize) -> Vec<DVec2> {
-        crate::geom::bezier_points(pts[0], &pieces(pts, closed), per)
+        points(pts, closed, per)
     }
 
     proptest! {
