@@ -6,6 +6,10 @@ use super::style::{Mark, Paint, Pen};
 use super::text::{Align, Placed};
 use glam::DVec2;
 
+/// Room beside a cell's text in its column, mm: the half millimetre each side the cell's text
+/// is fitted within ([`table_marks`]), and as much again.
+pub const CELL_ROOM_MM: f64 = 2.0;
+
 /// A table drawn on the sheet.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TableBlock {
@@ -25,6 +29,21 @@ impl TableBlock {
     /// Height of one row, mm.
     pub fn row_height(&self) -> f64 {
         self.size_mm * 2.0
+    }
+    /// The table with every column at least as wide as its widest text (heading or cell) at
+    /// its natural width, with [`CELL_ROOM_MM`] beside it: a cell is condensed only where a
+    /// column was given less room than its texts need (a unit's superscript squeezed onto its
+    /// letters, a word against the rules).
+    pub fn with_room(mut self) -> Self {
+        for (k, (heading, w)) in self.columns.iter_mut().enumerate() {
+            let cells = self.rows.iter().filter_map(|r| r.get(k));
+            let widest = std::iter::once(&*heading)
+                .chain(cells)
+                .map(|c| super::text::approx_width(c, self.size_mm))
+                .fold(0.0, f64::max);
+            *w = w.max(widest + CELL_ROOM_MM);
+        }
+        self
     }
     /// Overall size of the grid (width, height), mm.
     pub fn size(&self) -> DVec2 {

@@ -492,7 +492,13 @@ pub(super) fn lay_out_in_rows(
     title: &TitleBlock,
     lang: Lang,
 ) -> Result<Vec<Plate>, BuildError> {
-    let blocks: Vec<Block> = blocks.into_iter().map(|b| b.localised(lang)).collect();
+    let blocks: Vec<Block> = blocks
+        .into_iter()
+        .map(|b| match b.localised(lang) {
+            Block::Table(t) => Block::Table(t.with_room()),
+            b => b,
+        })
+        .collect();
     let sizes: Vec<DVec2> = blocks.iter().map(Block::size).collect();
     let placed = pack(&sheet, &sizes, series).map_err(|k| too_large(&sheet, &blocks, &sizes, k))?;
     let count = placed.iter().map(|p| p.0 + 1).max().unwrap_or(1);
