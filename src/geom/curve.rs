@@ -3,11 +3,13 @@
 //! A diagram's curve (an open curve whose points run one way along the abscissa: y of x) is
 //! drawn shape-preserving, as the draughtsman's French curve follows the points: each piece
 //! the cubic Hermite whose end slopes are the weighted harmonic mean of the neighbouring
-//! chords' slopes (Fritsch–Butland, the `PCHIP` of numerical libraries), zero at a local
-//! extreme, so that a piece never leaves the range of its two points, never overshoots and
-//! never runs past the end points; where the points stand on two straight lines meeting
-//! (the «+ −» law's dS/dφ, a triangle) the lines are drawn to their corner. Every other
-//! curve (a trajectory, a hodograph, a closed curve) is drawn Catmull–Rom.
+//! chords' slopes (Fritsch–Butland, the `PCHIP` of numerical libraries), so that a piece
+//! between two points neither of which is an extreme never leaves their range and never
+//! runs past the end points; where the points turn, the curve goes on to the extreme between
+//! them as the parabola through the three points does (Bessel's slope, bounded), so that a
+//! reading of the drawn curve's extreme ([`points`]) finds it there; where the points stand
+//! on two straight lines meeting (a triangle) the lines are drawn to their corner. Every
+//! other curve (a trajectory, a hodograph, a closed curve) is drawn Catmull–Rom.
 
 use crate::geom::DVec2;
 
