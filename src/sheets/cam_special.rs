@@ -62,11 +62,7 @@ pub(super) fn build(
     let drawings = blocks.len();
     let mut lines = data_lines(cam, lang).map_err(study)?;
     lines.push(String::new());
-    let last = match cam.profile {
-        SpecialProfile::FlatRocker { .. } => CamText::RadiusVector,
-        SpecialProfile::Sliding { .. } => CamText::TravelAt,
-    };
-    lines.extend(legend(last, lang));
+    lines.extend(legend(last_column(&cam.profile).1, lang));
     lines.push(super::drafting_line(
         session.drafting(),
         super::Errs::Diagrams,
@@ -178,6 +174,14 @@ fn data_lines(cam: &Special, lang: Lang) -> Result<Vec<String>, crate::cam::CamE
     Ok(out)
 }
 
+/// The points table's last column: its symbol, and the legend's line saying what it is.
+fn last_column(profile: &SpecialProfile) -> (&'static str, CamText) {
+    match profile {
+        SpecialProfile::FlatRocker { .. } => ("R", CamText::RadiusVector),
+        SpecialProfile::Sliding { .. } => ("ξ", CamText::TravelAt),
+    }
+}
+
 /// One row per point: φ, S, dS/dφ, d²S/dφ² (read), the pressure angle read and exact, and
 /// the contact's radius vector (flat-faced rocker) or the follower's place ξ on the cam.
 fn points_table(cam: &Special, exact: &[f64], lang: Lang) -> Vec<TableBlock> {
@@ -206,10 +210,7 @@ fn points_table(cam: &Special, exact: &[f64], lang: Lang) -> Vec<TableBlock> {
         })
         .collect();
     let mm = unit_in("mm", lang);
-    let last = match cam.profile {
-        SpecialProfile::FlatRocker { .. } => "R",
-        SpecialProfile::Sliding { .. } => "ξ",
-    };
+    let last = last_column(&cam.profile).0;
     let columns = vec![
         (Text::Number.get(lang).into(), 8.0),
         ("φ, °".into(), 14.0),

@@ -230,6 +230,15 @@ impl Request {
     }
 }
 
+/// The tighter of two optional bounds (`least` of both where both bind, else the one that
+/// does).
+fn tighter<T>(a: Option<T>, b: Option<T>, least: impl Fn(T, T) -> T) -> Option<T> {
+    match (a, b) {
+        (Some(a), Some(b)) => Some(least(a, b)),
+        (a, b) => a.or(b),
+    }
+}
+
 /// A pole of a plan: written first in a joint label.
 fn is_pole(name: &str) -> bool {
     matches!(plain(name).as_str(), "p" | "π")
@@ -381,14 +390,8 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
                 let j = &mut joined[at];
                 j.steps.extend(r.steps);
                 j.gap = j.gap.max(r.gap);
-                j.within = match (j.within, r.within) {
-                    (Some(a), Some(b)) => Some(a.min(b)),
-                    (a, b) => a.or(b),
-                };
-                j.column = match (j.column, r.column) {
-                    (Some(a), Some(b)) => Some([a[0].min(b[0]), a[1].min(b[1])]),
-                    (a, b) => a.or(b),
-                };
+                j.within = tighter(j.within, r.within, f64::min);
+                j.column = tighter(j.column, r.column, |a, b| [a[0].min(b[0]), a[1].min(b[1])]);
                 if j.toward == DVec2::ZERO {
                     j.toward = r.toward;
                 }
