@@ -96,7 +96,32 @@ fn rules(kind: FlywheelKind) -> &'static [(&'static str, f64, &'static str)] {
 
 /// The size of a flywheel of inertia `j` (kg·m², ≥ 0).
 pub fn size(spec: &FlywheelSpec, j: f64) -> Size {
-    let d = (j.max(0.0) / (spec.k_j * spec.rho)).powf(0.2);
+    of_diameter(spec, (j.max(0.0) / (spec.k_j * spec.rho)).powf(0.2), j)
+}
+
+/// The flywheel made for an inertia `j` (kg·m², ≥ 0): its outer diameter rounded up to a
+/// whole [`diameter_step`], as a designer takes it, and its inertia K_j·ρ·D⁵ at that
+/// diameter, below `j` by a rounding residue at most.
+pub fn made(spec: &FlywheelSpec, j: f64) -> Size {
+    let exact = size(spec, j).d;
+    let step = diameter_step(exact);
+    // A diameter a rounding residue over a whole step is that step.
+    let d = ((exact / step) * (1.0 - 1e-12)).ceil() * step;
+    of_diameter(spec, d, spec.k_j * spec.rho * d.powi(5))
+}
+
+/// The step an outer diameter `d` (m) is rounded up to, m: whole 10 mm, whole mm below
+/// 100 mm.
+pub fn diameter_step(d: f64) -> f64 {
+    if d < 0.1 {
+        0.001
+    } else {
+        0.01
+    }
+}
+
+/// A flywheel of outer diameter `d` (m) and inertia `j` (kg·m²).
+fn of_diameter(spec: &FlywheelSpec, d: f64, j: f64) -> Size {
     let mass = spec.k_m * spec.rho * d.powi(3);
     let mut dims = vec![("D", d)];
     for &(name, factor, of) in rules(spec.kind) {

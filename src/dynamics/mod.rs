@@ -32,7 +32,7 @@ mod twin;
 mod work;
 
 pub use draw::diagrams;
-pub use flywheel::Size;
+pub use flywheel::{diameter_step, Size};
 pub use part::PART_MM;
 pub use reduce::{Breakdown, LinkShare, LoadShare, Reduced, Reducer};
 pub use rows::{findings, noted, rows};
@@ -136,6 +136,8 @@ pub struct Dynamics {
     pub w_avg: f64,
     /// The positions' labels.
     pub labels: Vec<String>,
+    /// Every how many positions one is tabled ([`Dynamics::tabled`]).
+    pub step: usize,
     /// The positions' travel from position 1, rad.
     pub travel: Vec<f64>,
     /// The reduction from the velocity plans.
@@ -161,10 +163,40 @@ pub struct Dynamics {
     pub size: flywheel::Size,
     /// The twin's flywheel: its size from the exact inertia.
     pub exact_size: flywheel::Size,
+    /// The flywheel made from [`Self::size`], its diameter rounded up: the part drawn.
+    pub made: flywheel::Size,
+    /// The δ the flywheel made gives.
+    pub delta_made: f64,
     /// ω(φ) with the flywheel.
     pub omega: crate::construct::Figure,
-    /// The flywheel's part drawing ([`Self::size`]); empty when none is needed.
+    /// The flywheel's part drawing ([`Self::made`]); empty when none is needed.
     pub wheel: crate::construct::Figure,
+}
+
+impl Dynamics {
+    /// The positions the tables give (index, label): every one, or the plans' among the
+    /// diagrams' intermediate points ([`Self::table_every`]).
+    pub fn tabled(&self) -> impl Iterator<Item = (usize, &String)> {
+        self.labels.iter().enumerate().step_by(self.step.max(1))
+    }
+
+    /// Table the plans' positions `names` at every `step`-th position of the diagrams; those
+    /// between are the diagrams' intermediate points, named by the two they stand between
+    /// ("1–2"). Nothing changes unless there are `step` positions to each name.
+    pub fn table_every(&mut self, step: usize, names: &[String]) {
+        if step == 0 || names.len() * step != self.labels.len() {
+            return;
+        }
+        for (k, label) in self.labels.iter_mut().enumerate() {
+            let i = k / step;
+            *label = if k % step == 0 {
+                names[i].clone()
+            } else {
+                format!("{}–{}", names[i], names[(i + 1) % names.len()])
+            };
+        }
+        self.step = step;
+    }
 }
 
 /// Carry out the dynamic study over the numbered, equally spaced positions of `plan` with
@@ -239,12 +271,15 @@ pub fn analyse(
     // The flywheel as the sheet's construction finds it; the twin's from the exact inertia.
     let size = flywheel::size(&spec.flywheel, diagrams.wittenbauer.j_fw);
     let exact_size = flywheel::size(&spec.flywheel, exact.j_fw);
+    let made = flywheel::made(&spec.flywheel, size.j);
+    let delta_made = cycle.with_flywheel(made.j.max(0.0), w_avg).delta();
     let omega = draw::omega_figure(&cycle, &exact, diagrams.scale_phi, ctx)?;
-    let wheel = part::drawing(&size, ctx)?;
+    let wheel = part::drawing(&made, ctx)?;
     Ok(Dynamics {
         spec: spec.clone(),
         w_avg,
         labels,
+        step: 1,
         travel,
         graphical,
         analytic,
@@ -257,6 +292,8 @@ pub fn analyse(
         delta_of,
         size,
         exact_size,
+        made,
+        delta_made,
         omega,
         wheel,
     })

@@ -16,7 +16,7 @@ pub fn rows(d: &Dynamics) -> Vec<Row> {
     let m_scale = big(&|i| d.analytic[i].m());
     let j_scale = big(&|i| d.analytic[i].j);
     let t_scale = big(&|i| d.cycle.delta_t(d.travel[i]));
-    for (i, label) in d.labels.iter().enumerate() {
+    for (i, label) in d.tabled() {
         let (g, a) = (&d.graphical[i], &d.analytic[i]);
         let mut push = |symbol: Symbol, subject: &str, method: Method, g: f64, a: f64, s: f64| {
             rows.push(Row::new(
@@ -223,9 +223,9 @@ fn seed_notes(d: &Dynamics, seed: &SeedClaims, out: &mut Vec<DynamicsNote>) {
         // its largest value.
         let top = d.analytic.iter().fold(0.0f64, |m, a| m.max(a.j - c));
         let ratios: Vec<f64> = seed
-            .j_red
-            .iter()
-            .zip(&d.analytic)
+            .j_red_among(d.analytic.len())
+            .into_iter()
+            .map(|(k, s)| (s, &d.analytic[k]))
             .filter(|(_, a)| a.j - c > 0.1 * top)
             .map(|(s, a)| (s - c) / (a.j - c))
             .collect();

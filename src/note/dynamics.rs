@@ -82,17 +82,33 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 /// The position whose reduced moment is largest: the worked example well away from a dead
 /// point.
 fn worked_position(d: &Dynamics) -> Option<usize> {
-    (0..d.analytic_shares.len()).max_by(|&a, &b| {
+    d.tabled().map(|(i, _)| i).max_by(|&a, &b| {
         let m = |i: usize| d.analytic_shares[i].reduced().m().abs();
         m(a).total_cmp(&m(b))
     })
+}
+
+/// The tabled positions' labels and rows of `cols` (a row per position of the diagrams).
+fn tabled(d: &Dynamics, cols: Vec<Column>) -> (Vec<String>, Vec<Column>) {
+    let keep: Vec<usize> = d.tabled().map(|(i, _)| i).collect();
+    let labels = keep.iter().map(|&i| d.labels[i].clone()).collect();
+    let cols = cols
+        .into_iter()
+        .map(|c| Column {
+            values: keep
+                .iter()
+                .map(|&i| c.values.get(i).copied().flatten())
+                .collect(),
+            ..c
+        })
+        .collect();
+    (labels, cols)
 }
 
 /// Table 8: the analytic input: the speeds of the centres, the links' ω, the angles of
 /// the loads to their points' velocities.
 fn input_table(w: &mut Writer<'_, '_>, d: &Dynamics) {
     let lang = w.lang;
-    let positions = d.labels.clone();
     let (loads, links) = loads_and_links(d);
     let load_of = |b: &Breakdown, name: &str| b.loads.iter().find(|l| l.name == name).cloned();
     let link_of = |b: &Breakdown, k: u32| b.links.iter().find(|l| l.link == k).copied();
@@ -127,13 +143,13 @@ fn input_table(w: &mut Writer<'_, '_>, d: &Dynamics) {
         ));
     }
     let caption = w.word(T::ReductionInput);
+    let (positions, cols) = tabled(d, cols);
     numbers(w, caption, &positions, &cols);
 }
 
 /// Table 9: the reduced moment of every load, Σ, and the plans' M_пр against it.
 fn moment_table(w: &mut Writer<'_, '_>, d: &Dynamics) {
     let lang = w.lang;
-    let positions = d.labels.clone();
     let (loads, _) = loads_and_links(d);
     let load_of = |b: &Breakdown, name: &str| b.loads.iter().find(|l| l.name == name).cloned();
     // Table 9: the reduced moment of every load, Σ, and the plans' M_пр against it.
@@ -164,6 +180,7 @@ fn moment_table(w: &mut Writer<'_, '_>, d: &Dynamics) {
         d.graphical.iter().map(|g| Some(g.m())).collect(),
     ));
     let caption = w.word(T::ReducedMoments);
+    let (positions, cols) = tabled(d, cols);
     numbers(w, caption, &positions, &cols);
 }
 
@@ -171,7 +188,6 @@ fn moment_table(w: &mut Writer<'_, '_>, d: &Dynamics) {
 /// the twin's, and the links' kinetic energy T_зв = (J_пр − J_const)·ω_ср²/2.
 fn inertia_table(w: &mut Writer<'_, '_>, d: &Dynamics) {
     let lang = w.lang;
-    let positions = d.labels.clone();
     let (_, links) = loads_and_links(d);
     let link_of = |b: &Breakdown, k: u32| b.links.iter().find(|l| l.link == k).copied();
     let (an, gr) = (w.word(T::AnalyticShort), w.word(T::GraphicalShort));
@@ -207,6 +223,7 @@ fn inertia_table(w: &mut Writer<'_, '_>, d: &Dynamics) {
             .collect(),
     ));
     let caption = w.word(T::ReducedInertias);
+    let (positions, cols) = tabled(d, cols);
     numbers(w, caption, &positions, &cols);
     if j_const > 0.0 {
         w.doc.par(&[

@@ -168,17 +168,9 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
         ("ρ", M::Density, "kg/m^3"),
     ];
     explain_words(w, &items);
-    w.formula(&format!(
-        "{} = {} ρ {}^3 = {} dot {} dot {}^3 = {}{}",
-        sym("m"),
-        sym("K_{m}"),
-        sym("D"),
-        num(fw.k_m, 4, lang),
-        num(fw.rho, 5, lang),
-        num(s.d, 4, lang),
-        num(s.mass, 4, lang),
-        unit(&unit_in("kg", lang))
-    ));
+    taken(w, d);
+    let s = &d.made;
+    shape_law(w, ("m", "K_{m}", fw.k_m), 3, d, (s.mass, 4, "kg"));
     let items = [("m", M::FlywheelMass, "kg"), ("K_{m}", M::ShapeM, "")];
     explain_words(w, &items);
     let verdict = crate::sheets::flywheel_verdict(d, lang).join(" ");
@@ -227,4 +219,45 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
         .collect();
     w.doc
         .par(&[text(w.word(T::FlywheelSize)), inline(&dims.join(", "))]);
+}
+
+/// The outer diameter taken, the worked one rounded up, and the flywheel's J at it: the part
+/// drawn.
+fn taken(w: &mut Writer<'_, '_>, d: &Dynamics) {
+    let lang = w.lang;
+    let fw = &d.spec.flywheel;
+    let sig = |x: f64, n: usize| crate::scale::format_sig(x, n, lang);
+    let s = &d.made;
+    let step = crate::dynamics::diameter_step(d.size.d);
+    let taken = fill(
+        w.word(N::TakenDiameter),
+        &[("step", sig(step * 1e3, 3)), ("d", sig(s.d, 4))],
+    );
+    w.doc.say(&taken);
+    shape_law(w, ("J", "K_{j}", fw.k_j), 5, d, (s.j, 5, "kg*m^2"));
+    let items = [("J", M::FlywheelInertia, "kg*m^2")];
+    explain_words(w, &items);
+}
+
+/// A quantity of the flywheel made by its shape law, worked: `lhs` = K·ρ·D^`power` with the
+/// coefficient (its symbol, its value), and the value (to its significant digits, in its unit).
+fn shape_law(
+    w: &mut Writer<'_, '_>,
+    (lhs, k_sym, k): (&str, &str, f64),
+    power: u32,
+    d: &Dynamics,
+    (value, digits, unit_key): (f64, usize, &str),
+) {
+    let lang = w.lang;
+    w.formula(&format!(
+        "{} = {} ρ {}^{power} = {} dot {} dot {}^{power} = {}{}",
+        sym(lhs),
+        sym(k_sym),
+        sym("D"),
+        num(k, 4, lang),
+        num(d.spec.flywheel.rho, 5, lang),
+        num(d.made.d, 4, lang),
+        num(value, digits, lang),
+        unit(&unit_in(unit_key, lang))
+    ));
 }

@@ -224,11 +224,12 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         FlywheelKind::Disc => DynamicsText::Disc.get(lang),
     };
     out.push(format!(
-        "{kind}, {}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {}, m = K_{{m}}ρD^3 = {} {}",
+        "{kind}, {}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} → {} {}, m = K_{{m}}ρD^3 = {} {}",
         DynamicsText::SizedByConstruction.get(lang),
-        format_fixed(z.d * 1e3, 0, lang),
+        format_fixed(z.d * 1e3, 1, lang),
+        format_fixed(d.made.d * 1e3, 0, lang),
         unit_in("mm", lang),
-        num(z.mass, lang),
+        num(d.made.mass, lang),
         unit_in("kg", lang)
     ));
     out
@@ -250,7 +251,6 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
         ConstantMoment::Driving => (-1.0, "M_{с}"),
         ConstantMoment::Resisting => (1.0, "M_{д}"),
     };
-    let n = d.labels.len();
     let dt = |i: usize| {
         (
             d.diagrams.delta_t.get(i).copied().unwrap_or(f64::NAN),
@@ -260,7 +260,7 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
     // Each quantity's two columns at one precision (digits::Column: four digits of its
     // largest), as a drawing's table gives it.
     let both = |f: &dyn Fn(usize) -> (f64, f64)| {
-        Precision::of((0..n).flat_map(|i| {
+        Precision::of(d.tabled().flat_map(|(i, _)| {
             let (g, a) = f(i);
             [g, a]
         }))
@@ -269,9 +269,7 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
     let j_col = both(&|i| (d.graphical[i].j, d.analytic[i].j));
     let t_col = both(&dt);
     let rows = d
-        .labels
-        .iter()
-        .enumerate()
+        .tabled()
         .map(|(i, label)| {
             let (g, a) = (&d.graphical[i], &d.analytic[i]);
             let (dt, dt_a) = dt(i);

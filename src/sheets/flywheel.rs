@@ -47,7 +47,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let mut title = super::title_block(session.scene(), "", d.wheel.scale, lang);
     title.title = DynamicsText::Flywheel.get(lang).to_string();
     // A part drawing's title block gives its mass, kg, and its material.
-    title.mass = format_sig(d.size.mass, 3, lang);
+    title.mass = format_sig(d.made.mass, 3, lang);
     let grade = if d.spec.flywheel.cast_iron() {
         DynamicsText::CastIronGrade
     } else {
@@ -118,9 +118,16 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
             format_sig(fw.k_m, 4, lang),
         ),
         format!(
-            "D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {mm}, m = K_{{m}}ρD^3 = {} {}",
-            format_fixed(s.d * 1e3, 0, lang),
-            format_sig(s.mass, 4, lang),
+            "D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {mm}; {}",
+            format_fixed(s.d * 1e3, 1, lang),
+            DynamicsText::Taken
+                .get(lang)
+                .replace("{d}", &format_fixed(d.made.d * 1e3, 0, lang)),
+        ),
+        format!(
+            "J = K_{{j}}ρD^5 = {} {kgm2}, m = K_{{m}}ρD^3 = {} {}",
+            format_sig(d.made.j, 4, lang),
+            format_sig(d.made.mass, 4, lang),
             unit_in("kg", lang),
         ),
     ];
@@ -139,13 +146,13 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
 /// printed 1/δ's last digit.
 const DELTA_MARGIN: f64 = 1e-3;
 
-/// The conclusion on the flywheel a hand-in draws (sized from the construction's J_м): the δ
-/// it gives against the δ asked and, when it falls short, by how much the construction's
-/// J_м is under the exact one and the J_м and D that keep δ (lines of label markup; the sheet
-/// writes a line each, the note one paragraph).
+/// The conclusion on the flywheel a hand-in draws (made from the construction's J_м, its
+/// diameter rounded up): the δ it gives against the δ asked and, when it falls short, by how
+/// much its J_м is under the exact one and the J_м and D that keep δ (lines of label markup;
+/// the sheet writes a line each, the note one paragraph).
 pub(crate) fn verdict(d: &Dynamics, lang: Lang) -> Vec<String> {
     let inverse = |x: f64| format!("1/{}", format_sig(1.0 / x, 3, lang));
-    let (got, asked) = (d.delta_of[0], d.spec.delta);
+    let (got, asked) = (d.delta_made, d.spec.delta);
     let met = got <= asked * (1.0 + DELTA_MARGIN);
     let first = DynamicsText::DeltaVerdict
         .get(lang)
@@ -153,9 +160,12 @@ pub(crate) fn verdict(d: &Dynamics, lang: Lang) -> Vec<String> {
         .replace("{rel}", if met { "≤" } else { ">" })
         .replace("{asked}", &inverse(asked));
     if met {
-        return vec![first, DynamicsText::DeltaMet.get(lang).to_string()];
+        let met = DynamicsText::DeltaMet
+            .get(lang)
+            .replace("{d}", &format_fixed(d.made.d * 1e3, 0, lang));
+        return vec![first, met];
     }
-    let short = 100.0 * (1.0 - d.size.j / d.exact.j_fw);
+    let short = 100.0 * (1.0 - d.made.j / d.exact.j_fw);
     vec![
         first,
         DynamicsText::DeltaShort
@@ -174,12 +184,13 @@ pub(crate) fn verdict(d: &Dynamics, lang: Lang) -> Vec<String> {
 /// Every dimension with the proportion it follows (`d_{1}` = 0,2D) and its value, mm.
 fn dimensions_table(d: &Dynamics, lang: Lang) -> TableBlock {
     let rows = d
-        .size
+        .made
         .dims
         .iter()
         .map(|&(name, value)| {
-            let rule = d.size.rule(name).map_or_else(
-                || "(J_{м}/(K_{j}ρ))^{1/5}".to_string(),
+            let rule = d.made.rule(name).map_or_else(
+                // The D taken: the worked one rounded up.
+                || "≥ (J_{м}/(K_{j}ρ))^{1/5}".to_string(),
                 |(factor, of)| format!("{}{of}", format_number(factor, lang)),
             );
             vec![name.to_string(), rule, format_fixed(value * 1e3, 0, lang)]

@@ -15,8 +15,8 @@ impl Cache for Flywheel {
 
 impl<'s> Session<'s> {
     /// The dynamic study (`[dynamics]`) at the kinematic study's scales: the reduction over
-    /// the scene's numbered positions from their velocity plans (the same plans when
-    /// `dynamics.count` is the scene's count; its own plan of positions otherwise), the
+    /// [`crate::dynamics::DynamicsSpec::positions`] from their velocity plans (the scene's drawn plans when
+    /// they are as many; its own plan of positions otherwise), the
     /// diagrams, the exact energy equation and the flywheel.
     pub fn dynamics(&self) -> Cached<crate::dynamics::Dynamics> {
         self.caches.get::<Flywheel>((), || {
@@ -29,8 +29,8 @@ impl<'s> Session<'s> {
             let sc = self.kin_scales()?;
             let w1 = self.w1()?;
             let ctx = self.ctx()?;
-            let count = spec.count.unwrap_or(self.scene.positions.count);
-            let d = if count == self.scene.positions.count {
+            let (count, step) = spec.positions(self.scene.positions.count);
+            let mut d = if count == self.scene.positions.count {
                 let plan = self.positions(sc.l)?;
                 let vel = self.velocities(&sc)?;
                 let vps: Vec<Option<&KinPlan>> = vel.iter().map(|v| v.plan()).collect();
@@ -56,6 +56,15 @@ impl<'s> Session<'s> {
                 crate::dynamics::analyse(spec, forces, &plan, &vps, w1, &ctx)
                     .map_err(|e| self.dynamics_error(e))?
             };
+            // The plans' positions among the diagrams' own: tabled under the plans' names.
+            if let Some(step) = step.filter(|&s| s > 1) {
+                let plan = self.positions(sc.l)?;
+                let names: Vec<String> = kinematics::numbered(&plan)
+                    .iter()
+                    .map(|(_, p)| p.label.clone())
+                    .collect();
+                d.table_every(step as usize, &names);
+            }
             self.logged("dynamics diagrams", "", d.diagrams.scale_a);
             Ok(Arc::new(d))
         })

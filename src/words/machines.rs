@@ -80,15 +80,17 @@ catalogue! {
             "Conclusion: δ = {got} {rel} [δ] = {asked}."
         ),
         DeltaMet => (
-            "Маховик по J_{м} построения обеспечивает [δ].",
-            "Маховик за J_{м} побудови забезпечує [δ].",
-            "The flywheel of the construction's J_{м} keeps [δ]."
+            "Маховик D = {d} мм обеспечивает [δ].",
+            "Маховик D = {d} мм забезпечує [δ].",
+            "The flywheel of D = {d} mm keeps [δ]."
         ),
         DeltaShort => (
-            "J_{м} построения на {pct} % меньше точного (по {n} положениям);",
-            "J_{м} побудови на {pct} % менший за точний (за {n} положеннями);",
-            "The construction's J_{м} is {pct} % under the exact one ({n} positions);"
+            "J маховика на {pct} % меньше точного J_{м} (по {n} положениям);",
+            "J маховика на {pct} % менший за точний J_{м} (за {n} положеннями);",
+            "The flywheel's J is {pct} % under the exact J_{м} ({n} positions);"
         ),
+        // The diameter a designer takes: the worked one rounded up.
+        Taken => ("принимаем D = {d} мм", "приймаємо D = {d} мм", "taken D = {d} mm"),
         DeltaNeeds => (
             "[δ] обеспечивает J_{м} ≥ {exact} {kgm2} (D ≥ {d} {mm}).",
             "[δ] забезпечує J_{м} ≥ {exact} {kgm2} (D ≥ {d} {mm}).",

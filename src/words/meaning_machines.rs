@@ -60,6 +60,7 @@ catalogue! {
         ShapeJ => ("коэффициент формы в J = K_{j}·ρ·D⁵", "коефіцієнт форми в J = K_{j}·ρ·D⁵", "the shape coefficient of J = K_{j}·ρ·D⁵"),
         ShapeM => ("коэффициент формы в m = K_{m}·ρ·D³", "коефіцієнт форми в m = K_{m}·ρ·D³", "the shape coefficient of m = K_{m}·ρ·D³"),
         FlywheelMass => ("масса маховика", "маса маховика", "the flywheel's mass"),
+        FlywheelInertia => ("момент инерции маховика принятого диаметра", "момент інерції маховика прийнятого діаметра", "the moment of inertia of the flywheel of the diameter taken"),
         ConstantMoment => ("постоянный приведённый момент", "сталий зведений момент", "the constant reduced moment"),
         MeanPower => ("средняя мощность за цикл", "середня потужність за цикл", "the mean power over the cycle"),
         RimSpeed => ("окружная скорость обода маховика", "колова швидкість обода маховика", "the peripheral speed of the flywheel's rim"),

@@ -144,6 +144,11 @@ catalogue! {
         ),
         CastIron => ("чугуна", "чавуну", "cast iron"),
         Steel => ("стали", "сталі", "steel"),
+        TakenDiameter => (
+            "Наружный диаметр округляем вверх до {step} мм: принимаем D = {d} м; момент инерции маховика при нём:",
+            "Зовнішній діаметр округлюємо вгору до {step} мм: приймаємо D = {d} м; момент інерції маховика при ньому:",
+            "The outer diameter is rounded up to {step} mm: D = {d} m is taken; the flywheel's moment of inertia at it:"
+        ),
         RimSpeed => ("Окружная скорость обода:", "Колова швидкість обода:", "The rim's peripheral speed:"),
         RimSpeedWithin => (
             "Окружная скорость обода не превышает допускаемой для {material} скорости [v] = {limit} м/с.",

@@ -44,15 +44,19 @@ fn the_shaper_report_meets_the_acceptance_values() {
         let exact = num(r, "analytic");
         assert!((exact - 25.52).abs() < 0.01 * 25.52, "{exact}");
         assert!(r["position"].is_null());
-        // Each route shows its method error (12 positions: between 1 % and 30 %).
-        let e = num(r, "rel_error").abs();
-        assert!(e > 0.01 && e < 0.3, "{r}");
     }
-    // δ: the exact flywheel gives 1/15 to 1e-6; each route's flywheel gives more.
-    for r in rows(&v, "delta") {
+    // Over the diagrams' 24 positions (the 12 plans' and those between) Wittenbauer's
+    // tangents find J_м within 1 % (15 % short over the 12 alone); Merkin's route keeps its
+    // own error, over the exact flywheel by about 6 % (its J_I on the exact data, 27,00).
+    let e = |r: &serde_json::Value| num(r, "rel_error");
+    assert!(e(j[0]).abs() < 0.01 && e(j[0]) != 0.0, "{}", j[0]);
+    assert!(e(j[1]) > 0.03 && e(j[1]) < 0.1, "{}", j[1]);
+    // δ: the exact flywheel gives 1/15 to 1e-6; Merkin's heavier one less.
+    let delta = rows(&v, "delta");
+    for r in &delta {
         assert!((num(r, "analytic") - 1.0 / 15.0).abs() < 1e-6, "{r}");
-        assert!(num(r, "graphical") > 1.0 / 15.0, "{r}");
     }
+    assert!(num(delta[1], "graphical") < 1.0 / 15.0, "{}", delta[1]);
     // Per position: M_red and J_red off the velocity plans equal the twin at drafting 0.
     for q in ["M_red", "J_red"] {
         let rs = rows(&v, q);

@@ -163,11 +163,11 @@ fn the_shaper_note_works_the_dynamics_with_the_studys_numbers() {
                 "{lang:?}: J_м {m:?} {j}"
             );
         }
-        // M_пр and J_пр worked at the position of the largest reduced moment, not a dead point.
+        // M_пр and J_пр worked at the tabled position (a plan's) of the largest reduced
+        // moment, not a dead point.
         let (i, b) = d
-            .analytic_shares
-            .iter()
-            .enumerate()
+            .tabled()
+            .map(|(i, _)| (i, &d.analytic_shares[i]))
             .max_by(|x, y| x.1.reduced().m().abs().total_cmp(&y.1.reduced().m().abs()))
             .expect("positions");
         assert!(
@@ -183,13 +183,23 @@ fn the_shaper_note_works_the_dynamics_with_the_studys_numbers() {
             shows(&text, &shown(b.reduced().j, 5, lang)),
             "{lang:?}: J_пр"
         );
-        // The flywheel: D = (J/(K_j·ρ))^(1/5), m = K_m·ρ·D³, the rim speed under 25 m/s.
+        // The flywheel: D = (J/(K_j·ρ))^(1/5), taken at the whole 10 mm above, its
+        // J = K_j·ρ·D⁵, m = K_m·ρ·D³ and the rim speed under 25 m/s at the D taken.
         let size = &d.size;
         let want_d = (size.j / (0.0076 * 7540.0)).powf(0.2);
         assert!((size.d - want_d).abs() < 1e-12);
         assert!(shows(&text, &shown(size.d, 4, lang)), "{lang:?}: D");
-        assert!(shows(&text, &shown(size.mass, 4, lang)), "{lang:?}: m");
-        let v = size.rim_speed(d.w_avg);
+        let taken = (want_d * 100.0).ceil() / 100.0;
+        let made = &d.made;
+        assert!((made.d - taken).abs() < 1e-12, "{}", made.d);
+        assert!(shows(&text, &shown(taken, 4, lang)), "{lang:?}: D taken");
+        let j = 0.0076 * 7540.0 * taken.powi(5);
+        assert!(
+            shows(&text, &shown(j, 5, lang)),
+            "{lang:?}: J at the D taken"
+        );
+        assert!(shows(&text, &shown(made.mass, 4, lang)), "{lang:?}: m");
+        let v = made.rim_speed(d.w_avg);
         assert!(
             v < 25.0 && shows(&text, &shown(v, 4, lang)),
             "{lang:?}: v = {v}"
