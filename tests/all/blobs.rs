@@ -24,8 +24,6 @@ const BLOB: f64 = 0.6;
 /// be needed.
 const EXEMPT: &[(&str, &str, &str)] = &[
     ("shaper/dynamics", "(40, 145) mm", "the pole P of the moment diagram's integration: 24 rays, one an interval of the diagrams' 24 positions"),
-    ("v-engine/dynamics", "(35, 100) mm", "the pole P of the moment diagram's integration: 24 rays, one an interval of the diagrams' 24 positions"),
-    ("v-engine/dynamics", "(40, 100) mm", "the pole P of the moment diagram's integration: 24 rays, one an interval of the diagrams' 24 positions"),
 ];
 
 /// The squares of `p`'s views more than [`BLOB`] inked, as "(x, y) mm".

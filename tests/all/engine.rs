@@ -38,11 +38,11 @@ fn the_engine_report_has_the_driving_work_and_the_resisting_moment() {
     }
     let j = rows(&v, "J_flywheel");
     assert_eq!(j.len(), 2);
-    // Over the diagrams' 24 positions each route is within 1 % of the exact flywheel (4 %
-    // short over the plans' 12 alone), never exactly it.
+    // Over the scene's 12 positions (its `count`) each route is about 4 % short of the exact
+    // flywheel (within 1 % over 24), never exactly it.
     for r in &j {
-        let e = num(r, "rel_error").abs();
-        assert!(e > 0.0 && e < 0.01, "{r}");
+        let e = num(r, "rel_error");
+        assert!(e < -0.01 && e > -0.05, "{r}");
     }
     // Per position: the reduction off the velocity plans equals the twin at drafting 0.
     for q in ["M_red", "J_red"] {
