@@ -272,7 +272,7 @@ pub fn analyse(
     let size = flywheel::size(&spec.flywheel, diagrams.wittenbauer.j_fw);
     let exact_size = flywheel::size(&spec.flywheel, exact.j_fw);
     let made = flywheel::made(&spec.flywheel, size.j);
-    let delta_made = cycle.with_flywheel(made.j.max(0.0), w_avg).delta();
+    let delta_made = cycle.with_flywheel(made.j, w_avg).delta();
     let omega = draw::omega_figure(&cycle, &exact, diagrams.scale_phi, ctx)?;
     let wheel = part::drawing(&made, ctx)?;
     Ok(Dynamics {

@@ -122,7 +122,8 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
             format_fixed(s.d * 1e3, 1, lang),
             DynamicsText::Taken
                 .get(lang)
-                .replace("{d}", &format_fixed(d.made.d * 1e3, 0, lang)),
+                .replace("{d}", &format_fixed(d.made.d * 1e3, 0, lang))
+                .replace("{mm}", &mm),
         ),
         format!(
             "J = K_{{j}}ρD^5 = {} {kgm2}, m = K_{{m}}ρD^3 = {} {}",
@@ -162,7 +163,8 @@ pub(crate) fn verdict(d: &Dynamics, lang: Lang) -> Vec<String> {
     if met {
         let met = DynamicsText::DeltaMet
             .get(lang)
-            .replace("{d}", &format_fixed(d.made.d * 1e3, 0, lang));
+            .replace("{d}", &format_fixed(d.made.d * 1e3, 0, lang))
+            .replace("{mm}", &unit_in("mm", lang));
         return vec![first, met];
     }
     let short = 100.0 * (1.0 - d.made.j / d.exact.j_fw);

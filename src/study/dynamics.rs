@@ -15,9 +15,9 @@ impl Cache for Flywheel {
 
 impl<'s> Session<'s> {
     /// The dynamic study (`[dynamics]`) at the kinematic study's scales: the reduction over
-    /// [`crate::dynamics::DynamicsSpec::positions`] from their velocity plans (the scene's drawn plans when
-    /// they are as many; its own plan of positions otherwise), the
-    /// diagrams, the exact energy equation and the flywheel.
+    /// [`crate::dynamics::DynamicsSpec::positions`] from their velocity plans (the scene's
+    /// drawn plans when they are as many; its own plan of positions otherwise), the diagrams,
+    /// the exact energy equation and the flywheel.
     pub fn dynamics(&self) -> Cached<crate::dynamics::Dynamics> {
         self.caches.get::<Flywheel>((), || {
             let spec = self

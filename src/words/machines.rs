@@ -80,9 +80,9 @@ catalogue! {
             "Conclusion: δ = {got} {rel} [δ] = {asked}."
         ),
         DeltaMet => (
-            "Маховик D = {d} мм обеспечивает [δ].",
-            "Маховик D = {d} мм забезпечує [δ].",
-            "The flywheel of D = {d} mm keeps [δ]."
+            "Маховик D = {d} {mm} обеспечивает [δ].",
+            "Маховик D = {d} {mm} забезпечує [δ].",
+            "The flywheel of D = {d} {mm} keeps [δ]."
         ),
         DeltaShort => (
             "J маховика на {pct} % меньше точного J_{м} (по {n} положениям);",
@@ -90,7 +90,7 @@ catalogue! {
             "The flywheel's J is {pct} % under the exact J_{м} ({n} positions);"
         ),
         // The diameter a designer takes: the worked one rounded up.
-        Taken => ("принимаем D = {d} мм", "приймаємо D = {d} мм", "taken D = {d} mm"),
+        Taken => ("принимаем D = {d} {mm}", "приймаємо D = {d} {mm}", "taken D = {d} {mm}"),
         DeltaNeeds => (
             "[δ] обеспечивает J_{м} ≥ {exact} {kgm2} (D ≥ {d} {mm}).",
             "[δ] забезпечує J_{м} ≥ {exact} {kgm2} (D ≥ {d} {mm}).",
