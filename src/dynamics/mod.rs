@@ -169,8 +169,9 @@ pub struct Dynamics {
     pub delta_made: f64,
     /// ω(φ) with the flywheel.
     pub omega: crate::construct::Figure,
-    /// The flywheel's part drawing ([`Self::made`]); empty when none is needed.
-    pub wheel: crate::construct::Figure,
+    /// The flywheel's part drawing ([`Self::made`]) at its round scale, then at the next
+    /// coarser one ([`part::drawings`]); one empty figure when none is needed.
+    pub wheels: Vec<crate::construct::Figure>,
 }
 
 impl Dynamics {
@@ -274,7 +275,7 @@ pub fn analyse(
     let made = flywheel::made(&spec.flywheel, size.j);
     let delta_made = cycle.with_flywheel(made.j, w_avg).delta();
     let omega = draw::omega_figure(&cycle, &exact, diagrams.scale_phi, ctx)?;
-    let wheel = part::drawing(&made, ctx)?;
+    let wheels = part::drawings(&made, ctx)?;
     Ok(Dynamics {
         spec: spec.clone(),
         w_avg,
@@ -295,6 +296,6 @@ pub fn analyse(
         made,
         delta_made,
         omega,
-        wheel,
+        wheels,
     })
 }

@@ -36,21 +36,29 @@ const HATCH_MM: f64 = 2.0;
 /// Points of a spoke's elliptical section.
 const ELLIPSE_POINTS: u32 = 48;
 
-/// The flywheel of `size` as a part drawing (see the module's documentation). A flywheel of
-/// no size (none needed) is an empty figure.
+/// The flywheel of `size` as a part drawing (see the module's documentation) at its round
+/// scale, then at the next coarser one: a sheet that would take a larger format for the first
+/// takes the second on the smaller one (ГОСТ 2.301: the smallest format that shows the part
+/// clearly). A flywheel of no size (none needed) is one empty figure.
 ///
 /// # Errors
 /// No scale can be chosen.
-pub fn drawing(size: &Size, ctx: &Context) -> Result<Figure, DynamicsError> {
+pub fn drawings(size: &Size, ctx: &Context) -> Result<Vec<Figure>, DynamicsError> {
     let no_scale = || DynamicsError::NoScale {
         what: "the flywheel's scale",
         value: size.d,
     };
     if !(size.d > 0.0 && size.d.is_finite()) {
         let unit = Scale::new(1.0, Quantity::Length).ok_or_else(no_scale)?;
-        return Ok(Recorder::in_context("flywheel", unit, ctx).finish());
+        return Ok(vec![Recorder::in_context("flywheel", unit, ctx).finish()]);
     }
     let mu = Scale::round_for(size.d, PART_MM, Quantity::Length).ok_or_else(no_scale)?;
+    let coarser = mu.coarser().ok_or_else(no_scale)?;
+    Ok(vec![at_scale(size, mu, ctx), at_scale(size, coarser, ctx)])
+}
+
+/// The part drawing of `size` at `mu`.
+fn at_scale(size: &Size, mu: Scale, ctx: &Context) -> Figure {
     let part = Part { size, mu };
     let mut rec = Recorder::in_context("flywheel", mu, ctx);
     section(&mut rec, &part);
@@ -61,7 +69,7 @@ pub fn drawing(size: &Size, ctx: &Context) -> Result<Figure, DynamicsError> {
     if part.rim() {
         spoke_sections(&mut rec, &part, centre);
     }
-    Ok(rec.finish())
+    rec.finish()
 }
 
 /// The size as drawn at μ.
@@ -313,7 +321,7 @@ mod tests {
     fn the_part_drawing_dimensions_every_proportion_once_at_its_length() {
         let size = size(&FlywheelSpec::SEED_RIM, 17.1);
         let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("context");
-        let f = drawing(&size, &ctx).expect("drawing");
+        let f = drawings(&size, &ctx).expect("drawing").swap_remove(0);
         assert!((f.scale.value() - 0.004).abs() < 1e-15, "1:4");
         let seed = [
             ("D", "⌀785"),
@@ -360,7 +368,7 @@ mod tests {
     fn a_disc_is_dimensioned_by_its_diameters_and_width() {
         let size = size(&FlywheelSpec::disc(7800.0), 0.5);
         let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("context");
-        let f = drawing(&size, &ctx).expect("drawing");
+        let f = drawings(&size, &ctx).expect("drawing").swap_remove(0);
         let mut names: Vec<String> = dimensions(&f).into_iter().map(|d| d.0).collect();
         names.sort();
         assert_eq!(names, ["D", "b", "d_{1}"]);
@@ -372,6 +380,6 @@ mod tests {
     fn no_flywheel_draws_nothing() {
         let size = size(&FlywheelSpec::SEED_RIM, 0.0);
         let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("context");
-        assert!(drawing(&size, &ctx).expect("empty").steps.is_empty());
+        assert!(drawings(&size, &ctx).expect("empty")[0].steps.is_empty());
     }
 }

@@ -22,6 +22,7 @@ mod mesh;
 mod numbers;
 mod pair;
 mod rack;
+mod reading;
 mod rows;
 mod scheme;
 #[cfg(test)]

@@ -224,6 +224,11 @@ impl Scale {
         Self::round_at_least(self.value * (1.0 - 1e-6), 1.0, self.quantity)
     }
 
+    /// The next coarser round scale along the series (it draws the same thing smaller).
+    pub fn coarser(self) -> Option<Self> {
+        Self::round_for(self.value * (1.0 + 1e-6), 1.0, self.quantity)
+    }
+
     /// SI units per mm.
     pub fn value(&self) -> f64 {
         self.value

@@ -7,7 +7,7 @@ use super::layout::{lay_out, quantity, Block};
 use super::BuildError;
 use crate::check::Row;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
-use crate::scale::{format_sig, Lang, Quantity, Scale};
+use crate::scale::{format_sig, Lang};
 use crate::scene::Scene;
 use crate::words::{unit_in, Text};
 
@@ -135,8 +135,6 @@ pub fn table_sheet(
         })
         .collect();
     // The title block's scale cell: a table is drawn at no scale.
-    let one = Scale::new(0.001, Quantity::Length).ok_or(BuildError::NoScale(0.001))?;
-    let mut title = super::title_block(scene, titles.1, one, lang);
-    title.scale = "—".into();
+    let title = super::title_block(scene, titles.1, None, lang);
     Ok(super::numbered(lay_out(sheet, blocks, stem, &title, lang)?))
 }

@@ -64,7 +64,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         RotorText::Static
     }
     .get(lang);
-    let title = super::title_block(scene, sheet_title, b.scale_l, lang);
+    let title = super::title_block(scene, sheet_title, Some(b.scale_l), lang);
     // The smallest sheet that holds everything on one page; A1 (over pages) otherwise.
     lay_out_smallest(&SIZES, blocks, "balancing", &title, lang)
 }
@@ -259,6 +259,7 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
             name: &|r| quantity(r, lang).0,
             unit: &|r| quantity(r, lang).1,
             value: &value,
+            graphical: None,
             size_mm: TABLE_MM,
         },
         rows,

@@ -119,7 +119,12 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     });
     blocks.extend(points_table(&cam, lang).into_iter().map(Block::Table));
     blocks.push(Block::Table(results_table(&cam.rows(), lang)));
-    let title = super::title_block(scene, CamText::Title.get(lang), cam.inversion.scale, lang);
+    let title = super::title_block(
+        scene,
+        CamText::Title.get(lang),
+        Some(cam.inversion.scale),
+        lang,
+    );
     let sheet = Sheet {
         size: SheetSize::A1,
         landscape: true,
@@ -483,6 +488,7 @@ pub(super) fn results_table(rows: &[Row], lang: Lang) -> TableBlock {
             name: &|r| quantity(r, lang),
             unit: &|_| String::new(),
             value: &|_, x, _| super::digits::value(x * 1e3, lang),
+            graphical: None,
             size_mm: TABLE_MM,
         },
         &rows,

@@ -78,7 +78,12 @@ pub(super) fn build(
             .map(Block::Table),
     );
     blocks.push(Block::Table(results_table(&rows, lang)));
-    let title = super::title_block(session.scene(), CamText::Title.get(lang), cam.scale, lang);
+    let title = super::title_block(
+        session.scene(),
+        CamText::Title.get(lang),
+        Some(cam.scale),
+        lang,
+    );
     let sheet = Sheet {
         size: SheetSize::A1,
         landscape: true,

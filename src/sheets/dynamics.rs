@@ -118,12 +118,8 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
                 .map(Block::Table),
         );
     }
-    let title = super::title_block(
-        scene,
-        DynamicsText::Title.get(lang),
-        session.scale_l()?,
-        lang,
-    );
+    // Diagrams only: nothing of the machine is drawn at a length scale.
+    let title = super::title_block(scene, DynamicsText::Title.get(lang), None, lang);
     lay_out(sheet, blocks, "dynamics", &title, lang)
 }
 
@@ -349,6 +345,7 @@ fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
                 let k = crate::words::shown_unit(r.key.symbol).0;
                 super::digits::Column::of([r.graphical * k, r.analytic * k]).cell(x * k, lang)
             },
+            graphical: None,
             size_mm: TABLE_MM,
         },
         &rows,

@@ -1,6 +1,6 @@
 //! Plate "Маховик" (seed 000 §5.7): the flywheel as a part drawing on a sheet of its own, at
 //! the round scale that draws it whole (the seed's 1:4), on the smallest sheet from A3 up
-//! that holds it: the axial section and the front view with the spokes' sections, every
+//! that holds it at that scale or the next coarser one: the axial section and the front view with the spokes' sections, every
 //! dimension from the J_м the dynamics sheet's construction gives (Wittenbauer's tangents) —
 //! the flywheel a hand-in sizes — with the exact J_м and the δ each gives, and the table of
 //! the dimensions with the proportions they follow. A scene whose machine needs no flywheel
@@ -8,6 +8,7 @@
 
 use super::layout::{lay_out_smallest, Block, Part};
 use super::BuildError;
+use crate::construct::Figure;
 use crate::dynamics::{Dynamics, FlywheelKind};
 use crate::geom::DVec2;
 use crate::plate::{Plate, SheetSize, TableBlock};
@@ -20,31 +21,55 @@ const SIZES: [SheetSize; 2] = [SheetSize::A3, SheetSize::A2];
 /// Text height of the data lines and the table, mm.
 const TEXT_MM: f64 = 3.5;
 
-/// Build the flywheel's sheet; none when no flywheel is needed.
+/// Build the flywheel's sheet; none when no flywheel is needed: the smallest format that
+/// holds the part at its round scale or, failing that, at the next coarser one (an A3 at
+/// 1:2,5 rather than an A2 at 1:2), else the larger format at the round scale.
 pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
     let d = session.dynamics()?;
-    if d.wheel.steps.is_empty() {
+    if d.wheels.iter().all(|w| w.steps.is_empty()) {
         return Ok(Vec::new());
     }
+    // What no format holds on one sheet: the largest format at the round scale.
+    let mut fallback = Ok(Vec::new());
+    for size in SIZES {
+        for (k, wheel) in d.wheels.iter().enumerate() {
+            match sheet(&d, wheel, size, session, lang) {
+                Ok(plates) if plates.len() == 1 => return Ok(plates),
+                other if k == 0 => fallback = other,
+                _ => {}
+            }
+        }
+    }
+    fallback
+}
+
+/// The flywheel's sheet drawing `wheel` on the format `size`: one plate when it holds all.
+fn sheet(
+    d: &Dynamics,
+    wheel: &Figure,
+    size: SheetSize,
+    session: &Session<'_>,
+    lang: Lang,
+) -> Result<Vec<Plate>, BuildError> {
     let blocks = vec![
         Block::Views {
-            parts: vec![Part::new(d.wheel.clone(), DVec2::ZERO, None)],
+            parts: vec![Part::new(wheel.clone(), DVec2::ZERO, None)],
             scale: None,
         },
         // The table beside the drawing, the technical requirements under it (above the title
         // block), the data under the drawing.
-        Block::Table(dimensions_table(&d, lang)),
+        Block::Table(dimensions_table(d, lang)),
         Block::Text {
             lines: requirements(lang),
             size_mm: TEXT_MM,
         },
         Block::Text {
-            lines: data_lines(&d, lang),
+            lines: data_lines(d, lang),
             size_mm: TEXT_MM,
         },
     ];
     // A part drawing's title block names the part (ГОСТ 2.104 graph 1), not the machine.
-    let mut title = super::title_block(session.scene(), "", d.wheel.scale, lang);
+    let mut title = super::title_block(session.scene(), "", Some(wheel.scale), lang);
     title.title = DynamicsText::Flywheel.get(lang).to_string();
     // A part drawing's title block gives its mass, kg, and its material.
     title.mass = format_sig(d.made.mass, 3, lang);
@@ -54,7 +79,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         DynamicsText::SteelGrade
     };
     title.material = grade.get(lang).to_string();
-    lay_out_smallest(&SIZES, blocks, "flywheel", &title, lang)
+    lay_out_smallest(&[size], blocks, "flywheel", &title, lang)
 }
 
 /// The technical requirements of the cast part: the numbered items, a line each piece of

@@ -179,7 +179,7 @@ fn position_sheet(
         size_mm: TEXT_MM,
     });
     blocks.push(Block::Table(loads_table(&f.rows, lang)));
-    let tb = super::title_block(scene, &title("φ₁"), session.force_scale_l()?, lang);
+    let tb = super::title_block(scene, &title("φ₁"), Some(session.force_scale_l()?), lang);
     lay_out(Sheet::default(), blocks, "forces", &tb, lang)
 }
 
@@ -222,6 +222,7 @@ fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
             },
             unit: &|_| String::new(),
             value: &|_, x, scale| cell(x, scale, lang),
+            graphical: None,
             size_mm: TABLE_MM,
         },
         rows,

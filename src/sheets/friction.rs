@@ -98,6 +98,66 @@ fn locking(first: String, condition: Option<String>, lang: Lang) -> Vec<String> 
         .collect()
 }
 
+/// The data of the case number `n` as the scene gives them (what its closed forms take), in
+/// label markup: `1: Q = 1000 Н, f = 0,15, α = 20°, β′ = 10°`.
+fn data_line(n: usize, kind: &CaseKind, lang: Lang) -> String {
+    let newton = unit_in("N", lang);
+    let q = |x: f64| format!("{} {newton}", num(x, lang));
+    let a = |x: f64| format!("{}°", num(x.to_degrees(), lang));
+    let f = |x: f64| num(x, lang);
+    let given: Vec<(&str, String)> = match kind {
+        CaseKind::Incline(c) => vec![
+            ("Q", q(c.load)),
+            ("f", f(c.f)),
+            ("α", a(c.alpha)),
+            ("β′", a(c.beta)),
+        ],
+        CaseKind::Wedge(c) => vec![("Q", q(c.load)), ("f", f(c.f)), ("β", a(c.groove))],
+        CaseKind::Screw(c) => vec![
+            ("Q", q(c.load)),
+            ("f", f(c.f)),
+            ("λ", a(c.lead)),
+            ("δ", a(c.profile)),
+            ("r_{1}", mm(c.radius, lang)),
+        ],
+        CaseKind::Journal(c) => vec![("Q", q(c.load)), ("f", f(c.f)), ("r", mm(c.radius, lang))],
+        CaseKind::Rolling(c) => vec![
+            ("Q", q(c.load)),
+            ("G", q(c.roller_weight)),
+            ("d", mm(c.diameter, lang)),
+            ("k_{1}", mm(c.k1, lang)),
+            ("k_{2}", mm(c.k2, lang)),
+            ("f_{1}", f(c.f1)),
+            ("f_{2}", f(c.f2)),
+        ],
+        CaseKind::Slider(c) => vec![
+            ("P", q(c.load)),
+            ("f", f(c.f)),
+            ("f_{0}", f(c.f0)),
+            ("α", a(c.alpha)),
+        ],
+        CaseKind::Guide(c) => vec![
+            ("Q", q(c.load)),
+            ("λ", a(c.angle)),
+            ("b", mm(c.guide.length, lang)),
+            ("l", mm(c.guide.overhang, lang)),
+            ("f", f(c.guide.f)),
+        ],
+        CaseKind::Pivot(c) => vec![
+            (
+                "M_{с}",
+                format!("{} {}", num(c.moment, lang), unit_in("N*m", lang)),
+            ),
+            ("λ", a(c.angle)),
+            ("L", mm(c.pivot.arm, lang)),
+            ("d", mm(c.pivot.diameter, lang)),
+            ("f", f(c.pivot.f)),
+        ],
+    };
+    let list: Vec<String> = given.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+    format!("{n}: {}", list.join(", "))
+}
+
 /// The closed forms of the case number `n` with their values, in label markup.
 fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
     let newton = unit_in("N", lang);
@@ -344,11 +404,20 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let scene = session.scene();
     let solved = session.friction()?;
     let mut blocks = Vec::new();
-    let mut text = vec![super::drafting_line(
+    // The data each case is given, then how lengths were read, then the closed forms.
+    let mut text = vec![Text::Data.get(lang).to_string()];
+    text.extend(
+        solved
+            .iter()
+            .enumerate()
+            .map(|(n, s)| data_line(n + 1, &s.case.kind, lang)),
+    );
+    text.push(String::new());
+    text.push(super::drafting_line(
         session.drafting(),
         super::Errs::Plans,
         lang,
-    )];
+    ));
     for (n, s) in solved.iter().enumerate() {
         for d in &s.drawings {
             let key = d.scaled.then_some(ScaleKey {
@@ -371,8 +440,6 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     blocks.push(Block::Table(table(&solved, lang)));
     let sheet_title = FrictionText::Title.get(lang);
     // The drawings have a scale each (their captions): the sheet has none.
-    let none = crate::scale::Scale::new(1e-3, Quantity::Length).ok_or(BuildError::NoScale(1e-3))?;
-    let mut title = super::title_block(scene, sheet_title, none, lang);
-    title.scale = String::new();
+    let title = super::title_block(scene, sheet_title, None, lang);
     lay_out_smallest(&SIZES, blocks, "friction", &title, lang)
 }

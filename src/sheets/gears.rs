@@ -12,7 +12,7 @@ use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
 use crate::gears::blocking::Study;
-use crate::gears::{DetailMark, DETAIL_LETTER};
+use crate::gears::{DetailMark, GearStudy, DETAIL_LETTER};
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_sig, Key, Lang};
 use crate::study::Session;
@@ -47,7 +47,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }) = &g.pair
     {
         sheet.pair_views(p, (&m.figure, &m.sliding, m.scale), contour);
-        sheet.pair_lines(p, m.eps);
+        sheet.pair_lines(p, m.ab.value);
         if let Some(b) = contour {
             sheet.contour_lines(b);
         }
@@ -97,7 +97,12 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     // computed by formula against another route — a formula's value is no graphical reading.
     let (read, computed) = tables_rows(&g);
     if !read.is_empty() {
-        blocks.push(Block::Table(table(&read, &g, lang)));
+        blocks.push(Block::Table(table(
+            &read,
+            &g,
+            session.drafting().resolution_mm(),
+            lang,
+        )));
     }
     if !computed.is_empty() {
         blocks.push(Block::Table(formula_table(&computed, &g, lang)));
@@ -107,7 +112,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     else {
         return Ok(Vec::new());
     };
-    let title = super::title_block(scene, GearText::Title.get(lang), plan, lang);
+    let title = super::title_block(scene, GearText::Title.get(lang), Some(plan), lang);
     // The course project's whole gear sheet is an A1; a practicum's part of it (a pair, a
     // cut wheel, a train) goes on the smallest sheet that holds it.
     lay_out_smallest(
@@ -187,11 +192,11 @@ fn table_unit(r: &Row) -> (&'static str, f64) {
     }
 }
 
-/// The table of the rows read off the drawings: quantity | method (the drawing read) | unit
-/// | graphical | analytic | error (lengths in mm).
-fn table(rows: &[Row], g: &crate::gears::GearStudy, lang: Lang) -> TableBlock {
+/// The table of the rows read off the drawings (lengths read to `read_mm`): quantity |
+/// method (the drawing read) | unit | graphical | analytic | error (lengths in mm).
+fn table(rows: &[Row], g: &GearStudy, read_mm: f64, lang: Lang) -> TableBlock {
     values_table(
-        rows,
+        (rows, read_mm),
         g,
         GearText::ReadOff.get(lang).into(),
         &[
@@ -209,9 +214,9 @@ fn table(rows: &[Row], g: &crate::gears::GearStudy, lang: Lang) -> TableBlock {
 /// The table of the rows computed — by formula (the textbook's chain), or from the
 /// construction's points (the envelope's deviation) —: quantity | unit | computed | check (an
 /// independent route, the exact value) | error.
-fn formula_table(rows: &[Row], g: &crate::gears::GearStudy, lang: Lang) -> TableBlock {
+fn formula_table(rows: &[Row], g: &GearStudy, lang: Lang) -> TableBlock {
     let mut t = values_table(
-        rows,
+        (rows, 0.0),
         g,
         GearText::Computed.get(lang).into(),
         &[
@@ -228,14 +233,16 @@ fn formula_table(rows: &[Row], g: &crate::gears::GearStudy, lang: Lang) -> Table
     t
 }
 
-/// The rows as a table of `columns` titled `title` (lengths in mm).
+/// The rows as a table of `columns` titled `title` (lengths in mm), their graphical values
+/// read to the step of `read_mm` on the drawing read ([`GearStudy::reading_step`]).
 fn values_table(
-    rows: &[Row],
-    g: &crate::gears::GearStudy,
+    (rows, read_mm): (&[Row], f64),
+    g: &GearStudy,
     title: String,
     columns: &[(Column, f64)],
     lang: Lang,
 ) -> TableBlock {
+    let factor = |r: &Row| table_unit(r).1;
     results_table(
         &Results {
             title,
@@ -245,7 +252,10 @@ fn values_table(
                 "" => String::new(),
                 u => unit_in(u, lang),
             },
-            value: &|r, x, _| drawn_value(r, x, table_unit(r).1, lang),
+            value: &|r, x, _| drawn_value(r, x, factor(r), None, lang),
+            graphical: Some(&|r| {
+                drawn_value(r, r.graphical, factor(r), g.reading_step(r, read_mm), lang)
+            }),
             size_mm: TABLE_MM,
         },
         rows,
@@ -281,74 +291,6 @@ fn criterion_words(c: crate::gears::blocking::Criterion, lang: Lang) -> String {
             format_sig(sa_min, 3, lang)
         ),
     }
-}
-
-/// A differential's output speed from its two given ones: `n_{3} = 1000 об/мин, n_{5} = 200
-/// об/мин → n_{H} = 360 об/мин (формула Виллиса), 360 об/мин (треугольники)`.
-fn differential_line(t: &crate::gears::TrainStudy, lang: Lang) -> Option<String> {
-    let tr_ = &t.spec.train;
-    let (second, w2) = tr_.second?;
-    let n_in = t.spec.n_input?;
-    let rpm = unit_in("rpm", lang);
-    // A drawing's four digits (the triangles' 362,873 read as 362,9).
-    let n = |x: f64| super::digits::value(x, lang);
-    let by_triangles = t.triangles.omega[tr_.output] * 30.0 / std::f64::consts::PI;
-    let by_formula = t.formula.map_or(String::new(), |u| {
-        format!("{} {rpm} ({}), ", n(n_in / u), GearText::Willis.get(lang))
-    });
-    Some(format!(
-        "n_{{{}}} = {} {rpm}, n_{{{}}} = {} {rpm} → n_{{{}}} = {by_formula}{} {rpm} ({})",
-        tr_.shafts[tr_.input],
-        n(n_in),
-        tr_.shafts[second],
-        n(w2 * n_in),
-        tr_.shafts[tr_.output],
-        n(by_triangles),
-        GearText::ByTriangles.get(lang),
-    ))
-}
-
-/// Each mesh the train's module does not close, at the module it is drawn at, beside the
-/// train's, with the decision only: `m = 1 мм, m_{3-4} = 2,833 мм (по соосности)` (why the
-/// source's module does not serve is the note's to say).
-fn closing_lines(t: &crate::gears::TrainStudy, lang: Lang) -> Vec<String> {
-    let tr_ = &t.spec.train;
-    let mm = unit_in("mm", lang);
-    t.closings
-        .iter()
-        .map(|c| {
-            let (s, w) = c.mesh;
-            format!(
-                "{}, m_{{{}-{}}} = {} {mm} ({})",
-                module_text(tr_, lang),
-                tr_.wheels[s].name,
-                tr_.wheels[w].name,
-                super::digits::value(c.module * 1e3, lang),
-                GearText::ForCoaxiality.get(lang),
-            )
-        })
-        .collect()
-}
-
-/// The module the train's wheels are cut with: `m = 2 мм`.
-fn module_text(t: &crate::gears::Train, lang: Lang) -> String {
-    format!(
-        "m = {} {}",
-        super::digits::value(t.module * 1e3, lang),
-        unit_in("mm", lang)
-    )
-}
-
-/// The train's mobility as the textbook writes it: W = 3n − 2p₅ − p₄ = 3·4 − 2·4 − 3 = 1.
-fn train_mobility_line(t: &crate::gears::Train) -> String {
-    let m = t.mobility();
-    format!(
-        "W = 3n − 2p_{{5}} − p_{{4}} = 3·{} − 2·{} − {} = {}",
-        m.n,
-        m.p5,
-        m.p4,
-        m.w()
-    )
 }
 
 /// The gear sheet as it is filled: its views, the detail views (after the pictures), the
@@ -403,8 +345,8 @@ impl Filling {
     }
 
     /// The pair's data and results: m, z, x; α_w, a_w, y, Δy; the radii, the pitches and
-    /// s_a; ε_α by formula and as drawn (`eps_drawn`).
-    fn pair_lines(&mut self, p: &crate::gears::Pair, eps_drawn: f64) {
+    /// s_a; ε_α by formula and as drawn (B₁B₂ read off the meshing picture, `ab_drawn`, m).
+    fn pair_lines(&mut self, p: &crate::gears::Pair, ab_drawn: f64) {
         use super::digits::{degrees, mm, value};
         let lang = self.lang;
         let mm = |x: f64| mm(x, lang);
@@ -435,10 +377,15 @@ impl Filling {
             mm(p.sa[0]),
             mm(p.sa[1])
         ));
+        // B₁B₂ worked from the radii (the textbook's), then read off the meshing picture.
         self.lines.push(format!(
-            "ε_α = B_1B_2/p_b = {}; ε′_α = {}",
+            "ε_α = (N_1B_2 + N_2B_1 − N_1N_2)/p_b = {}; {}",
             value(p.eps, lang),
-            value(eps_drawn, lang)
+            GearText::EpsDrawn
+                .get(lang)
+                .replace("{ab}", &mm(ab_drawn))
+                .replace("{pb}", &mm(p.p_b))
+                .replace("{eps}", &value(ab_drawn / p.p_b, lang)),
         ));
     }
 
@@ -565,29 +512,6 @@ impl Filling {
         self.plan.get_or_insert(t.triangles.scale_l);
         self.blocks
             .push(super::train_view::triangles_block(t, lang));
-        let tr_ = &t.spec.train;
-        // The mobility; the ratio (by the formula and by the triangles, the required one too)
-        // is the tables' (the line printed it a third and fourth time).
-        // The train's module beside its mobility (the pair's, on a sheet that has one, is
-        // the pair's data line's), where no mesh is closed at a module of its own (the
-        // closing's line then gives both).
-        let mut mobility = train_mobility_line(tr_);
-        if t.closings.is_empty() {
-            mobility.push_str(&format!("; {}", module_text(tr_, lang)));
-        }
-        self.lines.push(mobility);
-        self.lines.extend(differential_line(t, lang));
-        self.lines.extend(closing_lines(t, lang));
-        if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {
-            self.lines.push(format!(
-                "k = {k}: {} {}",
-                GearText::Assembly.get(lang),
-                match (a.fits(), a.p) {
-                    (true, Some(p)) => format!("p = {p}"),
-                    (true, None) => GearText::Holds.get(lang).to_string(),
-                    (false, _) => GearText::Fails.get(lang).to_string(),
-                },
-            ));
-        }
+        self.lines.extend(super::train_lines::lines(t, lang));
     }
 }

@@ -77,7 +77,7 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
             .flat_map(|t| split_table(&sheet, t, lang))
             .map(|t| (Block::Table(t), None)),
     );
-    let title = super::title_block(scene, Text::KinematicAnalysis.get(lang), sc.l, lang);
+    let title = super::title_block(scene, Text::KinematicAnalysis.get(lang), Some(sc.l), lang);
     let lay = |run: Run| {
         let (blocks, series): (Vec<Block>, Vec<Option<u8>>) = run.into_iter().unzip();
         lay_out_in_rows(sheet, blocks, &series, "kinematics", &title, lang)

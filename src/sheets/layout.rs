@@ -229,7 +229,11 @@ impl Block {
                     .fold(0.0, f64::max);
                 DVec2::new(w, 2.0 * size_mm * lines.len() as f64)
             }
-            Block::Table(t) => t.size() + DVec2::new(0.0, title_height(t)),
+            // A title wider than its grid widens the block.
+            Block::Table(t) => DVec2::new(
+                t.size().x.max(text::approx_width(&t.title, t.size_mm)),
+                t.size().y + title_height(t),
+            ),
         }
     }
 }
@@ -286,6 +290,9 @@ pub(super) struct Results<'a> {
     pub unit: &'a dyn Fn(&Row) -> String,
     /// A value of a row, given the row's zero reference ([`crate::check::scales`]).
     pub value: &'a dyn Fn(&Row, f64, f64) -> String,
+    /// A row's graphical value, when written otherwise than [`Self::value`] writes it (to
+    /// the step it was read to).
+    pub graphical: Option<&'a dyn Fn(&Row) -> String>,
     /// Text height, mm.
     pub size_mm: f64,
 }
@@ -301,17 +308,28 @@ pub(super) fn quantity(r: &Row, lang: Lang) -> String {
 
 /// A value of a results table's row to the precision a drawing table gives: four
 /// significant digits of the row's larger value (`factor` its unit from SI), the same
-/// decimals for its graphical and its analytic value.
-pub(super) fn drawn_value(r: &Row, x: f64, factor: f64, lang: Lang) -> String {
+/// decimals for its graphical and its analytic value — a reading no finer than the `step`
+/// (SI) it was read to, when given: `9,0` of a tooth read to 0,5 mm, not `9,003`.
+pub(super) fn drawn_value(r: &Row, x: f64, factor: f64, step: Option<f64>, lang: Lang) -> String {
     if x == 0.0 {
         return "0".into();
     }
-    let reference = r.graphical.abs().max(r.analytic.abs()) * factor;
-    let decimals = if reference > 0.0 && reference.is_finite() {
-        (3 - reference.log10().floor() as i32).clamp(0, 6) as usize
-    } else {
-        0
+    let decimals_of = |unit: f64, places: i32| {
+        if unit > 0.0 && unit.is_finite() {
+            (places - unit.log10().floor() as i32).clamp(0, 6) as usize
+        } else {
+            0
+        }
     };
+    let reference = r.graphical.abs().max(r.analytic.abs()) * factor;
+    let mut decimals = decimals_of(reference, 3);
+    if let Some(step) = step
+        .map(|s| s * factor)
+        .filter(|s| *s > 0.0 && s.is_finite())
+    {
+        // The decimals of the step's first digit (0,5 → 1; 1 → 0; 0,02 → 2).
+        decimals = decimals.min((-step.log10() - 1e-9).ceil().clamp(0.0, 6.0) as usize);
+    }
     format_fixed(x * factor, decimals, lang)
 }
 
@@ -330,7 +348,9 @@ pub(super) fn results_table(results: &Results<'_>, rows: &[Row], lang: Lang) -> 
                     Column::Quantity => (results.name)(r),
                     Column::Method => r.method.name(lang).to_string(),
                     Column::Unit => (results.unit)(r),
-                    Column::Graphical => (results.value)(r, r.graphical, s),
+                    Column::Graphical => results
+                        .graphical
+                        .map_or_else(|| (results.value)(r, r.graphical, s), |g| g(r)),
                     Column::Analytic | Column::Exact => (results.value)(r, r.analytic, s),
                     Column::Error => {
                         e.map_or_else(|| "—".into(), |e| super::digits::error_pct(e, lang))

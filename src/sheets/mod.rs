@@ -18,6 +18,7 @@ mod gears;
 #[cfg(test)]
 mod gears_tables_tests;
 mod layout;
+mod train_lines;
 mod train_view;
 pub(crate) use flywheel::verdict as flywheel_verdict;
 pub(crate) use gears::cut_wheel_quantity;
@@ -114,8 +115,9 @@ impl From<crate::kinematics::KinError> for BuildError {
 
 /// The title block of a plate of `scene`, filled from its `[task]`; "Масштаб" is the plan of
 /// positions' μ_l as a ГОСТ 2.302 scale (μ_l = 0,0025 м/мм draws 2,5 mm of the machine in
-/// one millimetre: 1:2,5; μ_l = 0,0004 м/мм: 2,5:1).
-fn title_block(scene: &Scene, sheet_title: &str, plan: Scale, lang: Lang) -> TitleBlock {
+/// one millimetre: 1:2,5; μ_l = 0,0004 м/мм: 2,5:1), or "—" for a sheet that draws nothing of
+/// the machine at a length scale (diagrams, tables, figures each at a scale of its own).
+fn title_block(scene: &Scene, sheet_title: &str, plan: Option<Scale>, lang: Lang) -> TitleBlock {
     let t = scene.title.in_lang(lang);
     TitleBlock {
         title: t.title.clone(),
@@ -124,7 +126,7 @@ fn title_block(scene: &Scene, sheet_title: &str, plan: Scale, lang: Lang) -> Tit
         author: t.author.clone(),
         checked: t.checked.clone(),
         organisation: t.organisation.clone(),
-        scale: gost_scale(plan, lang),
+        scale: plan.map_or_else(|| "—".into(), |p| gost_scale(p, lang)),
         // Numbered across the scene by `build_all`.
         sheet_no: 1,
         sheets: 1,

@@ -53,7 +53,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             size_mm: 3.5,
         },
     ];
-    let title = super::title_block(scene, Text::PlanOfPositions.get(lang), scale, lang);
+    let title = super::title_block(scene, Text::PlanOfPositions.get(lang), Some(scale), lang);
     lay_out(Sheet::default(), blocks, "positions", &title, lang)
 }
 

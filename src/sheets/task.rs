@@ -51,7 +51,7 @@ pub fn task_sheet(
         NoteText::Task.get(lang),
         Text::Variant.get(lang)
     );
-    let mut title = super::title_block(scene, &sheet_title, session.scale_l()?, lang);
+    let mut title = super::title_block(scene, &sheet_title, Some(session.scale_l()?), lang);
     // The scheme's caption carries its own μ_l.
     title.scale = "—".into();
     let mut blocks = vec![scheme];

@@ -9,7 +9,7 @@
 use crate::support::root;
 use tmm::check::{Method, Row, Symbol};
 use tmm::construct::{Drafting, Item};
-use tmm::plate::Plate;
+use tmm::plate::{Plate, SheetSize};
 use tmm::scale::Lang;
 use tmm::scene::{self, PlateKind, Scene};
 use tmm::study::Session;
@@ -112,6 +112,30 @@ fn the_shaper_set_draws_the_flywheel_as_its_eighth_sheet_at_1_4() {
                     v.figure.title
                 );
             }
+        }
+    }
+}
+
+/// A part an A3 holds at the next coarser round scale goes there rather than onto an A2 at
+/// its own: the V engine's D = 380 mm is drawn at 1:2,5 (152 mm) on an A3, not at 1:2 on an
+/// A2 18 % inked. The shaper's at 1:5 still leaves its table and data no room on an A3, so
+/// it keeps the seed's 1:4 on an A2.
+#[test]
+fn a_part_takes_the_next_coarser_scale_before_a_larger_sheet() {
+    for (scene, size, scale, label) in [
+        ("v-engine.toml", SheetSize::A3, 0.0025, "1:2,5"),
+        ("shaper.toml", SheetSize::A2, 0.004, "1:4"),
+    ] {
+        for drafting in [Drafting::EXACT, Drafting::HAND] {
+            let all = sheets(&load(scene), drafting);
+            let (_, p) = all
+                .iter()
+                .find(|(k, _)| *k == PlateKind::Flywheel)
+                .expect("the flywheel's sheet");
+            assert_eq!(p.sheet.size, size, "{scene}");
+            assert_eq!(p.title_block.scale, label, "{scene}");
+            let mu = p.views[0].figure.scale.value();
+            assert!((mu - scale).abs() < 1e-15, "{scene}: {mu}");
         }
     }
 }

@@ -1,0 +1,104 @@
+//! A train's lines on the gear sheet: its mobility with its module, a differential's output
+//! speed, each mesh closed at a module of its own, and the satellites' assembly condition.
+
+use crate::gears::{Train, TrainStudy};
+use crate::scale::Lang;
+use crate::words::{unit_in, GearText};
+
+/// The lines of the train `t` under the sheet's data.
+pub(super) fn lines(t: &TrainStudy, lang: Lang) -> Vec<String> {
+    let mut out = Vec::new();
+    let tr_ = &t.spec.train;
+    // The mobility; the ratio (by the formula and by the triangles, the required one too)
+    // is the tables' (the line printed it a third and fourth time).
+    // The train's module beside its mobility (the pair's, on a sheet that has one, is
+    // the pair's data line's), where no mesh is closed at a module of its own (the
+    // closing's line then gives both).
+    let mut mobility = train_mobility_line(tr_);
+    if t.closings.is_empty() {
+        mobility.push_str(&format!("; {}", module_text(tr_, lang)));
+    }
+    out.push(mobility);
+    out.extend(differential_line(t, lang));
+    out.extend(closing_lines(t, lang));
+    if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {
+        out.push(format!(
+            "k = {k}: {} {}",
+            GearText::Assembly.get(lang),
+            match (a.fits(), a.p) {
+                (true, Some(p)) => format!("p = {p}"),
+                (true, None) => GearText::Holds.get(lang).to_string(),
+                (false, _) => GearText::Fails.get(lang).to_string(),
+            },
+        ));
+    }
+    out
+}
+
+/// A differential's output speed from its two given ones: `n_{3} = 1000 об/мин, n_{5} = 200
+/// об/мин → n_{H} = 360 об/мин (формула Виллиса), 360 об/мин (треугольники)`.
+fn differential_line(t: &TrainStudy, lang: Lang) -> Option<String> {
+    let tr_ = &t.spec.train;
+    let (second, w2) = tr_.second?;
+    let n_in = t.spec.n_input?;
+    let rpm = unit_in("rpm", lang);
+    // A drawing's four digits (the triangles' 362,873 read as 362,9).
+    let n = |x: f64| super::digits::value(x, lang);
+    let by_triangles = t.triangles.omega[tr_.output] * 30.0 / std::f64::consts::PI;
+    let by_formula = t.formula.map_or(String::new(), |u| {
+        format!("{} {rpm} ({}), ", n(n_in / u), GearText::Willis.get(lang))
+    });
+    Some(format!(
+        "n_{{{}}} = {} {rpm}, n_{{{}}} = {} {rpm} → n_{{{}}} = {by_formula}{} {rpm} ({})",
+        tr_.shafts[tr_.input],
+        n(n_in),
+        tr_.shafts[second],
+        n(w2 * n_in),
+        tr_.shafts[tr_.output],
+        n(by_triangles),
+        GearText::ByTriangles.get(lang),
+    ))
+}
+
+/// Each mesh the train's module does not close, at the module it is drawn at, beside the
+/// train's, with the decision only: `m = 1 мм, m_{3-4} = 2,833 мм (по соосности)` (why the
+/// source's module does not serve is the note's to say).
+fn closing_lines(t: &TrainStudy, lang: Lang) -> Vec<String> {
+    let tr_ = &t.spec.train;
+    let mm = unit_in("mm", lang);
+    t.closings
+        .iter()
+        .map(|c| {
+            let (s, w) = c.mesh;
+            format!(
+                "{}, m_{{{}-{}}} = {} {mm} ({})",
+                module_text(tr_, lang),
+                tr_.wheels[s].name,
+                tr_.wheels[w].name,
+                super::digits::value(c.module * 1e3, lang),
+                GearText::ForCoaxiality.get(lang),
+            )
+        })
+        .collect()
+}
+
+/// The module the train's wheels are cut with: `m = 2 мм`.
+fn module_text(t: &Train, lang: Lang) -> String {
+    format!(
+        "m = {} {}",
+        super::digits::value(t.module * 1e3, lang),
+        unit_in("mm", lang)
+    )
+}
+
+/// The train's mobility as the textbook writes it: W = 3n − 2p₅ − p₄ = 3·4 − 2·4 − 3 = 1.
+fn train_mobility_line(t: &Train) -> String {
+    let m = t.mobility();
+    format!(
+        "W = 3n − 2p_{{5}} − p_{{4}} = 3·{} − 2·{} − {} = {}",
+        m.n,
+        m.p5,
+        m.p4,
+        m.w()
+    )
+}
