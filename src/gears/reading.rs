@@ -4,7 +4,14 @@
 
 use super::{GearStudy, LAMBDA_MM};
 use crate::check::{Method, Row};
+use crate::scale::Scale;
 use crate::words::Symbol;
+
+/// The step (m) to which a length is read off a figure drawn at `scale` when lengths are
+/// read to `resolution_mm` on the drawing; `None` when they are read exactly.
+pub fn length_step(scale: Scale, resolution_mm: f64) -> Option<f64> {
+    (resolution_mm > 0.0).then(|| resolution_mm * scale.value())
+}
 
 impl GearStudy {
     /// The step (SI) of the row `r`'s graphical value when lengths are read to
@@ -13,13 +20,10 @@ impl GearStudy {
     /// graph to `resolution_mm` of the [`LAMBDA_MM`] its unit is drawn. `None` for a value not
     /// read as one length (the triangles' ω, a formula's) or when lengths are read exactly.
     pub fn reading_step(&self, r: &Row, resolution_mm: f64) -> Option<f64> {
-        if resolution_mm <= 0.0 {
-            return None;
-        }
         match (r.method, r.key.symbol) {
             (Method::Meshing, symbol) => {
                 let m = self.pair.as_ref()?;
-                let length = resolution_mm * m.meshing.scale.value();
+                let length = length_step(m.meshing.scale, resolution_mm)?;
                 Some(match symbol {
                     Symbol::SpecificSliding => resolution_mm / LAMBDA_MM,
                     Symbol::ContactRatio => length / m.pair.p_b,
@@ -28,7 +32,7 @@ impl GearStudy {
             }
             (Method::Envelope, Symbol::ToothThickness | Symbol::SpaceWidth) => {
                 let (w, _) = self.cut_wheel_of(r)?;
-                Some(resolution_mm * w.generation.scale.value())
+                length_step(w.generation.scale, resolution_mm)
             }
             _ => None,
         }

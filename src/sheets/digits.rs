@@ -81,6 +81,25 @@ pub(crate) fn cell(x: f64, scale: f64, lang: Lang) -> String {
     }
 }
 
+/// The decimals of a value read to `step` (in its printed unit): those of the step's first
+/// digit (0,5 → 1; 1 → 0; 0,02 → 2); `None` for no step (read exactly).
+pub(crate) fn step_decimals(step: Option<f64>) -> Option<usize> {
+    let step = step.filter(|s| *s > 0.0 && s.is_finite())?;
+    Some((-step.log10() - 1e-9).ceil().clamp(0.0, 6.0) as usize)
+}
+
+/// A value read to `step` (in its printed unit): no finer than the step's decimals, nor
+/// than [`SIG`] digits: `9,0` of a tooth read to 0,5 mm; [`value`] when read exactly.
+pub(crate) fn read(x: f64, step: Option<f64>, lang: Lang) -> String {
+    match step_decimals(step) {
+        Some(d) if x != 0.0 => {
+            let sig = (SIG as i32 - 1 - x.abs().log10().floor() as i32).max(0) as usize;
+            format_fixed(x, d.min(sig), lang)
+        }
+        _ => value(x, lang),
+    }
+}
+
 /// A scale in a sheet's text at the sheet's precision: `μ_{φ} = 0,05236 рад/мм` (a derived
 /// μ, not round, printed to [`SIG`] digits as every value of the sheet).
 pub(crate) fn caption(scale: Scale, lang: Lang) -> String {
@@ -99,7 +118,7 @@ pub(crate) fn mm(metres: f64, lang: Lang) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{degrees, error_pct, mm, value, Column};
+    use super::{degrees, error_pct, mm, read, value, Column};
     use crate::scale::Lang;
 
     #[test]
@@ -115,6 +134,21 @@ mod tests {
         // The gear table's δ of a ratio read 16,667 % off, the cam's 0,034 %.
         assert_eq!(error_pct(-0.16667, Lang::Ru), "−16,67");
         assert_eq!(error_pct(0.00034, Lang::En), "0.03");
+    }
+
+    #[test]
+    fn a_reading_is_written_to_the_step_it_was_read_to() {
+        // The shaper's gear sheet read to 0,5 mm (issue 45): s_a = 9,003 mm on the 1:1
+        // rack picture, B₁B₂ = 48,00 mm on the 1:2 meshing picture (1 mm), λ = −0,8200 off
+        // its 25 mm unit (0,02), ε_α = 1,161 to 1 mm over p_b = 41,33 mm.
+        assert_eq!(read(9.003, Some(0.5), Lang::Ru), "9,0");
+        assert_eq!(read(48.0, Some(1.0), Lang::Ru), "48");
+        assert_eq!(read(-0.82, Some(0.02), Lang::En), "−0.82");
+        assert_eq!(read(1.1614, Some(1.0 / 41.33), Lang::Ru), "1,16");
+        // No finer than four digits; exactly read, four digits.
+        assert_eq!(read(316.27, Some(0.001), Lang::En), "316.3");
+        assert_eq!(read(9.003, None, Lang::Ru), "9,003");
+        assert_eq!(read(9.003, Some(0.0), Lang::Ru), "9,003");
     }
 
     #[test]

@@ -5,6 +5,7 @@
 //! cut wheels, no train) also draws the pair's blocking contour with the scene's point and
 //! the textbook's choices, and names them in its lines. A1 landscape.
 
+use super::digits::read;
 use super::layout::{
     drawn_value, lay_out_smallest, quantity, results_table, Block, Column, Results, ScaleKey,
 };
@@ -12,9 +13,9 @@ use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
 use crate::gears::blocking::Study;
-use crate::gears::{DetailMark, GearStudy, DETAIL_LETTER};
+use crate::gears::{length_step, DetailMark, GearStudy, DETAIL_LETTER};
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_sig, Key, Lang};
+use crate::scale::{format_sig, Key, Lang, Scale};
 use crate::study::Session;
 use crate::words::{unit_in, GearText};
 
@@ -33,6 +34,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         details: Vec::new(),
         lines: vec![GearText::DataAndResults.get(lang).to_string()],
         plan: None,
+        read_mm: session.drafting().resolution_mm(),
     };
     // The blocking contour on a pair's own sheet (seed 002 PZ3), and on any gear sheet
     // whose shifts the contour chose (`choose`): the choice is shown where it was made. The
@@ -47,7 +49,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }) = &g.pair
     {
         sheet.pair_views(p, (&m.figure, &m.sliding, m.scale), contour);
-        sheet.pair_lines(p, m.ab.value);
+        sheet.pair_lines(p, (m.ab.value, m.scale));
         if let Some(b) = contour {
             sheet.contour_lines(b);
         }
@@ -67,6 +69,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         mut details,
         mut lines,
         plan,
+        read_mm,
         ..
     } = sheet;
     blocks.append(&mut details);
@@ -97,12 +100,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     // computed by formula against another route — a formula's value is no graphical reading.
     let (read, computed) = tables_rows(&g);
     if !read.is_empty() {
-        blocks.push(Block::Table(table(
-            &read,
-            &g,
-            session.drafting().resolution_mm(),
-            lang,
-        )));
+        blocks.push(Block::Table(table(&read, &g, read_mm, lang)));
     }
     if !computed.is_empty() {
         blocks.push(Block::Table(formula_table(&computed, &g, lang)));
@@ -303,6 +301,8 @@ struct Filling {
     details: Vec<Block>,
     lines: Vec<String>,
     plan: Option<crate::scale::Scale>,
+    /// How finely lengths are read off the drawing, mm (0: exactly).
+    read_mm: f64,
 }
 
 impl Filling {
@@ -346,7 +346,7 @@ impl Filling {
 
     /// The pair's data and results: m, z, x; α_w, a_w, y, Δy; the radii, the pitches and
     /// s_a; ε_α by formula and as drawn (B₁B₂ read off the meshing picture, `ab_drawn`, m).
-    fn pair_lines(&mut self, p: &crate::gears::Pair, ab_drawn: f64) {
+    fn pair_lines(&mut self, p: &crate::gears::Pair, (ab_drawn, mu): (f64, Scale)) {
         use super::digits::{degrees, mm, value};
         let lang = self.lang;
         let mm = |x: f64| mm(x, lang);
@@ -378,14 +378,25 @@ impl Filling {
             mm(p.sa[1])
         ));
         // B₁B₂ worked from the radii (the textbook's), then read off the meshing picture.
+        let step = length_step(mu, self.read_mm);
         self.lines.push(format!(
             "ε_α = (N_1B_2 + N_2B_1 − N_1N_2)/p_b = {}; {}",
             value(p.eps, lang),
             GearText::EpsDrawn
                 .get(lang)
-                .replace("{ab}", &mm(ab_drawn))
+                .replace(
+                    "{ab}",
+                    &format!(
+                        "{} {}",
+                        read(ab_drawn * 1e3, step.map(|s| s * 1e3), lang),
+                        self.mm
+                    )
+                )
                 .replace("{pb}", &mm(p.p_b))
-                .replace("{eps}", &value(ab_drawn / p.p_b, lang)),
+                .replace(
+                    "{eps}",
+                    &read(ab_drawn / p.p_b, step.map(|s| s / p.p_b), lang)
+                ),
         ));
     }
 
@@ -410,6 +421,18 @@ impl Filling {
                 f(ix.sa[0]),
                 f(ix.sa[1]),
             ));
+        }
+        // The choices lie inside the hard limits by a margin (a supremum on a limit is a
+        // pair that does not work): the ε_α = 1,05 of «x_Σ max» is that, not a limit unsaid.
+        if b.points().len() > 1 {
+            use crate::gears::blocking::CHOICE_MARGIN as M;
+            self.lines.push(
+                GearText::ChoiceMargin
+                    .get(lang)
+                    .replace("{m}", &f(M))
+                    .replace("{eps}", &f(Study::HARD.eps_min + M))
+                    .replace("{sa}", &f(Study::HARD.sa_min + M)),
+            );
         }
         if let Some(c) = b.chosen {
             self.lines.push(format!(
@@ -478,7 +501,11 @@ impl Filling {
             "z = {}, x = {}: s_a = {} {}{}{}{}",
             c.z,
             format_sig(c.x, 4, lang),
-            format_sig(r.sa * 1e3, 4, lang),
+            read(
+                r.sa * 1e3,
+                length_step(r.scale, self.read_mm).map(|s| s * 1e3),
+                lang
+            ),
             mm_,
             // A pointed tip against the least the course admits.
             if r.pointed {

@@ -323,12 +323,8 @@ pub(super) fn drawn_value(r: &Row, x: f64, factor: f64, step: Option<f64>, lang:
     };
     let reference = r.graphical.abs().max(r.analytic.abs()) * factor;
     let mut decimals = decimals_of(reference, 3);
-    if let Some(step) = step
-        .map(|s| s * factor)
-        .filter(|s| *s > 0.0 && s.is_finite())
-    {
-        // The decimals of the step's first digit (0,5 → 1; 1 → 0; 0,02 → 2).
-        decimals = decimals.min((-step.log10() - 1e-9).ceil().clamp(0.0, 6.0) as usize);
+    if let Some(d) = super::digits::step_decimals(step.map(|s| s * factor)) {
+        decimals = decimals.min(d);
     }
     format_fixed(x * factor, decimals, lang)
 }

@@ -153,6 +153,11 @@ catalogue! {
         Holds => ("выполнено", "виконано", "holds"),
         Fails => ("не выполнено", "не виконано", "fails"),
         ForCoaxiality => ("по соосности", "за співвісністю", "for coaxiality"),
+        ChoiceMargin => (
+            "Точки выбора взяты на {m} внутри ограничений: ε_α ≥ {eps}, s_a ≥ {sa}m, x ≥ x_{min} + {m}",
+            "Точки вибору взято на {m} всередині обмежень: ε_α ≥ {eps}, s_a ≥ {sa}m, x ≥ x_{min} + {m}",
+            "The chosen points lie {m} inside the limits: ε_α ≥ {eps}, s_a ≥ {sa}m, x ≥ x_{min} + {m}"
+        ),
         EpsDrawn => (
             "по чертежу: ε_α = B_1B_2/p_b = {ab}/{pb} = {eps}",
             "за кресленням: ε_α = B_1B_2/p_b = {ab}/{pb} = {eps}",
