@@ -60,6 +60,11 @@ pub struct OutputRange {
     pub min: f64,
     /// Maximum value.
     pub max: f64,
+    /// The other crank angles at which it stands (radians in [0, 2π), ascending) with its
+    /// value there: a local extreme, or a second arrival at an extreme position (a six-bar's
+    /// slider that reaches its end, returns and reaches it again) — where dq/dφ₁ changes sign
+    /// through zero, not at a toggle (a kink of q(φ₁)).
+    pub stops: Vec<(f64, f64)>,
 }
 
 /// Extreme positions and the working stroke, from the first output.
@@ -209,7 +214,8 @@ impl Program {
             .filter_map(|k| sign(k).filter(|s| *s != 0).map(|s| (k, s)))
             .collect();
         let step = TAU / n as f64;
-        let mut roots: Vec<(f64, f64)> = Vec::new();
+        // (φ₁, q, whether q stands there smoothly rather than at a toggle).
+        let mut roots: Vec<(f64, f64, bool)> = Vec::new();
         for (m, &(k1, s1)) in moving.iter().enumerate() {
             let (k2, s2) = moving[(m + 1) % moving.len()];
             if s1 == s2 {
@@ -220,7 +226,7 @@ impl Program {
             let gap: Vec<usize> = (k1 + 1..k2u).map(|k| k % n).collect();
             let phi1 = poses[k1].phi;
             let phi = if gap.len() <= 1 && gap.iter().all(|k| sign(*k) == Some(0)) {
-                self.bisect(c, &poses[k1], phi1 + step * (k2u - k1) as f64, reference)
+                Some(self.bisect(c, &poses[k1], phi1 + step * (k2u - k1) as f64, reference))
             } else {
                 let order: Vec<usize> = match sense {
                     Sense::CounterClockwise => gap.clone(),
@@ -229,7 +235,13 @@ impl Program {
                 let toggle = order.iter().position(|k| sign(*k).is_none());
                 let arrive = order.iter().position(|k| sign(*k) == Some(0));
                 match (toggle, arrive) {
-                    (Some(t), a) if a.is_none_or(|a| t <= a) => poses[order[t]].phi,
+                    (Some(t), a) if a.is_none_or(|a| t <= a) => {
+                        let p = poses[order[t]].phi;
+                        if let Ok(pose) = self.solve(p, None) {
+                            roots.push((p, c.eval(&pose, reference).0, false));
+                        }
+                        None
+                    }
                     (_, Some(a)) => {
                         // Bisect between the last moving sample and the first still one.
                         let first = order[a];
@@ -241,25 +253,36 @@ impl Program {
                         } else {
                             order[a - 1]
                         };
-                        self.arrival(c, poses[before].phi, poses[first].phi, reference, still)
+                        Some(self.arrival(c, poses[before].phi, poses[first].phi, reference, still))
                     }
                     _ => continue,
                 }
             };
-            if let Ok(p) = self.solve(phi, None) {
-                roots.push((phi, c.eval(&p, reference).0));
+            if let Some(phi) = phi {
+                if let Ok(p) = self.solve(phi, None) {
+                    roots.push((phi, c.eval(&p, reference).0, true));
+                }
             }
         }
         let max = roots.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1));
         let min = roots.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1));
         match (min, max) {
-            (Some(lo), Some(hi)) if hi.1 - lo.1 > 0.0 => Ok(OutputRange {
-                coord: c,
-                phi_min: lo.0.rem_euclid(TAU),
-                phi_max: hi.0.rem_euclid(TAU),
-                min: lo.1,
-                max: hi.1,
-            }),
+            (Some(lo), Some(hi)) if hi.1 - lo.1 > 0.0 => {
+                let mut stops: Vec<(f64, f64)> = roots
+                    .iter()
+                    .filter(|r| r.2 && r.0 != lo.0 && r.0 != hi.0)
+                    .map(|r| (r.0.rem_euclid(TAU), r.1))
+                    .collect();
+                stops.sort_by(|a, b| a.0.total_cmp(&b.0));
+                Ok(OutputRange {
+                    coord: c,
+                    phi_min: lo.0.rem_euclid(TAU),
+                    phi_max: hi.0.rem_euclid(TAU),
+                    min: lo.1,
+                    max: hi.1,
+                    stops,
+                })
+            }
             _ => Err(none()),
         }
     }

@@ -340,6 +340,43 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
                 super::digits::mm(r.max - r.min, lang)
             )),
         }
+        // An output that stands more than twice a turn (the six-bar's slider reaches its
+        // end, comes back and reaches it again): every other stop, with its position.
+        if !r.stops.is_empty() {
+            let v_of = match r.coord {
+                OutputCoord::Rocker(l) => format!("ω_{{{l}}}"),
+                OutputCoord::Slider(i, _) => format!("v_{{{}}}", plan.point_name(i)),
+            };
+            // A stop at the value of an extreme is that extreme position reached again.
+            let again = |q: f64| {
+                let at = |x: f64| is_zero(q - x, r.max - r.min);
+                let phi = [(r.min, r.phi_min), (r.max, r.phi_max)]
+                    .into_iter()
+                    .find(|e| at(e.0))?
+                    .1;
+                Some(Text::SameExtremeAs.get(lang).replace("{p}", &label(phi)))
+            };
+            let list: Vec<String> = r
+                .stops
+                .iter()
+                .map(|&(phi, q)| {
+                    let at = match label(phi) {
+                        l if l.is_empty() => format!("φ_1 = {}°", deg(phi)),
+                        l => format!("{l}, φ_1 = {}°", deg(phi)),
+                    };
+                    match again(q) {
+                        Some(w) => format!("{at} ({w})"),
+                        None => at,
+                    }
+                })
+                .collect();
+            v.push(
+                Text::AlsoStands
+                    .get(lang)
+                    .replace("{v}", &v_of)
+                    .replace("{list}", &list.join(", ")),
+            );
+        }
     }
     // θ stated once: as the rocker's swing when it is the swing, else beside K.
     let stated = ex.ranges.iter().any(|r| {
@@ -348,7 +385,7 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     });
     let k = format!(
         "K = (180° + θ)/(180° − θ) = {}",
-        format_fixed(ex.k, digits(4), lang)
+        format_fixed(ex.k, digits(3), lang)
     );
     v.push(if stated {
         k

@@ -41,6 +41,12 @@ catalogue! {
         RedundantPair => ("избыточная пара", "надлишкова пара", "redundant pair"),
         StructureFormula => ("Формула строения", "Формула будови", "Structure formula"),
         ExtremePositions => ("Крайние положения", "Крайні положення", "Extreme positions"),
+        AlsoStands => ("{v} = 0 также при {list}", "{v} = 0 також при {list}", "{v} = 0 also at {list}"),
+        SameExtremeAs => (
+            "крайнее положение, как {p}",
+            "крайнє положення, як {p}",
+            "the extreme position, as at {p}"
+        ),
         WorkingStroke => ("Рабочий ход", "Робочий хід", "Working stroke"),
         FromOuterDeadCentre => ("расширение от в.м.т.", "розширення від в.м.т.", "expansion from TDC"),
         SlowerStroke => ("медленный", "повільний", "the slower"),

@@ -156,3 +156,27 @@ fn the_six_bar_chart_breaks_at_its_change_point() {
     assert_eq!(curves(&chart.first_figure), 4);
     assert_eq!(curves(&chart.second_figure), 2);
 }
+
+/// The six-bar's slider E stands four times a turn (issue 45): at 10′ and 6′, its extreme
+/// positions, at the change point 6 (a kink of S, no stop), and at φ₁ = 229,06°, where D, C
+/// and E line up and E reaches the same end as at 6′ (x_E = −OD − DC − CE = −1050 mm), comes
+/// back 49 mm and reaches it again. The sheet names that stop with the
+/// extreme positions; the slider-crank, which stands twice, names none.
+#[test]
+fn a_slider_that_reaches_its_end_twice_a_turn_says_where() {
+    let stops = |scene: &str| {
+        let scene = tmm::load(&root().join(format!("constructions/{scene}.toml"))).expect(scene);
+        let plates = tmm::render::plates(&scene, tmm::Lang::Ru, Drafting::EXACT).expect("plates");
+        plates
+            .iter()
+            .flat_map(|(_, p)| p.texts.iter().flat_map(|t| t.lines.iter()))
+            .filter(|t| t.contains("= 0 также при"))
+            .cloned()
+            .collect::<Vec<String>>()
+    };
+    assert_eq!(
+        stops("six-bar"),
+        ["v_{E} = 0 также при φ_1 = 229,06° (крайнее положение, как 6′)"]
+    );
+    assert!(stops("slider-crank").is_empty());
+}
