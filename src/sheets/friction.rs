@@ -13,7 +13,7 @@ use crate::friction::{
     wedge_twin, CaseKind, Drawing, DrawingKind, Motion, Rolling, Slider, SliderState, Solved,
 };
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_fixed, format_number, format_sig, Key, Lang, Quantity};
+use crate::scale::{format_number, format_sig, Key, Lang, Quantity};
 use crate::study::Session;
 use crate::words::{unit_in, FrictionText, Text};
 
@@ -349,6 +349,8 @@ fn unit(r: &Row, lang: Lang) -> String {
     match r.unit() {
         "1" => String::new(),
         "rad" => "°".into(),
+        // Lengths in millimetres, as the drawings are read (no 0,007184 м).
+        "m" => unit_in("mm", lang),
         u => unit_in(u, lang),
     }
 }
@@ -359,12 +361,10 @@ fn table(solved: &[Solved], lang: Lang) -> TableBlock {
     for (n, s) in solved.iter().enumerate() {
         for r in &s.readings {
             let row = &r.row;
-            let shown = |x: f64| {
-                if row.key.symbol == crate::check::Symbol::Angle {
-                    num(x.to_degrees(), lang)
-                } else {
-                    num(x, lang)
-                }
+            let shown = |x: f64| match row.unit() {
+                "rad" => num(x.to_degrees(), lang),
+                "m" => num(x * 1e3, lang),
+                _ => num(x, lang),
             };
             let unit = unit(row, lang);
             let symbol = if unit.is_empty() {
@@ -374,7 +374,7 @@ fn table(solved: &[Solved], lang: Lang) -> TableBlock {
             };
             let error = row
                 .rel_error(row.scale)
-                .map_or("—".to_string(), |e| format_fixed(e * 100.0, 3, lang));
+                .map_or("—".to_string(), |e| super::digits::error_pct(e, lang));
             rows.push(vec![
                 (n + 1).to_string(),
                 symbol,
