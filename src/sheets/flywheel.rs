@@ -1,10 +1,10 @@
 //! Plate "Маховик" (seed 000 §5.7): the flywheel as a part drawing on a sheet of its own, at
 //! the round scale that draws it whole (the seed's 1:4), on the smallest sheet from A3 up
-//! that holds it at that scale or the next coarser one: the axial section and the front view with the spokes' sections, every
-//! dimension from the J_м the dynamics sheet's construction gives (Wittenbauer's tangents) —
-//! the flywheel a hand-in sizes — with the exact J_м and the δ each gives, and the table of
-//! the dimensions with the proportions they follow. A scene whose machine needs no flywheel
-//! has no such sheet.
+//! that holds it at that scale or the next coarser one: the axial section and the front
+//! view with the spokes' sections, every dimension from the J_м the dynamics sheet's
+//! construction gives (Wittenbauer's tangents) — the flywheel a hand-in sizes — with the
+//! exact J_м and the δ each gives, and the table of the dimensions with the proportions they
+//! follow. A scene whose machine needs no flywheel has no such sheet.
 
 use super::layout::{lay_out_smallest, Block, Part};
 use super::BuildError;

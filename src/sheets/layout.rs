@@ -314,15 +314,12 @@ pub(super) fn drawn_value(r: &Row, x: f64, factor: f64, step: Option<f64>, lang:
     if x == 0.0 {
         return "0".into();
     }
-    let decimals_of = |unit: f64, places: i32| {
-        if unit > 0.0 && unit.is_finite() {
-            (places - unit.log10().floor() as i32).clamp(0, 6) as usize
-        } else {
-            0
-        }
-    };
     let reference = r.graphical.abs().max(r.analytic.abs()) * factor;
-    let mut decimals = decimals_of(reference, 3);
+    let mut decimals = if reference > 0.0 && reference.is_finite() {
+        (3 - reference.log10().floor() as i32).clamp(0, 6) as usize
+    } else {
+        0
+    };
     if let Some(d) = super::digits::step_decimals(step.map(|s| s * factor)) {
         decimals = decimals.min(d);
     }
