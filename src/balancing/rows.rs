@@ -24,6 +24,21 @@ fn row(symbol: Symbol, subject: &str, graphical: f64, analytic: f64, scale: f64)
 }
 
 impl Balancing {
+    /// The step (SI) of the row `r`'s graphical value when lengths are read to
+    /// `resolution_mm` on the drawing: a force of inertia (before balancing, or the residual
+    /// after it) off the polygon of static moments, `resolution_mm` × μ_mρ × ω²; a moment off
+    /// the polygon of moments, × μ_mρz × ω². `None` for the other rows (each its own reading
+    /// already) or when lengths are read exactly.
+    pub fn reading_step(&self, r: &Row, resolution_mm: f64) -> Option<f64> {
+        let w2 = self.spec.omega? * self.spec.omega?;
+        let mu = match r.key.symbol {
+            Symbol::Force => self.scale_mr,
+            Symbol::Moment => self.scale_mrz?,
+            _ => return None,
+        };
+        (resolution_mm > 0.0).then(|| resolution_mm * mu.value() * w2)
+    }
+
     /// Σ |mᵢρᵢ|, kg·m: the scale of the static moments (their zero reference).
     fn static_scale(&self) -> f64 {
         self.spec.masses.iter().map(|m| m.mass * m.radius).sum()

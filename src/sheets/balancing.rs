@@ -57,7 +57,8 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         lines,
         size_mm: TEXT_MM,
     });
-    blocks.push(Block::Table(table(&b.rows(), lang)));
+    let read_mm = session.drafting().resolution_mm();
+    blocks.push(Block::Table(table(&b, read_mm, lang)));
     let sheet_title = if dynamic {
         RotorText::Complete
     } else {
@@ -235,9 +236,12 @@ fn polygon_scale(mu: Scale, symbol: Symbol, lang: Lang) -> String {
     )
 }
 
-/// The table graphical | analytic | error of the rows (angles in degrees, unbalances in
-/// kg·mm, [`sheet_unit`]).
-fn table(rows: &[Row], lang: Lang) -> TableBlock {
+/// The table graphical | analytic | error of the balancing's rows (angles in degrees,
+/// unbalances in kg·mm, [`sheet_unit`]); a force or moment read to its step off a polygon
+/// whose lengths are read to `read_mm` ([`Balancing::reading_step`]): the residual after
+/// balancing 1 Н read to 0,5 Н, not 0,9602.
+fn table(b: &Balancing, read_mm: f64, lang: Lang) -> TableBlock {
+    let rows = b.rows();
     let value = |r: &Row, x: f64, s: f64| {
         let k = sheet_unit(r.key.symbol).1;
         if crate::check::is_zero(x, s) {
@@ -259,10 +263,14 @@ fn table(rows: &[Row], lang: Lang) -> TableBlock {
             name: &|r| quantity(r, lang).0,
             unit: &|r| quantity(r, lang).1,
             value: &value,
-            graphical: None,
+            graphical: &|r| {
+                let k = sheet_unit(r.key.symbol).1;
+                let step = b.reading_step(r, read_mm)?;
+                Some(super::digits::read(r.graphical * k, Some(step * k), lang))
+            },
             size_mm: TABLE_MM,
         },
-        rows,
+        &rows,
         lang,
     )
 }

@@ -488,7 +488,7 @@ pub(super) fn results_table(rows: &[Row], lang: Lang) -> TableBlock {
             name: &|r| quantity(r, lang),
             unit: &|_| String::new(),
             value: &|_, x, _| super::digits::value(x * 1e3, lang),
-            graphical: None,
+            graphical: &|_| None,
             size_mm: TABLE_MM,
         },
         &rows,

@@ -345,7 +345,7 @@ fn results_table(d: &Dynamics, lang: Lang) -> TableBlock {
                 let k = crate::words::shown_unit(r.key.symbol).0;
                 super::digits::Column::of([r.graphical * k, r.analytic * k]).cell(x * k, lang)
             },
-            graphical: None,
+            graphical: &|_| None,
             size_mm: TABLE_MM,
         },
         &rows,

@@ -222,7 +222,7 @@ fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
             },
             unit: &|_| String::new(),
             value: &|_, x, scale| cell(x, scale, lang),
-            graphical: None,
+            graphical: &|_| None,
             size_mm: TABLE_MM,
         },
         rows,

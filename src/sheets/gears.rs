@@ -251,9 +251,10 @@ fn values_table(
                 u => unit_in(u, lang),
             },
             value: &|r, x, _| drawn_value(r, x, factor(r), None, lang),
-            graphical: Some(&|r| {
-                drawn_value(r, r.graphical, factor(r), g.reading_step(r, read_mm), lang)
-            }),
+            graphical: &|r| {
+                let step = g.reading_step(r, read_mm);
+                Some(drawn_value(r, r.graphical, factor(r), step, lang))
+            },
             size_mm: TABLE_MM,
         },
         rows,

@@ -291,8 +291,8 @@ pub(super) struct Results<'a> {
     /// A value of a row, given the row's zero reference ([`crate::check::scales`]).
     pub value: &'a dyn Fn(&Row, f64, f64) -> String,
     /// A row's graphical value, when written otherwise than [`Self::value`] writes it (to
-    /// the step it was read to).
-    pub graphical: Option<&'a dyn Fn(&Row) -> String>,
+    /// the step it was read to); `None` from it for a row [`Self::value`] writes.
+    pub graphical: &'a dyn Fn(&Row) -> Option<String>,
     /// Text height, mm.
     pub size_mm: f64,
 }
@@ -330,28 +330,27 @@ pub(super) fn drawn_value(r: &Row, x: f64, factor: f64, step: Option<f64>, lang:
 pub(super) fn results_table(results: &Results<'_>, rows: &[Row], lang: Lang) -> TableBlock {
     let errors = crate::check::rel_errors(rows);
     let scales = crate::check::scales(rows);
-    let body = rows
-        .iter()
-        .zip(errors.into_iter().zip(scales))
-        .map(|(r, (e, s))| {
-            results
-                .columns
-                .iter()
-                .map(|(c, _)| match c {
-                    Column::Quantity => (results.name)(r),
-                    Column::Method => r.method.name(lang).to_string(),
-                    Column::Unit => (results.unit)(r),
-                    Column::Graphical => results
-                        .graphical
-                        .map_or_else(|| (results.value)(r, r.graphical, s), |g| g(r)),
-                    Column::Analytic | Column::Exact => (results.value)(r, r.analytic, s),
-                    Column::Error => {
-                        e.map_or_else(|| "—".into(), |e| super::digits::error_pct(e, lang))
-                    }
-                })
-                .collect()
-        })
-        .collect();
+    let body =
+        rows.iter()
+            .zip(errors.into_iter().zip(scales))
+            .map(|(r, (e, s))| {
+                results
+                    .columns
+                    .iter()
+                    .map(|(c, _)| match c {
+                        Column::Quantity => (results.name)(r),
+                        Column::Method => r.method.name(lang).to_string(),
+                        Column::Unit => (results.unit)(r),
+                        Column::Graphical => (results.graphical)(r)
+                            .unwrap_or_else(|| (results.value)(r, r.graphical, s)),
+                        Column::Analytic | Column::Exact => (results.value)(r, r.analytic, s),
+                        Column::Error => {
+                            e.map_or_else(|| "—".into(), |e| super::digits::error_pct(e, lang))
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
     let heading = |c: Column| match c {
         Column::Quantity => Text::Quantity.get(lang),
         Column::Method => Text::Method.get(lang),

@@ -352,3 +352,45 @@ fn the_number_of_masses_is_bounded_at_load() {
         }
     }
 }
+
+/// A force or moment of inertia is written to the step it is read to off its polygon (issue
+/// 45): at 0,5 mm on the polygon of static moments (× ω²) the static rotor's residual after
+/// balancing, 0,96 N, reads «1» beside «765» before, not «0,9602»; the dynamic rotor's
+/// residual force and moment «0,1» and «0,0» (0,1116 N and 0,04159 N·m).
+#[test]
+fn a_residual_is_read_to_its_polygons_step() {
+    let cells = |scene: &str, drafting: tmm::construct::Drafting| {
+        let s = tmm::load(&root().join(format!("constructions/{scene}.toml"))).expect(scene);
+        let plates = tmm::render::plates(&s, tmm::Lang::Ru, drafting).expect("plates");
+        let rows: Vec<Vec<String>> = plates
+            .iter()
+            .flat_map(|(_, p)| &p.tables)
+            .flat_map(|t| t.rows.clone())
+            .collect();
+        let graphical = |q: &str| {
+            rows.iter()
+                .find(|r| r[0] == q)
+                .unwrap_or_else(|| panic!("{scene}: no {q} in {rows:?}"))[2]
+                .clone()
+        };
+        (
+            graphical("F_{и} до"),
+            graphical("F_{и} после"),
+            rows.iter()
+                .any(|r| r[0] == "M_{и} после")
+                .then(|| graphical("M_{и} после")),
+        )
+    };
+    let hand = tmm::construct::Drafting::HAND;
+    assert_eq!(
+        cells("rotor-static", hand),
+        ("765".into(), "1".into(), None)
+    );
+    assert_eq!(
+        cells("rotor-dynamic", hand),
+        ("65,5".into(), "0,1".into(), Some("0,0".into()))
+    );
+    // Read exactly, the polygon closes: no residual.
+    let exact = cells("rotor-static", tmm::construct::Drafting::EXACT);
+    assert_eq!(exact.1, "0", "read exactly: {exact:?}");
+}
