@@ -238,8 +238,9 @@ fn polygon_scale(mu: Scale, symbol: Symbol, lang: Lang) -> String {
 
 /// The table graphical | analytic | error of the balancing's rows (angles in degrees,
 /// unbalances in kg·mm, [`sheet_unit`]); a force or moment read to its step off a polygon
-/// whose lengths are read to `read_mm` ([`Balancing::reading_step`]): the residual after
-/// balancing 1 Н read to 0,5 Н, not 0,9602.
+/// whose lengths are read to `read_mm` ([`Balancing::reading_step`]): the static rotor's
+/// residual after balancing, read to 0,5 mm × 0,05 кг·мм/мм × (300 рад/с)² = 2,25 Н, is «1»,
+/// not «0,9602».
 fn table(b: &Balancing, read_mm: f64, lang: Lang) -> TableBlock {
     let rows = b.rows();
     let value = |r: &Row, x: f64, s: f64| {

@@ -354,8 +354,9 @@ fn the_number_of_masses_is_bounded_at_load() {
 }
 
 /// A force or moment of inertia is written to the step it is read to off its polygon (issue
-/// 45): at 0,5 mm on the polygon of static moments (× ω²) the static rotor's residual after
-/// balancing, 0,96 N, reads «1» beside «765» before, not «0,9602»; the dynamic rotor's
+/// 45): read to 0,5 mm on the polygon of static moments (μ_mρ = 0,05 kg·mm/mm, × ω² = 300²:
+/// a step of 2,25 N) the static rotor's residual after balancing, 0,96 N, reads «1» beside
+/// «765» before, not «0,9602»; the dynamic rotor's
 /// residual force and moment «0,1» and «0,0» (0,1116 N and 0,04159 N·m).
 #[test]
 fn a_residual_is_read_to_its_polygons_step() {
