@@ -30,13 +30,13 @@ impl Balancing {
     /// the polygon of moments, × μ_mρz × ω². `None` for the other rows (each its own reading
     /// already) or when lengths are read exactly.
     pub fn reading_step(&self, r: &Row, resolution_mm: f64) -> Option<f64> {
-        let w2 = self.spec.omega? * self.spec.omega?;
+        let w = self.spec.omega?;
         let mu = match r.key.symbol {
             Symbol::Force => self.scale_mr,
             Symbol::Moment => self.scale_mrz?,
             _ => return None,
         };
-        (resolution_mm > 0.0).then(|| resolution_mm * mu.value() * w2)
+        (resolution_mm > 0.0).then(|| resolution_mm * mu.value() * w * w)
     }
 
     /// Σ |mᵢρᵢ|, kg·m: the scale of the static moments (their zero reference).

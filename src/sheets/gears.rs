@@ -194,7 +194,8 @@ fn table_unit(r: &Row) -> (&'static str, f64) {
 /// method (the drawing read) | unit | graphical | analytic | error (lengths in mm).
 fn table(rows: &[Row], g: &GearStudy, read_mm: f64, lang: Lang) -> TableBlock {
     values_table(
-        (rows, read_mm),
+        rows,
+        read_mm,
         g,
         GearText::ReadOff.get(lang).into(),
         &[
@@ -214,7 +215,8 @@ fn table(rows: &[Row], g: &GearStudy, read_mm: f64, lang: Lang) -> TableBlock {
 /// independent route, the exact value) | error.
 fn formula_table(rows: &[Row], g: &GearStudy, lang: Lang) -> TableBlock {
     let mut t = values_table(
-        (rows, 0.0),
+        rows,
+        0.0,
         g,
         GearText::Computed.get(lang).into(),
         &[
@@ -234,7 +236,8 @@ fn formula_table(rows: &[Row], g: &GearStudy, lang: Lang) -> TableBlock {
 /// The rows as a table of `columns` titled `title` (lengths in mm), their graphical values
 /// read to the step of `read_mm` on the drawing read ([`GearStudy::reading_step`]).
 fn values_table(
-    (rows, read_mm): (&[Row], f64),
+    rows: &[Row],
+    read_mm: f64,
     g: &GearStudy,
     title: String,
     columns: &[(Column, f64)],
