@@ -37,6 +37,29 @@ impl Cam {
         matches!(self.spec.follower, Follower::Flat { .. })
     }
 
+    /// The step a value of the results table is read to at `resolution_mm` on its drawing,
+    /// m: r_min off the combined diagram (μ_S), ρ_min off the profile (μ_l); `None` when
+    /// read exactly or not read (the roller is chosen by its rule, the profile's deviation
+    /// is a comparison).
+    pub fn reading_step(&self, r: &Row, resolution_mm: f64) -> Option<f64> {
+        if r.key.at != At::Scene {
+            return None;
+        }
+        match (r.method, r.key.symbol) {
+            (Method::CombinedDiagram, _) => self.r_min_step(resolution_mm),
+            (_, Symbol::CurvatureRadius) => {
+                (resolution_mm > 0.0).then(|| self.inversion.scale.to_physical(resolution_mm))
+            }
+            _ => None,
+        }
+    }
+
+    /// The step r_min is read to at `resolution_mm` off the combined diagram (μ_S), m;
+    /// `None` when read exactly.
+    pub fn r_min_step(&self, resolution_mm: f64) -> Option<f64> {
+        (resolution_mm > 0.0).then(|| self.diagrams.s_scale.to_physical(resolution_mm))
+    }
+
     /// The exact motion at every point.
     pub fn exact_motion(&self) -> Vec<Motion> {
         self.points

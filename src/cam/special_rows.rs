@@ -27,6 +27,15 @@ fn row(symbol: Symbol, at: At, subject: &str, (graphical, exact): (f64, f64), sc
 }
 
 impl Special {
+    /// The step a value of the results table is read to at `resolution_mm` off the
+    /// profile's drawing (μ_l), m: ρ_min and the least travel; `None` when read exactly or
+    /// not read (the profile's deviation is a comparison).
+    pub fn reading_step(&self, r: &Row, resolution_mm: f64) -> Option<f64> {
+        let read = matches!(r.key.symbol, Symbol::CurvatureRadius | Symbol::Length);
+        (resolution_mm > 0.0 && read && r.key.at == At::Scene)
+            .then(|| self.scale.to_physical(resolution_mm))
+    }
+
     /// λ_max = 90° − γ_min.
     pub fn lambda_max(&self) -> f64 {
         FRAC_PI_2 - self.spec.gamma_min

@@ -262,7 +262,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     }
     // The base radius accepted from the r_min read, as the sheet says it.
     if s.base_radius.is_none() {
-        let lines = crate::sheets::cam_marks::base_lines(&cam, lang);
+        let lines = crate::sheets::cam_marks::base_lines(&cam, None, lang);
         w.doc.say(&format!("{}.", lines.join(". ")));
     }
     if cam.roller > 0.0 && s.roller.is_none() {

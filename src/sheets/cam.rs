@@ -10,7 +10,7 @@ use crate::cam::{
     Analogue, Cam, CamSpec, Closure, Diagrams, Follower, Law, Layout, Rotation, ANGLE_LIMIT_NOTE,
     R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
 };
-use crate::check::{Cusp, Finding, Row};
+use crate::check::{Cusp, Finding, Row, Symbol};
 use crate::geom::DVec2;
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock, CAPTION_BAND_MM};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
@@ -63,7 +63,9 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         Follower::Translating { .. } => CamText::TranslatingCombined,
     }
     .get(lang);
-    let r_min = cam_marks::valued("r_{min}", cam.radius.graphical, lang);
+    let read_mm = session.drafting().resolution_mm();
+    let r_min_step = cam.r_min_step(read_mm);
+    let r_min = format!("r_{{min}} = {}", cam_marks::r_min(&cam, r_min_step, lang));
     let rho_min = cam_marks::valued(RHO_ADMITTED, cam.spec.rho_min, lang);
     let radius = cam_marks::relabelled(&cam.radius.figure, R_MIN_NOTE, &r_min);
     let radius = cam_marks::relabelled(&radius, RHO_MIN_NOTE, &rho_min);
@@ -105,7 +107,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         ));
     }
     let drawings = blocks.len();
-    let mut lines = data_lines(&cam, lang);
+    let mut lines = data_lines(&cam, r_min_step, lang);
     lines.push(String::new());
     lines.extend(legend(CamText::RadiusVector, lang));
     lines.push(super::drafting_line(
@@ -118,7 +120,8 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         size_mm: TEXT_MM,
     });
     blocks.extend(points_table(&cam, lang).into_iter().map(Block::Table));
-    blocks.push(Block::Table(results_table(&cam.rows(), lang)));
+    let step = |r: &Row| cam.reading_step(r, read_mm);
+    blocks.push(Block::Table(results_table(&cam.rows(), &step, lang)));
     let title = super::title_block(
         scene,
         CamText::Title.get(lang),
@@ -273,8 +276,8 @@ pub(super) fn law_lines(s: &CamSpec, rotation: Rotation, lang: Lang) -> Vec<Stri
     out
 }
 
-/// The task's data and the results, as text lines.
-fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
+/// The task's data and the results, as text lines (r_min to `r_min_step`, m).
+fn data_lines(cam: &Cam, r_min_step: Option<f64>, lang: Lang) -> Vec<String> {
     let s = &cam.spec;
     let mm = unit_in("mm", lang);
     let n = |x: f64| format_sig(x * 1e3, 4, lang);
@@ -304,8 +307,8 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     }
     out.push(String::new());
     out.push(format!(
-        "r_{{min}} = {} {mm} ({}), {} {mm} ({})",
-        n(cam.radius.graphical),
+        "r_{{min}} = {} ({}), {} {mm} ({})",
+        cam_marks::r_min(cam, r_min_step, lang),
         Text::Graphical.get(lang),
         n(cam.exact_r_min()),
         Text::Exact.get(lang)
@@ -314,7 +317,7 @@ fn data_lines(cam: &Cam, lang: Lang) -> Vec<String> {
     let found = cam.findings();
     let stated =
         |p: fn(&Finding) -> bool| found.iter().find(|f| p(f)).and_then(|f| verdict(f, lang));
-    out.extend(cam_marks::base_lines(cam, lang));
+    out.extend(cam_marks::base_lines(cam, r_min_step, lang));
     if !matches!(s.follower, Follower::Flat { .. }) {
         // The rule's two bounds, ρ_min the drawn pitch curve's; they choose the roller unless
         // the task gives it.
@@ -469,8 +472,13 @@ pub(super) fn points_tables(
         .collect()
 }
 
-/// The values of the whole scene: graphical against exact, mm.
-pub(super) fn results_table(rows: &[Row], lang: Lang) -> TableBlock {
+/// The values of the whole scene: graphical, each to the `step` it was read to (m), against
+/// exact, mm.
+pub(super) fn results_table(
+    rows: &[Row],
+    step: &dyn Fn(&Row) -> Option<f64>,
+    lang: Lang,
+) -> TableBlock {
     let rows: Vec<Row> = rows
         .iter()
         .filter(|r| r.key.at == crate::check::At::Scene)
@@ -488,7 +496,15 @@ pub(super) fn results_table(rows: &[Row], lang: Lang) -> TableBlock {
             name: &|r| quantity(r, lang),
             unit: &|_| String::new(),
             value: &|_, x, _| super::digits::value(x * 1e3, lang),
-            graphical: &|_| None,
+            graphical: &|r| {
+                let x = r.graphical * 1e3;
+                Some(if r.key.symbol == Symbol::ProfileDeviation {
+                    // A comparison, not a reading: two digits, as an error is written.
+                    format_sig(x, 2, lang)
+                } else {
+                    super::digits::read(x, step(r).map(|s| s * 1e3), lang)
+                })
+            },
             size_mm: TABLE_MM,
         },
         &rows,

@@ -65,6 +65,13 @@ pub(super) fn valued(symbol: &str, metres: f64, lang: Lang) -> String {
     format!("{symbol} = {}", digits::mm(metres, lang))
 }
 
+/// r_min as read off the combined diagram to the step of `step` (m; `None`: exactly), with
+/// its unit: `68,8 мм`.
+pub(crate) fn r_min(cam: &Cam, step: Option<f64>, lang: Lang) -> String {
+    let read = digits::read(cam.radius.graphical * 1e3, step.map(|s| s * 1e3), lang);
+    format!("{read} {}", crate::words::unit_in("mm", lang))
+}
+
 /// The displacement diagram with its phases' dimensions written in `lang`.
 pub(super) fn phases_marked(figure: &Figure, spec: &CamSpec, lang: Lang) -> Figure {
     let p = &spec.phases;
@@ -82,15 +89,15 @@ pub(super) fn phases_marked(figure: &Figure, spec: &CamSpec, lang: Lang) -> Figu
 /// The base radius the profile is built on, as the data say it: accepted from the r_min
 /// read (`Принимаем r_{0} = 70 мм ≥ r_{min} = 69 мм`), after the reason when the profile's
 /// check took it up (`При r_{0} = 33 мм по профилю в точке 0 λ = 30,18° > λ_{max} = 30°`),
-/// or the scene's (`r_{0} = 20 мм`): one sentence a line.
-pub(crate) fn base_lines(cam: &Cam, lang: Lang) -> Vec<String> {
+/// or the scene's (`r_{0} = 20 мм`): one sentence a line; r_min to `step` ([`r_min`]).
+pub(crate) fn base_lines(cam: &Cam, step: Option<f64>, lang: Lang) -> Vec<String> {
     if cam.spec.base_radius.is_some() {
         return vec![format!("r_{{0}} = {}", digits::mm(cam.base, lang))];
     }
     let accepted = CamText::Accepted
         .get(lang)
         .replace("{r0}", &digits::mm(cam.base, lang))
-        .replace("{rmin}", &digits::mm(cam.radius.graphical, lang));
+        .replace("{rmin}", &r_min(cam, step, lang));
     let Some(raised) = cam.raised else {
         return vec![accepted];
     };

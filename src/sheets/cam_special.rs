@@ -10,7 +10,7 @@ use super::layout::{keyed, Block};
 use super::BuildError;
 use crate::cam::sliding::TRAVEL_X_NOTE;
 use crate::cam::{Follower, Special, SpecialProfile, TRAVEL_NOTE};
-use crate::check::Finding;
+use crate::check::{Finding, Row};
 use crate::plate::{Plate, Sheet, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_sig, Key, Lang};
 use crate::study::{Session, StudyError};
@@ -77,7 +77,9 @@ pub(super) fn build(
             .into_iter()
             .map(Block::Table),
     );
-    blocks.push(Block::Table(results_table(&rows, lang)));
+    let read_mm = session.drafting().resolution_mm();
+    let step = |r: &Row| cam.reading_step(r, read_mm);
+    blocks.push(Block::Table(results_table(&rows, &step, lang)));
     let title = super::title_block(
         session.scene(),
         CamText::Title.get(lang),

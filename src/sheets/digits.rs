@@ -100,6 +100,16 @@ pub(crate) fn read(x: f64, step: Option<f64>, lang: Lang) -> String {
     }
 }
 
+/// An upper bound of `x` ≥ 0 to one significant digit, rounded up: `0,002` of 0,001509.
+pub(crate) fn bound(x: f64, lang: Lang) -> String {
+    if !(x > 0.0 && x.is_finite()) {
+        return value(x, lang);
+    }
+    let unit = 10f64.powf(x.log10().floor());
+    let decimals = (-unit.log10()).round().max(0.0) as usize;
+    format_fixed((x / unit * (1.0 - 1e-12)).ceil() * unit, decimals, lang)
+}
+
 /// A scale in a sheet's text at the sheet's precision: `μ_{φ} = 0,05236 рад/мм` (a derived
 /// μ, not round, printed to [`SIG`] digits as every value of the sheet).
 pub(crate) fn caption(scale: Scale, lang: Lang) -> String {
@@ -118,7 +128,7 @@ pub(crate) fn mm(metres: f64, lang: Lang) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{degrees, error_pct, mm, read, value, Column};
+    use super::{bound, degrees, error_pct, mm, read, value, Column};
     use crate::scale::Lang;
 
     #[test]
@@ -149,6 +159,17 @@ mod tests {
         assert_eq!(read(316.27, Some(0.001), Lang::En), "316.3");
         assert_eq!(read(9.003, None, Lang::Ru), "9,003");
         assert_eq!(read(9.003, Some(0.0), Lang::Ru), "9,003");
+    }
+
+    #[test]
+    fn a_bound_is_rounded_up_to_one_digit() {
+        // The shaper's envelope deviations, µm (issue 45): 0,001509 and 0,001463 → 0,002.
+        assert_eq!(bound(0.001509, Lang::Ru), "0,002");
+        assert_eq!(bound(0.001463, Lang::En), "0.002");
+        assert_eq!(bound(0.003, Lang::En), "0.003");
+        assert_eq!(bound(9.2, Lang::En), "10");
+        assert_eq!(bound(46.0, Lang::En), "50");
+        assert_eq!(bound(0.0, Lang::En), "0");
     }
 
     #[test]

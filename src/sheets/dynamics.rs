@@ -189,19 +189,23 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         num(e.w_min.0, lang),
         rad_s
     ));
-    out.push(format!(
-        "J_{{м}} {} = μ_{{T}}·kl/(δω_{{ср}}^2) = {}; {} = {}",
-        DynamicsText::Wittenbauer.get(lang),
-        with_delta(
-            j_or_none(d.diagrams.wittenbauer.j_fw, Some(Route::Wittenbauer)),
-            d.delta_of[0]
-        ),
-        DynamicsText::Merkin.get(lang),
-        with_delta(
-            j_or_none(d.diagrams.merkin.j_fw, Some(Route::Merkin)),
-            d.delta_of[1]
-        )
-    ));
+    // Each route's formula with what its diagram gave (its own μ_T), then J_м and its δ.
+    let g = &d.diagrams;
+    for (k, route, reading) in [
+        (0, Route::Wittenbauer, &g.wittenbauer),
+        (1, Route::Merkin, &g.merkin),
+    ] {
+        let (name, formula, worked) = route_formula(d, route, lang);
+        let j = j_or_none(reading.j_fw, Some(route));
+        out.push(if j == none {
+            format!("J_{{м}} ({name}) = {formula} = {j}")
+        } else {
+            format!(
+                "J_{{м}} ({name}) = {formula} = {worked} = {}",
+                with_delta(j, d.delta_of[k])
+            )
+        });
+    }
     let exact_delta = found.iter().find_map(|n| match *n {
         NoFlywheel::Exact { delta, .. } => Some(delta),
         _ => None,
@@ -311,6 +315,35 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
         rows,
         size_mm: TABLE_MM,
     }
+}
+
+/// A flywheel route's name, formula and the formula with its numbers: Wittenbauer's
+/// `μ_{T}·kl/(δω_{ср}^2)` at the energy–mass diagram's μ_T, Merkin's `ΔT_{I}/(δω_{ср}^2) −
+/// J_{ред} − J_{кс}` (the constant inertias, which T_I carries, taken off).
+fn route_formula(d: &Dynamics, route: Route, lang: Lang) -> (&'static str, String, String) {
+    let g = &d.diagrams;
+    let under = format!("({}·{}^2)", num(d.spec.delta, lang), num(d.w_avg, lang));
+    if route == Route::Wittenbauer {
+        let mu = g.scale_tw.value();
+        return (
+            DynamicsText::Wittenbauer.get(lang),
+            "μ_{T}·kl/(δω_{ср}^2)".into(),
+            format!(
+                "{}·{}/{under}",
+                num(mu, lang),
+                num(g.wittenbauer.range / mu, lang)
+            ),
+        );
+    }
+    let (mut formula, mut worked) = (
+        "ΔT_{I}/(δω_{ср}^2)".to_string(),
+        format!("{}/{under}", num(g.merkin.range, lang)),
+    );
+    for c in &d.spec.constant {
+        formula.push_str(&format!(" − J_{{{}}}", c.name));
+        worked.push_str(&format!(" − {}", num(c.inertia, lang)));
+    }
+    (DynamicsText::Merkin.get(lang), formula, worked)
 }
 
 /// The results of the whole cycle: graphical | unit | analytic | error.

@@ -62,7 +62,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         sheet.rack(&w.generation);
     }
     if let Some(t) = &g.train {
-        sheet.train(t);
+        sheet.train(t, g.pair.is_some());
     }
     let Filling {
         mut blocks,
@@ -82,9 +82,20 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     if computed(Symbol::ShiftCoefficient, Method::Formula) {
         lines.push(GearText::XMinRule.get(lang).into());
     }
-    // The deviation's rows stand in the computed table: what they measure, once.
-    if computed(Symbol::EnvelopeDeviation, Method::Envelope) {
-        lines.push(GearText::EnvelopeRule.get(lang).into());
+    // The profile's deviation from the exact envelope is no reading and no datum of the
+    // drawing (nanometres): a line bounds it, the tables leave it out.
+    let deviations = g.rows_by_part()[1]
+        .iter()
+        .filter(|r| r.key.symbol == Symbol::EnvelopeDeviation && r.method == Method::Envelope)
+        .map(|r| r.graphical)
+        .reduce(f64::max);
+    if let Some(d) = deviations {
+        let bound = format!(
+            "{} {}",
+            super::digits::bound(d * 1e6, lang),
+            unit_in("um", lang)
+        );
+        lines.push(GearText::EnvelopeRule.get(lang).replace("{bound}", &bound));
     }
     lines.push(super::drafting_line(
         session.drafting(),
@@ -147,7 +158,7 @@ pub(crate) fn tables_rows(g: &crate::gears::GearStudy) -> (Vec<Row>, Vec<Row>) {
                 minima.push(z);
                 first
             }
-            _ => true,
+            _ => r.key.symbol != Symbol::EnvelopeDeviation,
         })
         .partition(Row::is_read_off)
 }
@@ -535,14 +546,15 @@ impl Filling {
     }
 
     /// The train: the triangles of velocities with μ_ω, the mobility, the differential's and
-    /// the closing's lines, the assembly of the satellites.
-    fn train(&mut self, t: &crate::gears::TrainStudy) {
+    /// the closing's lines, the assembly of the satellites; its module named apart from a
+    /// `pair`'s on the sheet.
+    fn train(&mut self, t: &crate::gears::TrainStudy, pair: bool) {
         let lang = self.lang;
         // A sheet of a train alone is drawn at its triangles' μ_l (the title block read 1:1
         // over the differential's 2:1).
         self.plan.get_or_insert(t.triangles.scale_l);
         self.blocks
             .push(super::train_view::triangles_block(t, lang));
-        self.lines.extend(super::train_lines::lines(t, lang));
+        self.lines.extend(super::train_lines::lines(t, pair, lang));
     }
 }

@@ -5,8 +5,9 @@ use crate::gears::{Train, TrainStudy};
 use crate::scale::Lang;
 use crate::words::{unit_in, GearText};
 
-/// The lines of the train `t` under the sheet's data.
-pub(super) fn lines(t: &TrainStudy, lang: Lang) -> Vec<String> {
+/// The lines of the train `t` under the sheet's data; its module named as the reducer's
+/// beside a `pair` on the sheet (the pair's m is the data line's).
+pub(super) fn lines(t: &TrainStudy, pair: bool, lang: Lang) -> Vec<String> {
     let mut out = Vec::new();
     let tr_ = &t.spec.train;
     // The mobility; the ratio (by the formula and by the triangles, the required one too)
@@ -16,11 +17,11 @@ pub(super) fn lines(t: &TrainStudy, lang: Lang) -> Vec<String> {
     // closing's line then gives both).
     let mut mobility = train_mobility_line(tr_);
     if t.closings.is_empty() {
-        mobility.push_str(&format!("; {}", module_text(tr_, lang)));
+        mobility.push_str(&format!("; {}", module_text(tr_, pair, lang)));
     }
     out.push(mobility);
     out.extend(differential_line(t, lang));
-    out.extend(closing_lines(t, lang));
+    out.extend(closing_lines(t, pair, lang));
     if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {
         out.push(format!(
             "k = {k}: {} {}",
@@ -63,7 +64,7 @@ fn differential_line(t: &TrainStudy, lang: Lang) -> Option<String> {
 /// Each mesh the train's module does not close, at the module it is drawn at, beside the
 /// train's, with the decision only: `m = 1 мм, m_{3-4} = 2,833 мм (по соосности)` (why the
 /// source's module does not serve is the note's to say).
-fn closing_lines(t: &TrainStudy, lang: Lang) -> Vec<String> {
+fn closing_lines(t: &TrainStudy, pair: bool, lang: Lang) -> Vec<String> {
     let tr_ = &t.spec.train;
     let mm = unit_in("mm", lang);
     t.closings
@@ -72,7 +73,7 @@ fn closing_lines(t: &TrainStudy, lang: Lang) -> Vec<String> {
             let (s, w) = c.mesh;
             format!(
                 "{}, m_{{{}-{}}} = {} {mm} ({})",
-                module_text(tr_, lang),
+                module_text(tr_, pair, lang),
                 tr_.wheels[s].name,
                 tr_.wheels[w].name,
                 super::digits::value(c.module * 1e3, lang),
@@ -82,13 +83,15 @@ fn closing_lines(t: &TrainStudy, lang: Lang) -> Vec<String> {
         .collect()
 }
 
-/// The module the train's wheels are cut with: `m = 2 мм`.
-fn module_text(t: &Train, lang: Lang) -> String {
-    format!(
-        "m = {} {}",
-        super::digits::value(t.module * 1e3, lang),
-        unit_in("mm", lang)
-    )
+/// The module the train's wheels are cut with: `m = 2 мм`; beside a `pair`'s module,
+/// the reducer's: `m_{ред} = 2 мм (редуктор)`.
+fn module_text(t: &Train, pair: bool, lang: Lang) -> String {
+    let value = super::digits::value(t.module * 1e3, lang);
+    let mm = unit_in("mm", lang);
+    match crate::words::symbols::part("ред", lang).filter(|_| pair) {
+        Some(part) => format!("m_{{ред}} = {value} {mm} ({part})"),
+        None => format!("m = {value} {mm}"),
+    }
 }
 
 /// The train's mobility as the textbook writes it: W = 3n − 2p₅ − p₄ = 3·4 − 2·4 − 3 = 1.

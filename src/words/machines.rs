@@ -31,7 +31,7 @@ catalogue! {
         Flywheel => ("Маховик", "Маховик", "Flywheel"),
         Title => ("Динамика машины", "Динаміка машини", "Machine dynamics"),
         NoFlywheel => ("маховик не нужен", "маховик не потрібен", "no flywheel is needed"),
-        Wittenbauer => ("(Виттенбауэр)", "(Віттенбауер)", "(Wittenbauer)"),
+        Wittenbauer => ("Виттенбауэр", "Віттенбауер", "Wittenbauer"),
         Merkin => ("Меркин", "Меркін", "Merkin"),
         Rim => ("обод", "обід", "rim"),
         Disc => ("диск", "диск", "disc"),
@@ -180,9 +180,9 @@ catalogue! {
             "x_{min}: computed by (17 − z)/17 (1/17 ≈ sin²20°/2, rounded), check — the exact h_{a}* − z·sin²α/2"
         ),
         EnvelopeRule => (
-            "δ_{огиб}: отклонение профиля, проведённого лекалом, от точной огибающей",
-            "δ_{обв}: відхилення профілю, проведеного лекалом, від точної обвідної",
-            "δ_{env}: how far the profile drawn with the French curve departs from the exact envelope"
+            "Профиль, проведённый лекалом по точкам касания, отклоняется от точной огибающей не более чем на {bound}",
+            "Профіль, проведений лекалом через точки дотику, відхиляється від точної обвідної не більше ніж на {bound}",
+            "The profile drawn with the French curve through the touching points departs from the exact envelope by at most {bound}"
         ),
         OtherRoute => ("проверка", "перевірка", "check"),
         ChosenBy => (

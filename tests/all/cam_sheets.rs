@@ -18,7 +18,7 @@
 mod dimensions;
 
 use dimensions::{
-    axes_drawn, chosen_r0_dimensioned, number_after, offset_line_drawn, r_min_dimensioned,
+    axes_drawn, chosen_r0_dimensioned, number_after, offset_line_drawn, r_min_dimensioned, read_as,
     written_as,
 };
 use glam::DVec2;
@@ -273,8 +273,9 @@ fn flat_zone_hatched(f: &Figure) -> Result<(), String> {
 }
 
 /// The data's line of the base radius: when the scene gives none, r₀ accepted ≥ the r_min
-/// read, both as the cam has them (`Принимаем r_{0} = 70 мм ≥ r_{min} = 69 мм`).
-fn r0_accepted(cam: &Cam, plates: &[Plate]) -> Result<(), String> {
+/// read, both as the cam has them, r_min to its reading step at `d` (`Принимаем r_{0} = 70 мм
+/// ≥ r_{min} = 69 мм`).
+fn r0_accepted(cam: &Cam, plates: &[Plate], d: Drafting) -> Result<(), String> {
     if cam.spec.base_radius.is_some() {
         return Ok(());
     }
@@ -296,7 +297,8 @@ fn r0_accepted(cam: &Cam, plates: &[Plate]) -> Result<(), String> {
     if r0 < r {
         return Err(format!("“{line}”: r₀ below the r_min read"));
     }
-    if !written_as(r0, cam.base) || !written_as(r, cam.radius.graphical) {
+    let (r_min, step) = reading(cam, d);
+    if !written_as(r0, cam.base) || !read_as(r, r_min, step) {
         return Err(format!(
             "“{line}”: the profile is built on r₀ = {} m from r_min = {} m",
             cam.base, cam.radius.graphical
@@ -306,6 +308,11 @@ fn r0_accepted(cam: &Cam, plates: &[Plate]) -> Result<(), String> {
 }
 
 /// The final elements the combined diagram's caption promises, and r₀ accepted from it.
+/// r_min as read off the combined diagram, m, and the step it is read to at `d`.
+fn reading(cam: &Cam, d: Drafting) -> (f64, Option<f64>) {
+    (cam.radius.graphical, cam.r_min_step(d.resolution_mm()))
+}
+
 fn finished(cam: &Cam, f: &Figure, d: Drafting) -> Result<(), String> {
     if matches!(cam.spec.follower, Follower::Flat { .. }) {
         tangent_touches(f)?;
@@ -316,7 +323,7 @@ fn finished(cam: &Cam, f: &Figure, d: Drafting) -> Result<(), String> {
     chosen_r0_dimensioned(f, cam, d)?;
     offset_line_drawn(f, cam)?;
     axes_drawn(f, cam)?;
-    r_min_dimensioned(f, cam.radius.graphical, d)
+    r_min_dimensioned(f, reading(cam, d), d)
 }
 
 #[test]
@@ -325,7 +332,7 @@ fn every_combined_diagram_has_its_final_elements() {
         for (drafting, lang) in [(0.5, Lang::Ru), (0.0, Lang::Uk), (0.5, Lang::En)] {
             let (cam, plates, d) = sheets(name, drafting, lang);
             let f = combined(&plates).unwrap_or_else(|| panic!("{name}: no combined diagram"));
-            if let Err(e) = finished(&cam, &f, d).and_then(|()| r0_accepted(&cam, &plates)) {
+            if let Err(e) = finished(&cam, &f, d).and_then(|()| r0_accepted(&cam, &plates, d)) {
                 panic!("{name} ({drafting} mm, {lang:?}): {e}");
             }
         }
@@ -444,10 +451,10 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
             *to += (*to - *from).normalize() * 1.0;
         }
     });
-    assert!(r_min_dimensioned(&long, cam.radius.graphical, d).is_err());
+    assert!(r_min_dimensioned(&long, reading(&cam, d), d).is_err());
     let mut none = f.clone();
     none.steps.retain(|s| s.note != R_MIN_NOTE);
-    assert!(r_min_dimensioned(&none, cam.radius.graphical, d).is_err());
+    assert!(r_min_dimensioned(&none, reading(&cam, d), d).is_err());
     // The dimension without its value (the review's mark), or with another.
     for text in ["r_{min}", "r_{min} = 12,5 мм"] {
         let bare = broken(&f, R_MIN_NOTE, |s| {
@@ -455,11 +462,11 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
                 l.text = text.into();
             }
         });
-        assert!(r_min_dimensioned(&bare, cam.radius.graphical, d).is_err());
+        assert!(r_min_dimensioned(&bare, reading(&cam, d), d).is_err());
     }
     // r₀ taken at the r_min read off the drawing below the exact one (the review's
     // 69 < 69,4 мм), and no line accepting it at all.
-    assert!(r0_accepted(&cam, &plates).is_ok());
+    assert!(r0_accepted(&cam, &plates, d).is_ok());
     let under = |l: &String| {
         if l.contains(" ≥ r_{min} = ") {
             let r = number_after(l, " ≥ r_{min} = ").unwrap_or(0.0);
@@ -472,12 +479,12 @@ fn each_rule_fails_on_a_plate_built_to_break_it() {
     for t in lowered.iter_mut().flat_map(|p| p.texts.iter_mut()) {
         t.lines = t.lines.iter().map(under).collect();
     }
-    assert!(r0_accepted(&cam, &lowered).is_err());
+    assert!(r0_accepted(&cam, &lowered, d).is_err());
     let mut silent = plates.clone();
     for t in silent.iter_mut().flat_map(|p| p.texts.iter_mut()) {
         t.lines.retain(|l| !l.contains(" ≥ r_{min} = "));
     }
-    assert!(r0_accepted(&cam, &silent).is_err());
+    assert!(r0_accepted(&cam, &silent, d).is_err());
 
     // The flat face: the tangent floating 5 mm off both its lines (the review's PZ4).
     let (flat, plates, d) = sheets("cam-pz4", 0.5, Lang::Ru);

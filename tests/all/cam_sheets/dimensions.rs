@@ -22,9 +22,20 @@ pub(super) fn written_as(written: f64, metres: f64) -> bool {
     (written - metres * 1e3).abs() <= 5e-4 * (metres * 1e3).abs().max(1.0)
 }
 
+/// `written` (mm) is `metres` read to `step` (m; `None`: exactly, four digits): within half
+/// the step (19,3 of 19,33 mm read to 0,25 mm).
+pub(super) fn read_as(written: f64, metres: f64, step: Option<f64>) -> bool {
+    written_as(written, metres)
+        || step.is_some_and(|s| (written - metres * 1e3).abs() <= 0.5 * s * 1e3 * (1.0 + 1e-9))
+}
+
 /// The r_min dimension from O₁, its length read at the sheet's drafting equal to `graphical`
-/// and its text `r_min = <that value> мм`.
-pub(super) fn r_min_dimensioned(f: &Figure, graphical: f64, d: Drafting) -> Result<(), String> {
+/// and its text `r_min = <that value> мм`, written to the reading's step `read_to` (m).
+pub(super) fn r_min_dimensioned(
+    f: &Figure,
+    (graphical, read_to): (f64, Option<f64>),
+    d: Drafting,
+) -> Result<(), String> {
     let dims = segments(f, R_MIN_NOTE);
     let [(step, a, b)] = dims[..] else {
         return Err(format!("{} r_min dimensions", dims.len()));
@@ -36,7 +47,7 @@ pub(super) fn r_min_dimensioned(f: &Figure, graphical: f64, d: Drafting) -> Resu
         ));
     }
     match number_after(text, "r_{min} = ") {
-        Some(v) if written_as(v, graphical) => {}
+        Some(v) if read_as(v, graphical, read_to) => {}
         _ => {
             return Err(format!(
                 "the r_min dimension reads “{text}”, the report's {graphical} m"
