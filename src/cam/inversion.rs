@@ -370,7 +370,11 @@ pub(super) fn rotation(rec: &mut Recorder, o: StepId, r0_mm: f64) {
 /// pieces from its first point: each moving phase the French curve between its points,
 /// touching their `tangents` (the curve itself, not points on it), and each dwell the arc
 /// about O₁ it is.
-fn closed_profile(points: &[Point], pts: &[DVec2], tangents: &[DVec2]) -> (DVec2, Vec<[DVec2; 3]>) {
+pub(super) fn closed_profile(
+    points: &[Point],
+    pts: &[DVec2],
+    tangents: &[DVec2],
+) -> (DVec2, Vec<[DVec2; 3]>) {
     // The last point of the rise (the return's first follows it) and of the return.
     let n = points.iter().position(|p| p.last).unwrap_or(0);
     let m = points.len().saturating_sub(1);

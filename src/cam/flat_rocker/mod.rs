@@ -268,36 +268,6 @@ fn draw_faces(
     }
 }
 
-/// The profile through the contacts, with each dwell between two phases drawn as the arc
-/// about O₁ it is (the face stands still, so its contact turns back round O₁): from the
-/// contact at one phase's end to the next phase's first, clockwise, the radius carried
-/// linearly between theirs, a point every 3° or closer.
-fn with_dwells(pts: &[super::motion::Point], contacts: &[Contact]) -> Vec<DVec2> {
-    let mut out = Vec::with_capacity(contacts.len() + 64);
-    for (i, c) in contacts.iter().enumerate() {
-        out.push(c.point);
-        if !pts[i].last {
-            continue;
-        }
-        let next = contacts[(i + 1) % contacts.len()].point;
-        let (a, b) = (c.point.to_angle(), next.to_angle());
-        // Clockwise from a to b: a turn in (−2π, 0].
-        let turn = (b - a).rem_euclid(std::f64::consts::TAU) - std::f64::consts::TAU;
-        let turn = if turn <= -std::f64::consts::TAU + 1e-12 {
-            0.0
-        } else {
-            turn
-        };
-        let n = (turn.abs() / 3f64.to_radians()).ceil() as usize;
-        let (ra, rb) = (c.point.length(), next.length());
-        for k in 1..n {
-            let t = k as f64 / n as f64;
-            out.push(DVec2::from_angle(a + turn * t) * (ra + (rb - ra) * t));
-        }
-    }
-    out
-}
-
 /// What every step of the profile's construction reads: the scene's law, the rocker's frame
 /// (L, σ, ψ₀) and the drawing's μ_l.
 struct Board<'a> {
@@ -493,13 +463,16 @@ pub fn construct(
     }
     draw_faces(&mut rec, r, mu, &pts, (&lines, &turned), &contacts);
     rec.set_group(0);
+    // The French curve through the contacts, laid along the face line at each (the line
+    // touches the profile there), each dwell the arc about O₁.
+    let points: Vec<DVec2> = contacts.iter().map(|c| c.point).collect();
+    let tangents: Vec<DVec2> = lines.iter().map(|l| l.1).collect();
+    let (start, pieces) = super::inversion::closed_profile(&pts, &points, &tangents);
     rec.draw(
         "practical profile: envelope of the face lines",
-        Item::Polyline {
-            points: with_dwells(&pts, &contacts)
-                .into_iter()
-                .map(|p| board.mm(p))
-                .collect(),
+        Item::Bezier {
+            start: board.mm(start),
+            pieces: pieces.iter().map(|p| p.map(|q| board.mm(q))).collect(),
             closed: true,
         },
         Role::Result,
