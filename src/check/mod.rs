@@ -201,25 +201,33 @@ impl Method {
     /// The method's short name in `lang`, as the error tables of the sheets print it.
     pub fn name(self, lang: Lang) -> &'static str {
         match self {
-            Method::Plan => lang.pick("план", "план", "plan"),
+            Method::Plan => lang.pick("план", "план", "vector plan"),
             Method::DiagramChords => lang.pick("диаграмма", "діаграма", "diagram"),
             Method::DiagramTangents => {
                 lang.pick("диаграмма (кас.)", "діаграма (дот.)", "diagram (tangents)")
             }
             Method::Integration => lang.pick("интегрирование", "інтегрування", "integration"),
             Method::Polygon => lang.pick("план сил", "план сил", "force polygon"),
-            Method::Lever => lang.pick("рычаг Жуковского", "важіль Жуковського", "Zhukovsky lever"),
+            Method::Lever => lang.pick(
+                "рычаг Жуковского",
+                "важіль Жуковського",
+                "Zhukovsky's lever",
+            ),
             Method::Inversion => lang.pick("обращение движения", "обернення руху", "inversion"),
             Method::Envelope => lang.pick("огибающая", "обвідна", "envelope"),
             Method::Triangles => lang.pick(
                 "треугольники скоростей",
                 "трикутники швидкостей",
-                "triangles",
+                "velocity triangles",
             ),
             Method::Wittenbauer => lang.pick("Виттенбауэр", "Віттенбауер", "Wittenbauer"),
             Method::Merkin => lang.pick("Меркин", "Меркін", "Merkin"),
             Method::Formula => lang.pick("формула", "формула", "formula"),
-            Method::Meshing => lang.pick("картина зацепления", "картина зачеплення", "meshing"),
+            Method::Meshing => lang.pick(
+                "картина зацепления",
+                "картина зачеплення",
+                "meshing diagram",
+            ),
             Method::CombinedDiagram => lang.pick(
                 "совмещённая диаграмма",
                 "суміщена діаграма",

@@ -234,14 +234,14 @@ fn markdown_per_language() {
         "{ru}"
     );
     assert!(
-        en.contains("| 3 | plan | 2.25 | 2.5 | 0.25 | −10 | 37.5 |"),
+        en.contains("| 3 | vector plan | 2.25 | 2.5 | 0.25 | −10 | 37.5 |"),
         "{en}"
     );
     assert!(en.contains("mean \\|δ\\|, %"));
     assert!(ru.starts_with("# Графические и аналитические значения — shaper-000"));
     assert!(en.contains("## Table 5"));
     assert!(en.contains("| 8′ | −19 |  |"), "{en}");
-    assert!(en.contains("Mean error by method: plan 10 %; diagram 10 %."));
+    assert!(en.contains("Mean error by method: vector plan 10 %; diagram 10 %."));
     assert!(report.to_markdown(Lang::Uk).contains("діаграма"));
 }
 

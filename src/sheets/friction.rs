@@ -167,11 +167,12 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
         CaseKind::Incline(c) => {
             let t = incline_twin(c);
             let first = format!(
-                "{n}: φ = arctg f = {}; P = Q·sin(α {s} φ)/cos(α {s} φ − β′) = {} {newton}; η = {}",
+                "{n}: φ = arc{tg} f = {}; P = Q·sin(α {s} φ)/cos(α {s} φ − β′) = {} {newton}; η = {}",
                 deg(t.phi, lang),
                 num(t.p, lang),
                 num(t.eta, lang),
-                s = sign(c.motion)
+                s = sign(c.motion),
+                tg = tangent(lang),
             );
             locking(first, t.self_braking.then_some(format!("{n}: α ≤ φ")), lang)
         }
@@ -188,12 +189,13 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
         CaseKind::Screw(c) => {
             let t = screw_twin(c);
             let first = format!(
-                "{n}: f′ = f/cos(δ/2) = {}, φ′ = {}; M = Q·r_{{1}}·tg(λ {s} φ′) = {} {nm}; η = {}",
+                "{n}: f′ = f/cos(δ/2) = {}, φ′ = {}; M = Q·r_{{1}}·{tg}(λ {s} φ′) = {} {nm}; η = {}",
                 num(t.f_reduced, lang),
                 deg(t.phi_reduced, lang),
                 num(t.moment, lang),
                 num(t.eta, lang),
-                s = sign(c.motion)
+                s = sign(c.motion),
+                tg = tangent(lang),
             );
             locking(
                 first,
@@ -312,10 +314,11 @@ fn guide_lines(n: usize, c: &crate::friction::FollowerGuide, lang: Lang) -> Vec<
             num(t.n[1], lang)
         ),
         format!(
-            "{n}: tg λ_{{кр}} = b/(f·(2l + b)): λ_{{кр}} = {} > λ = {} — {}",
+            "{n}: {tg} λ_{{кр}} = b/(f·(2l + b)): λ_{{кр}} = {} > λ = {} — {}",
             deg(t.lock, lang),
             deg(c.angle, lang),
-            FrictionText::Moves.get(lang)
+            FrictionText::Moves.get(lang),
+            tg = tangent(lang),
         ),
     ]
 }
@@ -335,13 +338,19 @@ fn pivot_lines(n: usize, c: &crate::friction::RockerPivot, lang: Lang) -> Vec<St
             num(t.p, lang)
         ),
         format!(
-            "{n}: cos λ_{{кр}} = ρ/L: λ_{{кр}} = {} > λ = {} — {} (tg λ_{{кр}} = 2L/(f·d): {})",
+            "{n}: cos λ_{{кр}} = ρ/L: λ_{{кр}} = {} > λ = {} — {} ({tg} λ_{{кр}} = 2L/(f·d): {})",
             deg(t.lock, lang),
             deg(c.angle, lang),
             FrictionText::Moves.get(lang),
-            deg(t.lock_lecture, lang)
+            deg(t.lock_lecture, lang),
+            tg = tangent(lang),
         ),
     ]
+}
+
+/// The tangent's name in `lang`: tg in the Russian and Ukrainian courses, tan in English.
+fn tangent(lang: Lang) -> &'static str {
+    lang.pick("tg", "tg", "tan")
 }
 
 /// A unit of the table in `lang`.

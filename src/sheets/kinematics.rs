@@ -54,7 +54,9 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     } else {
         (Vec::new(), Vec::new())
     };
-    let mut lines = head_lines(session, &a, &sc, lang);
+    let [drafting, scales] = head_lines(session, &a, &sc, lang);
+    let verdicts = verdict_lines(&crate::kinematics::verdicts(&a.rows()), lang);
+    let mut lines = Vec::new();
     let diagrams = diagram_views(&a, lang, &mut lines);
     let plans = Plans {
         a: &a,
@@ -62,21 +64,30 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
         lang,
     };
     let (velocity, acceleration) = (plans.velocity(false), plans.acceleration(false));
-    let mut rest = rest_views(&a, lang, &mut lines);
-    rest.push((
-        Block::Text {
-            lines,
-            size_mm: 3.5,
-        },
-        None,
-    ));
+    let views = rest_views(&a, lang, &mut lines);
     // The analytic table has a row per position: continued on further sheets when long.
-    rest.extend(
-        tables(&a, lang)
-            .into_iter()
-            .flat_map(|t| split_table(&sheet, t, lang))
-            .map(|t| (Block::Table(t), None)),
-    );
+    let analytic: Run = tables(&a, lang)
+        .into_iter()
+        .flat_map(|t| split_table(&sheet, t, lang))
+        .map(|t| (Block::Table(t), None))
+        .collect();
+    // The rest: the diagrams' views, the text (`head` before the diagrams' lines), the tables.
+    let rest_with = |head: Vec<String>| -> Run {
+        let text = Block::Text {
+            lines: head.into_iter().chain(lines.iter().cloned()).collect(),
+            size_mm: 3.5,
+        };
+        views
+            .iter()
+            .cloned()
+            .chain([(text, None)])
+            .chain(analytic.iter().cloned())
+            .collect()
+    };
+    let head = [drafting.clone(), scales]
+        .into_iter()
+        .chain(verdicts.clone());
+    let rest = rest_with(head.collect());
     let title = super::title_block(scene, Text::KinematicAnalysis.get(lang), Some(sc.l), lang);
     let lay = |run: Run| {
         let (blocks, series): (Vec<Block>, Vec<Option<u8>>) = run.into_iter().unzip();
@@ -125,17 +136,27 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     // the acceleration plans and the structural analysis go on the first when it holds them
     // and the two are then filled more evenly. Never a table alone on a sheet: the second
     // always holds the diagrams or the acceleration plans.
+    // Each plan states its μ; the plans' verdicts follow the acceleration plans, on their
+    // sheet (the second sheet, holding no plan, stated them).
     let head: Run = scheme.into_iter().chain(plan).collect();
-    let (velocity, acceleration) = (plans.velocity(true), plans.acceleration(true));
+    let (velocity, mut acceleration) = (plans.velocity(true), plans.acceleration(true));
+    if !verdicts.is_empty() {
+        let text = Block::Text {
+            lines: verdicts,
+            size_mm: 3.5,
+        };
+        acceleration.push((text, None));
+    }
+    let rest = rest_with(vec![drafting]);
     two_sheets(
         &lay,
         [head, velocity, acceleration, analysis, diagrams, rest],
     )
 }
 
-/// The sheet's first lines: the drafting model's errors, the plans' scales, the verdicts.
-fn head_lines(session: &Session<'_>, a: &Kinematics, sc: &KinScales, lang: Lang) -> Vec<String> {
-    let mut lines = vec![
+/// The sheet's first lines: the drafting model's errors, the plans' scales.
+fn head_lines(session: &Session<'_>, a: &Kinematics, sc: &KinScales, lang: Lang) -> [String; 2] {
+    [
         super::drafting_line(
             session.drafting(),
             if a.diagrams.is_some() {
@@ -152,9 +173,7 @@ fn head_lines(session: &Session<'_>, a: &Kinematics, sc: &KinScales, lang: Lang)
             Text::AccelerationPlans.get(lang),
             sc.a.caption(lang)
         ),
-    ];
-    lines.extend(verdict_lines(&crate::kinematics::verdicts(&a.rows()), lang));
-    lines
+    ]
 }
 
 /// The displacement diagram stacked on its two derivatives (a view), with its line of

@@ -44,7 +44,7 @@ catalogue! {
         ),
         ReadAsMagnitudes => (
             "Модули (в столбце нет отрицательных чисел, а среди точных значений есть)",
-            "Модулі (у стовпці немає від'ємних чисел, а серед точних значень є)",
+            "Модулі (у стовпці немає від’ємних чисел, а серед точних значень є)",
             "Read as magnitudes (no value of the column written negative, though exact values are)"
         ),
         OppositeSense => (

@@ -12,8 +12,8 @@ catalogue! {
         AccelerationPlanAt => ("План ускорений, пол.", "План прискорень, пол.", "Acceleration plan, pos."),
         VelocityPlans => ("Планы скоростей", "Плани швидкостей", "Velocity plans"),
         AccelerationPlans => ("планы ускорений", "плани прискорень", "acceleration plans"),
-        AcceleratingLinks => ("ускоренно вращаются звенья", "прискорено обертаються ланки", "accelerating (ω, ε in one sense): links"),
-        AcceleratingLink => ("ускоренно вращается звено", "прискорено обертається ланка", "accelerating (ω, ε in one sense): link"),
+        AcceleratingLinks => ("ускоренно вращаются звенья", "прискорено обертаються ланки", "accelerating (ω, ε in the same sense): links"),
+        AcceleratingLink => ("ускоренно вращается звено", "прискорено обертається ланка", "accelerating (ω, ε in the same sense): link"),
         NoneAccelerating => ("ни одно звено не вращается ускоренно", "жодна ланка не обертається прискорено", "no link accelerating"),
         DeceleratingLinks => ("замедленно —", "сповільнено —", "decelerating:"),
         NoLinks => ("нет", "немає", "none"),
@@ -39,7 +39,7 @@ catalogue! {
         StructuralAnalysis => ("Структурный анализ", "Структурний аналіз", "Structural analysis"),
         WithPair => ("С парой", "З парою", "With pair"),
         RedundantPair => ("избыточная пара", "надлишкова пара", "redundant pair"),
-        StructureFormula => ("Формула строения", "Формула будови", "Structure formula"),
+        StructureFormula => ("Формула строения", "Формула будови", "Structural formula"),
         ExtremePositions => ("Крайние положения", "Крайні положення", "Extreme positions"),
         AlsoStands => ("{v} = 0 также при {list}", "{v} = 0 також при {list}", "{v} = 0 also at {list}"),
         SameExtremeAs => (
@@ -95,8 +95,8 @@ catalogue! {
         Exact => ("точно", "точно", "exact"),
         GraphicalAndAnalytic => (
             "Графическое решение и аналитический расчёт",
-            "Графічний розв'язок і аналітичний розрахунок",
-            "Graphical against analytic"
+            "Графічний розв’язок і аналітичний розрахунок",
+            "Graphical vs. analytical"
         ),
     }
 }

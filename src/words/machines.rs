@@ -47,14 +47,14 @@ catalogue! {
         Tolerances => (
             "2. Неуказанные предельные\nотклонения размеров: отверстий\nH14, валов h14, остальных ±IT14/2.",
             "2. Невказані граничні відхилення\nрозмірів: отворів H14, валів h14,\nінших ±IT14/2.",
-            "2. Limit deviations not shown:\nholes H14, shafts h14,\nothers ±IT14/2."
+            "2. Unspecified limit deviations:\nholes H14, shafts h14,\nothers ±IT14/2."
         ),
         BalanceStatically => (
             "3. Маховик балансировать\nстатически.",
             "3. Маховик балансувати статично.",
             "3. Balance the flywheel\nstatically."
         ),
-        Exact => ("точно", "точно", "exactly"),
+        Exact => ("точно", "точно", "exact"),
         SizedFrom => (
             "Размеры — по J_{м} построения (диаграмма энергомасс):",
             "Розміри — за J_{м} побудови (діаграма енергомас):",
@@ -69,7 +69,7 @@ catalogue! {
         Steel => ("сталь", "сталь", "steel"),
         // The title block's material (ГОСТ 2.104 graph 3): the grades the course takes for
         // a flywheel (seed 000 L1452: grey cast iron for a rim under 25 m/s).
-        CastIronGrade => ("СЧ 15 ГОСТ 1412–85", "СЧ 15 ГОСТ 1412–85", "Grey cast iron SCh 15, GOST 1412–85"),
+        CastIronGrade => ("СЧ 15 ГОСТ 1412–85", "СЧ 15 ГОСТ 1412–85", "SCh 15 GOST 1412–85"),
         SteelGrade => ("Сталь 35Л ГОСТ 977–88", "Сталь 35Л ГОСТ 977–88", "Cast steel 35L, GOST 977–88"),
         Material => ("Материал", "Матеріал", "Material"),
         // The flywheel's conclusion, a line each (a line of the sheet's data stays under
@@ -113,12 +113,12 @@ catalogue! {
         EngineResults => (
             "A_{д}, M_{с}, маховик: графически и точно",
             "A_{д}, M_{с}, маховик: графічно і точно",
-            "A_{д}, M_{с}, flywheel: graphical against exact"
+            "A_{д}, M_{с}, flywheel: graphical vs. exact"
         ),
         MachineResults => (
             "Работа, момент движущих сил, маховик: графически и точно",
             "Робота, момент рушійних сил, маховик: графічно і точно",
-            "Work, driving moment, flywheel: graphical against exact"
+            "Work, driving moment, flywheel: graphical vs. exact"
         ),
     }
 }
@@ -127,7 +127,7 @@ catalogue! {
     /// A word of the gear sheet.
     GearText {
         DataAndResults => ("Исходные данные и результаты", "Вихідні дані та результати", "Data and results"),
-        Meshing => ("Картина зацепления", "Картина зачеплення", "Meshing picture"),
+        Meshing => ("Картина зацепления", "Картина зачеплення", "Meshing diagram"),
         Sliding => ("Удельное скольжение", "Питоме ковзання", "Specific sliding"),
         Along => ("вдоль", "уздовж", "along"),
         Blocking => ("Блокирующий контур", "Блокувальний контур", "Blocking contour"),
@@ -165,8 +165,8 @@ catalogue! {
         ),
         ReadOff => (
             "Считано с чертежа и аналитический расчёт",
-            "Знято з креслення і аналітичний розрахунок",
-            "Read off the drawing against analytic"
+            "Зчитано з креслення і аналітичний розрахунок",
+            "Read off the drawing vs. analytical"
         ),
         Computed => (
             "Вычислено, не считано с чертежа",
@@ -242,7 +242,7 @@ catalogue! {
         Accepted => (
             "Принимаем r_{0} = {r0} ≥ r_{min} = {rmin}",
             "Приймаємо r_{0} = {r0} ≥ r_{min} = {rmin}",
-            "Accept r_{0} = {r0} ≥ r_{min} = {rmin}"
+            "Adopted r_{0} = {r0} ≥ r_{min} = {rmin}"
         ),
         Raised => (
             "При r_{0} = {r0} по профилю в точке {point} {angle}",
@@ -280,13 +280,13 @@ catalogue! {
         WrongSide => ("Смещение e с неблагоприятной стороны", "Зміщення e з несприятливого боку", "The offset e is on the unfavourable side"),
         Read => ("граф.", "граф.", "graph."),
         Points => ("Точки диаграмм и профиля", "Точки діаграм і профілю", "Points of the diagrams and the profile"),
-        Results => ("Графически и точно, мм", "Графічно і точно, мм", "Graphical against exact, mm"),
+        Results => ("Графически и точно, мм", "Графічно і точно, мм", "Graphical vs. exact, mm"),
         RadiusVector => ("R: радиус-вектор точки профиля", "R: радіус-вектор точки профілю", "R: the radius vector of a profile point"),
         TravelAt => ("ξ: положение оси толкателя на кулачке", "ξ: положення осі штовхача на кулачку", "ξ: where the follower's axis stands on the cam"),
         DeviationRule => (
             "Δ_{проф}: наибольшее отклонение профиля, проведённого лекалом, от точного",
             "Δ_{проф}: найбільше відхилення профілю, проведеного лекалом, від точного",
-            "Δ_{prof}: how far the profile drawn with the French curve departs from the exact one, at most"
+            "Δ_{prof}: the greatest deviation of the French-curve profile from the exact one"
         ),
         Slides => (
             "Кулачок движется поступательно вдоль направляющей",

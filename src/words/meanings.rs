@@ -9,7 +9,7 @@ catalogue! {
     Meaning {
         Mobility => ("степень подвижности механизма", "ступінь рухомості механізму", "the mechanism's mobility"),
         MovingLinks => ("число подвижных звеньев", "кількість рухомих ланок", "the number of moving links"),
-        LowerPairs => ("число кинематических пар пятого класса (низших)", "кількість кінематичних пар п'ятого класу (нижчих)", "the number of fifth-class (lower) pairs"),
+        LowerPairs => ("число кинематических пар пятого класса (низших)", "кількість кінематичних пар п’ятого класу (нижчих)", "the number of fifth-class (lower) pairs"),
         HigherPairs => ("число кинематических пар четвёртого класса (высших)", "кількість кінематичних пар четвертого класу (вищих)", "the number of fourth-class (higher) pairs"),
         EngagementAngle => ("угол зацепления", "кут зачеплення", "the angle of engagement"),
         ShiftOfWheel => ("коэффициент смещения колеса", "коефіцієнт зміщення колеса", "the shift coefficient of wheel"),

@@ -47,7 +47,7 @@ catalogue! {
         ),
         RedundantPairExplained => (
             "Избыточная пара повторяет связь, уже наложенную другой парой, и на движение механизма не влияет; при структурном анализе она не учитывается.",
-            "Надлишкова пара повторює зв'язок, уже накладений іншою парою, і на рух механізму не впливає; при структурному аналізі вона не враховується.",
+            "Надлишкова пара повторює зв’язок, уже накладений іншою парою, і на рух механізму не впливає; при структурному аналізі вона не враховується.",
             "A redundant pair repeats a constraint another pair imposes already and does not affect the motion; the structural analysis leaves it out."
         ),
         AssurGroups => (
@@ -131,7 +131,7 @@ catalogue! {
         Hodograph => ("Годограф скорости", "Годограф швидкості", "The velocity hodograph"),
         HodographText => (
             "Векторы скорости точки из планов скоростей переносим параллельно к общему полюсу; их концы соединяем плавной кривой — годографом скорости.",
-            "Вектори швидкості точки з планів швидкостей переносимо паралельно до спільного полюса; їх кінці з'єднуємо плавною кривою — годографом швидкості.",
+            "Вектори швидкості точки з планів швидкостей переносимо паралельно до спільного полюса; їх кінці з’єднуємо плавною кривою — годографом швидкості.",
             "The point's velocity vectors from the velocity plans carried parallel to one pole; their ends joined by a smooth curve, the hodograph."
         ),
         HodographTable => ("Отрезки годографа скорости", "Відрізки годографа швидкості", "The hodograph's rays"),
@@ -181,7 +181,7 @@ catalogue! {
             "The flywheel's moment of inertia by the energy–mass diagram (Wittenbauer: the tangents at ψ_max, ψ_min cut off kl), by the T_I diagram (Merkin) and by integrating the equation of motion exactly:"
         ),
         FlywheelTable => ("Работы, момент инерции маховика и коэффициент неравномерности", "Роботи, момент інерції маховика і коефіцієнт нерівномірності", "Works, the flywheel's moment of inertia and the coefficient of irregularity"),
-        ExactFlywheel => ("Момент инерции маховика по точному решению:", "Момент інерції маховика за точним розв'язком:", "The flywheel's moment of inertia by the exact solution:"),
+        ExactFlywheel => ("Момент инерции маховика по точному решению:", "Момент інерції маховика за точним розв’язком:", "The flywheel's moment of inertia by the exact solution:"),
         CamSection => ("Синтез кулачкового механизма", "Синтез кулачкового механізму", "Design of the cam mechanism"),
         CamIntro => (
             "По заданному закону движения толкателя строим диаграмму аналога ускорения, графическим интегрированием — аналога скорости и перемещения; по совмещённой диаграмме с лучами под допустимым углом передачи (давления) находим минимальный радиус кулачка; профиль строим методом обращения движения.",
@@ -377,7 +377,7 @@ catalogue! {
         ),
         TrainWillis => (
             "Совместное решение уравнений Виллиса всех зацеплений (аналитическая проверка) даёт:",
-            "Спільний розв'язок рівнянь Вілліса всіх зачеплень (аналітична перевірка) дає:",
+            "Спільний розв’язок рівнянь Вілліса всіх зачеплень (аналітична перевірка) дає:",
             "Willis's relations of every mesh solved together (the analytic check) give:"
         ),
         TrainRequired => (

@@ -21,7 +21,7 @@ catalogue! {
         LayOff => ("откладываем {n} = {l} мм", "відкладаємо {n} = {l} мм", "lay off {n} = {l} mm"),
         LayOffValue => ("откладываем {n} = {v} / μ = {l} мм", "відкладаємо {n} = {v} / μ = {l} мм", "lay off {n} = {v} / μ = {l} mm"),
         Curve => ("по {k} точкам проводим кривую {n}", "за {k} точками проводимо криву {n}", "draw the curve {n} through {k} points"),
-        Polyline => ("соединяем {k} точек ломаной {n}", "з'єднуємо {k} точок ламаною {n}", "join {k} points by the broken line {n}"),
+        Polyline => ("соединяем {k} точек ломаной {n}", "з’єднуємо {k} точок ламаною {n}", "join {k} points by the broken line {n}"),
         Slider => ("ползун {n}", "повзун {n}", "the slider {n}"),
         Guide => ("направляющая {n}", "напрямна {n}", "the guide {n}"),
         Dimension => ("проставляем размер {n}", "проставляємо розмір {n}", "dimension {n}"),

@@ -2,7 +2,9 @@
 //! `docs/commands.md` names exactly the flags (and the values of each enumerated flag) that
 //! `tmm <command> -h` lists; every command line written in `README.md` or `docs/*.md` uses
 //! only flags and values its command has; the README is a page (at most 150 lines) whose
-//! links lead to files that exist; a `[kinematics]` section that no sheet draws is warned of.
+//! links lead to files that exist; what it says the seed-000 command writes is what it writes
+//! (the sheets, the pages, the scenes, the quoted θ, H and K); a `[kinematics]` section that
+//! no sheet draws is warned of.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -262,4 +264,127 @@ fn a_kinematics_section_no_sheet_draws_is_warned_of() {
     assert!(err.contains(&want), "{err}");
     let o = tmm(&["check", "constructions/four-bar.toml"]);
     assert!(o.status.success() && o.stderr.is_empty());
+}
+
+/// The words of an SVG sheet's texts, markup stripped (`θ = 38,00°` of its `<tspan>`s).
+fn svg_texts(svg: &str) -> String {
+    let mut out = String::new();
+    let mut inside = false;
+    for c in svg.chars() {
+        match c {
+            '<' => inside = true,
+            '>' => {
+                inside = false;
+                out.push(' ');
+            }
+            c if !inside => out.push(c),
+            _ => {}
+        }
+    }
+    out.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The number before `unit` in `text` (`8 pages` → 8 for `pages`), after `after`.
+fn count_before(text: &str, after: &str, unit: &str) -> usize {
+    let rest = &text[text
+        .find(after)
+        .unwrap_or_else(|| panic!("README: no «{after}»"))..];
+    let head = &rest[..rest
+        .find(unit)
+        .unwrap_or_else(|| panic!("README: no «{unit}»"))];
+    let digits: String = head
+        .trim_end()
+        .chars()
+        .rev()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    digits
+        .chars()
+        .rev()
+        .collect::<String>()
+        .parse()
+        .expect("a count")
+}
+
+/// The pages of a PDF written by `tmm` (its page objects).
+fn pdf_pages(file: &Path) -> usize {
+    let pdf = std::fs::read(file).expect("a PDF");
+    let text = String::from_utf8_lossy(&pdf).replace(" /", "/");
+    text.matches("/Type/Page").count() - text.matches("/Type/Pages").count()
+}
+
+/// What the README says the seed-000 command writes, against what it writes: the sheets of
+/// its table, the drawing set's and the note's pages, the scenes shipped, and the second
+/// sheet's θ, H and K as its caption quotes them.
+#[test]
+fn the_readme_says_what_the_program_writes() {
+    let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
+    let out = scratch("readme");
+    let dir = out.to_str().expect("a path");
+    let o = tmm(&[
+        "render",
+        "constructions/shaper.toml",
+        "--format",
+        "svg,pdf,note",
+        "--out",
+        dir,
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let shaper = out.join("shaper");
+    // The table's sheets: every `name.svg` on a row of `out/shaper/`, and nothing else.
+    let named: BTreeSet<String> = readme
+        .lines()
+        .filter(|l| l.starts_with("| `out/shaper/"))
+        .flat_map(|l| l.split('`').skip(1).step_by(2))
+        .filter_map(|w| w.rsplit('/').next()?.strip_suffix(".svg"))
+        .map(String::from)
+        .collect();
+    let written: BTreeSet<String> = std::fs::read_dir(&shaper)
+        .expect("the scene's folder")
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter_map(|f| f.strip_suffix(".svg").map(String::from))
+        .collect();
+    assert_eq!(named, written, "README's sheets against those written");
+    let set = count_before(&readme, "the drawing set,", "pages");
+    assert_eq!(
+        set,
+        pdf_pages(&shaper.join("shaper.pdf")),
+        "the drawing set's pages"
+    );
+    let note = count_before(&readme, "the explanatory note, A4,", "pages");
+    assert_eq!(
+        note,
+        pdf_pages(&shaper.join("shaper-note.pdf")),
+        "the note's pages"
+    );
+    let scenes = std::fs::read_dir(root().join("constructions"))
+        .expect("constructions/")
+        .filter_map(Result::ok)
+        .filter(|e| e.path().extension().is_some_and(|x| x == "toml"))
+        .count();
+    assert_eq!(
+        count_before(&readme, "`constructions/` holds", "scenes"),
+        scenes
+    );
+    // The caption's quotation of the second sheet: «(θ = 38,00°, H = 462,3 мм, K = 1,535)».
+    let quoted = readme
+        .split("(θ = ")
+        .nth(1)
+        .and_then(|r| r.split(')').next())
+        .map(|q| format!("θ = {}", q.split_whitespace().collect::<Vec<_>>().join(" ")))
+        .expect("README quotes θ, H and K");
+    let sheet = std::fs::read_to_string(shaper.join("kinematics-2.svg")).expect("sheet 2");
+    let texts = svg_texts(&sheet);
+    for value in quoted.split(", ") {
+        let v = value.split(" = ").nth(1).expect("a value");
+        assert!(
+            texts.contains(&format!("= {v}")),
+            "README quotes «{value}»; sheet 2 reads otherwise"
+        );
+    }
 }

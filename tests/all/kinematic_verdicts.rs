@@ -52,7 +52,7 @@ fn a_verdict_of_one_link_or_none_reads_in_its_number() {
         ),
         (
             tmm::Lang::En,
-            "Pos. 4: accelerating (ω, ε in one sense): link 3; decelerating: 2",
+            "Pos. 4: accelerating (ω, ε in the same sense): link 3; decelerating: 2",
             "Pos. 10: no link accelerating; decelerating: 2, 3",
         ),
     ] {

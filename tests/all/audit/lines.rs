@@ -183,7 +183,7 @@ L_3,5,analytic,0.18,m
         md.contains("| 3 | v_Q | 1 |  | 0.6 m/s | — | — | no such quantity in the report |"),
         "{md}"
     );
-    assert!(md.contains("| 4 | v_A | 99 |  | 0.6 m/s | — | — | not in the report; the report has: plan at pos. 1, 2,"), "{md}");
+    assert!(md.contains("| 4 | v_A | 99 |  | 0.6 m/s | — | — | not in the report; the report has: vector plan at pos. 1, 2,"), "{md}");
     assert!(
         md.contains("| 9 | a_B | 5 | plan (tolerance of pos. "),
         "{md}"
