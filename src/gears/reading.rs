@@ -17,8 +17,9 @@ impl GearStudy {
     /// The step (SI) of the row `r`'s graphical value when lengths are read to
     /// `resolution_mm` on the drawing: a length on the meshing picture or on a cut wheel's
     /// figure to `resolution_mm` × its μ_l; ε_α = B₁B₂/p_b to that step over p_b; λ off its
-    /// graph to `resolution_mm` of the [`LAMBDA_MM`] its unit is drawn. `None` for a value not
-    /// read as one length (the triangles' ω, a formula's) or when lengths are read exactly.
+    /// graph to `resolution_mm` of the [`LAMBDA_MM`] its unit is drawn; a shaft's ω off the
+    /// plan of angular velocities to `resolution_mm` × μ_ω. `None` for a value not read as one
+    /// length (the triangles' ratio, a formula's) or when lengths are read exactly.
     pub fn reading_step(&self, r: &Row, resolution_mm: f64) -> Option<f64> {
         match (r.method, r.key.symbol) {
             (Method::Meshing, symbol) => {
@@ -33,6 +34,12 @@ impl GearStudy {
             (Method::Envelope, Symbol::ToothThickness | Symbol::SpaceWidth) => {
                 let (w, _) = self.cut_wheel_of(r)?;
                 length_step(w.generation.scale, resolution_mm)
+            }
+            // ω of a shaft: its segment of the reading line of the plan of angular
+            // velocities, at μ_ω.
+            (Method::Triangles, Symbol::AngularVelocity) => {
+                let t = self.train.as_ref()?;
+                length_step(t.triangles.scale_w, resolution_mm)
             }
             _ => None,
         }
