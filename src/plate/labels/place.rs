@@ -21,6 +21,10 @@ pub(super) struct Placer<'a> {
 
 /// Cost of a box leaving the frame or entering the title block.
 const OUTSIDE: f64 = 1e5;
+/// How far inside the frame's line, and off the title block and the designation box, a label
+/// keeps, mm: the V engine's R₄₋₅ 0,3 mm from the frame, touching the designation box, read
+/// as written on them (issue 45).
+const FRAME_CLEAR_MM: f64 = 1.0;
 /// Cost of a box over another text, plus its overlap area (mm²) times [`TEXT_AREA`].
 pub(super) const OVER_TEXT: f64 = 1e3;
 const TEXT_AREA: f64 = 100.0;
@@ -124,8 +128,9 @@ impl<'a> Placer<'a> {
             .filter_map(|(k, o)| Some((shape_box(&o.shape)?, k, o)))
             .collect();
         Placer {
-            frame: layout.frame,
-            forbidden: [layout.title_block, layout.designation_box],
+            frame: layout.frame.inflate(-FRAME_CLEAR_MM),
+            forbidden: [layout.title_block, layout.designation_box]
+                .map(|r| r.inflate(FRAME_CLEAR_MM)),
             fixed,
             outlines,
             boxed,
