@@ -36,7 +36,7 @@ impl Balancing {
             Symbol::Moment => self.scale_mrz?,
             _ => return None,
         };
-        (resolution_mm > 0.0).then(|| resolution_mm * mu.value() * w * w)
+        mu.reading_step(resolution_mm).map(|s| s * w * w)
     }
 
     /// Σ |mᵢρᵢ|, kg·m: the scale of the static moments (their zero reference).

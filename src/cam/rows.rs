@@ -47,9 +47,7 @@ impl Cam {
         }
         match (r.method, r.key.symbol) {
             (Method::CombinedDiagram, _) => self.r_min_step(resolution_mm),
-            (_, Symbol::CurvatureRadius) => {
-                (resolution_mm > 0.0).then(|| self.inversion.scale.to_physical(resolution_mm))
-            }
+            (_, Symbol::CurvatureRadius) => self.inversion.scale.reading_step(resolution_mm),
             _ => None,
         }
     }
@@ -57,7 +55,7 @@ impl Cam {
     /// The step r_min is read to at `resolution_mm` off the combined diagram (μ_S), m;
     /// `None` when read exactly.
     pub fn r_min_step(&self, resolution_mm: f64) -> Option<f64> {
-        (resolution_mm > 0.0).then(|| self.diagrams.s_scale.to_physical(resolution_mm))
+        self.diagrams.s_scale.reading_step(resolution_mm)
     }
 
     /// The exact motion at every point.

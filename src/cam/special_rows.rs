@@ -32,8 +32,10 @@ impl Special {
     /// not read (the profile's deviation is a comparison).
     pub fn reading_step(&self, r: &Row, resolution_mm: f64) -> Option<f64> {
         let read = matches!(r.key.symbol, Symbol::CurvatureRadius | Symbol::Length);
-        (resolution_mm > 0.0 && read && r.key.at == At::Scene)
-            .then(|| self.scale.to_physical(resolution_mm))
+        let scene = r.key.at == At::Scene;
+        self.scale
+            .reading_step(resolution_mm)
+            .filter(|_| read && scene)
     }
 
     /// λ_max = 90° − γ_min.

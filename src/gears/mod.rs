@@ -43,7 +43,6 @@ pub use involute::{compass_involute, dms, inv, inv_inverse, CompassInvolute, TAB
 pub use mesh::{LAMBDA_MM, NAME_WITHIN_MM};
 pub use pair::{Pair, PairSpec};
 pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
-pub use reading::length_step;
 pub use rows::PairSeed;
 pub use train::{
     train_study, ClosedMesh, Mesh, PlanetarySpec, SeedStage, Stage, Train, TrainError,

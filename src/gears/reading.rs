@@ -4,14 +4,7 @@
 
 use super::{GearStudy, LAMBDA_MM};
 use crate::check::{Method, Row};
-use crate::scale::Scale;
 use crate::words::Symbol;
-
-/// The step (m) to which a length is read off a figure drawn at `scale` when lengths are
-/// read to `resolution_mm` on the drawing; `None` when they are read exactly.
-pub fn length_step(scale: Scale, resolution_mm: f64) -> Option<f64> {
-    (resolution_mm > 0.0).then(|| resolution_mm * scale.value())
-}
 
 impl GearStudy {
     /// The step (SI) of the row `r`'s graphical value when lengths are read to
@@ -24,7 +17,7 @@ impl GearStudy {
         match (r.method, r.key.symbol) {
             (Method::Meshing, symbol) => {
                 let m = self.pair.as_ref()?;
-                let length = length_step(m.meshing.scale, resolution_mm)?;
+                let length = m.meshing.scale.reading_step(resolution_mm)?;
                 Some(match symbol {
                     Symbol::SpecificSliding => resolution_mm / LAMBDA_MM,
                     Symbol::ContactRatio => length / m.pair.p_b,
@@ -33,13 +26,13 @@ impl GearStudy {
             }
             (Method::Envelope, Symbol::ToothThickness | Symbol::SpaceWidth) => {
                 let (w, _) = self.cut_wheel_of(r)?;
-                length_step(w.generation.scale, resolution_mm)
+                w.generation.scale.reading_step(resolution_mm)
             }
             // ω of a shaft: its segment of the reading line of the plan of angular
             // velocities, at μ_ω.
             (Method::Triangles, Symbol::AngularVelocity) => {
                 let t = self.train.as_ref()?;
-                length_step(t.triangles.scale_w, resolution_mm)
+                t.triangles.scale_w.reading_step(resolution_mm)
             }
             _ => None,
         }

@@ -242,6 +242,12 @@ impl Scale {
         mm * self.value
     }
 
+    /// The step (SI) to which a value drawn at this scale is read when lengths are read to
+    /// `resolution_mm` on the drawing; `None` when they are read exactly (0).
+    pub fn reading_step(&self, resolution_mm: f64) -> Option<f64> {
+        (resolution_mm > 0.0).then_some(resolution_mm * self.value)
+    }
+
     /// The caption in label markup: `μ_{l} = 0,0025 м/мм` (ru/uk), `μ_{l} = 0.0025 m/mm` (en).
     pub fn caption(&self, lang: Lang) -> String {
         format!(

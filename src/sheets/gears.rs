@@ -13,7 +13,7 @@ use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
 use crate::gears::blocking::Study;
-use crate::gears::{length_step, DetailMark, GearStudy, DETAIL_LETTER};
+use crate::gears::{DetailMark, GearStudy, DETAIL_LETTER};
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_sig, Key, Lang, Scale};
 use crate::study::Session;
@@ -393,7 +393,7 @@ impl Filling {
             mm(p.sa[1])
         ));
         // B₁B₂ worked from the radii (the textbook's), then read off the meshing picture.
-        let step = length_step(mu, self.read_mm);
+        let step = mu.reading_step(self.read_mm);
         self.lines.push(format!(
             "ε_α = (N_1B_2 + N_2B_1 − N_1N_2)/p_b = {}; {}",
             value(p.eps, lang),
@@ -518,7 +518,7 @@ impl Filling {
             format_sig(c.x, 4, lang),
             read(
                 r.sa * 1e3,
-                length_step(r.scale, self.read_mm).map(|s| s * 1e3),
+                r.scale.reading_step(self.read_mm).map(|s| s * 1e3),
                 lang
             ),
             mm_,

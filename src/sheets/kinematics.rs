@@ -135,9 +135,9 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     // plan, the velocity plans), then what is derived (acceleration plans, diagrams, tables);
     // the acceleration plans and the structural analysis go on the first when it holds them
     // and the two are then filled more evenly. Never a table alone on a sheet: the second
-    // always holds the diagrams or the acceleration plans.
-    // Each plan states its μ; the plans' verdicts follow the acceleration plans, on their
-    // sheet (the second sheet, holding no plan, stated them).
+    // always holds the diagrams or the acceleration plans. Each plan then states its μ, and
+    // the plans' verdicts follow the acceleration plans, on their sheet (the second sheet,
+    // holding no plan, stated them).
     let head: Run = scheme.into_iter().chain(plan).collect();
     let (velocity, mut acceleration) = (plans.velocity(true), plans.acceleration(true));
     if !verdicts.is_empty() {
