@@ -74,9 +74,9 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     } = sheet;
     blocks.append(&mut details);
     lines.push(String::new());
+    let [_, rest] = g.rows_by_part();
     let computed = |symbol, method| {
-        g.rows_by_part()[1]
-            .iter()
+        rest.iter()
             .any(|r| r.key.symbol == symbol && r.method == method)
     };
     if computed(Symbol::ShiftCoefficient, Method::Formula) {
@@ -84,7 +84,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     }
     // The profile's deviation from the exact envelope is no reading and no datum of the
     // drawing (nanometres): a line bounds it, the tables leave it out.
-    let deviations = g.rows_by_part()[1]
+    let deviations = rest
         .iter()
         .filter(|r| r.key.symbol == Symbol::EnvelopeDeviation && r.method == Method::Envelope)
         .map(|r| r.graphical)

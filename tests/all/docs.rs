@@ -9,7 +9,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
-use crate::support::{root, scratch, tmm};
+use crate::support::{pdf_pages, root, scratch, svg_texts, tmm};
 
 /// The flags a command's short help lists (`--help` and `--version` aside), each with its
 /// possible values (empty for a free value or a switch).
@@ -266,29 +266,6 @@ fn a_kinematics_section_no_sheet_draws_is_warned_of() {
     assert!(o.status.success() && o.stderr.is_empty());
 }
 
-/// The words of an SVG sheet's texts, markup stripped (`θ = 38,00°` of its `<tspan>`s).
-fn svg_texts(svg: &str) -> String {
-    let mut out = String::new();
-    let mut inside = false;
-    for c in svg.chars() {
-        match c {
-            '<' => inside = true,
-            '>' => {
-                inside = false;
-                out.push(' ');
-            }
-            c if !inside => out.push(c),
-            _ => {}
-        }
-    }
-    out.replace("&lt;", "<")
-        .replace("&gt;", ">")
-        .replace("&amp;", "&")
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ")
-}
-
 /// The number before `unit` in `text` (`8 pages` → 8 for `pages`), after `after`.
 fn count_before(text: &str, after: &str, unit: &str) -> usize {
     let rest = &text[text
@@ -309,13 +286,6 @@ fn count_before(text: &str, after: &str, unit: &str) -> usize {
         .collect::<String>()
         .parse()
         .expect("a count")
-}
-
-/// The pages of a PDF written by `tmm` (its page objects).
-fn pdf_pages(file: &Path) -> usize {
-    let pdf = std::fs::read(file).expect("a PDF");
-    let text = String::from_utf8_lossy(&pdf).replace(" /", "/");
-    text.matches("/Type/Page").count() - text.matches("/Type/Pages").count()
 }
 
 /// What the README says the seed-000 command writes, against what it writes: the sheets of
@@ -353,13 +323,13 @@ fn the_readme_says_what_the_program_writes() {
     let set = count_before(&readme, "the drawing set,", "pages");
     assert_eq!(
         set,
-        pdf_pages(&shaper.join("shaper.pdf")),
+        pdf_pages(&std::fs::read(shaper.join("shaper.pdf")).expect("the set")),
         "the drawing set's pages"
     );
     let note = count_before(&readme, "the explanatory note, A4,", "pages");
     assert_eq!(
         note,
-        pdf_pages(&shaper.join("shaper-note.pdf")),
+        pdf_pages(&std::fs::read(shaper.join("shaper-note.pdf")).expect("the note")),
         "the note's pages"
     );
     let scenes = std::fs::read_dir(root().join("constructions"))
@@ -379,7 +349,8 @@ fn the_readme_says_what_the_program_writes() {
         .map(|q| format!("θ = {}", q.split_whitespace().collect::<Vec<_>>().join(" ")))
         .expect("README quotes θ, H and K");
     let sheet = std::fs::read_to_string(shaper.join("kinematics-2.svg")).expect("sheet 2");
-    let texts = svg_texts(&sheet);
+    let texts = svg_texts(&sheet).join(" ");
+    let texts = texts.split_whitespace().collect::<Vec<_>>().join(" ");
     for value in quoted.split(", ") {
         let v = value.split(" = ").nth(1).expect("a value");
         assert!(

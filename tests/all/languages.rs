@@ -11,6 +11,8 @@ use tmm::scene;
 use tmm::sheets;
 use tmm::study::Session;
 
+use crate::support::svg_texts;
+
 /// The runs of Latin letters the Russian and Ukrainian textbooks write in Latin too.
 const LATIN_ALLOWED: &[&str] = &[
     // Extremes as subscripts: r_min, ω_max, γ_min, x_min (the textbooks' own spelling).
@@ -27,44 +29,6 @@ const CAPITALS: usize = 3;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// The text elements of an SVG: each element's runs (the base text and every `<tspan>`),
-/// unescaped, the runs joined by a space so that a subscript does not run into its base.
-fn texts(svg: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut rest = svg;
-    while let Some(start) = rest.find("<text") {
-        let after = &rest[start..];
-        let Some(end) = after.find("</text>") else {
-            break;
-        };
-        let element = &after[..end];
-        // Drop the opening tag's attributes, then every inner tag becomes a space.
-        let body = element.split_once('>').map_or("", |(_, b)| b);
-        let mut text = String::new();
-        let mut in_tag = false;
-        for c in body.chars() {
-            match c {
-                '<' => {
-                    in_tag = true;
-                    text.push(' ');
-                }
-                '>' => in_tag = false,
-                _ if !in_tag => text.push(c),
-                _ => {}
-            }
-        }
-        let text = text
-            .replace("&lt;", "<")
-            .replace("&gt;", ">")
-            .replace("&quot;", "\"")
-            .replace("&apos;", "'")
-            .replace("&amp;", "&");
-        out.push(text);
-        rest = &after[end..];
-    }
-    out
 }
 
 fn is_cyrillic(c: char) -> bool {
@@ -120,7 +84,7 @@ fn sheets_speak_their_language() {
             let session = Session::new(&s, Drafting::EXACT);
             let all = sheets::build_all(&session, lang).unwrap_or_else(|(_, e)| panic!("{e}"));
             for (_, plate) in all {
-                for text in texts(&tmm::plate::to_svg(&plate)) {
+                for text in svg_texts(&tmm::plate::to_svg(&plate)) {
                     let plain = text.trim();
                     // A line of the user's text wrapped in the title block is a part of it.
                     if plain.is_empty() || own.iter().any(|o| o.contains(plain)) {

@@ -3,7 +3,7 @@
 
 use crate::support;
 use resvg::tiny_skia::{Color, Pixmap, Transform};
-use support::{scratch, tmm};
+use support::{pdf_dicts, pdf_pages, scratch, tmm};
 
 /// The PNG's IHDR colour type (0 gray, 2 RGB, 6 RGBA) and its pHYs pixels per metre.
 fn header(png: &[u8]) -> (u8, Option<u32>) {
@@ -104,14 +104,6 @@ fn the_bench_times_a_scenes_plates_as_png() {
     assert!(row["note"].as_str().unwrap().contains("(8)"), "{row}");
 }
 
-/// The text of a PDF's dictionaries with the optional spaces between names and values taken
-/// out (`/Type /Page` and `/Type/Page` both read `/Type/Page`).
-fn pdf_dicts(pdf: &[u8]) -> String {
-    String::from_utf8_lossy(pdf)
-        .replace(" /", "/")
-        .replace(" [", "[")
-}
-
 /// The `/MediaBox [x0 y0 x1 y1]` of every page of a PDF written without object streams, in
 /// millimetres (width, height), in file order.
 fn media_boxes_mm(pdf: &[u8]) -> Vec<(f64, f64)> {
@@ -151,7 +143,7 @@ fn render_writes_one_pdf_per_scene_with_every_sheet_a_page_at_1_to_1() {
     assert!(pdf.starts_with(b"%PDF-"));
     let text = pdf_dicts(&pdf);
     assert_eq!(
-        text.matches("/Type/Page").count() - text.matches("/Type/Pages").count(),
+        pdf_pages(&pdf),
         8,
         "the project's eight sheets, eight pages"
     );

@@ -157,3 +157,55 @@ pub fn files_under(dir: &std::path::Path) -> Vec<PathBuf> {
     out.sort();
     out
 }
+
+/// The text elements of an SVG: each element's runs (the base text and every `<tspan>`),
+/// unescaped, the runs joined by a space so that a subscript does not run into its base.
+pub fn svg_texts(svg: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(start) = rest.find("<text") {
+        let after = &rest[start..];
+        let Some(end) = after.find("</text>") else {
+            break;
+        };
+        let element = &after[..end];
+        // Drop the opening tag's attributes, then every inner tag becomes a space.
+        let body = element.split_once('>').map_or("", |(_, b)| b);
+        let mut text = String::new();
+        let mut in_tag = false;
+        for c in body.chars() {
+            match c {
+                '<' => {
+                    in_tag = true;
+                    text.push(' ');
+                }
+                '>' => in_tag = false,
+                _ if !in_tag => text.push(c),
+                _ => {}
+            }
+        }
+        let text = text
+            .replace("&lt;", "<")
+            .replace("&gt;", ">")
+            .replace("&quot;", "\"")
+            .replace("&apos;", "'")
+            .replace("&amp;", "&");
+        out.push(text);
+        rest = &after[end..];
+    }
+    out
+}
+
+/// The text of a PDF's dictionaries with the optional spaces between names and values taken
+/// out (`/Type /Page` and `/Type/Page` both read `/Type/Page`).
+pub fn pdf_dicts(pdf: &[u8]) -> String {
+    String::from_utf8_lossy(pdf)
+        .replace(" /", "/")
+        .replace(" [", "[")
+}
+
+/// The pages of a PDF written without object streams: its page objects.
+pub fn pdf_pages(pdf: &[u8]) -> usize {
+    let text = pdf_dicts(pdf);
+    text.matches("/Type/Page").count() - text.matches("/Type/Pages").count()
+}
