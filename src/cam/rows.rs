@@ -47,7 +47,7 @@ impl Cam {
         }
         match (r.method, r.key.symbol) {
             (Method::CombinedDiagram, _) => self.r_min_step(resolution_mm),
-            (_, Symbol::CurvatureRadius) => self.inversion.scale.reading_step(resolution_mm),
+            (_, Symbol::CurvatureRadius) => self.rho_min_step(resolution_mm),
             _ => None,
         }
     }
@@ -56,6 +56,12 @@ impl Cam {
     /// `None` when read exactly.
     pub fn r_min_step(&self, resolution_mm: f64) -> Option<f64> {
         self.diagrams.s_scale.reading_step(resolution_mm)
+    }
+
+    /// The step ρ_min is read to at `resolution_mm` off the profile (μ_l), m; `None` when
+    /// read exactly.
+    pub fn rho_min_step(&self, resolution_mm: f64) -> Option<f64> {
+        self.inversion.scale.reading_step(resolution_mm)
     }
 
     /// The exact motion at every point.

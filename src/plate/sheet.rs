@@ -338,7 +338,7 @@ fn wrapped_in_cell(
     let one_line = super::text::approx_width(text, height);
     let split = text
         .char_indices()
-        .filter(|(_, c)| *c == ' ')
+        .filter(|&(i, c)| c == ' ' && !hangs(&text[..i]))
         .map(|(i, _)| i)
         .min_by_key(|&i| (i as i64 - text.len() as i64 / 2).abs());
     match split {
@@ -361,6 +361,14 @@ fn wrapped_in_cell(
         }
         _ => out.push(in_cell((x0, y0, x1, y1), text, height, align)),
     }
+}
+
+/// True when the last word of `line` may not end a line: an article or a word of one or two
+/// letters (a preposition, a conjunction: «в», «и», «of», «a»), which goes with the word after
+/// it, as typesetting has it.
+fn hangs(line: &str) -> bool {
+    let last = line.rsplit(' ').next().unwrap_or(line);
+    last.chars().count() <= 2 || last.eq_ignore_ascii_case("the")
 }
 
 /// The smallest height a title block's title is shrunk to before it is wrapped, mm (ГОСТ
@@ -509,5 +517,25 @@ mod title_tests {
         );
         assert_eq!(short.len(), 1);
         assert_eq!(short[0].height, 5.0);
+    }
+
+    /// A wrapped title's first line never ends with an article or a one- or two-letter word:
+    /// «Трение / в кинематических парах», «Kinematics / of a planetary train».
+    #[test]
+    fn a_wrapped_line_does_not_end_with_a_short_word() {
+        let cell = (65.0, 15.0, RIGHT, 29.0);
+        for (title, first) in [
+            ("Трение в кинематических парах", "Трение"),
+            ("Kinematics of a planetary train", "Kinematics"),
+            (
+                "Кулачковый механизм с роликовым толкателем",
+                "Кулачковый механизм",
+            ),
+        ] {
+            let mut out = Vec::new();
+            wrapped_in_cell(cell, title, 8.0, 7.0, Align::Middle, &mut out);
+            assert_eq!(out.len(), 2, "{title}");
+            assert_eq!(out[0].markup, first, "{title}");
+        }
     }
 }

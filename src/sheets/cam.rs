@@ -3,9 +3,9 @@
 //! cam centre (or the flat face's 45° tangent), the profile by inversion with the roller
 //! circles and both profiles, the angle graph, the data and the table of the points.
 
-use super::cam_marks;
 use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
+use super::{cam_marks, digits};
 use crate::cam::{
     Analogue, Cam, CamSpec, Closure, Diagrams, Follower, Law, Layout, Rotation, ANGLE_LIMIT_NOTE,
     R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
@@ -107,7 +107,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         ));
     }
     let drawings = blocks.len();
-    let mut lines = data_lines(&cam, r_min_step, lang);
+    let mut lines = data_lines(&cam, read_mm, lang);
     lines.push(String::new());
     lines.extend(legend(CamText::RadiusVector, lang));
     lines.push(super::drafting_line(
@@ -276,8 +276,9 @@ pub(super) fn law_lines(s: &CamSpec, rotation: Rotation, lang: Lang) -> Vec<Stri
     out
 }
 
-/// The task's data and the results, as text lines (r_min to `r_min_step`, m).
-fn data_lines(cam: &Cam, r_min_step: Option<f64>, lang: Lang) -> Vec<String> {
+/// The task's data and the results, as text lines, each reading to its step at `read_mm`.
+fn data_lines(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<String> {
+    let r_min_step = cam.r_min_step(read_mm);
     let s = &cam.spec;
     let mm = unit_in("mm", lang);
     let n = |x: f64| format_sig(x * 1e3, 4, lang);
@@ -319,14 +320,16 @@ fn data_lines(cam: &Cam, r_min_step: Option<f64>, lang: Lang) -> Vec<String> {
         |p: fn(&Finding) -> bool| found.iter().find(|f| p(f)).and_then(|f| verdict(f, lang));
     out.extend(cam_marks::base_lines(cam, r_min_step, lang));
     if !matches!(s.follower, Follower::Flat { .. }) {
-        // The rule's two bounds, ρ_min the drawn pitch curve's; they choose the roller unless
-        // the task gives it.
+        // The rule's two bounds, ρ_min the drawn pitch curve's as the table reads it; they
+        // choose the roller unless the task gives it.
+        let step_mm = cam.rho_min_step(read_mm).map(|s| s * 1e3);
+        let rho = digits::carried(cam.inversion.rho_min * 1e3, step_mm) * 1e-3;
         let bounds = format!(
             "{}·r_{{0}} = {} {mm}, {}·ρ_{{min}} = {} {mm}",
             format_sig(0.4, 1, lang),
             n(0.4 * cam.base),
             format_sig(0.8, 1, lang),
-            n(0.8 * cam.inversion.rho_min),
+            n(0.8 * rho),
         );
         out.push(match s.roller {
             Some(_) => format!(

@@ -5,9 +5,9 @@
 //! the closed forms.
 
 use super::cam::{diagram_block, law_lines, legend, mu, one_sheet, points_tables, results_table};
-use super::cam_marks;
 use super::layout::{keyed, Block};
 use super::BuildError;
+use super::{cam_marks, digits};
 use crate::cam::sliding::TRAVEL_X_NOTE;
 use crate::cam::{Follower, Special, SpecialProfile, TRAVEL_NOTE};
 use crate::check::{Finding, Row};
@@ -60,7 +60,8 @@ pub(super) fn build(
         keyed(Key::CamScaleL, cam.scale),
     ));
     let drawings = blocks.len();
-    let mut lines = data_lines(cam, lang).map_err(study)?;
+    let read_mm = session.drafting().resolution_mm();
+    let mut lines = data_lines(cam, read_mm, lang).map_err(study)?;
     lines.push(String::new());
     lines.extend(legend(last_column(&cam.profile).1, lang));
     lines.push(super::drafting_line(
@@ -77,7 +78,6 @@ pub(super) fn build(
             .into_iter()
             .map(Block::Table),
     );
-    let read_mm = session.drafting().resolution_mm();
     let step = |r: &Row| cam.reading_step(r, read_mm);
     blocks.push(Block::Table(results_table(&rows, &step, lang)));
     let title = super::title_block(
@@ -93,11 +93,18 @@ pub(super) fn build(
     one_sheet(sheet, blocks, drawings, &title, lang)
 }
 
-/// The data (the law, the frame) and the results (ρ_min, X_min, the verdicts).
-fn data_lines(cam: &Special, lang: Lang) -> Result<Vec<String>, crate::cam::CamError> {
+/// The data (the law, the frame) and the results (ρ_min, X_min, the verdicts), each read
+/// off the profile to its step at `read_mm`.
+fn data_lines(
+    cam: &Special,
+    read_mm: f64,
+    lang: Lang,
+) -> Result<Vec<String>, crate::cam::CamError> {
     let s = &cam.spec;
     let mm = unit_in("mm", lang);
     let n = |x: f64| format_sig(x * 1e3, 4, lang);
+    let step_mm = cam.scale.reading_step(read_mm).map(|s| s * 1e3);
+    let r = |x: f64| digits::read(x * 1e3, step_mm, lang);
     let deg = |x: f64| format_sig(x.to_degrees(), 4, lang);
     let mut out = law_lines(s, s.rotation, lang);
     let rho = cam.exact_rho_min()?;
@@ -105,7 +112,7 @@ fn data_lines(cam: &Special, lang: Lang) -> Result<Vec<String>, crate::cam::CamE
     let pair = |x: f64, y: f64| {
         format!(
             "{} {mm} ({}), {} {mm} ({})",
-            n(x),
+            r(x),
             Text::Graphical.get(lang),
             n(y),
             Text::Exact.get(lang)
@@ -158,7 +165,7 @@ fn data_lines(cam: &Special, lang: Lang) -> Result<Vec<String>, crate::cam::CamE
                     out.push(format!(
                         "X = {} {mm} ≥ X_{{min}} = {} {mm}",
                         n(frame.travel),
-                        n(read)
+                        r(read)
                     ));
                 }
             }

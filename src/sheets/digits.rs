@@ -91,13 +91,30 @@ pub(crate) fn step_decimals(step: Option<f64>) -> Option<usize> {
 /// A value read to `step` (in its printed unit): no finer than the step's decimals, nor
 /// than [`SIG`] digits: `9,0` of a tooth read to 0,5 mm; [`value`] when read exactly.
 pub(crate) fn read(x: f64, step: Option<f64>, lang: Lang) -> String {
-    match step_decimals(step) {
-        Some(d) if x != 0.0 => {
-            let sig = (SIG as i32 - 1 - x.abs().log10().floor() as i32).max(0) as usize;
-            format_fixed(x, d.min(sig), lang)
-        }
-        _ => value(x, lang),
+    match read_decimals(x, step) {
+        Some(d) => format_fixed(x, d, lang),
+        None => value(x, lang),
     }
+}
+
+/// The value a reader carries on from `x` read to `step` (in its printed unit): `x` rounded
+/// as [`read`] writes it (69 of 68,59 read to 1 mm); `x` itself when read exactly.
+pub(crate) fn carried(x: f64, step: Option<f64>) -> f64 {
+    match read_decimals(x, step) {
+        Some(d) => {
+            let f = 10f64.powi(d as i32);
+            (x * f).round() / f
+        }
+        None => x,
+    }
+}
+
+/// The decimals [`read`] writes `x` to: the step's, no finer than [`SIG`] digits; `None` for
+/// no step or a zero.
+fn read_decimals(x: f64, step: Option<f64>) -> Option<usize> {
+    let d = step_decimals(step).filter(|_| x != 0.0)?;
+    let sig = (SIG as i32 - 1 - x.abs().log10().floor() as i32).max(0) as usize;
+    Some(d.min(sig))
 }
 
 /// An upper bound of `x` ≥ 0 to one significant digit, rounded up: `0,002` of 0,001509.

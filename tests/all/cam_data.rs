@@ -111,6 +111,40 @@ fn the_roller_in_the_table_is_the_roller_the_data_take() {
 }
 
 #[test]
+fn the_rollers_bound_takes_the_rho_min_the_table_reads() {
+    // Read to 0,5 mm the table gives ρ_min = 69 мм (68,59 drawn exactly): the rule's bound
+    // is 0,8·69 = 55,2 мм, not 0,8·68,59 = 54,87 мм; the flat rocker's data line reads its
+    // ρ_min as its table does.
+    let read = |name: &str| {
+        let s = crate::support::scene(name);
+        let session = Session::new(&s, Drafting::HAND);
+        let plates = tmm::build(&session, PlateKind::Cam, Lang::Ru).expect("cam");
+        let cell = plates[0]
+            .tables
+            .iter()
+            .flat_map(|t| &t.rows)
+            .find(|r| r.first().is_some_and(|c| c == "ρ_{min}"))
+            .and_then(|r| r.get(1).cloned())
+            .expect("the table's ρ_min");
+        (cell, words(&plates))
+    };
+    let (cell, data) = read("shaper");
+    assert_eq!(cell, "69");
+    assert!(
+        data.iter()
+            .any(|w| w.contains("0,8·ρ_{min} = 55,2 мм → r_{р} = 28,4 мм")),
+        "{data:?}"
+    );
+    let (cell, data) = read("cam-flat-rocker");
+    assert_eq!(cell, "20,3");
+    assert!(
+        data.iter()
+            .any(|w| w.starts_with("ρ_{min} = 20,3 мм (графически)")),
+        "{data:?}"
+    );
+}
+
+#[test]
 fn the_angle_graph_is_graduated_its_limit_valued_its_scale_named_by_its_angle() {
     for (name, symbol, limit) in [
         ("cam-central", "λ", "λ_{max} = 30°"),
