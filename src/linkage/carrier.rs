@@ -6,7 +6,7 @@
 //! the link (`link`), as it does for a load at a joint. A frame direction stays a frame
 //! direction only on a link that does not turn: carried by a turning link it is refused.
 
-use super::model::{Dir, Dyad, Group, Mechanism};
+use super::model::{Dir, Group, Mechanism};
 use super::program::{group_what, Op, PGuide, Program};
 use super::{LinkageError, ModelError};
 use std::fmt;
@@ -131,36 +131,12 @@ impl Group {
     /// RPP, whose slide) keeps a frame direction — its angle is the guide's. Every other link
     /// of a group turns.
     pub fn translating(&self) -> Vec<u32> {
-        let fixed = |d: &Dir| matches!(d, Dir::Fixed(_));
-        let [i, j] = self.links;
-        let mut v = Vec::new();
-        match &self.dyad {
-            Dyad::Rrr { .. } | Dyad::Rpr { .. } => {}
-            Dyad::Rrp { guide, .. } => {
-                if fixed(&guide.dir) {
-                    v.push(j);
-                }
-            }
-            Dyad::Prp {
-                guide_i, guide_j, ..
-            } => {
-                if fixed(&guide_i.dir) {
-                    v.push(i);
-                }
-                if fixed(&guide_j.dir) {
-                    v.push(j);
-                }
-            }
-            Dyad::Rpp { slide, guide, .. } => {
-                if fixed(slide) {
-                    v.push(i);
-                }
-                if fixed(&guide.dir) {
-                    v.push(j);
-                }
-            }
-        }
-        v
+        self.links
+            .into_iter()
+            .zip(self.dyad.link_dirs())
+            .filter(|(_, d)| matches!(d, Some(Dir::Fixed(_))))
+            .map(|(link, _)| link)
+            .collect()
     }
 }
 

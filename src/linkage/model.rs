@@ -210,6 +210,71 @@ impl Dyad {
         }
     }
 
+    /// The point the dyad creates, if any (RPR creates none).
+    pub fn joint(&self) -> Option<&str> {
+        match self {
+            Dyad::Rrr { joint, .. }
+            | Dyad::Rrp { joint, .. }
+            | Dyad::Prp { joint, .. }
+            | Dyad::Rpp { joint, .. } => Some(joint),
+            Dyad::Rpr { .. } => None,
+        }
+    }
+
+    /// The directions its links `[i, j]` keep when they translate: a slider's guide, an
+    /// RPP block's slide; `None` for a link that turns whatever the directions are.
+    pub fn link_dirs(&self) -> [Option<&Dir>; 2] {
+        match self {
+            Dyad::Rrr { .. } | Dyad::Rpr { .. } => [None, None],
+            Dyad::Rrp { guide, .. } => [None, Some(&guide.dir)],
+            Dyad::Prp {
+                guide_i, guide_j, ..
+            } => [Some(&guide_i.dir), Some(&guide_j.dir)],
+            Dyad::Rpp { slide, guide, .. } => [Some(slide), Some(&guide.dir)],
+        }
+    }
+
+    /// The outer pivot each of its links `[i, j]` has its frame start at, where it has one
+    /// (RRR: a, b; RRP: a; RPR: a, c).
+    pub fn origins(&self) -> [Option<&str>; 2] {
+        match self {
+            Dyad::Rrr { a, b, .. } => [Some(a), Some(b)],
+            Dyad::Rrp { a, .. } => [Some(a), None],
+            Dyad::Rpr { a, c, .. } => [Some(a), Some(c)],
+            Dyad::Prp { .. } | Dyad::Rpp { .. } => [None, None],
+        }
+    }
+
+    /// The link lengths it is given: (outer pivot, joint, length m) — RRR's two, RRP's one.
+    pub fn lengths(&self) -> Vec<(&str, &str, f64)> {
+        match self {
+            Dyad::Rrr {
+                a,
+                la,
+                b,
+                lb,
+                joint,
+                ..
+            } => vec![(a, joint, *la), (b, joint, *lb)],
+            Dyad::Rrp { a, la, joint, .. } => vec![(a, joint, *la)],
+            Dyad::Rpr { .. } | Dyad::Prp { .. } | Dyad::Rpp { .. } => Vec::new(),
+        }
+    }
+
+    /// Its slide lines as given: the point each passes by and its offset from it, m (the
+    /// guides' in the order of [`Dyad::guides`]; RPR's from its pivot c).
+    pub fn slide_lines(&self) -> Vec<(&str, f64)> {
+        match self {
+            Dyad::Rpr { c, offset, .. } => vec![(c, *offset)],
+            _ => self
+                .guides()
+                .into_iter()
+                .flatten()
+                .map(|g| (g.through.as_str(), g.offset))
+                .collect(),
+        }
+    }
+
     /// The kind.
     pub fn kind(&self) -> DyadKind {
         match self {

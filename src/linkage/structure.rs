@@ -199,16 +199,3 @@ impl Structure {
         s
     }
 }
-
-impl super::model::Group {
-    /// The point this group's dyad creates, if any.
-    pub fn dyad_joint(&self) -> Option<&str> {
-        match &self.dyad {
-            Dyad::Rrr { joint, .. }
-            | Dyad::Rrp { joint, .. }
-            | Dyad::Prp { joint, .. }
-            | Dyad::Rpp { joint, .. } => Some(joint),
-            Dyad::Rpr { .. } => None,
-        }
-    }
-}

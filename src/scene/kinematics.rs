@@ -4,7 +4,7 @@
 use super::check::{item, quoted, Checker};
 use super::raw::RawKinematics;
 use crate::kinematics::KinematicsSpec;
-use crate::linkage::{Dyad, Mechanism};
+use crate::linkage::Mechanism;
 use crate::scale::{Key, Quantity};
 
 /// The key path of the section.
@@ -84,20 +84,14 @@ pub(crate) fn kinematics(
 
 /// Every point name of the mechanism: fixed points, the crank pin, the joints, link points.
 pub(super) fn point_names(m: &Mechanism) -> Vec<String> {
-    let joints = m.groups.iter().filter_map(|g| match &g.dyad {
-        Dyad::Rrr { joint, .. }
-        | Dyad::Rrp { joint, .. }
-        | Dyad::Prp { joint, .. }
-        | Dyad::Rpp { joint, .. } => Some(joint),
-        Dyad::Rpr { .. } => None,
-    });
+    let joints = m.groups.iter().filter_map(|g| g.dyad.joint());
     m.fixed
         .iter()
-        .map(|f| &f.name)
-        .chain(std::iter::once(&m.crank.pin))
+        .map(|f| f.name.as_str())
+        .chain(std::iter::once(m.crank.pin.as_str()))
         .chain(joints)
-        .chain(m.points.iter().map(|p| &p.name))
-        .cloned()
+        .chain(m.points.iter().map(|p| p.name.as_str()))
+        .map(str::to_string)
         .collect()
 }
 

@@ -5,7 +5,7 @@ use super::check::{item, join, number};
 use super::raw::{RawMechanism, RawOutput};
 use super::structure::{Builder, MECH};
 use crate::geom::Tolerances;
-use crate::linkage::{Dir, Dyad, Group, Mechanism, Output, RedundantPair, Structure};
+use crate::linkage::{Dir, Group, Mechanism, Output, RedundantPair, Structure};
 
 /// The kinds of a redundant pair, as written (Latin or Cyrillic): prismatic or not.
 const PAIR_KINDS: [(&str, bool); 4] = [("R", false), ("P", true), ("В", false), ("П", true)];
@@ -112,20 +112,17 @@ impl Builder<'_> {
     /// `point` slides on, if it is the joint of a group with a guide fixed to the frame.
     fn frame_guide_of(&self, point: &str, groups: &[Group]) -> Option<(usize, f64)> {
         groups.iter().enumerate().find_map(|(gi, g)| {
-            if g.dyad_joint() != Some(point) {
+            if g.dyad.joint() != Some(point) {
                 return None;
             }
-            let guides = match &g.dyad {
-                Dyad::Rrp { guide, .. } | Dyad::Rpp { guide, .. } => vec![guide],
-                Dyad::Prp {
-                    guide_i, guide_j, ..
-                } => vec![guide_i, guide_j],
-                Dyad::Rrr { .. } | Dyad::Rpr { .. } => vec![],
-            };
-            guides.into_iter().find_map(|gd| match gd.dir {
-                Dir::Fixed(a) if self.is_fixed(&gd.through) => Some((gi, a)),
-                _ => None,
-            })
+            g.dyad
+                .guides()
+                .into_iter()
+                .flatten()
+                .find_map(|gd| match gd.dir {
+                    Dir::Fixed(a) if self.is_fixed(&gd.through) => Some((gi, a)),
+                    _ => None,
+                })
         })
     }
 

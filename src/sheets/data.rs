@@ -5,7 +5,7 @@
 
 use crate::forces::{Action, ForceSpec};
 use crate::gears::GearsSpec;
-use crate::linkage::{Dyad, Mechanism};
+use crate::linkage::Mechanism;
 use crate::plate::Plate;
 use crate::scale::Lang;
 use crate::words::md_value as fmt;
@@ -41,20 +41,8 @@ pub(crate) fn spans(m: &Mechanism) -> Vec<(Span, String, String, f64)> {
     };
     push(Span::Crank, &m.crank.centre, &m.crank.pin, m.crank.length);
     for g in &m.groups {
-        match &g.dyad {
-            Dyad::Rrr {
-                a,
-                la,
-                b,
-                lb,
-                joint,
-                ..
-            } => {
-                push(Span::Link, a, joint, *la);
-                push(Span::Link, b, joint, *lb);
-            }
-            Dyad::Rrp { a, la, joint, .. } => push(Span::Link, a, joint, *la),
-            _ => {}
+        for (a, joint, l) in g.dyad.lengths() {
+            push(Span::Link, a, joint, l);
         }
     }
     for p in &m.points {
@@ -71,19 +59,7 @@ pub(crate) fn spans(m: &Mechanism) -> Vec<(Span, String, String, f64)> {
         }
     }
     for g in &m.groups {
-        let guides: Vec<(&str, f64)> = match &g.dyad {
-            Dyad::Rrp { guide, .. } | Dyad::Rpp { guide, .. } => {
-                vec![(guide.through.as_str(), guide.offset)]
-            }
-            Dyad::Prp {
-                guide_i, guide_j, ..
-            } => vec![
-                (guide_i.through.as_str(), guide_i.offset),
-                (guide_j.through.as_str(), guide_j.offset),
-            ],
-            Dyad::Rpr { c, offset, .. } => vec![(c.as_str(), *offset)],
-            Dyad::Rrr { .. } => Vec::new(),
-        };
+        let guides = g.dyad.slide_lines();
         for (through, offset) in guides.into_iter().filter(|g| g.1 != 0.0) {
             push(Span::Height, through, "", offset.abs());
         }
@@ -205,17 +181,8 @@ fn link_origin(m: &Mechanism, link: u32) -> Option<String> {
         return Some(m.crank.centre.clone());
     }
     m.groups.iter().find_map(|g| {
-        let [i, j] = g.links;
-        match &g.dyad {
-            Dyad::Rrr { a, b, .. } if link == i || link == j => {
-                Some(if link == i { a.clone() } else { b.clone() })
-            }
-            Dyad::Rrp { a, .. } if link == i => Some(a.clone()),
-            Dyad::Rpr { a, c, .. } if link == i || link == j => {
-                Some(if link == i { a.clone() } else { c.clone() })
-            }
-            _ => None,
-        }
+        let k = g.links.iter().position(|l| *l == link)?;
+        g.dyad.origins()[k].map(str::to_string)
     })
 }
 
