@@ -4,12 +4,13 @@
 //! velocity with the seed's Table 4 (the plan's segment and the hodograph's ray in mm).
 
 use super::markup::{frac, num, sym, text, unit, Align};
-use super::plans::Plans;
+use super::plan_reads::Plans;
 use super::rows::{numbers, values_and_errors, Column};
 use super::Writer;
 use crate::check::{Method, Row, Symbol};
 use crate::kinematics::Diagrams;
 use crate::scale::format_fixed;
+use crate::scene::PlateKind;
 use crate::study::Kinematics;
 use crate::words::{
     plain, quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
@@ -42,7 +43,7 @@ pub(super) fn diagrams(w: &mut Writer<'_, '_>, kin: &Kinematics, at: Option<&str
     ]
     .map(|t| t.get(lang));
     w.figures(
-        super::kinematics::KINEMATICS,
+        (PlateKind::Kinematics, None),
         |own| !shown.iter().any(|s| own.starts_with(s)),
         |own| own.to_string(),
     );
@@ -338,7 +339,7 @@ pub(super) fn hodograph(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
     }
     let word = S::Hodograph.get(lang);
     w.figures(
-        super::kinematics::KINEMATICS,
+        (PlateKind::Kinematics, None),
         |own| own.starts_with(word),
         |own| own.to_string(),
     );

@@ -7,7 +7,6 @@
 use super::markup::{label, num, sym, text, Align};
 use super::{NoteError, Writer};
 use crate::linkage::Structure;
-use crate::scene::PlateKind;
 use crate::words::{Meaning, NoteText as T, Text as S};
 
 /// The structural analysis.
@@ -117,9 +116,6 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     Ok(())
 }
 
-/// Every kinematic sheet.
-pub(super) const KINEMATICS: (PlateKind, Option<usize>) = (PlateKind::Kinematics, None);
-
 /// The kinematic analysis.
 pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let sc = w.session.kin_scales()?;
@@ -128,7 +124,7 @@ pub(super) fn kinematics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let s = Structure::analyse(m);
     super::positions::positions(w)?;
     let at = super::plans::worked_position(&w.report.rows);
-    let plans = super::plans::Plans {
+    let plans = super::plan_reads::Plans {
         kin: &kin,
         m,
         s: &s,

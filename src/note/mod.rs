@@ -32,6 +32,7 @@ mod machines;
 mod markup;
 mod moments;
 mod pair_worked;
+mod plan_reads;
 mod plan_worked;
 mod plans;
 mod positions;

@@ -5,7 +5,7 @@
 
 use super::equations::{velocity_equations, Equation, Kind, Relative};
 use super::markup::{frac, num, sym, unit};
-use super::plans::{explain_one, segment, Plans};
+use super::plan_reads::{explain_one, segment, Plans};
 use super::Writer;
 use crate::check::Symbol;
 use crate::scale::Lang;

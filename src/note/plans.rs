@@ -7,65 +7,14 @@
 
 use super::equations::{equations, velocity_equations, Kind};
 use super::markup::{frac, num, sym, text, unit};
+use super::plan_reads::{explain_one, segment, Plans};
 use super::rows::{numbers, values_and_errors, Column, DIGITS};
 use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
-use crate::linkage::{Mechanism, PlanPosition, Structure};
-use crate::study::Kinematics;
+use crate::scene::PlateKind;
 use crate::words::{
     plain, quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
 };
-
-/// What the plans' subsections read: the study, the mechanism, its structure and the
-/// worked position.
-pub(super) struct Plans<'k> {
-    pub(super) kin: &'k Kinematics,
-    pub(super) m: &'k Mechanism,
-    pub(super) s: &'k Structure,
-    pub(super) at: Option<String>,
-}
-
-impl Plans<'_> {
-    /// The crank's pin, `crank` its length's symbol.
-    fn crank_pin<'a>(&'a self, crank: &'a str) -> CrankPin<'a> {
-        CrankPin {
-            name: &self.m.crank.pin,
-            crank,
-            w1: self.kin.w1.abs(),
-            length: self.m.crank.length,
-        }
-    }
-
-    /// The worked position as the plan of positions constructed it.
-    pub(super) fn built(&self) -> Option<&PlanPosition> {
-        let at = self.at.as_deref()?;
-        self.kin.plan.positions.iter().find(|p| p.label == at)
-    }
-
-    /// The distance between the mechanism's points `a` and `b` at the worked position on the
-    /// plan of positions, mm.
-    pub(super) fn drawn(&self, a: &str, b: &str) -> Option<f64> {
-        let p = self.built()?;
-        let prog = &self.kin.plan.program;
-        let (i, j) = (prog.index(a)?, prog.index(b)?);
-        Some(p.built.p[i].distance(p.built.p[j]))
-    }
-
-    /// The report's graphical value of `symbol` of `subject` at the worked position.
-    pub(super) fn value(&self, w: &Writer<'_, '_>, symbol: Symbol, subject: &str) -> Option<f64> {
-        let at = self.at.as_deref()?;
-        w.report
-            .rows
-            .iter()
-            .find(|r| {
-                r.method == Method::Plan
-                    && r.key.symbol == symbol
-                    && r.key.subject == subject
-                    && r.position().as_deref() == Some(at)
-            })
-            .map(|r| r.graphical)
-    }
-}
 
 /// The worked position: the first position with an acceleration plan, else the first one.
 pub(super) fn worked_position(rows: &[Row]) -> Option<String> {
@@ -73,28 +22,6 @@ pub(super) fn worked_position(rows: &[Row]) -> Option<String> {
         .find(|r| r.method == Method::Plan && r.key.symbol == Symbol::Acceleration)
         .or_else(|| rows.iter().find(|r| r.method == Method::Plan))
         .and_then(|r| r.position())
-}
-
-/// The segment of the plan a velocity or acceleration is drawn as: `p b_{3}` (from the
-/// pole) or `b_{1} b_{3}` (relative).
-pub(super) fn segment(pole: &str, subject: &str) -> String {
-    let point = |p: &str| {
-        let mut c = p.chars();
-        let first = c
-            .next()
-            .map(|f| f.to_lowercase().to_string())
-            .unwrap_or_default();
-        let rest: String = c.collect();
-        if rest.is_empty() {
-            first
-        } else {
-            format!("{first}_{{{rest}}}")
-        }
-    };
-    match subject.split_once('_') {
-        Some((x, y)) => format!("{}{}", point(y), point(x)),
-        None => format!("{pole}{}", point(subject)),
-    }
 }
 
 /// The quantities of `symbol` read off the plans.
@@ -124,9 +51,14 @@ fn meaning(w: &Writer<'_, '_>, symbol: Symbol, subject: &str) -> String {
     }
 }
 
-/// A formula's symbol explained by a meaning built for it (a point's name in it).
-pub(super) fn explain_one(w: &mut Writer<'_, '_>, symbol: &str, meaning: &str, si: &str) {
-    w.explain(&[(symbol, meaning, si)]);
+/// The crank's pin, `crank` its length's symbol.
+fn crank_pin<'a>(p: &'a Plans<'_>, crank: &'a str) -> CrankPin<'a> {
+    CrankPin {
+        name: &p.m.crank.pin,
+        crank,
+        w1: p.kin.w1.abs(),
+        length: p.m.crank.length,
+    }
 }
 
 /// The crank's pin, whose velocity or acceleration opens its plan and sets its scale.
@@ -221,7 +153,7 @@ fn opening(w: &mut Writer<'_, '_>, p: &Plans<'_>, kind: Kind) {
     };
     w.heading(2, heading);
     let crank = super::positions::crank_length(p.m);
-    p.crank_pin(&crank).worked(w, kind, scale);
+    crank_pin(p, &crank).worked(w, kind, scale);
     w.doc.say(w.word(sentence));
     equations(w, p.m, &p.s.groups, kind);
 }
@@ -242,7 +174,7 @@ pub(super) fn velocities(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(), No
     plan_tables(w, Symbol::AngularVelocity, captions);
     let worked_plan = p.at.as_ref().map(|at| format!("{} {at}", S::Pos.get(lang)));
     w.figures(
-        super::kinematics::KINEMATICS,
+        (PlateKind::Kinematics, None),
         |own| Some(own) == worked_plan.as_deref(),
         |own| format!("{}, {}", T::VelocityPlanWord.get(lang), own.to_lowercase()),
     );
@@ -280,7 +212,7 @@ pub(super) fn accelerations(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(),
     }
     let word = S::AccelerationPlanAt.get(lang);
     w.figures(
-        super::kinematics::KINEMATICS,
+        (PlateKind::Kinematics, None),
         |own| own.starts_with(word),
         |own| own.to_string(),
     );

@@ -8,6 +8,7 @@ use super::{NoteError, Writer};
 use crate::check::is_zero;
 use crate::linkage::{Dyad, Extremes, Mechanism, OutputCoord};
 use crate::scale::{format_fixed, Lang};
+use crate::scene::PlateKind;
 use crate::sheets::data::{spans, Span};
 use crate::words::{plain, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S};
 use std::f64::consts::PI;
@@ -81,7 +82,7 @@ pub(super) fn positions(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     }
     let plan = S::PlanOfPositions.get(lang);
     w.figures(
-        super::kinematics::KINEMATICS,
+        (PlateKind::Kinematics, None),
         |own| own.starts_with(plan),
         |own| own.to_string(),
     );

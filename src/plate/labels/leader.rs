@@ -144,8 +144,8 @@ pub(super) const RANK: f64 = 0.01;
 const CROSS_MAIN: f64 = 6.0;
 const CROSS_THIN: f64 = 3.0;
 /// Cost of crossing another leader; of passing this near another label's point (mm), which
-/// costs what covering it does (`place::OVER_POINT`): the leader would be read as that
-/// point's. Crossing a text costs what covering it does (`place::OVER_TEXT`).
+/// costs what covering it does (`costs::OVER_POINT`): the leader would be read as that
+/// point's. Crossing a text costs what covering it does (`costs::OVER_TEXT`).
 const OVER_LEADER: f64 = 200.0;
 const PAST_POINT_MM: f64 = 1.0;
 /// Lines through the object itself are not crossings: within this of it, mm.
@@ -167,7 +167,7 @@ const ALONG_LINE: f64 = 10.0;
 /// point. A text beside the shelf's end, across from a corner of it, reads as its own.
 const UNDER_SHELF_MM: f64 = 2.5;
 const UNDER_SHELF_ACROSS: f64 = 0.5;
-pub(super) const UNDER_SHELF: f64 = place::OVER_POINT;
+pub(super) const UNDER_SHELF: f64 = costs::OVER_POINT;
 
 /// Where a text right under the shelf of `l` stands (see [`under_shelf`]): the band
 /// [`UNDER_SHELF_MM`] deep under it.
@@ -219,7 +219,7 @@ pub(super) fn cost(
         ALONG_LINE * (along_lines(&line, l.to, lines) + along_lines(&shelf, l.to, lines)) as f64;
     for p in points {
         if line.distance_to(*p) < PAST_POINT_MM {
-            cost += place::OVER_POINT;
+            cost += costs::OVER_POINT;
         }
     }
     for t in texts {
@@ -227,7 +227,7 @@ pub(super) fn cost(
             .iter()
             .any(|s| clip::clipped_length(s.from, s.to, t) > 0.0)
         {
-            cost += place::OVER_TEXT;
+            cost += costs::OVER_TEXT;
         }
     }
     for other in leaders {

@@ -414,6 +414,7 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
 
 mod candidates;
 mod clip;
+mod costs;
 mod dimension;
 mod leader;
 mod misreadings;

@@ -4,7 +4,7 @@
 //! «интерференция 10»). A symbol, a number or a formula is not read on into the next line;
 //! a shelf under the upper text parts the two.
 
-use super::place;
+use super::costs::OVER_POINT;
 use super::Rect;
 
 /// The most a word stands under the text above it and still reads as the next line of it:
@@ -17,7 +17,7 @@ const ACROSS: f64 = 0.5;
 pub(super) const SIDE_GAP_MM: f64 = 2.5;
 /// What a place costs for each word it would read on from or into, and for each text beside
 /// it on its row: what covering another label's point costs.
-pub(super) const STACKED: f64 = place::OVER_POINT;
+pub(super) const STACKED: f64 = OVER_POINT;
 
 /// Whether a label's text (its markup) is words: letters, digits, spaces and hyphens only,
 /// with a word of three letters or more — a curve's name («граничная точка», «интерференция

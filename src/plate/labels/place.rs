@@ -3,6 +3,7 @@
 
 use super::candidates::{box_distance, candidates, near_bound, NEAR_RING_MM, POINT_REACH_MM};
 use super::clip::{ink_inside, own_distance, rect_segment_distance};
+use super::costs::{OVER_POINT, OVER_TEXT};
 use super::leader::{self, Leader};
 use super::phrase;
 use super::*;
@@ -25,11 +26,8 @@ const OUTSIDE: f64 = 1e5;
 /// keeps, mm: the V engine's R₄₋₅ 0,3 mm from the frame, touching the designation box, read
 /// as written on them (issue 45).
 const FRAME_CLEAR_MM: f64 = 1.0;
-/// Cost of a box over another text, plus its overlap area (mm²) times [`TEXT_AREA`].
-pub(super) const OVER_TEXT: f64 = 1e3;
+/// A box over another text costs [`OVER_TEXT`] plus its overlap area (mm²) times this.
 const TEXT_AREA: f64 = 100.0;
-/// Cost of covering another label's point.
-pub(super) const OVER_POINT: f64 = 60.0;
 /// Cost per mm of a main line crossing the box; of a thin line (a label a ring further out is
 /// cheaper than one struck through by a construction line).
 const MAIN_LINE: f64 = 20.0;
