@@ -291,13 +291,14 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     let xs = pts.iter().fold(0.0f64, |a, p| a.max(p.x.abs()));
     // The abscissa as wide each side as the curve's widest side: the 45° tangent runs left.
     let hx = abscissa(rec, &[DVec2::X * -xs, DVec2::X * xs], "d^2S/dφ^2");
-    rec.draw(
+    // Through the points K as a French curve follows them, as the other combined diagrams: a
+    // polyline put a corner at each, and a spike where S″ is extreme, where the smooth law's
+    // curve turns with a vertical tangent.
+    smooth_loop(
+        rec,
+        (spec, points),
+        &pts,
         "combined diagram S(d²S/dφ²)",
-        Item::Polyline {
-            points: pts.clone(),
-            closed: true,
-        },
-        Role::Result,
         &[ax, hx],
     );
     // The tangent from its touching point to its crossing with the S axis, at S = c.

@@ -89,10 +89,19 @@ pub(super) fn phases_marked(figure: &Figure, spec: &CamSpec, lang: Lang) -> Figu
 /// The base radius the profile is built on, as the data say it: accepted from the r_min
 /// read (`Принимаем r_{0} = 70 мм ≥ r_{min} = 69 мм`), after the reason when the profile's
 /// check took it up (`При r_{0} = 33 мм по профилю в точке 0 λ = 30,18° > λ_{max} = 30°`),
-/// or the scene's (`r_{0} = 20 мм`): one sentence a line; r_min to `step` ([`r_min`]).
+/// or the scene's (`r_{0} = 20 мм`; under r_min, where its centre O₁′ stands: `r_{0} = 10 мм
+/// (задано) < r_{min}: центр O_{1}′ в недопустимой зоне`): one sentence a line; r_min to
+/// `step` ([`r_min`]).
 pub(crate) fn base_lines(cam: &Cam, step: Option<f64>, lang: Lang) -> Vec<String> {
     if cam.spec.base_radius.is_some() {
-        return vec![format!("r_{{0}} = {}", digits::mm(cam.base, lang))];
+        // Under the r_min read, the combined diagram marks its centre O₁′ apart from O₁.
+        return vec![if cam.base < cam.radius.graphical {
+            CamText::GivenUnder
+                .get(lang)
+                .replace("{r0}", &digits::mm(cam.base, lang))
+        } else {
+            format!("r_{{0}} = {}", digits::mm(cam.base, lang))
+        }];
     }
     let accepted = CamText::Accepted
         .get(lang)

@@ -244,6 +244,11 @@ catalogue! {
             "Приймаємо r_{0} = {r0} ≥ r_{min} = {rmin}",
             "Adopted r_{0} = {r0} ≥ r_{min} = {rmin}"
         ),
+        GivenUnder => (
+            "r_{0} = {r0} (задано) < r_{min}: центр O_{1}′ в недопустимой зоне",
+            "r_{0} = {r0} (задано) < r_{min}: центр O_{1}′ у недопустимій зоні",
+            "r_{0} = {r0} (given) < r_{min}: the centre O_{1}′ lies in the inadmissible zone"
+        ),
         Raised => (
             "При r_{0} = {r0} по профилю в точке {point} {angle}",
             "При r_{0} = {r0} за профілем у точці {point} {angle}",

@@ -364,3 +364,35 @@ fn the_analogues_scales_have_the_notes_units_on_the_sheet() {
         );
     }
 }
+
+#[test]
+fn a_flat_faces_combined_curve_is_smooth_and_its_given_centre_is_told() {
+    // The flat face's S(d²S/dφ²) is a French curve through its points (a polyline spiked at
+    // S″'s extremes); on cam-cusp, whose r₀ = 10 мм lies under r_min, the data say what the
+    // O₁′ marked on the combined diagram is. cam-pz4 (r₀ accepted) marks no O₁′ and says none.
+    for (name, under) in [("cam-cusp", true), ("cam-pz4", false)] {
+        let plates = plates(name, Lang::Ru);
+        let steps: Vec<_> = plates[0]
+            .views
+            .iter()
+            .flat_map(|v| &v.figure.steps)
+            .collect();
+        let curve: Vec<_> = steps
+            .iter()
+            .filter(|s| s.note == "combined diagram S(d²S/dφ²)")
+            .collect();
+        assert!(!curve.is_empty(), "{name}");
+        assert!(
+            curve.iter().all(|s| matches!(s.item, Item::Curve { .. })),
+            "{name}: {:?}",
+            curve.iter().map(|s| &s.item).collect::<Vec<_>>()
+        );
+        let marked = steps
+            .iter()
+            .any(|s| s.label.as_ref().is_some_and(|l| l.text == "O_1′"));
+        let told = words(&plates)
+            .iter()
+            .any(|w| w.contains("центр O_{1}′ в недопустимой зоне"));
+        assert_eq!((marked, told), (under, under), "{name}");
+    }
+}
