@@ -57,13 +57,14 @@ pub fn hodograph(
         Scale::round_for(longest.max(1e-12), HODOGRAPH_MM, Quantity::Velocity).unwrap_or(scale_v);
     let mut rec = Recorder::in_context("hodograph", scale, ctx);
     rec.pole("p");
-    let mut ends = Vec::new();
-    for (pos, vp) in plan
-        .positions
-        .iter()
-        .zip(velocity)
-        .filter_map(|(p, v)| v.map(|v| (p, v)))
-    {
+    // The ends in the order of the positions, `None` where a position has no plan (a
+    // special position, where the velocity jumps or is not determined).
+    let mut ends: Vec<Option<DVec2>> = Vec::with_capacity(plan.positions.len());
+    for (pos, vp) in plan.positions.iter().zip(velocity) {
+        let Some(vp) = vp else {
+            ends.push(None);
+            continue;
+        };
         // The vector copied from the velocity plan, redrawn at the hodograph's μ.
         let end = vp.images[k] * (vp.figure.scale.value() / scale.value());
         let id = rec.draw(
@@ -76,16 +77,71 @@ pub fn hodograph(
             &[],
         );
         rec.label(id, pos.label.clone(), end, end.normalize_or(DVec2::Y));
-        ends.push(end);
+        ends.push(Some(end));
     }
-    rec.draw(
-        format!("hodograph of {name}"),
-        Item::Curve {
-            points: ends,
-            closed: true,
-        },
-        Role::Result,
-        &[],
-    );
+    for (points, closed) in pieces(&ends) {
+        rec.draw(
+            format!("hodograph of {name}"),
+            Item::Curve { points, closed },
+            Role::Result,
+            &[],
+        );
+    }
     rec.finish()
+}
+
+/// The hodograph's curve through `ends` (a turn's positions in order, `None` where no plan
+/// is drawn): closed round the turn when every position has its end; else a piece from each
+/// gap to the next, not drawn across a position without a plan, whose velocity the curve
+/// would make up (the six-bar's change point, where v_S3 jumps). A piece of one end is none.
+fn pieces(ends: &[Option<DVec2>]) -> Vec<(Vec<DVec2>, bool)> {
+    let Some(gap) = ends.iter().position(Option::is_none) else {
+        return vec![(ends.iter().flatten().copied().collect(), true)];
+    };
+    // Round the turn from the first gap: every run of ends between two gaps is a piece.
+    let n = ends.len();
+    let mut out = Vec::new();
+    let mut run: Vec<DVec2> = Vec::new();
+    for k in 1..=n {
+        match ends[(gap + k) % n] {
+            Some(p) => run.push(p),
+            None => {
+                if run.len() > 1 {
+                    out.push((std::mem::take(&mut run), false));
+                }
+                run.clear();
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_hodograph_is_not_drawn_across_a_position_without_a_plan() {
+        let p = |x: f64| Some(DVec2::new(x, 0.0));
+        // Every position: one closed curve.
+        let all = pieces(&[p(1.0), p(2.0), p(3.0)]);
+        assert_eq!(
+            all,
+            vec![(vec![DVec2::X, DVec2::X * 2.0, DVec2::X * 3.0], true)]
+        );
+        // A gap at the third of six: one open piece from the fourth round to the second.
+        let one = pieces(&[p(1.0), p(2.0), None, p(4.0), p(5.0), p(6.0)]);
+        let xs: Vec<f64> = one[0].0.iter().map(|v| v.x).collect();
+        assert_eq!(
+            (one.len(), xs, one[0].1),
+            (1, vec![4.0, 5.0, 6.0, 1.0, 2.0], false)
+        );
+        // Two gaps, one end between them: that end is no piece.
+        let two = pieces(&[p(1.0), None, p(3.0), None, p(5.0), p(6.0)]);
+        let xs: Vec<Vec<f64>> = two
+            .iter()
+            .map(|(v, _)| v.iter().map(|v| v.x).collect())
+            .collect();
+        assert_eq!(xs, vec![vec![5.0, 6.0, 1.0]]);
+    }
 }
