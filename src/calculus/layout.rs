@@ -40,6 +40,10 @@ pub struct Layout {
     /// there from the ray parallel to the tangent instead of extending the smooth curve past
     /// the last mid-interval point. `None`: extended.
     pub end_tangents: [Option<DVec2>; 2],
+    /// Points between the nodes that the given curve is drawn through as well (figure mm
+    /// from the given diagram's origin): where the draughtsman has a value the nodes do not
+    /// show, as a mechanism's extreme position read off its plan, the curve's crest there.
+    pub source_through: Vec<DVec2>,
 }
 
 impl Layout {
@@ -60,6 +64,7 @@ impl Layout {
             pole_dimension_mm: -7.0,
             pole_label_toward: DVec2::new(-0.3, 1.0),
             end_tangents: [None, None],
+            source_through: Vec::new(),
         }
     }
 
@@ -67,6 +72,12 @@ impl Layout {
     /// (see [`Layout::end_tangents`]).
     pub fn tangents_at_ends(mut self, first: Option<DVec2>, last: Option<DVec2>) -> Self {
         self.end_tangents = [first, last];
+        self
+    }
+
+    /// The given curve drawn through `points` too (see [`Layout::source_through`]).
+    pub fn source_through(mut self, points: Vec<DVec2>) -> Self {
+        self.source_through = points;
         self
     }
 

@@ -159,6 +159,9 @@ fn twin_origin(
 /// drawn, mm: the rays fan out from the pole over the whole span of the derivative, so the
 /// dimension H and its text (over the line) stand clear of them under the fan.
 pub(super) const POLE_DIMENSION_MM: f64 = 7.0;
+/// How far from a numbered position's mark an extreme's number on the φ axis must stand to
+/// be written there, mm (about two digits' width).
+const AXIS_MARKS_APART_MM: f64 = 5.0;
 /// The pole's label: up and left of the pole, away from the rays (which run right).
 pub(super) const POLE_LABEL: DVec2 = DVec2::new(-0.6, 1.0);
 
@@ -182,32 +185,61 @@ fn chart_scales(spec: &KinematicsSpec, s: &[f64], size: ChartSize) -> Result<Sca
 
 /// S of point `k` read off the plan of positions (at μ_l = `scale_l`) at the `numbered`
 /// positions: the distance from the start of the working stroke (position 1 when no extreme
-/// is drawn), positive along the working stroke; and the figure of the segments read, each
-/// in the group its position is drawn in, m.
+/// is drawn), positive along the working stroke; at the plan's other positions (its extremes
+/// between the numbered ones, S 0 at the stroke's start), each with its travel from
+/// position 1 (rad); and the figure of the segments read, each in the group its
+/// position is drawn in, m.
 fn read_displacement(
     plan: &PositionPlan,
     numbered: &[(usize, &crate::linkage::PlanPosition)],
     (k, dir): (usize, DVec2),
     scale_l: Scale,
     ctx: &Context,
-) -> (Vec<f64>, Figure) {
+) -> Readings {
     let mut reader = Recorder::in_context("S", scale_l, ctx);
-    let (p1, read_dir) = match stroke_ends(plan) {
+    let ends = stroke_ends(plan);
+    let (p1, read_dir) = match ends {
         Some((a, b)) => {
             let (pa, pb) = (plan.positions[a].built.p[k], plan.positions[b].built.p[k]);
             (pa, dir * (pb - pa).dot(dir).signum())
         }
         None => (numbered[0].1.built.p[k], dir),
     };
-    let s = numbered
-        .iter()
-        .map(|&(i, p)| {
-            reader.set_group(i as u32 + 1);
-            let d = p.built.p[k] - p1;
-            reader.measure(p1, p.built.p[k]).value * d.dot(read_dir).signum()
+    let mut read = |i: usize, p: &crate::linkage::PlanPosition| {
+        reader.set_group(i as u32 + 1);
+        let d = p.built.p[k] - p1;
+        reader.measure(p1, p.built.p[k]).value * d.dot(read_dir).signum()
+    };
+    let s = numbered.iter().map(|&(i, p)| read(i, p)).collect();
+    let (phi1, sense) = (numbered[0].1.phi, plan.mechanism.crank.sense.sign());
+    let between = (plan.positions.iter().enumerate())
+        .filter(|(_, p)| p.label.parse::<u32>().is_err())
+        .map(|(i, p)| {
+            let travel = (sense * (p.phi - phi1)).rem_euclid(TAU);
+            // The stroke's start is S's origin: nothing to read there.
+            let s = if ends.map(|e| e.0) == Some(i) {
+                0.0
+            } else {
+                read(i, p)
+            };
+            (travel, s, p.label.clone())
         })
         .collect();
-    (s, reader.finish())
+    Readings {
+        s,
+        between,
+        figure: reader.finish(),
+    }
+}
+
+/// What [`read_displacement`] reads off the plan of positions.
+struct Readings {
+    /// S at the numbered positions, m.
+    s: Vec<f64>,
+    /// (travel from position 1, rad; S, m; label) at the other positions the plan draws.
+    between: Vec<(f64, f64, String)>,
+    /// The segments read.
+    figure: Figure,
 }
 
 /// S(φ₁) of the charted point read off the plan at the numbered positions (at μ_l =
@@ -234,9 +266,18 @@ pub fn diagrams(
         what: format!("{what} of {name}"),
         error,
     };
-    let (s, reader) = read_displacement(plan, &numbered, (k, dir), scale_l, ctx);
+    let Readings {
+        s,
+        between,
+        figure: reader,
+    } = read_displacement(plan, &numbered, (k, dir), scale_l, ctx);
     let src = displacement(&numbered, s.clone()).map_err(|e| fail("S", e))?;
-    let scales = chart_scales(spec, &s, size)?;
+    let all_s: Vec<f64> = s
+        .iter()
+        .chain(between.iter().map(|b| &b.1))
+        .copied()
+        .collect();
+    let scales = chart_scales(spec, &all_s, size)?;
     let (h1, mu1) = pole_and_scale(
         spec.pole_h1,
         &src,
@@ -254,10 +295,15 @@ pub fn diagrams(
     } else {
         (calculus::Method::Chords, Method::DiagramChords)
     };
-    let (s_lo, _) = extent(s.iter(), scales.y);
+    let (s_lo, _) = extent(all_s.iter(), scales.y);
     let (d1_lo, d1_hi) = ordinates(&src, scales, h1, mu1, ctx).map_err(|e| fail("dS/dφ", e))?;
     let mut rec1 = Recorder::in_context("dS/dφ", mu1, ctx);
+    // The extremes between the numbered positions are plotted too: the curve's crests.
+    let through = (between.iter())
+        .map(|&(x, y, _)| DVec2::new(scales.x.to_mm(x), scales.y.to_mm(y)))
+        .collect();
     let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
+        .source_through(through)
         .pole_named("P_1", "H_1")
         .pole_marks(d1_lo - POLE_DIMENSION_MM, POLE_LABEL);
     let first = construction
@@ -265,15 +311,26 @@ pub fn diagrams(
         .map_err(|e| fail("dS/dφ", e))?;
     let d1 = first.diagram().map_err(|e| fail("dS/dφ", e))?;
     // The positions' numbers under the S diagram's φ axis, as on the plan of positions.
-    for (idx, (_, p)) in numbered.iter().enumerate() {
-        let at = DVec2::new(scales.x.to_mm(src.x(idx)), 0.0);
+    // An extreme's number too, where it stands clear of the numbered ones.
+    let nodes: Vec<f64> = (0..=numbered.len()).map(|idx| src.x(idx)).collect();
+    let clear =
+        |x: f64| (nodes.iter()).all(|n| scales.x.to_mm((x - n).abs()) >= AXIS_MARKS_APART_MM);
+    let marks = (numbered.iter().enumerate())
+        .map(|(idx, (_, p))| (src.x(idx), &p.label))
+        .chain(
+            (between.iter())
+                .filter(|b| clear(b.0))
+                .map(|(x, _, label)| (*x, label)),
+        );
+    for (x, label) in marks {
+        let at = DVec2::new(scales.x.to_mm(x), 0.0);
         let id = rec1.draw(
-            format!("position {} on the φ axis", p.label),
+            format!("position {label} on the φ axis"),
             Item::Text(at),
             Role::Dimension,
             &[],
         );
-        rec1.label(id, p.label.clone(), at, DVec2::new(0.0, -1.0));
+        rec1.label(id, label.clone(), at, DVec2::new(0.0, -1.0));
     }
     let scales2 = Scales {
         x: scales.x,
@@ -297,9 +354,40 @@ pub fn diagrams(
     let second = construction
         .differentiate(&mut rec2, &d1, scales2, h2, &lay2)
         .map_err(|e| fail("d²S/dφ²", e))?;
-    // Rows: S, v = |ω₁|·dS/dθ, a = ω₁²·d²S/dθ² at the numbered positions.
-    let q = plain(&name);
     let (p0, dir) = twin_origin(plan, outputs, (k, dir));
+    let rows = rows(
+        &numbered,
+        (k, &name, p0, dir),
+        (&s, &first, &second),
+        (w1, method),
+    );
+    Ok(Some(Diagrams {
+        point: name,
+        scales,
+        first_figure: rec1.finish(),
+        second_figure: rec2.finish(),
+        second_at: lay1.origin,
+        first,
+        second,
+        s,
+        readings: reader,
+        rows,
+        corners: (src.breaks.iter())
+            .map(|b| numbered[b.node].1.label.clone())
+            .collect(),
+    }))
+}
+
+/// The rows S, v = |ω₁|·dS/dθ, a = ω₁²·d²S/dθ² of point `k` (named `name`, S from `p0`
+/// along `dir` on the twin) at the `numbered` positions: read `s` and off the derivatives,
+/// against the twin.
+fn rows(
+    numbered: &[(usize, &crate::linkage::PlanPosition)],
+    (k, name, p0, dir): (usize, &str, DVec2, DVec2),
+    (s, first, second): (&[f64], &Derivative, &Derivative),
+    (w1, method): (f64, Method),
+) -> Vec<Row> {
+    let q = plain(name);
     let analytic: Vec<[f64; 3]> = numbered
         .iter()
         .map(|(_, p)| {
@@ -331,21 +419,7 @@ pub fn diagrams(
             ));
         }
     }
-    Ok(Some(Diagrams {
-        point: name,
-        scales,
-        first_figure: rec1.finish(),
-        second_figure: rec2.finish(),
-        second_at: lay1.origin,
-        first,
-        second,
-        s,
-        readings: reader,
-        rows,
-        corners: (src.breaks.iter())
-            .map(|b| numbered[b.node].1.label.clone())
-            .collect(),
-    }))
+    rows
 }
 
 /// S over the crank's turn at the `numbered` positions: a corner at every position where a

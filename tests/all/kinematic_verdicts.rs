@@ -180,3 +180,64 @@ fn a_slider_that_reaches_its_end_twice_a_turn_says_where() {
     );
     assert!(stops("slider-crank").is_empty());
 }
+
+/// The S chart is drawn through the extreme positions the plan draws between the numbered
+/// ones, as the draughtsman plots them (issue 45): the six-bar's S reaches its stroke
+/// H = 205,7 mm at 6′, between positions 6 and 7, where the curve through the numbered
+/// positions alone stopped some 10 mm lower, and touches 0 at 10′; both are numbered on the
+/// φ axis. The shaper's 8′, 2,7 mm past position 8, is plotted but not numbered there.
+#[test]
+fn the_s_chart_is_drawn_through_the_extreme_positions() {
+    use tmm::construct::{Item, Role};
+    for (scene, crest_between, marks) in [
+        ("six-bar", (5.0, 6.0), &["6′", "10′"][..]),
+        ("shaper", (7.0, 8.0), &[][..]),
+    ] {
+        let s =
+            tmm::scene::load(&root().join(format!("constructions/{scene}.toml"))).expect("scene");
+        let session = tmm::study::Session::new(&s, Drafting::EXACT);
+        let study = session
+            .kinematics(&session.kin_scales().expect("scales"))
+            .expect("kinematics");
+        let chart = study.diagrams.as_ref().expect("the S chart");
+        let (mu_s, mu_phi) = (chart.scales.y.value(), chart.scales.x.value());
+        let points: Vec<tmm::geom::DVec2> = (chart.first_figure.steps.iter())
+            .filter(|st| st.role == Role::Given)
+            .flat_map(|st| match &st.item {
+                Item::Curve { points, .. } => points.clone(),
+                _ => Vec::new(),
+            })
+            .collect();
+        let crest = points
+            .iter()
+            .copied()
+            .max_by(|a, b| a.y.total_cmp(&b.y))
+            .expect("a curve");
+        // The stroke H: the charted slider's range.
+        let ranges = &study.plan.extremes.as_ref().expect("extremes").ranges;
+        assert!(
+            (ranges.iter()).any(|r| (crest.y * mu_s - (r.max - r.min)).abs() < 1e-9),
+            "{scene}: the crest {} m, not a stroke of {ranges:?}",
+            crest.y * mu_s
+        );
+        let interval = TAU_OVER_12 / mu_phi;
+        let at = crest.x / interval;
+        assert!(
+            at > crest_between.0 && at < crest_between.1,
+            "{scene}: the crest at {at} intervals"
+        );
+        if scene == "six-bar" {
+            let lowest = points.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
+            assert!(lowest.abs() < 1e-9, "{scene}: S at 10′ {lowest} mm");
+        }
+        let labels: Vec<&str> = (chart.first_figure.steps.iter())
+            .filter(|st| st.note.ends_with("on the φ axis"))
+            .filter_map(|st| st.label.as_ref().map(|l| l.text.as_str()))
+            .filter(|t| t.contains('′'))
+            .collect();
+        assert_eq!(labels, marks, "{scene}");
+    }
+}
+
+/// One of a crank turn's twelve intervals, rad.
+const TAU_OVER_12: f64 = std::f64::consts::TAU / 12.0;

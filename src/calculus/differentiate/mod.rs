@@ -146,6 +146,10 @@ pub fn pole_for(src: &Diagram, scales: Scales, preferred_mm: f64) -> Result<f64,
     }
 }
 
+/// A point the given curve is drawn through between its nodes is left out nearer a node
+/// than this, mm: two readings that close would turn the curve on their rounding.
+const THROUGH_APART_MM: f64 = 1.0;
+
 /// What both methods start from: the checked inputs and the given diagram.
 struct Start<'a> {
     /// The given diagram.
@@ -200,6 +204,16 @@ impl<'a> Start<'a> {
                 .map(|(a, b)| {
                     let mut piece = pts[a..b].to_vec();
                     piece.push(ends[b - 1]);
+                    // A point between the nodes joins the piece whose span holds it,
+                    // unless it stands at one of its nodes.
+                    let (lo, hi) = (piece[0].x, piece[piece.len() - 1].x);
+                    let through: Vec<DVec2> = (layout.source_through.iter())
+                        .map(|p| layout.source_origin + *p)
+                        .filter(|p| p.x > lo && p.x < hi)
+                        .filter(|p| piece.iter().all(|q| (q.x - p.x).abs() >= THROUGH_APART_MM))
+                        .collect();
+                    piece.extend(through);
+                    piece.sort_by(|p, q| p.x.total_cmp(&q.x));
                     piece
                 })
                 .collect();
