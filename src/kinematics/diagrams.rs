@@ -195,7 +195,7 @@ fn read_displacement(
     (k, dir): (usize, DVec2),
     scale_l: Scale,
     ctx: &Context,
-) -> Readings {
+) -> Displacements {
     let mut reader = Recorder::in_context("S", scale_l, ctx);
     let ends = stroke_ends(plan);
     let (p1, read_dir) = match ends {
@@ -225,7 +225,7 @@ fn read_displacement(
             (travel, s, p.label.clone())
         })
         .collect();
-    Readings {
+    Displacements {
         s,
         between,
         figure: reader.finish(),
@@ -233,7 +233,7 @@ fn read_displacement(
 }
 
 /// What [`read_displacement`] reads off the plan of positions.
-struct Readings {
+struct Displacements {
     /// S at the numbered positions, m.
     s: Vec<f64>,
     /// (travel from position 1, rad; S, m; label) at the other positions the plan draws.
@@ -266,7 +266,7 @@ pub fn diagrams(
         what: format!("{what} of {name}"),
         error,
     };
-    let Readings {
+    let Displacements {
         s,
         between,
         figure: reader,
