@@ -174,7 +174,9 @@ pub fn check(s: &Scene) -> Result<(), RenderError> {
     } else {
         Err(RenderError::Unbalanced {
             scene: s.path.clone(),
-            why: failures.join("; "),
+            why: (failures.iter().map(ToString::to_string))
+                .collect::<Vec<_>>()
+                .join("; "),
         })
     }
 }

@@ -13,6 +13,47 @@ struct Polygons;
 /// hold to ~1e-15): beyond it a route made a decision the scene does not support.
 pub const EQUILIBRIUM_TOLERANCE: f64 = 1e-9;
 
+/// A route of the force analysis that fails its own equilibrium check at a position.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unbalanced {
+    /// The position's label.
+    pub position: String,
+    /// The analysis with friction.
+    pub friction: bool,
+    /// The route.
+    pub route: ForceRoute,
+    /// The bodies' equations' residual.
+    pub equilibrium: f64,
+    /// The power balance's residual.
+    pub power: f64,
+}
+
+/// A route of the force analysis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ForceRoute {
+    /// The force polygons, group by group.
+    Polygons,
+    /// The linear solve of every body's equations at once (its twin).
+    LinearSolve,
+}
+
+impl std::fmt::Display for Unbalanced {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let route = match self.route {
+            ForceRoute::Polygons => "the force polygons",
+            ForceRoute::LinearSolve => "the linear solve",
+        };
+        write!(
+            f,
+            "position {}{}: {route} fail the equilibrium check: bodies' equations {:.2e}, power balance {:.2e} (allowed {EQUILIBRIUM_TOLERANCE:.0e})",
+            self.position,
+            if self.friction { " with friction" } else { "" },
+            self.equilibrium,
+            self.power
+        )
+    }
+}
+
 impl Cache for Polygons {
     type Key = (Scale, Scale, Scale, Scale, usize);
     type Value = Cached<PositionForces>;
@@ -157,9 +198,9 @@ impl<'s> Session<'s> {
     }
 
     /// Where the force analysis fails its own check at drafting 0: at each force position,
-    /// a route whose equilibrium or power residual exceeds [`EQUILIBRIUM_TOLERANCE`], in
-    /// words with its numbers (none for a scene without `[forces]`).
-    pub fn unbalanced(&self) -> Result<Vec<String>, StudyError> {
+    /// a route whose equilibrium or power residual exceeds [`EQUILIBRIUM_TOLERANCE`], with its
+    /// numbers (none for a scene without `[forces]`).
+    pub fn unbalanced(&self) -> Result<Vec<Unbalanced>, StudyError> {
         if self.scene.forces.is_none() || self.scene.mechanism.is_none() {
             return Ok(Vec::new());
         }
@@ -169,17 +210,17 @@ impl<'s> Session<'s> {
             let f = self.forces(&sc, i)?;
             for r in &f.residuals {
                 for (route, v) in [
-                    ("the force polygons", r.polygons),
-                    ("the linear solve", r.twin),
+                    (ForceRoute::Polygons, r.polygons),
+                    (ForceRoute::LinearSolve, r.twin),
                 ] {
                     if v.equilibrium > EQUILIBRIUM_TOLERANCE || v.power > EQUILIBRIUM_TOLERANCE {
-                        out.push(format!(
-                            "position {}{}: {route} fail the equilibrium check: bodies' equations {:.2e}, power balance {:.2e} (allowed {EQUILIBRIUM_TOLERANCE:.0e})",
-                            f.label,
-                            if r.friction { " with friction" } else { "" },
-                            v.equilibrium,
-                            v.power
-                        ));
+                        out.push(Unbalanced {
+                            position: f.label.clone(),
+                            friction: r.friction,
+                            route,
+                            equilibrium: v.equilibrium,
+                            power: v.power,
+                        });
                     }
                 }
             }
@@ -264,5 +305,29 @@ mod tests {
         super::super::with_scene("shaper", |s| {
             assert_eq!(s.force_scale_l().expect("μ_l").value(), 0.0025);
         });
+    }
+
+    /// Every shipped force scene passes its own check (no route unbalanced), and a route
+    /// that fails it is told with its position, the route and its residuals against the
+    /// tolerance, as `tmm check` prints it.
+    #[test]
+    fn an_unbalanced_route_is_told_with_its_numbers() {
+        for scene in ["shaper", "v-engine"] {
+            super::super::with_scene(scene, |s| {
+                assert_eq!(s.unbalanced().expect("check"), Vec::new(), "{scene}");
+            });
+        }
+        let u = Unbalanced {
+            position: "3".into(),
+            friction: true,
+            route: ForceRoute::LinearSolve,
+            equilibrium: 2.5e-6,
+            power: 1e-12,
+        };
+        assert_eq!(
+            u.to_string(),
+            "position 3 with friction: the linear solve fail the equilibrium check: bodies' \
+             equations 2.50e-6, power balance 1.00e-12 (allowed 1e-9)"
+        );
     }
 }

@@ -27,7 +27,7 @@ mod memo;
 mod scales;
 
 pub use error::StudyError;
-pub use forces::EQUILIBRIUM_TOLERANCE;
+pub use forces::{ForceRoute, Unbalanced, EQUILIBRIUM_TOLERANCE};
 pub use kinematics::{ChartScales, KinScales, Kinematics};
 pub use scales::KinSheets;
 
