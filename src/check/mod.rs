@@ -200,40 +200,24 @@ impl Method {
 
     /// The method's short name in `lang`, as the error tables of the sheets print it.
     pub fn name(self, lang: Lang) -> &'static str {
+        use crate::words::MethodName as N;
         match self {
-            Method::Plan => lang.pick("план", "план", "vector plan"),
-            Method::DiagramChords => lang.pick("диаграмма", "діаграма", "diagram"),
-            Method::DiagramTangents => {
-                lang.pick("диаграмма (кас.)", "діаграма (дот.)", "diagram (tangents)")
-            }
-            Method::Integration => lang.pick("интегрирование", "інтегрування", "integration"),
-            Method::Polygon => lang.pick("план сил", "план сил", "force polygon"),
-            Method::Lever => lang.pick(
-                "рычаг Жуковского",
-                "важіль Жуковського",
-                "Zhukovsky's lever",
-            ),
-            Method::Inversion => lang.pick("обращение движения", "обернення руху", "inversion"),
-            Method::Envelope => lang.pick("огибающая", "обвідна", "envelope"),
-            Method::Triangles => lang.pick(
-                "треугольники скоростей",
-                "трикутники швидкостей",
-                "velocity triangles",
-            ),
-            Method::Wittenbauer => lang.pick("Виттенбауэр", "Віттенбауер", "Wittenbauer"),
-            Method::Merkin => lang.pick("Меркин", "Меркін", "Merkin"),
-            Method::Formula => lang.pick("формула", "формула", "formula"),
-            Method::Meshing => lang.pick(
-                "картина зацепления",
-                "картина зачеплення",
-                "meshing diagram",
-            ),
-            Method::CombinedDiagram => lang.pick(
-                "совмещённая диаграмма",
-                "суміщена діаграма",
-                "combined diagram",
-            ),
+            Method::Plan => N::Plan,
+            Method::DiagramChords => N::DiagramChords,
+            Method::DiagramTangents => N::DiagramTangents,
+            Method::Integration => N::Integration,
+            Method::Polygon => N::Polygon,
+            Method::Lever => N::Lever,
+            Method::Inversion => N::Inversion,
+            Method::Envelope => N::Envelope,
+            Method::Triangles => N::Triangles,
+            Method::Wittenbauer => N::Wittenbauer,
+            Method::Merkin => N::Merkin,
+            Method::Formula => N::Formula,
+            Method::Meshing => N::Meshing,
+            Method::CombinedDiagram => N::CombinedDiagram,
         }
+        .get(lang)
     }
 }
 

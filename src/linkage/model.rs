@@ -126,11 +126,7 @@ impl DyadKind {
     /// (вращательная, поступательная) in Russian, `ООП` (обертальна, поступальна) in
     /// Ukrainian.
     pub fn letters_in(self, lang: crate::scale::Lang) -> String {
-        match lang {
-            crate::scale::Lang::En => self.letters().to_string(),
-            crate::scale::Lang::Ru => self.letters_ru().to_string(),
-            crate::scale::Lang::Uk => self.letters_ru().replace('В', "О"),
-        }
+        crate::words::pair_letters(self.letters(), self.letters_ru(), lang)
     }
 }
 

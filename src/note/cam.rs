@@ -7,7 +7,7 @@ use super::{NoteError, Writer};
 use crate::cam::{Closure, Follower, Given, Law, SpecialProfile};
 use crate::check::{Method, Symbol};
 use crate::scene::PlateKind;
-use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
+use crate::words::{unit_in, CamText, CaseMeaning as M, NoteText as T};
 
 /// The cam: the law, the diagrams, r_min, the profile and the transmission (pressure)
 /// angle, Table 7.
@@ -185,8 +185,8 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let s = &cam.spec;
     let stroke = sym(s.stroke_symbol());
     let phases = [
-        (s.rise, s.phases.rise, lang.pick("у", "в", "rise")),
-        (s.ret, s.phases.ret, lang.pick("п", "н", "ret")),
+        (s.rise, s.phases.rise, CamText::RiseIndex.get(lang)),
+        (s.ret, s.phases.ret, CamText::ReturnIndex.get(lang)),
     ];
     let mut lines = Vec::new();
     for (k, (law, phase, index)) in phases.into_iter().enumerate() {

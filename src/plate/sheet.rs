@@ -183,29 +183,23 @@ pub(crate) struct Captions {
 
 /// The title block's captions in `lang`.
 pub(crate) fn captions(lang: Lang) -> Captions {
-    let p = |ru, uk, en| lang.pick(ru, uk, en);
+    use crate::words::TitleBlockText as T;
+    let p = |t: T| t.get(lang);
     Captions {
-        changes: [
-            p("Изм.", "Зм.", "Rev."),
-            p("Лист", "Арк.", "Sheet"),
-            p("№ докум.", "№ докум.", "Doc. No."),
-            p("Подп.", "Підпис", "Sign."),
-            p("Дата", "Дата", "Date"),
-        ],
+        changes: [p(T::Rev), p(T::Sheet), p(T::DocNo), p(T::Sign), p(T::Date)],
         people: [
-            p("Разраб.", "Розроб.", "Drawn"),
-            p("Пров.", "Перев.", "Checked"),
-            p("Т.контр.", "Т.контр.", "Tech. check"),
+            p(T::Drawn),
+            p(T::Checked),
+            p(T::TechCheck),
             "",
-            p("Н.контр.", "Н.контр.", "Std. check"),
-            p("Утв.", "Затв.", "Approved"),
+            p(T::StdCheck),
+            p(T::Approved),
         ],
-        letter: p("Лит.", "Літ.", "Letter"),
-        mass: p("Масса", "Маса", "Mass"),
-        scale: p("Масштаб", "Масштаб", "Scale"),
-        sheet: p("Лист", "Арк.", "Sheet"),
-        // An English drawing numbers its sheets "Sheet 1 of 2".
-        sheets: p("Листов", "Аркушів", "of"),
+        letter: p(T::Letter),
+        mass: p(T::Mass),
+        scale: p(T::Scale),
+        sheet: p(T::Sheet),
+        sheets: p(T::Sheets),
     }
 }
 

@@ -232,7 +232,7 @@ pub(super) fn law_name(law: Law, lang: Lang) -> String {
         Law::ConstantAcceleration { ratio } => {
             return format!(
                 "{} ({} {})",
-                lang.pick("«+ −»", "«+ −»", "constant acceleration “+ −”"),
+                CamText::PlusMinus.get(lang),
                 CamText::Ratio.get(lang),
                 format_sig(ratio, 3, lang)
             )

@@ -8,7 +8,7 @@ use crate::check::is_zero;
 use crate::construct::fit::{fit_scale, overflow};
 use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
-use crate::linkage::{DyadKind, FourBar, OutputCoord, PositionPlan, Relation, Structure};
+use crate::linkage::{FourBar, OutputCoord, PositionPlan, Relation, Structure};
 use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, Key, Lang, Quantity, Scale};
 use crate::study::Session;
@@ -118,18 +118,6 @@ fn scheme_block(
     Ok(Block::view(scheme(s_scale), caption, None))
 }
 
-fn kind_name(k: DyadKind, lang: Lang) -> String {
-    match lang {
-        Lang::En => format!("kind {} ({})", k.number(), k.letters()),
-        _ => format!(
-            "{} {} ({})",
-            Text::OfKind.get(lang),
-            k.number(),
-            k.letters_in(lang)
-        ),
-    }
-}
-
 /// The structural analysis as text lines (label markup).
 fn structure_lines(st: &Structure, m: &crate::linkage::Mechanism, lang: Lang) -> Vec<String> {
     let mut v = vec![Text::StructuralAnalysis.get(lang).to_string()];
@@ -165,33 +153,14 @@ fn structure_lines(st: &Structure, m: &crate::linkage::Mechanism, lang: Lang) ->
         st.formula()
     ));
     for g in &st.groups {
-        let text = match lang {
-            Lang::En => format!(
-                "II({},{}): Assur group of class 2, order 2, {}",
-                g.links[0],
-                g.links[1],
-                kind_name(g.kind, lang)
-            ),
-            Lang::Ru => format!(
-                "II({},{}): группа Ассура 2 класса 2 порядка {}",
-                g.links[0],
-                g.links[1],
-                kind_name(g.kind, lang)
-            ),
-            Lang::Uk => format!(
-                "II({},{}): група Ассура 2 класу 2 порядку {}",
-                g.links[0],
-                g.links[1],
-                kind_name(g.kind, lang)
-            ),
-        };
-        v.push(text);
+        let letters = g.kind.letters_in(lang);
+        v.push(crate::words::assur_group(
+            g.links,
+            (g.kind.number(), &letters),
+            lang,
+        ));
     }
-    v.push(match lang {
-        Lang::En => format!("The mechanism is of class {}", st.class),
-        Lang::Ru => format!("Механизм {} класса", st.class),
-        Lang::Uk => format!("Механізм {} класу", st.class),
-    });
+    v.push(crate::words::mechanism_class(st.class, lang));
     v
 }
 

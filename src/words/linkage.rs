@@ -133,6 +133,47 @@ pub(crate) fn redundant_reason(reason: &str, lang: crate::scale::Lang) -> &str {
         .map_or(reason, |(_, r)| r.get(lang))
 }
 
+/// A group's pair letters as the sheets of `lang` write them, from its Latin (`RRP`) and
+/// Russian (`ВВП`: вращательная, поступательная) letters: `RRP` in English, `ВВП` in
+/// Russian, `ООП` (обертальна, поступальна) in Ukrainian.
+pub(crate) fn pair_letters(latin: &str, russian: &str, lang: crate::scale::Lang) -> String {
+    lang.pick(russian, russian, latin)
+        .replace('В', lang.pick("В", "О", "В"))
+}
+
+/// A class-2 Assur group of `links`, of the kind numbered `number` with its pair letters in
+/// `lang` (`letters`), in the words of the structural analysis:
+/// «II(2,3): группа Ассура 2 класса 2 порядка вида 3 (ВПВ)».
+pub(crate) fn assur_group(
+    links: [u32; 2],
+    (number, letters): (u32, &str),
+    lang: crate::scale::Lang,
+) -> String {
+    let [i, j] = links;
+    match lang {
+        crate::scale::Lang::En => {
+            format!("II({i},{j}): Assur group of class 2, order 2, kind {number} ({letters})")
+        }
+        crate::scale::Lang::Ru => format!(
+            "II({i},{j}): группа Ассура 2 класса 2 порядка {} {number} ({letters})",
+            Text::OfKind.get(lang)
+        ),
+        crate::scale::Lang::Uk => format!(
+            "II({i},{j}): група Ассура 2 класу 2 порядку {} {number} ({letters})",
+            Text::OfKind.get(lang)
+        ),
+    }
+}
+
+/// The mechanism's class in the words of the structural analysis: «Механизм 2 класса».
+pub(crate) fn mechanism_class(class: u32, lang: crate::scale::Lang) -> String {
+    match lang {
+        crate::scale::Lang::En => format!("The mechanism is of class {class}"),
+        crate::scale::Lang::Ru => format!("Механизм {class} класса"),
+        crate::scale::Lang::Uk => format!("Механізм {class} класу"),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::redundant_reason;
@@ -149,5 +190,27 @@ mod tests {
             "a second bearing of the shaft, relieving it of bending"
         );
         assert_eq!(redundant_reason("своя причина", Lang::En), "своя причина");
+    }
+
+    /// The structural analysis's group and class lines in the three languages, the pair
+    /// letters as each writes them (seed 000's II(2,3) of kind 3, ВПВ).
+    #[test]
+    fn a_group_and_the_class_read_in_each_language() {
+        use super::{assur_group, mechanism_class, pair_letters};
+        let line = |lang| assur_group([2, 3], (3, &pair_letters("RPR", "ВПВ", lang)), lang);
+        assert_eq!(
+            line(Lang::Ru),
+            "II(2,3): группа Ассура 2 класса 2 порядка вида 3 (ВПВ)"
+        );
+        assert_eq!(
+            line(Lang::Uk),
+            "II(2,3): група Ассура 2 класу 2 порядку виду 3 (ОПО)"
+        );
+        assert_eq!(
+            line(Lang::En),
+            "II(2,3): Assur group of class 2, order 2, kind 3 (RPR)"
+        );
+        assert_eq!(mechanism_class(2, Lang::Uk), "Механізм 2 класу");
+        assert_eq!(mechanism_class(2, Lang::En), "The mechanism is of class 2");
     }
 }

@@ -8,12 +8,14 @@
 
 mod audit;
 mod blocking_points;
+mod dxf;
 mod linkage;
 mod machines;
 mod meaning_cases;
 mod meaning_kinematics;
 mod meaning_machines;
 mod meanings;
+mod method_names;
 mod note;
 mod note_cases;
 mod note_genres;
@@ -24,16 +26,19 @@ mod protocol;
 mod studio;
 mod symbol;
 pub(crate) mod symbols;
+mod title_block;
 
 pub(crate) use audit::AuditText;
 pub(crate) use blocking_points::{point_label, POINT_TAGS};
-pub(crate) use linkage::{redundant_reason, Text};
+pub(crate) use dxf::DxfText;
+pub(crate) use linkage::{assur_group, mechanism_class, pair_letters, redundant_reason, Text};
 pub(crate) use machines::DynamicsText;
 pub(crate) use machines::{CamText, FrictionText, GearText, RotorText};
 pub(crate) use meaning_cases::CaseMeaning;
 pub(crate) use meaning_kinematics::KinematicsMeaning;
 pub(crate) use meaning_machines::MachinesMeaning;
 pub(crate) use meanings::Meaning;
+pub(crate) use method_names::MethodName;
 pub(crate) use note::NoteText;
 pub(crate) use note_cases::CaseText;
 pub(crate) use note_genres::GenreText;
@@ -44,6 +49,7 @@ pub(crate) use protocol::StepText;
 pub(crate) use studio::{StudioText, STUDIO_KEYS};
 pub use symbol::Symbol;
 pub(crate) use symbols::{plain, quantity, subscripted};
+pub(crate) use title_block::TitleBlockText;
 
 /// A word of the catalogue: its text in a language.
 pub(crate) trait Word: Copy {

@@ -35,17 +35,18 @@ impl DxfLayer {
     /// Its name in the sheet's language (the names a student reads in the CAD program's
     /// layer list, as the title block's captions are in that language).
     pub fn name(self, lang: Lang) -> &'static str {
-        let [ru, uk, en] = match self {
-            DxfLayer::Role(Role::Given) => ["Заданное", "Задане", "Given"],
-            DxfLayer::Role(Role::Construction) => ["Построения", "Побудови", "Construction"],
-            DxfLayer::Role(Role::Result) => ["Результаты", "Результати", "Results"],
-            DxfLayer::Role(Role::Axis) => ["Оси", "Осі", "Axes"],
-            DxfLayer::Role(Role::Dimension) => ["Размеры", "Розміри", "Dimensions"],
-            DxfLayer::Role(Role::Hatch) => ["Штриховка", "Штрихування", "Hatching"],
-            DxfLayer::Text => ["Надписи", "Написи", "Text"],
-            DxfLayer::Frame => ["Рамка", "Рамка", "Frame"],
-        };
-        lang.pick(ru, uk, en)
+        use crate::words::DxfText as W;
+        match self {
+            DxfLayer::Role(Role::Given) => W::LayerGiven,
+            DxfLayer::Role(Role::Construction) => W::LayerConstruction,
+            DxfLayer::Role(Role::Result) => W::LayerResults,
+            DxfLayer::Role(Role::Axis) => W::LayerAxes,
+            DxfLayer::Role(Role::Dimension) => W::LayerDimensions,
+            DxfLayer::Role(Role::Hatch) => W::LayerHatching,
+            DxfLayer::Text => W::LayerText,
+            DxfLayer::Frame => W::LayerFrame,
+        }
+        .get(lang)
     }
 
     /// The pen most of its lines are drawn with: the layer's line type and weight, which its
@@ -130,34 +131,15 @@ impl LineKind {
 
     /// Its description in the sheet's language: the ГОСТ 2.303 name (ru, uk, en).
     fn description(self, lang: Lang) -> &'static str {
-        let [ru, uk, en] = match self {
-            LineKind::Main => [
-                "Сплошная толстая основная, ГОСТ 2.303",
-                "Суцільна товста основна, ГОСТ 2.303",
-                "Solid thick main line, GOST 2.303",
-            ],
-            LineKind::Thin => [
-                "Сплошная тонкая, ГОСТ 2.303",
-                "Суцільна тонка, ГОСТ 2.303",
-                "Solid thin line, GOST 2.303",
-            ],
-            LineKind::Dashed => [
-                "Штриховая, ГОСТ 2.303",
-                "Штрихова, ГОСТ 2.303",
-                "Dashed line, GOST 2.303",
-            ],
-            LineKind::DashDot => [
-                "Штрихпунктирная тонкая, ГОСТ 2.303",
-                "Штрихпунктирна тонка, ГОСТ 2.303",
-                "Thin dash-dot line, GOST 2.303",
-            ],
-            LineKind::Wavy => [
-                "Сплошная волнистая (как сплошная), ГОСТ 2.303",
-                "Суцільна хвиляста (як суцільна), ГОСТ 2.303",
-                "Solid wavy line (as continuous), GOST 2.303",
-            ],
-        };
-        lang.pick(ru, uk, en)
+        use crate::words::DxfText as W;
+        match self {
+            LineKind::Main => W::LineMain,
+            LineKind::Thin => W::LineThin,
+            LineKind::Dashed => W::LineDashed,
+            LineKind::DashDot => W::LineDashDot,
+            LineKind::Wavy => W::LineWavy,
+        }
+        .get(lang)
     }
 
     /// The LTYPE table's entry: the pen's dash pattern (dash, gap, …) as dashes and spaces.
