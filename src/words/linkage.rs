@@ -137,8 +137,11 @@ pub(crate) fn redundant_reason(reason: &str, lang: crate::scale::Lang) -> &str {
 /// Russian (`ВВП`: вращательная, поступательная) letters: `RRP` in English, `ВВП` in
 /// Russian, `ООП` (обертальна, поступальна) in Ukrainian.
 pub(crate) fn pair_letters(latin: &str, russian: &str, lang: crate::scale::Lang) -> String {
-    lang.pick(russian, russian, latin)
-        .replace('В', lang.pick("В", "О", "В"))
+    match lang {
+        crate::scale::Lang::En => latin.to_string(),
+        crate::scale::Lang::Ru => russian.to_string(),
+        crate::scale::Lang::Uk => russian.replace('В', "О"),
+    }
 }
 
 /// A class-2 Assur group of `links`, of the kind numbered `number` with its pair letters in
