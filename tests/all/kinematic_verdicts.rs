@@ -184,8 +184,9 @@ fn a_slider_that_reaches_its_end_twice_a_turn_says_where() {
 /// The S chart is drawn through the extreme positions the plan draws between the numbered
 /// ones, as the draughtsman plots them (issue 45): the six-bar's S reaches its stroke
 /// H = 205,7 mm at 6′, between positions 6 and 7, where the curve through the numbered
-/// positions alone stopped some 10 mm lower, and touches 0 at 10′; both are numbered on the
-/// φ axis. The shaper's 8′, 2,7 mm past position 8, is plotted but not numbered there.
+/// positions alone stopped 1,7 mm lower on the sheet (7 mm of S), and touches 0 at 10′; both
+/// are numbered on the φ axis. The shaper's 8′, 2,7 mm past position 8, is plotted but not
+/// numbered there.
 #[test]
 fn the_s_chart_is_drawn_through_the_extreme_positions() {
     use tmm::construct::{Item, Role};
