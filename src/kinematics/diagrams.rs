@@ -211,18 +211,18 @@ fn read_displacement(
         reader.measure(p1, p.built.p[k]).value * d.dot(read_dir).signum()
     };
     let s = numbered.iter().map(|&(i, p)| read(i, p)).collect();
-    let (phi1, sense) = (numbered[0].1.phi, plan.mechanism.crank.sense.sign());
+    let (phi1, sense) = (numbered[0].1.phi, plan.mechanism.crank.sense);
     let between = (plan.positions.iter().enumerate())
         .filter(|(_, p)| p.label.parse::<u32>().is_err())
-        .map(|(i, p)| {
-            let travel = (sense * (p.phi - phi1)).rem_euclid(TAU);
+        .map(|(i, p)| Extreme {
+            travel: sense.travel(phi1, p.phi),
             // The stroke's start is S's origin: nothing to read there.
-            let s = if ends.map(|e| e.0) == Some(i) {
+            s: if ends.map(|e| e.0) == Some(i) {
                 0.0
             } else {
                 read(i, p)
-            };
-            (travel, s, p.label.clone())
+            },
+            label: p.label.clone(),
         })
         .collect();
     Displacements {
@@ -232,12 +232,22 @@ fn read_displacement(
     }
 }
 
+/// An extreme position between the numbered ones, as the S chart plots it.
+struct Extreme {
+    /// The crank's travel from position 1, rad.
+    travel: f64,
+    /// S there, m.
+    s: f64,
+    /// Its label (`6′`).
+    label: String,
+}
+
 /// What [`read_displacement`] reads off the plan of positions.
 struct Displacements {
     /// S at the numbered positions, m.
     s: Vec<f64>,
-    /// (travel from position 1, rad; S, m; label) at the other positions the plan draws.
-    between: Vec<(f64, f64, String)>,
+    /// The other positions the plan draws: its extremes between the numbered ones.
+    between: Vec<Extreme>,
     /// The segments read.
     figure: Figure,
 }
@@ -274,7 +284,7 @@ pub fn diagrams(
     let src = displacement(&numbered, s.clone()).map_err(|e| fail("S", e))?;
     let all_s: Vec<f64> = s
         .iter()
-        .chain(between.iter().map(|b| &b.1))
+        .chain(between.iter().map(|b| &b.s))
         .copied()
         .collect();
     let scales = chart_scales(spec, &all_s, size)?;
@@ -300,7 +310,7 @@ pub fn diagrams(
     let mut rec1 = Recorder::in_context("dS/dφ", mu1, ctx);
     // The extremes between the numbered positions are plotted too: the curve's crests.
     let through = (between.iter())
-        .map(|&(x, y, _)| DVec2::new(scales.x.to_mm(x), scales.y.to_mm(y)))
+        .map(|b| DVec2::new(scales.x.to_mm(b.travel), scales.y.to_mm(b.s)))
         .collect();
     let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
         .source_through(through)
@@ -319,8 +329,8 @@ pub fn diagrams(
         .map(|(idx, (_, p))| (src.x(idx), &p.label))
         .chain(
             (between.iter())
-                .filter(|b| clear(b.0))
-                .map(|(x, _, label)| (*x, label)),
+                .filter(|b| clear(b.travel))
+                .map(|b| (b.travel, &b.label)),
         );
     for (x, label) in marks {
         let at = DVec2::new(scales.x.to_mm(x), 0.0);

@@ -30,6 +30,17 @@ impl Sense {
             Sense::Clockwise => -1.0,
         }
     }
+
+    /// The angle the crank turns through in this sense from `from` to `to`, radians in
+    /// [0, 2π) (rem_euclid may round a travel a hair below 0 up to 2π itself: that is 0).
+    pub fn travel(self, from: f64, to: f64) -> f64 {
+        let travel = (self.sign() * (to - from)).rem_euclid(std::f64::consts::TAU);
+        if travel >= std::f64::consts::TAU {
+            0.0
+        } else {
+            travel
+        }
+    }
 }
 
 /// The driving link: a crank turning about a fixed pivot with constant angular speed.

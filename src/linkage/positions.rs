@@ -90,9 +90,7 @@ fn sequence(
         .collect();
     if let (true, Some(ex)) = (req.other_extreme, ex) {
         for phi in [ex.phi_start, ex.phi_other] {
-            // rem_euclid may round a travel a hair below 0 up to TAU itself: that is 0.
-            let travel = (sense.sign() * (phi - start)).rem_euclid(TAU);
-            let travel = if travel >= TAU { 0.0 } else { travel };
+            let travel = sense.travel(start, phi);
             let k = ((travel / step).floor() as usize).min(req.count as usize - 1);
             let off = travel - step * k as f64;
             // An extreme that falls on a numbered position is that position.
