@@ -85,3 +85,30 @@ fn is_zero_is_scale_aware() {
     assert!(!is_zero(f64::NAN, 1.0));
     assert!(is_zero(0.0, 0.0));
 }
+
+/// The six-bar's ω₂ is −2,0944 rad/s at positions 3 and 10′ and is read −2,106 at both: the
+/// two errors differ by the rounding of the analytic twin (1 ulp either way), and the first
+/// position is the worst one whichever way the rounding falls.
+#[test]
+fn equal_errors_at_two_positions_go_to_the_first() {
+    use Symbol::AngularVelocity as W;
+    let analytic: f64 = -2.094_395_102_393_195_7;
+    for later in [analytic, f64::from_bits(analytic.to_bits() - 1)] {
+        let rows = rows(&[
+            (W, "2", "1", Method::Plan, -2.522, -2.515, 10.7),
+            (W, "2", "3", Method::Plan, -2.106, analytic, 10.7),
+            (W, "2", "10′", Method::Plan, -2.106, later, 10.7),
+        ]);
+        let s = Summary::of(&rows);
+        assert_eq!(s.entries[0].worst_position.as_deref(), Some("3"), "{later}");
+    }
+    // A larger error still wins.
+    let rows = rows(&[
+        (W, "2", "3", Method::Plan, -2.106, analytic, 10.7),
+        (W, "2", "10′", Method::Plan, -2.107, analytic, 10.7),
+    ]);
+    assert_eq!(
+        Summary::of(&rows).entries[0].worst_position.as_deref(),
+        Some("10′")
+    );
+}
