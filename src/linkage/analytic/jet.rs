@@ -72,12 +72,13 @@ pub(in crate::linkage) struct Rows {
 }
 
 impl Rows {
-    /// `None` when singular (a toggle position): |det| ≤ 1e-14·|r0|·|r1|.
+    /// `None` when singular (a toggle position): |det| ≤ 1e-14·|r0|·|r1|, compared in
+    /// squares (det² ≤ 1e-28·|r0|²·|r1|²) so that no square root stands in the kernel's chain.
     #[inline]
     pub(in crate::linkage) fn new(r0: DVec2, r1: DVec2) -> Option<Self> {
         let det = cross(r0, r1);
-        let scale = r0.length() * r1.length();
-        if scale == 0.0 || det.abs() <= 1e-14 * scale {
+        let scale2 = r0.length_squared() * r1.length_squared();
+        if scale2 == 0.0 || det * det <= 1e-28 * scale2 {
             return None;
         }
         Some(Self { r0, r1, det })
@@ -102,6 +103,21 @@ pub(in crate::linkage) fn heading(v: Jet) -> AngleJet {
         d,
         dd,
         e: v.p / q.sqrt(),
+    }
+}
+
+/// Angle of a vector jet whose length is known to be `len` (a link between two of its
+/// pairs): [`heading`] without its square root and division.
+#[inline]
+pub(in crate::linkage) fn heading_at(v: Jet, len: f64) -> AngleJet {
+    let inv_len = 1.0 / len;
+    let inv = inv_len * inv_len;
+    let d = cross(v.p, v.d) * inv;
+    let dd = (cross(v.p, v.dd) - 2.0 * d * v.p.dot(v.d)) * inv;
+    AngleJet {
+        d,
+        dd,
+        e: v.p * inv_len,
     }
 }
 

@@ -252,7 +252,7 @@ impl Program {
 
     /// Size `pose`'s buffers for this program (once: a pose reused for the same program keeps
     /// them) and set the frame's points; whether continuity can be kept (the pose held a
-    /// position of this program).
+    /// position of this program, and with it the frame's points, which no solve changes).
     #[inline]
     fn prepare(&self, continuity: bool, pose: &mut Pose) -> bool {
         let n = self.names.len();
@@ -266,6 +266,9 @@ impl Program {
             }
             pose.dir.resize(self.link_count, DVec2::X);
             pose.origin.resize(self.link_count, 0);
+        }
+        if continuity && sized {
+            return true;
         }
         for (k, f) in self.fixed.iter().enumerate() {
             pose.p[k] = *f;

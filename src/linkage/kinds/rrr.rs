@@ -4,7 +4,7 @@
 use super::{GroupKind, Planned, Solved, Words};
 use crate::construct::{ConstructionError, Pick, Recorder};
 use crate::geom::DVec2;
-use crate::linkage::analytic::jet::{self, sub, Jet, Rows, TANGENT_REL};
+use crate::linkage::analytic::jet::{self, cross, sub, Jet, TANGENT_REL};
 use crate::linkage::analytic::State;
 use crate::linkage::construction::{heading, pick, Built, Frames};
 use crate::linkage::groups::GroupPairs;
@@ -100,8 +100,17 @@ impl GroupKind for Rrr {
             joint: self.joint,
         }
     }
-    /// RRR: the joint where the circles of radius `la` about `a` and `lb` about `b` cross
-    /// (law of cosines), its rates from |x − a|² = la², |x − b|² = lb².
+    /// RRR: the joint where the circles of radius `la` about `a` and `lb` about `b` cross,
+    /// its rates from |x − a|² = la², |x − b|² = lb².
+    ///
+    /// Written for the kernel's chain of dependent operations: with ab = b − a and d² = |ab|²,
+    /// the joint is x = a + (s·ab ± t·ab⊥)/d², where s = (x − a)·ab = (la² − lb² + d²)/2 and
+    /// t = |(x − a) × ab| = √(la²·d² − s²) (twice the triangle's area); the rows' determinant
+    /// (x − a) × (x − b) over la·lb is the sine of the circles' crossing angle, and
+    /// |x − a| = la, |x − b| = lb give the links' unit vectors and rates without a square
+    /// root. One square root and the determinant's reciprocal stand in the chain from the
+    /// given points to the joint's rates (the form before took seven square roots and
+    /// eight divisions).
     #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
     fn solve(&self, prog: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let Rrr {
@@ -115,63 +124,69 @@ impl GroupKind for Rrr {
         let (ja, jb) = (st.jet(a), st.jet(b));
         let ab = jb.p - ja.p;
         let d2 = ab.length_squared();
-        let d = d2.sqrt();
-        // A tangency lost to rounding is still a tangency (the change point).
+        // A tangency lost to rounding is still a tangency (the change point). Compared in
+        // squares: the distance's square root is taken only to say why it fails.
         let slack = TANGENT_REL * (la + lb);
-        if d > la + lb + slack || d < (la - lb).abs() - slack || d == 0.0 {
+        let (far, near) = (la + lb + slack, (la - lb).abs() - slack);
+        if d2 > far * far || (near > 0.0 && d2 < near * near) || d2 == 0.0 {
             return Err(st.fail(format!(
                 "|{}{}| = {} m is outside [|{} − {}|, {} + {}] m",
                 prog.names[a],
                 prog.names[b],
-                format_plain(d),
+                format_plain(d2.sqrt()),
                 format_plain(la),
                 format_plain(lb),
                 format_plain(la),
                 format_plain(lb)
             )));
         }
-        // Law of cosines at a, in fractions of ab: the foot of the joint on ab at
-        // la·cos α/d, the joint la·sin α/d across (to the left for the left branch).
-        let inv = 1.0 / d2;
-        let along = (la * la - lb * lb + d2) * 0.5 * inv;
-        let across = (la * la * inv - along * along).max(0.0).sqrt();
-        let foot = ja.p + ab * along;
-        let left = foot + ab.perp() * across;
-        let right = foot - ab.perp() * across;
-        let pick_left = if st.continuity {
-            let q = st.pose.p[joint];
-            left.distance_squared(q) <= right.distance_squared(q)
+        let s = 0.5 * (la * la - lb * lb + d2);
+        // t² within the rounding of its two terms is a tangency: its square root would be
+        // noise of √ε relative (the stretched or folded positions of a four-bar).
+        let t2 = la * la * d2 - s * s;
+        let t = if t2 > 4.0 * f64::EPSILON * la * la * d2 {
+            t2.sqrt()
+        } else {
+            0.0
+        };
+        // Left of a → b when the previous joint is (or, without continuity, the branch says
+        // so): the nearer of the two crossings to it.
+        let left = if st.continuity {
+            cross(ab, st.pose.p[joint] - ja.p) >= 0.0
         } else {
             branch != Branch::Right
         };
-        let x = if pick_left { left } else { right };
+        let t = if left { t } else { -t };
+        let x = ja.p + (ab * s + ab.perp() * t) * (1.0 / d2);
         let (ra, rb) = (x - ja.p, x - jb.p);
-        // |x − a|² = la², |x − b|² = lb², differentiated once and twice.
-        let toggle = || {
-            format!(
-                "links {i} and {j} are in line at {} (toggle position)",
-                prog.names[joint]
-            )
+        // |x − a|² = la², |x − b|² = lb², differentiated once and twice: the rows (ra, rb).
+        // Their determinant is t in exact arithmetic, but near a toggle t carries the
+        // rounding of la²·d² − s² (relatively ε/sin²α): the rates are solved with the
+        // determinant of the rows as rounded, one reciprocal for both right-hand sides.
+        let det = cross(ra, rb);
+        let inv_det = 1.0 / det;
+        let solve = |rhs: DVec2| {
+            DVec2::new(rhs.x * rb.y - rhs.y * ra.y, ra.x * rhs.y - rb.x * rhs.x) * inv_det
         };
-        let acc = Rows::new(ra, rb).map(|rows| {
-            let v = rows.solve(DVec2::new(ra.dot(ja.d), rb.dot(jb.d)));
+        let (v, w) = if det.abs() > 1e-14 * la * lb {
+            let v = solve(DVec2::new(ra.dot(ja.d), rb.dot(jb.d)));
             let rhs = DVec2::new(
                 ra.dot(ja.dd) - (v - ja.d).length_squared(),
                 rb.dot(jb.dd) - (v - jb.d).length_squared(),
             );
-            (v, rows.solve(rhs))
-        });
-        let (v, w) = acc.unwrap_or_else(|| {
-            st.toggle(toggle());
+            (v, solve(rhs))
+        } else {
+            st.toggle(format!(
+                "links {i} and {j} are in line at {} (toggle position)",
+                prog.names[joint]
+            ));
             (DVec2::ZERO, DVec2::ZERO)
-        });
+        };
         let jx = Jet { p: x, d: v, dd: w };
         st.set(joint, jx);
-        st.set_link(i, jet::heading(sub(jx, ja)), a);
-        st.set_link(j, jet::heading(sub(jx, jb)), b);
-        // The circles cross at the angle between the radii: cos g by the law of cosines.
-        let cos_g = ((la * la + lb * lb - d2) / (2.0 * la * lb)).clamp(-1.0, 1.0);
-        st.pose.crossing_sin.push((1.0 - cos_g * cos_g).sqrt());
+        st.set_link(i, jet::heading_at(sub(jx, ja), la), a);
+        st.set_link(j, jet::heading_at(sub(jx, jb), lb), b);
+        st.pose.crossing_sin.push((det.abs() / (la * lb)).min(1.0));
         Ok(())
     }
     /// RRR: the joint's image where the lines ⊥ link i through the image of `a` and ⊥ link j
