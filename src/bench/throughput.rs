@@ -40,7 +40,7 @@ pub(super) fn kernel(
     throughput.push(Throughput {
         name: "libm floor four-bar".into(),
         per_second: libm_floor_rate(reps),
-        note: "its transcendental and root calls alone: sin_cos + 4 sqrt".into(),
+        note: "its transcendental and root calls alone: sin_cos + 1 sqrt".into(),
     });
     for s in [four_bar, shaper] {
         throughput.push(Throughput {
