@@ -87,9 +87,16 @@ impl Rows {
     /// The solution for `rhs`.
     #[inline]
     pub(in crate::linkage) fn solve(&self, rhs: DVec2) -> DVec2 {
-        let Self { r0, r1, det } = *self;
-        DVec2::new(rhs.x * r1.y - rhs.y * r0.y, r0.x * rhs.y - r1.x * rhs.x) / det
+        adjugate(self.r0, self.r1, rhs) / self.det
     }
+}
+
+/// The solution of `[r0; r1] x = rhs` times the rows' determinant (the adjugate's product):
+/// [`Rows::solve`] divides it by the determinant, a caller that solves several right-hand
+/// sides may multiply it by the determinant's reciprocal.
+#[inline]
+pub(in crate::linkage) fn adjugate(r0: DVec2, r1: DVec2, rhs: DVec2) -> DVec2 {
+    DVec2::new(rhs.x * r1.y - rhs.y * r0.y, r0.x * rhs.y - r1.x * rhs.x)
 }
 
 /// Angle of a vector jet with its rates; its unit vector is the vector over its length.

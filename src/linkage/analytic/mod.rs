@@ -275,7 +275,7 @@ impl Program {
             pose.dp[k] = DVec2::ZERO;
             pose.ddp[k] = DVec2::ZERO;
         }
-        continuity && sized
+        false
     }
 
     /// Solve at crank angle `phi` whose unit vector is `e` (`pose` prepared).

@@ -165,9 +165,7 @@ impl GroupKind for Rrr {
         // determinant of the rows as rounded, one reciprocal for both right-hand sides.
         let det = cross(ra, rb);
         let inv_det = 1.0 / det;
-        let solve = |rhs: DVec2| {
-            DVec2::new(rhs.x * rb.y - rhs.y * ra.y, ra.x * rhs.y - rb.x * rhs.x) * inv_det
-        };
+        let solve = |rhs: DVec2| jet::adjugate(ra, rb, rhs) * inv_det;
         let (v, w) = if det.abs() > 1e-14 * la * lb {
             let v = solve(DVec2::new(ra.dot(ja.d), rb.dot(jb.d)));
             let rhs = DVec2::new(
