@@ -2,6 +2,7 @@
 //! quantity and method, and the mean per method.
 
 use super::{rel_errors, Method, Row};
+use crate::scale::residue_to_zero;
 use serde::Serialize;
 
 /// Relative difference within which two errors tie: the same reading of the same value at
@@ -25,6 +26,16 @@ pub struct SummaryEntry {
     /// The position of the largest |rel_error| (the first one on a tie, within [`TIE_REL`]);
     /// `null` for a quantity of the whole scene.
     pub worst_position: Option<String>,
+}
+
+impl SummaryEntry {
+    /// The position to name as the worst: none when the largest error is rounding (written
+    /// 0, [`residue_to_zero`]) — thirteen residues of 1e-16 have no worst among them.
+    pub fn worst_named(&self) -> Option<&str> {
+        (residue_to_zero(self.max_abs_rel, 1.0) != 0.0)
+            .then_some(self.worst_position.as_deref())
+            .flatten()
+    }
 }
 
 /// The section-1.6 summary of a set of rows.

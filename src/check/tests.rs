@@ -112,3 +112,19 @@ fn equal_errors_at_two_positions_go_to_the_first() {
         Some("10′")
     );
 }
+
+/// The crank pin's v_A read exactly at every position: its errors are rounding residues, and
+/// no position is named as the worst (the note and the report write «—» or nothing there).
+#[test]
+fn errors_of_rounding_name_no_worst_position() {
+    use Symbol::Velocity as V;
+    let rows = rows(&[
+        (V, "A", "1", Method::Plan, 0.8, 0.799_999_999_999_999_9, 0.8),
+        (V, "A", "2", Method::Plan, 0.8, 0.8, 0.8),
+        (V, "B", "1", Method::Plan, 0.31, 0.3139, 0.8),
+    ]);
+    let s = Summary::of(&rows);
+    assert_eq!(s.entries[0].worst_position.as_deref(), Some("1"));
+    assert_eq!(s.entries[0].worst_named(), None);
+    assert_eq!(s.entries[1].worst_named(), Some("1"));
+}

@@ -6,7 +6,6 @@ use super::markup::{label, text, Align};
 use super::rows::{fmt, percent};
 use super::Writer;
 use crate::check::{Method, Symbol};
-use crate::scale::residue_to_zero;
 use crate::words::{mm, quantity, unit_in, NoteText as T, Text as S};
 
 /// The conclusions: the error of every graphical method against the analytic twin (the
@@ -44,13 +43,7 @@ pub(super) fn conclusions(w: &mut Writer<'_, '_>) {
                 text(&e.count.to_string()),
                 text(&percent(e.mean_abs_rel, lang)),
                 text(&percent(e.max_abs_rel, lang)),
-                // No position is named for an error written 0 (rounding at every position).
-                text(
-                    e.worst_position
-                        .as_deref()
-                        .filter(|_| residue_to_zero(e.max_abs_rel, 1.0) != 0.0)
-                        .unwrap_or("—"),
-                ),
+                text(e.worst_named().unwrap_or("—")),
             ]
         })
         .collect();

@@ -316,7 +316,7 @@ fn summary_markdown(out: &mut String, s: &Summary, lang: Lang) {
                 e.count.to_string(),
                 md_percent(e.mean_abs_rel, lang),
                 md_percent(e.max_abs_rel, lang),
-                md_cell(e.worst_position.as_deref().unwrap_or("")),
+                md_cell(e.worst_named().unwrap_or("")),
             ],
         );
     }
