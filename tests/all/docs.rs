@@ -3,8 +3,8 @@
 //! `tmm <command> -h` lists; every command line written in `README.md` or `docs/*.md` uses
 //! only flags and values its command has; the README is a page (at most 150 lines) whose
 //! links lead to files that exist; what it says the seed-000 command writes is what it writes
-//! (the sheets, the pages, the scenes, the quoted θ, H and K); a `[kinematics]` section that
-//! no sheet draws is warned of.
+//! (the sheets, the pages, the scenes, the quoted θ, H and K, what each sheet holds); a
+//! `[kinematics]` section that no sheet draws is warned of.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -289,8 +289,8 @@ fn count_before(text: &str, after: &str, unit: &str) -> usize {
 }
 
 /// What the README says the seed-000 command writes, against what it writes: the sheets of
-/// its table, the drawing set's and the note's pages, the scenes shipped, and the second
-/// sheet's θ, H and K as its caption quotes them.
+/// its table and what each holds, the drawing set's and the note's pages, the scenes shipped,
+/// and the second sheet's θ, H and K as its caption quotes them.
 #[test]
 fn the_readme_says_what_the_program_writes() {
     let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
@@ -320,6 +320,7 @@ fn the_readme_says_what_the_program_writes() {
         .filter_map(|f| f.strip_suffix(".svg").map(String::from))
         .collect();
     assert_eq!(named, written, "README's sheets against those written");
+    the_readme_says_what_each_sheet_holds(&readme, &shaper, named.len());
     let set = count_before(&readme, "the drawing set,", "pages");
     assert_eq!(
         set,
@@ -356,6 +357,124 @@ fn the_readme_says_what_the_program_writes() {
         assert!(
             texts.contains(&format!("= {v}")),
             "README quotes «{value}»; sheet 2 reads otherwise"
+        );
+    }
+}
+
+/// The one or two items `text` lists after `after`: after «positions », «positions 3 and
+/// 10 (…» gives «3», «10»; after «sheet », «sheet 5: …» gives «5».
+fn listed_after<'r>(text: &'r str, after: &str) -> Vec<&'r str> {
+    let Some((_, rest)) = text.split_once(after) else {
+        return Vec::new();
+    };
+    let words: Vec<&str> = rest.split_whitespace().take(3).collect();
+    match words.as_slice() {
+        [a, "and", b, ..] => vec![a, b.trim_end_matches([',', ')', ':'])],
+        [a, ..] => vec![a.trim_end_matches([',', ')', ':'])],
+        [] => Vec::new(),
+    }
+}
+
+/// What the README's table and its picture's caption say each seed-000 sheet holds, against
+/// the sheets written to `shaper`: each file's sheet number is its title block's
+/// designation; the force sheets' positions, the flywheel's scale and the rack's shift are
+/// on their sheets; the first sheet has a velocity plan for each position the caption counts
+/// and the acceleration plans at the positions it names.
+fn the_readme_says_what_each_sheet_holds(readme: &str, shaper: &Path, sheets: usize) {
+    let texts = |file: &str| {
+        let svg = std::fs::read_to_string(shaper.join(file)).expect("a sheet written");
+        svg_texts(&svg)
+    };
+    let joined = |file: &str| {
+        texts(file)
+            .join(" ")
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let rows = readme
+        .lines()
+        .filter(|l| l.starts_with("| `out/shaper/") && l.contains(".svg"));
+    let mut checked = 0;
+    for row in rows {
+        let cells: Vec<&str> = row.split('|').map(str::trim).collect();
+        let files: Vec<&str> = cells[1]
+            .split('`')
+            .skip(1)
+            .step_by(2)
+            .filter_map(|w| w.rsplit('/').next())
+            .collect();
+        let what = cells[2];
+        let numbers = if what.starts_with("sheets ") {
+            listed_after(what, "sheets ")
+        } else {
+            listed_after(what, "sheet ")
+        };
+        assert_eq!(numbers.len(), files.len(), "README: «{row}»");
+        for (file, n) in files.iter().zip(&numbers) {
+            let n: u32 = n.parse().expect("a sheet number");
+            let designation = format!("ТММ.КП.000.{n:02}");
+            assert!(
+                joined(file).contains(&designation),
+                "{file}: README says sheet {n}"
+            );
+            checked += 1;
+        }
+        let positions = listed_after(what, "positions ");
+        if !positions.is_empty() {
+            assert_eq!(positions.len(), files.len(), "README: «{row}»");
+            for (file, p) in files.iter().zip(&positions) {
+                assert!(
+                    joined(file).contains(&format!("оложение {p},")),
+                    "{file}: README says position {p}"
+                );
+            }
+        }
+        if let Some((_, scale)) = what.split_once(" at 1:") {
+            let scale = format!("1:{}", scale.split([' ', ',', ')']).next().unwrap_or(""));
+            assert!(
+                joined(files[0]).contains(&scale),
+                "{}: README says {scale}",
+                files[0]
+            );
+        }
+        // The rack's shifts: «x = 0: undercut; x = 0,8».
+        for x in what.split("x = ").skip(1) {
+            let x = x.split([':', ';', ')']).next().unwrap_or("");
+            assert!(
+                joined(files[0]).contains(&format!("x = {x}, ")),
+                "{}: README says x = {x}",
+                files[0]
+            );
+        }
+    }
+    assert_eq!(checked, sheets, "every sheet of the table is numbered");
+    // The caption: «a velocity plan for each of the 13 positions, the acceleration plans at
+    // positions 3 and 10».
+    let flat = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    let first = texts("kinematics.svg");
+    let count = count_before(&flat, "a velocity plan for each of the", "positions");
+    let captions = first
+        .iter()
+        // «Пол. 8′» or the first plan's «Пол. 1, μ_v = …»; «Пол. 3: …» is the rotation note.
+        .filter_map(|t| t.strip_prefix("Пол. ")?.split_whitespace().next())
+        .filter(|label| !label.ends_with(':'))
+        .count();
+    assert_eq!(
+        count, captions,
+        "README counts the first sheet's velocity plans"
+    );
+    let at = listed_after(&flat, "the acceleration plans at positions ");
+    assert_eq!(
+        at.len(),
+        2,
+        "README names the acceleration plans' positions"
+    );
+    let first = first.join(" ");
+    for p in at {
+        assert!(
+            first.contains(&format!("План ускорений, пол. {p},")),
+            "README says an acceleration plan at position {p}"
         );
     }
 }
