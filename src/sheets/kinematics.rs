@@ -133,11 +133,11 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     }
     // Else the textbook's order over two sheets: what the positions give (the scheme, the
     // plan, the velocity plans), then what is derived (acceleration plans, diagrams, tables);
-    // the acceleration plans and the structural analysis go on the first when it holds them
-    // and the two are then filled more evenly. Never a table alone on a sheet: the second
-    // always holds the diagrams or the acceleration plans. Each plan then states its μ, and
-    // the plans' verdicts follow the acceleration plans, on their sheet (the second sheet,
-    // holding no plan, stated them).
+    // the acceleration plans go on the first when it holds them, the structural analysis
+    // when the two are then filled more evenly ([`two_sheets`]). Never a table alone on a
+    // sheet: the second always holds the diagrams or the acceleration plans. Each plan then
+    // states its μ, and the plans' verdicts follow the acceleration plans, on their sheet
+    // (the second sheet, holding no plan, stated them).
     let head: Run = scheme.into_iter().chain(plan).collect();
     let (velocity, mut acceleration) = (plans.velocity(true), plans.acceleration(true));
     if !verdicts.is_empty() {
@@ -343,8 +343,10 @@ fn rest_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
 
 /// The blocks over two sheets, `groups` in the textbook's order (the head, the velocity
 /// plans, the acceleration plans, the structural analysis, the diagrams, the rest): the
-/// first sheet takes the first two groups, or more when it holds them and the two sheets
-/// are then filled more evenly; then each table the first sheet holds moves up.
+/// first sheet takes the first two groups and the acceleration plans when it holds them (a
+/// sheet is filled before the next is begun, and the plans read together); the structural
+/// analysis too when it holds it and the two sheets are then filled more evenly; then each
+/// table the first sheet holds moves up.
 fn two_sheets(
     lay: &dyn Fn(Run) -> Result<Vec<Plate>, BuildError>,
     groups: [Run; 6],
@@ -366,7 +368,9 @@ fn two_sheets(
     for k in 3..=4 {
         let (f, s) = split(k);
         let drawn = s.iter().any(|b| matches!(b.0, Block::Views { .. }));
-        let even = area(&f).min(area(&s)) > area(&first).min(area(&second));
+        // The acceleration plans (k = 3) whenever the first holds them; the analysis only
+        // for a more even pair.
+        let even = k == 3 || area(&f).min(area(&s)) > area(&first).min(area(&second));
         if drawn && even && lay(f.clone())?.len() == 1 {
             (first, second) = (f, s);
         }

@@ -5,10 +5,12 @@
 //! title block and the designation box belong to the frame: a band may run past them. A sheet
 //! over the bound is listed with the reason it stays so (in ru, uk and en, read exactly and to
 //! 0,5 mm). The last of several sheets of one plate is held to the bound as every other: a
-//! thin last sheet is listed with its reason too.
+//! thin last sheet is listed with its reason too. A kinematics sheet is not begun while the
+//! one before it has room for the drawing it begins with (a sheet is filled first).
 
 use std::path::PathBuf;
 use tmm::construct::Drafting;
+use tmm::geom::DVec2;
 use tmm::plate::{layout, Layout, Plate, Rect};
 use tmm::scale::Lang;
 use tmm::scene;
@@ -186,4 +188,100 @@ fn the_band_rule_fails_on_a_sheet_half_emptied() {
     );
     assert_eq!(largest_gap(0.0, 100.0, vec![(-5.0, 105.0)]), 0.0);
     assert_eq!(largest_gap(0.0, 100.0, vec![]), 100.0);
+}
+
+/// Gap the packer keeps between two items and margin from the frame, mm.
+const GAP_MM: f64 = 5.0;
+const MARGIN_MM: f64 = 3.0;
+
+/// The top-left corner of a free place of `size` on a laid-out sheet: inside the frame, a
+/// gap from every item, the title block and the designation box; the corners tried are the
+/// frame's and those just past each item, as the packer's.
+fn free_place(l: &Layout, size: DVec2) -> Option<DVec2> {
+    let taken: Vec<Rect> = items(l)
+        .into_iter()
+        .chain([l.title_block, l.designation_box])
+        .collect();
+    let field = Rect::new(
+        l.frame.min + DVec2::splat(MARGIN_MM),
+        l.frame.max - DVec2::splat(MARGIN_MM),
+    );
+    let xs = std::iter::once(field.min.x).chain(taken.iter().map(|t| t.max.x + GAP_MM));
+    let ys: Vec<f64> = std::iter::once(field.min.y)
+        .chain(taken.iter().map(|t| t.max.y + GAP_MM))
+        .collect();
+    xs.flat_map(|x| ys.iter().map(move |&y| DVec2::new(x, y)))
+        .find(|&c| {
+            let r = Rect::new(c, c + size);
+            field.inflate(1e-9).contains(&r)
+                && taken
+                    .iter()
+                    .all(|t| !r.inflate(GAP_MM - 1e-9).intersects(t))
+        })
+}
+
+/// The sheets of one scene's kinematics plate in one language and drafting that begin with
+/// a drawing the sheet before had room for: (the later sheet, where it would have gone).
+fn begun_too_soon(plates: &[Plate]) -> Vec<(String, DVec2)> {
+    plates
+        .windows(2)
+        .filter_map(|pair| {
+            let (before, next) = (layout(&pair[0]), layout(&pair[1]));
+            let first = next.views.first()?;
+            let size = first.drawn?.union(&first.caption?).size();
+            free_place(&before, size).map(|c| (pair[1].name.clone(), c))
+        })
+        .collect()
+}
+
+/// Every shipped scene's kinematics sheets, in ru, uk and en, exactly and to 0,5 mm: the
+/// second is begun only with a drawing that the first has no room for (the acceleration
+/// plans went to an English shaper's second sheet beside a first with 185 mm free).
+#[test]
+fn no_kinematics_sheet_is_begun_while_the_one_before_has_room() {
+    let mut bad = Vec::new();
+    let mut pairs = 0;
+    for path in crate::support::scene_paths() {
+        let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+        let Some(kind) = tmm::sheets::drawn(&s)
+            .into_iter()
+            .find(|k| k.stem() == "kinematics")
+        else {
+            continue;
+        };
+        for drafting in [Drafting::EXACT, Drafting::HAND] {
+            let session = tmm::study::Session::new(&s, drafting);
+            for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+                let plates = tmm::build(&session, kind, lang).expect("built");
+                pairs += plates.len().saturating_sub(1);
+                for (name, c) in begun_too_soon(&plates) {
+                    bad.push(format!(
+                        "{}/{name} {lang:?} {}: room at {c}",
+                        s.stem,
+                        drafting.resolution_mm()
+                    ));
+                }
+            }
+        }
+    }
+    assert!(pairs >= 6, "{pairs} pairs of sheets");
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
+/// The rule sees a sheet begun too soon: the shaper's second kinematics sheet (beginning
+/// with the diagrams' stack, 405 mm tall) after a first sheet holding its scheme alone.
+#[test]
+fn the_fill_rule_fails_on_a_second_sheet_begun_too_soon() {
+    let s = scene::load(&root().join("constructions/shaper.toml")).expect("shaper");
+    let session = tmm::study::Session::new(&s, Drafting::EXACT);
+    let kind = tmm::scene::PlateKind::parse("kinematics").expect("kind");
+    let mut plates = tmm::build(&session, kind, Lang::En).expect("built");
+    assert_eq!(plates.len(), 2);
+    assert!(begun_too_soon(&plates).is_empty());
+    plates[0].views.truncate(1);
+    plates[0].texts.clear();
+    plates[0].tables.clear();
+    let found = begun_too_soon(&plates);
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert_eq!(found[0].0, "kinematics-2");
 }
