@@ -293,6 +293,9 @@ pub(super) struct Markup {
     out: String,
     /// The numbered sections (level-1 headings) written so far.
     sections: usize,
+    /// The length of `out` when the last section's heading was written: a figure written at
+    /// that length is the section's first element.
+    section_opened: Option<usize>,
 }
 
 impl Markup {
@@ -317,6 +320,7 @@ impl Markup {
                 "#set math.equation(numbering: n => \"({}.\" + str(n) + \")\")\n\n",
                 self.sections
             ));
+            self.section_opened = Some(self.out.len());
         }
     }
 
@@ -416,10 +420,16 @@ impl Markup {
     }
 
     /// A figure: the file `path` (an SVG the note carries) `width_mm` wide at most, under its
-    /// caption («Рисунок N — caption» under it).
+    /// caption («Рисунок N — caption» under it). A section's first element stands under its
+    /// heading, which opens the page: it is not floated to the page's top, above the heading.
     pub(super) fn figure(&mut self, path: &str, width_mm: f64, caption: &str) {
+        let fixed = if self.section_opened == Some(self.out.len()) {
+            ", placement: none"
+        } else {
+            ""
+        };
         self.out.push_str(&format!(
-            "#figure(image({}, width: {:.1}mm), caption: {})\n\n",
+            "#figure(image({}, width: {:.1}mm){fixed}, caption: {})\n\n",
             string(path),
             width_mm,
             label(caption)
@@ -430,49 +440,6 @@ impl Markup {
     pub(super) fn finish(self) -> String {
         self.out
     }
-}
-
-/// The note's Typst source with every subscript and superscript a label or a symbol set
-/// (`#sub("и3")`, `#super("тр")`, `_(#qs[#"и3"])`) in the textbook notation of `lang` (`F_{и3}` is `F_{i3}` in English), as
-/// every sheet's text is ([`crate::words::symbols`]).
-pub(super) fn localise_scripts(source: &str, lang: Lang) -> String {
-    const OPENS: [&str; 6] = [
-        "#sub(\"",
-        "#super(\"",
-        "_(#qs[#\"",
-        "^(#qs[#\"",
-        "_(#qu[#\"",
-        "^(#qu[#\"",
-    ];
-    let mut out = String::with_capacity(source.len());
-    // Where each opening next occurs, searched again only once the text passes it: a note
-    // holds thousands of scripts, and searching the rest for every opening at each one
-    // cost some 50 ms of the shaper's note.
-    let mut next = OPENS.map(|open| source.find(open));
-    let mut at = 0;
-    loop {
-        for (k, open) in OPENS.iter().enumerate() {
-            if next[k].is_some_and(|i| i < at) {
-                next[k] = source[at..].find(open).map(|i| i + at);
-            }
-        }
-        let first = (0..OPENS.len())
-            .filter_map(|k| next[k].map(|i| (i, k)))
-            .min();
-        let Some((open, k)) = first else { break };
-        let body = open + OPENS[k].len();
-        let Some(len) = source[body..].find('"') else {
-            break;
-        };
-        out.push_str(&source[at..body]);
-        out.push_str(&crate::words::symbols::script(
-            &source[body..body + len],
-            lang,
-        ));
-        at = body + len;
-    }
-    out.push_str(&source[at..]);
-    out
 }
 
 #[cfg(test)]
@@ -543,7 +510,7 @@ mod tests {
         );
         assert_eq!(sym("b_{ст}"), r##"#qs[#"b"]_(#qu[#"ст"])"##);
         assert_eq!(
-            localise_scripts(&sym("M_{пр}"), Lang::En),
+            crate::note::scripts::localise_scripts(&sym("M_{пр}"), Lang::En),
             r##"#qs[#"M"]_(#qu[#"red"])"##
         );
     }
@@ -563,20 +530,6 @@ mod tests {
     #[test]
     fn strings_escape_quotes_and_backslashes() {
         assert_eq!(string(r#"a "b" \c"#), r#""a \"b\" \\c""#);
-    }
-
-    #[test]
-    fn scripts_take_the_notation_of_the_language() {
-        let src = label("F_{и3} + M_{пс}^{тр} + R_{0-5}");
-        assert_eq!(
-            localise_scripts(&src, Lang::En),
-            r##"[#"F"#sub("i3")#" + M"#sub("r")#super("f")#" + R"#sub("0-5")]"##
-        );
-        assert_eq!(localise_scripts(&src, Lang::Ru), src);
-        assert_eq!(
-            localise_scripts(&sym("M_{пс}^{тр}"), Lang::En),
-            r##"#qs[#"M"]_(#qu[#"r"])^(#qu[#"f"])"##
-        );
     }
 
     #[test]

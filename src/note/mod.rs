@@ -38,6 +38,7 @@ mod plans;
 mod positions;
 mod practicum;
 mod rows;
+mod scripts;
 mod train;
 mod typeset;
 mod worked;
@@ -269,7 +270,7 @@ pub fn compose_with(
     front::references(&mut w);
     w.explained.settle();
     Ok(Note {
-        source: markup::localise_scripts(&w.doc.finish(), lang),
+        source: scripts::localise_scripts(&w.doc.finish(), lang),
         files: w.files,
         unexplained: w.explained.missing,
     })
@@ -279,7 +280,7 @@ pub fn compose_with(
 /// note's markup sets it in `lang`: content of one Typst string, so that no character of it
 /// is read as markup (the fuzzer's `note` target checks that it typesets to the text).
 pub fn user_text(text: &str, lang: Lang) -> String {
-    markup::localise_scripts(&markup::text(text), lang)
+    scripts::localise_scripts(&markup::text(text), lang)
 }
 
 /// The text Typst `content` (markup such as [`user_text`] gives) shows typeset alone on a

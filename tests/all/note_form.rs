@@ -1,22 +1,72 @@
 //! Issue 44 §2: the ГОСТ 2.105 form of every note, read off its typeset text (page by page,
 //! `tmm::note::PAGE_BREAK` between): formulas numbered within their section in sequence,
 //! «Рисунок N —» and «Таблица N —» captions numbered through the note, never «Рис.», no
-//! number in exponent form, and a table that runs onto the next page continued under
-//! «Продолжение таблицы N».
+//! number in exponent form, a table that runs onto the next page continued under
+//! «Продолжение таблицы N», and each section opening a page (ГОСТ 7.32).
 
 use crate::support;
 use tmm::{Drafting, Lang, Session};
 
 /// The typeset text of the note of the scene at `path` in `lang`, page by page, each page's
-/// runs of white space made single spaces.
-fn pages(path: &std::path::Path, lang: Lang) -> Vec<String> {
+/// runs of white space made single spaces; and the titles of its sections.
+fn pages(path: &std::path::Path, lang: Lang) -> (Vec<String>, Vec<String>) {
     let scene = tmm::load(path).expect("scene");
     let session = Session::new(&scene, Drafting::EXACT);
     let note = tmm::note::compose(&session, lang).expect("note");
     let text = tmm::note::to_text(&note).expect("typeset");
-    text.split(tmm::note::PAGE_BREAK)
+    let pages = text
+        .split(tmm::note::PAGE_BREAK)
         .map(|p| p.split_whitespace().collect::<Vec<_>>().join(" "))
-        .collect()
+        .collect();
+    (pages, section_titles(&note.source))
+}
+
+/// Whether `text` holds a sentence: three words of four letters or more running (a title
+/// block's captions and a drawing's labels are short, or stand apart).
+fn has_sentence(text: &str) -> bool {
+    let mut run = 0;
+    for word in text.split(' ') {
+        if word.chars().count() >= 4 && word.chars().all(char::is_alphabetic) {
+            run += 1;
+            if run >= 3 {
+                return true;
+            }
+        } else {
+            run = 0;
+        }
+    }
+    false
+}
+
+/// ГОСТ 7.32 (and ГОСТ 2.105's advice): each section, and each structural element after
+/// them, opens a page: nothing of the text stands above its heading on its page, no formula,
+/// no caption, no sentence, only the page's frame. The pages of the note, after its title
+/// page and contents; `titles` its sections' in order, the numbered first.
+fn sections_open_pages(name: &str, pages: &[String], titles: &[String]) {
+    let mut from = 2;
+    for (k, title) in titles.iter().enumerate() {
+        // A numbered section's heading is its number and title; a structural element's, its
+        // title in capitals.
+        let heads = [format!("{} {title}", k + 1), title.to_uppercase()];
+        let found = pages.iter().enumerate().skip(from).find_map(|(n, page)| {
+            heads
+                .iter()
+                .filter_map(|h| page.find(h.as_str()))
+                .min()
+                .map(|at| (n, at))
+        });
+        let Some((n, at)) = found else {
+            panic!("{name}: section «{title}» not found after page {from}");
+        };
+        let above = &pages[n][..at];
+        assert!(
+            formula_numbers(above).is_empty() && !has_sentence(above),
+            "{name}: «{title}» does not open page {}: «{above}» above it",
+            n + 1
+        );
+        // The next section may open no earlier (a broken note: on this page, below).
+        from = n;
+    }
 }
 
 /// Every `(S.K)` of `text` in order, as (S, K).
@@ -55,6 +105,21 @@ fn continued(text: &str, word: &str) -> Vec<u32> {
                 .collect();
             digits.parse().ok()
         })
+        .collect()
+}
+
+/// The titles of a note's headings of the first level, in order: its sections (`= #"…"` in
+/// the source) and the structural elements after them (`#heading(numbering: none, …)`: the
+/// references).
+fn section_titles(source: &str) -> Vec<String> {
+    source
+        .lines()
+        .filter_map(|l| {
+            l.strip_prefix("= #\"")
+                .or_else(|| l.strip_prefix("#heading(numbering: none, [#\""))
+        })
+        .filter_map(|l| l.split('"').next())
+        .map(str::to_string)
         .collect()
 }
 
@@ -155,10 +220,14 @@ fn every_note_keeps_the_form_of_gost_2_105() {
     let mut continued_tables = 0;
     for path in support::scene_paths() {
         let name = path.file_stem().unwrap().to_string_lossy().into_owned();
-        continued_tables += check(&name, &pages(&path, Lang::Ru), Lang::Ru);
+        let (pages, titles) = pages(&path, Lang::Ru);
+        continued_tables += check(&name, &pages, Lang::Ru);
+        sections_open_pages(&name, &pages, &titles);
     }
     let shaper = support::root().join("constructions/shaper.toml");
-    let uk = check("shaper (uk)", &pages(&shaper, Lang::Uk), Lang::Uk);
+    let (pages, titles) = pages(&shaper, Lang::Uk);
+    let uk = check("shaper (uk)", &pages, Lang::Uk);
+    sections_open_pages("shaper (uk)", &pages, &titles);
     // The shaper's long tables (the data, the plans' tables, the errors) run on.
     assert!(
         uk >= 5,
@@ -210,15 +279,7 @@ fn no_page_of_the_shapers_note_is_a_quarter_empty_inside_a_section() {
             .split(tmm::note::PAGE_BREAK)
             .map(|p| p.split_whitespace().collect::<Vec<_>>().join(" "))
             .collect();
-        // A page opens a section when it starts with the title of a heading of the first
-        // level (`= …` in the source), after its number.
-        let titles: Vec<String> = note
-            .source
-            .lines()
-            .filter_map(|l| l.strip_prefix("= #\""))
-            .filter_map(|l| l.split('"').next())
-            .map(str::to_string)
-            .collect();
+        let titles = section_titles(&note.source);
         // Where on a page a section opens: the byte offset of the first title on it.
         let opens = |page: &str| {
             let page = page.to_lowercase();
