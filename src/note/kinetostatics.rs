@@ -14,6 +14,7 @@ use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
 use crate::geom::DVec2;
+use crate::scale::Lang;
 use crate::scene::PlateKind;
 use crate::words::{quantity, unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
 
@@ -66,7 +67,9 @@ fn inertia(w: &mut Writer<'_, '_>, spec: &ForceSpec, f: &PositionForces, p: &str
             .map_or(0.0, |a| a.length());
         let force = row(&w.report.rows, &format!("F_in{k}"), Method::Plan, Some(p));
         if let Some(force) = force.filter(|r| r.graphical != 0.0) {
-            let fi = quantity(Symbol::Force, &format!("in{k}"), lang);
+            // In the loads' own notation, as every symbol of the source: its scripts are
+            // localised once, at the end, and a symbol is explained once whatever the language.
+            let fi = quantity(Symbol::Force, &format!("in{k}"), Lang::Ru);
             let (m, acc) = (format!("m_{{{k}}}"), format!("a_{{{centre}}}"));
             w.formula(&format!(
                 "{} = {} {} = {} dot {} = {}{}",
@@ -95,7 +98,7 @@ fn inertia(w: &mut Writer<'_, '_>, spec: &ForceSpec, f: &PositionForces, p: &str
             if mi.graphical == 0.0 {
                 continue;
             }
-            let mq = quantity(Symbol::Moment, &format!("in{k}"), lang);
+            let mq = quantity(Symbol::Moment, &format!("in{k}"), Lang::Ru);
             let (j, e) = (format!("J_{{S{k}}}"), format!("ε_{{{k}}}"));
             w.formula(&format!(
                 "{} = {} {} = {} dot {} = {}{}",
@@ -194,7 +197,7 @@ fn groups(w: &mut Writer<'_, '_>, f: &PositionForces) -> Result<(), NoteError> {
         &mut solved,
     );
     if driver.f_bal.is_some() {
-        terms.push(quantity(Symbol::Force, "bal", w.lang));
+        terms.push(quantity(Symbol::Force, "bal", Lang::Ru));
     }
     let head = fill(w.word(N::DriverEquation), &[("link", crank.to_string())]);
     w.doc.par(&[label(&head)]);

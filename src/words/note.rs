@@ -137,9 +137,9 @@ catalogue! {
         HodographTable => ("Отрезки годографа скорости", "Відрізки годографа швидкості", "The hodograph's rays"),
         AnalyticMethod => ("Аналитический метод", "Аналітичний метод", "The analytic method"),
         AnalyticText => (
-            "Положения, скорости и ускорения найдены аналитически из уравнений замкнутых векторных контуров (аналитический двойник построения).",
-            "Положення, швидкості і прискорення знайдено аналітично з рівнянь замкнених векторних контурів (аналітичний двійник побудови).",
-            "The positions, velocities and accelerations solved analytically from the closed vector loops (the construction's analytic twin)."
+            "Положения, скорости и ускорения найдены аналитически из уравнений замкнутых векторных контуров; по ним проверены графические построения.",
+            "Положення, швидкості і прискорення знайдено аналітично з рівнянь замкнених векторних контурів; за ними перевірено графічні побудови.",
+            "The positions, velocities and accelerations are found analytically from the equations of the closed vector loops; the graphical constructions are checked against them."
         ),
         AnalyticTable => ("Аналитический расчёт", "Аналітичний розрахунок", "The analytic solution"),
         Kinetostatics => ("Кинетостатический анализ механизма", "Кінетостатичний аналіз механізму", "Kinetostatic analysis of the mechanism"),

@@ -125,3 +125,28 @@ fn the_seeds_errata_are_explained_in_the_notes_language() {
         }
     }
 }
+
+/// The driving link's balancing force is explained as the balancing force in every language:
+/// its symbol in the note's notation (`F_b`, `F_зр`) was once taken for a couple's force on the
+/// lever, «… of link  on the lever», with no link. And the program's word for the analytic
+/// solution («двойник», twin) is not the note's. Read off the notes' sources (no typesetting).
+#[test]
+fn the_balancing_force_is_explained_as_such_in_every_language() {
+    for stem in ["shaper", "v-engine"] {
+        let path = support::root().join(format!("constructions/{stem}.toml"));
+        let scene = tmm::load(&path).expect("scene");
+        let session = Session::new(&scene, Drafting::EXACT);
+        for (lang, no_link, balancing) in [
+            (Lang::Ru, "звена  на рычаге", "уравновешивающая сила"),
+            (Lang::Uk, "ланки  на важелі", "зрівноважувальна сила"),
+            (Lang::En, "link  on the lever", "the balancing force"),
+        ] {
+            let source = tmm::note::compose(&session, lang).expect("note").source;
+            assert!(!source.contains(no_link), "{stem} {lang:?}: «{no_link}»");
+            assert!(source.contains(balancing), "{stem} {lang:?}: «{balancing}»");
+            for jargon in ["двойник", "двійник", "twin"] {
+                assert!(!source.contains(jargon), "{stem} {lang:?}: «{jargon}»");
+            }
+        }
+    }
+}
