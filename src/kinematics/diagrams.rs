@@ -7,7 +7,7 @@ use crate::calculus::{self, Derivative, Diagram, Layout, Scales};
 use crate::check::{Key, Method, Row, Symbol};
 use crate::construct::{Context, Drafting, Figure, Item, Recorder, Role};
 use crate::geom::DVec2;
-use crate::linkage::{plain, Output, PositionPlan};
+use crate::linkage::{plain, Output, PositionPlan, Program, Sense};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 
@@ -366,7 +366,7 @@ pub fn diagrams(
         .map_err(|e| fail("d²S/dφ²", e))?;
     let (p0, dir) = twin_origin(plan, outputs, (k, dir));
     let rows = rows(
-        &numbered,
+        (&numbered, &plan.program, plan.mechanism.crank.sense),
         (k, &name, p0, dir),
         (&s, &first, &second),
         (w1, method),
@@ -390,9 +390,10 @@ pub fn diagrams(
 
 /// The rows S, v = |ω₁|·dS/dθ, a = ω₁²·d²S/dθ² of point `k` (named `name`, S from `p0`
 /// along `dir` on the twin) at the `numbered` positions: read `s` and off the derivatives,
-/// against the twin.
+/// against the twin. At a corner the derivatives are read off the piece that starts there,
+/// so the twin's rates are the limit of the branch the crank turns onto (in its `sense`).
 fn rows(
-    numbered: &[(usize, &crate::linkage::PlanPosition)],
+    (numbered, program, sense): (&[(usize, &crate::linkage::PlanPosition)], &Program, Sense),
     (k, name, p0, dir): (usize, &str, DVec2, DVec2),
     (s, first, second): (&[f64], &Derivative, &Derivative),
     (w1, method): (f64, Method),
@@ -401,7 +402,10 @@ fn rows(
     let analytic: Vec<[f64; 3]> = numbered
         .iter()
         .map(|(_, p)| {
-            let pose = &p.pose;
+            let beyond = (p.pose.toggle.is_some())
+                .then(|| program.limit_beyond(p.phi, sense.sign()))
+                .flatten();
+            let pose = beyond.as_ref().unwrap_or(&p.pose);
             [
                 (pose.p[k] - p0).dot(dir),
                 super::rate(pose, (pose.dp[k] * w1).length()),

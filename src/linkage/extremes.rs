@@ -67,6 +67,29 @@ pub struct OutputRange {
     pub stops: Vec<(f64, f64)>,
 }
 
+impl OutputRange {
+    /// The crank angle of the extreme position at which the output's value is `q` (within
+    /// the coincidence tolerance of its span), if `q` is an extreme's value.
+    pub fn extreme_at(&self, q: f64) -> Option<f64> {
+        let tol = Tolerances::for_model_size(self.max - self.min)
+            .ok()?
+            .coincident;
+        [(self.min, self.phi_min), (self.max, self.phi_max)]
+            .into_iter()
+            .find(|e| (q - e.0).abs() <= tol)
+            .map(|e| e.1)
+    }
+
+    /// The first stop at which the output stands in an extreme position again (the six-bar's
+    /// slider reaches its end, returns and reaches it again): its crank angle, and the
+    /// extreme position's.
+    pub fn reached_again(&self) -> Option<(f64, f64)> {
+        self.stops
+            .iter()
+            .find_map(|&(phi, q)| self.extreme_at(q).map(|e| (phi, e)))
+    }
+}
+
 /// Extreme positions and the working stroke, from the first output.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Extremes {
@@ -85,6 +108,26 @@ pub struct Extremes {
     /// The working stroke is the one from the outer dead centre (a driving slider, an
     /// engine's expansion stroke), not the slower one.
     pub from_outer: bool,
+}
+
+impl Extremes {
+    /// Whether θ and K say anything: the first output reaches each extreme position once a
+    /// turn. Reached twice, its strokes are no longer two (min → max, max → min), and which
+    /// arrival ends the working stroke is a choice the mechanism does not make.
+    pub fn ratio_defined(&self) -> bool {
+        self.ranges
+            .first()
+            .is_none_or(|r| r.reached_again().is_none())
+    }
+
+    /// Whether the rocker's swing of `r` is θ itself (a crank-rocker's swing is the angle
+    /// between the crank's extremes only where the rocker is the first output, θ defined):
+    /// then it is named θ, not ψ, and θ is not drawn a second time.
+    pub fn theta_is_swing(&self, r: &OutputRange) -> bool {
+        matches!(r.coord, OutputCoord::Rocker(_))
+            && self.ratio_defined()
+            && ((r.max - r.min).abs() - self.theta.abs()).abs() < 1e-9
+    }
 }
 
 /// Samples of a full crank turn for bracketing the zeros of dq/dφ.
@@ -264,9 +307,19 @@ impl Program {
                 }
             }
         }
-        let max = roots.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1));
-        let min = roots.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1));
-        match (min, max) {
+        // An extreme reached more than once a turn (within the coincidence tolerance of the
+        // span, as a stand-still is judged): its position is the first in φ₁ ∈ [0, 2π), not
+        // whichever arrival the rounding made the larger.
+        let first_at = |v: f64| {
+            roots
+                .iter()
+                .copied()
+                .filter(|r| (r.1 - v).abs() <= still)
+                .min_by(|a, b| a.0.rem_euclid(TAU).total_cmp(&b.0.rem_euclid(TAU)))
+        };
+        let top = roots.iter().map(|r| r.1).fold(f64::NEG_INFINITY, f64::max);
+        let bottom = roots.iter().map(|r| r.1).fold(f64::INFINITY, f64::min);
+        match (first_at(bottom), first_at(top)) {
             (Some(lo), Some(hi)) if hi.1 - lo.1 > 0.0 => {
                 let mut stops: Vec<(f64, f64)> = roots
                     .iter()

@@ -429,12 +429,7 @@ fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition],
                     &[],
                 );
                 let mid = (ua + ub).normalize_or_zero();
-                let swing = (r.max - r.min).abs();
-                let name = if (swing - ex.theta.abs()).abs() < 1e-9 {
-                    "θ"
-                } else {
-                    "ψ"
-                };
+                let name = if ex.theta_is_swing(r) { "θ" } else { "ψ" };
                 rec.label(id, name, o + mid * (reach + 1.0), mid);
             }
             OutputCoord::Slider(i, d) => {
@@ -454,10 +449,7 @@ fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition],
             }
         }
     }
-    if !ex.ranges.iter().any(|r| {
-        matches!(r.coord, OutputCoord::Rocker(_))
-            && ((r.max - r.min).abs() - ex.theta.abs()).abs() < 1e-9
-    }) {
+    if ex.ratio_defined() && !ex.ranges.iter().any(|r| ex.theta_is_swing(r)) {
         // θ between the crank at one extreme and the extension of the crank at the other.
         let c = a.built.p[prog.centre];
         let (ua, ub) = (

@@ -61,7 +61,16 @@ pub(super) fn positions(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         .extremes
         .as_ref()
         .filter(|ex| !is_zero(ex.theta, PI));
-    if let Some(ex) = uneven {
+    // An extreme reached twice a turn: its two crank angles, the extreme position's first.
+    let again = uneven.and_then(|ex| ex.ranges.first()?.reached_again());
+    if let Some((second, first)) = again {
+        let deg = |a: f64| format_fixed(a.to_degrees().rem_euclid(360.0), 2, lang);
+        let twice = w
+            .word(K::NoTimeRatio)
+            .replace("{a}", &deg(first))
+            .replace("{b}", &deg(second));
+        w.doc.par(&[text(&twice)]);
+    } else if let Some(ex) = uneven {
         theta(w, m, ex);
         w.doc.par(&[text(w.word(K::TimeRatio))]);
         let theta = ex.theta.to_degrees();

@@ -295,11 +295,7 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
             OutputCoord::Rocker(l) => v.push(format!(
                 "{} {l}: {} = {}",
                 Text::SwingOfLink.get(lang),
-                if ((r.max - r.min).abs() - ex.theta.abs()).abs() < 1e-9 {
-                    "θ"
-                } else {
-                    "ψ"
-                },
+                if ex.theta_is_swing(r) { "θ" } else { "ψ" },
                 super::digits::degrees(r.max - r.min, lang)
             )),
             OutputCoord::Slider(i, _) => v.push(format!(
@@ -318,11 +314,7 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
             };
             // A stop at the value of an extreme is that extreme position reached again.
             let again = |q: f64| {
-                let at = |x: f64| is_zero(q - x, r.max - r.min);
-                let phi = [(r.min, r.phi_min), (r.max, r.phi_max)]
-                    .into_iter()
-                    .find(|e| at(e.0))?
-                    .1;
+                let phi = r.extreme_at(q)?;
                 Some(Text::SameExtremeAs.get(lang).replace("{p}", &label(phi)))
             };
             let list: Vec<String> = r
@@ -347,11 +339,12 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
             );
         }
     }
+    if !ex.ratio_defined() {
+        v.push(Text::NoTimeRatio.get(lang).to_string());
+        return v;
+    }
     // θ stated once: as the rocker's swing when it is the swing, else beside K.
-    let stated = ex.ranges.iter().any(|r| {
-        matches!(r.coord, OutputCoord::Rocker(_))
-            && ((r.max - r.min).abs() - ex.theta.abs()).abs() < 1e-9
-    });
+    let stated = ex.ranges.iter().any(|r| ex.theta_is_swing(r));
     let k = format!(
         "K = (180° + θ)/(180° − θ) = {}",
         format_fixed(ex.k, digits(3), lang)

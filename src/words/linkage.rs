@@ -47,6 +47,11 @@ catalogue! {
             "крайнє положення, як {p}",
             "the extreme position, as at {p}"
         ),
+        NoTimeRatio => (
+            "θ и K не определяются: крайнее положение достигается дважды за оборот",
+            "θ і K не визначаються: крайнє положення досягається двічі за оберт",
+            "θ and K are not defined: an extreme position is reached twice a turn"
+        ),
         WorkingStroke => ("Рабочий ход", "Робочий хід", "Working stroke"),
         FromOuterDeadCentre => ("расширение от в.м.т.", "розширення від в.м.т.", "expansion from TDC"),
         SlowerStroke => ("медленный", "повільний", "the slower"),

@@ -28,6 +28,11 @@ catalogue! {
             "Коефіцієнт зміни середньої швидкості ходу вихідної ланки:",
             "The time ratio of the output's strokes:"
         ),
+        NoTimeRatio => (
+            "Коэффициент изменения средней скорости хода выходного звена не определяется: выходное звено доходит до крайнего положения дважды за оборот (при φ₁ = {a}° и {b}°): какое из этих положений завершает рабочий ход, механизм не определяет.",
+            "Коефіцієнт зміни середньої швидкості ходу вихідної ланки не визначається: вихідна ланка доходить до крайнього положення двічі за оберт (при φ₁ = {a}° і {b}°): яке з цих положень завершує робочий хід, механізм не визначає.",
+            "The time ratio of the output's strokes is not defined: the output reaches an extreme position twice a turn (at φ₁ = {a}° and {b}°), and nothing in the mechanism decides which of the two ends the working stroke."
+        ),
         Vector => ("вектор", "вектор", "vector"),
         Magnitude => ("величина", "величина", "magnitude"),
         Direction => ("направление", "напрям", "direction"),

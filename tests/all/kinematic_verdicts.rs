@@ -194,51 +194,179 @@ fn the_s_chart_is_drawn_through_the_extreme_positions() {
         ("six-bar", (5.0, 6.0), &["6′", "10′"][..]),
         ("shaper", (7.0, 8.0), &[][..]),
     ] {
-        let s =
-            tmm::scene::load(&root().join(format!("constructions/{scene}.toml"))).expect("scene");
-        let session = tmm::study::Session::new(&s, Drafting::EXACT);
-        let study = session
-            .kinematics(&session.kin_scales().expect("scales"))
-            .expect("kinematics");
-        let chart = study.diagrams.as_ref().expect("the S chart");
-        let (mu_s, mu_phi) = (chart.scales.y.value(), chart.scales.x.value());
-        let points: Vec<tmm::geom::DVec2> = (chart.first_figure.steps.iter())
-            .filter(|st| st.role == Role::Given)
-            .flat_map(|st| match &st.item {
-                Item::Curve { points, .. } => points.clone(),
-                _ => Vec::new(),
-            })
-            .collect();
-        let crest = points
-            .iter()
-            .copied()
-            .max_by(|a, b| a.y.total_cmp(&b.y))
-            .expect("a curve");
-        // The stroke H: the charted slider's range.
-        let ranges = &study.plan.extremes.as_ref().expect("extremes").ranges;
-        assert!(
-            (ranges.iter()).any(|r| (crest.y * mu_s - (r.max - r.min)).abs() < 1e-9),
-            "{scene}: the crest {} m, not a stroke of {ranges:?}",
-            crest.y * mu_s
-        );
-        let interval = TAU_OVER_12 / mu_phi;
-        let at = crest.x / interval;
-        assert!(
-            at > crest_between.0 && at < crest_between.1,
-            "{scene}: the crest at {at} intervals"
-        );
-        if scene == "six-bar" {
-            let lowest = points.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
-            assert!(lowest.abs() < 1e-9, "{scene}: S at 10′ {lowest} mm");
-        }
-        let labels: Vec<&str> = (chart.first_figure.steps.iter())
-            .filter(|st| st.note.ends_with("on the φ axis"))
-            .filter_map(|st| st.label.as_ref().map(|l| l.text.as_str()))
-            .filter(|t| t.contains('′'))
-            .collect();
-        assert_eq!(labels, marks, "{scene}");
+        with_kinematics(scene, |_, _, study| {
+            let chart = study.diagrams.as_ref().expect("the S chart");
+            let (mu_s, mu_phi) = (chart.scales.y.value(), chart.scales.x.value());
+            let points: Vec<tmm::geom::DVec2> = (chart.first_figure.steps.iter())
+                .filter(|st| st.role == Role::Given)
+                .flat_map(|st| match &st.item {
+                    Item::Curve { points, .. } => points.clone(),
+                    _ => Vec::new(),
+                })
+                .collect();
+            let crest = points
+                .iter()
+                .copied()
+                .max_by(|a, b| a.y.total_cmp(&b.y))
+                .expect("a curve");
+            // The stroke H: the charted slider's range.
+            let ranges = &study.plan.extremes.as_ref().expect("extremes").ranges;
+            assert!(
+                (ranges.iter()).any(|r| (crest.y * mu_s - (r.max - r.min)).abs() < 1e-9),
+                "{scene}: the crest {} m, not a stroke of {ranges:?}",
+                crest.y * mu_s
+            );
+            let interval = TAU_OVER_12 / mu_phi;
+            let at = crest.x / interval;
+            assert!(
+                at > crest_between.0 && at < crest_between.1,
+                "{scene}: the crest at {at} intervals"
+            );
+            if scene == "six-bar" {
+                let lowest = points.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
+                assert!(lowest.abs() < 1e-9, "{scene}: S at 10′ {lowest} mm");
+            }
+            let labels: Vec<&str> = (chart.first_figure.steps.iter())
+                .filter(|st| st.note.ends_with("on the φ axis"))
+                .filter_map(|st| st.label.as_ref().map(|l| l.text.as_str()))
+                .filter(|t| t.contains('′'))
+                .collect();
+            assert_eq!(labels, marks, "{scene}");
+        });
     }
 }
 
 /// One of a crank turn's twelve intervals, rad.
 const TAU_OVER_12: f64 = std::f64::consts::TAU / 12.0;
+
+/// The six-bar's slider reaches its end twice a turn (at 6′ and again at φ₁ = 229,06°, with
+/// the change point between): its strokes are no longer two, and θ and K would be whichever
+/// arrival the rounding made the larger. The sheet, the plan of positions and the note say
+/// that θ and K are not defined; the shaper, whose slider reaches each end once, keeps its K.
+#[test]
+fn no_time_ratio_where_an_extreme_is_reached_twice() {
+    use tmm::construct::Item;
+    for (scene, twice) in [("six-bar", true), ("shaper", false)] {
+        with_kinematics(scene, |s, session, study| {
+            let ex = study.plan.extremes.as_ref().expect("extremes");
+            assert_eq!(ex.ratio_defined(), !twice, "{scene}");
+            if twice {
+                let (again, extreme) = ex.ranges[0].reached_again().expect("a second arrival");
+                assert!(
+                    (again.to_degrees() - 229.06).abs() < 0.01,
+                    "{scene}: {again}"
+                );
+                assert_eq!(
+                    extreme, ex.phi_other,
+                    "{scene}: the second arrival's extreme"
+                );
+            }
+            let plates = tmm::render::plates(s, tmm::Lang::Ru, Drafting::EXACT).expect("plates");
+            let lines: Vec<&String> = (plates.iter())
+                .flat_map(|(_, p)| p.texts.iter().flat_map(|t| t.lines.iter()))
+                .collect();
+            let undefined = "θ и K не определяются: крайнее положение достигается дважды за оборот";
+            assert_eq!(lines.iter().any(|l| *l == undefined), twice, "{scene}");
+            assert_eq!(
+                lines.iter().any(|l| l.contains("K = (180° + θ)")),
+                !twice,
+                "{scene}: {lines:#?}"
+            );
+            // θ is marked between the crank's extremes on the plan only where it is defined.
+            let theta_marked = (study.plan.figure.steps.iter()).any(|st| {
+                matches!(st.item, Item::Angle(_))
+                    && st.label.as_ref().is_some_and(|l| l.text == "θ")
+            });
+            assert_eq!(theta_marked, !twice, "{scene}: θ on the plan of positions");
+            let note = tmm::note::compose(session, tmm::Lang::Ru).expect("note");
+            assert_eq!(
+                note.source.contains(
+                    "не определяется: выходное звено доходит до крайнего положения дважды за оборот"
+                ),
+                twice,
+                "{scene}: the note"
+            );
+            assert_eq!(
+                note.source.contains("180° + θ"),
+                !twice,
+                "{scene}: K in the note"
+            );
+        });
+    }
+}
+
+/// At the six-bar's change point (position 6, where S has a corner) the derivatives are read
+/// off the piece the crank turns onto. The twin gives that branch's one-sided limit
+/// (`Program::limit_beyond`), which the positions alone confirm by one-sided differences, and
+/// the chart's readings at 6 are checked against it instead of being left without a twin.
+#[test]
+fn the_corner_reading_is_checked_against_the_branch_the_crank_turns_onto() {
+    use std::f64::consts::PI;
+    let s = tmm::scene::load(&root().join("constructions/six-bar.toml")).expect("scene");
+    let session = tmm::study::Session::new(&s, Drafting::EXACT);
+    let m = session.mechanism("test").expect("mechanism");
+    let program = tmm::linkage::Program::compile(m).expect("program");
+    let e = program.index("E").expect("E");
+    assert!(
+        program.solve(PI, None).expect("pose").toggle.is_some(),
+        "φ₁ = 180° is the change point"
+    );
+    // The crank turns clockwise: after the change point φ₁ decreases; before it, increases.
+    for side in [-1.0, 1.0] {
+        let limit = program.limit_beyond(PI, side).expect("the limit");
+        let x = |k: f64| program.solve(PI + side * k * 1e-3, None).expect("pose").p[e].x;
+        let h = side * 1e-3;
+        // One-sided differences of the positions, O(h²): no rate of the solve is used.
+        let v = (-3.0 * x(0.0) + 4.0 * x(1.0) - x(2.0)) / (2.0 * h);
+        let a = (2.0 * x(0.0) - 5.0 * x(1.0) + 4.0 * x(2.0) - x(3.0)) / (h * h);
+        assert!(
+            (limit.dp[e].x - v).abs() < 1e-5 * v.abs(),
+            "side {side}: {} against {v}",
+            limit.dp[e].x
+        );
+        assert!(
+            (limit.ddp[e].x - a).abs() < 1e-3 * a.abs(),
+            "side {side}: {} against {a}",
+            limit.ddp[e].x
+        );
+    }
+    let study = session
+        .kinematics(&session.kin_scales().expect("scales"))
+        .expect("kinematics");
+    let rows = &study.diagrams.as_ref().expect("the S chart").rows;
+    let w1 = 10.0 * PI / 3.0;
+    let after = program.limit_beyond(PI, -1.0).expect("the limit");
+    for (symbol, want) in [
+        (tmm::check::Symbol::Velocity, after.dp[e].length() * w1),
+        (
+            tmm::check::Symbol::Acceleration,
+            after.ddp[e].length() * w1 * w1,
+        ),
+    ] {
+        let row = (rows.iter())
+            .find(|r| r.key.symbol == symbol && r.key.at == tmm::check::At::Position("6".into()))
+            .expect("a row at 6");
+        assert!(
+            (row.analytic - want).abs() < 1e-9 * want,
+            "{symbol:?}: {} against {want}",
+            row.analytic
+        );
+        assert!(
+            row.graphical.is_finite() && row.rel_error(row.scale).is_some_and(f64::is_finite),
+            "{row:?}"
+        );
+    }
+}
+
+/// The shipped scene `name`, its session read exactly and its kinematic study, for `f`.
+fn with_kinematics(
+    name: &str,
+    f: impl FnOnce(&tmm::scene::Scene, &tmm::study::Session<'_>, &tmm::study::Kinematics),
+) {
+    let s = tmm::scene::load(&root().join(format!("constructions/{name}.toml"))).expect("scene");
+    let session = tmm::study::Session::new(&s, Drafting::EXACT);
+    let study = session
+        .kinematics(&session.kin_scales().expect("scales"))
+        .expect("kinematics");
+    f(&s, &session, &study);
+}

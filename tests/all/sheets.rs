@@ -273,6 +273,10 @@ fn a_diagram_across_an_asymptote_is_refused_with_a_note() {
     );
 }
 
+/// At the six-bar's change point (position 6) the analytic rates are not determined: the
+/// analytic table leaves them empty (null, never 0). The diagrams' readings there are read
+/// off the piece that starts at 6, and are checked against that branch's one-sided limit
+/// (see `kinematic_verdicts`), not left without a twin.
 #[test]
 fn values_undetermined_at_the_change_point_are_null_not_zero() {
     let r = report("six-bar");
@@ -282,16 +286,12 @@ fn values_undetermined_at_the_change_point_are_null_not_zero() {
             .iter()
             .find(|row| row.quantity() == q && row.position().as_deref() == Some("6"))
             .expect("a diagram row at 6");
-        assert!(row.analytic.is_nan(), "{q}: {}", row.analytic);
+        assert!(
+            row.analytic.is_finite() && row.analytic > 0.0,
+            "{q}: {}",
+            row.analytic
+        );
     }
-    let json: serde_json::Value = serde_json::from_str(&r.to_json()).expect("json");
-    let at6: Vec<&serde_json::Value> = json["rows"]
-        .as_array()
-        .expect("rows")
-        .iter()
-        .filter(|row| row["position"] == "6" && row["quantity"] == "v_E")
-        .collect();
-    assert!(at6.iter().all(|row| row["analytic"].is_null()));
     assert!(
         r.note_texts().iter().any(|n| n.contains("not determined")),
         "{:?}",
@@ -303,6 +303,11 @@ fn values_undetermined_at_the_change_point_are_null_not_zero() {
     let col = |name: &str| t.columns.iter().position(|c| c.name == name).expect(name);
     assert_eq!(row6[col("ω_2")], None);
     assert_eq!(row6[col("V_E")], None);
+    let json: serde_json::Value = serde_json::from_str(&r.to_json()).expect("json");
+    let in_json = (json["tables"][0]["rows"].as_array().expect("rows").iter())
+        .find(|row| row["position"] == "6")
+        .expect("row 6 in the JSON");
+    assert!(in_json["values"][col("V_E")].is_null(), "{in_json}");
     assert!(row6[col("φ_2")].is_some() && row6[col("V_A")].is_some());
 }
 

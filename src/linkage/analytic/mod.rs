@@ -333,5 +333,6 @@ impl Program {
     }
 }
 
+mod limit;
 #[cfg(test)]
 mod tests;
