@@ -74,7 +74,7 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
             let v = exact * lambda_max.tan() / TAU;
             w.doc.say(w.word(T::CamSlidingAngle));
             w.formula(&format!(
-                "tg {} = {} = {} dot {}",
+                "op(\"tg\") {} = {} = {} dot {}",
                 sym("λ"),
                 frac(&sym("dS"), &sym("dξ")),
                 sym("dS/dφ"),
@@ -90,11 +90,11 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 sym("X_{min}"),
                 frac(
                     &format!("2π dot max|{}|", sym("dS/dφ")),
-                    &format!("tg {}", sym("λ_{max}"))
+                    &format!("op(\"tg\") {}", sym("λ_{max}"))
                 ),
                 frac(
                     &format!("2π dot {}", n(v * 1e3)),
-                    &format!("tg {}", deg(lambda_max))
+                    &format!("op(\"tg\") {}", deg(lambda_max))
                 ),
                 mm(exact),
                 w.word(T::CamOnTheBoard),

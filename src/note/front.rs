@@ -26,7 +26,7 @@ pub(super) fn preamble(w: &mut Writer<'_, '_>) {
         Lang::En => "en",
     };
     let meta = format!(
-        "#let meta = (title: {}, lang: {}, designation: {}, document: {}, author: {}, checked: {}, organisation: {}, changes: {}, people: {}, letter: {}, sheet: {}, sheets: {}, figure: {}, table: {}, continued: {}, where: {})",
+        "#let meta = (title: {}, lang: {}, designation: {}, document: {}, author: {}, checked: {}, organisation: {}, changes: {}, people: {}, letter: {}, sheet: {}, sheets: {}, figure: {}, table: {}, continued: {}, where: {}, is: {})",
         string(&t.title),
         string(lang),
         string(&designation),
@@ -43,6 +43,7 @@ pub(super) fn preamble(w: &mut Writer<'_, '_>) {
         string(w.word(T::TableWord)),
         string(w.word(T::TableContinued)),
         string(w.word(T::Where)),
+        string(w.word(T::Is)),
     );
     w.doc.raw(&meta);
     w.doc.raw(TEMPLATE);

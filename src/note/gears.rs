@@ -161,7 +161,7 @@ fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
         &sym("ε_{α}"),
         &frac(
             &format!(
-                "{} tg {} + {} tg {} - ({} + {}) tg {}",
+                "{} op(\"tg\") {} + {} op(\"tg\") {} - ({} + {}) op(\"tg\") {}",
                 sym("z_{1}"),
                 sym("α_{a1}"),
                 sym("z_{2}"),
@@ -174,7 +174,7 @@ fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
         ),
         &frac(
             &format!(
-                "{z1} dot tg {} + {z2} dot tg {} - {} dot tg {}",
+                "{z1} dot op(\"tg\") {} + {z2} dot op(\"tg\") {} - {} dot op(\"tg\") {}",
                 deg(p.alpha_a[0], lang),
                 deg(p.alpha_a[1], lang),
                 z1 + z2,
@@ -252,7 +252,7 @@ fn rack_form(w: &mut Writer<'_, '_>, g: &Generation) {
         mm(pitch),
     ]);
     let st_formula = if c.x != 0.0 {
-        format!("{} P_(t) + 2 x tg {}", num(0.5, 1, lang), sym("α"))
+        format!("{} P_(t) + 2 x op(\"tg\") {}", num(0.5, 1, lang), sym("α"))
     } else {
         format!("{} P_(t)", num(0.5, 1, lang))
     };

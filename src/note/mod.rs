@@ -270,7 +270,7 @@ pub fn compose_with(
     front::references(&mut w);
     w.explained.settle();
     Ok(Note {
-        source: scripts::localise_scripts(&w.doc.finish(), lang),
+        source: scripts::localise_functions(scripts::localise_scripts(&w.doc.finish(), lang), lang),
         files: w.files,
         unexplained: w.explained.missing,
     })

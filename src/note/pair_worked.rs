@@ -40,7 +40,7 @@ impl Nums {
 
     /// The tangent of an angle (rad) in degrees.
     fn tg(&self, a: f64) -> String {
-        format!("tg {}", deg(a, self.lang))
+        format!("op(\"tg\") {}", deg(a, self.lang))
     }
 
     /// A meaning of wheel `k`.
@@ -86,7 +86,7 @@ fn operating(w: &mut Writer<'_, '_>, p: &Pair, f: &Nums) {
         &format!(
             "{} + {INV} α",
             frac(
-                &format!("2 ({} + {}) tg α", sym("x_{1}"), sym("x_{2}")),
+                &format!("2 ({} + {}) op(\"tg\") α", sym("x_{1}"), sym("x_{2}")),
                 &format!("{} + {}", sym("z_{1}"), sym("z_{2}"))
             )
         ),
@@ -265,7 +265,7 @@ fn wheel_tooth(w: &mut Writer<'_, '_>, p: &Pair, i: usize, f: &Nums) {
     worked(
         w,
         &sym(&format!("s_{{{k}}}")),
-        &format!("m (π/2 + 2 {} tg α)", s("x")),
+        &format!("m (π/2 + 2 {} op(\"tg\") α)", s("x")),
         &format!("{m} dot (π/2 + 2 dot {} dot {})", f.n(x), f.tg(rack.alpha)),
         f.l(p.s[i]),
     );

@@ -3,6 +3,18 @@
 
 use crate::scale::Lang;
 
+/// The trigonometric functions of the note's formulas in the notation of `lang`: the
+/// markup writes the Russian and Ukrainian textbooks' `tg` and `arctg`; English writes `tan`
+/// and `arctan`.
+pub(super) fn localise_functions(source: String, lang: Lang) -> String {
+    match lang {
+        Lang::En => source
+            .replace("op(\"arctg\")", "arctan")
+            .replace("op(\"tg\")", "tan"),
+        Lang::Ru | Lang::Uk => source,
+    }
+}
+
 /// The note's Typst source with every subscript and superscript a label or a symbol set
 /// (`#sub("и3")`, `#super("тр")`, `_(#qs[#"и3"])`) in the textbook notation of `lang` (`F_{и3}` is `F_{i3}` in English), as
 /// every sheet's text is ([`crate::words::symbols`]).

@@ -33,14 +33,18 @@ fn explain_ratio(
     t: &Train,
     meshes: &[(usize, usize)],
 ) {
-    let teeth: Vec<String> = meshes
+    // Each wheel's number of teeth named with its wheel: «z₁ — число зубьев колеса 1».
+    let teeth: Vec<(String, String)> = meshes
         .iter()
         .flat_map(|&(x, y)| [x, y])
-        .map(|i| format!("z_{{{}}}", t.wheels[i].name))
+        .map(|i| {
+            let name = &t.wheels[i].name;
+            let meaning = w.word(M::Teeth).replace("{k}", name);
+            (format!("z_{{{name}}}"), meaning)
+        })
         .collect();
-    let (ratio, tooth) = (w.word(meaning), w.word(M::Teeth));
-    let mut items = vec![(label, ratio, "")];
-    items.extend(teeth.iter().map(|z| (z.as_str(), tooth, "")));
+    let mut items = vec![(label, w.word(meaning), "")];
+    items.extend(teeth.iter().map(|(z, m)| (z.as_str(), m.as_str(), "")));
     w.explain(&items);
 }
 

@@ -96,7 +96,7 @@ catalogue! {
         CarrierArm => ("межосевое расстояние ступени (длина водила)", "міжосьова відстань ступеня (довжина водила)", "the stage's centre distance (the carrier's arm)"),
         Module => ("модуль зацепления", "модуль зачеплення", "the module"),
         ClosingModule => ("модуль, замыкающий ступень на оси водила", "модуль, що замикає ступінь на осі водила", "the module that closes the stage on the carrier's axis"),
-        Teeth => ("число зубьев колеса", "число зубців колеса", "a wheel's number of teeth"),
+        Teeth => ("число зубьев колеса {k}", "число зубців колеса {k}", "the number of teeth of wheel {k}"),
         StageRatio => ("передаточное отношение ступени", "передаточне відношення ступеня", "a stage's gear ratio"),
         StoppedRatio => ("передаточное отношение при остановленном водиле", "передаточне відношення при зупиненому водилі", "the ratio with the carrier stopped"),
         PlanetaryRatio => ("передаточное отношение планетарной ступени", "передаточне відношення планетарного ступеня", "the planetary stage's ratio"),

@@ -9,7 +9,7 @@ catalogue! {
         InertiaForce => ("сила инерции звена {k}", "сила інерції ланки {k}", "the inertia force of link {k}"),
         Mass => ("масса звена {k}", "маса ланки {k}", "the mass of link {k}"),
         CentreAcceleration => ("ускорение центра масс звена {k} (из плана ускорений)", "прискорення центра мас ланки {k} (з плану прискорень)", "the acceleration of the centre of mass of link {k} (off the acceleration plan)"),
-        InertiaMoment => ("момент сил инерции звена {k}", "момент сил інерції ланки {k}", "the inertia moment of link {k}"),
+        InertiaMoment => ("момент сил инерции звена {k}", "момент сил інерції ланки {k}", "the moment of the inertia forces of link {k}"),
         CentralInertia => ("момент инерции звена {k} относительно оси, проходящей через центр масс", "момент інерції ланки {k} відносно осі, що проходить через центр мас", "the moment of inertia of link {k} about its centre of mass"),
         AngularAcceleration => ("угловое ускорение звена {k} (из плана ускорений)", "кутове прискорення ланки {k} (з плану прискорень)", "the angular acceleration of link {k} (off the acceleration plan)"),
         Weight => ("сила тяжести звена {k}", "сила ваги ланки {k}", "the weight of link {k}"),

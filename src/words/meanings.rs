@@ -11,7 +11,7 @@ catalogue! {
         MovingLinks => ("число подвижных звеньев", "кількість рухомих ланок", "the number of moving links"),
         LowerPairs => ("число кинематических пар пятого класса (низших)", "кількість кінематичних пар п’ятого класу (нижчих)", "the number of fifth-class (lower) pairs"),
         HigherPairs => ("число кинематических пар четвёртого класса (высших)", "кількість кінематичних пар четвертого класу (вищих)", "the number of fourth-class (higher) pairs"),
-        EngagementAngle => ("угол зацепления", "кут зачеплення", "the angle of engagement"),
+        EngagementAngle => ("угол зацепления", "кут зачеплення", "the operating pressure angle"),
         ShiftOfWheel => ("коэффициент смещения колеса", "коефіцієнт зміщення колеса", "the shift coefficient of wheel"),
         TeethOfWheel => ("число зубьев колеса", "кількість зубців колеса", "the number of teeth of wheel"),
         ProfileAngle => ("угол профиля исходного контура", "кут профілю вихідного контуру", "the pressure angle of the basic rack"),

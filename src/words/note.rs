@@ -16,6 +16,8 @@ catalogue! {
         TableWord => ("Таблица", "Таблиця", "Table"),
         TableContinued => ("Продолжение таблицы", "Продовження таблиці", "Continuation of Table"),
         Where => ("где", "де", "where"),
+        // What joins a symbol to its meaning after «где»: ГОСТ 2.105's dash; English says "is".
+        Is => ("—", "—", "is"),
         Student => ("Выполнил студент", "Виконав студент", "Student"),
         OfGroup => ("группы", "групи", "group"),
         Supervisor => ("Руководитель", "Керівник", "Supervisor"),
@@ -196,7 +198,7 @@ catalogue! {
         CamLawAssumed => (
             "Диаграммы закона движения в источнике утеряны; закон движения толкателя принят, как указано в исходных данных.",
             "Діаграми закону руху в джерелі втрачено; закон руху штовхача прийнято, як зазначено у вихідних даних.",
-            "The source's diagrams of the law are lost; the follower's law is assumed as the data state it."
+            "The textbook's diagrams of the law are lost; the follower's law is assumed as the data state it."
         ),
         CamFlatRockerIntro => (
             "Коромысло с плоской тарелкой: по заданному закону качания коромысла строим диаграмму аналога ускорения, графическим интегрированием — аналога скорости и перемещения (дуги S = L·β); профиль строим методом обращения движения: центр качания O₂ поворачиваем вокруг O₁ на −φ, проводим тарелку под углом ψ = ψ₀ + β на расстоянии e от O₂, профиль — огибающая этих прямых; точку касания находим как середину между точками пересечения соседних прямых, радиус кривизны — по расстоянию между ними.",
@@ -289,7 +291,7 @@ catalogue! {
         GearsIntroPair => (
             "Геометрия эвольвентного зацепления со смещением рассчитана по формулам и проверена по картине зацепления; коэффициент перекрытия — по формуле и по чертежу (отношение B₁B₂ к основному шагу).",
             "Геометрію евольвентного зачеплення зі зміщенням розраховано за формулами і перевірено за картиною зачеплення; коефіцієнт перекриття — за формулою і за кресленням (відношення B₁B₂ до основного кроку).",
-            "The geometry of the shifted involute pair by the formulas, checked on the meshing picture; the contact ratio by formula and off the drawing (B₁B₂ over the base pitch)."
+            "The geometry of the shifted involute pair by the formulas, checked on the meshing diagram; the contact ratio by formula and off the drawing (B₁B₂ over the base pitch)."
         ),
         GearsIntroRack => (
             "Зубья нарезаны рейкой по огибающей её положений.",
@@ -320,7 +322,7 @@ catalogue! {
         ContactRatioPicture => (
             "и по картине зацепления — активная линия зацепления B₁B₂, измеренная на чертеже, к шагу по основной окружности:",
             "і за картиною зачеплення — активна лінія зачеплення B₁B₂, виміряна на кресленні, до кроку по основному колу:",
-            "and off the meshing picture: the active line of action B₁B₂ measured on the drawing over the base pitch:"
+            "and off the meshing diagram: the active line of action B₁B₂ measured on the drawing over the base pitch:"
         ),
         PairTable => ("Геометрия зубчатой передачи", "Геометрія зубчастої передачі", "The gear pair's geometry"),
         SlidingTable => ("Удельное скольжение", "Питоме ковзання", "Specific sliding"),
@@ -342,12 +344,12 @@ catalogue! {
         ZeroWheelForm => (
             "нулевое колесо (форма отчёта ПЗ1, таблица 1.1)",
             "нульове колесо (форма звіту ПЗ1, таблиця 1.1)",
-            "the zero wheel (the PZ1 report form, Table 1.1)"
+            "the zero wheel (report form of practical work 1, Table 1.1)"
         ),
         ShiftedWheelForm => (
             "колесо со смещением (форма отчёта ПЗ1, таблица 1.2)",
             "колесо зі зміщенням (форма звіту ПЗ1, таблиця 1.2)",
-            "the shifted wheel (the PZ1 report form, Table 1.2)"
+            "the shifted wheel (report form of practical work 1, Table 1.2)"
         ),
         UndercutThins => (
             "Зуб подрезан: на основной окружности его толщина по чертежу и по точной огибающей меньше, чем по формуле неподрезанной эвольвенты S_b.",
@@ -363,7 +365,7 @@ catalogue! {
         TrainClosing => (
             "Модуль в задаче дан один на всю передачу (или не дан вовсе), и при нём суммы чисел зубьев ступени не замыкаются: сателлит не достаёт до второго центрального колеса, передачу в таком виде не собрать. Формула Виллиса требует только чисел зубьев; для треугольников скоростей зацепление принято с модулем, при котором ось центрального колеса совпадает с осью водила (в задаче не дан):",
             "Модуль у задачі дано один на всю передачу (або не дано зовсім), і за нього суми чисел зубців ступеня не замикаються: сателіт не дістає до другого центрального колеса, передачу в такому вигляді не зібрати. Формула Вілліса потребує лише чисел зубців; для трикутників швидкостей зачеплення прийнято з модулем, за якого вісь центрального колеса збігається з віссю водила (у задачі не дано):",
-            "The source gives one module for the whole train (or none), and with it the stage's tooth sums do not close: the satellite does not reach the second central wheel, and the train as given cannot be assembled. Willis's formula needs the teeth only; for the velocity triangles the mesh is taken at the module that brings the central wheel's axis onto the carrier's (the source gives none):"
+            "The textbook gives one module for the whole train (or none), and with it the stage's tooth sums do not close: the satellite does not reach the second central wheel, and the train as given cannot be assembled. Willis's formula needs the teeth only; for the velocity triangles the mesh is taken at the module that brings the central wheel's axis onto the carrier's (the textbook gives none):"
         ),
         TrainDifferential => (
             "Дифференциал (W = 2): при остановленном водиле отношение частот вращения центральных колёс — по числам зубьев; формула Виллиса даёт частоту вращения выходного звена по двум заданным:",
@@ -408,7 +410,7 @@ catalogue! {
         FrictionTask => (
             "Определить графически (планами сил) и проверить аналитическим расчётом силы, моменты и коэффициенты полезного действия с учётом трения в следующих случаях:",
             "Визначити графічно (планами сил) і перевірити аналітичним розрахунком сили, моменти й коефіцієнти корисної дії з урахуванням тертя в таких випадках:",
-            "Find by force plans, and check by calculation, the forces, moments and efficiencies with friction in the following cases:"
+            "Find graphically (by force polygons), and check by calculation, the forces, moments and efficiencies with friction in the following cases:"
         ),
         FollowerGuideWorked => (
             "Кулачок давит на толкатель силой P по общей нормали под углом давления λ к оси; сопротивление Q — вдоль оси; опоры направляющей (на расстояниях l и l + b от точки контакта K) отвечают нормальными реакциями N₁, N₂, каждая с трением f·N против движения. Из равновесия толкателя (проекции на ось и поперёк неё, моменты относительно K):",
@@ -458,25 +460,25 @@ catalogue! {
         SeedNotReproduced => (
             "Значения источника, которые проект не воспроизводит, с точным значением и причиной:",
             "Значення джерела, які проєкт не відтворює, з точним значенням і причиною:",
-            "The source's values this project does not reproduce, with the exact value and the reason:"
+            "The textbook's values this project does not reproduce, with the exact value and the reason:"
         ),
         SeedNoReason => (
             "не следует из данных источника",
             "не випливає з даних джерела",
-            "does not follow from the source's data"
+            "does not follow from the textbook's data"
         ),
-        SeedGives => ("в источнике", "у джерелі", "the source gives"),
+        SeedGives => ("в источнике", "у джерелі", "the textbook gives"),
         SeedExactValue => ("точное значение", "точне значення", "the exact value is"),
         SeedOffBy => ("расхождение", "розбіжність", "off by"),
         SeedFlywheel => (
             "не следует из данных источника: точное интегрирование уравнения движения",
             "не випливає з даних джерела: точне інтегрування рівняння руху",
-            "does not follow from the source's data: the equation of motion integrated exactly"
+            "does not follow from the textbook's data: the equation of motion integrated exactly"
         ),
         SeedContactRatio => (
             "в источнике основные радиусы взяты как r·cos α_{w}, а шаг — как πm·cos α_{w}",
             "у джерелі основні радіуси взято як r·cos α_{w}, а крок — як πm·cos α_{w}",
-            "the source takes the base radii as r·cos α_{w} and the base pitch as πm·cos α_{w}"
+            "the textbook takes the base radii as r·cos α_{w} and the base pitch as πm·cos α_{w}"
         ),
         SeedTrainNeeds => (
             "при остальных ступенях по числам зубьев напечатанное значение требует",

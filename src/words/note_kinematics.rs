@@ -48,7 +48,7 @@ catalogue! {
         NormalWorked => (
             "Нормальные ускорения в относительном вращательном движении определяем по угловым скоростям звеньев, найденным из плана скоростей:",
             "Нормальні прискорення у відносному обертальному русі визначаємо за кутовими швидкостями ланок, знайденими з плану швидкостей:",
-            "The normal accelerations of the relative turning follow from the links' angular velocities found on the velocity plan:"
+            "The normal accelerations of the relative rotation follow from the links' angular velocities found on the velocity plan:"
         ),
         CoriolisRule => (
             "Направление кориолисова ускорения получаем, повернув вектор относительной скорости на 90° в сторону вращения звена, по которому движется точка (в сторону его угловой скорости).",

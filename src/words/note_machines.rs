@@ -9,12 +9,12 @@ catalogue! {
         InertiaIntro => (
             "Определяем силы инерции звеньев F_{и} = m·a_{S} и моменты сил инерции M_{и} = J_{S}·ε по ускорениям, найденным из плана ускорений:",
             "Визначаємо сили інерції ланок F_{и} = m·a_{S} і моменти сил інерції M_{и} = J_{S}·ε за прискореннями, знайденими з плану прискорень:",
-            "The links' inertia forces F_{и} = m·a_{S} and inertia moments M_{и} = J_{S}·ε follow from the accelerations off the acceleration plan:"
+            "The links' inertia forces F_{и} = m·a_{S} and the moments of their inertia forces M_{и} = J_{S}·ε follow from the accelerations off the acceleration plan:"
         ),
         InertiaApplied => (
             "Силы инерции приложены в центрах масс звеньев ({points}) и направлены противоположно ускорениям центров масс; моменты сил инерции направлены противоположно угловым ускорениям звеньев.",
             "Сили інерції прикладені в центрах мас ланок ({points}) і напрямлені протилежно прискоренням центрів мас; моменти сил інерції напрямлені протилежно кутовим прискоренням ланок.",
-            "The inertia forces act at the links' centres of mass ({points}), against the centres' accelerations; the inertia moments act against the links' angular accelerations."
+            "The inertia forces act at the links' centres of mass ({points}), against the centres' accelerations; the moments of the inertia forces act against the links' angular accelerations."
         ),
         GroupEquation => (
             "Группа {links}. Действие отброшенных звеньев и стойки заменяем реакциями; условие равновесия группы в векторной форме:",
@@ -105,7 +105,7 @@ catalogue! {
         LinksEnergySeed => (
             "В источнике T_{зв} = ω_{ср}²·J_{пр}/2 включает и постоянную часть J_{const}; постоянное слагаемое J_{const}·ω_{ср}²/2 не меняет размаха T_{зв} и на момент инерции маховика не влияет.",
             "У джерелі T_{зв} = ω_{ср}²·J_{пр}/2 включає і сталу частину J_{const}; стале доданок J_{const}·ω_{ср}²/2 не змінює розмаху T_{зв} і на момент інерції маховика не впливає.",
-            "The source's T_{зв} = ω_{ср}²·J_{пр}/2 includes the constant part J_{const}; the constant term J_{const}·ω_{ср}²/2 leaves the range of T_{зв} unchanged and does not affect the flywheel."
+            "The textbook's T_{зв} = ω_{ср}²·J_{пр}/2 includes the constant part J_{const}; the constant term J_{const}·ω_{ср}²/2 leaves the range of T_{зв} unchanged and does not affect the flywheel."
         ),
         WorkScale => (
             "Диаграмму работ строим графическим интегрированием диаграммы моментов методом хорд с полюсным расстоянием H; масштаб диаграммы работ:",

@@ -89,7 +89,15 @@ fn the_shaper_works_theta_lengths_scales_and_the_analytic_loop() {
         let phi3 = y.atan2(x);
         let l3 = y.hypot(x);
         let omega3 = -std::f64::consts::PI * 5.0 * 0.14 * (phi1 - phi3).cos() / l3;
-        let loop3 = after(&text, "φ3=arctg0", 400);
+        // The English textbooks write arctan where the Russian and Ukrainian write arctg.
+        let arctan = if lang == Lang::En { "arctan" } else { "arctg" };
+        assert_eq!(text.contains("arctg"), lang != Lang::En, "{lang:?}");
+        assert_eq!(
+            text.contains("tgα"),
+            lang != Lang::En,
+            "{lang:?}: tg α of the gears"
+        );
+        let loop3 = after(&text, &format!("φ3={arctan}0"), 400);
         for expected in [
             format!("={}°", dec(phi3.to_degrees(), 2, lang)),
             format!("={}", dec(l3, 4, lang)),
