@@ -22,17 +22,21 @@ fn pages(path: &std::path::Path, lang: Lang) -> (Vec<String>, Vec<String>) {
 }
 
 /// Whether `text` holds a sentence: three words of four letters or more running (a title
-/// block's captions and a drawing's labels are short, or stand apart).
-fn has_sentence(text: &str) -> bool {
+/// block's captions and a drawing's labels are short, or stand apart); the eight words after
+/// the word `caption` (a figure's caption, lower case), when given, are not counted.
+fn has_sentence(text: &str, caption: Option<&str>) -> bool {
     let mut run = 0;
     for word in text.split(' ') {
-        if word.chars().count() >= 4 && word.chars().all(char::is_alphabetic) {
+        if caption.is_some_and(|c| word.to_lowercase() == c) {
+            // A caption: its words are the figure's.
+            run = -8;
+        } else if word.chars().count() >= 4 && word.chars().all(char::is_alphabetic) {
             run += 1;
             if run >= 3 {
                 return true;
             }
         } else {
-            run = 0;
+            run = run.min(0);
         }
     }
     false
@@ -60,7 +64,7 @@ fn sections_open_pages(name: &str, pages: &[String], titles: &[String]) {
         };
         let above = &pages[n][..at];
         assert!(
-            formula_numbers(above).is_empty() && !has_sentence(above),
+            formula_numbers(above).is_empty() && !has_sentence(above, None),
             "{name}: «{title}» does not open page {}: «{above}» above it",
             n + 1
         );
@@ -294,23 +298,8 @@ fn no_page_of_the_shapers_note_is_a_quarter_empty_inside_a_section() {
             Lang::En => "Figure ",
             _ => "Рисунок ",
         };
-        let figures_only = |page: &str| {
-            let mut run = 0;
-            for word in page.split(' ') {
-                if word.to_lowercase() == figure.trim().to_lowercase() {
-                    // A caption: its words are the figure's.
-                    run = -8;
-                } else if word.chars().count() >= 4 && word.chars().all(char::is_alphabetic) {
-                    run += 1;
-                    if run >= 3 {
-                        return false;
-                    }
-                } else {
-                    run = run.min(0);
-                }
-            }
-            true
-        };
+        let caption = figure.trim().to_lowercase();
+        let figures_only = |page: &str| !has_sentence(page, Some(&caption));
         // A section's end: up to the next section's title, its last figures alone.
         let ends_section = |k: usize| {
             for page in &pages[k + 1..] {
