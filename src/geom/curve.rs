@@ -9,7 +9,7 @@
 //! them as the parabola through the three points does (Bessel's slope, bounded), so that a
 //! reading of the drawn curve's extreme ([`points`]) finds it there; where the points stand
 //! on two straight lines meeting (a triangle) the lines are drawn to their corner. Every
-//! other curve (a trajectory, a hodograph, a closed curve) is drawn Catmull–Rom.
+//! other curve (a trajectory, a hodograph, a closed curve) is drawn Catmull–Rom, centripetal.
 
 use crate::geom::DVec2;
 
@@ -235,7 +235,11 @@ fn end_slope(h0: f64, h1: f64, d0: f64, d1: f64) -> f64 {
     }
 }
 
-/// Catmull–Rom pieces through `pts` (an end's missing neighbour is the end itself).
+/// Centripetal Catmull–Rom pieces through `pts` (an end's missing neighbour is the end
+/// itself): each point's tangent weighs its two chords by the square roots of their lengths,
+/// so that two points close together between far ones (a hodograph's 7 and 7′) are joined
+/// without the loop or the corner the uniform curve makes there; on points evenly spaced it
+/// is the uniform curve.
 fn catmull_rom(pts: &[DVec2], closed: bool) -> Vec<Piece> {
     let n = pts.len();
     let at = |i: isize| -> DVec2 {
@@ -250,7 +254,26 @@ fn catmull_rom(pts: &[DVec2], closed: bool) -> Vec<Piece> {
     (0..count)
         .map(|i| {
             let (p0, p1, p2, p3) = (at(i - 1), at(i), at(i + 1), at(i + 2));
-            [p1 + (p2 - p0) / 6.0, p2 - (p3 - p1) / 6.0, p2]
+            let knot = |a: DVec2, b: DVec2| a.distance(b).sqrt();
+            let (d01, d12, d23) = (knot(p0, p1), knot(p1, p2), knot(p2, p3));
+            if d12 == 0.0 {
+                return [p1, p2, p2];
+            }
+            // The tangents per unit of the parameter at p1 and p2 (Barry–Goldman); at an
+            // open end, where the neighbour is the end itself, half the chord's, as the
+            // uniform curve has it.
+            let tangent = |a: DVec2, da: f64, b: DVec2, c: DVec2, dc: f64| {
+                if da == 0.0 {
+                    (c - b) / (2.0 * dc)
+                } else if dc == 0.0 {
+                    (b - a) / (2.0 * da)
+                } else {
+                    (b - a) / da - (c - a) / (da + dc) + (c - b) / dc
+                }
+            };
+            let m1 = tangent(p0, d01, p1, p2, d12);
+            let m2 = tangent(p1, d12, p2, p3, d23);
+            [p1 + m1 * (d12 / 3.0), p2 - m2 * (d12 / 3.0), p2]
         })
         .collect()
 }

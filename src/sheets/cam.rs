@@ -324,11 +324,16 @@ fn data_lines(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<String> {
         // choose the roller unless the task gives it.
         let step_mm = cam.rho_min_step(read_mm).map(|s| s * 1e3);
         let rho = digits::carried(cam.inversion.rho_min * 1e3, step_mm) * 1e-3;
+        // ρ_min read off the drawing is named as such: the undercut's verdict below states
+        // the exact one.
         let bounds = format!(
-            "{}·r_{{0}} = {} {mm}, {}·ρ_{{min}} = {} {mm}",
+            "{}·r_{{0}} = {} {mm}, {}·ρ_{{min}} = {}·{} ({}) = {} {mm}",
             format_sig(0.4, 1, lang),
             n(0.4 * cam.base),
             format_sig(0.8, 1, lang),
+            format_sig(0.8, 1, lang),
+            n(rho),
+            Text::Graphical.get(lang),
             n(0.8 * rho),
         );
         out.push(match s.roller {
@@ -387,7 +392,15 @@ fn return_line(cam: &Cam, lang: Lang) -> Option<String> {
 fn verdict(f: &Finding, lang: Lang) -> Option<String> {
     let mm = unit_in("mm", lang);
     let n = |x: f64| format_sig(x * 1e3, 4, lang);
-    let with_rho = |t: CamText, rho: f64| format!("{} ρ_{{min}} = {} {mm}", t.get(lang), n(rho));
+    // The exact ρ_min, named so beside the drawing's in the roller's bounds above.
+    let with_rho = |t: CamText, rho: f64| {
+        format!(
+            "{} ρ_{{min}} = {} {mm} ({})",
+            t.get(lang),
+            n(rho),
+            Text::Exact.get(lang)
+        )
+    };
     Some(match *f {
         Finding::Undercut { rho_min, .. } => with_rho(CamText::Undercut, rho_min),
         Finding::Cusp(Cusp::Roller { rho_min, .. }) => with_rho(CamText::RollerCusp, rho_min),

@@ -279,17 +279,21 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     } else {
         format!(" ({})", Text::SlowerStroke.get(lang))
     };
-    v.push(format!(
-        "{} {start} → {other}{why}: {}°, {} — {}°",
-        Text::WorkingStroke.get(lang),
-        format_fixed(ex.work_travel.to_degrees(), digits(ANGLE_DECIMALS), lang),
-        Text::Return.get(lang),
-        format_fixed(
-            360.0 - ex.work_travel.to_degrees(),
-            digits(ANGLE_DECIMALS),
-            lang
-        )
-    ));
+    // An output that reaches an extreme twice a turn has no working stroke and return of two
+    // halves: the line would contradict the one that says θ and K are not defined.
+    if ex.ratio_defined() {
+        v.push(format!(
+            "{} {start} → {other}{why}: {}°, {} — {}°",
+            Text::WorkingStroke.get(lang),
+            format_fixed(ex.work_travel.to_degrees(), digits(ANGLE_DECIMALS), lang),
+            Text::Return.get(lang),
+            format_fixed(
+                360.0 - ex.work_travel.to_degrees(),
+                digits(ANGLE_DECIMALS),
+                lang
+            )
+        ));
+    }
     for r in &ex.ranges {
         match r.coord {
             OutputCoord::Rocker(l) => v.push(format!(

@@ -113,8 +113,8 @@ fn the_roller_in_the_table_is_the_roller_the_data_take() {
 #[test]
 fn the_rollers_bound_takes_the_rho_min_the_table_reads() {
     // Read to 0,5 mm the table gives ρ_min = 69 мм (68,59 drawn exactly): the rule's bound
-    // is 0,8·69 = 55,2 мм, not 0,8·68,59 = 54,87 мм; the flat rocker's data line reads its
-    // ρ_min as its table does.
+    // is 0,8·69 = 55,2 мм, not 0,8·68,59 = 54,87 мм, and the line says the 69 is the
+    // drawing's; the flat rocker's data line reads its ρ_min as its table does.
     let read = |name: &str| {
         let s = crate::support::scene(name);
         let session = Session::new(&s, Drafting::HAND);
@@ -132,7 +132,7 @@ fn the_rollers_bound_takes_the_rho_min_the_table_reads() {
     assert_eq!(cell, "69");
     assert!(
         data.iter()
-            .any(|w| w.contains("0,8·ρ_{min} = 55,2 мм → r_{р} = 28,4 мм")),
+            .any(|w| w.contains("0,8·ρ_{min} = 0,8·69 (графически) = 55,2 мм → r_{р} = 28,4 мм")),
         "{data:?}"
     );
     let (cell, data) = read("cam-flat-rocker");

@@ -242,7 +242,8 @@ const TAU_OVER_12: f64 = std::f64::consts::TAU / 12.0;
 /// The six-bar's slider reaches its end twice a turn (at 6′ and again at φ₁ = 229,06°, with
 /// the change point between): its strokes are no longer two, and θ and K would be whichever
 /// arrival the rounding made the larger. The sheet, the plan of positions and the note say
-/// that θ and K are not defined; the shaper, whose slider reaches each end once, keeps its K.
+/// that θ and K are not defined, and the sheet names no working stroke; the shaper, whose
+/// slider reaches each end once, keeps its K and its working stroke.
 #[test]
 fn no_time_ratio_where_an_extreme_is_reached_twice() {
     use tmm::construct::Item;
@@ -267,6 +268,12 @@ fn no_time_ratio_where_an_extreme_is_reached_twice() {
                 .collect();
             let undefined = "θ и K не определяются: крайнее положение достигается дважды за оборот";
             assert_eq!(lines.iter().any(|l| *l == undefined), twice, "{scene}");
+            // Nor a working stroke and a return, which the second arrival makes no halves of.
+            assert_eq!(
+                lines.iter().any(|l| l.starts_with("Рабочий ход")),
+                !twice,
+                "{scene}: {lines:#?}"
+            );
             assert_eq!(
                 lines.iter().any(|l| l.contains("K = (180° + θ)")),
                 !twice,
