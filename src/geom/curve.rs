@@ -337,6 +337,30 @@ mod tests {
         }
     }
 
+    /// A closed curve through two points 2 mm apart between points 100 mm off (a
+    /// hodograph's 7 and 7′ at a dead centre) joins them without a loop: the piece between
+    /// them stays within their distance of its chord's midpoint (the uniform Catmull–Rom
+    /// curve ran over 4 mm out there).
+    #[test]
+    fn close_points_between_far_ones_are_joined_without_a_loop() {
+        let pts = [
+            DVec2::new(-100.0, 10.0),
+            DVec2::new(0.0, 0.0),
+            DVec2::new(2.0, 0.0),
+            DVec2::new(100.0, 30.0),
+            DVec2::new(0.0, 120.0),
+        ];
+        let per = 32;
+        let along = drawn(&pts, true, per);
+        let piece = &along[per..2 * per];
+        let mid = (pts[1] + pts[2]) / 2.0;
+        let far = piece.iter().map(|p| p.distance(mid)).fold(0.0, f64::max);
+        assert!(
+            far <= pts[1].distance(pts[2]),
+            "{far} mm from the chord's midpoint"
+        );
+    }
+
     #[test]
     fn a_peak_the_points_straddle_is_drawn_not_flattened() {
         // The sine law's d²S/dφ² read at mid-interval points: its crest falls between two
