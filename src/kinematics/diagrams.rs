@@ -402,9 +402,8 @@ fn rows(
     let analytic: Vec<[f64; 3]> = numbered
         .iter()
         .map(|(_, p)| {
-            let beyond = (p.pose.toggle.is_some())
-                .then(|| program.limit_beyond(p.phi, sense.sign()))
-                .flatten();
+            let beyond =
+                (p.pose.toggle.as_ref()).and_then(|_| program.limit_beyond(p.phi, sense.sign()));
             let pose = beyond.as_ref().unwrap_or(&p.pose);
             [
                 (pose.p[k] - p0).dot(dir),

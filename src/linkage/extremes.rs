@@ -115,9 +115,13 @@ impl Extremes {
     /// turn. Reached twice, its strokes are no longer two (min → max, max → min), and which
     /// arrival ends the working stroke is a choice the mechanism does not make.
     pub fn ratio_defined(&self) -> bool {
-        self.ranges
-            .first()
-            .is_none_or(|r| r.reached_again().is_none())
+        self.reached_again().is_none()
+    }
+
+    /// Where the first output stands in an extreme position again, if it does
+    /// ([`OutputRange::reached_again`]): the stop's crank angle and the extreme position's.
+    pub fn reached_again(&self) -> Option<(f64, f64)> {
+        self.ranges.first()?.reached_again()
     }
 
     /// Whether the rocker's swing of `r` is θ itself (a crank-rocker's swing is the angle

@@ -62,7 +62,7 @@ pub(super) fn positions(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         .as_ref()
         .filter(|ex| !is_zero(ex.theta, PI));
     // An extreme reached twice a turn: its two crank angles, the extreme position's first.
-    let again = uneven.and_then(|ex| ex.ranges.first()?.reached_again());
+    let again = uneven.and_then(Extremes::reached_again);
     if let Some((second, first)) = again {
         let deg = |a: f64| format_fixed(a.to_degrees().rem_euclid(360.0), 2, lang);
         let twice = w

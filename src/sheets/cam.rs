@@ -326,12 +326,11 @@ fn data_lines(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<String> {
         let rho = digits::carried(cam.inversion.rho_min * 1e3, step_mm) * 1e-3;
         // ρ_min read off the drawing is named as such: the undercut's verdict below states
         // the exact one.
+        let k = format_sig(0.8, 1, lang);
         let bounds = format!(
-            "{}·r_{{0}} = {} {mm}, {}·ρ_{{min}} = {}·{} ({}) = {} {mm}",
+            "{}·r_{{0}} = {} {mm}, {k}·ρ_{{min}} = {k}·{} ({}) = {} {mm}",
             format_sig(0.4, 1, lang),
             n(0.4 * cam.base),
-            format_sig(0.8, 1, lang),
-            format_sig(0.8, 1, lang),
             n(rho),
             Text::Graphical.get(lang),
             n(0.8 * rho),
