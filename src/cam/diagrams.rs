@@ -38,6 +38,10 @@ use differentiated::differentiated;
 pub use phi_axis::{PHASE_NOTES, TICK_NOTE};
 use scales::scales;
 
+/// The names of the poles and pole distances of the two constructions: between d²S/dφ² and
+/// dS/dφ (the rise's pole, the return's, the distance), and between dS/dφ and S.
+pub const POLES: [[&str; 3]; 2] = [["P_1", "P_1′", "H_1"], ["P_2", "P_2′", "H_2"]];
+
 /// The return's pole lies this far past the end of the return, mm.
 const FAN_GAP_MM: f64 = 12.0;
 /// The pole distance's dimension line lies this far below the lowest ray, mm.
@@ -404,7 +408,7 @@ fn integrated(
         // shock) is no ordinate of the given diagram, so it is laid off as the start value.
         let v0 = k * motion(spec, st[phase], true).ds;
         let v = lie
-            .pass(h1, ["φ", "d^2S/dφ^2", "dS/dφ"], ["P_1", "P_1′", "H_1"])
+            .pass(h1, ["φ", "d^2S/dφ^2", "dS/dφ"], POLES[0])
             .integrate(
                 (&mut views.a, &mut views.v),
                 &src,
@@ -420,17 +424,15 @@ fn integrated(
         }
         // The second integration reads dS/dφ at the middle of each chord it has drawn.
         let mids_v: Vec<f64> = v.node.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
-        let s = lie
-            .pass(h2, ["φ", "dS/dφ", "S"], ["P_2", "P_2′", "H_2"])
-            .integrate(
-                (&mut views.v, &mut views.s),
-                &Divided::new(x, mids_v)?,
-                Scales {
-                    x: phi,
-                    y: ds_scale,
-                },
-                s_start,
-            )?;
+        let s = lie.pass(h2, ["φ", "dS/dφ", "S"], POLES[1]).integrate(
+            (&mut views.v, &mut views.s),
+            &Divided::new(x, mids_v)?,
+            Scales {
+                x: phi,
+                y: ds_scale,
+            },
+            s_start,
+        )?;
         for (&i, &val) in at.iter().zip(&s.node) {
             s_nodes[i] = val;
         }

@@ -46,7 +46,7 @@ mod zone;
 pub use construct::ANGLE_LIMIT_NOTE;
 pub use construct::{build, Cam, Raised};
 pub use deviation::{deviation, deviation_at, inversion_at};
-pub use diagrams::{Analogue, Diagrams, PHASE_NOTES, TICK_NOTE};
+pub use diagrams::{Analogue, Diagrams, PHASE_NOTES, POLES, TICK_NOTE};
 pub use inversion::Inversion;
 pub use law::{Law, Shock};
 pub use radius::{RadiusConstruction, RHO_ADMITTED, RHO_MIN_NOTE, TANGENT_NOTE};

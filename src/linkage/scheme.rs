@@ -2,12 +2,14 @@
 //! the decomposition into the class-I mechanism and the Assur groups, each drawn apart.
 
 use super::construction::Built;
+use super::model::Sense;
 use super::positions_draw::{draw_guides, draw_links, draw_pivots, frame_guides, Part};
 use super::program::Program;
 use super::structure::Structure;
 use crate::construct::{Context, Figure, Item, Recorder, Role};
-use crate::geom::{DVec2, Segment};
+use crate::geom::{Arc, DVec2, Segment};
 use crate::scale::Scale;
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// Gap between the parts of the decomposition, mm.
 const GAP_MM: f64 = 14.0;
@@ -40,7 +42,7 @@ fn bounds_from(rec: &Recorder, start: usize) -> (DVec2, DVec2) {
 pub fn structure_figure(
     prog: &Program,
     st: Option<&Structure>,
-    first: &Built,
+    (first, sense): (&Built, Sense),
     plan_mu: f64,
     scale: Scale,
     ctx: &Context,
@@ -52,6 +54,7 @@ pub fn structure_figure(
     let guides = frame_guides(prog, &[&whole], GUIDE_MM);
     draw_guides(&mut rec, &guides);
     draw_pivots(&mut rec, prog, &whole);
+    crank_rotation(&mut rec, prog, &whole, sense);
     for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
         // A point on one link only (a centre of mass, a point of a guide's direction) is a
         // dot of its own; a joint's letter names the hinge or the block drawn there.
@@ -121,6 +124,43 @@ pub fn structure_figure(
     rec.finish()
 }
 
+/// The radius of the crank's arc arrow ω₁ about its pivot on the scheme, mm.
+const OMEGA_MM: f64 = 9.0;
+/// The arc arrow's sweep, radians (about 90°).
+const OMEGA_SWEEP: f64 = 1.6;
+
+/// The crank's sense of rotation as the task gives it: an arc arrow ω₁ about its pivot, in
+/// the wider of the two gaps between the crank and the pivot's support (drawn under it).
+fn crank_rotation(rec: &mut Recorder, prog: &Program, at: &Built, sense: Sense) {
+    let o = at.p[prog.centre];
+    let crank = (at.p[prog.pin] - o).to_angle();
+    let down = -FRAC_PI_2;
+    // The middle of the gap running counter-clockwise from the crank to the support, or of
+    // the other one, whichever is wider.
+    let ccw = (down - crank).rem_euclid(TAU);
+    let mid = if ccw >= PI {
+        crank + 0.5 * ccw
+    } else {
+        crank - 0.5 * (TAU - ccw)
+    };
+    let sweep = sense.sign() * OMEGA_SWEEP;
+    let arc = Arc {
+        center: o,
+        radius: OMEGA_MM,
+        start: mid - 0.5 * sweep,
+        sweep,
+    };
+    let name = format!("ω_{{{}}}", prog.crank_link);
+    let id = rec.draw(
+        format!("the crank's rotation {name}"),
+        Item::Moment(arc),
+        Role::Given,
+        &[],
+    );
+    let out = DVec2::from_angle(mid);
+    rec.label_item(id, &name, o + out * OMEGA_MM, out);
+}
+
 fn number_links(rec: &mut Recorder, anchors: &[(u32, DVec2)]) {
     for (l, at) in anchors {
         let id = rec.draw(
@@ -160,7 +200,14 @@ impl super::positions::PositionPlan {
             )
             .or(self.positions.first());
         match shown {
-            Some(first) => structure_figure(&self.program, st, &first.built, plan_mu, scale, ctx),
+            Some(first) => structure_figure(
+                &self.program,
+                st,
+                (&first.built, self.mechanism.crank.sense),
+                plan_mu,
+                scale,
+                ctx,
+            ),
             None => Figure {
                 title: String::new(),
                 scale,

@@ -181,10 +181,12 @@ pub(super) fn diagram_block(d: &Diagrams, spec: &CamSpec, lang: Lang) -> Block {
         bottom = at.y + lo.y - part.caption_drop;
         parts.push(part);
     }
+    // The poles' labels stand left of the diagrams' poles, outside their drawings.
     Block::Views {
         parts,
         scale: keyed(Key::CamScalePhi, d.phi),
     }
+    .with_edge_label_room_of(&crate::cam::POLES.concat())
 }
 
 /// The cam's blocks laid out on one sheet if some order of them fits one, else in the

@@ -268,6 +268,7 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
     let m_col = both(&|i| (d.graphical[i].m(), d.analytic[i].m()));
     let j_col = both(&|i| (d.graphical[i].j, d.analytic[i].j));
     let t_col = both(&dt);
+    let t_scale = d.tabled().fold(0.0f64, |m, (i, _)| m.max(dt(i).1.abs()));
     let rows = d
         .tabled()
         .map(|(i, label)| {
@@ -284,6 +285,7 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
                 err(g.j, a.j, 1.0),
                 t_col.cell(dt, lang),
                 t_col.cell(dt_a, lang),
+                err(dt, dt_a, t_scale),
             ]
         })
         .collect();
@@ -311,6 +313,7 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
             ("δ, %".into(), 12.0),
             (format!("ΔT, {j}"), 16.0),
             (format!("ΔT*, {j}"), 16.0),
+            ("δ, %".into(), 12.0),
         ],
         rows,
         size_mm: TABLE_MM,

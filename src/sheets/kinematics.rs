@@ -43,7 +43,8 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     );
     let plan = Block::view(a.plan_figure(), caption, keyed(Key::MechanismScaleL, sc.l));
     let plan: Run = vec![(plan, None)];
-    // The structural scheme before the plan, the structural analysis after the plans.
+    // The structural scheme before the plan, the task's data and the structural analysis
+    // after the plans.
     let (scheme, analysis): (Run, Run) = if structure {
         let (scheme, lines) = super::positions::structure(session, lang)?;
         let text = Block::Text {
@@ -364,6 +365,7 @@ fn two_sheets(
         let second = groups[k..].iter().flatten().cloned().collect();
         (first, second)
     };
+    let analysis = groups[3].clone();
     let (mut first, mut second) = split(2);
     for k in 3..=4 {
         let (f, s) = split(k);
@@ -395,7 +397,18 @@ fn two_sheets(
         return Ok(renamed(lay(first.into_iter().chain(left).collect())?));
     }
     if !left.is_empty() {
-        plates.extend(lay(left)?);
+        let mut rest = lay(left.clone())?;
+        if rest.len() > 1 {
+            // The structural analysis after the drawings and tables, in the room they leave,
+            // rather than a table run onto a page of its own.
+            let (analysis, others): (Run, Run) =
+                left.into_iter().partition(|b| analysis.contains(b));
+            let after = lay(others.into_iter().chain(analysis).collect())?;
+            if after.len() < rest.len() {
+                rest = after;
+            }
+        }
+        plates.extend(rest);
     }
     Ok(renamed(plates))
 }

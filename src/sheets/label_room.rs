@@ -79,11 +79,20 @@ fn long_joint_labels(figure: &Figure) -> Option<((DVec2, DVec2), Vec<Side>)> {
 /// figure's bounds; `None` when none does. A chart's axis numbers, written left of their
 /// ticks, stand outside the drawing by their width.
 pub(super) fn edge_labels(figure: &Figure) -> Option<(DVec2, DVec2)> {
+    edge_labels_of(figure, |_| true)
+}
+
+/// [`edge_labels`] of the labels whose text `keep` takes.
+pub(super) fn edge_labels_of(
+    figure: &Figure,
+    keep: impl Fn(&str) -> bool,
+) -> Option<(DVec2, DVec2)> {
     let (lo, hi) = figure.bounds()?;
     let boxes: Vec<(DVec2, DVec2)> = figure
         .steps
         .iter()
         .filter_map(|s| s.label.as_ref())
+        .filter(|l| keep(&l.text))
         .filter_map(|l| {
             let toward = l.toward.try_normalize()?;
             let e = measure(&l.text, LABEL_HEIGHT_MM);

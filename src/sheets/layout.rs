@@ -129,6 +129,15 @@ impl Block {
         })
     }
 
+    /// [`Self::with_edge_label_room`] for the labels named `names` alone (the poles of a
+    /// diagram, left of its ordinate axis).
+    pub fn with_edge_label_room_of(self, names: &[&str]) -> Self {
+        self.map_parts(|p| Part {
+            label_room: label_room::edge_labels_of(&p.figure, |t| names.contains(&t)),
+            ..p
+        })
+    }
+
     /// The block with every subscript of its labels, caption, lines and cells in `lang`
     /// ([`symbols::localise`]): the domains label their drawings in the Russian textbooks'
     /// markup.

@@ -8,11 +8,11 @@ use crate::check::is_zero;
 use crate::construct::fit::{fit_scale, overflow};
 use crate::construct::{Context, Drafting};
 use crate::geom::DVec2;
-use crate::linkage::{FourBar, OutputCoord, PositionPlan, Relation, Structure};
+use crate::linkage::{FourBar, OutputCoord, PositionPlan, Relation, Sense, Structure};
 use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, Key, Lang, Quantity, Scale};
 use crate::study::Session;
-use crate::words::Text;
+use crate::words::{unit_in, Text};
 use std::f64::consts::PI;
 
 /// The room of the structural scheme, mm.
@@ -58,7 +58,8 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
 }
 
 /// What the plan of positions' sheet adds to the plan: the structural scheme (its Assur
-/// groups apart) and the lines of the structural analysis, the extreme positions, θ, H and K.
+/// groups apart) and the lines of the task's data ([`data_lines`]), the structural analysis,
+/// the extreme positions, θ, H and K.
 /// The kinematic sheet takes them when the scene wants both (the textbook's sheet 1).
 pub(super) fn structure(
     session: &Session<'_>,
@@ -68,7 +69,9 @@ pub(super) fn structure(
     let scale = session.scale_l()?;
     let plan = session.positions(scale)?;
     let st = Structure::analyse(m);
-    let mut lines = structure_lines(&st, m, lang);
+    let mut lines = data_lines(m, lang);
+    lines.push(String::new());
+    lines.extend(structure_lines(&st, m, lang));
     lines.extend(grashof_lines(m, &plan, lang));
     let extremes = extreme_lines(&plan, lang);
     if !extremes.is_empty() {
@@ -116,6 +119,46 @@ fn scheme_block(
     let caption = format!("{}, {}", name.get(lang), s_scale.caption(lang));
     // The caption under the grounds of the fixed pivots, not over their hatching.
     Ok(Block::view(scheme(s_scale), caption, None))
+}
+
+/// A line of lengths in the data block holds at most this many characters as printed (the
+/// width of the structural analysis' lines).
+const DATA_LINE_CHARS: usize = 64;
+
+/// The task's data as the sheet prints it (label markup): «Исходные данные», the lengths as
+/// many to a line as [`DATA_LINE_CHARS`] allows, ω₁ and the crank's sense of rotation (drawn
+/// by the arc arrow at its pivot on the scheme).
+fn data_lines(m: &crate::linkage::Mechanism, lang: Lang) -> Vec<String> {
+    // The mechanism's data rows: its lengths, then ω₁.
+    let rows = super::data::mechanism(m, lang);
+    let written: Vec<String> = rows
+        .iter()
+        .map(|(symbol, value, unit)| format!("{symbol} = {value} {}", unit_in(unit, lang)))
+        .collect();
+    let (omega, lengths) = written
+        .split_last()
+        .map_or((None, &written[..]), |(o, l)| (Some(o), l));
+    let mut v = vec![Text::Data.get(lang).to_string()];
+    let printed = |s: &str| s.chars().filter(|c| !"_{}".contains(*c)).count();
+    let mut line = String::new();
+    for l in lengths {
+        if !line.is_empty() && printed(&line) + 2 + printed(l) > DATA_LINE_CHARS {
+            v.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push_str(", ");
+        }
+        line.push_str(l);
+    }
+    if !line.is_empty() {
+        v.push(line);
+    }
+    let sense = match m.crank.sense {
+        Sense::CounterClockwise => Text::CrankCounterClockwise,
+        Sense::Clockwise => Text::CrankClockwise,
+    };
+    v.extend(omega.map(|o| format!("{o}, {}", sense.get(lang))));
+    v
 }
 
 /// The structural analysis as text lines (label markup).

@@ -95,6 +95,8 @@ catalogue! {
         ShaftResistance => ("момент сопротивления на валу", "момент опору на валу", "the shaft's resisting moment"),        RelativeError => ("δ, %", "δ, %", "δ, %"),
         Case => ("случай", "випадок", "case"),
         Data => ("Исходные данные", "Вихідні дані", "Data"),
+        CrankCounterClockwise => ("против часовой стрелки", "проти годинникової стрілки", "counter-clockwise"),
+        CrankClockwise => ("по часовой стрелке", "за годинниковою стрілкою", "clockwise"),
         Unit => ("ед.", "од.", "unit"),
         Number => ("№", "№", "No."),
         Exact => ("точно", "точно", "exact"),

@@ -509,3 +509,50 @@ fn the_structural_analysis_states_grashofs_condition() {
     }
     assert!(!text.contains("Равенство"), "{text}");
 }
+
+/// The kinematic sheet states the task's data beside the structural analysis — the lengths,
+/// ω₁ and the crank's sense — and the scheme draws that sense as the arc arrow ω₁ about the
+/// crank's pivot (issue 45: the four-bar's sheet gave neither). The sense turned in the
+/// scene turns both.
+#[test]
+fn the_scheme_draws_the_cranks_sense_and_the_sheet_states_the_data() {
+    let given =
+        std::fs::read_to_string(root().join("constructions/four-bar.toml")).expect("four-bar");
+    for (sense, words, turn) in [
+        ("cw", "по часовой стрелке", -1.0),
+        ("ccw", "против часовой стрелки", 1.0),
+    ] {
+        let text = given.replace("sense = \"cw\"", &format!("sense = \"{sense}\""));
+        let s = scene::parse(&text, &root().join("constructions/four-bar.toml")).expect("four-bar");
+        let session = Session::new(&s, Drafting::EXACT);
+        let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+        let (_, sheet) = all.first().expect("the kinematic sheet");
+        let lines: Vec<String> = sheet.texts.iter().flat_map(|t| t.lines.clone()).collect();
+        let at = lines
+            .iter()
+            .position(|l| l == "Исходные данные")
+            .expect("the data");
+        assert_eq!(
+            lines[at + 1],
+            "l_{O1A} = 80 мм, l_{AB} = 250 мм, l_{O3B} = 180 мм, l_{AS2} = 125 мм",
+            "{sense}"
+        );
+        assert_eq!(lines[at + 2], "l_{O1O3} = 280 мм", "{sense}");
+        assert_eq!(
+            lines[at + 3],
+            format!("ω_{{1}} = 10 рад/с, {words}"),
+            "{sense}"
+        );
+        let arcs: Vec<_> = sheet
+            .views
+            .iter()
+            .flat_map(|v| &v.figure.steps)
+            .filter_map(|st| match (&st.item, &st.label) {
+                (tmm::construct::Item::Moment(a), Some(l)) if l.text == "ω_{1}" => Some(*a),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(arcs.len(), 1, "{sense}: one arc arrow ω₁, on the scheme");
+        assert_eq!(arcs[0].sweep.signum(), turn, "{sense}: the arrow's sense");
+    }
+}

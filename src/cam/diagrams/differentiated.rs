@@ -70,7 +70,7 @@ pub(super) fn differentiated(
         // dS/dφ ends where its smooth curve does, the method's error in view.
         let shock = if phase == 0 { spec.rise } else { spec.ret }.shock();
         let v = lie
-            .pass(h2, ["φ", "S", "dS/dφ"], ["P_2", "P_2′", "H_2"])
+            .pass(h2, ["φ", "S", "dS/dφ"], super::POLES[1])
             .differentiate(
                 (&mut views.s, &mut views.v),
                 &src,
@@ -78,7 +78,7 @@ pub(super) fn differentiated(
                 false,
             )?;
         let a = lie
-            .pass(h1, ["φ", "dS/dφ", "d^2S/dφ^2"], ["P_1", "P_1′", "H_1"])
+            .pass(h1, ["φ", "dS/dφ", "d^2S/dφ^2"], super::POLES[0])
             .differentiate(
                 (&mut views.v, &mut views.a),
                 &v.diagram()?,
