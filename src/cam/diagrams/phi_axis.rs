@@ -125,13 +125,16 @@ pub(super) fn mark(
             Role::Dimension,
             &[],
         );
-        // Centred at its place (the first the placer tries), kept there.
-        rec.label(id, p.label.clone(), at, DVec2::ZERO);
+        // Centred at its place (the first the placer tries), kept there; where the curve
+        // crosses the axis at the point, first tried in the quadrant it leaves clear.
+        let clear = crossing_side(values, i, side);
+        rec.label(id, p.label.clone(), at, DVec2::new(clear, 0.0));
         rec.keep_label_within(id, NUMBER_REACH_MM);
-        // Each side as far as keeps it nearer its point than the neighbour's on that side.
+        // Each side as far as keeps it nearer its point than the neighbour's on that side (at
+        // a crossing half as clear of the middle: the curve through its tick names its point).
         let side_room = |next: Option<&f64>| {
             next.map_or(NUMBER_SIDE_MM, |x| {
-                (x - xs[n]).abs() * 0.5 - NUMBER_CLEAR_MM
+                (x - xs[n]).abs() * 0.5 - NUMBER_CLEAR_MM * (1.0 - clear.abs() * 0.5)
             })
             .clamp(NUMBER_COLUMN_MM, NUMBER_SIDE_MM)
         };
@@ -140,6 +143,24 @@ pub(super) fn mark(
     }
     if phases {
         dimension_phases(rec, spec, points, phi, values);
+    }
+}
+
+/// Where the curve crosses the axis at point `i` (its neighbours' `values` of opposite signs:
+/// the sine law's d²S at the middle of its phase), the side of the point (−1 left, +1 right)
+/// whose quadrant on the number's `side` of the axis the curve leaves clear — away from the
+/// neighbour whose diagram stands there; elsewhere 0.
+fn crossing_side(values: &[f64], i: usize, side: f64) -> f64 {
+    let before = i.checked_sub(1).and_then(|k| values.get(k));
+    match (before, values.get(i + 1)) {
+        (Some(b), Some(a)) if b * a < 0.0 => {
+            if a * side > 0.0 {
+                -1.0
+            } else {
+                1.0
+            }
+        }
+        _ => 0.0,
     }
 }
 
@@ -283,4 +304,25 @@ fn numbered(points: &[Point], phi: Scale) -> Vec<(usize, usize)> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::crossing_side;
+
+    /// The sine law's d²S crosses the axis at the middle of its phase: falling through it (+
+    /// before, − after) it leaves clear the quadrant below left and above right; rising, below
+    /// right and above left. A number off a crossing is tried at its point.
+    #[test]
+    fn a_number_where_the_curve_crosses_is_tried_in_the_quadrant_left_clear() {
+        let falling = [0.17, 0.0, -0.17];
+        assert_eq!(crossing_side(&falling, 1, -1.0), -1.0);
+        assert_eq!(crossing_side(&falling, 1, 1.0), 1.0);
+        let rising = [-0.17, -0.0, 0.17];
+        assert_eq!(crossing_side(&rising, 1, -1.0), 1.0);
+        assert_eq!(crossing_side(&rising, 1, 1.0), -1.0);
+        assert_eq!(crossing_side(&[0.1, 0.17, 0.1], 1, -1.0), 0.0);
+        assert_eq!(crossing_side(&[0.0, 0.1, 0.17], 1, -1.0), 0.0);
+        assert_eq!(crossing_side(&falling, 0, -1.0), 0.0);
+    }
 }
