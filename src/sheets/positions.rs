@@ -125,9 +125,9 @@ fn scheme_block(
 /// width of the structural analysis' lines).
 const DATA_LINE_CHARS: usize = 64;
 
-/// The task's data as the sheet prints it (label markup): «Исходные данные», the lengths as
-/// many to a line as [`DATA_LINE_CHARS`] allows, ω₁ and the crank's sense of rotation (drawn
-/// by the arc arrow at its pivot on the scheme).
+/// The task's data as the sheet prints it (label markup): «Исходные данные», the lengths on
+/// as few lines as [`DATA_LINE_CHARS`] allows, ω₁ and the crank's sense of rotation (drawn by
+/// the arc arrow at its pivot on the scheme).
 fn data_lines(m: &crate::linkage::Mechanism, lang: Lang) -> Vec<String> {
     // The mechanism's data rows: its lengths, then ω₁.
     let rows = super::data::mechanism(m, lang);
@@ -139,20 +139,17 @@ fn data_lines(m: &crate::linkage::Mechanism, lang: Lang) -> Vec<String> {
         .split_last()
         .map_or((None, &written[..]), |(o, l)| (Some(o), l));
     let mut v = vec![Text::Data.get(lang).to_string()];
-    let printed = |s: &str| s.chars().filter(|c| !"_{}".contains(*c)).count();
-    let mut line = String::new();
-    for l in lengths {
-        if !line.is_empty() && printed(&line) + 2 + printed(l) > DATA_LINE_CHARS {
-            v.push(std::mem::take(&mut line));
-        }
-        if !line.is_empty() {
-            line.push_str(", ");
-        }
-        line.push_str(l);
-    }
-    if !line.is_empty() {
-        v.push(line);
-    }
+    // As few lines as the width allows, the lengths shared evenly between them.
+    let printed: usize = lengths
+        .iter()
+        .map(|l| l.chars().filter(|c| !"_{}".contains(*c)).count() + 2)
+        .sum();
+    let lines = printed.div_ceil(DATA_LINE_CHARS).max(1);
+    v.extend(
+        lengths
+            .chunks(lengths.len().div_ceil(lines).max(1))
+            .map(|c| c.join(", ")),
+    );
     let sense = match m.crank.sense {
         Sense::CounterClockwise => Text::CrankCounterClockwise,
         Sense::Clockwise => Text::CrankClockwise,

@@ -76,11 +76,13 @@ impl GroupKind for Prp {
             crossing,
         })
     }
+    /// Two sliders joined by a pin (the textbook's ПВП): link j a block on its guide, link i
+    /// a block on its own over it.
     fn draw(&self, pen: &mut Pen<'_>, _: &Program, b: &Built, [i, j]: [u32; 2]) {
         let joint = b.p[self.joint];
+        pen.slider(j, joint, b.angle[j as usize]);
         pen.slider(i, joint, b.angle[i as usize]);
         let u = DVec2::from_angle(b.angle[j as usize]) * 8.0;
-        pen.link(j, joint - u, joint + u);
         pen.anchors.extend([(i, joint), (j, joint + u)]);
         pen.joints.push(self.joint);
     }
