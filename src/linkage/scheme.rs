@@ -50,9 +50,10 @@ pub fn structure_figure(
     let factor = plan_mu / scale.value();
     let mut rec = Recorder::in_context("scheme", scale, ctx);
     let whole = shifted(first, factor, DVec2::ZERO);
-    let anchors = draw_links(&mut rec, prog, &whole, Role::Given, "scheme", Part::All);
+    // The frame's guides under the sliders on them, as on the plan of positions.
     let guides = frame_guides(prog, &[&whole], GUIDE_MM);
     draw_guides(&mut rec, &guides);
+    let anchors = draw_links(&mut rec, prog, &whole, Role::Given, "scheme", Part::All);
     draw_pivots(&mut rec, prog, &whole);
     crank_rotation(&mut rec, prog, &whole, sense);
     for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {

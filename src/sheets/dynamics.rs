@@ -238,13 +238,15 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
 /// Tables 9/10 in the seed's shape: per position M_с, J_пр (velocity plans | twin | error)
 /// and ΔT (graphical integration | exact | error).
 fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
-    let err = |g: f64, a: f64, scale: f64| {
+    // The error of `g` against `a` per cent of `of`; «—» where `a` is zero against `scale`.
+    let err_of = |g: f64, a: f64, of: f64, scale: f64| {
         if a.abs() <= 1e-9 * scale.max(1e-300) || a == 0.0 {
             "—".to_string()
         } else {
-            format_fixed((g - a) / a.abs() * 100.0, 2, lang)
+            format_fixed((g - a) / of * 100.0, 2, lang)
         }
     };
+    let err = |g: f64, a: f64, scale: f64| err_of(g, a, a.abs(), scale);
     let m_scale = d.analytic.iter().fold(0.0f64, |m, r| m.max(r.m().abs()));
     // The varying side's moment: M_с = −M_пр (a machine), M_д = M_пр (an engine).
     let (sgn, mv) = match d.spec.constant_moment {
@@ -285,7 +287,9 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
                 err(g.j, a.j, 1.0),
                 t_col.cell(dt, lang),
                 t_col.cell(dt_a, lang),
-                err(dt, dt_a, t_scale),
+                // ΔT is an integral read off its diagram: its error per cent of the diagram's
+                // largest ordinate (the V engine's pos. 2 is 5 J off a 20 J value).
+                err_of(dt, dt_a, t_scale, t_scale),
             ]
         })
         .collect();
@@ -307,13 +311,13 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
             ("φ, °".into(), 10.0),
             (format!("{mv}, {nm}"), 18.0),
             (format!("{mv}*, {nm}"), 18.0),
-            ("δ, %".into(), 12.0),
+            ("δ_{M}, %".into(), 12.0),
             (format!("J_{{пр}}, {kg}"), 24.0),
             (format!("J_{{пр}}*, {kg}"), 24.0),
-            ("δ, %".into(), 12.0),
+            ("δ_{J}, %".into(), 12.0),
             (format!("ΔT, {j}"), 16.0),
             (format!("ΔT*, {j}"), 16.0),
-            ("δ, %".into(), 12.0),
+            ("δ_{ΔT}, %".into(), 12.0),
         ],
         rows,
         size_mm: TABLE_MM,

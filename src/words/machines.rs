@@ -106,9 +106,9 @@ catalogue! {
             "The spoke's sections at the hub and at the rim are ellipses, b/a = {ratio}"
         ),
         Tables => (
-            "{M}, J_{пр}, ΔT по положениям: графически | аналитически (*) | δ, %",
-            "{M}, J_{пр}, ΔT за положеннями: графічно | аналітично (*) | δ, %",
-            "{M}, J_{пр}, ΔT by position: graphical | analytic (*) | δ, %"
+            "{M}, J_{пр}, ΔT по положениям: графически | аналитически (*) | δ, %; δ_{ΔT} — от наибольшего ΔT*",
+            "{M}, J_{пр}, ΔT за положеннями: графічно | аналітично (*) | δ, %; δ_{ΔT} — від найбільшого ΔT*",
+            "{M}, J_{пр}, ΔT by position: graphical | analytic (*) | δ, %; δ_{ΔT} of the largest ΔT*"
         ),
         EngineResults => (
             "A_{д}, M_{с}, маховик: графически и точно",
