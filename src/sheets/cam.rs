@@ -186,7 +186,7 @@ pub(super) fn diagram_block(d: &Diagrams, spec: &CamSpec, lang: Lang) -> Block {
         parts,
         scale: keyed(Key::CamScalePhi, d.phi),
     }
-    .with_edge_label_room_of(&crate::cam::POLES.concat())
+    .with_edge_label_room_of(|t| crate::cam::POLES.iter().flatten().any(|p| *p == t))
 }
 
 /// The cam's blocks laid out on one sheet if some order of them fits one, else in the

@@ -74,19 +74,11 @@ fn long_joint_labels(figure: &Figure) -> Option<((DVec2, DVec2), Vec<Side>)> {
         })
 }
 
-/// The box of every label of `figure` set beside its anchor in its own direction, a label's
-/// gap from it (where the placer tries it first), where any such box reaches past the
-/// figure's bounds; `None` when none does. A chart's axis numbers, written left of their
-/// ticks, stand outside the drawing by their width.
-pub(super) fn edge_labels(figure: &Figure) -> Option<(DVec2, DVec2)> {
-    edge_labels_of(figure, |_| true)
-}
-
-/// [`edge_labels`] of the labels whose text `keep` takes.
-pub(super) fn edge_labels_of(
-    figure: &Figure,
-    keep: impl Fn(&str) -> bool,
-) -> Option<(DVec2, DVec2)> {
+/// The box of every label of `figure` whose text `keep` takes, set beside its anchor in its
+/// own direction, a label's gap from it (where the placer tries it first), where any such box
+/// reaches past the figure's bounds; `None` when none does. A chart's axis numbers, written
+/// left of their ticks, stand outside the drawing by their width.
+pub(super) fn edge_labels(figure: &Figure, keep: impl Fn(&str) -> bool) -> Option<(DVec2, DVec2)> {
     let (lo, hi) = figure.bounds()?;
     let boxes: Vec<(DVec2, DVec2)> = figure
         .steps

@@ -123,17 +123,14 @@ impl Block {
     /// edge (the numbers of a chart's axis), so that it is not written over the next block's
     /// texts.
     pub fn with_edge_label_room(self) -> Self {
-        self.map_parts(|p| Part {
-            label_room: label_room::edge_labels(&p.figure),
-            ..p
-        })
+        self.with_edge_label_room_of(|_| true)
     }
 
-    /// [`Self::with_edge_label_room`] for the labels named `names` alone (the poles of a
-    /// diagram, left of its ordinate axis).
-    pub fn with_edge_label_room_of(self, names: &[&str]) -> Self {
+    /// [`Self::with_edge_label_room`] for the labels whose text `keep` takes alone (the
+    /// poles of a diagram, left of its ordinate axis).
+    pub fn with_edge_label_room_of(self, keep: impl Fn(&str) -> bool) -> Self {
         self.map_parts(|p| Part {
-            label_room: label_room::edge_labels_of(&p.figure, |t| names.contains(&t)),
+            label_room: label_room::edge_labels(&p.figure, &keep),
             ..p
         })
     }

@@ -12,7 +12,7 @@ use crate::linkage::{FourBar, OutputCoord, PositionPlan, Relation, Sense, Struct
 use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, Key, Lang, Quantity, Scale};
 use crate::study::Session;
-use crate::words::{unit_in, Text};
+use crate::words::{plain, unit_in, Text};
 use std::f64::consts::PI;
 
 /// The room of the structural scheme, mm.
@@ -140,10 +140,7 @@ fn data_lines(m: &crate::linkage::Mechanism, lang: Lang) -> Vec<String> {
         .map_or((None, &written[..]), |(o, l)| (Some(o), l));
     let mut v = vec![Text::Data.get(lang).to_string()];
     // As few lines as the width allows, the lengths shared evenly between them.
-    let printed: usize = lengths
-        .iter()
-        .map(|l| l.chars().filter(|c| !"_{}".contains(*c)).count() + 2)
-        .sum();
+    let printed: usize = lengths.iter().map(|l| plain(l).chars().count() + 2).sum();
     let lines = printed.div_ceil(DATA_LINE_CHARS).max(1);
     v.extend(
         lengths
