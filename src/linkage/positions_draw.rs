@@ -125,7 +125,12 @@ fn draw_links_from(
             );
         }
         pen.anchors.push((prog.crank_link, centre.lerp(pin, 0.5)));
-        pen.joints.extend([prog.centre, prog.pin]);
+        // The pin is a hinge where a group joins the crank; a crank a block slides along
+        // (the tangent mechanism) ends in a point of its own, drawn as one.
+        pen.joints.push(prog.centre);
+        if prog.links_of(prog.pin).len() > 1 {
+            pen.joints.push(prog.pin);
+        }
     }
     for op in &prog.ops {
         let Op::Dyad { group, links, dyad } = op else {

@@ -55,7 +55,7 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
     } else {
         (Vec::new(), Vec::new())
     };
-    let [drafting, scales] = head_lines(session, &a, &sc, lang);
+    let (drafting, scales) = super::plan_scales::head_lines(session, &a, &sc, lang);
     let verdicts = verdict_lines(&crate::kinematics::verdicts(&a.rows()), lang);
     let mut lines = Vec::new();
     let diagrams = diagram_views(&a, lang, &mut lines);
@@ -85,8 +85,8 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
             .chain(analytic.iter().cloned())
             .collect()
     };
-    let head = [drafting.clone(), scales]
-        .into_iter()
+    let head = std::iter::once(drafting.clone())
+        .chain(scales)
         .chain(verdicts.clone());
     let rest = rest_with(head.collect());
     let title = super::title_block(scene, Text::KinematicAnalysis.get(lang), Some(sc.l), lang);
@@ -153,28 +153,6 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
         &lay,
         [head, velocity, acceleration, analysis, diagrams, rest],
     )
-}
-
-/// The sheet's first lines: the drafting model's errors, the plans' scales.
-fn head_lines(session: &Session<'_>, a: &Kinematics, sc: &KinScales, lang: Lang) -> [String; 2] {
-    [
-        super::drafting_line(
-            session.drafting(),
-            if a.diagrams.is_some() {
-                super::Errs::PlansAndChords
-            } else {
-                super::Errs::Plans
-            },
-            lang,
-        ),
-        format!(
-            "{}: {}; {}: {}",
-            Text::VelocityPlans.get(lang),
-            sc.v.caption(lang),
-            Text::AccelerationPlans.get(lang),
-            sc.a.caption(lang)
-        ),
-    ]
 }
 
 /// The displacement diagram stacked on its two derivatives (a view), with its line of

@@ -27,6 +27,7 @@ pub use layout::ScaleKey;
 mod kinematics;
 mod label_room;
 mod pack;
+mod plan_scales;
 mod positions;
 pub mod protocol;
 mod refit;

@@ -96,13 +96,15 @@ fn scheme_block(
     st: Option<&Structure>,
     lang: Lang,
 ) -> Result<Block, BuildError> {
-    // The plan's extent, m.
+    let ctx = Context::for_model_size(SCHEME_MM, Drafting::EXACT)?;
+    // The mechanism's extent in the position the scheme shows, m (not the plan's: the
+    // tangent's block runs 1,5 m along its guide over the turn, 0,25 m in that position).
+    let mu = plan.figure.scale;
     let extent = plan
-        .figure
+        .scheme(None, mu, &ctx)
         .bounds()
         .map_or(1.0, |(lo, hi)| (hi - lo).max_element())
-        * plan.figure.scale.value();
-    let ctx = Context::for_model_size(SCHEME_MM, Drafting::EXACT)?;
+        * mu.value();
     let scheme = |s: Scale| plan.scheme(st, s, &ctx);
     let start =
         Scale::round_for(extent, SCHEME_MM, Quantity::Length).ok_or(BuildError::NoScale(extent))?;

@@ -73,6 +73,7 @@ mod plate_phrases;
 mod plate_rules;
 mod plates;
 mod rigid_links;
+mod scheme;
 mod seed_shaper;
 mod session;
 mod sheet_room;

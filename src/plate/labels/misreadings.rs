@@ -71,11 +71,11 @@ impl Placer<'_> {
     }
 
     /// Every word label written right under or over another word label without a shelf
-    /// between (read as one phrase: «involute» over «limit point»), and every word label or
-    /// chain of a point's names with a text right beside it on its row («интерференция 1»
-    /// before the axis's «0», «d₅′ ≡ e′ ≡ s₅′» before «b₃′»), takes the best place,
-    /// free or on a leader, paying for each text it would read on from or into, in the
-    /// placing order.
+    /// between (read as one phrase: «involute» over «limit point»), and every name or chain
+    /// of a point's names with a text right beside it on its row («интерференция 1» before
+    /// the axis's «0», «d₅′ ≡ e′ ≡ s₅′» before «b₃′», «S₂» after the link number «2»),
+    /// takes the best place, free or on a leader (a symbol: free), paying for each text it
+    /// would read on from or into, in the placing order.
     pub(super) fn part_phrases(
         &self,
         jobs: &[Job],
@@ -87,7 +87,7 @@ impl Placer<'_> {
         let readers: Vec<usize> = order
             .iter()
             .copied()
-            .filter(|&i| words(i) || phrase::is_chain(&jobs[i].text))
+            .filter(|&i| phrase::is_name(&jobs[i].text) || phrase::is_chain(&jobs[i].text))
             .collect();
         for &i in &readers {
             let Some(now) = slots[i] else { continue };
@@ -114,6 +114,12 @@ impl Placer<'_> {
             on_leader.near = on_leader.near.inflate(phrase::SIDE_GAP_MM);
             on_leader.fractions = true;
             let (a, cost_a) = self.best(&free, slots, i);
+            // A symbol takes a free place only: on a shelf it stands in a row of names as
+            // well (the shaper's R₃₋₂ on a shelf before «G₂ R₁₋₂»).
+            if !words(i) && !phrase::is_chain(&jobs[i].text) {
+                slots[i] = Some(a);
+                continue;
+            }
             let (b, cost_b) = self.best(&on_leader, slots, i);
             slots[i] = Some(if cost_a <= cost_b { a } else { b });
         }

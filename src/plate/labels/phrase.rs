@@ -34,6 +34,13 @@ pub(super) fn is_words(text: &str) -> bool {
     only && longest >= 3
 }
 
+/// Whether a label's text names something: it holds a letter (`H_{2}`, `S_{2}`, `P_{2}`),
+/// unlike a position's or a division's number. A text right beside it on its row reads on
+/// as part of the name (the slider-crank's link number «2» 2,4 mm before «S₂» read «2S₂»).
+pub(super) fn is_name(text: &str) -> bool {
+    text.chars().any(char::is_alphabetic)
+}
+
 /// Whether a label's text is a chain of names of one point joined by «≡» (`d_{5}′ ≡ e′ ≡
 /// s_{5}′`): a symbol right after or before it on its row reads as one more name of the
 /// point (the shaper's «d₅′ ≡ e′ ≡ s₅′ b₃′», b₃′ the point 10 mm away).
@@ -94,6 +101,18 @@ mod tests {
             "s_{a1} = 0",
         ] {
             assert!(!is_words(s), "{s}");
+        }
+    }
+
+    /// A name reads on into a text beside it; a position's or a division's number, a row
+    /// of them along an axis, does not.
+    #[test]
+    fn names_hold_a_letter_numbers_do_not() {
+        for n in ["S_{2}", "H_{2}", "P_{2}", "b_{3}′", "O", "φ"] {
+            assert!(is_name(n), "{n}");
+        }
+        for n in ["2", "10′", "12", "0"] {
+            assert!(!is_name(n), "{n}");
         }
     }
 

@@ -91,8 +91,9 @@ pub(super) struct Job<'a> {
     pub(super) fractions: bool,
     /// In [`Placer::part_phrases`] (once every label stands where it will), for a word
     /// label: the other word labels, each with whether it is on a shelf. A place pays for
-    /// each it reads on from or into ([`phrase::read_as_one`]) and for each text beside it
-    /// on its row ([`phrase::beside`]).
+    /// each it reads on from or into ([`phrase::read_as_one`]), for each text beside it
+    /// on its row ([`phrase::beside`]) and for each shelf right over it
+    /// ([`leader::under_shelf`]).
     pub(super) phrases: Option<Vec<(Rect, bool)>>,
 }
 
@@ -433,6 +434,12 @@ impl<'a> Placer<'a> {
                     .texts
                     .iter()
                     .filter(|t| phrase::beside(rect, t))
+                    .count()
+                // Parted from one text, not stood under another's shelf as a fraction.
+                + others
+                    .leaders
+                    .iter()
+                    .filter(|l| leader::under_shelf(l, rect))
                     .count();
             cost += read_on as f64 * phrase::STACKED;
         }
