@@ -451,6 +451,15 @@ fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition],
                     (pb, pa)
                 };
                 rec.dimension("stroke of the slider", (from, to, off), "H");
+                // The point at the other extreme, primed (E′), as the stroke's other end: a
+                // dot of its own on one link, the hinge drawn there named (B′).
+                let item = if prog.links_of(i).len() < 2 {
+                    Item::Point(pb)
+                } else {
+                    Item::Text(pb)
+                };
+                let id = rec.draw(format!("point {}′", prog.names[i]), item, Role::Given, &[]);
+                rec.label(id, format!("{}′", prog.names[i]), pb, n * off.signum());
             }
         }
     }

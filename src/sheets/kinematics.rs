@@ -445,14 +445,26 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
         let name = symbols::subscripted(&c.name);
         (format!("{name}, {}", unit_in(&c.unit, lang)), col_w)
     }));
-    // Each column's precision from its largest magnitude over the positions.
+    // Each column's precision from its largest magnitude over the positions; the angles'
+    // columns (φ₁, φ₂, φ₄ …) to one precision, that of their largest (45,0 beside 45,00
+    // read as two kinds of angle).
+    let angle = |c: usize| t.columns[c].unit == "°";
+    let values = |keep: &dyn Fn(usize) -> bool| {
+        digits::Column::of(t.rows.iter().flat_map(|(_, v)| {
+            v.iter()
+                .enumerate()
+                .filter(|(k, _)| keep(*k))
+                .filter_map(|(_, x)| *x)
+        }))
+    };
+    let angles = values(&|k| k < shown && angle(k));
     let precision: Vec<digits::Column> = (0..shown)
         .map(|c| {
-            digits::Column::of(
-                t.rows
-                    .iter()
-                    .filter_map(|(_, v)| v.get(c).copied().flatten()),
-            )
+            if angle(c) {
+                angles
+            } else {
+                values(&|k| k == c)
+            }
         })
         .collect();
     let rows = t

@@ -338,7 +338,13 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
             OutputCoord::Rocker(l) => v.push(format!(
                 "{} {l}: {} = {}",
                 Text::SwingOfLink.get(lang),
-                if ex.theta_is_swing(r) { "θ" } else { "ψ" },
+                // The swing is ψ; where it is θ as well (the shaper's slotted lever, square
+                // to the crank at both extremes) it is said so, as seed 000 names it θ.
+                if ex.theta_is_swing(r) {
+                    "ψ = θ"
+                } else {
+                    "ψ"
+                },
                 super::digits::degrees(r.max - r.min, lang)
             )),
             OutputCoord::Slider(i, _) => v.push(format!(

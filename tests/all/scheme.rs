@@ -105,3 +105,63 @@ fn the_tangent_schemes_crank_ends_in_a_point_and_its_own_scales_are_stated() {
         "{lines:#?}"
     );
 }
+
+/// The shaper's sheets (a third reader's marks): the slider's point at the other extreme is
+/// drawn and named E′, the stroke H's other end; the rocker's swing is ψ, said to be θ as
+/// well (seed 000 names it θ: the slotted lever is square to the crank at both extremes).
+#[test]
+fn the_shapers_plan_names_the_strokes_other_end_and_its_swing_is_psi() {
+    let s = scene::load(&root().join("constructions/shaper.toml")).expect("shaper");
+    let session = Session::new(&s, Drafting::EXACT);
+    let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+    let kinematic: Vec<_> = all
+        .iter()
+        .filter(|(kind, _)| *kind == tmm::scene::PlateKind::Kinematics)
+        .map(|(_, p)| p)
+        .collect();
+    let primed = kinematic
+        .iter()
+        .flat_map(|p| &p.views)
+        .flat_map(|v| &v.figure.steps)
+        .filter(|st| st.label.as_ref().is_some_and(|l| l.text == "E′"))
+        .count();
+    assert_eq!(primed, 1, "E′ once, on the plan of positions");
+    let lines: Vec<String> = kinematic
+        .iter()
+        .flat_map(|p| &p.texts)
+        .flat_map(|t| t.lines.clone())
+        .collect();
+    assert!(
+        lines
+            .iter()
+            .any(|l| l == "Угол размаха звена 3: ψ = θ = 38,00°"),
+        "{lines:#?}"
+    );
+}
+
+/// The analytic table writes its angles (φ₁, φ₂, φ₄) to one precision: the V engine's
+/// read 45,0 beside 45,00 and 149,5.
+#[test]
+fn the_analytic_tables_angles_share_one_precision() {
+    let s = scene::load(&root().join("constructions/v-engine.toml")).expect("v-engine");
+    let session = Session::new(&s, Drafting::EXACT);
+    let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+    let table = all
+        .iter()
+        .flat_map(|(_, p)| &p.tables)
+        .find(|t| t.title == "Аналитический расчёт")
+        .expect("the analytic table");
+    let angles: Vec<usize> = (0..table.columns.len())
+        .filter(|&c| table.columns[c].0.ends_with(", °"))
+        .collect();
+    assert!(angles.len() >= 3, "{:?}", table.columns);
+    let decimals = |cell: &str| cell.split_once(',').map_or(0, |(_, d)| d.len());
+    let seen: std::collections::BTreeSet<usize> = table
+        .rows
+        .iter()
+        .flat_map(|r| angles.iter().map(|&c| r[c].as_str()))
+        .filter(|cell| !cell.is_empty() && *cell != "0")
+        .map(decimals)
+        .collect();
+    assert_eq!(seen.len(), 1, "decimals of the angles: {seen:?}");
+}
