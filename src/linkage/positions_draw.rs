@@ -402,6 +402,16 @@ pub(super) fn draw_plan(
     }
 }
 
+/// What names point `k` drawn at `at`: a point on one link only (a centre of mass, the
+/// shaper's E) is a dot of its own; a joint's letter names the hinge or the block drawn there.
+pub(super) fn named_point(prog: &Program, k: usize, at: DVec2) -> (Item, Role) {
+    if prog.links_of(k).len() < 2 {
+        (Item::Point(at), Role::Given)
+    } else {
+        (Item::Text(at), Role::Dimension)
+    }
+}
+
 /// The shortest arc θ is marked with, mm: below it the crank's extremes are drawn in line.
 const THETA_ARC_MM: f64 = 1.0;
 
@@ -451,14 +461,9 @@ fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition],
                     (pb, pa)
                 };
                 rec.dimension("stroke of the slider", (from, to, off), "H");
-                // The point at the other extreme, primed (E′), as the stroke's other end: a
-                // dot of its own on one link, the hinge drawn there named (B′).
-                let item = if prog.links_of(i).len() < 2 {
-                    Item::Point(pb)
-                } else {
-                    Item::Text(pb)
-                };
-                let id = rec.draw(format!("point {}′", prog.names[i]), item, Role::Given, &[]);
+                // The point at the other extreme, primed (E′, B′), as the stroke's other end.
+                let (item, role) = named_point(prog, i, pb);
+                let id = rec.draw(format!("point {}′", prog.names[i]), item, role, &[]);
                 rec.label(id, format!("{}′", prog.names[i]), pb, n * off.signum());
             }
         }

@@ -3,7 +3,9 @@
 
 use super::construction::Built;
 use super::model::Sense;
-use super::positions_draw::{draw_guides, draw_links, draw_pivots, frame_guides, Part};
+use super::positions_draw::{
+    draw_guides, draw_links, draw_pivots, frame_guides, named_point, Part,
+};
 use super::program::Program;
 use super::structure::Structure;
 use crate::construct::{Context, Figure, Item, Recorder, Role};
@@ -57,13 +59,7 @@ pub fn structure_figure(
     draw_pivots(&mut rec, prog, &whole);
     crank_rotation(&mut rec, prog, &whole, sense);
     for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
-        // A point on one link only (a centre of mass, a point of a guide's direction) is a
-        // dot of its own; a joint's letter names the hinge or the block drawn there.
-        let (item, role) = if prog.links_of(k).len() < 2 {
-            (Item::Point(whole.p[k]), Role::Given)
-        } else {
-            (Item::Text(whole.p[k]), Role::Dimension)
-        };
+        let (item, role) = named_point(prog, k, whole.p[k]);
         let id = rec.draw(format!("point {name}"), item, role, &[]);
         rec.label(
             id,
