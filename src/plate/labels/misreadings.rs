@@ -84,11 +84,15 @@ impl Placer<'_> {
         points: &[(usize, DVec2)],
     ) {
         let words = |i: usize| phrase::is_words(&jobs[i].text);
-        let readers: Vec<usize> = order
+        // The words and chains first: a symbol moved off one first leaves it a hair past the
+        // gap, still read on (the shaper's «d₅′ ≡ e′ ≡ s₅′» before «b₃′», b₃′ moved 1,4 mm).
+        let is_phrase = |i: &usize| words(*i) || phrase::is_chain(&jobs[*i].text);
+        let (mut readers, symbols): (Vec<usize>, Vec<usize>) = order
             .iter()
             .copied()
             .filter(|&i| phrase::is_name(&jobs[i].text) || phrase::is_chain(&jobs[i].text))
-            .collect();
+            .partition(is_phrase);
+        readers.extend(symbols);
         for &i in &readers {
             let Some(now) = slots[i] else { continue };
             let others: Vec<(Rect, bool)> = readers
@@ -116,7 +120,7 @@ impl Placer<'_> {
             let (a, cost_a) = self.best(&free, slots, i);
             // A symbol takes a free place only: on a shelf it stands in a row of names as
             // well (the shaper's R₃₋₂ on a shelf before «G₂ R₁₋₂»).
-            if !words(i) && !phrase::is_chain(&jobs[i].text) {
+            if !is_phrase(&i) {
                 slots[i] = Some(a);
                 continue;
             }
