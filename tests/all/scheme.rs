@@ -3,13 +3,28 @@
 
 use std::path::PathBuf;
 use tmm::construct::Drafting;
+use tmm::plate::Plate;
 use tmm::scale::Lang;
-use tmm::scene;
+use tmm::scene::{self, PlateKind};
 use tmm::sheets;
 use tmm::study::Session;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The Russian sheets of the scene `text` (read from `constructions/{name}.toml`).
+fn sheets_of(name: &str, text: &str) -> Vec<(PlateKind, Plate)> {
+    let path = root().join(format!("constructions/{name}.toml"));
+    let s = scene::parse(text, &path).expect(name);
+    let session = Session::new(&s, Drafting::EXACT);
+    sheets::build_all(&session, Lang::Ru).expect("plates")
+}
+
+/// The Russian sheets of the shipped scene `name`.
+fn shipped(name: &str) -> Vec<(PlateKind, Plate)> {
+    let path = root().join(format!("constructions/{name}.toml"));
+    sheets_of(name, &std::fs::read_to_string(path).expect(name))
 }
 
 /// The kinematic sheet states the task's data beside the structural analysis — the lengths,
@@ -25,9 +40,7 @@ fn the_scheme_draws_the_cranks_sense_and_the_sheet_states_the_data() {
         ("ccw", "против часовой стрелки", 1.0),
     ] {
         let text = given.replace("sense = \"cw\"", &format!("sense = \"{sense}\""));
-        let s = scene::parse(&text, &root().join("constructions/four-bar.toml")).expect("four-bar");
-        let session = Session::new(&s, Drafting::EXACT);
-        let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+        let all = sheets_of("four-bar", &text);
         let (_, sheet) = all.first().expect("the kinematic sheet");
         let lines: Vec<String> = sheet.texts.iter().flat_map(|t| t.lines.clone()).collect();
         let at = lines
@@ -69,10 +82,7 @@ fn the_scheme_draws_the_cranks_sense_and_the_sheet_states_the_data() {
 /// named where the sheet states the plans' μ.
 #[test]
 fn the_tangent_schemes_crank_ends_in_a_point_and_its_own_scales_are_stated() {
-    let path = root().join("constructions/tangent.toml");
-    let s = scene::load(&path).expect("tangent");
-    let session = Session::new(&s, Drafting::EXACT);
-    let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+    let all = shipped("tangent");
     let (_, sheet) = all.first().expect("the kinematic sheet");
     let view = |start: &str| {
         sheet
@@ -111,12 +121,10 @@ fn the_tangent_schemes_crank_ends_in_a_point_and_its_own_scales_are_stated() {
 /// well (seed 000 names it θ: the slotted lever is square to the crank at both extremes).
 #[test]
 fn the_shapers_plan_names_the_strokes_other_end_and_its_swing_is_psi() {
-    let s = scene::load(&root().join("constructions/shaper.toml")).expect("shaper");
-    let session = Session::new(&s, Drafting::EXACT);
-    let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+    let all = shipped("shaper");
     let kinematic: Vec<_> = all
         .iter()
-        .filter(|(kind, _)| *kind == tmm::scene::PlateKind::Kinematics)
+        .filter(|(kind, _)| *kind == PlateKind::Kinematics)
         .map(|(_, p)| p)
         .collect();
     let primed = kinematic
@@ -143,9 +151,7 @@ fn the_shapers_plan_names_the_strokes_other_end_and_its_swing_is_psi() {
 /// read 45,0 beside 45,00 and 149,5.
 #[test]
 fn the_analytic_tables_angles_share_one_precision() {
-    let s = scene::load(&root().join("constructions/v-engine.toml")).expect("v-engine");
-    let session = Session::new(&s, Drafting::EXACT);
-    let all = sheets::build_all(&session, Lang::Ru).expect("plates");
+    let all = shipped("v-engine");
     let table = all
         .iter()
         .flat_map(|(_, p)| &p.tables)
