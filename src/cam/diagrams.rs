@@ -44,7 +44,8 @@ pub const POLES: [[&str; 3]; 2] = [["P_1", "P_1′", "H_1"], ["P_2", "P_2′", "
 
 /// The return's pole lies this far past the end of the return, mm.
 const FAN_GAP_MM: f64 = 12.0;
-/// The pole distance's dimension line lies this far below the lowest ray, mm.
+/// The pole distance's dimension line lies this far below the lowest ray and below the φ
+/// axis's numbers, mm.
 const POLE_DIMENSION_MM: f64 = 6.0;
 /// Length of the arrows "∞" of a rigid shock on the d²S/dφ² diagram, mm.
 const SHOCK_MM: f64 = 15.0;
@@ -264,9 +265,9 @@ impl Pass<'_> {
     /// The layout: the diagrams at the phase's start in their figures; the rise's pole H
     /// left of the ordinate axis; the return's [`FAN_GAP_MM`] past the return's end, its
     /// rays running to the vertical H further right; the dimension H [`POLE_DIMENSION_MM`]
-    /// below the lowest level the rays reach (`levels`, mm).
+    /// below the lowest level the rays reach (`levels`, mm) and the φ axis's numbers.
     fn layout(&self, levels: &[f64]) -> Layout {
-        let lowest = levels.iter().fold(0.0f64, |m, &y| m.min(y));
+        let lowest = levels.iter().fold(-phi_axis::NUMBERS_MM, |m, &y| m.min(y));
         let [rise, ret, distance] = self.poles;
         let (shift, end_x) = self.at;
         let [x, given, built] = self.names;

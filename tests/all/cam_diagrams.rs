@@ -9,7 +9,7 @@ use std::sync::Arc;
 use tmm::cam::{Analogue, Cam};
 use tmm::construct::{Drafting, Figure, Item, Role, Step};
 use tmm::geom::DVec2;
-use tmm::plate::{Plate, Rect};
+use tmm::plate::{PlacedLabel, Plate, Rect};
 use tmm::scene::PlateKind;
 use tmm::study::Session;
 use tmm::Lang;
@@ -454,6 +454,31 @@ fn every_point_is_numbered_on_every_phi_axis() {
     }
 }
 
+/// Every cam sheet of every cam scene, the special cams' too, in every language, as the
+/// sheet lays it out: (scene and language, the sheet, its labels).
+fn every_cam_sheet() -> Vec<(String, Plate, Vec<PlacedLabel>)> {
+    let mut out = Vec::new();
+    for name in SCENES.iter().chain(&["cam-flat-rocker", "cam-sliding"]) {
+        let s = scene(name);
+        let session = Session::new(&s, Drafting::HAND);
+        for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+            let plates =
+                tmm::build(&session, PlateKind::Cam, lang).unwrap_or_else(|e| panic!("{e}"));
+            for p in plates {
+                let labels = tmm::plate::layout(&p).labels;
+                out.push((format!("{name} {lang:?}"), p, labels));
+            }
+        }
+    }
+    out
+}
+
+/// Whether label `l` of plate `p` names a step whose note starts with `note`.
+fn noted(p: &Plate, l: &PlacedLabel, note: &str) -> bool {
+    let steps = &p.views[l.view].figure.steps;
+    (l.steps.iter()).any(|id| steps[id.0 as usize].note.starts_with(note))
+}
+
 /// Every number on a φ axis stands in its point's column as the sheet lays it out — its
 /// middle at least 1 mm nearer its own point than any other numbered point of the axis, and
 /// never on a leader — on every cam sheet, the special cams' too (issue 45: cam-flat-rocker
@@ -461,46 +486,61 @@ fn every_point_is_numbered_on_every_phi_axis() {
 /// 19 on a leader to the place it left).
 #[test]
 fn every_phi_axis_number_stands_under_its_point() {
-    let names = SCENES.iter().chain(&["cam-flat-rocker", "cam-sliding"]);
-    for name in names {
-        let s = scene(name);
-        let session = Session::new(&s, Drafting::HAND);
-        for lang in [Lang::Ru, Lang::Uk, Lang::En] {
-            let plates =
-                tmm::build(&session, PlateKind::Cam, lang).unwrap_or_else(|e| panic!("{e}"));
-            let mut seen = 0;
-            for p in &plates {
-                let labels = tmm::plate::layout(p).labels;
-                let numbers: Vec<_> = labels
-                    .iter()
-                    .filter(|l| {
-                        let steps = &p.views[l.view].figure.steps;
-                        (l.steps.iter())
-                            .any(|id| steps[id.0 as usize].note.starts_with("number of point "))
-                    })
-                    .collect();
-                seen += numbers.len();
-                for l in &numbers {
-                    let middle = (l.rect.min.x + l.rect.max.x) * 0.5;
-                    let own = (middle - l.anchor.x).abs();
-                    let other = (numbers.iter())
-                        .filter(|o| o.view == l.view && o.anchor.x != l.anchor.x)
-                        .map(|o| (middle - o.anchor.x).abs())
-                        .fold(f64::INFINITY, f64::min);
-                    assert!(
-                        own + 1.0 <= other + 1e-6 && l.leader.is_none(),
-                        "{name} {lang:?}: {} stands {own:.2} mm from its point, {other:.2} mm \
-                         from the next{}",
-                        l.text,
-                        if l.leader.is_some() {
-                            ", on a leader"
-                        } else {
-                            ""
-                        }
-                    );
+    let mut seen = std::collections::BTreeMap::<String, usize>::new();
+    for (at, p, labels) in every_cam_sheet() {
+        let numbers: Vec<_> = (labels.iter())
+            .filter(|l| noted(&p, l, "number of point "))
+            .collect();
+        *seen.entry(at.clone()).or_default() += numbers.len();
+        for l in &numbers {
+            let middle = (l.rect.min.x + l.rect.max.x) * 0.5;
+            let own = (middle - l.anchor.x).abs();
+            let other = (numbers.iter())
+                .filter(|o| o.view == l.view && o.anchor.x != l.anchor.x)
+                .map(|o| (middle - o.anchor.x).abs())
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                own + 1.0 <= other + 1e-6 && l.leader.is_none(),
+                "{at}: {} stands {own:.2} mm from its point, {other:.2} mm from the next{}",
+                l.text,
+                if l.leader.is_some() {
+                    ", on a leader"
+                } else {
+                    ""
                 }
-            }
-            assert!(seen > 30, "{name} {lang:?}: {seen} numbers on the φ axes");
+            );
         }
+    }
+    assert_eq!(seen.len(), 27, "{seen:?}");
+    for (at, n) in seen {
+        assert!(n > 30, "{at}: {n} numbers on the φ axes");
+    }
+}
+
+/// The pole distance's name (H₁, H₂) reads alone: no number of the φ axis stands on its row
+/// within 4 mm of it, on every cam sheet in every language (issue 45: the rise's H₂, 6 mm
+/// under the axis, stood in the second row of numbers and read «H₂ 0»).
+#[test]
+fn the_pole_distance_reads_apart_from_the_phi_axis_numbers() {
+    let mut poles = std::collections::BTreeMap::<String, usize>::new();
+    for (at, p, labels) in every_cam_sheet() {
+        for h in labels.iter().filter(|l| noted(&p, l, "pole distance ")) {
+            *poles.entry(at.clone()).or_default() += 1;
+            for n in labels.iter().filter(|l| noted(&p, l, "number of point ")) {
+                let (a, b) = (h.rect, n.rect);
+                let same_row = a.min.y < b.max.y && b.min.y < a.max.y;
+                let gap = (b.min.x - a.max.x).max(a.min.x - b.max.x);
+                assert!(
+                    !same_row || gap >= 4.0,
+                    "{at}: «{} {}» on one row, {gap:.1} mm apart",
+                    h.text,
+                    n.text
+                );
+            }
+        }
+    }
+    assert_eq!(poles.len(), 27, "{poles:?}");
+    for (at, n) in poles {
+        assert!(n >= 4, "{at}: {n} pole distances named");
     }
 }

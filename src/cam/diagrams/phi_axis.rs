@@ -35,12 +35,16 @@ const DIGIT_MM: f64 = 3.1;
 /// rows, every other one a row further from the axis ([`ROW_MM`]); nearer than half of it,
 /// every k-th point of a phase is numbered, its first and last always.
 const NUMBER_GAP_MM: f64 = 1.2;
-/// A number's middle stands this far from the axis in the first row, mm: half its box (the
-/// labels' 4,8 mm type) and a millimetre's gap.
-const NUMBER_DROP_MM: f64 = 3.4;
+/// Half a number's box at the labels' 4,8 mm type, mm.
+const HALF_BOX_MM: f64 = 2.4;
+/// A number's middle stands this far from the axis in the first row, mm: half its box and a
+/// millimetre's gap.
+const NUMBER_DROP_MM: f64 = HALF_BOX_MM + 1.0;
 /// The second row of numbers stands this much further from the axis, mm: a box and a gap.
 /// A phase's first and last numbers stand in it, clear of the boundary's tick.
 const ROW_MM: f64 = 5.6;
+/// The numbers reach this far from the axis, mm: the second row's middle and half a box.
+pub(super) const NUMBERS_MM: f64 = NUMBER_DROP_MM + ROW_MM + HALF_BOX_MM;
 /// A number stands at most this far from its place, sheet mm: at its point, not flown off
 /// above the curve where the diagram's lines crowd (the placer's limit).
 const NUMBER_REACH_MM: f64 = 1.5;
