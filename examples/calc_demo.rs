@@ -7,8 +7,8 @@
 use std::f64::consts::TAU;
 use std::path::Path;
 use tmm::calculus::{
-    derivative_scale, integral_scale, integrate_chords, pole_for, Diagram, Layout, Method,
-    Sampling, Scales,
+    derivative_scale, integral_scale, integrate_chords, pole_for, Derivation, Diagram,
+    DiagramLayout, Sampling, Scales,
 };
 use tmm::construct::{Context, Drafting, Figure, Recorder};
 use tmm::geom::DVec2;
@@ -49,25 +49,25 @@ fn main() -> Res<()> {
     let h1 = pole_for(&s, sc, 20.0)?;
     let mu_v = derivative_scale(mu_s, mu_phi, h1, Quantity::Length)?;
     let mut rec1 = recorder("dS/dφ", mu_v)?;
-    let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, -44.0)).pole_named("P_1", "H_1");
-    let d1 = Method::Chords.differentiate(&mut rec1, &s, sc, h1, &lay1)?;
+    let lay1 = DiagramLayout::new(DVec2::ZERO, DVec2::new(0.0, -44.0)).pole_named("P_1", "H_1");
+    let d1 = Derivation::Chords.differentiate(&mut rec1, &s, sc, h1, &lay1)?;
     let v = d1.diagram()?;
     let sc2 = Scales { x: mu_phi, y: mu_v };
     let h2 = pole_for(&v, sc2, 20.0)?;
     let mu_a = derivative_scale(mu_v, mu_phi, h2, Quantity::Length)?;
     let mut rec2 = recorder("d²S/dφ²", mu_a)?;
-    let lay2 = Layout::new(lay1.origin, DVec2::new(0.0, -108.0))
+    let lay2 = DiagramLayout::new(lay1.origin, DVec2::new(0.0, -108.0))
         .named("φ", "dS/dφ", "d^2S/dφ^2")
         .pole_named("P_2", "H_2")
         .with_source(false);
-    let d2 = Method::Chords.differentiate(&mut rec2, &v, sc2, h2, &lay2)?;
+    let d2 = Derivation::Chords.differentiate(&mut rec2, &v, sc2, h2, &lay2)?;
 
     // Right column: dS/dφ (mid-interval values) integrated back to S.
     let x_r = 200.0;
     let mid = Diagram::new(s.x0, s.dx, d1.mid.clone(), true)?;
     let mu_int = integral_scale(mu_v, mu_phi, h1, Quantity::Length)?;
     let mut rec3 = recorder("S", mu_int)?;
-    let lay3 = Layout::new(DVec2::new(x_r, -20.0), DVec2::new(x_r, -110.0))
+    let lay3 = DiagramLayout::new(DVec2::new(x_r, -20.0), DVec2::new(x_r, -110.0))
         .named("φ", "dS/dφ", "S")
         .pole_named("P_3", "H_3");
     let int = integrate_chords(&mut rec3, &mid, Sampling::Midpoints, sc2, h1, 0.0, &lay3)?;

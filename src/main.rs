@@ -262,7 +262,7 @@ fn batch(template: &Path, grid: &Path, how: &RenderArgs) -> Result<(), Failure> 
 }
 
 /// Each variant of a batch on a line (files on stdout, its diagnosis on stderr); the failed.
-fn print_outcomes(outcomes: &[tmm::batch::Outcome]) -> usize {
+fn print_outcomes(outcomes: &[tmm::batch::VariantOutcome]) -> usize {
     let mut failed = 0;
     for o in outcomes {
         match &o.result {

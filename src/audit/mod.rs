@@ -47,7 +47,7 @@ mod write;
 
 pub use digits::{Edit, NumberError, Written};
 pub use read::read_table;
-pub use targets::{Notation, Quantity};
+pub use targets::{Notation, TableQuantity};
 pub use units::Unit;
 pub use write::{to_json, to_markdown, to_sheet};
 
@@ -166,7 +166,7 @@ pub enum Slip {
     /// The value of another position (a shifted row).
     Position(String),
     /// The value of another quantity (swapped columns, or copied from the next column).
-    Quantity(Quantity),
+    Quantity(TableQuantity),
     /// A known wrong formula.
     Formula(Formula),
 }
@@ -237,7 +237,7 @@ pub enum Held {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Checked {
     /// The report's quantity.
-    pub quantity: Quantity,
+    pub quantity: TableQuantity,
     /// The construction whose value it is; `None`: a cell of the analytic table.
     pub method: Option<Method>,
     /// How its tolerance is held.

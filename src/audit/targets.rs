@@ -17,7 +17,7 @@ use crate::scale::Lang;
 
 /// A quantity a student's table names.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Quantity {
+pub struct TableQuantity {
     /// The name: the report's (`v_B3_B1`, `omega_3`), or for a column of the analytic table
     /// that no row has, its name in the same spelling (`phi_3`, `L_3`).
     pub name: String,
@@ -38,7 +38,7 @@ pub enum Notation {
     Column(String),
 }
 
-impl Quantity {
+impl TableQuantity {
     /// The quantity in the textbook's notation in `lang` (label markup).
     pub fn notation(&self, lang: Lang) -> String {
         match &self.notation {
@@ -60,7 +60,7 @@ impl Quantity {
 #[derive(Debug, Clone)]
 pub(super) struct Target {
     /// Its quantity.
-    pub quantity: Quantity,
+    pub quantity: TableQuantity,
     /// Its position's label; `None` for a quantity of the whole scene.
     pub position: Option<String>,
     /// The construction that read it; `None` for a cell of an analytic table.
@@ -86,7 +86,7 @@ pub(super) fn targets(
     let mut out: Vec<Target> = rows
         .iter()
         .map(|r| Target {
-            quantity: Quantity {
+            quantity: TableQuantity {
                 name: r.quantity(),
                 unit: r.unit(),
                 turn: false,
@@ -175,7 +175,7 @@ fn cells(table: &Table, rows: &[Row], turning: &[(String, String, f64)]) -> Vec<
 /// The quantity of the analytic table's column `name` (`φ_3`, `V_B3B1`) of unit `unit`
 /// (`°`, `1/s`): the report's row of that quantity when there is one (`v_B3_B1`: the
 /// subject's parts apart), else the name in the report's spelling (`phi_3`, `L_3`).
-fn column_quantity(name: &str, unit: &str, rows: &[Row]) -> Option<Quantity> {
+fn column_quantity(name: &str, unit: &str, rows: &[Row]) -> Option<TableQuantity> {
     let (head, sub) = name.split_once('_')?;
     let prefix = match head {
         "φ" => "phi",
@@ -196,13 +196,13 @@ fn column_quantity(name: &str, unit: &str, rows: &[Row]) -> Option<Quantity> {
                 .find(joined)
         });
     Some(match row {
-        Some(r) => Quantity {
+        Some(r) => TableQuantity {
             name: r.quantity(),
             unit: si,
             turn: false,
             notation: Notation::Row(r.key.symbol, r.key.subject.clone()),
         },
-        None => Quantity {
+        None => TableQuantity {
             name: format!("{prefix}_{sub}"),
             unit: si,
             turn: head == "φ",

@@ -2,7 +2,7 @@
 //! each variant's exact values as CSV and as a sheet, written together.
 
 use super::GridError;
-use super::Outcome;
+use super::VariantOutcome;
 use crate::check::Row;
 use crate::construct::Drafting;
 use crate::scene::{AnswerItem, Scene};
@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 /// A column of the answer key: the item and the template's row it names (its quantity,
 /// position, method and unit).
 #[derive(Debug, Clone)]
-pub struct Column {
+pub struct KeyColumn {
     /// The report row it names.
     pub item: AnswerItem,
     /// The template's row.
@@ -29,7 +29,7 @@ pub(super) fn row_of<'r>(rows: &'r [Row], item: &AnswerItem) -> Option<&'r Row> 
 ///
 /// # Errors
 /// [`GridError::Template`] when the template's report cannot be made or lacks a row.
-pub fn answer_columns(template: &Scene, drafting: Drafting) -> Result<Vec<Column>, GridError> {
+pub fn answer_columns(template: &Scene, drafting: Drafting) -> Result<Vec<KeyColumn>, GridError> {
     let refuse = |message: String| GridError::Template {
         path: template.path.clone(),
         message,
@@ -51,7 +51,7 @@ pub fn answer_columns(template: &Scene, drafting: Drafting) -> Result<Vec<Column
                     item.name()
                 ))
             })?;
-            Ok(Column {
+            Ok(KeyColumn {
                 item: item.clone(),
                 row: row.clone(),
             })
@@ -61,7 +61,7 @@ pub fn answer_columns(template: &Scene, drafting: Drafting) -> Result<Vec<Column
 
 /// The answer key as CSV: `variant`, a column per value (`v_E@3 (m/s)`: the exact value,
 /// SI, 6 significant digits), and `status` (`ok`, or why the variant was not drawn).
-pub fn answer_key_csv(columns: &[Column], outcomes: &[Outcome]) -> String {
+pub fn answer_key_csv(columns: &[KeyColumn], outcomes: &[VariantOutcome]) -> String {
     let mut w = csv::Writer::from_writer(Vec::new());
     let mut header = vec!["variant".to_string()];
     header.extend(
@@ -104,8 +104,8 @@ pub fn answer_key_csv(columns: &[Column], outcomes: &[Outcome]) -> String {
 /// The sheet cannot be laid out or written as PDF (the message says why).
 pub fn answer_key_pdf(
     template: &Scene,
-    columns: &[Column],
-    outcomes: &[Outcome],
+    columns: &[KeyColumn],
+    outcomes: &[VariantOutcome],
     lang: crate::scale::Lang,
 ) -> Result<Vec<u8>, String> {
     let heads: Vec<(Row, bool)> = columns
@@ -135,8 +135,8 @@ pub fn answer_key_pdf(
 pub fn write_answer_key(
     template: &Scene,
     out: &Path,
-    columns: &[Column],
-    outcomes: &[Outcome],
+    columns: &[KeyColumn],
+    outcomes: &[VariantOutcome],
     lang: crate::scale::Lang,
 ) -> Result<Vec<PathBuf>, (Option<PathBuf>, String)> {
     let csv = answer_key_csv(columns, outcomes).into_bytes();

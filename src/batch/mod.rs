@@ -24,7 +24,7 @@ use crate::scene;
 use crate::scene::user_table::{self, CellError};
 use crate::study::{Session, Shared};
 use key::row_of;
-pub use key::{answer_columns, answer_key_csv, answer_key_pdf, write_answer_key, Column};
+pub use key::{answer_columns, answer_key_csv, answer_key_pdf, write_answer_key, KeyColumn};
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -345,7 +345,7 @@ pub fn progress_bar(n: usize, target: indicatif::ProgressDrawTarget) -> indicati
 
 /// What became of one variant.
 #[derive(Debug)]
-pub struct Outcome {
+pub struct VariantOutcome {
     /// The variant's name.
     pub name: String,
     /// The files written and the answer key's exact values (`None`: the report lacks the
@@ -363,7 +363,7 @@ fn one(
     shared: &Arc<Shared>,
     out: &Path,
     options: &Options,
-    columns: &[Column],
+    columns: &[KeyColumn],
 ) -> Result<(Vec<PathBuf>, Vec<Option<f64>>), String> {
     // The scene is named after the variant (its folder, its default title); its messages
     // name the grid's line instead of a file that does not exist.
@@ -431,10 +431,10 @@ pub fn run(
     template: &Path,
     out: &Path,
     options: &Options,
-    columns: &[Column],
+    columns: &[KeyColumn],
     done: &(dyn Fn(&str) + Sync),
-) -> Vec<Outcome> {
-    let mut results: Vec<Option<Outcome>> = variants.iter().map(|_| None).collect();
+) -> Vec<VariantOutcome> {
+    let mut results: Vec<Option<VariantOutcome>> = variants.iter().map(|_| None).collect();
     // What the variants' sessions share (the gear pair's blocking contour, traced once for
     // the variants of one pair).
     let shared = Arc::new(Shared::default());
@@ -448,7 +448,7 @@ pub fn run(
             comemo::evict(MEMO_AGE);
             let name = variants[k].name.clone();
             done(&name);
-            results[k] = Some(Outcome { name, result });
+            results[k] = Some(VariantOutcome { name, result });
         },
     );
     results.into_iter().flatten().collect()

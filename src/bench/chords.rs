@@ -4,7 +4,8 @@
 use super::BenchRow;
 use super::{best_time, BenchError, Reps, Subject, CHORD_RESOLUTIONS, DIAGRAM_EXTENT_MM};
 use crate::calculus::{
-    derivative_scale, pole_for, CalculusError, Derivative, Diagram, Layout, Method, Scales,
+    derivative_scale, pole_for, CalculusError, Derivation, Derivative, Diagram, DiagramLayout,
+    Scales,
 };
 use crate::construct::{Context, Drafting, Recorder};
 use crate::geom::{wrap_pi, DVec2};
@@ -55,8 +56,8 @@ fn chords_once(
     let pole = pole_for(src, scales, 40.0)?;
     let mu = derivative_scale(scales.y, scales.x, pole, q)?;
     let mut rec = Recorder::in_context("bench", mu, ctx);
-    let layout = Layout::new(DVec2::new(0.0, 150.0), DVec2::ZERO);
-    Method::Chords.differentiate(&mut rec, src, scales, pole, &layout)
+    let layout = DiagramLayout::new(DVec2::new(0.0, 150.0), DVec2::ZERO);
+    Derivation::Chords.differentiate(&mut rec, src, scales, pole, &layout)
 }
 
 /// Both differentiations of one diagram.

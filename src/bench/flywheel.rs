@@ -6,7 +6,7 @@
 use super::BenchRow;
 use super::{best_time, BenchError, Reps, Subject, CHORD_RESOLUTIONS};
 use crate::construct::{Context, Drafting};
-use crate::dynamics::{diagrams, Cycle, Reduced, Reducer};
+use crate::dynamics::{diagrams, Cycle, ReducedPosition, Reducer};
 use crate::linkage::{plan_poses, PlanRequest};
 use std::f64::consts::TAU;
 
@@ -67,7 +67,7 @@ pub(super) fn flywheel_rows(s: &Subject, reps: Reps) -> Result<(Vec<BenchRow>, f
         let t = best_time(reps.best_of, || {
             let reds = (0..n)
                 .map(|i| red.exact(TAU * i as f64 / n as f64).map(|r| r.0))
-                .collect::<Result<Vec<Reduced>, _>>()?;
+                .collect::<Result<Vec<ReducedPosition>, _>>()?;
             let g = diagrams(&free, &reds, w_avg, &ctx)?;
             got = Some((g.wittenbauer.j_fw, g.merkin.j_fw));
             Ok::<_, crate::dynamics::DynamicsError>(())

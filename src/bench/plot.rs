@@ -3,7 +3,7 @@
 //! [`crate::plate::chart`].
 
 use super::table::{Bench, BenchRow};
-use crate::plate::chart::{Axis, Chart, Point, Series};
+use crate::plate::chart::{Axis, Chart, ChartPoint, Series};
 
 /// The rows as series, one per (method family, quantity) in the order of the first row that
 /// can be drawn (finite time and error), the points sorted by resolution and labelled with
@@ -29,7 +29,7 @@ fn series(rows: &[BenchRow]) -> Vec<Series> {
             let name = format!("{}: {}, {}", g[0].family(), g[0].quantity, g[0].unit);
             g.sort_by_key(|r| r.resolution);
             let point =
-                |r: &&BenchRow| Point::new(r.time_s, r.max_error, &r.resolution.to_string());
+                |r: &&BenchRow| ChartPoint::new(r.time_s, r.max_error, &r.resolution.to_string());
             Series {
                 name,
                 points: g.iter().map(point).collect(),

@@ -328,7 +328,7 @@ pub(super) fn force_rates(s: &Subject, reps: Reps) -> Result<(f64, f64), BenchEr
     let poses = s.poses(360)?;
     let analytic = best_time(reps.best_of, || {
         for pose in &poses {
-            let motion = crate::forces::Motion::analytic(pose, s.w1);
+            let motion = crate::forces::PositionMotion::analytic(pose, s.w1);
             let loads = crate::forces::loads(spec, &s.prog, &motion, Some(true))?;
             black_box(crate::forces::solve_twin(
                 &s.prog,

@@ -110,7 +110,7 @@ pub fn integral_scale(
 /// Integrate the integrand `src` (drawn at `scales`) graphically, recording on `rec`, whose
 /// scale must be μ_y′·H·μ_x (see [`integral_scale`]): the integrand's curve and axes
 /// (optional) at `layout.source_origin`; the pole P on its abscissa axis at H left of its
-/// origin (or of [`Layout::ray_axis`]); for every interval the perpendicular at the middle
+/// origin (or of [`DiagramLayout::ray_axis`]); for every interval the perpendicular at the middle
 /// up to the curve, its horizontal projection to the ordinate axis and the ray from P to
 /// that projection (thin); in the integral diagram at `layout.origin`, from `start`
 /// (physical, default 0) onwards, a chord across each interval parallel to its ray,
@@ -127,7 +127,7 @@ pub fn integrate_chords(
     scales: Scales,
     pole_mm: f64,
     start: f64,
-    layout: &Layout,
+    layout: &DiagramLayout,
 ) -> Result<Integral, CalculusError> {
     integrate_chords_in(
         Figures::One(rec),
@@ -153,7 +153,7 @@ pub fn integrate_chords_in(
     scales: Scales,
     pole_mm: f64,
     start: f64,
-    layout: &Layout,
+    layout: &DiagramLayout,
 ) -> Result<Integral, CalculusError> {
     if let Some(b) = src.breaks.first() {
         return Err(CalculusError::Broken { node: b.node });
@@ -219,7 +219,7 @@ pub fn integrate_divided_in(
     scales: Scales,
     pole_mm: f64,
     start: f64,
-    layout: &Layout,
+    layout: &DiagramLayout,
 ) -> Result<Integral, CalculusError> {
     let src = Divided::new(src.x.clone(), src.mid.clone())?;
     let x0 = src.x[0];
@@ -283,7 +283,7 @@ fn chords_through(
     scales: Scales,
     pole_mm: f64,
     start: f64,
-    layout: &Layout,
+    layout: &DiagramLayout,
 ) -> Result<Chords, CalculusError> {
     if !start.is_finite() {
         return Err(CalculusError::NonFinite {

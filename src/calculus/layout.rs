@@ -4,7 +4,7 @@ use crate::geom::DVec2;
 
 /// Where the diagrams go and what their axes are called.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Layout {
+pub struct DiagramLayout {
     /// Origin of the constructed diagram (figure mm, y up): the point (x₀, 0).
     pub origin: DVec2,
     /// Origin of the given diagram (figure mm).
@@ -46,7 +46,7 @@ pub struct Layout {
     pub source_through: Vec<DVec2>,
 }
 
-impl Layout {
+impl DiagramLayout {
     /// The given diagram at `source_origin`, the constructed one at `origin`, axes named
     /// `φ`, `S`, `dS/dφ`, pole `P`, distance `H`.
     pub fn new(source_origin: DVec2, origin: DVec2) -> Self {
@@ -69,13 +69,13 @@ impl Layout {
     }
 
     /// The tangents to the given curve at its first and last node, where they are known
-    /// (see [`Layout::end_tangents`]).
+    /// (see [`DiagramLayout::end_tangents`]).
     pub fn tangents_at_ends(mut self, first: Option<DVec2>, last: Option<DVec2>) -> Self {
         self.end_tangents = [first, last];
         self
     }
 
-    /// The given curve drawn through `points` too (see [`Layout::source_through`]).
+    /// The given curve drawn through `points` too (see [`DiagramLayout::source_through`]).
     pub fn source_through(mut self, points: Vec<DVec2>) -> Self {
         self.source_through = points;
         self

@@ -8,10 +8,10 @@
 //! being constructed; the numbers come out of the drawing through `Recorder::measure`, so the
 //! drafting model applies to them.
 //!
-//! * [`Method::Chords`] — the method of chords (Fig. 9): the pole P at distance H left of
+//! * [`Derivation::Chords`] — the method of chords (Fig. 9): the pole P at distance H left of
 //!   the new origin, rays from P parallel to the chords, the step graph, the smooth curve
 //!   through the mid-interval points. New scale **μ_y′ = μ_y / (H·μ_x)**.
-//! * [`Method::Tangents`] — the method of tangents (Fig. 8), with the draughtsman's
+//! * [`Derivation::Tangents`] — the method of tangents (Fig. 8), with the draughtsman's
 //!   tangent (parallel to the chord through the two neighbouring nodes).
 //! * [`integrate_chords`] — graphical integration (§15.3): rays from the pole to the
 //!   mid-interval ordinates, chords parallel to them. New scale **μ_y = μ_y′·H·μ_x**.
@@ -19,7 +19,7 @@
 //!   [`Divided`] diagram: a division point at every break of the integrand, so that it is
 //!   smooth over each interval).
 //!
-//! # Method error
+//! # Derivation error
 //! The chord value read at a mid-interval point is the central difference
 //! `(y(x+h/2) − y(x−h/2))/h = y′(x) + h²/24·y‴(ξ)`: second order, bounded by h²/24·max|y‴|.
 //! Node values are read from the smooth curve through the mid-interval points (a cubic
@@ -53,12 +53,12 @@ mod tests_divided;
 
 pub use bounds::{chord_mid_bound, chord_node_bound, midpoint_rule_bound};
 pub use breaks::Break;
-pub use differentiate::{derivative_scale, pole_for, Derivative, Method};
+pub use differentiate::{derivative_scale, pole_for, Derivation, Derivative};
 pub use integrate::{
     integral_scale, integrate_chords, integrate_chords_in, integrate_divided_in, Divided, Integral,
     Sampling,
 };
-pub use layout::Layout;
+pub use layout::DiagramLayout;
 
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::{line_line, DVec2, Line, LineLine, Segment};
@@ -461,7 +461,7 @@ fn draw_diagram(
 
 /// Draw the pole at `pole` with its label and the dimension H to `origin` (the foot of the
 /// vertical the rays run to).
-fn draw_pole(rec: &mut Recorder, pole: DVec2, origin: DVec2, layout: &Layout) -> StepId {
+fn draw_pole(rec: &mut Recorder, pole: DVec2, origin: DVec2, layout: &DiagramLayout) -> StepId {
     let id = rec.point(
         format!(
             "pole {} at H = {:.3} mm",
@@ -494,9 +494,9 @@ fn draw_pole(rec: &mut Recorder, pole: DVec2, origin: DVec2, layout: &Layout) ->
 }
 
 /// The vertical at `x` the rays from a pole run to, when the layout puts it elsewhere than
-/// an ordinate axis ([`Layout::ray_axis`]): a thin line from the abscissa level `base`
+/// an ordinate axis ([`DiagramLayout::ray_axis`]): a thin line from the abscissa level `base`
 /// through every level in `ys`. Nothing when the rays run to the origin's ordinate axis.
-fn ray_axis_line(rec: &mut Recorder, layout: &Layout, x: f64, base: f64, ys: &[f64]) {
+fn ray_axis_line(rec: &mut Recorder, layout: &DiagramLayout, x: f64, base: f64, ys: &[f64]) {
     if layout.ray_axis.is_none() {
         return;
     }

@@ -27,15 +27,15 @@ pub(super) fn recorder(mu: f64, drafting: f64) -> Recorder {
     )
 }
 
-pub(super) fn layout() -> Layout {
-    Layout::new(DVec2::new(0.0, 150.0), DVec2::ZERO)
+pub(super) fn layout() -> DiagramLayout {
+    DiagramLayout::new(DVec2::new(0.0, 150.0), DVec2::ZERO)
 }
 
 /// Differentiate by chords with a recorder at the right scale.
 fn chords(src: &Diagram, sc: Scales, h: f64, drafting: f64) -> (Derivative, Recorder) {
     let mu = sc.y.value() / (h * sc.x.value());
     let mut rec = recorder(mu, drafting);
-    let d = Method::Chords
+    let d = Derivation::Chords
         .differentiate(&mut rec, src, sc, h, &layout())
         .expect("chords");
     (d, rec)
@@ -117,7 +117,7 @@ fn tangent_method_is_the_central_difference() {
     let sc = sin_scales();
     let mu = sc.y.value() / (40.0 * sc.x.value());
     let mut rec = recorder(mu, 0.0);
-    let d = Method::Tangents
+    let d = Derivation::Tangents
         .differentiate(&mut rec, &src, sc, 40.0, &layout())
         .expect("tangents");
     let h = src.dx;
@@ -243,7 +243,7 @@ fn non_periodic_diagram_and_its_ends() {
     assert!((e - h * h / 4.0).abs() < 1e-9, "{e}");
 }
 
-/// A tangent drawn at an end (Layout::tangents_at_ends) gives the node there from its ray:
+/// A tangent drawn at an end (DiagramLayout::tangents_at_ends) gives the node there from its ray:
 /// y = x³ on [0, 2] with its tangent at x = 0 horizontal and at x = 2 of slope 12 (drawn
 /// mm) gives y′ = 0 and 12 exactly at the ends, where the extended curve gives h²/4 too
 /// much; the inner nodes and the mid-interval values are those of the plain method.
@@ -260,7 +260,7 @@ fn an_end_tangent_gives_the_node_at_that_end() {
     // The slope 12 in drawn mm: Δy/Δx = 12·μ_x/μ_y.
     let end = DVec2::new(1.0, 12.0 * sc.x.value() / sc.y.value());
     let lay = layout().tangents_at_ends(Some(DVec2::X), Some(end));
-    let d = Method::Chords
+    let d = Derivation::Chords
         .differentiate(&mut rec, &src, sc, h, &lay)
         .expect("chords");
     assert!(d.node[0].abs() < 1e-12, "{}", d.node[0]);
@@ -308,7 +308,7 @@ fn bad_input_is_an_error_not_a_panic() {
     let sc = sin_scales();
     let mut rec = recorder(sc.y.value() / (40.0 * sc.x.value()), 0.0);
     let mut run =
-        |src: Diagram, h: f64| Method::Chords.differentiate(&mut rec, &src, sc, h, &layout());
+        |src: Diagram, h: f64| Derivation::Chords.differentiate(&mut rec, &src, sc, h, &layout());
     let ok = sin_diagram(12);
     let nan = Diagram {
         y: vec![0.0, f64::NAN, 1.0],
@@ -456,7 +456,7 @@ fn two_figures_and_a_moved_pole_read_the_same() {
     let mu = sc.y.value() / (40.0 * sc.x.value());
     let (mut given, mut built) = (recorder(sc.y.value(), 0.0), recorder(mu, 0.0));
     let moved = layout().rays_to(250.0).without_axes().with_source(false);
-    let two = Method::Chords
+    let two = Derivation::Chords
         .differentiate_in(
             Figures::Two {
                 given: &mut given,
@@ -497,7 +497,7 @@ fn two_figures_and_a_moved_pole_read_the_same() {
         },
         40.0,
         src.y[0],
-        &Layout::new(DVec2::ZERO, DVec2::new(0.0, -150.0))
+        &DiagramLayout::new(DVec2::ZERO, DVec2::new(0.0, -150.0))
             .with_source(false)
             .rays_to(-20.0),
     )

@@ -24,7 +24,7 @@ fn scales() -> Scales {
 
 /// Differentiate `src` by `method` with a recorder at the derivative's scale: the
 /// derivative and the number of curves drawn.
-fn differentiate(method: Method, src: &Diagram, sc: Scales) -> (Derivative, usize) {
+fn differentiate(method: Derivation, src: &Diagram, sc: Scales) -> (Derivative, usize) {
     let h = 40.0;
     let mut rec = recorder(sc.y.value() / (h * sc.x.value()), 0.0);
     let d = method
@@ -69,7 +69,7 @@ fn slope_before(x: f64) -> f64 {
 fn a_corner_is_differentiated_a_piece_on_each_side() {
     // Chords: second order (0.004 here); tangents: the one-sided chord at a piece's end, h²/6
     // off for sin (0.011).
-    for (method, bound) in [(Method::Chords, 0.006), (Method::Tangents, 0.015)] {
+    for (method, bound) in [(Derivation::Chords, 0.006), (Derivation::Tangents, 0.015)] {
         let (d, curves) = differentiate(method, &rectified(&[0, 12]), scales());
         let err = worst(&d, slope_after, slope_before);
         assert!(err < bound, "{method:?}: {err}");
@@ -84,8 +84,8 @@ fn a_corner_is_differentiated_a_piece_on_each_side() {
         // wholly.
         let (smooth, _) = differentiate(method, &rectified(&[]), scales());
         let nodes: &[usize] = match method {
-            Method::Chords => &[1, 11, 13, 23],
-            Method::Tangents => &[0, 12],
+            Derivation::Chords => &[1, 11, 13, 23],
+            Derivation::Tangents => &[0, 12],
         };
         let off = (nodes.iter())
             .map(|&k| (smooth.node[k] - slope_after(smooth.x_node[k])).abs())
@@ -96,7 +96,7 @@ fn a_corner_is_differentiated_a_piece_on_each_side() {
 
 #[test]
 fn a_jump_is_differentiated_again_a_piece_on_each_side() {
-    let (d1, _) = differentiate(Method::Chords, &rectified(&[0, 12]), scales());
+    let (d1, _) = differentiate(Derivation::Chords, &rectified(&[0, 12]), scales());
     let d1 = d1.diagram().expect("dy/dx with its jumps");
     assert_eq!(d1.breaks.len(), 2);
     assert!((d1.before(12) + 1.0).abs() < 0.02 && (d1.at(12) - 1.0).abs() < 0.02);
@@ -104,7 +104,7 @@ fn a_jump_is_differentiated_again_a_piece_on_each_side() {
         x: scales().x,
         y: scale(0.02 / (40.0 * scales().x.value()), Quantity::Length),
     };
-    let (d2, _) = differentiate(Method::Chords, &d1, sc);
+    let (d2, _) = differentiate(Derivation::Chords, &d1, sc);
     // d²|sin x|/dx² = −|sin x| on both pieces, 0 either side of each corner.
     let curvature = |x: f64| -x.sin().abs();
     let err = worst(&d2, curvature, curvature);

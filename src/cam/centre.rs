@@ -14,7 +14,7 @@
 //! (dense samples, every local minimum refined by golden section) cut off, until none is
 //! violated beyond rounding. The answer is the nearest over the choices of cones.
 
-use super::extremum::{checked_pieces, max_on, Piece};
+use super::extremum::{checked_pieces, max_on, PhasePiece};
 use super::follower::{rocker_of, Placement, REACH_ARMS};
 use super::motion::motion_u;
 use super::{CamSpec, Closure};
@@ -36,7 +36,7 @@ struct Pos {
 
 /// A group of pieces along which K moves continuously, with its samples.
 struct Group {
-    pieces: Vec<Piece>,
+    pieces: Vec<PhasePiece>,
     /// Per piece: its u samples and the positions there.
     samples: Vec<(Vec<f64>, Vec<Pos>)>,
 }
@@ -52,7 +52,7 @@ fn placement(spec: &CamSpec) -> Placement {
     }
 }
 
-fn pos(spec: &CamSpec, place: &Placement, piece: &Piece, u: f64) -> Pos {
+fn pos(spec: &CamSpec, place: &Placement, piece: &PhasePiece, u: f64) -> Pos {
     let m = motion_u(spec, piece.phase, u, piece.after(u));
     let k = place.kin(m);
     let path = DVec2::new(-k.along.y, k.along.x);
@@ -71,7 +71,7 @@ fn normal(p: &Pos, sigma: f64, j: usize) -> DVec2 {
 /// The pieces split into groups of continuous K (cyclic under geometric closure).
 fn groups(spec: &CamSpec, place: &Placement, arm: f64) -> Vec<Group> {
     let pieces = checked_pieces(spec);
-    let mut out: Vec<Vec<Piece>> = Vec::new();
+    let mut out: Vec<Vec<PhasePiece>> = Vec::new();
     let tol = 1e-9 * arm;
     for (i, p) in pieces.iter().enumerate() {
         let joined = i > 0 && {

@@ -3,9 +3,9 @@
 //! motion read off the diagrams at each drawn point), its S axis and the closed curve through
 //! the points.
 
-use super::diagrams::{read_motion, Diagrams};
+use super::diagrams::{read_motion, CamDiagrams};
 use super::law::Shock;
-use super::motion::{on_break, Motion, Point};
+use super::motion::{on_break, FollowerMotion, Point};
 use super::CamSpec;
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::DVec2;
@@ -110,6 +110,10 @@ pub(super) fn abscissa(rec: &mut Recorder, ks: &[DVec2], name: &str) -> StepId {
 }
 
 /// The points of a combined diagram: `at` of the motion read at each of the `n` points.
-pub(super) fn combined(d: &Diagrams, n: usize, at: impl Fn(Motion) -> DVec2) -> Vec<DVec2> {
+pub(super) fn combined(
+    d: &CamDiagrams,
+    n: usize,
+    at: impl Fn(FollowerMotion) -> DVec2,
+) -> Vec<DVec2> {
     (0..n).map(|i| at(read_motion(d, i))).collect()
 }

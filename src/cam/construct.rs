@@ -4,10 +4,10 @@
 //! scene (the given law, [`super::motion`]) and its own drawing; it shares the follower's
 //! primitives ([`super::follower`]) with the twin and never asks the twin ([`super::exact`]).
 
-use super::diagrams::{diagrams, read_motion, Diagrams};
+use super::diagrams::{diagrams, read_motion, CamDiagrams};
 use super::follower::{to_cam, Kin, Placement};
 use super::inversion::{drawn_rho_min, invert, Inversion};
-use super::motion::{points, Motion, Point};
+use super::motion::{points, FollowerMotion, Point};
 use super::radius::{min_radius, RadiusConstruction};
 use super::{CamError, CamSpec, Follower, Rotation, Shock};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
@@ -23,7 +23,7 @@ pub struct Cam {
     /// The diagram points.
     pub points: Vec<Point>,
     /// The diagrams.
-    pub diagrams: Diagrams,
+    pub diagrams: CamDiagrams,
     /// The minimum radius.
     pub radius: RadiusConstruction,
     /// The base radius used for the profile, m.
@@ -76,7 +76,7 @@ impl Cam {
 /// A failed integration, no admissible centre, a roller not smaller than the base radius,
 /// no drawing scale, a layout other than the turning cam's.
 pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
-    if spec.layout != super::Layout::Turning {
+    if spec.layout != super::CamLayout::Turning {
         return Err(CamError::Layout(
             "the flat-faced rocker and the translating cam are built by build_special",
         ));
@@ -105,7 +105,7 @@ pub fn build(spec: &CamSpec, ctx: &Context) -> Result<Cam, CamError> {
     }
     let points = points(spec);
     let diagrams = diagrams(spec, &points, ctx)?;
-    let read: Vec<Motion> = (0..points.len())
+    let read: Vec<FollowerMotion> = (0..points.len())
         .map(|i| read_motion(&diagrams, i))
         .collect();
     let mut raised = None;
@@ -191,7 +191,7 @@ const ANGLE_SLACK: f64 = 1e-9;
 /// neighbouring points of the pitch (theoretical) curve where it is most convex, within one
 /// phase, straight or concave triples skipped ([`drawn_rho_min`]); the pitch points from the
 /// motion read off the diagrams at the follower's placement.
-fn chosen_roller(points: &[Point], read: &[Motion], place: &Placement, base: f64) -> f64 {
+fn chosen_roller(points: &[Point], read: &[FollowerMotion], place: &Placement, base: f64) -> f64 {
     let pitch: Vec<DVec2> = points
         .iter()
         .zip(read)
@@ -206,7 +206,7 @@ fn chosen_roller(points: &[Point], read: &[Motion], place: &Placement, base: f64
 /// check's rows.
 fn angle_graph(
     spec: &CamSpec,
-    (points, motions): (&[Point], &[Motion]),
+    (points, motions): (&[Point], &[FollowerMotion]),
     inv: &Inversion,
     place: &Placement,
     phi: Scale,
@@ -357,7 +357,7 @@ const TICK_MM: f64 = 2.0;
 /// exact curve is not drawn: the check compares them in the rows.
 fn read_curve(
     spec: &CamSpec,
-    (points, motions): (&[Point], &[Motion]),
+    (points, motions): (&[Point], &[FollowerMotion]),
     read: &[DVec2],
     place: &Placement,
     angle_mm: impl Fn(&Kin) -> f64,
@@ -365,7 +365,7 @@ fn read_curve(
 ) -> Vec<DVec2> {
     let st = spec.starts();
     let dwell = |i: usize| {
-        angle_mm(&place.kin(Motion {
+        angle_mm(&place.kin(FollowerMotion {
             s: motions.get(i).map_or(0.0, |m| m.s),
             ds: 0.0,
             d2s: 0.0,

@@ -5,7 +5,7 @@
 use super::construct::Cam;
 use super::follower::{flat_contact, to_cam, Placement};
 use super::inversion::{invert, Inversion};
-use super::motion::{motion, points, Motion, Point};
+use super::motion::{motion, points, FollowerMotion, Point};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::Context;
 use crate::geom::{bezier_distance, french_piece, DVec2};
@@ -81,7 +81,7 @@ pub fn inversion_at(
     // The cam's own μ_l: the profile at another N is drawn on the same scale.
     spec.scale_l = Some(cam.inversion.scale);
     let points = points(&spec);
-    let read: Vec<Motion> = points
+    let read: Vec<FollowerMotion> = points
         .iter()
         .map(|p| motion(&spec, p.phi, p.after))
         .collect();

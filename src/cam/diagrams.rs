@@ -20,11 +20,11 @@
 //! blends" (0,2) at 12 equal intervals the rise ended 13 % short of the stroke.
 
 use super::law::Shock;
-use super::motion::{motion, motion_u, Motion, Point};
+use super::motion::{motion, motion_u, FollowerMotion, Point};
 use super::{CamError, CamSpec, Given};
 use crate::calculus::{
-    integrate_divided_in, Derivative, Diagram, Divided, Figures, Integral, Layout, Method as Calc,
-    Scales,
+    integrate_divided_in, Derivation, Derivative, Diagram, DiagramLayout, Divided, Figures,
+    Integral, Scales,
 };
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{DVec2, Segment};
@@ -53,7 +53,7 @@ const SHOCK_MM: f64 = 15.0;
 /// The three diagrams, each its own figure: d²S/dφ² given and dS/dφ, S integrated by the
 /// chord/pole method (or S given and differentiated twice by chords).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Diagrams {
+pub struct CamDiagrams {
     /// d²S/dφ² (drawn at μ_S″): given, with the poles P₁, P₁′ and their rays; or constructed.
     pub d2s_view: Figure,
     /// dS/dφ (drawn at μ_S′): constructed, with the poles P₂, P₂′ of the next construction.
@@ -83,7 +83,7 @@ pub struct Diagrams {
     pub y_max: Option<f64>,
 }
 
-/// Which diagram a figure of [`Diagrams`] is.
+/// Which diagram a figure of [`CamDiagrams`] is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Analogue {
     /// d²S/dφ².
@@ -94,7 +94,7 @@ pub enum Analogue {
     S,
 }
 
-impl Diagrams {
+impl CamDiagrams {
     /// The figures in the order a construction runs through them, top to bottom on the
     /// sheet: d²S/dφ², dS/dφ, S when d²S/dφ² is given; S, dS/dφ, d²S/dφ² when S is.
     pub fn stack(&self, given: Given) -> [(Analogue, &Figure); 3] {
@@ -266,12 +266,12 @@ impl Pass<'_> {
     /// left of the ordinate axis; the return's [`FAN_GAP_MM`] past the return's end, its
     /// rays running to the vertical H further right; the dimension H [`POLE_DIMENSION_MM`]
     /// below the lowest level the rays reach (`levels`, mm) and the φ axis's numbers.
-    fn layout(&self, levels: &[f64]) -> Layout {
+    fn layout(&self, levels: &[f64]) -> DiagramLayout {
         let lowest = levels.iter().fold(-phi_axis::NUMBERS_MM, |m, &y| m.min(y));
         let [rise, ret, distance] = self.poles;
         let (shift, end_x) = self.at;
         let [x, given, built] = self.names;
-        let lay = Layout::new(shift, shift)
+        let lay = DiagramLayout::new(shift, shift)
             .named(x, given, built)
             .pole_named(if self.idx == 0 { rise } else { ret }, distance)
             .with_source(false)
@@ -317,7 +317,7 @@ impl Pass<'_> {
         let figs = Figures::Two { given, built };
         let tangent = flat.then_some(DVec2::X);
         let layout = self.layout(&levels).tangents_at_ends(tangent, tangent);
-        Ok(Calc::Chords.differentiate_in(figs, src, scales, self.h, &layout)?)
+        Ok(Derivation::Chords.differentiate_in(figs, src, scales, self.h, &layout)?)
     }
 }
 
@@ -338,7 +338,7 @@ pub(super) fn diagrams(
     spec: &CamSpec,
     points: &[Point],
     ctx: &Context,
-) -> Result<Diagrams, CamError> {
+) -> Result<CamDiagrams, CamError> {
     let (phi, sc, poles) = scales(spec, points)?;
     if spec.given == Given::S {
         return differentiated(spec, points, phi, sc, poles, ctx);
@@ -351,7 +351,7 @@ pub(super) fn diagrams(
     match scales::fitted(sc, spec.stroke, s_max) {
         Some((k, fit)) => {
             let d = integrated(spec, (points, ctx), (phi, fit, poles), k)?;
-            Ok(Diagrams {
+            Ok(CamDiagrams {
                 y_max: Some(sc[0].to_mm(s_max)),
                 ..d
             })
@@ -367,7 +367,7 @@ fn integrated(
     (points, ctx): (&[Point], &Context),
     (phi, sc, poles): (Scale, [Scale; 3], [f64; 2]),
     k: f64,
-) -> Result<Diagrams, CamError> {
+) -> Result<CamDiagrams, CamError> {
     let [s_scale, ds_scale, d2s_scale] = sc;
     let [h1, h2] = poles;
     let st = spec.starts();
@@ -456,7 +456,7 @@ fn integrated(
         .collect();
     let [d2s_view, ds_view, s_view] =
         views.finish((spec, points), phi, [&d2s, &ds_nodes, &s_nodes]);
-    Ok(Diagrams {
+    Ok(CamDiagrams {
         d2s_view,
         ds_view,
         s_view,
@@ -542,8 +542,8 @@ fn given_curve(
 }
 
 /// The motion as read off the diagrams at point `i`.
-pub(super) fn read_motion(d: &Diagrams, i: usize) -> Motion {
-    Motion {
+pub(super) fn read_motion(d: &CamDiagrams, i: usize) -> FollowerMotion {
+    FollowerMotion {
         s: d.s.get(i).copied().unwrap_or(0.0),
         ds: d.ds.get(i).copied().unwrap_or(0.0),
         d2s: d.d2s.get(i).copied().unwrap_or(0.0),

@@ -7,7 +7,7 @@
 pub use super::centre::min_radius_rocker;
 use super::extremum::{checked_pieces, max_over, pieces};
 use super::follower::{rocker_of, Kin, Placement};
-use super::motion::{motion, Motion};
+use super::motion::{motion, FollowerMotion};
 use super::{CamSpec, Closure};
 use crate::geom::{golden_section, DVec2, GoldenRule, Tie};
 use std::f64::consts::FRAC_PI_2;
@@ -105,7 +105,7 @@ fn curvature(k: &Kin) -> f64 {
 /// refined, to rounding.
 pub fn pitch_rho_min(spec: &CamSpec, place: &Placement) -> (f64, Option<f64>) {
     let all = pieces(spec, false);
-    let kappa = |m: Motion| curvature(&place.kin(m));
+    let kappa = |m: FollowerMotion| curvature(&place.kin(m));
     let (convex, _, _) = max_over(spec, &all, DENSE, kappa);
     let (concave, _, _) = max_over(spec, &all, DENSE, |m| -kappa(m));
     let convex = if convex > 0.0 {

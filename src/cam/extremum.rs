@@ -4,14 +4,14 @@
 //! piece is found from dense samples, every sampled local maximum refined by golden section
 //! (the value of a smooth maximum to a few ulps, whatever the sampling).
 
-use super::motion::{self, Motion};
+use super::motion::{self, FollowerMotion};
 use super::{CamSpec, Closure};
 use crate::geom::golden_max;
 
 /// A smooth piece of the cycle: `phase` (0 rise, 1 far dwell, 2 return, 3 near dwell) from
 /// u = `from` to u = `to` of that phase (a dwell: 0 to 1, the motion constant).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Piece {
+pub struct PhasePiece {
     /// The phase, 0…3.
     pub phase: usize,
     /// u at the piece's start.
@@ -20,7 +20,7 @@ pub struct Piece {
     pub to: f64,
 }
 
-impl Piece {
+impl PhasePiece {
     /// Whether the motion is constant over the piece (a dwell).
     pub fn dwell(&self) -> bool {
         self.phase % 2 == 1
@@ -28,7 +28,7 @@ impl Piece {
     /// The motion at u of the piece: its end (and u within 1e-12 of it, which the law
     /// takes as the end) on the side before it, elsewhere (its start included) the side
     /// after: every value is the piece's own.
-    pub fn motion(&self, spec: &CamSpec, u: f64) -> Motion {
+    pub fn motion(&self, spec: &CamSpec, u: f64) -> FollowerMotion {
         motion::motion_u(spec, self.phase, u, self.after(u))
     }
     /// The side of a jump at u that belongs to the piece.
@@ -70,7 +70,7 @@ impl Piece {
 }
 
 /// The pieces of the whole cycle in order (`rise_only`: the rise's only).
-pub fn pieces(spec: &CamSpec, rise_only: bool) -> Vec<Piece> {
+pub fn pieces(spec: &CamSpec, rise_only: bool) -> Vec<PhasePiece> {
     let p = &spec.phases;
     let mut out = Vec::new();
     for (phase, len) in [(0usize, p.rise), (1, p.far), (2, p.ret), (3, p.near)] {
@@ -78,7 +78,7 @@ pub fn pieces(spec: &CamSpec, rise_only: bool) -> Vec<Piece> {
             continue;
         }
         if phase % 2 == 1 {
-            out.push(Piece {
+            out.push(PhasePiece {
                 phase,
                 from: 0.0,
                 to: 1.0,
@@ -90,7 +90,7 @@ pub fn pieces(spec: &CamSpec, rise_only: bool) -> Vec<Piece> {
         cuts.extend(law.breaks().into_iter().filter(|b| *b > 0.0 && *b < 1.0));
         cuts.push(1.0);
         for w in cuts.windows(2) {
-            out.push(Piece {
+            out.push(PhasePiece {
                 phase,
                 from: w[0],
                 to: w[1],
@@ -102,7 +102,7 @@ pub fn pieces(spec: &CamSpec, rise_only: bool) -> Vec<Piece> {
 
 /// The pieces the angle limit is checked on: the whole cycle, the rise only under force
 /// closure (its ends on the rise's side).
-pub fn checked_pieces(spec: &CamSpec) -> Vec<Piece> {
+pub fn checked_pieces(spec: &CamSpec) -> Vec<PhasePiece> {
     pieces(spec, spec.closure == Closure::Force)
 }
 
@@ -149,13 +149,13 @@ pub fn max_on(a: f64, b: f64, n: usize, f: impl Fn(f64) -> f64) -> (f64, f64) {
 /// (value, piece, u).
 pub fn max_over(
     spec: &CamSpec,
-    pieces: &[Piece],
+    pieces: &[PhasePiece],
     per_phase: usize,
-    f: impl Fn(Motion) -> f64,
-) -> (f64, Piece, f64) {
+    f: impl Fn(FollowerMotion) -> f64,
+) -> (f64, PhasePiece, f64) {
     let mut best = (
         f64::NEG_INFINITY,
-        Piece {
+        PhasePiece {
             phase: 0,
             from: 0.0,
             to: 1.0,

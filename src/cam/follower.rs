@@ -5,7 +5,7 @@
 //! take a motion (S, S′, S″) from whichever route calls them: the construction's values read
 //! off its diagrams, the twin's closed forms.
 
-use super::motion::Motion;
+use super::motion::FollowerMotion;
 use super::{CamSpec, Follower, RockerSense};
 use crate::geom::{rotate, DVec2};
 use std::f64::consts::FRAC_PI_2;
@@ -64,7 +64,7 @@ pub fn jay(v: DVec2) -> DVec2 {
 
 impl Placement {
     /// The follower at the motion `m` (fixed frame).
-    pub fn kin(&self, m: Motion) -> Kin {
+    pub fn kin(&self, m: FollowerMotion) -> Kin {
         let (b, b1, b2, path, along) = match *self {
             Placement::Translating { offset, s0 } => (
                 DVec2::new(offset, s0 + m.s),
@@ -138,7 +138,7 @@ pub fn to_cam(p: DVec2, phi: f64) -> DVec2 {
 
 /// The flat face's contact point (fixed frame) at r₀: (S′, r₀ + S), and its radius of
 /// curvature r₀ + S + S″.
-pub fn flat_contact(r0: f64, m: Motion) -> (DVec2, f64) {
+pub fn flat_contact(r0: f64, m: FollowerMotion) -> (DVec2, f64) {
     (DVec2::new(m.ds, r0 + m.s), r0 + m.s + m.d2s)
 }
 

@@ -25,7 +25,7 @@ use std::f64::consts::FRAC_PI_2;
 
 /// A translating follower's guide.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Guide {
+pub struct TranslatingGuide {
     /// The guide's length b between its bearings, m.
     pub length: f64,
     /// The overhang l from the cam's contact to the nearer bearing, m.
@@ -47,7 +47,7 @@ pub struct GuideForces {
 
 /// The closed form: P, R₁ = P·sin λ·(l + b)/b, R₂ = P·sin λ·l/b for the resistance `q` (N)
 /// at the pressure angle `lambda`; `None` when the follower jams (λ ≥ λ_кр).
-pub fn translating_forces(q: f64, lambda: f64, g: &Guide) -> Option<GuideForces> {
+pub fn translating_forces(q: f64, lambda: f64, g: &TranslatingGuide) -> Option<GuideForces> {
     let (s, c) = lambda.sin_cos();
     let (b, l) = (g.length, g.overhang);
     let useful = c - g.f * s * (2.0 * l + b) / b;
@@ -63,7 +63,7 @@ pub fn translating_forces(q: f64, lambda: f64, g: &Guide) -> Option<GuideForces>
 }
 
 /// The locking angle of a translating follower, tg λ_кр = b/(f(2l + b)), radians.
-pub fn translating_locking(g: &Guide) -> f64 {
+pub fn translating_locking(g: &TranslatingGuide) -> f64 {
     (g.length / (g.f * (2.0 * g.overhang + g.length))).atan()
 }
 
@@ -71,7 +71,7 @@ pub fn translating_locking(g: &Guide) -> f64 {
 /// axis P·sin λ − R₁ + R₂ = 0, along it P·cos λ − f(R₁ + R₂) = Q, moments about the contact
 /// l·R₁ − (l + b)·R₂ = 0 — solved by elimination; `None` when it is singular or gives no
 /// positive P (the follower jams).
-pub fn translating_equilibrium(q: f64, lambda: f64, g: &Guide) -> Option<GuideForces> {
+pub fn translating_equilibrium(q: f64, lambda: f64, g: &TranslatingGuide) -> Option<GuideForces> {
     let (s, c) = lambda.sin_cos();
     let (b, l, f) = (g.length, g.overhang, g.f);
     let x = solve_linear(vec![
@@ -192,7 +192,7 @@ mod tests {
             b in 0.02f64..0.2, l in 0.0f64..0.2, f in 0.02f64..0.5, q in 1.0f64..1e4,
             arm in 0.03f64..0.3, d in 0.005f64..0.06, share in 0.01f64..0.99,
         ) {
-            let g = Guide { length: b, overhang: l, f };
+            let g = TranslatingGuide { length: b, overhang: l, f };
             let lock = translating_locking(&g);
             let by_eq = locking_by_bisection(|x| translating_equilibrium(q, x, &g).is_some()).unwrap();
             prop_assert!((lock - by_eq).abs() < 1e-9, "{lock} {by_eq}");
@@ -221,7 +221,7 @@ mod tests {
     /// l = 3b at f = 0,3 brings it to arctg(0,02/0,042) = 25,46°, below the usual λ_max.
     #[test]
     fn typical_guides_lock_far_beyond_the_admissible_pressure_angle() {
-        let g = Guide {
+        let g = TranslatingGuide {
             length: 0.04,
             overhang: 0.02,
             f: 0.15,
@@ -231,7 +231,7 @@ mod tests {
                 < 1e-12
         );
         assert!((translating_locking(&g).to_degrees() - 73.3007558).abs() < 1e-6);
-        let long = Guide {
+        let long = TranslatingGuide {
             length: 0.02,
             overhang: 0.06,
             f: 0.3,

@@ -3,7 +3,7 @@
 //! angle read off the drawing; the drawn pitch curve's smallest radius of curvature.
 
 use super::follower::{flat_contact, to_cam, Kin, Placement};
-use super::motion::{Motion, Point};
+use super::motion::{FollowerMotion, Point};
 use super::reading::{read_angles, Drawn};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::fit::{overflow, raised};
@@ -51,7 +51,7 @@ pub struct Inversion {
 pub(crate) fn invert(
     spec: &CamSpec,
     points: &[Point],
-    read: &[Motion],
+    read: &[FollowerMotion],
     place: &Placement,
     (base, roller): (f64, f64),
     ctx: &Context,
@@ -98,7 +98,7 @@ pub(crate) fn invert(
 struct Inverting<'a> {
     spec: &'a CamSpec,
     points: &'a [Point],
-    read: &'a [Motion],
+    read: &'a [FollowerMotion],
     place: &'a Placement,
     base: f64,
     roller: f64,
@@ -217,7 +217,7 @@ impl Inverting<'_> {
     ) {
         let mm = |p: DVec2| p / mu.value();
         let (base, roller, flat) = (self.base, self.roller, self.flat);
-        let m = self.read.get(i).copied().unwrap_or(Motion {
+        let m = self.read.get(i).copied().unwrap_or(FollowerMotion {
             s: 0.0,
             ds: 0.0,
             d2s: 0.0,

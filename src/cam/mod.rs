@@ -46,7 +46,7 @@ mod zone;
 pub use construct::ANGLE_LIMIT_NOTE;
 pub use construct::{build, Cam, Raised};
 pub use deviation::{deviation, deviation_at, inversion_at};
-pub use diagrams::{Analogue, Diagrams, PHASE_NOTES, POLES, TICK_NOTE};
+pub use diagrams::{Analogue, CamDiagrams, PHASE_NOTES, POLES, TICK_NOTE};
 pub use inversion::Inversion;
 pub use law::{Law, Shock};
 pub use radius::{RadiusConstruction, RHO_ADMITTED, RHO_MIN_NOTE, TANGENT_NOTE};
@@ -141,12 +141,12 @@ pub struct CamSpec {
     pub rotation: Rotation,
     /// The mechanism's layout: the turning cam of [`build`], or one of the two cams built by
     /// their own modules ([`special`]).
-    pub layout: Layout,
+    pub layout: CamLayout,
 }
 
 /// The cam mechanism's layout (`follower = "flat_rocker"`, `travel`).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Layout {
+pub enum CamLayout {
     /// The cam turns about O₁ and drives the `follower` ([`build`]).
     Turning,
     /// The cam turns and the rocker (the spec's follower) carries a flat face

@@ -7,7 +7,7 @@ use std::f64::consts::TAU;
 
 /// The follower's displacement S and its analogues S′ = dS/dφ, S″ = d²S/dφ² at one angle.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Motion {
+pub struct FollowerMotion {
     /// S, m.
     pub s: f64,
     /// dS/dφ, m.
@@ -105,7 +105,7 @@ const SNAP: f64 = 1e-12;
 /// phase that ends there (a moving phase's own end value, S′ and S″ of its law at u = 1),
 /// `after = true` the phase that starts there (at u = 0); a dwell's values are the dwell's
 /// only. φ within `SNAP` of a boundary is on it.
-pub fn motion(spec: &CamSpec, phi: f64, after: bool) -> Motion {
+pub fn motion(spec: &CamSpec, phi: f64, after: bool) -> FollowerMotion {
     let (phase, u) = locate(spec, phi, after);
     motion_u(spec, phase, u, after)
 }
@@ -177,7 +177,7 @@ pub fn locate(spec: &CamSpec, phi: f64, after: bool) -> (usize, f64) {
 /// The law in phase `phase` (0 rise, 1 far dwell, 2 return, 3 near dwell) at u ∈ [0, 1],
 /// `after` picking the piece after a jump of the law at u (u within `SNAP` of a jump is on
 /// it).
-pub fn motion_u(spec: &CamSpec, phase: usize, u: f64, after: bool) -> Motion {
+pub fn motion_u(spec: &CamSpec, phase: usize, u: f64, after: bool) -> FollowerMotion {
     let h = spec.stroke;
     let eval = |law: Law, len: f64| {
         let mut u = u.clamp(0.0, 1.0);
@@ -192,7 +192,7 @@ pub fn motion_u(spec: &CamSpec, phase: usize, u: f64, after: bool) -> Motion {
     match phase {
         0 => {
             let (f, f1, f2) = eval(spec.rise, spec.phases.rise);
-            Motion {
+            FollowerMotion {
                 s: h * f,
                 ds: h * f1,
                 d2s: h * f2,
@@ -200,18 +200,18 @@ pub fn motion_u(spec: &CamSpec, phase: usize, u: f64, after: bool) -> Motion {
         }
         2 => {
             let (f, f1, f2) = eval(spec.ret, spec.phases.ret);
-            Motion {
+            FollowerMotion {
                 s: h * (1.0 - f),
                 ds: -h * f1,
                 d2s: -h * f2,
             }
         }
-        1 => Motion {
+        1 => FollowerMotion {
             s: h,
             ds: 0.0,
             d2s: 0.0,
         },
-        _ => Motion {
+        _ => FollowerMotion {
             s: 0.0,
             ds: 0.0,
             d2s: 0.0,

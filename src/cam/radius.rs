@@ -6,7 +6,7 @@
 
 use super::accept::accepted;
 use super::combined::{abscissa, combined, s_axis, smooth_loop};
-use super::diagrams::{read_motion, Diagrams};
+use super::diagrams::{read_motion, CamDiagrams};
 use super::follower::{admits, rocker_of, Placement, REACH_ARMS};
 use super::motion::Point;
 use super::zone;
@@ -34,7 +34,7 @@ pub struct RadiusConstruction {
 pub(super) fn min_radius(
     spec: &CamSpec,
     points: &[Point],
-    d: &Diagrams,
+    d: &CamDiagrams,
     ctx: &Context,
     raise: f64,
 ) -> Result<(RadiusConstruction, f64, Placement), CamError> {
@@ -70,7 +70,7 @@ pub(super) fn min_radius(
 struct Given<'a> {
     pub(super) spec: &'a CamSpec,
     pub(super) points: &'a [Point],
-    pub(super) d: &'a Diagrams,
+    pub(super) d: &'a CamDiagrams,
     /// What the profile's own check adds to the r₀ accepted from the reading, m: whole
     /// millimetres, 0 until the angle read off a profile exceeds its limit
     /// ([`super::construct`]).

@@ -5,13 +5,13 @@
 
 use super::construct::Cam;
 use super::deviation::{deviation, exact_profile};
-use super::diagrams::Diagrams;
+use super::diagrams::CamDiagrams;
 use super::exact;
 use super::follower::{to_cam, Placement};
 use super::motion::Point;
-use super::motion::{motion, Motion};
+use super::motion::{motion, FollowerMotion};
 use super::{CamSpec, Closure, Follower, Given, Law, Rotation, Shock};
-use crate::check::notes::cam::{AngleCheck, CamNote, LawName, Phase, Shocks};
+use crate::check::notes::cam::{AngleCheck, CamNote, CamPhase, LawName, Shocks};
 use crate::check::{
     self, At, BaseUsed, Cusp, Finding, Key, Limit, Method, RadiusBasis, Row, Symbol,
 };
@@ -65,7 +65,7 @@ impl Cam {
     }
 
     /// The exact motion at every point.
-    pub fn exact_motion(&self) -> Vec<Motion> {
+    pub fn exact_motion(&self) -> Vec<FollowerMotion> {
         self.points
             .iter()
             .map(|p| motion(&self.spec, p.phi, p.after))
@@ -439,12 +439,12 @@ impl Cam {
 
 /// S, dS/dφ, d²S/dφ² per point read off the diagrams against the law (integrated from
 /// d²S/dφ², or differentiated from S by chords), each against its largest exact value.
-pub(super) fn diagram_rows(spec: &CamSpec, points: &[Point], d: &Diagrams) -> Vec<Row> {
-    let ex: Vec<Motion> = points
+pub(super) fn diagram_rows(spec: &CamSpec, points: &[Point], d: &CamDiagrams) -> Vec<Row> {
+    let ex: Vec<FollowerMotion> = points
         .iter()
         .map(|p| motion(spec, p.phi, p.after))
         .collect();
-    let big = |f: fn(&Motion) -> f64| ex.iter().map(|m| f(m).abs()).fold(0.0, f64::max);
+    let big = |f: fn(&FollowerMotion) -> f64| ex.iter().map(|m| f(m).abs()).fold(0.0, f64::max);
     let (ss, sv, sa) = (big(|m| m.s), big(|m| m.ds), big(|m| m.d2s));
     let method = if spec.given == Given::S {
         Method::DiagramChords
@@ -478,12 +478,12 @@ pub(super) fn diagram_rows(spec: &CamSpec, points: &[Point], d: &Diagrams) -> Ve
 
 /// The notes of the law and its diagrams: each phase's law and shocks, an assumed law, the
 /// equal-return check read off the diagrams.
-pub(super) fn law_notes(s: &CamSpec, points: &[Point], d: &Diagrams) -> Vec<CamNote> {
+pub(super) fn law_notes(s: &CamSpec, points: &[Point], d: &CamDiagrams) -> Vec<CamNote> {
     let mut out = Vec::new();
     let st = s.starts();
     for (phase, law, from, to) in [
-        (Phase::Rise, s.rise, st[0], st[1]),
-        (Phase::Return, s.ret, st[2], st[3]),
+        (CamPhase::Rise, s.rise, st[0], st[1]),
+        (CamPhase::Return, s.ret, st[2], st[3]),
     ] {
         let name = match law {
             Law::ConstantAcceleration { ratio } => LawName::ConstantAcceleration { ratio },

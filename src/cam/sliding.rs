@@ -54,7 +54,7 @@ pub enum SlidingError {
 
 /// The cam at one point of the law.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Contact {
+pub struct SlidingContact {
     /// ξ of the follower's axis on the cam, m.
     pub xi: f64,
     /// The roller's centre B, cam frame, m.
@@ -70,15 +70,15 @@ pub struct Contact {
 
 /// The constructed cam.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Construction {
+pub struct SlidingConstruction {
     /// The drawing at μ_l.
     pub figure: Figure,
     /// The contacts at the law's points (rise 0 … n, return n + 1 … 2n + 1); a contact's ρ
     /// is infinite where the drawing gives no three centres of one phase.
-    pub contacts: Vec<Contact>,
+    pub contacts: Vec<SlidingContact>,
 }
 
-impl Construction {
+impl SlidingConstruction {
     /// The smallest convex radius of the drawn pitch curve, m.
     pub fn rho_min(&self) -> f64 {
         convex_min(self.contacts.iter().map(|c| c.rho))
@@ -102,7 +102,12 @@ fn check(s: &Sliding) -> Result<f64, SlidingError> {
 }
 
 /// The exact cam at φ of the law (`after`: the piece after a jump).
-pub fn exact(spec: &CamSpec, s: &Sliding, phi: f64, after: bool) -> Result<Contact, SlidingError> {
+pub fn exact(
+    spec: &CamSpec,
+    s: &Sliding,
+    phi: f64,
+    after: bool,
+) -> Result<SlidingContact, SlidingError> {
     let k = check(s)?;
     let m = motion(spec, phi, after);
     let (d1, d2) = (m.ds * k, m.d2s * k * k);
@@ -114,7 +119,7 @@ pub fn exact(spec: &CamSpec, s: &Sliding, phi: f64, after: bool) -> Result<Conta
     } else {
         -(1.0 + d1 * d1).powf(1.5) / d2
     };
-    Ok(Contact {
+    Ok(SlidingContact {
         xi,
         centre,
         point: centre - n * s.roller,
@@ -125,7 +130,7 @@ pub fn exact(spec: &CamSpec, s: &Sliding, phi: f64, after: bool) -> Result<Conta
 
 /// The pitch curve's signed curvature κ = −S_ξξ/(1 + S_ξ²)^{3/2} at motion `m` (> 0 convex,
 /// a crest), with `k` = 2π/X the law's radians per metre of travel.
-fn curvature(m: super::motion::Motion, k: f64) -> f64 {
+fn curvature(m: super::motion::FollowerMotion, k: f64) -> f64 {
     let (d1, d2) = (m.ds * k, m.d2s * k * k);
     -d2 / (1.0 + d1 * d1).powf(1.5)
 }
@@ -200,7 +205,7 @@ pub fn construct(
     s: &Sliding,
     mu: Scale,
     ctx: &Context,
-) -> Result<Construction, SlidingError> {
+) -> Result<SlidingConstruction, SlidingError> {
     let k = check(s)?;
     let mm = |p: DVec2| p / mu.value();
     let mut rec = Recorder::in_context("translating cam: profile by inversion", mu, ctx);
@@ -280,7 +285,7 @@ pub fn construct(
         } else {
             -a.distance(c) * c.distance(b) * b.distance(a) / (2.0 * cross)
         };
-        contacts.push(Contact {
+        contacts.push(SlidingContact {
             xi: c.x,
             centre: c,
             point,
@@ -315,7 +320,7 @@ pub fn construct(
         Role::Result,
         &[],
     );
-    Ok(Construction {
+    Ok(SlidingConstruction {
         figure: rec.finish(),
         contacts,
     })
@@ -352,7 +357,7 @@ mod tests {
         roller: 0.010,
     };
 
-    fn board(s: &CamSpec, c: &Sliding) -> Construction {
+    fn board(s: &CamSpec, c: &Sliding) -> SlidingConstruction {
         let ctx = Context::for_model_size(400.0, Drafting::EXACT).expect("a context");
         let mu = Scale::new(0.001, Quantity::Length).expect("a μ");
         construct(s, c, mu, &ctx).expect("the construction")

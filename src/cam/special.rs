@@ -7,12 +7,12 @@
 //! each is its module's closed form; [`Special::rows`] compares them
 //! ([`super::special_rows`]).
 
-use super::diagrams::{diagrams, Diagrams};
+use super::diagrams::{diagrams, CamDiagrams};
 use super::flat_rocker::{self, FlatRocker};
 use super::motion::{points, Point};
 use super::sliding::{self, Sliding};
 use super::travel::{travel_min, TravelConstruction};
-use super::{CamError, CamSpec, Layout, Rotation};
+use super::{CamError, CamLayout, CamSpec, Rotation};
 use crate::construct::{Context, Figure};
 use crate::scale::{Quantity, Scale};
 
@@ -30,7 +30,7 @@ pub struct Special {
     /// The diagram points (the profile's positions too).
     pub points: Vec<Point>,
     /// The diagrams.
-    pub diagrams: Diagrams,
+    pub diagrams: CamDiagrams,
     /// μ_l of the profile.
     pub scale: Scale,
     /// The profile constructed.
@@ -45,14 +45,14 @@ pub enum SpecialProfile {
         /// a, e, r₀.
         frame: FlatRocker,
         /// The face lines in the inverted positions and their envelope.
-        board: flat_rocker::Construction,
+        board: flat_rocker::RockerConstruction,
     },
     /// The translating cam.
     Sliding {
         /// X and the roller.
         frame: Sliding,
         /// The follower's positions along the cam, the rollers and the profiles.
-        board: sliding::Construction,
+        board: sliding::SlidingConstruction,
         /// The shortest travel X_min constructed beside the diagrams.
         travel: TravelConstruction,
     },
@@ -100,12 +100,12 @@ pub fn build_special(spec: &CamSpec, ctx: &Context) -> Result<Special, CamError>
             .ok_or(CamError::NoScale { what: "μ_l", size }),
     };
     let (scale, profile) = match spec.layout {
-        Layout::FlatRocker(frame) => {
+        CamLayout::FlatRocker(frame) => {
             let mu = chosen(frame.centres, CENTRES_MM)?;
             let board = flat_rocker::construct(spec, &frame, mu, ctx)?;
             (mu, SpecialProfile::FlatRocker { frame, board })
         }
-        Layout::Sliding(frame) => {
+        CamLayout::Sliding(frame) => {
             let mu = chosen(frame.travel, TRAVEL_MM)?;
             let board = sliding::construct(spec, &frame, mu, ctx)?;
             let travel = travel_min(spec, &points, &diagrams, ctx);
@@ -118,7 +118,7 @@ pub fn build_special(spec: &CamSpec, ctx: &Context) -> Result<Special, CamError>
                 },
             )
         }
-        Layout::Turning => {
+        CamLayout::Turning => {
             return Err(CamError::Layout("the turning cam is built by build"));
         }
     };

@@ -13,7 +13,7 @@
 //! ([`super::sliding::exact_travel_min`]), compared in the rows.
 
 use super::combined::{abscissa, combined, s_axis, smooth_loop};
-use super::diagrams::Diagrams;
+use super::diagrams::CamDiagrams;
 use super::motion::Point;
 use super::CamSpec;
 use crate::construct::{Context, Figure, Item, Recorder, Role};
@@ -43,7 +43,7 @@ pub struct TravelConstruction {
 pub(super) fn travel_min(
     spec: &CamSpec,
     points: &[Point],
-    d: &Diagrams,
+    d: &CamDiagrams,
     ctx: &Context,
 ) -> TravelConstruction {
     let mu = d.s_scale;

@@ -23,7 +23,7 @@ mod tests;
 /// The textbook symbol a row is named by; it lives with the words (`crate::words`).
 pub use crate::words::Symbol;
 pub use finding::{BaseUsed, Cusp, Finding, Limit, NoFlywheel, RadiusBasis, Route};
-pub use notes::Note;
+pub use notes::ReportNote;
 pub use report::{Column, Report, Table};
 pub use seed::{seed_notes, SeedValue};
 pub use summary::{Summary, SummaryEntry};

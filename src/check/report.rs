@@ -35,7 +35,7 @@ pub struct Report {
     pub tables: Vec<Table>,
     /// Notes: what could not be constructed, and why; typed, their English written by
     /// `report`.
-    pub notes: Vec<super::Note>,
+    pub notes: Vec<super::ReportNote>,
 }
 
 impl Report {

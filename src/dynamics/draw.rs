@@ -15,7 +15,7 @@
 //! 6. Merkin's route (the seed's): T_I = ΔT − ω_ср²·J_пр/2, its range ΔT_I measured,
 //!    J_I = ΔT_I/(δ·ω_ср²), J_м = J_I − J_const.
 
-use super::reduce::Reduced;
+use super::reduce::ReducedPosition;
 use super::scales::{given_draws, scale_of, HEIGHT_MM};
 use super::spec::DynamicsSpec;
 use super::twin::{Cycle, Solution};
@@ -43,7 +43,7 @@ pub struct RouteReading {
 
 /// The diagrams as constructed and what was read off them.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Diagrams {
+pub struct DynamicsDiagrams {
     /// μ_φ, μ_M, μ_A, μ_T, μ_J.
     pub scale_phi: Scale,
     /// μ_M.
@@ -118,10 +118,10 @@ fn plot(
 /// A scale that cannot be chosen, a diagram that cannot be constructed.
 pub fn diagrams(
     spec: &DynamicsSpec,
-    red: &[Reduced],
+    red: &[ReducedPosition],
     w_avg: f64,
     ctx: &Context,
-) -> Result<Diagrams, DynamicsError> {
+) -> Result<DynamicsDiagrams, DynamicsError> {
     let n = red.len();
     let sc = WorkScales::of(spec, red)?;
     let run = sc.phi.to_mm(sc.dx);
@@ -171,7 +171,7 @@ pub fn diagrams(
         wittenbauer(&delta_t[..n], &j, (mu_tw, mu_j), w_avg, spec.delta, ctx);
     // 6: Merkin.
     let (merkin_figure, merkin) = merkin(&t1, run, mu_t1, w_avg, spec, ctx);
-    Ok(Diagrams {
+    Ok(DynamicsDiagrams {
         scale_phi: sc.phi,
         scale_m: sc.m,
         scale_a: sc.a,

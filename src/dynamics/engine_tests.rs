@@ -6,7 +6,7 @@
 use super::reduce::reduce_loads;
 use super::*;
 use crate::construct::Drafting;
-use crate::forces::{LoadKind, Motion};
+use crate::forces::{LoadKind, PositionMotion};
 use crate::geom::DVec2;
 use crate::study::Session;
 use std::f64::consts::{PI, TAU};
@@ -160,7 +160,7 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
             .filter(|l| l.kind == LoadKind::Driving)
             .count();
         assert!(gas >= 1, "position {}", pos.label);
-        let exact = Motion::analytic(&pos.pose, W1);
+        let exact = PositionMotion::analytic(&pos.pose, W1);
         // Every load (inertia included): M_пр = −sign(ω₁)·M_у.
         let m = reduce_loads(&f.analysis.loads_exact, &exact, W1.abs());
         assert!(
@@ -179,7 +179,7 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
             0.0,
         )
         .expect("a reducer");
-        let motion = Motion {
+        let motion = PositionMotion {
             a: vec![DVec2::ZERO; exact.a.len()],
             eps: vec![0.0; exact.eps.len()],
             ..exact.clone()

@@ -34,7 +34,7 @@ mod work;
 pub use draw::diagrams;
 pub use flywheel::{diameter_step, Size};
 pub use part::PART_MM;
-pub use reduce::{Breakdown, LinkShare, LoadShare, Reduced, Reducer};
+pub use reduce::{Breakdown, LinkShare, LoadShare, ReducedPosition, Reducer};
 pub use rows::{findings, noted, rows};
 pub use spec::{
     ConstantInertia, ConstantMoment, DynamicsSpec, FlywheelKind, FlywheelSpec, SeedClaims,
@@ -141,9 +141,9 @@ pub struct Dynamics {
     /// The positions' travel from position 1, rad.
     pub travel: Vec<f64>,
     /// The reduction from the velocity plans.
-    pub graphical: Vec<Reduced>,
+    pub graphical: Vec<ReducedPosition>,
     /// The reduction by the analytic twin at the same positions.
-    pub analytic: Vec<Reduced>,
+    pub analytic: Vec<ReducedPosition>,
     /// The reduction from the velocity plans load by load and link by link.
     pub graphical_shares: Vec<Breakdown>,
     /// The analytic twin's, load by load and link by link (the seed's Table 8).
@@ -155,7 +155,7 @@ pub struct Dynamics {
     /// The cycle time with that flywheel, s.
     pub cycle_time: f64,
     /// The diagrams as constructed.
-    pub diagrams: draw::Diagrams,
+    pub diagrams: draw::DynamicsDiagrams,
     /// The δ each textbook route's flywheel really gives (Wittenbauer, Merkin).
     pub delta_of: [f64; 2],
     /// The flywheel's size from the inertia the sheet's construction gives (Wittenbauer's

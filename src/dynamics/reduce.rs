@@ -9,14 +9,14 @@
 
 use super::DynamicsError;
 use crate::construct::Context;
-use crate::forces::{loads, power_balance, Load, LoadKind, Motion};
+use crate::forces::{loads, power_balance, Load, LoadKind, PositionMotion};
 use crate::forces::{phase_at, ForceSpec};
 use crate::geom::DVec2;
 use crate::linkage::{Extremes, KinPlan, Pose, Program};
 
 /// The reduced quantities of one position.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Reduced {
+pub struct ReducedPosition {
     /// The reduced moment of the working resistances, N·m (driving positive).
     pub m_res: f64,
     /// The reduced moment of the weights, N·m.
@@ -27,7 +27,7 @@ pub struct Reduced {
     pub j: f64,
 }
 
-impl Reduced {
+impl ReducedPosition {
     /// The reduced moment of every force, N·m.
     pub fn m(&self) -> f64 {
         self.m_res + self.m_grav + self.m_drv
@@ -84,7 +84,7 @@ pub struct Breakdown {
 
 impl Breakdown {
     /// The sums: the reduced moments by kind and the reduced moment of inertia.
-    pub fn reduced(&self) -> Reduced {
+    pub fn reduced(&self) -> ReducedPosition {
         let of = |kind: LoadKind| {
             self.loads
                 .iter()
@@ -92,7 +92,7 @@ impl Breakdown {
                 .map(|l| l.m_red)
                 .sum()
         };
-        Reduced {
+        ReducedPosition {
             m_res: of(LoadKind::Resistance),
             m_grav: of(LoadKind::Weight),
             m_drv: of(LoadKind::Driving),
@@ -103,7 +103,7 @@ impl Breakdown {
 
 /// The reduced moment of `loads` moving as `motion` with the crank at |ω₁| = `w`:
 /// Σ(F·v + M·ω)/|ω₁|, N·m (driving positive).
-pub fn reduce_loads(loads: &[Load], motion: &Motion, w: f64) -> f64 {
+pub fn reduce_loads(loads: &[Load], motion: &PositionMotion, w: f64) -> f64 {
     // The power balance's M_bal at a crank turning counter-clockwise at w, with its sign
     // turned: the moment the loads exert.
     -power_balance(loads, motion, w)
@@ -177,7 +177,7 @@ impl<'a> Reducer<'a> {
     ///
     /// # Errors
     /// A load's point that is not a point of the mechanism.
-    pub fn at(&self, motion: &Motion, phi: f64) -> Result<Reduced, DynamicsError> {
+    pub fn at(&self, motion: &PositionMotion, phi: f64) -> Result<ReducedPosition, DynamicsError> {
         Ok(self.breakdown(motion, phi)?.reduced())
     }
 
@@ -185,7 +185,7 @@ impl<'a> Reducer<'a> {
     ///
     /// # Errors
     /// A load's point that is not a point of the mechanism.
-    pub fn breakdown(&self, motion: &Motion, phi: f64) -> Result<Breakdown, DynamicsError> {
+    pub fn breakdown(&self, motion: &PositionMotion, phi: f64) -> Result<Breakdown, DynamicsError> {
         let ph = phase_at(self.extremes.as_ref(), phi, self.sense());
         let all = loads(&self.forces, self.prog, motion, ph)?;
         let w = self.w1.abs();
@@ -256,12 +256,12 @@ impl<'a> Reducer<'a> {
     ///
     /// # Errors
     /// The mechanism cannot be assembled there.
-    pub fn twin_motion(&self, travel: f64) -> Result<(Pose, Motion), DynamicsError> {
+    pub fn twin_motion(&self, travel: f64) -> Result<(Pose, PositionMotion), DynamicsError> {
         let pose = self.pose(travel)?;
-        let motion = Motion {
+        let motion = PositionMotion {
             a: vec![DVec2::ZERO; pose.p.len()],
             eps: vec![0.0; pose.dangle.len()],
-            ..Motion::analytic(&pose, self.w1)
+            ..PositionMotion::analytic(&pose, self.w1)
         };
         Ok((pose, motion))
     }
@@ -270,7 +270,7 @@ impl<'a> Reducer<'a> {
     ///
     /// # Errors
     /// The mechanism cannot be assembled, or a load's point is unknown.
-    pub fn exact(&self, travel: f64) -> Result<(Reduced, f64), DynamicsError> {
+    pub fn exact(&self, travel: f64) -> Result<(ReducedPosition, f64), DynamicsError> {
         let (pose, motion) = self.twin_motion(travel)?;
         let r = self.at(&motion, pose.phi)?;
         let mut dj = 0.0;
@@ -290,9 +290,14 @@ impl<'a> Reducer<'a> {
     /// The motion of a position as its velocity plan gives it: velocities off the plan at
     /// μ_v, the links' ω as the plan reads them (no accelerations: the reduction needs none).
     /// Every velocity is read to the drafting resolution of `ctx`.
-    pub fn plan_motion(vp: &KinPlan, built_p: &[DVec2], mu_l: f64, ctx: &Context) -> Motion {
+    pub fn plan_motion(
+        vp: &KinPlan,
+        built_p: &[DVec2],
+        mu_l: f64,
+        ctx: &Context,
+    ) -> PositionMotion {
         let mu_v = vp.figure.scale.value();
-        Motion {
+        PositionMotion {
             p: built_p.iter().map(|x| *x * mu_l).collect(),
             v: vp
                 .images

@@ -5,7 +5,7 @@
 use super::reduce::reduce_loads;
 use super::*;
 use crate::construct::{Context, Drafting};
-use crate::forces::{loads, solve_twin as solve, LoadKind, Motion};
+use crate::forces::{loads, solve_twin as solve, LoadKind, PositionMotion};
 use crate::geom::DVec2;
 use crate::study::Session;
 use std::path::Path;
@@ -77,7 +77,7 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
     for k in session.force_positions().expect("positions") {
         let f = session.forces(&sc, k).expect("force analysis");
         let pos = &plan.positions[k];
-        let exact = Motion::analytic(&pos.pose, w1);
+        let exact = PositionMotion::analytic(&pos.pose, w1);
         // Every load of the force analysis (inertia included): M_пр = −sign(ω₁)·M_у.
         let m = reduce_loads(&f.analysis.loads_exact, &exact, w1.abs());
         assert!(
@@ -100,7 +100,7 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
         // The dynamics' own loads (weights and resistance, every link): the linear solve of
         // the links' equilibrium under them gives the same moment.
         with_reducer(Some(None), |red| {
-            let motion = Motion {
+            let motion = PositionMotion {
                 a: vec![DVec2::ZERO; exact.a.len()],
                 eps: vec![0.0; exact.eps.len()],
                 ..exact.clone()
@@ -242,7 +242,7 @@ fn graphical_work_converges_at_the_chord_rate() {
     let mut errors = Vec::new();
     with_reducer(None, |red| {
         for n in [24usize, 48, 96, 192, 384] {
-            let reds: Vec<Reduced> = (0..n)
+            let reds: Vec<ReducedPosition> = (0..n)
                 .map(|i| {
                     red.exact(std::f64::consts::TAU * i as f64 / n as f64)
                         .expect("twin")
@@ -451,11 +451,11 @@ pub(super) fn assert_quasi_static(
     fs: &crate::forces::ForceSpec,
     plan: &crate::linkage::PositionPlan,
     k: usize,
-    motion: &Motion,
+    motion: &PositionMotion,
     phase: crate::forces::Phase,
     kinds: &[LoadKind],
     sense: f64,
-) -> super::reduce::Reduced {
+) -> super::reduce::ReducedPosition {
     let pos = &plan.positions[k];
     let r = red.at(motion, pos.phi).expect("reduction");
     let quasi: Vec<_> = loads(fs, &plan.program, motion, phase)

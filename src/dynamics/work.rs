@@ -2,11 +2,11 @@
 //! integrated by chords into A_с at μ_A = μ_M·μ_φ·H; A_д the straight line to A_с(2π), the ray
 //! from the pole parallel to it reading M_д; ΔT = A_д − A_с measured between them.
 
-use super::reduce::Reduced;
+use super::reduce::ReducedPosition;
 use super::scales::{given_draws, scale_of, HEIGHT_MM, TURN_MM};
 use super::spec::{ConstantMoment, DynamicsSpec};
 use super::DynamicsError;
-use crate::calculus::{integrate_chords, thin, Diagram, Layout, Sampling, Scales};
+use crate::calculus::{integrate_chords, thin, Diagram, DiagramLayout, Sampling, Scales};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
 use crate::scale::{Quantity, Scale};
@@ -33,7 +33,7 @@ pub(super) struct WorkScales {
 
 impl WorkScales {
     /// The scales of the reduction `red` at its N equally spaced positions.
-    pub fn of(spec: &DynamicsSpec, red: &[Reduced]) -> Result<Self, DynamicsError> {
+    pub fn of(spec: &DynamicsSpec, red: &[ReducedPosition]) -> Result<Self, DynamicsError> {
         let n = red.len();
         let dx = TAU / n.max(1) as f64;
         let sgn = spec.constant_moment.sign();
@@ -105,7 +105,7 @@ pub(super) fn work(
     let m_lo = mc.iter().fold(0.0f64, |m, &v| m.min(mu_m.to_mm(v)));
     let a_hi = sc.a_est / mu_a.value();
     let so = DVec2::new(0.0, a_hi + 30.0 - m_lo);
-    let layout = Layout::new(so, DVec2::ZERO)
+    let layout = DiagramLayout::new(so, DVec2::ZERO)
         .named("φ", vary[0], "A")
         .pole_named("P", "H");
     let scales = Scales { x: sc.phi, y: mu_m };

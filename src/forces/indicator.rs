@@ -8,7 +8,7 @@
 //! rotation. One cycle is one turn of the crank (a two-stroke engine), so the dynamics'
 //! cycle of one revolution holds.
 
-use super::loads::{Load, LoadKind, Motion};
+use super::loads::{Load, LoadKind, PositionMotion};
 pub use super::spec::Indicator;
 use super::ForceError;
 use crate::geom::DVec2;
@@ -44,7 +44,11 @@ impl Indicator {
     ///
     /// # Errors
     /// The point is not a piston (the slider's joint of an RRP group).
-    pub fn load(&self, prog: &Program, motion: &Motion) -> Result<Option<Load>, ForceError> {
+    pub fn load(
+        &self,
+        prog: &Program,
+        motion: &PositionMotion,
+    ) -> Result<Option<Load>, ForceError> {
         let k = prog.index(&self.point).ok_or_else(|| ForceError::NoPoint {
             key: "indicator.point",
             name: self.point.clone(),

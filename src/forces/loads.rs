@@ -9,7 +9,7 @@ use crate::linkage::{Pose, Program};
 
 /// The motion of one position, SI, by program point index and by link number.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Motion {
+pub struct PositionMotion {
     /// Positions, m.
     pub p: Vec<DVec2>,
     /// Velocities, m/s.
@@ -22,7 +22,7 @@ pub struct Motion {
     pub eps: Vec<f64>,
 }
 
-impl Motion {
+impl PositionMotion {
     /// The analytic twin's motion at `pose` with the crank turning at `w1` (constant).
     pub fn analytic(pose: &Pose, w1: f64) -> Self {
         Self {
@@ -153,7 +153,7 @@ pub type Phase = Option<bool>;
 pub fn loads(
     spec: &ForceSpec,
     prog: &Program,
-    motion: &Motion,
+    motion: &PositionMotion,
     phase: Phase,
 ) -> Result<Vec<Load>, ForceError> {
     let mut out = Vec::new();

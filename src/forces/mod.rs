@@ -33,7 +33,7 @@ pub use spec::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke
 pub use error::ForceError;
 pub use indicator::Indicator;
 pub use loads::{
-    arm, carrier, force_scale, loads, reach, Load, LoadKind, Motion, Phase, ZERO_PART,
+    arm, carrier, force_scale, loads, reach, Load, LoadKind, Phase, PositionMotion, ZERO_PART,
 };
 pub use pair_friction::{friction_loads, PairFriction, PairMotion};
 pub use polygons::{
@@ -94,7 +94,7 @@ pub struct PositionForces {
     /// (when the scene has it) with friction in the pairs.
     pub residuals: Vec<Residual>,
     /// The motion as the plans give it, which the loads are formed from.
-    pub drawn: Motion,
+    pub drawn: PositionMotion,
 }
 
 /// The equilibrium check of both routes of one analysis (`residual::residual`): every
@@ -214,11 +214,11 @@ pub fn graphical_motion(
     vp: &KinPlan,
     ap: &KinPlan,
     ctx: &Context,
-) -> Motion {
+) -> PositionMotion {
     let b = &plan.positions[k].built;
     let mu_v = vp.figure.scale.value();
     let mu_a = ap.figure.scale.value();
-    Motion {
+    PositionMotion {
         p: b.p.iter().map(|x| *x * mu_l.value()).collect(),
         v: vp.images.iter().map(|x| *x * mu_v).collect(),
         a: ap
@@ -247,7 +247,7 @@ pub fn analyse(
     let pos = &plan.positions[k];
     let sense = w1.signum();
     let ph = phase(plan, pos.phi, sense);
-    let exact = Motion::analytic(&pos.pose, w1);
+    let exact = PositionMotion::analytic(&pos.pose, w1);
     let loads_exact = loads::loads(spec, prog, &exact, ph)?;
     let twin = twin::solve(prog, &pos.pose, &loads_exact, &spec.drive, sense)
         .map_err(|e| located(e, &pos.label, prog, &pos.pose))?;
@@ -470,8 +470,8 @@ struct Route<'a> {
     board: &'a polygons::Board<'a>,
     vp: &'a KinPlan,
     pose: &'a crate::linkage::Pose,
-    drawn: &'a Motion,
-    exact: &'a Motion,
+    drawn: &'a PositionMotion,
+    exact: &'a PositionMotion,
     loads: &'a [Load],
     loads_exact: &'a [Load],
     label: &'a str,

@@ -3,7 +3,7 @@
 
 use super::pair_friction::sliding_friction;
 use super::{Analysis, Load, LoadKind, PositionForces};
-use crate::check::notes::forces::{ForcesNote, PairFriction};
+use crate::check::notes::forces::{ForcesNote, PositionFriction};
 use crate::check::{Key, Method, Row, Symbol};
 use crate::geom::DVec2;
 
@@ -179,7 +179,7 @@ pub fn notes(f: &PositionForces) -> Vec<ForcesNote> {
     if let Some(w) = &f.friction {
         out.push(ForcesNote::Friction {
             label: label(),
-            friction: PairFriction {
+            friction: PositionFriction {
                 with: w.analysis.twin.m_bal,
                 without: f.analysis.twin.m_bal,
                 lost: -w.lost,

@@ -1,7 +1,7 @@
 //! The force polygons and the lever against the linear solve over random mechanisms of
 //! every pair of dyad kinds with random loads, and the twin against the power balance.
 
-use super::loads::{loads, Motion};
+use super::loads::{loads, PositionMotion};
 use super::polygons::{polygons, Board};
 use super::twin::{power_balance, solve};
 use super::*;
@@ -66,8 +66,8 @@ struct Case {
     built: crate::linkage::Built,
     pose: crate::linkage::Pose,
     vp: crate::linkage::KinPlan,
-    exact: Motion,
-    drawn: Motion,
+    exact: PositionMotion,
+    drawn: PositionMotion,
     le: Vec<Load>,
     lg: Vec<Load>,
     twin: Equilibrium,
@@ -97,14 +97,14 @@ fn case(m: &Mechanism, phi: f64, spec: &ForceSpec) -> Result<Case, TestCaseError
         .map_err(|_| TestCaseError::reject("plan refused"))?;
     let ap = kin_plan(&setup, PlanKind::Acceleration, sa, Some(&vp))
         .map_err(|_| TestCaseError::reject("plan refused"))?;
-    let exact = Motion::analytic(&pose, W1);
+    let exact = PositionMotion::analytic(&pose, W1);
     let le = loads(spec, &prog, &exact, None).map_err(|e| TestCaseError::fail(e.to_string()))?;
     let twin = match solve(&prog, &pose, &le, &spec.drive, W1.signum()) {
         Ok(t) => t,
         Err(ForceError::Singular) => return Err(TestCaseError::reject("singular")),
         Err(e) => return Err(TestCaseError::fail(e.to_string())),
     };
-    let drawn = Motion {
+    let drawn = PositionMotion {
         p: built.p.iter().map(|x| *x * mu_l.value()).collect(),
         v: vp.images.iter().map(|x| *x * sv.value()).collect(),
         a: ap.images.iter().map(|x| *x * sa.value()).collect(),
@@ -569,7 +569,7 @@ fn a_load_on_the_wrong_body_is_flagged_by_both_checks() {
     let (m, spec, plan) = block_on_slider();
     let k = 1;
     let pos = &plan.positions[k];
-    let exact = Motion::analytic(&pos.pose, 10.0);
+    let exact = PositionMotion::analytic(&pos.pose, 10.0);
     let loads = loads(&spec, &plan.program, &exact, None).expect("loads");
     let misplaced: Vec<Load> = loads
         .into_iter()

@@ -3,7 +3,7 @@
 //! per link, ΣF = 0 and ΣM = 0 — and the balancing moment a second way from the power
 //! balance Σ F·v + Σ M·ω + M_bal·ω₁ = 0. Shares nothing with the polygons but the loads.
 
-use super::loads::{Load, Motion};
+use super::loads::{Load, PositionMotion};
 use super::spec::Drive;
 use super::ForceError;
 use crate::geom::DVec2;
@@ -289,7 +289,7 @@ fn solve_on(
 
 /// The balancing moment from the power balance: M_bal·ω₁ + Σ F·v + Σ M·ω = 0 (the ideal
 /// pairs' reactions do no work).
-pub fn power_balance(loads: &[Load], motion: &Motion, w1: f64) -> f64 {
+pub fn power_balance(loads: &[Load], motion: &PositionMotion, w1: f64) -> f64 {
     let power: f64 = loads
         .iter()
         .map(|l| {

@@ -243,7 +243,7 @@ pub struct FollowerGuide {
     /// The pressure angle λ, rad, in [0, π/2).
     pub angle: f64,
     /// The guide: its length b, the overhang l, f.
-    pub guide: crate::cam::force::Guide,
+    pub guide: crate::cam::force::TranslatingGuide,
 }
 
 /// A rocker pushed by its cam at the pressure angle λ against the moment of resistance M_с,

@@ -558,7 +558,7 @@ proptest! {
         load in 1.0f64..1e5, f in 0.02f64..0.8, length in 0.01f64..0.2, overhang in 0.0f64..0.3,
         moment in 0.1f64..1e3, arm in 0.03f64..0.5, ratio in 0.02f64..0.9, share in 0.0f64..0.95,
     ) {
-        let guide = crate::cam::force::Guide { length, overhang, f };
+        let guide = crate::cam::force::TranslatingGuide { length, overhang, f };
         let lock = (length / (f * (2.0 * overhang + length))).atan();
         let pivot = crate::cam::force::Pivot { arm, diameter: 2.0 * arm * ratio, f };
         let rho = arm * ratio * f / f.hypot(1.0);

@@ -12,7 +12,7 @@
 
 use super::detail::DetailMark;
 use super::numbers;
-use super::rack::{Cutting, Piece};
+use super::rack::{Cutting, RackPiece};
 use super::trace::{drawn_outline, polyline_crossing, refine, touching};
 use super::{GearError, MIN_TIP};
 use crate::construct::{Context, Figure, Item, Measured, Recorder, Role};
@@ -26,7 +26,7 @@ pub struct Touch {
     /// The rack's state (displacement), m.
     pub q: f64,
     /// The part of the rack touching.
-    pub piece: Piece,
+    pub piece: RackPiece,
     /// The point in the wheel's frame as drawn, converted with μ, m.
     pub at: DVec2,
     /// The envelope's unit tangent there (⊥ the rack's normal through P), wheel frame.
@@ -325,7 +325,7 @@ const FILLET_SHARE: usize = 2;
 /// involute proper, from where the contact passes N at `q_n`: beyond N the flank traces the
 /// branch the fillet cuts away), the fillet and the root.
 fn pieces(c: &Cutting, touches: &[Touch], q_n: f64) -> [Vec<Touch>; 3] {
-    let by = |piece: Piece| -> Vec<Touch> {
+    let by = |piece: RackPiece| -> Vec<Touch> {
         let mut v: Vec<Touch> = touches
             .iter()
             .copied()
@@ -334,12 +334,12 @@ fn pieces(c: &Cutting, touches: &[Touch], q_n: f64) -> [Vec<Touch>; 3] {
         v.sort_by(|a, b| a.q.total_cmp(&b.q));
         v
     };
-    let flank: Vec<Touch> = by(Piece::Flank)
+    let flank: Vec<Touch> = by(RackPiece::Flank)
         .into_iter()
         .filter(|t| t.q >= q_n - 1e-12 * c.module)
         .collect();
-    let fillet = by(Piece::Fillet);
-    let root = by(Piece::Root);
+    let fillet = by(RackPiece::Fillet);
+    let root = by(RackPiece::Root);
     [flank, fillet, root]
 }
 
@@ -490,11 +490,11 @@ fn trace(rec: &mut Recorder, c: &Cutting, states: &[f64], drawn: &[usize], mu: f
 }
 
 /// The exact envelope of `c` at the state `q` of the rack's `piece`, m.
-fn twin(c: &Cutting, piece: Piece, q: f64) -> DVec2 {
+fn twin(c: &Cutting, piece: RackPiece, q: f64) -> DVec2 {
     match piece {
-        Piece::Flank => c.involute_at(q),
-        Piece::Fillet => c.trochoid_at(q),
-        Piece::Root => c.root_at(q),
+        RackPiece::Flank => c.involute_at(q),
+        RackPiece::Fillet => c.trochoid_at(q),
+        RackPiece::Root => c.root_at(q),
     }
 }
 
@@ -507,9 +507,9 @@ fn deviations(c: &Cutting, pieces: [&[Touch]; 3]) -> (f64, f64) {
     let st = c.states();
     let (_, qi, qf) = c.junction();
     let real = |t: &Touch| match t.piece {
-        Piece::Flank => t.q >= qi - 1e-12 * c.module && t.q <= st.q_a + 1e-12 * c.module,
-        Piece::Fillet => t.q >= qf - 1e-12 * c.module,
-        Piece::Root => t.q >= st.q_space - 1e-12 * c.module,
+        RackPiece::Flank => t.q >= qi - 1e-12 * c.module && t.q <= st.q_a + 1e-12 * c.module,
+        RackPiece::Fillet => t.q >= qf - 1e-12 * c.module,
+        RackPiece::Root => t.q >= st.q_space - 1e-12 * c.module,
     };
     let mut deviation: f64 = 0.0;
     let (mut sum, mut count) = (0.0, 0usize);

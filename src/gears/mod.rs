@@ -5,7 +5,7 @@
 //!
 //! As everywhere in `tmm`, each procedure exists twice: a **construction** through the
 //! recorder (`mesh::meshing`, [`generate`], `triangles::triangles`) read off under
-//! the drafting model, and an **analytic twin** ([`Pair`], [`Cutting`], [`Train::willis`]);
+//! the drafting model, and an **analytic twin** ([`GearPair`], [`Cutting`], [`Train::willis`]);
 //! `rows` compares them.
 //!
 //! Errata of the seeds reproduced against, never matched (`docs/seed-000-cases.md` §000.13,
@@ -41,8 +41,10 @@ pub use differential::Differential;
 pub use generate::{generate, Generation};
 pub use involute::{compass_involute, dms, inv, inv_inverse, CompassInvolute, TABLE_DIGITS};
 pub use mesh::{LAMBDA_MM, NAME_WITHIN_MM};
-pub use pair::{Pair, PairSpec};
-pub use rack::{x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, Piece, States, ToolShape};
+pub use pair::{GearPair, PairSpec};
+pub use rack::{
+    x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, RackPiece, States, ToolShape,
+};
 pub use rows::PairSeed;
 pub use train::{
     train_study, ClosedMesh, Mesh, PlanetarySpec, SeedStage, Stage, Train, TrainError,
@@ -240,7 +242,7 @@ pub const DEFAULT_POSITIONS: usize = 90;
 #[derive(Debug, Clone, PartialEq)]
 pub struct MeshedPair {
     /// The pair's dimensions by formula.
-    pub pair: Pair,
+    pub pair: GearPair,
     /// Its meshing picture and what was read off it.
     pub meshing: mesh::Meshing,
 }
@@ -269,11 +271,11 @@ pub struct GearStudy {
     pub train: Option<TrainStudy>,
     /// The pair's blocking contour with the scene's point placed and the textbook's
     /// choices (`None`: no pair, or no contour for it).
-    pub blocking: Option<blocking::Study>,
+    pub blocking: Option<blocking::BlockingStudy>,
 }
 
 /// The round μ_l of a meshing picture: the whole of both wheels about 360 mm tall.
-pub fn meshing_scale(p: &Pair) -> Result<Scale, GearError> {
+pub fn meshing_scale(p: &GearPair) -> Result<Scale, GearError> {
     scale_for(p.a_w + p.ra[0] + p.ra[1], 360.0)
 }
 
@@ -296,7 +298,7 @@ pub fn study(
 ) -> Result<GearStudy, GearError> {
     let pair = match &spec.pair {
         Some(ps) => {
-            let p = Pair::working(*ps)?;
+            let p = GearPair::working(*ps)?;
             let scale = match spec.scale_l {
                 Some(s) => s,
                 None => meshing_scale(&p)?,
@@ -390,10 +392,10 @@ impl GearStudy {
     }
 
     /// The notes: the pair's (with the seeds' errata), each generation's.
-    pub fn notes(&self) -> Vec<crate::check::Note> {
+    pub fn notes(&self) -> Vec<crate::check::ReportNote> {
         use crate::check::notes::GearsNote;
-        use crate::check::Note;
-        let mut out: Vec<Note> = Vec::new();
+        use crate::check::ReportNote;
+        let mut out: Vec<ReportNote> = Vec::new();
         if let Some(MeshedPair {
             pair: p,
             meshing: m,
@@ -402,25 +404,25 @@ impl GearStudy {
             out.extend(
                 rows::pair_notes(p, self.seed.as_ref())
                     .into_iter()
-                    .map(Note::from),
+                    .map(ReportNote::from),
             );
-            out.push(Note::from(GearsNote::Compass {
+            out.push(ReportNote::from(GearsNote::Compass {
                 deviation: m.compass.0,
                 step: m.compass.1,
             }));
         }
         if let Some(b) = &self.blocking {
-            out.extend(b.notes().into_iter().map(Note::from));
+            out.extend(b.notes().into_iter().map(ReportNote::from));
         }
         for w in &self.racks {
             out.extend(
                 rows::generation_notes(&w.name, &w.generation)
                     .into_iter()
-                    .map(Note::from),
+                    .map(ReportNote::from),
             );
         }
         if let Some(t) = &self.train {
-            out.extend(t.notes().into_iter().map(Note::from));
+            out.extend(t.notes().into_iter().map(ReportNote::from));
         }
         out
     }

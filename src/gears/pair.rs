@@ -26,7 +26,7 @@ pub struct PairSpec {
 
 /// The pair's geometry, SI (m, rad).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Pair {
+pub struct GearPair {
     /// The pair as given.
     pub spec: PairSpec,
     /// inv α_w = 2 x_Σ tg α/(z₁ + z₂) + inv α.
@@ -124,7 +124,7 @@ impl PairSpec {
     }
 }
 
-impl Pair {
+impl GearPair {
     /// The geometry of `spec`.
     ///
     /// # Errors
@@ -212,10 +212,10 @@ impl Pair {
     /// base circle (a Δy too large: no involute flank), a tip that passes the
     /// interference point of the other wheel (the practical line of action leaves N₁N₂), a
     /// pointed tooth (s_a ≤ 0), a contact ratio below 1, a negative radial clearance, or a
-    /// tip that cuts into the mate's fillet ([`Pair::fillet_clear`]).
+    /// tip that cuts into the mate's fillet ([`GearPair::fillet_clear`]).
     ///
     /// # Errors
-    /// Those of [`Pair::new`], [`GearError::TipInsideBase`], [`GearError::Interference`],
+    /// Those of [`GearPair::new`], [`GearError::TipInsideBase`], [`GearError::Interference`],
     /// [`GearError::Pointed`], [`GearError::ContactRatio`], [`GearError::Clearance`],
     /// [`GearError::FilletInterference`].
     pub fn working(spec: PairSpec) -> Result<Self, GearError> {

@@ -139,7 +139,7 @@ pub struct ToolShape {
 
 /// Which part of the rack touches the envelope.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Piece {
+pub enum RackPiece {
     /// The straight flank: the involute.
     Flank,
     /// The tip rounding: the trochoidal fillet.

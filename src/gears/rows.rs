@@ -4,7 +4,7 @@
 use super::generate::Generation;
 use super::involute::thickness_at;
 use super::mesh::Meshing;
-use super::{x_for_tip, x_min_textbook, Pair, MIN_TIP};
+use super::{x_for_tip, x_min_textbook, GearPair, MIN_TIP};
 use crate::check::notes::gears::{Cut, GearsNote, Junction, PairIndices, WrongBase};
 use crate::check::{Key, Method, Row, Symbol};
 use std::f64::consts::FRAC_PI_2;
@@ -33,7 +33,7 @@ pub(super) fn row(
 /// (z₁+z₂)) against r_b/cos α_w, r_a = r + (h_a* + x − Δy)m against a_w − r_f(mate) − c*m,
 /// s_a by the thickness formula against the involute's polar angle, ε_α by (3.20) against
 /// B₁B₂/p_b.
-pub fn pair_rows(p: &Pair) -> Vec<Row> {
+pub fn pair_rows(p: &GearPair) -> Vec<Row> {
     let f = Method::Formula;
     let m = p.spec.module;
     let mut out = vec![
@@ -107,7 +107,7 @@ pub fn pair_rows(p: &Pair) -> Vec<Row> {
 /// c*m, s = m(π/2 + 2x tg α) against the pitch less the rack's tooth on the line xm off its
 /// mean line, α_a = arccos(r_b/r_a) against arctg(√(r_a² − r_b²)/r_b), h = r_a − r_f against
 /// (2h_a* + c* − Δy)m.
-fn parameter_rows(p: &Pair) -> Vec<Row> {
+fn parameter_rows(p: &GearPair) -> Vec<Row> {
     use std::f64::consts::PI;
     let f = Method::Formula;
     let s = &p.spec;
@@ -184,7 +184,7 @@ fn parameter_rows(p: &Pair) -> Vec<Row> {
 
 /// The rows read off the meshing picture: a_w (O₁O₂), N₁N₂, B₁B₂, ε′ = B₁B₂/p_b and the
 /// specific sliding λ₁, λ₂ at B₁, P, B₂ (by position).
-pub fn meshing_rows(p: &Pair, mesh: &Meshing) -> Vec<Row> {
+pub fn meshing_rows(p: &GearPair, mesh: &Meshing) -> Vec<Row> {
     let me = Method::Meshing;
     let mut out = vec![
         row(
@@ -360,7 +360,7 @@ pub fn generation_notes(name: &str, g: &Generation) -> Vec<GearsNote> {
 
 /// The centre distance of the textbook's table route: y = x_Σ − Δy with the table's Δy,
 /// a_w = m(z_Σ/2 + y).
-pub fn table_a_w(p: &Pair) -> f64 {
+pub fn table_a_w(p: &GearPair) -> f64 {
     let zs = f64::from(p.spec.z[0] + p.spec.z[1]);
     p.spec.module * (zs / 2.0 + p.spec.x_sum() - p.dy)
 }
@@ -386,7 +386,7 @@ pub struct PairSeed {
 /// checked against this pair — an α_w off the table's own reading, an ε_α from the base
 /// radius r·cos α_w (seed 000: 1.22), a cos α_w misread with the a_w it gives (seed 002 PZ3:
 /// 0.8836, 180.79 mm), a pitch that is not πm.
-pub fn pair_notes(p: &Pair, seed: Option<&PairSeed>) -> Vec<GearsNote> {
+pub fn pair_notes(p: &GearPair, seed: Option<&PairSeed>) -> Vec<GearsNote> {
     let m = p.spec.module;
     let seed = seed.copied().unwrap_or_default();
     let mut out = vec![GearsNote::Pair(PairIndices {
@@ -427,7 +427,7 @@ pub fn pair_notes(p: &Pair, seed: Option<&PairSeed>) -> Vec<GearsNote> {
 }
 
 /// The erratum notes of the printed values that this pair does not reproduce.
-fn seed_notes(p: &Pair, seed: &PairSeed) -> Vec<GearsNote> {
+fn seed_notes(p: &GearPair, seed: &PairSeed) -> Vec<GearsNote> {
     let mut out = Vec::new();
     // The base radius r·cos α_w and the base pitch πm·cos α_w (seed 000 §4).
     let wrong_pb = p.p * p.alpha_w.cos();

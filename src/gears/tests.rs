@@ -16,8 +16,8 @@ use std::f64::consts::FRAC_PI_2;
 
 const GOST: BasicRack = BasicRack::GOST_13755;
 
-fn pair(m_mm: f64, z: [u32; 2], x: [f64; 2]) -> Pair {
-    Pair::new(PairSpec {
+fn pair(m_mm: f64, z: [u32; 2], x: [f64; 2]) -> GearPair {
+    GearPair::new(PairSpec {
         module: m_mm * 1e-3,
         z,
         x,
@@ -27,13 +27,13 @@ fn pair(m_mm: f64, z: [u32; 2], x: [f64; 2]) -> Pair {
     .unwrap()
 }
 
-fn seed000() -> Pair {
+fn seed000() -> GearPair {
     pair(14.0, [13, 30], [0.8, 0.471])
 }
 
 /// PZ3's pair the textbook's way: Δy = 0.160 from Kudryavtsev's table A.
-fn pz3() -> Pair {
-    Pair::new(PairSpec {
+fn pz3() -> GearPair {
+    GearPair::new(PairSpec {
         dy_table: Some(0.160),
         ..pair(10.0, [13, 21], [0.694, 0.384]).spec
     })
@@ -287,9 +287,9 @@ fn rack_generation_touches_the_exact_curves_including_the_junction() {
             .filter(|t| (t.q - qi).abs() < 0.05 * c.module || (t.q - qf).abs() < 0.05 * c.module);
         for t in near {
             let twin = match t.piece {
-                Piece::Flank => c.involute_at(t.q),
-                Piece::Fillet => c.trochoid_at(t.q),
-                Piece::Root => c.root_at(t.q),
+                RackPiece::Flank => c.involute_at(t.q),
+                RackPiece::Fillet => c.trochoid_at(t.q),
+                RackPiece::Root => c.root_at(t.q),
             };
             assert!((t.at - twin).length() < 1e-9 * c.module);
         }
@@ -386,15 +386,15 @@ fn refusals_name_what_is_wrong() {
         dy_table: None,
     };
     // Zero shifts on 13 teeth: the pinion's tip digs past N.
-    let e = Pair::working(spec([0.0, 0.0])).unwrap_err();
+    let e = GearPair::working(spec([0.0, 0.0])).unwrap_err();
     assert!(matches!(e, GearError::Interference { wheel: 2, .. }), "{e}");
     assert!(matches!(
-        Pair::new(spec([-0.5, -0.5])),
+        GearPair::new(spec([-0.5, -0.5])),
         Err(GearError::InvoluteDomain { .. })
     ));
-    let e = Pair::working(spec([1.6, 0.0])).unwrap_err();
+    let e = GearPair::working(spec([1.6, 0.0])).unwrap_err();
     assert!(matches!(e, GearError::Pointed { wheel: 1, .. }), "{e}");
-    assert!(Pair::working(spec([0.694, 0.384])).is_ok());
+    assert!(GearPair::working(spec([0.694, 0.384])).is_ok());
     let e = spec([0.5, 0.0]).x2_for_centre_distance(0.150).unwrap_err();
     assert!(matches!(e, GearError::CentreDistance { .. }));
     let x2 = spec([0.694, 0.0])
@@ -421,7 +421,7 @@ proptest! {
         z1 in 12u32..40, dz in 0u32..60, x1 in 0.0f64..0.8, x2 in -0.3f64..0.8, m in 2.0f64..20.0
     ) {
         let spec = PairSpec { module: m * 1e-3, z: [z1, z1 + dz], x: [x1, x2], rack: GOST, dy_table: None };
-        if let Ok(p) = Pair::working(spec) {
+        if let Ok(p) = GearPair::working(spec) {
             let scale = Scale::round_for(p.a_w + p.ra[0] + p.ra[1], 360.0, Quantity::Length).unwrap();
             let mesh = meshing(&p, scale, &ctx(0.0)).unwrap();
             prop_assert!((mesh.eps - p.eps).abs() < 1e-9);
@@ -500,7 +500,7 @@ fn the_inv_table_route_reads_alpha_w_to_its_resolution() {
 fn the_tables_delta_y_reproduces_the_seeds_rounded_numbers() {
     // Seed 000 takes Δy = 0.18 from the tables: y = 1.091, a_w = 316.274 mm, r_a = 113.68 and
     // 228.074 mm (exact: Δy = 0.17983, a_w = 316.276, r_a = 113.682, 228.076).
-    let p = Pair::new(PairSpec {
+    let p = GearPair::new(PairSpec {
         dy_table: Some(0.18),
         ..seed000().spec
     })

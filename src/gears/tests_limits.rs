@@ -122,9 +122,9 @@ fn a_delta_y_that_puts_the_tip_inside_the_base_circle_is_named_so() {
         rack: BasicRack::GOST_13755,
         dy_table: Some(2.5),
     };
-    let p = Pair::new(spec).unwrap();
+    let p = GearPair::new(spec).unwrap();
     assert!(p.ra[0] < p.rb[0]);
-    match Pair::working(spec) {
+    match GearPair::working(spec) {
         Err(GearError::TipInsideBase {
             wheel: 1,
             ra_mm,
@@ -137,13 +137,13 @@ fn a_delta_y_that_puts_the_tip_inside_the_base_circle_is_named_so() {
         other => panic!("{other:?}"),
     }
     // The seed's Δy = 0.18 gives ε_α = 1.1550 (the exact Δy 1.15524).
-    let seed = Pair::working(PairSpec {
+    let seed = GearPair::working(PairSpec {
         dy_table: Some(0.18),
         ..spec
     })
     .unwrap();
     assert!((seed.eps - 1.1550).abs() < 5e-5, "{}", seed.eps);
-    let exact = Pair::working(PairSpec {
+    let exact = GearPair::working(PairSpec {
         dy_table: None,
         ..spec
     })

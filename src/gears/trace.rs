@@ -3,7 +3,7 @@
 //! pole), and the crossing of the drawn fillet and involute that marks undercut, refined on
 //! the traced pieces.
 
-use super::rack::{Cutting, Piece};
+use super::rack::{Cutting, RackPiece};
 use crate::geom::{pin_crossing, rotate, CurvePoint, DVec2, Segment};
 use std::f64::consts::PI;
 
@@ -62,7 +62,7 @@ fn outline_runs(c: &Cutting, q: f64) -> Vec<Vec<DVec2>> {
 /// The points of the rack at the state `q` whose normal passes through the pole P, in the
 /// fixed frame (the wheel turned back by q/r): on the left flank, the left rounding and the
 /// tip line of the tool tooth at u₀, each where it is part of the tool and inside the blank.
-pub(super) fn touching(c: &Cutting, q: f64) -> Vec<(Piece, DVec2)> {
+pub(super) fn touching(c: &Cutting, q: f64) -> Vec<(RackPiece, DVec2)> {
     let m = c.module;
     let sh = c.shape();
     let alpha = c.rack.alpha;
@@ -77,7 +77,7 @@ pub(super) fn touching(c: &Cutting, q: f64) -> Vec<(Piece, DVec2)> {
     let k = f0 + e * (p - f0).dot(e);
     let v = k.y - base;
     if v >= sh.vj - slack && v <= c.rack.ha * m && k.length() <= c.ra + slack {
-        out.push((Piece::Flank, k));
+        out.push((RackPiece::Flank, k));
     }
     // The rounding: its centre, the point on the ray from P through it.
     let centre = DVec2::new(u0 - sh.uc + q, base + sh.vc);
@@ -86,13 +86,13 @@ pub(super) fn touching(c: &Cutting, q: f64) -> Vec<(Piece, DVec2)> {
         if a >= PI + alpha - 1e-12 && a <= 1.5 * PI + 1e-12 {
             let k = centre + d * (c.rack.rho * m);
             if k.length() <= c.ra + slack {
-                out.push((Piece::Fillet, k));
+                out.push((RackPiece::Fillet, k));
             }
         }
     }
     // The tip line under P.
     if (q + u0).abs() <= sh.uc + slack {
-        out.push((Piece::Root, DVec2::new(0.0, base + sh.vt)));
+        out.push((RackPiece::Root, DVec2::new(0.0, base + sh.vt)));
     }
     out
 }
@@ -130,7 +130,7 @@ pub(super) type Traced = CurvePoint;
 /// middle of each step, trace the touching points there, keep the halves that cross; until
 /// the steps shrink to rounding ([`pin_crossing`]).
 pub(super) fn refine(c: &Cutting, f: [Traced; 2], l: [Traced; 2]) -> Option<DVec2> {
-    let at = |piece: Piece| {
+    let at = |piece: RackPiece| {
         move |q: f64| {
             touching(c, q)
                 .into_iter()
@@ -141,7 +141,7 @@ pub(super) fn refine(c: &Cutting, f: [Traced; 2], l: [Traced; 2]) -> Option<DVec
     // Steps of 1e-10·m: their chords are the curves to ~1e-20·m, and shorter ones would
     // meet at the mercy of rounding (the fillet crosses the involute at a shallow angle).
     pin_crossing(
-        (at(Piece::Fillet), at(Piece::Flank)),
+        (at(RackPiece::Fillet), at(RackPiece::Flank)),
         [f, l],
         80,
         1e-10 * c.module,

@@ -3,7 +3,7 @@
 
 use super::{extent, numbered, pole_and_scale, turn_diagram, KinError, KinematicsSpec};
 use super::{DIAGRAM_GAP, DIAGRAM_MM};
-use crate::calculus::{self, Derivative, Diagram, Layout, Scales};
+use crate::calculus::{self, Derivative, Diagram, DiagramLayout, Scales};
 use crate::check::{Key, Method, Row, Symbol};
 use crate::construct::{Context, Drafting, Figure, Item, Recorder, Role};
 use crate::geom::DVec2;
@@ -49,7 +49,7 @@ impl Default for ChartSize {
 
 /// The displacement diagram and its two graphical derivatives.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Diagrams {
+pub struct KinDiagrams {
     /// The charted point's name.
     pub point: String,
     /// μ_φ, μ_s of the displacement diagram.
@@ -262,7 +262,7 @@ pub fn diagrams(
     scale_l: Scale,
     w1: f64,
     ctx: &Context,
-) -> Result<Option<Diagrams>, KinError> {
+) -> Result<Option<KinDiagrams>, KinError> {
     let Some((k, dir)) = target(plan, outputs, spec)? else {
         return Ok(None);
     };
@@ -301,9 +301,9 @@ pub fn diagrams(
     // coincide with the first figure's result axes). Each diagram is placed from the
     // extent of its ordinates.
     let (construction, method) = if spec.tangents {
-        (calculus::Method::Tangents, Method::DiagramTangents)
+        (calculus::Derivation::Tangents, Method::DiagramTangents)
     } else {
-        (calculus::Method::Chords, Method::DiagramChords)
+        (calculus::Derivation::Chords, Method::DiagramChords)
     };
     let (s_lo, _) = extent(all_s.iter(), scales.y);
     let (d1_lo, d1_hi) = ordinates(&src, scales, h1, mu1, ctx).map_err(|e| fail("dS/dφ", e))?;
@@ -312,7 +312,7 @@ pub fn diagrams(
     let through = (between.iter())
         .map(|b| DVec2::new(scales.x.to_mm(b.travel), scales.y.to_mm(b.s)))
         .collect();
-    let lay1 = Layout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
+    let lay1 = DiagramLayout::new(DVec2::ZERO, DVec2::new(0.0, s_lo - DIAGRAM_GAP - d1_hi))
         .source_through(through)
         .pole_named("P_1", "H_1")
         .pole_marks(d1_lo - POLE_DIMENSION_MM, POLE_LABEL);
@@ -356,7 +356,7 @@ pub fn diagrams(
     .map_err(|e| fail("d²S/dφ²", e))?;
     let (d2_lo, d2_hi) = ordinates(&d1, scales2, h2, mu2, ctx).map_err(|e| fail("d²S/dφ²", e))?;
     let mut rec2 = Recorder::in_context("d²S/dφ²", mu2, ctx);
-    let lay2 = Layout::new(DVec2::ZERO, DVec2::new(0.0, d1_lo - DIAGRAM_GAP - d2_hi))
+    let lay2 = DiagramLayout::new(DVec2::ZERO, DVec2::new(0.0, d1_lo - DIAGRAM_GAP - d2_hi))
         .with_source(false)
         .named("φ", "dS/dφ", "d²S/dφ²")
         .pole_named("P_2", "H_2")
@@ -371,7 +371,7 @@ pub fn diagrams(
         (&s, &first, &second),
         (w1, method),
     );
-    Ok(Some(Diagrams {
+    Ok(Some(KinDiagrams {
         point: name,
         scales,
         first_figure: rec1.finish(),
@@ -460,8 +460,8 @@ pub(super) fn ordinates(
     ctx: &Context,
 ) -> Result<(f64, f64), calculus::CalculusError> {
     let mut r = Recorder::in_context("scratch", mu, &ctx.with_drafting(Drafting::EXACT));
-    let lay = Layout::new(DVec2::ZERO, DVec2::ZERO).with_source(false);
-    let dv = calculus::Method::Chords.differentiate(&mut r, d, scales, h, &lay)?;
+    let lay = DiagramLayout::new(DVec2::ZERO, DVec2::ZERO).with_source(false);
+    let dv = calculus::Derivation::Chords.differentiate(&mut r, d, scales, h, &lay)?;
     let left = dv.breaks.iter().map(|b| &b.left);
     Ok(extent(dv.mid.iter().chain(&dv.node).chain(left), mu))
 }

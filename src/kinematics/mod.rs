@@ -17,7 +17,7 @@ mod rocker;
 mod table;
 mod verdict;
 
-pub use diagrams::{diagrams, ChartSize, Diagrams};
+pub use diagrams::{diagrams, ChartSize, KinDiagrams};
 pub use hodograph::{hodograph, hodograph_point};
 pub use plans::{
     acceleration, acceleration_indices, drawn_points, position_indices, velocity, Velocity,
@@ -27,7 +27,7 @@ pub use table::analytic_table;
 pub use verdict::{by_position, verdict_notes, verdicts, LinkVerdict, Turning};
 
 use crate::calculus::{self, Diagram, Scales};
-use crate::check::notes::kinematics::{KinematicsNote, NearPivot};
+use crate::check::notes::kinematics::{KinematicsNote, PinNearPivot};
 use crate::check::Row;
 use crate::construct::ConstructionError;
 use crate::geom::{bisect, DVec2, Midpoint};
@@ -252,7 +252,7 @@ pub fn near_pivot_notes(plan: &PositionPlan, w1: f64) -> Vec<KinematicsNote> {
     let mut out = Vec::new();
     for p in &plan.positions {
         for n in &p.pose.near_pivot {
-            out.push(KinematicsNote::NearPivot(NearPivot {
+            out.push(KinematicsNote::NearPivot(PinNearPivot {
                 position: p.label.clone(),
                 pin: names[n.pin].clone(),
                 pivot: names[n.pivot].clone(),
@@ -430,7 +430,7 @@ fn peak(values: impl IntoIterator<Item = f64>) -> f64 {
 pub fn rows<'a>(
     velocity: impl IntoIterator<Item = &'a [Row]>,
     acceleration: impl IntoIterator<Item = &'a [Row]>,
-    diagrams: Option<&'a Diagrams>,
+    diagrams: Option<&'a KinDiagrams>,
     rocker: Option<&'a RockerDiagram>,
 ) -> Vec<Row> {
     let mut out: Vec<Row> = Vec::new();

@@ -2,7 +2,7 @@
 //! differentiated by chords into ε (seed 000 §1.5).
 
 use super::{extent, numbered, pole_and_scale, round_scale, turn_diagram, KinError, DIAGRAM_GAP};
-use crate::calculus::{self, Derivative, Layout, Scales};
+use crate::calculus::{self, Derivative, DiagramLayout, Scales};
 use crate::check::{Key, Method, Row, Symbol};
 use crate::construct::{Context, Figure, Recorder};
 use crate::geom::DVec2;
@@ -85,14 +85,14 @@ pub fn rocker_diagram(
     let (w_lo, _) = extent(omega.iter(), scale);
     let (d_lo, _) = super::diagrams::ordinates(&src, scales, h, mu, ctx).map_err(fail)?;
     let mut rec = Recorder::in_context("ω", mu, ctx);
-    let lay = Layout::new(DVec2::ZERO, DVec2::new(0.0, w_lo - DIAGRAM_GAP - ROCKER_MM))
+    let lay = DiagramLayout::new(DVec2::ZERO, DVec2::new(0.0, w_lo - DIAGRAM_GAP - ROCKER_MM))
         .named("φ", &format!("ω_{{{link}}}"), &format!("dω_{{{link}}}/dφ"))
         .pole_named("P_{ω}", "H_{ω}")
         .pole_marks(
             d_lo - super::diagrams::POLE_DIMENSION_MM,
             super::diagrams::POLE_LABEL,
         );
-    let derivative = calculus::Method::Chords
+    let derivative = calculus::Derivation::Chords
         .differentiate(&mut rec, &src, scales, h, &lay)
         .map_err(fail)?;
     let eps_scale = super::peak(numbered.iter().map(|(_, p)| p.pose.ddangle[link] * w1 * w1));

@@ -4,7 +4,7 @@
 
 use super::markup::{frac, num, sym, unit};
 use super::Writer;
-use crate::cam::{CamSpec, Diagrams};
+use crate::cam::{CamDiagrams, CamSpec};
 use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
 use std::f64::consts::TAU;
 
@@ -15,7 +15,7 @@ const ACCELERATION_UNIT: &str = "m/(rad^2*mm)";
 
 /// μ_φ = 2π/L; μ_S = h/y_max when found from the stroke; μ_S′ = μ_S/(μ_φ·H₂);
 /// μ_S″ = μ_S′/(μ_φ·H₁) — each with its numbers and its «где».
-pub(super) fn scales(w: &mut Writer<'_, '_>, d: &Diagrams, spec: &CamSpec) {
+pub(super) fn scales(w: &mut Writer<'_, '_>, d: &CamDiagrams, spec: &CamSpec) {
     let lang = w.lang;
     let n = |x: f64| num(x, 4, lang);
     let unit_of = |si: &str| unit(&unit_in(si, lang));

@@ -8,7 +8,7 @@ use super::plan_reads::Plans;
 use super::rows::{numbers, values_and_errors, Column};
 use super::Writer;
 use crate::check::{Method, Row, Symbol};
-use crate::kinematics::Diagrams;
+use crate::kinematics::KinDiagrams;
 use crate::scale::format_fixed;
 use crate::scene::PlateKind;
 use crate::study::Kinematics;
@@ -56,7 +56,7 @@ const SECOND_UNIT: &str = "m/(rad^2*mm)";
 
 /// μ_φ = 2π/L from the diagram's base L (mm: its intervals × their length), then
 /// μ_S′ = μ_S/(μ_φ·H₁) and μ_S″ = μ_S′/(μ_φ·H₂).
-fn scales(w: &mut Writer<'_, '_>, d: &Diagrams) {
+fn scales(w: &mut Writer<'_, '_>, d: &KinDiagrams) {
     let lang = w.lang;
     let (mu_s, mu_phi) = (d.scales.y.value(), d.scales.x.value());
     let intervals = if d.first.periodic {
@@ -123,7 +123,7 @@ fn scales(w: &mut Writer<'_, '_>, d: &Diagrams) {
 /// their differences from the twin.
 fn diagram_table(
     w: &mut Writer<'_, '_>,
-    d: &Diagrams,
+    d: &KinDiagrams,
     w1: f64,
     chords: &[(String, Method)],
     at: Option<&str>,
@@ -214,7 +214,7 @@ fn diagram_table(
 /// the ordinate in mm times the diagram's μ (and |ω₁| or ω₁²).
 fn worked_value(
     w: &mut Writer<'_, '_>,
-    d: &Diagrams,
+    d: &KinDiagrams,
     w1: f64,
     (k, symbol, point): (usize, &str, &str),
     (mm, value, si): (f64, f64, &str),

@@ -7,7 +7,7 @@ use super::rows::{by_position, of_scene, quantities};
 use super::worked::{deg, worked, INV};
 use super::{NoteError, Writer};
 use crate::check::{Method, Symbol};
-use crate::gears::{inv, Generation, Pair};
+use crate::gears::{inv, GearPair, Generation};
 use crate::scene::PlateKind;
 use crate::words::{unit_in, Meaning as M, NoteText as T, Text as S};
 
@@ -92,7 +92,7 @@ pub(super) fn gears(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
 /// The specific sliding in the shape of seed 000's Table 6: λ₁ and λ₂ at N₁, at the ends of
 /// the active line B₁ and B₂, at the pitch point P, midway between P and B₂ and at N₂
 /// (the seed's points X = 0; 42,75; 66,5; 91,75; 117; g), X along N₁N₂ in mm.
-fn sliding_table(w: &mut Writer<'_, '_>, p: &Pair) {
+fn sliding_table(w: &mut Writer<'_, '_>, p: &GearPair) {
     let lang = w.lang;
     let [b1, b2] = p.active_ends();
     let pole = p.pole();
@@ -151,7 +151,7 @@ fn sliding_table(w: &mut Writer<'_, '_>, p: &Pair) {
 
 /// ε_α by the textbook's formula and as the active line read off the meshing picture over
 /// the base pitch (`ab_read`, m).
-fn contact_ratio(w: &mut Writer<'_, '_>, p: &Pair, ab_read: f64) {
+fn contact_ratio(w: &mut Writer<'_, '_>, p: &GearPair, ab_read: f64) {
     let lang = w.lang;
     let n = |x: f64| num(x, 5, lang);
     let [z1, z2] = p.spec.z;

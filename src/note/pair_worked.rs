@@ -4,7 +4,7 @@
 use super::markup::{frac, num, sym, unit};
 use super::worked::{deg, worked, INV};
 use super::Writer;
-use crate::gears::{inv, Pair};
+use crate::gears::{inv, GearPair};
 use crate::scale::Lang;
 use crate::words::{unit_in, Meaning as M, NoteText as T};
 
@@ -18,7 +18,7 @@ struct Nums {
 }
 
 impl Nums {
-    fn of_pair(p: &Pair, lang: Lang) -> Self {
+    fn of_pair(p: &GearPair, lang: Lang) -> Self {
         let mut f = Self {
             lang,
             mm: unit(&unit_in("mm", lang)),
@@ -51,7 +51,7 @@ impl Nums {
 
 /// The pair's geometry: α_w from the involute function, y, Δy, a_w, then each wheel's r,
 /// r_b, r_w, r_f, r_a, h, s, α_a and s_a, the pitches; lengths in mm.
-pub(super) fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
+pub(super) fn pair_geometry(w: &mut Writer<'_, '_>, p: &GearPair) {
     let f = Nums::of_pair(p, w.lang);
     w.doc.say(w.word(T::PairWorked));
     operating(w, p, &f);
@@ -73,7 +73,7 @@ pub(super) fn pair_geometry(w: &mut Writer<'_, '_>, p: &Pair) {
 }
 
 /// The operating engagement: inv α_w, y, Δy (unless the scene's table gives it), a_w.
-fn operating(w: &mut Writer<'_, '_>, p: &Pair, f: &Nums) {
+fn operating(w: &mut Writer<'_, '_>, p: &GearPair, f: &Nums) {
     let (lang, m) = (w.lang, &f.m);
     let spec = &p.spec;
     let rack = spec.rack;
@@ -161,7 +161,7 @@ fn operating(w: &mut Writer<'_, '_>, p: &Pair, f: &Nums) {
 }
 
 /// Wheel `i`'s radii: r, r_b, r_w, r_f, r_a and the tooth's height h.
-fn wheel_radii(w: &mut Writer<'_, '_>, p: &Pair, i: usize, f: &Nums) {
+fn wheel_radii(w: &mut Writer<'_, '_>, p: &GearPair, i: usize, f: &Nums) {
     let (lang, m) = (w.lang, &f.m);
     let spec = &p.spec;
     let rack = spec.rack;
@@ -253,7 +253,7 @@ fn wheel_radii(w: &mut Writer<'_, '_>, p: &Pair, i: usize, f: &Nums) {
 
 /// Wheel `i`'s tooth: its thickness s on the pitch circle, the tip's pressure angle α_a and
 /// thickness s_a.
-fn wheel_tooth(w: &mut Writer<'_, '_>, p: &Pair, i: usize, f: &Nums) {
+fn wheel_tooth(w: &mut Writer<'_, '_>, p: &GearPair, i: usize, f: &Nums) {
     let (lang, m) = (w.lang, &f.m);
     let spec = &p.spec;
     let rack = spec.rack;

@@ -4,7 +4,9 @@
 
 use super::cam_raw::{key, RawCam, CAM};
 use super::check::{item, join, number, Checker, MAX_MM};
-use crate::cam::{CamSpec, Closure, Follower, Given, Law, Layout, Phases, RockerSense, Rotation};
+use crate::cam::{
+    CamLayout, CamSpec, Closure, Follower, Given, Law, Phases, RockerSense, Rotation,
+};
 use crate::scale::{Key, Quantity};
 
 /// The followers, as written.
@@ -115,7 +117,7 @@ pub(crate) fn cam(check: &mut Checker, raw: &RawCam) -> Option<CamSpec> {
         closure,
         given,
         rotation,
-        layout: Layout::Turning,
+        layout: CamLayout::Turning,
     };
     let spec = super::cam_layout::laid_out(check, raw, kind == Some(Kind::FlatRocker), spec);
     for (k, scale) in [

@@ -8,7 +8,7 @@ use super::cam_raw::{key, RawCam};
 use super::check::{number, Checker};
 use crate::cam::flat_rocker::{self, FlatRocker, FlatRockerError};
 use crate::cam::sliding::Sliding;
-use crate::cam::{CamSpec, Follower, Layout};
+use crate::cam::{CamLayout, CamSpec, Follower};
 
 /// `spec` (validated so far, laid out as the turning cam) with the layout the scene's keys
 /// ask for; `flat_rocker`: the follower is `"flat_rocker"`.
@@ -68,7 +68,7 @@ fn flat_rocker_of(check: &mut Checker, raw: &RawCam, spec: CamSpec) -> CamSpec {
     let spec = CamSpec {
         base_radius: None,
         roller: None,
-        layout: Layout::FlatRocker(frame),
+        layout: CamLayout::FlatRocker(frame),
         ..spec
     };
     if centres <= 0.0 || base <= 0.0 || !matches!(spec.follower, Follower::Rocker { .. }) {
@@ -120,7 +120,7 @@ fn sliding_of(check: &mut Checker, raw: &RawCam, spec: CamSpec) -> CamSpec {
     );
     CamSpec {
         roller: None,
-        layout: Layout::Sliding(Sliding {
+        layout: CamLayout::Sliding(Sliding {
             travel,
             roller: roller.unwrap_or(0.0),
         }),

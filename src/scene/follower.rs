@@ -5,7 +5,7 @@
 
 use super::check::{join, number, Checker};
 use super::friction_case::{angle, coefficient, force, RawCase};
-use crate::cam::force::{rocker_locking, translating_locking, Guide, Pivot};
+use crate::cam::force::{rocker_locking, translating_locking, Pivot, TranslatingGuide};
 use crate::friction::{CaseKind, FollowerGuide, RockerPivot, MIN_CROSSING_DEG};
 
 /// The largest moment a scene may give, N·m.
@@ -14,7 +14,7 @@ const MAX_MOMENT: f64 = 1e9;
 /// A cam's translating follower in its guide: the pressure angle below the jamming angle
 /// tg λ_кр = b/(f(2l + b)) by at least 2° (a hand can still close the force triangle).
 pub(super) fn guide(check: &mut Checker, base: &str, c: &RawCase) -> CaseKind {
-    let guide = Guide {
+    let guide = TranslatingGuide {
         length: check.length(&join(base, "length"), c.length),
         overhang: check.distance(&join(base, "overhang"), c.overhang, 0.0),
         f: coefficient(check, base, "f", c.f),

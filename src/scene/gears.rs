@@ -7,9 +7,10 @@
 use super::check::{item, join, number, Checker};
 use super::gear_values::{module_mm, teeth};
 use super::planetary::{planetary, RawPlanetary};
-use crate::gears::blocking::{Blocking, Criterion, Study};
+use crate::gears::blocking::{Blocking, BlockingStudy, Criterion};
 use crate::gears::{
-    BasicRack, Cutting, GearError, GearsSpec, Pair, PairSeed, PairSpec, RackSpec, DEFAULT_POSITIONS,
+    BasicRack, Cutting, GearError, GearPair, GearsSpec, PairSeed, PairSpec, RackSpec,
+    DEFAULT_POSITIONS,
 };
 use crate::scale::{Key, Quantity, Scale};
 use serde::Deserialize;
@@ -149,7 +150,7 @@ fn gears(check: &mut Checker, raw: &RawGears) -> Option<GearsSpec> {
         .unzip();
     let chosen = chosen.flatten();
     let racks = racks(check, &raw.rack, module, rack);
-    if let Some(p) = pair.and_then(|p| Pair::working(p).ok()) {
+    if let Some(p) = pair.and_then(|p| GearPair::working(p).ok()) {
         figure(
             check,
             Key::GearsScaleL.path(),
@@ -369,7 +370,7 @@ fn criterion(check: &mut Checker, raw: &RawPair, name: &str) -> Option<Criterion
         }
         "greatest-sum" => {
             unused(check, "x_sum", raw.x_sum.is_some());
-            let sa_min = raw.sa_min.unwrap_or(Study::HARD.sa_min);
+            let sa_min = raw.sa_min.unwrap_or(BlockingStudy::HARD.sa_min);
             if !(0.0..=1.0).contains(&sa_min) {
                 check.push(
                     key("sa_min"),
@@ -477,7 +478,7 @@ fn pair(
         dy_table: dy,
     };
     if let Some(c) = criterion {
-        let chosen = Blocking::new(z, rack).and_then(|b| b.choose(c, Study::HARD));
+        let chosen = Blocking::new(z, rack).and_then(|b| b.choose(c, BlockingStudy::HARD));
         match chosen {
             Ok(ch) => spec.x = ch.indices.x,
             Err(e) => {
@@ -503,7 +504,7 @@ fn pair(
             }
         }
     }
-    match Pair::working(spec) {
+    match GearPair::working(spec) {
         Ok(_) => Some((spec, criterion)),
         Err(e) => {
             let (k, value) = match &raw.choose {
@@ -527,7 +528,7 @@ fn blame(e: &GearError, raw: &RawPair, spec: &PairSpec, xs: &[f64]) -> (String, 
             dy_table: None,
             ..*spec
         };
-        if matches!(e, GearError::TipInsideBase { .. }) || Pair::working(exact).is_ok() {
+        if matches!(e, GearError::TipInsideBase { .. }) || GearPair::working(exact).is_ok() {
             return (key("dy"), number(dy));
         }
     }

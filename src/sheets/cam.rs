@@ -7,8 +7,8 @@ use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
 use super::{cam_marks, digits};
 use crate::cam::{
-    Analogue, Cam, CamSpec, Closure, Diagrams, Follower, Law, Layout, Rotation, ANGLE_LIMIT_NOTE,
-    R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
+    Analogue, Cam, CamDiagrams, CamLayout, CamSpec, Closure, Follower, Law, Rotation,
+    ANGLE_LIMIT_NOTE, R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
 };
 use crate::check::{Cusp, Finding, Row, Symbol};
 use crate::geom::DVec2;
@@ -35,7 +35,7 @@ pub(super) fn mu(symbol: &str, s: Scale, lang: Lang) -> String {
 
 /// μ_S as the S diagram's caption gives it: found from the stroke where it was
 /// (`μ_S = h/y_max = 0,038/94,00 = 0,0004043 м/мм`, seed 002 (4.2)), else its value.
-fn s_scale(d: &Diagrams, spec: &CamSpec, lang: Lang) -> String {
+fn s_scale(d: &CamDiagrams, spec: &CamSpec, lang: Lang) -> String {
     let Some(y) = d.y_max else {
         return mu("S", d.s_scale, lang);
     };
@@ -138,7 +138,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
 /// The diagrams stacked as the construction runs through them, each with its axes and its
 /// caption: the analogue, μ_φ, its μ and the pole distance of the pole it carries; the
 /// phases under the displacement diagram's φ axis in `lang`.
-pub(super) fn diagram_block(d: &Diagrams, spec: &CamSpec, lang: Lang) -> Block {
+pub(super) fn diagram_block(d: &CamDiagrams, spec: &CamSpec, lang: Lang) -> Block {
     let mm = unit_in("mm", lang);
     let h = |i: usize| format_sig(d.poles[i], 3, lang);
     // The diagrams stacked as the construction runs through them, each with its axes and
@@ -263,7 +263,7 @@ pub(super) fn law_lines(s: &CamSpec, rotation: Rotation, lang: Lang) -> Vec<Stri
     let mut out = vec![Text::Data.get(lang).to_string()];
     out.push(cam_marks::phases_line(s, lang));
     let sense = match (s.layout, rotation) {
-        (Layout::Sliding(_), _) => CamText::Slides,
+        (CamLayout::Sliding(_), _) => CamText::Slides,
         (_, Rotation::Cw) => CamText::Clockwise,
         _ => CamText::CounterClockwise,
     };

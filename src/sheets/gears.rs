@@ -12,7 +12,7 @@ use super::layout::{
 use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
-use crate::gears::blocking::Study;
+use crate::gears::blocking::BlockingStudy;
 use crate::gears::{DetailMark, GearStudy, DETAIL_LETTER};
 use crate::plate::{Plate, SheetSize, TableBlock};
 use crate::scale::{format_sig, Key, Lang, Scale};
@@ -325,9 +325,9 @@ impl Filling {
     /// μ_l), and the blocking contour when the sheet shows it.
     fn pair_views(
         &mut self,
-        p: &crate::gears::Pair,
+        p: &crate::gears::GearPair,
         (figure, sliding, scale): (&Figure, &Figure, crate::scale::Scale),
-        contour: Option<&Study>,
+        contour: Option<&BlockingStudy>,
     ) {
         let (lang, mm_) = (self.lang, &self.mm);
         self.plan = Some(scale);
@@ -361,7 +361,7 @@ impl Filling {
 
     /// The pair's data and results: m, z, x; α_w, a_w, y, Δy; the radii, the pitches and
     /// s_a; ε_α by formula and as drawn (B₁B₂ read off the meshing picture, `ab_drawn`, m).
-    fn pair_lines(&mut self, p: &crate::gears::Pair, (ab_drawn, mu): (f64, Scale)) {
+    fn pair_lines(&mut self, p: &crate::gears::GearPair, (ab_drawn, mu): (f64, Scale)) {
         use super::digits::{degrees, mm, value};
         let lang = self.lang;
         let mm = |x: f64| mm(x, lang);
@@ -417,7 +417,7 @@ impl Filling {
 
     /// The blocking contour's points, each with its indices, and the criterion the scene's
     /// point was chosen by.
-    fn contour_lines(&mut self, b: &Study) {
+    fn contour_lines(&mut self, b: &BlockingStudy) {
         let lang = self.lang;
         let f = |x: f64| format_sig(x, 4, lang);
         for (tag, ix) in b.points() {
@@ -445,8 +445,8 @@ impl Filling {
                 GearText::ChoiceMargin
                     .get(lang)
                     .replace("{m}", &f(M))
-                    .replace("{eps}", &f(Study::HARD.eps_min + M))
-                    .replace("{sa}", &f(Study::HARD.sa_min + M)),
+                    .replace("{eps}", &f(BlockingStudy::HARD.eps_min + M))
+                    .replace("{sa}", &f(BlockingStudy::HARD.sa_min + M)),
             );
         }
         if let Some(c) = b.chosen {

@@ -98,7 +98,7 @@ pub const SHIPPED: &[(&str, &str)] = &[
 /// What a scene is, for the gallery's sections (in this order).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "kebab-case")]
-pub enum Group {
+pub enum GalleryGroup {
     /// A scene of several studies: the whole course project.
     Project,
     /// A linkage's kinematics (and forces).
@@ -115,42 +115,42 @@ pub enum Group {
     Balancing,
 }
 
-impl Group {
+impl GalleryGroup {
     /// The group of `s`: the project when it studies three kinds of sheet or more, else the
     /// kind of its first sheet.
-    pub fn of(s: &Scene) -> Group {
+    pub fn of(s: &Scene) -> GalleryGroup {
         let kinds = crate::sheets::drawn(s);
         if kinds.len() >= 3 {
-            return Group::Project;
+            return GalleryGroup::Project;
         }
         match kinds.first() {
-            Some(PlateKind::Cam) => Group::Cam,
+            Some(PlateKind::Cam) => GalleryGroup::Cam,
             Some(PlateKind::Gears) => {
                 let train = s.gears.as_ref().is_some_and(|g| {
                     g.planetary.is_some() && g.pair.is_none() && g.racks.is_empty()
                 });
                 if train {
-                    Group::Train
+                    GalleryGroup::Train
                 } else {
-                    Group::Gears
+                    GalleryGroup::Gears
                 }
             }
-            Some(PlateKind::Friction) => Group::Friction,
-            Some(PlateKind::Balancing) => Group::Balancing,
-            _ => Group::Linkage,
+            Some(PlateKind::Friction) => GalleryGroup::Friction,
+            Some(PlateKind::Balancing) => GalleryGroup::Balancing,
+            _ => GalleryGroup::Linkage,
         }
     }
 
     /// The section's heading.
     pub fn heading(self, lang: Lang) -> &'static str {
         let word = match self {
-            Group::Project => StudioText::Project,
-            Group::Linkage => StudioText::Linkages,
-            Group::Cam => StudioText::Cams,
-            Group::Gears => StudioText::Gears,
-            Group::Train => StudioText::Trains,
-            Group::Friction => StudioText::Friction,
-            Group::Balancing => StudioText::Balancing,
+            GalleryGroup::Project => StudioText::Project,
+            GalleryGroup::Linkage => StudioText::Linkages,
+            GalleryGroup::Cam => StudioText::Cams,
+            GalleryGroup::Gears => StudioText::Gears,
+            GalleryGroup::Train => StudioText::Trains,
+            GalleryGroup::Friction => StudioText::Friction,
+            GalleryGroup::Balancing => StudioText::Balancing,
         };
         word.get(lang)
     }
@@ -164,7 +164,7 @@ pub struct Card {
     /// Its title in the language asked.
     pub title: String,
     /// Its section.
-    pub group: Group,
+    pub group: GalleryGroup,
     /// The section's heading in the language asked.
     pub heading: &'static str,
 }
@@ -186,7 +186,7 @@ pub fn cards(lang: Lang) -> Vec<Card> {
         .iter()
         .filter_map(|(stem, _)| {
             let s = scene(stem)?;
-            let group = Group::of(&s);
+            let group = GalleryGroup::of(&s);
             Some(Card {
                 stem,
                 title: s.title.in_lang(lang).title,
@@ -217,10 +217,16 @@ mod tests {
         listed.sort();
         assert_eq!(listed, files);
         assert_eq!(cards(Lang::Ru).len(), SHIPPED.len(), "every scene reads");
-        let groups: Vec<Group> = cards(Lang::En).iter().map(|c| c.group).collect();
-        assert_eq!(groups.first(), Some(&Group::Project));
+        let groups: Vec<GalleryGroup> = cards(Lang::En).iter().map(|c| c.group).collect();
+        assert_eq!(groups.first(), Some(&GalleryGroup::Project));
         assert!(groups.windows(2).all(|w| w[0] <= w[1]), "{groups:?}");
-        assert_eq!(Group::of(&scene("gears-pz2").expect("pz2")), Group::Train);
-        assert_eq!(Group::of(&scene("gears-pz1").expect("pz1")), Group::Gears);
+        assert_eq!(
+            GalleryGroup::of(&scene("gears-pz2").expect("pz2")),
+            GalleryGroup::Train
+        );
+        assert_eq!(
+            GalleryGroup::of(&scene("gears-pz1").expect("pz1")),
+            GalleryGroup::Gears
+        );
     }
 }

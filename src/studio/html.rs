@@ -22,7 +22,7 @@ const PAGE: &str = include_str!("assets/offline.html");
 struct Data<'a> {
     title: &'a str,
     lang: &'a str,
-    sheets: Vec<super::Sheet>,
+    sheets: Vec<super::PageSheet>,
     replays: Vec<Vec<ReplayView>>,
     report: Option<serde_json::Value>,
 }

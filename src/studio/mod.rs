@@ -18,7 +18,7 @@ pub mod readings;
 mod redraw;
 mod replay;
 
-pub use redraw::{redraw, Job, Problem, Redrawn, Sheet};
+pub use redraw::{redraw, Job, PageProblem, PageSheet, Redrawn};
 pub use replay::{replay, views_of, ReplayJob, ReplayStep, ReplayView};
 
 use axum::extract::DefaultBodyLimit;

@@ -38,7 +38,7 @@ fn hand() -> f64 {
 
 /// A problem the page shows at its field: the key it names, when it names one.
 #[derive(Debug, Serialize)]
-pub struct Problem {
+pub struct PageProblem {
     /// The scene key it names.
     pub key: Option<String>,
     /// The program's message.
@@ -47,7 +47,7 @@ pub struct Problem {
 
 /// A sheet as the page shows it.
 #[derive(Debug, Serialize)]
-pub struct Sheet {
+pub struct PageSheet {
     /// The sheet's name (`kinematics`, `forces-2`).
     pub name: String,
     /// The sheet as SVG.
@@ -59,11 +59,11 @@ pub struct Sheet {
 #[derive(Debug, Serialize, Default)]
 pub struct Redrawn {
     /// Every sheet, in the set's order.
-    pub sheets: Vec<Sheet>,
+    pub sheets: Vec<PageSheet>,
     /// The report, as `tmm report --format json` gives it.
     pub report: Option<serde_json::Value>,
     /// Why there are no sheets.
-    pub problems: Vec<Problem>,
+    pub problems: Vec<PageProblem>,
     /// The time taken, ms.
     pub ms: f64,
 }
@@ -92,24 +92,24 @@ impl Job {
     }
 
     /// The scene, or the problems to show.
-    pub(crate) fn scene(&self) -> Result<(Scene, Drafting), Vec<Problem>> {
+    pub(crate) fn scene(&self) -> Result<(Scene, Drafting), Vec<PageProblem>> {
         let drafting = Drafting::new(self.drafting).ok_or_else(|| {
-            vec![Problem {
+            vec![PageProblem {
                 key: None,
                 message: format!("drafting {}: expected a resolution ≥ 0 mm", self.drafting),
             }]
         })?;
         let s = scene::parse(&self.toml, &self.path()).map_err(|e| {
-            let listed: Vec<Problem> = e
+            let listed: Vec<PageProblem> = e
                 .problems()
                 .iter()
-                .map(|p| Problem {
+                .map(|p| PageProblem {
                     key: Some(p.key.clone()),
                     message: p.to_string(),
                 })
                 .collect();
             match listed.is_empty() {
-                true => vec![Problem {
+                true => vec![PageProblem {
                     key: toml_key(&e),
                     message: e.to_string(),
                 }],
@@ -132,9 +132,9 @@ fn toml_key(e: &scene::SceneError) -> Option<String> {
 pub(crate) fn plates_of(
     session: &Session<'_>,
     lang: Lang,
-) -> Result<Vec<(PlateKind, plate::Plate)>, Vec<Problem>> {
+) -> Result<Vec<(PlateKind, plate::Plate)>, Vec<PageProblem>> {
     crate::sheets::build_all(session, lang).map_err(|(kind, error)| {
-        vec![Problem {
+        vec![PageProblem {
             key: None,
             message: format!("{}: {error}", kind.stem()),
         }]
@@ -142,10 +142,10 @@ pub(crate) fn plates_of(
 }
 
 /// Every sheet as the page shows it: its name and its SVG.
-pub(crate) fn sheets_of(plates: &[(PlateKind, plate::Plate)]) -> Vec<Sheet> {
+pub(crate) fn sheets_of(plates: &[(PlateKind, plate::Plate)]) -> Vec<PageSheet> {
     plates
         .iter()
-        .map(|(_, p)| Sheet {
+        .map(|(_, p)| PageSheet {
             name: p.name.clone(),
             svg: plate::to_svg(p),
         })

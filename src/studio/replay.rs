@@ -4,7 +4,7 @@
 //! each of the view's labels in the order the SVG writes them, the steps it names, so that
 //! the page shows a label with its step.
 
-use super::redraw::{plates_of, Job, Problem};
+use super::redraw::{plates_of, Job, PageProblem};
 use crate::plate::{self, text::plain};
 use crate::sheets::protocol::protocol;
 use crate::study::Session;
@@ -46,13 +46,13 @@ pub struct ReplayJob {
 }
 
 /// The figures of sheet `r.sheet` of the scene, with their protocols; or the problems.
-pub fn replay(r: &ReplayJob) -> Result<Vec<ReplayView>, Vec<Problem>> {
+pub fn replay(r: &ReplayJob) -> Result<Vec<ReplayView>, Vec<PageProblem>> {
     let (s, drafting) = r.job.scene()?;
     let lang = r.job.lang();
     let session = Session::new(&s, drafting);
     let plates = plates_of(&session, lang)?;
     let Some((_, sheet)) = plates.get(r.sheet) else {
-        return Err(vec![Problem {
+        return Err(vec![PageProblem {
             key: None,
             message: format!("sheet {}: the scene has {} sheets", r.sheet, plates.len()),
         }]);

@@ -91,7 +91,8 @@ impl<'s> Session<'s> {
     fn report_balancing(&self, rep: &mut Report) -> Result<(), StudyError> {
         let b = self.balancing()?;
         rep.rows.extend(b.rows());
-        rep.notes.extend(b.notes().into_iter().map(Note::from));
+        rep.notes
+            .extend(b.notes().into_iter().map(ReportNote::from));
         Ok(())
     }
 }

@@ -3,7 +3,7 @@
 //! layout says.
 
 use super::*;
-use crate::cam::Layout;
+use crate::cam::CamLayout;
 
 /// The cam's part of the report.
 pub(super) const PART: Part = |session, rep| session.report_cam(rep);
@@ -46,7 +46,7 @@ impl<'s> Session<'s> {
     pub fn special_cam(&self) -> MaybeCached<crate::cam::Special> {
         self.caches.get::<Specials>((), || {
             let spec = self.cam_spec()?;
-            if spec.layout == Layout::Turning {
+            if spec.layout == CamLayout::Turning {
                 return Ok(None);
             }
             let c = crate::cam::build_special(spec, &self.ctx()?)?;
@@ -58,12 +58,14 @@ impl<'s> Session<'s> {
     fn report_cam(&self, rep: &mut Report) -> Result<(), StudyError> {
         if let Some(c) = self.special_cam()? {
             rep.rows.extend(c.rows()?);
-            rep.notes.extend(c.noted()?.into_iter().map(Note::from));
+            rep.notes
+                .extend(c.noted()?.into_iter().map(ReportNote::from));
             return Ok(());
         }
         let c = self.cam()?;
         rep.rows.extend(c.rows());
-        rep.notes.extend(c.noted().into_iter().map(Note::from));
+        rep.notes
+            .extend(c.noted().into_iter().map(ReportNote::from));
         Ok(())
     }
 }

@@ -91,7 +91,7 @@ impl<'s> Session<'s> {
         let d = self.dynamics()?;
         rep.rows.extend(crate::dynamics::rows(&d));
         rep.notes
-            .extend(crate::dynamics::noted(&d).into_iter().map(Note::from));
+            .extend(crate::dynamics::noted(&d).into_iter().map(ReportNote::from));
         Ok(())
     }
 }

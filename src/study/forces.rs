@@ -238,13 +238,13 @@ impl<'s> Session<'s> {
             rows.extend(f.rows.iter().cloned());
             rows.extend(f.residual_rows());
             rep.notes
-                .extend(crate::forces::notes(&f).into_iter().map(Note::from));
+                .extend(crate::forces::notes(&f).into_iter().map(ReportNote::from));
         }
         let seed = &self.force_spec("the force analysis")?.seed;
         rep.notes.extend(
             crate::check::seed_notes(seed, &rows)
                 .into_iter()
-                .map(Note::from),
+                .map(ReportNote::from),
         );
         rep.rows.extend(rows);
         Ok(())

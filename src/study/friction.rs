@@ -105,7 +105,8 @@ impl<'s> Session<'s> {
     fn report_friction(&self, rep: &mut Report) -> Result<(), StudyError> {
         for s in self.friction()?.iter() {
             rep.rows.extend(s.rows());
-            rep.notes.extend(s.notes.iter().cloned().map(Note::from));
+            rep.notes
+                .extend(s.notes.iter().cloned().map(ReportNote::from));
         }
         Ok(())
     }

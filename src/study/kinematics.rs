@@ -53,7 +53,7 @@ pub struct Kinematics {
     /// The acceleration plans: (index into the positions, plan and rows).
     pub acceleration: Vec<(usize, Arc<Acceleration>)>,
     /// The displacement diagrams, when the mechanism has a point to chart.
-    pub diagrams: Option<Arc<Diagrams>>,
+    pub diagrams: Option<Arc<KinDiagrams>>,
     /// The rocker's ω diagram, when the mechanism has a rocker output.
     pub rocker: Option<Arc<RockerDiagram>>,
     /// The hodograph: its point's name without markup (`S3`) and its figure.
@@ -70,7 +70,7 @@ impl Kinematics {
         self.velocity.iter().map(|v| v.plan()).collect()
     }
     /// The plan of positions as the kinematic sheet draws it: its figure, with the segments
-    /// the displacement S of the diagrams is read off ([`Diagrams::readings`]) when a point
+    /// the displacement S of the diagrams is read off ([`KinDiagrams::readings`]) when a point
     /// is charted — they draw nothing, and travel with the figure wherever it is placed.
     pub fn plan_figure(&self) -> Figure {
         let plan = self.plan.figure.clone();
@@ -131,7 +131,7 @@ impl Cache for AccelerationPlans {
 struct MotionDiagrams;
 impl Cache for MotionDiagrams {
     type Key = (Scale, ChartScales);
-    type Value = MaybeCached<Diagrams>;
+    type Value = MaybeCached<KinDiagrams>;
 }
 
 /// The rocker's ω diagram by (μ_l, μ_v).
@@ -237,7 +237,7 @@ impl<'s> Session<'s> {
     }
 
     /// The displacement diagrams read off the plan at μ_l = `l`, at the chart's scales.
-    pub fn diagrams(&self, l: Scale, chart: ChartScales) -> MaybeCached<Diagrams> {
+    pub fn diagrams(&self, l: Scale, chart: ChartScales) -> MaybeCached<KinDiagrams> {
         self.caches.get::<MotionDiagrams>((l, chart), || {
             let m = self.mechanism("the kinematic analysis")?;
             let plan = self.positions(l)?;
@@ -357,7 +357,7 @@ impl<'s> Session<'s> {
         ));
         rep.rows.extend(rows);
         rep.tables.push(k.table.as_ref().clone());
-        rep.notes.extend(notes.into_iter().map(Note::from));
+        rep.notes.extend(notes.into_iter().map(ReportNote::from));
         Ok(())
     }
 }

@@ -33,12 +33,12 @@ pub use scales::KinSheets;
 
 use crate::balancing::{Balancing, BalancingError};
 use crate::check::Row;
-use crate::check::{Note, Report, Table};
+use crate::check::{Report, ReportNote, Table};
 use crate::construct::{Context, Drafting, Figure};
 use crate::forces::{ForceError, ForceSpec, PositionForces};
 use crate::friction::{FrictionError, Solved};
 use crate::kinematics::{
-    acceleration_indices, position_indices, Diagrams, KinError, KinematicsSpec, RockerDiagram,
+    acceleration_indices, position_indices, KinDiagrams, KinError, KinematicsSpec, RockerDiagram,
     Velocity,
 };
 use crate::linkage::{
@@ -246,7 +246,7 @@ impl<'s> Session<'s> {
             part(study.section)(self, &mut rep)?;
         }
         let seed = crate::check::seed_notes(&self.scene.seed, &rep.rows);
-        rep.notes.extend(seed.into_iter().map(Note::from));
+        rep.notes.extend(seed.into_iter().map(ReportNote::from));
         Ok(rep)
     }
 }

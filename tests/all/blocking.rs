@@ -15,8 +15,8 @@
 use glam::DVec2;
 use proptest::prelude::*;
 use tmm::gears::blocking::{
-    levels, twin_margin, twin_pair, twin_rho_l, Blocking, Contour, Criterion, Hard, Kind, Studies,
-    Study, CHOICE_MARGIN,
+    levels, twin_margin, twin_pair, twin_rho_l, Blocking, BlockingStudy, Contour, Criterion, Hard,
+    Kind, Studies, CHOICE_MARGIN,
 };
 use tmm::gears::{BasicRack, Cutting, PairSpec};
 
@@ -147,7 +147,7 @@ fn thirteen_twenty_one_traces_every_curve() {
 /// the isolines.
 #[test]
 fn the_seeds_points_are_placed() {
-    let hard = Study::HARD;
+    let hard = BlockingStudy::HARD;
     // (z, x, s_a1 between, Δy)
     let cases = [
         ([13, 30], (0.8, 0.471), (0.25, 0.4), Some(0.18)),
@@ -213,7 +213,7 @@ fn the_seeds_points_are_placed() {
 fn the_choices_are_admissible_and_best() {
     for z in [[13, 21], [8, 30], [20, 20], [17, 60]] {
         let b = Blocking::new(z, gost()).unwrap();
-        let hard = Study::HARD;
+        let hard = BlockingStudy::HARD;
         let inset = Hard {
             inset: CHOICE_MARGIN,
             ..hard
@@ -320,7 +320,7 @@ fn equal_wheels_give_a_symmetric_contour() {
 #[test]
 fn eight_teeth_are_bound_by_undercut() {
     let b = Blocking::new([8, 40], gost()).unwrap();
-    let c = b.trace(Study::HARD);
+    let c = b.trace(BlockingStudy::HARD);
     let xmin = b.x_min(0);
     assert!(xmin > 0.5);
     let on = c
@@ -420,13 +420,13 @@ fn a_kept_study_is_the_pairs_own_and_its_choices_those_made_alone() {
         "traced afresh, the same"
     );
     assert_eq!(
-        Study::of(&a, None).unwrap(),
+        BlockingStudy::of(&a, None).unwrap(),
         first,
         "traced alone, the same"
     );
     let alone = Blocking::new(a.z, a.rack).unwrap();
     for (criterion, chosen) in &first.choices {
-        let own = alone.choose(*criterion, Study::HARD);
+        let own = alone.choose(*criterion, BlockingStudy::HARD);
         match (chosen, own) {
             (Ok(c), Ok(o)) => {
                 // The maximisers' objective is flat at its top: the same point to the

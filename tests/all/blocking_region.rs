@@ -1,9 +1,9 @@
 //! The blocking contour's region (issue 42 §2) against the twins: every piece of the
 //! admissible region in the window traced (random pairs on a dense grid, the pairs whose region
 //! goes on beyond a saddle of its limits), the λ₁ = λ₂ line drawn whole across it, every
-//! choice a working pair with finite indices, and Pair::working clear of the fillets.
+//! choice a working pair with finite indices, and GearPair::working clear of the fillets.
 //!
-//! Admissible by the twins is [`twin_margin`] ≥ 0: Pair::new and Cutting, never the contour's
+//! Admissible by the twins is [`twin_margin`] ≥ 0: GearPair::new and Cutting, never the contour's
 //! own formulas, so a wrong tracing shows. A grid point may fall either way within the grid's
 //! spacing of the traced boundary (a piece narrower than the tracing grid's spacing, 0.02,
 //! may be missed).
@@ -12,13 +12,13 @@ use crate::blocking::{gost, twin_index, M};
 use glam::DVec2;
 use proptest::prelude::*;
 use tmm::gears::blocking::{
-    distance_to, twin_margin, twin_pair, twin_rho_l, twin_value, Blocking, Contour, Criterion,
-    Hard, Kind, Study,
+    distance_to, twin_margin, twin_pair, twin_rho_l, twin_value, Blocking, BlockingStudy, Contour,
+    Criterion, Hard, Kind,
 };
 use tmm::gears::PairSpec;
 
 /// The region of `c` against the twins on an n × n grid of its window: the points whose
-/// admissibility by the twins ([`twin_margin`]: Pair::new, Cutting) differs from the traced
+/// admissibility by the twins ([`twin_margin`]: GearPair::new, Cutting) differs from the traced
 /// region's, farther than the grid's spacing from its boundary (and the points checked, the
 /// admissible ones among them).
 fn region_against_twins(c: &Contour, n: u32) -> (Vec<DVec2>, usize, usize) {
@@ -99,7 +99,7 @@ proptest! {
     #[test]
     fn the_traced_region_is_the_twins_admissible_region(z1 in 8u32..=100, z2 in 8u32..=100) {
         let b = Blocking::new([z1, z2], gost()).expect("a pair");
-        let c = b.trace(Study::HARD);
+        let c = b.trace(BlockingStudy::HARD);
         let (wrong, checked, admissible) = region_against_twins(&c, 90);
         prop_assert!(wrong.is_empty(), "z = {:?}: {} of {checked} points misplaced: {:?}", [z1, z2], wrong.len(), &wrong[..wrong.len().min(5)]);
         prop_assert!(c.boundary.is_empty() == (admissible == 0));
@@ -125,7 +125,7 @@ proptest! {
 fn the_region_beyond_a_saddle_is_traced() {
     for (z, pieces) in [([58, 60], 3), ([75, 77], 3), ([30, 80], 2), ([11, 54], 2)] {
         let b = Blocking::new(z, gost()).unwrap();
-        let c = b.trace(Study::HARD);
+        let c = b.trace(BlockingStudy::HARD);
         assert_eq!(c.boundary.len(), pieces, "{z:?}");
         let (wrong, _, admissible) = region_against_twins(&c, 150);
         assert!(
@@ -137,7 +137,10 @@ fn the_region_beyond_a_saddle_is_traced() {
     }
     let b = Blocking::new([58, 60], gost()).unwrap();
     let c = b
-        .choose(Criterion::EqualSliding { x_sum: -1.14 }, Study::HARD)
+        .choose(
+            Criterion::EqualSliding { x_sum: -1.14 },
+            BlockingStudy::HARD,
+        )
         .expect("the line crosses the region");
     // No λ₁ = λ₂ on the line's stretch inside: its end of the least |λ₁ − λ₂|, on a limit.
     let (v, tol) = twin_index(&b, Kind::EqualSliding, DVec2::from(c.indices.x));
@@ -154,12 +157,12 @@ fn the_region_beyond_a_saddle_is_traced() {
 }
 
 fn contour_of(z: [u32; 2]) -> Contour {
-    Blocking::new(z, gost()).unwrap().trace(Study::HARD)
+    Blocking::new(z, gost()).unwrap().trace(BlockingStudy::HARD)
 }
 
 /// The largest ε_α of 17 pairs (it lay where the mate's tip reaches N₁ on 7 of them, λ₁(B₁)
 /// = −1.2·10⁹ on the shaper's 13/30) and the other choices: every index finite, |λ| < 100,
-/// the pair works (Pair::working) and the twins' x of the limits it lies on is the choice's
+/// the pair works (GearPair::working) and the twins' x of the limits it lies on is the choice's
 /// to 1e-9.
 #[test]
 fn every_choice_is_a_working_pair() {
@@ -189,7 +192,7 @@ fn every_choice_is_a_working_pair() {
             Criterion::GreatestSumWithTip { sa_min: 0.25 },
             Criterion::EqualSliding { x_sum: 0.5 },
         ] {
-            let Ok(c) = b.choose(criterion, Study::HARD) else {
+            let Ok(c) = b.choose(criterion, BlockingStudy::HARD) else {
                 assert!(
                     matches!(criterion, Criterion::EqualSliding { .. }),
                     "{z:?} {criterion:?}"
@@ -210,7 +213,7 @@ fn every_choice_is_a_working_pair() {
                 rack: gost(),
                 dy_table: None,
             };
-            if let Err(e) = tmm::gears::Pair::working(spec) {
+            if let Err(e) = tmm::gears::GearPair::working(spec) {
                 panic!("{z:?} {criterion:?} at {:?}: {e}", ix.x);
             }
             let twin = c.twin_x(&b, M).expect("the twins settle");
@@ -226,7 +229,7 @@ fn every_choice_is_a_working_pair() {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 400, failure_persistence: None, ..ProptestConfig::default() })]
 
-    /// Pair::working against the contour's own interference index (N_iB_i − ρ_l,i, the flank's
+    /// GearPair::working against the contour's own interference index (N_iB_i − ρ_l,i, the flank's
     /// end's roll): a pair it accepts has the mate's tip at or above both flanks' ends, and a
     /// wheel without undercut whose index is negative is refused as interference with its
     /// fillet (an undercut wheel's junction lies higher still: refused or not, never accepted
@@ -241,7 +244,7 @@ proptest! {
         let Some(ix) = b.indices(at) else { return Ok(()) };
         let spec = PairSpec { module: M, z, x: [x1, x2], rack: gost(), dy_table: None };
         let index = |i: usize| ix.of(Kind::Interference(i)).expect("an index");
-        match tmm::gears::Pair::working(spec) {
+        match tmm::gears::GearPair::working(spec) {
             Ok(_) => {
                 for i in 0..2 {
                     prop_assert!(index(i) >= -1e-9, "{z:?} {at}: wheel {} at {}", i + 1, index(i));

@@ -12,7 +12,7 @@
 use proptest::prelude::*;
 use std::f64::consts::{FRAC_PI_2, TAU};
 use tmm::cam::{
-    build, exact, motion, CamSpec, Closure, Follower, Given, Law, Layout, Phases, RockerSense,
+    build, exact, motion, CamLayout, CamSpec, Closure, Follower, Given, Law, Phases, RockerSense,
     Rotation,
 };
 use tmm::check::{Cusp, Finding};
@@ -74,7 +74,7 @@ pub(crate) fn spec(
         },
         given: Given::D2s,
         rotation: Rotation::Ccw,
-        layout: Layout::Turning,
+        layout: CamLayout::Turning,
     }
 }
 

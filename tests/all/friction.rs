@@ -6,7 +6,9 @@ use crate::support;
 
 use std::path::{Path, PathBuf};
 use tmm::construct::Drafting;
-use tmm::forces::{friction_loads, loads, phase, solve_twin, Motion, PairFriction, PairMotion};
+use tmm::forces::{
+    friction_loads, loads, phase, solve_twin, PairFriction, PairMotion, PositionMotion,
+};
 use tmm::study::Session;
 
 fn report(drafting: f64) -> tmm::Report {
@@ -121,7 +123,7 @@ fn plain_approximations(path: &Path, f: f64, radius: f64, steps: usize) -> Optio
     let (prog, pose) = (&plan.program, &plan.positions[k].pose);
     let spec = session.force_spec("forces").expect("[forces]");
     let w1 = 300.0 * std::f64::consts::TAU / 60.0;
-    let motion = Motion::analytic(pose, w1);
+    let motion = PositionMotion::analytic(pose, w1);
     let given = loads(spec, prog, &motion, phase(&plan, pose.phi, 1.0)).expect("loads");
     let fr = PairFriction {
         f,

@@ -8,17 +8,17 @@ use crate::scale::Quantity;
 
 /// Which construction produced a derivative.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Method {
+pub enum Derivation {
     /// Rays parallel to the chords; values at mid-interval points, nodes read off the curve.
     Chords,
     /// Rays parallel to the (draughtsman's) tangents at the nodes.
     Tangents,
 }
 
-impl Method {
+impl Derivation {
     /// Differentiate `src` (drawn at `scales`) by this construction, the pole H = `pole_mm`
     /// left of `layout.origin`, recording on `rec`, whose scale must be μ_y/(H·μ_x) (see
-    /// [`derivative_scale`]): [`Method::Chords`] or [`Method::Tangents`].
+    /// [`derivative_scale`]): [`Derivation::Chords`] or [`Derivation::Tangents`].
     ///
     /// # Errors
     /// As for the method of chords.
@@ -28,29 +28,29 @@ impl Method {
         src: &Diagram,
         scales: Scales,
         pole_mm: f64,
-        layout: &Layout,
+        layout: &DiagramLayout,
     ) -> Result<Derivative, CalculusError> {
         self.differentiate_in(Figures::One(rec), src, scales, pole_mm, layout)
     }
 
-    /// [`Method::differentiate`] into `figs`: the given diagram (its curve, chords or
+    /// [`Derivation::differentiate`] into `figs`: the given diagram (its curve, chords or
     /// tangents) in the given figure; the pole, the rays, the projections and the derivative's
     /// curve in the constructed one, whose scale must be μ_y/(H·μ_x).
     ///
     /// # Errors
-    /// As [`Method::differentiate`].
+    /// As [`Derivation::differentiate`].
     pub fn differentiate_in(
         self,
         mut figs: Figures<'_>,
         src: &Diagram,
         scales: Scales,
         pole_mm: f64,
-        layout: &Layout,
+        layout: &DiagramLayout,
     ) -> Result<Derivative, CalculusError> {
         let st = Start::new(&mut figs, src, scales, pole_mm, layout)?;
         match self {
-            Method::Chords => chords(&mut figs, &st),
-            Method::Tangents => tangents::tangents(&mut figs, &st),
+            Derivation::Chords => chords(&mut figs, &st),
+            Derivation::Tangents => tangents::tangents(&mut figs, &st),
         }
     }
 }
@@ -59,7 +59,7 @@ impl Method {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Derivative {
     /// The construction used.
-    pub method: Method,
+    pub method: Derivation,
     /// Its ordinate scale μ_y′ = μ_y/(H·μ_x).
     pub scale: Scale,
     /// The pole distance H, mm.
@@ -155,7 +155,7 @@ struct Start<'a> {
     /// The given diagram.
     src: &'a Diagram,
     /// Where the given diagram and its derivative are drawn.
-    layout: &'a Layout,
+    layout: &'a DiagramLayout,
     /// The derivative's scale.
     scale: Scale,
     /// Intervals.
@@ -177,7 +177,7 @@ impl<'a> Start<'a> {
         src: &'a Diagram,
         scales: Scales,
         pole_mm: f64,
-        layout: &'a Layout,
+        layout: &'a DiagramLayout,
     ) -> Result<Self, CalculusError> {
         src.validate()?;
         check_pole(pole_mm)?;
@@ -239,7 +239,7 @@ impl<'a> Start<'a> {
     }
 
     /// The derivative with its common fields filled and no values yet.
-    fn derivative(&self, method: Method, pc: &PoleCut) -> Derivative {
+    fn derivative(&self, method: Derivation, pc: &PoleCut) -> Derivative {
         let src = self.src;
         let nodes = if src.periodic { self.n } else { self.n + 1 };
         Derivative {
@@ -277,7 +277,7 @@ struct PoleCut {
 
 fn pole_cuts(
     rec: &mut Recorder,
-    layout: &Layout,
+    layout: &DiagramLayout,
     pole_mm: f64,
     dirs: &[DVec2],
     extent: f64,
@@ -398,7 +398,7 @@ fn chords(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative, CalculusErro
     };
     let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64, curve)?;
     let reads = read.unwrap_or_else(|| node_reads(&pc.cuts));
-    let mut d = st.derivative(Method::Chords, &pc);
+    let mut d = st.derivative(Derivation::Chords, &pc);
     for k in 0..n {
         // The cut goes across to the end of its interval nearer the vertical it lies on.
         let (start, end) = (o.x + k as f64 * run, o.x + (k + 1) as f64 * run);

@@ -36,7 +36,7 @@ pub(super) fn tangents(figs: &mut Figures<'_>, st: &Start) -> Result<Derivative,
     let pc = pole_cuts(rec, layout, st.pole_mm, &dirs, run * n as f64, |_| {
         Vec::new()
     })?;
-    let mut d = st.derivative(Method::Tangents, &pc);
+    let mut d = st.derivative(Derivation::Tangents, &pc);
     let o = layout.origin;
     let mut node_pts = vec![DVec2::ZERO; n + 1];
     let mut left_pts = Vec::with_capacity(src.breaks.len());

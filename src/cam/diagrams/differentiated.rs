@@ -36,7 +36,7 @@ pub(super) fn differentiated(
     sc: [Scale; 3],
     [h1, h2]: [f64; 2],
     ctx: &Context,
-) -> Result<Diagrams, CamError> {
+) -> Result<CamDiagrams, CamError> {
     let [s_scale, ds_scale, d2s_scale] = sc;
     let (n, st) = (spec.divisions, spec.starts());
     let mut views = Views::new(sc, ctx);
@@ -113,7 +113,7 @@ pub(super) fn differentiated(
         .collect();
     let ends = |i: usize| ds.get(i).copied().unwrap_or(0.0);
     let [d2s_view, ds_view, s_view] = views.finish((spec, points), phi, [&d2s, &ds, &s]);
-    Ok(Diagrams {
+    Ok(CamDiagrams {
         d2s_view,
         ds_view,
         s_view,

@@ -26,7 +26,7 @@
 
 use super::follower::to_cam;
 use super::inversion::{cam_centre, rotation};
-use super::motion::{motion, neighbour, points, Motion, Neighbour, Point};
+use super::motion::{motion, neighbour, points, FollowerMotion, Neighbour, Point};
 use super::{CamSpec, Follower, RockerSense};
 use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{rotate, Arc, Circle, DVec2, Line, Segment};
@@ -80,7 +80,7 @@ pub enum FlatRockerError {
 
 /// The profile at one cam angle.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Contact {
+pub struct RockerContact {
     /// φ, rad.
     pub phi: f64,
     /// The contact point in the cam's frame, m.
@@ -93,14 +93,14 @@ pub struct Contact {
 
 /// The constructed profile.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Construction {
+pub struct RockerConstruction {
     /// The drawing at μ_l.
     pub figure: Figure,
     /// The contacts at the points of the law (rise 0 … n, return n + 1 … 2n + 1).
-    pub contacts: Vec<Contact>,
+    pub contacts: Vec<RockerContact>,
 }
 
-impl Construction {
+impl RockerConstruction {
     /// The smallest radius of curvature read off the drawing, m.
     pub fn rho_min(&self) -> f64 {
         self.contacts
@@ -130,7 +130,7 @@ fn frame(spec: &CamSpec, r: &FlatRocker) -> Result<(f64, f64, f64), FlatRockerEr
 }
 
 /// The face's angle ψ at motion `m` (fixed frame), from the frame's (L, σ, ψ₀).
-fn psi(r0: (f64, f64, f64), m: Motion) -> f64 {
+fn psi(r0: (f64, f64, f64), m: FollowerMotion) -> f64 {
     let (arm, sigma, psi0) = r0;
     psi0 + sigma * m.s / arm
 }
@@ -138,7 +138,7 @@ fn psi(r0: (f64, f64, f64), m: Motion) -> f64 {
 /// The face line's support function at motion `m`: h = a·sin ψ − e, dh/dα and d²h/dα²
 /// (α the face normal's angle in the cam's frame, dα/dφ = σ·S′/L − 1), with ψ and σ·S′/L;
 /// `None` where the face turns as fast as the cam or faster (no envelope).
-fn support(f: (f64, f64, f64), r: &FlatRocker, m: Motion) -> Option<Support> {
+fn support(f: (f64, f64, f64), r: &FlatRocker, m: FollowerMotion) -> Option<Support> {
     let (arm, sigma, _) = f;
     let psi = psi(f, m);
     let (p1, p2) = (sigma * m.ds / arm, sigma * m.d2s / arm);
@@ -173,7 +173,7 @@ pub fn exact(
     r: &FlatRocker,
     phi: f64,
     after: bool,
-) -> Result<Contact, FlatRockerError> {
+) -> Result<RockerContact, FlatRockerError> {
     let f = frame(spec, r)?;
     let m = motion(spec, phi, after);
     let Some(Support { h, ha, haa, psi }) = support(f, r, m) else {
@@ -189,7 +189,7 @@ pub fn exact(
     let fixed = rotate(point, phi);
     let dir = DVec2::from_angle(psi);
     let t = (fixed - DVec2::new(r.centres, 0.0)).dot(dir);
-    Ok(Contact {
+    Ok(RockerContact {
         phi,
         point,
         rho: h + haa,
@@ -239,7 +239,7 @@ fn draw_faces(
     mu: Scale,
     pts: &[super::motion::Point],
     (lines, turned): (&[(DVec2, DVec2)], &[crate::construct::StepId]),
-    contacts: &[Contact],
+    contacts: &[RockerContact],
 ) {
     let mm = |p: DVec2| p / mu.value();
     for (i, p) in pts.iter().enumerate() {
@@ -287,7 +287,7 @@ impl Board<'_> {
     fn line_at(&self, s: f64, phi: f64) -> (DVec2, DVec2) {
         let psi = psi(
             self.frame,
-            Motion {
+            FollowerMotion {
                 s,
                 ds: 0.0,
                 d2s: 0.0,
@@ -385,7 +385,7 @@ impl Board<'_> {
         rec: &mut Recorder,
         (i, p): (usize, &Point),
         [before, this, after]: [Line; 3],
-    ) -> Result<Contact, FlatRockerError> {
+    ) -> Result<RockerContact, FlatRockerError> {
         let mu = self.mu.value();
         let name = format!("face {i}");
         let (q0, _, _) = rec.meet_lines(
@@ -422,7 +422,7 @@ impl Board<'_> {
         let pivot = to_cam(DVec2::new(self.r.centres, 0.0), p.phi);
         let arm_dir = (point - pivot).normalize_or_zero();
         let lambda = this.direction.dot(arm_dir).abs().clamp(0.0, 1.0).acos();
-        Ok(Contact {
+        Ok(RockerContact {
             phi: p.phi,
             point,
             rho,
@@ -437,7 +437,7 @@ pub fn construct(
     r: &FlatRocker,
     mu: Scale,
     ctx: &Context,
-) -> Result<Construction, FlatRockerError> {
+) -> Result<RockerConstruction, FlatRockerError> {
     let board = Board {
         spec,
         r,
@@ -478,7 +478,7 @@ pub fn construct(
         Role::Result,
         &[o1],
     );
-    Ok(Construction {
+    Ok(RockerConstruction {
         figure: rec.finish(),
         contacts,
     })

@@ -33,7 +33,7 @@ const FRAME: FlatRocker = FlatRocker {
     base: 0.04,
 };
 
-fn board(s: &CamSpec, r: &FlatRocker) -> Result<Construction, FlatRockerError> {
+fn board(s: &CamSpec, r: &FlatRocker) -> Result<RockerConstruction, FlatRockerError> {
     let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("a context");
     let mu = Scale::new(0.0005, Quantity::Length).expect("a μ");
     construct(s, r, mu, &ctx)

@@ -44,7 +44,7 @@ pub(super) fn seed000() -> CamSpec {
         closure: Closure::Geometric,
         given: Given::D2s,
         rotation: Rotation::Ccw,
-        layout: Layout::Turning,
+        layout: CamLayout::Turning,
     }
 }
 

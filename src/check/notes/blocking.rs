@@ -40,7 +40,7 @@ pub enum Criterion {
 
 /// A point of the plane with its quality indices, as the notes state them.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Point {
+pub struct PlanePoint {
     /// x₁, x₂.
     pub x: [f64; 2],
     /// α_w, rad.
@@ -106,7 +106,7 @@ pub enum BlockingNote {
         /// The criterion it was chosen on the contour by (`None`: the scene gives it).
         chosen: Option<Criterion>,
         /// Its indices.
-        point: Point,
+        point: PlanePoint,
         /// It is inside the admissible region.
         admissible: bool,
         /// The limits it is on the wrong side of.
@@ -125,6 +125,6 @@ pub enum BlockingNote {
         /// The criterion.
         criterion: Criterion,
         /// The point and the limits it is on, or the error's message.
-        result: Result<(Point, Vec<Level>), String>,
+        result: Result<(PlanePoint, Vec<Level>), String>,
     },
 }

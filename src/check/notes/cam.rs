@@ -7,7 +7,7 @@ use crate::check::{BaseUsed, Cusp, Finding, Limit, RadiusBasis};
 
 /// A phase of the cam's cycle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Phase {
+pub enum CamPhase {
     /// The rise.
     Rise,
     /// The return.
@@ -64,7 +64,7 @@ pub enum CamNote {
     /// A phase's law and its shocks.
     Law {
         /// The phase.
-        phase: Phase,
+        phase: CamPhase,
         /// Its start, rad of cam turn.
         from: f64,
         /// Its end, rad of cam turn.

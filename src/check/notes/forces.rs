@@ -5,7 +5,7 @@
 
 /// The friction in the pairs at one position.
 #[derive(Debug, Clone, PartialEq)]
-pub struct PairFriction {
+pub struct PositionFriction {
     /// M_bal with friction (the linear solve), N·m.
     pub with: f64,
     /// M_bal without, N·m.
@@ -68,6 +68,6 @@ pub enum ForcesNote {
         /// The position's label.
         label: String,
         /// Its numbers.
-        friction: PairFriction,
+        friction: PositionFriction,
     },
 }

@@ -4,7 +4,7 @@
 
 /// A slotted link's pin passing close to its pivot at one position.
 #[derive(Debug, Clone, PartialEq)]
-pub struct NearPivot {
+pub struct PinNearPivot {
     /// The position's label.
     pub position: String,
     /// The pin's name.
@@ -43,7 +43,7 @@ pub enum KinematicsNote {
         group: usize,
     },
     /// A slotted link's pin passes close to its pivot.
-    NearPivot(NearPivot),
+    NearPivot(PinNearPivot),
     /// The links accelerating and decelerating by the plans at a position, and where the twin
     /// differs.
     Turning {

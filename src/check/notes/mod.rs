@@ -27,7 +27,7 @@ pub use train::{SeedStage, TrainNote};
 
 /// A note of a report.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Note {
+pub enum ReportNote {
     /// A cam's.
     Cam(CamNote),
     /// The dynamics'.
@@ -50,12 +50,12 @@ pub enum Note {
     Blocking(BlockingNote),
 }
 
-/// `From` each study's note into [`Note`], by its variant.
+/// `From` each study's note into [`ReportNote`], by its variant.
 macro_rules! note_from {
     ($($kind:ty => $variant:ident),* $(,)?) => {
-        $(impl From<$kind> for Note {
-            fn from(n: $kind) -> Note {
-                Note::$variant(n)
+        $(impl From<$kind> for ReportNote {
+            fn from(n: $kind) -> ReportNote {
+                ReportNote::$variant(n)
             }
         })*
     };

@@ -65,7 +65,7 @@ pub struct SeedStage {
 
 /// A differential by Willis's formula: u_ab^(H) from the teeth, the output's speed.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Differential {
+pub struct WillisDifferential {
     /// The central shafts' and the carrier's names.
     pub names: [String; 3],
     /// The meshes' ratios with the carrier stopped.
@@ -120,7 +120,7 @@ pub struct MeshNeeds {
 
 /// The assembly condition of k satellites.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Assembly {
+pub struct SatelliteAssembly {
     /// The satellites.
     pub k: u32,
     /// The central wheel's name.
@@ -168,7 +168,7 @@ pub enum TrainNote {
         formula: Option<(f64, FormulaBy)>,
     },
     /// A differential by Willis's formula.
-    Differential(Differential),
+    Differential(WillisDifferential),
     /// A mesh whose tooth sums do not close at the train's module: the module it is drawn at.
     Closing(Closing),
     /// The seed's mobility reproduced.
@@ -238,5 +238,5 @@ pub enum TrainNote {
         tip: f64,
     },
     /// The assembly condition.
-    Assembly(Assembly),
+    Assembly(SatelliteAssembly),
 }

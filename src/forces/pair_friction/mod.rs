@@ -24,7 +24,7 @@
 pub mod reduced;
 
 use super::diagnose::{group_of, order_of};
-use super::loads::{Load, LoadKind, Motion};
+use super::loads::{Load, LoadKind, PositionMotion};
 pub use super::spec::PairFriction;
 use super::twin::{Pair, PairKind, Reaction};
 use super::ForceError;
@@ -53,7 +53,7 @@ pub struct PairMotion<'a> {
     /// A point of every link (its frame origin), by link number.
     pub origin: &'a [usize],
     /// The motion (velocities and ω).
-    pub motion: &'a Motion,
+    pub motion: &'a PositionMotion,
 }
 
 impl PairMotion<'_> {

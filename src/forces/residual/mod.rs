@@ -24,7 +24,7 @@ mod balance;
 mod motion;
 mod picture;
 
-use super::loads::{Motion, Phase};
+use super::loads::{Phase, PositionMotion};
 use super::pair_friction::PairFriction;
 use super::spec::{Action, Drive, ForceSpec};
 use super::twin::{line_of_action, PairKind, Reaction};
@@ -52,7 +52,7 @@ pub struct Reported<'a> {
 #[derive(Debug, Clone, Copy)]
 pub struct State<'a> {
     /// The route's motion; the check takes its positions only.
-    pub motion: &'a Motion,
+    pub motion: &'a PositionMotion,
     /// Unit frame direction of every link, by link number, as the route knew it.
     pub dir: &'a [DVec2],
     /// ω₁, rad/s, counter-clockwise positive.

@@ -30,7 +30,7 @@ pub struct Choice {
 
 /// Where a point lies against one curve.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Side {
+pub struct CurveSide {
     /// The curve's kind.
     pub kind: Kind,
     /// Its limit.
@@ -43,11 +43,11 @@ pub struct Side {
 
 /// A point placed on the contour.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Placement {
+pub struct OnContour {
     /// Its indices.
     pub indices: Indices,
     /// Against every limit the contour draws.
-    pub sides: Vec<Side>,
+    pub sides: Vec<CurveSide>,
     /// Inside the admissible region of the contour's hard limits.
     pub admissible: bool,
 }
@@ -58,7 +58,7 @@ impl Blocking {
     ///
     /// # Errors
     /// [`BlockingError::NotFinite`], [`BlockingError::Domain`].
-    pub fn place(&self, x: DVec2, hard: Hard) -> Result<Placement, BlockingError> {
+    pub fn place(&self, x: DVec2, hard: Hard) -> Result<OnContour, BlockingError> {
         if !(x.x.is_finite() && x.y.is_finite()) {
             return Err(BlockingError::NotFinite { x1: x.x, x2: x.y });
         }
@@ -69,7 +69,7 @@ impl Blocking {
             .into_iter()
             .filter_map(|(kind, limit)| {
                 let value = indices.of(kind)?;
-                Some(Side {
+                Some(CurveSide {
                     kind,
                     limit,
                     value,
@@ -77,7 +77,7 @@ impl Blocking {
                 })
             })
             .collect();
-        Ok(Placement {
+        Ok(OnContour {
             indices,
             sides,
             admissible: self.margin(x, hard).is_some_and(|m| m >= 0.0),
@@ -348,7 +348,7 @@ impl Blocking {
 }
 
 impl Choice {
-    /// The choice's x by the twins ([`twin_value`]: [`crate::gears::Pair::new`],
+    /// The choice's x by the twins ([`twin_value`]: [`crate::gears::GearPair::new`],
     /// [`crate::gears::Cutting`]), from the limits it lies on and, for equal sliding, its
     /// line, each solved by Newton's steps on the twins' indices (central differences) from
     /// the choice: two limits, their crossing; one, its point on its normal through the

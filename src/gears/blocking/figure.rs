@@ -1,7 +1,7 @@
 //! The drawing of a study's contour: the axes x₁, x₂ with their ticks, every traced curve
 //! labelled, the admissible region's boundary bold, the scene's point and each choice.
 
-use super::study::Study;
+use super::study::BlockingStudy;
 use super::{levels, Kind};
 use crate::construct::{Figure, Item, Label, Role, Step, StepId};
 use crate::geom::{DVec2, Rect, Segment};
@@ -63,7 +63,7 @@ impl Plane {
     }
 }
 
-impl Study {
+impl BlockingStudy {
     /// The drawing of the contour: the axes x₁, x₂ with ticks every 0.2 (0.1 on a small
     /// plane), every traced curve labelled (thin: the limits; dash-dot: the quality
     /// isolines s_a = 0.25m, 0.4m, ε_α = 1.2 and the line of equal sliding), the admissible
@@ -121,7 +121,7 @@ impl Study {
         }
     }
 
-    /// Where the point `x` = (x₁, x₂) lies on [`figure`](Study::figure), figure mm.
+    /// Where the point `x` = (x₁, x₂) lies on [`figure`](BlockingStudy::figure), figure mm.
     pub fn at(&self, x: DVec2) -> DVec2 {
         self.plane().to(x)
     }

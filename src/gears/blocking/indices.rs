@@ -1,10 +1,10 @@
 //! The quality indices of a point (x₁, x₂) of the contour's plane by the contour's own lean
-//! formulas, the hard limits' least margin, and their analytic twins ([`Pair::new`] and
+//! formulas, the hard limits' least margin, and their analytic twins ([`GearPair::new`] and
 //! [`Cutting`]), which check every traced point.
 
 use super::{Blocking, Hard, Kind};
 use crate::gears::involute::{inv_inverse_with_tan, inv_with_tan};
-use crate::gears::{Cutting, GearError, Pair, PairSpec};
+use crate::gears::{Cutting, GearError, GearPair, PairSpec};
 use crate::geom::DVec2;
 use std::f64::consts::PI;
 
@@ -150,13 +150,13 @@ impl Blocking {
     }
 }
 
-/// The pair of a point of the plane as [`Pair::new`] computes it (module `module`, the
+/// The pair of a point of the plane as [`GearPair::new`] computes it (module `module`, the
 /// exact Δy): the analytic twin of [`Blocking::indices`].
 ///
 /// # Errors
-/// Those of [`Pair::new`].
-pub fn twin_pair(b: &Blocking, module: f64, x: DVec2) -> Result<Pair, GearError> {
-    Pair::new(PairSpec {
+/// Those of [`GearPair::new`].
+pub fn twin_pair(b: &Blocking, module: f64, x: DVec2) -> Result<GearPair, GearError> {
+    GearPair::new(PairSpec {
         module,
         z: b.z,
         x: [x.x, x.y],
@@ -172,7 +172,7 @@ pub fn twin_pair(b: &Blocking, module: f64, x: DVec2) -> Result<Pair, GearError>
 ///
 /// # Errors
 /// Those of [`Cutting::with_tip`].
-pub fn twin_rho_l(p: &Pair, i: usize) -> Result<f64, GearError> {
+pub fn twin_rho_l(p: &GearPair, i: usize) -> Result<f64, GearError> {
     let m = p.spec.module;
     let c = Cutting::with_tip(m, p.spec.z[i], p.spec.x[i], p.spec.rack, p.ra[i])?;
     let (sa, ca) = (c.rack.alpha.sin(), c.rack.alpha.cos());
@@ -195,7 +195,7 @@ pub fn twin_value(b: &Blocking, module: f64, kind: Kind, limit: f64, x: DVec2) -
 }
 
 /// [`twin_value`] of the twin pair `p`.
-fn value_of(b: &Blocking, p: &Pair, kind: Kind, limit: f64) -> Option<f64> {
+fn value_of(b: &Blocking, p: &GearPair, kind: Kind, limit: f64) -> Option<f64> {
     let m = p.spec.module;
     let x = p.spec.x;
     Some(match kind {

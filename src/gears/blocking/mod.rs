@@ -5,7 +5,7 @@
 //! from a table.
 //!
 //! The indices, per unit module (the contour does not depend on m), by the contour's own lean
-//! formulas ([`Blocking::indices`]); the analytic twins are [`crate::gears::Pair::new`] and
+//! formulas ([`Blocking::indices`]); the analytic twins are [`crate::gears::GearPair::new`] and
 //! [`crate::gears::Cutting`] ([`twin_value`]: the tests and the rows evaluate each traced
 //! point through them):
 //! - undercut of wheel i: x_i = x_min,i with x_min = h_l* − z sin²α/2, where h_l* = −v_j* is
@@ -37,11 +37,11 @@ mod tests;
 mod trace;
 
 pub use crate::check::notes::blocking::{Criterion, Kind};
-pub use choose::{Choice, Placement, Side, CHOICE_MARGIN};
+pub use choose::{Choice, CurveSide, OnContour, CHOICE_MARGIN};
 pub use figure::Words;
 pub use indices::{twin_deviation, twin_margin, twin_pair, twin_rho_l, twin_value, Indices};
 pub use plane::{distance_to, inside_rings};
-pub use study::{criterion_tag, Studies, Study};
+pub use study::{criterion_tag, BlockingStudy, Studies};
 pub use trace::{twin_check, Contour};
 
 use super::involute::inv;

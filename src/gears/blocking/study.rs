@@ -3,10 +3,10 @@
 
 use super::trace::{twin_check, Contour};
 use super::{
-    twin_pair, Blocking, BlockingError, Choice, Criterion, Hard, Indices, Placement, CHOICE_MARGIN,
+    twin_pair, Blocking, BlockingError, Choice, Criterion, Hard, Indices, OnContour, CHOICE_MARGIN,
     SPACING,
 };
-use crate::check::notes::blocking::{BlockingNote, Level, Point, Traced};
+use crate::check::notes::blocking::{BlockingNote, Level, PlanePoint, Traced};
 use crate::check::{Key, Method, Row, Symbol};
 use crate::gears::PairSpec;
 use crate::geom::DVec2;
@@ -20,7 +20,7 @@ const KEPT: usize = 8;
 /// The last [`KEPT`] studies made through it, kept by their caller (a batch's variants
 /// mostly share their gears: a store the batch's sessions share traces each pair about
 /// once): the pair, the criterion asked, the study.
-pub struct Studies(Recent<(PairSpec, Option<Criterion>), Result<Study, BlockingError>>);
+pub struct Studies(Recent<(PairSpec, Option<Criterion>), Result<BlockingStudy, BlockingError>>);
 
 impl Default for Studies {
     fn default() -> Self {
@@ -29,17 +29,21 @@ impl Default for Studies {
 }
 
 impl Studies {
-    /// The study of the pair `spec` with `chosen` ([`Study::of`]): the one kept, else made
+    /// The study of the pair `spec` with `chosen` ([`BlockingStudy::of`]): the one kept, else made
     /// and kept.
     ///
     /// # Errors
-    /// Those of [`Study::of`].
-    pub fn of(&self, spec: &PairSpec, chosen: Option<Criterion>) -> Result<Study, BlockingError> {
+    /// Those of [`BlockingStudy::of`].
+    pub fn of(
+        &self,
+        spec: &PairSpec,
+        chosen: Option<Criterion>,
+    ) -> Result<BlockingStudy, BlockingError> {
         let key = (*spec, chosen);
         if let Some(study) = self.0.find(|k| *k == key) {
             return study;
         }
-        let study = Study::of(spec, chosen);
+        let study = BlockingStudy::of(spec, chosen);
         self.0.keep(key, study.clone());
         study
     }
@@ -47,13 +51,13 @@ impl Studies {
 
 /// The contour of a scene's pair: traced, the scene's point placed, the textbook's choices.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Study {
+pub struct BlockingStudy {
     /// The module, m (the rows' lengths).
     pub module: f64,
-    /// The traced contour (its hard limits: [`Study::HARD`]).
+    /// The traced contour (its hard limits: [`BlockingStudy::HARD`]).
     pub contour: Contour,
     /// The scene's (x₁, x₂) placed.
-    pub placed: Placement,
+    pub placed: OnContour,
     /// The criterion the scene's (x₁, x₂) was chosen by (`None`: the scene gives it).
     pub chosen: Option<Criterion>,
     /// Each criterion's choice, or why there is none.
@@ -63,7 +67,7 @@ pub struct Study {
     pub twin_check: (f64, usize),
 }
 
-impl Study {
+impl BlockingStudy {
     /// The study's hard limits: s_a ≥ 0.25m, ε_α ≥ 1 (with no undercut, no interference).
     pub const HARD: Hard = Hard {
         sa_min: 0.25,
@@ -135,7 +139,7 @@ impl Study {
     }
 
     /// The rows: at each point, ε_α, s_a1, s_a2, α_w, Δy and λ₁(B₁), λ₂(B₂) by the
-    /// contour's lean formulas (graphical column) against [`crate::gears::Pair::new`] at that
+    /// contour's lean formulas (graphical column) against [`crate::gears::GearPair::new`] at that
     /// point (analytic); each choice's x₁, x₂ against the twins' x of the limits it lies on
     /// ([`Choice::twin_x`]; its own where it lies on none).
     pub fn rows(&self) -> Vec<Row> {
@@ -268,8 +272,8 @@ impl Study {
 }
 
 /// A point's indices as the notes state them.
-fn point(ix: &Indices) -> Point {
-    Point {
+fn point(ix: &Indices) -> PlanePoint {
+    PlanePoint {
         x: ix.x,
         alpha_w: ix.alpha_w,
         y: ix.y,

@@ -90,14 +90,14 @@ fn known_zero_sets() {
 #[test]
 fn the_regions_corners_are_on_two_limits() {
     let b = Blocking::new([13, 21], BasicRack::GOST_13755).expect("a pair");
-    let c = b.trace(Study::HARD);
+    let c = b.trace(BlockingStudy::HARD);
     assert_eq!(c.boundary.len(), 1);
     let (lo, hi) = b.window;
     let mut corners = 0;
     for p in &c.boundary[0] {
         let ix = b.indices(*p).expect("indices");
         let off: Vec<f64> = b
-            .hard_levels(Study::HARD)
+            .hard_levels(BlockingStudy::HARD)
             .iter()
             .map(|(k, l)| ix.of(*k).expect("an index") - l)
             .collect();

@@ -244,7 +244,7 @@ impl Blocking {
 }
 
 /// The twins' check of a contour: at up to `per_curve` points of every curve, the index by
-/// [`crate::gears::Pair::new`] and [`crate::gears::Cutting`] off its limit (s_a and lengths
+/// [`crate::gears::GearPair::new`] and [`crate::gears::Cutting`] off its limit (s_a and lengths
 /// per m, ε_α, λ relative to max(1, |λ|)), and at as many points of each ring of the
 /// region's boundary on a limit (not the window's edge), the twins' least margin off 0; the
 /// largest and the number of points.

@@ -9,7 +9,8 @@ use super::study::{TrainSeed, TrainStudy};
 use super::{best_pairs, Stage, Train};
 pub use crate::check::notes::train::SeedStage;
 use crate::check::notes::train::{
-    Across, Assembly, Closing, Differential, FormulaBy, MeshNeeds, MeshRatio, SolvedFor, TrainNote,
+    Across, Closing, FormulaBy, MeshNeeds, MeshRatio, SatelliteAssembly, SolvedFor, TrainNote,
+    WillisDifferential,
 };
 
 /// One mesh's ratio with the carrier stopped: (−30/20).
@@ -111,7 +112,7 @@ impl TrainStudy {
             SolvedFor::B
         };
         let out = [d.a, d.b, h].iter().position(|&k| k == t.output)?;
-        Some(TrainNote::Differential(Differential {
+        Some(TrainNote::Differential(WillisDifferential {
             names: [d.a, d.b, h].map(|k| t.shafts[k].clone()),
             meshes: d.meshes.iter().map(|&(x, y)| mesh_ratio(t, x, y)).collect(),
             u: d.u,
@@ -264,7 +265,7 @@ impl TrainStudy {
         let Some(a) = t.assembly(k) else {
             return out;
         };
-        out.push(TrainNote::Assembly(Assembly {
+        out.push(TrainNote::Assembly(SatelliteAssembly {
             k,
             central: t.wheels[a.central].name.clone(),
             fixed: t.fixed.map_or(String::new(), |f| t.shafts[f].clone()),

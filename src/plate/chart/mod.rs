@@ -2,14 +2,14 @@
 //! titles, a legend and point labels placed clear of each other, written as SVG.
 //!
 //! ```
-//! use tmm::plate::chart::{Axis, Chart, Point, Series};
+//! use tmm::plate::chart::{Axis, Chart, ChartPoint, Series};
 //! let chart = Chart {
 //!     title: "error against time".into(),
 //!     x: Axis::new("time per run, s", "time", "s"),
 //!     y: Axis::new("max error", "error", ""),
 //!     series: vec![Series {
 //!         name: "chord: v_D, m/s".into(),
-//!         points: vec![Point::new(1e-6, 1e-2, "12"), Point::new(4e-6, 2.5e-3, "24")],
+//!         points: vec![ChartPoint::new(1e-6, 1e-2, "12"), ChartPoint::new(4e-6, 2.5e-3, "24")],
 //!     }],
 //!     point_labels: Some("numbers at points: N".into()),
 //! };
@@ -83,7 +83,7 @@ impl Axis {
 
 /// A point of a series with its label (plain text).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Point {
+pub struct ChartPoint {
     /// Abscissa.
     pub x: f64,
     /// Ordinate.
@@ -92,7 +92,7 @@ pub struct Point {
     pub label: String,
 }
 
-impl Point {
+impl ChartPoint {
     /// A labelled point.
     pub fn new(x: f64, y: f64, label: &str) -> Self {
         Self {
@@ -109,7 +109,7 @@ pub struct Series {
     /// The legend text (plain).
     pub name: String,
     /// Points, joined in this order.
-    pub points: Vec<Point>,
+    pub points: Vec<ChartPoint>,
 }
 
 /// A log-log chart, 180 × 120 mm with a `viewBox` in mm, DejaVu Sans: the plot area with
@@ -183,7 +183,7 @@ struct Drawable<'a> {
 impl<'a> Drawable<'a> {
     fn new(chart: &'a Chart) -> Self {
         let all = || chart.series.iter().flat_map(|s| &s.points);
-        let smallest = |v: &dyn Fn(&Point) -> f64, fallback| {
+        let smallest = |v: &dyn Fn(&ChartPoint) -> f64, fallback| {
             positive(all().map(v)).reduce(f64::min).unwrap_or(fallback)
         };
         let (floor_x, floor_y) = (
@@ -423,11 +423,14 @@ mod tests {
             series: vec![
                 Series {
                     name: "nan".into(),
-                    points: vec![Point::new(f64::NAN, 1.0, "1")],
+                    points: vec![ChartPoint::new(f64::NAN, 1.0, "1")],
                 },
                 Series {
                     name: "ok".into(),
-                    points: vec![Point::new(1.0, 0.0, "2"), Point::new(2.0, 3.0, "3")],
+                    points: vec![
+                        ChartPoint::new(1.0, 0.0, "2"),
+                        ChartPoint::new(2.0, 3.0, "3"),
+                    ],
                 },
             ],
             y: Axis::new("y", "error", ""),

@@ -1,7 +1,7 @@
 //! The English of a blocking contour's notes ([`BlockingNote`]).
 
 use super::sig as num;
-use crate::check::notes::blocking::{BlockingNote, Criterion, Kind, Level, Point, Traced};
+use crate::check::notes::blocking::{BlockingNote, Criterion, Kind, Level, PlanePoint, Traced};
 
 /// The note in English.
 pub(super) fn english(note: &BlockingNote) -> String {
@@ -81,7 +81,7 @@ fn traced(t: &Traced) -> String {
 }
 
 /// A point's indices.
-fn point(p: &Point) -> String {
+fn point(p: &PlanePoint) -> String {
     let l = p.lambda.map_or("—".to_string(), |l| {
         format!("λ₁(B₁) = {}, λ₂(B₂) = {}", num(l[0], 5), num(l[1], 5))
     });

@@ -1,7 +1,7 @@
 //! The English of a cam study's notes ([`CamNote`]).
 
 use super::finding::{self, basis, deg, mm, num};
-use crate::check::notes::cam::{AngleCheck, CamNote, LawName, Phase, Shocks, SpecialNote};
+use crate::check::notes::cam::{AngleCheck, CamNote, CamPhase, LawName, Shocks, SpecialNote};
 use crate::check::{Finding, Limit};
 
 /// The note in English.
@@ -54,10 +54,10 @@ pub(super) fn english(note: &CamNote) -> String {
 }
 
 /// A phase's law with its shocks; rigid shocks are a verdict, written after the law.
-fn law(phase: Phase, (from, to): (f64, f64), law: LawName, shocks: Shocks) -> String {
+fn law(phase: CamPhase, (from, to): (f64, f64), law: LawName, shocks: Shocks) -> String {
     let name = match phase {
-        Phase::Rise => "rise",
-        Phase::Return => "return",
+        CamPhase::Rise => "rise",
+        CamPhase::Return => "return",
     };
     let what = match law {
         LawName::ConstantAcceleration { ratio } => {

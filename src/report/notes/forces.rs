@@ -1,7 +1,7 @@
 //! The English of the force analysis' notes ([`ForcesNote`]).
 
 use super::sig;
-use crate::check::notes::forces::{ForcesNote, PairFriction};
+use crate::check::notes::forces::{ForcesNote, PositionFriction};
 
 /// A value of these notes: 6 significant digits.
 fn n(x: f64) -> String {
@@ -52,7 +52,7 @@ pub(super) fn english(note: &ForcesNote) -> String {
 
 /// The friction in the pairs at position `label`, with the instantaneous efficiency when it
 /// lies in (0, 1).
-fn pair_friction(label: &str, w: &PairFriction) -> String {
+fn pair_friction(label: &str, w: &PositionFriction) -> String {
     let (m0, m) = (w.without, w.with);
     let eta = if m != 0.0 { m0 / m } else { f64::NAN };
     let eta = if eta > 0.0 && eta < 1.0 {

@@ -1,6 +1,6 @@
 //! The English of a kinematic study's notes ([`KinematicsNote`]).
 
-use crate::check::notes::kinematics::{KinematicsNote, NearPivot};
+use crate::check::notes::kinematics::{KinematicsNote, PinNearPivot};
 
 /// The note in English.
 pub(super) fn english(note: &KinematicsNote) -> String {
@@ -43,7 +43,7 @@ pub(super) fn english(note: &KinematicsNote) -> String {
 }
 
 /// A slotted link's pin near its pivot: the rate true but ill-conditioned.
-fn near_pivot(n: &NearPivot) -> String {
+fn near_pivot(n: &PinNearPivot) -> String {
     let (pin, pivot) = (&n.pin, &n.pivot);
     format!(
         "position {}: the pin {pin} passes {:.3e} m from the pivot {pivot} of the slotted link {} (group {}, |d{pivot}{pin}/dφ₁| = {:.4} m): the link turns at ω_{} = {:.4e} rad/s, {:.2e} times the crank's rate; the values at this position are true but ill-conditioned (a change of {:.1e} m in a length of the mechanism changes them by about 100 %)",

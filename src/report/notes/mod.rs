@@ -1,5 +1,5 @@
 //! The English of a report's notes: the one place where each typed note
-//! ([`Note`](crate::check::Note)) becomes the sentence the report writes (Markdown, JSON),
+//! ([`ReportNote`](crate::check::ReportNote)) becomes the sentence the report writes (Markdown, JSON),
 //! with the verdicts ([`Finding`](crate::check::Finding)) it states in their place.
 
 mod balancing;
@@ -20,7 +20,7 @@ mod tests;
 mod tests_gears;
 mod train;
 
-use crate::check::{Note, Report};
+use crate::check::{Report, ReportNote};
 use crate::scale::{format_sig, Lang};
 
 /// A number in a note: `digits` significant digits, English decimal point.
@@ -29,18 +29,18 @@ fn sig(x: f64, digits: usize) -> String {
 }
 
 /// The note as the report writes it.
-pub fn english(note: &Note) -> String {
+pub fn english(note: &ReportNote) -> String {
     match note {
-        Note::Cam(n) => cam::english(n),
-        Note::Dynamics(n) => dynamics::english(n),
-        Note::Gears(n) => gears::english(n),
-        Note::Train(n) => train::english(n),
-        Note::Forces(n) => forces::english(n),
-        Note::Seed(n) => seed::english(n),
-        Note::Balancing(n) => balancing::english(n),
-        Note::Friction(n) => friction::english(n),
-        Note::Kinematics(n) => kinematics::english(n),
-        Note::Blocking(n) => blocking::english(n),
+        ReportNote::Cam(n) => cam::english(n),
+        ReportNote::Dynamics(n) => dynamics::english(n),
+        ReportNote::Gears(n) => gears::english(n),
+        ReportNote::Train(n) => train::english(n),
+        ReportNote::Forces(n) => forces::english(n),
+        ReportNote::Seed(n) => seed::english(n),
+        ReportNote::Balancing(n) => balancing::english(n),
+        ReportNote::Friction(n) => friction::english(n),
+        ReportNote::Kinematics(n) => kinematics::english(n),
+        ReportNote::Blocking(n) => blocking::english(n),
     }
 }
 

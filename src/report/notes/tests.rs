@@ -4,19 +4,19 @@
 
 use super::english;
 use crate::check::notes::balancing::{BalancingNote, Inertia};
-use crate::check::notes::forces::{ForcesNote, PairFriction};
+use crate::check::notes::forces::{ForcesNote, PositionFriction};
 use crate::check::notes::friction::{FrictionNote, RollerMotion, SliderMotion};
-use crate::check::notes::kinematics::{KinematicsNote, NearPivot};
+use crate::check::notes::kinematics::{KinematicsNote, PinNearPivot};
 use crate::check::notes::seed::{Analysed, SeedNote};
 use crate::check::notes::train::{
-    Across, Assembly, Closing, Differential, FormulaBy, MeshNeeds, MeshRatio, SeedStage, SolvedFor,
-    TrainNote,
+    Across, Closing, FormulaBy, MeshNeeds, MeshRatio, SatelliteAssembly, SeedStage, SolvedFor,
+    TrainNote, WillisDifferential,
 };
-use crate::check::{Method, Note, SeedValue};
+use crate::check::{Method, ReportNote, SeedValue};
 use crate::construct::Drafting;
 
 /// `note` reads `text` in English.
-pub(super) fn says(note: impl Into<Note>, text: &str) {
+pub(super) fn says(note: impl Into<ReportNote>, text: &str) {
     assert_eq!(english(&note.into()), text);
 }
 
@@ -58,7 +58,7 @@ fn a_trains_notes_read_as_the_differential_scene_printed_them() {
         },
         "train: u = −9.308176 by Willis, −9.308176 by the stages; the output turns against the input",
     );
-    let differential = |solved| Differential {
+    let differential = |solved| WillisDifferential {
         names: [s("3"), s("5"), s("H")],
         meshes: vec![
             MeshRatio {
@@ -192,7 +192,7 @@ fn the_satellites_conditions_read_as_pz2_printed_them_and_say_when_they_fail() {
         "train: neighbour condition, k = 4: 2·a·sin(π/k) = 60 mm ≤ (fails:) d_a4 = 64 mm",
     );
     let assembly = |value, p, block, fits| {
-        TrainNote::Assembly(Assembly {
+        TrainNote::Assembly(SatelliteAssembly {
             k: 2,
             central: s("3"),
             fixed: s("6"),
@@ -242,7 +242,7 @@ fn a_positions_forces_read_as_the_shaper_and_the_slider_crank_printed_them() {
     says(
         ForcesNote::Friction {
             label: s("2"),
-            friction: PairFriction {
+            friction: PositionFriction {
                 with: 50.24377433,
                 without: 43.86900985,
                 lost: 200.269,
@@ -494,7 +494,7 @@ fn kinematics_notes_read_as_the_six_bar_and_the_four_bar_printed_them() {
         "position 1: accelerating (ω and ε in one sense) by the plans: links 3; decelerating: links 2, 4; the analytic twin differs for link 4",
     );
     says(
-        KinematicsNote::NearPivot(NearPivot {
+        KinematicsNote::NearPivot(PinNearPivot {
             position: s("1"),
             pin: s("B"),
             pivot: s("C"),

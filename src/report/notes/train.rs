@@ -2,8 +2,8 @@
 
 use super::sig as num;
 use crate::check::notes::train::{
-    Across, Assembly, Closing, Differential, FormulaBy, Fraction, MeshNeeds, MeshRatio, SolvedFor,
-    TrainNote,
+    Across, Closing, FormulaBy, Fraction, MeshNeeds, MeshRatio, SatelliteAssembly, SolvedFor,
+    TrainNote, WillisDifferential,
 };
 
 /// One mesh's ratio with the carrier stopped: `(−30/20)`.
@@ -149,8 +149,8 @@ pub(super) fn english(note: &TrainNote) -> String {
 }
 
 /// The note's English: differential.
-fn differential(d: &Differential) -> String {
-    let Differential {
+fn differential(d: &WillisDifferential) -> String {
+    let WillisDifferential {
         names: [a, b, hn],
         meshes,
         u,
@@ -233,8 +233,8 @@ fn mesh_needs(m: &MeshNeeds) -> String {
 }
 
 /// The note's English: assembly.
-fn assembly(a: &Assembly) -> String {
-    let Assembly {
+fn assembly(a: &SatelliteAssembly) -> String {
+    let SatelliteAssembly {
         k,
         central: z,
         fixed: b,
