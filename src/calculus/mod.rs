@@ -19,7 +19,7 @@
 //!   [`Divided`] diagram: a division point at every break of the integrand, so that it is
 //!   smooth over each interval).
 //!
-//! # Derivation error
+//! # Method error
 //! The chord value read at a mid-interval point is the central difference
 //! `(y(x+h/2) − y(x−h/2))/h = y′(x) + h²/24·y‴(ξ)`: second order, bounded by h²/24·max|y‴|.
 //! Node values are read from the smooth curve through the mid-interval points (a cubic

@@ -27,6 +27,15 @@ fn shipped(name: &str) -> Vec<(PlateKind, Plate)> {
     sheets_of(name, &std::fs::read_to_string(path).expect(name))
 }
 
+/// That one of the texts of `plates` has the line `want`.
+fn assert_line<'a>(plates: impl IntoIterator<Item = &'a Plate>, want: &str) {
+    let lines: Vec<&String> = (plates.into_iter())
+        .flat_map(|p| &p.texts)
+        .flat_map(|t| &t.lines)
+        .collect();
+    assert!(lines.iter().any(|l| *l == want), "«{want}» in {lines:#?}");
+}
+
 /// The kinematic sheet states the task's data beside the structural analysis — the lengths,
 /// ω₁ and the crank's sense — and the scheme draws that sense as the arc arrow ω₁ about the
 /// crank's pivot (issue 45: the four-bar's sheet gave neither). The sense turned in the
@@ -107,12 +116,9 @@ fn the_tangent_schemes_crank_ends_in_a_point_and_its_own_scales_are_stated() {
         scheme.figure.scale.value(),
         plan.figure.scale.value()
     );
-    let lines: Vec<String> = sheet.texts.iter().flat_map(|t| t.lines.clone()).collect();
-    assert!(
-        lines
-            .iter()
-            .any(|l| l == "Планы скоростей пол. 3, 4, 9, 10: μ_{v} = 0,25 м/(с·мм)"),
-        "{lines:#?}"
+    assert_line(
+        [sheet],
+        "Планы скоростей пол. 3, 4, 9, 10: μ_{v} = 0,25 м/(с·мм)",
     );
 }
 
@@ -134,17 +140,7 @@ fn the_shapers_plan_names_the_strokes_other_end_and_its_swing_is_psi() {
         .filter(|st| st.label.as_ref().is_some_and(|l| l.text == "E′"))
         .count();
     assert_eq!(primed, 1, "E′ once, on the plan of positions");
-    let lines: Vec<String> = kinematic
-        .iter()
-        .flat_map(|p| &p.texts)
-        .flat_map(|t| t.lines.clone())
-        .collect();
-    assert!(
-        lines
-            .iter()
-            .any(|l| l == "Угол размаха звена 3: ψ = θ = 38,00°"),
-        "{lines:#?}"
-    );
+    assert_line(kinematic, "Угол размаха звена 3: ψ = θ = 38,00°");
 }
 
 /// The analytic table writes its angles (φ₁, φ₂, φ₄) to one precision: the V engine's
