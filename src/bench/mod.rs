@@ -4,7 +4,7 @@
 //! * **Chord method** — the displacement of the shaper's ram (point `E`, along x) and the
 //!   four-bar's rocker angle (link 3) are charted over one crank turn at N equal steps from
 //!   the analytic positions and differentiated twice by chords
-//!   ([`Method::Chords`](crate::calculus::Method::Chords), drafting exact). The
+//!   ([`Derivation::Chords`](crate::calculus::Derivation::Chords), drafting exact). The
 //!   abscissa is the angle the crank has turned through (it grows with time whatever the sense
 //!   of ω₁), so the analogues turn into velocities and accelerations with |ω₁| and |ω₁|² and
 //!   compare, signs included, with the analytic ω₁·dX/dφ₁ and ω₁²·d²X/dφ₁² at the nodes.

@@ -6,75 +6,10 @@
 //! the link (`link`), as it does for a load at a joint. A frame direction stays a frame
 //! direction only on a link that does not turn: carried by a turning link it is refused.
 
+use super::error::{CarrierError, LinkageError, ModelError};
+use super::indexed::PGuide;
 use super::model::{Dir, Group, Mechanism};
-use super::program::{group_what, Op, PGuide, Program};
-use super::{LinkageError, ModelError};
-use std::fmt;
-
-/// Why the link that carries a guide cannot be told.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum CarrierError {
-    /// The named link does not hold the guide's points.
-    NotOn {
-        /// The named link.
-        link: u32,
-        /// The links that hold them.
-        links: Vec<u32>,
-    },
-    /// The guide's point joins several links: which one carries the guide is the scene's to
-    /// say.
-    Ambiguous {
-        /// The moving links there.
-        links: Vec<u32>,
-    },
-    /// The direction's two points lie on no common link.
-    Unshared,
-    /// A frame direction on a link that turns.
-    Turns {
-        /// The link.
-        link: u32,
-    },
-}
-
-impl fmt::Display for CarrierError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let list = |ls: &[u32]| {
-            ls.iter()
-                .map(|l| {
-                    if *l == 0 {
-                        "0 (the frame)".into()
-                    } else {
-                        l.to_string()
-                    }
-                })
-                .collect::<Vec<String>>()
-                .join(" and ")
-        };
-        match self {
-            CarrierError::NotOn { link, links } if links.is_empty() => {
-                write!(f, "link {link} does not hold the guide's points")
-            }
-            CarrierError::NotOn { link, links } => write!(
-                f,
-                "link {link} does not hold the guide's points, which lie on link {}",
-                list(links)
-            ),
-            CarrierError::Ambiguous { links } => write!(
-                f,
-                "the guide runs through the joint of links {}: name the link whose body carries it with `link`",
-                list(links)
-            ),
-            CarrierError::Unshared => write!(f, "the direction's two points lie on no common link"),
-            CarrierError::Turns { link } => write!(
-                f,
-                "link {link} turns, so a guide at a fixed angle cannot be carried by it: give the \
-                 direction along the link ({{ from, to }}) or name a link that translates"
-            ),
-        }
-    }
-}
-
-impl std::error::Error for CarrierError {}
+use super::program::{group_what, Op, Program};
 
 /// The links a guide's points leave to choose from: for a frame direction, the links at its
 /// point `through` (the frame among them for a fixed point); for a direction along two

@@ -2,9 +2,9 @@
 //! analogue, and the working stroke, the time ratio K and the angle θ.
 
 use super::analytic::Pose;
+use super::error::{LinkageError, ModelError};
 use super::model::{Output, Sense};
 use super::program::Program;
-use super::{LinkageError, ModelError};
 use crate::geom::{bisect, wrap_pi, DVec2, Midpoint, Tolerances};
 use std::convert::Infallible;
 use std::f64::consts::{PI, TAU};

@@ -2,14 +2,21 @@
 //! compass constructions with their analytic twin, extreme positions.
 
 mod analytic;
+mod built;
 mod carrier;
+mod compiled;
 mod construction;
+mod error;
 mod extremes;
 mod fan;
 mod grashof;
 mod groups;
+mod indexed;
 mod kinds;
 mod model;
+mod pairs;
+mod part;
+mod pen;
 mod plans;
 mod positions;
 mod positions_draw;
@@ -24,15 +31,19 @@ mod structure;
 mod tests;
 
 pub use analytic::{NearPivot, Pose, Unassembled, NEAR_PIVOT_RATIO, SWEEP_ANCHOR};
-pub use carrier::{candidates, carrier, CarrierError};
-pub use construction::{Built, Failed};
+pub use built::Built;
+pub use carrier::{candidates, carrier};
+pub use construction::Failed;
+pub use error::{CarrierError, LinkageError, ModelError};
 pub use extremes::{Extremes, OutputCoord};
 pub use grashof::{Bar, FourBar, Relation};
-pub use groups::{GroupPairs, GroupView};
+pub use groups::GroupView;
 pub use model::{
     Branch, Crank, Dir, Dyad, DyadKind, FixedPoint, Group, Guide, LinkPoint, Mechanism, Output,
     RedundantPair, Sense,
 };
+pub use pairs::GroupPairs;
+pub use part::Part;
 pub use plans::{
     image_label, kin_plan, owner, plain, KinPlan, Measure, PlanKind, PlanReading, PlanSetup,
 };
@@ -41,119 +52,8 @@ pub use positions::{
     PositionPlan,
 };
 pub use positions_draw::{
-    draw_links, fixed_pivots, frame_guides, guide_ends, plan_positions, FrameGuide, Part,
-    GUIDE_MARGIN_MM,
+    draw_links, frame_guides, guide_ends, plan_positions, FrameGuide, GUIDE_MARGIN_MM,
 };
 pub use program::Program;
 pub use scheme::structure_figure;
 pub use structure::{GroupInfo, Mobility, PairInfo, Structure};
-
-use thiserror::Error;
-
-/// What is inconsistent in a mechanism model (the scene validator reports these with their
-/// keys first; a model built in code meets them here).
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum ModelError {
-    /// A point name is used twice.
-    #[error("point `{0}` is defined twice")]
-    DuplicatePoint(String),
-    /// A point is referenced before it is known.
-    #[error("{what}: point `{name}` is not known at this stage")]
-    UnknownPoint {
-        /// What refers to it.
-        what: String,
-        /// The name.
-        name: String,
-    },
-    /// The crank's centre is not a fixed point.
-    #[error("crank centre `{0}` must be a fixed point")]
-    CentreNotFixed(String),
-    /// A group names the frame or a link already attached.
-    #[error("{what}: link {link} is the frame or already used")]
-    LinkReused {
-        /// The group.
-        what: String,
-        /// The link.
-        link: u32,
-    },
-    /// An RPP group's slide turns with a link that moves along its guide.
-    #[error("{what}: the slide through `{point}` turns with link {link}, which moves along the guide: give the slide the guide's kind of direction (both fixed, or both along the same two points)")]
-    SlideAcrossGuide {
-        /// The group.
-        what: String,
-        /// The slide's point.
-        point: String,
-        /// The link it turns with.
-        link: u32,
-    },
-    /// The link that carries a guide cannot be told, or cannot carry it.
-    #[error("{what}: the guide through `{point}`: {why}")]
-    Carrier {
-        /// The group.
-        what: String,
-        /// The guide's point.
-        point: String,
-        /// Why.
-        why: CarrierError,
-    },
-    /// A link point on a link no group defines.
-    #[error("point `{name}` is on link {link}, which no group defines")]
-    PointOnUnknownLink {
-        /// The point.
-        name: String,
-        /// Its link.
-        link: u32,
-    },
-    /// An output rocker that is not a link of the mechanism.
-    #[error("output rocker {0}: no such link")]
-    NoSuchRocker(u32),
-    /// An output slider that is not a point of the mechanism.
-    #[error("output slider `{0}`: no such point")]
-    NoSuchSlider(String),
-    /// No output is given.
-    #[error("no output is given")]
-    NoOutput,
-    /// The tolerances of a drawing cannot be formed.
-    #[error("tolerances: {0}")]
-    Tolerances(#[from] crate::geom::InvalidTolerance),
-}
-
-/// Why a linkage task cannot be carried out.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum LinkageError {
-    /// The model itself is inconsistent (unknown names, reused links).
-    #[error("mechanism: {0}")]
-    Model(#[from] ModelError),
-    /// A group cannot be assembled at a position.
-    #[error(
-        "position {position} (φ₁ = {phi_deg:.4}°): group {group} cannot be assembled: {detail}"
-    )]
-    CannotAssemble {
-        /// The position's label.
-        position: String,
-        /// Crank angle, degrees.
-        phi_deg: f64,
-        /// The group (`2 (RRR, links 2, 3)`).
-        group: String,
-        /// What fails, with its numbers.
-        detail: String,
-    },
-    /// The crank cannot make a full turn, so the extreme positions cannot be searched for.
-    #[error("the crank cannot make a full turn: at φ₁ = {phi_deg:.4}° group {group} cannot be assembled: {detail}; give `start` as an angle to construct the positions that exist")]
-    CannotTurn {
-        /// Crank angle, degrees.
-        phi_deg: f64,
-        /// The group.
-        group: String,
-        /// What fails.
-        detail: String,
-    },
-    /// The output has no extreme positions (it turns fully or does not move).
-    #[error("output {output}: {detail}")]
-    NoExtremes {
-        /// The output.
-        output: String,
-        /// Explanation.
-        detail: String,
-    },
-}

@@ -4,11 +4,11 @@
 //! extreme positions, θ and the stroke H.
 
 use super::analytic::Pose;
-use super::construction::Built;
+use super::built::Built;
+use super::error::LinkageError;
 use super::extremes::Extremes;
 use super::model::{Mechanism, Sense};
 use super::program::Program;
-use super::LinkageError;
 use crate::construct::Figure;
 use std::f64::consts::TAU;
 

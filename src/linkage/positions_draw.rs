@@ -1,81 +1,25 @@
 //! Drawing the plan of positions: the links of a position (whole, the driver, or one group),
 //! the frame's pivots and guides, the trajectories and the extreme positions with θ, ψ, H.
 
-use super::construction::Built;
+use super::built::Built;
+use super::compiled::Compiled;
+use super::error::{LinkageError, ModelError};
 use super::extremes::{Extremes, OutputCoord};
-use super::fan::{clearances, trim};
+use super::fan::clearances;
+use super::indexed::PDir;
 use super::model::Mechanism;
+use super::part::Part;
+use super::pen::{covers, trim, Pen};
 use super::positions::{
     cannot_assemble, start_of, walk, PlanPoses, PlanPosition, PlanRequest, PosePosition,
     PositionPlan,
 };
-use super::program::{Op, PDir, Program};
-use super::rigid::{covers, draw_rigid, rigid_links, RigidLink};
-use super::{LinkageError, ModelError};
+use super::program::{Op, Program};
+use super::rigid::{draw_rigid, rigid_links, RigidLink};
 use crate::construct::{Context, Drafting, Item, Recorder, Role};
 use crate::geom::{Arc, Circle, DVec2, Segment, Side, Tolerances};
 use crate::scale::Scale;
 use std::f64::consts::TAU;
-
-/// Which part of a mechanism to draw.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Part {
-    /// Everything.
-    All,
-    /// The class-I mechanism: frame and crank.
-    Driver,
-    /// One Assur group (index in file order).
-    Group(usize),
-}
-
-/// What a group draws its links with: the recorder, the drawing's role and note, and the
-/// points it puts its link numbers at and the joints it draws.
-pub(super) struct Pen<'r> {
-    /// The recorder.
-    pub rec: &'r mut Recorder,
-    /// The role of every item.
-    pub role: Role,
-    /// The note every item's step starts with.
-    pub note: &'r str,
-    /// Per link number drawn, a point to put its number at.
-    pub anchors: Vec<(u32, DVec2)>,
-    /// The joints to draw.
-    pub joints: Vec<usize>,
-    /// The links drawn as their contour ([`super::rigid`]), each with its hinges' points:
-    /// a bar between two of them is not drawn.
-    pub rigid: Vec<(u32, Vec<DVec2>)>,
-    /// The crowded fixed pivots and the radius their lines begin at ([`super::fan`]).
-    pub clear: &'r [(DVec2, f64)],
-}
-
-impl Pen<'_> {
-    /// Link `l` as a bar from `from` to `to` (nothing when it joins two hinges of a link
-    /// drawn as its contour).
-    pub fn link(&mut self, l: u32, from: DVec2, to: DVec2) {
-        if covers(&self.rigid, l, (from, to)) {
-            return;
-        }
-        let Some((from, to)) = trim(self.clear, from, to) else {
-            return;
-        };
-        self.rec.draw(
-            format!("{}: link {l}", self.note),
-            Item::Segment(Segment::new(from, to)),
-            self.role,
-            &[],
-        );
-    }
-
-    /// Link `l` as a slider at `at`, along `angle`.
-    pub fn slider(&mut self, l: u32, at: DVec2, angle: f64) {
-        self.rec.draw(
-            format!("{}: slider {l}", self.note),
-            Item::Slider { at, angle },
-            self.role,
-            &[],
-        );
-    }
-}
 
 /// Draw one position's links with `role`; returns, per link number drawn, a point to put its
 /// number at.
@@ -102,7 +46,7 @@ fn draw_links_from(
 ) -> Vec<(u32, DVec2)> {
     let rigid: Vec<RigidLink> = rigid_links(prog)
         .into_iter()
-        .filter(|r| in_part(prog, part, r.link))
+        .filter(|r| part.draws(prog, r.link))
         .collect();
     let mut pen = Pen {
         rec,
@@ -165,42 +109,6 @@ fn draw_links_from(
         );
     }
     anchors
-}
-
-/// Whether link `l` is drawn with `part`.
-fn in_part(prog: &Program, part: Part, l: u32) -> bool {
-    match part {
-        Part::All => true,
-        Part::Driver => l == prog.crank_link,
-        Part::Group(g) => prog.ops.iter().any(
-            |op| matches!(op, Op::Dyad { group, links, .. } if *group == g && links.contains(&l)),
-        ),
-    }
-}
-
-/// Farthest `along` of a link's points, mm.
-pub(super) fn link_reach(prog: &Program, link: u32, mu: f64) -> f64 {
-    prog.ops
-        .iter()
-        .filter_map(|op| match op {
-            Op::Point { link: l, along, .. } if *l == link => Some(*along / mu),
-            _ => None,
-        })
-        .fold(0.0, f64::max)
-}
-
-/// Fixed points that are revolute pairs with the frame.
-pub fn fixed_pivots(prog: &Program) -> Vec<usize> {
-    let mut v = vec![prog.centre];
-    for op in &prog.ops {
-        if let Op::Dyad { dyad, .. } = op {
-            v.extend(dyad.group().pivots());
-        }
-    }
-    v.retain(|k| *k < prog.fixed.len());
-    v.sort_unstable();
-    v.dedup();
-    v
 }
 
 /// A guide of the frame as drawn: the group it belongs to, the piece of line spanning the
@@ -298,7 +206,7 @@ pub fn draw_guides(rec: &mut Recorder, guides: &[FrameGuide]) {
 
 /// Draw the fixed pivots of `b` with the ground symbol and their letters.
 pub fn draw_pivots(rec: &mut Recorder, prog: &Program, b: &Built) {
-    for k in fixed_pivots(prog) {
+    for k in prog.fixed_pivots() {
         let id = rec.draw(
             format!("fixed pivot {}", prog.names[k]),
             Item::Joint {
@@ -436,7 +344,7 @@ fn draw_extremes(rec: &mut Recorder, prog: &Program, positions: &[PlanPosition],
                     DVec2::from_angle(b.built.angle[l]),
                 );
                 let reach =
-                    (link_reach(prog, l as u32, rec.scale().value()) * 0.3).clamp(25.0, 70.0);
+                    (prog.link_reach(l as u32, rec.scale().value()) * 0.3).clamp(25.0, 70.0);
                 let id = rec.draw(
                     "swing angle of the rocker",
                     Item::Angle(Arc::between(o, reach, ua, ub)),

@@ -1,49 +1,14 @@
 //! A mechanism compiled into an indexed program: names resolved once, so solving a position
 //! is a straight run over the operations with no lookups.
 
+use super::compiled::Compiled;
+use super::error::{LinkageError, ModelError};
+use super::indexed::{PDir, PGuide};
 pub(super) use super::kinds::PDyad;
 use super::kinds::{Prp, Rpp, Rpr, Rrp, Rrr};
 use super::model::{Dir, Dyad, Group, Guide, LinkPoint, Mechanism};
-use super::{LinkageError, ModelError};
 use crate::geom::DVec2;
 use std::collections::HashMap;
-
-/// A direction in the program.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) enum PDir {
-    /// Frame direction, radians.
-    Fixed(f64),
-    /// Direction of `from → to` turned by `angle`.
-    Along {
-        /// Point index.
-        from: usize,
-        /// Point index.
-        to: usize,
-        /// Extra turn, radians.
-        angle: f64,
-    },
-}
-
-/// A guide line in the program.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct PGuide {
-    /// Point index the line passes through (before the offset).
-    pub through: usize,
-    /// Its direction.
-    pub dir: PDir,
-    /// Shift to the left, m.
-    pub offset: f64,
-    /// The link that carries it (0 the frame), resolved once at compilation
-    /// (`Program::resolve_carriers`).
-    pub carrier: usize,
-}
-
-impl PGuide {
-    /// True when the guide belongs to the frame.
-    pub fn is_fixed(&self, fixed_count: usize) -> bool {
-        self.through < fixed_count && matches!(self.dir, PDir::Fixed(_))
-    }
-}
 
 /// One operation.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -422,24 +387,18 @@ impl Program {
         0
     }
 
-    /// Whether point `k` is a further point of a link (`[[mechanism.point]]`: a centre of
-    /// mass, a point to chart) that no group attaches to: its velocity is read, nothing is
-    /// built on it, so its vector on a plan is a secondary one (drawn thin).
-    pub fn is_leaf_point(&self, k: usize) -> bool {
-        let is_point = self
-            .ops
-            .iter()
-            .any(|op| matches!(*op, Op::Point { idx, .. } if idx == k));
-        let used = self.ops.iter().any(|op| match *op {
-            Op::Point { .. } => false,
-            Op::Dyad { dyad, .. } => dyad.group().uses(k),
-        });
-        is_point && !used
-    }
-
-    /// Whether point `k` is fixed or carried by the crank (its motion is known from ω₁ alone).
-    pub fn on_frame_or_crank(&self, k: usize) -> bool {
-        k < self.fixed.len() || self.links_of(k).contains(&(self.crank_link as usize))
+    /// Fixed points that are revolute pairs with the frame.
+    pub fn fixed_pivots(&self) -> Vec<usize> {
+        let mut v = vec![self.centre];
+        for op in &self.ops {
+            if let Op::Dyad { dyad, .. } = op {
+                v.extend(dyad.group().pivots());
+            }
+        }
+        v.retain(|k| *k < self.fixed.len());
+        v.sort_unstable();
+        v.dedup();
+        v
     }
 
     /// The links each point lies on (a pivot or joint lies on several; fixed points on the
@@ -480,5 +439,53 @@ impl Program {
         v.sort_unstable();
         v.dedup();
         v
+    }
+}
+
+impl Compiled for Program {
+    fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    fn fixed_count(&self) -> usize {
+        self.fixed.len()
+    }
+
+    fn centre(&self) -> usize {
+        self.centre
+    }
+
+    fn owner(&self, k: usize) -> usize {
+        Program::owner(self, k)
+    }
+
+    /// Whether point `k` is a further point of a link (`[[mechanism.point]]`: a centre of
+    /// mass, a point to chart) that no group attaches to: its velocity is read, nothing is
+    /// built on it, so its vector on a plan is a secondary one (drawn thin).
+    fn is_leaf_point(&self, k: usize) -> bool {
+        let is_point = self
+            .ops
+            .iter()
+            .any(|op| matches!(*op, Op::Point { idx, .. } if idx == k));
+        let used = self.ops.iter().any(|op| match *op {
+            Op::Point { .. } => false,
+            Op::Dyad { dyad, .. } => dyad.group().uses(k),
+        });
+        is_point && !used
+    }
+
+    /// Whether point `k` is fixed or carried by the crank (its motion is known from ω₁ alone).
+    fn on_frame_or_crank(&self, k: usize) -> bool {
+        k < self.fixed.len() || self.links_of(k).contains(&(self.crank_link as usize))
+    }
+
+    fn link_reach(&self, link: u32, mu: f64) -> f64 {
+        self.ops
+            .iter()
+            .filter_map(|op| match op {
+                Op::Point { link: l, along, .. } if *l == link => Some(*along / mu),
+                _ => None,
+            })
+            .fold(0.0, f64::max)
     }
 }

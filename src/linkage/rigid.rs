@@ -5,10 +5,10 @@
 //! is one for every drawing of a mechanism (the structural scheme, the plan of positions,
 //! the groups of the force analysis): [`rigid_links`] says which links, [`draw_rigid`] draws
 //! one, and the bars a group would draw between two of its hinges are left out
-//! ([`covers`]).
+//! ([`super::pen::covers`]).
 
-use super::construction::Built;
-use super::fan::trim_contour;
+use super::built::Built;
+use super::pen::trim_contour;
 use super::program::Program;
 use crate::construct::{Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
@@ -20,10 +20,6 @@ const CORNER_SHARE: f64 = 0.3;
 /// The strokes of a corner's hatching, as fractions of its size from the vertex: the first
 /// clear of the hinge's circle.
 const STROKES: [f64; 3] = [0.55, 0.775, 1.0];
-/// Hinges closer than this to a bar's end are its end, mm (the bar is drawn from the same
-/// numbers: only rounding parts them); a pivot of the plan's fans likewise ([`super::fan`]).
-pub(super) const AT_MM: f64 = 1e-6;
-
 /// A link with three or more hinges.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(super) struct RigidLink {
@@ -39,15 +35,6 @@ impl RigidLink {
     pub fn placed(&self, b: &Built) -> (u32, Vec<DVec2>) {
         (self.link, self.hinges.iter().map(|&k| b.p[k]).collect())
     }
-}
-
-/// Whether the bar `from`–`to` of link `l` joins two hinges of a link of `placed` (each link's
-/// number and its hinges' points, [`RigidLink::placed`]): its contour draws it.
-pub(super) fn covers(placed: &[(u32, Vec<DVec2>)], l: u32, (from, to): (DVec2, DVec2)) -> bool {
-    let at = |points: &[DVec2], x: DVec2| points.iter().any(|p| p.distance(x) <= AT_MM);
-    placed
-        .iter()
-        .any(|(link, points)| *link == l && at(points, from) && at(points, to))
 }
 
 /// The links of `prog` with three or more hinges, by link number: a hinge of a link is a

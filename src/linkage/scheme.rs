@@ -1,11 +1,10 @@
 //! The structural scheme: the mechanism at position 1 with its link numbers, and beside it
 //! the decomposition into the class-I mechanism and the Assur groups, each drawn apart.
 
-use super::construction::Built;
+use super::built::Built;
 use super::model::Sense;
-use super::positions_draw::{
-    draw_guides, draw_links, draw_pivots, frame_guides, named_point, Part,
-};
+use super::part::Part;
+use super::positions_draw::{draw_guides, draw_links, draw_pivots, frame_guides, named_point};
 use super::program::Program;
 use super::structure::Structure;
 use crate::construct::{Context, Figure, Item, Recorder, Role};

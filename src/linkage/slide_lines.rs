@@ -1,9 +1,10 @@
 //! The lines of the moving links that a group slides on (the tangent mechanism's crank,
 //! along which its block slides), drawn with their link on every drawing of the mechanism.
 
-use super::construction::Built;
-use super::positions_draw::Part;
-use super::program::{Op, Program};
+use super::built::Built;
+use super::compiled::Compiled;
+use super::part::Part;
+use super::program::Program;
 use crate::construct::{Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
 
@@ -60,18 +61,8 @@ pub(super) fn draw_slide_lines(
     part: Part,
 ) {
     let mu = rec.scale().value();
-    let links_of = |g: usize| {
-        prog.ops.iter().find_map(|op| match op {
-            Op::Dyad { group, links, .. } if *group == g => Some(*links),
-            _ => None,
-        })
-    };
     for s in slide_lines(prog, b, mu) {
-        let carried = match part {
-            Part::All => true,
-            Part::Driver => s.carrier == prog.crank_link,
-            Part::Group(g) => links_of(g).is_some_and(|l| l.contains(&s.carrier)),
-        };
+        let carried = part.draws(prog, s.carrier);
         if carried {
             rec.draw(
                 format!("{note}: link {}: slide line", s.carrier),

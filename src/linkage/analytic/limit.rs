@@ -2,7 +2,8 @@
 //! the group's links lie on one line and the mechanism passes onto its other branch): the
 //! limit of the branch the mechanism takes as the crank leaves the toggle on one side.
 
-use super::{Pose, Program};
+use super::state::Pose;
+use crate::linkage::program::Program;
 use std::ops::{Add, Mul, Sub};
 
 /// The crank's offsets from the toggle the limit is extrapolated from, radians: δ, δ/2, δ/4.

@@ -5,14 +5,16 @@ use super::{guide_uses, GroupKind, Planned, Solved, Words};
 use crate::construct::{ConstructionError, Recorder};
 use crate::geom::DVec2;
 use crate::linkage::analytic::jet::meet;
-use crate::linkage::analytic::State;
-use crate::linkage::construction::{Built, Frames};
-use crate::linkage::groups::GroupPairs;
+use crate::linkage::analytic::state::State;
+use crate::linkage::built::{Built, Frames};
+use crate::linkage::compiled::Compiled;
+use crate::linkage::indexed::PGuide;
 use crate::linkage::model::DyadKind;
-use crate::linkage::plans::{plain, Builder, PlanKind};
-use crate::linkage::positions_draw::Pen;
-use crate::linkage::program::PGuide;
-use crate::linkage::program::Program;
+use crate::linkage::pairs::GroupPairs;
+use crate::linkage::pen::Pen;
+use crate::linkage::plans::builder::Builder;
+use crate::linkage::plans::names::plain;
+use crate::linkage::plans::plan::PlanKind;
 
 /// The kind's words.
 pub(super) const WORDS: Words = Words {
@@ -57,7 +59,7 @@ impl GroupKind for Prp {
     }
     fn construct(
         &self,
-        prog: &Program,
+        prog: &dyn Compiled,
         rec: &mut Recorder,
         pos: &mut Built,
         _: Option<&Built>,
@@ -78,7 +80,7 @@ impl GroupKind for Prp {
     }
     /// Two sliders joined by a pin (the textbook's ПВП): link j a block on its guide, link i
     /// a block on its own over it.
-    fn draw(&self, pen: &mut Pen<'_>, _: &Program, b: &Built, [i, j]: [u32; 2]) {
+    fn draw(&self, pen: &mut Pen<'_>, _: &dyn Compiled, b: &Built, [i, j]: [u32; 2]) {
         let joint = b.p[self.joint];
         pen.slider(j, joint, b.angle[j as usize]);
         pen.slider(i, joint, b.angle[i as usize]);
@@ -95,7 +97,7 @@ impl GroupKind for Prp {
     }
     /// PRP: the joint where the two guides meet, its rates from the two moving lines.
     #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
-    fn solve(&self, _: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
+    fn solve(&self, _: &dyn Compiled, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let (l1, l2) = (st.guide(&self.gi), st.guide(&self.gj));
         let (x, s) = meet(l1, l2)
             .ok_or_else(|| st.fail(format!("the guides of links {i} and {j} are parallel")))?;

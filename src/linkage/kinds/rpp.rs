@@ -6,14 +6,16 @@ use super::{dir_uses, guide_uses, GroupKind, Planned, Solved, Words};
 use crate::construct::{ConstructionError, Item, Recorder, Role};
 use crate::geom::{DVec2, Line, Segment};
 use crate::linkage::analytic::jet::{meet, unit, LineJet};
-use crate::linkage::analytic::State;
-use crate::linkage::construction::{other, Built, Frames};
-use crate::linkage::groups::GroupPairs;
+use crate::linkage::analytic::state::State;
+use crate::linkage::built::{other, Built, Frames};
+use crate::linkage::compiled::Compiled;
+use crate::linkage::indexed::{PDir, PGuide};
 use crate::linkage::model::DyadKind;
-use crate::linkage::plans::{plain, Builder, PlanKind};
-use crate::linkage::positions_draw::Pen;
-use crate::linkage::program::Program;
-use crate::linkage::program::{PDir, PGuide};
+use crate::linkage::pairs::GroupPairs;
+use crate::linkage::pen::Pen;
+use crate::linkage::plans::builder::Builder;
+use crate::linkage::plans::names::plain;
+use crate::linkage::plans::plan::PlanKind;
 
 /// The kind's words.
 pub(super) const WORDS: Words = Words {
@@ -66,7 +68,7 @@ impl GroupKind for Rpp {
     }
     fn construct(
         &self,
-        prog: &Program,
+        prog: &dyn Compiled,
         rec: &mut Recorder,
         pos: &mut Built,
         _: Option<&Built>,
@@ -77,7 +79,7 @@ impl GroupKind for Rpp {
         let sl = Line::new(a, DVec2::from_angle(prog.drawn_dir(&self.slide, &pos.p)))
             .ok_or_else(|| other(s, "slide direction"))?;
         let g = prog.line_or_fail(&self.guide, &pos.p, mu, s)?;
-        let name = format!("slide line through {}", prog.names[self.a]);
+        let name = format!("slide line through {}", prog.names()[self.a]);
         let on = (&*prog.guide_name(&self.guide), &g);
         let met = rec.meet_lines(&prog.joint_step(s, self.joint), (&name, &sl), on)?;
         rec.draw(
@@ -93,7 +95,7 @@ impl GroupKind for Rpp {
             crossing,
         })
     }
-    fn draw(&self, pen: &mut Pen<'_>, _: &Program, b: &Built, [i, j]: [u32; 2]) {
+    fn draw(&self, pen: &mut Pen<'_>, _: &dyn Compiled, b: &Built, [i, j]: [u32; 2]) {
         let (a, joint) = (b.p[self.a], b.p[self.joint]);
         pen.link(j, a, joint);
         pen.slider(i, a, b.angle[i as usize]);
@@ -111,7 +113,7 @@ impl GroupKind for Rpp {
     /// RPP: the joint where the slide line through `a` meets link j's guide, its rates from
     /// the two moving lines.
     #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
-    fn solve(&self, _: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
+    fn solve(&self, _: &dyn Compiled, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let Rpp {
             a,
             slide,
@@ -172,7 +174,7 @@ impl GroupKind for Rpp {
         let rk = bl.rate(k);
         bl.links.add(j, bl.b.p[a], x);
         bl.links.rate[j] = Some(rk);
-        let jx = bl.image_on(j, bl.b.p[joint], bl.prog.names[joint].as_str());
+        let jx = bl.image_on(j, bl.b.p[joint], bl.prog.names()[joint].as_str());
         bl.set_image(joint, jx, &[]);
         bl.finish_link(j, &[(joint, jx)], rk);
         bl.finish_link(i, &[(a, ai)], rk);

@@ -14,14 +14,16 @@ use super::{GroupKind, Planned, Solved, Words};
 use crate::construct::{ConstructionError, Recorder};
 use crate::geom::DVec2;
 use crate::linkage::analytic::jet::{heading, sub, AngleJet};
-use crate::linkage::analytic::State;
-use crate::linkage::construction::{Built, Frames};
-use crate::linkage::groups::GroupPairs;
+use crate::linkage::analytic::state::State;
+use crate::linkage::analytic::state::{NearPivot, NEAR_PIVOT_RATIO};
+use crate::linkage::built::{Built, Frames};
+use crate::linkage::compiled::Compiled;
 use crate::linkage::model::DyadKind;
-use crate::linkage::plans::{plain, Builder, PlanKind};
-use crate::linkage::positions_draw::{link_reach, Pen};
-use crate::linkage::program::Program;
-use crate::linkage::{NearPivot, NEAR_PIVOT_RATIO};
+use crate::linkage::pairs::GroupPairs;
+use crate::linkage::pen::Pen;
+use crate::linkage::plans::builder::Builder;
+use crate::linkage::plans::names::plain;
+use crate::linkage::plans::plan::PlanKind;
 use slide::slide_line;
 use twin_slot::Slot;
 
@@ -62,7 +64,7 @@ impl GroupKind for Rpr {
     }
     fn construct(
         &self,
-        prog: &Program,
+        prog: &dyn Compiled,
         rec: &mut Recorder,
         pos: &mut Built,
         prev: Option<&Built>,
@@ -76,12 +78,12 @@ impl GroupKind for Rpr {
             crossing: std::f64::consts::FRAC_PI_2,
         })
     }
-    fn draw(&self, pen: &mut Pen<'_>, prog: &Program, b: &Built, [i, j]: [u32; 2]) {
+    fn draw(&self, pen: &mut Pen<'_>, prog: &dyn Compiled, b: &Built, [i, j]: [u32; 2]) {
         let th = b.angle[j as usize];
         let u = DVec2::from_angle(th);
         let (a, c) = (b.p[self.a], b.p[self.c]);
         let mu = pen.rec.scale().value();
-        let reach = link_reach(prog, j, mu).max((a - c).dot(u) + 6.0);
+        let reach = prog.link_reach(j, mu).max((a - c).dot(u) + 6.0);
         pen.link(j, c, c + u * reach);
         pen.slider(i, a, th);
         pen.anchors.extend([(i, a), (j, c + u * (reach * 0.8))]);
@@ -96,7 +98,7 @@ impl GroupKind for Rpr {
     /// RPR: the slide line through the pin `a` at `offset` from the pivot `c` (without
     /// offset at the pivot: the slot's limit), with its rates.
     #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
-    fn solve(&self, prog: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
+    fn solve(&self, prog: &dyn Compiled, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let Rpr { a, c, offset } = *self;
         let w = sub(st.jet(a), st.jet(c));
         if offset == 0.0 {
@@ -121,8 +123,8 @@ impl GroupKind for Rpr {
         if d < offset.abs() || d == 0.0 {
             return Err(st.fail(format!(
                 "{} is {d:.6} m from {}, less than the offset {} m of the slide line",
-                prog.names[a],
-                prog.names[c],
+                prog.names()[a],
+                prog.names()[c],
                 offset.abs()
             )));
         }
@@ -148,7 +150,8 @@ impl GroupKind for Rpr {
         if k <= 1e-28 {
             return Err(st.fail(format!(
                 "{} lies on the offset circle of {}: the slide line is not determined",
-                prog.names[a], prog.names[c]
+                prog.names()[a],
+                prog.names()[c]
             )));
         }
         // sin γ = u, cos γ = √k.

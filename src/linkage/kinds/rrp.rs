@@ -5,14 +5,16 @@
 use super::{guide_uses, GroupKind, Planned, Solved, Words};
 use crate::construct::{ConstructionError, Pick, Recorder};
 use crate::linkage::analytic::jet::{self, cross, sub, Jet, TANGENT_REL};
-use crate::linkage::analytic::State;
-use crate::linkage::construction::{heading, pick, Built, Frames};
-use crate::linkage::groups::GroupPairs;
+use crate::linkage::analytic::state::State;
+use crate::linkage::built::{heading, pick, Built, Frames};
+use crate::linkage::compiled::Compiled;
+use crate::linkage::indexed::PGuide;
 use crate::linkage::model::{Branch, DyadKind};
-use crate::linkage::plans::{plain, Builder, PlanKind};
-use crate::linkage::positions_draw::Pen;
-use crate::linkage::program::PGuide;
-use crate::linkage::program::Program;
+use crate::linkage::pairs::GroupPairs;
+use crate::linkage::pen::Pen;
+use crate::linkage::plans::builder::Builder;
+use crate::linkage::plans::names::plain;
+use crate::linkage::plans::plan::PlanKind;
 use crate::scale::format_plain;
 
 /// The kind's words.
@@ -62,7 +64,7 @@ impl GroupKind for Rrp {
     }
     fn construct(
         &self,
-        prog: &Program,
+        prog: &dyn Compiled,
         rec: &mut Recorder,
         pos: &mut Built,
         prev: Option<&Built>,
@@ -86,7 +88,7 @@ impl GroupKind for Rrp {
             crossing,
         })
     }
-    fn draw(&self, pen: &mut Pen<'_>, _: &Program, b: &Built, [i, j]: [u32; 2]) {
+    fn draw(&self, pen: &mut Pen<'_>, _: &dyn Compiled, b: &Built, [i, j]: [u32; 2]) {
         let (a, joint) = (b.p[self.a], b.p[self.joint]);
         pen.link(i, a, joint);
         pen.slider(j, joint, b.angle[j as usize]);
@@ -106,7 +108,7 @@ impl GroupKind for Rrp {
     /// RRP: the joint where the circle of radius `la` about `a` crosses the guide, its rates
     /// from x = g + t·e with |x − a|² = la².
     #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
-    fn solve(&self, prog: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
+    fn solve(&self, prog: &dyn Compiled, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let Rrp {
             a,
             la,
@@ -123,7 +125,7 @@ impl GroupKind for Rrp {
         if h.abs() > la * (1.0 + TANGENT_REL) {
             return Err(st.fail(format!(
                 "{} is {} m from the guide, more than the link length {} m",
-                prog.names[a],
+                prog.names()[a],
                 format_plain(h.abs()),
                 format_plain(la)
             )));

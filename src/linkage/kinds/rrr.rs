@@ -5,13 +5,13 @@ use super::{GroupKind, Planned, Solved, Words};
 use crate::construct::{ConstructionError, Pick, Recorder};
 use crate::geom::DVec2;
 use crate::linkage::analytic::jet::{self, cross, sub, Jet, TANGENT_REL};
-use crate::linkage::analytic::State;
-use crate::linkage::construction::{heading, pick, Built, Frames};
-use crate::linkage::groups::GroupPairs;
+use crate::linkage::analytic::state::State;
+use crate::linkage::built::{heading, pick, Built, Frames};
+use crate::linkage::compiled::Compiled;
 use crate::linkage::model::{Branch, DyadKind};
-use crate::linkage::plans::Builder;
-use crate::linkage::positions_draw::Pen;
-use crate::linkage::program::Program;
+use crate::linkage::pairs::GroupPairs;
+use crate::linkage::pen::Pen;
+use crate::linkage::plans::builder::Builder;
 use crate::scale::format_plain;
 
 /// The kind's words.
@@ -60,7 +60,7 @@ impl GroupKind for Rrr {
     }
     fn construct(
         &self,
-        prog: &Program,
+        prog: &dyn Compiled,
         rec: &mut Recorder,
         pos: &mut Built,
         prev: Option<&Built>,
@@ -85,7 +85,7 @@ impl GroupKind for Rrr {
             crossing,
         })
     }
-    fn draw(&self, pen: &mut Pen<'_>, _: &Program, b: &Built, [i, j]: [u32; 2]) {
+    fn draw(&self, pen: &mut Pen<'_>, _: &dyn Compiled, b: &Built, [i, j]: [u32; 2]) {
         let (a, c, joint) = (b.p[self.a], b.p[self.b], b.p[self.joint]);
         pen.link(i, a, joint);
         pen.link(j, c, joint);
@@ -112,7 +112,7 @@ impl GroupKind for Rrr {
     /// given points to the joint's rates (the form before took seven square roots and
     /// eight divisions).
     #[inline(always)] // the kernel's inner loop: see `PDyad::solve`
-    fn solve(&self, prog: &Program, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
+    fn solve(&self, prog: &dyn Compiled, st: &mut State<'_>, [i, j]: [usize; 2]) -> Solved {
         let Rrr {
             a,
             la,
@@ -131,8 +131,8 @@ impl GroupKind for Rrr {
         if d2 > far * far || (near > 0.0 && d2 < near * near) || d2 == 0.0 {
             return Err(st.fail(format!(
                 "|{}{}| = {} m is outside [|{} − {}|, {} + {}] m",
-                prog.names[a],
-                prog.names[b],
+                prog.names()[a],
+                prog.names()[b],
                 format_plain(d2.sqrt()),
                 format_plain(la),
                 format_plain(lb),
@@ -176,7 +176,7 @@ impl GroupKind for Rrr {
         } else {
             st.toggle(format!(
                 "links {i} and {j} are in line at {} (toggle position)",
-                prog.names[joint]
+                prog.names()[joint]
             ));
             (DVec2::ZERO, DVec2::ZERO)
         };

@@ -3,11 +3,12 @@
 //! vectors, the similarity theorem, the Coriolis component, readings.
 
 use super::names::{image_label, lower, plain};
-use super::{KinPlan, Measure, PlanKind, PlanReading};
+use super::plan::{KinPlan, Measure, PlanKind, PlanReading};
 use crate::construct::{ConstructionError, Item, Recorder, Role};
 use crate::geom::{DVec2, Line, Segment};
-use crate::linkage::construction::Built;
-use crate::linkage::program::{PDir, Program};
+use crate::linkage::built::Built;
+use crate::linkage::compiled::Compiled;
+use crate::linkage::indexed::PDir;
 
 /// The values one plan needs from the velocity plan (for the acceleration plan).
 pub(in crate::linkage) struct Known<'a> {
@@ -29,7 +30,7 @@ impl Links {
 
 /// Everything the builder carries.
 pub(in crate::linkage) struct Builder<'a> {
-    pub(in crate::linkage) prog: &'a Program,
+    pub(in crate::linkage) prog: &'a dyn Compiled,
     pub(in crate::linkage) b: &'a Built,
     pub(in crate::linkage) kind: PlanKind,
     pub(in crate::linkage) rec: Recorder,
@@ -54,14 +55,14 @@ impl<'a> Builder<'a> {
         (self.b.p[to] - self.b.p[from]) * self.mu_l
     }
     pub(in crate::linkage) fn name(&self, k: usize) -> &str {
-        &self.prog.names[k]
+        &self.prog.names()[k]
     }
     pub(in crate::linkage) fn image(&self, k: usize) -> DVec2 {
         self.img[k].unwrap_or(DVec2::ZERO)
     }
     /// Draw the vector from the pole to the image of point `k` and label it: a main line,
     /// or a thin one for a secondary point that no group is built on (a centre of mass,
-    /// [`Program::is_leaf_point`]), so that the vectors meeting at the pole stay apart.
+    /// [`Compiled::is_leaf_point`]), so that the vectors meeting at the pole stay apart.
     pub(in crate::linkage) fn set_image(
         &mut self,
         k: usize,
@@ -412,7 +413,7 @@ impl Builder<'_> {
             } else {
                 String::new()
             };
-            format!("{}{suffix}", plain(&self.prog.names[k]))
+            format!("{}{suffix}", plain(&self.prog.names()[k]))
         };
         let pq = format!("{}_{}", tag(p), tag(q));
         let value = self.read(q_img, p_img);

@@ -1,6 +1,6 @@
 //! Names and labels on the plans: plain quantity names, image letters.
 
-use super::PlanKind;
+use super::plan::PlanKind;
 
 /// Name of a point without markup (`S_3` → `S3`).
 pub fn plain(name: &str) -> String {

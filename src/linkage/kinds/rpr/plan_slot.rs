@@ -4,7 +4,9 @@
 
 use crate::construct::ConstructionError;
 use crate::geom::DVec2;
-use crate::linkage::plans::{plain, Builder, PlanKind};
+use crate::linkage::plans::builder::Builder;
+use crate::linkage::plans::names::plain;
+use crate::linkage::plans::plan::PlanKind;
 
 /// The slotted link's rate when the pin `a` passes through its pivot `c` (RPR without
 /// offset): ω (velocity plan) or ε (acceleration plan) of link `j` as the limit of the
@@ -53,7 +55,7 @@ pub(super) fn limit(
     }
     // Acceleration and jerk of a point of the frame or the crank (constant ω₁).
     let motion = |k: usize| -> Option<(DVec2, DVec2)> {
-        if k < bl.prog.fixed.len() {
+        if k < bl.prog.fixed_count() {
             Some((DVec2::ZERO, DVec2::ZERO))
         } else if bl.prog.on_frame_or_crank(k) {
             let v = if bl.kind == PlanKind::Velocity {
@@ -61,7 +63,7 @@ pub(super) fn limit(
             } else {
                 bl.vel_image(k) * bl.known.mu_v
             };
-            Some((-bl.r(bl.prog.centre, k) * (w1 * w1), -v * (w1 * w1)))
+            Some((-bl.r(bl.prog.centre(), k) * (w1 * w1), -v * (w1 * w1)))
         } else {
             None
         }

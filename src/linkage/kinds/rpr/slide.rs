@@ -4,15 +4,15 @@
 
 use crate::construct::{Compass, ConstructionError, Item, Pick, Recorder, Role};
 use crate::geom::{DVec2, Segment};
-use crate::linkage::construction::heading;
-use crate::linkage::program::Program;
+use crate::linkage::built::heading;
+use crate::linkage::compiled::Compiled;
 
 /// The slide line of an RPR group (pin `a`, pivot `c`, `offset` m), its direction: the
 /// tangent to the path of `a` when the pin stands on the pivot (`prev`: the previous
 /// position's slide), else the line through the two points, or with an offset the
 /// tangent from `a` to the offset circle of `c`, its foot T on the Thales circle on ca.
 pub(super) fn slide_line(
-    prog: &Program,
+    prog: &dyn Compiled,
     rec: &mut Recorder,
     s: &str,
     p: &[DVec2],
@@ -29,8 +29,8 @@ pub(super) fn slide_line(
     if offset == 0.0 {
         let line = rec.line_through(
             &format!("{s}: slide line"),
-            (&prog.names[c], p[c]),
-            (&prog.names[a], p[a]),
+            (&prog.names()[c], p[c]),
+            (&prog.names()[a], p[a]),
         )?;
         return Ok(line.angle());
     }
@@ -52,7 +52,7 @@ pub(super) fn slide_line(
         .line_through(
             &format!("{s}: slide line"),
             ("T", t),
-            (&prog.names[a], p[a]),
+            (&prog.names()[a], p[a]),
         )?
         .angle())
 }
@@ -63,11 +63,11 @@ pub(super) fn slide_line(
 /// A pin whose path misses the pivot, however closely, fixes the slot as the line through
 /// the two points (a true, ill-conditioned direction). Other pins: assumed (the tangent is
 /// then refused by [`slot_tangent`]).
-fn path_through_pivot(prog: &Program, a: usize, c: usize, p: &[DVec2]) -> bool {
-    if !prog.on_frame_or_crank(a) || c >= prog.fixed.len() {
+fn path_through_pivot(prog: &dyn Compiled, a: usize, c: usize, p: &[DVec2]) -> bool {
+    if !prog.on_frame_or_crank(a) || c >= prog.fixed_count() {
         return true;
     }
-    let o = p[prog.centre];
+    let o = p[prog.centre()];
     let (ra, rc) = (p[a].distance(o), p[c].distance(o));
     let rounding = 8.0 * f64::EPSILON * (p[a].length() + p[c].length() + o.length() + ra);
     (ra - rc).abs() <= rounding
@@ -79,29 +79,29 @@ fn path_through_pivot(prog: &Program, a: usize, c: usize, p: &[DVec2]) -> bool {
 /// one nearest to the previous position's slide `prev`). Refused for a pin whose path's
 /// tangent the drawing does not give (a point not on the crank, or a moving pivot).
 fn slot_tangent(
-    prog: &Program,
+    prog: &dyn Compiled,
     rec: &mut Recorder,
     s: &str,
     (a, c): (usize, usize),
     p: &[DVec2],
     prev: Option<f64>,
 ) -> Result<f64, ConstructionError> {
-    if !prog.on_frame_or_crank(a) || c >= prog.fixed.len() {
+    if !prog.on_frame_or_crank(a) || c >= prog.fixed_count() {
         return Err(ConstructionError::Other {
             step: format!("{s}: slide line"),
             message: format!(
                 "the pin {} stands on the pivot {} (|{}{}| = {:.3e} mm ≤ {:.3e} mm): the slide line is the tangent to the path of {}, which the drawing gives only for a point of the crank about a fixed pivot",
-                prog.names[a],
-                prog.names[c],
-                prog.names[c],
-                prog.names[a],
+                prog.names()[a],
+                prog.names()[c],
+                prog.names()[c],
+                prog.names()[a],
                 p[a].distance(p[c]),
                 rec.tolerances().coincident,
-                prog.names[a]
+                prog.names()[a]
             ),
         });
     }
-    let radius = p[a] - p[prog.centre];
+    let radius = p[a] - p[prog.centre()];
     let mut t = radius.perp().normalize_or(DVec2::X);
     if prev.is_some_and(|q| DVec2::from_angle(q).dot(t) < 0.0) {
         t = -t;
@@ -110,7 +110,8 @@ fn slot_tangent(
     rec.draw(
         format!(
             "{s}: slide line, tangent to the path of {} at {}",
-            prog.names[a], prog.names[c]
+            prog.names()[a],
+            prog.names()[c]
         ),
         Item::Segment(Segment::new(p[c] - t * reach, p[c] + t * reach)),
         Role::Construction,

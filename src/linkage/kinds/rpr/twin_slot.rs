@@ -24,8 +24,8 @@
 
 use crate::geom::DVec2;
 use crate::linkage::analytic::jet::{cross, AngleJet, Jet};
-use crate::linkage::program::Program;
-use crate::linkage::Pose;
+use crate::linkage::analytic::state::Pose;
+use crate::linkage::compiled::Compiled;
 
 /// How the slot line of an RPR group without offset is found.
 pub(super) enum Slot {
@@ -43,7 +43,7 @@ pub(super) enum Slot {
 }
 
 /// The third derivative of point `k` with respect to φ₁, when known.
-fn third_derivative(prog: &Program, pose: &Pose, k: usize) -> Option<DVec2> {
+fn third_derivative(prog: &dyn Compiled, pose: &Pose, k: usize) -> Option<DVec2> {
     prog.on_frame_or_crank(k).then(|| -pose.dp[k])
 }
 
@@ -52,7 +52,7 @@ fn third_derivative(prog: &Program, pose: &Pose, k: usize) -> Option<DVec2> {
 /// inner loop, as the rest of it (see `PDyad::solve`).
 #[inline(always)]
 pub(super) fn limit(
-    prog: &Program,
+    prog: &dyn Compiled,
     pose: &Pose,
     (a, c): (usize, usize),
     w: Jet,
@@ -67,7 +67,7 @@ pub(super) fn limit(
     if hp.powi(4) > 2.0 * delta * v * v2 {
         return Slot::Direct;
     }
-    let (na, nc) = (&prog.names[a], &prog.names[c]);
+    let (na, nc) = (&prog.names()[a], &prog.names()[c]);
     let phi = pose.phi.to_degrees();
     if v == 0.0 {
         let e = if hp > 0.0 { Some(w.p / hp) } else { prev };
