@@ -396,7 +396,7 @@ const FLAT_R_MIN_MM: f64 = 20.0;
 pub const RHO_MIN_NOTE: &str = "dimension ρ_min";
 
 /// The symbol of the flat face's given margin over convexity, the least radius of curvature
-/// the profile is admitted (r₀ ≥ max(−(S + S″)) + [ρ]): the admissible value's brackets
+/// the profile is admitted (r₀ ≥ max(−(S + S″)) + \[ρ\]): the admissible value's brackets
 /// keep it apart from the profile's own ρ_min, which the tables compare.
 pub const RHO_ADMITTED: &str = "[ρ]";
 

@@ -226,7 +226,7 @@ fn value_of(b: &Blocking, p: &GearPair, kind: Kind, limit: f64) -> Option<f64> {
     })
 }
 
-/// The index of `kind` at `x` by the twins off `limit` (see [`twin_check`]); `None` when a
+/// The index of `kind` at `x` by the twins off `limit` (see [`super::twin_check`]); `None` when a
 /// twin has no value there.
 pub fn twin_deviation(b: &Blocking, module: f64, kind: Kind, limit: f64, x: DVec2) -> Option<f64> {
     let v = twin_value(b, module, kind, limit, x)?;
