@@ -15,8 +15,12 @@ use crate::study::Session;
 use crate::words::{plain, unit_in, Text};
 use std::f64::consts::PI;
 
-/// The room of the structural scheme, mm.
-const SCHEME_ROOM: DVec2 = DVec2::new(268.0, 274.0);
+/// The room of the structural scheme, mm: wide enough for a long mechanism's scheme with its
+/// decomposition beside it at a scale its crank reads at (the six-bar, whose slider runs 1 m
+/// from its crank: 285 mm at μ_l = 0,01 m/mm; in 268 mm it took 0,02, the crank 5 mm long and
+/// its link numbers strayed from their links). Where the plan of positions does not fit
+/// beside it, the sheet lays the plan under it.
+const SCHEME_ROOM: DVec2 = DVec2::new(290.0, 274.0);
 /// Preferred size of the structural scheme, mm.
 const SCHEME_MM: f64 = 170.0;
 
