@@ -19,7 +19,8 @@ pub struct PlanRequest {
     pub count: u32,
     /// Crank angle of position 1 (radians); `None`: the start of the working stroke.
     pub start: Option<f64>,
-    /// Add the extreme positions that fall between the numbered ones (labelled `k′`).
+    /// Add the extreme positions that fall between the numbered ones (labelled `k′`), and
+    /// the crank angle where the output stands in one of them again (the six-bar's `4′`).
     pub other_extreme: bool,
     /// Choose each assembly by continuity with the previous position instead of by the
     /// scene's side.
@@ -89,7 +90,10 @@ fn sequence(
         })
         .collect();
     if let (true, Some(ex)) = (req.other_extreme, ex) {
-        for phi in [ex.phi_start, ex.phi_other] {
+        // The output's extreme positions, and where it stands in one again (the six-bar's
+        // slider at 6′ once more at φ₁ = 229°): a position the plan draws as well.
+        let again = ex.reached_again().map(|(stop, _)| stop);
+        for phi in [ex.phi_start, ex.phi_other].into_iter().chain(again) {
             let travel = sense.travel(start, phi);
             let k = ((travel / step).floor() as usize).min(req.count as usize - 1);
             let off = travel - step * k as f64;

@@ -23,7 +23,8 @@ pub struct PositionSpec {
     pub count: u32,
     /// Where position 1 is.
     pub start: Start,
-    /// Add the other extreme position (labelled with a prime, e.g. `8′`).
+    /// Add the other extreme position (labelled with a prime, e.g. `8′`), and the position
+    /// where the output reaches an extreme position again, if it does (the six-bar's `4′`).
     pub other_extreme: bool,
     /// Take each two-solution dyad's point nearest to the previous position (`assembly =
     /// "continuity"`) instead of on the scene's side at every position (`"side"`, the

@@ -160,8 +160,9 @@ fn the_six_bar_chart_breaks_at_its_change_point() {
 /// The six-bar's slider E stands four times a turn (issue 45): at 10′ and 6′, its extreme
 /// positions, at the change point 6 (a kink of S, no stop), and at φ₁ = 229,06°, where D, C
 /// and E line up and E reaches the same end as at 6′ (x_E = −OD − DC − CE = −1050 mm), comes
-/// back 49 mm and reaches it again. The sheet names that stop with the
-/// extreme positions; the slider-crank, which stands twice, names none.
+/// back 49 mm and reaches it again. The plan draws that stop as a position of its own, 4′
+/// (between 4 and 5), with its velocity plan, where v_E = 0; the sheet names it with the
+/// extreme positions. The slider-crank, which stands twice, names none.
 #[test]
 fn a_slider_that_reaches_its_end_twice_a_turn_says_where() {
     let stops = |scene: &str| {
@@ -176,22 +177,41 @@ fn a_slider_that_reaches_its_end_twice_a_turn_says_where() {
     };
     assert_eq!(
         stops("six-bar"),
-        ["v_{E} = 0 также при φ_1 = 229,06° (крайнее положение, как 6′)"]
+        ["v_{E} = 0 также при 4′, φ_1 = 229,06° (крайнее положение, как 6′)"]
     );
     assert!(stops("slider-crank").is_empty());
+    with_kinematics("six-bar", |_, _, study| {
+        let labels: Vec<&str> = study
+            .plan
+            .positions
+            .iter()
+            .map(|p| p.label.as_str())
+            .collect();
+        let k = labels.iter().position(|l| *l == "4′").expect("4′");
+        assert_eq!(labels[k - 1..=k + 1], ["4", "4′", "5"]);
+        let phi = study.plan.positions[k].phi.to_degrees();
+        assert!((phi - 229.06).abs() < 0.005, "{phi}");
+        let plan = study.velocity_plans()[k].expect("the velocity plan of 4′");
+        let v_e = plan
+            .readings
+            .iter()
+            .find(|r| r.quantity == "v_E")
+            .expect("v_E");
+        assert!(v_e.value.abs() < 1e-9, "{}", v_e.value);
+    });
 }
 
 /// The S chart is drawn through the extreme positions the plan draws between the numbered
 /// ones, as the draughtsman plots them (issue 45): the six-bar's S reaches its stroke
 /// H = 205,7 mm at 6′, between positions 6 and 7, where the curve through the numbered
 /// positions alone stopped 1,7 mm lower on the sheet (7 mm of S), and touches 0 at 10′; both
-/// are numbered on the φ axis. The shaper's 8′, 2,7 mm past position 8, is plotted but not
+/// are numbered on the φ axis, as is 4′, where the slider reaches 6′'s end again. The shaper's 8′, 2,7 mm past position 8, is plotted but not
 /// numbered there.
 #[test]
 fn the_s_chart_is_drawn_through_the_extreme_positions() {
     use tmm::construct::{Item, Role};
     for (scene, crest_between, marks) in [
-        ("six-bar", (5.0, 6.0), &["6′", "10′"][..]),
+        ("six-bar", (5.0, 6.0), &["4′", "6′", "10′"][..]),
         ("shaper", (7.0, 8.0), &[][..]),
     ] {
         with_kinematics(scene, |_, _, study| {
