@@ -79,14 +79,12 @@ fn sequence(
     ex: Option<&Extremes>,
 ) -> Vec<(String, f64, bool)> {
     let step = TAU / req.count as f64;
-    let mut seq: Vec<(String, f64, bool, f64)> = (0..req.count as usize)
+    // (the numbered position it follows, φ, extreme?, crank travel from position 1, a
+    // further position?)
+    let mut seq: Vec<(usize, f64, bool, f64, bool)> = (0..req.count as usize)
         .map(|k| {
-            (
-                (k + 1).to_string(),
-                phi_of(start, sense, k, req.count),
-                false,
-                step * k as f64,
-            )
+            let phi = phi_of(start, sense, k, req.count);
+            (k + 1, phi, false, step * k as f64, false)
         })
         .collect();
     if let (true, Some(ex)) = (req.other_extreme, ex) {
@@ -107,11 +105,33 @@ fn sequence(
                 seq[at].2 = true;
                 continue;
             }
-            seq.push((format!("{}′", k + 1), phi, true, travel));
+            seq.push((k + 1, phi, true, travel, true));
         }
     }
     seq.sort_by(|a, b| a.3.total_cmp(&b.3));
-    seq.into_iter().map(|(l, p, e, _)| (l, p, e)).collect()
+    // A further position is named after the numbered one before it, primed once more for each
+    // further one between the same two (`k′`, `k″`, `k‴`), in crank order.
+    let mut out: Vec<(String, f64, bool)> = Vec::with_capacity(seq.len());
+    for (k, phi, extreme, _, further) in seq {
+        let label = if further {
+            primed(k, |l| out.iter().any(|o| o.0 == l))
+        } else {
+            k.to_string()
+        };
+        out.push((label, phi, extreme));
+    }
+    out
+}
+
+/// The label of a further position after the numbered position `k`: `k′`, or `k″`, `k‴`
+/// where a label before it (`taken`) holds it. The plan adds three further positions at
+/// most, so the third is always free.
+fn primed(k: usize, taken: impl Fn(&str) -> bool) -> String {
+    ["′", "″"]
+        .iter()
+        .map(|m| format!("{k}{m}"))
+        .find(|l| !taken(l))
+        .unwrap_or_else(|| format!("{k}‴"))
 }
 
 /// The positions a plan of positions will construct, solved analytically: what a sheet

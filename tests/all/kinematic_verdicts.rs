@@ -201,6 +201,42 @@ fn a_slider_that_reaches_its_end_twice_a_turn_says_where() {
     });
 }
 
+/// Further positions between the same two numbered ones are primed once more each, in crank
+/// order: the six-bar with one numbered position (at 330°, the crank turning clockwise) has
+/// its second arrival at the slider's end (229,06°) and both extreme positions (160,87°,
+/// 48,19°) after position 1 — 1′, 1″, 1‴, not three positions named 1′.
+#[test]
+fn further_positions_between_the_same_two_are_primed_apart() {
+    let s = tmm::scene::load(&root().join("constructions/six-bar.toml")).expect("six-bar");
+    let m = s.mechanism.as_ref().expect("the mechanism");
+    let request = tmm::linkage::PlanRequest {
+        count: 1,
+        start: Some(330f64.to_radians()),
+        other_extreme: true,
+        continuity: false,
+    };
+    let poses = tmm::linkage::plan_poses(m, &request).expect("poses");
+    let got: Vec<(String, f64)> = poses
+        .positions
+        .iter()
+        .map(|p| {
+            (
+                p.label.clone(),
+                (p.phi.to_degrees() * 100.0).round() / 100.0,
+            )
+        })
+        .collect();
+    assert_eq!(
+        got,
+        [
+            ("1".to_string(), 330.0),
+            ("1′".to_string(), 229.06),
+            ("1″".to_string(), 160.87),
+            ("1‴".to_string(), 48.19)
+        ]
+    );
+}
+
 /// The S chart is drawn through the extreme positions the plan draws between the numbered
 /// ones, as the draughtsman plots them (issue 45): the six-bar's S reaches its stroke
 /// H = 205,7 mm at 6′, between positions 6 and 7, where the curve through the numbered
