@@ -4,8 +4,7 @@
 
 use super::indexed::PDir;
 use super::pairs::GroupPairs;
-use super::program::Op;
-use super::program::Program;
+use super::program::{Op, Program};
 use crate::geom::DVec2;
 
 /// One group of a program, in attachment order.
