@@ -1,6 +1,8 @@
 //! The φ axis of a cam diagram marked as the textbook marks it (issue 45): a tick across it
 //! at every phase boundary, the number of every division point at its foot — under the axis
-//! where the diagram stands above it there, over it where the diagram runs below — and, over
+//! where the diagram stands above it there, over it where the diagram runs below; where a
+//! steep curve crosses the axis at a point and would strike its number wherever it stands,
+//! the crossing itself marks the point — and, over
 //! the displacement diagram, the phases dimensioned between extension lines from the
 //! curve's points at their boundaries. The phases' dimensions are labelled with the Russian
 //! textbooks' symbols; the sheet writes each in its language with its angle
@@ -8,8 +10,8 @@
 
 use crate::cam::motion::Point;
 use crate::cam::CamSpec;
-use crate::construct::{Item, Recorder, Role};
-use crate::geom::{DVec2, Segment};
+use crate::construct::{Item, Recorder, Role, Step};
+use crate::geom::{DVec2, Rect, Segment};
 use crate::scale::Scale;
 
 /// The notes of the four phases' dimensions on the displacement diagram: rise, far dwell,
@@ -58,6 +60,11 @@ const NUMBER_COLUMN_MM: f64 = 1.0;
 const NUMBER_SIDE_MM: f64 = 3.0;
 /// See [`NUMBER_COLUMN_MM`], mm.
 const NUMBER_CLEAR_MM: f64 = 1.0;
+/// A number beside a crossing of its axis stands at least this clear of the curve there, mm:
+/// nearer, the curve strikes it.
+const CROSSING_CLEAR_MM: f64 = 0.2;
+/// The places of a number in its column tried for [`CROSSING_CLEAR_MM`], this far apart, mm.
+const COLUMN_STEP_MM: f64 = 0.1;
 /// The phases' dimension line lies this far over the displacement diagram's top, mm: under
 /// the tip of its ordinate axis (12 mm over it), which is the first phase's extension line,
 /// and under the axis's name.
@@ -123,17 +130,9 @@ pub(super) fn mark(
             phi.to_mm(p.phi),
             side * (NUMBER_DROP_MM + ROW_MM * row as f64),
         );
-        let id = rec.draw(
-            format!("number of point {} on the φ axis", p.label),
-            Item::Text(at),
-            Role::Dimension,
-            &[],
-        );
-        // Centred at its place (the first the placer tries), kept there; where the curve
-        // crosses the axis at the point, first tried in the quadrant it leaves clear.
+        // Where the curve crosses the axis at the point, the number is first tried in the
+        // quadrant it leaves clear.
         let clear = crossing_side(values, i, side);
-        rec.label(id, p.label.clone(), at, DVec2::new(clear, 0.0));
-        rec.keep_label_within(id, NUMBER_REACH_MM);
         // Each side as far as keeps it nearer its point than the neighbour's on that side (at
         // a crossing half as clear of the middle: the curve through its tick names its point).
         let side_room = |next: Option<&f64>| {
@@ -142,8 +141,33 @@ pub(super) fn mark(
             })
             .clamp(NUMBER_COLUMN_MM, NUMBER_SIDE_MM)
         };
-        let left = side_room(n.checked_sub(1).and_then(|k| xs.get(k)));
-        rec.keep_label_in_column(id, [left, side_room(xs.get(n + 1))]);
+        let column = [
+            side_room(n.checked_sub(1).and_then(|k| xs.get(k))),
+            side_room(xs.get(n + 1)),
+        ];
+        let width = DIGIT_MM * p.label.chars().count() as f64;
+        // At a crossing, where the curve leaves it room.
+        let column = if clear == 0.0 {
+            Some(column)
+        } else {
+            clear_column(rec.steps(), at, width, column)
+        };
+        let Some(column) = column else {
+            // A steep curve would strike the number wherever its column lets it stand, and
+            // beside it the number reads as the next point's: the point is marked by the
+            // curve's crossing itself, as an every-k-th numbering leaves points unnumbered.
+            continue;
+        };
+        let id = rec.draw(
+            format!("number of point {} on the φ axis", p.label),
+            Item::Text(at),
+            Role::Dimension,
+            &[],
+        );
+        // Centred at its place (the first the placer tries), kept there.
+        rec.label(id, p.label.clone(), at, DVec2::new(clear, 0.0));
+        rec.keep_label_within(id, NUMBER_REACH_MM);
+        rec.keep_label_in_column(id, column);
     }
     if phases {
         dimension_phases(rec, spec, points, phi, values);
@@ -166,6 +190,45 @@ fn crossing_side(values: &[f64], i: usize, side: f64) -> f64 {
         }
         _ => 0.0,
     }
+}
+
+/// The places in its column where a main line of `steps` (the diagram's curve, given or
+/// constructed) passes clear of the box of a number `width` mm wide written at `at`, grown
+/// by [`CROSSING_CLEAR_MM`]: the run of its middle's offsets from `at` (figure mm, in
+/// [`COLUMN_STEP_MM`]) nearest `at` within `column` (mm left and right), as the column's
+/// bounds; `None` where the curve strikes it everywhere.
+fn clear_column(steps: &[Step], at: DVec2, width: f64, column: [f64; 2]) -> Option<[f64; 2]> {
+    let half = DVec2::new(0.5 * width, HALF_BOX_MM) + CROSSING_CLEAR_MM;
+    let lines: Vec<&[DVec2]> = steps
+        .iter()
+        .filter(|s| matches!(s.role, Role::Given | Role::Result))
+        .filter_map(|s| match &s.item {
+            Item::Polyline { points, .. } => Some(&points[..]),
+            _ => None,
+        })
+        .collect();
+    let clear = |x: f64| {
+        let mid = at + DVec2::new(x, 0.0);
+        let then = Rect::new(mid - half, mid + half);
+        let hits = |w: &[DVec2]| then.segment_inside(w[0], w[1]).is_some();
+        !lines.iter().any(|l| l.windows(2).any(hits))
+    };
+    let places = ((column[0] + column[1]) / COLUMN_STEP_MM).ceil() as usize;
+    let xs: Vec<f64> = (0..=places)
+        .map(|k| (-column[0] + k as f64 * COLUMN_STEP_MM).min(column[1]))
+        .collect();
+    let nearest = (xs.iter().copied())
+        .filter(|x| clear(*x))
+        .min_by(|a, b| a.abs().total_cmp(&b.abs()))?;
+    let lo = (xs.iter().rev())
+        .filter(|x| **x <= nearest)
+        .take_while(|x| clear(**x))
+        .last();
+    let hi = (xs.iter())
+        .filter(|x| **x >= nearest)
+        .take_while(|x| clear(**x))
+        .last();
+    Some([-lo.unwrap_or(&nearest), *hi.unwrap_or(&nearest)])
 }
 
 /// The phases dimensioned over the displacement diagram: an extension line up from the

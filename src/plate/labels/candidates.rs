@@ -87,14 +87,16 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
         }
     }
     // A label kept in its point's column keeps the places whose middle stands that near left
-    // and right, or, with none, its place at the point itself.
+    // and right, or, with none, its place at the point itself or, where the column leaves
+    // the point (a number beside the curve through its point), the column's nearest.
     if let Some([left, right]) = r.column {
         out.retain(|c| {
             let across = (c.min.x + c.max.x) * 0.5 - r.anchor.x;
             -left - 1e-9 <= across && across <= right + 1e-9
         });
         if out.is_empty() {
-            out.push(Rect::new(r.anchor - half, r.anchor + half));
+            let at = r.anchor + DVec2::new(0.0f64.max(-left).min(right), 0.0);
+            out.push(Rect::new(at - half, at + half));
         }
     }
     out
