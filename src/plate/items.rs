@@ -187,9 +187,14 @@ pub(crate) fn item_outlines(item: &Item, (role, labelled): (Role, bool), map: Ma
             chain(&arc_points(&full), true, &mut lines)
         }
         Item::Arc(a) => chain(&arc_points(a), false, &mut lines),
-        Item::Polyline { points, closed } | Item::Curve { points, closed } => {
-            chain(points, *closed, &mut lines)
+        Item::Polyline { points, closed } => chain(points, *closed, &mut lines),
+        // As drawn (`smooth`): a curve bulges off its chords between sparse points (the
+        // hodograph's twelve ends), where a label beside a chord would stand on the curve.
+        Item::Curve { points, closed } if points.len() >= 3 => {
+            let drawn = crate::geom::curve::points(points, *closed, BEZIER_CHORDS);
+            chain(&drawn, false, &mut lines)
         }
+        Item::Curve { points, closed } => chain(points, *closed, &mut lines),
         Item::Bezier {
             start,
             pieces,
@@ -556,6 +561,26 @@ mod tests {
         };
         assert_eq!(heads(Item::Moment(arc)), 1);
         assert_eq!(heads(Item::Angle(arc)), 2);
+    }
+
+    /// A smooth curve through sparse points is read by the labels' placer as drawn, not as
+    /// its chords (issue 45: the six-bar's hodograph bulged off the chord at its end 8, and
+    /// the «8» placed clear of the chord stood on the curve).
+    #[test]
+    fn a_curve_is_read_as_drawn() {
+        let points = vec![DVec2::ZERO, DVec2::new(10.0, 10.0), DVec2::new(20.0, 0.0)];
+        let drawn = crate::geom::curve::points(&points, false, BEZIER_CHORDS);
+        let curve = Item::Curve {
+            points,
+            closed: false,
+        };
+        let read = item_outlines(&curve, (Role::Result, false), Map::SHEET);
+        assert_eq!(read.len(), drawn.len() - 1);
+        for (o, w) in read.iter().zip(drawn.windows(2)) {
+            assert_eq!(o.shape, Shape::Line(w[0], w[1]));
+        }
+        let chord = crate::geom::Segment::new(DVec2::ZERO, DVec2::new(10.0, 10.0));
+        assert!(drawn.iter().any(|p| chord.distance_to(*p) > 0.1));
     }
 
     #[test]

@@ -82,10 +82,20 @@ fn strokes(from: DVec2, to: DVec2, offset: f64) -> Vec<(DVec2, DVec2)> {
     out
 }
 
-/// The lines a step draws, figure mm (a dimension: its strokes).
+/// The lines a step draws, figure mm (a dimension: its strokes; a smooth curve: the chords
+/// of the points it passes through, where a dimension ending on the curve was computed to
+/// end — the French curve's swing beside a point, under a tenth of a millimetre, is no
+/// crossing a reader sees).
 fn drawn(step: &Step) -> Vec<(DVec2, DVec2)> {
-    match step.item {
-        Item::Dimension { from, to, offset } => strokes(from, to, offset),
+    match &step.item {
+        Item::Dimension { from, to, offset } => strokes(*from, *to, *offset),
+        Item::Curve { points, closed } => {
+            let mut out: Vec<_> = points.windows(2).map(|w| (w[0], w[1])).collect();
+            if *closed && points.len() > 2 {
+                out.push((points[points.len() - 1], points[0]));
+            }
+            out
+        }
         _ => lines(step),
     }
 }

@@ -127,9 +127,13 @@ fn arc_points(a: &Arc) -> Vec<DVec2> {
     (0..=n).map(|i| a.eval(i as f64 / n as f64)).collect()
 }
 
+/// Chords of each piece of a smooth curve as the model reads it.
+const CURVE_CHORDS: usize = 8;
+
 /// The lines a step draws, figure mm, as pieces: its links, vectors, guides' lines,
-/// circles, arcs, polylines and curves (through their points), and a dimension's line. A
-/// vector drawn as a point, a point, a pair, a block and a text draw none.
+/// circles, arcs, polylines and curves (through their points, smooth as drawn), and a
+/// dimension's line. A vector drawn as a point, a point, a pair, a block and a text draw
+/// none.
 pub fn lines(step: &Step) -> Vec<(DVec2, DVec2)> {
     let chain = |pts: &[DVec2], closed: bool| {
         let mut v: Vec<(DVec2, DVec2)> = pts.windows(2).map(|w| (w[0], w[1])).collect();
@@ -151,9 +155,13 @@ pub fn lines(step: &Step) -> Vec<(DVec2, DVec2)> {
             false,
         ),
         Item::Arc(a) | Item::Angle(a) | Item::Moment(a) => chain(&arc_points(a), false),
-        Item::Polyline { points, closed } | Item::Curve { points, closed } => {
-            chain(points, *closed)
-        }
+        Item::Polyline { points, closed } => chain(points, *closed),
+        // As drawn: smooth through its points, not their chords.
+        Item::Curve { points, closed } if points.len() >= 3 => chain(
+            &tmm::geom::curve::points(points, *closed, CURVE_CHORDS),
+            false,
+        ),
+        Item::Curve { points, closed } => chain(points, *closed),
         Item::Dimension { from, to, offset } => {
             let n = (*to - *from).normalize_or_zero().perp() * *offset;
             vec![(*from + n, *to + n)]
