@@ -329,7 +329,7 @@ fn wrapped_in_cell(
     out: &mut Vec<Placed>,
 ) {
     let width = x1 - x0 - 3.0;
-    let one_line = super::text::approx_width(text, height);
+    let one_line = super::text::fitting_width(text, height);
     let split = text
         .char_indices()
         .filter(|&(i, c)| c == ' ' && !hangs(&text[..i]))
@@ -341,7 +341,7 @@ fn wrapped_in_cell(
             let h = (y1 - y0) / 4.0;
             let line_h = height.min((y1 - y0) / 2.6);
             // Both lines narrowed alike, as the longer needs: one size, one condensing.
-            let natural = |line: &str| super::text::approx_width(line, line_h);
+            let natural = |line: &str| super::text::fitting_width(line, line_h);
             let ratio = (width / natural(a).max(natural(b))).min(1.0);
             for (line, (top, bottom)) in [(a, (y0, y0 + 2.0 * h)), (b, (y0 + 2.0 * h, y1))] {
                 let (at, _) = cell_anchor((x0, top, x1, bottom), align);
