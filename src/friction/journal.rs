@@ -71,7 +71,7 @@ pub(super) fn solve(
             None,
         ),
         reading(
-            "M_{f}",
+            "M_{тр}",
             (Symbol::Moment, subject("f", &case.name)),
             c.load * arm,
             twin.moment,

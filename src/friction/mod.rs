@@ -376,7 +376,7 @@ pub struct Drawing {
 /// A value read off a case's drawings with its textbook symbol.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CaseReading {
-    /// The symbol in label markup (`P`, `R`, `η`, `φ′`, `ρ`, `M_{f}`).
+    /// The symbol in label markup (`P`, `R`, `η`, `φ′`, `ρ`, `M_{тр}`).
     pub symbol: &'static str,
     /// The row.
     pub row: Row,

@@ -290,13 +290,13 @@ fn journal(w: &mut Writer<'_, '_>, c: &Journal, angles: &mut Vec<f64>) {
     w.explain(&[("ρ", a, "mm"), ("r", b, "mm")]);
     worked(
         w,
-        &sym("M_{f}"),
+        &sym("M_{тр}"),
         "Q ρ",
         &format!("{} dot {}", n(w, c.load), n(w, t.rho)),
         format!("{}{}", n(w, t.moment), unit(&unit_in("N*m", lang))),
     );
     let (a, b) = (w.word(M::FrictionMoment), w.word(M::Load));
-    w.explain(&[("M_{f}", a, "N*m"), ("Q", b, "N")]);
+    w.explain(&[("M_{тр}", a, "N*m"), ("Q", b, "N")]);
 }
 
 /// The load on rollers (W3): the plane's reaction, the rolling force, whether the rolling
