@@ -162,8 +162,8 @@ pub fn approx_width(markup: &str, height_mm: f64) -> f64 {
 }
 
 /// The width the markup needs at `height_mm` to stand inside a width, mm: [`approx_width`]
-/// grown as its ink runs past its advance (an oblique line leans past its last advance, and
-/// narrowed it narrows alike; issue 45: «движения» touched its title-block cell's border).
+/// grown as its ink runs past its advance (an oblique line's last letter leans past it, and
+/// a text narrowed to a length narrows its ink alike).
 pub fn fitting_width(markup: &str, height_mm: f64) -> f64 {
     let e = measure(markup, height_mm);
     let lean = (e.max.x - e.min.x) / e.advance;
