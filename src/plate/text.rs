@@ -166,8 +166,9 @@ pub fn approx_width(markup: &str, height_mm: f64) -> f64 {
 /// a text narrowed to a length narrows its ink alike).
 pub fn fitting_width(markup: &str, height_mm: f64) -> f64 {
     let e = measure(markup, height_mm);
-    let lean = (e.max.x - e.min.x) / e.advance;
-    approx_width(markup, height_mm) * if lean > 1.0 { lean } else { 1.0 }
+    // An empty text's 0/0 is no lean: `max` passes over a NaN.
+    let lean = ((e.max.x - e.min.x) / e.advance).max(1.0);
+    approx_width(markup, height_mm) * lean
 }
 
 /// The character classes' estimate of the markup's width at `height_mm`, mm.

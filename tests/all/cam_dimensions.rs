@@ -16,7 +16,7 @@
 //!
 //! Each rule also runs on a plate built to break it, and must fail there.
 
-use crate::plate_model::{lines, on_sheet};
+use crate::plate_model::{chords, lines, on_sheet};
 use glam::DVec2;
 use tmm::cam::{RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE};
 use tmm::construct::{Drafting, Figure, Item, Role, Step};
@@ -89,13 +89,7 @@ fn strokes(from: DVec2, to: DVec2, offset: f64) -> Vec<(DVec2, DVec2)> {
 fn drawn(step: &Step) -> Vec<(DVec2, DVec2)> {
     match &step.item {
         Item::Dimension { from, to, offset } => strokes(*from, *to, *offset),
-        Item::Curve { points, closed } => {
-            let mut out: Vec<_> = points.windows(2).map(|w| (w[0], w[1])).collect();
-            if *closed && points.len() > 2 {
-                out.push((points[points.len() - 1], points[0]));
-            }
-            out
-        }
+        Item::Curve { points, closed } => chords(points, *closed),
         _ => lines(step),
     }
 }

@@ -241,8 +241,8 @@ fn further_positions_between_the_same_two_are_primed_apart() {
 /// ones, as the draughtsman plots them (issue 45): the six-bar's S reaches its stroke
 /// H = 205,7 mm at 6′, between positions 6 and 7, where the curve through the numbered
 /// positions alone stopped 1,7 mm lower on the sheet (7 mm of S), and touches 0 at 10′; both
-/// are numbered on the φ axis, as is 4′, where the slider reaches 6′'s end again. The shaper's 8′, 2,7 mm past position 8, is plotted but not
-/// numbered there.
+/// are numbered on the φ axis, as is 4′, where the slider reaches 6′'s end again. The
+/// shaper's 8′, 2,7 mm past position 8, is plotted but not numbered there.
 #[test]
 fn the_s_chart_is_drawn_through_the_extreme_positions() {
     use tmm::construct::{Item, Role};

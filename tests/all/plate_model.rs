@@ -127,6 +127,15 @@ fn arc_points(a: &Arc) -> Vec<DVec2> {
     (0..=n).map(|i| a.eval(i as f64 / n as f64)).collect()
 }
 
+/// The chords between successive `pts`, and back to the first when `closed`.
+pub fn chords(pts: &[DVec2], closed: bool) -> Vec<(DVec2, DVec2)> {
+    let mut v: Vec<(DVec2, DVec2)> = pts.windows(2).map(|w| (w[0], w[1])).collect();
+    if closed && pts.len() > 2 {
+        v.push((pts[pts.len() - 1], pts[0]));
+    }
+    v
+}
+
 /// Chords of each piece of a smooth curve as the model reads it.
 const CURVE_CHORDS: usize = 8;
 
@@ -135,17 +144,10 @@ const CURVE_CHORDS: usize = 8;
 /// dimension's line. A vector drawn as a point, a point, a pair, a block and a text draw
 /// none.
 pub fn lines(step: &Step) -> Vec<(DVec2, DVec2)> {
-    let chain = |pts: &[DVec2], closed: bool| {
-        let mut v: Vec<(DVec2, DVec2)> = pts.windows(2).map(|w| (w[0], w[1])).collect();
-        if closed && pts.len() > 2 {
-            v.push((pts[pts.len() - 1], pts[0]));
-        }
-        v
-    };
     match &step.item {
         Item::Segment(s) | Item::Guide { segment: s, .. } => vec![(s.from, s.to)],
         Item::Vector { from, to } if !short(step) => vec![(*from, *to)],
-        Item::Circle(c) => chain(
+        Item::Circle(c) => chords(
             &arc_points(&Arc {
                 center: c.center,
                 radius: c.radius,
@@ -154,14 +156,14 @@ pub fn lines(step: &Step) -> Vec<(DVec2, DVec2)> {
             }),
             false,
         ),
-        Item::Arc(a) | Item::Angle(a) | Item::Moment(a) => chain(&arc_points(a), false),
-        Item::Polyline { points, closed } => chain(points, *closed),
+        Item::Arc(a) | Item::Angle(a) | Item::Moment(a) => chords(&arc_points(a), false),
+        Item::Polyline { points, closed } => chords(points, *closed),
         // As drawn: smooth through its points, not their chords.
-        Item::Curve { points, closed } if points.len() >= 3 => chain(
+        Item::Curve { points, closed } if points.len() >= 3 => chords(
             &tmm::geom::curve::points(points, *closed, CURVE_CHORDS),
             false,
         ),
-        Item::Curve { points, closed } => chain(points, *closed),
+        Item::Curve { points, closed } => chords(points, *closed),
         Item::Dimension { from, to, offset } => {
             let n = (*to - *from).normalize_or_zero().perp() * *offset;
             vec![(*from + n, *to + n)]

@@ -175,11 +175,7 @@ fn the_analytic_tables_angles_share_one_precision() {
 #[test]
 fn every_scheme_draws_its_crank_long_enough_to_read() {
     let mut seen = Vec::new();
-    for entry in std::fs::read_dir(root().join("constructions")).expect("constructions") {
-        let path = entry.expect("entry").path();
-        if path.extension().is_none_or(|e| e != "toml") {
-            continue;
-        }
+    for path in crate::support::scene_paths() {
         let name = path
             .file_stem()
             .expect("stem")

@@ -213,22 +213,25 @@ fn clear_column(steps: &[Step], at: DVec2, width: f64, column: [f64; 2]) -> Opti
         let hits = |w: &[DVec2]| then.segment_inside(w[0], w[1]).is_some();
         !lines.iter().any(|l| l.windows(2).any(hits))
     };
-    let places = ((column[0] + column[1]) / COLUMN_STEP_MM).ceil() as usize;
-    let xs: Vec<f64> = (0..=places)
+    let count = ((column[0] + column[1]) / COLUMN_STEP_MM).ceil() as usize;
+    let places: Vec<(f64, bool)> = (0..=count)
         .map(|k| (-column[0] + k as f64 * COLUMN_STEP_MM).min(column[1]))
+        .map(|x| (x, clear(x)))
         .collect();
-    let nearest = (xs.iter().copied())
-        .filter(|x| clear(*x))
-        .min_by(|a, b| a.abs().total_cmp(&b.abs()))?;
-    let lo = (xs.iter().rev())
-        .filter(|x| **x <= nearest)
-        .take_while(|x| clear(**x))
-        .last();
-    let hi = (xs.iter())
-        .filter(|x| **x >= nearest)
-        .take_while(|x| clear(**x))
-        .last();
-    Some([-lo.unwrap_or(&nearest), *hi.unwrap_or(&nearest)])
+    // The clear place nearest the point, and the run of clear places about it.
+    let n = (0..places.len())
+        .filter(|&k| places[k].1)
+        .min_by(|&a, &b| places[a].0.abs().total_cmp(&places[b].0.abs()))?;
+    let lo = (0..=n)
+        .rev()
+        .take_while(|&k| places[k].1)
+        .last()
+        .unwrap_or(n);
+    let hi = (n..places.len())
+        .take_while(|&k| places[k].1)
+        .last()
+        .unwrap_or(n);
+    Some([-places[lo].0, places[hi].0])
 }
 
 /// The phases dimensioned over the displacement diagram: an extension line up from the
