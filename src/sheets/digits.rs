@@ -32,6 +32,35 @@ pub(crate) fn error_pct(fraction: f64, lang: Lang) -> String {
     format_fixed(fraction * 100.0, ERROR_DECIMALS, lang)
 }
 
+/// The number a cell prints, read back as a reader reads it (`−57,5` → −57,5); `None` for a
+/// cell that is no number (`—`).
+pub(crate) fn printed(text: &str, lang: Lang) -> Option<f64> {
+    text.replace('−', "-")
+        .replace(lang.decimal(), ".")
+        .parse()
+        .ok()
+        .filter(|x: &f64| x.is_finite())
+}
+
+/// The relative error of a row as its table prints it (issue 45: a reader who checks the
+/// row finds the δ the table gives): from the graphical and the analytic value as printed,
+/// `(g − a) / |a|`; `unrounded` (from the values before printing) where a cell is no
+/// number; `None` where `unrounded` is (an analytic zero to rounding) or the printed
+/// analytic is 0.
+pub(crate) fn printed_error(
+    graphical: &str,
+    analytic: &str,
+    unrounded: Option<f64>,
+    lang: Lang,
+) -> Option<f64> {
+    unrounded?;
+    match (printed(graphical, lang), printed(analytic, lang)) {
+        (Some(_), Some(0.0)) => None,
+        (Some(g), Some(a)) => Some((g - a) / a.abs()),
+        _ => unrounded,
+    }
+}
+
 /// A table column's precision (issue 45: the same per column): the decimals that give its
 /// largest magnitude [`SIG`] significant digits, kept for every value of it, so that a column
 /// reads `−3,200 / −2,504 / −0,337`, not `−3,2 / −2,504 / −0,3366`.
@@ -145,7 +174,7 @@ pub(crate) fn mm(metres: f64, lang: Lang) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{bound, degrees, error_pct, mm, read, value, Column};
+    use super::{bound, degrees, error_pct, mm, printed_error, read, value, Column};
     use crate::scale::Lang;
 
     #[test]
@@ -176,6 +205,20 @@ mod tests {
         assert_eq!(read(316.27, Some(0.001), Lang::En), "316.3");
         assert_eq!(read(9.003, None, Lang::Ru), "9,003");
         assert_eq!(read(9.003, Some(0.0), Lang::Ru), "9,003");
+    }
+
+    #[test]
+    fn an_error_follows_the_values_as_printed() {
+        // The shaper's gear table (issue 45): ω₈ read −16,25 to 1,25 rad/s printed −16
+        // against −15,75: δ −1,59 %, not the −3,17 % of the unprinted reading.
+        let e = printed_error("−16", "−15,75", Some(-0.0317), Lang::Ru).expect("δ");
+        assert_eq!(error_pct(e, Lang::Ru), "−1,59");
+        let e = printed_error("5.9", "5.877", Some(0.0043), Lang::En).expect("δ");
+        assert_eq!(error_pct(e, Lang::En), "0.39");
+        // No number printed: the unrounded δ; an analytic zero: none.
+        assert_eq!(printed_error("—", "1,0", Some(0.5), Lang::Ru), Some(0.5));
+        assert_eq!(printed_error("1", "0", Some(0.5), Lang::Ru), None);
+        assert_eq!(printed_error("1", "2", None, Lang::Ru), None);
     }
 
     #[test]

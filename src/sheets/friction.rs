@@ -381,14 +381,15 @@ fn table(solved: &[Solved], lang: Lang) -> TableBlock {
             } else {
                 format!("{}, {unit}", r.symbol)
             };
-            let error = row
-                .rel_error(row.scale)
-                .map_or("—".to_string(), |e| super::digits::error_pct(e, lang));
+            let (graphical, analytic) = (shown(row.graphical), shown(row.analytic));
+            let error =
+                super::digits::printed_error(&graphical, &analytic, row.rel_error(row.scale), lang)
+                    .map_or("—".to_string(), |e| super::digits::error_pct(e, lang));
             rows.push(vec![
                 (n + 1).to_string(),
                 symbol,
-                shown(row.graphical),
-                shown(row.analytic),
+                graphical,
+                analytic,
                 error,
             ]);
         }

@@ -336,27 +336,29 @@ pub(super) fn drawn_value(r: &Row, x: f64, factor: f64, step: Option<f64>, lang:
 pub(super) fn results_table(results: &Results<'_>, rows: &[Row], lang: Lang) -> TableBlock {
     let errors = crate::check::rel_errors(rows);
     let scales = crate::check::scales(rows);
-    let body =
-        rows.iter()
-            .zip(errors.into_iter().zip(scales))
-            .map(|(r, (e, s))| {
-                results
-                    .columns
-                    .iter()
-                    .map(|(c, _)| match c {
-                        Column::Quantity => (results.name)(r),
-                        Column::Method => r.method.name(lang).to_string(),
-                        Column::Unit => (results.unit)(r),
-                        Column::Graphical => (results.graphical)(r)
-                            .unwrap_or_else(|| (results.value)(r, r.graphical, s)),
-                        Column::Analytic | Column::Exact => (results.value)(r, r.analytic, s),
-                        Column::Error => {
-                            e.map_or_else(|| "—".into(), |e| super::digits::error_pct(e, lang))
-                        }
-                    })
-                    .collect()
-            })
-            .collect();
+    let body = rows
+        .iter()
+        .zip(errors.into_iter().zip(scales))
+        .map(|(r, (e, s))| {
+            let graphical =
+                (results.graphical)(r).unwrap_or_else(|| (results.value)(r, r.graphical, s));
+            let analytic = (results.value)(r, r.analytic, s);
+            let error = super::digits::printed_error(&graphical, &analytic, e, lang)
+                .map_or_else(|| "—".into(), |e| super::digits::error_pct(e, lang));
+            results
+                .columns
+                .iter()
+                .map(|(c, _)| match c {
+                    Column::Quantity => (results.name)(r),
+                    Column::Method => r.method.name(lang).to_string(),
+                    Column::Unit => (results.unit)(r),
+                    Column::Graphical => graphical.clone(),
+                    Column::Analytic | Column::Exact => analytic.clone(),
+                    Column::Error => error.clone(),
+                })
+                .collect()
+        })
+        .collect();
     let heading = |c: Column| match c {
         Column::Quantity => Text::Quantity.get(lang),
         Column::Method => Text::Method.get(lang),

@@ -79,4 +79,5 @@ mod session;
 mod sheet_room;
 mod sheets;
 mod studio;
+mod table_errors;
 mod trains;
