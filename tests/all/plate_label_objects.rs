@@ -2,7 +2,9 @@
 //! (Russian read exactly, and every language at the 0,5 mm `render` hands in), computed
 //! from the plate's model and its layout (not from pixels):
 //! - a label of a point is written within [`POINT_REACH_MM`] of its point (the point of its
-//!   step's item: a marked point, a pair, a block, an end of a line or vector);
+//!   step's item: a marked point, a pair, a block, an end of a line or vector), and no nearer
+//!   another labelled point, of its view or the next (the shaper's position 5's
+//!   `d₅ ≡ e ≡ s₅` stood over position 6's p);
 //! - a label of a line, a vector or an arc (a force, an arm, a couple, a dimension) is
 //!   written within [`ITEM_REACH_MM`] of its own item, and nearer to it than to any other
 //!   line of its view (by [`NEARER_MM`]): a reader takes a label for the nearest line's, and
@@ -85,7 +87,8 @@ fn labels_away_in(plate: &Plate, l: &Layout) -> Vec<(String, String)> {
             let rival = l
                 .labels
                 .iter()
-                .filter(|o| o.view == x.view && o.anchor.distance(x.anchor) > 1e-6)
+                // Any view's: a label nearer the next plan's pole is read as that plan's.
+                .filter(|o| o.anchor.distance(x.anchor) > 1e-6)
                 .map(|o| (box_to_point(lo, hi, o.anchor), &o.text))
                 .min_by(|a, b| a.0.total_cmp(&b.0));
             if let Some((r, other)) = rival.filter(|(r, _)| r + NEARER_MM < d) {

@@ -82,6 +82,7 @@ pub(super) struct Job<'a> {
     /// The lines of its own view near it that are not its item's (a label of an item keeps
     /// nearer its item than any of them).
     rivals: Vec<(DVec2, DVec2)>,
+    /// The other labelled points near it, of every view.
     points: Vec<DVec2>,
     /// The cost per rank of its candidates.
     rank_cost: f64,
@@ -265,11 +266,12 @@ impl<'a> Placer<'a> {
                 })
                 .collect(),
         };
+        // The labelled points of every view: a label written nearer the next plan's pole
+        // than its own point is read as that plan's (issue 45: the shaper's position 5's
+        // `d₅ ≡ e ≡ s₅` over position 6's p).
         let points = points
             .iter()
-            .filter(|(v, p)| {
-                *v == request.view && *p != request.anchor && near.contains(&Rect::new(*p, *p))
-            })
+            .filter(|(_, p)| *p != request.anchor && near.contains(&Rect::new(*p, *p)))
             .map(|(_, p)| *p)
             .collect();
         Job {
@@ -496,7 +498,7 @@ impl<'a> Placer<'a> {
 pub(crate) const NEARER_MM: f64 = 0.5;
 
 /// `cost` and what a label at `rect` costs for standing away from its object: a label of a
-/// point beyond [`POINT_REACH_MM`] from it or nearer another labelled point of its view (the
+/// point beyond [`POINT_REACH_MM`] from it or nearer another labelled point, of any view (the
 /// position number "8" written nearer point 9, issue 45), a label of an item beyond
 /// [`ITEM_REACH_MM`] from its own line or nearer another line of its view than its own
 /// (nothing at its object).
