@@ -7,7 +7,7 @@
 //!   `d₅ ≡ e ≡ s₅` stood over position 6's p);
 //! - a label of a line, a vector or an arc (a force, an arm, a couple, a dimension) is
 //!   written within [`ITEM_REACH_MM`] of its own item, and nearer to it than to any other
-//!   line of its view (by [`NEARER_MM`]): a reader takes a label for the nearest line's, and
+//!   line, of its view or another (by [`NEARER_MM`]): a reader takes a label for the nearest line's, and
 //!   a label far from every line for nobody's;
 //! - or it is written on a leader's shelf (ГОСТ 2.316) whose line ends on its object, within
 //!   [`LEADER_AT_MM`]; no leader runs through another label or crosses another leader.
@@ -112,7 +112,7 @@ fn labels_away_in(plate: &Plate, l: &Layout) -> Vec<(String, String)> {
         if d_own > ITEM_REACH_MM {
             out.push(say(format!("{d_own:.1} mm from its item")));
         }
-        if let Some((d, other)) = nearest_other(view, &x.steps, (lo, hi)) {
+        if let Some((d, other)) = nearest_other(plate, (x.view, &x.steps), (lo, hi)) {
             if d + NEARER_MM < d_own {
                 out.push(say(format!(
                     "{d_own:.1} mm from its item, {d:.1} mm from “{}”",
@@ -144,18 +144,28 @@ fn leader_miss(view: &View, step: &tmm::construct::Step, joint: bool, to: DVec2)
     (d > LEADER_AT_MM).then_some(d)
 }
 
-/// The nearest line of `view` to the box `lo`–`hi` not drawn by the steps `own`, with the
-/// distance and the note of its step.
-fn nearest_other(view: &View, own: &[StepId], (lo, hi): (DVec2, DVec2)) -> Option<(f64, String)> {
-    view.figure
-        .steps
+/// The nearest line of any view of `plate` to the box `lo`–`hi` not drawn by the steps
+/// `own` of view `k`, with the distance and the note of its step.
+fn nearest_other(
+    plate: &Plate,
+    (k, own): (usize, &[StepId]),
+    (lo, hi): (DVec2, DVec2),
+) -> Option<(f64, String)> {
+    plate
+        .views
         .iter()
-        .filter(|s| !own.contains(&s.id))
-        .flat_map(|s| {
-            lines(s).into_iter().map(move |(a, b)| {
-                let d = box_to_segment(lo, hi, on_sheet(view, a), on_sheet(view, b));
-                (d, s.note.clone())
-            })
+        .enumerate()
+        .flat_map(|(v, view)| {
+            view.figure
+                .steps
+                .iter()
+                .filter(move |s| v != k || !own.contains(&s.id))
+                .flat_map(move |s| {
+                    lines(s).into_iter().map(move |(a, b)| {
+                        let d = box_to_segment(lo, hi, on_sheet(view, a), on_sheet(view, b));
+                        (d, s.note.clone())
+                    })
+                })
         })
         .min_by(|a, b| a.0.total_cmp(&b.0))
 }
@@ -328,6 +338,53 @@ fn the_object_rule_fails_on_a_plate_built_to_break_it() {
             && !placed.contains("“10”:")
             && !placed.contains("“F_{и5}”:"),
         "{placed}"
+    );
+}
+
+/// The rule reads a label against the other views' lines too: a force's label written 1 mm
+/// from a line of the next drawing and about 5 mm from its own (11 mm away) is that
+/// drawing's.
+#[test]
+fn the_object_rule_sees_another_views_line() {
+    let plate = sheet("friction/friction");
+    let vector = |from: DVec2, to: DVec2, text| {
+        let toward = (to - from).perp().normalize();
+        drawn(
+            1,
+            Item::Vector { from, to },
+            text,
+            (from.lerp(to, 0.5), toward),
+        )
+    };
+    let (a0, a1) = (DVec2::ZERO, DVec2::new(40.0, 0.0));
+    let (b0, b1) = (DVec2::new(0.0, -11.0), DVec2::new(40.0, -11.0));
+    let plate = with_view(plate, vec![vector(a0, a1, "R_{1-2}")]);
+    let plate = with_view(plate, vec![vector(b0, b1, "R_{4-3}")]);
+    let (first, second) = (plate.views.len() - 2, plate.views.len() - 1);
+    let mut l = layout(&plate);
+    let (own, other) = (
+        on_sheet(&plate.views[first], a0.lerp(a1, 0.5)),
+        on_sheet(&plate.views[second], b0.lerp(b1, 0.5)),
+    );
+    // The label's box between the two lines, 1 mm from the other's.
+    let toward = (other - own).normalize();
+    for x in l.labels.iter_mut() {
+        if x.view == first && x.text == "R_{1-2}" {
+            let size = x.rect.max - x.rect.min;
+            let edge = other - toward * 1.0;
+            x.rect.min = edge - DVec2::new(size.x * 0.5, if toward.y > 0.0 { size.y } else { 0.0 });
+            x.rect.max = x.rect.min + size;
+        }
+    }
+    let found: Vec<String> = labels_away_in(&plate, &l)
+        .into_iter()
+        .map(|x| x.1)
+        .collect();
+    assert!(
+        found
+            .iter()
+            .any(|w| w.contains("“R_{1-2}”:") && w.contains("R_{4-3}")),
+        "{found:?}"
     );
 }
 

@@ -79,7 +79,7 @@ pub(super) struct Job<'a> {
     pub(super) near: Rect,
     /// The outlines near it, with their boxes.
     lines: Vec<(Rect, &'a Outline)>,
-    /// The lines of its own view near it that are not its item's (a label of an item keeps
+    /// The lines near it, of every view, that are not its item's (a label of an item keeps
     /// nearer its item than any of them).
     rivals: Vec<(DVec2, DVec2)>,
     /// The other labelled points near it, of every view.
@@ -252,14 +252,13 @@ impl<'a> Placer<'a> {
             .filter(|(b, _, _)| b.touches(&near))
             .map(|&(b, _, o)| (b, o))
             .collect();
+        // Any view's lines: a force's label nearer the next drawing's line reads as its.
         let rivals = match request.own.is_empty() {
             true => Vec::new(),
             false => self
                 .boxed
                 .iter()
-                .filter(|(b, k, o)| {
-                    *k == request.view && b.touches(&near) && !request.own.contains(*o)
-                })
+                .filter(|(b, _, o)| b.touches(&near) && !request.own.contains(*o))
                 .filter_map(|(_, _, o)| match o.shape {
                     Shape::Line(a, b) => Some((a, b)),
                     Shape::Area(_) => None,
@@ -500,7 +499,7 @@ pub(crate) const NEARER_MM: f64 = 0.5;
 /// `cost` and what a label at `rect` costs for standing away from its object: a label of a
 /// point beyond [`POINT_REACH_MM`] from it or nearer another labelled point, of any view (the
 /// position number "8" written nearer point 9, issue 45), a label of an item beyond
-/// [`ITEM_REACH_MM`] from its own line or nearer another line of its view than its own
+/// [`ITEM_REACH_MM`] from its own line or nearer another line, of any view, than its own
 /// (nothing at its object).
 pub(super) fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
     if job.request.names_of == Names::Point {
