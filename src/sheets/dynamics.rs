@@ -238,15 +238,19 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
 /// Tables 9/10 in the seed's shape: per position M_с, J_пр (velocity plans | twin | error)
 /// and ΔT (graphical integration | exact | error).
 fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
-    // The error of `g` against `a` per cent of `of`; «—» where `a` is zero against `scale`.
-    let err_of = |g: f64, a: f64, of: f64, scale: f64| {
-        if a.abs() <= 1e-9 * scale.max(1e-300) || a == 0.0 {
-            "—".to_string()
-        } else {
-            format_fixed((g - a) / of * 100.0, 2, lang)
+    // The error of `g` against `a` per cent of `of` (|a| when `None`), from the two cells
+    // as printed (a reader checking the row finds it, issue 45); «—» where `a` is zero
+    // against `scale`.
+    let err_of = |(g, a): (&str, &str), a_value: f64, of: Option<f64>, scale: f64| {
+        let printed = |x: &str| super::digits::printed(x, lang);
+        match (printed(g), printed(a)) {
+            _ if a_value.abs() <= 1e-9 * scale.max(1e-300) || a_value == 0.0 => "—".to_string(),
+            (Some(g), Some(a)) if of.is_some() || a != 0.0 => {
+                format_fixed((g - a) / of.unwrap_or(a.abs()) * 100.0, 2, lang)
+            }
+            _ => "—".to_string(),
         }
     };
-    let err = |g: f64, a: f64, scale: f64| err_of(g, a, a.abs(), scale);
     let m_scale = d.analytic.iter().fold(0.0f64, |m, r| m.max(r.m().abs()));
     // The varying side's moment: M_с = −M_пр (a machine), M_д = M_пр (an engine).
     let (sgn, mv) = match d.spec.constant_moment {
@@ -276,20 +280,24 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
         .map(|(i, label)| {
             let (g, a) = (&d.graphical[i], &d.analytic[i]);
             let (dt, dt_a) = dt(i);
+            let m = (m_col.cell(sgn * g.m(), lang), m_col.cell(sgn * a.m(), lang));
+            let j = (j_col.cell(g.j, lang), j_col.cell(a.j, lang));
+            let t = (t_col.cell(dt, lang), t_col.cell(dt_a, lang));
             vec![
                 label.clone(),
                 format_fixed(d.travel[i].to_degrees(), 0, lang),
-                m_col.cell(sgn * g.m(), lang),
-                m_col.cell(sgn * a.m(), lang),
-                err(g.m(), a.m(), m_scale),
-                j_col.cell(g.j, lang),
-                j_col.cell(a.j, lang),
-                err(g.j, a.j, 1.0),
-                t_col.cell(dt, lang),
-                t_col.cell(dt_a, lang),
+                m.0.clone(),
+                m.1.clone(),
+                // M_с printed with the sign of the varying side: δ of the cells as printed.
+                err_of((&m.0, &m.1), a.m(), None, m_scale),
+                j.0.clone(),
+                j.1.clone(),
+                err_of((&j.0, &j.1), a.j, None, 1.0),
+                t.0.clone(),
+                t.1.clone(),
                 // ΔT is an integral read off its diagram: its error per cent of the diagram's
                 // largest ordinate (the V engine's pos. 2 is 5 J off a 20 J value).
-                err_of(dt, dt_a, t_scale, t_scale),
+                err_of((&t.0, &t.1), dt_a, Some(t_scale), t_scale),
             ]
         })
         .collect();

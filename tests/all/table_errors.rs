@@ -1,5 +1,6 @@
 //! A table's δ is the one its reader finds (issue 45): on every sheet of every scene, in ru
-//! and en, read exactly and to 0,5 mm, each cell of a column headed «δ, %» equals
+//! and en, read exactly and to 0,5 mm, each cell of a column headed «δ, %» (or the dynamics
+//! table's δ_M, δ_J) equals
 //! (g − a)/|a| of the graphical and analytic values printed before it in its row, to the
 //! δ's last printed digit. A reading printed to its step (ω₈ = −16,25 read to 1,25 rad/s,
 //! printed −16) takes its δ from −16, not from −16,25.
@@ -8,8 +9,10 @@ use tmm::construct::Drafting;
 use tmm::plate::TableBlock;
 use tmm::scale::Lang;
 
-/// The heading of a relative-error column.
-const DELTA: &str = "δ, %";
+/// The headings of a relative-error column: a results table's, and the dynamics table's
+/// δ of M and of J_пр (its δ_{ΔT} is per cent of the diagram's largest ordinate, not of the
+/// row's value).
+const DELTAS: [&str; 3] = ["δ, %", "δ_{M}, %", "δ_{J}, %"];
 
 /// A cell's number as printed: `−57,45` → −57,45; `None` for `—` or text.
 fn number(cell: &str, lang: Lang) -> Option<f64> {
@@ -20,35 +23,34 @@ fn number(cell: &str, lang: Lang) -> Option<f64> {
 /// Every δ cell of `t` that does not follow the two values printed before it: the row's
 /// first cell, the three cells and the δ it should read.
 fn mismatches(t: &TableBlock, lang: Lang) -> Vec<String> {
-    let Some(d) = t.columns.iter().position(|(h, _)| h == DELTA) else {
-        return Vec::new();
-    };
-    if d < 2 {
-        return Vec::new();
-    }
     let mut out = Vec::new();
-    for row in &t.rows {
-        let cell = |k: usize| row.get(k).map(String::as_str).unwrap_or("");
-        let (Some(g), Some(a), Some(delta)) = (
-            number(cell(d - 2), lang),
-            number(cell(d - 1), lang),
-            number(cell(d), lang),
-        ) else {
-            continue;
-        };
-        if a == 0.0 {
-            continue;
-        }
-        let expected = (g - a) / a.abs() * 100.0;
-        // Printed to 0,01 %: half its last digit, and a hair for the binary rounding.
-        if (expected - delta).abs() > 0.005 + 1e-9 {
-            out.push(format!(
-                "{}: {} | {} | {} (δ from the printed values {expected:.4})",
-                cell(0),
-                cell(d - 2),
-                cell(d - 1),
-                cell(d)
-            ));
+    let columns = t.columns.iter().enumerate();
+    for d in columns.filter(|(d, (h, _))| *d >= 2 && DELTAS.contains(&h.as_str())) {
+        let d = d.0;
+        for row in &t.rows {
+            let cell = |k: usize| row.get(k).map(String::as_str).unwrap_or("");
+            let (Some(g), Some(a), Some(delta)) = (
+                number(cell(d - 2), lang),
+                number(cell(d - 1), lang),
+                number(cell(d), lang),
+            ) else {
+                continue;
+            };
+            if a == 0.0 {
+                continue;
+            }
+            let expected = (g - a) / a.abs() * 100.0;
+            // Printed to 0,01 %: half its last digit, and a hair for the binary rounding.
+            if (expected - delta).abs() > 0.005 + 1e-9 {
+                out.push(format!(
+                    "{} {}: {} | {} | {} (δ from the printed values {expected:.4})",
+                    t.columns[d].0,
+                    cell(0),
+                    cell(d - 2),
+                    cell(d - 1),
+                    cell(d)
+                ));
+            }
         }
     }
     out
@@ -66,9 +68,11 @@ fn every_tables_delta_follows_its_printed_values() {
                     .unwrap_or_else(|e| panic!("{}: {e}", s.stem));
                 for (_, p) in &plates {
                     for t in &p.tables {
-                        if t.columns.iter().any(|(h, _)| h == DELTA) {
-                            checked += t.rows.len();
-                        }
+                        let deltas = t
+                            .columns
+                            .iter()
+                            .filter(|(h, _)| DELTAS.contains(&h.as_str()));
+                        checked += deltas.count() * t.rows.len();
                         bad.extend(mismatches(t, lang).into_iter().map(|m| {
                             format!(
                                 "{}/{} {lang:?} {}: {m}",
@@ -82,8 +86,8 @@ fn every_tables_delta_follows_its_printed_values() {
             }
         }
     }
-    // The gear, cam, balancing, friction and force sheets' tables.
-    assert!(checked > 500, "{checked} rows under «{DELTA}»");
+    // The gear, cam, balancing, friction, force and dynamics sheets' tables.
+    assert!(checked > 500, "{checked} cells under {DELTAS:?}");
     assert!(bad.is_empty(), "{} rows:\n{}", bad.len(), bad.join("\n"));
 }
 
@@ -94,7 +98,7 @@ fn the_rule_catches_a_delta_of_an_unprinted_reading() {
     let table = |delta: &str| TableBlock {
         at: tmm::geom::DVec2::ZERO,
         title: String::new(),
-        columns: ["величина", "графически", "аналитически", DELTA]
+        columns: ["величина", "графически", "аналитически", DELTAS[0]]
             .map(|h| (h.to_string(), 20.0))
             .to_vec(),
         rows: vec![vec![
