@@ -84,13 +84,32 @@ fn polygon_views(
     let corner = DVec2::new(1.0, 1.0).normalize();
     let mut marked = polygon.clone();
     let mut views = Vec::new();
+    let mut letters: Vec<String> = Vec::new();
     for d in details {
         let letter = detail_letter(*lettered, lang).to_string();
         *lettered += 1;
         let at = d.zone.center + corner * d.zone.radius;
         marked = marked.with_text("the detail's letter", at, letter.clone(), corner);
+        // A finer detail's zone circled on this one ([`PolygonDetail`]) takes its letter
+        // here too: at its corner, or where it is cut by this detail's border, at its
+        // point nearest this zone's centre.
+        let k = polygon.scale.value() / d.figure.scale.value();
+        let mut figure = d.figure.clone();
+        for (z, l) in d
+            .finer
+            .iter()
+            .filter_map(|&i| Some((details.get(i)?.zone, letters.get(i)?)))
+        {
+            let own = |p: DVec2| (p - d.zone.center) * k;
+            let mut at = z.center + corner * z.radius;
+            if at.distance(d.zone.center) > d.zone.radius {
+                at = z.center + (d.zone.center - z.center).normalize_or_zero() * z.radius;
+            }
+            figure = figure.with_text("a finer detail's letter", own(at), l.clone(), corner);
+        }
+        letters.push(letter.clone());
         let scale = (Key::ForcesScaleF, d.figure.scale);
-        views.push(view(&d.figure, letter, scale, lang));
+        views.push(view(&figure, letter, scale, lang));
     }
     blocks.push(view(
         &marked,

@@ -67,6 +67,57 @@ fn every_force_of_a_polygon_reads_on_it_or_on_its_detail() {
     }
 }
 
+/// Issue 45: a detail names no force drawn too short to read on it (the shaper's G₂, 2 mm
+/// at 10 N/mm, named beside a dot): each named vector of a detail is at least 4 mm long
+/// there, or the detail circles the finer detail that reads it (a detail of a detail,
+/// ГОСТ 2.305), and leaves it unnamed. The shaper's group 2–3 has such a pair.
+#[test]
+fn a_detail_names_only_the_forces_it_reads() {
+    let mut nested = 0;
+    for scene in ["constructions/shaper.toml", "constructions/v-engine.toml"] {
+        each_position(scene, |f| {
+            let p = &f.analysis.polygons;
+            let all = p
+                .groups
+                .iter()
+                .map(|g| &g.details)
+                .chain([&p.driver.details]);
+            for details in all {
+                for d in details {
+                    nested += d.finer.len();
+                    for st in &d.figure.steps {
+                        let (Item::Vector { from, to }, Some(l)) = (&st.item, &st.label) else {
+                            continue;
+                        };
+                        let len = from.distance(*to);
+                        assert!(
+                            len >= 4.0,
+                            "{scene} {}: {} named on its detail, {len:.2} mm",
+                            f.label,
+                            l.text
+                        );
+                    }
+                    // Each finer zone it circles is drawn on it (arcs of the zone's circle, cut
+                    // by the detail's border).
+                    let circles = d
+                        .figure
+                        .steps
+                        .iter()
+                        .filter(|s| s.note.contains("finer detail"))
+                        .count();
+                    let drawn = if d.finer.is_empty() {
+                        circles == 0
+                    } else {
+                        circles >= d.finer.len()
+                    };
+                    assert!(drawn, "{scene} {}: {circles} arcs", f.label);
+                }
+            }
+        });
+    }
+    assert!(nested > 0, "no detail of a detail");
+}
+
 /// Issue 19 item 1: the guide's reaction on the shaper's ram (R₀₋₅) stands on the drawn
 /// guide at its arm h₀₋₅ from the slider's joint, the arm dimensioned; the lever's F_у
 /// starts at the end of its arm (the foot of the perpendicular from the pole).

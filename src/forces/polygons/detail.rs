@@ -1,7 +1,7 @@
 //! The detail views of a force polygon: the zone of its forces too short to read drawn again
 //! at a larger μ_F.
 
-use crate::construct::Figure;
+use crate::construct::{Figure, Item, Role, Step, StepId};
 use crate::geom::{Circle, DVec2};
 use crate::scale::Scale;
 
@@ -28,6 +28,8 @@ pub struct PolygonDetail {
     pub zone: Circle,
     /// The zone enlarged: the vectors cut at its border, with their labels.
     pub figure: Figure,
+    /// The finer details (indices among the polygon's) whose zones it circles.
+    pub finer: Vec<usize>,
 }
 
 /// A polygon has at most this many details.
@@ -53,7 +55,7 @@ pub(super) fn details(
         .filter(|(a, b)| a.distance(*b) > zero && a.distance(*b) < SMALL_FORCE_MM)
         .collect();
     small.sort_by(|x, y| x.0.distance(x.1).total_cmp(&y.0.distance(y.1)));
-    let mut out = Vec::new();
+    let mut out: Vec<PolygonDetail> = Vec::new();
     while let (Some(&(a, b)), true) = (small.first(), out.len() < MAX_DETAILS) {
         let Some(scale) =
             Scale::round_for(a.distance(b) * mu.value(), DETAIL_FORCE_MM, mu.quantity)
@@ -81,11 +83,55 @@ pub(super) fn details(
         let Some(zone) = Circle::new(0.5 * (lo + hi), radius) else {
             break;
         };
+        // The details before are finer (each from a shorter force): those it overlaps.
+        let finer: Vec<usize> = (out.iter().enumerate())
+            .filter(|(_, d)| d.zone.center.distance(zone.center) < d.zone.radius + zone.radius)
+            .map(|(i, _)| i)
+            .collect();
+        let zones: Vec<Circle> = finer.iter().map(|&i| out[i].zone).collect();
         out.push(PolygonDetail {
             zone,
-            figure: polygon(scale).detail_with_vectors(&zone, scale),
+            figure: nested(polygon(scale), &zones, &zone, scale),
+            finer,
         });
         small = rest;
     }
     out
+}
+
+/// The detail of `zone` at `scale` cut from `polygon` (polygon mm), the zones of the `finer`
+/// details (those it overlaps) circled in it as on the polygon (ГОСТ 2.305: a detail of a detail),
+/// and the forces read on them — shorter than [`SMALL_FORCE_MM`] here too — left without
+/// their names, which the finer detail writes (the shaper's G₂, 2 mm at 10 N/mm, labelled
+/// as a dot beside its 12 mm on the detail at 2 N/mm).
+fn nested(polygon: Figure, finer: &[Circle], zone: &Circle, scale: Scale) -> Figure {
+    let k = polygon.scale.value() / scale.value();
+    let mut source = polygon;
+    for z in finer {
+        let id = StepId(source.steps.iter().map(|s| s.id.0 + 1).max().unwrap_or(0));
+        source.steps.push(Step {
+            id,
+            note: "the zone of a finer detail".into(),
+            item: Item::Circle(*z),
+            role: Role::Construction,
+            label: None,
+            from: Vec::new(),
+            group: 0,
+        });
+    }
+    let mut detail = source.detail_with_vectors(zone, scale);
+    // The finer zones in the detail's own mm (its origin the zone's centre).
+    let inside = |p: DVec2| {
+        finer
+            .iter()
+            .any(|z| p.distance((z.center - zone.center) * k) <= z.radius * k)
+    };
+    for st in &mut detail.steps {
+        if let Item::Vector { from, to } = st.item {
+            if from.distance(to) < SMALL_FORCE_MM && inside(from) && inside(to) {
+                st.label = None;
+            }
+        }
+    }
+    detail
 }
