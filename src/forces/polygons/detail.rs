@@ -121,17 +121,24 @@ fn nested(polygon: Figure, finer: &[Circle], zone: &Circle, scale: Scale) -> Fig
     }
     let mut detail = source.detail_with_vectors(zone, scale);
     // The finer zones in the detail's own mm (its origin the zone's centre).
-    let inside = |p: DVec2| {
-        finer
-            .iter()
-            .any(|z| p.distance((z.center - zone.center) * k) <= z.radius * k)
-    };
-    for st in &mut detail.steps {
+    let zones: Vec<Circle> = (finer.iter())
+        .filter_map(|z| Circle::new((z.center - zone.center) * k, z.radius * k))
+        .collect();
+    unname_read_elsewhere(&mut detail, &zones);
+    detail
+}
+
+/// The forces of `figure` drawn shorter than [`SMALL_FORCE_MM`] inside one of `zones` (in
+/// the figure's mm) left without their names: a detail names them, where they read (the
+/// V engine's G₂, a dot named G₂ on its polygon at 40 N/mm beside the circle of its
+/// detail Г).
+pub(super) fn unname_read_elsewhere(figure: &mut Figure, zones: &[Circle]) {
+    let inside = |p: DVec2| zones.iter().any(|z| p.distance(z.center) <= z.radius);
+    for st in &mut figure.steps {
         if let Item::Vector { from, to } = st.item {
             if from.distance(to) < SMALL_FORCE_MM && inside(from) && inside(to) {
                 st.label = None;
             }
         }
     }
-    detail
 }

@@ -1,7 +1,7 @@
 //! A force polygon laid off head to tail at μ_F, closed by two known directions, its
 //! reactions read off under the drafting model.
 
-use super::detail::{details, PolygonDetail, SMALL_FORCE_MM};
+use super::detail::{details, unname_read_elsewhere, PolygonDetail, SMALL_FORCE_MM};
 use crate::construct::{ConstructionError, Context, Figure, Item, Recorder, Role};
 use crate::forces::arrows::{overlap, vectors, ON_LINE_MM};
 use crate::forces::loads::Load;
@@ -81,7 +81,10 @@ impl Polygon {
                 &[],
             );
         }
-        (self.rec.finish(), d)
+        let mut polygon = self.rec.finish();
+        let zones: Vec<_> = d.iter().map(|d| d.zone).collect();
+        unname_read_elsewhere(&mut polygon, &zones);
+        (polygon, d)
     }
     /// Lay off a force head to tail; returns its end.
     pub(super) fn lay(&mut self, name: &str, f: DVec2) -> DVec2 {
