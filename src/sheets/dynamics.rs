@@ -238,18 +238,23 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
 /// Tables 9/10 in the seed's shape: per position M_с, J_пр (velocity plans | twin | error)
 /// and ΔT (graphical integration | exact | error).
 fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
-    // The error of `g` against `a` per cent of `of` (|a| when `None`), from the two cells
-    // as printed (a reader checking the row finds it, issue 45); «—» where `a` is zero
-    // against `scale`.
-    let err_of = |(g, a): (&str, &str), a_value: f64, of: Option<f64>, scale: f64| {
-        let printed = |x: &str| super::digits::printed(x, lang);
-        match (printed(g), printed(a)) {
-            _ if a_value.abs() <= 1e-9 * scale.max(1e-300) || a_value == 0.0 => "—".to_string(),
-            (Some(g), Some(a)) if of.is_some() || a != 0.0 => {
-                format_fixed((g - a) / of.unwrap_or(a.abs()) * 100.0, 2, lang)
-            }
-            _ => "—".to_string(),
-        }
+    // The error of the row's cells `(g, a)` as printed (a reader checking the row finds it,
+    // issue 45), of the values `(gv, av)`: per cent of `of`, or of |a| when `None`
+    // (digits::printed_error); «—» where `av` is zero against `scale`.
+    let err_of = |(g, a): (&str, &str), (gv, av): (f64, f64), of: Option<f64>, scale: f64| {
+        let zero = av.abs() <= 1e-9 * scale.max(1e-300) || av == 0.0;
+        let fraction = match of {
+            _ if zero => None,
+            None => super::digits::printed_error(g, a, Some((gv - av) / av.abs()), lang),
+            Some(of) => match (
+                super::digits::printed(g, lang),
+                super::digits::printed(a, lang),
+            ) {
+                (Some(g), Some(a)) => Some((g - a) / of),
+                _ => Some((gv - av) / of),
+            },
+        };
+        fraction.map_or("—".to_string(), |e| super::digits::error_pct(e, lang))
     };
     let m_scale = d.analytic.iter().fold(0.0f64, |m, r| m.max(r.m().abs()));
     // The varying side's moment: M_с = −M_пр (a machine), M_д = M_пр (an engine).
@@ -289,15 +294,15 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
                 m.0.clone(),
                 m.1.clone(),
                 // M_с printed with the sign of the varying side: δ of the cells as printed.
-                err_of((&m.0, &m.1), a.m(), None, m_scale),
+                err_of((&m.0, &m.1), (sgn * g.m(), sgn * a.m()), None, m_scale),
                 j.0.clone(),
                 j.1.clone(),
-                err_of((&j.0, &j.1), a.j, None, 1.0),
+                err_of((&j.0, &j.1), (g.j, a.j), None, 1.0),
                 t.0.clone(),
                 t.1.clone(),
                 // ΔT is an integral read off its diagram: its error per cent of the diagram's
                 // largest ordinate (the V engine's pos. 2 is 5 J off a 20 J value).
-                err_of((&t.0, &t.1), dt_a, Some(t_scale), t_scale),
+                err_of((&t.0, &t.1), (dt, dt_a), Some(t_scale), t_scale),
             ]
         })
         .collect();
