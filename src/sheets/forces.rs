@@ -263,11 +263,11 @@ fn balance_lines(rows: &[Row], engine: bool, lang: Lang) -> Vec<String> {
             };
             let (p, l) = (of(Method::Polygon)?, of(Method::Lever)?);
             let unit = unit_in(symbol.unit(), lang);
-            let diff = if l != 0.0 && p.is_finite() && l.is_finite() {
-                format_fixed((p - l).abs() / l.abs() * 100.0, 2, lang)
-            } else {
-                "—".into()
-            };
+            // Of the two values as printed (issue 45: a reader checking the line finds it).
+            let (p_text, l_text) = (value(p, lang), value(l, lang));
+            let unrounded = (l != 0.0 && p.is_finite() && l.is_finite()).then(|| (p - l) / l.abs());
+            let diff = super::digits::printed_error(&p_text, &l_text, unrounded, lang)
+                .map_or_else(|| "—".into(), |e| super::digits::error_pct(e.abs(), lang));
             let name = symbols::quantity(symbol, "bal", lang);
             let name = if engine && symbol == Symbol::Moment {
                 format!("{name} ({})", Text::ShaftResistance.get(lang))
@@ -277,9 +277,9 @@ fn balance_lines(rows: &[Row], engine: bool, lang: Lang) -> Vec<String> {
             Some(format!(
                 "{name}: {} {} {unit}, {} {} {unit}, {} {diff} %",
                 Text::ByPolygon.get(lang),
-                value(p, lang),
+                p_text,
                 Text::ByLever.get(lang),
-                value(l, lang),
+                l_text,
                 Text::Difference.get(lang),
             ))
         })

@@ -112,3 +112,43 @@ fn the_rule_catches_a_delta_of_an_unprinted_reading() {
     assert_eq!(mismatches(&table("−3,17"), Lang::Ru).len(), 1);
     assert!(mismatches(&table("−1,59"), Lang::Ru).is_empty());
 }
+
+/// The numbers of a line of text, as printed (`−259,6 Н·м` → −259,6): the runs of digits,
+/// the decimal comma and a leading minus; none inside a subscript (`M_{у}`).
+fn numbers(line: &str) -> Vec<f64> {
+    line.split(|c: char| !(c.is_ascii_digit() || c == ',' || c == '−'))
+        .filter_map(|w| number(w.trim_end_matches(','), Lang::Ru))
+        .collect()
+}
+
+/// The force sheets' lines "по плану сил P, по рычагу Жуковского L, расхождение D %": D is
+/// |P − L|/|L| of the two values as printed (issue 45: the shaper's position 3 printed 0,36 %
+/// where −259,6 against −258,7 gives 0,35 %).
+#[test]
+fn every_balance_difference_follows_its_printed_values() {
+    let mut checked = 0;
+    for scene in ["shaper", "v-engine"] {
+        let s = crate::support::scene(scene);
+        let plates =
+            tmm::render::plates(&s, Lang::Ru, Drafting::HAND).unwrap_or_else(|e| panic!("{e}"));
+        for (_, p) in &plates {
+            let lines = p.texts.iter().flat_map(|t| &t.lines);
+            for line in lines.filter(|l| l.contains("по рычагу") && l.contains('%')) {
+                let tail = line.split_once(':').map_or(line.as_str(), |x| x.1);
+                let n = numbers(tail);
+                let [p_, l, d] = n[n.len() - 3..] else {
+                    panic!("{line}: {n:?}");
+                };
+                let expected = (p_ - l).abs() / l.abs() * 100.0;
+                assert!(
+                    (expected - d).abs() <= 0.005 + 1e-9,
+                    "{}/{}: «{line}»: {expected:.4} %",
+                    s.stem,
+                    p.name
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 4, "{checked} lines");
+}
