@@ -37,7 +37,8 @@ pub use loads::{
 };
 pub use pair_friction::{friction_loads, PairFriction, PairMotion};
 pub use polygons::{
-    DriverPolygon, GroupPolygon, MomentEquation, MomentTerm, PolygonDetail, Polygons, Unknown,
+    letter_at, letter_toward, DriverPolygon, GroupPolygon, MomentEquation, MomentTerm,
+    PolygonDetail, Polygons, Unknown,
 };
 pub use rows::notes;
 use rows::{reaction_rows, row, rows, zero_references};

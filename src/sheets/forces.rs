@@ -10,8 +10,7 @@ use super::layout::{lay_out, results_table, sheet_name, Block, Column, Results, 
 use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
-use crate::forces::{PolygonDetail, PositionForces};
-use crate::geom::DVec2;
+use crate::forces::{letter_at, letter_toward, PolygonDetail, PositionForces};
 use crate::linkage::Structure;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
@@ -81,31 +80,23 @@ fn polygon_views(
     lettered: &mut usize,
     lang: Lang,
 ) {
-    let corner = DVec2::new(1.0, 1.0).normalize();
+    let corner = letter_toward();
     let mut marked = polygon.clone();
     let mut views = Vec::new();
     let mut letters: Vec<String> = Vec::new();
     for d in details {
         let letter = detail_letter(*lettered, lang).to_string();
         *lettered += 1;
-        let at = d.zone.center + corner * d.zone.radius;
-        marked = marked.with_text("the detail's letter", at, letter.clone(), corner);
-        // A finer detail's zone circled on this one ([`PolygonDetail`]) takes its letter
-        // here too: at its corner, or where it is cut by this detail's border, at its
-        // point nearest this zone's centre.
-        let k = polygon.scale.value() / d.figure.scale.value();
+        marked = marked.with_text(
+            "the detail's letter",
+            letter_at(&d.zone),
+            letter.clone(),
+            corner,
+        );
+        // A finer detail's zone circled on this one takes its letter here too.
         let mut figure = d.figure.clone();
-        for (z, l) in d
-            .finer
-            .iter()
-            .filter_map(|&i| Some((details.get(i)?.zone, letters.get(i)?)))
-        {
-            let own = |p: DVec2| (p - d.zone.center) * k;
-            let mut at = z.center + corner * z.radius;
-            if at.distance(d.zone.center) > d.zone.radius {
-                at = z.center + (d.zone.center - z.center).normalize_or_zero() * z.radius;
-            }
-            figure = figure.with_text("a finer detail's letter", own(at), l.clone(), corner);
+        for (at, l) in (d.finer.iter()).filter_map(|&(i, at)| Some((at, letters.get(i)?))) {
+            figure = figure.with_text("a finer detail's letter", at, l.clone(), corner);
         }
         letters.push(letter.clone());
         let scale = (Key::ForcesScaleF, d.figure.scale);

@@ -19,6 +19,27 @@ fn each_position(scene: &str, mut check: impl FnMut(&tmm::forces::PositionForces
     }
 }
 
+/// Every polygon of every analysed position of `scene` with its details: (position,
+/// polygon, details).
+fn each_polygon(
+    scene: &str,
+    mut check: impl FnMut(&str, &tmm::construct::Figure, &[tmm::forces::PolygonDetail]),
+) {
+    each_position(scene, |f| {
+        let p = &f.analysis.polygons;
+        let all = (p.groups.iter().map(|g| (&g.polygon, &g.details)))
+            .chain([(&p.driver.polygon, &p.driver.details)]);
+        for (polygon, details) in all {
+            check(&f.label, polygon, details);
+        }
+    });
+}
+
+/// Whether both ends `a`, `b` lie in the zone of `d`, polygon mm.
+fn in_zone(d: &tmm::forces::PolygonDetail, a: DVec2, b: DVec2) -> bool {
+    a.distance(d.zone.center) <= d.zone.radius && b.distance(d.zone.center) <= d.zone.radius
+}
+
 /// The drawn vectors of a figure: (note, from, to), mm.
 fn vectors(f: &tmm::construct::Figure) -> Vec<(&str, DVec2, DVec2)> {
     f.steps
@@ -36,31 +57,20 @@ fn vectors(f: &tmm::construct::Figure) -> Vec<(&str, DVec2, DVec2)> {
 fn every_force_of_a_polygon_reads_on_it_or_on_its_detail() {
     for scene in ["constructions/shaper.toml", "constructions/v-engine.toml"] {
         let mut details = 0;
-        each_position(scene, |f| {
-            let p = &f.analysis.polygons;
-            let all = p
-                .groups
-                .iter()
-                .map(|g| (&g.polygon, &g.details))
-                .chain([(&p.driver.polygon, &p.driver.details)]);
-            for (polygon, detail) in all {
-                assert!(detail.len() <= 3);
-                for (note, a, b) in vectors(polygon) {
-                    let len = a.distance(b);
-                    if !note.starts_with("lay off") || len >= 4.0 {
-                        continue;
-                    }
-                    let inside = |d: &&tmm::forces::PolygonDetail| {
-                        a.distance(d.zone.center) <= d.zone.radius
-                            && b.distance(d.zone.center) <= d.zone.radius
-                    };
-                    let d = detail.iter().find(inside).unwrap_or_else(|| {
-                        panic!("{scene} {}: {note}, {len} mm, in no detail", f.label)
-                    });
-                    let k = polygon.scale.value() / d.figure.scale.value();
-                    assert!(len * k >= 4.0, "{note}: {} mm on the detail", len * k);
-                    details += 1;
+        each_polygon(scene, |label, polygon, detail| {
+            assert!(detail.len() <= 3);
+            for (note, a, b) in vectors(polygon) {
+                let len = a.distance(b);
+                if !note.starts_with("lay off") || len >= 4.0 {
+                    continue;
                 }
+                let d = detail
+                    .iter()
+                    .find(|d| in_zone(d, a, b))
+                    .unwrap_or_else(|| panic!("{scene} {label}: {note}, {len} mm, in no detail"));
+                let k = polygon.scale.value() / d.figure.scale.value();
+                assert!(len * k >= 4.0, "{note}: {} mm on the detail", len * k);
+                details += 1;
             }
         });
         assert!(details > 0, "{scene}: no small force was detailed");
@@ -77,59 +87,43 @@ fn every_force_of_a_polygon_reads_on_it_or_on_its_detail() {
 fn a_polygon_and_its_details_name_only_the_forces_they_read() {
     let mut nested = 0;
     for scene in ["constructions/shaper.toml", "constructions/v-engine.toml"] {
-        each_position(scene, |f| {
-            let p = &f.analysis.polygons;
-            let all = p
-                .groups
-                .iter()
-                .map(|g| (&g.polygon, &g.details))
-                .chain([(&p.driver.polygon, &p.driver.details)]);
-            for (polygon, details) in all {
-                for st in &polygon.steps {
+        each_polygon(scene, |label, polygon, details| {
+            for st in &polygon.steps {
+                let (Item::Vector { from, to }, Some(l)) = (&st.item, &st.label) else {
+                    continue;
+                };
+                let zoned = details.iter().any(|d| in_zone(d, *from, *to));
+                assert!(
+                    from.distance(*to) >= 4.0 || !zoned,
+                    "{scene} {label}: {} named on its polygon, {:.2} mm, in a detail's zone",
+                    l.text,
+                    from.distance(*to)
+                );
+            }
+            for d in details {
+                nested += d.finer.len();
+                for st in &d.figure.steps {
                     let (Item::Vector { from, to }, Some(l)) = (&st.item, &st.label) else {
                         continue;
                     };
-                    let zoned = details.iter().any(|d| {
-                        from.distance(d.zone.center) <= d.zone.radius
-                            && to.distance(d.zone.center) <= d.zone.radius
-                    });
+                    let len = from.distance(*to);
                     assert!(
-                        from.distance(*to) >= 4.0 || !zoned,
-                        "{scene} {}: {} named on its polygon, {:.2} mm, in a detail's zone",
-                        f.label,
-                        l.text,
-                        from.distance(*to)
+                        len >= 4.0,
+                        "{scene} {label}: {} named on its detail, {len:.2} mm",
+                        l.text
                     );
                 }
-                for d in details {
-                    nested += d.finer.len();
-                    for st in &d.figure.steps {
-                        let (Item::Vector { from, to }, Some(l)) = (&st.item, &st.label) else {
-                            continue;
-                        };
-                        let len = from.distance(*to);
-                        assert!(
-                            len >= 4.0,
-                            "{scene} {}: {} named on its detail, {len:.2} mm",
-                            f.label,
-                            l.text
-                        );
-                    }
-                    // Each finer zone it circles is drawn on it (arcs of the zone's circle, cut
-                    // by the detail's border).
-                    let circles = d
-                        .figure
-                        .steps
-                        .iter()
-                        .filter(|s| s.note.contains("finer detail"))
-                        .count();
-                    let drawn = if d.finer.is_empty() {
-                        circles == 0
-                    } else {
-                        circles >= d.finer.len()
-                    };
-                    assert!(drawn, "{scene} {}: {circles} arcs", f.label);
-                }
+                // Each finer zone it circles is drawn on it (arcs of the zone's circle, cut
+                // by the detail's border).
+                let circles = (d.figure.steps.iter())
+                    .filter(|s| s.note.contains("finer detail"))
+                    .count();
+                let drawn = if d.finer.is_empty() {
+                    circles == 0
+                } else {
+                    circles >= d.finer.len()
+                };
+                assert!(drawn, "{scene} {label}: {circles} arcs");
             }
         });
     }

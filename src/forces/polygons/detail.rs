@@ -28,8 +28,19 @@ pub struct PolygonDetail {
     pub zone: Circle,
     /// The zone enlarged: the vectors cut at its border, with their labels.
     pub figure: Figure,
-    /// The finer details (indices among the polygon's) whose zones it circles.
-    pub finer: Vec<usize>,
+    /// The finer details whose zones it circles: each one's index among the polygon's
+    /// details and where its letter stands on this one, detail mm.
+    pub finer: Vec<(usize, DVec2)>,
+}
+
+/// The direction a zone's letter stands in from its centre: up and right, on its circle.
+pub fn letter_toward() -> DVec2 {
+    DVec2::new(1.0, 1.0).normalize()
+}
+
+/// Where the letter of `zone` stands: on its circle, [`letter_toward`] its centre.
+pub fn letter_at(zone: &Circle) -> DVec2 {
+    zone.center + letter_toward() * zone.radius
 }
 
 /// A polygon has at most this many details.
@@ -89,10 +100,11 @@ pub(super) fn details(
             .map(|(i, _)| i)
             .collect();
         let zones: Vec<Circle> = finer.iter().map(|&i| out[i].zone).collect();
+        let (figure, letters) = nested(polygon(scale), &zones, &zone, scale);
         out.push(PolygonDetail {
             zone,
-            figure: nested(polygon(scale), &zones, &zone, scale),
-            finer,
+            figure,
+            finer: finer.into_iter().zip(letters).collect(),
         });
         small = rest;
     }
@@ -103,8 +115,10 @@ pub(super) fn details(
 /// details (those it overlaps) circled in it as on the polygon (ГОСТ 2.305: a detail of a detail),
 /// and the forces read on them — shorter than [`SMALL_FORCE_MM`] here too — left without
 /// their names, which the finer detail writes (the shaper's G₂, 2 mm at 10 N/mm, labelled
-/// as a dot beside its 12 mm on the detail at 2 N/mm).
-fn nested(polygon: Figure, finer: &[Circle], zone: &Circle, scale: Scale) -> Figure {
+/// as a dot beside its 12 mm on the detail at 2 N/mm). Returns it with where each finer
+/// zone's letter stands on it: at [`letter_at`], or where that falls past the border, at the
+/// finer zone's point nearest the centre.
+fn nested(polygon: Figure, finer: &[Circle], zone: &Circle, scale: Scale) -> (Figure, Vec<DVec2>) {
     let k = polygon.scale.value() / scale.value();
     let mut source = polygon;
     for z in finer {
@@ -121,11 +135,23 @@ fn nested(polygon: Figure, finer: &[Circle], zone: &Circle, scale: Scale) -> Fig
     }
     let mut detail = source.detail_with_vectors(zone, scale);
     // The finer zones in the detail's own mm (its origin the zone's centre).
+    let own = |p: DVec2| (p - zone.center) * k;
     let zones: Vec<Circle> = (finer.iter())
-        .filter_map(|z| Circle::new((z.center - zone.center) * k, z.radius * k))
+        .filter_map(|z| Circle::new(own(z.center), z.radius * k))
         .collect();
     unname_read_elsewhere(&mut detail, &zones);
-    detail
+    let letters = finer
+        .iter()
+        .map(|z| {
+            let at = letter_at(z);
+            own(if at.distance(zone.center) > zone.radius {
+                z.center + (zone.center - z.center).normalize_or_zero() * z.radius
+            } else {
+                at
+            })
+        })
+        .collect();
+    (detail, letters)
 }
 
 /// The forces of `figure` drawn shorter than [`SMALL_FORCE_MM`] inside one of `zones` (in

@@ -34,7 +34,7 @@ mod equations;
 mod kinds;
 mod polygon;
 mod scheme;
-pub use detail::PolygonDetail;
+pub use detail::{letter_at, letter_toward, PolygonDetail};
 use driver::driver;
 pub use equations::{MomentEquation, MomentTerm, Unknown};
 use kinds::Work;
