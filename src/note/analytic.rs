@@ -5,8 +5,9 @@
 //! at most eight columns.
 
 use super::equations::vector;
-use super::markup::{frac, label, num, sym, text, unit, Align};
+use super::markup::{frac, label, num, sym, text, Align};
 use super::rows::{fmt, DIGITS};
+use super::worked::{Printed, Worked};
 use super::{NoteError, Writer};
 use crate::check::{is_zero, Table};
 use crate::linkage::{Dyad, Mechanism};
@@ -228,47 +229,46 @@ impl Slot {
         let deg = |x: f64| format!("{}°", num(x, 5, lang));
         w.doc.say(&format!("{} {at}:", w.word(K::AnalyticWorked)));
         let (xa, ya, l1) = (self.xa, self.ya, self.l1);
-        w.formula(&format!(
-            "{} = op(\"arctg\") {} = {}",
+        w.worked(Worked::new(
             sym(&phi_s),
-            frac(
-                &format!("{} + {} dot sin {}", n5(ya), n5(l1), deg(phi1)),
-                &format!("{} + {} dot cos {}", n5(xa), n5(l1), deg(phi1))
+            "",
+            format!(
+                "op(\"arctg\") {}",
+                frac(
+                    &format!("{} + {} dot sin {}", n5(ya), n5(l1), deg(phi1)),
+                    &format!("{} + {} dot cos {}", n5(xa), n5(l1), deg(phi1))
+                )
             ),
-            deg(phi)
+            Printed::new(phi, 5, "°".into(), std::f64::consts::PI / 180.0, lang),
         ));
-        w.formula(&format!(
-            "{} = {} = {}{}",
+        w.worked(Worked::new(
             sym(&big_l_s),
+            "",
             frac(
                 &format!("{} + {} dot sin {}", n5(ya), n5(l1), deg(phi1)),
-                &format!("sin {}", deg(phi))
+                &format!("sin {}", deg(phi)),
             ),
-            num(big_l, 4, lang),
-            unit(&unit_in("m", lang))
+            Printed::si(big_l, 4, "m", lang),
         ));
         let d13 = format!("({} - {})", deg(phi1), deg(phi));
-        w.formula(&format!(
-            "{} = {} = {}{}",
+        w.worked(Worked::new(
             sym(&omega_s),
+            "",
             frac(
                 &format!("{} dot {} dot cos{d13}", n5(omega1), n5(l1)),
-                &n(big_l)
+                &n(big_l),
             ),
-            num(omega, 4, lang),
-            unit(&unit_in("rad/s", lang))
+            Printed::si(omega, 4, "rad/s", lang),
         ));
-        w.formula(&format!(
-            "{} = -{} dot {} dot sin{d13} = {}{}",
+        w.worked(Worked::new(
             sym(&vr_s),
-            n5(omega1),
-            n5(l1),
-            num(vr, 4, lang),
-            unit(&unit_in("m/s", lang))
+            "",
+            format!("-{} dot {} dot sin{d13}", n5(omega1), n5(l1)),
+            Printed::si(vr, 4, "m/s", lang),
         ));
-        w.formula(&format!(
-            "{} = {} = {}{}",
+        w.worked(Worked::new(
             sym(&eps_s),
+            "",
             frac(
                 &format!(
                     "-{}^2 dot {} dot sin{d13} - 2 dot {} dot {}",
@@ -277,29 +277,23 @@ impl Slot {
                     n(vr),
                     n(omega)
                 ),
-                &n(big_l)
+                &n(big_l),
             ),
-            num(eps, 4, lang),
-            unit(&unit_in("rad/s^2", lang))
+            Printed::si(eps, 4, "rad/s^2", lang),
         ));
         if let Some((d, l)) = &self.far {
             if let (Some(v), Some(acc)) = (col(&format!("V_{d}")), col(&format!("a_{d}"))) {
-                w.formula(&format!(
-                    "{} = {} dot {} = {}{}",
+                w.worked(Worked::new(
                     sym(&format!("V_{{{d}}}")),
-                    num(omega.abs(), 4, lang),
-                    n5(*l),
-                    num(v, 4, lang),
-                    unit(&unit_in("m/s", lang))
+                    "",
+                    format!("{} dot {}", num(omega.abs(), 4, lang), n5(*l)),
+                    Printed::si(v, 4, "m/s", lang),
                 ));
-                w.formula(&format!(
-                    "{} = {} dot sqrt({}^2 + {}^4) = {}{}",
+                w.worked(Worked::new(
                     sym(&format!("a_{{{d}}}")),
-                    n5(*l),
-                    n(eps),
-                    n(omega),
-                    num(acc, 4, lang),
-                    unit(&unit_in("m/s^2", lang))
+                    "",
+                    format!("{} dot sqrt({}^2 + {}^4)", n5(*l), n(eps), n(omega)),
+                    Printed::si(acc, 4, "m/s^2", lang),
                 ));
             }
         }

@@ -1,13 +1,14 @@
 //! The cam section: the law's extremes and the least base radius worked (seed 000 §3:
 //! symbols, numbers, result), the roller's choice, the diagrams and the profile, Table 7.
 
-use super::markup::{frac, label, num, sym, text, unit, Align};
+use super::markup::{frac, label, num, sym, text, Align};
 use super::rows::{by_position, of_scene, quantities};
+use super::worked::{Printed, Worked};
 use super::{NoteError, Writer};
 use crate::cam::{Closure, Follower, Given, Law, SpecialProfile};
 use crate::check::{Method, Symbol};
 use crate::scene::PlateKind;
-use crate::words::{unit_in, CamText, CaseMeaning as M, NoteText as T};
+use crate::words::{CamText, CaseMeaning as M, NoteText as T};
 
 /// The cam: the law, the diagrams, r_min, the profile and the transmission (pressure)
 /// angle, Table 7.
@@ -181,7 +182,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let cam = w.session.cam()?;
     let lang = w.lang;
     let n = |x: f64| num(x, 4, lang);
-    let mm = |x: f64| format!("{}{}", num(x * 1e3, 4, lang), unit(&unit_in("mm", lang)));
+    let mm = |x: f64| Printed::mm(x, 4, lang);
     let s = &cam.spec;
     let stroke = sym(s.stroke_symbol());
     let phases = [
@@ -202,12 +203,11 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         };
         let phase_word = [M::RisePhase, M::ReturnPhase][k];
         lines.push((
-            format!(
-                "({})_(max) = {} = {} = {}",
-                sym("dS/dφ"),
+            Worked::new(
+                format!("({})_(max)", sym("dS/dφ")),
                 frac(&format!("{v} {stroke}"), &phi),
                 substituted(v, ""),
-                mm(cv * s.stroke / phase)
+                mm(cv * s.stroke / phase),
             ),
             vec![
                 ("dS/dφ", M::VelocityAnalogue, "mm"),
@@ -216,12 +216,11 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             Some((format!("φ_{{{index}}}"), phase_word)),
         ));
         lines.push((
-            format!(
-                "({})_(max) = {} = {} = {}",
-                sym("d^{2}S/dφ^{2}"),
+            Worked::new(
+                format!("({})_(max)", sym("d^{2}S/dφ^{2}")),
                 frac(&format!("{a} {stroke}"), &format!("{phi}^2")),
                 substituted(a, "^2"),
-                mm(ca * s.stroke / (phase * phase))
+                mm(ca * s.stroke / (phase * phase)),
             ),
             vec![("d^{2}S/dφ^{2}", M::AccelerationAnalogue, "mm")],
             None,
@@ -229,11 +228,11 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     }
     if !lines.is_empty() {
         w.doc.say(w.word(T::CamPeaks));
-        for (l, items, phase) in &lines {
-            w.formula(l);
+        for (l, items, phase) in lines {
+            w.worked(l);
             let mut words: Vec<(&str, &str, &str)> =
                 items.iter().map(|(s, m, u)| (*s, w.word(*m), *u)).collect();
-            if let Some((label, m)) = phase {
+            if let Some((label, m)) = &phase {
                 words.push((label.as_str(), w.word(*m), "rad"));
             }
             w.explain(&words);
@@ -244,15 +243,15 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         let mu = cam.diagrams.s_scale;
         let r = cam.radius.graphical;
         w.doc.say(w.word(T::CamRadiusWorked));
-        w.formula(&format!(
-            "{} = {} dot {} = {} dot {} = {}{}",
+        w.worked(Worked::new(
             sym("r_{min}"),
-            sym("O_{1}B_{0}"),
-            sym("μ_{S}"),
-            num(mu.to_mm(r), 4, lang),
-            num(mu.value(), 4, lang),
-            num(r, 4, lang),
-            unit(&unit_in("m", lang))
+            format!("{} dot {}", sym("O_{1}B_{0}"), sym("μ_{S}")),
+            format!(
+                "{} dot {}",
+                num(mu.to_mm(r), 4, lang),
+                num(mu.value(), 4, lang)
+            ),
+            Printed::si(r, 4, "m", lang),
         ));
         w.explain(&[
             ("r_{min}", w.word(M::BaseRadius), "m"),
@@ -269,18 +268,23 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         let (base, rho) = (cam.base, cam.inversion.rho_min);
         w.doc.say(w.word(T::CamRollerWorked));
         let k = |x: f64| num(x, 1, lang);
-        w.formula(&format!(
-            "{} = min({} {}; {} {}) = min({} dot {}; {} dot {}) = {}",
+        w.worked(Worked::new(
             sym("r_{р}"),
-            k(0.4),
-            sym("r_{0}"),
-            k(0.8),
-            sym("ρ_{min}"),
-            k(0.4),
-            n(base * 1e3),
-            k(0.8),
-            n(rho * 1e3),
-            mm(cam.roller)
+            format!(
+                "min({} {}; {} {})",
+                k(0.4),
+                sym("r_{0}"),
+                k(0.8),
+                sym("ρ_{min}")
+            ),
+            format!(
+                "min({} dot {}; {} dot {})",
+                k(0.4),
+                n(base * 1e3),
+                k(0.8),
+                n(rho * 1e3)
+            ),
+            Printed::mm(cam.roller, 4, lang),
         ));
         w.explain(&[
             ("r_{р}", w.word(M::RollerRadius), "mm"),

@@ -2,10 +2,11 @@
 //! μ_S from the stroke and the S diagram's largest ordinate where the law's d²S/dφ² was
 //! integrated, and the analogues' scales through the pole distances.
 
-use super::markup::{frac, num, sym, unit};
+use super::markup::{frac, num, sym};
+use super::worked::{Printed, Worked};
 use super::Writer;
 use crate::cam::{CamDiagrams, CamSpec};
-use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
+use crate::words::{CaseMeaning as M, NoteText as T};
 use std::f64::consts::TAU;
 
 /// The unit of μ_S′: dS/dφ (m/rad) per mm of its diagram.
@@ -18,16 +19,13 @@ const ACCELERATION_UNIT: &str = "m/(rad^2*mm)";
 pub(super) fn scales(w: &mut Writer<'_, '_>, d: &CamDiagrams, spec: &CamSpec) {
     let lang = w.lang;
     let n = |x: f64| num(x, 4, lang);
-    let unit_of = |si: &str| unit(&unit_in(si, lang));
     let (phi, [h1, h2]) = (d.phi.value(), d.poles);
     w.doc.say(w.word(T::CamScalesWorked));
-    w.formula(&format!(
-        "{} = {} = {} = {}{}",
+    w.worked(Worked::new(
         sym("μ_{φ}"),
         frac("2 π", &sym("L")),
         frac(&num(TAU, 5, lang), &n(d.phi.to_mm(TAU))),
-        n(phi),
-        unit_of("rad/mm")
+        Printed::si(phi, 4, "rad/mm", lang),
     ));
     w.explain(&[
         ("μ_{φ}", w.word(M::CamAngleScale), "rad/mm"),
@@ -35,13 +33,11 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &CamDiagrams, spec: &CamSpec) {
     ]);
     if let Some(y) = d.y_max {
         let h = spec.stroke_symbol();
-        w.formula(&format!(
-            "{} = {} = {} = {}{}",
+        w.worked(Worked::new(
             sym("μ_{S}"),
             frac(&sym(h), &sym("y_{max}")),
             frac(&format!("{} dot 10^(-3)", n(spec.stroke * 1e3)), &n(y)),
-            n(d.s_scale.value()),
-            unit_of("m/mm")
+            Printed::si(d.s_scale.value(), 4, "m/mm", lang),
         ));
         w.explain(&[
             ("μ_{S}", w.word(M::DisplacementScale), "m/mm"),
@@ -74,13 +70,11 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &CamDiagrams, spec: &CamSpec) {
             ACCELERATION_UNIT,
         ),
     ] {
-        w.formula(&format!(
-            "{} = {} = {} = {}{}",
+        w.worked(Worked::new(
             sym(scale),
             frac(&sym(of.0), &format!("{} {}", sym("μ_{φ}"), sym(pole))),
             frac(&n(of.1), &format!("{} dot {}", n(phi), n(h))),
-            n(value),
-            unit_of(si)
+            Printed::si(value, 4, si, lang),
         ));
         w.explain(&[
             (scale, w.word(meaning), si),

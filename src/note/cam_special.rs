@@ -4,8 +4,10 @@
 //! numbers, result, every number the session's.
 
 use super::markup::{frac, num, sym, unit};
+use super::worked::{Printed, Worked};
 use super::{NoteError, Writer};
 use crate::cam::{Special, SpecialProfile};
+use crate::check::{Key, Symbol};
 use crate::study::StudyError;
 use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
 use std::f64::consts::TAU;
@@ -23,18 +25,18 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
         SpecialProfile::FlatRocker { frame, .. } => {
             let ratio = (frame.base + frame.face_offset) / frame.centres;
             w.doc.say(w.word(T::CamFlatRockerStart));
-            w.formula(&format!(
-                "sin {} = {} = {} = {}, quad {} = {}",
-                sym("ψ_{0}"),
-                frac(&format!("{} + {}", sym("r_{0}"), sym("e")), &sym("a")),
-                frac(
-                    &format!("{} + {}", n(frame.base * 1e3), n(frame.face_offset * 1e3)),
-                    &n(frame.centres * 1e3)
-                ),
-                n(ratio),
-                sym("ψ_{0}"),
-                deg(ratio.asin())
-            ));
+            w.worked(
+                Worked::new(
+                    format!("sin {}", sym("ψ_{0}")),
+                    frac(&format!("{} + {}", sym("r_{0}"), sym("e")), &sym("a")),
+                    frac(
+                        &format!("{} + {}", n(frame.base * 1e3), n(frame.face_offset * 1e3)),
+                        &n(frame.centres * 1e3),
+                    ),
+                    Printed::plain(ratio, 4, lang),
+                )
+                .aside(format!(", quad {} = {}", sym("ψ_{0}"), deg(ratio.asin()))),
+            );
             w.explain(&[
                 ("ψ_{0}", w.word(M::RockerStart), "deg"),
                 ("r_{0}", w.word(M::InitialRadius), "mm"),
@@ -56,13 +58,12 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 ("ρ", w.word(M::Curvature), "mm"),
                 ("h", w.word(M::FaceDistance), "mm"),
             ]);
-            w.formula(&format!(
-                "{} = {} quad (\"{}\" {})",
-                sym("ρ_{min}"),
-                mm(rho),
-                w.word(T::CamOnTheBoard),
-                mm(drawn)
-            ));
+            let board = format!(" quad (\"{}\" {})", w.word(T::CamOnTheBoard), mm(drawn));
+            w.worked(
+                Worked::new(sym("ρ_{min}"), "", "", Printed::mm(rho, 4, lang))
+                    .aside(board)
+                    .gives(Key::of_scene(Symbol::CurvatureRadius, "min")),
+            );
             w.explain(&[("ρ_{min}", w.word(M::CurvatureMin), "mm")]);
         }
         SpecialProfile::Sliding { frame, .. } => {
@@ -85,21 +86,23 @@ pub(super) fn worked(w: &mut Writer<'_, '_>, cam: &Special) -> Result<(), NoteEr
                 ("ξ", w.word(M::CamTravel), "mm"),
                 ("X", w.word(M::CamLength), "mm"),
             ]);
-            w.formula(&format!(
-                "{} = {} = {} = {} quad (\"{}\" {})",
-                sym("X_{min}"),
-                frac(
-                    &format!("2π dot max|{}|", sym("dS/dφ")),
-                    &format!("op(\"tg\") {}", sym("λ_{max}"))
-                ),
-                frac(
-                    &format!("2π dot {}", n(v * 1e3)),
-                    &format!("op(\"tg\") {}", deg(lambda_max))
-                ),
-                mm(exact),
-                w.word(T::CamOnTheBoard),
-                mm(read)
-            ));
+            let board = format!(" quad (\"{}\" {})", w.word(T::CamOnTheBoard), mm(read));
+            w.worked(
+                Worked::new(
+                    sym("X_{min}"),
+                    frac(
+                        &format!("2π dot max|{}|", sym("dS/dφ")),
+                        &format!("op(\"tg\") {}", sym("λ_{max}")),
+                    ),
+                    frac(
+                        &format!("2π dot {}", n(v * 1e3)),
+                        &format!("op(\"tg\") {}", deg(lambda_max)),
+                    ),
+                    Printed::mm(exact, 4, lang),
+                )
+                .aside(board)
+                .gives(Key::of_scene(Symbol::Length, "travel_min")),
+            );
             w.explain(&[
                 ("X_{min}", w.word(M::CamLengthMin), "mm"),
                 ("λ_{max}", w.word(M::PressureMax), "deg"),

@@ -6,6 +6,7 @@
 use super::markup::{frac, num, sym, text, unit, Align};
 use super::plan_reads::Plans;
 use super::rows::{numbers, values_and_errors, Column};
+use super::worked::{Printed, Worked};
 use super::Writer;
 use crate::check::{Method, Row, Symbol};
 use crate::kinematics::KinDiagrams;
@@ -67,13 +68,11 @@ fn scales(w: &mut Writer<'_, '_>, d: &KinDiagrams) {
     // The base in mm: the turn's intervals (rad) at μ_φ, as the chart lays them off.
     let base = d.scales.x.to_mm(d.first.dx * intervals as f64);
     w.doc.say(w.word(K::PhiScale));
-    w.formula(&format!(
-        "{} = {} = {} = {}{}",
+    w.worked(Worked::new(
         sym("μ_{φ}"),
         frac("2 π", &sym("L")),
         frac(&num(std::f64::consts::TAU, 5, lang), &num(base, 5, lang)),
-        num(mu_phi, 4, lang),
-        unit(d.scales.x.quantity.unit(lang))
+        Printed::new(mu_phi, 4, unit(d.scales.x.quantity.unit(lang)), 1.0, lang),
     ));
     w.explain(&[
         ("μ_{φ}", w.word(M::PhiScale), "rad/mm"),
@@ -81,35 +80,31 @@ fn scales(w: &mut Writer<'_, '_>, d: &KinDiagrams) {
     ]);
     let (h1, h2) = (d.first.pole_mm, d.second.pole_mm);
     let unit_of = |si: &str| unit(&unit_in(si, lang));
-    w.formula(&format!(
-        "{} = {} = {} = {}{}",
+    w.worked(Worked::new(
         sym("μ_{S′}"),
         frac(&sym("μ_{S}"), &format!("{} {}", sym("μ_{φ}"), sym("H_{1}"))),
         frac(
             &num(mu_s, 4, lang),
-            &format!("{} dot {}", num(mu_phi, 4, lang), num(h1, 4, lang))
+            &format!("{} dot {}", num(mu_phi, 4, lang), num(h1, 4, lang)),
         ),
-        num(d.first.scale.value(), 4, lang),
-        unit_of(FIRST_UNIT)
+        Printed::new(d.first.scale.value(), 4, unit_of(FIRST_UNIT), 1.0, lang),
     ));
     w.explain(&[
         ("μ_{S′}", w.word(M::FirstScale), FIRST_UNIT),
         ("μ_{S}", w.word(M::DisplacementScale), "m/mm"),
         ("H_{1}", w.word(M::PoleFirst), "mm"),
     ]);
-    w.formula(&format!(
-        "{} = {} = {} = {}{}",
+    w.worked(Worked::new(
         sym("μ_{S″}"),
         frac(
             &sym("μ_{S′}"),
-            &format!("{} {}", sym("μ_{φ}"), sym("H_{2}"))
+            &format!("{} {}", sym("μ_{φ}"), sym("H_{2}")),
         ),
         frac(
             &num(d.first.scale.value(), 4, lang),
-            &format!("{} dot {}", num(mu_phi, 4, lang), num(h2, 4, lang))
+            &format!("{} dot {}", num(mu_phi, 4, lang), num(h2, 4, lang)),
         ),
-        num(d.second.scale.value(), 4, lang),
-        unit_of(SECOND_UNIT)
+        Printed::new(d.second.scale.value(), 4, unit_of(SECOND_UNIT), 1.0, lang),
     ));
     w.explain(&[
         ("μ_{S″}", w.word(M::SecondScale), SECOND_UNIT),
@@ -233,17 +228,16 @@ fn worked_value(
             format!(" dot {}{power}", num(w1, 5, lang)),
         )
     };
-    w.formula(&format!(
-        "{} = {} {}{} = {} dot {}{} = {}{}",
+    w.worked(Worked::new(
         sym(symbol),
-        sym(y),
-        sym(mu),
-        omega.0,
-        num(mm, 4, lang),
-        num(mu_value, 4, lang),
-        omega.1,
-        num(value, 4, lang),
-        unit(&unit_in(si, lang))
+        format!("{} {}{}", sym(y), sym(mu), omega.0),
+        format!(
+            "{} dot {}{}",
+            num(mm, 4, lang),
+            num(mu_value, 4, lang),
+            omega.1
+        ),
+        Printed::si(value, 4, si, lang),
     ));
     let what = format!(
         "{} {point} {}",

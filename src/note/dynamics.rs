@@ -9,8 +9,9 @@ use super::moments::{
     crank_speed, explain_words, fill, long_sum, product, visible, ONE_LINE_CHARS,
 };
 use super::rows::{by_position, numbers, of_scene, quantities, Column};
+use super::worked::{Printed, Worked};
 use super::{NoteError, Writer};
-use crate::check::{Method, Symbol};
+use crate::check::{Key, Method, Symbol};
 use crate::dynamics::{Breakdown, Dynamics, LinkShare};
 use crate::scene::PlateKind;
 use crate::words::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
@@ -294,29 +295,19 @@ fn reduced_moment(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(), 
         }
     }
     let value = b.reduced().m();
-    let result = format!("{}{}", num(value, 5, lang), unit(&unit_in("N*m", lang)));
+    let result = Printed::si(value, 5, "N*m", lang);
+    let key = Key::at_position(Symbol::Moment, "red", &d.labels[i]);
     if visible(&numbers.join(" + ")) <= ONE_LINE_CHARS {
-        w.formula(&format!(
-            "{} = {} = {result}",
-            sym("M_{пр}"),
-            frac(&numbers.join(" + "), &num(w1, 5, lang)),
-        ));
+        let substituted = frac(&numbers.join(" + "), &num(w1, 5, lang));
+        w.worked(Worked::new(sym("M_{пр}"), "", substituted, result).gives(key));
     } else {
         // The powers on lines of their own, then their total through ω₁.
         let pieces: Vec<(f64, String)> = numbers.into_iter().map(|n| (1.0, n)).collect();
         let power = value * w1;
-        let total = format!("{}{}", num(power, 6, lang), unit(&unit_in("W", lang)));
-        long_sum(
-            w,
-            &format!("{} {}", sym("M_{пр}"), sym("ω_{1}")),
-            &pieces,
-            &total,
-        );
-        w.formula(&format!(
-            "{} = {} = {result}",
-            sym("M_{пр}"),
-            frac(&num(power, 6, lang), &num(w1, 5, lang)),
-        ));
+        let left = format!("{} {}", sym("M_{пр}"), sym("ω_{1}"));
+        w.worked(long_sum(&left, &pieces, Printed::si(power, 6, "W", lang)));
+        let substituted = frac(&num(power, 6, lang), &num(w1, 5, lang));
+        w.worked(Worked::new(sym("M_{пр}"), "", substituted, result).gives(key));
     }
     Ok(())
 }
@@ -365,21 +356,15 @@ fn reduced_inertia(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) -> Result<(),
             ));
         }
     }
-    let result = format!(
-        "{}{}",
-        num(b.reduced().j, 5, lang),
-        unit(&unit_in("kg*m^2", lang))
-    );
-    if visible(&numbers.join(" + ")) <= ONE_LINE_CHARS {
-        w.formula(&format!(
-            "{} = {} = {result}",
-            sym("J_{пр}"),
-            numbers.join(" + ")
-        ));
+    let result = Printed::si(b.reduced().j, 5, "kg*m^2", lang);
+    let key = Key::at_position(Symbol::Inertia, "red", &d.labels[i]);
+    let row = if visible(&numbers.join(" + ")) <= ONE_LINE_CHARS {
+        Worked::new(sym("J_{пр}"), "", numbers.join(" + "), result)
     } else {
         let pieces: Vec<(f64, String)> = numbers.into_iter().map(|n| (1.0, n)).collect();
-        long_sum(w, &sym("J_{пр}"), &pieces, &result);
-    }
+        long_sum(&sym("J_{пр}"), &pieces, result)
+    };
+    w.worked(row.gives(key));
     Ok(())
 }
 
@@ -393,8 +378,7 @@ fn links_energy(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) {
     let j_const = d.graphical_shares.first().map_or(0.0, |b| b.j_const);
     w.doc.say(w.word(N::LinksEnergy));
     let t = (g.j - j_const) * d.w_avg * d.w_avg / 2.0;
-    w.formula(&format!(
-        "{} = {} = {} = {}{}",
+    w.worked(Worked::new(
         sym("T_{зв}"),
         frac(
             &format!(
@@ -403,7 +387,7 @@ fn links_energy(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) {
                 sym("J_{const}"),
                 sym("ω_{ср}")
             ),
-            "2"
+            "2",
         ),
         frac(
             &format!(
@@ -412,10 +396,9 @@ fn links_energy(w: &mut Writer<'_, '_>, d: &Dynamics, i: usize) {
                 num(j_const, 5, lang),
                 num(d.w_avg, 5, lang)
             ),
-            "2"
+            "2",
         ),
-        num(t, 5, lang),
-        unit(&unit_in("J", lang))
+        Printed::si(t, 5, "J", lang),
     ));
     let items = [
         ("T_{зв}", M::LinksEnergy, "J"),
@@ -441,11 +424,7 @@ fn work_scale(w: &mut Writer<'_, '_>, d: &Dynamics) {
             num(g.scale_phi.value(), 4, lang),
             num(g.pole_h, 4, lang),
         ],
-        &format!(
-            "{}{}",
-            num(g.scale_a.value(), 5, lang),
-            unit(&unit_in("J/mm", lang))
-        ),
+        Printed::si(g.scale_a.value(), 5, "J/mm", lang),
     );
     let items = [
         ("μ_{A}", M::WorkScale, "J/mm"),

@@ -7,33 +7,44 @@
 
 use super::markup::{frac, inline, label, num, sym, text, unit};
 use super::moments::{explain_words, fill};
+use super::worked::{Printed, Worked};
 use super::Writer;
+use crate::check::{Key, Method, Symbol};
 use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
 use crate::words::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+
+/// The unit of a moment of inertia (a key of the catalogue).
+const JM: &str = "kg*m^2";
+
+/// The report's key of the flywheel's `symbol` (J_м, D).
+fn flywheel(symbol: Symbol) -> Key {
+    Key::of_scene(symbol, "flywheel")
+}
 
 /// J_м by each textbook route, worked from what its diagram gives.
 pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {
     let lang = w.lang;
     let g = &d.diagrams;
     let (delta, om) = (d.spec.delta, d.w_avg);
-    let jm = unit(&unit_in("kg*m^2", lang));
     // Wittenbauer: kl read off the energy–mass diagram at its μ_T.
     let mu = g.scale_tw.value();
     let kl = g.wittenbauer.range / mu;
     w.doc.say(w.word(N::WittenbauerWorked));
-    w.formula(&format!(
-        "{} = {} = {} = {}{jm}",
-        sym("J_{м}"),
-        frac(
-            &format!("{} {}", sym("μ_{T}"), sym("kl")),
-            &format!("δ {}^2", sym("ω_{ср}"))
-        ),
-        frac(
-            &format!("{} dot {}", num(mu, 4, lang), num(kl, 4, lang)),
-            &format!("{} dot {}^2", num(delta, 4, lang), num(om, 5, lang))
-        ),
-        num(g.wittenbauer.read, 5, lang),
-    ));
+    w.worked(
+        Worked::new(
+            sym("J_{м}"),
+            frac(
+                &format!("{} {}", sym("μ_{T}"), sym("kl")),
+                &format!("δ {}^2", sym("ω_{ср}")),
+            ),
+            frac(
+                &format!("{} dot {}", num(mu, 4, lang), num(kl, 4, lang)),
+                &format!("{} dot {}^2", num(delta, 4, lang), num(om, 5, lang)),
+            ),
+            Printed::si(g.wittenbauer.read, 5, JM, lang),
+        )
+        .gives_by(flywheel(Symbol::Inertia), Method::Wittenbauer),
+    );
     let items = [
         ("J_{м}", M::Flywheel, "kg*m^2"),
         ("μ_{T}", M::EnergyScale, "J/mm"),
@@ -45,18 +56,26 @@ pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {
     // Merkin: the range of T_I, less the constant inertia.
     let j_const = d.spec.constant_inertia();
     w.doc.say(w.word(N::MerkinWorked));
-    w.formula(&format!(
-        "{} = {} - {} = {} - {} = {}{jm}",
-        sym("J_{м}"),
-        frac(&sym("ΔT_{I}"), &format!("δ {}^2", sym("ω_{ср}"))),
-        sym("J_{const}"),
-        frac(
-            &num(g.merkin.range, 5, lang),
-            &format!("{} dot {}^2", num(delta, 4, lang), num(om, 5, lang))
-        ),
-        num(j_const, 5, lang),
-        num(g.merkin.read, 5, lang),
-    ));
+    w.worked(
+        Worked::new(
+            sym("J_{м}"),
+            format!(
+                "{} - {}",
+                frac(&sym("ΔT_{I}"), &format!("δ {}^2", sym("ω_{ср}"))),
+                sym("J_{const}")
+            ),
+            format!(
+                "{} - {}",
+                frac(
+                    &num(g.merkin.range, 5, lang),
+                    &format!("{} dot {}^2", num(delta, 4, lang), num(om, 5, lang))
+                ),
+                num(j_const, 5, lang)
+            ),
+            Printed::si(g.merkin.read, 5, JM, lang),
+        )
+        .gives_by(flywheel(Symbol::Inertia), Method::Merkin),
+    );
     let items = [
         ("ΔT_{I}", M::MerkinRange, "J"),
         ("J_{const}", M::ConstantInertia, "kg*m^2"),
@@ -79,26 +98,22 @@ pub(super) fn drive(w: &mut Writer<'_, '_>, d: &Dynamics) {
     let mu = g.scale_m.value();
     let mv = g.m_drive.abs();
     w.doc.par(&[label(intro)]);
-    w.formula(&format!(
-        "{} = {} {} = {} dot {} = {}{}",
-        sym(m),
-        sym("μ_{M}"),
-        sym(y),
-        num(mu, 4, lang),
-        num(mv / mu, 4, lang),
-        num(mv, 5, lang),
-        unit(&unit_in("N*m", lang))
-    ));
+    let moment = Key::of_scene(Symbol::Moment, if engine { "res" } else { "drive" });
+    w.worked(
+        Worked::new(
+            sym(m),
+            format!("{} {}", sym("μ_{M}"), sym(y)),
+            format!("{} dot {}", num(mu, 4, lang), num(mv / mu, 4, lang)),
+            Printed::si(mv, 5, "N*m", lang),
+        )
+        .gives_by(moment, Method::Integration),
+    );
     explain_words(w, &[(m, M::ConstantMoment, "N*m"), (y, M::Ordinate, "mm")]);
-    w.formula(&format!(
-        "{} = {} {} = {} dot {} = {}{}",
+    w.worked(Worked::new(
         sym("N_{ср}"),
-        sym(m),
-        sym("ω_{ср}"),
-        num(mv, 5, lang),
-        num(d.w_avg, 5, lang),
-        num(mv * d.w_avg, 5, lang),
-        unit(&unit_in("W", lang)),
+        format!("{} {}", sym(m), sym("ω_{ср}")),
+        format!("{} dot {}", num(mv, 5, lang), num(d.w_avg, 5, lang)),
+        Printed::si(mv * d.w_avg, 5, "W", lang),
     ));
     let items = [("N_{ср}", M::MeanPower, "W")];
     explain_words(w, &items);
@@ -151,17 +166,24 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
         ],
     );
     w.doc.par(&[label(&sentence)]);
-    let m_unit = unit(&unit_in("m", lang));
-    w.formula(&format!(
-        "{} = root(5, {}) = root(5, {}) = {}{m_unit}",
-        sym("D"),
-        frac(&sym("J_{м}"), &format!("{} ρ", sym("K_{j}"))),
-        frac(
-            &num(s.j, 5, lang),
-            &format!("{} dot {}", num(fw.k_j, 4, lang), num(fw.rho, 5, lang))
-        ),
-        num(s.d, 4, lang),
-    ));
+    w.worked(
+        Worked::new(
+            sym("D"),
+            format!(
+                "root(5, {})",
+                frac(&sym("J_{м}"), &format!("{} ρ", sym("K_{j}")))
+            ),
+            format!(
+                "root(5, {})",
+                frac(
+                    &num(s.j, 5, lang),
+                    &format!("{} dot {}", num(fw.k_j, 4, lang), num(fw.rho, 5, lang))
+                )
+            ),
+            Printed::si(s.d, 4, "m", lang),
+        )
+        .gives_by(flywheel(Symbol::Length), Method::Wittenbauer),
+    );
     let items = [
         ("D", M::Diameter, "m"),
         ("K_{j}", M::ShapeJ, ""),
@@ -177,16 +199,14 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
     w.doc.par(&[label(&verdict)]);
     w.doc.say(w.word(N::RimSpeed));
     let v = s.rim_speed(d.w_avg);
-    w.formula(&format!(
-        "{} = {} = {} = {}{}",
+    w.worked(Worked::new(
         sym("v"),
         frac(&format!("{} {}", sym("ω_{ср}"), sym("D")), "2"),
         frac(
             &format!("{} dot {}", num(d.w_avg, 5, lang), num(s.d, 4, lang)),
-            "2"
+            "2",
         ),
-        num(v, 4, lang),
-        unit(&unit_in("m/s", lang))
+        Printed::si(v, 4, "m/s", lang),
     ));
     let items = [("v", M::RimSpeed, "m/s")];
     explain_words(w, &items);
@@ -249,15 +269,15 @@ fn shape_law(
     (value, digits, unit_key): (f64, usize, &str),
 ) {
     let lang = w.lang;
-    w.formula(&format!(
-        "{} = {} ρ {}^{power} = {} dot {} dot {}^{power} = {}{}",
+    w.worked(Worked::new(
         sym(lhs),
-        sym(k_sym),
-        sym("D"),
-        num(k, 4, lang),
-        num(d.spec.flywheel.rho, 5, lang),
-        num(d.made.d, 4, lang),
-        num(value, digits, lang),
-        unit(&unit_in(unit_key, lang))
+        format!("{} ρ {}^{power}", sym(k_sym), sym("D")),
+        format!(
+            "{} dot {} dot {}^{power}",
+            num(k, 4, lang),
+            num(d.spec.flywheel.rho, 5, lang),
+            num(d.made.d, 4, lang)
+        ),
+        Printed::si(value, digits, unit_key, lang),
     ));
 }

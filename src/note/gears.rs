@@ -4,9 +4,9 @@
 
 use super::markup::{frac, inline, label, num, sym, text, Align};
 use super::rows::{by_position, of_scene, quantities};
-use super::worked::{deg, worked, INV};
+use super::worked::{deg, Printed, Worked, INV};
 use super::{NoteError, Writer};
-use crate::check::{Method, Symbol};
+use crate::check::{Key, Method, Symbol};
 use crate::gears::{inv, GearPair, Generation};
 use crate::scene::PlateKind;
 use crate::words::{unit_in, Meaning as M, NoteText as T, Text as S};
@@ -156,42 +156,52 @@ fn contact_ratio(w: &mut Writer<'_, '_>, p: &GearPair, ab_read: f64) {
     let n = |x: f64| num(x, 5, lang);
     let [z1, z2] = p.spec.z;
     w.doc.say(w.word(T::ContactRatioWorked));
-    worked(
-        w,
-        &sym("ε_{α}"),
-        &frac(
-            &format!(
-                "{} op(\"tg\") {} + {} op(\"tg\") {} - ({} + {}) op(\"tg\") {}",
-                sym("z_{1}"),
-                sym("α_{a1}"),
-                sym("z_{2}"),
-                sym("α_{a2}"),
-                sym("z_{1}"),
-                sym("z_{2}"),
-                sym("α_{w}")
+    w.worked(
+        Worked::new(
+            sym("ε_{α}"),
+            frac(
+                &format!(
+                    "{} op(\"tg\") {} + {} op(\"tg\") {} - ({} + {}) op(\"tg\") {}",
+                    sym("z_{1}"),
+                    sym("α_{a1}"),
+                    sym("z_{2}"),
+                    sym("α_{a2}"),
+                    sym("z_{1}"),
+                    sym("z_{2}"),
+                    sym("α_{w}")
+                ),
+                "2 π",
             ),
-            "2 π",
-        ),
-        &frac(
-            &format!(
-                "{z1} dot op(\"tg\") {} + {z2} dot op(\"tg\") {} - {} dot op(\"tg\") {}",
-                deg(p.alpha_a[0], lang),
-                deg(p.alpha_a[1], lang),
-                z1 + z2,
-                deg(p.alpha_w, lang)
+            frac(
+                &format!(
+                    "{z1} dot op(\"tg\") {} + {z2} dot op(\"tg\") {} - {} dot op(\"tg\") {}",
+                    deg(p.alpha_a[0], lang),
+                    deg(p.alpha_a[1], lang),
+                    z1 + z2,
+                    deg(p.alpha_w, lang)
+                ),
+                "2 π",
             ),
-            "2 π",
+            Printed::number(p.eps_formula, lang),
+        )
+        .gives_by(
+            Key::of_scene(Symbol::ContactRatio, "alpha"),
+            Method::Formula,
         ),
-        n(p.eps_formula),
     );
     w.explain(&[("ε_{α}", M::ContactRatio.get(lang), "")]);
     w.doc.say(w.word(T::ContactRatioPicture));
-    worked(
-        w,
-        &sym("ε′_{α}"),
-        &frac(&sym("B_{1}B_{2}"), &sym("p_{b}")),
-        &frac(&n(ab_read * 1e3), &n(p.p_b * 1e3)),
-        n(ab_read / p.p_b),
+    w.worked(
+        Worked::new(
+            sym("ε′_{α}"),
+            frac(&sym("B_{1}B_{2}"), &sym("p_{b}")),
+            frac(&n(ab_read * 1e3), &n(p.p_b * 1e3)),
+            Printed::number(ab_read / p.p_b, lang),
+        )
+        .gives_by(
+            Key::of_scene(Symbol::ContactRatio, "alpha"),
+            Method::Meshing,
+        ),
     );
     w.explain(&[
         ("ε′_{α}", M::ContactRatioDrawn.get(lang), ""),

@@ -5,6 +5,7 @@
 //! ([`super::analytic`]).
 
 use super::markup::{label, num, sym, text, Align};
+use super::worked::{Printed, Worked};
 use super::{NoteError, Writer};
 use crate::linkage::Structure;
 use crate::words::{Meaning, NoteText as T, Text as S};
@@ -19,23 +20,23 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let redundant = s.pairs.iter().filter(|p| p.redundant).count() as u32;
     let n = |x: i64| num(x as f64, 6, lang);
     let chebyshev = |p5: u32, w_: i32| {
-        format!(
-            "{} = 3 {} - 2 {} - {} = 3 dot {} - 2 dot {} - {} = {}",
+        Worked::new(
             sym("W"),
-            sym("n"),
-            sym("p_{5}"),
-            sym("p_{4}"),
-            n(s.n as i64),
-            n(p5 as i64),
-            n(s.p4 as i64),
-            n(w_ as i64)
+            format!("3 {} - 2 {} - {}", sym("n"), sym("p_{5}"), sym("p_{4}")),
+            format!(
+                "3 dot {} - 2 dot {} - {}",
+                n(s.n as i64),
+                n(p5 as i64),
+                n(s.p4 as i64)
+            ),
+            Printed::plain(f64::from(w_), 6, lang),
         )
     };
     w.doc.par(&[
         text(w.word(T::MobilityChebyshev)),
         text(&format!("n = {}, p₅ = {}, p₄ = {}:", s.n, s.p5, s.p4)),
     ]);
-    w.formula(&chebyshev(s.p5, s.w));
+    w.worked(chebyshev(s.p5, s.w));
     w.explain(&[
         ("W", w.word(Meaning::Mobility), ""),
         ("n", w.word(Meaning::MovingLinks), ""),
@@ -54,7 +55,7 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
             w.word(T::WithRedundantPairs),
             names.join(", ")
         ))]);
-        w.formula(&chebyshev(s.p5_all, s.w_all));
+        w.worked(chebyshev(s.p5_all, s.w_all));
         w.doc.say(w.word(T::RedundantPairExplained));
     }
     w.doc.say(w.word(T::AssurGroups));
@@ -170,6 +171,7 @@ mod tests {
                     doc: Markup::default(),
                     files: Vec::new(),
                     explained: Explained::default(),
+                    worked: Vec::new(),
                 };
                 structure(&mut w).expect("structure");
                 kinematics(&mut w).expect("kinematics");

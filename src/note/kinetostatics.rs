@@ -5,18 +5,19 @@
 //! Zhukovsky's lever with every arm; the balancing load by both routes and the power.
 
 use super::machines::row;
-use super::markup::{label, num, sym, unit};
+use super::markup::{label, num, sym};
 use super::moments::{
     explain_owned, fill, meaning, moments_head, point_name, vector, worked_equation, Arms,
 };
 use super::rows::{of_scene, DIGITS};
+use super::worked::{Printed, Worked};
 use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
 use crate::geom::DVec2;
 use crate::scale::Lang;
 use crate::scene::PlateKind;
-use crate::words::{quantity, unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+use crate::words::{quantity, MachinesMeaning as M, MachinesNote as N, NoteText as T};
 
 /// The kinetostatics: every analysed position in turn.
 pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
@@ -71,15 +72,11 @@ fn inertia(w: &mut Writer<'_, '_>, spec: &ForceSpec, f: &PositionForces, p: &str
             // localised once, at the end, and a symbol is explained once whatever the language.
             let fi = quantity(Symbol::Force, &format!("in{k}"), Lang::Ru);
             let (m, acc) = (format!("m_{{{k}}}"), format!("a_{{{centre}}}"));
-            w.formula(&format!(
-                "{} = {} {} = {} dot {} = {}{}",
+            w.worked(Worked::new(
                 sym(&fi),
-                sym(&m),
-                sym(&acc),
-                num(link.mass, 4, lang),
-                num(a, DIGITS, lang),
-                num(force.graphical.abs(), DIGITS, lang),
-                unit(&unit_in("N", lang))
+                format!("{} {}", sym(&m), sym(&acc)),
+                format!("{} dot {}", num(link.mass, 4, lang), num(a, DIGITS, lang)),
+                Printed::si(force.graphical.abs(), DIGITS, "N", lang),
             ));
             let ks = [("k", k.to_string())];
             explain_owned(
@@ -100,15 +97,15 @@ fn inertia(w: &mut Writer<'_, '_>, spec: &ForceSpec, f: &PositionForces, p: &str
             }
             let mq = quantity(Symbol::Moment, &format!("in{k}"), Lang::Ru);
             let (j, e) = (format!("J_{{S{k}}}"), format!("ε_{{{k}}}"));
-            w.formula(&format!(
-                "{} = {} {} = {} dot {} = {}{}",
+            w.worked(Worked::new(
                 sym(&mq),
-                sym(&j),
-                sym(&e),
-                num(link.inertia, 4, lang),
-                num(eps.abs(), DIGITS, lang),
-                num(mi.graphical.abs(), DIGITS, lang),
-                unit(&unit_in("N*m", lang))
+                format!("{} {}", sym(&j), sym(&e)),
+                format!(
+                    "{} dot {}",
+                    num(link.inertia, 4, lang),
+                    num(eps.abs(), DIGITS, lang)
+                ),
+                Printed::si(mi.graphical.abs(), DIGITS, "N*m", lang),
             ));
             let ks = [("k", k.to_string())];
             explain_owned(

@@ -3,17 +3,17 @@
 //! found, the formula, the numbers, the result — then its table checking the construction
 //! against the calculation and its figures.
 
-use super::markup::{frac, num, sym, unit};
+use super::markup::{frac, num, sym};
 use super::rows::of_scene;
-use super::worked::{deg, worked};
+use super::worked::{deg, Printed, Worked};
 use super::{NoteError, Writer};
 use crate::balancing::{
     analytic, inertia_force, main_moment, main_vector, BalancingSpec, Correction, Corrective, Mass,
 };
-use crate::check::Symbol;
+use crate::check::{Key, Symbol};
 use crate::geom::DVec2;
 use crate::scene::PlateKind;
-use crate::words::{unit_in, CaseMeaning as M, CaseText as C, NoteText as T};
+use crate::words::{CaseMeaning as M, CaseText as C, NoteText as T};
 
 /// The balancing and friction studies of a scene that has them.
 pub(super) fn others(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
@@ -54,26 +54,21 @@ fn rotor(w: &mut Writer<'_, '_>, spec: &BalancingSpec) {
         for (i, m) in spec.masses.iter().enumerate() {
             let k = i + 1;
             let force = format!("F_{{и{k}}}");
-            worked(
-                w,
-                &sym(&force),
-                &format!(
+            w.worked(Worked::new(
+                sym(&force),
+                format!(
                     "{} ω^2 {}",
                     sym(&format!("m_{{{k}}}")),
                     sym(&format!("ρ_{{{k}}}"))
                 ),
-                &format!(
+                format!(
                     "{} dot {}^2 dot {}",
                     num(m.mass, 4, lang),
                     num(omega, 4, lang),
                     num(m.radius, 4, lang)
                 ),
-                format!(
-                    "{}{}",
-                    num(inertia_force(m, omega), 5, lang),
-                    unit(&unit_in("N", lang))
-                ),
-            );
+                Printed::si(inertia_force(m, omega), 5, "N", lang),
+            ));
             let (mass, radius) = (format!("m_{{{k}}}"), format!("ρ_{{{k}}}"));
             let words = [
                 w.word(M::InertiaForce),
@@ -166,13 +161,11 @@ fn projections(w: &mut Writer<'_, '_>, masses: &[Mass], about: Option<f64>) -> D
                 )
             })
             .collect();
-        w.formula(&format!(
-            "{} = {} = {} = {}{}",
+        w.worked(Worked::new(
             sym(&symbol),
             symbolic.join(" + "),
             numbers.join(" + "),
-            num(value, 5, lang),
-            unit(&unit_in(unit_si, lang))
+            Printed::si(value, 5, unit_si, lang),
         ));
         let words = [
             w.word(if about.is_none() {
@@ -209,15 +202,16 @@ fn correcting(
     let n = |x: f64| num(x, 5, lang);
     let (m, rho) = (format!("m_{{{index}}}"), format!("ρ_{{{index}}}"));
     let moment = c.unbalance.length();
-    let kgm = unit(&unit_in("kg*m", lang));
-    w.formula(&format!(
-        "{} {} = sqrt(({dx})^2 + ({dy})^2) = sqrt(({})^2 + ({})^2) = {}{kgm}",
-        sym(&m),
-        sym(&rho),
-        n(d.x),
-        n(d.y),
-        n(moment)
-    ));
+    let of = |symbol: Symbol| Key::of_scene(symbol, c.plane.subject());
+    w.worked(
+        Worked::new(
+            format!("{} {}", sym(&m), sym(&rho)),
+            format!("sqrt(({dx})^2 + ({dy})^2)"),
+            format!("sqrt(({})^2 + ({})^2)", n(d.x), n(d.y)),
+            Printed::si(moment, 5, "kg*m", lang),
+        )
+        .gives(of(Symbol::StaticMoment)),
+    );
     let words = [
         w.word(M::CorrectingMass),
         w.word(M::CorrectingRadius),
@@ -228,22 +222,29 @@ fn correcting(
         items.push(("L", w.word(M::PlaneSpan), "m"));
     }
     w.explain(&items);
-    worked(
-        w,
-        &sym(&m),
-        &frac(&format!("{} {}", sym(&m), sym(&rho)), &sym(&rho)),
-        &frac(&n(moment), &n(c.radius)),
-        format!("{}{}", n(c.mass()), unit(&unit_in("kg", lang))),
+    w.worked(
+        Worked::new(
+            sym(&m),
+            frac(&format!("{} {}", sym(&m), sym(&rho)), &sym(&rho)),
+            frac(&n(moment), &n(c.radius)),
+            Printed::si(c.mass(), 5, "kg", lang),
+        )
+        .gives(of(Symbol::Mass)),
     );
     if let Some(angle) = c.angle() {
         let a = format!("α_{{{index}}}");
-        w.formula(&format!(
-            "{} = op(\"arctg\") {} = op(\"arctg\") {} = {}",
-            sym(&a),
-            frac(&format!("-({dy})"), &format!("-({dx})")),
-            frac(&n(-d.y), &n(-d.x)),
-            deg(angle, lang)
-        ));
+        w.worked(
+            Worked::new(
+                sym(&a),
+                format!(
+                    "op(\"arctg\") {}",
+                    frac(&format!("-({dy})"), &format!("-({dx})"))
+                ),
+                format!("op(\"arctg\") {}", frac(&n(-d.y), &n(-d.x))),
+                Printed::deg(angle, lang),
+            )
+            .gives(of(Symbol::Angle)),
+        );
         w.explain(&[(a.as_str(), words[2], "deg")]);
     }
 }

@@ -45,6 +45,7 @@ mod worked;
 mod zhukovsky;
 
 pub use typeset::PAGE_BREAK;
+pub use worked::{Column, Printed, Worked};
 
 use crate::check::Report;
 use crate::plate::{self, Plate};
@@ -97,6 +98,8 @@ pub struct Note {
     /// The left sides (Typst math) of the displayed formulas under which no «где» explains
     /// their symbol: a defect of the note's writer, which the tests hold empty.
     pub unexplained: Vec<String>,
+    /// The worked formulas, in the order set.
+    pub worked: Vec<Worked>,
 }
 
 /// Why a note cannot be written.
@@ -136,6 +139,7 @@ struct Writer<'a, 's> {
     doc: Markup,
     files: Vec<(String, Vec<u8>)>,
     explained: explain::Explained,
+    worked: Vec<Worked>,
 }
 
 impl Writer<'_, '_> {
@@ -243,6 +247,7 @@ pub fn compose_with(
         doc: Markup::default(),
         files: Vec::new(),
         explained: explain::Explained::default(),
+        worked: Vec::new(),
     };
     front::preamble(&mut w);
     front::title_page(&mut w);
@@ -273,6 +278,7 @@ pub fn compose_with(
         source: scripts::localise_functions(scripts::localise_scripts(&w.doc.finish(), lang), lang),
         files: w.files,
         unexplained: w.explained.missing,
+        worked: w.worked,
     })
 }
 
@@ -344,5 +350,6 @@ pub fn plain_twin(note: &Note) -> Result<Note, NoteError> {
         source,
         files: Vec::new(),
         unexplained: Vec::new(),
+        worked: Vec::new(),
     })
 }

@@ -4,10 +4,11 @@
 //! or normal reaction, a guide reaction's arm, the driving link's balancing load, and
 //! Zhukovsky's lever. Every number is the construction's own ([`MomentEquation`]).
 
-use super::markup::{frac, label, num, sym, text, unit};
+use super::markup::{frac, label, num, sym, text};
+use super::worked::{Printed, Worked};
 use super::Writer;
 use crate::forces::{Load, LoadKind, MomentEquation, MomentTerm, Unknown};
-use crate::words::{unit_in, MachinesMeaning as M, MachinesNote as N};
+use crate::words::{MachinesMeaning as M, MachinesNote as N};
 
 /// `template` with each `{key}` replaced by its value.
 pub(super) fn fill(template: &str, pairs: &[(&str, String)]) -> String {
@@ -79,13 +80,13 @@ pub(super) fn product(
     lhs: &str,
     factors: &[String],
     numbers: &[String],
-    result: &str,
+    result: Printed,
 ) {
-    w.formula(&format!(
-        "{} = {} = {} = {result}",
+    w.worked(Worked::new(
         sym(lhs),
         factors.join(" "),
-        numbers.join(" dot ")
+        numbers.join(" dot "),
+        result,
     ));
 }
 
@@ -299,11 +300,7 @@ fn worked_unknown(
     value: f64,
 ) {
     let lang = w.lang;
-    let result = format!(
-        "{}{}",
-        num(value, 5, lang),
-        unit(&unit_in(unknown_unit, lang))
-    );
+    let result = Printed::si(value, 5, unknown_unit, lang);
     // The factor of the known moments on the unknown's side, the divisor's symbol and
     // number, and the known moments' total in the shown units.
     let (factor, divisor, divisor_value, total) = match &e.unknown {
@@ -341,16 +338,16 @@ fn worked_unknown(
     let x = sym(lhs);
     if visible(&sum(&pieces)) <= ONE_LINE_CHARS {
         let numbers = sum(&pieces);
-        let math = if divisor.is_empty() {
-            format!("{x} = {symbols} = {numbers} = {result}")
+        w.worked(if divisor.is_empty() {
+            Worked::new(x, symbols, numbers, result)
         } else {
-            format!(
-                "{x} = {} = {} = {result}",
+            Worked::new(
+                x,
                 frac(&symbols, &divisor),
-                frac(&numbers, &divisor_value)
+                frac(&numbers, &divisor_value),
+                result,
             )
-        };
-        w.formula(&math);
+        });
         return;
     }
     // The sum on lines of its own, then its total through the fraction.
@@ -363,38 +360,26 @@ fn worked_unknown(
         Arms::Metres => "N*m",
         Arms::Millimetres => "N*mm",
     };
-    let total_text = format!(
-        "{}{}",
-        num(total, 6, lang),
-        unit(&unit_in(moment_unit, lang))
-    );
-    long_sum(w, &left, &pieces, &total_text);
-    let math = if divisor.is_empty() {
-        format!("{x} = {result}")
+    w.worked(long_sum(
+        &left,
+        &pieces,
+        Printed::si(total, 6, moment_unit, lang),
+    ));
+    let by_total = frac(&num(total, 6, lang), &divisor_value);
+    w.worked(if divisor.is_empty() {
+        Worked::new(x, "", "", result)
     } else if visible(&symbols) <= ONE_LINE_CHARS {
-        format!(
-            "{x} = {} = {} = {result}",
-            frac(&symbols, &divisor),
-            frac(&num(total, 6, lang), &divisor_value)
-        )
+        Worked::new(x, frac(&symbols, &divisor), by_total, result)
     } else {
-        format!(
-            "{x} = {} = {result}",
-            frac(&num(total, 6, lang), &divisor_value)
-        )
-    };
-    w.formula(&math);
+        Worked::new(x, "", by_total, result)
+    });
 }
 
 /// A long sum as one formula on lines as long as [`LINE_CHARS`], broken after a sign
 /// (ГОСТ 2.105: the sign repeated on the next line), ending with its total `total`:
-/// `left = a + b + … \ + … = total`. The closing equality is set as a relation the
-/// formula's chain does not break at, so the lines stay as they are laid out.
-pub(super) fn long_sum(w: &mut Writer<'_, '_>, left: &str, pieces: &[(f64, String)], total: &str) {
-    w.formula(&format!(
-        "{left} &= {} class(\"relation\", =) {total}",
-        lines(pieces).join(" \\ ")
-    ));
+/// `left = a + b + … \ + … = total` ([`Worked::on_lines`]).
+pub(super) fn long_sum(left: &str, pieces: &[(f64, String)], total: Printed) -> Worked {
+    Worked::on_lines(left, &lines(pieces), total)
 }
 
 /// The lines of a long sum of `pieces`, each as long as [`LINE_CHARS`]: the first as it
@@ -488,16 +473,14 @@ pub(super) fn lever_couple(
         .map(|(s, _, n)| (*s, n.clone()))
         .collect::<Vec<_>>());
     let name = "M_{у}";
-    w.formula(&format!(
-        "{} = {} = {} = {}{}",
+    w.worked(Worked::new(
         sym(name),
         frac(&format!("{} ({symbols})", sym("μ_{v}")), &sym("ω_{1}")),
         frac(
             &format!("{} dot ({numbers})", num(mu_v, 4, lang)),
-            &num(w1, 5, lang)
+            &num(w1, 5, lang),
         ),
-        num(value, 5, lang),
-        unit(&unit_in("N*m", lang))
+        Printed::si(value, 5, "N*m", lang),
     ));
     let mut items = explained(w, e, loads, "mm");
     items.push((name.into(), meaning(w, name, loads), "N*m"));

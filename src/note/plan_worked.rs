@@ -6,10 +6,11 @@
 use super::equations::{velocity_equations, Equation, Kind, Relative};
 use super::markup::{frac, num, sym, unit};
 use super::plan_reads::{explain_one, segment, Plans};
+use super::worked::{Printed, Worked};
 use super::Writer;
 use crate::check::Symbol;
 use crate::scale::Lang;
-use crate::words::{plain, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T};
+use crate::words::{plain, KinematicsMeaning as M, KinematicsNote as K, NoteText as T};
 
 /// The similarity proportions of the further points of a link turning about a fixed pivot
 /// at the worked position: px = pb·OX/OB, the images' lengths and the plan of positions'
@@ -69,19 +70,17 @@ pub(super) fn similarity(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
     }
     w.doc.say(w.word(K::Similarity));
     for ((px, pb), (ox_name, ob_name), (px_mm, pb_mm, ox, ob), x) in lines {
-        w.formula(&format!(
-            "{} = {} = {} = {}{}",
+        w.worked(Worked::new(
             sym(&px),
             frac(
                 &format!("{} dot {}", sym(&pb), sym(&ox_name)),
-                &sym(&ob_name)
+                &sym(&ob_name),
             ),
             frac(
                 &format!("{} dot {}", num(pb_mm, 4, lang), num(ox, 4, lang)),
-                &num(ob, 4, lang)
+                &num(ob, 4, lang),
             ),
-            num(px_mm, 4, lang),
-            unit(w.word(T::MmUnit))
+            Printed::new(px_mm, 4, unit(w.word(T::MmUnit)), 1e-3, lang),
         ));
         let seg_meaning = format!("{} {x}", w.word(M::VelocitySegment));
         w.explain(&[
@@ -155,13 +154,11 @@ pub(super) fn rates(w: &mut Writer<'_, '_>, p: &Plans<'_>, kind: Kind) {
         };
         let rate = format!("{letter}_{{{}}}", e.link);
         let length = format!("l_{{{}{}}}", plain(&e.names.1), plain(&e.names.0));
-        w.formula(&format!(
-            "{} = {} = {} = {}{}",
+        w.worked(Worked::new(
             sym(&rate),
             frac(&sym(&term), &sym(&length)),
             frac(&num(value, 4, lang), &num(l, 4, lang)),
-            num(r.abs(), 4, lang),
-            unit(&unit_in(si, lang))
+            Printed::si(r.abs(), 4, si, lang),
         ));
         let what = format!("{} {}", w.word(word), e.link);
         let length_meaning = format!(
@@ -205,15 +202,11 @@ pub(super) fn normals(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
             }
             let an = format!("a^{{n}}_{{{}}}", e.pair());
             let length = format!("l_{{{}{}}}", plain(other), plain(point));
-            w.formula(&format!(
-                "{} = {}^2 {} = {}^2 dot {} = {}{}",
+            w.worked(Worked::new(
                 sym(&an),
-                sym(&format!("ω_{{{}}}", e.link)),
-                sym(&length),
-                num(omega.abs(), 4, lang),
-                num(l, 4, lang),
-                num(omega * omega * l, 4, lang),
-                unit(&unit_in("m/s^2", lang))
+                format!("{}^2 {}", sym(&format!("ω_{{{}}}", e.link)), sym(&length)),
+                format!("{}^2 dot {}", num(omega.abs(), 4, lang), num(l, 4, lang)),
+                Printed::si(omega * omega * l, 4, "m/s^2", lang),
             ));
             let what = format!("{} {}", w.word(M::Normal), e.pair());
             explain_one(w, &an, &what, "m/s^2");
@@ -249,15 +242,19 @@ pub(super) fn coriolis(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
     w.doc.say(&format!("{} {at}:", w.word(T::CoriolisWorked)));
     for (e, omega, v) in lines {
         let ak = format!("a^{{k}}_{{{}}}", e.pair());
-        w.formula(&format!(
-            "{} = 2 {} {} = 2 dot {} dot {} = {}{}",
+        w.worked(Worked::new(
             sym(&ak),
-            sym(&format!("ω_{{{}}}", e.link)),
-            sym(&format!("V_{{{}}}", e.pair())),
-            num(omega.abs(), 4, lang),
-            num(v.abs(), 4, lang),
-            num(2.0 * omega.abs() * v.abs(), 4, lang),
-            unit(&unit_in("m/s^2", lang))
+            format!(
+                "2 {} {}",
+                sym(&format!("ω_{{{}}}", e.link)),
+                sym(&format!("V_{{{}}}", e.pair()))
+            ),
+            format!(
+                "2 dot {} dot {}",
+                num(omega.abs(), 4, lang),
+                num(v.abs(), 4, lang)
+            ),
+            Printed::si(2.0 * omega.abs() * v.abs(), 4, "m/s^2", lang),
         ));
         let what = format!("{} {}", w.word(M::Coriolis), e.pair());
         explain_one(w, &ak, &what, "m/s^2");

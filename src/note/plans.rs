@@ -9,11 +9,12 @@ use super::equations::{equations, velocity_equations, Kind};
 use super::markup::{frac, num, sym, text, unit};
 use super::plan_reads::{explain_one, segment, Plans};
 use super::rows::{numbers, values_and_errors, Column, DIGITS};
+use super::worked::{Printed, Worked};
 use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::scene::PlateKind;
 use crate::words::{
-    plain, quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
+    plain, quantity, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
 };
 
 /// The worked position: the first position with an acceleration plan, else the first one.
@@ -102,15 +103,15 @@ impl CrankPin<'_> {
         };
         let pin = format!("{letter}_{{{}}}", self.name);
         w.doc.par(&[text(w.word(words.0))]);
-        w.formula(&format!(
-            "{} = {}{power} {} = {}{power} dot {} = {}{}",
+        w.worked(Worked::new(
             sym(&pin),
-            sym("ω_{1}"),
-            sym(self.crank),
-            num(self.w1, 5, lang),
-            num(self.length, 5, lang),
-            num(value, 5, lang),
-            unit(&unit_in(si, lang))
+            format!("{}{power} {}", sym("ω_{1}"), sym(self.crank)),
+            format!(
+                "{}{power} dot {}",
+                num(self.w1, 5, lang),
+                num(self.length, 5, lang)
+            ),
+            Printed::si(value, 5, si, lang),
         ));
         let symbol = match plan {
             Kind::Velocity => Symbol::Velocity,
@@ -120,13 +121,11 @@ impl CrankPin<'_> {
         w.explain(&[("ω_{1}", w.word(M::CrankSpeed), "rad/s"), (&pin, &what, si)]);
         let segment = format!("{pole}{}", self.name.to_lowercase());
         w.doc.par(&[text(w.word(words.1))]);
-        w.formula(&format!(
-            "{} = {} = {} = {}{}",
+        w.worked(Worked::new(
             sym(mu),
             frac(&sym(&pin), &sym(&segment)),
             frac(&num(value, 5, lang), &num(scale.to_mm(value), 4, lang)),
-            num(scale.value(), 4, lang),
-            unit(scale.quantity.unit(lang))
+            Printed::new(scale.value(), 4, unit(scale.quantity.unit(lang)), 1.0, lang),
         ));
         let (scale_word, segment_word, mu_si) = match plan {
             Kind::Velocity => (M::VelocityScale, M::VelocitySegment, "m/(s*mm)"),
@@ -251,15 +250,11 @@ fn worked(w: &mut Writer<'_, '_>, p: &str, symbol: Symbol, pole: &str, mu: crate
         let seg = segment(pole, &r.key.subject);
         let mm = mu.to_mm(r.graphical.abs());
         let q = quantity(r.key.symbol, &r.key.subject, lang);
-        w.formula(&format!(
-            "{} = {} {} = {} dot {} = {}{}",
+        w.worked(Worked::new(
             sym(&q),
-            sym(&seg),
-            sym(mu_name),
-            num(mm, 4, lang),
-            num(mu.value(), 4, lang),
-            num(r.graphical.abs(), DIGITS, lang),
-            unit(&unit_in(r.unit(), lang))
+            format!("{} {}", sym(&seg), sym(mu_name)),
+            format!("{} dot {}", num(mm, 4, lang), num(mu.value(), 4, lang)),
+            Printed::si(r.graphical.abs(), DIGITS, r.unit(), lang),
         ));
         let what = meaning(w, symbol, &r.key.subject);
         explain_one(w, &q, &what, r.unit());

@@ -4,6 +4,7 @@
 //! link through the crank's pin: sin(θ/2) = l_AB/l_AC) and the time ratio K worked from θ.
 
 use super::markup::{frac, inline, label, num, sym, text, unit, Align};
+use super::worked::{Printed, Worked};
 use super::{NoteError, Writer};
 use crate::check::is_zero;
 use crate::linkage::{Dyad, Extremes, Mechanism, OutputCoord};
@@ -24,8 +25,7 @@ pub(super) fn positions(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let crank = crank_length(m);
     let drawn = sym(&format!("{}{}", m.crank.centre, m.crank.pin));
     w.doc.par(&[text(w.word(T::LengthScale))]);
-    w.formula(&format!(
-        "{} = {} = {} = {}{}",
+    w.worked(Worked::new(
         sym("μ_{l}"),
         frac(&sym(&crank), &drawn),
         frac(
@@ -38,10 +38,9 @@ pub(super) fn positions(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
                 "{}{}",
                 num(m.crank.length / l, 4, lang),
                 unit(w.word(T::MmUnit))
-            )
+            ),
         ),
-        num(l, 4, lang),
-        unit(sc.l.quantity.unit(lang))
+        Printed::new(l, 4, unit(sc.l.quantity.unit(lang)), 1.0, lang),
     ));
     let drawn_label = format!("{}{}", m.crank.centre, m.crank.pin);
     w.explain(&[
@@ -74,15 +73,14 @@ pub(super) fn positions(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         theta(w, m, ex);
         w.doc.par(&[text(w.word(K::TimeRatio))]);
         let theta = ex.theta.to_degrees();
-        w.formula(&format!(
-            "{} = {} = {} = {}",
+        w.worked(Worked::new(
             sym("K"),
             frac("180° + θ", "180° - θ"),
             frac(
                 &format!("180° + {}°", num(theta, 5, lang)),
-                &format!("180° - {}°", num(theta, 5, lang))
+                &format!("180° - {}°", num(theta, 5, lang)),
             ),
-            num(ex.k, 5, lang)
+            Printed::plain(ex.k, 5, lang),
         ));
         w.explain(&[
             ("K", w.word(M::TimeRatio), ""),
@@ -150,23 +148,21 @@ fn theta(w: &mut Writer<'_, '_>, m: &Mechanism, ex: &Extremes) {
     let between = format!("l_{{{}{}}}", plain(&m.crank.centre), plain(&pivot));
     w.doc.par(&[text(w.word(K::ThetaSlotted))]);
     let ratio = m.crank.length / l_ac;
-    w.formula(&format!(
-        "sin {}/2 = {} = {} = {}",
-        sym("θ"),
+    w.worked(Worked::new(
+        format!("sin {}/2", sym("θ")),
         frac(&sym(&crank), &sym(&between)),
         frac(&num(m.crank.length, 5, lang), &num(l_ac, 5, lang)),
-        num(ratio, 5, lang)
+        Printed::plain(ratio, 5, lang),
     ));
     w.explain(&[
         ("θ", w.word(M::Overlap), "deg"),
         (&between, w.word(M::CentreDistance), "m"),
     ]);
-    w.formula(&format!(
-        "{} = 2 arcsin {} = 2 dot arcsin {} = {}°",
+    w.worked(Worked::new(
         sym("θ"),
-        frac(&sym(&crank), &sym(&between)),
-        num(ratio, 5, lang),
-        num(ex.theta.to_degrees(), 5, lang)
+        format!("2 arcsin {}", frac(&sym(&crank), &sym(&between))),
+        format!("2 dot arcsin {}", num(ratio, 5, lang)),
+        Printed::deg(ex.theta, lang),
     ));
 }
 

@@ -6,10 +6,14 @@
 //! required ratio, the stage it asks for and the output speed the chosen teeth give.
 
 use super::markup::{frac, num, sym, unit};
-use super::worked::worked;
+use super::worked::{Printed, Worked};
 use super::Writer;
+use crate::check::{Key, Method, Symbol};
 use crate::gears::{Stage, Train, TrainStudy};
 use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
+
+/// A speed in rpm in rad/s.
+const RPM: f64 = std::f64::consts::PI / 30.0;
 
 /// A number of the worked formulas.
 fn n(x: f64, lang: crate::scale::Lang) -> String {
@@ -127,25 +131,23 @@ fn closing_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
     for c in &study.closings {
         let ((s, wc), (sa, wa)) = (c.mesh, c.arm_mesh);
         let (arm_sym, arm_num) = across(wa, sa);
-        worked(
-            w,
-            &sym("a"),
-            &frac(&format!("{} ({arm_sym})", sym("m")), "2"),
-            &frac(&format!("{} dot ({arm_num})", n(t.module * 1e3, lang)), "2"),
-            format!("{} {mm}", n(c.arm * 1e3, lang)),
-        );
+        w.worked(Worked::new(
+            sym("a"),
+            frac(&format!("{} ({arm_sym})", sym("m")), "2"),
+            frac(&format!("{} dot ({arm_num})", n(t.module * 1e3, lang)), "2"),
+            Printed::mm(c.arm, 5, lang).with_unit(format!(" {mm}")),
+        ));
         let (arm, module) = (w.word(M::CarrierArm), w.word(M::Module));
         w.explain(&[("a", arm, "mm"), ("m", module, "mm")]);
         let (sym_, num_) = across(s, wc);
         let label = format!("m'_{{{}{}}}", t.wheels[s].name, t.wheels[wc].name);
         let name = sym(&label);
-        worked(
-            w,
+        w.worked(Worked::new(
             &name,
-            &frac(&format!("2 {}", sym("a")), &sym_),
-            &frac(&format!("2 dot {}", n(c.arm * 1e3, lang)), &num_),
-            format!("{} {mm}", n(c.module * 1e3, lang)),
-        );
+            frac(&format!("2 {}", sym("a")), &sym_),
+            frac(&format!("2 dot {}", n(c.arm * 1e3, lang)), &num_),
+            Printed::mm(c.module, 5, lang).with_unit(format!(" {mm}")),
+        ));
         let closing = w.word(M::ClosingModule);
         w.explain(&[(label.as_str(), closing, "mm")]);
     }
@@ -167,7 +169,12 @@ fn stages_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage]) -
                 let label = format!("u_{{{}{}}}", wheel(*driving), wheel(*driven));
                 let name = sym(&label);
                 let (symbolic, substituted) = mesh(t, *driving, *driven, lang);
-                worked(w, &name, &symbolic, &substituted, n(u, lang));
+                w.worked(Worked::new(
+                    &name,
+                    &symbolic,
+                    &substituted,
+                    Printed::number(u, lang),
+                ));
                 explain_ratio(w, (&label, M::StageRatio), t, &[(*driving, *driven)]);
                 names.push(name);
             }
@@ -179,18 +186,22 @@ fn stages_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage]) -
                 let (symbolic, substituted) = chain(t, meshes, lang);
                 let stopped_label = format!("u_{{{a}{f}}}^{{({carrier})}}");
                 let stopped = sym(&stopped_label);
-                worked(w, &stopped, &symbolic, &substituted, n(1.0 - u, lang));
+                w.worked(Worked::new(
+                    &stopped,
+                    &symbolic,
+                    &substituted,
+                    Printed::number(1.0 - u, lang),
+                ));
                 explain_ratio(w, (&stopped_label, M::StoppedRatio), t, meshes);
                 let label = format!("u_{{{a}{carrier}}}^{{({f})}}");
                 let name = sym(&label);
                 let substituted = format!("1 - {}", factor(1.0 - u, lang));
-                worked(
-                    w,
+                w.worked(Worked::new(
                     &name,
-                    &format!("1 - {stopped}"),
+                    format!("1 - {stopped}"),
                     &substituted,
-                    n(u, lang),
-                );
+                    Printed::number(u, lang),
+                ));
                 explain_ratio(w, (&label, M::PlanetaryRatio), t, &[]);
                 names.push(name);
             }
@@ -201,19 +212,29 @@ fn stages_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage]) -
     if stages.len() > 1 {
         let factors: Vec<String> = ratios.iter().map(|&u| factor(u, lang)).collect();
         let total = ratios.iter().product::<f64>();
-        worked(
-            w,
-            &whole,
-            &names.join(" dot "),
-            &factors.join(" dot "),
-            n(total, lang),
+        w.worked(
+            Worked::new(
+                &whole,
+                names.join(" dot "),
+                factors.join(" dot "),
+                Printed::number(total, lang),
+            )
+            .gives_by(ratio_key(t), Method::Formula),
         );
         explain_ratio(w, (&whole_label(t), M::TrainRatio), t, &[]);
     }
     w.doc.say(w.word(T::TrainWillis));
-    w.formula(&format!("{whole} = {}", n(study.ratio, lang)));
+    w.worked(Worked::new(&whole, "", "", Printed::number(study.ratio, lang)).gives(ratio_key(t)));
     explain_ratio(w, (&whole_label(t), M::TrainRatio), t, &[]);
     names
+}
+
+/// The report's key of the train's ratio u_in,out.
+fn ratio_key(t: &Train) -> Key {
+    Key::of_scene(
+        Symbol::GearRatio,
+        format!("{}_{}", t.shafts[t.input], t.shafts[t.output]),
+    )
 }
 
 /// u_in,out in label markup.
@@ -266,13 +287,12 @@ fn differential_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
         &format!("{} - {}", speed(a), speed(hn)),
         &format!("{} - {}", speed(b), speed(hn)),
     );
-    worked(
-        w,
+    w.worked(Worked::new(
         &u,
-        &format!("{relation} = {symbolic}"),
+        format!("{relation} = {symbolic}"),
         &substituted,
-        n(d.u, lang),
-    );
+        Printed::number(d.u, lang),
+    ));
     explain_ratio(w, (&u_label, M::StoppedRatio), t, &d.meshes);
     explain_speeds(w, &[a.as_str(), b.as_str(), hn.as_str()]);
     let [na, nb, nh] = d.omega.map(|x| factor(x * n_in, lang));
@@ -306,19 +326,26 @@ fn differential_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
             d.omega[1],
         )
     };
-    worked(
-        w,
-        &speed(out),
-        &symbolic,
-        &substituted,
-        format!("{} {rpm}", n(value * n_in, lang)),
+    w.worked(
+        Worked::new(
+            speed(out),
+            &symbolic,
+            &substituted,
+            Printed::new(value * n_in, 5, format!(" {rpm}"), RPM, lang),
+        )
+        .gives(Key::of_scene(Symbol::AngularVelocity, out.as_str())),
     );
     w.doc.say(w.word(T::TrainWillis));
-    w.formula(&format!(
-        "{} = {} {rpm}",
-        speed(out),
-        n(study.willis[t.output] * n_in, lang)
-    ));
+    let willis = study.willis[t.output] * n_in;
+    w.worked(
+        Worked::new(
+            speed(out),
+            "",
+            "",
+            Printed::new(willis, 5, format!(" {rpm}"), RPM, lang),
+        )
+        .gives(Key::of_scene(Symbol::AngularVelocity, out.as_str())),
+    );
 }
 
 /// With the scene's input and required output speeds: the required ratio, the fixed-axis
@@ -336,13 +363,12 @@ fn required_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage],
     w.doc.say(w.word(T::TrainRequired));
     let req = wanted(&format!("abs({whole})"));
     let speeds = frac(&speed(input), &wanted(&speed(output)));
-    worked(
-        w,
+    w.worked(Worked::new(
         &req,
         &speeds,
-        &frac(&n(n_in.abs(), lang), &n(n_out, lang)),
-        n(want, lang),
-    );
+        frac(&n(n_in.abs(), lang), &n(n_out, lang)),
+        Printed::number(want, lang),
+    ));
     let ratios: Vec<f64> = stages.iter().map(|s| t.stage_ratio(s)).collect();
     let fixed = t.fixed_axis_mesh().map(|k| t.meshes[k]);
     let asked = stages.iter().position(|s| match (s, fixed) {
@@ -370,54 +396,53 @@ fn required_worked(w: &mut Writer<'_, '_>, study: &TrainStudy, stages: &[Stage],
         let symbolic = frac(&req, &format!("abs({})", others.join(" dot ")));
         let stage = format!("abs({})", names[k]);
         let substituted = frac(&n(want, lang), &n(others_value.abs(), lang));
-        worked(
-            w,
-            &wanted(&stage),
+        w.worked(Worked::new(
+            wanted(&stage),
             &symbolic,
             &substituted,
-            n(want / others_value.abs(), lang),
-        );
+            Printed::number(want / others_value.abs(), lang),
+        ));
         w.doc.say(w.word(T::TrainChosen));
         let (zx, zy) = (t.wheels[driving].z, t.wheels[driven].z);
-        worked(
-            w,
+        w.worked(Worked::new(
             &stage,
-            &frac(&z(t, driven), &z(t, driving)),
-            &frac(&n(zy, lang), &n(zx, lang)),
-            n(zy / zx, lang),
-        );
+            frac(&z(t, driven), &z(t, driving)),
+            frac(&n(zy, lang), &n(zx, lang)),
+            Printed::number(zy / zx, lang),
+        ));
     }
     w.doc.say(w.word(T::TrainOutput));
     let out = n_in / study.ratio;
     let rpm = unit(&unit_in("rpm", lang));
     let substituted = frac(&n(n_in, lang), &factor(study.ratio, lang));
     let symbolic = frac(&speed(input), &whole);
-    worked(
-        w,
-        &speed(output),
-        &symbolic,
-        &substituted,
-        format!("{} {rpm}", n(out, lang)),
+    w.worked(
+        Worked::new(
+            speed(output),
+            &symbolic,
+            &substituted,
+            Printed::new(out, 5, format!(" {rpm}"), RPM, lang),
+        )
+        .gives(Key::of_scene(Symbol::AngularVelocity, output.as_str())),
     );
     explain_speeds(w, &[output.as_str(), input.as_str()]);
     let delta = (out.abs() / n_out - 1.0) * 100.0;
     let target = wanted(&speed(output));
-    worked(
-        w,
-        &sym("δ"),
-        &format!(
+    w.worked(Worked::new(
+        sym("δ"),
+        format!(
             "{} dot 100 %",
             frac(&format!("abs({}) - {target}", speed(output)), &target)
         ),
-        &format!(
+        format!(
             "{} dot 100 %",
             frac(
                 &format!("{} - {}", n(out.abs(), lang), n(n_out, lang)),
                 &n(n_out, lang)
             )
         ),
-        format!("{} %", num(delta, 2, lang)),
-    );
+        Printed::new(delta, 2, " %".into(), 0.01, lang),
+    ));
     let deviation = w.word(M::SpeedDeviation);
     w.explain(&[("δ", deviation, "")]);
 }

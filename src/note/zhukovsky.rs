@@ -2,17 +2,18 @@
 //! routes compared, and the power (seed 000 §2.5: N = P·V/η; an engine's shaft power).
 
 use super::machines::row;
-use super::markup::{frac, label, num, sym, unit};
+use super::markup::{frac, label, num, sym};
 use super::moments::{
     crank_speed, explain_owned, explain_words, fill, lever_couple, meaning, product,
     worked_equation, Arms,
 };
+use super::worked::{Printed, Worked};
 use super::{NoteError, Writer};
-use crate::check::Method;
+use crate::check::{Key, Method, Symbol};
 use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
 use crate::geom::DVec2;
 use crate::words::{
-    unit_in, KinematicsMeaning as K, MachinesMeaning as M, MachinesNote as N, NoteText as T,
+    KinematicsMeaning as K, MachinesMeaning as M, MachinesNote as N, NoteText as T,
 };
 
 /// Zhukovsky's lever: its moment equation about the pole with every arm in mm and the
@@ -29,7 +30,7 @@ pub(super) fn lever(w: &mut Writer<'_, '_>, f: &PositionForces) -> Result<(), No
         Unknown::Force { value, .. } => {
             worked_equation(w, e, &loads, Arms::Millimetres, None);
             if let Some(l) = lever.crank_arm {
-                crank_moment(w, value, l, lever.m_bal);
+                crank_moment(w, value, l, (lever.m_bal, &f.label));
             }
         }
         Unknown::Arm { .. } | Unknown::Couple { .. } => {
@@ -43,8 +44,9 @@ pub(super) fn lever(w: &mut Writer<'_, '_>, f: &PositionForces) -> Result<(), No
 }
 
 /// A coupling's balancing moment from the lever's balancing force at the crank pin:
-/// M_у = F_у·l_OA (`force`, N; the crank's length `l`, m; `moment` the lever's M_у, N·m).
-fn crank_moment(w: &mut Writer<'_, '_>, force: f64, l: f64, moment: f64) {
+/// M_у = F_у·l_OA (`force`, N; the crank's length `l`, m; `moment` the lever's M_у, N·m, at
+/// the position labelled `at`).
+fn crank_moment(w: &mut Writer<'_, '_>, force: f64, l: f64, (moment, at): (f64, &str)) {
     let lang = w.lang;
     let (centre, pin) = crank_points(w);
     let crank = format!("l_{{{centre}{pin}}}");
@@ -55,16 +57,19 @@ fn crank_moment(w: &mut Writer<'_, '_>, force: f64, l: f64, moment: f64) {
     w.doc.par(&[label(&sentence)]);
     // The moment's sign is its sense (counter-clockwise positive), the force's magnitude.
     let sign = if moment < 0.0 { "-" } else { "" };
-    w.formula(&format!(
-        "{} = {sign}{} {} = {sign}{} dot {} = {}{}",
-        sym("M_{у}"),
-        sym("F_{у}"),
-        sym(&crank),
-        num(force.abs(), 5, lang),
-        num(l, 4, lang),
-        num(moment, 5, lang),
-        unit(&unit_in("N*m", lang))
-    ));
+    w.worked(
+        Worked::new(
+            sym("M_{у}"),
+            format!("{sign}{} {}", sym("F_{у}"), sym(&crank)),
+            format!(
+                "{sign}{} dot {}",
+                num(force.abs(), 5, lang),
+                num(l, 4, lang)
+            ),
+            Printed::si(moment, 5, "N*m", lang),
+        )
+        .gives_by(Key::at_position(Symbol::Moment, "bal", at), Method::Lever),
+    );
     explain_owned(w, &[(crank, w.word(K::CrankLength).to_string(), "m")]);
 }
 
@@ -119,7 +124,7 @@ pub(super) fn balancing_and_power(
         "N",
         &[format!("|{}|", sym("M_{у}")), sym("ω_{1}")],
         &[num(a.graphical.abs(), 5, lang), num(w1.abs(), 5, lang)],
-        &format!("{}{}", num(n, 5, lang), unit(&unit_in("W", lang))),
+        Printed::si(n, 5, "W", lang),
     );
     explain_words(
         w,
@@ -130,13 +135,11 @@ pub(super) fn balancing_and_power(
     }
     if let Some(eta) = spec.efficiency {
         w.doc.say(w.word(T::MotorPower));
-        w.formula(&format!(
-            "{} = {} = {} = {}{}",
+        w.worked(Worked::new(
             sym("N_{дв}"),
             frac(&sym("N"), &sym("η")),
             frac(&num(n, 5, lang), &num(eta, 3, lang)),
-            num(n / eta, 5, lang),
-            unit(&unit_in("W", lang))
+            Printed::si(n / eta, 5, "W", lang),
         ));
         let items = [("N_{дв}", M::MotorPower, "W"), ("η", M::Efficiency, "")];
         explain_words(w, &items);
@@ -177,25 +180,20 @@ fn resistance_power(
             format!("{} dot {}", num(force, 5, lang), num(v, 4, lang)),
             force * v,
         );
-        let math = match spec.efficiency {
-            Some(eta) => format!(
-                "{} = {} = {} = {}{}",
+        w.worked(match spec.efficiency {
+            Some(eta) => Worked::new(
                 sym("N_{пс}"),
                 frac(&format!("{} {}", sym(&l.name), sym(&speed)), &sym("η")),
                 frac(&top, &num(eta, 3, lang)),
-                num(value / eta, 5, lang),
-                unit(&unit_in("W", lang))
+                Printed::si(value / eta, 5, "W", lang),
             ),
-            None => format!(
-                "{} = {} {} = {top} = {}{}",
+            None => Worked::new(
                 sym("N_{пс}"),
-                sym(&l.name),
-                sym(&speed),
-                num(value, 5, lang),
-                unit(&unit_in("W", lang))
+                format!("{} {}", sym(&l.name), sym(&speed)),
+                top,
+                Printed::si(value, 5, "W", lang),
             ),
-        };
-        w.formula(&math);
+        });
         let items = [
             (
                 "N_{пс}".to_string(),
@@ -217,18 +215,23 @@ fn difference(w: &mut Writer<'_, '_>, q: &str, a: f64, b: f64, explain_delta: bo
     let diff = (a - b).abs() / a.abs().max(f64::MIN_POSITIVE);
     let pl = format!("{q}^{{{}}}", w.word(T::PolygonShort));
     let lv = format!("{q}^{{{}}}", w.word(T::LeverShort));
-    w.formula(&format!(
-        "{} = {} = {} = {} %",
+    w.worked(Worked::new(
         sym("Δ"),
         frac(
             &format!("|{} - {}|", sym(&pl), sym(&lv)),
-            &format!("|{}|", sym(&pl))
+            &format!("|{}|", sym(&pl)),
         ),
         frac(
             &format!("|{} - ({})|", num(a, 7, lang), num(b, 7, lang)),
-            &num(a.abs(), 7, lang)
+            &num(a.abs(), 7, lang),
         ),
-        num(crate::scale::residue_to_zero(diff, 1.0) * 100.0, 3, lang),
+        Printed::new(
+            crate::scale::residue_to_zero(diff, 1.0) * 100.0,
+            3,
+            " %".into(),
+            0.01,
+            lang,
+        ),
     ));
     if explain_delta {
         let d = w.word(M::Difference).to_string();

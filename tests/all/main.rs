@@ -61,6 +61,7 @@ mod note_genres;
 mod note_language;
 mod note_worked_kinematics;
 mod note_worked_machines;
+mod note_worked_rows;
 mod output;
 mod plan_lines;
 mod plate_blocks;
