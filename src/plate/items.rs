@@ -478,6 +478,8 @@ fn smooth(d: &mut PathData, pts: &[DVec2], closed: bool) {
 /// Chords of each piece of a Bézier curve where the labels' placer reads it as lines.
 const BEZIER_CHORDS: usize = 8;
 
+/// How far extension lines run past the dimension line, mm (ГОСТ 2.307: 1…5 mm).
+pub(crate) const EXTENSION_PAST_MM: f64 = 2.0;
 /// Room a dimension line needs between its extension lines for its two arrows, mm.
 const ARROWS_INSIDE_MM: f64 = 2.0 * Arrow::THIN.len + 1.0;
 /// How far a short dimension's line runs past each extension line, mm: its arrow and a
@@ -504,8 +506,7 @@ fn dimension(map: Map, from: DVec2, to: DVec2, offset: f64, out: &mut Vec<Mark>)
     let n = u.perp();
     let (a, b) = (from + n * offset, to + n * offset);
     let (start, end, inside) = dimension_line(a, b);
-    // Extension lines run 2 mm past the dimension line (ГОСТ 2.307: 1…5 mm).
-    let beyond = n * (2.0 * offset.signum());
+    let beyond = n * (EXTENSION_PAST_MM * offset.signum());
     out.extend(stroke(map, Pen::THIN, |d| {
         if offset != 0.0 {
             d.segment(from, a + beyond).segment(to, b + beyond);

@@ -11,6 +11,7 @@ use super::{shape_box, Outline, Request, Shape, LABEL_HEIGHT_MM};
 use crate::construct::{Item, Names};
 use crate::geom::DVec2;
 use crate::plate::dimension::{dimension_text, TextSpot};
+use crate::plate::items::EXTENSION_PAST_MM;
 use crate::plate::path::Map;
 use crate::plate::text::{measure, Placed};
 use crate::plate::{Plate, Rect};
@@ -26,6 +27,10 @@ const PAST_STEPS: usize = 8;
 const MOST_SLIDES: usize = 200;
 /// Clearance a text keeps from a line while placing, mm.
 const CLEAR_MM: f64 = 0.3;
+/// Clearance a text keeps from its own dimension's extension lines, mm: a text between
+/// them closer than this reads as crowded against them (ГОСТ 2.307 then writes it past an
+/// arrow or on a leader); less than the text's gap from its dimension line.
+const OWN_CLEAR_MM: f64 = 0.8;
 
 /// Cost of a place over another text (a caption, a table, another dimension's text), as mm
 /// of line struck.
@@ -52,13 +57,17 @@ pub(super) fn placed(
     let width = first.own_box().width();
     let (from, to, _) = dim;
     let length = map.dir(to - from).length();
+    let extensions = extension_lines(map, dim);
     let mut best: Option<(Placed, f64)> = None;
     for (rank, spot) in spots(length, width).into_iter().enumerate() {
         let Some(p) = dimension_text(map, dim, text, spot) else {
             continue;
         };
         let over = over_texts(texts, &p.bounds().inflate(CLEAR_MM));
-        let ink = struck(&p, lines, CLEAR_MM) + over + wrong_line(&p.bounds(), lines, own);
+        let ink = struck(&p, lines, CLEAR_MM)
+            + struck(&p, &extensions, OWN_CLEAR_MM)
+            + over
+            + wrong_line(&p.bounds(), lines, own);
         if ink == 0.0 {
             return Some((p, None));
         }
@@ -77,6 +86,23 @@ pub(super) fn placed(
         Some((q, l)) => Some((q, Some(l))),
         None => Some((p, None)),
     }
+}
+
+/// The extension lines of the dimension `(from, to, offset)` as drawn, run past the
+/// dimension line (the outlines of the view end them on it).
+fn extension_lines(map: Map, (from, to, offset): (DVec2, DVec2, f64)) -> Vec<Outline> {
+    let Some(u) = (to - from).try_normalize() else {
+        return Vec::new();
+    };
+    let past = map.dir(u.perp() * offset.signum());
+    let past = past.normalize_or_zero() * EXTENSION_PAST_MM;
+    [from, to]
+        .into_iter()
+        .map(|x| Outline {
+            shape: Shape::Line(map.pt(x), map.pt(x + u.perp() * offset) + past),
+            main: false,
+        })
+        .collect()
 }
 
 /// The dimension's text written level on the shelf of a leader from the middle of its line
@@ -297,6 +323,28 @@ mod tests {
             q.bounds()
         );
         assert!(q.bounds().min.x > 30.0 && q.bounds().max.y < 0.0);
+    }
+
+    /// A text barely narrower than its dimension (the tip thickness s_a of a pointed tooth,
+    /// 5 mm drawn) does not stand crowded between the extension lines, which run 2 mm past
+    /// the dimension line into its height: it is written past an arrow, clear of them; a
+    /// wide dimension keeps its text over the middle.
+    #[test]
+    fn a_text_crowded_between_its_extension_lines_goes_past_an_arrow() {
+        let map = Map::figure(DVec2::ZERO);
+        let dim = (DVec2::ZERO, DVec2::new(5.0, 0.0), -6.0);
+        let extensions = extension_lines(map, dim);
+        let middle = dimension_text(map, dim, "s_{a}", TextSpot::MIDDLE).expect("text");
+        assert!(middle.bounds().width() > 3.4, "{:?}", middle.bounds());
+        assert!(struck(&middle, &extensions, OWN_CLEAR_MM) > 0.0);
+        let (p, _) = placed(map, dim, "s_{a}", (&[], &[]), &[]).expect("placed");
+        assert_eq!(struck(&p, &extensions, OWN_CLEAR_MM), 0.0);
+        let b = p.bounds();
+        assert!(b.min.x > 5.0 || b.max.x < 0.0, "{b:?}");
+        let wide = (DVec2::ZERO, DVec2::new(20.0, 0.0), -6.0);
+        let (q, _) = placed(map, wide, "s_{a}", (&[], &[]), &[]).expect("placed");
+        let over = dimension_text(map, wide, "s_{a}", TextSpot::MIDDLE).expect("text");
+        assert_eq!(q.at, over.at);
     }
 
     #[test]
