@@ -335,7 +335,7 @@ catalogue! {
         Uniform => ("равномерное движение", "рівномірний рух", "uniform motion"),
         Accelerating => ("движение с ускорением", "рух із прискоренням", "accelerated motion"),
         Triangle => ("план сил", "план сил", "force triangle"),
-        Flanks => ("план сил: N₁, N₂; вид сбоку", "план сил: N₁, N₂; вид збоку", "forces: N₁, N₂; side view"),
+        Flanks => ("план сил: N_{1}, N_{2}; вид сбоку", "план сил: N_{1}, N_{2}; вид збоку", "forces: N_{1}, N_{2}; side view"),
         Balance => ("равновесие моментов", "рівновага моментів", "moment balance"),
         Sliding => ("без катков", "без котків", "without rollers"),
         SelfBraking => ("самоторможение", "самогальмування", "self-locking"),
