@@ -2,7 +2,7 @@
 //! report's) with the units of its kind a table may carry instead (`mm` for a length, `rpm`
 //! for an angular velocity, `kgf` for a force, in Latin or Cyrillic letters).
 
-use crate::scale::KGF;
+use crate::scale::{KGF, RPM};
 
 /// A unit of one kind: its name (as the audit writes it) and its factor to the SI unit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -24,7 +24,7 @@ pub fn kind(si: &str) -> &'static [Unit] {
     const K0: &[Unit] = &[u("m", 1.0), u("mm", 1e-3), u("cm", 1e-2)];
     const K1: &[Unit] = &[u("m/s", 1.0), u("mm/s", 1e-3), u("cm/s", 1e-2)];
     const K2: &[Unit] = &[u("m/s^2", 1.0), u("mm/s^2", 1e-3), u("cm/s^2", 1e-2)];
-    const K3: &[Unit] = &[u("rad/s", 1.0), u("rpm", PI / 30.0), u("deg/s", PI / 180.0)];
+    const K3: &[Unit] = &[u("rad/s", 1.0), u("rpm", RPM), u("deg/s", PI / 180.0)];
     const K4: &[Unit] = &[u("rad/s^2", 1.0), u("deg/s^2", PI / 180.0)];
     const K5: &[Unit] = &[u("N", 1.0), u("kN", 1e3), u("kgf", KGF)];
     const K6: &[Unit] = &[

@@ -239,7 +239,7 @@ impl Slot {
                     &format!("{} + {} dot cos {}", n5(xa), n5(l1), deg(phi1))
                 )
             ),
-            Printed::new(phi, 5, "°".into(), std::f64::consts::PI / 180.0, lang),
+            Printed::degrees(phi, lang),
         ));
         w.worked(Worked::new(
             sym(&big_l_s),

@@ -45,7 +45,7 @@ mod worked;
 mod zhukovsky;
 
 pub use typeset::PAGE_BREAK;
-pub use worked::{Column, Printed, Worked};
+pub use worked::{Printed, RowValue, Worked};
 
 use crate::check::Report;
 use crate::plate::{self, Plate};

@@ -10,10 +10,8 @@ use super::worked::{Printed, Worked};
 use super::Writer;
 use crate::check::{Key, Method, Symbol};
 use crate::gears::{Stage, Train, TrainStudy};
+use crate::scale::RPM;
 use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
-
-/// A speed in rpm in rad/s.
-const RPM: f64 = std::f64::consts::PI / 30.0;
 
 /// A number of the worked formulas.
 fn n(x: f64, lang: crate::scale::Lang) -> String {

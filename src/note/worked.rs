@@ -14,7 +14,8 @@ pub(super) const INV: &str = "op(\"inv\")";
 
 /// An angle (rad) in degrees in a formula: `26,581°`.
 pub(super) fn deg(a: f64, lang: Lang) -> String {
-    format!("{}°", num(a.to_degrees(), 5, lang))
+    let p = Printed::deg(a, lang);
+    format!("{}{}", p.shown, p.unit)
 }
 
 /// Significant digits of a worked formula's result.
@@ -65,13 +66,11 @@ impl Printed {
     }
     /// An angle (rad) in degrees, the sign against the number.
     pub(super) fn deg(a: f64, lang: Lang) -> Self {
-        Self::new(
-            a.to_degrees(),
-            DIGITS,
-            "°".into(),
-            std::f64::consts::PI / 180.0,
-            lang,
-        )
+        Self::degrees(a.to_degrees(), lang)
+    }
+    /// An angle given in degrees, the sign against the number.
+    pub(super) fn degrees(x: f64, lang: Lang) -> Self {
+        Self::new(x, DIGITS, "°".into(), std::f64::consts::PI / 180.0, lang)
     }
     /// The same number followed by `unit` (math) as printed instead.
     pub(super) fn with_unit(self, unit: String) -> Self {
@@ -98,12 +97,12 @@ pub struct Worked {
     pub aside: String,
     /// The report's row it works out and which of the row's values (`None`: a step the
     /// report does not tabulate).
-    pub gives: Option<(Key, Column)>,
+    pub gives: Option<(Key, RowValue)>,
 }
 
 /// Which value of a report's row a worked formula gives.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Column {
+pub enum RowValue {
     /// The analytic twin's (the note works the twin's formula).
     Analytic,
     /// The graphical one of the row by this method (the note works the textbook's chain,
@@ -149,7 +148,7 @@ impl Worked {
     /// The same formula working out the analytic value of the report's row `key`, if any.
     pub(super) fn giving(self, key: Option<Key>) -> Self {
         Self {
-            gives: key.map(|k| (k, Column::Analytic)),
+            gives: key.map(|k| (k, RowValue::Analytic)),
             ..self
         }
     }
@@ -157,7 +156,7 @@ impl Worked {
     /// `method`.
     pub(super) fn gives_by(self, key: Key, method: Method) -> Self {
         Self {
-            gives: Some((key, Column::Graphical(method))),
+            gives: Some((key, RowValue::Graphical(method))),
             ..self
         }
     }

@@ -1,5 +1,6 @@
 //! A linear dimension's text as ГОСТ 2.307 writes it: beside its line, parallel to it,
-//! readable (the line and its arrows are drawn with the items, [`super::items`]).
+//! readable; and where its extension lines run (the lines and arrows are drawn with the
+//! items, [`super::items`]).
 
 use super::items::LABEL_HEIGHT_MM;
 use super::path::Map;
@@ -8,6 +9,27 @@ use crate::geom::DVec2;
 
 /// Gap between a dimension line and its text, mm.
 pub(crate) const DIMENSION_TEXT_GAP_MM: f64 = 1.0;
+
+/// How far extension lines run past the dimension line, mm (ГОСТ 2.307: 1…5 mm).
+const EXTENSION_PAST_MM: f64 = 2.0;
+
+/// The extension lines of a dimension from `from` to `to` whose line is drawn `offset` off
+/// them, as drawn: from each point to [`EXTENSION_PAST_MM`] past the dimension line; none
+/// when the line runs through the points.
+pub(crate) fn extension_lines(from: DVec2, to: DVec2, offset: f64) -> Vec<(DVec2, DVec2)> {
+    let Some(u) = (to - from).try_normalize() else {
+        return Vec::new();
+    };
+    if offset == 0.0 {
+        return Vec::new();
+    }
+    let n = u.perp();
+    let beyond = n * (EXTENSION_PAST_MM * offset.signum());
+    vec![
+        (from, from + n * offset + beyond),
+        (to, to + n * offset + beyond),
+    ]
+}
 
 /// Where a dimension text is written beside its line: `along` mm from the middle of the
 /// dimension line in the text's reading direction, over the line or under it.

@@ -1,5 +1,6 @@
 //! Recorded steps as marks: the textbook symbols of every [`Item`], and the labels.
 
+use super::dimension::extension_lines;
 use super::path::{pieces, Map, PathData};
 use super::style::{Mark, Paint, Pen};
 use crate::construct::{Drafting, Item, Names, Role, Step};
@@ -478,8 +479,6 @@ fn smooth(d: &mut PathData, pts: &[DVec2], closed: bool) {
 /// Chords of each piece of a Bézier curve where the labels' placer reads it as lines.
 const BEZIER_CHORDS: usize = 8;
 
-/// How far extension lines run past the dimension line, mm (ГОСТ 2.307: 1…5 mm).
-pub(crate) const EXTENSION_PAST_MM: f64 = 2.0;
 /// Room a dimension line needs between its extension lines for its two arrows, mm.
 const ARROWS_INSIDE_MM: f64 = 2.0 * Arrow::THIN.len + 1.0;
 /// How far a short dimension's line runs past each extension line, mm: its arrow and a
@@ -506,10 +505,9 @@ fn dimension(map: Map, from: DVec2, to: DVec2, offset: f64, out: &mut Vec<Mark>)
     let n = u.perp();
     let (a, b) = (from + n * offset, to + n * offset);
     let (start, end, inside) = dimension_line(a, b);
-    let beyond = n * (EXTENSION_PAST_MM * offset.signum());
     out.extend(stroke(map, Pen::THIN, |d| {
-        if offset != 0.0 {
-            d.segment(from, a + beyond).segment(to, b + beyond);
+        for (p, q) in extension_lines(from, to, offset) {
+            d.segment(p, q);
         }
         d.segment(start, end);
     }));

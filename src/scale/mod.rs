@@ -20,6 +20,9 @@ pub const G: f64 = 9.81;
 /// older textbooks give forces and moments in, read in a seed's values and by the audit).
 pub const KGF: f64 = 9.806_65;
 
+/// One revolution per minute, rad/s (a shaft's speed n, rpm, as ω = πn/30).
+pub const RPM: f64 = std::f64::consts::PI / 30.0;
+
 /// The label language of a plate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Lang {

@@ -6,7 +6,7 @@
 
 use std::path::PathBuf;
 use tmm::check::{Key, Report, Symbol};
-use tmm::note::{Column, Printed, Worked};
+use tmm::note::{Printed, RowValue, Worked};
 use tmm::{Drafting, Lang, Session};
 
 fn scene(path: &std::path::Path) -> tmm::Scene {
@@ -79,8 +79,8 @@ fn faults(rows: &[Worked], report: &Report) -> Vec<String> {
         let row = report.rows.iter().find(|r| {
             &r.key == key
                 && match column {
-                    Column::Analytic => true,
-                    Column::Graphical(m) => r.method == *m,
+                    RowValue::Analytic => true,
+                    RowValue::Graphical(m) => r.method == *m,
                 }
         });
         let Some(r) = row else {
@@ -93,8 +93,8 @@ fn faults(rows: &[Worked], report: &Report) -> Vec<String> {
         let want = row_si(
             key.symbol,
             match column {
-                Column::Analytic => r.analytic,
-                Column::Graphical(_) => r.graphical,
+                RowValue::Analytic => r.analytic,
+                RowValue::Graphical(_) => r.graphical,
             },
         );
         let got = v.value * v.to_si;

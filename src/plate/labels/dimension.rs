@@ -11,7 +11,6 @@ use super::{shape_box, Outline, Request, Shape, LABEL_HEIGHT_MM};
 use crate::construct::{Item, Names};
 use crate::geom::DVec2;
 use crate::plate::dimension::{dimension_text, TextSpot};
-use crate::plate::items::EXTENSION_PAST_MM;
 use crate::plate::path::Map;
 use crate::plate::text::{measure, Placed};
 use crate::plate::{Plate, Rect};
@@ -89,17 +88,13 @@ pub(super) fn placed(
 }
 
 /// The extension lines of the dimension `(from, to, offset)` as drawn, run past the
-/// dimension line (the outlines of the view end them on it).
+/// dimension line ([`crate::plate::dimension::extension_lines`]; the outlines of the view
+/// end them on it).
 fn extension_lines(map: Map, (from, to, offset): (DVec2, DVec2, f64)) -> Vec<Outline> {
-    let Some(u) = (to - from).try_normalize() else {
-        return Vec::new();
-    };
-    let past = map.dir(u.perp() * offset.signum());
-    let past = past.normalize_or_zero() * EXTENSION_PAST_MM;
-    [from, to]
+    crate::plate::dimension::extension_lines(from, to, offset)
         .into_iter()
-        .map(|x| Outline {
-            shape: Shape::Line(map.pt(x), map.pt(x + u.perp() * offset) + past),
+        .map(|(p, q)| Outline {
+            shape: Shape::Line(map.pt(p), map.pt(q)),
             main: false,
         })
         .collect()
