@@ -260,42 +260,7 @@ impl Figure {
             hi = hi.max(p);
         };
         for s in &self.steps {
-            match &s.item {
-                Item::Point(p) | Item::Text(p) => add(*p),
-                Item::Joint { at, .. } | Item::Slider { at, .. } => add(*at),
-                Item::Segment(seg) | Item::Guide { segment: seg, .. } => {
-                    add(seg.from);
-                    add(seg.to)
-                }
-                Item::Circle(c) => {
-                    add(c.center - DVec2::splat(c.radius));
-                    add(c.center + DVec2::splat(c.radius))
-                }
-                Item::Arc(a) | Item::Angle(a) | Item::Moment(a) => {
-                    for i in 0..=16 {
-                        add(a.eval(i as f64 / 16.0));
-                    }
-                }
-                Item::Polyline { points, .. }
-                | Item::Curve { points, .. }
-                | Item::Hatching {
-                    outline: points, ..
-                } => points.iter().for_each(|p| add(*p)),
-                // Within the hull of its control points, and nearly all of it.
-                Item::Bezier { start, pieces, .. } => {
-                    add(*start);
-                    pieces.iter().flatten().for_each(|p| add(*p))
-                }
-                Item::Vector { from, to } => {
-                    add(*from);
-                    add(*to)
-                }
-                Item::Dimension { from, to, offset } => {
-                    let n = (*to - *from).normalize_or_zero().perp() * *offset;
-                    add(*from + n);
-                    add(*to + n);
-                }
-            }
+            s.item.bounding_points(&mut add);
         }
         lo.is_finite().then_some((lo, hi))
     }

@@ -47,8 +47,15 @@ impl Extent {
     }
     /// The drawing's size at `mu`, mm (its labels not included).
     pub fn size_at(&self, mu: Scale) -> DVec2 {
+        self.bounds_at(mu).map_or(DVec2::ZERO, |(lo, hi)| {
+            hi - lo + DVec2::splat(2.0 * self.allowance)
+        })
+    }
+    /// Where its points and marks lie at `mu`, (min, max) mm (the allowance not included;
+    /// `None`: nothing taken in).
+    pub fn bounds_at(&self, mu: Scale) -> Option<(DVec2, DVec2)> {
         if self.lo.x > self.hi.x {
-            return DVec2::ZERO;
+            return None;
         }
         let m = mu.value();
         let (mut lo, mut hi) = (self.lo / m, self.hi / m);
@@ -56,7 +63,7 @@ impl Extent {
             lo = lo.min(at / m + off);
             hi = hi.max(at / m + off);
         }
-        hi - lo + DVec2::splat(2.0 * self.allowance)
+        Some((lo, hi))
     }
     /// The size at `mu` with the labels' margin, mm.
     pub fn labelled_size_at(&self, mu: Scale) -> DVec2 {

@@ -102,6 +102,47 @@ impl Item {
     /// is drawn 10 × 6 mm whatever the scale.
     pub const SLIDER_HALF_MM: (f64, f64) = (5.0, 3.0);
 
+    /// Each point that bounds what the item draws, mm, to `add`: a curve by its points (an
+    /// arc by 17 along it, a Bézier by its control points, within whose hull it lies), a
+    /// dimension by its line, a symbol by its centre.
+    pub fn bounding_points(&self, mut add: impl FnMut(DVec2)) {
+        match self {
+            Item::Point(p) | Item::Text(p) => add(*p),
+            Item::Joint { at, .. } | Item::Slider { at, .. } => add(*at),
+            Item::Segment(seg) | Item::Guide { segment: seg, .. } => {
+                add(seg.from);
+                add(seg.to)
+            }
+            Item::Circle(c) => {
+                add(c.center - DVec2::splat(c.radius));
+                add(c.center + DVec2::splat(c.radius))
+            }
+            Item::Arc(a) | Item::Angle(a) | Item::Moment(a) => {
+                for i in 0..=16 {
+                    add(a.eval(f64::from(i) / 16.0));
+                }
+            }
+            Item::Polyline { points, .. }
+            | Item::Curve { points, .. }
+            | Item::Hatching {
+                outline: points, ..
+            } => points.iter().for_each(|p| add(*p)),
+            Item::Bezier { start, pieces, .. } => {
+                add(*start);
+                pieces.iter().flatten().for_each(|p| add(*p))
+            }
+            Item::Vector { from, to } => {
+                add(*from);
+                add(*to)
+            }
+            Item::Dimension { from, to, offset } => {
+                let n = (*to - *from).normalize_or_zero().perp() * *offset;
+                add(*from + n);
+                add(*to + n);
+            }
+        }
+    }
+
     /// The strokes a hatching draws (none for any other item, or an outline the recorder
     /// would have refused: [`crate::construct::Recorder::hatching`]).
     pub fn hatch_strokes(&self) -> Vec<Segment> {

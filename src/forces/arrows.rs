@@ -29,7 +29,13 @@ pub fn overlap(a: DVec2, b: DVec2, (p, q): (DVec2, DVec2), near: f64) -> bool {
 
 /// Whether the line `a`–`b` lies on the drawn line `p`–`q`: both its ends within `near` mm
 /// of that line, and the two sharing more than [`SHARED_MM`] of their length.
-pub fn lies_on(a: DVec2, b: DVec2, (p, q): (DVec2, DVec2), near: f64) -> bool {
+pub fn lies_on(a: DVec2, b: DVec2, line: (DVec2, DVec2), near: f64) -> bool {
+    lies_along(a, b, line, (near, SHARED_MM))
+}
+
+/// Whether the line `a`–`b` lies on the line `p`–`q`, in any one unit: both its ends within
+/// `near` of that line, and the two sharing more than `shared` of their length.
+pub fn lies_along(a: DVec2, b: DVec2, (p, q): (DVec2, DVec2), (near, shared): (f64, f64)) -> bool {
     let Some(u) = (q - p).try_normalize() else {
         return false;
     };
@@ -40,7 +46,7 @@ pub fn lies_on(a: DVec2, b: DVec2, (p, q): (DVec2, DVec2), near: f64) -> bool {
     let (s0, s1) = ((a - p).dot(u), (b - p).dot(u));
     let (lo, hi) = (s0.min(s1), s0.max(s1));
     let len = (q - p).length();
-    hi.min(len) - lo.max(0.0) > SHARED_MM
+    hi.min(len) - lo.max(0.0) > shared
 }
 
 /// The vectors drawn on `rec`: (tail, head), mm.
@@ -66,30 +72,12 @@ pub fn arrow(
     (x, e, len): (DVec2, DVec2, f64),
     onto: bool,
 ) -> StepId {
-    let drawn = vectors(rec);
-    let from_point = (x, x + e * len);
-    let onto_point = (x - e * len, x);
-    let (first, second) = if onto {
-        (onto_point, from_point)
+    let (from, to) = placed(&vectors(rec), (x, e, len), onto);
+    let second = if onto {
+        (x, x + e * len)
     } else {
-        (from_point, onto_point)
+        (x - e * len, x)
     };
-    let free = |(a, b): (DVec2, DVec2)| !drawn.iter().any(|&pq| overlap(a, b, pq, HEADS_APART_MM));
-    // Past the arrows already there: one arrow's length further out each time, on the side
-    // the force is drawn from.
-    let past = (1..=drawn.len() + 1).map(|k| {
-        let k = k as f64;
-        if onto {
-            (x - e * len * (k + 1.0), x - e * len * k)
-        } else {
-            (x + e * len * k, x + e * len * (k + 1.0))
-        }
-    });
-    let (from, to) = [first, second]
-        .into_iter()
-        .chain(past)
-        .find(|&c| free(c))
-        .unwrap_or(first);
     // The label at the end away from the point; an arrow drawn onto the point in place of
     // one from it is labelled beside its shaft, since its tail lies where the first arrow
     // would have been labelled (or at a neighbouring point).
@@ -119,13 +107,46 @@ pub fn arrow(
     id
 }
 
+/// Where [`arrow`] draws the arrow of a force along `e` at `x`, `len` mm long, among the
+/// vectors `drawn` (tail, head): from the point, or onto it (`onto`) — the first of these,
+/// then the other, then past an arrow already there, that no arrow of `drawn` covers.
+pub fn placed(
+    drawn: &[(DVec2, DVec2)],
+    (x, e, len): (DVec2, DVec2, f64),
+    onto: bool,
+) -> (DVec2, DVec2) {
+    let from_point = (x, x + e * len);
+    let onto_point = (x - e * len, x);
+    let (first, second) = if onto {
+        (onto_point, from_point)
+    } else {
+        (from_point, onto_point)
+    };
+    let free = |(a, b): (DVec2, DVec2)| !drawn.iter().any(|&pq| overlap(a, b, pq, HEADS_APART_MM));
+    // Past the arrows already there: one arrow's length further out each time, on the side
+    // the force is drawn from.
+    let past = (1..=drawn.len() + 1).map(|k| {
+        let k = k as f64;
+        if onto {
+            (x - e * len * (k + 1.0), x - e * len * k)
+        } else {
+            (x + e * len * k, x + e * len * (k + 1.0))
+        }
+    });
+    [first, second]
+        .into_iter()
+        .chain(past)
+        .find(|&c| free(c))
+        .unwrap_or(first)
+}
+
 /// Two arms this close at both ends are one arm, mm: drawn once, named once (and a force
 /// whose arm's foot is this close to its point on the lever has its image's ray for arm).
 pub const SAME_ARM_MM: f64 = 0.3;
 
 /// An arm that would lie on a line already drawn (a link, a load's arrow) is dimensioned
 /// this far beside it, mm (a second there this far again, up to [`ARMS_BESIDE`] deep).
-const ARM_BESIDE_MM: f64 = 8.0;
+pub const ARM_BESIDE_MM: f64 = 8.0;
 /// See [`ARM_BESIDE_MM`].
 const ARMS_BESIDE: usize = 4;
 
@@ -254,27 +275,32 @@ const COUPLE_STEP_MM: f64 = 4.0;
 /// arrow about `o`, outside every couple's arc already drawn about `o`, and label it at the
 /// arc's middle.
 pub fn couple(rec: &mut Recorder, name: &str, o: DVec2, moment: f64) -> StepId {
-    let (start, sweep) = if moment > 0.0 {
-        (0.3, 1.6)
-    } else {
-        (1.9, -1.6)
-    };
     let around = rec
         .steps()
         .iter()
         .filter(|s| matches!(s.item, Item::Moment(a) if a.center.distance(o) < ON_LINE_MM))
         .count();
-    let radius = COUPLE_MM + COUPLE_STEP_MM * around as f64;
-    let arc = Arc {
+    let arc = couple_arc(o, moment, around);
+    let id = rec.draw(name.to_string(), Item::Moment(arc), Role::Result, &[]);
+    let mid = DVec2::from_angle(arc.start + arc.sweep / 2.0);
+    rec.label_item(id, name, o + mid * arc.radius, mid);
+    id
+}
+
+/// The arc arrow of a couple `moment` about `o` (mm) with `around` couples' arcs drawn
+/// about `o` already: see [`couple`].
+pub fn couple_arc(o: DVec2, moment: f64, around: usize) -> Arc {
+    let (start, sweep) = if moment > 0.0 {
+        (0.3, 1.6)
+    } else {
+        (1.9, -1.6)
+    };
+    Arc {
         center: o,
-        radius,
+        radius: COUPLE_MM + COUPLE_STEP_MM * around as f64,
         start,
         sweep,
-    };
-    let id = rec.draw(name.to_string(), Item::Moment(arc), Role::Result, &[]);
-    let mid = DVec2::from_angle(start + sweep / 2.0);
-    rec.label_item(id, name, o + mid * radius, mid);
-    id
+    }
 }
 
 #[cfg(test)]

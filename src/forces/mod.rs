@@ -36,12 +36,14 @@ pub use loads::{
     arm, carrier, force_scale, loads, reach, Load, LoadKind, Phase, PositionMotion, ZERO_PART,
 };
 pub use pair_friction::{friction_loads, PairFriction, PairMotion};
+pub(crate) use polygons::predicted as predicted_drawings;
 pub use polygons::{
     letter_at, letter_toward, DriverPolygon, GroupPolygon, MomentEquation, MomentTerm,
     PolygonDetail, Polygons, Unknown,
 };
 pub use rows::notes;
 use rows::{reaction_rows, row, rows, zero_references};
+use twin::located;
 pub use twin::{power_balance, solve as solve_twin, Equilibrium, Pair, PairKind, Reaction};
 
 use crate::check::{Method, Row, Symbol};
@@ -248,10 +250,8 @@ pub fn analyse(
     let pos = &plan.positions[k];
     let sense = w1.signum();
     let ph = phase(plan, pos.phi, sense);
-    let exact = PositionMotion::analytic(&pos.pose, w1);
-    let loads_exact = loads::loads(spec, prog, &exact, ph)?;
-    let twin = twin::solve(prog, &pos.pose, &loads_exact, &spec.drive, sense)
-        .map_err(|e| located(e, &pos.label, prog, &pos.pose))?;
+    let (exact, loads_exact, twin) =
+        twin::at_position(spec, prog, (&pos.label, &pos.pose), ph, w1)?;
     let m_power = twin::power_balance(&loads_exact, &exact, w1);
     let drawn = graphical_motion(plan, k, mu_l, vp, ap, ctx);
     let loads = loads::loads(spec, prog, &drawn, ph)?;
@@ -558,23 +558,6 @@ fn with_friction(
         lost,
         approximations: [polygons.solves, twin.solves],
     })
-}
-
-/// The twin's [`ForceError::Singular`] at position `label`, with the group whose equations
-/// are singular at `pose`.
-fn located(
-    e: ForceError,
-    label: &str,
-    prog: &crate::linkage::Program,
-    pose: &crate::linkage::Pose,
-) -> ForceError {
-    match e {
-        ForceError::Singular => ForceError::SingularAt {
-            position: label.to_string(),
-            group: diagnose::singular_group(prog, pose),
-        },
-        e => e,
-    }
 }
 
 /// A polygon that cannot be closed at position `label` (`g` = `usize::MAX`: the driving

@@ -3,6 +3,7 @@
 //! reaction.
 
 use super::*;
+use crate::forces::spec::GearDrive;
 
 /// The longest piece of a pitch circle drawn about the pitch point, mm: a wheel larger than
 /// its crank shows as an arc through P, not a circle filling the sheet.
@@ -13,9 +14,9 @@ const LINE_OF_ACTION_MM: f64 = 30.0;
 
 /// A wheel's pitch circle about `c` of radius `r` (mm), whole when small, else the arc of
 /// [`PITCH_ARC_MM`] centred on the direction `at` (radians) to the pitch point.
-fn pitch_circle(rec: &mut Recorder, what: &str, c: DVec2, r: f64, at: f64) {
+fn pitch_circle(c: DVec2, r: f64, at: f64) -> Option<Item> {
     let sweep = PITCH_ARC_MM / r;
-    let item = if sweep >= TAU * 0.5 {
+    if sweep >= TAU * 0.5 {
         Circle::new(c, r).map(Item::Circle)
     } else {
         (r > 0.0).then(|| {
@@ -26,9 +27,38 @@ fn pitch_circle(rec: &mut Recorder, what: &str, c: DVec2, r: f64, at: f64) {
                 sweep,
             })
         })
-    };
-    if let Some(item) = item {
-        rec.draw(what, item, Role::Axis, &[]);
+    }
+}
+
+/// The gear drive as the driving link's drawing shows it (in the units [`wheel`] was given):
+/// the crank's centre, its wheel's and the pinion's pitch radii, the direction to the pitch
+/// point (radians), the pitch point and the line of action's unit direction.
+pub(super) struct Wheel {
+    pub(super) o: DVec2,
+    pub(super) r: f64,
+    pub(super) mate: Option<f64>,
+    pub(super) towards: f64,
+    pub(super) p: DVec2,
+    pub(super) d: DVec2,
+}
+
+impl Wheel {
+    /// What it draws, its units drawn `mu` to the mm (1 when they are mm), whose size
+    /// depends on μ_l: the wheel's pitch circle or arc, the pinion's, the line of action
+    /// through P (about the wheel's radius long, at most 2·[`LINE_OF_ACTION_MM`]).
+    pub(super) fn items(&self, mu: f64) -> (Option<Item>, Option<Item>, Item) {
+        let (o, r, p) = (self.o / mu, self.r / mu, self.p / mu);
+        let u = DVec2::from_angle(self.towards);
+        let pinion = self
+            .mate
+            .and_then(|rm| pitch_circle(o + u * (r + rm / mu), rm / mu, self.towards + PI));
+        let half = (r * 0.6).min(LINE_OF_ACTION_MM);
+        let action = Segment::new(p - self.d * half, p + self.d * half);
+        (
+            pitch_circle(o, r, self.towards),
+            pinion,
+            Item::Segment(action),
+        )
     }
 }
 
@@ -75,21 +105,19 @@ pub(super) fn driver(
         }
         Drive::Gear(g) => {
             let mu = board.setup.mu_l.value();
-            let r = g.radius() / mu;
             // The tooth pushes on the flank that turns the crank the way M_bal = −k does.
             let flank = if k == 0.0 { board.sense() } else { -k.signum() };
-            let (p, d) = line_of_action(o, r, g.towards, g.pressure_angle, flank);
+            let wheel = wheel(o, mu, g, flank);
+            let (p, d) = (wheel.p, wheel.d);
             let towards = DVec2::from_angle(g.towards);
-            pitch_circle(&mut sch.rec, "pitch circle of the wheel", o, r, g.towards);
-            if let Some(rm) = g.mate_radius().map(|rm| rm / mu) {
-                let c = o + towards * (r + rm);
-                pitch_circle(
-                    &mut sch.rec,
-                    "pitch circle of the pinion",
-                    c,
-                    rm,
-                    g.towards + PI,
-                );
+            let (pitch, pinion, action) = wheel.items(1.0);
+            for (what, item) in [
+                ("pitch circle of the wheel", pitch),
+                ("pitch circle of the pinion", pinion),
+            ] {
+                if let Some(item) = item {
+                    sch.rec.draw(what, item, Role::Axis, &[]);
+                }
             }
             sch.rec.draw(
                 "line of centres",
@@ -100,13 +128,8 @@ pub(super) fn driver(
             let pid = sch
                 .rec
                 .point("pitch point", p, Role::Given, "P", towards, &[]);
-            let half = (r * 0.6).min(LINE_OF_ACTION_MM);
-            sch.rec.draw(
-                "line of action at α_w",
-                Item::Segment(Segment::new(p - d * half, p + d * half)),
-                Role::Axis,
-                &[pid],
-            );
+            sch.rec
+                .draw("line of action at α_w", action, Role::Axis, &[pid]);
             // The balancing force's arm about O, measured.
             let unit = Load::force(crank, LoadKind::Reaction, "F_{у}".into(), d, prog.centre);
             let unit = Load {
@@ -153,4 +176,20 @@ pub(super) fn driver(
         },
     };
     Ok((driver, arms))
+}
+
+/// The gear drive `g` of the crank whose centre is `o`, in units of `per` metres (mm at μ_l
+/// on the drawing, 1 for SI), the tooth pushing on the flank that turns the crank in the
+/// sense `flank` ([`line_of_action`]).
+pub(super) fn wheel(o: DVec2, per: f64, g: &GearDrive, flank: f64) -> Wheel {
+    let r = g.radius() / per;
+    let (p, d) = line_of_action(o, r, g.towards, g.pressure_angle, flank);
+    Wheel {
+        o,
+        r,
+        mate: g.mate_radius().map(|rm| rm / per),
+        towards: g.towards,
+        p,
+        d,
+    }
 }

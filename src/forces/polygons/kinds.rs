@@ -9,7 +9,7 @@ use super::{offset, prismatic, reaction_name, revolute};
 use crate::construct::{ConstructionError, Item, Role};
 use crate::forces::loads::{Load, LoadKind};
 use crate::forces::twin::Reaction;
-use crate::geom::Segment;
+use crate::geom::{DVec2, Segment};
 use crate::linkage::GroupPairs;
 
 /// One group under analysis: its drawing at μ_l, its polygon at μ_F, the loads on its links
@@ -25,42 +25,63 @@ pub(super) struct Work<'g, 'a>(
     pub(super) &'g mut Vec<MomentEquation>,
 );
 
+/// The points about which a group's drawing takes the moments of its links' loads, link
+/// i's then link j's: the inner joint B, about which each link's moment leaves out the
+/// unknown reaction there (RRR, RRP, PRP); the pivots A and C of an RPR group, each link
+/// turning about its own; A for the block of an RPP group, its joint for link j.
+pub(super) fn moment_centres(pairs: GroupPairs) -> [usize; 2] {
+    match pairs {
+        GroupPairs::Rrr { joint, .. }
+        | GroupPairs::Rrp { joint, .. }
+        | GroupPairs::Prp { joint, .. } => [joint, joint],
+        GroupPairs::Rpr { a, c } => [a, c],
+        GroupPairs::Rpp { a, joint, .. } => [a, joint],
+    }
+}
+
 impl Work<'_, '_> {
     /// The group's reactions, read off its polygon: the two outer pairs, then the inner.
     pub(super) fn reactions(self, pairs: GroupPairs) -> Result<Vec<Reaction>, ConstructionError> {
+        let m = moment_centres(pairs).map(|k| self.0.board.point(k));
         match pairs {
-            GroupPairs::Rrr { a, c, joint } => self.rrr(a, c, joint),
+            GroupPairs::Rrr { a, c, joint } => self.rrr(a, c, joint, m),
             GroupPairs::Rrp {
                 a,
                 guide: og,
                 joint,
-            } => self.rrp(a, og, joint),
-            GroupPairs::Rpr { a, c } => self.rpr(a, c),
+            } => self.rrp(a, og, joint, m),
+            GroupPairs::Rpr { a, c } => self.rpr(a, c, m),
             GroupPairs::Prp {
                 gi: ci,
                 gj: cj,
                 joint,
-            } => self.prp(ci, cj, joint),
+            } => self.prp(ci, cj, joint, m),
             GroupPairs::Rpp {
                 a,
                 guide: og,
                 joint,
-            } => self.rpp(a, og, joint),
+            } => self.rpp(a, og, joint, m),
         }
     }
 
     /// RRR: F^τ of each outer reaction from its link's moments about B; the polygon closed by
     /// lines ∥ CB and ∥ AB; the inner reaction from the end of i's loads to the closing point.
-    fn rrr(self, a: usize, c: usize, joint: usize) -> Result<Vec<Reaction>, ConstructionError> {
+    fn rrr(
+        self,
+        a: usize,
+        c: usize,
+        joint: usize,
+        [mi, mj]: [DVec2; 2],
+    ) -> Result<Vec<Reaction>, ConstructionError> {
         let Work(sch, pol, li, lj, [i, j], _, equations) = self;
         let board = sch.board;
         let (pa, pc, pb) = (board.point(a), board.point(c), board.point(joint));
         let (oa, oc) = (board.setup.prog.owner(a), board.setup.prog.owner(c));
         sch.drain();
-        let tau_i = sch.moments(pb, li) / sch.length(pa, pb);
+        let tau_i = sch.moments(mi, li) / sch.length(pa, pb);
         let t = sch.tangential(pa, pb, (oa, i), tau_i);
         equations.push(sch.equation(joint, &[i], t));
-        let tau_j = sch.moments(pb, lj) / sch.length(pc, pb);
+        let tau_j = sch.moments(mj, lj) / sch.length(pc, pb);
         let t = sch.tangential(pc, pb, (oc, j), tau_j);
         equations.push(sch.equation(joint, &[j], t));
         let t_a = (pb - pa).normalize().perp() * tau_i;
@@ -84,13 +105,19 @@ impl Work<'_, '_> {
 
     /// RRP: F^τ_A from link i's moments about B; closed by the normal to the guide and ∥ AB; the
     /// guide's reaction acts at its arm from B.
-    fn rrp(self, a: usize, og: usize, joint: usize) -> Result<Vec<Reaction>, ConstructionError> {
+    fn rrp(
+        self,
+        a: usize,
+        og: usize,
+        joint: usize,
+        [mi, mj]: [DVec2; 2],
+    ) -> Result<Vec<Reaction>, ConstructionError> {
         let Work(sch, pol, li, lj, [i, j], scale, equations) = self;
         let board = sch.board;
         let (pa, pb) = (board.point(a), board.point(joint));
         let oa = board.setup.prog.owner(a);
         sch.drain();
-        let tau_i = sch.moments(pb, li) / sch.length(pa, pb);
+        let tau_i = sch.moments(mi, li) / sch.length(pa, pb);
         let t = sch.tangential(pa, pb, (oa, i), tau_i);
         equations.push(sch.equation(joint, &[i], t));
         let t_a = (pb - pa).normalize().perp() * tau_i;
@@ -104,7 +131,7 @@ impl Work<'_, '_> {
         let r_g = pol.read(&reaction_name(og, j), e, h);
         let r_ji = pol.read(&reaction_name(j, i), pi, h);
         sch.drain();
-        let k = sch.moments(pb, lj);
+        let k = sch.moments(mj, lj);
         let s = offset(r_g, n_g, k, scale);
         equations.extend(sch.arm_equation(joint, j, (og, j), r_g.dot(n_g), s));
         Ok(vec![
@@ -116,20 +143,24 @@ impl Work<'_, '_> {
 
     /// RPR: the inner reaction, normal to the slide, from the moments of link j about its pivot
     /// with the block's moment carried over; each link's polygon closes on it.
-    fn rpr(self, a: usize, c: usize) -> Result<Vec<Reaction>, ConstructionError> {
+    fn rpr(
+        self,
+        a: usize,
+        c: usize,
+        [mi, mj]: [DVec2; 2],
+    ) -> Result<Vec<Reaction>, ConstructionError> {
         let Work(sch, pol, li, lj, [i, j], scale, equations) = self;
         let board = sch.board;
-        let (pa, pc) = (board.point(a), board.point(c));
         let (oa, oc) = (board.setup.prog.owner(a), board.setup.prog.owner(c));
         let u = board.dir(j);
         let n = u.perp();
         sch.drain();
-        let k_i = sch.moments(pa, li);
-        let k_j = sch.moments(pc, lj);
+        let k_i = sch.moments(mi, li);
+        let k_j = sch.moments(mj, lj);
         let known = sch.drain();
         // The inner reaction N·n brought to A: its arm about C is measured.
         let probe = Load::force(j, LoadKind::Reaction, reaction_name(i, j), n, a);
-        let arm = sch.moment(pc, &probe);
+        let arm = sch.moment(mj, &probe);
         let big_n = -(k_j + k_i) / arm;
         equations.push(sch.normal(c, [i, j], known, big_n));
         let p0 = pol.tip;
@@ -154,10 +185,15 @@ impl Work<'_, '_> {
     }
 
     /// PRP: closed by the two guides' normals; each reaction's point from its link's moments.
-    fn prp(self, ci: usize, cj: usize, joint: usize) -> Result<Vec<Reaction>, ConstructionError> {
+    fn prp(
+        self,
+        ci: usize,
+        cj: usize,
+        joint: usize,
+        [mi, mj]: [DVec2; 2],
+    ) -> Result<Vec<Reaction>, ConstructionError> {
         let Work(sch, pol, li, lj, [i, j], scale, equations) = self;
         let board = sch.board;
-        let pb = board.point(joint);
         let (n_i, n_j) = (board.dir(i).perp(), board.dir(j).perp());
         let p0 = pol.tip;
         let pi = pol.lay_all(li);
@@ -167,10 +203,10 @@ impl Work<'_, '_> {
         let r_i = pol.read(&reaction_name(ci, i), h, p0);
         let r_ji = pol.read(&reaction_name(j, i), pi, h);
         sch.drain();
-        let k_i = sch.moments(pb, li);
+        let k_i = sch.moments(mi, li);
         let s_i = offset(r_i, n_i, k_i, scale);
         equations.extend(sch.arm_equation(joint, i, (ci, i), r_i.dot(n_i), s_i));
-        let k_j = sch.moments(pb, lj);
+        let k_j = sch.moments(mj, lj);
         let s_j = offset(r_j, n_j, k_j, scale);
         equations.extend(sch.arm_equation(joint, j, (cj, j), r_j.dot(n_j), s_j));
         Ok(vec![
@@ -182,10 +218,15 @@ impl Work<'_, '_> {
 
     /// RPP: link j's polygon closed by the normals to the slide and to the guide; the block's
     /// triangle gives the outer reaction.
-    fn rpp(self, a: usize, og: usize, joint: usize) -> Result<Vec<Reaction>, ConstructionError> {
+    fn rpp(
+        self,
+        a: usize,
+        og: usize,
+        joint: usize,
+        [mi, mj]: [DVec2; 2],
+    ) -> Result<Vec<Reaction>, ConstructionError> {
         let Work(sch, pol, li, lj, [i, j], scale, equations) = self;
         let board = sch.board;
-        let (pa, pj_) = (board.point(a), board.point(joint));
         let oa = board.setup.prog.owner(a);
         let (n_s, n_g) = (board.dir(i).perp(), board.dir(j).perp());
         let p0 = pol.tip;
@@ -198,14 +239,14 @@ impl Work<'_, '_> {
         let r_oi = pol.read(&reaction_name(oa, i), q, p0);
         // The block about A: where the inner reaction acts on the slide.
         sch.drain();
-        let k_i = sch.moments(pa, li);
+        let k_i = sch.moments(mi, li);
         let s = offset(r_ij, n_s, -k_i, scale);
         equations.extend(sch.arm_equation(a, i, (i, j), -r_ij.dot(n_s), s));
         // Link j about its joint, with the inner reaction at its point.
         let shift = board.dir(i) * s.unwrap_or(0.0);
         let mut inner = Load::force(j, LoadKind::Reaction, reaction_name(i, j), r_ij, a);
         inner.shift = shift;
-        let k_j = sch.moments(pj_, lj) + sch.moment(pj_, &inner);
+        let k_j = sch.moments(mj, lj) + sch.moment(mj, &inner);
         let s_g = offset(r_g, n_g, k_j, scale);
         equations.extend(sch.arm_equation(joint, j, (og, j), r_g.dot(n_g), s_g));
         Ok(vec![

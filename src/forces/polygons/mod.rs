@@ -22,7 +22,7 @@
 use super::loads::{Load, LoadKind};
 use super::spec::Drive;
 use super::twin::{line_of_action, Pair, PairKind, Reaction};
-use crate::construct::{ConstructionError, Figure, Item, Recorder, Role};
+use crate::construct::{ConstructionError, Figure, Item, Role};
 use crate::geom::{Circle, DVec2, Segment};
 use crate::linkage::{draw_links, Built, Part, PlanSetup};
 use crate::scale::Scale;
@@ -31,15 +31,19 @@ use std::f64::consts::{PI, TAU};
 mod detail;
 mod driver;
 mod equations;
+mod extent;
 mod kinds;
 mod polygon;
 mod scheme;
 pub use detail::{letter_at, letter_toward, PolygonDetail};
 use driver::driver;
 pub use equations::{MomentEquation, MomentTerm, Unknown};
+pub(crate) use extent::predicted;
 use kinds::Work;
 use polygon::Polygon;
 use scheme::{show_reaction, Scheme};
+#[cfg(test)]
+pub(super) use {extent::drawings, scheme::ARROW_MM};
 
 /// One group's force analysis as drawn.
 #[derive(Debug, Clone, PartialEq)]

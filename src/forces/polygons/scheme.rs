@@ -11,7 +11,7 @@ use crate::geom::{DVec2, Segment};
 
 /// Length of a load's arrow on a group's drawing, mm (the drawing shows where and which
 /// way; the polygon shows how much).
-const ARROW_MM: f64 = 14.0;
+pub(in crate::forces) const ARROW_MM: f64 = 14.0;
 
 /// A link's loads and its arms measured on a drawing.
 pub(super) struct Scheme<'a> {
@@ -132,10 +132,10 @@ impl<'a> Scheme<'a> {
 }
 
 /// How far the frame's guide is drawn past the slider and past its reaction's point, mm.
-const GUIDE_PAST_MM: f64 = 12.0;
+pub(super) const GUIDE_PAST_MM: f64 = 12.0;
 
 /// Offset of a reaction arm's dimension line from the guide, mm.
-const ARM_DIMENSION_MM: f64 = 10.0;
+pub(super) const ARM_DIMENSION_MM: f64 = 10.0;
 
 /// The frame's guide under a slider whose reaction's point lies `offset` (m) along it from
 /// the slider's joint: the guide drawn (hatched on the frame's side) against the block's

@@ -41,6 +41,7 @@ use super::pairs::GroupPairs;
 use super::pen::Pen;
 use super::plans::builder::Builder;
 use crate::construct::{ConstructionError, Recorder};
+use crate::geom::DVec2;
 
 /// A kind's words: how the textbooks and the scene name it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -108,6 +109,12 @@ pub(in crate::linkage) trait GroupKind {
     /// Draw its links `[i, j]` at the constructed position `b` with `pen` (a link's number
     /// at its anchor, its joints to be drawn).
     fn draw(&self, pen: &mut Pen<'_>, prog: &dyn Compiled, b: &Built, links: [u32; 2]);
+    /// What its drawing takes beyond its links' points at the position `p` (SI, its links'
+    /// directions `dir`), at any μ_l: the marks drawn a fixed length from a point, each a
+    /// point and its offset in mm (RPR: link j run on past its pin).
+    fn drawn_past(&self, _p: &[DVec2], _dir: &[DVec2], _links: [u32; 2]) -> Vec<(DVec2, DVec2)> {
+        Vec::new()
+    }
     /// Solve it in closed form at the position held by `st` (its group `st.group`), its
     /// links `[i, j]`: its joint (RPR: its slide line) and its links' frames with their
     /// first and second derivatives with respect to φ₁. The analytic twin's own route: it

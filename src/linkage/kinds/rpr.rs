@@ -45,6 +45,9 @@ pub(in crate::linkage) struct Rpr {
     pub offset: f64,
 }
 
+/// How far link j is drawn past the pin sliding on it at least, mm.
+const PAST_PIN_MM: f64 = 6.0;
+
 impl GroupKind for Rpr {
     fn kind(&self) -> DyadKind {
         DyadKind::Rpr
@@ -82,11 +85,15 @@ impl GroupKind for Rpr {
         let u = DVec2::from_angle(th);
         let (a, c) = (b.p[self.a], b.p[self.c]);
         let mu = pen.rec.scale().value();
-        let reach = prog.link_reach(j, mu).max((a - c).dot(u) + 6.0);
+        let reach = prog.link_reach(j, mu).max((a - c).dot(u) + PAST_PIN_MM);
         pen.link(j, c, c + u * reach);
         pen.slider(i, a, th);
         pen.anchors.extend([(i, a), (j, c + u * (reach * 0.8))]);
         pen.joints.extend([self.a, self.c]);
+    }
+    fn drawn_past(&self, p: &[DVec2], dir: &[DVec2], [_, j]: [u32; 2]) -> Vec<(DVec2, DVec2)> {
+        let (c, u) = (p[self.c], dir[j as usize]);
+        vec![(c + u * (p[self.a] - c).dot(u), u * PAST_PIN_MM)]
     }
     fn pairs(&self) -> GroupPairs {
         GroupPairs::Rpr {
