@@ -3,6 +3,7 @@
 //! toggle or dead position). Diagnosis only: neither route's values come from here.
 
 use super::twin::{pairs, PairKind};
+use super::ForceError;
 use crate::geom::{smallest_pivot, DVec2};
 use crate::linkage::{Pose, Program};
 
@@ -84,6 +85,18 @@ pub fn singular_group(prog: &Program, pose: &Pose) -> Option<String> {
         }
     }
     worst.map(|(_, name)| name)
+}
+
+/// The twin's [`ForceError::Singular`] at position `label`, with the group whose equations
+/// are singular at `pose`.
+pub(super) fn located(e: ForceError, label: &str, prog: &Program, pose: &Pose) -> ForceError {
+    match e {
+        ForceError::Singular => ForceError::SingularAt {
+            position: label.to_string(),
+            group: singular_group(prog, pose),
+        },
+        e => e,
+    }
 }
 
 #[cfg(test)]

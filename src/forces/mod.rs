@@ -16,6 +16,7 @@
 mod arrows;
 mod diagnose;
 mod error;
+mod exact;
 mod indicator;
 mod lever;
 mod loads;
@@ -30,6 +31,7 @@ mod twin;
 
 pub use spec::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke};
 
+use diagnose::located;
 pub use error::ForceError;
 pub use indicator::Indicator;
 pub use loads::{
@@ -43,7 +45,6 @@ pub use polygons::{
 };
 pub use rows::notes;
 use rows::{reaction_rows, row, rows, zero_references};
-use twin::located;
 pub use twin::{power_balance, solve as solve_twin, Equilibrium, Pair, PairKind, Reaction};
 
 use crate::check::{Method, Row, Symbol};
@@ -251,7 +252,7 @@ pub fn analyse(
     let sense = w1.signum();
     let ph = phase(plan, pos.phi, sense);
     let (exact, loads_exact, twin) =
-        twin::at_position(spec, prog, (&pos.label, &pos.pose), ph, w1)?;
+        exact::at_position(spec, prog, (&pos.label, &pos.pose), ph, w1)?;
     let m_power = twin::power_balance(&loads_exact, &exact, w1);
     let drawn = graphical_motion(plan, k, mu_l, vp, ap, ctx);
     let loads = loads::loads(spec, prog, &drawn, ph)?;

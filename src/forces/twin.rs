@@ -3,8 +3,8 @@
 //! per link, ΣF = 0 and ΣM = 0 — and the balancing moment a second way from the power
 //! balance Σ F·v + Σ M·ω + M_bal·ω₁ = 0. Shares nothing with the polygons but the loads.
 
-use super::loads::{loads, Load, Phase, PositionMotion};
-use super::spec::{Drive, ForceSpec};
+use super::loads::{Load, PositionMotion};
+use super::spec::Drive;
 use super::ForceError;
 use crate::geom::DVec2;
 use crate::linkage::{GroupPairs, Pose, Program};
@@ -23,35 +23,6 @@ pub enum PairKind {
         /// The link whose frame direction is the sliding direction.
         dir_link: usize,
     },
-}
-
-/// The twin at a position `(label, pose)` on the stroke `phase`, the crank turning at `w1`:
-/// the analytic motion, the loads it gives and their solve (its failure located at the
-/// position).
-pub fn at_position(
-    spec: &ForceSpec,
-    prog: &Program,
-    (label, pose): (&str, &Pose),
-    phase: Phase,
-    w1: f64,
-) -> Result<(PositionMotion, Vec<Load>, Equilibrium), ForceError> {
-    let exact = PositionMotion::analytic(pose, w1);
-    let loads = loads(spec, prog, &exact, phase)?;
-    let twin = solve(prog, pose, &loads, &spec.drive, w1.signum())
-        .map_err(|e| located(e, label, prog, pose))?;
-    Ok((exact, loads, twin))
-}
-
-/// The twin's [`ForceError::Singular`] at position `label`, with the group whose equations
-/// are singular at `pose`.
-pub(super) fn located(e: ForceError, label: &str, prog: &Program, pose: &Pose) -> ForceError {
-    match e {
-        ForceError::Singular => ForceError::SingularAt {
-            position: label.to_string(),
-            group: super::diagnose::singular_group(prog, pose),
-        },
-        e => e,
-    }
 }
 
 /// A pair between link `from` (the link known first, 0 the frame) and link `to` (a link of

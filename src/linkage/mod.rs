@@ -16,6 +16,7 @@ mod kinds;
 mod model;
 mod pairs;
 mod part;
+mod part_extent;
 mod pen;
 mod plans;
 mod positions;

@@ -2,9 +2,8 @@
 //! readable; and where its extension lines run (the lines and arrows are drawn with the
 //! items, [`super::items`]).
 
-use super::items::LABEL_HEIGHT_MM;
 use super::path::Map;
-use super::text::{Align, Placed};
+use super::text::{Align, Placed, LABEL_HEIGHT_MM};
 use crate::geom::DVec2;
 
 /// Gap between a dimension line and its text, mm.

@@ -12,10 +12,6 @@ use std::f64::consts::TAU;
 /// far apart are drawn apart, and "≡" joins only points that coincide on the drawing (the
 /// tangent's `p ≡ a ≡ k` over 3,2 and 1,6 mm, issue 45).
 pub const COINCIDENT_MM: f64 = Drafting::HAND.resolution_mm();
-/// ГОСТ 2.304 size of labels (height of capitals), mm.
-pub const LABEL_HEIGHT_MM: f64 = 3.5;
-/// ГОСТ 2.304 size of view captions, mm.
-pub const CAPTION_HEIGHT_MM: f64 = 5.0;
 /// Least distance from a label's anchor to its text's box, mm (from a revolute pair's
 /// circle for a label of the pair).
 pub const LABEL_GAP_MM: f64 = 1.0;

@@ -53,7 +53,7 @@ pub use dxf::{to_dxf, DxfLayer, CURVE_TOLERANCE_MM};
 pub(crate) use fonts::faces as bundled_faces;
 pub use fonts::font_database;
 pub use ink::{view_ink, Cell};
-pub use items::{CAPTION_HEIGHT_MM, COINCIDENT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
+pub use items::{COINCIDENT_MM, LABEL_GAP_MM};
 pub use labels::{
     layout, struck_dimension_texts, Layout, Leader, PlacedLabel, ViewLayout, JOINT_SEPARATOR,
 };
@@ -67,6 +67,7 @@ pub use sheet::{Sheet, SheetSize, TitleBlock};
 pub use style::Pen;
 pub use svg::{to_svg, view_svgs, ViewSvg, FONT_FAMILY};
 pub use table::TableBlock;
+pub use text::{CAPTION_HEIGHT_MM, LABEL_HEIGHT_MM};
 
 pub use write::{write_all_atomic, write_atomic};
 

@@ -11,6 +11,11 @@ use super::Rect;
 use crate::geom::DVec2;
 use std::fmt::Write as _;
 
+/// ГОСТ 2.304 size of labels (height of capitals), mm.
+pub const LABEL_HEIGHT_MM: f64 = 3.5;
+/// ГОСТ 2.304 size of view captions, mm.
+pub const CAPTION_HEIGHT_MM: f64 = 5.0;
+
 /// The vertical position of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Script {

@@ -14,9 +14,10 @@ use super::kinds::moment_centres;
 use super::scheme::{ARM_DIMENSION_MM, ARROW_MM, GUIDE_PAST_MM};
 use crate::construct::fit::Extent;
 use crate::construct::Item;
+use crate::forces::exact::at_position;
 use crate::forces::loads::{Load, LoadKind};
 use crate::forces::spec::{Drive, ForceSpec};
-use crate::forces::twin::{self, Equilibrium, PairKind, Reaction};
+use crate::forces::twin::{Equilibrium, PairKind, Reaction};
 use crate::forces::{arrows, phase_at, ForceError};
 use crate::geom::DVec2;
 use crate::linkage::{GroupPairs, Part, PlanPoses, Pose, Program};
@@ -59,7 +60,7 @@ pub(crate) fn predicted(
     let prog = &poses.program;
     let pos = &poses.positions[k];
     let phase = phase_at(poses.extremes.as_ref(), pos.phi, w1.signum());
-    let (_, loads, solved) = twin::at_position(spec, prog, (&pos.label, &pos.pose), phase, w1)?;
+    let (_, loads, solved) = at_position(spec, prog, (&pos.label, &pos.pose), phase, w1)?;
     Ok(drawings(prog, &pos.pose, &loads, &solved, &spec.drive))
 }
 

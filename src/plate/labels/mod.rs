@@ -14,12 +14,13 @@
 //! object takes a leader line to it where one costs less ([`Leader`], ГОСТ 2.316). Crowded labels are placed first; the order is deterministic, so is the layout.
 //! The SVG writer writes the texts from this layout, and the tests check its boxes.
 
+use super::items::LABEL_GAP_MM;
 use super::items::{short_vector, step_outlines, Outline, Shape, COINCIDENT_MM, JOINT_RADIUS_MM};
-use super::items::{CAPTION_HEIGHT_MM, LABEL_GAP_MM, LABEL_HEIGHT_MM};
 use super::path::Map;
 use super::style::{Mark, Pen};
 use super::table::table_marks;
 use super::text::{measure, plain, Align, Extent, Placed};
+use super::text::{CAPTION_HEIGHT_MM, LABEL_HEIGHT_MM};
 use super::{Plate, Rect, TextBlock, View, CAPTION_BAND_MM};
 use crate::construct::{Item, Label, Names, StepId};
 use crate::geom::DVec2;
