@@ -23,6 +23,16 @@ pub const KGF: f64 = 9.806_65;
 /// One revolution per minute, rad/s (a shaft's speed n, rpm, as ω = πn/30).
 pub const RPM: f64 = std::f64::consts::PI / 30.0;
 
+/// A shaft's ω, rad/s, from its speed `n`, rpm: πn/30 (the scene's `n`, a train's input).
+pub fn from_rpm(n: f64) -> f64 {
+    std::f64::consts::PI * n / 30.0
+}
+
+/// A shaft's speed, rpm, from its ω `w`, rad/s: 30ω/π.
+pub fn to_rpm(w: f64) -> f64 {
+    w * 30.0 / std::f64::consts::PI
+}
+
 /// The label language of a plate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Lang {

@@ -191,7 +191,7 @@ impl Builder<'_> {
     /// `omega` (rad/s) or `n` (rpm), exactly one of them.
     pub(super) fn omega(&mut self, base: &str, raw: &RawCrank) -> f64 {
         const WANT: &str = "0 < ω ≤ 1e4 rad/s";
-        let max_n = MAX_OMEGA * 30.0 / std::f64::consts::PI;
+        let max_n = crate::scale::to_rpm(MAX_OMEGA);
         match (raw.omega, raw.n) {
             (Some(w), None) => self
                 .check
@@ -199,7 +199,7 @@ impl Builder<'_> {
             (None, Some(n)) => {
                 let key = join(base, "n");
                 let n = self.check.in_range(&key, n, max_n, "0 < n ≤ 95 493 rpm");
-                std::f64::consts::PI * n / 30.0
+                crate::scale::from_rpm(n)
             }
             (Some(w), Some(n)) => {
                 let value = format!("{}, n = {}", number(w), number(n));

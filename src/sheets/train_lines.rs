@@ -45,7 +45,7 @@ fn differential_line(t: &TrainStudy, lang: Lang) -> Option<String> {
     let rpm = unit_in("rpm", lang);
     // A drawing's four digits (the triangles' 362,873 read as 362,9).
     let n = |x: f64| super::digits::value(x, lang);
-    let by_triangles = t.triangles.omega[tr_.output] * 30.0 / std::f64::consts::PI;
+    let by_triangles = crate::scale::to_rpm(t.triangles.omega[tr_.output]);
     let by_formula = t.formula.map_or(String::new(), |u| {
         format!("{} {rpm} ({}), ", n(n_in / u), GearText::Willis.get(lang))
     });

@@ -74,8 +74,7 @@ pub struct TrainStudy {
 /// The input's ω the triangles are drawn for, rad/s: n_input·π/30, or 1 rad/s (per unit
 /// input) when the scene gives no speed.
 pub(super) fn omega_in(spec: &PlanetarySpec) -> f64 {
-    spec.n_input
-        .map_or(1.0, |n| n * std::f64::consts::PI / 30.0)
+    spec.n_input.map_or(1.0, crate::scale::from_rpm)
 }
 
 /// Carry out the train study.
