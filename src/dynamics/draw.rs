@@ -212,6 +212,11 @@ fn plotted(
     rec.finish()
 }
 
+/// How far a tangent of the energy–mass diagram runs on past the point it touches, mm.
+const TANGENT_PAST_MM: f64 = 12.0;
+/// How far from the J axis a tangent ends at least, mm: its name clear of the axis.
+const AXIS_CLEAR_MM: f64 = 5.0;
+
 /// The energy–mass diagram of the points (J_i, ΔT_i) with its two tangents.
 fn wittenbauer(
     dt: &[f64],
@@ -247,7 +252,20 @@ fn wittenbauer(
     };
     let (i1, s1, c1) = touch(1.0, true);
     let (i2, s2, c2) = touch(-1.0, false);
-    let x_hi = pts.iter().fold(0.0f64, |m, p| m.max(p.x));
+    // Each tangent runs on past the point it touches, and on across the J axis when it
+    // would end beside it (its name would stand on the axis); the J axis runs on past both,
+    // that no tangent ends on its arrowhead (the shaper's ψ_min did).
+    let past = [(i1, s1, c1), (i2, s2, c2)].map(|(i, s, c)| {
+        let x = pts[i].x + TANGENT_PAST_MM;
+        let y = c + s * x;
+        let x = if y.abs() < AXIS_CLEAR_MM && s != 0.0 {
+            x.max((AXIS_CLEAR_MM * s.signum() - c) / s)
+        } else {
+            x
+        };
+        DVec2::new(x, c + s * x)
+    });
+    let x_hi = pts.iter().chain(&past).fold(0.0f64, |m, p| m.max(p.x));
     let y_lo = pts.iter().fold(c1.min(c2), |m, p| m.min(p.y));
     let y_hi = pts.iter().fold(0.0f64, |m, p| m.max(p.y));
     draw_axes(
@@ -267,15 +285,14 @@ fn wittenbauer(
         &[],
     );
     let mut ends = [DVec2::ZERO; 2];
-    for (n, (i, s, c, name, toward)) in [
-        (i1, s1, c1, "k", DVec2::new(-1.0, 0.3)),
-        (i2, s2, c2, "l", DVec2::new(-1.0, -0.3)),
+    for (n, (c, past, name, toward)) in [
+        (c1, past[0], "k", DVec2::new(-1.0, 0.3)),
+        (c2, past[1], "l", DVec2::new(-1.0, -0.3)),
     ]
     .into_iter()
     .enumerate()
     {
         let on_axis = DVec2::new(0.0, c);
-        let past = DVec2::new(pts[i].x + 12.0, c + s * (pts[i].x + 12.0));
         let t = thin(
             &mut rec,
             format!("tangent ψ_{name}"),

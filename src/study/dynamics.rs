@@ -95,3 +95,43 @@ impl<'s> Session<'s> {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::construct::Item;
+
+    /// On the energy–mass diagram each tangent ends clear of the J axis (its name beside
+    /// its end, not on the axis) and the axis runs on past both, that no tangent ends on
+    /// its arrowhead (the shaper's ψ_min did, issue 45).
+    #[test]
+    fn the_tangents_of_the_energy_mass_diagram_end_clear_of_the_axis() {
+        for scene in ["shaper", "v-engine"] {
+            super::super::with_scene(scene, |s| {
+                let d = s.dynamics().expect("dynamics");
+                let steps = &d.diagrams.wittenbauer_figure.steps;
+                let tip = steps
+                    .iter()
+                    .find_map(|st| match st.item {
+                        Item::Vector { to, .. } if st.note.starts_with("abscissa axis") => Some(to),
+                        _ => None,
+                    })
+                    .expect("the J axis");
+                let ends: Vec<_> = steps
+                    .iter()
+                    .filter_map(|st| match st.item {
+                        Item::Segment(seg) if st.note.starts_with("tangent ψ") => Some(seg.to),
+                        _ => None,
+                    })
+                    .collect();
+                assert_eq!(ends.len(), 2, "{scene}");
+                for end in ends {
+                    assert!(end.y.abs() >= 5.0 - 1e-9, "{scene}: {end} beside the axis");
+                    assert!(
+                        tip.x - end.x >= 14.0 - 1e-9,
+                        "{scene}: {end}, the tip {tip}"
+                    );
+                }
+            });
+        }
+    }
+}
