@@ -67,6 +67,10 @@ pub fn screw_twin(c: &Screw) -> ScrewTwin {
     }
 }
 
+/// How far the turn's dimension line runs under the lowest thing drawn, mm: its text
+/// (3,5 mm high, ГОСТ 2.304) over it and a gap of 6 mm over the text.
+const DIMENSION_CLEAR_MM: f64 = 10.0;
+
 /// The unrolled thread at μ_l: one turn 2πr₁ along the base, the lead over it, the nut
 /// element on the helix with its loads, friction cone and reaction.
 fn scheme(case: &FrictionCase, c: &Screw, ctx: &Context) -> Result<(Drawing, f64), FrictionError> {
@@ -94,22 +98,6 @@ fn scheme(case: &FrictionCase, c: &Screw, ctx: &Context) -> Result<(Drawing, f64
         Role::Construction,
         &[],
     );
-    let id = rec.draw(
-        "one turn unrolled: πd₁",
-        Item::Dimension {
-            from: start,
-            to: corner,
-            offset: -6.0,
-        },
-        Role::Dimension,
-        &[],
-    );
-    rec.label(
-        id,
-        "πd_{1}",
-        (start + corner) / 2.0 - DVec2::Y * 6.0,
-        -DVec2::Y,
-    );
     let lead = rec.draw(
         "the lead",
         Item::Segment(Segment::new(corner, end)),
@@ -119,6 +107,31 @@ fn scheme(case: &FrictionCase, c: &Screw, ctx: &Context) -> Result<(Drawing, f64
     rec.label(lead, "p_{h}", (corner + end) / 2.0, DVec2::X);
     angle_mark(&mut rec, "λ", start, 26.0, (DVec2::X, end - start), "λ");
     let phi_read = body_on_plane(&mut rec, &as_incline(c), (start + end) / 2.0);
+    // The turn dimensioned under everything drawn, its text (over the line) clear of it too:
+    // the load Q runs down past the base, and a dimension line across it, or a text under
+    // its head, would read as part of the load.
+    let low = rec.steps().iter().fold(0.0f64, |m, s| {
+        let mut low = m;
+        s.item.bounding_points(|p| low = low.min(p.y));
+        low
+    });
+    let offset = low - DIMENSION_CLEAR_MM;
+    let id = rec.draw(
+        "one turn unrolled: πd₁",
+        Item::Dimension {
+            from: start,
+            to: corner,
+            offset,
+        },
+        Role::Dimension,
+        &[],
+    );
+    rec.label(
+        id,
+        "πd_{1}",
+        (start + corner) / 2.0 + DVec2::Y * offset,
+        -DVec2::Y,
+    );
     Ok((
         Drawing {
             kind: DrawingKind::Scheme,
@@ -177,4 +190,58 @@ pub(super) fn solve(
         readings: out,
         notes,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{solve, CaseKind, DrawingKind, FrictionCase, Motion, Screw};
+    use super::DIMENSION_CLEAR_MM;
+    use crate::construct::{Context, Drafting, Item};
+
+    /// The unrolled thread's turn πd₁ is dimensioned under the load Q, which runs down past
+    /// the base, its text clear of Q's head: a dimension line across the load read as part
+    /// of it (issue 45: Q's arrow through πd₁).
+    #[test]
+    fn the_turn_is_dimensioned_under_the_load() {
+        let screw = Screw {
+            load: 10_000.0,
+            f: 0.15,
+            lead: 2.5f64.to_radians(),
+            profile: 60f64.to_radians(),
+            radius: 0.009,
+            motion: Motion::Up,
+        };
+        let case = FrictionCase {
+            name: "4".into(),
+            kind: CaseKind::Screw(screw),
+            scale_f: None,
+            scale_l: None,
+        };
+        let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("a context");
+        let solved = solve(&case, &ctx).expect("solved");
+        let scheme = solved
+            .drawings
+            .iter()
+            .find(|d| d.kind == DrawingKind::Scheme)
+            .expect("the scheme");
+        let steps = &scheme.figure.steps;
+        let q_low = steps
+            .iter()
+            .find_map(|st| match st.item {
+                Item::Vector { from, to } if st.note == "the load" => Some(from.y.min(to.y)),
+                _ => None,
+            })
+            .expect("Q");
+        let line = steps
+            .iter()
+            .find_map(|st| match st.item {
+                Item::Dimension { from, offset, .. } => Some(from.y + offset),
+                _ => None,
+            })
+            .expect("πd₁");
+        assert!(
+            q_low - line >= DIMENSION_CLEAR_MM - 1e-9,
+            "Q to {q_low}, πd₁ at {line}"
+        );
+    }
 }
