@@ -62,6 +62,10 @@ impl Recorder {
     pub fn steps(&self) -> &[Step] {
         &self.figure.steps
     }
+    /// Axis-aligned bounds of everything drawn so far ([`Figure::bounds`]).
+    pub fn bounds(&self) -> Option<(DVec2, DVec2)> {
+        self.figure.bounds()
+    }
     /// Finish and return the figure.
     pub fn finish(self) -> Figure {
         self.figure

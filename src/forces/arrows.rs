@@ -73,11 +73,6 @@ pub fn arrow(
     onto: bool,
 ) -> StepId {
     let (from, to) = placed(&vectors(rec), (x, e, len), onto);
-    let second = if onto {
-        (x, x + e * len)
-    } else {
-        (x - e * len, x)
-    };
     // The label at the end away from the point; an arrow drawn onto the point in place of
     // one from it is labelled beside its shaft, since its tail lies where the first arrow
     // would have been labelled (or at a neighbouring point).
@@ -97,7 +92,8 @@ pub fn arrow(
         );
     }
     let id = rec.draw(note, Item::Vector { from, to }, Role::Result, &[]);
-    if (from, to) == second && !onto {
+    // Drawn onto the point in place of from it: the one placement ending at the point.
+    if !onto && to == x {
         rec.label_item(id, name, from.lerp(to, 0.5), e.perp());
     } else if from.distance(x) < to.distance(x) {
         rec.label_item(id, name, to, e);

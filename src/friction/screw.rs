@@ -110,11 +110,7 @@ fn scheme(case: &FrictionCase, c: &Screw, ctx: &Context) -> Result<(Drawing, f64
     // The turn dimensioned under everything drawn, its text (over the line) clear of it too:
     // the load Q runs down past the base, and a dimension line across it, or a text under
     // its head, would read as part of the load.
-    let low = rec.steps().iter().fold(0.0f64, |m, s| {
-        let mut low = m;
-        s.item.bounding_points(|p| low = low.min(p.y));
-        low
-    });
+    let low = rec.bounds().map_or(0.0, |(lo, _)| lo.y.min(0.0));
     let offset = low - DIMENSION_CLEAR_MM;
     let id = rec.draw(
         "one turn unrolled: πd₁",

@@ -11,6 +11,7 @@
 
 use super::driver::{wheel, Wheel};
 use super::kinds::moment_centres;
+use super::point_of;
 use super::scheme::{ARM_DIMENSION_MM, ARROW_MM, GUIDE_PAST_MM};
 use crate::construct::fit::Extent;
 use crate::construct::Item;
@@ -130,16 +131,15 @@ impl<'a> Sketch<'a> {
     /// A load as [`super::Scheme::show`] draws it.
     fn show(&mut self, l: &Load) {
         if l.is_couple() {
-            let o = self.pose.p[self.pose.origin[l.link]];
-            let around = self.couples.iter().filter(|c| **c == o).count();
-            self.couple(o, l.moment, around);
+            self.couple(self.pose.p[self.pose.origin[l.link]], l.moment);
         } else if let Some(e) = l.force.try_normalize() {
             self.arrow((self.pose.p[l.at] + l.shift, DVec2::ZERO), e, false);
         }
     }
 
-    /// A couple's arc about `o` (SI).
-    fn couple(&mut self, o: DVec2, moment: f64, around: usize) {
+    /// A couple's arc about `o` (SI), outside the couples' arcs drawn about `o` already.
+    fn couple(&mut self, o: DVec2, moment: f64) {
+        let around = self.couples.iter().filter(|c| **c == o).count();
         let arc = arrows::couple_arc(DVec2::ZERO, moment, around);
         for i in 0..=16 {
             self.extent.mark(o, arc.eval(f64::from(i) / 16.0));
@@ -214,29 +214,17 @@ impl<'a> Sketch<'a> {
             }
             return;
         }
-        self.show(&carried(
-            r,
-            self.pose,
-            r.pair.to,
-            r.force,
-            LoadKind::Reaction,
-        ));
+        self.show(&carried(r, self.pose, r.pair.to, r.force));
     }
 }
 
 /// A reaction as a load on link `on` of force `force`: at its pair's point, shifted along
 /// the slide by its offset.
-fn carried(r: &Reaction, pose: &Pose, on: usize, force: DVec2, kind: LoadKind) -> Load {
-    let (at, shift) = match r.pair.kind {
-        PairKind::Revolute(k) => (k, DVec2::ZERO),
-        PairKind::Prismatic {
-            reference,
-            dir_link,
-        } => (reference, pose.dir[dir_link] * r.offset.unwrap_or(0.0)),
-    };
+fn carried(r: &Reaction, pose: &Pose, on: usize, force: DVec2) -> Load {
+    let (at, shift) = point_of(r, |l| pose.dir[l]);
     Load {
         shift,
-        ..Load::force(on, kind, String::new(), force, at)
+        ..Load::force(on, LoadKind::Reaction, String::new(), force, at)
     }
 }
 
@@ -271,11 +259,9 @@ pub(crate) fn drawings(
         let at = match g.pairs {
             GroupPairs::Rpr { .. } => Some(Load {
                 shift: DVec2::ZERO,
-                ..carried(inner, pose, j, inner.force, LoadKind::Reaction)
+                ..carried(inner, pose, j, inner.force)
             }),
-            GroupPairs::Rpp { .. } => {
-                Some(carried(inner, pose, j, inner.force, LoadKind::Reaction))
-            }
+            GroupPairs::Rpp { .. } => Some(carried(inner, pose, j, inner.force)),
             _ => None,
         };
         if let Some(l) = at {
@@ -286,7 +272,7 @@ pub(crate) fn drawings(
         }
         for r in &reactions[..2] {
             if r.pair.from != 0 {
-                let l = carried(r, pose, r.pair.from, -r.force, LoadKind::Reaction);
+                let l = carried(r, pose, r.pair.from, -r.force);
                 applied.push(l);
             }
         }
@@ -319,10 +305,7 @@ fn driver(
     sk.arms(o, &loads);
     let mut gear = None;
     match drive {
-        Drive::Coupling if solved.m_bal != 0.0 => {
-            let around = sk.couples.iter().filter(|c| **c == o).count();
-            sk.couple(o, solved.m_bal, around);
-        }
+        Drive::Coupling if solved.m_bal != 0.0 => sk.couple(o, solved.m_bal),
         Drive::Coupling => {}
         Drive::Gear(g) => {
             let w = wheel(o, 1.0, g, solved.m_bal.signum());

@@ -240,7 +240,7 @@ pub fn polygons(
         // The reactions on earlier links become their loads.
         for r in &reactions[..2] {
             if r.pair.from != 0 {
-                let (at, shift) = point_of(r, b);
+                let (at, shift) = point_of(r, drawn_dir(b));
                 let mut l = Load::force(
                     r.pair.from,
                     LoadKind::Reaction,
@@ -275,16 +275,19 @@ pub fn polygons(
     })
 }
 
-/// Where a reaction acts: its pair's point, shifted along the slide by its offset.
-fn point_of(r: &Reaction, b: &Built) -> (usize, DVec2) {
+/// Where a reaction acts: its pair's point, shifted along the slide (link `l`'s direction
+/// `dir(l)`) by its offset.
+fn point_of(r: &Reaction, dir: impl Fn(usize) -> DVec2) -> (usize, DVec2) {
     match r.pair.kind {
         PairKind::Revolute(k) => (k, DVec2::ZERO),
         PairKind::Prismatic {
             reference,
             dir_link,
-        } => {
-            let u = DVec2::from_angle(b.angle[dir_link]);
-            (reference, u * r.offset.unwrap_or(0.0))
-        }
+        } => (reference, dir(dir_link) * r.offset.unwrap_or(0.0)),
     }
+}
+
+/// The direction of each link at the constructed position `b`.
+fn drawn_dir(b: &Built) -> impl Fn(usize) -> DVec2 + '_ {
+    |l| DVec2::from_angle(b.angle[l])
 }

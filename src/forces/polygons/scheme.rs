@@ -3,7 +3,7 @@
 //! frame's reaction on a slider standing on its guide at its arm).
 
 use super::MomentTerm;
-use super::{point_of, reaction_name, Board};
+use super::{drawn_dir, point_of, reaction_name, Board};
 use crate::construct::{Item, Recorder, Role};
 use crate::forces::loads::{Load, LoadKind};
 use crate::forces::twin::{PairKind, Reaction};
@@ -220,7 +220,7 @@ pub(super) fn show_reaction(sch: &mut Scheme<'_>, r: &Reaction) {
             return;
         }
     }
-    let (at, shift) = point_of(r, sch.board.setup.built);
+    let (at, shift) = point_of(r, drawn_dir(sch.board.setup.built));
     let l = Load::force(
         r.pair.to,
         LoadKind::Reaction,
