@@ -6,6 +6,7 @@
 
 use crate::construct::{Item, Recorder, Role, StepId};
 use crate::geom::{Arc, DVec2, Segment};
+use std::f64::consts::PI;
 
 /// A line lies on another when both its ends are this close to the other's line and they
 /// share more than [`SHARED_MM`] of their length, mm (a main line is 0.5 mm wide: closer,
@@ -267,29 +268,100 @@ const COUPLE_MM: f64 = 9.0;
 /// See [`COUPLE_MM`], mm.
 const COUPLE_STEP_MM: f64 = 4.0;
 
+/// A couple's arc stands in a sector this wide about its centre, rad.
+const COUPLE_SWEEP: f64 = 1.6;
+/// The usual sector begins here and ends there, rad: up and right of the centre.
+const COUPLE_FROM: f64 = 0.3;
+/// See [`COUPLE_FROM`], rad.
+const COUPLE_TO: f64 = 1.9;
+/// A line leaving the centre nearer the arc's tail or its arrowhead than this, rad, meets
+/// it (at [`COUPLE_MM`] about 1,8 mm); a line crossing the arc's middle does not.
+const COUPLE_CLEAR: f64 = 0.2;
+/// The arc is turned by this step from its usual sector to clear its ends, rad.
+const COUPLE_TURN: f64 = std::f64::consts::FRAC_PI_8;
+
 /// Draw a couple `moment` (its sign: counter-clockwise positive) named `name` as an arc
-/// arrow about `o`, outside every couple's arc already drawn about `o`, and label it at the
-/// arc's middle.
+/// arrow about `o`, outside every couple's arc already drawn about `o`, its ends clear of
+/// the lines and arrows drawn from `o` ([`couple_turn`]), and label it at the arc's middle.
 pub fn couple(rec: &mut Recorder, name: &str, o: DVec2, moment: f64) -> StepId {
     let around = rec
         .steps()
         .iter()
         .filter(|s| matches!(s.item, Item::Moment(a) if a.center.distance(o) < ON_LINE_MM))
         .count();
-    let arc = couple_arc(o, moment, around);
+    let away: Vec<DVec2> = (rec.steps().iter())
+        .flat_map(|s| match &s.item {
+            Item::Segment(seg) => vec![(seg.from, seg.to)],
+            Item::Vector { from, to } => vec![(*from, *to)],
+            Item::Polyline { points, closed } => (points.windows(2))
+                .map(|w| (w[0], w[1]))
+                .chain(
+                    (points.last().zip(points.first()))
+                        .filter(|_| *closed)
+                        .map(|(a, b)| (*a, *b)),
+                )
+                .collect(),
+            _ => Vec::new(),
+        })
+        .filter_map(|(a, b)| leaving(o, a, b, ON_LINE_MM))
+        .collect();
+    let arc = couple_arc(o, moment, around, couple_turn(&away, moment, around));
     let id = rec.draw(name.to_string(), Item::Moment(arc), Role::Result, &[]);
     let mid = DVec2::from_angle(arc.start + arc.sweep / 2.0);
     rec.label_item(id, name, o + mid * arc.radius, mid);
     id
 }
 
-/// The arc arrow of a couple `moment` about `o` (mm) with `around` couples' arcs drawn
-/// about `o` already: see [`couple`].
-pub fn couple_arc(o: DVec2, moment: f64, around: usize) -> Arc {
-    let (start, sweep) = if moment > 0.0 {
-        (0.3, 1.6)
+/// The direction a line from `a` to `b` leaves `o` in, when one of its ends is within `near`
+/// of `o` and the other is not.
+pub fn leaving(o: DVec2, a: DVec2, b: DVec2, near: f64) -> Option<DVec2> {
+    let (close, far) = if a.distance(o) <= b.distance(o) {
+        (a, b)
     } else {
-        (1.9, -1.6)
+        (b, a)
+    };
+    (close.distance(o) <= near && far.distance(o) > near).then(|| far - o)
+}
+
+/// How far the arc of a couple `moment` about its centre, `around` arcs out, is turned from
+/// its usual sector, rad: not at all (up and right), unless a line leaving the centre in
+/// one of the directions `away` meets its tail or its arrowhead (the shaper's rocker at
+/// M_и3's head); then by the fewest [`COUPLE_TURN`] steps that every line clears, or, when
+/// none does, by those whose ends they keep farthest from. A line may cross the arc's middle.
+pub fn couple_turn(away: &[DVec2], moment: f64, around: usize) -> f64 {
+    let clearance = |turn: f64| {
+        let arc = couple_arc(DVec2::ZERO, moment, around, turn);
+        let head = ARROWHEAD_MM / arc.radius;
+        let run = arc.sweep.abs();
+        (away.iter())
+            .filter(|d| d.length_squared() > 0.0)
+            .map(|d| {
+                // How far along the arc the line leaves, from its tail, its way round.
+                let u = ((d.y.atan2(d.x) - arc.start) * arc.sweep.signum() + PI)
+                    .rem_euclid(2.0 * PI)
+                    - PI;
+                let past_head = (u - run).max(run - head - u).max(0.0);
+                u.abs().min(past_head)
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    let tries = (0..16).map(|k: i32| {
+        let steps = if k % 2 == 0 { -k / 2 } else { (k + 1) / 2 };
+        f64::from(steps) * COUPLE_TURN
+    });
+    (tries.clone())
+        .find(|&turn| clearance(turn) >= COUPLE_CLEAR)
+        .or_else(|| tries.max_by(|a, b| clearance(*a).total_cmp(&clearance(*b))))
+        .unwrap_or(0.0)
+}
+
+/// The arc arrow of a couple `moment` about `o` (mm) with `around` couples' arcs drawn
+/// about `o` already, its sector turned by `turn` ([`couple_turn`]): see [`couple`].
+pub fn couple_arc(o: DVec2, moment: f64, around: usize, turn: f64) -> Arc {
+    let (start, sweep) = if moment > 0.0 {
+        (COUPLE_FROM + turn, COUPLE_SWEEP)
+    } else {
+        (COUPLE_TO + turn, -COUPLE_SWEEP)
     };
     Arc {
         center: o,
@@ -407,5 +479,61 @@ mod tests {
             })
             .collect();
         assert_eq!(radii, [COUPLE_MM, COUPLE_MM + COUPLE_STEP_MM]);
+    }
+
+    /// The arc of a couple drawn on `rec` about `o` (the first).
+    fn arc_of(rec: &Recorder) -> Arc {
+        (rec.steps().iter())
+            .find_map(|s| match s.item {
+                Item::Moment(a) => Some(a),
+                _ => None,
+            })
+            .expect("an arc")
+    }
+
+    /// The shaper's M_и3 (issue 45): the rocker left its centre 8° from the usual arc's
+    /// arrowhead, which stood on it. The arc turns until its head and tail are clear of every
+    /// line drawn from the centre; a line across its middle leaves it where it is.
+    #[test]
+    fn a_couple_turns_its_arrowhead_off_the_link() {
+        let o = DVec2::new(3.0, 4.0);
+        let line = |rec: &mut Recorder, angle: f64| {
+            let far = o + DVec2::from_angle(angle) * 40.0;
+            rec.draw(
+                "link",
+                Item::Segment(Segment::new(o, far)),
+                Role::Construction,
+                &[],
+            );
+        };
+        // Clockwise: the head at the usual sector's low end, 0,3 rad, its body above it.
+        let mut rec = recorder();
+        line(&mut rec, 0.45);
+        couple(&mut rec, "M", o, -1.0);
+        let a = arc_of(&rec);
+        assert_ne!(a.start, COUPLE_TO, "turned: {a:?}");
+        let head = a.start + a.sweep;
+        let body = head - a.sweep.signum() * ARROWHEAD_MM / a.radius;
+        for end in [a.start, head, body] {
+            let off = ((0.45 - end + PI).rem_euclid(2.0 * PI) - PI).abs();
+            assert!(off >= COUPLE_CLEAR - 1e-12, "{end} beside the line: {a:?}");
+        }
+        // Across the middle, or nothing drawn: the usual arc.
+        for lines in [vec![1.1], vec![]] {
+            let mut rec = recorder();
+            for l in lines {
+                line(&mut rec, l);
+            }
+            couple(&mut rec, "M", o, -1.0);
+            let a = arc_of(&rec);
+            assert_eq!((a.start, a.sweep), (COUPLE_TO, -COUPLE_SWEEP));
+        }
+        // Lines every eighth of a turn: the arc the lines keep farthest from.
+        let mut rec = recorder();
+        for k in 0..16 {
+            line(&mut rec, f64::from(k) * COUPLE_TURN);
+        }
+        couple(&mut rec, "M", o, 1.0);
+        assert!(arc_of(&rec).sweep > 0.0);
     }
 }

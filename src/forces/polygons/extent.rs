@@ -140,7 +140,19 @@ impl<'a> Sketch<'a> {
     /// A couple's arc about `o` (SI), outside the couples' arcs drawn about `o` already.
     fn couple(&mut self, o: DVec2, moment: f64) {
         let around = self.couples.iter().filter(|c| **c == o).count();
-        let arc = arrows::couple_arc(DVec2::ZERO, moment, around);
+        let lines = (self.lines.iter()).filter_map(|&(a, b)| arrows::leaving(o, a, b, self.near));
+        let heads = (self.arrows.iter())
+            .filter(|(x, ..)| x.distance(o) <= self.near)
+            .filter_map(|&(_, b, (from, to))| {
+                arrows::leaving(DVec2::ZERO, b + from, b + to, arrows::ON_LINE_MM)
+            });
+        let away: Vec<DVec2> = lines.chain(heads).collect();
+        let arc = arrows::couple_arc(
+            DVec2::ZERO,
+            moment,
+            around,
+            arrows::couple_turn(&away, moment, around),
+        );
         for i in 0..=16 {
             self.extent.mark(o, arc.eval(f64::from(i) / 16.0));
         }
