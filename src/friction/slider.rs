@@ -41,6 +41,12 @@ pub enum SliderState {
 /// How near α must be to φ for the motion to count as uniform, rad.
 const UNIFORM_RAD: f64 = 1e-9;
 
+/// The friction cones' height on the scheme, mm: the scheme is drawn large enough that P, R,
+/// the normal and the cones stand apart beside the slider's 10 mm (issue 45: at 28 mm they
+/// crowded it). P, parallel to R and beside it, is drawn shorter than R, so that their names
+/// stand at different heights.
+const CONE_MM: f64 = 42.0;
+
 /// The closed form of a slider pressed at α.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SliderTwin {
@@ -118,7 +124,7 @@ fn scheme(
     rec.draw(
         "the plane",
         Item::Guide {
-            segment: Segment::new(DVec2::new(-32.0, 0.0), DVec2::new(32.0, 0.0)),
+            segment: Segment::new(DVec2::new(-48.0, 0.0), DVec2::new(48.0, 0.0)),
             hatch: Side::Right,
         },
         Role::Given,
@@ -137,14 +143,14 @@ fn scheme(
     arrow(
         &mut rec,
         "the force P pressing the slider",
-        (corner - p_dir * 28.0, corner),
+        (corner - p_dir * (0.6 * CONE_MM), corner),
         Role::Given,
         "P",
         DVec2::new(-1.0, 0.0),
     );
     rec.draw(
         "the normal through P's point",
-        Item::Segment(Segment::new(corner, corner + DVec2::Y * 20.0)),
+        Item::Segment(Segment::new(corner, corner + DVec2::Y * 30.0)),
         Role::Construction,
         &[],
     );
@@ -152,11 +158,11 @@ fn scheme(
         &mut rec,
         "α, P from the normal",
         corner,
-        14.0,
+        21.0,
         (DVec2::Y, -p_dir),
         "α",
     );
-    let (left, _, top) = cone(&mut rec, DVec2::ZERO, DVec2::Y, c.f, 28.0);
+    let (left, _, top) = cone(&mut rec, DVec2::ZERO, DVec2::Y, c.f, CONE_MM);
     if rest && c.f0 > c.f {
         // The static cone (φ₀) the reaction stays within.
         for side in [1.0, -1.0] {
@@ -164,7 +170,7 @@ fn scheme(
                 "the static friction cone's generator at φ₀",
                 Item::Segment(Segment::new(
                     DVec2::ZERO,
-                    DVec2::new(-side * c.f0 * 28.0, 28.0),
+                    DVec2::new(-side * c.f0 * CONE_MM, CONE_MM),
                 )),
                 Role::Construction,
                 &[],
@@ -174,7 +180,7 @@ fn scheme(
             &mut rec,
             "φ₀, the static cone",
             DVec2::ZERO,
-            22.0,
+            33.0,
             (DVec2::Y, DVec2::new(c.f0, 1.0)),
             "φ_{0}",
         );
@@ -193,7 +199,7 @@ fn scheme(
     arrow(
         &mut rec,
         note,
-        (DVec2::ZERO, r_dir * 32.0),
+        (DVec2::ZERO, r_dir * (CONE_MM + 6.0)),
         Role::Result,
         "R",
         DVec2::new(-1.0, 0.0),
