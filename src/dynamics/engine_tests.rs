@@ -189,3 +189,33 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
         assert!(r.m_drv != 0.0);
     }
 }
+
+/// The V engine's A diagram under its M_д diagram (issue 45): the work rises to A_д's top
+/// before falling back to its value at 2π, and the A axis's arrowhead and name ran up
+/// among the M diagram's projections, 2,5 mm under the lowest. The layout takes the A
+/// diagram's top from the work's running sum, so the axis ends well clear of them.
+#[test]
+fn the_work_axis_ends_clear_of_the_moment_diagram() {
+    let scene = engine();
+    let session = Session::new(&scene, Drafting::EXACT);
+    let d = session.dynamics().expect("the dynamics");
+    let steps = &d.diagrams.work.steps;
+    let ys = |s: &crate::construct::Step| {
+        let mut out = Vec::new();
+        s.item.bounding_points(|p| out.push(p.y));
+        out
+    };
+    let axis = (steps.iter())
+        .find(|s| s.label.as_ref().is_some_and(|l| l.text == "A"))
+        .expect("the A axis");
+    let top = ys(axis).into_iter().fold(f64::NEG_INFINITY, f64::max);
+    let lowest = (steps.iter())
+        .filter(|s| s.note.starts_with("projection ") || s.note.starts_with("ray "))
+        .flat_map(ys)
+        .fold(f64::INFINITY, f64::min);
+    let gap = lowest - top;
+    assert!(
+        gap >= 10.0,
+        "{gap} mm between the A axis's end and the M diagram"
+    );
+}

@@ -103,7 +103,15 @@ pub(super) fn work(
     let mut rec = Recorder::in_context("M_с, A_с, A_д", mu_a, ctx);
     let src = Diagram::new(0.0, dx, mc.clone(), true).map_err(diagram_err("M_с"))?;
     let m_lo = mc.iter().fold(0.0f64, |m, &v| m.min(mu_m.to_mm(v)));
-    let a_hi = sc.a_est / mu_a.value();
+    // The A diagram's top: the work's running sum (by trapezoids) at its farthest from the
+    // axis, above its value at 2π where the work rises and falls back (the V engine's A_д).
+    let reach = (0..n)
+        .scan(0.0, |a: &mut f64, k| {
+            *a += 0.5 * (mc[k] + mc[(k + 1) % n]) * dx;
+            Some(a.abs())
+        })
+        .fold(sc.a_est, f64::max);
+    let a_hi = reach / mu_a.value();
     let so = DVec2::new(0.0, a_hi + 30.0 - m_lo);
     let layout = DiagramLayout::new(so, DVec2::ZERO)
         .named("φ", vary[0], "A")
