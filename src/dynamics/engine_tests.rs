@@ -192,7 +192,7 @@ fn reduced_moment_is_the_force_analysis_balancing_moment() {
 
 /// The V engine's A diagram under its M_д diagram (issue 45): the work rises to A_д's top
 /// before falling back to its value at 2π, and the A axis's arrowhead and name ran up
-/// among the M diagram's projections, 2,5 mm under the lowest. The layout takes the A
+/// among the M diagram's projections, 2,2 mm under the lowest. The layout takes the A
 /// diagram's top from the work's running sum, so the axis ends well clear of them.
 #[test]
 fn the_work_axis_ends_clear_of_the_moment_diagram() {

@@ -156,20 +156,7 @@ const ARMS_BESIDE: usize = 4;
 /// The one way every drawing of the force analysis draws an arm, so that [`arm_named`]
 /// finds it.
 pub fn arm(rec: &mut Recorder, note: String, (c, foot): (DVec2, DVec2), label: &str) -> StepId {
-    // The lines drawn: links, arrows, thin lines and the dimension lines of other arms.
-    let drawn: Vec<(DVec2, DVec2)> = rec
-        .steps()
-        .iter()
-        .filter_map(|s| match s.item {
-            Item::Vector { from, to } => Some((from, to)),
-            Item::Segment(seg) => Some((seg.from, seg.to)),
-            Item::Dimension { from, to, offset } => {
-                let n = (to - from).normalize_or_zero().perp() * offset;
-                Some((from + n, to + n))
-            }
-            _ => None,
-        })
-        .collect();
+    let drawn = drawn_lines(rec);
     let on_ink = |a: DVec2, b: DVec2| drawn.iter().any(|&pq| lies_on(a, b, pq, ON_LINE_MM));
     if on_ink(c, foot) {
         // One side first, stacked outwards as baseline dimensions are, then the other: the
@@ -245,6 +232,30 @@ fn room(a: DVec2, b: DVec2, drawn: &[(DVec2, DVec2)]) -> f64 {
     cuts.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max)
 }
 
+/// The straight lines drawn on `rec`: links (segments and the sides of polylines), arrows,
+/// thin lines and the dimension lines of arms.
+fn drawn_lines(rec: &Recorder) -> Vec<(DVec2, DVec2)> {
+    let mut out = Vec::new();
+    for s in rec.steps() {
+        match &s.item {
+            Item::Vector { from, to } => out.push((*from, *to)),
+            Item::Segment(seg) => out.push((seg.from, seg.to)),
+            Item::Dimension { from, to, offset } => {
+                let n = (*to - *from).normalize_or_zero().perp() * *offset;
+                out.push((*from + n, *to + n));
+            }
+            Item::Polyline { points, closed } => {
+                out.extend(points.windows(2).map(|w| (w[0], w[1])));
+                if let (true, Some(a), Some(b)) = (*closed, points.last(), points.first()) {
+                    out.push((*a, *b));
+                }
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
 /// The name of the arm from `c` to `foot` when one is drawn on `rec` already (two forces on
 /// one line of action have one arm: `h₇`, not `h₇ ≡ h₈`).
 pub fn arm_named(rec: &Recorder, c: DVec2, foot: DVec2) -> Option<String> {
@@ -289,20 +300,7 @@ pub fn couple(rec: &mut Recorder, name: &str, o: DVec2, moment: f64) -> StepId {
         .iter()
         .filter(|s| matches!(s.item, Item::Moment(a) if a.center.distance(o) < ON_LINE_MM))
         .count();
-    let away: Vec<DVec2> = (rec.steps().iter())
-        .flat_map(|s| match &s.item {
-            Item::Segment(seg) => vec![(seg.from, seg.to)],
-            Item::Vector { from, to } => vec![(*from, *to)],
-            Item::Polyline { points, closed } => (points.windows(2))
-                .map(|w| (w[0], w[1]))
-                .chain(
-                    (points.last().zip(points.first()))
-                        .filter(|_| *closed)
-                        .map(|(a, b)| (*a, *b)),
-                )
-                .collect(),
-            _ => Vec::new(),
-        })
+    let away: Vec<DVec2> = (drawn_lines(rec).into_iter())
         .filter_map(|(a, b)| leaving(o, a, b, ON_LINE_MM))
         .collect();
     let arc = couple_arc(o, moment, around, couple_turn(&away, moment, around));

@@ -190,9 +190,9 @@ pub(super) fn solve(
 
 #[cfg(test)]
 mod tests {
-    use super::super::{solve, CaseKind, DrawingKind, FrictionCase, Motion, Screw};
+    use super::super::{solve, CaseKind, DrawingKind, Motion, Screw};
     use super::DIMENSION_CLEAR_MM;
-    use crate::construct::{Context, Drafting, Item};
+    use crate::construct::Item;
 
     /// The unrolled thread's turn πd₁ is dimensioned under the load Q, which runs down past
     /// the base, its text clear of Q's head: a dimension line across the load read as part
@@ -207,14 +207,8 @@ mod tests {
             radius: 0.009,
             motion: Motion::Up,
         };
-        let case = FrictionCase {
-            name: "4".into(),
-            kind: CaseKind::Screw(screw),
-            scale_f: None,
-            scale_l: None,
-        };
-        let ctx = Context::for_model_size(300.0, Drafting::EXACT).expect("a context");
-        let solved = solve(&case, &ctx).expect("solved");
+        let case = crate::friction::tests::case("4", CaseKind::Screw(screw));
+        let solved = solve(&case, &crate::friction::tests::ctx(0.0)).expect("solved");
         let scheme = solved
             .drawings
             .iter()

@@ -6,12 +6,12 @@ use crate::check::notes::friction::{FrictionNote, RollerMotion, SliderMotion};
 use crate::construct::Drafting;
 use proptest::prelude::*;
 
-fn ctx(drafting: f64) -> Context {
+pub(super) fn ctx(drafting: f64) -> Context {
     let d = Drafting::new(drafting).expect("a valid drafting resolution");
     Context::for_model_size(300.0, d).expect("valid tolerances")
 }
 
-fn case(name: &str, kind: CaseKind) -> FrictionCase {
+pub(super) fn case(name: &str, kind: CaseKind) -> FrictionCase {
     FrictionCase {
         name: name.into(),
         kind,
