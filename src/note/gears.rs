@@ -237,17 +237,18 @@ fn rack_form(w: &mut Writer<'_, '_>, g: &Generation) {
         ],
     ];
     if c.x != 0.0 {
-        let xi_min = (17.0 - z) / 17.0;
+        // x is the shift coefficient, as in the pair's formulas; the rack's shift is x m.
+        let x_min = (17.0 - z) / 17.0;
         rows.push(vec![
-            label("ξ_{min}"),
+            label("x_{min}"),
             inline(&frac("17 - z", "17")),
-            inline(&n(xi_min)),
+            inline(&n(x_min)),
             none(),
             none(),
         ]);
         rows.push(vec![
-            label("x"),
-            inline(&format!("{} m", sym("ξ"))),
+            label("x m"),
+            inline(&format!("{} dot {}", n(c.x), n(m * 1e3))),
             mm(c.x * m),
             none(),
             none(),
@@ -262,7 +263,11 @@ fn rack_form(w: &mut Writer<'_, '_>, g: &Generation) {
         mm(pitch),
     ]);
     let st_formula = if c.x != 0.0 {
-        format!("{} P_(t) + 2 x op(\"tg\") {}", num(0.5, 1, lang), sym("α"))
+        format!(
+            "{} P_(t) + 2 x m op(\"tg\") {}",
+            num(0.5, 1, lang),
+            sym("α")
+        )
     } else {
         format!("{} P_(t)", num(0.5, 1, lang))
     };

@@ -90,10 +90,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         .map(|r| r.graphical)
         .reduce(f64::max);
     if let Some(d) = deviations {
+        let (factor, unit) = crate::words::shown_unit(Symbol::EnvelopeDeviation);
         let bound = format!(
             "{} {}",
-            super::digits::bound(d * 1e6, lang),
-            unit_in("um", lang)
+            super::digits::bound(d * factor, lang),
+            unit_in(unit, lang)
         );
         lines.push(GearText::EnvelopeRule.get(lang).replace("{bound}", &bound));
     }
@@ -192,11 +193,11 @@ pub(crate) fn cut_wheel_quantity(
 }
 
 /// The unit a row's value is written in and its factor from SI, one per quantity on the
-/// sheet: a length in mm, the drawn envelope's deviation from the exact one in µm (each
+/// sheet: a length in mm, the drawn envelope's deviation from the exact one in nm (each
 /// wheel's, whatever its size); an angle in degrees; an angular velocity in rad/s.
 fn table_unit(r: &Row) -> (&'static str, f64) {
     match crate::words::shown_unit(r.key.symbol) {
-        (k, u @ ("mm" | "um" | "deg" | "rad/s")) => (u, k),
+        (k, u @ ("mm" | "nm" | "deg" | "rad/s")) => (u, k),
         _ => ("", 1.0),
     }
 }
@@ -420,6 +421,9 @@ impl Filling {
     fn contour_lines(&mut self, b: &BlockingStudy) {
         let lang = self.lang;
         let f = |x: f64| format_sig(x, 4, lang);
+        // Each index to thousandths, as the tables give the shifts (x₁ = 0,694): one column of
+        // decimals down the points.
+        let d3 = |x: f64| crate::scale::format_fixed(x, 3, lang);
         for (tag, ix) in b.points() {
             let name = crate::words::point_label(tag);
             let head = if tag == crate::words::POINT_TAGS[0] {
@@ -429,12 +433,12 @@ impl Filling {
             };
             self.lines.push(format!(
                 "{head}: x_1 = {}, x_2 = {}, Δy = {}, ε_α = {}, s_{{a1}} = {}m, s_{{a2}} = {}m",
-                f(ix.x[0]),
-                f(ix.x[1]),
-                f(ix.dy),
-                f(ix.eps),
-                f(ix.sa[0]),
-                f(ix.sa[1]),
+                d3(ix.x[0]),
+                d3(ix.x[1]),
+                d3(ix.dy),
+                d3(ix.eps),
+                d3(ix.sa[0]),
+                d3(ix.sa[1]),
             ));
         }
         // The choices lie inside the hard limits by a margin (a supremum on a limit is a

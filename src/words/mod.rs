@@ -115,11 +115,11 @@ pub(crate) const UNIT_WORDS: [(&str, &str); 14] = [
 /// The unit a row of `symbol` is shown in on a sheet and in the note's tables, with the
 /// factor to it from SI: a length in millimetres (a drawing's unit: `4,975 мм`, not
 /// `0,004975 м`), an angle in degrees (the protractor's: `29,14°`, not `0,5086 рад`), a drawn
-/// envelope's deviation from the exact one in micrometres (each wheel's, whatever its size:
-/// `0,5690 мкм`, not `5,69·10⁻⁴ мм`), every other quantity in its SI unit.
+/// envelope's deviation from the exact one in nanometres (each wheel's, whatever its size:
+/// `4,402 нм`, not `0,004402 мкм`), every other quantity in its SI unit.
 pub(crate) fn shown_unit(symbol: Symbol) -> (f64, &'static str) {
     match (symbol, symbol.unit()) {
-        (Symbol::EnvelopeDeviation, _) => (1e6, "um"),
+        (Symbol::EnvelopeDeviation, _) => (1e9, "nm"),
         (_, "m") => (1e3, "mm"),
         (_, "rad") => (180.0 / std::f64::consts::PI, "deg"),
         (_, u) => (1.0, u),
@@ -128,15 +128,14 @@ pub(crate) fn shown_unit(symbol: Symbol) -> (f64, &'static str) {
 
 /// A unit written in SI (`m/s^2`, `N*m`, `kg*m^2`, `rad/s`, `mm`) in `lang`: `·` for the
 /// product, the Russian and Ukrainian unit names in Cyrillic (`Н·м`, `м/с^2`, `кг·м^2`); an
-/// angle in degrees (`deg`) as `°`; a micrometre (`um`) as `мкм`, `µm`; a speed in revolutions per minute (`rpm`) as `об/мин`,
-/// `об/хв`, `rpm`.
+/// angle in degrees (`deg`) as `°`; a nanometre (`nm`) as `нм`; a speed in revolutions per
+/// minute (`rpm`) as `об/мин`, `об/хв`, `rpm`.
 pub(crate) fn unit_in(unit: &str, lang: Lang) -> String {
     match (unit, lang) {
         ("deg", _) => return "°".into(),
         ("rpm", Lang::Ru) => return "об/мин".into(),
         ("rpm", Lang::Uk) => return "об/хв".into(),
-        ("um", Lang::En) => return "µm".into(),
-        ("um", _) => return "мкм".into(),
+        ("nm", Lang::Ru | Lang::Uk) => return "нм".into(),
         _ => {}
     }
     let si = unit.replace('*', "·");
