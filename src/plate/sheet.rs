@@ -328,7 +328,9 @@ fn wrapped_in_cell(
     align: Align,
     out: &mut Vec<Placed>,
 ) {
-    let width = x1 - x0 - 3.0;
+    // The title's ends, and the accents over its capitals (й, Й), clear of the cell's
+    // borders: 2.5 mm a side.
+    let width = x1 - x0 - 5.0;
     let one_line = super::text::fitting_width(text, height);
     let split = text
         .char_indices()
@@ -339,7 +341,8 @@ fn wrapped_in_cell(
         Some(i) if one_line > 0.0 && width / one_line * height < min_height => {
             let (a, b) = (text[..i].trim(), text[i..].trim());
             let h = (y1 - y0) / 4.0;
-            let line_h = height.min((y1 - y0) / 2.6);
+            // Two lines of capitals under a third of the cell each.
+            let line_h = height.min((y1 - y0) / 3.2);
             // Both lines narrowed alike, as the longer needs: one size, one condensing.
             let natural = |line: &str| super::text::fitting_width(line, line_h);
             let ratio = (width / natural(a).max(natural(b))).min(1.0);
@@ -353,7 +356,10 @@ fn wrapped_in_cell(
                 });
             }
         }
-        _ => out.push(in_cell((x0, y0, x1, y1), text, height, align)),
+        _ => {
+            let (at, _) = cell_anchor((x0, y0, x1, y1), align);
+            out.push(fitted(at, text, height, width, align));
+        }
     }
 }
 
