@@ -432,15 +432,20 @@ fn merkin(
     let nearest = |p: DVec2| ((p.x / run).round().max(0.0) as usize).min(n);
     let (hi, lo) = (nearest(top), nearest(bottom));
     let right = run * n as f64 + 6.0;
+    // ΔT_I dimensioned right of the curve, past the φ axis's arrow (and its name under it);
+    // each horizontal runs on as the dimension's extension line (2 mm past the dimension
+    // line, ГОСТ 2.307), its name written at its end.
+    let dim_at = 12.0;
     for (p, name) in [(top, "T_{I max}"), (bottom, "T_{I min}")] {
+        let end = DVec2::new(right + dim_at + 2.0, p.y);
         let id = thin(
             &mut rec,
             format!("horizontal through {name}"),
             p,
-            DVec2::new(right, p.y),
+            end,
             &[curve],
         );
-        rec.label(id, name, DVec2::new(right, p.y), DVec2::new(1.0, 0.0));
+        rec.label(id, name, end, DVec2::new(1.0, 0.0));
     }
     let (a, b) = (DVec2::new(right, bottom.y), DVec2::new(right, top.y));
     let dim = rec.draw(
@@ -448,7 +453,7 @@ fn merkin(
         Item::Dimension {
             from: a,
             to: b,
-            offset: -8.0,
+            offset: -dim_at,
         },
         Role::Dimension,
         &[],

@@ -358,3 +358,54 @@ fn merkin_horizontals_touch_the_drawn_curve() {
         }
     }
 }
+
+/// Issue 45: T_I max and T_I min are written at the ends of their horizontals, past the ΔT_I
+/// dimension, level with their lines — on the shaper's sheet the placer had put them over
+/// and under the lines, T_I min 0,56 mm under its line, because the dimension's extension
+/// lines ran on past the horizontals' ends.
+#[test]
+fn merkin_horizontals_are_named_at_their_ends() {
+    for name in ["shaper", "v-engine"] {
+        let s = tmm::load(&support::root().join(format!("constructions/{name}.toml")))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let session = tmm::Session::new(&s, tmm::Drafting::HAND);
+        for lang in [tmm::Lang::Ru, tmm::Lang::Uk, tmm::Lang::En] {
+            let plates = tmm::build(&session, tmm::PlateKind::Dynamics, lang)
+                .unwrap_or_else(|e| panic!("{e}"));
+            let mut seen = 0;
+            for p in &plates {
+                for l in tmm::plate::layout(p).labels {
+                    let steps = &p.views[l.view].figure.steps;
+                    let named = |id: &tmm::construct::StepId| {
+                        steps[id.0 as usize]
+                            .note
+                            .starts_with("horizontal through T_{I")
+                    };
+                    if !l.steps.iter().any(named) {
+                        continue;
+                    }
+                    seen += 1;
+                    let (r, at) = (l.rect, l.anchor);
+                    assert!(
+                        r.min.x >= at.x && r.min.x - at.x <= 2.0,
+                        "{name} {lang:?}: {} starts {:.2} mm from its line's end",
+                        l.text,
+                        r.min.x - at.x
+                    );
+                    assert!(
+                        r.min.y < at.y && at.y < r.max.y,
+                        "{name} {lang:?}: {} not level with its line ({:.2}…{:.2} against {:.2})",
+                        l.text,
+                        r.min.y,
+                        r.max.y,
+                        at.y
+                    );
+                }
+            }
+            assert_eq!(
+                seen, 2,
+                "{name} {lang:?}: the two names of T_I's horizontals"
+            );
+        }
+    }
+}
