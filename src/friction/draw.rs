@@ -7,6 +7,12 @@ use crate::geom::{rotate, Arc, DVec2, Line, Segment};
 /// How far a construction line runs past the points it joins, mm.
 const RUN_ON_MM: f64 = 6.0;
 
+/// The friction cones' height on a scheme, mm: a scheme is drawn large enough that the
+/// loads, R, the normal and the cone stand apart beside the body's 10 mm (issue 45: at 28 mm
+/// they crowded it, and φ's arc was a few millimetres). P, parallel to R beside it on the
+/// slider, is drawn shorter than R, so that their names stand at different heights.
+pub(super) const CONE_MM: f64 = 42.0;
+
 /// Record an arrowed vector with its label beside its middle, on the side `side` (a unit
 /// direction, or zero for the left of the arrow).
 pub(super) fn arrow(

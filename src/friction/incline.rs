@@ -3,7 +3,7 @@
 //! Q + P + R = 0 with R turned from the normal by φ against the motion; beside it the same
 //! triangle without friction, whose P₀ gives the efficiency.
 
-use super::draw::{angle_mark, arrow, cone, triangle, turned, Third, Triangle};
+use super::draw::{angle_mark, arrow, cone, triangle, turned, Third, Triangle, CONE_MM};
 use super::{
     friction_angle, reading, subject, CaseReading, Drawing, DrawingKind, FrictionCase,
     FrictionError, Incline, Motion, Solved,
@@ -102,11 +102,13 @@ pub(super) fn scheme(
 ) -> Result<(Drawing, f64), FrictionError> {
     let u = DVec2::from_angle(c.alpha);
     let mut rec = case.schematic_recorder(ctx)?;
-    let foot = -u * 32.0;
+    // The plane reaches past the cone and the reaction on both sides.
+    let half = CONE_MM + 6.0;
+    let foot = -u * half;
     rec.draw(
         "the inclined plane",
         Item::Guide {
-            segment: Segment::new(foot, u * 32.0),
+            segment: Segment::new(foot, u * half),
             hatch: Side::Right,
         },
         Role::Given,
@@ -115,11 +117,11 @@ pub(super) fn scheme(
     if c.alpha > 0.0 {
         rec.draw(
             "the horizontal",
-            Item::Segment(Segment::new(foot, foot + DVec2::X * 32.0)),
+            Item::Segment(Segment::new(foot, foot + DVec2::X * half)),
             Role::Construction,
             &[],
         );
-        angle_mark(&mut rec, "α", foot, 16.0, (DVec2::X, u), "α");
+        angle_mark(&mut rec, "α", foot, 0.5 * half, (DVec2::X, u), "α");
     }
     let phi_read = body_on_plane(&mut rec, c, DVec2::ZERO);
     Ok((
@@ -151,34 +153,35 @@ pub(super) fn body_on_plane(rec: &mut Recorder, c: &Incline, at: DVec2) -> f64 {
         &[],
     );
     let s = c.motion.sign();
-    let v_from = g + n * 8.0 - u * (6.0 * s);
-    let v = (v_from, v_from + u * (12.0 * s));
+    let v_from = g + n * 10.0 - u * (8.0 * s);
+    let v = (v_from, v_from + u * (16.0 * s));
     arrow(rec, "the velocity", v, Role::Dimension, "v", n);
+    let load = 0.6 * CONE_MM;
     arrow(
         rec,
         "the load",
-        (g, g - DVec2::Y * 20.0),
+        (g, g - DVec2::Y * load),
         Role::Given,
         "Q",
         DVec2::X,
     );
-    arrow(
-        rec,
-        "the force",
-        (g, g + p_dir * 20.0),
-        Role::Given,
-        "P",
-        -DVec2::Y,
-    );
-    let (left, right, top) = cone(rec, at, n, c.f, 28.0);
+    // P from the body, or onto it where drawn from it it would run into the plane (a
+    // horizontal P on the way down).
+    let p = if (g + p_dir * load - at).dot(n) < 0.0 {
+        (g - p_dir * load, g)
+    } else {
+        (g, g + p_dir * load)
+    };
+    arrow(rec, "the force", p, Role::Given, "P", -DVec2::Y);
+    let (left, right, top) = cone(rec, at, n, c.f, CONE_MM);
     let (edge, side) = if s > 0.0 {
         (left, n.perp())
     } else {
         (right, -n.perp())
     };
-    let r = (at, at + r_dir * 32.0);
+    let r = (at, at + r_dir * (CONE_MM + 6.0));
     arrow(rec, "the total reaction R", r, Role::Result, "R", side);
-    angle_mark(rec, "φ", at, 20.0, (n, r_dir), "φ");
+    angle_mark(rec, "φ", at, 0.7 * CONE_MM, (n, r_dir), "φ");
     let across = rec.measure(top, edge).read_mm;
     let along = rec.measure(at, top).read_mm;
     across.atan2(along)
@@ -311,4 +314,47 @@ pub(super) fn solve(
         readings: out,
         notes,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::{case, ctx, incline};
+    use super::super::{solve, CaseKind, DrawingKind, Motion};
+    use crate::geom::DVec2;
+
+    /// Issue 45: on the inclined plane's scheme P stands on the body's side of the plane, drawn
+    /// from the body or onto it: a horizontal P on the way down (case 2), or P at 10° over the
+    /// horizontal on the way up (case 1), drawn from the body ran into the plane's hatching.
+    #[test]
+    fn the_inclines_force_stays_off_the_plane() {
+        for (beta, motion) in [
+            (0.0, Motion::Down),
+            (-10.0, Motion::Up),
+            (10.0, Motion::Up),
+            (30.0, Motion::Up),
+            (10.0, Motion::Down),
+        ] {
+            let c = incline(20.0, beta, 0.15, motion);
+            let n = DVec2::from_angle(c.alpha).perp();
+            let s = solve(&case("incline", CaseKind::Incline(c)), &ctx(0.0))
+                .unwrap_or_else(|e| panic!("{e}"));
+            let scheme = (s.drawings.iter())
+                .find(|d| d.kind == DrawingKind::Scheme)
+                .expect("the scheme");
+            let p = (scheme.figure.steps.iter())
+                .find_map(|st| match st.item {
+                    crate::construct::Item::Vector { from, to } if st.note == "the force" => {
+                        Some((from, to))
+                    }
+                    _ => None,
+                })
+                .expect("P");
+            for end in [p.0, p.1] {
+                assert!(
+                    end.dot(n) > 0.0,
+                    "β′ = {beta}°, {motion:?}: P's end {end} on the plane's far side"
+                );
+            }
+        }
+    }
 }

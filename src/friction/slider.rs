@@ -17,7 +17,7 @@
 //! −P, inside the cone (R₀ − ΔP read as the triangle's closing side), below the static
 //! cone's limit N/cos φ₀ (the side R₀, stated on the sheet) by up to 1/cos φ₀.
 
-use super::draw::{angle_mark, arrow, cone, thin_line, triangle, turned, Third};
+use super::draw::{angle_mark, arrow, cone, thin_line, triangle, turned, Third, CONE_MM};
 use super::{
     friction_angle, reading, subject, CaseReading, Drawing, DrawingKind, FrictionCase,
     FrictionError, Slider, Solved,
@@ -40,12 +40,6 @@ pub enum SliderState {
 
 /// How near α must be to φ for the motion to count as uniform, rad.
 const UNIFORM_RAD: f64 = 1e-9;
-
-/// The friction cones' height on the scheme, mm: the scheme is drawn large enough that P, R,
-/// the normal and the cones stand apart beside the slider's 10 mm (issue 45: at 28 mm they
-/// crowded it). P, parallel to R and beside it, is drawn shorter than R, so that their names
-/// stand at different heights.
-const CONE_MM: f64 = 42.0;
 
 /// The closed form of a slider pressed at α.
 #[derive(Debug, Clone, Copy, PartialEq)]

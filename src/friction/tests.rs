@@ -20,7 +20,7 @@ pub(super) fn case(name: &str, kind: CaseKind) -> FrictionCase {
     }
 }
 
-fn incline(alpha_deg: f64, beta_deg: f64, f: f64, motion: Motion) -> Incline {
+pub(super) fn incline(alpha_deg: f64, beta_deg: f64, f: f64, motion: Motion) -> Incline {
     Incline {
         load: 1000.0,
         f,
