@@ -282,12 +282,10 @@ pub(super) fn draw_plan(
     // Trajectories of the link points.
     for op in &prog.ops {
         if let Op::Point { idx, .. } = op {
-            // A smooth curve through the constructed points, as on the drawing board.
             let points: Vec<DVec2> = positions.iter().map(|p| p.built.p[*idx]).collect();
-            let closed = positions.len() > 2;
             rec.draw(
                 format!("trajectory of {}", prog.names[*idx]),
-                Item::Curve { points, closed },
+                trajectory(prog, *idx, points, &first.built),
                 Role::Construction,
                 &[],
             );
@@ -308,6 +306,57 @@ pub(super) fn draw_plan(
     if let Some(ex) = ex {
         draw_extremes(rec, prog, positions, ex);
     }
+}
+
+/// The trajectory of point `k` through its constructed `points`: on a link turning about a
+/// fixed pivot, the arc about the pivot from one extreme to the other (the whole circle
+/// where the link turns round), drawn with the compass; else a smooth curve through the
+/// points, as with the French curve. A closed curve through a rocker's points, swept there
+/// and back, parts into two lines about its arc.
+fn trajectory(prog: &Program, k: usize, points: Vec<DVec2>, built: &Built) -> Item {
+    let pivot = (prog.links_of(k).into_iter())
+        .filter(|&l| l != 0)
+        .find_map(|l| (0..prog.fixed.len()).find(|&f| prog.links_of(f).contains(&l)));
+    let (Some(f), Some(first), true) = (pivot, points.first(), points.len() > 2) else {
+        return smooth(points);
+    };
+    let centre = built.p[f];
+    let radius = first.distance(centre);
+    // Every point at the one distance (to a millionth of it): a point on that link.
+    let on_circle = |p: &DVec2| (p.distance(centre) - radius).abs() <= 1e-6 * radius;
+    if radius <= 0.0 || !points.iter().all(on_circle) {
+        return smooth(points);
+    }
+    // The angles unwrapped along the cycle back to its start, each step the short way round:
+    // a link that turns round comes back a whole turn on, a rocker where it began.
+    let angle = |p: &DVec2| (*p - centre).to_angle();
+    let start = angle(first);
+    let mut at = start;
+    let (mut lo, mut hi) = (at, at);
+    let cycle: Vec<&DVec2> = points.iter().chain([first]).collect();
+    for w in cycle.windows(2) {
+        at += (angle(w[1]) - angle(w[0]) + std::f64::consts::PI).rem_euclid(TAU)
+            - std::f64::consts::PI;
+        (lo, hi) = (lo.min(at), hi.max(at));
+    }
+    if (at - start).abs() > std::f64::consts::PI || hi - lo >= TAU - 1e-9 {
+        return Item::Circle(Circle {
+            center: centre,
+            radius,
+        });
+    }
+    Item::Arc(Arc {
+        center: centre,
+        radius,
+        start: lo,
+        sweep: hi - lo,
+    })
+}
+
+/// A smooth curve through `points`, closed when they are more than two.
+fn smooth(points: Vec<DVec2>) -> Item {
+    let closed = points.len() > 2;
+    Item::Curve { points, closed }
 }
 
 /// What names point `k` drawn at `at`: a point on one link only (a centre of mass, the

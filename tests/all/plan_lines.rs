@@ -437,3 +437,53 @@ fn every_sheet_states_the_scales_of_the_plans_it_draws() {
     }
     assert!(looked >= 12, "{looked} sheets with plans");
 }
+
+/// Issue 45: a point of a link turning about a fixed pivot is drawn on its trajectory as the
+/// compass draws it — the arc about the pivot from one extreme to the other, the circle where
+/// the link turns round — not a closed smooth curve through its positions, which on the
+/// shaper's rocker parted into two lines about the arc of D. A point of a coupler keeps
+/// its curve.
+#[test]
+fn a_pivoted_links_points_are_drawn_on_arcs_about_the_pivot() {
+    let mut seen = std::collections::BTreeMap::<String, usize>::new();
+    for scene in LINKAGES.split(' ') {
+        let all = views(scene);
+        let plan = captioned(&all, "План положений");
+        let steps = &plan[0].figure.steps;
+        let pivots: Vec<DVec2> = (steps.iter())
+            .filter_map(|s| match s.item {
+                Item::Joint { at, fixed: true } => Some(at),
+                _ => None,
+            })
+            .collect();
+        for s in steps
+            .iter()
+            .filter(|s| s.note.starts_with("trajectory of "))
+        {
+            let about = |c: DVec2| pivots.iter().any(|p| p.distance(c) < 1e-9);
+            let kind = match &s.item {
+                Item::Arc(a) => {
+                    assert!(about(a.center), "{scene}: {} about no pivot", s.note);
+                    assert!(a.sweep > 0.0 && a.sweep < std::f64::consts::TAU);
+                    "arc"
+                }
+                Item::Circle(c) => {
+                    assert!(about(c.center), "{scene}: {} about no pivot", s.note);
+                    "circle"
+                }
+                Item::Curve { .. } => "curve",
+                other => panic!("{scene}: {} drawn as {other:?}", s.note),
+            };
+            *seen
+                .entry(format!("{scene} {}: {kind}", s.note))
+                .or_default() += 1;
+        }
+    }
+    for want in [
+        "shaper trajectory of D: arc",
+        "six-bar trajectory of S_3: arc",
+        "tangent trajectory of C: circle",
+    ] {
+        assert!(seen.contains_key(want), "{want} not among {seen:?}");
+    }
+}
