@@ -19,7 +19,7 @@ use super::rigid::{draw_rigid, rigid_links, RigidLink};
 use crate::construct::{Context, Drafting, Item, Recorder, Role};
 use crate::geom::{Arc, Circle, DVec2, Segment, Side, Tolerances};
 use crate::scale::Scale;
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 
 /// Draw one position's links with `role`; returns, per link number drawn, a point to put its
 /// number at.
@@ -335,11 +335,10 @@ fn trajectory(prog: &Program, k: usize, points: Vec<DVec2>, built: &Built) -> It
     let (mut lo, mut hi) = (at, at);
     let cycle: Vec<&DVec2> = points.iter().chain([first]).collect();
     for w in cycle.windows(2) {
-        at += (angle(w[1]) - angle(w[0]) + std::f64::consts::PI).rem_euclid(TAU)
-            - std::f64::consts::PI;
+        at += (angle(w[1]) - angle(w[0]) + PI).rem_euclid(TAU) - PI;
         (lo, hi) = (lo.min(at), hi.max(at));
     }
-    if (at - start).abs() > std::f64::consts::PI || hi - lo >= TAU - 1e-9 {
+    if (at - start).abs() > PI {
         return Item::Circle(Circle {
             center: centre,
             radius,

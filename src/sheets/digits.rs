@@ -223,9 +223,12 @@ mod tests {
 
     #[test]
     fn a_bound_is_rounded_up_to_one_digit() {
-        // The shaper's envelope deviations, µm (issue 45): 0,001509 and 0,001463 → 0,002.
+        // Small values keep their one digit (0,001509 → 0,002); the shaper's envelope
+        // deviations, in nm: 1,509 → 2, and gears-pz1's 6,507 → 7.
         assert_eq!(bound(0.001509, Lang::Ru), "0,002");
         assert_eq!(bound(0.001463, Lang::En), "0.002");
+        assert_eq!(bound(1.509, Lang::Ru), "2");
+        assert_eq!(bound(6.507, Lang::Ru), "7");
         assert_eq!(bound(0.003, Lang::En), "0.003");
         assert_eq!(bound(9.2, Lang::En), "10");
         assert_eq!(bound(46.0, Lang::En), "50");
