@@ -192,6 +192,13 @@ pub(crate) fn cut_wheel_quantity(
     })
 }
 
+/// Δy, and the indices of the blocking contour's points, to thousandths, as Kudryavtsev's
+/// tables give the shifts and Δy (x₁ = 0,694, Δy = 0,160): «Δy = 0,160» in the pair's line,
+/// the cut wheel's caption and at K alike.
+fn thousandths(x: f64, lang: Lang) -> String {
+    crate::scale::format_fixed(x, 3, lang)
+}
+
 /// The unit a row's value is written in and its factor from SI, one per quantity on the
 /// sheet: a length in mm, the drawn envelope's deviation from the exact one in nm (each
 /// wheel's, whatever its size); an angle in degrees; an angular velocity in rad/s.
@@ -379,7 +386,7 @@ impl Filling {
             degrees(p.alpha_w, lang),
             mm(p.a_w),
             value(p.y, lang),
-            value(p.dy, lang),
+            thousandths(p.dy, lang),
         ));
         self.lines.push(format!(
             "r_{{w1}} = {}, r_{{w2}} = {}, r_{{a1}} = {}, r_{{a2}} = {}, r_{{f1}} = {}, r_{{f2}} = {}",
@@ -421,9 +428,7 @@ impl Filling {
     fn contour_lines(&mut self, b: &BlockingStudy) {
         let lang = self.lang;
         let f = |x: f64| format_sig(x, 4, lang);
-        // Each index to thousandths, as the tables give the shifts (x₁ = 0,694): one column of
-        // decimals down the points.
-        let d3 = |x: f64| crate::scale::format_fixed(x, 3, lang);
+        let d3 = |x: f64| thousandths(x, lang);
         for (tag, ix) in b.points() {
             let name = crate::words::point_label(tag);
             let head = if tag == crate::words::POINT_TAGS[0] {
@@ -482,7 +487,7 @@ impl Filling {
         // A blank shortened by Δy (a pair's wheel) says so.
         let dy = c.shortening();
         let shortened = if dy.abs() > 1e-9 {
-            format!(", Δy = {}", format_sig(dy, 4, lang))
+            format!(", Δy = {}", thousandths(dy, lang))
         } else {
             String::new()
         };

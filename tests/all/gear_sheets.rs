@@ -52,6 +52,14 @@ fn gear_sheets(scene: &tmm::scene::Scene, drafting: Drafting, lang: Lang) -> Vec
     tmm::build(&Session::new(scene, drafting), kind, lang).expect("the gear sheet builds")
 }
 
+/// Every text line of the gear sheets of `scene` at `drafting` in `lang`.
+fn sheet_lines(scene: &tmm::scene::Scene, drafting: Drafting, lang: Lang) -> Vec<String> {
+    gear_sheets(scene, drafting, lang)
+        .iter()
+        .flat_map(|p| p.texts.iter().flat_map(|t| t.lines.clone()))
+        .collect()
+}
+
 /// The distance from `p` to the box `r` (0 inside it), mm.
 fn box_distance(r: &Rect, p: DVec2) -> f64 {
     (r.min - p).max(p - r.max).max(DVec2::ZERO).length()
@@ -401,10 +409,7 @@ fn a_closing_module_is_written_as_the_decision() {
         (Lang::Uk, "m = 1 мм, m_{3-4} = 2,833 мм (за співвісністю)"),
         (Lang::En, "m = 1 mm, m_{3-4} = 2.833 mm (for coaxiality)"),
     ] {
-        let lines: Vec<String> = gear_sheets(&s, Drafting::EXACT, lang)
-            .iter()
-            .flat_map(|p| p.texts.iter().flat_map(|t| t.lines.clone()))
-            .collect();
+        let lines: Vec<String> = sheet_lines(&s, Drafting::EXACT, lang);
         assert!(lines.iter().any(|l| l == want), "{lang:?}: {lines:?}");
     }
 }
@@ -418,10 +423,7 @@ fn a_cut_wheels_line_names_it_as_its_picture_does() {
         ("gears-pz1", "z = 10, x = 0: s_a = ", ["0:", "p:"]),
         ("shaper", "z = 13, x = ", ["1:", "1p:"]),
     ] {
-        let lines: Vec<String> = gear_sheets(&scene(name), Drafting::EXACT, Lang::Ru)
-            .iter()
-            .flat_map(|p| p.texts.iter().flat_map(|t| t.lines.clone()))
-            .collect();
+        let lines: Vec<String> = sheet_lines(&scene(name), Drafting::EXACT, Lang::Ru);
         assert!(
             lines.iter().any(|l| l.starts_with(want)),
             "{name}: {lines:?}"
@@ -456,10 +458,7 @@ fn a_cut_wheels_line_names_it_as_its_picture_does() {
 /// review's G8: «362,873 об/мин»), beside Willis's 360.
 #[test]
 fn a_differentials_speed_is_written_at_four_digits() {
-    let lines: Vec<String> = gear_sheets(&scene("gears-differential"), Drafting::HAND, Lang::Ru)
-        .iter()
-        .flat_map(|p| p.texts.iter().flat_map(|t| t.lines.clone()))
-        .collect();
+    let lines: Vec<String> = sheet_lines(&scene("gears-differential"), Drafting::HAND, Lang::Ru);
     let want = "n_{3} = 1000 об/мин, n_{5} = 200 об/мин → n_{H} = 360 об/мин (формула Виллиса), 362,9 об/мин";
     assert!(lines.iter().any(|l| l.starts_with(want)), "{lines:?}");
 }
@@ -547,4 +546,24 @@ fn a_cut_wheels_values_are_named_by_its_shift() {
             "{name}: the note's x_min of a wheel name"
         );
     }
+}
+
+/// Issue 45: Δy and the blocking points' indices are written to thousandths, as the tables
+/// give them: gears-pz3 wrote «Δy = 0,16» in the pair's line, «0,1597» at K and «0,002569» at
+/// ε_α max; its envelope's deviation is bounded in nanometres («7 нм», not «0,007 мкм»).
+#[test]
+fn gear_lines_write_dy_to_thousandths_and_the_deviation_in_nanometres() {
+    let lines: Vec<String> = sheet_lines(&scene("gears-pz3"), Drafting::EXACT, Lang::Ru);
+    let with_dy: Vec<&String> = lines.iter().filter(|l| l.contains("Δy = ")).collect();
+    assert!(with_dy.len() >= 5, "{with_dy:?}");
+    for l in with_dy {
+        let dy = l.split("Δy = ").nth(1).and_then(|r| r.split(',').nth(1));
+        let decimals = dy.map(|d| d.chars().take_while(char::is_ascii_digit).count());
+        assert_eq!(decimals, Some(3), "{l}");
+    }
+    let pz1: Vec<String> = sheet_lines(&scene("gears-pz1"), Drafting::EXACT, Lang::Ru);
+    assert!(
+        pz1.iter().any(|l| l.ends_with("не более чем на 7 нм")),
+        "{pz1:?}"
+    );
 }
