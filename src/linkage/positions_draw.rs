@@ -316,7 +316,7 @@ pub(super) fn draw_plan(
 fn trajectory(prog: &Program, k: usize, points: Vec<DVec2>, built: &Built) -> Item {
     let pivot = (prog.links_of(k).into_iter())
         .filter(|&l| l != 0)
-        .find_map(|l| (0..prog.fixed.len()).find(|&f| prog.links_of(f).contains(&l)));
+        .find_map(|l| (prog.fixed_pivots().into_iter()).find(|&f| prog.links_of(f).contains(&l)));
     let (Some(f), Some(first), true) = (pivot, points.first(), points.len() > 2) else {
         return smooth(points);
     };

@@ -328,9 +328,7 @@ fn wrapped_in_cell(
     align: Align,
     out: &mut Vec<Placed>,
 ) {
-    // The title's ends, and the accents over its capitals (й, Й), clear of the cell's
-    // borders: 2.5 mm a side.
-    let width = x1 - x0 - 5.0;
+    let width = x1 - x0 - 2.0 * TITLE_SIDE_MM;
     let one_line = super::text::fitting_width(text, height);
     let split = text
         .char_indices()
@@ -370,6 +368,11 @@ fn hangs(line: &str) -> bool {
     let last = line.rsplit(' ').next().unwrap_or(line);
     last.chars().count() <= 2 || last.eq_ignore_ascii_case("the")
 }
+
+/// A long text of the title block (its title, a part's material) keeps this far from each
+/// side of its cell, mm: its ends, and the accents over its capitals (й, Й), clear of the
+/// borders.
+const TITLE_SIDE_MM: f64 = 2.5;
 
 /// The smallest height a title block's title is shrunk to before it is wrapped, mm (ГОСТ
 /// 2.304 size 3.5).
