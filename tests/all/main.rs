@@ -15,6 +15,7 @@ mod blocking_region;
 mod blocking_scenes;
 mod cam;
 mod cam_angle_steps;
+mod cam_axis_numbers;
 mod cam_breaks;
 mod cam_data;
 mod cam_diagrams;

@@ -11,7 +11,7 @@
 use crate::cam::motion::Point;
 use crate::cam::CamSpec;
 use crate::construct::{Item, Recorder, Role, Step};
-use crate::geom::{DVec2, Rect, Segment};
+use crate::geom::{curve, DVec2, Rect, Segment};
 use crate::scale::Scale;
 
 /// The notes of the four phases' dimensions on the displacement diagram: rise, far dwell,
@@ -65,6 +65,8 @@ const NUMBER_CLEAR_MM: f64 = 1.0;
 const CROSSING_CLEAR_MM: f64 = 0.2;
 /// The places of a number in its column tried for [`CROSSING_CLEAR_MM`], this far apart, mm.
 const COLUMN_STEP_MM: f64 = 0.1;
+/// Chords of each piece of a smooth curve tried against a number's box.
+const CURVE_CHORDS: usize = 8;
 /// The phases' dimension line lies this far over the displacement diagram's top, mm: under
 /// the tip of its ordinate axis (12 mm over it), which is the first phase's extension line,
 /// and under the axis's name.
@@ -199,11 +201,13 @@ fn crossing_side(values: &[f64], i: usize, side: f64) -> f64 {
 /// bounds; `None` where the curve strikes it everywhere.
 fn clear_column(steps: &[Step], at: DVec2, width: f64, column: [f64; 2]) -> Option<[f64; 2]> {
     let half = DVec2::new(0.5 * width, HALF_BOX_MM) + CROSSING_CLEAR_MM;
-    let lines: Vec<&[DVec2]> = steps
+    let lines: Vec<Vec<DVec2>> = steps
         .iter()
         .filter(|s| matches!(s.role, Role::Given | Role::Result))
         .filter_map(|s| match &s.item {
-            Item::Polyline { points, .. } => Some(&points[..]),
+            Item::Polyline { points, .. } => Some(points.clone()),
+            // As drawn: smooth through its points.
+            Item::Curve { points, closed } => Some(curve::points(points, *closed, CURVE_CHORDS)),
             _ => None,
         })
         .collect();

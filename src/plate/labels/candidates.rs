@@ -89,6 +89,9 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
     // A label kept in its point's column keeps the places whose middle stands that near left
     // and right, or, with none, its place at the point itself or, where the column leaves
     // the point (a number beside the curve through its point), the column's nearest.
+    // After them, its places in its own row across the column, the near ends first: a ring
+    // place beside the point stands above or below the row, where a construction's
+    // horizontal may run (cam-central's `6` on the projection of a chord step).
     if let Some([left, right]) = r.column {
         out.retain(|c| {
             let across = (c.min.x + c.max.x) * 0.5 - r.anchor.x;
@@ -98,9 +101,24 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
             let at = r.anchor + DVec2::new(0.0f64.max(-left).min(right), 0.0);
             out.push(Rect::new(at - half, at + half));
         }
+        out.extend(in_row(r.anchor, half, [left, right]));
     }
     out
 }
+
+/// Places in a column's row: [`ROW_PLACES`] boxes of half size `half` centred on the row of
+/// `anchor`, from the column's `[left, right]` ends inward.
+fn in_row(anchor: DVec2, half: DVec2, [left, right]: [f64; 2]) -> impl Iterator<Item = Rect> {
+    (0..ROW_PLACES).map(move |k| {
+        let t = k as f64 / (ROW_PLACES - 1) as f64;
+        let x = -left + t * (left + right);
+        let at = anchor + DVec2::new(x, 0.0);
+        Rect::new(at - half, at + half)
+    })
+}
+
+/// Places tried in a column's row (see [`in_row`]).
+const ROW_PLACES: usize = 7;
 
 /// One ring of places `gap` from the point in `directions` directions from `start`, and a
 /// joint label's four corner places.
