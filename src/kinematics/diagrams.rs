@@ -183,6 +183,25 @@ fn chart_scales(spec: &KinematicsSpec, s: &[f64], size: ChartSize) -> Result<Sca
     Ok(Scales { x, y })
 }
 
+/// The positions' numbers `marks` (travel from position 1, rad; label) under a diagram's φ
+/// axis at μ_φ `phi`, as on the plan of positions.
+pub(super) fn number_phi_axis<'a>(
+    rec: &mut Recorder,
+    marks: impl Iterator<Item = (f64, &'a String)>,
+    phi: Scale,
+) {
+    for (x, label) in marks {
+        let at = DVec2::new(phi.to_mm(x), 0.0);
+        let id = rec.draw(
+            format!("position {label} on the φ axis"),
+            Item::Text(at),
+            Role::Dimension,
+            &[],
+        );
+        rec.label(id, label.clone(), at, DVec2::new(0.0, -1.0));
+    }
+}
+
 /// S of point `k` read off the plan of positions (at μ_l = `scale_l`) at the `numbered`
 /// positions: the distance from the start of the working stroke (position 1 when no extreme
 /// is drawn), positive along the working stroke; at the plan's other positions (its extremes
@@ -332,16 +351,7 @@ pub fn diagrams(
                 .filter(|b| clear(b.travel))
                 .map(|b| (b.travel, &b.label)),
         );
-    for (x, label) in marks {
-        let at = DVec2::new(scales.x.to_mm(x), 0.0);
-        let id = rec1.draw(
-            format!("position {label} on the φ axis"),
-            Item::Text(at),
-            Role::Dimension,
-            &[],
-        );
-        rec1.label(id, label.clone(), at, DVec2::new(0.0, -1.0));
-    }
+    number_phi_axis(&mut rec1, marks, scales.x);
     let scales2 = Scales {
         x: scales.x,
         y: mu1,

@@ -95,6 +95,9 @@ pub fn rocker_diagram(
     let derivative = calculus::Derivation::Chords
         .differentiate(&mut rec, &src, scales, h, &lay)
         .map_err(fail)?;
+    // The positions' numbers under the ω diagram's φ axis, as under the S diagram's.
+    let marks = (numbered.iter().enumerate()).map(|(idx, (_, p))| (src.x(idx), &p.label));
+    super::diagrams::number_phi_axis(&mut rec, marks, scale_phi);
     let eps_scale = super::peak(numbered.iter().map(|(_, p)| p.pose.ddangle[link] * w1 * w1));
     let rows = numbered
         .iter()

@@ -433,3 +433,34 @@ fn with_kinematics(
         .expect("kinematics");
     f(&s, &session, &study);
 }
+
+/// The rocker's ω diagram numbers its positions under its φ axis, as the S chart does and the
+/// textbook's ω₃(φ) (seed 000 §1.5) is read: 1 … 12, each at its node (issue 45: the
+/// four-bar's and the shaper's ω₃ axes had no numbers, so a reader could not say which
+/// ordinate was which position's).
+#[test]
+fn the_rocker_diagram_numbers_its_positions() {
+    use tmm::construct::Item;
+    for scene in ["four-bar", "shaper"] {
+        with_kinematics(scene, |_, _, study| {
+            let rocker = study.rocker.as_ref().expect("the ω diagram");
+            let marks: Vec<(String, f64)> = (rocker.figure.steps.iter())
+                .filter(|st| st.note.ends_with("on the φ axis"))
+                .filter_map(|st| match (&st.item, &st.label) {
+                    (Item::Text(at), Some(l)) => Some((l.text.clone(), at.x)),
+                    _ => None,
+                })
+                .collect();
+            let names: Vec<&str> = marks.iter().map(|(t, _)| t.as_str()).collect();
+            let want: Vec<String> = (1..=12).map(|k| k.to_string()).collect();
+            assert_eq!(names, want, "{scene}");
+            let interval = TAU_OVER_12 / rocker.scale_phi.value();
+            for (k, (text, x)) in marks.iter().enumerate() {
+                assert!(
+                    (x - k as f64 * interval).abs() < 1e-9,
+                    "{scene}: {text} at {x} mm"
+                );
+            }
+        });
+    }
+}
