@@ -3,8 +3,8 @@
 //! coefficients of rolling friction k₁ (load/rollers) and k₂ (rollers/plane); the moments
 //! about the rollers' contact with the plane give `P·d = Q·k₁ + (Q + 2G)·k₂`. Rolling is pure
 //! when `k/h < f` at each contact; where it is not, the rollers slide and the force is the
-//! sliding one: the cheaper of the load sliding on the rollers (`Q·f₁`, when `k₁/h ≥ f₁`) and
-//! the load sliding on the plane with its rollers (`(Q + 2G)·f₂`, when `k₂/h ≥ f₂`) — rolling
+//! sliding one: the cheaper of the load sliding on the rollers (`Q·f₁`, when `k₁/d ≥ f₁`) and
+//! the load sliding on the plane with its rollers (`(Q + 2G)·f₂`, when `k₂/d ≥ f₂`) — rolling
 //! would cost more than either. Without rollers the load slides: `P = Q·f₂`.
 //!
 //! The seed writes the plane's reaction as `R_n1`; it is `R_n2 = Q + 2G` (an erratum).
@@ -41,11 +41,11 @@ pub struct RollingTwin {
     pub r_n1: f64,
     /// The reaction of the plane, `R_n2 = Q + 2G`, N.
     pub r_n2: f64,
-    /// `k₁/h` with h = d.
+    /// `k₁/d`.
     pub ratio1: f64,
-    /// `k₂/h`.
+    /// `k₂/d`.
     pub ratio2: f64,
-    /// Pure rolling at both contacts: `k₁/h < f₁` and `k₂/h < f₂`.
+    /// Pure rolling at both contacts: `k₁/d < f₁` and `k₂/d < f₂`.
     pub pure: bool,
     /// The force to roll the load on its rollers, `(Q·k₁ + (Q + 2G)·k₂)/d`, N.
     pub p_rolling: f64,

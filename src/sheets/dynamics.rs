@@ -223,12 +223,18 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         FlywheelKind::Rim => DynamicsText::Rim.get(lang),
         FlywheelKind::Disc => DynamicsText::Disc.get(lang),
     };
+    // The mass worked out at the D taken (the table's m_м is at the D found, before it is
+    // rounded up: the substitution says which).
+    let f = &d.spec.flywheel;
     out.push(format!(
-        "{kind}, {}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} → {} {}, m = K_{{m}}ρD^3 = {} {}",
+        "{kind}, {}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} → {} {}, m = K_{{m}}ρD^3 = {}·{}·{}^3 = {} {}",
         DynamicsText::SizedByConstruction.get(lang),
         format_fixed(z.d * 1e3, 1, lang),
         format_fixed(d.made.d * 1e3, 0, lang),
         unit_in("mm", lang),
+        num(f.k_m, lang),
+        num(f.rho, lang),
+        num(d.made.d, lang),
         num(d.made.mass, lang),
         unit_in("kg", lang)
     ));

@@ -103,7 +103,7 @@ fn locking(first: String, condition: Option<String>, lang: Lang) -> Vec<String> 
 fn data_line(n: usize, kind: &CaseKind, lang: Lang) -> String {
     let newton = unit_in("N", lang);
     let q = |x: f64| format!("{} {newton}", num(x, lang));
-    let a = |x: f64| format!("{}°", num(x.to_degrees(), lang));
+    let a = |x: f64| given_deg(x, lang);
     let f = |x: f64| num(x, lang);
     let given: Vec<(&str, String)> = match kind {
         CaseKind::Incline(c) => vec![
@@ -158,6 +158,11 @@ fn data_line(n: usize, kind: &CaseKind, lang: Lang) -> String {
     format!("{n}: {}", list.join(", "))
 }
 
+/// A given angle as the data give it (`α = 15°`; a computed one: [`deg`], `26,57°`).
+fn given_deg(radians: f64, lang: Lang) -> String {
+    format!("{}°", num(radians.to_degrees(), lang))
+}
+
 /// The closed forms of the case number `n` with their values, in label markup.
 fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
     let newton = unit_in("N", lang);
@@ -206,7 +211,7 @@ fn lines(n: usize, s: &Solved, lang: Lang) -> Vec<String> {
         CaseKind::Journal(c) => {
             let t = journal_twin(c);
             vec![format!(
-                "{n}: ρ = r·sin φ = {} (ρ ≈ f·r = {}); M_{{f}} = Q·ρ = {} {nm} (f·Q·r = {} {nm})",
+                "{n}: ρ = r·sin φ = {} (ρ ≈ f·r = {}); M_{{тр}} = Q·ρ = {} {nm} (f·Q·r = {} {nm})",
                 mm(t.rho, lang),
                 mm(t.rho_textbook, lang),
                 num(t.moment, lang),
@@ -257,7 +262,7 @@ fn slider_lines(n: usize, c: &Slider, lang: Lang) -> Vec<String> {
         ),
         format!(
             "{n}: α = {} {cmp} {phi} — {}; {r}",
-            deg(c.alpha, lang),
+            given_deg(c.alpha, lang),
             state.get(lang)
         ),
     ]
@@ -271,7 +276,7 @@ fn rolling_lines(n: usize, c: &Rolling, lang: Lang) -> Vec<String> {
     let lt = |ok: bool| if ok { "<" } else { "≥" };
     vec![
         format!(
-            "{n}: k_{{1}}/h = {} {} f_{{1}} = {}; k_{{2}}/h = {} {} f_{{2}} = {} — {}",
+            "{n}: k_{{1}}/d = {} {} f_{{1}} = {}; k_{{2}}/d = {} {} f_{{2}} = {} — {}",
             num(t.ratio1, lang),
             lt(t.ratio1 < c.f1),
             num(c.f1, lang),
@@ -286,7 +291,7 @@ fn rolling_lines(n: usize, c: &Rolling, lang: Lang) -> Vec<String> {
             .get(lang)
         ),
         format!(
-            "{n}: R_{{n1}} = Q, R_{{n2}} = Q + 2G; P = {} = {} {newton}; {}: P = Q·f_{{2}} = {} {newton}",
+            "{n}: R_{{n1}} = Q, R_{{n2}} = Q + 2G; P = {} = {} {newton}; {}: P_{{ск}} = Q·f_{{2}} = {} {newton}",
             match t.slide {
                 None => "(Q·k_{1} + (Q + 2G)·k_{2})/d",
                 Some(crate::friction::Slide::OnRollers) => "Q·f_{1}",
@@ -316,7 +321,7 @@ fn guide_lines(n: usize, c: &crate::friction::FollowerGuide, lang: Lang) -> Vec<
         format!(
             "{n}: {tg} λ_{{кр}} = b/(f·(2l + b)): λ_{{кр}} = {} > λ = {} — {}",
             deg(t.lock, lang),
-            deg(c.angle, lang),
+            given_deg(c.angle, lang),
             FrictionText::Moves.get(lang),
             tg = tangent(lang),
         ),
@@ -340,7 +345,7 @@ fn pivot_lines(n: usize, c: &crate::friction::RockerPivot, lang: Lang) -> Vec<St
         format!(
             "{n}: cos λ_{{кр}} = ρ/L: λ_{{кр}} = {} > λ = {} — {} ({tg} λ_{{кр}} = 2L/(f·d): {})",
             deg(t.lock, lang),
-            deg(c.angle, lang),
+            given_deg(c.angle, lang),
             FrictionText::Moves.get(lang),
             deg(t.lock_lecture, lang),
             tg = tangent(lang),

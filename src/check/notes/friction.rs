@@ -94,9 +94,9 @@ pub enum FrictionNote {
     Rolling {
         /// The case.
         case: String,
-        /// k₁/h and f₁.
+        /// k₁/d and f₁.
         first: (f64, f64),
-        /// k₂/h and f₂.
+        /// k₂/d and f₂.
         second: (f64, f64),
         /// How they move.
         motion: RollerMotion,

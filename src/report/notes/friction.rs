@@ -118,7 +118,7 @@ fn rolling(
 ) -> String {
     let verdict = |ratio: f64, f: f64| if ratio < f { "<" } else { "≥" };
     format!(
-        "{case}: k₁/h = {ratio1:.3e} {} f₁ = {f1}, k₂/h = {ratio2:.3e} {} f₂ = {f2}: {}",
+        "{case}: k₁/d = {ratio1:.3e} {} f₁ = {f1}, k₂/d = {ratio2:.3e} {} f₂ = {f2}: {}",
         verdict(ratio1, f1),
         verdict(ratio2, f2),
         match m {

@@ -423,14 +423,14 @@ fn rollers_read_as_rolling_or_as_sliding_where_they_slide() {
     };
     says(
         rollers(RollerMotion::Rolling),
-        "W3: k₁/h = 5.000e-4 < f₁ = 0.1, k₂/h = 1.000e-3 < f₂ = 0.15: pure rolling",
+        "W3: k₁/d = 5.000e-4 < f₁ = 0.1, k₂/d = 1.000e-3 < f₂ = 0.15: pure rolling",
     );
     says(
         rollers(RollerMotion::OnRollers {
             p: 1000.0,
             rolling: 10050.0,
         }),
-        "W3: k₁/h = 5.000e-4 < f₁ = 0.1, k₂/h = 1.000e-3 < f₂ = 0.15: the rollers slide: the load slides on them, P = Q·f₁ = 1000 N (rolling would take 10050 N)",
+        "W3: k₁/d = 5.000e-4 < f₁ = 0.1, k₂/d = 1.000e-3 < f₂ = 0.15: the rollers slide: the load slides on them, P = Q·f₁ = 1000 N (rolling would take 10050 N)",
     );
     let plane = FrictionNote::Rolling {
         case: s("W3"),
@@ -443,7 +443,7 @@ fn rollers_read_as_rolling_or_as_sliding_where_they_slide() {
     };
     says(
         plane,
-        "W3: k₁/h = 5.000e-4 < f₁ = 0.1, k₂/h = 5.000e-1 ≥ f₂ = 0.1: the rollers slide: the load slides on the plane with them, P = (Q + 2G)·f₂ = 1010 N (rolling would take 5000.5 N)",
+        "W3: k₁/d = 5.000e-4 < f₁ = 0.1, k₂/d = 5.000e-1 ≥ f₂ = 0.1: the rollers slide: the load slides on the plane with them, P = (Q + 2G)·f₂ = 1010 N (rolling would take 5000.5 N)",
     );
     says(
         FrictionNote::RollingErratum {
