@@ -509,3 +509,30 @@ fn the_structural_analysis_states_grashofs_condition() {
     }
     assert!(!text.contains("Равенство"), "{text}");
 }
+
+/// The closed forms on a sheet use the symbols of its own table and data (issue 45): the
+/// friction sheet wrote M_f = Q·ρ over a table of M_тр, «без катков: P = Q·f₂» over P_ск,
+/// k₁/h with an h the data never define (they give d), and α = 15,00° beside the data's
+/// 15°; the dynamics sheet wrote m = K_mρD³ = 216,8 кг beside a table's 210,0 (taken at the
+/// D before it is rounded up) without saying at which D. Now the mass is worked at the D
+/// taken.
+#[test]
+fn closed_forms_write_the_tables_symbols_and_their_data() {
+    let friction =
+        sheet_text(&scene::load(&root().join("constructions/friction.toml")).expect("friction"));
+    for written in [
+        "M_{тр} = Q·ρ = 24,88",
+        "k_{1}/d = 0,0005 < f_{1} = 0,1; k_{2}/d = 0,001 < f_{2} = 0,15",
+        "без катков: P_{ск} = Q·f_{2} = 1500",
+        "7: α = 15° < φ_{0} = 26,57°",
+    ] {
+        assert!(friction.contains(written), "«{written}» in\n{friction}");
+    }
+    for gone in ["M_{f}", "/h = ", "15,00°"] {
+        assert!(!friction.contains(gone), "«{gone}» in\n{friction}");
+    }
+    let shaper =
+        sheet_text(&scene::load(&root().join("constructions/shaper.toml")).expect("shaper"));
+    let mass = "→ 860 мм, m = K_{m}ρD^3 = 0,0452·7540·0,86^3 = 216,8 кг";
+    assert!(shaper.contains(mass), "«{mass}» in\n{shaper}");
+}
