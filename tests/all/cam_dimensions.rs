@@ -172,7 +172,10 @@ fn leaders_at_crossings(plate: &Plate, v: usize) -> Vec<String> {
     let view = &plate.views[v];
     let mut out = Vec::new();
     for l in layout(plate).labels.iter().filter(|l| l.view == v) {
-        let Some(leader) = l.leader else { continue };
+        // A dimension line run on under its text ends on its own arrow, not at a crossing.
+        let Some(leader) = l.leader.filter(|l| !l.run_on) else {
+            continue;
+        };
         let dims = view.figure.steps.iter().filter(|s| l.steps.contains(&s.id));
         for d in dims.filter(|s| matches!(s.item, Item::Dimension { .. })) {
             for other in view.figure.steps.iter().filter(|s| s.id != d.id) {

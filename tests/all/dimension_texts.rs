@@ -65,3 +65,67 @@ fn every_dimension_carries_its_text() {
     }
     assert!(bare.is_empty(), "{}", bare.join("\n"));
 }
+
+/// A dimension's text written past its arrows stands over the dimension line run on under it
+/// (ГОСТ 2.307), on every sheet in Russian and English as `render` reads it: the line's
+/// continuation runs from the arrow's tip along the line to past the text (issue 45: cam-pz4's
+/// «[ρ] = 10 мм» stood beside the axis 10 mm under its 9 mm dimension, on nothing).
+#[test]
+fn a_text_past_its_arrows_stands_over_the_line_run_on() {
+    use tmm::construct::Item;
+    let mut past = 0;
+    let mut bad = Vec::new();
+    for lang in [Lang::Ru, Lang::En] {
+        for path in crate::support::scene_paths() {
+            let s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+            let plates = tmm::render::plates(&s, lang, Drafting::HAND).expect("plates");
+            for (_, p) in plates {
+                let l = tmm::plate::layout(&p);
+                for x in &l.labels {
+                    let view = &p.views[x.view];
+                    let Some(step) = view.figure.steps.iter().find(|s| s.id == x.steps[0]) else {
+                        continue;
+                    };
+                    let Item::Dimension { from, to, offset } = step.item else {
+                        continue;
+                    };
+                    let n = (to - from).normalize_or_zero().perp() * offset;
+                    let (a, b) = (view.to_sheet(from + n), view.to_sheet(to + n));
+                    let u = (b - a).normalize_or_zero();
+                    let at = |q: glam::DVec2| (q - a).dot(u);
+                    let corners = [
+                        x.rect.min,
+                        x.rect.max,
+                        glam::DVec2::new(x.rect.min.x, x.rect.max.y),
+                        glam::DVec2::new(x.rect.max.x, x.rect.min.y),
+                    ];
+                    let (lo, hi) = corners
+                        .iter()
+                        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
+                            (lo.min(at(*c)), hi.max(at(*c)))
+                        });
+                    let length = a.distance(b);
+                    let middle = 0.5 * (lo + hi);
+                    if (0.0..=length).contains(&middle) {
+                        continue;
+                    }
+                    past += 1;
+                    let off_line = |q: glam::DVec2| (q - a).perp_dot(u).abs();
+                    let runs_on = x.leader.is_some_and(|r| {
+                        let reach = if middle > length {
+                            at(r.end) >= hi
+                        } else {
+                            at(r.end) <= lo
+                        };
+                        off_line(r.knee) < 0.05 && off_line(r.end) < 0.05 && reach
+                    });
+                    if !runs_on {
+                        bad.push(format!("{}/{} {lang:?}: «{}»", s.stem, p.name, x.text));
+                    }
+                }
+            }
+        }
+    }
+    assert!(past > 10, "{past} texts past their arrows");
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}

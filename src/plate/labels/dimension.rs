@@ -56,8 +56,9 @@ pub(super) fn placed(
     let width = first.own_box().width();
     let (from, to, _) = dim;
     let length = map.dir(to - from).length();
+    let middle = map.pt((from + to) * 0.5 + (to - from).normalize_or_zero().perp() * dim.2);
     let extensions = extension_lines(map, dim);
-    let mut best: Option<(Placed, f64)> = None;
+    let mut best: Option<(Placed, f64, TextSpot)> = None;
     for (rank, spot) in spots(length, width).into_iter().enumerate() {
         let Some(p) = dimension_text(map, dim, text, spot) else {
             continue;
@@ -68,14 +69,15 @@ pub(super) fn placed(
             + over
             + wrong_line(&p.bounds(), lines, own);
         if ink == 0.0 {
-            return Some((p, None));
+            let run_on = run_on(&p, spot, (middle, length), width);
+            return Some((p, run_on));
         }
         let cost = ink + rank as f64 * 1e-3;
         if best.as_ref().is_none_or(|b| cost < b.1) {
-            best = Some((p, cost));
+            best = Some((p, cost, spot));
         }
     }
-    let (p, _) = best?;
+    let (p, _, spot) = best?;
     // Within the clearance of a line is kept; through a line or a text, a leader is taken.
     let through = struck(&p, lines, 0.0) + over_texts(texts, &p.bounds()) > 0.0;
     match through
@@ -83,9 +85,45 @@ pub(super) fn placed(
         .flatten()
     {
         Some((q, l)) => Some((q, Some(l))),
-        None => Some((p, None)),
+        None => {
+            let run_on = run_on(&p, spot, (middle, length), width);
+            Some((p, run_on))
+        }
     }
 }
+
+/// The dimension line run on past its arrow under a text written on its extension (ГОСТ
+/// 2.307: the number stands over the dimension line's continuation, not in the air beside
+/// the axis past it): drawn as the shelf of a leader from the arrow's tip, along the line to
+/// [`RUN_ON_PAST_MM`] beyond the text `p` written at `spot` (`width` mm long) beside the
+/// line whose middle is `middle` and which is `length` long, sheet mm; `None` for a text
+/// between the arrows.
+fn run_on(
+    p: &Placed,
+    spot: TextSpot,
+    (middle, length): (DVec2, f64),
+    width: f64,
+) -> Option<Leader> {
+    let reach = 0.5 * length;
+    if spot.along.abs() <= reach {
+        return None;
+    }
+    let read = DVec2::from_angle(p.rotate.to_radians());
+    let sign = spot.along.signum();
+    let tip = middle + read * (sign * reach);
+    let end = middle + read * (spot.along + sign * (0.5 * width + RUN_ON_PAST_MM));
+    Some(Leader {
+        to: tip,
+        from: tip,
+        dot: false,
+        knee: tip,
+        end,
+        run_on: true,
+    })
+}
+
+/// How far a dimension line run on under its text reaches past the text, mm.
+const RUN_ON_PAST_MM: f64 = 1.0;
 
 /// The extension lines of the dimension `(from, to, offset)` as drawn, run past the
 /// dimension line ([`crate::plate::dimension::extension_lines`]; the outlines of the view

@@ -24,6 +24,9 @@ pub struct Leader {
     pub knee: DVec2,
     /// The shelf's other end.
     pub end: DVec2,
+    /// A dimension line run on past its arrow under its text (ГОСТ 2.307), drawn as a shelf
+    /// from the arrow's tip: no line comes to it from an object (`from` = `knee` = `to`).
+    pub run_on: bool,
 }
 
 impl Leader {
@@ -107,6 +110,7 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<(Rect, Leader)> {
                         dot,
                         knee,
                         end: knee,
+                        run_on: false,
                     },
                     q.x,
                     size,

@@ -13,6 +13,9 @@ pub(super) struct Placer<'a> {
     forbidden: [Rect; 2],
     /// Boxes of the texts that do not move (captions, text blocks, tables, dimensions).
     fixed: Vec<Rect>,
+    /// The leaders of the dimensions' texts, which do not move either (a label under one's
+    /// shelf reads as a fraction).
+    fixed_leaders: Vec<Leader>,
     /// Every view's outlines (a label avoids the lines of every view).
     outlines: &'a [Vec<Outline>],
     /// Every view's outlines with their boxes and their view, taken once (a gear's profile
@@ -132,6 +135,7 @@ impl<'a> Placer<'a> {
             forbidden: [layout.title_block, layout.designation_box]
                 .map(|r| r.inflate(FRAME_CLEAR_MM)),
             fixed,
+            fixed_leaders: Vec::new(),
             outlines,
             boxed,
         }
@@ -148,6 +152,7 @@ impl<'a> Placer<'a> {
             todo.extend(r);
         }
         self.fixed.extend(out.iter().map(|l| l.rect));
+        self.fixed_leaders = out.iter().filter_map(|l| l.leader).collect();
         let points: Vec<(usize, DVec2)> = todo.iter().map(|r| (r.view, r.anchor)).collect();
         let jobs: Vec<Job> = todo.into_iter().map(|r| self.job(r, &points)).collect();
         // Labels of points first, the most crowded first: a point's label has a few places
@@ -342,7 +347,9 @@ impl<'a> Placer<'a> {
                 .chain(placed().map(|s| s.rect))
                 .filter(|t| t.intersects(&near))
                 .collect(),
-            leaders: placed().filter_map(|s| s.leader).collect(),
+            leaders: (self.fixed_leaders.iter().copied())
+                .chain(placed().filter_map(|s| s.leader))
+                .collect(),
         }
     }
 
@@ -435,15 +442,15 @@ impl<'a> Placer<'a> {
                     .texts
                     .iter()
                     .filter(|t| phrase::beside(rect, t))
-                    .count()
-                // Parted from one text, not stood under another's shelf as a fraction.
-                + others
-                    .leaders
-                    .iter()
-                    .filter(|l| leader::under_shelf(l, rect))
                     .count();
             cost += read_on as f64 * phrase::STACKED;
         }
+        // Any label: not stood under another's shelf (a leader's, a dimension line's run on)
+        // as the denominator of a fraction.
+        let under = (others.leaders.iter())
+            .filter(|l| leader::under_shelf(l, rect))
+            .count();
+        cost += under as f64 * phrase::STACKED;
         if cost >= bound {
             return cost;
         }
