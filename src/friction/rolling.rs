@@ -2,7 +2,7 @@
 //! rollers of weight G and diameter d. The normal reactions are shifted forward by the
 //! coefficients of rolling friction k₁ (load/rollers) and k₂ (rollers/plane); the moments
 //! about the rollers' contact with the plane give `P·d = Q·k₁ + (Q + 2G)·k₂`. Rolling is pure
-//! when `k/h < f` at each contact; where it is not, the rollers slide and the force is the
+//! when `k/d < f` at each contact; where it is not, the rollers slide and the force is the
 //! sliding one: the cheaper of the load sliding on the rollers (`Q·f₁`, when `k₁/d ≥ f₁`) and
 //! the load sliding on the plane with its rollers (`(Q + 2G)·f₂`, when `k₂/d ≥ f₂`) — rolling
 //! would cost more than either. Without rollers the load slides: `P = Q·f₂`.
@@ -431,7 +431,7 @@ fn balance(
     Ok((balance, p1 + p2))
 }
 
-/// The notes: k/h against f at each contact (pure rolling, or where the rollers slide), and
+/// The notes: k/d against f at each contact (pure rolling, or where the rollers slide), and
 /// the erratum R_n2 with the gain of the rollers.
 fn notes(name: &str, c: &Rolling, twin: &RollingTwin) -> Vec<FrictionNote> {
     let (p, rolling) = (twin.p, twin.p_rolling);

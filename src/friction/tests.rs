@@ -256,7 +256,7 @@ fn w3_loads_run_on_past_the_lever_apart() {
     }
 }
 
-/// Rollers whose rolling resistance exceeds the friction (k/h ≥ f): they slide, and the force
+/// Rollers whose rolling resistance exceeds the friction (k/d ≥ f): they slide, and the force
 /// is the sliding one — Q·f₁ = 1000 N when the load slides on them (rolling would take
 /// (Q·k₁ + (Q + 2G)·k₂)/d = 10 050 N), (Q + 2G)·f₂ when the plane's contact is the cheaper —
 /// read off that pair's own polygon.

@@ -90,7 +90,7 @@ pub enum FrictionNote {
         /// The lecture's λ_кр, rad.
         lecture: f64,
     },
-    /// Rollers: k/h against f at each contact, and how they move.
+    /// Rollers: k/d against f at each contact, and how they move.
     Rolling {
         /// The case.
         case: String,

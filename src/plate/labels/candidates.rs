@@ -89,7 +89,7 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
     // A label kept in its point's column keeps the places whose middle stands that near left
     // and right, or, with none, its place at the point itself or, where the column leaves
     // the point (a number beside the curve through its point), the column's nearest.
-    // After them, its places in its own row across the column, the near ends first: a ring
+    // After them, its places in its own row across the column, left to right: a ring
     // place beside the point stands above or below the row, where a construction's
     // horizontal may run (cam-central's `6` on the projection of a chord step).
     if let Some([left, right]) = r.column {
@@ -107,7 +107,7 @@ pub(super) fn candidates(r: &Request, size: DVec2) -> Vec<Rect> {
 }
 
 /// Places in a column's row: [`ROW_PLACES`] boxes of half size `half` centred on the row of
-/// `anchor`, from the column's `[left, right]` ends inward.
+/// `anchor`, evenly from the column's left end (`left` mm left of it) to its right end.
 fn in_row(anchor: DVec2, half: DVec2, [left, right]: [f64; 2]) -> impl Iterator<Item = Rect> {
     (0..ROW_PLACES).map(move |k| {
         let t = k as f64 / (ROW_PLACES - 1) as f64;

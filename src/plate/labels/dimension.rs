@@ -54,9 +54,9 @@ pub(super) fn placed(
 ) -> Option<(Placed, Option<Leader>)> {
     let first = dimension_text(map, dim, text, TextSpot::MIDDLE)?;
     let width = first.own_box().width();
-    let (from, to, _) = dim;
+    let (from, to, offset) = dim;
     let length = map.dir(to - from).length();
-    let middle = map.pt((from + to) * 0.5 + (to - from).normalize_or_zero().perp() * dim.2);
+    let middle = map.pt((from + to) * 0.5 + (to - from).normalize_or_zero().perp() * offset);
     let extensions = extension_lines(map, dim);
     let mut best: Option<(Placed, f64, TextSpot)> = None;
     for (rank, spot) in spots(length, width).into_iter().enumerate() {

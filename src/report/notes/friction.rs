@@ -109,7 +109,7 @@ pub(super) fn english(note: &FrictionNote) -> String {
     }
 }
 
-/// Rollers: k/h against f at each contact, pure rolling or where they slide.
+/// Rollers: k/d against f at each contact, pure rolling or where they slide.
 fn rolling(
     case: &str,
     (ratio1, f1): (f64, f64),
