@@ -314,9 +314,15 @@ pub(super) fn draw_plan(
 /// points, as with the French curve. A closed curve through a rocker's points, swept there
 /// and back, parts into two lines about its arc.
 fn trajectory(prog: &Program, k: usize, points: Vec<DVec2>, built: &Built) -> Item {
+    let pivots = prog.fixed_pivots();
     let pivot = (prog.links_of(k).into_iter())
         .filter(|&l| l != 0)
-        .find_map(|l| (prog.fixed_pivots().into_iter()).find(|&f| prog.links_of(f).contains(&l)));
+        .find_map(|l| {
+            pivots
+                .iter()
+                .copied()
+                .find(|&f| prog.links_of(f).contains(&l))
+        });
     let (Some(f), Some(first), true) = (pivot, points.first(), points.len() > 2) else {
         return smooth(points);
     };

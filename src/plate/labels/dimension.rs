@@ -58,6 +58,11 @@ pub(super) fn placed(
     let length = map.dir(to - from).length();
     let middle = map.pt((from + to) * 0.5 + (to - from).normalize_or_zero().perp() * offset);
     let extensions = extension_lines(map, dim);
+    // A text written past an arrow stands over the line run on under it.
+    let with_line = |p: Placed, spot: TextSpot| {
+        let line = run_on(&p, spot, (middle, length), width);
+        Some((p, line))
+    };
     let mut best: Option<(Placed, f64, TextSpot)> = None;
     for (rank, spot) in spots(length, width).into_iter().enumerate() {
         let Some(p) = dimension_text(map, dim, text, spot) else {
@@ -69,8 +74,7 @@ pub(super) fn placed(
             + over
             + wrong_line(&p.bounds(), lines, own);
         if ink == 0.0 {
-            let run_on = run_on(&p, spot, (middle, length), width);
-            return Some((p, run_on));
+            return with_line(p, spot);
         }
         let cost = ink + rank as f64 * 1e-3;
         if best.as_ref().is_none_or(|b| cost < b.1) {
@@ -85,10 +89,7 @@ pub(super) fn placed(
         .flatten()
     {
         Some((q, l)) => Some((q, Some(l))),
-        None => {
-            let run_on = run_on(&p, spot, (middle, length), width);
-            Some((p, run_on))
-        }
+        None => with_line(p, spot),
     }
 }
 
