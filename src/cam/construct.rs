@@ -187,17 +187,20 @@ fn over_limit(spec: &CamSpec, points: &[Point], inv: &Inversion) -> Option<(usiz
 const ANGLE_SLACK: f64 = 1e-9;
 
 /// The roller a student chooses when the scene gives none: r = min(0.4·r₀, 0.8·ρ_min), with
-/// r₀ the base radius used and ρ_min found on the drawing — the smallest circle through three
-/// neighbouring points of the pitch (theoretical) curve where it is most convex, within one
-/// phase, straight or concave triples skipped ([`drawn_rho_min`]); the pitch points from the
-/// motion read off the diagrams at the follower's placement.
+/// r₀ the base radius used and ρ_min found on the drawing — the circle fitted where the
+/// pitch (theoretical) curve, drawn as a French curve, is most convex ([`drawn_rho_min`]);
+/// the pitch points and their tangents from the motion read off the diagrams at the
+/// follower's placement.
 fn chosen_roller(points: &[Point], read: &[FollowerMotion], place: &Placement, base: f64) -> f64 {
-    let pitch: Vec<DVec2> = points
+    let (pitch, tangents): (Vec<DVec2>, Vec<DVec2>) = points
         .iter()
         .zip(read)
-        .map(|(p, m)| to_cam(place.kin(*m).b, p.phi))
-        .collect();
-    (0.4 * base).min(0.8 * drawn_rho_min(points, &pitch))
+        .map(|(p, m)| {
+            let kin = place.kin(*m);
+            (to_cam(kin.b, p.phi), to_cam(kin.normal().perp(), p.phi))
+        })
+        .unzip();
+    (0.4 * base).min(0.8 * drawn_rho_min(points, &pitch, &tangents))
 }
 
 /// The angle graph: the pressure (or transmission) angle read off the profile drawing at

@@ -8,9 +8,10 @@ use super::reading::{read_angles, Drawn};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::fit::{overflow, raised};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
-use crate::geom::{french_piece, Arc, Circle, DVec2, Segment};
+use crate::geom::{bezier_at, french_piece, Arc, Circle, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
+use std::ops::Range;
 
 /// Largest radius of the profile drawing when the scene gives no μ_l, mm: at most this, and
 /// coarser while the drawing (rollers, follower positions, labels' points) overflows
@@ -152,7 +153,7 @@ impl Inverting<'_> {
                 .map(|m| self.base + m.s + m.d2s)
                 .fold(f64::INFINITY, f64::min)
         } else {
-            drawn_rho_min(self.points, &turned.centres)
+            drawn_rho_min(self.points, &turned.centres, &turned.tangents)
         };
         Ok(Inversion {
             figure: rec.finish(),
@@ -375,17 +376,25 @@ pub(super) fn closed_profile(
     pts: &[DVec2],
     tangents: &[DVec2],
 ) -> (DVec2, Vec<[DVec2; 3]>) {
-    // The last point of the rise (the return's first follows it) and of the return.
-    let n = points.iter().position(|p| p.last).unwrap_or(0);
-    let m = points.len().saturating_sub(1);
-    let phase = |range: std::ops::Range<usize>| {
+    let [rise, ret] = moving_phases(points);
+    let (n, m) = (rise.end, ret.end);
+    let phase = |range: Range<usize>| {
         range.map(|i| french_piece(pts[i], tangents[i], pts[i + 1], tangents[i + 1]))
     };
-    let mut out: Vec<[DVec2; 3]> = phase(0..n).collect();
+    let mut out: Vec<[DVec2; 3]> = phase(rise).collect();
     out.extend(dwell(pts[n], pts[n + 1]));
-    out.extend(phase(n + 1..m));
+    out.extend(phase(ret));
     out.extend(dwell(pts[m], pts[0]));
     (pts[0], out)
+}
+
+/// The French-curve pieces of the moving phases, each by the index of the point it starts
+/// at: the rise's up to its last point, the return's from the point after it to the last
+/// (the dwells between are arcs).
+fn moving_phases(points: &[Point]) -> [Range<usize>; 2] {
+    let n = points.iter().position(|p| p.last).unwrap_or(0);
+    let m = points.len().saturating_sub(1);
+    [0..n, n + 1..m]
 }
 
 /// The dwell from `from` to `to`: the arc about O₁, swept clockwise in the cam frame (the
@@ -415,6 +424,10 @@ fn dwell(from: DVec2, to: DVec2) -> Vec<[DVec2; 3]> {
         .collect()
 }
 
+/// Equal steps of a French-curve piece's parameter between the points [`drawn_rho_min`]
+/// fits its circles through.
+const RHO_STEPS: usize = 4;
+
 /// The largest angle of a dwell's cubic piece, radians (30°).
 const DWELL_PIECE: f64 = std::f64::consts::PI / 6.0;
 
@@ -433,20 +446,30 @@ pub(super) fn cam_centre(rec: &mut Recorder) -> StepId {
     o
 }
 
-/// The smallest radius of the circles through three consecutive drawn pitch points that
-/// turn like the cam (convex), within each phase; the dwell arcs' radii too.
-pub(super) fn drawn_rho_min(points: &[Point], c: &[DVec2]) -> f64 {
+/// The smallest radius of the circles a draughtsman fits where the drawn pitch curve turns
+/// like the cam (convex): through three neighbouring points of the curve as
+/// [`closed_profile`] draws it (each moving phase's French curve through the pitch points
+/// `c`, touching their `tangents`), [`RHO_STEPS`] to a piece, straight or concave triples
+/// skipped; the dwell arcs' radii too. (Before, through three neighbouring pitch points:
+/// a circle over two pieces, which misses the bend between them, seed 000's cam by +12 %.)
+pub(super) fn drawn_rho_min(points: &[Point], c: &[DVec2], tangents: &[DVec2]) -> f64 {
     let mut best = f64::INFINITY;
-    for i in 1..points.len().saturating_sub(1) {
-        if points[i - 1].phase != points[i].phase || points[i + 1].phase != points[i].phase {
-            continue;
+    for phase in moving_phases(points) {
+        let mut at: Vec<DVec2> = Vec::new();
+        for i in phase {
+            let piece = french_piece(c[i], tangents[i], c[i + 1], tangents[i + 1]);
+            let from = usize::from(!at.is_empty());
+            at.extend(
+                (from..=RHO_STEPS).map(|k| bezier_at(c[i], &piece, k as f64 / RHO_STEPS as f64)),
+            );
         }
-        let (a, b, d) = (c[i - 1], c[i], c[i + 1]);
-        let cross = (b - a).perp_dot(d - b);
-        // Clockwise turning is convex (the cam frame's curve runs clockwise).
-        if cross < 0.0 {
-            let r = a.distance(b) * b.distance(d) * d.distance(a) / (2.0 * cross.abs());
-            best = best.min(r);
+        for w in at.windows(3) {
+            let (a, b, d) = (w[0], w[1], w[2]);
+            let cross = (b - a).perp_dot(d - b);
+            // Clockwise turning is convex (the cam frame's curve runs clockwise).
+            if cross < 0.0 {
+                best = best.min(a.distance(b) * b.distance(d) * d.distance(a) / (2.0 * -cross));
+            }
         }
     }
     for p in [

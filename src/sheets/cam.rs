@@ -7,8 +7,8 @@ use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
 use super::{cam_marks, digits};
 use crate::cam::{
-    Analogue, Cam, CamDiagrams, CamLayout, CamSpec, Closure, Follower, Law, Rotation,
-    ANGLE_LIMIT_NOTE, R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
+    motion::Point, Analogue, Cam, CamDiagrams, CamLayout, CamSpec, Closure, Follower, Law,
+    Rotation, Shock, ANGLE_LIMIT_NOTE, R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
 };
 use crate::check::{Cusp, Finding, Row, Symbol};
 use crate::geom::DVec2;
@@ -119,7 +119,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
         lines,
         size_mm: TEXT_MM,
     });
-    blocks.extend(points_table(&cam, lang).into_iter().map(Block::Table));
+    blocks.extend(
+        points_table(&cam, read_mm, lang)
+            .into_iter()
+            .map(Block::Table),
+    );
     let step = |r: &Row| cam.reading_step(r, read_mm);
     blocks.push(Block::Table(results_table(&cam.rows(), &step, lang)));
     let title = super::title_block(
@@ -416,12 +420,27 @@ fn verdict(f: &Finding, lang: Lang) -> Option<String> {
 /// sheets when a sheet is full).
 const POINTS_PER_TABLE: usize = 40;
 
-/// One row per point: φ, S, dS/dφ, d²S/dφ² (read), the angle read and exact, the profile's
-/// radius vector; in tables of at most [`POINTS_PER_TABLE`] rows, each after the first
-/// titled as continued.
-fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
+/// One row per point: φ, S, dS/dφ, d²S/dφ² (each as read off its diagram, to the step its
+/// scale reads `read_mm` to, or to 0,01 mm read exactly; ∞ at a rigid shock), the angle
+/// read and exact, the profile's radius vector (read off the profile likewise); in tables of at most [`POINTS_PER_TABLE`]
+/// rows, each after the first titled as continued.
+fn points_table(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<TableBlock> {
     let flat = matches!(cam.spec.follower, Follower::Flat { .. });
     let f = |x: f64, d: usize| format_fixed(x, d, lang);
+    let d = &cam.diagrams;
+    // A value read off the diagram drawn at `scale`, m, written in mm.
+    let read = |x: f64, scale: Scale| match scale.reading_step(read_mm) {
+        Some(step) => super::digits::read(x * 1e3, Some(step * 1e3), lang),
+        None => f(x * 1e3, 2),
+    };
+    let shocks = |p: &Point| {
+        let law = if p.phase == 0 {
+            cam.spec.rise
+        } else {
+            cam.spec.ret
+        };
+        law.shock() == Shock::Rigid && (p.k == 0 || p.last)
+    };
     let rows = cam
         .points
         .iter()
@@ -430,15 +449,19 @@ fn points_table(cam: &Cam, lang: Lang) -> Vec<TableBlock> {
             let mut r = vec![
                 p.label.clone(),
                 f(p.phi.to_degrees(), 1),
-                f(cam.diagrams.s[i] * 1e3, 2),
-                f(cam.diagrams.ds[i] * 1e3, 2),
-                f(cam.diagrams.d2s[i] * 1e3, 2),
+                read(d.s[i], d.s_scale),
+                read(d.ds[i], d.ds_scale),
+                if shocks(p) {
+                    "∞".into()
+                } else {
+                    read(d.d2s[i], d.d2s_scale)
+                },
             ];
             if !flat {
                 r.push(f(cam.angle_read(i).to_degrees(), 1));
                 r.push(f(cam.angle_at(p.phi, p.after).to_degrees(), 1));
             }
-            r.push(f(cam.inversion.profile[i].length() * 1e3, 2));
+            r.push(read(cam.inversion.profile[i].length(), cam.inversion.scale));
             r
         })
         .collect();

@@ -114,6 +114,23 @@ pub fn forces(f: &ForceSpec, lang: Lang) -> Vec<DataRow> {
             }
         }
     }
+    // An engine's gas forces: each cylinder's bore, its indicator diagram's peak and the
+    // crank angle its cycle starts at (the diagram itself is the scene's table).
+    for c in &f.indicators {
+        let piston = plain(&c.point);
+        let peak = c.pressure.iter().map(|&(_, p)| p).fold(0.0, f64::max);
+        rows.push((format!("d_{{{piston}}}"), mm(c.bore, lang), "mm".into()));
+        rows.push((
+            format!("p_{{max {piston}}}"),
+            fmt(peak * 1e-6, 5, lang),
+            "MPa".into(),
+        ));
+        rows.push((
+            format!("φ_{{0 {piston}}}"),
+            fmt(c.offset.to_degrees(), 5, lang),
+            "deg".into(),
+        ));
+    }
     rows
 }
 

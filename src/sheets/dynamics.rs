@@ -223,20 +223,22 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
         FlywheelKind::Rim => DynamicsText::Rim.get(lang),
         FlywheelKind::Disc => DynamicsText::Disc.get(lang),
     };
-    // The mass worked out at the D taken (the table's m_м is at the D found, before it is
-    // rounded up: the substitution says which).
-    let f = &d.spec.flywheel;
+    // The D found with its mass (the table's D_м and m_м), then the D taken with the mass
+    // worked out at it (the part's, sheet of the flywheel).
+    let (f, mm, kg) = (&d.spec.flywheel, unit_in("mm", lang), unit_in("kg", lang));
     out.push(format!(
-        "{kind}, {}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} → {} {}, m = K_{{m}}ρD^3 = {}·{}·{}^3 = {} {}",
+        "{kind}, {}: D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {mm}, m = K_{{m}}ρD^3 = {} {kg}; {}: m = {}·{}·{}^3 = {} {kg}",
         DynamicsText::SizedByConstruction.get(lang),
         format_fixed(z.d * 1e3, 1, lang),
-        format_fixed(d.made.d * 1e3, 0, lang),
-        unit_in("mm", lang),
+        Precision::of([z.mass]).cell(z.mass, lang),
+        DynamicsText::Taken
+            .get(lang)
+            .replace("{d}", &format_fixed(d.made.d * 1e3, 0, lang))
+            .replace("{mm}", &mm),
         num(f.k_m, lang),
         num(f.rho, lang),
         num(d.made.d, lang),
         num(d.made.mass, lang),
-        unit_in("kg", lang)
     ));
     out
 }

@@ -10,7 +10,7 @@ use super::layout::{lay_out, results_table, sheet_name, Block, Column, Results, 
 use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
-use crate::forces::{letter_at, letter_toward, PolygonDetail, PositionForces};
+use crate::forces::{letter_at, letter_toward, ForceSpec, PolygonDetail, PositionForces};
 use crate::linkage::Structure;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
@@ -168,30 +168,71 @@ fn position_sheet(
         (Key::KinematicsScaleV, lever.scale),
         lang,
     ));
-    // The title block's cell takes plain text (φ₁), the sheet's text block markup (φ_{1}).
-    let title = |phi1: &str| {
-        format!(
-            "{}, {} {}, {phi1} = {}°",
-            Text::ForceAnalysis.get(lang),
-            Text::Position.get(lang),
-            f.label,
-            degrees(phi, lang)
-        )
-    };
+    // The sheet's name names its position; the angle is the sheet's data, written in its
+    // text block (the title block's name field holds the document's name, ГОСТ 2.104).
+    let title = format!(
+        "{}, {} {}",
+        Text::ForceAnalysis.get(lang),
+        Text::Position.get(lang),
+        f.label
+    );
     let mut lines = vec![
-        title("φ_{1}"),
+        format!("{title}, φ_{{1}} = {}°", degrees(phi, lang)),
         super::drafting_line(session.drafting(), super::Errs::Plans, lang),
     ];
-    let engine = session.force_spec("the force sheets")?.engine();
-    lines.extend(balance_lines(&f.rows, engine, lang));
+    let spec = session.force_spec("the force sheets")?;
+    lines.extend(balance_lines(&f.rows, spec.engine(), lang));
     blocks.push(Block::Text {
         lines,
         size_mm: TEXT_MM,
     });
+    blocks.push(Block::Text {
+        lines: data_lines(spec, lang),
+        size_mm: TEXT_MM,
+    });
     blocks.push(Block::Table(loads_table(&f.rows, lang)));
-    let tb = super::title_block(scene, &title("φ₁"), Some(session.force_scale_l()?), lang);
+    let tb = super::title_block(scene, &title, Some(session.force_scale_l()?), lang);
     lay_out(Sheet::default(), blocks, "forces", &tb, lang)
 }
+
+/// The data the loads come from, under their heading: the links' masses and moments of
+/// inertia, the working resistances, an engine's cylinders ([`super::data::forces`]); a
+/// link's or a cylinder's together, as many to a line as [`DATA_PER_LINE`] items allow.
+fn data_lines(spec: &ForceSpec, lang: Lang) -> Vec<String> {
+    let mut units: Vec<Vec<String>> = Vec::new();
+    for (symbol, value, unit) in super::data::forces(spec, lang) {
+        let unit = unit_in(&unit, lang);
+        let item = if unit == "°" {
+            format!("{symbol} = {value}°")
+        } else {
+            format!("{symbol} = {value} {unit}")
+        };
+        // A mass, a resistance or a bore opens a unit; a moment of inertia, a pressure or
+        // an angle joins the one before.
+        let opens = ["m_", "F_", "M_", "d_"]
+            .iter()
+            .any(|s| symbol.starts_with(s));
+        match units.last_mut() {
+            Some(u) if !opens => u.push(item),
+            _ => units.push(vec![item]),
+        }
+    }
+    let mut lines = vec![Text::Data.get(lang).to_string()];
+    let mut line: Vec<String> = Vec::new();
+    for u in units {
+        if !line.is_empty() && line.len() + u.len() > DATA_PER_LINE {
+            lines.push(std::mem::take(&mut line).join(", "));
+        }
+        line.extend(u);
+    }
+    if !line.is_empty() {
+        lines.push(line.join(", "));
+    }
+    lines
+}
+
+/// The most data items on one line of a force sheet's data (a unit of more stands alone).
+const DATA_PER_LINE: usize = 4;
 
 /// A value: 4 significant digits, an undefined one a dash.
 fn value(x: f64, lang: Lang) -> String {

@@ -75,14 +75,16 @@ fn caption(n: usize, s: &Solved, d: &Drawing, lang: Lang) -> String {
     );
     let scales = match (d.kind, d.also.as_slice()) {
         // μ_k in millimetres of k per drawing millimetre: the arm is magnified (0,004 мм/мм,
-        // not 0,000004 м/мм).
+        // not 0,000004 м/мм); the forces P₁, P₂ cut off at the drawing's own μ_P =
+        // μ_F·μ_k/μ_d.
         (DrawingKind::Balance, [f, k, l]) => format!(
-            "{}, μ_{{k}} = {} {}, μ_{{d}} = {} {}",
+            "{}, μ_{{k}} = {} {}, μ_{{d}} = {} {}, {}",
             mu("F", f.value(), Quantity::Force, lang),
             format_sig(k.value() * 1e3, 3, lang),
             unit_in("mm/mm", lang),
             format_sig(l.value(), 3, lang),
-            Quantity::Length.unit(lang)
+            Quantity::Length.unit(lang),
+            mu("P", d.figure.scale.value(), Quantity::Force, lang),
         ),
         _ if d.scaled => d.figure.scale.caption(lang),
         _ => return head,

@@ -33,8 +33,9 @@ catalogue! {
         NoFlywheel => ("маховик не нужен", "маховик не потрібен", "no flywheel is needed"),
         Wittenbauer => ("Виттенбауэр", "Віттенбауер", "Wittenbauer"),
         Merkin => ("Меркин", "Меркін", "Merkin"),
-        Rim => ("обод", "обід", "rim"),
-        Disc => ("диск", "диск", "disc"),
+        // A line of the dynamics sheet opens with the kind of flywheel sized.
+        Rim => ("Обод", "Обід", "Rim"),
+        Disc => ("Диск", "Диск", "Disc"),
         // The part drawing's technical requirements for a cast flywheel (ГОСТ 2.316: numbered
         // items above the title block, under no heading where the drawing gives no technical
         // characteristic); "\n" breaks a line, each under 35 characters, the column beside an
@@ -106,9 +107,9 @@ catalogue! {
             "The spoke's sections at the hub and at the rim are ellipses, b/a = {ratio}"
         ),
         Tables => (
-            "{M}, J_{пр}, ΔT по положениям: графически | аналитически (*) | δ, %; δ_{ΔT} — от наибольшего ΔT*",
-            "{M}, J_{пр}, ΔT за положеннями: графічно | аналітично (*) | δ, %; δ_{ΔT} — від найбільшого ΔT*",
-            "{M}, J_{пр}, ΔT by position: graphical | analytic (*) | δ, %; δ_{ΔT} of the largest ΔT*"
+            "{M}, J_{пр}, ΔT по положениям: графически и аналитически (*), их расхождение δ, %; δ_{ΔT} — относительно наибольшего ΔT*",
+            "{M}, J_{пр}, ΔT за положеннями: графічно й аналітично (*), їх розбіжність δ, %; δ_{ΔT} — відносно найбільшого ΔT*",
+            "{M}, J_{пр}, ΔT by position: graphical and analytic (*), their difference δ, %; δ_{ΔT} relative to the largest ΔT*"
         ),
         EngineResults => (
             "A_{д}, M_{с}, маховик: графически и точно",
@@ -274,9 +275,9 @@ catalogue! {
         Undercut => ("ПОДРЕЗ: r_{р} >", "ПІДРІЗ: r_{р} >", "UNDERCUT: r_{р} >"),
         RollerCusp => ("ЗАОСТРЕНИЕ: r_{р} =", "ЗАГОСТРЕННЯ: r_{р} =", "CUSP: r_{р} ="),
         Cusp => (
-            "ЗАОСТРЕНИЕ: профиль вогнутый, r_{0} + S + S″ < 0",
-            "ЗАГОСТРЕННЯ: профіль угнутий, r_{0} + S + S″ < 0",
-            "CUSP: the profile is concave, r_{0} + S + S″ < 0"
+            "ЗАОСТРЕНИЕ: радиус кривизны профиля r_{0} + S + S″ < 0, огибающая положений тарелки образует петлю",
+            "ЗАГОСТРЕННЯ: радіус кривини профілю r_{0} + S + S″ < 0, обвідна положень тарілки утворює петлю",
+            "CUSP: the profile's radius of curvature r_{0} + S + S″ < 0, the envelope of the face's positions loops"
         ),
         RigidShocks => ("Жёсткие удары на границах фаз", "Жорсткі удари на межах фаз", "Rigid shocks at the phase ends"),
         // The angle's limit holds on the rise only under force closure (seed 002 L1463).

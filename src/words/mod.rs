@@ -95,7 +95,7 @@ use catalogue;
 
 /// The units' names in Latin and in Cyrillic letters (Russian and Ukrainian write them
 /// alike): the sheets write the second, `tmm audit` reads either.
-pub(crate) const UNIT_WORDS: [(&str, &str); 14] = [
+pub(crate) const UNIT_WORDS: [(&str, &str); 15] = [
     ("mm", "мм"),
     ("cm", "см"),
     ("m", "м"),
@@ -110,6 +110,7 @@ pub(crate) const UNIT_WORDS: [(&str, &str); 14] = [
     ("kJ", "кДж"),
     ("W", "Вт"),
     ("kW", "кВт"),
+    ("MPa", "МПа"),
 ];
 
 /// The unit a row of `symbol` is shown in on a sheet and in the note's tables, with the

@@ -112,9 +112,10 @@ fn the_roller_in_the_table_is_the_roller_the_data_take() {
 
 #[test]
 fn the_rollers_bound_takes_the_rho_min_the_table_reads() {
-    // Read to 0,5 mm the table gives ρ_min = 69 мм (68,59 drawn exactly): the rule's bound
-    // is 0,8·69 = 55,2 мм, not 0,8·68,59 = 54,87 мм, and the line says the 69 is the
-    // drawing's; the flat rocker's data line reads its ρ_min as its table does.
+    // Read to 0,5 mm the table gives ρ_min = 61 мм (60,50 drawn, the circle fitted where
+    // the drawn pitch curve bends most): the rule's bound is 0,8·61 = 48,8 мм, not
+    // 0,8·60,50 = 48,40 мм, and the line says the 61 is the drawing's; the flat rocker's
+    // data line reads its ρ_min as its table does.
     let read = |name: &str| {
         let s = crate::support::scene(name);
         let session = Session::new(&s, Drafting::HAND);
@@ -129,10 +130,10 @@ fn the_rollers_bound_takes_the_rho_min_the_table_reads() {
         (cell, words(&plates))
     };
     let (cell, data) = read("shaper");
-    assert_eq!(cell, "69");
+    assert_eq!(cell, "61");
     assert!(
         data.iter()
-            .any(|w| w.contains("0,8·ρ_{min} = 0,8·69 (графически) = 55,2 мм → r_{р} = 28,4 мм")),
+            .any(|w| w.contains("0,8·ρ_{min} = 0,8·61 (графически) = 48,8 мм → r_{р} = 28,4 мм")),
         "{data:?}"
     );
     let (cell, data) = read("cam-flat-rocker");
@@ -395,4 +396,29 @@ fn a_flat_faces_combined_curve_is_smooth_and_its_given_centre_is_told() {
             .any(|w| w.contains("центр O_{1}′ в недопустимой зоне"));
         assert_eq!((marked, told), (under, under), "{name}");
     }
+}
+
+#[test]
+fn the_points_table_writes_each_reading_to_its_step_and_a_rigid_shock_infinite() {
+    // The table of the points read to 0,5 mm: cam-cusp's S, read off its given diagram at
+    // μ_S = 0,002 м/мм, to whole millimetres (before: «0,00 / 1,00 / 3,00», a precision the
+    // drawing does not give); cam-shock's uniform law has d²S/dφ² infinite at the ends of
+    // its phases, as its diagram's arrows «∞» say (before: «0,00»).
+    let column = |name: &str, drafting: Drafting, head: &str| {
+        let s = crate::support::scene(name);
+        let session = Session::new(&s, drafting);
+        let plates = tmm::build(&session, PlateKind::Cam, Lang::Ru).expect("cam");
+        let table = plates
+            .iter()
+            .flat_map(|p| &p.tables)
+            .find(|t| t.title.starts_with("Точки диаграмм"))
+            .expect("the points table");
+        let k = table.columns.iter().position(|c| c.0 == head).expect(head);
+        table.rows.iter().map(|r| r[k].clone()).collect::<Vec<_>>()
+    };
+    let s = column("cam-cusp", Drafting::HAND, "S, мм");
+    assert_eq!(s[..5], ["0", "0", "1", "3", "6"]);
+    let d2s = column("cam-shock", Drafting::EXACT, "d^2S/dφ^2, мм");
+    let infinite: Vec<usize> = (0..d2s.len()).filter(|&k| d2s[k] == "∞").collect();
+    assert_eq!(infinite, [0, 8, 9, 17], "{d2s:?}");
 }

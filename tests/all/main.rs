@@ -64,6 +64,7 @@ mod note_worked_kinematics;
 mod note_worked_machines;
 mod note_worked_rows;
 mod output;
+mod plan_images;
 mod plan_lines;
 mod plate_blocks;
 mod plate_demo;

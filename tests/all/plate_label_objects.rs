@@ -4,7 +4,9 @@
 //! - a label of a point is written within [`POINT_REACH_MM`] of its point (the point of its
 //!   step's item: a marked point, a pair, a block, an end of a line or vector), and no nearer
 //!   another labelled point, of its view or the next (the shaper's position 5's
-//!   `d₅ ≡ e ≡ s₅` stood over position 6's p);
+//!   `d₅ ≡ e ≡ s₅` stood over position 6's p), nor a chain of names right over another
+//!   labelled point as near as its own (the gear train's `0 ≡ 5` with its `5` over H's
+//!   intercept);
 //! - a label of a line, a vector or an arc (a force, an arm, a couple, a dimension) is
 //!   written within [`ITEM_REACH_MM`] of its own item, and nearer to it than to any other
 //!   line, of its view or another (by [`NEARER_MM`]): a reader takes a label for the nearest line's, and
@@ -96,6 +98,11 @@ fn labels_away_in(plate: &Plate, l: &Layout) -> Vec<(String, String)> {
                     "{d:.1} mm from its point, {r:.1} mm from “{other}”'s"
                 )));
             }
+            if let Some(other) = chain_over(l, x, d) {
+                out.push(say(format!(
+                    "a chain of names over “{other}”'s point, as near as its own"
+                )));
+            }
             continue;
         }
         let own: Vec<(DVec2, DVec2)> = lines(first)
@@ -122,6 +129,27 @@ fn labels_away_in(plate: &Plate, l: &Layout) -> Vec<(String, String)> {
         }
     }
     out
+}
+
+/// The label whose point stands right under (or over, or beside) the chain of names `x`
+/// (`0 ≡ 5`), within [`POINT_REACH_MM`] and no farther than its own point (`own`, mm): a
+/// reader takes that point for the name written over it (the gear train's «5» over H's
+/// intercept, its own point under «≡»).
+fn chain_over<'l>(l: &'l Layout, x: &PlacedLabel, own: f64) -> Option<&'l str> {
+    if !x.text.contains('≡') {
+        return None;
+    }
+    let (lo, hi) = (x.rect.min, x.rect.max);
+    l.labels
+        .iter()
+        .filter(|o| o.anchor.distance(x.anchor) > 1e-6)
+        .find(|o| {
+            let p = o.anchor;
+            let across = (lo.x..=hi.x).contains(&p.x) || (lo.y..=hi.y).contains(&p.y);
+            let d = box_to_point(lo, hi, p);
+            across && d <= POINT_REACH_MM && d <= own + NEARER_MM
+        })
+        .map(|o| o.text.as_str())
 }
 
 /// How far a leader ending at `to` (sheet mm) misses the object of the label of `step`

@@ -121,14 +121,41 @@ impl<'a> Builder<'a> {
             (None, Some(&(_, oi)), None) => oi,
             (None, None, _) => DVec2::ZERO,
         };
-        if let Some(&(o, oi)) = self.links.pts[link].first() {
-            if o.distance(at) > 1e-9 {
-                self.rec.draw(
-                    format!("similarity: {name} from {}", link),
-                    Item::Segment(Segment::new(oi, img)),
-                    Role::Construction,
-                    &[],
-                );
+        let similarity = format!("similarity: {name} from {link}");
+        match pair {
+            // The link's image drawn whole, as the textbook draws it: the segment of its two
+            // images (a′b′) run on to the new one when the point is on the link's line
+            // (s₂′ on a′b′), else the similar triangle on them (d b c).
+            Some(((o, oi), (q, qi))) => {
+                let oq = q - o;
+                let t = (at - o).dot(oq) / oq.length_squared();
+                let off = (at - o).perp_dot(oq).abs() / oq.length();
+                let sides = if off <= 1e-9 * oq.length() {
+                    let end = |u: f64| oi + (qi - oi) * u;
+                    vec![(end(t.min(0.0)), end(t.max(1.0)))]
+                } else {
+                    vec![(oi, qi), (oi, img), (qi, img)]
+                };
+                for (a, b) in sides {
+                    self.rec.draw(
+                        similarity.clone(),
+                        Item::Segment(Segment::new(a, b)),
+                        Role::Construction,
+                        &[],
+                    );
+                }
+            }
+            _ => {
+                if let Some(&(o, oi)) = self.links.pts[link].first() {
+                    if o.distance(at) > 1e-9 {
+                        self.rec.draw(
+                            similarity,
+                            Item::Segment(Segment::new(oi, img)),
+                            Role::Construction,
+                            &[],
+                        );
+                    }
+                }
             }
         }
         img

@@ -509,6 +509,7 @@ pub(crate) const NEARER_MM: f64 = 0.5;
 /// [`ITEM_REACH_MM`] from its own line or nearer another line, of any view, than its own
 /// (nothing at its object).
 pub(super) fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
+    cost += over_rival(job, rect);
     if job.request.names_of == Names::Point {
         let own = box_distance(rect, job.request.anchor);
         let beyond = own - POINT_REACH_MM;
@@ -539,6 +540,29 @@ pub(super) fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
         }
     }
     cost
+}
+
+/// What a chain of a point's names at `rect` costs for standing over another labelled
+/// point no farther than its own: a point right under (or over, or beside) the chain and
+/// near it is read as the one its name there is (the gear train's «0 ≡ 5» with its «5» over
+/// H's intercept, its own point under «≡»). A single name is placed by its distances alone
+/// ([`away`]): among a crowd of points every place near its own faces another.
+fn over_rival(job: &Job, rect: &Rect) -> f64 {
+    if !phrase::is_chain(&job.text) {
+        return 0.0;
+    }
+    let own = box_distance(rect, job.request.anchor);
+    let facing = |p: &DVec2| {
+        let across =
+            (p.x >= rect.min.x && p.x <= rect.max.x) || (p.y >= rect.min.y && p.y <= rect.max.y);
+        let d = box_distance(rect, *p);
+        across && d <= POINT_REACH_MM && d <= own + NEARER_MM
+    };
+    if job.points.iter().any(facing) {
+        WRONG_LINE
+    } else {
+        0.0
+    }
 }
 
 /// Whether a line or symbol of the view runs through the label at `rect` (within half the
