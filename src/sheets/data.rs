@@ -46,10 +46,23 @@ pub(crate) fn spans(m: &Mechanism) -> Vec<(Span, String, String, f64)> {
         }
     }
     for p in &m.points {
+        let Some(o) = link_origin(m, p.link) else {
+            continue;
+        };
         if p.across == 0.0 {
-            if let Some(o) = link_origin(m, p.link) {
-                push(Span::Point, &o, &p.name, p.along.abs());
-            }
+            push(Span::Point, &o, &p.name, p.along.abs());
+            continue;
+        }
+        // A point off its link's line (C of the triangular rocker DBC): the triangle's two
+        // sides from the link's origin and from the pair its frame runs to.
+        let end = m
+            .groups
+            .iter()
+            .flat_map(|g| g.links.into_iter().zip(g.dyad.lengths()))
+            .find(|(link, _)| *link == p.link);
+        if let Some((_, (_, x, len))) = end {
+            push(Span::Point, &o, &p.name, p.along.hypot(p.across));
+            push(Span::Point, x, &p.name, (p.along - len).hypot(p.across));
         }
     }
     let fixed = &m.fixed;

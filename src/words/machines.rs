@@ -275,9 +275,9 @@ catalogue! {
         Undercut => ("ПОДРЕЗ: r_{р} >", "ПІДРІЗ: r_{р} >", "UNDERCUT: r_{р} >"),
         RollerCusp => ("ЗАОСТРЕНИЕ: r_{р} =", "ЗАГОСТРЕННЯ: r_{р} =", "CUSP: r_{р} ="),
         Cusp => (
-            "ЗАОСТРЕНИЕ: радиус кривизны профиля r_{0} + S + S″ < 0, огибающая положений тарелки образует петлю",
-            "ЗАГОСТРЕННЯ: радіус кривини профілю r_{0} + S + S″ < 0, обвідна положень тарілки утворює петлю",
-            "CUSP: the profile's radius of curvature r_{0} + S + S″ < 0, the envelope of the face's positions loops"
+            "ЗАОСТРЕНИЕ: ρ = r_{0} + S + S″ < 0, огибающая образует петлю",
+            "ЗАГОСТРЕННЯ: ρ = r_{0} + S + S″ < 0, обвідна утворює петлю",
+            "CUSP: ρ = r_{0} + S + S″ < 0, the envelope loops"
         ),
         RigidShocks => ("Жёсткие удары на границах фаз", "Жорсткі удари на межах фаз", "Rigid shocks at the phase ends"),
         // The angle's limit holds on the rise only under force closure (seed 002 L1463).

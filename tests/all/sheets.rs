@@ -553,3 +553,14 @@ fn an_engines_force_sheets_give_the_masses_and_every_cylinder_its_loads_come_fro
         assert!(text.contains(data), "{}:\n{text}", p.name);
     }
 }
+
+#[test]
+fn a_point_off_its_links_line_is_given_by_the_triangles_two_sides() {
+    // The six-bar's C and S₃ lie on the triangular rocker DBC off its line DB: the data give
+    // both sides from D and from B (before, neither: the drawn mechanism could not be
+    // rebuilt from its data).
+    let s = scene::load(&root().join("constructions/six-bar.toml")).expect("six-bar");
+    let text = sheet_text(&s);
+    let sides = "l_{DC} = 250 мм, l_{BC} = 150 мм, l_{AS2} = 250 мм, l_{DS3} = 177,17 мм";
+    assert!(text.contains(sides), "«{sides}» in\n{text}");
+}
