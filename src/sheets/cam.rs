@@ -341,11 +341,14 @@ fn data_lines(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<String> {
             Text::Graphical.get(lang),
             n(0.8 * rho),
         );
+        // A given roller is set against the bound the rule concludes (cam-undercut's 15 mm
+        // against r_р ≤ 8,8 mm); a chosen one is the bound.
         out.push(match s.roller {
             Some(_) => format!(
-                "r_{{р}} = {} {mm} ({}); {bounds}",
+                "r_{{р}} = {} {mm} ({}); {bounds} → r_{{р}} ≤ {} {mm}",
                 n(cam.roller),
-                CamText::Given.get(lang)
+                CamText::Given.get(lang),
+                n((0.4 * cam.base).min(0.8 * rho))
             ),
             None => format!("{bounds} → r_{{р}} = {} {mm}", n(cam.roller)),
         });
@@ -422,8 +425,8 @@ const POINTS_PER_TABLE: usize = 40;
 
 /// One row per point: φ, S, dS/dφ, d²S/dφ² (each as read off its diagram, to the step its
 /// scale reads `read_mm` to, or to 0,01 mm read exactly; ∞ at a rigid shock), the angle
-/// read and exact, the profile's radius vector (read off the profile likewise); in tables of at most [`POINTS_PER_TABLE`]
-/// rows, each after the first titled as continued.
+/// read and exact, the profile's radius vector (read off the profile likewise); in tables
+/// of at most [`POINTS_PER_TABLE`] rows, each after the first titled as continued.
 fn points_table(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<TableBlock> {
     let flat = matches!(cam.spec.follower, Follower::Flat { .. });
     let f = |x: f64, d: usize| format_fixed(x, d, lang);

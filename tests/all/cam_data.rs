@@ -136,6 +136,14 @@ fn the_rollers_bound_takes_the_rho_min_the_table_reads() {
             .any(|w| w.contains("0,8·ρ_{min} = 0,8·61 (графически) = 48,8 мм → r_{р} = 28,4 мм")),
         "{data:?}"
     );
+    // A given roller is set against the bound the rule concludes (cam-undercut: 15 mm, an
+    // undercut, against r_р ≤ 8,8 mm; before, the line gave the bounds and no conclusion).
+    let (_, data) = read("cam-undercut");
+    assert!(
+        data.iter()
+            .any(|w| w.starts_with("r_{р} = 15 мм (задано); ") && w.ends_with(" → r_{р} ≤ 8,8 мм")),
+        "{data:?}"
+    );
     let (cell, data) = read("cam-flat-rocker");
     assert_eq!(cell, "20,3");
     assert!(
