@@ -8,7 +8,7 @@ use super::reading::{read_angles, Drawn};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::fit::{overflow, raised};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
-use crate::geom::{bezier_at, french_piece, Arc, Circle, DVec2, Segment};
+use crate::geom::{bezier_points, french_piece, Arc, Circle, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 use std::f64::consts::TAU;
 use std::ops::Range;
@@ -454,16 +454,12 @@ pub(super) fn cam_centre(rec: &mut Recorder) -> StepId {
 /// a circle over two pieces, which misses the bend between them, seed 000's cam by +12 %.)
 pub(super) fn drawn_rho_min(points: &[Point], c: &[DVec2], tangents: &[DVec2]) -> f64 {
     let mut best = f64::INFINITY;
-    for phase in moving_phases(points) {
-        let mut at: Vec<DVec2> = Vec::new();
-        for i in phase {
-            let piece = french_piece(c[i], tangents[i], c[i + 1], tangents[i + 1]);
-            let from = usize::from(!at.is_empty());
-            at.extend(
-                (from..=RHO_STEPS).map(|k| bezier_at(c[i], &piece, k as f64 / RHO_STEPS as f64)),
-            );
-        }
-        for w in at.windows(3) {
+    for phase in moving_phases(points).into_iter().filter(|p| !p.is_empty()) {
+        let start = c[phase.start];
+        let pieces: Vec<[DVec2; 3]> = phase
+            .map(|i| french_piece(c[i], tangents[i], c[i + 1], tangents[i + 1]))
+            .collect();
+        for w in bezier_points(start, &pieces, RHO_STEPS).windows(3) {
             let (a, b, d) = (w[0], w[1], w[2]);
             let cross = (b - a).perp_dot(d - b);
             // Clockwise turning is convex (the cam frame's curve runs clockwise).

@@ -9,7 +9,7 @@ use crate::linkage::Mechanism;
 use crate::plate::Plate;
 use crate::scale::Lang;
 use crate::words::md_value as fmt;
-use crate::words::{mm, plain};
+use crate::words::{mm, plain, unit_in};
 use crate::words::{GearText, NoteText, Text};
 
 /// One line of data: symbol (label markup), value, unit (as `unit_in` takes it).
@@ -96,13 +96,21 @@ pub fn mechanism(m: &Mechanism, lang: Lang) -> Vec<DataRow> {
     rows
 }
 
-/// Symbol, value and unit of the links' masses and moments of inertia and of the working
-/// resistances.
+/// Symbol, value and unit of the links' masses and moments of inertia, of the working
+/// resistances and of an engine's cylinders.
 pub fn forces(f: &ForceSpec, lang: Lang) -> Vec<DataRow> {
-    let mut rows = Vec::new();
+    force_units(f, lang).concat()
+}
+
+/// [`forces`] by what each row belongs to: a link (its mass and moment of inertia), a
+/// resistance, a cylinder (its bore, its indicator diagram's peak and the crank angle its
+/// cycle starts at; the diagram itself is the scene's table) — a sheet writes each together.
+pub(crate) fn force_units(f: &ForceSpec, lang: Lang) -> Vec<Vec<DataRow>> {
+    let mut units = Vec::new();
     for l in &f.links {
+        let mut unit = Vec::new();
         if l.mass > 0.0 {
-            rows.push((
+            unit.push((
                 format!("m_{{{}}}", l.link),
                 fmt(l.mass, 5, lang),
                 "kg".into(),
@@ -110,41 +118,51 @@ pub fn forces(f: &ForceSpec, lang: Lang) -> Vec<DataRow> {
         }
         if l.inertia > 0.0 {
             let centre = plain(&l.centre);
-            rows.push((
+            unit.push((
                 format!("J_{{{centre}}}"),
                 fmt(l.inertia, 5, lang),
                 "kg*m^2".into(),
             ));
         }
+        units.push(unit);
     }
     for r in &f.resistances {
-        match &r.action {
+        units.push(vec![match &r.action {
             Action::Force { magnitude, .. } => {
-                rows.push(("F_{пс}".into(), fmt(*magnitude, 5, lang), "N".into()));
+                ("F_{пс}".into(), fmt(*magnitude, 5, lang), "N".into())
             }
             Action::Moment { magnitude, .. } => {
-                rows.push(("M_{пс}".into(), fmt(*magnitude, 5, lang), "N*m".into()));
+                ("M_{пс}".into(), fmt(*magnitude, 5, lang), "N*m".into())
             }
-        }
+        }]);
     }
-    // An engine's gas forces: each cylinder's bore, its indicator diagram's peak and the
-    // crank angle its cycle starts at (the diagram itself is the scene's table).
     for c in &f.indicators {
         let piston = plain(&c.point);
         let peak = c.pressure.iter().map(|&(_, p)| p).fold(0.0, f64::max);
-        rows.push((format!("d_{{{piston}}}"), mm(c.bore, lang), "mm".into()));
-        rows.push((
-            format!("p_{{max {piston}}}"),
-            fmt(peak * 1e-6, 5, lang),
-            "MPa".into(),
-        ));
-        rows.push((
-            format!("φ_{{0 {piston}}}"),
-            fmt(c.offset.to_degrees(), 5, lang),
-            "deg".into(),
-        ));
+        units.push(vec![
+            (format!("d_{{{piston}}}"), mm(c.bore, lang), "mm".into()),
+            (
+                format!("p_{{max {piston}}}"),
+                fmt(peak * 1e-6, 5, lang),
+                "MPa".into(),
+            ),
+            (
+                format!("φ_{{0 {piston}}}"),
+                fmt(c.offset.to_degrees(), 5, lang),
+                "deg".into(),
+            ),
+        ]);
     }
-    rows
+    units.retain(|u| !u.is_empty());
+    units
+}
+
+/// A data row as a sheet's text writes it: `m_{2} = 10 кг`, an angle `φ_{0 B} = 45°`.
+pub(crate) fn written((symbol, value, unit): &DataRow, lang: Lang) -> String {
+    match unit_in(unit, lang).as_str() {
+        "°" => format!("{symbol} = {value}°"),
+        u => format!("{symbol} = {value} {u}"),
+    }
 }
 
 /// Symbol, value and unit of the gear pair, the wheels cut by the rack and the train's

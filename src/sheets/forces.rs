@@ -196,34 +196,16 @@ fn position_sheet(
 }
 
 /// The data the loads come from, under their heading: the links' masses and moments of
-/// inertia, the working resistances, an engine's cylinders ([`super::data::forces`]); a
-/// link's or a cylinder's together, as many to a line as [`DATA_PER_LINE`] items allow.
+/// inertia, the working resistances, an engine's cylinders ([`super::data::force_units`]);
+/// a link's or a cylinder's together, as many to a line as [`DATA_PER_LINE`] items allow.
 fn data_lines(spec: &ForceSpec, lang: Lang) -> Vec<String> {
-    let mut units: Vec<Vec<String>> = Vec::new();
-    for (symbol, value, unit) in super::data::forces(spec, lang) {
-        let unit = unit_in(&unit, lang);
-        let item = if unit == "°" {
-            format!("{symbol} = {value}°")
-        } else {
-            format!("{symbol} = {value} {unit}")
-        };
-        // A mass, a resistance or a bore opens a unit; a moment of inertia, a pressure or
-        // an angle joins the one before.
-        let opens = ["m_", "F_", "M_", "d_"]
-            .iter()
-            .any(|s| symbol.starts_with(s));
-        match units.last_mut() {
-            Some(u) if !opens => u.push(item),
-            _ => units.push(vec![item]),
-        }
-    }
     let mut lines = vec![Text::Data.get(lang).to_string()];
     let mut line: Vec<String> = Vec::new();
-    for u in units {
-        if !line.is_empty() && line.len() + u.len() > DATA_PER_LINE {
+    for unit in super::data::force_units(spec, lang) {
+        if !line.is_empty() && line.len() + unit.len() > DATA_PER_LINE {
             lines.push(std::mem::take(&mut line).join(", "));
         }
-        line.extend(u);
+        line.extend(unit.iter().map(|r| super::data::written(r, lang)));
     }
     if !line.is_empty() {
         lines.push(line.join(", "));

@@ -12,7 +12,7 @@ use crate::linkage::{FourBar, OutputCoord, PositionPlan, Relation, Sense, Struct
 use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, Key, Lang, Quantity, Scale};
 use crate::study::Session;
-use crate::words::{plain, unit_in, Text};
+use crate::words::{plain, Text};
 use std::f64::consts::PI;
 
 /// The room of the structural scheme, mm: wide enough for a long mechanism's scheme with its
@@ -137,10 +137,7 @@ const DATA_LINE_CHARS: usize = 64;
 fn data_lines(m: &crate::linkage::Mechanism, lang: Lang) -> Vec<String> {
     // The mechanism's data rows: its lengths, then ω₁.
     let rows = super::data::mechanism(m, lang);
-    let written: Vec<String> = rows
-        .iter()
-        .map(|(symbol, value, unit)| format!("{symbol} = {value} {}", unit_in(unit, lang)))
-        .collect();
+    let written: Vec<String> = rows.iter().map(|r| super::data::written(r, lang)).collect();
     let (omega, lengths) = written
         .split_last()
         .map_or((None, &written[..]), |(o, l)| (Some(o), l));
