@@ -71,7 +71,8 @@ pub(super) fn smooth_loop(
     }
 }
 
-/// The S axis of a combined diagram: from below the centre found on it (`depth` mm under
+/// The S axis of a combined diagram (a diagram's axis: thin and solid, as its abscissa
+/// [`abscissa`]): from below the centre found on it (`depth` mm under
 /// B₀: the drawn r_min) to above the stroke, labelled.
 pub(super) fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, depth: f64) -> StepId {
     let top = DVec2::new(0.0, mu.to_mm(spec.stroke) + 12.0);
@@ -81,7 +82,7 @@ pub(super) fn s_axis(rec: &mut Recorder, spec: &CamSpec, mu: Scale, depth: f64) 
             from: DVec2::new(0.0, -depth - 10.0),
             to: top,
         },
-        Role::Axis,
+        Role::Construction,
         &[],
     );
     rec.label(ax, "S", top, DVec2::new(1.0, 0.0));
@@ -102,7 +103,7 @@ pub(super) fn abscissa(rec: &mut Recorder, ks: &[DVec2], name: &str) -> StepId {
             from: DVec2::new(lo - 10.0, 0.0),
             to: end,
         },
-        Role::Axis,
+        Role::Construction,
         &[],
     );
     rec.label(ax, name, end, DVec2::new(0.0, -1.0));

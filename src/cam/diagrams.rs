@@ -46,7 +46,7 @@ pub const POLES: [[&str; 3]; 2] = [["P_1", "P_1′", "H_1"], ["P_2", "P_2′", "
 const FAN_GAP_MM: f64 = 12.0;
 /// The pole distance's dimension line lies this far below the lowest ray and below the φ
 /// axis's numbers, mm.
-const POLE_DIMENSION_MM: f64 = 6.0;
+const POLE_DIMENSION_MM: f64 = 8.0;
 /// Length of the arrows "∞" of a rigid shock on the d²S/dφ² diagram, mm.
 const SHOCK_MM: f64 = 15.0;
 

@@ -97,6 +97,10 @@ pub enum Item {
     },
 }
 
+/// The room a dimension's text takes beside its line, mm: the gap and a 3.5 mm label with
+/// its subscript (`plate::dimension` writes it there).
+pub const DIMENSION_TEXT_ROOM_MM: f64 = 5.0;
+
 impl Item {
     /// A slider block's half length along its slide and half width across it, mm: the block
     /// is drawn 10 × 6 mm whatever the scale.
@@ -136,9 +140,20 @@ impl Item {
                 add(*to)
             }
             Item::Dimension { from, to, offset } => {
-                let n = (*to - *from).normalize_or_zero().perp() * *offset;
-                add(*from + n);
-                add(*to + n);
+                // The line, and its text over it as read (left to right, bottom to top:
+                // ГОСТ 2.307), y up.
+                let u = (*to - *from).normalize_or_zero();
+                let n = u.perp() * *offset;
+                let read = if u.x > 0.0 || (u.x == 0.0 && u.y > 0.0) {
+                    u
+                } else {
+                    -u
+                };
+                let over = read.perp() * DIMENSION_TEXT_ROOM_MM;
+                for p in [*from + n, *to + n] {
+                    add(p);
+                    add(p + over);
+                }
             }
         }
     }

@@ -56,12 +56,12 @@ pub fn answer_key(
                 Some(values) => {
                     cells.extend(values.iter().map(|v| match v {
                         Some(x) => format_sig(*x, 4, lang),
-                        None => "—".into(),
+                        None => super::digits::NO_VALUE.into(),
                     }));
                     cells.push(String::new());
                 }
                 None => {
-                    cells.extend(columns.iter().map(|_| "—".to_string()));
+                    cells.extend(columns.iter().map(|_| super::digits::NO_VALUE.to_string()));
                     cells.push(Text::NotDrawn.get(lang).into());
                 }
             }

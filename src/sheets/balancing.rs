@@ -152,7 +152,7 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
         let idx = c.plane.index();
         let u = c.unbalance.length();
         let angle = c.angle().map_or_else(
-            || "—".to_string(),
+            || super::digits::NO_VALUE.to_string(),
             |a| format_fixed(a.to_degrees(), 1, lang),
         );
         out.push(format!(

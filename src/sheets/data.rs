@@ -92,8 +92,33 @@ pub fn mechanism(m: &Mechanism, lang: Lang) -> Vec<DataRow> {
             (symbol, mm(l, lang), "mm".to_string())
         })
         .collect();
+    rows.extend(slant_guides(m).into_iter().map(|(joint, deg)| {
+        let symbol = format!("β_{{{}}}", plain(joint));
+        (symbol, fmt(deg, 5, lang), "deg".to_string())
+    }));
     rows.push(("ω_{1}".into(), fmt(m.crank.omega, 5, lang), "rad/s".into()));
     rows
+}
+
+/// The frame guides set neither along nor across the horizontal (an engine's cylinder
+/// axes): the joint that slides on each and the guide's angle to the horizontal, degrees
+/// in [0, 180). The scheme shows a horizontal or vertical guide for what it is; a slanted
+/// one needs its angle.
+fn slant_guides(m: &Mechanism) -> Vec<(&str, f64)> {
+    use crate::linkage::Dir;
+    m.groups
+        .iter()
+        .filter_map(|g| Some((g.dyad.joint()?, g.dyad.guides())))
+        .flat_map(|(joint, guides)| guides.into_iter().flatten().map(move |g| (joint, g)))
+        .filter_map(|(joint, g)| match g.dir {
+            Dir::Fixed(a) => Some((joint, a.to_degrees().rem_euclid(180.0))),
+            Dir::Along { .. } => None,
+        })
+        .filter(|(_, deg)| {
+            let off = deg.rem_euclid(90.0);
+            off.min(90.0 - off) > 1e-9
+        })
+        .collect()
 }
 
 /// Symbol, value and unit of the links' masses and moments of inertia, of the working

@@ -6,6 +6,9 @@
 use crate::scale::{format_fixed, format_sig, Lang, Scale};
 use crate::words::unit_in;
 
+/// A table's cell that gives no value (ГОСТ 2.105: a dash, never a blank).
+pub(crate) const NO_VALUE: &str = "—";
+
 /// Significant digits of a value in a sheet's text.
 pub(crate) const SIG: usize = 4;
 /// Decimals of an angle in degrees in a sheet's text (0,01°).

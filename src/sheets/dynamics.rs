@@ -262,7 +262,9 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
                 _ => Some((gv - av) / of),
             },
         };
-        fraction.map_or("—".to_string(), |e| super::digits::error_pct(e, lang))
+        fraction.map_or(super::digits::NO_VALUE.to_string(), |e| {
+            super::digits::error_pct(e, lang)
+        })
     };
     let m_scale = d.analytic.iter().fold(0.0f64, |m, r| m.max(r.m().abs()));
     // The varying side's moment: M_с = −M_пр (a machine), M_д = M_пр (an engine).

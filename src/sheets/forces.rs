@@ -221,7 +221,7 @@ fn value(x: f64, lang: Lang) -> String {
     if x.is_finite() {
         format_sig(x, 4, lang)
     } else {
-        "—".into()
+        super::digits::NO_VALUE.into()
     }
 }
 
@@ -280,8 +280,10 @@ fn balance_lines(rows: &[Row], engine: bool, lang: Lang) -> Vec<String> {
             // Of the two values as printed (issue 45: a reader checking the line finds it).
             let (p_text, l_text) = (value(p, lang), value(l, lang));
             let unrounded = (l != 0.0 && p.is_finite() && l.is_finite()).then(|| (p - l) / l.abs());
-            let diff = super::digits::printed_error(&p_text, &l_text, unrounded, lang)
-                .map_or_else(|| "—".into(), |e| super::digits::error_pct(e.abs(), lang));
+            let diff = super::digits::printed_error(&p_text, &l_text, unrounded, lang).map_or_else(
+                || super::digits::NO_VALUE.into(),
+                |e| super::digits::error_pct(e.abs(), lang),
+            );
             let name = symbols::quantity(symbol, "bal", lang);
             let name = if engine && symbol == Symbol::Moment {
                 format!("{name} ({})", Text::ShaftResistance.get(lang))

@@ -391,7 +391,9 @@ fn table(solved: &[Solved], lang: Lang) -> TableBlock {
             let (graphical, analytic) = (shown(row.graphical), shown(row.analytic));
             let error =
                 super::digits::printed_error(&graphical, &analytic, row.rel_error(row.scale), lang)
-                    .map_or("—".to_string(), |e| super::digits::error_pct(e, lang));
+                    .map_or(super::digits::NO_VALUE.to_string(), |e| {
+                        super::digits::error_pct(e, lang)
+                    });
             rows.push(vec![
                 (n + 1).to_string(),
                 symbol,
@@ -456,7 +458,13 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     });
     blocks.push(Block::Table(table(&solved, lang)));
     let sheet_title = FrictionText::Title.get(lang);
-    // The drawings have a scale each (their captions): the sheet has none.
-    let title = super::title_block(scene, sheet_title, None, lang);
+    // The drawings have a scale each (their captions); the sheet has the one its length
+    // drawings share, none where they differ.
+    let mut lengths = (solved.iter().flat_map(|s| &s.drawings))
+        .filter(|d| d.scaled && d.figure.scale.quantity == Quantity::Length)
+        .map(|d| d.figure.scale);
+    let first = lengths.next();
+    let shared = first.filter(|f| lengths.all(|l| l.value() == f.value()));
+    let title = super::title_block(scene, sheet_title, shared, lang);
     lay_out_smallest(&SIZES, blocks, "friction", &title, lang)
 }

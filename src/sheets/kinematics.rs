@@ -475,7 +475,7 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
                 .chain(
                     vals.iter()
                         .zip(&precision)
-                        .map(|(v, c)| v.map_or(String::new(), |x| c.cell(x, lang))),
+                        .map(|(v, c)| v.map_or(digits::NO_VALUE.into(), |x| c.cell(x, lang))),
                 )
                 .collect()
         })
@@ -487,11 +487,17 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
         rows,
         size_mm: size,
     };
-    // The displacement is a reading, not a derived quantity: it has no error estimate.
+    // The displacement is a reading, not a derived quantity: it has no error estimate; the
+    // crank's ω₁ and ε₁ are given, not found (the report keeps them for the audit).
+    let crank = a.plan.program.crank_link.to_string();
+    let given = |r: &crate::check::Row| {
+        use crate::check::Symbol::{AngularAcceleration, AngularVelocity};
+        matches!(r.key.symbol, AngularVelocity | AngularAcceleration) && r.key.subject == crank
+    };
     let read: Vec<_> = a
         .rows()
         .into_iter()
-        .filter(|r| r.key.symbol != crate::check::Symbol::Displacement)
+        .filter(|r| r.key.symbol != crate::check::Symbol::Displacement && !given(r))
         .collect();
     let summary = crate::check::Summary::of(&read);
     let method = |m: Method| m.name(lang).to_string();
@@ -506,7 +512,7 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
             let worst = if shown_pct(e.max_abs_rel) > 0 {
                 e.worst_position.clone().unwrap_or_default()
             } else {
-                "—".into()
+                super::digits::NO_VALUE.into()
             };
             vec![
                 symbol_of(&read, &e.quantity, lang),

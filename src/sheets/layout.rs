@@ -343,8 +343,10 @@ pub(super) fn results_table(results: &Results<'_>, rows: &[Row], lang: Lang) -> 
             let graphical =
                 (results.graphical)(r).unwrap_or_else(|| (results.value)(r, r.graphical, s));
             let analytic = (results.value)(r, r.analytic, s);
-            let error = super::digits::printed_error(&graphical, &analytic, e, lang)
-                .map_or_else(|| "—".into(), |e| super::digits::error_pct(e, lang));
+            let error = super::digits::printed_error(&graphical, &analytic, e, lang).map_or_else(
+                || super::digits::NO_VALUE.into(),
+                |e| super::digits::error_pct(e, lang),
+            );
             results
                 .columns
                 .iter()

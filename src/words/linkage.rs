@@ -162,7 +162,7 @@ pub(crate) fn assur_group(
     let [i, j] = links;
     match lang {
         crate::scale::Lang::En => {
-            format!("II({i},{j}): Assur group of class 2, order 2, kind {number} ({letters})")
+            format!("II({i},{j}): Assur group of class 2, order 2, type {number} ({letters})")
         }
         crate::scale::Lang::Ru => format!(
             "II({i},{j}): группа Ассура 2 класса 2 порядка {} {number} ({letters})",
@@ -218,7 +218,7 @@ mod tests {
         );
         assert_eq!(
             line(Lang::En),
-            "II(2,3): Assur group of class 2, order 2, kind 3 (RPR)"
+            "II(2,3): Assur group of class 2, order 2, type 3 (RPR)"
         );
         assert_eq!(mechanism_class(2, Lang::Uk), "Механізм 2 класу");
         assert_eq!(mechanism_class(2, Lang::En), "The mechanism is of class 2");

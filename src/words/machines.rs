@@ -99,7 +99,7 @@ catalogue! {
         ),
         Dimensions => ("Размеры маховика", "Розміри маховика", "The flywheel's dimensions"),
         Dimension => ("Размер", "Розмір", "Dimension"),
-        Rule => ("Формула", "Формула", "Rule"),
+        Rule => ("Формула", "Формула", "Formula"),
         Millimetres => ("мм", "мм", "mm"),
         SpokeSections => (
             "Сечения спицы у ступицы и у обода — эллипсы, b/a = {ratio}",

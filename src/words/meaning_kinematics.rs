@@ -12,7 +12,7 @@ catalogue! {
         CentreDistance => ("расстояние между неподвижными центрами", "відстань між нерухомими центрами", "the distance between the fixed centres"),
         LinkLength => ("длина звена", "довжина ланки", "a link's length"),
         Offset => ("расстояние от точки до направляющей", "відстань від точки до напрямної", "the guide's distance from the point"),
-        PointDistance => ("расстояние точки звена от его начала", "відстань точки ланки від її початку", "a point's distance from its link's origin"),
+        PointDistance => ("расстояние точки звена от его шарнира", "відстань точки ланки від її шарніра", "a point's distance from a joint of its link"),
         Overlap => ("угол перекрытия (между положениями кривошипа в крайних положениях механизма)", "кут перекриття (між положеннями кривошипа в крайніх положеннях механізму)", "the angle between the crank's positions at the mechanism's extremes"),
         TimeRatio => ("коэффициент изменения средней скорости хода", "коефіцієнт зміни середньої швидкості ходу", "the time ratio of the strokes"),
         CrankSpeed => ("угловая скорость кривошипа", "кутова швидкість кривошипа", "the crank's angular velocity"),

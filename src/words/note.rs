@@ -58,7 +58,7 @@ catalogue! {
             "The mechanism is split into the driving link and Assur groups (the table below); each group's mobility is zero."
         ),
         GroupsTable => ("Структурные группы механизма", "Структурні групи механізму", "The mechanism's structural groups"),
-        KindWord => ("вид", "вид", "kind"),
+        KindWord => ("вид", "вид", "type"),
         Pairs => ("кинематические пары (звенья, тип)", "кінематичні пари (ланки, тип)", "kinematic pairs (links, type)"),
         GroupMobility => ("подвижность", "рухомість", "mobility"),
         Prismatic => ("поступательная", "поступальна", "prismatic"),

@@ -112,9 +112,10 @@ fn cross((p0, p1): (DVec2, DVec2), (q0, q1): (DVec2, DVec2)) -> bool {
     t > et && t < 1.0 - et && s > es && s < 1.0 - es
 }
 
-/// Whether the piece `from`–`to` ends on the axis `step` (the S axis at B₀).
+/// Whether the piece `from`–`to` ends on the axis `step` (the S axis at B₀; a diagram's
+/// axis, drawn thin and solid, or a centre line).
 fn ends_on_axis(step: &Step, from: DVec2, to: DVec2) -> bool {
-    step.role == Role::Axis
+    (step.role == Role::Axis || step.note.ends_with(" axis"))
         && drawn(step).iter().any(|&(a, b)| {
             let on = |p: DVec2| tmm::geom::Segment::new(a, b).distance_to(p) < TOUCH_MM;
             on(from) || on(to)

@@ -79,6 +79,7 @@ mod rigid_links;
 mod scheme;
 mod seed_shaper;
 mod session;
+mod sheet_details;
 mod sheet_room;
 mod sheets;
 mod studio;

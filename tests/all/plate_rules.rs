@@ -3,7 +3,8 @@
 //! - no two texts of the drawing overlap: labels (a joint label `p ≡ b₃ ≡ d` is one box) and
 //!   view captions among themselves, and labels with the text blocks and tables;
 //! - everything drawn (every view's items, its caption and labels, the text blocks, the
-//!   tables) lies inside the frame and off the title block and the designation box.
+//!   tables) lies inside the frame, clear of its line, and off the title block and the
+//!   designation box.
 
 use glam::DVec2;
 use std::path::PathBuf;
@@ -99,7 +100,13 @@ fn overlaps(l: &Layout) -> Vec<String> {
     out
 }
 
-/// Everything drawn outside the frame or over the title block or the designation box.
+/// How far everything drawn stays inside the frame, mm (the label placer's own clearance):
+/// a text 0,95 mm from the frame's line (gears-pz3's a_w, whose view's bounds left out its
+/// dimension's text) reads as written on it.
+const FRAME_CLEAR_MM: f64 = 1.0;
+
+/// Everything drawn outside the frame, against it, or over the title block or the
+/// designation box.
 fn outside(l: &Layout) -> Vec<String> {
     let drawn = l.views.iter().enumerate().filter_map(|(k, v)| {
         v.drawn.map(|rect| Item {
@@ -112,6 +119,8 @@ fn outside(l: &Layout) -> Vec<String> {
         let mut why = Vec::new();
         if !l.frame.contains(&x.rect) {
             why.push("leaves the frame");
+        } else if !l.frame.inflate(-FRAME_CLEAR_MM).contains(&x.rect) {
+            why.push("stands against the frame");
         }
         if x.rect.intersects(&l.title_block) {
             why.push("covers the title block");

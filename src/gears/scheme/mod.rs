@@ -470,15 +470,17 @@ fn draw_shafts(
         let Some((x, fixed)) = run.support else {
             continue;
         };
+        let (lo, hi) = if fixed {
+            fixing_span(runs, k, x)
+        } else {
+            (y, y)
+        };
         let support = if fixed {
             // The support wheel's shaft fixed to the frame at its end.
             rec.draw(
                 format!("the shaft {name} fixed to the frame"),
                 Item::Guide {
-                    segment: Segment::new(
-                        DVec2::new(x, y - FIXING_MM),
-                        DVec2::new(x, y + FIXING_MM),
-                    ),
+                    segment: Segment::new(DVec2::new(x, lo), DVec2::new(x, hi)),
                     hatch: if x > 0.5 * (a + b) {
                         Side::Right
                     } else {
@@ -499,11 +501,10 @@ fn draw_shafts(
                 &[id],
             )
         };
-        let top = if fixed { y + FIXING_MM } else { y };
         rec.label(
             support,
             name.clone(),
-            DVec2::new(x, top),
+            DVec2::new(x, hi),
             DVec2::new(0.0, 1.0),
         );
         if train.carrier != Some(k) {
@@ -528,6 +529,26 @@ fn draw_shafts(
                 &[arm],
             );
         }
+    }
+}
+
+/// The heights the hatched fixing of shaft `k` at `x` spans: [`FIXING_MM`] each side of
+/// the shaft, or, where a shaft on its axis runs on through the fixing (the one it is nested
+/// over), as far on the shaft's outer side only, so that the shaft running through stays
+/// free.
+fn fixing_span(runs: &[Option<Run>], k: usize, x: f64) -> (f64, f64) {
+    let Some(run) = &runs[k] else {
+        return (0.0, 0.0);
+    };
+    let y = run.y;
+    let through = runs.iter().enumerate().find_map(|(j, r)| {
+        let r = r.as_ref()?;
+        (j != k && (r.y - y).abs() < FIXING_MM && r.ends.0 < x && x < r.ends.1).then_some(r.y)
+    });
+    match through {
+        None => (y - FIXING_MM, y + FIXING_MM),
+        Some(inner) if inner < y => (y, y + 2.0 * FIXING_MM),
+        Some(_) => (y - 2.0 * FIXING_MM, y),
     }
 }
 
