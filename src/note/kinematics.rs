@@ -22,7 +22,7 @@ pub(super) fn structure(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     let chebyshev = |p5: u32, w_: i32| {
         Worked::new(
             sym("W"),
-            format!("3 {} - 2 {} - {}", sym("n"), sym("p_{5}"), sym("p_{4}")),
+            format!("3{} - 2{} - {}", sym("n"), sym("p_{5}"), sym("p_{4}")),
             format!(
                 "3 dot {} - 2 dot {} - {}",
                 n(s.n as i64),

@@ -224,28 +224,13 @@ pub(super) fn inline(math: &str) -> String {
     format!("${math}$")
 }
 
-/// A table's header or row-head cell with its first letter capital (ГОСТ 2.105), when it
-/// starts with a word (`[#"величина"]` → `[#"Величина"]`); a formula or a symbol (`dS/dφ`,
-/// `x₁`, `pd`) as it is: a word is two or more Cyrillic or three or more Latin letters, all
-/// small.
+/// A table's header or row-head cell as ГОСТ 2.105 heads it ([`crate::words::heading`]):
+/// `[#"величина"]` → `[#"Величина"]`; a formula or a symbol (`dS/dφ`, `x₁`, `pd`) as it is.
 fn capitalised(cell: &str) -> String {
-    let Some(rest) = cell.strip_prefix("[#\"") else {
-        return cell.to_string();
-    };
-    let word: Vec<char> = rest.chars().take_while(|c| c.is_alphabetic()).collect();
-    // Two Latin letters are a segment of a plan (`pd`), two Cyrillic ones a word (`ед.`).
-    let cyrillic = word.iter().all(|c| ('\u{400}'..='\u{4ff}').contains(c));
-    let least = if cyrillic { 2 } else { 3 };
-    if word.len() < least || !word.iter().all(|c| c.is_lowercase()) {
-        return cell.to_string();
+    match cell.strip_prefix("[#\"") {
+        Some(rest) => format!("[#\"{}", crate::words::heading(rest)),
+        None => cell.to_string(),
     }
-    let mut chars = rest.chars();
-    let first = chars.next().map(char::to_uppercase);
-    format!(
-        "[#\"{}{}",
-        first.into_iter().flatten().collect::<String>(),
-        chars.as_str()
-    )
 }
 
 /// The left side of the Typst math `math`: up to its first `=` outside brackets and strings.

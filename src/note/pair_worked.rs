@@ -309,7 +309,7 @@ fn wheel_tooth(w: &mut Writer<'_, '_>, p: &GearPair, i: usize, f: &Nums) {
     w.worked(
         Worked::new(
             sym(&format!("s_{{{k}}}")),
-            format!("m (π/2 + 2 {} op(\"tg\") α)", s("x")),
+            format!("m (π/2 + 2{} op(\"tg\") α)", s("x")),
             format!("{m} dot (π/2 + 2 dot {} dot {})", f.n(x), f.tg(rack.alpha)),
             Printed::mm(p.s[i], 5, f.lang),
         )
@@ -337,7 +337,7 @@ fn wheel_tooth(w: &mut Writer<'_, '_>, p: &GearPair, i: usize, f: &Nums) {
             sym(&format!("s_{{a{k}}}")),
             format!(
                 "2 {ra} ({} + {INV} α - {INV} {})",
-                frac(&s("s"), &format!("2 {}", s("r"))),
+                frac(&s("s"), &format!("2{}", s("r"))),
                 sym(&format!("α_{{a{k}}}"))
             ),
             format!(

@@ -245,7 +245,7 @@ pub(super) fn coriolis(w: &mut Writer<'_, '_>, p: &Plans<'_>) {
         w.worked(Worked::new(
             sym(&ak),
             format!(
-                "2 {} {}",
+                "2{} {}",
                 sym(&format!("ω_{{{}}}", e.link)),
                 sym(&format!("V_{{{}}}", e.pair()))
             ),

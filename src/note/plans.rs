@@ -252,7 +252,8 @@ fn worked(w: &mut Writer<'_, '_>, p: &str, symbol: Symbol, pole: &str, mu: crate
         let q = quantity(r.key.symbol, &r.key.subject, lang);
         w.worked(Worked::new(
             sym(&q),
-            format!("{} {}", sym(&seg), sym(mu_name)),
+            // Written together: a segment without an index (πb) and a space print apart.
+            format!("{}{}", sym(&seg), sym(mu_name)),
             format!("{} dot {}", num(mm, 4, lang), num(mu.value(), 4, lang)),
             Printed::si(r.graphical.abs(), DIGITS, r.unit(), lang),
         ));

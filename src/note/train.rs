@@ -142,7 +142,7 @@ fn closing_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
         let name = sym(&label);
         w.worked(Worked::new(
             &name,
-            frac(&format!("2 {}", sym("a")), &sym_),
+            frac(&format!("2{}", sym("a")), &sym_),
             frac(&format!("2 dot {}", n(c.arm * 1e3, lang)), &num_),
             Printed::mm(c.module, 5, lang).with_unit(format!(" {mm}")),
         ));

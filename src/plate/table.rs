@@ -37,7 +37,7 @@ impl TableBlock {
     pub fn with_room(mut self) -> Self {
         for (k, (heading, w)) in self.columns.iter_mut().enumerate() {
             let cells = self.rows.iter().filter_map(|r| r.get(k));
-            let first = written_heading(heading);
+            let first = crate::words::heading(heading);
             let widest = std::iter::once(first.as_str())
                 .chain(cells.map(String::as_str))
                 .map(|c| super::text::approx_width(c, self.size_mm))
@@ -50,22 +50,6 @@ impl TableBlock {
     pub fn size(&self) -> DVec2 {
         let w: f64 = self.columns.iter().map(|c| c.1).sum();
         DVec2::new(w, self.row_height() * (self.rows.len() + 1) as f64)
-    }
-}
-
-/// A column's heading as written: with a capital when it begins with a word (ГОСТ 2.105:
-/// «величина» is «Величина», «пол.» is «Пол.»); a symbol (`δ ср., %`, `φ_{1}, °`) or a
-/// unit (`мм`) as given.
-fn written_heading(heading: &str) -> String {
-    let token = heading.split([' ', ',']).next().unwrap_or("");
-    let abbreviated = token.ends_with('.');
-    let letters = token.trim_end_matches('.');
-    let n = letters.chars().count();
-    let word = letters.chars().all(char::is_alphabetic) && (n >= 3 || (abbreviated && n >= 2));
-    let mut chars = heading.chars();
-    match chars.next() {
-        Some(c) if word && c.is_lowercase() => c.to_uppercase().chain(chars).collect(),
-        _ => heading.to_string(),
     }
 }
 
@@ -93,7 +77,11 @@ pub(crate) fn table_marks(t: &TableBlock) -> Vec<Mark> {
             Align::Start,
         )));
     }
-    let header: Vec<String> = t.columns.iter().map(|c| written_heading(&c.0)).collect();
+    let header: Vec<String> = t
+        .columns
+        .iter()
+        .map(|c| crate::words::heading(&c.0))
+        .collect();
     let lines = std::iter::once(header.iter().map(String::as_str).collect::<Vec<_>>()).chain(
         t.rows
             .iter()
@@ -113,27 +101,4 @@ pub(crate) fn table_marks(t: &TableBlock) -> Vec<Mark> {
         }
     }
     marks
-}
-
-#[cfg(test)]
-mod tests {
-    use super::written_heading;
-
-    #[test]
-    fn a_heading_begins_with_a_capital_unless_it_begins_with_a_symbol_or_a_unit() {
-        for (given, written) in [
-            ("величина", "Величина"),
-            ("пол.", "Пол."),
-            ("ед.", "Ед."),
-            ("метод", "Метод"),
-            ("graphical", "Graphical"),
-            ("δ ср., %", "δ ср., %"),
-            ("φ_{1}, °", "φ_{1}, °"),
-            ("мм", "мм"),
-            ("№", "№"),
-            ("Размер", "Размер"),
-        ] {
-            assert_eq!(written_heading(given), written, "{given}");
-        }
-    }
 }

@@ -9,6 +9,7 @@
 mod audit;
 mod blocking_points;
 mod dxf;
+mod heading;
 mod linkage;
 mod machines;
 mod meaning_cases;
@@ -31,6 +32,7 @@ mod title_block;
 pub(crate) use audit::AuditText;
 pub(crate) use blocking_points::{point_label, POINT_TAGS};
 pub(crate) use dxf::DxfText;
+pub(crate) use heading::heading;
 pub(crate) use linkage::{assur_group, mechanism_class, pair_letters, redundant_reason, Text};
 pub(crate) use machines::DynamicsText;
 pub(crate) use machines::{CamText, FrictionText, GearText, RotorText};
