@@ -97,9 +97,9 @@ pub enum Item {
     },
 }
 
-/// The room a dimension's text takes beside its line, mm: the gap and a 3.5 mm label with
+/// The room a dimension's text takes beside its line, mm: the gap and a 3,5 mm label with
 /// its subscript (`plate::dimension` writes it there).
-pub const DIMENSION_TEXT_ROOM_MM: f64 = 5.0;
+pub const DIMENSION_TEXT_ROOM_MM: f64 = 6.5;
 
 impl Item {
     /// A slider block's half length along its slide and half width across it, mm: the block

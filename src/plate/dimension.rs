@@ -115,4 +115,20 @@ mod tests {
         let z = text((o, x50, 0.0), "z_{1}", TextSpot::MIDDLE).bounds();
         assert!((z.max.y + DIMENSION_TEXT_GAP_MM).abs() < 1e-9, "{z:?}");
     }
+
+    #[test]
+    fn a_dimension_text_stays_in_the_room_its_item_keeps_for_it() {
+        // The figure's bounds keep DIMENSION_TEXT_ROOM_MM over a dimension line
+        // (`Item::bounding_points`): the text written there, subscript and all, fits it.
+        let room = crate::construct::DIMENSION_TEXT_ROOM_MM;
+        let (o, x50) = (DVec2::ZERO, DVec2::new(50.0, 0.0));
+        let texts = ["a_{w}", "r_{min} = 15,2 мм", "H_{2}", "d^{2}S/dφ^{2}", "[ρ] = 10 мм"];
+        for s in texts {
+            let t = dimension_text(Map::figure(DVec2::ZERO), (o, x50, 0.0), s, TextSpot::MIDDLE)
+                .expect("a text");
+            // The figure's y is down on the sheet: the text stands at negative y.
+            let top = -t.bounds().min.y;
+            assert!(top <= room, "{s}: its top {top} mm over the line");
+        }
+    }
 }
