@@ -122,7 +122,13 @@ mod tests {
         // (`Item::bounding_points`): the text written there, subscript and all, fits it.
         let room = crate::construct::DIMENSION_TEXT_ROOM_MM;
         let (o, x50) = (DVec2::ZERO, DVec2::new(50.0, 0.0));
-        let texts = ["a_{w}", "r_{min} = 15,2 мм", "H_{2}", "d^{2}S/dφ^{2}", "[ρ] = 10 мм"];
+        let texts = [
+            "a_{w}",
+            "r_{min} = 15,2 мм",
+            "H_{2}",
+            "d^{2}S/dφ^{2}",
+            "[ρ] = 10 мм",
+        ];
         for s in texts {
             let t = dimension_text(Map::figure(DVec2::ZERO), (o, x50, 0.0), s, TextSpot::MIDDLE)
                 .expect("a text");
