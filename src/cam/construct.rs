@@ -200,7 +200,12 @@ fn chosen_roller(points: &[Point], read: &[FollowerMotion], place: &Placement, b
             (to_cam(kin.b, p.phi), to_cam(kin.normal().perp(), p.phi))
         })
         .unzip();
-    (0.4 * base).min(0.8 * drawn_rho_min(points, &pitch, &tangents))
+    roller_bound(base, drawn_rho_min(points, &pitch, &tangents))
+}
+
+/// The textbook's rule for the roller's radius: r_р ≤ 0,4·r₀ and r_р ≤ 0,8·ρ_min, m.
+pub(crate) fn roller_bound(base: f64, rho_min: f64) -> f64 {
+    (0.4 * base).min(0.8 * rho_min)
 }
 
 /// The angle graph: the pressure (or transmission) angle read off the profile drawing at

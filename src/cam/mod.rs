@@ -43,6 +43,7 @@ mod tests;
 mod travel;
 mod zone;
 
+pub(crate) use construct::roller_bound;
 pub use construct::ANGLE_LIMIT_NOTE;
 pub use construct::{build, Cam, Raised};
 pub use deviation::{deviation, deviation_at, inversion_at};

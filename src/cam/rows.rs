@@ -275,7 +275,7 @@ impl Cam {
         // the same rule on the exact ρ_min, at the same r₀; a roller the scene gives is a
         // datum, not a result.
         if !self.flat() && self.spec.roller.is_none() {
-            let a = (0.4 * self.base).min(0.8 * rho);
+            let a = super::construct::roller_bound(self.base, rho);
             out.push(subject(
                 row(
                     Symbol::Radius,

@@ -348,7 +348,7 @@ fn data_lines(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<String> {
                 "r_{{р}} = {} {mm} ({}); {bounds} → r_{{р}} ≤ {} {mm}",
                 n(cam.roller),
                 CamText::Given.get(lang),
-                n((0.4 * cam.base).min(0.8 * rho))
+                n(crate::cam::roller_bound(cam.base, rho))
             ),
             None => format!("{bounds} → r_{{р}} = {} {mm}", n(cam.roller)),
         });
