@@ -1,5 +1,6 @@
 //! Laying views, texts and tables out on as many sheets as they need: each item goes to the
-//! highest, then leftmost, free place of the current sheet (inside the frame, clear of the
+//! highest, then leftmost, free place of the current sheet, a place at most `LEVEL_MM` lower
+//! counting as level (inside the frame, clear of the
 //! title block and the designation box, a gap from everything placed); an item that fits
 //! nowhere after the last one there takes a gap before it when it is no item of a series, and
 //! starts a further sheet only when the page has no room for it at all. Items keep the order they are given in, so a sheet
@@ -71,6 +72,9 @@ impl Row {
     }
 }
 
+/// Two places whose tops differ by less than this read as level: the left one is taken, mm.
+const LEVEL_MM: f64 = 10.0;
+
 /// Slack of the comparisons, mm.
 const EPS_MM: f64 = 1e-9;
 
@@ -141,11 +145,21 @@ impl Page {
             });
         }
         let start = self.last.is_none().then_some(self.first);
-        let r = start
+        let mut free = start
             .into_iter()
             .chain(grid)
             .map(|c| Rect::new(c, c + size))
-            .find(|r| self.free(r))?;
+            .filter(|r| self.free(r));
+        let first = free.next()?;
+        // Off a series' row, a place as high within LEVEL_MM and further left reads first
+        // (the English friction sheet's case 4 went right of the row for 2 mm of height,
+        // and cases 5 and 6 before it at the left).
+        let r = if row.is_some() {
+            first
+        } else {
+            free.take_while(|r| r.min.y <= first.min.y + LEVEL_MM)
+                .fold(first, |a, r| if r.min.x < a.min.x { r } else { a })
+        };
         let on_row = row.is_some_and(|w| w.continues(r.min, size.y, &self.taken));
         self.taken.push(r);
         if !in_order {
@@ -320,6 +334,33 @@ mod tests {
             "{fourth:?} under {plan:?}"
         );
         assert!(fourth.min.y > third.min.y && fourth.min.y < third.max.y);
+    }
+
+    /// Two drawings side by side, the right one 10 mm shorter: the next item goes under the
+    /// left one, not under the right one 10 mm higher, so that it reads after both.
+    #[test]
+    fn a_place_almost_as_high_and_further_left_reads_first() {
+        let s = a1();
+        let sizes = [
+            DVec2::new(400.0, 200.0),
+            DVec2::new(350.0, 192.0),
+            DVec2::new(300.0, 50.0),
+        ];
+        let placed = pack(&s, &sizes, &[]).expect("fits");
+        let (left, right, next) = (placed[0].1, placed[1].1, placed[2].1);
+        assert!(
+            right.min.x > left.max.x && right.min.y == left.min.y,
+            "{right:?}"
+        );
+        assert_eq!(next.min.x, left.min.x, "{next:?}");
+        assert!(
+            (next.min.y - (left.max.y + GAP_MM)).abs() < 1e-9,
+            "{next:?}"
+        );
+        // 12 mm higher is no longer level: the place under the right one is taken.
+        let taller = [sizes[0], DVec2::new(350.0, 188.0 - LEVEL_MM), sizes[2]];
+        let placed = pack(&s, &taller, &[]).expect("fits");
+        assert_eq!(placed[2].1.min.x, placed[1].1.min.x, "{placed:?}");
     }
 
     #[test]

@@ -64,7 +64,7 @@ catalogue! {
         ChangePoint => (
             "Равенство: звенья ложатся на одну прямую (особое положение)",
             "Рівність: ланки лягають на одну пряму (особливе положення)",
-            "The equality: the links fall into one line (a change point)"
+            "The equality: the links fall into one line (a toggle position)"
         ),
         NoVelocityPlanThere => ("план скоростей не строится", "план швидкостей не будується", "no velocity plan there"),
         Millimetre => ("мм", "мм", "mm"),

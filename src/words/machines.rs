@@ -91,7 +91,7 @@ catalogue! {
             "The flywheel's J is {pct} % under the exact J_{м} ({n} positions);"
         ),
         // The diameter a designer takes: the worked one rounded up.
-        Taken => ("принимаем D = {d} {mm}", "приймаємо D = {d} {mm}", "taken D = {d} {mm}"),
+        Taken => ("принимаем D = {d} {mm}", "приймаємо D = {d} {mm}", "adopted D = {d} {mm}"),
         DeltaNeeds => (
             "[δ] обеспечивает J_{м} ≥ {exact} {kgm2} (D ≥ {d} {mm}).",
             "[δ] забезпечує J_{м} ≥ {exact} {kgm2} (D ≥ {d} {mm}).",
