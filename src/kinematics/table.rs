@@ -37,12 +37,12 @@ impl Columns {
         );
         self.push(
             format!("ω_{l}"),
-            "1/s",
+            "rad/s",
             Box::new(move |p: &Pose| p.dangle[l] * w1),
         );
         self.push(
             format!("ε_{l}"),
-            "1/s²",
+            "rad/s²",
             Box::new(move |p: &Pose| p.ddangle[l] * w1 * w1),
         );
     }

@@ -353,7 +353,10 @@ pub(super) fn results_table(results: &Results<'_>, rows: &[Row], lang: Lang) -> 
                 .map(|(c, _)| match c {
                     Column::Quantity => (results.name)(r),
                     Column::Method => r.method.name(lang).to_string(),
-                    Column::Unit => (results.unit)(r),
+                    // A dimensionless quantity's unit cell holds the dash (ГОСТ 2.105).
+                    Column::Unit => Some((results.unit)(r))
+                        .filter(|u| !u.is_empty())
+                        .unwrap_or_else(|| super::digits::NO_VALUE.into()),
                     Column::Graphical => graphical.clone(),
                     Column::Analytic | Column::Exact => analytic.clone(),
                     Column::Error => error.clone(),

@@ -42,8 +42,7 @@ fn column(name: &str, unit: &str, report: &Report) -> (String, Option<Symbol>, S
     };
     let unit = match unit {
         "°" => "deg",
-        "1/s" => "rad/s",
-        "1/s²" => "rad/s^2",
+        "rad/s²" => "rad/s^2",
         "m/s²" => "m/s^2",
         u => u,
     };
