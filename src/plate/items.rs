@@ -111,8 +111,8 @@ pub(crate) fn step_marks(step: &Step, map: Map) -> Vec<Mark> {
 /// 45); a longer one is a vector, its arrowhead fitted to its length ([`Arrow::fitted`]): its
 /// head is another point, 1,6 mm from its tail is not `p ≡ a`. A force (a label naming its
 /// item, never joined) shorter than its arrowhead, as the point it acts at: the polygon's
-/// detail draws it to scale. An unlabelled short vector is an arc's arrowhead (the ω arrow)
-/// and stays one. `None` for any other step.
+/// detail draws it to scale. An unlabelled vector is drawn as it is ([`vector_head`]).
+/// `None` for any other step.
 pub(crate) fn short_vector(step: &Step) -> Option<DVec2> {
     let Item::Vector { from, to } = step.item else {
         return None;
@@ -153,8 +153,7 @@ pub(crate) struct Outline {
 }
 
 /// The outlines of what `item` draws in `role` under `map`, following [`step_marks`]: the
-/// same symbol sizes, curves and arcs as polylines (`labelled`: a labelled vector's head is
-/// fitted to its length, [`Arrow::fitted`]; an unlabelled one is an arc's arrowhead).
+/// same symbol sizes, curves and arcs as polylines (a vector's head as [`vector_head`]).
 pub(crate) fn item_outlines(item: &Item, (role, labelled): (Role, bool), map: Map) -> Vec<Outline> {
     let main = Pen::for_role(role).is_main();
     let mut lines: Vec<(DVec2, DVec2)> = Vec::new();
@@ -204,12 +203,7 @@ pub(crate) fn item_outlines(item: &Item, (role, labelled): (Role, bool), map: Ma
         Item::Vector { from, to } => {
             lines.push((*from, *to));
             if let Some(u) = (*to - *from).try_normalize() {
-                let arrow = Arrow::for_pen(Pen::for_role(role));
-                let arrow = if labelled {
-                    arrow.fitted(from.distance(*to))
-                } else {
-                    arrow
-                };
+                let (arrow, _) = vector_head(Pen::for_role(role), labelled, from.distance(*to));
                 areas.push((arrow.corners(*to, u).to_vec(), main));
             }
         }
@@ -354,24 +348,37 @@ fn item_marks(
 /// A vector: the line stopped inside its arrowhead (so a thick line does not show past the
 /// head's flanks), and the head.
 fn vector(map: Map, (pen, labelled): (Pen, bool), from: DVec2, to: DVec2, out: &mut Vec<Mark>) {
-    let arrow = Arrow::for_pen(pen);
     let Some(u) = (to - from).try_normalize() else {
         return;
     };
-    let (arrow, stop) = if labelled {
-        let arrow = arrow.fitted(from.distance(to));
-        (arrow, to - u * (arrow.len * 0.85))
-    } else if from.distance(to) > arrow.len {
-        (arrow, to - u * (arrow.len * 0.85))
+    let (arrow, head_only) = vector_head(pen, labelled, from.distance(to));
+    // An arc's arrowhead: its head whole, no line.
+    let stop = if head_only {
+        from
     } else {
-        // An arc's arrowhead (the ω arrow): its head whole, no line.
-        (arrow, from)
+        to - u * (arrow.len * 0.85)
     };
     out.extend(stroke(map, pen, |d| {
         d.segment(from, stop);
     }));
     out.extend(arrow.head(map, to, u));
 }
+
+/// The head of a vector `length` mm long drawn with `pen`, and whether it is an arc's arrowhead
+/// (whole, no line: unlabelled, under [`DIRECTION_ONLY_MM`]); else fitted ([`Arrow::fitted`]).
+fn vector_head(pen: Pen, labelled: bool, length: f64) -> (Arrow, bool) {
+    let arrow = Arrow::for_pen(pen);
+    if labelled || length >= DIRECTION_ONLY_MM {
+        (arrow.fitted(length), false)
+    } else {
+        (arrow, true)
+    }
+}
+
+/// An unlabelled vector shorter than this gives only its direction: an arc's arrowhead (the
+/// cam's ω₁, 0,1 mm). A longer one is a vector (a train's velocity of a pole 2,5 mm long,
+/// whose whole 4 mm head stood out behind the axis of heights), mm.
+const DIRECTION_ONLY_MM: f64 = 1.0;
 
 /// Depth of the ground line of a fixed pivot under the joint's centre, and its half-length, mm.
 const SUPPORT_MM: (f64, f64) = (6.0, 4.0);

@@ -225,3 +225,26 @@ fn non_finite_geometry_never_panics_nor_leaks_nan() {
     assert!(!svg.contains("NaN") && !svg.contains("inf"));
     assert!(to_png(&svg, 200).is_ok());
 }
+
+/// A short unlabelled vector (a train's velocity of a pole, a side of a force polygon 2 mm
+/// long) has its head fitted to it, not standing out behind its tail; one of a tenth of a
+/// millimetre gives only its direction (an arc's arrowhead) and keeps its whole head.
+#[test]
+fn a_short_vector_keeps_its_head_within_it_and_an_arcs_arrowhead_is_whole() {
+    let head = |to: f64| {
+        let item = Item::Vector {
+            from: DVec2::ZERO,
+            to: DVec2::new(to, 0.0),
+        };
+        items::item_outlines(&item, (Role::Result, false), path::Map::SHEET)
+            .into_iter()
+            .filter_map(|o| match o.shape {
+                items::Shape::Area(pts) => Some(pts),
+                items::Shape::Line(..) => None,
+            })
+            .flatten()
+            .fold(f64::INFINITY, |m, p| m.min(p.x))
+    };
+    assert!(head(2.5).abs() < 1e-12, "{}", head(2.5));
+    assert!(head(0.1) < -3.0, "{}", head(0.1));
+}
