@@ -303,23 +303,50 @@ fn angle_graph(
             &[],
         );
     }
+    // The pressure angle's curve through the readings signed by their side of the path, its
+    // magnitude drawn: where an offset follower's angle changes side it touches nought.
+    let through: Vec<DVec2> = if rocker {
+        read.clone()
+    } else {
+        read.iter()
+            .zip(&inv.leans)
+            .map(|(q, a)| DVec2::new(q.x, mu.to_mm(*a)))
+            .collect()
+    };
+    let curve = read_curve(
+        spec,
+        (points, motions),
+        &through,
+        place,
+        |k| mu.to_mm(value(k)),
+        phi,
+    );
     rec.draw(
         "the angle read off the profile",
         Item::Polyline {
-            points: read_curve(
-                spec,
-                (points, motions),
-                &read,
-                place,
-                |k| mu.to_mm(value(k)),
-                phi,
-            ),
+            points: magnitude(&curve),
             closed: false,
         },
         Role::Result,
         &[xa, ya],
     );
     Ok(rec.finish())
+}
+
+/// The graph of the magnitude of a signed curve: every vertex folded over the axis, and where
+/// a chord crosses it, its crossing inserted, so that the curve touches nought there (a jump,
+/// at one φ, stays a jump between the two magnitudes).
+fn magnitude(curve: &[DVec2]) -> Vec<DVec2> {
+    let mut out = Vec::with_capacity(curve.len() + 4);
+    for (k, &q) in curve.iter().enumerate() {
+        if let Some(&p) = k.checked_sub(1).and_then(|j| curve.get(j)) {
+            if p.y * q.y < 0.0 && p.x != q.x {
+                out.push(DVec2::new(p.x + (q.x - p.x) * p.y / (p.y - q.y), 0.0));
+            }
+        }
+        out.push(DVec2::new(q.x, q.y.abs()));
+    }
+    out
 }
 
 /// The angle axis at `mu` graduated every [`GRADUATION_DEG`] up to `top` mm: a tick to the
@@ -383,7 +410,8 @@ fn read_curve(
     // A rise that starts with a velocity jump starts from the near dwell's level, where the
     // cycle's end leaves it; a smooth one from its first reading (the same angle).
     if spec.rise.shock() == Shock::Rigid {
-        out.push(DVec2::new(0.0, dwell(points.len().saturating_sub(1))));
+        let last = points.len().saturating_sub(1);
+        out.push(DVec2::new(0.0, dwell(last).copysign(read[last].y)));
     }
     for phase in [0usize, 2] {
         let idx: Vec<usize> = (0..points.len())
@@ -401,8 +429,9 @@ fn read_curve(
             let (a, b) = (read[idx[j]], read[idx[j + 1]]);
             out.extend_from_slice(&french_curve(a, tangent(j), b, tangent(j + 1), 8)[1..]);
         }
-        // The dwell after the phase, at the S its last point is drawn at.
-        let y = dwell(last);
+        // The dwell after the phase, at the S its last point is drawn at (on the side of the
+        // path its reading leans to: the curve may be drawn through signed readings).
+        let y = dwell(last).copysign(read[last].y);
         out.push(DVec2::new(phi.to_mm(st[phase + 1]), y));
         out.push(DVec2::new(phi.to_mm(st[phase + 2]), y));
     }

@@ -4,7 +4,7 @@
 
 use super::follower::{flat_contact, to_cam, Kin, Placement};
 use super::motion::{FollowerMotion, Point};
-use super::reading::{read_angles, Drawn};
+use super::reading::{read_leans, Drawn};
 use super::{CamError, CamSpec, Follower};
 use crate::construct::fit::{overflow, raised};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
@@ -41,6 +41,9 @@ pub struct Inversion {
     /// follower's path), rad; a rocker's transmission angle is its complement
     /// ([`super::Cam::angle_read`]).
     pub angles: Vec<f64>,
+    /// The same, signed by the side of the path the normal leans to
+    /// ([`super::reading::read_leans`]), rad.
+    pub leans: Vec<f64>,
     /// The smallest convex radius of curvature of the drawn pitch curve (or of the flat
     /// profile r₀ + S + S″ from the drawn values), m.
     pub rho_min: f64,
@@ -146,7 +149,8 @@ impl Inverting<'_> {
             points: self.points,
             centres: &turned.centres,
         };
-        let angles = read_angles(&drawn, &paths);
+        let leans = read_leans(&drawn, &paths);
+        let angles = leans.iter().map(|a| a.abs()).collect();
         let rho_min = if self.flat {
             self.read
                 .iter()
@@ -162,6 +166,7 @@ impl Inverting<'_> {
             profile: turned.profile,
             tangents: turned.tangents,
             angles,
+            leans,
             rho_min,
         })
     }

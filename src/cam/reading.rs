@@ -40,13 +40,21 @@ pub(super) struct Drawn<'a> {
 }
 
 /// The angle between the normal read at every point and the follower's path there (`paths`,
-/// cam frame), rad.
-pub(super) fn read_angles(d: &Drawn<'_>, paths: &[DVec2]) -> Vec<f64> {
+/// cam frame), rad, signed by the side of the path the normal leans to (its magnitude the
+/// pressure angle): an offset follower's angle changes side where S′ passes e, and the
+/// graph of its magnitude touches nought there.
+pub(super) fn read_leans(d: &Drawn<'_>, paths: &[DVec2]) -> Vec<f64> {
     (0..d.points.len())
         .map(|i| {
             let nrm = jay(tangent(d, i));
             let c = (nrm.dot(paths[i]).abs() / nrm.length()).clamp(0.0, 1.0);
-            c.acos()
+            // The normal turned to run with the path, and the side it leans to.
+            let along = nrm * nrm.dot(paths[i]).signum();
+            if paths[i].perp_dot(along) < 0.0 {
+                -c.acos()
+            } else {
+                c.acos()
+            }
         })
         .collect()
 }

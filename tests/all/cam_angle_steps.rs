@@ -287,3 +287,49 @@ fn an_accepted_base_radius_keeps_the_angle_read_off_its_profile() {
         }
     }
 }
+
+/// An offset follower's pressure angle changes side where S′ passes e (cam-pz5: e = 3 mm on
+/// the favourable side, the normal leaning one way at the rise's start and the other at its
+/// first point): the graph of its magnitude touches nought between the two readings, as the
+/// exact λ does, instead of running from 8,6° up through the readings (issue 45's review).
+/// The centric cam's graph keeps off nought inside its rise.
+#[test]
+fn an_offset_followers_angle_graph_touches_nought_where_the_angle_changes_side() {
+    let read_at = |g: &Figure, i: usize| {
+        g.steps
+            .iter()
+            .find_map(|s| match s.item {
+                Item::Point(p) if s.note == format!("read at point {i}") => Some(p),
+                _ => None,
+            })
+            .expect("a marked reading")
+    };
+    let lowest_between = |g: &Figure, a: DVec2, b: DVec2| {
+        g.steps
+            .iter()
+            .filter_map(|s| match &s.item {
+                Item::Polyline { points, .. } if s.role == Role::Result => Some(points),
+                _ => None,
+            })
+            .flatten()
+            .filter(|q| q.x > a.x && q.x < b.x)
+            .fold(f64::INFINITY, |m, q| m.min(q.y))
+    };
+    for drafting in [0.0, 0.5] {
+        let c = cam("cam-pz5", drafting);
+        let g = c.angle_graph.as_ref().expect("an angle graph");
+        let leans = &c.inversion.leans;
+        assert!(leans[0] * leans[1] < 0.0, "{:?}", &leans[..2]);
+        let (a, b) = (read_at(g, 0), read_at(g, 1));
+        assert!(a.y > 5.0 && b.y > 5.0, "{a} {b}");
+        let low = lowest_between(g, a, b);
+        assert!(
+            low.abs() < 0.05,
+            "at {drafting} mm: the curve keeps {low} mm over nought"
+        );
+        let centric = cam("cam-central", drafting);
+        let g = centric.angle_graph.as_ref().expect("an angle graph");
+        let (a, b) = (read_at(g, 2), read_at(g, 4));
+        assert!(lowest_between(g, a, b) > 5.0);
+    }
+}
