@@ -302,6 +302,16 @@ pub fn construct(
         profile.push(q0 + end);
     }
     rec.set_group(0);
+    draw_profiles(&mut rec, pitch, profile, mu.to_mm(low));
+    Ok(SlidingConstruction {
+        figure: rec.finish(),
+        contacts,
+    })
+}
+
+/// The pitch profile and the practical one (the rollers' envelope), and the cam's plate
+/// closed: its ends down to the guide it slides on, at `low` mm.
+fn draw_profiles(rec: &mut Recorder, pitch: Vec<DVec2>, profile: Vec<DVec2>, low: f64) {
     rec.draw(
         "pitch (theoretical) profile",
         Item::Polyline {
@@ -311,7 +321,8 @@ pub fn construct(
         Role::Construction,
         &[],
     );
-    rec.draw(
+    let ends = profile.first().zip(profile.last()).map(|(a, b)| [*a, *b]);
+    let practical = rec.draw(
         "practical profile: envelope of the rollers",
         Item::Polyline {
             points: profile,
@@ -320,10 +331,14 @@ pub fn construct(
         Role::Result,
         &[],
     );
-    Ok(SlidingConstruction {
-        figure: rec.finish(),
-        contacts,
-    })
+    for (k, end) in ends.into_iter().flatten().enumerate() {
+        rec.draw(
+            format!("the cam's end {}", k + 1),
+            Item::Segment(Segment::new(end, DVec2::new(end.x, low))),
+            Role::Result,
+            &[practical],
+        );
+    }
 }
 
 #[cfg(test)]
@@ -473,6 +488,33 @@ mod tests {
             ..spec(12)
         };
         assert_eq!(exact_rho_min(&straight, &CAM).unwrap(), f64::INFINITY);
+    }
+
+    /// The cam is a plate: its practical profile's two ends run down to the guide (the
+    /// review saw the outline open at both ends).
+    #[test]
+    fn the_cams_plate_is_closed_down_to_its_guide() {
+        let f = board(&spec(12), &CAM).figure;
+        let item = |note: &str| {
+            f.steps
+                .iter()
+                .find(|s| s.note == note)
+                .map(|s| s.item.clone())
+                .expect(note)
+        };
+        let (Item::Polyline { points, .. }, Item::Segment(guide)) = (
+            item("practical profile: envelope of the rollers"),
+            item("the cam's guide"),
+        ) else {
+            panic!("the profile and the guide");
+        };
+        for (k, end) in [points[0], points[points.len() - 1]].iter().enumerate() {
+            let Item::Segment(e) = item(&format!("the cam's end {}", k + 1)) else {
+                panic!("an end");
+            };
+            assert_eq!(e.from, *end);
+            assert_eq!((e.to.x, e.to.y), (end.x, guide.from.y));
+        }
     }
 
     #[test]
