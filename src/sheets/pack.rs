@@ -1,7 +1,7 @@
 //! Laying views, texts and tables out on as many sheets as they need: each item goes to the
 //! highest, then leftmost, free place of the current sheet, a place at most `LEVEL_MM` lower
-//! counting as level (inside the frame, clear of the
-//! title block and the designation box, a gap from everything placed); an item that fits
+//! counting as level (inside the frame, clear of the title block and the designation box, a
+//! gap from everything placed); an item that fits
 //! nowhere after the last one there takes a gap before it when it is no item of a series, and
 //! starts a further sheet only when the page has no room for it at all. Items keep the order they are given in, so a sheet
 //! reads like the textbook's: the plan of positions first, then the plans, diagrams, tables.
