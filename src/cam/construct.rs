@@ -170,7 +170,8 @@ fn over_limit(spec: &CamSpec, points: &[Point], inv: &Inversion) -> Option<(usiz
     }
     let most = FRAC_PI_2 - spec.gamma_min;
     // The first of the largest.
-    let (at, worst) = (inv.angles.iter().copied().enumerate())
+    let (at, worst) = (0..inv.leans.len())
+        .map(|i| (i, inv.angle(i)))
         .filter(|&(i, _)| spec.binds(&points[i]))
         .reduce(|w, x| if x.1 > w.1 { x } else { w })?;
     (worst > most + ANGLE_SLACK).then(|| {
@@ -288,7 +289,7 @@ fn angle_graph(
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            let a = inv.angles.get(i).copied().unwrap_or(0.0);
+            let a = inv.angle(i);
             let a = if rocker { FRAC_PI_2 - a } else { a };
             DVec2::new(phi.to_mm(p.phi), mu.to_mm(a))
         })

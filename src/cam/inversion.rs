@@ -38,11 +38,8 @@ pub struct Inversion {
     /// tangency, along the face line), cam frame: the French curve touches every roller.
     pub tangents: Vec<DVec2>,
     /// The pressure angle read off the drawing at every point (the normal against the
-    /// follower's path), rad; a rocker's transmission angle is its complement
-    /// ([`super::Cam::angle_read`]).
-    pub angles: Vec<f64>,
-    /// The same, signed by the side of the path the normal leans to
-    /// ([`super::reading::read_leans`]), rad.
+    /// follower's path), signed by the side of the path the normal leans to
+    /// ([`super::reading::read_leans`]), rad; its magnitude is [`Inversion::angle`].
     pub leans: Vec<f64>,
     /// The smallest convex radius of curvature of the drawn pitch curve (or of the flat
     /// profile r₀ + S + S″ from the drawn values), m.
@@ -123,6 +120,14 @@ struct Turned {
     kins: Vec<Kin>,
 }
 
+impl Inversion {
+    /// The pressure angle read at point `i` (0 past the points), rad: the magnitude of its
+    /// lean; a rocker's transmission angle is its complement ([`super::Cam::angle_read`]).
+    pub fn angle(&self, i: usize) -> f64 {
+        self.leans.get(i).map_or(0.0, |a| a.abs())
+    }
+}
+
 impl Inverting<'_> {
     /// The profile by inversion at `mu`.
     fn at(&self, mu: Scale, ctx: &Context) -> Result<Inversion, CamError> {
@@ -150,7 +155,6 @@ impl Inverting<'_> {
             centres: &turned.centres,
         };
         let leans = read_leans(&drawn, &paths);
-        let angles = leans.iter().map(|a| a.abs()).collect();
         let rho_min = if self.flat {
             self.read
                 .iter()
@@ -165,7 +169,6 @@ impl Inverting<'_> {
             centres: turned.centres,
             profile: turned.profile,
             tangents: turned.tangents,
-            angles,
             leans,
             rho_min,
         })

@@ -89,7 +89,7 @@ impl Cam {
     /// point `i`, rad: the inversion reads the pressure angle, the transmission angle is its
     /// complement.
     pub fn angle_read(&self, i: usize) -> f64 {
-        let pressure = self.inversion.angles[i];
+        let pressure = self.inversion.angle(i);
         if self.spec.shows_transmission_angle() {
             FRAC_PI_2 - pressure
         } else {
@@ -275,7 +275,7 @@ impl Cam {
         // the same rule on the exact ρ_min, at the same r₀; a roller the scene gives is a
         // datum, not a result.
         if !self.flat() && self.spec.roller.is_none() {
-            let a = super::construct::roller_bound(self.base, rho);
+            let a = super::roller_bound(self.base, rho);
             out.push(subject(
                 row(
                     Symbol::Radius,

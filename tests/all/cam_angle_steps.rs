@@ -52,7 +52,7 @@ fn cam(name: &str, drafting: f64) -> Cam {
 
 /// The angle drawn at a reading, degrees (γ for a rocker, λ else).
 fn read_deg(cam: &Cam, i: usize) -> f64 {
-    let a = cam.inversion.angles[i];
+    let a = cam.inversion.angle(i);
     if matches!(cam.spec.follower, Follower::Rocker { .. }) {
         (FRAC_PI_2 - a).to_degrees()
     } else {
