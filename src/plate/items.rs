@@ -1,5 +1,6 @@
 //! Recorded steps as marks: the textbook symbols of every [`Item`], and the labels.
 
+use super::arrow::{vector, vector_head, Arrow};
 use super::dimension::extension_lines;
 use super::path::{pieces, Map, PathData};
 use super::style::{Mark, Paint, Pen};
@@ -19,63 +20,6 @@ pub const LABEL_GAP_MM: f64 = 1.0;
 pub const JOINT_RADIUS_MM: f64 = 1.5;
 /// Length and spacing of hatch strokes along a guide, mm.
 pub const HATCH_MM: f64 = 2.5;
-
-/// An arrowhead: length along the line and full width at its base, mm.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Arrow {
-    len: f64,
-    width: f64,
-}
-
-impl Arrow {
-    /// Arrowhead of a result vector (main line).
-    const MAIN: Arrow = Arrow {
-        len: 4.0,
-        width: 1.2,
-    };
-    /// Arrowhead of thin lines: dimensions, angle marks, construction vectors.
-    const THIN: Arrow = Arrow {
-        len: 3.0,
-        width: 0.9,
-    };
-
-    fn for_pen(pen: Pen) -> Arrow {
-        if pen.is_main() {
-            Arrow::MAIN
-        } else {
-            Arrow::THIN
-        }
-    }
-
-    /// The filled head with its tip at `tip`, pointing along `dir` (any length); nothing for
-    /// a zero direction.
-    fn head(self, map: Map, tip: DVec2, dir: DVec2) -> Option<Mark> {
-        let u = dir.try_normalize()?;
-        let mut d = PathData::new(map);
-        d.polygon(&self.corners(tip, u));
-        Mark::path(Paint::Solid, d)
-    }
-
-    /// The head of a vector `length` mm long: this one, or, on a vector shorter than it, one
-    /// scaled down to the vector's length, so that its base does not overhang the tail.
-    fn fitted(self, length: f64) -> Arrow {
-        if length >= self.len {
-            return self;
-        }
-        let k = length / self.len;
-        Arrow {
-            len: length,
-            width: self.width * k,
-        }
-    }
-
-    /// The head's triangle: the tip, then the two corners of the base (`u`: unit direction).
-    fn corners(self, tip: DVec2, u: DVec2) -> [DVec2; 3] {
-        let base = tip - u * self.len;
-        let side = u.perp() * (self.width * 0.5);
-        [tip, base + side, base - side]
-    }
-}
 
 /// The steps of a view in the order they are painted: the recorder's order, except that the
 /// hinges (joints) come last, so that a link or a line drawn after its hinge stops at the
@@ -102,7 +46,25 @@ pub(crate) fn step_marks(step: &Step, map: Map) -> Vec<Mark> {
         map,
         &mut out,
     );
+    if let Some(tip) = short_image_tip(step) {
+        let dot = (Role::Construction, true);
+        item_marks(&Item::Point(tip), dot, Pen::THIN, map, &mut out);
+    }
     out
+}
+
+/// The head of a labelled plan image (a label naming the point at its head) shorter than
+/// its full arrowhead, where a construction's dot marks it too: its head alone does not show
+/// where it ends (the tangent's `c`, 1,6 mm from the pole on a 3,2 mm `pa`, issue 45).
+/// `None` for any other step, and for an image drawn as its tail ([`short_vector`]).
+fn short_image_tip(step: &Step) -> Option<DVec2> {
+    let Item::Vector { from, to } = step.item else {
+        return None;
+    };
+    let length = from.distance(to);
+    let head = Arrow::for_pen(Pen::for_role(step.role)).len;
+    let image = step.label.as_ref()?.names == Names::Point;
+    (image && length >= COINCIDENT_MM && length < head).then_some(to)
 }
 
 /// The tail of a labelled vector drawn as the point it is there. A plan's image (a label
@@ -127,10 +89,18 @@ pub(crate) fn short_vector(step: &Step) -> Option<DVec2> {
 /// The outlines of what a step draws under `map` (a short labelled vector as its point, see
 /// [`short_vector`]).
 pub(crate) fn step_outlines(step: &Step, map: Map) -> Vec<Outline> {
-    match short_vector(step) {
+    let mut out = match short_vector(step) {
         Some(p) => item_outlines(&Item::Point(p), (step.role, true), map),
         None => item_outlines(&step.item, (step.role, step.label.is_some()), map),
+    };
+    if let Some(tip) = short_image_tip(step) {
+        out.extend(item_outlines(
+            &Item::Point(tip),
+            (Role::Construction, true),
+            map,
+        ));
     }
+    out
 }
 
 /// What a drawn item covers on the sheet, for laying labels out clear of it and for the
@@ -269,7 +239,7 @@ fn arc_points(a: &Arc) -> Vec<DVec2> {
 }
 
 /// Stroke whatever `build` draws with `pen`.
-fn stroke(map: Map, pen: Pen, build: impl FnOnce(&mut PathData)) -> Option<Mark> {
+pub(super) fn stroke(map: Map, pen: Pen, build: impl FnOnce(&mut PathData)) -> Option<Mark> {
     paint(map, Paint::Stroke(pen), build)
 }
 
@@ -344,41 +314,6 @@ fn item_marks(
         Item::Text(_) => {}
     }
 }
-
-/// A vector: the line stopped inside its arrowhead (so a thick line does not show past the
-/// head's flanks), and the head.
-fn vector(map: Map, (pen, labelled): (Pen, bool), from: DVec2, to: DVec2, out: &mut Vec<Mark>) {
-    let Some(u) = (to - from).try_normalize() else {
-        return;
-    };
-    let (arrow, head_only) = vector_head(pen, labelled, from.distance(to));
-    // An arc's arrowhead: its head whole, no line.
-    let stop = if head_only {
-        from
-    } else {
-        to - u * (arrow.len * 0.85)
-    };
-    out.extend(stroke(map, pen, |d| {
-        d.segment(from, stop);
-    }));
-    out.extend(arrow.head(map, to, u));
-}
-
-/// The head of a vector `length` mm long drawn with `pen`, and whether it is an arc's arrowhead
-/// (whole, no line: unlabelled, under [`DIRECTION_ONLY_MM`]); else fitted ([`Arrow::fitted`]).
-fn vector_head(pen: Pen, labelled: bool, length: f64) -> (Arrow, bool) {
-    let arrow = Arrow::for_pen(pen);
-    if labelled || length >= DIRECTION_ONLY_MM {
-        (arrow.fitted(length), false)
-    } else {
-        (arrow, true)
-    }
-}
-
-/// An unlabelled vector shorter than this gives only its direction: an arc's arrowhead (the
-/// cam's ω₁, 0,1 mm). A longer one is a vector (a train's velocity of a pole 2,5 mm long,
-/// whose whole 4 mm head stood out behind the axis of heights), mm.
-const DIRECTION_ONLY_MM: f64 = 1.0;
 
 /// Depth of the ground line of a fixed pivot under the joint's centre, and its half-length, mm.
 const SUPPORT_MM: (f64, f64) = (6.0, 4.0);

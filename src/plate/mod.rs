@@ -26,6 +26,7 @@
 //! assert_eq!(svg, to_svg(&plate));
 //! ```
 
+mod arrow;
 pub mod chart;
 mod dimension;
 mod dxf;

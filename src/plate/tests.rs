@@ -1,7 +1,7 @@
 //! Plate-level tests: layout, determinism, the SVG's numbers and the raster.
 
 use super::*;
-use crate::construct::{Item, Role, Step, StepId};
+use crate::construct::{Item, Names, Role, Step, StepId};
 use crate::geom::{Circle, Segment};
 use crate::scale::{Quantity, Scale};
 use resvg::tiny_skia::Pixmap;
@@ -247,4 +247,52 @@ fn a_short_vector_keeps_its_head_within_it_and_an_arcs_arrowhead_is_whole() {
     };
     assert!(head(2.5).abs() < 1e-12, "{}", head(2.5));
     assert!(head(0.1) < -3.0, "{}", head(0.1));
+}
+
+/// A plan's image shorter than its full arrowhead (the tangent's `pc`, 1,6 mm) has a dot at
+/// its head, where its point is; a longer one, and a short force, have none. A labelled
+/// vector's head takes at most its second half: a line shows where it starts.
+#[test]
+fn a_short_plan_image_has_a_dot_where_it_ends_and_a_line_before_its_head() {
+    // The dots at its tip and where its head's base is.
+    let drawn = |to: f64, names: Names| {
+        let item = Item::Vector {
+            from: DVec2::ZERO,
+            to: DVec2::new(to, 0.0),
+        };
+        let mut label = crate::construct::Label::on(&item, "c", DVec2::ZERO, DVec2::Y);
+        label.names = names;
+        let step = Step {
+            id: StepId(0),
+            note: String::new(),
+            label: Some(label),
+            item,
+            role: Role::Result,
+            from: Vec::new(),
+            group: 0,
+        };
+        let tip = DVec2::new(to, 0.0);
+        let areas: Vec<Vec<DVec2>> = items::step_outlines(&step, path::Map::SHEET)
+            .into_iter()
+            .filter_map(|o| match o.shape {
+                items::Shape::Area(pts) => Some(pts),
+                items::Shape::Line(..) => None,
+            })
+            .collect();
+        let centre = |pts: &[DVec2]| pts.iter().fold(DVec2::ZERO, |s, p| s + *p) / pts.len() as f64;
+        let dots = (areas.iter())
+            .filter(|pts| pts.len() == 4 && centre(pts).distance(tip) < 1e-9)
+            .count();
+        let base = (areas.iter().filter(|pts| pts.len() == 3).flatten())
+            .fold(f64::INFINITY, |m, p| m.min(p.x));
+        (dots, base)
+    };
+    let near = |(dots, base): (usize, f64), want: (usize, f64)| {
+        dots == want.0 && (base - want.1).abs() < 1e-12
+    };
+    assert!(near(drawn(1.6, Names::Point), (1, 0.8)));
+    assert!(near(drawn(3.2, Names::Point), (1, 1.6)));
+    assert!(near(drawn(6.0, Names::Point), (0, 3.0)));
+    assert!(near(drawn(9.0, Names::Point), (0, 5.0)));
+    assert!(near(drawn(6.0, Names::Item), (0, 3.0)));
 }

@@ -71,6 +71,7 @@ mod plate_demo;
 mod plate_equivalence;
 mod plate_fill;
 mod plate_label_objects;
+mod plate_leaders;
 mod plate_model;
 mod plate_phrases;
 mod plate_rules;

@@ -3,7 +3,7 @@
 //! A label of a point is read as the point's only near it (issue 45: `B₂` 10 mm from its
 //! dot is read as another point's), so its places are dense within [`POINT_REACH_MM`] —
 //! rings [`NEAR_RING_MM`] apart in thirty-two directions — and only two rings lie beyond,
-//! taken at a cost (`place::BEYOND`) when every near place is struck or covers a text. A
+//! taken at a cost (`away::BEYOND`) when every near place is struck or covers a text. A
 //! label of an item (a force, an arm, an angle) is read as the nearest line's, so besides
 //! the rings about its anchor it is tried along its own line, on both sides of it, where no
 //! other line of its view is nearer (issue 45: `R₁₋₂` on the `R₄₋₃` line).

@@ -4,9 +4,10 @@
 //! from the middle of the line (ГОСТ 2.307: a line with no room for its number) — never
 //! struck through by a line of its own view.
 
+use super::away::NEARER_MM;
 use super::clip::{clipped_area, clipped_length, own_distance};
 use super::leader::{self, Leader};
-use super::place::{written, NEARER_MM};
+use super::place::written;
 use super::{shape_box, Outline, Request, Shape, LABEL_HEIGHT_MM};
 use crate::construct::{Item, Names};
 use crate::geom::DVec2;

@@ -137,7 +137,7 @@ fn on_shelf(leader: Leader, side: f64, size: DVec2) -> (Rect, Leader) {
 }
 
 /// Cost of a leader at all: less than a label beyond its reach or nearer another line
-/// (`place::BEYOND`, `place::WRONG_LINE`), more than a clear place at the object; and per mm
+/// (`away::BEYOND`, `away::WRONG_LINE`), more than a clear place at the object; and per mm
 /// of the line from the object.
 const LEADER: f64 = 12.0;
 const LEADER_MM: f64 = 0.5;

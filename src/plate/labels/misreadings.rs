@@ -2,9 +2,10 @@
 //! would: a label away from its object or struck through takes a leader, a shelf standing
 //! over another text as a fraction's bar moves, a word read on into another is parted.
 
+use super::away::{away, lines_between};
 use super::leader;
 use super::phrase;
-use super::place::{away, struck, Job, Placer, Slot};
+use super::place::{struck, Job, Placer, Slot};
 use super::*;
 
 impl Placer<'_> {
@@ -12,7 +13,7 @@ impl Placer<'_> {
     /// line) or is struck through by a line takes the best place on a leader instead where
     /// that costs less, in the placing order, each among the places and leaders the others
     /// have by then. A label kept near its point by its own bound keeps a place no line runs
-    /// through.
+    /// through nor parts from its point.
     pub(super) fn put_on_leaders(
         &self,
         jobs: &[Job],
@@ -27,9 +28,11 @@ impl Placer<'_> {
             let bound = job.request.within.is_some();
             // A number in its column stays there, struck or not: a leader would point at
             // its place, not at its point on the axis.
-            if job.request.column.is_some()
-                || (!struck(job, &now.rect) && (bound || away(job, &now.rect, 0.0) == 0.0))
-            {
+            let clear = match bound {
+                true => lines_between(job, &now.rect) == 0,
+                false => away(job, &now.rect, 0.0) == 0.0,
+            };
+            if job.request.column.is_some() || (!struck(job, &now.rect) && clear) {
                 continue;
             }
             let on_leader = self.leader_job(job.request.clone(), points);

@@ -413,6 +413,7 @@ fn join_coincident(single: Vec<Request>) -> Vec<Request> {
     joined
 }
 
+mod away;
 mod candidates;
 mod clip;
 mod costs;

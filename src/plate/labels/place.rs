@@ -1,8 +1,9 @@
 //! Placing labels: candidate boxes around each anchor, scored against text, points and
 //! lines already on the view, in a fixed order with repair rounds.
 
-use super::candidates::{box_distance, candidates, near_bound, NEAR_RING_MM, POINT_REACH_MM};
-use super::clip::{ink_inside, own_distance, rect_segment_distance};
+use super::away::away;
+use super::candidates::{candidates, near_bound, NEAR_RING_MM};
+use super::clip::ink_inside;
 use super::costs::{OVER_POINT, OVER_TEXT};
 use super::leader::{self, Leader};
 use super::phrase;
@@ -34,40 +35,18 @@ const TEXT_AREA: f64 = 100.0;
 /// Cost per mm of a main line crossing the box; of a thin line (a label a ring further out is
 /// cheaper than one struck through by a construction line).
 const MAIN_LINE: f64 = 20.0;
-const THIN_LINE: f64 = 10.0;
+pub(super) const THIN_LINE: f64 = 10.0;
 /// Cost of any line running into a label's box at all, over its cost per mm: a label a
 /// line runs through reads as struck out however short the piece (a long joint label such
 /// as `d₅ ≡ e ≡ s₅` touched by the end of a direction line), so its corner places and the
 /// outer rings of [`candidates`] are taken before it (issue 19, item 6).
-const STRUCK: f64 = 25.0;
+pub(super) const STRUCK: f64 = 25.0;
 /// Cost of touching a main symbol (pair, block, arrowhead, dot), and per mm² of it covered;
 /// the same for a thin one.
 const MAIN_AREA: f64 = 40.0;
 const THIN_AREA: f64 = 6.0;
 /// Cost per rank of the candidate (the preferred position is rank 0).
 const RANK: f64 = 0.5;
-/// Cost of a label of an item (a force, an arm) nearer to another line of its view than to
-/// its own, or of a point nearer another labelled point: it would be read as that line's or
-/// that point's (issue 45); plus [`WRONG_LINE_MM`] per mm. More
-/// than a line grazing the label's corner, less than a line striking through it
-/// ([`STRUCK`] and [`MAIN_LINE`] over a millimetre): a struck label cannot be read at all.
-const WRONG_LINE: f64 = 30.0;
-const WRONG_LINE_MM: f64 = 15.0;
-/// Cost of a label of a point standing further than [`POINT_REACH_MM`] from its point: it
-/// would be read as another point's (issue 45); plus [`BEYOND_MM`] per mm beyond. As
-/// [`WRONG_LINE`], less than a line striking through the label.
-const BEYOND: f64 = 30.0;
-const BEYOND_MM: f64 = 15.0;
-/// The farthest a label of an item (a force, an arm) stands from its own line before it
-/// costs [`BEYOND`] (and [`BEYOND_MM`] per mm beyond), mm: as far as a point's label
-/// ([`POINT_REACH_MM`]). Nearer than every other line is not enough: a label 12 mm under an
-/// arrow, with nothing else near, is read as nobody's (issue 45: the lever's `F_и5`).
-const ITEM_REACH_MM: f64 = POINT_REACH_MM;
-/// The most a label away from its object costs ([`WRONG_LINE`], [`BEYOND`]): what a thin
-/// line striking through 2 mm of it costs (a main one through 1 mm), so that a label struck
-/// through stays the worst (`h₄` on the V engine's lever struck by an arm 3,8 mm rather
-/// than written 2 mm nearer another arm than its own).
-const AWAY_MAX: f64 = STRUCK + 2.0 * THIN_LINE;
 /// Rounds of moving the labels that still collide.
 const REPAIR_ROUNDS: usize = 4;
 
@@ -81,12 +60,12 @@ pub(super) struct Job<'a> {
     leaders: Vec<Leader>,
     pub(super) near: Rect,
     /// The outlines near it, with their boxes.
-    lines: Vec<(Rect, &'a Outline)>,
+    pub(super) lines: Vec<(Rect, &'a Outline)>,
     /// The lines near it, of every view, that are not its item's (a label of an item keeps
     /// nearer its item than any of them).
-    rivals: Vec<(DVec2, DVec2)>,
+    pub(super) rivals: Vec<(DVec2, DVec2)>,
     /// The other labelled points near it, of every view.
-    points: Vec<DVec2>,
+    pub(super) points: Vec<DVec2>,
     /// The cost per rank of its candidates.
     rank_cost: f64,
     /// Whether a place on a leader pays for each other text right under its shelf
@@ -497,71 +476,6 @@ impl<'a> Placer<'a> {
             };
         }
         cost
-    }
-}
-
-/// A label of an item counts as nearer another line only when it is this much nearer, mm.
-pub(crate) const NEARER_MM: f64 = 0.5;
-
-/// `cost` and what a label at `rect` costs for standing away from its object: a label of a
-/// point beyond [`POINT_REACH_MM`] from it or nearer another labelled point, of any view (the
-/// position number "8" written nearer point 9, issue 45), a label of an item beyond
-/// [`ITEM_REACH_MM`] from its own line or nearer another line, of any view, than its own
-/// (nothing at its object).
-pub(super) fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
-    cost += over_rival(job, rect);
-    if job.request.names_of == Names::Point {
-        let own = box_distance(rect, job.request.anchor);
-        let beyond = own - POINT_REACH_MM;
-        if beyond > 1e-9 {
-            cost += (BEYOND + BEYOND_MM * beyond).min(AWAY_MAX);
-        }
-        let rival = job
-            .points
-            .iter()
-            .map(|p| box_distance(rect, *p))
-            .fold(f64::INFINITY, f64::min);
-        if rival + NEARER_MM < own {
-            cost += (WRONG_LINE + WRONG_LINE_MM * (own - rival)).min(AWAY_MAX);
-        }
-    }
-    if let Some(own) = own_distance(&job.request.own, rect) {
-        let beyond = own - ITEM_REACH_MM;
-        if beyond > 1e-9 {
-            cost += (BEYOND + BEYOND_MM * beyond).min(AWAY_MAX);
-        }
-        let rival = job
-            .rivals
-            .iter()
-            .map(|(a, b)| rect_segment_distance(rect, *a, *b))
-            .fold(f64::INFINITY, f64::min);
-        if rival + NEARER_MM < own {
-            cost += (WRONG_LINE + WRONG_LINE_MM * (own - rival)).min(AWAY_MAX);
-        }
-    }
-    cost
-}
-
-/// What a chain of a point's names at `rect` costs for standing over another labelled
-/// point no farther than its own: a point right under (or over, or beside) the chain and
-/// near it is read as the one its name there is (the gear train's «0 ≡ 5» with its «5» over
-/// H's intercept, its own point under «≡»). A single name is placed by its distances alone
-/// ([`away`]): among a crowd of points every place near its own faces another.
-fn over_rival(job: &Job, rect: &Rect) -> f64 {
-    if !phrase::is_chain(&job.text) {
-        return 0.0;
-    }
-    let own = box_distance(rect, job.request.anchor);
-    let facing = |p: &DVec2| {
-        let across =
-            (p.x >= rect.min.x && p.x <= rect.max.x) || (p.y >= rect.min.y && p.y <= rect.max.y);
-        let d = box_distance(rect, *p);
-        across && d <= POINT_REACH_MM && d <= own + NEARER_MM
-    };
-    if job.points.iter().any(facing) {
-        WRONG_LINE
-    } else {
-        0.0
     }
 }
 
