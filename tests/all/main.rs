@@ -70,6 +70,7 @@ mod plate_blocks;
 mod plate_demo;
 mod plate_equivalence;
 mod plate_fill;
+mod plate_label_misreadings;
 mod plate_label_objects;
 mod plate_leaders;
 mod plate_model;

@@ -1,6 +1,7 @@
 //! What a label standing away from its object costs the placer: a label of a point beyond
 //! its reach, nearer another labelled point or past lines from it; a label of an item beyond
-//! its reach from its line or nearer another line (issue 45).
+//! its reach from its line, nearer another line, or farther from it than another text is
+//! (issue 45).
 
 use super::candidates::{box_distance, POINT_REACH_MM};
 use super::clip::{own_distance, rect_segment_distance};
@@ -13,7 +14,8 @@ use crate::geom::Segment;
 /// its own, or of a point nearer another labelled point: it would be read as that line's or
 /// that point's (issue 45); plus [`WRONG_LINE_MM`] per mm. More
 /// than a line grazing the label's corner, less than a line striking through it
-/// ([`STRUCK`] and [`MAIN_LINE`] over a millimetre): a struck label cannot be read at all.
+/// ([`STRUCK`] and `place::MAIN_LINE` over a millimetre): a struck label cannot be read at
+/// all.
 const WRONG_LINE: f64 = 30.0;
 const WRONG_LINE_MM: f64 = 15.0;
 /// Cost of a label of a point standing further than [`POINT_REACH_MM`] from its point: it
@@ -75,6 +77,24 @@ fn off_object(own: f64, reach: f64, rival: f64) -> f64 {
         cost += (WRONG_LINE + WRONG_LINE_MM * (own - rival)).min(AWAY_MAX);
     }
     cost
+}
+
+/// Another text this much nearer a label's item than the label is read as the item's, mm
+/// (the shaper's `F_и3` 1,8 mm from the arrow of `R₂₋₃`, written 4,3 mm from it, issue 45).
+const OUTNEARED_MM: f64 = 2.0;
+
+/// What a label of an item at `rect` costs when one of the other `texts` stands nearer its
+/// item by more than [`OUTNEARED_MM`]: [`WRONG_LINE`], as a label nearer another line.
+pub(super) fn outneared(job: &Job, rect: &Rect, texts: &[Rect]) -> f64 {
+    let own = &job.request.own;
+    let Some(mine) = own_distance(own, rect) else {
+        return 0.0;
+    };
+    let nearer = |t: &Rect| own_distance(own, t).is_some_and(|d| d + OUTNEARED_MM < mine);
+    match texts.iter().any(nearer) {
+        true => WRONG_LINE,
+        false => 0.0,
+    }
 }
 
 /// A line this near a labelled point runs through it as the drawing reads (a label keeps

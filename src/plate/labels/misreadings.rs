@@ -2,7 +2,7 @@
 //! would: a label away from its object or struck through takes a leader, a shelf standing
 //! over another text as a fraction's bar moves, a word read on into another is parted.
 
-use super::away::{away, lines_between};
+use super::away::{away, lines_between, outneared};
 use super::leader;
 use super::phrase;
 use super::place::{struck, Job, Placer, Slot};
@@ -10,7 +10,7 @@ use super::*;
 
 impl Placer<'_> {
     /// Every label whose place stands away from its object (beyond its reach, nearer another
-    /// line) or is struck through by a line takes the best place on a leader instead where
+    /// line, another text nearer its item) or is struck through by a line takes the best place on a leader instead where
     /// that costs less, in the placing order, each among the places and leaders the others
     /// have by then. A label kept near its point by its own bound keeps a place no line runs
     /// through nor parts from its point.
@@ -26,17 +26,20 @@ impl Placer<'_> {
                 continue;
             };
             let bound = job.request.within.is_some();
-            // A number in its column stays there, struck or not: a leader would point at
-            // its place, not at its point on the axis.
+            let others = self.others_near(job.near, slots, i);
             let clear = match bound {
                 true => lines_between(job, &now.rect) == 0,
-                false => away(job, &now.rect, 0.0) == 0.0,
+                false => {
+                    away(job, &now.rect, 0.0) == 0.0
+                        && outneared(job, &now.rect, &others.texts) == 0.0
+                }
             };
+            // A number in its column stays there, struck or not: a leader would point at
+            // its place, not at its point on the axis.
             if job.request.column.is_some() || (!struck(job, &now.rect) && clear) {
                 continue;
             }
             let on_leader = self.leader_job(job.request.clone(), points);
-            let others = self.others_near(job.near, slots, i);
             let cost_now = self.cost(job, &now, &others, f64::INFINITY);
             let (slot, cost) = self.best_below(&on_leader, slots, i, cost_now - 1e-9);
             if cost < cost_now - 1e-9 {
