@@ -6,6 +6,7 @@ use super::path::{pieces, Map, PathData};
 use super::style::{Mark, Paint, Pen};
 use crate::construct::{Drafting, Item, Names, Role, Step};
 use crate::geom::{Arc, DVec2, Segment, Side};
+use std::borrow::Cow;
 use std::f64::consts::TAU;
 
 /// Label points closer than this on the sheet are one point: their labels are joined, mm —
@@ -38,17 +39,22 @@ pub(crate) fn hinges_last(steps: &[Step]) -> impl Iterator<Item = &Step> {
 /// see [`layout`](super::layout)).
 pub(crate) fn step_marks(step: &Step, map: Map) -> Vec<Mark> {
     let mut out = Vec::new();
-    let point = short_vector(step).map(Item::Point);
-    item_marks(
-        point.as_ref().unwrap_or(&step.item),
-        (step.role, step.label.is_some()),
-        Pen::for_role(step.role),
-        map,
-        &mut out,
-    );
+    for (item, role, labelled) in drawn_items(step) {
+        item_marks(&item, (role, labelled), Pen::for_role(role), map, &mut out);
+    }
+    out
+}
+
+/// What a step draws, each with its role and whether it is labelled: its item, or a short
+/// labelled vector's point ([`short_vector`]); and a short plan image's dot
+/// ([`short_image_tip`]).
+fn drawn_items(step: &Step) -> Vec<(Cow<'_, Item>, Role, bool)> {
+    let mut out = vec![match short_vector(step) {
+        Some(p) => (Cow::Owned(Item::Point(p)), step.role, true),
+        None => (Cow::Borrowed(&step.item), step.role, step.label.is_some()),
+    }];
     if let Some(tip) = short_image_tip(step) {
-        let dot = (Role::Construction, true);
-        item_marks(&Item::Point(tip), dot, Pen::THIN, map, &mut out);
+        out.push((Cow::Owned(Item::Point(tip)), Role::Construction, true));
     }
     out
 }
@@ -86,21 +92,11 @@ pub(crate) fn short_vector(step: &Step) -> Option<DVec2> {
     (from.distance(to) < shorter).then_some(from)
 }
 
-/// The outlines of what a step draws under `map` (a short labelled vector as its point, see
-/// [`short_vector`]).
+/// The outlines of what a step draws under `map` ([`drawn_items`]).
 pub(crate) fn step_outlines(step: &Step, map: Map) -> Vec<Outline> {
-    let mut out = match short_vector(step) {
-        Some(p) => item_outlines(&Item::Point(p), (step.role, true), map),
-        None => item_outlines(&step.item, (step.role, step.label.is_some()), map),
-    };
-    if let Some(tip) = short_image_tip(step) {
-        out.extend(item_outlines(
-            &Item::Point(tip),
-            (Role::Construction, true),
-            map,
-        ));
-    }
-    out
+    (drawn_items(step).into_iter())
+        .flat_map(|(item, role, labelled)| item_outlines(&item, (role, labelled), map))
+        .collect()
 }
 
 /// What a drawn item covers on the sheet, for laying labels out clear of it and for the

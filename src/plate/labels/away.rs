@@ -40,9 +40,10 @@ pub(crate) const NEARER_MM: f64 = 0.5;
 /// `cost` and what a label at `rect` costs for standing away from its object: a label of a
 /// point beyond [`POINT_REACH_MM`] from it, nearer another labelled point, of any view (the
 /// position number "8" written nearer point 9, issue 45), or past lines from it
-/// ([`lines_between`]); a label of an item beyond [`ITEM_REACH_MM`] from its own line or
-/// nearer another line, of any view, than its own (nothing at its object).
-pub(super) fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
+/// ([`lines_between`]); a label of an item beyond [`ITEM_REACH_MM`] from its own line,
+/// nearer another line, of any view, than its own (nothing at its object), or farther from
+/// it than one of the other `texts` ([`outneared`]).
+pub(super) fn away(job: &Job, rect: &Rect, texts: &[Rect], mut cost: f64) -> f64 {
     cost += over_rival(job, rect);
     if job.request.names_of == Names::Point {
         let own = box_distance(rect, job.request.anchor);
@@ -59,7 +60,7 @@ pub(super) fn away(job: &Job, rect: &Rect, mut cost: f64) -> f64 {
         let rival = (job.rivals.iter())
             .map(|(a, b)| rect_segment_distance(rect, *a, *b))
             .fold(f64::INFINITY, f64::min);
-        cost += off_object(own, ITEM_REACH_MM, rival);
+        cost += off_object(own, ITEM_REACH_MM, rival) + outneared(job, own, texts);
     }
     cost
 }
@@ -83,13 +84,11 @@ fn off_object(own: f64, reach: f64, rival: f64) -> f64 {
 /// (the shaper's `F_и3` 1,8 mm from the arrow of `R₂₋₃`, written 4,3 mm from it, issue 45).
 const OUTNEARED_MM: f64 = 2.0;
 
-/// What a label of an item at `rect` costs when one of the other `texts` stands nearer its
-/// item by more than [`OUTNEARED_MM`]: [`WRONG_LINE`], as a label nearer another line.
-pub(super) fn outneared(job: &Job, rect: &Rect, texts: &[Rect]) -> f64 {
+/// What a label of an item `mine` mm from it costs when one of the other `texts` stands
+/// nearer its item by more than [`OUTNEARED_MM`]: [`WRONG_LINE`], as a label nearer another
+/// line.
+fn outneared(job: &Job, mine: f64, texts: &[Rect]) -> f64 {
     let own = &job.request.own;
-    let Some(mine) = own_distance(own, rect) else {
-        return 0.0;
-    };
     let nearer = |t: &Rect| own_distance(own, t).is_some_and(|d| d + OUTNEARED_MM < mine);
     match texts.iter().any(nearer) {
         true => WRONG_LINE,

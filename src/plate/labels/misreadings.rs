@@ -2,7 +2,7 @@
 //! would: a label away from its object or struck through takes a leader, a shelf standing
 //! over another text as a fraction's bar moves, a word read on into another is parted.
 
-use super::away::{away, lines_between, outneared};
+use super::away::{away, lines_between};
 use super::leader;
 use super::phrase;
 use super::place::{struck, Job, Placer, Slot};
@@ -10,9 +10,9 @@ use super::*;
 
 impl Placer<'_> {
     /// Every label whose place stands away from its object (beyond its reach, nearer another
-    /// line, another text nearer its item) or is struck through by a line takes the best place on a leader instead where
-    /// that costs less, in the placing order, each among the places and leaders the others
-    /// have by then. A label kept near its point by its own bound keeps a place no line runs
+    /// line, another text nearer its item) or is struck through by a line takes the best
+    /// place on a leader instead where that costs less, in the placing order, each among the
+    /// places and leaders the others have by then. A label kept near its point by its own bound keeps a place no line runs
     /// through nor parts from its point.
     pub(super) fn put_on_leaders(
         &self,
@@ -29,10 +29,7 @@ impl Placer<'_> {
             let others = self.others_near(job.near, slots, i);
             let clear = match bound {
                 true => lines_between(job, &now.rect) == 0,
-                false => {
-                    away(job, &now.rect, 0.0) == 0.0
-                        && outneared(job, &now.rect, &others.texts) == 0.0
-                }
+                false => away(job, &now.rect, &others.texts, 0.0) == 0.0,
             };
             // A number in its column stays there, struck or not: a leader would point at
             // its place, not at its point on the axis.

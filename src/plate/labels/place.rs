@@ -1,7 +1,7 @@
 //! Placing labels: candidate boxes around each anchor, scored against text, points and
 //! lines already on the view, in a fixed order with repair rounds.
 
-use super::away::{away, outneared};
+use super::away::away;
 use super::candidates::{candidates, near_bound, NEAR_RING_MM};
 use super::clip::ink_inside;
 use super::costs::{OVER_POINT, OVER_TEXT};
@@ -434,7 +434,7 @@ impl<'a> Placer<'a> {
             return cost;
         }
         cost = match slot.leader {
-            None => away(job, rect, cost) + outneared(job, rect, &others.texts),
+            None => away(job, rect, &others.texts, cost),
             Some(l) => {
                 let fractions = if job.fractions {
                     others
