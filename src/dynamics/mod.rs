@@ -21,8 +21,10 @@ mod draw;
 #[cfg(test)]
 mod engine_tests;
 mod flywheel;
+mod keyway;
 mod part;
 mod reduce;
+mod roughness;
 mod rows;
 mod scales;
 mod spec;
@@ -33,6 +35,7 @@ mod work;
 
 pub use draw::diagrams;
 pub use flywheel::{diameter_step, Size};
+pub use keyway::Keyway;
 pub use part::PART_MM;
 pub use reduce::{Breakdown, LinkShare, LoadShare, ReducedPosition, Reducer};
 pub use rows::{findings, noted, rows};

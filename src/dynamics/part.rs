@@ -8,15 +8,18 @@
 //! join them; beyond it the upper spoke's two elliptical sections (a × b, b/a = 0.4) at the
 //! hub and at the rim, each on the trace of its cutting plane (a symmetric removed section
 //! there is not lettered, ГОСТ 2.305), hatched, with its a and b. A disc is its section
-//! with ⌀D, ⌀d₁ and its width b in the bore, and its front view.
+//! with ⌀D, ⌀d₁ and its width b in the bore, and its front view. The bore takes the shaft
+//! with the fit H7 and the roughness Ra 1,6 of a fit's surface (ГОСТ 2.309); the hub's
+//! keyway for d₁ (ГОСТ 23360, [`Keyway`]) is cut up from the bore in the front view, with
+//! its width (JS9) and d₁ + t₂, and the section runs through it.
 
 use super::flywheel::Size;
 use super::spec::FlywheelKind;
-use super::DynamicsError;
+use super::{roughness, DynamicsError, Keyway};
 use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{Arc, Circle, DVec2, Segment};
 use crate::scale::{format_fixed, Lang, Quantity, Scale};
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, TAU};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
 /// The longest the outer diameter is drawn, mm: the part's scale is the round reduction
 /// (1, 2, 2.5, 4, 5 × 10ⁿ, ГОСТ 2.302's 1:2, 1:2,5, 1:4, 1:5, 1:10 …) that draws D at most
@@ -33,6 +36,15 @@ const PAST_MM: f64 = 4.0;
 const GAP_MM: f64 = 24.0;
 /// Spacing of the hatching, mm (ГОСТ 2.306: 1…10 by the area).
 const HATCH_MM: f64 = 2.0;
+/// How far past the hub (a disc's bore) the roughness leader's shelf starts, mm.
+const LEADER_MM: f64 = 10.0;
+/// The bore's roughness (ГОСТ 2.309): the fit H7's surface (a decimal point: the sheet
+/// writes its language's sign).
+const BORE_ROUGHNESS: &str = "Ra 1.6";
+/// The bore's fit on the shaft (ГОСТ 25347).
+const BORE_FIT: &str = "H7";
+/// The hub keyway width's tolerance of the normal connection (ГОСТ 23360).
+const KEYWAY_FIT: &str = "JS9";
 /// Points of a spoke's elliptical section.
 const ELLIPSE_POINTS: u32 = 48;
 
@@ -59,7 +71,8 @@ pub fn drawings(size: &Size, ctx: &Context) -> Result<Vec<Figure>, DynamicsError
 
 /// The part drawing of `size` at `mu`.
 fn at_scale(size: &Size, mu: Scale, ctx: &Context) -> Figure {
-    let part = Part { size, mu };
+    let key = size.dim("d_{1}").and_then(Keyway::for_shaft);
+    let part = Part { size, mu, key };
     let mut rec = Recorder::in_context("flywheel", mu, ctx);
     section(&mut rec, &part);
     let (rim, hub) = part.widths();
@@ -76,6 +89,8 @@ fn at_scale(size: &Size, mu: Scale, ctx: &Context) -> Figure {
 struct Part<'a> {
     size: &'a Size,
     mu: Scale,
+    /// The hub's keyway for the shaft of d₁ (ГОСТ 23360), when the standard has one.
+    key: Option<Keyway>,
 }
 
 impl Part<'_> {
@@ -91,6 +106,14 @@ impl Part<'_> {
     fn text(&self, name: &str) -> String {
         format_fixed(self.size.dim(name).unwrap_or(0.0) * 1e3, 0, Lang::En)
     }
+    /// The keyway as drawn: half its width and the radius of its bottom (d₁/2 + t₂), mm.
+    fn keyway(&self) -> Option<(f64, f64)> {
+        let k = self.key?;
+        Some((
+            self.mu.to_mm(k.b) / 2.0,
+            self.half("d_{1}") + self.mu.to_mm(k.t2),
+        ))
+    }
     /// Half the widths of the rim (the disc) and of the hub, mm.
     fn widths(&self) -> (f64, f64) {
         let b = self.half("b");
@@ -102,10 +125,22 @@ impl Part<'_> {
 fn section(rec: &mut Recorder, p: &Part<'_>) {
     let (rim, hub_w) = p.widths();
     let (outer, bore) = (p.half("D"), p.half("d_{1}"));
+    // The section runs through the keyway: above the axis the hub's material starts at the
+    // keyway's bottom, and the bore's edge beyond shows across the hub.
+    let upper = p.keyway().map_or(bore, |k| k.1);
+    if p.keyway().is_some() {
+        let edge = Segment::new(DVec2::new(-hub_w, bore), DVec2::new(hub_w, bore));
+        rec.draw(
+            "the bore beyond the keyway",
+            Item::Segment(edge),
+            Role::Given,
+            &[],
+        );
+    }
     if p.rim() {
         let (inner, hub) = (p.half("d_{3}"), p.half("d_{2}"));
-        cut(rec, "rim", rim, (inner, outer));
-        cut(rec, "hub", hub_w, (bore, hub));
+        cut(rec, "rim", rim, [(inner, outer); 2]);
+        cut(rec, "hub", hub_w, [(upper, hub), (bore, hub)]);
         // The spokes cut lengthwise: not hatched, b₁ at the hub to b₂ at the rim.
         let (w1, w2) = (p.half("b_{1}"), p.half("b_{2}"));
         for sgn in [1.0, -1.0] {
@@ -118,7 +153,7 @@ fn section(rec: &mut Recorder, p: &Part<'_>) {
             }
         }
     } else {
-        cut(rec, "disc", rim, (bore, outer));
+        cut(rec, "disc", rim, [(upper, outer), (bore, outer)]);
     }
     let widest = rim.max(hub_w);
     let reach = widest + PAST_MM;
@@ -133,10 +168,12 @@ fn section(rec: &mut Recorder, p: &Part<'_>) {
     for (k, (name, edge)) in diameters.into_iter().enumerate() {
         let at = widest + FIRST_MM + STEP_MM * k as f64;
         let half = p.half(name);
+        // The bore takes the shaft with the hub's fit (ГОСТ 25347: H7).
+        let fit = if name == "d_{1}" { BORE_FIT } else { "" };
         rec.dimension(
             format!("dimension {name}"),
             (DVec2::new(-edge, -half), DVec2::new(-edge, half), at - edge),
-            format!("⌀{}", p.text(name)),
+            format!("⌀{}{fit}", p.text(name)),
         );
     }
     // The width in the bore of the lower half (clear of the spokes and of the rim's sides):
@@ -160,10 +197,10 @@ fn section(rec: &mut Recorder, p: &Part<'_>) {
     }
 }
 
-/// Cut material `note` of half width `half` between the radii `r` (mm), above and below
-/// the axis: each half an outline hatched.
-fn cut(rec: &mut Recorder, note: &str, half: f64, r: (f64, f64)) {
-    for sgn in [1.0, -1.0] {
+/// Cut material `note` of half width `half` between the radii `r` (mm) above and below the
+/// axis: each half an outline hatched.
+fn cut(rec: &mut Recorder, note: &str, half: f64, r: [(f64, f64); 2]) {
+    for (sgn, r) in [1.0, -1.0].into_iter().zip(r) {
         let outline = [
             DVec2::new(-half, sgn * r.0),
             DVec2::new(half, sgn * r.0),
@@ -178,15 +215,37 @@ fn cut(rec: &mut Recorder, note: &str, half: f64, r: (f64, f64)) {
 /// a₁ at the hub to a₂ at the rim, the hub's and the rim's circles broken where they join.
 fn front(rec: &mut Recorder, p: &Part<'_>, c: DVec2) {
     let (outer, bore) = (p.half("D"), p.half("d_{1}"));
-    for (note, radius) in [("rim", outer), ("bore", bore)] {
-        let circle = Circle { center: c, radius };
-        rec.draw(note, Item::Circle(circle), Role::Given, &[]);
+    let circle = Circle {
+        center: c,
+        radius: outer,
+    };
+    rec.draw("rim", Item::Circle(circle), Role::Given, &[]);
+    match p.keyway() {
+        Some(key) => keyway(rec, p, c, key),
+        None => {
+            let circle = Circle {
+                center: c,
+                radius: bore,
+            };
+            rec.draw("bore", Item::Circle(circle), Role::Given, &[]);
+        }
     }
     let reach = outer + PAST_MM;
     for dir in [DVec2::X, DVec2::Y] {
         let line = Segment::new(c - dir * reach, c + dir * reach);
         rec.draw("centre line", Item::Segment(line), Role::Axis, &[]);
     }
+    // The bore's roughness (the fit's surface), on a leader down and right between the
+    // spokes (the keyway's depth is dimensioned at the left), its shelf past the hub.
+    let out = DVec2::from_angle(1.75 * PI);
+    let ring = if p.rim() { p.half("d_{2}") } else { bore };
+    roughness::on_leader(
+        rec,
+        c + out * bore,
+        c + out * (ring + LEADER_MM),
+        false,
+        BORE_ROUGHNESS,
+    );
     if !p.rim() {
         return;
     }
@@ -217,6 +276,53 @@ fn front(rec: &mut Recorder, p: &Part<'_>, c: DVec2) {
             rec.draw(note, Item::Arc(arc), Role::Given, &[]);
         }
     }
+}
+
+/// The bore of the front view centred at `c` with the keyway `(half width, bottom radius)`
+/// cut up from it, and the keyway's two dimensions: its width with the hub's tolerance
+/// (JS9, the normal connection) over it, and d₁ + t₂ from the bore's far side to its bottom
+/// with the upper deviation, at the left.
+fn keyway(rec: &mut Recorder, p: &Part<'_>, c: DVec2, (w, top): (f64, f64)) {
+    let bore = p.half("d_{1}");
+    let half = (w / bore).clamp(-1.0, 1.0).asin();
+    let arc = Arc {
+        center: c,
+        radius: bore,
+        start: FRAC_PI_2 + half,
+        sweep: TAU - 2.0 * half,
+    };
+    rec.draw("bore", Item::Arc(arc), Role::Given, &[]);
+    let foot = along(bore, w);
+    let corners = [
+        DVec2::new(-w, foot),
+        DVec2::new(-w, top),
+        DVec2::new(w, top),
+        DVec2::new(w, foot),
+    ];
+    for side in corners.windows(2) {
+        let s = Segment::new(c + side[0], c + side[1]);
+        rec.draw("keyway", Item::Segment(s), Role::Given, &[]);
+    }
+    let Some(k) = p.key else {
+        return;
+    };
+    // Tenths with a decimal point: the sheet writes its language's sign.
+    let mm = |x: f64| format_fixed(x * 1e3, 1, Lang::En);
+    rec.dimension(
+        "dimension keyway b",
+        (c + DVec2::new(-w, top), c + DVec2::new(w, top), FIRST_MM),
+        format!("{}{KEYWAY_FIT}", format_fixed(k.b * 1e3, 0, Lang::En)),
+    );
+    let d1 = p.size.dim("d_{1}").unwrap_or(0.0);
+    rec.dimension(
+        "dimension d_{1} + t_{2}",
+        (
+            c + DVec2::new(0.0, -bore),
+            c + DVec2::new(0.0, top),
+            bore + FIRST_MM,
+        ),
+        format!("{}^{{+{}}}", mm(d1 + k.t2), mm(k.depth_deviation())),
+    );
 }
 
 /// How far along a spoke its side of half width `half` meets the circle of radius `r`, mm.
@@ -325,7 +431,7 @@ mod tests {
         assert!((f.scale.value() - 0.004).abs() < 1e-15, "1:4");
         let seed = [
             ("D", "⌀785"),
-            ("d_{1}", "⌀157"),
+            ("d_{1}", "⌀157H7"),
             ("d_{2}", "⌀236"),
             ("d_{3}", "⌀628"),
             ("b", "98"),
@@ -336,7 +442,18 @@ mod tests {
             ("b_{2}", "35"),
         ];
         let dims = dimensions(&f);
-        assert_eq!(dims.len(), seed.len(), "{dims:?}");
+        // And the hub's keyway for the shaft of 157 mm (ГОСТ 23360: 40 × 22, t₂ = 9,4 mm).
+        assert_eq!(dims.len(), seed.len() + 2, "{dims:?}");
+        let d1 = size.dim("d_{1}").expect("d₁");
+        let keyway = [
+            ("keyway b", "40JS9", 0.040),
+            ("d_{1} + t_{2}", "166.4^{+0.3}", d1 + 0.0094),
+        ];
+        for (name, text, m) in keyway {
+            let (_, got, drawn) = dims.iter().find(|d| d.0 == name).expect(name);
+            assert_eq!(got, text, "{name}");
+            assert!((drawn - m / 0.004).abs() < 1e-9, "{name}: {drawn} mm");
+        }
         for (name, text) in seed {
             let (_, got, mm) = dims.iter().find(|d| d.0 == name).expect(name);
             assert_eq!(got, text, "{name}");
@@ -371,7 +488,7 @@ mod tests {
         let f = drawings(&size, &ctx).expect("drawing").swap_remove(0);
         let mut names: Vec<String> = dimensions(&f).into_iter().map(|d| d.0).collect();
         names.sort();
-        assert_eq!(names, ["D", "b", "d_{1}"]);
+        assert_eq!(names, ["D", "b", "d_{1}", "d_{1} + t_{2}", "keyway b"]);
         assert!(f.steps.iter().all(|s| s.note != "spoke"));
     }
 

@@ -53,7 +53,7 @@ fn sheet(
 ) -> Result<Vec<Plate>, BuildError> {
     let blocks = vec![
         Block::Views {
-            parts: vec![Part::new(wheel.clone(), DVec2::ZERO, None)],
+            parts: vec![Part::new(in_lang(wheel, lang), DVec2::ZERO, None)],
             scale: None,
         },
         // The table beside the drawing, the technical requirements under it (above the title
@@ -80,6 +80,16 @@ fn sheet(
     };
     title.material = grade.get(lang).to_string();
     lay_out_smallest(&[size], blocks, "flywheel", &title, lang)
+}
+
+/// `wheel` with its decimals (the keyway's depth, the roughness) written with the language's
+/// decimal sign: the part drawing writes them with a point.
+fn in_lang(wheel: &Figure, lang: Lang) -> Figure {
+    let mut out = wheel.clone();
+    for label in out.steps.iter_mut().filter_map(|s| s.label.as_mut()) {
+        label.text = label.text.replace('.', &lang.decimal().to_string());
+    }
+    out
 }
 
 /// The technical requirements of the cast part: the numbered items, a line each piece of

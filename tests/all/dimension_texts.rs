@@ -66,6 +66,15 @@ fn every_dimension_carries_its_text() {
     assert!(bare.is_empty(), "{}", bare.join("\n"));
 }
 
+/// The texts past their arrows written on a leader's shelf instead (ГОСТ 2.307 allows either
+/// where the line cannot run on): sheet, text, why.
+const SHELVED: &[(&str, &str, &str)] = &[(
+    "shaper/flywheel",
+    "45JS9",
+    "the keyway's width (11 mm at 1:4) inside the upper spoke, whose sides stand 9 mm from \
+     the keyway: its text (13 mm) run on would cross them",
+)];
+
 /// A dimension's text written past its arrows stands over the dimension line run on under it
 /// (ГОСТ 2.307), on every sheet in Russian and English as `render` reads it: the line's
 /// continuation runs from the arrow's tip along the line to past the text (issue 45: cam-pz4's
@@ -119,7 +128,10 @@ fn a_text_past_its_arrows_stands_over_the_line_run_on() {
                         };
                         off_line(r.knee) < 0.05 && off_line(r.end) < 0.05 && reach
                     });
-                    if !runs_on {
+                    let shelved = SHELVED.iter().any(|(sheet, text, _)| {
+                        *sheet == format!("{}/{}", s.stem, p.name) && *text == x.text
+                    });
+                    if !runs_on && !shelved {
                         bad.push(format!("{}/{} {lang:?}: «{}»", s.stem, p.name, x.text));
                     }
                 }

@@ -3,7 +3,8 @@
 //! technical requirements; the flywheel is sized from the J_м the
 //! dynamics sheet's construction gives (Wittenbauer's tangents), not the exact one; every
 //! dimension on the sheet is its proportion of that D, worked here from the scene's numbers
-//! and the seed's proportions (000 §5.7, L1471–1480); a machine that needs no flywheel,
+//! and the seed's proportions (000 §5.7, L1471–1480), and the hub's keyway the standard's
+//! for that d₁ (ГОСТ 23360); a machine that needs no flywheel,
 //! or a scene without `[dynamics]`, has no such sheet.
 
 use crate::support::root;
@@ -157,7 +158,15 @@ fn every_dimension_is_its_proportion_of_the_d_the_construction_gives() {
         let outer = (j.graphical / (spec.k_j * spec.rho)).powf(0.2);
         let taken = (outer * 100.0).ceil() / 100.0;
         assert!(taken > outer && taken < outer + 0.01, "{outer} → {taken}");
-        let want = seed_dimensions(taken);
+        let mut want = seed_dimensions(taken);
+        // The hub's keyway for the shaft of d₁ = 0,2·D (ГОСТ 23360, the row over 170 up to
+        // 200 mm: b = 45, t₂ = 10,4 mm): its width and d₁ + t₂.
+        let d1 = 0.2 * taken;
+        assert!(
+            d1 > 0.170 && d1 <= 0.200,
+            "d₁ = {d1} m: the test's row of the standard"
+        );
+        want.extend([("keyway b", 0.045), ("d_{1} + t_{2}", d1 + 0.0104)]);
         // The report's D_м row: this D against the exact J_м's.
         let dr = wittenbauer(&rows, Symbol::Length, "flywheel");
         assert!((dr.graphical - outer).abs() < 1e-12 * outer, "{dr:?}");
@@ -196,9 +205,23 @@ fn every_dimension_is_its_proportion_of_the_d_the_construction_gives() {
             let text = st.label.as_ref().expect("its text").text.clone();
             let diameter = ["D", "d_{1}", "d_{2}", "d_{3}"].contains(&name);
             assert_eq!(text.starts_with('⌀'), diameter, "{name}: {text}");
-            let written: f64 = text.trim_start_matches('⌀').parse().expect(&text);
+            // The bore with its fit H7, the keyway's width with JS9, its depth in tenths with
+            // the upper deviation of t₂ (+0,3 for a key 25 mm high).
+            let number = match name {
+                "d_{1}" => text.strip_suffix("H7"),
+                "keyway b" => text.strip_suffix("JS9"),
+                "d_{1} + t_{2}" => text.strip_suffix("^{+0,3}"),
+                _ => Some(text.as_str()),
+            }
+            .unwrap_or_else(|| panic!("{name}: {text}"));
+            let written: f64 = number
+                .trim_start_matches('⌀')
+                .replace(',', ".")
+                .parse()
+                .expect(&text);
+            let half_unit = if name == "d_{1} + t_{2}" { 0.05 } else { 0.5 };
             assert!(
-                (written - value * 1e3).abs() <= 0.5 + 1e-9,
+                (written - value * 1e3).abs() <= half_unit + 1e-9,
                 "{name}: {text} vs {} mm",
                 value * 1e3
             );

@@ -20,7 +20,8 @@ const LATIN_ALLOWED: &[&str] = &[
     "dS",  // Functions: sin, cos, tg, arctg (the Russian spelling of tan and arctan).
     "sin", "cos", "tg", "arctg",
     // The segment kl that Wittenbauer's tangents cut off the ΔT axis.
-    "kl",
+    "kl", // A surface's roughness parameter (ГОСТ 2.309: Ra 1,6).
+    "Ra",
 ];
 
 /// A run of capitals is allowed up to this length: points named together (`V_{BA}`,
