@@ -15,7 +15,55 @@ use crate::geom::DVec2;
 use crate::linkage::Program;
 use std::f64::consts::{PI, TAU};
 
+/// What a cylinder's indicator diagram gives at a position, as a hand-in writes it: the
+/// piston's link, the cycle angle θ (rad, in [0, 2π)), the pressure p there (Pa) and the
+/// gas force p·πd²/4 (N).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GasReading {
+    /// The piston's link.
+    pub slider: usize,
+    /// The cycle angle θ, radians.
+    pub theta: f64,
+    /// The pressure at θ, Pa.
+    pub pressure: f64,
+    /// The gas force on the piston, N.
+    pub force: f64,
+}
+
+impl GasReading {
+    /// The gas force's name (label markup, localised where it is written), as its arrow's.
+    pub fn name(&self) -> String {
+        gas_force_name(self.slider)
+    }
+}
+
+/// The name of the gas force on the piston `slider`: `F_{д3}`.
+fn gas_force_name(slider: usize) -> String {
+    format!("F_{{д{slider}}}")
+}
+
 impl Indicator {
+    /// The reading at crank angle `phi` turning in the sense `sense` (±1), the mechanism at
+    /// `motion`; `None` when the point is not a piston.
+    pub fn reading(
+        &self,
+        prog: &Program,
+        motion: &PositionMotion,
+        phi: f64,
+        sense: f64,
+    ) -> Option<GasReading> {
+        let at = |i: usize| motion.p.get(i).copied().unwrap_or(DVec2::ZERO);
+        let (_, slider) = prog.index(&self.point).and_then(|k| prog.piston(k, at))?;
+        let theta = self.cycle_angle(phi, sense);
+        let pressure = self.pressure_at(theta);
+        Some(GasReading {
+            slider,
+            theta,
+            pressure,
+            force: pressure * self.area(),
+        })
+    }
+
     /// The piston's area A = π·d²/4, m².
     pub fn area(&self) -> f64 {
         PI * self.bore * self.bore / 4.0
@@ -75,11 +123,10 @@ impl Indicator {
         if p == 0.0 {
             return Ok(None);
         }
-        let sub = slider.to_string();
         Ok(Some(Load::force(
             slider,
             LoadKind::Driving,
-            format!("F_{{д{sub}}}"),
+            gas_force_name(slider),
             towards * (p * self.area()),
             k,
         )))

@@ -18,6 +18,7 @@ mod diagnose;
 mod error;
 mod exact;
 mod indicator;
+mod indicator_draw;
 mod lever;
 mod loads;
 mod pair_friction;
@@ -33,7 +34,8 @@ pub use spec::{Action, Drive, ForceSpec, GearDrive, LinkMass, Resistance, Stroke
 
 use diagnose::located;
 pub use error::ForceError;
-pub use indicator::Indicator;
+pub use indicator::{GasReading, Indicator};
+pub use indicator_draw::{indicator_figure, Reading};
 pub use loads::{
     arm, carrier, force_scale, loads, reach, Load, LoadKind, Phase, PositionMotion, ZERO_PART,
 };

@@ -15,7 +15,7 @@ use super::{NoteError, Writer};
 use crate::check::{Method, Row, Symbol};
 use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
 use crate::geom::DVec2;
-use crate::scale::Lang;
+use crate::scale::{format_sig, Lang};
 use crate::scene::PlateKind;
 use crate::words::{quantity, MachinesMeaning as M, MachinesNote as N, NoteText as T};
 
@@ -32,6 +32,7 @@ pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         w.doc
             .heading(2, &format!("{} {p}", w.word(T::LoadsAtPosition)));
         inertia(w, spec, &f, &p);
+        gas(w, spec, &f, index)?;
         groups(w, &f)?;
         of_scene_at(w, &p);
         super::zhukovsky::lever(w, &f)?;
@@ -122,6 +123,64 @@ fn inertia(w: &mut Writer<'_, '_>, spec: &ForceSpec, f: &PositionForces, p: &str
         let s = fill(w.word(N::InertiaApplied), &[("points", points.join(", "))]);
         w.doc.par(&[label(&s)]);
     }
+}
+
+/// An engine's gas forces at the position `index`: for each cylinder its cycle angle, the
+/// pressure its indicator diagram gives there and F_д = p·πd²/4 on its piston.
+fn gas(
+    w: &mut Writer<'_, '_>,
+    spec: &ForceSpec,
+    f: &PositionForces,
+    index: usize,
+) -> Result<(), NoteError> {
+    if spec.indicators.is_empty() {
+        return Ok(());
+    }
+    let lang = w.lang;
+    let poses = w.session.poses()?;
+    let Some(phi) = poses.positions.get(index).map(|p| p.phi) else {
+        return Ok(());
+    };
+    w.doc.say(w.word(N::GasForces));
+    for c in &spec.indicators {
+        let Some(r) = c.reading(&poses.program, &f.drawn, phi, f.sense) else {
+            continue;
+        };
+        let piston = c.point.replace(['_', '{', '}'], "");
+        let fd = r.name();
+        let (ps, ds) = (format!("p_{{{piston}}}"), format!("d_{{{piston}}}"));
+        w.worked(Worked::new(
+            sym(&fd),
+            format!("{} pi {}^2 / 4", sym(&ps), sym(&ds)),
+            format!(
+                "{} dot 10^6 dot pi dot {}^2 / 4",
+                num(r.pressure * 1e-6, 4, lang),
+                num(c.bore, 4, lang)
+            ),
+            Printed::si(r.force, DIGITS, "N", lang),
+        ));
+        let theta = format!("{}°", format_sig(r.theta.to_degrees(), 4, lang));
+        explain_owned(
+            w,
+            &[
+                (
+                    fd,
+                    fill(w.word(M::GasForce), &[("k", r.slider.to_string())]),
+                    "N",
+                ),
+                (
+                    ps,
+                    fill(
+                        w.word(M::GasPressure),
+                        &[("p", piston.clone()), ("theta", theta)],
+                    ),
+                    "Pa",
+                ),
+                (ds, fill(w.word(M::Bore), &[("p", piston)]), "m"),
+            ],
+        );
+    }
+    Ok(())
 }
 
 /// Each group from the last attached, then the driving link: its vector equation with the

@@ -105,11 +105,14 @@ pub enum Quantity {
     VelocityAnalogue,
     /// The acceleration analogue d²S/dφ² of a follower, m/(rad²·mm) (μ_S″).
     AccelerationAnalogue,
+    /// Pressure, Pa/mm (μ_p of an indicator diagram, written in MPa/mm).
+    Pressure,
 }
 
 impl Quantity {
     /// The units of the quantity, one row per quantity: its SI unit (diagnostics, reports;
-    /// plain text) and the unit of its μ — the SI unit per drawing millimetre — in captions
+    /// plain text) and the unit of its μ — the SI unit per drawing millimetre, a pressure's
+    /// MPa ([`Quantity::caption_multiple`]) — in captions
     /// (label markup), English and Cyrillic (ru and uk write it alike).
     fn units(self) -> Units {
         use Quantity::*;
@@ -129,6 +132,7 @@ impl Quantity {
             UnbalanceMoment => ("kg·m²", "kg·m^2/mm", "кг·м^2/мм"),
             VelocityAnalogue => ("m/rad", "m/(rad·mm)", "м/(рад·мм)"),
             AccelerationAnalogue => ("m/rad²", "m/(rad^2·mm)", "м/(рад^2·мм)"),
+            Pressure => ("Pa", "MPa/mm", "МПа/мм"),
         };
         Units { si, en, cyrillic }
     }
@@ -144,6 +148,14 @@ impl Quantity {
     /// values in diagnostics.
     pub fn si_unit(self) -> &'static str {
         self.units().si
+    }
+    /// The SI units its μ's caption unit holds: a pressure's μ is written in MPa/mm, as the
+    /// textbooks write an indicator diagram's; every other in SI units per mm.
+    fn caption_multiple(self) -> f64 {
+        match self {
+            Quantity::Pressure => 1e6,
+            _ => 1.0,
+        }
     }
     /// The customary index of μ (`l`, `v`, `a`, `φ`, …).
     pub fn symbol(self) -> &'static str {
@@ -164,6 +176,7 @@ impl Quantity {
             UnbalanceMoment => "mρz",
             VelocityAnalogue => "S′",
             AccelerationAnalogue => "S″",
+            Pressure => "p",
         }
     }
 }
@@ -266,7 +279,7 @@ impl Scale {
         format!(
             "μ_{{{}}} = {} {}",
             self.quantity.symbol(),
-            format_number(self.value, lang),
+            format_number(self.value / self.quantity.caption_multiple(), lang),
             self.quantity.unit(lang)
         )
     }

@@ -80,6 +80,48 @@ pub(crate) fn spans(m: &Mechanism) -> Vec<(Span, String, String, f64)> {
     out
 }
 
+/// The frame's guides given through a fixed point with no offset: the joint that slides on
+/// each and the fixed points the guide's line passes through, in the scene's order (the
+/// six-bar's E on x–x through O and D). The data states them: the lengths give the points,
+/// and a guide through them is not seen from the lengths alone (an offset one is, by its
+/// height).
+pub(crate) fn guides_through(m: &Mechanism) -> Vec<(&str, Vec<&str>)> {
+    use crate::linkage::Dir;
+    // A fixed point on the line: within this fraction of the frame's span of it.
+    const ON_LINE: f64 = 1e-9;
+    let span = m
+        .fixed
+        .iter()
+        .map(|p| p.at.length())
+        .fold(m.crank.length, f64::max);
+    let mut out = Vec::new();
+    for g in &m.groups {
+        let Some(joint) = g.dyad.joint() else {
+            continue;
+        };
+        for guide in g.dyad.guides().into_iter().flatten() {
+            let Dir::Fixed(angle) = guide.dir else {
+                continue;
+            };
+            let Some(origin) = m.fixed.iter().find(|p| p.name == guide.through) else {
+                continue;
+            };
+            if guide.offset != 0.0 {
+                continue;
+            }
+            let u = crate::geom::DVec2::from_angle(angle);
+            let on: Vec<&str> = m
+                .fixed
+                .iter()
+                .filter(|p| u.perp_dot(p.at - origin.at).abs() <= ON_LINE * span)
+                .map(|p| p.name.as_str())
+                .collect();
+            out.push((joint, on));
+        }
+    }
+    out
+}
+
 /// Symbol (label markup), value and unit of the mechanism's data.
 pub fn mechanism(m: &Mechanism, lang: Lang) -> Vec<DataRow> {
     let mut rows: Vec<DataRow> = spans(m)

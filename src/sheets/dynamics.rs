@@ -81,6 +81,8 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             ),
             keyed(Key::DynamicsScaleT, g.scale_tw),
         ),
+    ];
+    blocks.extend([
         Block::view(
             g.merkin_figure.clone(),
             cap("T_{I} = ΔT − ω_{ср}^2 J_{пр}/2", &[(g.scale_t1, true)]),
@@ -94,7 +96,11 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             ),
             None,
         ),
-    ];
+    ]);
+    // An engine's indicator diagrams, whose gas forces give M_д.
+    if session.scene().forces.is_some() {
+        blocks.extend(super::indicator::views(session, lang)?);
+    }
     let mut lines = data_lines(&d, lang);
     lines.push(String::new());
     lines.push(super::drafting_line(

@@ -15,7 +15,7 @@ use crate::linkage::Structure;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
 use crate::study::Session;
-use crate::words::{symbols, unit_in, Text};
+use crate::words::{plain, symbols, unit_in, Text};
 
 /// Height of the sheet's text and table, mm.
 const TEXT_MM: f64 = 3.5;
@@ -25,17 +25,27 @@ const TABLE_MM: f64 = 3.0;
 /// Build the sheets: one per analysed position, named `forces`, `forces-2`, … in the order
 /// of `[forces] positions` (a position whose views need more room continues on the next
 /// name).
-pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError> {
+pub fn build(
+    session: &Session<'_>,
+    lang: Lang,
+    indicators: bool,
+) -> Result<Vec<Plate>, BuildError> {
     let sc = session.kin_scales()?;
     let m = session.mechanism("the force analysis")?;
     let st = Structure::analyse(m);
     let plan = session.positions(sc.l)?;
     let mut plates = Vec::new();
-    for k in session.force_positions()? {
+    for (n, k) in session.force_positions()?.into_iter().enumerate() {
         let f = session.forces(&sc, k)?;
         let pos = &plan.positions[k];
         let phi = pos.phi.to_degrees().rem_euclid(360.0);
-        plates.extend(position_sheet(session, &st, &f, phi, lang)?);
+        plates.extend(position_sheet(
+            session,
+            &st,
+            (&f, indicators && n == 0),
+            phi,
+            lang,
+        )?);
     }
     for (n, p) in plates.iter_mut().enumerate() {
         p.name = sheet_name("forces", n);
@@ -111,11 +121,12 @@ fn polygon_views(
     blocks.extend(views);
 }
 
-/// The sheet (or sheets) of one position.
+/// The sheet (or sheets) of one position; the first carries an engine's indicator diagrams
+/// when `first` (no dynamics sheet does).
 fn position_sheet(
     session: &Session<'_>,
     st: &Structure,
-    f: &PositionForces,
+    (f, first): (&PositionForces, bool),
     phi: f64,
     lang: Lang,
 ) -> Result<Vec<Plate>, BuildError> {
@@ -143,6 +154,9 @@ fn position_sheet(
             &mut lettered,
             lang,
         );
+    }
+    if first {
+        blocks.extend(super::indicator::views(session, lang)?);
     }
     let d = &f.analysis.polygons.driver;
     let driving = format!("{} {}", Text::DrivingLink.get(lang), st.crank_link);
@@ -182,6 +196,7 @@ fn position_sheet(
     ];
     let spec = session.force_spec("the force sheets")?;
     lines.extend(balance_lines(&f.rows, spec.engine(), lang));
+    lines.extend(gas_lines(session, spec, f, phi, lang)?);
     blocks.push(Block::Text {
         lines,
         size_mm: TEXT_MM,
@@ -261,6 +276,54 @@ fn loads_table(rows: &[Row], lang: Lang) -> TableBlock {
         rows,
         lang,
     )
+}
+
+/// An engine's gas forces at this position, one line a cylinder: the cycle angle θ from the
+/// crank's φ₁ and the cylinder's φ₀, the pressure the indicator diagram gives at θ and the
+/// force p·πd²/4 on the piston (named as its arrow is).
+fn gas_lines(
+    session: &Session<'_>,
+    spec: &ForceSpec,
+    f: &PositionForces,
+    phi: f64,
+    lang: Lang,
+) -> Result<Vec<String>, BuildError> {
+    if spec.indicators.is_empty() {
+        return Ok(Vec::new());
+    }
+    let poses = session.poses()?;
+    let (mpa, newton) = (unit_in("MPa", lang), unit_in("N", lang));
+    let mut lines = Vec::new();
+    for c in &spec.indicators {
+        let Some(r) = c.reading(&poses.program, &f.drawn, phi.to_radians(), f.sense) else {
+            continue;
+        };
+        let piston = plain(&c.point);
+        // θ as the crank turns: from φ₀ in the sense of rotation, plus the whole turns
+        // that bring it into [0°, 360°).
+        let mut difference = if f.sense < 0.0 {
+            format!("φ_{{0 {piston}}} − φ_{{1}}")
+        } else {
+            format!("φ_{{1}} − φ_{{0 {piston}}}")
+        };
+        let raw = f.sense * (phi.to_radians() - c.offset);
+        let turns = ((r.theta - raw) / std::f64::consts::TAU).round();
+        if turns != 0.0 {
+            let sign = if turns > 0.0 { "+" } else { "−" };
+            let turn = format_fixed(360.0 * turns.abs(), 0, lang);
+            difference.push_str(&format!(" {sign} {turn}°"));
+        }
+        lines.push(format!(
+            "θ_{{{piston}}} = {difference} = {}°, p_{{{piston}}} = {} {mpa} ({}), \
+             {} = p_{{{piston}}}·πd_{{{piston}}}^2/4 = {} {newton}",
+            degrees(r.theta.to_degrees(), lang),
+            format_sig(r.pressure * 1e-6, 3, lang),
+            Text::ByIndicator.get(lang),
+            r.name(),
+            value(r.force, lang),
+        ));
+    }
+    Ok(lines)
 }
 
 /// The balancing load by the polygon against the lever (the seed's «погрешность»):

@@ -17,6 +17,7 @@ pub(crate) mod friction;
 mod gears;
 #[cfg(test)]
 mod gears_tables_tests;
+mod indicator;
 mod layout;
 mod train_lines;
 mod train_view;
@@ -200,7 +201,8 @@ pub fn build(session: &Session<'_>, kind: PlateKind, lang: Lang) -> Result<Vec<P
         PlateKind::Positions => positions::build(session, lang),
         // With the plan of positions wanted too, the kinematic sheet holds its structure.
         PlateKind::Kinematics => kinematics::build(session, lang, wants(PlateKind::Positions)),
-        PlateKind::Forces => forces::build(session, lang),
+        // An engine's indicator diagrams go on the dynamics sheet when there is one.
+        PlateKind::Forces => forces::build(session, lang, !wants(PlateKind::Dynamics)),
         PlateKind::Balancing => balancing::build(session, lang),
         PlateKind::Friction => friction::build(session, lang),
         PlateKind::Dynamics => dynamics::build(session, lang),

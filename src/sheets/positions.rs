@@ -69,7 +69,7 @@ pub(super) fn structure(
     session: &Session<'_>,
     lang: Lang,
 ) -> Result<(Block, Vec<String>), BuildError> {
-    let m = session.mechanism("the plan of positions")?;
+    let m = session.mechanism("the position diagram")?;
     let scale = session.scale_l()?;
     let plan = session.positions(scale)?;
     let st = Structure::analyse(m);
@@ -133,7 +133,7 @@ const DATA_LINE_CHARS: usize = 64;
 
 /// The task's data as the sheet prints it (label markup): «Исходные данные», the lengths on
 /// as few lines as [`DATA_LINE_CHARS`] allows, ω₁ and the crank's sense of rotation (drawn by
-/// the arc arrow at its pivot on the scheme).
+/// the arc arrow at its pivot on the scheme), and the frame's guides through fixed points.
 fn data_lines(m: &crate::linkage::Mechanism, lang: Lang) -> Vec<String> {
     // The mechanism's data rows: its lengths, then ω₁.
     let rows = super::data::mechanism(m, lang);
@@ -155,6 +155,17 @@ fn data_lines(m: &crate::linkage::Mechanism, lang: Lang) -> Vec<String> {
         Sense::Clockwise => Text::CrankClockwise,
     };
     v.extend(omega.map(|o| format!("{o}, {}", sense.get(lang))));
+    let and = format!(" {} ", Text::And.get(lang));
+    v.extend(
+        super::data::guides_through(m)
+            .into_iter()
+            .map(|(joint, on)| {
+                Text::GuideThrough
+                    .get(lang)
+                    .replace("{j}", joint)
+                    .replace("{list}", &on.join(&and))
+            }),
+    );
     v
 }
 

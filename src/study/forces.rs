@@ -247,6 +247,55 @@ impl<'s> Session<'s> {
     }
 }
 
+impl Session<'_> {
+    /// An engine's indicator diagrams, one for each distinct pressure table, with the
+    /// ordinate of every cylinder it serves at every position the force sheets analyse
+    /// (labelled by the piston and the position, `B3`): the pistons each serves and its
+    /// figure and its μ_θ. None without `[[forces.indicator]]`.
+    ///
+    /// # Errors
+    /// The mechanism's or the force analysis's refusal.
+    pub fn indicator_figures(&self) -> Result<Vec<(Vec<String>, Figure, Scale)>, StudyError> {
+        let spec = self.force_spec("the indicator diagrams")?;
+        if spec.indicators.is_empty() {
+            return Ok(Vec::new());
+        }
+        let sense = self.mechanism("the indicator diagrams")?.crank.sense.sign();
+        let poses = self.poses()?;
+        let at: Vec<&crate::linkage::PosePosition> = self
+            .force_positions()?
+            .into_iter()
+            .filter_map(|k| poses.positions.get(k))
+            .collect();
+        let ctx = self.ctx()?;
+        let mut out: Vec<(Vec<String>, Figure, Scale)> = Vec::new();
+        let mut served: Vec<bool> = vec![false; spec.indicators.len()];
+        for (i, first) in spec.indicators.iter().enumerate() {
+            if served[i] {
+                continue;
+            }
+            let mut pistons = Vec::new();
+            let mut readings: Vec<crate::forces::Reading> = Vec::new();
+            for (j, c) in spec.indicators.iter().enumerate().skip(i) {
+                if c.pressure != first.pressure {
+                    continue;
+                }
+                served[j] = true;
+                pistons.push(c.point.clone());
+                let letter = crate::words::plain(&c.point);
+                readings.extend(
+                    at.iter()
+                        .map(|p| (format!("{letter}{}", p.label), c.cycle_angle(p.phi, sense))),
+                );
+            }
+            if let Some((f, mu_theta)) = crate::forces::indicator_figure(first, &readings, &ctx) {
+                out.push((pistons, f, mu_theta));
+            }
+        }
+        Ok(out)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -208,7 +208,7 @@ impl<'s> Session<'s> {
     /// The positions solved analytically (nothing constructed): what sheets size by.
     pub fn poses(&self) -> Cached<PlanPoses> {
         self.caches.get::<Poses>((), || {
-            let m = self.mechanism("the plan of positions")?;
+            let m = self.mechanism("the position diagram")?;
             Ok(Arc::new(plan_poses(m, &self.plan_request())?))
         })
     }
@@ -216,7 +216,7 @@ impl<'s> Session<'s> {
     /// The plan of positions constructed at μ_l = `scale_l`.
     pub fn positions(&self, scale_l: Scale) -> Cached<PositionPlan> {
         self.caches.get::<Positions>(scale_l, || {
-            let m = self.mechanism("the plan of positions")?;
+            let m = self.mechanism("the position diagram")?;
             let plan = plan_positions(m, &self.plan_request(), scale_l, self.drafting)?;
             for p in &plan.positions {
                 self.logged("position", &p.label, scale_l);

@@ -218,7 +218,7 @@ impl<'s> Session<'s> {
             if let Some(s) = self.scene.scale_l {
                 return Ok(s);
             }
-            let m = self.mechanism("the plan of positions")?;
+            let m = self.mechanism("the position diagram")?;
             let start = kinematics::round_scale(m.crank.length, CRANK_MM, Quantity::Length)?;
             let plan = positions_extent(&*self.poses()?);
             Ok(raised_to_fit(start, POSITIONS_ROOM, |mu| {

@@ -24,7 +24,7 @@ catalogue! {
         AccelerationScale => ("масштаб плана ускорений", "масштаб плану прискорень", "the acceleration plan's scale"),
         VelocitySegment => ("отрезок плана скоростей, изображающий скорость точки", "відрізок плану швидкостей, що зображує швидкість точки", "the velocity plan's segment of the velocity of point"),
         AccelerationSegment => ("отрезок плана ускорений, изображающий ускорение точки", "відрізок плану прискорень, що зображує прискорення точки", "the acceleration plan's segment of the acceleration of point"),
-        DrawnSegment => ("отрезок звена на плане положений", "відрізок ланки на плані положень", "the link's segment on the plan of positions"),
+        DrawnSegment => ("отрезок звена на плане положений", "відрізок ланки на плані положень", "the link's segment on the position diagram"),
         AngularVelocity => ("угловая скорость звена", "кутова швидкість ланки", "the angular velocity of link"),
         AngularAcceleration => ("угловое ускорение звена", "кутове прискорення ланки", "the angular acceleration of link"),
         LengthAt => ("расстояние в данном положении от точки", "відстань у даному положенні від точки", "the distance at this position from point"),

@@ -6,6 +6,9 @@ use super::catalogue;
 catalogue! {
     /// The meaning of a symbol of the kinetostatics and dynamics formulas.
     MachinesMeaning {
+        GasForce => ("сила давления газов на поршень {k}", "сила тиску газів на поршень {k}", "the gas force on piston {k}"),
+        GasPressure => ("давление газов в цилиндре {p} по индикаторной диаграмме при θ = {theta}", "тиск газів у циліндрі {p} за індикаторною діаграмою при θ = {theta}", "the gas pressure in cylinder {p} by the indicator diagram at θ = {theta}"),
+        Bore => ("диаметр цилиндра {p}", "діаметр циліндра {p}", "the bore of cylinder {p}"),
         InertiaForce => ("сила инерции звена {k}", "сила інерції ланки {k}", "the inertia force of link {k}"),
         Mass => ("масса звена {k}", "маса ланки {k}", "the mass of link {k}"),
         CentreAcceleration => ("ускорение центра масс звена {k} (из плана ускорений)", "прискорення центра мас ланки {k} (з плану прискорень)", "the acceleration of the centre of mass of link {k} (off the acceleration plan)"),

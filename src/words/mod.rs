@@ -97,7 +97,7 @@ use catalogue;
 
 /// The units' names in Latin and in Cyrillic letters (Russian and Ukrainian write them
 /// alike): the sheets write the second, `tmm audit` reads either.
-pub(crate) const UNIT_WORDS: [(&str, &str); 15] = [
+pub(crate) const UNIT_WORDS: [(&str, &str); 16] = [
     ("mm", "мм"),
     ("cm", "см"),
     ("m", "м"),
@@ -113,6 +113,7 @@ pub(crate) const UNIT_WORDS: [(&str, &str); 15] = [
     ("W", "Вт"),
     ("kW", "кВт"),
     ("MPa", "МПа"),
+    ("Pa", "Па"),
 ];
 
 /// The unit a row of `symbol` is shown in on a sheet and in the note's tables, with the

@@ -74,7 +74,7 @@ catalogue! {
         PositionsConstruction => (
             "План положений строим методом засечек: окружность кривошипа делим на равные части от начала рабочего хода, для каждого положения кривошипа точки групп находим пересечением дуг, описанных циркулем радиусами звеньев, или дуги с направляющей. Крайние положения выходного звена находим построением.",
             "План положень будуємо методом засічок: коло кривошипа ділимо на рівні частини від початку робочого ходу, для кожного положення кривошипа точки груп знаходимо перетином дуг, описаних циркулем радіусами ланок, або дуги з напрямною. Крайні положення вихідної ланки знаходимо побудовою.",
-            "The plan of positions by compass arcs: the crank's circle divided into equal parts from the start of the working stroke; for each crank position the groups' points where the arcs of the links' lengths meet each other or a guide. The output's extreme positions by construction."
+            "The position diagram by compass arcs: the crank's circle divided into equal parts from the start of the working stroke; for each crank position the groups' points where the arcs of the links' lengths meet each other or a guide. The output's extreme positions by construction."
         ),
         StrokeIs => ("Ход (размах) выходного звена между крайними положениями:", "Хід (розмах) вихідної ланки між крайніми положеннями:", "The stroke (swing) of the output between its extremes:"),
         AlongGuideOf => ("направляющей звена", "напрямній ланки", "the guide of link"),
@@ -116,7 +116,7 @@ catalogue! {
         ChordMethod => (
             "Диаграмму перемещений строим по плану положений; диаграммы аналогов скорости и ускорения получаем графическим дифференцированием методом хорд с полюсными расстояниями H₁ и H₂. Масштабы производных:",
             "Діаграму переміщень будуємо за планом положень; діаграми аналогів швидкості і прискорення отримуємо графічним диференціюванням методом хорд з полюсними відстанями H₁ і H₂. Масштаби похідних:",
-            "The displacement diagram from the plan of positions; the analogues of velocity and acceleration by graphical differentiation (the method of chords) with the pole distances H₁ and H₂. The scales of the derivatives:"
+            "The displacement diagram from the position diagram; the analogues of velocity and acceleration by graphical differentiation (the method of chords) with the pole distances H₁ and H₂. The scales of the derivatives:"
         ),
         AtPositions => ("В положении", "У положенні", "At position"),
         CornerOfS => (

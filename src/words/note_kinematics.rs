@@ -13,7 +13,7 @@ catalogue! {
             "Довжини ланок на кресленні знаходимо діленням дійсних довжин на масштаб довжин, наприклад:",
             "The links' lengths on the drawing are their true lengths divided by the length scale, e.g.:"
         ),
-        DrawnLengthsTable => ("Длины звеньев механизма и их отрезки на плане положений", "Довжини ланок механізму та їх відрізки на плані положень", "The links' lengths and their segments on the plan of positions"),
+        DrawnLengthsTable => ("Длины звеньев механизма и их отрезки на плане положений", "Довжини ланок механізму та їх відрізки на плані положень", "The links' lengths and their segments on the position diagram"),
         Dimension => ("размер", "розмір", "dimension"),
         Segment => ("отрезок", "відрізок", "segment"),
         LengthWord => ("длина", "довжина", "length"),
@@ -43,7 +43,7 @@ catalogue! {
         Similarity => (
             "Изображения остальных точек звеньев находим по теореме подобия: отрезки плана скоростей относятся как отрезки звена на плане положений (отрезки построения — до сотых долей миллиметра, при чтении скоростей отрезки округляются по точности чертежа):",
             "Зображення решти точок ланок знаходимо за теоремою подібності: відрізки плану швидкостей відносяться як відрізки ланки на плані положень (відрізки побудови — до сотих часток міліметра, при читанні швидкостей відрізки округлюються за точністю креслення):",
-            "The images of the link's further points follow from the similarity theorem: the plan's segments are in the ratio of the link's segments on the plan of positions (the construction's segments to a hundredth of a millimetre; the readings of the velocities are rounded to the drawing's precision):"
+            "The images of the link's further points follow from the similarity theorem: the plan's segments are in the ratio of the link's segments on the position diagram (the construction's segments to a hundredth of a millimetre; the readings of the velocities are rounded to the drawing's precision):"
         ),
         NormalWorked => (
             "Нормальные ускорения в относительном вращательном движении определяем по угловым скоростям звеньев, найденным из плана скоростей:",

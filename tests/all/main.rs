@@ -29,6 +29,7 @@ mod docs;
 mod dxf;
 mod dynamics;
 mod engine;
+mod engine_indicator;
 mod file_lengths;
 mod flywheel_sheet;
 mod force_cases;
