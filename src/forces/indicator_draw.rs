@@ -19,6 +19,8 @@ const PEAK_MM: f64 = 60.0;
 const GRADUATION_DEG: u32 = 90;
 /// How far under the θ axis its graduation is written, mm.
 const BELOW_MM: f64 = 1.5;
+/// Half a graduation's tick across the θ axis, mm.
+const TICK_MM: f64 = 1.0;
 
 /// An ordinate read off the diagram: its label (the piston's letter and the position's
 /// label, `B3`) and the cycle angle θ, radians.
@@ -69,6 +71,17 @@ pub fn indicator_figure(
             &[],
         );
         rec.label_item(id, label.clone(), top, DVec2::new(0.3, 1.0));
+    }
+    // The θ axis graduated: a tick across it at each graduation past the origin.
+    for k in (GRADUATION_DEG..=360).step_by(GRADUATION_DEG as usize) {
+        let x = mu_theta.to_mm(f64::from(k).to_radians());
+        let tick = Segment::new(DVec2::new(x, -TICK_MM), DVec2::new(x, TICK_MM));
+        rec.draw(
+            "the θ axis's tick",
+            Item::Segment(tick),
+            Role::Construction,
+            &[],
+        );
     }
     let mut figure = rec.finish();
     for k in (0..=360).step_by(GRADUATION_DEG as usize) {
