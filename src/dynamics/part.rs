@@ -106,13 +106,12 @@ impl Part<'_> {
     fn text(&self, name: &str) -> String {
         format_fixed(self.size.dim(name).unwrap_or(0.0) * 1e3, 0, Lang::En)
     }
-    /// The keyway as drawn: half its width and the radius of its bottom (d₁/2 + t₂), mm.
-    fn keyway(&self) -> Option<(f64, f64)> {
-        let k = self.key?;
-        Some((
+    /// The keyway `k` as drawn: half its width and the radius of its bottom (d₁/2 + t₂), mm.
+    fn drawn(&self, k: Keyway) -> (f64, f64) {
+        (
             self.mu.to_mm(k.b) / 2.0,
             self.half("d_{1}") + self.mu.to_mm(k.t2),
-        ))
+        )
     }
     /// Half the widths of the rim (the disc) and of the hub, mm.
     fn widths(&self) -> (f64, f64) {
@@ -127,8 +126,7 @@ fn section(rec: &mut Recorder, p: &Part<'_>) {
     let (outer, bore) = (p.half("D"), p.half("d_{1}"));
     // The section runs through the keyway: above the axis the hub's material starts at the
     // keyway's bottom, and the bore's edge beyond shows across the hub.
-    let upper = p.keyway().map_or(bore, |k| k.1);
-    if p.keyway().is_some() {
+    let upper = p.key.map_or(bore, |k| {
         let edge = Segment::new(DVec2::new(-hub_w, bore), DVec2::new(hub_w, bore));
         rec.draw(
             "the bore beyond the keyway",
@@ -136,7 +134,8 @@ fn section(rec: &mut Recorder, p: &Part<'_>) {
             Role::Given,
             &[],
         );
-    }
+        p.drawn(k).1
+    });
     if p.rim() {
         let (inner, hub) = (p.half("d_{3}"), p.half("d_{2}"));
         cut(rec, "rim", rim, [(inner, outer); 2]);
@@ -220,8 +219,8 @@ fn front(rec: &mut Recorder, p: &Part<'_>, c: DVec2) {
         radius: outer,
     };
     rec.draw("rim", Item::Circle(circle), Role::Given, &[]);
-    match p.keyway() {
-        Some(key) => keyway(rec, p, c, key),
+    match p.key {
+        Some(k) => keyway(rec, p, c, k),
         None => {
             let circle = Circle {
                 center: c,
@@ -278,12 +277,11 @@ fn front(rec: &mut Recorder, p: &Part<'_>, c: DVec2) {
     }
 }
 
-/// The bore of the front view centred at `c` with the keyway `(half width, bottom radius)`
-/// cut up from it, and the keyway's two dimensions: its width with the hub's tolerance
+/// The bore of the front view centred at `c` with the keyway `k` cut up from it, and the keyway's two dimensions: its width with the hub's tolerance
 /// (JS9, the normal connection) over it, and d₁ + t₂ from the bore's far side to its bottom
 /// with the upper deviation, at the left.
-fn keyway(rec: &mut Recorder, p: &Part<'_>, c: DVec2, (w, top): (f64, f64)) {
-    let bore = p.half("d_{1}");
+fn keyway(rec: &mut Recorder, p: &Part<'_>, c: DVec2, k: Keyway) {
+    let (bore, (w, top)) = (p.half("d_{1}"), p.drawn(k));
     let half = (w / bore).clamp(-1.0, 1.0).asin();
     let arc = Arc {
         center: c,
@@ -303,9 +301,6 @@ fn keyway(rec: &mut Recorder, p: &Part<'_>, c: DVec2, (w, top): (f64, f64)) {
         let s = Segment::new(c + side[0], c + side[1]);
         rec.draw("keyway", Item::Segment(s), Role::Given, &[]);
     }
-    let Some(k) = p.key else {
-        return;
-    };
     // Tenths with a decimal point: the sheet writes its language's sign.
     let mm = |x: f64| format_fixed(x * 1e3, 1, Lang::En);
     rec.dimension(

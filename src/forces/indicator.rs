@@ -24,6 +24,8 @@ pub struct GasReading {
     pub slider: usize,
     /// The cycle angle θ, radians.
     pub theta: f64,
+    /// The whole turns added to σ·(φ₁ − φ₀) to bring θ into [0, 2π) (−1, 0, 1 …).
+    pub turns: f64,
     /// The pressure at θ, Pa.
     pub pressure: f64,
     /// The gas force on the piston, N.
@@ -56,9 +58,11 @@ impl Indicator {
         let (_, slider) = prog.index(&self.point).and_then(|k| prog.piston(k, at))?;
         let theta = self.cycle_angle(phi, sense);
         let pressure = self.pressure_at(theta);
+        let raw = sense * (phi - self.offset);
         Some(GasReading {
             slider,
             theta,
+            turns: ((theta - raw) / TAU).round(),
             pressure,
             force: pressure * self.area(),
         })

@@ -17,7 +17,7 @@ use crate::forces::{ForceSpec, LoadKind, PositionForces, Unknown};
 use crate::geom::DVec2;
 use crate::scale::{format_sig, Lang};
 use crate::scene::PlateKind;
-use crate::words::{quantity, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+use crate::words::{plain, quantity, MachinesMeaning as M, MachinesNote as N, NoteText as T};
 
 /// The kinetostatics: every analysed position in turn.
 pub(super) fn kinetostatics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
@@ -146,7 +146,7 @@ fn gas(
         let Some(r) = c.reading(&poses.program, &f.drawn, phi, f.sense) else {
             continue;
         };
-        let piston = c.point.replace(['_', '{', '}'], "");
+        let piston = plain(&c.point);
         let fd = r.name();
         let (ps, ds) = (format!("p_{{{piston}}}"), format!("d_{{{piston}}}"));
         w.worked(Worked::new(

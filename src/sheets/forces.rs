@@ -306,11 +306,9 @@ fn gas_lines(
         } else {
             format!("φ_{{1}} − φ_{{0 {piston}}}")
         };
-        let raw = f.sense * (phi.to_radians() - c.offset);
-        let turns = ((r.theta - raw) / std::f64::consts::TAU).round();
-        if turns != 0.0 {
-            let sign = if turns > 0.0 { "+" } else { "−" };
-            let turn = format_fixed(360.0 * turns.abs(), 0, lang);
+        if r.turns != 0.0 {
+            let sign = if r.turns > 0.0 { "+" } else { "−" };
+            let turn = format_fixed(360.0 * r.turns.abs(), 0, lang);
             difference.push_str(&format!(" {sign} {turn}°"));
         }
         lines.push(format!(

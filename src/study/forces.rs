@@ -267,31 +267,33 @@ impl Session<'_> {
             .into_iter()
             .filter_map(|k| poses.positions.get(k))
             .collect();
-        let ctx = self.ctx()?;
-        let mut out: Vec<(Vec<String>, Figure, Scale)> = Vec::new();
-        let mut served: Vec<bool> = vec![false; spec.indicators.len()];
-        for (i, first) in spec.indicators.iter().enumerate() {
-            if served[i] {
-                continue;
-            }
-            let mut pistons = Vec::new();
-            let mut readings: Vec<crate::forces::Reading> = Vec::new();
-            for (j, c) in spec.indicators.iter().enumerate().skip(i) {
-                if c.pressure != first.pressure {
-                    continue;
+        // The cylinders by their table: one diagram serves all that share it.
+        let mut tables: Vec<(
+            &crate::forces::Indicator,
+            Vec<String>,
+            Vec<crate::forces::Reading>,
+        )> = Vec::new();
+        for c in &spec.indicators {
+            let letter = crate::words::plain(&c.point);
+            let readings = at
+                .iter()
+                .map(|p| (format!("{letter}{}", p.label), c.cycle_angle(p.phi, sense)));
+            match tables.iter_mut().find(|t| t.0.pressure == c.pressure) {
+                Some(t) => {
+                    t.1.push(c.point.clone());
+                    t.2.extend(readings);
                 }
-                served[j] = true;
-                pistons.push(c.point.clone());
-                let letter = crate::words::plain(&c.point);
-                readings.extend(
-                    at.iter()
-                        .map(|p| (format!("{letter}{}", p.label), c.cycle_angle(p.phi, sense))),
-                );
-            }
-            if let Some((f, mu_theta)) = crate::forces::indicator_figure(first, &readings, &ctx) {
-                out.push((pistons, f, mu_theta));
+                None => tables.push((c, vec![c.point.clone()], readings.collect())),
             }
         }
+        let ctx = self.ctx()?;
+        let out = tables
+            .into_iter()
+            .filter_map(|(c, pistons, readings)| {
+                let (f, mu_theta) = crate::forces::indicator_figure(c, &readings, &ctx)?;
+                Some((pistons, f, mu_theta))
+            })
+            .collect();
         Ok(out)
     }
 }
