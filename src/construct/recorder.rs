@@ -34,6 +34,16 @@ impl Recorder {
         }
     }
 
+    /// Go on recording into a finished `figure` in the context `ctx`: its annotations that
+    /// wait for names known only later (the positions' numbers on a diagram's axis).
+    pub fn resume(figure: Figure, ctx: &Context) -> Self {
+        Self {
+            figure,
+            ctx: *ctx,
+            group: 0,
+        }
+    }
+
     /// The figure's scale.
     pub fn scale(&self) -> Scale {
         self.figure.scale

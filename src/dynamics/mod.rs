@@ -14,6 +14,7 @@
 //!   construction gives (Wittenbauer's tangents), as a hand-in sizes it; the twin sizes its
 //!   own from the exact inertia;
 //! - `part`: the flywheel as a part drawing, every dimension from its size;
+//! - `phi_numbers`: the tabled positions' numbers on the diagrams' φ axes;
 //! - rows `M_red`, `J_red`, `dT` per position; `A_res`, `M_drive`, `J_flywheel`, `delta`,
 //!   and the flywheel's `h_flywheel` (D) and `m_flywheel` of the whole scene.
 
@@ -23,6 +24,7 @@ mod engine_tests;
 mod flywheel;
 mod keyway;
 mod part;
+mod phi_numbers;
 mod reduce;
 mod roughness;
 mod rows;
@@ -200,6 +202,27 @@ impl Dynamics {
             };
         }
         self.step = step;
+    }
+
+    /// Number the φ axes of M_с and A, ΔT, J_пр, T_I and ω at the positions the tables give
+    /// ([`Self::tabled`]), once their names are known.
+    pub fn number_axes(&mut self, ctx: &Context) {
+        let n = self.labels.len().max(1) as f64;
+        let run = self.diagrams.scale_phi.to_mm(TAU / n);
+        let marks: Vec<(f64, String)> = self
+            .tabled()
+            .map(|(i, label)| (run * i as f64, label.clone()))
+            .collect();
+        let d = &mut self.diagrams;
+        for f in [
+            &mut d.work,
+            &mut d.energy,
+            &mut d.inertia,
+            &mut d.merkin_figure,
+            &mut self.omega,
+        ] {
+            *f = phi_numbers::number(f.clone(), ctx, &marks);
+        }
     }
 }
 

@@ -1,8 +1,9 @@
 //! The roughness of a machined surface on a part drawing (ГОСТ 2.309-73 as amended in 2003):
 //! the sign of a surface machined by removing material — two legs at 60° to the horizontal,
-//! the short one as high as the dimension numbers (h), the long one twice that, and a
-//! shelf from the long one's top with the value written over it — standing on the shelf of
-//! a leader whose arrow touches the surface.
+//! the short one as high as the dimension numbers (h), the long one twice that, a line
+//! across them at the short one's top (the removal of material), and a shelf from the long
+//! one's top with the value written over it — standing on the shelf of a leader whose arrow
+//! touches the surface.
 
 use crate::construct::{Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
@@ -46,7 +47,13 @@ pub fn on_leader(rec: &mut Recorder, surface: DVec2, bend: DVec2, leftward: bool
     let short = foot + DVec2::new(-H_MM * tan30, H_MM);
     let long = foot + DVec2::new(LONG * H_MM * tan30, LONG * H_MM);
     let shelf_end = long + DVec2::X * SIGN_SHELF_MM;
-    for (a, b) in [(foot, short), (foot, long), (long, shelf_end)] {
+    let across = foot + DVec2::new(H_MM * tan30, H_MM);
+    for (a, b) in [
+        (foot, short),
+        (foot, long),
+        (short, across),
+        (long, shelf_end),
+    ] {
         rec.draw(
             note.clone(),
             Item::Segment(Segment::new(a, b)),

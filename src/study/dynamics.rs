@@ -65,6 +65,7 @@ impl<'s> Session<'s> {
                     .collect();
                 d.table_every(step as usize, &names);
             }
+            d.number_axes(&ctx);
             self.logged("dynamics diagrams", "", d.diagrams.scale_a);
             Ok(Arc::new(d))
         })

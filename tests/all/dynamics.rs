@@ -409,3 +409,61 @@ fn merkin_horizontals_are_named_at_their_ends() {
         }
     }
 }
+
+/// A diagram's value at a node, by the node's index.
+type Value<'a> = dyn Fn(usize) -> f64 + 'a;
+
+/// The numbers on a figure's φ axes: (text, where it is written), figure mm.
+fn phi_numbers(fig: &tmm::construct::Figure) -> Vec<(String, glam::DVec2)> {
+    (fig.steps.iter())
+        .filter(|s| s.note.starts_with("position ") && s.note.ends_with(" on the φ axis"))
+        .filter_map(|s| match (&s.item, &s.label) {
+            (tmm::construct::Item::Text(at), Some(l)) => Some((l.text.clone(), *at)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Issue 45: the dynamic study's diagrams number their φ axes at the positions the tables
+/// give, as the plan of positions does — A (the integrand M_с's axis carries the pole and
+/// its projections, and is not numbered), ΔT, J_пр, T_I and ω — each number at its node's
+/// abscissa at μ_φ, under the axis where the study's reading there is positive, over it
+/// where negative (ΔT and T_I from the study's own values). Before, every φ axis was bare.
+#[test]
+fn the_dynamics_diagrams_number_their_positions() {
+    use std::f64::consts::TAU;
+    for name in ["shaper", "v-engine"] {
+        let d = dynamics(name);
+        let n = d.labels.len() as f64;
+        let tabled: Vec<(usize, String)> = d.tabled().map(|(i, l)| (i, l.clone())).collect();
+        assert_eq!(tabled.len(), 12, "{name}");
+        let dg = &d.diagrams;
+        let w2 = d.w_avg * d.w_avg;
+        let t1 = |i: usize| dg.delta_t[i] - w2 * dg.j[i] / 2.0;
+        let figures: [(&str, &tmm::construct::Figure, Option<&Value>); 5] = [
+            ("A", &dg.work, None),
+            ("ΔT", &dg.energy, Some(&|i| dg.delta_t[i])),
+            ("J", &dg.inertia, Some(&|i| dg.j[i])),
+            ("T_I", &dg.merkin_figure, Some(&t1)),
+            ("ω", &d.omega, None),
+        ];
+        for (what, fig, value) in figures {
+            let numbers = phi_numbers(fig);
+            let texts: Vec<&str> = numbers.iter().map(|(t, _)| t.as_str()).collect();
+            let want: Vec<&str> = tabled.iter().map(|(_, l)| l.as_str()).collect();
+            assert_eq!(
+                texts, want,
+                "{name} {what}: one number a position, one axis"
+            );
+            for ((i, label), (_, at)) in tabled.iter().zip(&numbers) {
+                let x = dg.scale_phi.to_mm(TAU * *i as f64 / n);
+                assert!((at.x - x).abs() < 1e-9, "{name} {what} {label}: x {}", at.x);
+                if let Some(v) = value {
+                    // The plotted diagrams' axis is y = 0.
+                    let under = at.y < 0.0;
+                    assert_eq!(under, v(*i) >= -1e-12, "{name} {what} {label}: {}", v(*i));
+                }
+            }
+        }
+    }
+}
