@@ -11,7 +11,8 @@ use super::BuildError;
 use crate::construct::Figure;
 use crate::dynamics::{Dynamics, FlywheelKind};
 use crate::geom::DVec2;
-use crate::plate::{Plate, SheetSize, TableBlock};
+use crate::geom::Rect;
+use crate::plate::{layout, Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang};
 use crate::study::Session;
 use crate::words::{unit_in, DynamicsText};
@@ -51,16 +52,17 @@ fn sheet(
     session: &Session<'_>,
     lang: Lang,
 ) -> Result<Vec<Plate>, BuildError> {
+    let demands = requirements(lang);
     let blocks = vec![
         Block::Views {
             parts: vec![Part::new(in_lang(wheel, lang), DVec2::ZERO, None)],
             scale: None,
         },
-        // The table beside the drawing, the technical requirements under it (above the title
-        // block), the data under the drawing.
+        // The table beside the drawing, the technical requirements under it (then moved over
+        // the title block), the data under the drawing.
         Block::Table(dimensions_table(d, lang)),
         Block::Text {
-            lines: requirements(lang),
+            lines: demands.clone(),
             size_mm: TEXT_MM,
         },
         Block::Text {
@@ -79,7 +81,45 @@ fn sheet(
         DynamicsText::SteelGrade
     };
     title.material = grade.get(lang).to_string();
-    lay_out_smallest(&[size], blocks, "flywheel", &title, lang)
+    let mut plates = lay_out_smallest(&[size], blocks, "flywheel", &title, lang)?;
+    for p in &mut plates {
+        over_title_block(p, &demands);
+    }
+    Ok(plates)
+}
+
+/// The gap between the technical requirements and the title block under them, mm.
+const OVER_TITLE_MM: f64 = 5.0;
+/// The technical requirements stand at least this clear of every other item there, mm.
+const CLEAR_MM: f64 = 2.0;
+
+/// The technical requirements (the text block of `lines`) moved over the title block, its
+/// left edge on the block's, as ГОСТ 2.316 places them — where the place is free of every
+/// other item of the sheet; else they stay where the packer put them.
+fn over_title_block(plate: &mut Plate, lines: &[String]) {
+    let Some(k) = plate.texts.iter().position(|t| t.lines == lines) else {
+        return;
+    };
+    let l = layout(plate);
+    let (was, tb) = (l.texts[k], l.title_block);
+    let min = DVec2::new(tb.min.x, tb.min.y - OVER_TITLE_MM - was.height());
+    let there = Rect::new(min, min + was.size());
+    let others = (l.views.iter())
+        .flat_map(|v| v.drawn.into_iter().chain(v.caption))
+        .chain(l.labels.iter().map(|x| x.rect))
+        .chain(l.tables.iter().copied())
+        .chain(
+            l.texts
+                .iter()
+                .enumerate()
+                .filter(|(j, _)| *j != k)
+                .map(|(_, r)| *r),
+        );
+    let clear = there.inflate(CLEAR_MM);
+    let free = l.frame.contains(&there) && others.into_iter().all(|r| !r.intersects(&clear));
+    if free {
+        plate.texts[k].at += min - was.min;
+    }
 }
 
 /// `wheel` with its decimals (the keyway's depth, the roughness) written with the language's

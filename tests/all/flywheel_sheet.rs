@@ -369,3 +369,47 @@ fn the_part_sheet_names_its_mass_and_material_and_concludes_on_delta() {
         );
     }
 }
+
+/// ГОСТ 2.316: a part drawing's technical requirements stand over its title block, their
+/// left edge on the block's — on the shaper's and the V engine's flywheel, in ru, uk and
+/// en, read exactly and to 0,5 mm, with nothing else of the sheet in their place. Before,
+/// the packer left them under the dimensions' table at the top right.
+#[test]
+fn the_technical_requirements_stand_over_the_title_block() {
+    for name in ["shaper.toml", "v-engine.toml"] {
+        let s = load(name);
+        for drafting in [Drafting::EXACT, Drafting::HAND] {
+            let session = Session::new(&s, drafting);
+            for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+                let p = tmm::sheets::build(&session, PlateKind::Flywheel, lang)
+                    .unwrap_or_else(|e| panic!("{e}"))
+                    .remove(0);
+                // The numbered items (ГОСТ 2.316): the block that begins with «1. ».
+                let k = (p.texts.iter())
+                    .position(|t| t.lines.first().is_some_and(|l| l.starts_with("1. ")))
+                    .unwrap_or_else(|| panic!("{name} {lang:?}: no technical requirements"));
+                let l = tmm::plate::layout(&p);
+                let (r, tb) = (l.texts[k], l.title_block);
+                let at = format!("{name} {lang:?} {}", drafting.resolution_mm());
+                assert!((r.min.x - tb.min.x).abs() < 1e-9, "{at}: x {}", r.min.x);
+                let gap = tb.min.y - r.max.y;
+                assert!(
+                    (0.0..=10.0).contains(&gap),
+                    "{at}: {gap} mm over the title block"
+                );
+                let others = (l.views.iter())
+                    .flat_map(|v| v.drawn.into_iter().chain(v.caption))
+                    .chain(l.labels.iter().map(|x| x.rect))
+                    .chain(l.tables.iter().copied())
+                    .chain(
+                        (l.texts.iter().enumerate())
+                            .filter(|(j, _)| *j != k)
+                            .map(|(_, r)| *r),
+                    );
+                for o in others {
+                    assert!(!o.intersects(&r), "{at}: {o:?} in their place {r:?}");
+                }
+            }
+        }
+    }
+}
