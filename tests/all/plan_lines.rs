@@ -487,3 +487,39 @@ fn a_pivoted_links_points_are_drawn_on_arcs_about_the_pivot() {
         assert!(seen.contains_key(want), "{want} not among {seen:?}");
     }
 }
+
+/// Issue 45: the tangent mechanism's block slides on the crank; the image of the crank's
+/// point under it (b₁, b₁′), found by similarity, is the absolute velocity (acceleration)
+/// the relative one adds to, so every velocity and acceleration plan draws it as a vector
+/// from the pole to its labelled end — before, the similarity's line alone, with no
+/// arrowhead. Where it vanishes it is a dot, never an arrowhead at the pole.
+#[test]
+fn the_crank_point_under_the_block_is_a_vector_from_the_pole() {
+    let mut vectors = 0;
+    for p in sheets_of("tangent") {
+        for v in &p.views {
+            for s in &v.figure.steps {
+                if !(s.note == "image b_{1}" || s.note == "image b_{1}′") {
+                    continue;
+                }
+                assert!(
+                    s.label.is_some(),
+                    "{}: {} unlabelled",
+                    v.figure.title,
+                    s.note
+                );
+                match s.item {
+                    Item::Vector { from, to } => {
+                        assert_eq!(from, DVec2::ZERO, "{}", v.figure.title);
+                        assert!(to.length() > 0.1, "{}: {to:?}", v.figure.title);
+                        vectors += 1;
+                    }
+                    Item::Point(at) => assert!(at.length() < 0.1, "{}", v.figure.title),
+                    ref other => panic!("{}: {other:?}", v.figure.title),
+                }
+            }
+        }
+    }
+    // Twelve velocity plans and the acceleration plans of positions 5 and 11.
+    assert!(vectors >= 14, "{vectors} vectors b₁");
+}

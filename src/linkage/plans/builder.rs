@@ -389,18 +389,24 @@ impl Builder<'_> {
     }
 
     /// Mark and label the image `x` of the point of `link` under the point `point` (`b₁`)
-    /// where the similarity line that found it ends: a vertex of the plan, no vector of its
-    /// own and no reading (nothing is asked of it but the line it starts).
+    /// where the similarity line that found it ends: the absolute vector from the pole to it
+    /// (pb₁, the velocity the relative one adds to), thin as a leaf point's, and no reading
+    /// (nothing is asked of it but the line it starts); a dot where it vanishes.
     pub(in crate::linkage) fn mark_coincident(&mut self, point: usize, link: usize, x: DVec2) {
         let label = self.coincident_label(point, link);
-        self.rec.point(
-            format!("image {label}"),
-            x,
-            Role::Construction,
-            &label,
-            x.normalize_or(DVec2::Y),
-            &[],
-        );
+        let toward = x.normalize_or(DVec2::Y);
+        if x.length() <= self.rec.tolerances().coincident {
+            let note = format!("image {label}");
+            self.rec
+                .point(note, x, Role::Construction, &label, toward, &[]);
+            return;
+        }
+        let vector = Item::Vector {
+            from: DVec2::ZERO,
+            to: x,
+        };
+        let id = (self.rec).draw(format!("image {label}"), vector, Role::Construction, &[]);
+        self.rec.label(id, label, x, toward);
     }
 
     /// The Coriolis component 2ω·v_r of a point moving relative to `link`, v_r read on the
