@@ -277,9 +277,9 @@ fn rest_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
         };
         // The derivative's scale as the displacement diagram's μ_a is stated: ε is read off
         // dω/dφ's ordinates at μ_ε = |ω₁|·μ_ω/(H_ω·μ_φ).
+        let l = r.link;
         lines.push(format!(
-            "ω_{{{}}}(φ): {}{phi}, H_{{ω}} = {} {}; ε = |ω_{{1}}|·dω/dφ, μ_{{ε}} = |ω_{{1}}|·μ_{{ω}}/(H_{{ω}}·μ_{{φ}}) = {} {}",
-            r.link,
+            "ω_{{{l}}}(φ): {}{phi}, H_{{ω}} = {} {}; ε_{{{l}}} = |ω_{{1}}|·dω_{{{l}}}/dφ, μ_{{ε}} = |ω_{{1}}|·μ_{{ω}}/(H_{{ω}}·μ_{{φ}}) = {} {}",
             r.scale.caption(lang),
             format_sig(r.derivative.pole_mm, 3, lang),
             Text::Millimetre.get(lang),

@@ -4,6 +4,7 @@
 
 use crate::kinematics::{report_json, root, rows};
 use tmm::construct::Drafting;
+use tmm::scale::Lang;
 
 /// Seed 001's conclusion of W1 (l. 687–689), drawn from the six-bar's acceleration plan at
 /// position 1: links 3 and 4 accelerate, link 2 decelerates — in the report's notes (both
@@ -462,5 +463,30 @@ fn the_rocker_diagram_numbers_its_positions() {
                 );
             }
         });
+    }
+}
+
+/// The rocker's angular acceleration is read off its ω diagram's derivative: the sheet
+/// writes ε₃ = |ω₁|·dω₃/dφ with the link's number on both (issue 45: «ε = |ω₁|·dω/dφ» named
+/// neither the link nor the diagram it differentiates), in ru, uk and en.
+#[test]
+fn the_rocker_s_epsilon_names_its_link() {
+    for scene in ["four-bar", "shaper"] {
+        let s =
+            tmm::scene::load(&root().join(format!("constructions/{scene}.toml"))).expect("scene");
+        let session = tmm::study::Session::new(&s, Drafting::EXACT);
+        for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+            let kind = tmm::scene::PlateKind::parse("kinematics").expect("kind");
+            let lines: Vec<String> = tmm::build(&session, kind, lang)
+                .expect("sheets")
+                .iter()
+                .flat_map(|p| p.texts.iter().flat_map(|t| t.lines.clone()))
+                .collect();
+            let want = "ε_{3} = |ω_{1}|·dω_{3}/dφ";
+            assert!(
+                lines.iter().any(|l| l.contains(want)),
+                "{scene} {lang:?}: no «{want}» in {lines:?}"
+            );
+        }
     }
 }
