@@ -47,7 +47,7 @@ pub use rack::{
 };
 pub use rows::PairSeed;
 pub use train::{
-    train_study, ClosedMesh, Mesh, PlanetarySpec, SeedStage, Stage, Train, TrainError,
+    train_study, Assembly, ClosedMesh, Mesh, PlanetarySpec, SeedStage, Stage, Train, TrainError,
     TrainMobility, TrainSeed, TrainStudy, Wheel,
 };
 pub use triangles::{SlowLinks, POLE_DISTANCE};

@@ -1,7 +1,7 @@
 //! A train's lines on the gear sheet: its mobility with its module, a differential's output
 //! speed, each mesh closed at a module of its own, and the satellites' assembly condition.
 
-use crate::gears::{Train, TrainStudy};
+use crate::gears::{Assembly, Train, TrainStudy};
 use crate::scale::Lang;
 use crate::words::{unit_in, GearText};
 
@@ -23,17 +23,44 @@ pub(super) fn lines(t: &TrainStudy, pair: bool, lang: Lang) -> Vec<String> {
     out.extend(differential_line(t, lang));
     out.extend(closing_lines(t, pair, lang));
     if let Some((k, a)) = t.spec.satellites.and_then(|k| Some((k, tr_.assembly(k)?))) {
-        out.push(format!(
-            "k = {k}: {} {}",
-            GearText::Assembly.get(lang),
-            match (a.fits(), a.p) {
-                (true, Some(p)) => format!("p = {p}"),
-                (true, None) => GearText::Holds.get(lang).to_string(),
-                (false, _) => GearText::Fails.get(lang).to_string(),
-            },
-        ));
+        out.push(assembly_line(tr_, k, &a, lang));
     }
     out
+}
+
+/// The satellites' assembly condition as the textbook writes it, z_a·u_aH^(b)·(1 + k·p)/k
+/// whole, with the least p that makes it so and the whole number it gives: `k = 4: условие
+/// сборки z_{1}·u_{1H}^{(3)}·(1 + k·p)/k = 20, p = 0`; where no p does, whether identical
+/// blocks fit all the same, or not.
+fn assembly_line(t: &Train, k: u32, a: &Assembly, lang: Lang) -> String {
+    let shaft = |s: usize| t.shafts.get(s).map_or("", String::as_str);
+    let (h, b) = (t.carrier.map_or("H", shaft), t.fixed.map_or("", shaft));
+    let central = &t.wheels[a.central];
+    let condition = format!(
+        "z_{{{a}}}·u_{{{a}{h}}}^{{({b})}}·(1 + k·p)/k",
+        a = central.name
+    );
+    // The whole number (1 + kp)·z_a·u/k, written with the sheet's minus.
+    let whole = |p: i128| {
+        let n = a
+            .value
+            .0
+            .checked_mul(i128::from(k).checked_mul(p)?.checked_add(1)?)?;
+        (a.value.1 != 0).then(|| n / a.value.1)
+    };
+    let verdict = match (a.fits(), a.p) {
+        (true, Some(p)) => match whole(p) {
+            Some(n) if n < 0 => format!(" = −{}, p = {p}", n.unsigned_abs()),
+            Some(n) => format!(" = {n}, p = {p}"),
+            None => format!(", p = {p}"),
+        },
+        (true, None) => format!(": {}", GearText::Holds.get(lang)),
+        (false, _) => format!(": {}", GearText::Fails.get(lang)),
+    };
+    format!(
+        "k = {k}: {} {condition}{verdict}",
+        GearText::Assembly.get(lang)
+    )
 }
 
 /// A differential's output speed from its two given ones: `n_{3} = 1000 об/мин, n_{5} = 200

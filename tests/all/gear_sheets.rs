@@ -479,8 +479,9 @@ fn a_trains_ratio_stands_in_its_tables_only() {
             lines.iter().any(|l| l.starts_with("W = 3n")),
             "{name}: no mobility"
         );
+        // The assembly condition names u_{aH}^{(b)} in its formula, without its value.
         assert!(
-            !lines.iter().any(|l| l.contains("u_{")),
+            !(lines.iter()).any(|l| l.contains("u_{") && !l.contains("(1 + k·p)/k")),
             "{name}: a ratio in the text: {lines:?}"
         );
         let cells: Vec<&String> = plates
@@ -566,4 +567,23 @@ fn gear_lines_write_dy_to_thousandths_and_the_deviation_in_nanometres() {
         pz1.iter().any(|l| l.ends_with("не более чем на 7 нм")),
         "{pz1:?}"
     );
+}
+
+/// The satellites' assembly condition is written as the textbook works it (seed 000's
+/// reducer: z₃·u₃H⁽⁶⁾/k = 106·(1 − 48·76/(106·18))/k = −290/(3k), so at k = 2 the least p
+/// making (1 + 2p)·(−145/3) whole is 1, giving −145), not as a bare «p = 1» with p
+/// unexplained (issue 45), in ru, uk and en.
+#[test]
+fn the_assembly_condition_is_written_with_its_formula() {
+    let s = scene("shaper");
+    for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+        let lines = sheet_lines(&s, Drafting::HAND, lang);
+        let want = "z_{3}·u_{3H}^{(6)}·(1 + k·p)/k = −145, p = 1";
+        assert!(
+            lines
+                .iter()
+                .any(|l| l.starts_with("k = 2: ") && l.ends_with(want)),
+            "{lang:?}: {lines:?}"
+        );
+    }
 }
