@@ -204,8 +204,8 @@ impl Dynamics {
         self.step = step;
     }
 
-    /// Number the φ axes of M_с and A, ΔT, J_пр, T_I and ω at the positions the tables give
-    /// ([`Self::tabled`]), once their names are known.
+    /// Number the φ axes of A (M_с's positions too), ΔT, J_пр, T_I and ω at the positions the
+    /// tables give ([`Self::tabled`]), once their names are known.
     pub fn number_axes(&mut self, ctx: &Context) {
         let n = self.labels.len().max(1) as f64;
         let run = self.diagrams.scale_phi.to_mm(TAU / n);

@@ -29,9 +29,9 @@ pub(super) fn lines(t: &TrainStudy, pair: bool, lang: Lang) -> Vec<String> {
 }
 
 /// The satellites' assembly condition as the textbook writes it, z_a·u_aH^(b)·(1 + k·p)/k
-/// whole, with the least p that makes it so and the whole number it gives: `k = 4: условие
-/// сборки z_{1}·u_{1H}^{(3)}·(1 + k·p)/k = 20, p = 0`; where no p does, whether identical
-/// blocks fit all the same, or not.
+/// whole, with the least p that makes it so and the whole number it gives (seed 000's
+/// reducer: `k = 2: условие сборки z_{3}·u_{3H}^{(6)}·(1 + k·p)/k = −145, p = 1`); where no
+/// p does, whether identical blocks fit all the same, or not.
 fn assembly_line(t: &Train, k: u32, a: &Assembly, lang: Lang) -> String {
     let shaft = |s: usize| t.shafts.get(s).map_or("", String::as_str);
     let (h, b) = (t.carrier.map_or("H", shaft), t.fixed.map_or("", shaft));
@@ -40,7 +40,7 @@ fn assembly_line(t: &Train, k: u32, a: &Assembly, lang: Lang) -> String {
         "z_{{{a}}}·u_{{{a}{h}}}^{{({b})}}·(1 + k·p)/k",
         a = central.name
     );
-    // The whole number (1 + kp)·z_a·u/k, written with the sheet's minus.
+    // The whole number (1 + k·p)·z_a·u/k, written with the sheet's minus.
     let whole = |p: i128| {
         let n = a
             .value

@@ -405,7 +405,9 @@ impl Builder<'_> {
             from: DVec2::ZERO,
             to: x,
         };
-        let id = (self.rec).draw(format!("image {label}"), vector, Role::Construction, &[]);
+        let id = self
+            .rec
+            .draw(format!("image {label}"), vector, Role::Construction, &[]);
         self.rec.label(id, label, x, toward);
     }
 
