@@ -103,19 +103,10 @@ fn over_title_block(plate: &mut Plate, lines: &[String]) {
     let (was, tb) = (l.texts[k], l.title_block);
     let min = DVec2::new(tb.min.x, tb.min.y - OVER_TITLE_MM - was.height());
     let there = Rect::new(min, min + was.size());
-    let others = (l.views.iter())
-        .flat_map(|v| v.drawn.into_iter().chain(v.caption))
-        .chain(l.labels.iter().map(|x| x.rect))
-        .chain(l.tables.iter().copied())
-        .chain(
-            l.texts
-                .iter()
-                .enumerate()
-                .filter(|(j, _)| *j != k)
-                .map(|(_, r)| *r),
-        );
     let clear = there.inflate(CLEAR_MM);
-    let free = l.frame.contains(&there) && others.into_iter().all(|r| !r.intersects(&clear));
+    // Every other item: the requirements' own box is left out.
+    let mut others = l.boxes().filter(|r| *r != was);
+    let free = l.frame.contains(&there) && others.all(|r| !r.intersects(&clear));
     if free {
         plate.texts[k].at += min - was.min;
     }

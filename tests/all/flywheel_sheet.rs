@@ -397,15 +397,7 @@ fn the_technical_requirements_stand_over_the_title_block() {
                     (0.0..=10.0).contains(&gap),
                     "{at}: {gap} mm over the title block"
                 );
-                let others = (l.views.iter())
-                    .flat_map(|v| v.drawn.into_iter().chain(v.caption))
-                    .chain(l.labels.iter().map(|x| x.rect))
-                    .chain(l.tables.iter().copied())
-                    .chain(
-                        (l.texts.iter().enumerate())
-                            .filter(|(j, _)| *j != k)
-                            .map(|(_, r)| *r),
-                    );
+                let others = l.boxes().filter(|o| *o != r);
                 for o in others {
                     assert!(!o.intersects(&r), "{at}: {o:?} in their place {r:?}");
                 }

@@ -52,15 +52,7 @@ fn largest_gap(lo: f64, hi: f64, mut spans: Vec<(f64, f64)>) -> f64 {
 
 /// Every item's box on the sheet: drawings, captions, labels, text blocks, tables.
 fn items(l: &Layout) -> Vec<Rect> {
-    let views = l
-        .views
-        .iter()
-        .flat_map(|v| v.drawn.into_iter().chain(v.caption));
-    views
-        .chain(l.labels.iter().map(|x| x.rect))
-        .chain(l.texts.iter().copied())
-        .chain(l.tables.iter().copied())
-        .collect()
+    l.boxes().collect()
 }
 
 /// The largest empty band of a laid-out sheet, mm: horizontal and vertical.

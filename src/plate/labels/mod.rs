@@ -89,6 +89,18 @@ pub struct Layout {
     pub tables: Vec<Rect>,
 }
 
+impl Layout {
+    /// Every item's box on the sheet: the views' drawings and captions, the labels, the text
+    /// blocks and the tables (the frame's title block and designation box are not items).
+    pub fn boxes(&self) -> impl Iterator<Item = Rect> + '_ {
+        let views = (self.views.iter()).flat_map(|v| v.drawn.into_iter().chain(v.caption));
+        views
+            .chain(self.labels.iter().map(|x| x.rect))
+            .chain(self.texts.iter().copied())
+            .chain(self.tables.iter().copied())
+    }
+}
+
 /// Lay the plate out: its views' drawn boxes and captions, its text blocks and tables, and
 /// every label placed (see the module documentation).
 pub fn layout(plate: &Plate) -> Layout {
