@@ -56,7 +56,7 @@ pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<P
         (Vec::new(), Vec::new())
     };
     let (drafting, scales) = super::plan_scales::head_lines(session, &a, &sc, lang);
-    let verdicts = verdict_lines(&crate::kinematics::verdicts(&a.rows()), lang);
+    let verdicts = super::kin_lines::verdict_lines(&crate::kinematics::verdicts(&a.rows()), lang);
     let mut lines = Vec::new();
     let diagrams = diagram_views(&a, lang, &mut lines);
     let plans = Plans {
@@ -205,6 +205,7 @@ fn diagram_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
                 Text::CornerOfS.get(lang)
             ));
         }
+        lines.extend(super::kin_lines::corner_lines(d, lang));
     }
     diagrams
 }
@@ -537,36 +538,4 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
         lang,
     );
     vec![analytic, errors]
-}
-
-/// The acceleration plans' verdict per position (seed 001 l. 686–689), as the plans give it:
-/// «Положение 1: ускоренно вращаются звенья 3, 4; замедленно — 2».
-pub(crate) fn verdict_lines(
-    verdicts: &[crate::kinematics::LinkVerdict],
-    lang: Lang,
-) -> Vec<String> {
-    let links = |l: &[&str]| {
-        if l.is_empty() {
-            Text::NoLinks.get(lang).to_string()
-        } else {
-            l.join(", ")
-        }
-    };
-    crate::kinematics::by_position(verdicts)
-        .into_iter()
-        .map(|(p, [up, down, _])| {
-            // «звено 2», «звенья 3, 4», or none at all.
-            let accelerating = match up.as_slice() {
-                [] => Text::NoneAccelerating.get(lang).to_string(),
-                [one] => format!("{} {one}", Text::AcceleratingLink.get(lang)),
-                many => format!("{} {}", Text::AcceleratingLinks.get(lang), many.join(", ")),
-            };
-            format!(
-                "{} {p}: {accelerating}; {} {}",
-                Text::Pos.get(lang),
-                Text::DeceleratingLinks.get(lang),
-                links(&down)
-            )
-        })
-        .collect()
 }

@@ -18,6 +18,8 @@ catalogue! {
         DeceleratingLinks => ("замедленно —", "сповільнено —", "decelerating:"),
         NoLinks => ("нет", "немає", "none"),
         DiagramsOfPoint => ("Диаграммы точки", "Діаграми точки", "Diagrams of point"),
+        CornerBranchValues => ("ветвь после излома, по диаграммам и предел", "гілка після зламу, за діаграмами і границя", "the branch past the corner, by the diagrams and its limit"),
+        ChordsRoughAtCorner => ("у излома хорды дают производные грубо", "біля зламу хорди дають похідні грубо", "near a corner the chords give the derivatives roughly"),
         CornerOfS => ("излом диаграммы S: каждая ветвь дифференцируется отдельно", "злам діаграми S: кожна гілка диференціюється окремо", "a corner of S: each branch is differentiated on its own"),
         Hodograph => ("Годограф", "Годограф", "Hodograph"),
         KinematicAnalysis => ("Кинематический анализ", "Кінематичний аналіз", "Kinematic analysis"),
