@@ -140,13 +140,15 @@ pub enum Method {
     Formula,
     /// Read off the meshing picture.
     Meshing,
+    /// Read off the diagram of specific sliding λ₁, λ₂ along N₁N₂.
+    SlidingDiagram,
     /// A cam's combined diagram (S against dS/dφ or d²S/dφ²) with its γ_min lines.
     CombinedDiagram,
 }
 
 impl Method {
     /// Every method, in report order.
-    pub const ALL: [Method; 14] = [
+    pub const ALL: [Method; 15] = [
         Method::Plan,
         Method::DiagramChords,
         Method::DiagramTangents,
@@ -160,6 +162,7 @@ impl Method {
         Method::Merkin,
         Method::Formula,
         Method::Meshing,
+        Method::SlidingDiagram,
         Method::CombinedDiagram,
     ];
 
@@ -180,6 +183,7 @@ impl Method {
             Method::Merkin => "merkin",
             Method::Formula => "formula",
             Method::Meshing => "meshing",
+            Method::SlidingDiagram => "sliding-diagram",
             Method::CombinedDiagram => "combined-diagram",
         }
     }
@@ -215,6 +219,7 @@ impl Method {
             Method::Merkin => N::Merkin,
             Method::Formula => N::Formula,
             Method::Meshing => N::Meshing,
+            Method::SlidingDiagram => N::SlidingDiagram,
             Method::CombinedDiagram => N::CombinedDiagram,
         }
         .get(lang)

@@ -19,10 +19,13 @@ impl GearStudy {
                 let m = self.pair.as_ref()?;
                 let length = m.meshing.scale.reading_step(resolution_mm)?;
                 Some(match symbol {
-                    Symbol::SpecificSliding => resolution_mm / LAMBDA_MM,
                     Symbol::ContactRatio => length / m.pair.p_b,
                     _ => length,
                 })
+            }
+            (Method::SlidingDiagram, _) => {
+                self.pair.as_ref()?;
+                (resolution_mm > 0.0).then_some(resolution_mm / LAMBDA_MM)
             }
             (Method::Envelope, Symbol::ToothThickness | Symbol::SpaceWidth) => {
                 let (w, _) = self.cut_wheel_of(r)?;

@@ -182,8 +182,8 @@ fn parameter_rows(p: &GearPair) -> Vec<Row> {
     out
 }
 
-/// The rows read off the meshing picture: a_w (O₁O₂), N₁N₂, B₁B₂, ε′ = B₁B₂/p_b and the
-/// specific sliding λ₁, λ₂ at B₁, P, B₂ (by position).
+/// The rows read off the meshing picture: a_w (O₁O₂), N₁N₂, B₁B₂, ε′ = B₁B₂/p_b; and off
+/// the diagram of specific sliding beside it, λ₁, λ₂ at B₁, P, B₂ (by position).
 pub fn meshing_rows(p: &GearPair, mesh: &Meshing) -> Vec<Row> {
     let me = Method::Meshing;
     let mut out = vec![
@@ -210,7 +210,7 @@ pub fn meshing_rows(p: &GearPair, mesh: &Meshing) -> Vec<Row> {
         let exact = p.sliding(s.x);
         for (i, (read, exact)) in s.read.iter().zip(exact).enumerate() {
             let key = Key::at_position(Symbol::SpecificSliding, (i + 1).to_string(), &s.name);
-            out.push(Row::new(key, me, *read, exact, scale));
+            out.push(Row::new(key, Method::SlidingDiagram, *read, exact, scale));
         }
     }
     out

@@ -49,7 +49,7 @@ fn derivation(
 ) -> Option<&'static str> {
     let v = row.graphical.abs();
     match (row.key.symbol, row.method) {
-        (Symbol::SpecificSliding, Method::Meshing) => all
+        (Symbol::SpecificSliding, Method::SlidingDiagram) => all
             .iter()
             .any(|r| same(read_mm(r, drafting) / crate::gears::LAMBDA_MM, v))
             .then_some("an ordinate of the sliding diagram / LAMBDA_MM"),

@@ -303,12 +303,22 @@ pub(super) struct Results<'a> {
     pub size_mm: f64,
 }
 
-/// A row's quantity in the textbook's notation in `lang`, its position in brackets.
+/// A row's quantity in the textbook's notation in `lang`, its position in brackets: a
+/// point of a drawing with its index subscripted as the drawing names it, λ_{1} (B_{1}).
 pub(super) fn quantity(r: &Row, lang: Lang) -> String {
     let name = symbols::quantity(r.key.symbol, &r.key.subject, lang);
-    match r.position() {
-        Some(p) => format!("{name} ({p})"),
-        None => name,
+    let Some(p) = r.position() else {
+        return name;
+    };
+    match p.find(|c: char| c.is_ascii_digit()) {
+        Some(i)
+            if i > 0
+                && p[..i].chars().all(char::is_alphabetic)
+                && p[i..].chars().all(|c| c.is_ascii_digit()) =>
+        {
+            format!("{name} ({}_{{{}}})", &p[..i], &p[i..])
+        }
+        _ => format!("{name} ({p})"),
     }
 }
 

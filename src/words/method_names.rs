@@ -19,6 +19,7 @@ catalogue! {
         Merkin => ("Меркин", "Меркін", "Merkin"),
         Formula => ("формула", "формула", "formula"),
         Meshing => ("картина зацепления", "картина зачеплення", "meshing diagram"),
+        SlidingDiagram => ("диаграмма λ", "діаграма λ", "λ diagram"),
         CombinedDiagram => ("совмещённая диаграмма", "суміщена діаграма", "combined diagram"),
     }
 }

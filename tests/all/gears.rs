@@ -41,7 +41,7 @@ fn seed000_pair_rack_and_reducer_in_the_report() {
     assert!(num(row(&v, "envelope_deviation", "envelope"), "graphical") > 0.0);
     assert!(rows(&v, "s_a1", "envelope").len() == 1 && rows(&v, "s_a1", "formula").len() == 1);
     // λ at B₁, P, B₂ by position.
-    let l1 = rows(&v, "lambda_1", "meshing");
+    let l1 = rows(&v, "lambda_1", "sliding-diagram");
     assert_eq!(l1.len(), 3);
     let at_b1 = l1.iter().find(|r| r["position"] == "B1").expect("λ₁ at B₁");
     assert!((num(at_b1, "analytic") + 0.8239).abs() < 5e-4);
