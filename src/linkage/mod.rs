@@ -53,7 +53,7 @@ pub use positions::{
     PositionPlan,
 };
 pub use positions_draw::{
-    draw_links, frame_guides, guide_ends, plan_positions, FrameGuide, GUIDE_MARGIN_MM,
+    draw_links, frame_guides, guide_ends, name_points, plan_positions, FrameGuide, GUIDE_MARGIN_MM,
 };
 pub use program::Program;
 pub use scheme::structure_figure;

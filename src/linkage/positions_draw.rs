@@ -111,6 +111,37 @@ fn draw_links_from(
     anchors
 }
 
+/// Name the points of `part` drawn at `b` (those on a link the part draws), each by its
+/// letter up and right of it ([`named_point`]: a joint's letter names its hinge or block, a
+/// point on one link is a dot of its own). The scheme names the whole mechanism's moving
+/// points so. A drawing of the force analysis (`loaded`: a group drawn apart, or the driver)
+/// names the frame's joint too, as seed 000's group drawings name B, C, S₃; but not two
+/// points at one place (the shaper's E and S₅ under the ram's loads): there the loads' own
+/// labels, crowded round the block, name them.
+pub fn name_points(rec: &mut Recorder, prog: &Program, b: &Built, part: Part, loaded: bool) {
+    let on_part = |k: usize| {
+        let links = prog.links_of(k);
+        links.iter().any(|&l| part.draws(prog, l as u32))
+            || (part == Part::Driver && (k == prog.centre || k == prog.pin))
+    };
+    let shown: Vec<usize> = (0..prog.names.len())
+        .filter(|&k| (k >= prog.fixed.len() || loaded) && on_part(k))
+        .collect();
+    for &k in &shown {
+        let name = &prog.names[k];
+        let shared = || (shown.iter()).any(|&o| o != k && b.p[o].distance(b.p[k]) < ON_POINT_MM);
+        if loaded && shared() {
+            continue;
+        }
+        let (item, role) = named_point(prog, k, b.p[k]);
+        let id = rec.draw(format!("point {name}"), item, role, &[]);
+        rec.label(id, name.clone(), b.p[k], DVec2::new(0.8, 0.6).normalize());
+    }
+}
+
+/// Two points of a drawing this close are at one place, mm.
+const ON_POINT_MM: f64 = 0.5;
+
 /// A guide of the frame as drawn: the group it belongs to, the piece of line spanning the
 /// travel of its joint (with a margin) and the side its hatching goes on (away from the crank).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -4,7 +4,7 @@
 use super::built::Built;
 use super::model::Sense;
 use super::part::Part;
-use super::positions_draw::{draw_guides, draw_links, draw_pivots, frame_guides, named_point};
+use super::positions_draw::{draw_guides, draw_links, draw_pivots, frame_guides, name_points};
 use super::program::Program;
 use super::structure::Structure;
 use crate::construct::{Context, Figure, Item, Recorder, Role};
@@ -57,16 +57,7 @@ pub fn structure_figure(
     let anchors = draw_links(&mut rec, prog, &whole, Role::Given, "scheme", Part::All);
     draw_pivots(&mut rec, prog, &whole);
     crank_rotation(&mut rec, prog, &whole, sense);
-    for (k, name) in prog.names.iter().enumerate().skip(prog.fixed.len()) {
-        let (item, role) = named_point(prog, k, whole.p[k]);
-        let id = rec.draw(format!("point {name}"), item, role, &[]);
-        rec.label(
-            id,
-            name.clone(),
-            whole.p[k],
-            DVec2::new(0.8, 0.6).normalize(),
-        );
-    }
+    name_points(&mut rec, prog, &whole, Part::All, false);
     number_links(&mut rec, &anchors);
     let Some(st) = st else {
         return rec.finish();

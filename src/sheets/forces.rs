@@ -70,14 +70,61 @@ fn view(figure: &Figure, what: String, (key, scale): (Key, Scale), lang: Lang) -
     Block::view(figure.clone(), caption, Some(ScaleKey { key, scale })).with_label_room()
 }
 
-/// The letters of detail views (ГОСТ 2.316: capitals, without Й, О, Х, Ъ, Ы, Ь).
-fn detail_letter(n: usize, lang: Lang) -> &'static str {
-    const CYRILLIC: [&str; 8] = ["А", "Б", "В", "Г", "Д", "Е", "Ж", "И"];
-    const LATIN: [&str; 8] = ["A", "B", "C", "D", "E", "F", "G", "H"];
-    match lang {
-        Lang::En => LATIN[n % LATIN.len()],
-        Lang::Ru | Lang::Uk => CYRILLIC[n % CYRILLIC.len()],
+/// The letters of a sheet's detail views (ГОСТ 2.316: capitals, without Й, О, Х, Ъ, Ы, Ь),
+/// in order, but any that reads as the initial of a name: of the mechanism's `points` (A, B,
+/// C, S₃, drawn or not) or on the sheet's `figures` (the loads F, G, M): a detail «В» beside
+/// the point «B» is read as that point. Never empty.
+fn detail_letters<'a>(
+    points: &[String],
+    figures: impl IntoIterator<Item = &'a Figure>,
+    lang: Lang,
+) -> Vec<char> {
+    // Each Cyrillic capital with the Latin one it looks like, if any.
+    const CYRILLIC: [(char, Option<char>); 22] = [
+        ('А', Some('A')),
+        ('Б', None),
+        ('В', Some('B')),
+        ('Г', None),
+        ('Д', None),
+        ('Е', Some('E')),
+        ('Ж', None),
+        ('И', None),
+        ('К', Some('K')),
+        ('Л', None),
+        ('М', Some('M')),
+        ('Н', Some('H')),
+        ('П', None),
+        ('Р', Some('P')),
+        ('С', Some('C')),
+        ('Т', Some('T')),
+        ('У', Some('Y')),
+        ('Ф', None),
+        ('Ш', None),
+        ('Э', None),
+        ('Ю', None),
+        ('Я', None),
+    ];
+    let initials: Vec<char> = (figures.into_iter())
+        .flat_map(|f| f.steps.iter().filter_map(|s| s.label.as_ref()))
+        .map(|l| &l.text)
+        .chain(points)
+        .filter_map(|t| t.chars().next())
+        .collect();
+    let free = |c: char| !initials.contains(&c);
+    let letters: Vec<char> = match lang {
+        Lang::En => ('A'..='Z')
+            .filter(|&c| !matches!(c, 'I' | 'O' | 'Q') && free(c))
+            .collect(),
+        Lang::Ru | Lang::Uk => (CYRILLIC.iter())
+            .filter(|(_, latin)| latin.is_none_or(free))
+            .map(|&(c, _)| c)
+            .collect(),
+    };
+    // A scene whose names take every letter still letters its details.
+    if letters.is_empty() {
+        return ('A'..='Z').collect();
     }
+    letters
 }
 
 /// A force polygon's view captioned `what` at its μ_F, and its details' views (each zone
@@ -87,7 +134,7 @@ fn polygon_views(
     blocks: &mut Vec<Block>,
     (polygon, details): (&Figure, &[PolygonDetail]),
     what: String,
-    lettered: &mut usize,
+    (letters_of_sheet, lettered): (&[char], &mut usize),
     lang: Lang,
 ) {
     let corner = letter_toward();
@@ -95,7 +142,7 @@ fn polygon_views(
     let mut views = Vec::new();
     let mut letters: Vec<String> = Vec::new();
     for d in details {
-        let letter = detail_letter(*lettered, lang).to_string();
+        let letter = letters_of_sheet[*lettered % letters_of_sheet.len()].to_string();
         *lettered += 1;
         marked = marked.with_text(
             "the detail's letter",
@@ -133,6 +180,16 @@ fn position_sheet(
     let scene = session.scene();
     let mut blocks = Vec::new();
     let mut lettered = 0;
+    let schemes = (f.analysis.polygons.groups.iter().map(|g| &g.scheme)).chain([&f
+        .analysis
+        .polygons
+        .driver
+        .scheme]);
+    let points = (session.mechanism("the force analysis").ok())
+        .and_then(|m| crate::linkage::Program::compile(m).ok())
+        .map(|p| p.names)
+        .unwrap_or_default();
+    let letters = detail_letters(&points, schemes, lang);
     for g in &f.analysis.polygons.groups {
         let [i, j] = g.links;
         let kind = st
@@ -151,7 +208,7 @@ fn position_sheet(
             &mut blocks,
             (&g.polygon, &g.details),
             what,
-            &mut lettered,
+            (&letters, &mut lettered),
             lang,
         );
     }
@@ -171,7 +228,7 @@ fn position_sheet(
         &mut blocks,
         (&d.polygon, &d.details),
         triangle,
-        &mut lettered,
+        (&letters, &mut lettered),
         lang,
     );
     let lever = &f.analysis.lever.figure;

@@ -35,6 +35,7 @@ mod flywheel_sheet;
 mod force_cases;
 mod force_figures;
 mod force_marks;
+mod force_points;
 mod forces;
 mod friction;
 mod friction_follower;

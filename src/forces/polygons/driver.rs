@@ -74,6 +74,7 @@ pub(super) fn driver(
     let crank = prog.crank_link as usize;
     let mut sch = Scheme::new(board, format!("driving link {crank}"), arms);
     draw_links(&mut sch.rec, prog, b, Role::Given, "crank", Part::Driver);
+    crate::linkage::name_points(&mut sch.rec, prog, b, Part::Driver, true);
     let loads = on(applied, crank);
     for l in &loads {
         sch.show(l);

@@ -24,7 +24,7 @@ use super::spec::Drive;
 use super::twin::{line_of_action, Pair, PairKind, Reaction};
 use crate::construct::{ConstructionError, Figure, Item, Role};
 use crate::geom::{Circle, DVec2, Segment};
-use crate::linkage::{draw_links, Built, Part, PlanSetup};
+use crate::linkage::{draw_links, name_points, Built, Part, PlanSetup};
 use crate::scale::Scale;
 use std::f64::consts::{PI, TAU};
 
@@ -255,6 +255,8 @@ pub fn polygons(
         for r in &reactions {
             show_reaction(&mut sch, r);
         }
+        // The points' letters last: the loads' labels keep the places by their arrows.
+        name_points(&mut sch.rec, prog, b, Part::Group(group), true);
         let (polygon, detail) = pol.finish();
         arms = sch.arms;
         groups.push(GroupPolygon {
