@@ -177,6 +177,9 @@ pub struct Dynamics {
     /// The flywheel's part drawing ([`Self::made`]) at its round scale, then at the next
     /// coarser one ([`part::drawings`]); one empty figure when none is needed.
     pub wheels: Vec<crate::construct::Figure>,
+    /// The roughness of the part's surfaces its drawing does not mark, for the sheet's top
+    /// right corner ([`part::other_surfaces`]).
+    pub other_surfaces: crate::construct::Figure,
 }
 
 impl Dynamics {
@@ -302,6 +305,7 @@ pub fn analyse(
     let delta_made = cycle.with_flywheel(made.j, w_avg).delta();
     let omega = draw::omega_figure(&cycle, &exact, diagrams.scale_phi, ctx)?;
     let wheels = part::drawings(&made, ctx)?;
+    let other_surfaces = part::other_surfaces(ctx)?;
     Ok(Dynamics {
         spec: spec.clone(),
         w_avg,
@@ -323,5 +327,6 @@ pub fn analyse(
         delta_made,
         omega,
         wheels,
+        other_surfaces,
     })
 }

@@ -70,6 +70,21 @@ pub fn drawings(size: &Size, ctx: &Context) -> Result<Vec<Figure>, DynamicsError
 }
 
 /// The part drawing of `size` at `mu`.
+/// The sign of the roughness of the surfaces the part drawing does not mark — as cast — drawn
+/// 1:1 for the sheet's top right corner (ГОСТ 2.309).
+///
+/// # Errors
+/// None in practice: the 1:1 scale is a valid one.
+pub fn other_surfaces(ctx: &Context) -> Result<Figure, DynamicsError> {
+    let unit = Scale::new(1e-3, Quantity::Length).ok_or(DynamicsError::NoScale {
+        what: "the scale of the roughness sign",
+        value: 1e-3,
+    })?;
+    let mut rec = Recorder::in_context("roughness of the other surfaces", unit, ctx);
+    roughness::other_surfaces(&mut rec);
+    Ok(rec.finish())
+}
+
 fn at_scale(size: &Size, mu: Scale, ctx: &Context) -> Figure {
     let key = size.dim("d_{1}").and_then(Keyway::for_shaft);
     let part = Part { size, mu, key };

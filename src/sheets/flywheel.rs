@@ -83,6 +83,7 @@ fn sheet(
     let mut plates = lay_out_smallest(&[size], blocks, "flywheel", &title, lang)?;
     for p in &mut plates {
         over_title_block(p, &demands);
+        in_top_right_corner(p, &d.other_surfaces);
     }
     Ok(plates)
 }
@@ -109,6 +110,37 @@ fn over_title_block(plate: &mut Plate, lines: &[String]) {
     let free = l.frame.contains(&there) && others.all(|r| !r.intersects(&clear));
     if free {
         plate.texts[k].at += min - was.min;
+    }
+}
+
+/// How far the roughness of the other surfaces stands from the frame's right and top edges,
+/// mm.
+const CORNER_MM: DVec2 = DVec2::new(5.0, 8.0);
+
+/// The sign of the other surfaces' roughness (`sign`, drawn 1:1) placed in the sheet's top
+/// right corner, as ГОСТ 2.309 places it, where nothing else of the sheet stands.
+fn in_top_right_corner(plate: &mut Plate, sign: &Figure) {
+    let Some((lo, hi)) = sign.bounds() else {
+        return;
+    };
+    let l = layout(plate);
+    let origin = DVec2::new(
+        l.frame.max.x - CORNER_MM.x - hi.x,
+        l.frame.min.y + CORNER_MM.y + hi.y,
+    );
+    // On the sheet (y down).
+    let there = Rect::new(
+        DVec2::new(origin.x + lo.x, origin.y - hi.y),
+        DVec2::new(origin.x + hi.x, origin.y - lo.y),
+    );
+    let clear = there.inflate(CLEAR_MM);
+    if l.frame.contains(&there) && l.boxes().all(|r| !r.intersects(&clear)) {
+        plate.views.push(crate::plate::View {
+            figure: sign.clone(),
+            origin,
+            caption: None,
+            caption_drop: 0.0,
+        });
     }
 }
 

@@ -95,8 +95,12 @@ fn the_shaper_set_draws_the_flywheel_as_its_eighth_sheet_at_1_4() {
     let (_, p) = en.last().expect("a sheet");
     assert_eq!(p.title_block.title, "Flywheel");
     assert_eq!(p.title_block.designation, "TMM.KP.000.08");
-    // One drawing at μ_l = 0,004 m/mm, on a sheet no larger than A2.
-    assert_eq!(p.views.len(), 1);
+    // One drawing at μ_l = 0,004 m/mm, on a sheet no larger than A2 (and the corner's
+    // roughness sign, which draws nothing of the part).
+    let drawings = (p.views.iter())
+        .filter(|v| (v.figure.steps.iter()).any(|s| s.role != tmm::construct::Role::Dimension))
+        .count();
+    assert_eq!(drawings, 1);
     assert!((p.views[0].figure.scale.value() - 0.004).abs() < 1e-15);
     assert!(p.sheet.width_mm() <= 594.0 && p.sheet.height_mm() <= 420.0);
     // The dynamics sheet no longer draws the flywheel.
@@ -400,6 +404,51 @@ fn the_technical_requirements_stand_over_the_title_block() {
                 let others = l.boxes().filter(|o| *o != r);
                 for o in others {
                     assert!(!o.intersects(&r), "{at}: {o:?} in their place {r:?}");
+                }
+            }
+        }
+    }
+}
+
+/// The roughness of the surfaces the part drawing does not mark stands in the sheet's top
+/// right corner (ГОСТ 2.309): the sign of a surface left as cast (its legs and the inscribed
+/// circle) and the basic sign in brackets, clear of everything else of the sheet, in every
+/// language and drafting (issue 45: the V engine's flywheel had no such sign).
+#[test]
+fn the_other_surfaces_roughness_stands_in_the_top_right_corner() {
+    for name in ["shaper.toml", "v-engine.toml"] {
+        let s = load(name);
+        for drafting in [Drafting::EXACT, Drafting::HAND] {
+            let session = Session::new(&s, drafting);
+            for lang in [Lang::Ru, Lang::Uk, Lang::En] {
+                let p = tmm::sheets::build(&session, PlateKind::Flywheel, lang)
+                    .unwrap_or_else(|e| panic!("{e}"))
+                    .remove(0);
+                let at = format!("{name} {lang:?} {}", drafting.resolution_mm());
+                let k = (p.views.iter())
+                    .position(|v| v.figure.title == "roughness of the other surfaces")
+                    .unwrap_or_else(|| panic!("{at}: no roughness of the other surfaces"));
+                let figure = &p.views[k].figure;
+                let circles = (figure.steps.iter())
+                    .filter(|s| matches!(s.item, tmm::construct::Item::Circle(_)))
+                    .count();
+                let arcs = (figure.steps.iter())
+                    .filter(|s| matches!(s.item, tmm::construct::Item::Arc(_)))
+                    .count();
+                assert_eq!(
+                    (circles, arcs),
+                    (1, 2),
+                    "{at}: the cast sign and two brackets"
+                );
+                let l = tmm::plate::layout(&p);
+                let r = l.views[k].drawn.expect("drawn");
+                assert!(
+                    l.frame.max.x - r.max.x < 10.0 && r.min.y - l.frame.min.y < 15.0,
+                    "{at}: {r:?} not in the corner of {:?}",
+                    l.frame
+                );
+                for o in l.boxes().filter(|o| *o != r) {
+                    assert!(!o.intersects(&r), "{at}: {o:?} over the sign {r:?}");
                 }
             }
         }
