@@ -587,37 +587,3 @@ fn the_assembly_condition_is_written_with_its_formula() {
         );
     }
 }
-
-/// The specific sliding is read off its own diagram, not off the meshing picture: its rows
-/// name that method, and the points of N₁N₂ they are read at as the picture names them,
-/// λ_{1} (B_{1}) (issue 45: they stood as «картина зацепления», «λ₁ (B1)»).
-#[test]
-fn the_sliding_is_read_off_its_diagram_at_the_pictures_points() {
-    for name in ["shaper", "gears-pz3"] {
-        let s = scene(name);
-        for (lang, method) in [
-            (Lang::Ru, "диаграмма λ"),
-            (Lang::Uk, "діаграма λ"),
-            (Lang::En, "λ diagram"),
-        ] {
-            for drafting in draftings() {
-                let rows: Vec<Vec<String>> = gear_sheets(&s, drafting, lang)
-                    .iter()
-                    .flat_map(|p| p.tables.iter().flat_map(|t| t.rows.clone()))
-                    .filter(|r| r.first().is_some_and(|q| q.starts_with("λ_")))
-                    .collect();
-                let quantities: Vec<&str> = rows.iter().map(|r| r[0].as_str()).collect();
-                for want in ["λ_{1} (B_{1})", "λ_{2} (P)", "λ_{2} (B_{2})"] {
-                    assert!(
-                        quantities.contains(&want),
-                        "{name} {lang:?}: {quantities:?}"
-                    );
-                }
-                assert!(
-                    rows.iter().all(|r| r[1] == method),
-                    "{name} {lang:?}: {rows:?}"
-                );
-            }
-        }
-    }
-}

@@ -322,3 +322,44 @@ fn the_textbook_x_min_rule_is_printed_only_for_its_rack() {
         assert!(n.contains("x_min = h_a* − z·sin²α/2"), "{n}");
     }
 }
+
+/// The specific sliding is read off its own diagram, not off the meshing picture: its rows
+/// name that method, and the points of N₁N₂ they are read at as the picture names them,
+/// λ_{1} (B_{1}) (issue 45: they stood as «картина зацепления», «λ₁ (B1)»).
+#[test]
+fn the_sliding_is_read_off_its_diagram_at_the_pictures_points() {
+    for name in ["shaper", "gears-pz3"] {
+        let s =
+            tmm::load(&support::root().join(format!("constructions/{name}.toml"))).expect("scene");
+        for (lang, method) in [
+            (tmm::scale::Lang::Ru, "диаграмма λ"),
+            (tmm::scale::Lang::Uk, "діаграма λ"),
+            (tmm::scale::Lang::En, "λ diagram"),
+        ] {
+            for drafting in [
+                tmm::construct::Drafting::EXACT,
+                tmm::construct::Drafting::HAND,
+            ] {
+                let kind = tmm::scene::PlateKind::parse("gears").expect("the gears plate");
+                let session = tmm::study::Session::new(&s, drafting);
+                let rows: Vec<Vec<String>> = tmm::build(&session, kind, lang)
+                    .expect("the gear sheet")
+                    .iter()
+                    .flat_map(|p| p.tables.iter().flat_map(|t| t.rows.clone()))
+                    .filter(|r| r.first().is_some_and(|q| q.starts_with("λ_")))
+                    .collect();
+                let quantities: Vec<&str> = rows.iter().map(|r| r[0].as_str()).collect();
+                for want in ["λ_{1} (B_{1})", "λ_{2} (P)", "λ_{2} (B_{2})"] {
+                    assert!(
+                        quantities.contains(&want),
+                        "{name} {lang:?}: {quantities:?}"
+                    );
+                }
+                assert!(
+                    rows.iter().all(|r| r[1] == method),
+                    "{name} {lang:?}: {rows:?}"
+                );
+            }
+        }
+    }
+}
