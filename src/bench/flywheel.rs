@@ -1,5 +1,5 @@
 //! The flywheel of the shaper (seed 000 §5): each textbook route — Wittenbauer's tangents,
-//! Merkin's T_I — on its diagrams at N equal positions (reduction by the analytic twin, so
+//! Mertsalov's T_I — on its diagrams at N equal positions (reduction by the analytic twin, so
 //! only the method's own error remains, drafting exact) against the energy equation
 //! integrated exactly; the time of the route, and of the exact solve.
 
@@ -10,7 +10,7 @@ use crate::dynamics::{diagrams, Cycle, ReducedPosition, Reducer};
 use crate::linkage::{plan_poses, PlanRequest};
 use std::f64::consts::TAU;
 
-/// The rows `wittenbauer N=…` and `merkin N=…` of `J_flywheel`, and the time of the exact
+/// The rows `wittenbauer N=…` and `mertsalov N=…` of `J_flywheel`, and the time of the exact
 /// solve (cycle integration + bracketed J_м), seconds.
 pub(super) fn flywheel_rows(s: &Subject, reps: Reps) -> Result<(Vec<BenchRow>, f64), BenchError> {
     let fail = |e: &dyn std::fmt::Display| s.fail(e.to_string());
@@ -69,12 +69,12 @@ pub(super) fn flywheel_rows(s: &Subject, reps: Reps) -> Result<(Vec<BenchRow>, f
                 .map(|i| red.exact(TAU * i as f64 / n as f64).map(|r| r.0))
                 .collect::<Result<Vec<ReducedPosition>, _>>()?;
             let g = diagrams(&free, &reds, w_avg, &ctx)?;
-            got = Some((g.wittenbauer.j_fw, g.merkin.j_fw));
+            got = Some((g.wittenbauer.j_fw, g.mertsalov.j_fw));
             Ok::<_, crate::dynamics::DynamicsError>(())
         })
         .map_err(|e| fail(&e))?;
         let (w, m) = got.ok_or_else(|| s.fail("no route"))?;
-        for (name, j) in [("wittenbauer", w), ("merkin", m)] {
+        for (name, j) in [("wittenbauer", w), ("mertsalov", m)] {
             let e = (j - j_exact).abs();
             rows.push(BenchRow {
                 method: format!("{name} N={n}"),

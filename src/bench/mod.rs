@@ -24,7 +24,7 @@
 //!   the cost per sheet.
 //!
 //! * **Flywheel** — the shaper's flywheel (seed 000 §5) by Wittenbauer's tangents and by
-//!   Merkin's route on diagrams of N = 12 … 360 positions, each against the energy equation
+//!   Mertsalov's route on diagrams of N = 12 … 360 positions, each against the energy equation
 //!   integrated exactly, with the route's time and the exact solve's.
 //! * **Rack generation** — the drawn tooth's deviation from the exact envelope (in modules)
 //!   and the time of one tooth for N = 12 … 720 rack positions.

@@ -146,7 +146,7 @@ pub enum NoFlywheel {
         /// The J read, kg·m².
         read: f64,
     },
-    /// Merkin's route on the continuous exact data gives J ≤ 0.
+    /// Mertsalov's route on the continuous exact data gives J ≤ 0.
     Continuous {
         /// The J it gives, kg·m².
         j: f64,
@@ -158,6 +158,6 @@ pub enum NoFlywheel {
 pub enum Route {
     /// Wittenbauer's diagram and its tangents.
     Wittenbauer,
-    /// Merkin's T_I diagram.
-    Merkin,
+    /// Mertsalov's T_I diagram.
+    Mertsalov,
 }

@@ -134,8 +134,8 @@ pub enum Method {
     Triangles,
     /// The energy–mass diagram with its tangents (Wittenbauer).
     Wittenbauer,
-    /// The flywheel from the range of T_I = ΔT − T_II (Merkin).
-    Merkin,
+    /// The flywheel from the range of T_I = ΔT − T_II (Mertsalov).
+    Mertsalov,
     /// The textbook's formula chain against an independent closed form (gear geometry).
     Formula,
     /// Read off the meshing picture.
@@ -159,7 +159,7 @@ impl Method {
         Method::Envelope,
         Method::Triangles,
         Method::Wittenbauer,
-        Method::Merkin,
+        Method::Mertsalov,
         Method::Formula,
         Method::Meshing,
         Method::SlidingDiagram,
@@ -180,7 +180,7 @@ impl Method {
             Method::Envelope => "envelope",
             Method::Triangles => "triangles",
             Method::Wittenbauer => "wittenbauer",
-            Method::Merkin => "merkin",
+            Method::Mertsalov => "mertsalov",
             Method::Formula => "formula",
             Method::Meshing => "meshing",
             Method::SlidingDiagram => "sliding-diagram",
@@ -216,7 +216,7 @@ impl Method {
             Method::Envelope => N::Envelope,
             Method::Triangles => N::Triangles,
             Method::Wittenbauer => N::Wittenbauer,
-            Method::Merkin => N::Merkin,
+            Method::Mertsalov => N::Mertsalov,
             Method::Formula => N::Formula,
             Method::Meshing => N::Meshing,
             Method::SlidingDiagram => N::SlidingDiagram,

@@ -12,7 +12,7 @@
 //!    tan ψ_max,min = μ_J·ω_ср²(1 ± δ)/(2μ_T); they cut the ΔT axis at k and l, and
 //!    J_м = μ_T·kl/(δ·ω_ср²); the curve through the points is drawn on its side of both
 //!    tangents (they touch it, never cut it);
-//! 6. Merkin's route (the seed's): T_I = ΔT − ω_ср²·J_пр/2, its range ΔT_I measured,
+//! 6. Mertsalov's route (the seed's): T_I = ΔT − ω_ср²·J_пр/2, its range ΔT_I measured,
 //!    J_I = ΔT_I/(δ·ω_ср²), J_м = J_I − J_const.
 
 use super::reduce::ReducedPosition;
@@ -54,7 +54,7 @@ pub struct DynamicsDiagrams {
     pub scale_t: Scale,
     /// μ_J.
     pub scale_j: Scale,
-    /// μ_T of Merkin's T_I.
+    /// μ_T of Mertsalov's T_I.
     pub scale_t1: Scale,
     /// μ_T of the energy–mass diagram.
     pub scale_tw: Scale,
@@ -68,8 +68,8 @@ pub struct DynamicsDiagrams {
     pub inertia: Figure,
     /// The energy–mass diagram (at μ_T).
     pub wittenbauer_figure: Figure,
-    /// Merkin's T_I (at μ_T).
-    pub merkin_figure: Figure,
+    /// Mertsalov's T_I (at μ_T).
+    pub mertsalov_figure: Figure,
     /// A_с at the nodes 0 … N as read, J (an engine's A_д: the varying side's work).
     pub a_c: Vec<f64>,
     /// M_д read through the pole, N·m (an engine's M_с: the constant side's moment).
@@ -80,8 +80,8 @@ pub struct DynamicsDiagrams {
     pub j: Vec<f64>,
     /// Wittenbauer's flywheel.
     pub wittenbauer: RouteReading,
-    /// Merkin's flywheel.
-    pub merkin: RouteReading,
+    /// Mertsalov's flywheel.
+    pub mertsalov: RouteReading,
 }
 
 /// A curve through points with its axes around them (the abscissa `extent` mm long).
@@ -129,7 +129,7 @@ pub fn diagrams(
     // 1–3: M_с, A_с by chords, A_д and M_д through the pole, ΔT.
     let done = work(spec, &sc, ctx)?;
     let delta_t = &done.delta_t;
-    // The energy scale: ΔT and Merkin's T_I.
+    // The energy scale: ΔT and Mertsalov's T_I.
     let j: Vec<f64> = red.iter().map(|r| r.j).collect();
     let w2 = w_avg * w_avg;
     let t1: Vec<f64> = (0..=n).map(|i| delta_t[i] - w2 * j[i % n] / 2.0).collect();
@@ -169,8 +169,8 @@ pub fn diagrams(
     let mu_tw = scale_of(spec.scale_t, reach, 180.0, Quantity::Work, "μ_T")?;
     let (wittenbauer_figure, wittenbauer) =
         wittenbauer(&delta_t[..n], &j, (mu_tw, mu_j), w_avg, spec.delta, ctx);
-    // 6: Merkin.
-    let (merkin_figure, merkin) = merkin(&t1, run, mu_t1, w_avg, spec, ctx);
+    // 6: Mertsalov.
+    let (mertsalov_figure, mertsalov) = mertsalov(&t1, run, mu_t1, w_avg, spec, ctx);
     Ok(DynamicsDiagrams {
         scale_phi: sc.phi,
         scale_m: sc.m,
@@ -184,13 +184,13 @@ pub fn diagrams(
         energy,
         inertia,
         wittenbauer_figure,
-        merkin_figure,
+        mertsalov_figure,
         a_c: done.a_c,
         m_drive: done.m_drive,
         delta_t: done.delta_t,
         j,
         wittenbauer,
-        merkin,
+        mertsalov,
     })
 }
 
@@ -406,8 +406,8 @@ fn within_tangents(pts: &[DVec2], lines: [(f64, f64, usize); 2]) -> Vec<DVec2> {
 /// Points read along each piece of a drawn curve for its extremes.
 const CURVE_SAMPLES: usize = 64;
 
-/// Merkin's T_I = ΔT − ω_ср²·J_пр/2 over the cycle, its range between two horizontals.
-fn merkin(
+/// Mertsalov's T_I = ΔT − ω_ср²·J_пр/2 over the cycle, its range between two horizontals.
+fn mertsalov(
     t1: &[f64],
     run: f64,
     mu_t: Scale,

@@ -7,7 +7,7 @@
 //!   graphical integration (chords, pole distance H, μ_A = μ_M·μ_φ·H), A_д from
 //!   A_д(2π) = A_с(2π) (constant driving moment) and M_д read back through the pole, ΔT =
 //!   A_д − A_с, J_пр(φ), the energy–mass diagram (Wittenbauer) with its tangents at ψ_max,
-//!   ψ_min, and Merkin's route T_I = ΔT − T_II, J_I = ΔT_I/(δ·ω_ср²) (the seed's);
+//!   ψ_min, and Mertsalov's route T_I = ΔT − T_II, J_I = ΔT_I/(δ·ω_ср²) (the seed's);
 //! - `twin`: the work integrated exactly and the equation of motion in energy form solved
 //!   for the flywheel that gives δ, with ω(φ), ε(φ) and the cycle time;
 //! - `flywheel`: the rim's or disc's size from its moment of inertia — the one the sheet's
@@ -161,7 +161,7 @@ pub struct Dynamics {
     pub cycle_time: f64,
     /// The diagrams as constructed.
     pub diagrams: draw::DynamicsDiagrams,
-    /// The δ each textbook route's flywheel really gives (Wittenbauer, Merkin).
+    /// The δ each textbook route's flywheel really gives (Wittenbauer, Mertsalov).
     pub delta_of: [f64; 2],
     /// The flywheel's size from the inertia the sheet's construction gives (Wittenbauer's
     /// tangents): the flywheel a hand-in sizes and draws.
@@ -221,7 +221,7 @@ impl Dynamics {
             &mut d.work,
             &mut d.energy,
             &mut d.inertia,
-            &mut d.merkin_figure,
+            &mut d.mertsalov_figure,
             &mut self.omega,
         ] {
             *f = phi_numbers::number(f.clone(), ctx, &marks);
@@ -296,7 +296,7 @@ pub fn analyse(
     let exact = cycle.flywheel(w_avg, spec.delta)?;
     let cycle_time = cycle.cycle_time(exact.j_fw, exact.t0);
     let diagrams = draw::diagrams(spec, &graphical, w_avg, ctx)?;
-    let delta_of = [diagrams.wittenbauer.j_fw, diagrams.merkin.j_fw]
+    let delta_of = [diagrams.wittenbauer.j_fw, diagrams.mertsalov.j_fw]
         .map(|j| cycle.with_flywheel(j.max(0.0), w_avg).delta());
     // The flywheel as the sheet's construction finds it; the twin's from the exact inertia.
     let size = flywheel::size(&spec.flywheel, diagrams.wittenbauer.j_fw);

@@ -8,7 +8,7 @@ use crate::check::{self, Finding, Key, Method, NoFlywheel, Route, Row, Symbol};
 
 /// The rows: `M_red`, `J_red` (velocity plans) and `dT` (graphical integration) per
 /// position; `A_res`, `M_drive` (integration), `J_flywheel` and `delta` (Wittenbauer,
-/// Merkin), the flywheel's D (`h_flywheel`) and mass (`m_flywheel`) sized from Wittenbauer's
+/// Mertsalov), the flywheel's D (`h_flywheel`) and mass (`m_flywheel`) sized from Wittenbauer's
 /// J_м of the whole scene, each against the analytic twin.
 pub fn rows(d: &Dynamics) -> Vec<Row> {
     let mut rows = Vec::new();
@@ -84,7 +84,7 @@ pub fn rows(d: &Dynamics) -> Vec<Row> {
             d.diagrams.wittenbauer.j_fw,
             d.delta_of[0],
         ),
-        (Method::Merkin, d.diagrams.merkin.j_fw, d.delta_of[1]),
+        (Method::Mertsalov, d.diagrams.mertsalov.j_fw, d.delta_of[1]),
     ];
     for (m, j, _) in routes {
         scene(Symbol::Inertia, "flywheel", m, j, d.exact.j_fw);
@@ -155,14 +155,14 @@ fn exact_note(d: &Dynamics) -> DynamicsNote {
     })
 }
 
-/// The textbook routes against the exact flywheel: Wittenbauer's tangents, Merkin's route,
-/// and Merkin's on the continuous exact data.
+/// The textbook routes against the exact flywheel: Wittenbauer's tangents, Mertsalov's route,
+/// and Mertsalov's on the continuous exact data.
 fn routes_note(d: &Dynamics) -> DynamicsNote {
-    let merkin_exact = d.cycle.merkin(d.w_avg, d.spec.delta).0 - d.spec.constant_inertia();
-    let continuous = if merkin_exact > 0.0 {
-        Flywheel::Needed(merkin_exact)
+    let mertsalov_exact = d.cycle.mertsalov(d.w_avg, d.spec.delta).0 - d.spec.constant_inertia();
+    let continuous = if mertsalov_exact > 0.0 {
+        Flywheel::Needed(mertsalov_exact)
     } else {
-        Flywheel::None(NoFlywheel::Continuous { j: merkin_exact })
+        Flywheel::None(NoFlywheel::Continuous { j: mertsalov_exact })
     };
     DynamicsNote::Routes(Routes {
         positions: d.labels.len(),
@@ -172,7 +172,7 @@ fn routes_note(d: &Dynamics) -> DynamicsNote {
             &d.diagrams.wittenbauer,
             d.delta_of[0],
         ),
-        merkin: route_note(d, Route::Merkin, &d.diagrams.merkin, d.delta_of[1]),
+        mertsalov: route_note(d, Route::Mertsalov, &d.diagrams.mertsalov, d.delta_of[1]),
         continuous,
     })
 }

@@ -216,9 +216,9 @@ fn the_flywheel_is_the_independent_value_and_gives_delta() {
         let w = fine.wittenbauer(d.exact.w_max.0, d.exact.w_min.0);
         assert!((w - d.exact.j_fw).abs() < 1e-6 * d.exact.j_fw, "{w}");
     });
-    // Merkin on continuous exact data (§000.14: 27.000).
-    let merkin = d.cycle.merkin(15.7, 1.0 / 15.0).0 - J_CONST;
-    assert!((merkin - 27.000).abs() < 5e-3, "{merkin}");
+    // Mertsalov on continuous exact data (§000.14: 27.000).
+    let mertsalov = d.cycle.mertsalov(15.7, 1.0 / 15.0).0 - J_CONST;
+    assert!((mertsalov - 27.000).abs() < 5e-3, "{mertsalov}");
 }
 
 #[test]

@@ -339,9 +339,9 @@ impl Cycle {
             .sum()
     }
 
-    /// Merkin's route on the continuous data: T_I = ΔT − ω_ср²·J_пр/2, J_I = ΔT_I/(δ·ω_ср²).
+    /// Mertsalov's route on the continuous data: T_I = ΔT − ω_ср²·J_пр/2, J_I = ΔT_I/(δ·ω_ср²).
     /// Returns (J_I, ΔT_I, ψ of T_I max, ψ of T_I min).
-    pub fn merkin(&self, w_avg: f64, delta: f64) -> (f64, f64, f64, f64) {
+    pub fn mertsalov(&self, w_avg: f64, delta: f64) -> (f64, f64, f64, f64) {
         let t1 = |p: f64| self.delta_t(p) - w_avg * w_avg * self.j_at(p) / 2.0;
         let (pa, a) = self.extremum(t1, true);
         let (pb, b) = self.extremum(t1, false);

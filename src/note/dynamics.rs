@@ -65,7 +65,7 @@ pub(super) fn dynamics(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         r.position().is_none()
             && matches!(
                 r.method,
-                Method::Integration | Method::Wittenbauer | Method::Merkin
+                Method::Integration | Method::Wittenbauer | Method::Mertsalov
             )
     });
     super::flywheel::routes(w, &d);

@@ -1,5 +1,5 @@
 //! The flywheel worked (seed 000 §5.6–5.8): J_м by Wittenbauer's energy–mass diagram and by
-//! Merkin's T_I, each formula with the segment read off its diagram; the constant moment and
+//! Mertsalov's T_I, each formula with the segment read off its diagram; the constant moment and
 //! the mean power; the exact flywheel; its material, D = (J/(K_j·ρ))^(1/5), m = K_m·ρ·D³
 //! with the J_м the construction gives (Wittenbauer's, the sheet's: a hand-in sizes the
 //! flywheel it draws), beside the exact J_м and the δ each gives, and the rim speed against
@@ -53,9 +53,9 @@ pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {
         ("ω_{ср}", M::MeanSpeed, "rad/s"),
     ];
     explain_words(w, &items);
-    // Merkin: the range of T_I, less the constant inertia.
+    // Mertsalov: the range of T_I, less the constant inertia.
     let j_const = d.spec.constant_inertia();
-    w.doc.say(w.word(N::MerkinWorked));
+    w.doc.say(w.word(N::MertsalovWorked));
     w.worked(
         Worked::new(
             sym("J_{м}"),
@@ -67,17 +67,17 @@ pub(super) fn routes(w: &mut Writer<'_, '_>, d: &Dynamics) {
             format!(
                 "{} - {}",
                 frac(
-                    &num(g.merkin.range, 5, lang),
+                    &num(g.mertsalov.range, 5, lang),
                     &format!("{} dot {}^2", num(delta, 4, lang), num(om, 5, lang))
                 ),
                 num(j_const, 5, lang)
             ),
-            Printed::si(g.merkin.read, 5, JM, lang),
+            Printed::si(g.mertsalov.read, 5, JM, lang),
         )
-        .gives_by(flywheel(Symbol::Inertia), Method::Merkin),
+        .gives_by(flywheel(Symbol::Inertia), Method::Mertsalov),
     );
     let items = [
-        ("ΔT_{I}", M::MerkinRange, "J"),
+        ("ΔT_{I}", M::MertsalovRange, "J"),
         ("J_{const}", M::ConstantInertia, "kg*m^2"),
     ];
     explain_words(w, &items);

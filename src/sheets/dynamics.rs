@@ -1,6 +1,6 @@
 //! Plate "Динамика машины" (seed 000 §5): the diagram of the reduced moment of resistance with
 //! the works A_с (graphical integration) and A_д, ΔT, J_пр, the energy–mass diagram with its
-//! tangents, Merkin's T_I, ω(φ) with the flywheel, the data — the flywheel sized from the
+//! tangents, Mertsalov's T_I, ω(φ) with the flywheel, the data — the flywheel sized from the
 //! construction's J_м, with the δ each J_м gives — and Tables 9/10 in the seed's shape
 //! (graphical | analytic | error). One A1 sheet (more if the views need it); the flywheel's
 //! part drawing is a sheet of its own ([`super::flywheel`]).
@@ -84,7 +84,7 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     ];
     blocks.extend([
         Block::view(
-            g.merkin_figure.clone(),
+            g.mertsalov_figure.clone(),
             cap("T_{I} = ΔT − ω_{ср}^2 J_{пр}/2", &[(g.scale_t1, true)]),
             None,
         ),
@@ -199,7 +199,7 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
     let g = &d.diagrams;
     for (k, route, reading) in [
         (0, Route::Wittenbauer, &g.wittenbauer),
-        (1, Route::Merkin, &g.merkin),
+        (1, Route::Mertsalov, &g.mertsalov),
     ] {
         let (name, formula, worked) = route_formula(d, route, lang);
         let j = j_or_none(reading.j_fw, Some(route));
@@ -354,7 +354,7 @@ fn positions_table(d: &Dynamics, lang: Lang) -> TableBlock {
 }
 
 /// A flywheel route's name, formula and the formula with its numbers: Wittenbauer's
-/// `μ_{T}·kl/(δω_{ср}^2)` at the energy–mass diagram's μ_T, Merkin's `ΔT_{I}/(δω_{ср}^2) −
+/// `μ_{T}·kl/(δω_{ср}^2)` at the energy–mass diagram's μ_T, Mertsalov's `ΔT_{I}/(δω_{ср}^2) −
 /// J_{ред} − J_{кс}` (the constant inertias, which T_I carries, taken off).
 fn route_formula(d: &Dynamics, route: Route, lang: Lang) -> (&'static str, String, String) {
     let g = &d.diagrams;
@@ -373,13 +373,13 @@ fn route_formula(d: &Dynamics, route: Route, lang: Lang) -> (&'static str, Strin
     }
     let (mut formula, mut worked) = (
         "ΔT_{I}/(δω_{ср}^2)".to_string(),
-        format!("{}/{under}", num(g.merkin.range, lang)),
+        format!("{}/{under}", num(g.mertsalov.range, lang)),
     );
     for c in &d.spec.constant {
         formula.push_str(&format!(" − J_{{{}}}", c.name));
         worked.push_str(&format!(" − {}", num(c.inertia, lang)));
     }
-    (DynamicsText::Merkin.get(lang), formula, worked)
+    (DynamicsText::Mertsalov.get(lang), formula, worked)
 }
 
 /// The results of the whole cycle: graphical | unit | analytic | error.

@@ -32,7 +32,7 @@ catalogue! {
         Title => ("Динамика машины", "Динаміка машини", "Machine dynamics"),
         NoFlywheel => ("маховик не нужен", "маховик не потрібен", "no flywheel is needed"),
         Wittenbauer => ("Виттенбауэр", "Віттенбауер", "Wittenbauer"),
-        Merkin => ("Меркин", "Меркін", "Merkin"),
+        Mertsalov => ("Мерцалов", "Мерцалов", "Mertsalov"),
         // A line of the dynamics sheet opens with the kind of flywheel sized.
         Rim => ("Обод", "Обід", "Rim"),
         Disc => ("Диск", "Диск", "Disc"),

@@ -57,7 +57,7 @@ catalogue! {
         EnergyScale => ("масштаб диаграммы энергомасс по оси ΔT", "масштаб діаграми енергомас по осі ΔT", "the scale of the energy–mass diagram along ΔT"),
         Segment => ("отрезок, отсекаемый касательными на оси ΔT", "відрізок, що відтинають дотичні на осі ΔT", "the segment the tangents cut off on the ΔT axis"),
         Irregularity => ("коэффициент неравномерности хода", "коефіцієнт нерівномірності ходу", "the coefficient of irregularity"),
-        MerkinRange => ("наибольший размах T_{I}", "найбільший розмах T_{I}", "the largest range of T_{I}"),
+        MertsalovRange => ("наибольший размах T_{I}", "найбільший розмах T_{I}", "the largest range of T_{I}"),
         Diameter => ("наружный диаметр маховика", "зовнішній діаметр маховика", "the flywheel's outer diameter"),
         Density => ("плотность материала маховика", "густина матеріалу маховика", "the density of the flywheel's material"),
         ShapeJ => ("коэффициент формы в J = K_{j}·ρ·D⁵", "коефіцієнт форми в J = K_{j}·ρ·D⁵", "the shape coefficient of J = K_{j}·ρ·D⁵"),

@@ -16,7 +16,7 @@ catalogue! {
         Envelope => ("огибающая", "обвідна", "envelope"),
         Triangles => ("треугольники скоростей", "трикутники швидкостей", "velocity triangles"),
         Wittenbauer => ("Виттенбауэр", "Віттенбауер", "Wittenbauer"),
-        Merkin => ("Меркин", "Меркін", "Merkin"),
+        Mertsalov => ("Мерцалов", "Мерцалов", "Mertsalov"),
         Formula => ("формула", "формула", "formula"),
         Meshing => ("картина зацепления", "картина зачеплення", "meshing diagram"),
         SlidingDiagram => ("диаграмма λ", "діаграма λ", "λ diagram"),

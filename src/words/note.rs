@@ -178,9 +178,9 @@ catalogue! {
         EnergyTable => ("Изменение кинетической энергии", "Зміна кінетичної енергії", "Change of kinetic energy"),
         FlywheelSize => ("Размеры маховика:", "Розміри маховика:", "The flywheel's size:"),
         FlywheelRoutes => (
-            "Момент инерции маховика находим по диаграмме энергомасс (Виттенбауэр: касательные под углами ψ_max, ψ_min отсекают отрезок kl), по диаграмме T_I (Меркин) и точным интегрированием уравнения движения:",
-            "Момент інерції маховика знаходимо за діаграмою енергомас (Віттенбауер: дотичні під кутами ψ_max, ψ_min відтинають відрізок kl), за діаграмою T_I (Меркін) і точним інтегруванням рівняння руху:",
-            "The flywheel's moment of inertia by the energy–mass diagram (Wittenbauer: the tangents at ψ_max, ψ_min cut off kl), by the T_I diagram (Merkin) and by integrating the equation of motion exactly:"
+            "Момент инерции маховика находим по диаграмме энергомасс (Виттенбауэр: касательные под углами ψ_max, ψ_min отсекают отрезок kl), по диаграмме T_I (Мерцалов) и точным интегрированием уравнения движения:",
+            "Момент інерції маховика знаходимо за діаграмою енергомас (Віттенбауер: дотичні під кутами ψ_max, ψ_min відтинають відрізок kl), за діаграмою T_I (Мерцалов) і точним інтегруванням рівняння руху:",
+            "The flywheel's moment of inertia by the energy–mass diagram (Wittenbauer: the tangents at ψ_max, ψ_min cut off kl), by the T_I diagram (Mertsalov) and by integrating the equation of motion exactly:"
         ),
         FlywheelTable => ("Работы, момент инерции маховика и коэффициент неравномерности", "Роботи, момент інерції маховика і коефіцієнт нерівномірності", "Works, the flywheel's moment of inertia and the coefficient of irregularity"),
         ExactFlywheel => ("Момент инерции маховика по точному решению:", "Момент інерції маховика за точним розв’язком:", "The flywheel's moment of inertia by the exact solution:"),

@@ -131,7 +131,7 @@ fn quick_bench_times_the_flywheel_routes_against_the_exact_one() {
     let text = std::fs::read_to_string(dir.join("bench/bench.json")).expect("bench.json");
     let v: Value = serde_json::from_str(&text).expect("JSON");
     let rows = v["rows"].as_array().expect("rows");
-    for family in ["wittenbauer", "merkin"] {
+    for family in ["wittenbauer", "mertsalov"] {
         let errors: Vec<f64> = RESOLUTIONS
             .iter()
             .map(|&n| {
@@ -144,9 +144,9 @@ fn quick_bench_times_the_flywheel_routes_against_the_exact_one() {
             })
             .collect();
         // Wittenbauer's tangents approach the exact flywheel (25.52 kg·m²) as N grows;
-        // Merkin's route approaches its own method error (continuous: 27.00, +1.48 kg·m²),
+        // Mertsalov's route approaches its own method error (continuous: 27.00, +1.48 kg·m²),
         // from below since its range is read off the drawn curve's extremes.
-        let floor = if family == "merkin" { 1.48 } else { 0.0 };
+        let floor = if family == "mertsalov" { 1.48 } else { 0.0 };
         assert!(
             (errors[5] - floor).abs() < (errors[0] - floor).abs(),
             "{family}: {errors:?}"

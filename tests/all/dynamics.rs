@@ -39,19 +39,19 @@ fn the_shaper_report_meets_the_acceptance_values() {
     // The flywheel: 25.521 kg·m² (energy equation integrated exactly).
     let j = rows(&v, "J_flywheel");
     let methods: Vec<&str> = j.iter().filter_map(|r| r["method"].as_str()).collect();
-    assert_eq!(methods, ["wittenbauer", "merkin"]);
+    assert_eq!(methods, ["wittenbauer", "mertsalov"]);
     for r in &j {
         let exact = num(r, "analytic");
         assert!((exact - 25.52).abs() < 0.01 * 25.52, "{exact}");
         assert!(r["position"].is_null());
     }
     // Over the diagrams' 24 positions (the 12 plans' and those between) Wittenbauer's
-    // tangents find J_м within 1 % (15 % short over the 12 alone); Merkin's route keeps its
+    // tangents find J_м within 1 % (15 % short over the 12 alone); Mertsalov's route keeps its
     // own error, over the exact flywheel by about 6 % (its J_I on the exact data, 27,00).
     let e = |r: &serde_json::Value| num(r, "rel_error");
     assert!(e(j[0]).abs() < 0.01 && e(j[0]) != 0.0, "{}", j[0]);
     assert!(e(j[1]) > 0.03 && e(j[1]) < 0.1, "{}", j[1]);
-    // δ: the exact flywheel gives 1/15 to 1e-6; Merkin's heavier one less.
+    // δ: the exact flywheel gives 1/15 to 1e-6; Mertsalov's heavier one less.
     let delta = rows(&v, "delta");
     for r in &delta {
         assert!((num(r, "analytic") - 1.0 / 15.0).abs() < 1e-6, "{r}");
@@ -197,7 +197,7 @@ fn a_machine_that_needs_no_flywheel_gets_none_and_its_plate_builds() {
     let path = dir.join("loose.toml");
     std::fs::write(&path, text).expect("write");
     let v = report_json(path.to_str().expect("utf-8"));
-    // Every route says so: the exact one, Wittenbauer's and Merkin's (which read a J < 0 off
+    // Every route says so: the exact one, Wittenbauer's and Mertsalov's (which read a J < 0 off
     // their diagrams, printed before as J = −89.7 kg·m² and "-inf %"), the notes, the plate.
     let js = rows(&v, "J_flywheel");
     assert_eq!(js.len(), 2);
@@ -215,7 +215,7 @@ fn a_machine_that_needs_no_flywheel_gets_none_and_its_plate_builds() {
         "{n}"
     );
     assert!(
-        n.contains("Merkin's route gives: no flywheel is needed"),
+        n.contains("Mertsalov's route gives: no flywheel is needed"),
         "{n}"
     );
     assert!(!n.contains("inf %") && !n.contains("NaN"), "{n}");
@@ -320,17 +320,17 @@ fn wittenbauer_tangents_touch_the_drawn_curve() {
     }
 }
 
-/// Issue 45: Merkin's horizontals T_I max and T_I min touch the T_I curve as the sheet draws
+/// Issue 45: Mertsalov's horizontals T_I max and T_I min touch the T_I curve as the sheet draws
 /// it (the French curve goes on past a turning point of the points to the extreme between
 /// them): no part of the drawn curve lies past either, and each is level with the curve's
 /// extreme (to 0,01 mm). The shaper's T_I min stood at the lowest point, 0,94 mm above the
 /// curve drawn just before it, and ΔT_I was read 10 % short.
 #[test]
-fn merkin_horizontals_touch_the_drawn_curve() {
+fn mertsalov_horizontals_touch_the_drawn_curve() {
     use tmm::construct::Item;
     for name in ["shaper", "v-engine"] {
         let d = dynamics(name);
-        let fig = &d.diagrams.merkin_figure;
+        let fig = &d.diagrams.mertsalov_figure;
         let curve = fig
             .steps
             .iter()
@@ -364,7 +364,7 @@ fn merkin_horizontals_touch_the_drawn_curve() {
 /// and under the lines, T_I min 0,56 mm under its line, because the dimension's extension
 /// lines ran on past the horizontals' ends.
 #[test]
-fn merkin_horizontals_are_named_at_their_ends() {
+fn mertsalov_horizontals_are_named_at_their_ends() {
     for name in ["shaper", "v-engine"] {
         let s = tmm::load(&support::root().join(format!("constructions/{name}.toml")))
             .unwrap_or_else(|e| panic!("{e}"));
@@ -444,7 +444,7 @@ fn the_dynamics_diagrams_number_their_positions() {
             ("A", &dg.work, None),
             ("ΔT", &dg.energy, Some(&|i| dg.delta_t[i])),
             ("J", &dg.inertia, Some(&|i| dg.j[i])),
-            ("T_I", &dg.merkin_figure, Some(&t1)),
+            ("T_I", &dg.mertsalov_figure, Some(&t1)),
             ("ω", &d.omega, None),
         ];
         for (what, fig, value) in figures {
@@ -465,5 +465,34 @@ fn the_dynamics_diagrams_number_their_positions() {
                 }
             }
         }
+    }
+}
+
+/// The flywheel by the range of T_I = ΔT − T_II is Н. И. Мерцалов's method: the dynamics
+/// sheet's tables name it so in every language, never «Меркин» (issue 45: a misattribution).
+#[test]
+fn the_t_i_method_is_mertsalov_s() {
+    let s =
+        tmm::scene::load(&crate::support::root().join("constructions/shaper.toml")).expect("scene");
+    let session = tmm::study::Session::new(&s, tmm::construct::Drafting::HAND);
+    for (lang, name) in [
+        (tmm::scale::Lang::Ru, "Мерцалов"),
+        (tmm::scale::Lang::Uk, "Мерцалов"),
+        (tmm::scale::Lang::En, "Mertsalov"),
+    ] {
+        let kind = tmm::scene::PlateKind::parse("dynamics").expect("kind");
+        let cells: Vec<String> = tmm::build(&session, kind, lang)
+            .expect("sheets")
+            .iter()
+            .flat_map(|p| {
+                p.tables
+                    .iter()
+                    .flat_map(|t| t.rows.iter().flatten().cloned())
+            })
+            .collect();
+        assert!(cells.iter().any(|c| c == name), "{lang:?}: {cells:?}");
+        assert!(!cells
+            .iter()
+            .any(|c| c.contains("Меркин") || c.contains("Merkin")));
     }
 }

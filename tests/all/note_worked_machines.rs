@@ -2,7 +2,7 @@
 //! them — read off the typeset text of the shaper's note in ru, uk and en: each group's
 //! reaction from its moment equation, the driving link's and Zhukovsky's balancing force,
 //! the drive's power N = P·V/η, M_пр and J_пр at one position, H and μ_A, J_м by
-//! Wittenbauer and by Merkin, the flywheel's D, m and rim speed — every number the study's,
+//! Wittenbauer and by Mertsalov, the flywheel's D, m and rim speed — every number the study's,
 //! as the note prints it; and no formula of these sections left without its «где» in any
 //! scene with `[forces]` or `[dynamics]`.
 
@@ -154,8 +154,8 @@ fn the_shaper_note_works_the_dynamics_with_the_studys_numbers() {
             "{lang:?}: μ_A"
         );
         assert!((g.scale_a.value() - 2.0 * 0.026 * 192.0).abs() < 1e-9);
-        // J_м by Wittenbauer and by Merkin, as the report's rows (graphical).
-        for m in [Method::Wittenbauer, Method::Merkin] {
+        // J_м by Wittenbauer and by Mertsalov, as the report's rows (graphical).
+        for m in [Method::Wittenbauer, Method::Mertsalov] {
             let j = row(&report, "J_flywheel", m, None);
             // Not the table's 21,7554.
             assert!(

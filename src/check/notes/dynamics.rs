@@ -72,9 +72,9 @@ pub struct Routes {
     pub positions: usize,
     /// Wittenbauer's tangents.
     pub wittenbauer: Flywheel<RouteFlywheel>,
-    /// Merkin's route.
-    pub merkin: Flywheel<RouteFlywheel>,
-    /// Merkin's on the continuous exact data: J, kg·m².
+    /// Mertsalov's route.
+    pub mertsalov: Flywheel<RouteFlywheel>,
+    /// Mertsalov's on the continuous exact data: J, kg·m².
     pub continuous: Flywheel<f64>,
 }
 
@@ -131,7 +131,7 @@ impl DynamicsNote {
             DynamicsNote::Exact(e) => e.flywheel.finding().into_iter().collect(),
             DynamicsNote::Routes(r) => [
                 r.wittenbauer.finding(),
-                r.merkin.finding(),
+                r.mertsalov.finding(),
                 r.continuous.finding(),
             ]
             .into_iter()

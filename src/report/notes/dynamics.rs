@@ -98,10 +98,10 @@ fn exact(e: &Exact) -> String {
 fn routes(r: &Routes) -> String {
     let continuous = either(&r.continuous, |j| format!("gives {} kg·m²", n(*j)));
     format!(
-        "at {} positions {}, {}; Merkin on the continuous exact data {continuous} (T_II with ω = ω_avg is the method's own error)",
+        "at {} positions {}, {}; Mertsalov on the continuous exact data {continuous} (T_II with ω = ω_avg is the method's own error)",
         r.positions,
         route("Wittenbauer's tangents give", &r.wittenbauer),
-        route("Merkin's route gives", &r.merkin),
+        route("Mertsalov's route gives", &r.mertsalov),
     )
 }
 
