@@ -91,20 +91,25 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
             CamText::PressureAngle
         }
         .get(lang);
-        blocks.push(Block::view(
-            cam_marks::relabelled(
-                g,
-                ANGLE_LIMIT_NOTE,
-                &cam_marks::angle_limit(&cam.spec, lang),
-            ),
-            format!(
-                "{what}, {}, μ_{{{}}} = 1 °/{}",
-                mu("φ", d.phi, lang),
-                cam.spec.angle_symbol(),
-                mm
-            ),
-            None,
-        ));
+        blocks.push(
+            Block::view(
+                cam_marks::relabelled(
+                    g,
+                    ANGLE_LIMIT_NOTE,
+                    &cam_marks::angle_limit(&cam.spec, lang),
+                ),
+                format!(
+                    "{what}, {}, μ_{{{}}} = 1 °/{}",
+                    mu("φ", d.phi, lang),
+                    cam.spec.angle_symbol(),
+                    mm
+                ),
+                None,
+            )
+            // The graduation's numbers, left of the angle axis, kept clear of the frame and the
+            // block beside it (they were pushed up over their ticks).
+            .with_edge_label_room_of(|t| t.parse::<u32>().is_ok()),
+        );
     }
     let drawings = blocks.len();
     let mut lines = data_lines(&cam, read_mm, lang);
@@ -198,7 +203,9 @@ pub(super) fn diagram_block(d: &CamDiagrams, spec: &CamSpec, lang: Lang) -> Bloc
 /// diagram, the profile, the angle graph if `drawings` is 4 (the first `drawings` blocks),
 /// then the text and the tables. The diagrams always go first, top left; the orders tried:
 /// the construction's; the text and the tables before the drawings they would otherwise be
-/// left under; the profile before the combined diagram.
+/// left under; the profile before the combined diagram. When none fits one sheet, the orders
+/// again with the angle graph's room for its numbers given up (the fourth drawing's), a
+/// sheet rather than that room.
 pub(super) fn one_sheet(
     sheet: Sheet,
     blocks: Vec<Block>,
@@ -206,30 +213,45 @@ pub(super) fn one_sheet(
     title: &crate::plate::TitleBlock,
     lang: Lang,
 ) -> Result<Vec<Plate>, BuildError> {
-    let words = blocks[drawings.min(blocks.len())..].to_vec();
-    let figures = &blocks[..drawings.min(blocks.len())];
-    let mut swapped = figures.to_vec();
-    if swapped.len() > 2 {
-        swapped.swap(1, 2);
-    }
-    let mut words_first = figures[..1.min(figures.len())].to_vec();
-    words_first.extend(words.iter().cloned());
-    words_first.extend(figures.iter().skip(1).cloned());
-    let others = [
-        words_first,
-        swapped.into_iter().chain(words.iter().cloned()).collect(),
-    ];
-    let first = lay_out(sheet, blocks, "cam", title, lang)?;
-    if first.len() == 1 {
+    let in_order = |blocks: &[Block]| -> Result<(Vec<Plate>, bool), BuildError> {
+        let words = blocks[drawings.min(blocks.len())..].to_vec();
+        let figures = &blocks[..drawings.min(blocks.len())];
+        let mut swapped = figures.to_vec();
+        if swapped.len() > 2 {
+            swapped.swap(1, 2);
+        }
+        let mut words_first = figures[..1.min(figures.len())].to_vec();
+        words_first.extend(words.iter().cloned());
+        words_first.extend(figures.iter().skip(1).cloned());
+        let orders = [
+            blocks.to_vec(),
+            words_first,
+            swapped.into_iter().chain(words.iter().cloned()).collect(),
+        ];
+        let mut first = None;
+        for ordered in orders {
+            let plates = lay_out(sheet, ordered, "cam", title, lang)?;
+            if plates.len() == 1 {
+                return Ok((plates, true));
+            }
+            first.get_or_insert(plates);
+        }
+        Ok((first.unwrap_or_default(), false))
+    };
+    let (first, one) = in_order(&blocks)?;
+    if one || drawings < 4 {
         return Ok(first);
     }
-    for ordered in others {
-        let plates = lay_out(sheet, ordered, "cam", title, lang)?;
-        if plates.len() == 1 {
-            return Ok(plates);
+    let mut bare = blocks;
+    if let Block::Views { parts, .. } = &mut bare[3] {
+        for p in parts {
+            p.label_room = None;
         }
     }
-    Ok(first)
+    match in_order(&bare)? {
+        (plates, true) => Ok(plates),
+        _ => Ok(first),
+    }
 }
 
 /// A law's name in `lang`.

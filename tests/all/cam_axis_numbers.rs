@@ -52,3 +52,30 @@ fn no_line_strikes_a_phi_axis_number() {
     }
     assert!(seen > 27 * 60, "{seen} numbers");
 }
+
+/// How far a graduation number's middle may stand from its tick's level, mm: the placer's
+/// rounding, not a shift to another place.
+const LEVEL_MM: f64 = 0.3;
+
+/// The numbers of the γ(φ) or λ(φ) graph's angle axis stand level with their ticks, left of
+/// the axis, on every cam sheet as it is laid out (issue 45: on cam-pz5, cam-shock and
+/// cam-undercut, whose graph the packer put near the frame, the placer lifted them over their
+/// ticks; the graph's block now keeps their room).
+#[test]
+fn every_angle_graduation_number_stands_level_with_its_tick() {
+    let mut seen = 0;
+    for (at, p, labels) in every_cam_sheet() {
+        for l in labels.iter().filter(|l| noted(&p, l, "tick ")) {
+            seen += 1;
+            let middle = (l.rect.min + l.rect.max) * 0.5;
+            assert!(
+                (middle.y - l.anchor.y).abs() < LEVEL_MM && l.rect.max.x <= l.anchor.x,
+                "{at}: «{}» at {:?}, its tick's end at {:?}",
+                l.text,
+                l.rect,
+                l.anchor
+            );
+        }
+    }
+    assert!(seen >= 80, "{seen} numbers");
+}
