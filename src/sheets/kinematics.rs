@@ -32,6 +32,15 @@ type Run = Vec<(Block, Option<u8>)>;
 /// plans and the diagrams; what one A1 does not hold goes on a second in reading order
 /// (structure, positions and velocity plans; then acceleration plans, diagrams, tables).
 pub fn build(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<Plate>, BuildError> {
+    let mut plates = sheets(session, lang, structure)?;
+    for p in &mut plates {
+        super::scale_of_the_mechanism(p);
+    }
+    Ok(plates)
+}
+
+/// The sheets [`build`] lays out, each with the plan's scale in its title block.
+fn sheets(session: &Session<'_>, lang: Lang, structure: bool) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
     let sheet = Sheet::default();
     let sc = session.kin_scales()?;

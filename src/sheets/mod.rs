@@ -139,6 +139,20 @@ fn title_block(scene: &Scene, sheet_title: &str, plan: Option<Scale>, lang: Lang
     }
 }
 
+/// The titles of the figures that draw the mechanism at μ_l: the plan of positions and the
+/// structural scheme.
+const MECHANISM_FIGURES: [&str; 2] = ["plan", "scheme"];
+
+/// A kinematic sheet that draws no mechanism — the continuation of plans and diagrams, whose
+/// scales are the μ of their captions — writes «—» for its scale in the title block: the
+/// scale of ГОСТ 2.104 is its images' (the shaper's second sheet wrote 1:2,5).
+fn scale_of_the_mechanism(p: &mut Plate) {
+    let draws = (p.views.iter()).any(|v| MECHANISM_FIGURES.contains(&v.figure.title.as_str()));
+    if !draws {
+        p.title_block.scale = "—".into();
+    }
+}
+
 /// μ_l as a ГОСТ 2.302 scale: a reduction 1:n (μ_l ≥ 0,001 м/мм) or an enlargement n:1.
 fn gost_scale(plan: Scale, lang: Lang) -> String {
     let n = plan.value() * 1000.0;

@@ -510,3 +510,29 @@ fn tangent_method_is_an_option_of_the_scene() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("kinematics.differentiation"));
 }
+
+/// A kinematic sheet that draws the mechanism (its plan of positions or its scheme) writes
+/// that drawing's scale in its title block; one that holds only plans and diagrams, whose
+/// scales their captions give, writes «—» (issue 45: the shaper's and the V engine's second
+/// sheets wrote 1:2,5 and 1:1 with no mechanism drawn on them).
+#[test]
+fn a_sheet_without_the_mechanism_writes_no_scale() {
+    for (name, scales) in [
+        ("shaper", vec!["1:2,5", "—"]),
+        ("v-engine", vec!["1:1", "—"]),
+        ("six-bar", vec!["1:2,5", "—"]),
+        ("four-bar", vec!["1:2"]),
+    ] {
+        let s =
+            tmm::scene::load(&crate::support::root().join(format!("constructions/{name}.toml")))
+                .expect("scene");
+        let session = tmm::study::Session::new(&s, Drafting::HAND);
+        let kind = tmm::scene::PlateKind::parse("kinematics").expect("kind");
+        let got: Vec<String> = tmm::build(&session, kind, tmm::scale::Lang::Ru)
+            .expect("sheets")
+            .iter()
+            .map(|p| p.title_block.scale.clone())
+            .collect();
+        assert_eq!(got, scales, "{name}");
+    }
+}
