@@ -180,11 +180,8 @@ fn position_sheet(
     let scene = session.scene();
     let mut blocks = Vec::new();
     let mut lettered = 0;
-    let schemes = (f.analysis.polygons.groups.iter().map(|g| &g.scheme)).chain([&f
-        .analysis
-        .polygons
-        .driver
-        .scheme]);
+    let drawn = &f.analysis.polygons;
+    let schemes = (drawn.groups.iter().map(|g| &g.scheme)).chain([&drawn.driver.scheme]);
     let points = (session.mechanism("the force analysis").ok())
         .and_then(|m| crate::linkage::Program::compile(m).ok())
         .map(|p| p.names)

@@ -42,7 +42,7 @@ pub(crate) fn verdict_lines(
 /// At each corner of S, the rates the diagrams give beside the limits of the branch past the
 /// corner that they are compared with (the analytic table has no row there, the plan being
 /// singular), so that the error table's δ there can be checked, and why it is large:
-/// «Пол. 6, ветвь после излома, по диаграммам и предел: v_E = 3,93 и 3,06 м/с, …».
+/// «Пол. 6, ветвь после излома, по диаграммам и предел: V_E = 4,024 и 3,059 м/с, …».
 pub(crate) fn corner_lines(d: &KinDiagrams, lang: Lang) -> Vec<String> {
     let at = |label: &str, symbol: Symbol| {
         (d.rows.iter()).find(|r| r.key.symbol == symbol && r.position().as_deref() == Some(label))
