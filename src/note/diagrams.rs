@@ -14,7 +14,8 @@ use crate::scale::format_fixed;
 use crate::scene::PlateKind;
 use crate::study::Kinematics;
 use crate::words::{
-    plain, quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T, Text as S,
+    indexed, plain, quantity, unit_in, KinematicsMeaning as M, KinematicsNote as K, NoteText as T,
+    Text as S,
 };
 
 /// The diagrams by the method of chords, when the study charts a point.
@@ -367,14 +368,4 @@ fn far_point(p: &Plans<'_>, point: &str, lang: crate::scale::Lang) -> Option<Far
         near_len: format!("{pivot}{point}"),
         far_len: format!("{pivot}{}", plain(&far.name)),
     })
-}
-
-/// A name with its trailing digits as the label's subscript: `ps3` → `ps_{3}`, `CS3` →
-/// `CS_{3}`.
-fn indexed(name: &str) -> String {
-    let head = name.trim_end_matches(|c: char| c.is_ascii_digit());
-    match &name[head.len()..] {
-        "" => name.to_string(),
-        digits => format!("{head}_{{{digits}}}"),
-    }
 }

@@ -11,7 +11,7 @@ use super::BuildError;
 use crate::construct::Figure;
 use crate::dynamics::{Dynamics, FlywheelKind};
 use crate::geom::{DVec2, Rect};
-use crate::plate::{layout, Plate, SheetSize, TableBlock};
+use crate::plate::{layout, Layout, Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang};
 use crate::study::Session;
 use crate::words::{unit_in, DynamicsText};
@@ -103,14 +103,18 @@ fn over_title_block(plate: &mut Plate, lines: &[String]) {
     let l = layout(plate);
     let (was, tb) = (l.texts[k], l.title_block);
     let min = DVec2::new(tb.min.x, tb.min.y - OVER_TITLE_MM - was.height());
-    let there = Rect::new(min, min + was.size());
-    let clear = there.inflate(CLEAR_MM);
     // Every other item: the requirements' own box is left out.
-    let mut others = l.boxes().filter(|r| *r != was);
-    let free = l.frame.contains(&there) && others.all(|r| !r.intersects(&clear));
-    if free {
+    if free(&l, Rect::new(min, min + was.size()), Some(was)) {
         plate.texts[k].at += min - was.min;
     }
+}
+
+/// Whether the place `there` lies inside the frame, [`CLEAR_MM`] clear of every item of the
+/// laid-out sheet `l` but the one whose box is `own`.
+fn free(l: &Layout, there: Rect, own: Option<Rect>) -> bool {
+    let clear = there.inflate(CLEAR_MM);
+    let mut others = l.boxes().filter(|r| Some(*r) != own);
+    l.frame.contains(&there) && others.all(|r| !r.intersects(&clear))
 }
 
 /// How far the roughness of the other surfaces stands from the frame's right and top edges,
@@ -133,8 +137,7 @@ fn in_top_right_corner(plate: &mut Plate, sign: &Figure) {
         DVec2::new(origin.x + lo.x, origin.y - hi.y),
         DVec2::new(origin.x + hi.x, origin.y - lo.y),
     );
-    let clear = there.inflate(CLEAR_MM);
-    if l.frame.contains(&there) && l.boxes().all(|r| !r.intersects(&clear)) {
+    if free(&l, there, None) {
         plate.views.push(crate::plate::View {
             figure: sign.clone(),
             origin,

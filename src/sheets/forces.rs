@@ -43,7 +43,7 @@ pub fn build(
             session,
             &st,
             (&f, indicators && n == 0),
-            phi,
+            (phi, &plan.program.names),
             lang,
         )?);
     }
@@ -168,13 +168,14 @@ fn polygon_views(
     blocks.extend(views);
 }
 
-/// The sheet (or sheets) of one position; the first carries an engine's indicator diagrams
-/// when `first` (no dynamics sheet does).
+/// The sheet (or sheets) of one position at the crank angle `phi` of the mechanism whose
+/// points are named `points`; the first carries an engine's indicator diagrams when `first`
+/// (no dynamics sheet does).
 fn position_sheet(
     session: &Session<'_>,
     st: &Structure,
     (f, first): (&PositionForces, bool),
-    phi: f64,
+    (phi, points): (f64, &[String]),
     lang: Lang,
 ) -> Result<Vec<Plate>, BuildError> {
     let scene = session.scene();
@@ -182,11 +183,7 @@ fn position_sheet(
     let mut lettered = 0;
     let drawn = &f.analysis.polygons;
     let schemes = (drawn.groups.iter().map(|g| &g.scheme)).chain([&drawn.driver.scheme]);
-    let points = (session.mechanism("the force analysis").ok())
-        .and_then(|m| crate::linkage::Program::compile(m).ok())
-        .map(|p| p.names)
-        .unwrap_or_default();
-    let letters = detail_letters(&points, schemes, lang);
+    let letters = detail_letters(points, schemes, lang);
     for g in &f.analysis.polygons.groups {
         let [i, j] = g.links;
         let kind = st

@@ -307,18 +307,9 @@ pub(super) struct Results<'a> {
 /// point of a drawing with its index subscripted as the drawing names it, λ_{1} (B_{1}).
 pub(super) fn quantity(r: &Row, lang: Lang) -> String {
     let name = symbols::quantity(r.key.symbol, &r.key.subject, lang);
-    let Some(p) = r.position() else {
-        return name;
-    };
-    match p.find(|c: char| c.is_ascii_digit()) {
-        Some(i)
-            if i > 0
-                && p[..i].chars().all(char::is_alphabetic)
-                && p[i..].chars().all(|c| c.is_ascii_digit()) =>
-        {
-            format!("{name} ({}_{{{}}})", &p[..i], &p[i..])
-        }
-        _ => format!("{name} ({p})"),
+    match r.position() {
+        Some(p) => format!("{name} ({})", symbols::indexed(&p)),
+        None => name,
     }
 }
 

@@ -50,7 +50,7 @@ pub(crate) use number::{md_percent, md_value, mm};
 pub(crate) use protocol::StepText;
 pub(crate) use studio::{StudioText, STUDIO_KEYS};
 pub use symbol::Symbol;
-pub(crate) use symbols::{plain, quantity, subscripted};
+pub(crate) use symbols::{indexed, plain, quantity, subscripted};
 pub(crate) use title_block::TitleBlockText;
 
 /// A word of the catalogue: its text in a language.

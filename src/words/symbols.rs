@@ -142,6 +142,21 @@ pub(crate) fn subscripted(name: &str) -> String {
     }
 }
 
+/// A plain name with its trailing digits as the label's subscript, the inverse of [`plain`]:
+/// `ps3` → `ps_{3}`, `B1` → `B_{1}`; a name without a head of letters (a position's number
+/// `12`, `8′`) or without trailing digits is kept.
+pub(crate) fn indexed(name: &str) -> String {
+    let head = name.trim_end_matches(|c: char| c.is_ascii_digit());
+    match &name[head.len()..] {
+        digits
+            if !digits.is_empty() && !head.is_empty() && head.chars().all(char::is_alphabetic) =>
+        {
+            format!("{head}_{{{digits}}}")
+        }
+        _ => name.to_string(),
+    }
+}
+
 /// A point's name without its markup (`S_3` → `S3`).
 pub(crate) fn plain(name: &str) -> String {
     name.replace(['_', '{', '}'], "")

@@ -380,6 +380,29 @@ fn the_part_sheet_names_its_mass_and_material_and_concludes_on_delta() {
 /// the packer left them under the dimensions' table at the top right.
 #[test]
 fn the_technical_requirements_stand_over_the_title_block() {
+    each_flywheel_sheet(|at, p| {
+        // The numbered items (ГОСТ 2.316): the block that begins with «1. ».
+        let k = (p.texts.iter())
+            .position(|t| t.lines.first().is_some_and(|l| l.starts_with("1. ")))
+            .unwrap_or_else(|| panic!("{at}: no technical requirements"));
+        let l = tmm::plate::layout(p);
+        let (r, tb) = (l.texts[k], l.title_block);
+        assert!((r.min.x - tb.min.x).abs() < 1e-9, "{at}: x {}", r.min.x);
+        let gap = tb.min.y - r.max.y;
+        assert!(
+            (0.0..=10.0).contains(&gap),
+            "{at}: {gap} mm over the title block"
+        );
+        let others = l.boxes().filter(|o| *o != r);
+        for o in others {
+            assert!(!o.intersects(&r), "{at}: {o:?} in their place {r:?}");
+        }
+    });
+}
+
+/// The flywheel sheet of the shaper and of the V engine, in ru, uk and en, read exactly and
+/// to 0,5 mm, for `check` with the scene, language and drafting named.
+fn each_flywheel_sheet(mut check: impl FnMut(&str, &Plate)) {
     for name in ["shaper.toml", "v-engine.toml"] {
         let s = load(name);
         for drafting in [Drafting::EXACT, Drafting::HAND] {
@@ -388,23 +411,7 @@ fn the_technical_requirements_stand_over_the_title_block() {
                 let p = tmm::sheets::build(&session, PlateKind::Flywheel, lang)
                     .unwrap_or_else(|e| panic!("{e}"))
                     .remove(0);
-                // The numbered items (ГОСТ 2.316): the block that begins with «1. ».
-                let k = (p.texts.iter())
-                    .position(|t| t.lines.first().is_some_and(|l| l.starts_with("1. ")))
-                    .unwrap_or_else(|| panic!("{name} {lang:?}: no technical requirements"));
-                let l = tmm::plate::layout(&p);
-                let (r, tb) = (l.texts[k], l.title_block);
-                let at = format!("{name} {lang:?} {}", drafting.resolution_mm());
-                assert!((r.min.x - tb.min.x).abs() < 1e-9, "{at}: x {}", r.min.x);
-                let gap = tb.min.y - r.max.y;
-                assert!(
-                    (0.0..=10.0).contains(&gap),
-                    "{at}: {gap} mm over the title block"
-                );
-                let others = l.boxes().filter(|o| *o != r);
-                for o in others {
-                    assert!(!o.intersects(&r), "{at}: {o:?} in their place {r:?}");
-                }
+                check(&format!("{name} {lang:?} {}", drafting.resolution_mm()), &p);
             }
         }
     }
@@ -416,41 +423,31 @@ fn the_technical_requirements_stand_over_the_title_block() {
 /// language and drafting (issue 45: the V engine's flywheel had no such sign).
 #[test]
 fn the_other_surfaces_roughness_stands_in_the_top_right_corner() {
-    for name in ["shaper.toml", "v-engine.toml"] {
-        let s = load(name);
-        for drafting in [Drafting::EXACT, Drafting::HAND] {
-            let session = Session::new(&s, drafting);
-            for lang in [Lang::Ru, Lang::Uk, Lang::En] {
-                let p = tmm::sheets::build(&session, PlateKind::Flywheel, lang)
-                    .unwrap_or_else(|e| panic!("{e}"))
-                    .remove(0);
-                let at = format!("{name} {lang:?} {}", drafting.resolution_mm());
-                let k = (p.views.iter())
-                    .position(|v| v.figure.title == "roughness of the other surfaces")
-                    .unwrap_or_else(|| panic!("{at}: no roughness of the other surfaces"));
-                let figure = &p.views[k].figure;
-                let circles = (figure.steps.iter())
-                    .filter(|s| matches!(s.item, tmm::construct::Item::Circle(_)))
-                    .count();
-                let arcs = (figure.steps.iter())
-                    .filter(|s| matches!(s.item, tmm::construct::Item::Arc(_)))
-                    .count();
-                assert_eq!(
-                    (circles, arcs),
-                    (1, 2),
-                    "{at}: the cast sign and two brackets"
-                );
-                let l = tmm::plate::layout(&p);
-                let r = l.views[k].drawn.expect("drawn");
-                assert!(
-                    l.frame.max.x - r.max.x < 10.0 && r.min.y - l.frame.min.y < 15.0,
-                    "{at}: {r:?} not in the corner of {:?}",
-                    l.frame
-                );
-                for o in l.boxes().filter(|o| *o != r) {
-                    assert!(!o.intersects(&r), "{at}: {o:?} over the sign {r:?}");
-                }
-            }
+    each_flywheel_sheet(|at, p| {
+        let k = (p.views.iter())
+            .position(|v| v.figure.title == "roughness of the other surfaces")
+            .unwrap_or_else(|| panic!("{at}: no roughness of the other surfaces"));
+        let figure = &p.views[k].figure;
+        let circles = (figure.steps.iter())
+            .filter(|s| matches!(s.item, tmm::construct::Item::Circle(_)))
+            .count();
+        let arcs = (figure.steps.iter())
+            .filter(|s| matches!(s.item, tmm::construct::Item::Arc(_)))
+            .count();
+        assert_eq!(
+            (circles, arcs),
+            (1, 2),
+            "{at}: the cast sign and two brackets"
+        );
+        let l = tmm::plate::layout(p);
+        let r = l.views[k].drawn.expect("drawn");
+        assert!(
+            l.frame.max.x - r.max.x < 10.0 && r.min.y - l.frame.min.y < 15.0,
+            "{at}: {r:?} not in the corner of {:?}",
+            l.frame
+        );
+        for o in l.boxes().filter(|o| *o != r) {
+            assert!(!o.intersects(&r), "{at}: {o:?} over the sign {r:?}");
         }
-    }
+    });
 }
