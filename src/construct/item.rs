@@ -101,6 +101,11 @@ pub enum Item {
 /// its subscript (`plate::dimension` writes it there).
 pub const DIMENSION_TEXT_ROOM_MM: f64 = 6.5;
 
+/// An unlabelled [`Item::Vector`] shorter than this gives only its direction: it is drawn as
+/// an arc's arrowhead (the cam's ω₁, 0,1 mm). A longer one is a vector (a train's velocity of
+/// a pole 2,5 mm long, whose whole 4 mm head stood out behind the axis of heights), mm.
+pub const DIRECTION_ONLY_MM: f64 = 1.0;
+
 impl Item {
     /// A slider block's half length along its slide and half width across it, mm: the block
     /// is drawn 10 × 6 mm whatever the scale.

@@ -1,6 +1,7 @@
 //! A link's image on the plans is drawn whole, as the textbook draws it (issue 45): a point
 //! of the link found by similarity on the line of two images lies on their segment drawn end
-//! to end (s₂ at the middle of ab, s₂′ of a′b′), not at the end of a segment from one of them.
+//! to end (s₂ at the middle of ab, s₂′ of a′b′), not at the end of a segment from one of them;
+//! and a component a direction line finds is drawn as the vector it is (b → b₃, k → b₃′).
 
 use tmm::construct::Item;
 use tmm::scale::Lang;
@@ -43,4 +44,57 @@ fn the_coupler_image_runs_from_a_to_b_with_its_centre_of_mass_at_the_middle() {
     }
     // Eleven velocity plans (none at position 6) and the acceleration plan of position 1.
     assert!(plans >= 12, "{plans} plans");
+}
+
+/// The anchor of the label naming `name` on a plan (alone or joined by "≡").
+fn image_at(view: &tmm::plate::View, name: &str) -> Option<tmm::geom::DVec2> {
+    (view.figure.steps.iter())
+        .filter_map(|s| s.label.as_ref())
+        .find(|l| l.text.split(" ≡ ").any(|n| n == name))
+        .map(|l| l.anchor)
+}
+
+/// Whether the plan draws a vector from `from` to `to` (its tail and head within 1e-9 mm).
+fn has_vector(view: &tmm::plate::View, from: tmm::geom::DVec2, to: tmm::geom::DVec2) -> bool {
+    (view.figure.steps.iter()).any(|s| match s.item {
+        Item::Vector { from: f, to: t } => f.distance(from) < 1e-9 && t.distance(to) < 1e-9,
+        _ => false,
+    })
+}
+
+#[test]
+fn the_relative_components_are_vectors_from_their_base_to_the_image() {
+    // The shaper's plans add up V_B3 = V_B2 + V_B3B2 and V_D5 = V_D + V_D5D (the polygon's
+    // b → b₃ and d → d₅), a_B3 = a_n + a_τ = a_B2 + a_k + a_r (n₃ → b₃′ and k → b₃′), as the
+    // seed draws them: each component an arrow to the image it finds. Before, the direction
+    // lines through b, d, n₃ and k were drawn, their components not.
+    let s = crate::support::scene("shaper");
+    let session = Session::new(&s, Drafting::EXACT);
+    let plates = tmm::build(&session, PlateKind::Kinematics, Lang::Ru).expect("sheets");
+    let (mut velocity, mut acceleration) = (0, 0);
+    for view in plates.iter().flat_map(|p| &p.views) {
+        let caption = view.caption.clone().unwrap_or_default();
+        let pairs: &[(&str, &str)] = if caption.starts_with("Пол.") {
+            velocity += 1;
+            &[("b", "b_{3}"), ("d", "d_{5}")]
+        } else if caption.starts_with("План ускорений") {
+            acceleration += 1;
+            &[("n_3", "b_{3}′"), ("k", "b_{3}′"), ("d′", "d_{5}′")]
+        } else {
+            continue;
+        };
+        for (from, to) in pairs {
+            let (Some(a), Some(b)) = (image_at(view, from), image_at(view, to)) else {
+                panic!("{caption}: no {from} or {to}");
+            };
+            // Where the two images are one point on the drawing there is nothing to draw.
+            if a.distance(b) >= tmm::construct::DIRECTION_ONLY_MM {
+                assert!(has_vector(view, a, b), "{caption}: no vector {from} → {to}");
+            }
+        }
+    }
+    assert!(
+        (velocity, acceleration) >= (12, 2),
+        "{velocity}, {acceleration}"
+    );
 }

@@ -4,7 +4,7 @@
 
 use super::names::{image_label, lower, plain};
 use super::plan::{KinPlan, Measure, PlanKind, PlanReading};
-use crate::construct::{ConstructionError, Item, Recorder, Role};
+use crate::construct::{ConstructionError, Item, Recorder, Role, DIRECTION_ONLY_MM};
 use crate::geom::{DVec2, Line, Segment};
 use crate::linkage::built::Built;
 use crate::linkage::compiled::Compiled;
@@ -193,9 +193,28 @@ impl<'a> Builder<'a> {
         let la = Line::new(a.1, a.2).ok_or_else(|| degenerate(step, a.0))?;
         let lb = Line::new(b.1, b.2).ok_or_else(|| degenerate(step, b.0))?;
         let (x, cr, _) = self.rec.meet_lines(step, (a.0, &la), (b.0, &lb))?;
-        self.dir_line(a.0, a.1, a.2, x);
-        self.dir_line(b.0, b.1, b.2, x);
+        for (note, base, dir) in [a, b] {
+            self.dir_line(note, base, dir, x);
+            self.component(note, base, x);
+        }
         Ok((x, cr))
+    }
+    /// The vector a direction line found, from its base to the crossing: the relative
+    /// velocity (`b → b₃`, `d → d₅`) or the tangential or relative acceleration (`n₃ → b₃′`,
+    /// `k → b₃′`), drawn as the textbook's polygon draws it. Not from the pole (the absolute
+    /// vector is drawn there), nor shorter than a vector that shows more than its direction
+    /// ([`DIRECTION_ONLY_MM`]): the base and the crossing are one point on the drawing.
+    fn component(&mut self, note: &str, base: DVec2, x: DVec2) {
+        let pole = self.rec.tolerances().coincident;
+        if base.length() <= pole || base.distance(x) < DIRECTION_ONLY_MM {
+            return;
+        }
+        self.rec.draw(
+            format!("{note}: component"),
+            Item::Vector { from: base, to: x },
+            Role::Construction,
+            &[],
+        );
     }
     /// Lay a known vector (a normal or Coriolis component) from `from`, label its end.
     pub(in crate::linkage) fn lay(
