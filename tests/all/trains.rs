@@ -380,3 +380,71 @@ fn every_wheel_of_a_train_scheme_is_named_clear_of_the_other_lines() {
     }
     assert!(near.is_empty(), "{near:#?}");
 }
+
+/// The distance from a point to the segment a–b, mm.
+fn to_segment(p: tmm::geom::DVec2, a: tmm::geom::DVec2, b: tmm::geom::DVec2) -> f64 {
+    let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+    p.distance(a + (b - a) * t)
+}
+
+#[test]
+fn every_distribution_line_is_named_beside_itself_and_alone() {
+    // Named at its end, where the next link's line starts from the pole's velocity, a line's
+    // name was joined with the next one's into a point's «1 ≡ 2-3» (PZ2, example 2). The
+    // textbook writes each link's number beside its line: the placed name is the link's alone,
+    // its box within 3 mm of its line and its centre clear of the line's ends by 3 mm.
+    use tmm::geom::DVec2;
+    use tmm::plate::layout;
+    let mut named = 0;
+    for scene in [
+        "gears-pz2",
+        "gears-pz2-ex1",
+        "gears-pz2-ex2",
+        "gears-differential",
+        "shaper",
+    ] {
+        let s = support::scene(scene);
+        let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
+        let plates =
+            tmm::sheets::build(&session, tmm::PlateKind::Gears, tmm::Lang::Ru).expect("plates");
+        for plate in &plates {
+            let placed = layout(plate);
+            for (index, view) in plate.views.iter().enumerate() {
+                for s in &view.figure.steps {
+                    let Some(shaft) = s.note.strip_prefix("the distribution line of ") else {
+                        continue;
+                    };
+                    let tmm::construct::Item::Segment(g) = s.item else {
+                        panic!("{scene}: the line of {shaft} is not a segment");
+                    };
+                    let (a, b) = (view.to_sheet(g.from), view.to_sheet(g.to));
+                    let label = (placed.labels.iter())
+                        .find(|l| l.view == index && l.steps.contains(&s.id))
+                        .unwrap_or_else(|| panic!("{scene}: {shaft}'s line unnamed"));
+                    assert_eq!(label.text, shaft, "{scene}");
+                    let r = label.rect;
+                    let corners = [
+                        r.min,
+                        r.max,
+                        DVec2::new(r.min.x, r.max.y),
+                        DVec2::new(r.max.x, r.min.y),
+                    ];
+                    let near = corners
+                        .iter()
+                        .map(|c| to_segment(*c, a, b))
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(near <= 3.0, "{scene}: {shaft} {near:.1} mm from its line");
+                    if a.distance(b) > 12.0 {
+                        let end = r.center().distance(a).min(r.center().distance(b));
+                        assert!(
+                            end >= 3.0,
+                            "{scene}: {shaft} at its line's end ({end:.1} mm)"
+                        );
+                    }
+                    named += 1;
+                }
+            }
+        }
+    }
+    assert!(named >= 20, "{named} lines");
+}

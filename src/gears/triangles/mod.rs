@@ -553,15 +553,20 @@ fn draw_links(
             Role::Result,
             &[],
         );
-        // Named at its faster end; a link at rest (its line on the axis, where the other
-        // lines start and cross) halfway along it.
+        // Named beside it a fifth of its length from its faster end, away from the axis (at
+        // the end, where the next link's line starts, two names read as one point's: «1 ≡
+        // 2-3»); a link at rest (its line on the axis, where the others cross) halfway along.
         let (at, toward) = if pa.x == 0.0 && pb.x == 0.0 {
             (0.5 * (pa + pb), DVec2::new(-1.0, 0.0))
         } else {
-            let top = if pb.x.abs() >= pa.x.abs() { pb } else { pa };
-            (top, DVec2::new(top.x.signum(), 0.3))
+            let (top, low) = [(pa, pb), (pb, pa)][usize::from(pb.x.abs() >= pa.x.abs())];
+            let across = (top - low).perp().normalize_or(DVec2::X);
+            (
+                top + (low - top) * 0.2,
+                across * (across.x * top.x).signum(),
+            )
         };
-        rec.label(id, &train.shafts[k], at, toward);
+        rec.label_item(id, &train.shafts[k], at, toward);
         // The ray of the plan parallel to it, to the reading line, named by the link where
         // it meets it; the intercept marked there.
         let hit = DVec2::new(slopes[k] * plan.h, plan.foot.y);
