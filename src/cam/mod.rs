@@ -50,7 +50,7 @@ pub use deviation::{deviation, deviation_at, inversion_at};
 pub use diagrams::{Analogue, CamDiagrams, PHASE_NOTES, POLES, TICK_NOTE};
 pub use inversion::Inversion;
 pub use law::{Law, Shock};
-pub use radius::{RadiusConstruction, RHO_ADMITTED, RHO_MIN_NOTE, TANGENT_NOTE};
+pub use radius::{RadiusConstruction, A_W_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, TANGENT_NOTE};
 pub use special::{build_special, Special, SpecialProfile};
 pub use travel::{TravelConstruction, TRAVEL_NOTE, TRAVEL_RAY_NOTE};
 pub use zone::{E_LINE_NOTE, E_NOTE, R0_NOTE, RAY_NOTE, R_MIN_NOTE};

@@ -25,6 +25,8 @@ pub struct RadiusConstruction {
     pub graphical: f64,
     /// The flat face's max(−(S + S″)) as read at the 45° tangent, m.
     pub convexity: Option<f64>,
+    /// The rocker's centre distance a_w = |O₁O₂| at r_min as read off the drawing, m.
+    pub centre_distance: Option<f64>,
 }
 
 /// The minimum radius constructed at the drawn points, and the base radius and placement of
@@ -58,6 +60,7 @@ pub(super) fn min_radius(
             figure: rec.finish(),
             graphical: read.graphical,
             convexity: read.convexity,
+            centre_distance: read.centre_distance,
         },
         read.base,
         read.placement,
@@ -77,11 +80,12 @@ struct Given<'a> {
     pub(super) raise: f64,
 }
 
-/// What one follower's construction reads: r_min, the flat face's convexity, the base
-/// radius the profile takes and the follower's placement.
+/// What one follower's construction reads: r_min, the flat face's convexity, the rocker's
+/// centre distance, the base radius the profile takes and the follower's placement.
 struct Read {
     graphical: f64,
     convexity: Option<f64>,
+    centre_distance: Option<f64>,
     base: f64,
     placement: Placement,
 }
@@ -152,6 +156,7 @@ fn translating(rec: &mut Recorder, given: &Given<'_>, offset: f64) -> Result<Rea
     Ok(Read {
         graphical: r.value,
         convexity: None,
+        centre_distance: None,
         base,
         placement: Placement::Translating { offset, s0 },
     })
@@ -240,6 +245,8 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
         Role::Construction,
         &[oid, pid],
     );
+    rec.dimension(A_W_NOTE, (o, pivot, 0.0), "a_w");
+    let a_w = rec.measure(o, pivot).value;
     let r = rec.measure(o, a0);
     // The profile uses the centre found on the drawing: its direction from A₀ and its
     // distance read (or the given base radius along that direction).
@@ -250,6 +257,7 @@ fn rocker(rec: &mut Recorder, given: &Given<'_>, arm: f64) -> Result<Read, CamEr
     Ok(Read {
         graphical: r.value,
         convexity: None,
+        centre_distance: Some(a_w),
         base,
         placement: Placement::Rocker {
             pivot: pivot_cam,
@@ -345,6 +353,7 @@ fn flat(rec: &mut Recorder, given: &Given<'_>) -> Result<Read, CamError> {
     Ok(Read {
         graphical,
         convexity: Some(read_c),
+        centre_distance: None,
         base,
         placement: Placement::Translating {
             offset: 0.0,
@@ -394,6 +403,8 @@ const FLAT_R_MIN_MM: f64 = 20.0;
 
 /// The note of the flat face's ρ_min dimension's step (the sheet writes its value).
 pub const RHO_MIN_NOTE: &str = "dimension ρ_min";
+/// The note of the rocker's centre distance a_w's dimension.
+pub const A_W_NOTE: &str = "dimension a_w";
 
 /// The symbol of the flat face's given margin over convexity, the least radius of curvature
 /// the profile is admitted (r₀ ≥ max(−(S + S″)) + \[ρ\]): the admissible value's brackets

@@ -142,6 +142,17 @@ impl Cam {
         }
     }
 
+    /// The twin's rocker centre distance a_w = |O₁O₂| at its exact r_min, m; `None` for
+    /// another follower or when no centre qualifies.
+    pub fn exact_centre_distance(&self) -> Option<f64> {
+        match self.spec.follower {
+            Follower::Rocker { .. } => {
+                exact::min_radius_rocker(&self.spec).map(|(_, o)| o.length())
+            }
+            _ => None,
+        }
+    }
+
     /// The note's words for the base radius the profile is built on: the scene's, or the
     /// r_min read off the drawing against the twin's `exact`.
     fn base_used(&self, exact: f64) -> BaseUsed {
@@ -213,6 +224,19 @@ impl Cam {
             ),
             "min",
         ));
+        if let (Some(g), Some(a)) = (r.centre_distance, self.exact_centre_distance()) {
+            out.push(subject(
+                row(
+                    Symbol::CentreDistance,
+                    At::Scene,
+                    Method::CombinedDiagram,
+                    g,
+                    a,
+                    a,
+                ),
+                "w",
+            ));
+        }
         if !self.flat() {
             let symbol = if self.spec.shows_transmission_angle() {
                 Symbol::TransmissionAngle

@@ -8,7 +8,7 @@ use super::{NoteError, Writer};
 use crate::cam::{Closure, Follower, Given, Law, SpecialProfile};
 use crate::check::{Method, Symbol};
 use crate::scene::PlateKind;
-use crate::words::{CamText, CaseMeaning as M, NoteText as T};
+use crate::words::{CamText, CaseMeaning as M, Meaning, NoteText as T};
 
 /// The cam: the law, the diagrams, r_min, the profile and the transmission (pressure)
 /// angle, Table 7.
@@ -240,24 +240,7 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
     }
     // The base radius: |O₁B₀| on the combined diagram at μ_S.
     if !matches!(s.follower, Follower::Flat { .. }) && s.base_radius.is_none() {
-        let mu = cam.diagrams.s_scale;
-        let r = cam.radius.graphical;
-        w.doc.say(w.word(T::CamRadiusWorked));
-        w.worked(Worked::new(
-            sym("r_{min}"),
-            format!("{} dot {}", sym("O_{1}B_{0}"), sym("μ_{S}")),
-            format!(
-                "{} dot {}",
-                num(mu.to_mm(r), 4, lang),
-                num(mu.value(), 4, lang)
-            ),
-            Printed::si(r, 4, "m", lang),
-        ));
-        w.explain(&[
-            ("r_{min}", w.word(M::BaseRadius), "m"),
-            ("O_{1}B_{0}", w.word(M::DiagramSegment), "mm"),
-            ("μ_{S}", w.word(M::DisplacementScale), "m/mm"),
-        ]);
+        radius_worked(w, &cam);
     }
     // The base radius accepted from the r_min read, as the sheet says it.
     if s.base_radius.is_none() {
@@ -293,6 +276,38 @@ fn worked(w: &mut Writer<'_, '_>) -> Result<(), NoteError> {
         ]);
     }
     Ok(())
+}
+
+/// r_min read off the combined diagram, |O₁B₀|·μ_S, and a rocker's centre distance a_w,
+/// |O₁O₂|·μ_S, off the same drawing.
+fn radius_worked(w: &mut Writer<'_, '_>, cam: &crate::cam::Cam) {
+    let (mu, lang) = (cam.diagrams.s_scale, w.lang);
+    let read_off = |symbol: &str, segment: &str, x: f64| {
+        Worked::new(
+            sym(symbol),
+            format!("{} dot {}", sym(segment), sym("μ_{S}")),
+            format!(
+                "{} dot {}",
+                num(mu.to_mm(x), 4, lang),
+                num(mu.value(), 4, lang)
+            ),
+            Printed::si(x, 4, "m", lang),
+        )
+    };
+    w.doc.say(w.word(T::CamRadiusWorked));
+    w.worked(read_off("r_{min}", "O_{1}B_{0}", cam.radius.graphical));
+    w.explain(&[
+        ("r_{min}", w.word(M::BaseRadius), "m"),
+        ("O_{1}B_{0}", w.word(M::DiagramSegment), "mm"),
+        ("μ_{S}", w.word(M::DisplacementScale), "m/mm"),
+    ]);
+    if let Some(a) = cam.radius.centre_distance {
+        w.worked(read_off("a_{w}", "O_{1}O_{2}", a));
+        w.explain(&[
+            ("a_{w}", w.word(Meaning::CentreDistance), "m"),
+            ("O_{1}O_{2}", w.word(M::CentreSegment), "mm"),
+        ]);
+    }
 }
 
 /// A law's extremes over a phase φ of stroke h: (dS/dφ)_max = c_v·h/φ and

@@ -8,7 +8,7 @@ use super::BuildError;
 use super::{cam_marks, digits};
 use crate::cam::{
     motion::Point, Analogue, Cam, CamDiagrams, CamLayout, CamSpec, Closure, Follower, Law,
-    Rotation, Shock, ANGLE_LIMIT_NOTE, R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
+    Rotation, Shock, ANGLE_LIMIT_NOTE, A_W_NOTE, R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
 };
 use crate::check::{Cusp, Finding, Row, Symbol};
 use crate::geom::DVec2;
@@ -69,6 +69,13 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     let rho_min = cam_marks::valued(RHO_ADMITTED, cam.spec.rho_min, lang);
     let radius = cam_marks::relabelled(&cam.radius.figure, R_MIN_NOTE, &r_min);
     let radius = cam_marks::relabelled(&radius, RHO_MIN_NOTE, &rho_min);
+    let radius = match cam.radius.centre_distance {
+        Some(a) => {
+            let a_w = format!("a_{{w}} = {}", cam_marks::read_mm(a, r_min_step, lang));
+            cam_marks::relabelled(&radius, A_W_NOTE, &a_w)
+        }
+        None => radius,
+    };
     let r0 = cam_marks::valued("r_{0}", cam.base, lang);
     blocks.push(Block::view(
         cam_marks::relabelled(&radius, R0_NOTE, &r0),
@@ -342,6 +349,16 @@ fn data_lines(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<String> {
         n(cam.exact_r_min()),
         Text::Exact.get(lang)
     ));
+    // The rocker's centre distance at r_min, read beside it.
+    if let (Some(g), Some(e)) = (cam.radius.centre_distance, cam.exact_centre_distance()) {
+        out.push(format!(
+            "a_{{w}} = {} ({}), {} {mm} ({})",
+            cam_marks::read_mm(g, r_min_step, lang),
+            Text::Graphical.get(lang),
+            n(e),
+            Text::Exact.get(lang)
+        ));
+    }
     // A source's erratum is the note's (its conclusions), not the student's sheet's.
     let found = cam.findings();
     let stated =

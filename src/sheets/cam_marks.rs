@@ -7,6 +7,7 @@
 //! sheet and the note.
 
 use super::digits;
+use crate::cam::follower::Placement;
 use crate::cam::{Cam, CamSpec, PHASE_NOTES};
 use crate::construct::Figure;
 use crate::scale::{format_sig, Lang};
@@ -68,7 +69,13 @@ pub(super) fn valued(symbol: &str, metres: f64, lang: Lang) -> String {
 /// r_min as read off the combined diagram to the step of `step` (m; `None`: exactly), with
 /// its unit: `68,8 мм`.
 pub(crate) fn r_min(cam: &Cam, step: Option<f64>, lang: Lang) -> String {
-    let read = digits::read(cam.radius.graphical * 1e3, step.map(|s| s * 1e3), lang);
+    read_mm(cam.radius.graphical, step, lang)
+}
+
+/// A length of `metres` read off a drawing to the step of `step` (m; `None`: exactly), with
+/// its unit: `158,7 мм`.
+pub(crate) fn read_mm(metres: f64, step: Option<f64>, lang: Lang) -> String {
+    let read = digits::read(metres * 1e3, step.map(|s| s * 1e3), lang);
     format!("{read} {}", crate::words::unit_in("mm", lang))
 }
 
@@ -107,6 +114,13 @@ pub(crate) fn base_lines(cam: &Cam, step: Option<f64>, lang: Lang) -> Vec<String
         .get(lang)
         .replace("{r0}", &digits::mm(cam.base, lang))
         .replace("{rmin}", &r_min(cam, step, lang));
+    // The rocker's centre taken r₀ from A₀ along the direction found: the profile's a_w.
+    let accepted = match cam.placement {
+        Placement::Rocker { pivot, .. } => {
+            format!("{accepted}, a_{{w}} = {}", digits::mm(pivot.length(), lang))
+        }
+        _ => accepted,
+    };
     let Some(raised) = cam.raised else {
         return vec![accepted];
     };

@@ -5,7 +5,9 @@
 //! - the angle graph (λ or γ) is graduated, its limit line carries its value, and its μ is
 //!   named by the angle it draws;
 //! - the translating cam's travel stands dimensioned on its profile and accepted against the
-//!   X_min read.
+//!   X_min read;
+//! - the rocker's centre distance a_w is dimensioned on its combined diagram, read, checked
+//!   against the twin's and worked in the note.
 
 use tmm::cam::ANGLE_LIMIT_NOTE;
 use tmm::check::Symbol;
@@ -429,4 +431,73 @@ fn the_points_table_writes_each_reading_to_its_step_and_a_rigid_shock_infinite()
     let d2s = column("cam-shock", Drafting::EXACT, "d^2S/dφ^2, мм");
     let infinite: Vec<usize> = (0..d2s.len()).filter(|&k| d2s[k] == "∞").collect();
     assert_eq!(infinite, [0, 8, 9, 17], "{d2s:?}");
+}
+
+#[test]
+fn the_rockers_centre_distance_is_dimensioned_read_and_checked() {
+    // The rocker's combined diagram finds the cam's centre O₁; the textbook reads off it r_min
+    // and the centre distance a_w = O₁O₂·μ_S the profile is built on. Before, O₁O₂ was drawn
+    // undimensioned and a_w was nowhere.
+    let s = crate::support::scene("shaper");
+    let session = Session::new(&s, Drafting::EXACT);
+    let cam = session.cam().expect("cam");
+    let rows = cam.rows();
+    let row = (rows.iter())
+        .find(|r| r.key.symbol == Symbol::CentreDistance && r.key.subject == "w")
+        .expect("an a_w row");
+    let exact = cam.exact_centre_distance().expect("a rocker's a_w");
+    assert_eq!(row.analytic, exact);
+    // The exact centre is r_min from A₀ = (0, L): a_w − L ≤ r_min ≤ a_w + L, and the drawing's
+    // a_w within 0,5 % of it (r_min's own error is 0,9 %).
+    let (arm, r_min) = (0.12, cam.exact_r_min());
+    assert!(
+        (exact - arm).abs() <= r_min && r_min <= exact + arm,
+        "{exact} {r_min}"
+    );
+    assert!(
+        (row.graphical / exact - 1.0).abs() < 5e-3,
+        "{} {exact}",
+        row.graphical
+    );
+    // The dimension O₁O₂ is the drawn centre distance at μ_S.
+    let mu = cam.diagrams.s_scale.value();
+    let dim = (cam.radius.figure.steps.iter())
+        .find_map(|st| match st.item {
+            Item::Dimension { from, to, .. } if st.note == tmm::cam::A_W_NOTE => {
+                Some(from.distance(to))
+            }
+            _ => None,
+        })
+        .expect("the a_w dimension");
+    assert!((dim * mu / row.graphical - 1.0).abs() < 1e-12);
+    // The sheet writes it on the dimension and in its data, graphical beside exact.
+    let on_sheet = words(&plates("shaper", Lang::Ru));
+    let read = format_sig(row.graphical * 1e3, 4, Lang::Ru);
+    let wanted = [
+        format!("a_{{w}} = {read} мм"),
+        format!(
+            "a_{{w}} = {read} мм (графически), {} мм (точно)",
+            format_sig(exact * 1e3, 4, Lang::Ru)
+        ),
+    ];
+    for w in &wanted {
+        assert!(on_sheet.contains(w), "no «{w}» on the sheet");
+    }
+    // The note works it beside r_min, the segment O₁O₂ named for what it is.
+    let note = note_of("shaper", Drafting::EXACT).source;
+    for w in [
+        "межосевое расстояние",
+        "отрезок от центра кулачка до центра качания коромысла",
+    ] {
+        assert!(note.contains(w), "the note lacks «{w}»");
+    }
+    // A translating follower has no centre distance to read.
+    let s = crate::support::scene("cam-central");
+    let central = Session::new(&s, Drafting::EXACT);
+    let cam = central.cam().expect("cam");
+    assert!(cam.exact_centre_distance().is_none());
+    assert!(!cam
+        .rows()
+        .iter()
+        .any(|r| r.key.symbol == Symbol::CentreDistance));
 }
