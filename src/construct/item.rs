@@ -101,10 +101,9 @@ pub enum Item {
 /// its subscript (`plate::dimension` writes it there).
 pub const DIMENSION_TEXT_ROOM_MM: f64 = 6.5;
 
-/// An unlabelled [`Item::Vector`] shorter than this gives only its direction: it is drawn as
-/// an arc's arrowhead (the cam's ω₁, 0,1 mm). A longer one is a vector (a train's velocity of
-/// a pole 2,5 mm long, whose whole 4 mm head stood out behind the axis of heights), mm.
-pub const DIRECTION_ONLY_MM: f64 = 1.0;
+/// The length of a thin [`Item::Vector`]'s arrowhead (a construction's, a dimension's), mm: a
+/// thin vector shorter than this is all head.
+pub const THIN_HEAD_MM: f64 = 3.0;
 
 impl Item {
     /// A slider block's half length along its slide and half width across it, mm: the block

@@ -31,7 +31,7 @@ pub use context::Context;
 pub use drafting::{Drafting, Measured};
 pub use error::ConstructionError;
 pub use figure::{Figure, Role, Step, StepId};
-pub use item::{Item, DIMENSION_TEXT_ROOM_MM, DIRECTION_ONLY_MM};
+pub use item::{Item, DIMENSION_TEXT_ROOM_MM, THIN_HEAD_MM};
 pub use label::{Label, Names};
 pub use reading::Reading;
 pub use recorder::Recorder;

@@ -3,7 +3,7 @@
 use super::items::stroke;
 use super::path::{Map, PathData};
 use super::style::{Mark, Paint, Pen};
-use crate::construct::DIRECTION_ONLY_MM;
+use crate::construct::THIN_HEAD_MM;
 use crate::geom::DVec2;
 
 /// An arrowhead: length along the line and full width at its base, mm.
@@ -21,7 +21,7 @@ impl Arrow {
     };
     /// Arrowhead of thin lines: dimensions, angle marks, construction vectors.
     pub(super) const THIN: Arrow = Arrow {
-        len: 3.0,
+        len: THIN_HEAD_MM,
         width: 0.9,
     };
 
@@ -105,3 +105,8 @@ pub(super) fn vector_head(pen: Pen, labelled: bool, length: f64) -> (Arrow, bool
 /// it runs and where it starts (the tangent's `pa`, 3,2 mm, was drawn all head with `c`
 /// inside it, issue 45).
 const LABELLED_HEAD: f64 = 0.5;
+
+/// An unlabelled vector shorter than this gives only its direction: an arc's arrowhead (the
+/// cam's ω₁, 0,1 mm). A longer one is a vector (a train's velocity of a pole 2,5 mm long,
+/// whose whole 4 mm head stood out behind the axis of heights), mm.
+const DIRECTION_ONLY_MM: f64 = 1.0;

@@ -4,7 +4,7 @@
 
 use super::names::{image_label, lower, plain};
 use super::plan::{KinPlan, Measure, PlanKind, PlanReading};
-use crate::construct::{ConstructionError, Item, Recorder, Role, DIRECTION_ONLY_MM};
+use crate::construct::{ConstructionError, Item, Recorder, Role, THIN_HEAD_MM};
 use crate::geom::{DVec2, Line, Segment};
 use crate::linkage::built::Built;
 use crate::linkage::compiled::Compiled;
@@ -202,11 +202,12 @@ impl<'a> Builder<'a> {
     /// The vector a direction line found, from its base to the crossing: the relative
     /// velocity (`b → b₃`, `d → d₅`) or the tangential or relative acceleration (`n₃ → b₃′`,
     /// `k → b₃′`), drawn as the textbook's polygon draws it. Not from the pole (the absolute
-    /// vector is drawn there), nor shorter than a vector that shows more than its direction
-    /// ([`DIRECTION_ONLY_MM`]): the base and the crossing are one point on the drawing.
+    /// vector is drawn there), nor to it (the image is the pole: the component is the base's
+    /// own vector reversed, a double-headed line over it), nor shorter than its head
+    /// ([`THIN_HEAD_MM`]: all head, a cluster of heads where a small plan's images crowd).
     fn component(&mut self, note: &str, base: DVec2, x: DVec2) {
         let pole = self.rec.tolerances().coincident;
-        if base.length() <= pole || base.distance(x) < DIRECTION_ONLY_MM {
+        if base.length() <= pole || x.length() < THIN_HEAD_MM || base.distance(x) < THIN_HEAD_MM {
             return;
         }
         self.rec.draw(
