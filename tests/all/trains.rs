@@ -392,7 +392,8 @@ fn every_distribution_line_is_named_beside_itself_and_alone() {
     // Named at its end, where the next link's line starts from the pole's velocity, a line's
     // name was joined with the next one's into a point's «1 ≡ 2-3» (PZ2, example 2). The
     // textbook writes each link's number beside its line: the placed name is the link's alone,
-    // its box within 3 mm of its line and its centre clear of the line's ends by 3 mm.
+    // its box within 3 mm of its line, its centre clear of the line's ends by 3 mm and nearer
+    // its own line than any other link's (but for two lines that run 1 mm apart).
     use tmm::geom::DVec2;
     use tmm::plate::layout;
     let mut named = 0;
@@ -439,6 +440,26 @@ fn every_distribution_line_is_named_beside_itself_and_alone() {
                         assert!(
                             end >= 3.0,
                             "{scene}: {shaft} at its line's end ({end:.1} mm)"
+                        );
+                    }
+                    // Nearer its own line than any other link's.
+                    let own = to_segment(r.center(), a, b);
+                    for o in &view.figure.steps {
+                        if o.id == s.id || !o.note.starts_with("the distribution line of ") {
+                            continue;
+                        }
+                        let tmm::construct::Item::Segment(h) = o.item else {
+                            continue;
+                        };
+                        let (c, d) = (view.to_sheet(h.from), view.to_sheet(h.to));
+                        let other = to_segment(r.center(), c, d);
+                        // PZ2's first example: lines 6 and 7 leave the pole’s velocity about 0,6 mm
+                        // apart and run so along 6's whole length; beside 6 no place is nearer
+                        // it than 7 by more than that.
+                        assert!(
+                            own < other + 1.0,
+                            "{scene}: {shaft} nearer «{}» ({other:.1} mm) than its own ({own:.1} mm)",
+                            o.note
                         );
                     }
                     named += 1;

@@ -9,6 +9,7 @@ use crate::construct::{Context, Figure, Item, Recorder, Role};
 use crate::geom::{DVec2, Segment};
 use crate::scale::{Quantity, Scale};
 
+mod names;
 mod slow;
 pub use slow::SlowLinks;
 
@@ -487,7 +488,7 @@ fn draw_plan(rec: &mut Recorder, slopes: &[f64], plan_h: f64, y_ref: f64) -> Pla
 }
 
 /// Each link: the velocities of its poles, its distribution line between its own points
-/// (named at its faster end), and the ray of the plan parallel to it, named and read where
+/// (named beside it), and the ray of the plan parallel to it, named and read where
 /// it meets the reading line: ω = intercept·μ_ω, signed by the side.
 fn draw_links(
     rec: &mut Recorder,
@@ -504,6 +505,7 @@ fn draw_links(
         ends: Vec::new(),
         leftmost: 0.0,
     };
+    let (mut named, mut arrows) = (Vec::new(), Vec::new());
     for &k in links {
         let line = &lines[k];
         // The link's own points: its axis and its poles with the links drawn; its line drawn
@@ -516,6 +518,7 @@ fn draw_links(
                 hs.push(yy(poles[mi]));
                 let tip = DVec2::new(x_at(line, yy(poles[mi])), yy(poles[mi]));
                 if tip.x.abs() > 1e-9 {
+                    arrows.push((DVec2::new(0.0, tip.y), tip));
                     rec.draw(
                         "the velocity of the pole",
                         Item::Vector {
@@ -553,20 +556,7 @@ fn draw_links(
             Role::Result,
             &[],
         );
-        // Named beside it a fifth of its length from its faster end, away from the axis (at
-        // the end, where the next link's line starts, two names read as one point's: «1 ≡
-        // 2-3»); a link at rest (its line on the axis, where the others cross) halfway along.
-        let (at, toward) = if pa.x == 0.0 && pb.x == 0.0 {
-            (0.5 * (pa + pb), DVec2::new(-1.0, 0.0))
-        } else {
-            let (top, low) = [(pa, pb), (pb, pa)][usize::from(pb.x.abs() >= pa.x.abs())];
-            let across = (top - low).perp().normalize_or(DVec2::X);
-            (
-                top + (low - top) * 0.2,
-                across * (across.x * top.x).signum(),
-            )
-        };
-        rec.label_item(id, &train.shafts[k], at, toward);
+        named.push((id, k, (pa, pb)));
         // The ray of the plan parallel to it, to the reading line, named by the link where
         // it meets it; the intercept marked there.
         let hit = DVec2::new(slopes[k] * plan.h, plan.foot.y);
@@ -592,6 +582,18 @@ fn draw_links(
         out.ends.push((k, read.drawn_mm, read.read_mm));
         // ω = intercept · μ_ω, μ_ω = μ_v/(μ_l h), signed by the side.
         out.omega[k] = hit.x.signum() * read.read_mm * scale_w.value();
+    }
+    // Each line named beside itself, clear of the other lines and the poles' velocities
+    // ([`names::line_name`]).
+    let drawn: Vec<_> = named.iter().map(|n| n.2).collect();
+    for (j, &(id, k, seg)) in named.iter().enumerate() {
+        let others: Vec<_> = (drawn.iter().enumerate())
+            .filter(|(i, _)| *i != j)
+            .map(|(_, d)| *d)
+            .chain(arrows.iter().copied())
+            .collect();
+        let (at, toward) = names::line_name(seg, &others);
+        rec.label_item(id, &train.shafts[k], at, toward);
     }
     out
 }
