@@ -453,7 +453,7 @@ fn every_distribution_line_is_named_beside_itself_and_alone() {
                         };
                         let (c, d) = (view.to_sheet(h.from), view.to_sheet(h.to));
                         let other = to_segment(r.center(), c, d);
-                        // PZ2's first example: lines 6 and 7 leave the pole’s velocity about 0,6 mm
+                        // PZ2's first example: lines 6 and 7 leave the pole's velocity about 0,6 mm
                         // apart and run so along 6's whole length; beside 6 no place is nearer
                         // it than 7 by more than that.
                         assert!(

@@ -1,7 +1,8 @@
 //! Where a link's distribution line is named on the velocity triangles: beside the line, where
 //! its name is clearest of the other lines. At its end, where the next link's line starts from
 //! the pole's velocity, two names read as one point's («1 ≡ 2-3», PZ2); beside two lines that
-//! run 0,5 mm apart (PZ2's first example, 6 and 7) a name on the wrong side reads as the other's.
+//! run about 0,6 mm apart (PZ2's first example, 6 and 7) a name on the wrong side reads as the
+//! other's.
 
 use crate::geom::{DVec2, Segment};
 
