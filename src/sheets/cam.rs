@@ -342,22 +342,24 @@ fn data_lines(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<String> {
         )),
     }
     out.push(String::new());
-    out.push(format!(
-        "r_{{min}} = {} ({}), {} {mm} ({})",
-        cam_marks::r_min(cam, r_min_step, lang),
-        Text::Graphical.get(lang),
-        n(cam.exact_r_min()),
-        Text::Exact.get(lang)
-    ));
-    // The rocker's centre distance at r_min, read beside it.
-    if let (Some(g), Some(e)) = (cam.radius.centre_distance, cam.exact_centre_distance()) {
-        out.push(format!(
-            "a_{{w}} = {} ({}), {} {mm} ({})",
-            cam_marks::read_mm(g, r_min_step, lang),
+    // r_min, and a rocker's centre distance at it, read off the combined diagram beside the
+    // twin's.
+    let read_and_exact = |symbol: &str, read: f64, exact: f64| {
+        format!(
+            "{symbol} = {} ({}), {} {mm} ({})",
+            cam_marks::read_mm(read, r_min_step, lang),
             Text::Graphical.get(lang),
-            n(e),
+            n(exact),
             Text::Exact.get(lang)
-        ));
+        )
+    };
+    out.push(read_and_exact(
+        "r_{min}",
+        cam.radius.graphical,
+        cam.exact_r_min(),
+    ));
+    if let (Some(g), Some(e)) = (cam.radius.centre_distance, cam.exact_centre_distance()) {
+        out.push(read_and_exact("a_{w}", g, e));
     }
     // A source's erratum is the note's (its conclusions), not the student's sheet's.
     let found = cam.findings();

@@ -383,8 +383,7 @@ fn every_wheel_of_a_train_scheme_is_named_clear_of_the_other_lines() {
 
 /// The distance from a point to the segment a–b, mm.
 fn to_segment(p: tmm::geom::DVec2, a: tmm::geom::DVec2, b: tmm::geom::DVec2) -> f64 {
-    let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
-    p.distance(a + (b - a) * t)
+    tmm::geom::Segment::new(a, b).distance_to(p)
 }
 
 #[test]

@@ -585,11 +585,10 @@ fn draw_links(
     }
     // Each line named beside itself, clear of the other lines and the poles' velocities
     // ([`names::line_name`]).
-    let drawn: Vec<_> = named.iter().map(|n| n.2).collect();
-    for (j, &(id, k, seg)) in named.iter().enumerate() {
-        let others: Vec<_> = (drawn.iter().enumerate())
-            .filter(|(i, _)| *i != j)
-            .map(|(_, d)| *d)
+    for &(id, k, seg) in &named {
+        let others: Vec<_> = (named.iter())
+            .filter(|n| n.0 != id)
+            .map(|n| n.2)
             .chain(arrows.iter().copied())
             .collect();
         let (at, toward) = names::line_name(seg, &others);
