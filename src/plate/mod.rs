@@ -64,7 +64,7 @@ pub use raster::{
     MAX_PIXELS,
 };
 pub(crate) use sheet::captions as title_block_captions;
-pub use sheet::{Sheet, SheetSize, TitleBlock};
+pub use sheet::{Sheet, SheetSize, TitleBlock, FIELD_MARGIN_MM, ITEM_GAP_MM};
 pub use style::Pen;
 pub use svg::{to_svg, view_svgs, ViewSvg, FONT_FAMILY};
 pub use table::TableBlock;

@@ -55,6 +55,10 @@ pub const FRAME_MM: f64 = 5.0;
 pub const TITLE_BLOCK_MM: (f64, f64) = (185.0, 55.0);
 /// Size of the rotated designation box in the top-left corner, mm.
 pub const DESIGNATION_BOX_MM: (f64, f64) = (70.0, 14.0);
+/// Gap a laid-out sheet keeps between two items, mm.
+pub const ITEM_GAP_MM: f64 = 5.0;
+/// Margin a laid-out sheet keeps from its frame, mm.
+pub const FIELD_MARGIN_MM: f64 = 3.0;
 
 /// A sheet: format and orientation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -12,12 +12,7 @@
 
 use crate::construct::fit::overflow;
 use crate::geom::DVec2;
-use crate::plate::{Rect, Sheet};
-
-/// Gap kept between two items, mm.
-const GAP_MM: f64 = 5.0;
-/// Margin kept from the frame, mm.
-const MARGIN_MM: f64 = 3.0;
+use crate::plate::{Rect, Sheet, FIELD_MARGIN_MM as MARGIN_MM, ITEM_GAP_MM as GAP_MM};
 
 /// The free space of one sheet and what is placed on it.
 #[derive(Debug, Clone)]

@@ -210,17 +210,24 @@ impl<'s> Session<'s> {
         })
     }
 
-    /// The positions whose acceleration plans the scene asks for (or the textbook's two:
-    /// mid working stroke, mid return, none of those whose plans take a μ of their own), as
-    /// indices into the plan's positions.
+    /// The positions whose acceleration plans the scene asks for; else those of its force
+    /// analysis, whose inertia forces are read off these plans (the textbook draws them for
+    /// the positions it analyses); else the textbook's two: mid working stroke, mid return,
+    /// none of those whose plans take a μ of their own. As indices into the plan's positions.
     pub fn acceleration_positions(&self) -> Result<Vec<usize>, StudyError> {
         let poses = self.poses()?;
         let labels = position_labels(&poses);
         let own = self.own_scale_positions()?;
+        let forces = self.scene.forces.as_ref().map(|f| f.positions.as_slice());
+        let asked = self
+            .spec()
+            .acceleration_positions
+            .as_deref()
+            .or(forces.filter(|p| !p.is_empty()));
         Ok(acceleration_indices(
             &labels,
             poses.extremes.as_ref().map(|ex| ex.work_travel),
-            (self.spec().acceleration_positions.as_deref(), &own),
+            (asked, &own),
         )?)
     }
 

@@ -15,7 +15,7 @@ use crate::construct::fit::{finest_fitting, fit_scale, overflow, Extent, LABEL_M
 use crate::geom::DVec2;
 use crate::kinematics::{self, drawn_points, ChartSize};
 use crate::linkage::{guide_ends, GUIDE_MARGIN_MM};
-use crate::plate::Sheet;
+use crate::plate::{Sheet, CAPTION_BAND_MM, FIELD_MARGIN_MM, ITEM_GAP_MM};
 use crate::scale::Quantity;
 
 /// Preferred drawn length of the crank when the scene gives no μ_l (textbook: 40–60 mm).
@@ -123,10 +123,33 @@ const LAID_OUT_SHARE: f64 = 0.75;
 
 /// The sizes, against the textbook's (along φ, up), the chart may be drawn at on the second of
 /// two sheets, the largest first: 2π on 360 mm (1° a millimetre) with the diagrams 87,5, 70 or
-/// 52,5 mm tall; 2π on 300 mm, 49 mm tall. Each is taller against its length than the
-/// textbook's, which steepens its chords and with them the rays its poles send: a dozen rays
-/// within a few degrees of one another print black at the pole.
-const LARGER_CHARTS: [(f64, f64); 4] = [(1.5, 2.5), (1.5, 2.0), (1.5, 1.5), (1.25, 1.4)];
+/// 52,5 mm tall; 2π on 300 mm, 49 mm tall; 2π on 240 mm, 52,5 mm tall, which stands beside a
+/// row of tall acceleration plans where the longer ones do not. Each is at least as tall
+/// against its length as the textbook's: a longer chart of the same height takes a longer
+/// pole distance, and its rays, within a few degrees of one another, print black at the pole
+/// (the V engine's at 2π on 300 mm, 35 mm tall).
+const LARGER_CHARTS: [(f64, f64); 5] =
+    [(1.5, 2.5), (1.5, 2.0), (1.5, 1.5), (1.25, 1.4), (1.0, 1.5)];
+
+/// Whether the second of two kinematic sheets holds its acceleration plans (labelled sizes
+/// `plans`, mm) and the diagrams' stack (`stack`): the plans in a row above the stack, the
+/// row under the designation box and each with its caption's band; or the plans and the
+/// stack side by side. (The V engine's plans at 3 and 6, 234 mm tall, and its stack drawn
+/// 308 mm tall at 2π on 300 mm need 594 mm of a 578 mm field, and 881 mm of an 810 mm one
+/// side by side: the stack went to a third sheet.)
+fn second_sheet_holds(plans: &[DVec2], stack: DVec2) -> bool {
+    let sheet = Sheet::default();
+    let (frame, boxed) = (sheet.frame(), sheet.designation_box());
+    let field = frame.size() - DVec2::splat(2.0 * FIELD_MARGIN_MM);
+    let captioned = |h: f64| h + CAPTION_BAND_MM;
+    let tallest = plans.iter().map(|p| p.y).fold(0.0, f64::max);
+    let row: f64 = plans.iter().map(|p| p.x + ITEM_GAP_MM).sum();
+    let stacked = (boxed.height() - FIELD_MARGIN_MM + ITEM_GAP_MM)
+        + captioned(tallest)
+        + ITEM_GAP_MM
+        + captioned(stack.y);
+    stacked <= field.y || row + stack.x <= field.x
+}
 
 /// The field of a velocity or acceleration plan on a study of two sheets, mm: a sheet shared
 /// with one other drawing (the plan of positions; the diagrams) holds plans up to a little
@@ -349,20 +372,35 @@ impl<'s> Session<'s> {
             + self.diagrams_mm2(l, self.chart_scales())?)
     }
 
-    /// The labelled area of the common acceleration plans at `a`, summed, mm².
-    fn acceleration_mm2(&self, a: Scale) -> Result<f64, StudyError> {
+    /// The labelled sizes of the common acceleration plans at `a`, mm.
+    fn acceleration_sizes(&self, a: Scale) -> Result<Vec<DVec2>, StudyError> {
         let (poses, w1) = (self.poses()?, self.w1()?);
         let ks = common_plans(
             &self.acceleration_positions()?,
             &self.own_scale_positions()?,
         );
-        Ok(plans_area(&poses, &ks, w1, PlanKind::Acceleration, a))
+        Ok(ks
+            .iter()
+            .map(|&k| largest_plan(&poses, &[k], w1, PlanKind::Acceleration)(a))
+            .collect())
+    }
+
+    /// The labelled area of the common acceleration plans at `a`, summed, mm².
+    fn acceleration_mm2(&self, a: Scale) -> Result<f64, StudyError> {
+        Ok(self.acceleration_sizes(a)?.iter().map(|s| s.x * s.y).sum())
     }
 
     /// The labelled area of the displacement diagrams at `chart`, constructed as the sheet
     /// draws them, mm²: none when there is nothing to chart or they are refused (the sheet
     /// says why in a line).
     fn diagrams_mm2(&self, l: Scale, chart: ChartScales) -> Result<f64, StudyError> {
+        let s = self.diagrams_size(l, chart)?;
+        Ok(s.x * s.y)
+    }
+
+    /// The labelled size of the displacement diagrams' stack at `chart`, constructed as the
+    /// sheet draws them, mm: zero when there is nothing to chart or they are refused.
+    fn diagrams_size(&self, l: Scale, chart: ChartScales) -> Result<DVec2, StudyError> {
         let charted = super::kinematics::refusable(self.diagrams(l, chart), &mut Vec::new())?;
         Ok(charted
             .and_then(|d| {
@@ -370,28 +408,30 @@ impl<'s> Session<'s> {
                 let (lo, hi) = d.first_figure.bounds()?;
                 Some((lo.min(second.0), hi.max(second.1)))
             })
-            .map_or(0.0, |(lo, hi)| {
-                let s = hi - lo + DVec2::splat(LABEL_MARGIN);
-                s.x * s.y
-            }))
+            .map_or(DVec2::ZERO, |(lo, hi)| hi - lo + DVec2::splat(LABEL_MARGIN)))
     }
 
     /// The chart the sheets draw: the scene's scales at the textbook's size; on a study of two
     /// sheets, the largest of [`LARGER_CHARTS`] at which the second sheet's drawings (the
     /// common acceleration plans at `a` and the diagrams) take at most [`ONE_SHEET_SHARE`] of
-    /// its field, as the first sheet's do — the room the velocity plans left there.
+    /// its field, as the first sheet's do — the room the velocity plans left there — and
+    /// stand on it together ([`second_sheet_holds`]).
     fn sheet_chart(&self, a: Scale) -> Result<ChartScales, StudyError> {
         let textbook = self.chart_scales();
         if self.kin_sheets()? == KinSheets::One {
             return Ok(textbook);
         }
         let (l, plans) = (self.scale_l()?, self.acceleration_mm2(a)?);
+        let sizes = self.acceleration_sizes(a)?;
         for (along, up) in LARGER_CHARTS {
             let chart = ChartScales {
                 size: ChartSize::times(along, up),
                 ..textbook
             };
-            if plans + self.diagrams_mm2(l, chart)? <= ONE_SHEET_SHARE * a1_field_mm2() {
+            let stack = self.diagrams_size(l, chart)?;
+            if plans + stack.x * stack.y <= ONE_SHEET_SHARE * a1_field_mm2()
+                && second_sheet_holds(&sizes, stack)
+            {
                 return Ok(chart);
             }
         }
@@ -466,6 +506,25 @@ mod tests {
         largest_plan(&poses, &ks, w1, kind)(mu).cmple(room).all()
             && plans_area(&poses, &ks, w1, kind, mu) <= area
             && (!one || drawn <= ONE_SHEET_SHARE * a1_field_mm2())
+    }
+
+    /// The second sheet's stack under or beside its plans, on the V engine's numbers: its
+    /// plans at 3 and 6 (211 × 234 and 218 × 175 mm) leave 2π on 300 mm at 1,4 times the
+    /// height (a stack 443 × 308 mm) 16 mm short under them and 71 mm too wide beside them,
+    /// and 2π on 240 mm twice as tall (400 × 387 mm) 29 mm too wide; 2π on 240 mm 1,5 times
+    /// as tall (366 × 321 mm) stands beside them, as a stack 451 × 257 mm under them; small
+    /// plans leave a wide stack room beside them.
+    #[test]
+    fn the_second_sheet_holds_its_stack_under_or_beside_the_plans() {
+        let plans = [DVec2::new(211.2, 233.7), DVec2::new(217.6, 175.2)];
+        assert!(!second_sheet_holds(&plans, DVec2::new(442.5, 308.2)));
+        assert!(!second_sheet_holds(&plans, DVec2::new(399.5, 386.5)));
+        assert!(second_sheet_holds(&plans, DVec2::new(366.0, 321.4)));
+        assert!(second_sheet_holds(&plans, DVec2::new(451.0, 257.0)));
+        let small = [DVec2::new(100.0, 100.0)];
+        assert!(second_sheet_holds(&small, DVec2::new(600.0, 500.0)));
+        assert!(!second_sheet_holds(&small, DVec2::new(720.0, 500.0)));
+        assert!(second_sheet_holds(&[], DVec2::ZERO));
     }
 
     /// Every free μ_v and μ_a is the largest round scale the room allows: its common plans

@@ -73,8 +73,9 @@ fn a_verdict_of_one_link_or_none_reads_in_its_number() {
 }
 
 /// The displacement chart is drawn as large as its sheet allows: on the second of two sheets
-/// the six-bar's (no chart scale given) takes 2π on 360 mm, the V engine's (two large
-/// acceleration plans beside it) 2π on 300 mm; a one-sheet study keeps the textbook's 240 mm,
+/// the six-bar's (no chart scale given) takes 2π on 360 mm, the V engine's 2π on 240 mm 1,5
+/// times as tall (beside its acceleration plans at 3 and 6, 234 mm tall, a longer chart does
+/// not stand); a one-sheet study keeps the textbook's 240 mm,
 /// and the shaper's scene fixes μ_φ (the seed's; its diagrams go on a second sheet only when
 /// the first sheet's packing leaves them no room).
 #[test]
@@ -83,7 +84,7 @@ fn the_chart_takes_the_room_of_its_sheet() {
     use tmm::study::{KinSheets, Session};
     for (scene, sheets, turn_mm) in [
         ("six-bar", KinSheets::Two, Some(360.0)),
-        ("v-engine", KinSheets::Two, Some(300.0)),
+        ("v-engine", KinSheets::Two, Some(240.0)),
         ("slider-crank", KinSheets::One, Some(240.0)),
         ("shaper", KinSheets::One, None),
     ] {

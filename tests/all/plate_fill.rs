@@ -11,7 +11,10 @@
 use std::path::PathBuf;
 use tmm::construct::Drafting;
 use tmm::geom::DVec2;
-use tmm::plate::{layout, Layout, Plate, Rect};
+// The packer's gap between two items and margin from the frame, mm.
+use tmm::plate::{
+    layout, Layout, Plate, Rect, FIELD_MARGIN_MM as MARGIN_MM, ITEM_GAP_MM as GAP_MM,
+};
 use tmm::scale::Lang;
 use tmm::scene;
 
@@ -177,10 +180,6 @@ fn the_band_rule_fails_on_a_sheet_half_emptied() {
     assert_eq!(largest_gap(0.0, 100.0, vec![(-5.0, 105.0)]), 0.0);
     assert_eq!(largest_gap(0.0, 100.0, vec![]), 100.0);
 }
-
-/// Gap the packer keeps between two items and margin from the frame, mm.
-const GAP_MM: f64 = 5.0;
-const MARGIN_MM: f64 = 3.0;
 
 /// The top-left corner of a free place of `size` on a laid-out sheet: inside the frame, a
 /// gap from every item, the title block and the designation box; the corners tried are the

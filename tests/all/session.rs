@@ -264,3 +264,43 @@ fn a_dynamics_count_of_its_own_is_constructed_once_and_logged() {
     session.dynamics().expect("dynamics again");
     assert_eq!(session.constructions().len(), log.len());
 }
+
+/// The acceleration plans are drawn where the forces are analysed: the inertia forces of a
+/// force sheet are read off the plan of its position (seed 000 draws plans 3 and 10 for its
+/// force sheets 3 and 10). A scene with `[forces]` and no `acceleration_positions` draws
+/// them at the force positions (the V engine's 3 and 6, the slider-crank's 2 and 5, on the
+/// kinematic sheets a student hands in); one that names its plans keeps them (the six-bar's
+/// 1); a scene without forces keeps the textbook's middles of the two strokes.
+#[test]
+fn the_acceleration_plans_are_drawn_at_the_force_positions() {
+    for (name, drawn) in [
+        ("v-engine", vec!["3", "6"]),
+        ("slider-crank", vec!["2", "5"]),
+        ("shaper", vec!["3", "10"]),
+        ("six-bar", vec!["1"]),
+        ("four-bar", vec!["4", "10"]),
+    ] {
+        let s = scene::load(&root().join(format!("constructions/{name}.toml"))).expect("scene");
+        let session = Session::new(&s, Drafting::EXACT);
+        let kind = PlateKind::parse("kinematics").expect("kind");
+        let captions: Vec<String> = tmm::build(&session, kind, Lang::Ru)
+            .expect("sheets")
+            .iter()
+            .flat_map(|p| p.views.iter().filter_map(|v| v.caption.clone()))
+            .filter(|c| c.starts_with("План ускорений"))
+            .collect();
+        let at: Vec<String> = captions
+            .iter()
+            .map(|c| {
+                let pos = c.split("пол. ").nth(1).expect("a position");
+                pos.split(',').next().unwrap_or(pos).to_string()
+            })
+            .collect();
+        assert_eq!(at, drawn, "{name}: {captions:?}");
+        if s.kinematics.acceleration_positions.is_none() {
+            if let Some(f) = &s.forces {
+                assert_eq!(f.positions, drawn, "{name}");
+            }
+        }
+    }
+}

@@ -53,7 +53,7 @@ const JUSTIFIED: &[(&str, f64, &str)] = &[
     ("shaper/forces-2", 0.16, "as shaper/forces, at position 10"),
     ("v-engine/forces", 0.22, "the groups at the force sheets' own μ_l = 0,0005 (2:1), as large as their 300 mm room holds (group 4–5 272 × 237 mm, 2–3 284 × 183 mm: 0,0004 draws them 335 × 297 and 352 × 226 mm); the polygons at μ_F = 40 (the largest reaction 135 mm: 25 draws it 215 mm, and the position no longer fits one A1: the lever and the table go onto a second sheet); the groups are long links, thin on their field"),
     ("v-engine/forces-2", 0.22, "as v-engine/forces, at position 6 (group 4–5 191 × 281 mm at μ_l = 0,0005: 0,0004 draws it 234 × 349 mm)"),
-    ("v-engine/kinematics-2", 0.17, "the second of two sheets: the two acceleration plans at μ_a = 5, as large as their 250 mm room holds (196 × 231 mm: 4 draws them 245 × 288 mm), the diagrams at the chart's textbook size (2π on 240 mm, ordinates about 35 mm) and the tables and texts (the analytic table 600 × 110 mm, the errors 130 × 170 mm), which hold no view line; measured: the chart at μ_S = 0,002 and 2π on 360 mm inks 24 % but pushes the tables onto a third sheet"),
+    ("v-engine/kinematics-2", 0.27, "the second of two sheets: the acceleration plans at the force positions 3 and 6 at μ_a = 5, as large as their 250 mm room holds (plan 3 211 × 234 mm: 4 draws it about 260 × 290 mm), the diagrams beside them at 2π on 240 mm 1,5 times as tall (a longer chart does not stand beside the plans, and a taller one is too wide), the hodograph, the tables and texts, which hold no view line"),
 ];
 
 fn root() -> PathBuf {
