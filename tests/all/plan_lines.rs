@@ -84,6 +84,33 @@ fn centres_of_mass_are_thin_vectors_and_the_structural_points_main_ones() {
     }
 }
 
+/// The image of a carrier's point under a slider's joint is an absolute vector from the
+/// pole, the one the relative velocity adds to: drawn as a main line wherever it is found —
+/// the shaper's pb₃ (where two direction lines meet) as the tangent mechanism's pb₁ (by
+/// similarity on the crank; it had been thin as a centre of mass's).
+#[test]
+fn a_carriers_point_under_a_joint_is_a_main_vector() {
+    for (scene, image) in [("tangent", "b_{1}"), ("shaper", "b_{3}")] {
+        let all = views(scene);
+        let plans: Vec<View> =
+            [captioned(&all, "Пол. "), captioned(&all, "План ускорений")].concat();
+        let mut seen = 0;
+        for v in &plans {
+            let caption = v.caption.clone().unwrap_or_default();
+            let prime = if caption.starts_with("План") {
+                "′"
+            } else {
+                ""
+            };
+            if let Some(role) = image_role(v, &format!("{image}{prime}")) {
+                assert_eq!(role, Role::Result, "{scene} {caption}: {image}{prime}");
+                seen += 1;
+            }
+        }
+        assert!(seen >= 12, "{scene}: {seen} plans draw {image}");
+    }
+}
+
 #[test]
 fn only_position_one_is_drawn_in_main_lines_on_the_plan_of_positions() {
     for scene in ["six-bar", "shaper", "four-bar"] {

@@ -410,8 +410,8 @@ impl Builder<'_> {
 
     /// Mark and label the image `x` of the point of `link` under the point `point` (`b₁`)
     /// where the similarity line that found it ends: the absolute vector from the pole to it
-    /// (pb₁, the velocity the relative one adds to), thin as a leaf point's, and no reading
-    /// (nothing is asked of it but the line it starts); a dot where it vanishes.
+    /// (pb₁, the velocity the relative one adds to), a main line as the shaper's pb₃, and no
+    /// reading (nothing is asked of it but the line it starts); a dot where it vanishes.
     pub(in crate::linkage) fn mark_coincident(&mut self, point: usize, link: usize, x: DVec2) {
         let label = self.coincident_label(point, link);
         let toward = x.normalize_or(DVec2::Y);
@@ -427,7 +427,7 @@ impl Builder<'_> {
         };
         let id = self
             .rec
-            .draw(format!("image {label}"), vector, Role::Construction, &[]);
+            .draw(format!("image {label}"), vector, Role::Result, &[]);
         self.rec.label(id, label, x, toward);
     }
 
