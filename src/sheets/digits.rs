@@ -149,16 +149,6 @@ fn read_decimals(x: f64, step: Option<f64>) -> Option<usize> {
     Some(d.min(sig))
 }
 
-/// An upper bound of `x` ≥ 0 to one significant digit, rounded up: `0,002` of 0,001509.
-pub(crate) fn bound(x: f64, lang: Lang) -> String {
-    if !(x > 0.0 && x.is_finite()) {
-        return value(x, lang);
-    }
-    let unit = 10f64.powf(x.log10().floor());
-    let decimals = (-unit.log10()).round().max(0.0) as usize;
-    format_fixed((x / unit * (1.0 - 1e-12)).ceil() * unit, decimals, lang)
-}
-
 /// A scale in a sheet's text at the sheet's precision: `μ_{φ} = 0,05236 рад/мм` (a derived
 /// μ, not round, printed to [`SIG`] digits as every value of the sheet).
 pub(crate) fn caption(scale: Scale, lang: Lang) -> String {
@@ -177,7 +167,7 @@ pub(crate) fn mm(metres: f64, lang: Lang) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{bound, degrees, error_pct, mm, printed_error, read, value, Column};
+    use super::{degrees, error_pct, mm, printed_error, read, value, Column};
     use crate::scale::Lang;
 
     #[test]
@@ -222,20 +212,6 @@ mod tests {
         assert_eq!(printed_error("—", "1,0", Some(0.5), Lang::Ru), Some(0.5));
         assert_eq!(printed_error("1", "0", Some(0.5), Lang::Ru), None);
         assert_eq!(printed_error("1", "2", None, Lang::Ru), None);
-    }
-
-    #[test]
-    fn a_bound_is_rounded_up_to_one_digit() {
-        // Small values keep their one digit (0,001509 → 0,002); the shaper's envelope
-        // deviations, in nm: 1,509 → 2, and gears-pz1's 6,507 → 7.
-        assert_eq!(bound(0.001509, Lang::Ru), "0,002");
-        assert_eq!(bound(0.001463, Lang::En), "0.002");
-        assert_eq!(bound(1.509, Lang::Ru), "2");
-        assert_eq!(bound(6.507, Lang::Ru), "7");
-        assert_eq!(bound(0.003, Lang::En), "0.003");
-        assert_eq!(bound(9.2, Lang::En), "10");
-        assert_eq!(bound(46.0, Lang::En), "50");
-        assert_eq!(bound(0.0, Lang::En), "0");
     }
 
     #[test]

@@ -82,22 +82,6 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
     if computed(Symbol::ShiftCoefficient, Method::Formula) {
         lines.push(GearText::XMinRule.get(lang).into());
     }
-    // The profile's deviation from the exact envelope is no reading and no datum of the
-    // drawing (nanometres): a line bounds it, the tables leave it out.
-    let deviations = rest
-        .iter()
-        .filter(|r| r.key.symbol == Symbol::EnvelopeDeviation && r.method == Method::Envelope)
-        .map(|r| r.graphical)
-        .reduce(f64::max);
-    if let Some(d) = deviations {
-        let (factor, unit) = crate::words::shown_unit(Symbol::EnvelopeDeviation);
-        let bound = format!(
-            "{} {}",
-            super::digits::bound(d * factor, lang),
-            unit_in(unit, lang)
-        );
-        lines.push(GearText::EnvelopeRule.get(lang).replace("{bound}", &bound));
-    }
     lines.push(super::drafting_line(
         session.drafting(),
         super::Errs::Rounding,
@@ -491,8 +475,22 @@ impl Filling {
         } else {
             String::new()
         };
+        // The undercut's detail view, named by its letter and scale (ГОСТ 2.305: «А (20:1)»),
+        // after the pictures (a detail may stand anywhere on the sheet).
+        let names = |m: DetailMark| detail_name(m, lang);
+        let detail = match (r.detail_view(&names), r.detail) {
+            (Some(detail), Some((_, scale))) => Some((detail, scale)),
+            _ => None,
+        };
+        let undercut = match (&detail, r.undercut) {
+            (_, false) => String::new(),
+            (Some(_), true) => GearText::UndercutInDetail
+                .get(lang)
+                .replace("{letter}", DETAIL_LETTER),
+            (None, true) => GearText::UndercutHatched.get(lang).into(),
+        };
         let caption = format!(
-            "{} z = {}, x = {}{shortened}, N = {} ({}), {}{}",
+            "{} z = {}, x = {}{shortened}, N = {} ({}), {}{undercut}",
             GearText::CutByRack.get(lang),
             c.z,
             format_sig(c.x, 4, lang),
@@ -501,18 +499,10 @@ impl Filling {
                 .get(lang)
                 .replace("{n}", &r.drawn.len().to_string()),
             r.scale.caption(lang),
-            if r.undercut {
-                GearText::UndercutHatched.get(lang)
-            } else {
-                ""
-            }
         );
         self.blocks
             .push(view(&r.drawing(), caption, Key::GearsRackScaleL, r.scale));
-        // The undercut's detail view, named by its letter and scale (ГОСТ 2.305: «А (20:1)»),
-        // after the pictures (a detail may stand anywhere on the sheet).
-        let names = |m: DetailMark| detail_name(m, lang);
-        if let (Some(detail), Some((_, scale))) = (r.detail_view(&names), r.detail) {
+        if let Some((detail, scale)) = detail {
             let caption = format!("{DETAIL_LETTER} ({})", super::gost_scale(scale, lang));
             self.details
                 .push(view(&detail, caption, Key::GearsRackScaleL, r.scale));

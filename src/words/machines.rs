@@ -135,6 +135,12 @@ catalogue! {
         Interference => ("интерференция", "інтерференція", "interference"),
         CutByRack => ("Нарезание рейкой:", "Нарізання рейкою:", "Cut by the rack:"),
         UndercutHatched => ("; подрез заштрихован", "; підріз заштриховано", "; the undercut hatched"),
+        // Where the undercut is too fine to see at the picture's scale, its detail shows it.
+        UndercutInDetail => (
+            "; подрез заштрихован на выносном элементе {letter}",
+            "; підріз заштриховано на виносному елементі {letter}",
+            "; the undercut hatched in detail {letter}"
+        ),
         Undercut => (", подрез", ", підріз", ", undercut"),
         PositionsDrawn => ("показаны {n}", "показано {n}", "{n} drawn"),
         Pointed => (", заострение", ", загострення", ", pointed"),
@@ -179,11 +185,6 @@ catalogue! {
             "x_{min}: вычислено по (17 − z)/17 (1/17 ≈ sin²20°/2, округление), проверка — точное h_{a}* − z·sin²α/2",
             "x_{min}: обчислено за (17 − z)/17 (1/17 ≈ sin²20°/2, округлення), перевірка — точне h_{a}* − z·sin²α/2",
             "x_{min}: computed by (17 − z)/17 (1/17 ≈ sin²20°/2, rounded), check — the exact h_{a}* − z·sin²α/2"
-        ),
-        EnvelopeRule => (
-            "Профиль, проведённый лекалом по точкам касания, отклоняется от точной огибающей не более чем на {bound}",
-            "Профіль, проведений лекалом через точки дотику, відхиляється від точної обвідної не більше ніж на {bound}",
-            "The profile drawn with the French curve through the touching points departs from the exact envelope by at most {bound}"
         ),
         OtherRoute => ("проверка", "перевірка", "check"),
         ChosenBy => (

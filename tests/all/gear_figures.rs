@@ -375,3 +375,28 @@ fn the_plan_of_angular_velocities_names_every_ray_and_prints_mu_omega() {
         assert!(one.len() >= first.2.len());
     }
 }
+
+/// A rack-cut wheel's undercut, a sliver at the picture's 1:1, is hatched where it shows: the
+/// caption sends the reader to the detail that draws it (the shaper's z = 13, x = 0 said
+/// «подрез заштрихован» under a picture where no hatching can be seen), in ru, uk and en.
+#[test]
+fn the_undercut_is_said_to_be_hatched_in_its_detail() {
+    for (lang, words) in [
+        (tmm::Lang::Ru, "подрез заштрихован на выносном элементе A"),
+        (tmm::Lang::Uk, "підріз заштриховано на виносному елементі A"),
+        (tmm::Lang::En, "the undercut hatched in detail A"),
+    ] {
+        let captions: Vec<String> = gear_views("constructions/shaper.toml", lang)
+            .into_iter()
+            .filter_map(|v| v.caption)
+            .collect();
+        assert!(
+            captions.iter().any(|c| c.starts_with("A (")),
+            "{lang:?}: {captions:?}"
+        );
+        assert!(
+            captions.iter().any(|c| c.ends_with(words)),
+            "{lang:?}: {captions:?}"
+        );
+    }
+}
