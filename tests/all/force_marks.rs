@@ -431,3 +431,46 @@ fn no_vector_of_a_polygon_lies_on_another() {
     });
     assert!(beside > 0, "no polygon drew a vector beside another");
 }
+
+/// Issue 45 (arrowheads of forces too short to draw): a force a polygon's detail reads is
+/// drawn on the polygon as the short line it is, without a head — the V engine's G₄ and G₅,
+/// 0,3 mm at 40 N/mm, were bare 4 mm arrowheads beside the circles Б and Г — and its detail
+/// draws it as a named arrow.
+#[test]
+fn a_force_read_on_a_detail_has_no_head_on_its_polygon() {
+    let (mut lines, mut details) = (0, 0);
+    each_group(|what, g| {
+        let zones: Vec<_> = g.details.iter().map(|d| d.zone).collect();
+        let inside = |p: DVec2| zones.iter().any(|z| p.distance(z.center) <= z.radius);
+        for s in &g.polygon.steps {
+            match s.item {
+                Item::Vector { from, to } => assert!(
+                    from.distance(to) >= 4.0 || !(inside(from) && inside(to)),
+                    "{what}: {} drawn {:.2} mm with a head inside a detail's zone",
+                    s.note,
+                    from.distance(to)
+                ),
+                // A force's line, not the thin joins of one drawn beside another.
+                Item::Segment(seg)
+                    if s.note.starts_with("lay off ")
+                        && !s.note.ends_with("beside the vector on its line") =>
+                {
+                    assert!(inside(seg.from) && inside(seg.to), "{what}: {}", s.note);
+                    lines += 1;
+                }
+                _ => {}
+            }
+        }
+        for d in &g.details {
+            details += 1;
+            assert!(
+                !arrows(&d.figure).is_empty(),
+                "{what}: a detail with no named arrow"
+            );
+        }
+    });
+    assert!(
+        lines >= 2 && details >= 2,
+        "{lines} lines, {details} details"
+    );
+}

@@ -155,15 +155,17 @@ fn nested(polygon: Figure, finer: &[Circle], zone: &Circle, scale: Scale) -> (Fi
 }
 
 /// The forces of `figure` drawn shorter than [`SMALL_FORCE_MM`] inside one of `zones` (in
-/// the figure's mm) left without their names: a detail names them, where they read (the
-/// V engine's G₂, a dot named G₂ on its polygon at 40 N/mm beside the circle of its
-/// detail Г).
+/// the figure's mm) left without their names and their heads: a detail names them and
+/// shows their sense, where they read (the V engine's G₂, a dot named G₂ on its polygon at
+/// 40 N/mm beside the circle of its detail Г; its G₄ and G₅, 0,3 mm, drawn as bare 4 mm
+/// arrowheads at Б and Г). The polygon keeps each as the short line it is.
 pub(super) fn unname_read_elsewhere(figure: &mut Figure, zones: &[Circle]) {
     let inside = |p: DVec2| zones.iter().any(|z| p.distance(z.center) <= z.radius);
     for st in &mut figure.steps {
         if let Item::Vector { from, to } = st.item {
             if from.distance(to) < SMALL_FORCE_MM && inside(from) && inside(to) {
                 st.label = None;
+                st.item = Item::Segment(crate::geom::Segment::new(from, to));
             }
         }
     }

@@ -434,7 +434,18 @@ impl<'a> Placer<'a> {
             return cost;
         }
         cost = match slot.leader {
-            None => away(job, rect, &others.texts, cost),
+            // A text another label's leader runs through reads as struck (its cost as the
+            // leader's through it: a label moved after the leaders were set).
+            None => {
+                let through = (others.leaders.iter())
+                    .filter(|l| {
+                        l.pieces()
+                            .iter()
+                            .any(|o| super::clip::clipped_length(o.from, o.to, rect) > 0.0)
+                    })
+                    .count();
+                away(job, rect, &others.texts, cost) + through as f64 * OVER_TEXT
+            }
             Some(l) => {
                 let fractions = if job.fractions {
                     others
