@@ -478,10 +478,7 @@ impl Filling {
         // The undercut's detail view, named by its letter and scale (ГОСТ 2.305: «А (20:1)»),
         // after the pictures (a detail may stand anywhere on the sheet).
         let names = |m: DetailMark| detail_name(m, lang);
-        let detail = match (r.detail_view(&names), r.detail) {
-            (Some(detail), Some((_, scale))) => Some((detail, scale)),
-            _ => None,
-        };
+        let detail = r.detail_view(&names).zip(r.detail.map(|(_, scale)| scale));
         let undercut = match (&detail, r.undercut) {
             (_, false) => String::new(),
             (Some(_), true) => GearText::UndercutInDetail

@@ -235,15 +235,19 @@ pub(super) fn cost(
         }
     }
     for other in leaders {
-        let crossed = other.pieces().iter().any(|o| {
-            clip::clipped_length(o.from, o.to, rect) > 0.0
-                || [&line, &shelf].iter().any(|s| s.crossing(o).is_some())
-        });
+        let crossed = runs_through(other, rect)
+            || (other.pieces().iter())
+                .any(|o| [&line, &shelf].iter().any(|s| s.crossing(o).is_some()));
         if crossed {
             cost += OVER_LEADER;
         }
     }
     cost
+}
+
+/// Whether the leader `l` (its line or its shelf) runs through the box `rect`.
+pub(super) fn runs_through(l: &Leader, rect: &Rect) -> bool {
+    (l.pieces().iter()).any(|o| clip::clipped_length(o.from, o.to, rect) > 0.0)
 }
 
 /// How many samples of `piece` beyond [`ALONG_FROM_MM`] of the object `to` lie within

@@ -438,11 +438,7 @@ impl<'a> Placer<'a> {
             // leader's through it: a label moved after the leaders were set).
             None => {
                 let through = (others.leaders.iter())
-                    .filter(|l| {
-                        l.pieces()
-                            .iter()
-                            .any(|o| super::clip::clipped_length(o.from, o.to, rect) > 0.0)
-                    })
+                    .filter(|l| leader::runs_through(l, rect))
                     .count();
                 away(job, rect, &others.texts, cost) + through as f64 * OVER_TEXT
             }
