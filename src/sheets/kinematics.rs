@@ -516,13 +516,21 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
     let shown_pct = |x: f64| (x * 1e4).round() as i64;
     let mut entries: Vec<_> = summary.entries.iter().collect();
     entries.sort_by_key(|e| (e.method == Method::Plan, -shown_pct(e.max_abs_rel)));
+    // A diagram's worst error at a corner of S says so: the chords there are rough, the
+    // sheet's corner line says why (the six-bar's a_E, 110,76 % at position 6).
+    let corners: &[String] = a.diagrams.as_ref().map_or(&[], |d| &d.corners);
     let err_rows: Vec<Vec<String>> = entries
         .into_iter()
         .map(|e| {
-            let worst = if shown_pct(e.max_abs_rel) > 0 {
-                e.worst_position.clone().unwrap_or_default()
-            } else {
-                super::digits::NO_VALUE.into()
+            let worst = match &e.worst_position {
+                _ if shown_pct(e.max_abs_rel) == 0 => super::digits::NO_VALUE.into(),
+                Some(p)
+                    if matches!(e.method, Method::DiagramChords | Method::DiagramTangents)
+                        && corners.contains(p) =>
+                {
+                    format!("{p}, {}", Text::AtCorner.get(lang))
+                }
+                p => p.clone().unwrap_or_default(),
             };
             vec![
                 symbol_of(&read, &e.quantity, lang),
@@ -540,7 +548,7 @@ fn tables(a: &Kinematics, lang: Lang) -> Vec<TableBlock> {
             (Text::Method, 20.0),
             (Text::MeanError, 16.0),
             (Text::MaxError, 16.0),
-            (Text::PosShort, 10.0),
+            (Text::PosShort, if corners.is_empty() { 10.0 } else { 16.0 }),
         ],
         err_rows,
         size,

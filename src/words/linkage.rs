@@ -19,7 +19,9 @@ catalogue! {
         NoLinks => ("нет", "немає", "none"),
         DiagramsOfPoint => ("Диаграммы точки", "Діаграми точки", "Diagrams of point"),
         CornerBranchValues => ("ветвь после излома, по диаграммам и предел", "гілка після зламу, за діаграмами і границя", "the branch past the corner, by the diagrams and its limit"),
-        ChordsRoughAtCorner => ("у излома хорды дают производные грубо", "біля зламу хорди дають похідні грубо", "near a corner the chords give the derivatives roughly"),
+        ChordsRoughAtCorner => ("вблизи излома метод хорд даёт производные с большой погрешностью", "поблизу зламу метод хорд дає похідні з великою похибкою", "near a corner the chord method gives the derivatives with a large error"),
+        // The error table's position of a diagram's worst error where S has a corner.
+        AtCorner => ("излом", "злам", "corner"),
         CornerOfS => ("излом диаграммы S: каждая ветвь дифференцируется отдельно", "злам діаграми S: кожна гілка диференціюється окремо", "a corner of S: each branch is differentiated on its own"),
         Hodograph => ("Годограф", "Годограф", "Hodograph"),
         KinematicAnalysis => ("Кинематический анализ", "Кінематичний аналіз", "Kinematic analysis"),

@@ -555,3 +555,38 @@ fn the_diagrams_reading_at_a_corner_is_stated_with_its_limit() {
         }
     }
 }
+
+/// The six-bar's error table (issue 45): its diagrams' worst errors fall at position 6, the
+/// corner of S (a_E 110,76 %, the chords across a change point), and the table says so
+/// («6, излом») where an instructor reads the δ, while the plans' rows keep their positions.
+#[test]
+fn a_diagrams_worst_error_at_the_corner_of_s_is_marked_in_the_table() {
+    let s = tmm::scene::load(&root().join("constructions/six-bar.toml")).expect("six-bar");
+    let session = tmm::study::Session::new(&s, Drafting::EXACT);
+    let kind = tmm::scene::PlateKind::parse("kinematics").expect("kind");
+    for (lang, diagram, corner) in [
+        (Lang::Ru, "диаграмма", "6, излом"),
+        (Lang::Uk, "діаграма", "6, злам"),
+        (Lang::En, "diagram", "6, corner"),
+    ] {
+        let plates = tmm::build(&session, kind, lang).expect("sheets");
+        let table = (plates.iter().flat_map(|p| &p.tables))
+            .find(|t| {
+                t.rows
+                    .iter()
+                    .any(|r| r.get(1).is_some_and(|m| m == diagram))
+            })
+            .expect("the error table");
+        let worst: Vec<&String> = table.rows.iter().filter_map(|r| r.get(4)).collect();
+        let at_corner = table
+            .rows
+            .iter()
+            .filter(|r| r.get(4).is_some_and(|p| p == corner))
+            .count();
+        assert!(at_corner >= 1, "{lang:?}: {worst:?}");
+        for r in &table.rows {
+            let marked = r.get(4).is_some_and(|p| p.contains(','));
+            assert!(!marked || r[1] == diagram, "{lang:?}: {r:?}");
+        }
+    }
+}
