@@ -83,14 +83,21 @@ fn common_plans(ks: &[usize], own: &[usize]) -> Vec<usize> {
 /// keep theirs.
 const PLANS_AREA_MM2: f64 = 175_000.0;
 
+/// The labelled size of each plan of `kind` at the positions `ks` at `mu`, mm.
+fn plan_sizes(poses: &PlanPoses, ks: &[usize], w1: f64, kind: PlanKind, mu: Scale) -> Vec<DVec2> {
+    ks.iter()
+        .map(|&k| largest_plan(poses, &[k], w1, kind)(mu))
+        .collect()
+}
+
 /// The labelled area of the plans of `kind` at the positions `ks` at `mu`, summed, mm².
 fn plans_area(poses: &PlanPoses, ks: &[usize], w1: f64, kind: PlanKind, mu: Scale) -> f64 {
-    ks.iter()
-        .map(|&k| {
-            let s = largest_plan(poses, &[k], w1, kind)(mu);
-            s.x * s.y
-        })
-        .sum()
+    area_of(&plan_sizes(poses, ks, w1, kind, mu))
+}
+
+/// The summed area of `sizes`, mm².
+fn area_of(sizes: &[DVec2]) -> f64 {
+    sizes.iter().map(|s| s.x * s.y).sum()
 }
 
 /// `start` raised along the round series until the largest of the plans `ks` fits
@@ -379,15 +386,12 @@ impl<'s> Session<'s> {
             &self.acceleration_positions()?,
             &self.own_scale_positions()?,
         );
-        Ok(ks
-            .iter()
-            .map(|&k| largest_plan(&poses, &[k], w1, PlanKind::Acceleration)(a))
-            .collect())
+        Ok(plan_sizes(&poses, &ks, w1, PlanKind::Acceleration, a))
     }
 
     /// The labelled area of the common acceleration plans at `a`, summed, mm².
     fn acceleration_mm2(&self, a: Scale) -> Result<f64, StudyError> {
-        Ok(self.acceleration_sizes(a)?.iter().map(|s| s.x * s.y).sum())
+        Ok(area_of(&self.acceleration_sizes(a)?))
     }
 
     /// The labelled area of the displacement diagrams at `chart`, constructed as the sheet
@@ -421,8 +425,8 @@ impl<'s> Session<'s> {
         if self.kin_sheets()? == KinSheets::One {
             return Ok(textbook);
         }
-        let (l, plans) = (self.scale_l()?, self.acceleration_mm2(a)?);
-        let sizes = self.acceleration_sizes(a)?;
+        let (l, sizes) = (self.scale_l()?, self.acceleration_sizes(a)?);
+        let plans = area_of(&sizes);
         for (along, up) in LARGER_CHARTS {
             let chart = ChartScales {
                 size: ChartSize::times(along, up),
