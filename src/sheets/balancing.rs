@@ -8,7 +8,7 @@ use super::BuildError;
 use crate::balancing::{Balancing, Correction, Plane};
 use crate::check::{Row, Symbol};
 use crate::plate::{Plate, SheetSize, TableBlock};
-use crate::scale::{format_fixed, format_number, Key, Lang, Scale};
+use crate::scale::{format_number, Key, Lang, Scale};
 use crate::study::Session;
 use crate::words::{unit_in, RotorText, Text};
 
@@ -153,10 +153,10 @@ fn data_lines(b: &Balancing, lang: Lang) -> Vec<String> {
         let u = c.unbalance.length();
         let angle = c.angle().map_or_else(
             || super::digits::NO_VALUE.to_string(),
-            |a| format_fixed(a.to_degrees(), 1, lang),
+            |a| super::digits::degrees(a, lang),
         );
         out.push(format!(
-            "m_{{{idx}}} = m_{{{idx}}}ρ_{{{idx}}}/ρ_{{{idx}}} = {} {kgmm}/{} {mm} = {} {kg}, α_{{{idx}}} = {}°",
+            "m_{{{idx}}} = m_{{{idx}}}ρ_{{{idx}}}/ρ_{{{idx}}} = {} {kgmm}/{} {mm} = {} {kg}, α_{{{idx}}} = {}",
             num(u * sheet_unit(Symbol::StaticMoment).1, lang),
             num(c.radius * 1e3, lang),
             num(c.mass(), lang),

@@ -430,9 +430,9 @@ fn return_line(cam: &Cam, lang: Lang) -> Option<String> {
         CamText::ReturnUnlimited
             .get(lang)
             .replace("{angle}", angle)
-            .replace("{value}", &format_fixed(value.to_degrees(), 1, lang))
+            .replace("{value}", &digits::value(value.to_degrees(), lang))
             .replace("{rel}", rel)
-            .replace("{limit}", &format_sig(limit.to_degrees(), 4, lang))
+            .replace("{limit}", &digits::value(limit.to_degrees(), lang))
     })
 }
 

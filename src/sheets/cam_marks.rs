@@ -10,7 +10,7 @@ use super::digits;
 use crate::cam::follower::Placement;
 use crate::cam::{Cam, CamSpec, PHASE_NOTES};
 use crate::construct::Figure;
-use crate::scale::{format_sig, Lang};
+use crate::scale::Lang;
 use crate::words::CamText;
 
 /// The symbols of the phases in `lang`: rise, far dwell, return, near dwell.
@@ -24,18 +24,13 @@ fn phase_symbols(lang: Lang) -> [&'static str; 4] {
     .map(|t| t.get(lang))
 }
 
-/// A phase's angle (rad) as the sheets write it: degrees to four digits, `113,6°`.
-fn phase_angle(x: f64, lang: Lang) -> String {
-    format!("{}°", format_sig(x.to_degrees(), 4, lang))
-}
-
 /// The four phases with their angles: `φ_{у} = 113,6°, φ_{д.в.} = 14,2°, …`.
 pub(super) fn phases_line(spec: &CamSpec, lang: Lang) -> String {
     let p = &spec.phases;
     phase_symbols(lang)
         .iter()
         .zip([p.rise, p.far, p.ret, p.near])
-        .map(|(sym, x)| format!("{sym} = {}", phase_angle(x, lang)))
+        .map(|(sym, x)| format!("{sym} = {}", digits::degrees(x, lang)))
         .collect::<Vec<_>>()
         .join(", ")
 }
@@ -56,7 +51,7 @@ pub(super) fn angle_limit(spec: &CamSpec, lang: Lang) -> String {
     format!(
         "{} = {}",
         spec.angle_limit_symbol(),
-        phase_angle(spec.angle_limit(), lang)
+        digits::degrees(spec.angle_limit(), lang)
     )
 }
 
@@ -88,7 +83,7 @@ pub(super) fn phases_marked(figure: &Figure, spec: &CamSpec, lang: Lang) -> Figu
         .zip(phase_symbols(lang))
         .zip([p.rise, p.far, p.ret, p.near])
     {
-        out = relabelled(&out, note, &format!("{sym} = {}", phase_angle(x, lang)));
+        out = relabelled(&out, note, &format!("{sym} = {}", digits::degrees(x, lang)));
     }
     out
 }

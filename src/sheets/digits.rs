@@ -1,5 +1,5 @@
 //! The precision of the numbers a sheet's text prints, one place for every sheet (issue 45):
-//! what a drawing's table gives — four significant digits, an angle to 0,01°, a length in
+//! what a drawing's table gives — four significant digits, an angle's too, a length in
 //! millimetres with its unit — so that no text block prints six or seven digits, nor a
 //! length in metres with a run of zeros (`0,004975 м` is `4,975 мм`).
 
@@ -11,8 +11,6 @@ pub(crate) const NO_VALUE: &str = "—";
 
 /// Significant digits of a value in a sheet's text.
 pub(crate) const SIG: usize = 4;
-/// Decimals of an angle in degrees in a sheet's text (0,01°).
-pub(crate) const ANGLE_DECIMALS: usize = 2;
 /// Decimals of a relative error in per cent in a sheet's tables (0,01 %).
 const ERROR_DECIMALS: usize = 2;
 
@@ -21,12 +19,12 @@ pub(crate) fn value(x: f64, lang: Lang) -> String {
     format_sig(x, SIG, lang)
 }
 
-/// An angle given in radians, in degrees to [`ANGLE_DECIMALS`] with the degree sign.
+/// An angle given in radians, in degrees with the degree sign, to [`SIG`] significant digits
+/// as a table's cell of it gives them (the friction's φ′ = 9,826° in its line and its table
+/// alike), the zeros a round angle would trail left off as the textbook writes it
+/// (θ = 38°, φ₁ = 199° at an extreme position, not 38,00° and 199,00°).
 pub(crate) fn degrees(radians: f64, lang: Lang) -> String {
-    format!(
-        "{}°",
-        format_fixed(radians.to_degrees(), ANGLE_DECIMALS, lang)
-    )
+    format!("{}°", value(radians.to_degrees(), lang))
 }
 
 /// A relative error given as a fraction, in per cent to [`ERROR_DECIMALS`] (the unit is the
@@ -179,7 +177,10 @@ mod tests {
         assert_eq!(mm(0.004975, Lang::Ru), "4,975 мм");
         assert_eq!(mm(0.46233, Lang::En), "462.3 mm");
         assert_eq!(value(5.43944, Lang::En), "5.439");
-        assert_eq!(degrees(38.0f64.to_radians(), Lang::Uk), "38,00°");
+        // A round angle as the textbook writes it; φ′ = 9,8264° as its table's cell.
+        assert_eq!(degrees(38.0016f64.to_radians(), Lang::Uk), "38°");
+        assert_eq!(degrees(199.0008f64.to_radians(), Lang::Ru), "199°");
+        assert_eq!(degrees(9.8264f64.to_radians(), Lang::En), "9.826°");
         // The gear table's δ of a ratio read 16,667 % off, the cam's 0,034 %.
         assert_eq!(error_pct(-0.16667, Lang::Ru), "−16,67");
         assert_eq!(error_pct(0.00034, Lang::En), "0.03");

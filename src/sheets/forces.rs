@@ -53,16 +53,6 @@ pub fn build(
     Ok(plates)
 }
 
-/// An angle in degrees as the sheet writes it: whole degrees when it is one, else tenths.
-fn degrees(a: f64, lang: Lang) -> String {
-    let whole = a.round();
-    if (a - whole).abs() < 0.05 {
-        format_fixed(whole, 0, lang)
-    } else {
-        format_fixed(a, 1, lang)
-    }
-}
-
 /// A view captioned "`what`, μ = …" at `scale`, set by the scene key `key`; the caption
 /// under what the figure's symbols draw below its points (the ground of the crank's pivot).
 fn view(figure: &Figure, what: String, (key, scale): (Key, Scale), lang: Lang) -> Block {
@@ -242,7 +232,10 @@ fn position_sheet(
         f.label
     );
     let mut lines = vec![
-        format!("{title}, φ_{{1}} = {}°", degrees(phi, lang)),
+        format!(
+            "{title}, φ_{{1}} = {}",
+            super::digits::degrees(phi.to_radians(), lang)
+        ),
         super::drafting_line(session.drafting(), super::Errs::Plans, lang),
     ];
     let spec = session.force_spec("the force sheets")?;
@@ -363,9 +356,9 @@ fn gas_lines(
             difference.push_str(&format!(" {sign} {turn}°"));
         }
         lines.push(format!(
-            "θ_{{{piston}}} = {difference} = {}°, p_{{{piston}}} = {} {mpa} ({}), \
+            "θ_{{{piston}}} = {difference} = {}, p_{{{piston}}} = {} {mpa} ({}), \
              {} = p_{{{piston}}}·πd_{{{piston}}}^2/4 = {} {newton}",
-            degrees(r.theta.to_degrees(), lang),
+            super::digits::degrees(r.theta, lang),
             format_sig(r.pressure * 1e-6, 3, lang),
             Text::ByIndicator.get(lang),
             r.name(),

@@ -178,7 +178,7 @@ pub(crate) fn cut_wheel_quantity(
 
 /// Δy, and the indices of the blocking contour's points, to thousandths, as Kudryavtsev's
 /// tables give the shifts and Δy (x₁ = 0,694, Δy = 0,160): «Δy = 0,160» in the pair's line,
-/// the cut wheel's caption and at K alike.
+/// the cut wheel's caption, at K and in the table alike.
 fn thousandths(x: f64, lang: Lang) -> String {
     crate::scale::format_fixed(x, 3, lang)
 }
@@ -246,7 +246,10 @@ fn values_table(
     columns: &[(Column, f64)],
     lang: Lang,
 ) -> TableBlock {
-    let factor = |r: &Row| table_unit(r).1;
+    let cell = |r: &Row, x: f64, step: Option<f64>| match r.key.symbol {
+        Symbol::EqualisingShift => thousandths(x, lang),
+        _ => drawn_value(r, x, table_unit(r).1, step, lang),
+    };
     results_table(
         &Results {
             title,
@@ -256,11 +259,8 @@ fn values_table(
                 "" => String::new(),
                 u => unit_in(u, lang),
             },
-            value: &|r, x, _| drawn_value(r, x, factor(r), None, lang),
-            graphical: &|r| {
-                let step = g.reading_step(r, read_mm);
-                Some(drawn_value(r, r.graphical, factor(r), step, lang))
-            },
+            value: &|r, x, _| cell(r, x, None),
+            graphical: &|r| Some(cell(r, r.graphical, g.reading_step(r, read_mm))),
             size_mm: TABLE_MM,
         },
         rows,

@@ -318,9 +318,9 @@ fn rest_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
             _ => continue,
         };
         let line = format!(
-            "{} φ_{{1}} = {}°",
+            "{} φ_{{1}} = {}",
             text.get(lang),
-            format_fixed(*phi_deg, 1, lang)
+            super::digits::degrees(phi_deg.to_radians(), lang)
         );
         // The diagrams and the rocker's diagram refused for one reason: one line.
         if !lines.contains(&line) {

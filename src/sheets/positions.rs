@@ -1,7 +1,7 @@
 //! Plate "План положений": structural scheme and analysis, the plan of positions with its
 //! construction, trajectories and extreme positions, θ, H and K.
 
-use super::digits::ANGLE_DECIMALS;
+use super::digits::degrees;
 use super::layout::{lay_out, Block, ScaleKey};
 use super::BuildError;
 use crate::check::is_zero;
@@ -13,7 +13,7 @@ use crate::plate::{Plate, Sheet};
 use crate::scale::{format_fixed, Key, Lang, Quantity, Scale};
 use crate::study::Session;
 use crate::words::{plain, Text};
-use std::f64::consts::PI;
+use std::f64::consts::{PI, TAU};
 
 /// The room of the structural scheme, mm: wide enough for a long mechanism's scheme with its
 /// decomposition beside it at a scale its crank reads at (the six-bar, whose slider runs 1 m
@@ -309,9 +309,9 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
             .find(|p| (p.phi - phi).abs() < 1e-9)
             .map_or_else(String::new, |p| p.label.clone())
     };
-    let deg = |a: f64| format_fixed(a.to_degrees().rem_euclid(360.0), ANGLE_DECIMALS, lang);
+    let deg = |a: f64| degrees(a.rem_euclid(TAU), lang);
     let mut v = vec![format!(
-        "{}: {} (φ_1 = {}°), {} (φ_1 = {}°)",
+        "{}: {} (φ_1 = {}), {} (φ_1 = {})",
         Text::ExtremePositions.get(lang),
         label(ex.phi_start),
         deg(ex.phi_start),
@@ -334,15 +334,11 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     // halves: the line would contradict the one that says θ and K are not defined.
     if ex.ratio_defined() {
         v.push(format!(
-            "{} {start} → {other}{why}: {}°, {} — {}°",
+            "{} {start} → {other}{why}: {}, {} — {}",
             Text::WorkingStroke.get(lang),
-            format_fixed(ex.work_travel.to_degrees(), digits(ANGLE_DECIMALS), lang),
+            degrees(ex.work_travel, lang),
             Text::Return.get(lang),
-            format_fixed(
-                360.0 - ex.work_travel.to_degrees(),
-                digits(ANGLE_DECIMALS),
-                lang
-            )
+            degrees(TAU - ex.work_travel, lang)
         ));
     }
     for r in &ex.ranges {
@@ -357,7 +353,7 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
                 } else {
                     "ψ"
                 },
-                super::digits::degrees(r.max - r.min, lang)
+                degrees(r.max - r.min, lang)
             )),
             OutputCoord::Slider(i, _) => v.push(format!(
                 "{} {}: H = {}",
@@ -383,8 +379,8 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
                 .iter()
                 .map(|&(phi, q)| {
                     let at = match label(phi) {
-                        l if l.is_empty() => format!("φ_1 = {}°", deg(phi)),
-                        l => format!("{l}, φ_1 = {}°", deg(phi)),
+                        l if l.is_empty() => format!("φ_1 = {}", deg(phi)),
+                        l => format!("{l}, φ_1 = {}", deg(phi)),
                     };
                     match again(q) {
                         Some(w) => format!("{at} ({w})"),
@@ -413,8 +409,7 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     v.push(if stated {
         k
     } else {
-        let theta = format_fixed(ex.theta.to_degrees(), digits(ANGLE_DECIMALS), lang);
-        format!("θ = {theta}°, {k}")
+        format!("θ = {}, {k}", degrees(ex.theta, lang))
     });
     v
 }

@@ -88,7 +88,7 @@ catalogue! {
         ErrDiagrams => ("погрешность диаграмм — метод хорд", "похибка діаграм — метод хорд", "the diagrams err by the chord method"),
         ErrRounding => ("погрешность — только округление", "похибка — лише округлення", "they err by rounding only"),
         MeanError => ("δ ср., %", "δ сер., %", "δ mean, %"),
-        MaxError => ("δ max, %", "δ max, %", "δ max, %"),
+        MaxError => ("δ макс., %", "δ макс., %", "δ max, %"),
         ForceAnalysis => ("Силовой анализ", "Силовий аналіз", "Force analysis"),
         Position => ("положение", "положення", "position"),
         Group => ("Группа", "Група", "Group"),

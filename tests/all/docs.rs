@@ -342,7 +342,7 @@ fn the_readme_says_what_the_program_writes() {
         count_before(&readme, "`constructions/` holds", "scenes"),
         scenes
     );
-    // The caption's quotation of the second sheet: «(θ = 38,00°, H = 462,3 мм, K = 1,535)».
+    // The caption's quotation of the second sheet: «(θ = 38°, H = 462,3 мм, K = 1,535)».
     let quoted = readme
         .split("(θ = ")
         .nth(1)

@@ -179,7 +179,7 @@ fn a_slider_that_reaches_its_end_twice_a_turn_says_where() {
     };
     assert_eq!(
         stops("six-bar"),
-        ["v_{E} = 0 также при 4′, φ_1 = 229,06° (крайнее положение, как 6′)"]
+        ["v_{E} = 0 также при 4′, φ_1 = 229,1° (крайнее положение, как 6′)"]
     );
     assert!(stops("slider-crank").is_empty());
     with_kinematics("six-bar", |_, _, study| {
@@ -494,7 +494,7 @@ fn the_rocker_s_epsilon_names_its_link() {
 
 /// The error table compares the diagrams at the six-bar's corner (position 6) with the limits
 /// of the branch past it, a row the analytic table leaves empty: the sheet states both values
-/// beside each other, so that the δ max there (110 % for a_E at 0,5 mm) can be checked and is
+/// beside each other, so that the δ макс. there (110 % for a_E at 0,5 mm) can be checked and is
 /// said to be the chords' at a corner (issue 45: the δ stood unexplained). A scene without a
 /// corner has no such line.
 #[test]

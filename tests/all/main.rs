@@ -83,6 +83,7 @@ mod rigid_links;
 mod scheme;
 mod seed_shaper;
 mod session;
+mod sheet_angles;
 mod sheet_details;
 mod sheet_room;
 mod sheets;

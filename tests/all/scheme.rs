@@ -140,7 +140,7 @@ fn the_shapers_plan_names_the_strokes_other_end_and_its_swing_is_psi() {
         .filter(|st| st.label.as_ref().is_some_and(|l| l.text == "E′"))
         .count();
     assert_eq!(primed, 1, "E′ once, on the plan of positions");
-    assert_line(kinematic, "Угол размаха звена 3: ψ = θ = 38,00°");
+    assert_line(kinematic, "Угол размаха звена 3: ψ = θ = 38°");
 }
 
 /// The analytic table writes its angles (φ₁, φ₂, φ₄) to one precision: the V engine's

@@ -267,7 +267,7 @@ fn a_diagram_across_an_asymptote_is_refused_with_a_note() {
     let s = scene::load(&root().join("constructions/tangent.toml")).expect("scene");
     let text = sheet_text(&s);
     assert!(
-        text.contains("не строятся") && text.contains("90,0°"),
+        text.contains("не строятся") && text.contains("φ_{1} = 90°"),
         "{text}"
     );
 }
