@@ -190,12 +190,60 @@ impl Structure {
         Mobility::chebyshev(self.n, self.p5 + stray, self.p4)
     }
 
-    /// The structure formula: `I(0,1) → II(2,3) → II(4,5)`.
+    /// The structure formula: each group after the element (the driver or a group before
+    /// it) it is attached to, the latest of them when it holds on to several. A chain when
+    /// each is attached to the one before (the shaper's `I(0,1) → II(2,3) → II(4,5)`); two
+    /// branches from the driver either side of it (the V engine's two groups on the crank,
+    /// `II(2,3) ← I(0,1) → II(4,5)`), more with `;` between them. A group attached to the
+    /// middle of a branch leaves the groups in their order of attachment.
     pub fn formula(&self) -> String {
-        let mut s = format!("I(0,{})", self.crank_link);
-        for g in &self.groups {
-            s.push_str(&format!(" → II({},{})", g.links[0], g.links[1]));
+        let name = |i: &usize| {
+            let g = &self.groups[*i];
+            format!("II({},{})", g.links[0], g.links[1])
+        };
+        let driver = format!("I(0,{})", self.crank_link);
+        let chain = |b: &[usize], arrow: &str| {
+            let names: Vec<String> = b.iter().map(name).collect();
+            names.join(arrow)
+        };
+        let all: Vec<usize> = (0..self.groups.len()).collect();
+        match self.branches().as_deref() {
+            Some([left, right]) => {
+                let left: Vec<usize> = left.iter().rev().copied().collect();
+                format!(
+                    "{} ← {driver} → {}",
+                    chain(&left, " ← "),
+                    chain(right, " → ")
+                )
+            }
+            Some(b) if b.len() > 2 => b
+                .iter()
+                .map(|b| format!("{driver} → {}", chain(b, " → ")))
+                .collect::<Vec<_>>()
+                .join("; "),
+            _ if all.is_empty() => driver,
+            _ => format!("{driver} → {}", chain(&all, " → ")),
         }
-        s
+    }
+
+    /// The groups as branches from the driver, each a run of group indices in which every
+    /// group is attached to the one before it (the first to the driver); `None` when a group
+    /// is attached to one that another group already follows.
+    fn branches(&self) -> Option<Vec<Vec<usize>>> {
+        let mut branches: Vec<Vec<usize>> = Vec::new();
+        for (i, g) in self.groups.iter().enumerate() {
+            // The latest earlier group one of its outer pairs joins (none: the driver).
+            let parent = (0..i).rev().find(|&j| {
+                [&g.pairs[0], &g.pairs[2]]
+                    .iter()
+                    .flat_map(|p| p.links)
+                    .any(|l| self.groups[j].links.contains(&l))
+            });
+            match parent {
+                None => branches.push(vec![i]),
+                Some(j) => branches.iter_mut().find(|b| b.last() == Some(&j))?.push(i),
+            }
+        }
+        Some(branches)
     }
 }

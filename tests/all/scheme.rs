@@ -201,3 +201,29 @@ fn every_scheme_draws_its_crank_long_enough_to_read() {
     assert!(seen.iter().any(|n| n == "six-bar"), "{seen:?}");
     assert!(seen.len() >= 6, "{seen:?}");
 }
+
+/// The structure formula says what each group is attached to: the shaper's chain (group
+/// 4–5 hangs on link 3), the V engine's two groups each on the crank either side of it, the
+/// six-bar's and the four-bar's as the sheet writes them.
+#[test]
+fn the_structure_formula_follows_the_attachments() {
+    for (name, formula) in [
+        ("shaper", "I(0,1) → II(2,3) → II(4,5)"),
+        ("v-engine", "II(2,3) ← I(0,1) → II(4,5)"),
+        ("six-bar", "I(0,1) → II(2,3) → II(4,5)"),
+        ("four-bar", "I(0,1) → II(2,3)"),
+    ] {
+        let s = scene::load(&root().join(format!("constructions/{name}.toml"))).expect(name);
+        let st = tmm::linkage::Structure::analyse(s.mechanism.as_ref().expect("mechanism"));
+        assert_eq!(st.formula(), formula, "{name}");
+        let text =
+            std::fs::read_to_string(root().join(format!("constructions/{name}.toml"))).expect(name);
+        let sheets = sheets_of(name, &text);
+        let kinematic: Vec<&Plate> = sheets
+            .iter()
+            .filter(|(kind, _)| *kind == PlateKind::Kinematics)
+            .map(|(_, p)| p)
+            .collect();
+        assert_line(kinematic, &format!("Формула строения: {formula}"));
+    }
+}
