@@ -141,6 +141,7 @@ impl Inverting<'_> {
             self.position(&mut rec, o, mu, (i, p), &mut turned);
         }
         rec.set_group(0);
+        self.base_radius(&mut rec, mu, &turned.centres);
         self.profiles(&mut rec, o, mu, &turned);
         // The angle read off the drawing ([`super::reading`]).
         let paths: Vec<DVec2> = self
@@ -212,6 +213,39 @@ impl Inverting<'_> {
                 );
             }
         }
+    }
+
+    /// The base circle's radius r₀ dimensioned from O₁ where the followers leave the most
+    /// room: at the middle of the widest angle between two turned pitch points (the near
+    /// dwell's, where no follower is drawn).
+    fn base_radius(&self, rec: &mut Recorder, mu: Scale, centres: &[DVec2]) {
+        let mut angles: Vec<f64> = centres.iter().map(|c| c.y.atan2(c.x)).collect();
+        angles.sort_by(f64::total_cmp);
+        let gaps = angles
+            .iter()
+            .zip(angles.iter().cycle().skip(1))
+            .map(|(&a, &b)| (a, (b - a).rem_euclid(std::f64::consts::TAU)));
+        let Some((from, gap)) = gaps.max_by(|x, y| x.1.total_cmp(&y.1)) else {
+            return;
+        };
+        // One point only: its whole turn is the gap.
+        let gap = if gap == 0.0 {
+            std::f64::consts::TAU
+        } else {
+            gap
+        };
+        let dir = DVec2::from_angle(from + gap / 2.0);
+        let end = dir * mu.to_mm(self.base);
+        let id = rec.draw(
+            "base circle's radius r_0",
+            Item::Vector {
+                from: DVec2::ZERO,
+                to: end,
+            },
+            Role::Dimension,
+            &[],
+        );
+        rec.label(id, "r_0", end * 0.6, dir.perp());
     }
 
     /// The follower at point `i` turned back by its φ: the compass arc to its ray, the

@@ -523,3 +523,56 @@ fn a_rockers_profile_numbers_every_pivot_on_its_circle() {
         );
     }
 }
+
+/// The profile by inversion dimensions the base circle it is drawn on: a radius r₀ from O₁
+/// to the circle, labelled, in the widest gap between the turned followers (the shaper's
+/// accepted r₀ = 71 mm stood on its sheet as an unnamed circle), on every cam in ru and en.
+#[test]
+fn the_profiles_base_circle_is_dimensioned_r0() {
+    for name in TURNING {
+        for lang in [Lang::Ru, Lang::En] {
+            let (cam, _, _) = sheets(name, 0.0, lang);
+            let f = &cam.inversion.figure;
+            let radii: Vec<(DVec2, DVec2)> = f
+                .steps
+                .iter()
+                .filter(|s| s.role == Role::Dimension)
+                .filter(|s| s.label.as_ref().is_some_and(|l| l.text == "r_0"))
+                .filter_map(|s| match s.item {
+                    Item::Vector { from, to } => Some((from, to)),
+                    _ => None,
+                })
+                .collect();
+            assert_eq!(radii.len(), 1, "{name}: one r_0 radius");
+            let (from, to) = radii[0];
+            // O₁, the cam's centre, is the figure's origin (a joint labelled O₁).
+            let o = DVec2::ZERO;
+            assert!(f
+                .steps
+                .iter()
+                .any(|s| matches!(s.item, Item::Joint { at, .. } if at == o)
+                    && s.label.as_ref().is_some_and(|l| l.text == "O_1")));
+            assert!(from.distance(o) < tol(f), "{name}: from O₁");
+            let r0 = cam.inversion.scale.to_mm(cam.base);
+            assert!(
+                (to.distance(o) - r0).abs() < tol(f) * 10.0,
+                "{name}: to the base circle"
+            );
+            // No follower's pitch point, as the figure draws it, lies within 10° of the radius.
+            let dir = (to - o).normalize();
+            let near = f
+                .steps
+                .iter()
+                .filter(|s| s.note.starts_with("pitch point "))
+                .filter_map(|s| match s.item {
+                    Item::Point(p) => Some((p - o).normalize().angle_to(dir).abs().to_degrees()),
+                    _ => None,
+                })
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                near > 10.0 && near.is_finite(),
+                "{name}: a follower {near:.1}° from r_0"
+            );
+        }
+    }
+}
