@@ -66,6 +66,11 @@ pub struct KinematicsSpec {
     /// at the one common μ, and the default acceleration positions avoid these. Empty: one
     /// μ_v and one μ_a for every plan.
     pub own_scale: Vec<String>,
+    /// The positions whose acceleration plans alone are drawn at a μ_a of their own, by
+    /// label, each one of the acceleration positions (the shaper's 3, whose largest vector,
+    /// a_B1 = 34,5 m/s², is 35 mm at the seed's μ_a = 1, which plan 10 needs); their velocity
+    /// plans keep the common μ_v. Empty: as `own_scale` says.
+    pub own_scale_a: Vec<String>,
     /// The point whose displacement S(φ₁) is charted and differentiated (`S_5`).
     pub diagram_point: Option<String>,
     /// μ_S of the displacement chart, m/mm.
@@ -123,12 +128,20 @@ pub enum KinError {
     /// A position label that the plan of positions does not have.
     #[error("kinematics.{key}: there is no position {label}; the positions are {}", position_list(.valid))]
     NoSuchPosition {
-        /// The key (`acceleration_positions`, `own_scale`).
+        /// The key (`acceleration_positions`, `own_scale`, `own_scale_a`).
         key: &'static str,
         /// The label given.
         label: String,
         /// The plan's labels.
         valid: Vec<String>,
+    },
+    /// A plan given a μ_a of its own at a position with no acceleration plan.
+    #[error("kinematics.own_scale_a: position {label} has no acceleration plan; the acceleration plans are at {}", position_list(.drawn))]
+    NoAccelerationPlan {
+        /// The label given.
+        label: String,
+        /// The positions whose acceleration plans are drawn.
+        drawn: Vec<String>,
     },
     /// An acceleration plan asked for at a position whose velocity plan does not exist.
     #[error("kinematics.acceleration_positions: position {position} has no velocity plan ({why})")]

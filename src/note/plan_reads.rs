@@ -2,9 +2,11 @@
 //! study, the mechanism and the worked position ([`Plans`]), a plan's segment as it is named
 //! (`p b_{3}`), and one symbol explained.
 
+use super::equations::Kind;
 use super::Writer;
 use crate::check::{Method, Symbol};
 use crate::linkage::{Mechanism, PlanPosition, Structure};
+use crate::scale::Scale;
 use crate::study::Kinematics;
 
 /// What the plans' subsections read: the study, the mechanism, its structure and the
@@ -21,6 +23,31 @@ impl Plans<'_> {
     pub(super) fn built(&self) -> Option<&PlanPosition> {
         let at = self.at.as_deref()?;
         self.kin.plan.positions.iter().find(|p| p.label == at)
+    }
+
+    /// The μ of the worked position's plan of `kind` — its own when the scene gives it one
+    /// (`kinematics.own_scale`, `own_scale_a`) — else the common μ of the kind.
+    pub(super) fn scale(&self, kind: Kind) -> Scale {
+        let at = self.at.as_deref();
+        let k = self
+            .kin
+            .plan
+            .positions
+            .iter()
+            .position(|p| Some(p.label.as_str()) == at);
+        let own = k.and_then(|k| match kind {
+            Kind::Velocity => self.kin.velocity_plans()[k].map(|p| p.figure.scale),
+            Kind::Acceleration => self
+                .kin
+                .acceleration
+                .iter()
+                .find(|(i, _)| *i == k)
+                .map(|(_, a)| a.plan.figure.scale),
+        });
+        own.unwrap_or(match kind {
+            Kind::Velocity => self.kin.scales.v,
+            Kind::Acceleration => self.kin.scales.a,
+        })
     }
 
     /// The distance between the mechanism's points `a` and `b` at the worked position on the

@@ -142,17 +142,13 @@ impl CrankPin<'_> {
 /// A plan's subsection up to its worked values: the heading, the crank pin's vector and the
 /// plan's scale worked, each group's vector equations with the table of what is known.
 fn opening(w: &mut Writer<'_, '_>, p: &Plans<'_>, kind: Kind) {
-    let (heading, sentence, scale) = match kind {
-        Kind::Velocity => (T::VelocityPlans, T::VectorEquations, p.kin.scales.v),
-        Kind::Acceleration => (
-            T::AccelerationPlans,
-            T::AccelerationEquations,
-            p.kin.scales.a,
-        ),
+    let (heading, sentence) = match kind {
+        Kind::Velocity => (T::VelocityPlans, T::VectorEquations),
+        Kind::Acceleration => (T::AccelerationPlans, T::AccelerationEquations),
     };
     w.heading(2, heading);
     let crank = super::positions::crank_length(p.m);
-    crank_pin(p, &crank).worked(w, kind, scale);
+    crank_pin(p, &crank).worked(w, kind, p.scale(kind));
     w.doc.say(w.word(sentence));
     equations(w, p.m, &p.s.groups, kind);
 }
@@ -160,10 +156,9 @@ fn opening(w: &mut Writer<'_, '_>, p: &Plans<'_>, kind: Kind) {
 /// The velocity plans.
 pub(super) fn velocities(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(), NoteError> {
     let lang = w.lang;
-    let sc = p.kin.scales;
     opening(w, p, Kind::Velocity);
     if let Some(at) = &p.at {
-        worked(w, at, Symbol::Velocity, "p", sc.v);
+        worked(w, at, Symbol::Velocity, "p", p.scale(Kind::Velocity));
         super::plan_worked::similarity(w, p);
         super::plan_worked::rates(w, p, Kind::Velocity);
     }
@@ -186,12 +181,17 @@ pub(super) fn accelerations(w: &mut Writer<'_, '_>, p: &Plans<'_>) -> Result<(),
     if plan_quantities(&w.report.rows, Symbol::Acceleration).is_empty() {
         return Ok(());
     }
-    let sc = p.kin.scales;
     opening(w, p, Kind::Acceleration);
     if let Some(at) = &p.at {
         super::plan_worked::normals(w, p);
         super::plan_worked::coriolis(w, p);
-        worked(w, at, Symbol::Acceleration, "π", sc.a);
+        worked(
+            w,
+            at,
+            Symbol::Acceleration,
+            "π",
+            p.scale(Kind::Acceleration),
+        );
         super::plan_worked::rates(w, p, Kind::Acceleration);
     }
     let captions = (Some(T::AccelerationsTable), T::AccelerationErrors);

@@ -51,6 +51,13 @@ pub(crate) fn kinematics(
                 position_labels(check, &key, &labels, count, count as usize)
             })
             .unwrap_or_default(),
+        own_scale_a: raw
+            .own_scale_a
+            .map(|labels| {
+                let key = key("own_scale_a");
+                position_labels(check, &key, &labels, count, MAX_ACCELERATION_POSITIONS)
+            })
+            .unwrap_or_default(),
         diagram_point: point(check, &key("diagram"), raw.diagram, names.as_deref()),
         scale_s: check.scale(
             Key::KinematicsScaleS.path(),

@@ -235,6 +235,7 @@ pub(crate) struct RawKinematics {
     pub scale_a: Option<f64>,
     pub acceleration_positions: Option<Vec<String>>,
     pub own_scale: Option<Vec<String>>,
+    pub own_scale_a: Option<Vec<String>>,
     pub diagram: Option<String>,
     pub scale_s: Option<f64>,
     pub scale_phi: Option<f64>,

@@ -217,7 +217,7 @@ impl<'s> Session<'s> {
     pub fn acceleration_positions(&self) -> Result<Vec<usize>, StudyError> {
         let poses = self.poses()?;
         let labels = position_labels(&poses);
-        let own = self.own_scale_positions()?;
+        let own = self.own_scale_positions(PlanKind::Velocity)?;
         let forces = self.scene.forces.as_ref().map(|f| f.positions.as_slice());
         let asked = self
             .spec()
@@ -231,16 +231,31 @@ impl<'s> Session<'s> {
         )?)
     }
 
-    /// The positions whose plans the scene draws at a μ of their own (`kinematics.own_scale`),
-    /// as indices into the plan's positions.
-    pub fn own_scale_positions(&self) -> Result<Vec<usize>, StudyError> {
+    /// The positions whose plans of `kind` the scene draws at a μ of their own, as indices into
+    /// the plan's positions: `kinematics.own_scale` (both kinds of plan), and for the
+    /// acceleration plans `kinematics.own_scale_a`, each of which must be an acceleration
+    /// position.
+    pub fn own_scale_positions(&self, kind: PlanKind) -> Result<Vec<usize>, StudyError> {
         let poses = self.poses()?;
         let labels = position_labels(&poses);
-        Ok(position_indices(
-            &labels,
-            &self.spec().own_scale,
-            "own_scale",
-        )?)
+        let spec = self.spec();
+        let mut own = position_indices(&labels, &spec.own_scale, "own_scale")?;
+        if kind == PlanKind::Acceleration && !spec.own_scale_a.is_empty() {
+            let drawn = self.acceleration_positions()?;
+            for k in position_indices(&labels, &spec.own_scale_a, "own_scale_a")? {
+                if !drawn.contains(&k) {
+                    return Err(kinematics::KinError::NoAccelerationPlan {
+                        label: labels[k].0.to_string(),
+                        drawn: drawn.iter().map(|&d| labels[d].0.to_string()).collect(),
+                    }
+                    .into());
+                }
+                if !own.contains(&k) {
+                    own.push(k);
+                }
+            }
+        }
+        Ok(own)
     }
 
     /// The displacement diagrams read off the plan at μ_l = `l`, at the chart's scales.

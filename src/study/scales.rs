@@ -293,7 +293,7 @@ impl<'s> Session<'s> {
             PlanKind::Velocity => (v, (0..poses.positions.len()).collect()),
             PlanKind::Acceleration => (a, self.acceleration_positions()?),
         };
-        let ks = common_plans(&all, &self.own_scale_positions()?);
+        let ks = common_plans(&all, &self.own_scale_positions(kind)?);
         Ok(match self.kin_sheets()? {
             KinSheets::One => {
                 let room = (VECTOR_PLAN_ROOM, PLANS_AREA_MM2);
@@ -335,13 +335,14 @@ impl<'s> Session<'s> {
         let m = self.mechanism("the kinematic analysis")?;
         let spec = self.spec();
         let (mut v, mut a) = kinematics::plan_scales(&m.crank, spec)?;
-        let (poses, w1, own) = (self.poses()?, self.w1()?, self.own_scale_positions()?);
+        let (poses, w1) = (self.poses()?, self.w1()?);
         if spec.scale_v.is_none() {
             let all: Vec<usize> = (0..poses.positions.len()).collect();
-            let ks = common_plans(&all, &own);
+            let ks = common_plans(&all, &self.own_scale_positions(PlanKind::Velocity)?);
             v = plans_fit(&poses, &ks, w1, PlanKind::Velocity, v);
         }
         if spec.scale_a.is_none() {
+            let own = self.own_scale_positions(PlanKind::Acceleration)?;
             let ks = common_plans(&self.acceleration_positions()?, &own);
             a = plans_fit(&poses, &ks, w1, PlanKind::Acceleration, a);
         }
@@ -372,7 +373,7 @@ impl<'s> Session<'s> {
         let (poses, w1, l) = (self.poses()?, self.w1()?, self.scale_l()?);
         let positions = positions_extent(&poses).labelled_size_at(l);
         let all: Vec<usize> = (0..poses.positions.len()).collect();
-        let velocity = common_plans(&all, &self.own_scale_positions()?);
+        let velocity = common_plans(&all, &self.own_scale_positions(PlanKind::Velocity)?);
         Ok(positions.x * positions.y
             + plans_area(&poses, &velocity, w1, PlanKind::Velocity, v)
             + self.acceleration_mm2(a)?
@@ -384,7 +385,7 @@ impl<'s> Session<'s> {
         let (poses, w1) = (self.poses()?, self.w1()?);
         let ks = common_plans(
             &self.acceleration_positions()?,
-            &self.own_scale_positions()?,
+            &self.own_scale_positions(PlanKind::Acceleration)?,
         );
         Ok(plan_sizes(&poses, &ks, w1, PlanKind::Acceleration, a))
     }
@@ -461,7 +462,7 @@ impl<'s> Session<'s> {
     pub fn plan_scale(&self, kind: PlanKind, k: usize) -> Result<Scale, StudyError> {
         self.caches.get::<PlanScales>((kind, k), || {
             let sc = self.kin_scales()?;
-            if !self.own_scale_positions()?.contains(&k) {
+            if !self.own_scale_positions(kind)?.contains(&k) {
                 return Ok(match kind {
                     PlanKind::Velocity => sc.v,
                     PlanKind::Acceleration => sc.a,
@@ -494,7 +495,7 @@ mod tests {
             PlanKind::Velocity => (0..poses.positions.len()).collect(),
             PlanKind::Acceleration => s.acceleration_positions().expect("positions"),
         };
-        let ks = common_plans(&all, &s.own_scale_positions().expect("own"));
+        let ks = common_plans(&all, &s.own_scale_positions(kind).expect("own"));
         let l = s.scale_l().expect("μ_l");
         let positions = positions_extent(&poses).labelled_size_at(l);
         let (room, area) = match s.kin_sheets().expect("sheets") {

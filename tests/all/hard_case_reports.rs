@@ -57,7 +57,7 @@ fn report_of_a_pin_through_the_pivot_holds_no_huge_number() {
 
 /// The report of the shaper's kinematics with the crank `length` mm long (A–C is 430 mm),
 /// started at φ₁ = −90° where the pin is nearest the rocker's pivot C; acceleration plans at
-/// positions 1 and 4.
+/// positions 1 and 4, at the common μ_a.
 fn shaper_report_with_crank(length: &str) -> tmm::Report {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(root.join("constructions/shaper.toml")).expect("shaper");
@@ -73,7 +73,8 @@ fn shaper_report_with_crank(length: &str) -> tmm::Report {
         .replace(
             "acceleration_positions = [\"3\", \"10\"]",
             "acceleration_positions = [\"1\", \"4\"]",
-        );
+        )
+        .replace("own_scale_a = [\"3\"]", "");
     let scene = tmm::scene::parse(&text, &root.join("pin.toml")).expect("scene");
     tmm::study::Session::new(&scene, Drafting::EXACT)
         .report()

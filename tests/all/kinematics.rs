@@ -183,8 +183,8 @@ fn column(v: &serde_json::Value, name: &str) -> std::collections::HashMap<String
         .collect()
 }
 
-/// Drafting d = 0.5 mm on the shaper's plans (μ_v = 0.05 (m/s)/mm, μ_a = 1 (m/s²)/mm,
-/// shaper.toml). Every plan value is a length read off the drawing, rounded to d, times μ,
+/// Drafting d = 0.5 mm on the shaper's plans (μ_v = 0.05 (m/s)/mm, μ_a = 1 (m/s²)/mm at
+/// position 10 and 0.4 at 3, its own, shaper.toml). Every plan value is a length read off the drawing, rounded to d, times μ,
 /// so its own reading error is at most d/2·μ; what a rounded reading feeds into later adds
 /// to it. Derivation, row by row (RPR 2–3 about C, RPP 4–5 on a frame guide):
 /// - velocity plan: every image comes from exact geometry (intersections, the similarity
@@ -200,7 +200,8 @@ fn column(v: &serde_json::Value, name: &str) -> std::collections::HashMap<String
 #[test]
 fn drafting_half_a_millimetre_gives_hand_construction_errors() {
     let v = report_json("constructions/shaper.toml", "0.5");
-    let (d, mu_v, mu_a) = (0.5, 0.05, 1.0);
+    let (d, mu_v) = (0.5, 0.05);
+    let mu_a = |pos: &str| if pos == "3" { 0.4 } else { 1.0 };
     let (l3, w3, vr) = (column(&v, "L_3"), column(&v, "ω_3"), column(&v, "V_B3B1"));
     let (cd, cs3) = (0.71, 0.29);
     let mut vel = Vec::new();
@@ -214,6 +215,7 @@ fn drafting_half_a_millimetre_gives_hand_construction_errors() {
         let err = (num(r, "graphical") - num(r, "analytic")).abs();
         let l = l3[pos];
         let shift = w3[pos].abs() * d * mu_v + vr[pos].abs() * d * mu_v / l;
+        let mu_a = mu_a(pos);
         let propagated = |cx: f64| d / 2.0 * mu_a + cx / l * shift;
         let bound = match q {
             _ if q.starts_with("v_") => {

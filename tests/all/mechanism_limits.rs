@@ -92,7 +92,8 @@ fn every_documented_position_count_draws_the_kinematics_plate() {
     for n in [1, 2, 113, 200] {
         let text = shaper_kinematics()
             .replace("count = 12", &format!("count = {n}"))
-            .replace("[\"3\", \"10\"]", "[\"1\"]");
+            .replace("[\"3\", \"10\"]", "[\"1\"]")
+            .replace("own_scale_a = [\"3\"]", "own_scale_a = [\"1\"]");
         let name = format!("count-{n}");
         let (o, out) = run_limited(&name, &text, &["render", "--format", "svg"]);
         assert!(o.status.success(), "count {n}: {}", stderr(&o));

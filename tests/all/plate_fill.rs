@@ -30,7 +30,7 @@ const JUSTIFIED: &[(&str, &str)] = &[
     ("gears-differential/gears", "in en only: one figure (the train, its triangles and the plan of ω) on an A3, the smallest sheet; the English data lines are short enough for both tables to stand beside them, so the band under the text and the tables, left of the title block, is 124 mm (ru 57, uk 78)"),
     ("gears-pz3/gears", "the meshing picture at the scene's μ_l = 0,001, the largest round scale that holds it (a_w + r_a1 + r_a2 = 377 mm; 0,0005 draws it 753 mm, past the A1 field's 584), beside the sliding diagram, the blocking contour, the data and both tables: the bottom band under them left of the title block stays free"),
     ("rotor-static/balancing", "one disc and one polygon, each as large as its room (one round step finer doubles them); its 14 lines of data keep it off an A3"),
-    ("shaper/kinematics-2", "the second of two sheets, begun once the first is filled: the scene fixes every scale (the seed's μ_l, μ_v, μ_a, μ_S, μ_φ, H₁, H₂), and the diagrams' stack (405 mm tall) did not fit the first sheet's free band; the band under the stack stays free"),
+    ("shaper/kinematics-2", "the second of two sheets, begun once the first is filled: the scene fixes every scale (the seed's μ_l, μ_v, μ_a, μ_S, μ_φ, H₁, H₂; acceleration plan 3 at its own μ_a), and the diagrams' stack (405 mm tall) did not fit the first sheet's free band; the band under the stack stays free"),
     ("shaper/forces-2", "the scene fixes μ_l and μ_F (the seed's): position 10's kinetostatics, group 2–3 at μ_l, the crank with F_у on the pitch circle's image and the lever beside it, the polygons and details above; the bottom band under them stays free"),
 ];
 

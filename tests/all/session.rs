@@ -304,3 +304,39 @@ fn the_acceleration_plans_are_drawn_at_the_force_positions() {
         }
     }
 }
+
+/// `kinematics.own_scale_a`: the shaper's acceleration plan 3, whose largest vector
+/// (a_B1 = 34,5 m/s²) is 35 mm at the seed's μ_a = 1, is drawn at a μ_a of its own, the crank
+/// pin's acceleration at least 80 mm; plan 10 keeps the seed's μ_a and both velocity plans the
+/// seed's μ_v. Without the key plan 3 is drawn at μ_a = 1; a position with no acceleration
+/// plan is refused by name.
+#[test]
+fn an_acceleration_plan_takes_a_scale_of_its_own() {
+    let text = std::fs::read_to_string(root().join("constructions/shaper.toml")).expect("scene");
+    let line = "own_scale_a = [\"3\"]";
+    assert!(text.contains(line), "the shaper asks for plan 3's own μ_a");
+    let mu = |text: &str, kind: PlanKind, k: usize| {
+        let s = scene::parse(text, &root().join("x.toml")).expect("scene");
+        let session = Session::new(&s, Drafting::EXACT);
+        session.plan_scale(kind, k).expect("μ").value()
+    };
+    // Position 3 is index 2, position 10 index 10 (8′ comes after 8).
+    let (three, ten) = (2, 10);
+    let a3 = mu(&text, PlanKind::Acceleration, three);
+    let a_b1 = 0.14 * (5.0 * std::f64::consts::PI).powi(2);
+    assert!(a_b1 / a3 >= 80.0 && a3 < 1.0, "μ_a of plan 3: {a3}");
+    assert_eq!(mu(&text, PlanKind::Acceleration, ten), 1.0);
+    assert_eq!(mu(&text, PlanKind::Velocity, three), 0.05);
+    let without = text.replace(line, "");
+    assert_eq!(mu(&without, PlanKind::Acceleration, three), 1.0);
+    let wrong = text.replace(line, "own_scale_a = [\"4\"]");
+    let s = scene::parse(&wrong, &root().join("x.toml")).expect("scene");
+    let err = Session::new(&s, Drafting::EXACT)
+        .report()
+        .expect_err("no plan at 4")
+        .to_string();
+    assert!(
+        err.contains("kinematics.own_scale_a: position 4 has no acceleration plan; the acceleration plans are at 3, 10"),
+        "{err}"
+    );
+}
