@@ -10,7 +10,7 @@ use crate::construct::fit::{overflow, raised};
 use crate::construct::{Context, Figure, Item, Recorder, Role, StepId};
 use crate::geom::{bezier_points, french_piece, Arc, Circle, DVec2, Segment};
 use crate::scale::{Quantity, Scale};
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 use std::ops::Range;
 
 /// Largest radius of the profile drawing when the scene gives no μ_l, mm: at most this, and
@@ -216,25 +216,26 @@ impl Inverting<'_> {
     }
 
     /// The base circle's radius r₀ dimensioned from O₁ where the followers leave the most
-    /// room: at the middle of the widest angle between two turned pitch points (the near
-    /// dwell's, where no follower is drawn).
+    /// room: the whole degree farthest from every turned pitch point (in the near dwell's
+    /// gap, where no follower is drawn), clear of the support under O₁ and of the rotation's
+    /// arrow ([`rotation`]) beside it.
     fn base_radius(&self, rec: &mut Recorder, mu: Scale, centres: &[DVec2]) {
-        let mut angles: Vec<f64> = centres.iter().map(|c| c.y.atan2(c.x)).collect();
-        angles.sort_by(f64::total_cmp);
-        let gaps = angles
-            .iter()
-            .zip(angles.iter().cycle().skip(1))
-            .map(|(&a, &b)| (a, (b - a).rem_euclid(std::f64::consts::TAU)));
-        let Some((from, gap)) = gaps.max_by(|x, y| x.1.total_cmp(&y.1)) else {
+        let apart = |a: f64, b: f64| (a - b + PI).rem_euclid(TAU) - PI;
+        let clear = |a: f64| !(R0_KEPT_OFF.0..R0_KEPT_OFF.1).contains(&a);
+        let room = |a: f64| {
+            centres
+                .iter()
+                .map(|c| apart(c.y.atan2(c.x), a).abs())
+                .fold(PI, f64::min)
+        };
+        let Some(a) = (-180..180)
+            .map(|d| f64::from(d).to_radians())
+            .filter(|&a| clear(a))
+            .max_by(|&a, &b| room(a).total_cmp(&room(b)))
+        else {
             return;
         };
-        // One point only: its whole turn is the gap.
-        let gap = if gap == 0.0 {
-            std::f64::consts::TAU
-        } else {
-            gap
-        };
-        let dir = DVec2::from_angle(from + gap / 2.0);
+        let dir = DVec2::from_angle(a);
         let end = dir * mu.to_mm(self.base);
         let id = rec.draw(
             "base circle's radius r_0",
@@ -379,6 +380,11 @@ impl Inverting<'_> {
         );
     }
 }
+
+/// The directions from O₁ (rad, in the frame before a clockwise cam is mirrored) the base
+/// circle's radius keeps off: the support drawn under O₁ and its hatching (straight down
+/// ± 60°) and the rotation's arrow beside it ([`rotation`], −69° … −17°, with its label).
+const R0_KEPT_OFF: (f64, f64) = (-150.0 * PI / 180.0, -10.0 * PI / 180.0);
 
 /// The cam's sense of rotation: an arrowed arc about O₁ of radius 0.3·r₀ (`r0_mm` the base
 /// radius drawn; counter-clockwise here, the mirror image of a clockwise cam turns it round).

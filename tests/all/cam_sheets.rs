@@ -525,7 +525,7 @@ fn a_rockers_profile_numbers_every_pivot_on_its_circle() {
 }
 
 /// The profile by inversion dimensions the base circle it is drawn on: a radius r₀ from O₁
-/// to the circle, labelled, in the widest gap between the turned followers (the shaper's
+/// to the circle, labelled, clear of the turned followers and of the support (the shaper's
 /// accepted r₀ = 71 mm stood on its sheet as an unnamed circle), on every cam in ru and en.
 #[test]
 fn the_profiles_base_circle_is_dimensioned_r0() {
@@ -573,6 +573,9 @@ fn the_profiles_base_circle_is_dimensioned_r0() {
                 near > 10.0 && near.is_finite(),
                 "{name}: a follower {near:.1}° from r_0"
             );
+            // Nor through the support drawn under O₁.
+            let down = dir.dot(DVec2::NEG_Y).acos().to_degrees();
+            assert!(down > 55.0, "{name}: r_0 {down:.0}° from straight down");
         }
     }
 }
