@@ -43,7 +43,7 @@ pub use involute::{compass_involute, dms, inv, inv_inverse, CompassInvolute, TAB
 pub use mesh::{LAMBDA_MM, NAME_WITHIN_MM};
 pub use pair::{GearPair, PairSpec};
 pub use rack::{
-    x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, RackPiece, States, ToolShape,
+    uncuttable, x_for_tip, x_min, x_min_textbook, BasicRack, Cutting, RackPiece, States, ToolShape,
 };
 pub use rows::PairSeed;
 pub use train::{

@@ -509,6 +509,50 @@ pub fn x_min_textbook(z: u32) -> f64 {
     (17.0 - f64::from(z)) / 17.0
 }
 
+/// The shift at which a wheel of `z` teeth cut alone (Δy = 0) is pointed, s_a = 0, by
+/// bisection over `from`…`to` (s_a falls as x grows); `to` when it is not pointed there.
+/// The tip's thickness in closed form, module 1: any tooth count, as the rack itself is
+/// drawn only from five teeth.
+pub(crate) fn pointed_alone(z: f64, rack: &BasicRack, (from, to): (f64, f64)) -> f64 {
+    let sa = |x: f64| {
+        let r = z / 2.0;
+        let ra = r + rack.ha + x;
+        let rb = r * rack.alpha.cos();
+        if ra <= rb {
+            return 1.0;
+        }
+        let s = PI / 2.0 + 2.0 * x * rack.alpha.tan();
+        2.0 * ra * (s / (2.0 * r) + inv(rack.alpha) - inv((rb / ra).acos()))
+    };
+    if sa(to) > 0.0 {
+        return to;
+    }
+    // s_a > 0 on the first end's side (it falls as x grows); 100 halvings.
+    let Ok((_, pointed)) = bisect(
+        from,
+        to,
+        100,
+        |_, _| false,
+        |mid| {
+            Ok::<_, std::convert::Infallible>(if sa(mid) > 0.0 {
+                Midpoint::First
+            } else {
+                Midpoint::Second
+            })
+        },
+    );
+    pointed
+}
+
+/// A wheel of `z` teeth the rack cannot cut: undercut at every shift that leaves its tip
+/// unpointed — x_min above the shift that points it cut alone (seed 002 PZ2 example 1's
+/// z₃ = 4). `Some((x_min, x_pointed))` then, `None` for a wheel the rack cuts.
+pub fn uncuttable(z: u32, rack: &BasicRack) -> Option<(f64, f64)> {
+    let least = x_min(z, rack);
+    let pointed = pointed_alone(f64::from(z), rack, (-1.0, least.max(-1.0) + 1.0));
+    (least > pointed).then_some((least, pointed))
+}
+
 /// The shift coefficient at which a wheel cut alone has the tip thickness `sa_min` (× m):
 /// the upper end of the feasible range x_min … x(s_a = 0.3m). Bisection on x in [−1, 3]
 /// (s_a falls as x grows); `None` when no such x is there.

@@ -196,6 +196,24 @@ fn x_min_for_z13_and_the_textbook_rule() {
 }
 
 #[test]
+fn a_wheel_of_few_teeth_cannot_be_cut() {
+    // Seed 002 PZ2 example 1's z₃ = 4: undercut up to x = 0,766, pointed from a smaller x.
+    let (least, pointed) = super::uncuttable(4, &GOST).expect("z = 4 is not cut");
+    assert!(
+        (least - 0.7660).abs() < 5e-5 && pointed < least,
+        "{least} {pointed}"
+    );
+    // The closed-form pointing shift is the drawn wheel's: z = 13 as Cutting cuts it.
+    let drawn = x_for_tip(13, &GOST, 0.0).unwrap();
+    let closed = crate::gears::rack::pointed_alone(13.0, &GOST, (-1.0, 3.0));
+    assert!((drawn - closed).abs() < 1e-9, "{drawn} {closed}");
+    // Every wheel from 8 teeth is cut: some shift leaves it neither undercut nor pointed.
+    for z in 8..40 {
+        assert!(super::uncuttable(z, &GOST).is_none(), "z = {z}");
+    }
+}
+
+#[test]
 fn inverse_involute_round_trip_on_0_to_60_degrees() {
     for k in 0..6000 {
         let a = (k as f64 * 0.01).to_radians();

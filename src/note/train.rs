@@ -9,7 +9,7 @@ use super::markup::{frac, num, sym, unit};
 use super::worked::{Printed, Worked};
 use super::Writer;
 use crate::check::{Key, Method, Symbol};
-use crate::gears::{Stage, Train, TrainStudy};
+use crate::gears::{uncuttable as uncuttable_by, BasicRack, Stage, Train, TrainStudy};
 use crate::scale::RPM;
 use crate::words::{unit_in, CaseMeaning as M, NoteText as T};
 
@@ -82,6 +82,7 @@ fn chain(t: &Train, meshes: &[(usize, usize)], lang: crate::scale::Lang) -> (Str
 /// The train worked: the closed stages, then its ratio by the stages (or a differential's
 /// output by Willis's formula) against Willis's relations, then the required ratio.
 pub(super) fn train_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
+    uncuttable(w, study);
     closing_worked(w, study);
     let t = &study.spec.train;
     if let Some(stages) = t.stages() {
@@ -89,6 +90,25 @@ pub(super) fn train_worked(w: &mut Writer<'_, '_>, study: &TrainStudy) {
         required_worked(w, study, &stages, &names);
     } else {
         differential_worked(w, study);
+    }
+}
+
+/// Each wheel the standard rack cannot cut, with the shifts that say so (seed 002 PZ2
+/// example 1's z₃ = 4, an erratum the source's arithmetic keeps).
+fn uncuttable(w: &mut Writer<'_, '_>, study: &TrainStudy) {
+    let lang = w.lang;
+    for wheel in &study.spec.train.wheels {
+        let teeth = wheel.z.round() as u32;
+        let Some((least, pointed)) = uncuttable_by(teeth, &BasicRack::GOST_13755) else {
+            continue;
+        };
+        let line = w
+            .word(T::TrainUncuttable)
+            .replace("{name}", &wheel.name)
+            .replace("{z}", &teeth.to_string())
+            .replace("{least}", &crate::scale::format_sig(least, 3, lang))
+            .replace("{pointed}", &crate::scale::format_sig(pointed, 3, lang));
+        w.doc.say(&line);
     }
 }
 

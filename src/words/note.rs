@@ -367,6 +367,11 @@ catalogue! {
             "Модуль у задачі дано один на всю передачу (або не дано зовсім), і за нього суми чисел зубців ступеня не замикаються: сателіт не дістає до другого центрального колеса, передачу в такому вигляді не зібрати. Формула Вілліса потребує лише чисел зубців; для трикутників швидкостей зачеплення прийнято з модулем, за якого вісь центрального колеса збігається з віссю водила (у задачі не дано):",
             "The textbook gives one module for the whole train (or none), and with it the stage's tooth sums do not close: the satellite does not reach the second central wheel, and the train as given cannot be assembled. Willis's formula needs the teeth only; for the velocity triangles the mesh is taken at the module that brings the central wheel's axis onto the carrier's (the textbook gives none):"
         ),
+        TrainUncuttable => (
+            "Колесо {name} (z = {z}) стандартной рейкой (ГОСТ 13755) не нарезать: без подреза — только при x ≥ x_min = {least}, а зуб заостряется уже при x = {pointed}. Число зубьев взято из задачи как есть: формуле Виллиса нужны только числа зубьев.",
+            "Колесо {name} (z = {z}) стандартною рейкою (ГОСТ 13755) не нарізати: без підрізання — лише за x ≥ x_min = {least}, а зуб загострюється вже за x = {pointed}. Число зубців узято із задачі як є: формулі Вілліса потрібні лише числа зубців.",
+            "Wheel {name} (z = {z}) cannot be cut by the standard rack (GOST 13755): it is free of undercut only from x_min = {least}, and its tooth is pointed already at x = {pointed}. The tooth count is taken from the task as given: Willis's formula needs the teeth only."
+        ),
         TrainDifferential => (
             "Дифференциал (W = 2): при остановленном водиле отношение частот вращения центральных колёс — по числам зубьев; формула Виллиса даёт частоту вращения выходного звена по двум заданным:",
             "Диференціал (W = 2): при зупиненому водилі відношення частот обертання центральних коліс — за числами зубців; формула Вілліса дає частоту обертання вихідної ланки за двома заданими:",

@@ -244,7 +244,7 @@ fn the_pz1_note_is_the_report_form_with_the_drawn_readings() {
 
 /// The note of a train the seed prints at one module says what the seed leaves out and works
 /// the module taken for it (PZ2 example 1: a = m(z₁ + z₂)/2 = 68 mm, m′₃₄ = 2a/(z₃ + z₄) =
-/// 2,8333 mm); example 2's printed u₁H = 20 stands in the table of values not reproduced
+/// 2,8333 mm), and that its z₃ = 4 cannot be cut; example 2's printed u₁H = 20 stands in the table of values not reproduced
 /// against 32 (−37,5 %), with the u₃₆^(H) = 6 it needs; the differential's note works
 /// Willis's formula to n_H = (1000 + 4·200)/5 = 360 rpm.
 #[test]
@@ -258,10 +258,14 @@ fn the_train_notes_say_what_the_seed_leaves_out_and_work_the_differential() {
     let bare = |part: String| part.replace(' ', "");
     let sig5 = |x: f64| tmm::scale::format_sig(x, 5, Lang::Ru);
     let ex1 = text("constructions/gears-pz2-ex1.toml");
+    // z₃ = 4, which no standard rack cuts: undercut below x_min = 1 − 4·sin²20°/2.
+    let x_min = 1.0 - 4.0 * 20f64.to_radians().sin().powi(2) / 2.0;
     for part in [
         "Модуль в задаче дан один на всю передачу".to_string(),
         sig5((88.0 + 48.0) / 2.0),
         sig5(2.0 * 68.0 / (4.0 + 44.0)),
+        "Колесо 3 (z = 4) стандартной рейкой (ГОСТ 13755) не нарезать".to_string(),
+        tmm::scale::format_sig(x_min, 3, Lang::Ru),
     ] {
         assert!(
             ex1.contains(&bare(part.clone())),
@@ -269,6 +273,10 @@ fn the_train_notes_say_what_the_seed_leaves_out_and_work_the_differential() {
         );
     }
     let ex2 = text("constructions/gears-pz2-ex2.toml");
+    assert!(
+        !ex2.contains("ненарезать"),
+        "example 2's wheels are all cut"
+    );
     for part in [
         "Значения источника, которые проект не воспроизводит".to_string(),
         tmm::scale::format_sig((20.0 - 32.0) / 32.0 * 100.0, 3, Lang::Ru),

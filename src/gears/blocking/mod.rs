@@ -45,10 +45,9 @@ pub use study::{criterion_tag, BlockingStudy, Studies};
 pub use trace::{twin_check, Contour};
 
 use super::involute::inv;
+use super::rack::pointed_alone;
 use super::{BasicRack, GearError};
-use crate::geom::{bisect, DVec2, Midpoint};
-use std::convert::Infallible;
-use std::f64::consts::PI;
+use crate::geom::DVec2;
 
 /// The quality isolines of the tip thickness, × m.
 pub const TIP_LIMITS: [f64; 3] = [0.0, 0.25, 0.4];
@@ -231,7 +230,7 @@ impl Blocking {
         for i in 0..2 {
             let zi = f64::from(z[i]);
             lo[i] = (hl - zi * sin2 / 2.0 - 0.4).max(-X_MAX);
-            hi[i] = (pointed_alone(zi, &rack, lo[i]) + 1.5).min(X_MAX);
+            hi[i] = (pointed_alone(zi, &rack, (lo[i], X_MAX)) + 1.5).min(X_MAX);
             if hi[i] < lo[i] + 0.5 {
                 hi[i] = (lo[i] + 0.5).min(X_MAX);
             }
@@ -252,37 +251,4 @@ impl Blocking {
     pub fn x_min(&self, i: usize) -> f64 {
         self.hl - f64::from(self.z[i]) * self.rack.alpha.sin().powi(2) / 2.0
     }
-}
-
-/// The shift at which a wheel of `z` teeth cut alone (Δy = 0) is pointed, s_a = 0, by
-/// bisection from `from` (s_a falls as x grows); [`X_MAX`] when it is not pointed there.
-fn pointed_alone(z: f64, rack: &BasicRack, from: f64) -> f64 {
-    let sa = |x: f64| {
-        let r = z / 2.0;
-        let ra = r + rack.ha + x;
-        let rb = r * rack.alpha.cos();
-        if ra <= rb {
-            return 1.0;
-        }
-        let s = PI / 2.0 + 2.0 * x * rack.alpha.tan();
-        2.0 * ra * (s / (2.0 * r) + inv(rack.alpha) - inv((rb / ra).acos()))
-    };
-    if sa(X_MAX) > 0.0 {
-        return X_MAX;
-    }
-    // s_a > 0 on the first end's side (it falls as x grows); the same 100 halvings.
-    let Ok((_, pointed)) = bisect(
-        from,
-        X_MAX,
-        100,
-        |_, _| false,
-        |mid| {
-            Ok::<_, Infallible>(if sa(mid) > 0.0 {
-                Midpoint::First
-            } else {
-                Midpoint::Second
-            })
-        },
-    );
-    pointed
 }

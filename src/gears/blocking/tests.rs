@@ -2,6 +2,7 @@
 
 use super::plane::{inside_rings, zero_sets, Fields, Grid};
 use super::*;
+use std::f64::consts::PI;
 
 /// Closed-form functions of the plane.
 struct Known(Vec<Box<dyn Fn(DVec2) -> f64 + Sync>>);
