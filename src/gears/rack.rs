@@ -534,7 +534,7 @@ pub(crate) fn pointed_alone(z: f64, rack: &BasicRack, (from, to): (f64, f64)) ->
         100,
         |_, _| false,
         |mid| {
-            Ok::<_, std::convert::Infallible>(if sa(mid) > 0.0 {
+            Ok::<_, Infallible>(if sa(mid) > 0.0 {
                 Midpoint::First
             } else {
                 Midpoint::Second

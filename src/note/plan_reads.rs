@@ -36,7 +36,7 @@ impl Plans<'_> {
             .iter()
             .position(|p| Some(p.label.as_str()) == at);
         let own = k.and_then(|k| match kind {
-            Kind::Velocity => self.kin.velocity_plans()[k].map(|p| p.figure.scale),
+            Kind::Velocity => self.kin.velocity[k].plan().map(|p| p.figure.scale),
             Kind::Acceleration => self
                 .kin
                 .acceleration

@@ -321,7 +321,6 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     // Strokes of equal turns (θ = 0, an engine's central slider-crank): 180°, θ = 0°, K = 1,
     // no digits that say nothing; which half is working is said by its ends and its rule.
     let even = is_zero(ex.theta, PI);
-    let digits = |d: usize| if even { 0 } else { d };
     let (start, other) = (label(ex.phi_start), label(ex.phi_other));
     let why = if ex.from_outer {
         format!(" ({})", Text::FromOuterDeadCentre.get(lang))
@@ -404,7 +403,7 @@ fn extreme_lines(plan: &PositionPlan, lang: Lang) -> Vec<String> {
     let stated = ex.ranges.iter().any(|r| ex.theta_is_swing(r));
     let k = format!(
         "K = (180° + θ)/(180° − θ) = {}",
-        format_fixed(ex.k, digits(3), lang)
+        format_fixed(ex.k, if even { 0 } else { 3 }, lang)
     );
     v.push(if stated {
         k
