@@ -79,6 +79,10 @@ pub struct Integral {
     pub pole_mm: f64,
     /// The pole P, figure mm (on the integrand's abscissa axis).
     pub pole: DVec2,
+    /// Whether the pole and its rays are drawn: an integrand with no ordinate the drawing
+    /// shows (a uniform law's d²S/dφ²) is integrated without them, its integral a line
+    /// parallel to the abscissa from the start value ([`Integral::rays`] empty).
+    pub pole_drawn: bool,
     /// Abscissae of the nodes 0..=N (the division points).
     pub x: Vec<f64>,
     /// Values at the nodes 0..=N, physical units, as read (node 0 is the start value).
@@ -255,6 +259,7 @@ struct Drawn {
 struct Chords {
     scale: Scale,
     pole: DVec2,
+    pole_drawn: bool,
     node: Vec<f64>,
     rays: Vec<StepId>,
     chords: Vec<StepId>,
@@ -267,6 +272,7 @@ impl Chords {
             scale: self.scale,
             pole_mm,
             pole: self.pole,
+            pole_drawn: self.pole_drawn,
             x,
             node: self.node,
             rays: self.rays,
@@ -315,26 +321,29 @@ fn chords_through(
     }
     let axis_x = layout.ray_x(so);
     let pole = DVec2::new(axis_x - pole_mm, so.y);
-    let pole_id = draw_pole(given, pole, DVec2::new(axis_x, so.y), layout);
+    // An integrand whose every ordinate is under the drawing's coincidence has no ray to
+    // draw: each would lie on the abscissa axis, the pole and its distance marking nothing.
+    let flat = given.tolerances().coincident;
+    let pole_drawn = m_pts.iter().any(|m| (m.y - so.y).abs() > flat);
+    let pole_id = pole_drawn.then(|| draw_pole(given, pole, DVec2::new(axis_x, so.y), layout));
     let levels: Vec<f64> = m_pts.iter().map(|m| m.y).collect();
-    ray_axis_line(given, layout, axis_x, so.y, &levels);
+    if pole_drawn {
+        ray_axis_line(given, layout, axis_x, so.y, &levels);
+    }
     let o = layout.origin;
     let mut ends = vec![finite(at_mm(o, 0.0, scale.to_mm(start)), "start value")?];
     let mut rays = Vec::with_capacity(m_pts.len());
     let mut chords = Vec::with_capacity(m_pts.len());
     for (k, (&m, &x_end)) in m_pts.iter().zip(&d.nodes_mm[1..]).enumerate() {
-        let given = figs.given();
-        let foot = DVec2::new(m.x, so.y);
-        let perp = thin(given, format!("mean ordinate {k}"), foot, m, &[]);
         let q = DVec2::new(axis_x, m.y);
-        let proj = thin(given, format!("projection {k}"), m, q, &[perp]);
-        let ray = thin(
-            given,
-            format!("ray {k} from the pole"),
-            pole,
-            q,
-            &[pole_id, proj],
-        );
+        let ray = pole_id.map(|pole_id| {
+            let given = figs.given();
+            let foot = DVec2::new(m.x, so.y);
+            let perp = thin(given, format!("mean ordinate {k}"), foot, m, &[]);
+            let proj = thin(given, format!("projection {k}"), m, q, &[perp]);
+            let from = [pole_id, proj];
+            thin(given, format!("ray {k} from the pole"), pole, q, &from)
+        });
         let prev = ends[k];
         let along = Line::new(prev, q - pole).ok_or(CalculusError::Overflow { what: "chord" })?;
         let ordinate = Line::new(at_mm(o, x_end, 0.0), DVec2::Y)
@@ -349,15 +358,13 @@ fn chords_through(
                 })
             }
         };
-        let from = figs.across(&[ray]);
-        chords.push(thin(
-            figs.built(),
-            format!("chord {k}–{} ∥ ray {k}", k + 1),
-            prev,
-            end,
-            &from,
-        ));
-        rays.push(ray);
+        let from = figs.across(ray.as_slice());
+        let note = match ray {
+            Some(_) => format!("chord {k}–{} ∥ ray {k}", k + 1),
+            None => format!("chord {k}–{} ∥ the abscissa: the integrand is zero", k + 1),
+        };
+        chords.push(thin(figs.built(), note, prev, end, &from));
+        rays.extend(ray);
         ends.push(end);
     }
     let built = figs.built();
@@ -388,6 +395,7 @@ fn chords_through(
     Ok(Chords {
         scale,
         pole,
+        pole_drawn,
         node,
         rays,
         chords,

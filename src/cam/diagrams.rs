@@ -70,6 +70,10 @@ pub struct CamDiagrams {
     pub d2s_scale: Scale,
     /// The pole distances H₁, H₂, mm.
     pub poles: [f64; 2],
+    /// Whether each pole is drawn on some phase: a given d²S/dφ² with no ordinate on either
+    /// phase (the uniform law's, its rigid shocks only at the phases' ends) is integrated
+    /// without P₁, and its μ_S″ and H₁ are stated nowhere.
+    pub drawn_poles: [bool; 2],
     /// S at the points, as read.
     pub s: Vec<f64>,
     /// dS/dφ at the points, as read.
@@ -378,6 +382,7 @@ fn integrated(
     // Where the S curve has got to, mm: the far dwell and the return go on from there.
     let mut level = [0.0; 2];
     let mut s_start = 0.0;
+    let mut drawn_poles = [false; 2];
     for (idx, phase) in [0usize, 2].into_iter().enumerate() {
         views.group(idx as u32 + 1);
         // The phase's division points: equal intervals and one on every break of the given
@@ -420,6 +425,7 @@ fn integrated(
                 v0,
             )?;
         ds_ends[idx] = *v.node.last().unwrap_or(&0.0);
+        drawn_poles[0] |= v.pole_drawn;
         for (&i, &val) in at.iter().zip(&v.node) {
             ds_nodes[i] = val;
         }
@@ -434,6 +440,7 @@ fn integrated(
             },
             s_start,
         )?;
+        drawn_poles[1] |= s.pole_drawn;
         for (&i, &val) in at.iter().zip(&s.node) {
             s_nodes[i] = val;
         }
@@ -465,6 +472,7 @@ fn integrated(
         ds_scale,
         d2s_scale,
         poles,
+        drawn_poles,
         s: s_nodes,
         ds: ds_nodes,
         d2s,

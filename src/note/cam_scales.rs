@@ -45,6 +45,8 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &CamDiagrams, spec: &CamSpec) {
             ("y_{max}", w.word(M::DiagramTop), "mm"),
         ]);
     }
+    // μ_S′ through H₂, μ_S″ through H₁: each where its pole is drawn.
+    let drawn = [d.drawn_poles[1], d.drawn_poles[0]];
     for ((scale, value), of, pole, h, meaning, pole_meaning, si) in [
         (
             ("μ_{S′}", d.ds_scale.value()),
@@ -69,7 +71,11 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &CamDiagrams, spec: &CamSpec) {
             M::PoleOfAnalogues,
             ACCELERATION_UNIT,
         ),
-    ] {
+    ]
+    .into_iter()
+    .zip(drawn)
+    .filter_map(|(row, drawn)| drawn.then_some(row))
+    {
         w.worked(Worked::new(
             sym(scale),
             frac(&sym(of.0), &format!("{} {}", sym("μ_{φ}"), sym(pole))),
@@ -81,5 +87,8 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &CamDiagrams, spec: &CamSpec) {
             (of.0, w.word(of.2), of.3),
             (pole, w.word(pole_meaning), "mm"),
         ]);
+    }
+    if !d.drawn_poles[0] {
+        w.doc.say(w.word(T::CamNoAccelerationPole));
     }
 }

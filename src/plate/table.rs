@@ -92,13 +92,86 @@ pub(crate) fn table_marks(t: &TableBlock) -> Vec<Mark> {
         let cy = t.at.y + rh * (k as f64 + 0.5);
         for ((_, w), cell) in t.columns.iter().zip(cells) {
             if !cell.is_empty() {
-                let p =
-                    Placed::centred(DVec2::new(x + w * 0.5, cy), cell, t.size_mm, Align::Middle)
-                        .fit(w - 1.0);
+                let at = DVec2::new(x + w * 0.5, cy - lift(cell, t.size_mm));
+                let p = Placed::centred(at, cell, t.size_mm, Align::Middle).fit(w - 1.0);
                 marks.push(Mark::Text(p));
             }
             x += w;
         }
     }
     marks
+}
+
+/// Least room between a cell's ink and a rule of its row, in text heights.
+const CELL_CLEAR: f64 = 0.2;
+
+/// How far a cell's text is raised from capitals centred in its row (`height` the text size,
+/// the row twice as high): as far as its subscripts need to keep [`CELL_CLEAR`] off the rule
+/// below, while its ink keeps as much off the rule above; a text too tall for both is centred
+/// by its ink. A text without subscripts is not moved.
+fn lift(cell: &str, height: f64) -> f64 {
+    let e = super::text::measure(cell, height);
+    let clear = CELL_CLEAR * height;
+    // Below the baseline there is half a height before the rule, above it 1,5 heights.
+    let over = e.max.y - (0.5 * height - clear);
+    let room = 1.5 * height - clear + e.min.y;
+    if over <= 0.0 {
+        0.0
+    } else if over <= room {
+        over
+    } else {
+        0.5 * (e.min.y + e.max.y) + 0.5 * height
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every cell's ink keeps off its row's rules, a subscript's too; a cell without
+    /// scripts keeps its capitals centred.
+    #[test]
+    fn a_cells_subscripts_keep_off_the_rule_below() {
+        let cells = [
+            "V_{D5D3}",
+            "a_S5",
+            "ω_{кр}",
+            "диаграмма",
+            "0,31",
+            "м/с^2",
+            "J_{пр}^{(1)}",
+        ];
+        let t = TableBlock {
+            at: DVec2::ZERO,
+            title: String::new(),
+            columns: vec![("Величина".into(), 40.0)],
+            rows: cells.iter().map(|c| vec![c.to_string()]).collect(),
+            size_mm: 2.5,
+        };
+        let texts: Vec<Placed> = (table_marks(&t).into_iter())
+            .filter_map(|m| match m {
+                Mark::Text(p) => Some(p),
+                _ => None,
+            })
+            .collect();
+        let rh = t.row_height();
+        for (k, cell) in cells.iter().enumerate() {
+            let p = texts.iter().find(|p| p.markup == *cell).unwrap();
+            let b = p.bounds();
+            let (top, bottom) = (rh * (k + 1) as f64, rh * (k + 2) as f64);
+            let gaps = (b.min.y - top, bottom - b.max.y);
+            // Clear of both rules, or centred by its ink where it cannot be.
+            let clear = gaps.0 >= 0.5 - 1e-9 && gaps.1 >= 0.5 - 1e-9;
+            let centred = (gaps.0 - gaps.1).abs() < 1e-9 && gaps.0 > 0.0;
+            assert!(clear || centred, "{cell}: {gaps:?}");
+            if !cell.contains(['_', '^']) {
+                assert!(
+                    (p.at.y - (top + 0.5 * rh + 0.5 * t.size_mm)).abs() < 1e-12,
+                    "{cell}"
+                );
+            }
+        }
+        let raised = texts.iter().find(|p| p.markup == "V_{D5D3}").unwrap();
+        assert!(raised.at.y < rh * 1.5 + 1.25 - 0.1, "{}", raised.at.y);
+    }
 }

@@ -9,6 +9,7 @@ use super::metrics::glyph;
 use super::path::{num, Map};
 use super::Rect;
 use crate::geom::DVec2;
+use std::borrow::Cow;
 use std::fmt::Write as _;
 
 /// ГОСТ 2.304 size of labels (height of capitals), mm.
@@ -219,7 +220,7 @@ pub fn measure(markup: &str, height_mm: f64) -> Extent {
             Script::Sub => (em * SCRIPT_SCALE, SUB_SHIFT_EM * em),
             Script::Sup => (em * SCRIPT_SCALE, -SUP_SHIFT_EM * em),
         };
-        for c in run.text.chars() {
+        for c in kerned(&run.text).chars() {
             let g = glyph(c);
             if let Some((x0, y0, x1, y1)) = g.ink {
                 min = min.min(DVec2::new(pen + x0 * size, dy - y1 * size));
@@ -405,8 +406,9 @@ impl Placed {
             };
             let dy = target - shift;
             shift = target;
+            let text = kerned(&run.text);
             if dy == 0.0 && size.is_none() {
-                s.push_str(&escape(&run.text));
+                s.push_str(&escape(&text));
                 continue;
             }
             s.push_str("<tspan");
@@ -416,11 +418,38 @@ impl Placed {
             if let Some(size) = size {
                 let _ = write!(s, r#" font-size="{}""#, num(size));
             }
-            let _ = write!(s, ">{}</tspan>", escape(&run.text));
+            let _ = write!(s, ">{}</tspan>", escape(&text));
         }
         s.push_str("</text>");
         s
     }
+}
+
+/// Ink past its advance, em, from which a glyph's top would touch a prime set after it.
+const LEANS_PAST_EM: f64 = 0.06;
+
+/// The characters as the face draws them: a prime (′, ″) after a glyph whose ink leans past
+/// its advance (the oblique f: f′, the reduced coefficient of friction) is set a hair space
+/// (U+200A) off it, so that the two never fuse. [`measure`], the SVG and the DXF see it.
+pub(crate) fn kerned(text: &str) -> Cow<'_, str> {
+    let leans = |c: char| {
+        let g = glyph(c);
+        g.ink
+            .is_some_and(|(_, _, x1, _)| x1 - g.advance > LEANS_PAST_EM)
+    };
+    let chars: Vec<char> = text.chars().collect();
+    let touching = |w: &[char]| matches!(w[1], '′' | '″') && leans(w[0]);
+    if !chars.windows(2).any(touching) {
+        return Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 3);
+    for (k, &c) in chars.iter().enumerate() {
+        if k > 0 && touching(&[chars[k - 1], c]) {
+            out.push('\u{200A}');
+        }
+        out.push(c);
+    }
+    Cow::Owned(out)
 }
 
 /// Escape XML special characters.

@@ -157,25 +157,27 @@ pub fn build(session: &Session<'_>, lang: Lang) -> Result<Vec<Plate>, BuildError
 pub(super) fn diagram_block(d: &CamDiagrams, spec: &CamSpec, lang: Lang) -> Block {
     let mm = unit_in("mm", lang);
     let h = |i: usize| format_sig(d.poles[i], 3, lang);
-    // The diagrams stacked as the construction runs through them, each with its axes and
-    // its caption: the analogue, μ_φ, its μ and the pole distance of the pole it carries.
     let mut parts: Vec<Part> = Vec::with_capacity(3);
     let mut bottom = 0.0;
     for (which, figure) in d.stack(spec.given) {
+        // A d²S/dφ² with no ordinate drawn (P₁ not drawn) states no scale of ordinates.
         let (name, scale, pole) = match which {
             Analogue::D2s => (
                 CamText::AccelerationAnalogue,
-                mu("S″", d.d2s_scale, lang),
-                Some(("H_1", h(0))),
+                d.drawn_poles[0].then(|| mu("S″", d.d2s_scale, lang)),
+                d.drawn_poles[0].then(|| ("H_1", h(0))),
             ),
             Analogue::Ds => (
                 CamText::VelocityAnalogue,
-                mu("S′", d.ds_scale, lang),
-                Some(("H_2", h(1))),
+                Some(mu("S′", d.ds_scale, lang)),
+                d.drawn_poles[1].then(|| ("H_2", h(1))),
             ),
-            Analogue::S => (CamText::Displacement, s_scale(d, spec, lang), None),
+            Analogue::S => (CamText::Displacement, Some(s_scale(d, spec, lang)), None),
         };
-        let mut caption = format!("{}: {}, {scale}", name.get(lang), mu("φ", d.phi, lang));
+        let mut caption = format!("{}: {}", name.get(lang), mu("φ", d.phi, lang));
+        if let Some(scale) = scale {
+            caption.push_str(&format!(", {scale}"));
+        }
         if let Some((symbol, value)) = pole {
             caption.push_str(&format!(", {symbol} = {value} {mm}"));
         }

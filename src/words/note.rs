@@ -242,6 +242,11 @@ catalogue! {
             "Масштаби діаграм: вісь абсцис — один оберт кулачка; масштаби аналогів випливають з масштабу переміщень через полюсні відстані:",
             "The diagrams' scales: the abscissa spans one turn of the cam; the analogues' scales follow from the displacement scale through the pole distances:"
         ),
+        CamNoAccelerationPole => (
+            "Внутри фаз закон задаёт d²S/dφ² = 0 (жёсткие удары — только на границах фаз): интегрировать нечего, диаграмма dS/dφ каждой фазы — прямая, параллельная оси φ, на высоте, равной ходу толкателя, делённому на угол фазы; полюс P₁ не нужен и масштаб μ_S″ не выбирается.",
+            "Усередині фаз закон задає d²S/dφ² = 0 (жорсткі удари — лише на межах фаз): інтегрувати нічого, діаграма dS/dφ кожної фази — пряма, паралельна осі φ, на висоті, що дорівнює ходу штовхача, поділеному на кут фази; полюс P₁ не потрібен і масштаб μ_S″ не обирається.",
+            "Within the phases the law gives d²S/dφ² = 0 (rigid shocks only at the phases' ends): there is nothing to integrate, each phase's dS/dφ is a line parallel to the φ axis at the follower's stroke divided by the phase angle, so no pole P₁ is needed and no scale μ_S″ is chosen."
+        ),
         CamRadiusWorked => (
             "Минимальный радиус кулачка — расстояние от центра O₁, выбранного в зоне допустимых центров совмещённой диаграммы, до начальной точки B₀, в масштабе диаграммы:",
             "Мінімальний радіус кулачка — відстань від центра O₁, обраного в зоні допустимих центрів суміщеної діаграми, до початкової точки B₀, у масштабі діаграми:",

@@ -126,6 +126,7 @@ pub(super) fn differentiated(
         ds_scale,
         d2s_scale,
         poles: [h1, h2],
+        drawn_poles: [true; 2],
         y_max: None,
     })
 }

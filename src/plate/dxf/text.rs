@@ -7,8 +7,8 @@
 use super::Flip;
 use crate::geom::DVec2;
 use crate::plate::text::{
-    em_for_height, literal, measure, parse, Align, Placed, Script, SCRIPT_SCALE, SUB_SHIFT_EM,
-    SUP_SHIFT_EM,
+    em_for_height, kerned, literal, measure, parse, Align, Placed, Script, SCRIPT_SCALE,
+    SUB_SHIFT_EM, SUP_SHIFT_EM,
 };
 use acadrust::entities::{Text, TextHorizontalAlignment, TextVerticalAlignment};
 use acadrust::types::Vector3;
@@ -40,7 +40,7 @@ pub(super) fn runs(t: &Placed) -> Vec<RunText> {
         if run.script == Script::Normal {
             return vec![RunText {
                 at: t.at,
-                text: run.text.clone(),
+                text: kerned(&run.text).into_owned(),
                 height: t.height,
                 align: t.align,
             }];
@@ -64,7 +64,7 @@ pub(super) fn runs(t: &Placed) -> Vec<RunText> {
         let own = DVec2::new(pen * condense, down);
         out.push(RunText {
             at: t.at + turn.rotate(own),
-            text: run.text.clone(),
+            text: kerned(&run.text).into_owned(),
             height,
             align: Align::Start,
         });

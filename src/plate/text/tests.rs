@@ -166,3 +166,30 @@ fn scripted_texts_are_written_from_their_start() {
     let plain = Placed::new(at, "O_", 3.5, Align::Middle).to_xml("t");
     assert!(plain.contains(r#"text-anchor="middle""#), "{plain}");
 }
+
+/// The oblique f leans into a prime set after it (f′ on the friction sheet): the prime is set
+/// a hair space off, clear of the f's ink, in the SVG and in the measured box alike; a prime
+/// after an upright-ending letter (φ′, s′) is left as written.
+#[test]
+fn a_prime_keeps_off_the_oblique_f() {
+    let xml = Placed::new(DVec2::ZERO, "f′ = f/sin(β/2)", 3.5, Align::Start).to_xml("t");
+    assert!(xml.contains("f\u{200A}′ = f/sin"), "{xml}");
+    for plain in ["φ′ = 9,826°", "s′", "d′"] {
+        let xml = Placed::new(DVec2::ZERO, plain, 3.5, Align::Start).to_xml("t");
+        assert!(!xml.contains('\u{200A}'), "{xml}");
+    }
+    let f = measure("f", 3.5);
+    let prime = glyph('′');
+    let em = em_for_height(3.5);
+    let prime_ink = |m: &str| {
+        let pen = measure(m, 3.5).advance - prime.advance * em;
+        pen + prime.ink.unwrap().0 * em
+    };
+    // The hair space between them, and the prime's foot where the f's hook ends (the
+    // prime, leaning, moves away from the f above its foot).
+    let hair = glyph('\u{200A}').advance * em;
+    assert!(hair > 0.09 * em, "{hair}");
+    assert!((measure("f′", 3.5).advance - f.advance - prime.advance * em - hair).abs() < 1e-12);
+    let foot = prime_ink("f′");
+    assert!(foot > f.max.x - 0.03 * em, "{foot} against {}", f.max.x);
+}
