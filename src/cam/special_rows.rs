@@ -3,7 +3,7 @@
 //! hard cases).
 //!
 //! Flat-faced rocker: the pressure angle and the contact's radius vector per point, the
-//! drawn contacts' largest distance from the exact envelope, ρ_min of the profile. The
+//! drawn profile's largest distance from the exact envelope, ρ_min of the profile. The
 //! translating cam: the pressure angle per point, the profile's deviation, ρ_min of the
 //! pitch curve, and the shortest travel X_min that keeps λ ≤ λ_max (constructed on the
 //! combined diagram, [`super::travel`]; exact: 2π·max|S′|/tg λ_max).
@@ -15,7 +15,11 @@ use super::special::{Special, SpecialProfile};
 use super::CamError;
 use crate::check::notes::cam::{CamNote, SpecialNote};
 use crate::check::{self, At, Finding, Key, Method, Row, Symbol};
+use crate::geom::{bezier_distance, DVec2};
 use std::f64::consts::FRAC_PI_2;
+
+/// The exact envelope's points an interval of the drawn profile is measured at.
+const DEVIATION_STEPS: usize = 16;
 
 fn row(symbol: Symbol, at: At, subject: &str, (graphical, exact): (f64, f64), scale: f64) -> Row {
     let key = Key {
@@ -79,21 +83,39 @@ impl Special {
         }
     }
 
-    /// The drawn profile's largest distance from the exact one at the points, m.
+    /// The drawn profile's largest distance from the exact one, m: the flat-faced rocker's
+    /// whole drawn curve (the French curve laid along the face line at each contact, the
+    /// dwells' arcs) from the exact envelope over every moving interval — a contact found a
+    /// little along its face line is on the profile all the same; the translating cam's
+    /// drawn contacts from the exact ones at the points.
     pub fn profile_deviation(&self) -> Result<f64, CamError> {
         let mut worst = 0.0_f64;
-        for (i, p) in self.points.iter().enumerate() {
-            let d = match &self.profile {
-                SpecialProfile::FlatRocker { frame, board } => {
-                    let e = flat_rocker::exact(&self.spec, frame, p.phi, p.after)?;
-                    board.contacts[i].point.distance(e.point)
+        match &self.profile {
+            SpecialProfile::FlatRocker { frame, board } => {
+                let (start, pieces) = &board.profile;
+                let starts = std::iter::once(*start).chain(pieces.iter().map(|p| p[2]));
+                let drawn: Vec<(DVec2, [DVec2; 3])> = starts.zip(pieces.iter().copied()).collect();
+                let off = |e: DVec2| {
+                    (drawn.iter())
+                        .map(|(a, piece)| bezier_distance(e, *a, piece))
+                        .fold(f64::INFINITY, f64::min)
+                };
+                for w in self.points.windows(2).filter(|w| w[0].phase == w[1].phase) {
+                    for j in 0..=DEVIATION_STEPS {
+                        let k = j as f64 / DEVIATION_STEPS as f64;
+                        let phi = w[0].phi + (w[1].phi - w[0].phi) * k;
+                        let after = j == 0 && w[0].after;
+                        let e = flat_rocker::exact(&self.spec, frame, phi, after)?;
+                        worst = worst.max(off(e.point));
+                    }
                 }
-                SpecialProfile::Sliding { frame, board, .. } => {
+            }
+            SpecialProfile::Sliding { frame, board, .. } => {
+                for (i, p) in self.points.iter().enumerate() {
                     let e = sliding::exact(&self.spec, frame, p.phi, p.after)?;
-                    board.contacts[i].point.distance(e.point)
+                    worst = worst.max(board.contacts[i].point.distance(e.point));
                 }
-            };
-            worst = worst.max(d);
+            }
         }
         Ok(worst)
     }

@@ -2,7 +2,7 @@
 //! draw and laid out on as many sheets of a format as they need ([`super::pack`]).
 
 use super::label_room;
-use super::pack::{pack, rows_ending_level, sheet_overflow};
+use super::pack::{pack, sheet_overflow};
 use super::BuildError;
 use crate::check::Row;
 use crate::construct::fit::{raised, LABEL_MARGIN};
@@ -527,7 +527,6 @@ pub(super) fn lay_out_in_rows(
         .collect();
     let sizes: Vec<DVec2> = blocks.iter().map(Block::size).collect();
     let placed = pack(&sheet, &sizes, series).map_err(|k| too_large(&sheet, &blocks, &sizes, k))?;
-    let placed = rows_ending_level(&sheet, placed, series);
     let count = placed.iter().map(|p| p.0 + 1).max().unwrap_or(1);
     let mut pages: Vec<Parts> = (0..count).map(|_| Parts::default()).collect();
     for (block, (page, rect)) in blocks.into_iter().zip(placed) {

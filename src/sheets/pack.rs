@@ -213,64 +213,6 @@ pub(super) fn pack(
     Ok(out)
 }
 
-/// The placements with each row of a series ending level: an item of a row whose top is level
-/// with the row's first is lowered to end where the row's lowest item ends, so that the
-/// captions under the plans of a row stand on one line, where nothing else placed (nor the
-/// frame, the title block, the designation box) is in the way of any of them: a row lowered
-/// in part would read out of order. An item whose top the row already lowered (under a
-/// drawing reaching into the row) stays where it is.
-pub(super) fn rows_ending_level(
-    sheet: &Sheet,
-    mut placed: Vec<Placement>,
-    series: &[Option<u8>],
-) -> Vec<Placement> {
-    let blank = Page::new(sheet);
-    let mut k = 0;
-    while k < placed.len() {
-        let (page, first) = placed[k];
-        let of = series.get(k).copied().flatten();
-        let level = |j: usize| {
-            series.get(j).copied().flatten() == of
-                && placed[j].0 == page
-                && (placed[j].1.min.y - first.min.y).abs() < EPS_MM
-        };
-        let end = (k + 1..placed.len())
-            .find(|&j| !level(j))
-            .unwrap_or(placed.len());
-        if of.is_some() && end - k > 1 {
-            let bottom = placed[k..end]
-                .iter()
-                .map(|p| p.1.max.y)
-                .fold(f64::MIN, f64::max);
-            let lowered: Vec<Rect> = (placed[k..end].iter())
-                .map(|p| {
-                    let down = DVec2::new(0.0, bottom - p.1.max.y);
-                    Rect::new(p.1.min + down, p.1.max + down)
-                })
-                .collect();
-            let others: Vec<Rect> = (placed.iter().enumerate())
-                .filter(|&(i, p)| p.0 == page && !(k..end).contains(&i))
-                .map(|(_, p)| p.1)
-                .chain(blank.taken.iter().copied())
-                .collect();
-            let clear = |r: &Rect| {
-                blank.area.inflate(EPS_MM).contains(r)
-                    && others
-                        .iter()
-                        .all(|t| !r.inflate(GAP_MM - EPS_MM).intersects(t))
-            };
-            // The whole row or none of it: a row lowered in part would read out of order.
-            if lowered.iter().all(clear) {
-                for (p, r) in placed[k..end].iter_mut().zip(lowered) {
-                    p.1 = r;
-                }
-            }
-        }
-        k = end;
-    }
-    placed
-}
-
 /// The largest rectangles an empty sheet of format `sheet` has free (beside or above the
 /// title block, below or beside the designation box): an item fits an empty sheet when it
 /// fits one of them.
@@ -414,32 +356,6 @@ mod tests {
         let taller = [sizes[0], DVec2::new(350.0, 188.0 - LEVEL_MM), sizes[2]];
         let placed = pack(&s, &taller, &[]).expect("fits");
         assert_eq!(placed[2].1.min.x, placed[1].1.min.x, "{placed:?}");
-    }
-
-    /// Plans of one row end level, so that their captions stand on one line; the next row
-    /// starts under them as before. A row that something placed blocks in part keeps its
-    /// tops level instead, so that it still reads in order.
-    #[test]
-    fn a_rows_plans_end_level_or_the_row_stays_as_placed() {
-        let s = a1();
-        let sizes = [60.0, 120.0, 50.0, 90.0].map(|h| DVec2::new(110.0, h));
-        let series = [Some(0); 4];
-        let placed = pack(&s, &sizes, &series).expect("fits");
-        let ended = rows_ending_level(&s, placed.clone(), &series);
-        let bottom = ended[0].1.max.y;
-        for ((_, was), (page, r)) in placed.iter().zip(&ended) {
-            assert_eq!(*page, 0);
-            assert!((r.max.y - bottom).abs() < 1e-9, "{r:?}");
-            assert!((r.height() - was.height()).abs() < 1e-9 && r.min.x == was.min.x);
-        }
-        // A short item placed under the third plan, in the way of its lowering: no plan of
-        // the row moves.
-        let mut blocked = placed.clone();
-        let under = placed[2].1;
-        let low = DVec2::new(under.min.x, under.max.y + GAP_MM);
-        blocked.push((0, Rect::new(low, low + DVec2::new(50.0, 20.0))));
-        let kept = rows_ending_level(&s, blocked.clone(), &series);
-        assert_eq!(kept, blocked);
     }
 
     #[test]

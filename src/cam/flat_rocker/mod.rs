@@ -98,6 +98,9 @@ pub struct RockerConstruction {
     pub figure: Figure,
     /// The contacts at the points of the law (rise 0 … n, return n + 1 … 2n + 1).
     pub contacts: Vec<RockerContact>,
+    /// The drawn profile, cam frame, m: its start and its cubic pieces (the French curve
+    /// through the contacts along the face lines, the dwells' arcs).
+    pub profile: (DVec2, Vec<[DVec2; 3]>),
 }
 
 impl RockerConstruction {
@@ -481,6 +484,7 @@ pub fn construct(
     Ok(RockerConstruction {
         figure: rec.finish(),
         contacts,
+        profile: (start, pieces),
     })
 }
 
