@@ -2,7 +2,7 @@
 //! draw and laid out on as many sheets of a format as they need ([`super::pack`]).
 
 use super::label_room;
-use super::pack::{pack, sheet_overflow};
+use super::pack::{caption_drops, pack, sheet_overflow};
 use super::BuildError;
 use crate::check::Row;
 use crate::construct::fit::{raised, LABEL_MARGIN};
@@ -440,10 +440,20 @@ struct Parts {
     tables: Vec<TableBlock>,
 }
 
-/// Put `block` into `rect`.
-fn put(block: Block, rect: Rect, parts: &mut Parts) {
+/// Put `block` into `rect`; a one-view block's caption `drop` lower, its rectangle as much
+/// longer ([`caption_drops`]).
+fn put(block: Block, rect: Rect, drop: f64, parts: &mut Parts) {
     match block {
-        Block::Views { parts: figures, .. } => {
+        Block::Views {
+            parts: mut figures, ..
+        } => {
+            let rect = match figures.as_mut_slice() {
+                [one] if drop > 0.0 => {
+                    one.caption_drop += drop;
+                    Rect::new(rect.min, rect.max + DVec2::new(0.0, drop))
+                }
+                _ => rect,
+            };
             // The whole group's bounds, caption bands included, go to the rectangle's centre.
             let (lo, hi) = Block::bounds(&figures);
             let (left, right) = Block::span(&figures);
@@ -509,7 +519,8 @@ pub(super) fn lay_out(
 }
 
 /// [`lay_out`], the block `k` of the series `series[k]` (if any) placed in that series' rows
-/// ([`super::pack`]): the plans read 1 … 12 left to right, row under row.
+/// ([`super::pack`]): the plans read 1 … 12 left to right, row under row, the captions of a
+/// row nearly level set level ([`caption_drops`]).
 pub(super) fn lay_out_in_rows(
     sheet: Sheet,
     blocks: Vec<Block>,
@@ -529,8 +540,9 @@ pub(super) fn lay_out_in_rows(
     let placed = pack(&sheet, &sizes, series).map_err(|k| too_large(&sheet, &blocks, &sizes, k))?;
     let count = placed.iter().map(|p| p.0 + 1).max().unwrap_or(1);
     let mut pages: Vec<Parts> = (0..count).map(|_| Parts::default()).collect();
-    for (block, (page, rect)) in blocks.into_iter().zip(placed) {
-        put(block, rect, &mut pages[page]);
+    let drops = caption_drops(&sheet, &placed, series);
+    for ((block, (page, rect)), drop) in blocks.into_iter().zip(placed).zip(drops) {
+        put(block, rect, drop, &mut pages[page]);
     }
     Ok(pages
         .into_iter()

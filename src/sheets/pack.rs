@@ -213,6 +213,52 @@ pub(super) fn pack(
     Ok(out)
 }
 
+/// How much lower than its plan ends a caption of a row is written, at most, to stand on
+/// the line of the row's lowest caption, mm.
+const CAPTION_LEVEL_MM: f64 = 10.0;
+
+/// For each placement, how far its caption goes down to stand level with the lowest of its
+/// row's (a row of a series whose tops are level): where its plan ends at most
+/// [`CAPTION_LEVEL_MM`] higher and nothing placed is in the way; else 0. The plans stay
+/// where they are.
+pub(super) fn caption_drops(
+    sheet: &Sheet,
+    placed: &[Placement],
+    series: &[Option<u8>],
+) -> Vec<f64> {
+    let blank = Page::new(sheet);
+    let of = |k: usize| series.get(k).copied().flatten();
+    let mut drops = vec![0.0; placed.len()];
+    let mut k = 0;
+    while k < placed.len() {
+        let (page, first) = placed[k];
+        let level = |j: usize| {
+            of(j) == of(k)
+                && placed[j].0 == page
+                && (placed[j].1.min.y - first.min.y).abs() < EPS_MM
+        };
+        let end = (k + 1..placed.len())
+            .find(|&j| !level(j))
+            .unwrap_or(placed.len());
+        let bottom = (placed[k..end].iter()).fold(f64::MIN, |m, p| m.max(p.1.max.y));
+        for j in (k..end).filter(|_| of(k).is_some() && end - k > 1) {
+            let r = placed[j].1;
+            let drop = bottom - r.max.y;
+            let longer = Rect::new(r.min, r.max + DVec2::new(0.0, drop));
+            let clear = (placed.iter().enumerate())
+                .filter(|&(i, p)| i != j && p.0 == page)
+                .map(|(_, p)| p.1)
+                .chain(blank.taken.iter().copied())
+                .all(|t| !longer.inflate(GAP_MM - EPS_MM).intersects(&t));
+            if drop > EPS_MM && drop <= CAPTION_LEVEL_MM && clear {
+                drops[j] = drop;
+            }
+        }
+        k = end;
+    }
+    drops
+}
+
 /// The largest rectangles an empty sheet of format `sheet` has free (beside or above the
 /// title block, below or beside the designation box): an item fits an empty sheet when it
 /// fits one of them.
@@ -356,6 +402,29 @@ mod tests {
         let taller = [sizes[0], DVec2::new(350.0, 188.0 - LEVEL_MM), sizes[2]];
         let placed = pack(&s, &taller, &[]).expect("fits");
         assert_eq!(placed[2].1.min.x, placed[1].1.min.x, "{placed:?}");
+    }
+
+    /// The captions of a row whose plans end within 10 mm of its lowest go down to its line;
+    /// a plan 30 mm shorter keeps its caption under it, and one with a drawing under it in
+    /// the way keeps its own. No plan moves.
+    #[test]
+    fn nearly_level_captions_of_a_row_are_set_level() {
+        let s = a1();
+        let sizes = [100.0, 94.0, 70.0, 92.0].map(|h| DVec2::new(110.0, h));
+        let series = [Some(0); 4];
+        let placed = pack(&s, &sizes, &series).expect("fits");
+        assert!(placed
+            .iter()
+            .all(|p| (p.1.min.y - placed[0].1.min.y).abs() < 1e-9));
+        let drops = caption_drops(&s, &placed, &series);
+        assert_eq!(drops, vec![0.0, 6.0, 0.0, 8.0], "{placed:?}");
+        // A short item under the fourth plan, 3 mm below its end: its caption stays.
+        let mut blocked = placed.clone();
+        let r = placed[3].1;
+        let low = DVec2::new(r.min.x, r.max.y + GAP_MM + 3.0);
+        blocked.push((0, Rect::new(low, low + DVec2::new(50.0, 20.0))));
+        let drops = caption_drops(&s, &blocked, &series);
+        assert_eq!(drops, vec![0.0, 6.0, 0.0, 0.0, 0.0]);
     }
 
     #[test]

@@ -240,6 +240,8 @@ fn the_rules_catch_a_misplaced_view() {
     // and plan 1) drawn at one place: their captions collide and their ink lies on each other.
     let mut copy = p.views[3].clone();
     copy.origin = p.views[4].origin;
+    // Its caption where plan 3's is (a caption may stand lower than its plan ends).
+    copy.caption_drop = p.views[4].caption_drop;
     p.views.push(copy);
     p.views[0].origin -= DVec2::new(100.0, 0.0);
     let l = layout(&p);
