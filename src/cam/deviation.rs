@@ -29,6 +29,27 @@ pub fn exact_profile(
     to_cam(q, phi)
 }
 
+/// Points of the exact envelope measured along each interval of the drawn profile.
+const INTERVAL_SAMPLES: usize = 16;
+
+/// The angles a drawn profile is measured against the exact envelope at: equally spaced,
+/// both ends included, along each interval within a moving phase ([`INTERVAL_SAMPLES`] + 1
+/// of them), each with its interval's index and whether it is taken after a jump of the law
+/// there (the interval's first point's side).
+pub(super) fn interval_samples(points: &[Point]) -> impl Iterator<Item = (usize, f64, bool)> + '_ {
+    let moving = points.windows(2).enumerate();
+    moving
+        .filter(|(_, w)| w[0].phase == w[1].phase)
+        .flat_map(|(i, w)| {
+            let (p, q) = (w[0].phi, w[1].phi);
+            let after = w[0].after;
+            (0..=INTERVAL_SAMPLES).map(move |j| {
+                let phi = p + (q - p) * j as f64 / INTERVAL_SAMPLES as f64;
+                (i, phi, j == 0 && after)
+            })
+        })
+}
+
 /// The largest and the mean normal distance between the drawn practical profile (the French
 /// curve between its points within each moving phase, drawn as the cubic it is; the dwells
 /// are arcs) and the exact envelope, m.
@@ -41,26 +62,16 @@ pub fn deviation(
     roller: f64,
 ) -> (f64, f64) {
     let (mut worst, mut sum, mut count) = (0.0f64, 0.0, 0usize);
-    for i in 0..points.len().saturating_sub(1) {
-        let (p, q) = (&points[i], &points[i + 1]);
-        if p.phase != q.phase {
-            continue;
-        }
-        let piece = french_piece(
-            inv.profile[i],
-            inv.tangents[i],
-            inv.profile[i + 1],
-            inv.tangents[i + 1],
-        );
-        for j in 0..=16 {
-            let phi = p.phi + (q.phi - p.phi) * j as f64 / 16.0;
-            let after = j == 0 && p.after;
-            let e = exact_profile(cam_spec, place, base, roller, phi, after);
-            let d = bezier_distance(e, inv.profile[i], &piece);
-            worst = worst.max(d);
-            sum += d;
-            count += 1;
-        }
+    let (c, t) = (&inv.profile, &inv.tangents);
+    let pieces: Vec<[DVec2; 3]> = (1..c.len())
+        .map(|i| french_piece(c[i - 1], t[i - 1], c[i], t[i]))
+        .collect();
+    for (i, phi, after) in interval_samples(points) {
+        let e = exact_profile(cam_spec, place, base, roller, phi, after);
+        let d = bezier_distance(e, c[i], &pieces[i]);
+        worst = worst.max(d);
+        sum += d;
+        count += 1;
     }
     (worst, sum / count.max(1) as f64)
 }

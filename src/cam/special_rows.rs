@@ -8,6 +8,7 @@
 //! pitch curve, and the shortest travel X_min that keeps λ ≤ λ_max (constructed on the
 //! combined diagram, [`super::travel`]; exact: 2π·max|S′|/tg λ_max).
 
+use super::deviation::interval_samples;
 use super::flat_rocker::{self, FlatRocker};
 use super::rows::{diagram_rows, law_notes};
 use super::sliding::{self, Sliding};
@@ -17,9 +18,6 @@ use crate::check::notes::cam::{CamNote, SpecialNote};
 use crate::check::{self, At, Finding, Key, Method, Row, Symbol};
 use crate::geom::{bezier_distance, DVec2};
 use std::f64::consts::FRAC_PI_2;
-
-/// The exact envelope's points an interval of the drawn profile is measured at.
-const DEVIATION_STEPS: usize = 16;
 
 fn row(symbol: Symbol, at: At, subject: &str, (graphical, exact): (f64, f64), scale: f64) -> Row {
     let key = Key {
@@ -85,7 +83,7 @@ impl Special {
 
     /// The drawn profile's largest distance from the exact one, m: the flat-faced rocker's
     /// whole drawn curve (the French curve laid along the face line at each contact, the
-    /// dwells' arcs) from the exact envelope over every moving interval — a contact found a
+    /// dwells' arcs) from the exact envelope along every moving interval — a contact found a
     /// little along its face line is on the profile all the same; the translating cam's
     /// drawn contacts from the exact ones at the points.
     pub fn profile_deviation(&self) -> Result<f64, CamError> {
@@ -100,14 +98,9 @@ impl Special {
                         .map(|(a, piece)| bezier_distance(e, *a, piece))
                         .fold(f64::INFINITY, f64::min)
                 };
-                for w in self.points.windows(2).filter(|w| w[0].phase == w[1].phase) {
-                    for j in 0..=DEVIATION_STEPS {
-                        let k = j as f64 / DEVIATION_STEPS as f64;
-                        let phi = w[0].phi + (w[1].phi - w[0].phi) * k;
-                        let after = j == 0 && w[0].after;
-                        let e = flat_rocker::exact(&self.spec, frame, phi, after)?;
-                        worst = worst.max(off(e.point));
-                    }
+                for (_, phi, after) in interval_samples(&self.points) {
+                    let e = flat_rocker::exact(&self.spec, frame, phi, after)?;
+                    worst = worst.max(off(e.point));
                 }
             }
             SpecialProfile::Sliding { frame, board, .. } => {

@@ -46,7 +46,7 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &CamDiagrams, spec: &CamSpec) {
         ]);
     }
     // μ_S′ through H₂, μ_S″ through H₁: each where its pole is drawn.
-    let drawn = [d.drawn_poles[1], d.drawn_poles[0]];
+    let poled = [d.drawn_poles[1], d.drawn_poles[0]];
     for ((scale, value), of, pole, h, meaning, pole_meaning, si) in [
         (
             ("μ_{S′}", d.ds_scale.value()),
@@ -73,8 +73,8 @@ pub(super) fn scales(w: &mut Writer<'_, '_>, d: &CamDiagrams, spec: &CamSpec) {
         ),
     ]
     .into_iter()
-    .zip(drawn)
-    .filter_map(|(row, drawn)| drawn.then_some(row))
+    .zip(poled)
+    .filter_map(|(row, poled)| poled.then_some(row))
     {
         w.worked(Worked::new(
             sym(scale),

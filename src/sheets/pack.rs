@@ -226,7 +226,6 @@ pub(super) fn caption_drops(
     placed: &[Placement],
     series: &[Option<u8>],
 ) -> Vec<f64> {
-    let blank = Page::new(sheet);
     let of = |k: usize| series.get(k).copied().flatten();
     let mut drops = vec![0.0; placed.len()];
     let mut k = 0;
@@ -241,17 +240,20 @@ pub(super) fn caption_drops(
             .find(|&j| !level(j))
             .unwrap_or(placed.len());
         let bottom = (placed[k..end].iter()).fold(f64::MIN, |m, p| m.max(p.1.max.y));
-        for j in (k..end).filter(|_| of(k).is_some() && end - k > 1) {
-            let r = placed[j].1;
-            let drop = bottom - r.max.y;
-            let longer = Rect::new(r.min, r.max + DVec2::new(0.0, drop));
-            let clear = (placed.iter().enumerate())
-                .filter(|&(i, p)| i != j && p.0 == page)
-                .map(|(_, p)| p.1)
-                .chain(blank.taken.iter().copied())
-                .all(|t| !longer.inflate(GAP_MM - EPS_MM).intersects(&t));
-            if drop > EPS_MM && drop <= CAPTION_LEVEL_MM && clear {
-                drops[j] = drop;
+        if of(k).is_some() && end - k > 1 {
+            for j in k..end {
+                let r = placed[j].1;
+                let drop = bottom - r.max.y;
+                // The page with everything placed on it but this plan.
+                let mut others = Page::new(sheet);
+                (others.taken).extend(
+                    (placed.iter().enumerate())
+                        .filter_map(|(i, p)| (i != j && p.0 == page).then_some(p.1)),
+                );
+                let longer = Rect::new(r.min, r.max + DVec2::new(0.0, drop));
+                if drop > EPS_MM && drop <= CAPTION_LEVEL_MM && others.free(&longer) {
+                    drops[j] = drop;
+                }
             }
         }
         k = end;
