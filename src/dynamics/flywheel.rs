@@ -1,6 +1,6 @@
 //! The flywheel's size from its moment of inertia (the seed's 000 §5, L1454–1480): the
 //! diameter D = (J/(K_j·ρ))^(1/5), the mass m = K_m·ρ·D³ and the main dimensions as
-//! fractions of D — a rim with spokes and a hub, or a solid disc of width 0.2·D. The part
+//! fractions of D — a rim with spokes and a hub, or a disc of width 0.2·D with its bore. The part
 //! drawing is [`super::part`]'s.
 
 use super::spec::{FlywheelKind, FlywheelSpec};
@@ -72,8 +72,11 @@ const RIM: [(&str, f64, &str); 9] = [
     ("b_{2}", 0.4, "a_{2}"),
 ];
 
-/// The main dimensions of a solid disc: the bore and the width.
-const DISC: [(&str, f64, &str); 2] = [("d_{1}", 0.2, "D"), ("b", FlywheelSpec::DISC_WIDTH, "D")];
+/// The main dimensions of a disc: the bore and the width.
+const DISC: [(&str, f64, &str); 2] = [
+    ("d_{1}", FlywheelSpec::DISC_BORE, "D"),
+    ("b", FlywheelSpec::DISC_WIDTH, "D"),
+];
 
 impl Size {
     /// How the dimension `name` follows from the others: (factor, the dimension it is a

@@ -18,7 +18,7 @@ pub struct ConstantInertia {
 pub enum FlywheelKind {
     /// A rim with spokes and a hub (the seed's: J = K_j·ρ·D⁵, m = K_m·ρ·D³).
     Rim,
-    /// A solid disc of width b = ψ·D (J = m·D²/8 = π·ψ·ρ·D⁵/32).
+    /// A disc of width b = ψ·D with its bore d₁ = β·D (J = π·ψ·ρ·D⁵·(1 − β⁴)/32).
     Disc,
 }
 
@@ -43,14 +43,22 @@ impl FlywheelSpec {
         k_m: 0.0452,
         rho: 7540.0,
     };
+    /// The significant digits K_j and K_m are written with on the sheet and in the note:
+    /// enough that J = K_j·ρ·D⁵ recomputed from them gives the J printed beside it (a disc's
+    /// K_j = 0,019604).
+    pub const COEFFICIENT_DIGITS: usize = 5;
     /// Width of a disc as a fraction of its diameter, b = ψ·D.
     pub const DISC_WIDTH: f64 = 0.2;
-    /// A disc of width 0.2·D: K_j = π·0.2/32, K_m = π·0.2/4.
+    /// The bore of a disc (for the shaft) as a fraction of its diameter, d₁ = β·D.
+    pub const DISC_BORE: f64 = 0.2;
+    /// A disc of width 0.2·D with its bore of 0.2·D: J = π·ψ·ρ·D⁵·(1 − β⁴)/32, m =
+    /// π·ψ·ρ·D³·(1 − β²)/4 (the bore takes 4 % of the mass, 0.16 % of the inertia).
     pub fn disc(rho: f64) -> FlywheelSpec {
+        let (psi, beta) = (Self::DISC_WIDTH, Self::DISC_BORE);
         FlywheelSpec {
             kind: FlywheelKind::Disc,
-            k_j: std::f64::consts::PI * Self::DISC_WIDTH / 32.0,
-            k_m: std::f64::consts::PI * Self::DISC_WIDTH / 4.0,
+            k_j: std::f64::consts::PI * psi * (1.0 - beta.powi(4)) / 32.0,
+            k_m: std::f64::consts::PI * psi * (1.0 - beta * beta) / 4.0,
             rho,
         }
     }

@@ -339,9 +339,22 @@ fn the_seed_rim_is_sized_as_the_seed_does() {
     let s = flywheel::size(&FlywheelSpec::SEED_RIM, 27.0);
     assert!((s.d - 0.8603).abs() < 1e-4 && (s.mass - 217.0).abs() < 0.2);
     assert!((s.dim("d_{3}").expect("d3") - 0.8 * s.d).abs() < 1e-12);
-    // A disc: J = m·D²/8 holds for its own mass.
+    // A disc with its bore d₁: J = m·(D² + d₁²)/8 holds for its own mass, and the mass is
+    // the ring's, π/4·(D² − d₁²)·b·ρ.
     let disc = flywheel::size(&FlywheelSpec::disc(7800.0), 10.0);
-    assert!((disc.mass * disc.d * disc.d / 8.0 - 10.0).abs() < 1e-9);
+    let (d, d1, b) = (
+        disc.d,
+        disc.dim("d_{1}").expect("bore"),
+        disc.dim("b").expect("width"),
+    );
+    assert!((d1 - 0.2 * d).abs() < 1e-12 && (b - 0.2 * d).abs() < 1e-12);
+    assert!((disc.mass * (d * d + d1 * d1) / 8.0 - 10.0).abs() < 1e-9);
+    let ring = std::f64::consts::FRAC_PI_4 * (d * d - d1 * d1) * b * 7800.0;
+    assert!(
+        (disc.mass - ring).abs() < 1e-9 * ring,
+        "{} vs {ring}",
+        disc.mass
+    );
 }
 
 #[test]

@@ -183,14 +183,22 @@ fn chart_scales(spec: &KinematicsSpec, s: &[f64], size: ChartSize) -> Result<Sca
     Ok(Scales { x, y })
 }
 
-/// The positions' numbers `marks` (travel from position 1, rad; label) under a diagram's φ
-/// axis at μ_φ `phi`, as on the plan of positions.
+/// The positions' numbers under a diagram's φ axis at μ_φ `phi`, as on the plan of
+/// positions: the `numbered` ones (travel from position 1, rad; label) under it, and the
+/// `extremes` between them at theirs — under the axis too where one stands clear of the
+/// numbered marks (`nodes`, travel, rad), over it where it is too near one to stand beside it.
 pub(super) fn number_phi_axis<'a>(
     rec: &mut Recorder,
-    marks: impl Iterator<Item = (f64, &'a String)>,
+    (numbered, nodes): (&[(f64, &'a String)], &[f64]),
+    extremes: &[(f64, &'a String)],
     phi: Scale,
 ) {
-    for (x, label) in marks {
+    let clear = |x: f64| (nodes.iter()).all(|n| phi.to_mm((x - n).abs()) >= AXIS_MARKS_APART_MM);
+    let under = DVec2::new(0.0, -1.0);
+    let marks = (numbered.iter().map(|&(x, label)| (x, label, under))).chain(
+        (extremes.iter()).map(|&(x, label)| (x, label, if clear(x) { under } else { -under })),
+    );
+    for (x, label, toward) in marks {
         let at = DVec2::new(phi.to_mm(x), 0.0);
         let id = rec.draw(
             format!("position {label} on the φ axis"),
@@ -198,7 +206,7 @@ pub(super) fn number_phi_axis<'a>(
             Role::Dimension,
             &[],
         );
-        rec.label(id, label.clone(), at, DVec2::new(0.0, -1.0));
+        rec.label(id, label.clone(), at, toward);
     }
 }
 
@@ -230,11 +238,10 @@ fn read_displacement(
         reader.measure(p1, p.built.p[k]).value * d.dot(read_dir).signum()
     };
     let s = numbered.iter().map(|&(i, p)| read(i, p)).collect();
-    let (phi1, sense) = (numbered[0].1.phi, plan.mechanism.crank.sense);
-    let between = (plan.positions.iter().enumerate())
-        .filter(|(_, p)| p.label.parse::<u32>().is_err())
-        .map(|(i, p)| Extreme {
-            travel: sense.travel(phi1, p.phi),
+    let between = super::between(plan)
+        .into_iter()
+        .map(|(i, travel, p)| Extreme {
+            travel,
             // The stroke's start is S's origin: nothing to read there.
             s: if ends.map(|e| e.0) == Some(i) {
                 0.0
@@ -339,19 +346,14 @@ pub fn diagrams(
         .differentiate(&mut rec1, &src, scales, h1, &lay1)
         .map_err(|e| fail("dS/dφ", e))?;
     let d1 = first.diagram().map_err(|e| fail("dS/dφ", e))?;
-    // The positions' numbers under the S diagram's φ axis, as on the plan of positions.
-    // An extreme's number too, where it stands clear of the numbered ones.
+    // The positions' numbers under the S diagram's φ axis, as on the plan of positions, and
+    // the extremes' between them.
     let nodes: Vec<f64> = (0..=numbered.len()).map(|idx| src.x(idx)).collect();
-    let clear =
-        |x: f64| (nodes.iter()).all(|n| scales.x.to_mm((x - n).abs()) >= AXIS_MARKS_APART_MM);
-    let marks = (numbered.iter().enumerate())
+    let marks: Vec<(f64, &String)> = (numbered.iter().enumerate())
         .map(|(idx, (_, p))| (src.x(idx), &p.label))
-        .chain(
-            (between.iter())
-                .filter(|b| clear(b.travel))
-                .map(|b| (b.travel, &b.label)),
-        );
-    number_phi_axis(&mut rec1, marks, scales.x);
+        .collect();
+    let extremes: Vec<(f64, &String)> = between.iter().map(|b| (b.travel, &b.label)).collect();
+    number_phi_axis(&mut rec1, (&marks, &nodes), &extremes, scales.x);
     let scales2 = Scales {
         x: scales.x,
         y: mu1,

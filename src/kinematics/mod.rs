@@ -258,6 +258,19 @@ pub fn numbered(plan: &PositionPlan) -> Vec<(usize, &crate::linkage::PlanPositio
         .collect()
 }
 
+/// The plan's other positions: its extremes `k′` between the numbered ones, each with its
+/// index and the crank's travel from position 1, rad.
+pub fn between(plan: &PositionPlan) -> Vec<(usize, f64, &crate::linkage::PlanPosition)> {
+    let Some(first) = numbered(plan).first().map(|(_, p)| p.phi) else {
+        return Vec::new();
+    };
+    let sense = plan.mechanism.crank.sense;
+    (plan.positions.iter().enumerate())
+        .filter(|(_, p)| p.label.parse::<u32>().is_err())
+        .map(|(i, p)| (i, sense.travel(first, p.phi), p))
+        .collect()
+}
+
 /// A note for every position where a slotted link's pin passes close to its pivot
 /// ([`crate::linkage::NearPivot`]): the link's rate there is true but huge and ill-conditioned.
 pub fn near_pivot_notes(plan: &PositionPlan, w1: f64) -> Vec<KinematicsNote> {

@@ -85,7 +85,17 @@ pub fn rocker_diagram(
     let (w_lo, _) = extent(omega.iter(), scale);
     let (d_lo, _) = super::diagrams::ordinates(&src, scales, h, mu, ctx).map_err(fail)?;
     let mut rec = Recorder::in_context("ω", mu, ctx);
+    // The extremes between the numbered positions, with ω read off their own plans (nought
+    // at the rocker's own extremes): the curve passes there too.
+    let between = super::between(plan);
+    let through = (between.iter())
+        .filter_map(|&(k, travel, _)| {
+            let w = velocity.get(k).copied().flatten()?.rate[link];
+            Some(DVec2::new(scale_phi.to_mm(travel), scale.to_mm(w)))
+        })
+        .collect();
     let lay = DiagramLayout::new(DVec2::ZERO, DVec2::new(0.0, w_lo - DIAGRAM_GAP - ROCKER_MM))
+        .source_through(through)
         .named("φ", &format!("ω_{{{link}}}"), &format!("dω_{{{link}}}/dφ"))
         .pole_named("P_{ω}", "H_{ω}")
         .pole_marks(
@@ -95,9 +105,13 @@ pub fn rocker_diagram(
     let derivative = calculus::Derivation::Chords
         .differentiate(&mut rec, &src, scales, h, &lay)
         .map_err(fail)?;
-    // The positions' numbers under the ω diagram's φ axis, as under the S diagram's.
-    let marks = (numbered.iter().enumerate()).map(|(idx, (_, p))| (src.x(idx), &p.label));
-    super::diagrams::number_phi_axis(&mut rec, marks, scale_phi);
+    // The positions' numbers on the ω diagram's φ axis, as on the S diagram's.
+    let nodes: Vec<f64> = (0..=numbered.len()).map(|idx| src.x(idx)).collect();
+    let marks: Vec<(f64, &String)> = (numbered.iter().enumerate())
+        .map(|(idx, (_, p))| (src.x(idx), &p.label))
+        .collect();
+    let extremes: Vec<(f64, &String)> = (between.iter()).map(|(_, x, p)| (*x, &p.label)).collect();
+    super::diagrams::number_phi_axis(&mut rec, (&marks, &nodes), &extremes, scale_phi);
     let eps_scale = super::peak(numbered.iter().map(|(_, p)| p.pose.ddangle[link] * w1 * w1));
     let rows = numbered
         .iter()

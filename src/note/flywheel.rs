@@ -10,8 +10,11 @@ use super::moments::{explain_words, fill};
 use super::worked::{Printed, Worked};
 use super::Writer;
 use crate::check::{Key, Method, Symbol};
-use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind};
+use crate::dynamics::{ConstantMoment, Dynamics, FlywheelKind, FlywheelSpec};
 use crate::words::{unit_in, MachinesMeaning as M, MachinesNote as N, NoteText as T};
+
+/// The digits K_j and K_m are written with.
+const K_DIGITS: usize = FlywheelSpec::COEFFICIENT_DIGITS;
 
 /// The unit of a moment of inertia (a key of the catalogue).
 const JM: &str = "kg*m^2";
@@ -156,8 +159,8 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
         &[
             ("material", material.to_string()),
             ("rho", sig(fw.rho, 5)),
-            ("kj", sig(fw.k_j, 4)),
-            ("km", sig(fw.k_m, 4)),
+            ("kj", sig(fw.k_j, K_DIGITS)),
+            ("km", sig(fw.k_m, K_DIGITS)),
             ("jm", sig(s.j, 5)),
             ("delta", sig(d.delta_of[0], 4)),
             ("exact", sig(d.exact.j_fw, 5)),
@@ -177,7 +180,11 @@ pub(super) fn size(w: &mut Writer<'_, '_>, d: &Dynamics) {
                 "root(5, {})",
                 frac(
                     &num(s.j, 5, lang),
-                    &format!("{} dot {}", num(fw.k_j, 4, lang), num(fw.rho, 5, lang))
+                    &format!(
+                        "{} dot {}",
+                        num(fw.k_j, K_DIGITS, lang),
+                        num(fw.rho, 5, lang)
+                    )
                 )
             ),
             Printed::si(s.d, 4, "m", lang),
@@ -274,7 +281,7 @@ fn shape_law(
         format!("{} ρ {}^{power}", sym(k_sym), sym("D")),
         format!(
             "{} dot {} dot {}^{power}",
-            num(k, 4, lang),
+            num(k, K_DIGITS, lang),
             num(d.spec.flywheel.rho, 5, lang),
             num(d.made.d, 4, lang)
         ),

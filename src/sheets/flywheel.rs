@@ -9,7 +9,7 @@
 use super::layout::{lay_out_smallest, Block, Part};
 use super::BuildError;
 use crate::construct::Figure;
-use crate::dynamics::{Dynamics, FlywheelKind};
+use crate::dynamics::{Dynamics, FlywheelKind, FlywheelSpec};
 use crate::geom::{DVec2, Rect};
 use crate::plate::{layout, Layout, Plate, SheetSize, TableBlock};
 use crate::scale::{format_fixed, format_number, format_sig, Lang};
@@ -214,8 +214,8 @@ fn data_lines(d: &Dynamics, lang: Lang) -> Vec<String> {
             material.get(lang),
             format_sig(fw.rho, 5, lang),
             unit_in("kg/m^3", lang),
-            format_sig(fw.k_j, 4, lang),
-            format_sig(fw.k_m, 4, lang),
+            format_sig(fw.k_j, FlywheelSpec::COEFFICIENT_DIGITS, lang),
+            format_sig(fw.k_m, FlywheelSpec::COEFFICIENT_DIGITS, lang),
         ),
         format!(
             "D = (J_{{м}}/(K_{{j}}ρ))^{{1/5}} = {} {mm}; {}",

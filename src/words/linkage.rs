@@ -78,7 +78,7 @@ catalogue! {
         ),
         NoVelocityPlanThere => ("план скоростей не строится", "план швидкостей не будується", "no velocity plan there"),
         Millimetre => ("мм", "мм", "mm"),
-        NoDiagrams => ("Диаграммы по углу поворота не строятся: механизм не проходит положение", "Діаграми за кутом повороту не будуються: механізм не проходить положення", "No diagrams over the crank turn: the mechanism cannot pass"),
+        NoDiagrams => ("Диаграммы по углу поворота не строятся, положения построены каждое отдельно: механизм не собирается при", "Діаграми за кутом повороту не будуються, положення побудовано кожне окремо: механізм не складається при", "No diagrams over the crank turn, each position built on its own: the mechanism cannot be assembled at"),
         NoDiagramsLeap => ("Диаграммы по углу поворота не строятся: звено поворачивается скачком около положения", "Діаграми за кутом повороту не будуються: ланка повертається стрибком біля положення", "No diagrams over the crank turn: a link turns by a leap near"),
         Continued => ("(продолжение)", "(продовження)", "(continued)"),
         ReadTo => ("Длины считаны с чертежа с точностью", "Довжини зчитано з креслення з точністю", "Lengths read off the drawing to"),

@@ -239,64 +239,6 @@ fn further_positions_between_the_same_two_are_primed_apart() {
     );
 }
 
-/// The S chart is drawn through the extreme positions the plan draws between the numbered
-/// ones, as the draughtsman plots them (issue 45): the six-bar's S reaches its stroke
-/// H = 205,7 mm at 6′, between positions 6 and 7, where the curve through the numbered
-/// positions alone stopped 1,7 mm lower on the sheet (7 mm of S), and touches 0 at 10′; both
-/// are numbered on the φ axis, as is 4′, where the slider reaches 6′'s end again. The
-/// shaper's 8′, 2,7 mm past position 8, is plotted but not numbered there.
-#[test]
-fn the_s_chart_is_drawn_through_the_extreme_positions() {
-    use tmm::construct::{Item, Role};
-    for (scene, crest_between, marks) in [
-        ("six-bar", (5.0, 6.0), &["4′", "6′", "10′"][..]),
-        ("shaper", (7.0, 8.0), &[][..]),
-    ] {
-        with_kinematics(scene, |_, _, study| {
-            let chart = study.diagrams.as_ref().expect("the S chart");
-            let (mu_s, mu_phi) = (chart.scales.y.value(), chart.scales.x.value());
-            let points: Vec<tmm::geom::DVec2> = (chart.first_figure.steps.iter())
-                .filter(|st| st.role == Role::Given)
-                .flat_map(|st| match &st.item {
-                    Item::Curve { points, .. } => points.clone(),
-                    _ => Vec::new(),
-                })
-                .collect();
-            let crest = points
-                .iter()
-                .copied()
-                .max_by(|a, b| a.y.total_cmp(&b.y))
-                .expect("a curve");
-            // The stroke H: the charted slider's range.
-            let ranges = &study.plan.extremes.as_ref().expect("extremes").ranges;
-            assert!(
-                (ranges.iter()).any(|r| (crest.y * mu_s - (r.max - r.min)).abs() < 1e-9),
-                "{scene}: the crest {} m, not a stroke of {ranges:?}",
-                crest.y * mu_s
-            );
-            let interval = TAU_OVER_12 / mu_phi;
-            let at = crest.x / interval;
-            assert!(
-                at > crest_between.0 && at < crest_between.1,
-                "{scene}: the crest at {at} intervals"
-            );
-            if scene == "six-bar" {
-                let lowest = points.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
-                assert!(lowest.abs() < 1e-9, "{scene}: S at 10′ {lowest} mm");
-            }
-            let labels: Vec<&str> = (chart.first_figure.steps.iter())
-                .filter(|st| st.note.ends_with("on the φ axis"))
-                .filter_map(|st| st.label.as_ref().map(|l| l.text.as_str()))
-                .filter(|t| t.contains('′'))
-                .collect();
-            assert_eq!(labels, marks, "{scene}");
-        });
-    }
-}
-
-/// One of a crank turn's twelve intervals, rad.
-const TAU_OVER_12: f64 = std::f64::consts::TAU / 12.0;
-
 /// The six-bar's slider reaches its end twice a turn (at 6′ and again at φ₁ = 229,06°, with
 /// the change point between): its strokes are no longer two, and θ and K would be whichever
 /// arrival the rounding made the larger. The sheet, the plan of positions and the note say
@@ -424,7 +366,7 @@ fn the_corner_reading_is_checked_against_the_branch_the_crank_turns_onto() {
 }
 
 /// The shipped scene `name`, its session read exactly and its kinematic study, for `f`.
-fn with_kinematics(
+pub(crate) fn with_kinematics(
     name: &str,
     f: impl FnOnce(&tmm::scene::Scene, &tmm::study::Session<'_>, &tmm::study::Kinematics),
 ) {
@@ -434,37 +376,6 @@ fn with_kinematics(
         .kinematics(&session.kin_scales().expect("scales"))
         .expect("kinematics");
     f(&s, &session, &study);
-}
-
-/// The rocker's ω diagram numbers its positions under its φ axis, as the S chart does and the
-/// textbook's ω₃(φ) (seed 000 §1.5) is read: 1 … 12, each at its node (issue 45: the
-/// four-bar's and the shaper's ω₃ axes had no numbers, so a reader could not say which
-/// ordinate was which position's).
-#[test]
-fn the_rocker_diagram_numbers_its_positions() {
-    use tmm::construct::Item;
-    for scene in ["four-bar", "shaper"] {
-        with_kinematics(scene, |_, _, study| {
-            let rocker = study.rocker.as_ref().expect("the ω diagram");
-            let marks: Vec<(String, f64)> = (rocker.figure.steps.iter())
-                .filter(|st| st.note.ends_with("on the φ axis"))
-                .filter_map(|st| match (&st.item, &st.label) {
-                    (Item::Text(at), Some(l)) => Some((l.text.clone(), at.x)),
-                    _ => None,
-                })
-                .collect();
-            let names: Vec<&str> = marks.iter().map(|(t, _)| t.as_str()).collect();
-            let want: Vec<String> = (1..=12).map(|k| k.to_string()).collect();
-            assert_eq!(names, want, "{scene}");
-            let interval = TAU_OVER_12 / rocker.scale_phi.value();
-            for (k, (text, x)) in marks.iter().enumerate() {
-                assert!(
-                    (x - k as f64 * interval).abs() < 1e-9,
-                    "{scene}: {text} at {x} mm"
-                );
-            }
-        });
-    }
 }
 
 /// The rocker's angular acceleration is read off its ω diagram's derivative: the sheet

@@ -23,6 +23,7 @@ mod cam_dimensions;
 mod cam_oracle;
 mod cam_sheets;
 mod cam_special;
+mod chart_marks;
 mod cli;
 mod dimension_texts;
 mod docs;
