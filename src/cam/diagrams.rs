@@ -484,15 +484,11 @@ fn integrated(
 /// The arrows "∞" of a rigid shock on the d²S/dφ² diagram: at each end of a phase whose law
 /// jumps in velocity, up where dS/dφ jumps up, down where it jumps down.
 fn shock_arrows(rec: &mut Recorder, spec: &CamSpec, phase: usize, phi: Scale) {
-    let law = if phase == 0 { spec.rise } else { spec.ret };
-    if law.shock() != Shock::Rigid {
-        return;
-    }
     let st = spec.starts();
-    for (at, after) in [(st[phase], true), (st[phase + 1], false)] {
-        // The jump of dS/dφ there: the phase's value against the dwell's zero.
-        let v = motion(spec, at, after).ds;
-        let up = if after { v > 0.0 } else { v < 0.0 };
+    for (at, start) in [(st[phase], true), (st[phase + 1], false)] {
+        let Some(up) = spec.shock_up(phase, start) else {
+            return;
+        };
         let x = phi.to_mm(at);
         let tip = DVec2::new(x, if up { SHOCK_MM } else { -SHOCK_MM });
         let id = rec.draw(
@@ -507,6 +503,25 @@ fn shock_arrows(rec: &mut Recorder, spec: &CamSpec, phase: usize, phi: Scale) {
         // Beside the tip, clear of the ordinate axis the first arrow runs along.
         let toward = DVec2::new(1.0, if up { 1.0 } else { -1.0 });
         rec.label(id, "∞", tip, toward);
+    }
+}
+
+impl CamSpec {
+    /// At the `start` (else the end) of `phase` (0 the rise, 2 the return) of a law with
+    /// rigid shocks, whether d²S/dφ² is +∞ there (dS/dφ jumps up against the dwell's
+    /// nought) or −∞; `None` for a law without them.
+    pub fn shock_up(&self, phase: usize, start: bool) -> Option<bool> {
+        let law = if phase == 0 { self.rise } else { self.ret };
+        if law.shock() != Shock::Rigid {
+            return None;
+        }
+        let st = self.starts();
+        let v = if start {
+            motion(self, st[phase], true).ds
+        } else {
+            -motion(self, st[phase + 1], false).ds
+        };
+        Some(v > 0.0)
     }
 }
 

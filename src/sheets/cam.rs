@@ -7,8 +7,8 @@ use super::layout::{keyed, lay_out, quantity, Block, Column, Part, Results};
 use super::BuildError;
 use super::{cam_marks, digits};
 use crate::cam::{
-    motion::Point, Analogue, Cam, CamDiagrams, CamLayout, CamSpec, Closure, Follower, Law,
-    Rotation, Shock, ANGLE_LIMIT_NOTE, A_W_NOTE, R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
+    Analogue, Cam, CamDiagrams, CamLayout, CamSpec, Closure, Follower, Law, Rotation,
+    ANGLE_LIMIT_NOTE, A_W_NOTE, R0_NOTE, RHO_ADMITTED, RHO_MIN_NOTE, R_MIN_NOTE,
 };
 use crate::check::{Cusp, Finding, Row, Symbol};
 use crate::geom::DVec2;
@@ -467,7 +467,7 @@ fn verdict(f: &Finding, lang: Lang) -> Option<String> {
 const POINTS_PER_TABLE: usize = 40;
 
 /// One row per point: φ, S, dS/dφ, d²S/dφ² (each as read off its diagram, to the step its
-/// scale reads `read_mm` to, or to 0,01 mm read exactly; ∞ at a rigid shock), the angle
+/// scale reads `read_mm` to, or to 0,01 mm read exactly; ±∞ at a rigid shock), the angle
 /// read and exact, the profile's radius vector (read off the profile likewise); in tables
 /// of at most [`POINTS_PER_TABLE`] rows, each after the first titled as continued.
 fn points_table(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<TableBlock> {
@@ -479,14 +479,6 @@ fn points_table(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<TableBlock> {
         Some(step) => super::digits::read(x * 1e3, Some(step * 1e3), lang),
         None => f(x * 1e3, 2),
     };
-    let shocks = |p: &Point| {
-        let law = if p.phase == 0 {
-            cam.spec.rise
-        } else {
-            cam.spec.ret
-        };
-        law.shock() == Shock::Rigid && (p.k == 0 || p.last)
-    };
     let rows = cam
         .points
         .iter()
@@ -497,10 +489,10 @@ fn points_table(cam: &Cam, read_mm: f64, lang: Lang) -> Vec<TableBlock> {
                 f(p.phi.to_degrees(), 1),
                 read(d.s[i], d.s_scale),
                 read(d.ds[i], d.ds_scale),
-                if shocks(p) {
-                    "∞".into()
-                } else {
-                    read(d.d2s[i], d.d2s_scale)
+                // A rigid shock's ±∞, as its arrow on the diagram points.
+                match (p.k == 0 || p.last).then(|| cam.spec.shock_up(p.phase, p.k == 0)) {
+                    Some(Some(up)) => if up { "+∞" } else { "−∞" }.into(),
+                    _ => read(d.d2s[i], d.d2s_scale),
                 },
             ];
             if !flat {

@@ -413,7 +413,9 @@ fn the_points_table_writes_each_reading_to_its_step_and_a_rigid_shock_infinite()
     // The table of the points read to 0,5 mm: cam-cusp's S, read off its given diagram at
     // μ_S = 0,002 м/мм, to whole millimetres (before: «0,00 / 1,00 / 3,00», a precision the
     // drawing does not give); cam-shock's uniform law has d²S/dφ² infinite at the ends of
-    // its phases, as its diagram's arrows «∞» say (before: «0,00»).
+    // its phases, as its diagram's arrows «∞» say (before: «0,00»), signed as they point: up
+    // where dS/dφ jumps up (the rise's start, the return's end), down where it jumps down
+    // (before: an unsigned «∞» beside arrows pointing both ways).
     let column = |name: &str, drafting: Drafting, head: &str| {
         let s = crate::support::scene(name);
         let session = Session::new(&s, drafting);
@@ -429,8 +431,15 @@ fn the_points_table_writes_each_reading_to_its_step_and_a_rigid_shock_infinite()
     let s = column("cam-cusp", Drafting::HAND, "S, мм");
     assert_eq!(s[..5], ["0", "0", "1", "3", "6"]);
     let d2s = column("cam-shock", Drafting::EXACT, "d^2S/dφ^2, мм");
-    let infinite: Vec<usize> = (0..d2s.len()).filter(|&k| d2s[k] == "∞").collect();
-    assert_eq!(infinite, [0, 8, 9, 17], "{d2s:?}");
+    let infinite: Vec<(usize, &str)> = (0..d2s.len())
+        .filter(|&k| d2s[k].ends_with('∞'))
+        .map(|k| (k, d2s[k].as_str()))
+        .collect();
+    assert_eq!(
+        infinite,
+        [(0, "+∞"), (8, "−∞"), (9, "−∞"), (17, "+∞")],
+        "{d2s:?}"
+    );
 }
 
 #[test]
