@@ -302,7 +302,19 @@ fn rest_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
         figure: h,
     }) = &a.hodograph
     {
-        let c = format!("{} v_{{{}}}", Text::Hodograph.get(lang), name);
+        // Where no velocity plan is drawn (a special position), the curve breaks: said there.
+        let gaps: Vec<&str> = (a.plan.positions.iter().zip(a.velocity_plans()))
+            .filter(|(_, v)| v.is_none())
+            .map(|(p, _)| p.label.as_str())
+            .collect();
+        let mut c = format!("{} v_{{{}}}", Text::Hodograph.get(lang), name);
+        if !gaps.is_empty() {
+            c = format!(
+                "{c}, {} {}",
+                Text::HodographBroken.get(lang),
+                gaps.join(", ")
+            );
+        }
         rest.push((Block::view(h.as_ref().clone(), c, None), None));
         lines.push(format!(
             "{} v_{{{}}}: {}",

@@ -24,6 +24,8 @@ catalogue! {
         AtCorner => ("излом", "злам", "corner"),
         CornerOfS => ("излом диаграммы S: каждая ветвь дифференцируется отдельно", "злам діаграми S: кожна гілка диференціюється окремо", "a corner of S: each branch is differentiated on its own"),
         Hodograph => ("Годограф", "Годограф", "Hodograph"),
+        // A hodograph not drawn across a position without a velocity plan: its caption says where.
+        HodographBroken => ("разрыв у пол.", "розрив біля пол.", "broken at pos."),
         KinematicAnalysis => ("Кинематический анализ", "Кінематичний аналіз", "Kinematic analysis"),
         AnalyticSolution => ("Аналитический расчёт", "Аналітичний розрахунок", "Analytic solution"),
         MethodErrors => ("Погрешность графических методов", "Похибка графічних методів", "Errors of the graphical methods"),

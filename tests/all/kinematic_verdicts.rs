@@ -501,3 +501,42 @@ fn a_diagrams_worst_error_at_the_corner_of_s_is_marked_in_the_table() {
         }
     }
 }
+
+/// A hodograph is not drawn across a position without a velocity plan (the six-bar's change
+/// point 6, where v_S3 jumps), and its caption says where it breaks (issue 45: a strict
+/// reader took the open curve for an unfinished one); a closed one says nothing of the kind.
+#[test]
+fn a_broken_hodograph_says_where_in_its_caption() {
+    for (scene, lang, want) in [
+        (
+            "six-bar",
+            tmm::Lang::Ru,
+            Some("Годограф v_{S3}, разрыв у пол. 6"),
+        ),
+        (
+            "six-bar",
+            tmm::Lang::Uk,
+            Some("Годограф v_{S3}, розрив біля пол. 6"),
+        ),
+        (
+            "six-bar",
+            tmm::Lang::En,
+            Some("Hodograph v_{S3}, broken at pos. 6"),
+        ),
+        ("four-bar", tmm::Lang::Ru, None),
+    ] {
+        let s = tmm::load(&root().join(format!("constructions/{scene}.toml"))).expect(scene);
+        let plates = tmm::render::plates(&s, lang, Drafting::EXACT).expect("plates");
+        let captions: Vec<&str> = (plates.iter())
+            .flat_map(|(_, p)| p.views.iter().filter_map(|v| v.caption.as_deref()))
+            .filter(|c| c.contains("v_{S"))
+            .collect();
+        match want {
+            Some(w) => assert_eq!(captions, [w], "{scene} {lang:?}"),
+            None => assert!(
+                captions.len() == 1 && !captions[0].contains(','),
+                "{scene}: {captions:?}"
+            ),
+        }
+    }
+}
