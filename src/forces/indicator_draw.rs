@@ -23,7 +23,7 @@ const BELOW_MM: f64 = 1.5;
 const TICK_MM: f64 = 1.0;
 
 /// An ordinate read off the diagram: its label (the piston's letter and the position's
-/// label, `B3`) and the cycle angle θ, radians.
+/// label in label markup, `B_{3}`) and the cycle angle θ, radians.
 pub type Reading = (String, f64);
 
 /// The indicator diagram of `ind` with its `readings` (at μ_p, the figure's scale) and its

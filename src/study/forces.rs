@@ -277,7 +277,8 @@ impl Session<'_> {
             let letter = crate::words::plain(&c.point);
             let readings = at
                 .iter()
-                .map(|p| (format!("{letter}{}", p.label), c.cycle_angle(p.phi, sense)));
+                // The piston's point at the position, as the plan of positions names it: B₃.
+                .map(|p| (format!("{letter}_{{{}}}", p.label), c.cycle_angle(p.phi, sense)));
             match tables.iter_mut().find(|t| t.0.pressure == c.pressure) {
                 Some(t) => {
                     t.1.push(c.point.clone());

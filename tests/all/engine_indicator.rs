@@ -64,7 +64,9 @@ fn readings() -> Vec<(String, f64, f64)> {
     for (label, phi) in [("3", 105.0), ("6", 195.0)] {
         for (piston, start) in [("B", 45.0), ("C", 135.0)] {
             let theta = f64::rem_euclid(phi - start, 360.0);
-            out.push((format!("{piston}{label}"), theta, pressure(theta)));
+            // The piston's point at the position, subscripted as on the plan: B₃ (issue 45:
+            // «B3» read as a name of its own).
+            out.push((format!("{piston}_{{{label}}}"), theta, pressure(theta)));
         }
     }
     out
@@ -126,7 +128,7 @@ fn each_force_sheet_states_the_pressure_and_the_gas_force_of_every_cylinder() {
         for (piston, slider) in [("B", 3), ("C", 5)] {
             let (_, theta, p) = all
                 .iter()
-                .find(|r| r.0 == format!("{piston}{position}"))
+                .find(|r| r.0 == format!("{piston}_{{{position}}}"))
                 .expect("a reading");
             let line = lines
                 .iter()
