@@ -183,21 +183,24 @@ fn chart_scales(spec: &KinematicsSpec, s: &[f64], size: ChartSize) -> Result<Sca
     Ok(Scales { x, y })
 }
 
-/// The positions' numbers under a diagram's φ axis at μ_φ `phi`, as on the plan of
-/// positions: the `numbered` ones (travel from position 1, rad; label) under it, and the
-/// `extremes` between them at theirs — under the axis too where one stands clear of the
-/// numbered marks (`nodes`, travel, rad), over it where it is too near one to stand beside it.
-pub(super) fn number_phi_axis<'a>(
+/// The positions' numbers under the φ axis (at μ_φ `phi`) of a diagram `src` charted at the
+/// `numbered` positions, as on the plan of positions: each at its node, and the `extremes`
+/// between them (travel from position 1, rad; label) at theirs — under the axis too where
+/// one stands clear of the nodes, over it where it is too near one to stand beside it.
+pub(super) fn number_phi_axis(
     rec: &mut Recorder,
-    (numbered, nodes): (&[(f64, &'a String)], &[f64]),
-    extremes: &[(f64, &'a String)],
+    (src, numbered): (&Diagram, &[(usize, &crate::linkage::PlanPosition)]),
+    extremes: &[(f64, &String)],
     phi: Scale,
 ) {
+    let nodes: Vec<f64> = (0..=numbered.len()).map(|idx| src.x(idx)).collect();
     let clear = |x: f64| (nodes.iter()).all(|n| phi.to_mm((x - n).abs()) >= AXIS_MARKS_APART_MM);
     let under = DVec2::new(0.0, -1.0);
-    let marks = (numbered.iter().map(|&(x, label)| (x, label, under))).chain(
-        (extremes.iter()).map(|&(x, label)| (x, label, if clear(x) { under } else { -under })),
-    );
+    let marks = (numbered.iter().enumerate())
+        .map(|(idx, (_, p))| (src.x(idx), &p.label, under))
+        .chain(
+            (extremes.iter()).map(|&(x, label)| (x, label, if clear(x) { under } else { -under })),
+        );
     for (x, label, toward) in marks {
         let at = DVec2::new(phi.to_mm(x), 0.0);
         let id = rec.draw(
@@ -348,12 +351,8 @@ pub fn diagrams(
     let d1 = first.diagram().map_err(|e| fail("dS/dφ", e))?;
     // The positions' numbers under the S diagram's φ axis, as on the plan of positions, and
     // the extremes' between them.
-    let nodes: Vec<f64> = (0..=numbered.len()).map(|idx| src.x(idx)).collect();
-    let marks: Vec<(f64, &String)> = (numbered.iter().enumerate())
-        .map(|(idx, (_, p))| (src.x(idx), &p.label))
-        .collect();
     let extremes: Vec<(f64, &String)> = between.iter().map(|b| (b.travel, &b.label)).collect();
-    number_phi_axis(&mut rec1, (&marks, &nodes), &extremes, scales.x);
+    number_phi_axis(&mut rec1, (&src, &numbered), &extremes, scales.x);
     let scales2 = Scales {
         x: scales.x,
         y: mu1,

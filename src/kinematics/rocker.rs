@@ -106,12 +106,8 @@ pub fn rocker_diagram(
         .differentiate(&mut rec, &src, scales, h, &lay)
         .map_err(fail)?;
     // The positions' numbers on the ω diagram's φ axis, as on the S diagram's.
-    let nodes: Vec<f64> = (0..=numbered.len()).map(|idx| src.x(idx)).collect();
-    let marks: Vec<(f64, &String)> = (numbered.iter().enumerate())
-        .map(|(idx, (_, p))| (src.x(idx), &p.label))
-        .collect();
     let extremes: Vec<(f64, &String)> = (between.iter()).map(|(_, x, p)| (*x, &p.label)).collect();
-    super::diagrams::number_phi_axis(&mut rec, (&marks, &nodes), &extremes, scale_phi);
+    super::diagrams::number_phi_axis(&mut rec, (&src, &numbered), &extremes, scale_phi);
     let eps_scale = super::peak(numbered.iter().map(|(_, p)| p.pose.ddangle[link] * w1 * w1));
     let rows = numbered
         .iter()

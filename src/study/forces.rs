@@ -278,7 +278,12 @@ impl Session<'_> {
             let readings = at
                 .iter()
                 // The piston's point at the position, as the plan of positions names it: B₃.
-                .map(|p| (format!("{letter}_{{{}}}", p.label), c.cycle_angle(p.phi, sense)));
+                .map(|p| {
+                    (
+                        format!("{letter}_{{{}}}", p.label),
+                        c.cycle_angle(p.phi, sense),
+                    )
+                });
             match tables.iter_mut().find(|t| t.0.pressure == c.pressure) {
                 Some(t) => {
                     t.1.push(c.point.clone());
