@@ -180,12 +180,14 @@ fn diagram_views(a: &Kinematics, lang: Lang, lines: &mut Vec<String>) -> Run {
         diagrams.push((
             Block::view(
                 stack,
-                // The stack's caption names its three diagrams (the S and dS/dφ had none).
+                // The stack's caption names its three diagrams (the S and dS/dφ had none);
+                // each H with its unit, so that no list comma stands beside a decimal comma
+                // («H₁ = 28, H₂ = 7,5 мм» read as three numbers).
                 format!(
-                    "S, dS/dφ, d²S/dφ²: H_{{1}} = {}, H_{{2}} = {} {}",
+                    "S, dS/dφ, d²S/dφ²: H_{{1}} = {} {mm}, H_{{2}} = {} {mm}",
                     dec(d.first.pole_mm),
                     dec(d.second.pole_mm),
-                    Text::Millimetre.get(lang)
+                    mm = Text::Millimetre.get(lang)
                 ),
                 keyed(Key::KinematicsScaleS, d.scales.y),
             ),

@@ -540,3 +540,31 @@ fn a_broken_hodograph_says_where_in_its_caption() {
         }
     }
 }
+
+/// The diagrams' caption gives each pole distance with its unit: «H₁ = 28 мм, H₂ = 7,5 мм»,
+/// not «H₁ = 28, H₂ = 7,5 мм», where the list's comma beside the decimal comma read as
+/// three numbers (issue 45).
+#[test]
+fn each_pole_distance_in_the_diagrams_caption_has_its_unit() {
+    for scene in ["shaper", "six-bar", "slider-crank", "v-engine"] {
+        let s = tmm::load(&root().join(format!("constructions/{scene}.toml"))).expect(scene);
+        let plates = tmm::render::plates(&s, tmm::Lang::Ru, Drafting::EXACT).expect("plates");
+        let captions: Vec<&str> = (plates.iter())
+            .flat_map(|(_, p)| p.views.iter().filter_map(|v| v.caption.as_deref()))
+            .filter(|c| c.contains("H_{1} = "))
+            .collect();
+        assert_eq!(captions.len(), 1, "{scene}: {captions:?}");
+        let after = |key: &str| {
+            let rest = &captions[0][captions[0].find(key).expect(key) + key.len()..];
+            let value: String = (rest.chars())
+                .take_while(|c| c.is_ascii_digit() || *c == ',')
+                .collect();
+            rest[value.len()..].starts_with(" мм")
+        };
+        assert!(
+            after("H_{1} = ") && after("H_{2} = "),
+            "{scene}: {}",
+            captions[0]
+        );
+    }
+}
