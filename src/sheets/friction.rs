@@ -345,10 +345,11 @@ fn pivot_lines(n: usize, c: &crate::friction::RockerPivot, lang: Lang) -> Vec<St
             num(t.p, lang)
         ),
         format!(
-            "{n}: cos λ_{{кр}} = ρ/L: λ_{{кр}} = {} > λ = {} — {} ({tg} λ_{{кр}} = 2L/(f·d): {})",
+            "{n}: cos λ_{{кр}} = ρ/L: λ_{{кр}} = {} > λ = {} — {} ({} {tg} λ_{{кр}} = 2L/(f·d): {})",
             deg(t.lock, lang),
             given_deg(c.angle, lang),
             FrictionText::Moves.get(lang),
+            FrictionText::Approximately.get(lang),
             deg(t.lock_lecture, lang),
             tg = tangent(lang),
         ),

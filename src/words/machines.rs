@@ -333,6 +333,8 @@ catalogue! {
         Guide => ("толкатель в направляющей", "штовхач у напрямній", "follower in its guide"),
         Pivot => ("коромысло в опоре, круг трения", "коромисло в опорі, коло тертя", "rocker in its pivot, friction circle"),
         Moves => ("движение возможно", "рух можливий", "the follower moves"),
+        // The lecture's jamming angle (M_тр = P·f·d/2) beside the exact one: an approximation.
+        Approximately => ("приближённо", "наближено", "approximately"),
         AtRest => ("ползун в покое", "повзун у спокої", "the slider stays at rest"),
         Uniform => ("равномерное движение", "рівномірний рух", "uniform motion"),
         Accelerating => ("движение с ускорением", "рух із прискоренням", "accelerated motion"),

@@ -232,3 +232,17 @@ fn a_follower_that_would_jam_is_refused_with_its_key() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// The sheet says which of its two jamming angles is the lecture's approximation (issue 45:
+/// «86,57°» and «86,42°» stood in one line as if both were exact).
+#[test]
+fn the_sheet_calls_the_lectures_jamming_angle_an_approximation() {
+    let plates = tmm::render::plates(&scene(), Lang::Ru, Drafting::EXACT).expect("plates");
+    let lines: Vec<&String> = (plates.iter())
+        .flat_map(|(_, p)| p.texts.iter().flat_map(|t| t.lines.iter()))
+        .collect();
+    assert!(
+        (lines.iter()).any(|l| l.ends_with("(приближённо tg λ_{кр} = 2L/(f·d): 86,42°)")),
+        "{lines:#?}"
+    );
+}
