@@ -3,7 +3,7 @@
 
 use super::path::{Map, PathData};
 use super::style::{Mark, Paint, Pen};
-use super::text::{Align, Placed};
+use super::text::{measure, Align, Extent, Placed};
 use glam::DVec2;
 
 /// Room beside a cell's text in its column, mm: the half millimetre each side the cell's text
@@ -82,20 +82,25 @@ pub(crate) fn table_marks(t: &TableBlock) -> Vec<Mark> {
         .iter()
         .map(|c| crate::words::heading(&c.0))
         .collect();
-    let lines = std::iter::once(header.iter().map(String::as_str).collect::<Vec<_>>()).chain(
-        t.rows
-            .iter()
-            .map(|r| r.iter().map(String::as_str).collect()),
-    );
-    let common = common_lift(&t.rows, t.size_mm);
-    for (k, cells) in lines.enumerate() {
+    // Every cell with its ink's extent, measured once: the body rows' shared lift and each
+    // cell's own both read it.
+    let lines: Vec<Vec<(&str, Extent)>> = std::iter::once(&header)
+        .chain(&t.rows)
+        .map(|r| {
+            (r.iter())
+                .map(|c| (c.as_str(), measure(c, t.size_mm)))
+                .collect()
+        })
+        .collect();
+    let common = common_lift(lines[1..].iter().flatten().map(|c| &c.1), t.size_mm);
+    for (k, cells) in lines.iter().enumerate() {
         // The heading keeps its own line; the body rows share one lift.
         let shared = if k == 0 { 0.0 } else { common };
         let mut x = t.at.x;
         let cy = t.at.y + rh * (k as f64 + 0.5);
-        for ((_, w), cell) in t.columns.iter().zip(cells) {
+        for ((_, w), &(cell, ref e)) in t.columns.iter().zip(cells) {
             if !cell.is_empty() {
-                let at = DVec2::new(x + w * 0.5, cy - lift(cell, t.size_mm, shared));
+                let at = DVec2::new(x + w * 0.5, cy - lift(e, t.size_mm, shared));
                 let p = Placed::centred(at, cell, t.size_mm, Align::Middle).fit(w - 1.0);
                 marks.push(Mark::Text(p));
             }
@@ -112,9 +117,8 @@ const CELL_CLEAR: f64 = 0.2;
 /// the row twice as high): `common` (the table's [`common_lift`]) as far as its ink keeps
 /// [`CELL_CLEAR`] off the rule above, so that the rows keep one baseline; a text whose
 /// subscripts and superscripts cannot both keep it is centred by its ink.
-fn lift(cell: &str, height: f64, common: f64) -> f64 {
-    let e = super::text::measure(cell, height);
-    let (need, room) = need_and_room(&e, height);
+fn lift(e: &Extent, height: f64, common: f64) -> f64 {
+    let (need, room) = need_and_room(e, height);
     if need > room {
         0.5 * (e.min.y + e.max.y) + 0.5 * height
     } else {
@@ -125,7 +129,7 @@ fn lift(cell: &str, height: f64, common: f64) -> f64 {
 /// The lift a text's ink needs to keep [`CELL_CLEAR`] off the rule below, and the most it
 /// takes keeping as much off the rule above (below the baseline of centred capitals there is
 /// half a height before the rule, above it 1,5 heights).
-fn need_and_room(e: &super::text::Extent, height: f64) -> (f64, f64) {
+fn need_and_room(e: &Extent, height: f64) -> (f64, f64) {
     let clear = CELL_CLEAR * height;
     let need = (e.max.y - (0.5 * height - clear)).max(0.0);
     (need, 1.5 * height - clear + e.min.y)
@@ -133,9 +137,9 @@ fn need_and_room(e: &super::text::Extent, height: f64) -> (f64, f64) {
 
 /// The lift the table's cells share: the most any of them needs for its subscripts (M_y,
 /// V_D5D3) that its own top allows; cells too tall for their row do not count.
-fn common_lift(rows: &[Vec<String>], height: f64) -> f64 {
-    (rows.iter().flatten())
-        .map(|c| need_and_room(&super::text::measure(c, height), height))
+fn common_lift<'a>(cells: impl Iterator<Item = &'a Extent>, height: f64) -> f64 {
+    cells
+        .map(|e| need_and_room(e, height))
         .filter(|(need, room)| need <= room)
         .fold(0.0, |m, (need, _)| m.max(need))
 }
