@@ -34,9 +34,11 @@ use std::f64::consts::TAU;
 mod differentiated;
 mod phi_axis;
 mod scales;
+mod shocks;
 use differentiated::differentiated;
 pub use phi_axis::{PHASE_NOTES, TICK_NOTE};
 use scales::scales;
+use shocks::{shock_arrows, velocity_jumps};
 
 /// The names of the poles and pole distances of the two constructions: between d²S/dφ² and
 /// dS/dφ (the rise's pole, the return's, the distance), and between dS/dφ and S.
@@ -47,9 +49,6 @@ const FAN_GAP_MM: f64 = 12.0;
 /// The pole distance's dimension line lies this far below the lowest ray and below the φ
 /// axis's numbers, mm.
 const POLE_DIMENSION_MM: f64 = 8.0;
-/// Length of the arrows "∞" of a rigid shock on the d²S/dφ² diagram, mm.
-const SHOCK_MM: f64 = 15.0;
-
 /// The three diagrams, each its own figure: d²S/dφ² given and dS/dφ, S integrated by the
 /// chord/pole method (or S given and differentiated twice by chords).
 #[derive(Debug, Clone, PartialEq)]
@@ -325,12 +324,17 @@ impl Pass<'_> {
     }
 }
 
+/// The points the curve recorded as `id` is drawn through, figure mm.
+fn drawn_points(rec: &Recorder, id: StepId) -> &[DVec2] {
+    match rec.steps().get(id.0 as usize).map(|s| &s.item) {
+        Some(Item::Curve { points, .. } | Item::Polyline { points, .. }) => points,
+        _ => &[],
+    }
+}
+
 /// Where the curve recorded as `id` ends, figure mm.
 fn drawn_end(rec: &Recorder, id: StepId) -> Option<DVec2> {
-    match &rec.steps().get(id.0 as usize)?.item {
-        Item::Curve { points, .. } | Item::Polyline { points, .. } => points.last().copied(),
-        _ => None,
-    }
+    drawn_points(rec, id).last().copied()
 }
 
 /// The diagrams: the given d²S/dφ² (closed form at the mid-interval points and the nodes)
@@ -425,6 +429,7 @@ fn integrated(
                 v0,
             )?;
         ds_ends[idx] = *v.node.last().unwrap_or(&0.0);
+        velocity_jumps(&mut views.v, v.curve);
         drawn_poles[0] |= v.pole_drawn;
         for (&i, &val) in at.iter().zip(&v.node) {
             ds_nodes[i] = val;
@@ -479,50 +484,6 @@ fn integrated(
         ds_ends,
         y_max: None,
     })
-}
-
-/// The arrows "∞" of a rigid shock on the d²S/dφ² diagram: at each end of a phase whose law
-/// jumps in velocity, up where dS/dφ jumps up, down where it jumps down.
-fn shock_arrows(rec: &mut Recorder, spec: &CamSpec, phase: usize, phi: Scale) {
-    let st = spec.starts();
-    for (at, start) in [(st[phase], true), (st[phase + 1], false)] {
-        let Some(up) = spec.shock_up(phase, start) else {
-            return;
-        };
-        let x = phi.to_mm(at);
-        let tip = DVec2::new(x, if up { SHOCK_MM } else { -SHOCK_MM });
-        let id = rec.draw(
-            "rigid shock: d²S/dφ² infinite",
-            Item::Vector {
-                from: DVec2::new(x, 0.0),
-                to: tip,
-            },
-            Role::Given,
-            &[],
-        );
-        // Beside the tip, clear of the ordinate axis the first arrow runs along.
-        let toward = DVec2::new(1.0, if up { 1.0 } else { -1.0 });
-        rec.label(id, "∞", tip, toward);
-    }
-}
-
-impl CamSpec {
-    /// At the `start` (else the end) of `phase` (0 the rise, 2 the return) of a law with
-    /// rigid shocks, whether d²S/dφ² is +∞ there (dS/dφ jumps up against the dwell's
-    /// nought) or −∞; `None` for a law without them.
-    pub fn shock_up(&self, phase: usize, start: bool) -> Option<bool> {
-        let law = if phase == 0 { self.rise } else { self.ret };
-        if law.shock() != Shock::Rigid {
-            return None;
-        }
-        let st = self.starts();
-        let v = if start {
-            motion(self, st[phase], true).ds
-        } else {
-            -motion(self, st[phase + 1], false).ds
-        };
-        Some(v > 0.0)
-    }
 }
 
 /// The given d²S/dφ² of one phase as drawn (its values `k` times the law's): from the abscissa up the jump at its start,

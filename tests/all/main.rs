@@ -20,6 +20,7 @@ mod cam_breaks;
 mod cam_data;
 mod cam_diagrams;
 mod cam_dimensions;
+mod cam_jumps;
 mod cam_oracle;
 mod cam_sheets;
 mod cam_special;
