@@ -63,6 +63,9 @@ pub(super) fn angle_mark(
     id
 }
 
+/// How far the normal runs on past the friction cone's base, mm.
+const NORMAL_PAST_BASE_MM: f64 = 6.0;
+
 /// The friction cone at contact `c` with unit normal `n` and friction coefficient `f`: the
 /// normal drawn `len` mm, the two generators at ±φ (their ends a distance `f·len` either
 /// side of the normal's end) and the base joining them. Returns the generators' ends
@@ -77,13 +80,16 @@ pub(super) fn cone(
     let top = c + n * len;
     let left = top + n.perp() * (f * len);
     let right = top - n.perp() * (f * len);
+    // The normal runs on past the base, its name at its end: clear of the base and of the
+    // generators, which meet the base there.
+    let end = top + n * NORMAL_PAST_BASE_MM;
     let id = rec.draw(
         "the normal n–n at the contact",
-        Item::Segment(Segment::new(c - n * (len * 0.3), top)),
+        Item::Segment(Segment::new(c - n * (len * 0.3), end)),
         Role::Axis,
         &[],
     );
-    rec.label(id, "n", top, n);
+    rec.label(id, "n", end, n);
     rec.draw(
         "f·N laid across the normal: the base of the friction cone",
         Item::Segment(Segment::new(left, right)),

@@ -178,6 +178,15 @@ fn scheme(
             (DVec2::Y, DVec2::new(c.f0, 1.0)),
             "φ_{0}",
         );
+        // And the sliding cone inside it, named by its own angle.
+        angle_mark(
+            &mut rec,
+            "φ, the sliding cone",
+            DVec2::ZERO,
+            24.0,
+            (DVec2::Y, DVec2::new(c.f, 1.0)),
+            "φ",
+        );
     }
     let (note, r_dir) = if rest {
         (

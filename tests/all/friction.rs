@@ -297,3 +297,60 @@ fn a_flat_groove_is_refused_at_load() {
         }
     }
 }
+
+/// The friction cones as a reader finds them (issue 45): every normal's `n` written at the
+/// normal's end past the cone's base — not on the base beside it, where it read as the
+/// chord's name — and the slider at rest (case 7) names both its cones, the static φ₀ and
+/// the sliding φ inside it.
+#[test]
+fn every_cone_names_its_normal_past_the_base_and_its_angles() {
+    use tmm::construct::Item;
+    let plate = crate::plate_model::sheet("friction/friction");
+    let l = tmm::plate::layout(&plate);
+    let mut normals = 0;
+    for x in l.labels.iter().filter(|x| x.text == "n") {
+        let view = &plate.views[x.view];
+        let normal = crate::plate_model::step(view, x.steps[0]);
+        assert!(normal.note.starts_with("the normal n–n"), "{}", normal.note);
+        let Item::Segment(seg) = &normal.item else {
+            panic!("{:?}", normal.item)
+        };
+        let base = view
+            .figure
+            .steps
+            .iter()
+            .find(|s| s.note.starts_with("f·N laid across the normal") && s.id > normal.id)
+            .expect("the cone's base after its normal");
+        let Item::Segment(b) = &base.item else {
+            panic!("{:?}", base.item)
+        };
+        // The normal's end lies past the base (along the normal), and the label's box
+        // clear of the base's line: nearer the normal's end than the base's middle.
+        let n = (seg.to - seg.from).normalize();
+        let mid = (b.from + b.to) * 0.5;
+        assert!(
+            (seg.to - mid).dot(n) >= 5.0,
+            "{seg:?} ends at the base {b:?}"
+        );
+        let centre = (x.rect.min + x.rect.max) * 0.5;
+        let end = view.to_sheet(seg.to);
+        let base_mid = view.to_sheet(mid);
+        assert!(
+            centre.distance(end) < centre.distance(base_mid),
+            "n at {centre:?}: the normal's end {end:?}, the base {base_mid:?}"
+        );
+        normals += 1;
+    }
+    // Cases 1, 2, 4 and 7 draw a cone each.
+    assert_eq!(normals, 4);
+    let angles: Vec<&str> = plate
+        .views
+        .iter()
+        .flat_map(|v| &v.figure.steps)
+        .filter(|s| {
+            s.note.starts_with("φ₀, the static cone") || s.note.starts_with("φ, the sliding cone")
+        })
+        .filter_map(|s| s.label.as_ref().map(|l| l.text.as_str()))
+        .collect();
+    assert_eq!(angles, ["φ_{0}", "φ"]);
+}
