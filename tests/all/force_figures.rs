@@ -381,3 +381,41 @@ fn no_arm_name_names_two_arms_of_a_sheet() {
     }
     assert!(arms >= 30, "{arms} numbered arms");
 }
+
+/// A group's drawing shows the loads on the group (issue 45): its outer pairs' reactions,
+/// and the inner pair's only where its point is found on the drawing (a slide's); an inner
+/// joint's reaction, a force between the group's own links, is read off the polygon alone
+/// — drawn at the joint, the V engine's R₄₋₅ at C stood as one more load on slider 5.
+#[test]
+fn a_groups_drawing_shows_no_force_between_its_own_links_at_a_joint() {
+    for scene in [
+        "constructions/shaper.toml",
+        "constructions/v-engine.toml",
+        "constructions/six-bar.toml",
+        "constructions/slider-crank.toml",
+    ] {
+        each_position(scene, |f| {
+            for g in &f.analysis.polygons.groups {
+                let labels: Vec<&str> = (g.scheme.steps.iter())
+                    .filter_map(|s| s.label.as_ref().map(|l| l.text.as_str()))
+                    .collect();
+                for (k, r) in g.reactions.iter().enumerate() {
+                    let name = format!("R_{{{}-{}}}", r.pair.from, r.pair.to);
+                    let inner_joint =
+                        k == 2 && matches!(r.pair.kind, tmm::forces::PairKind::Revolute(_));
+                    let shown = labels.contains(&name.as_str());
+                    assert!(
+                        if inner_joint {
+                            !shown
+                        } else {
+                            shown || r.force.length() < 1e-9
+                        },
+                        "{scene} {}: group {:?}, {name} (the {k}-th reaction) shown: {shown}",
+                        f.label,
+                        g.links
+                    );
+                }
+            }
+        });
+    }
+}

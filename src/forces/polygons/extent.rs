@@ -209,11 +209,8 @@ impl<'a> Sketch<'a> {
         ) = (r.pair.from, r.offset, r.pair.kind)
         {
             let (axis, u) = (self.pose.p[reference], self.pose.dir[dir_link]);
-            let towards = if u.perp_dot(self.pose.p[prog.centre] - axis) > 0.0 {
-                -u.perp()
-            } else {
-                u.perp()
-            };
+            let towards =
+                arrows::away_from_mechanism(u, axis, self.pose.p[prog.centre], &self.pose.p);
             let side = towards * Item::SLIDER_HALF_MM.1;
             let (lo, hi) = (axis + u * s.min(0.0), axis + u * s.max(0.0));
             self.extent.mark(lo, side - u * GUIDE_PAST_MM);
@@ -222,7 +219,16 @@ impl<'a> Sketch<'a> {
             self.extent.mark(lo, beside);
             self.extent.mark(hi, beside);
             if let Some(e) = r.force.try_normalize() {
-                self.arrow((axis + u * s, side), e, e.dot(towards) >= 0.0);
+                // A pull is drawn onto the block's other face where its point lies within the
+                // block ([`super::show_reaction`]): at every μ_l where it lies at the joint;
+                // off it, within the block at a coarse μ_l only, on the guide's face here.
+                let pulls = e.dot(towards) >= 0.0;
+                let across = if pulls && s.abs() <= self.near {
+                    towards * (2.0 * Item::SLIDER_HALF_MM.1)
+                } else {
+                    DVec2::ZERO
+                };
+                self.arrow((axis + u * s, side - across), e, pulls);
             }
             return;
         }
@@ -279,8 +285,10 @@ pub(crate) fn drawings(
         if let Some(l) = at {
             sk.arms(cj, &[&l]);
         }
-        for r in reactions {
-            sk.reaction(prog, r);
+        for (k, r) in reactions.iter().enumerate() {
+            if super::on_scheme(k, r) {
+                sk.reaction(prog, r);
+            }
         }
         for r in &reactions[..2] {
             if r.pair.from != 0 {

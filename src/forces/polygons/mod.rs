@@ -252,8 +252,10 @@ pub fn polygons(
                 applied.push(l);
             }
         }
-        for r in &reactions {
-            show_reaction(&mut sch, r);
+        for (k, r) in reactions.iter().enumerate() {
+            if on_scheme(k, r) {
+                show_reaction(&mut sch, r);
+            }
         }
         // The points' letters last: the loads' labels keep the places by their arrows.
         name_points(&mut sch.rec, prog, b, Part::Group(group), true);
@@ -275,6 +277,15 @@ pub fn polygons(
         driver,
         arms,
     })
+}
+
+/// Whether the group's drawing shows reaction `r`, the `k`-th of the group's (the two outer
+/// pairs', then the inner's): the outer ones always, the group's loads from the links beside it; the
+/// inner one where its point is found on the drawing, a slide's (RPR, RPP). An inner joint's
+/// reaction is a force between the group's own links, read off the polygon alone: drawn on
+/// the group, beside the loads, it would stand as one more (the V engine's R₄₋₅ at C).
+fn on_scheme(k: usize, r: &Reaction) -> bool {
+    k < 2 || matches!(r.pair.kind, PairKind::Prismatic { .. })
 }
 
 /// Where a reaction acts: its pair's point, shifted along the slide (link `l`'s direction

@@ -158,10 +158,11 @@ fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) -> Option<(DV
     // Hatched on the side away from the mechanism, as on the plan of positions; the guide's
     // line on the block's side towards the hatching.
     let axis = b.p[reference];
-    let (hatch, side, towards) = if u.perp_dot(b.p[prog.centre] - axis) > 0.0 {
-        (crate::geom::Side::Right, -1.0, -u.perp())
+    let towards = crate::forces::arrows::away_from_mechanism(u, axis, b.p[prog.centre], &b.p);
+    let (hatch, side) = if towards == -u.perp() {
+        (crate::geom::Side::Right, -1.0)
     } else {
-        (crate::geom::Side::Left, 1.0, u.perp())
+        (crate::geom::Side::Left, 1.0)
     };
     let joint = axis + towards * Item::SLIDER_HALF_MM.1;
     let point = joint + u * (offset / mu);
