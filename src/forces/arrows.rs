@@ -28,28 +28,6 @@ pub fn overlap(a: DVec2, b: DVec2, (p, q): (DVec2, DVec2), near: f64) -> bool {
     lies_on(a, b, (p, q), near) || lies_on(p, q, (a, b), near)
 }
 
-/// The unit normal to a slider's guide (through `axis`, along the unit `u`) on the side away
-/// from the mechanism: from the crank's `centre`, or, where the guide runs through it (the V
-/// engine's cylinders through O), from the mechanism's `points` taken together — the side
-/// of the guide the hatching and the frame's reaction stand on. One decision for the drawing
-/// and its predicted room: a centre on the line, decided by the rounding, put the two on
-/// opposite sides.
-pub fn away_from_mechanism(u: DVec2, axis: DVec2, centre: DVec2, points: &[DVec2]) -> DVec2 {
-    let side = |p: DVec2| u.perp_dot(p - axis);
-    let reach = points.iter().map(|p| p.distance(axis)).fold(0.0, f64::max);
-    let on_line = side(centre).abs() <= reach * 1e-9;
-    let s = if on_line {
-        points.iter().map(|&p| side(p)).sum()
-    } else {
-        side(centre)
-    };
-    if s > 0.0 {
-        -u.perp()
-    } else {
-        u.perp()
-    }
-}
-
 /// Whether the line `a`–`b` lies on the drawn line `p`–`q`: both its ends within `near` mm
 /// of that line, and the two sharing more than [`SHARED_MM`] of their length.
 pub fn lies_on(a: DVec2, b: DVec2, line: (DVec2, DVec2), near: f64) -> bool {
@@ -555,33 +533,5 @@ mod tests {
         }
         couple(&mut rec, "M", o, 1.0);
         assert!(arc_of(&rec).sweep > 0.0);
-    }
-
-    /// A guide through the crank's centre (the V engine's cylinders through O) takes its side
-    /// from the mechanism's points, whatever the rounding leaves of the centre's side; a
-    /// guide beside the centre takes the side away from it.
-    #[test]
-    fn a_guide_through_the_centre_is_hatched_away_from_the_mechanism() {
-        let u = DVec2::new(-1.0, 1.0).normalize();
-        let axis = DVec2::new(-0.1367, 0.1367);
-        // The other cylinder's block and the crank pin on the (1, 1) side of the line.
-        let points = [
-            DVec2::ZERO,
-            axis,
-            DVec2::new(0.12, 0.12),
-            DVec2::new(0.01, 0.03),
-        ];
-        for noise in [-1e-17, 0.0, 1e-17] {
-            let centre = DVec2::new(noise, -noise);
-            let t = away_from_mechanism(u, axis, centre, &points);
-            assert!(
-                t.abs_diff_eq(-DVec2::ONE.normalize(), 1e-12),
-                "{noise}: {t}"
-            );
-        }
-        // Off the line, the centre decides, not the points.
-        let beside = axis + DVec2::new(0.05, 0.05);
-        let t = away_from_mechanism(u, beside, DVec2::ZERO, &points);
-        assert!(t.abs_diff_eq(DVec2::ONE.normalize(), 1e-12), "{t}");
     }
 }

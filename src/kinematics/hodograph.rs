@@ -12,21 +12,26 @@ use crate::scale::{Quantity, Scale};
 /// pole at 30–60 mm (the shaper's «1 ≡ 8′ 2 3 4 5» within 15 mm, the six-bar's «12 11 p 10′»).
 const HODOGRAPH_MM: f64 = 100.0;
 
-/// The point whose hodograph is drawn: the scene's, or the first point of a link.
+/// The point whose hodograph is drawn: the scene's, or the first point of a link after the
+/// crank that moves; none when the mechanism has no such point.
 pub fn hodograph_point(
     plan: &PositionPlan,
     asked: Option<&str>,
 ) -> Result<Option<usize>, KinError> {
     let prog = &plan.program;
-    // By default the first link point that moves: a point at a pivot would be a blob.
+    // By default the first link point that moves (a point at a pivot would be a blob) and is
+    // not the crank's: the crank turns uniformly, and its point's hodograph is a circle about
+    // the pole that tells nothing the crank's ω₁ does not (the tangent mechanism's v_C drew
+    // one 200 mm across).
     let moves = |k: usize| {
         plan.positions
             .iter()
             .any(|p| !crate::check::is_zero(p.pose.dp[k].length(), prog.crank_length))
     };
+    let on_crank = |k: usize| prog.links_of(k).contains(&(prog.crank_link as usize));
     let name = match asked {
         Some(n) => n.to_string(),
-        None => match prog.placed_points().find(|&k| moves(k)) {
+        None => match prog.placed_points().find(|&k| moves(k) && !on_crank(k)) {
             Some(k) => prog.names[k].clone(),
             None => return Ok(None),
         },

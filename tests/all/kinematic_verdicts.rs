@@ -568,3 +568,24 @@ fn each_pole_distance_in_the_diagrams_caption_has_its_unit() {
         );
     }
 }
+
+/// Without a `hodograph` key the hodograph is of the first point of a link after the crank
+/// (a crank's point draws a circle about the pole that tells only ω₁: the tangent
+/// mechanism's v_C drew one 200 mm across a quarter of its sheet), and none where the
+/// mechanism has no such point; the scene's own point stands.
+#[test]
+fn the_default_hodograph_is_of_a_point_past_the_crank() {
+    for (scene, want) in [
+        ("four-bar", Some("S2")),
+        ("slider-crank", Some("S2")),
+        ("v-engine", Some("S2")),
+        ("shaper", Some("S3")),
+        ("tangent", None),
+    ] {
+        let s = tmm::load(&root().join(format!("constructions/{scene}.toml"))).expect(scene);
+        let session = tmm::study::Session::new(&s, Drafting::EXACT);
+        let sc = session.kin_scales().expect("scales");
+        let h = session.hodograph(&sc).expect("hodograph");
+        assert_eq!(h.as_ref().map(|h| h.point.as_str()), want, "{scene}");
+    }
+}

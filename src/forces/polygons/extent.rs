@@ -210,7 +210,7 @@ impl<'a> Sketch<'a> {
         {
             let (axis, u) = (self.pose.p[reference], self.pose.dir[dir_link]);
             let towards =
-                arrows::away_from_mechanism(u, axis, self.pose.p[prog.centre], &self.pose.p);
+                super::wall::guide_wall(u, axis, r.force, (self.pose.p[prog.centre], &self.pose.p));
             let side = towards * Item::SLIDER_HALF_MM.1;
             let (lo, hi) = (axis + u * s.min(0.0), axis + u * s.max(0.0));
             self.extent.mark(lo, side - u * GUIDE_PAST_MM);

@@ -35,6 +35,7 @@ mod extent;
 mod kinds;
 mod polygon;
 mod scheme;
+mod wall;
 pub use detail::{letter_at, letter_toward, PolygonDetail};
 use driver::driver;
 pub use equations::{MomentEquation, MomentTerm, Unknown};

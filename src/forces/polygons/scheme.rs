@@ -158,7 +158,7 @@ fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) -> Option<(DV
     // Hatched on the side away from the mechanism, as on the plan of positions; the guide's
     // line on the block's side towards the hatching.
     let axis = b.p[reference];
-    let towards = crate::forces::arrows::away_from_mechanism(u, axis, b.p[prog.centre], &b.p);
+    let towards = super::wall::guide_wall(u, axis, r.force, (b.p[prog.centre], &b.p));
     let (hatch, side) = if towards == -u.perp() {
         (crate::geom::Side::Right, -1.0)
     } else {
