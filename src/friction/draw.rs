@@ -80,12 +80,13 @@ pub(super) fn cone(
     let top = c + n * len;
     let left = top + n.perp() * (f * len);
     let right = top - n.perp() * (f * len);
-    // The normal runs on past the base, its name at its end: clear of the base and of the
-    // generators, which meet the base there.
+    // The normal from the contact runs on past the base, its name at its end: clear of the
+    // base and of the generators, which meet the base there. Not on into the body under the
+    // contact, where a load along it would be drawn twice (the screw's Q, case 4).
     let end = top + n * NORMAL_PAST_BASE_MM;
     let id = rec.draw(
         "the normal n–n at the contact",
-        Item::Segment(Segment::new(c - n * (len * 0.3), end)),
+        Item::Segment(Segment::new(c, end)),
         Role::Axis,
         &[],
     );
