@@ -281,10 +281,11 @@ pub fn polygons(
 }
 
 /// Whether the group's drawing shows reaction `r`, the `k`-th of the group's (the two outer
-/// pairs', then the inner's): the outer ones always, the group's loads from the links beside it; the
-/// inner one where its point is found on the drawing, a slide's (RPR, RPP). An inner joint's
-/// reaction is a force between the group's own links, read off the polygon alone: drawn on
-/// the group, beside the loads, it would stand as one more (the V engine's R₄₋₅ at C).
+/// pairs', then the inner's): the outer ones always, the group's loads from the links beside
+/// it; the inner one where its point is found on the drawing, a slide's (RPR, RPP). An inner
+/// joint's reaction is a force between the group's own links, read off the polygon alone:
+/// drawn on the group, beside the loads, it would stand as one more (the V engine's R₄₋₅
+/// at C).
 fn on_scheme(k: usize, r: &Reaction) -> bool {
     k < 2 || matches!(r.pair.kind, PairKind::Prismatic { .. })
 }
