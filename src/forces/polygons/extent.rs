@@ -219,16 +219,7 @@ impl<'a> Sketch<'a> {
             self.extent.mark(lo, beside);
             self.extent.mark(hi, beside);
             if let Some(e) = r.force.try_normalize() {
-                // A pull is drawn onto the block's other face where its point lies within the
-                // block ([`super::show_reaction`]): at every μ_l where it lies at the joint;
-                // off it, within the block at a coarse μ_l only, on the guide's face here.
-                let pulls = e.dot(towards) >= 0.0;
-                let across = if pulls && s.abs() <= self.near {
-                    towards * (2.0 * Item::SLIDER_HALF_MM.1)
-                } else {
-                    DVec2::ZERO
-                };
-                self.arrow((axis + u * s, side - across), e, pulls);
+                self.arrow((axis + u * s, side), e, e.dot(towards) >= 0.0);
             }
             return;
         }

@@ -155,8 +155,8 @@ fn show_guide_arm(sch: &mut Scheme<'_>, r: &Reaction, offset: f64) -> Option<(DV
     let prog = sch.board.setup.prog;
     let mu = sch.board.setup.mu_l.value();
     let u = DVec2::from_angle(b.angle[dir_link]);
-    // Hatched on the side away from the mechanism, as on the plan of positions; the guide's
-    // line on the block's side towards the hatching.
+    // Hatched on the wall `guide_wall` takes (away from the mechanism, as on the plan of
+    // positions); the guide's line on the block's side towards the hatching.
     let axis = b.p[reference];
     let towards = super::wall::guide_wall(u, axis, r.force, (b.p[prog.centre], &b.p));
     let (hatch, side) = if towards == -u.perp() {
