@@ -8,6 +8,13 @@
 use super::item::Item;
 use crate::geom::DVec2;
 
+/// A digit of a number written as a label is about this wide at the labels' type (4,8 mm
+/// boxes), sheet mm: what a drawing reserves for a number it places itself (a diagram's
+/// position numbers on its φ axis).
+pub const DIGIT_MM: f64 = 3.1;
+/// Half a label's box across its line at the labels' type, sheet mm.
+pub const HALF_BOX_MM: f64 = 2.4;
+
 /// A label's anchor this close to a point of its item is at that point, mm (figure mm: the
 /// anchor is computed from the same numbers as the point, so only rounding parts them).
 const AT_POINT_MM: f64 = 1e-6;

@@ -5,7 +5,7 @@ use super::{extent, numbered, pole_and_scale, turn_diagram, KinError, Kinematics
 use super::{DIAGRAM_GAP, DIAGRAM_MM};
 use crate::calculus::{self, Derivative, Diagram, DiagramLayout, Scales};
 use crate::check::{Key, Method, Row, Symbol};
-use crate::construct::{Context, Drafting, Figure, Item, Recorder, Role};
+use crate::construct::{Context, Drafting, Figure, Recorder};
 use crate::geom::DVec2;
 use crate::linkage::{plain, Output, PositionPlan, Program, Sense};
 use crate::scale::{Quantity, Scale};
@@ -159,9 +159,6 @@ fn twin_origin(
 /// drawn, mm: the rays fan out from the pole over the whole span of the derivative, so the
 /// dimension H and its text (over the line) stand clear of them under the fan.
 pub(super) const POLE_DIMENSION_MM: f64 = 7.0;
-/// How far from a numbered position's mark an extreme's number on the φ axis must stand to
-/// be written there, mm (about two digits' width).
-const AXIS_MARKS_APART_MM: f64 = 5.0;
 /// The pole's label: up and left of the pole, away from the rays (which run right).
 pub(super) const POLE_LABEL: DVec2 = DVec2::new(-0.6, 1.0);
 
@@ -181,36 +178,6 @@ fn chart_scales(spec: &KinematicsSpec, s: &[f64], size: ChartSize) -> Result<Sca
         })?,
     };
     Ok(Scales { x, y })
-}
-
-/// The positions' numbers under the φ axis (at μ_φ `phi`) of a diagram `src` charted at the
-/// `numbered` positions, as on the plan of positions: each at its node, and the `extremes`
-/// between them (travel from position 1, rad; label) at theirs — under the axis too where
-/// one stands clear of the nodes, over it where it is too near one to stand beside it.
-pub(super) fn number_phi_axis(
-    rec: &mut Recorder,
-    (src, numbered): (&Diagram, &[(usize, &crate::linkage::PlanPosition)]),
-    extremes: &[(f64, &String)],
-    phi: Scale,
-) {
-    let nodes: Vec<f64> = (0..=numbered.len()).map(|idx| src.x(idx)).collect();
-    let clear = |x: f64| (nodes.iter()).all(|n| phi.to_mm((x - n).abs()) >= AXIS_MARKS_APART_MM);
-    let under = DVec2::new(0.0, -1.0);
-    let marks = (numbered.iter().enumerate())
-        .map(|(idx, (_, p))| (src.x(idx), &p.label, under))
-        .chain(
-            (extremes.iter()).map(|&(x, label)| (x, label, if clear(x) { under } else { -under })),
-        );
-    for (x, label, toward) in marks {
-        let at = DVec2::new(phi.to_mm(x), 0.0);
-        let id = rec.draw(
-            format!("position {label} on the φ axis"),
-            Item::Text(at),
-            Role::Dimension,
-            &[],
-        );
-        rec.label(id, label.clone(), at, toward);
-    }
 }
 
 /// S of point `k` read off the plan of positions (at μ_l = `scale_l`) at the `numbered`
@@ -350,9 +317,16 @@ pub fn diagrams(
         .map_err(|e| fail("dS/dφ", e))?;
     let d1 = first.diagram().map_err(|e| fail("dS/dφ", e))?;
     // The positions' numbers under the S diagram's φ axis, as on the plan of positions, and
-    // the extremes' between them.
+    // the extremes' between them; the derivative's axis carries the numbers alone.
     let extremes: Vec<(f64, &String)> = between.iter().map(|b| (b.travel, &b.label)).collect();
-    number_phi_axis(&mut rec1, (&src, &numbered), &extremes, scales.x);
+    super::axis::number_phi_axis(
+        &mut rec1,
+        (&src, &numbered),
+        &extremes,
+        (scales.x, 0.0, &[]),
+    );
+    let at1 = (scales.x, lay1.origin.y, first.node.as_slice());
+    super::axis::number_phi_axis(&mut rec1, (&src, &numbered), &[], at1);
     let scales2 = Scales {
         x: scales.x,
         y: mu1,
@@ -375,6 +349,8 @@ pub fn diagrams(
     let second = construction
         .differentiate(&mut rec2, &d1, scales2, h2, &lay2)
         .map_err(|e| fail("d²S/dφ²", e))?;
+    let at2 = (scales.x, lay2.origin.y, second.node.as_slice());
+    super::axis::number_phi_axis(&mut rec2, (&src, &numbered), &[], at2);
     let (p0, dir) = twin_origin(plan, outputs, (k, dir));
     let rows = rows(
         (&numbered, &plan.program, plan.mechanism.crank.sense),

@@ -10,6 +10,7 @@
 //!
 //! Every reading comes out as a typed [`Row`]: graphical against analytic.
 
+mod axis;
 mod diagrams;
 mod hodograph;
 mod plans;

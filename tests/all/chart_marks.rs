@@ -119,3 +119,54 @@ fn the_rocker_diagram_numbers_its_positions() {
         });
     }
 }
+
+/// Every derivative's φ axis numbers the positions as its diagram's does (issue 45: the
+/// dS/dφ, d²S/dφ² and dω₃/dφ axes had no numbers, so a reader could not say which ordinate
+/// was which position's): 1 … 12, each at its node, its middle off the axis on one side and
+/// within half an interval of the node, never flown off among the chords' steps.
+#[test]
+fn every_derivative_axis_numbers_its_positions() {
+    use tmm::construct::{Figure, Item};
+    let numbers = |f: &Figure| -> Vec<(String, f64, tmm::geom::DVec2)> {
+        (f.steps.iter())
+            .filter(|st| st.note.ends_with("on the derivative's φ axis"))
+            .filter_map(|st| match (&st.item, &st.label) {
+                (Item::Text(at), Some(l)) => Some((l.text.clone(), at.x, l.anchor - *at)),
+                _ => None,
+            })
+            .collect()
+    };
+    let want: Vec<String> = (1..=12).map(|k| k.to_string()).collect();
+    for scene in ["four-bar", "shaper", "six-bar", "slider-crank", "v-engine"] {
+        with_kinematics(scene, |_, _, study| {
+            let mut axes = Vec::new();
+            if let Some(d) = &study.diagrams {
+                let interval = TAU_OVER_12 / d.scales.x.value();
+                axes.push(("dS/dφ", numbers(&d.first_figure), interval));
+                axes.push(("d²S/dφ²", numbers(&d.second_figure), interval));
+            }
+            if let Some(r) = &study.rocker {
+                axes.push((
+                    "dω/dφ",
+                    numbers(&r.figure),
+                    TAU_OVER_12 / r.scale_phi.value(),
+                ));
+            }
+            assert!(!axes.is_empty(), "{scene}: no diagram");
+            for (axis, marks, interval) in axes {
+                let names: Vec<&str> = marks.iter().map(|m| m.0.as_str()).collect();
+                assert_eq!(names, want, "{scene} {axis}");
+                for (k, (text, x, off)) in marks.iter().enumerate() {
+                    assert!(
+                        (x - k as f64 * interval).abs() < 1e-9,
+                        "{scene} {axis}: {text} at {x} mm"
+                    );
+                    assert!(
+                        (2.0..=6.0).contains(&off.y.abs()) && off.x.abs() < 0.5 * interval,
+                        "{scene} {axis}: {text} {off} mm from its node"
+                    );
+                }
+            }
+        });
+    }
+}

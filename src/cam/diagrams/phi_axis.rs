@@ -10,7 +10,7 @@
 
 use crate::cam::motion::Point;
 use crate::cam::CamSpec;
-use crate::construct::{Item, Recorder, Role, Step};
+use crate::construct::{Item, Recorder, Role, Step, DIGIT_MM, HALF_BOX_MM};
 use crate::geom::{curve, DVec2, Rect, Segment};
 use crate::scale::Scale;
 
@@ -30,15 +30,11 @@ const PHASE_SYMBOLS: [&str; 4] = ["φ_{у}", "φ_{д.в.}", "φ_{п}", "φ_{б.�
 /// A boundary's tick reaches this far each side of the axis, mm: short of the outer row of
 /// numbers.
 const TICK_MM: f64 = 2.5;
-/// A digit of a number is this wide at the labels' 4,8 mm type, mm.
-const DIGIT_MM: f64 = 3.1;
 /// Two numbers side by side keep this much clear between them, mm (the placer's clearance
 /// and a gap). Points nearer than their numbers' half widths and this are numbered in two
 /// rows, every other one a row further from the axis ([`ROW_MM`]); nearer than half of it,
 /// every k-th point of a phase is numbered, its first and last always.
 const NUMBER_GAP_MM: f64 = 1.2;
-/// Half a number's box at the labels' 4,8 mm type, mm.
-const HALF_BOX_MM: f64 = 2.4;
 /// A number's middle stands this far from the axis in the first row, mm: half its box and a
 /// millimetre's gap.
 const NUMBER_DROP_MM: f64 = HALF_BOX_MM + 1.0;
