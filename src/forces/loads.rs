@@ -183,6 +183,7 @@ pub fn loads(
         }
     }
     for r in spec.acting(phase) {
+        let name = r.action.symbol().to_string();
         match &r.action {
             Action::Force {
                 point,
@@ -200,7 +201,6 @@ pub fn loads(
                     None => (-motion.v[k]).try_normalize(),
                 };
                 if let Some(e) = e {
-                    let name = "F_{пс}".to_string();
                     out.push(Load::force(
                         l,
                         LoadKind::Resistance,
@@ -214,7 +214,6 @@ pub fn loads(
                 let l = *link as usize;
                 let w = motion.omega.get(l).copied().unwrap_or(0.0);
                 if w != 0.0 {
-                    let name = "M_{пс}".to_string();
                     let m = -w.signum() * magnitude;
                     out.push(Load::couple(l, LoadKind::Resistance, name, m));
                 }

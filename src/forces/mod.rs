@@ -101,6 +101,8 @@ pub struct PositionForces {
     pub residuals: Vec<Residual>,
     /// The motion as the plans give it, which the loads are formed from.
     pub drawn: PositionMotion,
+    /// The stroke the position lies on (which resistances act there).
+    pub phase: loads::Phase,
 }
 
 /// The equilibrium check of both routes of one analysis (`residual::residual`): every
@@ -328,6 +330,7 @@ pub fn analyse(
         rows,
         residuals,
         drawn,
+        phase: ph,
     })
 }
 

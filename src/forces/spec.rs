@@ -71,6 +71,16 @@ pub enum Action {
     },
 }
 
+impl Action {
+    /// The symbol of the resistance in the Russian textbooks' markup: `F_{пс}`, `M_{пс}`.
+    pub fn symbol(&self) -> &'static str {
+        match self {
+            Action::Force { .. } => "F_{пс}",
+            Action::Moment { .. } => "M_{пс}",
+        }
+    }
+}
+
 /// A working resistance (сила полезного сопротивления).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Resistance {

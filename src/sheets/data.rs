@@ -194,13 +194,10 @@ pub(crate) fn force_units(f: &ForceSpec, lang: Lang) -> Vec<Vec<DataRow>> {
         units.push(unit);
     }
     for r in &f.resistances {
+        let symbol = r.action.symbol().into();
         units.push(vec![match &r.action {
-            Action::Force { magnitude, .. } => {
-                ("F_{пс}".into(), fmt(*magnitude, 5, lang), "N".into())
-            }
-            Action::Moment { magnitude, .. } => {
-                ("M_{пс}".into(), fmt(*magnitude, 5, lang), "N*m".into())
-            }
+            Action::Force { magnitude, .. } => (symbol, fmt(*magnitude, 5, lang), "N".into()),
+            Action::Moment { magnitude, .. } => (symbol, fmt(*magnitude, 5, lang), "N*m".into()),
         }]);
     }
     for c in &f.indicators {

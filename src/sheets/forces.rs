@@ -11,6 +11,7 @@ use super::BuildError;
 use crate::check::{Method, Row, Symbol};
 use crate::construct::Figure;
 use crate::forces::{letter_at, letter_toward, ForceSpec, PolygonDetail, PositionForces};
+use crate::forces::{Phase, Stroke};
 use crate::linkage::Structure;
 use crate::plate::{Plate, Sheet, TableBlock};
 use crate::scale::{format_fixed, format_sig, Key, Lang, Scale};
@@ -240,6 +241,7 @@ fn position_sheet(
     ];
     let spec = session.force_spec("the force sheets")?;
     lines.extend(balance_lines(&f.rows, spec.engine(), lang));
+    lines.extend(resting_lines(spec, f.phase, lang));
     lines.extend(gas_lines(session, spec, f, phi, lang)?);
     blocks.push(Block::Text {
         lines,
@@ -270,6 +272,22 @@ fn data_lines(spec: &ForceSpec, lang: Lang) -> Vec<String> {
         lines.push(line.join(", "));
     }
     lines
+}
+
+/// A line for every resistance of the data that does not act at the position (a shaper's
+/// cutting force on the return stroke): absent from the drawings, said to be nought.
+fn resting_lines(spec: &ForceSpec, phase: Phase, lang: Lang) -> Vec<String> {
+    (spec.resistances.iter())
+        .filter(|r| !r.stroke.acts(phase))
+        .filter_map(|r| {
+            let text = match r.stroke {
+                Stroke::Working => Text::ActsOnWorkingOnly,
+                Stroke::Return => Text::ActsOnReturnOnly,
+                Stroke::Always => return None,
+            };
+            Some(text.get(lang).replace("{f}", r.action.symbol()))
+        })
+        .collect()
 }
 
 /// The most data items on one line of a force sheet's data (a unit of more stands alone).

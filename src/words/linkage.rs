@@ -92,6 +92,8 @@ catalogue! {
         MeanError => ("δ ср., %", "δ сер., %", "δ mean, %"),
         MaxError => ("δ макс., %", "δ макс., %", "δ max, %"),
         ForceAnalysis => ("Силовой анализ", "Силовий аналіз", "Force analysis"),
+        ActsOnWorkingOnly => ("{f} = 0: {f} действует только на рабочем ходу", "{f} = 0: {f} діє лише на робочому ході", "{f} = 0: {f} acts on the working stroke only"),
+        ActsOnReturnOnly => ("{f} = 0: {f} действует только на холостом ходу", "{f} = 0: {f} діє лише на холостому ході", "{f} = 0: {f} acts on the return stroke only"),
         Position => ("положение", "положення", "position"),
         Group => ("Группа", "Група", "Group"),
         ForcePolygonOfGroup => ("План сил группы", "План сил групи", "Force polygon of group"),

@@ -474,3 +474,26 @@ fn a_force_read_on_a_detail_has_no_head_on_its_polygon() {
         "{lines} lines, {details} details"
     );
 }
+
+/// A resistance of the data that does not act at the sheet's position is said to be nought
+/// there (issue 45: the shaper's sheet of position 10, on the return stroke, drew no F_пс
+/// while its data gave «F_пс = 1275,3 Н»): position 10's sheet says it acts on the working
+/// stroke only, in each language's notation; position 3's, where it acts, says nothing.
+#[test]
+fn a_resting_resistance_is_said_to_be_nought() {
+    use tmm::scale::Lang;
+    let s = tmm::scene::load(&root().join(SCENES[0])).expect("shaper");
+    let session = Session::new(&s, Drafting::EXACT);
+    let kind = tmm::scene::PlateKind::parse("forces").expect("kind");
+    for (lang, want) in [
+        (Lang::Ru, "F_{пс} = 0: F_{пс} действует только на рабочем ходу"),
+        (Lang::Uk, "F_{пк} = 0: F_{пк} діє лише на робочому ході"),
+        (Lang::En, "F_{r} = 0: F_{r} acts on the working stroke only"),
+    ] {
+        let sheets = tmm::build(&session, kind, lang).expect("sheets");
+        let said: Vec<bool> = (sheets.iter())
+            .map(|p| p.texts.iter().flat_map(|t| &t.lines).any(|l| l == want))
+            .collect();
+        assert_eq!(said, [false, true], "{lang:?}: «{want}» on positions 3, 10");
+    }
+}
