@@ -486,7 +486,10 @@ fn a_resting_resistance_is_said_to_be_nought() {
     let session = Session::new(&s, Drafting::EXACT);
     let kind = tmm::scene::PlateKind::parse("forces").expect("kind");
     for (lang, want) in [
-        (Lang::Ru, "F_{пс} = 0: F_{пс} действует только на рабочем ходу"),
+        (
+            Lang::Ru,
+            "F_{пс} = 0: F_{пс} действует только на рабочем ходу",
+        ),
         (Lang::Uk, "F_{пк} = 0: F_{пк} діє лише на робочому ході"),
         (Lang::En, "F_{r} = 0: F_{r} acts on the working stroke only"),
     ] {

@@ -104,6 +104,9 @@ fn overlaps(l: &Layout) -> Vec<String> {
 /// a text 0,95 mm from the frame's line (gears-pz3's a_w, whose view's bounds left out its
 /// dimension's text) reads as written on it.
 const FRAME_CLEAR_MM: f64 = 1.0;
+/// How far a label stays inside the frame, mm: the V engine's F_и5 1,5 mm from the frame's
+/// line, at the corner of the sheet, read as crowded against it (issue 45).
+const LABEL_FRAME_CLEAR_MM: f64 = 2.5;
 
 /// Everything drawn outside the frame, against it, or over the title block or the
 /// designation box.
@@ -114,12 +117,14 @@ fn outside(l: &Layout) -> Vec<String> {
             rect,
         })
     });
-    let all = drawn.chain(captions(l)).chain(labels(l)).chain(blocks(l));
-    all.filter_map(|x| {
+    let others = drawn.chain(captions(l)).chain(blocks(l));
+    let all = (others.map(|x| (x, FRAME_CLEAR_MM)))
+        .chain(labels(l).into_iter().map(|x| (x, LABEL_FRAME_CLEAR_MM)));
+    all.filter_map(|(x, clear)| {
         let mut why = Vec::new();
         if !l.frame.contains(&x.rect) {
             why.push("leaves the frame");
-        } else if !l.frame.inflate(-FRAME_CLEAR_MM).contains(&x.rect) {
+        } else if !l.frame.inflate(-clear).contains(&x.rect) {
             why.push("stands against the frame");
         }
         if x.rect.intersects(&l.title_block) {

@@ -28,8 +28,9 @@ pub(super) struct Placer<'a> {
 const OUTSIDE: f64 = 1e5;
 /// How far inside the frame's line, and off the title block and the designation box, a label
 /// keeps, mm: the V engine's R₄₋₅ 0,3 mm from the frame, touching the designation box, read
-/// as written on them (issue 45).
-const FRAME_CLEAR_MM: f64 = 1.0;
+/// as written on them, and its F_и5 1,5 mm from the frame at the sheet's corner as crowded
+/// against it (issue 45).
+const FRAME_CLEAR_MM: f64 = 2.5;
 /// A box over another text costs [`OVER_TEXT`] plus its overlap area (mm²) times this.
 const TEXT_AREA: f64 = 100.0;
 /// Cost per mm of a main line crossing the box; of a thin line (a label a ring further out is
