@@ -1,7 +1,7 @@
 //! What a step draws: a point, a pair, a line, a curve, a vector, a slider, a guide, a
 //! dimension, an angle mark, a text or a hatched region, in figure millimetres (y up).
 
-use crate::geom::{Arc, Circle, DVec2, Segment, Side};
+use crate::geom::{curve, Arc, Circle, DVec2, Segment, Side};
 
 /// What a step draws, in figure millimetres (y up).
 #[derive(Debug, Clone, PartialEq)]
@@ -101,6 +101,10 @@ pub enum Item {
 /// its subscript (`plate::dimension` writes it there).
 pub const DIMENSION_TEXT_ROOM_MM: f64 = 6.5;
 
+/// Chords of each piece of a smooth curve that stand for it where a drawing tests a place
+/// against its lines ([`Item::straight_pieces`]).
+pub const CURVE_CHORDS: usize = 8;
+
 /// The length of a thin [`Item::Vector`]'s arrowhead (a construction's, a dimension's), mm: a
 /// thin vector shorter than this is all head.
 pub const THIN_HEAD_MM: f64 = 3.0;
@@ -159,6 +163,31 @@ impl Item {
                     add(p + over);
                 }
             }
+        }
+    }
+
+    /// The straight pieces of the lines the item draws, mm, each to `add`: a segment, a
+    /// vector, a dimension's line, a polyline's sides (a closed one's back to its first
+    /// point), a smooth curve as drawn through its points ([`CURVE_CHORDS`] chords a piece);
+    /// none of a symbol, a text, a circle, an arc or a hatching. What a drawing tests a place
+    /// against before it puts its own mark there.
+    pub fn straight_pieces(&self, mut add: impl FnMut(DVec2, DVec2)) {
+        let mut sides = |points: &[DVec2]| points.windows(2).for_each(|w| add(w[0], w[1]));
+        match self {
+            Item::Segment(seg) => sides(&[seg.from, seg.to]),
+            Item::Vector { from, to } => sides(&[*from, *to]),
+            Item::Dimension { from, to, offset } => {
+                let n = (*to - *from).normalize_or_zero().perp() * *offset;
+                sides(&[*from + n, *to + n])
+            }
+            Item::Polyline { points, closed } => {
+                sides(points);
+                if let (true, Some(a), Some(b)) = (*closed, points.last(), points.first()) {
+                    sides(&[*a, *b])
+                }
+            }
+            Item::Curve { points, closed } => sides(&curve::points(points, *closed, CURVE_CHORDS)),
+            _ => {}
         }
     }
 

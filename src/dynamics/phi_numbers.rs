@@ -5,7 +5,7 @@
 //! chords' mean ordinates stand between the positions, is numbered on the A diagram under
 //! it, as its axis carries the pole and the projections of its near-zero ordinates.
 
-use crate::construct::{Context, Figure, Item, Recorder, Role};
+use crate::construct::{Context, Figure, Item, Recorder, Role, HALF_BOX_MM};
 use crate::geom::DVec2;
 
 /// The note of the axes the numbers go on (`calculus::draw_axes`).
@@ -14,7 +14,7 @@ const AXIS_NOTE: &str = "abscissa axis φ";
 const POLE_NOTE: &str = "pole ";
 /// A number's middle stands this far from the axis, mm: half its box at the labels' 4,8 mm
 /// type and a millimetre's gap.
-const DROP_MM: f64 = 3.4;
+const DROP_MM: f64 = HALF_BOX_MM + 1.0;
 /// A number stands at most this far from its place, mm: under the axis's construction lines
 /// there (the chord method's near-zero projections), never flown into the diagram.
 const REACH_MM: f64 = 4.0;

@@ -233,25 +233,11 @@ fn room(a: DVec2, b: DVec2, drawn: &[(DVec2, DVec2)]) -> f64 {
 }
 
 /// The straight lines drawn on `rec`: links (segments and the sides of polylines), arrows,
-/// thin lines and the dimension lines of arms.
+/// thin lines and the dimension lines of arms ([`Item::straight_pieces`]).
 fn drawn_lines(rec: &Recorder) -> Vec<(DVec2, DVec2)> {
     let mut out = Vec::new();
     for s in rec.steps() {
-        match &s.item {
-            Item::Vector { from, to } => out.push((*from, *to)),
-            Item::Segment(seg) => out.push((seg.from, seg.to)),
-            Item::Dimension { from, to, offset } => {
-                let n = (*to - *from).normalize_or_zero().perp() * *offset;
-                out.push((*from + n, *to + n));
-            }
-            Item::Polyline { points, closed } => {
-                out.extend(points.windows(2).map(|w| (w[0], w[1])));
-                if let (true, Some(a), Some(b)) = (*closed, points.last(), points.first()) {
-                    out.push((*a, *b));
-                }
-            }
-            _ => {}
-        }
+        s.item.straight_pieces(|a, b| out.push((a, b)));
     }
     out
 }

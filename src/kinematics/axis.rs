@@ -3,8 +3,8 @@
 //! chords' steps crowd the axis, at its node on whichever side the drawing leaves clear.
 
 use crate::calculus::Diagram;
-use crate::construct::{Item, Recorder, Role, Step, DIGIT_MM, HALF_BOX_MM};
-use crate::geom::{curve, DVec2, Rect};
+use crate::construct::{Item, Recorder, Role, DIGIT_MM, HALF_BOX_MM};
+use crate::geom::{DVec2, Rect};
 use crate::scale::Scale;
 
 /// How far from a numbered position's mark an extreme's number on the φ axis must stand to
@@ -25,74 +25,88 @@ const NUMBER_CLEAR_MM: f64 = 1.0;
 const COLUMN_STEP_MM: f64 = 0.25;
 /// A number stands at most this far from the place found for it, mm (the placer's bound).
 const NUMBER_REACH_MM: f64 = 0.5;
-/// Chords of each piece of a smooth curve tried against a number's box.
-const CURVE_CHORDS: usize = 8;
 
-/// The positions' numbers at the φ axis at height `axis` (figure mm; at μ_φ `phi`) of a
-/// diagram `src` charted at the `numbered` positions, or of one derived from it, as on the
-/// plan of positions: each at its node, and the `extremes` between them (travel from
-/// position 1, rad; label) at theirs — under the axis too where one stands clear of the
-/// nodes, over it where it is too near one to stand beside it. On a derivative's axis
-/// (`curve`: its ordinates at the nodes, physical units, non-empty), each number stands at
-/// its node where no line of the drawing so far strikes it: on the side of the axis away from
-/// the curve there, else on the other, beside the node within half an interval; struck
-/// everywhere, where the least of the lines runs through it.
+/// The positions' numbers under the φ axis (at μ_φ `phi`) of a diagram `src` charted at the
+/// `numbered` positions, as on the plan of positions: each at its node, and the `extremes`
+/// between them (travel from position 1, rad; label) at theirs — under the axis too where
+/// one stands clear of the nodes, over it where it is too near one to stand beside it.
 pub(super) fn number_phi_axis(
     rec: &mut Recorder,
     (src, numbered): (&Diagram, &[(usize, &crate::linkage::PlanPosition)]),
     extremes: &[(f64, &String)],
-    (phi, axis, curve): (Scale, f64, &[f64]),
+    phi: Scale,
 ) {
     let nodes: Vec<f64> = (0..=numbered.len()).map(|idx| src.x(idx)).collect();
     let clear = |x: f64| (nodes.iter()).all(|n| phi.to_mm((x - n).abs()) >= AXIS_MARKS_APART_MM);
     let under = DVec2::new(0.0, -1.0);
-    // Each mark: its abscissa, its number, whether it is an extreme's, the curve there.
     let marks = (numbered.iter().enumerate())
-        .map(|(idx, (_, p))| (src.x(idx), &p.label, false, curve.get(idx)))
-        .chain(extremes.iter().map(|&(x, label)| (x, label, true, None)));
-    let column = (0.5 * phi.to_mm(src.dx) - NUMBER_CLEAR_MM).clamp(0.0, NUMBER_SIDE_MM);
-    let lines = drawn_lines(rec.steps());
-    let mut places = Vec::new();
-    for (x, label, extreme, y) in marks {
-        let at = DVec2::new(phi.to_mm(x), axis);
-        let place = y.map(|y| {
-            let away = if *y < 0.0 { 1.0 } else { -1.0 };
-            let width = DIGIT_MM * label.chars().count() as f64;
-            let middle = |side: f64, dx: f64, drop: f64| at + DVec2::new(dx, side * drop);
-            // The first place no line strikes, else the one they strike least.
-            let mut best: Option<(f64, DVec2)> = None;
-            for m in (NUMBER_DROPS_MM.into_iter())
-                .flat_map(|drop| [(away, drop), (-away, drop)])
-                .flat_map(|(side, drop)| beside(column).map(move |dx| middle(side, dx, drop)))
-            {
-                let ink = ink_in(&lines, m, width);
-                if best.is_none_or(|(b, _)| ink < b) {
-                    best = Some((ink, m));
-                }
-                if ink == 0.0 {
-                    break;
-                }
-            }
-            best.map_or(middle(away, 0.0, NUMBER_DROPS_MM[0]), |(_, m)| m)
-        });
-        places.push((at, label, x, extreme, place));
+        .map(|(idx, (_, p))| (src.x(idx), &p.label, under))
+        .chain(
+            (extremes.iter()).map(|&(x, label)| (x, label, if clear(x) { under } else { -under })),
+        );
+    for (x, label, toward) in marks {
+        let at = DVec2::new(phi.to_mm(x), 0.0);
+        let id = rec.draw(
+            format!("position {label} on the φ axis"),
+            Item::Text(at),
+            Role::Dimension,
+            &[],
+        );
+        rec.label(id, label.clone(), at, toward);
     }
-    for (at, label, x, extreme, place) in places {
-        let note = match place {
-            Some(_) => format!("position {label} on the derivative's φ axis"),
-            None => format!("position {label} on the φ axis"),
+}
+
+/// The positions' numbers on the φ axis at height `axis` (figure mm; at μ_φ `phi`) of the
+/// derivative of a diagram `src` charted at the `numbered` positions, whose pole's rays and
+/// chords' steps crowd the axis (`curve`: the derivative's ordinates at the nodes, physical
+/// units). Each number stands at its node where no line of the drawing so far strikes it: on
+/// the side of the axis away from the curve there, else on the other, beside the node within
+/// half an interval, a little further out; struck everywhere, where the least of the lines
+/// runs through it. Kept there: a number flown off among the steps names no node.
+pub(super) fn number_derivative_axis(
+    rec: &mut Recorder,
+    (src, numbered): (&Diagram, &[(usize, &crate::linkage::PlanPosition)]),
+    (phi, axis, curve): (Scale, f64, &[f64]),
+) {
+    let column = (0.5 * phi.to_mm(src.dx) - NUMBER_CLEAR_MM).clamp(0.0, NUMBER_SIDE_MM);
+    let mut lines = Vec::new();
+    for s in rec.steps() {
+        s.item.straight_pieces(|a, b| lines.push((a, b)));
+    }
+    for (idx, (_, p)) in numbered.iter().enumerate() {
+        let label = &p.label;
+        let at = DVec2::new(phi.to_mm(src.x(idx)), axis);
+        let away = if curve.get(idx).is_some_and(|y| *y < 0.0) {
+            1.0
+        } else {
+            -1.0
         };
-        let id = rec.draw(note, Item::Text(at), Role::Dimension, &[]);
-        match place {
-            // Centred at its place (the first the placer tries), kept there.
-            Some(m) => {
-                rec.label(id, label.clone(), m, DVec2::ZERO);
-                rec.keep_label_within(id, NUMBER_REACH_MM);
-                rec.keep_label_in_column(id, [NUMBER_REACH_MM; 2]);
+        let width = DIGIT_MM * label.chars().count() as f64;
+        // The first place no line strikes, else the one they strike least.
+        let mut best: Option<(f64, DVec2)> = None;
+        for m in (NUMBER_DROPS_MM.into_iter())
+            .flat_map(|drop| [away * drop, -away * drop])
+            .flat_map(|drop| beside(column).map(move |dx| at + DVec2::new(dx, drop)))
+        {
+            let ink = ink_in(&lines, m, width);
+            if best.is_none_or(|(b, _)| ink < b) {
+                best = Some((ink, m));
             }
-            None if !extreme || clear(x) => rec.label(id, label.clone(), at, under),
-            None => rec.label(id, label.clone(), at, -under),
+            if ink == 0.0 {
+                break;
+            }
         }
+        let m = best.map_or(at + DVec2::new(0.0, away * NUMBER_DROPS_MM[0]), |(_, m)| m);
+        let id = rec.draw(
+            format!("position {label} on the derivative's φ axis"),
+            Item::Text(at),
+            Role::Dimension,
+            &[],
+        );
+        // Centred at its place (the first the placer tries), kept there.
+        rec.label(id, label.clone(), m, DVec2::ZERO);
+        rec.keep_label_within(id, NUMBER_REACH_MM);
+        rec.keep_label_in_column(id, [NUMBER_REACH_MM; 2]);
     }
 }
 
@@ -106,37 +120,14 @@ fn beside(column: f64) -> impl Iterator<Item = f64> {
     })
 }
 
-/// The straight pieces of every line drawn on `steps` (segments, vectors, polylines, curves
-/// as drawn), figure mm.
-fn drawn_lines(steps: &[Step]) -> Vec<[DVec2; 2]> {
-    let mut out = Vec::new();
-    for s in steps {
-        let points = match &s.item {
-            Item::Segment(g) => vec![g.from, g.to],
-            Item::Vector { from, to } => vec![*from, *to],
-            Item::Polyline { points, closed } => {
-                let mut p = points.clone();
-                if *closed {
-                    p.extend(points.first());
-                }
-                p
-            }
-            Item::Curve { points, closed } => curve::points(points, *closed, CURVE_CHORDS),
-            _ => continue,
-        };
-        out.extend(points.windows(2).map(|w| [w[0], w[1]]));
-    }
-    out
-}
-
 /// How much of `lines` runs through the box of a number `width` mm wide centred at
 /// `middle`, grown by [`LINE_CLEAR_MM`], mm.
-fn ink_in(lines: &[[DVec2; 2]], middle: DVec2, width: f64) -> f64 {
+fn ink_in(lines: &[(DVec2, DVec2)], middle: DVec2, width: f64) -> f64 {
     let half = DVec2::new(0.5 * width, HALF_BOX_MM) + LINE_CLEAR_MM;
     let then = Rect::new(middle - half, middle + half);
     lines
         .iter()
-        .filter_map(|[a, b]| {
+        .filter_map(|(a, b)| {
             then.segment_inside(*a, *b)
                 .map(|(t0, t1)| (t1 - t0) * a.distance(*b))
         })

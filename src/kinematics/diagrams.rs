@@ -1,6 +1,7 @@
 //! The displacement diagram S(φ₁) of a point read off the plan of positions, differentiated
 //! twice graphically (chords, or tangents), and its rows against the analytic values.
 
+use super::axis::{number_derivative_axis, number_phi_axis};
 use super::{extent, numbered, pole_and_scale, turn_diagram, KinError, KinematicsSpec};
 use super::{DIAGRAM_GAP, DIAGRAM_MM};
 use crate::calculus::{self, Derivative, Diagram, DiagramLayout, Scales};
@@ -319,14 +320,9 @@ pub fn diagrams(
     // The positions' numbers under the S diagram's φ axis, as on the plan of positions, and
     // the extremes' between them; the derivative's axis carries the numbers alone.
     let extremes: Vec<(f64, &String)> = between.iter().map(|b| (b.travel, &b.label)).collect();
-    super::axis::number_phi_axis(
-        &mut rec1,
-        (&src, &numbered),
-        &extremes,
-        (scales.x, 0.0, &[]),
-    );
+    number_phi_axis(&mut rec1, (&src, &numbered), &extremes, scales.x);
     let at1 = (scales.x, lay1.origin.y, first.node.as_slice());
-    super::axis::number_phi_axis(&mut rec1, (&src, &numbered), &[], at1);
+    number_derivative_axis(&mut rec1, (&src, &numbered), at1);
     let scales2 = Scales {
         x: scales.x,
         y: mu1,
@@ -350,7 +346,7 @@ pub fn diagrams(
         .differentiate(&mut rec2, &d1, scales2, h2, &lay2)
         .map_err(|e| fail("d²S/dφ²", e))?;
     let at2 = (scales.x, lay2.origin.y, second.node.as_slice());
-    super::axis::number_phi_axis(&mut rec2, (&src, &numbered), &[], at2);
+    number_derivative_axis(&mut rec2, (&src, &numbered), at2);
     let (p0, dir) = twin_origin(plan, outputs, (k, dir));
     let rows = rows(
         (&numbered, &plan.program, plan.mechanism.crank.sense),

@@ -108,15 +108,9 @@ pub fn rocker_diagram(
     // The positions' numbers on the ω diagram's φ axis, as on the S diagram's, and on its
     // derivative's (the numbers alone).
     let extremes: Vec<(f64, &String)> = (between.iter()).map(|(_, x, p)| (*x, &p.label)).collect();
-    let number = super::axis::number_phi_axis;
-    number(
-        &mut rec,
-        (&src, &numbered),
-        &extremes,
-        (scale_phi, 0.0, &[]),
-    );
+    super::axis::number_phi_axis(&mut rec, (&src, &numbered), &extremes, scale_phi);
     let at = (scale_phi, lay.origin.y, derivative.node.as_slice());
-    number(&mut rec, (&src, &numbered), &[], at);
+    super::axis::number_derivative_axis(&mut rec, (&src, &numbered), at);
     let eps_scale = super::peak(numbered.iter().map(|(_, p)| p.pose.ddangle[link] * w1 * w1));
     let rows = numbered
         .iter()

@@ -194,11 +194,12 @@ pub(crate) fn force_units(f: &ForceSpec, lang: Lang) -> Vec<Vec<DataRow>> {
         units.push(unit);
     }
     for r in &f.resistances {
+        let (magnitude, unit) = match &r.action {
+            Action::Force { magnitude, .. } => (magnitude, "N"),
+            Action::Moment { magnitude, .. } => (magnitude, "N*m"),
+        };
         let symbol = r.action.symbol().into();
-        units.push(vec![match &r.action {
-            Action::Force { magnitude, .. } => (symbol, fmt(*magnitude, 5, lang), "N".into()),
-            Action::Moment { magnitude, .. } => (symbol, fmt(*magnitude, 5, lang), "N*m".into()),
-        }]);
+        units.push(vec![(symbol, fmt(*magnitude, 5, lang), unit.into())]);
     }
     for c in &f.indicators {
         let piston = plain(&c.point);

@@ -11,7 +11,7 @@
 use crate::cam::motion::Point;
 use crate::cam::CamSpec;
 use crate::construct::{Item, Recorder, Role, Step, DIGIT_MM, HALF_BOX_MM};
-use crate::geom::{curve, DVec2, Rect, Segment};
+use crate::geom::{DVec2, Rect, Segment};
 use crate::scale::Scale;
 
 /// The notes of the four phases' dimensions on the displacement diagram: rise, far dwell,
@@ -61,8 +61,6 @@ const NUMBER_CLEAR_MM: f64 = 1.0;
 const CROSSING_CLEAR_MM: f64 = 0.2;
 /// The places of a number in its column tried for [`CROSSING_CLEAR_MM`], this far apart, mm.
 const COLUMN_STEP_MM: f64 = 0.1;
-/// Chords of each piece of a smooth curve tried against a number's box.
-const CURVE_CHORDS: usize = 8;
 /// The phases' dimension line lies this far over the displacement diagram's top, mm: under
 /// the tip of its ordinate axis (12 mm over it), which is the first phase's extension line,
 /// and under the axis's name.
@@ -197,21 +195,19 @@ fn crossing_side(values: &[f64], i: usize, side: f64) -> f64 {
 /// bounds; `None` where the curve strikes it everywhere.
 fn clear_column(steps: &[Step], at: DVec2, width: f64, column: [f64; 2]) -> Option<[f64; 2]> {
     let half = DVec2::new(0.5 * width, HALF_BOX_MM) + CROSSING_CLEAR_MM;
-    let lines: Vec<Vec<DVec2>> = steps
+    let mut lines = Vec::new();
+    for s in steps
         .iter()
         .filter(|s| matches!(s.role, Role::Given | Role::Result))
-        .filter_map(|s| match &s.item {
-            Item::Polyline { points, .. } => Some(points.clone()),
-            // As drawn: smooth through its points.
-            Item::Curve { points, closed } => Some(curve::points(points, *closed, CURVE_CHORDS)),
-            _ => None,
-        })
-        .collect();
+    {
+        if matches!(s.item, Item::Polyline { .. } | Item::Curve { .. }) {
+            s.item.straight_pieces(|a, b| lines.push((a, b)));
+        }
+    }
     let clear = |x: f64| {
         let mid = at + DVec2::new(x, 0.0);
         let then = Rect::new(mid - half, mid + half);
-        let hits = |w: &[DVec2]| then.segment_inside(w[0], w[1]).is_some();
-        !lines.iter().any(|l| l.windows(2).any(hits))
+        !(lines.iter()).any(|&(a, b)| then.segment_inside(a, b).is_some())
     };
     let count = ((column[0] + column[1]) / COLUMN_STEP_MM).ceil() as usize;
     let places: Vec<(f64, bool)> = (0..=count)
