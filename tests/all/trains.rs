@@ -468,3 +468,50 @@ fn every_distribution_line_is_named_beside_itself_and_alone() {
     }
     assert!(named >= 20, "{named} lines");
 }
+
+/// How near a ring's axis a shaft passes through its hub (nested shafts), figure mm.
+const HUB_MM: f64 = 3.0;
+
+/// No shaft or satellite's axle of a train's scheme runs through a ring's disc between its
+/// hub and its rim: the shaper's axle 4–5, from satellite 4 to the carrier's arm, was drawn
+/// through the disc of ring 3, which it turns inside.
+#[test]
+fn no_axle_of_a_train_scheme_runs_through_a_ring_disc() {
+    use tmm::construct::Item;
+    let mut pierced = Vec::new();
+    for scene in ["gears-differential", "gears-pz2", "gears-pz2-ex1", "shaper"] {
+        let path = support::root().join(format!("constructions/{scene}.toml"));
+        let s = tmm::load(&path).expect("scene");
+        let session = tmm::Session::new(&s, tmm::Drafting::EXACT);
+        let plates =
+            tmm::sheets::build(&session, tmm::PlateKind::Gears, tmm::Lang::Ru).expect("plates");
+        let view = (plates.iter().flat_map(|p| &p.views))
+            .find(|v| v.figure.title == "velocity triangles")
+            .expect("the triangles");
+        let steps = &view.figure.steps;
+        let mut discs = 0;
+        for disc in steps.iter().filter(|s| s.note.ends_with("'s rim and cup")) {
+            let Item::Polyline { points, .. } = &disc.item else {
+                panic!("{scene}: {} is not a polyline", disc.note);
+            };
+            let [_, top, hub] = points[..] else {
+                panic!("{scene}: {} is not rim, disc", disc.note);
+            };
+            discs += 1;
+            let (lo, hi) = (top.y.min(hub.y), top.y.max(hub.y));
+            for shaft in steps.iter().filter(|s| s.note.starts_with("the shaft ")) {
+                let Item::Segment(seg) = &shaft.item else {
+                    continue;
+                };
+                let (a, b) = (seg.from.x.min(seg.to.x), seg.from.x.max(seg.to.x));
+                let y = seg.from.y;
+                let through_hub = (y - hub.y).abs() < HUB_MM;
+                if a < top.x && top.x < b && lo < y && y < hi && !through_hub {
+                    pierced.push(format!("{scene}: «{}» through «{}»", shaft.note, disc.note));
+                }
+            }
+        }
+        assert!(discs >= 1, "{scene}: no ring drawn");
+    }
+    assert!(pierced.is_empty(), "{pierced:#?}");
+}

@@ -9,11 +9,13 @@
 //! to the right, another's to the nearer side), so that no two supports, nor a support and a
 //! wheel, are drawn over each other.
 
+mod cups;
 mod names;
 
 use super::train::Train;
 use crate::construct::{Item, Recorder, Role};
 use crate::geom::{DVec2, Segment, Side};
+use cups::{runs_through_ring, set_cups};
 use names::name_rings_clear;
 
 /// Spacing of the planes of meshing wheels along the axes, mm.
@@ -69,13 +71,14 @@ struct Run {
 }
 
 /// A wheel as the scheme draws it: its plane's x, its axis's height, the heights of its
-/// poles, whether it is a ring, and where a ring's name stands: left of its cup (else
-/// right), and how far from the axis up the cup (a fraction of the way to its pole).
+/// poles, a ring's disc (how far from its plane it stands, signed: `None` for an external
+/// wheel), and where a ring's name stands: left of its cup (else right), and how far from
+/// the axis up the cup (a fraction of the way to its pole).
 struct WheelMark {
     x: f64,
     y: f64,
     ends: Vec<f64>,
-    internal: bool,
+    cup: Option<f64>,
     name_left: bool,
     name_up: f64,
 }
@@ -96,9 +99,9 @@ impl WheelMark {
     /// Where its name `z_i = N` is written: beside its line (a ring's cup), halfway to its
     /// farther pole.
     fn name_at(&self) -> DVec2 {
-        if self.internal {
+        if let Some(cup) = self.cup {
             let first = self.ends.first().copied().unwrap_or(self.y);
-            return DVec2::new(self.x + CUP_MM, self.y + self.name_up * (first - self.y));
+            return DVec2::new(self.x + cup, self.y + self.name_up * (first - self.y));
         }
         let (lo, hi) = self.extent();
         let top = if hi - self.y >= self.y - lo { hi } else { lo };
@@ -108,13 +111,11 @@ impl WheelMark {
     /// The boxes its lines and its name `name` take.
     fn rooms(&self, name: &str) -> Vec<Room> {
         let (lo, hi) = self.extent();
-        let right = if self.internal {
-            self.x + CUP_MM + 0.5
-        } else {
-            self.x + BAR_MM
-        };
+        let cup = self.cup.unwrap_or(0.0);
+        let left = self.x + cup.min(0.0) - if cup < 0.0 { 0.5 } else { BAR_MM };
+        let right = self.x + cup.max(0.0) + if cup > 0.0 { 0.5 } else { BAR_MM };
         vec![
-            (DVec2::new(self.x - BAR_MM, lo), DVec2::new(right, hi)),
+            (DVec2::new(left, lo), DVec2::new(right, hi)),
             self.name_room(name),
         ]
     }
@@ -186,13 +187,14 @@ pub(super) fn draw_scheme(
                 .filter(|(m, _)| m.0 == w || m.1 == w)
                 .map(|(_, p)| height(*p))
                 .collect(),
-            internal: wheel.internal,
+            cup: wheel.internal.then_some(CUP_MM),
             name_left: false,
             name_up: 0.5,
         })
         .collect();
     let arm = arm_x(train, &wheel_x);
-    let spans = spans(train, &wheel_x, arm);
+    set_cups(&mut marks, train, arm);
+    let spans = spans(train, &marks, arm);
     // The shafts as far as their wheels reach (run out to their supports later).
     let shafts: Vec<Room> = (spans.iter().zip(&drawn_y))
         .filter_map(|(span, &y)| {
@@ -209,7 +211,7 @@ pub(super) fn draw_scheme(
         .enumerate()
         .flat_map(|(w, m)| m.rooms(&wheel_name(train, w)))
         .collect();
-    let mut runs = runs(train, (&spans, &axis), &drawn_y, &mut taken);
+    let mut runs = runs(train, &marks, (&spans, &axis), &drawn_y, &mut taken);
     let edge = taken
         .iter()
         .map(|r| r.1.x)
@@ -239,10 +241,10 @@ fn draw_wheel(rec: &mut Recorder, train: &Train, w: usize, mark: &WheelMark) {
         return;
     }
     let name = wheel_name(train, w);
-    if mark.internal {
+    if let Some(cup) = mark.cup {
         // A ring: its rim at the poles in the plane, its disc a cup set off the plane (so
         // that the wheels inside it are not drawn over it).
-        let cup = x + CUP_MM;
+        let cup = x + cup;
         let mut id = None;
         for &end in &mark.ends {
             let rim = rec.draw(
@@ -310,20 +312,14 @@ fn arm_x(train: &Train, wheel_x: &[f64]) -> Option<f64> {
 /// What each shaft holds along the axes, from its leftmost to its rightmost: its wheels'
 /// planes, a ring's cup, the carrier's arm, each with the stub the shaft runs past it (past a
 /// wheel; none past a cup or an arm, where the shaft ends) (`None`: nothing).
-fn spans(train: &Train, wheel_x: &[f64], arm: Option<f64>) -> Vec<Option<Span>> {
+fn spans(train: &Train, marks: &[WheelMark], arm: Option<f64>) -> Vec<Option<Span>> {
     (0..train.shafts.len())
         .map(|k| {
-            let mut xs: Vec<(f64, f64)> = train
-                .wheels
-                .iter()
-                .enumerate()
-                .filter(|(_, w)| w.shaft == k)
-                .map(|(i, w)| {
-                    if w.internal {
-                        (wheel_x[i] + CUP_MM, 0.0)
-                    } else {
-                        (wheel_x[i], SHAFT_END_MM)
-                    }
+            let mut xs: Vec<(f64, f64)> = (train.wheels.iter().zip(marks))
+                .filter(|(w, _)| w.shaft == k)
+                .map(|(_, m)| match m.cup {
+                    Some(cup) => (m.x + cup, 0.0),
+                    None => (m.x, SHAFT_END_MM),
                 })
                 .collect();
             if train.carrier == Some(k) {
@@ -352,12 +348,14 @@ fn support_room(at: DVec2, name: &str) -> Room {
 
 /// Each shaft's run: a satellite's axle from its wheels to the carrier's arm; a shaft on the
 /// frame from its wheels out to its support on its side — the input's left, the output's
-/// right, another's on the side where it holds nearer the end of its axis's wheels — run out
+/// right, another's on the side where it holds nearer the end of its axis's wheels; the other
+/// side where that one would run through the disc of another shaft's ring (`marks`) — run out
 /// until its support and name are clear of every wheel and support already drawn (`taken`,
 /// which it joins). The shafts of one axis and side are run out outermost first, so that each
 /// inner shaft passes through the ones around it.
 fn runs(
     train: &Train,
+    marks: &[WheelMark],
     (spans, axis): (&[Option<Span>], &[usize]),
     drawn_y: &[f64],
     taken: &mut Vec<Room>,
@@ -375,12 +373,22 @@ fn runs(
     };
     let side = |k: usize, span: Span| -> f64 {
         let (a, b) = axis_of(k);
-        if k == train.input {
+        let s = if k == train.input {
             -1.0
         } else if k == train.output || b - span.hi < span.lo - a {
             1.0
         } else {
             -1.0
+        };
+        // Never out through another shaft's ring.
+        let pierces = |s: f64| {
+            let beyond = |x: f64| if s > 0.0 { x > span.hi } else { x < span.lo };
+            runs_through_ring(train, marks, k, drawn_y[k], beyond)
+        };
+        if pierces(s) && !pierces(-s) {
+            -s
+        } else {
+            s
         }
     };
     let mut order: Vec<(usize, f64, f64)> = Vec::new();

@@ -1,7 +1,7 @@
 //! Where a ring's name goes on the scheme: beside its cup, clear of the other wheels' lines
 //! and of the shafts.
 
-use super::{overlaps, wheel_name, Room, WheelMark, BAR_MM, CUP_MM};
+use super::{overlaps, wheel_name, Room, WheelMark, BAR_MM};
 use crate::gears::train::Train;
 use crate::geom::DVec2;
 
@@ -28,12 +28,12 @@ pub(super) fn name_rings_clear(marks: &mut [WheelMark], train: &Train, shafts: &
         .iter()
         .map(|m| {
             let (lo, hi) = m.extent();
-            let x = if m.internal { m.x + CUP_MM } else { m.x };
+            let x = m.x + m.cup.unwrap_or(0.0);
             (DVec2::new(x - BAR_MM, lo), DVec2::new(x + BAR_MM, hi))
         })
         .collect();
     for (w, mark) in marks.iter_mut().enumerate() {
-        if !mark.internal {
+        if mark.cup.is_none() {
             continue;
         }
         let name = wheel_name(train, w);
