@@ -65,7 +65,8 @@ impl Work<'_, '_> {
     }
 
     /// RRR: F^τ of each outer reaction from its link's moments about B; the polygon closed by
-    /// lines ∥ CB and ∥ AB; the inner reaction from the end of i's loads to the closing point.
+    /// lines ∥ CB and ∥ AB; the inner reaction R_{i-j} (link i's on link j, as the tables name
+    /// it) from the closing point to the end of i's loads, closing link j's polygon.
     fn rrr(
         self,
         a: usize,
@@ -95,11 +96,11 @@ impl Work<'_, '_> {
         let h = pol.close(("∥ CB", e, pb - pc), ("∥ AB", p0, pb - pa))?;
         let r_a = pol.read(&reaction_name(oa, i), h, p1);
         let r_c = pol.read(&reaction_name(oc, j), pbj, h);
-        let r_ji = pol.read(&reaction_name(j, i), pi, h);
+        let r_ij = pol.read(&reaction_name(i, j), h, pi);
         Ok(vec![
             revolute(oa, i, a, r_a),
             revolute(oc, j, c, r_c),
-            revolute(i, j, joint, -r_ji),
+            revolute(i, j, joint, r_ij),
         ])
     }
 
@@ -129,7 +130,7 @@ impl Work<'_, '_> {
         let h = pol.close(("⊥ guide", e, n_g), ("∥ AB", p0, pb - pa))?;
         let r_a = pol.read(&reaction_name(oa, i), h, p1);
         let r_g = pol.read(&reaction_name(og, j), e, h);
-        let r_ji = pol.read(&reaction_name(j, i), pi, h);
+        let r_ij = pol.read(&reaction_name(i, j), h, pi);
         sch.drain();
         let k = sch.moments(mj, lj);
         let s = offset(r_g, n_g, k, scale);
@@ -137,7 +138,7 @@ impl Work<'_, '_> {
         Ok(vec![
             revolute(oa, i, a, r_a),
             prismatic(og, j, joint, j, r_g, s),
-            revolute(i, j, joint, -r_ji),
+            revolute(i, j, joint, r_ij),
         ])
     }
 
@@ -173,10 +174,9 @@ impl Work<'_, '_> {
             Role::Construction,
             &[],
         );
-        let r_ji = pol.read(&reaction_name(j, i), pi, q);
+        let r_ij = pol.read(&reaction_name(i, j), q, pi);
         let r_oj = pol.read(&reaction_name(oc, j), pj, q);
         let r_oi = pol.read(&reaction_name(oa, i), q, p0);
-        let r_ij = -r_ji;
         Ok(vec![
             revolute(oa, i, a, r_oi),
             revolute(oc, j, c, r_oj),
@@ -201,7 +201,7 @@ impl Work<'_, '_> {
         let h = pol.close(("⊥ guide j", e, n_j), ("⊥ guide i", p0, n_i))?;
         let r_j = pol.read(&reaction_name(cj, j), e, h);
         let r_i = pol.read(&reaction_name(ci, i), h, p0);
-        let r_ji = pol.read(&reaction_name(j, i), pi, h);
+        let r_ij = pol.read(&reaction_name(i, j), h, pi);
         sch.drain();
         let k_i = sch.moments(mi, li);
         let s_i = offset(r_i, n_i, k_i, scale);
@@ -212,7 +212,7 @@ impl Work<'_, '_> {
         Ok(vec![
             prismatic(ci, i, joint, i, r_i, s_i),
             prismatic(cj, j, joint, j, r_j, s_j),
-            revolute(i, j, joint, -r_ji),
+            revolute(i, j, joint, r_ij),
         ])
     }
 
