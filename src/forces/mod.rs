@@ -42,8 +42,8 @@ pub use loads::{
 pub use pair_friction::{friction_loads, PairFriction, PairMotion};
 pub(crate) use polygons::predicted as predicted_drawings;
 pub use polygons::{
-    letter_at, letter_toward, DriverPolygon, GroupPolygon, MomentEquation, MomentTerm,
-    PolygonDetail, Polygons, Unknown,
+    letter_at, letter_toward, reaction_name, DriverPolygon, GroupPolygon, MomentEquation,
+    MomentTerm, PolygonDetail, Polygons, Unknown,
 };
 pub use rows::notes;
 use rows::{reaction_rows, row, rows, zero_references};

@@ -500,3 +500,26 @@ fn a_resting_resistance_is_said_to_be_nought() {
         assert_eq!(said, [false, true], "{lang:?}: «{want}» on positions 3, 10");
     }
 }
+
+/// Issue 45: a polygon names each reaction it reads as the table and the report name it —
+/// the force of the first-named link on the second — on the polygon or on its details: the
+/// V engine's polygon 4–5 named R₅₋₄ what its table lists as R₄₋₅.
+#[test]
+fn a_polygon_names_each_reaction_as_the_table_does() {
+    let mut named = 0;
+    each_group(|at, g| {
+        let shown: Vec<&str> = std::iter::once(&g.polygon)
+            .chain(g.details.iter().map(|d| &d.figure))
+            .flat_map(|f| labelled(f).into_iter().map(|(text, _)| text))
+            .collect();
+        for r in g.reactions.iter().filter(|r| r.force.length() > 0.0) {
+            let name = tmm::forces::reaction_name(r.pair.from, r.pair.to);
+            assert!(
+                shown.contains(&name.as_str()),
+                "{at}: {name} not among {shown:?}"
+            );
+            named += 1;
+        }
+    });
+    assert!(named >= 12, "{named} reactions named");
+}
