@@ -262,11 +262,14 @@ pub fn position_indices(
 /// working stroke (`work_travel` of crank, when the output has extremes) and one in the
 /// middle of the return — the nearest to them that is not an extreme position nor one of
 /// `avoid` (the positions whose plans take a μ of their own, `kinematics.own_scale`: near a
-/// singular position, where the crank pin's acceleration is a dot beside the others).
+/// singular position, where the crank pin's acceleration is a dot beside the others), nor
+/// one that `alike` finds in the configuration of one chosen already (the tangent
+/// mechanism's block on the crank's line stands where it stood half a turn before).
 pub fn acceleration_indices(
     labels: &[(&str, bool)],
     work_travel: Option<f64>,
     (asked, avoid): (Option<&[String]>, &[usize]),
+    alike: impl Fn(usize, usize) -> bool,
 ) -> Result<Vec<usize>, KinError> {
     if let Some(asked) = asked {
         return position_indices(labels, asked, "acceleration_positions");
@@ -283,6 +286,7 @@ pub fn acceleration_indices(
     for target in [work / 2.0, work + (TAU - work) / 2.0] {
         let best = (0..labels.len())
             .filter(|&k| !labels[k].1 && !avoid.contains(&k))
+            .filter(|&k| !out.iter().any(|&o| alike(o, k)))
             .min_by(|&a, &b| angular(travel(a), target).total_cmp(&angular(travel(b), target)));
         if let Some(k) = best.filter(|k| !out.contains(k)) {
             out.push(k);

@@ -228,6 +228,7 @@ impl<'s> Session<'s> {
             &labels,
             poses.extremes.as_ref().map(|ex| ex.work_travel),
             (asked, &own),
+            |a, b| same_configuration(&poses, a, b),
         )?)
     }
 
@@ -385,6 +386,17 @@ impl<'s> Session<'s> {
 }
 
 /// Each position's label and whether it is an extreme one, in the plan's order.
+/// Whether positions `a` and `b` show the mechanism in one configuration: every point off
+/// the crank where it was (to 1e-9 of the mechanism's size), the crank alone turned.
+fn same_configuration(poses: &PlanPoses, a: usize, b: usize) -> bool {
+    let (pa, pb) = (&poses.positions[a].pose.p, &poses.positions[b].pose.p);
+    let size = pa.iter().map(|p| p.length()).fold(0.0, f64::max);
+    let crank = poses.program.crank_link as usize;
+    (0..pa.len())
+        .filter(|&k| poses.program.owner(k) != crank)
+        .all(|k| pa[k].distance(pb[k]) <= 1e-9 * size)
+}
+
 fn position_labels(poses: &PlanPoses) -> Vec<(&str, bool)> {
     poses
         .positions

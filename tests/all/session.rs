@@ -340,3 +340,34 @@ fn an_acceleration_plan_takes_a_scale_of_its_own() {
         "{err}"
     );
 }
+
+/// The two acceleration plans a scene gets by default show the mechanism in two different
+/// configurations: the tangent mechanism's plans at 5 and 11 (half a turn apart) drew its
+/// block where it stood, on the crank's one line, with the same accelerations.
+#[test]
+fn the_default_acceleration_plans_show_two_configurations() {
+    for stem in ["tangent", "four-bar"] {
+        let s = scene::load(&root().join(format!("constructions/{stem}.toml"))).expect("scene");
+        let session = Session::new(&s, Drafting::EXACT);
+        let poses = session.poses().expect("poses");
+        let ks = session.acceleration_positions().expect("positions");
+        assert_eq!(ks.len(), 2, "{stem}: {ks:?}");
+        let (a, b) = (
+            &poses.positions[ks[0]].pose.p,
+            &poses.positions[ks[1]].pose.p,
+        );
+        let apart = a
+            .iter()
+            .zip(b)
+            .map(|(p, q)| p.distance(*q))
+            .fold(0.0, f64::max);
+        // A point off the crank (link 1) moves by more than a millimetre between the two.
+        let crank_pin_only = (0..a.len())
+            .filter(|&k| a[k].distance(b[k]) > 1e-3)
+            .all(|k| poses.program.owner(k) == 1);
+        assert!(
+            apart > 1e-3 && !crank_pin_only,
+            "{stem}: plans at {ks:?} alike"
+        );
+    }
+}
