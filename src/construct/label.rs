@@ -6,7 +6,7 @@
 //! place are two labels, never `R₁₋₂ ≡ R₂₋₃` (issue 45).
 
 use super::item::Item;
-use crate::geom::DVec2;
+use crate::geom::{DVec2, Rect};
 
 /// A digit of a number written as a label is about this wide at the labels' type (4,8 mm
 /// boxes), sheet mm: what a drawing reserves for a number it places itself (a diagram's
@@ -14,6 +14,20 @@ use crate::geom::DVec2;
 pub const DIGIT_MM: f64 = 3.1;
 /// Half a label's box across its line at the labels' type, sheet mm.
 pub const HALF_BOX_MM: f64 = 2.4;
+/// A number a drawing places beside its point on an axis stands at most this far across from
+/// it, sheet mm, and on each side at most half the way to the next point less
+/// [`NUMBER_CLEAR_MM`]: nearer its own point than the next.
+pub const NUMBER_SIDE_MM: f64 = 3.0;
+/// See [`NUMBER_SIDE_MM`], sheet mm.
+pub const NUMBER_CLEAR_MM: f64 = 1.0;
+
+/// The box a number `text` written as a label centred at `middle` takes, grown by `clear`
+/// each way, mm: what a drawing tests against its lines before it writes the number there.
+pub fn number_box(middle: DVec2, text: &str, clear: f64) -> Rect {
+    let width = DIGIT_MM * text.chars().count() as f64;
+    let half = DVec2::new(0.5 * width, HALF_BOX_MM) + clear;
+    Rect::new(middle - half, middle + half)
+}
 
 /// A label's anchor this close to a point of its item is at that point, mm (figure mm: the
 /// anchor is computed from the same numbers as the point, so only rounding parts them).

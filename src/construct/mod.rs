@@ -32,6 +32,6 @@ pub use drafting::{Drafting, Measured};
 pub use error::ConstructionError;
 pub use figure::{Figure, Role, Step, StepId};
 pub use item::{Item, DIMENSION_TEXT_ROOM_MM, THIN_HEAD_MM};
-pub use label::{Label, Names, DIGIT_MM, HALF_BOX_MM};
+pub use label::{number_box, Label, Names, DIGIT_MM, HALF_BOX_MM, NUMBER_CLEAR_MM, NUMBER_SIDE_MM};
 pub use reading::Reading;
 pub use recorder::Recorder;

@@ -3,8 +3,9 @@
 //! chords' steps crowd the axis, at its node on whichever side the drawing leaves clear.
 
 use crate::calculus::Diagram;
-use crate::construct::{Item, Recorder, Role, DIGIT_MM, HALF_BOX_MM};
-use crate::geom::{DVec2, Rect};
+use crate::construct::{number_box, Item, Recorder, Role, HALF_BOX_MM};
+use crate::construct::{NUMBER_CLEAR_MM, NUMBER_SIDE_MM};
+use crate::geom::DVec2;
 use crate::scale::Scale;
 
 /// How far from a numbered position's mark an extreme's number on the φ axis must stand to
@@ -16,11 +17,6 @@ const AXIS_MARKS_APART_MM: f64 = 5.0;
 const NUMBER_DROPS_MM: [f64; 3] = [HALF_BOX_MM + 1.0, HALF_BOX_MM + 2.2, HALF_BOX_MM + 3.4];
 /// A number stands this clear of every line of the drawing, mm.
 const LINE_CLEAR_MM: f64 = 0.2;
-/// A number's middle stands at most this far beside its node, mm, and half an interval less
-/// [`NUMBER_CLEAR_MM`] where the nodes stand nearer: nearer its own node than the next.
-const NUMBER_SIDE_MM: f64 = 3.0;
-/// See [`NUMBER_SIDE_MM`], mm.
-const NUMBER_CLEAR_MM: f64 = 1.0;
 /// The places beside its node tried for a number, this far apart, mm.
 const COLUMN_STEP_MM: f64 = 0.25;
 /// A number stands at most this far from the place found for it, mm (the placer's bound).
@@ -81,14 +77,13 @@ pub(super) fn number_derivative_axis(
         } else {
             -1.0
         };
-        let width = DIGIT_MM * label.chars().count() as f64;
         // The first place no line strikes, else the one they strike least.
         let mut best: Option<(f64, DVec2)> = None;
         for m in (NUMBER_DROPS_MM.into_iter())
             .flat_map(|drop| [away * drop, -away * drop])
             .flat_map(|drop| beside(column).map(move |dx| at + DVec2::new(dx, drop)))
         {
-            let ink = ink_in(&lines, m, width);
+            let ink = ink_in(&lines, m, label);
             if best.is_none_or(|(b, _)| ink < b) {
                 best = Some((ink, m));
             }
@@ -120,11 +115,10 @@ fn beside(column: f64) -> impl Iterator<Item = f64> {
     })
 }
 
-/// How much of `lines` runs through the box of a number `width` mm wide centred at
-/// `middle`, grown by [`LINE_CLEAR_MM`], mm.
-fn ink_in(lines: &[(DVec2, DVec2)], middle: DVec2, width: f64) -> f64 {
-    let half = DVec2::new(0.5 * width, HALF_BOX_MM) + LINE_CLEAR_MM;
-    let then = Rect::new(middle - half, middle + half);
+/// How much of `lines` runs through the box of the number `label` centred at `middle`,
+/// grown by [`LINE_CLEAR_MM`], mm.
+fn ink_in(lines: &[(DVec2, DVec2)], middle: DVec2, label: &str) -> f64 {
+    let then = number_box(middle, label, LINE_CLEAR_MM);
     lines
         .iter()
         .filter_map(|(a, b)| {

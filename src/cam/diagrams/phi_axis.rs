@@ -10,8 +10,9 @@
 
 use crate::cam::motion::Point;
 use crate::cam::CamSpec;
-use crate::construct::{Item, Recorder, Role, Step, DIGIT_MM, HALF_BOX_MM};
-use crate::geom::{DVec2, Rect, Segment};
+use crate::construct::{number_box, Item, Recorder, Role, Step, DIGIT_MM, HALF_BOX_MM};
+use crate::construct::{NUMBER_CLEAR_MM, NUMBER_SIDE_MM};
+use crate::geom::{DVec2, Segment};
 use crate::scale::Scale;
 
 /// The notes of the four phases' dimensions on the displacement diagram: rise, far dwell,
@@ -50,12 +51,8 @@ const NUMBER_REACH_MM: f64 = 1.5;
 /// mm, and at most [`NUMBER_SIDE_MM`]: on each side as far as keeps it [`NUMBER_CLEAR_MM`]
 /// nearer its point than the next point's on that side (they stand 4 mm apart and more), so
 /// that a number the curve or a construction line crosses stands clear of it beside its
-/// point, not beside the next one.
+/// point, not beside the next one (the first number of an axis clear of the ordinate axis).
 const NUMBER_COLUMN_MM: f64 = 1.0;
-/// See [`NUMBER_COLUMN_MM`], mm: the first number of an axis clear of the ordinate axis.
-const NUMBER_SIDE_MM: f64 = 3.0;
-/// See [`NUMBER_COLUMN_MM`], mm.
-const NUMBER_CLEAR_MM: f64 = 1.0;
 /// A number beside a crossing of its axis stands at least this clear of the curve there, mm:
 /// nearer, the curve strikes it.
 const CROSSING_CLEAR_MM: f64 = 0.2;
@@ -141,12 +138,11 @@ pub(super) fn mark(
             side_room(n.checked_sub(1).and_then(|k| xs.get(k))),
             side_room(xs.get(n + 1)),
         ];
-        let width = DIGIT_MM * p.label.chars().count() as f64;
         // At a crossing, where the curve leaves it room.
         let column = if clear == 0.0 {
             Some(column)
         } else {
-            clear_column(rec.steps(), at, width, column)
+            clear_column(rec.steps(), at, &p.label, column)
         };
         let Some(column) = column else {
             // A steep curve would strike the number wherever its column lets it stand, and
@@ -189,12 +185,11 @@ fn crossing_side(values: &[f64], i: usize, side: f64) -> f64 {
 }
 
 /// The places in its column where a main line of `steps` (the diagram's curve, given or
-/// constructed) passes clear of the box of a number `width` mm wide written at `at`, grown
-/// by [`CROSSING_CLEAR_MM`]: the run of its middle's offsets from `at` (figure mm, in
+/// constructed) passes clear of the box of the number `label` written at `at`, grown by
+/// [`CROSSING_CLEAR_MM`]: the run of its middle's offsets from `at` (figure mm, in
 /// [`COLUMN_STEP_MM`]) nearest `at` within `column` (mm left and right), as the column's
 /// bounds; `None` where the curve strikes it everywhere.
-fn clear_column(steps: &[Step], at: DVec2, width: f64, column: [f64; 2]) -> Option<[f64; 2]> {
-    let half = DVec2::new(0.5 * width, HALF_BOX_MM) + CROSSING_CLEAR_MM;
+fn clear_column(steps: &[Step], at: DVec2, label: &str, column: [f64; 2]) -> Option<[f64; 2]> {
     let mut lines = Vec::new();
     for s in steps
         .iter()
@@ -205,8 +200,7 @@ fn clear_column(steps: &[Step], at: DVec2, width: f64, column: [f64; 2]) -> Opti
         }
     }
     let clear = |x: f64| {
-        let mid = at + DVec2::new(x, 0.0);
-        let then = Rect::new(mid - half, mid + half);
+        let then = number_box(at + DVec2::new(x, 0.0), label, CROSSING_CLEAR_MM);
         !(lines.iter()).any(|&(a, b)| then.segment_inside(a, b).is_some())
     };
     let count = ((column[0] + column[1]) / COLUMN_STEP_MM).ceil() as usize;

@@ -30,28 +30,26 @@ pub(super) fn runs_through_ring(
 /// Each ring's disc set on the side of its plane that no other shaft runs through: the right,
 /// else the left; the right where both are crossed. A shaft reaches from its external wheels'
 /// planes to the carrier's arm, for the carrier and for the satellites' axles that run to it
-/// (`arm`).
-pub(super) fn set_cups(marks: &mut [WheelMark], train: &Train, arm: Option<f64>) {
-    let reach: Vec<Option<(f64, f64, f64)>> = (0..train.shafts.len())
+/// (`arm`); each at its drawn height (`drawn_y`).
+pub(super) fn set_cups(marks: &mut [WheelMark], train: &Train, arm: Option<f64>, drawn_y: &[f64]) {
+    let reach: Vec<(f64, f64)> = (0..train.shafts.len())
         .map(|k| {
-            let on = (train.wheels.iter().zip(marks.iter())).filter(|(w, _)| w.shaft == k);
-            let y = on.clone().next()?.1.y;
             let to_arm = train.carrier == Some(k) || train.is_satellite(k);
-            let xs = (on.filter(|(_, m)| m.cup.is_none()).map(|(_, m)| m.x))
-                .chain(arm.filter(|_| to_arm));
-            let (lo, hi) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
-                (l.min(x), h.max(x))
-            });
-            Some((y, lo, hi))
+            (train.wheels.iter().zip(marks.iter()))
+                .filter(|(w, m)| w.shaft == k && m.cup.is_none())
+                .map(|(_, m)| m.x)
+                .chain(arm.filter(|_| to_arm))
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+                    (l.min(x), h.max(x))
+                })
         })
         .collect();
     for (w, mark) in marks.iter_mut().enumerate() {
         let Some(cup) = mark.cup else { continue };
         let crossed = |cup: f64| {
-            (reach.iter().enumerate())
+            (reach.iter().zip(drawn_y).enumerate())
                 .filter(|(k, _)| *k != train.wheels[w].shaft)
-                .filter_map(|(_, r)| *r)
-                .any(|(y, a, b)| crosses(mark, cup, y, |x| a < x && x < b))
+                .any(|(_, (&(a, b), &y))| crosses(mark, cup, y, |x| a < x && x < b))
         };
         if crossed(cup) && !crossed(-cup) {
             mark.cup = Some(-cup);

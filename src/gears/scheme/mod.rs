@@ -193,7 +193,7 @@ pub(super) fn draw_scheme(
         })
         .collect();
     let arm = arm_x(train, &wheel_x);
-    set_cups(&mut marks, train, arm);
+    set_cups(&mut marks, train, arm, &drawn_y);
     let spans = spans(train, &marks, arm);
     // The shafts as far as their wheels reach (run out to their supports later).
     let shafts: Vec<Room> = (spans.iter().zip(&drawn_y))
