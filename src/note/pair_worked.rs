@@ -155,6 +155,13 @@ fn operating(w: &mut Writer<'_, '_>, p: &GearPair, f: &Nums) {
             .gives_by(Key::of_scene(Symbol::EqualisingShift, ""), Method::Formula),
         );
         w.explain(&[("Δy", M::EqualisingShift.get(lang), "")]);
+    } else {
+        let plain = |x: f64| crate::scale::format_sig(x, 5, lang);
+        w.doc.say(
+            &w.word(T::TableShift)
+                .replace("{dy}", &plain(p.dy))
+                .replace("{exact}", &plain(spec.x_sum() - p.y)),
+        );
     }
     w.worked(
         Worked::new(

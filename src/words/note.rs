@@ -319,6 +319,11 @@ catalogue! {
             "The geometry of the pair (lengths in mm):"
         ),
         WheelWord => ("Колесо", "Колесо", "Wheel"),
+        TableShift => (
+            "Коэффициент уравнительного смещения принят по таблицам: Δy = {dy} (по формуле Δy = x_{1} + x_{2} − y = {exact}); радиусы вершин считаем с ним.",
+            "Коефіцієнт зрівняльного зміщення взято за таблицями: Δy = {dy} (за формулою Δy = x_{1} + x_{2} − y = {exact}); радіуси вершин рахуємо з ним.",
+            "The equalising shift is taken from the tables: Δy = {dy} (by the formula Δy = x_{1} + x_{2} − y = {exact}); the tip radii are worked with it."
+        ),
         ContactRatioWorked => (
             "Коэффициент перекрытия по формуле:",
             "Коефіцієнт перекриття за формулою:",

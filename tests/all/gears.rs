@@ -57,7 +57,7 @@ fn seed000_pair_rack_and_reducer_in_the_report() {
 }
 
 /// Every parameter seed 000 §4.3 lists has its row, held to the exact values (seed 000 cases
-/// §000.13); the seed's base radii r·cos α_w (81,38 and 187,8 mm) are flagged, not
+/// §000.13) or, where the pair takes the table's Δy = 0,18 (r_a, h), to the seed's; the seed's base radii r·cos α_w (81,38 and 187,8 mm) are flagged, not
 /// matched; the pinion of the pair cut with x = 0,8 on the blank shortened by Δy = 0,18
 /// (§4.4.2) keeps a tip, s_a > 0, its drawn s_a equal to the pair's.
 #[test]
@@ -65,7 +65,6 @@ fn seed000_pairs_every_parameter_and_the_shortened_cutting() {
     let v = report_json("constructions/shaper.toml", "0");
     let exact = [
         ("y", 1.09117, 5e-6),
-        ("dy", 0.17983, 5e-6),
         ("u_12", 2.30769, 5e-6),
         ("p", 0.043982, 5e-7),
         ("p_b", 0.041330, 5e-7),
@@ -73,12 +72,10 @@ fn seed000_pairs_every_parameter_and_the_shortened_cutting() {
         ("r_2", 0.210, 1e-12),
         ("r_b1", 0.085512, 5e-7),
         ("r_b2", 0.197335, 5e-7),
-        ("r_f1", 0.084700, 5e-7),
-        ("r_f2", 0.199094, 5e-7),
         ("s_1", 0.030144, 5e-7),
         ("s_2", 0.026791, 5e-7),
-        ("h_1", 0.028982, 5e-7),
-        ("h_2", 0.028982, 5e-7),
+        ("h_1", 0.028980, 5e-7),
+        ("h_2", 0.028980, 5e-7),
     ];
     for (q, want, tol) in exact {
         let r = row(&v, q, "formula");
@@ -90,9 +87,24 @@ fn seed000_pairs_every_parameter_and_the_shortened_cutting() {
             );
         }
     }
+    // r_f = r − (h_a* + c* − x)m; its check a_w − r_a(mate) − c*m carries the table's Δy
+    // against the exact: (0,18 − 0,17983)m = 2,4 µm.
+    for (q, want) in [("r_f1", 0.084700), ("r_f2", 0.199094)] {
+        let r = row(&v, q, "formula");
+        assert!((num(r, "graphical") - want).abs() < 5e-7, "{q}");
+        let off = num(r, "analytic") - want;
+        assert!((off - (0.18 - 0.17983) * 0.014).abs() < 5e-7, "{q}: {off}");
+    }
+    // The pair takes the seed's table Δy = 0,18 (the exact 0,17983 beside it), and with it
+    // r_a1 = r_f1 + (2h_a* − Δy + c*)m = 113,68 mm, as the seed's table.
+    let dy = row(&v, "dy", "formula");
+    assert_eq!(num(dy, "graphical"), 0.18);
+    assert!((num(dy, "analytic") - 0.17983).abs() < 5e-6);
+    let ra1 = num(row(&v, "r_a1", "formula"), "graphical");
+    assert!((ra1 - 0.11368).abs() < 5e-7, "{ra1}");
     // α_a = arccos(r_b/r_a) on both routes.
     let aa = row(&v, "alpha_a1", "formula");
-    assert!((num(aa, "graphical") - (0.085512 / 0.113682f64).acos().to_degrees()).abs() < 1e-3);
+    assert!((num(aa, "graphical") - (0.085512 / 0.11368f64).acos().to_degrees()).abs() < 1e-4);
     // The seed's r_b = r·cos α_w is not produced, and its erratum says so.
     for q in ["r_b1", "r_b2"] {
         let got = num(row(&v, q, "formula"), "graphical");
@@ -116,6 +128,12 @@ fn seed000_pairs_every_parameter_and_the_shortened_cutting() {
     let alpha_a = (r * alpha.cos() / ra).acos();
     let want = 2.0 * ra * (s / (2.0 * r) + inv(alpha) - inv(alpha_a));
     assert!(sa > 0.0 && (sa - want).abs() < 1e-9, "{sa} against {want}");
+    // The pair's table gives the tip the cut pinion has: one Δy on the sheet.
+    let pair = num(row(&v, "s_a1", "formula"), "graphical");
+    assert!(
+        (pair - sa).abs() < 1e-9,
+        "the pair's s_a1 {pair} against the cut {sa}"
+    );
     let full = r + (1.0 + x) * m;
     let at_full = 2.0 * full * (s / (2.0 * r) + inv(alpha) - inv((r * alpha.cos() / full).acos()));
     assert!(

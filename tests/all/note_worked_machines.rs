@@ -301,3 +301,25 @@ fn the_cams_scales_are_explained_as_the_cams() {
         1
     );
 }
+
+/// A pair given the table's Δy (`[gears.pair] dy`: the shaper's 0,18, PZ3's 0,16) says in its
+/// chain that Δy was taken from the tables, beside the formula's x₁ + x₂ − y, and works the
+/// tip radius with it: seed 000's r_a1 = 91 + (1 + 0,8 − 0,18)·14 = 113,68 mm.
+#[test]
+fn a_pair_on_the_tables_equalising_shift_says_so_in_the_note() {
+    for (name, table, exact) in [
+        ("shaper", "0,18", "0,17983"),
+        ("gears-pz3", "0,16", "0,15974"),
+    ] {
+        let s = scene(name);
+        let session = Session::new(&s, Drafting::HAND);
+        let note = tmm::note::compose(&session, Lang::Ru).expect("note");
+        let text = text_of(&note);
+        let said = "Коэффициент уравнительного смещения принят по таблицам";
+        assert!(holds(&text, said, &format!("Δy={table}(")), "{name}");
+        assert!(holds(&text, said, &format!("−y={exact})")), "{name}");
+    }
+    let s = scene("shaper");
+    let note = tmm::note::compose(&Session::new(&s, Drafting::HAND), Lang::Ru).expect("note");
+    assert!(shows(&text_of(&note), "91+(1+0,8−0,18)⋅14=113,68"));
+}

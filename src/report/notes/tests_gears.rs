@@ -76,9 +76,10 @@ fn a_wheel_cut_by_the_rack_reads_as_pz1_printed_it() {
     );
     let shaper = scene_notes("shaper");
     for line in [
-        "gears: pair z = 13/30, x = 0.8/0.471: α_w = 26.58075°, a_w = 316.2764 mm, y = 1.0912, Δy = 0.17983, ε_α = 1.1552; radial clearances 3.5 and 3.5 mm (c*·m = 3.5 mm)",
+        "gears: pair z = 13/30, x = 0.8/0.471: α_w = 26.58075°, a_w = 316.2764 mm, y = 1.0912, Δy = 0.18, ε_α = 1.155; radial clearances 3.5024 and 3.5024 mm (c*·m = 3.5 mm)",
+        "gears: by the tables: Δy = 0.18 (table), y = x_Σ − Δy = 1.091, a_w = m(z_Σ/2 + y) = 316.274 mm against the exact 316.2764 mm (y = 1.0912); the tip radii take the table's Δy",
         "gears: by the inv table (a row every 1′ to 6 decimals, read linearly): inv α_w = 0.036421 → α_w = 26°34′51″ (exact 26°34′50.7″); the seed prints 26°34′45″, 6″ off the table's own reading: not reproduced",
-        "gears: erratum: the seed's ε_α = 1.22 comes from the base radii r·cos α_w = 81.382/187.8 mm and the base pitch πm·cos α_w = 39.334 mm (ε_α = B₁B₂/(πm·cos α_w) = 1.214); the base pitch is πm·cos α = 41.33 mm and ε_α = 1.1552",
+        "gears: erratum: the seed's ε_α = 1.22 comes from the base radii r·cos α_w = 81.382/187.8 mm and the base pitch πm·cos α_w = 39.334 mm (ε_α = B₁B₂/(πm·cos α_w) = 1.214); the base pitch is πm·cos α = 41.33 mm and ε_α = 1.155",
         "gears: wheel 1: x_min = h_a* − z·sin²α/2 = 0.2396 (the textbook's (17 − z)/17 = 0.2353); feasible shift: x_min = 0.2396 … x(s_a = 0.3m) = 0.5254",
     ] {
         assert!(shaper.contains(&s(line)), "{line}");
