@@ -49,8 +49,9 @@ pub(super) fn head_lines(
     (drafting, scales)
 }
 
-/// A line per μ other than `common` the plans `plans` (position's label, μ) are drawn at:
-/// «Планы скоростей пол. 3, 4, 9, 10: μ_v = 0,25 м/(с·мм)».
+/// A line per μ other than `common` the plans `plans` (position's label, μ) are drawn at,
+/// begun with a capital: «Планы скоростей пол. 3, 4, 9, 10: μ_v = 0,25 м/(с·мм)», «Планы
+/// ускорений пол. 12: …».
 fn own_scales<'a>(
     kind: Text,
     common: Scale,
@@ -66,13 +67,51 @@ fn own_scales<'a>(
     }
     own.into_iter()
         .map(|(s, labels)| {
-            format!(
+            crate::words::heading(&format!(
                 "{} {} {}: {}",
                 kind.get(lang),
                 Text::Pos.get(lang).to_lowercase(),
                 labels.join(", "),
                 s.caption(lang)
-            )
+            ))
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::own_scales;
+    use crate::scale::{Lang, Quantity, Scale};
+    use crate::words::Text;
+
+    /// Each line of plans at a μ of their own begins with a capital, the acceleration plans'
+    /// too (their word is small after the common line's «;»), and names only those plans.
+    #[test]
+    fn a_line_of_plans_at_their_own_scale_begins_with_a_capital() {
+        let mu = |v| Scale::new(v, Quantity::Acceleration).expect("μ_a");
+        let plans = [("5", mu(1.0)), ("12", mu(0.2))];
+        let lines = own_scales(
+            Text::AccelerationPlans,
+            mu(1.0),
+            plans.into_iter(),
+            Lang::Ru,
+        );
+        assert_eq!(lines.len(), 1, "{lines:?}");
+        assert!(
+            lines[0].starts_with("Планы ускорений пол. 12: "),
+            "{}",
+            lines[0]
+        );
+        let en = own_scales(
+            Text::AccelerationPlans,
+            mu(1.0),
+            plans.into_iter(),
+            Lang::En,
+        );
+        assert!(
+            en[0].starts_with("Acceleration plans pos. 12: "),
+            "{}",
+            en[0]
+        );
+    }
 }

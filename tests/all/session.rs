@@ -371,3 +371,44 @@ fn the_default_acceleration_plans_show_two_configurations() {
         );
     }
 }
+
+/// No acceleration plan of a shipped scene is drawn at less than a third of the largest
+/// one's size: a plan that small at the common μ_a (the tangent mechanism's 12, 11 mm at
+/// plan 5's μ_a) is drawn at a μ_a of its own (`own_scale_a`, stated in its caption).
+#[test]
+fn no_acceleration_plan_is_drawn_far_smaller_than_the_others() {
+    let mut seen = 0;
+    for path in support::scene_paths() {
+        let s = scene::load(&path).expect("scene");
+        let Some(kind) = sheets::drawn(&s)
+            .into_iter()
+            .find(|k| k.stem() == "kinematics")
+        else {
+            continue;
+        };
+        let session = Session::new(&s, Drafting::EXACT);
+        let mut sizes = Vec::new();
+        for p in tmm::build(&session, kind, Lang::Ru).expect("built") {
+            let l = tmm::plate::layout(&p);
+            for (v, laid) in p.views.iter().zip(&l.views) {
+                let plan = v
+                    .caption
+                    .as_deref()
+                    .filter(|c| c.starts_with("План ускорений"));
+                if let (Some(c), Some(d)) = (plan, laid.drawn) {
+                    sizes.push((c.to_string(), d.size().max_element()));
+                }
+            }
+        }
+        let largest = sizes.iter().map(|s| s.1).fold(0.0, f64::max);
+        for (caption, size) in &sizes {
+            seen += 1;
+            assert!(
+                *size >= largest / 3.0,
+                "{}: «{caption}» {size:.0} mm beside {largest:.0} mm",
+                s.stem
+            );
+        }
+    }
+    assert!(seen >= 8, "{seen} plans");
+}
