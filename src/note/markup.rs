@@ -381,10 +381,18 @@ impl Markup {
                 Align::Centre => "center",
             })
             .collect();
+        let one = if columns == 1 { "," } else { "" };
+        let widths = match super::columns::widths(header, rows, columns) {
+            Some(w) => {
+                let w: Vec<String> = w.iter().map(|w| format!("{w:.2}em")).collect();
+                format!("({}{one})", w.join(", "))
+            }
+            None => columns.to_string(),
+        };
         let mut t = format!(
-            "#figure(kind: table, caption: {}, table(columns: {columns}, align: ({}), table.header(table.cell(colspan: {columns}, stroke: none, inset: 0pt, align: left, continued()), ",
+            "#figure(kind: table, caption: {}, table(columns: {widths}, align: ({}{one}), table.header(table.cell(colspan: {columns}, stroke: none, inset: 0pt, align: left, continued()), ",
             text(caption),
-            aligns.join(", ") + if columns == 1 { "," } else { "" }
+            aligns.join(", ")
         );
         let header: Vec<String> = header.iter().map(|h| capitalised(h)).collect();
         t.push_str(&header.join(", "));

@@ -14,6 +14,7 @@ mod analytic;
 mod cam;
 mod cam_scales;
 mod cam_special;
+mod columns;
 mod conclusions;
 mod diagrams;
 mod dynamics;
