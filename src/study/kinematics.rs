@@ -385,7 +385,6 @@ impl<'s> Session<'s> {
     }
 }
 
-/// Each position's label and whether it is an extreme one, in the plan's order.
 /// Whether positions `a` and `b` show the mechanism in one configuration: every point off
 /// the crank where it was (to 1e-9 of the mechanism's size), the crank alone turned.
 fn same_configuration(poses: &PlanPoses, a: usize, b: usize) -> bool {
@@ -397,6 +396,7 @@ fn same_configuration(poses: &PlanPoses, a: usize, b: usize) -> bool {
         .all(|k| pa[k].distance(pb[k]) <= 1e-9 * size)
 }
 
+/// Each position's label and whether it is an extreme one, in the plan's order.
 fn position_labels(poses: &PlanPoses) -> Vec<(&str, bool)> {
     poses
         .positions
