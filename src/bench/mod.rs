@@ -62,7 +62,7 @@ use crate::scale::Quantity;
 use crate::scene::{self, PlateKind, Scene};
 use chords::{chord_rows, Charted, Coord};
 use rates::{
-    construction_rate, dxf_time, force_rates, kernel_rate, libm_floor_rate, plate_time, png_time,
+    construction_rate, dxf_time, force_rates, kernel_rate, math_floor_rate, plate_time, png_time,
     scene_time, stack_floor, sweep_rate, PNG_DPI, TURN_STEPS,
 };
 use std::f64::consts::TAU;

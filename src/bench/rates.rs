@@ -1,5 +1,5 @@
-//! Throughput: analytic positions, their libm floor, constructed positions and plates per
-//! second.
+//! Throughput: analytic positions, the floor of their math calls, constructed positions and
+//! plates per second.
 
 use super::{best_time, BenchError, Reps, Subject, CONSTRUCTION_EXTENT_MM};
 use crate::construct::{Context, Drafting, Recorder};
@@ -74,19 +74,19 @@ pub(super) fn sweep_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
     Ok((turns * TURN_STEPS) as f64 / t)
 }
 
-/// The floor under the four-bar's kernel: its one transcendental call (the crank's sin and
-/// cos) and its one square root (the RRR group's t, twice the triangle's area) per second;
+/// The floor under the four-bar's kernel: its one transcendental step (the crank's cos and
+/// sin, [`crate::geom::unit_at`], as the kernel takes them) and its one square root (the RRR group's t, twice the triangle's area) per second;
 /// link angles are carried as unit vectors and the links' lengths are known, so no atan2,
 /// acos or further root remains.
-pub(super) fn libm_floor_rate(reps: Reps) -> f64 {
+pub(super) fn math_floor_rate(reps: Reps) -> f64 {
     let count = reps.kernel.max(1);
     let step = TAU / 3600.0;
     best_time(reps.best_of.max(3), || {
         let mut phi = 0.0f64;
         for _ in 0..count {
             phi += step;
-            let (s, c) = black_box(phi).sin_cos();
-            black_box((s * c + 1.5).sqrt());
+            let e = crate::geom::unit_at(black_box(phi));
+            black_box((e.x * e.y + 1.5).sqrt());
         }
         Ok::<_, ()>(())
     })

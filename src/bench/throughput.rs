@@ -6,7 +6,7 @@
 use super::*;
 
 /// The kernel's rows: the analytic sweep and single angles of the four-bar and the shaper
-/// (beside the `four-bar` crate's, when built with it), the libm floor, the recorded
+/// (beside the `four-bar` crate's, when built with it), the floor of its math calls, the recorded
 /// construction of a position, and the shaper's force analysis constructed and analytic.
 pub(super) fn kernel(
     four_bar: &Subject,
@@ -17,30 +17,35 @@ pub(super) fn kernel(
     let peer = peer::measure(four_bar, reps)?;
     for s in [four_bar, shaper] {
         let stem = &s.scene.stem;
-        let rate = sweep_rate(s, reps)?;
-        let against = match &peer {
+        // Each kernel row of the four-bar beside the peer's rate of the same run.
+        let against = |rate: f64| match &peer {
             Some(p) if s.scene.stem == four_bar.scene.stem => format!(
                 "; {:.2}× the `four-bar` crate's positions alone, same run",
                 rate / p.rate
             ),
             _ => String::new(),
         };
+        let rate = sweep_rate(s, reps)?;
         throughput.push(Throughput {
             name: format!("analytic {stem}"),
             per_second: rate,
-            note: format!("one position: every point and link with dX/dφ₁, d²X/dφ₁², in sweeps of a turn at {TURN_STEPS} steps (sweep, 1 core){against}"),
+            note: format!("one position: every point and link with dX/dφ₁, d²X/dφ₁², in sweeps of a turn at {TURN_STEPS} steps (sweep, 1 core){}", against(rate)),
         });
+        let rate = kernel_rate(s, reps)?;
         throughput.push(Throughput {
             name: format!("analytic {stem} (one angle)"),
-            per_second: kernel_rate(s, reps)?,
-            note: "the same, each angle solved on its own (solve_into, 1 core)".into(),
+            per_second: rate,
+            note: format!(
+                "the same, each angle solved on its own (solve_into, 1 core){}",
+                against(rate)
+            ),
         });
     }
     throughput.push(peer::row(peer.as_ref(), four_bar));
     throughput.push(Throughput {
-        name: "libm floor four-bar".into(),
-        per_second: libm_floor_rate(reps),
-        note: "its transcendental and root calls alone: sin_cos + 1 sqrt".into(),
+        name: "math floor four-bar".into(),
+        per_second: math_floor_rate(reps),
+        note: "its transcendental and root calls alone: the crank's direction (cos, sin by `geom::unit_at`) + 1 sqrt".into(),
     });
     for s in [four_bar, shaper] {
         throughput.push(Throughput {

@@ -13,6 +13,7 @@ mod newton;
 mod primitives;
 mod rect;
 mod root;
+mod sincos;
 mod tolerance;
 
 pub use clip::{arc_in_circle, polyline_in_circle};
@@ -35,4 +36,5 @@ pub use primitives::{
 };
 pub use rect::Rect;
 pub use root::{bisect, bracketed_root, illinois, Midpoint};
+pub use sincos::unit_at;
 pub use tolerance::{InvalidTolerance, Tolerances};

@@ -160,6 +160,18 @@ pub(in crate::linkage) fn carried(o: Jet, t: AngleJet, local: DVec2) -> Jet {
     }
 }
 
+/// A point on a link frame's x-axis, `len` from its origin (the crank's pin): [`carried`]
+/// without the across part, one product less before the pin is known.
+#[inline]
+pub(in crate::linkage) fn carried_along(o: Jet, t: AngleJet, len: f64) -> Jet {
+    let r = t.e * len;
+    Jet {
+        p: o.p + r,
+        d: o.d + r.perp() * t.d,
+        dd: o.dd + r.perp() * t.dd - r * (t.d * t.d),
+    }
+}
+
 /// Intersection of two moving lines with its rates and the sine of their crossing angle.
 pub(in crate::linkage) fn meet(l1: LineJet, l2: LineJet) -> Option<(Jet, f64)> {
     let det = cross(l1.e.p, l2.e.p);

@@ -7,8 +7,8 @@
 //! (`GroupKind::solve`, in its file of `kinds/`).
 
 use super::program::{Op, Program};
-use crate::geom::DVec2;
-use jet::{carried, AngleJet};
+use crate::geom::{unit_at, DVec2};
+use jet::{carried, carried_along, AngleJet};
 
 pub(in crate::linkage) mod jet;
 pub(in crate::linkage) mod state;
@@ -43,7 +43,7 @@ impl Program {
         pose: &mut Pose,
     ) -> Result<(), Unassembled> {
         let continuity = self.prepare(continuity, pose);
-        self.solve_at(phi, DVec2::from_angle(phi), continuity, pose)
+        self.solve_at(phi, unit_at(phi), continuity, pose)
     }
 
     /// Solve at the crank angles φ₀ + k·Δφ, k = 0 … n − 1, handing each position to `each`
@@ -67,7 +67,7 @@ impl Program {
         for k in 0..n {
             let phi = phi0 + k as f64 * step;
             e = if k % SWEEP_ANCHOR == 0 {
-                DVec2::from_angle(phi)
+                unit_at(phi)
             } else {
                 turn.rotate(e)
             };
@@ -80,7 +80,7 @@ impl Program {
     /// Size `pose`'s buffers for this program (once: a pose reused for the same program keeps
     /// them) and set the frame's points; whether continuity can be kept (the pose held a
     /// position of this program, and with it the frame's points, which no solve changes).
-    #[inline]
+    #[inline(always)]
     fn prepare(&self, continuity: bool, pose: &mut Pose) -> bool {
         let n = self.names.len();
         let sized = pose.p.len() == n && pose.dir.len() == self.link_count;
@@ -124,11 +124,7 @@ impl Program {
             group: 0,
         };
         let crank = AngleJet { d: 1.0, dd: 0.0, e };
-        let pin = carried(
-            st.jet(self.centre),
-            crank,
-            DVec2::new(self.crank_length, 0.0),
-        );
+        let pin = carried_along(st.jet(self.centre), crank, self.crank_length);
         st.set(self.pin, pin);
         st.set_link(self.crank_link as usize, crank, self.centre);
         for op in &self.ops {
