@@ -220,18 +220,32 @@ impl Inverting<'_> {
     /// gap, where no follower is drawn), clear of the support under O₁ and of the rotation's
     /// arrow ([`rotation`]) beside it.
     fn base_radius(&self, rec: &mut Recorder, mu: Scale, centres: &[DVec2]) {
-        let apart = |a: f64, b: f64| (a - b + PI).rem_euclid(TAU) - PI;
+        // The angle from b to a in [−π, π): a and b in [−π, π], so a − b + π is at most a
+        // turn out, and taking the turn off is exact there (what `rem_euclid` gives).
+        let apart = |a: f64, b: f64| {
+            let x = a - b + PI;
+            let x = if x < 0.0 {
+                x + TAU
+            } else if x >= TAU {
+                x - TAU
+            } else {
+                x
+            };
+            x - PI
+        };
         let clear = |a: f64| !(R0_KEPT_OFF.0..R0_KEPT_OFF.1).contains(&a);
+        let headings: Vec<f64> = centres.iter().map(|c| c.y.atan2(c.x)).collect();
         let room = |a: f64| {
-            centres
+            headings
                 .iter()
-                .map(|c| apart(c.y.atan2(c.x), a).abs())
+                .map(|&h| apart(h, a).abs())
                 .fold(PI, f64::min)
         };
-        let Some(a) = (-180..180)
+        let Some((a, _)) = (-180..180)
             .map(|d| f64::from(d).to_radians())
             .filter(|&a| clear(a))
-            .max_by(|&a, &b| room(a).total_cmp(&room(b)))
+            .map(|a| (a, room(a)))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
         else {
             return;
         };
