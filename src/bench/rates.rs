@@ -75,7 +75,8 @@ pub(super) fn sweep_rate(s: &Subject, reps: Reps) -> Result<f64, BenchError> {
 }
 
 /// The floor under the four-bar's kernel: its one transcendental step (the crank's cos and
-/// sin, [`crate::geom::unit_at`], as the kernel takes them) and its one square root (the RRR group's t, twice the triangle's area) per second;
+/// sin, [`crate::geom::unit_at`], as the kernel takes them) and its one square root (the RRR
+/// group's t, twice the triangle's area) per second;
 /// link angles are carried as unit vectors and the links' lengths are known, so no atan2,
 /// acos or further root remains.
 pub(super) fn math_floor_rate(reps: Reps) -> f64 {

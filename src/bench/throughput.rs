@@ -6,8 +6,9 @@
 use super::*;
 
 /// The kernel's rows: the analytic sweep and single angles of the four-bar and the shaper
-/// (beside the `four-bar` crate's, when built with it), the floor of its math calls, the recorded
-/// construction of a position, and the shaper's force analysis constructed and analytic.
+/// (beside the `four-bar` crate's, when built with it), the floor of its math calls, the
+/// recorded construction of a position, and the shaper's force analysis constructed and
+/// analytic.
 pub(super) fn kernel(
     four_bar: &Subject,
     shaper: &Subject,
