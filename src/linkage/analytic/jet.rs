@@ -152,19 +152,19 @@ pub(in crate::linkage) fn sub(a: Jet, b: Jet) -> Jet {
 /// A point fixed in a link frame: origin + R(θ)·local.
 #[inline]
 pub(in crate::linkage) fn carried(o: Jet, t: AngleJet, local: DVec2) -> Jet {
-    let r = t.e.rotate(local);
-    Jet {
-        p: o.p + r,
-        d: o.d + r.perp() * t.d,
-        dd: o.dd + r.perp() * t.dd - r * (t.d * t.d),
-    }
+    turned_with(o, t, t.e.rotate(local))
 }
 
 /// A point on a link frame's x-axis, `len` from its origin (the crank's pin): [`carried`]
 /// without the across part, one product less before the pin is known.
 #[inline]
 pub(in crate::linkage) fn carried_along(o: Jet, t: AngleJet, len: f64) -> Jet {
-    let r = t.e * len;
+    turned_with(o, t, t.e * len)
+}
+
+/// The point at `r` from origin `o`, `r` turning with the angle `t`.
+#[inline]
+fn turned_with(o: Jet, t: AngleJet, r: DVec2) -> Jet {
     Jet {
         p: o.p + r,
         d: o.d + r.perp() * t.d,
